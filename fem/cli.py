@@ -1,0 +1,101 @@
+"""``mkm fem ...`` subcommands: argument parsing only, each calls one library function."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from fem.arguments import parse_fraction, parse_number, parse_pressures
+from fem.interface import write_prediction_csv
+from fem.models import make_model, model_names
+
+
+def argtype(parse, *args):
+    """Wrap a ``fem.arguments`` parser for argparse, keeping its one-line message."""
+
+    def convert(text):
+        try:
+            return parse(text, *args)
+        except ValueError as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    convert.__name__ = parse.__name__
+    return convert
+
+
+def register(subparsers) -> None:
+    fem = subparsers.add_parser("fem", help="physics force models: solve, calibrate")
+    fem_sub = fem.add_subparsers(dest="fem_command", required=True, metavar="COMMAND")
+
+    solve = fem_sub.add_parser("solve", help="force of one muscle over a pressure sweep (CSV)")
+    add_model_arguments(solve)
+    add_geometry_arguments(solve)
+    solve.add_argument("--out", help="write the CSV here instead of stdout")
+    solve.set_defaults(func=_solve)
+
+    cal = fem_sub.add_parser("calibrate", help="fit theta0 of a model to a reference sweep")
+    add_model_arguments(cal, theta0=False)
+    cal.add_argument("--reference", default="data/reference/paper_case_I.csv",
+                     help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (default: %(default)s)")
+    cal.add_argument("--dry-run", action="store_true", help="print the fit, do not store it")
+    cal.set_defaults(func=_calibrate)
+
+
+def add_model_arguments(parser, theta0: bool = True) -> None:
+    parser.add_argument("--model", default="eq2", help=f"one of {', '.join(model_names())}")
+    if theta0:
+        parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+                            help="braid angle at rest [deg] (default: calibrated)")
+    parser.add_argument("--diameter", choices=("inner", "braid"),
+                        help="eq2 only: diameter convention (default inner, as the paper)")
+    parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
+                        help="muscle length at rest [mm] (default 282)")
+
+
+def add_geometry_arguments(parser) -> None:
+    parser.add_argument("--D0", required=True, type=argtype(parse_number, "--D0"),
+                        help="inner tube diameter [mm]")
+    parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0"),
+                        help="wall thickness [mm]")
+    parser.add_argument("--eps", required=True, type=argtype(parse_fraction),
+                        help="shortening ratio, a fraction (0.05) or a percentage (5%%)")
+    parser.add_argument("--pressures", default="0:2.5:0.25", type=argtype(parse_pressures),
+                        help="start:stop:step in bar (stop included) or a comma list")
+
+
+def model_from_args(args, **overrides):
+    params = {"theta0_deg": getattr(args, "theta0", None), "diameter": args.diameter,
+              "L0_mm": args.L0}
+    params.update(overrides)
+    return make_model(args.model, **params)
+
+
+def _solve(args) -> int:
+    model = model_from_args(args)
+    prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
+    if args.out:
+        with open(args.out, "w", encoding="utf-8", newline="") as f:
+            write_prediction_csv(prediction, f)
+        print(f"wrote {args.out}", file=sys.stderr)
+    else:
+        write_prediction_csv(prediction, sys.stdout)
+    return 0
+
+
+def _calibrate(args) -> int:
+    from fem.calibration import fit_theta0, read_reference, store_calibration
+
+    reference = read_reference(args.reference)
+    fit = fit_theta0(lambda th: model_from_args(args, theta0_deg=th), reference)
+    model = model_from_args(args, theta0_deg=fit["theta0_deg"])
+    print(f"model {model.calibration_key}: theta0 = {fit['theta0_deg']:.3f} deg, "
+          f"RMSE {fit['rmse_N']:.2f} N, largest residual {fit['max_abs_residual_N']:.2f} N "
+          f"({fit['evaluations']} evaluations) against {args.reference}")
+    print("pressure_bar,reference_N,model_N")
+    for p, ref, f in zip(reference["pressure_bar"], reference["force_N"], fit["force_N"],
+                         strict=True):
+        print(f"{p:g},{ref:.2f},{f:.2f}")
+    if not args.dry_run:
+        store_calibration(model.calibration_key, fit, args.reference, model.params())
+        print(f"stored in fem/calibration.json under {model.calibration_key!r}")
+    return 0

@@ -1,0 +1,205 @@
+"""The force-model interface shared by every predictor of the project.
+
+A force model is "pressures and geometry in, forces out": :meth:`ForceModel.predict` takes the
+supply pressure in bar, the tube's inner diameter ``D0_mm`` and wall thickness ``t0_mm`` in mm and
+the shortening ratio ``eps`` (a fraction), broadcasts them with numpy, and returns a
+:class:`Prediction` holding the force in N with a per-point validity flag. The report, the dataset
+builder and the speed/accuracy study loop over any list of models through this interface only.
+
+Subclasses implement :meth:`ForceModel._forces` on already validated, broadcast float arrays;
+input validation, broadcasting and timing live here, once.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Any, ClassVar
+
+import numpy as np
+import pandas as pd
+
+INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
+
+
+@dataclass(frozen=True)
+class Domain:
+    """Closed box of inputs a model claims to be valid on (``(low, high)`` per input)."""
+
+    pressure_bar: tuple[float, float] = (0.0, np.inf)
+    D0_mm: tuple[float, float] = (0.0, np.inf)
+    t0_mm: tuple[float, float] = (0.0, np.inf)
+    eps: tuple[float, float] = (0.0, 1.0)
+
+    def contains(self, pressure_bar, D0_mm, t0_mm, eps, rtol: float = 1e-9) -> np.ndarray:
+        """Boolean array, True where every input lies inside the box (with round-off slack)."""
+        inside = True
+        for name, value in zip(INPUTS, (pressure_bar, D0_mm, t0_mm, eps), strict=True):
+            lo, hi = getattr(self, name)
+            slack = rtol * max(abs(lo), abs(hi) if np.isfinite(hi) else 0.0, 1.0)
+            inside = inside & (np.asarray(value) >= lo - slack) & (np.asarray(value) <= hi + slack)
+        return np.asarray(inside, dtype=bool)
+
+    def as_dict(self) -> dict[str, list[float]]:
+        return {name: [float(v) for v in getattr(self, name)] for name in INPUTS}
+
+
+@dataclass
+class Prediction:
+    """Forces of one model call, broadcast to a common shape.
+
+    ``force_N`` is NaN where the model could not produce a number (a solve that did not converge);
+    where the model produced a number outside its own validity (Equation 2 beyond eps_max) the
+    number is kept and ``valid`` is False. Consumers must honour ``valid``.
+    """
+
+    model: str
+    params: dict[str, Any]
+    pressure_bar: np.ndarray
+    D0_mm: np.ndarray
+    t0_mm: np.ndarray
+    eps: np.ndarray
+    force_N: np.ndarray
+    valid: np.ndarray
+    converged: np.ndarray
+    seconds: float
+    extras: dict[str, np.ndarray] = field(default_factory=dict)
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per point: the inputs, ``force_N``, ``valid``, ``converged`` and the extras."""
+        columns = {name: np.ravel(getattr(self, name)) for name in INPUTS}
+        columns["force_N"] = np.ravel(self.force_N)
+        columns["valid"] = np.ravel(self.valid)
+        columns["converged"] = np.ravel(self.converged)
+        for key, value in self.extras.items():
+            columns[key] = np.ravel(np.broadcast_to(value, self.force_N.shape))
+        return pd.DataFrame(columns)
+
+
+def validate_inputs(pressure_bar, D0_mm, t0_mm, eps) -> tuple[np.ndarray, ...]:
+    """Broadcast the four inputs to float arrays, raising ``ValueError`` on unphysical values.
+
+    Messages name the bad value and what was expected, so the CLI can print them as they are.
+    """
+    try:
+        arrays = np.broadcast_arrays(
+            *(np.asarray(v, dtype=float) for v in (pressure_bar, D0_mm, t0_mm, eps))
+        )
+    except ValueError as exc:
+        raise ValueError(f"inputs do not broadcast to a common shape: {exc}") from None
+    except TypeError as exc:
+        raise ValueError(f"inputs must be numbers: {exc}") from None
+    P, D0, t0, e = (np.array(a) for a in arrays)
+    for name, a in zip(INPUTS, (P, D0, t0, e), strict=True):
+        bad = ~np.isfinite(a)
+        if bad.any():
+            raise ValueError(f"{name}={a[bad].flat[0]!r} is not a finite number")
+    _check(P, P < 0, "pressure_bar", "expected a gauge pressure >= 0 bar")
+    _check(D0, D0 <= 0, "D0_mm", "expected an inner diameter > 0 mm")
+    _check(t0, t0 <= 0, "t0_mm", "expected a wall thickness > 0 mm")
+    bad = t0 >= D0 / 2
+    if bad.any():
+        i = np.flatnonzero(bad.ravel())[0]
+        raise ValueError(
+            f"t0_mm={t0.flat[i]:g} is too thick for D0_mm={D0.flat[i]:g}: "
+            f"expected t0_mm < D0_mm/2 = {D0.flat[i] / 2:g}"
+        )
+    _check(e, (e < 0) | (e >= 1), "eps", "expected a shortening ratio in [0, 1) (a fraction)")
+    return P, D0, t0, e
+
+
+def _check(values: np.ndarray, bad: np.ndarray, name: str, expected: str) -> None:
+    if bad.any():
+        raise ValueError(f"{name}={values[bad].flat[0]:g} is invalid: {expected}")
+
+
+class ForceModel:
+    """Base class of every force predictor (closed-form, FE, surrogate).
+
+    Subclasses set ``name`` and ``domain``, store their parameters in ``__init__`` and implement
+    :meth:`_forces`. ``params()`` returns what a result needs for its provenance.
+    """
+
+    name: ClassVar[str] = "abstract"
+    domain: Domain = Domain()
+
+    def params(self) -> dict[str, Any]:
+        return {}
+
+    @property
+    def calibration_key(self) -> str:
+        """Entry of ``fem/calibration.json`` holding this model's default theta0."""
+        return self.name
+
+    def predict(self, pressure_bar, D0_mm, t0_mm, eps) -> Prediction:
+        """Forces [N] for pressures [bar] and geometry (``D0_mm``, ``t0_mm``, ``eps`` fraction)."""
+        P, D0, t0, e = validate_inputs(pressure_bar, D0_mm, t0_mm, eps)
+        start = time.perf_counter()
+        out = self._forces(P, D0, t0, e)
+        seconds = time.perf_counter() - start
+        force = np.asarray(out.pop("force_N"), dtype=float).reshape(P.shape)
+        converged = np.asarray(out.pop("converged", np.isfinite(force)), dtype=bool)
+        converged = np.broadcast_to(converged, P.shape).copy()
+        valid = np.asarray(out.pop("valid", True), dtype=bool)
+        valid = np.broadcast_to(valid, P.shape) & converged & np.isfinite(force)
+        extras = {k: np.broadcast_to(np.asarray(v), P.shape).copy() for k, v in out.items()}
+        return Prediction(
+            model=self.name, params=self.params(), pressure_bar=P, D0_mm=D0, t0_mm=t0, eps=e,
+            force_N=force, valid=valid, converged=converged, seconds=seconds, extras=extras,
+        )
+
+    def _forces(self, P, D0, t0, eps) -> dict[str, np.ndarray]:
+        """Return at least ``{"force_N": ...}``; optionally ``valid``, ``converged`` and extras."""
+        raise NotImplementedError
+
+    def __repr__(self) -> str:
+        args = ", ".join(f"{k}={v!r}" for k, v in self.params().items())
+        return f"{type(self).__name__}({args})"
+
+
+def provenance() -> dict[str, str]:
+    """Library versions and the UTC date, recorded with every generated file."""
+    import datetime
+    import platform
+    import sys
+    from importlib.metadata import PackageNotFoundError, version
+
+    info = {"date_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
+            "command": " ".join(sys.argv), "machine": platform.machine(),
+            "versions": {"python": platform.python_version()}}
+    for pkg in ("mkm-bench", "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas"):
+        try:
+            info["versions"][pkg] = version(pkg)
+        except PackageNotFoundError:
+            info["versions"][pkg] = "not installed"
+    return info
+
+
+def write_prediction_csv(prediction: Prediction, buf) -> None:
+    """CSV of a prediction with a ``#`` comment header naming the model, parameters and timing.
+
+    Read back with ``pandas.read_csv(path, comment="#")``; :func:`read_prediction_header` parses
+    the header.
+    """
+    import json
+
+    header = {"model": prediction.model, "params": prediction.params,
+              "seconds": prediction.seconds, "n_points": int(prediction.force_N.size),
+              **provenance()}
+    for key, value in header.items():
+        buf.write(f"# {key}: {json.dumps(value)}\n")
+    prediction.to_frame().to_csv(buf, index=False, float_format="%.6g", lineterminator="\n")
+
+
+def read_prediction_header(path) -> dict[str, Any]:
+    """The ``# key: json`` header of a CSV written by :func:`write_prediction_csv`."""
+    import json
+
+    header = {}
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if not line.startswith("# "):
+                break
+            key, _, value = line[2:].partition(": ")
+            header[key] = json.loads(value)
+    return header

@@ -1,0 +1,43 @@
+"""Material parameter sets and the incompressible Mooney-Rivlin strain energy.
+
+Named parameter sets in the style of pvlib's ``TEMPERATURE_MODEL_PARAMETERS``: each carries its
+source. Stresses in MPa (N/mm^2).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class MooneyRivlin:
+    """Two-parameter Mooney-Rivlin rubber, ``W = C10 (I1 - 3) + C01 (I2 - 3)`` [MPa]."""
+
+    C10_MPa: float
+    C01_MPa: float
+    source: str = ""
+
+    @property
+    def shear_modulus_MPa(self) -> float:
+        """Small-strain shear modulus ``mu = 2 (C10 + C01)`` [MPa]."""
+        return 2.0 * (self.C10_MPa + self.C01_MPa)
+
+    def energy(self, l1, l2, l3=None):
+        """Strain energy density [MPa = mJ/mm^3] from principal stretches (``l3 = 1/(l1 l2)``)."""
+        l1 = np.asarray(l1, dtype=float)
+        l2 = np.asarray(l2, dtype=float)
+        l3 = 1.0 / (l1 * l2) if l3 is None else np.asarray(l3, dtype=float)
+        I1 = l1**2 + l2**2 + l3**2
+        I2 = (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2
+        return self.C10_MPa * (I1 - 3.0) + self.C01_MPa * (I2 - 3.0)
+
+
+MATERIALS: dict[str, MooneyRivlin] = {
+    "silastic_s": MooneyRivlin(
+        0.0694, 0.0628,
+        source="Antonelli et al., Actuators 2025, 14(3), 153, doi:10.3390/act14030153, Eq. 3",
+    ),
+}
+SILASTIC_S = MATERIALS["silastic_s"]

@@ -1,0 +1,27 @@
+"""Registry of the force models available by name (``mkm fem solve --model NAME``).
+
+Entries are ``"module:Class"`` strings so that a cheap model never imports the FE machinery.
+"""
+
+from __future__ import annotations
+
+from importlib import import_module
+
+from fem.interface import ForceModel
+
+MODELS: dict[str, str] = {
+    "eq2": "fem.closed_form:ChouHannaford",
+}
+
+
+def model_names() -> list[str]:
+    return list(MODELS)
+
+
+def make_model(name: str, **params) -> ForceModel:
+    """Instantiate model ``name`` with ``params`` (None values mean "use the default")."""
+    if name not in MODELS:
+        raise ValueError(f"unknown model {name!r}: expected one of {', '.join(MODELS)}")
+    module, cls = MODELS[name].split(":")
+    factory = getattr(import_module(module), cls)
+    return factory(**{k: v for k, v in params.items() if v is not None})
