@@ -37,7 +37,7 @@ def calibrated(key: str) -> dict:
 
 
 def read_reference(path) -> pd.DataFrame:
-    """A reference sweep: columns ``pressure_bar, D0_mm, t0_mm, eps, force_N`` (``L0_mm`` optional)."""
+    """A reference sweep: ``pressure_bar, D0_mm, t0_mm, eps, force_N`` (``L0_mm`` optional)."""
     df = pd.read_csv(path, comment="#")
     missing = {"pressure_bar", "D0_mm", "t0_mm", "eps", "force_N"} - set(df.columns)
     if missing:

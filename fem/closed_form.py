@@ -17,7 +17,7 @@ def chou_hannaford(pressure_bar, D_mm, eps, theta0_deg):
     r"""Chou-Hannaford static force of a McKibben muscle (the paper's Equation 2).
 
     .. math::
-        F = \frac{\pi D^2 P}{4} \frac{1}{\sin^2\theta_0}\left(3(1-\varepsilon)^2\cos^2\theta_0 - 1\right)
+        F = \frac{\pi D^2 P}{4 \sin^2\theta_0}\left(3(1-\varepsilon)^2\cos^2\theta_0 - 1\right)
 
     Parameters
     ----------
@@ -71,14 +71,18 @@ class ChouHannaford(ForceModel):
         Braid angle at rest [deg]. Default: the calibrated value in ``fem/calibration.json``.
     diameter : {"inner", "braid"}
         ``inner`` uses D0 as the paper does; ``braid`` uses D0 + 2 t0.
+    L0_mm : float
+        Length at rest [mm]. Recorded only: Equation 2 does not depend on the length.
     """
 
     name = "eq2"
     domain = Domain()
 
-    def __init__(self, theta0_deg: float | None = None, diameter: str = "inner"):
+    def __init__(self, theta0_deg: float | None = None, diameter: str = "inner",
+                 L0_mm: float = 282.0):
         self.theta0_deg = theta0_deg
         self.diameter = diameter
+        self.L0_mm = L0_mm
 
     @property
     def calibration_key(self) -> str:
@@ -90,7 +94,7 @@ class ChouHannaford(ForceModel):
         return calibrated(self.calibration_key)["theta0_deg"]
 
     def params(self):
-        return {"theta0_deg": self._theta0(), "diameter": self.diameter}
+        return {"theta0_deg": self._theta0(), "diameter": self.diameter, "L0_mm": self.L0_mm}
 
     def _forces(self, P, D0, t0, eps):
         if self.diameter not in ("inner", "braid"):

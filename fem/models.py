@@ -5,6 +5,7 @@ Entries are ``"module:Class"`` strings so that a cheap model never imports the F
 
 from __future__ import annotations
 
+import inspect
 from importlib import import_module
 
 from fem.interface import ForceModel
@@ -24,4 +25,10 @@ def make_model(name: str, **params) -> ForceModel:
         raise ValueError(f"unknown model {name!r}: expected one of {', '.join(MODELS)}")
     module, cls = MODELS[name].split(":")
     factory = getattr(import_module(module), cls)
-    return factory(**{k: v for k, v in params.items() if v is not None})
+    given = {k: v for k, v in params.items() if v is not None}
+    accepted = inspect.signature(factory).parameters
+    unknown = sorted(set(given) - set(accepted))
+    if unknown:
+        raise ValueError(f"model {name!r} takes no parameter {', '.join(unknown)}: "
+                         f"expected some of {', '.join(accepted) or 'none'}")
+    return factory(**given)
