@@ -7,12 +7,21 @@ Bad input (a ``ValueError`` from the library or a malformed argument) prints one
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 
+import bench.validation_cli
 import fem.cli
+import surrogate.cli
 
 
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # "-5%" and "-1,0" are values (reported as bad values), not unknown options; argparse
+        # only treats plain negative numbers so and has no public setting for it
+        self._negative_number_matcher = re.compile(r"^-\.?\d")
+
     def error(self, message):  # one line, no usage dump
         self.exit(2, f"{self.prog}: error: {message}\n")
 
@@ -23,6 +32,8 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
                                 parser_class=_Parser)
     fem.cli.register(sub)
+    bench.validation_cli.register(sub)
+    surrogate.cli.register(sub)
     return parser
 
 

@@ -31,6 +31,9 @@ def register(subparsers) -> None:
     add_model_arguments(solve)
     add_geometry_arguments(solve)
     solve.add_argument("--out", help="write the CSV here instead of stdout")
+    solve.add_argument("--tolerance", type=argtype(parse_fraction, "--tolerance"),
+                       help="auto only: largest acceptable error against the finest FE, "
+                       "e.g. 2%% (default 2%%)")
     solve.set_defaults(func=_solve)
 
     cal = fem_sub.add_parser("calibrate", help="fit theta0 of a model to a reference sweep")
@@ -39,6 +42,25 @@ def register(subparsers) -> None:
                      help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (default: %(default)s)")
     cal.add_argument("--dry-run", action="store_true", help="print the fit, do not store it")
     cal.set_defaults(func=_calibrate)
+
+    data = fem_sub.add_parser("dataset", help="forces of a model over a grid of muscles (CSV), "
+                              "resumable, on local workers or a Dask cluster")
+    data.add_argument("--grid", default="paper",
+                      help="'paper' (Table 1 of the paper, 162 points) or a grid TOML file")
+    data.add_argument("--model", default="axisym", help=f"one of {', '.join(model_names())} "
+                      "(default: %(default)s)")
+    data.add_argument("--mesh", help="mesh level of FE models (default: the model's)")
+    data.add_argument("--out", default="data/mkm_dataset.csv",
+                      help="CSV to write; provenance goes next to it as .json "
+                      "(default: %(default)s)")
+    data.add_argument("--workers", type=int,
+                      help="local worker processes; 1 runs in-process (default: CPU count)")
+    data.add_argument("--scheduler", metavar="ADDRESS",
+                      help="run on the Dask cluster at this scheduler, e.g. tcp://HOST:8786")
+    data.add_argument("--cache", default=".cache/mkm-dataset",
+                      help="one file per finished job; re-runs compute only what is missing "
+                      "(default: %(default)s)")
+    data.set_defaults(func=_dataset)
 
 
 def add_model_arguments(parser, theta0: bool = True) -> None:
@@ -50,6 +72,8 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
                         help="eq2 only: diameter convention (default inner, as the paper)")
     parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
                         help="muscle length at rest [mm] (default 282)")
+    parser.add_argument("--mesh", choices=("coarse", "medium", "fine"),
+                        help="axisym only: FE mesh level (default medium)")
 
 
 def add_geometry_arguments(parser) -> None:
@@ -65,7 +89,9 @@ def add_geometry_arguments(parser) -> None:
 
 def model_from_args(args, **overrides):
     params = {"theta0_deg": getattr(args, "theta0", None), "diameter": args.diameter,
-              "L0_mm": args.L0}
+              "L0_mm": args.L0,
+              "tolerance": getattr(args, "tolerance", None),
+              "mesh": getattr(args, "mesh", None)}
     params.update(overrides)
     return make_model(args.model, **params)
 
@@ -73,6 +99,10 @@ def model_from_args(args, **overrides):
 def _solve(args) -> int:
     model = model_from_args(args)
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
+    if model.name == "auto":
+        from fem.auto import explain
+
+        print(explain(prediction), file=sys.stderr)
     if args.out:
         with open(args.out, "w", encoding="utf-8", newline="") as f:
             write_prediction_csv(prediction, f)
@@ -98,4 +128,13 @@ def _calibrate(args) -> int:
     if not args.dry_run:
         store_calibration(model.calibration_key, fit, args.reference, model.params())
         print(f"stored in fem/calibration.json under {model.calibration_key!r}")
+    return 0
+
+
+def _dataset(args) -> int:
+    from fem.dataset import build_dataset
+
+    run = build_dataset(args.grid, args.model, mesh=args.mesh, out=args.out,
+                        workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache)
+    print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)
     return 0

@@ -12,6 +12,9 @@ from fem.interface import ForceModel
 
 MODELS: dict[str, str] = {
     "eq2": "fem.closed_form:ChouHannaford",
+    "thickwall": "fem.thickwall:ThickWall",
+    "axisym": "fem.axisym:AxisymmetricFE",
+    "auto": "fem.auto:AutoModel",
 }
 
 

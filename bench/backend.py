@@ -1,0 +1,128 @@
+"""The acquisition backend protocol and its error types.
+
+A backend is the transport between the run and the bench hardware (pymeasure's adapter/driver
+split): it opens one analog-input task holding every input and one analog-output channel for the
+regulator command, reads blocks of raw volts on a hardware clock, writes the command, and closes.
+:class:`bench.ni.NIBackend` talks to an NI USB-6001 through nidaqmx; :class:`bench.sim.SimBackend`
+is a simulated bench with the same signature. The run (``bench.run``) only sees this protocol, so
+the real bench and the simulation share one code path.
+
+Failures are raised as :class:`BenchError` subclasses with one-line messages; NI-DAQmx error codes
+are mapped to them by :func:`error_for_code`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+
+
+class BenchError(RuntimeError):
+    """A failure of the bench hardware (or of its simulation); the message is one line."""
+
+
+class DriverMissing(BenchError):
+    """NI-DAQmx is not installed (always the case on Linux for the USB-6001)."""
+
+
+class DaqDisconnected(BenchError):
+    """The device went away (USB unplugged, powered off)."""
+
+
+class ReadTimeout(BenchError):
+    """The requested samples did not arrive within the read timeout."""
+
+
+class BufferOverflow(BenchError):
+    """The reader fell behind and the driver overwrote unread samples: data were lost.
+
+    ``lost_samples`` is the number of samples per channel lost, when the backend knows it.
+    """
+
+    def __init__(self, message: str, lost_samples: int | None = None):
+        super().__init__(message)
+        self.lost_samples = lost_samples
+
+
+class AOWriteFailed(BenchError):
+    """The regulator command could not be written."""
+
+
+class DeviceReserved(BenchError):
+    """Another task or program holds the device."""
+
+
+# NI-DAQmx status codes (nidaqmx.error_codes.DAQmxErrors) and what they mean for a run.
+NI_ERROR_CODES: dict[int, type[BenchError]] = {
+    -200279: BufferOverflow,  # SAMPLES_NO_LONGER_AVAILABLE: the buffer was overwritten
+    -200284: ReadTimeout,  # SAMPLES_NOT_YET_AVAILABLE: timeout elapsed
+    -50405: DaqDisconnected,  # PAL_TRANSFER_ABORTED: USB transfer aborted, device gone
+    -201003: DaqDisconnected,  # DEV_CANNOT_BE_ACCESSED
+    -200324: DaqDisconnected,  # DEV_ABSENT_OR_UNAVAILABLE
+    -50103: DeviceReserved,  # PAL_RESOURCE_RESERVED
+    -200022: DeviceReserved,  # RESOURCE_ALREADY_RESERVED by another task
+}
+
+
+def error_for_code(code: int, message: str, default: type[BenchError] = BenchError) -> BenchError:
+    """The :class:`BenchError` for an NI-DAQmx status ``code``; ``default`` for unmapped codes."""
+    cls = NI_ERROR_CODES.get(int(code), default)
+    first_line = message.strip().splitlines()[0] if message.strip() else "no description"
+    return cls(f"NI-DAQmx error {code}: {first_line}")
+
+
+@dataclass
+class DeviceInfo:
+    """What the backend found when it opened the device; recorded in ``run.json``."""
+
+    backend: str
+    simulated: bool
+    product_type: str
+    serial_number: str
+    sample_rate_hz: float
+    channels: dict[str, Any]
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"backend": self.backend, "simulated": self.simulated,
+                "product_type": self.product_type, "serial_number": self.serial_number,
+                "sample_rate_hz": self.sample_rate_hz, "channels": self.channels, **self.extra}
+
+
+@dataclass
+class Block:
+    """Samples read in one call: ``volts[k, c]`` is sample ``first_index + k`` of input ``c``.
+
+    Inputs are in the order of ``DeviceInfo.channels["ai"]``. The sample index counts periods of
+    the hardware clock since start; after a buffer overflow it jumps by the samples lost.
+    """
+
+    first_index: int
+    volts: np.ndarray
+
+
+class Backend(Protocol):
+    """Transport to the bench: one AI task with every input, one AO command, a hardware clock."""
+
+    def open(self) -> DeviceInfo:
+        """Reserve the device, create the tasks (not started) and write the vent command."""
+
+    def start(self) -> None:
+        """Start the sample clock; sample 0 is the first sample after this call."""
+
+    def read(self, n_samples: int, timeout_s: float) -> Block:
+        """Block until ``n_samples`` per input are available and return them."""
+
+    def available(self) -> int:
+        """Samples per input acquired and not yet read."""
+
+    def recover(self) -> int:
+        """Restart acquisition after a :class:`BufferOverflow`; return the next sample index."""
+
+    def write_command(self, volts: float) -> None:
+        """Write the regulator command voltage on the AO channel (no-op without AO)."""
+
+    def close(self) -> None:
+        """Write the vent command, then stop and clear every task. Safe to call twice."""

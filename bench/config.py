@@ -1,0 +1,369 @@
+"""Bench configuration: one TOML file, validated into frozen dataclasses with clear errors.
+
+The packaged default ``bench/configs/paper_prototype.toml`` reproduces the paper's prototype on the
+simulated bench. Every setting has a unit in its name; a bad value raises ``ValueError`` naming the
+``section.key``, the value and what was expected.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from fem.arguments import parse_pressures
+
+DEFAULT_CONFIG = "paper_prototype.toml"
+TERMINAL_CONFIGS = ("differential", "rse", "nrse", "pseudodifferential")
+USB6001_RANGE_V = 10.0  # the USB-6001 has one AI range, +-10 V, and AO 0..10 V is within +-10 V
+
+
+def _positive(name, value):
+    if not value > 0:
+        raise ValueError(f"{name}={value!r} is invalid: expected a number > 0")
+
+
+def _fraction(name, value, low=0.0, high=1.0):
+    if not low <= value <= high:
+        raise ValueError(f"{name}={value!r} is invalid: expected a fraction in [{low}, {high}]")
+
+
+@dataclass(frozen=True)
+class Muscle:
+    id: str
+    D0_mm: float
+    t0_mm: float
+    L0_mm: float
+    eps: float
+
+    def check(self):
+        for name in ("D0_mm", "t0_mm", "L0_mm"):
+            _positive(f"muscle.{name}", getattr(self, name))
+        if self.t0_mm >= self.D0_mm / 2:
+            raise ValueError(f"muscle.t0_mm={self.t0_mm:g} is too thick for D0_mm="
+                             f"{self.D0_mm:g}: expected t0_mm < D0_mm/2")
+        if not 0.0 <= self.eps < 1.0:
+            raise ValueError(f"muscle.eps={self.eps!r} is invalid: expected a shortening ratio "
+                             "in [0, 1) (a fraction, 0.122 for 12.2 %)")
+        if not self.id or any(c in self.id for c in '/\\:*?"<>| '):
+            raise ValueError(f"muscle.id={self.id!r} is invalid: expected a non-empty name "
+                             "without spaces or path characters (it names the run folder)")
+
+
+@dataclass(frozen=True)
+class Daq:
+    device: str = "Dev1"
+    terminal_config: str = "differential"
+    sample_rate_hz: float = 10.0
+    buffer_s: float = 600.0
+    read_block_samples: int = 1
+    read_timeout_s: float = 2.0
+    read_retries: int = 2
+
+    @property
+    def buffer_samples(self) -> int:
+        return int(round(self.buffer_s * self.sample_rate_hz))
+
+    def check(self):
+        if self.terminal_config not in TERMINAL_CONFIGS:
+            raise ValueError(f"daq.terminal_config={self.terminal_config!r} is invalid: "
+                             f"expected one of {', '.join(TERMINAL_CONFIGS)}")
+        for name in ("sample_rate_hz", "read_block_samples", "read_timeout_s"):
+            _positive(f"daq.{name}", getattr(self, name))
+        if self.buffer_s < 600.0:
+            raise ValueError(f"daq.buffer_s={self.buffer_s:g} is invalid: expected >= 600 s "
+                             "(10 minutes of samples, so a stalled reader loses nothing)")
+        if self.read_retries < 0:
+            raise ValueError(f"daq.read_retries={self.read_retries} is invalid: expected >= 0")
+
+
+@dataclass(frozen=True)
+class LoadCell:
+    capacity_N: float
+    sensitivity_N_per_V: float
+    offset_V: float = 0.0
+    channel: str = "ai0"
+
+    def check(self):
+        _positive("loadcell.capacity_N", self.capacity_N)
+        _positive("loadcell.sensitivity_N_per_V", self.sensitivity_N_per_V)
+        full_scale_N = self.sensitivity_N_per_V * USB6001_RANGE_V
+        if full_scale_N < self.capacity_N * 0.999:
+            raise ValueError(
+                f"loadcell.sensitivity_N_per_V={self.sensitivity_N_per_V:g} puts the +-10 V rail "
+                f"at {full_scale_N:g} N, below capacity_N={self.capacity_N:g}: the cell would clip "
+                "before its capacity; expected sensitivity_N_per_V >= capacity_N / 10 V")
+
+    def force_N(self, volts):
+        """Force [N] from load-cell volts with this calibration."""
+        return (np.asarray(volts) - self.offset_V) * self.sensitivity_N_per_V
+
+
+@dataclass(frozen=True)
+class Regulator:
+    kind: str = "electronic"
+    max_pressure_bar: float = 2.5
+    full_scale_bar: float = 4.0
+    command_channel: str = "ao0"
+    monitor_channel: str = "ai1"
+    monitor_V_at_zero: float = 1.0
+    monitor_V_at_full_scale: float = 5.0
+
+    @property
+    def electronic(self) -> bool:
+        return self.kind == "electronic"
+
+    def check(self):
+        if self.kind not in ("electronic", "manual"):
+            raise ValueError(f"regulator.kind={self.kind!r} is invalid: expected 'electronic' "
+                             "or 'manual'")
+        _positive("regulator.full_scale_bar", self.full_scale_bar)
+        if not 0 < self.max_pressure_bar <= self.full_scale_bar:
+            raise ValueError(f"regulator.max_pressure_bar={self.max_pressure_bar:g} is invalid: "
+                             f"expected 0 < max <= full_scale_bar={self.full_scale_bar:g}")
+        if not self.monitor_V_at_full_scale > self.monitor_V_at_zero:
+            raise ValueError("regulator.monitor_V_at_full_scale must exceed monitor_V_at_zero")
+
+    def command_volts(self, pressure_bar: float) -> float:
+        """AO command [V, 0-10] for ``pressure_bar``, clamped to ``[0, max_pressure_bar]``."""
+        clamped = min(max(float(pressure_bar), 0.0), self.max_pressure_bar)
+        return clamped / self.full_scale_bar * 10.0
+
+    def monitor_bar(self, volts):
+        """Pressure [bar] from the monitor output volts (1-5 V over 0..full scale)."""
+        span = self.monitor_V_at_full_scale - self.monitor_V_at_zero
+        return (np.asarray(volts) - self.monitor_V_at_zero) / span * self.full_scale_bar
+
+
+@dataclass(frozen=True)
+class Sequence:
+    pressures_bar: tuple[float, ...]
+    down_sweep: bool = True
+    repeats: int = 1
+    preconditioning_cycles: int = 0
+    preconditioning_hold_s: float = 5.0
+    tare_s: float = 5.0
+
+    def check(self):
+        if len(self.pressures_bar) == 0:
+            raise ValueError("sequence.pressures_bar is empty: expected at least one pressure")
+        if self.repeats < 1:
+            raise ValueError(f"sequence.repeats={self.repeats} is invalid: expected >= 1")
+        if self.preconditioning_cycles < 0:
+            raise ValueError(f"sequence.preconditioning_cycles={self.preconditioning_cycles} "
+                             "is invalid: expected >= 0")
+        _positive("sequence.tare_s", self.tare_s)
+        _positive("sequence.preconditioning_hold_s", self.preconditioning_hold_s)
+
+
+@dataclass(frozen=True)
+class Settle:
+    min_dwell_s: float = 4.0
+    timeout_s: float = 60.0
+    window_s: float = 3.0
+    pressure_tolerance_bar: float = 0.03
+    max_force_slope_N_per_s: float = 1.0
+    max_force_std_N: float = 1.5
+    hold_s: float = 5.0
+
+    def check(self):
+        for f in dataclasses.fields(self):
+            _positive(f"settle.{f.name}", getattr(self, f.name))
+        if self.timeout_s < self.min_dwell_s:
+            raise ValueError(f"settle.timeout_s={self.timeout_s:g} is below min_dwell_s="
+                             f"{self.min_dwell_s:g}: expected timeout_s >= min_dwell_s")
+
+
+@dataclass(frozen=True)
+class Safety:
+    force_limit_fraction: float = 0.9
+
+    def check(self):
+        if not 0 < self.force_limit_fraction <= 1:
+            raise ValueError(f"safety.force_limit_fraction={self.force_limit_fraction!r} is "
+                             "invalid: expected a fraction of the load-cell capacity in (0, 1]")
+
+
+@dataclass(frozen=True)
+class Faults:
+    """Faults the simulated bench injects, at sample time [s]; absent means never."""
+
+    disconnect_at_s: float | None = None
+    read_timeout_at_s: float | None = None
+    read_timeouts: int = 1
+    stall_at_s: float | None = None
+    stall_s: float = 0.0
+    ao_fail_at_s: float | None = None
+
+    def check(self):
+        if self.read_timeouts < 1:
+            raise ValueError(f"sim.faults.read_timeouts={self.read_timeouts} is invalid: "
+                             "expected >= 1")
+        if self.stall_s < 0:
+            raise ValueError(f"sim.faults.stall_s={self.stall_s:g} is invalid: expected >= 0")
+
+
+@dataclass(frozen=True)
+class Sim:
+    model: str = "eq2"
+    seed: int = 0
+    regulator_tau_s: float = 0.4
+    regulator_slew_bar_per_s: float = 2.0
+    hysteresis_fraction: float = 0.03
+    creep_fraction: float = 0.02
+    creep_tau_s: float = 30.0
+    noise_V: float = 0.002
+    loadcell_offset_V: float = 0.015
+    monitor_noise_V: float = 0.001
+    buffer_s: float | None = None
+    faults: Faults = field(default_factory=Faults)
+
+    def check(self):
+        from fem.models import model_names
+
+        if self.model not in model_names():
+            raise ValueError(f"sim.model={self.model!r} is unknown: expected one of "
+                             f"{', '.join(model_names())}")
+        for name in ("regulator_tau_s", "regulator_slew_bar_per_s", "creep_tau_s"):
+            _positive(f"sim.{name}", getattr(self, name))
+        for name in ("hysteresis_fraction", "creep_fraction"):
+            _fraction(f"sim.{name}", getattr(self, name), 0.0, 0.5)
+        for name in ("noise_V", "monitor_noise_V"):
+            if getattr(self, name) < 0:
+                raise ValueError(f"sim.{name}={getattr(self, name)!r} is invalid: expected >= 0")
+        if self.buffer_s is not None:
+            _positive("sim.buffer_s", self.buffer_s)
+        self.faults.check()
+
+
+@dataclass(frozen=True)
+class BenchConfig:
+    muscle: Muscle
+    loadcell: LoadCell
+    daq: Daq = field(default_factory=Daq)
+    regulator: Regulator = field(default_factory=Regulator)
+    sequence: Sequence = field(default_factory=lambda: Sequence((0.5, 1.0)))
+    settle: Settle = field(default_factory=Settle)
+    safety: Safety = field(default_factory=Safety)
+    sim: Sim = field(default_factory=Sim)
+    source: str = ""
+    text: str = ""
+
+    @property
+    def force_limit_N(self) -> float:
+        return self.safety.force_limit_fraction * self.loadcell.capacity_N
+
+    def check(self):
+        too_high = [p for p in self.sequence.pressures_bar if p > self.regulator.max_pressure_bar]
+        if too_high:
+            raise ValueError(f"sequence.pressures_bar has {too_high[0]:g} bar, above "
+                             f"regulator.max_pressure_bar={self.regulator.max_pressure_bar:g}: "
+                             "expected every planned pressure within the limit")
+
+    def replace(self, **sections) -> BenchConfig:
+        """A copy with some settings changed: ``replace(muscle={"eps": 0.1})``."""
+        changes = {name: dataclasses.replace(getattr(self, name), **values)
+                   for name, values in sections.items()}
+        new = dataclasses.replace(self, **changes)
+        for section in changes.values():
+            section.check()
+        new.check()
+        return new
+
+    def as_dict(self) -> dict[str, Any]:
+        return {f.name: dataclasses.asdict(getattr(self, f.name))
+                for f in dataclasses.fields(self) if f.name not in ("source", "text")}
+
+
+SECTIONS = {"muscle": Muscle, "daq": Daq, "loadcell": LoadCell, "regulator": Regulator,
+            "sequence": Sequence, "settle": Settle, "safety": Safety, "sim": Sim}
+
+
+def _section(cls, table: Any, where: str):
+    if not isinstance(table, dict):
+        raise ValueError(f"[{where}] must be a table of settings, got {table!r}")
+    fields = {f.name: f for f in dataclasses.fields(cls)}
+    unknown = sorted(set(table) - set(fields))
+    if unknown:
+        raise ValueError(f"{where}.{unknown[0]} is not a setting: expected some of "
+                         f"{', '.join(fields)}")
+    values = {}
+    for name, f in fields.items():
+        key = f"{where}.{name}"
+        if name not in table:
+            if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING:
+                raise ValueError(f"{key} is missing: it has no default")
+            continue
+        values[name] = _convert(table[name], f.type, key)
+    obj = cls(**values)
+    obj.check()
+    return obj
+
+
+def _convert(value, annotation: str, key: str):
+    kinds = {"str": str, "float": float, "int": int, "bool": bool}
+    if annotation == "Faults":
+        return _section(Faults, value, key)
+    if annotation == "tuple[float, ...]":
+        return _pressures(value, key)
+    optional = annotation.endswith(" | None")
+    base = annotation.removesuffix(" | None")
+    if optional and value is None:
+        return None
+    expected = kinds[base]
+    if expected is float and isinstance(value, int) and not isinstance(value, bool):
+        value = float(value)
+    if not isinstance(value, expected) or (expected is int and isinstance(value, bool)):
+        raise ValueError(f"{key}={value!r} is invalid: expected a {base}")
+    if expected is float and not np.isfinite(value):
+        raise ValueError(f"{key}={value!r} is not a finite number")
+    return value
+
+
+def _pressures(value, key: str) -> tuple[float, ...]:
+    if isinstance(value, str):
+        return tuple(float(p) for p in parse_pressures(value))
+    if isinstance(value, list) and all(isinstance(v, int | float) for v in value):
+        return tuple(float(p) for p in parse_pressures(",".join(str(v) for v in value)))
+    raise ValueError(f"{key}={value!r} is invalid: expected 'start:stop:step' or a list of "
+                     "numbers [bar]")
+
+
+def parse_config(text: str, source: str = "<string>") -> BenchConfig:
+    """Validate the TOML ``text`` of a bench configuration."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"config {source} is not valid TOML: {exc}") from None
+    unknown = sorted(set(data) - set(SECTIONS))
+    if unknown:
+        raise ValueError(f"config {source}: [{unknown[0]}] is not a section: expected "
+                         f"{', '.join(SECTIONS)}")
+    for required in ("muscle", "loadcell"):
+        if required not in data:
+            raise ValueError(f"config {source}: section [{required}] is missing")
+    try:
+        sections = {name: _section(cls, data[name], name)
+                    for name, cls in SECTIONS.items() if name in data}
+    except ValueError as exc:
+        raise ValueError(f"config {source}: {exc}") from None
+    config = BenchConfig(**sections, source=source, text=text)
+    config.check()
+    return config
+
+
+def load_config(path: str | Path | None = None) -> BenchConfig:
+    """The configuration in ``path``, or the packaged default when ``path`` is None."""
+    if path is None:
+        text = resources.files("bench").joinpath("configs", DEFAULT_CONFIG).read_text("utf-8")
+        return parse_config(text, f"bench/configs/{DEFAULT_CONFIG}")
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"config {path} does not exist: expected a TOML file")
+    return parse_config(path.read_text(encoding="utf-8"), str(path))
+

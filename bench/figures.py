@@ -1,0 +1,207 @@
+"""The figures of the validation report and of the speed-accuracy study (matplotlib, Agg).
+
+Each function takes tidy pandas data and returns a :class:`matplotlib.figure.Figure` built without
+pyplot (no global state, no display needed). Conventions shared by every figure: forces in N,
+pressures in bar, errors in % (the paper's Equation 7); a point where a model is invalid or out
+of its domain is never drawn as a number but as a grey cross on the axis, with a legend entry.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+
+MODEL_COLOURS = {"eq2": "tab:blue", "eq2-inner": "tab:blue", "eq2-braid": "tab:cyan",
+                 "thickwall": "tab:orange", "axisym": "tab:green", "axisym-coarse": "yellowgreen",
+                 "axisym-medium": "tab:green", "axisym-fine": "darkgreen",
+                 "surrogate": "tab:red", "auto": "tab:purple"}
+INVALID_STYLE = {"marker": "x", "color": "0.45", "linestyle": "none", "markersize": 7,
+                 "clip_on": False}
+
+
+def colour(label: str, index: int = 0) -> str:
+    return MODEL_COLOURS.get(label, MODEL_COLOURS.get(label.split("-")[0], f"C{index % 10}"))
+
+
+def _mark_invalid(ax, pressures) -> None:
+    """Grey crosses on the bottom edge at the pressures where a model gave no valid number."""
+    if len(pressures):
+        ax.plot(pressures, np.zeros(len(pressures)), transform=ax.get_xaxis_transform(),
+                **INVALID_STYLE)
+
+
+def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str) -> Figure:
+    """Force against pressure (measured up and down sweeps, every model) and Err% per pressure.
+
+    ``steps``: ``pressure_bar_mean, force_N_mean, force_N_std, direction``. ``predictions``: one
+    row per model and step with ``model, pressure_bar, direction, force_N, valid, err_pct``.
+    """
+    fig = Figure(figsize=(11, 4.6), layout="constrained")
+    ax_f, ax_e = fig.subplots(1, 2)
+    for direction, marker, face in (("up", "o", "black"), ("down", "s", "white")):
+        sweep = steps[steps["direction"] == direction].sort_values("pressure_bar_mean")
+        if len(sweep):
+            ax_f.errorbar(sweep["pressure_bar_mean"], sweep["force_N_mean"],
+                          yerr=sweep["force_N_std"], fmt=marker, color="black",
+                          markerfacecolor=face, capsize=3, zorder=5,
+                          label=f"measured, {direction} sweep (mean ± std)")
+    any_invalid = False
+    for i, (model, rows) in enumerate(predictions.groupby("model", sort=False)):
+        c = colour(model, i)
+        curve = rows.drop_duplicates("pressure_bar").sort_values("pressure_bar")
+        ax_f.plot(curve["pressure_bar"], curve["force_N"].where(curve["valid"]), "-", color=c,
+                  label=model)
+        for direction, style in (("up", "-"), ("down", "--")):
+            sweep = rows[rows["direction"] == direction].sort_values("pressure_bar")
+            ax_e.plot(sweep["pressure_bar"], sweep["err_pct"].where(sweep["valid"]), style,
+                      marker="o" if direction == "up" else "s", markersize=4, color=c,
+                      markerfacecolor=c if direction == "up" else "white")
+        bad = curve.loc[~curve["valid"], "pressure_bar"]
+        _mark_invalid(ax_f, bad)
+        _mark_invalid(ax_e, rows.loc[~rows["valid"], "pressure_bar"].unique())
+        any_invalid |= len(bad) > 0
+    ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]", title="force against pressure")
+    ax_f.set_ylim(bottom=min(0.0, ax_f.get_ylim()[0]))
+    handles, labels = ax_f.get_legend_handles_labels()
+    if any_invalid:
+        handles.append(Line2D([], [], **INVALID_STYLE))
+        labels.append("model invalid / out of domain")
+    ax_f.legend(handles, labels, fontsize=8, loc="upper left")
+    ax_e.axhline(0.0, color="0.6", linewidth=0.8)
+    ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_meas − F_model) / max F_meas [%]",
+             title="error against the measurement (Equation 7)")
+    models = list(dict.fromkeys(predictions["model"]))
+    ax_e.legend([Line2D([], [], color=colour(m, i), linewidth=3) for i, m in enumerate(models)]
+                + [Line2D([], [], color="0.3", marker="o", linestyle="-"),
+                   Line2D([], [], color="0.3", marker="s", markerfacecolor="white",
+                          linestyle="--")],
+                [*models, "up sweep", "down sweep"], fontsize=8, loc="best")
+    for ax in (ax_f, ax_e):
+        ax.grid(True, alpha=0.3)
+        ax.set_xlim(left=0.0)
+    fig.suptitle(title)
+    return fig
+
+
+def surrogate_fe_figure(table: pd.DataFrame, title: str) -> Figure:
+    """The paper's Figure 6 with our numbers: FE against surrogate for each test muscle.
+
+    ``table``: ``muscle, pressure_bar, force_fe_N, force_N, valid, err_pct``.
+    """
+    muscles = list(dict.fromkeys(table["muscle"]))
+    fig = Figure(figsize=(4 * len(muscles) + 3, 4.2), layout="constrained")
+    axes = fig.subplots(1, len(muscles) + 1, squeeze=False)[0]
+    for i, (ax, muscle) in enumerate(zip(axes, muscles, strict=False)):
+        rows = table[table["muscle"] == muscle].sort_values("pressure_bar")
+        ax.plot(rows["pressure_bar"], rows["force_fe_N"], "o", color="black", label="FE (axisym)")
+        ax.plot(rows["pressure_bar"], rows["force_N"].where(rows["valid"]), "-", color=f"C{i}",
+                label="surrogate")
+        _mark_invalid(ax, rows.loc[~rows["valid"], "pressure_bar"])
+        ax.set(xlabel="pressure P [bar]", ylabel="force F [N]", title=f"muscle {muscle}")
+        ax.legend(fontsize=8, loc="upper left")
+        ax.grid(True, alpha=0.3)
+        axes[-1].plot(rows["pressure_bar"], rows["err_pct"].where(rows["valid"]), "-o",
+                      color=f"C{i}", markersize=4, label=f"muscle {muscle}")
+    axes[-1].axhline(0.0, color="0.6", linewidth=0.8)
+    axes[-1].set(xlabel="pressure P [bar]", ylabel="Err% = (F_FE − F_sur) / max F_FE [%]",
+                 title="error (Equation 7)")
+    axes[-1].legend(fontsize=8)
+    axes[-1].grid(True, alpha=0.3)
+    fig.suptitle(title)
+    return fig
+
+
+FAMILY_MARKERS = {"closed form": "D", "FE": "s", "surrogate": "o", "paper net": "."}
+
+
+def speed_accuracy_figure(summary: pd.DataFrame, machine: str) -> Figure:
+    """Seconds per predicted force (log) against the largest |Err%| (log), Pareto front marked.
+
+    ``summary``: one row per predictor with ``predictor, family, seconds_per_point,
+    max_abs_err_pct, pareto`` (the reference has error 0 and is drawn at the bottom edge).
+    """
+    fig = Figure(figsize=(10, 6.2), layout="constrained")
+    ax = fig.subplots()
+    floor = 0.5 * summary.loc[summary["max_abs_err_pct"] > 0, "max_abs_err_pct"].min()
+    y = summary["max_abs_err_pct"].clip(lower=floor)
+    for family, marker in FAMILY_MARKERS.items():
+        rows = summary["family"] == family
+        if rows.any():
+            ax.scatter(summary.loc[rows, "seconds_per_point"], y[rows], marker=marker,
+                       s=18 if family == "paper net" else 55,
+                       c="0.55" if family == "paper net" else None,
+                       label=family, zorder=3)
+    front = summary[summary["pareto"]].sort_values("seconds_per_point")
+    ax.step(front["seconds_per_point"], y[front.index], where="post", color="tab:red",
+            linewidth=1.5, label="Pareto front (nothing both faster and more accurate)", zorder=2)
+    for idx, row in summary.iterrows():
+        if row["family"] != "paper net" or row["pareto"]:
+            ax.annotate(row["predictor"] + (" (reference)" if row["max_abs_err_pct"] == 0 else ""),
+                        (row["seconds_per_point"], y[idx]), textcoords="offset points",
+                        xytext=(5, 4), fontsize=8)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set(xlabel="seconds per predicted force [s] (one call per 11-pressure sweep, median)",
+           ylabel="largest |Err%| against the finest FE [%]",
+           title=f"speed against accuracy, measured on {machine}")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="best")
+    return fig
+
+
+STABILITY_CLASSES = {
+    "ok": "#d9f0d3",
+    "invalid (model's own limit)": "#fdb863",
+    "not converged": "#d7191c",
+    "out of training domain": "#abd9e9",
+    "negative force": "#7b3294",
+    "force falls with pressure": "#f1a6c9",
+}
+
+
+def stability_figure(cells: pd.DataFrame, method: str) -> Figure:
+    """Where ``method`` fails over pressure and eps, one panel per muscle.
+
+    ``cells``: ``muscle, pressure_bar, eps, status`` (a key of :data:`STABILITY_CLASSES`) and
+    optionally ``cutbacks`` (written in the cell when > 0).
+    """
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+
+    names = list(STABILITY_CLASSES)
+    cmap = ListedColormap(list(STABILITY_CLASSES.values()))
+    norm = BoundaryNorm(np.arange(len(names) + 1) - 0.5, cmap.N)
+    muscles = list(dict.fromkeys(cells["muscle"]))
+    fig = Figure(figsize=(5.2 * len(muscles) + 1.5, 4.6), layout="constrained")
+    axes = fig.subplots(1, len(muscles), squeeze=False)[0]
+    for ax, muscle in zip(axes, muscles, strict=True):
+        rows = cells[cells["muscle"] == muscle]
+        grid = rows.pivot(index="eps", columns="pressure_bar", values="status")
+        codes = grid.map(names.index).to_numpy(dtype=float)
+        P = grid.columns.to_numpy(dtype=float)
+        E = 100.0 * grid.index.to_numpy(dtype=float)
+        ax.pcolormesh(_edges(P), _edges(E), codes, cmap=cmap, norm=norm, edgecolors="white",
+                      linewidth=0.4)
+        if "cutbacks" in rows:
+            cut = rows.pivot(index="eps", columns="pressure_bar", values="cutbacks")
+            for (e, p), n in cut.stack().items():
+                if n > 0:
+                    ax.text(p, 100.0 * e, f"{int(n)}", ha="center", va="center", fontsize=7)
+        ax.set(xlabel="pressure P [bar]", ylabel="shortening ratio eps [%]", title=muscle)
+    handles = [Patch(color=STABILITY_CLASSES[n], label=n) for n in names]
+    if "cutbacks" in cells and (cells["cutbacks"] > 0).any():
+        handles.append(Patch(color="white", label="number: Newton cut-backs needed"))
+    fig.legend(handles=handles, loc="outside right center", fontsize=8)
+    fig.suptitle(f"stability of {method}")
+    return fig
+
+
+def _edges(centres: np.ndarray) -> np.ndarray:
+    """Cell edges around sorted, roughly even centres, for pcolormesh."""
+    c = np.asarray(centres, dtype=float)
+    if c.size == 1:
+        return np.array([c[0] - 0.5, c[0] + 0.5])
+    mid = (c[1:] + c[:-1]) / 2.0
+    return np.concatenate([[c[0] - (mid[0] - c[0])], mid, [c[-1] + (c[-1] - mid[-1])]])

@@ -1,0 +1,179 @@
+"""The NI USB-6001 backend: the :class:`bench.backend.Backend` protocol over nidaqmx.
+
+The only module that imports ``nidaqmx`` (inside methods, so the package imports without it).
+One AI task holds every input (the USB-6001 has one multiplexed ADC): the load cell and, with an
+electronic regulator, its monitor output, each with an explicit terminal configuration and the
++-10 V range (never the driver defaults). The task runs continuously on the hardware sample clock
+with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the run's plain loop.
+A second task writes the regulator command on AO0, on demand. ``close`` writes the vent command
+before clearing the tasks: the USB-6001's AO keeps its last value when a task is closed.
+
+NI-DAQmx status codes are turned into :mod:`bench.backend` errors; a missing driver (always the
+case on Linux) into :class:`~bench.backend.DriverMissing` with what to do about it.
+"""
+
+from __future__ import annotations
+
+import time
+from contextlib import contextmanager, suppress
+
+import numpy as np
+
+from bench.backend import (
+    AOWriteFailed,
+    BenchError,
+    Block,
+    DeviceInfo,
+    DriverMissing,
+    error_for_code,
+)
+from bench.config import USB6001_RANGE_V, BenchConfig
+
+DRIVER_MISSING = ("NI-DAQmx driver not found: install NI-DAQmx (Windows; NI does not support the "
+                  "USB-6001 on Linux) or run on the simulated bench with --backend sim")
+TERMINAL_CONFIG_NAMES = {"differential": "DIFF", "rse": "RSE", "nrse": "NRSE",
+                         "pseudodifferential": "PSEUDO_DIFF"}
+VENT_V = 0.0  # an ITV-class regulator exhausts at 0 V command
+
+
+@contextmanager
+def daq_errors(default: type[BenchError] = BenchError):
+    """Translate nidaqmx exceptions into :mod:`bench.backend` errors with one-line messages."""
+    import nidaqmx.errors
+
+    try:
+        yield
+    except nidaqmx.errors.DaqNotFoundError:
+        raise DriverMissing(DRIVER_MISSING) from None
+    except nidaqmx.errors.DaqNotSupportedError as exc:
+        raise DriverMissing(f"NI-DAQmx is not supported here ({exc}): use --backend sim") from None
+    except nidaqmx.errors.DaqError as exc:
+        raise error_for_code(exc.error_code, str(exc), default) from exc
+
+
+class NIBackend:
+    """NI USB-6001 bench: AI task (load cell [+ regulator monitor]) and AO command task."""
+
+    def __init__(self, config: BenchConfig):
+        self.config = config
+        self.device = config.daq.device
+        self.rate_hz = config.daq.sample_rate_hz
+        self.ai_task = None
+        self.ao_task = None
+        self._reader = None
+        self._writer = None
+        self._index = 0
+        self._started_at: float | None = None
+
+    @property
+    def ai_channels(self) -> list[str]:
+        ai = [self.config.loadcell.channel]
+        if self.config.regulator.electronic:
+            ai.append(self.config.regulator.monitor_channel)
+        return ai
+
+    def open(self) -> DeviceInfo:
+        import nidaqmx
+        from nidaqmx.constants import AcquisitionType, TerminalConfiguration
+        from nidaqmx.stream_readers import AnalogMultiChannelReader
+        from nidaqmx.stream_writers import AnalogSingleChannelWriter
+
+        daq = self.config.daq
+        terminal = getattr(TerminalConfiguration, TERMINAL_CONFIG_NAMES[daq.terminal_config])
+        try:
+            with daq_errors():
+                self.ai_task = nidaqmx.Task("mkm_ai")
+                for channel in self.ai_channels:
+                    self.ai_task.ai_channels.add_ai_voltage_chan(
+                        f"{self.device}/{channel}", terminal_config=terminal,
+                        min_val=-USB6001_RANGE_V, max_val=USB6001_RANGE_V)
+                self.ai_task.timing.cfg_samp_clk_timing(
+                    self.rate_hz, sample_mode=AcquisitionType.CONTINUOUS,
+                    samps_per_chan=daq.buffer_samples)
+                self.ai_task.in_stream.input_buf_size = daq.buffer_samples
+                self._reader = AnalogMultiChannelReader(self.ai_task.in_stream)
+                if self.config.regulator.electronic:
+                    self.ao_task = nidaqmx.Task("mkm_ao")
+                    self.ao_task.ao_channels.add_ao_voltage_chan(
+                        f"{self.device}/{self.config.regulator.command_channel}",
+                        min_val=0.0, max_val=10.0)
+                    self._writer = AnalogSingleChannelWriter(self.ao_task.out_stream,
+                                                             auto_start=True)
+                self.write_command(VENT_V)
+                actual_rate = float(self.ai_task.timing.samp_clk_rate)
+                dev = nidaqmx.system.Device(self.device)
+                product, serial = str(dev.product_type), f"{int(dev.serial_num):X}"
+        except BaseException:
+            with suppress(BenchError):  # the error that stopped opening is the one to report
+                self.close()
+            raise
+        channels = {"ai": self.ai_channels, "ai_range_V": [-USB6001_RANGE_V, USB6001_RANGE_V],
+                    "terminal_config": daq.terminal_config,
+                    "ao": self.config.regulator.command_channel if self._writer else None,
+                    "buffer_samples": daq.buffer_samples}
+        return DeviceInfo(backend="ni", simulated=False, product_type=product,
+                          serial_number=serial, sample_rate_hz=actual_rate, channels=channels,
+                          extra={"device": self.device, "nidaqmx": _nidaqmx_version()})
+
+    def start(self) -> None:
+        with daq_errors():
+            self.ai_task.start()
+        self._started_at = time.monotonic()
+        self._index = 0
+
+    def read(self, n_samples: int, timeout_s: float) -> Block:
+        data = np.empty((len(self.ai_channels), n_samples))
+        with daq_errors():
+            read = self._reader.read_many_sample(data, n_samples, timeout=timeout_s)
+        block = Block(self._index, data[:, :read].T.copy())
+        self._index += read
+        return block
+
+    def available(self) -> int:
+        with daq_errors():
+            return int(self.ai_task.in_stream.avail_samp_per_chan)
+
+    def recover(self) -> int:
+        # Restarting discards the overwritten buffer; the hardware clock ran on meanwhile, so the
+        # sample index resumes from the time elapsed since the first start.
+        with daq_errors():
+            self.ai_task.stop()
+            self.ai_task.start()
+        elapsed = time.monotonic() - self._started_at
+        self._index = max(self._index, int(elapsed * self.rate_hz))
+        return self._index
+
+    def write_command(self, volts: float) -> None:
+        if self._writer is None:
+            return
+        with daq_errors(AOWriteFailed):
+            self._writer.write_one_sample(float(volts), timeout=1.0)
+
+    def close(self) -> None:
+        """Vent first, then clear the AI and AO tasks; every step is tried, the first error wins."""
+        errors = []
+        if self._writer is not None:
+            try:
+                self.write_command(VENT_V)
+            except BaseException as exc:
+                errors.append(exc)
+        for name in ("ai_task", "ao_task"):
+            task = getattr(self, name)
+            if task is None:
+                continue
+            try:
+                with daq_errors():
+                    task.close()
+            except BaseException as exc:
+                errors.append(exc)
+            setattr(self, name, None)
+        self._writer = self._reader = None
+        if errors:
+            raise errors[0]
+
+
+def _nidaqmx_version() -> str:
+    from importlib.metadata import version
+
+    return version("nidaqmx")
+

@@ -1,0 +1,459 @@
+"""The validation report: bench runs against every force model, as one self-contained HTML file.
+
+:func:`build_report` loads runs with :func:`bench.storage.load_run`, predicts each run's steps with
+the requested models (FE predictions through :mod:`bench.prediction_cache`), scores them with the
+paper's Equation 7 against the measurement, compares the surrogate with our FE model on the
+paper's test muscles I, II and III, and writes ``report.html`` (figures embedded as base64 PNG,
+inline CSS, no external asset) with the PNGs and CSVs beside it. Every table and figure names
+the provenance entries (models and their parameters, data, versions) it was computed from.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import inspect
+import json
+import time
+from dataclasses import dataclass, field
+from importlib import import_module
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from bench.figures import run_figure, surrogate_fe_figure
+from bench.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
+from fem.interface import ForceModel, Prediction, provenance
+
+DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
+CACHED_MODELS = ("axisym",)  # seconds per sweep; the closed forms and surrogates take microseconds
+REFERENCE_DIR = Path(__file__).resolve().parents[1] / "data" / "reference"
+FE_TEST_MUSCLES = REFERENCE_DIR / "fe_test_muscles.csv"
+PAPER_TABLE3 = REFERENCE_DIR / "paper_table3.csv"
+TEST_MUSCLES = ("I", "II", "III")
+
+
+def equation7_err_pct(force_reference_N, force_N, scale_N) -> np.ndarray:
+    """The paper's Equation 7 in %: ``(F_ref - F_pred) / max(F_ref)``, ``max`` over the sweep.
+
+    Antonelli et al., Actuators 2025, 14(3), 153, doi:10.3390/act14030153, Equation 7.
+    """
+    if not np.isfinite(scale_N) or scale_N <= 0:
+        raise ValueError(f"max reference force {scale_N!r} N is invalid: expected > 0 N "
+                         "(a sweep without force cannot normalise Equation 7)")
+    return 100.0 * (np.asarray(force_reference_N, float) - np.asarray(force_N, float)) / scale_N
+
+
+@dataclass
+class ModelSpec:
+    """A model as named on the command line: ``NAME[:key=value,...]``, ``surrogate[:PATH]``."""
+
+    text: str
+    name: str
+    params: dict = field(default_factory=dict)
+    path: str | None = None
+
+    @classmethod
+    def parse(cls, text: str) -> ModelSpec:
+        name, _, rest = text.strip().partition(":")
+        if name == "surrogate":
+            return cls(text=text, name=name, path=rest or None)
+        params = {}
+        for item in filter(None, rest.split(",")):
+            key, sep, value = item.partition("=")
+            if not sep:
+                raise ValueError(f"model {text!r}: {item!r} is not key=value "
+                                 "(expected for example axisym:mesh=coarse)")
+            params[key.strip()] = _number_or_text(value.strip())
+        return cls(text=text, name=name, params=params)
+
+    def build(self, L0_mm: float) -> ForceModel:
+        """The model, with the run's rest length where the model takes one."""
+        if self.name == "surrogate":
+            import surrogate
+
+            if self.path:
+                from surrogate.io import load_model
+
+                return load_model(self.path)
+            return surrogate.default_model()
+        from fem.models import MODELS, make_model
+
+        if self.name not in MODELS:
+            make_model(self.name)  # raises the registry's one-line error
+        module, cls = MODELS[self.name].split(":")
+        accepted = inspect.signature(getattr(import_module(module), cls)).parameters
+        params = dict(self.params)
+        if "L0_mm" in accepted:
+            params.setdefault("L0_mm", L0_mm)
+        return make_model(self.name, **params)
+
+
+def _number_or_text(value: str):
+    try:
+        return float(value)
+    except ValueError:
+        return value
+
+
+def parse_models(text: str) -> list[ModelSpec]:
+    specs = [ModelSpec.parse(t) for t in text.split(",") if t.strip()]
+    if not specs:
+        raise ValueError(f"--models {text!r} is empty: expected for example eq2,thickwall")
+    return specs
+
+
+def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict,
+                  cache_dir) -> tuple[Prediction, bool]:
+    """Model forces at each step's measured mean pressure (through the cache for FE models)."""
+    pressure = evaluation_pressures(steps)
+    args = (pressure, muscle["D0_mm"], muscle["t0_mm"], muscle["eps"])
+    if model.name in CACHED_MODELS:
+        return cached_predict(model, *args, cache_dir=cache_dir)
+    return model.predict(*args), False
+
+
+def evaluation_pressures(steps: pd.DataFrame) -> np.ndarray:
+    """Measured mean pressure per step (set pressure where none was measured), floored at 0 bar:
+    a mean of -0.003 bar at the vented step is sensor noise, not a vacuum."""
+    measured = steps["pressure_bar_mean"].fillna(steps["set_pressure_bar"])
+    return np.maximum(measured.to_numpy(dtype=float), 0.0)
+
+
+def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.DataFrame:
+    """One row per step: measurement, the model's force, validity and Err% (Equation 7)."""
+    scale = float(np.nanmax(steps["force_N_mean"].to_numpy(dtype=float)))
+    valid = np.ravel(prediction.valid)
+    force = np.where(valid, np.ravel(prediction.force_N), np.nan)
+    rows = pd.DataFrame({
+        "model": label, "step": steps["step"].to_numpy(), "direction": steps["direction"],
+        "set_pressure_bar": steps["set_pressure_bar"].to_numpy(),
+        "pressure_bar": np.ravel(prediction.pressure_bar),
+        "force_meas_N": steps["force_N_mean"].to_numpy(),
+        "force_meas_std_N": steps["force_N_std"].to_numpy(),
+        "force_N": force, "valid": valid,
+    })
+    rows["err_pct"] = equation7_err_pct(rows["force_meas_N"], rows["force_N"], scale)
+    for key, value in prediction.extras.items():
+        rows[key] = np.ravel(value)
+    return rows
+
+
+def summarise(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
+    """Largest |Err%|, RMSE [N] over the valid points, time taken, points valid."""
+    ok = scored[scored["valid"]]
+    residual = ok["force_meas_N"] - ok["force_N"]
+    return {
+        "model": scored["model"].iloc[0],
+        "valid points": f"{len(ok)} of {len(scored)}",
+        "largest |Err%|": float(ok["err_pct"].abs().max()) if len(ok) else np.nan,
+        "RMSE [N]": float(np.sqrt(np.mean(residual**2))) if len(ok) else np.nan,
+        "time [s]": seconds,
+        "time source": "FE cache (time of the original solve)" if cached else "measured now",
+    }
+
+
+# --- HTML ------------------------------------------------------------------------------------
+
+CSS = """
+body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;max-width:1150px;
+margin:1.5em auto;padding:0 1em;color:#222;line-height:1.45}
+h1{font-size:1.6em;border-bottom:2px solid #333}h2{margin-top:1.8em;border-bottom:1px solid #aaa}
+table{border-collapse:collapse;margin:.6em 0;font-size:.9em}
+th,td{border:1px solid #bbb;padding:.25em .6em;text-align:right}
+th{background:#eee}td:first-child,th:first-child{text-align:left}
+figure{margin:1em 0}figure img{max-width:100%;height:auto;border:1px solid #ddd}
+figcaption,.caption{font-size:.85em;color:#444}
+.status{padding:.4em .8em;border-radius:4px;font-weight:600;display:inline-block}
+.status-complete{background:#d9f0d3}.status-other{background:#fdd;border:1px solid #c00}
+.note{background:#fff8e1;border-left:4px solid #f0b400;padding:.4em .8em}
+pre{background:#f6f6f6;padding:.6em;overflow-x:auto;font-size:.8em;white-space:pre-wrap}
+dl.kv{display:grid;grid-template-columns:max-content auto;gap:.1em 1em}dl.kv dt{font-weight:600}
+dl.kv dd{margin:0}
+@media print{body{max-width:none;margin:0;font-size:10pt}h2{page-break-after:avoid}
+figure,table,.run-head{page-break-inside:avoid}pre{font-size:7pt}}
+"""
+
+
+def flatten(value, prefix: str = "") -> str:
+    """``a.b = 1.23, a.c = x`` from nested metadata, numbers to 4 significant digits."""
+    if isinstance(value, dict):
+        return ", ".join(flatten(v, f"{prefix}{k}.") for k, v in value.items()) or "none"
+    text = f"{value:.4g}" if isinstance(value, float) else str(value)
+    return f"{prefix[:-1]} = {text}" if prefix else text
+
+
+def esc(value) -> str:
+    return html.escape(str(value))
+
+
+def png_data_uri(path: Path) -> str:
+    return "data:image/png;base64," + base64.b64encode(Path(path).read_bytes()).decode("ascii")
+
+
+def figure_html(path: Path, caption: str) -> str:
+    return (f'<figure><img src="{png_data_uri(path)}" alt="{esc(caption)}">'
+            f"<figcaption>{caption}</figcaption></figure>")
+
+
+def table_html(df: pd.DataFrame, caption: str, digits: int = 2,
+               formats: dict[str, str] | None = None) -> str:
+    """An HTML table; floats with ``digits`` decimals unless ``formats`` gives a column's spec
+    (seconds span six decades: ``{"time [s]": ".3g"}``)."""
+    formats = {"time [s]": ".3g", "seconds_per_point": ".3g"} | (formats or {})
+    formatters = {c: (lambda v, f=f: "—" if pd.isna(v) else format(v, f))
+                  for c, f in formats.items() if c in df.columns}
+    body = df.to_html(index=False, border=0, na_rep="—", escape=True, formatters=formatters,
+                      float_format=lambda v: f"{v:.{digits}f}")
+    return f'<div class="table">{body}<p class="caption">{caption}</p></div>'
+
+
+def provenance_links(keys) -> str:
+    return "Provenance: " + ", ".join(f'<a href="#prov-{esc(k)}">{esc(k)}</a>' for k in keys)
+
+
+def html_page(title: str, body: str) -> str:
+    return (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+            f'<meta name="viewport" content="width=device-width, initial-scale=1">'
+            f"<title>{esc(title)}</title><style>{CSS}</style></head>"
+            f"<body><h1>{esc(title)}</h1>{body}</body></html>\n")
+
+
+def save_figure(fig, path: Path) -> Path:
+    fig.savefig(path, dpi=110)
+    return path
+
+
+def kv_html(pairs: dict) -> str:
+    return ('<dl class="kv">' + "".join(f"<dt>{esc(k)}</dt><dd>{esc(v)}</dd>"
+                                        for k, v in pairs.items()) + "</dl>")
+
+
+# --- the report -------------------------------------------------------------------------------
+
+
+def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
+                 cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
+                 tolerance: float | None = 0.02) -> Path:
+    """Write ``report.html`` (plus PNGs and CSVs) for bench runs into ``out_dir``; return its path.
+
+    Parameters
+    ----------
+    run_dirs : list of path
+        Run folders written by ``mkm acquire`` (real or simulated; aborted ones included).
+    models : iterable of str
+        Model specs (``eq2``, ``thickwall``, ``axisym:mesh=coarse``, ``surrogate`` or
+        ``surrogate:PATH``), drawn in this order.
+    out_dir : path, optional
+        Output folder (default ``reports/<first run folder name>``).
+    cache_dir : path or None
+        FE prediction cache (None: no cache).
+    tolerance : float or None
+        Tolerance of the ``auto`` model choice shown per run (a fraction); None leaves the
+        choice out.
+    """
+    from bench.storage import load_run
+
+    start = time.perf_counter()
+    run_dirs = [Path(p) for p in run_dirs]
+    if not run_dirs:
+        raise ValueError("no run folder given: expected at least one RUN_DIR")
+    specs = [m if isinstance(m, ModelSpec) else ModelSpec.parse(m) for m in models]
+    out = Path(out_dir) if out_dir else Path("reports") / run_dirs[0].name
+    out.mkdir(parents=True, exist_ok=True)
+    prov: dict[str, dict] = {"software": provenance()}
+    sections, summaries, notes = [], [], []
+
+    for k, run_dir in enumerate(run_dirs, start=1):
+        run = load_run(run_dir)
+        sections.append(_run_section(k, run, specs, out, cache_dir, tolerance, prov,
+                                     summaries, notes))
+
+    sections.append(_surrogate_section(out, prov))
+    summary = pd.DataFrame(summaries)
+    summary.to_csv(out / "summary.csv", index=False)
+    elapsed = time.perf_counter() - start
+    intro = (f"<p>Generated {esc(prov['software']['date_utc'])} by "
+             f"<code>{esc(prov['software']['command'])}</code> in {elapsed:.1f} s. "
+             f"{len(run_dirs)} run(s); models: {esc(', '.join(s.text for s in specs))}. "
+             "Err% is the paper's Equation 7, (F_meas − F_model) / max F_meas over the run, "
+             "in %; points where a model is invalid or outside its domain are drawn as grey "
+             "crosses and left out of every number.</p>")
+    body = intro + "".join(sections) + _provenance_section(prov)
+    path = out / "report.html"
+    path.write_text(html_page("McKibben muscle validation report", body), encoding="utf-8")
+    return path
+
+
+def _run_section(k, run, specs, out, cache_dir, tolerance, prov, summaries, notes) -> str:
+    meta = run.meta
+    muscle = meta.get("muscle", {})
+    run_key = f"run-{k}"
+    prov[run_key] = {"path": str(run.path), **{key: meta.get(key) for key in
+                                                ("provenance", "versions", "command")
+                                                if key in meta}}
+    status = str(run.status)
+    steps = run.steps
+    head = [f'<section class="run-head"><h2>Run {k}: {esc(Path(run.path).name)}</h2>',
+            f'<p><span class="status status-{"complete" if run.complete else "other"}">'
+            f"status: {esc(status)}</span>"]
+    if not run.complete:
+        head.append(f" — reason: {esc(meta.get('reason') or 'not recorded')}. Kept: "
+                    f"{len(steps)} settled step(s) of {_planned_steps(meta)}, "
+                    f"{len(run.samples)} sample(s). Only what was kept is scored below.")
+    head.append("</p>")
+    hardware = meta.get("hardware", {})
+    head.append(kv_html({
+        "muscle": f"{muscle.get('id', '?')}: D0 = {muscle.get('D0_mm')} mm, "
+                  f"t0 = {muscle.get('t0_mm')} mm, L0 = {muscle.get('L0_mm')} mm",
+        "shortening ratio eps": f"{100 * float(muscle.get('eps', np.nan)):.1f} %",
+        "hardware": ", ".join(f"{a}={b}" for a, b in hardware.items()
+                              if not isinstance(b, dict | list)),
+        "calibration": flatten(meta.get("calibration", {})),
+        "tare": flatten(meta.get("tare", {})),
+    }))
+    if run.problems:
+        head.append('<p class="note">Loader: ' + esc("; ".join(run.problems)) + "</p>")
+    head.append("</section>")
+    if steps.empty:
+        return "".join(head) + '<p class="note">No step was kept: nothing to compare.</p>'
+
+    scored, keys = [], [run_key]
+    for spec in specs:
+        model = spec.build(float(muscle.get("L0_mm", 282.0)))
+        pred, cached = predict_steps(model, steps, muscle, cache_dir)
+        rows = score_run(steps, pred, spec.text)
+        scored.append(rows)
+        summaries.append({"run": Path(run.path).name, **summarise(rows, pred.seconds, cached)})
+        key = f"model-{spec.text}"
+        prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model)}
+        keys.append(key)
+    scored = pd.concat(scored, ignore_index=True)
+    stem = f"run{k}"
+    scored.to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
+    fig_path = save_figure(run_figure(steps, scored, f"run {k}: {muscle.get('id', '')}, "
+                                      f"eps = {100 * float(muscle.get('eps', 0)):.1f} %"),
+                           out / f"{stem}_force_error.png")
+    run_summary = pd.DataFrame([s for s in summaries if s["run"] == Path(run.path).name])
+    parts = head + [
+        figure_html(fig_path, "Left: measured force per pressure step (mean ± std; filled "
+                    "circles up sweep, open squares down sweep) with each model on the same "
+                    "axes. Right: Err% per pressure step of each model against the "
+                    "measurement (solid up, dashed down). " + provenance_links(keys)),
+        table_html(run_summary.drop(columns="run"),
+                   f"Summary per model (files: {stem}_errors.csv, summary.csv). "
+                   + provenance_links(keys)),
+        _invalid_note(scored),
+        _auto_paragraph(steps, muscle, tolerance) if tolerance else "",
+    ]
+    return "".join(parts)
+
+
+def _planned_steps(meta: dict) -> str:
+    sequence = meta.get("sequence", {})
+    for key in ("n_steps", "planned_steps"):
+        if key in sequence:
+            return str(sequence[key])
+    steps = sequence.get("steps")
+    return str(len(steps)) if isinstance(steps, list) else "an unrecorded number planned"
+
+
+def _invalid_note(scored: pd.DataFrame) -> str:
+    bad = scored[~scored["valid"]]
+    if bad.empty:
+        return ""
+    items = [f"{esc(m)}: {len(rows)} point(s) at "
+             f"{', '.join(f'{p:.2f}' for p in sorted(rows['pressure_bar'].unique()))} bar"
+             for m, rows in bad.groupby("model", sort=False)]
+    return ('<p class="note">No valid number (invalid, out of domain or not converged), shown '
+            "as crosses and excluded from the summary: " + "; ".join(items) + ".</p>")
+
+
+def _auto_paragraph(steps, muscle, tolerance) -> str:
+    """What ``--model auto`` would use for this run's points (the choice only: the fallback FE is
+    not solved for it)."""
+    from fem.auto import MODEL_ERRORS_FILE, AutoModel, explain
+
+    if not MODEL_ERRORS_FILE.exists():
+        return ('<p class="note">Model choice: no study table (fem/model_errors.csv); run '
+                "<code>mkm study</code>.</p>")
+    choice = AutoModel(tolerance=tolerance).choose(evaluation_pressures(steps), muscle["D0_mm"],
+                                                  muscle["t0_mm"], muscle["eps"])
+    lines = "<br>".join(esc(line) for line in explain(choice, tolerance).splitlines())
+    return (f"<p><b>Model choice for this scene</b> (<code>--model auto --tolerance "
+            f"{100 * tolerance:g}%</code>, from the study table fem/model_errors.csv):<br>"
+            f"{lines}.</p>")
+
+
+def _surrogate_section(out: Path, prov: dict) -> str:
+    head = "<h2>Surrogate against the FE model on the paper's test muscles I, II, III</h2>"
+    if not FE_TEST_MUSCLES.exists():
+        return head + (f'<p class="note">No FE reference at {esc(FE_TEST_MUSCLES)}: build it '
+                       "with the surrogate package's test command.</p>")
+    import surrogate
+
+    reference = pd.read_csv(FE_TEST_MUSCLES, comment="#")
+    reference = reference[reference["muscle"].astype(str).isin(TEST_MUSCLES)]
+    model = surrogate.default_model()
+    pred = model.predict(*(reference[c].to_numpy() for c in ("pressure_bar", "D0_mm", "t0_mm",
+                                                              "eps")))
+    table = reference[["muscle", "D0_mm", "t0_mm", "eps", "pressure_bar"]].copy()
+    table["force_fe_N"] = reference["force_N"].to_numpy()
+    table["force_N"] = np.where(pred.valid, pred.force_N, np.nan)
+    table["valid"] = pred.valid
+    table["err_pct"] = np.nan
+    rows = []
+    for muscle, group in table.groupby("muscle", sort=False):
+        scale = group["force_fe_N"].max()
+        table.loc[group.index, "err_pct"] = equation7_err_pct(group["force_fe_N"],
+                                                              group["force_N"], scale)
+        g = table.loc[group.index]
+        ok = g[g["valid"]]
+        rows.append({"muscle": muscle, "D0 [mm]": g["D0_mm"].iloc[0],
+                     "t0 [mm]": g["t0_mm"].iloc[0], "eps [%]": 100 * g["eps"].iloc[0],
+                     "largest |Err%|": ok["err_pct"].abs().max(),
+                     "RMSE [N]": np.sqrt(np.mean((ok["force_fe_N"] - ok["force_N"]) ** 2)),
+                     "largest |error| [N]": (ok["force_fe_N"] - ok["force_N"]).abs().max(),
+                     "valid points": f"{len(ok)} of {len(g)}"})
+    result = pd.DataFrame(rows)
+    if PAPER_TABLE3.exists():
+        paper = pd.read_csv(PAPER_TABLE3, comment="#")
+        paper["muscle"] = paper["muscle"].astype(str)
+        result = result.merge(paper.rename(columns={"max_abs_err_pct":
+                                                    "paper's best net: largest |Err%|"}),
+                              on="muscle", how="left")
+    table.to_csv(out / "surrogate_vs_fe.csv", index=False, float_format="%.6g")
+    result.to_csv(out / "surrogate_vs_fe_summary.csv", index=False, float_format="%.6g")
+    prov["surrogate"] = {"model": model.name, "params": pred.params,
+                         "seconds_33_points": pred.seconds}
+    prov["fe-reference"] = {"file": str(FE_TEST_MUSCLES.relative_to(REFERENCE_DIR.parents[1])),
+                            "header": _comment_header(FE_TEST_MUSCLES)}
+    keys = ["surrogate", "fe-reference"]
+    fig_path = save_figure(surrogate_fe_figure(table, "surrogate against our FE model "
+                                               "(the paper's Figure 6)"),
+                           out / "surrogate_vs_fe.png")
+    return head + "".join([
+        table_html(result, "The paper's Table 3 with our numbers: Err% (Equation 7) of the "
+                   f"default surrogate against our FE model; all {len(table)} points predicted "
+                   f"in one call in {1e3 * pred.seconds:.2f} ms (the paper: 131 ms). "
+                   + provenance_links(keys)),
+        figure_html(fig_path, "FE forces (dots) and the surrogate (lines) per test muscle; "
+                    "right: Err% per pressure. " + provenance_links(keys)),
+    ])
+
+
+def _comment_header(path: Path) -> list[str]:
+    lines = []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if not line.startswith("#"):
+                break
+            lines.append(line[1:].strip())
+    return lines
+
+
+def _provenance_section(prov: dict) -> str:
+    items = "".join(f'<h3 id="prov-{esc(k)}">{esc(k)}</h3><pre>'
+                    f"{esc(json.dumps(v, indent=1, default=str))}</pre>" for k, v in prov.items())
+    return "<h2>Provenance</h2>" + items

@@ -1,0 +1,258 @@
+"""The simulated bench: the :class:`bench.backend.Backend` protocol over a physical model.
+
+Like ``ophyd.sim``, the simulated device has the real one's signature plus a seed and a clock, so
+the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / rate`` s) advances
+
+- the regulator: a first-order lag (time constant ``regulator_tau_s``) towards the commanded
+  pressure, rate-limited to ``regulator_slew_bar_per_s``, with a 1-5 V monitor output;
+- the muscle: the static force of the project's force model (``sim.model`` in the
+  ``fem.models`` registry, tabulated over pressure once, so a sample costs an interpolation) put
+  through two effects the paper's FE model leaves out (no friction, no time dependence there):
+
+  * hysteresis, a play operator of half-width ``hysteresis_fraction`` times the force: rising
+    pressure reads low, falling high, as Coulomb friction between braid threads does
+    (Davis & Caldwell 2006 report loops of several % of the force; 3 % is the default);
+  * creep, stress relaxation of the silicone at fixed length: ``creep_fraction`` of the force
+    lost with time constant ``creep_tau_s`` (2 % over 30 s by default, the order of
+    silicone-rubber relaxation over a minute); it makes settle detection meaningful;
+
+- the load cell: force over sensitivity plus offset and Gaussian noise, clipped at the +-10 V rails
+  and quantised to the USB-6001's 14 bits over +-10 V (1 LSB = 1.22 mV).
+
+A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
+force gives zero: the braid goes slack and a muscle cannot push. The clock is ``virtual`` (reads
+return at once, a one-hour run takes seconds) or ``real`` (reads wait for the sample times).
+Faults from ``[sim.faults]`` fire at sample time: disconnect, read timeouts, a reader stall that
+overflows the buffer, an AO write failure.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from bench.backend import (
+    AOWriteFailed,
+    Block,
+    BufferOverflow,
+    DaqDisconnected,
+    DeviceInfo,
+    ReadTimeout,
+)
+from bench.config import USB6001_RANGE_V, BenchConfig
+
+ADC_BITS = 14
+LSB_V = 2 * USB6001_RANGE_V / 2**ADC_BITS  # USB-6001: 14 bits over +-10 V = 1.22 mV
+STANDARD_GRAVITY = 9.80665  # m/s^2, for masses hung on the load cell
+MANOMETER_RESOLUTION_BAR = 0.05  # smallest division of a 2.5 bar class-1 dial (paper's NUOVA FIMA)
+
+
+def quantize_volts(volts: float) -> float:
+    """Clip to the +-10 V rails and round to the ADC's 14-bit step."""
+    clipped = min(max(volts, -USB6001_RANGE_V), USB6001_RANGE_V - LSB_V)
+    return round(clipped / LSB_V) * LSB_V
+
+
+def static_force_table(config: BenchConfig, n: int = 401) -> tuple[np.ndarray, np.ndarray]:
+    """Pressures [bar] over the regulator's range and the model's static force [N] at them."""
+    from fem.models import make_model
+
+    m = config.muscle
+    model = make_model(config.sim.model, L0_mm=m.L0_mm)
+    pressure_bar = np.linspace(0.0, config.regulator.full_scale_bar, n)
+    prediction = model.predict(pressure_bar, m.D0_mm, m.t0_mm, m.eps)
+    force = np.where(prediction.valid, prediction.force_N, 0.0)
+    return pressure_bar, np.maximum(force, 0.0)
+
+
+class SimMuscleBench:
+    """Regulator, muscle and load cell advanced one sample at a time (pure physics, no I/O)."""
+
+    def __init__(self, config: BenchConfig):
+        self.config = config
+        s = config.sim
+        self.dt = 1.0 / config.daq.sample_rate_hz
+        self.table_p, self.table_F = static_force_table(config)
+        self.lag = 1.0 - math.exp(-self.dt / s.regulator_tau_s)
+        self.max_step_bar = s.regulator_slew_bar_per_s * self.dt
+        self.relax = 1.0 - math.exp(-self.dt / s.creep_tau_s)
+        self.rng = np.random.default_rng(s.seed)
+        self._noise = np.empty(0)
+        self._next_noise = 0
+        self.target_bar = 0.0
+        self.pressure_bar = 0.0
+        self.hysteretic_N = 0.0
+        self.relaxed_N = 0.0
+        self.external_force_N = 0.0
+
+    def set_command_volts(self, volts: float) -> None:
+        r = self.config.regulator
+        self.target_bar = min(max(volts, 0.0), 10.0) / 10.0 * r.full_scale_bar
+
+    def _normal(self) -> float:
+        if self._next_noise >= self._noise.size:
+            self._noise = self.rng.standard_normal(4096)
+            self._next_noise = 0
+        self._next_noise += 1
+        return float(self._noise[self._next_noise - 1])
+
+    def step(self) -> tuple[float, float]:
+        """Advance one sample; return (load-cell volts, monitor volts) as the ADC reads them."""
+        s, r, cell = self.config.sim, self.config.regulator, self.config.loadcell
+        change = (self.target_bar - self.pressure_bar) * self.lag
+        self.pressure_bar += min(max(change, -self.max_step_bar), self.max_step_bar)
+        static = float(np.interp(self.pressure_bar, self.table_p, self.table_F))
+        h = s.hysteresis_fraction
+        self.hysteretic_N = min(max(self.hysteretic_N, static * (1 - h)), static * (1 + h))
+        self.relaxed_N += (s.creep_fraction * self.hysteretic_N - self.relaxed_N) * self.relax
+        force = self.hysteretic_N - self.relaxed_N + self.external_force_N
+        cell_V = (force / cell.sensitivity_N_per_V + s.loadcell_offset_V
+                  + s.noise_V * self._normal())
+        span = r.monitor_V_at_full_scale - r.monitor_V_at_zero
+        monitor_V = (r.monitor_V_at_zero + self.pressure_bar / r.full_scale_bar * span
+                     + s.monitor_noise_V * self._normal())
+        return quantize_volts(cell_V), quantize_volts(monitor_V)
+
+
+class SimBackend:
+    """Simulated NI USB-6001 bench with the :class:`bench.backend.Backend` interface.
+
+    Parameters
+    ----------
+    config : BenchConfig
+        The bench settings; ``config.sim`` holds the physics, seed and faults.
+    clock : {"virtual", "real"}
+        ``virtual``: sample k is at k / rate s and reads return at once; ``real``: reads wait
+        until the samples' times have passed, as the hardware clock does.
+    """
+
+    def __init__(self, config: BenchConfig, clock: str = "virtual"):
+        if clock not in ("virtual", "real"):
+            raise ValueError(f"clock={clock!r} is invalid: expected 'virtual' or 'real'")
+        self.config = config
+        self.clock = clock
+        self.rate_hz = config.daq.sample_rate_hz
+        buffer_s = config.sim.buffer_s or config.daq.buffer_s
+        self.buffer_samples = int(round(buffer_s * self.rate_hz))
+        self.bench = SimMuscleBench(config)
+        self.commands: list[tuple[int, float]] = []  # (sample index, volts) of every AO write
+        self.closed = False
+        self._index = 0
+        self._started_at: float | None = None
+        self._faults = config.sim.faults
+        self._timeouts_left = self._faults.read_timeouts
+        self._ao_failed = False
+        self._stalled = False
+        self._lost = 0
+
+    @property
+    def _channels(self) -> list[str]:
+        ai = [self.config.loadcell.channel]
+        if self.config.regulator.electronic:
+            ai.append(self.config.regulator.monitor_channel)
+        return ai
+
+    def _now_s(self) -> float:
+        return self._index / self.rate_hz
+
+    def _due(self, at_s: float | None) -> bool:
+        return at_s is not None and self._now_s() >= at_s
+
+    def open(self) -> DeviceInfo:
+        self.write_command(0.0)
+        regulator = self.config.regulator
+        channels = {"ai": self._channels, "ai_range_V": [-10.0, 10.0],
+                    "terminal_config": self.config.daq.terminal_config,
+                    "ao": regulator.command_channel if regulator.electronic else None}
+        return DeviceInfo(backend="sim", simulated=True, product_type="USB-6001 (simulated)",
+                          serial_number=f"SIM-{self.config.sim.seed}",
+                          sample_rate_hz=self.rate_hz, channels=channels,
+                          extra={"clock": self.clock, "sim": self.config.as_dict()["sim"]})
+
+    def start(self) -> None:
+        self._started_at = time.monotonic()
+
+    def read(self, n_samples: int, timeout_s: float) -> Block:
+        if self._started_at is None:
+            raise RuntimeError("read before start")
+        faults = self._faults
+        if self._due(faults.disconnect_at_s):
+            raise DaqDisconnected(f"simulated disconnect at {faults.disconnect_at_s:g} s")
+        if self._due(faults.read_timeout_at_s) and self._timeouts_left > 0:
+            self._timeouts_left -= 1
+            raise ReadTimeout(f"simulated read timeout at {self._now_s():g} s")
+        if self._due(faults.stall_at_s) and not self._stalled:
+            self._stalled = True
+            stalled = int(round(faults.stall_s * self.rate_hz))
+            if stalled > self.buffer_samples:
+                self._lost = stalled
+                raise BufferOverflow(f"simulated reader stall of {faults.stall_s:g} s overflowed "
+                                     f"the {self.buffer_samples}-sample buffer",
+                                     lost_samples=stalled - self.buffer_samples)
+        if self.clock == "real":
+            self._wait_for(self._index + n_samples, timeout_s)
+        volts = np.array([self.bench.step() for _ in range(n_samples)])
+        if not self.config.regulator.electronic:
+            volts = volts[:, :1]
+        block = Block(self._index, volts)
+        self._index += n_samples
+        return block
+
+    def available(self) -> int:
+        if self.clock == "virtual" or self._started_at is None:
+            return 0
+        return max(0, int((time.monotonic() - self._started_at) * self.rate_hz) - self._index)
+
+    def _wait_for(self, end_index: int, timeout_s: float) -> None:
+        elapsed = time.monotonic() - self._started_at
+        behind = int(elapsed * self.rate_hz) - self._index
+        if behind > self.buffer_samples:
+            self._lost = behind
+            raise BufferOverflow(f"reader fell {behind} samples behind, more than the "
+                                 f"{self.buffer_samples}-sample buffer",
+                                 lost_samples=behind - self.buffer_samples)
+        wait = end_index / self.rate_hz - elapsed
+        if wait > timeout_s:
+            time.sleep(timeout_s)
+            raise ReadTimeout(f"samples not available within {timeout_s:g} s")
+        if wait > 0:
+            time.sleep(wait)
+
+    def recover(self) -> int:
+        # The driver discards the buffer on restart: everything since the stall is gone, while
+        # the physics kept running.
+        for _ in range(self._lost):
+            self.bench.step()
+        self._index += self._lost
+        self._lost = 0
+        return self._index
+
+    def write_command(self, volts: float) -> None:
+        if self._due(self._faults.disconnect_at_s):
+            raise DaqDisconnected(f"simulated disconnect at {self._faults.disconnect_at_s:g} s")
+        if self._due(self._faults.ao_fail_at_s) and not self._ao_failed:
+            self._ao_failed = True
+            raise AOWriteFailed(f"simulated AO write failure at {self._now_s():g} s")
+        if not self.config.regulator.electronic:
+            return
+        self.bench.set_command_volts(volts)
+        self.commands.append((self._index, float(volts)))
+
+    def close(self) -> None:
+        if self.closed:
+            return
+        self.closed = True
+        self.write_command(0.0)
+
+    # Operator actions on the simulated bench (manual regulator, calibration masses).
+
+    def set_manual_pressure(self, pressure_bar: float) -> float:
+        """Turn the hand regulator to ``pressure_bar``; return the manometer reading [bar]."""
+        self.bench.target_bar = pressure_bar
+        return round(pressure_bar / MANOMETER_RESOLUTION_BAR) * MANOMETER_RESOLUTION_BAR
+
+    def hang_mass(self, mass_kg: float) -> None:
+        """Hang ``mass_kg`` on the load cell (for ``mkm calibrate-loadcell``)."""
+        self.bench.external_force_N = mass_kg * STANDARD_GRAVITY

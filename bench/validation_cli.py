@@ -1,0 +1,65 @@
+"""``mkm report`` and ``mkm study``: argument parsing only, each calls one library function."""
+
+from __future__ import annotations
+
+import argparse
+
+from fem.arguments import parse_fraction
+
+
+def register(subparsers) -> None:
+    report = subparsers.add_parser(
+        "report", help="validation report of bench runs against the force models (HTML)")
+    report.add_argument("runs", nargs="+", metavar="RUN_DIR", help="run folder(s) of mkm acquire")
+    report.add_argument("--models", default="eq2,thickwall,axisym,surrogate",
+                        help="comma list: registry names with optional :key=value parameters "
+                        "(axisym:mesh=coarse), surrogate (the default one) or surrogate:PATH "
+                        "(default: %(default)s)")
+    report.add_argument("--out", help="output folder (default: reports/<first run name>)")
+    report.add_argument("--tolerance", default=0.02, type=_fraction,
+                        help="tolerance of the auto model choice shown per run, e.g. 2%% "
+                        "(default: 2%%)")
+    report.add_argument("--no-cache", action="store_true",
+                        help="recompute FE predictions instead of reading .cache/mkm-report")
+    report.set_defaults(func=_report)
+
+    study = subparsers.add_parser(
+        "study", help="speed against accuracy of every predictor, and stability maps")
+    study.add_argument("--out", default="reports/study", help="output folder "
+                       "(default: %(default)s)")
+    study.add_argument("--table", default=None,
+                       help="error table for --model auto (default: fem/model_errors.csv)")
+    study.add_argument("--no-cache", action="store_true",
+                       help="recompute FE predictions instead of reading .cache/mkm-report")
+    study.set_defaults(func=_study)
+
+
+def _fraction(text):
+    try:
+        return parse_fraction(text, "--tolerance")
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _cache(args):
+    from bench.prediction_cache import DEFAULT_CACHE_DIR
+
+    return None if args.no_cache else DEFAULT_CACHE_DIR
+
+
+def _report(args) -> int:
+    from bench.report import build_report, parse_models
+
+    path = build_report(args.runs, parse_models(args.models), out_dir=args.out,
+                        cache_dir=_cache(args), tolerance=args.tolerance)
+    print(path)
+    return 0
+
+
+def _study(args) -> int:
+    from bench.study import run_study
+    from fem.auto import MODEL_ERRORS_FILE
+
+    path = run_study(args.out, cache_dir=_cache(args), table_path=args.table or MODEL_ERRORS_FILE)
+    print(path)
+    return 0

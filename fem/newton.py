@@ -1,0 +1,116 @@
+"""Newton's method with load stepping and automatic cut-back, apart from any physics.
+
+A problem is a function ``fun(x, t) -> (residual, jacobian)`` of the unknowns ``x`` and a load
+parameter ``t`` (a pressure, a cap displacement); ``jacobian`` is a scipy sparse matrix. An
+optional ``check(x) -> str | None`` (``check(x, t)`` in :func:`load_path`) names a reason to
+reject a state at once (element inversion).
+Failure is reported, never hidden: a step that does not converge is cut back, and a target that
+cannot be reached is returned with ``converged=False``, its iterations, residual and reason.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.sparse.linalg import splu
+
+
+@dataclass
+class NewtonReport:
+    """Outcome of one Newton solve or of one load target reached by several steps."""
+
+    converged: bool
+    iterations: int = 0
+    cutbacks: int = 0
+    residual: float = np.nan  # last residual norm relative to the step's first one
+    reason: str = ""
+
+
+def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20,
+           residual_floor: float = 0.0, check=None) -> tuple[np.ndarray, NewtonReport]:
+    """Solve ``fun(x) = 0`` from ``x0``; ``fun`` returns ``(residual, sparse jacobian)``.
+
+    Converged when the residual fell below ``rtol`` times the first residual (or below
+    ``residual_floor``, the size of a residual that is round-off for the caller) and the last
+    increment below ``xtol`` times ``|x|``; a start already below the floor (an exact
+    predictor) is converged after zero iterations. An early rise of the residual is not called
+    divergence (full Newton often overshoots in the first iterations); only non-finite numbers,
+    a state rejected by ``check`` or ``maxiter`` iterations stop it.
+    """
+    x = np.array(x0, dtype=float)
+    r, jac = fun(x)
+    first = float(np.linalg.norm(r))
+    if not np.isfinite(first):
+        return x, NewtonReport(False, 0, residual=np.inf, reason="non-finite residual")
+    if first <= residual_floor:
+        return x, NewtonReport(True, 0, residual=0.0)
+    tol = max(rtol * first, residual_floor)
+    for it in range(1, maxiter + 1):
+        try:
+            dx = splu(jac.tocsc()).solve(-r)
+        except RuntimeError:  # SuperLU: "Factor is exactly singular"
+            return x, NewtonReport(False, it, reason="singular tangent")
+        if not np.all(np.isfinite(dx)):
+            return x, NewtonReport(False, it, reason="singular tangent")
+        x = x + dx
+        if check is not None and (reason := check(x)):
+            return x, NewtonReport(False, it, reason=reason)
+        r, jac = fun(x)
+        if not np.all(np.isfinite(r)):
+            return x, NewtonReport(False, it, reason="non-finite residual")
+        norm = float(np.linalg.norm(r))
+        rel = norm / first
+        if norm <= tol and np.linalg.norm(dx) <= xtol * max(np.linalg.norm(x), 1.0):
+            return x, NewtonReport(True, it, residual=rel)
+    return x, NewtonReport(False, maxiter, residual=rel,
+                           reason=f"Newton did not converge in {maxiter} iterations")
+
+
+def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks: int = 6,
+              grow: float = 1.5, easy_iterations: int = 4, check=None, **newton_options):
+    """Follow the equilibrium path ``fun(x, t) = 0`` from ``(x0, t0)`` through ``targets``.
+
+    The span from ``t0`` to the last target is first cut into ``increments`` steps (steps also
+    stop at every target); a step that fails is halved, one that took at most
+    ``easy_iterations`` lets the next grow by ``grow``. A linear (secant) predictor starts each
+    step from the last two converged states. After ``max_cutbacks`` halvings on the way to one
+    target the target and all later ones are reported not converged.
+
+    Returns a list with one ``(x or None, NewtonReport)`` per target, in order.
+    """
+    targets = [float(t) for t in targets]
+    span = abs(targets[-1] - t0) if targets else 0.0
+    dt = span / increments if span > 0 else 0.0
+    x, t = np.array(x0, dtype=float), float(t0)
+    x_prev, t_prev = None, None
+    out = []
+    for i, target in enumerate(targets):
+        report = NewtonReport(True, residual=0.0)
+        while t != target:
+            step = np.sign(target - t) * min(dt, abs(target - t))
+            t_new = target if abs(target - (t + step)) <= 1e-12 * max(span, 1.0) else t + step
+            guess = x if x_prev is None else x + (x - x_prev) * (t_new - t) / (t - t_prev)
+            x_new, rep = newton(lambda y, tt=t_new: fun(y, tt), guess,
+                                check=None if check is None else lambda y, tt=t_new: check(y, tt),
+                                **newton_options)
+            report.iterations += rep.iterations
+            report.residual = rep.residual
+            if rep.converged:
+                x_prev, t_prev, x, t = x, t, x_new, t_new
+                if rep.iterations <= easy_iterations:
+                    dt = min(grow * dt, span)
+                continue
+            report.cutbacks += 1
+            dt = abs(step) / 2.0
+            if report.cutbacks > max_cutbacks:
+                report.converged = False
+                report.reason = f"{rep.reason} at t={t_new:.4g} after {max_cutbacks} cut-backs"
+                break
+        if not report.converged:
+            out.append((None, report))
+            out.extend((None, NewtonReport(False, reason=f"not reached: {report.reason}"))
+                       for _ in targets[i + 1:])
+            return out
+        out.append((x.copy(), report))
+    return out

@@ -1,0 +1,223 @@
+"""Thick-wall closed form of the McKibben muscle: the Klute-Hannaford virtual-work model.
+
+The second rung of the physics ladder. An incompressible two-parameter Mooney-Rivlin tube bonded
+to an inextensible braid; in the cylindrical mid-section the whole deformation follows from the
+axial stretch ``lz = 1 - eps``, so the stored energy per unit rest length has a closed form and
+so has its derivative: no quadrature, no iteration, exact to round-off.
+
+Derivation (the wall as annulus ``Ri <= R <= Ro`` at rest, ``x = R^2``):
+
+- braid of constant thread length: ``cos theta = lz cos theta0``, so the outer radius is
+  ``r_o^2 = Ro^2 (1 - lz^2 cos^2 theta0) / sin^2 theta0``;
+- incompressible wall: ``r^2 = r_o^2 - (Ro^2 - R^2) / lz = k + x / lz`` with
+  ``k = r_o^2 - Ro^2 / lz``; stretches ``lz`` (axial), ``a = r^2 / R^2`` (hoop squared) and
+  ``1 / (a lz^2)`` (radial squared);
+- ``W = C10 (I1 - 3) + C01 (I2 - 3)`` with ``I1 = lz^2 + a + 1/(a lz^2)``,
+  ``I2 = a lz^2 + 1/lz^2 + 1/a``; integrating ``2 pi R dR = pi dx`` gives the energy per unit rest
+  length
+
+  ``E = pi [C10 ((lz^2 + 2/lz - 3) D + k M) + C01 ((2 lz + 1/lz^2 - 3) D + k lz^2 M)]``
+
+  with ``D = Ro^2 - Ri^2`` and ``M = ln(a_i / a_o)`` (hoop stretches squared at the inner and
+  outer surfaces);
+- virtual work of pressure, wall and load: ``F = -P dV/dL + dE/dlz``. The wall volume is
+  constant, so ``dV/dL`` of the cavity equals that of the braid cylinder and the pressure term is
+  Equation 2 written with the braid diameter ``D0 + 2 t0``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fem.calibration import calibrated
+from fem.closed_form import chou_hannaford, chou_hannaford_eps_max
+from fem.interface import Domain, ForceModel
+from fem.materials import SILASTIC_S, MooneyRivlin
+
+LOCK_ANGLE_DEG = float(np.rad2deg(np.arccos(1.0 / np.sqrt(3.0))))  # 54.7356 deg
+
+
+def _kinematics(D0_mm, t0_mm, eps, theta0_deg):
+    """Squared radii [mm^2], ``lz``, ``k`` and the log hoop-stretch ratio ``M`` of the wall.
+
+    Written in ``eps`` rather than ``1 - lz`` so that nothing cancels at small shortening and
+    the rest state (``eps = 0``) is exactly stress free.
+    """
+    Ri2 = (np.asarray(D0_mm, dtype=float) / 2.0) ** 2
+    Ro2 = (np.asarray(D0_mm, dtype=float) / 2.0 + np.asarray(t0_mm, dtype=float)) ** 2
+    eps = np.asarray(eps, dtype=float)
+    lz = 1.0 - eps
+    cot2 = 1.0 / np.tan(np.deg2rad(theta0_deg)) ** 2
+    hoop_o = eps * (2.0 - eps) * cot2  # r_o^2 / Ro^2 - 1
+    k = Ro2 * (hoop_o - eps / lz)  # r^2 = k + R^2 / lz
+    ri2 = k + Ri2 / lz
+    with np.errstate(invalid="ignore", divide="ignore"):
+        M = np.log1p(k / Ri2 + eps / lz) - np.log1p(hoop_o)  # ln(a_i / a_o), NaN if r_i^2 < 0
+    return Ri2, Ro2, lz, k, ri2, Ro2 * (1.0 + hoop_o), M, cot2
+
+
+def braided_tube_energy(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa):
+    """Mooney-Rivlin energy of the braided tube's mid-section per unit rest length [N = mJ/mm].
+
+    Closed-form integral over the wall of ``W = C10 (I1 - 3) + C01 (I2 - 3)`` for the
+    deformation the braid imposes at shortening ``eps`` (see the module docstring). NaN where
+    the inner radius has collapsed (``r_i^2 <= 0``): no such deformation exists.
+    """
+    Ri2, Ro2, lz, k, ri2, _, M, _ = _kinematics(D0_mm, t0_mm, eps, theta0_deg)
+    D = Ro2 - Ri2
+    e2 = (1.0 - lz) ** 2
+    # lz^2 + 2/lz - 3 = eps^2 (3 - eps) / lz and 2 lz + 1/lz^2 - 3 = eps^2 (1 + 2 lz) / lz^2
+    energy = np.pi * (C10_MPa * (e2 * (2.0 + lz) / lz * D + k * M)
+                      + C01_MPa * (e2 * (1.0 + 2.0 * lz) / lz**2 * D + k * lz**2 * M))
+    return np.where(ri2 > 0, energy, np.nan)
+
+
+def braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa):
+    """``dE/dlz`` [N]: the wall's share of the developed force (negative while shortened).
+
+    The analytic derivative of :func:`braided_tube_energy` with respect to the axial stretch;
+    since the total energy is ``L0 E`` and ``L = L0 lz``, it is also ``dW/dL`` of the whole wall.
+    NaN where the inner radius has collapsed.
+    """
+    Ri2, Ro2, lz, k, ri2, ro2, M, cot2 = _kinematics(D0_mm, t0_mm, eps, theta0_deg)
+    D = Ro2 - Ri2
+    e = 1.0 - lz
+    dro2 = -2.0 * Ro2 * lz * cot2  # d(r_o^2)/dlz
+    dk = dro2 + Ro2 / lz**2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        dM = (dro2 + D / lz**2) / ri2 - dro2 / ro2
+    # 2 lz - 2/lz^2 = -2 eps (lz^2 + lz + 1) / lz^2, and 2 - 2/lz^3 the same over lz^3
+    dD = -2.0 * e * (lz**2 + lz + 1.0) / lz**2 * D
+    dE = np.pi * (C10_MPa * (dD + dk * M + k * dM)
+                  + C01_MPa * (dD / lz + (dk * lz**2 + 2.0 * k * lz) * M + k * lz**2 * dM))
+    return np.where(ri2 > 0, dE, np.nan)
+
+
+def klute_hannaford(pressure_bar, D0_mm, t0_mm, eps, theta0_deg,
+                    C10_MPa=SILASTIC_S.C10_MPa, C01_MPa=SILASTIC_S.C01_MPa):
+    r"""Klute-Hannaford virtual-work force of a McKibben muscle with a thick Mooney-Rivlin wall.
+
+    .. math::
+        F = \frac{\pi D_b^2 P}{4 \sin^2\theta_0}\left(3(1-\varepsilon)^2\cos^2\theta_0 - 1\right)
+            + \frac{dE}{d\lambda_z}, \qquad D_b = D_0 + 2 t_0
+
+    where ``E`` is the wall's stored energy per unit rest length (:func:`braided_tube_energy`).
+
+    Parameters
+    ----------
+    pressure_bar : array_like
+        Gauge pressure [bar].
+    D0_mm : array_like
+        Inner tube diameter at rest [mm].
+    t0_mm : array_like
+        Wall thickness at rest [mm]; the braid lies on the outer surface.
+    eps : array_like
+        Shortening ratio dL/L0 [fraction], the mid-section's axial stretch is ``1 - eps``.
+    theta0_deg : float
+        Braid angle at rest, from the muscle axis [deg].
+    C10_MPa, C01_MPa : float, default Silastic S
+        Mooney-Rivlin constants [MPa]; default from the paper's Equation 3 (C10 = 0.0694,
+        C01 = 0.0628).
+
+    Returns
+    -------
+    numpy.ndarray
+        Force the muscle develops at fixed length [N], affine in pressure. Negative below the
+        threshold pressure (the muscle would need pushing to be held at ``eps``) and, with a
+        negative pressure term, beyond the braid lock ``eps >= chou_hannaford_eps_max``; callers
+        decide what to do there. NaN where the inner radius has collapsed.
+
+    Notes
+    -----
+    Holds in the cylindrical mid-section of a long muscle: the clamped end caps (which keep the
+    ends narrow) are outside the model, as are braid friction and hysteresis. With ``C10 = C01 =
+    0`` or ``t0 -> 0`` it is Equation 2 with the braid diameter exactly.
+
+    References
+    ----------
+    .. [1] G. K. Klute, B. Hannaford, "Accounting for elastic energy storage in McKibben
+       artificial muscle actuators", ASME J. Dyn. Syst. Meas. Control 122(2), 386-388, 2000,
+       doi:10.1115/1.482478.
+    .. [2] B. Tondu, "Modelling of the McKibben artificial muscle: a review", J. Intell. Mater.
+       Syst. Struct. 23(3), 225-253, 2012, doi:10.1177/1045389X11435435.
+    .. [3] M. G. Antonelli, P. Beomonte Zobel, M. A. Sarwar, N. Stampone, "Mechanical Design of
+       McKibben Muscles Predicting Developed Force by Artificial Neural Networks", Actuators
+       14(3), 153, 2025, doi:10.3390/act14030153, Equations 2 and 3.
+
+    See Also
+    --------
+    fem.closed_form.chou_hannaford, klute_hannaford_threshold_pressure
+    """
+    D_braid = np.asarray(D0_mm, dtype=float) + 2.0 * np.asarray(t0_mm, dtype=float)
+    return (chou_hannaford(pressure_bar, D_braid, eps, theta0_deg)
+            + braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa))
+
+
+def klute_hannaford_threshold_pressure(D0_mm, t0_mm, eps, theta0_deg,
+                                       C10_MPa=SILASTIC_S.C10_MPa, C01_MPa=SILASTIC_S.C01_MPa):
+    """Pressure [bar] at which a free muscle has shortened by ``eps``: ``F(P*) = 0``.
+
+    ``P* = -(dE/dlz) / A`` with ``A`` the force per bar of the pressure term. Zero at ``eps = 0``,
+    growing with ``eps`` and ``t0``; NaN at and beyond the braid lock (``A <= 0``: no pressure
+    shortens the muscle that far) and where the inner radius has collapsed.
+    """
+    D_braid = np.asarray(D0_mm, dtype=float) + 2.0 * np.asarray(t0_mm, dtype=float)
+    per_bar = chou_hannaford(1.0, D_braid, eps, theta0_deg)
+    elastic = braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        threshold = -elastic / per_bar + 0.0  # + 0.0 turns the -0.0 at eps = 0 into 0.0
+    return np.where(per_bar > 0, threshold, np.nan)
+
+
+class ThickWall(ForceModel):
+    """Klute-Hannaford thick-wall model under the paper's isometric lock (``--model thickwall``).
+
+    The free end shortens freely until ``eps``, then is held: the force is zero below the
+    threshold pressure (valid) and :func:`klute_hannaford` above it. Beyond the braid lock
+    (``eps >= eps_max`` of Equation 2, where no pressure shortens the muscle that far) the force
+    is NaN and ``valid`` False.
+
+    Parameters
+    ----------
+    theta0_deg : float, optional
+        Braid angle at rest [deg]. Default: the calibrated value in ``fem/calibration.json``.
+    L0_mm : float
+        Length at rest [mm]. Recorded only: the mid-section model does not depend on the length.
+    material : MooneyRivlin
+        Wall material; default Silastic S (the paper's Equation 3).
+    """
+
+    name = "thickwall"
+    domain = Domain()
+
+    def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
+                 material: MooneyRivlin = SILASTIC_S):
+        self.theta0_deg = theta0_deg
+        self.L0_mm = L0_mm
+        self.material = material
+
+    def _theta0(self) -> float:
+        if self.theta0_deg is not None:
+            return float(self.theta0_deg)
+        return calibrated(self.calibration_key)["theta0_deg"]
+
+    def params(self):
+        return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,
+                "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa}
+
+    def _forces(self, P, D0, t0, eps):
+        theta0 = self._theta0()
+        if not 0.0 < theta0 < LOCK_ANGLE_DEG:
+            raise ValueError(f"theta0_deg={theta0:g} is invalid: expected 0 < theta0 < "
+                             f"{LOCK_ANGLE_DEG:.1f} deg (above the locking angle the muscle "
+                             "cannot pull)")
+        C10, C01 = self.material.C10_MPa, self.material.C01_MPa
+        threshold = klute_hannaford_threshold_pressure(D0, t0, eps, theta0, C10, C01)
+        reachable = eps < chou_hannaford_eps_max(theta0)
+        force = np.where(reachable, klute_hannaford(P, D0, t0, eps, theta0, C10, C01), np.nan)
+        # below P* the isometric lock is not yet engaged; the maximum only absorbs round-off
+        # of A P - B just above P* (NaN passes through it)
+        force = np.where(P <= threshold, 0.0, np.maximum(force, 0.0))
+        return {"force_N": force, "valid": reachable & np.isfinite(force),
+                "converged": np.ones(P.shape, dtype=bool),
+                "threshold_pressure_bar": np.where(reachable, threshold, np.nan)}

@@ -1,0 +1,76 @@
+"""A fitted surrogate as a project force model, flagging every point outside its training box."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+from sklearn.gaussian_process import GaussianProcessRegressor
+from sklearn.pipeline import Pipeline
+
+from fem.interface import Domain, ForceModel
+
+
+class OutOfDomainWarning(UserWarning):
+    """A surrogate was asked for points outside the box it was trained on."""
+
+
+class SurrogateForceModel(ForceModel):
+    """A fitted estimator of ``[pressure_bar, D0_mm, t0_mm, eps] -> force_N`` and its domain.
+
+    Outside ``domain`` (the box of the training inputs) the estimator's number is kept but the
+    point gets ``valid=False`` and ``in_domain=False`` and an :class:`OutOfDomainWarning` is
+    issued: a surrogate never extrapolates silently. Extras: ``in_domain`` always,
+    ``force_std_N`` (predictive standard deviation [N]) when the estimator has one.
+
+    Parameters
+    ----------
+    estimator : fitted scikit-learn regressor
+    domain : fem.interface.Domain
+        Training box.
+    kind : str
+        The estimator's kind (``surrogate.estimators.make_estimator``).
+    metadata : dict, optional
+        Training data hash and provenance, metrics, versions (see ``surrogate.io``).
+    """
+
+    domain: Domain
+
+    def __init__(self, estimator, domain: Domain, kind: str, metadata: dict | None = None):
+        self.estimator = estimator
+        self.domain = domain
+        self.kind = kind
+        self.metadata = metadata or {}
+        self.name = f"surrogate-{kind}"
+
+    def params(self):
+        dataset = self.metadata.get("dataset", {})
+        return {"kind": self.kind, "dataset_sha256": dataset.get("sha256"),
+                "domain": self.domain.as_dict()}
+
+    @property
+    def has_std(self) -> bool:
+        """True when the estimator gives a predictive standard deviation (a Gaussian process)."""
+        final = self.estimator[-1] if isinstance(self.estimator, Pipeline) else self.estimator
+        return isinstance(final, GaussianProcessRegressor)
+
+    def _forces(self, P, D0, t0, eps):
+        inside = self.domain.contains(P, D0, t0, eps)
+        if not inside.all():
+            n_out = int((~inside).sum())
+            warnings.warn(f"{n_out} of {inside.size} points lie outside the training domain "
+                          f"{_describe(self.domain)}: flagged valid=False, in_domain=False",
+                          OutOfDomainWarning, stacklevel=3)
+        X = np.column_stack([np.ravel(a) for a in (P, D0, t0, eps)])
+        out = {"valid": inside, "in_domain": inside, "converged": np.ones(P.shape, dtype=bool)}
+        if self.has_std:
+            force, std = self.estimator.predict(X, return_std=True)
+            out["force_std_N"] = std.reshape(P.shape)
+        else:
+            force = self.estimator.predict(X)
+        out["force_N"] = force.reshape(P.shape)
+        return out
+
+
+def _describe(domain: Domain) -> str:
+    return ", ".join(f"{name} in [{lo:g}, {hi:g}]" for name, (lo, hi) in domain.as_dict().items())

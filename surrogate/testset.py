@@ -1,0 +1,187 @@
+"""Test on unseen muscles (the paper's section 3.3): our FE sweeps and Equation 7.
+
+Muscles I, II and III are the paper's; IV and V are off-grid muscles of ours inside the
+training box (between the dataset's grid values in every input). The reference forces come from
+our own FE model (``build_fe_reference``), never from the paper, whose FE differs from ours.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from fem.interface import ForceModel, provenance
+from surrogate.training_data import REPO_ROOT
+from surrogate.validation import rmse
+
+REFERENCE_DIR = REPO_ROOT / "data" / "reference"
+FE_REFERENCE = REFERENCE_DIR / "fe_test_muscles.csv"
+PAPER_TABLE3 = REFERENCE_DIR / "paper_table3.csv"
+
+# name: (D0_mm, t0_mm, eps). I-III: the paper's section 3.3; IV, V: ours, off the grid.
+TEST_MUSCLES = {
+    "I": (35.0, 2.5, 0.05),
+    "II": (40.0, 3.0, 0.15),
+    "III": (45.0, 3.5, 0.20),
+    "IV": (32.0, 3.5, 0.08),
+    "V": (47.0, 2.25, 0.12),
+}
+PAPER_MUSCLES = ("I", "II", "III")
+TEST_PRESSURES_BAR = np.round(np.arange(0.0, 2.5 + 1e-9, 0.25), 2)  # the paper's sweep
+
+
+def test_points(muscles=tuple(TEST_MUSCLES)) -> pd.DataFrame:
+    """One row per muscle and pressure: ``muscle, pressure_bar, D0_mm, t0_mm, eps``."""
+    rows = [(m, p, *TEST_MUSCLES[m]) for m in muscles for p in TEST_PRESSURES_BAR]
+    return pd.DataFrame(rows, columns=["muscle", "pressure_bar", "D0_mm", "t0_mm", "eps"])
+
+
+def build_fe_reference(model: ForceModel, out=FE_REFERENCE) -> pd.DataFrame:
+    """Sweep every test muscle with ``model`` (our FE) and write the reference CSV to ``out``.
+
+    The CSV opens with ``# key: json`` lines naming the model, its parameters and the library
+    versions (read back with ``pandas.read_csv(out, comment="#")``).
+    """
+    frames = []
+    seconds = 0.0
+    for muscle, (D0, t0, eps) in TEST_MUSCLES.items():
+        prediction = model.predict(TEST_PRESSURES_BAR, D0, t0, eps)
+        seconds += prediction.seconds
+        frame = prediction.to_frame()[["pressure_bar", "D0_mm", "t0_mm", "eps", "force_N",
+                                       "converged", "valid"]]
+        frames.append(frame.assign(muscle=muscle, L0_mm=model.params().get("L0_mm")))
+    table = pd.concat(frames, ignore_index=True)
+    table = table[["muscle", *table.columns.drop("muscle")]]
+    header = {"what": "FE reference of the test muscles (paper section 3.3 and ours)",
+              "model": model.name, "params": model.params(), "seconds": seconds,
+              **provenance()}
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with open(out, "w", encoding="utf-8", newline="") as f:
+        for key, value in header.items():
+            f.write(f"# {key}: {json.dumps(value, default=str)}\n")
+        table.to_csv(f, index=False, float_format="%.6g", lineterminator="\n")
+    return table
+
+
+def read_fe_reference(path=FE_REFERENCE) -> pd.DataFrame:
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"FE reference {str(path)!r} does not exist: build it with "
+                         "`mkm surrogate reference --model axisym`")
+    table = pd.read_csv(path, comment="#")
+    bad = table[~(table["converged"].astype(bool) & table["valid"].astype(bool))]
+    if len(bad):
+        raise ValueError(f"FE reference {str(path)!r} has {len(bad)} unconverged or invalid "
+                         f"point(s) (first: muscle {bad['muscle'].iloc[0]}): expected a clean "
+                         "reference sweep")
+    return table
+
+
+def percentage_error(force_fe_N, force_pred_N) -> np.ndarray:
+    """Equation 7 of the paper: ``100 (F_num - F_pred) / max(F_num)`` over one sweep [%]."""
+    force_fe_N = np.asarray(force_fe_N, dtype=float)
+    return 100.0 * (force_fe_N - np.asarray(force_pred_N, dtype=float)) / np.max(force_fe_N)
+
+
+def compare_on_test_muscles(model: ForceModel, reference: pd.DataFrame):
+    """Predict every reference point in one call; per-point errors and a per-muscle summary.
+
+    Returns ``(points, summary)``: ``points`` has ``force_fe_N, force_pred_N, err_pct, valid``
+    per row; ``summary`` per muscle ``max_abs_err_pct`` (Equation 7), ``rmse_N``,
+    ``max_abs_error_N``, and the wall time of the whole call in ``seconds_all_points``.
+    """
+    prediction = model.predict(*(reference[c].to_numpy() for c in ("pressure_bar", "D0_mm",
+                                                                    "t0_mm", "eps")))
+    points = reference[["muscle", "pressure_bar", "D0_mm", "t0_mm", "eps"]].copy()
+    points["force_fe_N"] = reference["force_N"].to_numpy()
+    points["force_pred_N"] = prediction.force_N
+    points["valid"] = prediction.valid
+    points["err_pct"] = np.nan
+    rows = []
+    for muscle, group in points.groupby("muscle", sort=False):
+        err = percentage_error(group["force_fe_N"], group["force_pred_N"])
+        points.loc[group.index, "err_pct"] = err
+        residual = group["force_fe_N"] - group["force_pred_N"]
+        rows.append({"muscle": muscle, "model": model.name,
+                     "max_abs_err_pct": float(np.max(np.abs(err))),
+                     "rmse_N": rmse(residual, 0.0),
+                     "max_abs_error_N": float(np.max(np.abs(residual))),
+                     "all_valid": bool(group["valid"].all()),
+                     "seconds_all_points": prediction.seconds})
+    return points, pd.DataFrame(rows)
+
+
+def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE) -> pd.DataFrame:
+    """Table 3 and Figure 6 of the paper for ``models``, against our FE reference.
+
+    Writes ``test_muscles.csv`` (summary), ``test_muscles_points.csv``, ``test_muscles.md``
+    (with the paper's figures for I-III beside ours) and ``test_muscles.png`` to ``out_dir``.
+    """
+    reference = read_fe_reference(reference_path)
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    all_points, summaries = [], []
+    for name, model in models.items():
+        points, summary = compare_on_test_muscles(model, reference)
+        all_points.append(points.assign(model=name))
+        summaries.append(summary.assign(model=name))
+    points = pd.concat(all_points, ignore_index=True)
+    summary = pd.concat(summaries, ignore_index=True)
+    summary.to_csv(out_dir / "test_muscles.csv", index=False, float_format="%.6g")
+    points.to_csv(out_dir / "test_muscles_points.csv", index=False, float_format="%.6g")
+    (out_dir / "test_muscles.md").write_text(markdown_table(summary), encoding="utf-8")
+    plot_test_muscles(points, out_dir / "test_muscles.png")
+    return summary
+
+
+def markdown_table(summary: pd.DataFrame) -> str:
+    """Largest |Err%| per model and muscle, then RMSE and largest error, with the paper's row."""
+    paper = pd.read_csv(PAPER_TABLE3, comment="#").set_index("muscle")["max_abs_err_pct"]
+    muscles = list(dict.fromkeys(summary["muscle"]))
+    lines = ["| model | " + " | ".join(f"{m} max abs Err%" for m in muscles)
+             + " | RMSE N (worst muscle) | largest abs error N | 33-55 points s |",
+             "|---|" + "---|" * (len(muscles) + 3)]
+    lines.append("| paper, 3 x 100 ReLU (its FE) | " + " | ".join(
+        f"{paper[m]:.2f}" if m in paper else "" for m in muscles) + " | | 60.10 | 0.131 |")
+    for model, group in summary.groupby("model", sort=False):
+        g = group.set_index("muscle")
+        lines.append(f"| {model} | " + " | ".join(f"{g.loc[m, 'max_abs_err_pct']:.2f}"
+                                                  for m in muscles)
+                     + f" | {g['rmse_N'].max():.2f} | {g['max_abs_error_N'].max():.2f} | "
+                     f"{g['seconds_all_points'].iloc[0]:.2g} |")
+    return "\n".join(lines) + "\n"
+
+
+def plot_test_muscles(points: pd.DataFrame, path) -> None:
+    """Figure 6 of the paper: force against pressure per muscle (FE dots, surrogate lines),
+    and Err% below."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    muscles = list(dict.fromkeys(points["muscle"]))
+    fig, axes = plt.subplots(2, len(muscles), figsize=(3.2 * len(muscles), 6), sharex=True,
+                             squeeze=False)
+    for j, muscle in enumerate(muscles):
+        D0, t0, eps = TEST_MUSCLES[muscle]
+        first = points[(points["muscle"] == muscle)]
+        fe = first.drop_duplicates("pressure_bar")
+        axes[0, j].plot(fe["pressure_bar"], fe["force_fe_N"], "ko", label="FE (axisym)")
+        for model, group in first.groupby("model", sort=False):
+            axes[0, j].plot(group["pressure_bar"], group["force_pred_N"], "-", label=model)
+            axes[1, j].plot(group["pressure_bar"], group["err_pct"], ".-", label=model)
+        axes[0, j].set_title(f"{muscle}: D0 {D0:g} mm, t0 {t0:g} mm, eps {100 * eps:g} %",
+                             fontsize=8)
+        axes[1, j].axhline(0.0, color="0.6", lw=0.8)
+        axes[1, j].set_xlabel("pressure P [bar]")
+    axes[0, 0].set_ylabel("force F [N]")
+    axes[1, 0].set_ylabel("Err% (Equation 7) [%]")
+    axes[0, 0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)

@@ -1,0 +1,92 @@
+"""Training surrogates: one kind, every kind, and the cached default surrogate.
+
+Every trained surrogate carries its metrics: held-out RMSE over repeated 80/20 splits (the
+same seeds for every kind) and, when the FE reference exists, its errors on the test muscles.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import warnings
+from pathlib import Path
+
+from fem.interface import provenance
+from surrogate.estimators import BEST, kind_names, make_estimator
+from surrogate.model import SurrogateForceModel
+from surrogate.training_data import DEFAULT_DATASET, REPO_ROOT, load_training_data
+from surrogate.validation import split_scores, summarise
+
+SEEDS = tuple(range(10))  # shared by every kind, recorded in the metadata
+CACHE_DIR = REPO_ROOT / ".cache" / "surrogate"
+
+
+def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, seeds=SEEDS,
+                    random_state: int = 0) -> SurrogateForceModel:
+    """Fit ``kind`` on the whole dataset; metrics from refits on the 80/20 splits ``seeds``."""
+    resolved = BEST if kind == "best" else kind
+    data = load_training_data(dataset)
+    estimator = make_estimator(resolved, random_state=random_state)
+    splits = [split_scores(estimator, data.X, data.y, seed, cv_folds=0) for seed in seeds]
+    metrics = {"split_seeds": list(seeds),
+               "rmse_test_N": summarise([s["rmse_test_N"] for s in splits]) if splits else None,
+               "max_abs_test_N": (summarise([s["max_abs_test_N"] for s in splits])
+                                  if splits else None)}
+    estimator.fit(data.X, data.y)
+    metadata = {"kind_requested": kind, "random_state": random_state,
+                "dataset": data.summary(), "metrics": metrics, "trained": provenance()}
+    model = SurrogateForceModel(estimator, data.domain(), resolved, metadata)
+    metrics["test_muscles"] = _test_muscle_metrics(model)
+    return model
+
+
+def _test_muscle_metrics(model: SurrogateForceModel):
+    from surrogate.testset import FE_REFERENCE, compare_on_test_muscles, read_fe_reference
+
+    if not FE_REFERENCE.is_file():
+        return None
+    _, summary = compare_on_test_muscles(model, read_fe_reference())
+    return summary.drop(columns=["model"]).to_dict(orient="records")
+
+
+def train_all(dataset=DEFAULT_DATASET, include_nets: bool = True, seeds=SEEDS):
+    """Every kind (the named ones, then the paper's 27 nets and their standardised variants),
+    trained on ``dataset``: ``{kind: SurrogateForceModel}``, for the speed/accuracy study."""
+    return {kind: train_surrogate(kind, dataset, seeds)
+            for kind in kind_names(include_nets=include_nets)}
+
+
+def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST) -> str:
+    """Hash of what a trained surrogate depends on: data, code, calibration, library versions."""
+    from surrogate.training_data import file_sha256
+
+    parts = {"dataset": file_sha256(dataset), "kind": kind,
+             "versions": provenance()["versions"]}
+    sources = sorted((REPO_ROOT / "surrogate").glob("*.py")) + [
+        REPO_ROOT / "fem" / name for name in ("closed_form.py", "thickwall.py",
+                                              "calibration.json")]
+    for path in sources:
+        parts[path.name] = hashlib.sha256(path.read_bytes()).hexdigest()
+    return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
+
+
+def default_model(dataset=DEFAULT_DATASET, cache_dir=CACHE_DIR) -> SurrogateForceModel:
+    """The default (``best``) surrogate trained on ``dataset``, as a fitted ForceModel.
+
+    Trained on first use and cached under ``.cache/surrogate/best-<key>`` (``key``: dataset
+    hash, surrogate and physics source, calibration and library versions), so a fresh clone
+    needs no manual step and a changed dataset or library retrains it.
+    """
+    from surrogate.io import load_model, save_model
+
+    directory = Path(cache_dir) / f"best-{cache_key(dataset)}"
+    if (directory / "metadata.json").is_file():
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # a stale cache entry is retrained, never trusted
+            try:
+                return load_model(directory)
+            except (Warning, ValueError):
+                pass
+    model = train_surrogate("best", dataset)
+    save_model(model, directory)
+    return model
