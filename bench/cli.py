@@ -10,6 +10,7 @@ import argparse
 import re
 import sys
 
+import bench.commands
 import bench.validation_cli
 import fem.cli
 import surrogate.cli
@@ -32,6 +33,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
                                 parser_class=_Parser)
     fem.cli.register(sub)
+    bench.commands.register(sub)
     bench.validation_cli.register(sub)
     surrogate.cli.register(sub)
     return parser

@@ -253,6 +253,7 @@ class BenchConfig:
     sim: Sim = field(default_factory=Sim)
     source: str = ""
     text: str = ""
+    overrides: dict[str, Any] = field(default_factory=dict)  # changes made after reading `text`
 
     @property
     def force_limit_N(self) -> float:
@@ -269,7 +270,9 @@ class BenchConfig:
         """A copy with some settings changed: ``replace(muscle={"eps": 0.1})``."""
         changes = {name: dataclasses.replace(getattr(self, name), **values)
                    for name, values in sections.items()}
-        new = dataclasses.replace(self, **changes)
+        overrides = {**self.overrides, **{f"{name}.{key}": value for name, values in
+                                          sections.items() for key, value in values.items()}}
+        new = dataclasses.replace(self, **changes, overrides=overrides)
         for section in changes.values():
             section.check()
         new.check()
@@ -277,7 +280,8 @@ class BenchConfig:
 
     def as_dict(self) -> dict[str, Any]:
         return {f.name: dataclasses.asdict(getattr(self, f.name))
-                for f in dataclasses.fields(self) if f.name not in ("source", "text")}
+                for f in dataclasses.fields(self)
+                if f.name not in ("source", "text", "overrides")}
 
 
 SECTIONS = {"muscle": Muscle, "daq": Daq, "loadcell": LoadCell, "regulator": Regulator,
@@ -357,13 +361,25 @@ def parse_config(text: str, source: str = "<string>") -> BenchConfig:
     return config
 
 
-def load_config(path: str | Path | None = None) -> BenchConfig:
-    """The configuration in ``path``, or the packaged default when ``path`` is None."""
+def load_config(path: str | Path | None = None, eps: float | None = None,
+                pressures_bar=None) -> BenchConfig:
+    """The configuration in ``path`` (the packaged default when None).
+
+    ``eps`` and ``pressures_bar`` override ``muscle.eps`` and ``sequence.pressures_bar``, as
+    ``mkm acquire --eps --pressures`` do; the result is validated again.
+    """
     if path is None:
         text = resources.files("bench").joinpath("configs", DEFAULT_CONFIG).read_text("utf-8")
-        return parse_config(text, f"bench/configs/{DEFAULT_CONFIG}")
-    path = Path(path)
-    if not path.is_file():
-        raise ValueError(f"config {path} does not exist: expected a TOML file")
-    return parse_config(path.read_text(encoding="utf-8"), str(path))
+        config = parse_config(text, f"bench/configs/{DEFAULT_CONFIG}")
+    else:
+        path = Path(path)
+        if not path.is_file():
+            raise ValueError(f"config {path} does not exist: expected a TOML file")
+        config = parse_config(path.read_text(encoding="utf-8"), str(path))
+    changes = {}
+    if eps is not None:
+        changes["muscle"] = {"eps": float(eps)}
+    if pressures_bar is not None:
+        changes["sequence"] = {"pressures_bar": tuple(float(p) for p in pressures_bar)}
+    return config.replace(**changes) if changes else config
 

@@ -91,61 +91,74 @@ def surrogate_fe_figure(table: pd.DataFrame, title: str) -> Figure:
 
     ``table``: ``muscle, pressure_bar, force_fe_N, force_N, valid, err_pct``.
     """
-    muscles = list(dict.fromkeys(table["muscle"]))
-    fig = Figure(figsize=(4 * len(muscles) + 3, 4.2), layout="constrained")
-    axes = fig.subplots(1, len(muscles) + 1, squeeze=False)[0]
-    for i, (ax, muscle) in enumerate(zip(axes, muscles, strict=False)):
-        rows = table[table["muscle"] == muscle].sort_values("pressure_bar")
-        ax.plot(rows["pressure_bar"], rows["force_fe_N"], "o", color="black", label="FE (axisym)")
-        ax.plot(rows["pressure_bar"], rows["force_N"].where(rows["valid"]), "-", color=f"C{i}",
-                label="surrogate")
-        _mark_invalid(ax, rows.loc[~rows["valid"], "pressure_bar"])
-        ax.set(xlabel="pressure P [bar]", ylabel="force F [N]", title=f"muscle {muscle}")
-        ax.legend(fontsize=8, loc="upper left")
+    fig = Figure(figsize=(11, 4.6), layout="constrained")
+    ax_f, ax_e = fig.subplots(1, 2)
+    for i, (muscle, rows) in enumerate(table.groupby("muscle", sort=False)):
+        rows = rows.sort_values("pressure_bar")
+        c = f"C{i}"
+        ax_f.plot(rows["pressure_bar"], rows["force_fe_N"], "o", color=c, markersize=5,
+                  label=f"{muscle}: FE")
+        ax_f.plot(rows["pressure_bar"], rows["force_N"].where(rows["valid"]), "-", color=c,
+                  label=f"{muscle}: surrogate")
+        ax_e.plot(rows["pressure_bar"], rows["err_pct"].where(rows["valid"]), "-o", color=c,
+                  markersize=4, label=f"muscle {muscle}")
+        _mark_invalid(ax_f, rows.loc[~rows["valid"], "pressure_bar"])
+    ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]",
+             title="FE (dots) and surrogate (lines)")
+    ax_f.legend(fontsize=7, ncol=2, loc="upper left")
+    ax_e.axhline(0.0, color="0.6", linewidth=0.8)
+    ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_FE − F_sur) / max F_FE [%]",
+             title="error against the FE model (Equation 7)")
+    ax_e.legend(fontsize=8)
+    for ax in (ax_f, ax_e):
         ax.grid(True, alpha=0.3)
-        axes[-1].plot(rows["pressure_bar"], rows["err_pct"].where(rows["valid"]), "-o",
-                      color=f"C{i}", markersize=4, label=f"muscle {muscle}")
-    axes[-1].axhline(0.0, color="0.6", linewidth=0.8)
-    axes[-1].set(xlabel="pressure P [bar]", ylabel="Err% = (F_FE − F_sur) / max F_FE [%]",
-                 title="error (Equation 7)")
-    axes[-1].legend(fontsize=8)
-    axes[-1].grid(True, alpha=0.3)
+        ax.set_xlim(left=0.0)
     fig.suptitle(title)
     return fig
 
 
-FAMILY_MARKERS = {"closed form": "D", "FE": "s", "surrogate": "o", "paper net": "."}
+FAMILY_MARKERS = {"closed form": "D", "FE": "s", "surrogate": "o", "paper net": "x",
+                  "paper net, standardised force": "+"}
+SMALL_FAMILIES = ("paper net", "paper net, standardised force")  # 27 points each: no labels
 
 
 def speed_accuracy_figure(summary: pd.DataFrame, machine: str) -> Figure:
     """Seconds per predicted force (log) against the largest |Err%| (log), Pareto front marked.
 
     ``summary``: one row per predictor with ``predictor, family, seconds_per_point,
-    max_abs_err_pct, pareto`` (the reference has error 0 and is drawn at the bottom edge).
+    max_abs_err_pct, pareto``. The reference (error 0 by definition) is drawn as a star on the
+    bottom edge.
     """
+    from matplotlib.ticker import FuncFormatter
+
     fig = Figure(figsize=(10, 6.2), layout="constrained")
     ax = fig.subplots()
-    floor = 0.5 * summary.loc[summary["max_abs_err_pct"] > 0, "max_abs_err_pct"].min()
-    y = summary["max_abs_err_pct"].clip(lower=floor)
+    positive = summary.loc[summary["max_abs_err_pct"] > 0, "max_abs_err_pct"]
+    floor = 0.3 * positive.min() if len(positive) else 1e-3
+    y = summary["max_abs_err_pct"].where(summary["max_abs_err_pct"] > 0, floor)
+    is_reference = summary["max_abs_err_pct"] == 0
     for family, marker in FAMILY_MARKERS.items():
-        rows = summary["family"] == family
+        rows = (summary["family"] == family) & ~is_reference
         if rows.any():
+            small = family in SMALL_FAMILIES
             ax.scatter(summary.loc[rows, "seconds_per_point"], y[rows], marker=marker,
-                       s=18 if family == "paper net" else 55,
-                       c="0.55" if family == "paper net" else None,
-                       label=family, zorder=3)
+                       s=25 if small else 55, linewidths=1.0,
+                       c="0.5" if family == "paper net" else "0.2" if small else None,
+                       label=family + (" (27 nets)" if small else ""), zorder=3)
+    ax.scatter(summary.loc[is_reference, "seconds_per_point"], y[is_reference], marker="*",
+               s=160, color="black", label="reference (error 0 by definition)", zorder=4)
     front = summary[summary["pareto"]].sort_values("seconds_per_point")
     ax.step(front["seconds_per_point"], y[front.index], where="post", color="tab:red",
             linewidth=1.5, label="Pareto front (nothing both faster and more accurate)", zorder=2)
     for idx, row in summary.iterrows():
-        if row["family"] != "paper net" or row["pareto"]:
-            ax.annotate(row["predictor"] + (" (reference)" if row["max_abs_err_pct"] == 0 else ""),
-                        (row["seconds_per_point"], y[idx]), textcoords="offset points",
-                        xytext=(5, 4), fontsize=8)
+        if row["family"] not in SMALL_FAMILIES or row["pareto"]:
+            ax.annotate(row["predictor"], (row["seconds_per_point"], y[idx]),
+                        textcoords="offset points", xytext=(5, 4), fontsize=8)
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set(xlabel="seconds per predicted force [s] (one call per 11-pressure sweep, median)",
-           ylabel="largest |Err%| against the finest FE [%]",
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax.set(xlabel="seconds per predicted force [s] (one call per muscle sweep, median)",
+           ylabel="largest |Err%| against the reference [%]",
            title=f"speed against accuracy, measured on {machine}")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8, loc="best")

@@ -116,7 +116,9 @@ def _store(prediction: Prediction, path: Path) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     arrays = {name: getattr(prediction, name) for name in (*INPUTS, "force_N", "valid",
                                                            "converged")}
-    arrays |= {f"extra__{k}": np.asarray(v) for k, v in prediction.extras.items()}
+    # object arrays (failure messages) would need pickle to load: store them as text
+    arrays |= {f"extra__{k}": np.asarray(v).astype(str) if np.asarray(v).dtype == object
+               else np.asarray(v) for k, v in prediction.extras.items()}
     meta = {"model": prediction.model, "params": prediction.params,
             "seconds": prediction.seconds}
     arrays["meta"] = np.array(json.dumps(meta, default=repr))

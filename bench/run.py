@@ -98,7 +98,9 @@ class _Stop(Exception):
 
 @dataclass
 class RunResult:
-    path: Path
+    """Outcome of a run; ``path`` is None when it failed before its folder was made."""
+
+    path: Path | None
     status: str
     reason: str
 
@@ -164,8 +166,7 @@ class BenchRun:
                 signal.signal(signal.SIGINT, old_handler)
         if error is not None:
             raise error
-        return RunResult(self.writer.path if self.writer else self.out_root, self.meta.get(
-            "status", status), reason)
+        return RunResult(self.writer.path if self.writer else None, status, reason)
 
     def startup(self) -> None:
         info = self.backend.open()
@@ -185,7 +186,7 @@ class BenchRun:
                          "force_limit_N": self.config.force_limit_N,
                          "steps": len(self.steps),
                          "estimated_duration_s": list(estimate_duration_s(self.config))},
-            "config_source": self.config.source,
+            "config_source": self.config.source, "config_overrides": self.config.overrides,
             "command": prov["command"], "provenance": prov,
             "started_utc": prov["date_utc"], "ended_utc": None,
             "pid": os.getpid(), "host": socket.gethostname(),

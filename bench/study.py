@@ -84,17 +84,48 @@ def physics_predictors() -> list[Predictor]:
               for m in MESH_LEVELS)]
 
 
-def surrogate_predictors() -> list[Predictor]:
-    """Every surrogate kind, trained on the shipped dataset (the default one usable by auto)."""
-    from surrogate import default_model, surrogate_kinds, train_kind
+def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR) -> list[Predictor]:
+    """Every surrogate kind trained on ``dataset`` (default: the shipped one): the default kind
+    (usable by auto), the other named kinds, the paper's 27 nets and their standardised-force
+    variants."""
+    from surrogate.estimators import BEST, kind_names
+    from surrogate.train import default_model
+    from surrogate.training_data import DEFAULT_DATASET
 
-    out = [Predictor("surrogate-best", "surrogate", default_model,
+    dataset = dataset or DEFAULT_DATASET
+    out = [Predictor(f"surrogate-{BEST}", "surrogate", lambda: default_model(dataset),
                      json.dumps({"surrogate": "default"}))]
-    for kind in surrogate_kinds():
-        family = "paper net" if kind.startswith("mlp-") and kind != "mlp-paper" else "surrogate"
+    for kind in kind_names(include_nets=True):
+        if kind == BEST:
+            continue
+        family = ("surrogate" if not kind.startswith("net-") else
+                  "paper net, standardised force" if kind.endswith("standardised")
+                  else "paper net")
         out.append(Predictor(f"surrogate-{kind}", family,
-                             lambda kind=kind: train_kind(kind)))
+                             lambda kind=kind: trained_surrogate(kind, dataset, cache_dir)))
     return out
+
+
+def trained_surrogate(kind: str, dataset, cache_dir=DEFAULT_CACHE_DIR) -> ForceModel:
+    """Surrogate ``kind`` fitted once on the whole ``dataset``, kept under ``cache_dir`` (keyed
+    like the default surrogate: dataset hash, sources, calibration, versions). The study times
+    predictions, not training, and scores on its own muscles: no split metrics."""
+    from surrogate.io import load_model, save_model
+    from surrogate.train import cache_key, train_surrogate
+
+    if cache_dir is None:
+        return train_surrogate(kind, dataset, seeds=())
+    directory = Path(cache_dir) / "surrogates" / f"{kind}-{cache_key(dataset, kind)}"
+    if (directory / "metadata.json").is_file():
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # another library version: retrain, never trust
+            try:
+                return load_model(directory)
+            except (Warning, ValueError):
+                pass
+    model = train_surrogate(kind, dataset, seeds=())
+    save_model(model, directory)
+    return model
 
 
 @dataclass
@@ -106,7 +137,8 @@ class StudyConfig:
     predictors: Callable[[], list[Predictor]] = field(
         default=lambda: physics_predictors() + surrogate_predictors())
     reference: str = "axisym-fine"
-    stability_methods: tuple = ("eq2-inner", "thickwall", "axisym-medium", "surrogate-best")
+    stability_methods: tuple = ("eq2-inner", "eq2-braid", "thickwall", "axisym-medium",
+                                "surrogate-physics")
     stability_muscles: tuple = STABILITY_MUSCLES
     stability_pressures: tuple = STABILITY_PRESSURES
     stability_eps: tuple = STABILITY_EPS
@@ -233,9 +265,10 @@ def stability_cells(p: Predictor, model: ForceModel, config: StudyConfig,
                                             "status": "invalid (model's own limit)",
                                             "cutbacks": 0, "message": str(exc)}))
                 continue
+            message = np.ravel(pred.extras.get("failure", np.full(P.size, "")))
             frames.append(pd.DataFrame({"method": p.label, "muscle": name, "eps": e,
                                         "pressure_bar": P, "force_N": np.ravel(pred.force_N),
-                                        "status": classify(pred), "message": "",
+                                        "status": classify(pred), "message": message,
                                         "cutbacks": np.ravel(pred.extras.get(
                                             "cutbacks", np.zeros(P.size))).astype(int)}))
     return pd.concat(frames, ignore_index=True)
@@ -353,6 +386,8 @@ def stability_table(cells: pd.DataFrame) -> pd.DataFrame:
         row["first failing eps [%]"] = (100 * failed["eps"].min()) if len(failed) else np.nan
         row["cut-backs (converged points)"] = int(g.loc[g["status"] != "not converged",
                                                         "cutbacks"].sum())
+        reasons = failed["message"].fillna("").astype(str)
+        row["failure reasons"] = "; ".join(sorted(set(reasons[reasons != ""]))) or ""
         rows.append(row)
     table = pd.DataFrame(rows)
     statuses = [c for c in table.columns if c in set(cells["status"])]

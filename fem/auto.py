@@ -7,8 +7,8 @@ study muscles, and the cost per predicted force; it commits the point-by-point t
 
 1. bounds each candidate's error at the point by the worst |Err%| the study measured for that
    candidate on the :data:`NEIGHBOURS` study muscles nearest to the query muscle (distance in
-   D0, t0 and eps scaled by the study's span; muscles farther than :data:`MAX_DISTANCE` do not
-   count) at the two study pressures bracketing the query pressure;
+   D0, t0 and eps scaled by :data:`DOMAIN_SPAN`; muscles farther than :data:`MAX_DISTANCE` do
+   not count) at the two study pressures bracketing the query pressure;
 2. takes the cheapest candidate (measured seconds per force) whose bound meets the tolerance and
    whose own prediction is valid there (Equation 2 beyond eps_max, a surrogate out of its
    domain or a solve that did not converge never qualify);
@@ -33,7 +33,11 @@ from fem.interface import ForceModel
 
 MODEL_ERRORS_FILE = Path(__file__).with_name("model_errors.csv")
 NEIGHBOURS = 2  # two study muscles: one alone would trust a single geometry's luck
-MAX_DISTANCE = 0.5  # half the study's span in scaled (D0, t0, eps): beyond it nothing was measured
+# Distances in (D0, t0, eps) are scaled by the span of the paper's dataset (Table 1 of
+# Antonelli et al. 2025: D0 30-50 mm, t0 2-4 mm, eps 0-20 %); a study muscle farther than half
+# that span says nothing about the query.
+DOMAIN_SPAN = np.array([20.0, 2.0, 0.2])
+MAX_DISTANCE = 0.5
 FALLBACK = "axisym-fine"
 
 
@@ -60,15 +64,13 @@ def error_bounds(table: pd.DataFrame, predictor: str, pressure_bar, D0_mm, t0_mm
     rows = table[table["predictor"] == predictor]
     muscles = rows.groupby(["D0_mm", "t0_mm", "eps"], sort=True)
     keys = np.array(list(muscles.groups), dtype=float).reshape(-1, 3)
-    all_muscles = table[["D0_mm", "t0_mm", "eps"]].drop_duplicates().to_numpy(dtype=float)
-    span = np.ptp(all_muscles, axis=0)
-    span[span == 0] = 1.0
-    query = np.stack([np.ravel(D0_mm), np.ravel(t0_mm), np.ravel(eps)], axis=1)
-    P = np.ravel(pressure_bar)
+    P, D0, t0, e = (np.ravel(a) for a in np.broadcast_arrays(
+        *(np.asarray(v, dtype=float) for v in (pressure_bar, D0_mm, t0_mm, eps))))
+    query = np.stack([D0, t0, e], axis=1)
     bound = np.full(P.shape, np.nan)
     if len(keys) == 0:
         return bound
-    distance = np.linalg.norm((query[:, None, :] - keys[None, :, :]) / span, axis=2)
+    distance = np.linalg.norm((query[:, None, :] - keys[None, :, :]) / DOMAIN_SPAN, axis=2)
     sweeps = [group.sort_values("pressure_bar") for _, group in muscles]
     for i in range(P.size):
         order = np.argsort(distance[i])[:NEIGHBOURS]

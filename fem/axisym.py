@@ -12,7 +12,9 @@ strain:
 * the braid is two inextensible fibre families at +-theta0 bonded to the outer surface,
   ``cos^2 theta0 l_s^2 + sin^2 theta0 l_t^2 = 1``, enforced with a Lagrange multiplier field
   (continuous P1 on the outer surface); the multiplier is the fibre membrane tension [N/mm],
-  which must stay >= 0 (fibres carry no compression: a point needing it is reported failed);
+  which must stay >= 0 (fibres carry no compression: a held point needing it is reported
+  failed; the free muscle at the threshold may go slack right at the cap's corner, which is
+  recorded in ``min_tension_N_per_mm`` and touches ``P*`` only);
 * the air pressure is the potential ``-P V`` of the closed cavity (inner surface and cap), a
   follower load with a symmetric tangent whose cap share lands in the cap reaction;
 * the developed force is the reaction ``dPi/dU`` on the cap. For the half model this is already
@@ -27,8 +29,6 @@ it); phase 2 holds the cap and ramps the pressure through the requested values.
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
@@ -42,12 +42,14 @@ from fem.mesh import MESH_LEVELS, half_muscle_mesh
 from fem.newton import load_path
 
 LOCKING_ANGLE_DEG = float(np.rad2deg(np.arccos(1.0 / np.sqrt(3.0))))  # 54.74 deg
-INTORDER = 4  # exact for the P2 x P2 stiffness on straight triangles
+# 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
+# away from the axis add an error far below the mesh's
+INTORDER = 4
 
 
 def _operator(basis, columns) -> np.ndarray:
     """Stack ``columns(value, grad)`` of each basis function: shape (elements, points, dofs, k)."""
-    return np.stack([np.stack(columns(phi.value, phi.grad), axis=-1)
+    return np.stack([np.stack(columns(np.asarray(phi), phi.grad), axis=-1)
                      for phi in (b[0] for b in basis.basis)], axis=2)
 
 
@@ -92,7 +94,10 @@ class HalfMuscle:
     pressure, the P1 braid tension, and last the cap displacement ``U`` [mm].
     """
 
-    def __init__(self, D0_mm, t0_mm, L0_mm, theta0_deg, material: MooneyRivlin, mesh: str):
+    def __init__(self, D0_mm, t0_mm, L0_mm, theta0_deg, material: MooneyRivlin, mesh: str,
+                 braid: bool = True, cap: str = "clamped"):
+        if cap not in ("clamped", "sliding"):
+            raise ValueError(f"cap={cap!r} is invalid: expected 'clamped' or 'sliding'")
         self.Ri, self.Ro, self.H = D0_mm / 2.0, D0_mm / 2.0 + t0_mm, L0_mm / 2.0
         self.theta0_deg, self.material = theta0_deg, material
         m = half_muscle_mesh(D0_mm, t0_mm, L0_mm, mesh)
@@ -104,21 +109,21 @@ class HalfMuscle:
         ib = FacetBasis(m, eu, facets=inner, intorder=INTORDER)
         ob = FacetBasis(m, eu, facets=outer, intorder=INTORDER)
         nu, npr = ub.N, pb.N
-        tension_nodes = np.unique(m.facets[:, outer])
+        tension_nodes = np.unique(m.facets[:, outer]) if braid else np.array([], dtype=int)
         nl = len(tension_nodes)
 
         # rubber: y = (F_rr, F_rz, F_zr, F_zz, F_tt, p)
-        R = ub.global_coordinates().value[0]
+        R = ub.global_coordinates()[0]
         Bu = _operator(ub, lambda v, g: (g[0, 0], g[0, 1], g[1, 0], g[1, 1], v[0] / R, 0 * R))
         Bp = _operator(pb, lambda v, g: (0 * v,) * 5 + (v,))
         rubber_term = (np.concatenate([Bu, Bp], axis=2), np.array([1, 0, 0, 1, 1, 0.0]),
                        np.vstack([ub.element_dofs, nu + pb.element_dofs]), 2 * np.pi * R * ub.dx)
         # cavity: y = (r, dz/dZ) on the inner surface; dZ is the facet measure (vertical facets)
         cavity_term = (_operator(ib, lambda v, g: (v[0], g[1, 1])),
-                       np.stack([ib.global_coordinates().value[0], np.ones_like(ib.dx)], axis=-1),
+                       np.stack([ib.global_coordinates()[0], np.ones_like(ib.dx)], axis=-1),
                        ib.element_dofs, ib.dx)
         # braid: y = (u_r, du_r/dZ, du_z/dZ, tension) on the outer surface
-        Z = ob.global_coordinates().value[1]
+        Z = ob.global_coordinates()[1]
         za, zb = (m.p[1, m.facets[k, ob.find]][:, None] for k in (0, 1))
         shape_a = (zb - Z) / (zb - za)
         Bb = _operator(ob, lambda v, g: (v[0], g[0, 1], g[1, 1], 0 * Z))
@@ -135,23 +140,24 @@ class HalfMuscle:
         fixed[iz[np.isclose(Zdof[iz], 0.0)]] = True
         cap_r = ir[np.isclose(Zdof[ir], self.H)]
         cap_z = iz[np.isclose(Zdof[iz], self.H)]
-        fixed[cap_r] = fixed[cap_z] = True
+        fixed[cap_z] = True
+        fixed[cap_r] = cap == "clamped"  # "sliding" (a verification case): u_r free at the cap
         red = np.full(fixed.size, -1)
         red[~fixed] = np.arange((~fixed).sum())
         self.n = int((~fixed).sum()) + 1
         red[cap_z] = self.n - 1
         self.red = red
         self.p_slice = slice(red[nu], red[nu] + npr)
-        self.tension_slice = slice(red[nu + npr], red[nu + npr] + nl)
-        self.rubber, self.cavity, self.braid = (_Term(*t, red) for t in
-                                                (rubber_term, cavity_term, braid_term))
+        self.tension_slice = slice(red[nu] + npr, red[nu] + npr + nl)
+        self.rubber, self.cavity = _Term(*rubber_term, red), _Term(*cavity_term, red)
+        self.braid = _Term(*braid_term, red) if braid else None
+        terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
         # CSR pattern once; each assembly only sums the entries into place
-        rows, cols = (np.concatenate(a) for a in
-                      zip(*(t.pattern() for t in (self.rubber, self.cavity, self.braid))))
+        rows = np.concatenate([t.pattern()[0] for t in terms])
+        cols = np.concatenate([t.pattern()[1] for t in terms])
         keys, self._slot = np.unique(rows * self.n + cols, return_inverse=True)
         self._indices = keys % self.n
         self._indptr = np.searchsorted(keys // self.n, np.arange(self.n + 1))
-        self.assembly_seconds = 0.0
 
     def rest_state(self) -> np.ndarray:
         """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
@@ -162,30 +168,31 @@ class HalfMuscle:
 
     def assemble(self, y, pressure_MPa):
         """Residual ``dPi/dy``, tangent ``d2Pi/dy2`` (CSR) and ``dV/dy`` at the reduced state."""
-        start = time.perf_counter()
         y_ext = np.append(y, 0.0)
         g, h = rubber(self.rubber.values(y_ext), self.material)
         r_rub, K_rub = self.rubber.element_arrays(g, h)
         _, g, h = cavity_volume(self.cavity.values(y_ext))
         dV_cav, K_cav = self.cavity.element_arrays(g, -pressure_MPa * h)
-        yb = self.braid.values(y_ext)
-        gb, dgb, hgb = braid_inextensibility(yb[..., :3], self.theta0_deg, self.Ro)
-        tension = yb[..., 3]
-        grad = np.concatenate([tension[..., None] * dgb, gb[..., None]], axis=-1)
-        hess = np.zeros(yb.shape + (4,))
-        hess[..., :3, :3] = tension[..., None, None] * hgb
-        hess[..., :3, 3] = hess[..., 3, :3] = dgb
-        r_br, K_br = self.braid.element_arrays(grad, hess)
 
         def vector(term, re):
             return np.bincount(term.dofs[term.keep_r], re[term.keep_r], minlength=self.n)
 
         dV = vector(self.cavity, dV_cav)
-        r = vector(self.rubber, r_rub) + vector(self.braid, r_br) - pressure_MPa * dV
-        data = np.bincount(self._slot, np.concatenate([K_rub, K_cav, K_br]),
-                           minlength=self._indices.size)
+        r = vector(self.rubber, r_rub) - pressure_MPa * dV
+        blocks = [K_rub, K_cav]
+        if self.braid is not None:
+            yb = self.braid.values(y_ext)
+            gb, dgb, hgb = braid_inextensibility(yb[..., :3], self.theta0_deg, self.Ro)
+            tension = yb[..., 3]
+            grad = np.concatenate([tension[..., None] * dgb, gb[..., None]], axis=-1)
+            hess = np.zeros(yb.shape + (4,))
+            hess[..., :3, :3] = tension[..., None, None] * hgb
+            hess[..., :3, 3] = hess[..., 3, :3] = dgb
+            r_br, K_br = self.braid.element_arrays(grad, hess)
+            r += vector(self.braid, r_br)
+            blocks.append(K_br)
+        data = np.bincount(self._slot, np.concatenate(blocks), minlength=self._indices.size)
         K = sp.csr_matrix((data, self._indices, self._indptr), shape=(self.n, self.n))
-        self.assembly_seconds += time.perf_counter() - start
         return r, K, dV
 
     def inverted(self, y) -> str | None:
@@ -200,6 +207,70 @@ class HalfMuscle:
     def tension(self, y) -> np.ndarray:
         """Braid membrane tension at the outer-surface nodes [N/mm]."""
         return y[self.tension_slice]
+
+    def compression(self, y) -> str:
+        """Why a state is unphysical for a tension-only braid (empty if it is not)."""
+        lam = self.tension(y)
+        if lam.size and lam.min() < -1e-6 * max(np.abs(lam).max(), 1e-12):
+            return f"fibre compression (braid tension {lam.min():.3g} N/mm < 0)"
+        return ""
+
+    def _newton_options(self):
+        cap_force_scale = 0.1 * np.pi * self.Ro**2  # cap force at 1 bar [N]
+        return {"residual_floor": 1e-10 * cap_force_scale}
+
+    def free_path(self, U_mm: float):
+        """Free shortening of the muscle (no force) to cap displacement ``U_mm`` < 0.
+
+        Follows the path by cap displacement with the pressure as unknown (the cap equation
+        says the reaction is zero). Returns the state, the pressure [MPa] and the report.
+        """
+        def free(x, U):
+            r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])
+            return r, sp.hstack([K[:, :-1], -dV[:, None]], format="csr")
+
+        y = self.rest_state()
+        [(x, report)] = load_path(free, np.append(y[:-1], 0.0), 0.0, [U_mm],
+                                  check=lambda x, U: self.inverted(np.append(x[:-1], U)),
+                                  **self._newton_options())
+        if x is None:
+            return None, np.nan, report
+        return np.append(x[:-1], U_mm), float(x[-1]), report
+
+    def held_path(self, y, P_start_MPa: float, pressures_MPa):
+        """Pressure ramp with the cap held where ``y`` has it, from the state ``y`` at
+        ``P_start_MPa`` through the sorted ``pressures_MPa``: a list of (state or None, report).
+        """
+        U = y[-1]
+
+        def held(x, P):
+            r, K, _ = self.assemble(np.append(x, U), P)
+            return r[:-1], K[:-1, :-1]
+
+        path = load_path(held, y[:-1], P_start_MPa, pressures_MPa,
+                         check=lambda x, P: self.inverted(np.append(x, U)),
+                         **self._newton_options())
+        return [(None if x is None else np.append(x, U), report) for x, report in path]
+
+    def cavity_volume(self, y) -> float:
+        """Volume of the half muscle's cavity [mm^3] (inside the rubber, up to the cap)."""
+        v, _, _ = cavity_volume(self.cavity.values(np.append(y, 0.0)))
+        return float(np.sum(v * self.cavity.w))
+
+    def cap_force(self, y, pressure_MPa: float) -> float:
+        """Reaction on the cap, ``dPi/dU`` [N]: the muscle's pulling force (see module doc)."""
+        return float(self.assemble(y, pressure_MPa)[0][-1])
+
+
+def check_parameters(theta0_deg: float, L0_mm: float, mesh: str) -> None:
+    """Raise ``ValueError`` naming a model parameter outside its physical range."""
+    if not 0.0 < theta0_deg < LOCKING_ANGLE_DEG:
+        raise ValueError(f"theta0_deg={theta0_deg:g} is invalid: expected 0 < theta0 < "
+                         f"{LOCKING_ANGLE_DEG:.1f} deg (above it the muscle cannot pull)")
+    if not L0_mm > 0:
+        raise ValueError(f"L0_mm={L0_mm:g} is invalid: expected a length > 0 mm")
+    if mesh not in MESH_LEVELS:
+        raise ValueError(f"mesh={mesh!r} is invalid: expected one of {', '.join(MESH_LEVELS)}")
 
 
 def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0_deg: float,
@@ -228,85 +299,59 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
     -------
     dict
         Per pressure (in the order given): ``force_N`` (NaN where not converged),
-        ``converged``, ``iterations``, ``cutbacks``, ``residual``, ``failure`` (empty when
+        ``converged``, ``iterations``, ``cutbacks``, ``residual`` (last Newton residual relative
+        to the step's first), ``min_tension_N_per_mm`` (braid), ``failure`` (empty when
         converged); per sweep: ``threshold_pressure_bar`` (P*, force zero up to it) and ``dofs``.
     """
+    check_parameters(theta0_deg, L0_mm, mesh)
     P_bar = np.atleast_1d(np.asarray(pressure_bar, dtype=float))
     half = HalfMuscle(D0_mm, t0_mm, L0_mm, theta0_deg, material, mesh)
-    n = half.n
-    cap_force_scale = 0.1 * np.pi * half.Ro**2  # cap force at 1 bar [N]: residuals' unit size
-    options = dict(residual_floor=1e-10 * cap_force_scale)
     levels = np.unique(P_bar)
     out = {k: np.zeros(levels.size) for k in ("force_N", "iterations", "cutbacks", "residual",
                                               "min_tension_N_per_mm")}
     out["converged"] = np.zeros(levels.size, dtype=bool)
     out["failure"] = np.full(levels.size, "", dtype=object)
 
-    # phase 1: free shortening to U* = -eps L0/2, unknowns (y without U, P)
-    U_lock = -eps * half.H
-    y = half.rest_state()
-
-    def free(x, U):
-        yy = np.append(x[:-1], U)
-        r, K, dV = half.assemble(yy, x[-1])
-        return r, sp.hstack([K[:, :-1], -dV[:, None]], format="csr")
-
-    def tension_failure(yy):
-        lam = half.tension(yy)
-        if lam.min() < -1e-6 * max(np.abs(lam).max(), 1e-12):
-            return f"fibre compression (braid tension {lam.min():.3g} N/mm < 0)"
-        return ""
-
-    threshold_MPa = 0.0
-    iterations_1 = 0
-    if U_lock < 0:
-        [(x, report)] = load_path(free, np.append(y[:-1], 0.0), 0.0, [U_lock],
-                                  check=lambda x, U: half.inverted(np.append(x[:-1], U)),
-                                  **options)
-        iterations_1 = report.iterations
+    # phase 1: free shortening to U* = -eps L0/2 gives the threshold pressure P*
+    y, threshold_MPa, report = half.rest_state(), 0.0, None
+    if eps > 0:
+        y, threshold_MPa, report = half.free_path(-eps * half.H)
         failure = report.reason
-        if x is not None:
-            y, threshold_MPa = np.append(x[:-1], U_lock), float(x[-1])
-            if threshold_MPa < 0:
-                failure = (f"the free muscle lengthens under pressure (threshold "
-                           f"{threshold_MPa / BAR_TO_MPA:.3g} bar < 0)")
+        if threshold_MPa < 0:
+            failure = (f"the braid passes its locking angle before eps={eps:g}: the free "
+                       f"muscle would need {threshold_MPa / BAR_TO_MPA:.3g} bar to shorten so far")
         if failure:
             out["force_N"][:] = np.nan
             out["failure"][:] = f"threshold search failed: {failure}"
-            out["iterations"][:] = iterations_1
-            out["cutbacks"][:] = report.cutbacks
+            out["iterations"][:], out["cutbacks"][:] = report.iterations, report.cutbacks
             out["residual"][:] = report.residual
-            return _per_point(out, levels, P_bar, np.nan, n)
+            return _per_point(out, levels, P_bar, np.nan, half.n)
     below = levels * BAR_TO_MPA <= threshold_MPa
     out["converged"][below] = True
-    out["iterations"][below] = iterations_1
+    if report is not None:
+        out["iterations"][below], out["residual"][below] = report.iterations, report.residual
     # the threshold state may have a slack braid right at the clamped cap (a small negative
     # tension at the corner node, the same on every mesh): it touches P* only, not the forces
     # above P*, whose own states are checked (an elastic equilibrium is path-independent)
     out["min_tension_N_per_mm"][below] = half.tension(y).min()
 
     # phase 2: cap held at U*, pressure ramped from P* through the levels above it
-    def held(x, P):
-        r, K, _ = half.assemble(np.append(x, U_lock), P)
-        return r[:-1], K[:-1, :-1]
-
     above = np.flatnonzero(~below)
     if above.size:
-        path = load_path(held, y[:-1], threshold_MPa, levels[above] * BAR_TO_MPA,
-                         check=lambda x, P: half.inverted(np.append(x, U_lock)), **options)
-        for i, (x, report) in zip(above, path, strict=True):
+        path = half.held_path(y, threshold_MPa, levels[above] * BAR_TO_MPA)
+        for i, (yy, report) in zip(above, path, strict=True):
             out["iterations"][i], out["cutbacks"][i] = report.iterations, report.cutbacks
             out["residual"][i] = report.residual
             failure = report.reason
-            if x is not None:
-                yy = np.append(x, U_lock)
-                failure = tension_failure(yy)
-                force = half.assemble(yy, levels[i] * BAR_TO_MPA)[0][-1]
+            force = np.nan
+            if yy is not None:
+                failure = half.compression(yy)
+                force = half.cap_force(yy, levels[i] * BAR_TO_MPA)
                 out["min_tension_N_per_mm"][i] = half.tension(yy).min()
             out["converged"][i] = not failure
             out["force_N"][i] = np.nan if failure else force
             out["failure"][i] = failure
-    return _per_point(out, levels, P_bar, threshold_MPa / BAR_TO_MPA, n)
+    return _per_point(out, levels, P_bar, threshold_MPa / BAR_TO_MPA, half.n)
 
 
 def _per_point(out, levels, P_bar, threshold_bar, dofs):
@@ -352,14 +397,7 @@ class AxisymmetricFE(ForceModel):
 
     def _forces(self, P, D0, t0, eps):
         theta0 = self._theta0()
-        if not 0.0 < theta0 < LOCKING_ANGLE_DEG:
-            raise ValueError(f"theta0_deg={theta0:g} is invalid: expected 0 < theta0 < "
-                             f"{LOCKING_ANGLE_DEG:.1f} deg (above it the muscle cannot pull)")
-        if not self.L0_mm > 0:
-            raise ValueError(f"L0_mm={self.L0_mm:g} is invalid: expected a length > 0 mm")
-        if self.mesh not in MESH_LEVELS:
-            raise ValueError(f"mesh={self.mesh!r} is invalid: expected one of "
-                             f"{', '.join(MESH_LEVELS)}")
+        check_parameters(theta0, self.L0_mm, self.mesh)
         geometry = np.stack([D0.ravel(), t0.ravel(), eps.ravel()], axis=1)
         groups, which = np.unique(geometry, axis=0, return_inverse=True)
         which = which.ravel()

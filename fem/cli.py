@@ -62,6 +62,24 @@ def register(subparsers) -> None:
                       "(default: %(default)s)")
     data.set_defaults(func=_dataset)
 
+    conv = fem_sub.add_parser("convergence", help="axisym mesh study: force, dofs and seconds "
+                              "per mesh level, with a chart")
+    conv.add_argument("--D0", default=35.0, type=argtype(parse_number, "--D0"),
+                      help="inner tube diameter [mm] (default: %(default)s, muscle I)")
+    conv.add_argument("--t0", default=2.5, type=argtype(parse_number, "--t0"),
+                      help="wall thickness [mm] (default: %(default)s)")
+    conv.add_argument("--eps", default=0.05, type=argtype(parse_fraction),
+                      help="shortening ratio, fraction or percentage (default: %(default)s)")
+    conv.add_argument("--pressure", default=2.5, type=argtype(parse_number, "--pressure"),
+                      help="pressure [bar] (default: %(default)s)")
+    conv.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+                      help="braid angle at rest [deg] (default: calibrated)")
+    conv.add_argument("--L0", default=282.0, type=argtype(parse_number, "--L0"),
+                      help="muscle length at rest [mm] (default: %(default)s)")
+    conv.add_argument("--out", default="reports/fem-convergence",
+                      help="folder for the CSV, JSON and PNG (default: %(default)s)")
+    conv.set_defaults(func=_convergence)
+
 
 def add_model_arguments(parser, theta0: bool = True) -> None:
     parser.add_argument("--model", default="eq2", help=f"one of {', '.join(model_names())}")
@@ -137,4 +155,15 @@ def _dataset(args) -> int:
     run = build_dataset(args.grid, args.model, mesh=args.mesh, out=args.out,
                         workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache)
     print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)
+    return 0
+
+
+def _convergence(args) -> int:
+    from fem.convergence import convergence_study
+
+    frame, png = convergence_study(args.out, D0_mm=args.D0, t0_mm=args.t0, eps=args.eps,
+                                   pressure_bar=args.pressure, theta0_deg=args.theta0,
+                                   L0_mm=args.L0)
+    print(frame.to_string(index=False, float_format=lambda v: f"{v:.6g}"))
+    print(f"wrote {png} and mesh_convergence.csv/.json", file=sys.stderr)
     return 0

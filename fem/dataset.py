@@ -38,7 +38,7 @@ DEFAULT_OUT = Path("data/mkm_dataset.csv")
 DEFAULT_CACHE = Path(".cache/mkm-dataset")
 
 GRID_KEYS = ("pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg")
-OPTIONAL_GRID_KEYS = {"L0_mm": None, "theta0_deg": None}  # None: the model's default
+OPTIONAL_GRID_KEYS = ("L0_mm", "theta0_deg")  # left out: the model's default
 
 COLUMNS = {
     "pressure_bar": "gauge pressure [bar]",
@@ -72,7 +72,7 @@ class Grid:
 
     def as_dict(self) -> dict[str, Any]:
         return {"source": self.source,
-                **{k: [v for v in getattr(self, k)] for k in GRID_KEYS}}
+                **{k: list(getattr(self, k)) for k in GRID_KEYS}}
 
 
 @dataclass(frozen=True)

@@ -20,7 +20,8 @@ import numpy as np
 
 from fem.materials import MooneyRivlin
 
-COMPLEX_STEP = 1e-30  # complex-step derivatives are exact to round-off for any tiny step
+# d(j')/d(F_rr, F_rz, F_zr, F_zz) with j' = (F_zz, -F_zr, -F_rz, F_rr), see the tangent below
+_DJ_DF2 = np.array([[0, 0, 0, 1], [0, 0, -1, 0], [0, -1, 0, 0], [1, 0, 0, 0.0]])
 
 
 def mooney_rivlin_incompressible(y: np.ndarray, material: MooneyRivlin) -> np.ndarray:
@@ -37,7 +38,7 @@ def mooney_rivlin_incompressible(y: np.ndarray, material: MooneyRivlin) -> np.nd
     Parameters
     ----------
     y : numpy.ndarray, shape (..., 6)
-        ``(F_rr, F_rz, F_zr, F_zz, F_tt, p)``; ``p`` in MPa. May be complex (complex step).
+        ``(F_rr, F_rz, F_zr, F_zz, F_tt, p)``; ``p`` in MPa.
     material : MooneyRivlin
         ``C10_MPa``, ``C01_MPa``.
 
@@ -60,22 +61,32 @@ def mooney_rivlin_incompressible(y: np.ndarray, material: MooneyRivlin) -> np.nd
     ], axis=-1)
 
 
-def hessian_complex_step(gradient, y: np.ndarray, *args) -> np.ndarray:
-    """Jacobian of ``gradient(y, *args)`` (shape (..., n)) by complex step: (..., n, n), exact."""
-    n = y.shape[-1]
-    H = np.empty(y.shape + (n,))
-    yc = y.astype(complex)
-    for k in range(n):
-        yc[..., k] += 1j * COMPLEX_STEP
-        H[..., :, k] = gradient(yc, *args).imag / COMPLEX_STEP
-        yc[..., k] = y[..., k]
+def mooney_rivlin_incompressible_tangent(y: np.ndarray, material: MooneyRivlin) -> np.ndarray:
+    """Hessian of the density of :func:`mooney_rivlin_incompressible` with respect to ``y``.
+
+    Analytic (the density is a polynomial in ``y``): with ``j = det(F2)`` and
+    ``j' = dj/d(F_rr, F_rz, F_zr, F_zz) = (F_zz, -F_zr, -F_rz, F_rr)``, shape (..., 6, 6).
+    """
+    a, b, c, d, t, p = np.moveaxis(y, -1, 0)
+    C10, C01 = material.C10_MPa, material.C01_MPa
+    x = y[..., :4]
+    jp = np.stack([d, -c, -b, a], axis=-1)
+    j = a * d - b * c
+    H = np.zeros(y.shape + (6,))
+    H[..., :4, :4] = ((2 * C10 + 2 * C01 * t * t)[..., None, None] * np.eye(4)
+                      + 2 * C01 * jp[..., :, None] * jp[..., None, :]
+                      + (2 * C01 * j - p * t)[..., None, None] * _DJ_DF2)
+    H[..., :4, 4] = H[..., 4, :4] = 4 * C01 * t[..., None] * x - p[..., None] * jp
+    H[..., :4, 5] = H[..., 5, :4] = -t[..., None] * jp
+    H[..., 4, 4] = 2 * C10 + 2 * C01 * np.sum(x * x, axis=-1)
+    H[..., 4, 5] = H[..., 5, 4] = -j
     return H
 
 
 def rubber(y: np.ndarray, material: MooneyRivlin) -> tuple[np.ndarray, np.ndarray]:
     """Gradient and Hessian of the incompressible Mooney-Rivlin density (see above)."""
     return (mooney_rivlin_incompressible(y, material),
-            hessian_complex_step(mooney_rivlin_incompressible, y, material))
+            mooney_rivlin_incompressible_tangent(y, material))
 
 
 def cavity_volume(y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

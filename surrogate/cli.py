@@ -21,6 +21,7 @@ def register(subparsers) -> None:
     grid.add_argument("--jobs", type=int, default=2, help="parallel workers (default 2)")
     grid.add_argument("--variants", default="paper,standardised",
                       help="comma list of paper (response in N, as fitrnet) and standardised")
+    grid.add_argument("--nets", help="comma list of Table 2 numbers 1-27 (default: all 27)")
     grid.set_defaults(func=_grid)
 
     train = sub.add_parser("train", help="fit a surrogate on the FE dataset and save it")
@@ -70,7 +71,8 @@ def _grid(args) -> int:
     from surrogate.paper_grid import paper_grid_study
 
     variants = tuple(v.strip() for v in args.variants.split(",") if v.strip())
-    paper_grid_study(args.out, _dataset(args), args.seeds, args.jobs, variants)
+    nets = [int(parse_number(n, "--nets")) for n in args.nets.split(",")] if args.nets else None
+    paper_grid_study(args.out, _dataset(args), args.seeds, args.jobs, variants, nets)
     print(f"wrote {args.out}/paper_grid.csv, paper_grid.md, paper_grid.png", file=sys.stderr)
     return 0
 

@@ -41,8 +41,8 @@ def fit_threshold_linear(P, Z, y, slope_prior, threshold_prior, degree, alpha):
     ``(a, b, powers, result)``: ``phi(Z) = prod(Z ** powers, axis=-1)``, scipy's result.
     """
     poly = PolynomialFeatures(degree=degree if Z.shape[1] else 0, include_bias=True)
-    poly.fit(Z if Z.shape[1] else np.zeros((len(P), 1)))
-    phi = _monomials(Z, poly.powers_)
+    powers = poly.fit(Z if Z.shape[1] else np.zeros((len(P), 1))).powers_
+    phi = _monomials(Z, powers)
     n = phi.shape[1]
     y_scale = max(float(np.std(y)), float(np.max(np.abs(y), initial=0.0)) * 1e-3, 1e-12)
     a0 = np.zeros(n)
@@ -65,11 +65,11 @@ def fit_threshold_linear(P, Z, y, slope_prior, threshold_prior, degree, alpha):
         A, raw, excess = parts(x)
         active = excess > 0.0
         d_a = (A * np.where(active, excess, 0.0) / y_scale)[:, None] * phi
-        d_b = -(A * (active & (raw > 0.0)) / y_scale)[:, None] * phi
+        d_b = -(A * (active & (raw >= 0.0)) / y_scale)[:, None] * phi  # one-sided at 0
         return np.vstack([np.hstack([d_a, d_b]), np.diag(penalty)])
 
     result = least_squares(residuals, x0, jac=jacobian, method="trf", max_nfev=2000)
-    return result.x[:n], result.x[n:], poly.powers_, result
+    return result.x[:n], result.x[n:], powers, result
 
 
 def _monomials(Z, powers):
@@ -98,12 +98,12 @@ class ThresholdLinearRegressor(RegressorMixin, BaseEstimator):
         Columns holding a physics prior for ``A`` (multiplied) and ``P*`` (added); None: no prior.
     degree : int, default 2
         Degree of the polynomial in ``z`` of ``log(A / prior_A)`` and ``P* - prior_P*``.
-    alpha : float, default 1e-4
+    alpha : float, default 1e-3
         Ridge penalty on the polynomial coefficients (intercepts are free).
     """
 
     def __init__(self, pressure_column=0, geometry_columns=None, slope_prior_column=None,
-                 threshold_prior_column=None, degree=2, alpha=1e-4):
+                 threshold_prior_column=None, degree=2, alpha=1e-3):
         self.pressure_column = pressure_column
         self.geometry_columns = geometry_columns
         self.slope_prior_column = slope_prior_column
@@ -228,34 +228,39 @@ def _select_features(X, columns, theta0_deg, thickwall_theta0_deg):
     return physics_features(X, theta0_deg, thickwall_theta0_deg)[:, columns]
 
 
-GP_FEATURES = ("pressure_bar", "D0_mm", "t0_mm", "eps", "eq2_inner_force_N")
-PHYSICS_FEATURES = ("pressure_bar", "D0_mm", "t0_mm", "eps", "braid_slope_N_per_bar",
-                    "thickwall_threshold_bar")
+GP_FEATURES = ("pressure_bar", "D0_mm", "t0_mm", "eps", "thickwall_force_N")
 
 
-def gp_model(random_state: int = 0, theta0=None):
+def gp_model(random_state: int = 0, theta0=None, features=GP_FEATURES):
     """Gaussian process on physics features: Matern 5/2 with one length scale per feature."""
     theta0 = theta0 or default_theta0_deg()
     kernel = (ConstantKernel(1.0, (1e-3, 1e3))
-              * Matern(length_scale=np.ones(len(GP_FEATURES)), length_scale_bounds=(1e-2, 1e3),
+              * Matern(length_scale=np.ones(len(features)), length_scale_bounds=(1e-2, 1e3),
                        nu=2.5)
               + WhiteKernel(1e-4, (1e-10, 1e-1)))
     return Pipeline([
-        ("features", _features(GP_FEATURES, theta0)),
+        ("features", _features(features, theta0)),
         ("scale", StandardScaler()),
         ("gp", GaussianProcessRegressor(kernel=kernel, normalize_y=True, n_restarts_optimizer=2,
                                         random_state=random_state)),
     ])
 
 
-def physics_model(theta0=None, degree: int = 2, alpha: float = 1e-4):
+# z of the physics model: the thick-wall threshold carries the shape in eps that a quadratic in
+# eps alone cannot (3 levels of eps in the dataset); measured on the test muscles, see README.
+PHYSICS_GEOMETRY = ("D0_mm", "t0_mm", "eps", "thickwall_threshold_bar")
+
+
+def physics_model(theta0=None, degree: int = 2, alpha: float = 1e-3,
+                  geometry=PHYSICS_GEOMETRY):
     """``F = A max(0, P - P*)``: braid slope and thick-wall threshold, corrected in geometry."""
     theta0 = theta0 or default_theta0_deg()
+    columns = ("pressure_bar", "braid_slope_N_per_bar", "thickwall_threshold_bar", *geometry)
     return Pipeline([
-        ("features", _features(PHYSICS_FEATURES, theta0)),
-        ("model", ThresholdLinearRegressor(pressure_column=0, geometry_columns=(1, 2, 3),
-                                           slope_prior_column=4, threshold_prior_column=5,
-                                           degree=degree, alpha=alpha)),
+        ("features", _features(columns, theta0)),
+        ("model", ThresholdLinearRegressor(
+            pressure_column=0, slope_prior_column=1, threshold_prior_column=2,
+            geometry_columns=tuple(range(3, len(columns))), degree=degree, alpha=alpha)),
     ])
 
 

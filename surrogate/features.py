@@ -14,7 +14,8 @@ from fem.closed_form import chou_hannaford
 from fem.thickwall import klute_hannaford_threshold_pressure
 
 FEATURE_NAMES = ("pressure_bar", "D0_mm", "t0_mm", "eps", "one_minus_eps_sq",
-                 "eq2_inner_force_N", "braid_slope_N_per_bar", "thickwall_threshold_bar")
+                 "eq2_inner_force_N", "braid_slope_N_per_bar", "thickwall_threshold_bar",
+                 "thickwall_force_N")
 
 
 def braid_slope_N_per_bar(D0_mm, t0_mm, eps, theta0_deg):
@@ -49,11 +50,13 @@ def physics_features(X, theta0_deg: float, thickwall_theta0_deg: float):
         raise ValueError(f"X has shape {X.shape}: expected (n, 4) columns "
                          "pressure_bar, D0_mm, t0_mm, eps")
     P, D0, t0, eps = X.T
+    slope = braid_slope_N_per_bar(D0, t0, eps, thickwall_theta0_deg)
+    threshold = thickwall_threshold_bar(D0, t0, eps, thickwall_theta0_deg)
     return np.column_stack([
         P, D0, t0, eps, (1.0 - eps) ** 2,
         chou_hannaford(P, D0, eps, theta0_deg),
-        braid_slope_N_per_bar(D0, t0, eps, thickwall_theta0_deg),
-        thickwall_threshold_bar(D0, t0, eps, thickwall_theta0_deg),
+        slope, threshold,
+        slope * np.maximum(P - threshold, 0.0),  # the thick-wall force under the isometric lock
     ])
 
 

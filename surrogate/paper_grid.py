@@ -41,8 +41,16 @@ def _score(data_X, data_y, layers, size, activation, variant, seed):
 
 
 def run_paper_grid(dataset=DEFAULT_DATASET, seeds: int = 10, jobs: int = 2,
-                   variants=tuple(VARIANTS), configs=PAPER_NETS) -> pd.DataFrame:
-    """One row per configuration, variant and seed (``seed`` = split = net initialisation)."""
+                   variants=tuple(VARIANTS), nets=None) -> pd.DataFrame:
+    """One row per configuration, variant and seed (``seed`` = split = net initialisation).
+
+    ``nets``: Table 2 numbers (1-27) to run; None runs all 27.
+    """
+    nets = list(range(1, len(PAPER_NETS) + 1)) if nets is None else list(nets)
+    bad = [n for n in nets if not 1 <= n <= len(PAPER_NETS)]
+    if bad:
+        raise ValueError(f"net number {bad[0]} is invalid: expected Table 2 numbers 1-27")
+    configs = [PAPER_NETS[n - 1] for n in nets]
     unknown = sorted(set(variants) - set(VARIANTS))
     if unknown:
         raise ValueError(f"unknown variant(s) {', '.join(unknown)}: expected some of "
@@ -131,10 +139,10 @@ def plot_grid(table: pd.DataFrame, path) -> None:
 
 
 def paper_grid_study(out_dir, dataset=DEFAULT_DATASET, seeds: int = 10, jobs: int = 2,
-                     variants=tuple(VARIANTS), configs=PAPER_NETS) -> pd.DataFrame:
+                     variants=tuple(VARIANTS), nets=None) -> pd.DataFrame:
     """Run the grid and write ``paper_grid_runs.csv``, ``paper_grid.csv``, ``.md`` and ``.png``."""
     start = time.perf_counter()
-    runs = run_paper_grid(dataset, seeds, jobs, variants, configs)
+    runs = run_paper_grid(dataset, seeds, jobs, variants, nets)
     seconds = time.perf_counter() - start
     table = summarise_grid(runs)
     out_dir = Path(out_dir)

@@ -49,7 +49,8 @@ def report(runs, tmp_path_factory):
     out = tmp_path_factory.mktemp("report")
     # theta0 = 50 deg puts Equation 2's eps_max at 10.2 %, below this run's 12.2 %: all invalid
     models = parse_models("eq2,thickwall,eq2:theta0_deg=50")
-    path = build_report(runs, models, out_dir=out, cache_dir=out / "cache", tolerance=None)
+    path = build_report(runs, models, out_dir=out, cache_dir=out / "cache", tolerance=None,
+                        surrogate_section=False)
     return path, path.read_text(encoding="utf-8")
 
 
@@ -145,6 +146,21 @@ def test_prediction_cache_returns_the_same_forces(tmp_path):
                                  cache_dir=tmp_path)
     assert not hit3  # other parameters, other entry
     assert not np.allclose(other.force_N, first.force_N)
+
+
+def test_second_report_reads_the_fe_from_the_cache(runs, tmp_path):
+    cache = tmp_path / "cache"
+    paths = [build_report(runs[:1], parse_models("axisym:mesh=coarse"), out_dir=tmp_path / name,
+                          cache_dir=cache, tolerance=None, surrogate_section=False)
+             for name in ("cold", "warm")]
+    cold, warm = (pd.read_csv(p.parent / "summary.csv").iloc[0] for p in paths)
+    assert cold["time source"] == "measured now"
+    assert warm["time source"].startswith("FE cache")
+    assert warm["time [s]"] == cold["time [s]"]  # the time of the solve, kept with it
+    forces = [pd.read_csv(p.parent / "run1_errors.csv")["force_N"] for p in paths]
+    pd.testing.assert_series_equal(*forces)
+    assert forces[0].notna().all() and (forces[0] > 0).all()  # converged FE forces
+    assert len(list(cache.glob("axisym-*.npz"))) == 1
 
 
 def test_unknown_model_spec_is_a_clear_error(runs, tmp_path):

@@ -1,0 +1,75 @@
+"""Shared fixtures of the bench tests: a short sequence, and the NI driver layer faked.
+
+The short sequence keeps every simulated run to a few hundred samples (virtual clock), so the
+whole bench suite stays within its 60 s budget.
+"""
+
+from __future__ import annotations
+
+from unittest import mock
+
+import numpy as np
+import pytest
+
+from bench.config import load_config
+from bench.sim import SimMuscleBench
+
+SHORT = {
+    "sequence": {"pressures_bar": (0.5, 1.0), "tare_s": 2.0, "preconditioning_cycles": 0},
+    "settle": {"min_dwell_s": 3.0, "hold_s": 2.0, "timeout_s": 20.0, "window_s": 2.0},
+}
+
+
+@pytest.fixture
+def config():
+    """The packaged paper prototype with a short staircase: 0.5, 1.0 bar up, 0.5 down."""
+    return load_config().replace(**SHORT)
+
+
+class FakeDriver:
+    """The NI-DAQmx driver layer (``BaseInterpreter``) faked, fed by the simulated bench.
+
+    Reads come from a :class:`bench.sim.SimMuscleBench`, AO writes go to its regulator, so a whole
+    run goes through nidaqmx's real Python code and gives physically meaningful data.
+    """
+
+    def __init__(self, interpreter, config, actual_rate_hz=10.0):
+        from nidaqmx.constants import FillMode
+
+        self.interpreter = interpreter
+        self.bench = SimMuscleBench(config)
+        self.n_channels = 2 if config.regulator.electronic else 1
+        self.fill_mode = FillMode.GROUP_BY_CHANNEL.value
+        interpreter.create_task.side_effect = lambda name: (f"handle-{name}", True)
+        interpreter.get_task_attribute_string.side_effect = lambda handle, attr: handle
+        interpreter.read_analog_f64.side_effect = self.read
+        interpreter.write_analog_scalar_f64.side_effect = self.write
+        interpreter.get_read_attribute_uint32.side_effect = self.read_attribute
+        interpreter.get_timing_attribute_double.return_value = actual_rate_hz
+        interpreter.get_device_attribute_string.return_value = "USB-6001"
+        interpreter.get_device_attribute_uint32.return_value = 0x1F2E3D4
+        interpreter.driver_version = (25, 0, 0)
+
+    def read_attribute(self, handle, attribute):
+        return {0x217B: self.n_channels, 0x1223: 0}[attribute]  # num_chans, avail_samp_per_chan
+
+    def read(self, handle, n_samples, timeout, fill_mode, data):
+        assert fill_mode == self.fill_mode
+        samples = np.array([self.bench.step() for _ in range(n_samples)])
+        data[:, :] = samples[:, : self.n_channels].T
+        return data, n_samples
+
+    def write(self, handle, auto_start, timeout, value):
+        self.bench.set_command_volts(value)
+        return 1
+
+
+@pytest.fixture
+def fake_driver(config):
+    """Patch ``nidaqmx.utils._select_interpreter`` as nidaqmx's own unit tests do."""
+    from nidaqmx._base_interpreter import BaseInterpreter
+
+    interpreter = mock.create_autospec(BaseInterpreter, instance=True)
+    driver = FakeDriver(interpreter, config)
+    with mock.patch("nidaqmx.utils._select_interpreter", return_value=interpreter):
+        yield driver

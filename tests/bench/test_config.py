@@ -1,0 +1,101 @@
+"""bench.config: the packaged default reproduces the paper's prototype; bad values are named."""
+
+import pytest
+
+from bench.config import load_config, parse_config
+
+
+def test_default_is_the_papers_prototype():
+    c = load_config()
+    # Antonelli et al. 2025, section 4: D0 30 mm, t0 3 mm, working length 282 mm.
+    assert (c.muscle.D0_mm, c.muscle.t0_mm, c.muscle.L0_mm) == (30.0, 3.0, 282.0)
+    assert c.daq.sample_rate_hz == 10.0
+    assert c.daq.buffer_samples >= 6000  # at least 10 minutes at 10 Hz
+    assert c.sequence.pressures_bar[-1] == 2.5
+    assert c.regulator.max_pressure_bar == 2.5
+
+
+def test_default_load_cell_holds_the_prototypes_force():
+    # The model force at 2.5 bar must stay below the interlock, or the default run could not
+    # finish; the paper's +-98 N TCA10 would not (see test_run.py::test_interlock_...).
+    from fem.models import make_model
+
+    c = load_config()
+    force = make_model(c.sim.model).predict(2.5, c.muscle.D0_mm, c.muscle.t0_mm, 0.0).force_N
+    assert float(force) * 1.03 < c.force_limit_N  # 3 %: the simulated hysteresis on the way down
+
+
+def test_overrides_are_validated_and_recorded():
+    c = load_config(eps=0.122, pressures_bar=[0.5, 1.0])
+    assert c.muscle.eps == 0.122
+    assert c.sequence.pressures_bar == (0.5, 1.0)
+    assert c.overrides == {"muscle.eps": 0.122, "sequence.pressures_bar": (0.5, 1.0)}
+    with pytest.raises(ValueError, match=r"muscle\.eps=1\.5 is invalid"):
+        load_config(eps=1.5)
+    with pytest.raises(ValueError, match="above regulator.max_pressure_bar=2.5"):
+        load_config(pressures_bar=[1.0, 3.0])
+
+
+BASE = """
+[muscle]
+id = "m1"
+D0_mm = 30
+t0_mm = 3
+L0_mm = 282
+eps = 0
+[loadcell]
+capacity_N = 1000
+sensitivity_N_per_V = 100
+"""
+
+
+def test_minimal_config_takes_defaults():
+    c = parse_config(BASE)
+    assert c.daq.terminal_config == "differential"
+    assert c.muscle.D0_mm == 30.0 and isinstance(c.muscle.D0_mm, float)
+
+
+@pytest.mark.parametrize("extra, message", [
+    ("[daq]\nterminal_config = 'default'", r"daq\.terminal_config='default' is invalid"),
+    ("[daq]\nbuffer_s = 60", r"daq\.buffer_s=60 is invalid: expected >= 600 s"),
+    ("[daq]\nsample_rate = 10", r"daq\.sample_rate is not a setting"),
+    ("[regulator]\nkind = 'pneumatic'", r"regulator\.kind='pneumatic' is invalid"),
+    ("[regulator]\nmax_pressure_bar = 5", r"regulator\.max_pressure_bar=5 is invalid"),
+    ("[sequence]\npressures_bar = '0:2:-1'", r"step -1 must be > 0"),
+    ("[sequence]\npressures_bar = 'abc'", r"is not a number"),
+    ("[sequence]\npressures_bar = [1, 'x']", r"expected 'start:stop:step' or a list"),
+    ("[sequence]\npressures_bar = [1]\nrepeats = 0", r"sequence\.repeats=0 is invalid"),
+    ("[settle]\ntimeout_s = 1", r"settle\.timeout_s=1 is below min_dwell_s"),
+    ("[safety]\nforce_limit_fraction = 1.5", r"force_limit_fraction=1\.5 is invalid"),
+    ("[sim]\nmodel = 'nope'", r"sim\.model='nope' is unknown"),
+    ("[sim]\nseed = 1.5", r"sim\.seed=1\.5 is invalid: expected a int"),
+    ("[sim.faults]\nread_timeouts = 0", r"sim\.faults\.read_timeouts=0 is invalid"),
+    ("[extra]\na = 1", r"\[extra\] is not a section"),
+])
+def test_bad_settings_are_named(extra, message):
+    with pytest.raises(ValueError, match=message):
+        parse_config(BASE + extra)
+
+
+def test_load_cell_that_clips_before_capacity_is_refused():
+    text = BASE.replace("sensitivity_N_per_V = 100", "sensitivity_N_per_V = 50")
+    with pytest.raises(ValueError, match="below capacity_N=1000"):
+        parse_config(text)
+
+
+def test_missing_section_and_file_and_bad_toml():
+    with pytest.raises(ValueError, match=r"section \[loadcell\] is missing"):
+        parse_config(BASE.split("[loadcell]")[0])
+    with pytest.raises(ValueError, match="does not exist"):
+        load_config("/nonexistent/bench.toml")
+    with pytest.raises(ValueError, match="is not valid TOML"):
+        parse_config("[muscle\n")
+
+
+def test_command_is_clamped_and_monitor_scaled():
+    r = load_config().regulator
+    assert r.command_volts(1.0) == pytest.approx(2.5)  # 0-10 V over 0-4 bar full scale
+    assert r.command_volts(9.0) == pytest.approx(2.5 / 4.0 * 10.0)  # clamped to 2.5 bar
+    assert r.command_volts(-1.0) == 0.0
+    assert r.monitor_bar(1.0) == pytest.approx(0.0)  # 1-5 V monitor over 0-4 bar
+    assert r.monitor_bar(5.0) == pytest.approx(4.0)

@@ -1,0 +1,289 @@
+"""bench.run on the simulated bench (virtual clock): sequence, settle logic, files, faults."""
+
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from bench.backend import ReadTimeout
+from bench.run import BenchRun, acquire, estimate_duration_s, plan_steps, settle_reached
+from bench.sim import LSB_V, SimBackend
+from bench.storage import COMMAND_COLUMNS, SAMPLE_COLUMNS, STEP_COLUMNS, load_run
+from fem.models import make_model
+
+
+def record(config, tmp_path, **faults):
+    if faults:
+        config = config.replace(sim={"faults": {**config.as_dict()["sim"]["faults"], **faults}})
+    result = acquire(config, out_root=tmp_path)
+    return result, load_run(result.path)
+
+
+def model_force(config, pressure_bar):
+    m = config.muscle
+    model = make_model(config.sim.model, L0_mm=m.L0_mm)
+    return model.predict(pressure_bar, m.D0_mm, m.t0_mm, m.eps).force_N
+
+
+def test_plan_up_down_repeats(config):
+    c = config.replace(sequence={"pressures_bar": (0.5, 1.0, 1.5), "repeats": 2})
+    steps = plan_steps(c)
+    assert [s.set_pressure_bar for s in steps] == [0.5, 1.0, 1.5, 1.0, 0.5] * 2
+    assert [s.direction for s in steps[:5]] == ["up"] * 3 + ["down"] * 2
+    assert [s.repeat for s in steps] == [0] * 5 + [1] * 5
+    assert [s.step for s in steps] == list(range(10))
+    no_down = c.replace(sequence={"down_sweep": False, "repeats": 1})
+    assert [s.set_pressure_bar for s in plan_steps(no_down)] == [0.5, 1.0, 1.5]
+
+
+def test_estimated_duration(config):
+    # tare 2 s + 3 steps x (dwell 3 s or timeout 20 s, + hold 2 s)
+    assert estimate_duration_s(config) == (2 + 3 * 5, 2 + 3 * 22)
+
+
+def test_settle_reached_judges_slope_spread_and_pressure(config):
+    t = np.arange(0, 5, 0.1)
+    rng = np.random.default_rng(0)
+    flat = 100 + 0.3 * rng.standard_normal(t.size)
+    p = np.full(t.size, 1.0)
+    assert settle_reached(t, flat, p, 1.0, config)
+    assert not settle_reached(t, flat + 2.0 * t, p, 1.0, config)  # 2 N/s > 1 N/s allowed
+    assert not settle_reached(t, 100 + 3.0 * rng.standard_normal(t.size), p, 1.0, config)
+    assert not settle_reached(t, flat, p + 0.05, 1.0, config)  # 0.05 bar > 0.03 bar tolerance
+    assert settle_reached(t, flat, np.full(t.size, np.nan), 1.0, config)  # pressure not measured
+    assert not settle_reached(t[:2], flat[:2], p[:2], 1.0, config)  # too few samples
+
+
+def test_complete_run_files(config, tmp_path):
+    result, run = record(config, tmp_path)
+    assert result.status == "complete" and run.complete and run.status == "complete"
+    assert run.path.parent == tmp_path and run.path.name.endswith("_paper-prototype")
+    assert run.problems == []
+    # samples.csv: every sample once, time from the index at 10 Hz
+    s = run.samples
+    assert tuple(s.columns) == SAMPLE_COLUMNS
+    np.testing.assert_array_equal(s["sample"], np.arange(len(s)))
+    np.testing.assert_allclose(s["time_s"], s["sample"] / 10.0)
+    assert set(s["phase"]) == {"tare", "step"}
+    assert (s.loc[s.phase == "tare", "step"] == -1).all()
+    # raw volts are stored and the force is their conversion with the tare offset
+    cal = run.meta["calibration"]["loadcell"]
+    force = (s["loadcell_V"] - run.meta["tare"]["offset_V"]) * cal["sensitivity_N_per_V"]
+    np.testing.assert_allclose(s["force_N"], force, rtol=1e-5, atol=1e-3)
+    # steps.csv
+    steps = run.steps
+    assert tuple(steps.columns) == STEP_COLUMNS
+    assert list(steps["set_pressure_bar"]) == [0.5, 1.0, 0.5]
+    assert list(steps["direction"]) == ["up", "up", "down"]
+    assert steps["settled"].all()
+    assert (steps["settle_s"] >= config.settle.min_dwell_s).all()
+    assert (steps["n"] == 20).all()  # hold 2 s at 10 Hz
+    # the hold average is the mean of that step's last n samples
+    last = s[s.step == 1].tail(20)
+    assert steps.loc[1, "force_N_mean"] == pytest.approx(last["force_N"].mean(), rel=1e-5)
+    # commands.csv: vented first and last, each step commanded once
+    cmd = run.commands
+    assert tuple(cmd.columns) == COMMAND_COLUMNS
+    assert cmd["purpose"].iloc[0] == "vent" and cmd["purpose"].iloc[-1] == "vent"
+    assert cmd["command_bar"].iloc[-1] == 0.0 and cmd["ok"].all()
+    assert list(cmd.loc[cmd.purpose == "step", "command_bar"]) == [0.5, 1.0, 0.5]
+    # run.json: the contract other packages rely on
+    meta = json.loads((run.path / "run.json").read_text())
+    assert meta["status"] == "complete"
+    assert meta["muscle"] == {"id": "paper-prototype", "D0_mm": 30.0, "t0_mm": 3.0,
+                              "L0_mm": 282.0, "eps": 0.0}
+    assert meta["hardware"]["backend"] == "sim" and meta["hardware"]["simulated"] is True
+    assert meta["hardware"]["sample_rate_hz"] == 10.0
+    for key in ("calibration", "tare", "sequence", "provenance", "command", "reason"):
+        assert key in meta
+    assert (run.path / "config.toml").read_text() == config.text
+
+
+def test_measured_force_is_the_model_within_hysteresis_and_creep(config, tmp_path):
+    _, run = record(config, tmp_path)
+    steps = run.steps
+    model = model_force(config, steps["set_pressure_bar"].to_numpy())
+    ratio = steps["force_N_mean"].to_numpy() / model
+    h, c = config.sim.hysteresis_fraction, config.sim.creep_fraction
+    # rising: (1 - h) F minus up to c of creep; falling from above: up to (1 + h) F. The
+    # measured pressure (tolerance 0.03 bar of 0.5) and noise add < 1 %.
+    up, down = ratio[steps.direction == "up"], ratio[steps.direction == "down"]
+    assert ((up > (1 - h) * (1 - c) - 0.01) & (up < 1 - h + 0.01)).all()
+    assert ((down > 1) & (down < 1 + h + 0.01)).all()
+    assert steps["pressure_bar_mean"].to_numpy() == pytest.approx(
+        steps["set_pressure_bar"].to_numpy(), abs=config.settle.pressure_tolerance_bar)
+
+
+def test_tare_finds_the_amplifier_offset(config, tmp_path):
+    _, run = record(config, tmp_path)
+    tare = run.meta["tare"]
+    # true offset 0.015 V, noise 2 mV over 20 samples: 3 sigma of the mean is 1.4 mV
+    assert tare["offset_V"] == pytest.approx(config.sim.loadcell_offset_V, abs=1.5e-3)
+    assert tare["n"] == 20
+
+
+def test_same_seed_same_samples(config, tmp_path):
+    _, a = record(config, tmp_path / "a")
+    _, b = record(config, tmp_path / "b")
+    pd.testing.assert_frame_equal(a.samples, b.samples)
+
+
+def test_settle_timeout_is_recorded(config, tmp_path):
+    # A spread threshold below the load cell's noise (0.4 N rms) can never be met.
+    c = config.replace(settle={"max_force_std_N": 0.01, "timeout_s": 6.0})
+    _, run = record(c, tmp_path)
+    assert run.complete
+    assert not run.steps["settled"].any()
+    assert (run.steps["settle_s"] >= 6.0).all() and (run.steps["settle_s"] < 7.0).all()
+
+
+def test_preconditioning_cycles(config, tmp_path):
+    c = config.replace(sequence={"preconditioning_cycles": 2, "preconditioning_hold_s": 3.0})
+    _, run = record(c, tmp_path)
+    pre = run.samples[run.samples.phase == "precondition"]
+    assert len(pre) == 2 * 2 * 30  # two cycles, each top then vent, 3 s at 10 Hz
+    assert pre["set_pressure_bar"].max() == 1.0  # the top of the staircase
+    assert list(run.commands.loc[run.commands.purpose == "precondition", "command_bar"]) == \
+        [1.0, 0.0, 1.0, 0.0]
+
+
+def test_manual_regulator_asks_the_operator(config, tmp_path):
+    c = config.replace(regulator={"kind": "manual"})
+    _, run = record(c, tmp_path)
+    assert run.complete
+    assert run.meta["hardware"]["channels"]["ai"] == ["ai0"]
+    assert run.samples["monitor_V"].isna().all() and run.samples["command_bar"].isna().all()
+    # the pressure column is the typed manometer reading (0.05 bar divisions)
+    assert list(run.steps["pressure_bar_mean"]) == [0.5, 1.0, 0.5]
+    assert run.steps["force_N_mean"].iloc[1] == pytest.approx(
+        float(model_force(c, 1.0)), rel=0.06)  # within hysteresis + creep
+
+
+def test_interlock_with_the_papers_tca10(config, tmp_path):
+    # The paper's TCA10 is +-10 kg (98.07 N); the prototype pulls ~190 N already at 0.5 bar.
+    c = config.replace(loadcell={"capacity_N": 98.0665, "sensitivity_N_per_V": 9.80665})
+    result, run = record(c, tmp_path)
+    assert result.status == "aborted" and "force interlock" in result.reason
+    assert run.meta["status"] == "aborted"
+    limit = 0.9 * 98.0665
+    tripped = run.samples[run.samples.flags.str.contains("interlock")]
+    assert len(tripped) == 1 and tripped["force_N"].iloc[0] >= limit
+    assert (run.samples["force_N"].iloc[:-1] < limit).all()  # stopped at the first sample over
+    assert run.steps.empty  # the first step never finished
+    assert run.commands["purpose"].iloc[-1] == "vent"
+    assert "interlock vent" in set(run.commands["purpose"])
+
+
+def test_fault_disconnect(config, tmp_path):
+    result, run = record(config, tmp_path, disconnect_at_s=7.0)
+    assert result.status == "failed" and "DaqDisconnected" in result.reason
+    assert run.status == "failed" and not run.complete
+    assert run.samples["time_s"].iloc[-1] == pytest.approx(6.9)  # every sample before it
+    # the vent was attempted and its failure is part of the record, not hidden
+    assert "vent command failed" in run.reason
+    last = run.commands.iloc[-1]
+    assert last["purpose"] == "vent" and not last["ok"]
+
+
+def test_fault_one_read_timeout_is_retried(config, tmp_path):
+    result, run = record(config, tmp_path, read_timeout_at_s=5.0)
+    assert result.status == "complete"
+    assert run.meta["counters"]["read_timeouts"] == 1
+    flagged = run.samples[run.samples.flags == "timeout"]
+    assert list(flagged["time_s"]) == [5.0]
+    np.testing.assert_array_equal(run.samples["sample"], np.arange(len(run.samples)))  # no gap
+
+
+def test_fault_persistent_read_timeout_fails(config, tmp_path):
+    result, run = record(config, tmp_path, read_timeout_at_s=5.0, read_timeouts=10)
+    assert result.status == "failed" and "ReadTimeout" in result.reason
+    assert run.meta["counters"]["read_timeouts"] == config.daq.read_retries + 1
+    assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
+
+
+def test_fault_overflow_leaves_a_flagged_gap(config, tmp_path):
+    # a 30 s stall of the reader against a 10 s buffer: the 300 samples are lost
+    c = config.replace(sim={"buffer_s": 10.0})
+    result, run = record(c, tmp_path, stall_at_s=4.0, stall_s=30.0)
+    assert result.status == "complete"
+    gaps = run.meta["counters"]["gaps"]
+    assert len(gaps) == 1 and gaps[0]["lost_samples"] == 300 and gaps[0]["after_sample"] == 39
+    s = run.samples
+    jump = np.flatnonzero(np.diff(s["sample"]) != 1)
+    assert list(jump) == [39] and s["sample"].iloc[40] == 340
+    assert s["flags"].iloc[40] == "gap" and s["time_s"].iloc[40] == pytest.approx(34.0)
+
+
+def test_fault_ao_write_failure(config, tmp_path):
+    result, run = record(config, tmp_path, ao_fail_at_s=1.0)
+    assert result.status == "failed" and "AOWriteFailed" in result.reason
+    cmd = run.commands
+    assert not cmd.loc[cmd.purpose == "vent", "ok"].iloc[1]  # the tare's vent, at 0 s? no: 2 s
+    assert cmd["purpose"].iloc[-1] == "vent" and cmd["ok"].iloc[-1]  # still vented at the end
+
+
+class _Interrupting(SimBackend):
+    """A sim whose read is interrupted (as a second Ctrl-C would) after ``after`` samples."""
+
+    def __init__(self, config, after):
+        super().__init__(config)
+        self.after = after
+
+    def read(self, n_samples, timeout_s):
+        if self._index >= self.after:
+            raise KeyboardInterrupt
+        return super().read(n_samples, timeout_s)
+
+
+def test_second_ctrl_c_vents_at_once(config, tmp_path):
+    result = BenchRun(config, _Interrupting(config, 45), tmp_path, handle_sigint=False).execute()
+    run = load_run(result.path)
+    assert result.status == "aborted" and "second Ctrl-C" in result.reason
+    assert len(run.samples) == 45
+    assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
+
+
+def test_first_ctrl_c_stops_at_the_next_block(config, tmp_path):
+    backend = SimBackend(config)
+    run = BenchRun(config, backend, tmp_path, handle_sigint=False)
+    original = backend.read
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:
+            run._on_sigint(None, None)  # what the SIGINT handler does
+        return block
+
+    backend.read = read
+    result = run.execute()
+    loaded = load_run(result.path)
+    assert result.status == "aborted" and "Ctrl-C" in result.reason
+    assert loaded.samples["sample"].iloc[-1] == 30  # the block in hand is kept, no more
+    assert loaded.commands["purpose"].iloc[-1] == "vent"
+    assert backend.commands[-1][1] == 0.0  # the device's last command is the vent
+    assert loaded.meta["stop_to_vent_s"] < 0.05  # no waiting in between on the virtual clock
+
+
+def test_unexpected_error_is_recorded_and_raised(config, tmp_path):
+    backend = SimBackend(config)
+    backend.read = lambda n, timeout: (_ for _ in ()).throw(ZeroDivisionError("bug"))
+    with pytest.raises(ZeroDivisionError):
+        BenchRun(config, backend, tmp_path, handle_sigint=False).execute()
+    (folder,) = tmp_path.iterdir()
+    run = load_run(folder)
+    assert run.status == "failed" and "ZeroDivisionError: bug" in run.reason
+    assert backend.commands[-1][1] == 0.0
+
+
+def test_manual_without_operator_is_refused(config, tmp_path):
+    c = config.replace(regulator={"kind": "manual"})
+    with pytest.raises(ValueError, match="needs an operator"):
+        BenchRun(c, SimBackend(c), tmp_path)
+
+
+def test_read_timeout_type_is_a_bench_error():
+    from bench.backend import BenchError
+
+    assert issubclass(ReadTimeout, BenchError)
+    assert LSB_V > 0

@@ -1,0 +1,135 @@
+"""bench.sim: the simulated bench's physics, measured against its own definitions."""
+
+import math
+
+import numpy as np
+import pytest
+
+from bench.sim import LSB_V, SimBackend, SimMuscleBench, quantize_volts, static_force_table
+from fem.models import make_model
+
+
+def quiet(config, **sim):
+    """The config with the named sim settings changed (noise, hysteresis, creep off by default)."""
+    settings = {"noise_V": 0.0, "monitor_noise_V": 0.0, "hysteresis_fraction": 0.0,
+                "creep_fraction": 0.0, "loadcell_offset_V": 0.0, **sim}
+    return config.replace(sim=settings)
+
+
+def run_for(bench, seconds):
+    return np.array([bench.step() for _ in range(int(round(seconds / bench.dt)))])
+
+
+def test_quantization_and_rails():
+    assert LSB_V == pytest.approx(1.2207e-3, rel=1e-4)  # USB-6001: 20 V / 2^14
+    for v in (0.0123456, -3.3333, 7.77777):
+        q = quantize_volts(v)
+        assert abs(q - v) <= LSB_V / 2 + 1e-12
+        assert q / LSB_V == pytest.approx(round(q / LSB_V), abs=1e-9)
+    assert quantize_volts(25.0) == pytest.approx(10.0 - LSB_V)
+    assert quantize_volts(-25.0) == -10.0
+
+
+def test_force_table_is_the_registry_model(config):
+    p, f = static_force_table(config)
+    m = config.muscle
+    expected = make_model(config.sim.model, L0_mm=m.L0_mm).predict(2.0, m.D0_mm, m.t0_mm, m.eps)
+    assert np.interp(2.0, p, f) == pytest.approx(float(expected.force_N), rel=1e-3)
+
+
+def test_regulator_first_order_lag(config):
+    # A 0.5 bar step with a slew limit that does not bind: after one time constant the pressure
+    # has covered 1 - 1/e of the step (the discrete update is the exact exponential).
+    c = quiet(config, regulator_tau_s=0.5, regulator_slew_bar_per_s=100.0)
+    bench = SimMuscleBench(c)
+    bench.set_command_volts(c.regulator.command_volts(0.5))
+    run_for(bench, 0.5)
+    assert bench.pressure_bar == pytest.approx(0.5 * (1 - math.exp(-1)), rel=1e-9)
+
+
+def test_regulator_slew_limit_and_monitor(config):
+    c = quiet(config, regulator_tau_s=0.1, regulator_slew_bar_per_s=1.0)
+    bench = SimMuscleBench(c)
+    bench.set_command_volts(c.regulator.command_volts(2.5))
+    volts = run_for(bench, 1.0)
+    assert bench.pressure_bar == pytest.approx(1.0, abs=1e-9)  # 1 bar/s for 1 s
+    # monitor: 1 V at 0 bar to 5 V at 4 bar full scale, quantized
+    assert volts[-1, 1] == pytest.approx(1.0 + 4.0 * 1.0 / 4.0, abs=LSB_V)
+
+
+def test_static_force_without_hysteresis_or_creep(config):
+    c = quiet(config)
+    bench = SimMuscleBench(c)
+    bench.set_command_volts(c.regulator.command_volts(1.5))
+    volts = run_for(bench, 10.0)
+    expected = np.interp(1.5, bench.table_p, bench.table_F)
+    # one LSB of force resolution: 1.22 mV x 196 N/V = 0.24 N
+    assert volts[-1, 0] * c.loadcell.sensitivity_N_per_V == pytest.approx(
+        expected, abs=LSB_V * c.loadcell.sensitivity_N_per_V)
+
+
+def test_hysteresis_loop_width(config):
+    # Play operator of half-width h: going up the force is (1 - h) F, coming down (1 + h) F.
+    h = 0.03
+    c = quiet(config, hysteresis_fraction=h)
+    bench = SimMuscleBench(c)
+    reached = []
+    for target in (1.0, 2.5, 1.0):
+        bench.set_command_volts(c.regulator.command_volts(target))
+        run_for(bench, 10.0)
+        reached.append(bench.hysteretic_N)
+    static = np.interp(1.0, bench.table_p, bench.table_F)
+    assert reached[0] == pytest.approx((1 - h) * static, rel=1e-6)
+    assert reached[2] == pytest.approx((1 + h) * static, rel=1e-6)
+
+
+def test_creep_relaxes_by_its_fraction(config):
+    c = quiet(config, creep_fraction=0.02, creep_tau_s=30.0)
+    bench = SimMuscleBench(c)
+    bench.set_command_volts(c.regulator.command_volts(2.0))
+    run_for(bench, 300.0)  # ten time constants: fully relaxed to 1e-4
+    static = np.interp(2.0, bench.table_p, bench.table_F)
+    assert bench.hysteretic_N - bench.relaxed_N == pytest.approx(0.98 * static, rel=1e-3)
+
+
+def test_noise_level_and_seed(config):
+    c = config.replace(sim={"noise_V": 0.002, "loadcell_offset_V": 0.015})
+    a = run_for(SimMuscleBench(c), 200.0)[:, 0]
+    b = run_for(SimMuscleBench(c), 200.0)[:, 0]
+    other = run_for(SimMuscleBench(c.replace(sim={"seed": 1})), 200.0)[:, 0]
+    np.testing.assert_array_equal(a, b)
+    assert not np.array_equal(a, other)
+    # 2000 samples: the sample std is within 5 % of sigma with > 99 % probability; the
+    # quantization adds LSB^2/12 in variance (0.35 mV rms), combined below.
+    sigma = math.hypot(0.002, LSB_V / math.sqrt(12))
+    assert a.std() == pytest.approx(sigma, rel=0.05)
+    assert a.mean() == pytest.approx(0.015, abs=3 * sigma / math.sqrt(a.size))
+
+
+def test_backend_reads_blocks_with_indices(config):
+    sim = SimBackend(config)
+    info = sim.open()
+    assert info.simulated and info.channels["ai"] == ["ai0", "ai1"]
+    sim.start()
+    first, second = sim.read(3, 1.0), sim.read(2, 1.0)
+    assert (first.first_index, second.first_index) == (0, 3)
+    assert first.volts.shape == (3, 2)
+    sim.close()
+    assert sim.commands[0] == (0, 0.0) and sim.commands[-1] == (5, 0.0)  # vent at open and close
+
+
+def test_real_clock_paces_reads(config):
+    import time
+
+    sim = SimBackend(config, clock="real")
+    sim.open()
+    sim.start()
+    start = time.monotonic()
+    sim.read(3, 2.0)
+    # 3 samples at 10 Hz end at 0.3 s; the sleep is never shorter, scheduling may add a little
+    assert 0.29 <= time.monotonic() - start < 0.6
+
+
+def test_unknown_clock_is_refused(config):
+    with pytest.raises(ValueError, match="clock='wall' is invalid"):
+        SimBackend(config, clock="wall")
