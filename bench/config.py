@@ -268,7 +268,7 @@ class BenchConfig:
 
     def replace(self, **sections) -> BenchConfig:
         """A copy with some settings changed: ``replace(muscle={"eps": 0.1})``."""
-        changes = {name: dataclasses.replace(getattr(self, name), **values)
+        changes = {name: _replace(getattr(self, name), values)
                    for name, values in sections.items()}
         overrides = {**self.overrides, **{f"{name}.{key}": value for name, values in
                                           sections.items() for key, value in values.items()}}
@@ -282,6 +282,12 @@ class BenchConfig:
         return {f.name: dataclasses.asdict(getattr(self, f.name))
                 for f in dataclasses.fields(self)
                 if f.name not in ("source", "text", "overrides")}
+
+
+def _replace(section, values: dict[str, Any]):
+    nested = {k: _replace(getattr(section, k), v) for k, v in values.items()
+              if isinstance(v, dict) and dataclasses.is_dataclass(getattr(section, k))}
+    return dataclasses.replace(section, **{**values, **nested})
 
 
 SECTIONS = {"muscle": Muscle, "daq": Daq, "loadcell": LoadCell, "regulator": Regulator,

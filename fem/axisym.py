@@ -232,6 +232,7 @@ class HalfMuscle:
         y = self.rest_state()
         [(x, report)] = load_path(free, np.append(y[:-1], 0.0), 0.0, [U_mm],
                                   check=lambda x, U: self.inverted(np.append(x[:-1], U)),
+                                  label=lambda U: f"cap displacement {U:.3g} mm",
                                   **self._newton_options())
         if x is None:
             return None, np.nan, report
@@ -249,7 +250,7 @@ class HalfMuscle:
 
         path = load_path(held, y[:-1], P_start_MPa, pressures_MPa,
                          check=lambda x, P: self.inverted(np.append(x, U)),
-                         **self._newton_options())
+                         label=lambda P: f"{P / BAR_TO_MPA:.4g} bar", **self._newton_options())
         return [(None if x is None else np.append(x, U), report) for x, report in path]
 
     def cavity_volume(self, y) -> float:

@@ -68,14 +68,16 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
 
 
 def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks: int = 6,
-              grow: float = 1.5, easy_iterations: int = 4, check=None, **newton_options):
+              grow: float = 1.5, easy_iterations: int = 4, check=None,
+              label=lambda t: f"t={t:.4g}", **newton_options):
     """Follow the equilibrium path ``fun(x, t) = 0`` from ``(x0, t0)`` through ``targets``.
 
     The span from ``t0`` to the last target is first cut into ``increments`` steps (steps also
     stop at every target); a step that fails is halved, one that took at most
     ``easy_iterations`` lets the next grow by ``grow``. A linear (secant) predictor starts each
     step from the last two converged states. After ``max_cutbacks`` halvings on the way to one
-    target the target and all later ones are reported not converged.
+    target the target and all later ones are reported not converged; ``label(t)`` names the
+    load where it failed in the reason.
 
     Returns a list with one ``(x or None, NewtonReport)`` per target, in order.
     """
@@ -105,7 +107,7 @@ def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks:
             dt = abs(step) / 2.0
             if report.cutbacks > max_cutbacks:
                 report.converged = False
-                report.reason = f"{rep.reason} at t={t_new:.4g} after {max_cutbacks} cut-backs"
+                report.reason = f"{rep.reason} at {label(t_new)} after {max_cutbacks} cut-backs"
                 break
         if not report.converged:
             out.append((None, report))

@@ -166,3 +166,15 @@ def test_braid_goes_slack_at_the_cap_at_the_threshold_only():
     assert half.compression(y).startswith("fibre compression (braid tension -0.0")
     [(y2, _)] = half.held_path(y, threshold_MPa, [2.5 * BAR_TO_MPA])
     assert half.tension(y2).min() > 0 and half.compression(y2) == ""
+
+
+def test_inversion_near_the_lock_is_reported_with_iterations_and_cutbacks():
+    # Right at the braid lock (D0 30, t0 2, eps 30 %: P* = 19 bar on coarse and medium) the
+    # fine mesh's small cap-corner elements turn inside out before the cap gets to -eps L0/2.
+    # The one fine-mesh case of the suite (about 5 s): the stability table's inversion row.
+    pred = AxisymmetricFE(theta0_deg=32.109, mesh="fine").predict([0.0, 1.0], 30.0, 2.0, 0.3)
+    assert not pred.converged.any() and not pred.valid.any()
+    assert np.isnan(pred.force_N).all()
+    assert pred.extras["failure"][0] == ("threshold search failed: element inversion (J <= 0) "
+                                         "at cap displacement -42.3 mm after 6 cut-backs")
+    assert pred.extras["cutbacks"][0] == 7 and pred.extras["iterations"][0] > 0

@@ -1,0 +1,197 @@
+"""The NI backend through nidaqmx's real Python code, with the driver layer faked.
+
+As nidaqmx's own unit tests do, ``nidaqmx.utils._select_interpreter`` is patched to return an
+autospec of ``nidaqmx._base_interpreter.BaseInterpreter`` (fixture ``fake_driver`` in
+conftest.py), so every call nidaqmx would make into the C driver is recorded and can be asserted.
+Run these alone with ``pytest -m mocked_hardware``.
+"""
+
+import inspect
+from importlib.metadata import version
+
+import pytest
+from nidaqmx.constants import AcquisitionType, Edge, TerminalConfiguration, VoltageUnits
+from nidaqmx.errors import DaqError, DaqNotFoundError, DaqReadError, DaqWriteError
+
+from bench.backend import (AOWriteFailed, BufferOverflow, DaqDisconnected, DeviceReserved,
+                           DriverMissing, ReadTimeout)
+from bench.ni import NIBackend
+from bench.run import acquire
+from bench.storage import load_run
+
+pytestmark = pytest.mark.mocked_hardware
+
+AI, AO = "handle-mkm_ai", "handle-mkm_ao"
+
+
+def calls(driver, name):
+    return [c for c in driver.interpreter.mock_calls if c[0] == name]
+
+
+def test_tasks_channels_and_clock(config, fake_driver):
+    backend = NIBackend(config)
+    info = backend.open()
+    it = fake_driver.interpreter
+    # one AI task with both inputs, differential, +-10 V: never the driver defaults
+    assert [c.args for c in calls(fake_driver, "create_ai_voltage_chan")] == [
+        (AI, f"Dev1/{ch}", "", TerminalConfiguration.DIFF.value, -10.0, 10.0,
+         VoltageUnits.VOLTS.value, "") for ch in ("ai0", "ai1")]
+    # hardware clock, 10 Hz, continuous, 10 minutes of buffer (6000 samples)
+    it.cfg_samp_clk_timing.assert_called_once_with(
+        AI, 10.0, "", Edge.RISING.value, AcquisitionType.CONTINUOUS.value, 6000)
+    it.set_buffer_attribute_uint32.assert_called_once_with(AI, 0x186C, 6000)  # input_buf_size
+    it.create_ao_voltage_chan.assert_called_once_with(AO, "Dev1/ao0", "", 0.0, 10.0,
+                                                      VoltageUnits.VOLTS.value, "")
+    # vented at open
+    assert calls(fake_driver, "write_analog_scalar_f64")[0].args == (AO, True, 1.0, 0.0)
+    # read back: actual rate, product type, serial number
+    assert info.sample_rate_hz == 10.0 and info.product_type == "USB-6001"
+    assert info.serial_number == "1F2E3D4" and not info.simulated
+    backend.close()
+
+
+def test_actual_clock_rate_is_recorded(config, fake_driver):
+    fake_driver.interpreter.get_timing_attribute_double.return_value = 10.000016
+    info = NIBackend(config).open()
+    assert info.sample_rate_hz == 10.000016
+
+
+def test_terminal_config_is_a_setting(config, fake_driver):
+    NIBackend(config.replace(daq={"terminal_config": "rse"})).open()
+    terminal = {c.args[3] for c in calls(fake_driver, "create_ai_voltage_chan")}
+    assert terminal == {TerminalConfiguration.RSE.value}
+
+
+def test_manual_regulator_has_no_ao(config, fake_driver):
+    c = config.replace(regulator={"kind": "manual"})
+    fake_driver.n_channels = 1
+    NIBackend(c).open()
+    assert [c.args[1] for c in calls(fake_driver, "create_ai_voltage_chan")] == ["Dev1/ai0"]
+    assert not calls(fake_driver, "create_ao_voltage_chan")
+
+
+def test_whole_run_writes_commands_and_vents_before_clearing(config, fake_driver, tmp_path):
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.status == "complete", result.reason
+    run = load_run(result.path)
+    assert run.meta["hardware"]["backend"] == "ni" and run.meta["hardware"]["simulated"] is False
+    writes = [c.args[3] for c in calls(fake_driver, "write_analog_scalar_f64")]
+    # 0.5, 1.0, 0.5 bar over a 4 bar / 10 V regulator; vents (0 V) around them
+    assert [w for w in writes if w > 0] == pytest.approx([1.25, 2.5, 1.25])
+    assert writes[-1] == 0.0
+    names = [c[0] for c in fake_driver.interpreter.mock_calls]
+    last_write = max(i for i, n in enumerate(names) if n == "write_analog_scalar_f64")
+    clears = [i for i, n in enumerate(names) if n == "clear_task"]
+    assert len(clears) == 2 and last_write < min(clears)
+    reads = calls(fake_driver, "read_analog_f64")
+    assert all(c.args[1] == 1 and c.args[2] == 2.0 for c in reads)  # 1-sample blocks, 2 s
+    assert len(reads) == len(run.samples)
+    fake_driver.interpreter.start_task.assert_called_once_with(AI)
+
+
+@pytest.mark.parametrize("code, error", [
+    (-200279, BufferOverflow), (-200284, ReadTimeout), (-50405, DaqDisconnected),
+    (-201003, DaqDisconnected), (-200324, DaqDisconnected), (-50103, DeviceReserved),
+    (-200022, DeviceReserved),
+])
+def test_read_error_codes_are_mapped(config, fake_driver, code, error):
+    backend = NIBackend(config)
+    backend.open()
+    backend.start()
+    fake_driver.interpreter.read_analog_f64.side_effect = DaqReadError("driver says no", code, 0)
+    with pytest.raises(error, match=f"NI-DAQmx error {code}: driver says no"):
+        backend.read(1, 2.0)
+
+
+def test_ao_write_error_is_mapped(config, fake_driver):
+    backend = NIBackend(config)
+    backend.open()
+    fake_driver.interpreter.write_analog_scalar_f64.side_effect = DaqWriteError("bad", -200000, 0)
+    with pytest.raises(AOWriteFailed):
+        backend.write_command(1.0)
+
+
+def test_reserved_device_at_open(config, fake_driver):
+    fake_driver.interpreter.create_ai_voltage_chan.side_effect = DaqError("in use", -50103)
+    backend = NIBackend(config)
+    with pytest.raises(DeviceReserved):
+        backend.open()
+    fake_driver.interpreter.clear_task.assert_called_once_with(AI)  # nothing left reserved
+
+
+def test_driver_missing_is_one_clear_message(config, fake_driver):
+    fake_driver.interpreter.create_task.side_effect = DaqNotFoundError("no lib")
+    with pytest.raises(DriverMissing, match="install NI-DAQmx .* --backend sim"):
+        NIBackend(config).open()
+
+
+def test_disconnect_mid_run_vents_then_clears(config, fake_driver, tmp_path):
+    reads = {"n": 0}
+    normal = fake_driver.read
+
+    def read(*args):
+        reads["n"] += 1
+        if reads["n"] > 30:
+            raise DaqReadError("USB transfer aborted", -50405, 0)
+        return normal(*args)
+
+    fake_driver.interpreter.read_analog_f64.side_effect = read
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.status == "failed" and "DaqDisconnected" in result.reason
+    assert len(load_run(result.path).samples) == 30
+    names = [c[0] for c in fake_driver.interpreter.mock_calls]
+    first_clear = names.index("clear_task")
+    assert names[:first_clear][::-1].index("write_analog_scalar_f64") < 3  # vent right before
+    assert fake_driver.interpreter.write_analog_scalar_f64.call_args.args[3] == 0.0
+
+
+def test_overflow_restarts_the_task(config, fake_driver, tmp_path):
+    reads = {"n": 0}
+    normal = fake_driver.read
+
+    def read(*args):
+        reads["n"] += 1
+        if reads["n"] == 25:
+            raise DaqReadError("samples overwritten", -200279, 0)
+        return normal(*args)
+
+    fake_driver.interpreter.read_analog_f64.side_effect = read
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.status == "complete"
+    run = load_run(result.path)
+    assert len(run.meta["counters"]["gaps"]) == 1
+    assert (run.samples["flags"] == "gap").sum() == 1
+    assert fake_driver.interpreter.stop_task.call_count == 1
+    assert fake_driver.interpreter.start_task.call_count == 2
+
+
+# The private hooks below were checked against nidaqmx 1.7.0; pyproject pins nidaqmx>=1.0,<2.
+CHECKED_HOOKS = {
+    "create_task": ["session_name"],
+    "create_ai_voltage_chan": ["task", "physical_channel", "name_to_assign_to_channel",
+                               "terminal_config", "min_val", "max_val", "units",
+                               "custom_scale_name"],
+    "create_ao_voltage_chan": ["task", "physical_channel", "name_to_assign_to_channel",
+                               "min_val", "max_val", "units", "custom_scale_name"],
+    "cfg_samp_clk_timing": ["task", "rate", "source", "active_edge", "sample_mode",
+                            "samps_per_chan"],
+    "read_analog_f64": ["task", "num_samps_per_chan", "timeout", "fill_mode", "read_array"],
+    "write_analog_scalar_f64": ["task", "auto_start", "timeout", "value"],
+    "set_buffer_attribute_uint32": ["task", "attribute", "value"],
+    "start_task": ["task"], "stop_task": ["task"], "clear_task": ["task"],
+}
+
+
+def test_canary_nidaqmx_private_hooks():
+    """Fails loudly if nidaqmx moves the hooks the mocked-hardware tests stand on."""
+    import nidaqmx.utils
+    from nidaqmx._base_interpreter import BaseInterpreter
+    from nidaqmx.task import Task
+
+    major, minor = (int(x) for x in version("nidaqmx").split(".")[:2])
+    assert (1, 0) <= (major, minor) < (2, 0), "nidaqmx outside the range checked (>=1.0,<2)"
+    assert list(inspect.signature(nidaqmx.utils._select_interpreter).parameters) == [
+        "grpc_options", "interpreter"]
+    assert "utils._select_interpreter(" in inspect.getsource(Task.__init__)
+    for name, params in CHECKED_HOOKS.items():
+        assert list(inspect.signature(getattr(BaseInterpreter, name)).parameters)[1:] == params
