@@ -38,7 +38,8 @@ class ReadTimeout(BenchError):
 class BufferOverflow(BenchError):
     """The reader fell behind and the driver overwrote unread samples: data were lost.
 
-    ``lost_samples`` is the number of samples per channel lost, when the backend knows it.
+    ``lost_samples`` is the number of samples per input lost (everything unread: restarting the
+    task discards the buffer), when the backend knows it.
     """
 
     def __init__(self, message: str, lost_samples: int | None = None):

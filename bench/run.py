@@ -20,6 +20,7 @@ import math
 import os
 import signal
 import socket
+import sys
 import threading
 import time
 from dataclasses import dataclass
@@ -136,6 +137,8 @@ class BenchRun:
         self.counters = {"samples": 0, "read_timeouts": 0, "gaps": [], "clipped_samples": 0}
         self._pending_flags: list[str] = []
         self._bar = None
+        self._shown_at = 0.0
+        self._steps_done = 0
         self._plot = None
         self.writer: RunWriter | None = None
         self.meta: dict = {}
@@ -161,6 +164,8 @@ class BenchRun:
         except BaseException as exc:
             status, reason, error = "failed", f"{type(exc).__name__}: {exc}", exc
         finally:
+            if old_handler is not None:  # a further Ctrl-C must not cut the vent or the record
+                signal.signal(signal.SIGINT, signal.SIG_IGN)
             reason = self.shutdown(status, reason)
             if old_handler is not None:
                 signal.signal(signal.SIGINT, old_handler)
@@ -292,12 +297,8 @@ class BenchRun:
             "n": int(hold.sum()), "settled": bool(settled), "settle_s": float(settle_s),
             "start_s": start_s, "end_s": start_s + float(t_arr[-1]),
         })
+        self._steps_done += 1
         if self._bar is not None:
-            left = len(self.steps) - step.step - 1
-            self._bar.set_postfix_str(
-                f"set {step.set_pressure_bar:.2f} bar, measured {np.nanmean(p_arr[hold]):.2f} "
-                f"bar, {f_arr[hold].mean():.1f} N, ~{left * (st.min_dwell_s + st.hold_s):.0f}+ s "
-                "left", refresh=False)
             self._bar.update(1)
 
     def _acquire_for(self, duration_s: float, phase: str, step: int, set_bar: float,
@@ -356,6 +357,8 @@ class BenchRun:
         self.counters["samples"] += len(rows)
         if self._plot is not None and rows:
             self._plot.push(rows[-1][1], rows[-1][6], rows[-1][9])
+        if self._bar is not None and rows and time.monotonic() - self._shown_at > 0.25:
+            self._show_progress(rows[-1])
         if interlock is not None:
             self._command(0.0, "interlock vent")
             raise _Stop("aborted", f"force interlock: {interlock:.1f} N reached the limit "
@@ -364,6 +367,14 @@ class BenchRun:
         if self.stop_requested_at is not None:
             raise _Stop("aborted", "stopped by Ctrl-C at a safe point; vented")
         return rows
+
+    def _show_progress(self, row: tuple) -> None:
+        """Set and measured pressure, current force, and a lower bound of the time left."""
+        st = self.config.settle
+        left_s = (len(self.steps) - self._steps_done) * (st.min_dwell_s + st.hold_s)
+        self._bar.set_postfix_str(f"{row[3]} {row[4]:.2f} bar, measured {row[6]:.2f} bar, "
+                                  f"{row[9]:.1f} N, >= {left_s / 60:.1f} min left")
+        self._shown_at = time.monotonic()
 
     # commands --------------------------------------------------------------------------------
 
@@ -390,6 +401,7 @@ class BenchRun:
             if purpose.endswith("vent") and self.stop_requested_at is not None and \
                     "stop_to_vent_s" not in self.meta:
                 self.meta["stop_to_vent_s"] = time.monotonic() - self.stop_requested_at
+                self.meta["vented_at_unix_s"] = time.time()
         finally:
             if self.writer is not None:
                 self.writer.append_command((t_s, self.next_index, clamped, volts, ok, purpose))
@@ -398,7 +410,7 @@ class BenchRun:
         if self.stop_requested_at is None:
             self.stop_requested_at = time.monotonic()
             print("\nmkm: stopping at the next safe point (Ctrl-C again to vent now)",
-                  flush=True)
+                  file=sys.stderr, flush=True)
             return
         raise KeyboardInterrupt
 

@@ -20,7 +20,8 @@ the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / ra
   and quantised to the USB-6001's 14 bits over +-10 V (1 LSB = 1.22 mV).
 
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
-force gives zero: the braid goes slack and a muscle cannot push. The clock is ``virtual`` (reads
+force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
+muscle cannot push. The clock is ``virtual`` (reads
 return at once, a one-hour run takes seconds) or ``real`` (reads wait for the sample times).
 Faults from ``[sim.faults]`` fire at sample time: disconnect, read timeouts, a reader stall that
 overflows the buffer, an AO write failure.
@@ -107,7 +108,8 @@ class SimMuscleBench:
         h = s.hysteresis_fraction
         self.hysteretic_N = min(max(self.hysteretic_N, static * (1 - h)), static * (1 + h))
         self.relaxed_N += (s.creep_fraction * self.hysteretic_N - self.relaxed_N) * self.relax
-        force = self.hysteretic_N - self.relaxed_N + self.external_force_N
+        # a slack muscle (force relaxing below zero after a pressure drop) cannot push
+        force = max(self.hysteretic_N - self.relaxed_N, 0.0) + self.external_force_N
         cell_V = (force / cell.sensitivity_N_per_V + s.loadcell_offset_V
                   + s.noise_V * self._normal())
         span = r.monitor_V_at_full_scale - r.monitor_V_at_zero
@@ -190,7 +192,7 @@ class SimBackend:
                 self._lost = stalled
                 raise BufferOverflow(f"simulated reader stall of {faults.stall_s:g} s overflowed "
                                      f"the {self.buffer_samples}-sample buffer",
-                                     lost_samples=stalled - self.buffer_samples)
+                                     lost_samples=stalled)
         if self.clock == "real":
             self._wait_for(self._index + n_samples, timeout_s)
         volts = np.array([self.bench.step() for _ in range(n_samples)])
@@ -212,7 +214,7 @@ class SimBackend:
             self._lost = behind
             raise BufferOverflow(f"reader fell {behind} samples behind, more than the "
                                  f"{self.buffer_samples}-sample buffer",
-                                 lost_samples=behind - self.buffer_samples)
+                                 lost_samples=behind)
         wait = end_index / self.rate_hz - elapsed
         if wait > timeout_s:
             time.sleep(timeout_s)
@@ -221,8 +223,8 @@ class SimBackend:
             time.sleep(wait)
 
     def recover(self) -> int:
-        # The driver discards the buffer on restart: everything since the stall is gone, while
-        # the physics kept running.
+        # Restarting the task discards the overwritten buffer: every sample since the reader
+        # stalled is lost (``lost_samples``), while the physics kept running.
         for _ in range(self._lost):
             self.bench.step()
         self._index += self._lost

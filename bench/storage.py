@@ -54,6 +54,7 @@ def write_json_atomic(path: Path, data: dict[str, Any]) -> None:
     """Write ``data`` so that ``path`` always holds either the old or the new complete file."""
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     try:
+        os.chmod(tmp, 0o644)  # mkstemp makes it private; a run record is for everyone to read
         with os.fdopen(fd, "w", encoding="utf-8") as f:
             json.dump(data, f, indent=2, default=str)
             f.write("\n")

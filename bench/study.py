@@ -84,20 +84,22 @@ def physics_predictors() -> list[Predictor]:
               for m in MESH_LEVELS)]
 
 
-def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR) -> list[Predictor]:
+def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR,
+                         n_jobs: int = 2) -> list[Predictor]:
     """Every surrogate kind trained on ``dataset`` (default: the shipped one): the default kind
     (usable by auto), the other named kinds, the paper's 27 nets and their standardised-force
-    variants."""
+    variants. Kinds not yet in ``cache_dir`` are trained first, ``n_jobs`` at a time."""
     from surrogate.estimators import BEST, kind_names
     from surrogate.train import default_model
     from surrogate.training_data import DEFAULT_DATASET
 
     dataset = dataset or DEFAULT_DATASET
+    kinds = [kind for kind in kind_names(include_nets=True) if kind != BEST]
+    if cache_dir is not None:
+        train_surrogates(kinds, dataset, cache_dir, n_jobs)
     out = [Predictor(f"surrogate-{BEST}", "surrogate", lambda: default_model(dataset),
                      json.dumps({"surrogate": "default"}))]
-    for kind in kind_names(include_nets=True):
-        if kind == BEST:
-            continue
+    for kind in kinds:
         family = ("surrogate" if not kind.startswith("net-") else
                   "paper net, standardised force" if kind.endswith("standardised")
                   else "paper net")
@@ -106,25 +108,53 @@ def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR) -> list[Pred
     return out
 
 
+def _surrogate_dir(kind: str, dataset, cache_dir) -> Path:
+    from surrogate.train import cache_key
+
+    return Path(cache_dir) / "surrogates" / f"{kind}-{cache_key(dataset, kind)}"
+
+
 def trained_surrogate(kind: str, dataset, cache_dir=DEFAULT_CACHE_DIR) -> ForceModel:
     """Surrogate ``kind`` fitted once on the whole ``dataset``, kept under ``cache_dir`` (keyed
     like the default surrogate: dataset hash, sources, calibration, versions). The study times
     predictions, not training, and scores on its own muscles: no split metrics."""
-    from surrogate.io import load_model, save_model
-    from surrogate.train import cache_key, train_surrogate
+    from surrogate.io import load_model
 
-    if cache_dir is None:
-        return train_surrogate(kind, dataset, seeds=())
-    directory = Path(cache_dir) / "surrogates" / f"{kind}-{cache_key(dataset, kind)}"
-    if (directory / "metadata.json").is_file():
-        with warnings.catch_warnings():
-            warnings.simplefilter("error")  # another library version: retrain, never trust
-            try:
-                return load_model(directory)
-            except (Warning, ValueError):
-                pass
-    model = train_surrogate(kind, dataset, seeds=())
-    save_model(model, directory)
+    if cache_dir is not None:
+        directory = _surrogate_dir(kind, dataset, cache_dir)
+        if (directory / "metadata.json").is_file():
+            with warnings.catch_warnings():
+                warnings.simplefilter("error")  # another library version: retrain, never trust
+                try:
+                    return load_model(directory)
+                except (Warning, ValueError):
+                    pass
+        return _train_and_save(kind, dataset, directory)
+    return _train_and_save(kind, dataset, None)
+
+
+def train_surrogates(kinds, dataset, cache_dir, n_jobs: int = 2) -> None:
+    """Train the ``kinds`` missing from ``cache_dir`` in ``n_jobs`` processes (one BLAS thread
+    each: on two shared cores, threaded BLAS in two processes made training several times
+    slower)."""
+    from joblib import Parallel, delayed
+
+    todo = [(kind, _surrogate_dir(kind, dataset, cache_dir)) for kind in kinds]
+    todo = [(kind, d) for kind, d in todo if not (d / "metadata.json").is_file()]
+    Parallel(n_jobs=n_jobs)(delayed(_train_and_save)(kind, dataset, d) for kind, d in todo)
+
+
+def _train_and_save(kind: str, dataset, directory) -> ForceModel:
+    from threadpoolctl import threadpool_limits
+
+    from surrogate.io import save_model
+    from surrogate.train import train_surrogate
+
+    with threadpool_limits(1), warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # ConvergenceWarning of the paper's nets: reproduced
+        model = train_surrogate(kind, dataset, seeds=())
+    if directory is not None:
+        save_model(model, directory)
     return model
 
 
@@ -358,11 +388,16 @@ def run_study(out_dir="reports/study", config: StudyConfig | None = None,
         write_model_errors(errors, timings, Path(table_path), info)
     (out / "provenance.json").write_text(json.dumps(info, indent=1, default=str) + "\n")
     body = (f"<p>Measured on {esc(machine)}; {esc(info['date_utc'])}; study time {elapsed:.0f} s "
-            f"(FE sweeps cached in {esc(cache_dir)}). Reference: {esc(config.reference)}. "
-            f"Error: the paper's Equation 7 over each muscle's sweep, in %.</p>"
-            + table_html(summary.sort_values("seconds_per_point"),
-                         "One row per predictor (speed_accuracy.csv).", digits=4)
-            + "".join(figure_html(path, caption) for path, caption in figures)
+            f"(FE sweeps cached in {esc(cache_dir)}). Reference: {esc(config.reference)}; "
+            f"{len(config.muscles)} study muscles x {len(config.pressures)} pressures. Error: "
+            "the paper's Equation 7 over each muscle's sweep, in %.</p>"
+            f"<p><b>Pareto front</b> (fastest first): {esc(pareto_text(summary))}.</p>"
+            + figure_html(*figures[0])
+            + table_html(readable_summary(summary), "The named predictors and every one on the "
+                         "Pareto front; all of them, the 54 nets included, are in "
+                         "speed_accuracy.csv. Provenance: below.", digits=3)
+            + "<h2>Where methods fail</h2>"
+            + "".join(figure_html(path, caption) for path, caption in figures[1:])
             + (table_html(stability, "Stability per method and muscle (stability_summary.csv)")
                if not stability.empty else "")
             + f"<h2>Provenance</h2><pre>{esc(json.dumps(info, indent=1, default=str))}</pre>")
@@ -370,6 +405,28 @@ def run_study(out_dir="reports/study", config: StudyConfig | None = None,
     path.write_text(html_page("Speed against accuracy, and where methods fail", body),
                     encoding="utf-8")
     return path
+
+
+def pareto_text(summary: pd.DataFrame) -> str:
+    """The front in words: each member with its cost and largest error."""
+    front = summary[summary["pareto"]].sort_values("seconds_per_point")
+    return "; ".join(f"{row.predictor} ({row.seconds_per_point:.2g} s per force, largest "
+                     f"|Err%| {row.max_abs_err_pct:.3g} %)" for row in front.itertuples())
+
+
+def readable_summary(summary: pd.DataFrame) -> pd.DataFrame:
+    """The summary for people: named predictors and the front, plain column names."""
+    nets = summary["family"].str.startswith("paper net")
+    rows = summary[~nets | summary["pareto"]].sort_values("seconds_per_point")
+    return pd.DataFrame({
+        "predictor": rows["predictor"], "family": rows["family"],
+        "s per force": rows["seconds_per_point"].map(lambda v: f"{v:.2g}"),
+        "largest |Err%|": rows["max_abs_err_pct"],
+        "test I-III": rows["max_abs_err_pct_test"],
+        "held-out": rows["max_abs_err_pct_held_out"], "RMSE [N]": rows["rmse_N"],
+        "valid [%]": 100 * rows["valid_share"], "Pareto": rows["pareto"].map({True: "yes",
+                                                                            False: ""}),
+    })
 
 
 def stability_table(cells: pd.DataFrame) -> pd.DataFrame:

@@ -24,7 +24,8 @@ def argtype(parse, *args):
 
 
 def register(subparsers) -> None:
-    fem = subparsers.add_parser("fem", help="physics force models: solve, calibrate, convergence, dataset")
+    fem = subparsers.add_parser(
+        "fem", help="physics force models: solve, calibrate, convergence, dataset")
     fem_sub = fem.add_subparsers(dest="fem_command", required=True, metavar="COMMAND")
 
     solve = fem_sub.add_parser("solve", help="force of one muscle over a pressure sweep (CSV)")

@@ -26,8 +26,9 @@ from sklearn.neural_network import MLPRegressor
 from sklearn.pipeline import Pipeline
 from sklearn.preprocessing import FunctionTransformer, PolynomialFeatures, StandardScaler
 from sklearn.utils.validation import check_is_fitted, validate_data
+from threadpoolctl import threadpool_limits
 
-from surrogate.features import FEATURE_NAMES, default_theta0_deg, physics_features
+from surrogate.features import default_theta0_deg, physics_features
 
 EXP_CLIP = 30.0  # keeps exp() finite while least squares explores; e^30 is far beyond any slope
 
@@ -68,7 +69,10 @@ def fit_threshold_linear(P, Z, y, slope_prior, threshold_prior, degree, alpha):
         d_b = -(A * (active & (raw >= 0.0)) / y_scale)[:, None] * phi  # one-sided at 0
         return np.vstack([np.hstack([d_a, d_b]), np.diag(penalty)])
 
-    result = least_squares(residuals, x0, jac=jacobian, method="trf", max_nfev=2000)
+    # Small dense problems: BLAS threads only spin against each other (100x slower on a busy
+    # machine), so the solve runs on one thread.
+    with threadpool_limits(limits=1):
+        result = least_squares(residuals, x0, jac=jacobian, method="trf", max_nfev=2000)
     return result.x[:n], result.x[n:], powers, result
 
 
@@ -172,7 +176,10 @@ class ThresholdLinearRegressor(RegressorMixin, BaseEstimator):
 
     def predict(self, X):
         check_is_fitted(self)
-        X = validate_data(self, X, reset=False)
+        return self.predict_validated(validate_data(self, X, reset=False))
+
+    def predict_validated(self, X):
+        """:meth:`predict` on a float array the caller has validated (no per-call checks)."""
         A, threshold = self._decompose(X)
         return A * np.maximum(X[:, self.pressure_column] - threshold, 0.0)
 
@@ -220,12 +227,7 @@ def net_kind(layers: int, size: int, activation: str, standardise_response=False
 
 def _features(columns, theta0):
     """Transformer from ``[P, D0, t0, eps]`` to the named physics features (theta0 frozen)."""
-    index = [FEATURE_NAMES.index(c) for c in columns]
-    return FunctionTransformer(_select_features, kw_args={"columns": index, **theta0})
-
-
-def _select_features(X, columns, theta0_deg, thickwall_theta0_deg):
-    return physics_features(X, theta0_deg, thickwall_theta0_deg)[:, columns]
+    return FunctionTransformer(physics_features, kw_args={"columns": tuple(columns), **theta0})
 
 
 GP_FEATURES = ("pressure_bar", "D0_mm", "t0_mm", "eps", "thickwall_force_N")

@@ -37,27 +37,39 @@ def thickwall_threshold_bar(D0_mm, t0_mm, eps, theta0_deg):
     return klute_hannaford_threshold_pressure(D0_mm, t0_mm, eps, theta0_deg)
 
 
-def physics_features(X, theta0_deg: float, thickwall_theta0_deg: float):
-    """Columns ``FEATURE_NAMES`` from ``X = [pressure_bar, D0_mm, t0_mm, eps]`` (n x 4).
+def physics_features(X, columns, theta0_deg: float, thickwall_theta0_deg: float):
+    """The features named in ``columns`` (from ``FEATURE_NAMES``) of ``X = [P, D0, t0, eps]``.
 
     ``theta0_deg`` is used for Equation 2 in the paper's inner-diameter form,
     ``thickwall_theta0_deg`` for the braid slope and the thick-wall threshold (the braid-diameter
     physics it was calibrated with); both are fixed when the estimator is built so that a saved
-    surrogate never changes with a later calibration.
+    surrogate never changes with a later calibration. Only the requested columns are computed:
+    prediction latency is what a surrogate is for.
     """
     X = np.asarray(X, dtype=float)
     if X.ndim != 2 or X.shape[1] != 4:
         raise ValueError(f"X has shape {X.shape}: expected (n, 4) columns "
                          "pressure_bar, D0_mm, t0_mm, eps")
+    unknown = [c for c in columns if c not in FEATURE_NAMES]
+    if unknown:
+        raise ValueError(f"unknown feature {unknown[0]!r}: expected some of "
+                         f"{', '.join(FEATURE_NAMES)}")
     P, D0, t0, eps = X.T
-    slope = braid_slope_N_per_bar(D0, t0, eps, thickwall_theta0_deg)
-    threshold = thickwall_threshold_bar(D0, t0, eps, thickwall_theta0_deg)
-    return np.column_stack([
-        P, D0, t0, eps, (1.0 - eps) ** 2,
-        chou_hannaford(P, D0, eps, theta0_deg),
-        slope, threshold,
-        slope * np.maximum(P - threshold, 0.0),  # the thick-wall force under the isometric lock
-    ])
+    values = {"pressure_bar": P, "D0_mm": D0, "t0_mm": t0, "eps": eps}
+    if "one_minus_eps_sq" in columns:
+        values["one_minus_eps_sq"] = (1.0 - eps) ** 2
+    if "eq2_inner_force_N" in columns:
+        values["eq2_inner_force_N"] = chou_hannaford(P, D0, eps, theta0_deg)
+    if {"braid_slope_N_per_bar", "thickwall_force_N"} & set(columns):
+        values["braid_slope_N_per_bar"] = braid_slope_N_per_bar(D0, t0, eps,
+                                                                thickwall_theta0_deg)
+    if {"thickwall_threshold_bar", "thickwall_force_N"} & set(columns):
+        values["thickwall_threshold_bar"] = thickwall_threshold_bar(D0, t0, eps,
+                                                                    thickwall_theta0_deg)
+    if "thickwall_force_N" in columns:  # the thick-wall force under the isometric lock
+        values["thickwall_force_N"] = values["braid_slope_N_per_bar"] * np.maximum(
+            P - values["thickwall_threshold_bar"], 0.0)
+    return np.column_stack([values[c] for c in columns])
 
 
 def default_theta0_deg() -> dict[str, float]:

@@ -11,6 +11,9 @@ import json
 import warnings
 from pathlib import Path
 
+from sklearn.exceptions import ConvergenceWarning
+from threadpoolctl import threadpool_limits
+
 from fem.interface import provenance
 from surrogate.estimators import BEST, kind_names, make_estimator
 from surrogate.model import SurrogateForceModel
@@ -27,12 +30,21 @@ def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, seeds=SEEDS,
     resolved = BEST if kind == "best" else kind
     data = load_training_data(dataset)
     estimator = make_estimator(resolved, random_state=random_state)
-    splits = [split_scores(estimator, data.X, data.y, seed, cv_folds=0) for seed in seeds]
+    with threadpool_limits(limits=1), warnings.catch_warnings():
+        # ~100 rows: BLAS threads only contend (see estimators.py). A Gaussian process length
+        # scale at its bound means an input it finds irrelevant, a noise level at its bound
+        # noise-free FE data: expected here, not worth a warning per fit.
+        warnings.filterwarnings("ignore", message="The optimal value found for dimension",
+                                category=ConvergenceWarning)
+        # fitrnet, which the nets copy, also stops at its IterationLimit without a warning
+        warnings.filterwarnings("ignore", message="lbfgs failed to converge",
+                                category=ConvergenceWarning)
+        splits = [split_scores(estimator, data.X, data.y, seed, cv_folds=0) for seed in seeds]
+        estimator.fit(data.X, data.y)
     metrics = {"split_seeds": list(seeds),
                "rmse_test_N": summarise([s["rmse_test_N"] for s in splits]) if splits else None,
                "max_abs_test_N": (summarise([s["max_abs_test_N"] for s in splits])
                                   if splits else None)}
-    estimator.fit(data.X, data.y)
     metadata = {"kind_requested": kind, "random_state": random_state,
                 "dataset": data.summary(), "metrics": metrics, "trained": provenance()}
     model = SurrogateForceModel(estimator, data.domain(), resolved, metadata)

@@ -13,8 +13,14 @@ import pytest
 from nidaqmx.constants import AcquisitionType, Edge, TerminalConfiguration, VoltageUnits
 from nidaqmx.errors import DaqError, DaqNotFoundError, DaqReadError, DaqWriteError
 
-from bench.backend import (AOWriteFailed, BufferOverflow, DaqDisconnected, DeviceReserved,
-                           DriverMissing, ReadTimeout)
+from bench.backend import (
+    AOWriteFailed,
+    BufferOverflow,
+    DaqDisconnected,
+    DeviceReserved,
+    DriverMissing,
+    ReadTimeout,
+)
 from bench.ni import NIBackend
 from bench.run import acquire
 from bench.storage import load_run

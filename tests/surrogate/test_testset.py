@@ -1,0 +1,72 @@
+import numpy as np
+import pandas as pd
+import pytest
+
+from fem.models import make_model
+from surrogate.testset import (
+    TEST_MUSCLES,
+    build_fe_reference,
+    compare_on_test_muscles,
+    percentage_error,
+    read_fe_reference,
+    run_test,
+)
+
+
+def test_percentage_error_is_equation_7():
+    # (F_num - F_pred) / max(F_num) over the sweep, in %: hand-computed.
+    np.testing.assert_allclose(percentage_error([0.0, 100.0, 200.0], [0.0, 90.0, 210.0]),
+                               [0.0, 5.0, -5.0])
+
+
+def test_paper_muscles_are_the_papers():
+    assert TEST_MUSCLES["I"] == (35.0, 2.5, 0.05)
+    assert TEST_MUSCLES["II"] == (40.0, 3.0, 0.15)
+    assert TEST_MUSCLES["III"] == (45.0, 3.5, 0.20)
+
+
+@pytest.fixture(scope="module")
+def thickwall_reference(tmp_path_factory):
+    path = tmp_path_factory.mktemp("ref") / "fe_test_muscles.csv"
+    build_fe_reference(make_model("thickwall"), path)
+    return path
+
+
+def test_reference_has_provenance_and_every_sweep(thickwall_reference):
+    header = thickwall_reference.read_text().splitlines()[:3]
+    assert header[0].startswith("# what:") and header[1] == '# model: "thickwall"'
+    table = read_fe_reference(thickwall_reference)
+    assert len(table) == 11 * len(TEST_MUSCLES)
+    assert list(table.groupby("muscle", sort=False).size()) == [11] * len(TEST_MUSCLES)
+
+
+def test_model_against_itself_has_zero_error(thickwall_reference, tmp_path):
+    model = make_model("thickwall")
+    points, summary = compare_on_test_muscles(model, read_fe_reference(thickwall_reference))
+    # the CSV keeps 6 significant digits: up to 5e-6 relative per force, 1e-3 % is that bound
+    assert summary["max_abs_err_pct"].max() < 1e-3
+    summary = run_test({"thickwall": model}, tmp_path, thickwall_reference)
+    for name in ("test_muscles.csv", "test_muscles.md", "test_muscles.png"):
+        assert (tmp_path / name).stat().st_size > 0
+    table = (tmp_path / "test_muscles.md").read_text()
+    assert "| paper, 3 x 100 ReLU (its FE) | 6.55 | 7.92 | 9.34 |" in table
+
+
+def test_eq2_error_on_muscle_III_is_what_equation_7_says(thickwall_reference):
+    # Equation 2 has no threshold: it over-predicts the thick-wall force. Check one muscle's
+    # Err% against a direct computation from the two models' forces.
+    reference = read_fe_reference(thickwall_reference)
+    _, summary = compare_on_test_muscles(make_model("eq2"), reference)
+    sweep = reference[reference["muscle"] == "III"]
+    eq2 = make_model("eq2").predict(sweep["pressure_bar"], 45.0, 3.5, 0.2).force_N
+    expected = np.max(np.abs(100 * (sweep["force_N"] - eq2) / sweep["force_N"].max()))
+    got = summary.set_index("muscle").loc["III", "max_abs_err_pct"]
+    assert got == pytest.approx(expected, rel=1e-9)
+
+
+def test_reference_with_failed_points_is_refused(thickwall_reference, tmp_path):
+    table = pd.read_csv(thickwall_reference, comment="#")
+    table.loc[3, "converged"] = False
+    table.to_csv(tmp_path / "bad.csv", index=False)
+    with pytest.raises(ValueError, match="1 unconverged or invalid point"):
+        read_fe_reference(tmp_path / "bad.csv")
