@@ -22,8 +22,26 @@ INVALID_STYLE = {"marker": "x", "color": "0.45", "linestyle": "none", "markersiz
                  "clip_on": False}
 
 
+def distinct_colours(labels) -> dict[str, str]:
+    """One colour per label: the model's own, or the next unused default where two labels of the
+    same model (``eq2``, ``eq2:theta0_deg=50``) would share it."""
+    out: dict[str, str] = {}
+    spare = (f"C{k}" for k in range(4, 100))
+    for i, label in enumerate(labels):
+        c = colour(label, i)
+        while c in out.values():
+            c = next(spare)
+        out[label] = c
+    return out
+
+
 def colour(label: str, index: int = 0) -> str:
-    return MODEL_COLOURS.get(label, MODEL_COLOURS.get(label.split("-")[0], f"C{index % 10}"))
+    """The model's colour in every figure (``axisym:mesh=coarse`` and ``axisym-coarse`` are
+    axisym); unknown labels cycle through matplotlib's defaults."""
+    for key in (label, label.split(":")[0], label.split("-")[0]):
+        if key in MODEL_COLOURS:
+            return MODEL_COLOURS[key]
+    return f"C{index % 10}"
 
 
 def _mark_invalid(ax, pressures) -> None:
@@ -49,8 +67,9 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str) -> Fi
                           markerfacecolor=face, capsize=3, zorder=5,
                           label=f"measured, {direction} sweep (mean ± std)")
     any_invalid = False
-    for i, (model, rows) in enumerate(predictions.groupby("model", sort=False)):
-        c = colour(model, i)
+    colours = distinct_colours(dict.fromkeys(predictions["model"]))
+    for model, rows in predictions.groupby("model", sort=False):
+        c = colours[model]
         curve = rows.drop_duplicates("pressure_bar").sort_values("pressure_bar")
         ax_f.plot(curve["pressure_bar"], curve["force_N"].where(curve["valid"]), "-", color=c,
                   label=model)
@@ -73,8 +92,8 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str) -> Fi
     ax_e.axhline(0.0, color="0.6", linewidth=0.8)
     ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_meas − F_model) / max F_meas [%]",
              title="error against the measurement (Equation 7)")
-    models = list(dict.fromkeys(predictions["model"]))
-    ax_e.legend([Line2D([], [], color=colour(m, i), linewidth=3) for i, m in enumerate(models)]
+    models = list(colours)
+    ax_e.legend([Line2D([], [], color=colours[m], linewidth=3) for m in models]
                 + [Line2D([], [], color="0.3", marker="o", linestyle="-"),
                    Line2D([], [], color="0.3", marker="s", markerfacecolor="white",
                           linestyle="--")],

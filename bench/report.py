@@ -80,7 +80,8 @@ class ModelSpec:
         from fem.models import MODELS, make_model
 
         if self.name not in MODELS:
-            make_model(self.name)  # raises the registry's one-line error
+            raise ValueError(f"unknown model {self.name!r}: expected surrogate[:PATH] or one of "
+                             f"{', '.join(MODELS)}")
         module, cls = MODELS[self.name].split(":")
         accepted = inspect.signature(getattr(import_module(module), cls)).parameters
         params = dict(self.params)
@@ -131,7 +132,7 @@ def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.Dat
         "pressure_bar": np.ravel(prediction.pressure_bar),
         "force_meas_N": steps["force_N_mean"].to_numpy(),
         "force_meas_std_N": steps["force_N_std"].to_numpy(),
-        "force_N": force, "valid": valid,
+        "force_N": force, "valid": valid, "settled": steps["settled"].to_numpy(),
     })
     rows["err_pct"] = equation7_err_pct(rows["force_meas_N"], rows["force_N"], scale)
     for key, value in prediction.extras.items():
@@ -315,6 +316,18 @@ def _run_section(k, run, specs, out, cache_dir, tolerance, prov, summaries, note
         "calibration": flatten(meta.get("calibration", {})),
         "tare": flatten(meta.get("tare", {})),
     }))
+    sim = hardware.get("sim") if hardware.get("simulated") else None
+    if isinstance(sim, dict):
+        head.append(f'<p class="note">Simulated run: the "measured" force is the '
+                    f"{esc(sim.get('model', '?'))} model's, with hysteresis "
+                    f"{100 * float(sim.get('hysteresis_fraction', 0)):g} %, creep "
+                    f"{100 * float(sim.get('creep_fraction', 0)):g} % and load-cell noise "
+                    f"(seed {esc(sim.get('seed'))}): agreement with that model is by "
+                    "construction, not evidence about a real muscle.</p>")
+    unsettled = int((~steps["settled"].astype(bool)).sum()) if len(steps) else 0
+    if unsettled:
+        head.append(f'<p class="note">{unsettled} step(s) did not settle before the timeout: '
+                    "kept, scored and marked settled = false in the CSV.</p>")
     if run.problems:
         head.append('<p class="note">Loader: ' + esc("; ".join(run.problems)) + "</p>")
     head.append("</section>")

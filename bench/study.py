@@ -164,11 +164,13 @@ class StudyConfig:
 
     muscles: tuple = STUDY_MUSCLES
     pressures: tuple = STUDY_PRESSURES
-    predictors: Callable[[], list[Predictor]] = field(
-        default=lambda: physics_predictors() + surrogate_predictors())
+    # called with the cache folder (None: no cache), where the study keeps trained surrogates
+    predictors: Callable[[Path | str | None], list[Predictor]] = field(
+        default=lambda cache_dir: physics_predictors() + surrogate_predictors(
+            cache_dir=cache_dir))
     reference: str = "axisym-fine"
     stability_methods: tuple = ("eq2-inner", "eq2-braid", "thickwall", "axisym-medium",
-                                "surrogate-physics")
+                                "surrogate-physics", "surrogate-mlp-paper")
     stability_muscles: tuple = STABILITY_MUSCLES
     stability_pressures: tuple = STABILITY_PRESSURES
     stability_eps: tuple = STABILITY_EPS
@@ -353,7 +355,7 @@ def run_study(out_dir="reports/study", config: StudyConfig | None = None,
     info = {**provenance(), "machine_name": machine, "reference": config.reference,
             "muscles": [list(m) for m in config.muscles],
             "pressures_bar": list(config.pressures)}
-    predictors = config.predictors()
+    predictors = config.predictors(cache_dir)
     models = {p.label: p.build() for p in predictors}
     errors, timings = measure_errors(config, predictors, models, cache_dir)
     summary = summarise(errors, timings, config.reference)

@@ -19,8 +19,7 @@ def register(subparsers) -> None:
     report.add_argument("--tolerance", default=0.02, type=_fraction,
                         help="tolerance of the auto model choice shown per run, e.g. 2%% "
                         "(default: 2%%)")
-    report.add_argument("--no-cache", action="store_true",
-                        help="recompute FE predictions instead of reading .cache/mkm-report")
+    _cache_arguments(report)
     report.set_defaults(func=_report)
 
     study = subparsers.add_parser(
@@ -29,9 +28,16 @@ def register(subparsers) -> None:
                        "(default: %(default)s)")
     study.add_argument("--table", default=None,
                        help="error table for --model auto (default: fem/model_errors.csv)")
-    study.add_argument("--no-cache", action="store_true",
-                       help="recompute FE predictions instead of reading .cache/mkm-report")
+    _cache_arguments(study)
     study.set_defaults(func=_study)
+
+
+def _cache_arguments(parser) -> None:
+    parser.add_argument("--cache", default=".cache/mkm-report", metavar="DIR",
+                        help="FE predictions (and the study's trained surrogates) kept here, "
+                        "so a second run is fast (default: %(default)s)")
+    parser.add_argument("--no-cache", action="store_true",
+                        help="recompute everything; read and write no cache")
 
 
 def _fraction(text):
@@ -42,9 +48,7 @@ def _fraction(text):
 
 
 def _cache(args):
-    from bench.prediction_cache import DEFAULT_CACHE_DIR
-
-    return None if args.no_cache else DEFAULT_CACHE_DIR
+    return None if args.no_cache else args.cache
 
 
 def _report(args) -> int:

@@ -91,6 +91,8 @@ def default_model(dataset=DEFAULT_DATASET, cache_dir=CACHE_DIR) -> SurrogateForc
     """
     from surrogate.io import load_model, save_model
 
+    if not Path(dataset).is_file():
+        load_training_data(dataset)  # raises the ValueError that says what is missing
     directory = Path(cache_dir) / f"best-{cache_key(dataset)}"
     if (directory / "metadata.json").is_file():
         with warnings.catch_warnings():

@@ -15,7 +15,7 @@ from fem.closed_form import chou_hannaford_eps_max
 from fem.interface import Prediction
 
 
-def _tiny_predictors():
+def _tiny_predictors(cache_dir):
     return [registry_predictor("eq2-inner", "closed form", "eq2", diameter="inner"),
             registry_predictor("thickwall", "closed form", "thickwall"),
             registry_predictor("axisym-coarse", "FE", "axisym", cached=True, mesh="coarse")]
