@@ -33,15 +33,14 @@ def model_version(model: ForceModel) -> str:
 
     The dependencies are the model's module and, transitively, every module of the same package
     it imports (at any depth in the file) or names in a registry of ``"module:Class"`` strings
-    (``fem.models.MODELS``: the ``auto`` model runs the models it names). Package data files
-    (``*.json``, ``*.csv``: calibration, study table) are hashed too: a stale force is worse than
-    a recomputed one.
+    (``fem.models.MODELS``). The package's ``*.json`` files (the calibration) are hashed too: a
+    stale force is worse than a recomputed one.
     """
     modules = _dependencies(type(model).__module__)
     digest = hashlib.sha256(version("mkm-bench").encode())
     paths = {Path(sys.modules[name].__file__) for name in modules}
     for package in {path.parent for path in paths}:
-        paths |= {p for p in package.iterdir() if p.suffix in (".json", ".csv")}
+        paths |= set(package.glob("*.json"))
     for path in sorted(paths):
         digest.update(path.name.encode())
         digest.update(path.read_bytes())

@@ -42,7 +42,11 @@ def register(subparsers) -> None:
 
     test = sub.add_parser("test", help="test muscles I-V against our FE: Table 3, Figure 6")
     test.add_argument("--model", action="append",
-                      help="saved surrogate folder (repeatable; default: the default surrogate)")
+                      help="saved surrogate folder, or default (repeatable; default: default "
+                      "unless --kind is given)")
+    test.add_argument("--kind", action="append",
+                      help="also train this kind on --dataset and test it (repeatable)")
+    _dataset_argument(test)
     test.add_argument("--reference", help="FE reference CSV (default "
                       "data/reference/fe_test_muscles.csv)")
     test.add_argument("--out", default="out/surrogate-test", help="folder (default %(default)s)")
@@ -116,8 +120,12 @@ def _predict(args) -> int:
 
 def _test(args) -> int:
     from surrogate.testset import FE_REFERENCE, run_test
+    from surrogate.train import train_surrogate
 
-    models = {path: _load(path) for path in (args.model or ["default"])}
+    paths = args.model or ([] if args.kind else ["default"])
+    models = {path: _load(path) for path in paths}
+    models.update({kind: train_surrogate(kind, _dataset(args), seeds=())
+                   for kind in args.kind or []})
     summary = run_test(models, args.out, args.reference or FE_REFERENCE)
     print(summary.to_string(index=False, float_format=lambda v: f"{v:.3g}"))
     print(f"wrote {args.out}/test_muscles.csv, test_muscles.md, test_muscles.png",

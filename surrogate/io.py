@@ -86,7 +86,11 @@ def load_model(directory) -> SurrogateForceModel:
     with warnings.catch_warnings():
         # scikit-learn's own InconsistentVersionWarning says the same as ours, less clearly.
         warnings.filterwarnings("ignore", message=".*Trying to unpickle estimator")
-        estimator = joblib.load(estimator_path)
+        try:
+            estimator = joblib.load(estimator_path)
+        except (AttributeError, ImportError, TypeError) as exc:  # code it refers to changed
+            raise ValueError(f"surrogate {str(directory)!r} cannot be loaded by this version of "
+                             f"the code ({exc}): retrain it with `mkm surrogate train`") from None
     domain = Domain(**{k: tuple(v) for k, v in metadata["domain"].items()})
     return SurrogateForceModel(estimator, domain, metadata["kind"], metadata)
 

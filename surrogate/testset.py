@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from fem.interface import ForceModel, provenance
+from fem.interface import ForceModel, provenance, read_prediction_header
 from surrogate.training_data import REPO_ROOT
 from surrogate.validation import rmse
 
@@ -134,7 +134,8 @@ def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE
     summary.to_csv(out_dir / "test_muscles.csv", index=False, float_format="%.6g")
     points.to_csv(out_dir / "test_muscles_points.csv", index=False, float_format="%.6g")
     (out_dir / "test_muscles.md").write_text(markdown_table(summary), encoding="utf-8")
-    plot_test_muscles(points, out_dir / "test_muscles.png")
+    fe_model = read_prediction_header(reference_path).get("model", "FE")
+    plot_test_muscles(points, out_dir / "test_muscles.png", f"FE ({fe_model})")
     return summary
 
 
@@ -143,10 +144,11 @@ def markdown_table(summary: pd.DataFrame) -> str:
     paper = pd.read_csv(PAPER_TABLE3, comment="#").set_index("muscle")["max_abs_err_pct"]
     muscles = list(dict.fromkeys(summary["muscle"]))
     lines = ["| model | " + " | ".join(f"{m} max abs Err%" for m in muscles)
-             + " | RMSE N (worst muscle) | largest abs error N | 33-55 points s |",
+             + " | RMSE N (worst muscle) | largest abs error N | all points, one call, s |",
              "|---|" + "---|" * (len(muscles) + 3)]
     lines.append("| paper, 3 x 100 ReLU (its FE) | " + " | ".join(
-        f"{paper[m]:.2f}" if m in paper else "" for m in muscles) + " | | 60.10 | 0.131 |")
+        f"{paper[m]:.2f}" if m in paper else "" for m in muscles)
+        + " | | 60.10 | 0.131 (33 points) |")
     for model, group in summary.groupby("model", sort=False):
         g = group.set_index("muscle")
         lines.append(f"| {model} | " + " | ".join(f"{g.loc[m, 'max_abs_err_pct']:.2f}"
@@ -156,7 +158,7 @@ def markdown_table(summary: pd.DataFrame) -> str:
     return "\n".join(lines) + "\n"
 
 
-def plot_test_muscles(points: pd.DataFrame, path) -> None:
+def plot_test_muscles(points: pd.DataFrame, path, reference_label: str = "FE") -> None:
     """Figure 6 of the paper: force against pressure per muscle (FE dots, surrogate lines),
     and Err% below."""
     import matplotlib
@@ -171,7 +173,7 @@ def plot_test_muscles(points: pd.DataFrame, path) -> None:
         D0, t0, eps = TEST_MUSCLES[muscle]
         first = points[(points["muscle"] == muscle)]
         fe = first.drop_duplicates("pressure_bar")
-        axes[0, j].plot(fe["pressure_bar"], fe["force_fe_N"], "ko", label="FE (axisym)")
+        axes[0, j].plot(fe["pressure_bar"], fe["force_fe_N"], "ko", label=reference_label)
         for model, group in first.groupby("model", sort=False):
             axes[0, j].plot(group["pressure_bar"], group["force_pred_N"], "-", label=model)
             axes[1, j].plot(group["pressure_bar"], group["err_pct"], ".-", label=model)
