@@ -429,13 +429,17 @@ def _run_on_dask(missing, finished, workers: int | None, scheduler: str | None) 
     caches each result as it arrives, so an interruption loses only the jobs in flight."""
     import logging
 
+    import dask
     from dask.distributed import Client, LocalCluster, as_completed
 
     if scheduler is None:
-        # processes, one thread each; the nanny sets OMP/MKL/OPENBLAS_NUM_THREADS=1 in workers
-        cluster = LocalCluster(n_workers=min(workers, len(missing)), threads_per_worker=1,
-                               processes=True, dashboard_address=None,
-                               silence_logs=logging.ERROR)
+        # Processes, one thread each; the nanny sets OMP/MKL/OPENBLAS_NUM_THREADS=1 in workers.
+        # Its MALLOC_TRIM_THRESHOLD_ makes glibc map and unmap every large temporary array: the
+        # axisym FE ran 30-50 % slower per job with it (benchmarks/bench_dataset.py), so unset.
+        with dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}):
+            cluster = LocalCluster(n_workers=min(workers, len(missing)), threads_per_worker=1,
+                                   processes=True, dashboard_address=None,
+                                   silence_logs=logging.ERROR)
         where = f"{len(cluster.workers)} local Dask workers"
     else:
         cluster = None

@@ -197,8 +197,10 @@ def paper_net(layers: int, size: int, activation: str, standardise_response: boo
     ``Standardize = true`` (inputs only; the response stays in N), Glorot-initialised weights.
     Here: ``MLPRegressor(solver="lbfgs", alpha=0, max_iter=1000)`` after a ``StandardScaler``.
     Differences: scikit-learn minimises half the MSE (same minimiser), initialises biases
-    randomly (fitrnet: zeros), stops at a projected gradient of ``tol`` (set to fitrnet's
-    ``GradientTolerance`` 1e-6) and has no ``LossTolerance``/``StepTolerance``.
+    randomly (fitrnet: zeros) and the logistic layers' weights in a narrower Glorot range,
+    stops at a projected gradient of ``tol`` (set to fitrnet's ``GradientTolerance`` 1e-6) or
+    at SciPy's relative loss change 2.2e-9 (fitrnet: ``LossTolerance`` 1e-6, ``StepTolerance``
+    1e-6); both stop at 1000 iterations, fitrnet silently, scikit-learn with a warning.
     ``standardise_response=True`` also standardises the force (the fix of the tanh and
     sigmoid rows).
     """
