@@ -142,7 +142,8 @@ class AutoModel(ForceModel):
             raise ValueError(f"tolerance={self.tolerance:g} is invalid: expected a fraction in "
                              "(0, 1), for example 0.02 or 2%")
         table = read_model_errors(self.table or MODEL_ERRORS_FILE)
-        P, D0, t0, eps = (np.ravel(np.asarray(a, dtype=float)) for a in (P, D0, t0, eps))
+        P, D0, t0, eps = (np.ravel(a) for a in np.broadcast_arrays(
+            *(np.asarray(v, dtype=float) for v in (P, D0, t0, eps))))
         force = np.full(P.shape, np.nan)
         used = np.full(P.shape, FALLBACK, dtype=object)
         bound_used = np.full(P.shape, np.nan)

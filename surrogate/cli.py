@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sys
 import warnings
+from pathlib import Path
 
 from fem.arguments import parse_number
 from fem.cli import add_geometry_arguments, argtype
@@ -100,6 +101,10 @@ def _load(path):
     return default_model() if path == "default" else load_model(path)
 
 
+def _label(path: str) -> str:
+    return "default" if path == "default" else Path(path).name
+
+
 def _predict(args) -> int:
     from fem.interface import write_prediction_csv
 
@@ -123,7 +128,7 @@ def _test(args) -> int:
     from surrogate.train import train_surrogate
 
     paths = args.model or ([] if args.kind else ["default"])
-    models = {path: _load(path) for path in paths}
+    models = {_label(path): _load(path) for path in paths}
     models.update({kind: train_surrogate(kind, _dataset(args), seeds=())
                    for kind in args.kind or []})
     summary = run_test(models, args.out, args.reference or FE_REFERENCE)
