@@ -111,7 +111,9 @@ def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict,
     args = (pressure, muscle["D0_mm"], muscle["t0_mm"], muscle["eps"])
     if model.name in CACHED_MODELS:
         return cached_predict(model, *args, cache_dir=cache_dir)
-    return model.predict(*args), False
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # out-of-domain points are flagged in the report itself
+        return model.predict(*args), False
 
 
 def evaluation_pressures(steps: pd.DataFrame) -> np.ndarray:

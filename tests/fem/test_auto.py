@@ -83,3 +83,24 @@ def test_bad_tolerance_and_missing_table_are_clear_errors(table_path, tmp_path):
         AutoModel(tolerance=1.5, table=table_path).predict(1.0, 35.0, 2.5, 0.05)
     with pytest.raises(ValueError, match="run `mkm study`"):
         AutoModel(table=str(tmp_path / "none.csv")).predict(1.0, 35.0, 2.5, 0.05)
+
+
+def test_cli_solve_auto_says_what_it_used(capsys):
+    """`mkm fem solve --model auto` on the committed study table (fem/model_errors.csv)."""
+    from io import StringIO
+
+    from bench.cli import main
+
+    code = main(["fem", "solve", "--model", "auto", "--tolerance", "2%", "--D0", "35", "--t0",
+                 "2.5", "--eps", "0.05"])
+    out, err = capsys.readouterr()
+    assert code == 0
+    rows = pd.read_csv(StringIO(out), comment="#")
+    assert len(rows) == 11 and rows["valid"].all()
+    candidates = set(read_model_errors()["predictor"])
+    assert set(rows["model_used"]) <= candidates
+    chosen = rows[rows["model_used"] != "axisym-fine"]
+    assert (chosen["error_bound_pct"] <= 2.0).all()
+    counts = [int(line.split(" for ")[1].split(" of ")[0]) for line in err.splitlines()
+              if line.startswith("auto: ")]
+    assert sum(counts) == 11

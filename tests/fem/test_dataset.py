@@ -1,6 +1,7 @@
 """Tests of the dataset builder (fem/dataset.py): grid files, jobs, cache, resume, parallel runs."""
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -291,6 +292,9 @@ def test_unreachable_scheduler_gives_clear_error(tmp_path):
 def test_crash_while_writing_keeps_the_old_file(tmp_path, monkeypatch):
     target = tmp_path / "job.json"
     dataset.write_atomic(target, "old")
+    umask = os.umask(0)
+    os.umask(umask)
+    assert target.stat().st_mode & 0o777 == 0o666 & ~umask  # as open() would, not mkstemp's 0600
 
     def crash(src, dst):
         raise KeyboardInterrupt  # killed between writing the temporary file and renaming it
@@ -305,13 +309,14 @@ def test_crash_while_writing_keeps_the_old_file(tmp_path, monkeypatch):
 SHIPPED = Path(__file__).parents[2] / "data" / "mkm_dataset.csv"
 
 
-@pytest.mark.skipif(not SHIPPED.exists(), reason="data/mkm_dataset.csv not built yet")
 @pytest.mark.parametrize("D0_mm, t0_mm, eps", [(30.0, 2.0, 0.2), (50.0, 4.0, 0.1)])
 def test_shipped_dataset_rebuilds(D0_mm, t0_mm, eps):
     rows = pd.read_csv(SHIPPED)
     info = json.loads(SHIPPED.with_suffix(".json").read_text())
     assert info["grid"]["source"] == "paper" and len(rows) == 162
     shipped = rows[(rows.D0_mm == D0_mm) & (rows.t0_mm == t0_mm) & (rows.eps == eps)]
+    # built with today's calibration: a recalibrated theta0 means the data must be rebuilt
+    assert (shipped.theta0_deg == calibrated(info["calibration"]["key"])["theta0_deg"]).all()
     job = Job(info["model"], info["mesh"], D0_mm, t0_mm, eps, float(shipped.L0_mm.iloc[0]),
               float(shipped.theta0_deg.iloc[0]), tuple(shipped.pressure_bar))
     rebuilt = pd.DataFrame(run_job(job)["rows"])
