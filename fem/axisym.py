@@ -33,7 +33,7 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 
-from fem.calibration import calibrated
+from fem.calibration import CalibratedTheta0
 from fem.closed_form import BAR_TO_MPA
 from fem.forms import braid_inextensibility, cavity_volume, rubber
 from fem.interface import ForceModel
@@ -363,7 +363,7 @@ def _per_point(out, levels, P_bar, threshold_bar, dofs):
     return result
 
 
-class AxisymmetricFE(ForceModel):
+class AxisymmetricFE(CalibratedTheta0, ForceModel):
     """Axisymmetric Taylor-Hood FE model of the whole muscle with isometric lock (``axisym``).
 
     Parameters
@@ -386,11 +386,6 @@ class AxisymmetricFE(ForceModel):
         self.L0_mm = L0_mm
         self.mesh = mesh
         self.material = material
-
-    def _theta0(self) -> float:
-        if self.theta0_deg is not None:
-            return float(self.theta0_deg)
-        return calibrated(self.calibration_key)["theta0_deg"]
 
     def params(self):
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm, "mesh": self.mesh,

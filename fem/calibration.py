@@ -36,6 +36,17 @@ def calibrated(key: str) -> dict:
     return entries[key]
 
 
+class CalibratedTheta0:
+    """Mixin of models whose braid angle defaults to their ``fem/calibration.json`` entry."""
+
+    theta0_deg: float | None
+
+    def _theta0(self) -> float:
+        if self.theta0_deg is not None:
+            return float(self.theta0_deg)
+        return calibrated(self.calibration_key)["theta0_deg"]
+
+
 def read_reference(path) -> pd.DataFrame:
     """A reference sweep: ``pressure_bar, D0_mm, t0_mm, eps, force_N`` (``L0_mm`` optional)."""
     df = pd.read_csv(path, comment="#")

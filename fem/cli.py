@@ -122,13 +122,18 @@ def _solve(args) -> int:
         from fem.auto import explain
 
         print(explain(prediction), file=sys.stderr)
-    if args.out:
-        with open(args.out, "w", encoding="utf-8", newline="") as f:
+    emit_prediction(prediction, args.out)
+    return 0
+
+
+def emit_prediction(prediction, out: str | None) -> None:
+    """The prediction's CSV to ``out`` (announced on stderr) or to stdout."""
+    if out:
+        with open(out, "w", encoding="utf-8", newline="") as f:
             write_prediction_csv(prediction, f)
-        print(f"wrote {args.out}", file=sys.stderr)
+        print(f"wrote {out}", file=sys.stderr)
     else:
         write_prediction_csv(prediction, sys.stdout)
-    return 0
 
 
 def _calibrate(args) -> int:

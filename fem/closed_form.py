@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem.calibration import calibrated
+from fem.calibration import CalibratedTheta0
 from fem.interface import Domain, ForceModel
 
 BAR_TO_MPA = 0.1  # 1 bar = 0.1 MPa = 0.1 N/mm^2, so N/mm^2 * mm^2 = N
@@ -62,7 +62,7 @@ def chou_hannaford_eps_max(theta0_deg):
     return 1.0 - 1.0 / (np.sqrt(3.0) * np.cos(np.deg2rad(theta0_deg)))
 
 
-class ChouHannaford(ForceModel):
+class ChouHannaford(CalibratedTheta0, ForceModel):
     """Equation 2 as a force model (``--model eq2``).
 
     Parameters
@@ -87,11 +87,6 @@ class ChouHannaford(ForceModel):
     @property
     def calibration_key(self) -> str:
         return f"eq2-{self.diameter}"
-
-    def _theta0(self) -> float:
-        if self.theta0_deg is not None:
-            return float(self.theta0_deg)
-        return calibrated(self.calibration_key)["theta0_deg"]
 
     def params(self):
         return {"theta0_deg": self._theta0(), "diameter": self.diameter, "L0_mm": self.L0_mm}

@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem.calibration import calibrated
+from fem.calibration import CalibratedTheta0
 from fem.closed_form import chou_hannaford, chou_hannaford_eps_max
 from fem.interface import Domain, ForceModel
 from fem.materials import SILASTIC_S, MooneyRivlin
@@ -169,7 +169,7 @@ def klute_hannaford_threshold_pressure(D0_mm, t0_mm, eps, theta0_deg,
     return np.where(per_bar > 0, threshold, np.nan)
 
 
-class ThickWall(ForceModel):
+class ThickWall(CalibratedTheta0, ForceModel):
     """Klute-Hannaford thick-wall model under the paper's isometric lock (``--model thickwall``).
 
     The free end shortens freely until ``eps``, then is held: the force is zero below the
@@ -195,11 +195,6 @@ class ThickWall(ForceModel):
         self.theta0_deg = theta0_deg
         self.L0_mm = L0_mm
         self.material = material
-
-    def _theta0(self) -> float:
-        if self.theta0_deg is not None:
-            return float(self.theta0_deg)
-        return calibrated(self.calibration_key)["theta0_deg"]
 
     def params(self):
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,

@@ -7,7 +7,7 @@ import warnings
 from pathlib import Path
 
 from fem.arguments import parse_number
-from fem.cli import add_geometry_arguments, argtype
+from fem.cli import add_geometry_arguments, argtype, emit_prediction
 
 
 def register(subparsers) -> None:
@@ -106,7 +106,6 @@ def _label(path: str) -> str:
 
 
 def _predict(args) -> int:
-    from fem.interface import write_prediction_csv
 
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -114,12 +113,7 @@ def _predict(args) -> int:
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
         print(f"mkm: warning: {w.message}", file=sys.stderr)
-    if args.out:
-        with open(args.out, "w", encoding="utf-8", newline="") as f:
-            write_prediction_csv(prediction, f)
-        print(f"wrote {args.out}", file=sys.stderr)
-    else:
-        write_prediction_csv(prediction, sys.stdout)
+    emit_prediction(prediction, args.out)
     return 0
 
 
