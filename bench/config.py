@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from fem.arguments import parse_pressures
+from fem.ranges import parse_pressures
 
 DEFAULT_CONFIG = "paper_prototype.toml"
 TERMINAL_CONFIGS = ("differential", "rse", "nrse", "pseudodifferential")
@@ -224,7 +224,7 @@ class Sim:
     faults: Faults = field(default_factory=Faults)
 
     def check(self):
-        from fem.models import model_names
+        from fem.ladder import model_names
 
         if self.model not in model_names():
             raise ValueError(f"sim.model={self.model!r} is unknown: expected one of "

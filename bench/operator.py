@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from fem.arguments import parse_number
+from fem.ranges import parse_number
 
 
 class Operator(Protocol):

@@ -32,7 +32,7 @@ from bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from bench.config import BenchConfig
 from bench.operator import Operator
 from bench.storage import RunWriter
-from fem.interface import provenance
+from fem.records import provenance
 
 PHASES = ("tare", "precondition", "step", "operator", "vent")
 

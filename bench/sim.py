@@ -6,7 +6,7 @@ the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / ra
 - the regulator: a first-order lag (time constant ``regulator_tau_s``) towards the commanded
   pressure, rate-limited to ``regulator_slew_bar_per_s``, with a 1-5 V monitor output;
 - the muscle: the static force of the project's force model (``sim.model`` in the
-  ``fem.models`` registry, tabulated over pressure once, so a sample costs an interpolation) put
+  ``fem.ladder`` registry, tabulated over pressure once, so a sample costs an interpolation) put
   through two effects the paper's FE model leaves out (no friction, no time dependence there):
 
   * hysteresis, a play operator of half-width ``hysteresis_fraction`` times the force: rising
@@ -58,7 +58,7 @@ def quantize_volts(volts: float) -> float:
 
 def static_force_table(config: BenchConfig, n: int = 401) -> tuple[np.ndarray, np.ndarray]:
     """Pressures [bar] over the regulator's range and the model's static force [N] at them."""
-    from fem.models import make_model
+    from fem.ladder import make_model
 
     m = config.muscle
     model = make_model(config.sim.model, L0_mm=m.L0_mm)

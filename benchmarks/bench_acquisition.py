@@ -26,7 +26,7 @@ from bench.config import load_config
 from bench.run import BenchRun, acquire
 from bench.sim import SimBackend
 from bench.storage import load_run
-from fem.interface import provenance
+from fem.records import provenance
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -72,7 +72,7 @@ def sigint_to_vent(out: Path, repeats: int = 5) -> dict:
     for k in range(repeats):
         folder = out / f"sigint{k}"
         proc = subprocess.Popen(
-            [sys.executable, "-m", "bench.cli", "acquire", "--clock", "real", "--out",
+            [sys.executable, "-m", "mkm", "acquire", "--clock", "real", "--out",
              str(folder), "--no-progress"], cwd=REPO, stdout=subprocess.PIPE,
             stderr=subprocess.DEVNULL, text=True)
         while not list(folder.glob("*/samples.csv")):

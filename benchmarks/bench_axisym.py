@@ -21,9 +21,9 @@ import time
 
 import numpy as np
 
-import fem.axisym
-import fem.newton
-from fem.interface import provenance
+import fem.fe.model
+import fem.fe.newton
+from fem.records import provenance
 
 PRESSURES_BAR = np.arange(0.0, 2.51, 0.25)
 MUSCLE_I = {"D0_mm": 35.0, "t0_mm": 2.5, "L0_mm": 282.0}
@@ -48,19 +48,19 @@ class Timers:
 
 def bench_sweep(level: str, eps: float, theta0_deg: float) -> dict:
     timers = Timers()
-    half = fem.axisym.HalfMuscle
-    init, assemble, splu = half.__init__, half.assemble, fem.newton.splu
+    half = fem.fe.model.HalfMuscle
+    init, assemble, splu = half.__init__, half.assemble, fem.fe.newton.splu
     half.__init__ = timers.wrap("setup", init)
     half.assemble = timers.wrap("assembly", assemble)
-    fem.newton.splu = timers.wrap("lu", splu)
+    fem.fe.newton.splu = timers.wrap("lu", splu)
     try:
         start = time.perf_counter()
-        out = fem.axisym.isometric_sweep(PRESSURES_BAR, MUSCLE_I["D0_mm"], MUSCLE_I["t0_mm"], eps,
+        out = fem.fe.model.isometric_sweep(PRESSURES_BAR, MUSCLE_I["D0_mm"], MUSCLE_I["t0_mm"], eps,
                                          theta0_deg, MUSCLE_I["L0_mm"], level)
         total = time.perf_counter() - start
     finally:
         half.__init__, half.assemble = init, assemble
-        fem.newton.splu = splu
+        fem.fe.newton.splu = splu
     below = out["force_N"] == 0
     threshold_iterations = int(out["iterations"][below].max()) if below.any() else 0
     t = timers.seconds
@@ -78,7 +78,7 @@ def main() -> None:
     parser.add_argument("--eps", default="0.05,0.2")
     parser.add_argument("--repeats", type=int, default=3)
     args = parser.parse_args()
-    theta0 = fem.axisym.AxisymmetricFE().params()["theta0_deg"]
+    theta0 = fem.fe.model.Axisym().params()["theta0_deg"]
     rows = []
     for level in args.levels.split(","):
         for eps in (float(e) for e in args.eps.split(",")):

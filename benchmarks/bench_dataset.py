@@ -15,7 +15,7 @@ import tempfile
 from pathlib import Path
 
 from fem.dataset import build_dataset
-from fem.interface import provenance
+from fem.records import provenance
 
 
 def bench(grid: str, model: str, mesh: str | None, workers: list[int]) -> list[dict]:

@@ -26,7 +26,7 @@ from pathlib import Path
 
 from bench.config import load_config
 from bench.run import acquire
-from fem.interface import provenance
+from fem.records import provenance
 
 MKM = str(Path(sys.executable).with_name("mkm"))
 

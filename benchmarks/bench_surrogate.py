@@ -24,7 +24,7 @@ import warnings
 import numpy as np
 from threadpoolctl import threadpool_limits
 
-from fem.interface import provenance
+from fem.records import provenance
 from surrogate.estimators import KINDS, make_estimator
 from surrogate.model import SurrogateForceModel
 from surrogate.testset import PAPER_MUSCLES, test_points

@@ -30,11 +30,9 @@ from __future__ import annotations
 import numpy as np
 
 from fem.calibration import CalibratedTheta0
-from fem.closed_form import chou_hannaford, chou_hannaford_eps_max
+from fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
 from fem.interface import Domain, ForceModel
 from fem.materials import SILASTIC_S, MooneyRivlin
-
-LOCK_ANGLE_DEG = float(np.rad2deg(np.arccos(1.0 / np.sqrt(3.0))))  # 54.7356 deg
 
 
 def _kinematics(D0_mm, t0_mm, eps, theta0_deg):
@@ -146,7 +144,7 @@ def klute_hannaford(pressure_bar, D0_mm, t0_mm, eps, theta0_deg,
 
     See Also
     --------
-    fem.closed_form.chou_hannaford, klute_hannaford_threshold_pressure
+    fem.eq2.chou_hannaford, klute_hannaford_threshold_pressure
     """
     D_braid = np.asarray(D0_mm, dtype=float) + 2.0 * np.asarray(t0_mm, dtype=float)
     return (chou_hannaford(pressure_bar, D_braid, eps, theta0_deg)
@@ -201,11 +199,7 @@ class ThickWall(CalibratedTheta0, ForceModel):
                 "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa}
 
     def _forces(self, P, D0, t0, eps):
-        theta0 = self._theta0()
-        if not 0.0 < theta0 < LOCK_ANGLE_DEG:
-            raise ValueError(f"theta0_deg={theta0:g} is invalid: expected 0 < theta0 < "
-                             f"{LOCK_ANGLE_DEG:.1f} deg (above the locking angle the muscle "
-                             "cannot pull)")
+        theta0 = check_theta0(self._theta0())
         C10, C01 = self.material.C10_MPa, self.material.C01_MPa
         threshold = klute_hannaford_threshold_pressure(D0, t0, eps, theta0, C10, C01)
         reachable = eps < chou_hannaford_eps_max(theta0)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from fem.calibration import calibrated
-from fem.closed_form import chou_hannaford
+from fem.eq2 import chou_hannaford
 from fem.thickwall import klute_hannaford_threshold_pressure
 
 FEATURE_NAMES = ("pressure_bar", "D0_mm", "t0_mm", "eps", "one_minus_eps_sq",

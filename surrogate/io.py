@@ -18,7 +18,8 @@ from pathlib import Path
 
 import joblib
 
-from fem.interface import Domain, provenance
+from fem.interface import Domain
+from fem.records import provenance
 from surrogate.model import SurrogateForceModel
 from surrogate.training_data import file_sha256
 

@@ -17,12 +17,12 @@ from pathlib import Path
 import pandas as pd
 from joblib import Parallel, delayed
 
-from fem.interface import provenance
+from fem.paper import TABLE2_CSV
+from fem.records import provenance
 from surrogate.estimators import PAPER_NETS, paper_net
-from surrogate.training_data import DEFAULT_DATASET, REPO_ROOT, load_training_data
+from surrogate.training_data import DEFAULT_DATASET, load_training_data
 from surrogate.validation import split_scores
 
-PAPER_TABLE2 = REPO_ROOT / "data" / "reference" / "paper_table2.csv"
 VARIANTS = {"paper": False, "standardised": True}  # name -> standardise the response
 
 
@@ -68,7 +68,7 @@ def run_paper_grid(dataset=DEFAULT_DATASET, seeds: int = 10, jobs: int = 2,
 
 def summarise_grid(runs: pd.DataFrame) -> pd.DataFrame:
     """Median and 10-90 % spread of the CV and held-out RMSE per configuration, beside Table 2."""
-    paper = pd.read_csv(PAPER_TABLE2, comment="#")
+    paper = pd.read_csv(TABLE2_CSV, comment="#")
     keys = ["layers", "size", "activation"]
     stats = runs.groupby(["variant", *keys], sort=False).agg(
         rmse_cv_median_N=("rmse_cv_N", "median"),

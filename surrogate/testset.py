@@ -13,24 +13,19 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from fem.interface import ForceModel, provenance, read_prediction_header
-from surrogate.training_data import REPO_ROOT
+from fem import paper
+from fem.interface import ForceModel
+from fem.paper import equation7_err_pct
+from fem.records import package_file, provenance, read_prediction_header
 from surrogate.validation import rmse
 
-REFERENCE_DIR = REPO_ROOT / "data" / "reference"
-FE_REFERENCE = REFERENCE_DIR / "fe_test_muscles.csv"
-PAPER_TABLE3 = REFERENCE_DIR / "paper_table3.csv"
+#: Our FE sweeps of the test muscles, shipped with the package (``mkm surrogate reference``).
+FE_REFERENCE = package_file("surrogate", "data", "fe_test_muscles.csv")
 
 # name: (D0_mm, t0_mm, eps). I-III: the paper's section 3.3; IV, V: ours, off the grid.
-TEST_MUSCLES = {
-    "I": (35.0, 2.5, 0.05),
-    "II": (40.0, 3.0, 0.15),
-    "III": (45.0, 3.5, 0.20),
-    "IV": (32.0, 3.5, 0.08),
-    "V": (47.0, 2.25, 0.12),
-}
-PAPER_MUSCLES = ("I", "II", "III")
-TEST_PRESSURES_BAR = np.round(np.arange(0.0, 2.5 + 1e-9, 0.25), 2)  # the paper's sweep
+TEST_MUSCLES = {**paper.TEST_MUSCLES, "IV": (32.0, 3.5, 0.08), "V": (47.0, 2.25, 0.12)}
+PAPER_MUSCLES = tuple(paper.TEST_MUSCLES)
+TEST_PRESSURES_BAR = paper.TEST_PRESSURES_BAR
 
 
 def test_points(muscles=tuple(TEST_MUSCLES)) -> pd.DataFrame:
@@ -81,12 +76,6 @@ def read_fe_reference(path=FE_REFERENCE) -> pd.DataFrame:
     return table
 
 
-def percentage_error(force_fe_N, force_pred_N) -> np.ndarray:
-    """Equation 7 of the paper: ``100 (F_num - F_pred) / max(F_num)`` over one sweep [%]."""
-    force_fe_N = np.asarray(force_fe_N, dtype=float)
-    return 100.0 * (force_fe_N - np.asarray(force_pred_N, dtype=float)) / np.max(force_fe_N)
-
-
 def compare_on_test_muscles(model: ForceModel, reference: pd.DataFrame):
     """Predict every reference point in one call; per-point errors and a per-muscle summary.
 
@@ -103,7 +92,7 @@ def compare_on_test_muscles(model: ForceModel, reference: pd.DataFrame):
     points["err_pct"] = np.nan
     rows = []
     for muscle, group in points.groupby("muscle", sort=False):
-        err = percentage_error(group["force_fe_N"], group["force_pred_N"])
+        err = equation7_err_pct(group["force_fe_N"], group["force_pred_N"])
         points.loc[group.index, "err_pct"] = err
         residual = group["force_fe_N"] - group["force_pred_N"]
         rows.append({"muscle": muscle, "model": model.name,
@@ -141,13 +130,13 @@ def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE
 
 def markdown_table(summary: pd.DataFrame) -> str:
     """Largest |Err%| per model and muscle, then RMSE and largest error, with the paper's row."""
-    paper = pd.read_csv(PAPER_TABLE3, comment="#").set_index("muscle")["max_abs_err_pct"]
+    published = pd.read_csv(paper.TABLE3_CSV, comment="#").set_index("muscle")["max_abs_err_pct"]
     muscles = list(dict.fromkeys(summary["muscle"]))
     lines = ["| model | " + " | ".join(f"{m} max abs Err%" for m in muscles)
              + " | RMSE N (worst muscle) | largest abs error N | all points, one call, s |",
              "|---|" + "---|" * (len(muscles) + 3)]
     lines.append("| paper, 3 x 100 ReLU (its FE) | " + " | ".join(
-        f"{paper[m]:.2f}" if m in paper else "" for m in muscles)
+        f"{published[m]:.2f}" if m in published else "" for m in muscles)
         + " | | 60.10 | 0.131 (33 points) |")
     for model, group in summary.groupby("model", sort=False):
         g = group.set_index("muscle")

@@ -11,17 +11,18 @@ import json
 import warnings
 from pathlib import Path
 
+import platformdirs
 from sklearn.exceptions import ConvergenceWarning
 from threadpoolctl import threadpool_limits
 
-from fem.interface import provenance
-from surrogate.estimators import BEST, kind_names, make_estimator
+from fem.records import file_sha256, provenance, source_version
+from surrogate.estimators import BEST, make_estimator
 from surrogate.model import SurrogateForceModel
-from surrogate.training_data import DEFAULT_DATASET, REPO_ROOT, load_training_data
+from surrogate.training_data import DEFAULT_DATASET, load_training_data
 from surrogate.validation import split_scores, summarise
 
 SEEDS = tuple(range(10))  # shared by every kind, recorded in the metadata
-CACHE_DIR = REPO_ROOT / ".cache" / "surrogate"
+CACHE_DIR = Path(platformdirs.user_cache_dir("mkm-bench")) / "surrogate"
 
 
 def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, seeds=SEEDS,
@@ -61,39 +62,30 @@ def _test_muscle_metrics(model: SurrogateForceModel):
     return summary.drop(columns=["model"]).to_dict(orient="records")
 
 
-def train_all(dataset=DEFAULT_DATASET, include_nets: bool = True, seeds=SEEDS):
-    """Every kind (the named ones, then the paper's 27 nets and their standardised variants),
-    trained on ``dataset``: ``{kind: SurrogateForceModel}``, for the speed/accuracy study."""
-    return {kind: train_surrogate(kind, dataset, seeds)
-            for kind in kind_names(include_nets=include_nets)}
-
-
-def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST) -> str:
-    """Hash of what a trained surrogate depends on: data, code, calibration, library versions."""
-    from surrogate.training_data import file_sha256
-
-    parts = {"dataset": file_sha256(dataset), "kind": kind,
-             "versions": provenance()["versions"]}
-    sources = sorted((REPO_ROOT / "surrogate").glob("*.py")) + [
-        REPO_ROOT / "fem" / name for name in ("closed_form.py", "thickwall.py",
-                                              "calibration.json")]
-    for path in sources:
-        parts[path.name] = hashlib.sha256(path.read_bytes()).hexdigest()
+def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, seeds=SEEDS) -> str:
+    """Hash of what a trained surrogate depends on: the data, the source of the surrogate and of
+    every physics module it calls (materials and calibration included), library versions."""
+    parts = {"dataset": file_sha256(dataset), "kind": kind, "seeds": list(seeds),
+             "versions": provenance()["versions"],
+             "code": source_version("surrogate.train", "surrogate.io")}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
 
-def default_model(dataset=DEFAULT_DATASET, cache_dir=CACHE_DIR) -> SurrogateForceModel:
-    """The default (``best``) surrogate trained on ``dataset``, as a fitted ForceModel.
+def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
+                 seeds=SEEDS) -> SurrogateForceModel:
+    """Surrogate ``kind`` trained on ``dataset``, as a fitted ForceModel: the one surrogate cache.
 
-    Trained on first use and cached under ``.cache/surrogate/best-<key>`` (``key``: dataset
-    hash, surrogate and physics source, calibration and library versions), so a fresh clone
-    needs no manual step and a changed dataset or library retrains it.
+    Trained on first use and kept under ``cache_dir`` (default: the user's cache folder) as
+    ``<kind>-<key>`` (:func:`cache_key`), so a fresh install needs no manual step and a changed
+    dataset, code or library retrains it. ``seeds``: the 80/20 splits whose refits give the
+    held-out metrics (``()``: none, fit only).
     """
     from surrogate.io import load_model, save_model
 
     if not Path(dataset).is_file():
         load_training_data(dataset)  # raises the ValueError that says what is missing
-    directory = Path(cache_dir) / f"best-{cache_key(dataset)}"
+    cache_dir = Path(cache_dir) if cache_dir is not None else CACHE_DIR
+    directory = cache_dir / f"{kind}-{cache_key(dataset, kind, seeds)}"
     if (directory / "metadata.json").is_file():
         with warnings.catch_warnings():
             warnings.simplefilter("error")  # a stale cache entry is retrained, never trusted
@@ -101,6 +93,14 @@ def default_model(dataset=DEFAULT_DATASET, cache_dir=CACHE_DIR) -> SurrogateForc
                 return load_model(directory)
             except (Warning, ValueError):
                 pass
-    model = train_surrogate("best", dataset)
-    save_model(model, directory)
+    model = train_surrogate(kind, dataset, seeds=seeds)
+    try:
+        save_model(model, directory)
+    except OSError:  # another process saved the same model first: theirs is as good
+        pass
     return model
+
+
+def default_model(dataset=DEFAULT_DATASET, cache_dir=None) -> SurrogateForceModel:
+    """The default (``best``) surrogate trained on ``dataset`` (see :func:`cached_model`)."""
+    return cached_model("best", dataset, cache_dir)

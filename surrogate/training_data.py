@@ -7,7 +7,6 @@ not valid, NaN force) are left out and counted, never fed to a fit.
 
 from __future__ import annotations
 
-import hashlib
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -16,9 +15,10 @@ import numpy as np
 import pandas as pd
 
 from fem.interface import INPUTS, Domain
+from fem.records import file_sha256, package_file
 
-REPO_ROOT = Path(__file__).resolve().parents[1]
-DEFAULT_DATASET = REPO_ROOT / "data" / "mkm_dataset.csv"
+#: The shipped FE dataset (inside the package, so an installed wheel can train)
+DEFAULT_DATASET = package_file("surrogate", "data", "mkm_dataset.csv")
 
 
 @dataclass
@@ -41,10 +41,6 @@ class TrainingData:
     def summary(self) -> dict:
         return {"path": self.path, "sha256": self.sha256, "n_rows": int(len(self.y)),
                 "n_dropped": self.n_dropped, "fixed": self.fixed, "provenance": self.provenance}
-
-
-def file_sha256(path) -> str:
-    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
 def load_training_data(path=DEFAULT_DATASET) -> TrainingData:

@@ -9,7 +9,7 @@ import pytest
 from bench.run import BenchRun, acquire, estimate_duration_s, plan_steps, settle_reached
 from bench.sim import SimBackend
 from bench.storage import COMMAND_COLUMNS, SAMPLE_COLUMNS, STEP_COLUMNS, load_run
-from fem.models import make_model
+from fem.ladder import make_model
 
 
 def record(config, tmp_path, **faults):

@@ -32,7 +32,7 @@ def start_run(tmp_path):
     config.write_text(head + FAST + rest)
     out = tmp_path / "runs"
     proc = subprocess.Popen(
-        [sys.executable, "-m", "bench.cli", "acquire", "--config", str(config), "--clock",
+        [sys.executable, "-m", "mkm", "acquire", "--config", str(config), "--clock",
          "real", "--out", str(out), "--no-progress"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     deadline = time.monotonic() + 30

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from bench.sim import LSB_V, SimBackend, SimMuscleBench, quantize_volts, static_force_table
-from fem.models import make_model
+from fem.ladder import make_model
 
 
 def quiet(config, **sim):

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from fem.forms import mooney_rivlin_incompressible, mooney_rivlin_incompressible_tangent
+from fem.fe.forms import mooney_rivlin_incompressible, mooney_rivlin_incompressible_tangent
 from fem.materials import SILASTIC_S
 
 C10, C01 = SILASTIC_S.C10_MPa, SILASTIC_S.C01_MPa

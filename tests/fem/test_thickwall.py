@@ -1,7 +1,6 @@
 """Tests of the thick-wall rung (fem/thickwall.py): the Klute-Hannaford virtual-work model."""
 
 import json
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -10,11 +9,11 @@ from hypothesis import strategies as st
 from scipy.integrate import quad
 
 from fem.calibration import calibrated, read_reference
-from fem.closed_form import chou_hannaford, chou_hannaford_eps_max
+from fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford, chou_hannaford_eps_max
+from fem.ladder import make_model
 from fem.materials import SILASTIC_S, MooneyRivlin
-from fem.models import make_model
+from fem.paper import CASE_I_CSV
 from fem.thickwall import (
-    LOCK_ANGLE_DEG,
     ThickWall,
     braided_tube_elastic_force,
     braided_tube_energy,
@@ -29,7 +28,7 @@ PAPER_P = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5])
 PAPER_D0 = np.array([30.0, 40.0, 50.0])
 PAPER_T0 = np.array([2.0, 3.0, 4.0])
 
-CASE_I = Path(__file__).parents[2] / "data" / "reference" / "paper_case_I.csv"
+CASE_I = CASE_I_CSV
 
 
 def energy_by_quadrature(D0, t0, eps, theta0, material=SILASTIC_S):
@@ -206,7 +205,7 @@ def test_force_is_nonnegative_and_nondecreasing_in_pressure(D0, t_frac, eps_frac
     assert np.all(pred.force_N >= 0) and np.all(np.diff(pred.force_N) >= 0)
 
 
-@pytest.mark.parametrize("theta0", [LOCK_ANGLE_DEG, 60.0, 0.0, -5.0])
+@pytest.mark.parametrize("theta0", [LOCKING_ANGLE_DEG, 60.0, 0.0, -5.0])
 def test_theta0_outside_the_braid_range_is_refused(theta0):
     with pytest.raises(ValueError, match=r"^theta0_deg=.* is invalid: expected 0 < theta0 < 54\.7"):
         ThickWall(theta0_deg=theta0).predict(1.0, 35, 2.5, 0.05)

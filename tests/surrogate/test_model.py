@@ -51,7 +51,7 @@ def test_gp_gives_a_predictive_spread(gp):
 def test_prediction_is_exact_on_thickwall_data(physics):
     # The dataset is the thick-wall model itself, which the physics surrogate holds exactly
     # (its priors): the off-grid muscle I must come out to round-off.
-    from fem.models import make_model
+    from fem.ladder import make_model
 
     P = np.linspace(0.0, 2.5, 11)
     expected = make_model("thickwall").predict(P, 35.0, 2.5, 0.05).force_N

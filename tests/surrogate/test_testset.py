@@ -2,12 +2,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.models import make_model
+from fem.ladder import make_model
+from fem.paper import equation7_err_pct
 from surrogate.testset import (
     TEST_MUSCLES,
     build_fe_reference,
     compare_on_test_muscles,
-    percentage_error,
     read_fe_reference,
     run_test,
 )
@@ -15,7 +15,7 @@ from surrogate.testset import (
 
 def test_percentage_error_is_equation_7():
     # (F_num - F_pred) / max(F_num) over the sweep, in %: hand-computed.
-    np.testing.assert_allclose(percentage_error([0.0, 100.0, 200.0], [0.0, 90.0, 210.0]),
+    np.testing.assert_allclose(equation7_err_pct([0.0, 100.0, 200.0], [0.0, 90.0, 210.0]),
                                [0.0, 5.0, -5.0])
 
 

@@ -1,0 +1,132 @@
+"""Pointwise physics of the axisymmetric muscle model, as plain functions of quadrature values.
+
+Each function takes the kinematic variables at the quadrature points, stacked on the last axis,
+and returns the energy density's gradient and Hessian with respect to them. The assembly in
+:mod:`fem.fe.model` contracts them with constant (total-Lagrangian) operator arrays, so no form
+indexes basis functions one by one; that keeps an assembly of the whole tangent vectorised.
+
+Variables (all in mm, MPa, so energies are in N mm):
+
+* rubber: ``y = (F_rr, F_rz, F_zr, F_zz, F_tt, p)``, the axisymmetric deformation gradient
+  ``F = [[1 + du_r/dR, du_r/dZ, 0], [du_z/dR, 1 + du_z/dZ, 0], [0, 0, 1 + u_r/R]]`` and the
+  pressure-like Lagrange multiplier ``p`` of incompressibility;
+* cavity: ``y = (r, dz/dZ)`` on the inner surface (deformed radius and axial stretch);
+* braid: ``y = (u_r, du_r/dZ, du_z/dZ)`` on the outer surface.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fem.materials import MooneyRivlin
+
+# d(j')/d(F_rr, F_rz, F_zr, F_zz) with j' = (F_zz, -F_zr, -F_rz, F_rr), see the tangent below
+_DJ_DF2 = np.array([[0, 0, 0, 1], [0, 0, -1, 0], [0, -1, 0, 0], [1, 0, 0, 0.0]])
+
+
+def mooney_rivlin_incompressible(y: np.ndarray, material: MooneyRivlin) -> np.ndarray:
+    r"""Gradient of the incompressible Mooney-Rivlin energy density with respect to ``y``.
+
+    .. math::
+        \psi(F, p) = C_{10}(I_1 - 3) + C_{01}(I_2 - 3) - p\,(J - 1)
+
+    with the (not isochoric) invariants of ``C = F^T F``; ``p`` enforces ``J = 1`` exactly (a
+    Taylor-Hood u-p formulation without bulk modulus, as ANSYS does with C10, C01 and no D1).
+    For the axisymmetric block form ``F = diag(F2, F_tt)``:
+    ``I1 = |F2|^2 + F_tt^2``, ``I2 = F_tt^2 |F2|^2 + det(F2)^2``, ``J = F_tt det(F2)``.
+
+    Parameters
+    ----------
+    y : numpy.ndarray, shape (..., 6)
+        ``(F_rr, F_rz, F_zr, F_zz, F_tt, p)``; ``p`` in MPa.
+    material : MooneyRivlin
+        ``C10_MPa``, ``C01_MPa``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 6)
+        ``d psi / d y``: the first Piola-Kirchhoff components [MPa] and ``-(J - 1)``.
+    """
+    a, b, c, d, t, p = np.moveaxis(y, -1, 0)
+    C10, C01 = material.C10_MPa, material.C01_MPa
+    s = a * a + b * b + c * c + d * d
+    j2 = a * d - b * c
+    return np.stack([
+        2 * C10 * a + C01 * (2 * t * t * a + 2 * j2 * d) - p * t * d,
+        2 * C10 * b + C01 * (2 * t * t * b - 2 * j2 * c) + p * t * c,
+        2 * C10 * c + C01 * (2 * t * t * c - 2 * j2 * b) + p * t * b,
+        2 * C10 * d + C01 * (2 * t * t * d + 2 * j2 * a) - p * t * a,
+        2 * C10 * t + 2 * C01 * t * s - p * j2,
+        -(t * j2 - 1.0),
+    ], axis=-1)
+
+
+def mooney_rivlin_incompressible_tangent(y: np.ndarray, material: MooneyRivlin) -> np.ndarray:
+    """Hessian of the density of :func:`mooney_rivlin_incompressible` with respect to ``y``.
+
+    Analytic (the density is a polynomial in ``y``): with ``j = det(F2)`` and
+    ``j' = dj/d(F_rr, F_rz, F_zr, F_zz) = (F_zz, -F_zr, -F_rz, F_rr)``, shape (..., 6, 6).
+    """
+    a, b, c, d, t, p = np.moveaxis(y, -1, 0)
+    C10, C01 = material.C10_MPa, material.C01_MPa
+    x = y[..., :4]
+    jp = np.stack([d, -c, -b, a], axis=-1)
+    j = a * d - b * c
+    H = np.zeros(y.shape + (6,))
+    H[..., :4, :4] = ((2 * C10 + 2 * C01 * t * t)[..., None, None] * np.eye(4)
+                      + 2 * C01 * jp[..., :, None] * jp[..., None, :]
+                      + (2 * C01 * j - p * t)[..., None, None] * _DJ_DF2)
+    H[..., :4, 4] = H[..., 4, :4] = 4 * C01 * t[..., None] * x - p[..., None] * jp
+    H[..., :4, 5] = H[..., 5, :4] = -t[..., None] * jp
+    H[..., 4, 4] = 2 * C10 + 2 * C01 * np.sum(x * x, axis=-1)
+    H[..., 4, 5] = H[..., 5, 4] = -j
+    return H
+
+
+def rubber(y: np.ndarray, material: MooneyRivlin) -> tuple[np.ndarray, np.ndarray]:
+    """Gradient and Hessian of the incompressible Mooney-Rivlin density (see above)."""
+    return (mooney_rivlin_incompressible(y, material),
+            mooney_rivlin_incompressible_tangent(y, material))
+
+
+def cavity_volume(y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    r"""Volume density of the closed cavity along the inner surface, ``v = pi r^2 dz/dZ``.
+
+    ``V = \int v\,dZ`` over the inner surface from the mid-plane to the cap is the volume of the
+    solid of revolution enclosed by the rubber and the rigid cap, so ``-P V`` is the potential of
+    the (follower) pressure load on the inner surface and on the cap. Returns ``v``, its gradient
+    and Hessian with respect to ``y = (r, dz/dZ)``.
+    """
+    r, zs = y[..., 0], y[..., 1]
+    v = np.pi * r * r * zs
+    grad = np.stack([2 * np.pi * r * zs, np.pi * r * r], axis=-1)
+    hess = np.empty(y.shape + (2,))
+    hess[..., 0, 0] = 2 * np.pi * zs
+    hess[..., 0, 1] = hess[..., 1, 0] = 2 * np.pi * r
+    hess[..., 1, 1] = 0.0
+    return v, grad, hess
+
+
+def braid_inextensibility(y: np.ndarray, theta0_deg: float, Ro_mm: float):
+    r"""Stretch constraint of two inextensible helical fibre families at +-theta0.
+
+    A fibre element of length ``dS`` at rest spans ``dS cos theta0`` along the axis and
+    ``dS sin theta0`` around it; bonded to the outer surface it is stretched by
+    ``l_f^2 = cos^2 theta0 l_s^2 + sin^2 theta0 l_t^2`` with the meridional stretch
+    ``l_s^2 = (1 + du_z/dZ)^2 + (du_r/dZ)^2`` and the hoop stretch ``l_t = 1 + u_r / R_o``.
+    Inextensible fibres: ``g = l_f^2 - 1 = 0``. Both families give the same constraint in an
+    axisymmetric state (no torsion).
+
+    Returns ``g``, its gradient and Hessian with respect to ``y = (u_r, du_r/dZ, du_z/dZ)``.
+    """
+    c2 = np.cos(np.deg2rad(theta0_deg)) ** 2
+    s2 = 1.0 - c2
+    ur, urZ, uzZ = y[..., 0], y[..., 1], y[..., 2]
+    lt = 1.0 + ur / Ro_mm
+    g = c2 * ((1.0 + uzZ) ** 2 + urZ**2) + s2 * lt * lt - 1.0
+    grad = np.stack([2 * s2 * lt / Ro_mm, 2 * c2 * urZ, 2 * c2 * (1.0 + uzZ)], axis=-1)
+    hess = np.zeros(y.shape + (3,))
+    hess[..., 0, 0] = 2 * s2 / Ro_mm**2
+    hess[..., 1, 1] = 2 * c2
+    hess[..., 2, 2] = 2 * c2
+    return g, grad, hess

@@ -1,0 +1,406 @@
+"""Axisymmetric finite-element model of the McKibben muscle in scikit-fem (``--model axisym``).
+
+The half muscle between the mid-plane (``Z = 0``, symmetry: ``u_z = 0``) and a rigid end cap
+(``Z = L0/2``: ``u_r = 0``, ``u_z = U`` shared by the whole cap) in total-Lagrangian finite
+strain:
+
+* the silicone wall is a fully incompressible Mooney-Rivlin solid in a Taylor-Hood P2/P1 mixed
+  displacement-pressure formulation: the pressure field enforces ``J = 1`` without a bulk
+  modulus, so the wall does not lock (P1 displacement-only locked in a prototype, +27 % in the
+  threshold pressure) and it is the constitutive model of the paper's ANSYS runs (C10, C01, no
+  D1);
+* the braid is two inextensible fibre families at +-theta0 bonded to the outer surface,
+  ``cos^2 theta0 l_s^2 + sin^2 theta0 l_t^2 = 1``, enforced with a Lagrange multiplier field
+  (continuous P1 on the outer surface); the multiplier is the fibre membrane tension [N/mm],
+  which must stay >= 0 (fibres carry no compression: a held point needing it is reported
+  failed; the free muscle at the threshold may go slack right at the cap's corner, which is
+  recorded in ``min_tension_N_per_mm`` and touches ``P*`` only);
+* the air pressure is the potential ``-P V`` of the closed cavity (inner surface and cap), a
+  follower load with a symmetric tangent whose cap share lands in the cap reaction;
+* the developed force is the reaction ``dPi/dU`` on the cap. For the half model this is already
+  the muscle force: the force through any cross-section of the muscle is the same, and the
+  whole muscle's energy ``2 Pi`` changes with its length ``2 U``.
+
+The isometric lock of the paper (a muscle that shortens freely until ``eps`` and is then held)
+is :func:`isometric_sweep`: phase 1 follows the free muscle by cap displacement with the pressure
+as unknown up to ``U = -eps L0/2``, which gives the threshold pressure ``P*`` (force zero below
+it); phase 2 holds the cap and ramps the pressure through the requested values.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
+
+from fem.calibration import CalibratedTheta0
+from fem.eq2 import BAR_TO_MPA, check_theta0
+from fem.fe.forms import braid_inextensibility, cavity_volume, rubber
+from fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
+from fem.fe.newton import load_path
+from fem.interface import ForceModel
+from fem.materials import SILASTIC_S, MooneyRivlin
+
+# 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
+# away from the axis add an error far below the mesh's
+INTORDER = 4
+
+
+def _operator(basis, columns) -> np.ndarray:
+    """Stack ``columns(value, grad)`` of each basis function: shape (elements, points, dofs, k)."""
+    return np.stack([np.stack(columns(np.asarray(phi), phi.grad), axis=-1)
+                     for phi in (b[0] for b in basis.basis)], axis=2)
+
+
+class _Term:
+    """One energy term ``int psi(y) w``: its variables are ``y = y0 + B z`` at quadrature points.
+
+    ``B`` (elements, points, dofs, variables) is constant in the total-Lagrangian setting, so the
+    element vectors and matrices are two batched matrix products per assembly.
+    """
+
+    def __init__(self, B, y0, dofs, w, red):
+        self.B, self.y0, self.w = B, y0, w
+        self.dofs = red[dofs].T  # (elements, dofs) in reduced numbering, -1 where fixed
+        e, q, i, a = B.shape
+        self.B_flat = B.transpose(0, 2, 1, 3).reshape(e, i, q * a)
+        self.keep_r = self.dofs >= 0
+        self.keep_K = self.keep_r[:, :, None] & self.keep_r[:, None, :]
+
+    def values(self, y_ext):
+        """Variables at the quadrature points; ``y_ext`` ends with a zero read by fixed dofs."""
+        return self.y0 + np.einsum("eqia,eqi->eqa", self.B, y_ext[self.dofs][:, None, :])
+
+    def element_arrays(self, grad, hess):
+        """Element vectors (e, i) and the kept entries of the element matrices."""
+        e, q, i, a = self.B.shape
+        re = np.einsum("eqia,eqa->ei", self.B, grad * self.w[..., None])
+        BH = np.matmul(self.B, hess * self.w[..., None, None])  # (e, q, i, b)
+        Ke = np.matmul(BH.transpose(0, 2, 1, 3).reshape(e, i, q * a),
+                       self.B_flat.transpose(0, 2, 1))
+        return re, Ke[self.keep_K]
+
+    def pattern(self):
+        rows = np.broadcast_to(self.dofs[:, :, None], self.keep_K.shape)[self.keep_K]
+        cols = np.broadcast_to(self.dofs[:, None, :], self.keep_K.shape)[self.keep_K]
+        return rows, cols
+
+
+class HalfMuscle:
+    """Discretised half muscle of one geometry: operators, dof maps and the assembly.
+
+    Unknowns (reduced, after the boundary conditions): the free displacement dofs, the P1 wall
+    pressure, the P1 braid tension, and last the cap displacement ``U`` [mm].
+    """
+
+    def __init__(self, D0_mm, t0_mm, L0_mm, theta0_deg, material: MooneyRivlin, mesh: str,
+                 braid: bool = True, cap: str = "clamped"):
+        if cap not in ("clamped", "sliding"):
+            raise ValueError(f"cap={cap!r} is invalid: expected 'clamped' or 'sliding'")
+        self.Ri, self.Ro, self.H = D0_mm / 2.0, D0_mm / 2.0 + t0_mm, L0_mm / 2.0
+        self.theta0_deg, self.material = theta0_deg, material
+        m = half_muscle_mesh(D0_mm, t0_mm, L0_mm, mesh)
+        eu = ElementVector(ElementTriP2())
+        ub = Basis(m, eu, intorder=INTORDER)
+        pb = Basis(m, ElementTriP1(), intorder=INTORDER)
+        inner = m.facets_satisfying(lambda x: np.isclose(x[0], self.Ri))
+        outer = m.facets_satisfying(lambda x: np.isclose(x[0], self.Ro))
+        ib = FacetBasis(m, eu, facets=inner, intorder=INTORDER)
+        ob = FacetBasis(m, eu, facets=outer, intorder=INTORDER)
+        nu, npr = ub.N, pb.N
+        tension_nodes = np.unique(m.facets[:, outer]) if braid else np.array([], dtype=int)
+        nl = len(tension_nodes)
+
+        # rubber: y = (F_rr, F_rz, F_zr, F_zz, F_tt, p)
+        R = ub.global_coordinates()[0]
+        Bu = _operator(ub, lambda v, g: (g[0, 0], g[0, 1], g[1, 0], g[1, 1], v[0] / R, 0 * R))
+        Bp = _operator(pb, lambda v, g: (0 * v,) * 5 + (v,))
+        rubber_term = (np.concatenate([Bu, Bp], axis=2), np.array([1, 0, 0, 1, 1, 0.0]),
+                       np.vstack([ub.element_dofs, nu + pb.element_dofs]), 2 * np.pi * R * ub.dx)
+        # cavity: y = (r, dz/dZ) on the inner surface; dZ is the facet measure (vertical facets)
+        cavity_term = (_operator(ib, lambda v, g: (v[0], g[1, 1])),
+                       np.stack([ib.global_coordinates()[0], np.ones_like(ib.dx)], axis=-1),
+                       ib.element_dofs, ib.dx)
+        # braid: y = (u_r, du_r/dZ, du_z/dZ, tension) on the outer surface
+        Z = ob.global_coordinates()[1]
+        za, zb = (m.p[1, m.facets[k, ob.find]][:, None] for k in (0, 1))
+        shape_a = (zb - Z) / (zb - za)
+        Bb = _operator(ob, lambda v, g: (v[0], g[0, 1], g[1, 1], 0 * Z))
+        Bl = np.zeros(Bb.shape[:2] + (2, 4))
+        Bl[..., 0, 3], Bl[..., 1, 3] = shape_a, 1.0 - shape_a
+        lam_dofs = nu + npr + np.searchsorted(tension_nodes, m.facets[:, ob.find])
+        braid_term = (np.concatenate([Bb, Bl], axis=2), np.zeros(4),
+                      np.vstack([ob.element_dofs, lam_dofs]), 2 * np.pi * self.Ro * ob.dx)
+
+        # boundary conditions as a map full dof -> reduced dof (-1: fixed at zero)
+        ir, iz = ub.split_indices()
+        Zdof = ub.doflocs[1]
+        fixed = np.zeros(nu + npr + nl, dtype=bool)
+        fixed[iz[np.isclose(Zdof[iz], 0.0)]] = True
+        cap_r = ir[np.isclose(Zdof[ir], self.H)]
+        cap_z = iz[np.isclose(Zdof[iz], self.H)]
+        fixed[cap_z] = True
+        fixed[cap_r] = cap == "clamped"  # "sliding" (a verification case): u_r free at the cap
+        red = np.full(fixed.size, -1)
+        red[~fixed] = np.arange((~fixed).sum())
+        self.n = int((~fixed).sum()) + 1
+        red[cap_z] = self.n - 1
+        self.red = red
+        self.p_slice = slice(red[nu], red[nu] + npr)
+        self.tension_slice = slice(red[nu] + npr, red[nu] + npr + nl)
+        self.rubber, self.cavity = _Term(*rubber_term, red), _Term(*cavity_term, red)
+        self.braid = _Term(*braid_term, red) if braid else None
+        terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
+        # CSR pattern once; each assembly only sums the entries into place
+        rows = np.concatenate([t.pattern()[0] for t in terms])
+        cols = np.concatenate([t.pattern()[1] for t in terms])
+        keys, self._slot = np.unique(rows * self.n + cols, return_inverse=True)
+        self._indices = keys % self.n
+        self._indptr = np.searchsorted(keys // self.n, np.arange(self.n + 1))
+
+    def rest_state(self) -> np.ndarray:
+        """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
+        balances the non-isochoric Mooney-Rivlin stress at F = I (p = 2 C10 + 4 C01)."""
+        y = np.zeros(self.n)
+        y[self.p_slice] = 2 * self.material.C10_MPa + 4 * self.material.C01_MPa
+        return y
+
+    def assemble(self, y, pressure_MPa):
+        """Residual ``dPi/dy``, tangent ``d2Pi/dy2`` (CSR) and ``dV/dy`` at the reduced state."""
+        y_ext = np.append(y, 0.0)
+        g, h = rubber(self.rubber.values(y_ext), self.material)
+        r_rub, K_rub = self.rubber.element_arrays(g, h)
+        _, g, h = cavity_volume(self.cavity.values(y_ext))
+        dV_cav, K_cav = self.cavity.element_arrays(g, -pressure_MPa * h)
+
+        def vector(term, re):
+            return np.bincount(term.dofs[term.keep_r], re[term.keep_r], minlength=self.n)
+
+        dV = vector(self.cavity, dV_cav)
+        r = vector(self.rubber, r_rub) - pressure_MPa * dV
+        blocks = [K_rub, K_cav]
+        if self.braid is not None:
+            yb = self.braid.values(y_ext)
+            gb, dgb, hgb = braid_inextensibility(yb[..., :3], self.theta0_deg, self.Ro)
+            tension = yb[..., 3]
+            grad = np.concatenate([tension[..., None] * dgb, gb[..., None]], axis=-1)
+            hess = np.zeros(yb.shape + (4,))
+            hess[..., :3, :3] = tension[..., None, None] * hgb
+            hess[..., :3, 3] = hess[..., 3, :3] = dgb
+            r_br, K_br = self.braid.element_arrays(grad, hess)
+            r += vector(self.braid, r_br)
+            blocks.append(K_br)
+        data = np.bincount(self._slot, np.concatenate(blocks), minlength=self._indices.size)
+        K = sp.csr_matrix((data, self._indices, self._indptr), shape=(self.n, self.n))
+        return r, K, dV
+
+    def inverted(self, y) -> str | None:
+        """Reason to reject a state at once: an element turned inside out (J <= 0)."""
+        f = self.rubber.values(np.append(y, 0.0))
+        if not np.all(np.isfinite(f)):
+            return "non-finite displacement"
+        if np.any(f[..., 4] <= 0) or np.any(f[..., 0] * f[..., 3] - f[..., 1] * f[..., 2] <= 0):
+            return "element inversion (J <= 0)"
+        return None
+
+    def tension(self, y) -> np.ndarray:
+        """Braid membrane tension at the outer-surface nodes [N/mm]."""
+        return y[self.tension_slice]
+
+    def compression(self, y) -> str:
+        """Why a state is unphysical for a tension-only braid (empty if it is not)."""
+        lam = self.tension(y)
+        if lam.size and lam.min() < -1e-6 * max(np.abs(lam).max(), 1e-12):
+            return f"fibre compression (braid tension {lam.min():.3g} N/mm < 0)"
+        return ""
+
+    def _newton_options(self):
+        cap_force_scale = 0.1 * np.pi * self.Ro**2  # cap force at 1 bar [N]
+        return {"residual_floor": 1e-10 * cap_force_scale}
+
+    def free_path(self, U_mm: float):
+        """Free shortening of the muscle (no force) to cap displacement ``U_mm`` < 0.
+
+        Follows the path by cap displacement with the pressure as unknown (the cap equation
+        says the reaction is zero). Returns the state, the pressure [MPa] and the report.
+        """
+        def free(x, U):
+            r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])
+            return r, sp.hstack([K[:, :-1], -dV[:, None]], format="csr")
+
+        y = self.rest_state()
+        [(x, report)] = load_path(free, np.append(y[:-1], 0.0), 0.0, [U_mm],
+                                  check=lambda x, U: self.inverted(np.append(x[:-1], U)),
+                                  label=lambda U: f"cap displacement {U:.3g} mm",
+                                  **self._newton_options())
+        if x is None:
+            return None, np.nan, report
+        return np.append(x[:-1], U_mm), float(x[-1]), report
+
+    def held_path(self, y, P_start_MPa: float, pressures_MPa):
+        """Pressure ramp with the cap held where ``y`` has it, from the state ``y`` at
+        ``P_start_MPa`` through the sorted ``pressures_MPa``: a list of (state or None, report).
+        """
+        U = y[-1]
+
+        def held(x, P):
+            r, K, _ = self.assemble(np.append(x, U), P)
+            return r[:-1], K[:-1, :-1]
+
+        path = load_path(held, y[:-1], P_start_MPa, pressures_MPa,
+                         check=lambda x, P: self.inverted(np.append(x, U)),
+                         label=lambda P: f"{P / BAR_TO_MPA:.4g} bar", **self._newton_options())
+        return [(None if x is None else np.append(x, U), report) for x, report in path]
+
+    def cavity_volume(self, y) -> float:
+        """Volume of the half muscle's cavity [mm^3] (inside the rubber, up to the cap)."""
+        v, _, _ = cavity_volume(self.cavity.values(np.append(y, 0.0)))
+        return float(np.sum(v * self.cavity.w))
+
+    def cap_force(self, y, pressure_MPa: float) -> float:
+        """Reaction on the cap, ``dPi/dU`` [N]: the muscle's pulling force (see module doc)."""
+        return float(self.assemble(y, pressure_MPa)[0][-1])
+
+
+def check_parameters(theta0_deg: float, L0_mm: float, mesh: str) -> None:
+    """Raise ``ValueError`` naming a model parameter outside its physical range."""
+    check_theta0(theta0_deg)
+    if not L0_mm > 0:
+        raise ValueError(f"L0_mm={L0_mm:g} is invalid: expected a length > 0 mm")
+    if mesh not in MESH_LEVELS:
+        raise ValueError(f"mesh={mesh!r} is invalid: expected one of {', '.join(MESH_LEVELS)}")
+
+
+def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0_deg: float,
+                    L0_mm: float = 282.0, mesh: str = "medium",
+                    material: MooneyRivlin = SILASTIC_S) -> dict[str, np.ndarray]:
+    """Isometric force of one muscle over a pressure sweep, by the axisymmetric FE model.
+
+    Parameters
+    ----------
+    pressure_bar : array_like
+        Gauge pressures [bar], any order, repeats allowed.
+    D0_mm, t0_mm : float
+        Inner diameter and wall thickness at rest [mm].
+    eps : float
+        Shortening ratio at which the cap is locked [fraction].
+    theta0_deg : float
+        Braid angle at rest, from the axis [deg].
+    L0_mm : float
+        Length at rest [mm] (282 in the paper).
+    mesh : {"coarse", "medium", "fine"}
+        Mesh level (:data:`fem.fe.mesh.MESH_LEVELS`).
+    material : MooneyRivlin
+        Wall material (default Silastic S, the paper's Equation 3).
+
+    Returns
+    -------
+    dict
+        Per pressure (in the order given): ``force_N`` (NaN where not converged),
+        ``converged``, ``iterations``, ``cutbacks``, ``residual`` (last Newton residual relative
+        to the step's first), ``min_tension_N_per_mm`` (braid), ``failure`` (empty when
+        converged); per sweep: ``threshold_pressure_bar`` (P*, force zero up to it) and ``dofs``.
+    """
+    check_parameters(theta0_deg, L0_mm, mesh)
+    P_bar = np.atleast_1d(np.asarray(pressure_bar, dtype=float))
+    half = HalfMuscle(D0_mm, t0_mm, L0_mm, theta0_deg, material, mesh)
+    levels = np.unique(P_bar)
+    out = {k: np.zeros(levels.size) for k in ("force_N", "iterations", "cutbacks", "residual",
+                                              "min_tension_N_per_mm")}
+    out["converged"] = np.zeros(levels.size, dtype=bool)
+    out["failure"] = np.full(levels.size, "", dtype=object)
+
+    # phase 1: free shortening to U* = -eps L0/2 gives the threshold pressure P*
+    y, threshold_MPa, report = half.rest_state(), 0.0, None
+    if eps > 0:
+        y, threshold_MPa, report = half.free_path(-eps * half.H)
+        failure = report.reason
+        if threshold_MPa < 0:
+            failure = (f"the braid passes its locking angle before eps={eps:g}: the free "
+                       f"muscle would need {threshold_MPa / BAR_TO_MPA:.3g} bar to shorten so far")
+        if failure:
+            out["force_N"][:] = np.nan
+            out["failure"][:] = f"threshold search failed: {failure}"
+            out["iterations"][:], out["cutbacks"][:] = report.iterations, report.cutbacks
+            out["residual"][:] = report.residual
+            return _per_point(out, levels, P_bar, np.nan, half.n)
+    below = levels * BAR_TO_MPA <= threshold_MPa
+    out["converged"][below] = True
+    if report is not None:
+        out["iterations"][below], out["residual"][below] = report.iterations, report.residual
+    # the threshold state may have a slack braid right at the clamped cap (a small negative
+    # tension at the corner node, the same on every mesh): it touches P* only, not the forces
+    # above P*, whose own states are checked (an elastic equilibrium is path-independent)
+    out["min_tension_N_per_mm"][below] = half.tension(y).min()
+
+    # phase 2: cap held at U*, pressure ramped from P* through the levels above it
+    above = np.flatnonzero(~below)
+    if above.size:
+        path = half.held_path(y, threshold_MPa, levels[above] * BAR_TO_MPA)
+        for i, (yy, report) in zip(above, path, strict=True):
+            out["iterations"][i], out["cutbacks"][i] = report.iterations, report.cutbacks
+            out["residual"][i] = report.residual
+            failure = report.reason
+            force = np.nan
+            if yy is not None:
+                failure = half.compression(yy)
+                force = half.cap_force(yy, levels[i] * BAR_TO_MPA)
+                out["min_tension_N_per_mm"][i] = half.tension(yy).min()
+            out["converged"][i] = not failure
+            out["force_N"][i] = np.nan if failure else force
+            out["failure"][i] = failure
+    return _per_point(out, levels, P_bar, threshold_MPa / BAR_TO_MPA, half.n)
+
+
+def _per_point(out, levels, P_bar, threshold_bar, dofs):
+    index = np.searchsorted(levels, P_bar)
+    result = {k: v[index] for k, v in out.items()}
+    result["threshold_pressure_bar"] = np.full(P_bar.size, threshold_bar)
+    result["dofs"] = np.full(P_bar.size, dofs)
+    return result
+
+
+class Axisym(CalibratedTheta0, ForceModel):
+    """Axisymmetric Taylor-Hood FE model of the whole muscle with isometric lock (``axisym``).
+
+    Parameters
+    ----------
+    theta0_deg : float, optional
+        Braid angle at rest [deg]. Default: the calibrated value in ``fem/calibration.json``.
+    L0_mm : float
+        Length at rest [mm]; 282 as in the paper.
+    mesh : {"coarse", "medium", "fine"}
+        Mesh level; ``medium`` is converged to 1 % of ``fine`` in force (see README).
+    material : MooneyRivlin
+        Wall material; default Silastic S (C10 = 0.0694 MPa, C01 = 0.0628 MPa).
+    """
+
+    name = "axisym"
+
+    def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
+                 mesh: str = "medium", material: MooneyRivlin = SILASTIC_S):
+        self.theta0_deg = theta0_deg
+        self.L0_mm = L0_mm
+        self.mesh = mesh
+        self.material = material
+
+    def params(self):
+        return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm, "mesh": self.mesh,
+                "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa}
+
+    def _forces(self, P, D0, t0, eps):
+        theta0 = self._theta0()
+        check_parameters(theta0, self.L0_mm, self.mesh)
+        geometry = np.stack([D0.ravel(), t0.ravel(), eps.ravel()], axis=1)
+        groups, which = np.unique(geometry, axis=0, return_inverse=True)
+        which = which.ravel()
+        out = {}
+        for g, (d, t, e) in enumerate(groups):
+            points = np.flatnonzero(which == g)
+            sweep = isometric_sweep(P.ravel()[points], d, t, e, theta0, self.L0_mm, self.mesh,
+                                    self.material)
+            for key, values in sweep.items():
+                if key not in out:
+                    out[key] = np.empty(P.size, dtype=values.dtype)
+                out[key][points] = values
+        return {k: v.reshape(P.shape) for k, v in out.items()}

@@ -1,0 +1,63 @@
+"""Parsers of numbers, fractions and ranges, shared by the command line, grids and bench configs.
+
+Each raises ``ValueError`` with a one-line message naming the bad text and what was expected.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+#: Most values a range may expand to: a staircase or a grid axis of more is a typo, not a plan
+#: (``0:1e12:1`` would allocate terabytes).
+MAX_RANGE_VALUES = 10_000
+
+
+def parse_number(text: str, name: str) -> float:
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}={text!r} is not a number") from None
+    if not np.isfinite(value):
+        raise ValueError(f"{name}={text!r} is not a finite number")
+    return value
+
+
+def parse_range(text: str, name: str) -> np.ndarray:
+    """``"start:stop:step"``, stop included (tolerant to round-off), as a float array."""
+    parts = text.strip().split(":")
+    if len(parts) != 3:
+        raise ValueError(f"{name} {text!r} is malformed: expected start:stop:step "
+                         "(for example 0:2.5:0.25)")
+    start, stop, step = (parse_number(p, name) for p in parts)
+    if step <= 0:
+        raise ValueError(f"{name} {text!r}: step {step:g} must be > 0")
+    if stop < start:
+        raise ValueError(f"{name} {text!r}: stop {stop:g} is below start {start:g}")
+    count = np.floor((stop - start) / step + 1e-9) + 1
+    if count > MAX_RANGE_VALUES:
+        raise ValueError(f"{name} {text!r} expands to {count:.3g} values: expected at most "
+                         f"{MAX_RANGE_VALUES}")
+    return np.round(start + step * np.arange(int(count)), 12)
+
+
+def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
+    """``"start:stop:step"`` or a comma list, in bar; gauge pressures >= 0."""
+    text = text.strip()
+    if ":" in text:
+        values = parse_range(text, name)
+    else:
+        if not text:
+            raise ValueError(f"{name} is empty: expected start:stop:step or a comma list")
+        values = np.array([parse_number(p, name) for p in text.split(",")])
+    if (values < 0).any():
+        raise ValueError(f"{name} {text!r} has a negative pressure "
+                         f"{values[values < 0][0]:g} bar: expected gauge pressures >= 0")
+    return values
+
+
+def parse_fraction(text: str, name: str = "--eps") -> float:
+    """A fraction (``0.05``) or a percentage (``5%``); both mean 0.05."""
+    text = text.strip()
+    if text.endswith("%"):
+        return parse_number(text[:-1], name) / 100.0
+    return parse_number(text, name)

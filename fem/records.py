@@ -1,0 +1,173 @@
+"""Records every generated file carries: provenance, atomic writes, source-code versions.
+
+One place for the plumbing that datasets, calibrations, run folders, caches, model files and
+reports share, so they cannot drift apart:
+
+- :func:`provenance`: library versions, command, machine and UTC date;
+- :func:`write_atomic` / :func:`write_json_atomic`: a reader (or a resumed job after a crash)
+  sees the old file or the new one, never half of one; files get the permissions of the user's
+  umask, like any file the user makes;
+- :func:`source_version`: package version plus a hash of the source of modules and of every
+  project module they import, read from the files (the same code gives the same version in every
+  process and on every Dask worker), and of the package data files they read;
+- :func:`package_file`: a data file shipped inside a package, found through
+  ``importlib.resources`` (works from a wheel, from any working directory).
+"""
+
+from __future__ import annotations
+
+import ast
+import datetime
+import hashlib
+import json
+import os
+import platform
+import sys
+import tempfile
+from functools import cache
+from importlib.metadata import PackageNotFoundError, version
+from importlib.resources import files
+from importlib.util import find_spec, resolve_name
+from pathlib import Path
+from typing import Any
+
+PROJECT_PACKAGES = ("fem", "bench", "surrogate", "mkm")
+RECORDED_LIBRARIES = ("mkm-bench", "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas")
+
+
+def package_version() -> str:
+    try:
+        return version("mkm-bench")
+    except PackageNotFoundError:  # run from a source tree that was never installed
+        return "0+unknown"
+
+
+def provenance() -> dict[str, Any]:
+    """Library versions, command line, machine and UTC date, recorded with every generated file."""
+    info = {"date_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
+            "command": " ".join(sys.argv), "machine": platform.machine(),
+            "versions": {"python": platform.python_version()}}
+    for pkg in RECORDED_LIBRARIES:
+        try:
+            info["versions"][pkg] = version(pkg)
+        except PackageNotFoundError:
+            info["versions"][pkg] = "not installed"
+    return info
+
+
+def package_file(package: str, *parts: str) -> Path:
+    """Path of a data file shipped inside ``package`` (``package_file("fem", "data", "x.csv")``)."""
+    return Path(str(files(package).joinpath(*parts)))
+
+
+def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
+    """Write ``data`` (text as UTF-8) to ``path`` through a temporary file and ``os.replace``.
+
+    The file is synced before the rename, so a power loss leaves the old file or the new one;
+    its permissions follow the umask (``mkstemp`` alone would make it private to its writer).
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    umask = os.umask(0)
+    os.umask(umask)
+    try:
+        os.chmod(tmp, 0o666 & ~umask)
+        with os.fdopen(fd, "wb") as f:
+            f.write(data.encode("utf-8") if isinstance(data, str) else data)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def write_json_atomic(path: str | os.PathLike, data: Any) -> Path:
+    """:func:`write_atomic` of ``data`` as indented JSON (numpy values as lists or text)."""
+    return write_atomic(path, json.dumps(data, indent=2, default=jsonable) + "\n")
+
+
+def jsonable(value):
+    """``json.dumps`` default: numpy arrays and scalars as lists and numbers, else ``str``."""
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    return str(value)
+
+
+@cache
+def source_version(*modules: str) -> str:
+    """``<package version>+<hash>`` of ``modules``, every project module they import at any depth
+    (read from the source, not from ``sys.modules``), and the ``*.json`` data files of each
+    package directory involved (the calibration): editing the physics, a material constant or the
+    calibration changes the version; editing a report does not."""
+    packages = set(PROJECT_PACKAGES) | {m.split(".")[0] for m in modules}
+    sources: dict[str, bytes] = {}
+    stack = list(modules)
+    while stack:
+        module = stack.pop()
+        if module in sources:
+            continue
+        spec = find_spec(module)
+        if spec is None or not spec.origin or not spec.origin.endswith(".py"):
+            continue
+        sources[module] = Path(spec.origin).read_bytes()
+        package = spec.name if spec.submodule_search_locations else spec.parent
+        for node in ast.walk(ast.parse(sources[module])):
+            if isinstance(node, ast.Import):
+                names = [alias.name for alias in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                base = resolve_name("." * node.level + (node.module or ""), package)
+                names = [base] + [f"{base}.{alias.name}" for alias in node.names]
+            else:
+                continue
+            stack.extend(n for n in names if n.split(".")[0] in packages
+                         and n not in sources and _is_module(n))
+    data_files = set()
+    for module in sources:
+        origin = Path(find_spec(module).origin)
+        data_files |= set(origin.parent.glob("*.json"))
+    digest = hashlib.sha256()
+    for module in sorted(sources):
+        digest.update(module.encode() + b"\0" + sources[module])
+    for path in sorted(data_files):
+        digest.update(path.name.encode() + b"\0" + path.read_bytes())
+    return f"{package_version()}+{digest.hexdigest()[:12]}"
+
+
+def _is_module(name: str) -> bool:
+    try:
+        return find_spec(name) is not None
+    except (ImportError, ValueError):  # "fem.calibration.calibrated": a name, not a module
+        return False
+
+
+def file_sha256(path: str | os.PathLike) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def write_prediction_csv(prediction, buf) -> None:
+    """CSV of a prediction with a ``#`` comment header naming the model, parameters and timing.
+
+    Read back with ``pandas.read_csv(path, comment="#")``; :func:`read_prediction_header` parses
+    the header.
+    """
+    header = {"model": prediction.model, "params": prediction.params,
+              "seconds": prediction.seconds, "n_points": int(prediction.force_N.size),
+              **provenance()}
+    for key, value in header.items():
+        buf.write(f"# {key}: {json.dumps(value)}\n")
+    prediction.to_frame().to_csv(buf, index=False, float_format="%.6g", lineterminator="\n")
+
+
+def read_prediction_header(path) -> dict[str, Any]:
+    """The ``# key: json`` header of a CSV written by :func:`write_prediction_csv`."""
+    header = {}
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if not line.startswith("# "):
+                break
+            key, _, value = line[2:].partition(": ")
+            header[key] = json.loads(value)
+    return header

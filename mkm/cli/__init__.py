@@ -1,0 +1,59 @@
+"""The ``mkm`` command line: one module per command group, each only parses arguments and calls
+one library function.
+
+Bad input (a ``ValueError`` from the library or a malformed argument) prints one line
+``mkm: error: ...`` and exits with status 2, without a traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+
+from mkm import __version__
+from mkm.cli import bench, fem, models, surrogate, validation
+
+
+class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # "-5%" and "-1,0" are values (reported as bad values), not unknown options; argparse
+        # only treats plain negative numbers so and has no public setting for it
+        self._negative_number_matcher = re.compile(r"^-\.?\d")
+
+    def error(self, message):  # one line, no usage dump
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="mkm", description="McKibben muscle bench toolkit: acquire forces, "
+                     "predict them with physics and surrogate models, validate.")
+    parser.add_argument("--version", action="version", version=f"mkm {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
+                                parser_class=_Parser)
+    for group in (bench, fem, surrogate, validation, models):
+        group.register(sub)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except ValueError as exc:
+        print(f"mkm: error: {exc}", file=sys.stderr)
+        return 2
+    except BrokenPipeError:  # `mkm ... | head`: the reader left, which is not an error
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
+    except KeyboardInterrupt:
+        print("mkm: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,150 @@
+"""``mkm acquire``, ``mkm tare``, ``mkm calibrate-loadcell``, ``mkm check``: argument parsing only.
+
+Hardware failures (:class:`bench.backend.BenchError`) print one line ``mkm: error: ...`` and exit
+with status 1; bad input is a ``ValueError`` (status 2, handled by ``mkm.cli.main``).
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+
+from bench.backend import BenchError
+from fem.ranges import parse_fraction, parse_number, parse_pressures
+from mkm.cli.common import argtype
+
+EXIT_FAILED = 1
+EXIT_INTERRUPTED = 130
+
+
+def _positive_seconds(text: str) -> float:
+    value = parse_number(text, "--seconds")
+    if value <= 0:
+        raise ValueError(f"--seconds {text!r} is invalid: expected a duration > 0 s")
+    return value
+
+
+def _masses(text: str) -> list[float]:
+    values = [parse_number(t, "--masses") for t in text.split(",")]
+    if any(v < 0 for v in values):
+        raise ValueError(f"--masses {text!r} has a negative mass: expected kg >= 0")
+    return values
+
+
+def _volts(text: str) -> list[float]:
+    return [parse_number(t, "--volts") for t in text.split(",")]
+
+
+def _add_device_arguments(parser, clock: bool = True) -> None:
+    parser.add_argument("--config", help="bench TOML file (default: the packaged paper "
+                        "prototype on the simulated bench, bench/configs/paper_prototype.toml)")
+    parser.add_argument("--backend", choices=("sim", "ni"), default="sim",
+                        help="simulated bench or NI USB-6001 through nidaqmx (default %(default)s)")
+    if clock:
+        parser.add_argument("--clock", choices=("virtual", "real"), default="virtual",
+                            help="sim only: virtual time (instant) or real time "
+                                 "(default %(default)s)")
+
+
+def register(subparsers) -> None:
+    acquire = subparsers.add_parser("acquire", help="record a pressure staircase on the bench")
+    _add_device_arguments(acquire)
+    acquire.add_argument("--eps", type=argtype(parse_fraction),
+                         help="shortening ratio, fraction or percent (default: from the config)")
+    acquire.add_argument("--pressures", type=argtype(parse_pressures),
+                         help="start:stop:step in bar or a comma list (default: from the config)")
+    acquire.add_argument("--out", default="data/experimental",
+                         help="folder that receives the run folder (default %(default)s)")
+    acquire.add_argument("--plot", action="store_true", help="live plot in a separate window")
+    acquire.add_argument("--no-progress", action="store_true", help="no progress bar")
+    acquire.set_defaults(func=_acquire)
+
+    tare = subparsers.add_parser("tare", help="load-cell offset at 0 bar")
+    _add_device_arguments(tare)
+    tare.add_argument("--seconds", type=argtype(_positive_seconds), default=5.0,
+                      help="averaging time [s] (default %(default)s)")
+    tare.set_defaults(func=_tare)
+
+    cal = subparsers.add_parser("calibrate-loadcell",
+                                help="fit N/V and offset from known masses")
+    _add_device_arguments(cal)
+    cal.add_argument("--masses", required=True, type=argtype(_masses),
+                     help="comma list of masses [kg] hung in turn, e.g. 0,1,2,5")
+    cal.add_argument("--volts", type=argtype(_volts),
+                     help="mean volts measured under each mass: fit these, no acquisition")
+    cal.add_argument("--seconds", type=argtype(_positive_seconds), default=3.0,
+                     help="averaging time per mass [s] (default %(default)s)")
+    cal.set_defaults(func=_calibrate_loadcell)
+
+    check = subparsers.add_parser("check", help="dry run: device, limits, planned steps, duration")
+    _add_device_arguments(check, clock=False)
+    check.add_argument("--eps", type=argtype(parse_fraction), help="shortening ratio override")
+    check.add_argument("--pressures", type=argtype(parse_pressures), help="pressures override")
+    check.set_defaults(func=_check)
+
+
+def _failed(exc: BenchError) -> int:
+    print(f"mkm: error: {exc}", file=sys.stderr)
+    return EXIT_FAILED
+
+
+def _acquire(args) -> int:
+    from bench.config import load_config
+    from bench.run import acquire
+
+    config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
+    result = acquire(config, backend=args.backend, clock=args.clock, out_root=args.out,
+                     progress=not args.no_progress, plot=args.plot)
+    if result.path is None:
+        print(f"mkm: error: {result.reason}", file=sys.stderr)
+        return EXIT_FAILED
+    print(f"run {result.status}: {result.reason}", file=sys.stderr)
+    print(result.path)
+    if result.status == "complete":
+        return 0
+    return EXIT_INTERRUPTED if "Ctrl-C" in result.reason else EXIT_FAILED
+
+
+def _tare(args) -> int:
+    from bench.config import load_config
+    from bench.procedures import tare
+
+    try:
+        out = tare(load_config(args.config), args.backend, args.clock, args.seconds)
+    except BenchError as exc:
+        return _failed(exc)
+    print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
+          f"{out['std_N']:.2f} N, n = {out['n']}); {out['shift_from_config_N']:+.2f} N from the "
+          "config's offset_V")
+    return 0
+
+
+def _calibrate_loadcell(args) -> int:
+    from bench.config import load_config
+    from bench.procedures import calibrate_loadcell, fit_loadcell
+
+    if args.volts is not None:
+        out = fit_loadcell(args.masses, args.volts)
+    else:
+        try:
+            out = calibrate_loadcell(load_config(args.config), args.masses, args.backend,
+                                     args.clock, args.seconds)
+        except BenchError as exc:
+            return _failed(exc)
+    print(f"sensitivity_N_per_V = {out['sensitivity_N_per_V']:.4f}, offset_V = "
+          f"{out['offset_V']:.5f} (R^2 {out['r_squared']:.6f}, largest residual "
+          f"{out['max_abs_residual_N']:.3f} N over {out['n_points']} masses)")
+    print(json.dumps(out, indent=2))
+    return 0
+
+
+def _check(args) -> int:
+    from bench.config import load_config
+    from bench.procedures import check
+
+    config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
+    try:
+        print(check(config, args.backend))
+    except BenchError as exc:
+        return _failed(exc)
+    return 0

@@ -1,0 +1,76 @@
+"""Arguments and output shared by the ``mkm`` subcommands."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from fem.ranges import parse_fraction, parse_number, parse_pressures
+from fem.records import write_prediction_csv
+from mkm.registry import ENTRIES, parse_spec
+
+
+def argtype(parse, *args):
+    """Wrap a ``fem.ranges`` parser for argparse, keeping its one-line message."""
+
+    def convert(text):
+        try:
+            return parse(text, *args)
+        except ValueError as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    convert.__name__ = parse.__name__
+    return convert
+
+
+def add_model_arguments(parser, theta0: bool = True) -> None:
+    parser.add_argument("--model", default="eq2", help=f"predictor spec: one of "
+                        f"{', '.join(ENTRIES)}, with :key=value parameters (see `mkm models`); "
+                        "default %(default)s")
+    if theta0:
+        parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+                            help="braid angle at rest [deg] (default: calibrated)")
+    parser.add_argument("--diameter", choices=("inner", "braid"),
+                        help="eq2 only: diameter convention (default inner, as the paper)")
+    parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
+                        help="muscle length at rest [mm] (default 282)")
+    parser.add_argument("--mesh", choices=("coarse", "medium", "fine"),
+                        help="axisym only: FE mesh level (default medium)")
+
+
+def add_geometry_arguments(parser) -> None:
+    parser.add_argument("--D0", required=True, type=argtype(parse_number, "--D0"),
+                        help="inner tube diameter [mm]")
+    parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0"),
+                        help="wall thickness [mm]")
+    parser.add_argument("--eps", required=True, type=argtype(parse_fraction),
+                        help="shortening ratio, a fraction (0.05) or a percentage (5%%)")
+    parser.add_argument("--pressures", default="0:2.5:0.25", type=argtype(parse_pressures),
+                        help="start:stop:step in bar (stop included) or a comma list")
+
+
+def model_from_args(args, **overrides):
+    """The predictor of ``--model SPEC`` with the shortcut flags (``--mesh``, ``--theta0``, ...)
+    laid over the spec's own parameters; a flag the predictor does not take is an error."""
+    spec = parse_spec(args.model)
+    flags = {"theta0_deg": getattr(args, "theta0", None),
+             "diameter": getattr(args, "diameter", None), "L0_mm": getattr(args, "L0", None),
+             "tolerance": getattr(args, "tolerance", None), "mesh": getattr(args, "mesh", None)}
+    flags.update(overrides)
+    flags = {k: v for k, v in flags.items() if v is not None}
+    unknown = sorted(set(flags) - set(spec.entry.params))
+    if unknown:
+        raise ValueError(f"--model {spec.text}: {spec.name} takes no "
+                         f"{', '.join(unknown)} (its parameters: "
+                         f"{', '.join(spec.entry.params)})")
+    return spec.with_params(**flags).build()
+
+
+def emit_prediction(prediction, out: str | None) -> None:
+    """The prediction's CSV to ``out`` (announced on stderr) or to stdout."""
+    if out:
+        with open(out, "w", encoding="utf-8", newline="") as f:
+            write_prediction_csv(prediction, f)
+        print(f"wrote {out}", file=sys.stderr)
+    else:
+        write_prediction_csv(prediction, sys.stdout)

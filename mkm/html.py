@@ -1,0 +1,82 @@
+"""HTML of the reports: one self-contained page (inline CSS, figures as base64 PNG)."""
+
+from __future__ import annotations
+
+import base64
+import html
+from pathlib import Path
+
+import pandas as pd
+
+CSS = """
+body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;max-width:1150px;
+margin:1.5em auto;padding:0 1em;color:#222;line-height:1.45}
+h1{font-size:1.6em;border-bottom:2px solid #333}h2{margin-top:1.8em;border-bottom:1px solid #aaa}
+table{border-collapse:collapse;margin:.6em 0;font-size:.9em}
+th,td{border:1px solid #bbb;padding:.25em .6em;text-align:right}
+th{background:#eee}td:first-child,th:first-child{text-align:left}
+figure{margin:1em 0}figure img{max-width:100%;height:auto;border:1px solid #ddd}
+figcaption,.caption{font-size:.85em;color:#444}
+.status{padding:.4em .8em;border-radius:4px;font-weight:600;display:inline-block}
+.status-complete{background:#d9f0d3}.status-other{background:#fdd;border:1px solid #c00}
+.note{background:#fff8e1;border-left:4px solid #f0b400;padding:.4em .8em}
+pre{background:#f6f6f6;padding:.6em;overflow-x:auto;font-size:.8em;white-space:pre-wrap}
+dl.kv{display:grid;grid-template-columns:max-content auto;gap:.1em 1em}dl.kv dt{font-weight:600}
+dl.kv dd{margin:0}
+@media print{body{max-width:none;margin:0;font-size:10pt}h2{page-break-after:avoid}
+figure,table,.run-head{page-break-inside:avoid}pre{font-size:7pt}}
+"""
+
+
+def flatten(value, prefix: str = "") -> str:
+    """``a.b = 1.23, a.c = x`` from nested metadata, numbers to 4 significant digits."""
+    if isinstance(value, dict):
+        return ", ".join(flatten(v, f"{prefix}{k}.") for k, v in value.items()) or "none"
+    text = f"{value:.4g}" if isinstance(value, float) else str(value)
+    return f"{prefix[:-1]} = {text}" if prefix else text
+
+
+def esc(value) -> str:
+    return html.escape(str(value))
+
+
+def png_data_uri(path: Path) -> str:
+    return "data:image/png;base64," + base64.b64encode(Path(path).read_bytes()).decode("ascii")
+
+
+def figure_html(path: Path, caption: str) -> str:
+    return (f'<figure><img src="{png_data_uri(path)}" alt="{esc(caption)}">'
+            f"<figcaption>{caption}</figcaption></figure>")
+
+
+def table_html(df: pd.DataFrame, caption: str, digits: int = 2,
+               formats: dict[str, str] | None = None) -> str:
+    """An HTML table; floats with ``digits`` decimals unless ``formats`` gives a column's spec
+    (seconds span six decades: ``{"time [s]": ".3g"}``)."""
+    formats = {"time [s]": ".3g", "seconds_per_point": ".3g"} | (formats or {})
+    formatters = {c: (lambda v, f=f: "—" if pd.isna(v) else format(v, f))
+                  for c, f in formats.items() if c in df.columns}
+    body = df.to_html(index=False, border=0, na_rep="—", escape=True, formatters=formatters,
+                      float_format=lambda v: f"{v:.{digits}f}")
+    return f'<div class="table">{body}<p class="caption">{caption}</p></div>'
+
+
+def provenance_links(keys) -> str:
+    return "Provenance: " + ", ".join(f'<a href="#prov-{esc(k)}">{esc(k)}</a>' for k in keys)
+
+
+def html_page(title: str, body: str) -> str:
+    return (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+            f'<meta name="viewport" content="width=device-width, initial-scale=1">'
+            f"<title>{esc(title)}</title><style>{CSS}</style></head>"
+            f"<body><h1>{esc(title)}</h1>{body}</body></html>\n")
+
+
+def save_figure(fig, path: Path) -> Path:
+    fig.savefig(path, dpi=110)
+    return path
+
+
+def kv_html(pairs: dict) -> str:
+    return ('<dl class="kv">' + "".join(f"<dt>{esc(k)}</dt><dd>{esc(v)}</dd>"
+                                        for k, v in pairs.items()) + "</dl>")

@@ -1,0 +1,430 @@
+"""The speed-against-accuracy study and the stability maps (``mkm study``).
+
+Speed against accuracy: every predictor (Equation 2 with both diameter conventions, the
+thick-wall model, the FE model at each mesh level, every surrogate kind including the paper's 27
+nets) predicts the pressure sweeps of the study muscles (the paper's test muscles I, II, III, a
+box of held-out geometries around the paper's grid, and the bench prototype at eps = 12.2 %);
+its error is the paper's Equation 7 against the reference, the finest FE mesh, on the points
+where the reference converged; its cost is seconds per predicted force, timed in this run on
+this machine. The Pareto front is the set of predictors that no other beats in both.
+
+Stability: each method over a grid of pressure and eps for the smallest and the largest muscle
+of the paper's grid, classified per point (valid, invalid by the model's own limit, not
+converged, outside the training domain, negative, falling with pressure).
+
+The point-by-point errors go to ``mkm/data/model_errors.csv``, the table the ``auto`` model reads.
+FE sweeps go through :mod:`mkm.prediction_cache`; FE timings are measured afresh on muscle I
+in every run, so a warm cache never reports stale speeds.
+"""
+
+from __future__ import annotations
+
+import json
+import platform
+import time
+import warnings
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from fem.interface import ForceModel, Prediction
+from fem.records import provenance
+from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
+from mkm.figures import speed_accuracy_figure, stability_figure
+from mkm.html import esc, figure_html, html_page, save_figure, table_html
+from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
+from mkm.registry import parse_spec
+
+STUDY_PRESSURES = tuple(np.round(np.arange(0.0, 2.5001, 0.25), 2))  # the paper's test sweep
+# name, D0 [mm], t0 [mm], eps, role. I-III: the paper's test muscles (section 3.3); H1-H8 a box
+# just inside the corners of the paper's grid (D0 30-50, t0 2-4, eps 0-0.2), none on it, so
+# surrogates are scored on geometries they were not trained on; P12 the bench prototype
+# (D0 30, t0 3) at the paper's eps = 12.2 %.
+STUDY_MUSCLES = (
+    ("I", 35.0, 2.5, 0.05, "test"), ("II", 40.0, 3.0, 0.15, "test"),
+    ("III", 45.0, 3.5, 0.20, "test"),
+    *((f"H{1 + i}", d, t, e, "held-out") for i, (d, t, e) in enumerate(
+        (d, t, e) for d in (32.0, 48.0) for t in (2.2, 3.8) for e in (0.02, 0.18))),
+    ("P12", 30.0, 3.0, 0.122, "prototype"),
+)
+STABILITY_MUSCLES = (("smallest: D0 30 mm, t0 2 mm", 30.0, 2.0),
+                     ("largest: D0 50 mm, t0 4 mm", 50.0, 4.0))
+STABILITY_PRESSURES = tuple(np.round(np.arange(0.0, 4.0001, 0.25), 2))
+STABILITY_EPS = tuple(np.round(np.arange(0.0, 0.3501, 0.05), 3))
+FORCE_NOISE_N = 0.1  # a tenth of a newton: below what the bench resolves, so not physics
+
+
+@dataclass
+class Predictor:
+    """A model in the study: display label, family, how to build it, and its spec for ``auto``
+    (JSON understood by :func:`mkm.auto.make_candidate`; empty: auto does not use it)."""
+
+    label: str
+    family: str
+    build: Callable[[], ForceModel]
+    spec: str = ""
+    cached: bool = False
+
+
+def registry_predictor(label: str, spec: str, cached: bool = False) -> Predictor:
+    """A study predictor from a registry spec (``axisym:mesh=coarse``); ``auto`` may use it."""
+    parsed = parse_spec(spec)
+    return Predictor(label, parsed.entry.family, parsed.build, parsed.text, cached)
+
+
+def physics_predictors() -> list[Predictor]:
+    """Equation 2 (both diameters), thick-wall, and the FE model at every mesh level."""
+    from fem.fe.mesh import MESH_LEVELS
+
+    return [registry_predictor("eq2-inner", "eq2:diameter=inner"),
+            registry_predictor("eq2-braid", "eq2:diameter=braid"),
+            registry_predictor("thickwall", "thickwall"),
+            *(registry_predictor(f"axisym-{m}", f"axisym:mesh={m}", cached=True)
+              for m in MESH_LEVELS)]
+
+
+def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR,
+                         n_jobs: int = 2) -> list[Predictor]:
+    """Every surrogate kind trained on ``dataset`` (default: the shipped one): the default kind
+    (usable by auto), the other named kinds, the paper's 27 nets and their standardised-force
+    variants. Kinds not yet in ``cache_dir`` are trained first, ``n_jobs`` at a time."""
+    from surrogate.estimators import BEST, kind_names
+    from surrogate.train import default_model
+    from surrogate.training_data import DEFAULT_DATASET
+
+    dataset = dataset or DEFAULT_DATASET
+    kinds = [kind for kind in kind_names(include_nets=True) if kind != BEST]
+    if cache_dir is not None:
+        train_surrogates(kinds, dataset, cache_dir, n_jobs)
+    out = [Predictor(f"surrogate-{BEST}", "surrogate", lambda: default_model(dataset),
+                     "surrogate")]
+    for kind in kinds:
+        family = ("surrogate" if not kind.startswith("net-") else
+                  "paper net, standardised force" if kind.endswith("standardised")
+                  else "paper net")
+        out.append(Predictor(f"surrogate-{kind}", family,
+                             lambda kind=kind: trained_surrogate(kind, dataset, cache_dir)))
+    return out
+
+
+def trained_surrogate(kind: str, dataset, cache_dir=DEFAULT_CACHE_DIR) -> ForceModel:
+    """Surrogate ``kind`` fitted once on the whole ``dataset`` (no split metrics: the study
+    scores on its own muscles), from the surrogate package's one cache unless ``cache_dir`` is
+    None (no cache). One BLAS thread: on two shared cores threaded BLAS in two processes made
+    training several times slower."""
+    from threadpoolctl import threadpool_limits
+
+    from surrogate.train import cached_model, train_surrogate
+
+    with threadpool_limits(1), warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # ConvergenceWarning of the paper's nets: reproduced
+        if cache_dir is None:
+            return train_surrogate(kind, dataset, seeds=())
+        return cached_model(kind, dataset, seeds=())
+
+
+def train_surrogates(kinds, dataset, cache_dir, n_jobs: int = 2) -> None:
+    """Train the ``kinds`` not yet cached, ``n_jobs`` processes at a time."""
+    from joblib import Parallel, delayed
+
+    Parallel(n_jobs=n_jobs)(delayed(trained_surrogate)(kind, dataset, cache_dir)
+                            for kind in kinds)
+
+
+@dataclass
+class StudyConfig:
+    """What the study measures; the defaults are the study of the README."""
+
+    muscles: tuple = STUDY_MUSCLES
+    pressures: tuple = STUDY_PRESSURES
+    # called with the cache folder (None: no cache), where the study keeps trained surrogates
+    predictors: Callable[[Path | str | None], list[Predictor]] = field(
+        default=lambda cache_dir: physics_predictors() + surrogate_predictors(
+            cache_dir=cache_dir))
+    reference: str = "axisym-fine"
+    stability_methods: tuple = ("eq2-inner", "eq2-braid", "thickwall", "axisym-medium",
+                                "surrogate-physics", "surrogate-mlp-paper")
+    stability_muscles: tuple = STABILITY_MUSCLES
+    stability_pressures: tuple = STABILITY_PRESSURES
+    stability_eps: tuple = STABILITY_EPS
+    timing_muscle: str = "I"
+
+
+def machine_name() -> str:
+    """CPU model, cores and Python, so timings are read against the machine that made them."""
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    import os
+
+    return f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}"
+
+
+def _predict(p: Predictor, model: ForceModel, muscle, pressures, cache_dir):
+    args = (np.asarray(pressures, float), muscle[1], muscle[2], muscle[3])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # out-of-domain is recorded per point, not shouted
+        if p.cached:
+            return cached_predict(model, *args, cache_dir=cache_dir)
+        return model.predict(*args), False
+
+
+def measure_errors(config: StudyConfig, predictors: list[Predictor],
+                   models: dict[str, ForceModel], cache_dir) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """Point-by-point errors of every predictor against the reference, and its timing rows."""
+    by_label = {p.label: p for p in predictors}
+    if config.reference not in by_label:
+        raise ValueError(f"reference {config.reference!r} is not among the predictors: "
+                         f"expected one of {', '.join(by_label)}")
+    reference = {m[0]: _predict(by_label[config.reference], models[config.reference], m,
+                                config.pressures, cache_dir)[0] for m in config.muscles}
+    rows, timings = [], []
+    for p in predictors:
+        model = models[p.label]
+        for muscle in config.muscles:
+            if p.label == config.reference:
+                pred, cached = reference[muscle[0]], True
+            else:
+                pred, cached = _predict(p, model, muscle, config.pressures, cache_dir)
+            rows.append(_error_rows(p, pred, reference[muscle[0]], muscle))
+            if not cached:
+                timings.append({"predictor": p.label, "muscle": muscle[0],
+                                "seconds_per_point": pred.seconds / pred.force_N.size})
+        if p.cached:  # time the FE afresh on one muscle: the cache holds old timings
+            muscle = next(m for m in config.muscles if m[0] == config.timing_muscle)
+            pred = model.predict(np.asarray(config.pressures, float), *muscle[1:4])
+            timings.append({"predictor": p.label, "muscle": muscle[0],
+                            "seconds_per_point": pred.seconds / pred.force_N.size})
+    return pd.concat(rows, ignore_index=True), pd.DataFrame(timings)
+
+
+def _error_rows(p: Predictor, pred: Prediction, ref: Prediction, muscle) -> pd.DataFrame:
+    ok_ref = np.ravel(ref.valid)
+    scale = np.nanmax(np.where(ok_ref, np.ravel(ref.force_N), np.nan))
+    valid = np.ravel(pred.valid)
+    force = np.where(valid, np.ravel(pred.force_N), np.nan)
+    err = 100.0 * (np.ravel(ref.force_N) - force) / scale
+    return pd.DataFrame({
+        "predictor": p.label, "family": p.family, "spec": p.spec, "muscle": muscle[0],
+        "role": muscle[4], "D0_mm": muscle[1], "t0_mm": muscle[2], "eps": muscle[3],
+        "pressure_bar": np.ravel(pred.pressure_bar),
+        "force_ref_N": np.where(ok_ref, np.ravel(ref.force_N), np.nan), "force_N": force,
+        "valid": valid, "err_pct": np.where(ok_ref, err, np.nan),
+    })
+
+
+def summarise(errors: pd.DataFrame, timings: pd.DataFrame, reference: str) -> pd.DataFrame:
+    """One row per predictor: seconds per force, largest |Err%| (all, test, held-out), RMSE,
+    valid share, and whether it is on the Pareto front."""
+    speed = timings.groupby("predictor")["seconds_per_point"].median()
+    rows = []
+    for label, g in errors.groupby("predictor", sort=False):
+        scored = g[g["force_ref_N"].notna()]
+        ok = scored[scored["valid"]]
+        rows.append({
+            "predictor": label, "family": g["family"].iloc[0],
+            "seconds_per_point": float(speed.get(label, np.nan)),
+            "max_abs_err_pct": ok["err_pct"].abs().max() if label != reference else 0.0,
+            "max_abs_err_pct_test": ok.loc[ok["role"] == "test", "err_pct"].abs().max(),
+            "max_abs_err_pct_held_out": ok.loc[ok["role"] != "test", "err_pct"].abs().max(),
+            "rmse_N": float(np.sqrt(np.mean((ok["force_ref_N"] - ok["force_N"]) ** 2))),
+            "valid_share": len(ok) / max(len(scored), 1),
+        })
+    summary = pd.DataFrame(rows)
+    # A predictor invalid somewhere in the study cannot answer every scene: not on the front.
+    complete = summary["valid_share"] >= 1.0
+    summary["pareto"] = complete & pareto_front(summary["seconds_per_point"].to_numpy(),
+                                                summary["max_abs_err_pct"].to_numpy())
+    return summary
+
+
+def pareto_front(cost: np.ndarray, error: np.ndarray) -> np.ndarray:
+    """True for the points no other point beats in both cost and error (ties kept)."""
+    cost, error = np.asarray(cost, float), np.asarray(error, float)
+    front = np.isfinite(cost) & np.isfinite(error)
+    for i in np.flatnonzero(front):
+        others = np.isfinite(cost) & np.isfinite(error)
+        dominated = others & (cost <= cost[i]) & (error <= error[i]) & (
+            (cost < cost[i]) | (error < error[i]))
+        front[i] = not dominated.any()
+    return front
+
+
+def stability_cells(p: Predictor, model: ForceModel, config: StudyConfig,
+                    cache_dir) -> pd.DataFrame:
+    """Status of every (muscle, eps, pressure) point of the stability grid for one method."""
+    frames = []
+    P = np.asarray(config.stability_pressures, float)
+    for name, D0, t0 in config.stability_muscles:
+        for e in config.stability_eps:
+            try:
+                pred, _ = _predict(p, model, (name, D0, t0, e), P, cache_dir)
+            except ValueError as exc:  # the model refuses the input: its own limit
+                frames.append(pd.DataFrame({"method": p.label, "muscle": name, "eps": e,
+                                            "pressure_bar": P, "force_N": np.nan,
+                                            "status": "invalid (model's own limit)",
+                                            "cutbacks": 0, "message": str(exc)}))
+                continue
+            message = np.ravel(pred.extras.get("failure", np.full(P.size, "")))
+            frames.append(pd.DataFrame({"method": p.label, "muscle": name, "eps": e,
+                                        "pressure_bar": P, "force_N": np.ravel(pred.force_N),
+                                        "status": classify(pred), "message": message,
+                                        "cutbacks": np.ravel(pred.extras.get(
+                                            "cutbacks", np.zeros(P.size))).astype(int)}))
+    return pd.concat(frames, ignore_index=True)
+
+
+def classify(pred: Prediction) -> np.ndarray:
+    """Per point of one pressure sweep: the first failure that applies, or "ok"."""
+    force = np.ravel(pred.force_N)
+    order = np.argsort(np.ravel(pred.pressure_bar), kind="stable")
+    falls = np.zeros(force.size, dtype=bool)
+    sorted_force = force[order]
+    drop = np.diff(sorted_force) < -FORCE_NOISE_N
+    falls[order[1:]] = drop
+    status = np.full(force.size, "ok", dtype=object)
+    status[falls] = "force falls with pressure"
+    status[force < -FORCE_NOISE_N] = "negative force"
+    in_domain = np.ravel(pred.extras.get("in_domain", np.ones(force.size, dtype=bool)))
+    status[~np.ravel(pred.valid)] = "invalid (model's own limit)"
+    status[~in_domain] = "out of training domain"
+    status[~np.ravel(pred.converged)] = "not converged"
+    return status
+
+
+def write_model_errors(errors: pd.DataFrame, timings: pd.DataFrame, path: Path,
+                       info: dict) -> None:
+    """The table ``auto`` reads: one row per predictor usable by auto, muscle and pressure."""
+    speed = timings.groupby("predictor")["seconds_per_point"].median()
+    table = errors[errors["spec"] != ""].copy()
+    table["seconds_per_point"] = table["predictor"].map(speed)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", encoding="utf-8", newline="") as f:
+        f.write("# Model errors measured by `mkm study`: Err% (Equation 7 of Antonelli et al., "
+                "Actuators 2025, 14(3), 153) of each\n# predictor against the finest FE mesh "
+                "per study muscle and pressure, and seconds per predicted force on this "
+                "machine.\n")
+        for key, value in info.items():
+            f.write(f"# {key}: {json.dumps(value, default=str)}\n")
+        table.to_csv(f, index=False, float_format="%.6g", lineterminator="\n")
+    read_model_errors.cache_clear()
+
+
+def run_study(out_dir="reports/study", config: StudyConfig | None = None,
+              cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
+              table_path: Path | str | None = MODEL_ERRORS_FILE) -> Path:
+    """Run the study; write figures, CSVs and ``study.html`` into ``out_dir`` and the error
+    table for ``auto`` to ``table_path`` (None: do not write it). Returns the HTML path."""
+    start = time.perf_counter()
+    config = config or StudyConfig()
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    machine = machine_name()
+    info = {**provenance(), "machine_name": machine, "reference": config.reference,
+            "muscles": [list(m) for m in config.muscles],
+            "pressures_bar": list(config.pressures)}
+    predictors = config.predictors(cache_dir)
+    models = {p.label: p.build() for p in predictors}
+    errors, timings = measure_errors(config, predictors, models, cache_dir)
+    summary = summarise(errors, timings, config.reference)
+    info["predictors"] = {p.label: {"params": models[p.label].params(), "spec": p.spec,
+                                    "version": model_version(models[p.label])}
+                          for p in predictors}
+    errors.to_csv(out / "study_errors.csv", index=False, float_format="%.6g")
+    summary.to_csv(out / "speed_accuracy.csv", index=False, float_format="%.6g")
+    figures = [(save_figure(speed_accuracy_figure(summary, machine), out / "speed_accuracy.png"),
+                "Seconds per predicted force (log) against the largest |Err%| over the study "
+                "muscles (log), against the finest FE mesh; red: the Pareto front.")]
+
+    by_label = {p.label: p for p in predictors}
+    cells = []
+    for label in config.stability_methods:
+        if label not in by_label:
+            continue
+        p = by_label[label]
+        frame = stability_cells(p, models[label], config, cache_dir)
+        cells.append(frame)
+        safe = label.replace("/", "_")
+        figures.append((save_figure(stability_figure(frame, label), out / f"stability_{safe}.png"),
+                        f"Where {esc(label)} fails over pressure and eps."))
+    cells = pd.concat(cells, ignore_index=True) if cells else pd.DataFrame()
+    stability = stability_table(cells)
+    if not cells.empty:
+        cells.to_csv(out / "stability.csv", index=False, float_format="%.6g")
+        stability.to_csv(out / "stability_summary.csv", index=False)
+    elapsed = time.perf_counter() - start
+    info["study_seconds"] = round(elapsed, 1)
+    if table_path is not None:
+        write_model_errors(errors, timings, Path(table_path), info)
+    (out / "provenance.json").write_text(json.dumps(info, indent=1, default=str) + "\n")
+    body = (f"<p>Measured on {esc(machine)}; {esc(info['date_utc'])}; study time {elapsed:.0f} s "
+            f"(FE sweeps cached in {esc(cache_dir)}). Reference: {esc(config.reference)}; "
+            f"{len(config.muscles)} study muscles x {len(config.pressures)} pressures. Error: "
+            "the paper's Equation 7 over each muscle's sweep, in %.</p>"
+            f"<p><b>Pareto front</b> (fastest first): {esc(pareto_text(summary))}.</p>"
+            + figure_html(*figures[0])
+            + table_html(readable_summary(summary), "The named predictors and every one on the "
+                         "Pareto front; all of them, the 54 nets included, are in "
+                         "speed_accuracy.csv. Provenance: below.", digits=3)
+            + "<h2>Where methods fail</h2>"
+            + "".join(figure_html(path, caption) for path, caption in figures[1:])
+            + (table_html(stability, "Stability per method and muscle (stability_summary.csv)")
+               if not stability.empty else "")
+            + f"<h2>Provenance</h2><pre>{esc(json.dumps(info, indent=1, default=str))}</pre>")
+    path = out / "study.html"
+    path.write_text(html_page("Speed against accuracy, and where methods fail", body),
+                    encoding="utf-8")
+    return path
+
+
+def pareto_text(summary: pd.DataFrame) -> str:
+    """The front in words: each member with its cost and largest error."""
+    front = summary[summary["pareto"]].sort_values("seconds_per_point")
+    return "; ".join(f"{row.predictor} ({row.seconds_per_point:.2g} s per force, largest "
+                     f"|Err%| {row.max_abs_err_pct:.3g} %)" for row in front.itertuples())
+
+
+def readable_summary(summary: pd.DataFrame) -> pd.DataFrame:
+    """The summary for people: named predictors and the front, plain column names."""
+    nets = summary["family"].str.startswith("paper net")
+    rows = summary[~nets | summary["pareto"]].sort_values("seconds_per_point")
+    return pd.DataFrame({
+        "predictor": rows["predictor"], "family": rows["family"],
+        "s per force": rows["seconds_per_point"].map(lambda v: f"{v:.2g}"),
+        "largest |Err%|": rows["max_abs_err_pct"],
+        "test I-III": rows["max_abs_err_pct_test"],
+        "held-out": rows["max_abs_err_pct_held_out"], "RMSE [N]": rows["rmse_N"],
+        "valid [%]": 100 * rows["valid_share"], "Pareto": rows["pareto"].map({True: "yes",
+                                                                            False: ""}),
+    })
+
+
+def stability_table(cells: pd.DataFrame) -> pd.DataFrame:
+    """Per method and muscle: points per status, the smallest eps where something fails, and
+    the Newton cut-backs the converged points needed."""
+    if cells.empty:
+        return pd.DataFrame()
+    rows = []
+    for (method, muscle), g in cells.groupby(["method", "muscle"], sort=False):
+        counts = g["status"].value_counts()
+        failed = g[g["status"] != "ok"]
+        row = {"method": method, "muscle": muscle, "points": len(g)}
+        row.update({status: int(n) for status, n in counts.items()})
+        row["first failing eps [%]"] = (100 * failed["eps"].min()) if len(failed) else np.nan
+        row["cut-backs (converged points)"] = int(g.loc[g["status"] != "not converged",
+                                                        "cutbacks"].sum())
+        reasons = failed["message"].fillna("").astype(str)
+        row["failure reasons"] = "; ".join(sorted(set(reasons[reasons != ""]))) or ""
+        rows.append(row)
+    table = pd.DataFrame(rows)
+    statuses = [c for c in table.columns if c in set(cells["status"])]
+    table[statuses] = table[statuses].fillna(0).astype(int)
+    return table

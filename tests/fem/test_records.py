@@ -1,0 +1,46 @@
+"""Tests of fem/records.py: atomic writes, source versions, package files, provenance."""
+
+import os
+
+import pytest
+
+from fem import records
+
+
+def test_crash_while_writing_keeps_the_old_file(tmp_path, monkeypatch):
+    target = tmp_path / "job.json"
+    records.write_atomic(target, "old")
+    umask = os.umask(0)
+    os.umask(umask)
+    assert target.stat().st_mode & 0o777 == 0o666 & ~umask  # as open() would, not mkstemp's 0600
+
+    def crash(src, dst):
+        raise KeyboardInterrupt  # killed between writing the temporary file and renaming it
+
+    monkeypatch.setattr(records.os, "replace", crash)
+    with pytest.raises(KeyboardInterrupt):
+        records.write_atomic(target, "new")
+    assert target.read_text() == "old"
+    assert [p.name for p in tmp_path.iterdir()] == ["job.json"]
+
+
+def test_source_version_follows_imports_and_data(tmp_path):
+    # thickwall imports materials: editing a material constant must change the version
+    import fem.materials  # noqa: F401
+    from fem.records import source_version
+    version = source_version("fem.thickwall")
+    assert version.startswith(records.package_version() + "+")
+    assert version == source_version("fem.thickwall")  # read from the files: stable
+    assert version != source_version("fem.eq2")
+
+
+def test_package_files_exist():
+    assert records.package_file("fem", "data", "paper_case_I.csv").is_file()
+    assert records.package_file("surrogate", "data", "mkm_dataset.csv").is_file()
+    assert records.package_file("mkm", "data", "model_errors.csv").is_file()
+
+
+def test_provenance_names_versions_and_command():
+    info = records.provenance()
+    assert {"date_utc", "command", "versions", "machine"} <= set(info)
+    assert info["versions"]["numpy"] != "not installed"

@@ -1,0 +1,155 @@
+"""The `mkm` command line: parsing of pressures and eps, one-line errors with exit status 2."""
+
+import io
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from fem.calibration import CALIBRATION_FILE
+from fem.ladder import make_model, model_names
+from fem.paper import CASE_I_CSV
+from fem.records import read_prediction_header
+from mkm.cli import main
+
+CASE_I = CASE_I_CSV
+MODELS = ", ".join(model_names())  # grows as rungs are registered
+SOLVE = ["fem", "solve", "--model", "eq2", "--D0", "35", "--t0", "2.5"]
+
+
+def run(argv, capsys):
+    """Exit status, stdout and stderr of ``mkm argv`` run in-process."""
+    try:
+        code = main(argv)
+    except SystemExit as exc:  # argparse errors leave through parser.exit
+        code = exc.code
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def solve_frame(argv, capsys) -> pd.DataFrame:
+    code, out, err = run(argv, capsys)
+    assert code == 0, err
+    return pd.read_csv(io.StringIO(out), comment="#")
+
+
+def test_eps_as_percentage_equals_fraction(capsys):
+    percent = solve_frame([*SOLVE, "--eps", "5%"], capsys)
+    fraction = solve_frame([*SOLVE, "--eps", "0.05"], capsys)
+    assert np.all(percent.eps == 0.05)
+    pd.testing.assert_frame_equal(percent, fraction)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("0:2.5:0.25", np.linspace(0, 2.5, 11)),  # stop included
+    ("0:0.3:0.1", [0.0, 0.1, 0.2, 0.3]),  # 0.3 / 0.1 = 2.9999999999999996: round-off tolerated
+    ("1:2:0.4", [1.0, 1.4, 1.8]),  # stop not on the grid: not exceeded
+    ("0, 1.5,2.5", [0.0, 1.5, 2.5]),
+    ("2", [2.0]),
+])
+def test_pressures_range_and_list(text, expected, capsys):
+    frame = solve_frame([*SOLVE, "--eps", "0.05", "--pressures", text], capsys)
+    np.testing.assert_allclose(frame.pressure_bar, expected, rtol=0, atol=1e-12)
+
+
+def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, capsys):
+    out = tmp_path / "sweep.csv"
+    code, stdout, err = run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
+                             "--eps", "15%", "--out", str(out)], capsys)
+    assert code == 0 and stdout == "" and err == f"wrote {out}\n"
+    header = read_prediction_header(out)
+    assert header["model"] == "thickwall" and header["n_points"] == 11
+    assert {"theta0_deg", "L0_mm", "C10_MPa", "C01_MPa"} <= set(header["params"])
+    frame = pd.read_csv(out, comment="#")
+    assert list(frame.columns) == ["pressure_bar", "D0_mm", "t0_mm", "eps", "force_N", "valid",
+                                   "converged", "threshold_pressure_bar"]
+    expected = make_model("thickwall").predict(frame.pressure_bar, 40, 3, 0.15).force_N
+    np.testing.assert_allclose(frame.force_N, expected, rtol=1e-5)  # CSV keeps 6 digits
+
+
+THICK = "t0_mm=20 is too thick for D0_mm=35: expected t0_mm < D0_mm/2 = 17.5"
+EPS = "expected a shortening ratio in [0, 1) (a fraction)"
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--D0", "-1", "--t0", "2.5", "--eps", "0.05"],
+     "mkm: error: D0_mm=-1 is invalid: expected an inner diameter > 0 mm"),
+    (["--D0", "0", "--t0", "2.5", "--eps", "0.05"],
+     "mkm: error: D0_mm=0 is invalid: expected an inner diameter > 0 mm"),
+    (["--D0", "35", "--t0", "0", "--eps", "0.05"],
+     "mkm: error: t0_mm=0 is invalid: expected a wall thickness > 0 mm"),
+    (["--D0", "35", "--t0", "20", "--eps", "0.05"], f"mkm: error: {THICK}"),
+    (["--D0", "35", "--t0", "17.5", "--eps", "0.05"], "mkm: error: t0_mm=17.5 is too thick"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "1"], f"mkm: error: eps=1 is invalid: {EPS}"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "100%"], f"mkm: error: eps=1 is invalid: {EPS}"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "-5%"], f"mkm: error: eps=-0.05 is invalid: {EPS}"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "-0.1"], f"mkm: error: eps=-0.1 is invalid: {EPS}"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "five"],
+     "mkm fem solve: error: argument --eps: --eps='five' is not a number"),
+    (["--D0", "nan", "--t0", "2.5", "--eps", "0.05"],
+     "mkm fem solve: error: argument --D0: --D0='nan' is not a finite number"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "-1,0"],
+     "mkm fem solve: error: argument --pressures: --pressures '-1,0' has a negative pressure "
+     "-1 bar: expected gauge pressures >= 0"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "-0.5:2:0.5"],
+     "mkm fem solve: error: argument --pressures: --pressures '-0.5:2:0.5' has a negative "
+     "pressure -0.5 bar"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "0:2.5"],
+     "mkm fem solve: error: argument --pressures: --pressures '0:2.5' is malformed: expected "
+     "start:stop:step (for example 0:2.5:0.25)"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "0:2.5:0"],
+     "mkm fem solve: error: argument --pressures: --pressures '0:2.5:0': step 0 must be > 0"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "2:1:0.5"],
+     "mkm fem solve: error: argument --pressures: --pressures '2:1:0.5': stop 1 is below "
+     "start 2"),
+    (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "0:x:1"],
+     "mkm fem solve: error: argument --pressures: --pressures='x' is not a number"),
+])
+def test_bad_input_is_one_line_with_status_2(args, message, capsys):
+    code, out, err = run(["fem", "solve", "--model", "eq2", *args], capsys)
+    assert code == 2 and out == ""
+    assert err.startswith(message) and err.count("\n") == 1 and "Traceback" not in err
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--model", "nope"], "mkm: error: unknown model 'nope' in 'nope': expected one of eq2, "
+     "thickwall, axisym, surrogate, auto (see `mkm models`)"),
+    (["--model", "thickwall", "--diameter", "braid"],
+     "mkm: error: --model thickwall: thickwall takes no diameter (its parameters: theta0_deg, "
+     "L0_mm)"),
+    (["--model", "axisym:mesh=huge"], "mkm: error: mesh='huge' is invalid"),
+    (["--model", "axisym:grid=1"], "mkm: error: model 'axisym:grid=1': unknown parameter "
+     "'grid': expected some of mesh, theta0_deg, L0_mm"),
+    (["--model", "thickwall", "--theta0", "60"],
+     "mkm: error: theta0_deg=60 is invalid: expected 0 < theta0 < 54.7 deg"),
+])
+def test_bad_model_choice_is_one_line_with_status_2(args, message, capsys):
+    argv = ["fem", "solve", "--D0", "35", "--t0", "2.5", "--eps", "0.05", *args]
+    code, out, err = run(argv, capsys)
+    assert code == 2 and out == ""
+    assert err.startswith(message) and err.count("\n") == 1
+
+
+def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(capsys):
+    before = CALIBRATION_FILE.read_bytes()
+    code, out, _ = run(["fem", "calibrate", "--model", "thickwall", "--dry-run",
+                           "--reference", str(CASE_I)], capsys)
+    assert code == 0 and CALIBRATION_FILE.read_bytes() == before
+    lines = out.splitlines()
+    assert lines[0].startswith("model thickwall: theta0 = ") and "RMSE" in lines[0]
+    assert lines[1] == "pressure_bar,reference_N,model_N" and len(lines) == 2 + 11
+
+
+def test_installed_console_script_runs():
+    mkm = Path(sys.executable).with_name("mkm")
+    done = subprocess.run([str(mkm), "fem", "solve", "--model", "thickwall", "--D0", "35",
+                           "--t0", "2.5", "--eps", "5%", "--pressures", "0,2.5"],
+                          capture_output=True, text=True, timeout=60, check=False)
+    assert done.returncode == 0, done.stderr
+    frame = pd.read_csv(io.StringIO(done.stdout), comment="#")
+    assert frame.force_N.iloc[0] == 0.0 and frame.valid.all()
+    expected = make_model("thickwall").predict(2.5, 35, 2.5, 0.05).force_N
+    assert frame.force_N.iloc[1] == pytest.approx(expected, rel=1e-5)  # CSV keeps 6 digits

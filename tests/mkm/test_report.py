@@ -1,0 +1,217 @@
+"""The validation report on real simulated runs (bench API, virtual clock) with cheap models."""
+
+from __future__ import annotations
+
+import base64
+import re
+import shutil
+import struct
+import subprocess
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from bench.config import load_config
+from bench.run import acquire
+from fem.calibration import calibrated
+from fem.ladder import make_model
+from fem.paper import equation7_err_pct
+from mkm.prediction_cache import cached_predict
+from mkm.registry import parse_specs as parse_models
+from mkm.report import build_report
+
+CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
+
+
+def _sim_config(eps, pressures, **safety):
+    config = load_config()
+    return replace(config,
+                   muscle=replace(config.muscle, eps=eps),
+                   sequence=replace(config.sequence, pressures_bar=pressures,
+                                    preconditioning_cycles=0),
+                   safety=replace(config.safety, **safety))
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """A complete run at the paper's eps = 12.2 % and a run the force interlock aborted."""
+    root = tmp_path_factory.mktemp("runs")
+    complete = acquire(_sim_config(0.122, (0.5, 1.0, 1.5, 2.0, 2.5)), out_root=root)
+    # interlock at 20 % of the 1961 N cell = 392 N: reached near 1 bar at eps = 0
+    aborted = acquire(_sim_config(0.0, (0.5, 1.0, 1.5, 2.0, 2.5), force_limit_fraction=0.2),
+                      out_root=root)
+    assert complete.status == "complete" and aborted.status == "aborted"
+    return complete.path, aborted.path
+
+
+@pytest.fixture(scope="module")
+def report(runs, tmp_path_factory):
+    out = tmp_path_factory.mktemp("report")
+    # theta0 = 50 deg puts Equation 2's eps_max at 10.2 %, below this run's 12.2 %: all invalid
+    models = parse_models("eq2,thickwall,eq2:theta0_deg=50")
+    path = build_report(runs, models, out_dir=out, cache_dir=out / "cache", tolerance=None,
+                        surrogate_section=False)
+    return path, path.read_text(encoding="utf-8")
+
+
+def _png_size(data: bytes) -> tuple[int, int]:
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    return struct.unpack(">II", data[16:24])
+
+
+def test_report_is_self_contained_with_figures_embedded(report):
+    path, html = report
+    images = re.findall(r'<img src="data:image/png;base64,([^"]+)"', html)
+    assert len(images) == 2  # one force/error figure per run
+    for encoded in images:
+        width, height = _png_size(base64.b64decode(encoded))
+        assert width > 500 and height > 300
+    assert not re.search(r'(src|href)="(https?:|//)', html)  # no external asset
+    assert "<script" not in html and "<link" not in html
+    for name in ("run1_force_error.png", "run2_force_error.png", "run1_errors.csv",
+                 "summary.csv"):
+        assert (path.parent / name).stat().st_size > 0
+
+
+def test_err_pct_and_summary_match_hand_computation(runs, report):
+    path, _ = report
+    steps = pd.read_csv(runs[0] / "steps.csv")
+    theta = np.deg2rad(calibrated("eq2-inner")["theta0_deg"])
+    P_MPa = 0.1 * np.maximum(steps["pressure_bar_mean"].to_numpy(), 0.0)
+    # Equation 2 by hand for D0 = 30 mm, eps = 0.122 (the paper's prototype at 12.2 %)
+    F = (np.pi * 30.0**2 * P_MPa / 4 / np.sin(theta) ** 2
+         * (3 * (1 - 0.122) ** 2 * np.cos(theta) ** 2 - 1))
+    F_meas = steps["force_N_mean"].to_numpy()
+    err = 100 * (F_meas - F) / F_meas.max()
+    errors = pd.read_csv(path.parent / "run1_errors.csv")
+    eq2 = errors[errors["model"] == "eq2"]
+    # the CSV stores 6 significant digits
+    np.testing.assert_allclose(eq2["err_pct"], err, rtol=1e-5, atol=1e-4)
+    summary = pd.read_csv(path.parent / "summary.csv")
+    row = summary[(summary["run"] == runs[0].name) & (summary["model"] == "eq2")].iloc[0]
+    assert row["largest |Err%|"] == pytest.approx(np.abs(err).max(), rel=1e-9)
+    assert row["RMSE [N]"] == pytest.approx(np.sqrt(np.mean((F_meas - F) ** 2)), rel=1e-9)
+    assert row["valid points"] == f"{len(steps)} of {len(steps)}"
+
+
+def test_equation7_of_the_paper():
+    # F_ref 100, 200, 400 N; prediction 110, 190, 400: errors -10, +10, 0 N over max 400 N
+    np.testing.assert_allclose(equation7_err_pct([100, 200, 400], [110, 190, 400], 400.0),
+                               [-2.5, 2.5, 0.0])
+    with pytest.raises(ValueError, match="max reference force"):
+        equation7_err_pct([0.0], [0.0], 0.0)
+
+
+def test_invalid_points_are_reported_not_scored(runs, report):
+    path, html = report
+    summary = pd.read_csv(path.parent / "summary.csv")
+    row = summary[(summary["run"] == runs[0].name)
+                  & (summary["model"] == "eq2:theta0_deg=50")].iloc[0]
+    assert row["valid points"].startswith("0 of ")
+    assert np.isnan(row["largest |Err%|"]) and np.isnan(row["RMSE [N]"])
+    errors = pd.read_csv(path.parent / "run1_errors.csv")
+    invalid = errors[errors["model"] == "eq2:theta0_deg=50"]
+    assert invalid["force_N"].isna().all() and invalid["err_pct"].isna().all()
+    assert "eq2:theta0_deg=50: " in html and "shown as crosses" in html
+
+
+def test_aborted_run_is_reported_as_aborted(runs, report):
+    _, html = report
+    section = html.split("<h2>Run 2")[1].split("<h2>")[0]
+    assert "status: aborted" in section
+    assert "force interlock" in section
+    kept = pd.read_csv(runs[1] / "steps.csv")
+    assert 0 < len(kept) < 5  # the interlock stopped the staircase part way
+    assert f"Kept: {len(kept)} settled step(s)" in section
+    assert "status: complete" in html.split("<h2>Run 2")[0]
+
+
+def test_every_table_and_figure_names_its_provenance(report):
+    _, html = report
+    captions = re.findall(r'<(?:figcaption|p class="caption")>(.*?)</', html, flags=re.S)
+    assert captions and all("Provenance:" in c for c in captions)
+    for anchor in set(re.findall(r'href="#(prov-[^"]+)"', html)):
+        assert f'id="{anchor}"' in html
+
+
+def test_prediction_cache_returns_the_same_forces(tmp_path):
+    model = make_model("thickwall")
+    args = (np.array([0.5, 1.5, 2.5]), 30.0, 3.0, 0.1)
+    first, hit1 = cached_predict(model, *args, cache_dir=tmp_path)
+    second, hit2 = cached_predict(model, *args, cache_dir=tmp_path)
+    assert (hit1, hit2) == (False, True)
+    np.testing.assert_array_equal(first.force_N, second.force_N)
+    assert second.params == first.params and second.seconds == first.seconds
+    other, hit3 = cached_predict(make_model("thickwall", theta0_deg=30.0), *args,
+                                 cache_dir=tmp_path)
+    assert not hit3  # other parameters, other entry
+    assert not np.allclose(other.force_N, first.force_N)
+
+
+def test_second_report_reads_the_fe_from_the_cache(runs, tmp_path):
+    cache = tmp_path / "cache"
+    paths = [build_report(runs[:1], parse_models("axisym:mesh=coarse"), out_dir=tmp_path / name,
+                          cache_dir=cache, tolerance=None, surrogate_section=False)
+             for name in ("cold", "warm")]
+    cold, warm = (pd.read_csv(p.parent / "summary.csv").iloc[0] for p in paths)
+    assert cold["time source"] == "measured now"
+    assert warm["time source"].startswith("FE cache")
+    assert warm["time [s]"] == cold["time [s]"]  # the time of the solve, kept with it
+    forces = [pd.read_csv(p.parent / "run1_errors.csv")["force_N"] for p in paths]
+    pd.testing.assert_series_equal(*forces)
+    assert forces[0].notna().all() and (forces[0] > 0).all()  # converged FE forces
+    assert len(list(cache.glob("axisym-*.npz"))) == 1
+
+
+def test_surrogate_section_is_table3_with_our_numbers(runs, tmp_path):
+    path = build_report(runs[:1], parse_models("eq2"), out_dir=tmp_path, tolerance=0.02)
+    html = path.read_text(encoding="utf-8")
+    assert html.count('src="data:image/png;base64,') == 2  # the run, and the paper's Figure 6
+    points = pd.read_csv(tmp_path / "surrogate_vs_fe.csv")
+    summary = pd.read_csv(tmp_path / "surrogate_vs_fe_summary.csv").set_index("muscle")
+    for muscle in ("I", "II", "III"):
+        p = points[points["muscle"] == muscle]
+        err = 100 * (p["force_fe_N"] - p["force_N"]) / p["force_fe_N"].max()  # Equation 7
+        # the CSV keeps 6 significant digits: <= 0.001 N on ~1000 N, 1e-4 % of Err%
+        assert summary.loc[muscle, "largest |Err%|"] == pytest.approx(err.abs().max(),
+                                                                      abs=2e-4)
+    # the paper's figures sit beside ours (data/reference/paper_table3.csv)
+    assert summary.loc["I", "paper's best net: largest |Err%|"] == 6.55
+    assert "Model choice for this scene" in html  # the auto choice, from fem/model_errors.csv
+    choice = html.split("Model choice for this scene")[1].split("</p>")[0]
+    counts = [int(n) for n in re.findall(r"for (\d+) of", choice)]
+    assert sum(counts) == len(pd.read_csv(runs[0] / "steps.csv"))
+
+
+def test_unknown_model_spec_is_a_clear_error(runs, tmp_path):
+    with pytest.raises(ValueError, match="unknown model 'nope'"):
+        build_report(runs[:1], parse_models("nope"), out_dir=tmp_path)
+    with pytest.raises(ValueError, match="is not key=value"):
+        parse_models("axisym:coarse")
+
+
+@pytest.mark.skipif(not shutil.which(CHROMIUM), reason="chromium is not installed")
+def test_report_renders_in_headless_chromium(report, tmp_path):
+    _, html = report
+    # A probe copy records each image's decoded size once the page has loaded; the report
+    # itself stays script-free.
+    probe = tmp_path / "probe.html"
+    probe.write_text(html.replace("</body>", '<script>addEventListener("load",()=>document.body'
+                                  '.setAttribute("data-imgs",[...document.images].map(i=>'
+                                  'i.naturalWidth+"x"+i.naturalHeight).join(",")))</script>'
+                                  "</body>"), encoding="utf-8")
+    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars"]
+    dom = subprocess.run([CHROMIUM, *flags, "--dump-dom", probe.as_uri()], capture_output=True,
+                         text=True, timeout=90, check=True).stdout
+    sizes = re.search(r'data-imgs="([^"]*)"', dom).group(1).split(",")
+    assert len(sizes) == 2
+    for size in sizes:
+        width, height = map(int, size.split("x"))
+        assert width > 500 and height > 300
+    shot = tmp_path / "page.png"
+    subprocess.run([CHROMIUM, *flags, "--window-size=1280,1600", f"--screenshot={shot}",
+                    probe.as_uri()], capture_output=True, timeout=90, check=True)
+    assert _png_size(shot.read_bytes()) == (1280, 1600)
+    assert shot.stat().st_size > 50_000  # a blank page compresses to a few kB

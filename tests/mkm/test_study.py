@@ -1,0 +1,116 @@
+"""The speed-accuracy study and stability maps on a tiny configuration (one FE mesh, cached)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from fem.calibration import calibrated
+from fem.eq2 import chou_hannaford_eps_max
+from fem.interface import Prediction
+from mkm.auto import read_model_errors
+from mkm.study import StudyConfig, classify, pareto_front, registry_predictor, run_study
+
+
+def _tiny_predictors(cache_dir):
+    return [registry_predictor("eq2-inner", "eq2:diameter=inner"),
+            registry_predictor("thickwall", "thickwall"),
+            registry_predictor("axisym-coarse", "axisym:mesh=coarse", cached=True)]
+
+
+TINY = StudyConfig(
+    muscles=(("I", 35.0, 2.5, 0.05, "test"), ("H", 48.0, 3.8, 0.18, "held-out")),
+    pressures=(0.0, 1.25, 2.5),
+    predictors=_tiny_predictors,
+    reference="axisym-coarse",
+    stability_methods=("eq2-inner",),
+    stability_muscles=(("smallest", 30.0, 2.0),),
+    stability_pressures=(0.0, 1.0, 2.0),
+    stability_eps=(0.0, 0.3, 0.35),
+)
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory):
+    out = tmp_path_factory.mktemp("study")
+    html = run_study(out / "report", TINY, cache_dir=out / "cache",
+                     table_path=out / "model_errors.csv")
+    return out, html
+
+
+def test_study_writes_its_figures_tables_and_page(study):
+    out, html = study
+    for name in ("speed_accuracy.png", "stability_eq2-inner.png", "speed_accuracy.csv",
+                 "stability.csv", "stability_summary.csv", "study_errors.csv"):
+        assert (out / "report" / name).stat().st_size > 0
+    page = html.read_text(encoding="utf-8")
+    assert page.count('src="data:image/png;base64,') == 2
+    assert "cores" in page  # the machine is named
+
+
+def test_errors_are_equation7_against_the_reference(study):
+    out, _ = study
+    errors = pd.read_csv(out / "report" / "study_errors.csv")
+    eq2 = errors[(errors["predictor"] == "eq2-inner") & (errors["muscle"] == "I")]
+    theta = np.deg2rad(calibrated("eq2-inner")["theta0_deg"])
+    P_MPa = 0.1 * eq2["pressure_bar"].to_numpy()
+    # Equation 2 by hand for muscle I (D0 35 mm, eps 5 %)
+    F = (np.pi * 35.0**2 * P_MPa / 4 / np.sin(theta) ** 2
+         * (3 * 0.95**2 * np.cos(theta) ** 2 - 1))
+    ref = eq2["force_ref_N"].to_numpy()
+    # the CSV keeps 6 significant digits
+    np.testing.assert_allclose(eq2["err_pct"], 100 * (ref - F) / ref.max(), rtol=1e-4, atol=1e-3)
+    assert ref.max() > 500  # a real FE sweep of muscle I reaches ~940 N at 2.5 bar
+
+
+def test_summary_marks_the_pareto_front_and_times_the_fe_afresh(study):
+    out, _ = study
+    summary = pd.read_csv(out / "report" / "speed_accuracy.csv").set_index("predictor")
+    assert summary.loc["axisym-coarse", "max_abs_err_pct"] == 0.0  # the reference itself
+    assert summary.loc["axisym-coarse", "pareto"]  # nothing is more accurate
+    fastest = summary["seconds_per_point"].idxmin()
+    assert summary.loc[fastest, "pareto"]
+    # an FE sweep takes at least milliseconds per point even from a warm cache: timed afresh
+    assert summary.loc["axisym-coarse", "seconds_per_point"] > 1e-3
+
+
+def test_model_errors_table_for_auto(study):
+    out, _ = study
+    table = read_model_errors(out / "model_errors.csv")
+    assert set(table["predictor"]) == {"eq2-inner", "thickwall", "axisym-coarse"}
+    assert table.loc[table["predictor"] == "thickwall", "spec"].iloc[0] == "thickwall"
+    assert len(table) == 3 * 2 * 3  # predictors x muscles x pressures
+    header = (out / "model_errors.csv").read_text().splitlines()[:12]
+    assert any(line.startswith("# versions:") for line in header)
+    assert any(line.startswith("# machine_name:") for line in header)
+
+
+def test_stability_of_equation2_fails_beyond_eps_max(study):
+    out, _ = study
+    cells = pd.read_csv(out / "report" / "stability.csv")
+    eps_max = chou_hannaford_eps_max(calibrated("eq2-inner")["theta0_deg"])
+    assert 0.3 < eps_max < 0.35  # 0.327 for the calibrated 30.78 deg
+    beyond = cells["eps"] > eps_max
+    # at P = 0 Equation 2 gives 0 N, but the model is still outside its range there
+    assert (cells.loc[beyond, "status"] == "invalid (model's own limit)").all()
+    assert (cells.loc[~beyond, "status"] == "ok").all()
+
+
+def test_pareto_front_by_hand():
+    # (cost, error): (1, 4) fastest; (2, 3) better error; (3, 5) beaten by both; (4, 1) best
+    front = pareto_front(np.array([1.0, 2.0, 3.0, 4.0]), np.array([4.0, 3.0, 5.0, 1.0]))
+    assert front.tolist() == [True, True, False, True]
+
+
+def test_classify_each_failure():
+    P = np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
+    force = np.array([0.0, 100.0, 50.0, -5.0, 300.0, 400.0])
+    pred = Prediction(model="m", params={}, pressure_bar=P, D0_mm=P * 0 + 30, t0_mm=P * 0 + 2,
+                      eps=P * 0, force_N=force,
+                      valid=np.array([True, True, True, True, False, False]),
+                      converged=np.array([True, True, True, True, True, False]),
+                      seconds=0.0, extras={"in_domain": np.array([1, 1, 1, 1, 1, 0], bool)})
+    assert classify(pred).tolist() == ["ok", "ok", "force falls with pressure",
+                                       "negative force", "invalid (model's own limit)",
+                                       "not converged"]
