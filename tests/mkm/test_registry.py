@@ -1,0 +1,73 @@
+"""The predictor registry (mkm/registry.py): one spec syntax, one place that builds and lists."""
+
+import numpy as np
+import pytest
+
+from fem.eq2 import chou_hannaford
+from fem.paper import L0_MM
+from mkm.registry import ENTRIES, describe, parse_spec, parse_specs
+
+
+@pytest.mark.parametrize("text, name, params, canonical", [
+    ("eq2", "eq2", {}, "eq2"),
+    (" eq2:diameter=braid ", "eq2", {"diameter": "braid"}, "eq2:diameter=braid"),
+    ("axisym:mesh=coarse,L0_mm=150", "axisym", {"mesh": "coarse", "L0_mm": 150.0},
+     "axisym:L0_mm=150,mesh=coarse"),
+    ("surrogate:kind=gp", "surrogate", {"kind": "gp"}, "surrogate:kind=gp"),
+    ("auto:tolerance=0.05,per_point=true", "auto", {"tolerance": 0.05, "per_point": True},
+     "auto:per_point=True,tolerance=0.05"),
+])
+def test_spec_round_trip(text, name, params, canonical):
+    spec = parse_spec(text)
+    assert spec.name == name and dict(spec.params) == params
+    assert spec.text == canonical and parse_spec(spec.text) == spec
+
+
+def test_comma_lists_keep_parameters_with_their_model():
+    specs = parse_specs("eq2,axisym:mesh=coarse,L0_mm=150,thickwall,eq2:diameter=braid")
+    assert [s.text for s in specs] == ["eq2", "axisym:L0_mm=150,mesh=coarse", "thickwall",
+                                       "eq2:diameter=braid"]
+
+
+@pytest.mark.parametrize("text, message", [
+    ("nope", "unknown model 'nope' in 'nope': expected one of eq2, thickwall, axisym"),
+    ("axisym:coarse", "'coarse' is not key=value"),
+    ("axisym:grid=1", "unknown parameter 'grid': expected some of mesh, theta0_deg, L0_mm"),
+    ("", "unknown model ''"),
+])
+def test_bad_specs_name_the_bad_part(text, message):
+    with pytest.raises(ValueError, match=message):
+        parse_spec(text)
+
+
+def test_empty_list_is_an_error():
+    with pytest.raises(ValueError, match="is empty"):
+        parse_specs(" , ")
+
+
+def test_build_applies_defaults_only_where_the_model_takes_them():
+    # the report passes the run's L0: eq2 records it, the spec's own value wins over it
+    assert parse_spec("eq2").build(L0_mm=150.0).L0_mm == 150.0
+    assert parse_spec("thickwall:L0_mm=200").build(L0_mm=150.0).L0_mm == 200.0
+    model = parse_spec("eq2:diameter=braid,theta0_deg=30").build(L0_mm=L0_MM)
+    pred = model.predict(2.0, 35.0, 2.5, 0.05)
+    np.testing.assert_allclose(pred.force_N, chou_hannaford(2.0, 40.0, 0.05, 30.0), rtol=1e-12)
+
+
+def test_build_refuses_a_bad_value_with_the_models_own_message():
+    with pytest.raises(ValueError, match="mesh='huge' is invalid"):
+        parse_spec("axisym:mesh=huge").build().predict(1.0, 35.0, 2.5, 0.05)
+
+
+def test_every_entry_is_listed_with_its_parameters():
+    text = describe()
+    for name, entry in ENTRIES.items():
+        assert f"\n{name} " in f"\n{text}" and entry.paper_name in text
+        for key in entry.params:
+            assert f"{key}:" in text
+
+
+def test_display_name_is_the_papers():
+    assert parse_spec("eq2").display_name == "Equation 2 (Chou-Hannaford)"
+    assert parse_spec("eq2:diameter=braid").display_name == (
+        "Equation 2 (Chou-Hannaford), diameter=braid")
