@@ -82,18 +82,18 @@ def validate_inputs(pressure_bar, D0_mm, t0_mm, eps) -> tuple[np.ndarray, ...]:
     Messages name the bad value and what was expected, so the CLI can print them as they are.
     """
     try:
-        arrays = np.broadcast_arrays(
-            *(np.asarray(v, dtype=float) for v in (pressure_bar, D0_mm, t0_mm, eps))
-        )
+        values = [np.asarray(v, dtype=float) for v in (pressure_bar, D0_mm, t0_mm, eps)]
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"inputs must be numbers: {exc}") from None
+    try:
+        arrays = np.broadcast_arrays(*values)
     except ValueError as exc:
         raise ValueError(f"inputs do not broadcast to a common shape: {exc}") from None
-    except TypeError as exc:
-        raise ValueError(f"inputs must be numbers: {exc}") from None
     P, D0, t0, e = (np.array(a) for a in arrays)
     for name, a in zip(INPUTS, (P, D0, t0, e), strict=True):
         bad = ~np.isfinite(a)
         if bad.any():
-            raise ValueError(f"{name}={a[bad].flat[0]!r} is not a finite number")
+            raise ValueError(f"{name}={a[bad].flat[0]:g} is not a finite number")
     _check(P, P < 0, "pressure_bar", "expected a gauge pressure >= 0 bar")
     _check(D0, D0 <= 0, "D0_mm", "expected an inner diameter > 0 mm")
     _check(t0, t0 <= 0, "t0_mm", "expected a wall thickness > 0 mm")

@@ -19,11 +19,6 @@ class MooneyRivlin:
     C01_MPa: float
     source: str = ""
 
-    @property
-    def shear_modulus_MPa(self) -> float:
-        """Small-strain shear modulus ``mu = 2 (C10 + C01)`` [MPa]."""
-        return 2.0 * (self.C10_MPa + self.C01_MPa)
-
     def energy(self, l1, l2, l3=None):
         """Strain energy density [MPa = mJ/mm^3] from principal stretches (``l3 = 1/(l1 l2)``)."""
         l1 = np.asarray(l1, dtype=float)

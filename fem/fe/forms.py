@@ -2,7 +2,7 @@
 
 Each function takes the kinematic variables at the quadrature points, stacked on the last axis,
 and returns the energy density's gradient and Hessian with respect to them. The assembly in
-:mod:`fem.fe.model` contracts them with constant (total-Lagrangian) operator arrays, so no form
+:mod:`fem.fe.assembly` contracts them with constant (total-Lagrangian) operator arrays, so no form
 indexes basis functions one by one; that keeps an assembly of the whole tangent vectorised.
 
 Variables (all in mm, MPa, so energies are in N mm):

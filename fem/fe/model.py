@@ -35,6 +35,7 @@ from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 
 from fem.calibration import CalibratedTheta0
 from fem.eq2 import BAR_TO_MPA, check_theta0
+from fem.fe.assembly import Assembler, Term, operator
 from fem.fe.forms import braid_inextensibility, cavity_volume, rubber
 from fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
 from fem.fe.newton import load_path
@@ -44,46 +45,6 @@ from fem.materials import SILASTIC_S, MooneyRivlin
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
 # away from the axis add an error far below the mesh's
 INTORDER = 4
-
-
-def _operator(basis, columns) -> np.ndarray:
-    """Stack ``columns(value, grad)`` of each basis function: shape (elements, points, dofs, k)."""
-    return np.stack([np.stack(columns(np.asarray(phi), phi.grad), axis=-1)
-                     for phi in (b[0] for b in basis.basis)], axis=2)
-
-
-class _Term:
-    """One energy term ``int psi(y) w``: its variables are ``y = y0 + B z`` at quadrature points.
-
-    ``B`` (elements, points, dofs, variables) is constant in the total-Lagrangian setting, so the
-    element vectors and matrices are two batched matrix products per assembly.
-    """
-
-    def __init__(self, B, y0, dofs, w, red):
-        self.B, self.y0, self.w = B, y0, w
-        self.dofs = red[dofs].T  # (elements, dofs) in reduced numbering, -1 where fixed
-        e, q, i, a = B.shape
-        self.B_flat = B.transpose(0, 2, 1, 3).reshape(e, i, q * a)
-        self.keep_r = self.dofs >= 0
-        self.keep_K = self.keep_r[:, :, None] & self.keep_r[:, None, :]
-
-    def values(self, y_ext):
-        """Variables at the quadrature points; ``y_ext`` ends with a zero read by fixed dofs."""
-        return self.y0 + np.einsum("eqia,eqi->eqa", self.B, y_ext[self.dofs][:, None, :])
-
-    def element_arrays(self, grad, hess):
-        """Element vectors (e, i) and the kept entries of the element matrices."""
-        e, q, i, a = self.B.shape
-        re = np.einsum("eqia,eqa->ei", self.B, grad * self.w[..., None])
-        BH = np.matmul(self.B, hess * self.w[..., None, None])  # (e, q, i, b)
-        Ke = np.matmul(BH.transpose(0, 2, 1, 3).reshape(e, i, q * a),
-                       self.B_flat.transpose(0, 2, 1))
-        return re, Ke[self.keep_K]
-
-    def pattern(self):
-        rows = np.broadcast_to(self.dofs[:, :, None], self.keep_K.shape)[self.keep_K]
-        cols = np.broadcast_to(self.dofs[:, None, :], self.keep_K.shape)[self.keep_K]
-        return rows, cols
 
 
 class HalfMuscle:
@@ -113,19 +74,19 @@ class HalfMuscle:
 
         # rubber: y = (F_rr, F_rz, F_zr, F_zz, F_tt, p)
         R = ub.global_coordinates()[0]
-        Bu = _operator(ub, lambda v, g: (g[0, 0], g[0, 1], g[1, 0], g[1, 1], v[0] / R, 0 * R))
-        Bp = _operator(pb, lambda v, g: (0 * v,) * 5 + (v,))
+        Bu = operator(ub, lambda v, g: (g[0, 0], g[0, 1], g[1, 0], g[1, 1], v[0] / R, 0 * R))
+        Bp = operator(pb, lambda v, g: (0 * v,) * 5 + (v,))
         rubber_term = (np.concatenate([Bu, Bp], axis=2), np.array([1, 0, 0, 1, 1, 0.0]),
                        np.vstack([ub.element_dofs, nu + pb.element_dofs]), 2 * np.pi * R * ub.dx)
         # cavity: y = (r, dz/dZ) on the inner surface; dZ is the facet measure (vertical facets)
-        cavity_term = (_operator(ib, lambda v, g: (v[0], g[1, 1])),
+        cavity_term = (operator(ib, lambda v, g: (v[0], g[1, 1])),
                        np.stack([ib.global_coordinates()[0], np.ones_like(ib.dx)], axis=-1),
                        ib.element_dofs, ib.dx)
         # braid: y = (u_r, du_r/dZ, du_z/dZ, tension) on the outer surface
         Z = ob.global_coordinates()[1]
         za, zb = (m.p[1, m.facets[k, ob.find]][:, None] for k in (0, 1))
         shape_a = (zb - Z) / (zb - za)
-        Bb = _operator(ob, lambda v, g: (v[0], g[0, 1], g[1, 1], 0 * Z))
+        Bb = operator(ob, lambda v, g: (v[0], g[0, 1], g[1, 1], 0 * Z))
         Bl = np.zeros(Bb.shape[:2] + (2, 4))
         Bl[..., 0, 3], Bl[..., 1, 3] = shape_a, 1.0 - shape_a
         lam_dofs = nu + npr + np.searchsorted(tension_nodes, m.facets[:, ob.find])
@@ -148,15 +109,10 @@ class HalfMuscle:
         self.red = red
         self.p_slice = slice(red[nu], red[nu] + npr)
         self.tension_slice = slice(red[nu] + npr, red[nu] + npr + nl)
-        self.rubber, self.cavity = _Term(*rubber_term, red), _Term(*cavity_term, red)
-        self.braid = _Term(*braid_term, red) if braid else None
+        self.rubber, self.cavity = Term(*rubber_term, red), Term(*cavity_term, red)
+        self.braid = Term(*braid_term, red) if braid else None
         terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
-        # CSR pattern once; each assembly only sums the entries into place
-        rows = np.concatenate([t.pattern()[0] for t in terms])
-        cols = np.concatenate([t.pattern()[1] for t in terms])
-        keys, self._slot = np.unique(rows * self.n + cols, return_inverse=True)
-        self._indices = keys % self.n
-        self._indptr = np.searchsorted(keys // self.n, np.arange(self.n + 1))
+        self.assembler = Assembler(terms, self.n)
 
     def rest_state(self) -> np.ndarray:
         """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
@@ -172,12 +128,8 @@ class HalfMuscle:
         r_rub, K_rub = self.rubber.element_arrays(g, h)
         _, g, h = cavity_volume(self.cavity.values(y_ext))
         dV_cav, K_cav = self.cavity.element_arrays(g, -pressure_MPa * h)
-
-        def vector(term, re):
-            return np.bincount(term.dofs[term.keep_r], re[term.keep_r], minlength=self.n)
-
-        dV = vector(self.cavity, dV_cav)
-        r = vector(self.rubber, r_rub) - pressure_MPa * dV
+        dV = self.cavity.vector(dV_cav, self.n)
+        r = self.rubber.vector(r_rub, self.n) - pressure_MPa * dV
         blocks = [K_rub, K_cav]
         if self.braid is not None:
             yb = self.braid.values(y_ext)
@@ -188,10 +140,9 @@ class HalfMuscle:
             hess[..., :3, :3] = tension[..., None, None] * hgb
             hess[..., :3, 3] = hess[..., 3, :3] = dgb
             r_br, K_br = self.braid.element_arrays(grad, hess)
-            r += vector(self.braid, r_br)
+            r += self.braid.vector(r_br, self.n)
             blocks.append(K_br)
-        data = np.bincount(self._slot, np.concatenate(blocks), minlength=self._indices.size)
-        K = sp.csr_matrix((data, self._indices, self._indptr), shape=(self.n, self.n))
+        K = self.assembler.matrix(blocks)
         return r, K, dV
 
     def inverted(self, y) -> str | None:

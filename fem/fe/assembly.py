@@ -1,0 +1,95 @@
+"""Vectorised total-Lagrangian assembly of energy terms, apart from any physics.
+
+An energy ``Pi = sum_terms int psi(y) w`` whose pointwise variables are affine in the unknowns,
+``y = y0 + B z`` at every quadrature point, with ``B`` constant (total-Lagrangian: integrals
+over the reference configuration). Then the element vectors and matrices of every term are two
+batched matrix products of ``B`` with the gradient and Hessian of ``psi`` with respect to ``y``,
+and the global sparse pattern is fixed once: each assembly only sums entries into place.
+
+The physics (which variables, which density) lives in :mod:`fem.fe.forms` and
+:mod:`fem.fe.model`; this module knows scikit-fem bases, dof maps and sparse matrices only.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+
+def operator(basis, columns) -> np.ndarray:
+    """Stack ``columns(value, grad)`` of each basis function: shape (elements, points, dofs, k).
+
+    ``basis`` is a scikit-fem ``Basis`` or ``FacetBasis``; ``columns`` maps one basis function's
+    value and gradient at the quadrature points to the ``k`` variables it contributes to.
+    """
+    return np.stack([np.stack(columns(np.asarray(phi), phi.grad), axis=-1)
+                     for phi in (b[0] for b in basis.basis)], axis=2)
+
+
+class Term:
+    """One energy term ``int psi(y) w``: its variables are ``y = y0 + B z`` at quadrature points.
+
+    Parameters
+    ----------
+    B : numpy.ndarray, shape (elements, points, dofs, variables)
+        Constant operator from the element's dofs to the variables (see :func:`operator`).
+    y0 : numpy.ndarray, broadcastable to (elements, points, variables)
+        The variables at ``z = 0``.
+    dofs : numpy.ndarray, shape (dofs, elements)
+        Global (full) dof numbers of each element, as scikit-fem's ``element_dofs``.
+    w : numpy.ndarray, shape (elements, points)
+        Quadrature weights times any measure factor (``2 pi R dx`` in axisymmetry).
+    red : numpy.ndarray of int
+        Map full dof -> reduced unknown, ``-1`` where the dof is fixed at zero.
+    """
+
+    def __init__(self, B, y0, dofs, w, red):
+        self.B, self.y0, self.w = B, y0, w
+        self.dofs = red[dofs].T  # (elements, dofs) in reduced numbering, -1 where fixed
+        e, q, i, a = B.shape
+        self.B_flat = B.transpose(0, 2, 1, 3).reshape(e, i, q * a)
+        self.keep_r = self.dofs >= 0
+        self.keep_K = self.keep_r[:, :, None] & self.keep_r[:, None, :]
+
+    def values(self, y_ext):
+        """Variables at the quadrature points; ``y_ext`` ends with a zero read by fixed dofs."""
+        return self.y0 + np.einsum("eqia,eqi->eqa", self.B, y_ext[self.dofs][:, None, :])
+
+    def element_arrays(self, grad, hess):
+        """Element vectors (e, i) and the kept entries of the element matrices."""
+        e, q, i, a = self.B.shape
+        re = np.einsum("eqia,eqa->ei", self.B, grad * self.w[..., None])
+        BH = np.matmul(self.B, hess * self.w[..., None, None])  # (e, q, i, b)
+        Ke = np.matmul(BH.transpose(0, 2, 1, 3).reshape(e, i, q * a),
+                       self.B_flat.transpose(0, 2, 1))
+        return re, Ke[self.keep_K]
+
+    def pattern(self):
+        rows = np.broadcast_to(self.dofs[:, :, None], self.keep_K.shape)[self.keep_K]
+        cols = np.broadcast_to(self.dofs[:, None, :], self.keep_K.shape)[self.keep_K]
+        return rows, cols
+
+    def vector(self, re, n: int) -> np.ndarray:
+        """The global vector (length ``n``) of element vectors ``re`` (fixed dofs dropped)."""
+        return np.bincount(self.dofs[self.keep_r], re[self.keep_r], minlength=n)
+
+
+class Assembler:
+    """The CSR pattern of a list of terms over ``n`` reduced unknowns, built once.
+
+    :meth:`matrix` sums the kept element-matrix entries of each term (in the order of ``terms``)
+    into that pattern.
+    """
+
+    def __init__(self, terms, n: int):
+        self.n = n
+        rows = np.concatenate([t.pattern()[0] for t in terms])
+        cols = np.concatenate([t.pattern()[1] for t in terms])
+        keys, self._slot = np.unique(rows * n + cols, return_inverse=True)
+        self._indices = keys % n
+        self._indptr = np.searchsorted(keys // n, np.arange(n + 1))
+
+    def matrix(self, blocks) -> sp.csr_matrix:
+        """Sparse matrix from the kept element entries of each term, concatenated in order."""
+        data = np.bincount(self._slot, np.concatenate(blocks), minlength=self._indices.size)
+        return sp.csr_matrix((data, self._indices, self._indptr), shape=(self.n, self.n))

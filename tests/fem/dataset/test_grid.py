@@ -1,0 +1,77 @@
+"""Dataset grids (fem/dataset/grid.py): Table 1 of the paper, TOML parsing and its errors."""
+
+import pytest
+
+from fem.calibration import calibrated
+from fem.dataset.build import make_jobs
+from fem.dataset.grid import load_grid, parse_grid
+from mkm.cli import main
+
+GRID = """
+pressure_bar = "0:2:1"
+D0_mm = [30, 40]
+t0_mm = 2.5
+eps = [0.0, 0.1]
+L0_mm = 282
+"""
+
+
+def test_paper_grid_is_table_1_of_the_paper():
+    # Antonelli et al. 2025, Table 1: 6 pressures x 3 D0 x 3 t0 x 3 eps, L0 = 282 mm
+    grid = load_grid("paper")
+    assert grid.pressure_bar == (0.0, 0.5, 1.0, 1.5, 2.0, 2.5)
+    assert grid.D0_mm == (30.0, 40.0, 50.0)
+    assert grid.t0_mm == (2.0, 3.0, 4.0)
+    assert grid.eps == (0.0, 0.1, 0.2)
+    assert grid.L0_mm == (282.0,)
+    jobs = make_jobs(grid, "eq2")
+    assert len(jobs) == 27
+    assert sum(len(job.pressure_bar) for job in jobs) == 162
+    # theta0 is left out of the grid: each job carries the model's calibrated angle
+    assert {job.theta0_deg for job in jobs} == {calibrated("eq2-inner")["theta0_deg"]}
+
+
+def test_grid_range_includes_its_stop():
+    grid = parse_grid('pressure_bar = "0:2.5:0.25"\nD0_mm = 35\nt0_mm = 2.5\neps = 0.05', "g")
+    assert len(grid.pressure_bar) == 11 and grid.pressure_bar[-1] == 2.5
+    assert grid.theta0_deg == (None,) and grid.L0_mm == (None,)
+
+
+@pytest.mark.parametrize("text, message", [
+    ("D0 = [30]", "unknown key 'D0': expected some of pressure_bar, D0_mm"),
+    ("D0_mm = []", "D0_mm is an empty list: expected at least one value"),
+    ("t0_mm = -2", "t0_mm=-2 is negative: expected values >= 0"),
+    ("t0_mm = 15", "t0_mm=15 is too thick for D0_mm=30: expected t0_mm < D0_mm/2 = 15"),
+    ("eps = [0, 10, 20]", r"eps=10 is invalid: expected a shortening ratio in \[0, 1\)"),
+    ('pressure_bar = "0:2.5"', "pressure_bar '0:2.5' is malformed: expected start:stop:step"),
+    ('pressure_bar = "2:0:0.5"', "stop 0 is below start 2"),
+    ('D0_mm = ["30"]', "D0_mm='30' is not a number"),
+    ("D0_mm = [30, 30]", "D0_mm lists 30 twice"),
+    ("theta0_deg = 60", "theta0_deg=60 is invalid: expected 0 < theta0_deg < 54.7356"),
+    ("L0_mm = 0", "L0_mm=0 is invalid: expected 0 < L0_mm"),
+    ("eps = ", "not valid TOML"),
+])
+def test_bad_grid_gives_clear_error(text, message):
+    base = {"pressure_bar": "pressure_bar = [0, 1]", "D0_mm": "D0_mm = 30", "t0_mm": "t0_mm = 2",
+            "eps": "eps = 0.1"}
+    key = text.split("=")[0].strip()
+    lines = [text] + [line for k, line in base.items() if k != key]
+    with pytest.raises(ValueError, match=f"^grid bad.toml: .*{message}"):
+        parse_grid("\n".join(lines), "bad.toml")
+
+
+def test_missing_grid_key_is_named():
+    with pytest.raises(ValueError, match="missing key 'eps': expected pressure_bar, D0_mm"):
+        parse_grid("pressure_bar = 1\nD0_mm = 30\nt0_mm = 2", "g")
+
+
+def test_bad_grid_file_on_the_command_line(tmp_path, capsys):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(GRID.replace("t0_mm", "t_mm"))
+    code = main(["fem", "dataset", "--grid", str(bad), "--model", "eq2", "--out",
+                 str(tmp_path / "d.csv"), "--cache", str(tmp_path / "cache")])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert err == f"mkm: error: grid {bad}: unknown key 't_mm': expected some of pressure_bar, " \
+                  "D0_mm, t0_mm, eps, L0_mm, theta0_deg\n"
+    assert not (tmp_path / "d.csv").exists()

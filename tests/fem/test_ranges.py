@@ -1,0 +1,39 @@
+"""The one parser of numbers, fractions and ranges (fem/ranges.py)."""
+
+import numpy as np
+import pytest
+
+from fem.ranges import MAX_RANGE_VALUES, parse_fraction, parse_number, parse_pressures, parse_range
+
+
+def test_range_includes_its_stop_despite_round_off():
+    # 0.1 steps do not add up exactly in binary: 0 + 7 * 0.1 = 0.7000000000000001
+    values = parse_range("0:0.7:0.1", "x")
+    assert len(values) == 8 and values[-1] == 0.7
+    np.testing.assert_array_equal(parse_range("0:2.5:0.25", "p"), np.arange(11) * 0.25)
+
+
+def test_pressures_as_range_or_comma_list():
+    np.testing.assert_array_equal(parse_pressures("0:1:0.5"), [0.0, 0.5, 1.0])
+    np.testing.assert_array_equal(parse_pressures(" 2.5, 0 ,1"), [2.5, 0.0, 1.0])
+
+
+def test_fraction_or_percentage_mean_the_same():
+    assert parse_fraction("5%") == parse_fraction("0.05") == pytest.approx(0.05, rel=1e-15)
+
+
+@pytest.mark.parametrize(("call", "message"), [
+    (lambda: parse_number("abc", "--D0"), "^--D0='abc' is not a number$"),
+    (lambda: parse_number("inf", "--D0"), "^--D0='inf' is not a finite number$"),
+    (lambda: parse_range("0:2.5", "p"), "malformed: expected start:stop:step"),
+    (lambda: parse_range("0:1:0", "p"), "step 0 must be > 0"),
+    (lambda: parse_range("2:1:0.5", "p"), "stop 1 is below start 2"),
+    (lambda: parse_range("0:1e12:1", "p"), f"expected at most {MAX_RANGE_VALUES}"),
+    (lambda: parse_pressures(""), "--pressures is empty"),
+    (lambda: parse_pressures("1,-0.5"), "negative pressure -0.5 bar"),
+    (lambda: parse_fraction("five%"), "--eps='five' is not a number"),
+])
+def test_bad_text_gives_one_line_naming_it(call, message):
+    with pytest.raises(ValueError, match=message) as info:
+        call()
+    assert "\n" not in str(info.value)
