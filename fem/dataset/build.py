@@ -62,10 +62,16 @@ class Job:
     L0_mm: float | None
     theta0_deg: float | None
     pressure_bar: tuple[float, ...]
+    C10_MPa: float | None = None  # wall rubber (Mooney-Rivlin); None: the model's default
+    C01_MPa: float | None = None
 
     def key(self, model_version: str) -> str:
         """Cache key: a hash of every input and of the code that computes the job."""
-        text = json.dumps({"job": asdict(self), "model_version": model_version}, sort_keys=True)
+        job = asdict(self)
+        for name in ("C10_MPa", "C01_MPa"):  # default rubber: the keys of jobs before it existed
+            if job[name] is None:
+                del job[name]
+        text = json.dumps({"job": job, "model_version": model_version}, sort_keys=True)
         return hashlib.sha256(text.encode()).hexdigest()[:24]
 
     def describe(self) -> str:
@@ -106,7 +112,14 @@ def run_job(job: Job) -> dict[str, Any]:
 
     Runs wherever the job is sent (in-process or on a Dask worker); returns plain data only.
     """
-    model = make_model(job.model, theta0_deg=job.theta0_deg, L0_mm=job.L0_mm, mesh=job.mesh)
+    material = None
+    if job.C10_MPa is not None or job.C01_MPa is not None:
+        from fem.materials import SILASTIC_S, MooneyRivlin
+
+        material = MooneyRivlin(SILASTIC_S.C10_MPa if job.C10_MPa is None else job.C10_MPa,
+                                SILASTIC_S.C01_MPa if job.C01_MPa is None else job.C01_MPa)
+    model = make_model(job.model, theta0_deg=job.theta0_deg, L0_mm=job.L0_mm, mesh=job.mesh,
+                       material=material)
     n = len(job.pressure_bar)
     pred = model.predict(np.array(job.pressure_bar), job.D0_mm, job.t0_mm, job.eps)
     params = pred.params
@@ -124,6 +137,8 @@ def run_job(job: Job) -> dict[str, Any]:
         "theta0_deg": [params.get("theta0_deg", job.theta0_deg)] * n,
         "L0_mm": [params.get("L0_mm", job.L0_mm)] * n,
     }
+    # the wall rubber, for models that have one (a surrogate learns across rubbers)
+    rows.update({k: [params[k]] * n for k in ("C10_MPa", "C01_MPa") if k in params})
     # whatever else the model reports per point (an FE model's threshold pressure, failure
     # reason, ...) is kept: computed anyway, and useful to surrogates and to failure studies
     rows.update({k: np.ravel(v).tolist() for k, v in pred.extras.items() if k not in rows})
@@ -216,7 +231,41 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
     grid = grid if isinstance(grid, Grid) else load_grid(grid)
     start = time.perf_counter()
     jobs = make_jobs(grid, model, mesh)
-    model_ver = model_version(model)
+    frame, done = run_jobs(jobs, workers=workers, scheduler=scheduler, cache_dir=cache_dir,
+                           progress=progress, desc=f"{model} dataset")
+    run = DatasetRun(frame=frame, jobs_total=len(jobs), jobs_computed=done["computed"],
+                     jobs_cached=done["cached"], wall_seconds=time.perf_counter() - start,
+                     workers=done["workers"], out=None, sidecar=None)
+    model_ver, first_params = done["model_version"], done["params"]
+    if out is not None:
+        run.out = Path(out)
+        run.sidecar = run.out.with_suffix(".json")
+        info = _provenance(run, grid, jobs, model_ver, first_params, cache_dir)
+        write_atomic(run.out, frame.to_csv(index=False, lineterminator="\n"))
+        write_atomic(run.sidecar, json.dumps(info, indent=2) + "\n")
+    return run
+
+
+def run_jobs(jobs: list[Job], *, workers: int | None = None, scheduler: str | None = None,
+             cache_dir: str | os.PathLike = DEFAULT_CACHE, progress: bool = True,
+             desc: str = "dataset") -> tuple[pd.DataFrame, dict[str, Any]]:
+    """Compute ``jobs`` (one model, any list: a grid's product or a space-filling design) through
+    the cache, in-process or on Dask as :func:`build_dataset` does.
+
+    Returns the rows of every job in order (:data:`COLUMNS` first) and what was done:
+    ``computed``, ``cached``, ``workers`` (where), ``model_version``, ``params`` (of the first).
+    """
+    if scheduler is not None and workers is not None:
+        raise ValueError(f"workers={workers} and scheduler={scheduler!r} given: a cluster has its "
+                         "own workers; expected one of the two")
+    if workers is not None and workers < 1:
+        raise ValueError(f"workers={workers} is invalid: expected at least 1")
+    if not jobs:
+        raise ValueError("no job to run: expected at least one muscle")
+    models = sorted({job.model for job in jobs})
+    if len(models) > 1:
+        raise ValueError(f"jobs of several models ({', '.join(models)}): expected one")
+    model_ver = model_version(models[0])
     keys = [job.key(model_ver) for job in jobs]
     store = JobCache(cache_dir)
     results: dict[str, dict] = {}
@@ -229,7 +278,7 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
 
     from tqdm import tqdm
 
-    bar = tqdm(total=len(jobs), initial=n_cached, unit="job", desc=f"{model} dataset",
+    bar = tqdm(total=len(jobs), initial=n_cached, unit="job", desc=desc,
                disable=not progress, file=sys.stderr)
 
     def finished(key: str, job: Job, result: dict) -> None:
@@ -256,16 +305,8 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
     frame = frame.astype({"iterations": "Int64", "cutbacks": "Int64", "converged": bool,
                           "valid": bool})
     frame = frame[list(COLUMNS) + [c for c in frame.columns if c not in COLUMNS]]
-    run = DatasetRun(frame=frame, jobs_total=len(jobs), jobs_computed=len(missing),
-                     jobs_cached=n_cached, wall_seconds=time.perf_counter() - start,
-                     workers=where, out=None, sidecar=None)
-    if out is not None:
-        run.out = Path(out)
-        run.sidecar = run.out.with_suffix(".json")
-        info = _provenance(run, grid, jobs, model_ver, results[keys[0]]["params"], cache_dir)
-        write_atomic(run.out, frame.to_csv(index=False, lineterminator="\n"))
-        write_atomic(run.sidecar, json.dumps(info, indent=2) + "\n")
-    return run
+    return frame, {"computed": len(missing), "cached": n_cached, "workers": where,
+                   "model_version": model_ver, "params": results[keys[0]]["params"]}
 
 
 def _run_on_dask(missing, finished, workers: int | None, scheduler: str | None) -> str:
