@@ -49,7 +49,7 @@ def read_model_errors(path: Path | str = MODEL_ERRORS_FILE) -> pd.DataFrame:
     path = Path(path)
     if not path.exists():
         raise ValueError(f"no study table at {path}: run `mkm study` to measure model errors")
-    table = pd.read_csv(path, comment="#")
+    table = pd.read_csv(path)
     needed = {"predictor", "spec", "muscle", "D0_mm", "t0_mm", "eps", "pressure_bar", "err_pct",
               "seconds_per_point"}
     missing = needed - set(table.columns)

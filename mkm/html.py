@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import base64
 import html
+import json
 from pathlib import Path
 
 import pandas as pd
@@ -63,6 +64,20 @@ def table_html(df: pd.DataFrame, caption: str, digits: int = 2,
 
 def provenance_links(keys) -> str:
     return "Provenance: " + ", ".join(f'<a href="#prov-{esc(k)}">{esc(k)}</a>' for k in keys)
+
+
+def provenance_details(entries: dict, filename: str, note: str = "") -> str:
+    """Provenance folded in ``<details>``: one anchored block per entry (``#prov-KEY``, what
+    :func:`provenance_links` point at), the full JSON being in ``filename`` beside the page."""
+    if not all(isinstance(v, dict) for v in entries.values()) or not entries:
+        entries = {"study": entries}
+    blocks = "".join(f'<h3 id="prov-{esc(k)}">{esc(k)}</h3><pre>'
+                     f"{esc(json.dumps(v, indent=1, default=str))}</pre>"
+                     for k, v in entries.items())
+    extra = f"; {esc(note)}" if note else ""
+    return (f'<h2 id="provenance">Provenance</h2><details><summary>Models and their parameters, '
+            f"data, software versions, command and machine (full JSON: "
+            f'<a href="{esc(filename)}">{esc(filename)}</a>{extra})</summary>{blocks}</details>')
 
 
 def html_page(title: str, body: str) -> str:

@@ -1,82 +1,33 @@
 """On-disk cache of force-model predictions, so a second report or study skips the FE solves.
 
-A cache entry is keyed by the model's name and parameters, the inputs, and the model's *version*:
-the package version plus a hash of the sources the model depends on and of its package's data
-files (so editing the physics or recalibrating invalidates the entry; editing the report does
-not).
-Entries are ``.npz`` files written atomically (temporary file + ``os.replace``), read without
-pickle.
+An entry is keyed by the model's name and parameters, the inputs, and the model's *version*
+(:func:`fem.records.source_version` of its module: the package version plus a hash of the
+sources it depends on and of the calibration), so editing the physics or recalibrating
+invalidates the entry and editing the report does not. Entries are ``.npz`` files written with
+:func:`fem.records.write_atomic` and read without pickle, in the user's cache folder
+(:func:`mkm.paths.default_cache`) unless told otherwise.
 """
 
 from __future__ import annotations
 
-import ast
 import hashlib
-import importlib
-import importlib.util
+import io
 import json
-import os
-import sys
-import tempfile
-from importlib.metadata import version
 from pathlib import Path
 
 import numpy as np
 
 from fem.interface import INPUTS, ForceModel, Prediction
+from fem.records import source_version, write_atomic
+from mkm.paths import default_cache
 
-DEFAULT_CACHE_DIR = Path(".cache/mkm-report")
+DEFAULT_CACHE_DIR = default_cache("predictions")
 
 
 def model_version(model: ForceModel) -> str:
-    """Package version + hash of the sources the model's module depends on, and its data files.
-
-    The dependencies are the model's module and, transitively, every module of the same package
-    it imports (at any depth in the file) or names in a registry of ``"module:Class"`` strings
-    (``fem.ladder.MODELS``). The package's ``*.json`` files (the calibration) are hashed too: a
-    stale force is worse than a recomputed one.
-    """
-    modules = _dependencies(type(model).__module__)
-    digest = hashlib.sha256(version("mkm-bench").encode())
-    paths = {Path(sys.modules[name].__file__) for name in modules}
-    for package in {path.parent for path in paths}:
-        paths |= set(package.glob("*.json"))
-    for path in sorted(paths):
-        digest.update(path.name.encode())
-        digest.update(path.read_bytes())
-    return digest.hexdigest()[:16]
-
-
-def _dependencies(module_name: str) -> set[str]:
-    package = module_name.split(".")[0]
-    seen: set[str] = set()
-    todo = [module_name]
-    while todo:
-        name = todo.pop()
-        if name in seen:
-            continue
-        module = importlib.import_module(name)
-        path = getattr(module, "__file__", None)
-        if not path or not path.endswith(".py"):
-            continue
-        seen.add(name)
-        for node in ast.walk(ast.parse(Path(path).read_text(encoding="utf-8"))):
-            if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
-                todo += [node.module, *(f"{node.module}.{a.name}" for a in node.names)]
-            elif isinstance(node, ast.Import):
-                todo += [a.name for a in node.names]
-        registry = getattr(module, "MODELS", None)
-        if isinstance(registry, dict):
-            todo += [v.split(":")[0] for v in registry.values() if isinstance(v, str)]
-        todo = [t for t in todo if t.split(".")[0] == package and _is_module(t)]
-    return seen
-
-
-def _is_module(name: str) -> bool:
-    try:
-        return importlib.util.find_spec(name) is not None
-    except (ImportError, ValueError):
-        return False
+    """Version of the code and data behind ``model``: :func:`fem.records.source_version` of the
+    module that defines its class."""
+    return source_version(type(model).__module__)
 
 
 def cache_key(model: ForceModel, inputs: tuple[np.ndarray, ...]) -> str:
@@ -112,7 +63,6 @@ def cached_predict(model: ForceModel, pressure_bar, D0_mm, t0_mm, eps,
 
 
 def _store(prediction: Prediction, path: Path) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
     arrays = {name: getattr(prediction, name) for name in (*INPUTS, "force_N", "valid",
                                                            "converged")}
     # object arrays (failure messages) would need pickle to load: store them as text
@@ -121,14 +71,9 @@ def _store(prediction: Prediction, path: Path) -> None:
     meta = {"model": prediction.model, "params": prediction.params,
             "seconds": prediction.seconds}
     arrays["meta"] = np.array(json.dumps(meta, default=repr))
-    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            np.savez(f, **arrays)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    buffer = io.BytesIO()
+    np.savez(buffer, **arrays)
+    write_atomic(path, buffer.getvalue())
 
 
 def _load(path: Path) -> Prediction:

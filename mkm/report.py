@@ -32,6 +32,7 @@ from mkm.html import (
     save_figure,
     table_html,
 )
+from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.registry import Spec, parse_spec
 
@@ -39,16 +40,33 @@ DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
 CACHED_MODELS = ("axisym",)  # seconds per sweep; the closed forms and surrogates take microseconds
 
 
-def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict,
-                  cache_dir) -> tuple[Prediction, bool]:
-    """Model forces at each step's measured mean pressure (through the cache for FE models)."""
-    pressure = evaluation_pressures(steps)
+def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict, cache_dir,
+                  pressure_tolerance_bar: float = 0.0) -> tuple[Prediction, bool]:
+    """Model forces at each step's measured mean pressure (through the cache for FE models).
+
+    A measured pressure within ``pressure_tolerance_bar`` (the regulator's settling tolerance)
+    outside a model's pressure domain is evaluated at the domain's edge: 2.5001 bar measured at
+    the 2.5 bar step is the 2.5 bar the surrogate was trained to, not an extrapolation.
+    """
+    pressure = domain_pressures(model, evaluation_pressures(steps), pressure_tolerance_bar)
     args = (pressure, muscle["D0_mm"], muscle["t0_mm"], muscle["eps"])
     if model.name in CACHED_MODELS:
         return cached_predict(model, *args, cache_dir=cache_dir)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # out-of-domain points are flagged in the report itself
         return model.predict(*args), False
+
+
+def domain_pressures(model: ForceModel, pressure_bar: np.ndarray,
+                     tolerance_bar: float) -> np.ndarray:
+    """``pressure_bar`` with values within ``tolerance_bar`` of the model's pressure domain
+    moved onto its edge (models without a ``domain`` are left alone)."""
+    domain = getattr(model, "domain", None)
+    if domain is None or tolerance_bar <= 0:
+        return pressure_bar
+    lo, hi = domain.pressure_bar
+    near = (pressure_bar >= lo - tolerance_bar) & (pressure_bar <= hi + tolerance_bar)
+    return np.where(near, np.clip(pressure_bar, lo, hi), pressure_bar)
 
 
 def evaluation_pressures(steps: pd.DataFrame) -> np.ndarray:
@@ -78,16 +96,18 @@ def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.Dat
 
 
 def summarise(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
-    """Largest |Err%|, RMSE [N] over the valid points, time taken, points valid."""
+    """Numbers per model and run: points, valid points, largest |Err%|, RMSE [N] and largest
+    |residual| [N] over the valid points, seconds per predicted force, from the cache (1/0)."""
     ok = scored[scored["valid"]]
     residual = ok["force_meas_N"] - ok["force_N"]
     return {
         "model": scored["model"].iloc[0],
-        "valid points": f"{len(ok)} of {len(scored)}",
-        "largest |Err%|": float(ok["err_pct"].abs().max()) if len(ok) else np.nan,
-        "RMSE [N]": float(np.sqrt(np.mean(residual**2))) if len(ok) else np.nan,
-        "time [s]": seconds,
-        "time source": "FE cache (time of the original solve)" if cached else "measured now",
+        "points": len(scored), "valid_points": len(ok),
+        "max_abs_err_pct": float(ok["err_pct"].abs().max()) if len(ok) else np.nan,
+        "rmse_N": float(np.sqrt(np.mean(residual**2))) if len(ok) else np.nan,
+        "max_abs_residual_N": float(residual.abs().max()) if len(ok) else np.nan,
+        "seconds_per_point": seconds / max(len(scored), 1),
+        "from_cache": int(cached),
     }
 
 
@@ -96,7 +116,8 @@ def summarise(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
 
 def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
                  cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
-                 tolerance: float | None = 0.02, surrogate_section: bool = True) -> Path:
+                 tolerance: float | None = 0.02, surrogate_section: bool = True,
+                 progress: bool = False) -> Path:
     """Write ``report.html`` (plus PNGs and CSVs) for bench runs into ``out_dir``; return its path.
 
     Parameters
@@ -123,7 +144,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     if not run_dirs:
         raise ValueError("no run folder given: expected at least one RUN_DIR")
     specs = [m if isinstance(m, Spec) else parse_spec(m) for m in models]
-    out = Path(out_dir) if out_dir else Path("reports") / run_dirs[0].name
+    out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
     out.mkdir(parents=True, exist_ok=True)
     prov: dict[str, dict] = {"software": provenance()}
     sections, summaries, notes = [], [], []
@@ -198,7 +219,8 @@ def _run_section(k, run, specs, out, cache_dir, tolerance, prov, summaries, note
     scored, keys = [], [run_key]
     for spec in specs:
         model = spec.build(L0_mm=float(muscle.get("L0_mm", L0_MM)))
-        pred, cached = predict_steps(model, steps, muscle, cache_dir)
+        pred, cached = predict_steps(model, steps, muscle, cache_dir,
+                                     _pressure_tolerance(meta))
         rows = score_run(steps, pred, spec.text)
         scored.append(rows)
         summaries.append({"run": Path(run.path).name, **summarise(rows, pred.seconds, cached)})
@@ -224,6 +246,12 @@ def _run_section(k, run, specs, out, cache_dir, tolerance, prov, summaries, note
         _auto_paragraph(steps, muscle, tolerance) if tolerance else "",
     ]
     return "".join(parts)
+
+
+def _pressure_tolerance(meta: dict) -> float:
+    """The run's regulator settling tolerance [bar] (0 if not recorded)."""
+    settle = meta.get("sequence", {}).get("settle", {})
+    return float(settle.get("pressure_tolerance_bar", 0.0) or 0.0)
 
 
 def _planned_steps(meta: dict) -> str:

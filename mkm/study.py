@@ -19,7 +19,6 @@ in every run, so a warm cache never reports stale speeds.
 
 from __future__ import annotations
 
-import json
 import platform
 import time
 import warnings
@@ -31,11 +30,13 @@ import numpy as np
 import pandas as pd
 
 from fem.interface import ForceModel, Prediction
-from fem.records import provenance
+from fem.records import provenance, write_atomic, write_json_atomic
 from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
 from mkm.figures import speed_accuracy_figure, stability_figure
-from mkm.html import esc, figure_html, html_page, save_figure, table_html
+from mkm.html import esc, figure_html, html_page, provenance_details, save_figure, table_html
+from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
+from mkm.progress import progress_bar
 from mkm.registry import parse_spec
 
 STUDY_PRESSURES = tuple(np.round(np.arange(0.0, 2.5001, 0.25), 2))  # the paper's test sweep
@@ -178,8 +179,10 @@ def _predict(p: Predictor, model: ForceModel, muscle, pressures, cache_dir):
 
 
 def measure_errors(config: StudyConfig, predictors: list[Predictor],
-                   models: dict[str, ForceModel], cache_dir) -> tuple[pd.DataFrame, pd.DataFrame]:
-    """Point-by-point errors of every predictor against the reference, and its timing rows."""
+                   models: dict[str, ForceModel], cache_dir,
+                   bar=None) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """Point-by-point errors of every predictor against the reference, and its timing rows
+    (``bar``: a progress bar advanced once per predictor)."""
     by_label = {p.label: p for p in predictors}
     if config.reference not in by_label:
         raise ValueError(f"reference {config.reference!r} is not among the predictors: "
@@ -203,6 +206,8 @@ def measure_errors(config: StudyConfig, predictors: list[Predictor],
             pred = model.predict(np.asarray(config.pressures, float), *muscle[1:4])
             timings.append({"predictor": p.label, "muscle": muscle[0],
                             "seconds_per_point": pred.seconds / pred.force_N.size})
+        if bar is not None:
+            bar.update(1)
     return pd.concat(rows, ignore_index=True), pd.DataFrame(timings)
 
 
@@ -301,31 +306,35 @@ def classify(pred: Prediction) -> np.ndarray:
 
 
 def write_model_errors(errors: pd.DataFrame, timings: pd.DataFrame, path: Path,
-                       info: dict) -> None:
-    """The table ``auto`` reads: one row per predictor usable by auto, muscle and pressure."""
+                       info: dict) -> Path:
+    """The table ``auto`` reads: one row per predictor usable by auto, muscle and pressure.
+
+    A plain CSV (no comment lines) and its metadata as a JSON sidecar (``.json`` beside it):
+    what the numbers are, the machine that timed them and the provenance.
+    """
     speed = timings.groupby("predictor")["seconds_per_point"].median()
     table = errors[errors["spec"] != ""].copy()
     table["seconds_per_point"] = table["predictor"].map(speed)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", encoding="utf-8", newline="") as f:
-        f.write("# Model errors measured by `mkm study`: Err% (Equation 7 of Antonelli et al., "
-                "Actuators 2025, 14(3), 153) of each\n# predictor against the finest FE mesh "
-                "per study muscle and pressure, and seconds per predicted force on this "
-                "machine.\n")
-        for key, value in info.items():
-            f.write(f"# {key}: {json.dumps(value, default=str)}\n")
-        table.to_csv(f, index=False, float_format="%.6g", lineterminator="\n")
+    write_atomic(path, table.to_csv(index=False, float_format="%.6g", lineterminator="\n"))
+    write_json_atomic(path.with_suffix(".json"), {
+        "description": "Model errors measured by `mkm study`: Err% (Equation 7 of Antonelli et "
+                       "al., Actuators 2025, 14(3), 153) of each predictor against the finest "
+                       "FE mesh per study muscle and pressure, and seconds per predicted force "
+                       "on this machine.", **info})
     read_model_errors.cache_clear()
+    return path
 
 
-def run_study(out_dir="reports/study", config: StudyConfig | None = None,
-              cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
-              table_path: Path | str | None = MODEL_ERRORS_FILE) -> Path:
-    """Run the study; write figures, CSVs and ``study.html`` into ``out_dir`` and the error
-    table for ``auto`` to ``table_path`` (None: do not write it). Returns the HTML path."""
+def run_study(out_dir=None, config: StudyConfig | None = None,
+              cache_dir: Path | str | None = DEFAULT_CACHE_DIR, update_shipped: bool = False,
+              progress: bool = False) -> Path:
+    """Run the study; write figures, CSVs, ``study.html`` and the error table for ``auto``
+    (``model_errors.csv`` with its ``.json`` sidecar) into ``out_dir`` (default
+    ``mkm-out/study``) and nowhere else, unless ``update_shipped`` also replaces the shipped
+    table :data:`mkm.auto.MODEL_ERRORS_FILE`. Returns the HTML path."""
     start = time.perf_counter()
     config = config or StudyConfig()
-    out = Path(out_dir)
+    out = Path(out_dir) if out_dir is not None else default_out("study")
     out.mkdir(parents=True, exist_ok=True)
     machine = machine_name()
     info = {**provenance(), "machine_name": machine, "reference": config.reference,
@@ -333,7 +342,10 @@ def run_study(out_dir="reports/study", config: StudyConfig | None = None,
             "pressures_bar": list(config.pressures)}
     predictors = config.predictors(cache_dir)
     models = {p.label: p.build() for p in predictors}
-    errors, timings = measure_errors(config, predictors, models, cache_dir)
+    labels = {p.label for p in predictors}
+    methods = [m for m in config.stability_methods if m in labels]
+    bar = progress_bar(len(predictors) + len(methods), "study", progress, unit="method")
+    errors, timings = measure_errors(config, predictors, models, cache_dir, bar)
     summary = summarise(errors, timings, config.reference)
     info["predictors"] = {p.label: {"params": models[p.label].params(), "spec": p.spec,
                                     "version": model_version(models[p.label])}
@@ -346,11 +358,10 @@ def run_study(out_dir="reports/study", config: StudyConfig | None = None,
 
     by_label = {p.label: p for p in predictors}
     cells = []
-    for label in config.stability_methods:
-        if label not in by_label:
-            continue
+    for label in methods:
         p = by_label[label]
         frame = stability_cells(p, models[label], config, cache_dir)
+        bar.update(1)
         cells.append(frame)
         safe = label.replace("/", "_")
         figures.append((save_figure(stability_figure(frame, label), out / f"stability_{safe}.png"),
@@ -360,11 +371,13 @@ def run_study(out_dir="reports/study", config: StudyConfig | None = None,
     if not cells.empty:
         cells.to_csv(out / "stability.csv", index=False, float_format="%.6g")
         stability.to_csv(out / "stability_summary.csv", index=False)
+    bar.close()
     elapsed = time.perf_counter() - start
     info["study_seconds"] = round(elapsed, 1)
-    if table_path is not None:
-        write_model_errors(errors, timings, Path(table_path), info)
-    (out / "provenance.json").write_text(json.dumps(info, indent=1, default=str) + "\n")
+    table = write_model_errors(errors, timings, out / "model_errors.csv", info)
+    if update_shipped:
+        write_model_errors(errors, timings, MODEL_ERRORS_FILE, info)
+    write_json_atomic(out / "provenance.json", info)
     body = (f"<p>Measured on {esc(machine)}; {esc(info['date_utc'])}; study time {elapsed:.0f} s "
             f"(FE sweeps cached in {esc(cache_dir)}). Reference: {esc(config.reference)}; "
             f"{len(config.muscles)} study muscles x {len(config.pressures)} pressures. Error: "
@@ -378,7 +391,8 @@ def run_study(out_dir="reports/study", config: StudyConfig | None = None,
             + "".join(figure_html(path, caption) for path, caption in figures[1:])
             + (table_html(stability, "Stability per method and muscle (stability_summary.csv)")
                if not stability.empty else "")
-            + f"<h2>Provenance</h2><pre>{esc(json.dumps(info, indent=1, default=str))}</pre>")
+            + provenance_details(info, "provenance.json",
+                                 f"the error table for auto: {table.name} (+ .json)"))
     path = out / "study.html"
     path.write_text(html_page("Speed against accuracy, and where methods fail", body),
                     encoding="utf-8")

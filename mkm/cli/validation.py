@@ -3,41 +3,63 @@
 from __future__ import annotations
 
 import argparse
+import time
 
 from fem.ranges import parse_fraction
 
 
 def register(subparsers) -> None:
     report = subparsers.add_parser(
-        "report", help="validation report of bench runs against the force models (HTML)")
+        "report", help="validation report of bench runs against the force models (HTML)",
+        description="Compare bench runs (real or simulated, aborted ones included) with every "
+        "force model: a summary table, the runs of one muscle overlaid, pressure and force "
+        "against time, Err%% (Equation 7) and residuals in N, the speed-accuracy chart and the "
+        "model `auto` would choose. Writes report.html (self-contained) with CSVs, PNGs and "
+        "provenance.json beside it; prints the path of report.html last.",
+        epilog="example: mkm report mkm-out/demo/runs/* --models eq2,thickwall,surrogate "
+        "--out mkm-out/my-report")
     report.add_argument("runs", nargs="+", metavar="RUN_DIR", help="run folder(s) of mkm acquire")
     report.add_argument("--models", default="eq2,thickwall,axisym,surrogate",
-                        help="comma list: registry names with optional :key=value parameters "
-                        "(axisym:mesh=coarse), surrogate (the default one) or surrogate:PATH "
+                        help="comma list of predictor specs (see `mkm models`): eq2, thickwall, "
+                        "axisym:mesh=coarse, surrogate, surrogate:kind=gp, surrogate:path=DIR "
                         "(default: %(default)s)")
-    report.add_argument("--out", help="output folder (default: reports/<first run name>)")
+    report.add_argument("--out", help="output folder (default: mkm-out/report/<first run name>)")
     report.add_argument("--tolerance", default=0.02, type=_fraction,
                         help="tolerance of the auto model choice shown per run, e.g. 2%% "
                         "(default: 2%%)")
     _cache_arguments(report)
+    _progress_argument(report)
     report.set_defaults(func=_report)
 
     study = subparsers.add_parser(
-        "study", help="speed against accuracy of every predictor, and stability maps")
-    study.add_argument("--out", default="reports/study", help="output folder "
-                       "(default: %(default)s)")
-    study.add_argument("--table", default=None,
-                       help="error table for --model auto (default: fem/model_errors.csv)")
+        "study", help="speed against accuracy of every predictor, and stability maps",
+        description="Time every predictor and measure its error (Equation 7) against the finest "
+        "FE mesh on the study muscles; map where each method fails. Writes study.html, CSVs "
+        "and model_errors.csv (the table `auto` reads) under --out only; --update-shipped also "
+        "replaces the table shipped in the package (mkm/data/model_errors.csv). Cold: minutes "
+        "(FE solves and surrogate training); a second run reads them from the cache.",
+        epilog="example: mkm study --out mkm-out/study   (then mkm fem solve --model "
+        "auto:table=mkm-out/study/model_errors.csv ...)")
+    study.add_argument("--out", help="output folder (default: mkm-out/study)")
+    study.add_argument("--update-shipped", action="store_true",
+                       help="also replace the shipped study table mkm/data/model_errors.csv "
+                       "that `--model auto` reads by default")
     _cache_arguments(study)
+    _progress_argument(study)
     study.set_defaults(func=_study)
 
 
 def _cache_arguments(parser) -> None:
-    parser.add_argument("--cache", default=".cache/mkm-report", metavar="DIR",
+    parser.add_argument("--cache", metavar="DIR",
                         help="FE predictions (and the study's trained surrogates) kept here, "
-                        "so a second run is fast (default: %(default)s)")
+                        "so a second run is fast (default: the user's cache folder)")
     parser.add_argument("--no-cache", action="store_true",
                         help="recompute everything; read and write no cache")
+
+
+def _progress_argument(parser) -> None:
+    parser.add_argument("--no-progress", action="store_true",
+                        help="no progress bar on stderr (also off when stderr is not a terminal)")
 
 
 def _fraction(text):
@@ -48,23 +70,34 @@ def _fraction(text):
 
 
 def _cache(args):
-    return None if args.no_cache else args.cache
+    from mkm.prediction_cache import DEFAULT_CACHE_DIR
+
+    return None if args.no_cache else (args.cache or DEFAULT_CACHE_DIR)
 
 
 def _report(args) -> int:
+    from mkm.progress import summary_line
     from mkm.registry import parse_specs
     from mkm.report import build_report
 
-    path = build_report(args.runs, parse_specs(args.models), out_dir=args.out,
-                        cache_dir=_cache(args), tolerance=args.tolerance)
+    start = time.perf_counter()
+    specs = parse_specs(args.models)
+    path = build_report(args.runs, specs, out_dir=args.out, cache_dir=_cache(args),
+                        tolerance=args.tolerance, progress=not args.no_progress)
+    summary_line("report", f"{len(args.runs)} run(s) x {len(specs)} model(s) in "
+                 f"{time.perf_counter() - start:.1f} s; summary.csv beside the report")
     print(path)
     return 0
 
 
 def _study(args) -> int:
-    from mkm.auto import MODEL_ERRORS_FILE
+    from mkm.progress import summary_line
     from mkm.study import run_study
 
-    path = run_study(args.out, cache_dir=_cache(args), table_path=args.table or MODEL_ERRORS_FILE)
+    start = time.perf_counter()
+    path = run_study(args.out, cache_dir=_cache(args), update_shipped=args.update_shipped,
+                     progress=not args.no_progress)
+    shipped = "; replaced mkm/data/model_errors.csv" if args.update_shipped else ""
+    summary_line("study", f"done in {time.perf_counter() - start:.0f} s{shipped}")
     print(path)
     return 0

@@ -30,7 +30,7 @@ def table_path(tmp_path_factory):
             for name, (spec, errs, cost) in TABLE.items()
             for m, (d, t, e) in MUSCLES.items() for p, err in zip(PRESSURES, errs, strict=True)]
     path = tmp_path_factory.mktemp("auto") / "model_errors.csv"
-    path.write_text("# hand-made study table\n" + pd.DataFrame(rows).to_csv(index=False))
+    path.write_text(pd.DataFrame(rows).to_csv(index=False))  # hand-made study table
     return str(path)
 
 

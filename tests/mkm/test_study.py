@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -34,8 +36,7 @@ TINY = StudyConfig(
 @pytest.fixture(scope="module")
 def study(tmp_path_factory):
     out = tmp_path_factory.mktemp("study")
-    html = run_study(out / "report", TINY, cache_dir=out / "cache",
-                     table_path=out / "model_errors.csv")
+    html = run_study(out / "report", TINY, cache_dir=out / "cache")
     return out, html
 
 
@@ -77,13 +78,14 @@ def test_summary_marks_the_pareto_front_and_times_the_fe_afresh(study):
 
 def test_model_errors_table_for_auto(study):
     out, _ = study
-    table = read_model_errors(out / "model_errors.csv")
+    table = read_model_errors(out / "report" / "model_errors.csv")
     assert set(table["predictor"]) == {"eq2-inner", "thickwall", "axisym-coarse"}
     assert table.loc[table["predictor"] == "thickwall", "spec"].iloc[0] == "thickwall"
     assert len(table) == 3 * 2 * 3  # predictors x muscles x pressures
-    header = (out / "model_errors.csv").read_text().splitlines()[:12]
-    assert any(line.startswith("# versions:") for line in header)
-    assert any(line.startswith("# machine_name:") for line in header)
+    # plain CSV, metadata in the JSON sidecar
+    assert not (out / "report" / "model_errors.csv").read_text().startswith("#")
+    meta = json.loads((out / "report" / "model_errors.json").read_text())
+    assert "versions" in meta and "cores" in meta["machine_name"]
 
 
 def test_stability_of_equation2_fails_beyond_eps_max(study):

@@ -1,0 +1,45 @@
+"""Where commands write by default: the one place every default output folder and cache comes from.
+
+- Outputs (reports, studies, datasets, run folders of ``mkm acquire``) go under
+  :func:`output_root`, ``./mkm-out`` in the folder the command runs from (or the folder named by
+  the ``MKM_OUT`` environment variable), one subfolder per command: nothing lands among the
+  project's shipped files, and the path is printed at the end of every command.
+- Caches (FE predictions, trained surrogates, dataset jobs) go under :func:`cache_root`, the
+  user's cache folder of the operating system (``platformdirs``: ``~/.cache/mkm-bench`` on
+  Linux, ``%LOCALAPPDATA%\\mkm-bench\\Cache`` on Windows), so a second run from any folder is
+  fast.
+
+Replacing a file shipped inside a package (the study table, the FE dataset, the FE reference,
+the calibration) always takes an explicit flag of the command that writes it.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import platformdirs
+
+APP_NAME = "mkm-bench"
+OUT_ENV = "MKM_OUT"
+DEFAULT_OUT_ROOT = "mkm-out"
+
+
+def output_root() -> Path:
+    """``$MKM_OUT`` if set, else ``./mkm-out`` (relative to the working directory)."""
+    return Path(os.environ.get(OUT_ENV) or DEFAULT_OUT_ROOT)
+
+
+def default_out(*parts: str) -> Path:
+    """Default output of a command: ``output_root() / parts`` (``default_out("report")``)."""
+    return output_root().joinpath(*parts)
+
+
+def cache_root() -> Path:
+    """The user's cache folder for this toolkit (created on first write, not here)."""
+    return Path(platformdirs.user_cache_dir(APP_NAME))
+
+
+def default_cache(*parts: str) -> Path:
+    """A cache subfolder: ``cache_root() / parts`` (``default_cache("predictions")``)."""
+    return cache_root().joinpath(*parts)
