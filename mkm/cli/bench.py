@@ -12,6 +12,7 @@ import sys
 from bench.backend import BenchError
 from fem.ranges import parse_fraction, parse_number, parse_pressures
 from mkm.cli.common import argtype
+from mkm.paths import default_out
 
 EXIT_FAILED = 1
 EXIT_INTERRUPTED = 130
@@ -53,7 +54,7 @@ def register(subparsers) -> None:
                          help="shortening ratio, fraction or percent (default: from the config)")
     acquire.add_argument("--pressures", type=argtype(parse_pressures),
                          help="start:stop:step in bar or a comma list (default: from the config)")
-    acquire.add_argument("--out", default="data/experimental",
+    acquire.add_argument("--out", default=str(default_out("runs")),
                          help="folder that receives the run folder (default %(default)s)")
     acquire.add_argument("--plot", action="store_true", help="live plot in a separate window")
     acquire.add_argument("--no-progress", action="store_true", help="no progress bar")

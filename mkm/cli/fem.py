@@ -3,16 +3,24 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
+import pandas as pd
+
+from fem.calibration import TARGETS
 from fem.ladder import model_names
+from fem.paper import CASE_I_CSV
 from fem.ranges import parse_fraction, parse_number
 from mkm.cli.common import (
+    add_calibration_argument,
     add_geometry_arguments,
     add_model_arguments,
     argtype,
     emit_prediction,
     model_from_args,
+    with_calibration,
 )
+from mkm.paths import default_cache, default_out
 
 
 def register(subparsers) -> None:
@@ -27,13 +35,35 @@ def register(subparsers) -> None:
     solve.add_argument("--tolerance", type=argtype(parse_fraction, "--tolerance"),
                        help="auto only: largest acceptable error against the finest FE, "
                        "e.g. 2%% (default 2%%)")
-    solve.set_defaults(func=_solve)
+    add_calibration_argument(solve)
+    solve.set_defaults(func=with_calibration(_solve))
 
-    cal = fem_sub.add_parser("calibrate", help="fit theta0 of a model to a reference sweep")
+    cal = fem_sub.add_parser(
+        "calibrate", help="fit theta0 of a model to a reference sweep (CSV or bench run)",
+        description="Fit the braid angle theta0 of a model to a reference: the paper's muscle I "
+        "(default), a CSV, or a bench run folder (its settled steps; where a pressure was "
+        "measured rising and falling, the mean of both branches is fitted). Prints the fit; "
+        "--out FILE writes it to a calibration file that --calibration FILE selects in other "
+        "commands; only --update-shipped rewrites the shipped fem/calibration.json.",
+        epilog="example: mkm fem calibrate --model axisym --reference RUN_DIR --out lab.json; "
+        "then mkm fem solve --model axisym --calibration lab.json --D0 40 --t0 3 --eps 0.1")
     add_model_arguments(cal, theta0=False)
-    cal.add_argument("--reference", default="data/reference/paper_case_I.csv",
-                     help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (default: %(default)s)")
-    cal.add_argument("--dry-run", action="store_true", help="print the fit, do not store it")
+    cal.add_argument("--reference", default=str(CASE_I_CSV), metavar="CSV|RUN_DIR",
+                     help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (optional L0_mm, "
+                     "direction) or a run folder of mkm acquire (default: the paper's muscle I)")
+    cal.add_argument("--target", choices=TARGETS,
+                     help="slope: dF/dP above the threshold (default for models with a "
+                     "threshold pressure); force: least squares on every force (default for "
+                     "eq2, where both coincide); slope+threshold: slope, and report the "
+                     "reference's threshold offset")
+    cal.add_argument("--out", metavar="FILE",
+                     help="write the fit into this calibration file (other entries kept)")
+    cal.add_argument("--update-shipped", action="store_true",
+                     help="write the fit into the shipped fem/calibration.json, the default of "
+                     "every command")
+    cal.add_argument("--dry-run", action="store_true",
+                     help="print the fit, write nothing (also the default without --out or "
+                     "--update-shipped)")
     cal.set_defaults(func=_calibrate)
 
     data = fem_sub.add_parser("dataset", help="forces of a model over a grid of muscles (CSV), "
@@ -43,17 +73,18 @@ def register(subparsers) -> None:
     data.add_argument("--model", default="axisym", help=f"one of {', '.join(model_names())} "
                       "(default: %(default)s)")
     data.add_argument("--mesh", help="mesh level of FE models (default: the model's)")
-    data.add_argument("--out", default="data/mkm_dataset.csv",
-                      help="CSV to write; provenance goes next to it as .json "
-                      "(default: %(default)s)")
+    data.add_argument("--out", default=str(default_out("dataset", "mkm_dataset.csv")),
+                      help="CSV to write; provenance goes next to it as .json (default: "
+                      "%(default)s; the shipped dataset is replaced only if named here)")
     data.add_argument("--workers", type=int,
                       help="local worker processes; 1 runs in-process (default: CPU count)")
     data.add_argument("--scheduler", metavar="ADDRESS",
                       help="run on the Dask cluster at this scheduler, e.g. tcp://HOST:8786")
-    data.add_argument("--cache", default=".cache/mkm-dataset",
+    data.add_argument("--cache", default=str(default_cache("dataset")),
                       help="one file per finished job; re-runs compute only what is missing "
                       "(default: %(default)s)")
-    data.set_defaults(func=_dataset)
+    add_calibration_argument(data)
+    data.set_defaults(func=with_calibration(_dataset))
 
     conv = fem_sub.add_parser("convergence", help="axisym mesh study: force, dofs and seconds "
                               "per mesh level, with a chart")
@@ -69,9 +100,10 @@ def register(subparsers) -> None:
                       help="braid angle at rest [deg] (default: calibrated)")
     conv.add_argument("--L0", default=282.0, type=argtype(parse_number, "--L0"),
                       help="muscle length at rest [mm] (default: %(default)s)")
-    conv.add_argument("--out", default="reports/fem-convergence",
+    conv.add_argument("--out", default=str(default_out("fem-convergence")),
                       help="folder for the CSV, JSON and PNG (default: %(default)s)")
-    conv.set_defaults(func=_convergence)
+    add_calibration_argument(conv)
+    conv.set_defaults(func=with_calibration(_convergence))
 
 
 def _solve(args) -> int:
@@ -86,22 +118,77 @@ def _solve(args) -> int:
 
 
 def _calibrate(args) -> int:
-    from fem.calibration import fit_theta0, read_reference, store_calibration
+    from fem.calibration import (
+        CALIBRATION_FILE,
+        calibration_entry,
+        default_target,
+        fit_theta0,
+        store_calibration,
+    )
+    from fem.ladder import LADDER
 
-    reference = read_reference(args.reference)
-    fit = fit_theta0(lambda th: model_from_args(args, theta0_deg=th), reference)
-    model = model_from_args(args, theta0_deg=fit["theta0_deg"])
-    print(f"model {model.calibration_key}: theta0 = {fit['theta0_deg']:.3f} deg, "
-          f"RMSE {fit['rmse_N']:.2f} N, largest residual {fit['max_abs_residual_N']:.2f} N "
-          f"({fit['evaluations']} evaluations) against {args.reference}")
+    reference, name, sha256 = _load_reference(args.reference)
+    overrides = {}
+    if "L0_mm" in reference and getattr(args, "L0", None) is None:
+        lengths = reference["L0_mm"].unique()
+        if len(lengths) > 1:
+            raise ValueError(f"reference {args.reference} holds muscles of lengths "
+                             f"{', '.join(f'{v:g}' for v in lengths)} mm: expected one L0_mm "
+                             "(a model has one length)")
+        overrides["L0_mm"] = float(lengths[0])
+    model = model_from_args(args, theta0_deg=30.0, **overrides)
+    if model.name not in LADDER:
+        raise ValueError(f"--model {args.model}: only the physics models "
+                         f"{', '.join(LADDER)} have a theta0 to calibrate")
+    target = args.target or default_target(model)
+    fit = fit_theta0(lambda th: model_from_args(args, theta0_deg=th, **overrides), reference,
+                     target)
+    model = model_from_args(args, theta0_deg=fit["theta0_deg"], **overrides)
+    extra = (f", threshold offset {fit['threshold_offset_bar']:+.3f} bar (shifted RMSE "
+             f"{fit['rmse_shifted_N']:.2f} N)" if "threshold_offset_bar" in fit else "")
+    print(f"model {model.calibration_key}: theta0 = {fit['theta0_deg']:.3f} deg (target "
+          f"{target}), slope {fit['slope_model_N_per_bar']:.2f} N/bar against "
+          f"{fit['slope_reference_N_per_bar']:.2f} ({fit['slope_residual_pct']:+.3f} %), "
+          f"RMSE {fit['rmse_N']:.2f} N, largest residual {fit['max_abs_residual_N']:.2f} N"
+          f"{extra} ({fit['evaluations']} evaluations) against {name}")
     print("pressure_bar,reference_N,model_N")
     for p, ref, f in zip(reference["pressure_bar"], reference["force_N"], fit["force_N"],
                          strict=True):
         print(f"{p:g},{ref:.2f},{f:.2f}")
-    if not args.dry_run:
-        store_calibration(model.calibration_key, fit, args.reference, model.params())
-        print(f"stored in fem/calibration.json under {model.calibration_key!r}")
+    paths = [] if args.dry_run else [p for p in (args.out, args.update_shipped and
+                                                 CALIBRATION_FILE) if p]
+    if paths:
+        entry = calibration_entry(fit, model, name, sha256, LADDER[model.name].split(":")[0])
+        for path in paths:
+            store_calibration(path, model.calibration_key, entry)
+            print(f"stored in {path} under {model.calibration_key!r}", file=sys.stderr)
     return 0
+
+
+def _load_reference(path):
+    """The reference table of ``--reference``, its name and the SHA-256 of the file read.
+
+    A run folder gives its settled steps: the measured mean pressure and force of each step,
+    its direction, and the muscle from run.json.
+    """
+    from fem.calibration import check_reference, read_reference
+    from fem.records import file_sha256
+
+    path = Path(path)
+    if not path.is_dir():
+        sha = file_sha256(path) if path.is_file() else None
+        return read_reference(path), path.name, sha
+    from bench.storage import load_run
+
+    run = load_run(path)
+    steps = run.steps[run.steps["settled"]]
+    muscle = run.meta.muscle
+    frame = pd.DataFrame({"pressure_bar": steps["pressure_bar_mean"],
+                          "force_N": steps["force_N_mean"], "direction": steps["direction"],
+                          "D0_mm": muscle.D0_mm, "t0_mm": muscle.t0_mm, "eps": muscle.eps,
+                          "L0_mm": muscle.L0_mm})
+    reference = check_reference(frame, f"run {path} (settled steps of steps.csv)")
+    return reference, f"run {path.name}", file_sha256(path / "steps.csv")
 
 
 def _dataset(args) -> int:

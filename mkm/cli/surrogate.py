@@ -7,7 +7,14 @@ import warnings
 from pathlib import Path
 
 from fem.ranges import parse_number
-from mkm.cli.common import add_geometry_arguments, argtype, emit_prediction
+from mkm.cli.common import (
+    add_calibration_argument,
+    add_geometry_arguments,
+    argtype,
+    emit_prediction,
+    with_calibration,
+)
+from mkm.paths import default_out
 
 
 def register(subparsers) -> None:
@@ -18,7 +25,8 @@ def register(subparsers) -> None:
     grid = sub.add_parser("grid", help="the paper's 27-net study over repeated 80/20 splits")
     _dataset_argument(grid)
     grid.add_argument("--seeds", type=int, default=10, help="number of splits (default 10)")
-    grid.add_argument("--out", default="out/surrogate-grid", help="folder (default %(default)s)")
+    grid.add_argument("--out", default=str(default_out("surrogate-grid")),
+                      help="folder (default %(default)s)")
     grid.add_argument("--jobs", type=int, default=2, help="parallel workers (default 2)")
     grid.add_argument("--variants", default="paper,standardised",
                       help="comma list of paper (response in N, as fitrnet) and standardised")
@@ -30,7 +38,7 @@ def register(subparsers) -> None:
     train.add_argument("--kind", default="best",
                        help="best, mlp-paper, mlp-standardised, gp, physics or "
                        "net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]")
-    train.add_argument("--out", help="model folder (default models/<kind>)")
+    train.add_argument("--out", help="model folder (default mkm-out/models/<kind>)")
     train.set_defaults(func=_train)
 
     predict = sub.add_parser("predict", help="forces of one muscle from a saved surrogate (CSV)")
@@ -50,7 +58,8 @@ def register(subparsers) -> None:
     _dataset_argument(test)
     test.add_argument("--reference", help="FE reference CSV (default "
                       "data/reference/fe_test_muscles.csv)")
-    test.add_argument("--out", default="out/surrogate-test", help="folder (default %(default)s)")
+    test.add_argument("--out", default=str(default_out("surrogate-test")),
+                      help="folder (default %(default)s)")
     test.set_defaults(func=_test)
 
     ref = sub.add_parser("reference", help="build the FE reference of the test muscles")
@@ -58,8 +67,16 @@ def register(subparsers) -> None:
     ref.add_argument("--mesh", help="mesh level of the FE model (default: its own)")
     ref.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
                      help="braid angle at rest [deg] (default: calibrated)")
-    ref.add_argument("--out", help="CSV (default data/reference/fe_test_muscles.csv)")
+    ref.add_argument("--out", default=str(default_out("surrogate-reference",
+                                                      "fe_test_muscles.csv")),
+                     help="CSV to write (default %(default)s)")
+    ref.add_argument("--update-shipped", action="store_true",
+                     help="write the shipped reference surrogate/data/fe_test_muscles.csv "
+                     "instead (what the report and `surrogate test` read by default)")
     ref.set_defaults(func=_reference)
+    for command in (grid, train, predict, test, ref):  # the physics features read theta0
+        add_calibration_argument(command)
+        command.set_defaults(func=with_calibration(command.get_default("func")))
 
 
 def _dataset_argument(parser) -> None:
@@ -87,7 +104,7 @@ def _train(args) -> int:
     from surrogate.train import train_surrogate
 
     model = train_surrogate(args.kind, _dataset(args))
-    out = save_model(model, args.out or f"models/{args.kind}")
+    out = save_model(model, args.out or default_out("models", args.kind))
     rmse = model.metadata["metrics"]["rmse_test_N"]
     print(f"wrote {out} ({model.kind}): held-out RMSE median {rmse['median']:.2f} N "
           f"[{rmse['min']:.2f}-{rmse['max']:.2f}] over {rmse['n']} splits", file=sys.stderr)
@@ -137,7 +154,7 @@ def _reference(args) -> int:
     from surrogate.testset import FE_REFERENCE, build_fe_reference
 
     model = make_model(args.model, mesh=args.mesh, theta0_deg=args.theta0)
-    out = args.out or FE_REFERENCE
+    out = FE_REFERENCE if args.update_shipped else args.out
     build_fe_reference(model, out)
     print(f"wrote {out}", file=sys.stderr)
     return 0

@@ -11,7 +11,7 @@ import pytest
 from fem.calibration import calibrated
 from fem.eq2 import chou_hannaford_eps_max
 from fem.interface import Prediction
-from mkm.auto import read_model_errors
+from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
 from mkm.study import StudyConfig, classify, pareto_front, registry_predictor, run_study
 
 
@@ -36,7 +36,9 @@ TINY = StudyConfig(
 @pytest.fixture(scope="module")
 def study(tmp_path_factory):
     out = tmp_path_factory.mktemp("study")
+    shipped = MODEL_ERRORS_FILE.read_bytes()
     html = run_study(out / "report", TINY, cache_dir=out / "cache")
+    assert MODEL_ERRORS_FILE.read_bytes() == shipped  # no --update-shipped: left alone
     return out, html
 
 

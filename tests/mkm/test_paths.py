@@ -1,0 +1,70 @@
+"""Commands write only under their --out (default ./mkm-out) and the user's cache, never over
+the files that ship with the project (mkm.paths)."""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from mkm.cli import build_parser, main
+from mkm.paths import cache_root, default_out, output_root
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _subparsers(parser, prefix=()):
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield (*prefix, name), sub
+                yield from _subparsers(sub, (*prefix, name))
+
+
+def test_every_default_output_is_under_mkm_out_or_the_user_cache():
+    checked = 0
+    for name, sub in _subparsers(build_parser()):
+        for action in sub._actions:
+            if action.dest in ("out", "cache") and action.default is not None:
+                path = Path(action.default)
+                assert (path.is_relative_to(output_root()) or path.is_relative_to(cache_root())), \
+                    f"mkm {' '.join(name)} {action.option_strings[0]} defaults to {path}"
+                checked += 1
+    assert checked >= 6  # acquire, dataset, convergence, surrogate grid/test/reference, ...
+
+
+def test_default_out_follows_mkm_out(monkeypatch, tmp_path):
+    monkeypatch.setenv("MKM_OUT", str(tmp_path))
+    assert default_out("report", "x") == tmp_path / "report" / "x"
+    monkeypatch.delenv("MKM_OUT")
+    assert default_out("study") == Path("mkm-out") / "study"
+
+
+def _shipped_hashes() -> dict[str, str]:
+    """SHA-256 of every tracked file that is data (what a command could rewrite)."""
+    files = subprocess.run(["git", "ls-files", "-z"], cwd=ROOT, capture_output=True,
+                           check=True).stdout.decode().split("\0")
+    data = [f for f in files if f and Path(f).suffix in {".csv", ".json", ".toml", ".md"}]
+    return {f: hashlib.sha256((ROOT / f).read_bytes()).hexdigest() for f in data
+            if (ROOT / f).exists()}
+
+
+@pytest.mark.skipif(not (ROOT / ".git").exists(), reason="not a git work tree")
+def test_demo_and_report_leave_the_shipped_files_alone(monkeypatch, tmp_path, capsys):
+    before = _shipped_hashes()
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("MKM_OUT", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    assert main(["demo", "--no-progress"]) == 0
+    report = Path(capsys.readouterr().out.splitlines()[-1])
+    runs = sorted((tmp_path / "mkm-out" / "demo" / "runs").iterdir())
+    assert main(["report", *map(str, runs), "--models", "eq2,thickwall", "--no-progress"]) == 0
+    again = Path(capsys.readouterr().out.splitlines()[-1])
+    # defaults: ./mkm-out/demo/report and ./mkm-out/report/<first run>
+    assert report == Path("mkm-out") / "demo" / "report" / "report.html"
+    assert again == Path("mkm-out") / "report" / runs[0].name / "report.html"
+    assert (tmp_path / again).is_file()
+    assert _shipped_hashes() == before
