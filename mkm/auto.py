@@ -2,8 +2,11 @@
 
 "Model no more than a scene needs", as a feature. ``mkm study`` measures, for every model of
 the ladder, the error (the paper's Equation 7) against the finest converged FE model on a set of
-study muscles, and the cost per predicted force; it commits the point-by-point table as
-``mkm/data/model_errors.csv``. For each query point ``auto`` then
+study muscles, and the cost per predicted force; the point-by-point table ships as
+``mkm/data/model_errors.csv``. The scene is the query: by default ``auto`` answers a whole call
+(a sweep, a bench run) with ONE model, the cheapest whose worst bound over all its points meets
+the tolerance and whose prediction is valid at every point, so a curve never mixes models.
+With ``per_point=True`` (``--per-point``) it chooses for each query point instead:
 
 1. bounds each candidate's error at the point by the worst |Err%| the study measured for that
    candidate on the :data:`NEIGHBOURS` study muscles nearest to the query muscle (distance in
@@ -15,7 +18,7 @@ study muscles, and the cost per predicted force; it commits the point-by-point t
 3. falls back to the reference itself, the finest FE mesh, where nothing cheaper qualifies (a
    query outside the study's pressures or far from every study muscle included).
 
-Each point records which model answered (extra ``model_used``) and the error bound that
+Either way each point records which model answered (extra ``model_used``) and the error bound that
 justified it (``error_bound_pct``; NaN for the fallback); :func:`explain` says it in words.
 """
 
@@ -110,7 +113,7 @@ def make_candidate(spec: str) -> ForceModel:
 
 
 class AutoModel(ForceModel):
-    """The cheapest model meeting ``tolerance`` per point (``--model auto --tolerance 2%``).
+    """The cheapest model meeting ``tolerance`` over the query (``--model auto --tolerance 2%``).
 
     Parameters
     ----------
@@ -118,23 +121,30 @@ class AutoModel(ForceModel):
         Largest acceptable |Err%| against the finest FE model, a fraction (0.02 = 2 %).
     table : str, optional
         Study table to read (default ``mkm/data/model_errors.csv``, written by ``mkm study``).
+    per_point : bool
+        False (default): one model for the whole call, the cheapest whose largest bound over
+        all points meets the tolerance. True: the cheapest model per point.
     """
 
     name = "auto"
 
-    def __init__(self, tolerance: float = 0.02, table: str | None = None):
+    def __init__(self, tolerance: float = 0.02, table: str | None = None,
+                 per_point: bool = False):
         self.tolerance = tolerance
         self.table = table
+        self.per_point = bool(per_point)
 
     def params(self):
         path = Path(self.table or MODEL_ERRORS_FILE)
         digest = hashlib.sha256(path.read_bytes()).hexdigest()[:12] if path.exists() else None
-        return {"tolerance": self.tolerance, "table": path.name, "table_sha256": digest}
+        return {"tolerance": self.tolerance, "table": path.name, "table_sha256": digest,
+                "per_point": self.per_point}
 
     def choose(self, P, D0, t0, eps) -> dict[str, np.ndarray]:
-        """Per point: the predictor that answers (``model_used``), its error bound, and the
-        forces of the cheaper candidates that qualified; the fallback's points are left to
-        :meth:`_forces` (NaN force, ``model_used`` = :data:`FALLBACK`)."""
+        """Per point: the predictor that answers (``model_used``, the same for every point
+        unless ``per_point``), its error bound, and the forces of the cheaper candidate that
+        qualified; the fallback's points are left to :meth:`_forces` (NaN force,
+        ``model_used`` = :data:`FALLBACK`)."""
         if not 0.0 < self.tolerance < 1.0:
             raise ValueError(f"tolerance={self.tolerance:g} is invalid: expected a fraction in "
                              "(0, 1), for example 0.02 or 2%")
@@ -146,15 +156,22 @@ class AutoModel(ForceModel):
         bound_used = np.full(P.shape, np.nan)
         todo = np.ones(P.shape, dtype=bool)
         for row in candidates(table).itertuples():
+            if not todo.any():
+                break
             if row.predictor == FALLBACK:
                 continue
             bound = error_bounds(table, row.predictor, P, D0, t0, eps)
-            idx = np.flatnonzero(todo & (bound <= 100.0 * self.tolerance))
+            meets = bound <= 100.0 * self.tolerance  # NaN (not covered) never meets it
+            if not self.per_point and not meets.all():
+                continue
+            idx = np.flatnonzero(todo & meets)
             if idx.size == 0:
                 continue
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # a point a candidate flags goes to the next one
                 pred = make_candidate(row.spec).predict(P[idx], D0[idx], t0[idx], eps[idx])
+            if not self.per_point and not pred.valid.all():
+                continue  # one model for the whole query: it must answer every point
             ok = idx[pred.valid]
             force[ok] = pred.force_N[pred.valid]
             used[ok] = row.predictor

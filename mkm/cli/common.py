@@ -36,6 +36,31 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
                         help="muscle length at rest [mm] (default 282)")
     parser.add_argument("--mesh", choices=("coarse", "medium", "fine"),
                         help="axisym only: FE mesh level (default medium)")
+    parser.add_argument("--per-point", action="store_true",
+                        help="auto only: choose the model per point (default: one model for "
+                        "the whole sweep, the cheapest that meets the tolerance over all of it)")
+
+
+def add_calibration_argument(parser) -> None:
+    """``--calibration FILE``: the theta0 calibration file for this command (see
+    :func:`with_calibration`); the shipped ``fem/calibration.json`` is left as it is."""
+    parser.add_argument("--calibration", metavar="FILE",
+                        help="calibration file written by `mkm fem calibrate --out FILE`: the "
+                        "default theta0 of every physics model in this command (default: the "
+                        "shipped fem/calibration.json)")
+
+
+def with_calibration(func):
+    """Run the command ``func(args)`` with ``args.calibration`` selected (if given)."""
+
+    def run(args):
+        from fem.calibration import use_calibration
+
+        with use_calibration(getattr(args, "calibration", None)):
+            return func(args)
+
+    run.__name__ = func.__name__
+    return run
 
 
 def add_geometry_arguments(parser) -> None:
@@ -55,7 +80,8 @@ def model_from_args(args, **overrides):
     spec = parse_spec(args.model)
     flags = {"theta0_deg": getattr(args, "theta0", None),
              "diameter": getattr(args, "diameter", None), "L0_mm": getattr(args, "L0", None),
-             "tolerance": getattr(args, "tolerance", None), "mesh": getattr(args, "mesh", None)}
+             "tolerance": getattr(args, "tolerance", None), "mesh": getattr(args, "mesh", None),
+             "per_point": True if getattr(args, "per_point", False) else None}
     flags.update(overrides)
     flags = {k: v for k, v in flags.items() if v is not None}
     unknown = sorted(set(flags) - set(spec.entry.params))

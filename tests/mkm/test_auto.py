@@ -63,10 +63,10 @@ def test_an_invalid_cheap_model_is_skipped(table_path):
     assert pred.extras["model_used"].tolist() == ["thickwall"]  # eq2 beyond its eps_max
 
 
-def test_falls_back_to_the_fe_model(table_path):
+def test_falls_back_to_the_fe_model_per_point(table_path):
     # 2.0 bar: thickwall's bound is 3 % > 2 %; D0 80 mm: no study muscle near
     P, D0 = np.array([1.0, 2.0, 1.0]), np.array([35.0, 35.0, 80.0])
-    pred = AutoModel(tolerance=0.02, table=table_path).predict(P, D0, 2.5, 0.05)
+    pred = AutoModel(tolerance=0.02, table=table_path, per_point=True).predict(P, D0, 2.5, 0.05)
     assert pred.extras["model_used"].tolist() == ["thickwall", "axisym-fine", "axisym-fine"]
     assert np.isnan(pred.extras["error_bound_pct"][1:]).all()
     fe = make_model("axisym", mesh="coarse").predict(P[1:], D0[1:], 2.5, 0.05)
@@ -74,6 +74,24 @@ def test_falls_back_to_the_fe_model(table_path):
     text = explain(pred)
     assert "auto: thickwall for 1 of 3 points" in text and "<= 2%" in text
     assert "auto: axisym-fine for 2 of 3 points" in text
+
+
+def test_one_model_for_the_whole_sweep_by_default(table_path):
+    # muscle M1 over 1 and 2 bar: thickwall meets 2 % at 1 bar (bound 1 %) but not at 2 bar
+    # (3 %), so the sweep as a whole goes to the FE model; at 5 % Equation 2 (bound 5 % at every
+    # pressure) is the cheapest that holds over the whole sweep
+    P = np.array([1.0, 2.0])
+    tight = AutoModel(tolerance=0.02, table=table_path).predict(P, 35.0, 2.5, 0.05)
+    assert tight.extras["model_used"].tolist() == ["axisym-fine", "axisym-fine"]
+    loose = AutoModel(tolerance=0.035, table=table_path).predict(P, 35.0, 2.5, 0.05)
+    assert loose.extras["model_used"].tolist() == ["thickwall", "thickwall"]  # 3 % <= 3.5 %
+    np.testing.assert_allclose(loose.extras["error_bound_pct"], [1.0, 3.0])
+    # eq2 qualifies by its bound at M1 and M2, but is invalid at M2's eps: the sweep over both
+    # muscles cannot use it, not even at M1
+    both = AutoModel(tolerance=0.10, table=table_path).predict([1.0, 1.0], [35.0, 40.0],
+                                                               [2.5, 3.0], [0.05, 0.15])
+    assert both.extras["model_used"].tolist() == ["thickwall", "thickwall"]
+    assert "per_point" in both.params and both.params["per_point"] is False
 
 
 def test_bad_tolerance_and_missing_table_are_clear_errors(table_path, tmp_path):
