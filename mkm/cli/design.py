@@ -1,0 +1,71 @@
+"""``mkm design``: argument parsing only; :func:`mkm.design.run_design` does the work."""
+
+from __future__ import annotations
+
+from fem.ranges import parse_number
+from mkm.cli.common import argtype
+
+EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
+           "--t0 2:3 --out mkm-out/design")
+
+
+def register(subparsers) -> None:
+    from mkm.design import OBJECTIVES, parse_bounds, parse_requirement
+
+    p = subparsers.add_parser(
+        "design", help="design a muscle for required forces: surrogate search of the design "
+        "box, FE verification of the best designs", epilog=EXAMPLE)
+    p.add_argument("--require", action="append", default=[], metavar="F@P,eps=E",
+                   type=argtype(parse_requirement, "--require"),
+                   help="force at least F [N] at pressure P [bar], held at shortening eps "
+                   "(fraction or %%), e.g. 400N@2bar,eps=0.10; repeatable")
+    p.add_argument("--spec", metavar="FILE", help="TOML spec: [[requirement]] tables "
+                   "(force_N, pressure_bar, eps), [constraints], objective, top; the flags "
+                   "add requirements and override the rest")
+    for flag, key, what in (("--D0", "D0_mm", "inner diameter [mm] (default: the surrogate's "
+                             "training box)"),
+                            ("--t0", "t0_mm", "wall thickness [mm] (default: the surrogate's "
+                             "training box)"),
+                            ("--L0", "L0_mm", "length at rest [mm] (default 282)"),
+                            ("--theta0", "theta0_deg", "braid angle at rest [deg] (default: "
+                             "the calibration)")):
+        p.add_argument(flag, dest=key, type=argtype(parse_bounds, flag), metavar="V|LO:HI",
+                       help=f"{what}: a value or a range low:high")
+    p.add_argument("--rubber", help="wall material(s), comma list (default silastic_s)")
+    p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
+                   type=argtype(parse_number, "--max-outer-diameter"),
+                   help="largest outer diameter at the working pressure [mm] (the housing)")
+    p.add_argument("--max-pressure", dest="max_pressure_bar", metavar="BAR",
+                   type=argtype(parse_number, "--max-pressure"),
+                   help="largest working pressure [bar] (default: the requirements' largest)")
+    p.add_argument("--objective", choices=OBJECTIVES,
+                   help="ranking of the designs (default min-outer-diameter)")
+    p.add_argument("--top", type=int, help="designs verified with the FE model (default 5)")
+    p.add_argument("--mesh", choices=("coarse", "medium", "fine"), default="medium",
+                   help="FE mesh of the verification (default: %(default)s, the converged one)")
+    p.add_argument("--surrogate", default="surrogate", metavar="SPEC",
+                   help="surrogate spec that searches the box (default: %(default)s)")
+    p.add_argument("--out", help="output folder (default: mkm-out/design)")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
+    p.set_defaults(func=_design)
+
+
+def _design(args) -> int:
+    from mkm.design import run_design
+    from mkm.paths import default_out
+    from mkm.progress import summary_line
+
+    constraints = {k: getattr(args, k) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg",
+                                                 "max_outer_diameter_mm", "max_pressure_bar")}
+    if args.rubber:
+        constraints["rubber"] = tuple(r.strip() for r in args.rubber.split(",") if r.strip())
+    if not args.require and not args.spec:
+        raise ValueError("no requirement given: expected --require F@P,eps=E (for example "
+                         "--require 400N@2bar,eps=0.10) or --spec FILE")
+    result = run_design(args.require, constraints, args.objective, args.top, spec=args.spec,
+                        mesh=args.mesh, surrogate=args.surrogate,
+                        out_dir=args.out or default_out("design"),
+                        progress=not args.no_progress)
+    summary_line("design", result.summary())
+    print(result.files["html"])
+    return 0 if result.chosen is not None else 1

@@ -1,0 +1,185 @@
+"""`mkm design`: surrogate search, FE verification, the physics of the housing, bad input.
+
+The FE runs here use the coarse mesh (``mesh="coarse"``, 0.15 s a sweep): within 0.1 N of the
+converged medium mesh at these muscles (README, mesh convergence), far inside every tolerance
+below. The default of the command is the medium mesh.
+"""
+
+import json
+import re
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from fem.eq2 import chou_hannaford_eps_max
+from fem.fe.model import Axisym
+from fem.thickwall import klute_hannaford_threshold_pressure
+from mkm.cli import main
+from mkm.design import (
+    Requirement,
+    design,
+    outer_diameter_mm,
+    parse_requirement,
+    search,
+)
+
+MESH = "coarse"
+
+
+def fe_force(D0, t0, pressure_bar, eps, theta0_deg):
+    return float(Axisym(theta0_deg=theta0_deg, mesh=MESH).predict(pressure_bar, D0, t0,
+                                                                  eps).force_N)
+
+
+def run(argv, capsys):
+    try:
+        code = main(argv)
+    except SystemExit as exc:  # argparse errors leave through parser.exit
+        code = exc.code
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_requirement_syntax():
+    assert parse_requirement("400N@2bar,eps=0.10") == Requirement(400.0, 2.0, 0.10)
+    assert parse_requirement(" 400 N @ 2 bar , eps = 10% ") == Requirement(400.0, 2.0, 0.10)
+    with pytest.raises(ValueError, match="malformed: expected FORCE N@PRESSURE bar,eps=EPS"):
+        parse_requirement("400N at 2bar")
+    with pytest.raises(ValueError, match="force -5 N is invalid"):
+        parse_requirement("-5N@2bar,eps=0.1")
+
+
+def test_outer_diameter_is_the_free_contraction_of_the_thick_wall_model():
+    D0, t0, theta0 = 37.0, 2.7, 32.0
+    braid = D0 + 2 * t0
+    # no pressure: the muscle at rest
+    assert outer_diameter_mm(D0, t0, theta0, 0.0) == pytest.approx(braid, rel=1e-12)
+    # at 2 bar the free shortening eps_f has threshold pressure 2 bar, and the braid of
+    # constant thread length gives D^2 = Db^2 (1 + eps_f (2 - eps_f) cot^2 theta0)
+    D = float(outer_diameter_mm(D0, t0, theta0, 2.0))
+    cot2 = 1 / np.tan(np.deg2rad(theta0)) ** 2
+    eps_f = 1 - np.sqrt(1 - ((D / braid) ** 2 - 1) / cot2)
+    assert klute_hannaford_threshold_pressure(D0, t0, eps_f, theta0) == pytest.approx(2.0,
+                                                                                   rel=1e-6)
+    # an unbounded pressure drives it to the braid lock: cos theta = 1/sqrt(3), so
+    # D = Db sin(theta_lock) / sin(theta0) = Db sqrt(2/3) / sin(theta0)
+    locked = float(outer_diameter_mm(D0, t0, theta0, 1e9))
+    assert locked == pytest.approx(braid * np.sqrt(2 / 3) / np.sin(np.deg2rad(theta0)),
+                                   rel=1e-6)
+    assert braid < D < locked
+
+
+def test_round_trip_off_grid_muscle():
+    """A muscle off the training grid (D0 37, t0 2.7): ask for its own FE force with t0 fixed
+    and the smallest outer diameter; the design is that muscle again."""
+    found = search(["1N@2bar,eps=0.1"], {"t0_mm": 2.7})  # the theta0 the design uses
+    theta0 = float(found.candidates["theta0_deg"].iloc[0])
+    force = fe_force(37.0, 2.7, 2.0, 0.10, theta0)
+    table = design([Requirement(force, 2.0, 0.10)], {"t0_mm": 2.7}, top=2, mesh=MESH)
+    best = table.iloc[0]
+    assert best["meets_all"] and best["r1_fe_N"] >= force
+    # force grows with D0 (about 30 N/mm here), so the narrowest muscle meeting the force with
+    # the surrogate's few-newton margin is the muscle itself, a grid step or a few above
+    assert best["t0_mm"] == 2.7
+    assert abs(best["D0_mm"] - 37.0) <= 0.5
+    assert best["D0_mm"] >= 37.0 - 0.05
+
+
+def test_force_stroke_spec_meets_both_points_and_sits_on_the_binding_one():
+    reqs = [Requirement(300.0, 2.5, 0.10), Requirement(250.0, 2.5, 0.20)]
+    theta0 = float(search(reqs).candidates["theta0_deg"].iloc[0])
+    # feasible in the box: the widest, thinnest muscle of the box meets both with the FE
+    assert fe_force(50.0, 2.0, 2.5, 0.10, theta0) >= 300.0
+    assert fe_force(50.0, 2.0, 2.5, 0.20, theta0) >= 250.0
+    table = design(reqs, top=2, mesh=MESH)
+    best = table.iloc[0]
+    assert best["meets_all"]
+    assert best["r1_fe_N"] >= 300.0 and best["r2_fe_N"] >= 250.0
+    # the stroke end binds: the smallest muscle clears 250 N at eps 0.2 by about the
+    # surrogate's margin (plus its error and one 0.05 mm grid step: < 10 N), not by hundreds
+    assert 0.0 <= best["r2_fe_margin_N"] <= best["r2_uncertainty_N"] + 10.0
+    assert best["r1_fe_margin_N"] > 100.0
+
+
+def test_past_the_lock_names_eps_max():
+    with pytest.raises(ValueError, match="past the braid lock") as info:
+        search(["100N@2bar,eps=0.4"])
+    match = re.search(r"eps_max = ([\d.]+) at theta0 = ([\d.]+) deg", str(info.value))
+    eps_max, theta0 = float(match[1]), float(match[2])
+    assert eps_max == pytest.approx(float(chou_hannaford_eps_max(theta0)), abs=1e-3)
+    assert eps_max < 0.4
+
+
+def test_infeasible_names_the_closest_design_and_its_shortfall():
+    with pytest.raises(ValueError, match="infeasible") as info:
+        search(["5000N@2bar,eps=0.1"])
+    text = str(info.value)
+    match = re.search(r"closest: D0 = ([\d.]+) mm, t0 = ([\d.]+) mm.*short by (\d+) N "
+                      r"\(predicted (\d+) N\)", text)
+    assert match, text
+    # the closest design is the strongest of the box, its shortfall the rest of 5000 N
+    found = search(["1N@2bar,eps=0.1"])
+    strongest = found.candidates.loc[found.candidates["r1_surrogate_N"].idxmax()]
+    assert float(match[1]) == pytest.approx(strongest["D0_mm"])
+    assert float(match[2]) == pytest.approx(strongest["t0_mm"])
+    assert float(match[4]) == pytest.approx(strongest["r1_surrogate_N"], abs=1.0)
+    assert float(match[3]) == pytest.approx(5000.0 - strongest["r1_surrogate_N"], abs=1.0)
+
+
+def test_conflicting_constraints_are_named():
+    with pytest.raises(ValueError, match=r"max_outer_diameter_mm=40 conflicts with D0_mm >= 45"):
+        search(["100N@2bar,eps=0.1"], {"D0_mm": (45, 50), "max_outer_diameter_mm": 40})
+    with pytest.raises(ValueError, match="at 2 bar conflicts with the largest working pressure "
+                                         "1.5 bar"):
+        search(["100N@2bar,eps=0.1"], {"max_pressure_bar": 1.5})
+    with pytest.raises(ValueError, match=r"D0_mm=60 reaches outside the surrogate's training"):
+        search(["100N@2bar,eps=0.1"], {"D0_mm": 60})
+    with pytest.raises(ValueError, match="low 50 is above high 40"):
+        search(["100N@2bar,eps=0.1"], {"D0_mm": "50:40"})
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--require", "100N@2bar,eps=0.4"], "past the braid lock: eps_max = "),
+    (["--require", "5000N@2bar,eps=0.1"], "infeasible: no design in the box"),
+    (["--require", "100N@2bar"], "malformed"),
+    (["--require", "100N@2bar,eps=0.1", "--max-pressure", "1"], "conflicts with the largest"),
+    ([], "no requirement given"),
+])
+def test_cli_errors_are_one_line(argv, message, capsys, tmp_path):
+    code, out, err = run(["design", *argv, "--out", str(tmp_path / "d")], capsys)
+    assert code == 2
+    assert len(err.strip().splitlines()) == 1 and "error:" in err and message in err
+    assert not (tmp_path / "d").exists()
+
+
+def test_cli_spec_file_writes_csv_json_and_html(tmp_path, capsys):
+    spec = tmp_path / "spec.toml"
+    spec.write_text('objective = "min-rubber-volume"\ntop = 1\n'
+                    "[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = 0.10\n"
+                    "[[requirement]]\nforce_N = 250\npressure_bar = 2.5\neps = \"20%\"\n"
+                    "[constraints]\nt0_mm = [2.0, 3.0]\n", encoding="utf-8")
+    out = tmp_path / "design"
+    code, stdout, err = run(["design", "--spec", str(spec), "--mesh", MESH, "--no-progress",
+                             "--out", str(out)], capsys)
+    assert code == 0, err
+    assert stdout.strip() == str(out / "design.html")
+    assert err.startswith("mkm design: ") and "1 meet every requirement" in err
+    table = pd.read_csv(out / "designs.csv")
+    assert len(table) == 1 and bool(table["meets_all"].iloc[0])
+    assert (table["r1_fe_N"] >= 300).all() and (table["r2_fe_N"] >= 250).all()
+    assert table["t0_mm"].between(2.0, 3.0).all()
+    record = json.loads((out / "designs.json").read_text())
+    assert record["objective"] == "min-rubber-volume"
+    assert [r["eps"] for r in record["requirements"]] == [0.10, 0.20]
+    assert "versions" in record["provenance"]["software"]
+    assert record["provenance"]["fe"]["params"]["mesh"] == MESH
+    html = (out / "design.html").read_text()
+    assert html.count("<img ") == 3  # one contour figure per requirement, the FE curves
+
+
+def test_spec_file_unknown_key(tmp_path, capsys):
+    spec = tmp_path / "spec.toml"
+    spec.write_text("[constraints]\nD0 = 40\n", encoding="utf-8")
+    code, _, err = run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")], capsys)
+    assert code == 2 and "unknown constraint(s) D0" in err
