@@ -1,13 +1,41 @@
 """theta0 calibration: the braid angle at rest is not published, so each model fits it.
 
-``fem/calibration.json`` is the versioned record every model reads its default theta0 from. Each
-entry names the reference it was fitted to, the residual, the command and the date. Only theta0
-is fitted; everything else in the physics stays as measured or published.
+A calibration file (JSON) maps a model's calibration key (``"eq2-inner"``, ``"thickwall"``,
+``"axisym"``) to its fitted ``theta0_deg`` with the target, reference, residuals, command, date
+and code version of the fit. ``fem/calibration.json`` ships with the package and is every
+model's default; :func:`use_calibration` selects another file (a bench prototype's fit) for
+the duration of a command without touching the shipped one. Only theta0 is fitted; everything
+else in the physics stays as measured or published.
+
+Targets (:func:`fit_theta0`):
+
+``force``
+    Least squares on every reference force. Right for Equation 2, which like the paper's FE
+    forces of muscle I goes through the origin.
+``slope``
+    The model's dF/dP above its own threshold pressure equals the reference's dF/dP above the
+    reference's threshold. The slope is what the braid geometry fixes and what transfers from
+    one muscle to another; the threshold is physics the wall models compute and the paper's
+    muscle I does not show (its forces are proportional to P from 0 bar, which no wall can do).
+    A force fit makes up for the missing threshold by steepening the slope: theta0 comes out
+    about 0.9 deg low for axisym. Default for every model with a threshold.
+``slope+threshold``
+    As ``slope``, and also fits the reference's threshold offset (the pressure by which the
+    reference's force line is shifted from the model's) and reports it with the residual of
+    the shifted model.
+
+The reference is one table, whatever its source (a CSV, or the settled steps of a bench run
+folder, which the application loads): columns ``pressure_bar, D0_mm, t0_mm, eps, force_N``,
+optional ``L0_mm`` and ``direction`` (``up``/``down``). Where both sweep directions were measured
+at a pressure, their mean is fitted: braid friction lowers the rising branch and raises the
+falling one by about the same amount, and the frictionless models sit between them.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
+import os
 from functools import cache
 from pathlib import Path
 
@@ -15,29 +43,83 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import minimize_scalar
 
-from fem.records import provenance
+from fem.records import file_sha256, provenance, source_version, write_atomic
 
 CALIBRATION_FILE = Path(__file__).with_name("calibration.json")
 THETA0_BOUNDS_DEG = (15.0, 50.0)  # practical braids are 20-30 deg; 54.7 deg is the lock angle
+TARGETS = ("slope", "force", "slope+threshold")
+REFERENCE_COLUMNS = ("pressure_bar", "D0_mm", "t0_mm", "eps", "force_N")
+#: Reference points at or below this share of a sweep's largest force count as "below the
+#: reference's threshold" (a held muscle that has not shortened yet, plus sensor noise): they
+#: enter the force residuals but not the slope.
+THRESHOLD_FLOOR_FRACTION = 0.02
+
+_selected: Path | None = None
+
+
+def calibration_file() -> Path:
+    """The calibration file in effect: the one :func:`use_calibration` selected, else shipped."""
+    return _selected or CALIBRATION_FILE
+
+
+@contextlib.contextmanager
+def use_calibration(path: str | os.PathLike | None):
+    """Make ``path`` the calibration file every model reads its default theta0 from.
+
+    ``None`` keeps the current one. The file is checked at once (readable JSON of entries with
+    a ``theta0_deg``); the previous selection is restored on exit. Models resolve theta0 when
+    they predict, and the dataset builder sends its workers the resolved angle, so workers
+    never read a calibration file of their own.
+    """
+    global _selected
+    if path is None:
+        yield calibration_file()
+        return
+    path = Path(path)
+    _load(path)
+    previous, _selected = _selected, path
+    try:
+        yield path
+    finally:
+        _selected = previous
 
 
 @cache
-def _load(path: Path = CALIBRATION_FILE) -> dict:
-    with open(path, encoding="utf-8") as f:
-        return json.load(f)
+def _read(path: Path, mtime_ns: int) -> dict:
+    try:
+        entries = json.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}") from None
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise ValueError(f"calibration {path}: not valid JSON: {exc}") from None
+    bad = [k for k, v in entries.items() if not isinstance(v, dict) or "theta0_deg" not in v] \
+        if isinstance(entries, dict) else ["(the file)"]
+    if bad:
+        raise ValueError(f"calibration {path}: entry {bad[0]!r} has no theta0_deg: expected a "
+                         "file written by `mkm fem calibrate --out FILE`")
+    return entries
+
+
+def _load(path: Path) -> dict:
+    try:
+        mtime = path.stat().st_mtime_ns
+    except OSError as exc:
+        raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}") from None
+    return _read(path, mtime)
 
 
 def calibrated(key: str) -> dict:
-    """The calibration entry ``key`` (for example ``"eq2-inner"``), with ``theta0_deg``."""
-    entries = _load()
+    """The entry ``key`` (for example ``"eq2-inner"``) of the calibration file in effect."""
+    path = calibration_file()
+    entries = _load(path)
     if key not in entries:
-        raise ValueError(f"no calibrated theta0 for model {key!r} in {CALIBRATION_FILE.name}: "
-                         f"pass --theta0 or run `mkm fem calibrate --model {key.split('-')[0]}`")
+        raise ValueError(f"no calibrated theta0 for model {key!r} in {path}: pass --theta0 or "
+                         f"run `mkm fem calibrate --model {key.split('-')[0]} --out {path.name}`")
     return entries[key]
 
 
 class CalibratedTheta0:
-    """Mixin of models whose braid angle defaults to their ``fem/calibration.json`` entry."""
+    """Mixin of models whose braid angle defaults to their entry in the calibration file."""
 
     theta0_deg: float | None
 
@@ -48,58 +130,227 @@ class CalibratedTheta0:
 
 
 def read_reference(path) -> pd.DataFrame:
-    """A reference sweep: ``pressure_bar, D0_mm, t0_mm, eps, force_N`` (``L0_mm`` optional)."""
-    df = pd.read_csv(path, comment="#")
-    missing = {"pressure_bar", "D0_mm", "t0_mm", "eps", "force_N"} - set(df.columns)
-    if missing:
-        raise ValueError(f"reference {path} lacks columns {sorted(missing)}: expected "
-                         "pressure_bar, D0_mm, t0_mm, eps, force_N")
-    return df
+    """A reference sweep from a CSV with :data:`REFERENCE_COLUMNS` (see :func:`check_reference`)."""
+    try:
+        frame = pd.read_csv(path, comment="#")
+    except OSError as exc:
+        raise ValueError(f"reference {path}: cannot read it: {exc.strerror}") from None
+    return check_reference(frame, str(path))
 
 
-def fit_theta0(make_model, reference: pd.DataFrame, bounds=THETA0_BOUNDS_DEG,
-               xatol: float = 0.01) -> dict:
-    """Least-squares fit of theta0 [deg] of ``make_model(theta0_deg)`` to ``reference`` forces.
+def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFrame:
+    """``frame`` with its columns checked, one row per pressure and muscle (branches averaged).
 
-    Returns the fitted angle, the RMSE and the largest residual [N], the fitted forces and how many
-    model evaluations it took. Raises ``RuntimeError`` when the model cannot produce a valid force
-    at the optimum (a fit on invalid points is no fit).
+    Rows of the ``up`` and ``down`` sweep at the same muscle and pressure (rounded to 1 mbar)
+    are averaged per direction, then the directions are averaged (their mean is what a
+    frictionless model predicts). Raises ``ValueError`` naming a missing column or a bad value.
     """
+    missing = [c for c in REFERENCE_COLUMNS if c not in frame.columns]
+    if missing:
+        raise ValueError(f"{name} lacks columns {missing}: expected "
+                         f"{', '.join(REFERENCE_COLUMNS)} (optional L0_mm, direction)")
+    frame = frame.dropna(subset=list(REFERENCE_COLUMNS))
+    if len(frame) < 2:
+        raise ValueError(f"{name} has {len(frame)} complete rows: expected at least 2")
+    keys = ["D0_mm", "t0_mm", "eps"] + (["L0_mm"] if "L0_mm" in frame else [])
+    values = ["pressure_bar", "force_N"]
+    frame = frame.assign(level=frame["pressure_bar"].round(3))
+    if "direction" in frame:
+        frame = frame.groupby(keys + ["level", "direction"], as_index=False)[values].mean()
+    frame = frame.groupby(keys + ["level"], as_index=False)[values].mean()
+    return frame[keys + values]
+
+
+def _sweeps(reference: pd.DataFrame) -> list[pd.DataFrame]:
+    keys = [k for k in ("D0_mm", "t0_mm", "eps", "L0_mm") if k in reference]
+    return [group for _, group in reference.groupby(keys, sort=True)]
+
+
+def line_above_threshold(pressure_bar, force_N, floor_N: float = 0.0):
+    """Least-squares line ``F = s (P - P*)`` through the points with force above ``floor_N``.
+
+    Returns the slope ``s`` [N/bar] and the threshold ``P*`` [bar] (NaN with fewer than two
+    such points). Points at or below the floor are below the threshold: the held muscle has
+    not shortened yet there, so they carry no information on the slope.
+    """
+    P, F = np.asarray(pressure_bar, dtype=float), np.asarray(force_N, dtype=float)
+    above = np.isfinite(F) & (F > floor_N)
+    if above.sum() < 2 or np.ptp(P[above]) == 0:
+        return np.nan, np.nan
+    slope, intercept = np.polyfit(P[above], F[above], 1)
+    return float(slope), float(-intercept / slope)
+
+
+def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
+               bounds=THETA0_BOUNDS_DEG, xatol: float = 1e-3) -> dict:
+    """Fit theta0 [deg] of ``make_model(theta0_deg)`` to ``reference`` (see the module doc).
+
+    Parameters
+    ----------
+    make_model : callable
+        ``theta0_deg -> ForceModel``.
+    reference : pandas.DataFrame
+        As returned by :func:`check_reference`; may hold several sweeps (muscles).
+    target : {"slope", "force", "slope+threshold"}
+        What is fitted. ``slope`` minimises the squared relative slope residuals of the sweeps
+        (with one sweep: the model's slope equals the reference's).
+    bounds : (float, float)
+        Search interval [deg].
+    xatol : float
+        Tolerance on theta0 [deg]; the fit is stored rounded to 1e-3 deg.
+
+    Returns
+    -------
+    dict
+        ``theta0_deg``, ``target``, per-fit ``slope_model_N_per_bar`` and
+        ``slope_reference_N_per_bar`` (first sweep), ``slope_residual_pct`` (largest over the
+        sweeps, model minus reference), ``threshold_model_bar``, ``threshold_reference_bar``,
+        ``rmse_N`` and ``max_abs_residual_N`` of the model against every reference force,
+        ``threshold_offset_bar`` and ``rmse_shifted_N`` (``slope+threshold`` only),
+        ``force_N`` (the model's forces at the reference points), ``evaluations``.
+
+    Raises ``ValueError`` for an unknown target or a reference without a slope, and
+    ``RuntimeError`` when the model cannot produce valid forces at the optimum.
+    """
+    if target not in TARGETS:
+        raise ValueError(f"target={target!r} is invalid: expected one of {', '.join(TARGETS)}")
+    reference = check_reference(reference)
+    sweeps = _sweeps(reference)
+    ref_lines = []
+    for sweep in sweeps:
+        floor = THRESHOLD_FLOOR_FRACTION * sweep["force_N"].max()
+        slope, threshold = line_above_threshold(sweep.pressure_bar, sweep.force_N, floor)
+        if target != "force" and not slope > 0:
+            raise ValueError("reference sweep at D0_mm={:g}, t0_mm={:g}, eps={:g} has fewer than "
+                             "two forces above its threshold: expected a rising force to fit a "
+                             "slope to".format(*sweep[["D0_mm", "t0_mm", "eps"]].iloc[0]))
+        ref_lines.append((floor, slope, threshold))
     args = [reference[c].to_numpy() for c in ("pressure_bar", "D0_mm", "t0_mm", "eps")]
-    target = reference["force_N"].to_numpy()
+    measured = reference["force_N"].to_numpy()
     n_eval = 0
 
-    def rmse(theta0):
+    def predict(theta0):
         nonlocal n_eval
         n_eval += 1
-        pred = make_model(theta0).predict(*args)
+        return make_model(theta0).predict(*args)
+
+    def model_lines(pred):
+        lines = []
+        for sweep, (floor, _, _) in zip(sweeps, ref_lines, strict=True):
+            idx = sweep.index.to_numpy()
+            use = measured[idx] > floor  # the reference points above its threshold
+            lines.append(line_above_threshold(args[0][idx][use], pred.force_N[idx][use]))
+        return lines
+
+    def objective(theta0):
+        pred = predict(theta0)
         if not pred.valid.all():
             return 1e12
-        return float(np.sqrt(np.mean((pred.force_N - target) ** 2)))
+        if target == "force":
+            return float(np.sqrt(np.mean((pred.force_N - measured) ** 2)))
+        residuals = [(s - ref[1]) / ref[1] for (s, _), ref in
+                     zip(model_lines(pred), ref_lines, strict=True)]
+        return 1e12 if not np.all(np.isfinite(residuals)) else float(np.sum(np.square(residuals)))
 
-    res = minimize_scalar(rmse, bounds=bounds, method="bounded", options={"xatol": xatol})
-    pred = make_model(res.x).predict(*args)
+    res = minimize_scalar(objective, bounds=bounds, method="bounded", options={"xatol": xatol})
+    theta0 = round(float(res.x), 3)
+    pred = predict(theta0)
     if not pred.valid.all():
         raise RuntimeError(f"calibration failed: no theta0 in {bounds} deg gives valid forces")
-    residual = pred.force_N - target
-    return {"theta0_deg": round(float(res.x), 3), "rmse_N": float(np.sqrt(np.mean(residual**2))),
-            "max_abs_residual_N": float(np.max(np.abs(residual))), "evaluations": n_eval,
-            "force_N": pred.force_N, "seconds": pred.seconds}
+    lines = model_lines(pred)
+    residual = pred.force_N - measured
+    slope_res = [(s - ref[1]) / ref[1] for (s, _), ref in zip(lines, ref_lines, strict=True)]
+    fit = {
+        "theta0_deg": theta0, "target": target,
+        "slope_model_N_per_bar": lines[0][0], "slope_reference_N_per_bar": ref_lines[0][1],
+        "slope_residual_pct": 100.0 * float(max(slope_res, key=abs)),
+        "threshold_model_bar": lines[0][1], "threshold_reference_bar": ref_lines[0][2],
+        "rmse_N": float(np.sqrt(np.mean(residual**2))),
+        "max_abs_residual_N": float(np.max(np.abs(residual))),
+        "force_N": pred.force_N, "evaluations": n_eval, "sweeps": len(sweeps),
+    }
+    if target == "slope+threshold":
+        # shift the model along the pressure axis by the reference's threshold offset
+        offset = ref_lines[0][2] - lines[0][1]
+        shifted = make_model(theta0).predict(np.maximum(args[0] - offset, 0.0), *args[1:])
+        shifted_force = np.where(args[0] - offset > 0, shifted.force_N, 0.0)
+        # where the braid goes slack at the cap just above the model's own threshold the FE
+        # reports no force: those points are left out of the shifted residual
+        ok = np.isfinite(shifted_force)
+        fit["threshold_offset_bar"] = float(offset)
+        fit["rmse_shifted_N"] = float(np.sqrt(np.mean((shifted_force[ok] - measured[ok]) ** 2)))
+    return fit
 
 
-def store_calibration(key: str, fit: dict, reference_path, model_params: dict) -> None:
-    """Write (or replace) entry ``key`` of ``fem/calibration.json`` with the fit's provenance."""
-    entries = json.loads(CALIBRATION_FILE.read_text()) if CALIBRATION_FILE.exists() else {}
+def default_target(model) -> str:
+    """``slope`` for a model with a threshold pressure (it reports one), ``force`` otherwise
+    (Equation 2: through the origin, where slope and force fits coincide)."""
+    pred = model.predict([0.0, 1.0], 35.0, 2.5, 0.05)
+    return "slope" if "threshold_pressure_bar" in pred.extras else "force"
+
+
+def calibration_entry(fit: dict, model, reference_name: str, reference_sha256: str | None,
+                      module: str) -> dict:
+    """The record of one fit: target, reference, theta0, residuals, command, date and code
+    version (:func:`fem.records.source_version` of the model's module, without its data files,
+    so that writing the calibration does not change the version it records)."""
     info = provenance()
-    entries[key] = {
+    entry = {
         "theta0_deg": fit["theta0_deg"],
-        "rmse_N": round(fit["rmse_N"], 4),
-        "max_abs_residual_N": round(fit["max_abs_residual_N"], 4),
-        "reference": Path(reference_path).name,
-        "model_params": {k: v for k, v in model_params.items() if k != "theta0_deg"},
+        "target": fit["target"],
+        "reference": reference_name,
+        "reference_sha256": reference_sha256,
+        "slope_N_per_bar": {"model": _round(fit["slope_model_N_per_bar"], 4),
+                            "reference": _round(fit["slope_reference_N_per_bar"], 4)},
+        "slope_residual_pct": _round(fit["slope_residual_pct"], 4),
+        "threshold_pressure_bar": {"model": _round(fit["threshold_model_bar"], 4),
+                                   "reference": _round(fit["threshold_reference_bar"], 4)},
+        "rmse_N": _round(fit["rmse_N"], 4),
+        "max_abs_residual_N": _round(fit["max_abs_residual_N"], 4),
+        "model_params": {k: v for k, v in model.params().items() if k != "theta0_deg"},
         "command": info["command"],
         "date_utc": info["date_utc"],
+        "code_version": source_version(module, data=False),
         "versions": info["versions"],
     }
-    CALIBRATION_FILE.write_text(json.dumps(entries, indent=2, sort_keys=True) + "\n")
-    _load.cache_clear()
+    if "threshold_offset_bar" in fit:
+        entry["threshold_offset_bar"] = _round(fit["threshold_offset_bar"], 4)
+        entry["rmse_shifted_N"] = _round(fit["rmse_shifted_N"], 4)
+    return entry
+
+
+def _round(value, digits):
+    # + 0.0: a -0.0 from rounding a tiny negative number is stored as 0.0
+    return None if value is None or not np.isfinite(value) else round(float(value), digits) + 0.0
+
+
+def store_calibration(path: str | os.PathLike, key: str, entry: dict) -> Path:
+    """Write (or replace) entry ``key`` of the calibration file ``path``, keeping the others.
+
+    Written atomically. Writing the shipped ``fem/calibration.json`` is the caller's explicit
+    choice (``mkm fem calibrate --update-shipped``).
+    """
+    path = Path(path)
+    entries = dict(_load(path)) if path.exists() else {}
+    entries[key] = entry
+    write_atomic(path, json.dumps(entries, indent=2, sort_keys=True) + "\n")
+    return path
+
+
+def reference_sha256(path) -> str | None:
+    return file_sha256(path) if Path(path).is_file() else None
+
+
+def calibration_provenance(model) -> dict:
+    """Which calibration gave ``model`` its theta0, for the provenance of what it computes.
+
+    The file (``shipped`` for ``fem/calibration.json``), its SHA-256, the model's key and the
+    whole entry (target, reference, residuals, command, date, code version); or, for a model
+    built with an explicit angle, that angle.
+    """
+    if getattr(model, "theta0_deg", None) is not None:
+        return {"source": "theta0_deg given explicitly", "theta0_deg": model.theta0_deg}
+    path = calibration_file()
+    key = model.calibration_key
+    return {"file": "shipped fem/calibration.json" if path == CALIBRATION_FILE else str(path),
+            "sha256": file_sha256(path), "key": key, "entry": calibrated(key)}

@@ -97,11 +97,12 @@ def jsonable(value):
 
 
 @cache
-def source_version(*modules: str) -> str:
+def source_version(*modules: str, data: bool = True) -> str:
     """``<package version>+<hash>`` of ``modules``, every project module they import at any depth
     (read from the source, not from ``sys.modules``), and the ``*.json`` data files of each
     package directory involved (the calibration): editing the physics, a material constant or the
-    calibration changes the version; editing a report does not."""
+    calibration changes the version; editing a report does not. ``data=False`` hashes the source
+    only (the version a calibration records of the code that made it)."""
     packages = set(PROJECT_PACKAGES) | {m.split(".")[0] for m in modules}
     sources: dict[str, bytes] = {}
     stack = list(modules)
@@ -125,7 +126,7 @@ def source_version(*modules: str) -> str:
             stack.extend(n for n in names if n.split(".")[0] in packages
                          and n not in sources and _is_module(n))
     data_files = set()
-    for module in sources:
+    for module in sources if data else ():
         origin = Path(find_spec(module).origin)
         data_files |= set(origin.parent.glob("*.json"))
     digest = hashlib.sha256()

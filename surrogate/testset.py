@@ -14,6 +14,7 @@ import numpy as np
 import pandas as pd
 
 from fem import paper
+from fem.calibration import calibration_provenance
 from fem.interface import ForceModel
 from fem.paper import equation7_err_pct
 from fem.records import package_file, provenance, read_prediction_header
@@ -52,7 +53,7 @@ def build_fe_reference(model: ForceModel, out=FE_REFERENCE) -> pd.DataFrame:
     table = table[["muscle", *table.columns.drop("muscle")]]
     header = {"what": "FE reference of the test muscles (paper section 3.3 and ours)",
               "model": model.name, "params": model.params(), "seconds": seconds,
-              **provenance()}
+              "calibration": calibration_provenance(model), **provenance()}
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     with open(out, "w", encoding="utf-8", newline="") as f:

@@ -358,25 +358,26 @@ def _run_on_dask(missing, finished, workers: int | None, scheduler: str | None) 
 
 def _provenance(run: DatasetRun, grid: Grid, jobs: list[Job], model_ver: str,
                 params: dict, cache_dir) -> dict[str, Any]:
-    from fem.calibration import calibrated
+    from fem.calibration import calibration_provenance
 
     info = provenance()
     info["versions"]["dask.distributed"] = version("distributed")
     model = make_model(jobs[0].model, mesh=jobs[0].mesh)
     if None not in grid.theta0_deg:
-        calibration = "theta0_deg given by the grid"
+        calibration = {"key": model.calibration_key, "source": "theta0_deg given by the grid"}
     else:
         try:
-            calibration = calibrated(model.calibration_key)
+            calibration = calibration_provenance(model)
         except ValueError:  # the model's default theta0 does not come from a calibration
-            calibration = "the model's default theta0_deg"
+            calibration = {"key": model.calibration_key,
+                           "source": "the model's default theta0_deg"}
     return {
         **info,
         "model": jobs[0].model,
         "model_version": model_ver,
         "model_params": params,
         "mesh": jobs[0].mesh,
-        "calibration": {"key": model.calibration_key, "entry": calibration},
+        "calibration": calibration,
         "grid": grid.as_dict(),
         "rows": len(run.frame),
         "jobs": run.jobs_total,

@@ -144,6 +144,14 @@ def _calibrate(args) -> int:
     fit = fit_theta0(lambda th: model_from_args(args, theta0_deg=th, **overrides), reference,
                      target)
     model = model_from_args(args, theta0_deg=fit["theta0_deg"], **overrides)
+    # stored before anything is printed: `| head` closing stdout must not lose the fit
+    paths = [] if args.dry_run else [p for p in (args.out, args.update_shipped and
+                                                 CALIBRATION_FILE) if p]
+    if paths:
+        entry = calibration_entry(fit, model, name, sha256, LADDER[model.name].split(":")[0])
+        for path in paths:
+            store_calibration(path, model.calibration_key, entry)
+            print(f"stored in {path} under {model.calibration_key!r}", file=sys.stderr)
     extra = (f", threshold offset {fit['threshold_offset_bar']:+.3f} bar (shifted RMSE "
              f"{fit['rmse_shifted_N']:.2f} N)" if "threshold_offset_bar" in fit else "")
     print(f"model {model.calibration_key}: theta0 = {fit['theta0_deg']:.3f} deg (target "
@@ -155,13 +163,6 @@ def _calibrate(args) -> int:
     for p, ref, f in zip(reference["pressure_bar"], reference["force_N"], fit["force_N"],
                          strict=True):
         print(f"{p:g},{ref:.2f},{f:.2f}")
-    paths = [] if args.dry_run else [p for p in (args.out, args.update_shipped and
-                                                 CALIBRATION_FILE) if p]
-    if paths:
-        entry = calibration_entry(fit, model, name, sha256, LADDER[model.name].split(":")[0])
-        for path in paths:
-            store_calibration(path, model.calibration_key, entry)
-            print(f"stored in {path} under {model.calibration_key!r}", file=sys.stderr)
     return 0
 
 

@@ -6,6 +6,7 @@ import argparse
 import time
 
 from fem.ranges import parse_fraction
+from mkm.cli.common import add_calibration_argument, with_calibration
 
 
 def register(subparsers) -> None:
@@ -29,7 +30,8 @@ def register(subparsers) -> None:
                         "(default: 2%%)")
     _cache_arguments(report)
     _progress_argument(report)
-    report.set_defaults(func=_report)
+    add_calibration_argument(report)
+    report.set_defaults(func=with_calibration(_report))
 
     study = subparsers.add_parser(
         "study", help="speed against accuracy of every predictor, and stability maps",

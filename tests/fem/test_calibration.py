@@ -1,0 +1,145 @@
+"""theta0 calibration (fem/calibration.py): targets, references, calibration files, the CLI."""
+
+import json
+import re
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from fem.calibration import (
+    CALIBRATION_FILE,
+    calibrated,
+    calibration_file,
+    check_reference,
+    fit_theta0,
+    read_reference,
+    store_calibration,
+    use_calibration,
+)
+from fem.ladder import make_model
+from fem.materials import SILASTIC_S
+from fem.paper import CASE_I_CSV
+from fem.thickwall import ThickWall
+
+
+@pytest.mark.parametrize("key", ["eq2-inner", "eq2-braid", "thickwall", "axisym"])
+def test_shipped_calibration_equals_a_fresh_fit(key):
+    # The shipped file must be what today's code fits to its reference with its target: a
+    # physics change without a recalibration fails here. The fit stops within 1e-3 deg and is
+    # stored rounded to 1e-3 deg, so two fits may differ by 2e-3 deg; at -10 % per deg that
+    # moves the slope by 0.02 % and the forces by under 0.1 N.
+    entry = calibrated(key)
+    assert entry["reference"] == CASE_I_CSV.name
+    params = dict(entry["model_params"])
+    # the rubber is the default Silastic S (the wall models record it; a material is no flag)
+    assert params.pop("C10_MPa", SILASTIC_S.C10_MPa) == SILASTIC_S.C10_MPa
+    assert params.pop("C01_MPa", SILASTIC_S.C01_MPa) == SILASTIC_S.C01_MPa
+    name = key.split("-")[0]
+    fit = fit_theta0(lambda th: make_model(name, theta0_deg=th, **params),
+                     read_reference(CASE_I_CSV), entry["target"])
+    assert fit["theta0_deg"] == pytest.approx(entry["theta0_deg"], abs=2e-3)
+    assert fit["slope_residual_pct"] == pytest.approx(entry["slope_residual_pct"], abs=0.03)
+    assert fit["rmse_N"] == pytest.approx(entry["rmse_N"], abs=0.1)
+    # the targets the issue asks for: slope for models with a threshold, force for Equation 2
+    assert entry["target"] == ("force" if name == "eq2" else "slope")
+    assert abs(entry["slope_residual_pct"]) < 0.01
+
+
+def shifted_reference(theta0):
+    """Thick-wall forces of muscle I at ``theta0`` moved left by the model's own threshold:
+    the slope of the model and the paper's kind of line through the origin."""
+    P = np.arange(0.0, 2.51, 0.25)
+    model = ThickWall(theta0_deg=theta0)
+    threshold = model.predict(1.0, 35.0, 2.5, 0.05).extras["threshold_pressure_bar"][()]
+    force = model.predict(P + threshold, 35.0, 2.5, 0.05).force_N
+    reference = pd.DataFrame({"pressure_bar": P, "D0_mm": 35.0, "t0_mm": 2.5, "eps": 0.05,
+                              "force_N": np.where(P > 0, force, 0.0)})
+    return reference, threshold
+
+
+def test_slope_target_recovers_the_angle_behind_an_origin_crossing_reference():
+    # The reference has the slope of theta0 = 31 deg but no threshold (as the paper's muscle I):
+    # the slope fit finds 31 deg; a least-squares force fit steepens the slope to make up for
+    # the missing threshold and lands far below (issue 11: 0.8 deg for the thick wall).
+    reference, threshold = shifted_reference(31.0)
+    slope = fit_theta0(lambda th: ThickWall(theta0_deg=th), reference, "slope")
+    assert slope["theta0_deg"] == pytest.approx(31.0, abs=2e-3)
+    assert abs(slope["slope_residual_pct"]) < 0.02
+    force = fit_theta0(lambda th: ThickWall(theta0_deg=th), reference, "force")
+    assert force["theta0_deg"] < 30.5 and force["slope_residual_pct"] > 5.0
+    assert force["rmse_N"] < slope["rmse_N"]  # what a force fit is best at, and all it is
+    both = fit_theta0(lambda th: ThickWall(theta0_deg=th), reference, "slope+threshold")
+    assert both["theta0_deg"] == slope["theta0_deg"]
+    # the reference's threshold offset is minus the model's threshold; shifted by it, the
+    # model is the reference (to the 2e-3 deg of the fit: 0.05 N)
+    assert both["threshold_offset_bar"] == pytest.approx(-threshold, abs=1e-3)
+    assert both["rmse_shifted_N"] < 0.1 < slope["rmse_N"]
+
+
+def test_up_and_down_branches_are_averaged():
+    # the rising branch reads low and the falling one high by the braid's friction; two rising
+    # repeats count once, as one branch
+    rows = pd.DataFrame({
+        "pressure_bar": [1.0, 1.0004, 1.0, 2.0, 2.0],
+        "direction": ["up", "up", "down", "up", "down"],
+        "force_N": [90.0, 94.0, 108.0, 190.0, 210.0],
+        "D0_mm": 30.0, "t0_mm": 3.0, "eps": 0.1})
+    table = check_reference(rows)
+    assert list(table.columns) == ["D0_mm", "t0_mm", "eps", "pressure_bar", "force_N"]
+    np.testing.assert_allclose(table.force_N, [(92.0 + 108.0) / 2, 200.0])
+    np.testing.assert_allclose(table.pressure_bar, [(1.0002 + 1.0) / 2, 2.0])
+
+
+@pytest.mark.parametrize(("frame", "message"), [
+    (pd.DataFrame({"pressure_bar": [1.0], "force_N": [1.0]}), "lacks columns"),
+    (pd.DataFrame({"pressure_bar": [1.0], "force_N": [1.0], "D0_mm": 30.0, "t0_mm": 2.0,
+                   "eps": 0.1}), "has 1 complete rows: expected at least 2"),
+])
+def test_bad_reference_is_named(frame, message):
+    with pytest.raises(ValueError, match=message):
+        check_reference(frame, "ref.csv")
+
+
+def test_slope_needs_a_rising_reference_and_a_known_target():
+    flat = pd.DataFrame({"pressure_bar": [0.0, 1.0, 2.0], "force_N": 0.0, "D0_mm": 35.0,
+                         "t0_mm": 2.5, "eps": 0.05})
+    with pytest.raises(ValueError, match="fewer than two forces above its threshold"):
+        fit_theta0(lambda th: ThickWall(theta0_deg=th), flat, "slope")
+    with pytest.raises(ValueError, match="^target='rms' is invalid: expected one of slope"):
+        fit_theta0(lambda th: ThickWall(theta0_deg=th), flat, "rms")
+
+
+def test_selected_file_is_every_models_default_and_is_restored(tmp_path):
+    lab = tmp_path / "lab.json"
+    lab.write_text(json.dumps({"thickwall": {"theta0_deg": 28.5}}))
+    shipped = calibrated("thickwall")["theta0_deg"]
+    with use_calibration(lab) as selected:
+        assert selected == lab == calibration_file()
+        assert make_model("thickwall").params()["theta0_deg"] == 28.5
+        with pytest.raises(ValueError, match=f"no calibrated theta0 for model 'axisym' in {lab}"):
+            make_model("axisym").params()
+    assert calibration_file() == CALIBRATION_FILE
+    assert make_model("thickwall").params()["theta0_deg"] == shipped
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    (None, "cannot read it"), ("{", "not valid JSON"),
+    ('{"axisym": {"rmse_N": 1}}', "entry 'axisym' has no theta0_deg"),
+])
+def test_bad_calibration_file_is_named_at_once(tmp_path, text, message):
+    path = tmp_path / "cal.json"
+    if text is not None:
+        path.write_text(text)
+    with pytest.raises(ValueError, match=f"^calibration {re.escape(str(path))}: {message}"):
+        with use_calibration(path):
+            pass
+
+
+def test_store_replaces_one_entry_and_keeps_the_others(tmp_path):
+    path = tmp_path / "cal.json"
+    store_calibration(path, "thickwall", {"theta0_deg": 30.0})
+    store_calibration(path, "axisym", {"theta0_deg": 31.0})
+    store_calibration(path, "thickwall", {"theta0_deg": 32.0})
+    assert json.loads(path.read_text()) == {"axisym": {"theta0_deg": 31.0},
+                                            "thickwall": {"theta0_deg": 32.0}}
