@@ -26,9 +26,11 @@ Targets (:func:`fit_theta0`):
 
 The reference is one table, whatever its source (a CSV, or the settled steps of a bench run
 folder, which the application loads): columns ``pressure_bar, D0_mm, t0_mm, eps, force_N``,
-optional ``L0_mm`` and ``direction`` (``up``/``down``). Where both sweep directions were measured
-at a pressure, their mean is fitted: braid friction lowers the rising branch and raises the
-falling one by about the same amount, and the frictionless models sit between them.
+optional ``L0_mm`` and ``direction`` (``up``/``down``). When both sweep directions were measured,
+the mean of the two branches is fitted at each pressure measured both ways: braid friction lowers
+the rising branch and raises the falling one by about the same amount, and the frictionless
+models sit between them; the staircase's turning point (measured rising only) is left out, as
+it carries the whole friction offset. A run without a down sweep is fitted as it is.
 """
 
 from __future__ import annotations
@@ -141,23 +143,29 @@ def read_reference(path) -> pd.DataFrame:
 def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFrame:
     """``frame`` with its columns checked, one row per pressure and muscle (branches averaged).
 
-    Rows of the ``up`` and ``down`` sweep at the same muscle and pressure (rounded to 1 mbar)
-    are averaged per direction, then the directions are averaged (their mean is what a
-    frictionless model predicts). Raises ``ValueError`` naming a missing column or a bad value.
+    Rows of the same muscle, direction and pressure (rounded to 1 mbar) are averaged (repeats);
+    with ``up`` and ``down`` rows, only pressures measured in both directions are kept and the
+    two directions averaged (their mean is what a frictionless model predicts). Raises
+    ``ValueError`` naming a missing column or too few rows.
     """
     missing = [c for c in REFERENCE_COLUMNS if c not in frame.columns]
     if missing:
         raise ValueError(f"{name} lacks columns {missing}: expected "
                          f"{', '.join(REFERENCE_COLUMNS)} (optional L0_mm, direction)")
     frame = frame.dropna(subset=list(REFERENCE_COLUMNS))
-    if len(frame) < 2:
-        raise ValueError(f"{name} has {len(frame)} complete rows: expected at least 2")
     keys = ["D0_mm", "t0_mm", "eps"] + (["L0_mm"] if "L0_mm" in frame else [])
     values = ["pressure_bar", "force_N"]
     frame = frame.assign(level=frame["pressure_bar"].round(3))
     if "direction" in frame:
         frame = frame.groupby(keys + ["level", "direction"], as_index=False)[values].mean()
+        if frame["direction"].nunique() > 1:
+            # the turning point of a staircase is measured on one branch only, where friction
+            # biases it by the whole half-loop: fit only the levels measured both ways
+            both = frame.groupby(keys + ["level"])["direction"].transform("nunique") > 1
+            frame = frame[both]
     frame = frame.groupby(keys + ["level"], as_index=False)[values].mean()
+    if len(frame) < 2:
+        raise ValueError(f"{name} has {len(frame)} usable pressures: expected at least 2")
     return frame[keys + values]
 
 
