@@ -543,14 +543,18 @@ def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str) -> ForceMo
 
 
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
-           curve_to_bar: float | None = None, progress: bool = False):
+           curve_to_bar: float | None = None, progress: bool = False, cache_dir=None):
     """FE forces of ``designs`` at every requirement, and their force-pressure curves.
 
     One FE sweep per design and distinct eps, through the requirements' pressures and
-    ``0:curve_to_bar:0.25`` bar. Adds per requirement ``r<k>_fe_N``, ``r<k>_fe_margin_N``,
+    ``0:curve_to_bar:0.25`` bar (the curve also gets the FE threshold pressure, force 0), kept in
+    the prediction cache ``cache_dir`` (:mod:`mkm.prediction_cache`; None: no cache). Adds per
+    requirement ``r<k>_fe_N``, ``r<k>_fe_margin_N``,
     ``r<k>_fe_margin_pct``, ``r<k>_threshold_bar``, ``r<k>_meets``; then ``meets_all``,
-    ``min_fe_margin_pct``, ``flags`` and ``fe_failure``. Returns ``(designs, curves, seconds)``.
+    ``min_fe_margin_pct``, ``flags`` and ``fe_failure``. Returns the designs, the curves, the wall
+    time [s], the FE models by ``(L0, theta0, rubber)`` and how many sweeps came from the cache.
     """
+    from mkm.prediction_cache import cached_predict
     from mkm.progress import progress_bar
 
     start = time.perf_counter()
@@ -559,7 +563,7 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
     grid = np.round(np.arange(0.0, top_P + 1e-9, CURVE_STEP_BAR), 6)
     eps_levels = sorted({r.eps for r in requirements})
     models: dict = {}
-    curves, per_design = [], []
+    curves, per_design, hits = [], [], 0
     bar = progress_bar(len(designs) * len(eps_levels), "FE verification", progress, "sweep")
     with bar:
         for _, row in designs.iterrows():
@@ -569,7 +573,9 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
             results = {}
             for eps in eps_levels:
                 P = np.union1d(grid, [r.pressure_bar for r in requirements if r.eps == eps])
-                pred = models[key].predict(P, row["D0_mm"], row["t0_mm"], eps)
+                pred, hit = cached_predict(models[key], P, row["D0_mm"], row["t0_mm"], eps,
+                                           cache_dir=cache_dir)
+                hits += hit
                 frame = pred.to_frame()
                 results[eps] = frame
                 curve = frame[["eps", "pressure_bar", "force_N", "converged"]]
@@ -583,7 +589,7 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
             per_design.append(_judge(row, requirements, results))
     designs = pd.concat([designs, pd.DataFrame(per_design)], axis=1)
     curves = pd.concat(curves, ignore_index=True) if curves else pd.DataFrame()
-    return designs, curves, time.perf_counter() - start, models
+    return designs, curves, time.perf_counter() - start, models, hits
 
 
 def _judge(row, requirements, results) -> dict:
@@ -628,6 +634,7 @@ class DesignResult:
     mesh: str
     fe_seconds: float
     fe_models: dict
+    fe_cached: int = 0
     files: dict = field(default_factory=dict)
 
     @property
@@ -638,11 +645,12 @@ class DesignResult:
 
     def summary(self) -> str:
         s = self.search
+        cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
         text = (f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
                 f"{int(s.candidates['feasible'].sum())} feasible by the surrogate; "
                 f"{len(self.designs)} verified by the FE (axisym, {self.mesh} mesh) in "
-                f"{self.fe_seconds:.1f} s, {int(self.designs['meets_all'].sum())} meet every "
-                "requirement")
+                f"{self.fe_seconds:.1f} s{cached}, {int(self.designs['meets_all'].sum())} "
+                "meet every requirement")
         best = self.chosen
         if best is None:
             return text + ": none confirmed, see the table's FE margins"
@@ -656,11 +664,12 @@ DESIGN_COLUMNS = ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
 
 def run_design(requirements=(), constraints=None, objective=None, top=None, spec=None,
                mesh: str = "medium", surrogate: str = "surrogate", out_dir=None,
-               progress: bool = False) -> DesignResult:
+               progress: bool = False, cache_dir=None) -> DesignResult:
     """Search, verify and (with ``out_dir``) write the design files.
 
     ``spec``: a TOML file (:func:`load_spec`); ``requirements`` are added to its requirements,
     ``constraints`` (a dict) override its constraints, ``objective``/``top`` its own.
+    ``cache_dir``: FE prediction cache (None: solve every sweep).
     """
     base = load_spec(spec) if spec else {"requirements": [], "constraints": {}}
     requirements = list(base["requirements"]) + [
@@ -678,8 +687,8 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     found = search(requirements, merged, objective, surrogate)
     chosen = pick(found.feasible, top, found.constraints)
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
-    designs, curves, seconds, fe_models = verify(chosen, found.requirements, mesh,
-                                                 found.working_pressure_bar, progress)
+    designs, curves, seconds, fe_models, hits = verify(
+        chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir)
     order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
     designs = designs.sort_values(["meets_all", *order], ascending=[False] + [
         objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",
@@ -689,7 +698,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
         f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + [
         "meets_all", "min_fe_margin_pct", "flags", "fe_failure"]
-    result = DesignResult(designs[columns], curves, found, mesh, seconds, fe_models)
+    result = DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
     if out_dir is not None:
         write_design(result, Path(out_dir))
     return result
@@ -697,7 +706,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
 
 def design(requirements, constraints=None, objective: str = "min-outer-diameter", *,
            top: int = 5, mesh: str = "medium", surrogate: str = "surrogate",
-           progress: bool = False) -> pd.DataFrame:
+           progress: bool = False, cache_dir=None) -> pd.DataFrame:
     """Verified designs for force requirements, best first: the Python API of ``mkm design``.
 
     Parameters
@@ -714,6 +723,10 @@ def design(requirements, constraints=None, objective: str = "min-outer-diameter"
         FE mesh; ``medium`` is the converged one (``coarse`` for quick checks only).
     surrogate : str
         Registry spec of the surrogate that searches the box.
+    progress : bool
+        Progress bar of the FE verification on stderr (when it is a terminal).
+    cache_dir : path, optional
+        FE prediction cache (:mod:`mkm.prediction_cache`); None solves every sweep.
 
     Returns
     -------
@@ -725,7 +738,7 @@ def design(requirements, constraints=None, objective: str = "min-outer-diameter"
         objective order. ``attrs`` holds the requirements, constraints and search summary.
     """
     result = run_design(requirements, constraints, objective, top, mesh=mesh,
-                        surrogate=surrogate, progress=progress)
+                        surrogate=surrogate, progress=progress, cache_dir=cache_dir)
     frame = result.designs.copy()
     frame.attrs.update(_record(result))
     return frame
@@ -745,6 +758,7 @@ def _record(result: DesignResult) -> dict:
                                       "L0_mm and theta0_deg values per range": AXIS_VALUES}},
             "verification": {"model": "axisym", "mesh": result.mesh,
                              "seconds": result.fe_seconds,
+                             "sweeps_from_cache": result.fe_cached,
                              "near_lock_fraction_of_eps_max": NEAR_LOCK_FRACTION},
             "summary": result.summary()}
 
@@ -825,6 +839,14 @@ FLAG_TEXT = {"near_lock": f"near the braid lock (eps >= {NEAR_LOCK_FRACTION:g} e
              "fe_not_converged": "the FE did not converge"}
 
 
+def _constraint_text(key: str, value) -> str:
+    if isinstance(value, list) and key != "rubber":
+        return f"{key} = {_span(*value)}"
+    if key == "rubber":
+        return f"rubber = {', '.join(value)}"
+    return f"{key} = {'none' if value is None else format(value, 'g')}"
+
+
 def _html_body(result: DesignResult, record: dict, figures) -> str:
     s = result.search
     software = record["provenance"]["software"]
@@ -837,8 +859,10 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
     reqs = pd.DataFrame([{"requirement": f"r{k}", "force [N] at least": r.force_N,
                           "pressure [bar]": r.pressure_bar, "eps": r.eps}
                          for k, r in enumerate(s.requirements, start=1)])
-    table = result.designs.drop(columns=["fe_failure"])
-    table = table[[c for c in table.columns if not c.endswith("_uncertainty_N")]]
+    keep = ("_surrogate_N", "_fe_N", "_fe_margin_pct", "_meets")
+    table = result.designs[[c for c in result.designs.columns
+                            if not re.match(r"r\d+_", c) or c.endswith(keep)]]
+    table = table.drop(columns=["fe_failure"])
     notes = []
     for _, row in result.designs.iterrows():
         for flag in filter(None, str(row["flags"]).split(";")):
@@ -852,14 +876,17 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
         status,
         table_html(reqs, "Requirements: the force the muscle must develop at least, held at "
                    "eps, at that pressure."),
-        kv_html({"constraints": ", ".join(f"{k} = {v}" for k, v in s.constraints.items()),
+        kv_html({"constraints": ", ".join(_constraint_text(k, v)
+                                          for k, v in s.constraints.items()),
                  "working pressure": f"{s.working_pressure_bar:g} bar (outer diameter check)",
                  "surrogate margin": s.uncertainty,
                  "search": record["summary"]}),
         "<h2>Verified designs</h2>",
-        table_html(table, "Verified designs (designs.csv): geometry, outer diameter at the "
-                   "working pressure, per requirement r&lt;k&gt; the surrogate's and the FE's "
-                   "force, the FE margin and threshold pressure; meets_all is the FE's verdict.",
+        table_html(table, "Verified designs: geometry, outer diameter at the working pressure "
+                   "[mm], rubber volume [cm³], per requirement r&lt;k&gt; the surrogate's and "
+                   "the FE's force [N] and the FE margin [%]; meets_all is the FE's verdict. "
+                   "designs.csv has the surrogate margins, FE threshold pressures and failures "
+                   "too.",
                    formats={"theta0_deg": ".4g", "L0_mm": ".4g"}),
         ('<p class="note">Flags: ' + esc("; ".join(notes)) + "</p>") if notes else "",
         "<h2>Figures</h2>",

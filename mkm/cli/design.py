@@ -46,6 +46,9 @@ def register(subparsers) -> None:
     p.add_argument("--surrogate", default="surrogate", metavar="SPEC",
                    help="surrogate spec that searches the box (default: %(default)s)")
     p.add_argument("--out", help="output folder (default: mkm-out/design)")
+    p.add_argument("--cache", metavar="DIR", help="FE predictions kept here, so a second run "
+                   "is fast (default: the user cache, predictions/)")
+    p.add_argument("--no-cache", action="store_true", help="solve every FE sweep; no cache")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     p.set_defaults(func=_design)
 
@@ -53,6 +56,7 @@ def register(subparsers) -> None:
 def _design(args) -> int:
     from mkm.design import run_design
     from mkm.paths import default_out
+    from mkm.prediction_cache import DEFAULT_CACHE_DIR
     from mkm.progress import summary_line
 
     constraints = {k: getattr(args, k) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg",
@@ -65,7 +69,8 @@ def _design(args) -> int:
     result = run_design(args.require, constraints, args.objective, args.top, spec=args.spec,
                         mesh=args.mesh, surrogate=args.surrogate,
                         out_dir=args.out or default_out("design"),
-                        progress=not args.no_progress)
+                        progress=not args.no_progress,
+                        cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR)
     summary_line("design", result.summary())
     print(result.files["html"])
     return 0 if result.chosen is not None else 1

@@ -183,3 +183,30 @@ def test_spec_file_unknown_key(tmp_path, capsys):
     spec.write_text("[constraints]\nD0 = 40\n", encoding="utf-8")
     code, _, err = run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")], capsys)
     assert code == 2 and "unknown constraint(s) D0" in err
+
+
+def test_verification_flags_from_the_fe():
+    """Below the threshold pressure, near and past the braid lock, by the FE itself (the
+    surrogate's box stops at eps 0.2, so the search never proposes these)."""
+    from mkm.design import verify
+
+    theta0 = 32.0
+    eps_max = float(chou_hannaford_eps_max(theta0))  # 0.319
+    muscle = pd.DataFrame([{"rank": 1, "D0_mm": 37.0, "t0_mm": 2.7, "L0_mm": 282.0,
+                            "theta0_deg": theta0, "rubber": "silastic_s"}])
+    reqs = [Requirement(10.0, 0.5, 0.20),  # the free muscle needs ~0.75 bar to reach eps 0.2
+            Requirement(100.0, 2.0, round(0.8 * eps_max, 3)),  # near the lock
+            Requirement(100.0, 2.0, round(1.03 * eps_max, 3))]  # past it: the FE fails
+    table, curves, _, _, _ = verify(muscle, reqs, mesh=MESH)
+    row = table.iloc[0]
+    flags = set(row["flags"].split(";"))
+    assert row["r1_threshold_bar"] > 0.5 and row["r1_fe_N"] == 0.0 and not row["r1_meets"]
+    assert "r1:threshold_above_pressure" in flags
+    assert "r2:near_lock" in flags and "r1:near_lock" not in flags
+    assert {"r3:near_lock", "r3:fe_not_converged"} <= flags
+    assert "locking angle" in row["fe_failure"] and np.isnan(row["r3_fe_N"])
+    assert not row["meets_all"]
+    # the curve at eps 0.2 is zero up to the threshold pressure, which it contains
+    at = curves[np.isclose(curves["eps"], 0.20)]
+    assert ((at["pressure_bar"] > row["r1_threshold_bar"]) | (at["force_N"] == 0)).all()
+    assert np.isclose(at["pressure_bar"], row["r1_threshold_bar"]).any()
