@@ -1,7 +1,17 @@
 """The test bench: acquisition through nidaqmx at 10 Hz, a simulated bench, run records.
 
 ``backend`` (protocol and errors), ``ni`` (NI USB-6001), ``sim`` (simulated bench), ``config``
-(TOML settings), ``run`` (the run lifecycle), ``storage`` (run folders and ``load_run``),
-``procedures`` (tare, load-cell calibration, check), ``operator`` and ``liveplot``; ``commands``
-holds the ``mkm acquire|tare|calibrate-loadcell|check`` subcommands.
+(TOML settings validated against the USB-6001's capabilities), ``run`` (the run lifecycle, which
+joins the procedure ``sequence``, the worker ``worker`` and the recorder ``recorder``),
+``signals`` (every stop signal vents), ``unvented`` (runs that died pressurised), ``storage``
+(the run-folder contract: ``RunMeta``, ``RunStatus``, ``Sample``, ``load_run``), ``procedures``
+(tare, load-cell calibration, check, vent), ``reprocess`` (new calibration, same raw volts),
+``operator`` and ``liveplot``. The ``mkm`` subcommands are in ``mkm.cli.bench``.
 """
+
+from bench.config import BenchConfig, load_config, parse_config
+from bench.run import BenchRun, RunResult, acquire
+from bench.storage import RunMeta, RunStatus, Sample, aggregate_samples, load_run
+
+__all__ = ["BenchConfig", "BenchRun", "RunMeta", "RunResult", "RunStatus", "Sample", "acquire",
+           "aggregate_samples", "load_config", "load_run", "parse_config"]

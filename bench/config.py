@@ -8,6 +8,7 @@ simulated bench. Every setting has a unit in its name; a bad value raises ``Valu
 from __future__ import annotations
 
 import dataclasses
+import re
 import tomllib
 from dataclasses import dataclass, field
 from importlib import resources
@@ -19,8 +20,48 @@ import numpy as np
 from fem.ranges import parse_pressures
 
 DEFAULT_CONFIG = "paper_prototype.toml"
-TERMINAL_CONFIGS = ("differential", "rse", "nrse", "pseudodifferential")
-USB6001_RANGE_V = 10.0  # the USB-6001 has one AI range, +-10 V, and AO 0..10 V is within +-10 V
+
+
+@dataclass(frozen=True)
+class DeviceCapabilities:
+    """What a DAQ device can do, for validating a configuration before it is run."""
+
+    product: str
+    ai_rse: tuple[str, ...]  # single-ended (referenced to AI GND) inputs
+    ai_differential: dict[str, str]  # differential input -> the terminal it pairs with
+    terminal_configs: tuple[str, ...]
+    max_aggregate_rate_hz: float  # over every input of the task (one multiplexed ADC)
+    ai_range_V: float  # +- this
+    ao: tuple[str, ...]
+    ao_range_V: float  # +- this
+
+
+# NI USB-6001/6002/6003 User Guide (ni.com, "Pinout and Signal Descriptions", "Analog Input"):
+# AI 0-7 single-ended (RSE) or four differential channels AI 0-3 paired with AI 4-7 (AI <0,4>,
+# <1,5>, <2,6>, <3,7>); no NRSE or pseudo-differential mode; one +-10 V range; two analog
+# outputs AO 0-1, +-10 V. NI USB-6001/6002/6003 Specifications: 14-bit ADC, 20 kS/s aggregate
+# maximum sample rate on the USB-6001.
+USB6001 = DeviceCapabilities(
+    product="USB-6001",
+    ai_rse=tuple(f"ai{k}" for k in range(8)),
+    ai_differential={f"ai{k}": f"ai{k + 4}" for k in range(4)},
+    terminal_configs=("differential", "rse"),
+    max_aggregate_rate_hz=20_000.0,
+    ai_range_V=10.0,
+    ao=("ao0", "ao1"),
+    ao_range_V=10.0,
+)
+TERMINAL_CONFIGS = USB6001.terminal_configs
+USB6001_RANGE_V = USB6001.ai_range_V
+MUSCLE_ID_PATTERN = r"[A-Za-z0-9][A-Za-z0-9._+-]{0,63}"
+# Geometry a bench muscle can have (the paper's prototype is D0 30 mm, L0 282 mm); beyond these
+# a value is a typo (--D0 1e9 gives 3e17 N), not a muscle.
+MAX_D0_MM, MAX_L0_MM = 200.0, 3000.0
+MAX_STEPS = 2000  # a 2000-step staircase already takes 5 to 37 hours at the default settle
+MAX_SETTLE_TIMEOUT_S = 3600.0
+MAX_BUFFER_S = 24 * 3600.0
+MAX_BUFFER_VALUES = 20_000_000  # samples x inputs in the driver's host buffer (160 MB)
+MAX_BLOCK_S = 1.0  # a stop waits for the block in hand: keep it short
 
 
 def _positive(name, value):
@@ -50,9 +91,15 @@ class Muscle:
         if not 0.0 <= self.eps < 1.0:
             raise ValueError(f"muscle.eps={self.eps!r} is invalid: expected a shortening ratio "
                              "in [0, 1) (a fraction, 0.122 for 12.2 %)")
-        if not self.id or any(c in self.id for c in '/\\:*?"<>| '):
-            raise ValueError(f"muscle.id={self.id!r} is invalid: expected a non-empty name "
-                             "without spaces or path characters (it names the run folder)")
+        if not re.fullmatch(MUSCLE_ID_PATTERN, self.id):
+            shown = self.id if len(self.id) <= 40 else self.id[:40] + "..."
+            raise ValueError(f"muscle.id={shown!r} ({len(self.id)} characters) is invalid: "
+                             "expected 1 to 64 letters, digits or . _ + - (it names the run "
+                             "folder and labels figures)")
+        if self.D0_mm > MAX_D0_MM or self.L0_mm > MAX_L0_MM:
+            raise ValueError(f"muscle D0_mm={self.D0_mm:g}, L0_mm={self.L0_mm:g} is not a bench "
+                             f"muscle: expected D0_mm <= {MAX_D0_MM:g} and L0_mm <= "
+                             f"{MAX_L0_MM:g}")
 
 
 @dataclass(frozen=True)
@@ -71,13 +118,29 @@ class Daq:
 
     def check(self):
         if self.terminal_config not in TERMINAL_CONFIGS:
-            raise ValueError(f"daq.terminal_config={self.terminal_config!r} is invalid: "
-                             f"expected one of {', '.join(TERMINAL_CONFIGS)}")
+            raise ValueError(f"daq.terminal_config={self.terminal_config!r} is invalid: the "
+                             f"{USB6001.product} has only {' and '.join(TERMINAL_CONFIGS)} "
+                             "inputs (no NRSE or pseudo-differential mode)")
         for name in ("sample_rate_hz", "read_block_samples", "read_timeout_s"):
             _positive(f"daq.{name}", getattr(self, name))
-        if self.buffer_s < 600.0:
-            raise ValueError(f"daq.buffer_s={self.buffer_s:g} is invalid: expected >= 600 s "
-                             "(10 minutes of samples, so a stalled reader loses nothing)")
+        if self.sample_rate_hz > USB6001.max_aggregate_rate_hz:
+            raise ValueError(f"daq.sample_rate_hz={self.sample_rate_hz:g} is invalid: the "
+                             f"{USB6001.product} samples at most "
+                             f"{USB6001.max_aggregate_rate_hz:g} S/s over all its inputs")
+        if not 600.0 <= self.buffer_s <= MAX_BUFFER_S:
+            raise ValueError(f"daq.buffer_s={self.buffer_s:g} is invalid: expected 600 s (10 "
+                             "minutes of samples, so a stalled reader loses nothing) to "
+                             f"{MAX_BUFFER_S:g} s")
+        block_s = self.read_block_samples / self.sample_rate_hz
+        if block_s > MAX_BLOCK_S:
+            raise ValueError(f"daq.read_block_samples={self.read_block_samples} is "
+                             f"{block_s:g} s of samples at {self.sample_rate_hz:g} Hz: expected "
+                             f"blocks of at most {MAX_BLOCK_S:g} s (a stop waits for the block "
+                             "in hand)")
+        if self.read_timeout_s < 2 * block_s or self.read_timeout_s < 0.1:
+            raise ValueError(f"daq.read_timeout_s={self.read_timeout_s:g} is too short for "
+                             f"blocks of {block_s:g} s: every read would time out; expected at "
+                             f"least {max(2 * block_s, 0.1):g} s (twice the block, >= 0.1 s)")
         if self.read_retries < 0:
             raise ValueError(f"daq.read_retries={self.read_retries} is invalid: expected >= 0")
 
@@ -90,6 +153,13 @@ class LoadCell:
     channel: str = "ai0"
 
     def check(self):
+        if self.channel not in USB6001.ai_rse:
+            raise ValueError(f"loadcell.channel={self.channel!r} is invalid: the "
+                             f"{USB6001.product} has inputs {USB6001.ai_rse[0]} to "
+                             f"{USB6001.ai_rse[-1]}")
+        if abs(self.offset_V) >= USB6001_RANGE_V:
+            raise ValueError(f"loadcell.offset_V={self.offset_V:g} is invalid: expected within "
+                             f"the +-{USB6001_RANGE_V:g} V input range")
         _positive("loadcell.capacity_N", self.capacity_N)
         _positive("loadcell.sensitivity_N_per_V", self.sensitivity_N_per_V)
         full_scale_N = self.sensitivity_N_per_V * USB6001_RANGE_V
@@ -128,6 +198,17 @@ class Regulator:
                              f"expected 0 < max <= full_scale_bar={self.full_scale_bar:g}")
         if not self.monitor_V_at_full_scale > self.monitor_V_at_zero:
             raise ValueError("regulator.monitor_V_at_full_scale must exceed monitor_V_at_zero")
+        for name in ("monitor_V_at_zero", "monitor_V_at_full_scale"):
+            if abs(getattr(self, name)) > USB6001_RANGE_V:
+                raise ValueError(f"regulator.{name}={getattr(self, name):g} is invalid: the "
+                                 f"{USB6001.product}'s inputs read +-{USB6001_RANGE_V:g} V")
+        if self.command_channel not in USB6001.ao:
+            raise ValueError(f"regulator.command_channel={self.command_channel!r} is invalid: "
+                             f"the {USB6001.product} has outputs {', '.join(USB6001.ao)}")
+        if self.monitor_channel not in USB6001.ai_rse:
+            raise ValueError(f"regulator.monitor_channel={self.monitor_channel!r} is invalid: "
+                             f"the {USB6001.product} has inputs {USB6001.ai_rse[0]} to "
+                             f"{USB6001.ai_rse[-1]}")
 
     def command_volts(self, pressure_bar: float) -> float:
         """AO command [V, 0-10] for ``pressure_bar``, clamped to ``[0, max_pressure_bar]``."""
@@ -174,6 +255,9 @@ class Settle:
     def check(self):
         for f in dataclasses.fields(self):
             _positive(f"settle.{f.name}", getattr(self, f.name))
+        if self.timeout_s > MAX_SETTLE_TIMEOUT_S:
+            raise ValueError(f"settle.timeout_s={self.timeout_s:g} is invalid: expected at most "
+                             f"{MAX_SETTLE_TIMEOUT_S:g} s per step")
         if self.timeout_s < self.min_dwell_s:
             raise ValueError(f"settle.timeout_s={self.timeout_s:g} is below min_dwell_s="
                              f"{self.min_dwell_s:g}: expected timeout_s >= min_dwell_s")
@@ -181,12 +265,34 @@ class Settle:
 
 @dataclass(frozen=True)
 class Safety:
+    """Interlocks and the checks a tare must pass before any pressure is commanded.
+
+    The force interlock trips at ``force_limit_fraction`` of the load-cell capacity (or at any
+    non-finite force or pressure). The pressure interlock (electronic regulator) trips when the
+    measured pressure stays more than ``pressure_tolerance_bar`` from the command for longer
+    than ``pressure_follow_s`` (a regulator that does not follow), or exceeds
+    ``regulator.max_pressure_bar`` by more than the tolerance (overshoot). The tare needs at
+    least ``tare_min_samples`` finite samples, a spread below ``tare_max_std_N`` and an offset
+    within ``tare_max_shift_N`` of the configured ``loadcell.offset_V``.
+    """
+
     force_limit_fraction: float = 0.9
+    pressure_tolerance_bar: float = 0.15
+    pressure_follow_s: float = 5.0
+    tare_min_samples: int = 10
+    tare_max_std_N: float = 5.0
+    tare_max_shift_N: float = 100.0
 
     def check(self):
         if not 0 < self.force_limit_fraction <= 1:
             raise ValueError(f"safety.force_limit_fraction={self.force_limit_fraction!r} is "
                              "invalid: expected a fraction of the load-cell capacity in (0, 1]")
+        for name in ("pressure_tolerance_bar", "pressure_follow_s", "tare_max_std_N",
+                     "tare_max_shift_N"):
+            _positive(f"safety.{name}", getattr(self, name))
+        if self.tare_min_samples < 2:
+            raise ValueError(f"safety.tare_min_samples={self.tare_min_samples} is invalid: "
+                             "expected >= 2 (a spread needs two samples)")
 
 
 @dataclass(frozen=True)
@@ -199,8 +305,14 @@ class Faults:
     stall_at_s: float | None = None
     stall_s: float = 0.0
     ao_fail_at_s: float | None = None
+    nan_force_at_s: float | None = None  # the load-cell input reads NaN from then on
+    regulator_stuck_at_s: float | None = None  # the regulator stops following the command
+    overshoot_bar: float = 0.0  # the regulator delivers this much above every command
 
     def check(self):
+        if self.overshoot_bar < 0:
+            raise ValueError(f"sim.faults.overshoot_bar={self.overshoot_bar:g} is invalid: "
+                             "expected >= 0")
         if self.read_timeouts < 1:
             raise ValueError(f"sim.faults.read_timeouts={self.read_timeouts} is invalid: "
                              "expected >= 1")
@@ -210,7 +322,11 @@ class Faults:
 
 @dataclass(frozen=True)
 class Sim:
-    model: str = "eq2"
+    """The simulated bench (:mod:`bench.sim`): the muscle's static force from ``model`` (a
+    ``fem.ladder`` rung; ``axisym`` on the ``fe_mesh`` mesh), braid friction, creep, noise."""
+
+    model: str = "axisym"
+    fe_mesh: str = "medium"
     seed: int = 0
     regulator_tau_s: float = 0.4
     regulator_slew_bar_per_s: float = 2.0
@@ -229,6 +345,9 @@ class Sim:
         if self.model not in model_names():
             raise ValueError(f"sim.model={self.model!r} is unknown: expected one of "
                              f"{', '.join(model_names())}")
+        if self.fe_mesh not in ("coarse", "medium", "fine"):
+            raise ValueError(f"sim.fe_mesh={self.fe_mesh!r} is invalid: expected coarse, medium "
+                             "or fine")
         for name in ("regulator_tau_s", "regulator_slew_bar_per_s", "creep_tau_s"):
             _positive(f"sim.{name}", getattr(self, name))
         for name in ("hysteresis_fraction", "creep_fraction"):
@@ -259,12 +378,63 @@ class BenchConfig:
     def force_limit_N(self) -> float:
         return self.safety.force_limit_fraction * self.loadcell.capacity_N
 
+    @property
+    def ai_channels(self) -> list[str]:
+        """Inputs of the AI task: the load cell, and the regulator monitor if electronic."""
+        ai = [self.loadcell.channel]
+        if self.regulator.electronic:
+            ai.append(self.regulator.monitor_channel)
+        return ai
+
     def check(self):
         too_high = [p for p in self.sequence.pressures_bar if p > self.regulator.max_pressure_bar]
         if too_high:
             raise ValueError(f"sequence.pressures_bar has {too_high[0]:g} bar, above "
                              f"regulator.max_pressure_bar={self.regulator.max_pressure_bar:g}: "
                              "expected every planned pressure within the limit")
+        self._check_device()
+        self._check_duration()
+
+    def _check_device(self):
+        """Against the USB-6001's capabilities (:data:`USB6001`)."""
+        ai, daq = self.ai_channels, self.daq
+        if len(set(ai)) < len(ai):
+            raise ValueError(f"loadcell.channel and regulator.monitor_channel are both {ai[0]}: "
+                             "expected two different inputs")
+        if daq.terminal_config == "differential":
+            pairs = USB6001.ai_differential
+            for name, channel in zip(("loadcell.channel", "regulator.monitor_channel"), ai,
+                                     strict=False):
+                if channel not in pairs:
+                    raise ValueError(
+                        f"{name}={channel!r} cannot be differential on the {USB6001.product}: "
+                        f"only {', '.join(pairs)} are (paired with "
+                        f"{', '.join(pairs.values())}); use one of those or "
+                        "daq.terminal_config = 'rse'")
+        aggregate = daq.sample_rate_hz * len(ai)
+        if aggregate > USB6001.max_aggregate_rate_hz:
+            raise ValueError(f"daq.sample_rate_hz={daq.sample_rate_hz:g} on {len(ai)} inputs is "
+                             f"{aggregate:g} S/s: the {USB6001.product} samples at most "
+                             f"{USB6001.max_aggregate_rate_hz:g} S/s in aggregate")
+        if daq.buffer_samples * len(ai) > MAX_BUFFER_VALUES:
+            raise ValueError(f"daq.buffer_s={daq.buffer_s:g} at {daq.sample_rate_hz:g} Hz is "
+                             f"{daq.buffer_samples * len(ai)} buffered values: expected at most "
+                             f"{MAX_BUFFER_VALUES} (shorten the buffer or the rate)")
+        tare_n = int(round(self.sequence.tare_s * daq.sample_rate_hz))
+        if tare_n < self.safety.tare_min_samples:
+            raise ValueError(f"sequence.tare_s={self.sequence.tare_s:g} at "
+                             f"{daq.sample_rate_hz:g} Hz gives {tare_n} tare samples: expected at "
+                             f"least safety.tare_min_samples={self.safety.tare_min_samples}")
+
+    def _check_duration(self):
+        seq, st = self.sequence, self.settle
+        n = len(seq.pressures_bar) * (2 if seq.down_sweep else 1) * seq.repeats
+        if n > MAX_STEPS:
+            fixed = seq.tare_s + 2 * seq.preconditioning_cycles * seq.preconditioning_hold_s
+            short = (fixed + n * (st.min_dwell_s + st.hold_s)) / 86400
+            long = (fixed + n * (st.timeout_s + st.hold_s)) / 86400
+            raise ValueError(f"the sequence plans about {n} steps, {short:.1f} to {long:.1f} "
+                             f"days: expected at most {MAX_STEPS} steps (split it into runs)")
 
     def replace(self, **sections) -> BenchConfig:
         """A copy with some settings changed: ``replace(muscle={"eps": 0.1})``."""

@@ -31,8 +31,7 @@ from bench.config import USB6001_RANGE_V, BenchConfig
 
 DRIVER_MISSING = ("NI-DAQmx driver not found: install NI-DAQmx (Windows; NI does not support the "
                   "USB-6001 on Linux) or run on the simulated bench with --backend sim")
-TERMINAL_CONFIG_NAMES = {"differential": "DIFF", "rse": "RSE", "nrse": "NRSE",
-                         "pseudodifferential": "PSEUDO_DIFF"}
+TERMINAL_CONFIG_NAMES = {"differential": "DIFF", "rse": "RSE"}  # what the USB-6001 has
 VENT_V = 0.0  # an ITV-class regulator exhausts at 0 V command
 
 
@@ -57,20 +56,19 @@ class NIBackend:
     def __init__(self, config: BenchConfig):
         self.config = config
         self.device = config.daq.device
+        self.bench_key = f"ni-{self.device}"
         self.rate_hz = config.daq.sample_rate_hz
         self.ai_task = None
         self.ao_task = None
         self._reader = None
         self._writer = None
         self._index = 0
+        self._base = 0  # hardware index of the current task start's first sample
         self._started_at: float | None = None
 
     @property
     def ai_channels(self) -> list[str]:
-        ai = [self.config.loadcell.channel]
-        if self.config.regulator.electronic:
-            ai.append(self.config.regulator.monitor_channel)
-        return ai
+        return self.config.ai_channels
 
     def open(self) -> DeviceInfo:
         import nidaqmx
@@ -119,7 +117,7 @@ class NIBackend:
         with daq_errors():
             self.ai_task.start()
         self._started_at = time.monotonic()
-        self._index = 0
+        self._index = self._base = 0
 
     def read(self, n_samples: int, timeout_s: float) -> Block:
         data = np.empty((len(self.ai_channels), n_samples))
@@ -134,13 +132,20 @@ class NIBackend:
             return int(self.ai_task.in_stream.avail_samp_per_chan)
 
     def recover(self) -> int:
-        # Restarting discards the overwritten buffer; the hardware clock ran on meanwhile, so the
-        # sample index resumes from the time elapsed since the first start.
+        """Restart after an overflow; return the index of the next sample (the lost ones skipped).
+
+        Restarting discards the buffer, so everything acquired and unread is lost: the hardware
+        had acquired ``total_samp_per_chan_acquired`` samples when the task stopped, and the
+        clock runs on while it restarts (counted from the time the restart took).
+        """
         with daq_errors():
+            acquired = int(self.ai_task.in_stream.total_samp_per_chan_acquired)
+            stopped_at = time.monotonic()
             self.ai_task.stop()
             self.ai_task.start()
-        elapsed = time.monotonic() - self._started_at
-        self._index = max(self._index, int(elapsed * self.rate_hz))
+        restart_samples = int((time.monotonic() - stopped_at) * self.rate_hz)
+        self._base = max(self._index, self._base + acquired + restart_samples)
+        self._index = self._base
         return self._index
 
     def write_command(self, volts: float) -> None:

@@ -1,27 +1,43 @@
-"""Short bench procedures besides a run: tare, load-cell calibration, dry-run check.
+"""Short bench procedures besides a run: tare, load-cell calibration, dry-run check, vent.
 
-Each opens the device in :func:`session`, which vents and closes it whatever happens.
+Each opens the device in :func:`session`, which vents and closes it whatever happens, and first
+vents a bench left pressurised by a run that died without venting (:mod:`bench.unvented`),
+saying which run it was.
 """
 
 from __future__ import annotations
 
+import sys
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 
 import numpy as np
 from scipy import stats
 
-from bench.backend import Backend, DeviceInfo
+from bench.backend import Backend, BenchError, DeviceInfo
 from bench.config import BenchConfig
-from bench.run import estimate_duration_s, make_backend, make_operator, plan_steps
+from bench.run import make_backend, make_operator
+from bench.sequence import estimate_duration_s, plan_steps, validate_tare
 from bench.sim import STANDARD_GRAVITY
+from bench.unvented import vent_unvented
+
+VENTED_BELOW_BAR = 0.05  # `mkm vent` waits for the monitor to read below this
+VENT_WAIT_S = 10.0
+
+
+def _stderr(message: str) -> None:
+    print(f"mkm: {message}", file=sys.stderr, flush=True)
 
 
 @contextmanager
-def session(backend: Backend) -> Iterator[DeviceInfo]:
-    """Open ``backend`` (which writes the vent command) and close it (vent again) on exit."""
+def session(backend: Backend, notify=_stderr) -> Iterator[DeviceInfo]:
+    """Open ``backend`` (which writes the vent command), vent and report a bench a dead run left
+    pressurised, and close (vent again) on exit."""
     info = backend.open()
     try:
+        for marker in vent_unvented(backend):
+            notify(f"{marker.describe()}: vented now")
         yield info
     finally:
         backend.close()
@@ -36,16 +52,46 @@ def mean_volts(backend: Backend, config: BenchConfig, seconds: float) -> np.ndar
 
 def tare(config: BenchConfig, backend: str = "sim", clock: str = "virtual",
          seconds: float = 5.0) -> dict:
-    """Load-cell offset at 0 bar: mean and spread of ``seconds`` of volts, vented."""
+    """Load-cell offset at 0 bar: mean and spread of ``seconds`` of volts, vented; checked by
+    :func:`bench.sequence.validate_tare` (``TareInvalid`` when it would stop a run)."""
     device = make_backend(config, backend, clock)
     with session(device) as info:
         device.start()
         cell_V = mean_volts(device, config, seconds)[:, 0]
-    offset = float(cell_V.mean())
-    return {"offset_V": offset, "std_V": float(cell_V.std(ddof=1)), "n": int(cell_V.size),
-            "std_N": float(cell_V.std(ddof=1) * config.loadcell.sensitivity_N_per_V),
-            "shift_from_config_N": (offset - config.loadcell.offset_V)
-            * config.loadcell.sensitivity_N_per_V, "device": info.as_dict()}
+    out = validate_tare(cell_V, config)
+    return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict()}
+
+
+def vent(config: BenchConfig, backend: str = "sim", clock: str = "virtual",
+         below_bar: float = VENTED_BELOW_BAR, wait_s: float = VENT_WAIT_S) -> dict:
+    """Command 0 bar and wait until the regulator's monitor reads below ``below_bar``.
+
+    Returns ``pressure_bar`` (the last reading; NaN without a monitor: a manual regulator, to
+    be vented by hand), ``vented`` and ``waited_s``. Raises :class:`BenchError` when the device
+    cannot be opened or the pressure stays above ``below_bar`` for ``wait_s``.
+    """
+    device = make_backend(config, backend, clock)
+    with session(device):
+        device.write_command(0.0)
+        if not config.regulator.electronic:
+            return {"pressure_bar": float("nan"), "vented": False, "waited_s": 0.0,
+                    "manual": True}
+        device.start()
+        start = time.monotonic()
+        rate = config.daq.sample_rate_hz
+        block = max(1, int(round(0.2 * rate)))
+        sample_time_s, pressure = 0.0, float("nan")
+        while True:
+            volts = device.read(block, config.daq.read_timeout_s).volts
+            pressure = float(config.regulator.monitor_bar(volts[-1, 1]))
+            sample_time_s += block / rate
+            waited = max(time.monotonic() - start, sample_time_s)
+            if pressure < below_bar:
+                return {"pressure_bar": pressure, "vented": True, "waited_s": waited,
+                        "manual": False}
+            if waited > wait_s:
+                raise BenchError(f"the regulator still reads {pressure:.3f} bar {wait_s:g} s "
+                                 "after the vent command: VENT BY HAND and check the regulator")
 
 
 def fit_loadcell(mass_kg, volts) -> dict:
@@ -100,6 +146,7 @@ def check(config: BenchConfig, backend: str = "sim", clock: str = "virtual") -> 
     with session(device) as info:
         pass
     shortest, longest = estimate_duration_s(config)
+    warnings = braid_lock_warnings(config)
     m, cell, reg = config.muscle, config.loadcell, config.regulator
     lines = [
         f"config: {config.source}",
@@ -117,5 +164,21 @@ def check(config: BenchConfig, backend: str = "sim", clock: str = "virtual") -> 
         "step,direction,repeat,set_pressure_bar",
         *(f"{s.step},{s.direction},{s.repeat},{s.set_pressure_bar:g}" for s in plan_steps(config)),
         f"estimated duration: {shortest / 60:.1f} to {longest / 60:.1f} min",
+        *warnings,
     ]
     return "\n".join(lines)
+
+
+def braid_lock_warnings(config: BenchConfig) -> list[str]:
+    """A warning when ``muscle.eps`` shortens the braid past its locking angle (54.7 deg), where
+    Equation 2 leaves its range and the muscle pulls little or nothing."""
+    from fem.calibration import calibrated
+    from fem.eq2 import LOCKING_ANGLE_DEG, Eq2, chou_hannaford_eps_max
+
+    theta0 = float(calibrated(Eq2().calibration_key)["theta0_deg"])
+    eps_max = float(chou_hannaford_eps_max(theta0))
+    if config.muscle.eps < eps_max:
+        return []
+    return [f"warning: eps {config.muscle.eps:g} is past the braid lock: at theta0 "
+            f"{theta0:.1f} deg the braid reaches its locking angle {LOCKING_ANGLE_DEG:.1f} deg at "
+            f"eps {eps_max:.3f}; the muscle pulls little or nothing there"]

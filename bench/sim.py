@@ -5,9 +5,10 @@ the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / ra
 
 - the regulator: a first-order lag (time constant ``regulator_tau_s``) towards the commanded
   pressure, rate-limited to ``regulator_slew_bar_per_s``, with a 1-5 V monitor output;
-- the muscle: the static force of the project's force model (``sim.model`` in the
-  ``fem.ladder`` registry, tabulated over pressure once, so a sample costs an interpolation) put
-  through two effects the paper's FE model leaves out (no friction, no time dependence there):
+- the muscle: the static force of a physics model (``sim.model``, a ``fem.ladder`` rung; by
+  default the axisymmetric FE model ``axisym``, which is none of the closed forms a report
+  compares, tabulated over pressure once per muscle, so a sample costs an interpolation) put
+  through two effects no model of the ladder has (no friction, no time dependence there):
 
   * hysteresis, a play operator of half-width ``hysteresis_fraction`` times the force: rising
     pressure reads low, falling high, as Coulomb friction between braid threads does
@@ -23,14 +24,19 @@ A force model that leaves its validity range (Equation 2 beyond eps_max) or pred
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
 muscle cannot push. The clock is ``virtual`` (reads
 return at once, a one-hour run takes seconds) or ``real`` (reads wait for the sample times).
-Faults from ``[sim.faults]`` fire at sample time: disconnect, read timeouts, a reader stall that
-overflows the buffer, an AO write failure.
+Faults from ``[sim.faults]`` fire at sample time: disconnect, read timeouts, a reader stall (the
+clock runs on and samples pile up in the buffer: a stall shorter than the buffer delays the
+reading and every later command, a longer one overflows it and loses the samples), an AO write
+failure, a load-cell input reading NaN, a regulator that stops following, an overshoot.
+:func:`describe_physics` says what the simulated muscle is (recorded in run.json).
 """
 
 from __future__ import annotations
 
+import functools
 import math
 import time
+from collections import deque
 
 import numpy as np
 
@@ -51,21 +57,61 @@ MANOMETER_RESOLUTION_BAR = 0.05  # smallest division of a 2.5 bar class-1 dial (
 
 
 def quantize_volts(volts: float) -> float:
-    """Clip to the +-10 V rails and round to the ADC's 14-bit step."""
+    """Clip to the +-10 V rails and round to the ADC's 14-bit step (NaN stays NaN)."""
+    if math.isnan(volts):
+        return volts
     clipped = min(max(volts, -USB6001_RANGE_V), USB6001_RANGE_V - LSB_V)
     return round(clipped / LSB_V) * LSB_V
 
 
-def static_force_table(config: BenchConfig, n: int = 401) -> tuple[np.ndarray, np.ndarray]:
-    """Pressures [bar] over the regulator's range and the model's static force [N] at them."""
+def static_force_table(config: BenchConfig, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
+    """Pressures [bar] over the regulator's range and the model's static force [N] at them.
+
+    Computed once per muscle and model in a process (an FE sweep takes about a second); a
+    sample then costs one linear interpolation (0.05 bar spacing: the FE force is smooth).
+    """
+    m, s = config.muscle, config.sim
+    mesh = s.fe_mesh if s.model == "axisym" else None
+    return _table(s.model, mesh, m.L0_mm, m.D0_mm, m.t0_mm, m.eps,
+                  config.regulator.full_scale_bar, n)
+
+
+@functools.lru_cache(maxsize=32)
+def _table(model_name, mesh, L0_mm, D0_mm, t0_mm, eps, full_scale_bar, n):
+    model = _model(model_name, mesh, L0_mm)
+    pressure_bar = np.linspace(0.0, full_scale_bar, n)
+    prediction = model.predict(pressure_bar, D0_mm, t0_mm, eps)
+    force = np.where(prediction.valid, prediction.force_N, 0.0)
+    pressure_bar.flags.writeable = False
+    force = np.maximum(force, 0.0)
+    force.flags.writeable = False
+    return pressure_bar, force
+
+
+def _model(model_name, mesh, L0_mm):
     from fem.ladder import make_model
 
-    m = config.muscle
-    model = make_model(config.sim.model, L0_mm=m.L0_mm)
-    pressure_bar = np.linspace(0.0, config.regulator.full_scale_bar, n)
-    prediction = model.predict(pressure_bar, m.D0_mm, m.t0_mm, m.eps)
-    force = np.where(prediction.valid, prediction.force_N, 0.0)
-    return pressure_bar, np.maximum(force, 0.0)
+    return make_model(model_name, L0_mm=L0_mm, **({"mesh": mesh} if mesh else {}))
+
+
+def describe_physics(config: BenchConfig) -> dict:
+    """What the simulated muscle is, for run.json and the report: the model and its parameters,
+    and the effects added to it."""
+    s, m = config.sim, config.muscle
+    mesh = s.fe_mesh if s.model == "axisym" else None
+    model = _model(s.model, mesh, m.L0_mm)
+    return {
+        "force_model": s.model, "force_model_params": model.params(),
+        "table": f"{s.model} tabulated at 81 pressures over 0-{config.regulator.full_scale_bar:g}"
+                 " bar, linearly interpolated",
+        "friction": f"braid friction as a play operator of half-width {s.hysteresis_fraction:g}"
+                    " x force (rising and falling branches apart)",
+        "creep": f"{s.creep_fraction:g} of the force relaxed with tau {s.creep_tau_s:g} s",
+        "noise": f"load-cell noise {s.noise_V * 1e3:g} mV rms, 14-bit quantisation",
+        "summary": f"{s.model}{f' ({mesh} mesh)' if mesh else ''} FE/closed-form force with "
+                   f"{100 * s.hysteresis_fraction:g} % braid friction, "
+                   f"{100 * s.creep_fraction:g} % creep and noise",
+    }
 
 
 class SimMuscleBench:
@@ -87,10 +133,14 @@ class SimMuscleBench:
         self.hysteretic_N = 0.0
         self.relaxed_N = 0.0
         self.external_force_N = 0.0
+        self.regulator_stuck = False  # fault: the regulator no longer follows its command
+        self.loadcell_broken = False  # fault: the load-cell input reads NaN
 
     def set_command_volts(self, volts: float) -> None:
         r = self.config.regulator
         self.target_bar = min(max(volts, 0.0), 10.0) / 10.0 * r.full_scale_bar
+        if self.target_bar > 0:
+            self.target_bar += self.config.sim.faults.overshoot_bar
 
     def _normal(self) -> float:
         if self._next_noise >= self._noise.size:
@@ -102,8 +152,9 @@ class SimMuscleBench:
     def step(self) -> tuple[float, float]:
         """Advance one sample; return (load-cell volts, monitor volts) as the ADC reads them."""
         s, r, cell = self.config.sim, self.config.regulator, self.config.loadcell
-        change = (self.target_bar - self.pressure_bar) * self.lag
-        self.pressure_bar += min(max(change, -self.max_step_bar), self.max_step_bar)
+        if not self.regulator_stuck:
+            change = (self.target_bar - self.pressure_bar) * self.lag
+            self.pressure_bar += min(max(change, -self.max_step_bar), self.max_step_bar)
         static = float(np.interp(self.pressure_bar, self.table_p, self.table_F))
         h = s.hysteresis_fraction
         self.hysteretic_N = min(max(self.hysteretic_N, static * (1 - h)), static * (1 + h))
@@ -115,6 +166,8 @@ class SimMuscleBench:
         span = r.monitor_V_at_full_scale - r.monitor_V_at_zero
         monitor_V = (r.monitor_V_at_zero + self.pressure_bar / r.full_scale_bar * span
                      + s.monitor_noise_V * self._normal())
+        if self.loadcell_broken:
+            return math.nan, quantize_volts(monitor_V)
         return quantize_volts(cell_V), quantize_volts(monitor_V)
 
 
@@ -135,26 +188,29 @@ class SimBackend:
             raise ValueError(f"clock={clock!r} is invalid: expected 'virtual' or 'real'")
         self.config = config
         self.clock = clock
+        self.bench_key = f"sim-{config.daq.device}"
         self.rate_hz = config.daq.sample_rate_hz
         buffer_s = config.sim.buffer_s or config.daq.buffer_s
         self.buffer_samples = int(round(buffer_s * self.rate_hz))
         self.bench = SimMuscleBench(config)
-        self.commands: list[tuple[int, float]] = []  # (sample index, volts) of every AO write
+        self.commands: list[tuple[int, float]] = []  # (hardware sample index, volts) per write
         self.closed = False
-        self._index = 0
+        self._fifo: deque = deque()  # acquired, not yet read (the driver's buffer)
+        self._head = 0  # index of the next sample the hardware clock will take
         self._started_at: float | None = None
         self._faults = config.sim.faults
         self._timeouts_left = self._faults.read_timeouts
         self._ao_failed = False
         self._stalled = False
-        self._lost = 0
+
+    @property
+    def _index(self) -> int:
+        """Index of the next sample to be read."""
+        return self._head - len(self._fifo)
 
     @property
     def _channels(self) -> list[str]:
-        ai = [self.config.loadcell.channel]
-        if self.config.regulator.electronic:
-            ai.append(self.config.regulator.monitor_channel)
-        return ai
+        return self.config.ai_channels
 
     def _now_s(self) -> float:
         return self._index / self.rate_hz
@@ -168,13 +224,37 @@ class SimBackend:
         channels = {"ai": self._channels, "ai_range_V": [-10.0, 10.0],
                     "terminal_config": self.config.daq.terminal_config,
                     "ao": regulator.command_channel if regulator.electronic else None}
+        sim = {**self.config.as_dict()["sim"], "physics": describe_physics(self.config)}
         return DeviceInfo(backend="sim", simulated=True, product_type="USB-6001 (simulated)",
                           serial_number=f"SIM-{self.config.sim.seed}",
                           sample_rate_hz=self.rate_hz, channels=channels,
-                          extra={"clock": self.clock, "sim": self.config.as_dict()["sim"]})
+                          extra={"clock": self.clock, "sim": sim})
 
     def start(self) -> None:
         self._started_at = time.monotonic()
+
+    def _acquire(self, n: int) -> None:
+        """The hardware clock takes ``n`` samples into the buffer (faults fire at their time)."""
+        f = self._faults
+        for _ in range(n):
+            t_s = self._head / self.rate_hz
+            if f.nan_force_at_s is not None and t_s >= f.nan_force_at_s:
+                self.bench.loadcell_broken = True
+            if f.regulator_stuck_at_s is not None and t_s >= f.regulator_stuck_at_s:
+                self.bench.regulator_stuck = True
+            self._fifo.append(self.bench.step())
+            self._head += 1
+        if len(self._fifo) > self.buffer_samples:
+            lost = len(self._fifo)
+            self._fifo.clear()  # the driver overwrote unread samples; restarting discards all
+            raise BufferOverflow(f"the reader fell {lost} samples behind, more than the "
+                                 f"{self.buffer_samples}-sample buffer", lost_samples=lost)
+
+    def _catch_up(self) -> None:
+        """Real clock: acquire every sample whose time has passed."""
+        due = int((time.monotonic() - self._started_at) * self.rate_hz)
+        if due > self._head:
+            self._acquire(due - self._head)
 
     def read(self, n_samples: int, timeout_s: float) -> Block:
         if self._started_at is None:
@@ -186,49 +266,48 @@ class SimBackend:
             self._timeouts_left -= 1
             raise ReadTimeout(f"simulated read timeout at {self._now_s():g} s")
         if self._due(faults.stall_at_s) and not self._stalled:
+            # The reader stalls: the clock runs on, samples pile up in the buffer (and overflow
+            # it if the stall is longer), commands written afterwards reach the regulator late.
             self._stalled = True
-            stalled = int(round(faults.stall_s * self.rate_hz))
-            if stalled > self.buffer_samples:
-                self._lost = stalled
-                raise BufferOverflow(f"simulated reader stall of {faults.stall_s:g} s overflowed "
-                                     f"the {self.buffer_samples}-sample buffer",
-                                     lost_samples=stalled)
+            if self.clock == "real":
+                time.sleep(faults.stall_s)
+            else:
+                self._acquire(int(round(faults.stall_s * self.rate_hz)))
         if self.clock == "real":
-            self._wait_for(self._index + n_samples, timeout_s)
-        volts = np.array([self.bench.step() for _ in range(n_samples)])
+            self._wait_for(n_samples, timeout_s)
+        elif len(self._fifo) < n_samples:
+            self._acquire(n_samples - len(self._fifo))
+        first = self._index
+        rows = [self._fifo.popleft() for _ in range(n_samples)]
+        volts = np.array(rows, dtype=float).reshape(n_samples, 2)
         if not self.config.regulator.electronic:
             volts = volts[:, :1]
-        block = Block(self._index, volts)
-        self._index += n_samples
-        return block
+        return Block(first, volts)
 
     def available(self) -> int:
-        if self.clock == "virtual" or self._started_at is None:
+        if self._started_at is None:
             return 0
-        return max(0, int((time.monotonic() - self._started_at) * self.rate_hz) - self._index)
+        if self.clock == "real":
+            self._catch_up()
+        return len(self._fifo)
 
-    def _wait_for(self, end_index: int, timeout_s: float) -> None:
-        elapsed = time.monotonic() - self._started_at
-        behind = int(elapsed * self.rate_hz) - self._index
-        if behind > self.buffer_samples:
-            self._lost = behind
-            raise BufferOverflow(f"reader fell {behind} samples behind, more than the "
-                                 f"{self.buffer_samples}-sample buffer",
-                                 lost_samples=behind)
-        wait = end_index / self.rate_hz - elapsed
+    def _wait_for(self, n_samples: int, timeout_s: float) -> None:
+        self._catch_up()
+        missing = n_samples - len(self._fifo)
+        if missing <= 0:
+            return
+        wait = (self._head + missing) / self.rate_hz - (
+            time.monotonic() - self._started_at)
         if wait > timeout_s:
             time.sleep(timeout_s)
             raise ReadTimeout(f"samples not available within {timeout_s:g} s")
         if wait > 0:
             time.sleep(wait)
+        self._acquire(max(0, n_samples - len(self._fifo)))
 
     def recover(self) -> int:
-        # Restarting the task discards the overwritten buffer: every sample since the reader
-        # stalled is lost (``lost_samples``), while the physics kept running.
-        for _ in range(self._lost):
-            self.bench.step()
-        self._index += self._lost
-        self._lost = 0
+        # Restarting the task discards the buffer (already emptied at the overflow): reading
+        # resumes at the hardware clock's head, the physics having run on meanwhile.
         return self._index
 
     def write_command(self, volts: float) -> None:
@@ -239,8 +318,10 @@ class SimBackend:
             raise AOWriteFailed(f"simulated AO write failure at {self._now_s():g} s")
         if not self.config.regulator.electronic:
             return
+        if self.clock == "real" and self._started_at is not None:
+            self._catch_up()
         self.bench.set_command_volts(volts)
-        self.commands.append((self._index, float(volts)))
+        self.commands.append((self._head, float(volts)))
 
     def close(self) -> None:
         if self.closed:

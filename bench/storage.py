@@ -1,38 +1,309 @@
-"""Run folders: writing them while a run goes, and loading them back as pandas objects.
+"""The run folder contract: one module writes it and reads it back.
 
 One folder per run, named ``<UTC time>_<muscle id>``::
 
-    run.json      metadata; written atomically at start (status "running") and at the end
-                  ("complete", "aborted" or "failed", with the reason)
+    run.json      :class:`RunMeta`, written atomically at start (status ``running``) and at the
+                  end (a :class:`RunStatus`, with the reason); ``schema_version`` says which
+                  layout it has (files without it are version 1 and still load)
     config.toml   the bench configuration as given
-    samples.csv   one row per sample, appended and flushed after every block read
-    steps.csv     one row per pressure step, appended when the step ends
-    commands.csv  every regulator command written, with whether the write succeeded
+    samples.csv   one :class:`Sample` per row, appended and flushed after every block read
+    steps.csv     one :class:`StepRecord` per pressure step, appended when the step ends
+    commands.csv  one :class:`CommandRecord` per regulator command, with whether the write
+                  succeeded
 
 Rows are flushed to the operating system after every block, so a run killed at any moment keeps
-every sample read before its last block. ``fsync`` (which costs milliseconds) runs only for
-run.json and at close: it guards against power loss, not against a dying process.
+every sample read before its last block. ``fsync`` (which costs milliseconds) runs for run.json
+and at close: it guards against power loss, not against a dying process.
+
+:func:`load_run` reads a folder back (samples loaded on first use); :func:`aggregate_samples`
+streams ``samples.csv`` into time bins with bounded memory, for long runs (a 24 h run at 10 Hz
+is 864,000 rows).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import datetime
+import enum
+import io
 import json
 import math
 import os
-import tempfile
+import socket
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
+import numpy as np
 import pandas as pd
 
-SAMPLE_COLUMNS = ("sample", "time_s", "step", "phase", "set_pressure_bar", "command_bar",
-                  "pressure_bar", "loadcell_V", "monitor_V", "force_N", "flags")
-STEP_COLUMNS = ("step", "direction", "repeat", "set_pressure_bar", "pressure_bar_mean",
-                "force_N_mean", "force_N_std", "n", "settled", "settle_s", "start_s", "end_s")
-COMMAND_COLUMNS = ("time_s", "sample", "command_bar", "command_V", "ok", "purpose")
-STATUSES = ("running", "complete", "aborted", "failed")
+from fem.records import write_json_atomic
+
+SCHEMA_VERSION = 2
+
+
+class RunStatus(enum.StrEnum):
+    """Status of a run in ``run.json`` (a ``str``: ``RunStatus.COMPLETE == "complete"``)."""
+
+    RUNNING = "running"
+    COMPLETE = "complete"
+    COMPLETE_WITH_GAPS = "complete_with_gaps"  # every step done, but samples were lost
+    ABORTED = "aborted"  # stopped on purpose: interlock, signal, operator
+    FAILED = "failed"  # stopped by an error: device, storage, tare
+    INCOMPLETE = "incomplete"  # never written: the loader's verdict on a dead "running" record
+
+    @property
+    def finished(self) -> bool:
+        return self in (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS)
+
+
+WRITTEN_STATUSES = tuple(s for s in RunStatus if s is not RunStatus.INCOMPLETE)
+PHASES = ("tare", "precondition", "step", "operator")
+DIRECTIONS = ("up", "down")
+FLAGS = ("gap", "timeout", "clipped", "interlock", "nonfinite")
+
+
+class Sample(NamedTuple):
+    """One row of ``samples.csv``: one sample of every input on the hardware clock."""
+
+    sample: int  # index on the hardware sample clock since start
+    time_s: float  # sample / rate
+    step: int  # -1 outside the staircase
+    phase: str  # one of PHASES
+    set_pressure_bar: float
+    command_bar: float  # NaN with a manual regulator
+    pressure_bar: float  # regulator monitor, or the typed manometer reading (manual)
+    loadcell_V: float
+    monitor_V: float
+    force_N: float  # (loadcell_V - tare offset) * sensitivity
+    flags: str  # FLAGS joined by "|"
+
+
+class StepRecord(NamedTuple):
+    """One row of ``steps.csv``: a pressure step, its hold average and how it settled."""
+
+    step: int
+    direction: str
+    repeat: int
+    set_pressure_bar: float
+    pressure_bar_mean: float
+    force_N_mean: float
+    force_N_std: float
+    n: int  # samples averaged in the hold
+    settled: bool  # False: the settle timeout expired
+    settle_s: float  # time from the step's start to the start of the hold
+    start_s: float
+    end_s: float
+
+
+class CommandRecord(NamedTuple):
+    """One row of ``commands.csv``: a regulator command and whether the write succeeded."""
+
+    time_s: float
+    sample: int
+    command_bar: float
+    command_V: float
+    ok: bool
+    purpose: str
+
+
+SAMPLE_COLUMNS = Sample._fields
+STEP_COLUMNS = StepRecord._fields
+COMMAND_COLUMNS = CommandRecord._fields
+TIME_COLUMNS = {"time_s", "settle_s", "start_s", "end_s"}  # written with 10 digits: 0.1 s at 1e8 s
+
+
+@dataclass(frozen=True)
+class ProcessIdentity:
+    """The process that records a run: pid plus its start time and the machine's boot time, so a
+    pid reused after the recorder died (or after a reboot) does not make the run look alive."""
+
+    pid: int
+    host: str
+    started_unix_s: float | None = None
+    boot_unix_s: float | None = None
+
+    @classmethod
+    def current(cls) -> ProcessIdentity:
+        import psutil
+
+        return cls(os.getpid(), socket.gethostname(), psutil.Process().create_time(),
+                   psutil.boot_time())
+
+    def alive(self) -> bool:
+        """Whether this process still runs (False when it runs on another host: unknowable)."""
+        import psutil
+
+        if self.host != socket.gethostname() or not psutil.pid_exists(self.pid):
+            return False
+        if self.boot_unix_s is not None and abs(psutil.boot_time() - self.boot_unix_s) > 2.0:
+            return False  # rebooted since
+        if self.started_unix_s is None:
+            return True  # a version-1 record: the pid is all there is
+        try:
+            started = psutil.Process(self.pid).create_time()
+        except psutil.NoSuchProcess:
+            return False
+        except psutil.AccessDenied:
+            return True
+        return abs(started - self.started_unix_s) < 1.0
+
+
+@dataclass
+class Gap:
+    """Samples lost to a buffer overflow: ``lost_samples`` after sample ``after_sample``."""
+
+    after_sample: int
+    lost_samples: int
+    start_s: float  # time of the first lost sample
+    end_s: float  # time of the first sample after the gap
+    message: str = ""
+
+
+@dataclass
+class MuscleMeta:
+    id: str
+    D0_mm: float
+    t0_mm: float
+    L0_mm: float
+    eps: float  # shortening ratio, a fraction
+
+
+@dataclass
+class RunMeta:
+    """Everything ``run.json`` holds. :meth:`as_dict` writes it, :meth:`from_dict` reads it.
+
+    ``sequence`` holds the configured sequence and settle criteria plus ``n_steps`` (steps
+    planned); ``steps_done`` counts the steps finished. ``stop_signal`` names the signal that
+    stopped the run (``SIGTERM``...), ``stop_signal_number`` its number (exit status 128 + N).
+    ``manual_vent_required`` is True when the final vent command failed: the operator must vent
+    by hand. ``unvented_before`` lists earlier runs on this bench found ended without venting
+    (and vented) when this run started. ``lost_samples`` totals the ``gaps``.
+    """
+
+    muscle: MuscleMeta
+    status: RunStatus = RunStatus.RUNNING
+    reason: str = ""
+    schema_version: int = SCHEMA_VERSION
+    hardware: dict[str, Any] = field(default_factory=dict)
+    calibration: dict[str, Any] = field(default_factory=dict)
+    tare: dict[str, Any] | None = None
+    sequence: dict[str, Any] = field(default_factory=dict)
+    steps_done: int = 0
+    config_source: str = ""
+    config_overrides: dict[str, Any] = field(default_factory=dict)
+    command: str = ""
+    provenance: dict[str, Any] = field(default_factory=dict)
+    started_utc: str = ""
+    ended_utc: str | None = None
+    process: ProcessIdentity | None = None
+    counters: dict[str, int] = field(default_factory=lambda: {
+        "samples": 0, "read_timeouts": 0, "clipped_samples": 0})
+    gaps: list[Gap] = field(default_factory=list)
+    lost_samples: int = 0
+    stop_signal: str | None = None
+    stop_signal_number: int | None = None
+    stop_to_vent_s: float | None = None
+    vented_at_unix_s: float | None = None
+    last_command_bar: float = 0.0
+    manual_vent_required: bool = False
+    unvented_before: list[dict[str, Any]] = field(default_factory=list)
+    reprocessed_from: dict[str, Any] | None = None
+
+    @property
+    def n_steps(self) -> int | None:
+        return self.sequence.get("n_steps")
+
+    @property
+    def simulated(self) -> bool:
+        return bool(self.hardware.get("simulated"))
+
+    def as_dict(self) -> dict[str, Any]:
+        data = dataclasses.asdict(self)
+        data["status"] = str(self.status)
+        del data["schema_version"]
+        return {"schema_version": SCHEMA_VERSION, **data}
+
+    # A read-only mapping view, for code that shows run.json generically (provenance dumps).
+    def get(self, key: str, default: Any = None) -> Any:
+        return self.as_dict().get(key, default)
+
+    def __getitem__(self, key: str) -> Any:
+        return self.as_dict()[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.as_dict()
+
+    @classmethod
+    def from_dict(cls, data: Any, where: str = "run.json") -> RunMeta:
+        """Validate ``data`` (a parsed run.json of any schema version) into a :class:`RunMeta`.
+
+        Raises ``ValueError`` naming the missing or bad field.
+        """
+        if not isinstance(data, dict):
+            raise ValueError(f"{where} is corrupt: expected a JSON object")
+        data = dict(data)
+        version = data.pop("schema_version", 1)
+        if version not in (1, SCHEMA_VERSION):
+            raise ValueError(f"{where} has schema_version {version!r}: expected 1 or "
+                             f"{SCHEMA_VERSION} (a newer mkm wrote it?)")
+        if data.get("status") not in set(WRITTEN_STATUSES):
+            raise ValueError(f"{where} is corrupt: expected a 'status' among "
+                             f"{', '.join(WRITTEN_STATUSES)}, got {data.get('status')!r}")
+        if version == 1:
+            data = _upgrade_v1(data)
+        known = {f.name for f in dataclasses.fields(cls)}
+        values = {k: v for k, v in data.items() if k in known}
+        values["status"] = RunStatus(values["status"])
+        values["muscle"] = _muscle(data.get("muscle"), where)
+        if values.get("process") is not None:
+            values["process"] = ProcessIdentity(**values["process"])
+        values["gaps"] = [Gap(**g) for g in values.get("gaps") or []]
+        values["schema_version"] = version  # as read; as_dict() writes the current layout
+        return cls(**values)
+
+
+def _muscle(data: Any, where: str) -> MuscleMeta:
+    if not isinstance(data, dict):
+        raise ValueError(f"{where} has no 'muscle' object: expected id, D0_mm, t0_mm, L0_mm, eps")
+    values = {}
+    for name in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
+        if name not in data:
+            raise ValueError(f"{where}: muscle.{name} is missing: expected the muscle's {name}")
+        value = data[name]
+        if name == "id":
+            if not isinstance(value, str) or not value:
+                raise ValueError(f"{where}: muscle.id={value!r} is invalid: expected a name")
+        elif isinstance(value, bool) or not isinstance(value, int | float) \
+                or not math.isfinite(value):
+            raise ValueError(f"{where}: muscle.{name}={value!r} is invalid: expected a number")
+        values[name] = value
+    return MuscleMeta(**values)
+
+
+def _upgrade_v1(data: dict[str, Any]) -> dict[str, Any]:
+    """Version 1 (no schema_version): pid/host at the top, gaps inside counters, the planned
+    step count as ``sequence.steps``."""
+    data = dict(data)
+    if "pid" in data:
+        data["process"] = {"pid": data.pop("pid"), "host": data.pop("host", "")}
+    sequence = dict(data.get("sequence") or {})
+    if isinstance(sequence.get("steps"), int):
+        sequence["n_steps"] = sequence.pop("steps")
+    data["sequence"] = sequence
+    counters = dict(data.get("counters") or {})
+    rate = float((data.get("hardware") or {}).get("sample_rate_hz") or 10.0)
+    gaps = []
+    for g in counters.pop("gaps", []):
+        first = int(g["after_sample"]) + 1
+        gaps.append({"after_sample": int(g["after_sample"]),
+                     "lost_samples": int(g["lost_samples"]), "start_s": first / rate,
+                     "end_s": (first + int(g["lost_samples"])) / rate,
+                     "message": g.get("message", "")})
+    data["counters"] = counters
+    data["gaps"] = gaps
+    data["lost_samples"] = sum(g["lost_samples"] for g in gaps)
+    return data
 
 
 def run_folder_name(muscle_id: str, when: datetime.datetime | None = None) -> str:
@@ -40,34 +311,18 @@ def run_folder_name(muscle_id: str, when: datetime.datetime | None = None) -> st
     return f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}"
 
 
-def _number(value) -> str:
+def _cell(value, column: str) -> str:
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
-    if isinstance(value, bool):
+    if isinstance(value, bool | np.bool_):
         return "true" if value else "false"
-    if isinstance(value, float):
-        return f"{value:.6g}"
+    if isinstance(value, float | np.floating):
+        return f"{value:.10g}" if column in TIME_COLUMNS else f"{value:.6g}"
     return str(value)
 
 
-def write_json_atomic(path: Path, data: dict[str, Any]) -> None:
-    """Write ``data`` so that ``path`` always holds either the old or the new complete file."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        os.chmod(tmp, 0o644)  # mkstemp makes it private; a run record is for everyone to read
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            json.dump(data, f, indent=2, default=str)
-            f.write("\n")
-            f.flush()
-            os.fsync(f.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-
-
 class RunWriter:
-    """Creates a run folder and appends to its files as the run goes."""
+    """Creates a run folder and appends records to its files as the run goes."""
 
     def __init__(self, root: str | Path, muscle_id: str, config_text: str):
         root = Path(root)
@@ -89,101 +344,212 @@ class RunWriter:
             f = open(path / f"{name}.csv", "w", encoding="utf-8", newline="")
             f.write(",".join(columns) + "\n")
             f.flush()
-            self._files[name] = f
+            self._files[name] = (f, columns)
 
-    def write_meta(self, meta: dict[str, Any]) -> None:
-        write_json_atomic(self.path / "run.json", meta)
+    def write_meta(self, meta: RunMeta) -> None:
+        write_json_atomic(self.path / "run.json", meta.as_dict())
 
-    def _append(self, name: str, rows: list[tuple]) -> None:
-        f = self._files[name]
-        f.write("".join(",".join(_number(v) for v in row) + "\n" for row in rows))
+    def _append(self, name: str, rows) -> None:
+        f, columns = self._files[name]
+        f.write("".join(",".join(_cell(v, c) for v, c in zip(row, columns, strict=True)) + "\n"
+                        for row in rows))
         f.flush()
 
-    def append_samples(self, rows: list[tuple]) -> None:
-        """Rows in :data:`SAMPLE_COLUMNS` order; flushed before returning."""
+    def append_samples(self, rows: list[Sample]) -> None:
+        """Flushed to the operating system before returning."""
         self._append("samples", rows)
 
-    def append_step(self, row: dict[str, Any]) -> None:
-        self._append("steps", [tuple(row[c] for c in STEP_COLUMNS)])
+    def append_step(self, row: StepRecord) -> None:
+        self._append("steps", [row])
 
-    def append_command(self, row: tuple) -> None:
+    def append_command(self, row: CommandRecord) -> None:
         self._append("commands", [row])
 
     def close(self) -> None:
-        for f in self._files.values():
-            if not f.closed:
+        """Sync every file to disk and close it; every file is tried, the first error raised."""
+        errors = []
+        for f, _ in self._files.values():
+            if f.closed:
+                continue
+            try:
                 f.flush()
                 os.fsync(f.fileno())
-                f.close()
+            except OSError as exc:
+                errors.append(exc)
+            finally:
+                try:
+                    f.close()
+                except OSError as exc:  # the buffered tail could not be written (disk full)
+                    errors.append(exc)
+        if errors:
+            raise errors[0]
+
+
+# --- reading ----------------------------------------------------------------------------------
+
+
+def _whole_rows_bytes(path: Path) -> int:
+    """Size of ``path`` up to and including its last newline (a killed writer may leave half a
+    row after it)."""
+    size = path.stat().st_size
+    with open(path, "rb") as f:
+        pos = size
+        while pos > 0:
+            start = max(0, pos - 65536)
+            f.seek(start)
+            chunk = f.read(pos - start)
+            k = chunk.rfind(b"\n")
+            if k >= 0:
+                return start + k + 1
+            pos = start
+    return 0
+
+
+class _Prefix(io.RawIOBase):
+    """The first ``limit`` bytes of a binary file, as a readable stream."""
+
+    def __init__(self, f, limit: int):
+        self._f, self._left = f, limit
+
+    def readable(self) -> bool:
+        return True
+
+    def readinto(self, buffer) -> int:
+        n = min(len(buffer), self._left)
+        data = self._f.read(n)
+        buffer[: len(data)] = data
+        self._left -= len(data)
+        return len(data)
+
+
+def _open_rows(path: Path, columns: tuple[str, ...], problems: list[str]):
+    """A text stream over the whole rows of ``path``, its header checked."""
+    whole = _whole_rows_bytes(path)
+    if whole < path.stat().st_size:
+        problems.append(f"{path.name}: dropped a partial last row")
+    raw = open(path, "rb")
+    stream = io.TextIOWrapper(io.BufferedReader(_Prefix(raw, whole)), encoding="utf-8",
+                              newline="")
+    header = stream.readline().rstrip("\r\n")
+    if header != ",".join(columns):
+        stream.close()
+        raw.close()
+        raise ValueError(f"{path} is corrupt: expected the header {','.join(columns[:3])}...")
+    return stream, raw
+
+
+DTYPES = {"flags": "string", "phase": "string", "direction": "string", "purpose": "string"}
+
+
+def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
+              chunksize: int | None = None):
+    if not path.is_file():
+        problems.append(f"{path.name} is missing")
+        empty = pd.DataFrame(columns=list(columns))
+        return iter([empty]) if chunksize else empty
+    stream, raw = _open_rows(path, columns, problems)
+    dtypes = {c: t for c, t in DTYPES.items() if c in columns}
+
+    def frames():
+        try:
+            reader = pd.read_csv(stream, names=list(columns), header=None, dtype=dtypes,
+                                 chunksize=chunksize or 200_000)
+            for df in reader:
+                yield _typed(df, path)
+        except (pd.errors.ParserError, ValueError) as exc:
+            raise ValueError(f"{path} is corrupt: {exc}") from None
+        finally:
+            stream.close()
+            raw.close()
+
+    if chunksize:
+        return frames()
+    parts = list(frames())
+    return pd.concat(parts, ignore_index=True) if parts else pd.DataFrame(columns=list(columns))
+
+
+def _typed(df: pd.DataFrame, path: Path) -> pd.DataFrame:
+    if "flags" in df:
+        df["flags"] = df["flags"].fillna("")
+    for column in ("settled", "ok"):
+        if column in df:
+            df[column] = df[column].astype(str).str.lower().eq("true")
+    # Text columns hold a fixed vocabulary; anything else (a tampered "=cmd") is refused, so no
+    # spreadsheet formula can pass through into a report's CSV.
+    for column, allowed in (("direction", DIRECTIONS), ("phase", PHASES)):
+        if column in df:
+            bad = ~df[column].isin(allowed)
+            if bad.any():
+                raise ValueError(f"{path} is corrupt: {column}={df[column][bad].iloc[0]!r}, "
+                                 f"expected one of {', '.join(allowed)}")
+    if "purpose" in df:
+        bad = ~df["purpose"].str.fullmatch(r"[a-z ]+").fillna(False).astype(bool)
+        if bad.any():
+            raise ValueError(f"{path} is corrupt: purpose={df['purpose'][bad].iloc[0]!r}, "
+                             "expected lowercase words")
+    return df
 
 
 @dataclass
 class Run:
-    """A run folder loaded back: metadata, samples and steps, and whether it is complete.
+    """A run folder loaded back.
 
-    ``status`` is the one in ``run.json`` ("complete", "aborted", "failed"), "running" while the
-    recording process is alive, or "incomplete" when the run stopped without closing its record
-    (killed, power lost). ``problems`` lists what the loader had to repair or could not read.
+    ``status`` is the one in ``run.json``, except that a ``running`` record whose process is dead
+    (killed, power lost) loads as ``incomplete``. ``problems`` lists what the loader had to repair
+    or could not read; ``unvented`` describes a run that ended without its vent (None if it did
+    vent). ``samples`` is read on first use (whole); :func:`aggregate_samples` streams instead.
     """
 
     path: Path
-    meta: dict[str, Any]
-    samples: pd.DataFrame
+    meta: RunMeta
     steps: pd.DataFrame
-    status: str
+    status: RunStatus
     commands: pd.DataFrame = field(default_factory=pd.DataFrame)
     problems: list[str] = field(default_factory=list)
+    unvented: str | None = None
+    _samples: pd.DataFrame | None = None
+
+    @property
+    def samples(self) -> pd.DataFrame:
+        if self._samples is None:
+            self._samples = _read_csv(self.path / "samples.csv", SAMPLE_COLUMNS, [])
+        return self._samples
+
+    @property
+    def n_samples(self) -> int:
+        """Samples in samples.csv (counted without loading them)."""
+        path = self.path / "samples.csv"
+        if self._samples is not None or not path.is_file():
+            return len(self.samples)
+        whole = _whole_rows_bytes(path)
+        with open(path, "rb") as f:
+            count = 0
+            while whole > 0:
+                chunk = f.read(min(1 << 20, whole))
+                whole -= len(chunk)
+                count += chunk.count(b"\n")
+        return max(count - 1, 0)
 
     @property
     def complete(self) -> bool:
-        return self.status == "complete"
+        return self.status == RunStatus.COMPLETE
 
     @property
     def reason(self) -> str:
-        return self.meta.get("reason", "")
+        return self.meta.reason
 
 
-def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str]) -> pd.DataFrame:
-    if not path.is_file():
-        problems.append(f"{path.name} is missing")
-        return pd.DataFrame(columns=list(columns))
-    text = path.read_text(encoding="utf-8")
-    if text and not text.endswith("\n"):
-        # The process died in the middle of a row: that row was never flushed whole.
-        text = text[: text.rfind("\n") + 1]
-        problems.append(f"{path.name}: dropped a partial last row")
-    if not text.startswith(",".join(columns)):
-        raise ValueError(f"{path} is corrupt: expected a header starting "
-                         f"{','.join(columns[:3])}...")
-    from io import StringIO
-
+def read_meta(path: str | Path) -> RunMeta:
+    """The :class:`RunMeta` of the run folder ``path`` (``ValueError`` when it cannot be read)."""
+    path = Path(path)
+    meta_path = path / "run.json"
+    if not meta_path.is_file():
+        raise ValueError(f"{path} is not a run folder: run.json is missing")
     try:
-        df = pd.read_csv(StringIO(text), keep_default_na=True, dtype={"flags": "string"}
-                         if "flags" in columns else None)
-    except (pd.errors.ParserError, ValueError) as exc:
-        raise ValueError(f"{path} is corrupt: {exc}") from None
-    if "flags" in df:
-        df["flags"] = df["flags"].fillna("")
-    if "settled" in df:
-        df["settled"] = df["settled"].astype(str).str.lower().eq("true")
-    if "ok" in df:
-        df["ok"] = df["ok"].astype(str).str.lower().eq("true")
-    return df
-
-
-def _process_alive(meta: dict[str, Any]) -> bool:
-    import socket
-
-    pid, host = meta.get("pid"), meta.get("host")
-    if not pid or host != socket.gethostname():
-        return False
-    try:
-        os.kill(int(pid), 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
+        data = json.loads(meta_path.read_text(encoding="utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
+    return RunMeta.from_dict(data, str(meta_path))
 
 
 def load_run(path: str | Path) -> Run:
@@ -191,28 +557,123 @@ def load_run(path: str | Path) -> Run:
 
     Raises ``ValueError`` with a clear message when ``path`` is not a run folder or ``run.json``
     cannot be read. A run that did not finish loads with ``complete`` False, status
-    "incomplete" (or "running" if its process is still alive), every flushed sample, and the
-    reason in ``problems``.
+    ``incomplete`` (or ``running`` if its process is still alive), and the reason in
+    ``problems``.
     """
     path = Path(path)
-    meta_path = path / "run.json"
-    if not meta_path.is_file():
-        raise ValueError(f"{path} is not a run folder: run.json is missing")
-    try:
-        meta = json.loads(meta_path.read_text(encoding="utf-8"))
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-        raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
-    if not isinstance(meta, dict) or meta.get("status") not in STATUSES:
-        raise ValueError(f"{meta_path} is corrupt: expected a 'status' among "
-                         f"{', '.join(STATUSES)}")
+    meta = read_meta(path)
     problems: list[str] = []
-    samples = _read_csv(path / "samples.csv", SAMPLE_COLUMNS, problems)
     steps = _read_csv(path / "steps.csv", STEP_COLUMNS, problems)
     commands = _read_csv(path / "commands.csv", COMMAND_COLUMNS, problems)
-    status = meta["status"]
-    if status == "running" and not _process_alive(meta):
-        status = "incomplete"
-        problems.append("the run stopped without closing its record (killed or crashed): "
-                        f"{len(samples)} samples were flushed before it stopped")
-    return Run(path=path, meta=meta, samples=samples, steps=steps, status=status,
-               commands=commands, problems=problems)
+    # partial-row and missing-file problems of samples.csv, without reading it
+    samples_csv = path / "samples.csv"
+    if not samples_csv.is_file():
+        problems.append("samples.csv is missing")
+    else:
+        _open_rows(samples_csv, SAMPLE_COLUMNS, problems)[1].close()
+    if meta.schema_version == 1:  # version 1 did not count the steps done
+        meta.steps_done = len(steps)
+    status = meta.status
+    unvented = None
+    if status == RunStatus.RUNNING and not (meta.process and meta.process.alive()):
+        status = RunStatus.INCOMPLETE
+        problems.append("the run stopped without closing its record (killed or crashed)")
+        unvented = _unvented(commands)
+        if unvented:
+            problems.append(unvented)
+    elif meta.manual_vent_required:
+        unvented = "the final vent command failed: the muscle had to be vented by hand"
+    return Run(path=path, meta=meta, steps=steps, status=status, commands=commands,
+               problems=problems, unvented=unvented)
+
+
+def _unvented(commands: pd.DataFrame) -> str | None:
+    """What a dead run left commanded, when its last successful command was not a vent."""
+    done = commands[commands["ok"]] if len(commands) else commands
+    if done.empty:
+        return None
+    last = done.iloc[-1]
+    if float(last["command_bar"]) == 0.0:
+        return None
+    return (f"it ended without venting: the last commanded pressure was "
+            f"{float(last['command_bar']):g} bar (at {float(last['time_s']):g} s)")
+
+
+def iter_samples(run_dir: str | Path, chunksize: int = 100_000):
+    """``samples.csv`` of the run folder ``run_dir`` as DataFrames of ``chunksize`` rows (whole
+    rows only), for passes over long runs in bounded memory."""
+    return _read_csv(Path(run_dir) / "samples.csv", SAMPLE_COLUMNS, [], chunksize=chunksize)
+
+
+def aggregate_samples(path: str | Path, bin_s: float | None = None,
+                      max_bins: int = 4000) -> pd.DataFrame:
+    """Time bins of ``samples.csv`` in one streamed pass (memory bounded by the chunk and the bin
+    count, not by the run's length).
+
+    One row per non-empty bin of ``bin_s`` seconds (default: the run's duration over
+    ``max_bins``, at least one sample period): ``time_s`` (bin start), ``n``, ``step`` (last in
+    the bin), ``pressure_bar_{min,mean,max}``, ``force_N_{min,mean,max}``, and counts of the
+    ``gap``, ``interlock`` and ``timeout`` flags.
+    """
+    path = Path(path)
+    csv = path / "samples.csv" if path.is_dir() else path
+    if bin_s is None:
+        last = _last_time_s(csv)
+        bin_s = max(last / max_bins, 1e-9) if last > 0 else 1.0
+    if not bin_s > 0:
+        raise ValueError(f"bin_s={bin_s!r} is invalid: expected a duration > 0 s")
+    parts = []
+    for chunk in _read_csv(csv, SAMPLE_COLUMNS, [], chunksize=100_000):
+        if chunk.empty:
+            continue
+        b = np.floor(chunk["time_s"].to_numpy(float) / bin_s).astype(np.int64)
+        flags = chunk["flags"].fillna("")
+        frame = pd.DataFrame({"bin": b, "step": chunk["step"],
+                              "p": chunk["pressure_bar"], "f": chunk["force_N"],
+                              "gap": flags.str.contains("gap").astype(int),
+                              "interlock": flags.str.contains("interlock").astype(int),
+                              "timeout": flags.str.contains("timeout").astype(int)})
+        g = frame.groupby("bin")
+        parts.append(pd.DataFrame({
+            "n": g.size(), "step": g["step"].last(),
+            "p_sum": g["p"].sum(), "p_n": g["p"].count(), "p_min": g["p"].min(),
+            "p_max": g["p"].max(), "f_sum": g["f"].sum(), "f_n": g["f"].count(),
+            "f_min": g["f"].min(), "f_max": g["f"].max(), "gap": g["gap"].sum(),
+            "interlock": g["interlock"].sum(), "timeout": g["timeout"].sum()}))
+    if not parts:
+        return pd.DataFrame(columns=["time_s", "n", "step", "pressure_bar_min",
+                                     "pressure_bar_mean", "pressure_bar_max", "force_N_min",
+                                     "force_N_mean", "force_N_max", "gap", "interlock",
+                                     "timeout"])
+    # a bin split across two chunks is merged here
+    all_bins = pd.concat(parts).groupby(level=0)
+    merged = all_bins.agg({"n": "sum", "step": "last", "p_sum": "sum", "p_n": "sum",
+                           "p_min": "min", "p_max": "max", "f_sum": "sum", "f_n": "sum",
+                           "f_min": "min", "f_max": "max", "gap": "sum", "interlock": "sum",
+                           "timeout": "sum"})
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out = pd.DataFrame({
+            "time_s": merged.index.to_numpy() * bin_s, "n": merged["n"].to_numpy(),
+            "step": merged["step"].to_numpy(),
+            "pressure_bar_min": merged["p_min"].to_numpy(),
+            "pressure_bar_mean": (merged["p_sum"] / merged["p_n"]).to_numpy(),
+            "pressure_bar_max": merged["p_max"].to_numpy(),
+            "force_N_min": merged["f_min"].to_numpy(),
+            "force_N_mean": (merged["f_sum"] / merged["f_n"]).to_numpy(),
+            "force_N_max": merged["f_max"].to_numpy(),
+            "gap": merged["gap"].to_numpy(), "interlock": merged["interlock"].to_numpy(),
+            "timeout": merged["timeout"].to_numpy()})
+    return out
+
+
+def _last_time_s(csv: Path) -> float:
+    whole = _whole_rows_bytes(csv)
+    with open(csv, "rb") as f:
+        f.seek(max(0, whole - 4096))
+        lines = f.read(whole - max(0, whole - 4096)).splitlines()
+    if len(lines) < 2:
+        return 0.0
+    try:
+        return float(lines[-1].split(b",")[1])
+    except (IndexError, ValueError):
+        return 0.0

@@ -1,7 +1,10 @@
-"""``mkm acquire``, ``mkm tare``, ``mkm calibrate-loadcell``, ``mkm check``: argument parsing only.
+"""``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess``: argument parsing only.
 
 Hardware failures (:class:`bench.backend.BenchError`) print one line ``mkm: error: ...`` and exit
-with status 1; bad input is a ``ValueError`` (status 2, handled by ``mkm.cli.main``).
+with status 1; bad input is a ``ValueError`` (status 2, handled by ``mkm.cli.main``). ``mkm
+acquire`` exits with :attr:`bench.run.RunResult.exit_code` (0 complete, 3 complete with lost
+samples, 128 + N after signal N, 2 when the disk failed, 1 otherwise) and always prints the run
+folder last on stdout once it exists.
 """
 
 from __future__ import annotations
@@ -15,7 +18,6 @@ from mkm.cli.common import argtype
 from mkm.paths import default_out
 
 EXIT_FAILED = 1
-EXIT_INTERRUPTED = 130
 
 
 def _positive_seconds(text: str) -> float:
@@ -83,6 +85,25 @@ def register(subparsers) -> None:
     check.add_argument("--pressures", type=argtype(parse_pressures), help="pressures override")
     check.set_defaults(func=_check)
 
+    vent = subparsers.add_parser(
+        "vent", help="command 0 bar now and wait until the monitor reads it",
+        description="Command 0 bar on the bench, wait until the regulator's monitor reads below "
+                    "0.05 bar and print the pressure. Also vents (and names) a run that ended "
+                    "without venting. Example: mkm vent --backend ni")
+    _add_device_arguments(vent)
+    vent.set_defaults(func=_vent)
+
+    rep = subparsers.add_parser(
+        "reprocess", help="recompute a run's forces from its raw volts with a new calibration",
+        description="Write a new run folder with every force recomputed from the raw load-cell "
+                    "volts with the [loadcell] of NEW.toml (tare and hold averages again), with "
+                    "provenance. Example: mkm reprocess data/experimental/RUN --config new.toml")
+    rep.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
+    rep.add_argument("--config", required=True, help="bench TOML with the new [loadcell]")
+    rep.add_argument("--out", help="folder that receives the new run folder (default: beside "
+                     "RUN_DIR)")
+    rep.set_defaults(func=_reprocess)
+
 
 def _failed(exc: BenchError) -> int:
     print(f"mkm: error: {exc}", file=sys.stderr)
@@ -91,19 +112,20 @@ def _failed(exc: BenchError) -> int:
 
 def _acquire(args) -> int:
     from bench.config import load_config
-    from bench.run import acquire
+    from bench.run import acquire, check_out_root
 
     config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
+    check_out_root(args.out)  # bad --out: one line, exit 2, before the device is opened
     result = acquire(config, backend=args.backend, clock=args.clock, out_root=args.out,
                      progress=not args.no_progress, plot=args.plot)
     if result.path is None:
         print(f"mkm: error: {result.reason}", file=sys.stderr)
-        return EXIT_FAILED
+        return result.exit_code
     print(f"run {result.status}: {result.reason}", file=sys.stderr)
-    print(result.path)
-    if result.status == "complete":
-        return 0
-    return EXIT_INTERRUPTED if "Ctrl-C" in result.reason else EXIT_FAILED
+    if result.manual_vent_required:
+        print("mkm: VENT THE MUSCLE BY HAND NOW: the vent command failed", file=sys.stderr)
+    print(result.path, flush=True)
+    return result.exit_code
 
 
 def _tare(args) -> int:
@@ -120,22 +142,36 @@ def _tare(args) -> int:
     return 0
 
 
+def loadcell_toml(fit: dict, config=None) -> str:
+    """The ``[loadcell]`` block to paste into a bench config, from a fit."""
+    lines = ["[loadcell]"]
+    if config is not None:
+        lines += [f'channel = "{config.loadcell.channel}"',
+                  f"capacity_N = {config.loadcell.capacity_N!r}"]
+    lines += [f"sensitivity_N_per_V = {fit['sensitivity_N_per_V']:.6g}",
+              f"offset_V = {fit['offset_V']:.6g}"]
+    return "\n".join(lines)
+
+
 def _calibrate_loadcell(args) -> int:
     from bench.config import load_config
     from bench.procedures import calibrate_loadcell, fit_loadcell
 
+    config = load_config(args.config)
     if args.volts is not None:
         out = fit_loadcell(args.masses, args.volts)
     else:
         try:
-            out = calibrate_loadcell(load_config(args.config), args.masses, args.backend,
-                                     args.clock, args.seconds)
+            out = calibrate_loadcell(config, args.masses, args.backend, args.clock,
+                                     args.seconds)
         except BenchError as exc:
             return _failed(exc)
+    # stdout: the block to paste into the config; stderr: the fit, for the operator
     print(f"sensitivity_N_per_V = {out['sensitivity_N_per_V']:.4f}, offset_V = "
           f"{out['offset_V']:.5f} (R^2 {out['r_squared']:.6f}, largest residual "
-          f"{out['max_abs_residual_N']:.3f} N over {out['n_points']} masses)")
-    print(json.dumps(out, indent=2))
+          f"{out['max_abs_residual_N']:.3f} N over {out['n_points']} masses)", file=sys.stderr)
+    print(json.dumps(out, indent=2), file=sys.stderr)
+    print(loadcell_toml(out, config))
     return 0
 
 
@@ -145,7 +181,37 @@ def _check(args) -> int:
 
     config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
     try:
-        print(check(config, args.backend))
+        text = check(config, args.backend)
     except BenchError as exc:
         return _failed(exc)
+    print(text)
+    for line in text.splitlines():
+        if line.startswith("warning:"):
+            print(f"mkm: {line}", file=sys.stderr)
+    return 0
+
+
+def _vent(args) -> int:
+    from bench.config import load_config
+    from bench.procedures import vent
+
+    try:
+        out = vent(load_config(args.config), args.backend, args.clock)
+    except BenchError as exc:
+        print(f"mkm: error: {exc}; VENT BY HAND", file=sys.stderr)
+        return EXIT_FAILED
+    if out["manual"]:
+        print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "
+              "and check the manometer")
+        return 0
+    print(f"vented: {out['pressure_bar']:.3f} bar after {out['waited_s']:.1f} s")
+    return 0
+
+
+def _reprocess(args) -> int:
+    from bench.config import load_config
+    from bench.reprocess import reprocess
+
+    path = reprocess(args.run_dir, load_config(args.config), args.out)
+    print(path)
     return 0

@@ -14,6 +14,13 @@ import pytest
 from bench.config import load_config
 from bench.sim import SimMuscleBench
 
+
+@pytest.fixture(autouse=True)
+def _bench_state(tmp_path, monkeypatch):
+    """Every test gets its own folder of bench markers (bench.unvented)."""
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+
+
 SHORT = {
     "sequence": {"pressures_bar": (0.5, 1.0), "tare_s": 2.0, "preconditioning_cycles": 0},
     "settle": {"min_dwell_s": 3.0, "hold_s": 2.0, "timeout_s": 20.0, "window_s": 2.0},
@@ -45,10 +52,27 @@ class FakeDriver:
         interpreter.read_analog_f64.side_effect = self.read
         interpreter.write_analog_scalar_f64.side_effect = self.write
         interpreter.get_read_attribute_uint32.side_effect = self.read_attribute
+        interpreter.get_read_attribute_uint64.side_effect = self.read_attribute_64
+        interpreter.start_task.side_effect = self.start
         interpreter.get_timing_attribute_double.return_value = actual_rate_hz
         interpreter.get_device_attribute_string.return_value = "USB-6001"
         interpreter.get_device_attribute_uint32.return_value = 0x1F2E3D4
         interpreter.driver_version = (25, 0, 0)
+        self.acquired = 0  # samples the "hardware" took since the task started
+        self.overflow_behind = 0  # an overflow: the hardware ran this far ahead of the reader
+
+    def start(self, handle):
+        self.acquired = 0  # the count restarts with the task
+
+    def overflow(self, behind_samples):
+        """The reader fell ``behind_samples`` behind: the hardware acquired them, unread."""
+        for _ in range(behind_samples):
+            self.bench.step()
+        self.acquired += behind_samples
+
+    def read_attribute_64(self, handle, attribute):
+        assert attribute == 0x192A  # total_samp_per_chan_acquired
+        return self.acquired
 
     def read_attribute(self, handle, attribute):
         return {0x217B: self.n_channels, 0x1223: 0}[attribute]  # num_chans, avail_samp_per_chan
@@ -57,6 +81,7 @@ class FakeDriver:
         assert fill_mode == self.fill_mode
         samples = np.array([self.bench.step() for _ in range(n_samples)])
         data[:, :] = samples[:, : self.n_channels].T
+        self.acquired += n_samples
         return data, n_samples
 
     def write(self, handle, auto_start, timeout, value):

@@ -151,22 +151,30 @@ def test_disconnect_mid_run_vents_then_clears(config, fake_driver, tmp_path):
     assert fake_driver.interpreter.write_analog_scalar_f64.call_args.args[3] == 0.0
 
 
-def test_overflow_restarts_the_task(config, fake_driver, tmp_path):
+def test_overflow_restarts_the_task_and_counts_the_lost_samples(config, fake_driver, tmp_path):
+    # The reader falls 6100 samples behind a 6000-sample buffer: the driver reports -200279.
+    # Restarting discards all 6100; the backend counts them from the hardware's sample count
+    # (total_samp_per_chan_acquired), not from the wall clock (issue 12: it recorded 0).
     reads = {"n": 0}
     normal = fake_driver.read
 
     def read(*args):
         reads["n"] += 1
         if reads["n"] == 25:
+            fake_driver.overflow(6100)
             raise DaqReadError("samples overwritten", -200279, 0)
         return normal(*args)
 
     fake_driver.interpreter.read_analog_f64.side_effect = read
     result = acquire(config, backend="ni", out_root=tmp_path)
-    assert result.status == "complete"
+    assert result.status == "complete_with_gaps" and result.exit_code == 3
     run = load_run(result.path)
-    assert len(run.meta["counters"]["gaps"]) == 1
-    assert (run.samples["flags"] == "gap").sum() == 1
+    (gap,) = run.meta.gaps
+    assert gap.lost_samples == 6100 and run.meta.lost_samples == 6100
+    assert (gap.start_s, gap.end_s) == (2.4, 612.4)  # samples 24 .. 6123 at 10 Hz
+    s = run.samples
+    assert s["sample"].iloc[24] == 24 + 6100 and s["flags"].iloc[24] == "gap"
+    assert (s["flags"] == "gap").sum() == 1
     assert fake_driver.interpreter.stop_task.call_count == 1
     assert fake_driver.interpreter.start_task.call_count == 2
 
@@ -184,6 +192,7 @@ CHECKED_HOOKS = {
     "read_analog_f64": ["task", "num_samps_per_chan", "timeout", "fill_mode", "read_array"],
     "write_analog_scalar_f64": ["task", "auto_start", "timeout", "value"],
     "set_buffer_attribute_uint32": ["task", "attribute", "value"],
+    "get_read_attribute_uint64": ["task", "attribute"],
     "start_task": ["task"], "stop_task": ["task"], "clear_task": ["task"],
 }
 

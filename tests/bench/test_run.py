@@ -6,9 +6,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from bench.run import BenchRun, acquire, estimate_duration_s, plan_steps, settle_reached
+from bench.run import BenchRun, acquire
+from bench.sequence import estimate_duration_s, plan_steps, settle_reached
 from bench.sim import SimBackend
-from bench.storage import COMMAND_COLUMNS, SAMPLE_COLUMNS, STEP_COLUMNS, load_run
+from bench.storage import COMMAND_COLUMNS, SAMPLE_COLUMNS, STEP_COLUMNS, RunStatus, load_run
 from fem.ladder import make_model
 
 
@@ -207,9 +208,12 @@ def test_fault_overflow_leaves_a_flagged_gap(config, tmp_path):
     # a 30 s stall of the reader against a 10 s buffer: the 300 samples are lost
     c = config.replace(sim={"buffer_s": 10.0})
     result, run = record(c, tmp_path, stall_at_s=4.0, stall_s=30.0)
-    assert result.status == "complete"
-    gaps = run.meta["counters"]["gaps"]
-    assert len(gaps) == 1 and gaps[0]["lost_samples"] == 300 and gaps[0]["after_sample"] == 39
+    # every step done, but not "complete": 300 samples are missing (issue 12)
+    assert result.status == RunStatus.COMPLETE_WITH_GAPS and result.exit_code == 3
+    assert "300 samples were lost in 1 gap(s): 4-34 s" in result.reason
+    assert run.meta.lost_samples == 300
+    (gap,) = run.meta.gaps
+    assert (gap.lost_samples, gap.after_sample, gap.start_s, gap.end_s) == (300, 39, 4.0, 34.0)
     s = run.samples
     jump = np.flatnonzero(np.diff(s["sample"]) != 1)
     assert list(jump) == [39] and s["sample"].iloc[40] == 340
@@ -239,7 +243,7 @@ class _Interrupting(SimBackend):
 
 
 def test_second_ctrl_c_vents_at_once(config, tmp_path):
-    result = BenchRun(config, _Interrupting(config, 45), tmp_path, handle_sigint=False).execute()
+    result = BenchRun(config, _Interrupting(config, 45), tmp_path, handle_signals=False).execute()
     run = load_run(result.path)
     assert result.status == "aborted" and "second Ctrl-C" in result.reason
     assert len(run.samples) == 45
@@ -248,13 +252,13 @@ def test_second_ctrl_c_vents_at_once(config, tmp_path):
 
 def test_first_ctrl_c_stops_at_the_next_block(config, tmp_path):
     backend = SimBackend(config)
-    run = BenchRun(config, backend, tmp_path, handle_sigint=False)
+    run = BenchRun(config, backend, tmp_path, handle_signals=False)
     original = backend.read
 
     def read(n, timeout):
         block = original(n, timeout)
         if block.first_index == 30:
-            run._on_sigint(None, None)  # what the SIGINT handler does
+            run.request_stop()  # what the first SIGINT does
         return block
 
     backend.read = read
@@ -271,8 +275,8 @@ def test_unexpected_error_is_recorded_and_raised(config, tmp_path):
     backend = SimBackend(config)
     backend.read = lambda n, timeout: (_ for _ in ()).throw(ZeroDivisionError("bug"))
     with pytest.raises(ZeroDivisionError):
-        BenchRun(config, backend, tmp_path, handle_sigint=False).execute()
-    (folder,) = tmp_path.iterdir()
+        BenchRun(config, backend, tmp_path, handle_signals=False).execute()
+    (folder,) = tmp_path.glob("*_paper-prototype")
     run = load_run(folder)
     assert run.status == "failed" and "ZeroDivisionError: bug" in run.reason
     assert backend.commands[-1][1] == 0.0

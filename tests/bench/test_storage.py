@@ -6,7 +6,8 @@ import os
 import pytest
 
 from bench.run import acquire
-from bench.storage import load_run, write_json_atomic
+from bench.storage import load_run
+from fem.records import write_json_atomic
 
 
 @pytest.fixture
@@ -17,7 +18,8 @@ def run_path(config, tmp_path):
 def test_killed_run_is_reported_incomplete(run_path):
     n_whole = len(load_run(run_path).samples)
     meta = json.loads((run_path / "run.json").read_text())
-    meta.update(status="running", pid=2**22 + 12345)  # above Linux's pid_max: never alive
+    meta["status"] = "running"
+    meta["process"]["pid"] = 2**22 + 12345  # above Linux's pid_max: never alive
     write_json_atomic(run_path / "run.json", meta)
     with open(run_path / "samples.csv", "a") as f:
         f.write("999,99.9,1,step,0.5")  # a row cut in the middle, as a kill leaves it
@@ -30,10 +32,20 @@ def test_killed_run_is_reported_incomplete(run_path):
 
 def test_live_run_is_reported_running(run_path):
     meta = json.loads((run_path / "run.json").read_text())
-    meta.update(status="running", pid=os.getpid())
+    meta["status"] = "running"  # recorded by this very process (the pytest run)
+    assert meta["process"]["pid"] == os.getpid()
     write_json_atomic(run_path / "run.json", meta)
     run = load_run(run_path)
     assert run.status == "running" and not run.complete
+
+
+def test_reused_pid_does_not_look_alive(run_path):
+    # A live pid with another start time is another process: the recorder is dead (issue 12).
+    meta = json.loads((run_path / "run.json").read_text())
+    meta["status"] = "running"
+    meta["process"]["started_unix_s"] -= 3600.0
+    write_json_atomic(run_path / "run.json", meta)
+    assert load_run(run_path).status == "incomplete"
 
 
 def test_not_a_run_folder(tmp_path):

@@ -1,11 +1,19 @@
 """The bench subcommands of `mkm`: output contract and one-line errors."""
 
+import tomllib
 from pathlib import Path
 
 import pytest
 
+from bench.config import load_config, parse_config
 from bench.storage import load_run
 from mkm.cli import main
+
+
+@pytest.fixture(autouse=True)
+def _bench_state(tmp_path, monkeypatch):
+    """Bench markers (bench.unvented) of these runs go to the test's own folder."""
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
 
 
 def test_acquire_prints_the_run_folder_last(tmp_path, capsys):
@@ -50,12 +58,54 @@ def test_ni_without_driver_is_one_clear_line(tmp_path, capsys):
     assert list(tmp_path.iterdir()) == []  # nothing was recorded
 
 
-def test_calibrate_loadcell_from_given_volts(capsys):
-    assert main(["calibrate-loadcell", "--masses", "0,10", "--volts", "0.0,0.5"]) == 0
-    # 10 kg = 98.0665 N over 0.5 V
-    assert "sensitivity_N_per_V = 196.1330" in capsys.readouterr().out
+def test_calibrate_loadcell_prints_the_toml_block(capsys):
+    assert main(["calibrate-loadcell", "--masses", "0,10", "--volts", "0.01,0.51"]) == 0
+    captured = capsys.readouterr()
+    # stdout is the [loadcell] block alone: 10 kg = 98.0665 N over 0.5 V, offset 0.01 V
+    block = tomllib.loads(captured.out)["loadcell"]
+    assert block["sensitivity_N_per_V"] == pytest.approx(196.133, rel=1e-6)
+    assert block["offset_V"] == pytest.approx(0.01, abs=1e-9)
+    assert block["channel"] == "ai0" and block["capacity_N"] == 1961.33
+    # the fit goes to stderr, for the operator
+    assert "R^2 1.000000" in captured.err and '"n_points": 2' in captured.err
+    # pasted into a config, it is a valid [loadcell] section
+    text = load_config().text
+    head, _, rest = text.partition("[loadcell]")
+    rest = rest[rest.index("[regulator]"):]
+    config = parse_config(head + captured.out + "\n" + rest)
+    assert config.loadcell.sensitivity_N_per_V == pytest.approx(196.133, rel=1e-6)
 
 
 def test_check_prints_the_plan(capsys):
     assert main(["check", "--pressures", "1,2"]) == 0
     assert "0,up,0,1\n1,up,0,2\n2,down,0,1" in capsys.readouterr().out
+
+
+def test_aborted_run_report_states_steps_planned_and_done(tmp_path):
+    # Issue 10: the writer stored a count, the reader expected a list, so every aborted run's
+    # report said "of an unrecorded number planned". Interlock at 20 % of the 1961 N cell
+    # (392 N): the prototype reaches it on the way to 2.5 bar, after the first steps.
+    from bench.run import acquire
+    from mkm.report import build_report
+
+    config = load_config(pressures_bar=[0.5, 1.0, 2.5]).replace(
+        sequence={"preconditioning_cycles": 0}, safety={"force_limit_fraction": 0.2})
+    result = acquire(config, out_root=tmp_path / "runs")
+    run = load_run(result.path)
+    assert result.status == "aborted" and run.meta.n_steps == 5
+    done = run.meta.steps_done
+    assert done == len(run.steps) == 2  # 0.5 and 1.0 bar held; 2.5 bar tripped on its way
+    html = build_report([result.path], ["eq2"], out_dir=tmp_path / "report",
+                        cache_dir=None, tolerance=None, surrogate_section=False
+                        ).read_text(encoding="utf-8")
+    assert f"{done} settled step(s) of 5" in html
+    assert "unrecorded" not in html
+
+
+def test_bad_out_is_one_line_before_the_device_opens(tmp_path, capsys):
+    a_file = tmp_path / "file.txt"
+    a_file.write_text("x")
+    assert main(["acquire", "--out", str(a_file), "--no-progress"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"--out {a_file} is a file" in err
+    assert not (tmp_path / "mkm-state").exists()  # no bench was opened

@@ -1,0 +1,99 @@
+"""The run's recorder: its folder (:class:`bench.storage.RunWriter`) and :class:`RunMeta`, kept
+true while the run goes (pymeasure's recorder, beside the worker and the procedure).
+
+run.json is rewritten at start, after the tare and at the end; samples, steps and commands are
+appended as they happen. :meth:`Recorder.finish` writes the outcome and syncs every file; it
+never raises, so a full disk cannot hide the outcome of the vent: it returns what went wrong.
+"""
+
+from __future__ import annotations
+
+import socket
+from pathlib import Path
+
+from bench.backend import DeviceInfo
+from bench.config import BenchConfig
+from bench.storage import (
+    CommandRecord,
+    Gap,
+    MuscleMeta,
+    ProcessIdentity,
+    RunMeta,
+    RunStatus,
+    RunWriter,
+    Sample,
+    StepRecord,
+)
+from fem.records import provenance
+
+
+class Recorder:
+    """Creates the run folder under ``out_root`` and records into it."""
+
+    def __init__(self, out_root: str | Path, config: BenchConfig, info: DeviceInfo,
+                 n_steps: int, estimated_duration_s: tuple[float, float],
+                 unvented_before: list[dict] | None = None):
+        self.writer = RunWriter(out_root, config.muscle.id, config.text)
+        m = config.muscle
+        prov = provenance()
+        settings = config.as_dict()
+        try:
+            process = ProcessIdentity.current()
+        except Exception:  # psutil cannot read this process (sandbox): the pid alone then
+            import os
+
+            process = ProcessIdentity(os.getpid(), socket.gethostname())
+        self.meta = RunMeta(
+            muscle=MuscleMeta(m.id, m.D0_mm, m.t0_mm, m.L0_mm, m.eps),
+            hardware=info.as_dict(),
+            calibration={"loadcell": settings["loadcell"], "regulator": settings["regulator"],
+                         "safety": settings["safety"]},
+            sequence={**settings["sequence"], "settle": settings["settle"],
+                      "force_limit_N": config.force_limit_N, "n_steps": n_steps,
+                      "estimated_duration_s": list(estimated_duration_s)},
+            config_source=config.source, config_overrides=config.overrides,
+            command=prov["command"], provenance=prov, started_utc=prov["date_utc"],
+            process=process, unvented_before=list(unvented_before or []))
+        self.save()
+
+    @property
+    def path(self) -> Path:
+        return self.writer.path
+
+    def save(self) -> None:
+        self.writer.write_meta(self.meta)
+
+    def samples(self, rows: list[Sample]) -> None:
+        self.writer.append_samples(rows)
+        self.meta.counters["samples"] += len(rows)
+
+    def step(self, record: StepRecord) -> None:
+        self.writer.append_step(record)
+        self.meta.steps_done += 1
+
+    def command(self, record: CommandRecord) -> None:
+        self.writer.append_command(record)
+
+    def gap(self, gap: Gap) -> None:
+        self.meta.gaps.append(gap)
+        self.meta.lost_samples += gap.lost_samples
+
+    def tare(self, tare: dict) -> None:
+        self.meta.tare = tare
+        self.save()
+
+    def finish(self, status: RunStatus, reason: str) -> list[str]:
+        """Record the outcome, sync and close every file; return the problems met (never
+        raises: the caller must still be able to say where the run is)."""
+        self.meta.status, self.meta.reason = status, reason
+        self.meta.ended_utc = provenance()["date_utc"]
+        problems = []
+        try:
+            self.save()
+        except OSError as exc:
+            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
+        try:
+            self.writer.close()
+        except OSError as exc:
+            problems.append(f"the run's files could not all be synced ({exc})")
+        return problems

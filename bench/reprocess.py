@@ -1,0 +1,89 @@
+"""Recompute a run's forces from its raw volts with another load-cell calibration.
+
+``samples.csv`` keeps the raw ``loadcell_V`` of every sample, so a run recorded with a wrong or
+outdated calibration is not lost: :func:`reprocess` writes a new run folder in which the tare
+offset is the mean of the run's own tare samples again (checked by
+:func:`bench.sequence.validate_tare` with the new settings), every ``force_N`` is
+``(loadcell_V - offset) x sensitivity`` with the new ``[loadcell]`` and ``[safety]`` sections,
+and every step's hold average is taken again over the same hold window (the samples after
+``start_s + settle_s`` up to ``end_s``). The samples are streamed, so memory does not grow with
+the run. ``run.json`` gets ``reprocessed_from``: the source folder, the SHA-256 of its run.json
+and samples.csv, and the calibration it had.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from pathlib import Path
+
+import numpy as np
+
+from bench.config import BenchConfig
+from bench.sequence import validate_tare
+from bench.storage import CommandRecord, RunWriter, Sample, StepRecord, iter_samples, load_run
+from fem.records import file_sha256, provenance
+
+
+def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | None = None
+              ) -> Path:
+    """Write a copy of the run ``run_dir`` recalibrated with ``config.loadcell``; return it."""
+    source = load_run(run_dir)
+    cell = config.loadcell
+    out_root = Path(out_root) if out_root is not None else source.path.parent
+    samples_csv = source.path / "samples.csv"
+    # pass 1: the tare, from the run's own samples at 0 bar
+    tare_V = []
+    for chunk in iter_samples(source.path):
+        tare_V.extend(chunk.loc[chunk["phase"] == "tare", "loadcell_V"].tolist())
+    tare = validate_tare(tare_V, config) if tare_V else None
+    offset_V = tare["offset_V"] if tare else cell.offset_V
+    steps = source.steps
+    windows = {int(s.step): (float(s.start_s) + float(s.settle_s), float(s.end_s))
+               for s in steps.itertuples()}
+    sums = {k: [0, 0.0, 0.0] for k in windows}  # n, sum, sum of squares of the hold forces
+    writer = RunWriter(out_root, source.meta.muscle.id, config.text)
+    # pass 2: every sample again, forces from the raw volts
+    for chunk in iter_samples(source.path):
+        during_tare = (chunk["phase"] == "tare").to_numpy()
+        volts = chunk["loadcell_V"].to_numpy(float)
+        force = (volts - np.where(during_tare, cell.offset_V, offset_V)) * \
+            cell.sensitivity_N_per_V
+        chunk = chunk.assign(force_N=force)
+        writer.append_samples([Sample(*row) for row in chunk.itertuples(index=False)])
+        in_step = chunk[chunk["phase"] == "step"]
+        for k, group in in_step.groupby("step"):
+            if int(k) not in windows:
+                continue
+            start, end = windows[int(k)]
+            t = group["time_s"].to_numpy(float)
+            f = group["force_N"].to_numpy(float)[(t > start + 1e-9) & (t <= end + 1e-9)]
+            acc = sums[int(k)]
+            acc[0] += f.size
+            acc[1] += float(f.sum())
+            acc[2] += float((f**2).sum())
+    for s in steps.itertuples():
+        n, total, squares = sums[int(s.step)]
+        mean = total / n if n else math.nan
+        std = math.sqrt(max(squares - total * mean, 0.0) / (n - 1)) if n > 1 else math.nan
+        writer.append_step(StepRecord(int(s.step), s.direction, int(s.repeat),
+                                      float(s.set_pressure_bar), float(s.pressure_bar_mean),
+                                      mean, std, int(n), bool(s.settled), float(s.settle_s),
+                                      float(s.start_s), float(s.end_s)))
+    for c in source.commands.itertuples(index=False):
+        writer.append_command(CommandRecord(*c))
+    meta = dataclasses.replace(source.meta)
+    prov = provenance()
+    settings = config.as_dict()
+    meta.reprocessed_from = {
+        "path": str(source.path), "run_json_sha256": file_sha256(source.path / "run.json"),
+        "samples_sha256": file_sha256(samples_csv),
+        "calibration": source.meta.calibration, "tare": source.meta.tare,
+        "config_source": config.source, "date_utc": prov["date_utc"]}
+    meta.calibration = {**meta.calibration, "loadcell": settings["loadcell"],
+                        "safety": settings["safety"]}
+    meta.tare = {**tare, "duration_s": source.meta.sequence.get("tare_s")} if tare else None
+    meta.provenance, meta.command = prov, prov["command"]
+    writer.write_meta(meta)
+    writer.close()
+    return writer.path

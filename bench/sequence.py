@@ -1,0 +1,194 @@
+"""The run's procedure: tare at 0 bar, pre-conditioning cycles, the pressure staircase.
+
+At each step the pressure is set, the reading is judged steady over the last ``settle.window_s``
+once per second of data (:func:`settle_reached`), then held ``settle.hold_s`` and averaged. Only
+a window's worth of samples is kept while waiting and running sums while holding, so a step
+costs time and memory linear in its length, whatever ``settle.timeout_s``.
+
+The tare must pass :func:`validate_tare` before any pressure is commanded: enough samples, a
+finite mean, a spread and a shift from the configured offset within ``[safety]`` limits.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from dataclasses import dataclass
+
+import numpy as np
+
+from bench.backend import BenchError
+from bench.config import BenchConfig
+from bench.storage import StepRecord
+from bench.worker import Acquisition
+
+
+@dataclass(frozen=True)
+class Step:
+    """One planned pressure step of the staircase."""
+
+    step: int
+    direction: str  # "up" | "down"
+    repeat: int
+    set_pressure_bar: float
+
+
+def plan_steps(config: BenchConfig) -> list[Step]:
+    """The staircase: pressures up, then (optionally) down without repeating the top; x repeats."""
+    seq = config.sequence
+    up = list(seq.pressures_bar)
+    down = up[-2::-1] if seq.down_sweep else []
+    steps = []
+    for repeat in range(seq.repeats):
+        for direction, pressures in (("up", up), ("down", down)):
+            for p in pressures:
+                steps.append(Step(len(steps), direction, repeat, p))
+    return steps
+
+
+def estimate_duration_s(config: BenchConfig) -> tuple[float, float]:
+    """Shortest and longest run time [s]: every step settling at min dwell, or timing out."""
+    seq, st = config.sequence, config.settle
+    fixed = seq.tare_s + 2 * seq.preconditioning_cycles * seq.preconditioning_hold_s
+    n = len(plan_steps(config))
+    return fixed + n * (st.min_dwell_s + st.hold_s), fixed + n * (st.timeout_s + st.hold_s)
+
+
+def settle_reached(t_s: np.ndarray, force_N: np.ndarray, pressure_bar: np.ndarray,
+                   set_pressure_bar: float, config: BenchConfig) -> bool:
+    """Whether the last ``settle.window_s`` of a step is steady.
+
+    Steady means: the force's least-squares slope and its standard deviation are below the
+    thresholds and, when the pressure is measured (``pressure_bar`` not NaN), the window's mean
+    pressure is within tolerance of the set pressure.
+    """
+    st = config.settle
+    window = t_s >= t_s[-1] - st.window_s
+    t, f, p = t_s[window], force_N[window], pressure_bar[window]
+    if t.size < 3 or t[-1] - t[0] < 0.5 * st.window_s:
+        return False
+    slope = np.polyfit(t - t[0], f, 1)[0]
+    if abs(slope) > st.max_force_slope_N_per_s or np.std(f) > st.max_force_std_N:
+        return False
+    measured = p[np.isfinite(p)]
+    return measured.size == 0 or abs(measured.mean() - set_pressure_bar) <= \
+        st.pressure_tolerance_bar
+
+
+class TareInvalid(BenchError):
+    """The tare at 0 bar is not usable: the run must not start."""
+
+
+def validate_tare(cell_V, config: BenchConfig) -> dict:
+    """The tare of load-cell volts ``cell_V`` read at 0 bar, or :class:`TareInvalid` saying why.
+
+    Returns ``offset_V`` (mean), ``std_V``, ``n``, ``std_N`` and ``shift_N`` (offset minus the
+    configured ``loadcell.offset_V``, in newtons).
+    """
+    cell, safety = config.loadcell, config.safety
+    v = np.asarray(cell_V, dtype=float)
+    if v.size < safety.tare_min_samples:
+        raise TareInvalid(f"tare invalid: {v.size} samples, expected at least "
+                          f"safety.tare_min_samples={safety.tare_min_samples}")
+    if not np.isfinite(v).all():
+        raise TareInvalid(f"tare invalid: {int((~np.isfinite(v)).sum())} of {v.size} load-cell "
+                          "samples are not numbers (a broken input)")
+    offset, std = float(v.mean()), float(v.std(ddof=1))
+    std_N = std * cell.sensitivity_N_per_V
+    shift_N = (offset - cell.offset_V) * cell.sensitivity_N_per_V
+    if std_N > safety.tare_max_std_N:
+        raise TareInvalid(f"tare invalid: the load cell spreads {std_N:.2f} N rms at 0 bar, "
+                          f"above safety.tare_max_std_N={safety.tare_max_std_N:g} (a loose "
+                          "wire, vibration, or a load on the cell)")
+    if abs(shift_N) > safety.tare_max_shift_N:
+        raise TareInvalid(f"tare invalid: the offset is {shift_N:+.1f} N from loadcell.offset_V"
+                          f"={cell.offset_V:g} V, beyond safety.tare_max_shift_N="
+                          f"{safety.tare_max_shift_N:g} (a load on the cell, or the wrong "
+                          "calibration)")
+    return {"offset_V": offset, "std_V": std, "n": int(v.size), "std_N": std_N,
+            "shift_N": shift_N, "config_offset_V": cell.offset_V}
+
+
+class _Hold:
+    """Running mean and spread (Welford) of the hold samples."""
+
+    def __init__(self):
+        self.n, self.mean, self.m2 = 0, 0.0, 0.0
+        self.p_sum, self.p_n = 0.0, 0
+
+    def add(self, force_N: float, pressure_bar: float) -> None:
+        self.n += 1
+        delta = force_N - self.mean
+        self.mean += delta / self.n
+        self.m2 += delta * (force_N - self.mean)
+        if math.isfinite(pressure_bar):
+            self.p_sum += pressure_bar
+            self.p_n += 1
+
+    @property
+    def std(self) -> float:
+        return math.sqrt(self.m2 / (self.n - 1)) if self.n > 1 else math.nan
+
+    @property
+    def pressure_mean(self) -> float:
+        return self.p_sum / self.p_n if self.p_n else math.nan
+
+
+class Staircase:
+    """The procedure of one run: tare, pre-conditioning, steps, through ``acquisition``."""
+
+    def __init__(self, config: BenchConfig, acquisition: Acquisition, operator=None,
+                 on_step=lambda step: None):
+        self.config = config
+        self.acq = acquisition
+        self.operator = operator
+        self.on_step = on_step
+        self.steps = plan_steps(config)
+
+    def run(self) -> None:
+        self.tare()
+        seq = self.config.sequence
+        top = max(seq.pressures_bar)
+        for _ in range(seq.preconditioning_cycles):
+            for pressure in (top, 0.0):
+                self.acq.set_pressure(pressure, "precondition", self.operator)
+                self.acq.acquire_for(seq.preconditioning_hold_s, "precondition", -1, pressure)
+        for step in self.steps:
+            self.run_step(step)
+
+    def tare(self) -> None:
+        self.acq.set_pressure(0.0, "vent", self.operator)
+        volts: list[float] = []
+        self.acq.acquire_for(self.config.sequence.tare_s, "tare", -1, 0.0, volts)
+        tare = validate_tare(volts, self.config)
+        self.acq.tare_offset_V = tare["offset_V"]
+        self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
+
+    def run_step(self, step: Step) -> None:
+        acq, st = self.acq, self.config.settle
+        acq.set_pressure(step.set_pressure_bar, "step", self.operator)
+        rate = self.config.daq.sample_rate_hz
+        window: deque = deque(maxlen=int(math.ceil(st.window_s * rate)) + 2)
+        hold = _Hold()
+        start_s = acq.next_index / rate
+        settle_s, settled, next_check, elapsed = None, False, st.min_dwell_s, 0.0
+        while True:
+            for row in acq.read_block("step", step.step, step.set_pressure_bar):
+                elapsed = row.time_s - start_s
+                if settle_s is None:
+                    window.append((elapsed, row.force_N, row.pressure_bar))
+                elif elapsed > settle_s:
+                    hold.add(row.force_N, row.pressure_bar)
+            if settle_s is None and elapsed >= next_check:
+                next_check = elapsed + 1.0  # judge once per second of data: cheap and enough
+                t, f, p = (np.array(c) for c in zip(*window, strict=True))
+                settled = settle_reached(t, f, p, step.set_pressure_bar, self.config)
+                if settled or elapsed >= st.timeout_s:
+                    settle_s = elapsed
+            if settle_s is not None and elapsed - settle_s >= st.hold_s:
+                break
+        acq.recorder.step(StepRecord(
+            step.step, step.direction, step.repeat, step.set_pressure_bar, hold.pressure_mean,
+            hold.mean if hold.n else math.nan, hold.std, hold.n, bool(settled), float(settle_s),
+            start_s, start_s + elapsed))
+        self.on_step(step)

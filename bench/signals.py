@@ -1,0 +1,138 @@
+"""Signals that must never leave the muscle pressurised: every one of them vents at once.
+
+The USB-6001's analog output keeps its last value after the process ends, so an electronic
+regulator holds the last commanded pressure until something commands it again. While a run
+goes, :class:`StopSignals` handles:
+
+- the first ``SIGINT`` (Ctrl-C): stop at the next block boundary (a safe point);
+- a second ``SIGINT``, ``SIGTERM`` (kill, service stop), ``SIGHUP`` (terminal or SSH session
+  closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows): raise :class:`StopSignal` at once, which
+  unwinds to the run's shutdown: vent, close the device, record. The exit status is 128 + N;
+- on Windows, closing the console window, log-off and shutdown arrive as console control
+  events (``SetConsoleCtrlHandler``), not as signals: the handler turns them into ``SIGBREAK``
+  in the main thread and holds the process (Windows ends it when the handler returns, after at
+  most 5 s) until the run has vented and recorded.
+
+Only the signals this platform has are touched (``hasattr(signal, name)``), and the console
+handler is installed only when ``sys.platform == "win32"``.
+"""
+
+from __future__ import annotations
+
+import signal
+import sys
+import threading
+import time
+from collections.abc import Callable
+
+STOP_SIGNAL_NAMES = ("SIGINT", "SIGTERM", "SIGHUP", "SIGBREAK")
+STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(signal, n))
+
+# Windows console control events (wincon.h) and how long Windows waits for the handler.
+CTRL_C_EVENT, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT = 0, 1, 2
+CTRL_LOGOFF_EVENT, CTRL_SHUTDOWN_EVENT = 5, 6
+CONSOLE_EVENTS = {CTRL_CLOSE_EVENT: "console closed", CTRL_LOGOFF_EVENT: "log-off",
+                  CTRL_SHUTDOWN_EVENT: "system shutdown"}
+CONSOLE_HOLD_S = 4.5  # Windows kills the process 5 s after CTRL_CLOSE_EVENT
+
+
+class StopSignal(BaseException):
+    """A signal that stops the run at once (a ``BaseException``: nothing may swallow it)."""
+
+    def __init__(self, signum: int, detail: str = ""):
+        self.signum = int(signum)
+        self.name = signal.Signals(signum).name
+        self.detail = detail
+        super().__init__(f"{self.name} ({detail})" if detail else self.name)
+
+    @property
+    def exit_code(self) -> int:
+        return 128 + self.signum
+
+
+class StopSignals:
+    """Install the stop handlers for the duration of a ``with`` block (main thread only).
+
+    ``stop_requested_at`` is the ``time.monotonic()`` of the first Ctrl-C (None before), and
+    ``signal_at`` that of the last stop signal received. :meth:`hold` ignores further signals
+    while the shutdown vents and records; :meth:`done` releases a held Windows console handler.
+    """
+
+    def __init__(self, on_first_interrupt: Callable[[], None] | None = None,
+                 interrupt_main: Callable[[int], None] | None = None):
+        self.on_first_interrupt = on_first_interrupt
+        self.stop_requested_at: float | None = None
+        self.signal_at: float | None = None
+        self.console_event: str | None = None
+        self._previous: dict[int, object] = {}
+        self._finished = threading.Event()
+        self._console_callback = None
+        self._interrupt_main = interrupt_main
+        self.active = False
+
+    def __enter__(self) -> StopSignals:
+        if threading.current_thread() is not threading.main_thread():
+            return self  # signal handlers can only be installed in the main thread
+        for signum in STOP_SIGNALS:
+            self._previous[signum] = signal.signal(signum, self._handle)
+        if sys.platform == "win32":
+            self._install_console_handler()
+        self.active = True
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.done()
+        for signum, handler in self._previous.items():
+            signal.signal(signum, handler)
+        self._previous.clear()
+        if self._console_callback is not None:
+            import ctypes
+
+            ctypes.windll.kernel32.SetConsoleCtrlHandler(self._console_callback, False)
+            self._console_callback = None
+        self.active = False
+
+    def _handle(self, signum, frame) -> None:
+        now = time.monotonic()
+        if signum == signal.SIGINT and self.stop_requested_at is None:
+            self.stop_requested_at = now
+            if self.on_first_interrupt is not None:
+                self.on_first_interrupt()
+            return
+        self.signal_at = now
+        detail = "second Ctrl-C" if signum == signal.SIGINT else (self.console_event or "")
+        raise StopSignal(signum, detail)
+
+    def hold(self) -> None:
+        """Ignore every stop signal from now on (the shutdown must not be cut)."""
+        for signum in self._previous:
+            signal.signal(signum, signal.SIG_IGN)
+
+    def done(self) -> None:
+        self._finished.set()
+
+    # Windows console control events ----------------------------------------------------------
+
+    def on_console_event(self, event: int) -> bool:
+        """Handle one console control event; True means handled (Windows then ends the process
+        when this returns, so it returns only once the run has vented and recorded)."""
+        if event not in CONSOLE_EVENTS:
+            return False  # Ctrl-C and Ctrl-Break: Python raises SIGINT and SIGBREAK itself
+        self.console_event = CONSOLE_EVENTS[event]
+        interrupt = self._interrupt_main
+        if interrupt is None:
+            import _thread
+
+            interrupt = _thread.interrupt_main
+        interrupt(getattr(signal, "SIGBREAK", signal.SIGTERM))
+        self._finished.wait(CONSOLE_HOLD_S)
+        return True
+
+    def _install_console_handler(self) -> None:
+        import ctypes
+        from ctypes import wintypes
+
+        handler_type = ctypes.WINFUNCTYPE(wintypes.BOOL, wintypes.DWORD)
+        self._console_callback = handler_type(lambda event: bool(self.on_console_event(event)))
+        if not ctypes.windll.kernel32.SetConsoleCtrlHandler(self._console_callback, True):
+            self._console_callback = None

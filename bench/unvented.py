@@ -1,0 +1,111 @@
+"""Runs that ended without venting (``kill -9``, power loss), noticed by the next command.
+
+While a run may pressurise the muscle it holds a marker file for its bench (backend and device
+name) in the user's state folder (``MKM_STATE_DIR`` or ``platformdirs.user_state_dir("mkm")``):
+the run folder, the recording process (:class:`bench.storage.ProcessIdentity`: pid, start time,
+boot time), and the last commanded pressure, rewritten at every command. A clean shutdown that
+vented removes it. Every command that opens a bench (``acquire``, ``check``, ``tare``,
+``calibrate-loadcell``, ``vent``) first looks for markers of that bench whose process is dead:
+it vents (opening the device writes the vent command) and says which run it was, when it
+started, and what pressure it left commanded.
+"""
+
+from __future__ import annotations
+
+import datetime
+import json
+import os
+import re
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+from bench.storage import ProcessIdentity
+from fem.records import write_json_atomic
+
+
+def state_dir() -> Path:
+    """Folder of the bench markers (``MKM_STATE_DIR`` overrides the platform's state folder)."""
+    if os.environ.get("MKM_STATE_DIR"):
+        return Path(os.environ["MKM_STATE_DIR"])
+    import platformdirs
+
+    return Path(platformdirs.user_state_dir("mkm", appauthor=False))
+
+
+def _folder(bench_key: str) -> Path:
+    return state_dir() / "benches" / re.sub(r"[^A-Za-z0-9._-]", "_", bench_key)
+
+
+@dataclass
+class Marker:
+    """A run that holds (or held) a bench."""
+
+    bench: str
+    run_path: str
+    started_utc: str
+    process: dict
+    last_command_bar: float = 0.0
+    last_command_utc: str = ""
+
+    def describe(self) -> str:
+        return (f"run {self.run_path} (started {self.started_utc}, pid {self.process['pid']}) "
+                f"ended without venting; its last commanded pressure was "
+                f"{self.last_command_bar:g} bar at {self.last_command_utc or self.started_utc}")
+
+
+class BenchLease:
+    """The marker of one running run; :meth:`command` records each commanded pressure."""
+
+    def __init__(self, bench_key: str, run_path: Path, started_utc: str):
+        me = ProcessIdentity.current()
+        self.marker = Marker(bench_key, str(run_path), started_utc, asdict(me))
+        folder = _folder(bench_key)
+        folder.mkdir(parents=True, exist_ok=True)
+        self.path = folder / f"{me.pid}-{int(me.started_unix_s * 1000)}.json"
+        self._write()
+
+    def _write(self) -> None:
+        write_json_atomic(self.path, asdict(self.marker))
+
+    def command(self, pressure_bar: float) -> None:
+        if pressure_bar == self.marker.last_command_bar:
+            return
+        self.marker.last_command_bar = float(pressure_bar)
+        self.marker.last_command_utc = datetime.datetime.now(datetime.UTC).isoformat(
+            timespec="seconds")
+        self._write()
+
+    def release(self) -> None:
+        self.path.unlink(missing_ok=True)
+
+
+def find_unvented(bench_key: str) -> list[tuple[Path, Marker]]:
+    """Markers of ``bench_key`` left by processes that are gone."""
+    folder = _folder(bench_key)
+    found = []
+    for path in sorted(folder.glob("*.json")) if folder.is_dir() else []:
+        try:
+            marker = Marker(**json.loads(path.read_text(encoding="utf-8")))
+            alive = ProcessIdentity(**marker.process).alive()
+        except (OSError, ValueError, TypeError, KeyError):
+            continue  # unreadable: not ours to judge (written by another version?)
+        if not alive:
+            found.append((path, marker))
+    return found
+
+
+def vent_unvented(backend, opened: bool = False) -> list[Marker]:
+    """Vent a bench left pressurised by a dead run, before anything else happens on it.
+
+    Returns the dead runs' markers (now removed) for the caller to report. ``opened``: the
+    backend is already open (its ``open`` wrote the vent); otherwise the vent is written here
+    through ``backend.write_command(0)`` and must succeed for the markers to be removed.
+    """
+    found = find_unvented(getattr(backend, "bench_key", "unknown"))
+    if not found:
+        return []
+    if not opened:
+        backend.write_command(0.0)
+    for path, _ in found:
+        path.unlink(missing_ok=True)
+    return [marker for _, marker in found]

@@ -1,0 +1,208 @@
+"""The acquisition worker: reads blocks, turns volts into samples, records them, commands the
+regulator, and trips the interlocks (pymeasure's worker, beside the procedure in
+:mod:`bench.sequence` and the recorder in :mod:`bench.recorder`).
+
+Interlocks, checked on every sample; each stops the run (:class:`Stop`, status ``aborted``)
+after commanding the vent:
+
+- force: ``|force| >= safety.force_limit_fraction x capacity``, a reading within 2 LSB of a rail
+  (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
+- pressure (electronic regulator): a non-finite measured pressure; a pressure above
+  ``regulator.max_pressure_bar + safety.pressure_tolerance_bar`` (overshoot); a pressure more
+  than the tolerance away from the command for longer than ``safety.pressure_follow_s`` (a
+  regulator that does not follow).
+
+If the interlock's own vent write fails, the reason says so and asks for a vent by hand.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+from bench.backend import Backend, BufferOverflow, ReadTimeout
+from bench.config import BenchConfig
+from bench.recorder import Recorder
+from bench.storage import CommandRecord, Gap, RunStatus, Sample
+
+RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
+
+
+class Stop(Exception):
+    """Leave the sequence at a safe point with this status and reason."""
+
+    def __init__(self, status: RunStatus, reason: str, signal_name: str | None = None,
+                 signal_number: int | None = None):
+        super().__init__(reason)
+        self.status, self.reason = status, reason
+        self.signal_name, self.signal_number = signal_name, signal_number
+
+
+class Acquisition:
+    """The acquisition loop on ``backend`` with ``config``, recording into ``recorder``.
+
+    ``stop_requested`` returns the ``time.monotonic()`` of a pending stop request (first
+    Ctrl-C) or None; ``observers`` get every block (``block(samples)``) for progress and plots.
+    ``lease`` (a :class:`bench.unvented.BenchLease`) learns every commanded pressure.
+    """
+
+    def __init__(self, config: BenchConfig, backend: Backend, recorder: Recorder,
+                 stop_requested=lambda: None, stop_time=lambda: None, lease=None,
+                 observers=()):
+        self.config = config
+        self.backend = backend
+        self.recorder = recorder
+        self.stop_requested = stop_requested
+        self.stop_time = stop_time
+        self.lease = lease
+        self.observers = list(observers)
+        self.rate_hz = config.daq.sample_rate_hz
+        self.cell = config.loadcell
+        self.electronic = config.regulator.electronic
+        self.tare_offset_V = config.loadcell.offset_V
+        self.command_bar = 0.0
+        self.manometer_bar = math.nan
+        self.next_index = 0
+        self.vented = False  # the last command written was a successful vent
+        self._pending_flags: list[str] = []
+        self._off_since_s: float | None = None  # pressure away from the command since then
+
+    # one block -------------------------------------------------------------------------------
+
+    def read_block(self, phase: str, step: int, set_bar: float) -> list[Sample]:
+        """Read one block (retrying timeouts, recovering overflows), record it, check it."""
+        daq = self.config.daq
+        timeouts = 0
+        while True:
+            try:
+                block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
+                break
+            except ReadTimeout:
+                timeouts += 1
+                self.recorder.meta.counters["read_timeouts"] += 1
+                if timeouts > daq.read_retries:
+                    raise
+                self._pending_flags.append("timeout")
+            except BufferOverflow as exc:
+                resumed = self.backend.recover()
+                lost = resumed - self.next_index
+                self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
+                                      resumed / self.rate_hz, str(exc)))
+                self._pending_flags.append("gap")
+                self.next_index = resumed
+        trips: list[str] = []
+        rows = [self._sample(block.first_index + k, volts, phase, step, set_bar, trips)
+                for k, volts in enumerate(block.volts)]
+        self.recorder.samples(rows)
+        self.next_index = block.first_index + len(block.volts)
+        for observer in self.observers:
+            observer.block(rows)
+        if trips:
+            self._trip(trips[0])
+        if self.stop_requested() is not None:
+            raise Stop(RunStatus.ABORTED, "stopped by Ctrl-C (SIGINT) at a safe point; vented",
+                       "SIGINT", 2)
+        return rows
+
+    def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
+                trips: list[str]) -> Sample:
+        reg = self.config.regulator
+        cell_V = float(volts[0])
+        monitor_V = float(volts[1]) if self.electronic else math.nan
+        pressure = float(reg.monitor_bar(monitor_V)) if self.electronic else self.manometer_bar
+        force = (cell_V - self.tare_offset_V) * self.cell.sensitivity_N_per_V
+        flags, self._pending_flags = self._pending_flags, []
+        if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
+            flags.append("nonfinite")
+        elif abs(cell_V) >= 10.0 - RAIL_MARGIN_V:
+            flags.append("clipped")
+            self.recorder.meta.counters["clipped_samples"] += 1
+        trip = self._interlock(index / self.rate_hz, force, pressure, cell_V, monitor_V, flags)
+        if trip:
+            flags.append("interlock")
+            trips.append(trip)
+        return Sample(index, index / self.rate_hz, step, phase, set_bar,
+                      self.command_bar if self.electronic else math.nan, pressure, cell_V,
+                      monitor_V, force, "|".join(flags))
+
+    def _interlock(self, t_s, force, pressure, cell_V, monitor_V, flags) -> str | None:
+        """The interlock this sample trips (its message), or None."""
+        limit = self.config.force_limit_N
+        safety, reg = self.config.safety, self.config.regulator
+        if "nonfinite" in flags:
+            what = "force" if not math.isfinite(force) else "pressure"
+            return (f"{what} interlock: the {what} reading is not a number (load cell "
+                    f"{cell_V!r} V, monitor {monitor_V!r} V) at {t_s:g} s: a broken input or "
+                    "calibration")
+        if abs(force) >= limit or "clipped" in flags:
+            return (f"force interlock: {force:.1f} N reached the limit {limit:.1f} N "
+                    f"({safety.force_limit_fraction:g} x capacity {self.cell.capacity_N:g} N)")
+        if not self.electronic:
+            return None
+        if pressure > reg.max_pressure_bar + safety.pressure_tolerance_bar:
+            return (f"pressure interlock: {pressure:.3f} bar measured at {t_s:g} s, above "
+                    f"max_pressure_bar {reg.max_pressure_bar:g} + "
+                    f"{safety.pressure_tolerance_bar:g} bar (regulator overshoot)")
+        if abs(pressure - self.command_bar) <= safety.pressure_tolerance_bar:
+            self._off_since_s = None
+        elif self._off_since_s is None:
+            self._off_since_s = t_s
+        elif t_s - self._off_since_s > safety.pressure_follow_s:
+            return (f"pressure interlock: the regulator does not follow: {pressure:.3f} bar "
+                    f"measured against {self.command_bar:g} bar commanded for more than "
+                    f"{safety.pressure_follow_s:g} s (tolerance "
+                    f"{safety.pressure_tolerance_bar:g} bar)")
+        return None
+
+    def _trip(self, message: str) -> None:
+        try:
+            self.command(0.0, "interlock vent")
+        except Exception as exc:
+            raise Stop(RunStatus.ABORTED, f"{message}; the interlock's vent command failed "
+                       f"({type(exc).__name__}: {exc}): VENT BY HAND") from exc
+        raise Stop(RunStatus.ABORTED, f"{message}; vented")
+
+    # commands --------------------------------------------------------------------------------
+
+    def set_pressure(self, pressure_bar: float, purpose: str, operator=None) -> None:
+        if self.electronic:
+            self.command(pressure_bar, purpose)
+            return
+        self.manometer_bar = operator.set_pressure(pressure_bar)
+        # Samples acquired while the operator was busy belong to no step.
+        while self.backend.available() > 0:
+            self.read_block("operator", -1, pressure_bar)
+
+    def command(self, pressure_bar: float, purpose: str) -> None:
+        """Write the clamped pressure command and log it (also when the write fails)."""
+        reg = self.config.regulator
+        clamped = min(max(pressure_bar, 0.0), reg.max_pressure_bar)
+        volts = reg.command_volts(clamped)
+        t_s = self.next_index / self.rate_hz
+        ok = False
+        try:
+            self.backend.write_command(volts)
+            ok = True
+            self.command_bar = clamped
+            self.vented = clamped == 0.0
+            self._off_since_s = None  # the regulator gets pressure_follow_s for the new command
+            meta = self.recorder.meta
+            stopped_at = self.stop_time()
+            if clamped == 0.0 and stopped_at is not None and meta.stop_to_vent_s is None:
+                meta.stop_to_vent_s = time.monotonic() - stopped_at
+                meta.vented_at_unix_s = time.time()
+        finally:
+            self.recorder.meta.last_command_bar = self.command_bar
+            self.recorder.command(CommandRecord(t_s, self.next_index, clamped, volts, ok,
+                                                purpose))
+            if ok and self.lease is not None:
+                self.lease.command(clamped)
+
+    def acquire_for(self, duration_s: float, phase: str, step: int, set_bar: float,
+                    cell_volts: list | None = None) -> None:
+        """Read for ``duration_s`` of sample time; collect the load-cell volts if asked."""
+        end_index = self.next_index + int(round(duration_s * self.rate_hz))
+        while self.next_index < end_index:
+            for row in self.read_block(phase, step, set_bar):
+                if cell_volts is not None:
+                    cell_volts.append(row.loadcell_V)
