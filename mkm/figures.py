@@ -1,9 +1,11 @@
-"""The figures of the validation report and of the speed-accuracy study (matplotlib, Agg).
+"""The figures of the validation report and of the speed-accuracy study (matplotlib).
 
 Each function takes tidy pandas data and returns a :class:`matplotlib.figure.Figure` built without
-pyplot (no global state, no display needed). Conventions shared by every figure: forces in N,
-pressures in bar, errors in % (the paper's Equation 7); a point where a model is invalid or out
-of its domain is never drawn as a number but as a grey cross on the axis, with a legend entry.
+pyplot (no global state, no backend or display needed). Conventions shared by every figure:
+forces in N, pressures in bar, errors in % (the paper's Equation 7), models named as the paper
+does (the caller's ``names``) and coloured by registry entry (:func:`model_colours`); a point
+where a model is invalid or out of its domain is never drawn as a number but as a cross in a
+strip above the axes, with a legend entry.
 """
 
 from __future__ import annotations
@@ -14,90 +16,176 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
-MODEL_COLOURS = {"eq2": "tab:blue", "eq2-inner": "tab:blue", "eq2-braid": "tab:cyan",
-                 "thickwall": "tab:orange", "axisym": "tab:green", "axisym-coarse": "yellowgreen",
-                 "axisym-medium": "tab:green", "axisym-fine": "darkgreen",
+# One colour per registry entry (mkm.registry.ENTRIES), the same in every figure.
+MODEL_COLOURS = {"eq2": "tab:blue", "thickwall": "tab:orange", "axisym": "tab:green",
                  "surrogate": "tab:red", "auto": "tab:purple"}
-INVALID_STYLE = {"marker": "x", "color": "0.45", "linestyle": "none", "markersize": 7,
-                 "clip_on": False}
+MEASURED = {"color": "black", "capsize": 3, "zorder": 5}
+RUN_MARKERS = ("o", "s", "^", "D", "v", "P")
+RUN_LINESTYLES = ("-", "--", ":", "-.")
+# A point where a model gave no valid number is drawn as a cross in the model's colour in a
+# strip ABOVE the axes (never on the force axis, where it would read as a measured 0 N).
+INVALID_STYLE = {"marker": "x", "linestyle": "none", "markersize": 6, "clip_on": False}
+INVALID_Y = 1.025  # axes fraction
 
 
-def distinct_colours(labels) -> dict[str, str]:
-    """One colour per label: the model's own, or the next unused default where two labels of the
-    same model (``eq2``, ``eq2:theta0_deg=50``) would share it."""
+def model_colours(specs) -> dict[str, str]:
+    """``spec.text -> colour`` for :class:`mkm.registry.Spec` objects: the registry entry's
+    colour, or the next unused default where two specs of one entry (``eq2``,
+    ``eq2:theta0_deg=50``) would share it."""
     out: dict[str, str] = {}
-    spare = (f"C{k}" for k in range(4, 100))
-    for i, label in enumerate(labels):
-        c = colour(label, i)
+    spare = (f"C{k}" for k in range(5, 100))
+    for spec in specs:
+        c = MODEL_COLOURS.get(spec.name) or next(spare)
         while c in out.values():
             c = next(spare)
-        out[label] = c
+        out[spec.text] = c
     return out
 
 
-def colour(label: str, index: int = 0) -> str:
-    """The model's colour in every figure (``axisym:mesh=coarse`` and ``axisym-coarse`` are
-    axisym); unknown labels cycle through matplotlib's defaults."""
-    for key in (label, label.split(":")[0], label.split("-")[0]):
-        if key in MODEL_COLOURS:
-            return MODEL_COLOURS[key]
-    return f"C{index % 10}"
+def _mark_invalid(ax, pressures, colour: str) -> bool:
+    """Crosses above the axes at the pressures where a model gave no valid number."""
+    pressures = np.asarray(pressures, dtype=float)
+    if pressures.size:
+        ax.plot(pressures, np.full(pressures.size, INVALID_Y),
+                transform=ax.get_xaxis_transform(), color=colour, **INVALID_STYLE)
+    return bool(pressures.size)
 
 
-def _mark_invalid(ax, pressures) -> None:
-    """Grey crosses on the bottom edge at the pressures where a model gave no valid number."""
-    if len(pressures):
-        ax.plot(pressures, np.zeros(len(pressures)), transform=ax.get_xaxis_transform(),
-                **INVALID_STYLE)
+def _widths(models) -> dict[str, float]:
+    """Line widths that shrink along the model list, so a model drawn over another one that
+    agrees with it (the surrogate over the FE model it learnt) leaves it visible."""
+    models = list(models)
+    return {m: 3.6 - 2.4 * i / max(len(models) - 1, 1) for i, m in enumerate(models)}
 
 
-def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str) -> Figure:
-    """Force against pressure (measured up and down sweeps, every model) and Err% per pressure.
+def _invalid_handle() -> Line2D:
+    return Line2D([], [], color="0.3", **INVALID_STYLE)
 
-    ``steps``: ``pressure_bar_mean, force_N_mean, force_N_std, direction``. ``predictions``: one
-    row per model and step with ``model, pressure_bar, direction, force_N, valid, err_pct``.
-    """
-    fig = Figure(figsize=(11, 4.6), layout="constrained")
-    ax_f, ax_e = fig.subplots(1, 2)
-    for direction, marker, face in (("up", "o", "black"), ("down", "s", "white")):
+
+INVALID_LABEL = "x above the axes: no valid number (invalid or out of domain)"
+
+
+def _measured(ax, steps: pd.DataFrame, label: str, marker_up="o", marker_down="s") -> None:
+    """Measured mean force ± std per step: filled up sweep, open down sweep."""
+    for direction, marker, face in (("up", marker_up, "black"), ("down", marker_down, "white")):
         sweep = steps[steps["direction"] == direction].sort_values("pressure_bar_mean")
         if len(sweep):
-            ax_f.errorbar(sweep["pressure_bar_mean"], sweep["force_N_mean"],
-                          yerr=sweep["force_N_std"], fmt=marker, color="black",
-                          markerfacecolor=face, capsize=3, zorder=5,
-                          label=f"measured, {direction} sweep (mean ± std)")
-    any_invalid = False
-    colours = distinct_colours(dict.fromkeys(predictions["model"]))
+            ax.errorbar(sweep["pressure_bar_mean"], sweep["force_N_mean"],
+                        yerr=sweep["force_N_std"], fmt=marker, markerfacecolor=face,
+                        label=f"{label}, {direction} (mean ± std)", **MEASURED)
+
+
+def _model_curve(ax, rows: pd.DataFrame, colour: str, label: str | None,
+                 linestyle: str = "-", linewidth: float = 1.5) -> bool:
+    """One model's forces against pressure, its ±2 std band where it has one; returns whether
+    a point was invalid."""
+    curve = rows.drop_duplicates("pressure_bar").sort_values("pressure_bar")
+    force = curve["force_N"].where(curve["valid"])
+    ax.plot(curve["pressure_bar"], force, linestyle, color=colour, label=label,
+            linewidth=linewidth)
+    if "force_std_N" in curve and curve["force_std_N"].notna().any():
+        std = curve["force_std_N"].where(curve["valid"])
+        ax.fill_between(curve["pressure_bar"], force - 2 * std, force + 2 * std, color=colour,
+                        alpha=0.18, linewidth=0)
+    return _mark_invalid(ax, curve.loc[~curve["valid"], "pressure_bar"], colour)
+
+
+def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
+               names: dict[str, str], colours: dict[str, str]) -> Figure:
+    """Force against pressure (measured up and down sweeps, every model with its uncertainty
+    band), Err% (Equation 7) and the residual F_meas - F_model [N] per pressure.
+
+    ``steps``: ``pressure_bar_mean, force_N_mean, force_N_std, direction``. ``predictions``: one
+    row per model and step with ``model`` (spec text), ``pressure_bar, direction, force_N,
+    valid, err_pct, residual_N`` and optionally ``force_std_N``. ``names``: legend name per
+    spec text (the paper's name), ``colours``: :func:`model_colours`.
+    """
+    fig = Figure(figsize=(13, 4.8), layout="constrained")
+    ax_f, ax_e, ax_r = fig.subplots(1, 3)
+    _measured(ax_f, steps, "measured")
+    any_invalid, any_band = False, False
+    widths = _widths(dict.fromkeys(predictions["model"]))
     for model, rows in predictions.groupby("model", sort=False):
         c = colours[model]
-        curve = rows.drop_duplicates("pressure_bar").sort_values("pressure_bar")
-        ax_f.plot(curve["pressure_bar"], curve["force_N"].where(curve["valid"]), "-", color=c,
-                  label=model)
-        for direction, style in (("up", "-"), ("down", "--")):
+        any_invalid |= _model_curve(ax_f, rows, c, names[model], linewidth=widths[model])
+        any_band |= "force_std_N" in rows and rows["force_std_N"].notna().any()
+        for direction, style, face in (("up", "-", c), ("down", "--", "white")):
             sweep = rows[rows["direction"] == direction].sort_values("pressure_bar")
-            ax_e.plot(sweep["pressure_bar"], sweep["err_pct"].where(sweep["valid"]), style,
-                      marker="o" if direction == "up" else "s", markersize=4, color=c,
-                      markerfacecolor=c if direction == "up" else "white")
-        bad = curve.loc[~curve["valid"], "pressure_bar"]
-        _mark_invalid(ax_f, bad)
-        _mark_invalid(ax_e, rows.loc[~rows["valid"], "pressure_bar"].unique())
-        any_invalid |= len(bad) > 0
-    ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]", title="force against pressure")
+            for ax, column in ((ax_e, "err_pct"), (ax_r, "residual_N")):
+                ax.plot(sweep["pressure_bar"], sweep[column].where(sweep["valid"]), style,
+                        marker="o" if direction == "up" else "s", markersize=4, color=c,
+                        markerfacecolor=face)
+        for ax in (ax_e, ax_r):
+            _mark_invalid(ax, rows.loc[~rows["valid"], "pressure_bar"].unique(), c)
+    ax_f.set_title("force against pressure", pad=14)  # room for the invalid strip
+    ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]")
     ax_f.set_ylim(bottom=min(0.0, ax_f.get_ylim()[0]))
     handles, labels = ax_f.get_legend_handles_labels()
+    if any_band:
+        handles.append(Patch(color="0.5", alpha=0.3))
+        labels.append("model ± 2 std (its own uncertainty)")
     if any_invalid:
-        handles.append(Line2D([], [], **INVALID_STYLE))
-        labels.append("model invalid / out of domain")
-    ax_f.legend(handles, labels, fontsize=8, loc="upper left")
+        handles.append(_invalid_handle())
+        labels.append(INVALID_LABEL)
+    ax_f.legend(handles, labels, fontsize=7, loc="upper left")
+    ax_e.set_title("Err% (Equation 7)", pad=14)
+    ax_r.set_title("residual in newtons", pad=14)
+    ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_meas − F_model) / max F_meas [%]")
+    ax_r.set(xlabel="pressure P [bar]", ylabel="residual F_meas − F_model [N]")
+    ax_e.legend([Line2D([], [], color="0.3", marker="o", linestyle="-"),
+                 Line2D([], [], color="0.3", marker="s", markerfacecolor="white",
+                        linestyle="--")], ["up sweep", "down sweep"], fontsize=8, loc="best")
+    for ax in (ax_f, ax_e, ax_r):
+        ax.grid(True, alpha=0.3)
+        ax.set_xlim(left=0.0)
+    for ax in (ax_e, ax_r):
+        ax.axhline(0.0, color="0.6", linewidth=0.8)
+    fig.suptitle(title)
+    return fig
+
+
+def overlay_figure(runs: list[tuple[str, pd.DataFrame, pd.DataFrame]], title: str,
+                   names: dict[str, str], colours: dict[str, str]) -> Figure:
+    """Runs of one muscle on the same axes, as the paper's Figure 7c/d (eps 0 and 12.2 %):
+    measured forces (one marker per run) and every model (one line style per run), and Err%.
+
+    ``runs``: ``(label, steps, predictions)`` per run, as :func:`run_figure` takes them.
+    """
+    fig = Figure(figsize=(13, 5.2), layout="constrained")
+    ax_f, ax_e = fig.subplots(1, 2, width_ratios=[1.25, 1])
+    any_invalid = False
+    widths = _widths(dict.fromkeys(m for _, _, p in runs for m in p["model"]))
+    for i, (_, steps, predictions) in enumerate(runs):
+        marker = RUN_MARKERS[i % len(RUN_MARKERS)]
+        style = RUN_LINESTYLES[i % len(RUN_LINESTYLES)]
+        for direction, face in (("up", "black"), ("down", "white")):
+            sweep = steps[steps["direction"] == direction].sort_values("pressure_bar_mean")
+            ax_f.errorbar(sweep["pressure_bar_mean"], sweep["force_N_mean"],
+                          yerr=sweep["force_N_std"], fmt=marker, markerfacecolor=face,
+                          markersize=5, **MEASURED)
+        for model, rows in predictions.groupby("model", sort=False):
+            any_invalid |= _model_curve(ax_f, rows, colours[model], None, style, widths[model])
+            up = rows[rows["direction"] == "up"].sort_values("pressure_bar")
+            ax_e.plot(up["pressure_bar"], up["err_pct"].where(up["valid"]), style,
+                      marker=marker, markersize=4, color=colours[model],
+                      linewidth=widths[model])
+    models = list(dict.fromkeys(m for _, _, p in runs for m in p["model"]))
+    handles = [Line2D([], [], color=colours[m], linewidth=widths[m]) for m in models]
+    labels = [names[m] for m in models]
+    for i, (label, _, _) in enumerate(runs):
+        handles.append(Line2D([], [], color="black", marker=RUN_MARKERS[i % len(RUN_MARKERS)],
+                              linestyle=RUN_LINESTYLES[i % len(RUN_LINESTYLES)]))
+        labels.append(f"{label}: measured (filled up, open down) and models")
+    if any_invalid:
+        handles.append(_invalid_handle())
+        labels.append(INVALID_LABEL)
+    ax_f.legend(handles, labels, fontsize=7.5, loc="upper left")
+    ax_f.set_title("measured and modelled force", pad=14)  # room for the invalid strip
+    ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]")
+    ax_f.set_ylim(bottom=min(0.0, ax_f.get_ylim()[0]))
     ax_e.axhline(0.0, color="0.6", linewidth=0.8)
-    ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_meas − F_model) / max F_meas [%]",
-             title="error against the measurement (Equation 7)")
-    models = list(colours)
-    ax_e.legend([Line2D([], [], color=colours[m], linewidth=3) for m in models]
-                + [Line2D([], [], color="0.3", marker="o", linestyle="-"),
-                   Line2D([], [], color="0.3", marker="s", markerfacecolor="white",
-                          linestyle="--")],
-                [*models, "up sweep", "down sweep"], fontsize=8, loc="best")
+    ax_e.set_title("Err% of each model, per run", pad=14)
+    ax_e.set(xlabel="pressure P [bar]", ylabel="Err% (Equation 7), up sweep [%]")
     for ax in (ax_f, ax_e):
         ax.grid(True, alpha=0.3)
         ax.set_xlim(left=0.0)
@@ -105,23 +193,82 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str) -> Fi
     return fig
 
 
+def time_figure(bins: pd.DataFrame, steps: pd.DataFrame, title: str,
+                gaps: list[tuple[float, float]] = (),
+                events: list[tuple[float, str]] = ()) -> Figure:
+    """Pressure and force against time: the mean per time bin with its min-max band, each
+    step's settling window (light) and averaging window (dark), gaps in the record (red) and
+    events such as the force interlock (red lines).
+
+    ``bins``: :func:`bench.storage.aggregate_samples` output (``time_s``,
+    ``pressure_bar_{min,mean,max}``, ``force_N_{min,mean,max}``); ``steps``: ``start_s,
+    settle_s, end_s``; ``gaps``: ``(start_s, end_s)``; ``events``: ``(time_s, label)``.
+    """
+    fig = Figure(figsize=(13, 6.0), layout="constrained")
+    ax_p, ax_f = fig.subplots(2, 1, sharex=True)
+    scale, unit = (60.0, "min") if len(bins) and bins["time_s"].max() > 900 else (1.0, "s")
+    t = bins["time_s"] / scale
+    for ax, q, colour in ((ax_p, "pressure_bar", "tab:blue"), (ax_f, "force_N", "black")):
+        ax.fill_between(t, bins[f"{q}_min"], bins[f"{q}_max"], color=colour, alpha=0.2,
+                        linewidth=0, step="post")
+        ax.plot(t, bins[f"{q}_mean"], color=colour, linewidth=0.9, drawstyle="steps-post")
+        for row in steps.itertuples():
+            hold = row.start_s + row.settle_s
+            ax.axvspan(row.start_s / scale, hold / scale, color="#ffe08a", alpha=0.45,
+                       linewidth=0)
+            ax.axvspan(hold / scale, row.end_s / scale, color="#9fd49b", alpha=0.55,
+                       linewidth=0)
+        for start, end in gaps:
+            ax.axvspan(start / scale, max(end, start + 0.1) / scale, color="red", alpha=0.35,
+                       linewidth=0)
+        for when, _ in events:
+            ax.axvline(when / scale, color="red", linewidth=1.2)
+        ax.grid(True, alpha=0.3)
+    for when, label in events:
+        ax_f.annotate(label, (when / scale, 1.0), xycoords=("data", "axes fraction"),
+                      xytext=(3, -12), textcoords="offset points", color="red", fontsize=8)
+    ax_p.set(ylabel="pressure P [bar]")
+    ax_f.set(ylabel="force F [N]", xlabel=f"time since the start of the run [{unit}]")
+    handles = [Line2D([], [], color="tab:blue"), Line2D([], [], color="black"),
+               Patch(color="0.6", alpha=0.4), Patch(color="#ffe08a"), Patch(color="#9fd49b")]
+    labels = ["pressure (mean per bin)", "force (mean per bin)", "min-max within a bin",
+              "settling (not averaged)", "averaging window (the step's mean ± std)"]
+    if len(gaps):
+        handles.append(Patch(color="red", alpha=0.35))
+        labels.append("gap in the record (lost samples)")
+    if len(events):
+        handles.append(Line2D([], [], color="red"))
+        labels.append("interlock / stop")
+    fig.legend(handles, labels, fontsize=8, loc="outside lower center", ncol=4)
+    fig.suptitle(title)
+    return fig
+
+
 def surrogate_fe_figure(table: pd.DataFrame, title: str) -> Figure:
     """The paper's Figure 6 with our numbers: FE against surrogate for each test muscle.
 
-    ``table``: ``muscle, pressure_bar, force_fe_N, force_N, valid, err_pct``.
+    ``table``: ``muscle, pressure_bar, force_fe_N, force_N, valid, err_pct`` and optionally
+    ``model`` (several surrogates: one line style each).
     """
     fig = Figure(figsize=(11, 4.6), layout="constrained")
     ax_f, ax_e = fig.subplots(1, 2)
+    models = list(dict.fromkeys(table["model"])) if "model" in table else [None]
     for i, (muscle, rows) in enumerate(table.groupby("muscle", sort=False)):
-        rows = rows.sort_values("pressure_bar")
         c = f"C{i}"
-        ax_f.plot(rows["pressure_bar"], rows["force_fe_N"], "o", color=c, markersize=5,
+        fe = rows.drop_duplicates("pressure_bar").sort_values("pressure_bar")
+        ax_f.plot(fe["pressure_bar"], fe["force_fe_N"], "o", color=c, markersize=5,
                   label=f"{muscle}: FE")
-        ax_f.plot(rows["pressure_bar"], rows["force_N"].where(rows["valid"]), "-", color=c,
-                  label=f"{muscle}: surrogate")
-        ax_e.plot(rows["pressure_bar"], rows["err_pct"].where(rows["valid"]), "-o", color=c,
-                  markersize=4, label=f"muscle {muscle}")
-        _mark_invalid(ax_f, rows.loc[~rows["valid"], "pressure_bar"])
+        for j, model in enumerate(models):
+            one = rows if model is None else rows[rows["model"] == model]
+            one = one.sort_values("pressure_bar")
+            style = RUN_LINESTYLES[j % len(RUN_LINESTYLES)]
+            name = "surrogate" if model is None else str(model)
+            ax_f.plot(one["pressure_bar"], one["force_N"].where(one["valid"]), style, color=c,
+                      label=f"{muscle}: {name}")
+            ax_e.plot(one["pressure_bar"], one["err_pct"].where(one["valid"]), style,
+                      marker="o", color=c, markersize=4,
+                      label=f"muscle {muscle}" + ("" if model is None else f", {name}"))
+            _mark_invalid(ax_f, one.loc[~one["valid"], "pressure_bar"], c)
     ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]",
              title="FE (dots) and surrogate (lines)")
     ax_f.legend(fontsize=7, ncol=2, loc="upper left")
@@ -133,6 +280,47 @@ def surrogate_fe_figure(table: pd.DataFrame, title: str) -> Figure:
         ax.grid(True, alpha=0.3)
         ax.set_xlim(left=0.0)
     fig.suptitle(title)
+    return fig
+
+
+def report_speed_figure(summary: pd.DataFrame, names: dict[str, str],
+                        colours: dict[str, str]) -> Figure:
+    """Speed against accuracy of the report's models on its runs: seconds per predicted force
+    (log) against the largest |Err%| against the measurement, one marker per run.
+
+    ``summary``: ``run, model, seconds_per_point, max_abs_err_pct`` (NaN error: no valid point,
+    not drawn).
+    """
+    fig = Figure(figsize=(8.5, 4.8), layout="constrained")
+    ax = fig.subplots()
+    runs = list(dict.fromkeys(summary["run"]))
+    for _, row in summary.iterrows():
+        if not np.isfinite(row["max_abs_err_pct"]) or not row["seconds_per_point"] > 0:
+            continue
+        ax.scatter(row["seconds_per_point"], max(row["max_abs_err_pct"], 1e-3), s=60,
+                   marker=RUN_MARKERS[runs.index(row["run"]) % len(RUN_MARKERS)],
+                   color=colours[row["model"]], zorder=3)
+        ax.annotate(row["model"], (row["seconds_per_point"], max(row["max_abs_err_pct"], 1e-3)),
+                    textcoords="offset points", xytext=(6, 3), fontsize=7.5)
+    models = list(dict.fromkeys(summary["model"]))
+    handles = [Line2D([], [], color=colours[m], marker="o", linestyle="none") for m in models]
+    labels = [names[m] for m in models]
+    handles += [Line2D([], [], color="0.3", marker=RUN_MARKERS[i % len(RUN_MARKERS)],
+                       linestyle="none") for i in range(len(runs))]
+    labels += [f"run {i + 1}" for i in range(len(runs))]
+    ax.legend(handles, labels, fontsize=7.5, loc="best")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax.yaxis.set_minor_formatter(NullFormatter())
+    ax.set(xlabel="seconds per predicted force [s]",
+           ylabel="largest |Err%| against the measurement [%]",
+           title="speed against accuracy on these runs (lower left is better)")
+    ax.grid(True, which="major", alpha=0.35)
+    ax.grid(True, which="minor", alpha=0.1)
     return fig
 
 

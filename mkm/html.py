@@ -16,6 +16,7 @@ h1{font-size:1.6em;border-bottom:2px solid #333}h2{margin-top:1.8em;border-botto
 table{border-collapse:collapse;margin:.6em 0;font-size:.9em}
 th,td{border:1px solid #bbb;padding:.25em .6em;text-align:right}
 th{background:#eee}td:first-child,th:first-child{text-align:left}
+.table td:nth-child(2),.table th:nth-child(2){text-align:left}
 figure{margin:1em 0}figure img{max-width:100%;height:auto;border:1px solid #ddd}
 figcaption,.caption{font-size:.85em;color:#444}
 .status{padding:.4em .8em;border-radius:4px;font-weight:600;display:inline-block}
@@ -24,6 +25,11 @@ figcaption,.caption{font-size:.85em;color:#444}
 pre{background:#f6f6f6;padding:.6em;overflow-x:auto;font-size:.8em;white-space:pre-wrap}
 dl.kv{display:grid;grid-template-columns:max-content auto;gap:.1em 1em}dl.kv dt{font-weight:600}
 dl.kv dd{margin:0}
+table.kv{font-size:.8em}table.kv td,table.kv th{padding:.1em .5em;text-align:left}
+table caption{font-weight:600;text-align:left;padding:.2em 0}
+.tables{display:flex;flex-wrap:wrap;gap:0 1.5em;
+align-items:flex-start}details{margin:.5em 0}summary{cursor:pointer;font-weight:600}
+table.summary td,table.summary th{font-size:.95em}.ok{color:#1a7f37}.bad{color:#b00}
 @media print{body{max-width:none;margin:0;font-size:10pt}h2{page-break-after:avoid}
 figure,table,.run-head{page-break-inside:avoid}pre{font-size:7pt}}
 """
@@ -90,6 +96,33 @@ def html_page(title: str, body: str) -> str:
 def save_figure(fig, path: Path) -> Path:
     fig.savefig(path, dpi=110)
     return path
+
+
+def mapping_table(mapping: dict, title: str, caption: str = "",
+                  columns=("quantity", "value")) -> str:
+    """A two-column table of nested metadata (``loadcell.capacity_N | 1961``) titled
+    ``title``, numbers to 6 significant digits; lists are joined, empty values shown as —."""
+    rows = []
+
+    def walk(value, prefix):
+        if isinstance(value, dict) and value:
+            for k, v in value.items():
+                walk(v, f"{prefix}{k}.")
+            return
+        if isinstance(value, float):
+            text = f"{value:.6g}"
+        elif isinstance(value, list | tuple):
+            text = ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in value)
+        else:
+            text = "—" if value in (None, "", {}) else str(value)
+        rows.append((prefix[:-1], text))
+
+    walk(mapping, "")
+    body = "".join(f"<tr><td>{esc(k)}</td><td>{esc(v)}</td></tr>" for k, v in rows)
+    head = "".join(f"<th>{esc(c)}</th>" for c in columns)
+    note = f'<p class="caption">{caption}</p>' if caption else ""
+    return (f'<div class="table"><table class="kv"><caption>{esc(title)}</caption>'
+            f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>{note}</div>")
 
 
 def kv_html(pairs: dict) -> str:

@@ -2,10 +2,23 @@
 
 :func:`build_report` loads runs with :func:`bench.storage.load_run`, predicts each run's steps with
 the requested models (FE predictions through :mod:`mkm.prediction_cache`), scores them with the
-paper's Equation 7 against the measurement, compares the surrogate with our FE model on the
-paper's test muscles I, II and III, and writes ``report.html`` (figures embedded as base64 PNG,
-inline CSS, no external asset) with the PNGs and CSVs beside it. Every table and figure names
-the provenance entries (models and their parameters, data, versions) it was computed from.
+paper's Equation 7 against the measurement and writes ``report.html`` (figures embedded as base64
+PNG, inline CSS, no script, no external asset) with the PNGs, CSVs and ``provenance.json``
+beside it. The page answers, in this order:
+
+1. how good, per run: a summary table (status, eps, best model, its largest |Err%| and RMSE,
+   lost samples, the ``auto`` choice);
+2. the runs of one muscle together (the paper's Figure 7c/d: eps 0 and 12.2 %, every model);
+3. how fast: seconds per predicted force against the largest |Err%| of every model on these runs,
+   and the one model ``auto`` picks for each run;
+4. per run: the set-up as tables (muscle, hardware, calibration, tare), pressure and force
+   against time with the settling and averaging windows, gaps and interlock events, forces with
+   each model's uncertainty band, Err% and residuals in N;
+5. the surrogate against our FE model on the paper's test muscles (Table 3, Figure 6);
+6. provenance, folded, the full JSON in ``provenance.json``.
+
+Models are named as the paper names them (:attr:`mkm.registry.Spec.display_name`) with their
+spec beside; every table and figure names the provenance entries it was computed from.
 """
 
 from __future__ import annotations
@@ -13,6 +26,7 @@ from __future__ import annotations
 import json
 import time
 import warnings
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -20,20 +34,28 @@ import pandas as pd
 
 from fem.interface import ForceModel, Prediction
 from fem.paper import L0_MM, TABLE3_CSV, equation7_err_pct
-from fem.records import provenance
-from mkm.figures import run_figure, surrogate_fe_figure
+from fem.records import provenance, read_prediction_header, write_json_atomic
+from mkm.figures import (
+    model_colours,
+    overlay_figure,
+    report_speed_figure,
+    run_figure,
+    surrogate_fe_figure,
+    time_figure,
+)
 from mkm.html import (
     esc,
     figure_html,
-    flatten,
     html_page,
-    kv_html,
+    mapping_table,
+    provenance_details,
     provenance_links,
     save_figure,
     table_html,
 )
 from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
+from mkm.progress import progress_bar
 from mkm.registry import Spec, parse_spec
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
@@ -77,19 +99,23 @@ def evaluation_pressures(steps: pd.DataFrame) -> np.ndarray:
 
 
 def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.DataFrame:
-    """One row per step: measurement, the model's force, validity and Err% (Equation 7)."""
+    """One row per step: measurement, the model's force, validity, Err% (Equation 7) and the
+    residual F_meas - F_model [N]. ``pressure_bar`` is where the model was evaluated,
+    ``pressure_meas_bar`` the measured mean (they differ at a domain edge)."""
     scale = float(np.nanmax(steps["force_N_mean"].to_numpy(dtype=float)))
     valid = np.ravel(prediction.valid)
     force = np.where(valid, np.ravel(prediction.force_N), np.nan)
     rows = pd.DataFrame({
         "model": label, "step": steps["step"].to_numpy(), "direction": steps["direction"],
         "set_pressure_bar": steps["set_pressure_bar"].to_numpy(),
+        "pressure_meas_bar": evaluation_pressures(steps),
         "pressure_bar": np.ravel(prediction.pressure_bar),
         "force_meas_N": steps["force_N_mean"].to_numpy(),
         "force_meas_std_N": steps["force_N_std"].to_numpy(),
         "force_N": force, "valid": valid, "settled": steps["settled"].to_numpy(),
     })
     rows["err_pct"] = equation7_err_pct(rows["force_meas_N"], rows["force_N"], scale)
+    rows["residual_N"] = rows["force_meas_N"] - rows["force_N"]
     for key, value in prediction.extras.items():
         rows[key] = np.ravel(value)
     return rows
@@ -111,6 +137,38 @@ def summarise(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
     }
 
 
+@dataclass
+class _Run:
+    """One loaded and scored run, as the sections of the page use it."""
+
+    k: int
+    run: object  # bench.storage.Run
+    specs: list[Spec]
+    scored: pd.DataFrame = field(default_factory=pd.DataFrame)
+    summary: list[dict] = field(default_factory=list)
+    keys: list[str] = field(default_factory=list)
+
+    @property
+    def name(self) -> str:
+        return Path(self.run.path).name
+
+    @property
+    def meta(self):
+        return self.run.meta
+
+    @property
+    def muscle(self) -> dict:
+        return dict(self.meta.get("muscle") or {})
+
+    @property
+    def eps_pct(self) -> float:
+        return 100.0 * float(self.muscle.get("eps", np.nan))
+
+    @property
+    def label(self) -> str:
+        return f"run {self.k}, eps = {self.eps_pct:.1f} %"
+
+
 # --- the report -------------------------------------------------------------------------------
 
 
@@ -118,24 +176,26 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
                  cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
                  tolerance: float | None = 0.02, surrogate_section: bool = True,
                  progress: bool = False) -> Path:
-    """Write ``report.html`` (plus PNGs and CSVs) for bench runs into ``out_dir``; return its path.
+    """Write ``report.html`` (plus PNGs, CSVs and ``provenance.json``) for bench runs into
+    ``out_dir``; return its path.
 
     Parameters
     ----------
     run_dirs : list of path
         Run folders written by ``mkm acquire`` (real or simulated; aborted ones included).
-    models : iterable of str
-        Model specs (``eq2``, ``thickwall``, ``axisym:mesh=coarse``, ``surrogate`` or
-        ``surrogate:PATH``), drawn in this order.
+    models : iterable of str or Spec
+        Predictor specs (``eq2``, ``thickwall``, ``axisym:mesh=coarse``, ``surrogate``,
+        ``surrogate:path=DIR``), drawn in this order.
     out_dir : path, optional
-        Output folder (default ``reports/<first run folder name>``).
+        Output folder (default ``mkm-out/report/<first run folder name>``).
     cache_dir : path or None
         FE prediction cache (None: no cache).
     tolerance : float or None
-        Tolerance of the ``auto`` model choice shown per run (a fraction); None leaves the
-        choice out.
+        Tolerance of the ``auto`` model choice shown per run (a fraction); None leaves it out.
     surrogate_section : bool
         Add the comparison of the default surrogate with the FE model on the test muscles.
+    progress : bool
+        Progress bar on stderr (shown only when stderr is a terminal).
     """
     from bench.storage import load_run
 
@@ -146,148 +206,374 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     specs = [m if isinstance(m, Spec) else parse_spec(m) for m in models]
     out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
     out.mkdir(parents=True, exist_ok=True)
+    names = {s.text: f"{s.entry.paper_name} [{s.text}]" for s in specs}
+    colours = model_colours(specs)
     prov: dict[str, dict] = {"software": provenance()}
-    sections, summaries, notes = [], [], []
-
+    bar = progress_bar(len(run_dirs) * (len(specs) + 1) + int(surrogate_section), "report",
+                       progress, unit="task")
+    runs = []
     for k, run_dir in enumerate(run_dirs, start=1):
-        run = load_run(run_dir)
-        sections.append(_run_section(k, run, specs, out, cache_dir, tolerance, prov,
-                                     summaries, notes))
+        runs.append(_score(_Run(k, load_run(run_dir), specs), cache_dir, prov, bar))
+    summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
+    summary.to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
+    sections = [_summary_section(runs, summary, names, tolerance),
+                _overlay_section(runs, out, names, colours),
+                _speed_section(runs, summary, out, names, colours, tolerance)]
+    for r in runs:
+        sections.append(_run_section(r, out, names, colours, prov))
+        bar.update(1)
     if surrogate_section:
         sections.append(_surrogate_section(out, prov))
-    summary = pd.DataFrame(summaries)
-    summary.to_csv(out / "summary.csv", index=False)
+        bar.update(1)
+    bar.close()
+    write_json_atomic(out / "provenance.json", prov)
     elapsed = time.perf_counter() - start
     intro = (f"<p>Generated {esc(prov['software']['date_utc'])} by "
-             f"<code>{esc(prov['software']['command'])}</code> in {elapsed:.1f} s. "
-             f"{len(run_dirs)} run(s); models: {esc(', '.join(s.text for s in specs))}. "
-             "Err% is the paper's Equation 7, (F_meas − F_model) / max F_meas over the run, "
-             "in %; points where a model is invalid or outside its domain are drawn as grey "
-             "crosses and left out of every number.</p>")
-    body = intro + "".join(sections) + _provenance_section(prov)
+             f"<code>{esc(prov['software']['command'])}</code> in {elapsed:.1f} s: "
+             f"{len(runs)} run(s), {len(specs)} model(s). Err% is the paper's Equation 7, "
+             "(F_meas − F_model) / max F_meas over the run, in %; the residual is "
+             "F_meas − F_model in N. A point where a model gives no valid number (invalid, out "
+             "of its domain, not converged) is drawn as a cross above the axes, never as a "
+             "force, and left out of every number. Times are seconds per predicted force.</p>")
+    body = intro + "".join(sections) + provenance_details(prov, "provenance.json")
     path = out / "report.html"
     path.write_text(html_page("McKibben muscle validation report", body), encoding="utf-8")
     return path
 
 
-def _run_section(k, run, specs, out, cache_dir, tolerance, prov, summaries, notes) -> str:
-    meta = run.meta
-    muscle = meta.get("muscle", {})
-    run_key = f"run-{k}"
-    prov[run_key] = {"path": str(run.path), **{key: meta.get(key) for key in
-                                                ("provenance", "versions", "command")
-                                                if key in meta}}
-    status = str(run.status)
-    steps = run.steps
-    head = [f'<section class="run-head"><h2>Run {k}: {esc(Path(run.path).name)}</h2>',
-            f'<p><span class="status status-{"complete" if run.complete else "other"}">'
-            f"status: {esc(status)}</span>"]
-    if not run.complete:
-        head.append(f" — reason: {esc(meta.get('reason') or 'not recorded')}. Kept: "
-                    f"{len(steps)} settled step(s) of {_planned_steps(meta)}, "
-                    f"{len(run.samples)} sample(s). Only what was kept is scored below.")
-    head.append("</p>")
-    hardware = meta.get("hardware", {})
-    head.append(kv_html({
-        "muscle": f"{muscle.get('id', '?')}: D0 = {muscle.get('D0_mm')} mm, "
-                  f"t0 = {muscle.get('t0_mm')} mm, L0 = {muscle.get('L0_mm')} mm",
-        "shortening ratio eps": f"{100 * float(muscle.get('eps', np.nan)):.1f} %",
-        "hardware": ", ".join(f"{a}={b}" for a, b in hardware.items()
-                              if not isinstance(b, dict | list)),
-        "calibration": flatten(meta.get("calibration", {})),
-        "tare": flatten(meta.get("tare", {})),
-    }))
-    sim = hardware.get("sim") if hardware.get("simulated") else None
-    if isinstance(sim, dict):
-        head.append(f'<p class="note">Simulated run: the "measured" force is the '
-                    f"{esc(sim.get('model', '?'))} model's, with hysteresis "
-                    f"{100 * float(sim.get('hysteresis_fraction', 0)):g} %, creep "
-                    f"{100 * float(sim.get('creep_fraction', 0)):g} % and load-cell noise "
-                    f"(seed {esc(sim.get('seed'))}): agreement with that model is by "
-                    "construction, not evidence about a real muscle.</p>")
-    unsettled = int((~steps["settled"].astype(bool)).sum()) if len(steps) else 0
-    if unsettled:
-        head.append(f'<p class="note">{unsettled} step(s) did not settle before the timeout: '
-                    "kept, scored and marked settled = false in the CSV.</p>")
-    if run.problems:
-        head.append('<p class="note">Loader: ' + esc("; ".join(run.problems)) + "</p>")
-    head.append("</section>")
+def _score(r: _Run, cache_dir, prov: dict, bar) -> _Run:
+    """Predict and score every model on the run's kept steps; record provenance."""
+    meta, muscle = r.meta, r.muscle
+    run_key = f"run-{r.k}"
+    prov[run_key] = {"path": str(r.run.path), **{key: meta.get(key) for key in
+                                                  ("provenance", "command", "config_source",
+                                                   "config_overrides") if meta.get(key)}}
+    r.keys = [run_key]
+    steps = r.run.steps
     if steps.empty:
-        return "".join(head) + '<p class="note">No step was kept: nothing to compare.</p>'
-
-    scored, keys = [], [run_key]
-    for spec in specs:
+        bar.update(len(r.specs))
+        return r
+    frames = []
+    for spec in r.specs:
         model = spec.build(L0_mm=float(muscle.get("L0_mm", L0_MM)))
-        pred, cached = predict_steps(model, steps, muscle, cache_dir,
-                                     _pressure_tolerance(meta))
+        pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
         rows = score_run(steps, pred, spec.text)
-        scored.append(rows)
-        summaries.append({"run": Path(run.path).name, **summarise(rows, pred.seconds, cached)})
+        frames.append(rows)
+        r.summary.append(summarise(rows, pred.seconds, cached))
         key = f"model-{spec.text}"
         prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model)}
-        keys.append(key)
-    scored = pd.concat(scored, ignore_index=True)
-    stem = f"run{k}"
-    scored.to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
-    fig_path = save_figure(run_figure(steps, scored, f"run {k}: {muscle.get('id', '')}, "
-                                      f"eps = {100 * float(muscle.get('eps', 0)):.1f} %"),
+        r.keys.append(key)
+        bar.update(1)
+    r.scored = pd.concat(frames, ignore_index=True)
+    return r
+
+
+def _pressure_tolerance(meta) -> float:
+    """The run's regulator settling tolerance [bar] (0 if not recorded)."""
+    settle = (meta.get("sequence") or {}).get("settle", {})
+    return float(settle.get("pressure_tolerance_bar", 0.0) or 0.0)
+
+
+def _planned_steps(meta) -> str:
+    """Steps planned, from any run.json schema (a count or the list of steps)."""
+    n = getattr(meta, "n_steps", None)
+    sequence = meta.get("sequence") or {}
+    for value in (n, sequence.get("n_steps"), sequence.get("planned_steps"),
+                  sequence.get("steps")):
+        if isinstance(value, int):
+            return str(value)
+        if isinstance(value, list):
+            return str(len(value))
+    return "an unrecorded number planned"
+
+
+def _lost_samples(meta) -> int:
+    lost = meta.get("lost_samples")
+    if lost is not None:
+        return int(lost)
+    gaps = meta.get("gaps") or (meta.get("counters") or {}).get("gaps") or []
+    return int(sum(g.get("lost_samples", 0) for g in gaps if isinstance(g, dict)))
+
+
+def _best(r: _Run) -> dict | None:
+    """The model with the smallest largest |Err%| among those valid at every point (or, if
+    none is, among those valid somewhere)."""
+    rows = [s for s in r.summary if s["valid_points"] > 0]
+    full = [s for s in rows if s["valid_points"] == s["points"]]
+    pool = full or rows
+    return min(pool, key=lambda s: s["max_abs_err_pct"]) if pool else None
+
+
+def _status_html(r: _Run) -> str:
+    status = str(r.run.status)
+    cls = "ok" if r.run.complete else "bad"
+    return f'<span class="{cls}">{esc(status)}</span>'
+
+
+# --- sections ---------------------------------------------------------------------------------
+
+
+def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
+                     tolerance: float | None) -> str:
+    """Per run: status, eps, the best model, its largest |Err%| and RMSE, steps, lost samples,
+    the auto choice."""
+    head = ("<tr><th>run</th><th>status</th><th>eps [%]</th><th>steps kept / planned</th>"
+            "<th>lost samples</th><th>best model</th><th>its largest |Err%|</th>"
+            "<th>its RMSE [N]</th>"
+            + (f"<th>auto at {100 * tolerance:g} %</th>" if tolerance else "") + "</tr>")
+    rows = []
+    for r in runs:
+        best = _best(r)
+        best_cells = ("<td>—</td><td>—</td><td>—</td>" if best is None else
+                      f"<td>{esc(names[best['model']])}"
+                      + ("" if best["valid_points"] == best["points"] else
+                         f" (valid at {best['valid_points']} of {best['points']})")
+                      + f"</td><td>{best['max_abs_err_pct']:.2f}</td>"
+                        f"<td>{best['rmse_N']:.2f}</td>")
+        auto = ""
+        if tolerance:
+            choice = _auto_choice(r, tolerance)
+            auto = f"<td>{esc(choice[0]) if choice else '—'}</td>"
+        rows.append(f'<tr><td><a href="#run-{r.k}">run {r.k}</a>: {esc(r.name)}</td>'
+                    f"<td>{_status_html(r)}</td><td>{r.eps_pct:.1f}</td>"
+                    f"<td>{len(r.run.steps)} / {esc(_planned_steps(r.meta))}</td>"
+                    f"<td>{_lost_samples(r.meta)}</td>{best_cells}{auto}</tr>")
+    keys = [k for r in runs for k in r.keys]
+    return ('<h2 id="summary">Summary</h2><div class="table"><table class="summary">'
+            f"<thead>{head}</thead><tbody>{''.join(rows)}</tbody></table>"
+            '<p class="caption">Best model: the smallest largest |Err%| (Equation 7) among the '
+            "models valid at every kept step of the run. Every model's numbers per run are in "
+            "the tables below and in summary.csv. " + provenance_links(dict.fromkeys(keys))
+            + "</p></div>")
+
+
+def _overlay_section(runs: list[_Run], out: Path, names: dict, colours: dict) -> str:
+    """The runs of each muscle on one figure (the paper's Figure 7c/d)."""
+    groups: dict[tuple, list[_Run]] = {}
+    for r in runs:
+        if r.scored.empty:
+            continue
+        m = r.muscle
+        groups.setdefault((m.get("id"), m.get("D0_mm"), m.get("t0_mm"), m.get("L0_mm")),
+                          []).append(r)
+    parts = []
+    for i, ((mid, D0, t0, L0), members) in enumerate(groups.items(), start=1):
+        if len(members) < 2:
+            continue
+        members = sorted(members, key=lambda r: r.eps_pct)
+        title = (f"{mid}: D0 = {D0} mm, t0 = {t0} mm, L0 = {L0} mm; "
+                 + ", ".join(f"eps = {r.eps_pct:.1f} %" for r in members))
+        fig = overlay_figure([(r.label, r.run.steps, r.scored) for r in members], title,
+                             names, colours)
+        path = save_figure(fig, out / f"overlay{i}.png")
+        keys = dict.fromkeys(k for r in members for k in r.keys)
+        parts.append(figure_html(path, "Runs of one muscle together, as the paper's Figure "
+                                 "7c/d: measured forces (mean ± std per step; one marker per "
+                                 "run) and every model (one line style per run); right: Err% "
+                                 "of the up sweeps. " + provenance_links(keys)))
+    if not parts:
+        return ""
+    return '<h2 id="overlay">Runs of one muscle together</h2>' + "".join(parts)
+
+
+def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours: dict,
+                   tolerance) -> str:
+    """Seconds per force against the largest |Err%| on these runs, per model; the auto choice."""
+    if summary.empty:
+        return ""
+    path = save_figure(report_speed_figure(summary, names, colours), out / "speed_accuracy.png")
+    table = []
+    for model, g in summary.groupby("model", sort=False):
+        table.append({"model": names[model].rsplit(" [", 1)[0], "spec": model,
+                      "valid points": int(g["valid_points"].sum()),
+                      "of": int(g["points"].sum()),
+                      "largest |Err%|": g["max_abs_err_pct"].max(),
+                      "largest RMSE [N]": g["rmse_N"].max(),
+                      "largest |residual| [N]": g["max_abs_residual_N"].max(),
+                      "s per force": g["seconds_per_point"].median(),
+                      "timed": "from the FE cache (the original solve)" if g["from_cache"].all()
+                      else "in this report"})
+    keys = dict.fromkeys(k for r in runs for k in r.keys)
+    auto = "".join(_auto_paragraph(r, tolerance) for r in runs) if tolerance else ""
+    return ('<h2 id="speed">How fast, how good</h2>'
+            + figure_html(path, "Each model's seconds per predicted force (log; a cached FE "
+                          "sweep reports the time of its original solve) against its largest "
+                          "|Err%| against the measurement, one marker per run. "
+                          + provenance_links(keys))
+            + table_html(pd.DataFrame(table), "Every model over all runs: the worst of its "
+                         "per-run numbers, and the median time per force. "
+                         + provenance_links(keys), formats={"s per force": ".3g"})
+            + auto)
+
+
+def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> str:
+    meta, muscle, steps = r.meta, r.muscle, r.run.steps
+    parts = [f'<section class="run-head"><h2 id="run-{r.k}">Run {r.k}: {esc(r.name)}</h2>',
+             f"<p>status: <b>{_status_html(r)}</b>"]
+    n_samples = getattr(r.run, "n_samples", None)
+    n_samples = len(r.run.samples) if n_samples is None else n_samples
+    if not r.run.complete:
+        parts.append(f" — reason: {esc(meta.get('reason') or 'not recorded')}. Kept: "
+                     f"{len(steps)} settled step(s) of {_planned_steps(meta)}, "
+                     f"{n_samples} sample(s). Only what was kept is scored below.")
+    parts.append("</p>")
+    hardware = dict(meta.get("hardware") or {})
+    sim = hardware.pop("sim", None) if hardware.get("simulated") else None
+    source = "From run.json. " + provenance_links(r.keys[:1])
+    tables = [mapping_table(muscle | {"eps [%]": r.eps_pct}, "Muscle", source),
+              mapping_table(hardware, "Hardware", source),
+              mapping_table(meta.get("calibration") or {}, "Calibration", source),
+              mapping_table(meta.get("tare") or {}, "Tare at 0 bar", source)]
+    if isinstance(sim, dict):
+        tables.append(mapping_table(sim, "Simulated bench", source))
+        parts.append(_sim_note(sim, r.specs))
+    setup = ('<h3>Set-up</h3><div class="tables">' + "".join(tables) + "</div>")
+    unsettled = int((~steps["settled"].astype(bool)).sum()) if len(steps) else 0
+    if unsettled:
+        parts.append(f'<p class="note">{unsettled} step(s) did not settle before the timeout: '
+                     "kept, scored and marked settled = false in the CSV.</p>")
+    if r.run.problems:
+        parts.append('<p class="note">Loader: ' + esc("; ".join(r.run.problems)) + "</p>")
+    parts.append("</section>")
+    if steps.empty:
+        return "".join(parts) + ('<p class="note">No step was kept: nothing to compare.</p>'
+                                 + _signals(r, out) + setup)
+
+    stem = f"run{r.k}"
+    r.scored.to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
+    title = (f"run {r.k}: {muscle.get('id', '')}, eps = {r.eps_pct:.1f} %")
+    fig_path = save_figure(run_figure(steps, r.scored, title, names, colours),
                            out / f"{stem}_force_error.png")
-    run_summary = pd.DataFrame([s for s in summaries if s["run"] == Path(run.path).name])
-    parts = head + [
+    table = pd.DataFrame([{"model": names[s["model"]].rsplit(" [", 1)[0], "spec": s["model"],
+                           "valid points": s["valid_points"], "of": s["points"],
+                           "largest |Err%|": s["max_abs_err_pct"], "RMSE [N]": s["rmse_N"],
+                           "largest |residual| [N]": s["max_abs_residual_N"],
+                           "s per force": s["seconds_per_point"]} for s in r.summary])
+    parts += [
         figure_html(fig_path, "Left: measured force per pressure step (mean ± std; filled "
-                    "circles up sweep, open squares down sweep) with each model on the same "
-                    "axes. Right: Err% per pressure step of each model against the "
-                    "measurement (solid up, dashed down). " + provenance_links(keys)),
-        table_html(run_summary.drop(columns="run"),
-                   f"Summary per model (files: {stem}_errors.csv, summary.csv). "
-                   + provenance_links(keys)),
-        _invalid_note(scored),
-        _auto_paragraph(steps, muscle, tolerance) if tolerance else "",
+                    "circles up sweep, open squares down sweep) with each model and, where it "
+                    "has one, its ± 2 std band. Middle: Err% (Equation 7). Right: residual in "
+                    "N (solid up, dashed down). " + provenance_links(r.keys)),
+        table_html(table, f"Per model (files: {stem}_errors.csv, summary.csv). "
+                   + provenance_links(r.keys), formats={"s per force": ".3g"}),
+        _domain_note(r.scored, _pressure_tolerance(meta), names),
+        _invalid_note(r.scored, names),
+        _signals(r, out),
+        setup,
     ]
     return "".join(parts)
 
 
-def _pressure_tolerance(meta: dict) -> float:
-    """The run's regulator settling tolerance [bar] (0 if not recorded)."""
-    settle = meta.get("sequence", {}).get("settle", {})
-    return float(settle.get("pressure_tolerance_bar", 0.0) or 0.0)
+def _sim_note(sim: dict, specs) -> str:
+    """What the simulated "measurement" is (the simulator's own description in run.json), and
+    which report model shares its physics."""
+    physics = sim.get("physics") if isinstance(sim.get("physics"), dict) else {}
+    source = str(physics.get("force_model") or sim.get("model") or "a force model")
+    what = physics.get("summary") or (f"the {source} model with hysteresis "
+                                      f"{100 * float(sim.get('hysteresis_fraction', 0)):g} % "
+                                      f"and creep {100 * float(sim.get('creep_fraction', 0)):g} %")
+    same = [s.text for s in specs if s.name == source.split(":")[0]]
+    shared = (f" {', '.join(same)} in this report shares its static physics, so its agreement "
+              "on the averaged steps is partly by construction; braid friction and creep are in "
+              "no model of the report." if same else " No model in this report is that physics.")
+    return ('<p class="note">Simulated run: the "measured" force is the simulated bench\'s '
+            f"muscle ({esc(what)}; seed {esc(sim.get('seed'))}), not a real muscle."
+            + esc(shared) + "</p>")
 
 
-def _planned_steps(meta: dict) -> str:
-    sequence = meta.get("sequence", {})
-    for key in ("n_steps", "planned_steps"):
-        if key in sequence:
-            return str(sequence[key])
-    steps = sequence.get("steps")
-    return str(len(steps)) if isinstance(steps, list) else "an unrecorded number planned"
+def _signals(r: _Run, out: Path) -> str:
+    """Pressure and force against time, read in bounded memory."""
+    bins = _aggregate(r.run.path)
+    if bins.empty:
+        return '<p class="note">No samples recorded: no time traces.</p>'
+    bins.to_csv(out / f"run{r.k}_signals.csv", index=False, float_format="%.6g")
+    gaps = [(float(g["start_s"]), float(g["end_s"])) for g in (r.meta.get("gaps") or [])
+            if isinstance(g, dict) and "start_s" in g]
+    if not gaps and "gap" in bins:
+        gaps = [(t, t + 0.1) for t in bins.loc[bins["gap"] > 0, "time_s"]]
+    events = []
+    if "interlock" in bins and (bins["interlock"] > 0).any():
+        events.append((float(bins.loc[bins["interlock"] > 0, "time_s"].iloc[0]),
+                       "force interlock"))
+    elif not r.run.complete:
+        events.append((float(bins["time_s"].iloc[-1]), str(r.run.status)))
+    title = f"run {r.k}: pressure and force against time"
+    path = save_figure(time_figure(bins, r.run.steps, title, gaps, events),
+                       out / f"run{r.k}_signals.png")
+    extra = (f" {len(gaps)} gap(s) in the record (red)." if gaps else " No gap in the record.")
+    extra += "".join(f" Event: {esc(label)} at {when:.1f} s (red line)." for when, label in events)
+    return figure_html(path, "The signals: mean per time bin with its min-max band (file "
+                       f"run{r.k}_signals.csv); per step the settling time (yellow, not "
+                       "averaged) and the averaging window whose mean ± std is the step's "
+                       f"measurement (green).{extra} " + provenance_links(r.keys[:1]))
 
 
-def _invalid_note(scored: pd.DataFrame) -> str:
+def _aggregate(path) -> pd.DataFrame:
+    from bench.storage import aggregate_samples
+
+    return aggregate_samples(path)
+
+
+def _domain_note(scored: pd.DataFrame, tolerance_bar: float, names: dict) -> str:
+    moved = scored[~np.isclose(scored["pressure_bar"], scored["pressure_meas_bar"])]
+    if moved.empty:
+        return ""
+    items = [f"{esc(names[m])}: {len(g)} point(s), measured "
+             f"{', '.join(f'{p:.4f}' for p in g['pressure_meas_bar'])} bar evaluated at "
+             f"{', '.join(f'{p:g}' for p in sorted(g['pressure_bar'].unique()))} bar"
+             for m, g in moved.groupby("model", sort=False)]
+    return ('<p class="note">Measured pressures within the regulator tolerance '
+            f"({tolerance_bar:g} bar, the run's settling tolerance) of a model's domain edge "
+            "count as in the domain and are evaluated at the edge: " + "; ".join(items)
+            + ".</p>")
+
+
+def _invalid_note(scored: pd.DataFrame, names: dict) -> str:
     bad = scored[~scored["valid"]]
     if bad.empty:
         return ""
-    items = [f"{esc(m)}: {len(rows)} point(s) at "
+    items = [f"{esc(names[m])}: {len(rows)} point(s) at "
              f"{', '.join(f'{p:.2f}' for p in sorted(rows['pressure_bar'].unique()))} bar"
              for m, rows in bad.groupby("model", sort=False)]
     return ('<p class="note">No valid number (invalid, out of domain or not converged), shown '
-            "as crosses and excluded from the summary: " + "; ".join(items) + ".</p>")
+            "as crosses above the axes and excluded from every number: " + "; ".join(items)
+            + ".</p>")
 
 
-def _auto_paragraph(steps, muscle, tolerance) -> str:
-    """What ``--model auto`` would use for this run's points (the choice only: the fallback FE is
-    not solved for it)."""
+def _auto_pressures(r: _Run) -> np.ndarray:
+    """The run's pressures as auto sees them: within the regulator tolerance of the study's top
+    pressure counts as that pressure (the domain-edge rule)."""
+    from mkm.auto import read_model_errors
+
+    P = evaluation_pressures(r.run.steps)
+    top = float(read_model_errors()["pressure_bar"].max())
+    tol = _pressure_tolerance(r.meta)
+    return np.where((P > top) & (P <= top + tol), top, P)
+
+
+def _auto_choice(r: _Run, tolerance: float):
+    """``(model, explanation)`` of ``auto`` for the whole run, or None."""
     from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain
 
-    if not MODEL_ERRORS_FILE.exists():
-        return ('<p class="note">Model choice: no study table (fem/model_errors.csv); run '
-                "<code>mkm study</code>.</p>")
-    choice = AutoModel(tolerance=tolerance).choose(evaluation_pressures(steps), muscle["D0_mm"],
-                                                  muscle["t0_mm"], muscle["eps"])
-    lines = "<br>".join(esc(line) for line in explain(choice, tolerance).splitlines())
-    return (f"<p><b>Model choice for this scene</b> (<code>--model auto --tolerance "
-            f"{100 * tolerance:g}%</code>, from the study table fem/model_errors.csv):<br>"
-            f"{lines}.</p>")
+    if r.run.steps.empty or not MODEL_ERRORS_FILE.exists():
+        return None
+    m = r.muscle
+    choice = AutoModel(tolerance=tolerance).choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"],
+                                                  m["eps"])
+    return str(choice["model_used"][0]), explain(choice, tolerance)
+
+
+def _auto_paragraph(r: _Run, tolerance: float) -> str:
+    """The one model ``--model auto`` uses for this run (the choice only: the fallback FE is
+    not solved for it)."""
+    choice = _auto_choice(r, tolerance)
+    if choice is None:
+        return ""
+    lines = "<br>".join(esc(line) for line in choice[1].splitlines())
+    return (f"<p><b>Model choice for run {r.k}</b> (<code>--model auto --tolerance "
+            f"{100 * tolerance:g}%</code>, one model for the whole run, from the study table "
+            f"mkm/data/model_errors.csv):<br>{lines}.</p>")
 
 
 def _surrogate_section(out: Path, prov: dict) -> str:
@@ -300,7 +586,7 @@ def _surrogate_section(out: Path, prov: dict) -> str:
 
     if not FE_REFERENCE.exists():
         return head + (f'<p class="note">No FE reference at {esc(FE_REFERENCE)}: build it '
-                       "with the surrogate package's reference command.</p>")
+                       "with <code>mkm surrogate reference</code>.</p>")
     model = surrogate.default_model()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # out-of-domain points are flagged per point below
@@ -323,8 +609,8 @@ def _surrogate_section(out: Path, prov: dict) -> str:
     prov["surrogate"] = {"model": model.name, "params": model.params(),
                          "trained": model.metadata.get("trained"),
                          "dataset": model.metadata.get("dataset"),
-                         f"seconds_{len(points)}_points": seconds}
-    prov["fe-reference"] = {"file": FE_REFERENCE.name, "header": _comment_header(FE_REFERENCE)}
+                         "seconds_per_point": seconds / max(len(points), 1)}
+    prov["fe-reference"] = {"file": FE_REFERENCE.name, "header": _reference_header()}
     keys = ["surrogate", "fe-reference"]
     fig_path = save_figure(surrogate_fe_figure(points, f"{model.name} against our FE model "
                                                "(the paper's Figure 6)"),
@@ -333,24 +619,22 @@ def _surrogate_section(out: Path, prov: dict) -> str:
         table_html(result, "The paper's Table 3 with our numbers: largest |Err%| (Equation 7), "
                    "RMSE and largest error of the default surrogate against our FE model "
                    f"(I-III: the paper's muscles; others: off-grid muscles). All {len(points)} "
-                   f"points predicted in one call in {1e3 * seconds:.2f} ms (the paper: 131 ms "
-                   "for 33). " + provenance_links(keys)),
+                   f"points predicted in one call: {seconds / max(len(points), 1):.2g} s per "
+                   "force (the paper: 131 ms for 33, 4 ms per force). "
+                   + provenance_links(keys)),
         figure_html(fig_path, "FE forces (dots) and the surrogate (lines) per test muscle; "
                     "right: Err% per pressure. " + provenance_links(keys)),
     ])
 
 
-def _comment_header(path: Path) -> list[str]:
-    lines = []
-    with open(path, encoding="utf-8") as f:
-        for line in f:
-            if not line.startswith("#"):
-                break
-            lines.append(line[1:].strip())
-    return lines
+def _reference_header() -> dict:
+    """Metadata of the shipped FE reference (its JSON sidecar or its comment header)."""
+    from surrogate.testset import FE_REFERENCE
 
-
-def _provenance_section(prov: dict) -> str:
-    items = "".join(f'<h3 id="prov-{esc(k)}">{esc(k)}</h3><pre>'
-                    f"{esc(json.dumps(v, indent=1, default=str))}</pre>" for k, v in prov.items())
-    return "<h2>Provenance</h2>" + items
+    sidecar = FE_REFERENCE.with_suffix(".json")
+    if sidecar.exists():
+        return json.loads(sidecar.read_text(encoding="utf-8"))
+    try:
+        return read_prediction_header(FE_REFERENCE)
+    except (ValueError, OSError):
+        return {}

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import base64
+import json
+import os
 import re
 import shutil
 import struct
 import subprocess
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -16,11 +19,12 @@ import pytest
 from bench.config import load_config
 from bench.run import acquire
 from fem.calibration import calibrated
+from fem.interface import Domain
 from fem.ladder import make_model
 from fem.paper import equation7_err_pct
 from mkm.prediction_cache import cached_predict
 from mkm.registry import parse_specs as parse_models
-from mkm.report import build_report
+from mkm.report import build_report, domain_pressures
 
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 
@@ -64,14 +68,16 @@ def _png_size(data: bytes) -> tuple[int, int]:
 def test_report_is_self_contained_with_figures_embedded(report):
     path, html = report
     images = re.findall(r'<img src="data:image/png;base64,([^"]+)"', html)
-    assert len(images) == 2  # one force/error figure per run
+    # per run: signals and force/error; the two runs of one muscle overlaid; speed-accuracy
+    assert len(images) == 2 * 2 + 1 + 1
     for encoded in images:
         width, height = _png_size(base64.b64decode(encoded))
         assert width > 500 and height > 300
     assert not re.search(r'(src|href)="(https?:|//)', html)  # no external asset
     assert "<script" not in html and "<link" not in html
     for name in ("run1_force_error.png", "run2_force_error.png", "run1_errors.csv",
-                 "summary.csv"):
+                 "summary.csv", "overlay1.png", "run1_signals.png", "run1_signals.csv",
+                 "speed_accuracy.png", "provenance.json"):
         assert (path.parent / name).stat().st_size > 0
 
 
@@ -91,9 +97,10 @@ def test_err_pct_and_summary_match_hand_computation(runs, report):
     np.testing.assert_allclose(eq2["err_pct"], err, rtol=1e-5, atol=1e-4)
     summary = pd.read_csv(path.parent / "summary.csv")
     row = summary[(summary["run"] == runs[0].name) & (summary["model"] == "eq2")].iloc[0]
-    assert row["max_abs_err_pct"] == pytest.approx(np.abs(err).max(), rel=1e-9)
-    assert row["rmse_N"] == pytest.approx(np.sqrt(np.mean((F_meas - F) ** 2)), rel=1e-9)
-    assert row["max_abs_residual_N"] == pytest.approx(np.abs(F_meas - F).max(), rel=1e-9)
+    # summary.csv keeps 6 significant digits too
+    assert row["max_abs_err_pct"] == pytest.approx(np.abs(err).max(), rel=1e-5)
+    assert row["rmse_N"] == pytest.approx(np.sqrt(np.mean((F_meas - F) ** 2)), rel=1e-5)
+    assert row["max_abs_residual_N"] == pytest.approx(np.abs(F_meas - F).max(), rel=1e-5)
     assert row["valid_points"] == row["points"] == len(steps)
 
 
@@ -115,18 +122,23 @@ def test_invalid_points_are_reported_not_scored(runs, report):
     errors = pd.read_csv(path.parent / "run1_errors.csv")
     invalid = errors[errors["model"] == "eq2:theta0_deg=50"]
     assert invalid["force_N"].isna().all() and invalid["err_pct"].isna().all()
-    assert "eq2:theta0_deg=50: " in html and "shown as crosses" in html
+    assert "[eq2:theta0_deg=50]: " in html and "shown as crosses above the axes" in html
 
 
 def test_aborted_run_is_reported_as_aborted(runs, report):
     _, html = report
-    section = html.split("<h2>Run 2")[1].split("<h2>")[0]
-    assert "status: aborted" in section
+    section = html.split('<h2 id="run-2">')[1].split("<h2")[0]
+    assert re.search(r"status: <b><span[^>]*>aborted<", section)
     assert "force interlock" in section
     kept = pd.read_csv(runs[1] / "steps.csv")
     assert 0 < len(kept) < 5  # the interlock stopped the staircase part way
-    assert f"Kept: {len(kept)} settled step(s)" in section
-    assert "status: complete" in html.split("<h2>Run 2")[0]
+    # 5 pressures up, 4 down (the top step is not repeated)
+    assert f"Kept: {len(kept)} settled step(s) of 9" in section
+    # the interlock is marked on the time traces at the first flagged sample
+    samples = pd.read_csv(runs[1] / "samples.csv")
+    first = samples.loc[samples["flags"].fillna("").str.contains("interlock"), "time_s"].min()
+    assert f"Event: force interlock at {first:.1f} s" in section
+    assert re.search(r"status: <b><span[^>]*>complete<", html.split('<h2 id="run-2">')[0])
 
 
 def test_every_table_and_figure_names_its_provenance(report):
@@ -168,7 +180,8 @@ def test_second_report_reads_the_fe_from_the_cache(runs, tmp_path):
 def test_surrogate_section_is_table3_with_our_numbers(runs, tmp_path):
     path = build_report(runs[:1], parse_models("eq2"), out_dir=tmp_path, tolerance=0.02)
     html = path.read_text(encoding="utf-8")
-    assert html.count('src="data:image/png;base64,') == 2  # the run, and the paper's Figure 6
+    # the run's signals and forces, the speed-accuracy chart, and the paper's Figure 6
+    assert html.count('src="data:image/png;base64,') == 4
     points = pd.read_csv(tmp_path / "surrogate_vs_fe.csv")
     summary = pd.read_csv(tmp_path / "surrogate_vs_fe_summary.csv").set_index("muscle")
     for muscle in ("I", "II", "III"):
@@ -179,10 +192,10 @@ def test_surrogate_section_is_table3_with_our_numbers(runs, tmp_path):
                                                                       abs=2e-4)
     # the paper's figures sit beside ours (data/reference/paper_table3.csv)
     assert summary.loc["I", "paper's best net: largest |Err%|"] == 6.55
-    assert "Model choice for this scene" in html  # the auto choice, from fem/model_errors.csv
-    choice = html.split("Model choice for this scene")[1].split("</p>")[0]
+    assert "Model choice for run 1" in html  # the auto choice, from mkm/data/model_errors.csv
+    choice = html.split("Model choice for run 1")[1].split("</p>")[0]
     counts = [int(n) for n in re.findall(r"for (\d+) of", choice)]
-    assert sum(counts) == len(pd.read_csv(runs[0] / "steps.csv"))
+    assert counts == [len(pd.read_csv(runs[0] / "steps.csv"))]  # one model for the whole run
 
 
 def test_unknown_model_spec_is_a_clear_error(runs, tmp_path):
@@ -192,26 +205,99 @@ def test_unknown_model_spec_is_a_clear_error(runs, tmp_path):
         parse_models("axisym:coarse")
 
 
+def test_summary_table_comes_first_and_names_the_best_model(runs, report):
+    path, html = report
+    assert html.index('id="summary"') < html.index('id="overlay"') < html.index('id="run-1"')
+    summary = pd.read_csv(path.parent / "summary.csv")
+    assert summary.select_dtypes("number").shape[1] == summary.shape[1] - 2  # run, model
+    one = summary[(summary["run"] == runs[0].name) & (summary["valid_points"]
+                                                      == summary["points"])]
+    best = one.loc[one["max_abs_err_pct"].idxmin()]
+    row = html.split('id="summary"')[1].split("</tr>")[1]  # the first run's row
+    assert "Thick-wall (Klute-Hannaford) [thickwall]" in row or best["model"] != "thickwall"
+    assert f"[{best['model']}]" in row and f"<td>{best['max_abs_err_pct']:.2f}</td>" in row
+    assert f"<td>{best['rmse_N']:.2f}</td>" in row
+    # the paper's names, the spec beside
+    assert re.search(r"<td>Equation 2 \(Chou-Hannaford\)</td>\s*<td>eq2</td>", html)
+
+
+def test_averaging_windows_are_where_the_step_means_come_from(runs, report):
+    """The green windows of the time traces hold exactly the samples each step averaged."""
+    path, _ = report
+    steps = pd.read_csv(runs[0] / "steps.csv")
+    samples = pd.read_csv(runs[0] / "samples.csv")
+    for row in steps.itertuples():
+        # the hold: the samples after the settling time, up to and including end_s
+        hold = samples[(samples["time_s"] > row.start_s + row.settle_s + 1e-9)
+                       & (samples["time_s"] <= row.end_s + 1e-9) & (samples["step"] == row.step)]
+        assert len(hold) == row.n
+        assert hold["force_N"].mean() == pytest.approx(row.force_N_mean, rel=1e-5)
+    signals = pd.read_csv(path.parent / "run1_signals.csv")
+    assert signals["n"].sum() == len(samples)  # every sample is in a bin
+
+
+def test_provenance_is_folded_with_the_json_beside(report):
+    path, html = report
+    assert html.count("<details>") == 1 and html.index("<details>") > html.index('id="run-2"')
+    prov = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
+    assert {"software", "run-1", "run-2", "model-eq2", "model-thickwall"} <= set(prov)
+    assert html.count("<pre>") == len(prov)  # one block each, inside the fold
+
+
+class _Bounded:
+    """A model with a pressure domain [0, 2.5] bar, like a surrogate."""
+
+    domain = Domain(pressure_bar=(0.0, 2.5))
+
+
+def test_pressures_within_the_regulator_tolerance_of_the_domain_edge_are_inside():
+    P = np.array([2.5001, 2.53, 2.6, 1.0, 0.0])
+    np.testing.assert_array_equal(domain_pressures(_Bounded(), P, 0.03),
+                                  [2.5, 2.5, 2.6, 1.0, 0.0])  # 2.6 bar: a real extrapolation
+    np.testing.assert_array_equal(domain_pressures(make_model("eq2"), P, 0.03), P)
+
+
+def _page_ink(png: Path) -> float:
+    """Share of pixels that are not near-white (a blank page: ~0)."""
+    from matplotlib.image import imread
+
+    pixels = imread(png)[..., :3]
+    return float((pixels.min(axis=2) < 0.9).mean())
+
+
 @pytest.mark.skipif(not shutil.which(CHROMIUM), reason="chromium is not installed")
 def test_report_renders_in_headless_chromium(report, tmp_path):
-    _, html = report
+    """Screenshots of the summary, the overlay, the time traces and the speed-accuracy chart
+    (kept in $MKM_SCREENSHOTS if set, to be looked at)."""
+    path, html = report
     # A probe copy records each image's decoded size once the page has loaded; the report
     # itself stays script-free.
-    probe = tmp_path / "probe.html"
+    probe = path.parent / "probe.html"
     probe.write_text(html.replace("</body>", '<script>addEventListener("load",()=>document.body'
                                   '.setAttribute("data-imgs",[...document.images].map(i=>'
                                   'i.naturalWidth+"x"+i.naturalHeight).join(",")))</script>'
                                   "</body>"), encoding="utf-8")
-    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars"]
+    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+             "--disable-component-update", "--disable-sync", "--no-first-run",
+             "--hide-scrollbars", f"--user-data-dir={tmp_path / 'profile'}"]
     dom = subprocess.run([CHROMIUM, *flags, "--dump-dom", probe.as_uri()], capture_output=True,
                          text=True, timeout=90, check=True).stdout
     sizes = re.search(r'data-imgs="([^"]*)"', dom).group(1).split(",")
-    assert len(sizes) == 2
+    assert len(sizes) == 6
     for size in sizes:
         width, height = map(int, size.split("x"))
         assert width > 500 and height > 300
-    shot = tmp_path / "page.png"
-    subprocess.run([CHROMIUM, *flags, "--window-size=1280,1600", f"--screenshot={shot}",
-                    probe.as_uri()], capture_output=True, timeout=90, check=True)
-    assert _png_size(shot.read_bytes()) == (1280, 1600)
-    assert shot.stat().st_size > 50_000  # a blank page compresses to a few kB
+    keep = os.environ.get("MKM_SCREENSHOTS")
+    for anchor in ("summary", "overlay", "run-1", "speed"):
+        # a copy of the page that starts at the section: the viewport shows it
+        part = path.parent / f"shot-{anchor}.html"
+        start = html.index(f'<h2 id="{anchor}"')
+        part.write_text(html[:html.index("<h1>")] + html[start:], encoding="utf-8")
+        shot = tmp_path / f"report-{anchor}.png"
+        subprocess.run([CHROMIUM, *flags, "--window-size=1280,1400", f"--screenshot={shot}",
+                        part.as_uri()], capture_output=True, timeout=90, check=True)
+        assert _png_size(shot.read_bytes()) == (1280, 1400)
+        assert _page_ink(shot) > 0.03, anchor  # text, tables and figures, not a blank page
+        if keep:
+            Path(keep).mkdir(parents=True, exist_ok=True)
+            shutil.copy2(shot, Path(keep) / shot.name)
