@@ -3,9 +3,10 @@
 The reference work's purpose is choosing a muscle's geometry "according to the required force"
 (Antonelli et al. 2025); this module answers that question with the project's models:
 
-1. **Search.** Every candidate of the design box (``D0_mm`` x ``t0_mm`` on a fine grid, times
-   the values of ``L0_mm``, ``theta0_deg`` and the rubber that the constraints allow) is predicted
-   by the surrogate in one vectorised call per requirement. A candidate is *feasible* when its
+1. **Search.** The candidates of the design box (``D0_mm`` x ``t0_mm``, coarse to fine, times
+   the values of ``L0_mm``, ``theta0_deg`` and the rubber that the constraints allow) are
+   predicted by the surrogate in vectorised calls, one per requirement and grid. A candidate is
+   *feasible* when its
    predicted force minus the surrogate's uncertainty (:func:`surrogate_uncertainty`) meets every
    requirement, no requirement lies past its braid lock, and it fits the housing (outer diameter
    at the working pressure, :func:`outer_diameter_mm`). Feasible candidates are ranked by the
@@ -55,9 +56,11 @@ from mkm.registry import ENTRIES, parse_spec
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
 DEFAULT_RUBBER = "silastic_s"
-#: Search resolution: 0.05 mm in D0 and 0.01 mm in t0 (the paper's box, 20 x 2 mm, gives
-#: 401 x 201 = 80,601 candidates), 5 values across a range of L0 or theta0.
-D0_STEP_MM, T0_STEP_MM, AXIS_VALUES = 0.05, 0.01, 5
+#: Search resolution: a coarse grid of 0.5 mm in D0 and 0.1 mm in t0 (the paper's box, 20 x
+#: 2 mm: 41 x 21 = 861 candidates per family), refined to 0.05 mm and 0.01 mm over the coarse
+#: cells around the best ``SEEDS`` coarse candidates (441 candidates each); 5 values across a
+#: range of L0 or theta0. A Gaussian-process surrogate takes ~25 us a point with its std.
+COARSE_STEPS, D0_STEP_MM, T0_STEP_MM, SEEDS, AXIS_VALUES = (0.5, 0.1), 0.05, 0.01, 8, 5
 #: Verified designs differ by at least 5 % of the box span in some searched parameter.
 MIN_SEPARATION = 0.05
 #: A requirement is near the braid lock from 75 % of Equation 2's eps_max on: the pressure term
@@ -264,13 +267,20 @@ def surrogate_uncertainty(model: ForceModel, prediction, force_N: float) -> tupl
     """
     shape = np.shape(prediction.force_N)
     if "force_std_N" in prediction.extras:
+        coverage = ((getattr(model, "metadata", None) or {}).get("metrics") or {}).get(
+            "muscle_held_out", {}).get("within_2std", {}).get("median")
+        told = (f" (held-out muscles within 2 std: {100 * coverage:.0f} %)"
+                if coverage is not None else "")
         return (STD_FACTOR * np.asarray(prediction.extras["force_std_N"], dtype=float),
-                f"{STD_FACTOR:g} x the surrogate's predictive standard deviation")
+                f"{STD_FACTOR:g} x the surrogate's predictive standard deviation{told}")
     metrics = (getattr(model, "metadata", None) or {}).get("metrics") or {}
     recorded = []
-    if metrics.get("max_abs_test_N"):
-        recorded.append(float(metrics["max_abs_test_N"]["max"]))
-    recorded += [float(m["max_abs_error_N"]) for m in metrics.get("test_muscles") or []]
+    for table in (metrics, metrics.get("muscle_held_out") or {}):  # per split / per muscle
+        if isinstance(table.get("max_abs_test_N"), dict):
+            recorded.append(float(table["max_abs_test_N"]["max"]))
+    tests = metrics.get("test_muscles")
+    if isinstance(tests, list):  # a dict says why they were not evaluated
+        recorded += [float(m["max_abs_error_N"]) for m in tests if "max_abs_error_N" in m]
     if recorded:
         worst = max(recorded)
         return (np.full(shape, RECORDED_ERROR_FACTOR * worst),
@@ -302,32 +312,61 @@ class Search:
         return self.candidates[self.candidates["feasible"]]
 
 
-def _axis(bounds, step=None, n=AXIS_VALUES) -> np.ndarray:
+def _axis(bounds, step=None, count=AXIS_VALUES) -> np.ndarray:
+    """Values from ``low`` to ``high`` (both included): ``step`` apart or ``count`` of them."""
     low, high = bounds
     if low == high:
-        return np.array([low])
-    count = int(round((high - low) / step)) + 1 if step else n
+        return np.array([float(low)])
+    if step:
+        count = int(round((high - low) / step)) + 1
     return np.linspace(low, high, count)
 
 
-def _surrogate_for(spec, L0, theta0, rubber, trained):
-    """The surrogate at ``(L0, theta0, rubber)``: passed as build parameters when the registry
-    entry lists them, else they must be what the surrogate was trained at."""
-    at = {"L0_mm": float(trained.get("L0_mm", L0_MM)), "theta0_deg": trained.get("theta0_deg"),
-          "rubber": trained.get("rubber", DEFAULT_RUBBER)}
+PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")  # besides the predict() inputs
+
+
+def _predicts_at(model) -> dict:
+    """The muscle parameters a surrogate predicts at: its own ``parameters`` when it has them,
+    else what its training data held fixed (``metadata["dataset"]["fixed"]``); Silastic S
+    where nothing is recorded of the rubber."""
+    at = dict(getattr(model, "parameters", None) or {})
+    if not at:
+        fixed = (getattr(model, "metadata", None) or {}).get("dataset", {}).get("fixed") or {}
+        at = {k: float(fixed[k]) for k in PARAMETERS if fixed.get(k) is not None}
+    rubber = MATERIALS[DEFAULT_RUBBER]
+    return {"L0_mm": L0_MM, "C10_MPa": rubber.C10_MPa, "C01_MPa": rubber.C01_MPa} | at
+
+
+def _surrogate_for(spec, base, L0, theta0, rubber):
+    """The surrogate ``base`` (built from ``spec``) at ``(L0, theta0, rubber)``.
+
+    A parameter is passed to the surrogate only when the registry entry lists it (a build
+    parameter); any other must equal what the surrogate predicts at, or the constraint conflicts
+    with it (named in the ``ValueError``).
+    """
+    listed = set(ENTRIES["surrogate"].params) - {k for k, _ in spec.params}
+    material = MATERIALS[rubber]
+    wanted = {"L0_mm": float(L0), "theta0_deg": float(theta0), "C10_MPa": material.C10_MPa,
+              "C01_MPa": material.C01_MPa}
+    at = _predicts_at(base)
     params, conflicts = {}, []
-    for key, value in (("L0_mm", L0), ("theta0_deg", theta0), ("rubber", rubber)):
-        if key in ENTRIES["surrogate"].params:
-            if key not in dict(spec.params):
-                params[key] = value
-        elif at[key] is not None and (value != at[key] if key == "rubber"
-                                      else not np.isclose(value, float(at[key]))):
-            conflicts.append(f"{key}={value:g}" if key != "rubber" else f"rubber={value}")
+    if "rubber" in listed:
+        params["rubber"] = rubber
+    for key, value in wanted.items():
+        if key in listed:
+            params[key] = value
+        elif key in ("C10_MPa", "C01_MPa") and "rubber" in params:
+            continue
+        elif key in at and not np.isclose(value, at[key], rtol=1e-9, atol=0.0):
+            conflicts.append(f"rubber={rubber}" if key.startswith("C") else f"{key}={value:g}")
     if conflicts:
-        trained_at = ", ".join(f"{k}={v:g}" if isinstance(v, float) else f"{k}={v}"
-                               for k, v in at.items() if v is not None)
-        raise ValueError(f"constraint {', '.join(conflicts)} conflicts with the surrogate "
-                         f"{spec.text!r}: it was trained at {trained_at} only")
+        told = ", ".join(f"{k}={v:g}" for k, v in at.items())
+        raise ValueError(f"constraint {', '.join(dict.fromkeys(conflicts))} conflicts with the "
+                         f"surrogate {spec.text!r}: it predicts at {told} only")
+    if not params:
+        return base
+    if hasattr(base, "with_parameters") and "rubber" not in params:
+        return base.with_parameters(**params)  # the same fitted model, no reload
     return _build(spec.with_params(**params).text)
 
 
@@ -339,7 +378,13 @@ def _build(text: str) -> ForceModel:
 
 def search(requirements, constraints: Constraints | dict | None = None,
            objective: str = "min-outer-diameter", surrogate: str = "surrogate") -> Search:
-    """Predict every candidate of the design box with the surrogate and rank the feasible ones.
+    """Predict the candidates of the design box with the surrogate and rank the feasible ones.
+
+    Coarse to fine: every candidate of a coarse grid (:data:`COARSE_STEPS` in D0 and t0, times
+    the values of L0, theta0 and rubber), then a fine grid (:data:`D0_STEP_MM`,
+    :data:`T0_STEP_MM`) over the coarse cells around the best :data:`SEEDS` coarse candidates
+    (the feasible ones first): the optimum lies on the boundary of the feasible region, within a
+    coarse cell of a feasible coarse candidate.
 
     Raises ``ValueError`` (one line) for conflicting constraints, requirements past the braid
     lock or outside the surrogate's training box, and when no candidate is feasible (naming the
@@ -358,72 +403,111 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if spec.name != "surrogate":
         raise ValueError(f"--surrogate {surrogate!r}: expected a surrogate spec "
                          "(surrogate, surrogate:kind=gp, surrogate:path=DIR)")
-    first = _build(spec.text)
-    domain = first.domain
-    trained = (getattr(first, "metadata", None) or {}).get("dataset", {}).get("fixed", {})
-    theta0_default = float(trained.get("theta0_deg") or calibrated("axisym")["theta0_deg"])
+    base = _build(spec.text)
+    domain = base.domain
+    at = _predicts_at(base)
+    theta0_default = float(at.get("theta0_deg") or calibrated("axisym")["theta0_deg"])
     box = {"D0_mm": constraints.D0_mm or tuple(domain.D0_mm),
            "t0_mm": constraints.t0_mm or tuple(domain.t0_mm),
-           "L0_mm": constraints.L0_mm or (float(trained.get("L0_mm", L0_MM)),) * 2,
+           "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
            "theta0_deg": constraints.theta0_deg or (theta0_default,) * 2}
-    _check_conflicts(requirements, constraints, box, domain)
+    _check_conflicts(requirements, constraints, box, domain, getattr(base, "box", {}))
     P_work = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
-
-    D0, t0 = np.meshgrid(_axis(box["D0_mm"], D0_STEP_MM), _axis(box["t0_mm"], T0_STEP_MM),
-                         indexing="ij")
-    D0, t0 = D0.ravel(), t0.ravel()
-    models = {(float(L0), float(theta0), rubber): _surrogate_for(spec, L0, theta0, rubber,
-                                                                 trained)
+    models = {(float(L0), float(theta0), rubber): _surrogate_for(spec, base, L0, theta0, rubber)
               for L0 in _axis(box["L0_mm"]) for theta0 in _axis(box["theta0_deg"])
               for rubber in constraints.rubber}
-    start = time.perf_counter()  # the search proper: models are built (or loaded) once
-    frames, uncertainty = [], ""
-    for (L0, theta0, rubber), model in models.items():
-        frame = pd.DataFrame({"D0_mm": D0, "t0_mm": t0, "L0_mm": L0,
-                              "theta0_deg": theta0, "rubber": rubber})
-        frame["outer_diameter_mm"] = outer_diameter_mm(D0, t0, theta0, P_work,
-                                                       MATERIALS[rubber])
-        frame["rubber_volume_cm3"] = rubber_volume_cm3(D0, t0, L0)
-        eps_max = float(chou_hannaford_eps_max(theta0))
-        for k, req in enumerate(requirements, start=1):
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")  # the box lies inside the domain
-                pred = model.predict(req.pressure_bar, D0, t0, req.eps)
-            u, uncertainty = surrogate_uncertainty(model, pred, req.force_N)
-            reachable = req.eps < eps_max
-            force = np.where(pred.valid & reachable, pred.force_N, np.nan)
-            frame[f"r{k}_surrogate_N"] = force
-            frame[f"r{k}_uncertainty_N"] = u
-            frame[f"r{k}_shortfall_N"] = np.nan_to_num(req.force_N + u - force,
-                                                       nan=np.inf)
-        frames.append(frame)
-    cand = pd.concat(frames, ignore_index=True)
-    n = len(requirements)
-    shortfall = cand[[f"r{k}_shortfall_N" for k in range(1, n + 1)]].to_numpy()
-    forces = np.array([r.force_N for r in requirements])
-    cand["min_margin_pct"] = 100.0 * np.min(-shortfall / forces, axis=1)
-    cand["meets_forces"] = (shortfall <= 0).all(axis=1)
-    fits = (np.ones(len(cand), dtype=bool) if constraints.max_outer_diameter_mm is None
-            else cand["outer_diameter_mm"].to_numpy() <= constraints.max_outer_diameter_mm)
-    cand["fits_housing"] = fits
-    cand["feasible"] = cand["meets_forces"] & fits
+
+    start = time.perf_counter()  # the search proper: the surrogates are loaded once
+    evaluate = _Evaluator(models, requirements, P_work, constraints.max_outer_diameter_mm)
+    D0c = _axis(box["D0_mm"], count=_coarse_count(box["D0_mm"], COARSE_STEPS[0]))
+    t0c = _axis(box["t0_mm"], count=_coarse_count(box["t0_mm"], COARSE_STEPS[1]))
+    D0, t0 = (a.ravel() for a in np.meshgrid(D0c, t0c, indexing="ij"))
+    coarse = pd.concat([evaluate(family, D0, t0) for family in models], ignore_index=True)
+    coarse = _rank(coarse, objective)
+    seeds = pd.concat([coarse[coarse["feasible"]], coarse[~coarse["feasible"]].sort_values(
+        "min_margin_pct", ascending=False)]).head(SEEDS)
+    dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
+    dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
+    fine = []
+    for _, seed in seeds.iterrows():
+        D0f = _axis((max(seed["D0_mm"] - dD0, box["D0_mm"][0]),
+                     min(seed["D0_mm"] + dD0, box["D0_mm"][1])), D0_STEP_MM)
+        t0f = _axis((max(seed["t0_mm"] - dt0, box["t0_mm"][0]),
+                     min(seed["t0_mm"] + dt0, box["t0_mm"][1])), T0_STEP_MM)
+        D0, t0 = (a.ravel() for a in np.meshgrid(D0f, t0f, indexing="ij"))
+        fine.append(evaluate((seed["L0_mm"], seed["theta0_deg"], seed["rubber"]), D0, t0))
+    cand = pd.concat([coarse, *fine], ignore_index=True)
+    cand = cand.round({"D0_mm": 9, "t0_mm": 9}).drop_duplicates(
+        ["D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber"])
     cand = _rank(cand, objective)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
-                    float(P_work), uncertainty, time.perf_counter() - start, models)
+                    float(P_work), evaluate.uncertainty, time.perf_counter() - start, models)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
 
 
-def _check_conflicts(requirements, constraints, box, domain) -> None:
-    """One ``ValueError`` naming every conflict between requirements, constraints and models."""
+def _coarse_count(bounds, step) -> int:
+    return int(np.ceil((bounds[1] - bounds[0]) / step - 1e-9)) + 1
+
+
+class _Evaluator:
+    """Surrogate forces, margins and the housing check of candidates of one design family."""
+
+    def __init__(self, models, requirements, P_work, max_outer_diameter_mm):
+        self.models, self.requirements = models, requirements
+        self.P_work, self.limit = P_work, max_outer_diameter_mm
+        self.uncertainty = ""
+
+    def __call__(self, family, D0, t0) -> pd.DataFrame:
+        L0, theta0, rubber = family
+        model = self.models[(float(L0), float(theta0), rubber)]
+        frame = pd.DataFrame({"D0_mm": D0, "t0_mm": t0, "L0_mm": float(L0),
+                              "theta0_deg": float(theta0), "rubber": rubber})
+        frame["outer_diameter_mm"] = outer_diameter_mm(D0, t0, theta0, self.P_work,
+                                                       MATERIALS[rubber])
+        frame["rubber_volume_cm3"] = rubber_volume_cm3(D0, t0, L0)
+        eps_max = float(chou_hannaford_eps_max(theta0))
+        shortfall = np.empty((len(frame), len(self.requirements)))
+        for k, req in enumerate(self.requirements, start=1):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # the box lies inside the domain
+                pred = model.predict(req.pressure_bar, D0, t0, req.eps)
+            u, self.uncertainty = surrogate_uncertainty(model, pred, req.force_N)
+            force = np.where(pred.valid & (req.eps < eps_max), pred.force_N, np.nan)
+            frame[f"r{k}_surrogate_N"] = force
+            frame[f"r{k}_uncertainty_N"] = u
+            shortfall[:, k - 1] = np.nan_to_num(req.force_N + u - force, nan=np.inf)
+        forces = np.array([r.force_N for r in self.requirements])
+        frame["min_margin_pct"] = 100.0 * np.min(-shortfall / forces, axis=1)
+        frame["meets_forces"] = (shortfall <= 0).all(axis=1)
+        frame["fits_housing"] = (True if self.limit is None
+                                 else frame["outer_diameter_mm"] <= self.limit)
+        frame["feasible"] = frame["meets_forces"] & frame["fits_housing"]
+        return frame
+
+
+def _check_conflicts(requirements, constraints, box, domain, parameter_box) -> None:
+    """One ``ValueError`` naming every conflict between requirements, constraints and models.
+
+    ``parameter_box``: the surrogate's training box of its muscle parameters (``L0_mm``, ...),
+    empty for a surrogate of the geometry alone.
+    """
     problems = []
-    for key in ("D0_mm", "t0_mm"):
+    spans = {"D0_mm": tuple(domain.D0_mm), "t0_mm": tuple(domain.t0_mm)}
+    spans |= {k: tuple(parameter_box[k]) for k in ("L0_mm", "theta0_deg") if k in parameter_box}
+    for key, (dlo, dhi) in spans.items():
         low, high = box[key]
-        dlo, dhi = getattr(domain, key)
-        if low < dlo - 1e-9 or high > dhi + 1e-9:
+        if low < dlo - 1e-9 * max(abs(dlo), 1) or high > dhi + 1e-9 * max(abs(dhi), 1):
             problems.append(f"{key}={_span(low, high)} reaches outside the surrogate's "
-                            f"training box {dlo:g}:{dhi:g} mm")
+                            f"training box {dlo:g}:{dhi:g}")
+    for rubber in constraints.rubber:
+        for key in ("C10_MPa", "C01_MPa"):
+            value = getattr(MATERIALS[rubber], key)
+            if key in parameter_box and not (parameter_box[key][0] <= value
+                                             <= parameter_box[key][1]):
+                problems.append(f"rubber={rubber} ({key}={value:g}) lies outside the "
+                                f"surrogate's training box {_span(*parameter_box[key])}")
     if box["t0_mm"][1] >= box["D0_mm"][0] / 2:
         problems.append(f"t0_mm up to {box['t0_mm'][1]:g} mm conflicts with D0_mm from "
                         f"{box['D0_mm'][0]:g} mm: expected t0 < D0/2")
@@ -754,7 +838,9 @@ def _record(result: DesignResult) -> dict:
             "search": {"candidates": len(s.candidates),
                        "feasible": int(s.candidates["feasible"].sum()),
                        "seconds": s.seconds,
-                       "resolution": {"D0_mm": D0_STEP_MM, "t0_mm": T0_STEP_MM,
+                       "resolution": {"coarse_D0_mm": COARSE_STEPS[0],
+                                      "coarse_t0_mm": COARSE_STEPS[1], "D0_mm": D0_STEP_MM,
+                                      "t0_mm": T0_STEP_MM, "refined_seeds": SEEDS,
                                       "L0_mm and theta0_deg values per range": AXIS_VALUES}},
             "verification": {"model": "axisym", "mesh": result.mesh,
                              "seconds": result.fe_seconds,
