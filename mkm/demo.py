@@ -8,6 +8,7 @@ real bench takes) and writes the validation report comparing them with every mod
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 from mkm.paths import default_out
@@ -30,6 +31,7 @@ def run_demo(out_dir: str | Path | None = None, progress: bool = True,
     from mkm.report import build_report
 
     out = Path(out_dir) if out_dir is not None else default_out("demo")
+    progress = progress and sys.stderr.isatty()
     runs = []
     for eps in DEMO_EPS:
         result = acquire(load_config(eps=eps), backend="sim", clock="virtual",

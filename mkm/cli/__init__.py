@@ -8,6 +8,7 @@ Bad input (a ``ValueError`` from the library or a malformed argument) prints one
 from __future__ import annotations
 
 import argparse
+import os
 import re
 import sys
 
@@ -38,6 +39,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    from mkm.cli.common import has_display
+
+    if not has_display():  # the one place the backend is chosen: files only, no window
+        os.environ.setdefault("MPLBACKEND", "Agg")
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
@@ -46,8 +51,6 @@ def main(argv: list[str] | None = None) -> int:
         print(f"mkm: error: {exc}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # `mkm ... | head`: the reader left, which is not an error
-        import os
-
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
     except KeyboardInterrupt:

@@ -14,7 +14,7 @@ import sys
 
 from bench.backend import BenchError
 from fem.ranges import parse_fraction, parse_number, parse_pressures
-from mkm.cli.common import argtype
+from mkm.cli.common import argtype, has_display
 from mkm.paths import default_out
 
 EXIT_FAILED = 1
@@ -50,7 +50,15 @@ def _add_device_arguments(parser, clock: bool = True) -> None:
 
 
 def register(subparsers) -> None:
-    acquire = subparsers.add_parser("acquire", help="record a pressure staircase on the bench")
+    acquire = subparsers.add_parser(
+        "acquire", help="record a pressure staircase on the bench",
+        description="Record a pressure staircase on the bench (NI USB-6001) or the simulated "
+        "one: tare at 0 bar, then each step held until the force settles and averaged over a "
+        "window; writes a run folder (run.json, samples.csv, steps.csv, commands.csv, "
+        "config.toml) under --out and prints its path last. Ctrl-C stops at a safe point and "
+        "vents. The default staircase (19 steps) takes 3 to 21 min on the real bench, depending "
+        "on settling (`mkm check` prints the estimate); --clock virtual: about a second.",
+        epilog="example: mkm acquire --backend sim --eps 12.2% --out mkm-out/runs")
     _add_device_arguments(acquire)
     acquire.add_argument("--eps", type=argtype(parse_fraction),
                          help="shortening ratio, fraction or percent (default: from the config)")
@@ -62,14 +70,22 @@ def register(subparsers) -> None:
     acquire.add_argument("--no-progress", action="store_true", help="no progress bar")
     acquire.set_defaults(func=_acquire)
 
-    tare = subparsers.add_parser("tare", help="load-cell offset at 0 bar")
+    tare = subparsers.add_parser(
+        "tare", help="load-cell offset at 0 bar",
+        description="Measure the load-cell offset at 0 bar (mean and noise over --seconds) and "
+        "compare it with the config's offset_V.",
+        epilog="example: mkm tare --backend ni --config my_bench.toml --seconds 10")
     _add_device_arguments(tare)
     tare.add_argument("--seconds", type=argtype(_positive_seconds), default=5.0,
                       help="averaging time [s] (default %(default)s)")
     tare.set_defaults(func=_tare)
 
-    cal = subparsers.add_parser("calibrate-loadcell",
-                                help="fit N/V and offset from known masses")
+    cal = subparsers.add_parser(
+        "calibrate-loadcell", help="fit N/V and offset from known masses",
+        description="Fit the load cell's sensitivity [N/V] and offset [V] from known masses hung "
+        "in turn (measured here), or from volts measured elsewhere (--volts).",
+        epilog="example: mkm calibrate-loadcell --masses 0,1,2,5 --volts "
+        "0.015,0.065,0.115,0.265")
     _add_device_arguments(cal)
     cal.add_argument("--masses", required=True, type=argtype(_masses),
                      help="comma list of masses [kg] hung in turn, e.g. 0,1,2,5")
@@ -79,7 +95,11 @@ def register(subparsers) -> None:
                      help="averaging time per mass [s] (default %(default)s)")
     cal.set_defaults(func=_calibrate_loadcell)
 
-    check = subparsers.add_parser("check", help="dry run: device, limits, planned steps, duration")
+    check = subparsers.add_parser(
+        "check", help="dry run: device, limits, planned steps, duration",
+        description="Dry run: open the device, check the configured limits and print the "
+        "planned steps and the expected duration; nothing is pressurised.",
+        epilog="example: mkm check --backend ni --config my_bench.toml")
     _add_device_arguments(check, clock=False)
     check.add_argument("--eps", type=argtype(parse_fraction), help="shortening ratio override")
     check.add_argument("--pressures", type=argtype(parse_pressures), help="pressures override")
@@ -116,8 +136,13 @@ def _acquire(args) -> int:
 
     config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
     check_out_root(args.out)  # bad --out: one line, exit 2, before the device is opened
+    plot = args.plot
+    if plot and not has_display():
+        print("mkm: warning: --plot needs a display and none is set (DISPLAY and "
+              "WAYLAND_DISPLAY are empty): recording without the live plot", file=sys.stderr)
+        plot = False
     result = acquire(config, backend=args.backend, clock=args.clock, out_root=args.out,
-                     progress=not args.no_progress, plot=args.plot)
+                     progress=not args.no_progress, plot=plot)
     if result.path is None:
         print(f"mkm: error: {result.reason}", file=sys.stderr)
         return result.exit_code

@@ -3,11 +3,20 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 
 from fem.ranges import parse_fraction, parse_number, parse_pressures
 from fem.records import write_prediction_csv
 from mkm.registry import ENTRIES, parse_spec
+
+
+def has_display() -> bool:
+    """Whether a plot window can open: always on Windows and macOS; elsewhere an X11 or
+    Wayland display must be named in the environment."""
+    if sys.platform in ("win32", "darwin"):
+        return True
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
 
 
 def argtype(parse, *args):

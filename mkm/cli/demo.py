@@ -9,7 +9,7 @@ def register(subparsers) -> None:
     demo = subparsers.add_parser(
         "demo", help="simulated bench runs of the paper's two tests and their report",
         description="Record the paper's two tests of its prototype (D0 30 mm, t0 3 mm; eps 0 and "
-        "12.2 %%, 0.25 to 2.5 bar up and down) on the simulated bench (virtual clock) and write "
+        "12.2 %, 0.25 to 2.5 bar up and down) on the simulated bench (virtual clock) and write "
         "one validation report of both. The last line printed is the path of report.html. "
         "This is what `make demo` runs.",
         epilog="example: mkm demo --out mkm-out/demo   (then open mkm-out/demo/report/"

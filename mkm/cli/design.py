@@ -14,7 +14,9 @@ def register(subparsers) -> None:
 
     p = subparsers.add_parser(
         "design", help="design a muscle for required forces: surrogate search of the design "
-        "box, FE verification of the best designs", epilog=EXAMPLE)
+        "box, FE verification of the best designs", epilog=EXAMPLE,
+        description="Find muscles (D0, t0) that deliver required forces: a surrogate search of "
+        "the design box, then the best designs verified with the FE model.")
     p.add_argument("--require", action="append", default=[], metavar="F@P,eps=E",
                    type=argtype(parse_requirement, "--require"),
                    help="force at least F [N] at pressure P [bar], held at shortening eps "

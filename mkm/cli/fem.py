@@ -25,10 +25,18 @@ from mkm.paths import default_cache, default_out
 
 def register(subparsers) -> None:
     fem = subparsers.add_parser(
-        "fem", help="physics force models: solve, calibrate, convergence, dataset")
+        "fem", help="physics force models: solve, calibrate, convergence, dataset",
+        description="The physics ladder: Equation 2 (Chou-Hannaford), the thick-wall closed "
+        "form and the axisymmetric FE model (see `mkm models`).",
+        epilog="example: mkm fem solve --model thickwall --D0 35 --t0 2.5 --eps 5%")
     fem_sub = fem.add_subparsers(dest="fem_command", required=True, metavar="COMMAND")
 
-    solve = fem_sub.add_parser("solve", help="force of one muscle over a pressure sweep (CSV)")
+    solve = fem_sub.add_parser(
+        "solve", help="force of one muscle over a pressure sweep (CSV)",
+        description="Force of one muscle over a pressure sweep with any predictor spec (see "
+        "`mkm models`): CSV on stdout, or to --out FILE with the metadata in a .json beside.",
+        epilog="example: mkm fem solve --model axisym:mesh=coarse --D0 35 --t0 2.5 --eps 5% "
+        "--pressures 0:2.5:0.5")
     add_model_arguments(solve)
     add_geometry_arguments(solve)
     solve.add_argument("--out", help="write the CSV here instead of stdout")
@@ -66,8 +74,15 @@ def register(subparsers) -> None:
                      "--update-shipped)")
     cal.set_defaults(func=_calibrate)
 
-    data = fem_sub.add_parser("dataset", help="forces of a model over a grid of muscles (CSV), "
-                              "resumable, on local workers or a Dask cluster")
+    data = fem_sub.add_parser(
+        "dataset", help="forces of a model over a grid of muscles (CSV), resumable, on local "
+        "workers or a Dask cluster",
+        description="Forces of a model over a grid of muscles (the paper's Table 1 by default): "
+        "one cache file per finished job, so an interrupted run resumes; local worker processes "
+        "or a Dask cluster. Writes --out FILE and its .json provenance; a progress bar with an "
+        "estimate runs on stderr.",
+        epilog="example: mkm fem dataset --grid paper --model thickwall --out "
+        "mkm-out/dataset/thickwall.csv")
     data.add_argument("--grid", default="paper",
                       help="'paper' (Table 1 of the paper, 162 points) or a grid TOML file")
     data.add_argument("--model", default="axisym", help=f"one of {', '.join(model_names())} "
@@ -86,8 +101,12 @@ def register(subparsers) -> None:
     add_calibration_argument(data)
     data.set_defaults(func=with_calibration(_dataset))
 
-    conv = fem_sub.add_parser("convergence", help="axisym mesh study: force, dofs and seconds "
-                              "per mesh level, with a chart")
+    conv = fem_sub.add_parser(
+        "convergence", help="axisym mesh study: force, dofs and seconds per mesh level, with a "
+        "chart",
+        description="Mesh study of the axisymmetric FE model at one muscle and pressure: force, "
+        "degrees of freedom and seconds per mesh level; CSV, JSON and PNG under --out.",
+        epilog="example: mkm fem convergence --D0 35 --t0 2.5 --eps 5% --pressure 2.5")
     conv.add_argument("--D0", default=35.0, type=argtype(parse_number, "--D0"),
                       help="inner tube diameter [mm] (default: %(default)s, muscle I)")
     conv.add_argument("--t0", default=2.5, type=argtype(parse_number, "--t0"),

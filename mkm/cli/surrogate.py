@@ -18,11 +18,20 @@ from mkm.paths import default_out
 
 
 def register(subparsers) -> None:
-    sur = subparsers.add_parser("surrogate", help="scikit-learn surrogates of the FE model: "
-                                "grid, train, predict, test, reference")
+    sur = subparsers.add_parser(
+        "surrogate", help="scikit-learn surrogates of the FE model: grid, train, predict, test, "
+        "reference",
+        description="Learned force models trained on the FE dataset: the paper's 27-net grid, "
+        "training and saving, prediction, tests on unseen muscles, the FE reference.",
+        epilog="example: mkm surrogate predict --D0 35 --t0 2.5 --eps 5%")
     sub = sur.add_subparsers(dest="surrogate_command", required=True, metavar="COMMAND")
 
-    grid = sub.add_parser("grid", help="the paper's 27-net study over repeated 80/20 splits")
+    grid = sub.add_parser(
+        "grid", help="the paper's 27-net study over repeated 80/20 splits",
+        description="The paper's Table 2 study: 27 nets (layers x neurons x activation) trained "
+        "over repeated 80/20 splits of the FE dataset; paper_grid.csv, .md and .png under --out. "
+        "Long: minutes per net and seed on two cores (start with --nets and --seeds).",
+        epilog="example: mkm surrogate grid --nets 1,14 --seeds 2 --out mkm-out/surrogate-grid")
     _dataset_argument(grid)
     grid.add_argument("--seeds", type=int, default=10, help="number of splits (default 10)")
     grid.add_argument("--out", default=str(default_out("surrogate-grid")),
@@ -33,7 +42,11 @@ def register(subparsers) -> None:
     grid.add_argument("--nets", help="comma list of Table 2 numbers 1-27 (default: all 27)")
     grid.set_defaults(func=_grid)
 
-    train = sub.add_parser("train", help="fit a surrogate on the FE dataset and save it")
+    train = sub.add_parser(
+        "train", help="fit a surrogate on the FE dataset and save it",
+        description="Fit a surrogate kind on the FE dataset (held-out metrics over repeated "
+        "splits) and save it as a model folder that --model / surrogate:path=DIR accept.",
+        epilog="example: mkm surrogate train --kind gp --out mkm-out/models/gp")
     _dataset_argument(train)
     train.add_argument("--kind", default="best",
                        help="best, mlp-paper, mlp-standardised, gp, physics or "
@@ -41,7 +54,11 @@ def register(subparsers) -> None:
     train.add_argument("--out", help="model folder (default mkm-out/models/<kind>)")
     train.set_defaults(func=_train)
 
-    predict = sub.add_parser("predict", help="forces of one muscle from a saved surrogate (CSV)")
+    predict = sub.add_parser(
+        "predict", help="forces of one muscle from a saved surrogate (CSV)",
+        description="Forces of one muscle over a pressure sweep from the default surrogate or a "
+        "saved one; points outside its training domain are flagged valid=false, with a warning.",
+        epilog="example: mkm surrogate predict --D0 35 --t0 2.5 --eps 5% --pressures 0:2.5:0.5")
     predict.add_argument("--model", default="default",
                          help="folder written by `mkm surrogate train`, or default (the cached "
                          "best surrogate)")
@@ -49,7 +66,11 @@ def register(subparsers) -> None:
     predict.add_argument("--out", help="write the CSV here instead of stdout")
     predict.set_defaults(func=_predict)
 
-    test = sub.add_parser("test", help="test muscles I-V against our FE: Table 3, Figure 6")
+    test = sub.add_parser(
+        "test", help="test muscles I-V against our FE: Table 3, Figure 6",
+        description="Surrogates against our FE reference on the test muscles I-V: the paper's "
+        "Table 3 and Figure 6 with our numbers, under --out.",
+        epilog="example: mkm surrogate test --kind gp --out mkm-out/surrogate-test")
     test.add_argument("--model", action="append",
                       help="saved surrogate folder, or default (repeatable; default: default "
                       "unless --kind is given)")
@@ -62,7 +83,11 @@ def register(subparsers) -> None:
                       help="folder (default %(default)s)")
     test.set_defaults(func=_test)
 
-    ref = sub.add_parser("reference", help="build the FE reference of the test muscles")
+    ref = sub.add_parser(
+        "reference", help="build the FE reference of the test muscles",
+        description="Solve the FE model on the test muscles I-V: the reference `surrogate test` "
+        "and the report compare with. Writes --out; --update-shipped replaces the shipped one.",
+        epilog="example: mkm surrogate reference --mesh coarse --out mkm-out/ref.csv")
     ref.add_argument("--model", default="axisym", help="FE model (default %(default)s)")
     ref.add_argument("--mesh", help="mesh level of the FE model (default: its own)")
     ref.add_argument("--theta0", type=argtype(parse_number, "--theta0"),

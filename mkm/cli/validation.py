@@ -14,7 +14,7 @@ def register(subparsers) -> None:
         "report", help="validation report of bench runs against the force models (HTML)",
         description="Compare bench runs (real or simulated, aborted ones included) with every "
         "force model: a summary table, the runs of one muscle overlaid, pressure and force "
-        "against time, Err%% (Equation 7) and residuals in N, the speed-accuracy chart and the "
+        "against time, Err% (Equation 7) and residuals in N, the speed-accuracy chart and the "
         "model `auto` would choose. Writes report.html (self-contained) with CSVs, PNGs and "
         "provenance.json beside it; prints the path of report.html last.",
         epilog="example: mkm report mkm-out/demo/runs/* --models eq2,thickwall,surrogate "

@@ -153,3 +153,37 @@ def test_installed_console_script_runs():
     assert frame.force_N.iloc[0] == 0.0 and frame.valid.all()
     expected = make_model("thickwall").predict(2.5, 35, 2.5, 0.05).force_N
     assert frame.force_N.iloc[1] == pytest.approx(expected, rel=1e-5)  # CSV keeps 6 digits
+
+
+def _subcommands(parser, prefix=()):
+    import argparse
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield (*prefix, name), sub
+                yield from _subcommands(sub, (*prefix, name))
+
+
+def test_every_subcommand_has_a_description_and_an_example():
+    from mkm.cli import build_parser
+
+    commands = list(_subcommands(build_parser()))
+    assert len(commands) >= 20
+    for name, sub in commands:
+        text = f"{sub.description or ''} {sub.epilog or ''}"
+        assert sub.description, f"mkm {' '.join(name)} has no description"
+        assert "example" in text.lower(), f"mkm {' '.join(name)} has no example"
+        # argparse leaves description and epilog as written: a doubled %% would show
+        assert "%%" not in text, f"mkm {' '.join(name)}: '%%' in the help text"
+
+
+def test_plot_without_a_display_says_so_and_records(monkeypatch, tmp_path, capsys):
+    monkeypatch.setattr(sys, "platform", "linux")
+    monkeypatch.delenv("DISPLAY", raising=False)
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    code, out, err = run(["acquire", "--plot", "--no-progress", "--pressures", "0.5,1",
+                          "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert "mkm: warning: --plot needs a display" in err
+    assert Path(out.strip().splitlines()[-1]).is_dir()  # the run was recorded anyway
