@@ -148,22 +148,39 @@ def file_sha256(path: str | os.PathLike) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
-def write_prediction_csv(prediction, buf) -> None:
-    """CSV of a prediction with a ``#`` comment header naming the model, parameters and timing.
+def sidecar_path(path: str | os.PathLike) -> Path:
+    """The JSON file that holds a CSV's metadata: ``sweep.csv`` -> ``sweep.json``."""
+    return Path(path).with_suffix(".json")
 
-    Read back with ``pandas.read_csv(path, comment="#")``; :func:`read_prediction_header` parses
-    the header.
-    """
-    header = {"model": prediction.model, "params": prediction.params,
-              "seconds": prediction.seconds, "n_points": int(prediction.force_N.size),
-              **provenance()}
-    for key, value in header.items():
-        buf.write(f"# {key}: {json.dumps(value)}\n")
+
+def write_csv_with_sidecar(path: str | os.PathLike, csv_text: str, metadata: dict) -> Path:
+    """A plain CSV (no comment lines: spreadsheets read those as data) at ``path`` and its
+    metadata as JSON beside it (:func:`sidecar_path`), both written atomically."""
+    path = write_atomic(path, csv_text)
+    write_json_atomic(sidecar_path(path), metadata)
+    return path
+
+
+def prediction_metadata(prediction) -> dict[str, Any]:
+    """Model, parameters, timing, number of points and provenance of a prediction."""
+    return {"model": prediction.model, "params": prediction.params,
+            "seconds": prediction.seconds, "n_points": int(prediction.force_N.size),
+            **provenance()}
+
+
+def write_prediction_csv(prediction, buf) -> None:
+    """The prediction as a plain CSV (one row per point) into the text stream ``buf``; its
+    metadata (:func:`prediction_metadata`) goes to a JSON sidecar when written to a file
+    (:func:`write_csv_with_sidecar`)."""
     prediction.to_frame().to_csv(buf, index=False, float_format="%.6g", lineterminator="\n")
 
 
 def read_prediction_header(path) -> dict[str, Any]:
-    """The ``# key: json`` header of a CSV written by :func:`write_prediction_csv`."""
+    """The metadata of a CSV: its JSON sidecar, or (files written before sidecars) its
+    ``# key: json`` comment lines."""
+    sidecar = sidecar_path(path)
+    if sidecar.is_file():
+        return json.loads(sidecar.read_text(encoding="utf-8"))
     header = {}
     with open(path, encoding="utf-8") as f:
         for line in f:

@@ -3,11 +3,17 @@
 from __future__ import annotations
 
 import argparse
+import io
 import os
 import sys
 
 from fem.ranges import parse_fraction, parse_number, parse_pressures
-from fem.records import write_prediction_csv
+from fem.records import (
+    prediction_metadata,
+    sidecar_path,
+    write_csv_with_sidecar,
+    write_prediction_csv,
+)
 from mkm.registry import ENTRIES, parse_spec
 
 
@@ -102,10 +108,12 @@ def model_from_args(args, **overrides):
 
 
 def emit_prediction(prediction, out: str | None) -> None:
-    """The prediction's CSV to ``out`` (announced on stderr) or to stdout."""
+    """The prediction as plain CSV to ``out`` with its metadata in a JSON sidecar (announced on
+    stderr), or the CSV alone to stdout."""
     if out:
-        with open(out, "w", encoding="utf-8", newline="") as f:
-            write_prediction_csv(prediction, f)
-        print(f"wrote {out}", file=sys.stderr)
+        buffer = io.StringIO()
+        write_prediction_csv(prediction, buffer)
+        path = write_csv_with_sidecar(out, buffer.getvalue(), prediction_metadata(prediction))
+        print(f"wrote {path} and {sidecar_path(path).name}", file=sys.stderr)
     else:
         write_prediction_csv(prediction, sys.stdout)

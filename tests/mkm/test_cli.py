@@ -59,7 +59,8 @@ def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, capsys):
     out = tmp_path / "sweep.csv"
     code, stdout, err = run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
                              "--eps", "15%", "--out", str(out)], capsys)
-    assert code == 0 and stdout == "" and err == f"wrote {out}\n"
+    assert code == 0 and stdout == "" and err == f"wrote {out} and sweep.json\n"
+    assert not out.read_text().startswith("#")  # plain CSV: the metadata is in the sidecar
     header = read_prediction_header(out)
     assert header["model"] == "thickwall" and header["n_points"] == 11
     assert {"theta0_deg", "L0_mm", "C10_MPa", "C01_MPa"} <= set(header["params"])
