@@ -383,8 +383,8 @@ def search(requirements, constraints: Constraints | dict | None = None,
     Coarse to fine: every candidate of a coarse grid (:data:`COARSE_STEPS` in D0 and t0, times
     the values of L0, theta0 and rubber), then a fine grid (:data:`D0_STEP_MM`,
     :data:`T0_STEP_MM`) over the coarse cells around the best :data:`SEEDS` coarse candidates
-    (the feasible ones first): the optimum lies on the boundary of the feasible region, within a
-    coarse cell of a feasible coarse candidate.
+    (:func:`_seeds`): the optimum lies on the boundary of the feasible region, within a coarse
+    cell of a feasible coarse candidate.
 
     Raises ``ValueError`` (one line) for conflicting constraints, requirements past the braid
     lock or outside the surrogate's training box, and when no candidate is feasible (naming the
@@ -424,8 +424,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     D0, t0 = (a.ravel() for a in np.meshgrid(D0c, t0c, indexing="ij"))
     coarse = pd.concat([evaluate(family, D0, t0) for family in models], ignore_index=True)
     coarse = _rank(coarse, objective)
-    seeds = pd.concat([coarse[coarse["feasible"]], coarse[~coarse["feasible"]].sort_values(
-        "min_margin_pct", ascending=False)]).head(SEEDS)
+    seeds = _seeds(coarse)
     dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
     dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
     fine = []
@@ -445,6 +444,20 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
+
+
+def _seeds(coarse: pd.DataFrame) -> pd.DataFrame:
+    """Where to refine: the best ``SEEDS`` feasible coarse candidates; while there are fewer, the
+    edges of what the coarse grid could not satisfy: the narrowest candidates meeting the forces
+    (the housing stops them) and the strongest fitting the housing (the forces stop them)."""
+    feasible = coarse[coarse["feasible"]].head(SEEDS)
+    if len(feasible) == SEEDS:
+        return feasible
+    wide = coarse[coarse["meets_forces"] & ~coarse["fits_housing"]].sort_values(
+        "outer_diameter_mm").head(SEEDS // 2)
+    weak = coarse[coarse["fits_housing"] & ~coarse["meets_forces"]].sort_values(
+        "min_margin_pct", ascending=False).head(SEEDS // 2)
+    return pd.concat([feasible, wide, weak])
 
 
 def _coarse_count(bounds, step) -> int:
@@ -875,16 +888,19 @@ def write_design(result: DesignResult, out: Path) -> Path:
     write_atomic(out / "fe_curves.csv", result.curves.to_csv(index=False, float_format="%.6g"))
     figures = []
     best = result.chosen if result.chosen is not None else result.designs.iloc[0]
+    data = contour_data(result, best)
     for k, req in enumerate(s.requirements, start=1):
-        fig = contour_figure(result, k - 1, best)
+        fig = contour_figure(result, k - 1, best, data)
         figures.append((save_figure(fig, out / f"requirement{k}_contours.png"),
                         f"Requirement {k} ({esc(req.label)}): surrogate force over D0 x t0 at "
                         f"{req.pressure_bar:g} bar and eps = {req.eps:g} (L0 = "
                         f"{best['L0_mm']:.4g} mm, theta0 = {best['theta0_deg']:.4g} deg, "
                         f"{esc(best['rubber'])}); black line: the required force, dashed: "
                         "plus the surrogate margin; hatched: feasible for every requirement "
-                        "and the housing; dashed box: the constraints; markers: the verified "
-                        "designs (filled: the FE confirms), star: the chosen design."))
+                        "and the housing (dotted: its outer diameter limit); dashed box: the "
+                        "constraints (the search's feasible set is the hatched region inside "
+                        "it); markers: the verified designs (white: the FE confirms), star: "
+                        "the chosen design."))
     fig = curves_figure(result)
     figures.append((save_figure(fig, out / "fe_curves.png"),
                     "FE force against pressure of the verified designs (axisym, "
@@ -986,42 +1002,58 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
 # --- figures ------------------------------------------------------------------------------------
 
 
-def contour_figure(result: DesignResult, index: int, best) -> Figure:
-    """Surrogate force over the surrogate's D0 x t0 box at requirement ``index``, the feasible
-    region hatched, the constraint box dashed, the verified designs and the chosen one marked."""
+def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) -> dict:
+    """The surrogate over its whole D0 x t0 box at ``best``'s L0, theta0 and rubber, for the
+    contour figures: ``D0``, ``t0`` grids [mm], per requirement ``force`` and ``margin`` [N],
+    ``outer`` diameter [mm] and ``feasible`` (every requirement with its margin, the housing)."""
     s = result.search
-    req = s.requirements[index]
     model = s.models[(best["L0_mm"], best["theta0_deg"], best["rubber"])]
     d = model.domain
-    D0, t0 = np.meshgrid(np.linspace(*d.D0_mm, 121), np.linspace(*d.t0_mm, 81))
+    D0, t0 = np.meshgrid(np.linspace(*d.D0_mm, n_D0), np.linspace(*d.t0_mm, n_t0))
+    out = {"D0": D0, "t0": t0, "force": [], "margin": []}
     feasible = np.ones(D0.shape, dtype=bool)
-    force = None
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        for k, r in enumerate(s.requirements):
+        for r in s.requirements:
             pred = model.predict(r.pressure_bar, D0, t0, r.eps)
             u, _ = surrogate_uncertainty(model, pred, r.force_N)
             f = np.where(pred.valid, pred.force_N, np.nan)
             feasible &= np.nan_to_num(f - u, nan=-np.inf) >= r.force_N
-            if k == index:
-                force, margin = f, u
+            out["force"].append(f)
+            out["margin"].append(u)
+    out["outer"] = outer_diameter_mm(D0, t0, best["theta0_deg"], s.working_pressure_bar,
+                                     MATERIALS[best["rubber"]])
     limit = s.constraints.get("max_outer_diameter_mm")
-    if limit is not None:
-        feasible &= outer_diameter_mm(D0, t0, best["theta0_deg"], s.working_pressure_bar,
-                                      MATERIALS[best["rubber"]]) <= limit
-    fig = Figure(figsize=(7.2, 5.6), layout="constrained")
+    out["feasible"] = feasible if limit is None else feasible & (out["outer"] <= limit)
+    return out
+
+
+def contour_figure(result: DesignResult, index: int, best, data: dict) -> Figure:
+    """Surrogate force over the surrogate's D0 x t0 box at requirement ``index`` (``data`` from
+    :func:`contour_data`): the required force, the feasible region hatched, the housing limit,
+    the constraint box dashed, the verified designs and the chosen one marked."""
+    s = result.search
+    req = s.requirements[index]
+    D0, t0 = data["D0"], data["t0"]
+    force, margin = data["force"][index], data["margin"][index]
+    fig = Figure(figsize=(8.8, 4.8), layout="constrained")
     ax = fig.subplots()
     filled = ax.contourf(D0, t0, force, levels=14, cmap="viridis")
-    fig.colorbar(filled, ax=ax, label=f"surrogate force at {req.pressure_bar:g} bar [N]")
+    fig.colorbar(filled, ax=ax, label=f"surrogate force at {req.pressure_bar:g} bar, "
+                 f"eps {req.eps:g} [N]")
     ax.contour(D0, t0, force, levels=[req.force_N], colors="black", linewidths=1.6)
     ax.contour(D0, t0, force - margin, levels=[req.force_N], colors="black",
                linewidths=1.0, linestyles="--")
-    if feasible.any():
-        ax.contourf(D0, t0, feasible.astype(float), levels=[0.5, 1.5], colors="none",
+    if data["feasible"].any():
+        ax.contourf(D0, t0, data["feasible"].astype(float), levels=[0.5, 1.5], colors="none",
                     hatches=["///"])
+    limit = s.constraints.get("max_outer_diameter_mm")
+    if limit is not None:
+        ax.contour(D0, t0, data["outer"], levels=[limit], colors="white", linewidths=1.4,
+                   linestyles=":")
     (lo_D, hi_D), (lo_t, hi_t) = s.constraints["D0_mm"], s.constraints["t0_mm"]
     ax.add_patch(Rectangle((lo_D, lo_t), hi_D - lo_D, hi_t - lo_t, fill=False, color="white",
-                           linestyle="--", linewidth=1.4))
+                           linestyle="--", linewidth=1.2))
     ok = result.designs[result.designs["meets_all"]]
     bad = result.designs[~result.designs["meets_all"]]
     ax.plot(ok["D0_mm"], ok["t0_mm"], "o", color="white", markeredgecolor="black",
@@ -1032,15 +1064,20 @@ def contour_figure(result: DesignResult, index: int, best) -> Figure:
             markersize=16, clip_on=False, zorder=5)
     handles = [Line2D([], [], color="black", label=f"{req.force_N:g} N required"),
                Line2D([], [], color="black", linestyle="--", label="required + margin"),
-               Patch(facecolor="none", hatch="///", edgecolor="black", label="feasible"),
-               Line2D([], [], color="0.6", linestyle="--", label="constraints"),
+               Patch(facecolor="none", hatch="///", edgecolor="black",
+                     label="feasible (every\nrequirement, housing)"),
+               Line2D([], [], color="0.5", linestyle="--", label="constraint box"),
                Line2D([], [], marker="o", color="white", markeredgecolor="black",
-                      linestyle="none", label="verified, FE meets all"),
+                      linestyle="none", label="verified: FE meets all"),
                Line2D([], [], marker="o", color="none", markeredgecolor="red",
-                      linestyle="none", label="verified, FE falls short"),
+                      linestyle="none", label="verified: FE falls short"),
                Line2D([], [], marker="*", color="gold", markeredgecolor="black",
                       linestyle="none", markersize=12, label="chosen")]
-    fig.legend(handles=handles, fontsize=7, loc="outside lower center", ncol=4)
+    if limit is not None:
+        handles.insert(3, Line2D([], [], color="0.5", linestyle=":",
+                                 label=f"outer diameter {limit:g} mm\nat "
+                                       f"{s.working_pressure_bar:g} bar"))
+    fig.legend(handles=handles, fontsize=7.5, loc="outside right upper")
     ax.set(xlabel="inner diameter D0 [mm]", ylabel="wall thickness t0 [mm]",
            title=f"requirement {index + 1}: {req.label}")
     return fig
