@@ -210,3 +210,15 @@ def test_verification_flags_from_the_fe():
     at = curves[np.isclose(curves["eps"], 0.20)]
     assert ((at["pressure_bar"] > row["r1_threshold_bar"]) | (at["force_N"] == 0)).all()
     assert np.isclose(at["pressure_bar"], row["r1_threshold_bar"]).any()
+
+
+def test_housing_binds_the_largest_margin():
+    """max-margin wants the widest muscle; the housing stops it at its outer diameter."""
+    reqs = [Requirement(300.0, 2.5, 0.10), Requirement(250.0, 2.5, 0.20)]
+    table = design(reqs, {"max_outer_diameter_mm": 64.0}, "max-margin", top=1, mesh=MESH)
+    best = table.iloc[0]
+    assert best["meets_all"]
+    # one fine grid step (0.05 mm in D0) moves the outer diameter by < 0.1 mm
+    assert 63.5 <= best["outer_diameter_mm"] <= 64.0
+    free = search(reqs, objective="max-margin").feasible.iloc[0]
+    assert free["outer_diameter_mm"] > 70.0  # without the housing: the widest of the box
