@@ -35,7 +35,7 @@ from fem.interface import Domain, ForceModel
 from fem.materials import SILASTIC_S, MooneyRivlin
 
 
-def _kinematics(D0_mm, t0_mm, eps, theta0_deg):
+def mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg):
     """Squared radii [mm^2], ``lz``, ``k`` and the log hoop-stretch ratio ``M`` of the wall.
 
     Written in ``eps`` rather than ``1 - lz`` so that nothing cancels at small shortening and
@@ -61,7 +61,7 @@ def braided_tube_energy(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa):
     deformation the braid imposes at shortening ``eps`` (see the module docstring). NaN where
     the inner radius has collapsed (``r_i^2 <= 0``): no such deformation exists.
     """
-    Ri2, Ro2, lz, k, ri2, _, M, _ = _kinematics(D0_mm, t0_mm, eps, theta0_deg)
+    Ri2, Ro2, lz, k, ri2, _, M, _ = mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg)
     D = Ro2 - Ri2
     e2 = (1.0 - lz) ** 2
     # lz^2 + 2/lz - 3 = eps^2 (3 - eps) / lz and 2 lz + 1/lz^2 - 3 = eps^2 (1 + 2 lz) / lz^2
@@ -77,7 +77,7 @@ def braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa):
     since the total energy is ``L0 E`` and ``L = L0 lz``, it is also ``dW/dL`` of the whole wall.
     NaN where the inner radius has collapsed.
     """
-    Ri2, Ro2, lz, k, ri2, ro2, M, cot2 = _kinematics(D0_mm, t0_mm, eps, theta0_deg)
+    Ri2, Ro2, lz, k, ri2, ro2, M, cot2 = mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg)
     D = Ro2 - Ri2
     e = 1.0 - lz
     dro2 = -2.0 * Ro2 * lz * cot2  # d(r_o^2)/dlz

@@ -38,13 +38,17 @@ from fem.eq2 import BAR_TO_MPA, check_theta0
 from fem.fe.assembly import Assembler, Term, operator
 from fem.fe.forms import braid_inextensibility, cavity_volume, rubber
 from fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
-from fem.fe.newton import load_path
+from fem.fe.newton import load_path, newton
 from fem.interface import ForceModel
 from fem.materials import SILASTIC_S, MooneyRivlin
+from fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
 # away from the axis add an error far below the mesh's
 INTORDER = 4
+#: Halvings of a free-path step before the threshold search gives up: from span/5, 16 reach
+#: span/3e5 (the fine mesh's cap elements need about span/2e4 where the end zone forms)
+FREE_PATH_CUTBACKS = 16
 
 
 class HalfMuscle:
@@ -107,6 +111,11 @@ class HalfMuscle:
         self.n = int((~fixed).sum()) + 1
         red[cap_z] = self.n - 1
         self.red = red
+        # where the free displacement dofs sit at rest (R, Z), for the thick-wall start
+        R_dof = ub.doflocs[0]
+        self._free_r = ir[red[ir] >= 0]
+        self._free_z = iz[(red[iz] >= 0) & (red[iz] < self.n - 1)]
+        self._dof_RZ = R_dof, Zdof
         self.p_slice = slice(red[nu], red[nu] + npr)
         self.tension_slice = slice(red[nu] + npr, red[nu] + npr + nl)
         self.rubber, self.cavity = Term(*rubber_term, red), Term(*cavity_term, red)
@@ -169,21 +178,63 @@ class HalfMuscle:
         cap_force_scale = 0.1 * np.pi * self.Ro**2  # cap force at 1 bar [N]
         return {"residual_floor": 1e-10 * cap_force_scale}
 
+    def thick_wall_start(self, U_mm: float):
+        """A start for the free muscle at cap displacement ``U_mm``: ``(x, pressure_MPa)`` or
+        None where the closed form has no solution (at and beyond the braid lock).
+
+        The mid-section of a long free muscle is the thick-wall closed form
+        (:func:`fem.thickwall.mid_section_kinematics`): uniform axial stretch ``1 - eps``,
+        ``r^2 = k + R^2 / (1 - eps)``, at the thick-wall threshold pressure. Towards the clamped
+        cap the radial displacement is faded out over half a diameter (the end zone); the wall
+        pressure and braid tension start at rest, Newton finds them with the rest.
+        """
+        eps = -U_mm / self.H
+        D0, t0 = 2.0 * self.Ri, self.Ro - self.Ri
+        _, _, lz, k, ri2, _, _, _ = mid_section_kinematics(D0, t0, eps, self.theta0_deg)
+        threshold_bar = klute_hannaford_threshold_pressure(
+            D0, t0, eps, self.theta0_deg, self.material.C10_MPa, self.material.C01_MPa)
+        if not (ri2 > 0 and np.isfinite(threshold_bar)):
+            return None
+        R, Z = self._dof_RZ
+        y = self.rest_state()
+        Rr, Zr = R[self._free_r], Z[self._free_r]
+        fade = -np.expm1(-(self.H - Zr) / self.Ri)
+        y[self.red[self._free_r]] = (np.sqrt(k + Rr**2 / lz) - Rr) * fade
+        y[self.red[self._free_z]] = U_mm * Z[self._free_z] / self.H
+        return np.append(y[:-1], float(threshold_bar) * BAR_TO_MPA)
+
     def free_path(self, U_mm: float):
         """Free shortening of the muscle (no force) to cap displacement ``U_mm`` < 0.
 
-        Follows the path by cap displacement with the pressure as unknown (the cap equation
-        says the reaction is zero). Returns the state, the pressure [MPa] and the report.
+        The cap is put at ``U_mm`` with the pressure as unknown (the cap equation says the
+        reaction is zero). First one Newton solve from the thick-wall start
+        (:meth:`thick_wall_start`: 5-6 iterations on every mesh); where it fails (near the
+        braid lock) the path is followed from rest by cap displacement, with up to
+        :data:`FREE_PATH_CUTBACKS` halvings of a step (a mesh graded hard towards the cap needs
+        steps of 1e-4 of the span where the end zone forms). Returns the state, the pressure
+        [MPa] and the report (iterations of both attempts).
         """
         def free(x, U):
             r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])
             return r, sp.hstack([K[:, :-1], -dV[:, None]], format="csr")
 
+        def check(x, U):
+            return self.inverted(np.append(x[:-1], U))
+
+        spent = 0
+        start = self.thick_wall_start(U_mm)
+        if start is not None:
+            x, report = newton(lambda x: free(x, U_mm), start, check=lambda x: check(x, U_mm),
+                               **self._newton_options())
+            if report.converged:
+                return np.append(x[:-1], U_mm), float(x[-1]), report
+            spent = report.iterations
         y = self.rest_state()
-        [(x, report)] = load_path(free, np.append(y[:-1], 0.0), 0.0, [U_mm],
-                                  check=lambda x, U: self.inverted(np.append(x[:-1], U)),
+        [(x, report)] = load_path(free, np.append(y[:-1], 0.0), 0.0, [U_mm], check=check,
+                                  max_cutbacks=FREE_PATH_CUTBACKS,
                                   label=lambda U: f"cap displacement {U:.3g} mm",
                                   **self._newton_options())
+        report.iterations += spent
         if x is None:
             return None, np.nan, report
         return np.append(x[:-1], U_mm), float(x[-1]), report
@@ -279,6 +330,7 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
     out["converged"][below] = True
     if report is not None:
         out["iterations"][below], out["residual"][below] = report.iterations, report.residual
+        out["cutbacks"][below] = report.cutbacks
     # the threshold state may have a slack braid right at the clamped cap (a small negative
     # tension at the corner node, the same on every mesh): it touches P* only, not the forces
     # above P*, whose own states are checked (an elastic equilibrium is path-independent)

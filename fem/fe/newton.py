@@ -33,8 +33,9 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
 
     Converged when the residual fell below ``rtol`` times the first residual (or below
     ``residual_floor``, the size of a residual that is round-off for the caller) and the last
-    increment below ``xtol`` times ``|x|``; a start already below the floor (an exact
-    predictor) is converged after zero iterations. An early rise of the residual is not called
+    increment, or the next one estimated with the last factorisation, is below ``xtol`` times
+    ``|x|``; a start already below the floor (an exact predictor) is converged after zero
+    iterations. An early rise of the residual is not called
     divergence (full Newton often overshoots in the first iterations); only non-finite numbers,
     a state rejected by ``check`` or ``maxiter`` iterations stop it.
     """
@@ -48,9 +49,10 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
     tol = max(rtol * first, residual_floor)
     for it in range(1, maxiter + 1):
         try:
-            dx = splu(jac.tocsc()).solve(-r)
+            lu = splu(jac.tocsc())
         except RuntimeError:  # SuperLU: "Factor is exactly singular"
             return x, NewtonReport(False, it, reason="singular tangent")
+        dx = lu.solve(-r)
         if not np.all(np.isfinite(dx)):
             return x, NewtonReport(False, it, reason="singular tangent")
         x = x + dx
@@ -61,8 +63,13 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
             return x, NewtonReport(False, it, reason="non-finite residual")
         norm = float(np.linalg.norm(r))
         rel = norm / first
-        if norm <= tol and np.linalg.norm(dx) <= xtol * max(np.linalg.norm(x), 1.0):
-            return x, NewtonReport(True, it, residual=rel)
+        if norm <= tol:
+            # the increment that would come next, by the factorisation at hand (a chord step:
+            # one back-substitution, no assembly or factorisation), tells whether x has
+            # converged; near the solution it equals the Newton step to second order
+            size = xtol * max(np.linalg.norm(x), 1.0)
+            if np.linalg.norm(dx) <= size or np.linalg.norm(lu.solve(-r)) <= size:
+                return x, NewtonReport(True, it, residual=rel)
     return x, NewtonReport(False, maxiter, residual=rel,
                            reason=f"Newton did not converge in {maxiter} iterations")
 

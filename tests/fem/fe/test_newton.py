@@ -14,8 +14,9 @@ def cubic(x, t=8.0):
 def test_newton_finds_the_root_quadratically():
     x, report = newton(cubic, [1.0])
     assert report.converged and report.reason == ""
-    assert abs(x[0] - 2.0) < 1e-12
-    assert report.iterations <= 8  # quadratic convergence from x = 1 takes 6 iterations
+    # to xtol = 1e-9 relative, as documented: the last step is checked by a chord estimate
+    assert abs(x[0] - 2.0) < 1e-9 * 2.0
+    assert report.iterations <= 7  # quadratic convergence from x = 1 takes 6 iterations
 
 
 def test_newton_reports_no_root_instead_of_a_number():
