@@ -428,12 +428,13 @@ class BenchConfig:
 
     def _check_duration(self):
         seq, st = self.sequence, self.settle
-        n = len(seq.pressures_bar) * (2 if seq.down_sweep else 1) * seq.repeats
+        up = len(seq.pressures_bar)
+        n = (up + (up - 1 if seq.down_sweep else 0)) * seq.repeats  # as bench.sequence plans
         if n > MAX_STEPS:
             fixed = seq.tare_s + 2 * seq.preconditioning_cycles * seq.preconditioning_hold_s
             short = (fixed + n * (st.min_dwell_s + st.hold_s)) / 86400
             long = (fixed + n * (st.timeout_s + st.hold_s)) / 86400
-            raise ValueError(f"the sequence plans about {n} steps, {short:.1f} to {long:.1f} "
+            raise ValueError(f"the sequence plans {n} steps, {short:.1f} to {long:.1f} "
                              f"days: expected at most {MAX_STEPS} steps (split it into runs)")
 
     def replace(self, **sections) -> BenchConfig:
@@ -533,7 +534,10 @@ def parse_config(text: str, source: str = "<string>") -> BenchConfig:
     except ValueError as exc:
         raise ValueError(f"config {source}: {exc}") from None
     config = BenchConfig(**sections, source=source, text=text)
-    config.check()
+    try:
+        config.check()
+    except ValueError as exc:
+        raise ValueError(f"config {source}: {exc}") from None
     return config
 
 

@@ -454,10 +454,14 @@ def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
         try:
             reader = pd.read_csv(stream, names=list(columns), header=None, dtype=dtypes,
                                  chunksize=chunksize or 200_000)
-            for df in reader:
+            while True:
+                try:
+                    df = next(reader)
+                except StopIteration:
+                    return
+                except (pd.errors.ParserError, ValueError) as exc:
+                    raise ValueError(f"{path} is corrupt: {exc}") from None
                 yield _typed(df, path)
-        except (pd.errors.ParserError, ValueError) as exc:
-            raise ValueError(f"{path} is corrupt: {exc}") from None
         finally:
             stream.close()
             raw.close()
@@ -606,7 +610,7 @@ def iter_samples(run_dir: str | Path, chunksize: int = 100_000):
 
 
 def aggregate_samples(path: str | Path, bin_s: float | None = None,
-                      max_bins: int = 4000) -> pd.DataFrame:
+                      max_bins: int = 4000, chunksize: int = 100_000) -> pd.DataFrame:
     """Time bins of ``samples.csv`` in one streamed pass (memory bounded by the chunk and the bin
     count, not by the run's length).
 
@@ -623,7 +627,7 @@ def aggregate_samples(path: str | Path, bin_s: float | None = None,
     if not bin_s > 0:
         raise ValueError(f"bin_s={bin_s!r} is invalid: expected a duration > 0 s")
     parts = []
-    for chunk in _read_csv(csv, SAMPLE_COLUMNS, [], chunksize=100_000):
+    for chunk in _read_csv(csv, SAMPLE_COLUMNS, [], chunksize=chunksize):
         if chunk.empty:
             continue
         b = np.floor(chunk["time_s"].to_numpy(float) / bin_s).astype(np.int64)

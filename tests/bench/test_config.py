@@ -99,3 +99,81 @@ def test_command_is_clamped_and_monitor_scaled():
     assert r.command_volts(-1.0) == 0.0
     assert r.monitor_bar(1.0) == pytest.approx(0.0)  # 1-5 V monitor over 0-4 bar
     assert r.monitor_bar(5.0) == pytest.approx(4.0)
+
+
+# Settings a USB-6001 cannot run (NI USB-6001/6002/6003 User Guide and Specifications): each
+# passed `mkm check` and started acquiring before issue 12.
+DEVICE_IMPOSSIBLE = [
+    ("[loadcell]\nchannel = 'ai9'", r"loadcell\.channel='ai9' is invalid: the USB-6001 has "
+     r"inputs ai0 to ai7"),
+    ("[regulator]\ncommand_channel = 'ao2'", r"command_channel='ao2' is invalid: the USB-6001 "
+     r"has outputs ao0, ao1"),
+    ("[regulator]\nmonitor_channel = 'ai5'", r"monitor_channel='ai5' cannot be differential on "
+     r"the USB-6001: only ai0, ai1, ai2, ai3 are \(paired with ai4, ai5, ai6, ai7\)"),
+    ("[regulator]\nmonitor_channel = 'ai0'", r"are both ai0: expected two different inputs"),
+    ("[daq]\nterminal_config = 'nrse'", r"the USB-6001 has only differential and rse inputs"),
+    ("[daq]\nterminal_config = 'pseudodifferential'", r"no NRSE or pseudo-differential mode"),
+    ("[daq]\nsample_rate_hz = 1e6", r"samples at most 20000 S/s"),
+    ("[daq]\nsample_rate_hz = 15000", r"15000 on 2 inputs is 30000 S/s: .* 20000 S/s in "
+     r"aggregate"),
+    ("[daq]\nbuffer_s = 1e9", r"daq\.buffer_s=1e\+09 is invalid: expected 600 s .* to 86400 s"),
+    ("[daq]\nsample_rate_hz = 10000\nbuffer_s = 3600", r"72000000 buffered values"),
+    ("[regulator]\nmonitor_V_at_full_scale = 15", r"monitor_V_at_full_scale=15 is invalid: the "
+     r"USB-6001's inputs read \+-10 V"),
+    ("[daq]\nread_block_samples = 100", r"read_block_samples=100 is 10 s of samples at 10 Hz: "
+     r"expected blocks of at most 1 s"),
+    ("[daq]\nread_timeout_s = 0.001", r"read_timeout_s=0.001 is too short for blocks of 0.1 s"),
+]
+
+
+@pytest.mark.parametrize("extra, message", DEVICE_IMPOSSIBLE,
+                         ids=[e.split("\n")[1] for e, _ in DEVICE_IMPOSSIBLE])
+def test_device_impossible_settings_are_refused(extra, message):
+    text = BASE + extra
+    if extra.startswith("[loadcell]"):
+        text = BASE.replace("[loadcell]", extra)
+    with pytest.raises(ValueError, match=message):
+        parse_config(text)
+
+
+def test_rse_allows_every_input():
+    c = parse_config(BASE + "[daq]\nterminal_config = 'rse'\n[regulator]\nmonitor_channel = "
+                     "'ai7'")
+    assert c.ai_channels == ["ai0", "ai7"]
+
+
+@pytest.mark.parametrize("muscle_id", ["x" * 300, "a\nb", "a\tb", "a b", "$F_{max}$", "../up",
+                                       ""])
+def test_muscle_ids_that_cannot_name_a_folder_or_a_label(muscle_id):
+    text = BASE.replace('id = "m1"', f"id = {muscle_id!r}".replace("'", '"')
+                        .replace("\n", "\\n").replace("\t", "\\t"))
+    with pytest.raises(ValueError, match=r"muscle\.id=.* is invalid: expected 1 to 64 letters"):
+        parse_config(text)
+
+
+def test_geometry_is_bounded():
+    # --D0 1e9 gave 3e17 N
+    with pytest.raises(ValueError, match=r"D0_mm=1e\+09, L0_mm=282 is not a bench muscle"):
+        load_config().replace(muscle={"D0_mm": 1e9})
+
+
+def test_huge_staircases_are_refused_with_their_duration():
+    # 0.0001:2.5:0.0001 bar is 25,000 pressures, 50,000 steps up and down: 5 to 37 days
+    with pytest.raises(ValueError, match=r"plans 49999 steps, 5\.2 to 37\.6 days: "
+                                         r"expected at most 2000 steps"):
+        load_config(pressures_bar=[k * 1e-4 for k in range(1, 25001)])
+
+
+def test_settle_timeout_and_tare_are_bounded():
+    with pytest.raises(ValueError, match=r"settle\.timeout_s=1e\+06 is invalid: expected at "
+                                         r"most 3600 s"):
+        load_config().replace(settle={"timeout_s": 1e6})
+    # below one sample period, or a tiny rate: a tare of no samples gave NaN forces
+    with pytest.raises(ValueError, match=r"tare_s=0.05 at 10 Hz gives 0 tare samples"):
+        load_config().replace(sequence={"tare_s": 0.05})
+    with pytest.raises(ValueError, match=r"tare_s=0.5 at 10 Hz gives 5 tare samples: expected "
+                                         r"at least safety.tare_min_samples=10"):
+        load_config().replace(sequence={"tare_s": 0.5})
+    with pytest.raises(ValueError, match=r"read_block_samples=1 is 10 s of samples at 0.1 Hz"):
+        load_config().replace(daq={"sample_rate_hz": 0.1, "read_timeout_s": 30.0,
+                                   "buffer_s": 6000.0})

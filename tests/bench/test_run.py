@@ -7,7 +7,6 @@ import pandas as pd
 import pytest
 
 from bench.run import BenchRun, acquire
-from bench.sequence import estimate_duration_s, plan_steps, settle_reached
 from bench.sim import SimBackend
 from bench.storage import COMMAND_COLUMNS, SAMPLE_COLUMNS, STEP_COLUMNS, RunStatus, load_run
 from fem.ladder import make_model
@@ -24,35 +23,6 @@ def model_force(config, pressure_bar):
     m = config.muscle
     model = make_model(config.sim.model, L0_mm=m.L0_mm)
     return model.predict(pressure_bar, m.D0_mm, m.t0_mm, m.eps).force_N
-
-
-def test_plan_up_down_repeats(config):
-    c = config.replace(sequence={"pressures_bar": (0.5, 1.0, 1.5), "repeats": 2})
-    steps = plan_steps(c)
-    assert [s.set_pressure_bar for s in steps] == [0.5, 1.0, 1.5, 1.0, 0.5] * 2
-    assert [s.direction for s in steps[:5]] == ["up"] * 3 + ["down"] * 2
-    assert [s.repeat for s in steps] == [0] * 5 + [1] * 5
-    assert [s.step for s in steps] == list(range(10))
-    no_down = c.replace(sequence={"down_sweep": False, "repeats": 1})
-    assert [s.set_pressure_bar for s in plan_steps(no_down)] == [0.5, 1.0, 1.5]
-
-
-def test_estimated_duration(config):
-    # tare 2 s + 3 steps x (dwell 3 s or timeout 20 s, + hold 2 s)
-    assert estimate_duration_s(config) == (2 + 3 * 5, 2 + 3 * 22)
-
-
-def test_settle_reached_judges_slope_spread_and_pressure(config):
-    t = np.arange(0, 5, 0.1)
-    rng = np.random.default_rng(0)
-    flat = 100 + 0.3 * rng.standard_normal(t.size)
-    p = np.full(t.size, 1.0)
-    assert settle_reached(t, flat, p, 1.0, config)
-    assert not settle_reached(t, flat + 2.0 * t, p, 1.0, config)  # 2 N/s > 1 N/s allowed
-    assert not settle_reached(t, 100 + 3.0 * rng.standard_normal(t.size), p, 1.0, config)
-    assert not settle_reached(t, flat, p + 0.05, 1.0, config)  # 0.05 bar > 0.03 bar tolerance
-    assert settle_reached(t, flat, np.full(t.size, np.nan), 1.0, config)  # pressure not measured
-    assert not settle_reached(t[:2], flat[:2], p[:2], 1.0, config)  # too few samples
 
 
 def test_complete_run_files(config, tmp_path):

@@ -1,12 +1,25 @@
 """bench.storage: the loader reads what a run leaves, and says clearly what is wrong."""
 
+import dataclasses
 import json
 import os
+from pathlib import Path
 
+import numpy as np
+import pandas as pd
 import pytest
 
 from bench.run import acquire
-from bench.storage import load_run
+from bench.storage import (
+    SCHEMA_VERSION,
+    RunMeta,
+    RunStatus,
+    RunWriter,
+    Sample,
+    aggregate_samples,
+    iter_samples,
+    load_run,
+)
 from fem.records import write_json_atomic
 
 
@@ -80,3 +93,60 @@ def test_atomic_json_leaves_no_temporary_files(tmp_path):
     write_json_atomic(tmp_path / "run.json", {"status": "complete"})
     assert [p.name for p in tmp_path.iterdir()] == ["run.json"]
     assert json.loads((tmp_path / "run.json").read_text()) == {"status": "complete"}
+
+
+RECORDED = sorted((Path(__file__).parents[2] / "data" / "experimental").glob("*_paper-prototype"))
+
+
+@pytest.mark.parametrize("folder", RECORDED, ids=[f.name for f in RECORDED])
+def test_schema_1_runs_still_load(folder):
+    run = load_run(folder)  # the two runs recorded before schema_version existed
+    assert run.meta.schema_version == 1 and run.status == RunStatus.COMPLETE
+    assert run.meta.n_steps == 19 == run.meta.steps_done == len(run.steps)
+    assert run.meta.process.pid > 0 and run.meta.gaps == [] and run.meta.lost_samples == 0
+    assert run.meta.as_dict()["schema_version"] == SCHEMA_VERSION  # written in today's layout
+    again = RunMeta.from_dict(json.loads(json.dumps(run.meta.as_dict())))
+    assert again == dataclasses.replace(run.meta, schema_version=SCHEMA_VERSION)
+
+
+def test_run_json_without_geometry_is_one_clear_error(run_path):
+    meta = json.loads((run_path / "run.json").read_text())
+    del meta["muscle"]["D0_mm"]
+    write_json_atomic(run_path / "run.json", meta)
+    with pytest.raises(ValueError, match=r"run\.json: muscle\.D0_mm is missing"):
+        load_run(run_path)
+
+
+def test_tampered_text_cells_are_refused(run_path):
+    # "=cmd" would reach a report's CSV and run in a spreadsheet
+    steps = (run_path / "steps.csv").read_text().replace(",up,", ",=cmd|' /C calc'!A0,", 1)
+    (run_path / "steps.csv").write_text(steps)
+    with pytest.raises(ValueError, match=r"steps\.csv is corrupt: direction=.=cmd"):
+        load_run(run_path)
+
+
+def test_time_keeps_a_tenth_of_a_second_after_days(tmp_path):
+    # 6 significant digits lost the 0.1 s after 27.8 h (100,000 s)
+    writer = RunWriter(tmp_path, "m", "")
+    writer.append_samples([Sample(1_000_001, 1_000_001 / 10, 0, "step", 1.0, 1.0, 1.0, 0.5,
+                                  2.0, 98.0, "")])
+    writer.close()
+    text = (writer.path / "samples.csv").read_text()
+    assert "1000001,100000.1,0,step," in text
+    assert iter_samples(writer.path).__next__()["time_s"].iloc[0] == 100000.1
+
+
+def test_aggregate_samples_streams_and_matches_the_whole(run_path):
+    run = load_run(run_path)
+    s = run.samples
+    bins = aggregate_samples(run_path, bin_s=1.0)
+    whole = s.groupby(np.floor(s["time_s"] / 1.0))
+    np.testing.assert_array_equal(bins["n"], whole.size().to_numpy())
+    np.testing.assert_allclose(bins["force_N_mean"], whole["force_N"].mean(), rtol=1e-12)
+    np.testing.assert_allclose(bins["force_N_max"], whole["force_N"].max())
+    np.testing.assert_allclose(bins["pressure_bar_min"], whole["pressure_bar"].min())
+    # read in chunks of 7 rows, bins cut across chunks merge to the same numbers
+    small = aggregate_samples(run_path, bin_s=1.0, chunksize=7)
+    pd.testing.assert_frame_equal(small, bins)
+    # default bin: the run's duration over max_bins
+    assert len(aggregate_samples(run_path, max_bins=10)) <= 11

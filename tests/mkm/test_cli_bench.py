@@ -1,5 +1,6 @@
 """The bench subcommands of `mkm`: output contract and one-line errors."""
 
+import json
 import tomllib
 from pathlib import Path
 
@@ -109,3 +110,77 @@ def test_bad_out_is_one_line_before_the_device_opens(tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and f"--out {a_file} is a file" in err
     assert not (tmp_path / "mkm-state").exists()  # no bench was opened
+
+
+@pytest.mark.parametrize("setting, message", [
+    ("[loadcell]\nchannel = 'ai9'", "the USB-6001 has inputs ai0 to ai7"),
+    ("[regulator]\nmonitor_channel = 'ai5'", "cannot be differential on the USB-6001"),
+    ("[daq]\nterminal_config = 'nrse'", "no NRSE or pseudo-differential mode"),
+    ("[daq]\nsample_rate_hz = 1e6", "samples at most 20000 S/s"),
+])
+def test_check_rejects_what_the_device_cannot_run(tmp_path, capsys, setting, message):
+    text = load_config().text
+    section, line = setting.split("\n")
+    text = text.replace(f"{section}\n", f"{section}\n{line}\n", 1)
+    key = line.split(" =")[0]
+    # drop the packaged value of the same key, which now follows the new line
+    lines = text.splitlines()
+    first = next(i for i, s in enumerate(lines) if s.startswith(f"{key} ="))
+    lines = [s for i, s in enumerate(lines) if i == first or not s.startswith(f"{key} =")]
+    config = tmp_path / "bad.toml"
+    config.write_text("\n".join(lines) + "\n")
+    assert main(["check", "--config", str(config)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("mkm: error: config ") and message in err and err.count("\n") == 1
+
+
+def test_check_warns_past_the_braid_lock(capsys):
+    assert main(["check", "--eps", "0.4"]) == 0
+    err = capsys.readouterr().err
+    assert "mkm: warning: eps 0.4 is past the braid lock" in err and "locking angle 54.7" in err
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["acquire", "--pressures", "0:1e12:1"], "--pressures"),
+    (["acquire", "--pressures", "0.001:2.5:0.001"], "4999 steps, 0.5 to 3.8 days: expected at "
+     "most 2000 steps"),
+])
+def test_huge_sequences_are_one_line(argv, message, capsys):
+    with pytest.raises(SystemExit) as exit_info:
+        rc = main(argv)
+        raise SystemExit(rc)
+    assert exit_info.value.code == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1
+
+
+def _edited_run(tmp_path, **muscle):
+    from bench.run import acquire
+    from fem.records import write_json_atomic
+
+    config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
+    path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
+    meta = json.loads((path / "run.json").read_text())
+    meta["muscle"].update(muscle)
+    for key in [k for k, v in muscle.items() if v is None]:
+        del meta["muscle"][key]
+    write_json_atomic(path / "run.json", meta)
+    return path
+
+
+def test_report_on_run_json_without_D0_is_one_line(tmp_path, capsys):
+    path = _edited_run(tmp_path, D0_mm=None)
+    assert main(["report", str(path), "--models", "eq2", "--out", str(tmp_path / "r"),
+                 "--no-cache", "--no-progress"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "muscle.D0_mm is missing" in err
+
+
+def test_report_survives_mathtext_in_a_recorded_id(tmp_path):
+    # an id recorded before ids were restricted: "$...$" made matplotlib parse mathtext
+    from mkm.report import build_report
+
+    path = _edited_run(tmp_path, id="odd$\\frac{1}$id")
+    html = build_report([path], ["eq2"], out_dir=tmp_path / "r", cache_dir=None,
+                        tolerance=None, surrogate_section=False).read_text(encoding="utf-8")
+    assert "odd$\\frac{1}$id" in html

@@ -1,0 +1,54 @@
+"""bench.reprocess: a new calibration applied to a run's raw volts gives the forces it implies."""
+
+import json
+
+import numpy as np
+import pytest
+
+from bench.reprocess import reprocess
+from bench.run import acquire
+from bench.storage import load_run
+from fem.records import file_sha256
+from mkm.cli import main
+
+
+@pytest.fixture
+def source(config, tmp_path):
+    return load_run(acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path)
+
+
+def test_forces_follow_the_new_sensitivity(config, source, tmp_path):
+    # the cell was really 10 % more sensitive in N/V than configured: every tared force
+    # scales by exactly 1.1, the volts and everything else stay
+    new = config.replace(loadcell={"sensitivity_N_per_V": 196.133 * 1.1})
+    out = load_run(reprocess(source.path, new, tmp_path / "new"))
+    a, b = source.samples, out.samples
+    np.testing.assert_array_equal(a["loadcell_V"], b["loadcell_V"])
+    step = a["phase"] != "tare"
+    np.testing.assert_allclose(b["force_N"][step], 1.1 * a["force_N"][step], rtol=2e-5)
+    np.testing.assert_allclose(out.steps["force_N_mean"], 1.1 * source.steps["force_N_mean"],
+                               rtol=2e-5)
+    np.testing.assert_allclose(out.steps["force_N_std"], 1.1 * source.steps["force_N_std"],
+                               rtol=1e-3)
+    assert list(out.steps["n"]) == list(source.steps["n"])
+    # from the CSV's volts (6 significant digits, 1e-8 V here; the ADC step is 1.2e-3 V)
+    assert out.meta.tare["offset_V"] == pytest.approx(source.meta.tare["offset_V"], rel=1e-5)
+    assert out.meta.calibration["loadcell"]["sensitivity_N_per_V"] == pytest.approx(215.7463)
+    prov = out.meta.reprocessed_from
+    assert prov["path"] == str(source.path)
+    assert prov["samples_sha256"] == file_sha256(source.path / "samples.csv")
+    assert prov["calibration"]["loadcell"]["sensitivity_N_per_V"] == 196.133
+    assert out.commands.equals(source.commands)
+
+
+def test_reprocess_command_prints_the_new_folder(config, source, tmp_path, capsys):
+    toml = tmp_path / "new.toml"
+    toml.write_text(config.text.replace("sensitivity_N_per_V = 196.133",
+                                        "sensitivity_N_per_V = 200.0"))
+    assert main(["reprocess", str(source.path), "--config", str(toml), "--out",
+                 str(tmp_path / "new")]) == 0
+    path = capsys.readouterr().out.strip()
+    meta = json.loads((tmp_path / "new" / path.split("/")[-1] / "run.json").read_text())
+    assert meta["calibration"]["loadcell"]["sensitivity_N_per_V"] == 200.0
+    assert meta["reprocessed_from"]["path"] == str(source.path)
+    assert main(["reprocess", str(tmp_path), "--config", str(toml)]) == 2  # not a run folder

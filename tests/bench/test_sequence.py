@@ -1,0 +1,92 @@
+"""bench.sequence: the staircase plan, settle detection (linear in a step's length), the tare."""
+
+import numpy as np
+import pytest
+
+import bench.sequence
+from bench.run import acquire
+from bench.sequence import (
+    TareInvalid,
+    estimate_duration_s,
+    plan_steps,
+    settle_reached,
+    validate_tare,
+)
+from bench.storage import load_run
+
+
+def test_plan_up_down_repeats(config):
+    c = config.replace(sequence={"pressures_bar": (0.5, 1.0, 1.5), "repeats": 2})
+    steps = plan_steps(c)
+    assert [s.set_pressure_bar for s in steps] == [0.5, 1.0, 1.5, 1.0, 0.5] * 2
+    assert [s.direction for s in steps[:5]] == ["up"] * 3 + ["down"] * 2
+    assert [s.repeat for s in steps] == [0] * 5 + [1] * 5
+    assert [s.step for s in steps] == list(range(10))
+    no_down = c.replace(sequence={"down_sweep": False, "repeats": 1})
+    assert [s.set_pressure_bar for s in plan_steps(no_down)] == [0.5, 1.0, 1.5]
+
+
+def test_estimated_duration(config):
+    # tare 2 s + 3 steps x (dwell 3 s or timeout 20 s, + hold 2 s)
+    assert estimate_duration_s(config) == (2 + 3 * 5, 2 + 3 * 22)
+
+
+def test_settle_reached_judges_slope_spread_and_pressure(config):
+    t = np.arange(0, 5, 0.1)
+    rng = np.random.default_rng(0)
+    flat = 100 + 0.3 * rng.standard_normal(t.size)
+    p = np.full(t.size, 1.0)
+    assert settle_reached(t, flat, p, 1.0, config)
+    assert not settle_reached(t, flat + 2.0 * t, p, 1.0, config)  # 2 N/s > 1 N/s allowed
+    assert not settle_reached(t, 100 + 3.0 * rng.standard_normal(t.size), p, 1.0, config)
+    assert not settle_reached(t, flat, p + 0.05, 1.0, config)  # 0.05 bar > 0.03 bar tolerance
+    assert settle_reached(t, flat, np.full(t.size, np.nan), 1.0, config)  # pressure not measured
+    assert not settle_reached(t[:2], flat[:2], p[:2], 1.0, config)  # too few samples
+
+
+def test_settle_detection_keeps_one_window_whatever_the_timeout(config, tmp_path, monkeypatch):
+    # Issue 12: a step that never settles cost quadratic time (the whole step was re-judged each
+    # second: 1 h 7 s, 2 h 29 s). Now only the last window is kept and judged: every judgement
+    # sees at most window_s x rate + 2 samples, however long the step runs.
+    seen = []
+    real = bench.sequence.settle_reached
+
+    def spy(t, f, p, set_bar, cfg):
+        seen.append(t.size)
+        return real(t, f, p, set_bar, cfg)
+
+    monkeypatch.setattr(bench.sequence, "settle_reached", spy)
+    c = config.replace(settle={"max_force_std_N": 0.01, "timeout_s": 600.0},  # never settles
+                       sequence={"pressures_bar": (0.5,), "down_sweep": False})
+    result = acquire(c, out_root=tmp_path)
+    run = load_run(result.path)
+    assert not run.steps["settled"].any() and run.steps["settle_s"].iloc[0] >= 600.0
+    assert len(seen) == 598  # judged once per second of data from min_dwell (3 s) to 600 s
+    assert max(seen) <= c.settle.window_s * 10 + 2  # 2 s window at 10 Hz
+
+
+def test_hold_average_is_the_mean_and_std_of_the_hold_samples(config, tmp_path):
+    run = load_run(acquire(config, out_root=tmp_path).path)
+    for step in run.steps.itertuples():
+        s = run.samples
+        hold = s[(s.step == step.step) & (s.time_s > step.start_s + step.settle_s + 1e-9)]
+        assert len(hold) == step.n == 20
+        # 1e-5 relative: the CSV's 6 significant digits
+        assert step.force_N_mean == pytest.approx(hold["force_N"].mean(), rel=1e-5)
+        assert step.force_N_std == pytest.approx(hold["force_N"].std(ddof=1), rel=1e-3)
+
+
+def test_validate_tare_limits(config):
+    rng = np.random.default_rng(0)
+    good = 0.015 + 0.002 * rng.standard_normal(50)
+    out = validate_tare(good, config)
+    assert out["n"] == 50 and out["offset_V"] == pytest.approx(0.015, abs=1e-3)
+    assert out["shift_N"] == pytest.approx(0.015 * 196.133, abs=0.3)
+    with pytest.raises(TareInvalid, match="3 samples, expected at least"):
+        validate_tare(good[:3], config)
+    with pytest.raises(TareInvalid, match="1 of 50 load-cell samples are not numbers"):
+        validate_tare(np.r_[good[:49], np.nan], config)
+    with pytest.raises(TareInvalid, match="spreads .* N rms at 0 bar"):  # 0.1 V = 19.6 N rms
+        validate_tare(0.1 * rng.standard_normal(50), config)
+    with pytest.raises(TareInvalid, match=r"offset is \+196.\d N from loadcell.offset_V"):
+        validate_tare(good - 0.015 + 1.0, config)

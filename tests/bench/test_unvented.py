@@ -1,0 +1,35 @@
+"""bench.unvented: the marker a pressurising run holds, and what counts as dead."""
+
+import json
+
+from bench.storage import ProcessIdentity
+from bench.unvented import BenchLease, _folder, find_unvented
+
+
+def test_a_live_lease_is_not_unvented_and_release_removes_it(tmp_path):
+    lease = BenchLease("sim-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
+    lease.command(1.5)
+    marker = json.loads(lease.path.read_text())
+    assert marker["last_command_bar"] == 1.5 and marker["run_path"] == str(tmp_path / "run")
+    assert find_unvented("sim-Dev1") == []  # this process is alive
+    lease.release()
+    assert not list(_folder("sim-Dev1").glob("*.json"))
+
+
+def test_a_dead_or_reused_pid_is_unvented(tmp_path):
+    lease = BenchLease("ni-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
+    lease.command(2.5)
+    # the same pid started at another time: another process now holds it
+    data = json.loads(lease.path.read_text())
+    data["process"]["started_unix_s"] -= 100.0
+    lease.path.write_text(json.dumps(data))
+    ((_, marker),) = find_unvented("ni-Dev1")
+    assert marker.last_command_bar == 2.5 and "ended without venting" in marker.describe()
+    assert find_unvented("sim-Dev1") == []  # another bench
+
+
+def test_process_identity_of_this_process_is_alive():
+    me = ProcessIdentity.current()
+    assert me.alive()
+    assert not ProcessIdentity(me.pid, me.host, me.started_unix_s + 5.0, me.boot_unix_s).alive()
+    assert not ProcessIdentity(me.pid, "another-host", me.started_unix_s).alive()

@@ -1,0 +1,139 @@
+"""bench.worker: the interlocks no NaN disarms, the pressure interlock, vents that fail (issue 12).
+
+Every run here is on the virtual-clock simulated bench with faults injected at sample time; the
+short staircase tares for 2 s (samples 0-19) and commands 0.5 bar at 2.0 s.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from bench.run import acquire
+from bench.storage import load_run
+
+
+def record(config, tmp_path, **faults):
+    if faults:
+        config = config.replace(sim={"faults": faults})
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    return result, load_run(result.path)
+
+
+def assert_vented_last(run):
+    last = run.commands.iloc[-1]
+    assert last["purpose"] == "vent" and last["ok"] and last["command_bar"] == 0.0
+
+
+def test_nan_force_trips_the_interlock(config, tmp_path):
+    # abs(nan) >= limit is False: before issue 12 a NaN force never tripped anything
+    result, run = record(config, tmp_path, nan_force_at_s=5.0)
+    assert result.status == "aborted" and result.exit_code == 1
+    assert "force interlock: the force reading is not a number" in result.reason
+    s = run.samples
+    assert s["force_N"].iloc[-1] != s["force_N"].iloc[-1]  # the NaN sample is recorded
+    assert s["time_s"].iloc[-1] == pytest.approx(5.0) and s["flags"].iloc[-1] == \
+        "nonfinite|interlock"
+    assert "interlock vent" in set(run.commands["purpose"])
+    assert_vented_last(run)
+
+
+def test_nan_during_the_tare_stops_before_any_pressure(config, tmp_path):
+    # A NaN tare used to make every force NaN and the run "complete" with nothing interlocked.
+    result, run = record(config, tmp_path, nan_force_at_s=1.0)
+    # the NaN sample itself trips the interlock during the tare: no pressure is ever commanded
+    assert result.status == "aborted" and "not a number" in result.reason
+    assert (run.commands["command_bar"] == 0.0).all()
+    assert run.meta.tare is None
+
+
+def test_noisy_tare_refuses_to_start(config, tmp_path):
+    # 50 mV of noise x 196 N/V = 9.8 N rms, above safety.tare_max_std_N = 5 N
+    result, run = record(config.replace(sim={"noise_V": 0.05}), tmp_path)
+    assert result.status == "failed" and "TareInvalid: tare invalid: the load cell spreads" \
+        in result.reason
+    assert (run.commands["command_bar"] == 0.0).all() and run.steps.empty
+
+
+def test_shifted_tare_refuses_to_start(config, tmp_path):
+    # a 1 V offset (196 N, a load hanging on the cell) against loadcell.offset_V = 0
+    result, _ = record(config.replace(sim={"loadcell_offset_V": 1.0}), tmp_path)
+    assert result.status == "failed" and "beyond safety.tare_max_shift_N=100" in result.reason
+
+
+def test_regulator_that_does_not_follow_trips_the_pressure_interlock(config, tmp_path):
+    # stuck at 0 bar from 1 s: the 0.5 bar command at 2.0 s is never followed; 0.5 bar is
+    # beyond the 0.15 bar tolerance at once, the interlock trips after 5 s of it
+    result, run = record(config, tmp_path, regulator_stuck_at_s=1.0)
+    assert result.status == "aborted"
+    assert "pressure interlock: the regulator does not follow" in result.reason
+    assert "0.5 bar commanded for more than 5 s" in result.reason
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    assert tripped["time_s"].iloc[0] == pytest.approx(2.0 + 5.1, abs=0.051)
+    assert_vented_last(run)
+
+
+def test_regulator_overshoot_trips_the_pressure_interlock(config, tmp_path):
+    # 0.3 bar over every command: at a 2.5 bar step it heads for 2.8 > 2.5 + 0.15 bar, and
+    # passes 2.65 bar within 2 s, before the following check (5 s) could trip
+    c = config.replace(sequence={"pressures_bar": (2.5,)})
+    result, run = record(c, tmp_path, overshoot_bar=0.3)
+    assert result.status == "aborted" and "(regulator overshoot)" in result.reason
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    assert tripped["pressure_bar"].iloc[0] > 2.65
+    assert (run.samples["pressure_bar"].iloc[:-1] <= 2.65).all()  # the first sample over
+    assert_vented_last(run)
+
+
+def test_failed_interlock_vent_is_named(config, tmp_path):
+    # The paper's +-98 N cell trips on the way to 0.5 bar; the AO fails at the interlock's vent.
+    c = config.replace(loadcell={"capacity_N": 98.0665, "sensitivity_N_per_V": 9.80665})
+    result, run = record(c, tmp_path, ao_fail_at_s=2.05)
+    assert result.status == "aborted"
+    assert "force interlock" in result.reason
+    assert "the interlock's vent command failed (AOWriteFailed" in result.reason
+    assert "VENT BY HAND" in result.reason
+    failed = run.commands[~run.commands["ok"]]
+    assert list(failed["purpose"]) == ["interlock vent"]
+    assert_vented_last(run)  # the shutdown's vent, tried again, went through
+    assert not run.meta.manual_vent_required
+
+
+def test_failed_final_vent_asks_for_a_vent_by_hand(config, tmp_path):
+    result, run = record(config, tmp_path, disconnect_at_s=7.0)
+    assert result.status == "failed" and result.manual_vent_required
+    assert "VENT BY HAND: the regulator may still hold 0.5 bar" in result.reason
+    assert run.meta.manual_vent_required and "vented by hand" in run.unvented
+    # the bench stays marked: the next command on it vents first and says why
+    import json
+
+    from bench.unvented import _folder
+
+    (marker,) = [json.loads(p.read_text()) for p in _folder("sim-Dev1").glob("*.json")]
+    assert marker["run_path"] == str(run.path) and marker["last_command_bar"] == 0.5
+
+
+def test_stall_shorter_than_the_buffer_delays_but_loses_nothing(config, tmp_path):
+    # A 5 s stall with a 10 s buffer at 1.0 s: the samples wait in the buffer, none is lost, and
+    # the hardware is at 6.0 s when the reader resumes at 1.0 s; the 0.5 bar command, written
+    # when the reader reaches 2.0 s (the virtual reader catches up instantly), lands at 6.0 s.
+    from bench.run import BenchRun
+    from bench.sim import SimBackend
+
+    c = config.replace(sim={"buffer_s": 10.0, "faults": {"stall_at_s": 1.0, "stall_s": 5.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None
+                      ).execute()
+    run = load_run(result.path)
+    assert result.status == "complete" and run.meta.lost_samples == 0
+    np.testing.assert_array_equal(run.samples["sample"], np.arange(len(run.samples)))
+    written = run.commands[run.commands.purpose == "step"]["sample"].iloc[0]
+    applied = [k for k, volts in backend.commands if volts > 0][0]
+    assert (written, applied) == (20, 60)
+
+
+def test_stall_longer_than_the_buffer_loses_the_samples(config, tmp_path):
+    c = config.replace(sim={"buffer_s": 10.0})
+    result, run = record(c, tmp_path, stall_at_s=1.0, stall_s=11.0)
+    assert result.status == "complete_with_gaps" and run.meta.lost_samples == 110
+    assert math.isclose(run.meta.gaps[0].end_s - run.meta.gaps[0].start_s, 11.0)
