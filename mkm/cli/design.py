@@ -15,8 +15,12 @@ def register(subparsers) -> None:
     p = subparsers.add_parser(
         "design", help="design a muscle for required forces: surrogate search of the design "
         "box, FE verification of the best designs", epilog=EXAMPLE,
-        description="Find muscles (D0, t0) that deliver required forces: a surrogate search of "
-        "the design box, then the best designs verified with the FE model.")
+        description="Find muscles (D0, t0; L0, theta0 and rubber where the surrogate takes "
+        "them) that deliver required forces: a surrogate search of the design box with a "
+        "margin covering its uncertainty, then the best designs verified with the FE model at "
+        "the converged mesh (a design meets the requirements only when the FE says so). "
+        "Writes designs.csv, designs.json (provenance) and design.html under --out; exit "
+        "status 1 when no verified design meets every requirement.")
     p.add_argument("--require", action="append", default=[], metavar="F@P,eps=E",
                    type=argtype(parse_requirement, "--require"),
                    help="force at least F [N] at pressure P [bar], held at shortening eps "
