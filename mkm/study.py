@@ -23,6 +23,7 @@ import platform
 import time
 import warnings
 from collections.abc import Callable
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -55,6 +56,8 @@ STABILITY_MUSCLES = (("smallest: D0 30 mm, t0 2 mm", 30.0, 2.0),
                      ("largest: D0 50 mm, t0 4 mm", 50.0, 4.0))
 STABILITY_PRESSURES = tuple(np.round(np.arange(0.0, 4.0001, 0.25), 2))
 STABILITY_EPS = tuple(np.round(np.arange(0.0, 0.3501, 0.05), 3))
+# whether run_study shows progress, seen by the predictor factories it calls
+_SHOW_PROGRESS: ContextVar[bool] = ContextVar("mkm_study_progress", default=False)
 FORCE_NOISE_N = 0.1  # a tenth of a newton: below what the bench resolves, so not physics
 
 
@@ -128,11 +131,16 @@ def trained_surrogate(kind: str, dataset, cache_dir=DEFAULT_CACHE_DIR) -> ForceM
 
 
 def train_surrogates(kinds, dataset, cache_dir, n_jobs: int = 2) -> None:
-    """Train the ``kinds`` not yet cached, ``n_jobs`` processes at a time."""
+    """Train the ``kinds`` not yet cached, ``n_jobs`` processes at a time (a progress bar per
+    kind while :func:`run_study` shows progress: cold, this is minutes)."""
     from joblib import Parallel, delayed
 
-    Parallel(n_jobs=n_jobs)(delayed(trained_surrogate)(kind, dataset, cache_dir)
-                            for kind in kinds)
+    jobs = Parallel(n_jobs=n_jobs, return_as="generator_unordered")(
+        delayed(trained_surrogate)(kind, dataset, cache_dir) for kind in kinds)
+    with progress_bar(len(kinds), "train surrogates", _SHOW_PROGRESS.get(),
+                      unit="kind") as bar:
+        for _ in jobs:
+            bar.update(1)
 
 
 @dataclass
@@ -340,7 +348,11 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
     info = {**provenance(), "machine_name": machine, "reference": config.reference,
             "muscles": [list(m) for m in config.muscles],
             "pressures_bar": list(config.pressures)}
-    predictors = config.predictors(cache_dir)
+    token = _SHOW_PROGRESS.set(progress)
+    try:
+        predictors = config.predictors(cache_dir)
+    finally:
+        _SHOW_PROGRESS.reset(token)
     models = {p.label: p.build() for p in predictors}
     labels = {p.label for p in predictors}
     methods = [m for m in config.stability_methods if m in labels]
