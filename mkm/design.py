@@ -42,7 +42,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-from fem.calibration import calibrated
+from fem.calibration import calibrated, calibration_provenance
 from fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from fem.interface import ForceModel
 from fem.ladder import model_class
@@ -878,7 +878,10 @@ def write_design(result: DesignResult, out: Path) -> Path:
                       "trained": (getattr(surrogate, "metadata", None) or {}).get("trained"),
                       "dataset": (getattr(surrogate, "metadata", None) or {}).get("dataset")},
         "fe": {"name": fe.name, "params": fe.params(),
-               "version": source_version(type(fe).__module__)} if fe else None,
+               "version": source_version(type(fe).__module__),
+               "calibration": calibration_provenance(fe)} if fe else None,
+        # where the default theta0 (the constraints' default) came from
+        "default_theta0": calibration_provenance(parse_spec("axisym").build()),
         "design_version": source_version("mkm.design"),
     }
     record["columns"] = COLUMN_DOCS

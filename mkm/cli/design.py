@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from fem.ranges import parse_number
-from mkm.cli.common import argtype
+from mkm.cli.common import add_calibration_argument, argtype, with_calibration
 
 EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
            "--t0 2:3 --out mkm-out/design")
@@ -52,11 +52,12 @@ def register(subparsers) -> None:
     p.add_argument("--surrogate", default="surrogate", metavar="SPEC",
                    help="surrogate spec that searches the box (default: %(default)s)")
     p.add_argument("--out", help="output folder (default: mkm-out/design)")
+    add_calibration_argument(p)
     p.add_argument("--cache", metavar="DIR", help="FE predictions kept here, so a second run "
                    "is fast (default: the user cache, predictions/)")
     p.add_argument("--no-cache", action="store_true", help="solve every FE sweep; no cache")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
-    p.set_defaults(func=_design)
+    p.set_defaults(func=with_calibration(_design))
 
 
 def _design(args) -> int:
