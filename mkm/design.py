@@ -6,11 +6,10 @@ The reference work's purpose is choosing a muscle's geometry "according to the r
 1. **Search.** The candidates of the design box (``D0_mm`` x ``t0_mm``, coarse to fine, times
    the values of ``L0_mm``, ``theta0_deg`` and the rubber that the constraints allow) are
    predicted by the surrogate in vectorised calls, one per requirement and grid. A candidate is
-   *feasible* when its
-   predicted force minus the surrogate's uncertainty (:func:`surrogate_uncertainty`) meets every
-   requirement, no requirement lies past its braid lock, and it fits the housing (outer diameter
-   at the working pressure, :func:`outer_diameter_mm`). Feasible candidates are ranked by the
-   objective.
+   *feasible* when its predicted force minus the surrogate's uncertainty
+   (:func:`surrogate_uncertainty`) meets every requirement, no requirement lies past its braid
+   lock, and it fits the housing (outer diameter at the working pressure,
+   :func:`outer_diameter_mm`). Feasible candidates are ranked by the objective.
 2. **Verification.** The best ``top`` candidates (kept apart by :data:`MIN_SEPARATION` of the
    box so that they are alternatives, not neighbours) are solved with the axisymmetric FE model
    at the converged mesh over a pressure sweep at each requirement's eps. A design meets the
@@ -21,13 +20,13 @@ The reference work's purpose is choosing a muscle's geometry "according to the r
    does not pull there), ``fe_not_converged``.
 
 :func:`design` is the Python API (a DataFrame of the verified designs); :func:`run_design` also
-writes ``designs.csv``, ``designs.json`` (provenance), ``design.html`` and its figures.
+writes ``designs.csv``, ``designs.json`` (provenance), ``design.html`` and its figures
+(:mod:`mkm.design_page`).
 """
 
 from __future__ import annotations
 
 import inspect
-import json
 import re
 import time
 import tomllib
@@ -38,20 +37,15 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-from matplotlib.figure import Figure
-from matplotlib.lines import Line2D
-from matplotlib.patches import Patch, Rectangle
 
-from fem.calibration import calibrated, calibration_provenance
+from fem.calibration import calibrated
 from fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from fem.interface import ForceModel
 from fem.ladder import model_class
 from fem.materials import MATERIALS
 from fem.paper import L0_MM
 from fem.ranges import parse_fraction, parse_number
-from fem.records import provenance, source_version, write_atomic, write_json_atomic
 from fem.thickwall import klute_hannaford_threshold_pressure
-from mkm.html import esc, figure_html, html_page, kv_html, save_figure, table_html
 from mkm.registry import ENTRIES, parse_spec
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
@@ -140,7 +134,8 @@ def parse_bounds(text, name: str) -> tuple[float, float]:
 @dataclass(frozen=True)
 class Constraints:
     """The design box and the housing. ``None`` means: D0 and t0 over the surrogate's training
-    box, L0 the paper's 282 mm, theta0 the FE model's calibration; rubber a name of
+    box, L0 the surrogate's (the paper's 282 mm), theta0 the FE model's calibration
+    (``fem/calibration.json`` or ``--calibration FILE``); rubber a name of
     :data:`fem.materials.MATERIALS` (or several).
 
     Parameters
@@ -407,7 +402,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     base = _build(spec.text)
     domain = base.domain
     at = _predicts_at(base)
-    theta0_default = float(at.get("theta0_deg") or calibrated("axisym")["theta0_deg"])
+    theta0_default = float(calibrated("axisym")["theta0_deg"])  # the FE model's, as verified
     box = {"D0_mm": constraints.D0_mm or tuple(domain.D0_mm),
            "t0_mm": constraints.t0_mm or tuple(domain.t0_mm),
            "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
@@ -513,7 +508,7 @@ def _check_conflicts(requirements, constraints, box, domain, parameter_box) -> N
     for key, (dlo, dhi) in spans.items():
         low, high = box[key]
         if low < dlo - 1e-9 * max(abs(dlo), 1) or high > dhi + 1e-9 * max(abs(dhi), 1):
-            problems.append(f"{key}={_span(low, high)} reaches outside the surrogate's "
+            problems.append(f"{key}={span_text(low, high)} reaches outside the surrogate's "
                             f"training box {dlo:g}:{dhi:g}")
     for rubber in constraints.rubber:
         for key in ("C10_MPa", "C01_MPa"):
@@ -521,7 +516,7 @@ def _check_conflicts(requirements, constraints, box, domain, parameter_box) -> N
             if key in parameter_box and not (parameter_box[key][0] <= value
                                              <= parameter_box[key][1]):
                 problems.append(f"rubber={rubber} ({key}={value:g}) lies outside the "
-                                f"surrogate's training box {_span(*parameter_box[key])}")
+                                f"surrogate's training box {span_text(*parameter_box[key])}")
     if box["t0_mm"][1] >= box["D0_mm"][0] / 2:
         problems.append(f"t0_mm up to {box['t0_mm'][1]:g} mm conflicts with D0_mm from "
                         f"{box['D0_mm'][0]:g} mm: expected t0 < D0/2")
@@ -530,7 +525,7 @@ def _check_conflicts(requirements, constraints, box, domain, parameter_box) -> N
     low, high = box["theta0_deg"]
     angle_ok = 0 < low and high < LOCKING_ANGLE_DEG
     if not angle_ok:
-        problems.append(f"theta0_deg={_span(low, high)} is invalid: expected 0 < theta0 < "
+        problems.append(f"theta0_deg={span_text(low, high)} is invalid: expected 0 < theta0 < "
                         f"{LOCKING_ANGLE_DEG:.1f} deg (the locking angle)")
     # the smallest theta0 has the largest locking shortening
     eps_max = float(chou_hannaford_eps_max(low)) if angle_ok else np.inf
@@ -565,7 +560,8 @@ def _check_conflicts(requirements, constraints, box, domain, parameter_box) -> N
         raise ValueError("; ".join(problems))
 
 
-def _span(low: float, high: float) -> str:
+def span_text(low: float, high: float) -> str:
+    """``37`` for a fixed value, ``30:50`` for a range."""
     return f"{low:g}" if low == high else f"{low:g}:{high:g}"
 
 
@@ -585,7 +581,8 @@ def _rank(cand: pd.DataFrame, objective: str) -> pd.DataFrame:
     return cand.sort_values(keys[0], ascending=keys[1], kind="stable", ignore_index=True)
 
 
-def _geometry(row) -> str:
+def geometry_text(row) -> str:
+    """``D0 = ... mm, t0 = ... mm, L0 = ... mm, theta0 = ... deg`` of a design row."""
     text = f"D0 = {row['D0_mm']:.2f} mm, t0 = {row['t0_mm']:.2f} mm"
     return text + f", L0 = {row['L0_mm']:.4g} mm, theta0 = {row['theta0_deg']:.4g} deg"
 
@@ -596,7 +593,7 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         best = cand[cand["meets_forces"]].sort_values("outer_diameter_mm").iloc[0]
         return (f"infeasible: no design meets every requirement within max_outer_diameter_mm="
                 f"{constraints.max_outer_diameter_mm:g}: the narrowest that does, "
-                f"{_geometry(best)}, is {best['outer_diameter_mm']:.1f} mm wide at "
+                f"{geometry_text(best)}, is {best['outer_diameter_mm']:.1f} mm wide at "
                 f"{result.working_pressure_bar:g} bar")
     pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
     closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]
@@ -608,7 +605,8 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force"))
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
-            f"margin ({result.uncertainty}); closest: {_geometry(closest)}: " + "; ".join(parts))
+            f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
+            + "; ".join(parts))
 
 
 def pick(feasible: pd.DataFrame, top: int, box: dict) -> pd.DataFrame:
@@ -752,7 +750,7 @@ class DesignResult:
         best = self.chosen
         if best is None:
             return text + ": none confirmed, see the table's FE margins"
-        return (text + f"; chosen: {_geometry(best)}, outer diameter "
+        return (text + f"; chosen: {geometry_text(best)}, outer diameter "
                 f"{best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar")
 
 
@@ -798,6 +796,8 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         "meets_all", "min_fe_margin_pct", "flags", "fe_failure"]
     result = DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
     if out_dir is not None:
+        from mkm.design_page import write_design
+
         write_design(result, Path(out_dir))
     return result
 
@@ -838,11 +838,12 @@ def design(requirements, constraints=None, objective: str = "min-outer-diameter"
     result = run_design(requirements, constraints, objective, top, mesh=mesh,
                         surrogate=surrogate, progress=progress, cache_dir=cache_dir)
     frame = result.designs.copy()
-    frame.attrs.update(_record(result))
+    frame.attrs.update(design_record(result))
     return frame
 
 
-def _record(result: DesignResult) -> dict:
+def design_record(result: DesignResult) -> dict:
+    """What ``designs.json`` records besides provenance (also the ``attrs`` of :func:`design`)."""
     s = result.search
     return {"requirements": [asdict(r) | {"label": f"r{k}: {r.label}"}
                              for k, r in enumerate(s.requirements, start=1)],
@@ -861,260 +862,3 @@ def _record(result: DesignResult) -> dict:
                              "sweeps_from_cache": result.fe_cached,
                              "near_lock_fraction_of_eps_max": NEAR_LOCK_FRACTION},
             "summary": result.summary()}
-
-
-# --- files: CSV, JSON sidecar, HTML -------------------------------------------------------------
-
-
-def write_design(result: DesignResult, out: Path) -> Path:
-    """``designs.csv``, ``designs.json``, ``design.html`` and the figures into ``out``."""
-    out.mkdir(parents=True, exist_ok=True)
-    s = result.search
-    record = _record(result)
-    surrogate = next(iter(s.models.values()))
-    fe = next(iter(result.fe_models.values()), None)
-    record["provenance"] = {
-        "software": provenance(),
-        "surrogate": {"name": surrogate.name, "params": surrogate.params(),
-                      "trained": (getattr(surrogate, "metadata", None) or {}).get("trained"),
-                      "dataset": (getattr(surrogate, "metadata", None) or {}).get("dataset")},
-        "fe": {"name": fe.name, "params": fe.params(),
-               "version": source_version(type(fe).__module__),
-               "calibration": calibration_provenance(fe)} if fe else None,
-        # where the default theta0 (the constraints' default) came from
-        "default_theta0": calibration_provenance(parse_spec("axisym").build()),
-        "design_version": source_version("mkm.design"),
-    }
-    record["columns"] = COLUMN_DOCS
-    csv = out / "designs.csv"
-    write_atomic(csv, result.designs.to_csv(index=False, float_format="%.6g"))
-    write_json_atomic(out / "designs.json", record)
-    write_atomic(out / "fe_curves.csv", result.curves.to_csv(index=False, float_format="%.6g"))
-    figures = []
-    best = result.chosen if result.chosen is not None else result.designs.iloc[0]
-    data = contour_data(result, best)
-    for k, req in enumerate(s.requirements, start=1):
-        fig = contour_figure(result, k - 1, best, data)
-        figures.append((save_figure(fig, out / f"requirement{k}_contours.png"),
-                        f"Requirement {k} ({esc(req.label)}): surrogate force over D0 x t0 at "
-                        f"{req.pressure_bar:g} bar and eps = {req.eps:g} (L0 = "
-                        f"{best['L0_mm']:.4g} mm, theta0 = {best['theta0_deg']:.4g} deg, "
-                        f"{esc(best['rubber'])}); black line: the required force, dashed: "
-                        "plus the surrogate margin; hatched: feasible for every requirement "
-                        "and the housing (dotted: its outer diameter limit); dashed box: the "
-                        "constraints (the search's feasible set is the hatched region inside "
-                        "it); markers: the verified designs (white: the FE confirms), star: "
-                        "the chosen design."))
-    fig = curves_figure(result)
-    figures.append((save_figure(fig, out / "fe_curves.png"),
-                    "FE force against pressure of the verified designs (axisym, "
-                    f"{esc(result.mesh)} mesh) at each requirement's eps; triangles: the "
-                    "requirements (the force must reach them); crosses: FE points that did "
-                    "not converge."))
-    html = out / "design.html"
-    write_atomic(html, html_page("McKibben muscle design", _html_body(result, record, figures)))
-    result.files = {"csv": csv, "json": out / "designs.json", "html": html}
-    return html
-
-
-COLUMN_DOCS = {
-    "rank": "rank of the design in the surrogate search (1: best by the objective)",
-    "D0_mm": "inner tube diameter at rest [mm]", "t0_mm": "wall thickness at rest [mm]",
-    "L0_mm": "length at rest [mm]", "theta0_deg": "braid angle at rest [deg]",
-    "rubber": "wall material (fem.materials.MATERIALS)",
-    "outer_diameter_mm": "braid diameter of the unloaded muscle at the working pressure [mm] "
-                         "(thick-wall kinematics, free contraction)",
-    "rubber_volume_cm3": "wall volume at rest [cm^3]",
-    "r<k>_surrogate_N": "surrogate force at requirement k [N]",
-    "r<k>_uncertainty_N": "margin the surrogate force had to clear [N]",
-    "r<k>_fe_N": "FE force at requirement k [N] (empty: not converged)",
-    "r<k>_fe_margin_N": "FE force minus the required force [N]",
-    "r<k>_fe_margin_pct": "FE margin over the required force [%]",
-    "r<k>_threshold_bar": "FE threshold pressure of requirement k's eps [bar]",
-    "r<k>_meets": "the FE force meets requirement k",
-    "meets_all": "the FE force meets every requirement (the verdict)",
-    "min_fe_margin_pct": "smallest FE margin over the requirements [%]",
-    "flags": "r<k>:near_lock, r<k>:threshold_above_pressure, r<k>:fe_not_converged",
-    "fe_failure": "the FE's own failure message per requirement",
-}
-
-FLAG_TEXT = {"near_lock": f"near the braid lock (eps >= {NEAR_LOCK_FRACTION:g} eps_max of "
-                          "Equation 2, or the FE failed at the locking angle)",
-             "threshold_above_pressure": "the threshold pressure is at or above the "
-                                         "requirement's pressure: the muscle does not pull",
-             "fe_not_converged": "the FE did not converge"}
-
-
-def _constraint_text(key: str, value) -> str:
-    if isinstance(value, list) and key != "rubber":
-        return f"{key} = {_span(*value)}"
-    if key == "rubber":
-        return f"rubber = {', '.join(value)}"
-    return f"{key} = {'none' if value is None else format(value, 'g')}"
-
-
-def _html_body(result: DesignResult, record: dict, figures) -> str:
-    s = result.search
-    software = record["provenance"]["software"]
-    best = result.chosen
-    status = (f'<p><span class="status status-complete">chosen: {esc(_geometry(best))}, outer '
-              f"diameter {best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar"
-              "</span></p>" if best is not None else
-              '<p><span class="status status-other">no verified design meets every '
-              "requirement by the FE: see the margins below</span></p>")
-    reqs = pd.DataFrame([{"requirement": f"r{k}", "force [N] at least": r.force_N,
-                          "pressure [bar]": r.pressure_bar, "eps": r.eps}
-                         for k, r in enumerate(s.requirements, start=1)])
-    keep = ("_surrogate_N", "_fe_N", "_fe_margin_pct", "_meets")
-    table = result.designs[[c for c in result.designs.columns
-                            if not re.match(r"r\d+_", c) or c.endswith(keep)]]
-    table = table.drop(columns=["fe_failure"])
-    notes = []
-    for _, row in result.designs.iterrows():
-        for flag in filter(None, str(row["flags"]).split(";")):
-            k, code = flag.split(":")
-            notes.append(f"design rank {row['rank']}, {k}: {FLAG_TEXT[code]}")
-    parts = [
-        f"<p>Generated {esc(software['date_utc'])} by <code>{esc(software['command'])}</code>. "
-        f"Objective: <b>{esc(s.objective)}</b>. The surrogate searched the box; the FE model "
-        "(axisym, " + esc(result.mesh) + " mesh) verified the best designs: a design meets "
-        "the requirements only when the FE says so, and every margin below is the FE's.</p>",
-        status,
-        table_html(reqs, "Requirements: the force the muscle must develop at least, held at "
-                   "eps, at that pressure."),
-        kv_html({"constraints": ", ".join(_constraint_text(k, v)
-                                          for k, v in s.constraints.items()),
-                 "working pressure": f"{s.working_pressure_bar:g} bar (outer diameter check)",
-                 "surrogate margin": s.uncertainty,
-                 "search": record["summary"]}),
-        "<h2>Verified designs</h2>",
-        table_html(table, "Verified designs: geometry, outer diameter at the working pressure "
-                   "[mm], rubber volume [cm³], per requirement r&lt;k&gt; the surrogate's and "
-                   "the FE's force [N] and the FE margin [%]; meets_all is the FE's verdict. "
-                   "designs.csv has the surrogate margins, FE threshold pressures and failures "
-                   "too.",
-                   formats={"theta0_deg": ".4g", "L0_mm": ".4g"}),
-        ('<p class="note">Flags: ' + esc("; ".join(notes)) + "</p>") if notes else "",
-        "<h2>Figures</h2>",
-        *(figure_html(path, caption) for path, caption in figures),
-        "<h2>Provenance</h2>",
-        f"<pre>{esc(json.dumps(record['provenance'], indent=1, default=str))}</pre>",
-    ]
-    return "".join(parts)
-
-
-# --- figures ------------------------------------------------------------------------------------
-
-
-def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) -> dict:
-    """The surrogate over its whole D0 x t0 box at ``best``'s L0, theta0 and rubber, for the
-    contour figures: ``D0``, ``t0`` grids [mm], per requirement ``force`` and ``margin`` [N],
-    ``outer`` diameter [mm] and ``feasible`` (every requirement with its margin, the housing)."""
-    s = result.search
-    model = s.models[(best["L0_mm"], best["theta0_deg"], best["rubber"])]
-    d = model.domain
-    D0, t0 = np.meshgrid(np.linspace(*d.D0_mm, n_D0), np.linspace(*d.t0_mm, n_t0))
-    out = {"D0": D0, "t0": t0, "force": [], "margin": []}
-    feasible = np.ones(D0.shape, dtype=bool)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        for r in s.requirements:
-            pred = model.predict(r.pressure_bar, D0, t0, r.eps)
-            u, _ = surrogate_uncertainty(model, pred, r.force_N)
-            f = np.where(pred.valid, pred.force_N, np.nan)
-            feasible &= np.nan_to_num(f - u, nan=-np.inf) >= r.force_N
-            out["force"].append(f)
-            out["margin"].append(u)
-    out["outer"] = outer_diameter_mm(D0, t0, best["theta0_deg"], s.working_pressure_bar,
-                                     MATERIALS[best["rubber"]])
-    limit = s.constraints.get("max_outer_diameter_mm")
-    out["feasible"] = feasible if limit is None else feasible & (out["outer"] <= limit)
-    return out
-
-
-def contour_figure(result: DesignResult, index: int, best, data: dict) -> Figure:
-    """Surrogate force over the surrogate's D0 x t0 box at requirement ``index`` (``data`` from
-    :func:`contour_data`): the required force, the feasible region hatched, the housing limit,
-    the constraint box dashed, the verified designs and the chosen one marked."""
-    s = result.search
-    req = s.requirements[index]
-    D0, t0 = data["D0"], data["t0"]
-    force, margin = data["force"][index], data["margin"][index]
-    fig = Figure(figsize=(8.8, 4.8), layout="constrained")
-    ax = fig.subplots()
-    filled = ax.contourf(D0, t0, force, levels=14, cmap="viridis")
-    fig.colorbar(filled, ax=ax, label=f"surrogate force at {req.pressure_bar:g} bar, "
-                 f"eps {req.eps:g} [N]")
-    ax.contour(D0, t0, force, levels=[req.force_N], colors="black", linewidths=1.6)
-    ax.contour(D0, t0, force - margin, levels=[req.force_N], colors="black",
-               linewidths=1.0, linestyles="--")
-    if data["feasible"].any():
-        ax.contourf(D0, t0, data["feasible"].astype(float), levels=[0.5, 1.5], colors="none",
-                    hatches=["///"])
-    limit = s.constraints.get("max_outer_diameter_mm")
-    if limit is not None:
-        ax.contour(D0, t0, data["outer"], levels=[limit], colors="white", linewidths=1.4,
-                   linestyles=":")
-    (lo_D, hi_D), (lo_t, hi_t) = s.constraints["D0_mm"], s.constraints["t0_mm"]
-    ax.add_patch(Rectangle((lo_D, lo_t), hi_D - lo_D, hi_t - lo_t, fill=False, color="white",
-                           linestyle="--", linewidth=1.2))
-    ok = result.designs[result.designs["meets_all"]]
-    bad = result.designs[~result.designs["meets_all"]]
-    ax.plot(ok["D0_mm"], ok["t0_mm"], "o", color="white", markeredgecolor="black",
-            clip_on=False, zorder=4)
-    ax.plot(bad["D0_mm"], bad["t0_mm"], "o", color="none", markeredgecolor="red",
-            clip_on=False, zorder=4)
-    ax.plot([best["D0_mm"]], [best["t0_mm"]], "*", color="gold", markeredgecolor="black",
-            markersize=16, clip_on=False, zorder=5)
-    handles = [Line2D([], [], color="black", label=f"{req.force_N:g} N required"),
-               Line2D([], [], color="black", linestyle="--", label="required + margin"),
-               Patch(facecolor="none", hatch="///", edgecolor="black",
-                     label="feasible (every\nrequirement, housing)"),
-               Line2D([], [], color="0.5", linestyle="--", label="constraint box"),
-               Line2D([], [], marker="o", color="white", markeredgecolor="black",
-                      linestyle="none", label="verified: FE meets all"),
-               Line2D([], [], marker="o", color="none", markeredgecolor="red",
-                      linestyle="none", label="verified: FE falls short"),
-               Line2D([], [], marker="*", color="gold", markeredgecolor="black",
-                      linestyle="none", markersize=12, label="chosen")]
-    if limit is not None:
-        handles.insert(3, Line2D([], [], color="0.5", linestyle=":",
-                                 label=f"outer diameter {limit:g} mm\nat "
-                                       f"{s.working_pressure_bar:g} bar"))
-    fig.legend(handles=handles, fontsize=7.5, loc="outside right upper")
-    ax.set(xlabel="inner diameter D0 [mm]", ylabel="wall thickness t0 [mm]",
-           title=f"requirement {index + 1}: {req.label}")
-    return fig
-
-
-def curves_figure(result: DesignResult) -> Figure:
-    """FE force against pressure of every verified design, one panel per eps, requirements as
-    triangles."""
-    eps_levels = sorted({r.eps for r in result.search.requirements})
-    fig = Figure(figsize=(5.0 * len(eps_levels) + 1.0, 4.4), layout="constrained")
-    axes = fig.subplots(1, len(eps_levels), squeeze=False)[0]
-    curves = result.curves
-    for ax, eps in zip(axes, eps_levels, strict=True):
-        for j, (_, row) in enumerate(result.designs.iterrows()):
-            rows = curves[(curves["design"] == row["rank"]) & np.isclose(curves["eps"], eps)]
-            rows = rows.sort_values("pressure_bar")
-            style = "-" if row["meets_all"] else ":"
-            ax.plot(rows["pressure_bar"], rows["force_N"], style, color=f"C{j}",
-                    label=f"#{row['rank']}: D0 {row['D0_mm']:.2f}, t0 {row['t0_mm']:.2f}"
-                    + ("" if row["meets_all"] else " (short)"))
-            bad = rows[~rows["converged"].astype(bool)]
-            if len(bad):
-                ax.plot(bad["pressure_bar"], np.zeros(len(bad)), "x", color="0.45",
-                        clip_on=False)
-        for k, r in enumerate(result.search.requirements, start=1):
-            if r.eps == eps:
-                ax.plot([r.pressure_bar], [r.force_N], "^", color="black", markersize=10,
-                        zorder=5)
-                ax.annotate(f"r{k} ≥ {r.force_N:g} N", (r.pressure_bar, r.force_N),
-                            textcoords="offset points", xytext=(-60, 8), fontsize=8)
-        ax.set(xlabel="pressure P [bar]", ylabel="FE force F [N]", title=f"eps = {eps:g}")
-        ax.set_xlim(left=0.0)
-        ax.set_ylim(bottom=0.0)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7, loc="upper left")
-    return fig
