@@ -130,3 +130,41 @@ def braid_inextensibility(y: np.ndarray, theta0_deg: float, Ro_mm: float):
     hess[..., 1, 1] = 2 * c2
     hess[..., 2, 2] = 2 * c2
     return g, grad, hess
+
+
+def sliding_sleeve_length(y: np.ndarray, theta0_deg: float, Ro_mm: float):
+    r"""Sleeve length density of a frictionless braided sleeve on the outer surface, minus one.
+
+    A sleeve that slides on the rubber is a braid of its own: its local net keeps
+    ``cos^2 theta0 L_s^2 + sin^2 theta0 l_t^2 = 1`` in its own meridional stretch ``L_s``, while
+    its radius is the rubber's (hoop stretch ``l_t = 1 + u_r / R_o``). Sleeve material is
+    ``dS = c l_s dZ / sqrt(1 - s^2 l_t^2)`` per rubber length ``dZ`` (``l_s`` the rubber
+    surface's meridional stretch, ``c = cos theta0``, ``s = sin theta0``), and the sleeve ends
+    are held by the caps, so the one constraint is its total length,
+    ``\int (c l_s / sqrt(1 - s^2 l_t^2) - 1) dZ = 0``, with one uniform fibre tension (no
+    friction). A uniform state satisfies it exactly where the bonded braid does.
+
+    Returns the density, its gradient and Hessian with respect to ``y = (u_r, du_r/dZ,
+    du_z/dZ)``; NaN past the sleeve's lock (``s l_t >= 1``).
+    """
+    c = np.cos(np.deg2rad(theta0_deg))
+    s2 = 1.0 - c * c
+    ur, urZ, uzZ = y[..., 0], y[..., 1], y[..., 2]
+    lt = 1.0 + ur / Ro_mm
+    q = 1.0 - s2 * lt * lt
+    with np.errstate(invalid="ignore", divide="ignore"):
+        B = q ** -0.5
+        dB = s2 * lt * q ** -1.5  # dB/dl_t
+        d2B = s2 * q ** -1.5 + 3.0 * s2 * s2 * lt * lt * q ** -2.5
+    ls = np.sqrt((1.0 + uzZ) ** 2 + urZ**2)
+    n1, n2 = urZ / ls, (1.0 + uzZ) / ls
+    f = c * ls * B - 1.0
+    grad = np.stack([c * ls * dB / Ro_mm, c * B * n1, c * B * n2], axis=-1)
+    hess = np.empty(y.shape + (3,))
+    hess[..., 0, 0] = c * ls * d2B / Ro_mm**2
+    hess[..., 0, 1] = hess[..., 1, 0] = c * dB * n1 / Ro_mm
+    hess[..., 0, 2] = hess[..., 2, 0] = c * dB * n2 / Ro_mm
+    hess[..., 1, 1] = c * B * (1.0 - n1 * n1) / ls
+    hess[..., 2, 2] = c * B * (1.0 - n2 * n2) / ls
+    hess[..., 1, 2] = hess[..., 2, 1] = -c * B * n1 * n2 / ls
+    return f, grad, hess

@@ -36,7 +36,7 @@ from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 from fem.calibration import CalibratedTheta0
 from fem.eq2 import BAR_TO_MPA, check_theta0
 from fem.fe.assembly import Assembler, Term, operator
-from fem.fe.forms import braid_inextensibility, cavity_volume, rubber
+from fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
 from fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
 from fem.fe.newton import load_path, newton
 from fem.interface import ForceModel
@@ -49,6 +49,10 @@ INTORDER = 4
 #: Halvings of a free-path step before the threshold search gives up: from span/5, 16 reach
 #: span/3e5 (the fine mesh's cap elements need about span/2e4 where the end zone forms)
 FREE_PATH_CUTBACKS = 16
+#: How the braid meets the rubber: ``bonded`` (fibres glued to the outer surface point by point,
+#: inextensible everywhere) or ``sliding`` (a frictionless sleeve: one uniform fibre tension and
+#: the sleeve's total length kept, see :func:`fem.fe.forms.sliding_sleeve_length`)
+SLEEVES = ("bonded", "sliding")
 
 
 class HalfMuscle:
@@ -59,9 +63,11 @@ class HalfMuscle:
     """
 
     def __init__(self, D0_mm, t0_mm, L0_mm, theta0_deg, material: MooneyRivlin, mesh: str,
-                 braid: bool = True, cap: str = "clamped"):
+                 braid: bool = True, cap: str = "clamped", sleeve: str = "bonded"):
         if cap not in ("clamped", "sliding"):
             raise ValueError(f"cap={cap!r} is invalid: expected 'clamped' or 'sliding'")
+        check_sleeve(sleeve)
+        self.sleeve = sleeve
         self.Ri, self.Ro, self.H = D0_mm / 2.0, D0_mm / 2.0 + t0_mm, L0_mm / 2.0
         self.theta0_deg, self.material = theta0_deg, material
         m = half_muscle_mesh(D0_mm, t0_mm, L0_mm, mesh)
@@ -74,7 +80,8 @@ class HalfMuscle:
         ob = FacetBasis(m, eu, facets=outer, intorder=INTORDER)
         nu, npr = ub.N, pb.N
         tension_nodes = np.unique(m.facets[:, outer]) if braid else np.array([], dtype=int)
-        nl = len(tension_nodes)
+        # bonded: a tension per outer node; sliding: one uniform tension
+        nl = len(tension_nodes) if sleeve == "bonded" else int(braid)
 
         # rubber: y = (F_rr, F_rz, F_zr, F_zz, F_tt, p)
         R = ub.global_coordinates()[0]
@@ -93,7 +100,8 @@ class HalfMuscle:
         Bb = operator(ob, lambda v, g: (v[0], g[0, 1], g[1, 1], 0 * Z))
         Bl = np.zeros(Bb.shape[:2] + (2, 4))
         Bl[..., 0, 3], Bl[..., 1, 3] = shape_a, 1.0 - shape_a
-        lam_dofs = nu + npr + np.searchsorted(tension_nodes, m.facets[:, ob.find])
+        lam_dofs = nu + npr + (np.searchsorted(tension_nodes, m.facets[:, ob.find])
+                               if sleeve == "bonded" else np.zeros((2, ob.find.size), int))
         braid_term = (np.concatenate([Bb, Bl], axis=2), np.zeros(4),
                       np.vstack([ob.element_dofs, lam_dofs]), 2 * np.pi * self.Ro * ob.dx)
 
@@ -142,7 +150,8 @@ class HalfMuscle:
         blocks = [K_rub, K_cav]
         if self.braid is not None:
             yb = self.braid.values(y_ext)
-            gb, dgb, hgb = braid_inextensibility(yb[..., :3], self.theta0_deg, self.Ro)
+            constraint = braid_inextensibility if self.sleeve == "bonded" else sliding_sleeve_length
+            gb, dgb, hgb = constraint(yb[..., :3], self.theta0_deg, self.Ro)
             tension = yb[..., 3]
             grad = np.concatenate([tension[..., None] * dgb, gb[..., None]], axis=-1)
             hess = np.zeros(yb.shape + (4,))
@@ -264,8 +273,16 @@ class HalfMuscle:
         return float(self.assemble(y, pressure_MPa)[0][-1])
 
 
-def check_parameters(theta0_deg: float, L0_mm: float, mesh: str) -> None:
+def check_sleeve(braid: str) -> str:
+    """``braid`` if it is one of :data:`SLEEVES`, else ``ValueError``."""
+    if braid not in SLEEVES:
+        raise ValueError(f"braid={braid!r} is invalid: expected one of {', '.join(SLEEVES)}")
+    return braid
+
+
+def check_parameters(theta0_deg: float, L0_mm: float, mesh: str, braid: str = "bonded") -> None:
     """Raise ``ValueError`` naming a model parameter outside its physical range."""
+    check_sleeve(braid)
     check_theta0(theta0_deg)
     if not L0_mm > 0:
         raise ValueError(f"L0_mm={L0_mm:g} is invalid: expected a length > 0 mm")
@@ -275,7 +292,8 @@ def check_parameters(theta0_deg: float, L0_mm: float, mesh: str) -> None:
 
 def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0_deg: float,
                     L0_mm: float = 282.0, mesh: str = "medium",
-                    material: MooneyRivlin = SILASTIC_S) -> dict[str, np.ndarray]:
+                    material: MooneyRivlin = SILASTIC_S,
+                    braid: str = "bonded") -> dict[str, np.ndarray]:
     """Isometric force of one muscle over a pressure sweep, by the axisymmetric FE model.
 
     Parameters
@@ -294,6 +312,9 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
         Mesh level (:data:`fem.fe.mesh.MESH_LEVELS`).
     material : MooneyRivlin
         Wall material (default Silastic S, the paper's Equation 3).
+    braid : {"bonded", "sliding"}
+        How the braid meets the rubber (:data:`SLEEVES`); ``bonded`` as the paper's figure
+        suggests (the paper does not say), ``sliding`` the frictionless-sleeve limit.
 
     Returns
     -------
@@ -303,9 +324,9 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
         to the step's first), ``min_tension_N_per_mm`` (braid), ``failure`` (empty when
         converged); per sweep: ``threshold_pressure_bar`` (P*, force zero up to it) and ``dofs``.
     """
-    check_parameters(theta0_deg, L0_mm, mesh)
+    check_parameters(theta0_deg, L0_mm, mesh, braid)
     P_bar = np.atleast_1d(np.asarray(pressure_bar, dtype=float))
-    half = HalfMuscle(D0_mm, t0_mm, L0_mm, theta0_deg, material, mesh)
+    half = HalfMuscle(D0_mm, t0_mm, L0_mm, theta0_deg, material, mesh, sleeve=braid)
     levels = np.unique(P_bar)
     out = {k: np.zeros(levels.size) for k in ("force_N", "iterations", "cutbacks", "residual",
                                               "min_tension_N_per_mm")}
@@ -376,24 +397,39 @@ class Axisym(CalibratedTheta0, ForceModel):
         Mesh level; ``medium`` is converged to 1 % of ``fine`` in force (see README).
     material : MooneyRivlin
         Wall material; default Silastic S (C10 = 0.0694 MPa, C01 = 0.0628 MPa).
+    braid : {"bonded", "sliding"}
+        ``bonded`` (default): the fibres are glued to the rubber's outer surface and
+        inextensible at every point. ``sliding``: a frictionless sleeve, one uniform fibre
+        tension, only the fibres' total length is kept; its theta0 is calibrated on its own
+        (calibration key ``axisym-sliding``).
     """
 
     name = "axisym"
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
-                 mesh: str = "medium", material: MooneyRivlin = SILASTIC_S):
+                 mesh: str = "medium", material: MooneyRivlin = SILASTIC_S,
+                 braid: str = "bonded"):
         self.theta0_deg = theta0_deg
         self.L0_mm = L0_mm
         self.mesh = mesh
         self.material = material
+        self.braid = braid
+
+    @property
+    def calibration_key(self) -> str:
+        return "axisym" if self.braid == "bonded" else f"axisym-{self.braid}"
 
     def params(self):
-        return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm, "mesh": self.mesh,
-                "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa}
+        params = {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm, "mesh": self.mesh,
+                  "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa}
+        if self.braid != "bonded":  # the default stays out: older records keep their keys
+            params["braid"] = self.braid
+        return params
 
     def _forces(self, P, D0, t0, eps):
+        check_sleeve(self.braid)
         theta0 = self._theta0()
-        check_parameters(theta0, self.L0_mm, self.mesh)
+        check_parameters(theta0, self.L0_mm, self.mesh, self.braid)
         geometry = np.stack([D0.ravel(), t0.ravel(), eps.ravel()], axis=1)
         groups, which = np.unique(geometry, axis=0, return_inverse=True)
         which = which.ravel()
@@ -401,7 +437,7 @@ class Axisym(CalibratedTheta0, ForceModel):
         for g, (d, t, e) in enumerate(groups):
             points = np.flatnonzero(which == g)
             sweep = isometric_sweep(P.ravel()[points], d, t, e, theta0, self.L0_mm, self.mesh,
-                                    self.material)
+                                    self.material, self.braid)
             for key, values in sweep.items():
                 if key not in out:
                     out[key] = np.empty(P.size, dtype=values.dtype)

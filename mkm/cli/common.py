@@ -51,6 +51,9 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
                         help="muscle length at rest [mm] (default 282)")
     parser.add_argument("--mesh", choices=("coarse", "medium", "fine"),
                         help="axisym only: FE mesh level (default medium)")
+    parser.add_argument("--braid", choices=("bonded", "sliding"),
+                        help="axisym only: fibres bonded to the rubber (default) or a "
+                        "frictionless sliding sleeve")
     parser.add_argument("--per-point", action="store_true",
                         help="auto only: choose the model per point (default: one model for "
                         "the whole sweep, the cheapest that meets the tolerance over all of it)")
@@ -96,7 +99,8 @@ def model_from_args(args, **overrides):
     flags = {"theta0_deg": getattr(args, "theta0", None),
              "diameter": getattr(args, "diameter", None), "L0_mm": getattr(args, "L0", None),
              "tolerance": getattr(args, "tolerance", None), "mesh": getattr(args, "mesh", None),
-             "per_point": True if getattr(args, "per_point", False) else None}
+             "per_point": True if getattr(args, "per_point", False) else None,
+             "braid": getattr(args, "braid", None)}
     flags.update(overrides)
     flags = {k: v for k, v in flags.items() if v is not None}
     unknown = sorted(set(flags) - set(spec.entry.params))
