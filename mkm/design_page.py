@@ -22,7 +22,13 @@ from matplotlib.patches import Patch, Rectangle
 
 from fem.calibration import calibration_provenance
 from fem.materials import MATERIALS
-from fem.records import provenance, source_version, write_atomic, write_json_atomic
+from fem.records import (
+    provenance,
+    sidecar_path,
+    source_version,
+    write_atomic,
+    write_csv_with_sidecar,
+)
 from mkm.design import (
     NEAR_LOCK_FRACTION,
     DesignResult,
@@ -56,10 +62,10 @@ def write_design(result: DesignResult, out: Path) -> Path:
         "design_version": source_version("mkm.design"),
     }
     record["columns"] = COLUMN_DOCS
-    csv = out / "designs.csv"
-    write_atomic(csv, result.designs.to_csv(index=False, float_format="%.6g"))
-    write_json_atomic(out / "designs.json", record)
-    write_atomic(out / "fe_curves.csv", result.curves.to_csv(index=False, float_format="%.6g"))
+    csv = write_csv_with_sidecar(out / "designs.csv", result.designs.to_csv(
+        index=False, float_format="%.6g", lineterminator="\n"), record)
+    write_atomic(out / "fe_curves.csv", result.curves.to_csv(index=False, float_format="%.6g",
+                                                             lineterminator="\n"))
     figures = []
     best = result.chosen if result.chosen is not None else result.designs.iloc[0]
     data = contour_data(result, best)
@@ -83,7 +89,7 @@ def write_design(result: DesignResult, out: Path) -> Path:
                     "not converge."))
     html = out / "design.html"
     write_atomic(html, html_page("McKibben muscle design", _html_body(result, record, figures)))
-    result.files = {"csv": csv, "json": out / "designs.json", "html": html}
+    result.files = {"csv": csv, "json": sidecar_path(csv), "html": html}
     return html
 
 
