@@ -1,0 +1,59 @@
+"""The report's figures: invalid points never drawn as forces, uncertainty bands, registry
+colours."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+from matplotlib.collections import PolyCollection
+
+from mkm.figures import INVALID_Y, model_colours, run_figure
+from mkm.registry import parse_specs
+
+STEPS = pd.DataFrame({"pressure_bar_mean": [1.0, 2.0, 1.0], "force_N_mean": [100.0, 210.0, 110.0],
+                      "force_N_std": [1.0, 1.0, 1.0], "direction": ["up", "up", "down"]})
+
+
+def _predictions(model, force, valid, std=None):
+    rows = pd.DataFrame({"model": model, "pressure_bar": [1.0, 2.0, 1.0],
+                         "direction": ["up", "up", "down"], "force_N": force, "valid": valid})
+    rows["err_pct"] = 100 * (STEPS["force_N_mean"] - rows["force_N"]) / 210.0
+    rows["residual_N"] = STEPS["force_N_mean"] - rows["force_N"]
+    if std is not None:
+        rows["force_std_N"] = std
+    return rows
+
+
+def test_colours_come_from_the_registry_entry_and_stay_distinct():
+    specs = parse_specs("eq2,eq2:theta0_deg=50,thickwall,surrogate:kind=gp")
+    colours = model_colours(specs)
+    assert colours["eq2"] == "tab:blue" and colours["thickwall"] == "tab:orange"
+    assert colours["surrogate:kind=gp"] == "tab:red"
+    assert len(set(colours.values())) == 4  # the second eq2 gets a colour of its own
+
+
+def test_invalid_points_are_crosses_above_the_axes_not_forces():
+    pred = _predictions("eq2", [np.nan, 205.0, np.nan], [False, True, False])
+    fig = run_figure(STEPS, pred, "t", {"eq2": "Equation 2"}, {"eq2": "tab:blue"})
+    ax_f = fig.axes[0]
+    crosses = [line for line in ax_f.lines if line.get_marker() == "x"
+               and len(line.get_xdata())]
+    assert crosses, "no invalid marker drawn"
+    for line in crosses:
+        np.testing.assert_array_equal(line.get_ydata(), INVALID_Y)  # axes fraction, > 1
+        assert line.get_transform() != ax_f.transData  # not at a force value
+    curve = next(line for line in ax_f.lines if line.get_label() == "Equation 2")
+    assert np.isnan(np.asarray(curve.get_ydata(), float)[0])  # no 0 N stand-in
+
+
+def test_uncertainty_band_where_the_model_has_one():
+    with_std = _predictions("surrogate", [101.0, 209.0, 101.0], [True] * 3, std=[5.0, 8.0, 5.0])
+    fig = run_figure(STEPS, with_std, "t", {"surrogate": "Surrogate"}, {"surrogate": "tab:red"})
+    bands = [c for c in fig.axes[0].collections if isinstance(c, PolyCollection)]
+    assert len(bands) == 1
+    y = bands[0].get_paths()[0].vertices[:, 1]
+    # the band spans force ± 2 std: 101 ± 10 N at 1 bar, 209 ± 16 N at 2 bar
+    assert np.isclose(y.min(), 91.0) and np.isclose(y.max(), 225.0)
+    plain = _predictions("eq2", [101.0, 209.0, 101.0], [True] * 3)
+    fig = run_figure(STEPS, plain, "t", {"eq2": "Equation 2"}, {"eq2": "tab:blue"})
+    assert not [c for c in fig.axes[0].collections if isinstance(c, PolyCollection)]
