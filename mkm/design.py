@@ -265,7 +265,7 @@ def surrogate_uncertainty(model: ForceModel, prediction, force_N: float) -> tupl
     if "force_std_N" in prediction.extras:
         coverage = ((getattr(model, "metadata", None) or {}).get("metrics") or {}).get(
             "muscle_held_out", {}).get("within_2std", {}).get("median")
-        told = (f" (held-out muscles within 2 std: {100 * coverage:.0f} %)"
+        told = (f"; held-out muscles within 2 std: {100 * coverage:.0f} %"
                 if coverage is not None else "")
         return (STD_FACTOR * np.asarray(prediction.extras["force_std_N"], dtype=float),
                 f"{STD_FACTOR:g} x the surrogate's predictive standard deviation{told}")
