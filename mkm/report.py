@@ -275,6 +275,12 @@ def _pressure_tolerance(meta) -> float:
     return float(settle.get("pressure_tolerance_bar", 0.0) or 0.0)
 
 
+def _plain(text) -> str:
+    """``text`` shown literally in a matplotlib title: ``$...$`` in a recorded muscle id would
+    otherwise be parsed as mathtext (and crash on bad TeX)."""
+    return str(text).replace("$", r"\$")
+
+
 def _planned_steps(meta) -> str:
     """Steps planned, from any run.json schema (a count or the list of steps)."""
     n = getattr(meta, "n_steps", None)
@@ -362,7 +368,7 @@ def _overlay_section(runs: list[_Run], out: Path, names: dict, colours: dict) ->
         if len(members) < 2:
             continue
         members = sorted(members, key=lambda r: r.eps_pct)
-        title = (f"{mid}: D0 = {D0} mm, t0 = {t0} mm, L0 = {L0} mm; "
+        title = (f"{_plain(mid)}: D0 = {D0} mm, t0 = {t0} mm, L0 = {L0} mm; "
                  + ", ".join(f"eps = {r.eps_pct:.1f} %" for r in members))
         fig = overlay_figure([(r.label, r.run.steps, r.scored) for r in members], title,
                              names, colours)
@@ -396,6 +402,7 @@ def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours:
                       else "in this report"})
     keys = dict.fromkeys(k for r in runs for k in r.keys)
     auto = "".join(_auto_paragraph(r, tolerance) for r in runs) if tolerance else ""
+    auto += _study_table(runs)
     return ('<h2 id="speed">How fast, how good</h2>'
             + figure_html(path, "Each model's seconds per predicted force (log; a cached FE "
                           "sweep reports the time of its original solve) against its largest "
@@ -442,7 +449,7 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
 
     stem = f"run{r.k}"
     r.scored.to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
-    title = (f"run {r.k}: {muscle.get('id', '')}, eps = {r.eps_pct:.1f} %")
+    title = (f"run {r.k}: {_plain(muscle.get('id', ''))}, eps = {r.eps_pct:.1f} %")
     fig_path = save_figure(run_figure(steps, r.scored, title, names, colours),
                            out / f"{stem}_force_error.png")
     table = pd.DataFrame([{"model": names[s["model"]].rsplit(" [", 1)[0], "spec": s["model"],
@@ -539,6 +546,44 @@ def _invalid_note(scored: pd.DataFrame, names: dict) -> str:
     return ('<p class="note">No valid number (invalid, out of domain or not converged), shown '
             "as crosses above the axes and excluded from every number: " + "; ".join(items)
             + ".</p>")
+
+
+def _study_table(runs) -> str:
+    """The study's speed and accuracy (against the finest FE mesh) for the study muscle nearest
+    to each muscle of the runs: the numbers ``auto`` chooses from."""
+    from mkm.auto import DOMAIN_SPAN, MODEL_ERRORS_FILE, read_model_errors
+
+    if not MODEL_ERRORS_FILE.exists():
+        return ""
+    table = read_model_errors()
+    keys = table.groupby("muscle")[["D0_mm", "t0_mm", "eps"]].first()
+    parts, seen = [], set()
+    for r in runs:
+        m = r.muscle
+        query = np.array([m.get("D0_mm", np.nan), m.get("t0_mm", np.nan), m.get("eps", np.nan)],
+                         dtype=float)
+        distance = np.linalg.norm((keys.to_numpy(float) - query) / DOMAIN_SPAN, axis=1)
+        nearest = keys.index[int(np.argmin(distance))]
+        if nearest in seen:
+            continue
+        seen.add(nearest)
+        rows = table[table["muscle"] == nearest]
+        D0, t0, eps = keys.loc[nearest]
+        out = (rows.assign(abs_err=rows["err_pct"].abs())
+               .groupby("predictor", sort=False)
+               .agg(spec=("spec", "first"), seconds=("seconds_per_point", "first"),
+                    worst=("abs_err", "max"))
+               .reset_index().sort_values("seconds"))
+        shown = pd.DataFrame({"predictor": out["predictor"], "spec": out["spec"],
+                              "s per force": out["seconds"],
+                              "largest |Err%| against the finest FE": out["worst"]})
+        parts.append(table_html(shown, f"The study's numbers (mkm/data/model_errors.csv) for "
+                                f"its muscle {esc(nearest)} (D0 {D0:g} mm, t0 {t0:g} mm, eps "
+                                f"{100 * eps:.1f} %), the nearest to run {r.k}'s muscle: what "
+                                "auto chooses from. Provenance: "
+                                '<a href="#prov-software">software</a> and the table\'s '
+                                "model_errors.json.", formats={"s per force": ".3g"}))
+    return "".join(parts)
 
 
 def _auto_pressures(r: _Run) -> np.ndarray:
