@@ -108,9 +108,9 @@ def describe_physics(config: BenchConfig) -> dict:
                     " x force (rising and falling branches apart)",
         "creep": f"{s.creep_fraction:g} of the force relaxed with tau {s.creep_tau_s:g} s",
         "noise": f"load-cell noise {s.noise_V * 1e3:g} mV rms, 14-bit quantisation",
-        "summary": f"{s.model}{f' ({mesh} mesh)' if mesh else ''} FE/closed-form force with "
-                   f"{100 * s.hysteresis_fraction:g} % braid friction, "
-                   f"{100 * s.creep_fraction:g} % creep and noise",
+        "summary": f"the {s.model} model's force{f' ({mesh} mesh)' if mesh else ''} with "
+                   f"{100 * s.hysteresis_fraction:g} % braid friction (rising and falling "
+                   f"branches apart), {100 * s.creep_fraction:g} % creep and load-cell noise",
     }
 
 

@@ -1,13 +1,15 @@
 """Runs that ended without venting (``kill -9``, power loss), noticed by the next command.
 
 While a run may pressurise the muscle it holds a marker file for its bench (backend and device
-name) in the user's state folder (``MKM_STATE_DIR`` or ``platformdirs.user_state_dir("mkm")``):
-the run folder, the recording process (:class:`bench.storage.ProcessIdentity`: pid, start time,
-boot time), and the last commanded pressure, rewritten at every command. A clean shutdown that
-vented removes it. Every command that opens a bench (``acquire``, ``check``, ``tare``,
-``calibrate-loadcell``, ``vent``) first looks for markers of that bench whose process is dead:
-it vents (opening the device writes the vent command) and says which run it was, when it
-started, and what pressure it left commanded.
+name) in the user's state folder (``MKM_STATE_DIR``, else
+``platformdirs.user_state_dir("mkm-bench")``: ``~/.local/state/mkm-bench`` on Linux,
+``%LOCALAPPDATA%\\mkm-bench`` on Windows): the run folder, the recording process
+(:class:`bench.storage.ProcessIdentity`: pid, start time, boot time), and the last commanded
+pressure, rewritten at every command. A clean shutdown that vented removes it. Every command that
+opens a bench (``acquire``, ``check``, ``tare``, ``calibrate-loadcell``, ``vent``) first looks for
+markers of that bench whose process is dead: it vents (opening the device writes the vent command)
+and says which run it was, when it started, and what pressure it left commanded. One file per
+process, so concurrent runs never lock or overwrite each other's marker.
 """
 
 from __future__ import annotations
@@ -29,7 +31,7 @@ def state_dir() -> Path:
         return Path(os.environ["MKM_STATE_DIR"])
     import platformdirs
 
-    return Path(platformdirs.user_state_dir("mkm", appauthor=False))
+    return Path(platformdirs.user_state_dir("mkm-bench", appauthor=False))
 
 
 def _folder(bench_key: str) -> Path:
@@ -94,18 +96,17 @@ def find_unvented(bench_key: str) -> list[tuple[Path, Marker]]:
     return found
 
 
-def vent_unvented(backend, opened: bool = False) -> list[Marker]:
+def vent_unvented(backend) -> list[Marker]:
     """Vent a bench left pressurised by a dead run, before anything else happens on it.
 
-    Returns the dead runs' markers (now removed) for the caller to report. ``opened``: the
-    backend is already open (its ``open`` wrote the vent); otherwise the vent is written here
-    through ``backend.write_command(0)`` and must succeed for the markers to be removed.
+    Call it right after ``backend.open()`` (which already wrote the vent): the vent is written
+    again here, explicitly, and only once it succeeded are the dead runs' markers removed.
+    Returns those markers for the caller to report.
     """
     found = find_unvented(getattr(backend, "bench_key", "unknown"))
     if not found:
         return []
-    if not opened:
-        backend.write_command(0.0)
+    backend.write_command(0.0)
     for path, _ in found:
         path.unlink(missing_ok=True)
     return [marker for _, marker in found]

@@ -46,3 +46,43 @@ def test_check_lists_device_steps_and_duration(config):
     assert "USB-6001 (simulated)" in text and "interlock at 1765.2 N" in text
     assert "0,up,0,0.5\n1,up,0,1\n2,down,0,0.5" in text
     assert "estimated duration: 0.3 to 1.1 min" in text  # 19 s to 68 s
+
+
+def test_vent_reads_the_monitor_below_the_threshold(config):
+    from bench.procedures import VENTED_BELOW_BAR, vent
+
+    out = vent(config)
+    assert out["vented"] and not out["manual"]
+    assert abs(out["pressure_bar"]) < VENTED_BELOW_BAR
+
+
+def test_vent_with_a_manual_regulator_says_it_cannot_read(config):
+    from bench.procedures import vent
+
+    out = vent(config.replace(regulator={"kind": "manual"}))
+    assert out["manual"] and not out["vented"] and out["pressure_bar"] != out["pressure_bar"]
+
+
+def test_vent_that_does_not_bring_the_pressure_down_says_so(config, monkeypatch):
+    # a regulator stuck at 1 bar never reads below 0.05 bar after the vent command
+    import bench.procedures as procedures
+    from bench.backend import BenchError
+    from bench.sim import SimBackend
+
+    class Stuck(SimBackend):
+        def start(self):
+            super().start()
+            self.bench.pressure_bar = 1.0
+            self.bench.regulator_stuck = True
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, b, clock: Stuck(c))
+    with pytest.raises(BenchError, match=r"still reads 1\.00\d bar 1 s after the vent command: "
+                                         "VENT BY HAND"):
+        procedures.vent(config, wait_s=1.0)
+
+
+def test_tare_refuses_a_noisy_cell(config):
+    from bench.sequence import TareInvalid
+
+    with pytest.raises(TareInvalid, match="spreads"):
+        tare(config.replace(sim={"noise_V": 0.05}), seconds=5.0)

@@ -184,3 +184,24 @@ def test_report_survives_mathtext_in_a_recorded_id(tmp_path):
     html = build_report([path], ["eq2"], out_dir=tmp_path / "r", cache_dir=None,
                         tolerance=None, surrogate_section=False).read_text(encoding="utf-8")
     assert "odd$\\frac{1}$id" in html
+
+
+def test_report_says_a_run_ended_without_venting(tmp_path):
+    # what kill -9 leaves: run.json "running" from a dead process, no final vent in commands.csv
+    from bench.run import acquire
+    from fem.records import write_json_atomic
+    from mkm.report import build_report
+
+    config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
+    path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
+    meta = json.loads((path / "run.json").read_text())
+    meta["status"] = "running"
+    meta["process"]["pid"] = 2**22 + 99  # above pid_max: dead
+    write_json_atomic(path / "run.json", meta)
+    commands = (path / "commands.csv").read_text().splitlines()
+    kept = [line for line in commands if not line.endswith(",vent")] + [""]
+    (path / "commands.csv").write_text("\n".join([commands[0], *kept[1:]]))
+    html = build_report([path], ["eq2"], out_dir=tmp_path / "r", cache_dir=None,
+                        tolerance=None, surrogate_section=False).read_text(encoding="utf-8")
+    assert "incomplete" in html
+    assert "ended without venting: the last commanded pressure was 0.5 bar" in html
