@@ -195,10 +195,12 @@ def overlay_figure(runs: list[tuple[str, pd.DataFrame, pd.DataFrame]], title: st
 
 def time_figure(bins: pd.DataFrame, steps: pd.DataFrame, title: str,
                 gaps: list[tuple[float, float]] = (),
-                events: list[tuple[float, str]] = ()) -> Figure:
+                events: list[tuple[float, str]] = (),
+                force_limit_N: float | None = None) -> Figure:
     """Pressure and force against time: the mean per time bin with its min-max band, each
     step's settling window (light) and averaging window (dark), gaps in the record (red) and
-    events such as the force interlock (red lines).
+    events such as the force interlock (red lines), and the interlock's force limit (dashed)
+    when it lies within twice the largest force drawn.
 
     ``bins``: :func:`bench.storage.aggregate_samples` output (``time_s``,
     ``pressure_bar_{min,mean,max}``, ``force_N_{min,mean,max}``); ``steps``: ``start_s,
@@ -209,9 +211,10 @@ def time_figure(bins: pd.DataFrame, steps: pd.DataFrame, title: str,
     scale, unit = (60.0, "min") if len(bins) and bins["time_s"].max() > 900 else (1.0, "s")
     t = bins["time_s"] / scale
     for ax, q, colour in ((ax_p, "pressure_bar", "tab:blue"), (ax_f, "force_N", "black")):
+        # plain lines, not steps: the last sample (an interlock spike, say) stays visible
         ax.fill_between(t, bins[f"{q}_min"], bins[f"{q}_max"], color=colour, alpha=0.2,
-                        linewidth=0, step="post")
-        ax.plot(t, bins[f"{q}_mean"], color=colour, linewidth=0.9, drawstyle="steps-post")
+                        linewidth=0)
+        ax.plot(t, bins[f"{q}_mean"], color=colour, linewidth=0.9)
         for row in steps.itertuples():
             hold = row.start_s + row.settle_s
             ax.axvspan(row.start_s / scale, hold / scale, color="#ffe08a", alpha=0.45,
@@ -227,6 +230,10 @@ def time_figure(bins: pd.DataFrame, steps: pd.DataFrame, title: str,
     for when, label in events:
         ax_f.annotate(label, (when / scale, 1.0), xycoords=("data", "axes fraction"),
                       xytext=(3, -12), textcoords="offset points", color="red", fontsize=8)
+    shown_limit = (force_limit_N is not None and len(bins)
+                   and force_limit_N < 2 * float(np.nanmax(bins["force_N_max"])))
+    if shown_limit:
+        ax_f.axhline(force_limit_N, color="red", linestyle="--", linewidth=1)
     ax_p.set(ylabel="pressure P [bar]")
     ax_f.set(ylabel="force F [N]", xlabel=f"time since the start of the run [{unit}]")
     handles = [Line2D([], [], color="tab:blue"), Line2D([], [], color="black"),
@@ -239,6 +246,9 @@ def time_figure(bins: pd.DataFrame, steps: pd.DataFrame, title: str,
     if len(events):
         handles.append(Line2D([], [], color="red"))
         labels.append("interlock / stop")
+    if shown_limit:
+        handles.append(Line2D([], [], color="red", linestyle="--"))
+        labels.append(f"force interlock limit {force_limit_N:.0f} N")
     fig.legend(handles, labels, fontsize=8, loc="outside lower center", ncol=4)
     fig.suptitle(title)
     return fig

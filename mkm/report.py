@@ -506,7 +506,9 @@ def _signals(r: _Run, out: Path) -> str:
     elif not r.run.complete:
         events.append((float(bins["time_s"].iloc[-1]), str(r.run.status)))
     title = f"run {r.k}: pressure and force against time"
-    path = save_figure(time_figure(bins, r.run.steps, title, gaps, events),
+    limit = (r.meta.get("sequence") or {}).get("force_limit_N")
+    path = save_figure(time_figure(bins, r.run.steps, title, gaps, events,
+                                   float(limit) if limit else None),
                        out / f"run{r.k}_signals.png")
     extra = (f" {len(gaps)} gap(s) in the record (red)." if gaps else " No gap in the record.")
     extra += "".join(f" Event: {esc(label)} at {when:.1f} s (red line)." for when, label in events)
