@@ -53,10 +53,12 @@ def register(subparsers) -> None:
 
 def _cache_arguments(parser) -> None:
     parser.add_argument("--cache", metavar="DIR",
-                        help="FE predictions (and the study's trained surrogates) kept here, "
-                        "so a second run is fast (default: the user's cache folder)")
+                        help="FE predictions kept here, so a second run is fast (default: "
+                        "the user's cache folder; trained surrogates always live in the "
+                        "surrogate cache there)")
     parser.add_argument("--no-cache", action="store_true",
-                        help="recompute everything; read and write no cache")
+                        help="recompute every FE prediction and retrain the study's surrogates; "
+                        "read and write no cache")
 
 
 def _progress_argument(parser) -> None:
