@@ -23,6 +23,7 @@ from mkm.design import (
     parse_requirement,
     search,
 )
+from mkm.registry import ENTRIES
 
 MESH = "coarse"
 
@@ -222,3 +223,19 @@ def test_housing_binds_the_largest_margin():
     assert 63.5 <= best["outer_diameter_mm"] <= 64.0
     free = search(reqs, objective="max-margin").feasible.iloc[0]
     assert free["outer_diameter_mm"] > 70.0  # without the housing: the widest of the box
+
+
+@pytest.mark.skipif("theta0_deg" not in ENTRIES["surrogate"].params,
+                    reason="the registry's surrogate takes no theta0_deg")
+def test_braid_angle_range_searched_and_verified_at_the_chosen_angle():
+    reqs = [Requirement(300.0, 2.5, 0.10), Requirement(250.0, 2.5, 0.20)]
+    table = design(reqs, {"theta0_deg": (28.0, 38.0), "L0_mm": 250.0}, top=1, mesh=MESH)
+    best = table.iloc[0]
+    assert best["meets_all"] and 28.0 <= best["theta0_deg"] <= 38.0
+    assert best["L0_mm"] == 250.0
+    # the FE verdict is the FE at the design's own angle and length, solved again here
+    fe = Axisym(theta0_deg=best["theta0_deg"], L0_mm=250.0, mesh=MESH)
+    assert best["r2_fe_N"] == pytest.approx(float(
+        fe.predict(2.5, best["D0_mm"], best["t0_mm"], 0.20).force_N), rel=1e-9)
+    # and the surrogate predicted that muscle, not the default one: within its margin + 5 N
+    assert abs(best["r2_surrogate_N"] - best["r2_fe_N"]) <= best["r2_uncertainty_N"] + 5.0
