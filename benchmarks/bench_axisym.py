@@ -9,7 +9,8 @@ Muscle I (D0 35 mm, t0 2.5 mm, L0 282 mm) at the calibrated theta0, pressures 0 
 0.25 bar steps, as `mkm fem solve` runs it. For each level and eps it reports the median wall
 time of the sweep, the unknowns, the Newton iterations (threshold search + pressure ramp) and
 where the time goes: mesh and operator set-up, tangent assembly, sparse LU (SuperLU) and the
-rest (Python, residual checks). The split is measured by wrapping those three functions with
+rest (Python, residual checks), with the number of assemblies and factorisations (counts do not
+depend on the machine's load). The split is measured by wrapping those three functions with
 timers in this script only. Goal (issue 11): medium <= 0.15 s and fine <= 1 s per sweep on the
 project's 2-core machine, forces unchanged to 1e-6 relative. The machine is shared, so compare
 the Newton iteration counts too: 62-69 (medium) and 75-78 (fine) before the thick-wall start of
@@ -37,9 +38,11 @@ class Timers:
 
     def __init__(self):
         self.seconds: dict[str, float] = {}
+        self.calls: dict[str, int] = {}
 
     def wrap(self, name, func):
         def timed(*args, **kwargs):
+            self.calls[name] = self.calls.get(name, 0) + 1
             start = time.perf_counter()
             try:
                 return func(*args, **kwargs)
@@ -52,9 +55,9 @@ class Timers:
 def bench_sweep(level: str, eps: float, theta0_deg: float) -> dict:
     timers = Timers()
     half = fem.fe.model.HalfMuscle
-    init, assemble, splu = half.__init__, half.assemble, fem.fe.newton.splu
+    init, assemble, splu = half.__init__, half._assemble, fem.fe.newton.splu
     half.__init__ = timers.wrap("setup", init)
-    half.assemble = timers.wrap("assembly", assemble)
+    half._assemble = timers.wrap("assembly", assemble)
     fem.fe.newton.splu = timers.wrap("lu", splu)
     try:
         start = time.perf_counter()
@@ -62,7 +65,7 @@ def bench_sweep(level: str, eps: float, theta0_deg: float) -> dict:
                                          theta0_deg, MUSCLE_I["L0_mm"], level)
         total = time.perf_counter() - start
     finally:
-        half.__init__, half.assemble = init, assemble
+        half.__init__, half._assemble = init, assemble
         fem.fe.newton.splu = splu
     below = out["force_N"] == 0
     threshold_iterations = int(out["iterations"][below].max()) if below.any() else 0
@@ -70,7 +73,8 @@ def bench_sweep(level: str, eps: float, theta0_deg: float) -> dict:
     return {"mesh": level, "eps": eps, "dofs": int(out["dofs"][0]), "seconds": total,
             "iterations": threshold_iterations + int(out["iterations"][~below].sum()),
             "setup_s": t.get("setup", 0.0), "assembly_s": t.get("assembly", 0.0),
-            "lu_s": t.get("lu", 0.0),
+            "lu_s": t.get("lu", 0.0), "assemblies": timers.calls.get("assembly", 0),
+            "factorisations": timers.calls.get("lu", 0),
             "other_s": total - sum(t.get(k, 0.0) for k in ("setup", "assembly", "lu")),
             "converged": bool(out["converged"].all()), "force_2p5bar_N": out["force_N"][-1]}
 
@@ -91,10 +95,11 @@ def main() -> None:
     info = provenance()
     print(f"# muscle I, 11 pressures 0-2.5 bar, theta0 {theta0} deg, median of {args.repeats}; "
           f"{info['date_utc']}, {info['machine']}, {json.dumps(info['versions'])}")
-    print("mesh,eps,dofs,seconds,iterations,setup_s,assembly_s,lu_s,other_s,converged,"
-          "force_2p5bar_N")
+    print("mesh,eps,dofs,seconds,iterations,assemblies,factorisations,setup_s,assembly_s,lu_s,"
+          "other_s,converged,force_2p5bar_N")
     for r in rows:
         print(f"{r['mesh']},{r['eps']:g},{r['dofs']},{r['seconds']:.3f},{r['iterations']},"
+              f"{r['assemblies']},{r['factorisations']},"
               f"{r['setup_s']:.3f},{r['assembly_s']:.3f},{r['lu_s']:.3f},{r['other_s']:.3f},"
               f"{r['converged']},{r['force_2p5bar_N']:.2f}")
 

@@ -130,6 +130,7 @@ class HalfMuscle:
         self.braid = Term(*braid_term, red) if braid else None
         terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
         self.assembler = Assembler(terms, self.n)
+        self._last_assembly = None
 
     def rest_state(self) -> np.ndarray:
         """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
@@ -139,7 +140,19 @@ class HalfMuscle:
         return y
 
     def assemble(self, y, pressure_MPa):
-        """Residual ``dPi/dy``, tangent ``d2Pi/dy2`` (CSR) and ``dV/dy`` at the reduced state."""
+        """Residual ``dPi/dy``, tangent ``d2Pi/dy2`` (CSR) and ``dV/dy`` at the reduced state.
+
+        The last result is kept: the cap force of a converged state is read from the assembly
+        Newton made to check it (callers must not modify the arrays returned).
+        """
+        last = self._last_assembly
+        if last is not None and last[0] == pressure_MPa and np.array_equal(last[1], y):
+            return last[2]
+        result = self._assemble(y, pressure_MPa)
+        self._last_assembly = (pressure_MPa, np.array(y), result)
+        return result
+
+    def _assemble(self, y, pressure_MPa):
         y_ext = np.append(y, 0.0)
         g, h = rubber(self.rubber.values(y_ext), self.material)
         r_rub, K_rub = self.rubber.element_arrays(g, h)
