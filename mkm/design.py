@@ -742,11 +742,12 @@ class DesignResult:
     def summary(self) -> str:
         s = self.search
         cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
+        ok = int(self.designs["meets_all"].sum())
         text = (f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
                 f"{int(s.candidates['feasible'].sum())} feasible by the surrogate; "
                 f"{len(self.designs)} verified by the FE (axisym, {self.mesh} mesh) in "
-                f"{self.fe_seconds:.1f} s{cached}, {int(self.designs['meets_all'].sum())} "
-                "meet every requirement")
+                f"{self.fe_seconds:.1f} s{cached}, {ok} meet{'s' if ok == 1 else ''} every "
+                "requirement")
         best = self.chosen
         if best is None:
             return text + ": none confirmed, see the table's FE margins"

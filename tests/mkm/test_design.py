@@ -165,7 +165,7 @@ def test_cli_spec_file_writes_csv_json_and_html(tmp_path, capsys):
                              "--out", str(out)], capsys)
     assert code == 0, err
     assert stdout.strip() == str(out / "design.html")
-    assert err.startswith("mkm design: ") and "1 meet every requirement" in err
+    assert err.startswith("mkm design: ") and "1 meets every requirement" in err
     table = pd.read_csv(out / "designs.csv")
     assert len(table) == 1 and bool(table["meets_all"].iloc[0])
     assert (table["r1_fe_N"] >= 300).all() and (table["r2_fe_N"] >= 250).all()
