@@ -5,7 +5,8 @@ name) in the user's state folder (``MKM_STATE_DIR``, else
 ``platformdirs.user_state_dir("mkm-bench")``: ``~/.local/state/mkm-bench`` on Linux,
 ``%LOCALAPPDATA%\\mkm-bench`` on Windows): the run folder, the recording process
 (:class:`bench.storage.ProcessIdentity`: pid, start time, boot time), and the last commanded
-pressure, rewritten at every command. A clean shutdown that vented removes it. Every command that
+pressure, rewritten at every command (before the pressure is written to the device, so a kill
+between the two still finds it). A clean shutdown that vented removes it. Every command that
 opens a bench (``acquire``, ``check``, ``tare``, ``calibrate-loadcell``, ``vent``) first looks for
 markers of that bench whose process is dead: it vents (opening the device writes the vent command)
 and says which run it was, when it started, and what pressure it left commanded. One file per

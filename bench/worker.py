@@ -180,6 +180,9 @@ class Acquisition:
         volts = reg.command_volts(clamped)
         t_s = self.next_index / self.rate_hz
         ok = False
+        if self.lease is not None and clamped > 0:
+            # before the write: a kill between the write and any record still finds it
+            self.lease.command(clamped)
         try:
             self.backend.write_command(volts)
             ok = True
@@ -195,8 +198,8 @@ class Acquisition:
             self.recorder.meta.last_command_bar = self.command_bar
             self.recorder.command(CommandRecord(t_s, self.next_index, clamped, volts, ok,
                                                 purpose))
-            if ok and self.lease is not None:
-                self.lease.command(clamped)
+            if ok and self.lease is not None and clamped == 0.0:
+                self.lease.command(0.0)
 
     def acquire_for(self, duration_s: float, phase: str, step: int, set_bar: float,
                     cell_volts: list | None = None) -> None:

@@ -103,12 +103,13 @@ def test_aborted_run_report_states_steps_planned_and_done(tmp_path):
     assert "unrecorded" not in html
 
 
-def test_bad_out_is_one_line_before_the_device_opens(tmp_path, capsys):
-    a_file = tmp_path / "file.txt"
-    a_file.write_text("x")
-    assert main(["acquire", "--out", str(a_file), "--no-progress"]) == 2
+@pytest.mark.parametrize("out, message", [("file.txt", "is a file: expected a folder"),
+                                          ("file.txt/runs", "is not a writable folder")])
+def test_bad_out_is_one_line_before_the_device_opens(tmp_path, capsys, out, message):
+    (tmp_path / "file.txt").write_text("x")
+    assert main(["acquire", "--out", str(tmp_path / out), "--no-progress"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f"--out {a_file} is a file" in err
+    assert err.count("\n") == 1 and f"--out {tmp_path / out} {message}" in err
     assert not (tmp_path / "mkm-state").exists()  # no bench was opened
 
 
