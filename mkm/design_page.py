@@ -130,6 +130,14 @@ def _constraint_text(key: str, value) -> str:
     return f"{key} = {'none' if value is None else format(value, 'g')}"
 
 
+def _cell(value) -> str:
+    if isinstance(value, bool | np.bool_):
+        return "yes" if value else "no"
+    if isinstance(value, float | np.floating):
+        return "—" if np.isnan(value) else f"{value:.5g}"
+    return str(value) if value != "" else "—"
+
+
 def _html_body(result: DesignResult, record: dict, figures) -> str:
     s = result.search
     software = record["provenance"]["software"]
@@ -145,7 +153,10 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
     keep = ("_surrogate_N", "_fe_N", "_fe_margin_pct", "_meets")
     table = result.designs[[c for c in result.designs.columns
                             if not re.match(r"r\d+_", c) or c.endswith(keep)]]
-    table = table.drop(columns=["fe_failure"])
+    table = table.drop(columns=["fe_failure"]).set_index("rank").T  # a column per design
+    table = table.map(_cell)
+    table.columns = [f"design {rank}" for rank in table.columns]
+    table.insert(0, "quantity", table.index)
     notes = []
     for _, row in result.designs.iterrows():
         for flag in filter(None, str(row["flags"]).split(";")):
@@ -165,12 +176,11 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
                  "surrogate margin": s.uncertainty,
                  "search": record["summary"]}),
         "<h2>Verified designs</h2>",
-        table_html(table, "Verified designs: geometry, outer diameter at the working pressure "
-                   "[mm], rubber volume [cm³], per requirement r&lt;k&gt; the surrogate's and "
-                   "the FE's force [N] and the FE margin [%]; meets_all is the FE's verdict. "
-                   "designs.csv has the surrogate margins, FE threshold pressures and failures "
-                   "too.",
-                   formats={"theta0_deg": ".4g", "L0_mm": ".4g"}),
+        table_html(table, "Verified designs, one column each, those the FE confirms first: "
+                   "geometry, outer diameter at the working pressure [mm], rubber volume "
+                   "[cm³], per requirement r&lt;k&gt; the surrogate's and the FE's force [N] "
+                   "and the FE margin [%]; meets_all is the FE's verdict. designs.csv has the "
+                   "surrogate margins, FE threshold pressures and failures too."),
         ('<p class="note">Flags: ' + esc("; ".join(notes)) + "</p>") if notes else "",
         "<h2>Figures</h2>",
         *(figure_html(path, caption) for path, caption in figures),
