@@ -55,8 +55,11 @@ def register(subparsers) -> None:
         description="Record a pressure staircase on the bench (NI USB-6001) or the simulated "
         "one: tare at 0 bar, then each step held until the force settles and averaged over a "
         "window; writes a run folder (run.json, samples.csv, steps.csv, commands.csv, "
-        "config.toml) under --out and prints its path last. Ctrl-C stops at a safe point and "
-        "vents. The default staircase (19 steps) takes 3 to 21 min on the real bench, depending "
+        "config.toml) under --out and prints its path last. Ctrl-C stops at a safe point; a "
+        "second Ctrl-C, SIGTERM, SIGHUP, Ctrl-Break or closing the console stop at once; every "
+        "stop vents first. Exit status: 0 complete, 3 complete with lost samples, 128+N after "
+        "signal N, 1 interlock or device failure, 2 bad input or disk failure. The default "
+        "staircase (19 steps) takes 3 to 21 min on the real bench, depending "
         "on settling (`mkm check` prints the estimate); --clock virtual: about a second.",
         epilog="example: mkm acquire --backend sim --eps 12.2% --out mkm-out/runs")
     _add_device_arguments(acquire)
@@ -73,7 +76,8 @@ def register(subparsers) -> None:
     tare = subparsers.add_parser(
         "tare", help="load-cell offset at 0 bar",
         description="Measure the load-cell offset at 0 bar (mean and noise over --seconds) and "
-        "compare it with the config's offset_V.",
+        "compare it with the config's offset_V; refused as a run's tare would be (too few "
+        "samples, not finite, too noisy or shifted: the [safety] tare limits).",
         epilog="example: mkm tare --backend ni --config my_bench.toml --seconds 10")
     _add_device_arguments(tare)
     tare.add_argument("--seconds", type=argtype(_positive_seconds), default=5.0,
@@ -83,7 +87,8 @@ def register(subparsers) -> None:
     cal = subparsers.add_parser(
         "calibrate-loadcell", help="fit N/V and offset from known masses",
         description="Fit the load cell's sensitivity [N/V] and offset [V] from known masses hung "
-        "in turn (measured here), or from volts measured elsewhere (--volts).",
+        "in turn (measured here), or from volts measured elsewhere (--volts). Prints the "
+        "[loadcell] block to paste into the config on stdout, the fit on stderr.",
         epilog="example: mkm calibrate-loadcell --masses 0,1,2,5 --volts "
         "0.015,0.065,0.115,0.265")
     _add_device_arguments(cal)
@@ -97,8 +102,9 @@ def register(subparsers) -> None:
 
     check = subparsers.add_parser(
         "check", help="dry run: device, limits, planned steps, duration",
-        description="Dry run: open the device, check the configured limits and print the "
-        "planned steps and the expected duration; nothing is pressurised.",
+        description="Dry run: validate the config against the USB-6001 (channels, terminal "
+        "configuration, rates, ranges), open the device, print the limits, the planned steps "
+        "and the expected duration; warns past the braid lock; nothing is pressurised.",
         epilog="example: mkm check --backend ni --config my_bench.toml")
     _add_device_arguments(check, clock=False)
     check.add_argument("--eps", type=argtype(parse_fraction), help="shortening ratio override")
@@ -109,7 +115,8 @@ def register(subparsers) -> None:
         "vent", help="command 0 bar now and wait until the monitor reads it",
         description="Command 0 bar on the bench, wait until the regulator's monitor reads below "
                     "0.05 bar and print the pressure. Also vents (and names) a run that ended "
-                    "without venting. Example: mkm vent --backend ni")
+                    "without venting (kill -9, power loss) and says which.",
+        epilog="example: mkm vent --backend ni --config my_bench.toml")
     _add_device_arguments(vent)
     vent.set_defaults(func=_vent)
 
@@ -117,7 +124,8 @@ def register(subparsers) -> None:
         "reprocess", help="recompute a run's forces from its raw volts with a new calibration",
         description="Write a new run folder with every force recomputed from the raw load-cell "
                     "volts with the [loadcell] of NEW.toml (tare and hold averages again), with "
-                    "provenance. Example: mkm reprocess data/experimental/RUN --config new.toml")
+                    "provenance (reprocessed_from in run.json).",
+        epilog="example: mkm reprocess mkm-out/runs/RUN --config new.toml --out mkm-out/runs")
     rep.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
     rep.add_argument("--config", required=True, help="bench TOML with the new [loadcell]")
     rep.add_argument("--out", help="folder that receives the new run folder (default: beside "
