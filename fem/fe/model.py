@@ -46,9 +46,10 @@ from fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinema
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
 # away from the axis add an error far below the mesh's
 INTORDER = 4
-#: Halvings of a free-path step before the threshold search gives up: from span/5, 16 reach
-#: span/3e5 (the fine mesh's cap elements need about span/2e4 where the end zone forms)
-FREE_PATH_CUTBACKS = 16
+#: Halvings of a free-path step before the threshold search gives up: from span/5, 12 reach
+#: span/2e4. Near the braid lock the fine mesh's small cap elements need 7 (a mesh graded 32:1
+#: needs 9); the former 6 made the fine mesh "invert at the lock", an artefact.
+FREE_PATH_CUTBACKS = 12
 #: How the braid meets the rubber: ``bonded`` (fibres glued to the outer surface point by point,
 #: inextensible everywhere) or ``sliding`` (a frictionless sleeve: one uniform fibre tension and
 #: the sleeve's total length kept, see :func:`fem.fe.forms.sliding_sleeve_length`)
@@ -232,9 +233,9 @@ class HalfMuscle:
         reaction is zero). First one Newton solve from the thick-wall start
         (:meth:`thick_wall_start`: 5-6 iterations on every mesh); where it fails (near the
         braid lock) the path is followed from rest by cap displacement, with up to
-        :data:`FREE_PATH_CUTBACKS` halvings of a step (a mesh graded hard towards the cap needs
-        steps of 1e-4 of the span where the end zone forms). Returns the state, the pressure
-        [MPa] and the report (iterations of both attempts).
+        :data:`FREE_PATH_CUTBACKS` halvings (the small cap elements of a fine mesh need
+        short steps near the lock). Returns the state, the pressure [MPa] and the report
+        (iterations of both attempts).
         """
         def free(x, U):
             r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])

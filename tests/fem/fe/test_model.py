@@ -186,7 +186,7 @@ def test_threshold_search_on_the_graded_fine_mesh_near_the_lock():
     # D0 30, t0 2, eps 30 % at theta0 32.109 deg is a step from the braid lock: P* = 19.13
     # (coarse) and 19.12 bar (medium). The thick-wall start fails there (the end zone is no
     # longer small) and the search follows the path from rest; the fine mesh's small cap
-    # elements need 7 halvings of the last step (9 on a mesh graded 32:1), where the old
+    # elements need 7 halvings on the way (9 on a mesh graded 32:1), where the old
     # limit of 6 reported an element inversion "at the lock" that was an artefact.
     pred = Axisym(theta0_deg=32.109, mesh="fine").predict([0.0, 20.0, 25.0], 30.0, 2.0, 0.3)
     assert pred.converged.all() and pred.valid.all()
