@@ -27,7 +27,7 @@ from bench.backend import (
     DriverMissing,
     error_for_code,
 )
-from bench.config import USB6001_RANGE_V, BenchConfig
+from bench.config import USB6001, USB6001_RANGE_V, BenchConfig
 
 DRIVER_MISSING = ("NI-DAQmx driver not found: install NI-DAQmx (Windows; NI does not support the "
                   "USB-6001 on Linux) or run on the simulated bench with --backend sim")
@@ -80,6 +80,12 @@ class NIBackend:
         terminal = getattr(TerminalConfiguration, TERMINAL_CONFIG_NAMES[daq.terminal_config])
         try:
             with daq_errors():
+                dev = nidaqmx.system.Device(self.device)
+                product, serial = str(dev.product_type), f"{int(dev.serial_num):X}"
+            if product != USB6001.product:
+                raise BenchError(f"device {self.device} is a {product}: the bench settings are "
+                                 f"validated for a {USB6001.product} only (bench.config.USB6001)")
+            with daq_errors():
                 self.ai_task = nidaqmx.Task("mkm_ai")
                 for channel in self.ai_channels:
                     self.ai_task.ai_channels.add_ai_voltage_chan(
@@ -99,8 +105,6 @@ class NIBackend:
                                                              auto_start=True)
                 self.write_command(VENT_V)
                 actual_rate = float(self.ai_task.timing.samp_clk_rate)
-                dev = nidaqmx.system.Device(self.device)
-                product, serial = str(dev.product_type), f"{int(dev.serial_num):X}"
         except BaseException:
             with suppress(BenchError):  # the error that stopped opening is the one to report
                 self.close()

@@ -587,6 +587,7 @@ def load_run(path: str | Path) -> Run:
             problems.append(unvented)
     elif meta.manual_vent_required:
         unvented = "the final vent command failed: the muscle had to be vented by hand"
+        problems.append(unvented)
     return Run(path=path, meta=meta, steps=steps, status=status, commands=commands,
                problems=problems, unvented=unvented)
 

@@ -15,6 +15,7 @@ from nidaqmx.errors import DaqError, DaqNotFoundError, DaqReadError, DaqWriteErr
 
 from bench.backend import (
     AOWriteFailed,
+    BenchError,
     BufferOverflow,
     DaqDisconnected,
     DeviceReserved,
@@ -210,3 +211,12 @@ def test_canary_nidaqmx_private_hooks():
     assert "utils._select_interpreter(" in inspect.getsource(Task.__init__)
     for name, params in CHECKED_HOOKS.items():
         assert list(inspect.signature(getattr(BaseInterpreter, name)).parameters)[1:] == params
+
+
+def test_another_device_is_refused(config, fake_driver):
+    # the configuration was validated against the USB-6001's capabilities only
+    fake_driver.interpreter.get_device_attribute_string.return_value = "USB-6009"
+    with pytest.raises(BenchError, match="Dev1 is a USB-6009: the bench settings are validated "
+                                         "for a USB-6001 only"):
+        NIBackend(config).open()
+    assert not calls(fake_driver, "create_task")  # refused before any task was made
