@@ -237,7 +237,8 @@ def _vent(args) -> int:
         print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "
               "and check the manometer")
         return 0
-    print(f"vented: {out['pressure_bar']:.3f} bar after {out['waited_s']:.1f} s")
+    shown = f"{out['pressure_bar']:.3f}".replace("-0.000", "0.000")  # sensor noise around 0
+    print(f"vented: {shown} bar after {out['waited_s']:.1f} s")
     return 0
 
 
