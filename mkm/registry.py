@@ -47,11 +47,18 @@ ENTRIES: dict[str, Entry] = {
                               "(frictionless sleeve), each with its own calibrated theta0",
                      "theta0_deg": "braid angle at rest [deg]; default calibrated",
                      "L0_mm": "length at rest [mm]; default 282"}),
-    "surrogate": Entry("scikit-learn surrogate trained on the FE dataset",
+    "surrogate": Entry("scikit-learn surrogate trained on the FE design (or another FE "
+                       "dataset); refuses muscle parameters its training did not cover",
                        "Surrogate", "surrogate",
-                       {"kind": "best (default), physics, gp, mlp-paper, mlp-standardised or "
-                                "net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]",
-                        "path": "folder of a model saved by `mkm surrogate train`"}),
+                       {"kind": "best (default: muscle-gp), muscle-gp, physics, gp, mlp-paper "
+                                "or net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]",
+                        "path": "folder of a model saved by `mkm surrogate train`",
+                        "L0_mm": "length at rest [mm]; default 282",
+                        "theta0_deg": "braid angle at rest [deg]; default calibrated",
+                        "C10_MPa": "rubber Mooney-Rivlin C10 [MPa]; default Silastic S",
+                        "C01_MPa": "rubber Mooney-Rivlin C01 [MPa]; default Silastic S",
+                        "accept_mismatch": "true: load a saved model whose code, calibration "
+                                           "or data differ (default false)"}),
     "auto": Entry("the cheapest predictor whose measured error meets a tolerance",
                   "auto (cheapest within tolerance)", "auto",
                   {"tolerance": "largest |Err%| against the finest FE, a fraction; default 0.02",
@@ -98,6 +105,9 @@ class Spec:
         takes that parameter and the spec does not set it."""
         params = dict(self.params)
         if self.name == "surrogate":
+            for key in SURROGATE_PARAMETERS:
+                if defaults.get(key) is not None:
+                    params.setdefault(key, defaults[key])
             return _surrogate(params)
         if self.name == "auto":
             from mkm.auto import AutoModel
@@ -116,20 +126,28 @@ class Spec:
         return factory(**params)
 
 
+SURROGATE_PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
+
+
 def _surrogate(params: dict) -> ForceModel:
-    unknown = sorted(set(params) - {"kind", "path"})
+    unknown = sorted(set(params) - set(ENTRIES["surrogate"].params))
     if unknown:
-        raise ValueError(f"surrogate takes no parameter {', '.join(unknown)}: expected kind or "
-                         "path (surrogate:kind=gp, surrogate:path=DIR)")
+        raise ValueError(f"surrogate takes no parameter {', '.join(unknown)}: expected some of "
+                         f"{', '.join(ENTRIES['surrogate'].params)} (surrogate:kind=gp, "
+                         "surrogate:path=DIR,L0_mm=150)")
     if "path" in params and "kind" in params:
         raise ValueError("surrogate: give kind or path, not both")
+    muscle = {k: float(params[k]) for k in SURROGATE_PARAMETERS if k in params}
     if "path" in params:
         from surrogate.io import load_model
 
-        return load_model(str(params["path"]))
-    from surrogate.train import cached_model
+        model = load_model(str(params["path"]),
+                           accept_mismatch=bool(params.get("accept_mismatch", False)))
+    else:
+        from surrogate.train import cached_model
 
-    return cached_model(str(params.get("kind", "best")))
+        model = cached_model(str(params.get("kind", "best")))
+    return model.with_parameters(**muscle) if muscle else model
 
 
 def _text(value) -> str:

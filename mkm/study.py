@@ -126,8 +126,8 @@ def trained_surrogate(kind: str, dataset, cache_dir=DEFAULT_CACHE_DIR) -> ForceM
     with threadpool_limits(1), warnings.catch_warnings():
         warnings.simplefilter("ignore")  # ConvergenceWarning of the paper's nets: reproduced
         if cache_dir is None:
-            return train_surrogate(kind, dataset, seeds=())
-        return cached_model(kind, dataset, seeds=())
+            return train_surrogate(kind, dataset, splits=0)
+        return cached_model(kind, dataset, splits=0)
 
 
 def train_surrogates(kinds, dataset, cache_dir, n_jobs: int = 2) -> None:

@@ -1,4 +1,11 @@
-"""A fitted surrogate as a project force model, flagging every point outside its training box."""
+"""A fitted surrogate as a project force model that knows its domain.
+
+The force-model contract is ``predict(pressure_bar, D0_mm, t0_mm, eps)``; the other muscle
+parameters (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``) are constructor parameters, as
+for the FE model. For each of them a surrogate either takes it as an input (its training data
+varied it; outside the training box every point is flagged) or records the one value its data
+held: asking for another value is refused with a ``ValueError`` naming both, never answered.
+"""
 
 from __future__ import annotations
 
@@ -12,75 +19,167 @@ from sklearn.pipeline import Pipeline
 from sklearn.preprocessing import FunctionTransformer
 from threadpoolctl import ThreadpoolController
 
-from fem.interface import Domain, ForceModel
-from surrogate.estimators import ThresholdLinearRegressor
+from fem.interface import INPUTS, Domain, ForceModel
+from fem.materials import SILASTIC_S
+from fem.paper import L0_MM
+from surrogate.estimators import MuscleThresholdGP, ThresholdLinearRegressor
+from surrogate.training_data import PARAMETERS
+
+# Relative slack of "the same value" for a recorded parameter (a CSV round trip keeps ~1e-15).
+SAME_VALUE_RTOL = 1e-9
 
 
 class OutOfDomainWarning(UserWarning):
     """A surrogate was asked for points outside the box it was trained on."""
 
 
-class SurrogateForceModel(ForceModel):
-    """A fitted estimator of ``[pressure_bar, D0_mm, t0_mm, eps] -> force_N`` and its domain.
+def default_parameters() -> dict[str, float]:
+    """Muscle parameters used when the caller gives none: the paper's length, the calibrated
+    braid angle of the FE model (``fem/calibration.json``) and Silastic S."""
+    from fem.calibration import calibrated
 
-    Outside ``domain`` (the box of the training inputs) the estimator's number is kept but the
-    point gets ``valid=False`` and ``in_domain=False`` and an :class:`OutOfDomainWarning` is
-    issued: a surrogate never extrapolates silently. Extras: ``in_domain`` always,
-    ``force_std_N`` (predictive standard deviation [N]) when the estimator has one.
+    return {"L0_mm": float(L0_MM), "theta0_deg": float(calibrated("axisym")["theta0_deg"]),
+            "C10_MPa": SILASTIC_S.C10_MPa, "C01_MPa": SILASTIC_S.C01_MPa}
+
+
+class SurrogateForceModel(ForceModel):
+    """A fitted estimator of the force [N] over ``inputs`` and the box it claims.
+
+    Outside ``box`` the estimator's number is kept but the point gets ``valid=False`` and
+    ``in_domain=False`` and an :class:`OutOfDomainWarning` is issued: a surrogate never
+    extrapolates silently. Extras: ``in_domain`` always, ``force_std_N`` (predictive standard
+    deviation [N]) when the estimator has one.
 
     Parameters
     ----------
     estimator : fitted scikit-learn regressor
-    domain : fem.interface.Domain
-        Training box.
+        Of ``X`` with the columns ``inputs``.
     kind : str
         The estimator's kind (``surrogate.estimators.make_estimator``).
+    inputs : sequence of str
+        ``pressure_bar, D0_mm, t0_mm, eps`` and the muscle parameters the estimator takes.
+    fixed : dict
+        The recorded value of each muscle parameter it does not take.
+    box : dict
+        ``name: (low, high)`` of every input: the training box.
     metadata : dict, optional
         Training data hash and provenance, metrics, versions (see ``surrogate.io``).
+    L0_mm, theta0_deg, C10_MPa, C01_MPa : float, optional
+        The muscle's length [mm], braid angle at rest [deg] and rubber [MPa]. Default:
+        :func:`default_parameters` (the braid angle of the calibration in effect). A value
+        other than the recorded one of a parameter the estimator does not take raises
+        ``ValueError`` (here for a given value, at ``predict`` for a default).
     """
 
-    domain: Domain
-
-    def __init__(self, estimator, domain: Domain, kind: str, metadata: dict | None = None):
+    def __init__(self, estimator, kind: str, inputs, fixed: dict, box: dict,
+                 metadata: dict | None = None, L0_mm: float | None = None,
+                 theta0_deg: float | None = None, C10_MPa: float | None = None,
+                 C01_MPa: float | None = None):
         self.estimator = estimator
-        self.domain = domain
         self.kind = kind
+        self.inputs = tuple(inputs)
+        self.fixed = dict(fixed)
+        self.box = {k: tuple(float(x) for x in v) for k, v in box.items()}
         self.metadata = metadata or {}
         self.name = f"surrogate-{kind}"
+        self.domain = Domain(**{name: self.box[name] for name in INPUTS})
+        self._given = {"L0_mm": L0_mm, "theta0_deg": theta0_deg, "C10_MPa": C10_MPa,
+                       "C01_MPa": C01_MPa}
+        self._resolve({k: v for k, v in self._given.items() if v is not None})  # refuse now
         self._fast_predict = _validated_predictor(estimator)
+
+    @property
+    def parameters(self) -> dict[str, float]:
+        """The muscle parameters predictions are for, defaults resolved now (the calibration
+        in effect gives the default braid angle, as for the physics models)."""
+        given = {k: v for k, v in self._given.items() if v is not None}
+        missing = [k for k in PARAMETERS if k not in given]
+        if missing:
+            defaults = default_parameters()
+            given.update({k: defaults[k] for k in missing})
+        return self._resolve(given)
+
+    def _resolve(self, given: dict) -> dict[str, float]:
+        resolved = {}
+        for name, value in given.items():
+            if not np.isfinite(value):
+                raise ValueError(f"{name}={value!r} is not a finite number")
+            recorded = self.fixed.get(name)
+            if recorded is not None and not np.isclose(value, recorded, rtol=SAME_VALUE_RTOL,
+                                                       atol=0.0):
+                source = "" if self._given.get(name) is not None else " (the default)"
+                raise ValueError(f"{self.name} was trained at {name}={recorded:g} only: "
+                                 f"{name}={value:g}{source} refused; give {name}={recorded:g}, "
+                                 f"or use a surrogate trained on a design that varies {name} "
+                                 "(the default surrogate)")
+            resolved[name] = float(value)
+        return resolved
+
+    def with_parameters(self, **parameters) -> SurrogateForceModel:
+        """The same fitted surrogate for another muscle (``L0_mm=..., theta0_deg=...``)."""
+        unknown = sorted(set(parameters) - set(PARAMETERS))
+        if unknown:
+            raise ValueError(f"{self.name} takes no parameter {', '.join(unknown)}: expected "
+                             f"some of {', '.join(PARAMETERS)}")
+        merged = {**self._given, **{k: v for k, v in parameters.items() if v is not None}}
+        return SurrogateForceModel(self.estimator, self.kind, self.inputs, self.fixed,
+                                   self.box, self.metadata, **merged)
 
     def params(self):
         dataset = self.metadata.get("dataset", {})
-        return {"kind": self.kind, "dataset_sha256": dataset.get("sha256"),
-                "domain": self.domain.as_dict()}
+        try:
+            parameters = self.parameters
+        except ValueError as exc:  # provenance of a refused surrogate says why
+            parameters = {"refused": str(exc)}
+        return {"kind": self.kind, **parameters, "dataset_sha256": dataset.get("sha256"),
+                "inputs": list(self.inputs), "box": {k: list(v) for k, v in self.box.items()}}
 
     @property
     def has_std(self) -> bool:
-        """True when the estimator gives a predictive standard deviation (a Gaussian process)."""
+        """True when the estimator gives a predictive standard deviation."""
         final = self.estimator[-1] if isinstance(self.estimator, Pipeline) else self.estimator
-        return isinstance(final, GaussianProcessRegressor)
+        return isinstance(final, GaussianProcessRegressor | MuscleThresholdGP)
+
+    def parameters_outside(self, parameters=None) -> list[str]:
+        """The muscle parameters outside the training box, as ``name=value not in [lo, hi]``."""
+        parameters = parameters or self.parameters
+        out = []
+        for name in self.inputs[len(INPUTS):]:
+            lo, hi = self.box[name]
+            value = parameters[name]
+            slack = 1e-9 * max(abs(lo), abs(hi), 1.0)
+            if not lo - slack <= value <= hi + slack:
+                out.append(f"{name}={value:g} not in [{lo:g}, {hi:g}]")
+        return out
 
     def _forces(self, P, D0, t0, eps):
+        parameters = self.parameters  # refuses a recorded parameter at another value
         inside = self.domain.contains(P, D0, t0, eps)
+        outside = self.parameters_outside(parameters)
+        if outside:
+            inside = np.zeros(P.shape, dtype=bool)
         if not inside.all():
             n_out = int((~inside).sum())
+            why = "; ".join(outside) if outside else _describe(self.domain)
             warnings.warn(f"{n_out} of {inside.size} points lie outside the training domain "
-                          f"{_describe(self.domain)}: flagged valid=False, in_domain=False",
+                          f"({why}): flagged valid=False, in_domain=False",
                           OutOfDomainWarning, stacklevel=3)
-        X = np.column_stack([np.ravel(a) for a in (P, D0, t0, eps)])
+        columns = [np.ravel(a) for a in (P, D0, t0, eps)]
+        columns += [np.full(P.size, parameters[n]) for n in self.inputs[len(INPUTS):]]
+        X = np.column_stack(columns)
         out = {"valid": inside, "in_domain": inside, "converged": np.ones(P.shape, dtype=bool)}
-        if self._fast_predict is not None:
-            force = self._fast_predict(X)
+        if self._fast_predict is not None:  # numpy on a few points: no thread pool wakes up
+            result = self._fast_predict(X, self.has_std)
         else:
-            # validate_inputs has checked the inputs; with matrices this small BLAS threads only
-            # contend (a GP's 33 points took 8 ms threaded on a busy machine, 1.2 ms on one)
+            # validate_inputs has checked the inputs; with matrices this small BLAS threads
+            # only contend (a GP's 33 points took 8 ms threaded on a busy machine, 1.2 on one)
             with config_context(assume_finite=True), _blas().limit(limits=1):
-                if self.has_std:
-                    force, std = self.estimator.predict(X, return_std=True)
-                    out["force_std_N"] = std.reshape(P.shape)
-                else:
-                    force = self.estimator.predict(X)
-        out["force_N"] = force.reshape(P.shape)
+                result = self.estimator.predict(X, **({"return_std": True} if self.has_std
+                                                      else {}))
+        force, std = result if isinstance(result, tuple) else (result, None)
+        out["force_N"] = np.asarray(force).reshape(P.shape)
+        if std is not None:
+            out["force_std_N"] = np.asarray(std).reshape(P.shape)
         return out
 
 
@@ -91,9 +190,11 @@ def _blas() -> ThreadpoolController:
 
 
 def _validated_predictor(estimator):
-    """``X -> force`` without scikit-learn's per-call checks for the physics pipeline (features
-    then :class:`ThresholdLinearRegressor`), whose checks cost twice its arithmetic; None for
-    other estimators. ``ForceModel.predict`` has validated the inputs already."""
+    """``(X, return_std) -> force[, std]`` without scikit-learn's per-call checks (which cost
+    more than the arithmetic) for the threshold-linear estimators; None for the others.
+    ``ForceModel.predict`` has validated the inputs already."""
+    if isinstance(estimator, MuscleThresholdGP):
+        return estimator.predict_validated
     if not (isinstance(estimator, Pipeline) and len(estimator.steps) == 2):
         return None
     features, final = estimator[0], estimator[-1]
@@ -101,7 +202,7 @@ def _validated_predictor(estimator):
                                                                     ThresholdLinearRegressor)):
         return None
     kw_args = features.kw_args or {}
-    return lambda X: final.predict_validated(features.func(X, **kw_args))
+    return lambda X, _std=False: final.predict_validated(features.func(X, **kw_args))
 
 
 def _describe(domain: Domain) -> str:

@@ -18,6 +18,7 @@ from fem.calibration import calibration_provenance
 from fem.interface import ForceModel
 from fem.paper import equation7_err_pct
 from fem.records import package_file, provenance, read_prediction_header
+from surrogate.training_data import PARAMETERS
 from surrogate.validation import rmse
 
 #: Our FE sweeps of the test muscles, shipped with the package (``mkm surrogate reference``).
@@ -69,6 +70,7 @@ def read_fe_reference(path=FE_REFERENCE) -> pd.DataFrame:
         raise ValueError(f"FE reference {str(path)!r} does not exist: build it with "
                          "`mkm surrogate reference --model axisym`")
     table = pd.read_csv(path, comment="#")
+    table.attrs["params"] = read_prediction_header(path).get("params", {})
     bad = table[~(table["converged"].astype(bool) & table["valid"].astype(bool))]
     if len(bad):
         raise ValueError(f"FE reference {str(path)!r} has {len(bad)} unconverged or invalid "
@@ -82,8 +84,13 @@ def compare_on_test_muscles(model: ForceModel, reference: pd.DataFrame):
 
     Returns ``(points, summary)``: ``points`` has ``force_fe_N, force_pred_N, err_pct, valid``
     per row; ``summary`` per muscle ``max_abs_err_pct`` (Equation 7), ``rmse_N``,
-    ``max_abs_error_N``, and the wall time of the whole call in ``seconds_all_points``.
+    ``max_abs_error_N``, and the wall time of the whole call in ``seconds_all_points``. A
+    surrogate is asked for the muscle parameters the reference's FE used (its header's
+    ``params``: length, braid angle, rubber), or refuses with the reason.
     """
+    params = reference.attrs.get("params", {})
+    if hasattr(model, "with_parameters"):
+        model = model.with_parameters(**{k: params[k] for k in PARAMETERS if k in params})
     prediction = model.predict(*(reference[c].to_numpy() for c in ("pressure_bar", "D0_mm",
                                                                     "t0_mm", "eps")))
     points = reference[["muscle", "pressure_bar", "D0_mm", "t0_mm", "eps"]].copy()

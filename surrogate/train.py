@@ -1,7 +1,9 @@
-"""Training surrogates: one kind, every kind, and the cached default surrogate.
+"""Training surrogates and the one surrogate cache.
 
-Every trained surrogate carries its metrics: held-out RMSE over repeated 80/20 splits (the
-same seeds for every kind) and, when the FE reference exists, its errors on the test muscles.
+Every trained surrogate carries its metrics: errors over repeated splits that hold out whole
+muscles (the same splits for every kind) and, when the FE reference exists and the surrogate
+covers its muscles, its errors on the test muscles. Fits run on one BLAS thread, so results do
+not depend on the machine's thread count (and ~100 rows gain nothing from threads).
 """
 
 from __future__ import annotations
@@ -9,98 +11,130 @@ from __future__ import annotations
 import hashlib
 import json
 import warnings
+from contextlib import contextmanager, nullcontext
 from pathlib import Path
 
 import platformdirs
 from sklearn.exceptions import ConvergenceWarning
 from threadpoolctl import threadpool_limits
 
-from fem.records import file_sha256, provenance, source_version
+from fem.records import file_sha256, provenance
 from surrogate.estimators import BEST, make_estimator
 from surrogate.model import SurrogateForceModel
 from surrogate.training_data import DEFAULT_DATASET, load_training_data
-from surrogate.validation import split_scores, summarise
+from surrogate.validation import MUSCLE_SPLITS, fit_params, muscle_split_scores
 
-SEEDS = tuple(range(10))  # shared by every kind, recorded in the metadata
 CACHE_DIR = Path(platformdirs.user_cache_dir("mkm-bench")) / "surrogate"
 
 
-def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, seeds=SEEDS,
-                    random_state: int = 0) -> SurrogateForceModel:
-    """Fit ``kind`` on the whole dataset; metrics from refits on the 80/20 splits ``seeds``."""
-    resolved = BEST if kind == "best" else kind
-    data = load_training_data(dataset)
-    estimator = make_estimator(resolved, random_state=random_state)
-    with threadpool_limits(limits=1), warnings.catch_warnings():
-        # ~100 rows: BLAS threads only contend (see estimators.py). A Gaussian process length
-        # scale at its bound means an input it finds irrelevant, a noise level at its bound
-        # noise-free FE data: expected here, not worth a warning per fit.
+@contextmanager
+def quiet_fits():
+    """Silence the warnings every fit here would repeat, expected and not worth a line each."""
+    with warnings.catch_warnings():
+        # A Gaussian process length scale at its bound means an input it finds irrelevant, a
+        # noise level at its bound noise-free FE data.
         warnings.filterwarnings("ignore", message="The optimal value found for dimension",
                                 category=ConvergenceWarning)
         # fitrnet, which the nets copy, also stops at its IterationLimit without a warning
         warnings.filterwarnings("ignore", message="lbfgs failed to converge",
                                 category=ConvergenceWarning)
-        splits = [split_scores(estimator, data.X, data.y, seed, cv_folds=0) for seed in seeds]
-        estimator.fit(data.X, data.y)
-    metrics = {"split_seeds": list(seeds),
-               "rmse_test_N": summarise([s["rmse_test_N"] for s in splits]) if splits else None,
-               "max_abs_test_N": (summarise([s["max_abs_test_N"] for s in splits])
-                                  if splits else None)}
+        yield
+
+
+def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, splits: int = MUSCLE_SPLITS,
+                    random_state: int = 0, progress: bool = False) -> SurrogateForceModel:
+    """Fit ``kind`` on the whole dataset; metrics from refits on ``splits`` muscle-held-out
+    splits (0: none). ``progress``: a progress bar on stderr over the fits."""
+    resolved = BEST if kind == "best" else kind
+    data = load_training_data(dataset)
+    estimator = make_estimator(resolved, data.inputs, data.fixed, random_state=random_state)
+    bar = _bar(splits + 1, f"train {resolved}", progress)
+    with quiet_fits(), threadpool_limits(limits=1), bar:
+        in_box = (data.X[:, 0] >= data.box["pressure_bar"][0]) & (
+            data.X[:, 0] <= data.box["pressure_bar"][1])
+        held_out = (muscle_split_scores(estimator, data.X, data.y, data.groups,
+                                        data.threshold_pressure_bar, splits, scored=in_box,
+                                        progress=bar.update)
+                    if splits else None)
+        estimator.fit(data.X, data.y, **fit_params(estimator, data.threshold_pressure_bar))
+        bar.update()
+    metrics = {"muscle_held_out": None if held_out is None else held_out["summary"],
+               "splits": splits, "split_method": "GroupShuffleSplit(test_size=0.2, "
+               "random_state=0), one group per FE sweep (muscle)"}
     metadata = {"kind_requested": kind, "random_state": random_state,
                 "dataset": data.summary(), "metrics": metrics, "trained": provenance()}
-    model = SurrogateForceModel(estimator, data.domain(), resolved, metadata)
+    model = SurrogateForceModel(estimator, resolved, data.inputs, data.fixed, data.box,
+                                metadata)
     metrics["test_muscles"] = _test_muscle_metrics(model)
     return model
 
 
+def _bar(total: int, desc: str, progress: bool):
+    import sys
+
+    from tqdm import tqdm
+
+    return tqdm(total=total, desc=desc, unit="fit", file=sys.stderr,
+                disable=not (progress and sys.stderr.isatty()))
+
+
 def _test_muscle_metrics(model: SurrogateForceModel):
+    """Errors on the FE reference of the test muscles, at the reference's muscle parameters;
+    the reason instead when the surrogate does not cover them."""
     from surrogate.testset import FE_REFERENCE, compare_on_test_muscles, read_fe_reference
 
     if not FE_REFERENCE.is_file():
         return None
-    _, summary = compare_on_test_muscles(model, read_fe_reference())
+    try:
+        _, summary = compare_on_test_muscles(model, read_fe_reference())
+    except ValueError as exc:
+        return {"not_evaluated": str(exc)}
     return summary.drop(columns=["model"]).to_dict(orient="records")
 
 
-def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, seeds=SEEDS) -> str:
-    """Hash of what a trained surrogate depends on: the data, the source of the surrogate and of
-    every physics module it calls (materials and calibration included), library versions."""
-    parts = {"dataset": file_sha256(dataset), "kind": kind, "seeds": list(seeds),
-             "versions": provenance()["versions"],
-             "code": source_version("surrogate.train", "surrogate.io")}
+def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SPLITS) -> str:
+    """Hash of what a trained surrogate depends on: the data, the kind, the splits, the source
+    of the surrogate and of every physics module it calls (calibration included), libraries."""
+    from surrogate.io import code_version
+
+    parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
+             "versions": provenance()["versions"], "code": code_version()}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
 
 def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
-                 seeds=SEEDS) -> SurrogateForceModel:
+                 splits: int = MUSCLE_SPLITS, progress: bool = False) -> SurrogateForceModel:
     """Surrogate ``kind`` trained on ``dataset``, as a fitted ForceModel: the one surrogate cache.
 
     Trained on first use and kept under ``cache_dir`` (default: the user's cache folder) as
     ``<kind>-<key>`` (:func:`cache_key`), so a fresh install needs no manual step and a changed
-    dataset, code or library retrains it. ``seeds``: the 80/20 splits whose refits give the
-    held-out metrics (``()``: none, fit only).
+    dataset, code or library retrains it. Processes that ask at once wait for each other on a
+    lock file (portable: ``filelock``): one trains and saves, the others load its model.
     """
+    from filelock import FileLock
+
     from surrogate.io import load_model, save_model
 
     if not Path(dataset).is_file():
         load_training_data(dataset)  # raises the ValueError that says what is missing
     cache_dir = Path(cache_dir) if cache_dir is not None else CACHE_DIR
-    directory = cache_dir / f"{kind}-{cache_key(dataset, kind, seeds)}"
-    if (directory / "metadata.json").is_file():
-        with warnings.catch_warnings():
-            warnings.simplefilter("error")  # a stale cache entry is retrained, never trusted
-            try:
-                return load_model(directory)
-            except (Warning, ValueError):
-                pass
-    model = train_surrogate(kind, dataset, seeds=seeds)
-    try:
-        save_model(model, directory)
-    except OSError:  # another process saved the same model first: theirs is as good
-        pass
+    cache_dir.mkdir(parents=True, exist_ok=True)
+    directory = cache_dir / f"{kind}-{cache_key(dataset, kind, splits)}"
+    with FileLock(str(directory) + ".lock"):
+        if (directory / "metadata.json").is_file():
+            with warnings.catch_warnings():
+                warnings.simplefilter("error")  # a stale cache entry is retrained, never trusted
+                try:
+                    return load_model(directory)
+                except (Warning, ValueError):
+                    pass
+        model = train_surrogate(kind, dataset, splits=splits, progress=progress)
+        save_model(model, directory, lock=nullcontext())  # this lock is held already
     return model
 
 
-def default_model(dataset=DEFAULT_DATASET, cache_dir=None) -> SurrogateForceModel:
-    """The default (``best``) surrogate trained on ``dataset`` (see :func:`cached_model`)."""
-    return cached_model("best", dataset, cache_dir)
+def default_model(dataset=DEFAULT_DATASET, cache_dir=None, **parameters) -> SurrogateForceModel:
+    """The default (``best``) surrogate trained on ``dataset`` (see :func:`cached_model`), for
+    the muscle ``parameters`` (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``)."""
+    model = cached_model("best", dataset, cache_dir)
+    return model.with_parameters(**parameters) if parameters else model

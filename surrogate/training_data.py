@@ -1,8 +1,15 @@
-"""The FE dataset the surrogates learn from: inputs, forces, hash and provenance.
+"""The FE datasets the surrogates learn from: inputs, forces, muscles, hash, box and provenance.
 
-Reads ``data/mkm_dataset.csv`` (``#`` comment lines may precede the header; a sidecar
-``mkm_dataset.json`` may hold the provenance). Rows the FE model did not solve (not converged,
-not valid, NaN force) are left out and counted, never fed to a fit.
+Two datasets ship inside the package (so an installed wheel can train):
+
+- :data:`DEFAULT_DATASET`, ``data/mkm_design.csv``: the space-filling FE design over the whole
+  box (:mod:`surrogate.design`), pressure and seven muscle parameters; the default surrogate's;
+- :data:`PAPER_DATASET`, ``data/mkm_dataset.csv``: the paper's 3 x 3 x 3 grid at one length,
+  braid angle and rubber (the 27-net study of its Table 2).
+
+``#`` comment lines may precede the header; a sidecar ``<name>.json`` may hold the provenance
+(and, for a design, its ``box``). Rows the FE did not solve (not converged, not valid, NaN
+force) are left out and counted, never fed to a fit.
 """
 
 from __future__ import annotations
@@ -17,30 +24,51 @@ import pandas as pd
 from fem.interface import INPUTS, Domain
 from fem.records import file_sha256, package_file
 
-#: The shipped FE dataset (inside the package, so an installed wheel can train)
-DEFAULT_DATASET = package_file("surrogate", "data", "mkm_dataset.csv")
+#: Parameters of a muscle that are not arguments of ``ForceModel.predict``: a surrogate takes
+#: each either as an input (the dataset varies it) or as a recorded value (the dataset holds one).
+PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
+ALL_INPUTS = (*INPUTS, *PARAMETERS)
+MUSCLE_COLUMNS = ALL_INPUTS[1:]  # what tells one muscle (one FE sweep) from another
+
+DEFAULT_DATASET = package_file("surrogate", "data", "mkm_design.csv")
+PAPER_DATASET = package_file("surrogate", "data", "mkm_dataset.csv")
 
 
 @dataclass
 class TrainingData:
-    """Inputs ``X`` (columns ``fem.interface.INPUTS``), forces ``y`` [N] and their origin."""
+    """Inputs ``X`` (columns :attr:`inputs`), forces ``y`` [N], muscles and origin.
+
+    ``fixed``: the :data:`PARAMETERS` the dataset holds at one value (a surrogate trained on it
+    answers at that value only); ``box``: the closed range of each input the surrogate claims
+    (the design's box when the sidecar has one, else the span of the data).
+    """
 
     X: np.ndarray
     y: np.ndarray
+    inputs: tuple[str, ...]
+    fixed: dict
+    box: dict
+    groups: np.ndarray
+    threshold_pressure_bar: np.ndarray
     path: str
     sha256: str
     provenance: dict = field(default_factory=dict)
     n_dropped: int = 0
-    fixed: dict = field(default_factory=dict)
+    labels: dict = field(default_factory=dict)
+
+    @property
+    def n_muscles(self) -> int:
+        return int(np.unique(self.groups).size)
 
     def domain(self) -> Domain:
-        """The box the inputs span: the surrogate's domain of validity."""
-        return Domain(**{name: (float(self.X[:, i].min()), float(self.X[:, i].max()))
-                         for i, name in enumerate(INPUTS)})
+        """The box of the four ``predict`` inputs."""
+        return Domain(**{name: tuple(self.box[name]) for name in INPUTS})
 
     def summary(self) -> dict:
         return {"path": self.path, "sha256": self.sha256, "n_rows": int(len(self.y)),
-                "n_dropped": self.n_dropped, "fixed": self.fixed, "provenance": self.provenance}
+                "n_muscles": self.n_muscles, "n_dropped": self.n_dropped,
+                "inputs": list(self.inputs), "fixed": self.fixed, "labels": self.labels,
+                "box": self.box, "provenance": self.provenance}
 
 
 def load_training_data(path=DEFAULT_DATASET) -> TrainingData:
@@ -48,33 +76,56 @@ def load_training_data(path=DEFAULT_DATASET) -> TrainingData:
     path = Path(path)
     if not path.is_file():
         raise ValueError(f"dataset {str(path)!r} does not exist: expected a CSV built by "
-                         "`mkm fem dataset` (columns pressure_bar,D0_mm,t0_mm,eps,force_N,...)")
+                         "`mkm surrogate design` or `mkm fem dataset` (columns "
+                         "pressure_bar,D0_mm,t0_mm,eps,force_N,...)")
     frame = pd.read_csv(path, comment="#")
     missing = [c for c in (*INPUTS, "force_N") if c not in frame.columns]
     if missing:
         raise ValueError(f"dataset {str(path)!r} lacks column(s) {', '.join(missing)}: expected "
                          f"{', '.join((*INPUTS, 'force_N'))}")
+    provenance = _provenance(path)
     keep = np.isfinite(frame["force_N"].to_numpy(dtype=float))
     for flag in ("converged", "valid"):
         if flag in frame.columns:
             keep &= frame[flag].astype(str).str.lower().isin(("true", "1")).to_numpy()
     if not keep.any():
         raise ValueError(f"dataset {str(path)!r} has no converged, valid row to train on")
-    used = frame[keep]
-    # Inputs the surrogate does not take must be constant, or it would mix different muscles.
-    fixed = {}
-    for column in ("L0_mm", "theta0_deg", "model", "mesh"):
+    used = frame[keep].copy()
+    recorded = provenance.get("model_params", {}) if isinstance(provenance, dict) else {}
+    for name in PARAMETERS:  # a parameter without a column: the one value the sidecar records
+        if name not in used.columns:
+            if recorded.get(name) is None:
+                raise ValueError(f"dataset {str(path)!r} records no {name} (no column, none in "
+                                 "the sidecar's model_params): expected the value the FE used")
+            used[name] = float(recorded[name])
+    labels = {}
+    for column in ("model", "mesh"):  # one FE model and mesh, or the dataset mixes physics
         if column in used.columns:
             values = used[column].dropna().unique()
             if len(values) > 1:
                 raise ValueError(f"dataset {str(path)!r} mixes {column} = "
                                  f"{', '.join(map(str, values[:4]))}: expected one value")
             if len(values):
-                fixed[column] = values[0].item() if hasattr(values[0], "item") else values[0]
-    return TrainingData(X=used[list(INPUTS)].to_numpy(dtype=float),
-                        y=used["force_N"].to_numpy(dtype=float), path=str(path),
-                        sha256=file_sha256(path), provenance=_provenance(path),
-                        n_dropped=int((~keep).sum()), fixed=fixed)
+                labels[column] = values[0].item() if hasattr(values[0], "item") else values[0]
+    fixed = {}
+    for name in PARAMETERS:
+        values = used[name].to_numpy(dtype=float)
+        if np.ptp(values) == 0.0:
+            fixed[name] = float(values[0])
+    inputs = tuple(name for name in ALL_INPUTS if name not in fixed)
+    X = used[list(inputs)].to_numpy(dtype=float)
+    _, groups = np.unique(used[list(MUSCLE_COLUMNS)].to_numpy(dtype=float), axis=0,
+                          return_inverse=True)
+    threshold = (used["threshold_pressure_bar"].to_numpy(dtype=float)
+                 if "threshold_pressure_bar" in used.columns else np.full(len(used), np.nan))
+    design_box = provenance.get("box", {}) if isinstance(provenance, dict) else {}
+    box = {name: [float(v) for v in design_box[name]] if name in design_box
+           else [float(X[:, i].min()), float(X[:, i].max())] for i, name in enumerate(inputs)}
+    return TrainingData(X=X, y=used["force_N"].to_numpy(dtype=float), inputs=inputs,
+                        fixed=fixed, box=box, groups=groups.ravel(),
+                        threshold_pressure_bar=threshold, path=str(path),
+                        sha256=file_sha256(path), provenance=provenance,
+                        n_dropped=int((~keep).sum()), labels=labels)
 
 
 def _provenance(path: Path) -> dict:
@@ -89,5 +140,8 @@ def _provenance(path: Path) -> dict:
                 break
             key, sep, value = line[1:].strip().partition(":")
             if sep:
-                header[key.strip()] = value.strip()
+                try:
+                    header[key.strip()] = json.loads(value)
+                except ValueError:
+                    header[key.strip()] = value.strip()
     return header

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+import time
 import warnings
 from pathlib import Path
 
@@ -14,15 +15,17 @@ from mkm.cli.common import (
     emit_prediction,
     with_calibration,
 )
-from mkm.paths import default_out
+from mkm.paths import default_cache, default_out
+from mkm.progress import summary_line
 
 
 def register(subparsers) -> None:
     sur = subparsers.add_parser(
-        "surrogate", help="scikit-learn surrogates of the FE model: grid, train, predict, test, "
-        "reference",
-        description="Learned force models trained on the FE dataset: the paper's 27-net grid, "
-        "training and saving, prediction, tests on unseen muscles, the FE reference.",
+        "surrogate", help="scikit-learn surrogates of the FE model: design, train, predict, "
+        "evaluate, test, grid, reference",
+        description="Learned force models trained on FE datasets: the space-filling FE design, "
+        "training and saving, prediction, off-grid evaluation against fresh FE muscles, tests "
+        "on the paper's muscles, the paper's 27-net grid, the FE reference.",
         epilog="example: mkm surrogate predict --D0 35 --t0 2.5 --eps 5%")
     sub = sur.add_subparsers(dest="surrogate_command", required=True, metavar="COMMAND")
 
@@ -32,7 +35,8 @@ def register(subparsers) -> None:
         "over repeated 80/20 splits of the FE dataset; paper_grid.csv, .md and .png under --out. "
         "Long: minutes per net and seed on two cores (start with --nets and --seeds).",
         epilog="example: mkm surrogate grid --nets 1,14 --seeds 2 --out mkm-out/surrogate-grid")
-    _dataset_argument(grid)
+    grid.add_argument("--dataset", help="FE dataset CSV (default: the shipped paper grid, "
+                      "surrogate/data/mkm_dataset.csv)")
     grid.add_argument("--seeds", type=int, default=10, help="number of splits (default 10)")
     grid.add_argument("--out", default=str(default_out("surrogate-grid")),
                       help="folder (default %(default)s)")
@@ -44,13 +48,14 @@ def register(subparsers) -> None:
 
     train = sub.add_parser(
         "train", help="fit a surrogate on the FE dataset and save it",
-        description="Fit a surrogate kind on the FE dataset (held-out metrics over repeated "
-        "splits) and save it as a model folder that --model / surrogate:path=DIR accept.",
+        description="Fit a surrogate kind on an FE dataset (errors over repeated splits that "
+        "hold out whole muscles) and save it as a model folder that --model / "
+        "surrogate:path=DIR accept (JSON and skops arrays: loading it runs no code).",
         epilog="example: mkm surrogate train --kind gp --out mkm-out/models/gp")
     _dataset_argument(train)
-    train.add_argument("--kind", default="best",
-                       help="best, mlp-paper, mlp-standardised, gp, physics or "
-                       "net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]")
+    train.add_argument("--kind", default="best", help=_KINDS_HELP)
+    train.add_argument("--splits", type=int, default=10,
+                       help="muscle-held-out splits for the metrics (default 10; 0: none)")
     train.add_argument("--out", help="model folder (default mkm-out/models/<kind>)")
     train.set_defaults(func=_train)
 
@@ -63,6 +68,7 @@ def register(subparsers) -> None:
                          help="folder written by `mkm surrogate train`, or default (the cached "
                          "best surrogate)")
     add_geometry_arguments(predict)
+    _parameter_arguments(predict)
     predict.add_argument("--out", help="write the CSV here instead of stdout")
     predict.set_defaults(func=_predict)
 
@@ -77,6 +83,7 @@ def register(subparsers) -> None:
     test.add_argument("--kind", action="append",
                       help="also train this kind on --dataset and test it (repeatable)")
     _dataset_argument(test)
+    _accept_argument(test)
     test.add_argument("--reference", help="FE reference CSV (default "
                       "data/reference/fe_test_muscles.csv)")
     test.add_argument("--out", default=str(default_out("surrogate-test")),
@@ -99,13 +106,85 @@ def register(subparsers) -> None:
                      help="write the shipped reference surrogate/data/fe_test_muscles.csv "
                      "instead (what the report and `surrogate test` read by default)")
     ref.set_defaults(func=_reference)
-    for command in (grid, train, predict, test, ref):  # the physics features read theta0
+    design = sub.add_parser(
+        "design", help="build the space-filling FE design the default surrogate learns from",
+        description="Place --muscles muscles over the box (pressure 0-2.5 bar, D0 30-50 mm, t0 "
+        "2-4 mm, eps 0-0.2, L0 150-400 mm, theta0 28-38 deg, C10 and C01 within +-50 % of "
+        "Silastic S): the 16 corners of a fractional factorial and a Latin hypercube; one FE "
+        "sweep per muscle through the dataset cache (resumable) on local Dask workers. "
+        "~2 s per muscle at the fine mesh.",
+        epilog="example: mkm surrogate design --muscles 24 --mesh medium")
+    design.add_argument("--muscles", required=True, type=int,
+                        help="FE budget: number of muscles (one FE sweep each)")
+    design.add_argument("--seed", type=int, default=0, help="Latin hypercube seed (default 0)")
+    design.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
+                        help="FE mesh level (default fine, the converged one)")
+    design.add_argument("--workers", type=int, help="local worker processes (default: cores)")
+    design.add_argument("--cache", default=str(default_cache("dataset")),
+                        help="job cache folder (default %(default)s)")
+    design.add_argument("--out", default=str(default_out("surrogate-design", "mkm_design.csv")),
+                        help="CSV to write, with a .json sidecar (default %(default)s)")
+    design.add_argument("--update-shipped", action="store_true",
+                        help="write the shipped design surrogate/data/mkm_design.csv instead "
+                        "(what the default surrogate trains on)")
+    design.set_defaults(func=_design)
+
+    evaluate = sub.add_parser(
+        "evaluate", help="score a surrogate on fresh random muscles the FE computes now",
+        description="Draw --muscles random muscles in the surrogate's box (seed recorded; fresh "
+        "unless --seed), compute their FE sweeps, and score the surrogate: largest |Err%| per "
+        "muscle, pooled RMSE, fraction of points within 1 and 2 std, and whether points just "
+        "outside the box are flagged. Writes offgrid_points.csv and offgrid_summary.json.",
+        epilog="example: mkm surrogate evaluate --muscles 4 --mesh medium")
+    evaluate.add_argument("--model", default="default",
+                          help="folder written by `mkm surrogate train`, or default")
+    evaluate.add_argument("--muscles", type=int, default=12,
+                          help="FE budget: random muscles (default 12)")
+    evaluate.add_argument("--seed", type=int, help="seed of the draw (default: a fresh one)")
+    evaluate.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
+                          help="FE mesh level of the reference (default fine, the converged one)")
+    evaluate.add_argument("--workers", type=int, help="local worker processes (default: cores)")
+    evaluate.add_argument("--cache", default=str(default_cache("dataset")),
+                          help="job cache folder (default %(default)s)")
+    evaluate.add_argument("--out", default=str(default_out("surrogate-evaluate")),
+                          help="folder (default %(default)s)")
+    _accept_argument(evaluate)
+    evaluate.set_defaults(func=_evaluate)
+
+    for command in (grid, train, predict, test, ref, design, evaluate):
+        # the default braid angle of a surrogate, and the FE's, come from the calibration
         add_calibration_argument(command)
+        command.add_argument("--no-progress", action="store_true",
+                             help="no progress bar on stderr (none either when stderr is not "
+                             "a terminal)")
         command.set_defaults(func=with_calibration(command.get_default("func")))
+    _accept_argument(predict)
+
+
+_KINDS_HELP = ("best (muscle-gp), muscle-gp, physics, gp, mlp-paper or "
+               "net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]")
+
+
+def _parameter_arguments(parser) -> None:
+    parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
+                        help="muscle length at rest [mm] (default 282)")
+    parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+                        help="braid angle at rest [deg] (default: calibrated)")
+    parser.add_argument("--C10", type=argtype(parse_number, "--C10"),
+                        help="rubber Mooney-Rivlin C10 [MPa] (default Silastic S, 0.0694)")
+    parser.add_argument("--C01", type=argtype(parse_number, "--C01"),
+                        help="rubber Mooney-Rivlin C01 [MPa] (default Silastic S, 0.0628)")
+
+
+def _accept_argument(parser) -> None:
+    parser.add_argument("--accept-mismatch", action="store_true",
+                        help="use a saved surrogate even if the code, calibration or training "
+                        "data differ from those it was trained with")
 
 
 def _dataset_argument(parser) -> None:
-    parser.add_argument("--dataset", help="FE dataset CSV (default data/mkm_dataset.csv)")
+    parser.add_argument("--dataset", help="FE dataset CSV (default: the shipped design, "
+                        "surrogate/data/mkm_design.csv)")
 
 
 def _dataset(args):
@@ -116,11 +195,16 @@ def _dataset(args):
 
 def _grid(args) -> int:
     from surrogate.paper_grid import paper_grid_study
+    from surrogate.training_data import PAPER_DATASET
 
+    start = time.perf_counter()
     variants = tuple(v.strip() for v in args.variants.split(",") if v.strip())
     nets = [int(parse_number(n, "--nets")) for n in args.nets.split(",")] if args.nets else None
-    paper_grid_study(args.out, _dataset(args), args.seeds, args.jobs, variants, nets)
-    print(f"wrote {args.out}/paper_grid.csv, paper_grid.md, paper_grid.png", file=sys.stderr)
+    table = paper_grid_study(args.out, args.dataset or PAPER_DATASET, args.seeds, args.jobs,
+                             variants, nets, progress=not args.no_progress)
+    summary_line("surrogate grid", f"{len(table)} configurations x {args.seeds} splits in "
+                 f"{time.perf_counter() - start:.0f} s; wrote {args.out}/paper_grid.csv, .md, "
+                 ".png")
     return 0
 
 
@@ -128,19 +212,33 @@ def _train(args) -> int:
     from surrogate.io import save_model
     from surrogate.train import train_surrogate
 
-    model = train_surrogate(args.kind, _dataset(args))
+    start = time.perf_counter()
+    model = train_surrogate(args.kind, _dataset(args), splits=args.splits,
+                            progress=not args.no_progress)
     out = save_model(model, args.out or default_out("models", args.kind))
-    rmse = model.metadata["metrics"]["rmse_test_N"]
-    print(f"wrote {out} ({model.kind}): held-out RMSE median {rmse['median']:.2f} N "
-          f"[{rmse['min']:.2f}-{rmse['max']:.2f}] over {rmse['n']} splits", file=sys.stderr)
+    held_out = model.metadata["metrics"]["muscle_held_out"]
+    text = f"wrote {out} ({model.kind}) in {time.perf_counter() - start:.0f} s"
+    if held_out:
+        rmse, worst = held_out["rmse_test_N"], held_out["worst_err_pct"]
+        text += (f": muscle-held-out RMSE median {rmse['median']:.2f} N "
+                 f"[{rmse['min']:.2f}-{rmse['max']:.2f}], worst |Err%| median "
+                 f"{worst['median']:.2f} % over {rmse['n']} splits")
+        if "within_1std" in held_out:
+            text += (f"; within 1/2 std {100 * held_out['within_1std']['median']:.0f}/"
+                     f"{100 * held_out['within_2std']['median']:.0f} %")
+    summary_line("surrogate train", text)
     return 0
 
 
-def _load(path):
+def _load(path, accept_mismatch=False, **parameters):
     from surrogate.io import load_model
     from surrogate.train import default_model
 
-    return default_model() if path == "default" else load_model(path)
+    parameters = {k: v for k, v in parameters.items() if v is not None}
+    if path == "default":
+        return default_model(**parameters)
+    model = load_model(path, accept_mismatch=accept_mismatch)
+    return model.with_parameters(**parameters) if parameters else model
 
 
 def _label(path: str) -> str:
@@ -148,10 +246,10 @@ def _label(path: str) -> str:
 
 
 def _predict(args) -> int:
-
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        model = _load(args.model)
+        model = _load(args.model, args.accept_mismatch, L0_mm=args.L0, theta0_deg=args.theta0,
+                      C10_MPa=args.C10, C01_MPa=args.C01)
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
         print(f"mkm: warning: {w.message}", file=sys.stderr)
@@ -164,13 +262,14 @@ def _test(args) -> int:
     from surrogate.train import train_surrogate
 
     paths = args.model or ([] if args.kind else ["default"])
-    models = {_label(path): _load(path) for path in paths}
-    models.update({kind: train_surrogate(kind, _dataset(args), seeds=())
+    models = {_label(path): _load(path, args.accept_mismatch) for path in paths}
+    models.update({kind: train_surrogate(kind, _dataset(args), splits=0)
                    for kind in args.kind or []})
     summary = run_test(models, args.out, args.reference or FE_REFERENCE)
     print(summary.to_string(index=False, float_format=lambda v: f"{v:.3g}"))
-    print(f"wrote {args.out}/test_muscles.csv, test_muscles.md, test_muscles.png",
-          file=sys.stderr)
+    summary_line("surrogate test", f"{len(models)} model(s), worst |Err%| "
+                 f"{summary['max_abs_err_pct'].max():.2f} %; wrote {args.out}/test_muscles.csv, "
+                 "test_muscles.md, test_muscles.png")
     return 0
 
 
@@ -181,5 +280,45 @@ def _reference(args) -> int:
     model = make_model(args.model, mesh=args.mesh, theta0_deg=args.theta0)
     out = FE_REFERENCE if args.update_shipped else args.out
     build_fe_reference(model, out)
-    print(f"wrote {out}", file=sys.stderr)
+    summary_line("surrogate reference", f"wrote {out}")
+    return 0
+
+
+def _design(args) -> int:
+    from surrogate.design import DESIGN_DATASET, build_design
+
+    start = time.perf_counter()
+    out = DESIGN_DATASET if args.update_shipped else Path(args.out)
+    frame, info = build_design(args.muscles, out, seed=args.seed, mesh=args.mesh,
+                               workers=args.workers, cache_dir=args.cache,
+                               progress=not args.no_progress)
+    summary_line("surrogate design", f"{args.muscles} muscles ({info['jobs_computed']} FE sweeps "
+                 f"computed, {info['jobs_from_cache']} from cache, "
+                 f"{len(info['muscles_with_failed_points'])} with failed points) in "
+                 f"{time.perf_counter() - start:.0f} s; wrote {out} and "
+                 f"{out.with_suffix('.json').name}")
+    return 0
+
+
+def _evaluate(args) -> int:
+    from fem.records import write_json_atomic
+    from surrogate.offgrid import evaluate_offgrid
+
+    start = time.perf_counter()
+    model = _load(args.model, args.accept_mismatch)
+    points, summary = evaluate_offgrid(model, args.muscles, args.seed, args.mesh, args.workers,
+                                       args.cache, progress=not args.no_progress)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    points.to_csv(out / "offgrid_points.csv", index=False, float_format="%.6g")
+    write_json_atomic(out / "offgrid_summary.json", summary)
+    cover = (f", within 1/2 std {100 * summary['within_1std']:.0f}/"
+             f"{100 * summary['within_2std']:.0f} %" if "within_1std" in summary else "")
+    box = summary["outside_box"]
+    summary_line("surrogate evaluate", f"{model.name} on {args.muscles} random muscles (seed "
+                 f"{summary['seed']}, FE {args.mesh}): worst |Err%| "
+                 f"{summary['worst_max_abs_err_pct']:.3f} %, pooled RMSE "
+                 f"{summary['pooled_rmse_N']:.3f} N{cover}; {box['flagged']} of {box['points']} "
+                 f"points outside the box flagged; {time.perf_counter() - start:.0f} s; wrote "
+                 f"{out}/offgrid_points.csv, offgrid_summary.json")
     return 0

@@ -1,5 +1,9 @@
-import pandas as pd
+import json
 
+import pandas as pd
+import pytest
+
+from fem.calibration import calibrated
 from mkm.cli import main
 
 
@@ -27,14 +31,14 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
     assert main(["surrogate", "predict", "--model", str(model), "--D0", "35", "--t0", "2.5",
                  "--eps", "5%", "--pressures", "0:3:0.5"]) == 0
     captured = capsys.readouterr()
-    assert '# model: "surrogate-physics"' in captured.out
-    lines = [line for line in captured.out.splitlines() if not line.startswith("#")]
+    lines = captured.out.splitlines()
     assert lines[0] == "pressure_bar,D0_mm,t0_mm,eps,force_N,valid,converged,in_domain"
     assert lines[-1].startswith("3,35,2.5,0.05,") and lines[-1].endswith(",False,True,False")
     assert captured.err.startswith("mkm: warning: 1 of 7 points lie outside the training")
 
     reference = tmp_path / "ref.csv"
-    assert main(["surrogate", "reference", "--model", "thickwall", "--out",
+    theta0 = str(calibrated("axisym")["theta0_deg"])  # the angle the fixture was built at
+    assert main(["surrogate", "reference", "--model", "thickwall", "--theta0", theta0, "--out",
                  str(reference)]) == 0
     assert main(["surrogate", "test", "--model", str(model), "--reference", str(reference),
                  "--out", str(tmp_path / "test")]) == 0
@@ -52,3 +56,60 @@ def test_bad_kind_is_a_one_line_error(thickwall_dataset, capsys):
 def test_missing_dataset_is_a_one_line_error(tmp_path, capsys):
     assert main(["surrogate", "train", "--dataset", str(tmp_path / "no.csv")]) == 2
     assert "does not exist" in capsys.readouterr().err
+
+
+def test_predict_at_an_untrained_length_is_refused(thickwall_dataset, tmp_path, capsys):
+    # The fixture holds one length (282 mm): L0 = 150 mm is refused with the reason, both on
+    # the command line and through the registry spec `mkm report` builds.
+    from mkm.registry import parse_spec
+
+    model = tmp_path / "physics"
+    assert main(["surrogate", "train", "--dataset", str(thickwall_dataset), "--kind",
+                 "physics", "--splits", "0", "--out", str(model)]) == 0
+    capsys.readouterr()
+    assert main(["surrogate", "predict", "--model", str(model), "--D0", "35", "--t0", "2.5",
+                 "--eps", "5%", "--L0", "150"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("mkm: error: surrogate-physics was trained at L0_mm=282 only: "
+                          "L0_mm=150 refused") and err.count("\n") == 1
+    spec = parse_spec(f"surrogate:path={model}")
+    assert spec.build(L0_mm=282.0).params()["L0_mm"] == 282.0
+    with pytest.raises(ValueError, match="L0_mm=150 refused"):
+        spec.build(L0_mm=150.0)
+
+
+def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
+    # Two muscles of the space-filling design at the coarse mesh (FE ~0.3 s each), then the
+    # off-grid evaluation of a saved surrogate on two fresh ones: files, provenance, summary.
+    out = tmp_path / "design.csv"
+    assert main(["surrogate", "design", "--muscles", "2", "--mesh", "coarse", "--workers", "1",
+                 "--cache", str(tmp_path / "cache"), "--out", str(out), "--no-progress"]) == 0
+    err = capsys.readouterr().err
+    assert err.startswith("mkm surrogate design: 2 muscles (2 FE sweeps computed, 0 from cache")
+    table = pd.read_csv(out)
+    assert table["muscle"].nunique() == 2 and len(table) == 2 * 13
+    assert {"L0_mm", "theta0_deg", "C10_MPa", "C01_MPa", "threshold_pressure_bar"} <= set(
+        table.columns)
+    sidecar = json.loads(out.with_suffix(".json").read_text())
+    assert sidecar["design"]["seed"] == 0 and sidecar["fe_budget_muscles"] == 2
+    assert sidecar["box"]["L0_mm"] == [150.0, 400.0]
+
+    model = tmp_path / "physics"
+    assert main(["surrogate", "train", "--dataset", str(thickwall_dataset), "--kind",
+                 "physics", "--splits", "0", "--out", str(model)]) == 0
+    capsys.readouterr()
+    assert main(["surrogate", "evaluate", "--model", str(model), "--muscles", "2", "--seed",
+                 "5", "--mesh", "coarse", "--workers", "1", "--cache", str(tmp_path / "cache"),
+                 "--out", str(tmp_path / "eval")]) == 0
+    err = capsys.readouterr().err
+    assert err.startswith("mkm surrogate evaluate: surrogate-physics on 2 random muscles "
+                          "(seed 5, FE coarse)")
+    summary = json.loads((tmp_path / "eval" / "offgrid_summary.json").read_text())
+    assert summary["seed"] == 5 and summary["fe_budget_muscles"] == 2
+    assert summary["outside_box"]["flagged"] == summary["outside_box"]["points"]
+    assert len(pd.read_csv(tmp_path / "eval" / "offgrid_points.csv")) == 2 * 11
+
+
+def test_design_budget_must_be_positive(capsys):
+    assert main(["surrogate", "design", "--muscles", "0"]) == 2
+    assert "--muscles 0 is invalid" in capsys.readouterr().err

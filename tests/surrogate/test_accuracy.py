@@ -1,15 +1,18 @@
-"""Accuracy of the default surrogate against our FE, on the shipped dataset and reference."""
+"""Accuracy and uncertainty of the default surrogate against our FE: muscles held out whole,
+the test muscles of the shipped reference, and fresh off-grid muscles the FE computes here."""
 
+import numpy as np
 import pytest
 
+from surrogate.offgrid import evaluate_offgrid
 from surrogate.testset import FE_REFERENCE, PAPER_MUSCLES, read_fe_reference
 from surrogate.train import train_surrogate
 from surrogate.training_data import DEFAULT_DATASET
 
 pytestmark = pytest.mark.skipif(
     not (DEFAULT_DATASET.is_file() and FE_REFERENCE.is_file()),
-    reason="needs data/mkm_dataset.csv (mkm fem dataset) and data/reference/fe_test_muscles.csv "
-           "(mkm surrogate reference)")
+    reason="needs surrogate/data/mkm_design.csv (mkm surrogate design --update-shipped) and "
+           "surrogate/data/fe_test_muscles.csv (mkm surrogate reference --update-shipped)")
 
 
 @pytest.fixture(scope="module")
@@ -18,24 +21,53 @@ def best():
 
 
 def test_reference_is_our_fe_model():
-    header = FE_REFERENCE.read_text().splitlines()[1]
-    assert header == '# model: "axisym"'
-    assert len(read_fe_reference()) == 55
+    table = read_fe_reference()
+    assert table.attrs["params"]["mesh"] in ("medium", "fine")
+    assert len(table) == 55
 
 
 def test_default_surrogate_on_the_test_muscles(best):
-    # The issue's goal is <= 2 % largest |Err%| (Equation 7) on each of muscles I, II, III (the
-    # paper reached 6.55, 7.92, 9.34 %). Measured: 0.27, 0.22, 0.09 % (IV 0.33, V 0.06 %). The
-    # pin, 1 %, is 3x the worst measured value: room for FE re-runs (solver tolerances move the
-    # forces by far less), yet it fails if the surrogate loses its structure.
+    # The paper reached 6.55, 7.92, 9.34 % on muscles I, II, III. Measured: 0.03, 0.12, 0.30 %
+    # (IV 0.02, V 0.08 %), against a reference at the medium mesh while the design is at the
+    # fine one (their difference is part of it). The pin, 1 %, is 3x the worst: room for a
+    # new calibration's reference, yet it fails if the surrogate loses its structure.
     summary = {row["muscle"]: row for row in best.metadata["metrics"]["test_muscles"]}
     for muscle in (*PAPER_MUSCLES, "IV", "V"):
         assert summary[muscle]["max_abs_err_pct"] <= 1.0, muscle
         assert summary[muscle]["all_valid"]
 
 
-def test_default_surrogate_held_out_rmse(best):
-    # The paper's best net reached 7.30 N on its one split; ours must beat it on every one of
-    # the 10 repeated 80/20 splits, not only in the median. Measured: 0.18-0.26 N; the pin,
-    # 1 N, is 4x that and still 7x below the paper.
-    assert best.metadata["metrics"]["rmse_test_N"]["max"] < 1.0
+def test_muscle_held_out_errors(best):
+    # Whole muscles held out (10 splits of 20 % of the 96 muscles). A held-out corner of the
+    # box is an extrapolation in up to 7 inputs at once: the worst split (a corner muscle at
+    # D0 50, t0 2, eps 0.2, L0 150 out) is 5.9 N; the median 0.75 N [p10 0.52]. The paper's
+    # best net reached 7.30 N on rows of muscles it had seen. Pins at 2x the measured median
+    # and max.
+    held_out = best.metadata["metrics"]["muscle_held_out"]
+    assert held_out["rmse_test_N"]["median"] < 1.5
+    assert held_out["rmse_test_N"]["max"] < 12.0
+
+
+def test_muscle_held_out_std_coverage(best):
+    # Issue 13's calibration target: 68 +- 7 % of the held-out points within 1 std, 95 +- 4 %
+    # within 2 (pooled over the 10 splits; points both the FE and the surrogate put at exactly
+    # zero force, below the threshold, say nothing of the std and are left out). Measured:
+    # 71.8 % and 93.5 %.
+    held_out = best.metadata["metrics"]["muscle_held_out"]
+    assert held_out["within_1std"]["pooled"] == pytest.approx(0.68, abs=0.07)
+    assert held_out["within_2std"]["pooled"] == pytest.approx(0.95, abs=0.04)
+
+
+def test_off_grid_muscles(best, tmp_path):
+    # Six random muscles of the box (seed recorded: 13), FE at the medium mesh (the test's
+    # budget; the benchmark draws 12 fresh ones at the fine mesh). Measured: worst |Err%|
+    # 0.49 % (median 0.10 %), pooled RMSE 0.34 N. Pins: the issue's 0.5 % target x2 (the
+    # design is at the fine mesh, this reference at the medium one) and 1 N.
+    points, summary = evaluate_offgrid(best, 6, seed=13, mesh="medium", workers=1,
+                                       cache_dir=tmp_path, progress=False)
+    assert summary["fe_budget_muscles"] == 6 and summary["seed"] == 13
+    assert summary["worst_max_abs_err_pct"] < 1.0
+    assert summary["pooled_rmse_N"] < 1.0
+    assert summary["all_valid"]
+    assert summary["outside_box"]["flagged"] == summary["outside_box"]["points"] >= 12
+    assert np.all(points["force_N"] >= 0)

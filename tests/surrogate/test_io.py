@@ -1,18 +1,41 @@
 import json
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from surrogate.io import LibraryVersionWarning, load_model, save_model
+from fem.records import file_sha256
+from surrogate.io import (
+    ESTIMATOR_FILE,
+    METADATA_FILE,
+    LibraryVersionWarning,
+    load_model,
+    save_model,
+)
 from surrogate.train import train_surrogate
-from surrogate.training_data import file_sha256
 
 
 @pytest.fixture(scope="module")
 def saved(thickwall_dataset, tmp_path_factory):
-    model = train_surrogate("physics", thickwall_dataset, seeds=(0, 1))
+    model = train_surrogate("physics", thickwall_dataset, splits=2)
     directory = save_model(model, tmp_path_factory.mktemp("models") / "physics")
     return model, directory, thickwall_dataset
+
+
+def copy_model(directory, to: Path) -> Path:
+    to.mkdir()
+    for f in directory.iterdir():
+        (to / f.name).write_bytes(f.read_bytes())
+    return to
+
+
+def rewrite_metadata(folder: Path, edit) -> None:
+    meta = json.loads((folder / METADATA_FILE).read_text())
+    edit(meta)
+    (folder / METADATA_FILE).write_text(json.dumps(meta))
 
 
 def test_round_trip_predicts_the_same(saved):
@@ -22,38 +45,107 @@ def test_round_trip_predicts_the_same(saved):
     np.testing.assert_array_equal(loaded.predict(P, 41.0, 2.7, 0.13).force_N,
                                   model.predict(P, 41.0, 2.7, 0.13).force_N)
     assert loaded.domain == model.domain and loaded.kind == "physics"
+    assert loaded.fixed == model.fixed and loaded.inputs == model.inputs
 
 
-def test_metadata_records_data_domain_metrics_versions(saved):
+def test_files_are_json_and_arrays_not_pickles(saved):
+    _, directory, _ = saved
+    assert sorted(f.name for f in directory.iterdir()) == [ESTIMATOR_FILE, METADATA_FILE]
+    with zipfile.ZipFile(directory / ESTIMATOR_FILE) as archive:  # skops: JSON schema + .npy
+        names = archive.namelist()
+    assert "schema.json" in names
+    assert all(n == "schema.json" or n.endswith(".npy") for n in names)
+
+
+def test_metadata_records_data_domain_metrics_checks(saved):
     _, directory, dataset = saved
-    meta = json.loads((directory / "metadata.json").read_text())
+    meta = json.loads((directory / METADATA_FILE).read_text())
     assert meta["dataset"]["sha256"] == file_sha256(dataset)
-    assert meta["dataset"]["n_rows"] == 162 and meta["dataset"]["fixed"]["model"] == "thickwall"
-    assert meta["domain"]["eps"] == [0.0, 0.2]
-    assert meta["metrics"]["rmse_test_N"]["n"] == 2
+    assert meta["dataset"]["n_rows"] == 162 and meta["dataset"]["n_muscles"] == 27
+    assert meta["fixed"]["L0_mm"] == 282.0 and set(meta["fixed"]) == {
+        "L0_mm", "theta0_deg", "C10_MPa", "C01_MPa"}
+    assert meta["box"]["eps"] == [0.0, 0.2]
+    assert meta["metrics"]["muscle_held_out"]["rmse_test_N"]["n"] == 2
+    assert meta["checks"]["code_version"].count("+") == 1
+    assert "axisym" in meta["checks"]["calibration"]
     assert meta["trained"]["versions"]["scikit-learn"]
 
 
 def test_other_library_versions_warn(saved, tmp_path):
-    _, directory, _ = saved
-    copy = tmp_path / "old"
-    copy.mkdir()
-    for f in directory.iterdir():
-        (copy / f.name).write_bytes(f.read_bytes())
-    meta = json.loads((copy / "metadata.json").read_text())
-    meta["trained"]["versions"]["scikit-learn"] = "0.24.2"
-    (copy / "metadata.json").write_text(json.dumps(meta))
+    copy = copy_model(saved[1], tmp_path / "old")
+    rewrite_metadata(copy, lambda m: m["trained"]["versions"].update({"scikit-learn": "0.24.2"}))
     with pytest.warns(LibraryVersionWarning, match=r"scikit-learn 0\.24\.2 -> "):
         load_model(copy)
 
 
+def test_other_code_version_is_refused_unless_accepted(saved, tmp_path):
+    # A 2 % edit of the closed form once moved a loaded prediction from 870 to 888 N silently.
+    copy = copy_model(saved[1], tmp_path / "stale")
+    rewrite_metadata(copy, lambda m: m["checks"].update({"code_version": "0.0.1+000000000000"}))
+    with pytest.raises(ValueError, match=r"code version 0\.0\.1\+000000000000 .* is now"):
+        load_model(copy)
+    assert load_model(copy, accept_mismatch=True).kind == "physics"
+
+
+def test_other_calibration_is_refused(saved, tmp_path):
+    copy = copy_model(saved[1], tmp_path / "calibration")
+    rewrite_metadata(copy, lambda m: m["checks"]["calibration"]["axisym"].update(
+        {"theta0_deg": 20.0}))
+    with pytest.raises(ValueError, match="fem/calibration.json changed since training"):
+        load_model(copy)
+
+
+def test_changed_training_data_is_refused(saved, tmp_path):
+    copy = copy_model(saved[1], tmp_path / "data")
+    data = tmp_path / "data.csv"
+    data.write_text("pressure_bar\n0\n")
+    rewrite_metadata(copy, lambda m: m["dataset"].update({"path": str(data)}))
+    with pytest.raises(ValueError, match="training data .* changed since training"):
+        load_model(copy)
+
+
 def test_tampered_estimator_is_refused(saved, tmp_path):
-    _, directory, _ = saved
-    for f in directory.iterdir():
-        (tmp_path / f.name).write_bytes(f.read_bytes())
-    (tmp_path / "estimator.joblib").write_bytes(b"not a model")
+    copy = copy_model(saved[1], tmp_path / "tampered")
+    (copy / ESTIMATOR_FILE).write_bytes(b"not a model")
     with pytest.raises(ValueError, match="does not match the sha256"):
-        load_model(tmp_path)
+        load_model(copy)
+
+
+CRAFTED_OBJECTS = {
+    # a function reference the loader would call: skops stores it by name
+    "function": "import os\nobj = os.system",
+    # a class of ours that is not a model
+    "class": "from surrogate.model import OutOfDomainWarning\nobj = OutOfDomainWarning()",
+}
+
+
+@pytest.mark.parametrize("what", ["function", "class", "pickle"])
+def test_crafted_model_folder_cannot_run_code(saved, tmp_path, what):
+    # A crafted folder with a matching sha256 ran a shell command through a joblib pickle.
+    # Here: a model file holding a type outside the trusted list, or a pickle whose loading
+    # would write a marker file, with the metadata's hash made to match. Loading refuses and
+    # the marker never appears.
+    marker = tmp_path / "pwned"
+    copy = copy_model(saved[1], tmp_path / "crafted")
+    target = copy / ESTIMATOR_FILE
+    if what == "pickle":
+        script = ("import pickle, sys\n"
+                  "class Evil:\n"
+                  "    def __reduce__(self):\n"
+                  f"        return (open, ({str(marker)!r}, 'w'))\n"
+                  "sys.stdout.buffer.write(pickle.dumps(Evil()))\n")
+        target.write_bytes(subprocess.run([sys.executable, "-c", script], check=True,
+                                          capture_output=True).stdout)
+    else:
+        script = (f"{CRAFTED_OBJECTS[what]}\nimport skops.io as sio\n"
+                  f"sio.dump(obj, {str(target)!r})\n")
+        subprocess.run([sys.executable, "-c", script], check=True)
+    rewrite_metadata(copy, lambda m: m["checks"].update(
+        {"estimator_sha256": file_sha256(target)}))
+    expected = "cannot be read" if what == "pickle" else "holds types outside the trusted list"
+    with pytest.raises(ValueError, match=expected):
+        load_model(copy)
+    assert not marker.exists()
 
 
 def test_not_a_model_folder(tmp_path):
@@ -65,8 +157,25 @@ def test_default_model_is_trained_once_and_cached(thickwall_dataset, tmp_path):
     from surrogate.train import default_model
 
     first = default_model(thickwall_dataset, cache_dir=tmp_path)
-    (entry,) = tmp_path.iterdir()
-    stamp = (entry / "estimator.joblib").stat().st_mtime_ns
+    (entry,) = [p for p in tmp_path.iterdir() if p.is_dir()]
+    stamp = (entry / ESTIMATOR_FILE).stat().st_mtime_ns
     second = default_model(thickwall_dataset, cache_dir=tmp_path)
-    assert (entry / "estimator.joblib").stat().st_mtime_ns == stamp  # loaded, not retrained
-    assert second.kind == first.kind == "physics"
+    assert (entry / ESTIMATOR_FILE).stat().st_mtime_ns == stamp  # loaded, not retrained
+    assert second.kind == first.kind == "muscle-gp"
+
+
+def test_two_processes_training_at_once(thickwall_dataset, tmp_path):
+    # Two processes training the same cached model at once once crashed ("Directory not
+    # empty"). With the lock, one trains and saves, the other waits and loads it: both finish,
+    # with the same model, and one entry is left.
+    script = ("import sys\nfrom surrogate.train import cached_model\n"
+              "m = cached_model('physics', sys.argv[1], cache_dir=sys.argv[2], splits=0)\n"
+              "print(repr(float(m.predict(2.0, 40.0, 3.0, 0.1).force_N)))\n")
+    runs = [subprocess.Popen([sys.executable, "-c", script, str(thickwall_dataset),
+                              str(tmp_path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True) for _ in range(2)]
+    outputs = [run.communicate(timeout=300) for run in runs]
+    assert [run.returncode for run in runs] == [0, 0], [err for _, err in outputs]
+    assert outputs[0][0] == outputs[1][0]
+    entries = [p for p in tmp_path.iterdir() if p.is_dir()]
+    assert len(entries) == 1 and (entries[0] / METADATA_FILE).is_file()

@@ -3,18 +3,26 @@ import warnings
 import numpy as np
 import pytest
 
+from fem.calibration import calibrated
+from surrogate.design import BOX
 from surrogate.model import OutOfDomainWarning
 from surrogate.train import train_surrogate
+from surrogate.training_data import DEFAULT_DATASET
 
 
 @pytest.fixture(scope="module")
 def physics(thickwall_dataset):
-    return train_surrogate("physics", thickwall_dataset, seeds=(0,))
+    return train_surrogate("physics", thickwall_dataset, splits=1)
 
 
 @pytest.fixture(scope="module")
 def gp(thickwall_dataset):
-    return train_surrogate("gp", thickwall_dataset, seeds=())
+    return train_surrogate("gp", thickwall_dataset, splits=0)
+
+
+@pytest.fixture(scope="module")
+def design_model():
+    return train_surrogate("best", DEFAULT_DATASET, splits=0)
 
 
 def test_domain_is_the_training_box(physics):
@@ -40,6 +48,28 @@ def test_outside_the_domain_flagged_and_warned(physics, point):
     assert np.isfinite(prediction.force_N).all()  # the number is kept, the flag says it is not
 
 
+@pytest.mark.parametrize("parameter, value", [("L0_mm", 150.0), ("theta0_deg", 30.0),
+                                              ("C10_MPa", 0.05), ("C01_MPa", 0.09)])
+def test_recorded_parameter_at_another_value_is_refused(physics, parameter, value):
+    # The paper-grid style dataset holds one length, angle and rubber: the surrogate answers
+    # there only (at L0 = 150 mm the old default answered 568 N where the FE gives 465 N).
+    with pytest.raises(ValueError, match=rf"trained at {parameter}=[0-9.]+ only: "
+                                         rf"{parameter}={value:g} refused"):
+        physics.with_parameters(**{parameter: value})
+
+
+def test_default_angle_other_than_recorded_is_refused_at_predict(physics, tmp_path):
+    # A user who calibrates theta0 on a bench run gets a refusal, not a surrogate silently
+    # trained at another angle.
+    from fem.calibration import use_calibration
+
+    other = tmp_path / "calibration.json"
+    other.write_text('{"axisym": {"theta0_deg": 30.0}}')
+    with use_calibration(other), pytest.raises(ValueError, match=r"theta0_deg=30 \(the "
+                                                                  r"default\) refused"):
+        physics.predict(1.0, 40.0, 3.0, 0.1)
+
+
 def test_gp_gives_a_predictive_spread(gp):
     prediction = gp.predict([0.5, 1.0, 2.0], 40.0, 3.0, 0.1)
     std = prediction.extras["force_std_N"]
@@ -54,13 +84,43 @@ def test_prediction_is_exact_on_thickwall_data(physics):
     from fem.ladder import make_model
 
     P = np.linspace(0.0, 2.5, 11)
-    expected = make_model("thickwall").predict(P, 35.0, 2.5, 0.05).force_N
+    thickwall = make_model("thickwall", theta0_deg=calibrated("axisym")["theta0_deg"])
+    expected = thickwall.predict(P, 35.0, 2.5, 0.05).force_N
     np.testing.assert_allclose(physics.predict(P, 35.0, 2.5, 0.05).force_N, expected,
                                atol=1e-6 * expected.max())
 
 
-def test_fast_path_equals_the_estimator(physics):
-    # The surrogate skips scikit-learn's per-call checks for speed: same numbers, bit for bit.
+def test_fast_path_equals_the_estimator(physics, design_model):
+    # The surrogates skip scikit-learn's per-call checks for speed: same numbers, bit for bit.
     X = np.array([[0.0, 30.0, 2.0, 0.0], [1.3, 41.0, 2.7, 0.13], [2.5, 50.0, 4.0, 0.2]])
     assert physics._fast_predict is not None
     np.testing.assert_array_equal(physics.predict(*X.T).force_N, physics.estimator.predict(X))
+    full = np.column_stack([X, np.tile([250.0, 33.0, 0.07, 0.06], (3, 1))])
+    local = design_model.with_parameters(L0_mm=250.0, theta0_deg=33.0, C10_MPa=0.07,
+                                         C01_MPa=0.06)
+    force, std = design_model.estimator.predict(full, return_std=True)
+    prediction = local.predict(*X.T)
+    np.testing.assert_array_equal(prediction.force_N, force)
+    np.testing.assert_array_equal(prediction.extras["force_std_N"], std)
+
+
+def test_design_model_takes_every_muscle_parameter(design_model):
+    assert design_model.inputs == ("pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm",
+                                   "theta0_deg", "C10_MPa", "C01_MPa")
+    assert design_model.fixed == {}
+    assert {k: tuple(v) for k, v in design_model.box.items()} == BOX
+    # a shorter muscle pulls less at the same geometry (its end zones are a larger share)
+    short = design_model.with_parameters(L0_mm=150.0).predict(2.0, 40.0, 3.0, 0.1).force_N
+    long = design_model.with_parameters(L0_mm=400.0).predict(2.0, 40.0, 3.0, 0.1).force_N
+    assert short < long
+
+
+@pytest.mark.parametrize("parameter, value", [("L0_mm", 120.0), ("L0_mm", 450.0),
+                                              ("theta0_deg", 26.0), ("theta0_deg", 40.0),
+                                              ("C10_MPa", 0.2), ("C01_MPa", 0.01)])
+def test_parameter_outside_the_box_flags_every_point(design_model, parameter, value):
+    local = design_model.with_parameters(**{parameter: value})
+    with pytest.warns(OutOfDomainWarning, match=rf"3 of 3 points .*{parameter}={value:g} not "
+                                                "in"):
+        prediction = local.predict([0.5, 1.0, 2.0], 40.0, 3.0, 0.1)
+    assert not prediction.valid.any() and not prediction.extras["in_domain"].any()

@@ -1,0 +1,164 @@
+"""The FE design the default surrogate learns from: muscles spread over the whole box.
+
+A grid spends the FE budget on corners and planes (27 muscles of the paper's 3 x 3 x 3 grid hold
+only three values of each input); a space-filling design gives every muscle new values of every
+input. :func:`space_filling` places ``n`` muscles in the box :data:`BOX` of the seven muscle
+parameters (geometry, length, braid angle, rubber): 16 corners of a 2^(7-3) fractional factorial
+(every pair of factors balanced, each corner of the box's main effects seen), then a Latin
+hypercube (``scipy.stats.qmc``, centred-discrepancy optimised) for the rest. Each muscle is one
+FE sweep (:data:`DESIGN_PRESSURES`), computed with the dataset builder's cache and workers
+(:func:`fem.dataset.build.run_jobs`). :func:`random_muscles` draws fresh muscles for the
+off-grid evaluation the same way.
+
+References
+----------
+.. [1] G. E. P. Box, J. S. Hunter, W. G. Hunter, "Statistics for Experimenters", 2nd ed., Wiley,
+   2005, ch. 6 (fractional factorials; generators E = ABC, F = BCD, G = ACD).
+.. [2] M. D. McKay, R. J. Beckman, W. J. Conover, "A comparison of three methods for selecting
+   values of input variables in the analysis of output from a computer code", Technometrics
+   21(2), 239-245, 1979, doi:10.2307/1268522.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from scipy.stats import qmc
+
+from fem.dataset.build import DEFAULT_CACHE, Job, run_jobs
+from fem.materials import SILASTIC_S
+from fem.records import package_file, provenance, write_atomic
+
+#: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).
+DESIGN_DATASET = package_file("surrogate", "data", "mkm_design.csv")
+
+#: Parameters of a muscle, in the order of the design's columns.
+MUSCLE_PARAMETERS = ("D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
+
+#: The box the default surrogate covers (issue 13): pressure and the seven muscle parameters;
+#: the rubber within +-50 % of Silastic S (the paper's Equation 3).
+BOX: dict[str, tuple[float, float]] = {
+    "pressure_bar": (0.0, 2.5),
+    "D0_mm": (30.0, 50.0),
+    "t0_mm": (2.0, 4.0),
+    "eps": (0.0, 0.2),
+    "L0_mm": (150.0, 400.0),
+    "theta0_deg": (28.0, 38.0),
+    # rounded as the design's values are, so that its corners lie on the box
+    "C10_MPa": (round(0.5 * SILASTIC_S.C10_MPa, 6), round(1.5 * SILASTIC_S.C10_MPa, 6)),
+    "C01_MPa": (round(0.5 * SILASTIC_S.C01_MPa, 6), round(1.5 * SILASTIC_S.C01_MPa, 6)),
+}
+
+#: Pressures of each FE sweep [bar]: the box's 0-2.5 bar every 0.25 bar (the test pressures),
+#: plus 2.75 and 3 bar so that the slope of a muscle with a high threshold is still measured.
+DESIGN_PRESSURES = tuple(float(p) for p in np.round(np.arange(0.0, 3.001, 0.25), 2))
+
+N_CORNERS = 16  # the 2^(7-3) fractional factorial
+MIN_MUSCLES_WITH_CORNERS = 2 * N_CORNERS  # below: corners would be most of the budget
+
+
+def corners() -> np.ndarray:
+    """The 16 corners of the 2^(7-3) resolution IV fractional factorial, in the unit cube.
+
+    Base factors A-D (the geometry) in full factorial, generators E = ABC, F = BCD, G = ACD.
+    """
+    base = np.array([[(i >> k) & 1 for k in range(4)] for i in range(16)]) * 2 - 1
+    a, b, c, d = base.T
+    signs = np.column_stack([a, b, c, d, a * b * c, b * c * d, a * c * d])
+    return (signs + 1) / 2.0
+
+
+def _to_box(unit: np.ndarray, box=BOX) -> pd.DataFrame:
+    lo = np.array([box[p][0] for p in MUSCLE_PARAMETERS])
+    hi = np.array([box[p][1] for p in MUSCLE_PARAMETERS])
+    values = np.round(lo + unit * (hi - lo), 6)  # round: the CSV holds them exactly
+    return pd.DataFrame(values, columns=list(MUSCLE_PARAMETERS))
+
+
+def space_filling(n_muscles: int, seed: int = 0, box=BOX) -> pd.DataFrame:
+    """``n_muscles`` muscles over ``box``: corners (when ``n >= 32``) then a Latin hypercube.
+
+    Returns one row per muscle with :data:`MUSCLE_PARAMETERS` and ``origin`` (corner or lhs).
+    """
+    if int(n_muscles) != n_muscles or n_muscles < 1:
+        raise ValueError(f"--muscles {n_muscles!r} is invalid: expected an FE budget of at "
+                         "least 1 muscle")
+    n_muscles = int(n_muscles)
+    parts, origin = [], []
+    if n_muscles >= MIN_MUSCLES_WITH_CORNERS:
+        parts.append(corners())
+        origin += ["corner"] * N_CORNERS
+    n_lhs = n_muscles - sum(len(p) for p in parts)
+    if n_lhs:
+        sampler = qmc.LatinHypercube(d=len(MUSCLE_PARAMETERS), optimization="random-cd",
+                                     rng=np.random.default_rng(seed))
+        parts.append(sampler.random(n_lhs))
+        origin += ["lhs"] * n_lhs
+    muscles = _to_box(np.vstack(parts), box)
+    muscles["origin"] = origin
+    return muscles
+
+
+def random_muscles(n_muscles: int, seed: int, box=BOX) -> pd.DataFrame:
+    """``n_muscles`` muscles drawn uniformly in ``box`` (off-grid evaluation; record ``seed``)."""
+    unit = np.random.default_rng(seed).random((int(n_muscles), len(MUSCLE_PARAMETERS)))
+    return _to_box(unit, box).assign(origin=f"random seed {seed}")
+
+
+def fe_jobs(muscles: pd.DataFrame, mesh: str = "fine",
+            pressures=DESIGN_PRESSURES) -> list[Job]:
+    """One axisym FE job per muscle (the pressure sweep ``pressures``)."""
+    return [Job(model="axisym", mesh=mesh, D0_mm=float(m.D0_mm), t0_mm=float(m.t0_mm),
+                eps=float(m.eps), L0_mm=float(m.L0_mm), theta0_deg=float(m.theta0_deg),
+                pressure_bar=tuple(float(p) for p in pressures), C10_MPa=float(m.C10_MPa),
+                C01_MPa=float(m.C01_MPa))
+            for m in muscles.itertuples()]
+
+
+def fe_sweeps(muscles: pd.DataFrame, mesh: str = "fine", pressures=DESIGN_PRESSURES,
+              workers: int | None = None, cache_dir=DEFAULT_CACHE, progress: bool = True,
+              desc: str = "FE sweeps") -> tuple[pd.DataFrame, dict]:
+    """The FE rows of every muscle (``muscle`` = its row number in ``muscles``) and the run.
+
+    ``progress``: a bar on stderr, when stderr is a terminal (logs and pipes stay clean).
+    """
+    show = progress and hasattr(sys.stderr, "isatty") and sys.stderr.isatty()
+    frame, done = run_jobs(fe_jobs(muscles, mesh, pressures), workers=workers,
+                           cache_dir=cache_dir, progress=show, desc=desc)
+    frame.insert(0, "muscle", np.repeat(np.arange(len(muscles)), len(pressures)))
+    return frame, done
+
+
+def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
+                 workers: int | None = None, cache_dir=DEFAULT_CACHE,
+                 progress: bool = True) -> tuple[pd.DataFrame, dict]:
+    """Compute the design of ``n_muscles`` FE sweeps and write ``out`` (CSV) and ``out.json``.
+
+    The sidecar records the box, the seed, the budget, the muscles whose sweep failed (kept in
+    the CSV with ``converged=False``; the loader leaves them out) and the FE provenance.
+    """
+    muscles = space_filling(n_muscles, seed)
+    frame, done = fe_sweeps(muscles, mesh, workers=workers, cache_dir=cache_dir,
+                            progress=progress, desc=f"FE design ({mesh} mesh)")
+    frame["origin"] = muscles["origin"].to_numpy()[frame["muscle"].to_numpy()]
+    failed = sorted(set(frame.loc[~frame["converged"], "muscle"].tolist()))
+    info = {**provenance(),
+            "what": "space-filling FE design of the default surrogate (surrogate.design)",
+            "design": {"muscles": int(n_muscles), "seed": int(seed),
+                       "corners": int((muscles["origin"] == "corner").sum()),
+                       "method": "2^(7-3) fractional factorial corners + scipy.stats.qmc "
+                                 "LatinHypercube(optimization='random-cd')"},
+            "box": {k: list(v) for k, v in BOX.items()},
+            "pressure_bar": list(DESIGN_PRESSURES),
+            "model": "axisym", "mesh": mesh, "model_version": done["model_version"],
+            "fe_budget_muscles": int(n_muscles), "jobs_computed": done["computed"],
+            "jobs_from_cache": done["cached"], "workers": done["workers"],
+            "muscles_with_failed_points": [int(m) for m in failed]}
+    out = Path(out)
+    write_atomic(out, frame.to_csv(index=False, lineterminator="\n"))
+    write_atomic(out.with_suffix(".json"), json.dumps(info, indent=2, default=str) + "\n")
+    return frame, info

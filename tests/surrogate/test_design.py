@@ -1,0 +1,70 @@
+import numpy as np
+import pytest
+
+from fem.materials import SILASTIC_S
+from surrogate.design import (
+    BOX,
+    DESIGN_DATASET,
+    MUSCLE_PARAMETERS,
+    corners,
+    random_muscles,
+    space_filling,
+)
+from surrogate.training_data import load_training_data
+
+
+def test_box_is_the_issues():
+    assert BOX["pressure_bar"] == (0.0, 2.5) and BOX["L0_mm"] == (150.0, 400.0)
+    assert BOX["theta0_deg"] == (28.0, 38.0)
+    assert BOX["C10_MPa"] == pytest.approx((0.5 * SILASTIC_S.C10_MPa, 1.5 * SILASTIC_S.C10_MPa))
+
+
+def test_corners_are_an_orthogonal_fractional_factorial():
+    # 2^(7-3) resolution IV: every column balanced, every pair of columns orthogonal, and the
+    # 16 runs distinct corners of the box.
+    signs = corners() * 2 - 1
+    assert signs.shape == (16, 7) and set(np.unique(signs)) == {-1.0, 1.0}
+    np.testing.assert_array_equal(signs.sum(axis=0), 0)
+    np.testing.assert_array_equal(signs.T @ signs, 16 * np.eye(7))
+    assert len({tuple(r) for r in signs}) == 16
+
+
+def test_space_filling_is_a_latin_hypercube_beside_the_corners():
+    muscles = space_filling(48, seed=3)
+    assert list(muscles["origin"]).count("corner") == 16
+    lhs = muscles[muscles["origin"] == "lhs"]
+    for name in MUSCLE_PARAMETERS:
+        lo, hi = BOX[name]
+        assert muscles[name].between(lo, hi).all()
+        # one point in each of the 32 strata of every input (rounding to 6 digits aside)
+        strata = np.floor((lhs[name] - lo) / (hi - lo) * 32 - 1e-6).clip(0, 31)
+        assert sorted(strata.astype(int)) == list(range(32)), name
+    np.testing.assert_array_equal(space_filling(48, seed=3)[list(MUSCLE_PARAMETERS)],
+                                  muscles[list(MUSCLE_PARAMETERS)])  # seeded
+
+
+def test_small_budget_has_no_corners():
+    assert set(space_filling(8)["origin"]) == {"lhs"}
+
+
+def test_random_muscles_follow_their_seed():
+    a, b = random_muscles(5, seed=1), random_muscles(5, seed=1)
+    np.testing.assert_array_equal(a[list(MUSCLE_PARAMETERS)], b[list(MUSCLE_PARAMETERS)])
+    assert not np.allclose(random_muscles(5, seed=2)["D0_mm"], a["D0_mm"])
+
+
+@pytest.mark.skipif(not DESIGN_DATASET.is_file(), reason="no shipped design")
+def test_shipped_design_is_what_the_sidecar_says():
+    data = load_training_data(DESIGN_DATASET)
+    info = data.provenance
+    assert info["fe_budget_muscles"] == 96 and info["mesh"] == "fine"
+    assert data.inputs == ("pressure_bar", *MUSCLE_PARAMETERS)
+    # the muscles of the seeded design, every one the FE solved (rows of failed points are
+    # dropped; the sidecar lists such muscles)
+    failed = info["muscles_with_failed_points"]
+    assert data.n_muscles == 96 - len(failed)
+    expected = space_filling(96, info["design"]["seed"])
+    first = np.array([np.flatnonzero(data.groups == g)[0] for g in np.unique(data.groups)])
+    got = {tuple(r) for r in data.X[first, 1:]}
+    want = {tuple(r) for r in expected[list(MUSCLE_PARAMETERS)].to_numpy()}
+    assert got <= want and len(want - got) == len(failed)
