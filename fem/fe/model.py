@@ -131,7 +131,7 @@ class HalfMuscle:
         self.braid = Term(*braid_term, red) if braid else None
         terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
         self.assembler = Assembler(terms, self.n)
-        self._last_assembly = None
+        self._reactions: dict[tuple[float, bytes], float] = {}
 
     def rest_state(self) -> np.ndarray:
         """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
@@ -143,14 +143,13 @@ class HalfMuscle:
     def assemble(self, y, pressure_MPa):
         """Residual ``dPi/dy``, tangent ``d2Pi/dy2`` (CSR) and ``dV/dy`` at the reduced state.
 
-        The last result is kept: the cap force of a converged state is read from the assembly
-        Newton made to check it (callers must not modify the arrays returned).
+        The cap reaction (the last residual entry) of every state assembled is kept, so the
+        force of a converged state is read from the assembly Newton made to check it.
         """
-        last = self._last_assembly
-        if last is not None and last[0] == pressure_MPa and np.array_equal(last[1], y):
-            return last[2]
         result = self._assemble(y, pressure_MPa)
-        self._last_assembly = (pressure_MPa, np.array(y), result)
+        if len(self._reactions) > 256:  # a sweep needs a few dozen; bound the memory
+            self._reactions.clear()
+        self._reactions[pressure_MPa, np.asarray(y, dtype=float).tobytes()] = float(result[0][-1])
         return result
 
     def _assemble(self, y, pressure_MPa):
@@ -284,7 +283,10 @@ class HalfMuscle:
 
     def cap_force(self, y, pressure_MPa: float) -> float:
         """Reaction on the cap, ``dPi/dU`` [N]: the muscle's pulling force (see module doc)."""
-        return float(self.assemble(y, pressure_MPa)[0][-1])
+        key = (pressure_MPa, np.asarray(y, dtype=float).tobytes())
+        if key not in self._reactions:
+            self.assemble(y, pressure_MPa)
+        return self._reactions[key]
 
 
 def check_sleeve(braid: str) -> str:
