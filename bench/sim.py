@@ -202,6 +202,7 @@ class SimBackend:
         self._timeouts_left = self._faults.read_timeouts
         self._ao_failed = False
         self._stalled = False
+        self._overflow: BufferOverflow | None = None  # found while writing, raised at the next read
 
     @property
     def _index(self) -> int:
@@ -260,6 +261,9 @@ class SimBackend:
         if self._started_at is None:
             raise RuntimeError("read before start")
         faults = self._faults
+        if self._overflow is not None:
+            exc, self._overflow = self._overflow, None
+            raise exc
         if self._due(faults.disconnect_at_s):
             raise DaqDisconnected(f"simulated disconnect at {faults.disconnect_at_s:g} s")
         if self._due(faults.read_timeout_at_s) and self._timeouts_left > 0:
@@ -288,7 +292,11 @@ class SimBackend:
         if self._started_at is None:
             return 0
         if self.clock == "real":
-            self._catch_up()
+            try:
+                self._catch_up()
+            except BufferOverflow as exc:
+                self._overflow = exc
+                return 1  # something to read: the read reports the overflow
         return len(self._fifo)
 
     def _wait_for(self, n_samples: int, timeout_s: float) -> None:
@@ -319,7 +327,10 @@ class SimBackend:
         if not self.config.regulator.electronic:
             return
         if self.clock == "real" and self._started_at is not None:
-            self._catch_up()
+            try:  # the command lands at the hardware's present, not at the reader's
+                self._catch_up()
+            except BufferOverflow as exc:  # the reader learns it at its next read, as on NI
+                self._overflow = exc
         self.bench.set_command_volts(volts)
         self.commands.append((self._head, float(volts)))
 

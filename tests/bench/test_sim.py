@@ -146,3 +146,37 @@ def test_slack_muscle_does_not_push(config):
     bench.set_command_volts(0.0)
     volts = run_for(bench, 30.0)[:, 0]
     assert bench.relaxed_N > 1.0 and volts.min() == 0.0
+
+
+def test_real_clock_overflow_found_while_writing_is_reported_by_the_next_read(config):
+    # the reader fell 2 s behind a 1 s buffer; the command write must not fail for it
+    import time
+
+    from bench.backend import BufferOverflow
+
+    c = config.replace(sim={"buffer_s": 1.0})
+    sim = SimBackend(c, clock="real")
+    sim.open()
+    sim.start()
+    sim._started_at -= 2.0  # as if the reader had stalled for 2 s
+    sim.write_command(2.5)  # goes through
+    assert sim.commands[-1][1] == 2.5 and sim.commands[-1][0] >= 20
+    with pytest.raises(BufferOverflow):
+        sim.read(1, 1.0)
+    assert sim.recover() >= 20
+    start = time.monotonic()
+    assert sim.read(1, 1.0).first_index >= 20 and time.monotonic() - start < 0.5
+
+
+def test_the_default_simulated_muscle_is_the_fe_model_and_says_so(config):
+    # issue 15: a "measurement" from a closed form made that closed form win by construction
+    info = SimBackend(config).open()
+    physics = info.extra["sim"]["physics"]
+    assert config.sim.model == "axisym" and physics["force_model"] == "axisym"
+    assert physics["force_model_params"]["mesh"] == "medium"
+    assert "braid friction" in physics["summary"] and "creep" in physics["summary"]
+    # and it is not the thick-wall closed form: 4.3 % apart at 2 bar for the prototype (eps 0)
+    p, f = static_force_table(config)
+    m = config.muscle
+    thick = make_model("thickwall", L0_mm=m.L0_mm).predict(2.0, m.D0_mm, m.t0_mm, m.eps)
+    assert abs(np.interp(2.0, p, f) / float(thick.force_N) - 1) > 0.02
