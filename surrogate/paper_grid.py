@@ -125,10 +125,7 @@ def markdown_grid(table: pd.DataFrame) -> str:
 
 def plot_grid(table: pd.DataFrame, path) -> None:
     """Held-out RMSE per configuration (median and 10-90 % bar) per variant, paper's as dots."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    import matplotlib.pyplot as plt  # the backend is the caller's (mkm.cli.main picks Agg headless)
 
     fig, ax = plt.subplots(figsize=(10, 4.2))
     offsets = {"paper": -0.15, "standardised": 0.15}

@@ -115,8 +115,9 @@ def compare_on_test_muscles(model: ForceModel, reference: pd.DataFrame):
 def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE) -> pd.DataFrame:
     """Table 3 and Figure 6 of the paper for ``models``, against our FE reference.
 
-    Writes ``test_muscles.csv`` (summary), ``test_muscles_points.csv``, ``test_muscles.md``
-    (with the paper's figures for I-III beside ours) and ``test_muscles.png`` to ``out_dir``.
+    Writes ``test_muscles.csv`` (summary), ``test_muscles_points.csv`` and ``test_muscles.md``
+    (with the paper's figures for I-III beside ours) to ``out_dir``; Figure 6 is drawn from
+    the points by the application (``mkm surrogate test``, :func:`mkm.figures.surrogate_fe_figure`).
     """
     reference = read_fe_reference(reference_path)
     out_dir = Path(out_dir)
@@ -131,8 +132,6 @@ def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE
     summary.to_csv(out_dir / "test_muscles.csv", index=False, float_format="%.6g")
     points.to_csv(out_dir / "test_muscles_points.csv", index=False, float_format="%.6g")
     (out_dir / "test_muscles.md").write_text(markdown_table(summary), encoding="utf-8")
-    fe_model = read_prediction_header(reference_path).get("model", "FE")
-    plot_test_muscles(points, out_dir / "test_muscles.png", f"FE ({fe_model})")
     return summary
 
 
@@ -153,34 +152,3 @@ def markdown_table(summary: pd.DataFrame) -> str:
                      + f" | {g['rmse_N'].max():.2f} | {g['max_abs_error_N'].max():.2f} | "
                      f"{g['seconds_all_points'].iloc[0]:.2g} |")
     return "\n".join(lines) + "\n"
-
-
-def plot_test_muscles(points: pd.DataFrame, path, reference_label: str = "FE") -> None:
-    """Figure 6 of the paper: force against pressure per muscle (FE dots, surrogate lines),
-    and Err% below."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    muscles = list(dict.fromkeys(points["muscle"]))
-    fig, axes = plt.subplots(2, len(muscles), figsize=(3.2 * len(muscles), 6), sharex=True,
-                             squeeze=False)
-    for j, muscle in enumerate(muscles):
-        D0, t0, eps = TEST_MUSCLES[muscle]
-        first = points[(points["muscle"] == muscle)]
-        fe = first.drop_duplicates("pressure_bar")
-        axes[0, j].plot(fe["pressure_bar"], fe["force_fe_N"], "ko", label=reference_label)
-        for model, group in first.groupby("model", sort=False):
-            axes[0, j].plot(group["pressure_bar"], group["force_pred_N"], "-", label=model)
-            axes[1, j].plot(group["pressure_bar"], group["err_pct"], ".-", label=model)
-        axes[0, j].set_title(f"{muscle}: D0 {D0:g} mm, t0 {t0:g} mm, eps {100 * eps:g} %",
-                             fontsize=8)
-        axes[1, j].axhline(0.0, color="0.6", lw=0.8)
-        axes[1, j].set_xlabel("pressure P [bar]")
-    axes[0, 0].set_ylabel("force F [N]")
-    axes[1, 0].set_ylabel("Err% (Equation 7) [%]")
-    axes[0, 0].legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)

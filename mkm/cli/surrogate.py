@@ -265,12 +265,30 @@ def _test(args) -> int:
     models = {_label(path): _load(path, args.accept_mismatch) for path in paths}
     models.update({kind: train_surrogate(kind, _dataset(args), splits=0)
                    for kind in args.kind or []})
-    summary = run_test(models, args.out, args.reference or FE_REFERENCE)
+    reference = args.reference or FE_REFERENCE
+    summary = run_test(models, args.out, reference)
+    _figure6(Path(args.out), reference)
     print(summary.to_string(index=False, float_format=lambda v: f"{v:.3g}"))
     summary_line("surrogate test", f"{len(models)} model(s), worst |Err%| "
                  f"{summary['max_abs_err_pct'].max():.2f} %; wrote {args.out}/test_muscles.csv, "
                  "test_muscles.md, test_muscles.png")
     return 0
+
+
+def _figure6(out: Path, reference) -> None:
+    """The paper's Figure 6 from run_test's points: the one Figure-6 plot of the project."""
+    import pandas as pd
+
+    from fem.records import read_prediction_header
+    from mkm.figures import surrogate_fe_figure
+    from mkm.html import save_figure
+
+    points = pd.read_csv(out / "test_muscles_points.csv")
+    points = points.rename(columns={"force_pred_N": "force_N"})
+    points["err_pct"] = points["err_pct"].where(points["valid"])
+    fe_model = read_prediction_header(reference).get("model", "FE")
+    save_figure(surrogate_fe_figure(points, f"surrogates against our FE model ({fe_model}): "
+                                    "the paper's Figure 6"), out / "test_muscles.png")
 
 
 def _reference(args) -> int:

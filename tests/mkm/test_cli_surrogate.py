@@ -44,6 +44,7 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
                  "--out", str(tmp_path / "test")]) == 0
     summary = pd.read_csv(tmp_path / "test" / "test_muscles.csv")
     assert len(summary) == 5 and summary["max_abs_err_pct"].max() < 1e-3
+    assert (tmp_path / "test" / "test_muscles.png").stat().st_size > 0  # mkm.figures' Figure 6
 
 
 def test_bad_kind_is_a_one_line_error(thickwall_dataset, capsys):

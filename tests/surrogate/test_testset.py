@@ -46,7 +46,7 @@ def test_model_against_itself_has_zero_error(thickwall_reference, tmp_path):
     # the CSV keeps 6 significant digits: up to 5e-6 relative per force, 1e-3 % is that bound
     assert summary["max_abs_err_pct"].max() < 1e-3
     summary = run_test({"thickwall": model}, tmp_path, thickwall_reference)
-    for name in ("test_muscles.csv", "test_muscles.md", "test_muscles.png"):
+    for name in ("test_muscles.csv", "test_muscles_points.csv", "test_muscles.md"):
         assert (tmp_path / name).stat().st_size > 0
     table = (tmp_path / "test_muscles.md").read_text()
     assert "| paper, 3 x 100 ReLU (its FE) | 6.55 | 7.92 | 9.34 |" in table
