@@ -7,7 +7,6 @@ saying which run it was.
 
 from __future__ import annotations
 
-import sys
 import time
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -17,7 +16,7 @@ from scipy import stats
 
 from bench.backend import Backend, BenchError, DeviceInfo
 from bench.config import BenchConfig
-from bench.run import make_backend, make_operator
+from bench.run import make_backend, make_operator, notify_stderr
 from bench.sequence import estimate_duration_s, plan_steps, validate_tare
 from bench.sim import STANDARD_GRAVITY
 from bench.unvented import vent_unvented
@@ -26,12 +25,8 @@ VENTED_BELOW_BAR = 0.05  # `mkm vent` waits for the monitor to read below this
 VENT_WAIT_S = 10.0
 
 
-def _stderr(message: str) -> None:
-    print(f"mkm: {message}", file=sys.stderr, flush=True)
-
-
 @contextmanager
-def session(backend: Backend, notify=_stderr) -> Iterator[DeviceInfo]:
+def session(backend: Backend, notify=notify_stderr) -> Iterator[DeviceInfo]:
     """Open ``backend`` (which writes the vent command), vent and report a bench a dead run left
     pressurised, and close (vent again) on exit."""
     info = backend.open()

@@ -40,7 +40,8 @@ from bench.worker import Acquisition, Stop
 EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS = 0, 1, 2, 3
 
 
-def _stderr(message: str) -> None:
+def notify_stderr(message: str) -> None:
+    """One line for the operator on stderr (the default ``notify`` of runs and procedures)."""
     print(f"mkm: {message}", file=sys.stderr, flush=True)
 
 
@@ -127,7 +128,7 @@ class BenchRun:
 
     def __init__(self, config: BenchConfig, backend: Backend, out_root: str | Path,
                  operator: Operator | None = None, progress: bool = False, plot: bool = False,
-                 handle_signals: bool = True, notify=_stderr):
+                 handle_signals: bool = True, notify=notify_stderr):
         if not config.regulator.electronic and operator is None:
             raise ValueError("regulator.kind='manual' needs an operator to set the pressure")
         self.config = config
@@ -296,7 +297,7 @@ def make_operator(backend: Backend) -> Operator:
 
 def acquire(config: BenchConfig, backend: str = "sim", clock: str = "virtual",
             out_root: str | Path = "data/experimental", progress: bool = False,
-            plot: bool = False, notify=_stderr) -> RunResult:
+            plot: bool = False, notify=notify_stderr) -> RunResult:
     """Record one run of ``config`` on the ``backend`` ("sim" or "ni") under ``out_root``."""
     check_out_root(out_root)  # before the device is opened
     device = make_backend(config, backend, clock)
