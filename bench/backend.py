@@ -105,7 +105,13 @@ class Block:
 
 
 class Backend(Protocol):
-    """Transport to the bench: one AI task with every input, one AO command, a hardware clock."""
+    """Transport to the bench: one AI task with every input, one AO command, a hardware clock.
+
+    ``bench_key`` names the physical bench (backend and device, ``ni-Dev1``) for the markers of
+    :mod:`bench.unvented`.
+    """
+
+    bench_key: str
 
     def open(self) -> DeviceInfo:
         """Reserve the device, create the tasks (not started) and write the vent command."""
