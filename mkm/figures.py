@@ -114,7 +114,7 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
             for ax, column in ((ax_e, "err_pct"), (ax_r, "residual_N")):
                 ax.plot(sweep["pressure_bar"], sweep[column].where(sweep["valid"]), style,
                         marker="o" if direction == "up" else "s", markersize=4, color=c,
-                        markerfacecolor=face)
+                        markerfacecolor=face, linewidth=widths[model])
         for ax in (ax_e, ax_r):
             _mark_invalid(ax, rows.loc[~rows["valid"], "pressure_bar"].unique(), c)
     ax_f.set_title("force against pressure", pad=14)  # room for the invalid strip
