@@ -43,10 +43,10 @@ ENTRIES: dict[str, Entry] = {
     "axisym": Entry("axisymmetric finite-element model (scikit-fem), caps and braid included",
                     "FE model (axisymmetric)", "FE",
                     {"mesh": "coarse, medium (default) or fine",
-                     "braid": "bonded (default: fibres glued to the rubber) or sliding "
-                              "(frictionless sleeve), each with its own calibrated theta0",
                      "theta0_deg": "braid angle at rest [deg]; default calibrated",
-                     "L0_mm": "length at rest [mm]; default 282"}),
+                     "L0_mm": "length at rest [mm]; default 282",
+                     "braid": "bonded (default: fibres glued to the rubber) or sliding "
+                              "(frictionless sleeve), each with its own calibrated theta0"}),
     "surrogate": Entry("scikit-learn surrogate trained on the FE design (or another FE "
                        "dataset); refuses muscle parameters its training did not cover",
                        "Surrogate", "surrogate",
