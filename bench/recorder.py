@@ -8,7 +8,6 @@ never raises, so a full disk cannot hide the outcome of the vent: it returns wha
 
 from __future__ import annotations
 
-import socket
 from pathlib import Path
 
 from bench.backend import DeviceInfo
@@ -37,12 +36,7 @@ class Recorder:
         m = config.muscle
         prov = provenance()
         settings = config.as_dict()
-        try:
-            process = ProcessIdentity.current()
-        except Exception:  # psutil cannot read this process (sandbox): the pid alone then
-            import os
-
-            process = ProcessIdentity(os.getpid(), socket.gethostname())
+        process = ProcessIdentity.current()
         self.meta = RunMeta(
             muscle=MuscleMeta(m.id, m.D0_mm, m.t0_mm, m.L0_mm, m.eps),
             hardware=info.as_dict(),

@@ -125,10 +125,14 @@ class ProcessIdentity:
 
     @classmethod
     def current(cls) -> ProcessIdentity:
+        """This process (the pid alone if the system does not say when it started)."""
         import psutil
 
-        return cls(os.getpid(), socket.gethostname(), psutil.Process().create_time(),
-                   psutil.boot_time())
+        try:
+            return cls(os.getpid(), socket.gethostname(), psutil.Process().create_time(),
+                       psutil.boot_time())
+        except (psutil.Error, OSError):
+            return cls(os.getpid(), socket.gethostname())
 
     def alive(self) -> bool:
         """Whether this process still runs (False when it runs on another host: unknowable)."""

@@ -64,7 +64,7 @@ class BenchLease:
         self.marker = Marker(bench_key, str(run_path), started_utc, asdict(me))
         folder = _folder(bench_key)
         folder.mkdir(parents=True, exist_ok=True)
-        self.path = folder / f"{me.pid}-{int(me.started_unix_s * 1000)}.json"
+        self.path = folder / f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}.json"
         self._write()
 
     def _write(self) -> None:
