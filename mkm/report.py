@@ -442,6 +442,11 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                      "kept, scored and marked settled = false in the CSV.</p>")
     if r.run.problems:
         parts.append('<p class="note">Loader: ' + esc("; ".join(r.run.problems)) + "</p>")
+    for dead in getattr(meta, "unvented_before", None) or []:
+        parts.append(f'<p class="note">Before this run, the bench was found left pressurised '
+                     f"by run {esc(dead.get('run_path'))} (started {esc(dead.get('started_utc'))},"
+                     f" last commanded {esc(dead.get('last_command_bar'))} bar): this run "
+                     "vented it first.</p>")
     parts.append("</section>")
     if steps.empty:
         return "".join(parts) + ('<p class="note">No step was kept: nothing to compare.</p>'
