@@ -46,7 +46,8 @@ def register(subparsers) -> None:
                    help="largest working pressure [bar] (default: the requirements' largest)")
     p.add_argument("--objective", choices=OBJECTIVES,
                    help="ranking of the designs (default min-outer-diameter)")
-    p.add_argument("--top", type=int, help="designs verified with the FE model (default 5)")
+    p.add_argument("--top", type=int, metavar="N",
+                   help="designs verified with the FE model (default 5)")
     p.add_argument("--mesh", choices=("coarse", "medium", "fine"), default="medium",
                    help="FE mesh of the verification (default: %(default)s, the converged one)")
     p.add_argument("--surrogate", default="surrogate", metavar="SPEC",
