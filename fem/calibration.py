@@ -291,10 +291,9 @@ def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
 
 
 def default_target(model) -> str:
-    """``slope`` for a model with a threshold pressure (it reports one), ``force`` otherwise
-    (Equation 2: through the origin, where slope and force fits coincide)."""
-    pred = model.predict([0.0, 1.0], 35.0, 2.5, 0.05)
-    return "slope" if "threshold_pressure_bar" in pred.extras else "force"
+    """``slope`` for a model with a threshold pressure (``model.has_threshold``), ``force``
+    otherwise (Equation 2: through the origin, where slope and force fits coincide)."""
+    return "slope" if getattr(model, "has_threshold", False) else "force"
 
 
 def calibration_entry(fit: dict, model, reference_name: str, reference_sha256: str | None,

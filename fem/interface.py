@@ -122,6 +122,9 @@ class ForceModel:
 
     name: ClassVar[str] = "abstract"
     domain: Domain = Domain()
+    #: The model has a threshold pressure (a wall to stretch before the held muscle pulls):
+    #: its theta0 is calibrated on the force slope by default (fem.calibration)
+    has_threshold: ClassVar[bool] = False
 
     def params(self) -> dict[str, Any]:
         return {}

@@ -186,6 +186,7 @@ class ThickWall(CalibratedTheta0, ForceModel):
     """
 
     name = "thickwall"
+    has_threshold = True
     domain = Domain()
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,

@@ -421,6 +421,7 @@ class Axisym(CalibratedTheta0, ForceModel):
     """
 
     name = "axisym"
+    has_threshold = True
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
                  mesh: str = "medium", material: MooneyRivlin = SILASTIC_S,

@@ -37,3 +37,14 @@ def test_cheap_rungs_do_not_import_the_fe_machinery():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip()
     assert out == "False"
+
+
+def test_rungs_with_a_threshold_say_so():
+    # has_threshold picks the default calibration target: it must match what the rung reports
+    for name in LADDER:
+        model = make_model(name, theta0_deg=32.0, mesh="coarse" if name == "axisym" else None)
+        pred = model.predict([0.0, 2.5], 35.0, 2.5, 0.05)
+        reports = "threshold_pressure_bar" in pred.extras
+        assert model.has_threshold == reports
+        if reports:
+            assert 0.1 < pred.extras["threshold_pressure_bar"][0] < 0.2  # muscle I: 0.14 bar
