@@ -344,10 +344,6 @@ def store_calibration(path: str | os.PathLike, key: str, entry: dict) -> Path:
     return path
 
 
-def reference_sha256(path) -> str | None:
-    return file_sha256(path) if Path(path).is_file() else None
-
-
 def calibration_provenance(model) -> dict:
     """Which calibration gave ``model`` its theta0, for the provenance of what it computes.
 
