@@ -495,8 +495,10 @@ def _sim_note(sim: dict, specs) -> str:
 
 
 def _signals(r: _Run, out: Path) -> str:
-    """Pressure and force against time, read in bounded memory."""
-    bins = _aggregate(r.run.path)
+    """Pressure and force against time, read in bounded memory (time bins of samples.csv)."""
+    from bench.storage import aggregate_samples
+
+    bins = aggregate_samples(r.run.path)
     if bins.empty:
         return '<p class="note">No samples recorded: no time traces.</p>'
     bins.to_csv(out / f"run{r.k}_signals.csv", index=False, float_format="%.6g")
@@ -521,12 +523,6 @@ def _signals(r: _Run, out: Path) -> str:
                        f"run{r.k}_signals.csv); per step the settling time (yellow, not "
                        "averaged) and the averaging window whose mean ± std is the step's "
                        f"measurement (green).{extra} " + provenance_links(r.keys[:1]))
-
-
-def _aggregate(path) -> pd.DataFrame:
-    from bench.storage import aggregate_samples
-
-    return aggregate_samples(path)
 
 
 def _domain_note(scored: pd.DataFrame, tolerance_bar: float, names: dict) -> str:
