@@ -519,10 +519,12 @@ def _signals(r: _Run, out: Path) -> str:
                        out / f"run{r.k}_signals.png")
     extra = (f" {len(gaps)} gap(s) in the record (red)." if gaps else " No gap in the record.")
     extra += "".join(f" Event: {esc(label)} at {when:.1f} s (red line)." for when, label in events)
-    return figure_html(path, "The signals: mean per time bin with its min-max band (file "
-                       f"run{r.k}_signals.csv); per step the settling time (yellow, not "
-                       "averaged) and the averaging window whose mean ± std is the step's "
-                       f"measurement (green).{extra} " + provenance_links(r.keys[:1]))
+    return (f'<div id="signals-{r.k}">'
+            + figure_html(path, "The signals: mean per time bin with its min-max band (file "
+                          f"run{r.k}_signals.csv); per step the settling time (yellow, not "
+                          "averaged) and the averaging window whose mean ± std is the step's "
+                          f"measurement (green).{extra} " + provenance_links(r.keys[:1]))
+            + "</div>")
 
 
 def _domain_note(scored: pd.DataFrame, tolerance_bar: float, names: dict) -> str:

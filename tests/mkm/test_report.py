@@ -290,10 +290,11 @@ def test_report_renders_in_headless_chromium(report, tmp_path):
         width, height = map(int, size.split("x"))
         assert width > 500 and height > 300
     keep = os.environ.get("MKM_SCREENSHOTS")
-    for anchor in ("summary", "overlay", "run-1", "speed"):
+    for anchor in ("summary", "overlay", "signals-1", "speed"):
         # a copy of the page that starts at the section: the viewport shows it
         part = path.parent / f"shot-{anchor}.html"
-        start = html.index(f'<h2 id="{anchor}"')
+        start = html.index(f'id="{anchor}"')
+        start = html.rindex("<", 0, start)
         part.write_text(html[:html.index("<h1>")] + html[start:], encoding="utf-8")
         shot = tmp_path / f"report-{anchor}.png"
         subprocess.run([CHROMIUM, *flags, "--window-size=1280,1400", f"--screenshot={shot}",
