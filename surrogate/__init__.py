@@ -1,8 +1,10 @@
-"""Surrogates of the FE force model: scikit-learn estimators trained on the FE dataset.
+"""Surrogates of the FE force model: scikit-learn estimators trained on FE datasets.
 
-``surrogate.default_model()`` is the default (``best``) surrogate as a fitted
-``fem.interface.ForceModel``, trained on ``data/mkm_dataset.csv`` on first use and cached;
-``surrogate.io.load_model(path)`` loads one saved by ``mkm surrogate train``.
+``surrogate.default_model(L0_mm=..., theta0_deg=..., C10_MPa=..., C01_MPa=...)`` is the default
+(``best``) surrogate as a fitted ``fem.interface.ForceModel``, trained on the shipped
+space-filling FE design (``data/mkm_design.csv``, :mod:`surrogate.design`) on first use and
+cached in the user's cache folder; ``surrogate.io.load_model(path)`` loads one saved by ``mkm
+surrogate train`` (JSON and arrays: loading runs no code from the file).
 """
 
 

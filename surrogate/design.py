@@ -36,6 +36,11 @@ from fem.records import package_file, provenance, write_atomic
 #: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).
 DESIGN_DATASET = package_file("surrogate", "data", "mkm_design.csv")
 
+#: Random muscles (seeds recorded in its sidecar) whose FE sweeps set the scale of the default
+#: surrogate's std (:meth:`surrogate.estimators.MuscleThresholdGP.calibrate_std`): drawn as the
+#: off-grid evaluation draws, never used to fit the forces.
+STD_CALIBRATION_SET = package_file("surrogate", "data", "mkm_std_calibration.csv")
+
 #: Parameters of a muscle, in the order of the design's columns.
 MUSCLE_PARAMETERS = ("D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 
@@ -56,6 +61,9 @@ BOX: dict[str, tuple[float, float]] = {
 #: Pressures of each FE sweep [bar]: the box's 0-2.5 bar every 0.25 bar (the test pressures),
 #: plus 2.75 and 3 bar so that the slope of a muscle with a high threshold is still measured.
 DESIGN_PRESSURES = tuple(float(p) for p in np.round(np.arange(0.0, 3.001, 0.25), 2))
+
+#: Pressures of evaluation sweeps [bar]: the paper's test pressures, inside the box.
+EVAL_PRESSURES = tuple(float(p) for p in np.round(np.arange(0.0, 2.501, 0.25), 2))
 
 N_CORNERS = 16  # the 2^(7-3) fractional factorial
 MIN_MUSCLES_WITH_CORNERS = 2 * N_CORNERS  # below: corners would be most of the budget
@@ -133,10 +141,52 @@ def fe_sweeps(muscles: pd.DataFrame, mesh: str = "fine", pressures=DESIGN_PRESSU
     return frame, done
 
 
+def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
+                     candidates: int = 2000) -> pd.DataFrame:
+    """``n_muscles`` muscles where a fitted :class:`~surrogate.estimators.MuscleThresholdGP` is
+    least sure of the force at the top of the box's pressure range, chosen greedily among
+    ``candidates`` random muscles: each pick conditions both processes on it (their posterior
+    covariance, rank-one update with the fitted noise), so picks spread out instead of piling
+    up in one corner."""
+    pool = random_muscles(candidates, seed)
+    P_top = BOX["pressure_bar"][1]
+    values = {"pressure_bar": np.full(len(pool), P_top), **{p: pool[p].to_numpy()
+                                                           for p in MUSCLE_PARAMETERS}}
+    X = np.column_stack([values[name] for name in estimator.inputs])
+    v, z = estimator._muscle(X)
+    zs = (z - estimator.z_mean_) / estimator.z_scale_
+    A, gain_A, Pstar, gain_P = estimator._from_logk(v, 0.0 * zs[:, 0], np.ones(len(zs)),
+                                                    0.0 * zs[:, 0], np.ones(len(zs)))
+    # the force's relative sensitivity to each process's log k at the top pressure
+    reach = np.maximum(P_top - Pstar, 1e-3)
+    weights = [np.where(A > 0, gain_A / np.maximum(A, 1e-9), 0.0), gain_P / reach]
+    covariances, noises = [], []
+    for gp in (estimator.slope_gp_, estimator.threshold_gp_):
+        kernel = gp.kernel_.k1  # without the white noise: covariance between muscles
+        K_star = kernel(zs, gp.X_train_)
+        V = np.linalg.solve(gp.L_, K_star.T)
+        covariances.append((kernel(zs) - V.T @ V) * gp._y_train_std ** 2)
+        noises.append(gp.kernel_.k2.noise_level * gp._y_train_std ** 2)
+    chosen = []
+    for _ in range(int(n_muscles)):
+        score = sum(w**2 * np.diag(C) for w, C in zip(weights, covariances, strict=True))
+        score[chosen] = -np.inf
+        pick = int(np.argmax(score))
+        chosen.append(pick)
+        for C, noise in zip(covariances, noises, strict=True):
+            column = C[:, pick].copy()
+            C -= np.outer(column, column) / (column[pick] + noise)
+    picked = pool.iloc[chosen].reset_index(drop=True)
+    picked["origin"] = f"adaptive seed {seed}"
+    return picked
+
+
 def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
                  workers: int | None = None, cache_dir=DEFAULT_CACHE,
-                 progress: bool = True) -> tuple[pd.DataFrame, dict]:
-    """Compute the design of ``n_muscles`` FE sweeps and write ``out`` (CSV) and ``out.json``.
+                 progress: bool = True, adaptive: int = 0) -> tuple[pd.DataFrame, dict]:
+    """Compute the design of ``n_muscles`` FE sweeps and write ``out`` (CSV) and ``out.json``;
+    with ``adaptive``, that many more muscles where the default surrogate trained on the
+    first ones is least sure (:func:`adaptive_muscles`).
 
     The sidecar records the box, the seed, the budget, the muscles whose sweep failed (kept in
     the CSV with ``converged=False``; the loader leaves them out) and the FE provenance.
@@ -144,20 +194,53 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
     muscles = space_filling(n_muscles, seed)
     frame, done = fe_sweeps(muscles, mesh, workers=workers, cache_dir=cache_dir,
                             progress=progress, desc=f"FE design ({mesh} mesh)")
+    if adaptive:
+        from surrogate.estimators import make_estimator
+        from surrogate.train import quiet_fits
+        from surrogate.training_data import ALL_INPUTS
+
+        used = frame[frame["converged"]]
+        with quiet_fits():
+            estimator = make_estimator("muscle-gp", ALL_INPUTS).fit(
+                used[list(ALL_INPUTS)].to_numpy(), used["force_N"].to_numpy(),
+                threshold_pressure_bar=used["threshold_pressure_bar"].to_numpy())
+        muscles = pd.concat([muscles, adaptive_muscles(estimator, adaptive, seed)],
+                            ignore_index=True)
+        frame, done = fe_sweeps(muscles, mesh, workers=workers, cache_dir=cache_dir,
+                                progress=progress, desc=f"FE design + adaptive ({mesh} mesh)")
     frame["origin"] = muscles["origin"].to_numpy()[frame["muscle"].to_numpy()]
     failed = sorted(set(frame.loc[~frame["converged"], "muscle"].tolist()))
     info = {**provenance(),
             "what": "space-filling FE design of the default surrogate (surrogate.design)",
-            "design": {"muscles": int(n_muscles), "seed": int(seed),
+            "design": {"muscles": int(n_muscles), "seed": int(seed), "adaptive": int(adaptive),
                        "corners": int((muscles["origin"] == "corner").sum()),
                        "method": "2^(7-3) fractional factorial corners + scipy.stats.qmc "
                                  "LatinHypercube(optimization='random-cd')"},
             "box": {k: list(v) for k, v in BOX.items()},
             "pressure_bar": list(DESIGN_PRESSURES),
             "model": "axisym", "mesh": mesh, "model_version": done["model_version"],
-            "fe_budget_muscles": int(n_muscles), "jobs_computed": done["computed"],
+            "fe_budget_muscles": int(n_muscles + adaptive), "jobs_computed": done["computed"],
             "jobs_from_cache": done["cached"], "workers": done["workers"],
             "muscles_with_failed_points": [int(m) for m in failed]}
+    out = Path(out)
+    write_atomic(out, frame.to_csv(index=False, lineterminator="\n"))
+    write_atomic(out.with_suffix(".json"), json.dumps(info, indent=2, default=str) + "\n")
+    return frame, info
+
+
+def build_random_set(n_muscles: int, seeds, out, mesh: str = "fine",
+                     workers: int | None = None, cache_dir=DEFAULT_CACHE,
+                     progress: bool = True) -> tuple[pd.DataFrame, dict]:
+    """FE sweeps (:data:`EVAL_PRESSURES`) of ``n_muscles`` random muscles per seed of ``seeds``
+    (:func:`random_muscles`), written to ``out`` and ``out.json`` (seeds, box, provenance)."""
+    muscles = pd.concat([random_muscles(n_muscles, seed) for seed in seeds], ignore_index=True)
+    frame, done = fe_sweeps(muscles, mesh, EVAL_PRESSURES, workers=workers,
+                            cache_dir=cache_dir, progress=progress, desc="FE random muscles")
+    frame["origin"] = muscles["origin"].to_numpy()[frame["muscle"].to_numpy()]
+    info = {**provenance(), "what": "random muscles of the box (surrogate.design)",
+            "seeds": [int(s) for s in seeds], "muscles_per_seed": int(n_muscles),
+            "box": {k: list(v) for k, v in BOX.items()}, "pressure_bar": list(EVAL_PRESSURES),
+            "model": "axisym", "mesh": mesh, "model_version": done["model_version"]}
     out = Path(out)
     write_atomic(out, frame.to_csv(index=False, lineterminator="\n"))
     write_atomic(out.with_suffix(".json"), json.dumps(info, indent=2, default=str) + "\n")

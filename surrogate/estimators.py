@@ -312,6 +312,17 @@ def effective_eps_of_threshold(Pstar, D0_mm, t0_mm, theta0_deg, C10_MPa, C01_MPa
     return out
 
 
+def coverage_scale(error, var, floor) -> float:
+    """The ``c`` of ``std = sqrt(c^2 var + floor^2)`` whose 1 and 2 std bands hold closest to
+    68.27 and 95.45 % of ``|error|`` (least squares on the two fractions, ``c`` on a log grid
+    of 0.1-10)."""
+    scales = np.geomspace(0.1, 10.0, 401)
+    misfit = [(np.mean(error <= np.sqrt(c**2 * var + floor**2)) - 0.6827) ** 2
+              + (np.mean(error <= 2 * np.sqrt(c**2 * var + floor**2)) - 0.9545) ** 2
+              for c in scales]
+    return float(scales[int(np.argmin(misfit))])
+
+
 class MuscleThresholdGP(RegressorMixin, BaseEstimator):
     """``F = A max(0, P - P*)``: slope and threshold of the thick-wall closed form at effective
     shortenings learnt by Gaussian processes over the muscle parameters.
@@ -468,11 +479,22 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
         var, floor = var[rows], floor[rows]
         informative = (error > 0) | (var + floor**2 > 0)
         error, var, floor = error[informative], var[informative], floor[informative]
-        scales = np.geomspace(0.1, 10.0, 401)
-        misfit = [(np.mean(error <= np.sqrt(c**2 * var + floor**2)) - 0.6827) ** 2
-                  + (np.mean(error <= 2 * np.sqrt(c**2 * var + floor**2)) - 0.9545) ** 2
-                  for c in scales]
-        return float(scales[int(np.argmin(misfit))])
+        return coverage_scale(error, var, floor)
+
+    def calibrate_std(self, X, y):
+        """Set ``std_scale_`` from FE sweeps ``(X, y)`` of muscles the fit did not see (random
+        muscles of the box): the scale whose 1 and 2 std bands hold 68 and 95 % of their
+        points. Returns ``self``."""
+        check_is_fitted(self)
+        X = validate_data(self, X, reset=False)
+        A, s_A, Pstar, s_P = self._decompose(X)
+        force, var, floor = self._force_parts(X[:, 0], A, s_A, Pstar, s_P)
+        error = np.abs(np.asarray(y, dtype=float) - force)
+        informative = (error > 0) | (var + floor**2 > 0)
+        self.std_scale_ = coverage_scale(error[informative], var[informative],
+                                         floor[informative])
+        self.std_calibration_points_ = int(informative.sum())
+        return self
 
     def predict(self, X, return_std: bool = False):
         check_is_fitted(self)

@@ -19,13 +19,11 @@ import pandas as pd
 from fem.dataset.build import DEFAULT_CACHE
 from fem.paper import equation7_err_pct
 from fem.records import provenance
-from surrogate.design import MUSCLE_PARAMETERS, fe_sweeps, random_muscles
+from surrogate.design import EVAL_PRESSURES, MUSCLE_PARAMETERS, fe_sweeps, random_muscles
 from surrogate.model import OutOfDomainWarning, SurrogateForceModel
 from surrogate.training_data import PARAMETERS
 from surrogate.validation import coverage, rmse
 
-#: Pressures of the evaluation sweeps [bar]: the paper's test pressures.
-EVAL_PRESSURES = tuple(float(p) for p in np.round(np.arange(0.0, 2.501, 0.25), 2))
 OUTSIDE_MARGIN = 0.05  # a point outside the box: 5 % of the range beyond one of its ends
 
 

@@ -48,25 +48,47 @@ def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, splits: int = M
     resolved = BEST if kind == "best" else kind
     data = load_training_data(dataset)
     estimator = make_estimator(resolved, data.inputs, data.fixed, random_state=random_state)
+    calibration = std_calibration_set(estimator, data)
+    post_fit = (None if calibration is None
+                else lambda model: model.calibrate_std(calibration.X, calibration.y))
     bar = _bar(splits + 1, f"train {resolved}", progress)
     with quiet_fits(), threadpool_limits(limits=1), bar:
         in_box = (data.X[:, 0] >= data.box["pressure_bar"][0]) & (
             data.X[:, 0] <= data.box["pressure_bar"][1])
         held_out = (muscle_split_scores(estimator, data.X, data.y, data.groups,
                                         data.threshold_pressure_bar, splits, scored=in_box,
-                                        progress=bar.update)
+                                        post_fit=post_fit, progress=bar.update)
                     if splits else None)
         estimator.fit(data.X, data.y, **fit_params(estimator, data.threshold_pressure_bar))
+        if post_fit is not None:
+            post_fit(estimator)
         bar.update()
     metrics = {"muscle_held_out": None if held_out is None else held_out["summary"],
                "splits": splits, "split_method": "GroupShuffleSplit(test_size=0.2, "
                "random_state=0), one group per FE sweep (muscle)"}
     metadata = {"kind_requested": kind, "random_state": random_state,
                 "dataset": data.summary(), "metrics": metrics, "trained": provenance()}
+    if calibration is not None:
+        metadata["std_calibration"] = {
+            "path": calibration.path, "sha256": calibration.sha256,
+            "n_muscles": calibration.n_muscles, "seeds": calibration.provenance.get("seeds"),
+            "std_scale": float(estimator.std_scale_)}
     model = SurrogateForceModel(estimator, resolved, data.inputs, data.fixed, data.box,
                                 metadata)
     metrics["test_muscles"] = _test_muscle_metrics(model)
     return model
+
+
+def std_calibration_set(estimator, data):
+    """The shipped random muscles that scale the std of ``estimator`` (``None`` when it has no
+    std to scale, or is trained on other inputs: a surrogate of one length, angle and rubber
+    keeps the scale of its own training muscles)."""
+    from surrogate.design import STD_CALIBRATION_SET
+
+    if not hasattr(estimator, "calibrate_std") or not STD_CALIBRATION_SET.is_file():
+        return None
+    calibration = load_training_data(STD_CALIBRATION_SET)
+    return calibration if calibration.inputs == data.inputs else None
 
 
 def _bar(total: int, desc: str, progress: bool):

@@ -91,13 +91,14 @@ def muscle_splits(groups, n_splits: int = MUSCLE_SPLITS, seed: int = 0):
 
 def muscle_split_scores(estimator, X, y, groups, threshold_pressure_bar=None,
                         n_splits: int = MUSCLE_SPLITS, seed: int = 0, scored=None,
-                        progress=None) -> dict:
+                        post_fit=None, progress=None) -> dict:
     """Refit ``estimator`` on each muscle-held-out split and score it on the held-out muscles.
 
     ``scored``: rows that may be scored (default all; the rows inside the box, where a sweep
     goes beyond it to measure slopes). Returns ``{"splits": [scores per split], "summary":
     {score: summarise(...)}, "points": (y_true, y_pred, std) of every held-out point pooled}``;
     the coverage scores also hold ``pooled``, over every held-out point of every split.
+    ``post_fit``: called with each refit model (the std calibration of the trained model);
     ``progress``: called after each split (a progress bar's ``update``).
     """
     scored = np.ones(len(y), dtype=bool) if scored is None else np.asarray(scored, dtype=bool)
@@ -109,6 +110,8 @@ def muscle_split_scores(estimator, X, y, groups, threshold_pressure_bar=None,
         threshold = (None if threshold_pressure_bar is None
                      else threshold_pressure_bar[train])
         model.fit(X[train], y[train], **fit_params(model, threshold))
+        if post_fit is not None:
+            post_fit(model)
         fit_seconds = time.perf_counter() - start
         force, std = predict_with_std(model, X[test])
         rows.append({"split": k, "fit_seconds": fit_seconds, "n_test_muscles":

@@ -117,6 +117,9 @@ def register(subparsers) -> None:
     design.add_argument("--muscles", required=True, type=int,
                         help="FE budget: number of muscles (one FE sweep each)")
     design.add_argument("--seed", type=int, default=0, help="Latin hypercube seed (default 0)")
+    design.add_argument("--adaptive", type=int, default=0,
+                        help="then this many more muscles where the surrogate of the first is "
+                        "least sure (default 0)")
     design.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
                         help="FE mesh level (default fine, the converged one)")
     design.add_argument("--workers", type=int, help="local worker processes (default: cores)")
@@ -124,9 +127,13 @@ def register(subparsers) -> None:
                         help="job cache folder (default %(default)s)")
     design.add_argument("--out", default=str(default_out("surrogate-design", "mkm_design.csv")),
                         help="CSV to write, with a .json sidecar (default %(default)s)")
+    design.add_argument("--random-seeds",
+                        help="comma list of seeds: --muscles random muscles per seed instead "
+                        "of the space-filling design (the std calibration set)")
     design.add_argument("--update-shipped", action="store_true",
-                        help="write the shipped design surrogate/data/mkm_design.csv instead "
-                        "(what the default surrogate trains on)")
+                        help="write the shipped file instead: surrogate/data/mkm_design.csv "
+                        "(what the default surrogate trains on), or with --random-seeds "
+                        "surrogate/data/mkm_std_calibration.csv (what scales its std)")
     design.set_defaults(func=_design)
 
     evaluate = sub.add_parser(
@@ -303,14 +310,30 @@ def _reference(args) -> int:
 
 
 def _design(args) -> int:
-    from surrogate.design import DESIGN_DATASET, build_design
+    from surrogate.design import (
+        DESIGN_DATASET,
+        STD_CALIBRATION_SET,
+        build_design,
+        build_random_set,
+    )
 
     start = time.perf_counter()
+    if args.random_seeds:
+        seeds = [int(parse_number(v, "--random-seeds")) for v in args.random_seeds.split(",")]
+        out = STD_CALIBRATION_SET if args.update_shipped else Path(args.out)
+        frame, info = build_random_set(args.muscles, seeds, out, mesh=args.mesh,
+                                       workers=args.workers, cache_dir=args.cache,
+                                       progress=not args.no_progress)
+        summary_line("surrogate design", f"{args.muscles} random muscles x {len(seeds)} seeds in "
+                     f"{time.perf_counter() - start:.0f} s; wrote {out} and "
+                     f"{out.with_suffix('.json').name}")
+        return 0
     out = DESIGN_DATASET if args.update_shipped else Path(args.out)
     frame, info = build_design(args.muscles, out, seed=args.seed, mesh=args.mesh,
                                workers=args.workers, cache_dir=args.cache,
-                               progress=not args.no_progress)
-    summary_line("surrogate design", f"{args.muscles} muscles ({info['jobs_computed']} FE sweeps "
+                               progress=not args.no_progress, adaptive=args.adaptive)
+    summary_line("surrogate design", f"{args.muscles} + {args.adaptive} adaptive muscles "
+                 f"({info['jobs_computed']} FE sweeps "
                  f"computed, {info['jobs_from_cache']} from cache, "
                  f"{len(info['muscles_with_failed_points'])} with failed points) in "
                  f"{time.perf_counter() - start:.0f} s; wrote {out} and "

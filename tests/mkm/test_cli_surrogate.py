@@ -86,7 +86,8 @@ def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
     assert main(["surrogate", "design", "--muscles", "2", "--mesh", "coarse", "--workers", "1",
                  "--cache", str(tmp_path / "cache"), "--out", str(out), "--no-progress"]) == 0
     err = capsys.readouterr().err
-    assert err.startswith("mkm surrogate design: 2 muscles (2 FE sweeps computed, 0 from cache")
+    assert err.startswith("mkm surrogate design: 2 + 0 adaptive muscles (2 FE sweeps computed, "
+                          "0 from cache")
     table = pd.read_csv(out)
     assert table["muscle"].nunique() == 2 and len(table) == 2 * 13
     assert {"L0_mm", "theta0_deg", "C10_MPa", "C01_MPa", "threshold_pressure_bar"} <= set(

@@ -57,14 +57,38 @@ def test_random_muscles_follow_their_seed():
 def test_shipped_design_is_what_the_sidecar_says():
     data = load_training_data(DESIGN_DATASET)
     info = data.provenance
-    assert info["fe_budget_muscles"] == 96 and info["mesh"] == "fine"
+    n, extra = info["design"]["muscles"], info["design"]["adaptive"]
+    assert info["fe_budget_muscles"] == n + extra and info["mesh"] == "fine"
     assert data.inputs == ("pressure_bar", *MUSCLE_PARAMETERS)
-    # the muscles of the seeded design, every one the FE solved (rows of failed points are
-    # dropped; the sidecar lists such muscles)
+    # the muscles of the seeded space-filling design are all in, every one the FE solved
+    # (rows of failed points are dropped; the sidecar lists such muscles), then the adaptive
     failed = info["muscles_with_failed_points"]
-    assert data.n_muscles == 96 - len(failed)
-    expected = space_filling(96, info["design"]["seed"])
+    assert data.n_muscles == n + extra - len(failed)
+    expected = space_filling(n, info["design"]["seed"])
     first = np.array([np.flatnonzero(data.groups == g)[0] for g in np.unique(data.groups)])
     got = {tuple(r) for r in data.X[first, 1:]}
     want = {tuple(r) for r in expected[list(MUSCLE_PARAMETERS)].to_numpy()}
-    assert got <= want and len(want - got) == len(failed)
+    assert len(want - got) <= len(failed) and len(got - want) == extra - sum(
+        f >= n for f in failed)
+
+
+def test_adaptive_muscles_go_where_the_surrogate_is_unsure():
+    # Trained on the space-filling muscles only, the picks have a larger predictive std of the
+    # force at 2.5 bar than the candidates on average, and are distinct.
+    from surrogate.design import adaptive_muscles
+    from surrogate.estimators import make_estimator
+    from surrogate.training_data import ALL_INPUTS
+
+    data = load_training_data(DESIGN_DATASET)
+    estimator = make_estimator("muscle-gp", data.inputs).fit(
+        data.X, data.y, threshold_pressure_bar=data.threshold_pressure_bar)
+    picks = adaptive_muscles(estimator, 5, seed=1, candidates=300)
+    assert len(picks.drop_duplicates()) == 5
+    pool = random_muscles(300, 1)
+
+    def relative_std(muscles):
+        X = np.column_stack([np.full(len(muscles), 2.5)] + [muscles[p] for p in ALL_INPUTS[1:]])
+        force, std = estimator.predict(X, return_std=True)
+        return std / np.maximum(force, 1.0)
+
+    assert relative_std(picks).mean() > 2 * relative_std(pool).mean()

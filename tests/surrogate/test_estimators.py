@@ -179,3 +179,24 @@ def test_muscle_gp_posterior_is_scikit_learns(muscle_gp):
         # the variance is amplitude - |V|^2, a difference: 1e-5 relative is its round-off
         # with the inverse factor instead of a triangular solve
         np.testing.assert_allclose(fast_std, std, rtol=1e-5, atol=1e-12)
+
+
+def test_calibrate_std_matches_normal_coverage(muscle_gp):
+    # Forces off by independent normal errors of 3x the model's std: after calibrate_std on
+    # one such sample, 68 and 95 % of a second one lie within 1 and 2 std (to the sampling
+    # error of ~400 points, 5 %).
+    from sklearn.base import clone
+
+    from surrogate.validation import coverage
+
+    X, _ = synthetic_sweeps(40, seed=3)
+    model = clone(muscle_gp).fit(*synthetic_sweeps(40, seed=0))
+    force, std = model.predict(X, return_std=True)
+    rng = np.random.default_rng(4)
+    active = std > 0
+    X, force, std = X[active], force[active], std[active]
+    model.calibrate_std(X, force + 3.0 * std * rng.standard_normal(len(std)))
+    new_std = model.predict(X, return_std=True)[1]
+    error = 3.0 * std * rng.standard_normal(len(std))
+    assert coverage(error, new_std, 1.0) == pytest.approx(0.6827, abs=0.05)
+    assert coverage(error, new_std, 2.0) == pytest.approx(0.9545, abs=0.05)
