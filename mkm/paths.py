@@ -5,9 +5,10 @@
   the ``MKM_OUT`` environment variable), one subfolder per command: nothing lands among the
   project's shipped files, and the path is printed at the end of every command.
 - Caches (FE predictions, trained surrogates, dataset jobs) go under :func:`cache_root`, the
-  user's cache folder of the operating system (``platformdirs``: ``~/.cache/mkm-bench`` on
-  Linux, ``%LOCALAPPDATA%\\mkm-bench\\Cache`` on Windows), so a second run from any folder is
-  fast.
+  user's cache folder of the operating system (``platformdirs.user_cache_dir("mkm-bench")``:
+  ``~/.cache/mkm-bench`` on Linux, ``%LOCALAPPDATA%\\mkm-bench\\mkm-bench\\Cache`` on Windows),
+  the folder the surrogate package keeps its trained models in too (``surrogate.train``), so a
+  second run from any folder is fast.
 
 Replacing a file shipped inside a package (the study table, the FE dataset, the FE reference,
 the calibration) always takes an explicit flag of the command that writes it.

@@ -68,3 +68,10 @@ def test_demo_and_report_leave_the_shipped_files_alone(monkeypatch, tmp_path, ca
     assert again == Path("mkm-out") / "report" / runs[0].name / "report.html"
     assert (tmp_path / again).is_file()
     assert _shipped_hashes() == before
+
+
+def test_one_cache_folder_for_predictions_and_surrogates():
+    from mkm.prediction_cache import DEFAULT_CACHE_DIR
+    from surrogate.train import CACHE_DIR
+
+    assert DEFAULT_CACHE_DIR.parent == CACHE_DIR.parent == cache_root()
