@@ -100,3 +100,13 @@ def test_demo_and_report_run_from_an_empty_folder(fresh_env, tmp_path):
     assert len(summary) == 2 * 3  # runs x models
     # the top step (measured 2.5001 bar at most) is in the surrogate's domain: every point valid
     assert (summary["valid_points"] == summary["points"]).all()
+
+
+@pytest.mark.skipif(shutil.which("make") is None, reason="make is not installed")
+def test_make_demo_runs_mkm_demo():
+    """`make demo` is `mkm demo` (after the venv set-up), `make test` the checks of CI."""
+    done = _run(["make", "-n", "-B", "demo", "test"], cwd=ROOT)
+    lines = done.stdout.splitlines()
+    assert ".venv/bin/mkm demo" in lines
+    assert ".venv/bin/lint-imports" in lines
+    assert any(line.endswith("-m pytest -q") for line in lines)
