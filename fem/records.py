@@ -11,7 +11,9 @@ reports share, so they cannot drift apart:
   project module they import, read from the files (the same code gives the same version in every
   process and on every Dask worker), and of the package data files they read;
 - :func:`package_file`: a data file shipped inside a package, found through
-  ``importlib.resources`` (works from a wheel, from any working directory).
+  ``importlib.resources`` (works from a wheel, from any working directory);
+- :func:`user_cache`: the toolkit's folder in the user's cache (every cache of every package:
+  FE predictions, dataset jobs, trained surrogates), one subfolder each.
 """
 
 from __future__ import annotations
@@ -32,6 +34,7 @@ from pathlib import Path
 from typing import Any
 
 PROJECT_PACKAGES = ("fem", "bench", "surrogate", "mkm")
+APP_NAME = "mkm-bench"  # the distribution's name: the user folders of the toolkit
 RECORDED_LIBRARIES = ("mkm-bench", "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas")
 
 
@@ -53,6 +56,14 @@ def provenance() -> dict[str, Any]:
         except PackageNotFoundError:
             info["versions"][pkg] = "not installed"
     return info
+
+
+def user_cache(*parts: str) -> Path:
+    """``platformdirs.user_cache_dir("mkm-bench") / parts``: ``~/.cache/mkm-bench`` on Linux,
+    ``%LOCALAPPDATA%\\mkm-bench\\mkm-bench\\Cache`` on Windows (not created here)."""
+    import platformdirs
+
+    return Path(platformdirs.user_cache_dir(APP_NAME)).joinpath(*parts)
 
 
 def package_file(package: str, *parts: str) -> Path:

@@ -5,10 +5,10 @@
   the ``MKM_OUT`` environment variable), one subfolder per command: nothing lands among the
   project's shipped files, and the path is printed at the end of every command.
 - Caches (FE predictions, trained surrogates, dataset jobs) go under :func:`cache_root`, the
-  user's cache folder of the operating system (``platformdirs.user_cache_dir("mkm-bench")``:
+  user's cache folder of the operating system (:func:`fem.records.user_cache`:
   ``~/.cache/mkm-bench`` on Linux, ``%LOCALAPPDATA%\\mkm-bench\\mkm-bench\\Cache`` on Windows),
-  the folder the surrogate package keeps its trained models in too (``surrogate.train``), so a
-  second run from any folder is fast.
+  where the libraries keep theirs too (``surrogate.train``, ``fem.dataset.build``), so a second
+  run from any folder is fast.
 
 Replacing a file shipped inside a package (the study table, the FE dataset, the FE reference,
 the calibration) always takes an explicit flag of the command that writes it.
@@ -19,9 +19,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-import platformdirs
+from fem.records import user_cache
 
-APP_NAME = "mkm-bench"
 OUT_ENV = "MKM_OUT"
 DEFAULT_OUT_ROOT = "mkm-out"
 
@@ -38,7 +37,7 @@ def default_out(*parts: str) -> Path:
 
 def cache_root() -> Path:
     """The user's cache folder for this toolkit (created on first write, not here)."""
-    return Path(platformdirs.user_cache_dir(APP_NAME))
+    return user_cache()
 
 
 def default_cache(*parts: str) -> Path:

@@ -14,17 +14,16 @@ import warnings
 from contextlib import contextmanager, nullcontext
 from pathlib import Path
 
-import platformdirs
 from sklearn.exceptions import ConvergenceWarning
 from threadpoolctl import threadpool_limits
 
-from fem.records import file_sha256, provenance
+from fem.records import file_sha256, provenance, user_cache
 from surrogate.estimators import BEST, make_estimator
 from surrogate.model import SurrogateForceModel
 from surrogate.training_data import DEFAULT_DATASET, load_training_data
 from surrogate.validation import MUSCLE_SPLITS, fit_params, muscle_split_scores
 
-CACHE_DIR = Path(platformdirs.user_cache_dir("mkm-bench")) / "surrogate"
+CACHE_DIR = user_cache("surrogate")
 
 
 @contextmanager

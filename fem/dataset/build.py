@@ -27,10 +27,10 @@ import pandas as pd
 
 from fem.dataset.grid import Grid, load_grid
 from fem.ladder import LADDER, make_model
-from fem.records import provenance, source_version, write_atomic
+from fem.records import provenance, source_version, user_cache, write_atomic
 
 DEFAULT_OUT = Path("data/mkm_dataset.csv")
-DEFAULT_CACHE = Path(".cache/mkm-dataset")
+DEFAULT_CACHE = user_cache("dataset")  # one file per finished job, in the user's cache
 
 COLUMNS = {
     "pressure_bar": "gauge pressure [bar]",
