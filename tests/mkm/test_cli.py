@@ -188,3 +188,25 @@ def test_plot_without_a_display_says_so_and_records(monkeypatch, tmp_path, capsy
     assert code == 0, err
     assert "mkm: warning: --plot needs a display" in err
     assert Path(out.strip().splitlines()[-1]).is_dir()  # the run was recorded anyway
+
+
+def test_every_help_example_parses():
+    """The example in each subcommand's help is a command line mkm accepts."""
+    import re
+    import shlex
+
+    from mkm.cli import build_parser
+
+    examples = []
+    for name, sub in _subcommands(build_parser()):
+        text = f"{sub.description or ''} {sub.epilog or ''}"
+        examples += [(name, m.group(1).strip())
+                     for m in re.finditer(r"[Ee]xample:?\s*(mkm [^()\n;]*)", text)]
+    assert len(examples) >= 20
+    for name, example in examples:
+        try:
+            args = build_parser().parse_args(shlex.split(example)[1:])
+        except SystemExit as exc:
+            raise AssertionError(f"mkm {' '.join(name)}: its example {example!r} does not "
+                                 "parse") from exc
+        assert callable(args.func)
