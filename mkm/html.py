@@ -35,14 +35,6 @@ figure,table,.run-head{page-break-inside:avoid}pre{font-size:7pt}}
 """
 
 
-def flatten(value, prefix: str = "") -> str:
-    """``a.b = 1.23, a.c = x`` from nested metadata, numbers to 4 significant digits."""
-    if isinstance(value, dict):
-        return ", ".join(flatten(v, f"{prefix}{k}.") for k, v in value.items()) or "none"
-    text = f"{value:.4g}" if isinstance(value, float) else str(value)
-    return f"{prefix[:-1]} = {text}" if prefix else text
-
-
 def esc(value) -> str:
     return html.escape(str(value))
 
