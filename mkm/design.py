@@ -61,7 +61,7 @@ MIN_SEPARATION = 0.05
 #: of the force has fallen to about a fifth of its value at rest there (theta0 = 32 deg).
 NEAR_LOCK_FRACTION = 0.75
 #: Surrogate uncertainty: 3 predictive standard deviations when the surrogate gives them (the
-#: default surrogate has 94 % of held-out muscles' points within 2), else
+#: default surrogate records 95 % of held-out muscles' points within 2: within_2std), else
 #: twice the largest held-out error recorded at training, else 5 % of the required force.
 STD_FACTOR, RECORDED_ERROR_FACTOR, FALLBACK_RELATIVE_MARGIN = 3.0, 2.0, 0.05
 CURVE_STEP_BAR = 0.25  # FE force-pressure curves of the verified designs
