@@ -17,7 +17,7 @@ from fem import paper
 from fem.calibration import calibration_provenance
 from fem.interface import ForceModel
 from fem.paper import equation7_err_pct
-from fem.records import package_file, provenance, read_prediction_header
+from fem.records import package_file, provenance, read_prediction_header, write_csv_with_sidecar
 from surrogate.training_data import PARAMETERS
 from surrogate.validation import rmse
 
@@ -39,8 +39,9 @@ def test_points(muscles=tuple(TEST_MUSCLES)) -> pd.DataFrame:
 def build_fe_reference(model: ForceModel, out=FE_REFERENCE) -> pd.DataFrame:
     """Sweep every test muscle with ``model`` (our FE) and write the reference CSV to ``out``.
 
-    The CSV opens with ``# key: json`` lines naming the model, its parameters and the library
-    versions (read back with ``pandas.read_csv(out, comment="#")``).
+    A plain CSV with its metadata (the model, its parameters, the calibration and the library
+    versions) in a JSON sidecar beside it (:func:`fem.records.write_csv_with_sidecar`; read
+    back with :func:`read_fe_reference`).
     """
     frames = []
     seconds = 0.0
@@ -55,12 +56,9 @@ def build_fe_reference(model: ForceModel, out=FE_REFERENCE) -> pd.DataFrame:
     header = {"what": "FE reference of the test muscles (paper section 3.3 and ours)",
               "model": model.name, "params": model.params(), "seconds": seconds,
               "calibration": calibration_provenance(model), **provenance()}
-    out = Path(out)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    with open(out, "w", encoding="utf-8", newline="") as f:
-        for key, value in header.items():
-            f.write(f"# {key}: {json.dumps(value, default=str)}\n")
-        table.to_csv(f, index=False, float_format="%.6g", lineterminator="\n")
+    write_csv_with_sidecar(out, table.to_csv(index=False, float_format="%.6g",
+                                             lineterminator="\n"),
+                           json.loads(json.dumps(header, default=str)))
     return table
 
 

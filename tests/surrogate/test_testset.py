@@ -4,6 +4,7 @@ import pytest
 
 from fem.ladder import make_model
 from fem.paper import equation7_err_pct
+from fem.records import read_prediction_header
 from surrogate.testset import (
     TEST_MUSCLES,
     build_fe_reference,
@@ -33,8 +34,11 @@ def thickwall_reference(tmp_path_factory):
 
 
 def test_reference_has_provenance_and_every_sweep(thickwall_reference):
-    header = thickwall_reference.read_text().splitlines()[:3]
-    assert header[0].startswith("# what:") and header[1] == '# model: "thickwall"'
+    # a plain CSV; the provenance is in the JSON sidecar
+    assert thickwall_reference.read_text().startswith("muscle,pressure_bar,")
+    header = read_prediction_header(thickwall_reference)
+    assert header["what"].startswith("FE reference") and header["model"] == "thickwall"
+    assert {"params", "calibration", "versions"} <= set(header)
     table = read_fe_reference(thickwall_reference)
     assert len(table) == 11 * len(TEST_MUSCLES)
     assert list(table.groupby("muscle", sort=False).size()) == [11] * len(TEST_MUSCLES)
