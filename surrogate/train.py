@@ -154,8 +154,10 @@ def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
     return model
 
 
-def default_model(dataset=DEFAULT_DATASET, cache_dir=None, **parameters) -> SurrogateForceModel:
+def default_model(dataset=DEFAULT_DATASET, cache_dir=None, progress: bool = False,
+                  **parameters) -> SurrogateForceModel:
     """The default (``best``) surrogate trained on ``dataset`` (see :func:`cached_model`), for
-    the muscle ``parameters`` (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``)."""
-    model = cached_model("best", dataset, cache_dir)
+    the muscle ``parameters`` (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``);
+    ``progress``: a bar on stderr while it trains (first use only)."""
+    model = cached_model("best", dataset, cache_dir, progress=progress)
     return model.with_parameters(**parameters) if parameters else model

@@ -237,13 +237,13 @@ def _train(args) -> int:
     return 0
 
 
-def _load(path, accept_mismatch=False, **parameters):
+def _load(path, accept_mismatch=False, progress=False, **parameters):
     from surrogate.io import load_model
     from surrogate.train import default_model
 
     parameters = {k: v for k, v in parameters.items() if v is not None}
     if path == "default":
-        return default_model(**parameters)
+        return default_model(progress=progress, **parameters)
     model = load_model(path, accept_mismatch=accept_mismatch)
     return model.with_parameters(**parameters) if parameters else model
 
@@ -255,8 +255,8 @@ def _label(path: str) -> str:
 def _predict(args) -> int:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        model = _load(args.model, args.accept_mismatch, L0_mm=args.L0, theta0_deg=args.theta0,
-                      C10_MPa=args.C10, C01_MPa=args.C01)
+        model = _load(args.model, args.accept_mismatch, not args.no_progress, L0_mm=args.L0,
+                      theta0_deg=args.theta0, C10_MPa=args.C10, C01_MPa=args.C01)
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
         print(f"mkm: warning: {w.message}", file=sys.stderr)
@@ -269,8 +269,10 @@ def _test(args) -> int:
     from surrogate.train import train_surrogate
 
     paths = args.model or ([] if args.kind else ["default"])
-    models = {_label(path): _load(path, args.accept_mismatch) for path in paths}
-    models.update({kind: train_surrogate(kind, _dataset(args), splits=0)
+    models = {_label(path): _load(path, args.accept_mismatch, not args.no_progress)
+              for path in paths}
+    models.update({kind: train_surrogate(kind, _dataset(args), splits=0,
+                                         progress=not args.no_progress)
                    for kind in args.kind or []})
     reference = args.reference or FE_REFERENCE
     summary = run_test(models, args.out, reference)
@@ -346,7 +348,7 @@ def _evaluate(args) -> int:
     from surrogate.offgrid import evaluate_offgrid
 
     start = time.perf_counter()
-    model = _load(args.model, args.accept_mismatch)
+    model = _load(args.model, args.accept_mismatch, not args.no_progress)
     points, summary = evaluate_offgrid(model, args.muscles, args.seed, args.mesh, args.workers,
                                        args.cache, progress=not args.no_progress)
     out = Path(args.out)
