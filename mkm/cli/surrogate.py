@@ -261,6 +261,9 @@ def _predict(args) -> int:
     for w in caught:
         print(f"mkm: warning: {w.message}", file=sys.stderr)
     emit_prediction(prediction, args.out)
+    summary_line("surrogate predict", f"{prediction.force_N.size} points of {model.name} in "
+                 f"{1e3 * prediction.seconds:.2f} ms, {int((~prediction.valid).sum())} flagged "
+                 "outside the training domain")
     return 0
 
 
