@@ -188,15 +188,19 @@ def write_prediction_csv(prediction, buf) -> None:
 
 def read_prediction_header(path) -> dict[str, Any]:
     """The metadata of a CSV: its JSON sidecar, or (files written before sidecars) its
-    ``# key: json`` comment lines."""
+    ``# key: value`` comment lines (values parsed as JSON where they are JSON)."""
     sidecar = sidecar_path(path)
     if sidecar.is_file():
         return json.loads(sidecar.read_text(encoding="utf-8"))
     header = {}
     with open(path, encoding="utf-8") as f:
         for line in f:
-            if not line.startswith("# "):
+            if not line.startswith("#"):
                 break
-            key, _, value = line[2:].partition(": ")
-            header[key] = json.loads(value)
+            key, sep, value = line[1:].strip().partition(":")
+            if sep:
+                try:
+                    header[key.strip()] = json.loads(value)
+                except ValueError:
+                    header[key.strip()] = value.strip()
     return header

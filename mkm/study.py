@@ -80,14 +80,18 @@ def registry_predictor(label: str, spec: str, cached: bool = False) -> Predictor
 
 
 def physics_predictors() -> list[Predictor]:
-    """Equation 2 (both diameters), thick-wall, and the FE model at every mesh level."""
+    """Equation 2 (both diameters), thick-wall, the FE model at every mesh level, and the FE
+    model with a sliding braid (another physical assumption than the reference's bonded braid:
+    shown, never a candidate of ``auto``)."""
     from fem.fe.mesh import MESH_LEVELS
 
+    sliding = parse_spec("axisym:braid=sliding")
     return [registry_predictor("eq2-inner", "eq2:diameter=inner"),
             registry_predictor("eq2-braid", "eq2:diameter=braid"),
             registry_predictor("thickwall", "thickwall"),
             *(registry_predictor(f"axisym-{m}", f"axisym:mesh={m}", cached=True)
-              for m in MESH_LEVELS)]
+              for m in MESH_LEVELS),
+            Predictor("axisym-sliding", sliding.entry.family, sliding.build, "", cached=True)]
 
 
 def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR,

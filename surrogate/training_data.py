@@ -14,7 +14,6 @@ force) are left out and counted, never fed to a fit.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -22,7 +21,7 @@ import numpy as np
 import pandas as pd
 
 from fem.interface import INPUTS, Domain
-from fem.records import file_sha256, package_file
+from fem.records import file_sha256, package_file, read_prediction_header
 
 #: Parameters of a muscle that are not arguments of ``ForceModel.predict``: a surrogate takes
 #: each either as an input (the dataset varies it) or as a recorded value (the dataset holds one).
@@ -83,7 +82,7 @@ def load_training_data(path=DEFAULT_DATASET) -> TrainingData:
     if missing:
         raise ValueError(f"dataset {str(path)!r} lacks column(s) {', '.join(missing)}: expected "
                          f"{', '.join((*INPUTS, 'force_N'))}")
-    provenance = _provenance(path)
+    provenance = read_prediction_header(path)
     keep = np.isfinite(frame["force_N"].to_numpy(dtype=float))
     for flag in ("converged", "valid"):
         if flag in frame.columns:
@@ -126,22 +125,3 @@ def load_training_data(path=DEFAULT_DATASET) -> TrainingData:
                         threshold_pressure_bar=threshold, path=str(path),
                         sha256=file_sha256(path), provenance=provenance,
                         n_dropped=int((~keep).sum()), labels=labels)
-
-
-def _provenance(path: Path) -> dict:
-    """The sidecar JSON if there is one, else the ``# key: value`` header lines."""
-    sidecar = path.with_suffix(".json")
-    if sidecar.is_file():
-        return json.loads(sidecar.read_text(encoding="utf-8"))
-    header = {}
-    with open(path, encoding="utf-8") as f:
-        for line in f:
-            if not line.startswith("#"):
-                break
-            key, sep, value = line[1:].strip().partition(":")
-            if sep:
-                try:
-                    header[key.strip()] = json.loads(value)
-                except ValueError:
-                    header[key.strip()] = value.strip()
-    return header
