@@ -1,0 +1,60 @@
+"""The FE prediction cache (mkm/prediction_cache.py): a hit returns what the model computed, any
+change of model, parameters, code or inputs misses, and entries load without pickle."""
+
+import numpy as np
+import pytest
+
+from mkm import prediction_cache
+from mkm.prediction_cache import cache_key, cached_predict
+from mkm.registry import parse_spec
+
+P = np.array([0.0, 1.0, 2.5])
+
+
+@pytest.fixture
+def axisym():
+    return parse_spec("axisym:mesh=coarse").build()
+
+
+def test_a_hit_returns_the_computed_prediction(tmp_path, axisym):
+    first, hit1 = cached_predict(axisym, P, 35.0, 2.5, 0.05, cache_dir=tmp_path)
+    again, hit2 = cached_predict(axisym, P, 35.0, 2.5, 0.05, cache_dir=tmp_path)
+    assert (hit1, hit2) == (False, True)
+    np.testing.assert_array_equal(again.force_N, first.force_N)
+    np.testing.assert_array_equal(again.valid, first.valid)
+    assert again.seconds == first.seconds  # the time of the original solve, not of the read
+    assert again.params == first.params
+    np.testing.assert_array_equal(again.extras["threshold_pressure_bar"],
+                                  first.extras["threshold_pressure_bar"])
+    # the entry is a plain .npz: it loads with pickle forbidden
+    (entry,) = tmp_path.glob("*.npz")
+    with np.load(entry, allow_pickle=False) as data:
+        assert "force_N" in data.files
+
+
+def test_text_extras_survive(tmp_path):
+    # a solve that fails carries its reason as text; it must come back as text, not as a pickle
+    model = parse_spec("axisym:mesh=coarse").build()
+    first, _ = cached_predict(model, [1.0], 30.0, 2.0, 0.31, cache_dir=tmp_path)
+    again, hit = cached_predict(model, [1.0], 30.0, 2.0, 0.31, cache_dir=tmp_path)
+    assert hit and not again.converged.any()
+    assert str(np.ravel(again.extras["failure"])[0]) == str(np.ravel(first.extras["failure"])[0])
+    assert "threshold search failed" in str(np.ravel(again.extras["failure"])[0])
+
+
+def test_the_key_changes_with_parameters_inputs_and_code(axisym, monkeypatch):
+    inputs = tuple(np.broadcast_arrays(P, 35.0, 2.5, 0.05))
+    key = cache_key(axisym, inputs)
+    assert cache_key(axisym, inputs) == key
+    assert cache_key(parse_spec("axisym:mesh=medium").build(), inputs) != key
+    other = tuple(np.broadcast_arrays(P + 1e-9, 35.0, 2.5, 0.05))
+    assert cache_key(axisym, other) != key
+    # an edit of the physics changes the model version, hence the key
+    monkeypatch.setattr(prediction_cache, "model_version", lambda model: "edited")
+    assert cache_key(axisym, inputs) != key
+
+
+def test_no_cache_dir_means_no_cache(tmp_path, axisym):
+    _, hit = cached_predict(axisym, P, 35.0, 2.5, 0.05, cache_dir=None)
+    _, hit_again = cached_predict(axisym, P, 35.0, 2.5, 0.05, cache_dir=None)
+    assert not hit and not hit_again
