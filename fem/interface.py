@@ -20,6 +20,10 @@ import numpy as np
 import pandas as pd
 
 INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
+# Far beyond any pneumatic muscle (supplies <= 10 bar, tubes <= 100 mm): a typo, not a muscle
+# (the closed forms are still checked near the braid lock, where thresholds reach 100+ bar).
+MAX_PRESSURE_BAR = 1000.0
+MAX_D0_MM = 500.0
 
 
 @dataclass(frozen=True)
@@ -94,8 +98,10 @@ def validate_inputs(pressure_bar, D0_mm, t0_mm, eps) -> tuple[np.ndarray, ...]:
         bad = ~np.isfinite(a)
         if bad.any():
             raise ValueError(f"{name}={a[bad].flat[0]:g} is not a finite number")
-    _check(P, P < 0, "pressure_bar", "expected a gauge pressure >= 0 bar")
-    _check(D0, D0 <= 0, "D0_mm", "expected an inner diameter > 0 mm")
+    _check(P, (P < 0) | (P > MAX_PRESSURE_BAR), "pressure_bar",
+           f"expected a gauge pressure in [0, {MAX_PRESSURE_BAR:g}] bar")
+    _check(D0, (D0 <= 0) | (D0 > MAX_D0_MM), "D0_mm",
+           f"expected an inner diameter in (0, {MAX_D0_MM:g}] mm")
     _check(t0, t0 <= 0, "t0_mm", "expected a wall thickness > 0 mm")
     bad = t0 >= D0 / 2
     if bad.any():

@@ -77,9 +77,9 @@ EPS = "expected a shortening ratio in [0, 1) (a fraction)"
 
 @pytest.mark.parametrize("args, message", [
     (["--D0", "-1", "--t0", "2.5", "--eps", "0.05"],
-     "mkm: error: D0_mm=-1 is invalid: expected an inner diameter > 0 mm"),
+     "mkm: error: D0_mm=-1 is invalid: expected an inner diameter in (0, 500] mm"),
     (["--D0", "0", "--t0", "2.5", "--eps", "0.05"],
-     "mkm: error: D0_mm=0 is invalid: expected an inner diameter > 0 mm"),
+     "mkm: error: D0_mm=0 is invalid: expected an inner diameter in (0, 500] mm"),
     (["--D0", "35", "--t0", "0", "--eps", "0.05"],
      "mkm: error: t0_mm=0 is invalid: expected a wall thickness > 0 mm"),
     (["--D0", "35", "--t0", "20", "--eps", "0.05"], f"mkm: error: {THICK}"),
