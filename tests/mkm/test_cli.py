@@ -210,3 +210,36 @@ def test_every_help_example_parses():
             raise AssertionError(f"mkm {' '.join(name)}: its example {example!r} does not "
                                  "parse") from exc
         assert callable(args.func)
+
+
+def test_every_readme_example_parses():
+    """Every `mkm ...` line in the README's code blocks is a command line mkm accepts (lines
+    with placeholders such as RUN_DIR, <RUN> or [optional] parts are templates, not commands)."""
+    import re
+    import shlex
+
+    from mkm.cli import build_parser
+
+    readme = (Path(__file__).parents[2] / "README.md").read_text(encoding="utf-8")
+    lines, block = [], False
+    for line in readme.splitlines():
+        if line.startswith("```"):
+            block = not block
+        elif block or line.startswith("    "):
+            lines.append(line.strip().removeprefix("$ "))
+    commands, joined = [], ""
+    for line in lines:
+        joined += line.removesuffix("\\") + " "
+        if not line.endswith("\\"):
+            commands.append(joined.split("#")[0].strip())
+            joined = ""
+    # "mkm design: ..." and "mkm: error: ..." are what a command prints, not commands
+    commands = [c for c in commands if c.startswith("mkm ") and not re.match(r"mkm [\w-]*:", c)
+                and not re.search(r"[\[\]<>|]|\.\.\.|RUN_DIR|SPEC|CSV|FILE", c)]
+    assert len(commands) >= 15
+    for command in commands:
+        try:
+            args = build_parser().parse_args(shlex.split(command.replace("\\", "/"))[1:])
+        except SystemExit as exc:
+            raise AssertionError(f"README example {command!r} does not parse") from exc
+        assert callable(args.func)
