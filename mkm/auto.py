@@ -24,7 +24,6 @@ justified it (``error_bound_pct``; NaN for the fallback); :func:`explain` says i
 
 from __future__ import annotations
 
-import hashlib
 import warnings
 from functools import cache
 from pathlib import Path
@@ -33,7 +32,7 @@ import numpy as np
 import pandas as pd
 
 from fem.interface import ForceModel
-from fem.records import package_file
+from fem.records import file_sha256, package_file
 
 MODEL_ERRORS_FILE = package_file("mkm", "data", "model_errors.csv")
 NEIGHBOURS = 2  # two study muscles: one alone would trust a single geometry's luck
@@ -136,7 +135,7 @@ class AutoModel(ForceModel):
 
     def params(self):
         path = Path(self.table or MODEL_ERRORS_FILE)
-        digest = hashlib.sha256(path.read_bytes()).hexdigest()[:12] if path.exists() else None
+        digest = file_sha256(path)[:12] if path.exists() else None
         return {"tolerance": self.tolerance, "table": path.name, "table_sha256": digest,
                 "per_point": self.per_point}
 

@@ -147,6 +147,7 @@ class _Run:
     scored: pd.DataFrame = field(default_factory=pd.DataFrame)
     summary: list[dict] = field(default_factory=list)
     keys: list[str] = field(default_factory=list)
+    auto_choices: dict = field(default_factory=dict)  # tolerance -> (model, explanation)
 
     @property
     def name(self) -> str:
@@ -211,9 +212,9 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     prov: dict[str, dict] = {"software": provenance()}
     bar = progress_bar(len(run_dirs) * (len(specs) + 1) + int(surrogate_section), "report",
                        progress, unit="task")
-    runs = []
+    runs, models = [], {}  # one model per spec and rest length for the whole report
     for k, run_dir in enumerate(run_dirs, start=1):
-        runs.append(_score(_Run(k, load_run(run_dir), specs), cache_dir, prov, bar))
+        runs.append(_score(_Run(k, load_run(run_dir), specs), cache_dir, prov, bar, models))
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
     summary.to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
@@ -242,7 +243,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     return path
 
 
-def _score(r: _Run, cache_dir, prov: dict, bar) -> _Run:
+def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     """Predict and score every model on the run's kept steps; record provenance."""
     meta, muscle = r.meta, r.muscle
     run_key = f"run-{r.k}"
@@ -255,8 +256,11 @@ def _score(r: _Run, cache_dir, prov: dict, bar) -> _Run:
         bar.update(len(r.specs))
         return r
     frames = []
+    L0_mm = float(muscle.get("L0_mm", L0_MM))
     for spec in r.specs:
-        model = spec.build(L0_mm=float(muscle.get("L0_mm", L0_MM)))
+        if (spec, L0_mm) not in models:  # a surrogate loads in about a second: once is enough
+            models[spec, L0_mm] = spec.build(L0_mm=L0_mm)
+        model = models[spec, L0_mm]
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
@@ -282,24 +286,8 @@ def _plain(text) -> str:
 
 
 def _planned_steps(meta) -> str:
-    """Steps planned, from any run.json schema (a count or the list of steps)."""
-    n = getattr(meta, "n_steps", None)
-    sequence = meta.get("sequence") or {}
-    for value in (n, sequence.get("n_steps"), sequence.get("planned_steps"),
-                  sequence.get("steps")):
-        if isinstance(value, int):
-            return str(value)
-        if isinstance(value, list):
-            return str(len(value))
-    return "an unrecorded number planned"
-
-
-def _lost_samples(meta) -> int:
-    lost = meta.get("lost_samples")
-    if lost is not None:
-        return int(lost)
-    gaps = meta.get("gaps") or (meta.get("counters") or {}).get("gaps") or []
-    return int(sum(g.get("lost_samples", 0) for g in gaps if isinstance(g, dict)))
+    """Steps planned (``RunMeta`` reads it from every run.json schema)."""
+    return "an unrecorded number planned" if meta.n_steps is None else str(meta.n_steps)
 
 
 def _best(r: _Run) -> dict | None:
@@ -344,7 +332,7 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
         rows.append(f'<tr><td><a href="#run-{r.k}">run {r.k}</a>: {esc(r.name)}</td>'
                     f"<td>{_status_html(r)}</td><td>{r.eps_pct:.1f}</td>"
                     f"<td>{len(r.run.steps)} / {esc(_planned_steps(r.meta))}</td>"
-                    f"<td>{_lost_samples(r.meta)}</td>{best_cells}{auto}</tr>")
+                    f"<td>{r.meta.lost_samples}</td>{best_cells}{auto}</tr>")
     keys = [k for r in runs for k in r.keys]
     return ('<h2 id="summary">Summary</h2><div class="table"><table class="summary">'
             f"<thead>{head}</thead><tbody>{''.join(rows)}</tbody></table>"
@@ -603,15 +591,19 @@ def _auto_pressures(r: _Run) -> np.ndarray:
 
 
 def _auto_choice(r: _Run, tolerance: float):
-    """``(model, explanation)`` of ``auto`` for the whole run, or None."""
+    """``(model, explanation)`` of ``auto`` for the whole run, or None (chosen once per run:
+    the summary and the run's section both show it)."""
     from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain
 
-    if r.run.steps.empty or not MODEL_ERRORS_FILE.exists():
-        return None
-    m = r.muscle
-    choice = AutoModel(tolerance=tolerance).choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"],
-                                                  m["eps"])
-    return str(choice["model_used"][0]), explain(choice, tolerance)
+    if tolerance not in r.auto_choices:
+        choice = None
+        if not r.run.steps.empty and MODEL_ERRORS_FILE.exists():
+            m = r.muscle
+            chosen = AutoModel(tolerance=tolerance).choose(_auto_pressures(r), m["D0_mm"],
+                                                           m["t0_mm"], m["eps"])
+            choice = str(chosen["model_used"][0]), explain(chosen, tolerance)
+        r.auto_choices[tolerance] = choice
+    return r.auto_choices[tolerance]
 
 
 def _auto_paragraph(r: _Run, tolerance: float) -> str:

@@ -31,6 +31,7 @@ import numpy as np
 import pandas as pd
 
 from fem.interface import ForceModel, Prediction
+from fem.paper import equation7_err_pct
 from fem.records import provenance, write_atomic, write_json_atomic
 from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
 from mkm.figures import speed_accuracy_figure, stability_figure
@@ -228,7 +229,8 @@ def _error_rows(p: Predictor, pred: Prediction, ref: Prediction, muscle) -> pd.D
     scale = np.nanmax(np.where(ok_ref, np.ravel(ref.force_N), np.nan))
     valid = np.ravel(pred.valid)
     force = np.where(valid, np.ravel(pred.force_N), np.nan)
-    err = 100.0 * (np.ravel(ref.force_N) - force) / scale
+    err = (equation7_err_pct(np.ravel(ref.force_N), force, scale) if np.isfinite(scale)
+           else np.full(force.shape, np.nan))
     return pd.DataFrame({
         "predictor": p.label, "family": p.family, "spec": p.spec, "muscle": muscle[0],
         "role": muscle[4], "D0_mm": muscle[1], "t0_mm": muscle[2], "eps": muscle[3],

@@ -7,7 +7,6 @@ finest level; draws force and time against the number of unknowns.
 
 from __future__ import annotations
 
-import json
 import time
 from pathlib import Path
 
@@ -16,7 +15,7 @@ import pandas as pd
 from fem.fe.mesh import MESH_LEVELS
 from fem.fe.model import Axisym, isometric_sweep
 from fem.interface import validate_inputs
-from fem.records import provenance
+from fem.records import provenance, write_csv_with_sidecar
 
 
 def mesh_convergence(D0_mm: float = 35.0, t0_mm: float = 2.5, eps: float = 0.05,
@@ -79,10 +78,9 @@ def convergence_study(out_dir="reports/fem-convergence", **kwargs) -> tuple[pd.D
     """Run :func:`mesh_convergence`, write its CSV (with provenance JSON) and chart PNG."""
     frame = mesh_convergence(**kwargs)
     out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    frame.to_csv(out / "mesh_convergence.csv", index=False, float_format="%.8g")
-    (out / "mesh_convergence.json").write_text(
-        json.dumps({"inputs": frame.attrs, **provenance()}, indent=2) + "\n")
+    write_csv_with_sidecar(out / "mesh_convergence.csv",
+                           frame.to_csv(index=False, float_format="%.8g", lineterminator="\n"),
+                           {"inputs": frame.attrs, **provenance()})
     png = out / "mesh_convergence.png"
     plot_mesh_convergence(frame).savefig(png, dpi=120)
     return frame, png
