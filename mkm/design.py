@@ -45,7 +45,7 @@ from fem.ladder import model_class
 from fem.materials import MATERIALS
 from fem.paper import L0_MM
 from fem.ranges import parse_fraction, parse_number
-from fem.thickwall import klute_hannaford_threshold_pressure
+from fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 from mkm.registry import ENTRIES, parse_spec
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
@@ -231,7 +231,8 @@ def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, material=MATERIALS
     :func:`fem.thickwall.klute_hannaford_threshold_pressure`, solved by bisection on
     ``[0, eps_max)``); any load holds it at a smaller shortening and diameter. The braid of
     constant thread length then has ``D_out^2 = (D0 + 2 t0)^2 (1 + eps_f (2 - eps_f) cot^2
-    theta0)`` (see :mod:`fem.thickwall`). Mid-section value: the caps keep the ends narrower.
+    theta0)`` (:func:`fem.thickwall.mid_section_kinematics`). Mid-section value: the caps
+    keep the ends narrower.
     """
     D0, t0, theta0, P = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in
                                               (D0_mm, t0_mm, theta0_deg, pressure_bar)))
@@ -243,8 +244,8 @@ def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, material=MATERIALS
                                                        material.C01_MPa)
         below = np.nan_to_num(threshold, nan=np.inf) <= P
         low, high = np.where(below, mid, low), np.where(below, high, mid)
-    eps = low
-    return (D0 + 2 * t0) * np.sqrt(1.0 + eps * (2.0 - eps) / np.tan(np.deg2rad(theta0)) ** 2)
+    outer_radius_sq_mm2 = mid_section_kinematics(D0, t0, low, theta0)[5]
+    return 2.0 * np.sqrt(outer_radius_sq_mm2)
 
 
 def rubber_volume_cm3(D0_mm, t0_mm, L0_mm):
