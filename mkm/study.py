@@ -95,22 +95,45 @@ def physics_predictors() -> list[Predictor]:
             Predictor("axisym-sliding", sliding.entry.family, sliding.build, "", cached=True)]
 
 
-def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR,
-                         n_jobs: int = 2) -> list[Predictor]:
-    """Every surrogate kind trained on ``dataset`` (default: the shipped one): the default kind
-    (usable by auto), the other named kinds, the paper's 27 nets and their standardised-force
-    variants. Kinds not yet in ``cache_dir`` are trained first, ``n_jobs`` at a time."""
-    from surrogate.estimators import BEST, kind_names
+# The study's surrogates unless asked for more: the default kind, the physics ridge and the
+# paper's best net. The generic GP (about 2.5 min of training cold on two cores) and the paper's
+# 54 Table 2 nets (about 10 min) are dominated on the front; `mkm study --surrogates all` adds them.
+STUDY_SURROGATES = ("muscle-gp", "physics", "mlp-paper")
+
+
+def surrogate_kinds(text: str) -> tuple[str, ...]:
+    """The kinds named by ``--surrogates``: a comma list of kinds, or ``all`` (every kind, the
+    54 paper nets included); a one-line error naming an unknown kind."""
+    from surrogate.estimators import kind_names
+
+    known = kind_names(include_nets=True)
+    if text.strip() == "all":
+        return tuple(known)
+    kinds = tuple(k.strip() for k in text.split(",") if k.strip())
+    unknown = [k for k in kinds if k not in known]
+    if unknown or not kinds:
+        raise ValueError(f"--surrogates {text!r}: unknown kind {', '.join(unknown) or '(none)'};"
+                         f" expected all or a comma list of {', '.join(known[:4])}, "
+                         "net-LxN-activation[-standardised] (see `mkm models`)")
+    return kinds
+
+
+def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR, n_jobs: int = 2,
+                         kinds=STUDY_SURROGATES) -> list[Predictor]:
+    """The surrogate ``kinds`` trained on ``dataset`` (default: the shipped one); the default
+    kind is the one ``auto`` may use. Kinds not yet in ``cache_dir`` are trained first,
+    ``n_jobs`` at a time."""
+    from surrogate.estimators import BEST
     from surrogate.train import default_model
     from surrogate.training_data import DEFAULT_DATASET
 
     dataset = dataset or DEFAULT_DATASET
-    kinds = [kind for kind in kind_names(include_nets=True) if kind != BEST]
+    others = [kind for kind in kinds if kind != BEST]
     if cache_dir is not None:
-        train_surrogates(kinds, dataset, cache_dir, n_jobs)
+        train_surrogates(others, dataset, cache_dir, n_jobs)
     out = [Predictor(f"surrogate-{BEST}", "surrogate", lambda: default_model(dataset),
-                     "surrogate")]
-    for kind in kinds:
+                     "surrogate")] if BEST in kinds else []
+    for kind in others:
         family = ("surrogate" if not kind.startswith("net-") else
                   "paper net, standardised force" if kind.endswith("standardised")
                   else "paper net")
@@ -158,6 +181,12 @@ class StudyConfig:
     predictors: Callable[[Path | str | None], list[Predictor]] = field(
         default=lambda cache_dir: physics_predictors() + surrogate_predictors(
             cache_dir=cache_dir))
+
+    @classmethod
+    def with_surrogates(cls, kinds) -> StudyConfig:
+        """The default study with the surrogate ``kinds`` (see :func:`surrogate_kinds`)."""
+        return cls(predictors=lambda cache_dir: physics_predictors() + surrogate_predictors(
+            cache_dir=cache_dir, kinds=tuple(kinds)))
     reference: str = "axisym-fine"
     stability_methods: tuple = ("eq2-inner", "eq2-braid", "thickwall", "axisym-medium",
                                 "surrogate-physics", "surrogate-mlp-paper")
@@ -403,8 +432,8 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
             f"<p><b>Pareto front</b> (fastest first): {esc(pareto_text(summary))}.</p>"
             + figure_html(*figures[0])
             + table_html(readable_summary(summary), "The named predictors and every one on the "
-                         "Pareto front; all of them, the 54 nets included, are in "
-                         "speed_accuracy.csv. Provenance: below.", digits=3)
+                         "Pareto front; all of them are in speed_accuracy.csv. Provenance: "
+                         "below.", digits=3)
             + "<h2>Where methods fail</h2>"
             + "".join(figure_html(path, caption) for path, caption in figures[1:])
             + (table_html(stability, "Stability per method and muscle (stability_summary.csv)")

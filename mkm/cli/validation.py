@@ -38,14 +38,19 @@ def register(subparsers) -> None:
         description="Time every predictor and measure its error (Equation 7) against the finest "
         "FE mesh on the study muscles; map where each method fails. Writes study.html, CSVs "
         "and model_errors.csv (the table `auto` reads) under --out only; --update-shipped also "
-        "replaces the table shipped in the package (mkm/data/model_errors.csv). Cold: minutes "
-        "(FE solves and surrogate training); a second run reads them from the cache.",
+        "replaces the table shipped in the package (mkm/data/model_errors.csv). Cold: about a "
+        "minute (FE solves and surrogate training; --surrogates all adds about 13); a second "
+        "run reads them from the cache.",
         epilog="example: mkm study --out mkm-out/study   (then mkm fem solve --model "
         "auto:table=mkm-out/study/model_errors.csv ...)")
     study.add_argument("--out", help="output folder (default: mkm-out/study)")
     study.add_argument("--update-shipped", action="store_true",
                        help="also replace the shipped study table mkm/data/model_errors.csv "
                        "that `--model auto` reads by default")
+    study.add_argument("--surrogates", type=_kinds, metavar="KINDS",
+                       help="surrogate kinds scored: a comma list or `all` (the generic gp and "
+                       "the paper's 54 nets too; cold, about 13 more minutes of training) "
+                       "(default: muscle-gp,physics,mlp-paper)")
     _cache_arguments(study)
     _progress_argument(study)
     study.set_defaults(func=_study)
@@ -64,6 +69,15 @@ def _cache_arguments(parser) -> None:
 def _progress_argument(parser) -> None:
     parser.add_argument("--no-progress", action="store_true",
                         help="no progress bar on stderr (also off when stderr is not a terminal)")
+
+
+def _kinds(text):
+    from mkm.study import surrogate_kinds
+
+    try:
+        return surrogate_kinds(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def _fraction(text):
@@ -96,11 +110,12 @@ def _report(args) -> int:
 
 def _study(args) -> int:
     from mkm.progress import summary_line
-    from mkm.study import run_study
+    from mkm.study import StudyConfig, run_study
 
     start = time.perf_counter()
-    path = run_study(args.out, cache_dir=_cache(args), update_shipped=args.update_shipped,
-                     progress=not args.no_progress)
+    config = StudyConfig.with_surrogates(args.surrogates) if args.surrogates else StudyConfig()
+    path = run_study(args.out, config, cache_dir=_cache(args),
+                     update_shipped=args.update_shipped, progress=not args.no_progress)
     shipped = "; replaced mkm/data/model_errors.csv" if args.update_shipped else ""
     summary_line("study", f"done in {time.perf_counter() - start:.0f} s{shipped}")
     print(path)

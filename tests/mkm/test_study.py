@@ -118,3 +118,25 @@ def test_classify_each_failure():
     assert classify(pred).tolist() == ["ok", "ok", "force falls with pressure",
                                        "negative force", "invalid (model's own limit)",
                                        "not converged"]
+
+
+def test_surrogate_kinds_default_all_and_typos():
+    from mkm.study import STUDY_SURROGATES, surrogate_kinds
+    from surrogate.estimators import BEST
+
+    assert BEST in STUDY_SURROGATES
+    every = surrogate_kinds("all")
+    assert len(every) == 4 + 54 and set(STUDY_SURROGATES) <= set(every)
+    assert surrogate_kinds(" physics, net-1x25-relu ") == ("physics", "net-1x25-relu")
+    with pytest.raises(ValueError, match="unknown kind physcs"):
+        surrogate_kinds("muscle-gp,physcs")
+
+
+def test_study_cli_refuses_an_unknown_surrogate_kind(capsys):
+    from mkm.cli import main
+
+    with pytest.raises(SystemExit) as exc:
+        main(["study", "--surrogates", "gpp"])
+    assert exc.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert "unknown kind gpp" in err[-1] and "Traceback" not in "".join(err)
