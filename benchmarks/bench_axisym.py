@@ -14,7 +14,9 @@ depend on the machine's load). The split is measured by wrapping those three fun
 timers in this script only. Goal (issue 11): medium <= 0.15 s and fine <= 1 s per sweep on the
 project's 2-core machine, forces unchanged to 1e-6 relative. The machine is shared, so compare
 the Newton iteration counts too: 62-69 (medium) and 75-78 (fine) before the thick-wall start of
-the threshold search and the chord convergence check, 24-29 after.
+the threshold search and the chord convergence check, 24-29 after. The LU column is SuperLU's
+factorisation only; the pressure ramp's symmetric permutation (:class:`fem.fe.newton.OrderedLU`)
+counts as "rest".
 """
 
 from __future__ import annotations

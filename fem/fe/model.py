@@ -38,7 +38,7 @@ from fem.eq2 import BAR_TO_MPA, check_theta0
 from fem.fe.assembly import Assembler, Term, operator
 from fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
 from fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
-from fem.fe.newton import load_path, newton
+from fem.fe.newton import OrderedLU, load_path, newton
 from fem.interface import ForceModel
 from fem.materials import SILASTIC_S, MooneyRivlin
 from fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
@@ -132,6 +132,9 @@ class HalfMuscle:
         terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
         self.assembler = Assembler(terms, self.n)
         self._reactions: dict[tuple[float, bytes], float] = {}
+        # the ramp's tangents keep one ordering (the free path's, with the pressure's dense
+        # column, fill in badly under it: SuperLU's own ordering there)
+        self._held_lu = OrderedLU()
 
     def rest_state(self) -> np.ndarray:
         """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
@@ -273,7 +276,8 @@ class HalfMuscle:
 
         path = load_path(held, y[:-1], P_start_MPa, pressures_MPa,
                          check=lambda x, P: self.inverted(np.append(x, U)),
-                         label=lambda P: f"{P / BAR_TO_MPA:.4g} bar", **self._newton_options())
+                         label=lambda P: f"{P / BAR_TO_MPA:.4g} bar", factorize=self._held_lu,
+                         **self._newton_options())
         return [(None if x is None else np.append(x, U), report) for x, report in path]
 
     def cavity_volume(self, y) -> float:

@@ -52,3 +52,46 @@ def test_load_path_cuts_back_and_reports_the_unreachable():
     assert x2 is None and not r2.converged and r2.cutbacks == 4
     assert "inverted" in r2.reason and "3 cut-backs" in r2.reason
     assert x3 is None and r3.reason.startswith("not reached")
+
+
+def _laplacian_saddle(n: int, seed: int) -> sp.csc_matrix:
+    """A symmetric indefinite matrix shaped like the FE tangents: a 1-D Laplacian block with a
+    constraint row and column per pair of unknowns (zero diagonal there), numbered badly."""
+    rng = np.random.default_rng(seed)
+    K = sp.diags([-1.0, 2.0 + rng.random(n), -1.0], [-1, 0, 1], shape=(n, n))
+    C = sp.csr_matrix((np.ones(n), (np.arange(n) // 2, np.arange(n))), shape=(n // 2, n))
+    A = sp.bmat([[K, C.T], [C, None]]).tocsc()
+    shuffle = rng.permutation(A.shape[0])
+    return A[shuffle][:, shuffle].tocsc()
+
+
+def test_ordered_lu_solves_as_superlu_and_keeps_its_ordering():
+    from scipy.sparse.linalg import splu
+
+    from fem.fe.newton import OrderedLU
+
+    factorize = OrderedLU()
+    A = _laplacian_saddle(200, 0)
+    b = np.random.default_rng(1).standard_normal(A.shape[0])
+    x = factorize(A).solve(b)
+    np.testing.assert_allclose(A @ x, b, atol=1e-10)
+    np.testing.assert_allclose(x, splu(A).solve(b), rtol=1e-8, atol=1e-10)
+    perm = factorize._perm
+    B = A.copy()  # same pattern arrays, new values (as a Newton tangent's next assembly)
+    B.data = np.where(B.data == 0, 0.0, B.data * 1.5 + 0.25 * (B.data > 1.5))
+    np.testing.assert_allclose(B @ factorize(B).solve(b), b, atol=1e-9)
+    assert factorize._perm is perm  # the ordering was found once
+    C = _laplacian_saddle(120, 3)  # another pattern: ordered afresh
+    c = np.ones(C.shape[0])
+    np.testing.assert_allclose(C @ factorize(C).solve(c), c, atol=1e-10)
+    assert factorize._perm is not perm
+
+
+def test_newton_reports_a_singular_tangent_through_ordered_lu():
+    from fem.fe.newton import OrderedLU
+
+    def flat(x):  # residual 1 everywhere, tangent zero: no Newton step exists
+        return np.ones(2), sp.csr_matrix((2, 2))
+
+    _, report = newton(flat, [0.0, 0.0], factorize=OrderedLU())
+    assert not report.converged and report.reason == "singular tangent"
