@@ -110,13 +110,25 @@ def _load(path: Path) -> dict:
     return _read(path, mtime)
 
 
+# the option of `mkm fem calibrate` that selects the variant in an entry's key ("eq2-braid")
+_VARIANT_OPTION = {"eq2": "--diameter", "axisym": "--braid"}
+
+
+def calibrate_command(key: str, path) -> str:
+    """The command that writes entry ``key`` into the calibration file ``path``."""
+    rung, _, variant = key.partition("-")
+    option = f" {_VARIANT_OPTION[rung]} {variant}" if variant in ("inner", "braid",
+                                                                  "sliding") else ""
+    return f"mkm fem calibrate --model {rung}{option} --out {path}"
+
+
 def calibrated(key: str) -> dict:
     """The entry ``key`` (for example ``"eq2-inner"``) of the calibration file in effect."""
     path = calibration_file()
     entries = _load(path)
     if key not in entries:
         raise ValueError(f"no calibrated theta0 for model {key!r} in {path}: pass --theta0 or "
-                         f"run `mkm fem calibrate --model {key.split('-')[0]} --out {path.name}`")
+                         f"run `{calibrate_command(key, path)}`")
     return entries[key]
 
 

@@ -9,6 +9,7 @@ import pytest
 
 from fem.calibration import (
     CALIBRATION_FILE,
+    calibrate_command,
     calibrated,
     calibration_file,
     check_reference,
@@ -110,6 +111,20 @@ def test_slope_needs_a_rising_reference_and_a_known_target():
         fit_theta0(lambda th: ThickWall(theta0_deg=th), flat, "slope")
     with pytest.raises(ValueError, match="^target='rms' is invalid: expected one of slope"):
         fit_theta0(lambda th: ThickWall(theta0_deg=th), flat, "rms")
+
+
+@pytest.mark.parametrize(("key", "command"), [
+    ("axisym", "mkm fem calibrate --model axisym --out lab.json"),
+    ("axisym-sliding", "mkm fem calibrate --model axisym --braid sliding --out lab.json"),
+    ("eq2-braid", "mkm fem calibrate --model eq2 --diameter braid --out lab.json"),
+    ("thickwall", "mkm fem calibrate --model thickwall --out lab.json"),
+])
+def test_a_missing_entry_names_the_command_that_writes_it(key, command):
+    from mkm.cli import build_parser
+
+    assert calibrate_command(key, "lab.json") == command
+    args = build_parser().parse_args(command.split()[1:])  # the command is one mkm understands
+    assert args.out == "lab.json"
 
 
 def test_selected_file_is_every_models_default_and_is_restored(tmp_path):
