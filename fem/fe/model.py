@@ -132,9 +132,9 @@ class HalfMuscle:
         terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
         self.assembler = Assembler(terms, self.n)
         self._reactions: dict[tuple[float, bytes], float] = {}
-        # the ramp's tangents keep one ordering (the free path's, with the pressure's dense
-        # column, fill in badly under it: SuperLU's own ordering there)
-        self._held_lu = OrderedLU()
+        # the ramp's tangents (the leading block: without the cap) keep one ordering; the free
+        # path's, with the pressure's dense column, fill in badly under it: SuperLU's own there
+        self._held_lu = OrderedLU(leading=self.n - 1)
 
     def rest_state(self) -> np.ndarray:
         """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
@@ -270,9 +270,9 @@ class HalfMuscle:
         """
         U = y[-1]
 
-        def held(x, P):
+        def held(x, P):  # K's leading block is the held tangent: self._held_lu reads only it
             r, K, _ = self.assemble(np.append(x, U), P)
-            return r[:-1], K[:-1, :-1]
+            return r[:-1], K
 
         path = load_path(held, y[:-1], P_start_MPa, pressures_MPa,
                          check=lambda x, P: self.inverted(np.append(x, U)),

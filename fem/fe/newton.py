@@ -39,36 +39,43 @@ class OrderedLU:
     the first matrix of a pattern and reused, and SuperLU factorises the symmetrically permuted
     matrix in its natural column order, in its symmetric mode (a diagonal pivot is taken while
     it is at least a tenth of the column's largest: the tangent of an energy is symmetric, and
-    this keeps the band). For the pressure ramp of the FE model's held muscle: 1.0-1.2 ms
-    instead of 1.6-2.0 ms a factorisation on the medium mesh, 8-10 instead of 11-18 on the
-    fine. A matrix of another pattern gets its own ordering; a pattern with a dense column
-    (the FE model's free path, the pressure unknown) fills in badly under this ordering and is
-    better left to ``splu``. Call it like ``splu``: ``OrderedLU()(A).solve(b)``.
+    this keeps the band). The permuted matrix is gathered from the matrix's entries by one
+    precomputed index, in whatever sparse format it comes, so no slicing or format conversion
+    is repeated either. ``leading=m`` factorises the leading ``m x m`` block only (the FE
+    tangent without the held cap's row and column). A matrix of another pattern gets its own
+    ordering; a pattern with a dense column (the FE model's free path, the pressure unknown)
+    fills in badly under this ordering and is better left to ``splu``. Call it like ``splu``:
+    ``OrderedLU()(A).solve(b)``.
     """
 
-    def __init__(self):
-        self._indptr = self._indices = None
+    def __init__(self, leading: int | None = None):
+        self.leading = leading
+        self._pattern = None
 
     def __call__(self, A) -> _PermutedLU:
-        A = sp.csc_matrix(A)
-        if not A.has_sorted_indices:  # one pattern, one spelling of it
-            A = A.sorted_indices()
-        if not (self._indptr is not None and np.array_equal(A.indptr, self._indptr)
-                and np.array_equal(A.indices, self._indices)):
+        A = A if getattr(A, "format", None) in ("csr", "csc") else sp.csc_matrix(A)
+        pattern = (A.format, A.shape, A.indptr, A.indices)
+        if self._pattern is None or not (
+                pattern[:2] == self._pattern[:2]
+                and all(a is b or np.array_equal(a, b)
+                        for a, b in zip(pattern[2:], self._pattern[2:], strict=True))):
             self._order(A)
+            self._pattern = (A.format, A.shape, A.indptr.copy(), A.indices.copy())
         permuted = sp.csc_matrix((A.data[self._source], self._p_indices, self._p_indptr),
-                                 shape=A.shape)
+                                 shape=(self._perm.size,) * 2)
         lu = splu(permuted, permc_spec="NATURAL", diag_pivot_thresh=0.1,
                   options={"SymmetricMode": True})
         return _PermutedLU(lu, self._perm, self._inverse)
 
     def _order(self, A) -> None:
-        self._indptr, self._indices = A.indptr.copy(), A.indices.copy()
-        self._perm = reverse_cuthill_mckee(A.tocsr(), symmetric_mode=False)
+        # A's entries numbered 1..nnz in its own storage order (1-based: no zero is dropped)
+        numbered = A.__class__((np.arange(1.0, A.nnz + 1.0), A.indices, A.indptr),
+                               shape=A.shape).tocsc()
+        if self.leading is not None:
+            numbered = numbered[:self.leading, :self.leading]
+        self._perm = reverse_cuthill_mckee(numbered.tocsr(), symmetric_mode=False)
         self._inverse = np.argsort(self._perm)
-        # where each entry of the permuted matrix comes from in A.data (1-based: no zeros)
-        numbered = sp.csc_matrix((np.arange(1.0, A.nnz + 1.0), A.indices, A.indptr),
-                                 shape=A.shape)[self._perm][:, self._perm].tocsc()
+        numbered = numbered[self._perm][:, self._perm].tocsc()
         numbered.sort_indices()
         self._source = numbered.data.astype(np.intp) - 1
         self._p_indices, self._p_indptr = numbered.indices, numbered.indptr
@@ -84,6 +91,10 @@ class _PermutedLU:
         return self._lu.solve(np.asarray(b, dtype=float)[self._perm])[self._inverse]
 
 
+def _splu(jacobian):
+    return splu(jacobian.tocsc())
+
+
 def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20,
            residual_floor: float = 0.0, check=None,
            factorize=None) -> tuple[np.ndarray, NewtonReport]:
@@ -93,13 +104,14 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
     ``residual_floor``, the size of a residual that is round-off for the caller) and the last
     increment, or the next one estimated with the last factorisation, is below ``xtol`` times
     ``|x|``; a start already below the floor (an exact predictor) is converged after zero
-    iterations. ``factorize(csc_matrix)`` returns an object with ``solve(b)`` (default
-    ``splu``; or an :class:`OrderedLU` kept across the solves of one problem). An early rise of
+    iterations. ``factorize(jacobian)`` returns an object with ``solve(b)`` (default: SuperLU
+    of the jacobian; or an :class:`OrderedLU` kept across the solves of one problem, which may
+    read the jacobian as the leading block of a larger matrix). An early rise of
     the residual is not called divergence (full Newton often overshoots in the first
     iterations); only non-finite numbers, a state rejected by ``check`` or ``maxiter``
     iterations stop it.
     """
-    factorize = factorize or splu
+    factorize = factorize or _splu
     x = np.array(x0, dtype=float)
     r, jac = fun(x)
     first = float(np.linalg.norm(r))
@@ -110,7 +122,7 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
     tol = max(rtol * first, residual_floor)
     for it in range(1, maxiter + 1):
         try:
-            lu = factorize(jac.tocsc())
+            lu = factorize(jac)
         except RuntimeError:  # SuperLU: "Factor is exactly singular"
             return x, NewtonReport(False, it, reason="singular tangent")
         dx = lu.solve(-r)
