@@ -21,7 +21,13 @@ from fem.records import file_sha256, provenance, user_cache
 from surrogate.estimators import BEST, make_estimator
 from surrogate.model import SurrogateForceModel
 from surrogate.training_data import DEFAULT_DATASET, load_training_data
-from surrogate.validation import MUSCLE_SPLITS, fit_params, muscle_split_scores
+from surrogate.validation import (
+    MUSCLE_SPLITS,
+    coverage,
+    fit_params,
+    muscle_split_scores,
+    predict_with_std,
+)
 
 CACHE_DIR = user_cache("surrogate")
 
@@ -68,10 +74,15 @@ def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, splits: int = M
     metadata = {"kind_requested": kind, "random_state": random_state,
                 "dataset": data.summary(), "metrics": metrics, "trained": provenance()}
     if calibration is not None:
+        # what the calibration reached on its own muscles (the errors are not normal: not 68 / 95 %)
+        force, std = predict_with_std(estimator, calibration.X)
         metadata["std_calibration"] = {
             "path": calibration.path, "sha256": calibration.sha256,
             "n_muscles": calibration.n_muscles, "seeds": calibration.provenance.get("seeds"),
-            "std_scale": float(estimator.std_scale_)}
+            "std_scale": float(estimator.std_scale_), "std_power": float(estimator.std_power_),
+            "std_reference": float(estimator.std_reference_),
+            "within_1std": coverage(calibration.y - force, std, 1.0),
+            "within_2std": coverage(calibration.y - force, std, 2.0)}
     model = SurrogateForceModel(estimator, resolved, data.inputs, data.fixed, data.box,
                                 metadata)
     metrics["test_muscles"] = _test_muscle_metrics(model)
