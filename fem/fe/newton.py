@@ -97,7 +97,7 @@ def _splu(jacobian):
 
 def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20,
            residual_floor: float = 0.0, check=None,
-           factorize=None) -> tuple[np.ndarray, NewtonReport]:
+           factorize=None, accept=None) -> tuple[np.ndarray, NewtonReport]:
     """Solve ``fun(x) = 0`` from ``x0``; ``fun`` returns ``(residual, sparse jacobian)``.
 
     Converged when the residual fell below ``rtol`` times the first residual (or below
@@ -106,9 +106,12 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
     ``|x|``; a start already below the floor (an exact predictor) is converged after zero
     iterations. ``factorize(jacobian)`` returns an object with ``solve(b)`` (default: SuperLU
     of the jacobian; or an :class:`OrderedLU` kept across the solves of one problem, which may
-    read the jacobian as the leading block of a larger matrix). An early rise of
-    the residual is not called divergence (full Newton often overshoots in the first
-    iterations); only non-finite numbers, a state rejected by ``check`` or ``maxiter``
+    read the jacobian as the leading block of a larger matrix). ``accept(x, step)``, the
+    caller's own test of an iterate whose residual fell below the first one, given the next
+    Newton step estimated by the factorisation at hand, may call ``x`` converged earlier (the
+    FE model: when that step would change the force it reports by less than it needs). An
+    early rise of the residual is not called divergence (full Newton often overshoots in the
+    first iterations); only non-finite numbers, a state rejected by ``check`` or ``maxiter``
     iterations stop it.
     """
     factorize = factorize or _splu
@@ -136,6 +139,8 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
             return x, NewtonReport(False, it, reason="non-finite residual")
         norm = float(np.linalg.norm(r))
         rel = norm / first
+        if accept is not None and norm < first and accept(x, lu.solve(-r)):
+            return x, NewtonReport(True, it, residual=rel)
         if norm <= tol:
             # the increment that would come next, by the factorisation at hand (a chord step:
             # one back-substitution, no assembly or factorisation), tells whether x has

@@ -105,3 +105,19 @@ def test_newton_reports_a_singular_tangent_through_ordered_lu():
 
     _, report = newton(flat, [0.0, 0.0], factorize=OrderedLU())
     assert not report.converged and report.reason == "singular tangent"
+
+
+def test_accept_stops_newton_early_and_only_when_asked():
+    # x^3 = 8 from x = 1: the caller accepts once the estimated next step is below 1e-3
+    steps = []
+
+    def accept(x, step):
+        steps.append(abs(step[0]))
+        return abs(step[0]) < 1e-3
+
+    x, report = newton(cubic, [1.0], accept=accept)
+    strict, strict_report = newton(cubic, [1.0])
+    assert report.converged and report.iterations < strict_report.iterations
+    # the estimated next step is the error left, to second order
+    assert abs(abs(x[0] - strict[0]) - steps[-1]) < 0.01 * steps[-1]
+    assert steps[-1] < 1e-3 <= min(steps[:-1])
