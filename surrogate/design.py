@@ -147,7 +147,9 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
     least sure of the force at the top of the box's pressure range, chosen greedily among
     ``candidates`` random muscles: each pick conditions both processes on it (their posterior
     covariance, rank-one update with the fitted noise), so picks spread out instead of piling
-    up in one corner."""
+    up in one corner. The processes' variance is weighted by the square of the estimator's
+    calibrated std factor (``c (log k_A / m_ref)^beta``): its errors grow with the end-effect
+    correction, largest for short muscles at a low braid angle, and so do the picks there."""
     pool = random_muscles(candidates, seed)
     P_top = BOX["pressure_bar"][1]
     values = {"pressure_bar": np.full(len(pool), P_top), **{p: pool[p].to_numpy()
@@ -155,6 +157,8 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
     X = np.column_stack([values[name] for name in estimator.inputs])
     v, z = estimator._muscle(X)
     zs = (z - estimator.z_mean_) / estimator.z_scale_
+    _, m_A, _, _, _ = estimator._log_k(X)
+    calibrated = estimator._calibrated(m_A) ** 2
     A, gain_A, Pstar, gain_P = estimator._from_logk(v, 0.0 * zs[:, 0], np.ones(len(zs)),
                                                     0.0 * zs[:, 0], np.ones(len(zs)))
     # the force's relative sensitivity to each process's log k at the top pressure
@@ -169,7 +173,8 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
         noises.append(gp.kernel_.k2.noise_level * gp._y_train_std ** 2)
     chosen = []
     for _ in range(int(n_muscles)):
-        score = sum(w**2 * np.diag(C) for w, C in zip(weights, covariances, strict=True))
+        score = calibrated * sum(w**2 * np.diag(C)
+                                 for w, C in zip(weights, covariances, strict=True))
         score[chosen] = -np.inf
         pick = int(np.argmax(score))
         chosen.append(pick)
