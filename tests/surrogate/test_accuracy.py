@@ -38,10 +38,10 @@ def test_default_surrogate_on_the_test_muscles(best):
 
 
 def test_muscle_held_out_errors(best):
-    # Whole muscles held out (10 splits of 20 % of the 120 muscles). A held-out corner of the
-    # box is an extrapolation in up to 7 inputs at once. Measured: RMSE median 0.42 N
-    # [0.29-1.56]; the paper's best net reached 7.30 N on rows of muscles it had seen. Pins at
-    # ~2.5x the measured median and max.
+    # Whole muscles held out (10 splits of 20 % of the 144 muscles). A held-out corner of the
+    # box is an extrapolation in up to 7 inputs at once. Measured: RMSE median 0.53 N
+    # [0.22-2.19]; the paper's best net reached 7.30 N on rows of muscles it had seen. Pins at
+    # ~2x the measured median and max.
     held_out = best.metadata["metrics"]["muscle_held_out"]
     assert held_out["rmse_test_N"]["median"] < 1.0
     assert held_out["rmse_test_N"]["max"] < 4.0
@@ -52,7 +52,8 @@ def test_muscle_held_out_std_coverage(best):
     # within 2 (pooled over the 10 splits; points both the FE and the surrogate put at exactly
     # zero force, below the threshold, say nothing of the std and are left out). The std's
     # scale and power come from the shipped random calibration muscles, not from these.
-    # Measured: 71.0 % and 95.2 %.
+    # Measured: 68.7 % and 91.3 % (the 48 adaptive muscles sit where the std is largest, so
+    # splits hold out more of the hard corner than a random draw does; off grid: 67.9 / 94.6).
     held_out = best.metadata["metrics"]["muscle_held_out"]
     assert held_out["within_1std"]["pooled"] == pytest.approx(0.68, abs=0.07)
     assert held_out["within_2std"]["pooled"] == pytest.approx(0.95, abs=0.04)
