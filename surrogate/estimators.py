@@ -326,7 +326,8 @@ def coverage_fit(error, std_of) -> tuple[float, float]:
     its tolerance (:data:`COVERAGE_TARGETS`: a 7-point miss of the 1-std fraction costs as much
     as a 4-point miss of the 2-std one), on the grid :data:`STD_SCALES` x :data:`STD_POWERS`
     (the fractions are step functions of the parameters: no gradient); of equal misfits, the
-    power closest to 0.
+    smallest scale of the power closest to 0. ``std_of`` is called with ``c`` a column of every
+    scale of the grid and returns one row of stds per scale.
 
     Errors heavier-tailed than normal cannot meet both fractions: weighting the misses by the
     tolerances keeps the 2-std fraction, the one the issue allows least room, nearer its target.
@@ -334,12 +335,12 @@ def coverage_fit(error, std_of) -> tuple[float, float]:
     error = np.abs(np.asarray(error, dtype=float))
     best, best_misfit = (1.0, 0.0), np.inf
     for beta in sorted(STD_POWERS, key=abs):
-        for c in STD_SCALES:
-            std = std_of(c, beta)
-            misfit = sum(((np.mean(error <= k * std) - target) / tolerance) ** 2
-                         for k, target, tolerance in COVERAGE_TARGETS)
-            if misfit < best_misfit:
-                best, best_misfit = (float(c), float(beta)), misfit
+        std = std_of(STD_SCALES[:, None], beta)
+        misfit = sum(((np.mean(error <= k * std, axis=1) - target) / tolerance) ** 2
+                     for k, target, tolerance in COVERAGE_TARGETS)
+        i = int(np.argmin(misfit))
+        if misfit[i] < best_misfit:
+            best, best_misfit = (float(STD_SCALES[i]), float(beta)), misfit[i]
     return best
 
 
@@ -486,7 +487,8 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
         cdf, pdf = ndtr(t), np.exp(-0.5 * t**2) / np.sqrt(2.0 * np.pi)  # scipy.stats.norm's
         e1 = mu * cdf + s * pdf
         e2 = (mu**2 + s**2) * cdf + mu * s * pdf
-        rel = np.divide(s_A, A, out=np.zeros_like(A), where=A > 0)
+        rel = np.divide(s_A, A, out=np.zeros(np.broadcast_shapes(np.shape(s_A), np.shape(A))),
+                        where=A > 0)
         var = np.maximum(A**2 * (np.exp(2 * rel**2) * e2 - np.exp(rel**2) * e1**2), 0.0)
         floor = A * self.linearity_bar_[np.digitize(P - Pstar, LINEARITY_BINS_BAR[1:-1])]
         return force, var, np.where(force > 0, floor, 0.0)
