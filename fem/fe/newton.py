@@ -54,11 +54,7 @@ class OrderedLU:
 
     def __call__(self, A) -> _PermutedLU:
         A = A if getattr(A, "format", None) in ("csr", "csc") else sp.csc_matrix(A)
-        pattern = (A.format, A.shape, A.indptr, A.indices)
-        if self._pattern is None or not (
-                pattern[:2] == self._pattern[:2]
-                and all(a is b or np.array_equal(a, b)
-                        for a, b in zip(pattern[2:], self._pattern[2:], strict=True))):
+        if not self._same_pattern(A):
             self._order(A)
             self._pattern = (A.format, A.shape, A.indptr.copy(), A.indices.copy())
         permuted = sp.csc_matrix((A.data[self._source], self._p_indices, self._p_indptr),
@@ -66,6 +62,13 @@ class OrderedLU:
         lu = splu(permuted, permc_spec="NATURAL", diag_pivot_thresh=0.1,
                   options={"SymmetricMode": True})
         return _PermutedLU(lu, self._perm, self._inverse)
+
+    def _same_pattern(self, A) -> bool:
+        if self._pattern is None:
+            return False
+        fmt, shape, indptr, indices = self._pattern
+        return (A.format == fmt and A.shape == shape and np.array_equal(A.indptr, indptr)
+                and np.array_equal(A.indices, indices))
 
     def _order(self, A) -> None:
         # A's entries numbered 1..nnz in its own storage order (1-based: no zero is dropped)

@@ -13,32 +13,22 @@ from fem.calibration import CALIBRATION_FILE
 from fem.ladder import make_model, model_names
 from fem.paper import CASE_I_CSV
 from fem.records import read_prediction_header
-from mkm.cli import main
 
 CASE_I = CASE_I_CSV
 MODELS = ", ".join(model_names())  # grows as rungs are registered
 SOLVE = ["fem", "solve", "--model", "eq2", "--D0", "35", "--t0", "2.5"]
 
 
-def run(argv, capsys):
-    """Exit status, stdout and stderr of ``mkm argv`` run in-process."""
-    try:
-        code = main(argv)
-    except SystemExit as exc:  # argparse errors leave through parser.exit
-        code = exc.code
-    out, err = capsys.readouterr()
-    return code, out, err
 
-
-def solve_frame(argv, capsys) -> pd.DataFrame:
-    code, out, err = run(argv, capsys)
+def solve_frame(argv, mkm_run) -> pd.DataFrame:
+    code, out, err = mkm_run(argv)
     assert code == 0, err
     return pd.read_csv(io.StringIO(out), comment="#")
 
 
-def test_eps_as_percentage_equals_fraction(capsys):
-    percent = solve_frame([*SOLVE, "--eps", "5%"], capsys)
-    fraction = solve_frame([*SOLVE, "--eps", "0.05"], capsys)
+def test_eps_as_percentage_equals_fraction(mkm_run):
+    percent = solve_frame([*SOLVE, "--eps", "5%"], mkm_run)
+    fraction = solve_frame([*SOLVE, "--eps", "0.05"], mkm_run)
     assert np.all(percent.eps == 0.05)
     pd.testing.assert_frame_equal(percent, fraction)
 
@@ -50,15 +40,15 @@ def test_eps_as_percentage_equals_fraction(capsys):
     ("0, 1.5,2.5", [0.0, 1.5, 2.5]),
     ("2", [2.0]),
 ])
-def test_pressures_range_and_list(text, expected, capsys):
-    frame = solve_frame([*SOLVE, "--eps", "0.05", "--pressures", text], capsys)
+def test_pressures_range_and_list(text, expected, mkm_run):
+    frame = solve_frame([*SOLVE, "--eps", "0.05", "--pressures", text], mkm_run)
     np.testing.assert_allclose(frame.pressure_bar, expected, rtol=0, atol=1e-12)
 
 
-def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, capsys):
+def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     out = tmp_path / "sweep.csv"
-    code, stdout, err = run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
-                             "--eps", "15%", "--out", str(out)], capsys)
+    code, stdout, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
+                                 "--eps", "15%", "--out", str(out)])
     assert code == 0 and stdout == "" and err == f"wrote {out} and sweep.json\n"
     assert not out.read_text().startswith("#")  # plain CSV: the metadata is in the sidecar
     header = read_prediction_header(out)
@@ -109,8 +99,8 @@ EPS = "expected a shortening ratio in [0, 1) (a fraction)"
     (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "0:x:1"],
      "mkm fem solve: error: argument --pressures: --pressures='x' is not a number"),
 ])
-def test_bad_input_is_one_line_with_status_2(args, message, capsys):
-    code, out, err = run(["fem", "solve", "--model", "eq2", *args], capsys)
+def test_bad_input_is_one_line_with_status_2(args, message, mkm_run):
+    code, out, err = mkm_run(["fem", "solve", "--model", "eq2", *args])
     assert code == 2 and out == ""
     assert err.startswith(message) and err.count("\n") == 1 and "Traceback" not in err
 
@@ -127,17 +117,17 @@ def test_bad_input_is_one_line_with_status_2(args, message, capsys):
     (["--model", "thickwall", "--theta0", "60"],
      "mkm: error: theta0_deg=60 is invalid: expected 0 < theta0 < 54.7 deg"),
 ])
-def test_bad_model_choice_is_one_line_with_status_2(args, message, capsys):
+def test_bad_model_choice_is_one_line_with_status_2(args, message, mkm_run):
     argv = ["fem", "solve", "--D0", "35", "--t0", "2.5", "--eps", "0.05", *args]
-    code, out, err = run(argv, capsys)
+    code, out, err = mkm_run(argv)
     assert code == 2 and out == ""
     assert err.startswith(message) and err.count("\n") == 1
 
 
-def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(capsys):
+def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(mkm_run):
     before = CALIBRATION_FILE.read_bytes()
-    code, out, _ = run(["fem", "calibrate", "--model", "thickwall", "--dry-run",
-                           "--reference", str(CASE_I)], capsys)
+    code, out, _ = mkm_run(["fem", "calibrate", "--model", "thickwall", "--dry-run",
+                            "--reference", str(CASE_I)])
     assert code == 0 and CALIBRATION_FILE.read_bytes() == before
     lines = out.splitlines()
     assert lines[0].startswith("model thickwall: theta0 = ") and "RMSE" in lines[0]
@@ -179,12 +169,12 @@ def test_every_subcommand_has_a_description_and_an_example():
         assert "%%" not in text, f"mkm {' '.join(name)}: '%%' in the help text"
 
 
-def test_plot_without_a_display_says_so_and_records(monkeypatch, tmp_path, capsys):
+def test_plot_without_a_display_says_so_and_records(monkeypatch, tmp_path, mkm_run):
     monkeypatch.setattr(sys, "platform", "linux")
     monkeypatch.delenv("DISPLAY", raising=False)
     monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
-    code, out, err = run(["acquire", "--plot", "--no-progress", "--pressures", "0.5,1",
-                          "--out", str(tmp_path)], capsys)
+    code, out, err = mkm_run(["acquire", "--plot", "--no-progress", "--pressures", "0.5,1",
+                              "--out", str(tmp_path)])
     assert code == 0, err
     assert "mkm: warning: --plot needs a display" in err
     assert Path(out.strip().splitlines()[-1]).is_dir()  # the run was recorded anyway

@@ -15,7 +15,6 @@ import pytest
 from fem.eq2 import chou_hannaford_eps_max
 from fem.fe.model import Axisym
 from fem.thickwall import klute_hannaford_threshold_pressure
-from mkm.cli import main
 from mkm.design import (
     Requirement,
     design,
@@ -32,14 +31,6 @@ def fe_force(D0, t0, pressure_bar, eps, theta0_deg):
     return float(Axisym(theta0_deg=theta0_deg, mesh=MESH).predict(pressure_bar, D0, t0,
                                                                   eps).force_N)
 
-
-def run(argv, capsys):
-    try:
-        code = main(argv)
-    except SystemExit as exc:  # argparse errors leave through parser.exit
-        code = exc.code
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_requirement_syntax():
@@ -147,22 +138,22 @@ def test_conflicting_constraints_are_named():
     (["--require", "100N@2bar,eps=0.1", "--max-pressure", "1"], "conflicts with the largest"),
     ([], "no requirement given"),
 ])
-def test_cli_errors_are_one_line(argv, message, capsys, tmp_path):
-    code, out, err = run(["design", *argv, "--out", str(tmp_path / "d")], capsys)
+def test_cli_errors_are_one_line(argv, message, mkm_run, tmp_path):
+    code, out, err = mkm_run(["design", *argv, "--out", str(tmp_path / "d")])
     assert code == 2
     assert len(err.strip().splitlines()) == 1 and "error:" in err and message in err
     assert not (tmp_path / "d").exists()
 
 
-def test_cli_spec_file_writes_csv_json_and_html(tmp_path, capsys):
+def test_cli_spec_file_writes_csv_json_and_html(tmp_path, mkm_run):
     spec = tmp_path / "spec.toml"
     spec.write_text('objective = "min-rubber-volume"\ntop = 1\n'
                     "[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = 0.10\n"
                     "[[requirement]]\nforce_N = 250\npressure_bar = 2.5\neps = \"20%\"\n"
                     "[constraints]\nt0_mm = [2.0, 3.0]\n", encoding="utf-8")
     out = tmp_path / "design"
-    code, stdout, err = run(["design", "--spec", str(spec), "--mesh", MESH, "--no-progress",
-                             "--out", str(out)], capsys)
+    code, stdout, err = mkm_run(["design", "--spec", str(spec), "--mesh", MESH, "--no-progress",
+                                 "--out", str(out)])
     assert code == 0, err
     assert stdout.strip() == str(out / "design.html")
     assert err.startswith("mkm design: ") and "1 meets every requirement" in err
@@ -179,10 +170,10 @@ def test_cli_spec_file_writes_csv_json_and_html(tmp_path, capsys):
     assert html.count("<img ") == 3  # one contour figure per requirement, the FE curves
 
 
-def test_spec_file_unknown_key(tmp_path, capsys):
+def test_spec_file_unknown_key(tmp_path, mkm_run):
     spec = tmp_path / "spec.toml"
     spec.write_text("[constraints]\nD0 = 40\n", encoding="utf-8")
-    code, _, err = run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")], capsys)
+    code, _, err = mkm_run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")])
     assert code == 2 and "unknown constraint(s) D0" in err
 
 

@@ -132,11 +132,7 @@ def test_surrogate_kinds_default_all_and_typos():
         surrogate_kinds("muscle-gp,physcs")
 
 
-def test_study_cli_refuses_an_unknown_surrogate_kind(capsys):
-    from mkm.cli import main
-
-    with pytest.raises(SystemExit) as exc:
-        main(["study", "--surrogates", "gpp"])
-    assert exc.value.code == 2
-    err = capsys.readouterr().err.strip().splitlines()
-    assert "unknown kind gpp" in err[-1] and "Traceback" not in "".join(err)
+def test_study_cli_refuses_an_unknown_surrogate_kind(mkm_run):
+    code, _, err = mkm_run(["study", "--surrogates", "gpp"])
+    assert code == 2
+    assert "unknown kind gpp" in err.strip().splitlines()[-1] and "Traceback" not in err
