@@ -9,9 +9,9 @@ joins the procedure ``sequence``, the worker ``worker`` and the recorder ``recor
 ``operator`` and ``liveplot``. The ``mkm`` subcommands are in ``mkm.cli.bench``.
 """
 
-from bench.config import BenchConfig, load_config, parse_config
-from bench.run import BenchRun, RunResult, acquire
-from bench.storage import RunMeta, RunStatus, Sample, aggregate_samples, load_run
+from mkm.bench.config import BenchConfig, load_config, parse_config
+from mkm.bench.run import BenchRun, RunResult, acquire
+from mkm.bench.storage import RunMeta, RunStatus, Sample, aggregate_samples, load_run
 
 __all__ = ["BenchConfig", "BenchRun", "RunMeta", "RunResult", "RunStatus", "Sample", "acquire",
            "aggregate_samples", "load_config", "load_run", "parse_config"]

@@ -3,8 +3,10 @@
 A backend is the transport between the run and the bench hardware (pymeasure's adapter/driver
 split): it opens one analog-input task holding every input and one analog-output channel for the
 regulator command, reads blocks of raw volts on a hardware clock, writes the command, and closes.
-:class:`bench.ni.NIBackend` talks to an NI USB-6001 through nidaqmx; :class:`bench.sim.SimBackend`
-is a simulated bench with the same signature. The run (``bench.run``) only sees this protocol, so
+:class:`mkm.bench.ni.NIBackend` talks to an NI USB-6001 through nidaqmx;
+:class:`mkm.bench.sim.SimBackend`
+is a simulated bench with the same signature. The run (``mkm.bench.run``) only sees this protocol,
+so
 the real bench and the simulation share one code path.
 
 Failures are raised as :class:`BenchError` subclasses with one-line messages; NI-DAQmx error codes
@@ -108,7 +110,7 @@ class Backend(Protocol):
     """Transport to the bench: one AI task with every input, one AO command, a hardware clock.
 
     ``bench_key`` names the physical bench (backend and device, ``ni-Dev1``) for the markers of
-    :mod:`bench.unvented`.
+    :mod:`mkm.bench.unvented`.
     """
 
     bench_key: str

@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from fem.ranges import parse_pressures
+from mkm.fem.ranges import parse_pressures
 
 DEFAULT_CONFIG = "paper_prototype.toml"
 
@@ -322,8 +322,8 @@ class Faults:
 
 @dataclass(frozen=True)
 class Sim:
-    """The simulated bench (:mod:`bench.sim`): the muscle's static force from ``model`` (a
-    ``fem.ladder`` rung; ``axisym`` on the ``fe_mesh`` mesh), braid friction, creep, noise."""
+    """The simulated bench (:mod:`mkm.bench.sim`): the muscle's static force from ``model`` (a
+    ``mkm.fem.ladder`` rung; ``axisym`` on the ``fe_mesh`` mesh), braid friction, creep, noise."""
 
     model: str = "axisym"
     fe_mesh: str = "medium"
@@ -340,7 +340,7 @@ class Sim:
     faults: Faults = field(default_factory=Faults)
 
     def check(self):
-        from fem.ladder import model_names
+        from mkm.fem.ladder import model_names
 
         if self.model not in model_names():
             raise ValueError(f"sim.model={self.model!r} is unknown: expected one of "
@@ -549,7 +549,7 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
     ``mkm acquire --eps --pressures`` do; the result is validated again.
     """
     if path is None:
-        text = resources.files("bench").joinpath("configs", DEFAULT_CONFIG).read_text("utf-8")
+        text = resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG).read_text("utf-8")
         config = parse_config(text, f"bench/configs/{DEFAULT_CONFIG}")
     else:
         path = Path(path)

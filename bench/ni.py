@@ -1,4 +1,4 @@
-"""The NI USB-6001 backend: the :class:`bench.backend.Backend` protocol over nidaqmx.
+"""The NI USB-6001 backend: the :class:`mkm.bench.backend.Backend` protocol over nidaqmx.
 
 The only module that imports ``nidaqmx`` (inside methods, so the package imports without it).
 One AI task holds every input (the USB-6001 has one multiplexed ADC): the load cell and, with an
@@ -8,8 +8,8 @@ with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the
 A second task writes the regulator command on AO0, on demand. ``close`` writes the vent command
 before clearing the tasks: the USB-6001's AO keeps its last value when a task is closed.
 
-NI-DAQmx status codes are turned into :mod:`bench.backend` errors; a missing driver (always the
-case on Linux) into :class:`~bench.backend.DriverMissing` with what to do about it.
+NI-DAQmx status codes are turned into :mod:`mkm.bench.backend` errors; a missing driver (always the
+case on Linux) into :class:`~mkm.bench.backend.DriverMissing` with what to do about it.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from contextlib import contextmanager, suppress
 
 import numpy as np
 
-from bench.backend import (
+from mkm.bench.backend import (
     AOWriteFailed,
     BenchError,
     Block,
@@ -27,7 +27,7 @@ from bench.backend import (
     DriverMissing,
     error_for_code,
 )
-from bench.config import USB6001, USB6001_RANGE_V, BenchConfig
+from mkm.bench.config import USB6001, USB6001_RANGE_V, BenchConfig
 
 DRIVER_MISSING = ("NI-DAQmx driver not found: install NI-DAQmx (Windows; NI does not support the "
                   "USB-6001 on Linux) or run on the simulated bench with --backend sim")
@@ -37,7 +37,7 @@ VENT_V = 0.0  # an ITV-class regulator exhausts at 0 V command
 
 @contextmanager
 def daq_errors(default: type[BenchError] = BenchError):
-    """Translate nidaqmx exceptions into :mod:`bench.backend` errors with one-line messages."""
+    """Translate nidaqmx exceptions into :mod:`mkm.bench.backend` errors with one-line messages."""
     import nidaqmx.errors
 
     try:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from fem.ranges import parse_number
+from mkm.fem.ranges import parse_number
 
 
 class Operator(Protocol):
@@ -52,7 +52,7 @@ class ConsoleOperator:
 
 
 class SimOperator:
-    """The operator's actions on a :class:`bench.sim.SimBackend`."""
+    """The operator's actions on a :class:`mkm.bench.sim.SimBackend`."""
 
     def __init__(self, backend):
         self.backend = backend

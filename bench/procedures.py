@@ -1,7 +1,7 @@
 """Short bench procedures besides a run: tare, load-cell calibration, dry-run check, vent.
 
 Each opens the device in :func:`session`, which vents and closes it whatever happens, and first
-vents a bench left pressurised by a run that died without venting (:mod:`bench.unvented`),
+vents a bench left pressurised by a run that died without venting (:mod:`mkm.bench.unvented`),
 saying which run it was.
 """
 
@@ -14,12 +14,12 @@ from contextlib import contextmanager
 import numpy as np
 from scipy import stats
 
-from bench.backend import Backend, BenchError, DeviceInfo
-from bench.config import BenchConfig
-from bench.run import make_backend, make_operator, notify_stderr
-from bench.sequence import estimate_duration_s, plan_steps, validate_tare
-from bench.sim import STANDARD_GRAVITY
-from bench.unvented import vent_unvented
+from mkm.bench.backend import Backend, BenchError, DeviceInfo
+from mkm.bench.config import BenchConfig
+from mkm.bench.run import make_backend, make_operator, notify_stderr
+from mkm.bench.sequence import estimate_duration_s, plan_steps, validate_tare
+from mkm.bench.sim import STANDARD_GRAVITY
+from mkm.bench.unvented import vent_unvented
 
 VENTED_BELOW_BAR = 0.05  # `mkm vent` waits for the monitor to read below this
 VENT_WAIT_S = 10.0
@@ -48,7 +48,7 @@ def mean_volts(backend: Backend, config: BenchConfig, seconds: float) -> np.ndar
 def tare(config: BenchConfig, backend: str = "sim", clock: str = "virtual",
          seconds: float = 5.0) -> dict:
     """Load-cell offset at 0 bar: mean and spread of ``seconds`` of volts, vented; checked by
-    :func:`bench.sequence.validate_tare` (``TareInvalid`` when it would stop a run)."""
+    :func:`mkm.bench.sequence.validate_tare` (``TareInvalid`` when it would stop a run)."""
     device = make_backend(config, backend, clock)
     with session(device) as info:
         device.start()
@@ -167,8 +167,8 @@ def check(config: BenchConfig, backend: str = "sim", clock: str = "virtual") -> 
 def braid_lock_warnings(config: BenchConfig) -> list[str]:
     """A warning when ``muscle.eps`` shortens the braid past its locking angle (54.7 deg), where
     Equation 2 leaves its range and the muscle pulls little or nothing."""
-    from fem.calibration import calibrated
-    from fem.eq2 import LOCKING_ANGLE_DEG, Eq2, chou_hannaford_eps_max
+    from mkm.fem.calibration import calibrated
+    from mkm.fem.eq2 import LOCKING_ANGLE_DEG, Eq2, chou_hannaford_eps_max
 
     theta0 = float(calibrated(Eq2().calibration_key)["theta0_deg"])
     eps_max = float(chou_hannaford_eps_max(theta0))

@@ -1,4 +1,4 @@
-"""The run's recorder: its folder (:class:`bench.storage.RunWriter`) and :class:`RunMeta`, kept
+"""The run's recorder: its folder (:class:`mkm.bench.storage.RunWriter`) and :class:`RunMeta`, kept
 true while the run goes (pymeasure's recorder, beside the worker and the procedure).
 
 run.json is rewritten at start, after the tare and at the end; samples, steps and commands are
@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from bench.backend import DeviceInfo
-from bench.config import BenchConfig
-from bench.storage import (
+from mkm.bench.backend import DeviceInfo
+from mkm.bench.config import BenchConfig
+from mkm.bench.storage import (
     CommandRecord,
     Gap,
     MuscleMeta,
@@ -23,7 +23,7 @@ from bench.storage import (
     Sample,
     StepRecord,
 )
-from fem.records import provenance
+from mkm.fem.records import provenance
 
 
 class Recorder:

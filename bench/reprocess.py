@@ -3,7 +3,7 @@
 ``samples.csv`` keeps the raw ``loadcell_V`` of every sample, so a run recorded with a wrong or
 outdated calibration is not lost: :func:`reprocess` writes a new run folder in which the tare
 offset is the mean of the run's own tare samples again (checked by
-:func:`bench.sequence.validate_tare` with the new settings), every ``force_N`` is
+:func:`mkm.bench.sequence.validate_tare` with the new settings), every ``force_N`` is
 ``(loadcell_V - offset) x sensitivity`` with the new ``[loadcell]`` and ``[safety]`` sections,
 and every step's hold average is taken again over the same hold window (the samples after
 ``start_s + settle_s`` up to ``end_s``). The samples are streamed, so memory does not grow with
@@ -19,10 +19,10 @@ from pathlib import Path
 
 import numpy as np
 
-from bench.config import BenchConfig
-from bench.sequence import validate_tare
-from bench.storage import CommandRecord, RunWriter, Sample, StepRecord, iter_samples, load_run
-from fem.records import file_sha256, provenance
+from mkm.bench.config import BenchConfig
+from mkm.bench.sequence import validate_tare
+from mkm.bench.storage import CommandRecord, RunWriter, Sample, StepRecord, iter_samples, load_run
+from mkm.fem.records import file_sha256, provenance
 
 
 def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | None = None

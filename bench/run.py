@@ -1,19 +1,21 @@
 """A bench run: startup, execute, shutdown (pymeasure's procedure lifecycle).
 
-:class:`BenchRun` joins three parts: the procedure (:class:`bench.sequence.Staircase`: tare,
-pre-conditioning, steps), the worker (:class:`bench.worker.Acquisition`: the acquisition loop and
-its interlocks) and the recorder (:class:`bench.recorder.Recorder`: the run folder and its
-:class:`bench.storage.RunMeta`). Everything goes to the run folder while it happens.
+:class:`BenchRun` joins three parts: the procedure (:class:`mkm.bench.sequence.Staircase`: tare,
+pre-conditioning, steps), the worker (:class:`mkm.bench.worker.Acquisition`: the acquisition loop
+and
+its interlocks) and the recorder (:class:`mkm.bench.recorder.Recorder`: the run folder and its
+:class:`mkm.bench.storage.RunMeta`). Everything goes to the run folder while it happens.
 
 Safety, in every exit path:
 
 - a bench left pressurised by a run that died without venting is vented first, and said
-  (:mod:`bench.unvented`);
+  (:mod:`mkm.bench.unvented`);
 - the pressure command is clamped to ``regulator.max_pressure_bar``; the force and pressure
-  interlocks stop the run (:mod:`bench.worker`);
+  interlocks stop the run (:mod:`mkm.bench.worker`);
 - the first Ctrl-C stops at the next block boundary (0.1 s at the default one-sample blocks);
   a second Ctrl-C, SIGTERM, SIGHUP, SIGBREAK or a closed Windows console stop at once
-  (:mod:`bench.signals`); either way, and on any error, ``shutdown`` commands the vent, closes the
+  (:mod:`mkm.bench.signals`); either way, and on any error, ``shutdown`` commands the vent, closes
+  the
   device, then records the truth in run.json. A failed vent asks for a vent by hand.
 
 The exit status of ``mkm acquire`` is :attr:`RunResult.exit_code`: 0 complete, 3 complete with
@@ -27,15 +29,15 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from bench.backend import Backend, BenchError
-from bench.config import BenchConfig
-from bench.operator import Operator
-from bench.recorder import Recorder
-from bench.sequence import Staircase, estimate_duration_s, plan_steps
-from bench.signals import StopSignal, StopSignals
-from bench.storage import RunStatus
-from bench.unvented import BenchLease, Marker, vent_unvented
-from bench.worker import Acquisition, Stop
+from mkm.bench.backend import Backend, BenchError
+from mkm.bench.config import BenchConfig
+from mkm.bench.operator import Operator
+from mkm.bench.recorder import Recorder
+from mkm.bench.sequence import Staircase, estimate_duration_s, plan_steps
+from mkm.bench.signals import StopSignal, StopSignals
+from mkm.bench.storage import RunStatus
+from mkm.bench.unvented import BenchLease, Marker, vent_unvented
+from mkm.bench.worker import Acquisition, Stop
 
 EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS = 0, 1, 2, 3
 
@@ -105,7 +107,7 @@ class _Progress:
 
 class _Plot:
     def __init__(self, title: str):
-        from bench.liveplot import LivePlot
+        from mkm.bench.liveplot import LivePlot
 
         self.plot = LivePlot(title)
 
@@ -122,7 +124,7 @@ class BenchRun:
 
     ``operator`` is needed only for a manual regulator. ``progress`` shows a tqdm bar on stderr;
     ``plot`` a live plot in another process. ``handle_signals`` installs the stop handlers of
-    :mod:`bench.signals` (only possible in the main thread). ``notify`` receives one-line
+    :mod:`mkm.bench.signals` (only possible in the main thread). ``notify`` receives one-line
     messages for the operator (a bench found unvented, a stop requested).
     """
 
@@ -278,19 +280,19 @@ class BenchRun:
 def make_backend(config: BenchConfig, backend: str = "sim", clock: str = "virtual") -> Backend:
     """The simulated (``sim``) or NI (``ni``) backend for ``config``."""
     if backend == "sim":
-        from bench.sim import SimBackend
+        from mkm.bench.sim import SimBackend
 
         return SimBackend(config, clock=clock)
     if backend == "ni":
-        from bench.ni import NIBackend
+        from mkm.bench.ni import NIBackend
 
         return NIBackend(config)
     raise ValueError(f"backend={backend!r} is invalid: expected 'sim' or 'ni'")
 
 
 def make_operator(backend: Backend) -> Operator:
-    from bench.operator import ConsoleOperator, SimOperator
-    from bench.sim import SimBackend
+    from mkm.bench.operator import ConsoleOperator, SimOperator
+    from mkm.bench.sim import SimBackend
 
     return SimOperator(backend) if isinstance(backend, SimBackend) else ConsoleOperator()
 

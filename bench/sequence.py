@@ -17,10 +17,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bench.backend import BenchError
-from bench.config import BenchConfig
-from bench.storage import StepRecord
-from bench.worker import Acquisition
+from mkm.bench.backend import BenchError
+from mkm.bench.config import BenchConfig
+from mkm.bench.storage import StepRecord
+from mkm.bench.worker import Acquisition
 
 
 @dataclass(frozen=True)

@@ -1,11 +1,11 @@
-"""The simulated bench: the :class:`bench.backend.Backend` protocol over a physical model.
+"""The simulated bench: the :class:`mkm.bench.backend.Backend` protocol over a physical model.
 
 Like ``ophyd.sim``, the simulated device has the real one's signature plus a seed and a clock, so
 the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / rate`` s) advances
 
 - the regulator: a first-order lag (time constant ``regulator_tau_s``) towards the commanded
   pressure, rate-limited to ``regulator_slew_bar_per_s``, with a 1-5 V monitor output;
-- the muscle: the static force of a physics model (``sim.model``, a ``fem.ladder`` rung; by
+- the muscle: the static force of a physics model (``sim.model``, a ``mkm.fem.ladder`` rung; by
   default the axisymmetric FE model ``axisym``, which is none of the closed forms a report
   compares, tabulated over pressure once per muscle, so a sample costs an interpolation) put
   through two effects no model of the ladder has (no friction, no time dependence there):
@@ -40,7 +40,7 @@ from collections import deque
 
 import numpy as np
 
-from bench.backend import (
+from mkm.bench.backend import (
     AOWriteFailed,
     Block,
     BufferOverflow,
@@ -48,7 +48,7 @@ from bench.backend import (
     DeviceInfo,
     ReadTimeout,
 )
-from bench.config import USB6001_RANGE_V, BenchConfig
+from mkm.bench.config import USB6001_RANGE_V, BenchConfig
 
 ADC_BITS = 14
 LSB_V = 2 * USB6001_RANGE_V / 2**ADC_BITS  # USB-6001: 14 bits over +-10 V = 1.22 mV
@@ -89,7 +89,7 @@ def _table(model_name, mesh, L0_mm, D0_mm, t0_mm, eps, full_scale_bar, n):
 
 
 def _model(model_name, mesh, L0_mm):
-    from fem.ladder import make_model
+    from mkm.fem.ladder import make_model
 
     return make_model(model_name, L0_mm=L0_mm, **({"mesh": mesh} if mesh else {}))
 
@@ -172,7 +172,7 @@ class SimMuscleBench:
 
 
 class SimBackend:
-    """Simulated NI USB-6001 bench with the :class:`bench.backend.Backend` interface.
+    """Simulated NI USB-6001 bench with the :class:`mkm.bench.backend.Backend` interface.
 
     Parameters
     ----------

@@ -37,7 +37,7 @@ from typing import Any, NamedTuple
 import numpy as np
 import pandas as pd
 
-from fem.records import write_json_atomic
+from mkm.fem.records import write_json_atomic
 
 SCHEMA_VERSION = 2
 

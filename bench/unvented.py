@@ -4,7 +4,7 @@ While a run may pressurise the muscle it holds a marker file for its bench (back
 name) in the user's state folder (``MKM_STATE_DIR``, else
 ``platformdirs.user_state_dir("mkm-bench")``: ``~/.local/state/mkm-bench`` on Linux,
 ``%LOCALAPPDATA%\\mkm-bench`` on Windows): the run folder, the recording process
-(:class:`bench.storage.ProcessIdentity`: pid, start time, boot time), and the last commanded
+(:class:`mkm.bench.storage.ProcessIdentity`: pid, start time, boot time), and the last commanded
 pressure, rewritten at every command (before the pressure is written to the device, so a kill
 between the two still finds it). A clean shutdown that vented removes it. Every command that
 opens a bench (``acquire``, ``check``, ``tare``, ``calibrate-loadcell``, ``vent``) first looks for
@@ -22,8 +22,8 @@ import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from bench.storage import ProcessIdentity
-from fem.records import write_json_atomic
+from mkm.bench.storage import ProcessIdentity
+from mkm.fem.records import write_json_atomic
 
 
 def state_dir() -> Path:

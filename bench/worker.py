@@ -1,6 +1,6 @@
 """The acquisition worker: reads blocks, turns volts into samples, records them, commands the
 regulator, and trips the interlocks (pymeasure's worker, beside the procedure in
-:mod:`bench.sequence` and the recorder in :mod:`bench.recorder`).
+:mod:`mkm.bench.sequence` and the recorder in :mod:`mkm.bench.recorder`).
 
 Interlocks, checked on every sample; each stops the run (:class:`Stop`, status ``aborted``)
 after commanding the vent:
@@ -20,10 +20,10 @@ from __future__ import annotations
 import math
 import time
 
-from bench.backend import Backend, BufferOverflow, ReadTimeout
-from bench.config import BenchConfig
-from bench.recorder import Recorder
-from bench.storage import CommandRecord, Gap, RunStatus, Sample
+from mkm.bench.backend import Backend, BufferOverflow, ReadTimeout
+from mkm.bench.config import BenchConfig
+from mkm.bench.recorder import Recorder
+from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
 
 RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
 
@@ -43,7 +43,7 @@ class Acquisition:
 
     ``stop_requested`` returns the ``time.monotonic()`` of a pending stop request (first
     Ctrl-C) or None; ``observers`` get every block (``block(samples)``) for progress and plots.
-    ``lease`` (a :class:`bench.unvented.BenchLease`) learns every commanded pressure.
+    ``lease`` (a :class:`mkm.bench.unvented.BenchLease`) learns every commanded pressure.
     """
 
     def __init__(self, config: BenchConfig, backend: Backend, recorder: Recorder,

@@ -30,10 +30,10 @@ from pathlib import Path
 
 import numpy as np
 
-from bench.config import load_config
-from bench.run import acquire
-from bench.storage import load_run
-from fem.records import provenance
+from mkm.bench.config import load_config
+from mkm.bench.run import acquire
+from mkm.bench.storage import load_run
+from mkm.fem.records import provenance
 
 REPO = Path(__file__).resolve().parents[1]
 FAST = "[sequence]\npressures_bar = [0.5, 1.0]\ntare_s = 1.0\npreconditioning_cycles = 0\n"
@@ -72,7 +72,7 @@ def _config_file(folder: Path) -> Path:
     text = (REPO / "bench/configs/paper_prototype.toml").read_text()
     head, _, rest = text.partition("[sequence]")
     folder.mkdir(parents=True, exist_ok=True)
-    path = folder / "bench.toml"
+    path = folder / "mkm.bench.toml"
     path.write_text(head + FAST + rest[rest.index("[settle]"):])
     return path
 
@@ -183,7 +183,7 @@ def fault_table(out: Path) -> list[dict]:
 
 def report_memory(out: Path) -> dict:
     """Peak RSS of reading a 24 h run, in a fresh process each."""
-    from bench.storage import SAMPLE_COLUMNS
+    from mkm.bench.storage import SAMPLE_COLUMNS
 
     n = 24 * 3600 * 10
     path = out / "day"

@@ -15,7 +15,7 @@ timers in this script only. Goal (issue 11): medium <= 0.15 s and fine <= 1 s pe
 project's 2-core machine, forces unchanged to 1e-6 relative. The machine is shared, so compare
 the Newton iteration counts too: 62-69 (medium) and 75-78 (fine) before the thick-wall start of
 the threshold search and the chord convergence check, 24-29 after. The LU column is SuperLU's
-factorisation only; the pressure ramp's symmetric permutation (:class:`fem.fe.newton.OrderedLU`)
+factorisation only; the pressure ramp's symmetric permutation (:class:`mkm.fem.fe.newton.OrderedLU`)
 counts as "rest".
 """
 
@@ -27,9 +27,9 @@ import time
 
 import numpy as np
 
-import fem.fe.model
-import fem.fe.newton
-from fem.records import provenance
+import mkm.fem.fe.model
+import mkm.fem.fe.newton
+from mkm.fem.records import provenance
 
 PRESSURES_BAR = np.arange(0.0, 2.51, 0.25)
 MUSCLE_I = {"D0_mm": 35.0, "t0_mm": 2.5, "L0_mm": 282.0}
@@ -56,19 +56,20 @@ class Timers:
 
 def bench_sweep(level: str, eps: float, theta0_deg: float) -> dict:
     timers = Timers()
-    half = fem.fe.model.HalfMuscle
-    init, assemble, splu = half.__init__, half._assemble, fem.fe.newton.splu
+    half = mkm.fem.fe.model.HalfMuscle
+    init, assemble, splu = half.__init__, half._assemble, mkm.fem.fe.newton.splu
     half.__init__ = timers.wrap("setup", init)
     half._assemble = timers.wrap("assembly", assemble)
-    fem.fe.newton.splu = timers.wrap("lu", splu)
+    mkm.fem.fe.newton.splu = timers.wrap("lu", splu)
     try:
         start = time.perf_counter()
-        out = fem.fe.model.isometric_sweep(PRESSURES_BAR, MUSCLE_I["D0_mm"], MUSCLE_I["t0_mm"], eps,
-                                         theta0_deg, MUSCLE_I["L0_mm"], level)
+        out = mkm.fem.fe.model.isometric_sweep(
+            PRESSURES_BAR, MUSCLE_I["D0_mm"], MUSCLE_I["t0_mm"], eps, theta0_deg, MUSCLE_I["L0_mm"],
+            level)
         total = time.perf_counter() - start
     finally:
         half.__init__, half._assemble = init, assemble
-        fem.fe.newton.splu = splu
+        mkm.fem.fe.newton.splu = splu
     below = out["force_N"] == 0
     threshold_iterations = int(out["iterations"][below].max()) if below.any() else 0
     t = timers.seconds
@@ -87,7 +88,7 @@ def main() -> None:
     parser.add_argument("--eps", default="0.05,0.2")
     parser.add_argument("--repeats", type=int, default=3)
     args = parser.parse_args()
-    theta0 = fem.fe.model.Axisym().params()["theta0_deg"]
+    theta0 = mkm.fem.fe.model.Axisym().params()["theta0_deg"]
     rows = []
     for level in args.levels.split(","):
         for eps in (float(e) for e in args.eps.split(",")):

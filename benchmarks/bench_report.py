@@ -25,9 +25,9 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from bench.config import load_config
-from bench.run import acquire
-from fem.records import provenance
+from mkm.bench.config import load_config
+from mkm.bench.run import acquire
+from mkm.fem.records import provenance
 
 MKM = str(Path(sys.executable).with_name("mkm"))
 

@@ -31,14 +31,14 @@ import warnings
 import numpy as np
 import pandas as pd
 
-from fem.records import jsonable, provenance
-from surrogate.design import DESIGN_DATASET
-from surrogate.estimators import KINDS
-from surrogate.offgrid import evaluate_offgrid
-from surrogate.testset import PAPER_MUSCLES, test_points
-from surrogate.train import train_surrogate
-from surrogate.training_data import load_training_data
-from surrogate.validation import coverage, rmse
+from mkm.fem.records import jsonable, provenance
+from mkm.surrogate.design import DESIGN_DATASET
+from mkm.surrogate.estimators import KINDS
+from mkm.surrogate.offgrid import evaluate_offgrid
+from mkm.surrogate.testset import PAPER_MUSCLES, test_points
+from mkm.surrogate.train import train_surrogate
+from mkm.surrogate.training_data import load_training_data
+from mkm.surrogate.validation import coverage, rmse
 
 
 def timings(call, repeats: int) -> tuple[np.ndarray, np.ndarray]:
@@ -143,7 +143,7 @@ def main() -> None:
               "muscle_held_out": held_out, "fe_budget_muscles": budget,
               "kinds": rows, **provenance()}
     if args.grid_seeds:
-        from surrogate.paper_grid import run_paper_grid
+        from mkm.surrogate.paper_grid import run_paper_grid
 
         start = time.perf_counter()
         runs = run_paper_grid(seeds=args.grid_seeds, jobs=2)

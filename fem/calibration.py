@@ -45,7 +45,7 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import minimize_scalar
 
-from fem.records import file_sha256, provenance, source_version, write_atomic
+from mkm.fem.records import file_sha256, provenance, source_version, write_atomic
 
 CALIBRATION_FILE = Path(__file__).with_name("calibration.json")
 THETA0_BOUNDS_DEG = (15.0, 50.0)  # practical braids are 20-30 deg; 54.7 deg is the lock angle
@@ -311,7 +311,7 @@ def default_target(model) -> str:
 def calibration_entry(fit: dict, model, reference_name: str, reference_sha256: str | None,
                       module: str) -> dict:
     """The record of one fit: target, reference, theta0, residuals, command, date and code
-    version (:func:`fem.records.source_version` of the model's module, without its data files,
+    version (:func:`mkm.fem.records.source_version` of the model's module, without its data files,
     so that writing the calibration does not change the version it records)."""
     info = provenance()
     entry = {

@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem.calibration import CalibratedTheta0
-from fem.interface import Domain, ForceModel
+from mkm.fem.calibration import CalibratedTheta0
+from mkm.fem.interface import Domain, ForceModel
 
 BAR_TO_MPA = 0.1  # 1 bar = 0.1 MPa = 0.1 N/mm^2, so N/mm^2 * mm^2 = N
 #: The braid's locking angle, arccos(1/sqrt(3)) = 54.7356 deg from the axis: at it the sleeve

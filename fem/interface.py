@@ -19,11 +19,11 @@ from typing import Any, ClassVar
 import numpy as np
 import pandas as pd
 
+from mkm.fem.muscle import LIMITS, OPEN_ABOVE, check_wall, limit_text
+
 INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
-# Far beyond any pneumatic muscle (supplies <= 10 bar, tubes <= 100 mm): a typo, not a muscle
-# (the closed forms are still checked near the braid lock, where thresholds reach 100+ bar).
-MAX_PRESSURE_BAR = 1000.0
-MAX_D0_MM = 500.0
+MAX_PRESSURE_BAR = LIMITS["pressure_bar"][1]
+MAX_D0_MM = LIMITS["D0_mm"][1]
 
 
 @dataclass(frozen=True)
@@ -98,19 +98,14 @@ def validate_inputs(pressure_bar, D0_mm, t0_mm, eps) -> tuple[np.ndarray, ...]:
         bad = ~np.isfinite(a)
         if bad.any():
             raise ValueError(f"{name}={a[bad].flat[0]:g} is not a finite number")
-    _check(P, (P < 0) | (P > MAX_PRESSURE_BAR), "pressure_bar",
-           f"expected a gauge pressure in [0, {MAX_PRESSURE_BAR:g}] bar")
-    _check(D0, (D0 <= 0) | (D0 > MAX_D0_MM), "D0_mm",
-           f"expected an inner diameter in (0, {MAX_D0_MM:g}] mm")
-    _check(t0, t0 <= 0, "t0_mm", "expected a wall thickness > 0 mm")
+    for name, a in zip(INPUTS, (P, D0, t0, e), strict=True):
+        low, high = LIMITS[name][:2]
+        _check(a, (a < low) | ((a >= high) if name in OPEN_ABOVE else (a > high)), name,
+               limit_text(name))
     bad = t0 >= D0 / 2
     if bad.any():
         i = np.flatnonzero(bad.ravel())[0]
-        raise ValueError(
-            f"t0_mm={t0.flat[i]:g} is too thick for D0_mm={D0.flat[i]:g}: "
-            f"expected t0_mm < D0_mm/2 = {D0.flat[i] / 2:g}"
-        )
-    _check(e, (e < 0) | (e >= 1), "eps", "expected a shortening ratio in [0, 1) (a fraction)")
+        check_wall(float(D0.flat[i]), float(t0.flat[i]))
     return P, D0, t0, e
 
 

@@ -10,12 +10,12 @@ from __future__ import annotations
 import inspect
 from importlib import import_module
 
-from fem.interface import ForceModel
+from mkm.fem.interface import ForceModel
 
 LADDER: dict[str, str] = {
-    "eq2": "fem.eq2:Eq2",
-    "thickwall": "fem.thickwall:ThickWall",
-    "axisym": "fem.fe.model:Axisym",
+    "eq2": "mkm.fem.eq2:Eq2",
+    "thickwall": "mkm.fem.thickwall:ThickWall",
+    "axisym": "mkm.fem.fe.model:Axisym",
 }
 
 

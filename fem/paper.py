@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem.records import package_file
+from mkm.fem.records import package_file
 
 CITATION = ("Antonelli, Beomonte Zobel, Sarwar, Stampone, Actuators 2025, 14(3), 153, "
             "doi:10.3390/act14030153")
@@ -28,13 +28,13 @@ L0_MM = 282.0
 PROTOTYPE = {"D0_mm": 30.0, "t0_mm": 3.0, "eps": (0.0, 0.122)}
 
 #: The paper's FE forces of muscle I (section 3.3), CSV.
-CASE_I_CSV = package_file("fem", "data", "paper_case_I.csv")
+CASE_I_CSV = package_file("mkm.fem", "data", "paper_case_I.csv")
 #: Table 2 (train and validation RMSE of the 27 nets), CSV.
-TABLE2_CSV = package_file("fem", "data", "paper_table2.csv")
+TABLE2_CSV = package_file("mkm.fem", "data", "paper_table2.csv")
 #: Table 3 (largest |Err%| of the best net on muscles I-III), CSV.
-TABLE3_CSV = package_file("fem", "data", "paper_table3.csv")
+TABLE3_CSV = package_file("mkm.fem", "data", "paper_table3.csv")
 #: Table 1: the dataset's grid (6 pressures x 3 D0 x 3 t0 x 3 eps = 162 points), TOML.
-TABLE1_GRID = package_file("fem", "dataset", "grids", "paper.toml")
+TABLE1_GRID = package_file("mkm.fem", "dataset", "grids", "paper.toml")
 
 
 def equation7_err_pct(force_reference_N, force_N, scale_N=None) -> np.ndarray:

@@ -33,7 +33,7 @@ from importlib.util import find_spec, resolve_name
 from pathlib import Path
 from typing import Any
 
-PROJECT_PACKAGES = ("fem", "bench", "surrogate", "mkm")
+PROJECT_PACKAGES = ("mkm",)  # the one import root: fem, bench and surrogate live under it
 APP_NAME = "mkm-bench"  # the distribution's name: the user folders of the toolkit
 RECORDED_LIBRARIES = ("mkm-bench", "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas")
 
@@ -58,16 +58,23 @@ def provenance() -> dict[str, Any]:
     return info
 
 
+CACHE_ENV = "MKM_CACHE_DIR"
+
+
 def user_cache(*parts: str) -> Path:
-    """``platformdirs.user_cache_dir("mkm-bench") / parts``: ``~/.cache/mkm-bench`` on Linux,
-    ``%LOCALAPPDATA%\\mkm-bench\\mkm-bench\\Cache`` on Windows (not created here)."""
+    """``$MKM_CACHE_DIR / parts`` if that is set, else ``platformdirs.user_cache_dir("mkm-bench")
+    / parts``: ``~/.cache/mkm-bench`` on Linux, ``%LOCALAPPDATA%\\mkm-bench\\mkm-bench\\Cache``
+    on Windows (not created here). Read at every call, never at import."""
+    if os.environ.get(CACHE_ENV):
+        return Path(os.environ[CACHE_ENV]).joinpath(*parts)
     import platformdirs
 
     return Path(platformdirs.user_cache_dir(APP_NAME)).joinpath(*parts)
 
 
 def package_file(package: str, *parts: str) -> Path:
-    """Path of a data file shipped inside ``package`` (``package_file("fem", "data", "x.csv")``)."""
+    """Path of a data file shipped inside ``package`` (``package_file("mkm.fem", "data",
+    "x.csv")``)."""
     return Path(str(files(package).joinpath(*parts)))
 
 
@@ -151,7 +158,7 @@ def source_version(*modules: str, data: bool = True) -> str:
 def _is_module(name: str) -> bool:
     try:
         return find_spec(name) is not None
-    except (ImportError, ValueError):  # "fem.calibration.calibrated": a name, not a module
+    except (ImportError, ValueError):  # "mkm.fem.calibration.calibrated": a name, not a module
         return False
 
 

@@ -29,10 +29,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem.calibration import CalibratedTheta0
-from fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
-from fem.interface import Domain, ForceModel
-from fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.calibration import CalibratedTheta0
+from mkm.fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
+from mkm.fem.interface import Domain, ForceModel
+from mkm.fem.materials import SILASTIC_S, MooneyRivlin
 
 
 def mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg):

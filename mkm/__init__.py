@@ -6,6 +6,6 @@ It sits above the three libraries: ``bench`` (acquisition), ``fem`` (physics) an
 ``pyproject.toml``).
 """
 
-from fem.records import package_version
+from mkm.fem.records import package_version
 
 __version__ = package_version()

@@ -25,8 +25,8 @@ def run_demo(out_dir: str | Path | None = None, progress: bool = True,
     (default: the user's prediction cache) and ``report_options`` go to
     :func:`mkm.report.build_report`.
     """
-    from bench.config import load_config
-    from bench.run import acquire
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
     from mkm.prediction_cache import DEFAULT_CACHE_DIR
     from mkm.report import build_report
 

@@ -38,14 +38,14 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from fem.calibration import calibrated
-from fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
-from fem.interface import ForceModel
-from fem.ladder import model_class
-from fem.materials import MATERIALS
-from fem.paper import L0_MM
-from fem.ranges import parse_fraction, parse_number
-from fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
+from mkm.fem.calibration import calibrated
+from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
+from mkm.fem.interface import ForceModel
+from mkm.fem.ladder import model_class
+from mkm.fem.materials import MATERIALS
+from mkm.fem.paper import L0_MM
+from mkm.fem.ranges import parse_fraction, parse_number
+from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 from mkm.registry import ENTRIES, parse_spec
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
@@ -136,7 +136,7 @@ class Constraints:
     """The design box and the housing. ``None`` means: D0 and t0 over the surrogate's training
     box, L0 the surrogate's (the paper's 282 mm), theta0 the FE model's calibration
     (``fem/calibration.json`` or ``--calibration FILE``); rubber a name of
-    :data:`fem.materials.MATERIALS` (or several).
+    :data:`mkm.fem.materials.MATERIALS` (or several).
 
     Parameters
     ----------
@@ -228,10 +228,10 @@ def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, material=MATERIALS
 
     An unloaded muscle contracts freely until the threshold pressure of its shortening equals the
     supply pressure, ``P*(eps_f) = P`` (thick-wall closed form,
-    :func:`fem.thickwall.klute_hannaford_threshold_pressure`, solved by bisection on
+    :func:`mkm.fem.thickwall.klute_hannaford_threshold_pressure`, solved by bisection on
     ``[0, eps_max)``); any load holds it at a smaller shortening and diameter. The braid of
     constant thread length then has ``D_out^2 = (D0 + 2 t0)^2 (1 + eps_f (2 - eps_f) cot^2
-    theta0)`` (:func:`fem.thickwall.mid_section_kinematics`). Mid-section value: the caps
+    theta0)`` (:func:`mkm.fem.thickwall.mid_section_kinematics`). Mid-section value: the caps
     keep the ends narrower.
     """
     D0, t0, theta0, P = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in

@@ -20,15 +20,6 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-from fem.calibration import calibration_provenance
-from fem.materials import MATERIALS
-from fem.records import (
-    provenance,
-    sidecar_path,
-    source_version,
-    write_atomic,
-    write_csv_with_sidecar,
-)
 from mkm.design import (
     NEAR_LOCK_FRACTION,
     DesignResult,
@@ -37,6 +28,15 @@ from mkm.design import (
     outer_diameter_mm,
     span_text,
     surrogate_uncertainty,
+)
+from mkm.fem.calibration import calibration_provenance
+from mkm.fem.materials import MATERIALS
+from mkm.fem.records import (
+    provenance,
+    sidecar_path,
+    source_version,
+    write_atomic,
+    write_csv_with_sidecar,
 )
 from mkm.html import esc, figure_html, html_page, kv_html, save_figure, table_html
 from mkm.registry import parse_spec

@@ -202,7 +202,7 @@ def time_figure(bins: pd.DataFrame, steps: pd.DataFrame, title: str,
     events such as the force interlock (red lines), and the interlock's force limit (dashed)
     when it lies within twice the largest force drawn.
 
-    ``bins``: :func:`bench.storage.aggregate_samples` output (``time_s``,
+    ``bins``: :func:`mkm.bench.storage.aggregate_samples` output (``time_s``,
     ``pressure_bar_{min,mean,max}``, ``force_N_{min,mean,max}``); ``steps``: ``start_s,
     settle_s, end_s``; ``gaps``: ``(start_s, end_s)``; ``events``: ``(time_s, label)``.
     """

@@ -5,9 +5,10 @@
   the ``MKM_OUT`` environment variable), one subfolder per command: nothing lands among the
   project's shipped files, and the path is printed at the end of every command.
 - Caches (FE predictions, trained surrogates, dataset jobs) go under :func:`cache_root`, the
-  user's cache folder of the operating system (:func:`fem.records.user_cache`:
+  user's cache folder of the operating system (:func:`mkm.fem.records.user_cache`:
   ``~/.cache/mkm-bench`` on Linux, ``%LOCALAPPDATA%\\mkm-bench\\mkm-bench\\Cache`` on Windows),
-  where the libraries keep theirs too (``surrogate.train``, ``fem.dataset.build``), so a second
+  where the libraries keep theirs too (``mkm.surrogate.train``, ``mkm.fem.dataset.build``), so a
+  second
   run from any folder is fast.
 
 Replacing a file shipped inside a package (the study table, the FE dataset, the FE reference,
@@ -19,7 +20,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from fem.records import user_cache
+from mkm.fem.records import user_cache
 
 OUT_ENV = "MKM_OUT"
 DEFAULT_OUT_ROOT = "mkm-out"
@@ -43,3 +44,19 @@ def cache_root() -> Path:
 def default_cache(*parts: str) -> Path:
     """A cache subfolder: ``cache_root() / parts`` (``default_cache("predictions")``)."""
     return cache_root().joinpath(*parts)
+
+
+class CacheFolder(os.PathLike):
+    """A cache subfolder named once and resolved at each use (``Path(folder)``, ``str(folder)``),
+    so a default argument follows ``MKM_CACHE_DIR`` set after import (the tests' own cache)."""
+
+    def __init__(self, *parts: str):
+        self.parts = parts
+
+    def __fspath__(self) -> str:
+        return str(default_cache(*self.parts))
+
+    __str__ = __fspath__
+
+    def __repr__(self) -> str:
+        return f"CacheFolder{self.parts!r}"

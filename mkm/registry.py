@@ -16,8 +16,8 @@ import inspect
 from dataclasses import dataclass, field
 from typing import Any
 
-from fem.interface import ForceModel
-from fem.ladder import model_class
+from mkm.fem.interface import ForceModel
+from mkm.fem.ladder import model_class
 
 
 @dataclass(frozen=True)
@@ -139,12 +139,12 @@ def _surrogate(params: dict) -> ForceModel:
         raise ValueError("surrogate: give kind or path, not both")
     muscle = {k: float(params[k]) for k in SURROGATE_PARAMETERS if k in params}
     if "path" in params:
-        from surrogate.io import load_model
+        from mkm.surrogate.io import load_model
 
         model = load_model(str(params["path"]),
                            accept_mismatch=bool(params.get("accept_mismatch", False)))
     else:
-        from surrogate.train import cached_model
+        from mkm.surrogate.train import cached_model
 
         model = cached_model(str(params.get("kind", "best")))
     return model.with_parameters(**muscle) if muscle else model

@@ -1,6 +1,7 @@
 """The validation report: bench runs against every force model, as one self-contained HTML file.
 
-:func:`build_report` loads runs with :func:`bench.storage.load_run`, predicts each run's steps with
+:func:`build_report` loads runs with :func:`mkm.bench.storage.load_run`, predicts each run's steps
+with
 the requested models (FE predictions through :mod:`mkm.prediction_cache`), scores them with the
 paper's Equation 7 against the measurement and writes ``report.html`` (figures embedded as base64
 PNG, inline CSS, no script, no external asset) with the PNGs, CSVs and ``provenance.json``
@@ -32,9 +33,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from fem.interface import ForceModel, Prediction
-from fem.paper import L0_MM, TABLE3_CSV, equation7_err_pct
-from fem.records import provenance, read_prediction_header, write_json_atomic
+from mkm.fem.interface import ForceModel, Prediction
+from mkm.fem.paper import L0_MM, TABLE3_CSV, equation7_err_pct
+from mkm.fem.records import provenance, read_prediction_header, write_json_atomic
 from mkm.figures import (
     model_colours,
     overlay_figure,
@@ -198,7 +199,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     progress : bool
         Progress bar on stderr (shown only when stderr is a terminal).
     """
-    from bench.storage import load_run
+    from mkm.bench.storage import load_run
 
     start = time.perf_counter()
     run_dirs = [Path(p) for p in run_dirs]
@@ -484,7 +485,7 @@ def _sim_note(sim: dict, specs) -> str:
 
 def _signals(r: _Run, out: Path) -> str:
     """Pressure and force against time, read in bounded memory (time bins of samples.csv)."""
-    from bench.storage import aggregate_samples
+    from mkm.bench.storage import aggregate_samples
 
     bins = aggregate_samples(r.run.path)
     if bins.empty:
@@ -621,10 +622,10 @@ def _auto_paragraph(r: _Run, tolerance: float) -> str:
 def _surrogate_section(out: Path, prov: dict) -> str:
     """The paper's Table 3 and Figure 6 with our numbers: the default surrogate against our FE
     reference of the test muscles (the paper's I, II, III and the surrogate package's off-grid
-    ones), computed by :mod:`surrogate.testset`."""
+    ones), computed by :mod:`mkm.surrogate.testset`."""
     head = "<h2>Surrogate against the FE model on the paper's test muscles I, II, III</h2>"
-    import surrogate
-    from surrogate.testset import FE_REFERENCE, compare_on_test_muscles, read_fe_reference
+    from mkm import surrogate
+    from mkm.surrogate.testset import FE_REFERENCE, compare_on_test_muscles, read_fe_reference
 
     if not FE_REFERENCE.exists():
         return head + (f'<p class="note">No FE reference at {esc(FE_REFERENCE)}: build it '
@@ -671,7 +672,7 @@ def _surrogate_section(out: Path, prov: dict) -> str:
 
 def _reference_header() -> dict:
     """Metadata of the shipped FE reference (its JSON sidecar or its comment header)."""
-    from surrogate.testset import FE_REFERENCE
+    from mkm.surrogate.testset import FE_REFERENCE
 
     sidecar = FE_REFERENCE.with_suffix(".json")
     if sidecar.exists():

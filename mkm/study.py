@@ -30,10 +30,10 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from fem.interface import ForceModel, Prediction
-from fem.paper import equation7_err_pct
-from fem.records import provenance, write_atomic, write_json_atomic
 from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
+from mkm.fem.interface import ForceModel, Prediction
+from mkm.fem.paper import equation7_err_pct
+from mkm.fem.records import provenance, write_atomic, write_json_atomic
 from mkm.figures import speed_accuracy_figure, stability_figure
 from mkm.html import esc, figure_html, html_page, provenance_details, save_figure, table_html
 from mkm.paths import default_out
@@ -84,7 +84,7 @@ def physics_predictors() -> list[Predictor]:
     """Equation 2 (both diameters), thick-wall, the FE model at every mesh level, and the FE
     model with a sliding braid (another physical assumption than the reference's bonded braid:
     shown, never a candidate of ``auto``)."""
-    from fem.fe.mesh import MESH_LEVELS
+    from mkm.fem.fe.mesh import MESH_LEVELS
 
     sliding = parse_spec("axisym:braid=sliding")
     return [registry_predictor("eq2-inner", "eq2:diameter=inner"),
@@ -104,7 +104,7 @@ STUDY_SURROGATES = ("muscle-gp", "physics", "mlp-paper")
 def surrogate_kinds(text: str) -> tuple[str, ...]:
     """The kinds named by ``--surrogates``: a comma list of kinds, or ``all`` (every kind, the
     54 paper nets included); a one-line error naming an unknown kind."""
-    from surrogate.estimators import kind_names
+    from mkm.surrogate.estimators import kind_names
 
     known = kind_names(include_nets=True)
     if text.strip() == "all":
@@ -123,8 +123,8 @@ def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR, n_jobs: int 
     """The surrogate ``kinds`` trained on ``dataset`` (default: the shipped one); the default
     kind is the one ``auto`` may use. Kinds not yet in ``cache_dir`` are trained first,
     ``n_jobs`` at a time."""
-    from surrogate.estimators import BEST
-    from surrogate.training_data import DEFAULT_DATASET
+    from mkm.surrogate.estimators import BEST
+    from mkm.surrogate.training_data import DEFAULT_DATASET
 
     dataset = dataset or DEFAULT_DATASET
     if cache_dir is not None:
@@ -150,7 +150,7 @@ def trained_surrogate(kind: str, dataset, cache_dir=DEFAULT_CACHE_DIR) -> ForceM
     training several times slower."""
     from threadpoolctl import threadpool_limits
 
-    from surrogate.train import cached_model, train_surrogate
+    from mkm.surrogate.train import cached_model, train_surrogate
 
     with threadpool_limits(1), warnings.catch_warnings():
         warnings.simplefilter("ignore")  # ConvergenceWarning of the paper's nets: reproduced

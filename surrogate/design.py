@@ -7,7 +7,7 @@ parameters (geometry, length, braid angle, rubber): 16 corners of a 2^(7-3) frac
 (every pair of factors balanced, each corner of the box's main effects seen), then a Latin
 hypercube (``scipy.stats.qmc``, centred-discrepancy optimised) for the rest. Each muscle is one
 FE sweep (:data:`DESIGN_PRESSURES`), computed with the dataset builder's cache and workers
-(:func:`fem.dataset.build.run_jobs`). :func:`random_muscles` draws fresh muscles for the
+(:func:`mkm.fem.dataset.build.run_jobs`). :func:`random_muscles` draws fresh muscles for the
 off-grid evaluation the same way.
 
 References
@@ -29,17 +29,17 @@ import numpy as np
 import pandas as pd
 from scipy.stats import qmc
 
-from fem.dataset.build import DEFAULT_CACHE, Job, run_jobs
-from fem.materials import SILASTIC_S
-from fem.records import package_file, provenance, write_atomic
+from mkm.fem.dataset.build import Job, run_jobs
+from mkm.fem.materials import SILASTIC_S
+from mkm.fem.records import package_file, provenance, write_atomic
 
 #: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).
-DESIGN_DATASET = package_file("surrogate", "data", "mkm_design.csv")
+DESIGN_DATASET = package_file("mkm.surrogate", "data", "mkm_design.csv")
 
 #: Random muscles (seeds recorded in its sidecar) whose FE sweeps set the scale of the default
-#: surrogate's std (:meth:`surrogate.estimators.MuscleThresholdGP.calibrate_std`): drawn as the
+#: surrogate's std (:meth:`mkm.surrogate.estimators.MuscleThresholdGP.calibrate_std`): drawn as the
 #: off-grid evaluation draws, never used to fit the forces.
-STD_CALIBRATION_SET = package_file("surrogate", "data", "mkm_std_calibration.csv")
+STD_CALIBRATION_SET = package_file("mkm.surrogate", "data", "mkm_std_calibration.csv")
 
 #: Parameters of a muscle, in the order of the design's columns.
 MUSCLE_PARAMETERS = ("D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
@@ -128,7 +128,7 @@ def fe_jobs(muscles: pd.DataFrame, mesh: str = "fine",
 
 
 def fe_sweeps(muscles: pd.DataFrame, mesh: str = "fine", pressures=DESIGN_PRESSURES,
-              workers: int | None = None, cache_dir=DEFAULT_CACHE, progress: bool = True,
+              workers: int | None = None, cache_dir=None, progress: bool = True,
               desc: str = "FE sweeps") -> tuple[pd.DataFrame, dict]:
     """The FE rows of every muscle (``muscle`` = its row number in ``muscles``) and the run.
 
@@ -143,7 +143,7 @@ def fe_sweeps(muscles: pd.DataFrame, mesh: str = "fine", pressures=DESIGN_PRESSU
 
 def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
                      candidates: int = 2000) -> pd.DataFrame:
-    """``n_muscles`` muscles where a fitted :class:`~surrogate.estimators.MuscleThresholdGP` is
+    """``n_muscles`` muscles where a fitted :class:`~mkm.surrogate.estimators.MuscleThresholdGP` is
     least sure of the force at the top of the box's pressure range, chosen greedily among
     ``candidates`` random muscles: each pick conditions both processes on it (their posterior
     covariance, rank-one update with the fitted noise), so picks spread out instead of piling
@@ -187,7 +187,7 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
 
 
 def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
-                 workers: int | None = None, cache_dir=DEFAULT_CACHE,
+                 workers: int | None = None, cache_dir=None,
                  progress: bool = True, adaptive: int = 0) -> tuple[pd.DataFrame, dict]:
     """Compute the design of ``n_muscles`` FE sweeps and write ``out`` (CSV) and ``out.json``;
     with ``adaptive``, that many more muscles where the default surrogate trained on the
@@ -200,9 +200,9 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
     frame, done = fe_sweeps(muscles, mesh, workers=workers, cache_dir=cache_dir,
                             progress=progress, desc=f"FE design ({mesh} mesh)")
     if adaptive:
-        from surrogate.estimators import make_estimator
-        from surrogate.train import quiet_fits
-        from surrogate.training_data import ALL_INPUTS
+        from mkm.surrogate.estimators import make_estimator
+        from mkm.surrogate.train import quiet_fits
+        from mkm.surrogate.training_data import ALL_INPUTS
 
         used = frame[frame["converged"]]
         with quiet_fits():
@@ -234,7 +234,7 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
 
 
 def build_random_set(n_muscles: int, seeds, out, mesh: str = "fine",
-                     workers: int | None = None, cache_dir=DEFAULT_CACHE,
+                     workers: int | None = None, cache_dir=None,
                      progress: bool = True) -> tuple[pd.DataFrame, dict]:
     """FE sweeps (:data:`EVAL_PRESSURES`) of ``n_muscles`` random muscles per seed of ``seeds``
     (:func:`random_muscles`), written to ``out`` and ``out.json`` (seeds, box, provenance)."""

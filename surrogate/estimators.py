@@ -34,8 +34,8 @@ from sklearn.preprocessing import FunctionTransformer, PolynomialFeatures, Stand
 from sklearn.utils.validation import check_is_fitted, validate_data
 from threadpoolctl import threadpool_limits
 
-from fem.eq2 import chou_hannaford_eps_max
-from surrogate.features import (
+from mkm.fem.eq2 import chou_hannaford_eps_max
+from mkm.surrogate.features import (
     braid_slope_N_per_bar,
     columns_of,
     physics_features,

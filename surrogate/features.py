@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem.eq2 import chou_hannaford
-from fem.thickwall import klute_hannaford_threshold_pressure
+from mkm.fem.eq2 import chou_hannaford
+from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 
 FEATURE_NAMES = ("pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg", "C10_MPa",
                  "C01_MPa", "one_minus_eps_sq", "eq2_inner_force_N", "braid_slope_N_per_bar",

@@ -29,22 +29,22 @@ import tempfile
 import warnings
 from pathlib import Path
 
-from fem.records import file_sha256, provenance, source_version, write_json_atomic
-from surrogate.model import SurrogateForceModel
+from mkm.fem.records import file_sha256, provenance, source_version, write_json_atomic
+from mkm.surrogate.model import SurrogateForceModel
 
 ESTIMATOR_FILE = "estimator.skops"
 METADATA_FILE = "metadata.json"
 CHECKED_LIBRARIES = ("python", "numpy", "scipy", "scikit-learn")
 #: Modules whose code a loaded estimator runs (their imports follow: fem.thickwall, fem.eq2...).
-MODEL_MODULES = ("surrogate.estimators", "surrogate.features", "surrogate.model")
+MODEL_MODULES = ("mkm.surrogate.estimators", "mkm.surrogate.features", "mkm.surrogate.model")
 
 #: Types a model file may contain beyond what skops trusts itself (scikit-learn estimators,
-#: numpy and builtin containers): exactly what :func:`surrogate.estimators.make_estimator`
+#: numpy and builtin containers): exactly what :func:`mkm.surrogate.estimators.make_estimator`
 #: builds. Nothing else is ever loaded.
 TRUSTED_TYPES = (
-    "surrogate.estimators.MuscleThresholdGP",
-    "surrogate.estimators.ThresholdLinearRegressor",
-    "surrogate.features.physics_features",
+    "mkm.surrogate.estimators.MuscleThresholdGP",
+    "mkm.surrogate.estimators.ThresholdLinearRegressor",
+    "mkm.surrogate.features.physics_features",
     "sklearn.gaussian_process.kernels.ConstantKernel",
     "sklearn.gaussian_process.kernels.Matern",
     "sklearn.gaussian_process.kernels.Product",
@@ -65,7 +65,7 @@ def code_version() -> str:
 def calibration_snapshot() -> dict:
     """The calibration in force (``fem/calibration.json``): the default braid angle comes from
     it, and the closed-form physics the priors use is calibrated with it."""
-    from fem.calibration import CALIBRATION_FILE
+    from mkm.fem.calibration import CALIBRATION_FILE
 
     return json.loads(Path(CALIBRATION_FILE).read_text(encoding="utf-8"))
 
@@ -136,7 +136,7 @@ def mismatches(metadata: dict) -> list[str]:
 
 
 def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
-    """The surrogate saved in ``directory``, as a :class:`~fem.interface.ForceModel`.
+    """The surrogate saved in ``directory``, as a :class:`~mkm.fem.interface.ForceModel`.
 
     Raises ``ValueError`` if the folder is not a saved surrogate, the estimator file does not
     match its recorded sha256 or holds a type outside :data:`TRUSTED_TYPES`, or (unless

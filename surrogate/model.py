@@ -19,11 +19,11 @@ from sklearn.pipeline import Pipeline
 from sklearn.preprocessing import FunctionTransformer
 from threadpoolctl import ThreadpoolController
 
-from fem.interface import INPUTS, Domain, ForceModel
-from fem.materials import SILASTIC_S
-from fem.paper import L0_MM
-from surrogate.estimators import MuscleThresholdGP, ThresholdLinearRegressor
-from surrogate.training_data import PARAMETERS
+from mkm.fem.interface import INPUTS, Domain, ForceModel
+from mkm.fem.materials import SILASTIC_S
+from mkm.fem.paper import L0_MM
+from mkm.surrogate.estimators import MuscleThresholdGP, ThresholdLinearRegressor
+from mkm.surrogate.training_data import PARAMETERS
 
 # Relative slack of "the same value" for a recorded parameter (a CSV round trip keeps ~1e-15).
 SAME_VALUE_RTOL = 1e-9
@@ -36,7 +36,7 @@ class OutOfDomainWarning(UserWarning):
 def default_parameters() -> dict[str, float]:
     """Muscle parameters used when the caller gives none: the paper's length, the calibrated
     braid angle of the FE model (``fem/calibration.json``) and Silastic S."""
-    from fem.calibration import calibrated
+    from mkm.fem.calibration import calibrated
 
     return {"L0_mm": float(L0_MM), "theta0_deg": float(calibrated("axisym")["theta0_deg"]),
             "C10_MPa": SILASTIC_S.C10_MPa, "C01_MPa": SILASTIC_S.C01_MPa}
@@ -55,7 +55,7 @@ class SurrogateForceModel(ForceModel):
     estimator : fitted scikit-learn regressor
         Of ``X`` with the columns ``inputs``.
     kind : str
-        The estimator's kind (``surrogate.estimators.make_estimator``).
+        The estimator's kind (``mkm.surrogate.estimators.make_estimator``).
     inputs : sequence of str
         ``pressure_bar, D0_mm, t0_mm, eps`` and the muscle parameters the estimator takes.
     fixed : dict
@@ -63,7 +63,7 @@ class SurrogateForceModel(ForceModel):
     box : dict
         ``name: (low, high)`` of every input: the training box.
     metadata : dict, optional
-        Training data hash and provenance, metrics, versions (see ``surrogate.io``).
+        Training data hash and provenance, metrics, versions (see ``mkm.surrogate.io``).
     L0_mm, theta0_deg, C10_MPa, C01_MPa : float, optional
         The muscle's length [mm], braid angle at rest [deg] and rubber [MPa]. Default:
         :func:`default_parameters` (the braid angle of the calibration in effect). A value

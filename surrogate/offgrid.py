@@ -3,7 +3,7 @@
 Muscle-held-out splits still draw the test muscles from the design the surrogate was built on.
 :func:`evaluate_offgrid` draws new muscles uniformly in the surrogate's box (every muscle
 parameter it takes; the recorded value of the others), with a seed it records (a fresh one by
-default, so repeated runs are new draws), computes their FE sweeps (:mod:`surrogate.design`,
+default, so repeated runs are new draws), computes their FE sweeps (:mod:`mkm.surrogate.design`,
 through the dataset cache), and scores the surrogate on them: the largest |Err%| of each muscle
 (the paper's Equation 7), the pooled RMSE (``sklearn.metrics``), the fraction of points within 1
 and 2 predictive std, and whether every point just outside the box is flagged.
@@ -16,13 +16,12 @@ import warnings
 import numpy as np
 import pandas as pd
 
-from fem.dataset.build import DEFAULT_CACHE
-from fem.paper import equation7_err_pct
-from fem.records import provenance
-from surrogate.design import EVAL_PRESSURES, MUSCLE_PARAMETERS, fe_sweeps, random_muscles
-from surrogate.model import OutOfDomainWarning, SurrogateForceModel
-from surrogate.training_data import PARAMETERS
-from surrogate.validation import coverage, rmse
+from mkm.fem.paper import equation7_err_pct
+from mkm.fem.records import provenance
+from mkm.surrogate.design import EVAL_PRESSURES, MUSCLE_PARAMETERS, fe_sweeps, random_muscles
+from mkm.surrogate.model import OutOfDomainWarning, SurrogateForceModel
+from mkm.surrogate.training_data import PARAMETERS
+from mkm.surrogate.validation import coverage, rmse
 
 OUTSIDE_MARGIN = 0.05  # a point outside the box: 5 % of the range beyond one of its ends
 
@@ -34,7 +33,7 @@ def muscle_box(model: SurrogateForceModel) -> dict[str, tuple[float, float]]:
 
 
 def evaluate_offgrid(model: SurrogateForceModel, n_muscles: int = 12, seed: int | None = None,
-                     mesh: str = "fine", workers: int | None = None, cache_dir=DEFAULT_CACHE,
+                     mesh: str = "fine", workers: int | None = None, cache_dir=None,
                      progress: bool = True) -> tuple[pd.DataFrame, dict]:
     """Score ``model`` on ``n_muscles`` fresh random muscles (FE at ``mesh``).
 

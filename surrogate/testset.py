@@ -13,16 +13,16 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from fem import paper
-from fem.calibration import calibration_provenance
-from fem.interface import ForceModel
-from fem.paper import equation7_err_pct
-from fem.records import package_file, provenance, read_prediction_header, write_csv_with_sidecar
-from surrogate.training_data import PARAMETERS
-from surrogate.validation import rmse
+from mkm.fem import paper
+from mkm.fem.calibration import calibration_provenance
+from mkm.fem.interface import ForceModel
+from mkm.fem.paper import equation7_err_pct
+from mkm.fem.records import package_file, provenance, read_prediction_header, write_csv_with_sidecar
+from mkm.surrogate.training_data import PARAMETERS
+from mkm.surrogate.validation import rmse
 
 #: Our FE sweeps of the test muscles, shipped with the package (``mkm surrogate reference``).
-FE_REFERENCE = package_file("surrogate", "data", "fe_test_muscles.csv")
+FE_REFERENCE = package_file("mkm.surrogate", "data", "fe_test_muscles.csv")
 
 # name: (D0_mm, t0_mm, eps). I-III: the paper's section 3.3; IV, V: ours, off the grid.
 TEST_MUSCLES = {**paper.TEST_MUSCLES, "IV": (32.0, 3.5, 0.08), "V": (47.0, 2.25, 0.12)}
@@ -40,7 +40,7 @@ def build_fe_reference(model: ForceModel, out=FE_REFERENCE) -> pd.DataFrame:
     """Sweep every test muscle with ``model`` (our FE) and write the reference CSV to ``out``.
 
     A plain CSV with its metadata (the model, its parameters, the calibration and the library
-    versions) in a JSON sidecar beside it (:func:`fem.records.write_csv_with_sidecar`; read
+    versions) in a JSON sidecar beside it (:func:`mkm.fem.records.write_csv_with_sidecar`; read
     back with :func:`read_fe_reference`).
     """
     frames = []

@@ -17,19 +17,17 @@ from pathlib import Path
 from sklearn.exceptions import ConvergenceWarning
 from threadpoolctl import threadpool_limits
 
-from fem.records import file_sha256, provenance, user_cache
-from surrogate.estimators import BEST, make_estimator
-from surrogate.model import SurrogateForceModel
-from surrogate.training_data import DEFAULT_DATASET, load_training_data
-from surrogate.validation import (
+from mkm.fem.records import file_sha256, provenance, user_cache
+from mkm.surrogate.estimators import BEST, make_estimator
+from mkm.surrogate.model import SurrogateForceModel
+from mkm.surrogate.training_data import DEFAULT_DATASET, load_training_data
+from mkm.surrogate.validation import (
     MUSCLE_SPLITS,
     coverage,
     fit_params,
     muscle_split_scores,
     predict_with_std,
 )
-
-CACHE_DIR = user_cache("surrogate")
 
 
 @contextmanager
@@ -93,7 +91,7 @@ def std_calibration_set(estimator, data):
     """The shipped random muscles that scale the std of ``estimator`` (``None`` when it has no
     std to scale, or is trained on other inputs: a surrogate of one length, angle and rubber
     keeps the scale of its own training muscles)."""
-    from surrogate.design import STD_CALIBRATION_SET
+    from mkm.surrogate.design import STD_CALIBRATION_SET
 
     if not hasattr(estimator, "calibrate_std") or not STD_CALIBRATION_SET.is_file():
         return None
@@ -113,7 +111,7 @@ def _bar(total: int, desc: str, progress: bool):
 def _test_muscle_metrics(model: SurrogateForceModel):
     """Errors on the FE reference of the test muscles, at the reference's muscle parameters;
     the reason instead when the surrogate does not cover them."""
-    from surrogate.testset import FE_REFERENCE, compare_on_test_muscles, read_fe_reference
+    from mkm.surrogate.testset import FE_REFERENCE, compare_on_test_muscles, read_fe_reference
 
     if not FE_REFERENCE.is_file():
         return None
@@ -127,11 +125,16 @@ def _test_muscle_metrics(model: SurrogateForceModel):
 def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SPLITS) -> str:
     """Hash of what a trained surrogate depends on: the data, the kind, the splits, the source
     of the surrogate and of every physics module it calls (calibration included), libraries."""
-    from surrogate.io import code_version
+    from mkm.surrogate.io import code_version
 
     parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
              "versions": provenance()["versions"], "code": code_version()}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
+
+
+def default_cache_dir() -> Path:
+    """Folder of the trained models in the user's cache (:func:`mkm.fem.records.user_cache`)."""
+    return user_cache("surrogate")
 
 
 def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
@@ -145,11 +148,11 @@ def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
     """
     from filelock import FileLock
 
-    from surrogate.io import load_model, save_model
+    from mkm.surrogate.io import load_model, save_model
 
     if not Path(dataset).is_file():
         load_training_data(dataset)  # raises the ValueError that says what is missing
-    cache_dir = Path(cache_dir) if cache_dir is not None else CACHE_DIR
+    cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
     cache_dir.mkdir(parents=True, exist_ok=True)
     directory = cache_dir / f"{kind}-{cache_key(dataset, kind, splits)}"
     with FileLock(str(directory) + ".lock"):

@@ -3,7 +3,7 @@
 Two datasets ship inside the package (so an installed wheel can train):
 
 - :data:`DEFAULT_DATASET`, ``data/mkm_design.csv``: the space-filling FE design over the whole
-  box (:mod:`surrogate.design`), pressure and seven muscle parameters; the default surrogate's;
+  box (:mod:`mkm.surrogate.design`), pressure and seven muscle parameters; the default surrogate's;
 - :data:`PAPER_DATASET`, ``data/mkm_dataset.csv``: the paper's 3 x 3 x 3 grid at one length,
   braid angle and rubber (the 27-net study of its Table 2).
 
@@ -20,8 +20,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from fem.interface import INPUTS, Domain
-from fem.records import file_sha256, package_file, read_prediction_header
+from mkm.fem.interface import INPUTS, Domain
+from mkm.fem.records import file_sha256, package_file, read_prediction_header
 
 #: Parameters of a muscle that are not arguments of ``ForceModel.predict``: a surrogate takes
 #: each either as an input (the dataset varies it) or as a recorded value (the dataset holds one).
@@ -29,8 +29,8 @@ PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 ALL_INPUTS = (*INPUTS, *PARAMETERS)
 MUSCLE_COLUMNS = ALL_INPUTS[1:]  # what tells one muscle (one FE sweep) from another
 
-DEFAULT_DATASET = package_file("surrogate", "data", "mkm_design.csv")
-PAPER_DATASET = package_file("surrogate", "data", "mkm_dataset.csv")
+DEFAULT_DATASET = package_file("mkm.surrogate", "data", "mkm_design.csv")
+PAPER_DATASET = package_file("mkm.surrogate", "data", "mkm_dataset.csv")
 
 
 @dataclass

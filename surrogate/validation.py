@@ -20,7 +20,7 @@ from sklearn.base import clone
 from sklearn.metrics import max_error, root_mean_squared_error
 from sklearn.model_selection import GroupShuffleSplit, KFold, cross_val_predict, train_test_split
 
-from fem.paper import equation7_err_pct
+from mkm.fem.paper import equation7_err_pct
 
 TEST_SIZE = 0.2  # the paper's 80/20 split
 CV_FOLDS = 5  # Regression Learner's default cross-validation

@@ -1,4 +1,5 @@
-"""Fixtures of the surrogate tests: a small dataset from the thick-wall model (exact, fast)."""
+"""Fixtures of the whole suite: a hermetic home for every cache and state folder, and a small
+dataset from the thick-wall model (exact, fast) for the surrogate tests."""
 
 import itertools
 
@@ -6,8 +7,23 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.calibration import calibrated
-from fem.ladder import make_model
+from mkm.fem.calibration import calibrated
+from mkm.fem.ladder import make_model
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _hermetic_folders(tmp_path_factory):
+    """Every cache (FE predictions, dataset jobs, trained surrogates), the bench state folder and
+    the default output root point into one temporary folder for the session: a run of the suite
+    neither reads what an earlier run or the user left nor writes into the user's folders. The
+    default surrogate is trained once there on first use and shared by every test."""
+    home = tmp_path_factory.mktemp("mkm-home")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setenv("MKM_CACHE_DIR", str(home / "cache"))
+        mp.setenv("MKM_STATE_DIR", str(home / "state"))
+        mp.setenv("MKM_OUT", str(home / "out"))
+        mp.setenv("MPLBACKEND", "Agg")
+        yield home
 
 
 @pytest.fixture(scope="session")

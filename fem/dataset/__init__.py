@@ -1,7 +1,7 @@
 """The MKM dataset: forces of a model over a grid of muscles (``grid``), built resumably on
 local workers or a Dask cluster (``build``)."""
 
-from fem.dataset.build import (
+from mkm.fem.dataset.build import (
     DatasetRun,
     Job,
     JobCache,
@@ -10,7 +10,7 @@ from fem.dataset.build import (
     run_job,
     run_jobs,
 )
-from fem.dataset.grid import GRID_KEYS, Grid, load_grid, parse_grid
+from mkm.fem.dataset.grid import GRID_KEYS, Grid, load_grid, parse_grid
 
 __all__ = ["GRID_KEYS", "DatasetRun", "Grid", "Job", "JobCache", "build_dataset", "load_grid",
            "make_jobs", "parse_grid", "run_job", "run_jobs"]

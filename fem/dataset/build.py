@@ -25,12 +25,16 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from fem.dataset.grid import Grid, load_grid
-from fem.ladder import LADDER, make_model
-from fem.records import provenance, source_version, user_cache, write_atomic
+from mkm.fem.dataset.grid import Grid, load_grid
+from mkm.fem.ladder import LADDER, make_model
+from mkm.fem.records import provenance, source_version, user_cache, write_atomic
 
 DEFAULT_OUT = Path("data/mkm_dataset.csv")
-DEFAULT_CACHE = user_cache("dataset")  # one file per finished job, in the user's cache
+
+
+def default_cache_dir() -> Path:
+    """One file per finished job, in the user's cache (:func:`mkm.fem.records.user_cache`)."""
+    return user_cache("dataset")
 
 COLUMNS = {
     "pressure_bar": "gauge pressure [bar]",
@@ -101,7 +105,8 @@ def _mesh_label(mesh) -> str | None:
 
 
 def model_version(name: str) -> str:
-    """The source version of rung ``name`` (:func:`fem.records.source_version` of its module)."""
+    """The source version of rung ``name`` (:func:`mkm.fem.records.source_version` of its
+    module)."""
     if name not in LADDER:
         raise ValueError(f"unknown model {name!r}: expected one of {', '.join(LADDER)}")
     return source_version(LADDER[name].split(":")[0])
@@ -114,7 +119,7 @@ def run_job(job: Job) -> dict[str, Any]:
     """
     material = None
     if job.C10_MPa is not None or job.C01_MPa is not None:
-        from fem.materials import SILASTIC_S, MooneyRivlin
+        from mkm.fem.materials import SILASTIC_S, MooneyRivlin
 
         material = MooneyRivlin(SILASTIC_S.C10_MPa if job.C10_MPa is None else job.C10_MPa,
                                 SILASTIC_S.C01_MPa if job.C01_MPa is None else job.C01_MPa)
@@ -212,7 +217,7 @@ class DatasetRun:
 def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym", *,
                   mesh: str | None = None, out: str | os.PathLike | None = DEFAULT_OUT,
                   workers: int | None = None, scheduler: str | None = None,
-                  cache_dir: str | os.PathLike = DEFAULT_CACHE,
+                  cache_dir: str | os.PathLike | None = None,
                   progress: bool = True) -> DatasetRun:
     """Build the dataset of ``model`` over ``grid``: compute the jobs not in the cache, write the
     CSV ``out`` (one row per point: :data:`COLUMNS`, then any other per-point output of the
@@ -229,6 +234,7 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
     if workers is not None and workers < 1:
         raise ValueError(f"workers={workers} is invalid: expected at least 1")
     grid = grid if isinstance(grid, Grid) else load_grid(grid)
+    cache_dir = default_cache_dir() if cache_dir is None else cache_dir
     start = time.perf_counter()
     jobs = make_jobs(grid, model, mesh)
     frame, done = run_jobs(jobs, workers=workers, scheduler=scheduler, cache_dir=cache_dir,
@@ -247,7 +253,7 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
 
 
 def run_jobs(jobs: list[Job], *, workers: int | None = None, scheduler: str | None = None,
-             cache_dir: str | os.PathLike = DEFAULT_CACHE, progress: bool = True,
+             cache_dir: str | os.PathLike | None = None, progress: bool = True,
              desc: str = "dataset") -> tuple[pd.DataFrame, dict[str, Any]]:
     """Compute ``jobs`` (one model, any list: a grid's product or a space-filling design) through
     the cache, in-process or on Dask as :func:`build_dataset` does.
@@ -267,7 +273,7 @@ def run_jobs(jobs: list[Job], *, workers: int | None = None, scheduler: str | No
         raise ValueError(f"jobs of several models ({', '.join(models)}): expected one")
     model_ver = model_version(models[0])
     keys = [job.key(model_ver) for job in jobs]
-    store = JobCache(cache_dir)
+    store = JobCache(default_cache_dir() if cache_dir is None else cache_dir)
     results: dict[str, dict] = {}
     for key in keys:
         cached = store.get(key)
@@ -358,7 +364,7 @@ def _run_on_dask(missing, finished, workers: int | None, scheduler: str | None) 
 
 def _provenance(run: DatasetRun, grid: Grid, jobs: list[Job], model_ver: str,
                 params: dict, cache_dir) -> dict[str, Any]:
-    from fem.calibration import calibration_provenance
+    from mkm.fem.calibration import calibration_provenance
 
     info = provenance()
     info["versions"]["dask.distributed"] = version("distributed")

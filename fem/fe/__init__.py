@@ -6,6 +6,6 @@ vectorised total-Lagrangian assembler), ``forms`` (the energy terms as plain fun
 mesh study).
 """
 
-from fem.fe.model import Axisym, isometric_sweep
+from mkm.fem.fe.model import Axisym, isometric_sweep
 
 __all__ = ["Axisym", "isometric_sweep"]

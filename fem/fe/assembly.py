@@ -6,8 +6,8 @@ over the reference configuration). Then the element vectors and matrices of ever
 batched matrix products of ``B`` with the gradient and Hessian of ``psi`` with respect to ``y``,
 and the global sparse pattern is fixed once: each assembly only sums entries into place.
 
-The physics (which variables, which density) lives in :mod:`fem.fe.forms` and
-:mod:`fem.fe.model`; this module knows scikit-fem bases, dof maps and sparse matrices only.
+The physics (which variables, which density) lives in :mod:`mkm.fem.fe.forms` and
+:mod:`mkm.fem.fe.model`; this module knows scikit-fem bases, dof maps and sparse matrices only.
 """
 
 from __future__ import annotations

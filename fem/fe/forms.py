@@ -2,7 +2,8 @@
 
 Each function takes the kinematic variables at the quadrature points, stacked on the last axis,
 and returns the energy density's gradient and Hessian with respect to them. The assembly in
-:mod:`fem.fe.assembly` contracts them with constant (total-Lagrangian) operator arrays, so no form
+:mod:`mkm.fem.fe.assembly` contracts them with constant (total-Lagrangian) operator arrays, so no
+form
 indexes basis functions one by one; that keeps an assembly of the whole tangent vectorised.
 
 Variables (all in mm, MPa, so energies are in N mm):
@@ -18,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem.materials import MooneyRivlin
+from mkm.fem.materials import MooneyRivlin
 
 # d(j')/d(F_rr, F_rz, F_zr, F_zz) with j' = (F_zz, -F_zr, -F_rz, F_rr), see the tangent below
 _DJ_DF2 = np.array([[0, 0, 0, 1], [0, 0, -1, 0], [0, -1, 0, 0], [1, 0, 0, 0.0]])

@@ -33,15 +33,15 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 
-from fem.calibration import CalibratedTheta0
-from fem.eq2 import BAR_TO_MPA, check_theta0
-from fem.fe.assembly import Assembler, Term, operator
-from fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
-from fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
-from fem.fe.newton import OrderedLU, load_path, newton
-from fem.interface import ForceModel
-from fem.materials import SILASTIC_S, MooneyRivlin
-from fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
+from mkm.fem.calibration import CalibratedTheta0
+from mkm.fem.eq2 import BAR_TO_MPA, check_theta0
+from mkm.fem.fe.assembly import Assembler, Term, operator
+from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
+from mkm.fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
+from mkm.fem.fe.newton import OrderedLU, load_path, newton
+from mkm.fem.interface import ForceModel
+from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
 # away from the axis add an error far below the mesh's
@@ -57,7 +57,7 @@ FREE_PATH_CUTBACKS = 12
 FORCE_RTOL = 1e-8
 #: How the braid meets the rubber: ``bonded`` (fibres glued to the outer surface point by point,
 #: inextensible everywhere) or ``sliding`` (a frictionless sleeve: one uniform fibre tension and
-#: the sleeve's total length kept, see :func:`fem.fe.forms.sliding_sleeve_length`)
+#: the sleeve's total length kept, see :func:`mkm.fem.fe.forms.sliding_sleeve_length`)
 SLEEVES = ("bonded", "sliding")
 
 
@@ -213,7 +213,7 @@ class HalfMuscle:
         None where the closed form has no solution (at and beyond the braid lock).
 
         The mid-section of a long free muscle is the thick-wall closed form
-        (:func:`fem.thickwall.mid_section_kinematics`): uniform axial stretch ``1 - eps``,
+        (:func:`mkm.fem.thickwall.mid_section_kinematics`): uniform axial stretch ``1 - eps``,
         ``r^2 = k + R^2 / (1 - eps)``, at the thick-wall threshold pressure. Towards the clamped
         cap the radial displacement is faded out over half a diameter (the end zone); the wall
         pressure and braid tension start at rest, Newton finds them with the rest.
@@ -349,7 +349,7 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
     L0_mm : float
         Length at rest [mm] (282 in the paper).
     mesh : {"coarse", "medium", "fine"}
-        Mesh level (:data:`fem.fe.mesh.MESH_LEVELS`).
+        Mesh level (:data:`mkm.fem.fe.mesh.MESH_LEVELS`).
     material : MooneyRivlin
         Wall material (default Silastic S, the paper's Equation 3).
     braid : {"bonded", "sliding"}

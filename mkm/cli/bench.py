@@ -1,8 +1,9 @@
 """``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess``: argument parsing only.
 
-Hardware failures (:class:`bench.backend.BenchError`) print one line ``mkm: error: ...`` and exit
+Hardware failures (:class:`mkm.bench.backend.BenchError`) print one line ``mkm: error: ...`` and
+exit
 with status 1; bad input is a ``ValueError`` (status 2, handled by ``mkm.cli.main``). ``mkm
-acquire`` exits with :attr:`bench.run.RunResult.exit_code` (0 complete, 3 complete with lost
+acquire`` exits with :attr:`mkm.bench.run.RunResult.exit_code` (0 complete, 3 complete with lost
 samples, 128 + N after signal N, 2 when the disk failed, 1 otherwise) and always prints the run
 folder last on stdout once it exists.
 """
@@ -12,9 +13,9 @@ from __future__ import annotations
 import json
 import sys
 
-from bench.backend import BenchError
-from fem.ranges import parse_fraction, parse_number, parse_pressures
+from mkm.bench.backend import BenchError
 from mkm.cli.common import argtype, has_display
+from mkm.fem.ranges import parse_fraction, parse_number, parse_pressures
 from mkm.paths import default_out
 
 EXIT_FAILED = 1
@@ -139,8 +140,8 @@ def _failed(exc: BenchError) -> int:
 
 
 def _acquire(args) -> int:
-    from bench.config import load_config
-    from bench.run import acquire, check_out_root
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire, check_out_root
 
     config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
     check_out_root(args.out)  # bad --out: one line, exit 2, before the device is opened
@@ -162,8 +163,8 @@ def _acquire(args) -> int:
 
 
 def _tare(args) -> int:
-    from bench.config import load_config
-    from bench.procedures import tare
+    from mkm.bench.config import load_config
+    from mkm.bench.procedures import tare
 
     try:
         out = tare(load_config(args.config), args.backend, args.clock, args.seconds)
@@ -187,8 +188,8 @@ def loadcell_toml(fit: dict, config=None) -> str:
 
 
 def _calibrate_loadcell(args) -> int:
-    from bench.config import load_config
-    from bench.procedures import calibrate_loadcell, fit_loadcell
+    from mkm.bench.config import load_config
+    from mkm.bench.procedures import calibrate_loadcell, fit_loadcell
 
     config = load_config(args.config)
     if args.volts is not None:
@@ -209,8 +210,8 @@ def _calibrate_loadcell(args) -> int:
 
 
 def _check(args) -> int:
-    from bench.config import load_config
-    from bench.procedures import check
+    from mkm.bench.config import load_config
+    from mkm.bench.procedures import check
 
     config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
     try:
@@ -225,8 +226,8 @@ def _check(args) -> int:
 
 
 def _vent(args) -> int:
-    from bench.config import load_config
-    from bench.procedures import vent
+    from mkm.bench.config import load_config
+    from mkm.bench.procedures import vent
 
     try:
         out = vent(load_config(args.config), args.backend, args.clock)
@@ -243,8 +244,8 @@ def _vent(args) -> int:
 
 
 def _reprocess(args) -> int:
-    from bench.config import load_config
-    from bench.reprocess import reprocess
+    from mkm.bench.config import load_config
+    from mkm.bench.reprocess import reprocess
 
     path = reprocess(args.run_dir, load_config(args.config), args.out)
     print(path)

@@ -7,8 +7,8 @@ import io
 import os
 import sys
 
-from fem.ranges import parse_fraction, parse_number, parse_pressures
-from fem.records import (
+from mkm.fem.ranges import parse_fraction, parse_number, parse_pressures
+from mkm.fem.records import (
     prediction_metadata,
     sidecar_path,
     write_csv_with_sidecar,
@@ -26,7 +26,7 @@ def has_display() -> bool:
 
 
 def argtype(parse, *args):
-    """Wrap a ``fem.ranges`` parser for argparse, keeping its one-line message."""
+    """Wrap a ``mkm.fem.ranges`` parser for argparse, keeping its one-line message."""
 
     def convert(text):
         try:
@@ -72,7 +72,7 @@ def with_calibration(func):
     """Run the command ``func(args)`` with ``args.calibration`` selected (if given)."""
 
     def run(args):
-        from fem.calibration import use_calibration
+        from mkm.fem.calibration import use_calibration
 
         with use_calibration(getattr(args, "calibration", None)):
             return func(args)

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from fem.ranges import parse_number
 from mkm.cli.common import add_calibration_argument, argtype, with_calibration
+from mkm.fem.ranges import parse_number
 
 EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
            "--t0 2:3 --out mkm-out/design")

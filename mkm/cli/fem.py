@@ -7,10 +7,6 @@ from pathlib import Path
 
 import pandas as pd
 
-from fem.calibration import TARGETS
-from fem.ladder import model_names
-from fem.paper import CASE_I_CSV
-from fem.ranges import parse_fraction, parse_number
 from mkm.cli.common import (
     add_calibration_argument,
     add_geometry_arguments,
@@ -20,6 +16,10 @@ from mkm.cli.common import (
     model_from_args,
     with_calibration,
 )
+from mkm.fem.calibration import TARGETS
+from mkm.fem.ladder import model_names
+from mkm.fem.paper import CASE_I_CSV
+from mkm.fem.ranges import parse_fraction, parse_number
 from mkm.paths import default_cache, default_out
 
 
@@ -137,14 +137,14 @@ def _solve(args) -> int:
 
 
 def _calibrate(args) -> int:
-    from fem.calibration import (
+    from mkm.fem.calibration import (
         CALIBRATION_FILE,
         calibration_entry,
         default_target,
         fit_theta0,
         store_calibration,
     )
-    from fem.ladder import LADDER
+    from mkm.fem.ladder import LADDER
 
     reference, name, sha256 = _load_reference(args.reference)
     overrides = {}
@@ -191,14 +191,14 @@ def _load_reference(path):
     A run folder gives its settled steps: the measured mean pressure and force of each step,
     its direction, and the muscle from run.json.
     """
-    from fem.calibration import check_reference, read_reference
-    from fem.records import file_sha256
+    from mkm.fem.calibration import check_reference, read_reference
+    from mkm.fem.records import file_sha256
 
     path = Path(path)
     if not path.is_dir():
         sha = file_sha256(path) if path.is_file() else None
         return read_reference(path), path.name, sha
-    from bench.storage import load_run
+    from mkm.bench.storage import load_run
 
     run = load_run(path)
     steps = run.steps[run.steps["settled"]]
@@ -212,7 +212,7 @@ def _load_reference(path):
 
 
 def _dataset(args) -> int:
-    from fem.dataset import build_dataset
+    from mkm.fem.dataset import build_dataset
 
     run = build_dataset(args.grid, args.model, mesh=args.mesh, out=args.out,
                         workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache)
@@ -221,7 +221,7 @@ def _dataset(args) -> int:
 
 
 def _convergence(args) -> int:
-    from fem.fe.convergence import convergence_study
+    from mkm.fem.fe.convergence import convergence_study
 
     frame, png = convergence_study(args.out, D0_mm=args.D0, t0_mm=args.t0, eps=args.eps,
                                    pressure_bar=args.pressure, theta0_deg=args.theta0,

@@ -7,7 +7,6 @@ import time
 import warnings
 from pathlib import Path
 
-from fem.ranges import parse_number
 from mkm.cli.common import (
     add_calibration_argument,
     add_geometry_arguments,
@@ -15,6 +14,7 @@ from mkm.cli.common import (
     emit_prediction,
     with_calibration,
 )
+from mkm.fem.ranges import parse_number
 from mkm.paths import default_cache, default_out
 from mkm.progress import summary_line
 
@@ -195,14 +195,14 @@ def _dataset_argument(parser) -> None:
 
 
 def _dataset(args):
-    from surrogate.training_data import DEFAULT_DATASET
+    from mkm.surrogate.training_data import DEFAULT_DATASET
 
     return args.dataset or DEFAULT_DATASET
 
 
 def _grid(args) -> int:
-    from surrogate.paper_grid import paper_grid_study
-    from surrogate.training_data import PAPER_DATASET
+    from mkm.surrogate.paper_grid import paper_grid_study
+    from mkm.surrogate.training_data import PAPER_DATASET
 
     start = time.perf_counter()
     variants = tuple(v.strip() for v in args.variants.split(",") if v.strip())
@@ -216,8 +216,8 @@ def _grid(args) -> int:
 
 
 def _train(args) -> int:
-    from surrogate.io import save_model
-    from surrogate.train import train_surrogate
+    from mkm.surrogate.io import save_model
+    from mkm.surrogate.train import train_surrogate
 
     start = time.perf_counter()
     model = train_surrogate(args.kind, _dataset(args), splits=args.splits,
@@ -238,8 +238,8 @@ def _train(args) -> int:
 
 
 def _load(path, accept_mismatch=False, progress=False, **parameters):
-    from surrogate.io import load_model
-    from surrogate.train import default_model
+    from mkm.surrogate.io import load_model
+    from mkm.surrogate.train import default_model
 
     parameters = {k: v for k, v in parameters.items() if v is not None}
     if path == "default":
@@ -268,8 +268,8 @@ def _predict(args) -> int:
 
 
 def _test(args) -> int:
-    from surrogate.testset import FE_REFERENCE, run_test
-    from surrogate.train import train_surrogate
+    from mkm.surrogate.testset import FE_REFERENCE, run_test
+    from mkm.surrogate.train import train_surrogate
 
     paths = args.model or ([] if args.kind else ["default"])
     models = {_label(path): _load(path, args.accept_mismatch, not args.no_progress)
@@ -291,7 +291,7 @@ def _figure6(out: Path, reference) -> None:
     """The paper's Figure 6 from run_test's points: the one Figure-6 plot of the project."""
     import pandas as pd
 
-    from fem.records import read_prediction_header
+    from mkm.fem.records import read_prediction_header
     from mkm.figures import surrogate_fe_figure
     from mkm.html import save_figure
 
@@ -304,8 +304,8 @@ def _figure6(out: Path, reference) -> None:
 
 
 def _reference(args) -> int:
-    from fem.ladder import make_model
-    from surrogate.testset import FE_REFERENCE, build_fe_reference
+    from mkm.fem.ladder import make_model
+    from mkm.surrogate.testset import FE_REFERENCE, build_fe_reference
 
     model = make_model(args.model, mesh=args.mesh, theta0_deg=args.theta0)
     out = FE_REFERENCE if args.update_shipped else args.out
@@ -315,7 +315,7 @@ def _reference(args) -> int:
 
 
 def _design(args) -> int:
-    from surrogate.design import (
+    from mkm.surrogate.design import (
         DESIGN_DATASET,
         STD_CALIBRATION_SET,
         build_design,
@@ -347,8 +347,8 @@ def _design(args) -> int:
 
 
 def _evaluate(args) -> int:
-    from fem.records import write_json_atomic
-    from surrogate.offgrid import evaluate_offgrid
+    from mkm.fem.records import write_json_atomic
+    from mkm.surrogate.offgrid import evaluate_offgrid
 
     start = time.perf_counter()
     model = _load(args.model, args.accept_mismatch, not args.no_progress)

@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 import time
 
-from fem.ranges import parse_fraction
 from mkm.cli.common import add_calibration_argument, with_calibration
+from mkm.fem.ranges import parse_fraction
 
 
 def register(subparsers) -> None:

@@ -11,8 +11,8 @@ from unittest import mock
 import numpy as np
 import pytest
 
-from bench.config import load_config
-from bench.sim import SimMuscleBench
+from mkm.bench.config import load_config
+from mkm.bench.sim import SimMuscleBench
 
 
 @pytest.fixture(autouse=True)
@@ -36,7 +36,8 @@ def config():
 class FakeDriver:
     """The NI-DAQmx driver layer (``BaseInterpreter``) faked, fed by the simulated bench.
 
-    Reads come from a :class:`bench.sim.SimMuscleBench`, AO writes go to its regulator, so a whole
+    Reads come from a :class:`mkm.bench.sim.SimMuscleBench`, AO writes go to its regulator, so a
+    whole
     run goes through nidaqmx's real Python code and gives physically meaningful data.
     """
 

@@ -5,8 +5,8 @@ the same run for the same physics, so the simulation cannot drift away from the 
 import pandas as pd
 import pytest
 
-from bench.run import acquire
-from bench.storage import load_run
+from mkm.bench.run import acquire
+from mkm.bench.storage import load_run
 
 
 @pytest.mark.mocked_hardware

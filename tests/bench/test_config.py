@@ -2,7 +2,7 @@
 
 import pytest
 
-from bench.config import load_config, parse_config
+from mkm.bench.config import load_config, parse_config
 
 
 def test_default_is_the_papers_prototype():
@@ -18,7 +18,7 @@ def test_default_is_the_papers_prototype():
 def test_default_load_cell_holds_the_prototypes_force():
     # The model force at 2.5 bar must stay below the interlock, or the default run could not
     # finish; the paper's +-98 N TCA10 would not (see test_run.py::test_interlock_...).
-    from fem.ladder import make_model
+    from mkm.fem.ladder import make_model
 
     c = load_config()
     force = make_model(c.sim.model).predict(2.5, c.muscle.D0_mm, c.muscle.t0_mm, 0.0).force_N

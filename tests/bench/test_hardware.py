@@ -8,9 +8,9 @@ import os
 
 import pytest
 
-from bench.config import load_config
-from bench.ni import NIBackend
-from bench.procedures import check, tare
+from mkm.bench.config import load_config
+from mkm.bench.ni import NIBackend
+from mkm.bench.procedures import check, tare
 
 DEVICE = os.environ.get("MKM_NI_DEVICE")
 pytestmark = [pytest.mark.hardware,

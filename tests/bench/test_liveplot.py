@@ -1,6 +1,6 @@
 """bench.liveplot: the live plot runs in its own process and never makes the run wait."""
 
-from bench.liveplot import LivePlot
+from mkm.bench.liveplot import LivePlot
 
 
 def test_live_plot_drops_points_instead_of_blocking(monkeypatch):

@@ -13,7 +13,7 @@ import pytest
 from nidaqmx.constants import AcquisitionType, Edge, TerminalConfiguration, VoltageUnits
 from nidaqmx.errors import DaqError, DaqNotFoundError, DaqReadError, DaqWriteError
 
-from bench.backend import (
+from mkm.bench.backend import (
     AOWriteFailed,
     BenchError,
     BufferOverflow,
@@ -22,9 +22,9 @@ from bench.backend import (
     DriverMissing,
     ReadTimeout,
 )
-from bench.ni import NIBackend
-from bench.run import acquire
-from bench.storage import load_run
+from mkm.bench.ni import NIBackend
+from mkm.bench.run import acquire
+from mkm.bench.storage import load_run
 
 pytestmark = pytest.mark.mocked_hardware
 

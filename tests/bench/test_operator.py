@@ -1,6 +1,6 @@
 """bench.operator: the console operator re-asks until the manometer reading is a pressure."""
 
-from bench.operator import ConsoleOperator
+from mkm.bench.operator import ConsoleOperator
 
 
 def test_console_operator_reasks_on_bad_readings(capsys):

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from bench.procedures import calibrate_loadcell, check, fit_loadcell, tare
-from bench.sim import STANDARD_GRAVITY
+from mkm.bench.procedures import calibrate_loadcell, check, fit_loadcell, tare
+from mkm.bench.sim import STANDARD_GRAVITY
 
 
 def test_fit_loadcell_recovers_a_linear_cell():
@@ -49,7 +49,7 @@ def test_check_lists_device_steps_and_duration(config):
 
 
 def test_vent_reads_the_monitor_below_the_threshold(config):
-    from bench.procedures import VENTED_BELOW_BAR, vent
+    from mkm.bench.procedures import VENTED_BELOW_BAR, vent
 
     out = vent(config)
     assert out["vented"] and not out["manual"]
@@ -57,7 +57,7 @@ def test_vent_reads_the_monitor_below_the_threshold(config):
 
 
 def test_vent_with_a_manual_regulator_says_it_cannot_read(config):
-    from bench.procedures import vent
+    from mkm.bench.procedures import vent
 
     out = vent(config.replace(regulator={"kind": "manual"}))
     assert out["manual"] and not out["vented"] and out["pressure_bar"] != out["pressure_bar"]
@@ -65,9 +65,9 @@ def test_vent_with_a_manual_regulator_says_it_cannot_read(config):
 
 def test_vent_that_does_not_bring_the_pressure_down_says_so(config, monkeypatch):
     # a regulator stuck at 1 bar never reads below 0.05 bar after the vent command
-    import bench.procedures as procedures
-    from bench.backend import BenchError
-    from bench.sim import SimBackend
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+    from mkm.bench.sim import SimBackend
 
     class Stuck(SimBackend):
         def start(self):
@@ -82,7 +82,7 @@ def test_vent_that_does_not_bring_the_pressure_down_says_so(config, monkeypatch)
 
 
 def test_tare_refuses_a_noisy_cell(config):
-    from bench.sequence import TareInvalid
+    from mkm.bench.sequence import TareInvalid
 
     with pytest.raises(TareInvalid, match="spreads"):
         tare(config.replace(sim={"noise_V": 0.05}), seconds=5.0)

@@ -3,7 +3,7 @@
 import errno
 from pathlib import Path
 
-from bench.storage import RunWriter, load_run
+from mkm.bench.storage import RunWriter, load_run
 from mkm.cli import main
 
 

@@ -5,11 +5,11 @@ import json
 import numpy as np
 import pytest
 
-from bench.reprocess import reprocess
-from bench.run import acquire
-from bench.storage import load_run
-from fem.records import file_sha256
+from mkm.bench.reprocess import reprocess
+from mkm.bench.run import acquire
+from mkm.bench.storage import load_run
 from mkm.cli import main
+from mkm.fem.records import file_sha256
 
 
 @pytest.fixture

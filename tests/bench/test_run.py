@@ -6,10 +6,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from bench.run import BenchRun, acquire
-from bench.sim import SimBackend
-from bench.storage import COMMAND_COLUMNS, SAMPLE_COLUMNS, STEP_COLUMNS, RunStatus, load_run
-from fem.ladder import make_model
+from mkm.bench.run import BenchRun, acquire
+from mkm.bench.sim import SimBackend
+from mkm.bench.storage import COMMAND_COLUMNS, SAMPLE_COLUMNS, STEP_COLUMNS, RunStatus, load_run
+from mkm.fem.ladder import make_model
 
 
 def record(config, tmp_path, **faults):

@@ -3,16 +3,16 @@
 import numpy as np
 import pytest
 
-import bench.sequence
-from bench.run import acquire
-from bench.sequence import (
+from mkm.bench import sequence as bench_sequence
+from mkm.bench.run import acquire
+from mkm.bench.sequence import (
     TareInvalid,
     estimate_duration_s,
     plan_steps,
     settle_reached,
     validate_tare,
 )
-from bench.storage import load_run
+from mkm.bench.storage import load_run
 
 
 def test_plan_up_down_repeats(config):
@@ -49,13 +49,13 @@ def test_settle_detection_keeps_one_window_whatever_the_timeout(config, tmp_path
     # second: 1 h 7 s, 2 h 29 s). Now only the last window is kept and judged: every judgement
     # sees at most window_s x rate + 2 samples, however long the step runs.
     seen = []
-    real = bench.sequence.settle_reached
+    real = bench_sequence.settle_reached
 
     def spy(t, f, p, set_bar, cfg):
         seen.append(t.size)
         return real(t, f, p, set_bar, cfg)
 
-    monkeypatch.setattr(bench.sequence, "settle_reached", spy)
+    monkeypatch.setattr(bench_sequence, "settle_reached", spy)
     c = config.replace(settle={"max_force_std_N": 0.01, "timeout_s": 600.0},  # never settles
                        sequence={"pressures_bar": (0.5,), "down_sweep": False})
     result = acquire(c, out_root=tmp_path)

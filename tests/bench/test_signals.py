@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bench.signals import CTRL_C_EVENT, CTRL_CLOSE_EVENT, StopSignal, StopSignals
-from bench.storage import load_run
+from mkm.bench.signals import CTRL_C_EVENT, CTRL_CLOSE_EVENT, StopSignal, StopSignals
+from mkm.bench.storage import load_run
 from mkm.cli import main
 
 FAST = """
@@ -36,7 +36,7 @@ def write_config(tmp_path):
     rest = rest[rest.index("[settle]"):]
     # the closed form instead of the FE table: a second less of start-up, same signals
     rest = rest.replace('model = "axisym"', 'model = "thickwall"')
-    config = tmp_path / "bench.toml"
+    config = tmp_path / "mkm.bench.toml"
     config.write_text(head + FAST + rest)
     return config
 
@@ -127,9 +127,9 @@ def test_sigkill_is_noticed_and_vented_by_the_next_command(tmp_path, capsys):
 @pytest.mark.parametrize("command", [["check"], ["tare", "--seconds", "1"],
                                      ["acquire", "--pressures", "0.5", "--no-progress"]])
 def test_every_bench_command_vents_a_dead_run_first(tmp_path, capsys, command):
-    from bench.storage import ProcessIdentity
-    from bench.unvented import Marker, _folder
-    from fem.records import write_json_atomic
+    from mkm.bench.storage import ProcessIdentity
+    from mkm.bench.unvented import Marker, _folder
+    from mkm.fem.records import write_json_atomic
 
     dead = ProcessIdentity(2**22 + 7, socket.gethostname(), 1.0, None)  # pid above pid_max
     marker = Marker("sim-Dev1", str(tmp_path / "old-run"), "2026-12-01T10:00:00+00:00",

@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from bench.sim import LSB_V, SimBackend, SimMuscleBench, quantize_volts, static_force_table
-from fem.ladder import make_model
+from mkm.bench.sim import LSB_V, SimBackend, SimMuscleBench, quantize_volts, static_force_table
+from mkm.fem.ladder import make_model
 
 
 def quiet(config, **sim):
@@ -152,7 +152,7 @@ def test_real_clock_overflow_found_while_writing_is_reported_by_the_next_read(co
     # the reader fell 2 s behind a 1 s buffer; the command write must not fail for it
     import time
 
-    from bench.backend import BufferOverflow
+    from mkm.bench.backend import BufferOverflow
 
     c = config.replace(sim={"buffer_s": 1.0})
     sim = SimBackend(c, clock="real")

@@ -9,8 +9,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from bench.run import acquire
-from bench.storage import (
+from mkm.bench.run import acquire
+from mkm.bench.storage import (
     SCHEMA_VERSION,
     RunMeta,
     RunStatus,
@@ -20,7 +20,7 @@ from bench.storage import (
     iter_samples,
     load_run,
 )
-from fem.records import write_json_atomic
+from mkm.fem.records import write_json_atomic
 
 
 @pytest.fixture

@@ -2,8 +2,8 @@
 
 import json
 
-from bench.storage import ProcessIdentity
-from bench.unvented import BenchLease, _folder, find_unvented
+from mkm.bench.storage import ProcessIdentity
+from mkm.bench.unvented import BenchLease, _folder, find_unvented
 
 
 def test_a_live_lease_is_not_unvented_and_release_removes_it(tmp_path):

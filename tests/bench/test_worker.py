@@ -9,8 +9,8 @@ import math
 import numpy as np
 import pytest
 
-from bench.run import acquire
-from bench.storage import load_run
+from mkm.bench.run import acquire
+from mkm.bench.storage import load_run
 
 
 def record(config, tmp_path, **faults):
@@ -107,7 +107,7 @@ def test_failed_final_vent_asks_for_a_vent_by_hand(config, tmp_path):
     # the bench stays marked: the next command on it vents first and says why
     import json
 
-    from bench.unvented import _folder
+    from mkm.bench.unvented import _folder
 
     (marker,) = [json.loads(p.read_text()) for p in _folder("sim-Dev1").glob("*.json")]
     assert marker["run_path"] == str(run.path) and marker["last_command_bar"] == 0.5
@@ -117,8 +117,8 @@ def test_stall_shorter_than_the_buffer_delays_but_loses_nothing(config, tmp_path
     # A 5 s stall with a 10 s buffer at 1.0 s: the samples wait in the buffer, none is lost, and
     # the hardware is at 6.0 s when the reader resumes at 1.0 s; the 0.5 bar command, written
     # when the reader reaches 2.0 s (the virtual reader catches up instantly), lands at 6.0 s.
-    from bench.run import BenchRun
-    from bench.sim import SimBackend
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
 
     c = config.replace(sim={"buffer_s": 10.0, "faults": {"stall_at_s": 1.0, "stall_s": 5.0}})
     backend = SimBackend(c)

@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.calibration import (
+from mkm.fem.calibration import (
     CALIBRATION_FILE,
     calibrate_command,
     calibrated,
@@ -18,11 +18,11 @@ from fem.calibration import (
     store_calibration,
     use_calibration,
 )
-from fem.ladder import make_model
-from fem.materials import SILASTIC_S
-from fem.paper import CASE_I_CSV
-from fem.records import read_prediction_header
-from fem.thickwall import ThickWall
+from mkm.fem.ladder import make_model
+from mkm.fem.materials import SILASTIC_S
+from mkm.fem.paper import CASE_I_CSV
+from mkm.fem.records import read_prediction_header
+from mkm.fem.thickwall import ThickWall
 
 
 @pytest.mark.parametrize("key", ["eq2-inner", "eq2-braid", "thickwall", "axisym",
@@ -169,12 +169,12 @@ SHORT_RUN = {"preconditioning_cycles": "0", "tare_s": "2.0", "min_dwell_s": "3.0
 @pytest.fixture(scope="module")
 def sim_run(tmp_path_factory):
     """A simulated bench run of the paper's prototype at eps 12.2 %, up and down (a few s)."""
-    from bench.config import DEFAULT_CONFIG
-    from fem.records import package_file
+    from mkm.bench.config import DEFAULT_CONFIG
     from mkm.cli import main
+    from mkm.fem.records import package_file
 
     folder = tmp_path_factory.mktemp("bench")
-    text = package_file("bench", "configs", DEFAULT_CONFIG).read_text(encoding="utf-8")
+    text = package_file("mkm.bench", "configs", DEFAULT_CONFIG).read_text(encoding="utf-8")
     for key, value in SHORT_RUN.items():
         text, n = re.subn(rf"^{key} = [^\s#]+", f"{key} = {value}", text, flags=re.M)
         assert n == 1, key
@@ -192,7 +192,7 @@ def test_calibration_from_a_bench_run_folder_on_the_command_line(sim_run, tmp_pa
     # measured 0.03 deg off (creep and noise; coarse against medium mesh: 0.005 deg); 0.1 deg
     # is 1 % in slope, and fitting the rising branch alone, or keeping the turning point, lands
     # 0.3 deg off.
-    from bench.storage import load_run
+    from mkm.bench.storage import load_run
     from mkm.cli import main
 
     assert load_run(sim_run).meta.hardware["sim"]["model"] == "axisym"

@@ -4,10 +4,10 @@
 import numpy as np
 import pytest
 
-from fem.calibration import calibrated, read_reference
-from fem.eq2 import Eq2, chou_hannaford, chou_hannaford_eps_max
-from fem.ladder import make_model
-from fem.paper import CASE_I_CSV
+from mkm.fem.calibration import calibrated, read_reference
+from mkm.fem.eq2 import Eq2, chou_hannaford, chou_hannaford_eps_max
+from mkm.fem.ladder import make_model
+from mkm.fem.paper import CASE_I_CSV
 
 CASE_I = CASE_I_CSV
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from fem.interface import Domain, ForceModel, validate_inputs
+from mkm.fem.interface import Domain, ForceModel, validate_inputs
 
 
 class Linear(ForceModel):
@@ -33,7 +33,7 @@ def test_predict_broadcasts_and_flags():
      r"^pressure_bar=-1 is invalid: expected a gauge pressure in \[0, 1000\] bar$"),
     ((1e9, 35.0, 2.5, 0.1), r"^pressure_bar=1e\+09 is invalid: expected a gauge pressure in"),
     ((1.0, 1e9, 2.5, 0.1),
-     r"^D0_mm=1e\+09 is invalid: expected an inner diameter in \(0, 500\] mm$"),
+     r"^D0_mm=1e\+09 is invalid: expected an inner diameter in \[1, 500\] mm$"),
     ((1.0, 0.0, 2.5, 0.1), "^D0_mm=0 is invalid"),
     ((1.0, 35.0, 0.0, 0.1), "^t0_mm=0 is invalid"),
     ((1.0, 10.0, 5.0, 0.1), "^t0_mm=5 is too thick for D0_mm=10: expected t0_mm < D0_mm/2 = 5$"),

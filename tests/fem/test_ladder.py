@@ -5,8 +5,8 @@ import sys
 
 import pytest
 
-from fem.eq2 import Eq2
-from fem.ladder import LADDER, make_model, model_class, model_names
+from mkm.fem.eq2 import Eq2
+from mkm.fem.ladder import LADDER, make_model, model_class, model_names
 
 
 def test_every_rung_builds_and_orders_as_the_physics_says():

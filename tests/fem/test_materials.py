@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from fem.fe.forms import mooney_rivlin_incompressible, mooney_rivlin_incompressible_tangent
-from fem.materials import SILASTIC_S
+from mkm.fem.fe.forms import mooney_rivlin_incompressible, mooney_rivlin_incompressible_tangent
+from mkm.fem.materials import SILASTIC_S
 
 C10, C01 = SILASTIC_S.C10_MPa, SILASTIC_S.C01_MPa
 STRETCHES = np.array([0.6, 0.9, 1.0, 1.3, 2.0, 3.0])

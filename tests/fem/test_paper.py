@@ -4,7 +4,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.paper import CASE_I_CSV, TABLE3_CSV, TEST_MUSCLES, TEST_PRESSURES_BAR, equation7_err_pct
+from mkm.fem.paper import (
+    CASE_I_CSV,
+    TABLE3_CSV,
+    TEST_MUSCLES,
+    TEST_PRESSURES_BAR,
+    equation7_err_pct,
+)
 
 
 def test_equation7_normalises_by_the_largest_reference_force():

@@ -3,7 +3,13 @@
 import numpy as np
 import pytest
 
-from fem.ranges import MAX_RANGE_VALUES, parse_fraction, parse_number, parse_pressures, parse_range
+from mkm.fem.ranges import (
+    MAX_RANGE_VALUES,
+    parse_fraction,
+    parse_number,
+    parse_pressures,
+    parse_range,
+)
 
 
 def test_range_includes_its_stop_despite_round_off():

@@ -4,7 +4,7 @@ import os
 
 import pytest
 
-from fem import records
+from mkm.fem import records
 
 
 def test_crash_while_writing_keeps_the_old_file(tmp_path, monkeypatch):
@@ -26,17 +26,17 @@ def test_crash_while_writing_keeps_the_old_file(tmp_path, monkeypatch):
 
 def test_source_version_follows_imports_and_data(tmp_path):
     # thickwall imports materials: editing a material constant must change the version
-    import fem.materials  # noqa: F401
-    from fem.records import source_version
-    version = source_version("fem.thickwall")
+    import mkm.fem.materials  # noqa: F401
+    from mkm.fem.records import source_version
+    version = source_version("mkm.fem.thickwall")
     assert version.startswith(records.package_version() + "+")
-    assert version == source_version("fem.thickwall")  # read from the files: stable
-    assert version != source_version("fem.eq2")
+    assert version == source_version("mkm.fem.thickwall")  # read from the files: stable
+    assert version != source_version("mkm.fem.eq2")
 
 
 def test_package_files_exist():
-    assert records.package_file("fem", "data", "paper_case_I.csv").is_file()
-    assert records.package_file("surrogate", "data", "mkm_dataset.csv").is_file()
+    assert records.package_file("mkm.fem", "data", "paper_case_I.csv").is_file()
+    assert records.package_file("mkm.surrogate", "data", "mkm_dataset.csv").is_file()
     assert records.package_file("mkm", "data", "model_errors.csv").is_file()
 
 

@@ -8,12 +8,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import quad
 
-from fem.calibration import calibrated, read_reference
-from fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford, chou_hannaford_eps_max
-from fem.ladder import make_model
-from fem.materials import SILASTIC_S, MooneyRivlin
-from fem.paper import CASE_I_CSV
-from fem.thickwall import (
+from mkm.fem.calibration import calibrated, read_reference
+from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford, chou_hannaford_eps_max
+from mkm.fem.ladder import make_model
+from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.paper import CASE_I_CSV
+from mkm.fem.thickwall import (
     ThickWall,
     braided_tube_elastic_force,
     braided_tube_energy,

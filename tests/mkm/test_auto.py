@@ -6,8 +6,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.ladder import make_model
 from mkm.auto import AutoModel, error_bounds, explain, read_model_errors
+from mkm.fem.ladder import make_model
 
 PRESSURES = (0.0, 1.25, 2.5)
 MUSCLES = {"M1": (35.0, 2.5, 0.05), "M2": (40.0, 3.0, 0.15)}

@@ -9,10 +9,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.calibration import CALIBRATION_FILE
-from fem.ladder import make_model, model_names
-from fem.paper import CASE_I_CSV
-from fem.records import read_prediction_header
+from mkm.fem.calibration import CALIBRATION_FILE
+from mkm.fem.ladder import make_model, model_names
+from mkm.fem.paper import CASE_I_CSV
+from mkm.fem.records import read_prediction_header
 
 CASE_I = CASE_I_CSV
 MODELS = ", ".join(model_names())  # grows as rungs are registered
@@ -67,11 +67,11 @@ EPS = "expected a shortening ratio in [0, 1) (a fraction)"
 
 @pytest.mark.parametrize("args, message", [
     (["--D0", "-1", "--t0", "2.5", "--eps", "0.05"],
-     "mkm: error: D0_mm=-1 is invalid: expected an inner diameter in (0, 500] mm"),
+     "mkm: error: D0_mm=-1 is invalid: expected an inner diameter in [1, 500] mm"),
     (["--D0", "0", "--t0", "2.5", "--eps", "0.05"],
-     "mkm: error: D0_mm=0 is invalid: expected an inner diameter in (0, 500] mm"),
+     "mkm: error: D0_mm=0 is invalid: expected an inner diameter in [1, 500] mm"),
     (["--D0", "35", "--t0", "0", "--eps", "0.05"],
-     "mkm: error: t0_mm=0 is invalid: expected a wall thickness > 0 mm"),
+     "mkm: error: t0_mm=0 is invalid: expected a wall thickness in [0.05, 100] mm"),
     (["--D0", "35", "--t0", "20", "--eps", "0.05"], f"mkm: error: {THICK}"),
     (["--D0", "35", "--t0", "17.5", "--eps", "0.05"], "mkm: error: t0_mm=17.5 is too thick"),
     (["--D0", "35", "--t0", "2.5", "--eps", "1"], f"mkm: error: eps=1 is invalid: {EPS}"),

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from bench.config import load_config, parse_config
-from bench.storage import load_run
+from mkm.bench.config import load_config, parse_config
+from mkm.bench.storage import load_run
 from mkm.cli import main
 
 
@@ -86,7 +86,7 @@ def test_aborted_run_report_states_steps_planned_and_done(tmp_path):
     # Issue 10: the writer stored a count, the reader expected a list, so every aborted run's
     # report said "of an unrecorded number planned". Interlock at 20 % of the 1961 N cell
     # (392 N): the prototype reaches it on the way to 2.5 bar, after the first steps.
-    from bench.run import acquire
+    from mkm.bench.run import acquire
     from mkm.report import build_report
 
     config = load_config(pressures_bar=[0.5, 1.0, 2.5]).replace(
@@ -156,8 +156,8 @@ def test_huge_sequences_are_one_line(argv, message, capsys):
 
 
 def _edited_run(tmp_path, **muscle):
-    from bench.run import acquire
-    from fem.records import write_json_atomic
+    from mkm.bench.run import acquire
+    from mkm.fem.records import write_json_atomic
 
     config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
     path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
@@ -189,8 +189,8 @@ def test_report_survives_mathtext_in_a_recorded_id(tmp_path):
 
 def test_report_says_a_run_ended_without_venting(tmp_path):
     # what kill -9 leaves: run.json "running" from a dead process, no final vent in commands.csv
-    from bench.run import acquire
-    from fem.records import write_json_atomic
+    from mkm.bench.run import acquire
+    from mkm.fem.records import write_json_atomic
     from mkm.report import build_report
 
     config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
@@ -211,10 +211,10 @@ def test_report_says_a_run_ended_without_venting(tmp_path):
 def test_report_says_a_run_vented_a_dead_one_first(tmp_path):
     import socket
 
-    from bench.run import acquire
-    from bench.storage import ProcessIdentity
-    from bench.unvented import Marker, _folder
-    from fem.records import write_json_atomic
+    from mkm.bench.run import acquire
+    from mkm.bench.storage import ProcessIdentity
+    from mkm.bench.unvented import Marker, _folder
+    from mkm.fem.records import write_json_atomic
     from mkm.report import build_report
 
     dead = ProcessIdentity(2**22 + 7, socket.gethostname(), 1.0, None)

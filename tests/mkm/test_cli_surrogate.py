@@ -3,8 +3,8 @@ import json
 import pandas as pd
 import pytest
 
-from fem.calibration import calibrated
 from mkm.cli import main
+from mkm.fem.calibration import calibrated
 
 
 def test_grid_small_run(thickwall_dataset, tmp_path, capsys):

@@ -12,9 +12,6 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.eq2 import chou_hannaford_eps_max
-from fem.fe.model import Axisym
-from fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.design import (
     Requirement,
     design,
@@ -22,6 +19,9 @@ from mkm.design import (
     parse_requirement,
     search,
 )
+from mkm.fem.eq2 import chou_hannaford_eps_max
+from mkm.fem.fe.model import Axisym
+from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.registry import ENTRIES
 
 MESH = "coarse"

@@ -70,11 +70,15 @@ def test_demo_and_report_leave_the_shipped_files_alone(monkeypatch, tmp_path, ca
     assert _shipped_hashes() == before
 
 
-def test_one_cache_folder_for_predictions_surrogates_and_dataset_jobs():
-    from fem.dataset.build import DEFAULT_CACHE
+def test_one_cache_folder_for_predictions_surrogates_and_dataset_jobs(tmp_path, monkeypatch):
+    from mkm.fem.dataset.build import default_cache_dir as dataset_cache
     from mkm.prediction_cache import DEFAULT_CACHE_DIR
-    from surrogate.train import CACHE_DIR
+    from mkm.surrogate.train import default_cache_dir as surrogate_cache
 
-    # (module constants: fixed at import, before any test changes XDG_CACHE_HOME)
-    folders = {DEFAULT_CACHE_DIR.parent, CACHE_DIR.parent, DEFAULT_CACHE.parent}
+    # resolved at each use: MKM_CACHE_DIR set after import moves all three
+    monkeypatch.setenv("MKM_CACHE_DIR", str(tmp_path / "elsewhere"))
+    folders = {Path(DEFAULT_CACHE_DIR).parent, surrogate_cache().parent, dataset_cache().parent}
+    assert folders == {tmp_path / "elsewhere"}
+    monkeypatch.delenv("MKM_CACHE_DIR")
+    folders = {Path(DEFAULT_CACHE_DIR).parent, surrogate_cache().parent, dataset_cache().parent}
     assert len(folders) == 1 and folders.pop().is_absolute()

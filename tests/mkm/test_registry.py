@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from fem.eq2 import chou_hannaford
-from fem.paper import L0_MM
+from mkm.fem.eq2 import chou_hannaford
+from mkm.fem.paper import L0_MM
 from mkm.registry import ENTRIES, describe, parse_spec, parse_specs
 
 

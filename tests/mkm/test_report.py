@@ -16,12 +16,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from bench.config import load_config
-from bench.run import acquire
-from fem.calibration import calibrated
-from fem.interface import Domain
-from fem.ladder import make_model
-from fem.paper import equation7_err_pct
+from mkm.bench.config import load_config
+from mkm.bench.run import acquire
+from mkm.fem.calibration import calibrated
+from mkm.fem.interface import Domain
+from mkm.fem.ladder import make_model
+from mkm.fem.paper import equation7_err_pct
 from mkm.prediction_cache import cached_predict
 from mkm.registry import parse_specs as parse_models
 from mkm.report import build_report, domain_pressures

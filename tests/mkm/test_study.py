@@ -8,10 +8,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.calibration import calibrated
-from fem.eq2 import chou_hannaford_eps_max
-from fem.interface import Prediction
 from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
+from mkm.fem.calibration import calibrated
+from mkm.fem.eq2 import chou_hannaford_eps_max
+from mkm.fem.interface import Prediction
 from mkm.study import StudyConfig, classify, pareto_front, registry_predictor, run_study
 
 
@@ -122,7 +122,7 @@ def test_classify_each_failure():
 
 def test_surrogate_kinds_default_all_and_typos():
     from mkm.study import STUDY_SURROGATES, surrogate_kinds
-    from surrogate.estimators import BEST
+    from mkm.surrogate.estimators import BEST
 
     assert BEST in STUDY_SURROGATES
     every = surrogate_kinds("all")

@@ -4,10 +4,10 @@ the test muscles of the shipped reference, and fresh off-grid muscles the FE com
 import numpy as np
 import pytest
 
-from surrogate.offgrid import evaluate_offgrid
-from surrogate.testset import FE_REFERENCE, PAPER_MUSCLES, read_fe_reference
-from surrogate.train import train_surrogate
-from surrogate.training_data import DEFAULT_DATASET
+from mkm.surrogate.offgrid import evaluate_offgrid
+from mkm.surrogate.testset import FE_REFERENCE, PAPER_MUSCLES, read_fe_reference
+from mkm.surrogate.train import train_surrogate
+from mkm.surrogate.training_data import DEFAULT_DATASET
 
 pytestmark = pytest.mark.skipif(
     not (DEFAULT_DATASET.is_file() and FE_REFERENCE.is_file()),

@@ -1,8 +1,8 @@
 import numpy as np
 import pytest
 
-from fem.materials import SILASTIC_S
-from surrogate.design import (
+from mkm.fem.materials import SILASTIC_S
+from mkm.surrogate.design import (
     BOX,
     DESIGN_DATASET,
     MUSCLE_PARAMETERS,
@@ -10,7 +10,7 @@ from surrogate.design import (
     random_muscles,
     space_filling,
 )
-from surrogate.training_data import load_training_data
+from mkm.surrogate.training_data import load_training_data
 
 
 def test_box_is_the_issues():
@@ -75,9 +75,9 @@ def test_shipped_design_is_what_the_sidecar_says():
 def test_adaptive_muscles_go_where_the_surrogate_is_unsure():
     # Trained on the space-filling muscles only, the picks have a larger predictive std of the
     # force at 2.5 bar than the candidates on average, and are distinct.
-    from surrogate.design import adaptive_muscles
-    from surrogate.estimators import make_estimator
-    from surrogate.training_data import ALL_INPUTS
+    from mkm.surrogate.design import adaptive_muscles
+    from mkm.surrogate.estimators import make_estimator
+    from mkm.surrogate.training_data import ALL_INPUTS
 
     data = load_training_data(DESIGN_DATASET)
     estimator = make_estimator("muscle-gp", data.inputs).fit(

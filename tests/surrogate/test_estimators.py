@@ -4,7 +4,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from sklearn.utils.estimator_checks import parametrize_with_checks
 
-from surrogate.estimators import (
+from mkm.surrogate.estimators import (
     PAPER_NETS,
     MuscleThresholdGP,
     ThresholdLinearRegressor,
@@ -17,9 +17,9 @@ from surrogate.estimators import (
     paper_net,
     posterior_mean_std,
 )
-from surrogate.features import braid_slope_N_per_bar, thickwall_threshold_bar
-from surrogate.train import quiet_fits
-from surrogate.training_data import load_training_data
+from mkm.surrogate.features import braid_slope_N_per_bar, thickwall_threshold_bar
+from mkm.surrogate.train import quiet_fits
+from mkm.surrogate.training_data import load_training_data
 
 
 @parametrize_with_checks([ThresholdLinearRegressor(), ThresholdLinearRegressor(degree=1)])
@@ -190,7 +190,7 @@ def test_calibrate_std_matches_normal_coverage(muscle_gp):
     # error of ~400 points, 5 %).
     from sklearn.base import clone
 
-    from surrogate.validation import coverage
+    from mkm.surrogate.validation import coverage
 
     X, _ = synthetic_sweeps(40, seed=3)
     with quiet_fits():
@@ -213,8 +213,8 @@ def test_calibrate_std_on_errors_growing_with_the_end_effect(muscle_gp, monkeypa
     # power of log k_A meets both. Measured: 69.1 and 94.7 % (one scale: 72.3 and 92.0 %).
     from sklearn.base import clone
 
-    import surrogate.estimators as estimators
-    from surrogate.validation import coverage
+    import mkm.surrogate.estimators as estimators
+    from mkm.surrogate.validation import coverage
 
     with quiet_fits():
         model = clone(muscle_gp).fit(*synthetic_sweeps(40, seed=0))

@@ -7,15 +7,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fem.records import file_sha256
-from surrogate.io import (
+from mkm.fem.records import file_sha256
+from mkm.surrogate.io import (
     ESTIMATOR_FILE,
     METADATA_FILE,
     LibraryVersionWarning,
     load_model,
     save_model,
 )
-from surrogate.train import train_surrogate
+from mkm.surrogate.train import train_surrogate
 
 
 @pytest.fixture(scope="module")
@@ -154,7 +154,7 @@ def test_not_a_model_folder(tmp_path):
 
 
 def test_default_model_is_trained_once_and_cached(thickwall_dataset, tmp_path):
-    from surrogate.train import default_model
+    from mkm.surrogate.train import default_model
 
     first = default_model(thickwall_dataset, cache_dir=tmp_path)
     (entry,) = [p for p in tmp_path.iterdir() if p.is_dir()]

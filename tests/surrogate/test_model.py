@@ -3,11 +3,11 @@ import warnings
 import numpy as np
 import pytest
 
-from fem.calibration import calibrated
-from surrogate.design import BOX
-from surrogate.model import OutOfDomainWarning
-from surrogate.train import train_surrogate
-from surrogate.training_data import DEFAULT_DATASET
+from mkm.fem.calibration import calibrated
+from mkm.surrogate.design import BOX
+from mkm.surrogate.model import OutOfDomainWarning
+from mkm.surrogate.train import train_surrogate
+from mkm.surrogate.training_data import DEFAULT_DATASET
 
 
 @pytest.fixture(scope="module")
@@ -61,7 +61,7 @@ def test_recorded_parameter_at_another_value_is_refused(physics, parameter, valu
 def test_default_angle_other_than_recorded_is_refused_at_predict(physics, tmp_path):
     # A user who calibrates theta0 on a bench run gets a refusal, not a surrogate silently
     # trained at another angle.
-    from fem.calibration import use_calibration
+    from mkm.fem.calibration import use_calibration
 
     other = tmp_path / "calibration.json"
     other.write_text('{"axisym": {"theta0_deg": 30.0}}')
@@ -81,7 +81,7 @@ def test_gp_gives_a_predictive_spread(gp):
 def test_prediction_is_exact_on_thickwall_data(physics):
     # The dataset is the thick-wall model itself, which the physics surrogate holds exactly
     # (its priors): the off-grid muscle I must come out to round-off.
-    from fem.ladder import make_model
+    from mkm.fem.ladder import make_model
 
     P = np.linspace(0.0, 2.5, 11)
     thickwall = make_model("thickwall", theta0_deg=calibrated("axisym")["theta0_deg"])

@@ -1,6 +1,6 @@
 import pandas as pd
 
-from surrogate.paper_grid import run_paper_grid
+from mkm.surrogate.paper_grid import run_paper_grid
 
 
 def test_paper_grid_does_not_depend_on_the_workers(thickwall_dataset):

@@ -2,10 +2,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.ladder import make_model
-from fem.paper import equation7_err_pct
-from fem.records import read_prediction_header
-from surrogate.testset import (
+from mkm.fem.ladder import make_model
+from mkm.fem.paper import equation7_err_pct
+from mkm.fem.records import read_prediction_header
+from mkm.surrogate.testset import (
     TEST_MUSCLES,
     build_fe_reference,
     compare_on_test_muscles,

@@ -8,14 +8,14 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from fem.calibration import calibrated
-from fem.dataset import build as dataset
-from fem.dataset.build import Job, build_dataset, model_version, run_job
-from fem.dataset.grid import parse_grid
-from fem.eq2 import chou_hannaford
-from fem.ladder import LADDER as MODELS
-from fem.records import package_file, source_version
 from mkm.cli import main
+from mkm.fem.calibration import calibrated
+from mkm.fem.dataset import build as dataset
+from mkm.fem.dataset.build import Job, build_dataset, model_version, run_job
+from mkm.fem.dataset.grid import parse_grid
+from mkm.fem.eq2 import chou_hannaford
+from mkm.fem.ladder import LADDER as MODELS
+from mkm.fem.records import package_file, source_version
 
 # 2 muscles x 2 eps = 4 jobs of 3 pressures: the smallest grid with more jobs than workers
 TINY_GRID = """
@@ -116,7 +116,7 @@ FAKE_MODEL = """
 import numpy as np
 
 from fakemkm.physics import stiffness_N_per_bar
-from fem.interface import ForceModel
+from mkm.fem.interface import ForceModel
 
 
 class Fake(ForceModel):
@@ -220,7 +220,7 @@ def test_unreachable_scheduler_gives_clear_error(tmp_path):
         tiny(out=None, scheduler="tcp://127.0.0.1:9", cache_dir=tmp_path)
 
 
-SHIPPED = package_file("surrogate", "data", "mkm_dataset.csv")
+SHIPPED = package_file("mkm.surrogate", "data", "mkm_dataset.csv")
 
 
 @pytest.mark.parametrize("D0_mm, t0_mm, eps", [(30.0, 2.0, 0.2), (50.0, 4.0, 0.1)])

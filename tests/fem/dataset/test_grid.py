@@ -2,10 +2,10 @@
 
 import pytest
 
-from fem.calibration import calibrated
-from fem.dataset.build import make_jobs
-from fem.dataset.grid import load_grid, parse_grid
 from mkm.cli import main
+from mkm.fem.calibration import calibrated
+from mkm.fem.dataset.build import make_jobs
+from mkm.fem.dataset.grid import load_grid, parse_grid
 
 GRID = """
 pressure_bar = "0:2:1"

@@ -4,7 +4,7 @@ import numpy as np
 from skfem import Basis, BilinearForm, ElementTriP2, LinearForm, MeshTri, asm
 from skfem.helpers import dot, grad
 
-from fem.fe.assembly import Assembler, Term, operator
+from mkm.fem.fe.assembly import Assembler, Term, operator
 
 
 def test_quadratic_energy_gives_scikit_fems_matrix_and_vector():

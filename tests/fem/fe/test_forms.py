@@ -7,7 +7,7 @@ and, assembled, at a deformed state in test_model.py.
 import numpy as np
 import pytest
 
-from fem.fe.forms import braid_inextensibility, cavity_volume, sliding_sleeve_length
+from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, sliding_sleeve_length
 
 RO = 20.0
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from fem.fe.mesh import MESH_LEVELS, graded_spacing, half_muscle_mesh
+from mkm.fem.fe.mesh import MESH_LEVELS, graded_spacing, half_muscle_mesh
 
 
 @pytest.mark.parametrize(("n", "ratio"), [(16, 8.0), (96, 32.0), (1, 5.0)])

@@ -11,12 +11,12 @@ import pytest
 import scipy.sparse as sp
 from scipy.integrate import quad
 
-from fem.eq2 import BAR_TO_MPA, chou_hannaford
-from fem.fe.forms import braid_inextensibility
-from fem.fe.model import Axisym, HalfMuscle, isometric_sweep
-from fem.fe.newton import load_path
-from fem.materials import SILASTIC_S, MooneyRivlin
-from fem.thickwall import ThickWall
+from mkm.fem.eq2 import BAR_TO_MPA, chou_hannaford
+from mkm.fem.fe.forms import braid_inextensibility
+from mkm.fem.fe.model import Axisym, HalfMuscle, isometric_sweep
+from mkm.fem.fe.newton import load_path
+from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.thickwall import ThickWall
 
 THETA0 = 32.0
 SOFT = MooneyRivlin(1e-5, 1e-5, source="a nearly massless membrane for the braid limit")

@@ -3,7 +3,7 @@
 import numpy as np
 import scipy.sparse as sp
 
-from fem.fe.newton import load_path, newton
+from mkm.fem.fe.newton import load_path, newton
 
 
 def cubic(x, t=8.0):
@@ -68,7 +68,7 @@ def _laplacian_saddle(n: int, seed: int) -> sp.csc_matrix:
 def test_ordered_lu_solves_as_superlu_and_keeps_its_ordering():
     from scipy.sparse.linalg import splu
 
-    from fem.fe.newton import OrderedLU
+    from mkm.fem.fe.newton import OrderedLU
 
     factorize = OrderedLU()
     A = _laplacian_saddle(200, 0)
@@ -88,7 +88,7 @@ def test_ordered_lu_solves_as_superlu_and_keeps_its_ordering():
 
 
 def test_ordered_lu_of_the_leading_block_in_csr():
-    from fem.fe.newton import OrderedLU
+    from mkm.fem.fe.newton import OrderedLU
 
     A = _laplacian_saddle(200, 4)
     m = A.shape[0] - 3
@@ -98,7 +98,7 @@ def test_ordered_lu_of_the_leading_block_in_csr():
 
 
 def test_newton_reports_a_singular_tangent_through_ordered_lu():
-    from fem.fe.newton import OrderedLU
+    from mkm.fem.fe.newton import OrderedLU
 
     def flat(x):  # residual 1 everywhere, tangent zero: no Newton step exists
         return np.ones(2), sp.csr_matrix((2, 2))

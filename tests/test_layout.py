@@ -1,0 +1,39 @@
+"""The layout the wheel and the architecture check rely on: one import root, every package folder
+installed, every module of the application in a layer of the import contract."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+CONFIG = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+
+
+def _package_dir() -> dict[str, str]:
+    return CONFIG["tool"]["setuptools"]["package-dir"]
+
+
+def test_one_import_root():
+    assert {name.split(".")[0] for name in _package_dir()} == {"mkm"}
+    assert CONFIG["tool"]["importlinter"]["root_packages"] == ["mkm"]
+
+
+def test_every_package_folder_is_installed_under_its_name():
+    found = set()
+    for name, folder in _package_dir().items():
+        for init in (ROOT / folder).rglob("__init__.py"):
+            parts = init.parent.relative_to(ROOT / folder).parts
+            found.add(".".join((name, *parts)))
+    # the mapped folders nest (mkm.fem is in mkm/'s list only through its own mapping)
+    assert set(CONFIG["tool"]["setuptools"]["packages"]) == found
+
+
+def test_every_application_module_is_in_a_layer():
+    (layers,) = [c["layers"] for c in CONFIG["tool"]["importlinter"]["contracts"]
+                 if c["type"] == "layers"]
+    named = {m.strip() for layer in layers for m in layer.replace("|", ":").split(":")}
+    modules = {p.stem for p in (ROOT / "mkm").glob("*.py") if p.stem != "__init__"}
+    modules |= {p.parent.name for p in (ROOT / "mkm").glob("*/__init__.py")}
+    modules |= {name.split(".")[1] for name in _package_dir() if name.count(".") == 1}
+    assert modules == named
