@@ -25,6 +25,7 @@ justified it (``error_bound_pct``; NaN for the fallback); :func:`explain` says i
 from __future__ import annotations
 
 import warnings
+from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 
@@ -104,13 +105,6 @@ def candidates(table: pd.DataFrame) -> pd.DataFrame:
     return cost.sort_values("seconds_per_point", kind="stable").reset_index(drop=True)
 
 
-def make_candidate(spec: str) -> ForceModel:
-    """Build the predictor a study-table ``spec`` names (the registry's spec syntax)."""
-    from mkm.registry import parse_spec
-
-    return parse_spec(spec).build()
-
-
 class AutoModel(ForceModel):
     """The cheapest model meeting ``tolerance`` over the query (``--model auto --tolerance 2%``).
 
@@ -123,15 +117,19 @@ class AutoModel(ForceModel):
     per_point : bool
         False (default): one model for the whole call, the cheapest whose largest bound over
         all points meets the tolerance. True: the cheapest model per point.
+    build : callable
+        ``build(spec) -> ForceModel``: makes a candidate from a study-table spec (the
+        registry's :func:`mkm.registry.build_spec`, which passes itself when it builds auto).
     """
 
     name = "auto"
 
     def __init__(self, tolerance: float = 0.02, table: str | None = None,
-                 per_point: bool = False):
+                 per_point: bool = False, *, build: Callable[[str], ForceModel]):
         self.tolerance = tolerance
         self.table = table
         self.per_point = bool(per_point)
+        self.build = build
 
     def params(self):
         path = Path(self.table or MODEL_ERRORS_FILE)
@@ -168,7 +166,7 @@ class AutoModel(ForceModel):
                 continue
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # a point a candidate flags goes to the next one
-                pred = make_candidate(row.spec).predict(P[idx], D0[idx], t0[idx], eps[idx])
+                pred = self.build(row.spec).predict(P[idx], D0[idx], t0[idx], eps[idx])
             if not self.per_point and not pred.valid.all():
                 continue  # one model for the whole query: it must answer every point
             ok = idx[pred.valid]
@@ -188,7 +186,7 @@ class AutoModel(ForceModel):
             spec = candidates(table).set_index("predictor")["spec"].get(
                 FALLBACK, "axisym:mesh=fine")
             args = (np.ravel(a)[fallback] for a in (P, D0, t0, eps))
-            pred = make_candidate(spec).predict(*args)
+            pred = self.build(spec).predict(*args)
             out["force_N"][fallback] = pred.force_N
             valid[fallback] = pred.valid
             converged[fallback] = pred.converged

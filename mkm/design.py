@@ -761,9 +761,9 @@ DESIGN_COLUMNS = ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
 
 
 def run_design(requirements=(), constraints=None, objective=None, top=None, spec=None,
-               mesh: str = "medium", surrogate: str = "surrogate", out_dir=None,
+               mesh: str = "medium", surrogate: str = "surrogate",
                progress: bool = False, cache_dir=None) -> DesignResult:
-    """Search, verify and (with ``out_dir``) write the design files.
+    """Search and verify (:func:`mkm.design_page.write_design` writes the files).
 
     ``spec``: a TOML file (:func:`load_spec`); ``requirements`` are added to its requirements,
     ``constraints`` (a dict) override its constraints, ``objective``/``top`` its own.
@@ -796,12 +796,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
         f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + [
         "meets_all", "min_fe_margin_pct", "flags", "fe_failure"]
-    result = DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
-    if out_dir is not None:
-        from mkm.design_page import write_design
-
-        write_design(result, Path(out_dir))
-    return result
+    return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
 
 
 def design(requirements, constraints=None, objective: str = "min-outer-diameter", *,

@@ -14,8 +14,10 @@ from __future__ import annotations
 
 import inspect
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Any
 
+from mkm.auto import AutoModel
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import model_class
 
@@ -110,9 +112,7 @@ class Spec:
                     params.setdefault(key, defaults[key])
             return _surrogate(params)
         if self.name == "auto":
-            from mkm.auto import AutoModel
-
-            factory = AutoModel
+            factory = partial(AutoModel, build=build_spec)
         else:
             factory = model_class(self.name)
         accepted = inspect.signature(factory).parameters
@@ -185,6 +185,11 @@ def parse_spec(text: str) -> Spec:
                              f"{', '.join(ENTRIES[name].params)}")
         params[key] = _value(value.strip())
     return Spec(name, tuple(sorted(params.items())))
+
+
+def build_spec(text: str, **defaults) -> ForceModel:
+    """The predictor a spec names: ``parse_spec(text).build(**defaults)``."""
+    return parse_spec(text).build(**defaults)
 
 
 def parse_specs(text: str) -> list[Spec]:

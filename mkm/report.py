@@ -595,13 +595,14 @@ def _auto_choice(r: _Run, tolerance: float):
     """``(model, explanation)`` of ``auto`` for the whole run, or None (chosen once per run:
     the summary and the run's section both show it)."""
     from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain
+    from mkm.registry import build_spec
 
     if tolerance not in r.auto_choices:
         choice = None
         if not r.run.steps.empty and MODEL_ERRORS_FILE.exists():
             m = r.muscle
-            chosen = AutoModel(tolerance=tolerance).choose(_auto_pressures(r), m["D0_mm"],
-                                                           m["t0_mm"], m["eps"])
+            auto = AutoModel(tolerance=tolerance, build=build_spec)
+            chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
             choice = str(chosen["model_used"][0]), explain(chosen, tolerance)
         r.auto_choices[tolerance] = choice
     return r.auto_choices[tolerance]

@@ -65,7 +65,7 @@ FORCE_NOISE_N = 0.1  # a tenth of a newton: below what the bench resolves, so no
 @dataclass
 class Predictor:
     """A model in the study: display label, family, how to build it, and its spec for ``auto``
-    (JSON understood by :func:`mkm.auto.make_candidate`; empty: auto does not use it)."""
+    (JSON understood by :func:`mkm.registry.build_spec`; empty: auto does not use it)."""
 
     label: str
     family: str

@@ -36,10 +36,6 @@ from mkm.fem.records import package_file, provenance, write_atomic
 #: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).
 DESIGN_DATASET = package_file("mkm.surrogate", "data", "mkm_design.csv")
 
-#: Random muscles (seeds recorded in its sidecar) whose FE sweeps set the scale of the default
-#: surrogate's std (:meth:`mkm.surrogate.estimators.MuscleThresholdGP.calibrate_std`): drawn as the
-#: off-grid evaluation draws, never used to fit the forces.
-STD_CALIBRATION_SET = package_file("mkm.surrogate", "data", "mkm_std_calibration.csv")
 
 #: Parameters of a muscle, in the order of the design's columns.
 MUSCLE_PARAMETERS = ("D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")

@@ -20,7 +20,7 @@ from threadpoolctl import threadpool_limits
 from mkm.fem.records import file_sha256, provenance, user_cache
 from mkm.surrogate.estimators import BEST, make_estimator
 from mkm.surrogate.model import SurrogateForceModel
-from mkm.surrogate.training_data import DEFAULT_DATASET, load_training_data
+from mkm.surrogate.training_data import DEFAULT_DATASET, STD_CALIBRATION_SET, load_training_data
 from mkm.surrogate.validation import (
     MUSCLE_SPLITS,
     coverage,
@@ -91,7 +91,6 @@ def std_calibration_set(estimator, data):
     """The shipped random muscles that scale the std of ``estimator`` (``None`` when it has no
     std to scale, or is trained on other inputs: a surrogate of one length, angle and rubber
     keeps the scale of its own training muscles)."""
-    from mkm.surrogate.design import STD_CALIBRATION_SET
 
     if not hasattr(estimator, "calibrate_std") or not STD_CALIBRATION_SET.is_file():
         return None

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from mkm.cli.common import add_calibration_argument, argtype, with_calibration
 from mkm.fem.ranges import parse_number
 
@@ -63,6 +65,7 @@ def register(subparsers) -> None:
 
 def _design(args) -> int:
     from mkm.design import run_design
+    from mkm.design_page import write_design
     from mkm.paths import default_out
     from mkm.prediction_cache import DEFAULT_CACHE_DIR
     from mkm.progress import summary_line
@@ -76,9 +79,9 @@ def _design(args) -> int:
                          "--require 400N@2bar,eps=0.10) or --spec FILE")
     result = run_design(args.require, constraints, args.objective, args.top, spec=args.spec,
                         mesh=args.mesh, surrogate=args.surrogate,
-                        out_dir=args.out or default_out("design"),
                         progress=not args.no_progress,
                         cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR)
+    write_design(result, Path(args.out or default_out("design")))
     summary_line("design", result.summary())
     print(result.files["html"])
     return 0 if result.chosen is not None else 1

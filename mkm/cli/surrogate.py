@@ -315,12 +315,8 @@ def _reference(args) -> int:
 
 
 def _design(args) -> int:
-    from mkm.surrogate.design import (
-        DESIGN_DATASET,
-        STD_CALIBRATION_SET,
-        build_design,
-        build_random_set,
-    )
+    from mkm.surrogate.design import DESIGN_DATASET, build_design, build_random_set
+    from mkm.surrogate.training_data import STD_CALIBRATION_SET
 
     start = time.perf_counter()
     if args.random_seeds:

@@ -8,6 +8,7 @@ import pytest
 
 from mkm.auto import AutoModel, error_bounds, explain, read_model_errors
 from mkm.fem.ladder import make_model
+from mkm.registry import build_spec
 
 PRESSURES = (0.0, 1.25, 2.5)
 MUSCLES = {"M1": (35.0, 2.5, 0.05), "M2": (40.0, 3.0, 0.15)}
@@ -19,6 +20,10 @@ TABLE = {"eq2-inner": (EQ2, (5.0, 5.0, 5.0), 1e-6),
          "thickwall": ("thickwall", (1.0, 1.0, 3.0), 1e-5),
          # the fallback: the coarse mesh keeps the test fast; its spec is what auto builds
          "axisym-fine": ("axisym:mesh=coarse", (0.0, 0.0, 0.0), 0.1)}
+
+
+def auto(**params) -> AutoModel:
+    return AutoModel(build=build_spec, **params)
 
 
 @pytest.fixture(scope="module")
@@ -46,11 +51,11 @@ def test_error_bound_is_the_worst_of_the_bracketing_study_points(table_path):
 
 def test_picks_the_cheapest_model_meeting_the_tolerance(table_path):
     P = np.array([1.0, 1.0])
-    loose = AutoModel(tolerance=0.10, table=table_path).predict(P, 35.0, 2.5, 0.05)
+    loose = auto(tolerance=0.10, table=table_path).predict(P, 35.0, 2.5, 0.05)
     assert set(loose.extras["model_used"]) == {"eq2-inner"}  # 5 % <= 10 %, and cheapest
     np.testing.assert_allclose(loose.force_N, make_model("eq2", theta0_deg=50.0).predict(
         P, 35.0, 2.5, 0.05).force_N)
-    tight = AutoModel(tolerance=0.02, table=table_path).predict(P, 35.0, 2.5, 0.05)
+    tight = auto(tolerance=0.02, table=table_path).predict(P, 35.0, 2.5, 0.05)
     assert set(tight.extras["model_used"]) == {"thickwall"}  # eq2's 5 % > 2 %
     np.testing.assert_allclose(tight.extras["error_bound_pct"], 1.0)
     np.testing.assert_allclose(tight.force_N, make_model("thickwall").predict(
@@ -59,14 +64,14 @@ def test_picks_the_cheapest_model_meeting_the_tolerance(table_path):
 
 
 def test_an_invalid_cheap_model_is_skipped(table_path):
-    pred = AutoModel(tolerance=0.10, table=table_path).predict([1.0], 40.0, 3.0, 0.15)
+    pred = auto(tolerance=0.10, table=table_path).predict([1.0], 40.0, 3.0, 0.15)
     assert pred.extras["model_used"].tolist() == ["thickwall"]  # eq2 beyond its eps_max
 
 
 def test_falls_back_to_the_fe_model_per_point(table_path):
     # 2.0 bar: thickwall's bound is 3 % > 2 %; D0 80 mm: no study muscle near
     P, D0 = np.array([1.0, 2.0, 1.0]), np.array([35.0, 35.0, 80.0])
-    pred = AutoModel(tolerance=0.02, table=table_path, per_point=True).predict(P, D0, 2.5, 0.05)
+    pred = auto(tolerance=0.02, table=table_path, per_point=True).predict(P, D0, 2.5, 0.05)
     assert pred.extras["model_used"].tolist() == ["thickwall", "axisym-fine", "axisym-fine"]
     assert np.isnan(pred.extras["error_bound_pct"][1:]).all()
     fe = make_model("axisym", mesh="coarse").predict(P[1:], D0[1:], 2.5, 0.05)
@@ -81,14 +86,14 @@ def test_one_model_for_the_whole_sweep_by_default(table_path):
     # (3 %), so the sweep as a whole goes to the FE model; at 5 % Equation 2 (bound 5 % at every
     # pressure) is the cheapest that holds over the whole sweep
     P = np.array([1.0, 2.0])
-    tight = AutoModel(tolerance=0.02, table=table_path).predict(P, 35.0, 2.5, 0.05)
+    tight = auto(tolerance=0.02, table=table_path).predict(P, 35.0, 2.5, 0.05)
     assert tight.extras["model_used"].tolist() == ["axisym-fine", "axisym-fine"]
-    loose = AutoModel(tolerance=0.035, table=table_path).predict(P, 35.0, 2.5, 0.05)
+    loose = auto(tolerance=0.035, table=table_path).predict(P, 35.0, 2.5, 0.05)
     assert loose.extras["model_used"].tolist() == ["thickwall", "thickwall"]  # 3 % <= 3.5 %
     np.testing.assert_allclose(loose.extras["error_bound_pct"], [1.0, 3.0])
     # eq2 qualifies by its bound at M1 and M2, but is invalid at M2's eps: the sweep over both
     # muscles cannot use it, not even at M1
-    both = AutoModel(tolerance=0.10, table=table_path).predict([1.0, 1.0], [35.0, 40.0],
+    both = auto(tolerance=0.10, table=table_path).predict([1.0, 1.0], [35.0, 40.0],
                                                                [2.5, 3.0], [0.05, 0.15])
     assert both.extras["model_used"].tolist() == ["thickwall", "thickwall"]
     assert "per_point" in both.params and both.params["per_point"] is False
@@ -96,9 +101,9 @@ def test_one_model_for_the_whole_sweep_by_default(table_path):
 
 def test_bad_tolerance_and_missing_table_are_clear_errors(table_path, tmp_path):
     with pytest.raises(ValueError, match=r"tolerance=1\.5 is invalid"):
-        AutoModel(tolerance=1.5, table=table_path).predict(1.0, 35.0, 2.5, 0.05)
+        auto(tolerance=1.5, table=table_path).predict(1.0, 35.0, 2.5, 0.05)
     with pytest.raises(ValueError, match="run `mkm study`"):
-        AutoModel(table=str(tmp_path / "none.csv")).predict(1.0, 35.0, 2.5, 0.05)
+        auto(table=str(tmp_path / "none.csv")).predict(1.0, 35.0, 2.5, 0.05)
 
 
 def test_cli_solve_auto_says_what_it_used(capsys):
