@@ -33,7 +33,7 @@ def test_none_means_default_and_unknown_parameters_are_named():
 
 
 def test_cheap_rungs_do_not_import_the_fe_machinery():
-    code = "import sys, fem.ladder as l; l.make_model('thickwall'); print('skfem' in sys.modules)"
+    code = "import sys, mkm.fem.ladder as l; l.make_model('thickwall'); print('skfem' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip()
     assert out == "False"

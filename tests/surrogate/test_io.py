@@ -115,7 +115,7 @@ CRAFTED_OBJECTS = {
     # a function reference the loader would call: skops stores it by name
     "function": "import os\nobj = os.system",
     # a class of ours that is not a model
-    "class": "from surrogate.model import OutOfDomainWarning\nobj = OutOfDomainWarning()",
+    "class": "from mkm.surrogate.model import OutOfDomainWarning\nobj = OutOfDomainWarning()",
 }
 
 
@@ -168,7 +168,7 @@ def test_two_processes_training_at_once(thickwall_dataset, tmp_path):
     # Two processes training the same cached model at once once crashed ("Directory not
     # empty"). With the lock, one trains and saves, the other waits and loads it: both finish,
     # with the same model, and one entry is left.
-    script = ("import sys\nfrom surrogate.train import cached_model\n"
+    script = ("import sys\nfrom mkm.surrogate.train import cached_model\n"
               "m = cached_model('physics', sys.argv[1], cache_dir=sys.argv[2], splits=0)\n"
               "print(repr(float(m.predict(2.0, 40.0, 3.0, 0.1).force_N)))\n")
     runs = [subprocess.Popen([sys.executable, "-c", script, str(thickwall_dataset),

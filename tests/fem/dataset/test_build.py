@@ -167,7 +167,7 @@ def test_editing_the_physics_changes_the_model_version(fake_model):
 
 def test_model_version_is_the_same_in_every_process():
     # workers compute it again and must agree with the client, whatever each has imported
-    code = "import fem.thickwall, mkm.cli; from fem.dataset.build import model_version as v; " \
+    code = "import mkm.fem.thickwall, mkm.cli; from mkm.fem.dataset.build import model_version as v; " \
            "print(v('eq2'))"
     other = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                            check=True).stdout.strip()
