@@ -36,3 +36,11 @@ MATERIALS: dict[str, MooneyRivlin] = {
     ),
 }
 SILASTIC_S = MATERIALS["silastic_s"]
+
+
+def mooney_rivlin(C10_MPa: float | None = None, C01_MPa: float | None = None) -> MooneyRivlin:
+    """The Mooney-Rivlin rubber with these constants [MPa]; a None is Silastic S's value."""
+    if C10_MPa is None and C01_MPa is None:
+        return SILASTIC_S
+    return MooneyRivlin(SILASTIC_S.C10_MPa if C10_MPa is None else float(C10_MPa),
+                        SILASTIC_S.C01_MPa if C01_MPa is None else float(C01_MPa))

@@ -32,7 +32,7 @@ import numpy as np
 from mkm.fem.calibration import CalibratedTheta0
 from mkm.fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
 from mkm.fem.interface import Domain, ForceModel
-from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.materials import SILASTIC_S, MooneyRivlin, mooney_rivlin
 
 
 def mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg):
@@ -181,8 +181,8 @@ class ThickWall(CalibratedTheta0, ForceModel):
         Braid angle at rest [deg]. Default: the calibrated value in ``fem/calibration.json``.
     L0_mm : float
         Length at rest [mm]. Recorded only: the mid-section model does not depend on the length.
-    material : MooneyRivlin
-        Wall material; default Silastic S (the paper's Equation 3).
+    C10_MPa, C01_MPa : float, optional
+        Mooney-Rivlin constants of the wall [MPa]; default Silastic S (the paper's Equation 3).
     """
 
     name = "thickwall"
@@ -190,10 +190,15 @@ class ThickWall(CalibratedTheta0, ForceModel):
     domain = Domain()
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
-                 material: MooneyRivlin = SILASTIC_S):
+                 C10_MPa: float | None = None, C01_MPa: float | None = None):
         self.theta0_deg = theta0_deg
         self.L0_mm = L0_mm
-        self.material = material
+        self.C10_MPa = C10_MPa
+        self.C01_MPa = C01_MPa
+
+    @property
+    def material(self) -> MooneyRivlin:
+        return mooney_rivlin(self.C10_MPa, self.C01_MPa)
 
     def params(self):
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,

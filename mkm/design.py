@@ -26,7 +26,6 @@ writes ``designs.csv``, ``designs.json`` (provenance), ``design.html`` and its f
 
 from __future__ import annotations
 
-import inspect
 import re
 import time
 import tomllib
@@ -41,12 +40,11 @@ import pandas as pd
 from mkm.fem.calibration import calibrated
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
-from mkm.fem.ladder import model_class
 from mkm.fem.materials import MATERIALS
 from mkm.fem.paper import L0_MM
 from mkm.fem.ranges import parse_fraction, parse_number
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
-from mkm.registry import ENTRIES, parse_spec
+from mkm.registry import parse_spec
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
 DEFAULT_RUBBER = "silastic_s"
@@ -341,19 +339,15 @@ def _surrogate_for(spec, base, L0, theta0, rubber):
     parameter); any other must equal what the surrogate predicts at, or the constraint conflicts
     with it (named in the ``ValueError``).
     """
-    listed = set(ENTRIES["surrogate"].params) - {k for k, _ in spec.params}
+    listed = set(spec.entry.parameters) - {k for k, _ in spec.params}
     material = MATERIALS[rubber]
     wanted = {"L0_mm": float(L0), "theta0_deg": float(theta0), "C10_MPa": material.C10_MPa,
               "C01_MPa": material.C01_MPa}
     at = _predicts_at(base)
     params, conflicts = {}, []
-    if "rubber" in listed:
-        params["rubber"] = rubber
     for key, value in wanted.items():
         if key in listed:
             params[key] = value
-        elif key in ("C10_MPa", "C01_MPa") and "rubber" in params:
-            continue
         elif key in at and not np.isclose(value, at[key], rtol=1e-9, atol=0.0):
             conflicts.append(f"rubber={rubber}" if key.startswith("C") else f"{key}={value:g}")
     if conflicts:
@@ -362,7 +356,7 @@ def _surrogate_for(spec, base, L0, theta0, rubber):
                          f"surrogate {spec.text!r}: it predicts at {told} only")
     if not params:
         return base
-    if hasattr(base, "with_parameters") and "rubber" not in params:
+    if hasattr(base, "with_parameters"):
         return base.with_parameters(**params)  # the same fitted model, no reload
     return _build(spec.with_params(**params).text)
 
@@ -633,10 +627,10 @@ def pick(feasible: pd.DataFrame, top: int, box: dict) -> pd.DataFrame:
 
 def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str) -> ForceModel:
     """The axisymmetric FE model (registry ``axisym``) of one design family."""
-    accepted = inspect.signature(model_class("axisym")).parameters
-    extra = {"rubber": rubber} if "rubber" in accepted else {"material": MATERIALS[rubber]}
-    return parse_spec(f"axisym:mesh={mesh}").build(L0_mm=float(L0_mm),
-                                                   theta0_deg=float(theta0_deg), **extra)
+    material = MATERIALS[rubber]
+    return parse_spec(f"axisym:mesh={mesh}").build(
+        L0_mm=float(L0_mm), theta0_deg=float(theta0_deg), C10_MPa=material.C10_MPa,
+        C01_MPa=material.C01_MPa)
 
 
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",

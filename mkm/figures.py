@@ -16,9 +16,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
-# One colour per registry entry (mkm.registry.ENTRIES), the same in every figure.
-MODEL_COLOURS = {"eq2": "tab:blue", "thickwall": "tab:orange", "axisym": "tab:green",
-                 "surrogate": "tab:red", "auto": "tab:purple"}
+from mkm.registry import colour as entry_colour
+
 MEASURED = {"color": "black", "capsize": 3, "zorder": 5}
 RUN_MARKERS = ("o", "s", "^", "D", "v", "P")
 RUN_LINESTYLES = ("-", "--", ":", "-.")
@@ -35,7 +34,7 @@ def model_colours(specs) -> dict[str, str]:
     out: dict[str, str] = {}
     spare = (f"C{k}" for k in range(5, 100))
     for spec in specs:
-        c = MODEL_COLOURS.get(spec.name) or next(spare)
+        c = entry_colour(spec.name)  # the registry entry's, the same in every figure
         while c in out.values():
             c = next(spare)
         out[spec.text] = c
@@ -354,7 +353,8 @@ def speed_accuracy_figure(summary: pd.DataFrame, machine: str) -> Figure:
     floor = 0.3 * positive.min() if len(positive) else 1e-3
     y = summary["max_abs_err_pct"].where(summary["max_abs_err_pct"] > 0, floor)
     is_reference = summary["max_abs_err_pct"] == 0
-    for family, marker in FAMILY_MARKERS.items():
+    for family in dict.fromkeys(summary["family"]):
+        marker = FAMILY_MARKERS.get(family, "o")
         rows = (summary["family"] == family) & ~is_reference
         if rows.any():
             small = family in SMALL_FAMILIES

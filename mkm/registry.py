@@ -6,72 +6,107 @@ A *spec* names a predictor and its parameters: ``NAME[:key=value[,key=value...]]
 --models``, ``mkm study`` and ``auto``'s candidates all read specs with :func:`parse_spec` and
 build them with :meth:`Spec.build`; ``mkm models`` prints :func:`describe`.
 
+The entries are the physics ladder's (:data:`mkm.fem.ladder.LADDER`) followed by the
+application's own (:data:`APP_ENTRIES`: the surrogate and ``auto``); :func:`register` adds one.
+Each :class:`~mkm.fem.ladder.Entry` carries everything a list elsewhere would: factory,
+parameters, label, colour, family, caching, study variants.
+
 In a comma list of specs (``--models eq2,axisym:mesh=coarse,L0_mm=150,surrogate``) an item
 with ``=`` and no ``:`` is one more parameter of the spec before it.
 """
 
 from __future__ import annotations
 
-import inspect
-from dataclasses import dataclass, field
-from functools import partial
+from dataclasses import dataclass
 from typing import Any
 
 from mkm.auto import AutoModel
+from mkm.fem import ladder
 from mkm.fem.interface import ForceModel
-from mkm.fem.ladder import model_class
+from mkm.fem.ladder import C01, C10, L0, THETA0, Entry, Parameter
 
 
-@dataclass(frozen=True)
-class Entry:
-    """A registered predictor: a one-line description, the paper's name for it, its family."""
+def _surrogate(kind: str | None = None, path: str | None = None,
+               accept_mismatch: bool = False, **muscle: float) -> ForceModel:
+    """The surrogate of ``kind`` (trained on first use) or loaded from ``path``, at the muscle
+    parameters given (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``)."""
+    if path is not None and kind is not None:
+        raise ValueError("surrogate: give kind or path, not both")
+    if path is not None:
+        from mkm.surrogate.io import load_model
 
-    description: str
-    paper_name: str
-    family: str
-    params: dict[str, str] = field(default_factory=dict)
+        model = load_model(str(path), accept_mismatch=accept_mismatch)
+    else:
+        from mkm.surrogate.train import cached_model
+
+        model = cached_model(kind or "best")
+    return model.with_parameters(**muscle) if muscle else model
 
 
-ENTRIES: dict[str, Entry] = {
-    "eq2": Entry("Equation 2 of the paper (Chou-Hannaford), thin-walled, no rubber",
-                 "Equation 2 (Chou-Hannaford)", "closed form",
-                 {"diameter": "inner (the paper's D0) or braid (D0 + 2 t0); default inner",
-                  "theta0_deg": "braid angle at rest [deg]; default calibrated",
-                  "L0_mm": "length at rest [mm] (recorded only)"}),
-    "thickwall": Entry("thick-walled Mooney-Rivlin tube in the braid, mid-section closed form "
-                       "(Klute-Hannaford)", "Thick-wall (Klute-Hannaford)", "closed form",
-                       {"theta0_deg": "braid angle at rest [deg]; default calibrated",
-                        "L0_mm": "length at rest [mm]; default 282"}),
-    "axisym": Entry("axisymmetric finite-element model (scikit-fem), caps and braid included",
-                    "FE model (axisymmetric)", "FE",
-                    {"mesh": "coarse, medium (default) or fine",
-                     "theta0_deg": "braid angle at rest [deg]; default calibrated",
-                     "L0_mm": "length at rest [mm]; default 282",
-                     "braid": "bonded (default: fibres glued to the rubber) or sliding "
-                              "(frictionless sleeve), each with its own calibrated theta0"}),
-    "surrogate": Entry("scikit-learn surrogate trained on the FE design (or another FE "
-                       "dataset); refuses muscle parameters its training did not cover",
-                       "Surrogate", "surrogate",
-                       {"kind": "best (default: muscle-gp), muscle-gp, physics, gp, mlp-paper "
-                                "or net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]",
-                        "path": "folder of a model saved by `mkm surrogate train`",
-                        "L0_mm": "length at rest [mm]; default 282",
-                        "theta0_deg": "braid angle at rest [deg]; default calibrated",
-                        "C10_MPa": "rubber Mooney-Rivlin C10 [MPa]; default Silastic S",
-                        "C01_MPa": "rubber Mooney-Rivlin C01 [MPa]; default Silastic S",
-                        "accept_mismatch": "true: load a saved model whose code, calibration "
-                                           "or data differ (default false)"}),
-    "auto": Entry("the cheapest predictor whose measured error meets a tolerance",
-                  "auto (cheapest within tolerance)", "auto",
-                  {"tolerance": "largest |Err%| against the finest FE, a fraction; default 0.02",
-                   "table": "study table (default: the shipped one, from `mkm study`)",
-                   "per_point": "true: choose per point instead of one model per sweep"}),
+def _auto(**params) -> ForceModel:
+    return AutoModel(build=build_spec, **params)
+
+
+SURROGATE_KINDS_TEXT = ("best (default: muscle-gp), muscle-gp, physics, gp, mlp-paper or "
+                        "net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]")
+
+APP_ENTRIES: dict[str, Entry] = {
+    "surrogate": Entry(
+        "surrogate", _surrogate, "Surrogate",
+        "scikit-learn surrogate trained on the FE design (or another FE dataset); refuses "
+        "muscle parameters its training did not cover", "surrogate",
+        {"kind": Parameter(SURROGATE_KINDS_TEXT, str),
+         "path": Parameter("folder of a model saved by `mkm surrogate train`", str),
+         "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01,
+         "accept_mismatch": Parameter("true: load a saved model whose code, calibration or data "
+                                      "differ (default false)", bool)},
+        colour="tab:red", contract_spec="surrogate"),
+    "auto": Entry(
+        "auto", _auto, "auto (cheapest within tolerance)",
+        "the cheapest predictor whose measured error meets a tolerance", "auto",
+        {"tolerance": Parameter("largest |Err%| against the finest FE, a fraction; "
+                                "default 0.02"),
+         "table": Parameter("study table (default: the shipped one, from `mkm study`)", str),
+         "per_point": Parameter("true: choose per point instead of one model per sweep", bool)},
+        colour="tab:purple", contract_spec="auto:tolerance=0.05"),
 }
+
+
+def entries() -> dict[str, Entry]:
+    """Every registered predictor, physics first, in the order they are listed."""
+    return {**ladder.LADDER, **APP_ENTRIES}
+
+
+def entry(name: str) -> Entry:
+    every = entries()
+    if name not in every:
+        raise ValueError(f"unknown model {name!r}: expected one of {', '.join(every)} "
+                         "(see `mkm models`)")
+    return every[name]
+
+
+def register(new: Entry, physics: bool = False) -> None:
+    """Add ``new`` to the registry: to the physics ladder (``physics=True``: the dataset
+    builder and the simulated bench see it too) or to the application's entries."""
+    if new.name in entries():
+        raise ValueError(f"model {new.name!r} is already registered")
+    (ladder.LADDER if physics else APP_ENTRIES)[new.name] = new
+
+
+def unregister(name: str) -> None:
+    ladder.LADDER.pop(name, None)
+    APP_ENTRIES.pop(name, None)
+
+
+def colour(name: str) -> str:
+    """The colour of predictor ``name`` in every figure (grey if unknown)."""
+    known = entries().get(name)
+    return known.colour if known else "tab:gray"
 
 
 @dataclass(frozen=True)
 class Spec:
-    """A parsed predictor spec: its name and parameters (numbers as floats)."""
+    """A parsed predictor spec: its name and parameters (converted to their declared types)."""
 
     name: str
     params: tuple[tuple[str, Any], ...] = ()
@@ -88,14 +123,14 @@ class Spec:
 
     @property
     def entry(self) -> Entry:
-        return ENTRIES[self.name]
+        return entry(self.name)
 
     @property
     def display_name(self) -> str:
         """The paper's name, with the parameters that set it apart:
         ``Equation 2 (Chou-Hannaford), diameter=braid``."""
         extra = ", ".join(f"{k}={_text(v)}" for k, v in self.params)
-        return self.entry.paper_name + (f", {extra}" if extra else "")
+        return self.entry.label + (f", {extra}" if extra else "")
 
     def with_params(self, **params) -> Spec:
         merged = dict(self.params)
@@ -106,48 +141,16 @@ class Spec:
         """The predictor. ``defaults`` (a bench run's ``L0_mm``, say) apply where the predictor
         takes that parameter and the spec does not set it."""
         params = dict(self.params)
-        if self.name == "surrogate":
-            for key in SURROGATE_PARAMETERS:
-                if defaults.get(key) is not None:
-                    params.setdefault(key, defaults[key])
-            return _surrogate(params)
-        if self.name == "auto":
-            factory = partial(AutoModel, build=build_spec)
-        else:
-            factory = model_class(self.name)
-        accepted = inspect.signature(factory).parameters
-        unknown = sorted(set(params) - set(accepted))
-        if unknown:
-            raise ValueError(f"model {self.text!r} takes no parameter {', '.join(unknown)}: "
-                             f"expected some of {', '.join(accepted) or 'none'}")
         for key, value in defaults.items():
-            if key in accepted and value is not None:
+            if key in self.entry.parameters and value is not None:
                 params.setdefault(key, value)
-        return factory(**params)
+        given = self.entry.check_params(params, shown=self.text)
+        return self.entry.resolve()(**given)
 
 
-SURROGATE_PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
-
-
-def _surrogate(params: dict) -> ForceModel:
-    unknown = sorted(set(params) - set(ENTRIES["surrogate"].params))
-    if unknown:
-        raise ValueError(f"surrogate takes no parameter {', '.join(unknown)}: expected some of "
-                         f"{', '.join(ENTRIES['surrogate'].params)} (surrogate:kind=gp, "
-                         "surrogate:path=DIR,L0_mm=150)")
-    if "path" in params and "kind" in params:
-        raise ValueError("surrogate: give kind or path, not both")
-    muscle = {k: float(params[k]) for k in SURROGATE_PARAMETERS if k in params}
-    if "path" in params:
-        from mkm.surrogate.io import load_model
-
-        model = load_model(str(params["path"]),
-                           accept_mismatch=bool(params.get("accept_mismatch", False)))
-    else:
-        from mkm.surrogate.train import cached_model
-
-        model = cached_model(str(params.get("kind", "best")))
-    return model.with_parameters(**muscle) if muscle else model
+def build_spec(text: str, **defaults) -> ForceModel:
+    """The predictor a spec names: ``parse_spec(text).build(**defaults)``."""
+    return parse_spec(text).build(**defaults)
 
 
 def _text(value) -> str:
@@ -156,23 +159,15 @@ def _text(value) -> str:
     return str(value)
 
 
-def _value(text: str):
-    low = text.lower()
-    if low in ("true", "false"):
-        return low == "true"
-    try:
-        return float(text)
-    except ValueError:
-        return text
-
-
 def parse_spec(text: str) -> Spec:
     """A :class:`Spec` from ``NAME[:key=value,...]``; ``ValueError`` names what is wrong."""
     name, _, rest = str(text).strip().partition(":")
     name = name.strip()
-    if name not in ENTRIES:
+    every = entries()
+    if name not in every:
         raise ValueError(f"unknown model {name!r} in {text!r}: expected one of "
-                         f"{', '.join(ENTRIES)} (see `mkm models`)")
+                         f"{', '.join(every)} (see `mkm models`)")
+    declared = every[name].parameters
     params = {}
     for item in filter(None, (i.strip() for i in rest.split(","))):
         key, sep, value = item.partition("=")
@@ -180,16 +175,11 @@ def parse_spec(text: str) -> Spec:
             raise ValueError(f"model {text!r}: {item!r} is not key=value "
                              "(expected for example axisym:mesh=coarse)")
         key = key.strip()
-        if key not in ENTRIES[name].params:
+        if key not in declared:
             raise ValueError(f"model {text!r}: unknown parameter {key!r}: expected some of "
-                             f"{', '.join(ENTRIES[name].params)}")
-        params[key] = _value(value.strip())
+                             f"{', '.join(declared)}")
+        params[key] = declared[key].convert(key, value.strip())
     return Spec(name, tuple(sorted(params.items())))
-
-
-def build_spec(text: str, **defaults) -> ForceModel:
-    """The predictor a spec names: ``parse_spec(text).build(**defaults)``."""
-    return parse_spec(text).build(**defaults)
 
 
 def parse_specs(text: str) -> list[Spec]:
@@ -210,10 +200,10 @@ def parse_specs(text: str) -> list[Spec]:
 def describe() -> str:
     """Every predictor with its parameters and a one-line description (``mkm models``)."""
     lines = []
-    for name, entry in ENTRIES.items():
-        lines.append(f"{name:<10} {entry.paper_name}: {entry.description}")
-        for key, text in entry.params.items():
-            lines.append(f"{'':<12}{key}: {text}")
+    for name, known in entries().items():
+        lines.append(f"{name:<10} {known.label}: {known.description}")
+        for key, parameter in known.parameters.items():
+            lines.append(f"{'':<12}{key}: {parameter.description}")
     lines.append("")
     lines.append("spec syntax: NAME[:key=value[,key=value]], e.g. axisym:mesh=coarse, "
                  "eq2:diameter=braid, surrogate:kind=gp, surrogate:path=DIR")

@@ -57,10 +57,9 @@ from mkm.html import (
 from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import progress_bar
-from mkm.registry import Spec, parse_spec
+from mkm.registry import Spec, entries, parse_spec
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
-CACHED_MODELS = ("axisym",)  # seconds per sweep; the closed forms and surrogates take microseconds
 
 
 def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict, cache_dir,
@@ -73,7 +72,8 @@ def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict, cache_di
     """
     pressure = domain_pressures(model, evaluation_pressures(steps), pressure_tolerance_bar)
     args = (pressure, muscle["D0_mm"], muscle["t0_mm"], muscle["eps"])
-    if model.name in CACHED_MODELS:
+    known = entries().get(model.name)
+    if known is not None and known.expensive:  # seconds per sweep: cached
         return cached_predict(model, *args, cache_dir=cache_dir)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # out-of-domain points are flagged in the report itself
@@ -208,7 +208,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     specs = [m if isinstance(m, Spec) else parse_spec(m) for m in models]
     out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
     out.mkdir(parents=True, exist_ok=True)
-    names = {s.text: f"{s.entry.paper_name} [{s.text}]" for s in specs}
+    names = {s.text: f"{s.entry.label} [{s.text}]" for s in specs}
     colours = model_colours(specs)
     prov: dict[str, dict] = {"software": provenance()}
     bar = progress_bar(len(run_dirs) * (len(specs) + 1) + int(surrogate_section), "report",

@@ -31,6 +31,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
+from mkm.fem import ladder
 from mkm.fem.interface import ForceModel, Prediction
 from mkm.fem.paper import equation7_err_pct
 from mkm.fem.records import provenance, write_atomic, write_json_atomic
@@ -81,18 +82,17 @@ def registry_predictor(label: str, spec: str, cached: bool = False) -> Predictor
 
 
 def physics_predictors() -> list[Predictor]:
-    """Equation 2 (both diameters), thick-wall, the FE model at every mesh level, and the FE
-    model with a sliding braid (another physical assumption than the reference's bonded braid:
-    shown, never a candidate of ``auto``)."""
-    from mkm.fem.fe.mesh import MESH_LEVELS
-
-    sliding = parse_spec("axisym:braid=sliding")
-    return [registry_predictor("eq2-inner", "eq2:diameter=inner"),
-            registry_predictor("eq2-braid", "eq2:diameter=braid"),
-            registry_predictor("thickwall", "thickwall"),
-            *(registry_predictor(f"axisym-{m}", f"axisym:mesh={m}", cached=True)
-              for m in MESH_LEVELS),
-            Predictor("axisym-sliding", sliding.entry.family, sliding.build, "", cached=True)]
+    """The study variants of every physics model in the registry (Equation 2 on both
+    diameters, thick-wall, the FE model at every mesh level, the FE model with a sliding braid:
+    another physical assumption than the reference's bonded braid, shown but never a candidate
+    of ``auto``)."""
+    out = []
+    for known in ladder.LADDER.values():
+        for variant in known.study:
+            parsed = parse_spec(variant.spec)
+            out.append(Predictor(variant.label, known.family, parsed.build,
+                                 parsed.text if variant.auto_candidate else "", known.expensive))
+    return out
 
 
 # The study's surrogates unless asked for more: the default kind, the physics ridge and the

@@ -26,7 +26,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.fem.dataset.grid import Grid, load_grid
-from mkm.fem.ladder import LADDER, make_model
+from mkm.fem.ladder import LADDER, entry, make_model
 from mkm.fem.records import provenance, source_version, user_cache, write_atomic
 
 DEFAULT_OUT = Path("data/mkm_dataset.csv")
@@ -107,9 +107,7 @@ def _mesh_label(mesh) -> str | None:
 def model_version(name: str) -> str:
     """The source version of rung ``name`` (:func:`mkm.fem.records.source_version` of its
     module)."""
-    if name not in LADDER:
-        raise ValueError(f"unknown model {name!r}: expected one of {', '.join(LADDER)}")
-    return source_version(LADDER[name].split(":")[0])
+    return source_version(entry(name).module)
 
 
 def run_job(job: Job) -> dict[str, Any]:
@@ -117,14 +115,8 @@ def run_job(job: Job) -> dict[str, Any]:
 
     Runs wherever the job is sent (in-process or on a Dask worker); returns plain data only.
     """
-    material = None
-    if job.C10_MPa is not None or job.C01_MPa is not None:
-        from mkm.fem.materials import SILASTIC_S, MooneyRivlin
-
-        material = MooneyRivlin(SILASTIC_S.C10_MPa if job.C10_MPa is None else job.C10_MPa,
-                                SILASTIC_S.C01_MPa if job.C01_MPa is None else job.C01_MPa)
     model = make_model(job.model, theta0_deg=job.theta0_deg, L0_mm=job.L0_mm, mesh=job.mesh,
-                       material=material)
+                       C10_MPa=job.C10_MPa, C01_MPa=job.C01_MPa)
     n = len(job.pressure_bar)
     pred = model.predict(np.array(job.pressure_bar), job.D0_mm, job.t0_mm, job.eps)
     params = pred.params
@@ -394,6 +386,7 @@ def _provenance(run: DatasetRun, grid: Grid, jobs: list[Job], model_ver: str,
         "wall_seconds": round(run.wall_seconds, 3),
         "workers": run.workers,
         "cache": str(cache_dir),
-        "columns": {c: COLUMNS.get(c, f"reported by the model (see {LADDER[jobs[0].model]})")
+        "columns": {c: COLUMNS.get(c, "reported by the model (see "
+                                      f"{LADDER[jobs[0].model].factory})")
                     for c in run.frame.columns},
     }

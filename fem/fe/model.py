@@ -40,7 +40,7 @@ from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, rubber, slidi
 from mkm.fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
 from mkm.fem.fe.newton import OrderedLU, load_path, newton
 from mkm.fem.interface import ForceModel
-from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.materials import SILASTIC_S, MooneyRivlin, mooney_rivlin
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
@@ -435,8 +435,9 @@ class Axisym(CalibratedTheta0, ForceModel):
         Length at rest [mm]; 282 as in the paper.
     mesh : {"coarse", "medium", "fine"}
         Mesh level; ``medium`` is converged to 1 % of ``fine`` in force (see README).
-    material : MooneyRivlin
-        Wall material; default Silastic S (C10 = 0.0694 MPa, C01 = 0.0628 MPa).
+    C10_MPa, C01_MPa : float, optional
+        Mooney-Rivlin constants of the wall [MPa]; default Silastic S (C10 = 0.0694 MPa,
+        C01 = 0.0628 MPa).
     braid : {"bonded", "sliding"}
         ``bonded`` (default): the fibres are glued to the rubber's outer surface and
         inextensible at every point. ``sliding``: a frictionless sleeve, one uniform fibre
@@ -448,13 +449,18 @@ class Axisym(CalibratedTheta0, ForceModel):
     has_threshold = True
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
-                 mesh: str = "medium", material: MooneyRivlin = SILASTIC_S,
-                 braid: str = "bonded"):
+                 mesh: str = "medium", C10_MPa: float | None = None,
+                 C01_MPa: float | None = None, braid: str = "bonded"):
         self.theta0_deg = theta0_deg
         self.L0_mm = L0_mm
         self.mesh = mesh
-        self.material = material
+        self.C10_MPa = C10_MPa
+        self.C01_MPa = C01_MPa
         self.braid = braid
+
+    @property
+    def material(self) -> MooneyRivlin:
+        return mooney_rivlin(self.C10_MPa, self.C01_MPa)
 
     @property
     def calibration_key(self) -> str:

@@ -14,7 +14,7 @@ from mkm.fem.records import (
     write_csv_with_sidecar,
     write_prediction_csv,
 )
-from mkm.registry import ENTRIES, parse_spec
+from mkm.registry import entries, parse_spec
 
 
 def has_display() -> bool:
@@ -40,7 +40,7 @@ def argtype(parse, *args):
 
 def add_model_arguments(parser, theta0: bool = True) -> None:
     parser.add_argument("--model", default="eq2", help=f"predictor spec: one of "
-                        f"{', '.join(ENTRIES)}, with :key=value parameters (see `mkm models`); "
+                        f"{', '.join(entries())}, with :key=value parameters (see `mkm models`); "
                         "default %(default)s")
     if theta0:
         parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
@@ -103,11 +103,11 @@ def model_from_args(args, **overrides):
              "braid": getattr(args, "braid", None)}
     flags.update(overrides)
     flags = {k: v for k, v in flags.items() if v is not None}
-    unknown = sorted(set(flags) - set(spec.entry.params))
+    unknown = sorted(set(flags) - set(spec.entry.parameters))
     if unknown:
         raise ValueError(f"--model {spec.text}: {spec.name} takes no "
                          f"{', '.join(unknown)} (its parameters: "
-                         f"{', '.join(spec.entry.params)})")
+                         f"{', '.join(spec.entry.parameters)})")
     return spec.with_params(**flags).build()
 
 

@@ -167,7 +167,7 @@ def _calibrate(args) -> int:
     paths = [] if args.dry_run else [p for p in (args.out, args.update_shipped and
                                                  CALIBRATION_FILE) if p]
     if paths:
-        entry = calibration_entry(fit, model, name, sha256, LADDER[model.name].split(":")[0])
+        entry = calibration_entry(fit, model, name, sha256, LADDER[model.name].module)
         for path in paths:
             store_calibration(path, model.calibration_key, entry)
             print(f"stored in {path} under {model.calibration_key!r}", file=sys.stderr)

@@ -22,7 +22,7 @@ from mkm.design import (
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure
-from mkm.registry import ENTRIES
+from mkm.registry import entry
 
 MESH = "coarse"
 
@@ -216,7 +216,7 @@ def test_housing_binds_the_largest_margin():
     assert free["outer_diameter_mm"] > 70.0  # without the housing: the widest of the box
 
 
-@pytest.mark.skipif("theta0_deg" not in ENTRIES["surrogate"].params,
+@pytest.mark.skipif("theta0_deg" not in entry("surrogate").parameters,
                     reason="the registry's surrogate takes no theta0_deg")
 def test_braid_angle_range_searched_and_verified_at_the_chosen_angle():
     reqs = [Requirement(300.0, 2.5, 0.10), Requirement(250.0, 2.5, 0.20)]

@@ -5,7 +5,7 @@ import pytest
 
 from mkm.fem.eq2 import chou_hannaford
 from mkm.fem.paper import L0_MM
-from mkm.registry import ENTRIES, describe, parse_spec, parse_specs
+from mkm.registry import describe, entries, parse_spec, parse_specs
 
 
 @pytest.mark.parametrize("text, name, params, canonical", [
@@ -32,7 +32,8 @@ def test_comma_lists_keep_parameters_with_their_model():
 @pytest.mark.parametrize("text, message", [
     ("nope", "unknown model 'nope' in 'nope': expected one of eq2, thickwall, axisym"),
     ("axisym:coarse", "'coarse' is not key=value"),
-    ("axisym:grid=1", "unknown parameter 'grid': expected some of mesh, theta0_deg, L0_mm"),
+    ("axisym:grid=1", "unknown parameter 'grid': expected some of mesh, theta0_deg, L0_mm, "
+                      "C10_MPa, C01_MPa, braid"),
     ("", "unknown model ''"),
 ])
 def test_bad_specs_name_the_bad_part(text, message):
@@ -61,9 +62,9 @@ def test_build_refuses_a_bad_value_with_the_models_own_message():
 
 def test_every_entry_is_listed_with_its_parameters():
     text = describe()
-    for name, entry in ENTRIES.items():
-        assert f"\n{name} " in f"\n{text}" and entry.paper_name in text
-        for key in entry.params:
+    for name, entry in entries().items():
+        assert f"\n{name} " in f"\n{text}" and entry.label in text
+        for key in entry.parameters:
             assert f"{key}:" in text
 
 

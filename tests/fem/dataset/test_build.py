@@ -14,6 +14,7 @@ from mkm.fem.dataset import build as dataset
 from mkm.fem.dataset.build import Job, build_dataset, model_version, run_job
 from mkm.fem.dataset.grid import parse_grid
 from mkm.fem.eq2 import chou_hannaford
+from mkm.fem.ladder import L0, THETA0, Entry
 from mkm.fem.ladder import LADDER as MODELS
 from mkm.fem.records import package_file, source_version
 
@@ -147,7 +148,8 @@ def fake_model(tmp_path, monkeypatch):
     (package / "model.py").write_text(FAKE_MODEL)
     (package / "physics.py").write_text("stiffness_N_per_bar = 100.0\n")
     monkeypatch.syspath_prepend(str(tmp_path))
-    monkeypatch.setitem(MODELS, "fake", "fakemkm.model:Fake")
+    monkeypatch.setitem(MODELS, "fake", Entry("fake", "fakemkm.model:Fake", "Fake", "a fake model",
+                                              "test", {"theta0_deg": THETA0, "L0_mm": L0}))
     source_version.cache_clear()
     yield package
     source_version.cache_clear()
@@ -167,8 +169,8 @@ def test_editing_the_physics_changes_the_model_version(fake_model):
 
 def test_model_version_is_the_same_in_every_process():
     # workers compute it again and must agree with the client, whatever each has imported
-    code = "import mkm.fem.thickwall, mkm.cli; from mkm.fem.dataset.build import model_version as v; " \
-           "print(v('eq2'))"
+    code = ("import mkm.fem.thickwall, mkm.cli\n"
+            "from mkm.fem.dataset.build import model_version as v\nprint(v('eq2'))")
     other = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                            check=True).stdout.strip()
     assert other == model_version("eq2")
