@@ -25,6 +25,7 @@ from mkm.fem.records import read_prediction_header
 from mkm.fem.thickwall import ThickWall
 
 
+@pytest.mark.slow  # FE fits on the medium mesh
 @pytest.mark.parametrize("key", ["eq2-inner", "eq2-braid", "thickwall", "axisym",
                                  "axisym-sliding"])
 def test_shipped_calibration_equals_a_fresh_fit(key):

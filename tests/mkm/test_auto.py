@@ -106,6 +106,7 @@ def test_bad_tolerance_and_missing_table_are_clear_errors(table_path, tmp_path):
         auto(table=str(tmp_path / "none.csv")).predict(1.0, 35.0, 2.5, 0.05)
 
 
+@pytest.mark.slow  # solves the fine mesh
 def test_cli_solve_auto_says_what_it_used(capsys):
     """`mkm fem solve --model auto` on the committed study table (fem/model_errors.csv)."""
     from io import StringIO

@@ -7,6 +7,7 @@ from mkm.cli import main
 from mkm.fem.calibration import calibrated
 
 
+@pytest.mark.slow  # trains a grid of nets
 def test_grid_small_run(thickwall_dataset, tmp_path, capsys):
     # Net #10 (1 x 25 tanh), one split, both variants, on both cores.
     out = tmp_path / "grid"

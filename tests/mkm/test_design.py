@@ -25,6 +25,8 @@ from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.registry import entry
 
 MESH = "coarse"
+# every search runs on the default surrogate, trained (GP fitting) on first use in a session
+pytestmark = pytest.mark.slow
 
 
 def fe_force(D0, t0, pressure_bar, eps, theta0_deg):

@@ -19,6 +19,8 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
+pytestmark = pytest.mark.slow  # builds a wheel and a virtual environment
+
 ROOT = Path(__file__).resolve().parents[2]
 # source folder -> where the wheel installs it (pyproject's package-dir: one import root)
 PACKAGES = {"mkm": "mkm", "bench": "mkm/bench", "fem": "mkm/fem", "surrogate": "mkm/surrogate"}
@@ -152,4 +154,4 @@ def test_make_demo_runs_mkm_demo():
     lines = done.stdout.splitlines()
     assert ".venv/bin/mkm demo" in lines
     assert ".venv/bin/python tools/lint_imports.py" in lines
-    assert any(line.endswith("-m pytest -q") for line in lines)
+    assert any(line.endswith("-m pytest -q --durations=15") for line in lines)

@@ -34,7 +34,8 @@ ZERO_FORCE_N = 0.5  # two steps of the USB-6001's ADC on the default load cell (
 # A surrogate's GP may wiggle by less than its own std between pressures: 0.1 N is far below
 # what the bench resolves
 MONOTONE_SLACK_N = 0.1
-SLOW = {"surrogate"}  # trains a surrogate on the shipped design (seconds of GP fitting)
+# the surrogate trains on the shipped design (GP fitting); auto falls back to the fine mesh
+SLOW = {"surrogate", "auto"}
 
 
 def check_contract(entry: Entry) -> None:

@@ -52,6 +52,7 @@ def _shipped_hashes() -> dict[str, str]:
             if (ROOT / f).exists()}
 
 
+@pytest.mark.slow  # the demo trains the default surrogate
 @pytest.mark.skipif(not (ROOT / ".git").exists(), reason="not a git work tree")
 def test_demo_and_report_leave_the_shipped_files_alone(monkeypatch, tmp_path, capsys):
     before = _shipped_hashes()

@@ -177,6 +177,7 @@ def test_second_report_reads_the_fe_from_the_cache(runs, tmp_path):
     assert len(list(cache.glob("axisym-*.npz"))) == 1
 
 
+@pytest.mark.slow  # trains the default surrogate
 def test_surrogate_section_is_table3_with_our_numbers(runs, tmp_path):
     path = build_report(runs[:1], parse_models("eq2"), out_dir=tmp_path, tolerance=0.02)
     html = path.read_text(encoding="utf-8")
@@ -267,6 +268,7 @@ def _page_ink(png: Path) -> float:
     return float((pixels.min(axis=2) < 0.9).mean())
 
 
+@pytest.mark.slow  # drives Chromium
 @pytest.mark.skipif(not shutil.which(CHROMIUM), reason="chromium is not installed")
 def test_report_renders_in_headless_chromium(report, tmp_path):
     """Screenshots of the summary, the overlay, the time traces and the speed-accuracy chart

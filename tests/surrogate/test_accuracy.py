@@ -9,10 +9,11 @@ from mkm.surrogate.testset import FE_REFERENCE, PAPER_MUSCLES, read_fe_reference
 from mkm.surrogate.train import train_surrogate
 from mkm.surrogate.training_data import DEFAULT_DATASET
 
-pytestmark = pytest.mark.skipif(
+pytestmark = [pytest.mark.slow,  # trains the default surrogate with its held-out refits
+              pytest.mark.skipif(
     not (DEFAULT_DATASET.is_file() and FE_REFERENCE.is_file()),
     reason="needs surrogate/data/mkm_design.csv (mkm surrogate design --update-shipped) and "
-           "surrogate/data/fe_test_muscles.csv (mkm surrogate reference --update-shipped)")
+           "surrogate/data/fe_test_muscles.csv (mkm surrogate reference --update-shipped)")]
 
 
 @pytest.fixture(scope="module")

@@ -47,6 +47,7 @@ def test_rows_are_the_models_forces(tmp_path):
     assert rows.converged.all() and rows.iterations.isna().all()
 
 
+@pytest.mark.slow  # starts Dask
 def test_serial_local_parallel_and_cluster_give_identical_rows(tmp_path):
     from dask.distributed import LocalCluster
 
@@ -213,6 +214,7 @@ def test_workers_and_scheduler_together_are_refused(tmp_path):
         tiny(out=None, workers=2, scheduler="tcp://localhost:8786", cache_dir=tmp_path)
 
 
+@pytest.mark.slow  # starts Dask
 def test_unreachable_scheduler_gives_clear_error(tmp_path):
     import dask
 
