@@ -167,6 +167,31 @@ def klute_hannaford_threshold_pressure(D0_mm, t0_mm, eps, theta0_deg,
     return np.where(per_bar > 0, threshold, np.nan)
 
 
+def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, C10_MPa=SILASTIC_S.C10_MPa,
+                      C01_MPa=SILASTIC_S.C01_MPa):
+    """Braid (outer) diameter [mm] of the unloaded muscle at ``pressure_bar``: its largest.
+
+    An unloaded muscle contracts freely until the threshold pressure of its shortening equals the
+    supply pressure, ``P*(eps_f) = P`` (thick-wall closed form,
+    :func:`klute_hannaford_threshold_pressure`, solved by bisection on
+    ``[0, eps_max)``); any load holds it at a smaller shortening and diameter. The braid of
+    constant thread length then has ``D_out^2 = (D0 + 2 t0)^2 (1 + eps_f (2 - eps_f) cot^2
+    theta0)`` (:func:`mid_section_kinematics`). Mid-section value: the caps keep the ends
+    narrower. Rubber constants in [MPa] (default Silastic S).
+    """
+    D0, t0, theta0, P = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in
+                                              (D0_mm, t0_mm, theta0_deg, pressure_bar)))
+    low = np.zeros(D0.shape)
+    high = np.broadcast_to(chou_hannaford_eps_max(theta0), D0.shape).copy()
+    for _ in range(40):  # eps to 2^-40 of eps_max
+        mid = 0.5 * (low + high)
+        threshold = klute_hannaford_threshold_pressure(D0, t0, mid, theta0, C10_MPa, C01_MPa)
+        below = np.nan_to_num(threshold, nan=np.inf) <= P
+        low, high = np.where(below, mid, low), np.where(below, high, mid)
+    outer_radius_sq_mm2 = mid_section_kinematics(D0, t0, low, theta0)[5]
+    return 2.0 * np.sqrt(outer_radius_sq_mm2)
+
+
 class ThickWall(CalibratedTheta0, ForceModel):
     """Klute-Hannaford thick-wall model under the paper's isometric lock (``--model thickwall``).
 

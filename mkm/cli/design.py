@@ -64,8 +64,7 @@ def register(subparsers) -> None:
 
 
 def _design(args) -> int:
-    from mkm.design import run_design
-    from mkm.design_page import write_design
+    from mkm.design import run_design, write_design
     from mkm.paths import default_out
     from mkm.prediction_cache import DEFAULT_CACHE_DIR
     from mkm.progress import summary_line

@@ -15,13 +15,12 @@ import pytest
 from mkm.design import (
     Requirement,
     design,
-    outer_diameter_mm,
     parse_requirement,
     search,
 )
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
-from mkm.fem.thickwall import klute_hannaford_threshold_pressure
+from mkm.fem.thickwall import klute_hannaford_threshold_pressure, outer_diameter_mm
 from mkm.registry import entry
 
 MESH = "coarse"

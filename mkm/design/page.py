@@ -20,15 +20,9 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-from mkm.design import (
-    NEAR_LOCK_FRACTION,
-    DesignResult,
-    design_record,
-    geometry_text,
-    outer_diameter_mm,
-    span_text,
-    surrogate_uncertainty,
-)
+from mkm.design.result import DesignResult, design_record
+from mkm.design.search import geometry_text, span_text, surrogate_uncertainty
+from mkm.design.spec import NEAR_LOCK_FRACTION
 from mkm.fem.calibration import calibration_provenance
 from mkm.fem.materials import MATERIALS
 from mkm.fem.records import (
@@ -38,6 +32,7 @@ from mkm.fem.records import (
     write_atomic,
     write_csv_with_sidecar,
 )
+from mkm.fem.thickwall import outer_diameter_mm
 from mkm.html import esc, figure_html, html_page, kv_html, save_figure, table_html
 from mkm.registry import parse_spec
 
@@ -213,7 +208,8 @@ def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) ->
             out["force"].append(f)
             out["margin"].append(u)
     out["outer"] = outer_diameter_mm(D0, t0, best["theta0_deg"], s.working_pressure_bar,
-                                     MATERIALS[best["rubber"]])
+                                     MATERIALS[best["rubber"]].C10_MPa,
+                                     MATERIALS[best["rubber"]].C01_MPa)
     limit = s.constraints.get("max_outer_diameter_mm")
     out["feasible"] = feasible if limit is None else feasible & (out["outer"] <= limit)
     return out

@@ -1,0 +1,170 @@
+"""The result of a design run and the Python API (:func:`design`, :func:`run_design`)."""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from mkm.design.search import (
+    AXIS_VALUES,
+    COARSE_STEPS,
+    D0_STEP_MM,
+    SEEDS,
+    T0_STEP_MM,
+    Search,
+    geometry_text,
+    pick,
+    search,
+)
+from mkm.design.spec import (
+    DEFAULT_RUBBER,
+    NEAR_LOCK_FRACTION,
+    Constraints,
+    load_spec,
+    parse_requirement,
+)
+from mkm.design.verify import verify
+
+# --- the API ------------------------------------------------------------------------------------
+
+
+@dataclass
+class DesignResult:
+    """What :func:`run_design` found: the verified designs, their FE curves, the search."""
+
+    designs: pd.DataFrame
+    curves: pd.DataFrame
+    search: Search
+    mesh: str
+    fe_seconds: float
+    fe_models: dict
+    fe_cached: int = 0
+    files: dict = field(default_factory=dict)
+
+    @property
+    def chosen(self):
+        """The best design the FE confirms (a row), or None."""
+        ok = self.designs[self.designs["meets_all"]]
+        return ok.iloc[0] if len(ok) else None
+
+    def summary(self) -> str:
+        s = self.search
+        cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
+        ok = int(self.designs["meets_all"].sum())
+        text = (f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
+                f"{int(s.candidates['feasible'].sum())} feasible by the surrogate; "
+                f"{len(self.designs)} verified by the FE (axisym, {self.mesh} mesh) in "
+                f"{self.fe_seconds:.1f} s{cached}, {ok} meet{'s' if ok == 1 else ''} every "
+                "requirement")
+        best = self.chosen
+        if best is None:
+            return text + ": none confirmed, see the table's FE margins"
+        return (text + f"; chosen: {geometry_text(best)}, outer diameter "
+                f"{best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar")
+
+
+DESIGN_COLUMNS = ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
+                  "outer_diameter_mm", "rubber_volume_cm3"]
+
+
+def run_design(requirements=(), constraints=None, objective=None, top=None, spec=None,
+               mesh: str = "medium", surrogate: str = "surrogate",
+               progress: bool = False, cache_dir=None) -> DesignResult:
+    """Search and verify (:func:`mkm.design_page.write_design` writes the files).
+
+    ``spec``: a TOML file (:func:`load_spec`); ``requirements`` are added to its requirements,
+    ``constraints`` (a dict) override its constraints, ``objective``/``top`` its own.
+    ``cache_dir``: FE prediction cache (None: solve every sweep).
+    """
+    base = load_spec(spec) if spec else {"requirements": [], "constraints": {}}
+    requirements = list(base["requirements"]) + [
+        parse_requirement(r) if isinstance(r, str) else r for r in requirements]
+    merged = dict(base["constraints"])
+    if isinstance(constraints, Constraints):
+        merged.update({k: v for k, v in asdict(constraints).items()
+                       if v is not None and not (k == "rubber" and v == (DEFAULT_RUBBER,))})
+    else:
+        merged.update({k: v for k, v in (constraints or {}).items() if v is not None})
+    objective = objective or base.get("objective", "min-outer-diameter")
+    top = top if top is not None else base.get("top", 5)
+    if isinstance(top, bool) or not isinstance(top, int) or top < 1:
+        raise ValueError(f"top={top!r} is invalid: expected a whole number of designs >= 1")
+    found = search(requirements, merged, objective, surrogate)
+    chosen = pick(found.feasible, top, found.constraints)
+    chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
+    designs, curves, seconds, fe_models, hits = verify(
+        chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir)
+    order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
+    designs = designs.sort_values(["meets_all", *order], ascending=[False] + [
+        objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",
+        ignore_index=True)
+    n = len(found.requirements)
+    columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
+        f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
+        f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + [
+        "meets_all", "min_fe_margin_pct", "flags", "fe_failure"]
+    return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
+
+
+def design(requirements, constraints=None, objective: str = "min-outer-diameter", *,
+           top: int = 5, mesh: str = "medium", surrogate: str = "surrogate",
+           progress: bool = False, cache_dir=None) -> pd.DataFrame:
+    """Verified designs for force requirements, best first: the Python API of ``mkm design``.
+
+    Parameters
+    ----------
+    requirements : list of Requirement or str
+        Operating points, ``Requirement(force_N, pressure_bar, eps)`` or ``"400N@2bar,eps=0.10"``.
+    constraints : Constraints or dict, optional
+        Ranges or fixed values of ``D0_mm``, ``t0_mm``, ``L0_mm``, ``theta0_deg``; ``rubber``;
+        ``max_outer_diameter_mm``, ``max_pressure_bar`` (see :class:`Constraints`).
+    objective : {"min-outer-diameter", "min-rubber-volume", "max-margin"}
+    top : int
+        Designs verified with the FE model.
+    mesh : {"coarse", "medium", "fine"}
+        FE mesh; ``medium`` is the converged one (``coarse`` for quick checks only).
+    surrogate : str
+        Registry spec of the surrogate that searches the box.
+    progress : bool
+        Progress bar of the FE verification on stderr (when it is a terminal).
+    cache_dir : path, optional
+        FE prediction cache (:mod:`mkm.prediction_cache`); None solves every sweep.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per verified design: geometry, outer diameter at the working pressure [mm],
+        rubber volume [cm^3], per requirement ``k`` the surrogate's force and uncertainty and the
+        FE force, margin [N, %], threshold pressure [bar] and verdict ``r<k>_meets``;
+        ``meets_all`` (the FE's verdict), ``flags``. Sorted: designs the FE confirms first, in
+        objective order. ``attrs`` holds the requirements, constraints and search summary.
+    """
+    result = run_design(requirements, constraints, objective, top, mesh=mesh,
+                        surrogate=surrogate, progress=progress, cache_dir=cache_dir)
+    frame = result.designs.copy()
+    frame.attrs.update(design_record(result))
+    return frame
+
+
+def design_record(result: DesignResult) -> dict:
+    """What ``designs.json`` records besides provenance (also the ``attrs`` of :func:`design`)."""
+    s = result.search
+    return {"requirements": [asdict(r) | {"label": f"r{k}: {r.label}"}
+                             for k, r in enumerate(s.requirements, start=1)],
+            "constraints": s.constraints, "objective": s.objective,
+            "working_pressure_bar": s.working_pressure_bar,
+            "surrogate_uncertainty": s.uncertainty,
+            "search": {"candidates": len(s.candidates),
+                       "feasible": int(s.candidates["feasible"].sum()),
+                       "seconds": s.seconds,
+                       "resolution": {"coarse_D0_mm": COARSE_STEPS[0],
+                                      "coarse_t0_mm": COARSE_STEPS[1], "D0_mm": D0_STEP_MM,
+                                      "t0_mm": T0_STEP_MM, "refined_seeds": SEEDS,
+                                      "L0_mm and theta0_deg values per range": AXIS_VALUES}},
+            "verification": {"model": "axisym", "mesh": result.mesh,
+                             "seconds": result.fe_seconds,
+                             "sweeps_from_cache": result.fe_cached,
+                             "near_lock_fraction_of_eps_max": NEAR_LOCK_FRACTION},
+            "summary": result.summary()}

@@ -1,0 +1,422 @@
+"""The surrogate search of the design box: candidates, feasibility, ranking, alternatives."""
+
+from __future__ import annotations
+
+import time
+import warnings
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import numpy as np
+import pandas as pd
+
+from mkm.design.spec import (
+    DEFAULT_RUBBER,
+    OBJECTIVES,
+    Constraints,
+    Requirement,
+    parse_requirement,
+)
+from mkm.fem.calibration import calibrated
+from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
+from mkm.fem.interface import ForceModel
+from mkm.fem.materials import MATERIALS
+from mkm.fem.paper import L0_MM
+from mkm.fem.thickwall import outer_diameter_mm
+from mkm.registry import parse_spec
+
+#: Search resolution: a coarse grid of 0.5 mm in D0 and 0.1 mm in t0 (the paper's box, 20 x
+#: 2 mm: 41 x 21 = 861 candidates per family), refined to 0.05 mm and 0.01 mm over the coarse
+#: cells around the best ``SEEDS`` coarse candidates (441 candidates each); 5 values across a
+#: range of L0 or theta0. A Gaussian-process surrogate takes ~25 us a point with its std.
+COARSE_STEPS, D0_STEP_MM, T0_STEP_MM, SEEDS, AXIS_VALUES = (0.5, 0.1), 0.05, 0.01, 8, 5
+#: Verified designs differ by at least 5 % of the box span in some searched parameter.
+MIN_SEPARATION = 0.05
+#: Surrogate uncertainty: 3 predictive standard deviations when the surrogate gives them (the
+#: default surrogate records 95 % of held-out muscles' points within 2: within_2std), else
+#: twice the largest held-out error recorded at training, else 5 % of the required force.
+STD_FACTOR, RECORDED_ERROR_FACTOR, FALLBACK_RELATIVE_MARGIN = 3.0, 2.0, 0.05
+
+
+# --- physics of the housing and the lock --------------------------------------------------------
+
+
+def _constants(rubber: str) -> tuple[float, float]:
+    """``(C10_MPa, C01_MPa)`` of a named rubber."""
+    return MATERIALS[rubber].C10_MPa, MATERIALS[rubber].C01_MPa
+
+
+def rubber_volume_cm3(D0_mm, t0_mm, L0_mm):
+    """Volume of the tube wall at rest, ``pi t0 (D0 + t0) L0`` [cm^3] (caps excluded)."""
+    return np.pi * np.asarray(t0_mm) * (np.asarray(D0_mm) + np.asarray(t0_mm)) * L0_mm / 1e3
+
+
+def surrogate_uncertainty(model: ForceModel, prediction, force_N: float) -> tuple[np.ndarray,
+                                                                                   str]:
+    """Margin [N] the surrogate's force must clear a requirement by, and how it was obtained.
+
+    ``STD_FACTOR`` predictive standard deviations (``force_std_N``) when the surrogate gives
+    them; else ``RECORDED_ERROR_FACTOR`` times the largest held-out error recorded when it was
+    trained (``metadata["metrics"]``: 80/20 splits and the off-grid test muscles); else
+    ``FALLBACK_RELATIVE_MARGIN`` of the required force.
+    """
+    shape = np.shape(prediction.force_N)
+    if "force_std_N" in prediction.extras:
+        coverage = ((getattr(model, "metadata", None) or {}).get("metrics") or {}).get(
+            "muscle_held_out", {}).get("within_2std", {}).get("median")
+        told = (f"; held-out muscles within 2 std: {100 * coverage:.0f} %"
+                if coverage is not None else "")
+        return (STD_FACTOR * np.asarray(prediction.extras["force_std_N"], dtype=float),
+                f"{STD_FACTOR:g} x the surrogate's predictive standard deviation{told}")
+    metrics = (getattr(model, "metadata", None) or {}).get("metrics") or {}
+    recorded = []
+    for table in (metrics, metrics.get("muscle_held_out") or {}):  # per split / per muscle
+        if isinstance(table.get("max_abs_test_N"), dict):
+            recorded.append(float(table["max_abs_test_N"]["max"]))
+    tests = metrics.get("test_muscles")
+    if isinstance(tests, list):  # a dict says why they were not evaluated
+        recorded += [float(m["max_abs_error_N"]) for m in tests if "max_abs_error_N" in m]
+    if recorded:
+        worst = max(recorded)
+        return (np.full(shape, RECORDED_ERROR_FACTOR * worst),
+                f"{RECORDED_ERROR_FACTOR:g} x the largest held-out error recorded at training "
+                f"({worst:.3g} N)")
+    return (np.full(shape, FALLBACK_RELATIVE_MARGIN * force_N),
+            f"{100 * FALLBACK_RELATIVE_MARGIN:g} % of the required force (the surrogate records "
+            "no error)")
+
+
+# --- the search ---------------------------------------------------------------------------------
+
+
+@dataclass
+class Search:
+    """Every candidate of the box (one row each) and what the search found."""
+
+    candidates: pd.DataFrame
+    requirements: list[Requirement]
+    constraints: dict
+    objective: str
+    working_pressure_bar: float
+    uncertainty: str
+    seconds: float
+    models: dict = field(default_factory=dict)  # (L0, theta0, rubber) -> surrogate
+
+    @property
+    def feasible(self) -> pd.DataFrame:
+        return self.candidates[self.candidates["feasible"]]
+
+
+def _axis(bounds, step=None, count=AXIS_VALUES) -> np.ndarray:
+    """Values from ``low`` to ``high`` (both included): ``step`` apart or ``count`` of them."""
+    low, high = bounds
+    if low == high:
+        return np.array([float(low)])
+    if step:
+        count = int(round((high - low) / step)) + 1
+    return np.linspace(low, high, count)
+
+
+PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")  # besides the predict() inputs
+
+
+def _predicts_at(model) -> dict:
+    """The muscle parameters a surrogate predicts at: its own ``parameters`` when it has them,
+    else what its training data held fixed (``metadata["dataset"]["fixed"]``); Silastic S
+    where nothing is recorded of the rubber."""
+    at = dict(getattr(model, "parameters", None) or {})
+    if not at:
+        fixed = (getattr(model, "metadata", None) or {}).get("dataset", {}).get("fixed") or {}
+        at = {k: float(fixed[k]) for k in PARAMETERS if fixed.get(k) is not None}
+    rubber = MATERIALS[DEFAULT_RUBBER]
+    return {"L0_mm": L0_MM, "C10_MPa": rubber.C10_MPa, "C01_MPa": rubber.C01_MPa} | at
+
+
+def _surrogate_for(spec, base, L0, theta0, rubber):
+    """The surrogate ``base`` (built from ``spec``) at ``(L0, theta0, rubber)``.
+
+    A parameter is passed to the surrogate only when the registry entry lists it (a build
+    parameter); any other must equal what the surrogate predicts at, or the constraint conflicts
+    with it (named in the ``ValueError``).
+    """
+    listed = set(spec.entry.parameters) - {k for k, _ in spec.params}
+    material = MATERIALS[rubber]
+    wanted = {"L0_mm": float(L0), "theta0_deg": float(theta0), "C10_MPa": material.C10_MPa,
+              "C01_MPa": material.C01_MPa}
+    at = _predicts_at(base)
+    params, conflicts = {}, []
+    for key, value in wanted.items():
+        if key in listed:
+            params[key] = value
+        elif key in at and not np.isclose(value, at[key], rtol=1e-9, atol=0.0):
+            conflicts.append(f"rubber={rubber}" if key.startswith("C") else f"{key}={value:g}")
+    if conflicts:
+        told = ", ".join(f"{k}={v:g}" for k, v in at.items())
+        raise ValueError(f"constraint {', '.join(dict.fromkeys(conflicts))} conflicts with the "
+                         f"surrogate {spec.text!r}: it predicts at {told} only")
+    if not params:
+        return base
+    if hasattr(base, "with_parameters"):
+        return base.with_parameters(**params)  # the same fitted model, no reload
+    return _build(spec.with_params(**params).text)
+
+
+@lru_cache(maxsize=32)
+def _build(text: str) -> ForceModel:
+    """Surrogates by spec text, built once per process (loading one takes about a second)."""
+    return parse_spec(text).build()
+
+
+def search(requirements, constraints: Constraints | dict | None = None,
+           objective: str = "min-outer-diameter", surrogate: str = "surrogate") -> Search:
+    """Predict the candidates of the design box with the surrogate and rank the feasible ones.
+
+    Coarse to fine: every candidate of a coarse grid (:data:`COARSE_STEPS` in D0 and t0, times
+    the values of L0, theta0 and rubber), then a fine grid (:data:`D0_STEP_MM`,
+    :data:`T0_STEP_MM`) over the coarse cells around the best :data:`SEEDS` coarse candidates
+    (:func:`_seeds`): the optimum lies on the boundary of the feasible region, within a coarse
+    cell of a feasible coarse candidate.
+
+    Raises ``ValueError`` (one line) for conflicting constraints, requirements past the braid
+    lock or outside the surrogate's training box, and when no candidate is feasible (naming the
+    closest one and its shortfall per requirement).
+    """
+    requirements = [parse_requirement(r) if isinstance(r, str) else r for r in requirements]
+    if not requirements:
+        raise ValueError("no requirement given: expected at least one --require "
+                         "FORCE N@PRESSURE bar,eps=EPS (for example 400N@2bar,eps=0.10)")
+    if objective not in OBJECTIVES:
+        raise ValueError(f"objective {objective!r} is unknown: expected one of "
+                         f"{', '.join(OBJECTIVES)}")
+    if not isinstance(constraints, Constraints):
+        constraints = Constraints(**(constraints or {}))
+    spec = parse_spec(surrogate)
+    if spec.name != "surrogate":
+        raise ValueError(f"--surrogate {surrogate!r}: expected a surrogate spec "
+                         "(surrogate, surrogate:kind=gp, surrogate:path=DIR)")
+    base = _build(spec.text)
+    domain = base.domain
+    at = _predicts_at(base)
+    theta0_default = float(calibrated("axisym")["theta0_deg"])  # the FE model's, as verified
+    box = {"D0_mm": constraints.D0_mm or tuple(domain.D0_mm),
+           "t0_mm": constraints.t0_mm or tuple(domain.t0_mm),
+           "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
+           "theta0_deg": constraints.theta0_deg or (theta0_default,) * 2}
+    _check_conflicts(requirements, constraints, box, domain, getattr(base, "box", {}))
+    P_work = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
+    models = {(float(L0), float(theta0), rubber): _surrogate_for(spec, base, L0, theta0, rubber)
+              for L0 in _axis(box["L0_mm"]) for theta0 in _axis(box["theta0_deg"])
+              for rubber in constraints.rubber}
+
+    start = time.perf_counter()  # the search proper: the surrogates are loaded once
+    evaluate = _Evaluator(models, requirements, P_work, constraints.max_outer_diameter_mm)
+    D0c = _axis(box["D0_mm"], count=_coarse_count(box["D0_mm"], COARSE_STEPS[0]))
+    t0c = _axis(box["t0_mm"], count=_coarse_count(box["t0_mm"], COARSE_STEPS[1]))
+    D0, t0 = (a.ravel() for a in np.meshgrid(D0c, t0c, indexing="ij"))
+    coarse = pd.concat([evaluate(family, D0, t0) for family in models], ignore_index=True)
+    coarse = _rank(coarse, objective)
+    seeds = _seeds(coarse)
+    dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
+    dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
+    fine = []
+    for _, seed in seeds.iterrows():
+        D0f = _axis((max(seed["D0_mm"] - dD0, box["D0_mm"][0]),
+                     min(seed["D0_mm"] + dD0, box["D0_mm"][1])), D0_STEP_MM)
+        t0f = _axis((max(seed["t0_mm"] - dt0, box["t0_mm"][0]),
+                     min(seed["t0_mm"] + dt0, box["t0_mm"][1])), T0_STEP_MM)
+        D0, t0 = (a.ravel() for a in np.meshgrid(D0f, t0f, indexing="ij"))
+        fine.append(evaluate((seed["L0_mm"], seed["theta0_deg"], seed["rubber"]), D0, t0))
+    cand = pd.concat([coarse, *fine], ignore_index=True)
+    cand = cand.round({"D0_mm": 9, "t0_mm": 9}).drop_duplicates(
+        ["D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber"])
+    cand = _rank(cand, objective)
+    result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
+                    float(P_work), evaluate.uncertainty, time.perf_counter() - start, models)
+    if not cand["feasible"].any():
+        raise ValueError(_infeasible_message(result, constraints))
+    return result
+
+
+def _seeds(coarse: pd.DataFrame) -> pd.DataFrame:
+    """Where to refine: the best ``SEEDS`` feasible coarse candidates; while there are fewer, the
+    edges of what the coarse grid could not satisfy: the narrowest candidates meeting the forces
+    (the housing stops them) and the strongest fitting the housing (the forces stop them)."""
+    feasible = coarse[coarse["feasible"]].head(SEEDS)
+    if len(feasible) == SEEDS:
+        return feasible
+    wide = coarse[coarse["meets_forces"] & ~coarse["fits_housing"]].sort_values(
+        "outer_diameter_mm").head(SEEDS // 2)
+    weak = coarse[coarse["fits_housing"] & ~coarse["meets_forces"]].sort_values(
+        "min_margin_pct", ascending=False).head(SEEDS // 2)
+    return pd.concat([feasible, wide, weak])
+
+
+def _coarse_count(bounds, step) -> int:
+    return int(np.ceil((bounds[1] - bounds[0]) / step - 1e-9)) + 1
+
+
+class _Evaluator:
+    """Surrogate forces, margins and the housing check of candidates of one design family."""
+
+    def __init__(self, models, requirements, P_work, max_outer_diameter_mm):
+        self.models, self.requirements = models, requirements
+        self.P_work, self.limit = P_work, max_outer_diameter_mm
+        self.uncertainty = ""
+
+    def __call__(self, family, D0, t0) -> pd.DataFrame:
+        L0, theta0, rubber = family
+        model = self.models[(float(L0), float(theta0), rubber)]
+        frame = pd.DataFrame({"D0_mm": D0, "t0_mm": t0, "L0_mm": float(L0),
+                              "theta0_deg": float(theta0), "rubber": rubber})
+        frame["outer_diameter_mm"] = outer_diameter_mm(D0, t0, theta0, self.P_work,
+                                                       *_constants(rubber))
+        frame["rubber_volume_cm3"] = rubber_volume_cm3(D0, t0, L0)
+        eps_max = float(chou_hannaford_eps_max(theta0))
+        shortfall = np.empty((len(frame), len(self.requirements)))
+        for k, req in enumerate(self.requirements, start=1):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # the box lies inside the domain
+                pred = model.predict(req.pressure_bar, D0, t0, req.eps)
+            u, self.uncertainty = surrogate_uncertainty(model, pred, req.force_N)
+            force = np.where(pred.valid & (req.eps < eps_max), pred.force_N, np.nan)
+            frame[f"r{k}_surrogate_N"] = force
+            frame[f"r{k}_uncertainty_N"] = u
+            shortfall[:, k - 1] = np.nan_to_num(req.force_N + u - force, nan=np.inf)
+        forces = np.array([r.force_N for r in self.requirements])
+        frame["min_margin_pct"] = 100.0 * np.min(-shortfall / forces, axis=1)
+        frame["meets_forces"] = (shortfall <= 0).all(axis=1)
+        frame["fits_housing"] = (True if self.limit is None
+                                 else frame["outer_diameter_mm"] <= self.limit)
+        frame["feasible"] = frame["meets_forces"] & frame["fits_housing"]
+        return frame
+
+
+def _check_conflicts(requirements, constraints, box, domain, parameter_box) -> None:
+    """One ``ValueError`` naming every conflict between requirements, constraints and models.
+
+    ``parameter_box``: the surrogate's training box of its muscle parameters (``L0_mm``, ...),
+    empty for a surrogate of the geometry alone.
+    """
+    problems = []
+    spans = {"D0_mm": tuple(domain.D0_mm), "t0_mm": tuple(domain.t0_mm)}
+    spans |= {k: tuple(parameter_box[k]) for k in ("L0_mm", "theta0_deg") if k in parameter_box}
+    for key, (dlo, dhi) in spans.items():
+        low, high = box[key]
+        if low < dlo - 1e-9 * max(abs(dlo), 1) or high > dhi + 1e-9 * max(abs(dhi), 1):
+            problems.append(f"{key}={span_text(low, high)} reaches outside the surrogate's "
+                            f"training box {dlo:g}:{dhi:g}")
+    for rubber in constraints.rubber:
+        for key in ("C10_MPa", "C01_MPa"):
+            value = getattr(MATERIALS[rubber], key)
+            if key in parameter_box and not (parameter_box[key][0] <= value
+                                             <= parameter_box[key][1]):
+                problems.append(f"rubber={rubber} ({key}={value:g}) lies outside the "
+                                f"surrogate's training box {span_text(*parameter_box[key])}")
+    if box["t0_mm"][1] >= box["D0_mm"][0] / 2:
+        problems.append(f"t0_mm up to {box['t0_mm'][1]:g} mm conflicts with D0_mm from "
+                        f"{box['D0_mm'][0]:g} mm: expected t0 < D0/2")
+    if not box["L0_mm"][0] > 0:
+        problems.append(f"L0_mm {box['L0_mm'][0]:g} is invalid: expected a length > 0 mm")
+    low, high = box["theta0_deg"]
+    angle_ok = 0 < low and high < LOCKING_ANGLE_DEG
+    if not angle_ok:
+        problems.append(f"theta0_deg={span_text(low, high)} is invalid: expected 0 < theta0 < "
+                        f"{LOCKING_ANGLE_DEG:.1f} deg (the locking angle)")
+    # the smallest theta0 has the largest locking shortening
+    eps_max = float(chou_hannaford_eps_max(low)) if angle_ok else np.inf
+    for k, req in enumerate(requirements, start=1):
+        if req.eps >= eps_max:
+            problems.append(f"requirement {k} ({req.label}) is past the braid lock: eps_max = "
+                            f"{eps_max:.3f} at theta0 = {low:.4g} deg (Equation 2)")
+        elif not domain.eps[0] <= req.eps <= domain.eps[1]:
+            problems.append(f"requirement {k} ({req.label}): eps={req.eps:g} is outside the "
+                            f"surrogate's training box {domain.eps[0]:g}:{domain.eps[1]:g}")
+        if not domain.pressure_bar[0] <= req.pressure_bar <= domain.pressure_bar[1]:
+            problems.append(f"requirement {k} ({req.label}): {req.pressure_bar:g} bar is outside "
+                            f"the surrogate's training box {domain.pressure_bar[0]:g}:"
+                            f"{domain.pressure_bar[1]:g} bar")
+        if constraints.max_pressure_bar is not None and \
+                req.pressure_bar > constraints.max_pressure_bar:
+            problems.append(f"requirement {k} ({req.label}) at {req.pressure_bar:g} bar conflicts "
+                            f"with the largest working pressure {constraints.max_pressure_bar:g}"
+                            " bar")
+    if constraints.max_outer_diameter_mm is not None and not problems:
+        # the thinnest, narrowest tube of the box, at the largest theta0 and the working pressure
+        P = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
+        smallest = min(float(outer_diameter_mm(box["D0_mm"][0], box["t0_mm"][0], theta0, P,
+                                               *_constants(rubber)))
+                       for theta0 in box["theta0_deg"] for rubber in constraints.rubber)
+        if smallest > constraints.max_outer_diameter_mm:
+            problems.append(f"max_outer_diameter_mm={constraints.max_outer_diameter_mm:g} "
+                            f"conflicts with D0_mm >= {box['D0_mm'][0]:g} and t0_mm >= "
+                            f"{box['t0_mm'][0]:g}: the smallest muscle of the box is "
+                            f"{smallest:.1f} mm wide at {P:g} bar")
+    if problems:
+        raise ValueError("; ".join(problems))
+
+
+def span_text(low: float, high: float) -> str:
+    """``37`` for a fixed value, ``30:50`` for a range."""
+    return f"{low:g}" if low == high else f"{low:g}:{high:g}"
+
+
+def _describe_constraints(constraints: Constraints, box: dict) -> dict:
+    out = {k: list(v) for k, v in box.items()}
+    out["rubber"] = list(constraints.rubber)
+    out["max_outer_diameter_mm"] = constraints.max_outer_diameter_mm
+    out["max_pressure_bar"] = constraints.max_pressure_bar
+    return out
+
+
+def _rank(cand: pd.DataFrame, objective: str) -> pd.DataFrame:
+    """Sort by the objective (ties: the larger margin first)."""
+    keys = {"min-outer-diameter": (["outer_diameter_mm", "min_margin_pct"], [True, False]),
+            "min-rubber-volume": (["rubber_volume_cm3", "min_margin_pct"], [True, False]),
+            "max-margin": (["min_margin_pct", "outer_diameter_mm"], [False, True])}[objective]
+    return cand.sort_values(keys[0], ascending=keys[1], kind="stable", ignore_index=True)
+
+
+def geometry_text(row) -> str:
+    """``D0 = ... mm, t0 = ... mm, L0 = ... mm, theta0 = ... deg`` of a design row."""
+    text = f"D0 = {row['D0_mm']:.2f} mm, t0 = {row['t0_mm']:.2f} mm"
+    return text + f", L0 = {row['L0_mm']:.4g} mm, theta0 = {row['theta0_deg']:.4g} deg"
+
+
+def _infeasible_message(result: Search, constraints: Constraints) -> str:
+    cand = result.candidates
+    if cand["meets_forces"].any():  # only the housing is in the way
+        best = cand[cand["meets_forces"]].sort_values("outer_diameter_mm").iloc[0]
+        return (f"infeasible: no design meets every requirement within max_outer_diameter_mm="
+                f"{constraints.max_outer_diameter_mm:g}: the narrowest that does, "
+                f"{geometry_text(best)}, is {best['outer_diameter_mm']:.1f} mm wide at "
+                f"{result.working_pressure_bar:g} bar")
+    pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
+    closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]
+    parts = []
+    for k, req in enumerate(result.requirements, start=1):
+        force = closest[f"r{k}_surrogate_N"]
+        short = req.force_N - force
+        parts.append(f"requirement {k} ({req.label}) " + (
+            f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
+            f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force"))
+    return (f"infeasible: no design in the box meets every requirement with the surrogate's "
+            f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
+            + "; ".join(parts))
+
+
+def pick(feasible: pd.DataFrame, top: int, box: dict) -> pd.DataFrame:
+    """The best ``top`` feasible candidates in rank order, each at least
+    :data:`MIN_SEPARATION` of the box span from those before it in some searched parameter."""
+    spans = {k: v[1] - v[0] for k, v in box.items() if k != "rubber" and isinstance(v, list)
+             and v[1] > v[0]}
+    scaled = np.column_stack([feasible[k].to_numpy() / s for k, s in spans.items()]) \
+        if spans else np.zeros((len(feasible), 0))
+    rubber = feasible["rubber"].to_numpy()
+    left = np.ones(len(feasible), dtype=bool)
+    chosen = []
+    while left.any() and len(chosen) < top:
+        i = int(np.argmax(left))
+        chosen.append(i)
+        near = np.all(np.abs(scaled - scaled[i]) < MIN_SEPARATION, axis=1) & (rubber == rubber[i])
+        left &= ~near
+    return feasible.iloc[chosen].reset_index(drop=True)

@@ -1,0 +1,170 @@
+"""The specification of a design: requirements, constraints, objectives, the spec file."""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+
+from mkm.fem.materials import MATERIALS
+from mkm.fem.ranges import parse_fraction, parse_number
+
+OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
+DEFAULT_RUBBER = "silastic_s"
+#: A requirement is near the braid lock from 75 % of Equation 2's eps_max on: the pressure term
+#: of the force has fallen to about a fifth of its value at rest there (theta0 = 32 deg).
+NEAR_LOCK_FRACTION = 0.75
+
+
+# --- the specification --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Requirement:
+    """One operating point: the muscle must develop at least ``force_N`` [N] at gauge pressure
+    ``pressure_bar`` [bar], held at shortening ratio ``eps`` [fraction]."""
+
+    force_N: float
+    pressure_bar: float
+    eps: float
+
+    def __post_init__(self):
+        if not self.force_N > 0:
+            raise ValueError(f"requirement {self.label}: force {self.force_N:g} N is invalid: "
+                             "expected a force > 0 N")
+        if not self.pressure_bar > 0:
+            raise ValueError(f"requirement {self.label}: pressure {self.pressure_bar:g} bar is "
+                             "invalid: expected a gauge pressure > 0 bar")
+        if not 0 <= self.eps < 1:
+            raise ValueError(f"requirement {self.label}: eps={self.eps:g} is invalid: expected "
+                             "a shortening ratio in [0, 1) (a fraction, or a percentage with %)")
+
+    @property
+    def label(self) -> str:
+        return f"{self.force_N:g}N@{self.pressure_bar:g}bar,eps={self.eps:g}"
+
+
+_REQUIREMENT = re.compile(r"^\s*([^@\s]+?)\s*N?\s*@\s*([^,\s]+?)\s*(?:bar)?\s*,\s*eps\s*=\s*"
+                          r"(\S+)\s*$", re.IGNORECASE)
+
+
+def parse_requirement(text: str, name: str = "--require") -> Requirement:
+    """A :class:`Requirement` from ``"400N@2bar,eps=0.10"`` (eps also as ``10%``)."""
+    match = _REQUIREMENT.match(str(text))
+    if not match:
+        raise ValueError(f"{name} {text!r} is malformed: expected FORCE N@PRESSURE bar,eps=EPS, "
+                         "for example 400N@2bar,eps=0.10")
+    force, pressure, eps = match.groups()
+    return Requirement(parse_number(force, f"{name} force"),
+                       parse_number(pressure, f"{name} pressure"), parse_fraction(eps, name))
+
+
+def parse_bounds(text, name: str) -> tuple[float, float]:
+    """``(low, high)`` from a value (``"37"``, fixed) or a range ``"30:50"``; numbers pass."""
+    if isinstance(text, int | float):
+        value = parse_number(text, name)
+        return value, value
+    if isinstance(text, list | tuple):
+        parts = list(text)
+    else:
+        parts = str(text).split(":")
+    if len(parts) == 1:
+        parts = parts * 2
+    if len(parts) != 2:
+        raise ValueError(f"{name} {text!r} is malformed: expected a value or low:high "
+                         "(for example 30:50)")
+    low, high = (parse_number(p, name) for p in parts)
+    if low > high:
+        raise ValueError(f"{name} {text!r} conflicts with itself: low {low:g} is above high "
+                         f"{high:g}")
+    return low, high
+
+
+@dataclass(frozen=True)
+class Constraints:
+    """The design box and the housing. ``None`` means: D0 and t0 over the surrogate's training
+    box, L0 the surrogate's (the paper's 282 mm), theta0 the FE model's calibration
+    (``fem/calibration.json`` or ``--calibration FILE``); rubber a name of
+    :data:`mkm.fem.materials.MATERIALS` (or several).
+
+    Parameters
+    ----------
+    D0_mm, t0_mm, L0_mm, theta0_deg : (low, high) or float or "low:high", optional
+        Ranges or fixed values [mm, deg].
+    rubber : str or tuple of str
+        Wall material(s).
+    max_outer_diameter_mm : float, optional
+        Largest braid diameter of the muscle at the working pressure [mm] (its housing).
+    max_pressure_bar : float, optional
+        Largest working pressure [bar]; also the pressure the housing check uses.
+    """
+
+    D0_mm: tuple[float, float] | None = None
+    t0_mm: tuple[float, float] | None = None
+    L0_mm: tuple[float, float] | None = None
+    theta0_deg: tuple[float, float] | None = None
+    rubber: tuple[str, ...] = (DEFAULT_RUBBER,)
+    max_outer_diameter_mm: float | None = None
+    max_pressure_bar: float | None = None
+
+    def __post_init__(self):
+        for key in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg"):
+            value = getattr(self, key)
+            if value is not None:
+                object.__setattr__(self, key, parse_bounds(value, key))
+        rubber = (self.rubber,) if isinstance(self.rubber, str) else tuple(self.rubber)
+        unknown = [r for r in rubber if r not in MATERIALS]
+        if unknown or not rubber:
+            raise ValueError(f"rubber {', '.join(unknown) or 'none'} is unknown: expected some "
+                             f"of {', '.join(MATERIALS)}")
+        object.__setattr__(self, "rubber", rubber)
+        for key in ("max_outer_diameter_mm", "max_pressure_bar"):
+            value = getattr(self, key)
+            if value is not None:
+                value = parse_number(value, key)
+                if not value > 0:
+                    raise ValueError(f"{key}={value:g} is invalid: expected a value > 0")
+                object.__setattr__(self, key, value)
+
+
+SPEC_KEYS = {"objective", "top", "requirement", "constraints"}
+
+
+def load_spec(path) -> dict:
+    """A TOML design spec as ``design`` keyword arguments.
+
+    ``[[requirement]]`` tables (``force_N``, ``pressure_bar``, ``eps``), ``[constraints]`` (the
+    fields of :class:`Constraints`), ``objective`` and ``top``. Unknown keys are errors.
+    """
+    path = Path(path)
+    try:
+        table = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise ValueError(f"--spec {path}: no such file") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"--spec {path} is not valid TOML: {exc}") from None
+    unknown = sorted(set(table) - SPEC_KEYS)
+    if unknown:
+        raise ValueError(f"--spec {path}: unknown key(s) {', '.join(unknown)}: expected some of "
+                         f"{', '.join(sorted(SPEC_KEYS))}")
+    out: dict = {k: table[k] for k in ("objective", "top") if k in table}
+    requirements = []
+    for i, item in enumerate(table.get("requirement", []), start=1):
+        keys = {"force_N", "pressure_bar", "eps"}
+        if not isinstance(item, dict) or set(item) != keys:
+            raise ValueError(f"--spec {path}: requirement {i} must have exactly force_N, "
+                             "pressure_bar and eps")
+        eps = item["eps"]
+        eps = parse_fraction(eps) if isinstance(eps, str) else parse_number(eps, "eps")
+        requirements.append(Requirement(parse_number(item["force_N"], "force_N"),
+                                        parse_number(item["pressure_bar"], "pressure_bar"), eps))
+    out["requirements"] = requirements
+    constraints = table.get("constraints", {})
+    fields = set(Constraints.__dataclass_fields__)
+    unknown = sorted(set(constraints) - fields)
+    if unknown:
+        raise ValueError(f"--spec {path}: unknown constraint(s) {', '.join(unknown)}: expected "
+                         f"some of {', '.join(sorted(fields))}")
+    out["constraints"] = constraints
+    return out

@@ -1,0 +1,106 @@
+"""FE verification of the chosen designs: forces, margins and flags from the FE model."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import pandas as pd
+
+from mkm.design.spec import NEAR_LOCK_FRACTION
+from mkm.fem.eq2 import chou_hannaford_eps_max
+from mkm.fem.interface import ForceModel
+from mkm.fem.materials import MATERIALS
+from mkm.registry import parse_spec
+
+CURVE_STEP_BAR = 0.25  # FE force-pressure curves of the verified designs
+
+
+# --- FE verification ----------------------------------------------------------------------------
+
+
+def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str) -> ForceModel:
+    """The axisymmetric FE model (registry ``axisym``) of one design family."""
+    material = MATERIALS[rubber]
+    return parse_spec(f"axisym:mesh={mesh}").build(
+        L0_mm=float(L0_mm), theta0_deg=float(theta0_deg), C10_MPa=material.C10_MPa,
+        C01_MPa=material.C01_MPa)
+
+
+def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
+           curve_to_bar: float | None = None, progress: bool = False, cache_dir=None):
+    """FE forces of ``designs`` at every requirement, and their force-pressure curves.
+
+    One FE sweep per design and distinct eps, through the requirements' pressures and
+    ``0:curve_to_bar:0.25`` bar (the curve also gets the FE threshold pressure, force 0), kept in
+    the prediction cache ``cache_dir`` (:mod:`mkm.prediction_cache`; None: no cache). Adds per
+    requirement ``r<k>_fe_N``, ``r<k>_fe_margin_N``,
+    ``r<k>_fe_margin_pct``, ``r<k>_threshold_bar``, ``r<k>_meets``; then ``meets_all``,
+    ``min_fe_margin_pct``, ``flags`` and ``fe_failure``. Returns the designs, the curves, the wall
+    time [s], the FE models by ``(L0, theta0, rubber)`` and how many sweeps came from the cache.
+    """
+    from mkm.prediction_cache import cached_predict
+    from mkm.progress import progress_bar
+
+    start = time.perf_counter()
+    designs = designs.copy()
+    top_P = max([r.pressure_bar for r in requirements] + [curve_to_bar or 0.0])
+    grid = np.round(np.arange(0.0, top_P + 1e-9, CURVE_STEP_BAR), 6)
+    eps_levels = sorted({r.eps for r in requirements})
+    models: dict = {}
+    curves, per_design, hits = [], [], 0
+    bar = progress_bar(len(designs) * len(eps_levels), "FE verification", progress, "sweep")
+    with bar:
+        for _, row in designs.iterrows():
+            key = (row["L0_mm"], row["theta0_deg"], row["rubber"])
+            if key not in models:
+                models[key] = fe_model(mesh, *key)
+            results = {}
+            for eps in eps_levels:
+                P = np.union1d(grid, [r.pressure_bar for r in requirements if r.eps == eps])
+                pred, hit = cached_predict(models[key], P, row["D0_mm"], row["t0_mm"], eps,
+                                           cache_dir=cache_dir)
+                hits += hit
+                frame = pred.to_frame()
+                results[eps] = frame
+                curve = frame[["eps", "pressure_bar", "force_N", "converged"]]
+                threshold = float(frame["threshold_pressure_bar"].iloc[0])
+                if 0 < threshold < P[-1]:  # the kink where the force leaves zero: no solve
+                    curve = pd.concat([curve, pd.DataFrame({
+                        "eps": [eps], "pressure_bar": [threshold], "force_N": [0.0],
+                        "converged": [True]})], ignore_index=True)
+                curves.append(curve.assign(design=row["rank"]).sort_values("pressure_bar"))
+                bar.update()
+            per_design.append(_judge(row, requirements, results))
+    designs = pd.concat([designs, pd.DataFrame(per_design)], axis=1)
+    curves = pd.concat(curves, ignore_index=True) if curves else pd.DataFrame()
+    return designs, curves, time.perf_counter() - start, models, hits
+
+
+def _judge(row, requirements, results) -> dict:
+    out, flags, failures, margins = {}, [], [], []
+    eps_max = float(chou_hannaford_eps_max(row["theta0_deg"]))
+    for k, req in enumerate(requirements, start=1):
+        frame = results[req.eps]
+        point = frame[np.isclose(frame["pressure_bar"], req.pressure_bar)].iloc[0]
+        force = float(point["force_N"]) if point["valid"] else np.nan
+        failure = str(point.get("failure", "") or "")
+        threshold = float(point.get("threshold_pressure_bar", np.nan))
+        out[f"r{k}_fe_N"] = force
+        out[f"r{k}_fe_margin_N"] = force - req.force_N
+        out[f"r{k}_fe_margin_pct"] = 100.0 * (force - req.force_N) / req.force_N
+        out[f"r{k}_threshold_bar"] = threshold
+        out[f"r{k}_meets"] = bool(np.isfinite(force) and force >= req.force_N)
+        margins.append(out[f"r{k}_fe_margin_pct"])
+        if req.eps >= NEAR_LOCK_FRACTION * eps_max or "locking angle" in failure:
+            flags.append(f"r{k}:near_lock")
+        if np.isfinite(threshold) and threshold >= req.pressure_bar:
+            flags.append(f"r{k}:threshold_above_pressure")
+        if not point["converged"] or not np.isfinite(force):
+            flags.append(f"r{k}:fe_not_converged")
+            failures.append(f"r{k}: {failure or 'no valid force'}")
+    out["meets_all"] = all(out[f"r{k}_meets"] for k in range(1, len(requirements) + 1))
+    out["min_fe_margin_pct"] = float(np.min(margins)) if not np.isnan(margins).any() else np.nan
+    out["flags"] = ";".join(flags)
+    out["fe_failure"] = "; ".join(failures)
+    return out
