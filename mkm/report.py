@@ -33,8 +33,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.fem.interface import ForceModel, Prediction
-from mkm.fem.paper import L0_MM, TABLE3_CSV, equation7_err_pct
+from mkm.fem.paper import L0_MM, TABLE3_CSV
 from mkm.fem.records import provenance, read_prediction_header, write_json_atomic
 from mkm.figures import (
     model_colours,
@@ -55,87 +54,12 @@ from mkm.html import (
     table_html,
 )
 from mkm.paths import default_out
-from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
+from mkm.prediction_cache import DEFAULT_CACHE_DIR, model_version
 from mkm.progress import progress_bar
-from mkm.registry import Spec, entries, parse_spec
+from mkm.registry import Spec, parse_spec
+from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
-
-
-def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict, cache_dir,
-                  pressure_tolerance_bar: float = 0.0) -> tuple[Prediction, bool]:
-    """Model forces at each step's measured mean pressure (through the cache for FE models).
-
-    A measured pressure within ``pressure_tolerance_bar`` (the regulator's settling tolerance)
-    outside a model's pressure domain is evaluated at the domain's edge: 2.5001 bar measured at
-    the 2.5 bar step is the 2.5 bar the surrogate was trained to, not an extrapolation.
-    """
-    pressure = domain_pressures(model, evaluation_pressures(steps), pressure_tolerance_bar)
-    args = (pressure, muscle["D0_mm"], muscle["t0_mm"], muscle["eps"])
-    known = entries().get(model.name)
-    if known is not None and known.expensive:  # seconds per sweep: cached
-        return cached_predict(model, *args, cache_dir=cache_dir)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # out-of-domain points are flagged in the report itself
-        return model.predict(*args), False
-
-
-def domain_pressures(model: ForceModel, pressure_bar: np.ndarray,
-                     tolerance_bar: float) -> np.ndarray:
-    """``pressure_bar`` with values within ``tolerance_bar`` of the model's pressure domain
-    moved onto its edge (models without a ``domain`` are left alone)."""
-    domain = getattr(model, "domain", None)
-    if domain is None or tolerance_bar <= 0:
-        return pressure_bar
-    lo, hi = domain.pressure_bar
-    near = (pressure_bar >= lo - tolerance_bar) & (pressure_bar <= hi + tolerance_bar)
-    return np.where(near, np.clip(pressure_bar, lo, hi), pressure_bar)
-
-
-def evaluation_pressures(steps: pd.DataFrame) -> np.ndarray:
-    """Measured mean pressure per step (set pressure where none was measured), floored at 0 bar:
-    a mean of -0.003 bar at the vented step is sensor noise, not a vacuum."""
-    measured = steps["pressure_bar_mean"].fillna(steps["set_pressure_bar"])
-    return np.maximum(measured.to_numpy(dtype=float), 0.0)
-
-
-def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.DataFrame:
-    """One row per step: measurement, the model's force, validity, Err% (Equation 7) and the
-    residual F_meas - F_model [N]. ``pressure_bar`` is where the model was evaluated,
-    ``pressure_meas_bar`` the measured mean (they differ at a domain edge)."""
-    scale = float(np.nanmax(steps["force_N_mean"].to_numpy(dtype=float)))
-    valid = np.ravel(prediction.valid)
-    force = np.where(valid, np.ravel(prediction.force_N), np.nan)
-    rows = pd.DataFrame({
-        "model": label, "step": steps["step"].to_numpy(), "direction": steps["direction"],
-        "set_pressure_bar": steps["set_pressure_bar"].to_numpy(),
-        "pressure_meas_bar": evaluation_pressures(steps),
-        "pressure_bar": np.ravel(prediction.pressure_bar),
-        "force_meas_N": steps["force_N_mean"].to_numpy(),
-        "force_meas_std_N": steps["force_N_std"].to_numpy(),
-        "force_N": force, "valid": valid, "settled": steps["settled"].to_numpy(),
-    })
-    rows["err_pct"] = equation7_err_pct(rows["force_meas_N"], rows["force_N"], scale)
-    rows["residual_N"] = rows["force_meas_N"] - rows["force_N"]
-    for key, value in prediction.extras.items():
-        rows[key] = np.ravel(value)
-    return rows
-
-
-def summarise(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
-    """Numbers per model and run: points, valid points, largest |Err%|, RMSE [N] and largest
-    |residual| [N] over the valid points, seconds per predicted force, from the cache (1/0)."""
-    ok = scored[scored["valid"]]
-    residual = ok["force_meas_N"] - ok["force_N"]
-    return {
-        "model": scored["model"].iloc[0],
-        "points": len(scored), "valid_points": len(ok),
-        "max_abs_err_pct": float(ok["err_pct"].abs().max()) if len(ok) else np.nan,
-        "rmse_N": float(np.sqrt(np.mean(residual**2))) if len(ok) else np.nan,
-        "max_abs_residual_N": float(residual.abs().max()) if len(ok) else np.nan,
-        "seconds_per_point": seconds / max(len(scored), 1),
-        "from_cache": int(cached),
-    }
 
 
 @dataclass
@@ -265,7 +189,7 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
-        r.summary.append(summarise(rows, pred.seconds, cached))
+        r.summary.append(summarise_run(rows, pred.seconds, cached))
         key = f"model-{spec.text}"
         prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model)}
         r.keys.append(key)

@@ -41,6 +41,7 @@ from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import progress_bar
 from mkm.registry import parse_spec
+from mkm.scoring import error_summary, pareto_front
 
 STUDY_PRESSURES = tuple(np.round(np.arange(0.0, 2.5001, 0.25), 2))  # the paper's test sweep
 # name, D0 [mm], t0 [mm], eps, role. I-III: the paper's test muscles (section 3.3); H1-H8 a box
@@ -278,14 +279,16 @@ def summarise(errors: pd.DataFrame, timings: pd.DataFrame, reference: str) -> pd
     for label, g in errors.groupby("predictor", sort=False):
         scored = g[g["force_ref_N"].notna()]
         ok = scored[scored["valid"]]
+        errors_of = error_summary(scored["force_ref_N"], scored["force_N"], scored["valid"],
+                                  scored["err_pct"])
         rows.append({
             "predictor": label, "family": g["family"].iloc[0],
             "seconds_per_point": float(speed.get(label, np.nan)),
-            "max_abs_err_pct": ok["err_pct"].abs().max() if label != reference else 0.0,
+            "max_abs_err_pct": errors_of["max_abs_err_pct"] if label != reference else 0.0,
             "max_abs_err_pct_test": ok.loc[ok["role"] == "test", "err_pct"].abs().max(),
             "max_abs_err_pct_held_out": ok.loc[ok["role"] != "test", "err_pct"].abs().max(),
-            "rmse_N": float(np.sqrt(np.mean((ok["force_ref_N"] - ok["force_N"]) ** 2))),
-            "valid_share": len(ok) / max(len(scored), 1),
+            "rmse_N": errors_of["rmse_N"],
+            "valid_share": errors_of["valid_points"] / max(len(scored), 1),
         })
     summary = pd.DataFrame(rows)
     # A predictor invalid somewhere in the study cannot answer every scene: not on the front.
@@ -293,18 +296,6 @@ def summarise(errors: pd.DataFrame, timings: pd.DataFrame, reference: str) -> pd
     summary["pareto"] = complete & pareto_front(summary["seconds_per_point"].to_numpy(),
                                                 summary["max_abs_err_pct"].to_numpy())
     return summary
-
-
-def pareto_front(cost: np.ndarray, error: np.ndarray) -> np.ndarray:
-    """True for the points no other point beats in both cost and error (ties kept)."""
-    cost, error = np.asarray(cost, float), np.asarray(error, float)
-    front = np.isfinite(cost) & np.isfinite(error)
-    for i in np.flatnonzero(front):
-        others = np.isfinite(cost) & np.isfinite(error)
-        dominated = others & (cost <= cost[i]) & (error <= error[i]) & (
-            (cost < cost[i]) | (error < error[i]))
-        front[i] = not dominated.any()
-    return front
 
 
 def stability_cells(p: Predictor, model: ForceModel, config: StudyConfig,

@@ -24,7 +24,8 @@ from mkm.fem.ladder import make_model
 from mkm.fem.paper import equation7_err_pct
 from mkm.prediction_cache import cached_predict
 from mkm.registry import parse_specs as parse_models
-from mkm.report import build_report, domain_pressures
+from mkm.report import build_report
+from mkm.scoring import domain_pressures
 
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 

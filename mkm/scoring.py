@@ -1,0 +1,120 @@
+"""Scores of predictions against a reference, the same for the report and the study.
+
+A prediction is scored point by point with the paper's Equation 7 (|Err%| scaled by the largest
+reference force, :func:`mkm.fem.paper.equation7_err_pct`) and summarised per model by
+:func:`error_summary` (largest |Err%|, RMSE [N], largest |residual| [N] over the valid points);
+:func:`pareto_front` marks the models no other beats in both cost and error. The report scores
+bench steps (:func:`predict_steps`, :func:`score_run`, :func:`summarise_run`), the study FE
+sweeps; neither renders anything here.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pandas as pd
+
+from mkm.fem.interface import ForceModel, Prediction
+from mkm.fem.paper import equation7_err_pct
+from mkm.prediction_cache import cached_predict
+from mkm.registry import entries
+
+
+def error_summary(reference_N, force_N, valid, err_pct) -> dict:
+    """Over the valid points: how many, the largest |Err%|, the RMSE [N] and the largest
+    |reference - force| [N] (NaN where no point is valid)."""
+    ok = np.asarray(valid, dtype=bool)
+    residual = np.asarray(reference_N, dtype=float)[ok] - np.asarray(force_N, dtype=float)[ok]
+    err = np.abs(np.asarray(err_pct, dtype=float)[ok])
+    n = int(ok.sum())
+    return {
+        "valid_points": n,
+        "max_abs_err_pct": float(np.nanmax(err)) if n and np.isfinite(err).any() else np.nan,
+        "rmse_N": float(np.sqrt(np.mean(residual**2))) if n else np.nan,
+        "max_abs_residual_N": float(np.max(np.abs(residual))) if n else np.nan,
+    }
+
+
+def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict, cache_dir,
+                  pressure_tolerance_bar: float = 0.0) -> tuple[Prediction, bool]:
+    """Model forces at each step's measured mean pressure (through the cache for FE models).
+
+    A measured pressure within ``pressure_tolerance_bar`` (the regulator's settling tolerance)
+    outside a model's pressure domain is evaluated at the domain's edge: 2.5001 bar measured at
+    the 2.5 bar step is the 2.5 bar the surrogate was trained to, not an extrapolation.
+    """
+    pressure = domain_pressures(model, evaluation_pressures(steps), pressure_tolerance_bar)
+    args = (pressure, muscle["D0_mm"], muscle["t0_mm"], muscle["eps"])
+    known = entries().get(model.name)
+    if known is not None and known.expensive:  # seconds per sweep: cached
+        return cached_predict(model, *args, cache_dir=cache_dir)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # out-of-domain points are flagged in the report itself
+        return model.predict(*args), False
+
+
+def domain_pressures(model: ForceModel, pressure_bar: np.ndarray,
+                     tolerance_bar: float) -> np.ndarray:
+    """``pressure_bar`` with values within ``tolerance_bar`` of the model's pressure domain
+    moved onto its edge (models without a ``domain`` are left alone)."""
+    domain = getattr(model, "domain", None)
+    if domain is None or tolerance_bar <= 0:
+        return pressure_bar
+    lo, hi = domain.pressure_bar
+    near = (pressure_bar >= lo - tolerance_bar) & (pressure_bar <= hi + tolerance_bar)
+    return np.where(near, np.clip(pressure_bar, lo, hi), pressure_bar)
+
+
+def evaluation_pressures(steps: pd.DataFrame) -> np.ndarray:
+    """Measured mean pressure per step (set pressure where none was measured), floored at 0 bar:
+    a mean of -0.003 bar at the vented step is sensor noise, not a vacuum."""
+    measured = steps["pressure_bar_mean"].fillna(steps["set_pressure_bar"])
+    return np.maximum(measured.to_numpy(dtype=float), 0.0)
+
+
+def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.DataFrame:
+    """One row per step: measurement, the model's force, validity, Err% (Equation 7) and the
+    residual F_meas - F_model [N]. ``pressure_bar`` is where the model was evaluated,
+    ``pressure_meas_bar`` the measured mean (they differ at a domain edge)."""
+    scale = float(np.nanmax(steps["force_N_mean"].to_numpy(dtype=float)))
+    valid = np.ravel(prediction.valid)
+    force = np.where(valid, np.ravel(prediction.force_N), np.nan)
+    rows = pd.DataFrame({
+        "model": label, "step": steps["step"].to_numpy(), "direction": steps["direction"],
+        "set_pressure_bar": steps["set_pressure_bar"].to_numpy(),
+        "pressure_meas_bar": evaluation_pressures(steps),
+        "pressure_bar": np.ravel(prediction.pressure_bar),
+        "force_meas_N": steps["force_N_mean"].to_numpy(),
+        "force_meas_std_N": steps["force_N_std"].to_numpy(),
+        "force_N": force, "valid": valid, "settled": steps["settled"].to_numpy(),
+    })
+    rows["err_pct"] = equation7_err_pct(rows["force_meas_N"], rows["force_N"], scale)
+    rows["residual_N"] = rows["force_meas_N"] - rows["force_N"]
+    for key, value in prediction.extras.items():
+        rows[key] = np.ravel(value)
+    return rows
+
+
+def summarise_run(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
+    """Numbers per model and run: points, valid points, largest |Err%|, RMSE [N] and largest
+    |residual| [N] over the valid points, seconds per predicted force, from the cache (1/0)."""
+    return {
+        "model": scored["model"].iloc[0], "points": len(scored),
+        **error_summary(scored["force_meas_N"], scored["force_N"], scored["valid"],
+                        scored["err_pct"]),
+        "seconds_per_point": seconds / max(len(scored), 1),
+        "from_cache": int(cached),
+    }
+
+
+def pareto_front(cost: np.ndarray, error: np.ndarray) -> np.ndarray:
+    """True for the points no other point beats in both cost and error (ties kept)."""
+    cost, error = np.asarray(cost, float), np.asarray(error, float)
+    front = np.isfinite(cost) & np.isfinite(error)
+    for i in np.flatnonzero(front):
+        others = np.isfinite(cost) & np.isfinite(error)
+        dominated = others & (cost <= cost[i]) & (error <= error[i]) & (
+            (cost < cost[i]) | (error < error[i]))
+        front[i] = not dominated.any()
+    return front
