@@ -1,25 +1,30 @@
-"""The ``auto`` force model: the cheapest model whose measured error meets a tolerance.
+"""The ``auto`` force model: the cheapest model whose error bound AT THE POINT ASKED meets a
+tolerance.
 
-"Model no more than a scene needs", as a feature. ``mkm study`` measures, for every model of
-the ladder, the error (the paper's Equation 7) against the finest converged FE model on a set of
-study muscles, and the cost per predicted force; the point-by-point table ships as
-``mkm/data/model_errors.csv``. The scene is the query: by default ``auto`` answers a whole call
-(a sweep, a bench run) with ONE model, the cheapest whose worst bound over all its points meets
-the tolerance and whose prediction is valid at every point, so a curve never mixes models.
-With ``per_point=True`` (``--per-point``) it chooses for each query point instead:
+"Model no more than a scene needs", as a feature. The scene is the query: a sweep, a bench run,
+with every parameter of the muscle (``L0_mm``, ``theta0_deg``, the rubber ``C10_MPa``,
+``C01_MPa``). ``auto`` bounds each candidate's error against the finest FE mesh (the paper's
+Equation 7: |F - F_fine| scaled by the largest force of the muscle's sweep) a posteriori, at
+those very points:
 
-1. bounds each candidate's error at the point by the worst |Err%| the study measured for that
-   candidate on the :data:`NEIGHBOURS` study muscles nearest to the query muscle (distance in
-   D0, t0 and eps scaled by :data:`DOMAIN_SPAN`; muscles farther than :data:`MAX_DISTANCE` do
-   not count) at the two study pressures bracketing the query pressure;
-2. takes the cheapest candidate (measured seconds per force) whose bound meets the tolerance and
-   whose own prediction is valid there (Equation 2 beyond eps_max, a surrogate out of its
-   domain or a solve that did not converge never qualify);
-3. falls back to the reference itself, the finest FE mesh, where nothing cheaper qualifies (a
-   query outside the study's pressures or far from every study muscle included).
+- the surrogate is the estimate of the reference there: its force ``R`` and its calibrated
+  predictive standard deviation ``s``. Its own bound is ``K s`` (:data:`STD_FACTOR`, K = 3:
+  beyond it lies 0.3 % of a calibrated normal error);
+- a closed form's bound is ``|F - R| + K s``: its distance from the surrogate plus the
+  surrogate's own uncertainty, so it holds wherever the surrogate's does;
+- an FE mesh's bound is its mesh error, the largest |Err%| against the fine mesh in the recorded
+  convergence table (the study's, ``mkm/data/model_errors.csv``, times :data:`MESH_SAFETY`);
+  the fine mesh is the reference (bound 0).
 
-Either way each point records which model answered (extra ``model_used``) and the error bound that
-justified it (``error_bound_pct``; NaN for the fallback); :func:`explain` says it in words.
+Candidates are tried cheapest first (their measured seconds per force, from the study table);
+by default ONE model answers the whole call, the cheapest whose largest bound over all points
+meets the tolerance and whose prediction is valid at every point, so a curve never mixes models.
+``per_point=True`` chooses per point. Outside the surrogate's box (a point, or a muscle parameter
+it was not trained on) there is no estimate of the reference: only the FE meshes qualify, and
+the fine mesh answers if nothing else does. Each point records the model that answered
+(``model_used``), its bound (``error_bound_pct``) and how the bound was obtained
+(``bound_source``); :func:`explain` says it in words, and the parameters (the provenance) name
+the reference and the factor.
 """
 
 from __future__ import annotations
@@ -36,14 +41,15 @@ from mkm.fem.interface import ForceModel
 from mkm.fem.records import file_sha256, package_file
 
 MODEL_ERRORS_FILE = package_file("mkm", "data", "model_errors.csv")
-NEIGHBOURS = 2  # two study muscles: one alone would trust a single geometry's luck
-# Distances in (D0, t0, eps) are scaled by the span of the paper's dataset (Table 1 of
-# Antonelli et al. 2025: D0 30-50 mm, t0 2-4 mm, eps 0-20 %); a study muscle farther than half
-# that span says nothing about the query.
-DOMAIN_SPAN = np.array([20.0, 2.0, 0.2])
-MAX_DISTANCE = 0.5
-PRESSURE_SLACK_BAR = 0.01  # a measured 2.5002 bar is the study's 2.5 bar: below bench resolution
+REFERENCE_SPEC = "surrogate"
 FALLBACK = "axisym-fine"
+FALLBACK_SPEC = "axisym:mesh=fine"
+STD_FACTOR = 3.0
+# A mesh's recorded error is the largest over the study's muscles; another muscle may do a
+# little worse
+MESH_SAFETY = 1.5
+MIN_SCALE_N = 1.0  # a sweep that never pulls (all below threshold) is scored in newtons
+PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 
 
 @cache
@@ -53,7 +59,7 @@ def read_model_errors(path: Path | str = MODEL_ERRORS_FILE) -> pd.DataFrame:
     if not path.exists():
         raise ValueError(f"no study table at {path}: run `mkm study` to measure model errors")
     table = pd.read_csv(path)
-    needed = {"predictor", "spec", "muscle", "D0_mm", "t0_mm", "eps", "pressure_bar", "err_pct",
+    needed = {"predictor", "spec", "family", "muscle", "pressure_bar", "err_pct",
               "seconds_per_point"}
     missing = needed - set(table.columns)
     if missing:
@@ -62,119 +68,156 @@ def read_model_errors(path: Path | str = MODEL_ERRORS_FILE) -> pd.DataFrame:
     return table
 
 
-def error_bounds(table: pd.DataFrame, predictor: str, pressure_bar, D0_mm, t0_mm,
-                 eps) -> np.ndarray:
-    """Upper bound of |Err%| of ``predictor`` at each query point from the study table (NaN where
-    the study does not cover the point); the rule is in the module docstring."""
-    rows = table[table["predictor"] == predictor]
-    muscles = rows.groupby(["D0_mm", "t0_mm", "eps"], sort=True)
-    keys = np.array(list(muscles.groups), dtype=float).reshape(-1, 3)
-    P, D0, t0, e = (np.ravel(a) for a in np.broadcast_arrays(
-        *(np.asarray(v, dtype=float) for v in (pressure_bar, D0_mm, t0_mm, eps))))
-    query = np.stack([D0, t0, e], axis=1)
-    bound = np.full(P.shape, np.nan)
-    if len(keys) == 0:
-        return bound
-    distance = np.linalg.norm((query[:, None, :] - keys[None, :, :]) / DOMAIN_SPAN, axis=2)
-    sweeps = [group.sort_values("pressure_bar") for _, group in muscles]
-    for i in range(P.size):
-        order = np.argsort(distance[i])[:NEIGHBOURS]
-        near = [j for j in order if distance[i, j] <= MAX_DISTANCE]
-        if not near:
-            continue
-        worst = 0.0
-        for j in near:
-            p = sweeps[j]["pressure_bar"].to_numpy()
-            err = np.abs(sweeps[j]["err_pct"].to_numpy())
-            if not p.min() - PRESSURE_SLACK_BAR <= P[i] <= p.max() + PRESSURE_SLACK_BAR:
-                worst = np.nan
-                break
-            q = np.clip(P[i], p.min(), p.max())
-            lo = p[p <= q + 1e-9].max()
-            hi = p[p >= q - 1e-9].min()
-            bracket = err[(p >= lo - 1e-9) & (p <= hi + 1e-9)]
-            worst = max(worst, np.inf if np.isnan(bracket).any() else bracket.max())
-        bound[i] = worst
-    return bound
-
-
 def candidates(table: pd.DataFrame) -> pd.DataFrame:
-    """Predictors auto may use, cheapest first: one row each with spec and seconds per force."""
+    """Predictors auto may use, cheapest first: predictor, spec, family, seconds per force and,
+    for the FE meshes, the recorded mesh error [%]."""
     pick = table[table["spec"].notna() & (table["spec"] != "")]
-    cost = pick.groupby(["predictor", "spec"], as_index=False)["seconds_per_point"].median()
-    return cost.sort_values("seconds_per_point", kind="stable").reset_index(drop=True)
+    rows = (pick.assign(abs_err=pick["err_pct"].abs())
+            .groupby(["predictor", "spec", "family"], as_index=False)
+            .agg(seconds_per_point=("seconds_per_point", "median"),
+                 recorded_err_pct=("abs_err", "max")))
+    return rows.sort_values("seconds_per_point", kind="stable").reset_index(drop=True)
+
+
+def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
+    """Per point, the largest reference force of its muscle (same D0, t0, eps): Equation 7's
+    denominator."""
+    scale = np.empty(reference.shape)
+    _, which = np.unique(geometry, axis=0, return_inverse=True)
+    for g in np.unique(which):
+        here = which.ravel() == g
+        scale[here] = max(np.nanmax(np.abs(reference[here]), initial=0.0), MIN_SCALE_N)
+    return scale
 
 
 class AutoModel(ForceModel):
-    """The cheapest model meeting ``tolerance`` over the query (``--model auto --tolerance 2%``).
+    """The cheapest model meeting ``tolerance`` at the query (``--model auto --tolerance 2%``).
 
     Parameters
     ----------
     tolerance : float
         Largest acceptable |Err%| against the finest FE model, a fraction (0.02 = 2 %).
     table : str, optional
-        Study table to read (default ``mkm/data/model_errors.csv``, written by ``mkm study``).
+        Study table (default ``mkm/data/model_errors.csv``, written by ``mkm study``): the
+        candidates, their measured cost and the FE meshes' recorded errors.
     per_point : bool
-        False (default): one model for the whole call, the cheapest whose largest bound over
-        all points meets the tolerance. True: the cheapest model per point.
+        False (default): one model for the whole call. True: the cheapest model per point.
+    L0_mm, theta0_deg, C10_MPa, C01_MPa : float, optional
+        The muscle: length at rest [mm], braid angle at rest [deg], rubber [MPa]; passed to
+        every candidate (None: each model's default).
     build : callable
-        ``build(spec) -> ForceModel``: makes a candidate from a study-table spec (the
-        registry's :func:`mkm.registry.build_spec`, which passes itself when it builds auto).
+        ``build(spec, **muscle) -> ForceModel``: makes a candidate from a spec (the registry's
+        :func:`mkm.registry.build_spec`, which passes itself when it builds auto).
     """
 
     name = "auto"
 
     def __init__(self, tolerance: float = 0.02, table: str | None = None,
-                 per_point: bool = False, *, build: Callable[[str], ForceModel]):
+                 per_point: bool = False, L0_mm: float | None = None,
+                 theta0_deg: float | None = None, C10_MPa: float | None = None,
+                 C01_MPa: float | None = None, *, build: Callable[..., ForceModel]):
         self.tolerance = tolerance
         self.table = table
         self.per_point = bool(per_point)
+        self.L0_mm, self.theta0_deg = L0_mm, theta0_deg
+        self.C10_MPa, self.C01_MPa = C10_MPa, C01_MPa
         self.build = build
+
+    @property
+    def muscle(self) -> dict[str, float]:
+        return {k: getattr(self, k) for k in PARAMETERS if getattr(self, k) is not None}
 
     def params(self):
         path = Path(self.table or MODEL_ERRORS_FILE)
         digest = file_sha256(path)[:12] if path.exists() else None
-        return {"tolerance": self.tolerance, "table": path.name, "table_sha256": digest,
-                "per_point": self.per_point}
+        return {"tolerance": self.tolerance, "per_point": self.per_point, **self.muscle,
+                "table": path.name, "table_sha256": digest, "reference": REFERENCE_SPEC,
+                "std_factor": STD_FACTOR, "mesh_safety": MESH_SAFETY}
+
+    def _candidate(self, spec: str) -> ForceModel:
+        return self.build(spec, **self.muscle)
+
+    def reference(self, P, D0, t0, eps) -> tuple[np.ndarray, np.ndarray] | None:
+        """``(R, s)``: the surrogate's force and standard deviation [N] at every point, or None
+        where it cannot estimate the reference (a point or a muscle parameter outside its box,
+        or no predictive std)."""
+        try:
+            model = self._candidate(REFERENCE_SPEC)
+        except ValueError:  # a muscle parameter the surrogate was not trained on
+            return None
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # out of its box: handled below
+            pred = model.predict(P, D0, t0, eps)
+        if "force_std_N" not in pred.extras or not pred.valid.all():
+            return None
+        return np.ravel(pred.force_N), np.ravel(pred.extras["force_std_N"])
 
     def choose(self, P, D0, t0, eps) -> dict[str, np.ndarray]:
-        """Per point: the predictor that answers (``model_used``, the same for every point
-        unless ``per_point``), its error bound, and the forces of the cheaper candidate that
-        qualified; the fallback's points are left to :meth:`_forces` (NaN force,
-        ``model_used`` = :data:`FALLBACK`)."""
+        """Per point: the predictor that answers (``model_used``), its error bound [%], how
+        the bound was obtained, and the forces of the candidate chosen; the fallback's points
+        are left to :meth:`_forces` (NaN force, ``model_used`` = :data:`FALLBACK`)."""
         if not 0.0 < self.tolerance < 1.0:
             raise ValueError(f"tolerance={self.tolerance:g} is invalid: expected a fraction in "
                              "(0, 1), for example 0.02 or 2%")
         table = read_model_errors(self.table or MODEL_ERRORS_FILE)
         P, D0, t0, eps = (np.ravel(a) for a in np.broadcast_arrays(
             *(np.asarray(v, dtype=float) for v in (P, D0, t0, eps))))
+        tol = 100.0 * self.tolerance
         force = np.full(P.shape, np.nan)
         used = np.full(P.shape, FALLBACK, dtype=object)
-        bound_used = np.full(P.shape, np.nan)
+        bound_used = np.zeros(P.shape)
+        source = np.full(P.shape, "the fine mesh is the reference", dtype=object)
         todo = np.ones(P.shape, dtype=bool)
+        ref = self.reference(P, D0, t0, eps)
+        if ref is not None:
+            R, s = ref
+            scale = _sweep_scale(R, np.stack([D0, t0, eps], axis=1))
         for row in candidates(table).itertuples():
             if not todo.any():
                 break
             if row.predictor == FALLBACK:
                 continue
-            bound = error_bounds(table, row.predictor, P, D0, t0, eps)
-            meets = bound <= 100.0 * self.tolerance  # NaN (not covered) never meets it
-            if not self.per_point and not meets.all():
+            model_pred = None
+            if row.family == "FE":
+                bound = np.full(P.shape, MESH_SAFETY * row.recorded_err_pct)
+                why = (f"mesh error: {MESH_SAFETY:g} x its largest |Err%| against the fine "
+                       "mesh in the study's convergence table")
+            elif ref is None:
+                continue  # no estimate of the reference here: only the FE may answer
+            elif row.spec == REFERENCE_SPEC:
+                bound = 100.0 * STD_FACTOR * s / scale
+                why = f"{STD_FACTOR:g} x the surrogate's calibrated std"
+            else:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")  # a point it flags goes to the next one
+                    model_pred = self._candidate(row.spec).predict(P, D0, t0, eps)
+                gap = np.abs(np.ravel(model_pred.force_N) - R)
+                bound = 100.0 * (gap + STD_FACTOR * s) / scale
+                why = (f"|{row.predictor} - surrogate| + {STD_FACTOR:g} x the surrogate's "
+                       "calibrated std")
+            meets = bound <= tol  # NaN never meets it
+            if not self.per_point and not meets[todo].all():
                 continue
             idx = np.flatnonzero(todo & meets)
             if idx.size == 0:
                 continue
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")  # a point a candidate flags goes to the next one
-                pred = self.build(row.spec).predict(P[idx], D0[idx], t0[idx], eps[idx])
-            if not self.per_point and not pred.valid.all():
+            if model_pred is None:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    model_pred = self._candidate(row.spec).predict(P, D0, t0, eps)
+            valid = np.ravel(model_pred.valid)
+            if not self.per_point and not valid[idx].all():
                 continue  # one model for the whole query: it must answer every point
-            ok = idx[pred.valid]
-            force[ok] = pred.force_N[pred.valid]
+            ok = idx[valid[idx]]
+            force[ok] = np.ravel(model_pred.force_N)[ok]
             used[ok] = row.predictor
             bound_used[ok] = bound[ok]
+            source[ok] = why
             todo[ok] = False
-        return {"force_N": force, "model_used": used.astype(str), "error_bound_pct": bound_used}
+        if ref is None:
+            source[todo] = "outside the surrogate's box: no estimate of the reference there"
+        return {"force_N": force, "model_used": used.astype(str),
+                "error_bound_pct": bound_used, "bound_source": source.astype(str)}
 
     def _forces(self, P, D0, t0, eps):
         out = self.choose(P, D0, t0, eps)
@@ -182,11 +225,8 @@ class AutoModel(ForceModel):
         converged = valid.copy()
         fallback = np.flatnonzero(out["model_used"] == FALLBACK)
         if fallback.size:
-            table = read_model_errors(self.table or MODEL_ERRORS_FILE)
-            spec = candidates(table).set_index("predictor")["spec"].get(
-                FALLBACK, "axisym:mesh=fine")
             args = (np.ravel(a)[fallback] for a in (P, D0, t0, eps))
-            pred = self.build(spec).predict(*args)
+            pred = self._candidate(FALLBACK_SPEC).predict(*args)
             out["force_N"][fallback] = pred.force_N
             valid[fallback] = pred.valid
             converged[fallback] = pred.converged
@@ -195,7 +235,7 @@ class AutoModel(ForceModel):
 
 
 def explain(prediction, tolerance: float | None = None) -> str:
-    """One line per model used: how many points it answered and why it was chosen.
+    """One line per model used: how many points it answered, its bound and how it was bound.
 
     ``prediction``: a :class:`Prediction` of :class:`AutoModel`, or the dict of
     :meth:`AutoModel.choose` with ``tolerance`` given.
@@ -207,14 +247,15 @@ def explain(prediction, tolerance: float | None = None) -> str:
     tol = 100.0 * tolerance
     used = np.ravel(extras["model_used"])
     bound = np.ravel(extras["error_bound_pct"])
+    source = np.ravel(extras["bound_source"])
     lines = []
     for name in dict.fromkeys(used):
         here = used == name
         if name == FALLBACK:
-            why = (f"nothing cheaper has a study error <= {tol:g}% there (or the study does not "
-                   "cover the point), so the finest FE mesh, the study's reference, answers")
+            why = (f"nothing cheaper has an error bound <= {tol:g}% there ("
+                   f"{source[here][0]}), so the finest FE mesh, the reference, answers")
         else:
-            why = (f"cheapest model whose study error near these points is <= {tol:g}% "
-                   f"(bound {np.nanmax(bound[here]):.2f}%)")
+            why = (f"the cheapest model whose error bound at these points is <= {tol:g}%: "
+                   f"{np.nanmax(bound[here]):.2f}% ({source[here][0]})")
         lines.append(f"auto: {name} for {here.sum()} of {used.size} points: {why}")
     return "\n".join(lines)

@@ -63,11 +63,12 @@ APP_ENTRIES: dict[str, Entry] = {
         colour="tab:red", contract_spec="surrogate"),
     "auto": Entry(
         "auto", _auto, "auto (cheapest within tolerance)",
-        "the cheapest predictor whose measured error meets a tolerance", "auto",
+        "the cheapest predictor whose error bound at the point asked meets a tolerance", "auto",
         {"tolerance": Parameter("largest |Err%| against the finest FE, a fraction; "
                                 "default 0.02"),
          "table": Parameter("study table (default: the shipped one, from `mkm study`)", str),
-         "per_point": Parameter("true: choose per point instead of one model per sweep", bool)},
+         "per_point": Parameter("true: choose per point instead of one model per sweep", bool),
+         "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
         colour="tab:purple", contract_spec="auto:tolerance=0.05"),
 }
 

@@ -315,7 +315,6 @@ def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours:
                       else "in this report"})
     keys = dict.fromkeys(k for r in runs for k in r.keys)
     auto = "".join(_auto_paragraph(r, tolerance) for r in runs) if tolerance else ""
-    auto += _study_table(runs)
     return ('<h2 id="speed">How fast, how good</h2>'
             + figure_html(path, "Each model's seconds per predicted force (log; a cached FE "
                           "sweep reports the time of its original solve) against its largest "
@@ -466,44 +465,6 @@ def _invalid_note(scored: pd.DataFrame, names: dict) -> str:
             + ".</p>")
 
 
-def _study_table(runs) -> str:
-    """The study's speed and accuracy (against the finest FE mesh) for the study muscle nearest
-    to each muscle of the runs: the numbers ``auto`` chooses from."""
-    from mkm.auto import DOMAIN_SPAN, MODEL_ERRORS_FILE, read_model_errors
-
-    if not MODEL_ERRORS_FILE.exists():
-        return ""
-    table = read_model_errors()
-    keys = table.groupby("muscle")[["D0_mm", "t0_mm", "eps"]].first()
-    parts, seen = [], set()
-    for r in runs:
-        m = r.muscle
-        query = np.array([m.get("D0_mm", np.nan), m.get("t0_mm", np.nan), m.get("eps", np.nan)],
-                         dtype=float)
-        distance = np.linalg.norm((keys.to_numpy(float) - query) / DOMAIN_SPAN, axis=1)
-        nearest = keys.index[int(np.argmin(distance))]
-        if nearest in seen:
-            continue
-        seen.add(nearest)
-        rows = table[table["muscle"] == nearest]
-        D0, t0, eps = keys.loc[nearest]
-        out = (rows.assign(abs_err=rows["err_pct"].abs())
-               .groupby("predictor", sort=False)
-               .agg(spec=("spec", "first"), seconds=("seconds_per_point", "first"),
-                    worst=("abs_err", "max"))
-               .reset_index().sort_values("seconds"))
-        shown = pd.DataFrame({"predictor": out["predictor"], "spec": out["spec"],
-                              "s per force": out["seconds"],
-                              "largest |Err%| against the finest FE": out["worst"]})
-        parts.append(table_html(shown, f"The study's numbers (mkm/data/model_errors.csv) for "
-                                f"its muscle {esc(nearest)} (D0 {D0:g} mm, t0 {t0:g} mm, eps "
-                                f"{100 * eps:.1f} %), the nearest to run {r.k}'s muscle: what "
-                                "auto chooses from. Provenance: "
-                                '<a href="#prov-software">software</a> and the table\'s '
-                                "model_errors.json.", formats={"s per force": ".3g"}))
-    return "".join(parts)
-
-
 def _auto_pressures(r: _Run) -> np.ndarray:
     """The run's pressures as auto sees them: within the regulator tolerance of the study's top
     pressure counts as that pressure (the domain-edge rule)."""
@@ -525,7 +486,9 @@ def _auto_choice(r: _Run, tolerance: float):
         choice = None
         if not r.run.steps.empty and MODEL_ERRORS_FILE.exists():
             m = r.muscle
-            auto = AutoModel(tolerance=tolerance, build=build_spec)
+            muscle = {k: m[k] for k in ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
+                      if m.get(k) is not None}
+            auto = AutoModel(tolerance=tolerance, build=build_spec, **muscle)
             chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
             choice = str(chosen["model_used"][0]), explain(chosen, tolerance)
         r.auto_choices[tolerance] = choice
@@ -540,8 +503,8 @@ def _auto_paragraph(r: _Run, tolerance: float) -> str:
         return ""
     lines = "<br>".join(esc(line) for line in choice[1].splitlines())
     return (f"<p><b>Model choice for run {r.k}</b> (<code>--model auto --tolerance "
-            f"{100 * tolerance:g}%</code>, one model for the whole run, from the study table "
-            f"mkm/data/model_errors.csv):<br>{lines}.</p>")
+            f"{100 * tolerance:g}%</code>, one model for the whole run, each candidate's error "
+            f"bound at this run's points and muscle):<br>{lines}.</p>")
 
 
 def _surrogate_section(out: Path, prov: dict) -> str:
