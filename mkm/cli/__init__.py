@@ -44,6 +44,9 @@ def main(argv: list[str] | None = None) -> int:
     if not has_display():  # the one place the backend is chosen: files only, no window
         os.environ.setdefault("MPLBACKEND", "Agg")
     parser = build_parser()
+    if not (sys.argv[1:] if argv is None else argv):  # `mkm` alone: the help, not an error
+        parser.print_help()
+        return 0
     args = parser.parse_args(argv)
     try:
         return int(args.func(args) or 0)

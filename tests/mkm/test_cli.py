@@ -233,3 +233,9 @@ def test_every_readme_example_parses():
         except SystemExit as exc:
             raise AssertionError(f"README example {command!r} does not parse") from exc
         assert callable(args.func)
+
+
+def test_mkm_alone_prints_the_help(mkm_run):
+    code, out, err = mkm_run([])
+    assert code == 0 and err == ""
+    assert out.startswith("usage: mkm") and "demo" in out and "report" in out
