@@ -5,9 +5,11 @@ Naming follows the published model; inputs carry their unit in the name.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
-from mkm.fem.calibration import CalibratedTheta0
+from mkm.fem.calibration import CalibratedTheta0, calibrated
 from mkm.fem.interface import Domain, ForceModel
 
 BAR_TO_MPA = 0.1  # 1 bar = 0.1 MPa = 0.1 N/mm^2, so N/mm^2 * mm^2 = N
@@ -73,6 +75,37 @@ def chou_hannaford_eps_max(theta0_deg):
     there, and beyond it the formula turns negative.
     """
     return 1.0 - 1.0 / (np.sqrt(3.0) * np.cos(np.deg2rad(theta0_deg)))
+
+
+@dataclass(frozen=True)
+class BraidLock:
+    """Where a muscle's braid locks: the shortening ``eps_max`` (a fraction) reached from the
+    braid angle at rest ``theta0_deg`` [deg], and where that angle comes from."""
+
+    eps_max: float
+    theta0_deg: float
+    source: str
+
+    def __str__(self) -> str:
+        return (f"eps_max {self.eps_max:.3f} (the braid reaches its locking angle "
+                f"{LOCKING_ANGLE_DEG:.1f} deg from theta0 {self.theta0_deg:.2f} deg, "
+                f"{self.source})")
+
+
+def braid_lock(theta0_deg: float | None = None) -> BraidLock:
+    """The one braid-lock limit of a muscle, for every command (check, acquire, report, design).
+
+    The lock is the braid's geometry (:func:`chou_hannaford_eps_max`), the same whatever the
+    force model; only the angle at rest differs: the muscle's own ``theta0_deg`` when known,
+    else the calibrated angle of the FE model, the toolkit's reference (``axisym`` in
+    ``fem/calibration.json``).
+    """
+    if theta0_deg is not None:
+        theta0, source = check_theta0(theta0_deg), "the muscle's theta0"
+    else:
+        theta0 = float(calibrated("axisym")["theta0_deg"])
+        source = "the FE model's calibrated theta0 (axisym)"
+    return BraidLock(float(chou_hannaford_eps_max(theta0)), theta0, source)
 
 
 class Eq2(CalibratedTheta0, ForceModel):

@@ -235,36 +235,82 @@ def _status_html(r: _Run) -> str:
 
 def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
                      tolerance: float | None) -> str:
-    """Per run: status, eps, the best model, its largest |Err%| and RMSE, steps, lost samples,
-    the auto choice."""
-    head = ("<tr><th>run</th><th>status</th><th>eps [%]</th><th>steps kept / planned</th>"
-            "<th>lost samples</th><th>best model</th><th>its largest |Err%|</th>"
-            "<th>its RMSE [N]</th>"
+    """The first screen: what the runs are (simulated or measured, past the braid lock), then
+    every model's largest |Err%|, RMSE and seconds per force for every run in one table, the
+    model ``auto`` picks for each run, then each run's status."""
+    banners = _banners(runs)
+    head = ("<tr><th>run</th><th>model</th><th>largest |Err%|</th><th>RMSE [N]</th>"
+            "<th>s per force</th><th>valid steps</th>"
             + (f"<th>auto at {100 * tolerance:g} %</th>" if tolerance else "") + "</tr>")
     rows = []
     for r in runs:
+        ordered = sorted(r.summary, key=lambda s: (np.nan_to_num(s["max_abs_err_pct"],
+                                                                 nan=np.inf)))
         best = _best(r)
-        best_cells = ("<td>—</td><td>—</td><td>—</td>" if best is None else
-                      f"<td>{esc(names[best['model']])}"
-                      + ("" if best["valid_points"] == best["points"] else
-                         f" (valid at {best['valid_points']} of {best['points']})")
-                      + f"</td><td>{best['max_abs_err_pct']:.2f}</td>"
-                        f"<td>{best['rmse_N']:.2f}</td>")
-        auto = ""
-        if tolerance:
-            choice = _auto_choice(r, tolerance)
-            auto = f"<td>{esc(choice[0]) if choice else '—'}</td>"
-        rows.append(f'<tr><td><a href="#run-{r.k}">run {r.k}</a>: {esc(r.name)}</td>'
-                    f"<td>{_status_html(r)}</td><td>{r.eps_pct:.1f}</td>"
-                    f"<td>{len(r.run.steps)} / {esc(_planned_steps(r.meta))}</td>"
-                    f"<td>{r.meta.lost_samples}</td>{best_cells}{auto}</tr>")
+        choice = _auto_choice(r, tolerance) if tolerance else None
+        for i, s in enumerate(ordered):
+            first = i == 0
+            run_cell = (f'<td rowspan="{len(ordered)}"><a href="#run-{r.k}">run {r.k}</a>: '
+                        f"{esc(r.name)}{_simulated_badge(r)}<br>eps {r.eps_pct:.1f} %</td>"
+                        if first else "")
+            strong = best is not None and s["model"] == best["model"]
+            name = f"<b>{esc(names[s['model']])}</b>" if strong else esc(names[s["model"]])
+            err = "—" if np.isnan(s["max_abs_err_pct"]) else f"{s['max_abs_err_pct']:.2f}"
+            rmse = "—" if np.isnan(s["rmse_N"]) else f"{s['rmse_N']:.2f}"
+            auto = ""
+            if tolerance and first:
+                auto = (f'<td rowspan="{len(ordered)}">'
+                        f"{esc(choice[0]) if choice else '—'}</td>")
+            rows.append(f"<tr>{run_cell}<td>{name}</td><td>{err}</td><td>{rmse}</td>"
+                        f"<td>{s['seconds_per_point']:.3g}</td>"
+                        f"<td>{s['valid_points']} / {s['points']}</td>{auto}</tr>")
+    status = "".join(
+        f'<tr><td><a href="#run-{r.k}">run {r.k}</a></td><td>{_status_html(r)}</td>'
+        f"<td>{len(r.run.steps)} / {esc(_planned_steps(r.meta))}</td>"
+        f"<td>{r.meta.lost_samples}</td></tr>" for r in runs)
     keys = [k for r in runs for k in r.keys]
-    return ('<h2 id="summary">Summary</h2><div class="table"><table class="summary">'
+    return ('<h2 id="summary">Summary</h2>' + banners
+            + '<div class="table"><table class="summary">'
             f"<thead>{head}</thead><tbody>{''.join(rows)}</tbody></table>"
-            '<p class="caption">Best model: the smallest largest |Err%| (Equation 7) among the '
-            "models valid at every kept step of the run. Every model's numbers per run are in "
-            "the tables below and in summary.csv. " + provenance_links(dict.fromkeys(keys))
-            + "</p></div>")
+            '<p class="caption">Every model on every run, best first (in bold: the smallest '
+            "largest |Err%|, Equation 7, among the models valid at every kept step). auto: the "
+            "cheapest model whose error bound at the run's points meets the tolerance. "
+            + provenance_links(dict.fromkeys(keys)) + "</p></div>"
+            '<div class="table"><table class="summary"><thead><tr><th>run</th><th>status</th>'
+            "<th>steps kept / planned</th><th>lost samples</th></tr></thead>"
+            f"<tbody>{status}</tbody></table></div>")
+
+
+def _simulated(r: _Run) -> bool:
+    hardware = r.meta.get("hardware") or {}
+    return bool(r.meta.get("simulated") or (isinstance(hardware, dict)
+                                            and hardware.get("simulated")))
+
+
+def _simulated_badge(r: _Run) -> str:
+    return ' <span class="bad">SIMULATED</span>' if _simulated(r) else ""
+
+
+def _banners(runs: list[_Run]) -> str:
+    """One line per fact the reader must know before any number: simulated runs, runs held past
+    the braid lock (where no model is valid)."""
+    from mkm.fem.eq2 import braid_lock
+
+    out = []
+    simulated = [r for r in runs if _simulated(r)]
+    if simulated:
+        which = ", ".join(f"run {r.k}" for r in simulated)
+        out.append(f"SIMULATED: {which} came from the simulated bench (a model with noise), "
+                   "not from a measurement.")
+    for r in runs:
+        theta0 = r.muscle.get("theta0_deg")
+        lock = braid_lock(theta0)
+        if r.muscle.get("eps", 0.0) >= lock.eps_max:
+            out.append(f"Run {r.k} is held at eps {r.eps_pct:.1f} %, past the braid lock: "
+                       f"{lock}. No model is valid there: the braid cannot shorten so far, so "
+                       "the muscle pulls little or nothing and every model's number is flagged "
+                       "invalid.")
+    return "".join(f'<p class="note">{esc(line)}</p>' for line in out)
 
 
 def _overlay_section(runs: list[_Run], out: Path, names: dict, colours: dict) -> str:

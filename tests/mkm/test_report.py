@@ -307,3 +307,26 @@ def test_report_renders_in_headless_chromium(report, tmp_path):
         if keep:
             Path(keep).mkdir(parents=True, exist_ok=True)
             shutil.copy2(shot, Path(keep) / shot.name)
+
+
+def test_first_screen_has_every_model_on_every_run_and_says_simulated(report):
+    _, html = report
+    summary = html[html.index('<h2 id="summary">'):html.index('<h2', html.index(
+        '<h2 id="summary">') + 5)]
+    assert "SIMULATED: run 1, run 2 came from the simulated bench" in summary
+    # one row per model and run: 3 models x 2 runs, each with its error, RMSE and speed
+    assert summary.count("Thick-wall (Klute-Hannaford) [thickwall]") == 2
+    assert summary.count("[eq2:theta0_deg=50]") == 2
+    assert "s per force" in summary and "RMSE [N]" in summary
+
+
+def test_a_run_past_the_braid_lock_gets_one_banner(tmp_path):
+    from mkm.fem.eq2 import braid_lock
+
+    lock = braid_lock()
+    run = acquire(_sim_config(round(lock.eps_max + 0.05, 3), (0.5, 1.0)), out_root=tmp_path)
+    path = build_report([run.path], parse_models("eq2,thickwall"), out_dir=tmp_path / "r",
+                        cache_dir=None, tolerance=None, surrogate_section=False)
+    html = path.read_text(encoding="utf-8")
+    assert html.count("past the braid lock") == 1
+    assert f"eps_max {lock.eps_max:.3f}" in html and "No model is valid there" in html
