@@ -57,6 +57,18 @@ def _widths(models) -> dict[str, float]:
     return {m: 3.6 - 2.4 * i / max(len(models) - 1, 1) for i, m in enumerate(models)}
 
 
+# Each model its own dash pattern and marker besides its colour: two models that agree (the
+# surrogate and the FE model it learnt) stay two lines, not one line of a mixed colour
+MODEL_LINESTYLES = ("-", (0, (6, 2)), (0, (2, 1.5)), (0, (6, 2, 1, 2)), (0, (1, 1)))
+MODEL_MARKERS = ("", "v", "^", "d", "x")
+
+
+def _styles(models) -> dict[str, tuple]:
+    """``model -> (linestyle, marker)``, one pair per model in the order given."""
+    return {m: (MODEL_LINESTYLES[i % len(MODEL_LINESTYLES)],
+                MODEL_MARKERS[i % len(MODEL_MARKERS)]) for i, m in enumerate(models)}
+
+
 def _invalid_handle() -> Line2D:
     return Line2D([], [], color="0.3", **INVALID_STYLE)
 
@@ -75,13 +87,13 @@ def _measured(ax, steps: pd.DataFrame, label: str, marker_up="o", marker_down="s
 
 
 def _model_curve(ax, rows: pd.DataFrame, colour: str, label: str | None,
-                 linestyle: str = "-", linewidth: float = 1.5) -> bool:
+                 linestyle="-", linewidth: float = 1.5, marker: str = "") -> bool:
     """One model's forces against pressure, its ±2 std band where it has one; returns whether
     a point was invalid."""
     curve = rows.drop_duplicates("pressure_bar").sort_values("pressure_bar")
     force = curve["force_N"].where(curve["valid"])
-    ax.plot(curve["pressure_bar"], force, linestyle, color=colour, label=label,
-            linewidth=linewidth)
+    ax.plot(curve["pressure_bar"], force, linestyle=linestyle, color=colour, label=label,
+            linewidth=linewidth, marker=marker or None, markersize=5, markerfacecolor="none")
     if "force_std_N" in curve and curve["force_std_N"].notna().any():
         std = curve["force_std_N"].where(curve["valid"])
         ax.fill_between(curve["pressure_bar"], force - 2 * std, force + 2 * std, color=colour,
@@ -104,9 +116,12 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
     _measured(ax_f, steps, "measured")
     any_invalid, any_band = False, False
     widths = _widths(dict.fromkeys(predictions["model"]))
+    styles = _styles(dict.fromkeys(predictions["model"]))
     for model, rows in predictions.groupby("model", sort=False):
         c = colours[model]
-        any_invalid |= _model_curve(ax_f, rows, c, names[model], linewidth=widths[model])
+        linestyle, marker = styles[model]
+        any_invalid |= _model_curve(ax_f, rows, c, names[model], linestyle=linestyle,
+                                    linewidth=widths[model], marker=marker)
         any_band |= "force_std_N" in rows and rows["force_std_N"].notna().any()
         for direction, style, face in (("up", "-", c), ("down", "--", "white")):
             sweep = rows[rows["direction"] == direction].sort_values("pressure_bar")
@@ -309,8 +324,6 @@ def report_speed_figure(summary: pd.DataFrame, names: dict[str, str],
         ax.scatter(row["seconds_per_point"], max(row["max_abs_err_pct"], 1e-3), s=60,
                    marker=RUN_MARKERS[runs.index(row["run"]) % len(RUN_MARKERS)],
                    color=colours[row["model"]], zorder=3)
-        ax.annotate(row["model"], (row["seconds_per_point"], max(row["max_abs_err_pct"], 1e-3)),
-                    textcoords="offset points", xytext=(6, 3), fontsize=7.5)
     models = list(dict.fromkeys(summary["model"]))
     handles = [Line2D([], [], color=colours[m], marker="o", linestyle="none") for m in models]
     labels = [names[m] for m in models]

@@ -57,3 +57,30 @@ def test_uncertainty_band_where_the_model_has_one():
     plain = _predictions("eq2", [101.0, 209.0, 101.0], [True] * 3)
     fig = run_figure(STEPS, plain, "t", {"eq2": "Equation 2"}, {"eq2": "tab:blue"})
     assert not [c for c in fig.axes[0].collections if isinstance(c, PolyCollection)]
+
+
+def test_models_that_agree_stay_two_lines():
+    # the surrogate over the FE model it learnt: the same forces, two distinguishable lines
+    same = [100.0, 205.0, 100.0]
+    pred = pd.concat([_predictions("axisym", same, [True] * 3),
+                      _predictions("surrogate", same, [True] * 3)])
+    fig = run_figure(STEPS, pred, "t", {"axisym": "FE", "surrogate": "Surrogate"},
+                     {"axisym": "tab:green", "surrogate": "tab:red"})
+    lines = {line.get_label(): line for line in fig.axes[0].lines
+             if line.get_label() in ("FE", "Surrogate")}
+    fe, sur = lines["FE"], lines["Surrogate"]
+    assert (fe.get_linestyle(), fe.get_marker()) != (sur.get_linestyle(), sur.get_marker())
+    assert fe.get_linewidth() > sur.get_linewidth()  # the one beneath shows around the other
+
+
+def test_speed_chart_names_models_in_the_legend_only():
+    from mkm.figures import report_speed_figure
+
+    summary = pd.DataFrame({"run": ["a", "a", "b", "b"], "model": ["axisym", "surrogate"] * 2,
+                            "seconds_per_point": [0.01, 1e-5, 0.01, 1e-5],
+                            "max_abs_err_pct": [4.63, 4.63, 1.0, 1.0]})
+    fig = report_speed_figure(summary, {"axisym": "FE", "surrogate": "Surrogate"},
+                              {"axisym": "tab:green", "surrogate": "tab:red"})
+    ax = fig.axes[0]
+    assert not ax.texts  # no labels beside the points: none can print over another
+    assert {t.get_text() for t in ax.get_legend().get_texts()} >= {"FE", "Surrogate"}
