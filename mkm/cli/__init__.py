@@ -11,6 +11,7 @@ import argparse
 import os
 import re
 import sys
+import warnings
 
 from mkm import __version__
 from mkm.cli import bench, demo, design, fem, models, surrogate, validation
@@ -25,6 +26,11 @@ class _Parser(argparse.ArgumentParser):
 
     def error(self, message):  # one line, no usage dump
         self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def _note(message, category, filename, lineno, file=None, line=None) -> None:
+    """A warning as a user reads it: one line, no source path (the library's own words)."""
+    print(f"mkm: note: {message}", file=sys.stderr)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -49,7 +55,9 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     args = parser.parse_args(argv)
     try:
-        return int(args.func(args) or 0)
+        with warnings.catch_warnings():
+            warnings.showwarning = _note
+            return int(args.func(args) or 0)
     except ValueError as exc:
         print(f"mkm: error: {exc}", file=sys.stderr)
         return 2

@@ -239,3 +239,28 @@ def test_mkm_alone_prints_the_help(mkm_run):
     code, out, err = mkm_run([])
     assert code == 0 and err == ""
     assert out.startswith("usage: mkm") and "demo" in out and "report" in out
+
+
+def test_a_library_warning_reaches_the_user_as_one_note(mkm_run):
+    import warnings as _warnings
+
+    from mkm.fem.interface import ForceModel
+    from mkm.fem.ladder import Entry
+    from mkm.registry import register, unregister
+
+    class Warns(ForceModel):
+        name = "warns"
+
+        def _forces(self, P, D0, t0, eps):
+            _warnings.warn("2 of 2 points lie outside the training domain", UserWarning,
+                           stacklevel=2)
+            return {"force_N": P * 0.0}
+
+    register(Entry("warns", Warns, "Warns", "a model that warns", "test"))
+    try:
+        code, out, err = mkm_run(["fem", "solve", "--model", "warns", "--D0", "40", "--t0", "3",
+                                  "--eps", "0", "--pressures", "1,2"])
+    finally:
+        unregister("warns")
+    assert code == 0 and out.startswith("pressure_bar,")
+    assert err == "mkm: note: 2 of 2 points lie outside the training domain\n"
