@@ -82,5 +82,6 @@ def _design(args) -> int:
                         cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR)
     write_design(result, Path(args.out or default_out("design")))
     summary_line("design", result.summary())
+    print(result.table_text())
     print(result.files["html"])
     return 0 if result.chosen is not None else 1

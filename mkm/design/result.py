@@ -65,6 +65,16 @@ class DesignResult:
                 f"{best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar")
 
 
+    def table_text(self) -> str:
+        """The verified designs, best first, as a plain text table for the terminal."""
+        shown = self.designs[["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
+                              "outer_diameter_mm", "min_fe_margin_pct", "meets_all"]]
+        shown = shown.rename(columns={"outer_diameter_mm": "outer_mm",
+                                      "min_fe_margin_pct": "FE_margin_%",
+                                      "meets_all": "meets"})
+        return shown.to_string(index=False, float_format=lambda v: f"{v:.4g}")
+
+
 DESIGN_COLUMNS = ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
                   "outer_diameter_mm", "rubber_volume_cm3"]
 

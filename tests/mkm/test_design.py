@@ -156,7 +156,12 @@ def test_cli_spec_file_writes_csv_json_and_html(tmp_path, mkm_run):
     code, stdout, err = mkm_run(["design", "--spec", str(spec), "--mesh", MESH, "--no-progress",
                                  "--out", str(out)])
     assert code == 0, err
-    assert stdout.strip() == str(out / "design.html")
+    lines = stdout.strip().splitlines()
+    assert lines[-1] == str(out / "design.html")  # the path last
+    # the ranked designs on the terminal, as in designs.csv
+    assert lines[0].split() == ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
+                                "outer_mm", "FE_margin_%", "meets"]
+    assert len(lines) == 3 and lines[1].split()[0] == "1" and lines[1].split()[-1] == "True"
     assert err.startswith("mkm design: ") and "1 meets every requirement" in err
     table = pd.read_csv(out / "designs.csv")
     assert len(table) == 1 and bool(table["meets_all"].iloc[0])
