@@ -9,7 +9,6 @@ figure per requirement and the FE curves. Figures are built without pyplot (no g
 
 from __future__ import annotations
 
-import json
 import re
 import warnings
 from pathlib import Path
@@ -33,7 +32,15 @@ from mkm.fem.records import (
     write_csv_with_sidecar,
 )
 from mkm.fem.thickwall import outer_diameter_mm
-from mkm.html import esc, figure_html, html_page, kv_html, save_figure, table_html
+from mkm.html import (
+    esc,
+    figure_html,
+    html_page,
+    kv_html,
+    provenance_details,
+    save_figure,
+    table_html,
+)
 from mkm.registry import parse_spec
 
 
@@ -179,8 +186,7 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
         ('<p class="note">Flags: ' + esc("; ".join(notes)) + "</p>") if notes else "",
         "<h2>Figures</h2>",
         *(figure_html(path, caption) for path, caption in figures),
-        "<h2>Provenance</h2>",
-        f"<pre>{esc(json.dumps(record['provenance'], indent=1, default=str))}</pre>",
+        provenance_details(record["provenance"], "designs.json"),
     ]
     return "".join(parts)
 

@@ -174,6 +174,9 @@ def test_cli_spec_file_writes_csv_json_and_html(tmp_path, mkm_run):
     assert record["provenance"]["fe"]["params"]["mesh"] == MESH
     html = (out / "design.html").read_text()
     assert html.count("<img ") == 3  # one contour figure per requirement, the FE curves
+    # the provenance is folded away below the designs, not the page's bulk
+    assert html.index("<details>") > html.index("Verified designs")
+    assert html.index("<pre>") > html.index("<details>") and "</details>" in html
 
 
 def test_spec_file_unknown_key(tmp_path, mkm_run):
