@@ -510,9 +510,7 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
     if report is not None:
         out["iterations"][below], out["residual"][below] = report.iterations, report.residual
         out["cutbacks"][below] = report.cutbacks
-    # the threshold state may have a slack braid right at the clamped cap (a small negative
-    # tension at the corner node, the same on every mesh): it touches P* only, not the forces
-    # above P*, whose own states are checked (an elastic equilibrium is path-independent)
+    # the threshold state's braid is often slack at the clamped cap's corner (zero tension)
     out["min_tension_N_per_mm"][below] = half.tension(y).min()
 
     # phase 2: cap held at U*, pressure ramped from P* through the levels above it
