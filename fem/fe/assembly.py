@@ -57,10 +57,15 @@ class Term:
         e, q, _, a = self.B.shape
         return self.y0 + np.matmul(y_ext[self.dofs][:, None, :], self.B_flat).reshape(e, q, a)
 
+    def element_vectors(self, grad):
+        """Element vectors (e, i) of the density gradient ``grad`` (e, q, variables)."""
+        e, q, i, a = self.B.shape
+        return np.matmul(self.B_flat, (grad * self.w[..., None]).reshape(e, q * a, 1))[..., 0]
+
     def element_arrays(self, grad, hess):
         """Element vectors (e, i) and the kept entries of the element matrices."""
         e, q, i, a = self.B.shape
-        re = np.matmul(self.B_flat, (grad * self.w[..., None]).reshape(e, q * a, 1))[..., 0]
+        re = self.element_vectors(grad)
         BH = np.matmul(self.B, hess * self.w[..., None, None])  # (e, q, i, b)
         Ke = np.matmul(BH.transpose(0, 2, 1, 3).reshape(e, i, q * a),
                        self.B_flat.transpose(0, 2, 1))
@@ -90,6 +95,10 @@ class Assembler:
         keys, self._slot = np.unique(rows * n + cols, return_inverse=True)
         self._indices = keys % n
         self._indptr = np.searchsorted(keys // n, np.arange(n + 1))
+
+    def entries(self) -> tuple[np.ndarray, np.ndarray]:
+        """Row and column of every stored entry of :meth:`matrix`, in the order of its data."""
+        return np.repeat(np.arange(self.n), np.diff(self._indptr)), self._indices
 
     def matrix(self, blocks) -> sp.csr_matrix:
         """Sparse matrix from the kept element entries of each term, concatenated in order."""

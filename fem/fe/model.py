@@ -11,10 +11,13 @@ strain:
   D1);
 * the braid is two inextensible fibre families at +-theta0 bonded to the outer surface,
   ``cos^2 theta0 l_s^2 + sin^2 theta0 l_t^2 = 1``, enforced with a Lagrange multiplier field
-  (continuous P1 on the outer surface); the multiplier is the fibre membrane tension [N/mm],
-  which must stay >= 0 (fibres carry no compression: a held point needing it is reported
-  failed; the free muscle at the threshold may go slack right at the cap's corner, which is
-  recorded in ``min_tension_N_per_mm`` and touches ``P*`` only);
+  (continuous P1 on the outer surface); the multiplier is the fibre membrane tension [N/mm].
+  Fibres are threads: they cannot be stretched but carry no compression, so where the rubber
+  under them would shorten along the fibres they go slack (buckle off the surface) instead of
+  pushing. The braid is tension-only, ``g <= 0, lambda >= 0, lambda g = 0`` node by node
+  (:meth:`HalfMuscle.slack_nodes`: a primal-dual active set inside Newton); it matters at the
+  clamped cap's corner, where the free muscle near its threshold shortens the surface along
+  the fibres;
 * the air pressure is the potential ``-P V`` of the closed cavity (inner surface and cap), a
   follower load with a symmetric tangent whose cap share lands in the cap reaction;
 * the developed force is the reaction ``dPi/dU`` on the cap. For the half model this is already
@@ -74,6 +77,7 @@ class HalfMuscle:
             raise ValueError(f"cap={cap!r} is invalid: expected 'clamped' or 'sliding'")
         check_sleeve(sleeve)
         self.sleeve = sleeve
+        self._constraint = braid_inextensibility if sleeve == "bonded" else sliding_sleeve_length
         self.Ri, self.Ro, self.H = D0_mm / 2.0, D0_mm / 2.0 + t0_mm, L0_mm / 2.0
         self.theta0_deg, self.material = theta0_deg, material
         m = half_muscle_mesh(D0_mm, t0_mm, L0_mm, mesh)
@@ -137,6 +141,18 @@ class HalfMuscle:
         terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
         self.assembler = Assembler(terms, self.n)
         self._reactions: dict[tuple[float, bytes], float] = {}
+        if braid:
+            # tension-only braid (slack_nodes): a tension dof's constraint residual over its
+            # weight int phi_i dA is the mean of g = l_f^2 - 1 ~ 2 x fibre strain around it;
+            # the wall's membrane stiffness E t0 / 2 = 3 (C10 + C01) t0 [N/mm] turns that into
+            # the tension it would take to hold it, which the active set compares with lambda
+            self._tension_weight_mm2 = self._tension_rows(np.ones(Bb.shape[:2]))
+            self._membrane_N_per_mm = 3.0 * (material.C10_MPa + material.C01_MPa) * t0_mm
+            rows, cols = self.assembler.entries()
+            self._entry_rows, self._entry_cols = rows, cols
+            self._tension_diagonal = np.flatnonzero(
+                (rows == cols) & (rows >= self.tension_slice.start)
+                & (rows < self.tension_slice.stop))
         # the ramp's tangents (the leading block: without the cap) keep one ordering; the free
         # path's, with the pressure's dense column, fill in badly under it: SuperLU's own there
         self._held_lu = OrderedLU(leading=self.n - 1)
@@ -169,20 +185,82 @@ class HalfMuscle:
         dV = self.cavity.vector(dV_cav, self.n)
         r = self.rubber.vector(r_rub, self.n) - pressure_MPa * dV
         blocks = [K_rub, K_cav]
+        slack = None
         if self.braid is not None:
             yb = self.braid.values(y_ext)
-            constraint = braid_inextensibility if self.sleeve == "bonded" else sliding_sleeve_length
-            gb, dgb, hgb = constraint(yb[..., :3], self.theta0_deg, self.Ro)
-            tension = yb[..., 3]
-            grad = np.concatenate([tension[..., None] * dgb, gb[..., None]], axis=-1)
-            hess = np.zeros(yb.shape + (4,))
-            hess[..., :3, :3] = tension[..., None, None] * hgb
-            hess[..., :3, 3] = hess[..., 3, :3] = dgb
-            r_br, K_br = self.braid.element_arrays(grad, hess)
+            gb, dgb, hgb = self._constraint(yb[..., :3], self.theta0_deg, self.Ro)
+            r_br, K_br = self._braid_arrays(gb, dgb, hgb, yb[..., 3])
+            # the constraint rows do not depend on the tension: the gaps of this state
+            gap = self.braid.vector(r_br, self.n)[self.tension_slice]
+            slack = self.slack_nodes(y[self.tension_slice], gap)
+            if slack.any():  # slack fibres carry nothing: the braid term without their tension
+                y_taut = y_ext.copy()
+                y_taut[self.tension_slice][slack] = 0.0
+                r_br, K_br = self._braid_arrays(gb, dgb, hgb, self.braid.values(y_taut)[..., 3])
             r += self.braid.vector(r_br, self.n)
             blocks.append(K_br)
         K = self.assembler.matrix(blocks)
+        if slack is not None and slack.any():
+            self._release(r, K, y, slack)
         return r, K, dV
+
+    def _tension_rows(self, density) -> np.ndarray:
+        """``int phi_i density dA`` over the outer surface for each tension dof ``i``."""
+        grad = np.zeros(density.shape + (4,))
+        grad[..., 3] = density
+        return self.braid.vector(self.braid.element_vectors(grad), self.n)[self.tension_slice]
+
+    def fibre_stretch_gap(self, y) -> np.ndarray:
+        """Mean of ``l_f^2 - 1`` around each tension dof: < 0 where the fibres are slack."""
+        yb = self.braid.values(np.append(y, 0.0))
+        g, _, _ = self._constraint(yb[..., :3], self.theta0_deg, self.Ro)
+        return self._tension_rows(g) / self._tension_weight_mm2
+
+    def _braid_arrays(self, g, dg, hg, tension):
+        """Element vectors and matrices of the braid term ``int tension g dA``."""
+        grad = np.concatenate([tension[..., None] * dg, g[..., None]], axis=-1)
+        hess = np.zeros(grad.shape + (4,))
+        hess[..., :3, :3] = tension[..., None, None] * hg
+        hess[..., :3, 3] = hess[..., 3, :3] = dg
+        return self.braid.element_arrays(grad, hess)
+
+    def slack_nodes(self, tension, gap) -> np.ndarray:
+        r"""Tension dofs whose fibres are slack: True where ``lambda + k g_i <= 0``.
+
+        The tension-only braid is the complementarity ``g_i <= 0, lambda_i >= 0,
+        lambda_i g_i = 0`` at each tension dof ``i`` (``g_i`` the weighted mean of
+        ``l_f^2 - 1`` around it, ``gap / weight``): a thread can be shortened (it goes slack)
+        but not stretched, and pulls only. It is solved as a primal-dual active set
+        (semi-smooth Newton on ``lambda - max(0, lambda + k g)``): at each iterate a fibre is
+        taut when its tension plus the tension the wall would need to hold its strain
+        (``k`` its membrane stiffness) is positive; a taut fibre keeps ``g_i = 0``, a slack
+        one gets ``lambda_i = 0`` and drops out of the equilibrium. At a converged state that
+        is exactly the complementarity, whatever ``k``; ``k`` only sets how an iterate far from
+        it is read.
+
+        Parameters
+        ----------
+        tension : numpy.ndarray
+            Braid tension at the tension dofs [N/mm].
+        gap : numpy.ndarray
+            Constraint residuals ``int phi_i (l_f^2 - 1) dA`` there [mm^2].
+        """
+        return tension + self._membrane_N_per_mm * gap / self._tension_weight_mm2 < 0.0
+
+    def _release(self, r, K, y, slack) -> None:
+        """Make the slack tension dofs' rows ``lambda_i = 0`` in ``r`` and ``K`` (in place).
+
+        Row and column of each are emptied (the rest of the system no longer sees it: its
+        tension was left out of the assembly) and the diagonal is ``-weight / k``, so the
+        Newton step sets the tension to zero and the tangent stays symmetric.
+        """
+        scale = -self._tension_weight_mm2[slack] / self._membrane_N_per_mm
+        dofs = np.flatnonzero(slack) + self.tension_slice.start
+        r[dofs] = scale * y[dofs]
+        released = np.zeros(self.n, dtype=bool)
+        released[dofs] = True
+        K.data[released[self._entry_rows] | released[self._entry_cols]] = 0.0
+        K.data[self._tension_diagonal[slack]] = scale
 
     def inverted(self, y) -> str | None:
         """Reason to reject a state at once: an element turned inside out (J <= 0)."""
@@ -196,6 +274,11 @@ class HalfMuscle:
     def tension(self, y) -> np.ndarray:
         """Braid membrane tension at the outer-surface nodes [N/mm]."""
         return y[self.tension_slice]
+
+    def slack_everywhere(self, y) -> bool:
+        """Whether the braid carries no tension at all (a bare rubber tube)."""
+        lam = self.tension(y)
+        return bool(lam.size) and bool(np.all(lam <= 0))
 
     def compression(self, y) -> str:
         """Why a state is unphysical for a tension-only braid (empty if it is not)."""
@@ -216,7 +299,8 @@ class HalfMuscle:
         (:func:`mkm.fem.thickwall.mid_section_kinematics`): uniform axial stretch ``1 - eps``,
         ``r^2 = k + R^2 / (1 - eps)``, at the thick-wall threshold pressure. Towards the clamped
         cap the radial displacement is faded out over half a diameter (the end zone); the wall
-        pressure and braid tension start at rest, Newton finds them with the rest.
+        pressure starts at rest and the braid tension at :meth:`taut_tension` of that pressure,
+        Newton finds them with the rest.
         """
         eps = -U_mm / self.H
         D0, t0 = 2.0 * self.Ri, self.Ro - self.Ri
@@ -231,7 +315,22 @@ class HalfMuscle:
         fade = -np.expm1(-(self.H - Zr) / self.Ri)
         y[self.red[self._free_r]] = (np.sqrt(k + Rr**2 / lz) - Rr) * fade
         y[self.red[self._free_z]] = U_mm * Z[self._free_z] / self.H
+        y[self.tension_slice] = self.taut_tension(float(threshold_bar) * BAR_TO_MPA)
         return np.append(y[:-1], float(threshold_bar) * BAR_TO_MPA)
+
+    def taut_tension(self, pressure_MPa: float) -> float:
+        """Braid tension [N/mm] of the undeformed muscle at ``pressure_MPa``: the braid's hoop
+        force ``lambda dg/dl_t`` carries ``P R_o`` (exact at eps = 0).
+
+        A start for the free muscle's tension-only braid: from a start whose tension is zero
+        every fibre that the start shortens reads as slack, and the free problem (pressure
+        unknown) has a second solution with a slack braid at a negative pressure, a tube
+        sucked shorter, where Newton then goes. A taut start keeps it on the inflated branch.
+        """
+        if self.braid is None:
+            return 0.0
+        _, dg, _ = self._constraint(np.zeros(3), self.theta0_deg, self.Ro)
+        return pressure_MPa / dg[0]  # dg/du_r = (dg/dl_t) / R_o
 
     def free_path(self, U_mm: float):
         """Free shortening of the muscle (no force) to cap displacement ``U_mm`` < 0.
@@ -239,10 +338,12 @@ class HalfMuscle:
         The cap is put at ``U_mm`` with the pressure as unknown (the cap equation says the
         reaction is zero). First one Newton solve from the thick-wall start
         (:meth:`thick_wall_start`: 5-6 iterations on every mesh); where it fails (near the
-        braid lock) the path is followed from rest by cap displacement, with up to
-        :data:`FREE_PATH_CUTBACKS` halvings (the small cap elements of a fine mesh need
-        short steps near the lock). Returns the state, the pressure [MPa] and the report
-        (iterations of both attempts).
+        braid lock) or lands off the inflated branch (a pressure <= 0 or a braid slack
+        everywhere: full Newton from a far start can jump there) the path is followed by cap
+        displacement from the thick-wall solution at a fifth of the shortening (or from rest
+        where there is none), with up to :data:`FREE_PATH_CUTBACKS` halvings (the small cap
+        elements of a fine mesh need short steps near the lock). Returns the state, the
+        pressure [MPa] and the report (iterations of all attempts).
         """
         def free(x, U):
             r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])
@@ -251,21 +352,38 @@ class HalfMuscle:
         def check(x, U):
             return self.inverted(np.append(x[:-1], U))
 
-        spent = 0
-        start = self.thick_wall_start(U_mm)
-        if start is not None:
-            x, report = newton(lambda x: free(x, U_mm), start, check=lambda x: check(x, U_mm),
+        def from_thick_wall(U):
+            start = self.thick_wall_start(U)
+            if start is None:
+                return None, None
+            x, report = newton(lambda x: free(x, U), start, check=lambda x: check(x, U),
                                **self._newton_options())
-            if report.converged:
-                return np.append(x[:-1], U_mm), float(x[-1]), report
-            spent = report.iterations
-        y = self.rest_state()
-        [(x, report)] = load_path(free, np.append(y[:-1], 0.0), 0.0, [U_mm], check=check,
+            inflated = x[-1] > 0 and not self.slack_everywhere(np.append(x[:-1], U))
+            return (x if report.converged and inflated else None), report
+
+        x, report = from_thick_wall(U_mm)
+        if x is not None:
+            return np.append(x[:-1], U_mm), float(x[-1]), report
+        spent = 0 if report is None else report.iterations
+        # a start on the inflated branch: from rest (no tension) the first step's fibres,
+        # shortened by the cap alone, read as slack and Newton may take the sucked branch
+        U_start = U_mm / 5
+        x0, first = from_thick_wall(U_start)
+        spent += 0 if first is None else first.iterations
+        if x0 is None:
+            U_start, x0 = 0.0, np.append(self.rest_state()[:-1], 0.0)
+        [(x, report)] = load_path(free, x0, U_start, [U_mm], check=check,
                                   max_cutbacks=FREE_PATH_CUTBACKS,
                                   label=lambda U: f"cap displacement {U:.3g} mm",
                                   **self._newton_options())
         report.iterations += spent
         if x is None:
+            if self.thick_wall_start(U_mm) is None:
+                # the closed form's mid-section is past the lock, and the muscle's narrow ends
+                # make its mid-section shorten more than eps: the muscle is past it too
+                report.reason = (f"the braid passes its locking angle before eps={-U_mm / self.H:g}"
+                                 f" (the thick-wall mid-section locks first; the path "
+                                 f"stopped with: {report.reason})")
             return None, np.nan, report
         return np.append(x[:-1], U_mm), float(x[-1]), report
 
@@ -392,9 +510,7 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
     if report is not None:
         out["iterations"][below], out["residual"][below] = report.iterations, report.residual
         out["cutbacks"][below] = report.cutbacks
-    # the threshold state may have a slack braid right at the clamped cap (a small negative
-    # tension at the corner node, the same on every mesh): it touches P* only, not the forces
-    # above P*, whose own states are checked (an elastic equilibrium is path-independent)
+    # the threshold state's braid is often slack at the clamped cap's corner (zero tension)
     out["min_tension_N_per_mm"][below] = half.tension(y).min()
 
     # phase 2: cap held at U*, pressure ramped from P* through the levels above it

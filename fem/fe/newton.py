@@ -35,16 +35,17 @@ class OrderedLU:
 
     Newton's tangents share their pattern; SuperLU's default column ordering (COLAMD), found
     afresh at every factorisation, costs as much as the numerical factorisation of the FE
-    tangents. Here the reverse Cuthill-McKee ordering of the pattern (symmetrised) is found at
-    the first matrix of a pattern and reused, and SuperLU factorises the symmetrically permuted
-    matrix in its natural column order, in its symmetric mode (a diagonal pivot is taken while
-    it is at least a tenth of the column's largest: the tangent of an energy is symmetric, and
-    this keeps the band). The permuted matrix is gathered from the matrix's entries by one
-    precomputed index, in whatever sparse format it comes, so no slicing or format conversion
-    is repeated either. ``leading=m`` factorises the leading ``m x m`` block only (the FE
-    tangent without the held cap's row and column). A matrix of another pattern gets its own
-    ordering; a pattern with a dense column (the FE model's free path, the pressure unknown)
-    fills in badly under this ordering and is better left to ``splu``. Call it like ``splu``:
+    tangents. Here the reverse Cuthill-McKee ordering of the pattern (symmetrised, dense rows
+    last: :func:`_banded_order`) is found at the first matrix of a pattern and reused, and
+    SuperLU factorises the symmetrically permuted matrix in its natural column order, in its
+    symmetric mode (a diagonal pivot is taken while it is at least a tenth of the column's
+    largest: the tangent of an energy is symmetric, and this keeps the band). The permuted
+    matrix is gathered from the matrix's entries by one precomputed index, in whatever sparse
+    format it comes, so no slicing or format conversion is repeated either. ``leading=m``
+    factorises the leading ``m x m`` block only (the FE tangent without the held cap's row and
+    column). A matrix of another pattern gets its own ordering. The FE model's free path (a
+    pressure unknown beside the cap's equation: not symmetric) is left to ``splu``. Call it
+    like ``splu``:
     ``OrderedLU()(A).solve(b)``.
     """
 
@@ -76,12 +77,35 @@ class OrderedLU:
                                shape=A.shape).tocsc()
         if self.leading is not None:
             numbered = numbered[:self.leading, :self.leading]
-        self._perm = reverse_cuthill_mckee(numbered.tocsr(), symmetric_mode=False)
+        self._perm = _banded_order(numbered.tocsr())
         self._inverse = np.argsort(self._perm)
         numbered = numbered[self._perm][:, self._perm].tocsc()
         numbered.sort_indices()
         self._source = numbered.data.astype(np.intp) - 1
         self._p_indices, self._p_indptr = numbered.indices, numbered.indptr
+
+
+#: A row coupled to more than this many times the median row's unknowns is dense (a mesh node
+#: couples to its neighbours only: a P2/P1 node's row length varies by less than 2x)
+DENSE_ROW_FACTOR = 4.0
+
+
+def _banded_order(A) -> np.ndarray:
+    """Reverse Cuthill-McKee order of the symmetrised pattern of ``A`` with its dense rows last.
+
+    A dense row and column (an unknown coupled to a whole boundary: the sliding sleeve's one
+    tension) would put all its neighbours into one level of RCM and widen the band to the
+    whole boundary; numbered last, it only adds its own row and column to the factors.
+    """
+    pattern = (A != 0) + (A != 0).T  # symmetrised
+    degree = np.diff(pattern.tocsr().indptr)
+    dense = degree > DENSE_ROW_FACTOR * np.median(degree)
+    if not dense.any():
+        return reverse_cuthill_mckee(pattern.tocsr(), symmetric_mode=True)
+    sparse_rows = np.flatnonzero(~dense)
+    inner = pattern.tocsr()[sparse_rows][:, sparse_rows]
+    return np.concatenate([sparse_rows[reverse_cuthill_mckee(inner, symmetric_mode=True)],
+                           np.flatnonzero(dense)])
 
 
 class _PermutedLU:

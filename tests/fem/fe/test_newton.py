@@ -121,3 +121,22 @@ def test_accept_stops_newton_early_and_only_when_asked():
     # the estimated next step is the error left, to second order
     assert abs(abs(x[0] - strict[0]) - steps[-1]) < 0.01 * steps[-1]
     assert steps[-1] < 1e-3 <= min(steps[:-1])
+
+
+def test_ordered_lu_numbers_a_dense_row_last():
+    # The sliding sleeve's single tension couples to every unknown of the outer surface: one
+    # dense row and column. Numbered last, it adds at most its own row and column to the
+    # factors (2 n entries); inside the RCM band it would widen the band to the whole boundary.
+    from mkm.fem.fe.newton import OrderedLU
+
+    A = _laplacian_saddle(400, 6)
+    n = A.shape[0]
+    coupled = np.arange(0, n, 3)  # a third of the unknowns, spread over the band
+    dense = sp.csc_matrix((np.ones(coupled.size), (coupled, np.zeros(coupled.size, int))),
+                          shape=(n, 1))
+    B = sp.bmat([[A, dense], [dense.T, None]]).tocsc()
+    b = np.random.default_rng(7).standard_normal(n + 1)
+    lu_sparse, lu_dense = OrderedLU()(A), OrderedLU()(B)
+    np.testing.assert_allclose(B @ lu_dense.solve(b), b, atol=1e-9)
+    fill_sparse = lu_sparse._lu.L.nnz + lu_sparse._lu.U.nnz
+    assert lu_dense._lu.L.nnz + lu_dense._lu.U.nnz <= fill_sparse + 2 * (n + 1)
