@@ -1,5 +1,5 @@
 """The MKM dataset: forces of a model over a grid of muscles (``grid``), built resumably on
-local workers or a Dask cluster (``build``)."""
+local workers or a Dask cluster (``build``, through the FE batch runner :mod:`mkm.fem.batch`)."""
 
 from mkm.fem.dataset.build import (
     DatasetRun,

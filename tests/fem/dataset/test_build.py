@@ -10,6 +10,7 @@ import pytest
 
 from mkm.cli import main
 from mkm.fem.calibration import calibrated
+from mkm.fem import batch
 from mkm.fem.dataset import build as dataset
 from mkm.fem.dataset.build import Job, build_dataset, model_version, run_job
 from mkm.fem.dataset.grid import parse_grid
@@ -78,7 +79,7 @@ def test_serial_local_parallel_and_cluster_give_identical_rows(tmp_path):
 
 
 def test_resume_after_interruption_computes_only_missing_jobs(tmp_path, monkeypatch):
-    real_run_job = dataset.run_job
+    real_run_job = batch.run_job
     calls = []
 
     def interrupted_after_two(job):
@@ -87,7 +88,7 @@ def test_resume_after_interruption_computes_only_missing_jobs(tmp_path, monkeypa
         calls.append(job)
         return real_run_job(job)
 
-    monkeypatch.setattr(dataset, "run_job", interrupted_after_two)
+    monkeypatch.setattr(batch, "run_job", interrupted_after_two)
     with pytest.raises(KeyboardInterrupt):
         tiny(out=tmp_path / "d.csv", workers=1, cache_dir=tmp_path / "cache")
     cached = list((tmp_path / "cache").iterdir())
@@ -95,7 +96,7 @@ def test_resume_after_interruption_computes_only_missing_jobs(tmp_path, monkeypa
     assert not (tmp_path / "d.csv").exists()
 
     calls.clear()
-    monkeypatch.setattr(dataset, "run_job", lambda job: calls.append(job) or real_run_job(job))
+    monkeypatch.setattr(batch, "run_job", lambda job: calls.append(job) or real_run_job(job))
     resumed = tiny(out=tmp_path / "d.csv", workers=1, cache_dir=tmp_path / "cache")
     assert (resumed.jobs_computed, resumed.jobs_cached, len(calls)) == (2, 2, 2)
     fresh = tiny(out=None, workers=1, cache_dir=tmp_path / "fresh")
