@@ -17,7 +17,7 @@ study's references, design verification) makes jobs and hands them to :func:`run
   one per task), and never fewer than :data:`CHUNKS_PER_WORKER` chunks per worker, so the last
   ones balance;
 - writes each result to the cache on the client as it arrives (workers need no shared file
-  system), and shows one progress bar on stderr.
+  system), and shows one progress bar on stderr when it is a terminal.
 
 Each job is computed from its inputs alone (a fresh model solve; what a worker keeps between
 jobs is the imported code and the model objects, which hold parameters only), so the numbers are
@@ -391,8 +391,10 @@ def _run(runner: Runner, jobs, cache_dir, progress, desc):
     missing = list({key: job for key, job in zip(keys, jobs, strict=True)
                     if key not in results}.items())  # a job listed twice is computed once
     n_cached = len(set(keys)) - len(missing)
-    bar = tqdm(total=len(set(keys)), initial=n_cached, unit="job", desc=desc,
-               disable=not progress, file=sys.stderr)
+    # shown on a terminal only: logs and pipes stay clean (as mkm.progress does)
+    show = progress and hasattr(sys.stderr, "isatty") and sys.stderr.isatty()
+    bar = tqdm(total=len(set(keys)), initial=n_cached, unit="job", desc=desc, disable=not show,
+               file=sys.stderr, dynamic_ncols=True)
     failures: list[str] = []
 
     def finished(key: str, job: Job, result: dict) -> None:

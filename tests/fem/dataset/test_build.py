@@ -9,8 +9,8 @@ import pandas as pd
 import pytest
 
 from mkm.cli import main
-from mkm.fem.calibration import calibrated
 from mkm.fem import batch
+from mkm.fem.calibration import calibrated
 from mkm.fem.dataset import build as dataset
 from mkm.fem.dataset.build import Job, build_dataset, model_version, run_job
 from mkm.fem.dataset.grid import parse_grid
