@@ -40,12 +40,14 @@ import json
 import os
 from functools import cache
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
-from scipy.optimize import minimize_scalar
 
 from mkm.fem.records import file_sha256, provenance, source_version, write_atomic
+
+if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
+    import pandas as pd
 
 CALIBRATION_FILE = Path(__file__).with_name("calibration.json")
 THETA0_BOUNDS_DEG = (15.0, 50.0)  # practical braids are 20-30 deg; 54.7 deg is the lock angle
@@ -145,6 +147,8 @@ class CalibratedTheta0:
 
 def read_reference(path) -> pd.DataFrame:
     """A reference sweep from a CSV with :data:`REFERENCE_COLUMNS` (see :func:`check_reference`)."""
+    import pandas as pd
+
     try:
         frame = pd.read_csv(path, comment="#")
     except OSError as exc:
@@ -271,6 +275,8 @@ def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
         residuals = [(s - ref[1]) / ref[1] for (s, _), ref in
                      zip(model_lines(pred), ref_lines, strict=True)]
         return 1e12 if not np.all(np.isfinite(residuals)) else float(np.sum(np.square(residuals)))
+
+    from scipy.optimize import minimize_scalar
 
     res = minimize_scalar(objective, bounds=bounds, method="bounded", options={"xatol": xatol})
     theta0 = round(float(res.x), 3)

@@ -14,12 +14,14 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
-import pandas as pd
 
 from mkm.fem.muscle import LIMITS, OPEN_ABOVE, check_wall, limit_text
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
 MAX_PRESSURE_BAR = LIMITS["pressure_bar"][1]
@@ -71,6 +73,8 @@ class Prediction:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per point: the inputs, ``force_N``, ``valid``, ``converged`` and the extras."""
+        import pandas as pd  # here, not at import: the command line starts without pandas
+
         columns = {name: np.ravel(getattr(self, name)) for name in INPUTS}
         columns["force_N"] = np.ravel(self.force_N)
         columns["valid"] = np.ravel(self.valid)

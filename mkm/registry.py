@@ -20,7 +20,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from mkm.auto import AutoModel
 from mkm.fem import ladder
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import C01, C10, L0, THETA0, Entry, Parameter
@@ -44,6 +43,8 @@ def _surrogate(kind: str | None = None, path: str | None = None,
 
 
 def _auto(**params) -> ForceModel:
+    from mkm.auto import AutoModel  # here: auto reads its table with pandas
+
     return AutoModel(build=build_spec, **params)
 
 

@@ -13,7 +13,6 @@ from __future__ import annotations
 import json
 import sys
 
-from mkm.bench.backend import BenchError
 from mkm.cli.common import argtype, has_display
 from mkm.fem.ranges import parse_fraction, parse_number, parse_pressures
 from mkm.paths import default_out
@@ -134,7 +133,7 @@ def register(subparsers) -> None:
     rep.set_defaults(func=_reprocess)
 
 
-def _failed(exc: BenchError) -> int:
+def _failed(exc: Exception) -> int:  # a mkm.bench.backend.BenchError
     print(f"mkm: error: {exc}", file=sys.stderr)
     return EXIT_FAILED
 
@@ -163,6 +162,7 @@ def _acquire(args) -> int:
 
 
 def _tare(args) -> int:
+    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.config import load_config
     from mkm.bench.procedures import tare
 
@@ -188,6 +188,7 @@ def loadcell_toml(fit: dict, config=None) -> str:
 
 
 def _calibrate_loadcell(args) -> int:
+    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.config import load_config
     from mkm.bench.procedures import calibrate_loadcell, fit_loadcell
 
@@ -210,6 +211,7 @@ def _calibrate_loadcell(args) -> int:
 
 
 def _check(args) -> int:
+    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.config import load_config
     from mkm.bench.procedures import check
 
@@ -226,6 +228,7 @@ def _check(args) -> int:
 
 
 def _vent(args) -> int:
+    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.config import load_config
     from mkm.bench.procedures import vent
 

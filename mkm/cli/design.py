@@ -12,7 +12,7 @@ EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.
 
 
 def register(subparsers) -> None:
-    from mkm.design import OBJECTIVES, parse_bounds, parse_requirement
+    from mkm.design.spec import OBJECTIVES, parse_bounds, parse_requirement
 
     p = subparsers.add_parser(
         "design", help="design a muscle for required forces: surrogate search of the design "

@@ -5,8 +5,6 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-import pandas as pd
-
 from mkm.cli.common import (
     add_calibration_argument,
     add_geometry_arguments,
@@ -198,6 +196,8 @@ def _load_reference(path):
     if not path.is_dir():
         sha = file_sha256(path) if path.is_file() else None
         return read_reference(path), path.name, sha
+    import pandas as pd
+
     from mkm.bench.storage import load_run
 
     run = load_run(path)
