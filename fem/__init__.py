@@ -13,10 +13,10 @@ Models are imported on first use, so ``import fem`` stays cheap (the FE model lo
 
 from importlib import import_module
 
-from mkm.fem.interface import Domain, ForceModel, Prediction, validate_inputs
-from mkm.fem.ladder import LADDER, make_model, model_names
-
 _LAZY = {
+    "Domain": "mkm.fem.interface", "ForceModel": "mkm.fem.interface",
+    "Prediction": "mkm.fem.interface", "validate_inputs": "mkm.fem.interface",
+    "LADDER": "mkm.fem.ladder", "make_model": "mkm.fem.ladder", "model_names": "mkm.fem.ladder",
     "Eq2": "mkm.fem.eq2", "chou_hannaford": "mkm.fem.eq2", "chou_hannaford_eps_max": "mkm.fem.eq2",
     "LOCKING_ANGLE_DEG": "mkm.fem.eq2",
     "ThickWall": "mkm.fem.thickwall", "klute_hannaford": "mkm.fem.thickwall",
@@ -26,8 +26,7 @@ _LAZY = {
     "equation7_err_pct": "mkm.fem.paper", "TEST_MUSCLES": "mkm.fem.paper",
 }
 
-__all__ = ["LADDER", "Domain", "ForceModel", "Prediction", "make_model", "model_names",
-           "validate_inputs", *_LAZY]
+__all__ = list(_LAZY)
 
 
 def __getattr__(name):

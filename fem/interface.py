@@ -71,17 +71,22 @@ class Prediction:
     seconds: float
     extras: dict[str, np.ndarray] = field(default_factory=dict)
 
-    def to_frame(self) -> pd.DataFrame:
-        """One row per point: the inputs, ``force_N``, ``valid``, ``converged`` and the extras."""
-        import pandas as pd  # here, not at import: the command line starts without pandas
-
+    def columns(self) -> dict[str, np.ndarray]:
+        """One array per column, one value per point: the inputs, ``force_N``, ``valid``,
+        ``converged`` and the extras."""
         columns = {name: np.ravel(getattr(self, name)) for name in INPUTS}
         columns["force_N"] = np.ravel(self.force_N)
         columns["valid"] = np.ravel(self.valid)
         columns["converged"] = np.ravel(self.converged)
         for key, value in self.extras.items():
             columns[key] = np.ravel(np.broadcast_to(value, self.force_N.shape))
-        return pd.DataFrame(columns)
+        return columns
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per point (:meth:`columns`)."""
+        import pandas as pd  # here, not at import: the command line starts without pandas
+
+        return pd.DataFrame(self.columns())
 
 
 def validate_inputs(pressure_bar, D0_mm, t0_mm, eps) -> tuple[np.ndarray, ...]:

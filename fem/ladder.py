@@ -16,9 +16,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from importlib import import_module
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from mkm.fem.interface import ForceModel
+if TYPE_CHECKING:  # annotations only: the registry loads without numpy
+    from mkm.fem.interface import ForceModel
 
 
 @dataclass(frozen=True)

@@ -8,8 +8,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 
 @dataclass(frozen=True)
 class MooneyRivlin:
@@ -21,6 +19,8 @@ class MooneyRivlin:
 
     def energy(self, l1, l2, l3=None):
         """Strain energy density [MPa = mJ/mm^3] from principal stretches (``l3 = 1/(l1 l2)``)."""
+        import numpy as np  # here: the command line reads MATERIALS without numpy
+
         l1 = np.asarray(l1, dtype=float)
         l2 = np.asarray(l2, dtype=float)
         l3 = 1.0 / (l1 * l2) if l3 is None else np.asarray(l3, dtype=float)

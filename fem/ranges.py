@@ -5,7 +5,11 @@ Each raises ``ValueError`` with a one-line message naming the bad text and what 
 
 from __future__ import annotations
 
-import numpy as np
+import math
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # numpy is imported where arrays are made: `mkm --help` starts without it
+    import numpy as np
 
 #: Most values a range may expand to: a staircase or a grid axis of more is a typo, not a plan
 #: (``0:1e12:1`` would allocate terabytes).
@@ -17,7 +21,7 @@ def parse_number(text: str, name: str) -> float:
         value = float(text)
     except (TypeError, ValueError):
         raise ValueError(f"{name}={text!r} is not a number") from None
-    if not np.isfinite(value):
+    if not math.isfinite(value):
         raise ValueError(f"{name}={text!r} is not a finite number")
     return value
 
@@ -33,6 +37,8 @@ def parse_range(text: str, name: str) -> np.ndarray:
         raise ValueError(f"{name} {text!r}: step {step:g} must be > 0")
     if stop < start:
         raise ValueError(f"{name} {text!r}: stop {stop:g} is below start {start:g}")
+    import numpy as np
+
     count = np.floor((stop - start) / step + 1e-9) + 1
     if count > MAX_RANGE_VALUES:
         raise ValueError(f"{name} {text!r} expands to {count:.3g} values: expected at most "
@@ -42,6 +48,8 @@ def parse_range(text: str, name: str) -> np.ndarray:
 
 def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
     """``"start:stop:step"`` or a comma list, in bar; gauge pressures >= 0."""
+    import numpy as np
+
     text = text.strip()
     if ":" in text:
         values = parse_range(text, name)

@@ -25,10 +25,7 @@ import json
 import os
 import platform
 import sys
-import tempfile
 from functools import cache
-from importlib.metadata import PackageNotFoundError, version
-from importlib.resources import files
 from importlib.util import find_spec, resolve_name
 from pathlib import Path
 from typing import Any
@@ -38,7 +35,13 @@ APP_NAME = "mkm-bench"  # the distribution's name: the user folders of the toolk
 RECORDED_LIBRARIES = ("mkm-bench", "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas")
 
 
+# importlib.metadata, importlib.resources and tempfile are imported where used: the command line
+# imports this module and starts in well under a second only without them
+
+
 def package_version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
     try:
         return version("mkm-bench")
     except PackageNotFoundError:  # run from a source tree that was never installed
@@ -47,6 +50,8 @@ def package_version() -> str:
 
 def provenance() -> dict[str, Any]:
     """Library versions, command line, machine and UTC date, recorded with every generated file."""
+    from importlib.metadata import PackageNotFoundError, version
+
     info = {"date_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
             "command": " ".join(sys.argv), "machine": platform.machine(),
             "versions": {"python": platform.python_version()}}
@@ -75,6 +80,8 @@ def user_cache(*parts: str) -> Path:
 def package_file(package: str, *parts: str) -> Path:
     """Path of a data file shipped inside ``package`` (``package_file("mkm.fem", "data",
     "x.csv")``)."""
+    from importlib.resources import files
+
     return Path(str(files(package).joinpath(*parts)))
 
 
@@ -86,6 +93,8 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
+    import tempfile
+
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     umask = os.umask(0)
     os.umask(umask)
@@ -189,8 +198,24 @@ def prediction_metadata(prediction) -> dict[str, Any]:
 def write_prediction_csv(prediction, buf) -> None:
     """The prediction as a plain CSV (one row per point) into the text stream ``buf``; its
     metadata (:func:`prediction_metadata`) goes to a JSON sidecar when written to a file
-    (:func:`write_csv_with_sidecar`)."""
-    prediction.to_frame().to_csv(buf, index=False, float_format="%.6g", lineterminator="\n")
+    (:func:`write_csv_with_sidecar`).
+
+    Written with the ``csv`` module, not pandas (a closed-form solve answers at once): the text
+    is what ``to_frame().to_csv(index=False, float_format="%.6g")`` writes, empty cells for NaN.
+    """
+    import csv
+
+    columns = prediction.columns()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(columns)
+    cells = [[_csv_cell(v) for v in values.tolist()] for values in columns.values()]
+    writer.writerows(zip(*cells, strict=True))
+
+
+def _csv_cell(value) -> str:
+    if isinstance(value, float):
+        return "" if value != value else f"{value:.6g}"  # NaN: an empty cell
+    return "" if value is None else str(value)
 
 
 def read_prediction_header(path) -> dict[str, Any]:

@@ -18,11 +18,13 @@ with ``=`` and no ``:`` is one more parameter of the spec before it.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from mkm.fem import ladder
-from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import C01, C10, L0, THETA0, Entry, Parameter
+
+if TYPE_CHECKING:  # annotations only: `mkm models` loads no model code
+    from mkm.fem.interface import ForceModel
 
 
 def _surrogate(kind: str | None = None, path: str | None = None,

@@ -13,8 +13,20 @@ import re
 import sys
 import warnings
 
-from mkm import __version__
 from mkm.cli import bench, demo, design, fem, models, surrogate, validation
+
+
+class _Version(argparse.Action):
+    """``--version``: the installed version, read only when asked (it costs a metadata scan)."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, help="show the version and exit",
+                         **kwargs)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from mkm import __version__
+
+        parser.exit(0, f"mkm {__version__}\n")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -36,7 +48,7 @@ def _note(message, category, filename, lineno, file=None, line=None) -> None:
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="mkm", description="McKibben muscle bench toolkit: acquire forces, "
                      "predict them with physics and surrogate models, validate.")
-    parser.add_argument("--version", action="version", version=f"mkm {__version__}")
+    parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
                                 parser_class=_Parser)
     for group in (demo, bench, fem, surrogate, validation, design, models):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import sys
 from pathlib import Path
 
@@ -14,9 +15,7 @@ from mkm.cli.common import (
     model_from_args,
     with_calibration,
 )
-from mkm.fem.calibration import TARGETS
 from mkm.fem.ladder import model_names
-from mkm.fem.paper import CASE_I_CSV
 from mkm.fem.ranges import parse_fraction, parse_number
 from mkm.paths import default_cache, default_out
 
@@ -54,10 +53,10 @@ def register(subparsers) -> None:
         epilog="example: mkm fem calibrate --model axisym --reference RUN_DIR --out lab.json; "
         "then mkm fem solve --model axisym --calibration lab.json --D0 40 --t0 3 --eps 0.1")
     add_model_arguments(cal, theta0=False)
-    cal.add_argument("--reference", default=str(CASE_I_CSV), metavar="CSV|RUN_DIR",
+    cal.add_argument("--reference", metavar="CSV|RUN_DIR",
                      help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (optional L0_mm, "
                      "direction) or a run folder of mkm acquire (default: the paper's muscle I)")
-    cal.add_argument("--target", choices=TARGETS,
+    cal.add_argument("--target", type=_target, metavar="TARGET",
                      help="slope: dF/dP above the threshold (default for models with a "
                      "threshold pressure); force: least squares on every force (default for "
                      "eq2, where both coincide); slope+threshold: slope, and report the "
@@ -123,6 +122,17 @@ def register(subparsers) -> None:
     conv.set_defaults(func=with_calibration(_convergence))
 
 
+def _target(text: str) -> str:
+    """``--target``: one of the calibration's targets (read when given: the calibration module
+    loads numpy, which `mkm --help` does without)."""
+    from mkm.fem.calibration import TARGETS
+
+    if text not in TARGETS:
+        raise argparse.ArgumentTypeError(f"{text!r} is invalid: expected one of "
+                                         f"{', '.join(TARGETS)}")
+    return text
+
+
 def _solve(args) -> int:
     model = model_from_args(args)
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
@@ -143,7 +153,9 @@ def _calibrate(args) -> int:
         store_calibration,
     )
     from mkm.fem.ladder import LADDER
+    from mkm.fem.paper import CASE_I_CSV
 
+    args.reference = args.reference or str(CASE_I_CSV)
     reference, name, sha256 = _load_reference(args.reference)
     overrides = {}
     if "L0_mm" in reference and getattr(args, "L0", None) is None:

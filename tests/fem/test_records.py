@@ -44,3 +44,24 @@ def test_provenance_names_versions_and_command():
     info = records.provenance()
     assert {"date_utc", "command", "versions", "machine"} <= set(info)
     assert info["versions"]["numpy"] != "not installed"
+
+
+@pytest.mark.parametrize("model, params, muscle", [
+    ("eq2", {}, (35.0, 2.5, 0.05)),
+    # past the braid lock: NaN forces and failure strings in the extras
+    ("axisym", {"mesh": "coarse", "theta0_deg": 30.0}, (30.0, 2.0, 0.35))])
+def test_prediction_csv_is_what_pandas_writes(model, params, muscle):
+    import io
+    import warnings
+
+    import numpy as np
+
+    from mkm.fem.ladder import make_model
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        pred = make_model(model, **params).predict(np.arange(0.0, 3.01, 0.25), *muscle)
+    buf = io.StringIO()
+    records.write_prediction_csv(pred, buf)
+    assert buf.getvalue() == pred.to_frame().to_csv(index=False, float_format="%.6g",
+                                                    lineterminator="\n")

@@ -1,6 +1,7 @@
 """The `mkm` command line: parsing of pressures and eps, one-line errors with exit status 2."""
 
 import io
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -264,3 +265,22 @@ def test_a_library_warning_reaches_the_user_as_one_note(mkm_run):
         unregister("warns")
     assert code == 0 and out.startswith("pressure_bar,")
     assert err == "mkm: note: 2 of 2 points lie outside the training domain\n"
+
+
+HEAVY = ("numpy", "pandas", "scipy", "matplotlib", "sklearn", "skfem", "mkm.fem.fe", "dask")
+
+
+@pytest.mark.parametrize("argv, allowed", [
+    (["--help"], ()), (["models"], ()),
+    # a closed form needs numpy, and nothing of the data, plotting or FE stacks
+    (["fem", "solve", "--model", "eq2", "--D0", "35", "--t0", "2.5", "--eps", "0.05"],
+     ("numpy",))])
+def test_quick_commands_start_without_the_heavy_libraries(argv, allowed):
+    # a fresh interpreter: what this command imports, not what earlier tests did
+    code = ("import json, sys\nfrom mkm.cli import main\n"
+            "try:\n    main(sys.argv[1:])\nexcept SystemExit:\n    pass\n"
+            f"print(json.dumps([m for m in {HEAVY!r} if m in sys.modules]), file=sys.stderr)")
+    done = subprocess.run([sys.executable, "-c", code, *argv], capture_output=True, text=True,
+                          check=True)
+    loaded = json.loads(done.stderr.strip().splitlines()[-1])
+    assert set(loaded) <= set(allowed), f"mkm {' '.join(argv)} imported {loaded}"
