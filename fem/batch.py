@@ -452,7 +452,8 @@ def _run_on_dask(client, missing, finished) -> int:
         return future, part
 
     by_future = dict(submit([pair]) for pair in probes)
-    queue = as_completed(list(by_future))
+    # this client's loop: another client of the process may be the default one
+    queue = as_completed(list(by_future), loop=client.loop)
     chunk = 1
     for future in queue:
         part = by_future.pop(future)
