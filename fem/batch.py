@@ -77,6 +77,10 @@ from mkm.fem.records import provenance, source_version, user_cache, write_atomic
 TASK_SECONDS = 0.5
 #: At least this many chunks per worker: the last chunks are short enough to balance the load.
 CHUNKS_PER_WORKER = 4
+#: Without ``workers`` given, a batch whose first job says it would take less than this in-process
+#: [s] stays in-process: a local cluster's start-up and its workers' imports (seconds) would eat
+#: the gain, and a handful of sweeps answers at once.
+AUTO_CLUSTER_SECONDS = 20.0
 #: How long a batch waits for a cluster without workers before giving up [s].
 WORKER_WAIT_SECONDS = 60.0
 
@@ -261,6 +265,8 @@ class Runner:
     def __init__(self, workers: int | None = None, scheduler: str | None = None):
         check_where(workers, scheduler)
         self.scheduler = scheduler
+        # no choice made: the CPU count, for batches long enough to pay for a cluster
+        self.auto = workers is None and scheduler is None
         self.workers = workers if workers is not None or scheduler else (os.cpu_count() or 1)
         self._cluster = None
         self._client = None
@@ -284,8 +290,15 @@ class Runner:
             self._cluster.close()
             self._cluster = None
 
-    def in_process(self, n_jobs: int) -> bool:
-        return self.scheduler is None and min(self.workers, n_jobs) == 1
+    def in_process(self, n_jobs: int, job_seconds: float | None = None) -> bool:
+        """Whether ``n_jobs`` more jobs run in this process (``job_seconds``: one job's time,
+        measured in-process, for the default choice)."""
+        if self.scheduler is not None or self._client is not None:
+            return False
+        if min(self.workers, n_jobs) == 1:
+            return True
+        return (self.auto and job_seconds is not None
+                and job_seconds * n_jobs < AUTO_CLUSTER_SECONDS)
 
     def describe(self) -> str:
         if self.scheduler is not None:
@@ -413,14 +426,22 @@ def _run(runner: Runner, jobs, cache_dir, progress, desc):
     with bar:
         if not missing:
             where = "no worker (all cached)"
-        elif runner.in_process(len(missing)):
-            for key, job in missing:
-                finished(key, job, run_chunk((job,))[0])
-            where = runner.describe()
         else:
-            client = runner.client(len(missing))
-            runner.check_versions(client, models[0], model_ver)
-            chunk = _run_on_dask(client, missing, finished)
+            todo = list(missing)
+            if runner.in_process(len(todo)) or runner.auto and runner._client is None:
+                # one job in-process first: its time tells whether the rest is worth a cluster
+                key, job = todo.pop(0)
+                first = run_chunk((job,))[0]
+                finished(key, job, first)
+                seconds = first["rows"]["seconds"][0] if "rows" in first else 0.0
+                if runner.in_process(len(todo), seconds):
+                    for key, job in todo:
+                        finished(key, job, run_chunk((job,))[0])
+                    todo = []
+            if todo:
+                client = runner.client(len(todo))
+                runner.check_versions(client, models[0], model_ver)
+                chunk = _run_on_dask(client, todo, finished)
             where = runner.describe()
     if failures:
         raise RuntimeError(f"{len(failures)} of {len(missing)} jobs failed (the others are "

@@ -10,9 +10,11 @@ invalidates the entry and editing the report does not. Entries are ``.npz`` file
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import io
 import json
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -50,16 +52,112 @@ def cached_predict(model: ForceModel, pressure_bar, D0_mm, t0_mm, eps,
     ``seconds`` of a cached prediction is the wall time measured when it was computed.
     ``cache_dir=None`` disables the cache.
     """
-    inputs = tuple(np.broadcast_arrays(*(np.asarray(v, dtype=float)
-                                         for v in (pressure_bar, D0_mm, t0_mm, eps))))
+    inputs = _inputs(pressure_bar, D0_mm, t0_mm, eps)
     if cache_dir is None:
         return model.predict(*inputs), False
-    path = Path(cache_dir) / f"{model.name}-{cache_key(model, inputs)}.npz"
+    path = _path(model, inputs, cache_dir)
     if path.exists():
         return _load(path), True
     prediction = model.predict(*inputs)
     _store(prediction, path)
     return prediction, False
+
+
+def _inputs(pressure_bar, D0_mm, t0_mm, eps) -> tuple[np.ndarray, ...]:
+    return tuple(np.broadcast_arrays(*(np.asarray(v, dtype=float)
+                                       for v in (pressure_bar, D0_mm, t0_mm, eps))))
+
+
+def _path(model: ForceModel, inputs, cache_dir) -> Path:
+    return Path(cache_dir) / f"{model.name}-{cache_key(model, inputs)}.npz"
+
+
+#: Parameters a batch job (:class:`mkm.fem.batch.Job`) carries: a model with others (the sliding
+#: braid) is solved in-process
+JOB_PARAMETERS = ("theta0_deg", "L0_mm", "mesh", "C10_MPa", "C01_MPa")
+
+
+def predict_many(requests, cache_dir: Path | str | None = DEFAULT_CACHE_DIR, *,
+                 workers: int | None = None, scheduler: str | None = None, runner=None,
+                 progress: bool = False, desc: str = "FE sweeps") -> list[tuple[Prediction, bool]]:
+    """:func:`cached_predict` of every request ``(model, pressure_bar, D0_mm, t0_mm, eps)``, the
+    sweeps of expensive models missing from the cache computed together on the FE batch runner
+    (:func:`mkm.fem.batch.run_jobs`: ``workers`` local processes, the Dask cluster at
+    ``scheduler``, or an open ``runner``; its per-job cache makes an interrupted batch resume).
+
+    A request whose muscle is one point (scalar ``D0_mm``, ``t0_mm``, ``eps``) of an expensive
+    physics model (:attr:`mkm.fem.ladder.Entry.expensive`) whose parameters a job carries goes
+    to the batch; any other is predicted in-process. Returns ``(prediction, hit)`` per request,
+    in order; a batched prediction equals ``model.predict`` to the last bit.
+    """
+    from mkm.fem.batch import run_jobs
+
+    out: list = [None] * len(requests)
+    batch: dict[int, tuple] = {}
+    for i, (model, *values) in enumerate(requests):
+        inputs = _inputs(*values)
+        path = None if cache_dir is None else _path(model, inputs, cache_dir)
+        if path is not None and path.exists():
+            out[i] = _load(path), True
+            continue
+        job = _job(model, inputs)
+        if job is None:
+            out[i] = cached_predict(model, *inputs, cache_dir=cache_dir)
+        else:
+            batch[i] = (job, model, inputs, path)
+    if batch:
+        with contextlib.ExitStack() as stack:
+            # no prediction cache: the jobs' own cache is a temporary folder too
+            jobs_dir = (stack.enter_context(tempfile.TemporaryDirectory(prefix="mkm-jobs-"))
+                        if cache_dir is None else None)
+            frame, _ = run_jobs([job for job, *_ in batch.values()], workers=workers,
+                                scheduler=scheduler, runner=runner, cache_dir=jobs_dir,
+                                progress=progress, desc=desc)
+        start = 0
+        for i, (job, model, inputs, path) in batch.items():
+            rows = frame.iloc[start:start + len(job.pressure_bar)]
+            start += len(job.pressure_bar)
+            prediction = _from_rows(model, inputs, rows)
+            if path is not None:
+                _store(prediction, path)
+            out[i] = prediction, False
+    return out
+
+
+def _job(model: ForceModel, inputs):
+    """The batch job of a sweep, or None when the runner cannot carry it."""
+    from mkm.fem.batch import Job
+    from mkm.fem.ladder import LADDER
+
+    known = LADDER.get(model.name)
+    params = model.params()
+    P, D0, t0, eps = inputs
+    if (known is None or not known.expensive or not set(params) <= set(JOB_PARAMETERS)
+            or P.ndim != 1 or any(np.unique(v).size != 1 for v in (D0, t0, eps))):
+        return None
+    return Job(model.name, params.get("mesh"), float(D0[0]), float(t0[0]), float(eps[0]),
+               params.get("L0_mm"), params.get("theta0_deg"), tuple(float(p) for p in P),
+               params.get("C10_MPa"), params.get("C01_MPa"))
+
+
+def _from_rows(model: ForceModel, inputs, rows) -> Prediction:
+    """The prediction of one job's rows, as ``model.predict`` returns it (extras as floats where
+    the job stored whole numbers: iterations, cutbacks)."""
+    from mkm.fem.batch import COLUMNS
+
+    kept = set(COLUMNS) - {"iterations", "cutbacks"} | {"C10_MPa", "C01_MPa"}
+    extras = {}
+    for name in (c for c in rows.columns if c not in kept):
+        values = rows[name].to_numpy()
+        if name in ("iterations", "cutbacks"):
+            values = rows[name].astype("Float64").to_numpy(dtype=float, na_value=np.nan)
+        extras[name] = values
+    return Prediction(model=model.name, params=model.params(), pressure_bar=inputs[0],
+                      D0_mm=inputs[1], t0_mm=inputs[2], eps=inputs[3],
+                      force_N=rows["force_N"].to_numpy(dtype=float),
+                      valid=rows["valid"].to_numpy(dtype=bool),
+                      converged=rows["converged"].to_numpy(dtype=bool),
+                      seconds=float(rows["seconds"].iloc[0]), extras=extras)
 
 
 def _store(prediction: Prediction, path: Path) -> None:

@@ -38,6 +38,17 @@ def argtype(parse, *args):
     return convert
 
 
+def add_batch_arguments(parser) -> None:
+    """``--workers N`` / ``--scheduler ADDRESS``: where the command's FE batch runs
+    (:class:`mkm.fem.batch.Runner`)."""
+    parser.add_argument("--workers", type=int, metavar="N",
+                        help="local worker processes for the FE solves; 1 runs in-process "
+                        "(default: the CPU count)")
+    parser.add_argument("--scheduler", metavar="ADDRESS",
+                        help="run the FE solves on the Dask cluster at this scheduler, e.g. "
+                        "tcp://HOST:8786 (workers need the same mkm-bench installed)")
+
+
 def add_model_arguments(parser, theta0: bool = True) -> None:
     parser.add_argument("--model", default="eq2", help=f"predictor spec: one of "
                         f"{', '.join(entries())}, with :key=value parameters (see `mkm models`); "

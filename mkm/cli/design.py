@@ -4,7 +4,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from mkm.cli.common import add_calibration_argument, argtype, with_calibration
+from mkm.cli.common import (
+    add_batch_arguments,
+    add_calibration_argument,
+    argtype,
+    with_calibration,
+)
 from mkm.fem.ranges import parse_number
 
 EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
@@ -60,6 +65,7 @@ def register(subparsers) -> None:
                    "is fast (default: the user cache, predictions/)")
     p.add_argument("--no-cache", action="store_true", help="solve every FE sweep; no cache")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
+    add_batch_arguments(p)
     p.set_defaults(func=with_calibration(_design))
 
 
@@ -79,7 +85,8 @@ def _design(args) -> int:
     result = run_design(args.require, constraints, args.objective, args.top, spec=args.spec,
                         mesh=args.mesh, surrogate=args.surrogate,
                         progress=not args.no_progress,
-                        cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR)
+                        cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR,
+                        workers=args.workers, scheduler=args.scheduler)
     write_design(result, Path(args.out or default_out("design")))
     summary_line("design", result.summary())
     print(result.table_text())

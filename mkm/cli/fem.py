@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from mkm.cli.common import (
+    add_batch_arguments,
     add_calibration_argument,
     add_geometry_arguments,
     add_model_arguments,
@@ -88,10 +89,7 @@ def register(subparsers) -> None:
     data.add_argument("--out", default=str(default_out("dataset", "mkm_dataset.csv")),
                       help="CSV to write; provenance goes next to it as .json (default: "
                       "%(default)s; the shipped dataset is replaced only if named here)")
-    data.add_argument("--workers", type=int,
-                      help="local worker processes; 1 runs in-process (default: CPU count)")
-    data.add_argument("--scheduler", metavar="ADDRESS",
-                      help="run on the Dask cluster at this scheduler, e.g. tcp://HOST:8786")
+    add_batch_arguments(data)
     data.add_argument("--cache", default=str(default_cache("dataset")),
                       help="one file per finished job; re-runs compute only what is missing "
                       "(default: %(default)s)")

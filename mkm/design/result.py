@@ -81,12 +81,14 @@ DESIGN_COLUMNS = ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
 
 def run_design(requirements=(), constraints=None, objective=None, top=None, spec=None,
                mesh: str = "medium", surrogate: str = "surrogate",
-               progress: bool = False, cache_dir=None) -> DesignResult:
+               progress: bool = False, cache_dir=None, workers: int | None = None,
+               scheduler: str | None = None) -> DesignResult:
     """Search and verify (:func:`mkm.design_page.write_design` writes the files).
 
     ``spec``: a TOML file (:func:`load_spec`); ``requirements`` are added to its requirements,
     ``constraints`` (a dict) override its constraints, ``objective``/``top`` its own.
-    ``cache_dir``: FE prediction cache (None: solve every sweep).
+    ``cache_dir``: FE prediction cache (None: solve every sweep). ``workers``/``scheduler``:
+    where the FE sweeps run (:func:`mkm.design.verify.verify`).
     """
     base = load_spec(spec) if spec else {"requirements": [], "constraints": {}}
     requirements = list(base["requirements"]) + [
@@ -105,7 +107,8 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     chosen = pick(found.feasible, top, found.constraints)
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
     designs, curves, seconds, fe_models, hits = verify(
-        chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir)
+        chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir,
+        workers, scheduler)
     order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
     designs = designs.sort_values(["meets_all", *order], ascending=[False] + [
         objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",

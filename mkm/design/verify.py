@@ -28,50 +28,56 @@ def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str) -> ForceMo
 
 
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
-           curve_to_bar: float | None = None, progress: bool = False, cache_dir=None):
+           curve_to_bar: float | None = None, progress: bool = False, cache_dir=None,
+           workers: int | None = None, scheduler: str | None = None):
     """FE forces of ``designs`` at every requirement, and their force-pressure curves.
 
     One FE sweep per design and distinct eps, through the requirements' pressures and
     ``0:curve_to_bar:0.25`` bar (the curve also gets the FE threshold pressure, force 0), kept in
-    the prediction cache ``cache_dir`` (:mod:`mkm.prediction_cache`; None: no cache). Adds per
+    the prediction cache ``cache_dir`` (:mod:`mkm.prediction_cache`; None: no cache), the missing
+    ones solved as one batch on ``workers`` local processes or the Dask cluster at ``scheduler``
+    (:func:`mkm.prediction_cache.predict_many`). Adds per
     requirement ``r<k>_fe_N``, ``r<k>_fe_margin_N``,
     ``r<k>_fe_margin_pct``, ``r<k>_threshold_bar``, ``r<k>_meets``; then ``meets_all``,
     ``min_fe_margin_pct``, ``flags`` and ``fe_failure``. Returns the designs, the curves, the wall
     time [s], the FE models by ``(L0, theta0, rubber)`` and how many sweeps came from the cache.
     """
-    from mkm.prediction_cache import cached_predict
-    from mkm.progress import progress_bar
+    from mkm.prediction_cache import predict_many
 
     start = time.perf_counter()
     designs = designs.copy()
     top_P = max([r.pressure_bar for r in requirements] + [curve_to_bar or 0.0])
     grid = np.round(np.arange(0.0, top_P + 1e-9, CURVE_STEP_BAR), 6)
     eps_levels = sorted({r.eps for r in requirements})
+    pressures = {eps: np.union1d(grid, [r.pressure_bar for r in requirements if r.eps == eps])
+                 for eps in eps_levels}
     models: dict = {}
+    requests = []
+    for _, row in designs.iterrows():
+        key = (row["L0_mm"], row["theta0_deg"], row["rubber"])
+        if key not in models:
+            models[key] = fe_model(mesh, *key)
+        requests += [(models[key], pressures[eps], row["D0_mm"], row["t0_mm"], eps)
+                     for eps in eps_levels]
+    solved = iter(predict_many(requests, cache_dir, workers=workers, scheduler=scheduler,
+                               progress=progress, desc="FE verification"))
     curves, per_design, hits = [], [], 0
-    bar = progress_bar(len(designs) * len(eps_levels), "FE verification", progress, "sweep")
-    with bar:
-        for _, row in designs.iterrows():
-            key = (row["L0_mm"], row["theta0_deg"], row["rubber"])
-            if key not in models:
-                models[key] = fe_model(mesh, *key)
-            results = {}
-            for eps in eps_levels:
-                P = np.union1d(grid, [r.pressure_bar for r in requirements if r.eps == eps])
-                pred, hit = cached_predict(models[key], P, row["D0_mm"], row["t0_mm"], eps,
-                                           cache_dir=cache_dir)
-                hits += hit
-                frame = pred.to_frame()
-                results[eps] = frame
-                curve = frame[["eps", "pressure_bar", "force_N", "converged"]]
-                threshold = float(frame["threshold_pressure_bar"].iloc[0])
-                if 0 < threshold < P[-1]:  # the kink where the force leaves zero: no solve
-                    curve = pd.concat([curve, pd.DataFrame({
-                        "eps": [eps], "pressure_bar": [threshold], "force_N": [0.0],
-                        "converged": [True]})], ignore_index=True)
-                curves.append(curve.assign(design=row["rank"]).sort_values("pressure_bar"))
-                bar.update()
-            per_design.append(_judge(row, requirements, results))
+    for _, row in designs.iterrows():
+        results = {}
+        for eps in eps_levels:
+            P = pressures[eps]
+            pred, hit = next(solved)
+            hits += hit
+            frame = pred.to_frame()
+            results[eps] = frame
+            curve = frame[["eps", "pressure_bar", "force_N", "converged"]]
+            threshold = float(frame["threshold_pressure_bar"].iloc[0])
+            if 0 < threshold < P[-1]:  # the kink where the force leaves zero: no solve
+                curve = pd.concat([curve, pd.DataFrame({
+                    "eps": [eps], "pressure_bar": [threshold], "force_N": [0.0],
+                    "converged": [True]})], ignore_index=True)
+            curves.append(curve.assign(design=row["rank"]).sort_values("pressure_bar"))
+        per_design.append(_judge(row, requirements, results))
     designs = pd.concat([designs, pd.DataFrame(per_design)], axis=1)
     curves = pd.concat(curves, ignore_index=True) if curves else pd.DataFrame()
     return designs, curves, time.perf_counter() - start, models, hits

@@ -58,3 +58,27 @@ def test_no_cache_dir_means_no_cache(tmp_path, axisym):
     _, hit = cached_predict(axisym, P, 35.0, 2.5, 0.05, cache_dir=None)
     _, hit_again = cached_predict(axisym, P, 35.0, 2.5, 0.05, cache_dir=None)
     assert not hit and not hit_again
+
+
+def test_predict_many_batches_the_fe_sweeps_and_equals_predict(tmp_path, axisym):
+    from mkm.prediction_cache import predict_many
+
+    sliding = parse_spec("axisym:mesh=coarse,braid=sliding").build()  # a job cannot carry it
+    eq2 = parse_spec("eq2").build()
+    # the second muscle passes the braid lock: NaN forces and failure strings must survive
+    requests = [(axisym, P, 35.0, 2.5, 0.05), (axisym, P, 30.0, 2.0, 0.35),
+                (sliding, P, 35.0, 2.5, 0.05), (eq2, P, 35.0, 2.5, 0.05)]
+    solved = predict_many(requests, tmp_path / "predictions", workers=1)
+    assert [hit for _, hit in solved] == [False] * 4
+    for (model, *inputs), (pred, _) in zip(requests, solved, strict=True):
+        direct = model.predict(*inputs)
+        assert pred.params == direct.params and set(pred.extras) == set(direct.extras)
+        for name in ("force_N", "valid", "converged", "pressure_bar", "eps"):
+            np.testing.assert_array_equal(getattr(pred, name), getattr(direct, name))
+        for name, values in direct.extras.items():  # same values and dtypes, to the last bit
+            assert pred.extras[name].dtype == np.asarray(values).dtype, name
+            np.testing.assert_array_equal(pred.extras[name], values)
+    # stored in the prediction cache: the next report or study reads them
+    again = predict_many(requests, tmp_path / "predictions", workers=1)
+    assert [hit for _, hit in again] == [True] * 4
+    assert again[1][0].seconds == solved[1][0].seconds

@@ -241,3 +241,13 @@ def test_every_job_is_computed_from_its_inputs_alone():
         run_job(job)
     again = run_job(FE_JOBS[5])["rows"]
     assert np.array_equal(first["force_N"], again["force_N"])
+
+
+def test_by_default_a_short_batch_stays_in_process(tmp_path):
+    _, done = run_jobs(eq2_jobs(6), cache_dir=tmp_path, progress=False)
+    assert done["workers"] == "1 worker (in-process)" and done["computed"] == 6
+    # the rule: a cluster only when the jobs would take AUTO_CLUSTER_SECONDS in-process
+    runner = Runner()
+    assert runner.in_process(10, 0.9 * batch.AUTO_CLUSTER_SECONDS / 10)
+    assert not runner.in_process(10, 1.1 * batch.AUTO_CLUSTER_SECONDS / 10)
+    assert not Runner(workers=2).in_process(10, 0.001)  # asked for: always a cluster
