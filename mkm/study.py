@@ -38,7 +38,7 @@ from mkm.fem.records import provenance, write_atomic, write_json_atomic
 from mkm.figures import speed_accuracy_figure, stability_figure
 from mkm.html import esc, figure_html, html_page, provenance_details, save_figure, table_html
 from mkm.paths import default_out
-from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
+from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version, predict_many
 from mkm.progress import progress_bar
 from mkm.registry import parse_spec
 from mkm.scoring import error_summary, pareto_front
@@ -360,13 +360,35 @@ def write_model_errors(errors: pd.DataFrame, timings: pd.DataFrame, path: Path,
     return path
 
 
+def solve_fe_sweeps(config: StudyConfig, predictors: list[Predictor],
+                    models: dict[str, ForceModel], cache_dir, progress: bool = False,
+                    workers: int | None = None, scheduler: str | None = None) -> None:
+    """Every FE sweep of the study (the cached predictors on the study muscles, and on the
+    stability grid) missing from the prediction cache, solved as one batch on the FE batch
+    runner; :func:`measure_errors` and :func:`stability_cells` then read them from the cache."""
+    P = np.asarray(config.pressures, float)
+    requests = [(models[p.label], P, *m[1:4]) for p in predictors if p.cached
+                for m in config.muscles]
+    P_map = np.asarray(config.stability_pressures, float)
+    requests += [(models[p.label], P_map, D0, t0, e) for p in predictors
+                 if p.cached and p.label in config.stability_methods
+                 for _, D0, t0 in config.stability_muscles for e in config.stability_eps]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # out-of-domain is recorded per point, not shouted
+        predict_many(requests, cache_dir, workers=workers, scheduler=scheduler,
+                     progress=progress, desc="study FE sweeps")
+
+
 def run_study(out_dir=None, config: StudyConfig | None = None,
               cache_dir: Path | str | None = DEFAULT_CACHE_DIR, update_shipped: bool = False,
-              progress: bool = False) -> Path:
+              progress: bool = False, workers: int | None = None,
+              scheduler: str | None = None) -> Path:
     """Run the study; write figures, CSVs, ``study.html`` and the error table for ``auto``
     (``model_errors.csv`` with its ``.json`` sidecar) into ``out_dir`` (default
     ``mkm-out/study``) and nowhere else, unless ``update_shipped`` also replaces the shipped
-    table :data:`mkm.auto.MODEL_ERRORS_FILE`. Returns the HTML path."""
+    table :data:`mkm.auto.MODEL_ERRORS_FILE`. Returns the HTML path. The FE sweeps run on
+    ``workers`` local processes or the Dask cluster at ``scheduler`` (:func:`solve_fe_sweeps`;
+    with a cache only: without one, each is solved where it is used)."""
     start = time.perf_counter()
     config = config or StudyConfig()
     out = Path(out_dir) if out_dir is not None else default_out("study")
@@ -383,6 +405,8 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
     models = {p.label: p.build() for p in predictors}
     labels = {p.label for p in predictors}
     methods = [m for m in config.stability_methods if m in labels]
+    if cache_dir is not None:
+        solve_fe_sweeps(config, predictors, models, cache_dir, progress, workers, scheduler)
     bar = progress_bar(len(predictors) + len(methods), "study", progress, unit="method")
     errors, timings = measure_errors(config, predictors, models, cache_dir, bar)
     summary = summarise(errors, timings, config.reference)

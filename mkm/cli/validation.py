@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import time
 
-from mkm.cli.common import add_calibration_argument, with_calibration
+from mkm.cli.common import add_batch_arguments, add_calibration_argument, with_calibration
 from mkm.fem.ranges import parse_fraction
 
 
@@ -53,6 +53,7 @@ def register(subparsers) -> None:
                        "(default: muscle-gp,physics,mlp-paper)")
     _cache_arguments(study)
     _progress_argument(study)
+    add_batch_arguments(study)
     study.set_defaults(func=_study)
 
 
@@ -115,7 +116,8 @@ def _study(args) -> int:
     start = time.perf_counter()
     config = StudyConfig.with_surrogates(args.surrogates) if args.surrogates else StudyConfig()
     path = run_study(args.out, config, cache_dir=_cache(args),
-                     update_shipped=args.update_shipped, progress=not args.no_progress)
+                     update_shipped=args.update_shipped, progress=not args.no_progress,
+                     workers=args.workers, scheduler=args.scheduler)
     shipped = "; replaced mkm/data/model_errors.csv" if args.update_shipped else ""
     summary_line("study", f"done in {time.perf_counter() - start:.0f} s{shipped}")
     print(path)
