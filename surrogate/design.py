@@ -7,7 +7,7 @@ parameters (geometry, length, braid angle, rubber): 16 corners of a 2^(7-3) frac
 (every pair of factors balanced, each corner of the box's main effects seen), then a Latin
 hypercube (``scipy.stats.qmc``, centred-discrepancy optimised) for the rest. Each muscle is one
 FE sweep (:data:`DESIGN_PRESSURES`), computed with the dataset builder's cache and workers
-(:func:`mkm.fem.dataset.build.run_jobs`). :func:`random_muscles` draws fresh muscles for the
+(:func:`mkm.fem.batch.run_jobs`). :func:`random_muscles` draws fresh muscles for the
 off-grid evaluation the same way.
 
 References
@@ -29,7 +29,7 @@ import numpy as np
 import pandas as pd
 from scipy.stats import qmc
 
-from mkm.fem.dataset.build import Job, run_jobs
+from mkm.fem.batch import Job, Runner, run_jobs
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.records import package_file, provenance, write_atomic
 
@@ -125,14 +125,17 @@ def fe_jobs(muscles: pd.DataFrame, mesh: str = "fine",
 
 def fe_sweeps(muscles: pd.DataFrame, mesh: str = "fine", pressures=DESIGN_PRESSURES,
               workers: int | None = None, cache_dir=None, progress: bool = True,
-              desc: str = "FE sweeps") -> tuple[pd.DataFrame, dict]:
-    """The FE rows of every muscle (``muscle`` = its row number in ``muscles``) and the run.
+              desc: str = "FE sweeps", scheduler: str | None = None,
+              runner: Runner | None = None) -> tuple[pd.DataFrame, dict]:
+    """The FE rows of every muscle (``muscle`` = its row number in ``muscles``) and the run, on
+    ``workers`` local processes, the Dask cluster at ``scheduler`` or an open ``runner``.
 
     ``progress``: a bar on stderr, when stderr is a terminal (logs and pipes stay clean).
     """
     show = progress and hasattr(sys.stderr, "isatty") and sys.stderr.isatty()
     frame, done = run_jobs(fe_jobs(muscles, mesh, pressures), workers=workers,
-                           cache_dir=cache_dir, progress=show, desc=desc)
+                           scheduler=scheduler, runner=runner, cache_dir=cache_dir,
+                           progress=show, desc=desc)
     frame.insert(0, "muscle", np.repeat(np.arange(len(muscles)), len(pressures)))
     return frame, done
 
@@ -184,7 +187,8 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
 
 def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
                  workers: int | None = None, cache_dir=None,
-                 progress: bool = True, adaptive: int = 0) -> tuple[pd.DataFrame, dict]:
+                 progress: bool = True, adaptive: int = 0,
+                 scheduler: str | None = None) -> tuple[pd.DataFrame, dict]:
     """Compute the design of ``n_muscles`` FE sweeps and write ``out`` (CSV) and ``out.json``;
     with ``adaptive``, that many more muscles where the default surrogate trained on the
     first ones is least sure (:func:`adaptive_muscles`).
@@ -193,7 +197,14 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
     the CSV with ``converged=False``; the loader leaves them out) and the FE provenance.
     """
     muscles = space_filling(n_muscles, seed)
-    frame, done = fe_sweeps(muscles, mesh, workers=workers, cache_dir=cache_dir,
+    with Runner(workers, scheduler) as runner:  # the design and its adaptive muscles: one cluster
+        return _build_design(muscles, n_muscles, out, seed, mesh, runner, cache_dir, progress,
+                             adaptive)
+
+
+def _build_design(muscles, n_muscles, out, seed, mesh, runner, cache_dir, progress, adaptive):
+    """:func:`build_design` on an open :class:`~mkm.fem.batch.Runner`."""
+    frame, done = fe_sweeps(muscles, mesh, runner=runner, cache_dir=cache_dir,
                             progress=progress, desc=f"FE design ({mesh} mesh)")
     if adaptive:
         from mkm.surrogate.estimators import make_estimator
@@ -207,7 +218,7 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
                 threshold_pressure_bar=used["threshold_pressure_bar"].to_numpy())
         muscles = pd.concat([muscles, adaptive_muscles(estimator, adaptive, seed)],
                             ignore_index=True)
-        frame, done = fe_sweeps(muscles, mesh, workers=workers, cache_dir=cache_dir,
+        frame, done = fe_sweeps(muscles, mesh, runner=runner, cache_dir=cache_dir,
                                 progress=progress, desc=f"FE design + adaptive ({mesh} mesh)")
     frame["origin"] = muscles["origin"].to_numpy()[frame["muscle"].to_numpy()]
     failed = sorted(set(frame.loc[~frame["converged"], "muscle"].tolist()))
@@ -231,12 +242,14 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
 
 def build_random_set(n_muscles: int, seeds, out, mesh: str = "fine",
                      workers: int | None = None, cache_dir=None,
-                     progress: bool = True) -> tuple[pd.DataFrame, dict]:
+                     progress: bool = True,
+                     scheduler: str | None = None) -> tuple[pd.DataFrame, dict]:
     """FE sweeps (:data:`EVAL_PRESSURES`) of ``n_muscles`` random muscles per seed of ``seeds``
     (:func:`random_muscles`), written to ``out`` and ``out.json`` (seeds, box, provenance)."""
     muscles = pd.concat([random_muscles(n_muscles, seed) for seed in seeds], ignore_index=True)
     frame, done = fe_sweeps(muscles, mesh, EVAL_PRESSURES, workers=workers,
-                            cache_dir=cache_dir, progress=progress, desc="FE random muscles")
+                            cache_dir=cache_dir, progress=progress, desc="FE random muscles",
+                            scheduler=scheduler)
     frame["origin"] = muscles["origin"].to_numpy()[frame["muscle"].to_numpy()]
     info = {**provenance(), "what": "random muscles of the box (surrogate.design)",
             "seeds": [int(s) for s in seeds], "muscles_per_seed": int(n_muscles),

@@ -34,7 +34,8 @@ def muscle_box(model: SurrogateForceModel) -> dict[str, tuple[float, float]]:
 
 def evaluate_offgrid(model: SurrogateForceModel, n_muscles: int = 12, seed: int | None = None,
                      mesh: str = "fine", workers: int | None = None, cache_dir=None,
-                     progress: bool = True) -> tuple[pd.DataFrame, dict]:
+                     progress: bool = True,
+                     scheduler: str | None = None) -> tuple[pd.DataFrame, dict]:
     """Score ``model`` on ``n_muscles`` fresh random muscles (FE at ``mesh``).
 
     Returns ``(points, summary)``: one row per point (inputs, ``force_fe_N``, ``force_N``,
@@ -47,7 +48,7 @@ def evaluate_offgrid(model: SurrogateForceModel, n_muscles: int = 12, seed: int 
         seed = int(np.random.SeedSequence().entropy % 2**32)  # fresh, and recorded
     muscles = random_muscles(n_muscles, seed, muscle_box(model))
     frame, done = fe_sweeps(muscles, mesh, EVAL_PRESSURES, workers=workers,
-                            cache_dir=cache_dir, progress=progress,
+                            scheduler=scheduler, cache_dir=cache_dir, progress=progress,
                             desc=f"FE of {n_muscles} off-grid muscles ({mesh})")
     rows, per_muscle = [], []
     for k, muscle in muscles.iterrows():

@@ -8,6 +8,7 @@ import warnings
 from pathlib import Path
 
 from mkm.cli.common import (
+    add_batch_arguments,
     add_calibration_argument,
     add_geometry_arguments,
     argtype,
@@ -122,7 +123,7 @@ def register(subparsers) -> None:
                         "least sure (default 0)")
     design.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
                         help="FE mesh level (default fine, the converged one)")
-    design.add_argument("--workers", type=int, help="local worker processes (default: cores)")
+    add_batch_arguments(design)
     design.add_argument("--cache", default=str(default_cache("dataset")),
                         help="job cache folder (default %(default)s)")
     design.add_argument("--out", default=str(default_out("surrogate-design", "mkm_design.csv")),
@@ -150,7 +151,7 @@ def register(subparsers) -> None:
     evaluate.add_argument("--seed", type=int, help="seed of the draw (default: a fresh one)")
     evaluate.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
                           help="FE mesh level of the reference (default fine, the converged one)")
-    evaluate.add_argument("--workers", type=int, help="local worker processes (default: cores)")
+    add_batch_arguments(evaluate)
     evaluate.add_argument("--cache", default=str(default_cache("dataset")),
                           help="job cache folder (default %(default)s)")
     evaluate.add_argument("--out", default=str(default_out("surrogate-evaluate")),
@@ -324,7 +325,7 @@ def _design(args) -> int:
         out = STD_CALIBRATION_SET if args.update_shipped else Path(args.out)
         frame, info = build_random_set(args.muscles, seeds, out, mesh=args.mesh,
                                        workers=args.workers, cache_dir=args.cache,
-                                       progress=not args.no_progress)
+                                       progress=not args.no_progress, scheduler=args.scheduler)
         summary_line("surrogate design", f"{args.muscles} random muscles x {len(seeds)} seeds in "
                      f"{time.perf_counter() - start:.0f} s; wrote {out} and "
                      f"{out.with_suffix('.json').name}")
@@ -332,7 +333,8 @@ def _design(args) -> int:
     out = DESIGN_DATASET if args.update_shipped else Path(args.out)
     frame, info = build_design(args.muscles, out, seed=args.seed, mesh=args.mesh,
                                workers=args.workers, cache_dir=args.cache,
-                               progress=not args.no_progress, adaptive=args.adaptive)
+                               progress=not args.no_progress, adaptive=args.adaptive,
+                               scheduler=args.scheduler)
     summary_line("surrogate design", f"{args.muscles} + {args.adaptive} adaptive muscles "
                  f"({info['jobs_computed']} FE sweeps "
                  f"computed, {info['jobs_from_cache']} from cache, "
@@ -349,7 +351,8 @@ def _evaluate(args) -> int:
     start = time.perf_counter()
     model = _load(args.model, args.accept_mismatch, not args.no_progress)
     points, summary = evaluate_offgrid(model, args.muscles, args.seed, args.mesh, args.workers,
-                                       args.cache, progress=not args.no_progress)
+                                       args.cache, progress=not args.no_progress,
+                                       scheduler=args.scheduler)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     points.to_csv(out / "offgrid_points.csv", index=False, float_format="%.6g")
