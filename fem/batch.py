@@ -271,7 +271,6 @@ class Runner:
         self._cluster = None
         self._client = None
         self._open = False
-        self.checked: set[tuple[str, str]] = set()  # (worker, model) versions already compared
 
     def __enter__(self) -> Runner:
         self._open = True
@@ -350,7 +349,6 @@ class Runner:
             raise ValueError(f"the workers of {self.describe()} cannot import the model "
                              f"({exc}): install mkm-bench on them") from None
         for address, version in sorted(versions.items()):
-            self.checked.add((address, model))
             if version != expected:
                 raise ValueError(f"worker {address} has {model} model version {version}, this "
                                  f"client has {expected}: install the same mkm-bench code on "

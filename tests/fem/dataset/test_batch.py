@@ -1,6 +1,7 @@
 """Tests of the FE batch runner (fem/batch.py): task sizing, failures, bit-identical results on
 any number of workers, a killed worker, a real scheduler/worker pair, a worker with other code."""
 
+import json
 import os
 import shutil
 import signal
@@ -207,6 +208,14 @@ def test_a_scheduler_and_workers_started_with_the_dask_command(tmp_path, capsys)
         remote, serial = pd.read_csv(out), pd.read_csv(tmp_path / "serial.csv")
         assert len(remote) == 12 and remote.converged.all()
         pd.testing.assert_frame_equal(remote[SAME], serial[SAME])
+        # another FE batch command on the same cluster: the surrogate's design
+        assert main(["surrogate", "design", "--muscles", "2", "--mesh", "coarse", "--out",
+                     str(tmp_path / "design.csv"), "--cache", str(tmp_path / "design"),
+                     "--scheduler", address]) == 0
+        design = pd.read_csv(tmp_path / "design.csv")
+        assert design.muscle.nunique() == 2 and design.converged.all()
+        assert json.loads((tmp_path / "design.json").read_text())["workers"] == (
+            f"the Dask cluster at {address}")
 
         # a worker with other code joins: the next batch is refused, naming both versions
         other = copy_with_other_physics(tmp_path / "other")
