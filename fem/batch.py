@@ -36,13 +36,24 @@ Start a scheduler and workers, then give its address to any batch command::
 
 One thread per worker process: a job is one sparse solve at a time, so processes, not threads,
 use the cores (set ``OMP_NUM_THREADS=1`` in the workers' environment as the local cluster's
-nanny does). On an HPC queue, dask-jobqueue starts the workers as batch jobs::
+nanny does); the local cluster also turns off what steals CPU from a solve
+(:data:`QUIET_WORKERS`), which a lab's workers get from the environment::
+
+    export DASK_DISTRIBUTED__WORKER__PROFILE__ENABLED=False
+    export DASK_DISTRIBUTED__ADMIN__TICK__INTERVAL=500ms
+
+On an HPC queue, dask-jobqueue starts the workers as batch jobs::
 
     from dask_jobqueue import SLURMCluster
+    from mkm.fem.dataset import build_dataset
+
     cluster = SLURMCluster(cores=1, processes=1, memory="2GB", walltime="02:00:00",
-                           job_script_prologue=["source /path/to/venv/bin/activate"])
-    cluster.scale(jobs=100)
-    print(cluster.scheduler_address)  # give this to --scheduler
+                           job_script_prologue=["source /path/to/venv/bin/activate",
+                                                "export OMP_NUM_THREADS=1"])
+    cluster.scale(jobs=100)  # 100 single-threaded workers, one queue job each
+    build_dataset("grid.toml", "axisym", mesh="fine", scheduler=cluster.scheduler_address)
+
+(or keep the cluster open and give ``cluster.scheduler_address`` to ``--scheduler``).
 
 What the workers need: Python with the same ``mkm-bench`` code and its dependencies (``pip
 install mkm-bench`` from the same source or wheel: numpy, scipy, scikit-fem, dask[distributed]).
@@ -81,6 +92,13 @@ CHUNKS_PER_WORKER = 4
 #: [s] stays in-process: a local cluster's start-up and its workers' imports (seconds) would eat
 #: the gain, and a handful of sweeps answers at once.
 AUTO_CLUSTER_SECONDS = 20.0
+#: Dask settings of the local cluster (and advice for a lab's workers): the nanny's
+#: MALLOC_TRIM_THRESHOLD_ makes glibc map and unmap every large temporary array (the FE ran
+#: 30-50 % slower per job with it); the workers' statistical profiler samples the running task
+#: every 10 ms, and the event loops tick every 20 ms, CPU a single-threaded solve can use.
+QUIET_WORKERS = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
+                 "distributed.worker.profile.enabled": False,
+                 "distributed.admin.tick.interval": "500ms"}
 #: How long a batch waits for a cluster without workers before giving up [s].
 WORKER_WAIT_SECONDS = 60.0
 
@@ -316,11 +334,9 @@ class Runner:
         from dask.distributed import Client, LocalCluster
 
         if self.scheduler is None:
-            # Processes, one thread each; the nanny sets OMP/MKL/OPENBLAS_NUM_THREADS=1 in
-            # workers. Its MALLOC_TRIM_THRESHOLD_ makes glibc map and unmap every large
-            # temporary array: the axisym FE ran 30-50 % slower per job with it, so unset.
-            with dask.config.set(
-                    {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}):
+            # processes, one thread each (the nanny sets OMP/MKL/OPENBLAS_NUM_THREADS=1 in
+            # workers), without what steals CPU from a solve (QUIET_WORKERS)
+            with dask.config.set(QUIET_WORKERS):
                 self._cluster = LocalCluster(n_workers=min(self.workers, n_jobs),
                                              threads_per_worker=1, processes=True,
                                              dashboard_address=None,
