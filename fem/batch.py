@@ -11,11 +11,11 @@ study's references, design verification) makes jobs and hands them to :func:`run
 - runs them in-process (one worker), on a local Dask cluster of single-threaded worker processes
   (started once per :class:`Runner` and reused by every batch of a command), or on an existing
   Dask cluster given by its scheduler address;
-- sizes the tasks for the scheduler: the first job on each worker measures the time of a job,
-  then the others go out in chunks of about :data:`TASK_SECONDS` (small jobs batched so the
-  per-task overhead of a few milliseconds is hidden; FE jobs on the medium and fine meshes stay
-  one per task), and never fewer than :data:`CHUNKS_PER_WORKER` chunks per worker, so the last
-  ones balance;
+- sizes the tasks for the scheduler: single jobs until the first answers, then chunks of about
+  :data:`TASK_SECONDS` from the median time of the jobs done so far (small jobs batched so the
+  per-task overhead of a few milliseconds is hidden; FE jobs on the fine mesh stay one per
+  task), and never fewer than :data:`CHUNKS_PER_WORKER` chunks per worker, so the last ones
+  balance; a few tasks per worker are queued at a time;
 - writes each result to the cache on the client as it arrives (workers need no shared file
   system), and shows one progress bar on stderr when it is a terminal.
 
@@ -72,6 +72,7 @@ import hashlib
 import json
 import math
 import os
+import statistics
 import sys
 from dataclasses import asdict, dataclass
 from functools import lru_cache
@@ -88,6 +89,8 @@ from mkm.fem.records import provenance, source_version, user_cache, write_atomic
 TASK_SECONDS = 0.5
 #: At least this many chunks per worker: the last chunks are short enough to balance the load.
 CHUNKS_PER_WORKER = 4
+#: Tasks kept queued per worker: one running, the next already there when it finishes.
+QUEUED_PER_WORKER = 2
 #: Without ``workers`` given, a batch whose first job says it would take less than this in-process
 #: [s] stays in-process: a local cluster's start-up and its workers' imports (seconds) would eat
 #: the gain, and a handful of sweeps answers at once.
@@ -388,8 +391,8 @@ def run_jobs(jobs: list[Job], *, workers: int | None = None, scheduler: str | No
 
     Returns the rows of every job in order (:data:`COLUMNS` first, then whatever else the model
     reports per point) and what was done: ``computed``, ``cached``, ``workers`` (where),
-    ``chunk_jobs`` (jobs per Dask task; 1 in-process), ``model_version``, ``params`` (of the
-    first job).
+    ``chunk_jobs`` (the most jobs in one Dask task; 1 in-process), ``model_version``,
+    ``params`` (of the first job).
     """
     if runner is None:
         runner = Runner(workers, scheduler)
@@ -470,50 +473,46 @@ def _run(runner: Runner, jobs, cache_dir, progress, desc):
 
 
 def _run_on_dask(client, missing, finished) -> int:
-    """Run ``missing`` (key, job) pairs on ``client``'s cluster: one job per worker first, to
-    measure a job's time, then the rest in chunks (:func:`chunk_size`). The client caches each
-    result as it arrives, so an interruption loses only the tasks in flight. Returns the chunk
-    size."""
+    """Run ``missing`` (key, job) pairs on ``client``'s cluster and return the largest number of
+    jobs in one task.
+
+    About :data:`QUEUED_PER_WORKER` tasks per worker are kept queued; each new one is sized
+    (:func:`chunk_size`) from the median time of the jobs finished so far (single jobs until the
+    first answers). The client caches each result as it arrives, so an interruption loses only
+    the tasks in flight.
+    """
     from dask.distributed import as_completed
 
     n_workers = max(1, sum(w.get("nthreads", 1)
                            for w in client.scheduler_info(n_workers=-1)["workers"].values()))
     pending = list(missing)
-    probes, pending = pending[:n_workers], pending[n_workers:]
-
-    def submit(part):
-        future = client.submit(run_chunk, tuple(job for _, job in part),
-                               key=f"mkm-fe-{part[0][0]}-{len(part)}", pure=False)
-        return future, part
-
-    by_future = dict(submit([pair]) for pair in probes)
+    seconds: list[float] = []  # of every job finished
+    in_flight: dict = {}
     # this client's loop: another client of the process may be the default one
-    queue = as_completed(list(by_future), loop=client.loop)
-    chunk = 1
+    queue = as_completed(loop=client.loop)
+    largest = 1
+
+    def top_up() -> None:
+        nonlocal pending, largest
+        while pending and len(in_flight) < QUEUED_PER_WORKER * n_workers:
+            size = (chunk_size(statistics.median(seconds), len(pending), n_workers)
+                    if seconds else 1)
+            part, pending = pending[:size], pending[size:]
+            future = client.submit(run_chunk, tuple(job for _, job in part),
+                                   key=f"mkm-fe-{part[0][0]}-{len(part)}", pure=False)
+            in_flight[future] = part
+            queue.add(future)
+            largest = max(largest, size)
+
+    top_up()
     for future in queue:
-        part = by_future.pop(future)
+        part = in_flight.pop(future)
         try:
             results = future.result()
         except Exception as exc:  # a task the cluster gave up on: each of its jobs fails
             results = [{"error": f"{type(exc).__name__}: {exc}"}] * len(part)
         for (key, job), result in zip(part, results, strict=True):
             finished(key, job, result)
-        if pending:  # the first answer sizes the remaining tasks
-            seconds = [r["rows"]["seconds"][0] for r in results if "rows" in r]
-            chunk = chunk_size(max(seconds) if seconds else 0.0, len(pending), n_workers)
-            for start in range(0, len(pending), chunk):
-                new, part = submit(pending[start:start + chunk])
-                by_future[new] = part
-                queue.add(new)
-            pending = []
-    return chunk
-
-
-def batch_provenance(done: dict[str, Any]) -> dict[str, Any]:
-    """What a generated file records of the batch that computed its FE rows."""
-    from importlib.metadata import version
-
-    return {"model_version": done["model_version"], "jobs_computed": done["computed"],
-            "jobs_from_cache": done["cached"], "workers": done["workers"],
-            "chunk_jobs": done["chunk_jobs"], "dask.distributed": version("distributed"),
-            "task_seconds_target": TASK_SECONDS}
+        seconds += [r["rows"]["seconds"][0] for r in results if "rows" in r]
+        top_up()
+    return largest

@@ -90,7 +90,8 @@ def serial_fe(tmp_path):
 def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(tmp_path,
                                                                           monkeypatch):
     serial = serial_fe(tmp_path)
-    # a long task target: the balance rule alone sizes the chunks, 14 jobs after 2 probes
+    # a long task target: the balance rule alone sizes the chunks, 12 jobs left after the
+    # first 4 single-job tasks (2 queued per worker) -> ceil(12 / (4 x 2)) = 2
     monkeypatch.setattr(batch, "TASK_SECONDS", 1e3)
     with Runner(workers=2) as runner:
         frame, done = run_jobs(FE_JOBS, runner=runner, cache_dir=tmp_path / "two",
@@ -102,7 +103,7 @@ def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(tmp
         assert runner._cluster is cluster and done_again["computed"] == 4
     assert runner._cluster is None  # closed with the block
     assert done["workers"] == "2 local Dask workers"
-    assert done["chunk_jobs"] == -(-14 // (CHUNKS_PER_WORKER * 2)) == 2
+    assert done["chunk_jobs"] == -(-12 // (CHUNKS_PER_WORKER * 2)) == 2
     pd.testing.assert_frame_equal(frame[SAME], serial[SAME])  # to the last bit
 
 
