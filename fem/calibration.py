@@ -294,8 +294,7 @@ def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
         offset = ref_lines[0][2] - lines[0][1]
         shifted = make_model(theta0).predict(np.maximum(args[0] - offset, 0.0), *args[1:])
         shifted_force = np.where(args[0] - offset > 0, shifted.force_N, 0.0)
-        # where the braid goes slack at the cap just above the model's own threshold the FE
-        # reports no force: those points are left out of the shifted residual
+        # a point the model could not solve is left out of the shifted residual
         ok = np.isfinite(shifted_force)
         fit["threshold_offset_bar"] = float(offset)
         fit["rmse_shifted_N"] = float(np.sqrt(np.mean((shifted_force[ok] - measured[ok]) ** 2)))
