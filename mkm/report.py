@@ -55,7 +55,7 @@ from mkm.html import (
 )
 from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, model_version
-from mkm.progress import progress_bar
+from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 
@@ -184,6 +184,7 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     L0_mm = float(muscle.get("L0_mm", L0_MM))
     for spec in r.specs:
         if (spec, L0_mm) not in models:  # a surrogate loads in about a second: once is enough
+            _announce_training(spec, bar)
             models[spec, L0_mm] = spec.build(L0_mm=L0_mm)
         model = models[spec, L0_mm]
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
@@ -196,6 +197,20 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
     return r
+
+
+def _announce_training(spec: Spec, bar) -> None:
+    """Name the one long step of a first report before it starts: training the surrogate."""
+    if spec.name != "surrogate" or dict(spec.params).get("path") or getattr(bar, "disable",
+                                                                            False):
+        return
+    from mkm.surrogate.train import is_cached
+
+    kind = str(dict(spec.params).get("kind", "best"))
+    if not is_cached(kind):
+        phase("report", f"training the {kind} surrogate on first use (GP fits over the FE "
+                        "design: about half a minute on two cores; cached for every later "
+                        "command)")
 
 
 def _pressure_tolerance(meta) -> float:

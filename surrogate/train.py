@@ -136,6 +136,15 @@ def default_cache_dir() -> Path:
     return user_cache("surrogate")
 
 
+def is_cached(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
+              splits: int = MUSCLE_SPLITS) -> bool:
+    """Whether :func:`cached_model` would load ``kind`` rather than train it (callers name the
+    training phase before it starts)."""
+    cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
+    directory = cache_dir / f"{kind}-{cache_key(dataset, kind, splits)}"
+    return (directory / "metadata.json").is_file()
+
+
 def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
                  splits: int = MUSCLE_SPLITS, progress: bool = False) -> SurrogateForceModel:
     """Surrogate ``kind`` trained on ``dataset``, as a fitted ForceModel: the one surrogate cache.

@@ -330,3 +330,16 @@ def test_a_run_past_the_braid_lock_gets_one_banner(tmp_path):
     html = path.read_text(encoding="utf-8")
     assert html.count("past the braid lock") == 1
     assert f"eps_max {lock.eps_max:.3f}" in html and "No model is valid there" in html
+
+
+@pytest.mark.slow  # trains a surrogate (the physics kind, with its held-out refits)
+def test_a_first_report_names_the_surrogate_training_before_it_starts(runs, tmp_path,
+                                                                      monkeypatch, capsys):
+    monkeypatch.setenv("MKM_CACHE_DIR", str(tmp_path / "cold"))  # nothing trained yet
+    build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r",
+                 cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
+    err = capsys.readouterr().err
+    assert "mkm report: training the physics surrogate on first use" in err
+    build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r2",
+                 cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
+    assert "training" not in capsys.readouterr().err  # cached now: nothing to announce
