@@ -29,6 +29,7 @@ import io
 import json
 import math
 import os
+import re
 import socket
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -37,9 +38,23 @@ from typing import Any, NamedTuple
 import numpy as np
 import pandas as pd
 
-from mkm.fem.records import write_json_atomic
+from mkm.fem.records import spreadsheet_safe_text, write_json_atomic
 
 SCHEMA_VERSION = 2
+# A muscle id names the run folder and labels figures and reports: no path separators, no
+# markup, no spreadsheet formula, no mathtext.
+MUSCLE_ID_PATTERN = r"[A-Za-z0-9][A-Za-z0-9._+-]{0,63}"
+
+
+def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
+    """``value`` if it is a valid muscle id (:data:`MUSCLE_ID_PATTERN`), else ``ValueError``."""
+    if not isinstance(value, str) or not re.fullmatch(MUSCLE_ID_PATTERN, value):
+        text = value if isinstance(value, str) else repr(value)
+        shown = repr(text if len(text) <= 40 else text[:40] + "...")
+        raise ValueError(f"{where}={shown} ({len(text)} characters) is invalid: expected 1 to "
+                         "64 letters, digits or . _ + - (it names the run folder and labels "
+                         "figures)")
+    return value
 
 
 class RunStatus(enum.StrEnum):
@@ -180,9 +195,12 @@ class RunMeta:
     ``sequence`` holds the configured sequence and settle criteria plus ``n_steps`` (steps
     planned); ``steps_done`` counts the steps finished. ``stop_signal`` names the signal that
     stopped the run (``SIGTERM``...), ``stop_signal_number`` its number (exit status 128 + N).
-    ``manual_vent_required`` is True when the final vent command failed: the operator must vent
-    by hand. ``unvented_before`` lists earlier runs on this bench found ended without venting
-    (and vented) when this run started. ``lost_samples`` totals the ``gaps``.
+    ``manual_vent_required`` is True when the final vent could not be verified (the command
+    failed, or the monitor did not fall below the threshold: ``vent_check`` says what was read):
+    the operator must vent by hand. ``simulated`` is True for a run on a simulated bench (its
+    folder name ends in ``-SIMULATED``). ``unvented_before`` lists earlier runs on this bench
+    found ended without venting (and vented) when this run started. ``lost_samples`` totals
+    the ``gaps``.
     """
 
     muscle: MuscleMeta
@@ -211,16 +229,14 @@ class RunMeta:
     vented_at_unix_s: float | None = None
     last_command_bar: float = 0.0
     manual_vent_required: bool = False
+    vent_check: dict[str, Any] | None = None
     unvented_before: list[dict[str, Any]] = field(default_factory=list)
     reprocessed_from: dict[str, Any] | None = None
+    simulated: bool = False
 
     @property
     def n_steps(self) -> int | None:
         return self.sequence.get("n_steps")
-
-    @property
-    def simulated(self) -> bool:
-        return bool(self.hardware.get("simulated"))
 
     def as_dict(self) -> dict[str, Any]:
         data = dataclasses.asdict(self)
@@ -263,6 +279,8 @@ class RunMeta:
         if values.get("process") is not None:
             values["process"] = ProcessIdentity(**values["process"])
         values["gaps"] = [Gap(**g) for g in values.get("gaps") or []]
+        if "simulated" not in data:  # recorded in the hardware section before
+            values["simulated"] = bool((data.get("hardware") or {}).get("simulated"))
         values["schema_version"] = version  # as read; as_dict() writes the current layout
         return cls(**values)
 
@@ -310,9 +328,15 @@ def _upgrade_v1(data: dict[str, Any]) -> dict[str, Any]:
     return data
 
 
-def run_folder_name(muscle_id: str, when: datetime.datetime | None = None) -> str:
+SIMULATED_SUFFIX = "-SIMULATED"
+
+
+def run_folder_name(muscle_id: str, when: datetime.datetime | None = None, k: int = 1,
+                    simulated: bool = False) -> str:
+    """``<UTC time>_<muscle id>[-k][-SIMULATED]``: the ``k``-th folder of that second."""
     when = when or datetime.datetime.now(datetime.UTC)
-    return f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}"
+    return (f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}{f'-{k}' if k > 1 else ''}"
+            f"{SIMULATED_SUFFIX if simulated else ''}")
 
 
 def _cell(value, column: str) -> str:
@@ -322,33 +346,51 @@ def _cell(value, column: str) -> str:
         return "true" if value else "false"
     if isinstance(value, float | np.floating):
         return f"{value:.10g}" if column in TIME_COLUMNS else f"{value:.6g}"
+    if isinstance(value, str):
+        return spreadsheet_safe_text(value)
     return str(value)
 
 
 class RunWriter:
-    """Creates a run folder and appends records to its files as the run goes."""
+    """Creates a run folder and appends records to its files as the run goes.
 
-    def __init__(self, root: str | Path, muscle_id: str, config_text: str):
+    The folder is made with its run.json first (``meta``), then config.toml and the CSV
+    headers; if any of that fails (a full disk) the folder is removed again and the
+    ``OSError`` raised, so no folder exists without its run.json.
+    """
+
+    def __init__(self, root: str | Path, meta: RunMeta, config_text: str):
+        import shutil
+
         root = Path(root)
         root.mkdir(parents=True, exist_ok=True)
-        name = run_folder_name(muscle_id)
-        path, k = root / name, 1
+        when, k = datetime.datetime.now(datetime.UTC), 1
         while True:
+            path = root / run_folder_name(meta.muscle.id, when, k, meta.simulated)
             try:
                 path.mkdir()
                 break
             except FileExistsError:
                 k += 1
-                path = root / f"{name}-{k}"
         self.path = path
-        (path / "config.toml").write_text(config_text, encoding="utf-8")
         self._files = {}
-        for name, columns in (("samples", SAMPLE_COLUMNS), ("steps", STEP_COLUMNS),
-                              ("commands", COMMAND_COLUMNS)):
-            f = open(path / f"{name}.csv", "w", encoding="utf-8", newline="")
-            f.write(",".join(columns) + "\n")
-            f.flush()
-            self._files[name] = (f, columns)
+        try:
+            self.write_meta(meta)
+            (path / "config.toml").write_text(config_text, encoding="utf-8")
+            for name, columns in (("samples", SAMPLE_COLUMNS), ("steps", STEP_COLUMNS),
+                                  ("commands", COMMAND_COLUMNS)):
+                f = open(path / f"{name}.csv", "w", encoding="utf-8", newline="")
+                self._files[name] = (f, columns)
+                f.write(",".join(columns) + "\n")
+                f.flush()
+        except OSError:
+            for f, _ in self._files.values():
+                try:
+                    f.close()
+                except OSError:
+                    pass
+            shutil.rmtree(path, ignore_errors=True)
+            raise
 
     def write_meta(self, meta: RunMeta) -> None:
         write_json_atomic(self.path / "run.json", meta.as_dict())
