@@ -271,14 +271,20 @@ class RunMeta:
             raise ValueError(f"{where} is corrupt: expected a 'status' among "
                              f"{', '.join(WRITTEN_STATUSES)}, got {data.get('status')!r}")
         if version == 1:
-            data = _upgrade_v1(data)
+            try:
+                data = _upgrade_v1(data)
+            except (TypeError, ValueError, KeyError, AttributeError) as exc:
+                raise ValueError(f"{where} is corrupt: its version-1 layout does not upgrade "
+                                 f"({type(exc).__name__})") from None
         known = {f.name for f in dataclasses.fields(cls)}
         values = {k: v for k, v in data.items() if k in known}
+        _check_fields(values, where)
         values["status"] = RunStatus(values["status"])
         values["muscle"] = _muscle(data.get("muscle"), where)
         if values.get("process") is not None:
-            values["process"] = ProcessIdentity(**values["process"])
-        values["gaps"] = [Gap(**g) for g in values.get("gaps") or []]
+            values["process"] = _record(ProcessIdentity, values["process"], f"{where}: process")
+        values["gaps"] = [_record(Gap, g, f"{where}: gaps[{k}]")
+                          for k, g in enumerate(values.get("gaps") or [])]
         if "simulated" not in data:  # recorded in the hardware section before
             values["simulated"] = bool((data.get("hardware") or {}).get("simulated"))
         values["schema_version"] = version  # as read; as_dict() writes the current layout
@@ -286,6 +292,8 @@ class RunMeta:
 
 
 def _muscle(data: Any, where: str) -> MuscleMeta:
+    from mkm.fem.muscle import check_value, check_wall
+
     if not isinstance(data, dict):
         raise ValueError(f"{where} has no 'muscle' object: expected id, D0_mm, t0_mm, L0_mm, eps")
     values = {}
@@ -294,13 +302,101 @@ def _muscle(data: Any, where: str) -> MuscleMeta:
             raise ValueError(f"{where}: muscle.{name} is missing: expected the muscle's {name}")
         value = data[name]
         if name == "id":
-            if not isinstance(value, str) or not value:
-                raise ValueError(f"{where}: muscle.id={value!r} is invalid: expected a name")
-        elif isinstance(value, bool) or not isinstance(value, int | float) \
-                or not math.isfinite(value):
-            raise ValueError(f"{where}: muscle.{name}={value!r} is invalid: expected a number")
+            check_muscle_id(value, f"{where}: muscle.id")
+        elif isinstance(value, bool) or not isinstance(value, int | float):
+            raise ValueError(f"{where}: muscle.{name}={_shown(value)} is invalid: expected a "
+                             "number")
+        else:
+            value = check_value(name, value, f"{where}: muscle.")
         values[name] = value
+    check_wall(values["D0_mm"], values["t0_mm"], f"{where}: muscle.")
     return MuscleMeta(**values)
+
+
+def _shown(value: Any, n: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= n else text[:n] + "..."
+
+
+# The JSON type each field of run.json must have (None allowed where the field is optional).
+_FIELD_TYPES: dict[str, tuple[type, ...]] = {
+    "reason": (str,), "hardware": (dict,), "calibration": (dict,), "tare": (dict, type(None)),
+    "sequence": (dict,), "steps_done": (int,), "config_source": (str,),
+    "config_overrides": (dict,), "command": (str,), "provenance": (dict,),
+    "started_utc": (str,), "ended_utc": (str, type(None)), "process": (dict, type(None)),
+    "counters": (dict,), "gaps": (list,), "lost_samples": (int,),
+    "stop_signal": (str, type(None)), "stop_signal_number": (int, type(None)),
+    "stop_to_vent_s": (float, int, type(None)), "vented_at_unix_s": (float, int, type(None)),
+    "last_command_bar": (float, int), "manual_vent_required": (bool,),
+    "vent_check": (dict, type(None)), "unvented_before": (list,),
+    "reprocessed_from": (dict, type(None)), "simulated": (bool,),
+}
+# Numbers other code reads from the nested objects: section -> key -> (low, high)
+_NESTED_NUMBERS = {
+    "sequence": {"n_steps": (0, 10**6), "force_limit_N": (0.0, 1e7), "tare_s": (0.0, 1e6)},
+    "hardware": {"sample_rate_hz": (1e-6, 1e6)},
+}
+
+
+def _check_fields(values: dict[str, Any], where: str) -> None:
+    """Every known field of run.json with the JSON type it must have, and the nested numbers
+    other tools read within bounds (``ValueError`` naming the first that is not)."""
+    for name, types in _FIELD_TYPES.items():
+        if name not in values:
+            continue
+        value = values[name]
+        if isinstance(value, bool) and bool not in types:
+            ok = False
+        else:
+            ok = isinstance(value, types)
+        if not ok:
+            kinds = " or ".join("null" if t is type(None) else t.__name__ for t in types)
+            raise ValueError(f"{where}: {name}={_shown(value)} is invalid: expected {kinds}")
+        if isinstance(value, float) and not math.isfinite(value):
+            raise ValueError(f"{where}: {name}={value!r} is not a finite number")
+    for section, keys in _NESTED_NUMBERS.items():
+        table = values.get(section) or {}
+        for key, (low, high) in keys.items():
+            value = table.get(key)
+            if value is None:
+                continue
+            if isinstance(value, bool) or not isinstance(value, int | float) \
+                    or not low <= value <= high:
+                raise ValueError(f"{where}: {section}.{key}={_shown(value)} is invalid: expected "
+                                 f"a number in [{low:g}, {high:g}]")
+    settle = (values.get("sequence") or {}).get("settle", {})
+    if not isinstance(settle, dict):
+        raise ValueError(f"{where}: sequence.settle={_shown(settle)} is invalid: expected an "
+                         "object")
+    counters = values.get("counters") or {}
+    for key, value in counters.items():
+        if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+            raise ValueError(f"{where}: counters.{str(key)[:40]}={_shown(value)} is invalid: "
+                             "expected a count >= 0")
+
+
+def _record(cls, data: Any, where: str):
+    """``cls(**data)`` for a small record of run.json, its fields' types checked."""
+    if not isinstance(data, dict):
+        raise ValueError(f"{where}={_shown(data)} is invalid: expected an object")
+    fields = {f.name: f for f in dataclasses.fields(cls)}
+    unknown = sorted(set(data) - set(fields))
+    missing = [n for n, f in fields.items() if n not in data
+               and f.default is dataclasses.MISSING]
+    if unknown or missing:
+        raise ValueError(f"{where} is invalid: expected the fields {', '.join(fields)}")
+    for name, value in data.items():
+        kind = str(fields[name].type)
+        if kind == "str":
+            ok = isinstance(value, str)
+        else:  # int and float fields, some optional
+            ok = (value is None and "None" in kind) or (
+                isinstance(value, int | float) and not isinstance(value, bool)
+                and math.isfinite(value) and (not kind.startswith("int") or
+                                              isinstance(value, int)))
+        if not ok:
+            raise ValueError(f"{where}.{name}={_shown(value)} is invalid: expected {kind}")
+    return cls(**data)
 
 
 def _upgrade_v1(data: dict[str, Any]) -> dict[str, Any]:
@@ -535,9 +631,32 @@ def _typed(df: pd.DataFrame, path: Path) -> pd.DataFrame:
     if "purpose" in df:
         bad = ~df["purpose"].str.fullmatch(r"[a-z ]+").fillna(False).astype(bool)
         if bad.any():
-            raise ValueError(f"{path} is corrupt: purpose={df['purpose'][bad].iloc[0]!r}, "
+            raise ValueError(f"{path} is corrupt: purpose={_shown(df['purpose'][bad].iloc[0])}, "
                              "expected lowercase words")
+    if "flags" in df:
+        tokens = df["flags"].str.split("|").explode()
+        bad = ~(tokens.isin(FLAGS) | tokens.eq(""))
+        if bad.any():
+            raise ValueError(f"{path} is corrupt: flags={_shown(tokens[bad].iloc[0])}, expected "
+                             f"some of {', '.join(FLAGS)} joined by |")
+    for column in df.columns:
+        if column in DTYPES or column in ("settled", "ok"):
+            continue
+        try:
+            values = pd.to_numeric(df[column], errors="raise")
+        except (ValueError, TypeError):
+            raise ValueError(f"{path} is corrupt: {column} holds text, expected numbers") \
+                from None
+        magnitude = values.abs()
+        if (magnitude > MAX_CELL_MAGNITUDE).any():  # NaN (a broken input) is recorded as such
+            raise ValueError(f"{path} is corrupt: {column}="
+                             f"{values[magnitude > MAX_CELL_MAGNITUDE].iloc[0]!r} is beyond "
+                             f"+-{MAX_CELL_MAGNITUDE:g} (no bench reading is)")
+        df[column] = values
     return df
+
+
+MAX_CELL_MAGNITUDE = 1e9  # larger than any index, time [s], pressure [bar], force [N] or volt
 
 
 @dataclass
@@ -589,16 +708,29 @@ class Run:
         return self.meta.reason
 
 
+MAX_RUN_JSON_BYTES = 10_000_000
+
+
 def read_meta(path: str | Path) -> RunMeta:
     """The :class:`RunMeta` of the run folder ``path`` (``ValueError`` when it cannot be read)."""
     path = Path(path)
     meta_path = path / "run.json"
-    if not meta_path.is_file():
+    try:
+        is_file = meta_path.is_file()
+    except OSError as exc:
+        raise ValueError(f"{str(path)[:200]} cannot be read as a run folder "
+                         f"({exc.strerror or exc})") from None
+    if not is_file:
         raise ValueError(f"{path} is not a run folder: run.json is missing")
+    if meta_path.stat().st_size > MAX_RUN_JSON_BYTES:
+        raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
+                         f"record of at most {MAX_RUN_JSON_BYTES}")
     try:
         data = json.loads(meta_path.read_text(encoding="utf-8"))
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
+    except RecursionError:
+        raise ValueError(f"{meta_path} is corrupt (nested too deeply)") from None
     return RunMeta.from_dict(data, str(meta_path))
 
 
@@ -628,6 +760,12 @@ def load_run(path: str | Path) -> Run:
     if status == RunStatus.RUNNING and not (meta.process and meta.process.alive()):
         status = RunStatus.INCOMPLETE
         problems.append("the run stopped without closing its record (killed or crashed)")
+        # run.json's counter is from its last rewrite; the rows on disk are the truth
+        written = Run(path, meta, steps, status).n_samples if samples_csv.is_file() else 0
+        if written != meta.counters.get("samples"):
+            problems.append(f"samples counted from samples.csv: {written} (run.json said "
+                            f"{meta.counters.get('samples')})")
+            meta.counters["samples"] = written
         unvented = _unvented(commands)
         if unvented:
             problems.append(unvented)
