@@ -332,12 +332,14 @@ class BenchRun:
             problems.append(f"closing the device failed ({type(exc).__name__}: {exc})")
         for observer in self._observers:
             observer.close()
-        last_bar = acq.command_bar if acq is not None else 0.0
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
             status = RunStatus.FAILED
+            held = self.vent_check.pressure_bar
+            if not held == held:  # nothing read: what was last commanded
+                held = acq.command_bar if acq is not None else 0.0
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
-                            f"still hold {last_bar:g} bar)")
+                            f"still hold {held:.3g} bar)")
         if problems:
             reason = "; ".join([reason, *problems]) if reason else "; ".join(problems)
         if self.recorder is not None:

@@ -182,7 +182,7 @@ def spreadsheet_safe(frame):
     out = frame.copy()
     for column in out.columns:
         values = out[column]
-        if values.dtype == object or str(values.dtype).startswith("string"):
+        if values.dtype == object or "str" in str(values.dtype):
             out[column] = values.map(lambda v: spreadsheet_safe_text(v) if isinstance(v, str)
                                      else v)
     return out
