@@ -267,9 +267,9 @@ class RunMeta:
         if version not in (1, SCHEMA_VERSION):
             raise ValueError(f"{where} has schema_version {version!r}: expected 1 or "
                              f"{SCHEMA_VERSION} (a newer mkm wrote it?)")
-        if data.get("status") not in set(WRITTEN_STATUSES):
+        if not isinstance(data.get("status"), str) or data["status"] not in WRITTEN_STATUSES:
             raise ValueError(f"{where} is corrupt: expected a 'status' among "
-                             f"{', '.join(WRITTEN_STATUSES)}, got {data.get('status')!r}")
+                             f"{', '.join(WRITTEN_STATUSES)}, got {_shown(data.get('status'))}")
         if version == 1:
             try:
                 data = _upgrade_v1(data)
@@ -602,7 +602,8 @@ def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
                 except StopIteration:
                     return
                 except (pd.errors.ParserError, ValueError) as exc:
-                    raise ValueError(f"{path} is corrupt: {exc}") from None
+                    first = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
+                    raise ValueError(f"{path} is corrupt: {first}") from None
                 yield _typed(df, path)
         finally:
             stream.close()
