@@ -21,7 +21,16 @@ import numpy as np
 
 from mkm.bench.config import BenchConfig
 from mkm.bench.sequence import validate_tare
-from mkm.bench.storage import CommandRecord, RunWriter, Sample, StepRecord, iter_samples, load_run
+from mkm.bench.storage import (
+    CommandRecord,
+    ProcessIdentity,
+    RunStatus,
+    RunWriter,
+    Sample,
+    StepRecord,
+    iter_samples,
+    load_run,
+)
 from mkm.fem.records import file_sha256, provenance
 
 
@@ -42,7 +51,21 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
     windows = {int(s.step): (float(s.start_s) + float(s.settle_s), float(s.end_s))
                for s in steps.itertuples()}
     sums = {k: [0, 0.0, 0.0] for k in windows}  # n, sum, sum of squares of the hold forces
-    writer = RunWriter(out_root, source.meta.muscle.id, config.text)
+    meta = dataclasses.replace(source.meta)
+    prov = provenance()
+    settings = config.as_dict()
+    meta.reprocessed_from = {
+        "path": str(source.path), "run_json_sha256": file_sha256(source.path / "run.json"),
+        "samples_sha256": file_sha256(samples_csv),
+        "calibration": source.meta.calibration, "tare": source.meta.tare,
+        "config_source": config.source, "date_utc": prov["date_utc"]}
+    meta.calibration = {**meta.calibration, "loadcell": settings["loadcell"],
+                        "safety": settings["safety"]}
+    meta.tare = {**tare, "duration_s": source.meta.sequence.get("tare_s")} if tare else None
+    meta.provenance, meta.command = prov, prov["command"]
+    # run.json first, "running" from this process until every file is written
+    writer = RunWriter(out_root, dataclasses.replace(
+        meta, status=RunStatus.RUNNING, process=ProcessIdentity.current()), config.text)
     # pass 2: every sample again, forces from the raw volts
     for chunk in iter_samples(source.path):
         during_tare = (chunk["phase"] == "tare").to_numpy()
@@ -72,18 +95,6 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
                                       float(s.start_s), float(s.end_s)))
     for c in source.commands.itertuples(index=False):
         writer.append_command(CommandRecord(*c))
-    meta = dataclasses.replace(source.meta)
-    prov = provenance()
-    settings = config.as_dict()
-    meta.reprocessed_from = {
-        "path": str(source.path), "run_json_sha256": file_sha256(source.path / "run.json"),
-        "samples_sha256": file_sha256(samples_csv),
-        "calibration": source.meta.calibration, "tare": source.meta.tare,
-        "config_source": config.source, "date_utc": prov["date_utc"]}
-    meta.calibration = {**meta.calibration, "loadcell": settings["loadcell"],
-                        "safety": settings["safety"]}
-    meta.tare = {**tare, "duration_s": source.meta.sequence.get("tare_s")} if tare else None
-    meta.provenance, meta.command = prov, prov["command"]
     writer.write_meta(meta)
     writer.close()
     return writer.path

@@ -48,7 +48,9 @@ from mkm.bench.backend import (
     DeviceInfo,
     ReadTimeout,
 )
-from mkm.bench.config import USB6001_RANGE_V, BenchConfig
+from mkm.bench.ni import USB6001
+
+USB6001_RANGE_V = USB6001.ai_range_V
 
 ADC_BITS = 14
 LSB_V = 2 * USB6001_RANGE_V / 2**ADC_BITS  # USB-6001: 14 bits over +-10 V = 1.22 mV
@@ -64,7 +66,7 @@ def quantize_volts(volts: float) -> float:
     return round(clipped / LSB_V) * LSB_V
 
 
-def static_force_table(config: BenchConfig, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
+def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
     """Pressures [bar] over the regulator's range and the model's static force [N] at them.
 
     Computed once per muscle and model in a process (an FE sweep takes about a second); a
@@ -94,7 +96,7 @@ def _model(model_name, mesh, L0_mm):
     return make_model(model_name, L0_mm=L0_mm, **({"mesh": mesh} if mesh else {}))
 
 
-def describe_physics(config: BenchConfig) -> dict:
+def describe_physics(config) -> dict:
     """What the simulated muscle is, for run.json and the report: the model and its parameters,
     and the effects added to it."""
     s, m = config.sim, config.muscle
@@ -117,7 +119,7 @@ def describe_physics(config: BenchConfig) -> dict:
 class SimMuscleBench:
     """Regulator, muscle and load cell advanced one sample at a time (pure physics, no I/O)."""
 
-    def __init__(self, config: BenchConfig):
+    def __init__(self, config):
         self.config = config
         s = config.sim
         self.dt = 1.0 / config.daq.sample_rate_hz
@@ -176,14 +178,15 @@ class SimBackend:
 
     Parameters
     ----------
-    config : BenchConfig
-        The bench settings; ``config.sim`` holds the physics, seed and faults.
+    config : mkm.bench.config.BenchConfig
+        The bench settings; ``config.sim`` (:class:`mkm.bench.sim_settings.Sim`) holds the
+        physics, seed and faults.
     clock : {"virtual", "real"}
         ``virtual``: sample k is at k / rate s and reads return at once; ``real``: reads wait
         until the samples' times have passed, as the hardware clock does.
     """
 
-    def __init__(self, config: BenchConfig, clock: str = "virtual"):
+    def __init__(self, config, clock: str = "virtual"):
         if clock not in ("virtual", "real"):
             raise ValueError(f"clock={clock!r} is invalid: expected 'virtual' or 'real'")
         self.config = config

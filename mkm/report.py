@@ -34,7 +34,12 @@ import numpy as np
 import pandas as pd
 
 from mkm.fem.paper import L0_MM, TABLE3_CSV
-from mkm.fem.records import provenance, read_prediction_header, write_json_atomic
+from mkm.fem.records import (
+    provenance,
+    read_prediction_header,
+    spreadsheet_safe,
+    write_json_atomic,
+)
 from mkm.figures import (
     model_colours,
     overlay_figure,
@@ -141,7 +146,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     for k, run_dir in enumerate(run_dirs, start=1):
         runs.append(_score(_Run(k, load_run(run_dir), specs), cache_dir, prov, bar, models))
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
-    summary.to_csv(out / "summary.csv", index=False, float_format="%.6g")
+    spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
     sections = [_summary_section(runs, summary, names, tolerance),
                 _overlay_section(runs, out, names, colours),
@@ -426,7 +431,7 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                                  + _signals(r, out) + setup)
 
     stem = f"run{r.k}"
-    r.scored.to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
+    spreadsheet_safe(r.scored).to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
     title = (f"run {r.k}: {_plain(muscle.get('id', ''))}, eps = {r.eps_pct:.1f} %")
     fig_path = save_figure(run_figure(steps, r.scored, title, names, colours),
                            out / f"{stem}_force_error.png")

@@ -52,7 +52,7 @@ def start_run(tmp_path, until="samples"):
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     deadline = time.monotonic() + 30
     while time.monotonic() < deadline:
-        folders = list(out.glob("*_paper-prototype")) if out.exists() else []
+        folders = list(out.glob("*_paper-prototype-SIMULATED")) if out.exists() else []
         if folders and (folders[0] / "commands.csv").exists():
             rows = (folders[0] / "samples.csv").read_text().count("\n") - 1
             commands = (folders[0] / "commands.csv").read_text()

@@ -324,7 +324,8 @@ def test_a_run_past_the_braid_lock_gets_one_banner(tmp_path):
     from mkm.fem.eq2 import braid_lock
 
     lock = braid_lock()
-    run = acquire(_sim_config(round(lock.eps_max + 0.05, 3), (0.5, 1.0)), out_root=tmp_path)
+    run = acquire(_sim_config(round(lock.eps_max + 0.05, 3), (0.5, 1.0)), out_root=tmp_path,
+                  allow_past_lock=True)  # a lock study
     path = build_report([run.path], parse_models("eq2,thickwall"), out_dir=tmp_path / "r",
                         cache_dir=None, tolerance=None, surrogate_section=False)
     html = path.read_text(encoding="utf-8")
