@@ -66,10 +66,11 @@ class RunStatus(enum.StrEnum):
     ABORTED = "aborted"  # stopped on purpose: interlock, signal, operator
     FAILED = "failed"  # stopped by an error: device, storage, tare
     INCOMPLETE = "incomplete"  # never written: the loader's verdict on a dead "running" record
+    IMPORTED = "imported"  # measured elsewhere (another bench, a spreadsheet): mkm import
 
     @property
     def finished(self) -> bool:
-        return self in (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS)
+        return self in (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS, RunStatus.IMPORTED)
 
 
 WRITTEN_STATUSES = tuple(s for s in RunStatus if s is not RunStatus.INCOMPLETE)
@@ -232,6 +233,7 @@ class RunMeta:
     vent_check: dict[str, Any] | None = None
     unvented_before: list[dict[str, Any]] = field(default_factory=list)
     reprocessed_from: dict[str, Any] | None = None
+    imported_from: dict[str, Any] | None = None
     simulated: bool = False
 
     @property
@@ -280,7 +282,7 @@ class RunMeta:
         values = {k: v for k, v in data.items() if k in known}
         _check_fields(values, where)
         values["status"] = RunStatus(values["status"])
-        values["muscle"] = _muscle(data.get("muscle"), where)
+        values["muscle"] = muscle_from_dict(data.get("muscle"), where)
         if values.get("process") is not None:
             values["process"] = _record(ProcessIdentity, values["process"], f"{where}: process")
         values["gaps"] = [_record(Gap, g, f"{where}: gaps[{k}]")
@@ -291,7 +293,7 @@ class RunMeta:
         return cls(**values)
 
 
-def _muscle(data: Any, where: str) -> MuscleMeta:
+def muscle_from_dict(data: Any, where: str) -> MuscleMeta:
     from mkm.fem.muscle import check_value, check_wall
 
     if not isinstance(data, dict):
@@ -329,7 +331,8 @@ _FIELD_TYPES: dict[str, tuple[type, ...]] = {
     "stop_to_vent_s": (float, int, type(None)), "vented_at_unix_s": (float, int, type(None)),
     "last_command_bar": (float, int), "manual_vent_required": (bool,),
     "vent_check": (dict, type(None)), "unvented_before": (list,),
-    "reprocessed_from": (dict, type(None)), "simulated": (bool,),
+    "reprocessed_from": (dict, type(None)), "imported_from": (dict, type(None)),
+    "simulated": (bool,),
 }
 # Numbers other code reads from the nested objects: section -> key -> (low, high)
 _NESTED_NUMBERS = {
@@ -702,7 +705,8 @@ class Run:
 
     @property
     def complete(self) -> bool:
-        return self.status == RunStatus.COMPLETE
+        """Every planned step done and nothing lost (an imported table counts as complete)."""
+        return self.status in (RunStatus.COMPLETE, RunStatus.IMPORTED)
 
     @property
     def reason(self) -> str:
