@@ -32,13 +32,14 @@ import numpy as np
 import pandas as pd
 
 from mkm.fem.records import jsonable, provenance
+from mkm.surrogate.coverage import coverage
 from mkm.surrogate.design import DESIGN_DATASET
-from mkm.surrogate.estimators import KINDS
+from mkm.surrogate.kinds import names
 from mkm.surrogate.offgrid import evaluate_offgrid
 from mkm.surrogate.testset import PAPER_MUSCLES, test_points
 from mkm.surrogate.train import train_surrogate
 from mkm.surrogate.training_data import load_training_data
-from mkm.surrogate.validation import coverage, rmse
+from mkm.surrogate.validation import rmse
 
 
 def timings(call, repeats: int) -> tuple[np.ndarray, np.ndarray]:
@@ -84,7 +85,7 @@ def main() -> None:
                         help="FE workers (default 1, in-process: Dask workers refuse FE code "
                         "that changed since the client started)")
     parser.add_argument("--repeats", type=int, default=300)
-    parser.add_argument("--kinds", default=",".join(KINDS))
+    parser.add_argument("--kinds", default=",".join(names(include_families=False)))
     parser.add_argument("--grid-seeds", type=int, default=0)
     parser.add_argument("--out", help="also write the results as JSON here")
     args = parser.parse_args()

@@ -20,6 +20,7 @@ from typing import Any
 from mkm.auto import AutoModel
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import model_class
+from mkm.surrogate import kinds
 
 
 @dataclass(frozen=True)
@@ -52,8 +53,7 @@ ENTRIES: dict[str, Entry] = {
     "surrogate": Entry("scikit-learn surrogate trained on the FE design (or another FE "
                        "dataset); refuses muscle parameters its training did not cover",
                        "Surrogate", "surrogate",
-                       {"kind": "best (default: muscle-gp), muscle-gp, physics, gp, mlp-paper "
-                                "or net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]",
+                       {"kind": kinds.describe(),
                         "path": "folder of a model saved by `mkm surrogate train`",
                         "L0_mm": "length at rest [mm]; default 282",
                         "theta0_deg": "braid angle at rest [deg]; default calibrated",

@@ -40,6 +40,7 @@ from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import progress_bar
 from mkm.registry import parse_spec
+from mkm.surrogate import kinds
 
 STUDY_PRESSURES = tuple(np.round(np.arange(0.0, 2.5001, 0.25), 2))  # the paper's test sweep
 # name, D0 [mm], t0 [mm], eps, role. I-III: the paper's test muscles (section 3.3); H1-H8 a box
@@ -98,7 +99,7 @@ def physics_predictors() -> list[Predictor]:
 # The study's surrogates unless asked for more: the default kind, the physics ridge and the
 # paper's best net. The generic GP (about 2.5 min of training cold on two cores) and the paper's
 # 54 Table 2 nets (about 10 min) are dominated on the front; `mkm study --surrogates all` adds them.
-STUDY_SURROGATES = ("muscle-gp", "physics", "mlp-paper")
+STUDY_SURROGATES = kinds.study_default()
 
 
 def surrogate_kinds(text: str) -> tuple[str, ...]:

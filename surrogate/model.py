@@ -10,6 +10,7 @@ held: asking for another value is refused with a ``ValueError`` naming both, nev
 from __future__ import annotations
 
 import warnings
+from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
@@ -22,7 +23,8 @@ from threadpoolctl import ThreadpoolController
 from mkm.fem.interface import INPUTS, Domain, ForceModel
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import L0_MM
-from mkm.surrogate.estimators import MuscleThresholdGP, ThresholdLinearRegressor
+from mkm.surrogate.muscle_gp import MuscleThresholdGP
+from mkm.surrogate.threshold_linear import ThresholdLinearRegressor
 from mkm.surrogate.training_data import PARAMETERS
 
 # Relative slack of "the same value" for a recorded parameter (a CSV round trip keeps ~1e-15).
@@ -31,6 +33,30 @@ SAME_VALUE_RTOL = 1e-9
 
 class OutOfDomainWarning(UserWarning):
     """A surrogate was asked for points outside the box it was trained on."""
+
+
+@dataclass(frozen=True)
+class ErrorMargin:
+    """What training measured of a surrogate's errors on muscles it did not see.
+
+    Attributes
+    ----------
+    worst_abs_error_N : float or None
+        Largest absolute error [N] recorded at training: the worst split of the muscle-held-out
+        refits and the worst test muscle; None when neither was measured.
+    within_1std, within_2std : float or None
+        Median over the muscle-held-out splits of the fraction of held-out points within 1 and
+        2 predictive standard deviations [fraction]; None for a surrogate without a std or
+        without splits.
+    measured_on : str
+        Where the figures come from, for a reader (``"10 muscle-held-out splits, 5 test
+        muscles"``); empty when nothing was measured.
+    """
+
+    worst_abs_error_N: float | None
+    within_1std: float | None
+    within_2std: float | None
+    measured_on: str
 
 
 def default_parameters() -> dict[str, float]:
@@ -55,7 +81,7 @@ class SurrogateForceModel(ForceModel):
     estimator : fitted scikit-learn regressor
         Of ``X`` with the columns ``inputs``.
     kind : str
-        The estimator's kind (``mkm.surrogate.estimators.make_estimator``).
+        The estimator's kind (:mod:`mkm.surrogate.kinds`).
     inputs : sequence of str
         ``pressure_bar, D0_mm, t0_mm, eps`` and the muscle parameters the estimator takes.
     fixed : dict
@@ -133,6 +159,29 @@ class SurrogateForceModel(ForceModel):
             parameters = {"refused": str(exc)}
         return {"kind": self.kind, **parameters, "dataset_sha256": dataset.get("sha256"),
                 "inputs": list(self.inputs), "box": {k: list(v) for k, v in self.box.items()}}
+
+    def error_margin(self) -> ErrorMargin:
+        """The errors on muscles held out of training that training recorded (its metadata's
+        ``metrics``: the muscle-held-out splits and the test muscles)."""
+        metrics = self.metadata.get("metrics") or {}
+        held_out = metrics.get("muscle_held_out") or {}
+        worst, sources = [], []
+
+        def median_of(score):
+            table = held_out.get(score)
+            return float(table["median"]) if isinstance(table, dict) else None
+
+        if isinstance(held_out.get("max_abs_test_N"), dict):
+            worst.append(float(held_out["max_abs_test_N"]["max"]))
+            sources.append(f"{held_out['max_abs_test_N'].get('n', '?')} muscle-held-out splits")
+        tests = metrics.get("test_muscles")
+        if isinstance(tests, list):  # a dict says why they were not evaluated
+            errors = [float(m["max_abs_error_N"]) for m in tests if "max_abs_error_N" in m]
+            if errors:
+                worst.append(max(errors))
+                sources.append(f"{len(errors)} test muscles")
+        return ErrorMargin(max(worst) if worst else None, median_of("within_1std"),
+                           median_of("within_2std"), ", ".join(sources))
 
     @property
     def has_std(self) -> bool:

@@ -21,6 +21,7 @@ from sklearn.metrics import max_error, root_mean_squared_error
 from sklearn.model_selection import GroupShuffleSplit, KFold, cross_val_predict, train_test_split
 
 from mkm.fem.paper import equation7_err_pct
+from mkm.surrogate.coverage import coverage
 
 TEST_SIZE = 0.2  # the paper's 80/20 split
 CV_FOLDS = 5  # Regression Learner's default cross-validation
@@ -49,16 +50,6 @@ def predict_with_std(estimator, X):
     except TypeError:  # no predictive std
         return estimator.predict(X), None
     return force, std
-
-
-def coverage(error, std, k: float) -> float:
-    """Fraction of points with ``|error| <= k std`` among those where the model or the FE has
-    a force (points both say are exactly zero, below the threshold, say nothing of the std)."""
-    error, std = np.abs(np.asarray(error)), np.asarray(std)
-    informative = (error > 0) | (std > 0)
-    if not informative.any():
-        return float("nan")
-    return float(np.mean(error[informative] <= k * std[informative]))
 
 
 def worst_err_pct(y_true, y_pred, groups) -> float:

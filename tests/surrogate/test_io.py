@@ -13,6 +13,7 @@ from mkm.surrogate.io import (
     METADATA_FILE,
     LibraryVersionWarning,
     load_model,
+    metadata_sha256,
     save_model,
 )
 from mkm.surrogate.train import train_surrogate
@@ -32,9 +33,13 @@ def copy_model(directory, to: Path) -> Path:
     return to
 
 
-def rewrite_metadata(folder: Path, edit) -> None:
+def rewrite_metadata(folder: Path, edit, sign: bool = True) -> None:
+    """Edit a model folder's metadata; ``sign``: record the hash of the edited metadata, as a
+    training that wrote it would (else the edit is a tampering)."""
     meta = json.loads((folder / METADATA_FILE).read_text())
     edit(meta)
+    if sign:
+        meta["sha256"] = metadata_sha256(meta)
     (folder / METADATA_FILE).write_text(json.dumps(meta))
 
 
