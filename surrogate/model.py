@@ -163,25 +163,24 @@ class SurrogateForceModel(ForceModel):
     def error_margin(self) -> ErrorMargin:
         """The errors on muscles held out of training that training recorded (its metadata's
         ``metrics``: the muscle-held-out splits and the test muscles)."""
-        metrics = self.metadata.get("metrics") or {}
-        held_out = metrics.get("muscle_held_out") or {}
+        metrics = _mapping(self.metadata.get("metrics"))
+        held_out = _mapping(metrics.get("muscle_held_out"))
         worst, sources = [], []
-
-        def median_of(score):
-            table = held_out.get(score)
-            return float(table["median"]) if isinstance(table, dict) else None
-
-        if isinstance(held_out.get("max_abs_test_N"), dict):
-            worst.append(float(held_out["max_abs_test_N"]["max"]))
-            sources.append(f"{held_out['max_abs_test_N'].get('n', '?')} muscle-held-out splits")
-        tests = metrics.get("test_muscles")
-        if isinstance(tests, list):  # a dict says why they were not evaluated
-            errors = [float(m["max_abs_error_N"]) for m in tests if "max_abs_error_N" in m]
-            if errors:
-                worst.append(max(errors))
-                sources.append(f"{len(errors)} test muscles")
-        return ErrorMargin(max(worst) if worst else None, median_of("within_1std"),
-                           median_of("within_2std"), ", ".join(sources))
+        split_worst = _number(_mapping(held_out.get("max_abs_test_N")).get("max"))
+        if split_worst is not None:
+            worst.append(split_worst)
+            sources.append(f"{_mapping(held_out['max_abs_test_N']).get('n', 'its')} "
+                           "muscle-held-out splits")
+        tests = metrics.get("test_muscles")  # a dict says why they were not evaluated
+        errors = [e for e in (_number(_mapping(m).get("max_abs_error_N"))
+                              for m in (tests if isinstance(tests, list) else [])) if e is not None]
+        if errors:
+            worst.append(max(errors))
+            sources.append(f"{len(errors)} test muscles")
+        return ErrorMargin(max(worst) if worst else None,
+                           _number(_mapping(held_out.get("within_1std")).get("median")),
+                           _number(_mapping(held_out.get("within_2std")).get("median")),
+                           ", ".join(sources))
 
     @property
     def has_std(self) -> bool:
@@ -252,6 +251,17 @@ def _validated_predictor(estimator):
         return None
     kw_args = features.kw_args or {}
     return lambda X, _std=False: final.predict_validated(features.func(X, **kw_args))
+
+
+def _mapping(value) -> dict:
+    return value if isinstance(value, dict) else {}
+
+
+def _number(value) -> float | None:
+    """``value`` as a float if it is a finite number, else None (metrics a model does not have)."""
+    if isinstance(value, int | float) and not isinstance(value, bool) and np.isfinite(value):
+        return float(value)
+    return None
 
 
 def _describe(domain: Domain) -> str:

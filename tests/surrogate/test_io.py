@@ -1,11 +1,14 @@
 import json
 import subprocess
 import sys
+import warnings
 import zipfile
 from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from mkm.fem.records import file_sha256
 from mkm.surrogate.io import (
@@ -184,3 +187,92 @@ def test_two_processes_training_at_once(thickwall_dataset, tmp_path):
     assert outputs[0][0] == outputs[1][0]
     entries = [p for p in tmp_path.iterdir() if p.is_dir()]
     assert len(entries) == 1 and (entries[0] / METADATA_FILE).is_file()
+
+
+def test_error_margin_is_what_training_measured(saved):
+    # The physics kind has no std; its two muscle-held-out splits measured its worst error.
+    model, directory, _ = saved
+    margin = load_model(directory).error_margin()
+    held_out = model.metadata["metrics"]["muscle_held_out"]
+    assert margin.worst_abs_error_N >= held_out["max_abs_test_N"]["max"] > 0
+    assert margin.within_2std is None and "2 muscle-held-out splits" in margin.measured_on
+
+
+def test_widened_box_is_refused(saved, tmp_path):
+    # Widening the box in metadata.json once made D0 = 500 mm predict 128 118 N with valid and
+    # in_domain true. The box is covered by the metadata's hash: the edit is refused.
+    copy = copy_model(saved[1], tmp_path / "widened")
+    rewrite_metadata(copy, lambda m: m["box"].update({"D0_mm": [0.0, 1000.0]}), sign=False)
+    with pytest.raises(ValueError, match="does not match the sha256 it records: it was edited"):
+        load_model(copy)
+
+
+def test_tampered_metadata_is_one_line_on_the_cli(saved, tmp_path, capsys):
+    from mkm.cli import main
+
+    copy = copy_model(saved[1], tmp_path / "widened")
+    rewrite_metadata(copy, lambda m: m["box"].update({"D0_mm": [0.0, 1000.0]}), sign=False)
+    assert main(["fem", "solve", "--model", f"surrogate:path={copy}", "--D0", "500", "--t0",
+                 "3", "--eps", "0.1"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("mkm: error: ") and "edited" in err and err.count("\n") == 1
+
+
+def test_huge_metadata_is_refused_unread(saved, tmp_path):
+    from mkm.surrogate.io import MAX_METADATA_BYTES
+
+    copy = copy_model(saved[1], tmp_path / "huge")
+    (copy / METADATA_FILE).write_text(" " * (MAX_METADATA_BYTES + 1) + "{}")
+    with pytest.raises(ValueError, match=rf"holds {MAX_METADATA_BYTES + 3} bytes: expected at"):
+        load_model(copy)
+
+
+JSON_VALUES = st.recursive(
+    st.none() | st.booleans() | st.integers(-10**6, 10**6)
+    | st.floats(allow_nan=True, allow_infinity=True) | st.text(max_size=8),
+    lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=5), inner,
+                                                                max_size=3),
+    max_leaves=6)
+
+
+def key_paths(node, prefix=()):
+    """Every key path of a JSON object, parents before children."""
+    for key, value in node.items():
+        yield (*prefix, key)
+        if isinstance(value, dict):
+            yield from key_paths(value, (*prefix, key))
+
+
+@settings(max_examples=80, deadline=None)
+@given(data=st.data(), sign=st.booleans())
+def test_malformed_metadata_is_one_value_error(saved, tmp_path_factory, data, sign):
+    # Any edit of the metadata (a value replaced by any JSON, a key dropped, the whole file
+    # replaced) is refused with a ValueError, hash recomputed or not; never another exception.
+    # An edit that keeps the structure with the hash recomputed (what a training could have
+    # written) may load: then it predicts and reports its margin without raising anything else.
+    directory = saved[1]
+    meta = json.loads((directory / METADATA_FILE).read_text())
+    action = data.draw(st.sampled_from(["replace", "drop", "whole"]))
+    if action == "whole":
+        meta = data.draw(JSON_VALUES)
+    else:
+        *parents, key = data.draw(st.sampled_from(list(key_paths(meta))))
+        node = meta
+        for part in parents:
+            node = node[part]
+        if action == "drop":
+            del node[key]
+        else:
+            node[key] = data.draw(JSON_VALUES)
+    if sign and isinstance(meta, dict):
+        meta["sha256"] = metadata_sha256(meta)
+    copy = copy_model(directory, tmp_path_factory.mktemp("fuzz") / "model")
+    (copy / METADATA_FILE).write_text(json.dumps(meta))
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # other library versions, out of the domain
+            model = load_model(copy, accept_mismatch=data.draw(st.booleans()))
+            model.predict([0.0, 1.0, 2.0], 40.0, 3.0, 0.1)
+            model.error_margin()
+    except ValueError as exc:
+        assert "\n" not in str(exc)
