@@ -9,16 +9,19 @@ posterior it returns (:func:`posterior`), so nothing reads the regressor's priva
 from __future__ import annotations
 
 import numpy as np
-from sklearn.gaussian_process import GaussianProcessRegressor
-from sklearn.gaussian_process.kernels import ConstantKernel, Matern, WhiteKernel
 
 # A target scale below this is a constant target: scikit-learn's normalize_y divides by 1 then
 TINY_SCALE = 10.0 * np.finfo(float).eps
 
 
 def gaussian_process(n_features: int, random_state: int, restarts: int,
-                     normalize_y: bool = True) -> GaussianProcessRegressor:
-    """Matern 5/2 with one length scale per input, times an amplitude, plus a noise term."""
+                     normalize_y: bool = True):
+    """Matern 5/2 with one length scale per input, times an amplitude, plus a noise term (a
+    ``GaussianProcessRegressor``; scikit-learn is imported here: predictions need only
+    :func:`posterior_mean_std`)."""
+    from sklearn.gaussian_process import GaussianProcessRegressor
+    from sklearn.gaussian_process.kernels import ConstantKernel, Matern, WhiteKernel
+
     kernel = (ConstantKernel(1.0, (1e-3, 1e3))
               * Matern(length_scale=np.ones(n_features), length_scale_bounds=(1e-2, 1e3),
                        nu=2.5)

@@ -9,10 +9,13 @@ A saved surrogate is a folder:
   arrays, which it rebuilds without pickle. A file naming anything else (``os.system``, a class
   with a crafted ``__reduce__``) is refused before anything in it is built: loading a model
   never runs code from it;
+- ``predictor.npz``, for a kind that declares a predictor (the default ``muscle-gp``): the
+  fitted arrays its predictions need, read with ``allow_pickle=False`` and without
+  scikit-learn or skops, so a saved default surrogate loads in a fraction of a second;
 - ``metadata.json``: kind, inputs, recorded parameters, box, metrics, the training data's
   sha256, and the checks: the source version of every module the estimator calls
   (:func:`code_version`, the physics of the closed-form priors included) and the calibration
-  (``fem/calibration.json``) at training time, and the estimator file's sha256; ``sha256``, the
+  (``fem/calibration.json``) at training time, and the sha256 of the other files; ``sha256``, the
   hash of everything else in it (:func:`metadata_sha256`), so an edited box, kind or check is
   refused, never believed.
 
@@ -38,11 +41,13 @@ from pathlib import Path
 
 from mkm.fem.interface import INPUTS
 from mkm.fem.records import file_sha256, jsonable, provenance, source_version, write_json_atomic
+from mkm.surrogate import kinds
 from mkm.surrogate.kinds import model_modules, trusted_types
 from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.training_data import ALL_INPUTS, PARAMETERS
 
 ESTIMATOR_FILE = "estimator.skops"
+PREDICTOR_FILE = "predictor.npz"
 METADATA_FILE = "metadata.json"
 CHECKED_LIBRARIES = ("python", "numpy", "scipy", "scikit-learn")
 #: Largest metadata file read (a trained model's is ~15 kB): a larger one is refused unread.
@@ -80,6 +85,7 @@ def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
 
     ``lock``: a context manager held while writing (default: ``<directory>.lock``).
     """
+    import numpy as np
     import skops.io as sio
     from filelock import FileLock
 
@@ -89,12 +95,16 @@ def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
         staging = Path(tempfile.mkdtemp(prefix=f".{directory.name}-", dir=directory.parent))
         try:
             sio.dump(model.estimator, staging / ESTIMATOR_FILE)
+            checks = {"code_version": code_version(model.kind),
+                      "calibration": calibration_snapshot(),
+                      "estimator_sha256": file_sha256(staging / ESTIMATOR_FILE)}
+            if kinds.predictor_class(model.kind) is not None:
+                with open(staging / PREDICTOR_FILE, "wb") as f:
+                    np.savez(f, **model.estimator.predictor().arrays())
+                checks["predictor_sha256"] = file_sha256(staging / PREDICTOR_FILE)
             metadata = {**model.metadata, "kind": model.kind, "inputs": list(model.inputs),
                         "fixed": model.fixed, "box": {k: list(v) for k, v in model.box.items()},
-                        "checks": {"code_version": code_version(model.kind),
-                                   "calibration": calibration_snapshot(),
-                                   "estimator_sha256": file_sha256(staging / ESTIMATOR_FILE)},
-                        "saved": provenance()}
+                        "checks": checks, "saved": provenance()}
             metadata.setdefault("trained", metadata["saved"])
             metadata.pop("sha256", None)
             # hashed as it will be read back (numpy values as JSON numbers and lists)
@@ -232,23 +242,23 @@ def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
     """The surrogate saved in ``directory``, as a :class:`~mkm.fem.interface.ForceModel`.
 
     Raises ``ValueError`` if the folder is not a saved surrogate, its metadata is malformed or
-    edited (:func:`read_metadata`), its kind is not registered, the estimator file does not
-    match its recorded sha256 or holds a type outside those its kind trusts, or (unless
-    ``accept_mismatch``) the code, calibration or training data differ from the recorded ones;
-    warns (:class:`LibraryVersionWarning`) if the libraries differ from those that trained it.
+    edited (:func:`read_metadata`), its kind is not registered, the estimator file (or the
+    predictor file) does not match its recorded sha256, or (unless ``accept_mismatch``) the
+    code, calibration or training data differ from the recorded ones; warns
+    (:class:`LibraryVersionWarning`) if the libraries differ from those that trained it. A kind
+    with a predictor (:class:`mkm.surrogate.kinds.Kind`) predicts from ``predictor.npz`` (read
+    with ``allow_pickle=False``) and reads its estimator file on first use of ``.estimator``;
+    the others read it now. Either way a file holding a type outside those its kind trusts is
+    refused with a ``ValueError`` before anything in it is built.
     """
-    import skops.io as sio
-    from skops.io.exceptions import UntrustedTypesFoundException
-
     directory = Path(directory)
     metadata = read_metadata(directory)
-    trusted = list(trusted_types(metadata["kind"]))  # an unknown kind: refused here
-    estimator_path = directory / ESTIMATOR_FILE
+    trusted = trusted_types(metadata["kind"])  # an unknown kind: refused here
     checks = metadata["checks"]
-    if not estimator_path.is_file() or file_sha256(estimator_path) != checks[
-            "estimator_sha256"]:
-        raise ValueError(f"{str(estimator_path)!r} is missing or does not match the sha256 "
-                         f"recorded in {METADATA_FILE}: expected the file saved with it")
+    _check_file(directory / ESTIMATOR_FILE, checks["estimator_sha256"])
+    predictor_class = kinds.predictor_class(metadata["kind"])
+    if predictor_class is not None:
+        _check_file(directory / PREDICTOR_FILE, checks.get("predictor_sha256"))
     differ = mismatches(metadata)
     if differ and not accept_mismatch:
         raise ValueError(f"surrogate {str(directory)!r} was trained for another installation: "
@@ -263,18 +273,56 @@ def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
         warnings.warn(f"surrogate {str(directory)!r} was trained with other library versions "
                       f"({'; '.join(libraries)}): its predictions may differ; retrain it with "
                       "`mkm surrogate train`", LibraryVersionWarning, stacklevel=2)
+    args = (metadata["kind"], metadata["inputs"], metadata["fixed"], metadata["box"], metadata)
+
+    def load_estimator():
+        return _read_estimator(directory / ESTIMATOR_FILE, checks["estimator_sha256"],
+                               trusted, len(metadata["inputs"]))
+
+    if predictor_class is None:
+        return SurrogateForceModel(load_estimator(), *args)
+    predictor = _read_predictor(directory / PREDICTOR_FILE, predictor_class, metadata)
+    return SurrogateForceModel(None, *args, predictor=predictor, load_estimator=load_estimator)
+
+
+def _check_file(path: Path, sha256) -> None:
+    if not path.is_file() or file_sha256(path) != sha256:
+        raise ValueError(f"{str(path)!r} is missing or does not match the sha256 recorded in "
+                         f"{METADATA_FILE}: expected the file saved with it")
+
+
+def _read_estimator(path: Path, sha256: str, trusted, n_inputs: int):
+    """The estimator in ``path`` (checked against ``sha256`` again: it is read when first
+    used), built by skops from the types it trusts and ``trusted`` alone."""
+    import skops.io as sio
+    from skops.io.exceptions import UntrustedTypesFoundException
+
+    _check_file(path, sha256)
     try:
-        estimator = sio.load(estimator_path, trusted=trusted)
+        estimator = sio.load(path, trusted=list(trusted))
     except UntrustedTypesFoundException as exc:
-        raise ValueError(f"{str(estimator_path)!r} holds types outside the trusted list "
+        raise ValueError(f"{str(path)!r} holds types outside the trusted list "
                          f"({exc}): refused, a model file never runs code") from None
     except Exception as exc:  # noqa: BLE001 - any damage to the file: say which and stop
-        raise ValueError(f"{str(estimator_path)!r} cannot be read as a surrogate "
+        raise ValueError(f"{str(path)!r} cannot be read as a surrogate "
                          f"({type(exc).__name__}: {exc}): retrain it with `mkm surrogate "
                          "train`") from None
-    if getattr(estimator, "n_features_in_", None) != len(metadata["inputs"]):
-        raise ValueError(f"{str(estimator_path)!r} takes "
+    if getattr(estimator, "n_features_in_", None) != n_inputs:
+        raise ValueError(f"{str(path)!r} takes "
                          f"{getattr(estimator, 'n_features_in_', 'no known number of')} inputs: "
-                         f"expected the {len(metadata['inputs'])} its metadata names")
-    return SurrogateForceModel(estimator, metadata["kind"], metadata["inputs"],
-                               metadata["fixed"], metadata["box"], metadata)
+                         f"expected the {n_inputs} its metadata names")
+    return estimator
+
+
+def _read_predictor(path: Path, predictor_class, metadata: dict):
+    """The predictor of the arrays in ``path``: numbers only (``allow_pickle=False``)."""
+    import numpy as np
+
+    try:
+        with np.load(path, allow_pickle=False) as archive:
+            arrays = {name: archive[name] for name in archive.files}
+        return predictor_class.from_arrays(arrays, metadata["inputs"], metadata["fixed"])
+    except Exception as exc:  # noqa: BLE001 - any damage to the file: say which and stop
+        raise ValueError(f"{str(path)!r} cannot be read as the surrogate's arrays "
+                         f"({type(exc).__name__}: {exc}): retrain it with `mkm surrogate "
+                         "train`") from None

@@ -66,6 +66,10 @@ class Kind:
         Project modules whose code a loaded estimator of the kind runs.
     members : str or callable, optional
         A family's ``() -> {name: factory arguments}``; None for a single kind.
+    predictor : str or callable, optional
+        A class whose ``from_arrays(arrays, inputs, fixed)`` predicts from the arrays of the
+        fitted estimator's ``predictor().arrays()`` without scikit-learn; saved beside the
+        estimator, it makes loading fast. None: the estimator file is loaded.
     """
 
     name: str
@@ -76,6 +80,7 @@ class Kind:
     trusted_types: tuple[str, ...] = ()
     modules: tuple[str, ...] = ()
     members: str | Callable | None = None
+    predictor: str | Callable | None = None
 
     def names(self) -> list[str]:
         """The kind names this entry builds: its own, or every member of the family."""
@@ -178,6 +183,12 @@ def trusted_types(kind: str) -> tuple[str, ...]:
     return lookup(kind)[0].trusted_types
 
 
+def predictor_class(kind: str):
+    """The class that predicts ``kind`` from its saved arrays, or None (see :class:`Kind`)."""
+    entry = lookup(kind)[0]
+    return None if entry.predictor is None else _resolve(entry.predictor)
+
+
 def model_modules(kind: str) -> tuple[str, ...]:
     """The project modules whose code a loaded estimator of ``kind`` runs."""
     return (*BASE_MODULES, *lookup(kind)[0].modules)
@@ -190,7 +201,8 @@ for _kind in (
          "and monotone in pressure, with a calibrated predictive std",
          study_default=True,
          trusted_types=("mkm.surrogate.muscle_gp.MuscleThresholdGP", *KERNEL_TYPES),
-         modules=("mkm.surrogate.muscle_gp",)),
+         modules=("mkm.surrogate.muscle_gp",),
+         predictor="mkm.surrogate.muscle_predictor:MusclePredictor"),
     Kind("physics", "mkm.surrogate.feature_models:physics_model", "physics ridge",
          "F = A max(0, P - P*) with the closed form's slope and threshold corrected by "
          "ridge-penalised polynomials of the geometry (no std)",

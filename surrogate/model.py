@@ -14,17 +14,11 @@ from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
-from sklearn import config_context
-from sklearn.gaussian_process import GaussianProcessRegressor
-from sklearn.pipeline import Pipeline
-from sklearn.preprocessing import FunctionTransformer
 from threadpoolctl import ThreadpoolController
 
 from mkm.fem.interface import INPUTS, Domain, ForceModel
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import L0_MM
-from mkm.surrogate.muscle_gp import MuscleThresholdGP
-from mkm.surrogate.threshold_linear import ThresholdLinearRegressor
 from mkm.surrogate.training_data import PARAMETERS
 
 # Relative slack of "the same value" for a recorded parameter (a CSV round trip keeps ~1e-15).
@@ -78,8 +72,9 @@ class SurrogateForceModel(ForceModel):
 
     Parameters
     ----------
-    estimator : fitted scikit-learn regressor
-        Of ``X`` with the columns ``inputs``.
+    estimator : fitted scikit-learn regressor or None
+        Of ``X`` with the columns ``inputs``; None: ``load_estimator`` gives it on first use
+        of :attr:`estimator`.
     kind : str
         The estimator's kind (:mod:`mkm.surrogate.kinds`).
     inputs : sequence of str
@@ -95,13 +90,23 @@ class SurrogateForceModel(ForceModel):
         :func:`default_parameters` (the braid angle of the calibration in effect). A value
         other than the recorded one of a parameter the estimator does not take raises
         ``ValueError`` (here for a given value, at ``predict`` for a default).
+    predictor : object, optional
+        Predicts from the estimator's fitted arrays without scikit-learn (``predict(X,
+        return_std)``, ``has_std``; see :class:`mkm.surrogate.kinds.Kind`): predictions go
+        through it, the same numbers as the estimator's.
+    load_estimator : callable, optional
+        ``() -> estimator``, when ``estimator`` is None.
     """
 
     def __init__(self, estimator, kind: str, inputs, fixed: dict, box: dict,
                  metadata: dict | None = None, L0_mm: float | None = None,
                  theta0_deg: float | None = None, C10_MPa: float | None = None,
-                 C01_MPa: float | None = None):
-        self.estimator = estimator
+                 C01_MPa: float | None = None, *, predictor=None, load_estimator=None):
+        if estimator is None and load_estimator is None:
+            raise ValueError("SurrogateForceModel needs an estimator or load_estimator")
+        self._estimator = estimator
+        self._load_estimator = load_estimator
+        self.predictor = predictor
         self.kind = kind
         self.inputs = tuple(inputs)
         self.fixed = dict(fixed)
@@ -112,7 +117,15 @@ class SurrogateForceModel(ForceModel):
         self._given = {"L0_mm": L0_mm, "theta0_deg": theta0_deg, "C10_MPa": C10_MPa,
                        "C01_MPa": C01_MPa}
         self._resolve({k: v for k, v in self._given.items() if v is not None})  # refuse now
-        self._fast_predict = _validated_predictor(estimator)
+        self._fast_predict = (predictor.predict if predictor is not None
+                              else _validated_predictor(self.estimator))
+
+    @property
+    def estimator(self):
+        """The fitted estimator (read from its model file on first use if not given)."""
+        if self._estimator is None:
+            self._estimator = self._load_estimator()
+        return self._estimator
 
     @property
     def parameters(self) -> dict[str, float]:
@@ -148,8 +161,9 @@ class SurrogateForceModel(ForceModel):
             raise ValueError(f"{self.name} takes no parameter {', '.join(unknown)}: expected "
                              f"some of {', '.join(PARAMETERS)}")
         merged = {**self._given, **{k: v for k, v in parameters.items() if v is not None}}
-        return SurrogateForceModel(self.estimator, self.kind, self.inputs, self.fixed,
-                                   self.box, self.metadata, **merged)
+        return SurrogateForceModel(self._estimator, self.kind, self.inputs, self.fixed,
+                                   self.box, self.metadata, **merged, predictor=self.predictor,
+                                   load_estimator=self._load_estimator)
 
     def params(self):
         dataset = self.metadata.get("dataset", {})
@@ -185,8 +199,15 @@ class SurrogateForceModel(ForceModel):
     @property
     def has_std(self) -> bool:
         """True when the estimator gives a predictive standard deviation."""
+        if self.predictor is not None:
+            return self.predictor.has_std
+        from sklearn.gaussian_process import GaussianProcessRegressor
+        from sklearn.pipeline import Pipeline
+
+        from mkm.surrogate import muscle_gp
+
         final = self.estimator[-1] if isinstance(self.estimator, Pipeline) else self.estimator
-        return isinstance(final, GaussianProcessRegressor | MuscleThresholdGP)
+        return isinstance(final, GaussianProcessRegressor | muscle_gp.MuscleThresholdGP)
 
     def parameters_outside(self, parameters=None) -> list[str]:
         """The muscle parameters outside the training box, as ``name=value not in [lo, hi]``."""
@@ -219,6 +240,8 @@ class SurrogateForceModel(ForceModel):
         if self._fast_predict is not None:  # numpy on a few points: no thread pool wakes up
             result = self._fast_predict(X, self.has_std)
         else:
+            from sklearn import config_context
+
             # validate_inputs has checked the inputs; with matrices this small BLAS threads
             # only contend (a GP's 33 points took 8 ms threaded on a busy machine, 1.2 on one)
             with config_context(assume_finite=True), _blas().limit(limits=1):
@@ -241,13 +264,20 @@ def _validated_predictor(estimator):
     """``(X, return_std) -> force[, std]`` without scikit-learn's per-call checks (which cost
     more than the arithmetic) for the threshold-linear estimators; None for the others.
     ``ForceModel.predict`` has validated the inputs already."""
-    if isinstance(estimator, MuscleThresholdGP):
+    from sklearn.pipeline import Pipeline
+    from sklearn.preprocessing import FunctionTransformer
+
+    # modules, not names, imported: the code version reads this file, and resolving a name
+    # would load the module (and scikit-learn) where only the predictor is needed
+    from mkm.surrogate import muscle_gp, threshold_linear
+
+    if isinstance(estimator, muscle_gp.MuscleThresholdGP):
         return estimator.predict_validated
     if not (isinstance(estimator, Pipeline) and len(estimator.steps) == 2):
         return None
     features, final = estimator[0], estimator[-1]
-    if not (isinstance(features, FunctionTransformer) and isinstance(final,
-                                                                    ThresholdLinearRegressor)):
+    if not (isinstance(features, FunctionTransformer)
+            and isinstance(final, threshold_linear.ThresholdLinearRegressor)):
         return None
     kw_args = features.kw_args or {}
     return lambda X, _std=False: final.predict_validated(features.func(X, **kw_args))

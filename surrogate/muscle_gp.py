@@ -8,24 +8,23 @@ from __future__ import annotations
 from numbers import Integral
 
 import numpy as np
-from scipy.special import ndtr
 from sklearn.base import BaseEstimator, RegressorMixin
 from sklearn.utils._param_validation import Interval
 from sklearn.utils.validation import check_is_fitted, validate_data
 from threadpoolctl import threadpool_limits
 
-from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.thickwall import effective_eps_of_slope, effective_eps_of_threshold
 from mkm.surrogate.coverage import coverage_fit
-from mkm.surrogate.features import braid_slope_N_per_bar, columns_of, thickwall_threshold_bar
-from mkm.surrogate.gp import (
-    fit_gaussian_process,
-    leave_one_out,
-    posterior_mean_std,
-    predict_mean_std,
+from mkm.surrogate.gp import fit_gaussian_process, leave_one_out, predict_mean_std
+from mkm.surrogate.muscle_predictor import (
+    LINEARITY_BINS_BAR,
+    MusclePredictor,
+    calibrated_factor,
+    force_parts,
+    from_log_k,
+    log_k,
+    muscle_values,
 )
-
-LINEARITY_BINS_BAR = (0.0, 0.1, 0.25, 0.5, 1.0, 2.0, np.inf)  # of P - P*
 
 
 def muscle_slopes(P, y, groups, threshold=None):
@@ -125,9 +124,7 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
         self.random_state = random_state
 
     def _muscle(self, X):
-        v = columns_of(X, tuple(self.inputs), self.fixed)
-        z = np.column_stack([X[:, 1:], (v["D0_mm"] + 2.0 * v["t0_mm"]) / v["L0_mm"]])
-        return v, z
+        return muscle_values(X, self.inputs, self.fixed)
 
     def fit(self, X, y, threshold_pressure_bar=None):
         """Fit on FE sweeps (rows of several pressures per muscle); ``threshold_pressure_bar``:
@@ -174,58 +171,23 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
 
     def _log_k(self, X):
         """Muscle parameters, then mean and (uncalibrated) std of ``log k_A`` and ``log k_P``."""
-        v, z = self._muscle(X)
-        zs = (z - self.z_mean_) / self.z_scale_
-        return (v, *posterior_mean_std(self.slope_posterior_, zs),
-                *posterior_mean_std(self.threshold_posterior_, zs))
+        return log_k(X, self.inputs, self.fixed, self.z_mean_, self.z_scale_,
+                     self.slope_posterior_, self.threshold_posterior_)
 
     def _decompose(self, X):
-        v, m_A, s_A, m_P, s_P = self._log_k(X)
-        factor = self._calibrated(m_A)
-        return self._from_logk(v, m_A, factor * s_A, m_P, factor * s_P)
+        return self.predictor().decompose(X)
 
     def _calibrated(self, m_A, c=None, beta=None, reference=None):
-        """``c (log k_A / m_ref)^beta``: the factor of both processes' std of ``log k`` at the
-        slope process's mean ``m_A``; the fitted values by default."""
-        c = self.std_scale_ if c is None else c
-        beta = self.std_power_ if beta is None else beta
-        reference = self.std_reference_ if reference is None else reference
-        # k_A > 1 (the caps stretch the shortening); the clip keeps the power finite if not
-        return c * (np.maximum(m_A, 1e-3) / reference) ** beta
+        """``c (log k_A / m_ref)^beta`` (:func:`~mkm.surrogate.muscle_predictor.
+        calibrated_factor`); the fitted values by default."""
+        return calibrated_factor(m_A, self.std_scale_ if c is None else c,
+                                 self.std_power_ if beta is None else beta,
+                                 self.std_reference_ if reference is None else reference)
 
-    @staticmethod
-    def _from_logk(v, m_A, s_A, m_P, s_P):
-        """Slope and threshold (with first-order std) from ``log k`` of each (mean and std)."""
-        eps, theta0 = v["eps"], v["theta0_deg"]
-        top = 0.999 * chou_hannaford_eps_max(theta0)
-        e_A = np.minimum(eps * np.exp(m_A), top)
-        e_P = np.minimum(eps * np.exp(m_P), top)
-        A0 = braid_slope_N_per_bar(v["D0_mm"], v["t0_mm"], 0.0, theta0)
-        c2 = np.cos(np.deg2rad(theta0)) ** 2
-        A = np.maximum(A0 * (3.0 * (1.0 - e_A) ** 2 * c2 - 1.0) / (3.0 * c2 - 1.0), 0.0)
-        sd_A = A0 * 6.0 * (1.0 - e_A) * c2 / (3.0 * c2 - 1.0) * e_A * s_A  # |dA/dlog k| s
-        args, rubber = (v["D0_mm"], v["t0_mm"]), (v["C10_MPa"], v["C01_MPa"])
-        Pstar = np.maximum(thickwall_threshold_bar(*args, e_P, theta0, *rubber), 0.0)
-        step = 1e-6
-        dP_dlogk = (thickwall_threshold_bar(*args, e_P * (1 + step), theta0, *rubber)
-                    - Pstar) / step
-        return A, sd_A, Pstar, np.abs(dP_dlogk) * s_P
+    _from_logk = staticmethod(from_log_k)
 
     def _force_parts(self, P, A, s_A, Pstar, s_P):
-        """Force, the variance from the std of ``A`` and ``P*``, and the linearity floor."""
-        force = A * np.maximum(P - Pstar, 0.0)
-        # E[max(0, x)] and E[max(0, x)^2] for x = P - P* ~ N(mu, s^2); A log-normal with
-        # relative std s_A / A
-        mu, s = P - Pstar, np.maximum(s_P, 1e-12)
-        t = mu / s
-        cdf, pdf = ndtr(t), np.exp(-0.5 * t**2) / np.sqrt(2.0 * np.pi)  # scipy.stats.norm's
-        e1 = mu * cdf + s * pdf
-        e2 = (mu**2 + s**2) * cdf + mu * s * pdf
-        rel = np.divide(s_A, A, out=np.zeros(np.broadcast_shapes(np.shape(s_A), np.shape(A))),
-                        where=A > 0)
-        var = np.maximum(A**2 * (np.exp(2 * rel**2) * e2 - np.exp(rel**2) * e1**2), 0.0)
-        floor = A * self.linearity_bar_[np.digitize(P - Pstar, LINEARITY_BINS_BAR[1:-1])]
-        return force, var, np.where(force > 0, floor, 0.0)
+        return force_parts(P, A, s_A, Pstar, s_P, self.linearity_bar_)
 
     def _calibrate_std(self, X, y, v, zs, first, groups, fitted):
         """Fit ``std_scale_`` and ``std_power_`` (:func:`coverage_fit`) to leave-one-muscle-out
@@ -288,12 +250,13 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
 
     def predict_validated(self, X, return_std: bool = False):
         """:meth:`predict` on a float array the caller has validated (no per-call checks)."""
-        # slope and threshold once per muscle: a sweep is many pressures of a few muscles
-        Z = np.ascontiguousarray(X[:, 1:])
-        keys = Z.view(np.dtype((np.void, Z.dtype.itemsize * Z.shape[1]))).ravel()
-        _, first, which = np.unique(keys, return_index=True, return_inverse=True)
-        A, s_A, Pstar, s_P = (part[which] for part in self._decompose(X[first]))
-        if not return_std:
-            return A * np.maximum(X[:, 0] - Pstar, 0.0)
-        force, var, floor = self._force_parts(X[:, 0], A, s_A, Pstar, s_P)
-        return force, np.sqrt(var + floor**2)
+        return self.predictor().predict(X, return_std)
+
+    def predictor(self) -> MusclePredictor:
+        """The fitted arrays that predict, without scikit-learn (:mod:`mkm.surrogate.
+        muscle_predictor`)."""
+        check_is_fitted(self)
+        return MusclePredictor(tuple(self.inputs), dict(self.fixed or {}), self.z_mean_,
+                               self.z_scale_, self.slope_posterior_, self.threshold_posterior_,
+                               float(self.std_scale_), float(self.std_power_),
+                               float(self.std_reference_), self.linearity_bar_)

@@ -276,3 +276,51 @@ def test_malformed_metadata_is_one_value_error(saved, tmp_path_factory, data, si
             model.error_margin()
     except ValueError as exc:
         assert "\n" not in str(exc)
+
+
+@pytest.fixture(scope="module")
+def saved_gp(thickwall_dataset, tmp_path_factory):
+    model = train_surrogate("muscle-gp", thickwall_dataset, splits=0)
+    return model, save_model(model, tmp_path_factory.mktemp("models") / "muscle-gp")
+
+
+def test_default_kind_loads_without_scikit_learn(saved_gp):
+    # The muscle GP predicts from predictor.npz: loading and predicting import neither
+    # scikit-learn nor skops (1-2 s of imports), and give the estimator's numbers to the bit.
+    _, directory = saved_gp
+    script = ("import sys\nimport numpy as np\nfrom mkm.surrogate.io import load_model\n"
+              f"m = load_model({str(directory)!r})\n"
+              "p = m.predict(np.linspace(0, 2.5, 11), 41.0, 2.7, 0.13)\n"
+              "print(sorted(k for k in ('sklearn', 'skops') if k in sys.modules))\n"
+              "X = np.column_stack([np.linspace(0, 2.5, 11), *np.full((3, 11), [[41.0], [2.7],"
+              " [0.13]])])\n"
+              "force, std = m.estimator.predict(X, return_std=True)\n"
+              "print(np.array_equal(force, p.force_N), np.array_equal(std, "
+              "p.extras['force_std_N']))\n")
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         timeout=120, check=True)
+    assert run.stdout.split("\n")[:2] == ["[]", "True True"]
+
+
+def test_predictor_file_is_numbers_only(saved_gp, tmp_path):
+    # A predictor file holding a pickled object, with every hash made to match, is refused
+    # (read with allow_pickle=False), and the marker its pickle would write never appears.
+    from mkm.surrogate.io import PREDICTOR_FILE
+
+    marker = tmp_path / "pwned"
+    copy = copy_model(saved_gp[1], tmp_path / "crafted")
+    script = ("import numpy as np, sys\n"
+              "class Evil:\n"
+              "    def __reduce__(self):\n"
+              f"        return (open, ({str(marker)!r}, 'w'))\n"
+              "a = np.empty(1, dtype=object); a[0] = Evil()\n"
+              f"np.savez({str(copy / PREDICTOR_FILE)!r}, z_mean=a)\n")
+    subprocess.run([sys.executable, "-c", script], check=True)
+    rewrite_metadata(copy, lambda m: m["checks"].update(
+        {"predictor_sha256": file_sha256(copy / PREDICTOR_FILE)}))
+    with pytest.raises(ValueError, match="cannot be read as the surrogate's arrays"):
+        load_model(copy)
+    assert not marker.exists()
+    (copy / PREDICTOR_FILE).write_bytes(b"edited")
+    with pytest.raises(ValueError, match="predictor.npz' is missing or does not match"):
+        load_model(copy)
