@@ -35,6 +35,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 import time
 import warnings
 
@@ -72,11 +73,13 @@ def process_seconds(python: str, model: str, repeats: int) -> dict:
     :data:`LOAD_COMMAND` with ``--model model``, after one warm-up run."""
     command = [python, *LOAD_COMMAND, "--model", model]
     env = {**os.environ, "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1"}
-    subprocess.run(command, check=True, capture_output=True, env=env)  # trains if not cached
+    # run outside any checkout: `-m mkm` would find a source tree in the working directory
+    run = {"check": True, "capture_output": True, "env": env, "cwd": tempfile.gettempdir()}
+    subprocess.run(command, **run)  # trains the surrogate if it is not cached
     wall, cpu = [], []
     for _ in range(repeats):
         before, start = os.times(), time.perf_counter()
-        subprocess.run(command, check=True, capture_output=True, env=env)
+        subprocess.run(command, **run)
         after = os.times()
         wall.append(time.perf_counter() - start)
         cpu.append(after.children_user + after.children_system - before.children_user

@@ -162,7 +162,7 @@ def make_estimator(kind: str, inputs=CALL_INPUTS, fixed=None, random_state: int 
 def describe() -> str:
     """The kinds in one line, for help texts: ``best (muscle-gp), muscle-gp, physics, ... or
     net-<layers>x<size>-...``."""
-    listed = [k.name for k in _REGISTRY.values()]
+    listed = [k.name for k in registered()]
     return f"best ({BEST}), " + ", ".join(listed[:-1]) + f" or {listed[-1]}"
 
 
@@ -170,12 +170,12 @@ def describe_each() -> list[str]:
     """One line per registered entry: name, label, description (and the study default)."""
     return [f"{k.name}: {k.label}, {k.description}" + (" (scored by `mkm study`)"
                                                          if k.study_default else "")
-            for k in _REGISTRY.values()]
+            for k in registered()]
 
 
 def study_default() -> tuple[str, ...]:
     """The kinds ``mkm study`` scores unless asked for others."""
-    return tuple(n for k in _REGISTRY.values() if k.study_default for n in k.names())
+    return tuple(n for k in registered() if k.study_default for n in k.names())
 
 
 def trusted_types(kind: str) -> tuple[str, ...]:

@@ -51,7 +51,8 @@ def register(subparsers) -> None:
         "train", help="fit a surrogate on the FE dataset and save it",
         description="Fit a surrogate kind on an FE dataset (errors over repeated splits that "
         "hold out whole muscles) and save it as a model folder that --model / "
-        "surrogate:path=DIR accept (JSON and skops arrays: loading it runs no code).",
+        "surrogate:path=DIR accept (JSON and skops arrays: loading it runs no code). The "
+        "kinds: " + "; ".join(kinds.describe_each()) + ".",
         epilog="example: mkm surrogate train --kind gp --out mkm-out/models/gp")
     _dataset_argument(train)
     train.add_argument("--kind", default="best", help=kinds.describe())
