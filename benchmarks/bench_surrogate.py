@@ -33,6 +33,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -71,7 +72,7 @@ LOAD_COMMAND = ("-m", "mkm", "fem", "solve", "--D0", "40", "--t0", "3", "--eps",
 def process_seconds(python: str, model: str, repeats: int) -> dict:
     """Median wall and CPU (user + system) seconds of ``repeats`` whole processes of
     :data:`LOAD_COMMAND` with ``--model model``, after one warm-up run."""
-    command = [python, *LOAD_COMMAND, "--model", model]
+    command = [os.path.abspath(shutil.which(python) or python), *LOAD_COMMAND, "--model", model]
     env = {**os.environ, "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1"}
     # run outside any checkout: `-m mkm` would find a source tree in the working directory
     run = {"check": True, "capture_output": True, "env": env, "cwd": tempfile.gettempdir()}

@@ -42,7 +42,6 @@ from pathlib import Path
 from mkm.fem.interface import INPUTS
 from mkm.fem.records import file_sha256, jsonable, provenance, source_version, write_json_atomic
 from mkm.surrogate import kinds
-from mkm.surrogate.kinds import model_modules, trusted_types
 from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.training_data import ALL_INPUTS, PARAMETERS
 
@@ -61,7 +60,7 @@ class LibraryVersionWarning(UserWarning):
 def code_version(kind: str) -> str:
     """Source version of everything a loaded surrogate of ``kind`` calls
     (:func:`mkm.surrogate.kinds.model_modules` and the project modules they import)."""
-    return source_version(*model_modules(kind))
+    return source_version(*kinds.model_modules(kind))
 
 
 def metadata_sha256(metadata: dict) -> str:
@@ -253,7 +252,7 @@ def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
     """
     directory = Path(directory)
     metadata = read_metadata(directory)
-    trusted = trusted_types(metadata["kind"])  # an unknown kind: refused here
+    trusted = kinds.trusted_types(metadata["kind"])  # an unknown kind: refused here
     checks = metadata["checks"]
     _check_file(directory / ESTIMATOR_FILE, checks["estimator_sha256"])
     predictor_class = kinds.predictor_class(metadata["kind"])
