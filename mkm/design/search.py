@@ -61,26 +61,18 @@ def surrogate_uncertainty(model: ForceModel, prediction, force_N: float) -> tupl
     ``FALLBACK_RELATIVE_MARGIN`` of the required force.
     """
     shape = np.shape(prediction.force_N)
+    margin = model.error_margin() if hasattr(model, "error_margin") else None
     if "force_std_N" in prediction.extras:
-        coverage = ((getattr(model, "metadata", None) or {}).get("metrics") or {}).get(
-            "muscle_held_out", {}).get("within_2std", {}).get("median")
-        told = (f"; held-out muscles within 2 std: {100 * coverage:.0f} %"
-                if coverage is not None else "")
+        covered = margin.within_2std if margin is not None else None
+        told = (f"; held-out muscles within 2 std: {100 * covered:.0f} %"
+                if covered is not None else "")
         return (STD_FACTOR * np.asarray(prediction.extras["force_std_N"], dtype=float),
                 f"{STD_FACTOR:g} x the surrogate's predictive standard deviation{told}")
-    metrics = (getattr(model, "metadata", None) or {}).get("metrics") or {}
-    recorded = []
-    for table in (metrics, metrics.get("muscle_held_out") or {}):  # per split / per muscle
-        if isinstance(table.get("max_abs_test_N"), dict):
-            recorded.append(float(table["max_abs_test_N"]["max"]))
-    tests = metrics.get("test_muscles")
-    if isinstance(tests, list):  # a dict says why they were not evaluated
-        recorded += [float(m["max_abs_error_N"]) for m in tests if "max_abs_error_N" in m]
-    if recorded:
-        worst = max(recorded)
+    if margin is not None and margin.worst_abs_error_N is not None:
+        worst = margin.worst_abs_error_N
         return (np.full(shape, RECORDED_ERROR_FACTOR * worst),
                 f"{RECORDED_ERROR_FACTOR:g} x the largest held-out error recorded at training "
-                f"({worst:.3g} N)")
+                f"({worst:.3g} N, {margin.measured_on})")
     return (np.full(shape, FALLBACK_RELATIVE_MARGIN * force_N),
             f"{100 * FALLBACK_RELATIVE_MARGIN:g} % of the required force (the surrogate records "
             "no error)")
