@@ -32,7 +32,8 @@ extensions = [
     "sphinx.ext.viewcode",
 ]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
-exclude_patterns = ["_build", "README.md"]
+# the generated tables are included into pages, not pages of their own
+exclude_patterns = ["_build", "measured", "_generated/*.md"]
 myst_enable_extensions = ["colon_fence", "dollarmath"]
 myst_heading_anchors = 3
 
@@ -40,6 +41,7 @@ myst_heading_anchors = 3
 # docstrings point into scikit-learn's own glossary
 autodoc_default_options = {
     "members": True,
+    "undoc-members": True,  # a public function without a docstring still gets its entry
     "show-inheritance": True,
     "exclude-members": "set_fit_request, set_predict_request, set_score_request, "
                        "set_transform_request, set_partial_fit_request",

@@ -11,16 +11,19 @@ command wrote, and each include names that command, so rerunning it refreshes th
 - ``calibration.md``: the shipped braid-angle calibration ``fem/calibration.json``
   (``mkm fem calibrate --update-shipped``);
 - ``datasets.md``: what the shipped FE datasets are, from their JSON sidecars;
-- ``bench_*.md``: the benchmark tables, from the JSON files the benchmark scripts write into
-  ``docs/measured/`` (``make bench-docs``);
+- ``bench_*.md``: the benchmark tables, from the results the benchmark scripts wrote into
+  ``docs/measured/`` (``make bench-docs`` runs them: :data:`BENCHMARKS`);
 - ``examples/``: one page per script of ``examples/``.
 
-Usage: ``python docs/generate.py`` (``sphinx-build`` runs it through ``conf.py``).
+Usage: ``python docs/generate.py [--run-benchmarks [FILE ...]]`` (``sphinx-build`` runs it
+without options through ``conf.py``).
 """
 
 from __future__ import annotations
 
+import functools
 import importlib
+import inspect
 import json
 import math
 import pkgutil
@@ -83,9 +86,10 @@ def public_modules(package: str) -> list[str]:
             and not any(part.startswith("_") for part in n.split("."))]
 
 
+@functools.cache
 def all_modules() -> list[str]:
     """Every documented module of the four packages, each once."""
-    return sorted({m for package in PACKAGES for m in public_modules(package)})
+    return tuple(sorted({m for package in PACKAGES for m in public_modules(package)}))
 
 
 def exported(module: str) -> list[str]:
@@ -94,10 +98,29 @@ def exported(module: str) -> list[str]:
 
 
 def defining_module(module: str, name: str) -> str:
-    """Where an exported name is documented: the module that defines it (a lazy export names
-    the module it loads from)."""
+    """Where an exported name is documented: the module that defines it. A function or class
+    names it; a constant is assigned at the top level of its module's source."""
     obj = getattr(importlib.import_module(module), name)
-    return getattr(obj, "__module__", None) or module
+    if inspect.isfunction(obj) or inspect.isclass(obj):
+        return obj.__module__
+    for candidate in all_modules():
+        if candidate.startswith(module) and name in _assigned(candidate) and vars(
+                importlib.import_module(candidate)).get(name) is obj:
+            return candidate
+    return module
+
+
+def _assigned(module: str) -> set[str]:
+    """Names a module assigns at its top level (not those it imports)."""
+    import ast
+
+    source = inspect.getsource(importlib.import_module(module))
+    names = set()
+    for node in ast.parse(source).body:
+        targets = node.targets if isinstance(node, ast.Assign) else (
+            [node.target] if isinstance(node, ast.AnnAssign) else [])
+        names |= {t.id for t in targets if isinstance(t, ast.Name)}
+    return names
 
 
 def module_page(module: str) -> str:
@@ -120,7 +143,25 @@ def module_page(module: str) -> str:
                       + ", ".join(own), ""]
     else:
         lines += [f".. automodule:: {module}", ""]
+    # constants a package exports from here that autodoc leaves out (no ``#:`` comment)
+    from sphinx.pycode import ModuleAnalyzer
+
+    commented = {name for (_, name) in ModuleAnalyzer.for_module(module).find_attr_docs()}
+    for name in sorted(set(exported_constants().get(module, ())) - commented):
+        lines += [f".. autodata:: {module}.{name}", "   :no-value:", ""]
     return "\n".join(lines)
+
+
+@functools.cache
+def exported_constants() -> dict[str, list[str]]:
+    """Home module -> the constants (not functions or classes) some module exports from it."""
+    homes: dict[str, list[str]] = {}
+    for module in all_modules():
+        for name in exported(module):
+            obj = getattr(importlib.import_module(module), name)
+            if not (inspect.isfunction(obj) or inspect.isclass(obj) or inspect.ismodule(obj)):
+                homes.setdefault(defining_module(module, name), []).append(name)
+    return homes
 
 
 def api_pages() -> None:
@@ -166,7 +207,13 @@ def study_tables() -> None:
     save_figure(speed_accuracy_figure(summary, info["machine_name"]), OUT / "speed_accuracy.png")
 
     muscles = pd.DataFrame(info["muscles"], columns=["muscle", "D0_mm", "t0_mm", "eps", "role"])
-    write(OUT / "study_muscles.md", markdown_table(muscles) + note)
+    pressures = info["pressures_bar"]
+    lengths = sorted({p["params"]["L0_mm"] for p in info["predictors"].values()
+                      if "L0_mm" in p["params"]})
+    intro = (f"{len(muscles)} study muscles at L0 {', '.join(f'{v:g}' for v in lengths)} mm, "
+             f"each at {len(pressures)} pressures from {min(pressures):g} to "
+             f"{max(pressures):g} bar:\n\n")
+    write(OUT / "study_muscles.md", intro + markdown_table(muscles) + note)
 
     scored = errors[errors["force_ref_N"].notna() & errors["valid"].astype(bool)]
     surrogates = scored[scored["family"].str.contains("surrogate", case=False)]
@@ -217,22 +264,74 @@ def dataset_table() -> None:
             "command that wrote it.*\n")
 
 
+#: The benchmarks whose tables the docs show: output file in docs/measured/ -> command (run from
+#: the repository root by ``python docs/generate.py --run-benchmarks``, i.e. ``make bench-docs``).
+#: A ``.csv`` output is the script's stdout (a ``#`` line of provenance, then CSV), unless the
+#: command writes it into ``{dir}`` with its JSON sidecar.
+BENCHMARKS = {
+    "mesh_convergence.csv": "-m mkm fem convergence --out {dir}",
+    "thickwall.csv": "benchmarks/bench_thickwall.py --points 200000 --repeats 5",
+    "axisym.csv": "benchmarks/bench_axisym.py --levels coarse,medium,fine --repeats 3",
+    "design.json": "benchmarks/bench_design.py --repeats 5 --fe-repeats 2 --out {out}",
+    "dataset.json": "benchmarks/bench_dataset.py --workers 1 2 --json {out}",
+}
+
+
+def run_benchmarks(names=None) -> None:
+    """Run the benchmarks of :data:`BENCHMARKS` (all, or ``names``) and keep their results in
+    ``docs/measured/``."""
+    import shlex
+    import subprocess
+    import sys
+
+    MEASURED.mkdir(exist_ok=True)
+    for name, command in BENCHMARKS.items():
+        if names and name not in names:
+            continue
+        target = MEASURED / name
+        args = [sys.executable, *shlex.split(command.format(out=target, dir=MEASURED))]
+        print(f"running {' '.join(args[1:])}", file=sys.stderr)
+        done = subprocess.run(args, cwd=ROOT, capture_output=True, text=True, check=True)
+        if name.endswith(".csv") and "{dir}" not in command:
+            target.write_text(done.stdout, encoding="utf-8")
+
+
+def _benchmark_frame(path: Path) -> tuple[pd.DataFrame, str]:
+    """A benchmark's result table and a line saying when and where it was measured."""
+    sidecar = path.with_suffix(".json")
+    if path.suffix == ".csv" and sidecar.exists():
+        record = json.loads(sidecar.read_text(encoding="utf-8"))
+        return pd.read_csv(path), _measured_on(record)
+    if path.suffix == ".csv":
+        first, _, rest = path.read_text(encoding="utf-8").partition("\n")
+        import io
+
+        return pd.read_csv(io.StringIO(rest)), first.lstrip("# ").strip()
+    record = json.loads(path.read_text(encoding="utf-8"))
+    rows = record.get("rows") or record.get("results")
+    return pd.json_normalize(rows), _measured_on(record)
+
+
+def _measured_on(record: dict) -> str:
+    return f"{record.get('date_utc', '?')}, {record.get('machine', '?')}, " + ", ".join(
+        f"{k} {v}" for k, v in record.get("versions", {}).items())
+
+
 def benchmark_tables() -> None:
-    """One Markdown table per benchmark result in ``docs/measured/`` (written by the benchmark
-    scripts' ``--json``/``--out``; see ``make bench-docs``)."""
-    written = set()
-    for path in sorted(MEASURED.glob("*.json")):
-        record = json.loads(path.read_text(encoding="utf-8"))
-        frame = pd.DataFrame(record["rows"])
-        meta = record.get("provenance", record)
-        target = OUT / f"bench_{path.stem}.md"
-        text = (f"Measured {meta.get('date_utc', '?')[:10]} on {meta.get('machine', '?')}, "
-                f"command `{record.get('command', '?')}`:\n\n" + markdown_table(frame)
-                + source_note(f"`docs/measured/{path.name}`", record.get("command", "?")))
-        write(target, text)
-        written.add(target)
-    for stale in set(OUT.glob("bench_*.md")) - written:
-        stale.unlink()
+    """One Markdown table per benchmark result in ``docs/measured/``, with the command that
+    measured it; a benchmark not run yet gets a note saying how to run it."""
+    for name, command in BENCHMARKS.items():
+        path = MEASURED / name
+        shown = command.replace(" --out {out}", "").replace(" --json {out}", "").replace(
+            "{dir}", "docs/measured")
+        if not path.exists():
+            text = (f"*Not measured in this checkout: run `make bench-docs` (or `python "
+                    f"{shown}`).*\n")
+        else:
+            frame, measured = _benchmark_frame(path)
+            text = (f"`python {shown}`; measured {measured}.\n\n" + markdown_table(frame, 6)
+                    + source_note(f"`docs/measured/{name}`", "make bench-docs"))
+        write(OUT / f"bench_{path.stem}.md", text)
 
 
 # --- examples ---------------------------------------------------------------------------------
@@ -279,4 +378,13 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--run-benchmarks", nargs="*", metavar="FILE",
+                        help="first run the benchmarks (all, or these outputs: "
+                             + ", ".join(BENCHMARKS) + ") into docs/measured/")
+    options = parser.parse_args()
+    if options.run_benchmarks is not None:
+        run_benchmarks(options.run_benchmarks)
     main()

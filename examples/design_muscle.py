@@ -14,7 +14,7 @@ The same from the command line:
 
 The check below solves the chosen design again with the FE model built by hand, at the mesh the
 verification used: the forces the design reports are the FE's, and they meet the requirements.
-The surrogate is trained on first use (about half a minute, then cached).
+The default surrogate is trained once, on first use, and cached.
 """
 
 from mkm.design import design

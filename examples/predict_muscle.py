@@ -10,7 +10,7 @@ wall on the slope above their threshold pressure. So each one's slope dF/dP abov
 must equal the paper's; what tells them apart is the threshold (zero for Equation 2) and how
 they transfer to other muscles (see the speed-accuracy example).
 
-The surrogate is trained on first use (about half a minute, then cached).
+The default surrogate is trained once, on first use, and cached.
 """
 
 import numpy as np
