@@ -360,11 +360,15 @@ def example_pages() -> None:
 
 
 def _code_start(script: Path) -> int:
-    """The first line after the module docstring."""
+    """The first non-blank line after the module docstring."""
     import ast
 
-    tree = ast.parse(script.read_text(encoding="utf-8"))
-    return tree.body[0].end_lineno + 1
+    text = script.read_text(encoding="utf-8")
+    line = ast.parse(text).body[0].end_lineno + 1
+    lines = text.splitlines()
+    while line <= len(lines) and not lines[line - 1].strip():
+        line += 1
+    return line
 
 
 def main() -> None:
