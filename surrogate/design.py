@@ -4,8 +4,8 @@ A grid spends the FE budget on corners and planes (27 muscles of the paper's 3 x
 only three values of each input); a space-filling design gives every muscle new values of every
 input. :func:`space_filling` places ``n`` muscles in the box :data:`BOX` of the seven muscle
 parameters (geometry, length, braid angle, rubber): 16 corners of a 2^(7-3) fractional factorial
-(every pair of factors balanced, each corner of the box's main effects seen), then a Latin
-hypercube (``scipy.stats.qmc``, centred-discrepancy optimised) for the rest. Each muscle is one
+[1]_ (every pair of factors balanced, each corner of the box's main effects seen), then a Latin
+hypercube [2]_ (``scipy.stats.qmc``, centred-discrepancy optimised) for the rest. Each muscle is one
 FE sweep (:data:`DESIGN_PRESSURES`), computed with the dataset builder's cache and workers
 (:func:`mkm.fem.dataset.build.run_jobs`). :func:`random_muscles` draws fresh muscles for the
 off-grid evaluation the same way.
