@@ -85,6 +85,7 @@ def test_one_cache_folder_for_predictions_surrogates_and_dataset_jobs(tmp_path, 
     assert len(folders) == 1 and folders.pop().is_absolute()
 
 
+@pytest.mark.slow  # two whole demos
 def test_a_demo_replaces_the_runs_of_the_demo_before_it(tmp_path):
     from mkm.demo import run_demo
 

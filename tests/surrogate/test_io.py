@@ -127,6 +127,7 @@ CRAFTED_OBJECTS = {
 }
 
 
+@pytest.mark.slow  # a subprocess per crafted file
 @pytest.mark.parametrize("what", ["function", "class", "pickle"])
 def test_crafted_model_folder_cannot_run_code(saved, tmp_path, what):
     # A crafted folder with a matching sha256 ran a shell command through a joblib pickle.
@@ -161,6 +162,7 @@ def test_not_a_model_folder(tmp_path):
         load_model(tmp_path)
 
 
+@pytest.mark.slow  # trains a GP
 def test_default_model_is_trained_once_and_cached(thickwall_dataset, tmp_path):
     from mkm.surrogate.train import default_model
 
@@ -172,6 +174,7 @@ def test_default_model_is_trained_once_and_cached(thickwall_dataset, tmp_path):
     assert second.kind == first.kind == "muscle-gp"
 
 
+@pytest.mark.slow  # two training processes
 def test_two_processes_training_at_once(thickwall_dataset, tmp_path):
     # Two processes training the same cached model at once once crashed ("Directory not
     # empty"). With the lock, one trains and saves, the other waits and loads it: both finish,
