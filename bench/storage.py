@@ -428,14 +428,17 @@ def _upgrade_v1(data: dict[str, Any]) -> dict[str, Any]:
 
 
 SIMULATED_SUFFIX = "-SIMULATED"
+REPROCESSED_SUFFIX = "-reprocessed"
+IMPORTED_SUFFIX = "-imported"
 
 
 def run_folder_name(muscle_id: str, when: datetime.datetime | None = None, k: int = 1,
-                    simulated: bool = False) -> str:
-    """``<UTC time>_<muscle id>[-k][-SIMULATED]``: the ``k``-th folder of that second."""
+                    simulated: bool = False, origin: str = "") -> str:
+    """``<UTC time>_<muscle id>[-k][-reprocessed|-imported][-SIMULATED]``: the ``k``-th folder
+    of that second; ``origin`` is ``"reprocessed"``, ``"imported"`` or empty (acquired)."""
     when = when or datetime.datetime.now(datetime.UTC)
     return (f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}{f'-{k}' if k > 1 else ''}"
-            f"{SIMULATED_SUFFIX if simulated else ''}")
+            f"{f'-{origin}' if origin else ''}{SIMULATED_SUFFIX if simulated else ''}")
 
 
 def _cell(value, column: str) -> str:
@@ -465,7 +468,9 @@ class RunWriter:
         root.mkdir(parents=True, exist_ok=True)
         when, k = datetime.datetime.now(datetime.UTC), 1
         while True:
-            path = root / run_folder_name(meta.muscle.id, when, k, meta.simulated)
+            origin = ("reprocessed" if meta.reprocessed_from else
+                      "imported" if meta.imported_from else "")
+            path = root / run_folder_name(meta.muscle.id, when, k, meta.simulated, origin)
             try:
                 path.mkdir()
                 break
