@@ -51,8 +51,9 @@ def force_history(time_s, static_N, hysteresis_fraction: float, creep_fraction: 
                   creep_tau_s: float) -> np.ndarray:
     """The force [N] of a muscle whose static force goes through ``static_N`` at ``time_s`` [s].
 
-    Starts unloaded and unrelaxed at the first time; each sample goes through :func:`advance`
-    with the time since the one before, as the simulated bench does.
+    Starts unloaded and unrelaxed before the first sample; each sample goes through
+    :func:`advance` with the time since the one before (the first: as long as the second's), as
+    the simulated bench does.
     """
     time_s = np.asarray(time_s, dtype=float)
     static = np.asarray(static_N, dtype=float)
@@ -61,7 +62,8 @@ def force_history(time_s, static_N, hysteresis_fraction: float, creep_fraction: 
                          "1-D arrays of the same length")
     if np.any(np.diff(time_s) < 0):
         raise ValueError("time_s goes backwards: expected the samples in time order")
-    relax = -np.expm1(-np.diff(time_s, prepend=time_s[:1]) / creep_tau_s).tolist()
+    dt = np.diff(time_s, prepend=2 * time_s[:1] - time_s[1:2] if time_s.size > 1 else time_s)
+    relax = (-np.expm1(-dt / creep_tau_s)).tolist()
     h, c = float(hysteresis_fraction), float(creep_fraction)
     out = np.empty(static.size)
     hysteretic = relaxed = 0.0
@@ -157,8 +159,8 @@ class FrictionCreep(ForceModel):
         static = self.static_model.predict(P, D0, t0, eps)
         factors = branch_factors(**self.terms, hold_s=self.hold_s)
         force = np.asarray(static.force_N)
-        return {"force_N": force * factors[self.direction], "valid": static.valid,
-                "converged": static.converged,
+        return {**static.extras, "force_N": force * factors[self.direction],
+                "valid": static.valid, "converged": static.converged,
                 "force_rising_N": force * factors["rising"],
                 "force_falling_N": force * factors["falling"]}
 
