@@ -193,6 +193,8 @@ class Identification:
                  **material, **terms, "target": "identify", "identified": identified}
         store_calibration(files["calibration"], model.calibration_key, entry)
         for key, spec in CLOSED_FORMS.items():
+            if key == model.calibration_key:  # the identified model's own entry stays
+                continue
             closed = parse_spec(spec).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))
             rubber = material if "C10_MPa" in closed.entry.parameters else {}
             fit = fit_theta0(lambda th, s=closed, m=rubber: s.build(theta0_deg=th, **m),
