@@ -8,7 +8,10 @@ of at most an hour, a driver buffer of one second to a day, faults at most a day
 from __future__ import annotations
 
 import dataclasses
+import json
+import re
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from mkm.bench.settings import positive, within
 
@@ -121,3 +124,20 @@ class Sim:
             raise ValueError(f"sim.truth.{refused[0]} is not a parameter of sim.model="
                              f"{self.model!r}: expected some of "
                              f"{', '.join(k for k in declared if k in TRUTH_FIELDS) or 'none'}")
+
+
+def remove_simulator_settings(run_dir) -> None:
+    """Delete a simulated run's ``[sim]`` settings, its truth among them, from its run.json
+    (the simulator's record and ``sim.*`` overrides) and its config.toml: what is left is what a
+    real bench records, for identification tested blind."""
+    run_dir = Path(run_dir)
+    meta = json.loads((run_dir / "run.json").read_text(encoding="utf-8"))
+    meta.get("hardware", {}).pop("sim", None)
+    meta["config_overrides"] = {k: v for k, v in (meta.get("config_overrides") or {}).items()
+                                if not k.startswith("sim")}
+    (run_dir / "run.json").write_text(json.dumps(meta, indent=2), encoding="utf-8")
+    config = run_dir / "config.toml"
+    text = config.read_text(encoding="utf-8")
+    # every [sim] and [sim.*] table, up to the next other table or the end
+    config.write_text(re.sub(r"(?ms)^\[sim(\.[^\]]*)?\][^\n]*\n.*?(?=^\[(?!sim[.\]])|\Z)",
+                             "", text), encoding="utf-8")

@@ -22,7 +22,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -33,6 +32,7 @@ import numpy as np
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
+from mkm.bench.sim_settings import remove_simulator_settings
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.records import jsonable, provenance
 from mkm.identify import identify
@@ -48,18 +48,6 @@ def draw(rng: np.random.Generator) -> dict:
             "seed": int(rng.integers(2**31))}
 
 
-def blind(run_dir: Path) -> None:
-    """Delete the simulator's settings (the truth among them) from run.json and config.toml."""
-    meta = json.loads((run_dir / "run.json").read_text(encoding="utf-8"))
-    meta["hardware"].pop("sim", None)
-    meta["config_overrides"] = {k: v for k, v in meta["config_overrides"].items()
-                                if not k.startswith("sim")}
-    (run_dir / "run.json").write_text(json.dumps(meta), encoding="utf-8")
-    text = (run_dir / "config.toml").read_text(encoding="utf-8")
-    (run_dir / "config.toml").write_text(re.sub(r"(?ms)^\[sim[^\n]*\].*?(?=^\[(?!sim)|\Z)", "",
-                                                text), encoding="utf-8")
-
-
 def acquire_truth(truth: dict, eps: float, out: Path) -> Path:
     scale = truth["rubber_scale"]
     config = load_config(eps=eps).replace(sim={
@@ -70,7 +58,7 @@ def acquire_truth(truth: dict, eps: float, out: Path) -> Path:
     result = acquire(config, out_root=out, notify=lambda message: None)
     if result.status != "complete":
         raise RuntimeError(f"simulated run at eps {eps:g} ended {result.status}")
-    blind(result.path)
+    remove_simulator_settings(result.path)
     return result.path
 
 
