@@ -137,6 +137,34 @@ def test_one_eps_confounds_the_angle_and_the_rubber_and_idle_terms_are_dropped(t
     assert "heldout_err" not in result.checks[0]  # one run: nothing to hold out
 
 
+class BoxOnly:
+    """A stand-in surrogate that only has a box (30-50 mm tubes): outside it, identify must not
+    ask it for a force."""
+
+    box = {"pressure_bar": (0.0, 2.5), "D0_mm": (30.0, 50.0), "t0_mm": (2.0, 4.0),
+           "eps": (0.0, 0.2), "L0_mm": (150.0, 400.0), "theta0_deg": (28.0, 38.0),
+           "C10_MPa": (0.0347, 0.1041), "C01_MPa": (0.0314, 0.0942)}
+
+    def with_parameters(self, **parameters):
+        raise AssertionError("the surrogate was asked outside its box")
+
+
+def test_outside_the_surrogate_box_the_fe_model_searches_and_says_so(tmp_path):
+    # the figure caption's prototype, D0 24 mm: below the surrogate's box
+    config = load_config(eps=0.0).replace(muscle={"D0_mm": 24.0}, sim={
+        "model": "thickwall", "hysteresis_fraction": 0.03, "creep_fraction": 0.0,
+        "truth": {"theta0_deg": 31.0}})
+    run = acquire(config, out_root=tmp_path, notify=lambda message: None).path
+    remove_simulator_settings(run)
+    result = identify([run], params="theta0,friction", model="thickwall",
+                      surrogate=BoxOnly())
+    assert result.searched_with == "thickwall"
+    assert any("D0_mm=24 not in [30, 50]" in n and "searched with the FE model instead" in n
+               for n in result.notes), result.notes
+    assert result.fit.values["theta0_deg"] == pytest.approx(31.0, abs=0.05)
+    assert result.fit.values["hysteresis_fraction"] == pytest.approx(0.03, abs=0.002)
+
+
 @pytest.fixture(scope="module")
 def one_run(muscle):
     return muscle[1][0]
