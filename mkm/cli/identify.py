@@ -42,9 +42,13 @@ def _identify(args) -> int:
 
     from mkm.identify import identify
 
-    result = identify(args.runs, params=args.params, model=args.model, search=args.search,
-                      seed=args.seed, notify=lambda line: print(f"mkm: {line}",
-                                                                file=sys.stderr))
+    try:
+        result = identify(args.runs, params=args.params, model=args.model, search=args.search,
+                          seed=args.seed, notify=lambda line: print(f"mkm: {line}",
+                                                                    file=sys.stderr))
+    except RuntimeError as exc:  # a fit that failed: said, nothing written
+        print(f"mkm: error: identification failed: {exc}", file=sys.stderr)
+        return 1
     out = Path(args.out) if args.out else default_out("identify", Path(args.runs[0]).name)
     files = result.write(out)
     print(result.summary())

@@ -48,9 +48,11 @@ def parse_groups(text: str | None) -> tuple[str, ...]:
         return tuple(GROUPS)
     names = [n.strip() for n in str(text).split(",") if n.strip()]
     unknown = [n for n in names if n not in GROUPS]
-    if unknown or not names:
-        raise ValueError(f"--params {text!r}: unknown parameter {unknown[0] if unknown else ''!r}"
-                         f": expected some of {','.join(GROUPS)}")
+    if unknown:
+        raise ValueError(f"--params {text!r}: unknown parameter {unknown[0]!r}: expected some "
+                         f"of {','.join(GROUPS)}")
+    if not names:
+        raise ValueError(f"--params {text!r} is empty: expected some of {','.join(GROUPS)}")
     return tuple(g for g in GROUPS if g in names)
 
 
