@@ -9,9 +9,26 @@ joins the procedure ``sequence``, the worker ``worker`` and the recorder ``recor
 ``operator`` and ``liveplot``. The ``mkm`` subcommands are in ``mkm.cli.bench``.
 """
 
-from mkm.bench.config import BenchConfig, load_config, parse_config
-from mkm.bench.run import BenchRun, RunResult, acquire
-from mkm.bench.storage import RunMeta, RunStatus, Sample, aggregate_samples, load_run
+from importlib import import_module
 
-__all__ = ["BenchConfig", "BenchRun", "RunMeta", "RunResult", "RunStatus", "Sample", "acquire",
-           "aggregate_samples", "load_config", "load_run", "parse_config"]
+# imported on first use: the command line reads mkm.bench.backends without pandas
+_LAZY = {
+    "BenchConfig": "mkm.bench.config", "load_config": "mkm.bench.config",
+    "parse_config": "mkm.bench.config",
+    "BenchRun": "mkm.bench.run", "RunResult": "mkm.bench.run", "acquire": "mkm.bench.run",
+    "RunMeta": "mkm.bench.storage", "RunStatus": "mkm.bench.storage",
+    "Sample": "mkm.bench.storage", "aggregate_samples": "mkm.bench.storage",
+    "load_run": "mkm.bench.storage",
+}
+
+__all__ = sorted(_LAZY)
+
+
+def __getattr__(name):
+    if name in _LAZY:
+        return getattr(import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'mkm.bench' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)

@@ -4,13 +4,12 @@ A backend is the transport between the run and the bench hardware (pymeasure's a
 split): it opens one analog-input task holding every input and one analog-output channel for the
 regulator command, reads blocks of raw volts on a hardware clock, writes the command, and closes.
 :class:`mkm.bench.ni.NIBackend` talks to an NI USB-6001 through nidaqmx;
-:class:`mkm.bench.sim.SimBackend`
-is a simulated bench with the same signature. The run (``mkm.bench.run``) only sees this protocol,
-so
-the real bench and the simulation share one code path.
+:class:`mkm.bench.sim.SimBackend` is a simulated bench with the same signature. The run
+(``mkm.bench.run``) only sees this protocol, so the real bench and the simulation share one code
+path; :mod:`mkm.bench.backends` is the one list of backends.
 
-Failures are raised as :class:`BenchError` subclasses with one-line messages; NI-DAQmx error codes
-are mapped to them by :func:`error_for_code`.
+Failures are raised as :class:`BenchError` subclasses with one-line messages (the NI backend maps
+NI-DAQmx status codes to them).
 """
 
 from __future__ import annotations
@@ -57,23 +56,21 @@ class DeviceReserved(BenchError):
     """Another task or program holds the device."""
 
 
-# NI-DAQmx status codes (nidaqmx.error_codes.DAQmxErrors) and what they mean for a run.
-NI_ERROR_CODES: dict[int, type[BenchError]] = {
-    -200279: BufferOverflow,  # SAMPLES_NO_LONGER_AVAILABLE: the buffer was overwritten
-    -200284: ReadTimeout,  # SAMPLES_NOT_YET_AVAILABLE: timeout elapsed
-    -50405: DaqDisconnected,  # PAL_TRANSFER_ABORTED: USB transfer aborted, device gone
-    -201003: DaqDisconnected,  # DEV_CANNOT_BE_ACCESSED
-    -200324: DaqDisconnected,  # DEV_ABSENT_OR_UNAVAILABLE
-    -50103: DeviceReserved,  # PAL_RESOURCE_RESERVED
-    -200022: DeviceReserved,  # RESOURCE_ALREADY_RESERVED by another task
-}
+@dataclass(frozen=True)
+class DeviceCapabilities:
+    """What a DAQ device can do, for validating a configuration before it is run.
 
+    Each backend of :mod:`mkm.bench.backends` declares the capabilities of its device.
+    """
 
-def error_for_code(code: int, message: str, default: type[BenchError] = BenchError) -> BenchError:
-    """The :class:`BenchError` for an NI-DAQmx status ``code``; ``default`` for unmapped codes."""
-    cls = NI_ERROR_CODES.get(int(code), default)
-    first_line = message.strip().splitlines()[0] if message.strip() else "no description"
-    return cls(f"NI-DAQmx error {code}: {first_line}")
+    product: str
+    ai_rse: tuple[str, ...]  # single-ended (referenced to AI GND) inputs
+    ai_differential: dict[str, str]  # differential input -> the terminal it pairs with
+    terminal_configs: tuple[str, ...]
+    max_aggregate_rate_hz: float  # over every input of the task (one multiplexed ADC)
+    ai_range_V: float  # +- this
+    ao: tuple[str, ...]
+    ao_range_V: float  # +- this
 
 
 @dataclass

@@ -8,8 +8,9 @@ with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the
 A second task writes the regulator command on AO0, on demand. ``close`` writes the vent command
 before clearing the tasks: the USB-6001's AO keeps its last value when a task is closed.
 
-NI-DAQmx status codes are turned into :mod:`mkm.bench.backend` errors; a missing driver (always the
-case on Linux) into :class:`~mkm.bench.backend.DriverMissing` with what to do about it.
+The device's capabilities (:data:`USB6001`, against which a configuration is validated) and the
+NI-DAQmx status codes (turned into :mod:`mkm.bench.backend` errors) live here; a missing driver
+(always the case on Linux) becomes :class:`~mkm.bench.backend.DriverMissing` with what to do.
 """
 
 from __future__ import annotations
@@ -23,11 +24,50 @@ from mkm.bench.backend import (
     AOWriteFailed,
     BenchError,
     Block,
+    BufferOverflow,
+    DaqDisconnected,
+    DeviceCapabilities,
     DeviceInfo,
+    DeviceReserved,
     DriverMissing,
-    error_for_code,
+    ReadTimeout,
 )
-from mkm.bench.config import USB6001, USB6001_RANGE_V, BenchConfig
+
+# NI USB-6001/6002/6003 User Guide (ni.com, "Pinout and Signal Descriptions", "Analog Input"):
+# AI 0-7 single-ended (RSE) or four differential channels AI 0-3 paired with AI 4-7 (AI <0,4>,
+# <1,5>, <2,6>, <3,7>); no NRSE or pseudo-differential mode; one +-10 V range; two analog
+# outputs AO 0-1, +-10 V. NI USB-6001/6002/6003 Specifications: 14-bit ADC, 20 kS/s aggregate
+# maximum sample rate on the USB-6001.
+USB6001 = DeviceCapabilities(
+    product="USB-6001",
+    ai_rse=tuple(f"ai{k}" for k in range(8)),
+    ai_differential={f"ai{k}": f"ai{k + 4}" for k in range(4)},
+    terminal_configs=("differential", "rse"),
+    max_aggregate_rate_hz=20_000.0,
+    ai_range_V=10.0,
+    ao=("ao0", "ao1"),
+    ao_range_V=10.0,
+)
+USB6001_RANGE_V = USB6001.ai_range_V
+
+# NI-DAQmx status codes (nidaqmx.error_codes.DAQmxErrors) and what they mean for a run.
+NI_ERROR_CODES: dict[int, type[BenchError]] = {
+    -200279: BufferOverflow,  # SAMPLES_NO_LONGER_AVAILABLE: the buffer was overwritten
+    -200284: ReadTimeout,  # SAMPLES_NOT_YET_AVAILABLE: timeout elapsed
+    -50405: DaqDisconnected,  # PAL_TRANSFER_ABORTED: USB transfer aborted, device gone
+    -201003: DaqDisconnected,  # DEV_CANNOT_BE_ACCESSED
+    -200324: DaqDisconnected,  # DEV_ABSENT_OR_UNAVAILABLE
+    -50103: DeviceReserved,  # PAL_RESOURCE_RESERVED
+    -200022: DeviceReserved,  # RESOURCE_ALREADY_RESERVED by another task
+}
+
+
+def error_for_code(code: int, message: str, default: type[BenchError] = BenchError) -> BenchError:
+    """The :class:`BenchError` for an NI-DAQmx status ``code``; ``default`` for unmapped codes."""
+    cls = NI_ERROR_CODES.get(int(code), default)
+    first_line = message.strip().splitlines()[0] if message.strip() else "no description"
+    return cls(f"NI-DAQmx error {code}: {first_line}")
+
 
 DRIVER_MISSING = ("NI-DAQmx driver not found: install NI-DAQmx (Windows; NI does not support the "
                   "USB-6001 on Linux) or run on the simulated bench with --backend sim")
@@ -51,9 +91,15 @@ def daq_errors(default: type[BenchError] = BenchError):
 
 
 class NIBackend:
-    """NI USB-6001 bench: AI task (load cell [+ regulator monitor]) and AO command task."""
+    """NI USB-6001 bench: AI task (load cell [+ regulator monitor]) and AO command task.
 
-    def __init__(self, config: BenchConfig):
+    Parameters
+    ----------
+    config : mkm.bench.config.BenchConfig
+        The bench settings (``daq``, ``loadcell``, ``regulator``).
+    """
+
+    def __init__(self, config):
         self.config = config
         self.device = config.daq.device
         self.bench_key = f"ni-{self.device}"
@@ -84,7 +130,7 @@ class NIBackend:
                 product, serial = str(dev.product_type), f"{int(dev.serial_num):X}"
             if product != USB6001.product:
                 raise BenchError(f"device {self.device} is a {product}: the bench settings are "
-                                 f"validated for a {USB6001.product} only (bench.config.USB6001)")
+                                 f"validated for a {USB6001.product} only (bench.ni.USB6001)")
             with daq_errors():
                 self.ai_task = nidaqmx.Task("mkm_ai")
                 for channel in self.ai_channels:

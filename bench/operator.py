@@ -16,8 +16,9 @@ class Operator(Protocol):
     def set_pressure(self, pressure_bar: float) -> float:
         """Set the hand regulator to ``pressure_bar``; return the manometer reading [bar]."""
 
-    def vent(self) -> None:
-        """Vent the muscle (turn the hand regulator to zero)."""
+    def vent(self) -> float:
+        """Vent the muscle (turn the hand regulator to zero); return the manometer reading
+        [bar] that confirms it."""
 
     def hang_mass(self, mass_kg: float) -> None:
         """Hang a known mass on the load cell (``mass_kg`` 0 means unload it)."""
@@ -29,10 +30,9 @@ class ConsoleOperator:
     def __init__(self, ask=input):
         self.ask = ask
 
-    def set_pressure(self, pressure_bar: float) -> float:
+    def _reading(self, prompt: str) -> float:
         while True:
-            text = self.ask(f"Set the regulator to {pressure_bar:g} bar, wait for the manometer "
-                            "to settle and type its reading [bar]: ")
+            text = self.ask(prompt)
             try:
                 reading = parse_number(text, "manometer reading")
             except ValueError as exc:
@@ -43,8 +43,13 @@ class ConsoleOperator:
                 continue
             return reading
 
-    def vent(self) -> None:
-        self.ask("VENT the muscle now (regulator to zero), then press Enter: ")
+    def set_pressure(self, pressure_bar: float) -> float:
+        return self._reading(f"Set the regulator to {pressure_bar:g} bar, wait for the "
+                             "manometer to settle and type its reading [bar]: ")
+
+    def vent(self) -> float:
+        return self._reading("VENT the muscle now (regulator to zero), wait for the manometer "
+                             "and type its reading [bar]: ")
 
     def hang_mass(self, mass_kg: float) -> None:
         what = "Unload the load cell" if mass_kg == 0 else f"Hang {mass_kg:g} kg on the load cell"
@@ -60,8 +65,8 @@ class SimOperator:
     def set_pressure(self, pressure_bar: float) -> float:
         return self.backend.set_manual_pressure(pressure_bar)
 
-    def vent(self) -> None:
-        self.backend.set_manual_pressure(0.0)
+    def vent(self) -> float:
+        return self.backend.set_manual_pressure(0.0)
 
     def hang_mass(self, mass_kg: float) -> None:
         self.backend.hang_mass(mass_kg)

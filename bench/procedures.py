@@ -1,13 +1,14 @@
 """Short bench procedures besides a run: tare, load-cell calibration, dry-run check, vent.
 
-Each opens the device in :func:`session`, which vents and closes it whatever happens, and first
-vents a bench left pressurised by a run that died without venting (:mod:`mkm.bench.unvented`),
-saying which run it was.
+Each opens the device in :func:`session`, which owns the bench for the duration
+(:mod:`mkm.bench.ownership`: a live run on it makes them refuse), vents and closes it whatever
+happens, and first vents a bench left pressurised by a run that died without venting
+(:mod:`mkm.bench.unvented`), saying which run it was. :func:`vent` on a bench a live run holds
+asks that run to stop (it vents itself) and then vents and verifies.
 """
 
 from __future__ import annotations
 
-import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 
@@ -16,26 +17,38 @@ from scipy import stats
 
 from mkm.bench.backend import Backend, BenchError, DeviceInfo
 from mkm.bench.config import BenchConfig
-from mkm.bench.run import make_backend, make_operator, notify_stderr
+from mkm.bench.ownership import BenchOwner, request_stop
+from mkm.bench.preflight import warnings
+from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
 from mkm.bench.sequence import estimate_duration_s, plan_steps, validate_tare
 from mkm.bench.sim import STANDARD_GRAVITY
 from mkm.bench.unvented import vent_unvented
+from mkm.bench.vent import verify_vent
 
-VENTED_BELOW_BAR = 0.05  # `mkm vent` waits for the monitor to read below this
-VENT_WAIT_S = 10.0
+MAX_SECONDS = 600.0  # a tare or a calibration mass is averaged for at most this long
+STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
 
 
 @contextmanager
-def session(backend: Backend, notify=notify_stderr) -> Iterator[DeviceInfo]:
-    """Open ``backend`` (which writes the vent command), vent and report a bench a dead run left
-    pressurised, and close (vent again) on exit."""
-    info = backend.open()
-    try:
-        for marker in vent_unvented(backend):
-            notify(f"{marker.describe()}: vented now")
-        yield info
-    finally:
-        backend.close()
+def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[DeviceInfo]:
+    """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
+    command), vent and report a bench a dead run left pressurised, and close (vent again) on
+    exit."""
+    with BenchOwner(getattr(backend, "bench_key", "unknown"), command):
+        info = backend.open()
+        try:
+            for marker in vent_unvented(backend):
+                notify(f"{marker.describe()}: vented now")
+            yield info
+        finally:
+            backend.close()
+
+
+def _seconds(seconds: float) -> float:
+    if not 0 < seconds <= MAX_SECONDS:
+        raise ValueError(f"seconds={seconds!r} is invalid: expected a duration in (0, "
+                         f"{MAX_SECONDS:g}] s")
+    return float(seconds)
 
 
 def mean_volts(backend: Backend, config: BenchConfig, seconds: float) -> np.ndarray:
@@ -45,48 +58,49 @@ def mean_volts(backend: Backend, config: BenchConfig, seconds: float) -> np.ndar
     return block.volts
 
 
-def tare(config: BenchConfig, backend: str = "sim", clock: str = "virtual",
+def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
          seconds: float = 5.0) -> dict:
     """Load-cell offset at 0 bar: mean and spread of ``seconds`` of volts, vented; checked by
     :func:`mkm.bench.sequence.validate_tare` (``TareInvalid`` when it would stop a run)."""
-    device = make_backend(config, backend, clock)
-    with session(device) as info:
+    seconds = _seconds(seconds)
+    config = with_backend(config, backend)
+    device = make_backend(config, clock)
+    with session(device, "tare") as info:
         device.start()
         cell_V = mean_volts(device, config, seconds)[:, 0]
     out = validate_tare(cell_V, config)
     return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict()}
 
 
-def vent(config: BenchConfig, backend: str = "sim", clock: str = "virtual",
-         below_bar: float = VENTED_BELOW_BAR, wait_s: float = VENT_WAIT_S) -> dict:
-    """Command 0 bar and wait until the regulator's monitor reads below ``below_bar``.
+def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
+         notify=notify_stderr, stop_wait_s: float = STOP_WAIT_S) -> dict:
+    """Command 0 bar and verify it (:func:`mkm.bench.vent.verify_vent`).
 
-    Returns ``pressure_bar`` (the last reading; NaN without a monitor: a manual regulator, to
-    be vented by hand), ``vented`` and ``waited_s``. Raises :class:`BenchError` when the device
-    cannot be opened or the pressure stays above ``below_bar`` for ``wait_s``.
+    A live run holding the bench is asked to stop first (it vents itself at its next safe
+    point), then the bench is vented and verified here. Returns ``pressure_bar`` (the last
+    reading; NaN with a manual regulator, to be vented by hand), ``vented``, ``waited_s``,
+    ``manual`` and ``stopped`` (the holder asked to stop, or None). Raises :class:`BenchError`
+    when the device cannot be opened or the pressure stays above ``safety.vent_below_bar`` for
+    ``safety.vent_timeout_s``.
     """
-    device = make_backend(config, backend, clock)
-    with session(device):
+    config = with_backend(config, backend)
+    device = make_backend(config, clock)
+    stopped = request_stop(getattr(device, "bench_key", "unknown"), "`mkm vent`", stop_wait_s)
+    if stopped:
+        notify(f"asked the run holding the bench (pid {stopped.get('pid')}, `mkm "
+               f"{stopped.get('command')}`, started {stopped.get('started_utc')}) to stop; it "
+               "stopped")
+    with session(device, "vent", notify):
         device.write_command(0.0)
         if not config.regulator.electronic:
             return {"pressure_bar": float("nan"), "vented": False, "waited_s": 0.0,
-                    "manual": True}
+                    "manual": True, "stopped": stopped}
         device.start()
-        start = time.monotonic()
-        rate = config.daq.sample_rate_hz
-        block = max(1, int(round(0.2 * rate)))
-        sample_time_s, pressure = 0.0, float("nan")
-        while True:
-            volts = device.read(block, config.daq.read_timeout_s).volts
-            pressure = float(config.regulator.monitor_bar(volts[-1, 1]))
-            sample_time_s += block / rate
-            waited = max(time.monotonic() - start, sample_time_s)
-            if pressure < below_bar:
-                return {"pressure_bar": pressure, "vented": True, "waited_s": waited,
-                        "manual": False}
-            if waited > wait_s:
-                raise BenchError(f"the regulator still reads {pressure:.3f} bar {wait_s:g} s "
-                                 "after the vent command: VENT BY HAND and check the regulator")
+        check = verify_vent(device, config)
+    if not check.verified:
+        raise BenchError(f"{check.describe()}: VENT BY HAND and check the regulator")
+    return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
+            "manual": False, "stopped": stopped}
 
 
 def fit_loadcell(mass_kg, volts) -> dict:
@@ -117,13 +131,15 @@ def fit_loadcell(mass_kg, volts) -> dict:
             "max_abs_residual_N": float(np.abs(residual_N).max()), "n_points": int(m.size)}
 
 
-def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str = "sim",
+def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
                        clock: str = "virtual", seconds: float = 3.0) -> dict:
     """Hang each mass in turn (the operator does), average the volts, fit the calibration."""
-    device = make_backend(config, backend, clock)
-    operator = make_operator(device)
+    seconds = _seconds(seconds)
+    config = with_backend(config, backend)
+    device = make_backend(config, clock)
+    operator = make_operator(config, device)
     volts = []
-    with session(device):
+    with session(device, "calibrate-loadcell"):
         device.start()
         for mass in mass_kg:
             operator.hang_mass(float(mass))
@@ -135,16 +151,20 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str = "sim",
             "volts": volts}
 
 
-def check(config: BenchConfig, backend: str = "sim", clock: str = "virtual") -> str:
-    """Dry run: device information, limits, the planned steps and the estimated duration."""
-    device = make_backend(config, backend, clock)
-    with session(device) as info:
+def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
+          ) -> tuple[str, list[str]]:
+    """Dry run: device information, limits, the planned steps and the estimated duration; and
+    the warnings of :func:`mkm.bench.preflight.warnings` (braid lock, load cell)."""
+    config = with_backend(config, backend)
+    device = make_backend(config, clock)
+    with session(device, "check") as info:
         pass
     shortest, longest = estimate_duration_s(config)
-    warnings = braid_lock_warnings(config)
     m, cell, reg = config.muscle, config.loadcell, config.regulator
     lines = [
         f"config: {config.source}",
+        f"backend: {config.daq.backend}"
+        f"{' (SIMULATED: no hardware is driven)' if config.simulated else ''}",
         f"device: {info.product_type}, serial {info.serial_number}, "
         f"{info.sample_rate_hz:g} Hz, AI {', '.join(info.channels['ai'])} "
         f"({info.channels['terminal_config']}, +-10 V), AO {info.channels['ao'] or 'none'}",
@@ -158,22 +178,7 @@ def check(config: BenchConfig, backend: str = "sim", clock: str = "virtual") -> 
         f"{config.sequence.repeats} repeat(s)",
         "step,direction,repeat,set_pressure_bar",
         *(f"{s.step},{s.direction},{s.repeat},{s.set_pressure_bar:g}" for s in plan_steps(config)),
-        f"estimated duration: {shortest / 60:.1f} to {longest / 60:.1f} min",
-        *warnings,
+        f"estimated duration: {shortest / 60:.1f} to {longest / 60:.1f} min (at most "
+        f"sequence.max_duration_h = {config.sequence.max_duration_h:g} h)",
     ]
-    return "\n".join(lines)
-
-
-def braid_lock_warnings(config: BenchConfig) -> list[str]:
-    """A warning when ``muscle.eps`` shortens the braid past its locking angle (54.7 deg), where
-    Equation 2 leaves its range and the muscle pulls little or nothing."""
-    from mkm.fem.calibration import calibrated
-    from mkm.fem.eq2 import LOCKING_ANGLE_DEG, Eq2, chou_hannaford_eps_max
-
-    theta0 = float(calibrated(Eq2().calibration_key)["theta0_deg"])
-    eps_max = float(chou_hannaford_eps_max(theta0))
-    if config.muscle.eps < eps_max:
-        return []
-    return [f"warning: eps {config.muscle.eps:g} is past the braid lock: at theta0 "
-            f"{theta0:.1f} deg the braid reaches its locking angle {LOCKING_ANGLE_DEG:.1f} deg at "
-            f"eps {eps_max:.3f}; the muscle pulls little or nothing there"]
+    return "\n".join(lines), warnings(config)

@@ -1,9 +1,10 @@
 """The run's recorder: its folder (:class:`mkm.bench.storage.RunWriter`) and :class:`RunMeta`, kept
 true while the run goes (pymeasure's recorder, beside the worker and the procedure).
 
-run.json is rewritten at start, after the tare and at the end; samples, steps and commands are
-appended as they happen. :meth:`Recorder.finish` writes the outcome and syncs every file; it
-never raises, so a full disk cannot hide the outcome of the vent: it returns what went wrong.
+run.json is written first when the folder is made, rewritten after the tare and at the end;
+samples, steps and commands are appended as they happen. :meth:`Recorder.finish` writes the
+outcome and syncs every file; it never raises, so a full disk cannot hide the outcome of the
+vent: it returns what went wrong.
 """
 
 from __future__ import annotations
@@ -32,7 +33,6 @@ class Recorder:
     def __init__(self, out_root: str | Path, config: BenchConfig, info: DeviceInfo,
                  n_steps: int, estimated_duration_s: tuple[float, float],
                  unvented_before: list[dict] | None = None):
-        self.writer = RunWriter(out_root, config.muscle.id, config.text)
         m = config.muscle
         prov = provenance()
         settings = config.as_dict()
@@ -47,8 +47,9 @@ class Recorder:
                       "estimated_duration_s": list(estimated_duration_s)},
             config_source=config.source, config_overrides=config.overrides,
             command=prov["command"], provenance=prov, started_utc=prov["date_utc"],
-            process=process, unvented_before=list(unvented_before or []))
-        self.save()
+            process=process, unvented_before=list(unvented_before or []),
+            simulated=bool(info.simulated))
+        self.writer = RunWriter(out_root, self.meta, config.text)  # run.json first
 
     @property
     def path(self) -> Path:

@@ -8,6 +8,8 @@ its interlocks) and the recorder (:class:`mkm.bench.recorder.Recorder`: the run 
 
 Safety, in every exit path:
 
+- the run owns its bench for its whole length: a second command on it refuses, ``mkm vent``
+  asks it to stop (:mod:`mkm.bench.ownership`);
 - a bench left pressurised by a run that died without venting is vented first, and said
   (:mod:`mkm.bench.unvented`);
 - the pressure command is clamped to ``regulator.max_pressure_bar``; the force and pressure
@@ -16,10 +18,14 @@ Safety, in every exit path:
   a second Ctrl-C, SIGTERM, SIGHUP, SIGBREAK or a closed Windows console stop at once
   (:mod:`mkm.bench.signals`); either way, and on any error, ``shutdown`` commands the vent, closes
   the
-  device, then records the truth in run.json. A failed vent asks for a vent by hand.
+  device, then records the truth in run.json;
+- every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
+  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``; if not,
+  the run is ``failed``, asks for a VENT BY HAND and its bench marker stays.
 
 The exit status of ``mkm acquire`` is :attr:`RunResult.exit_code`: 0 complete, 3 complete with
-lost samples, 128 + N after signal N, 2 when the run's storage failed (disk full), 1 otherwise.
+lost samples, 128 + N after signal N, 2 when the run's storage failed (disk full), 4 when the
+vent could not be verified (vent by hand; it wins over every other), 1 otherwise.
 """
 
 from __future__ import annotations
@@ -30,16 +36,21 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from mkm.bench.backend import Backend, BenchError
+from mkm.bench.backends import backend_entry
 from mkm.bench.config import BenchConfig
 from mkm.bench.operator import Operator
+from mkm.bench.ownership import BenchOwner
+from mkm.bench.preflight import braid_lock, loadcell_warning
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase, estimate_duration_s, plan_steps
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import BenchLease, Marker, vent_unvented
+from mkm.bench.vent import VentCheck, verify_vent
 from mkm.bench.worker import Acquisition, Stop
 
-EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS = 0, 1, 2, 3
+EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
+STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
 
 
 def notify_stderr(message: str) -> None:
@@ -78,31 +89,47 @@ def check_out_root(out_root: str | Path) -> Path:
 
 
 class _Progress:
-    """tqdm bar on stderr: set and measured pressure, force, a lower bound of the time left."""
+    """Progress on stderr: a tqdm bar when stderr is a terminal, else (a log, a pipe) one status
+    line every :data:`STATUS_EVERY_S`. Set and measured pressure, force, a lower bound of the
+    time left; SIMULATED in front when no hardware is driven."""
 
-    def __init__(self, config: BenchConfig, n_steps: int):
-        from tqdm import tqdm
-
+    def __init__(self, config: BenchConfig, n_steps: int, stream=None):
         self.config, self.n_steps, self.done = config, n_steps, 0
-        self.bar = tqdm(total=n_steps, unit="step", desc="acquire", leave=True)
-        self.shown_at = 0.0
+        self.stream = stream or sys.stderr
+        self.label = "acquire SIMULATED" if config.simulated else "acquire"
+        self.bar = None
+        if self.stream.isatty():
+            from tqdm import tqdm
+
+            self.bar = tqdm(total=n_steps, unit="step", desc=self.label, leave=True,
+                            file=self.stream)
+        self.shown_at = time.monotonic() if self.bar is None else 0.0
+
+    def _status(self, row) -> str:
+        st = self.config.settle
+        left_s = (self.n_steps - self.done) * (st.min_dwell_s + st.hold_s)
+        return (f"{row.phase} {row.set_pressure_bar:.2f} bar, measured {row.pressure_bar:.2f} "
+                f"bar, {row.force_N:.1f} N, >= {left_s / 60:.1f} min left")
 
     def block(self, rows) -> None:
-        if not rows or time.monotonic() - self.shown_at < 0.25:
+        now = time.monotonic()
+        if not rows or now - self.shown_at < (0.25 if self.bar else STATUS_EVERY_S):
             return
-        row, st = rows[-1], self.config.settle
-        left_s = (self.n_steps - self.done) * (st.min_dwell_s + st.hold_s)
-        self.bar.set_postfix_str(f"{row.phase} {row.set_pressure_bar:.2f} bar, measured "
-                                 f"{row.pressure_bar:.2f} bar, {row.force_N:.1f} N, "
-                                 f">= {left_s / 60:.1f} min left")
-        self.shown_at = time.monotonic()
+        if self.bar is not None:
+            self.bar.set_postfix_str(self._status(rows[-1]))
+        else:
+            print(f"mkm: {self.label}: step {self.done}/{self.n_steps}, "
+                  f"{self._status(rows[-1])}", file=self.stream, flush=True)
+        self.shown_at = now
 
     def step(self, _step) -> None:
         self.done += 1
-        self.bar.update(1)
+        if self.bar is not None:
+            self.bar.update(1)
 
     def close(self) -> None:
-        self.bar.close()
+        if self.bar is not None:
+            self.bar.close()
 
 
 class _Plot:
@@ -149,23 +176,52 @@ class BenchRun:
         self.lease: BenchLease | None = None
         self.unvented: list[Marker] = []
         self._observers: list = []
+        self.owner: BenchOwner | None = None
+        self._stop_by: str | None = None
+        self._started = False
+        self.vent_check: VentCheck | None = None
+        self.storage_failed = False
 
-    def request_stop(self) -> None:
-        """What the first Ctrl-C does: stop at the next safe point."""
+    def request_stop(self, by: str | None = None) -> None:
+        """What the first Ctrl-C does: stop at the next safe point (``by`` says who else asked)."""
         if self.signals.stop_requested_at is None:
             self.signals.stop_requested_at = time.monotonic()
+            self._stop_by = by
 
     def _stop_time(self):
-        return self.signals.signal_at or self.signals.stop_requested_at
+        """When the first stop was asked for (a first Ctrl-C, then a second: the first)."""
+        times = [t for t in (self.signals.stop_requested_at, self.signals.signal_at)
+                 if t is not None]
+        return min(times) if times else None
+
+    def _pending_stop(self) -> Stop | None:
+        """The stop to make at this safe point: a first Ctrl-C, or `mkm vent` asking."""
+        if self.signals.stop_requested_at is None and self.owner is not None:
+            by = self.owner.stop_request()
+            if by is not None:
+                self.notify(f"stopping: {by} asked this run to stop")
+                self.request_stop(by)
+        if self.signals.stop_requested_at is None:
+            return None
+        if self._stop_by:
+            return Stop(RunStatus.ABORTED, f"stopped by {self._stop_by} at a safe point; vented")
+        return Stop(RunStatus.ABORTED, "stopped by Ctrl-C (SIGINT) at a safe point; vented",
+                    "SIGINT", 2)
 
     # lifecycle -------------------------------------------------------------------------------
 
     def execute(self) -> RunResult:
-        """Run the whole sequence; the run folder holds the truth whatever happens."""
-        if self.handle_signals:
-            with self.signals:
-                return self._execute()
-        return self._execute()
+        """Run the whole sequence; the run folder holds the truth whatever happens.
+
+        Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
+        holds the bench.
+        """
+        with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner:
+            self.owner = owner
+            if self.handle_signals:
+                with self.signals:
+                    return self._execute()
+            return self._execute()
 
     def _execute(self) -> RunResult:
         status, reason, error, exit_code = RunStatus.FAILED, "", None, EXIT_FAILED
@@ -191,15 +247,19 @@ class BenchRun:
             reason, error = f"{type(exc).__name__}: {exc}", exc
         finally:
             self.signals.hold()  # a further signal must not cut the vent or the record
-            reason = self.shutdown(status, reason, signal_name, signal_number)
+            status, reason = self.shutdown(status, reason, signal_name, signal_number)
             self.signals.done()
         if signal_number is not None:
             exit_code = 128 + signal_number
+        if self.storage_failed:
+            exit_code = EXIT_STORAGE
+        manual_vent = self.vent_check is not None and not self.vent_check.verified
+        if manual_vent:
+            exit_code = EXIT_VENT
         if error is not None:
             raise error
-        meta = self.recorder.meta if self.recorder else None
         return RunResult(self.recorder.path if self.recorder else None, status, reason,
-                         exit_code, bool(meta and meta.manual_vent_required), self.unvented)
+                         exit_code, manual_vent, self.unvented)
 
     def _finished(self) -> tuple[RunStatus, str, int]:
         meta, n = self.recorder.meta, len(self.steps)
@@ -219,16 +279,19 @@ class BenchRun:
                                  [vars(m) for m in self.unvented])
         self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
                                 self.recorder.path, self.recorder.meta.started_utc)
+        if self.config.simulated:
+            self.notify(f"SIMULATED bench ({self.config.daq.backend}): no hardware is driven; "
+                        f"recording into {self.recorder.path}")
         if self.progress:
             self._observers.append(_Progress(self.config, len(self.steps)))
         if self.plot:
             self._observers.append(_Plot(self.config.muscle.id))
         self.acquisition = Acquisition(
-            self.config, self.backend, self.recorder,
-            stop_requested=lambda: self.signals.stop_requested_at, stop_time=self._stop_time,
-            lease=self.lease, observers=self._observers)
+            self.config, self.backend, self.recorder, stop_requested=self._pending_stop,
+            stop_time=self._stop_time, lease=self.lease, observers=self._observers)
         self.acquisition.command(0.0, "vent")
         self.backend.start()
+        self._started = True
 
     def _on_step(self, step) -> None:
         for observer in self._observers:
@@ -236,73 +299,101 @@ class BenchRun:
                 observer.step(step)
 
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
-                 signal_number=None) -> str:
-        """Vent, close the device, record the outcome. Never raises; returns the final reason."""
+                 signal_number=None) -> tuple[RunStatus, str]:
+        """Vent, verify the vent, close the device, record the outcome. Never raises; returns
+        the final status and reason (``failed`` when the vent could not be verified)."""
         problems = []
         acq = self.acquisition
-        vented = False
         try:
             if acq is not None:
                 acq.command(0.0, "vent")
             else:
                 self.backend.write_command(0.0)
-            vented = True
         except BaseException as exc:  # the device may be gone; closing must still happen
-            problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
-            vented = acq is not None and acq.vented  # the command was written, only its log failed
-        if self.operator is not None and not self.config.regulator.electronic:
-            try:
-                self.operator.vent()
-            except BaseException as exc:
-                problems.append(f"operator vent not confirmed ({type(exc).__name__})")
+            if acq is not None and acq.vented:  # written; only its record failed
+                problems.append(f"recording the vent failed ({type(exc).__name__}: {exc})")
+            else:
+                problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
+        if acq is not None and acq.marker_problem:
+            problems.append(acq.marker_problem)
+        try:
+            self.vent_check = verify_vent(self.backend, self.config, self.operator,
+                                          started=self._started)
+        except BaseException as exc:
+            self.vent_check = VentCheck(False, float("nan"), self.config.safety.vent_below_bar,
+                                        0.0, "monitor", f"{type(exc).__name__}: {exc}")
+        if not self._started and self.config.regulator.electronic and \
+                (acq is None or acq.command_bar == 0.0) and not problems:
+            # never started and nothing but vents commanded: there is nothing to verify
+            self.vent_check = None
         try:
             self.backend.close()
         except BaseException as exc:
             problems.append(f"closing the device failed ({type(exc).__name__}: {exc})")
         for observer in self._observers:
             observer.close()
-        last_bar = acq.command_bar if acq is not None else 0.0
-        if not vented and self.config.regulator.electronic:
-            problems.append(f"VENT BY HAND: the regulator may still hold {last_bar:g} bar")
+        unverified = self.vent_check is not None and not self.vent_check.verified
+        if unverified:
+            status = RunStatus.FAILED
+            held = self.vent_check.pressure_bar
+            if not held == held:  # nothing read: what was last commanded
+                held = acq.command_bar if acq is not None else 0.0
+            problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
+                            f"still hold {held:.3g} bar)")
         if problems:
             reason = "; ".join([reason, *problems]) if reason else "; ".join(problems)
         if self.recorder is not None:
             meta = self.recorder.meta
             meta.stop_signal, meta.stop_signal_number = signal_name, signal_number
-            meta.manual_vent_required = not vented and self.config.regulator.electronic
+            meta.manual_vent_required = unverified
+            meta.vent_check = self.vent_check.as_dict() if self.vent_check else None
             for problem in self.recorder.finish(status, reason):
+                self.storage_failed = True
                 reason = f"{reason}; {problem}"
-        if self.lease is not None and (vented or not self.config.regulator.electronic):
-            self.lease.release()  # else the marker stays: the next command on it vents first
-        return reason
+        if self.lease is not None and not unverified:
+            try:
+                self.lease.release()
+            except OSError as exc:
+                reason = f"{reason}; the bench marker could not be removed ({exc.strerror})"
+        return status, reason
 
 
-def make_backend(config: BenchConfig, backend: str = "sim", clock: str = "virtual") -> Backend:
-    """The simulated (``sim``) or NI (``ni``) backend for ``config``."""
-    if backend == "sim":
-        from mkm.bench.sim import SimBackend
-
-        return SimBackend(config, clock=clock)
-    if backend == "ni":
-        from mkm.bench.ni import NIBackend
-
-        return NIBackend(config)
-    raise ValueError(f"backend={backend!r} is invalid: expected 'sim' or 'ni'")
+def make_backend(config: BenchConfig, clock: str = "virtual") -> Backend:
+    """The backend of ``config.daq.backend`` (:mod:`mkm.bench.backends`), not yet opened."""
+    return backend_entry(config.daq.backend).factory(config, clock)
 
 
-def make_operator(backend: Backend) -> Operator:
+def make_operator(config: BenchConfig, backend: Backend) -> Operator:
+    """The operator's actions: on the simulated bench itself, else asked on the terminal."""
     from mkm.bench.operator import ConsoleOperator, SimOperator
-    from mkm.bench.sim import SimBackend
 
-    return SimOperator(backend) if isinstance(backend, SimBackend) else ConsoleOperator()
+    return SimOperator(backend) if config.simulated else ConsoleOperator()
 
 
-def acquire(config: BenchConfig, backend: str = "sim", clock: str = "virtual",
+def with_backend(config: BenchConfig, backend: str | None) -> BenchConfig:
+    """``config`` with ``daq.backend`` set to ``backend`` (validated again), if given."""
+    if backend is None or backend == config.daq.backend:
+        return config
+    return config.replace(daq={"backend": backend})
+
+
+def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
             out_root: str | Path = "data/experimental", progress: bool = False,
-            plot: bool = False, notify=notify_stderr) -> RunResult:
-    """Record one run of ``config`` on the ``backend`` ("sim" or "ni") under ``out_root``."""
+            plot: bool = False, notify=notify_stderr, allow_past_lock: bool = False
+            ) -> RunResult:
+    """Record one run of ``config`` under ``out_root``.
+
+    ``backend`` overrides ``config.daq.backend``. A muscle held past its braid lock is refused
+    (``ValueError``) unless ``allow_past_lock``; a load cell the muscle would overload is said.
+    """
+    config = with_backend(config, backend)
+    lock = braid_lock(config)
+    if lock and not allow_past_lock:
+        raise ValueError(f"{lock}: pass --allow-past-lock to record it anyway")
+    for warning in filter(None, [lock, loadcell_warning(config)]):
+        notify(f"warning: {warning}")
     check_out_root(out_root)  # before the device is opened
-    device = make_backend(config, backend, clock)
-    operator = None if config.regulator.electronic else make_operator(device)
+    device = make_backend(config, clock)
+    operator = None if config.regulator.electronic else make_operator(config, device)
     return BenchRun(config, device, out_root, operator=operator, progress=progress,
                     plot=plot, notify=notify).execute()

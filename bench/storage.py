@@ -29,6 +29,7 @@ import io
 import json
 import math
 import os
+import re
 import socket
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -37,9 +38,23 @@ from typing import Any, NamedTuple
 import numpy as np
 import pandas as pd
 
-from mkm.fem.records import write_json_atomic
+from mkm.fem.records import spreadsheet_safe_text, write_json_atomic
 
 SCHEMA_VERSION = 2
+# A muscle id names the run folder and labels figures and reports: no path separators, no
+# markup, no spreadsheet formula, no mathtext.
+MUSCLE_ID_PATTERN = r"[A-Za-z0-9][A-Za-z0-9._+-]{0,63}"
+
+
+def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
+    """``value`` if it is a valid muscle id (:data:`MUSCLE_ID_PATTERN`), else ``ValueError``."""
+    if not isinstance(value, str) or not re.fullmatch(MUSCLE_ID_PATTERN, value):
+        text = value if isinstance(value, str) else repr(value)
+        shown = repr(text if len(text) <= 40 else text[:40] + "...")
+        raise ValueError(f"{where}={shown} ({len(text)} characters) is invalid: expected 1 to "
+                         "64 letters, digits or . _ + - (it names the run folder and labels "
+                         "figures)")
+    return value
 
 
 class RunStatus(enum.StrEnum):
@@ -51,10 +66,11 @@ class RunStatus(enum.StrEnum):
     ABORTED = "aborted"  # stopped on purpose: interlock, signal, operator
     FAILED = "failed"  # stopped by an error: device, storage, tare
     INCOMPLETE = "incomplete"  # never written: the loader's verdict on a dead "running" record
+    IMPORTED = "imported"  # measured elsewhere (another bench, a spreadsheet): mkm import
 
     @property
     def finished(self) -> bool:
-        return self in (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS)
+        return self in (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS, RunStatus.IMPORTED)
 
 
 WRITTEN_STATUSES = tuple(s for s in RunStatus if s is not RunStatus.INCOMPLETE)
@@ -180,9 +196,12 @@ class RunMeta:
     ``sequence`` holds the configured sequence and settle criteria plus ``n_steps`` (steps
     planned); ``steps_done`` counts the steps finished. ``stop_signal`` names the signal that
     stopped the run (``SIGTERM``...), ``stop_signal_number`` its number (exit status 128 + N).
-    ``manual_vent_required`` is True when the final vent command failed: the operator must vent
-    by hand. ``unvented_before`` lists earlier runs on this bench found ended without venting
-    (and vented) when this run started. ``lost_samples`` totals the ``gaps``.
+    ``manual_vent_required`` is True when the final vent could not be verified (the command
+    failed, or the monitor did not fall below the threshold: ``vent_check`` says what was read):
+    the operator must vent by hand. ``simulated`` is True for a run on a simulated bench (its
+    folder name ends in ``-SIMULATED``). ``unvented_before`` lists earlier runs on this bench
+    found ended without venting (and vented) when this run started. ``lost_samples`` totals
+    the ``gaps``.
     """
 
     muscle: MuscleMeta
@@ -211,16 +230,15 @@ class RunMeta:
     vented_at_unix_s: float | None = None
     last_command_bar: float = 0.0
     manual_vent_required: bool = False
+    vent_check: dict[str, Any] | None = None
     unvented_before: list[dict[str, Any]] = field(default_factory=list)
     reprocessed_from: dict[str, Any] | None = None
+    imported_from: dict[str, Any] | None = None
+    simulated: bool = False
 
     @property
     def n_steps(self) -> int | None:
         return self.sequence.get("n_steps")
-
-    @property
-    def simulated(self) -> bool:
-        return bool(self.hardware.get("simulated"))
 
     def as_dict(self) -> dict[str, Any]:
         data = dataclasses.asdict(self)
@@ -251,23 +269,33 @@ class RunMeta:
         if version not in (1, SCHEMA_VERSION):
             raise ValueError(f"{where} has schema_version {version!r}: expected 1 or "
                              f"{SCHEMA_VERSION} (a newer mkm wrote it?)")
-        if data.get("status") not in set(WRITTEN_STATUSES):
+        if not isinstance(data.get("status"), str) or data["status"] not in WRITTEN_STATUSES:
             raise ValueError(f"{where} is corrupt: expected a 'status' among "
-                             f"{', '.join(WRITTEN_STATUSES)}, got {data.get('status')!r}")
+                             f"{', '.join(WRITTEN_STATUSES)}, got {_shown(data.get('status'))}")
         if version == 1:
-            data = _upgrade_v1(data)
+            try:
+                data = _upgrade_v1(data)
+            except (TypeError, ValueError, KeyError, AttributeError) as exc:
+                raise ValueError(f"{where} is corrupt: its version-1 layout does not upgrade "
+                                 f"({type(exc).__name__})") from None
         known = {f.name for f in dataclasses.fields(cls)}
         values = {k: v for k, v in data.items() if k in known}
+        _check_fields(values, where)
         values["status"] = RunStatus(values["status"])
-        values["muscle"] = _muscle(data.get("muscle"), where)
+        values["muscle"] = muscle_from_dict(data.get("muscle"), where)
         if values.get("process") is not None:
-            values["process"] = ProcessIdentity(**values["process"])
-        values["gaps"] = [Gap(**g) for g in values.get("gaps") or []]
+            values["process"] = _record(ProcessIdentity, values["process"], f"{where}: process")
+        values["gaps"] = [_record(Gap, g, f"{where}: gaps[{k}]")
+                          for k, g in enumerate(values.get("gaps") or [])]
+        if "simulated" not in data:  # recorded in the hardware section before
+            values["simulated"] = bool((data.get("hardware") or {}).get("simulated"))
         values["schema_version"] = version  # as read; as_dict() writes the current layout
         return cls(**values)
 
 
-def _muscle(data: Any, where: str) -> MuscleMeta:
+def muscle_from_dict(data: Any, where: str) -> MuscleMeta:
+    from mkm.fem.muscle import check_value, check_wall
+
     if not isinstance(data, dict):
         raise ValueError(f"{where} has no 'muscle' object: expected id, D0_mm, t0_mm, L0_mm, eps")
     values = {}
@@ -276,13 +304,102 @@ def _muscle(data: Any, where: str) -> MuscleMeta:
             raise ValueError(f"{where}: muscle.{name} is missing: expected the muscle's {name}")
         value = data[name]
         if name == "id":
-            if not isinstance(value, str) or not value:
-                raise ValueError(f"{where}: muscle.id={value!r} is invalid: expected a name")
-        elif isinstance(value, bool) or not isinstance(value, int | float) \
-                or not math.isfinite(value):
-            raise ValueError(f"{where}: muscle.{name}={value!r} is invalid: expected a number")
+            check_muscle_id(value, f"{where}: muscle.id")
+        elif isinstance(value, bool) or not isinstance(value, int | float):
+            raise ValueError(f"{where}: muscle.{name}={_shown(value)} is invalid: expected a "
+                             "number")
+        else:
+            value = check_value(name, value, f"{where}: muscle.")
         values[name] = value
+    check_wall(values["D0_mm"], values["t0_mm"], f"{where}: muscle.")
     return MuscleMeta(**values)
+
+
+def _shown(value: Any, n: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= n else text[:n] + "..."
+
+
+# The JSON type each field of run.json must have (None allowed where the field is optional).
+_FIELD_TYPES: dict[str, tuple[type, ...]] = {
+    "reason": (str,), "hardware": (dict,), "calibration": (dict,), "tare": (dict, type(None)),
+    "sequence": (dict,), "steps_done": (int,), "config_source": (str,),
+    "config_overrides": (dict,), "command": (str,), "provenance": (dict,),
+    "started_utc": (str,), "ended_utc": (str, type(None)), "process": (dict, type(None)),
+    "counters": (dict,), "gaps": (list,), "lost_samples": (int,),
+    "stop_signal": (str, type(None)), "stop_signal_number": (int, type(None)),
+    "stop_to_vent_s": (float, int, type(None)), "vented_at_unix_s": (float, int, type(None)),
+    "last_command_bar": (float, int), "manual_vent_required": (bool,),
+    "vent_check": (dict, type(None)), "unvented_before": (list,),
+    "reprocessed_from": (dict, type(None)), "imported_from": (dict, type(None)),
+    "simulated": (bool,),
+}
+# Numbers other code reads from the nested objects: section -> key -> (low, high)
+_NESTED_NUMBERS = {
+    "sequence": {"n_steps": (0, 10**6), "force_limit_N": (0.0, 1e7), "tare_s": (0.0, 1e6)},
+    "hardware": {"sample_rate_hz": (1e-6, 1e6)},
+}
+
+
+def _check_fields(values: dict[str, Any], where: str) -> None:
+    """Every known field of run.json with the JSON type it must have, and the nested numbers
+    other tools read within bounds (``ValueError`` naming the first that is not)."""
+    for name, types in _FIELD_TYPES.items():
+        if name not in values:
+            continue
+        value = values[name]
+        if isinstance(value, bool) and bool not in types:
+            ok = False
+        else:
+            ok = isinstance(value, types)
+        if not ok:
+            kinds = " or ".join("null" if t is type(None) else t.__name__ for t in types)
+            raise ValueError(f"{where}: {name}={_shown(value)} is invalid: expected {kinds}")
+        if isinstance(value, float) and not math.isfinite(value):
+            raise ValueError(f"{where}: {name}={value!r} is not a finite number")
+    for section, keys in _NESTED_NUMBERS.items():
+        table = values.get(section) or {}
+        for key, (low, high) in keys.items():
+            value = table.get(key)
+            if value is None:
+                continue
+            if isinstance(value, bool) or not isinstance(value, int | float) \
+                    or not low <= value <= high:
+                raise ValueError(f"{where}: {section}.{key}={_shown(value)} is invalid: expected "
+                                 f"a number in [{low:g}, {high:g}]")
+    settle = (values.get("sequence") or {}).get("settle", {})
+    if not isinstance(settle, dict):
+        raise ValueError(f"{where}: sequence.settle={_shown(settle)} is invalid: expected an "
+                         "object")
+    counters = values.get("counters") or {}
+    for key, value in counters.items():
+        if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+            raise ValueError(f"{where}: counters.{str(key)[:40]}={_shown(value)} is invalid: "
+                             "expected a count >= 0")
+
+
+def _record(cls, data: Any, where: str):
+    """``cls(**data)`` for a small record of run.json, its fields' types checked."""
+    if not isinstance(data, dict):
+        raise ValueError(f"{where}={_shown(data)} is invalid: expected an object")
+    fields = {f.name: f for f in dataclasses.fields(cls)}
+    unknown = sorted(set(data) - set(fields))
+    missing = [n for n, f in fields.items() if n not in data
+               and f.default is dataclasses.MISSING]
+    if unknown or missing:
+        raise ValueError(f"{where} is invalid: expected the fields {', '.join(fields)}")
+    for name, value in data.items():
+        kind = str(fields[name].type)
+        if kind == "str":
+            ok = isinstance(value, str)
+        else:  # int and float fields, some optional
+            ok = (value is None and "None" in kind) or (
+                isinstance(value, int | float) and not isinstance(value, bool)
+                and math.isfinite(value) and (not kind.startswith("int") or
+                                              isinstance(value, int)))
+        if not ok:
+            raise ValueError(f"{where}.{name}={_shown(value)} is invalid: expected {kind}")
+    return cls(**data)
 
 
 def _upgrade_v1(data: dict[str, Any]) -> dict[str, Any]:
@@ -310,9 +427,18 @@ def _upgrade_v1(data: dict[str, Any]) -> dict[str, Any]:
     return data
 
 
-def run_folder_name(muscle_id: str, when: datetime.datetime | None = None) -> str:
+SIMULATED_SUFFIX = "-SIMULATED"
+REPROCESSED_SUFFIX = "-reprocessed"
+IMPORTED_SUFFIX = "-imported"
+
+
+def run_folder_name(muscle_id: str, when: datetime.datetime | None = None, k: int = 1,
+                    simulated: bool = False, origin: str = "") -> str:
+    """``<UTC time>_<muscle id>[-k][-reprocessed|-imported][-SIMULATED]``: the ``k``-th folder
+    of that second; ``origin`` is ``"reprocessed"``, ``"imported"`` or empty (acquired)."""
     when = when or datetime.datetime.now(datetime.UTC)
-    return f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}"
+    return (f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}{f'-{k}' if k > 1 else ''}"
+            f"{f'-{origin}' if origin else ''}{SIMULATED_SUFFIX if simulated else ''}")
 
 
 def _cell(value, column: str) -> str:
@@ -322,33 +448,53 @@ def _cell(value, column: str) -> str:
         return "true" if value else "false"
     if isinstance(value, float | np.floating):
         return f"{value:.10g}" if column in TIME_COLUMNS else f"{value:.6g}"
+    if isinstance(value, str):
+        return spreadsheet_safe_text(value)
     return str(value)
 
 
 class RunWriter:
-    """Creates a run folder and appends records to its files as the run goes."""
+    """Creates a run folder and appends records to its files as the run goes.
 
-    def __init__(self, root: str | Path, muscle_id: str, config_text: str):
+    The folder is made with its run.json first (``meta``), then config.toml and the CSV
+    headers; if any of that fails (a full disk) the folder is removed again and the
+    ``OSError`` raised, so no folder exists without its run.json.
+    """
+
+    def __init__(self, root: str | Path, meta: RunMeta, config_text: str):
+        import shutil
+
         root = Path(root)
         root.mkdir(parents=True, exist_ok=True)
-        name = run_folder_name(muscle_id)
-        path, k = root / name, 1
+        when, k = datetime.datetime.now(datetime.UTC), 1
         while True:
+            origin = ("reprocessed" if meta.reprocessed_from else
+                      "imported" if meta.imported_from else "")
+            path = root / run_folder_name(meta.muscle.id, when, k, meta.simulated, origin)
             try:
                 path.mkdir()
                 break
             except FileExistsError:
                 k += 1
-                path = root / f"{name}-{k}"
         self.path = path
-        (path / "config.toml").write_text(config_text, encoding="utf-8")
         self._files = {}
-        for name, columns in (("samples", SAMPLE_COLUMNS), ("steps", STEP_COLUMNS),
-                              ("commands", COMMAND_COLUMNS)):
-            f = open(path / f"{name}.csv", "w", encoding="utf-8", newline="")
-            f.write(",".join(columns) + "\n")
-            f.flush()
-            self._files[name] = (f, columns)
+        try:
+            self.write_meta(meta)
+            (path / "config.toml").write_text(config_text, encoding="utf-8")
+            for name, columns in (("samples", SAMPLE_COLUMNS), ("steps", STEP_COLUMNS),
+                                  ("commands", COMMAND_COLUMNS)):
+                f = open(path / f"{name}.csv", "w", encoding="utf-8", newline="")
+                self._files[name] = (f, columns)
+                f.write(",".join(columns) + "\n")
+                f.flush()
+        except OSError:
+            for f, _ in self._files.values():
+                try:
+                    f.close()
+                except OSError:
+                    pass
+            shutil.rmtree(path, ignore_errors=True)
+            raise
 
     def write_meta(self, meta: RunMeta) -> None:
         write_json_atomic(self.path / "run.json", meta.as_dict())
@@ -464,7 +610,8 @@ def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
                 except StopIteration:
                     return
                 except (pd.errors.ParserError, ValueError) as exc:
-                    raise ValueError(f"{path} is corrupt: {exc}") from None
+                    first = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
+                    raise ValueError(f"{path} is corrupt: {first}") from None
                 yield _typed(df, path)
         finally:
             stream.close()
@@ -493,9 +640,32 @@ def _typed(df: pd.DataFrame, path: Path) -> pd.DataFrame:
     if "purpose" in df:
         bad = ~df["purpose"].str.fullmatch(r"[a-z ]+").fillna(False).astype(bool)
         if bad.any():
-            raise ValueError(f"{path} is corrupt: purpose={df['purpose'][bad].iloc[0]!r}, "
+            raise ValueError(f"{path} is corrupt: purpose={_shown(df['purpose'][bad].iloc[0])}, "
                              "expected lowercase words")
+    if "flags" in df:
+        tokens = df["flags"].str.split("|").explode()
+        bad = ~(tokens.isin(FLAGS) | tokens.eq(""))
+        if bad.any():
+            raise ValueError(f"{path} is corrupt: flags={_shown(tokens[bad].iloc[0])}, expected "
+                             f"some of {', '.join(FLAGS)} joined by |")
+    for column in df.columns:
+        if column in DTYPES or column in ("settled", "ok"):
+            continue
+        try:
+            values = pd.to_numeric(df[column], errors="raise")
+        except (ValueError, TypeError):
+            raise ValueError(f"{path} is corrupt: {column} holds text, expected numbers") \
+                from None
+        magnitude = values.abs()
+        if (magnitude > MAX_CELL_MAGNITUDE).any():  # NaN (a broken input) is recorded as such
+            raise ValueError(f"{path} is corrupt: {column}="
+                             f"{values[magnitude > MAX_CELL_MAGNITUDE].iloc[0]!r} is beyond "
+                             f"+-{MAX_CELL_MAGNITUDE:g} (no bench reading is)")
+        df[column] = values
     return df
+
+
+MAX_CELL_MAGNITUDE = 1e9  # larger than any index, time [s], pressure [bar], force [N] or volt
 
 
 @dataclass
@@ -540,23 +710,37 @@ class Run:
 
     @property
     def complete(self) -> bool:
-        return self.status == RunStatus.COMPLETE
+        """Every planned step done and nothing lost (an imported table counts as complete)."""
+        return self.status in (RunStatus.COMPLETE, RunStatus.IMPORTED)
 
     @property
     def reason(self) -> str:
         return self.meta.reason
 
 
+MAX_RUN_JSON_BYTES = 10_000_000
+
+
 def read_meta(path: str | Path) -> RunMeta:
     """The :class:`RunMeta` of the run folder ``path`` (``ValueError`` when it cannot be read)."""
     path = Path(path)
     meta_path = path / "run.json"
-    if not meta_path.is_file():
+    try:
+        is_file = meta_path.is_file()
+    except OSError as exc:
+        raise ValueError(f"{str(path)[:200]} cannot be read as a run folder "
+                         f"({exc.strerror or exc})") from None
+    if not is_file:
         raise ValueError(f"{path} is not a run folder: run.json is missing")
+    if meta_path.stat().st_size > MAX_RUN_JSON_BYTES:
+        raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
+                         f"record of at most {MAX_RUN_JSON_BYTES}")
     try:
         data = json.loads(meta_path.read_text(encoding="utf-8"))
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
+    except RecursionError:
+        raise ValueError(f"{meta_path} is corrupt (nested too deeply)") from None
     return RunMeta.from_dict(data, str(meta_path))
 
 
@@ -586,6 +770,12 @@ def load_run(path: str | Path) -> Run:
     if status == RunStatus.RUNNING and not (meta.process and meta.process.alive()):
         status = RunStatus.INCOMPLETE
         problems.append("the run stopped without closing its record (killed or crashed)")
+        # run.json's counter is from its last rewrite; the rows on disk are the truth
+        written = Run(path, meta, steps, status).n_samples if samples_csv.is_file() else 0
+        if written != meta.counters.get("samples"):
+            problems.append(f"samples counted from samples.csv: {written} (run.json said "
+                            f"{meta.counters.get('samples')})")
+            meta.counters["samples"] = written
         unvented = _unvented(commands)
         if unvented:
             problems.append(unvented)

@@ -35,8 +35,13 @@ def state_dir() -> Path:
     return Path(platformdirs.user_state_dir("mkm-bench", appauthor=False))
 
 
+def bench_folder_name(bench_key: str) -> str:
+    """``bench_key`` as a file name of the state folder."""
+    return re.sub(r"[^A-Za-z0-9._-]", "_", bench_key)
+
+
 def _folder(bench_key: str) -> Path:
-    return state_dir() / "benches" / re.sub(r"[^A-Za-z0-9._-]", "_", bench_key)
+    return state_dir() / "benches" / bench_folder_name(bench_key)
 
 
 @dataclass

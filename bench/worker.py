@@ -41,8 +41,9 @@ class Stop(Exception):
 class Acquisition:
     """The acquisition loop on ``backend`` with ``config``, recording into ``recorder``.
 
-    ``stop_requested`` returns the ``time.monotonic()`` of a pending stop request (first
-    Ctrl-C) or None; ``observers`` get every block (``block(samples)``) for progress and plots.
+    ``stop_requested`` returns the :class:`Stop` to raise at this safe point (a first Ctrl-C, a
+    ``mkm vent`` asking) or None; ``stop_time`` the ``time.monotonic()`` of the first request;
+    ``observers`` get every block (``block(samples)``) for progress and plots.
     ``lease`` (a :class:`mkm.bench.unvented.BenchLease`) learns every commanded pressure.
     """
 
@@ -64,6 +65,7 @@ class Acquisition:
         self.manometer_bar = math.nan
         self.next_index = 0
         self.vented = False  # the last command written was a successful vent
+        self.marker_problem = ""  # the bench marker could not be updated after a vent
         self._pending_flags: list[str] = []
         self._off_since_s: float | None = None  # pressure away from the command since then
 
@@ -99,9 +101,9 @@ class Acquisition:
             observer.block(rows)
         if trips:
             self._trip(trips[0])
-        if self.stop_requested() is not None:
-            raise Stop(RunStatus.ABORTED, "stopped by Ctrl-C (SIGINT) at a safe point; vented",
-                       "SIGINT", 2)
+        stop = self.stop_requested()
+        if stop is not None:
+            raise stop
         return rows
 
     def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
@@ -181,8 +183,14 @@ class Acquisition:
         t_s = self.next_index / self.rate_hz
         ok = False
         if self.lease is not None and clamped > 0:
-            # before the write: a kill between the write and any record still finds it
-            self.lease.command(clamped)
+            # before the write: a kill between the write and any record still finds it; a
+            # pressure the marker cannot record is not commanded
+            try:
+                self.lease.command(clamped)
+            except OSError as exc:
+                raise OSError(exc.errno, f"the bench marker {self.lease.path} could not be "
+                              f"written ({exc.strerror or exc}): {clamped:g} bar not "
+                              "commanded") from None
         try:
             self.backend.write_command(volts)
             ok = True
@@ -196,10 +204,15 @@ class Acquisition:
                 meta.vented_at_unix_s = time.time()
         finally:
             self.recorder.meta.last_command_bar = self.command_bar
+            if ok and self.lease is not None and clamped == 0.0:
+                try:
+                    self.lease.command(0.0)
+                    self.marker_problem = ""
+                except OSError as exc:  # the vent went through; the state folder did not
+                    self.marker_problem = (f"the bench marker {self.lease.path} could not be "
+                                           f"updated ({exc.strerror or exc})")
             self.recorder.command(CommandRecord(t_s, self.next_index, clamped, volts, ok,
                                                 purpose))
-            if ok and self.lease is not None and clamped == 0.0:
-                self.lease.command(0.0)
 
     def acquire_for(self, duration_s: float, phase: str, step: int, set_bar: float,
                     cell_volts: list | None = None) -> None:

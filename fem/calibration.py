@@ -44,6 +44,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from mkm.fem.materials import MooneyRivlin, mooney_rivlin
 from mkm.fem.records import file_sha256, provenance, source_version, write_atomic
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
@@ -135,7 +136,9 @@ def calibrated(key: str) -> dict:
 
 
 class CalibratedTheta0:
-    """Mixin of models whose braid angle defaults to their entry in the calibration file."""
+    """Mixin of models whose braid angle defaults to their entry in the calibration file, and
+    whose rubber (if they have one) to the entry's ``C10_MPa``, ``C01_MPa`` where a muscle was
+    identified (``mkm identify``), else to Silastic S."""
 
     theta0_deg: float | None
 
@@ -143,6 +146,16 @@ class CalibratedTheta0:
         if self.theta0_deg is not None:
             return float(self.theta0_deg)
         return calibrated(self.calibration_key)["theta0_deg"]
+
+    def _rubber(self) -> MooneyRivlin:
+        given = {"C10_MPa": self.C10_MPa, "C01_MPa": self.C01_MPa}
+        if None in given.values():
+            try:
+                entry = calibrated(self.calibration_key)
+            except ValueError:  # an explicit angle needs no entry, nor does the nominal rubber
+                entry = {}
+            given = {k: entry.get(k) if v is None else v for k, v in given.items()}
+        return mooney_rivlin(**given)
 
 
 def read_reference(path) -> pd.DataFrame:
@@ -300,8 +313,7 @@ def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
         offset = ref_lines[0][2] - lines[0][1]
         shifted = make_model(theta0).predict(np.maximum(args[0] - offset, 0.0), *args[1:])
         shifted_force = np.where(args[0] - offset > 0, shifted.force_N, 0.0)
-        # where the braid goes slack at the cap just above the model's own threshold the FE
-        # reports no force: those points are left out of the shifted residual
+        # a point the model could not solve is left out of the shifted residual
         ok = np.isfinite(shifted_force)
         fit["threshold_offset_bar"] = float(offset)
         fit["rmse_shifted_N"] = float(np.sqrt(np.mean((shifted_force[ok] - measured[ok]) ** 2)))

@@ -175,6 +175,28 @@ def file_sha256(path: str | os.PathLike) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
+#: What makes a spreadsheet read a text cell as a formula (or a DDE command): OWASP's list.
+FORMULA_LEAD = ("=", "+", "-", "@", "\t", "\r")
+
+
+def spreadsheet_safe_text(text: str) -> str:
+    """``text`` with a leading ``'`` if it starts like a formula (:data:`FORMULA_LEAD`), so
+    Excel, LibreOffice and Sheets show it as text instead of evaluating it."""
+    return "'" + text if text.startswith(FORMULA_LEAD) else text
+
+
+def spreadsheet_safe(frame):
+    """A copy of the DataFrame ``frame`` whose text cells cannot run as spreadsheet formulas
+    (:func:`spreadsheet_safe_text`); numbers are left alone."""
+    out = frame.copy()
+    for column in out.columns:
+        values = out[column]
+        if values.dtype == object or "str" in str(values.dtype):
+            out[column] = values.map(lambda v: spreadsheet_safe_text(v) if isinstance(v, str)
+                                     else v)
+    return out
+
+
 def sidecar_path(path: str | os.PathLike) -> Path:
     """The JSON file that holds a CSV's metadata: ``sweep.csv`` -> ``sweep.json``."""
     return Path(path).with_suffix(".json")

@@ -21,7 +21,8 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from mkm.fem import ladder
-from mkm.fem.ladder import C01, C10, L0, THETA0, Entry, Parameter
+from mkm.fem.ladder import C01, C10, L0, MESH, THETA0, Entry, Parameter
+from mkm.surrogate import kinds
 
 if TYPE_CHECKING:  # annotations only: `mkm models` loads no model code
     from mkm.fem.interface import ForceModel
@@ -50,15 +51,12 @@ def _auto(**params) -> ForceModel:
     return AutoModel(build=build_spec, **params)
 
 
-SURROGATE_KINDS_TEXT = ("best (default: muscle-gp), muscle-gp, physics, gp, mlp-paper or "
-                        "net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]")
-
 APP_ENTRIES: dict[str, Entry] = {
     "surrogate": Entry(
         "surrogate", _surrogate, "Surrogate",
         "scikit-learn surrogate trained on the FE design (or another FE dataset); refuses "
         "muscle parameters its training did not cover", "surrogate",
-        {"kind": Parameter(SURROGATE_KINDS_TEXT, str),
+        {"kind": Parameter(kinds.describe(), str),
          "path": Parameter("folder of a model saved by `mkm surrogate train`", str),
          "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01,
          "accept_mismatch": Parameter("true: load a saved model whose code, calibration or data "
@@ -73,6 +71,24 @@ APP_ENTRIES: dict[str, Entry] = {
          "per_point": Parameter("true: choose per point instead of one model per sweep", bool),
          "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
         colour="tab:purple", contract_spec="auto:tolerance=0.05"),
+    "friction": Entry(
+        "friction", "mkm.fem.friction:FrictionCreep", "Static model + friction and creep",
+        "a static rung with braid friction (rising and falling branches) and one creep mode, "
+        "at the values `mkm identify` wrote into the calibration (default none)", "friction",
+        {"static": Parameter("the static rung: axisym (default), thickwall or eq2", str,
+                             ("axisym", "thickwall", "eq2")),
+         "direction": Parameter("rising (default), falling or mean (the static force)", str,
+                                ("rising", "falling", "mean")),
+         "hold_s": Parameter("time held at the pressure [s]; default 0, inf: relaxed"),
+         "hysteresis_fraction": Parameter("friction band half-width (a fraction); default "
+                                          "calibrated, else 0"),
+         "creep_fraction": Parameter("share of the force creep relaxes (a fraction); default "
+                                     "calibrated, else 0"),
+         "creep_tau_s": Parameter("creep time constant [s]; default calibrated, else 30"),
+         "mesh": MESH, "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
+        colour="tab:brown", expensive=True,
+        contract_spec="friction:static=thickwall,hysteresis_fraction=0.03,creep_fraction=0.02,"
+                      "hold_s=30"),
 }
 
 

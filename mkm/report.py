@@ -34,7 +34,12 @@ import numpy as np
 import pandas as pd
 
 from mkm.fem.paper import L0_MM, TABLE3_CSV
-from mkm.fem.records import provenance, read_prediction_header, write_json_atomic
+from mkm.fem.records import (
+    provenance,
+    read_prediction_header,
+    spreadsheet_safe,
+    write_json_atomic,
+)
 from mkm.figures import (
     model_colours,
     overlay_figure,
@@ -53,9 +58,10 @@ from mkm.html import (
     save_figure,
     table_html,
 )
+from mkm.identify.page import report_section
 from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, model_version
-from mkm.progress import progress_bar
+from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 
@@ -141,7 +147,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     for k, run_dir in enumerate(run_dirs, start=1):
         runs.append(_score(_Run(k, load_run(run_dir), specs), cache_dir, prov, bar, models))
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
-    summary.to_csv(out / "summary.csv", index=False, float_format="%.6g")
+    spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
     sections = [_summary_section(runs, summary, names, tolerance),
                 _overlay_section(runs, out, names, colours),
@@ -149,6 +155,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     for r in runs:
         sections.append(_run_section(r, out, names, colours, prov))
         bar.update(1)
+    sections.append(report_section(run_dirs, out))
     if surrogate_section:
         sections.append(_surrogate_section(out, prov))
         bar.update(1)
@@ -184,6 +191,7 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     L0_mm = float(muscle.get("L0_mm", L0_MM))
     for spec in r.specs:
         if (spec, L0_mm) not in models:  # a surrogate loads in about a second: once is enough
+            _announce_training(spec, bar)
             models[spec, L0_mm] = spec.build(L0_mm=L0_mm)
         model = models[spec, L0_mm]
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
@@ -196,6 +204,20 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
     return r
+
+
+def _announce_training(spec: Spec, bar) -> None:
+    """Name the one long step of a first report before it starts: training the surrogate."""
+    if spec.name != "surrogate" or dict(spec.params).get("path") or getattr(bar, "disable",
+                                                                            False):
+        return
+    from mkm.surrogate.train import is_cached
+
+    kind = str(dict(spec.params).get("kind", "best"))
+    if not is_cached(kind):
+        phase("report", f"training the {kind} surrogate on first use (GP fits over the FE "
+                        "design: about half a minute on two cores; cached for every later "
+                        "command)")
 
 
 def _pressure_tolerance(meta) -> float:
@@ -261,9 +283,10 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
             if tolerance and first:
                 auto = (f'<td rowspan="{len(ordered)}">'
                         f"{esc(choice[0]) if choice else '—'}</td>")
-            rows.append(f"<tr>{run_cell}<td>{name}</td><td>{err}</td><td>{rmse}</td>"
-                        f"<td>{s['seconds_per_point']:.3g}</td>"
-                        f"<td>{s['valid_points']} / {s['points']}</td>{auto}</tr>")
+            rows.append(f'<tr>{run_cell}<td class="name">{name}</td><td class="num">{err}</td>'
+                        f'<td class="num">{rmse}</td>'
+                        f'<td class="num">{s["seconds_per_point"]:.3g}</td>'
+                        f'<td class="num">{s["valid_points"]} / {s["points"]}</td>{auto}</tr>')
     status = "".join(
         f'<tr><td><a href="#run-{r.k}">run {r.k}</a></td><td>{_status_html(r)}</td>'
         f"<td>{len(r.run.steps)} / {esc(_planned_steps(r.meta))}</td>"
@@ -411,7 +434,7 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                                  + _signals(r, out) + setup)
 
     stem = f"run{r.k}"
-    r.scored.to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
+    spreadsheet_safe(r.scored).to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
     title = (f"run {r.k}: {_plain(muscle.get('id', ''))}, eps = {r.eps_pct:.1f} %")
     fig_path = save_figure(run_figure(steps, r.scored, title, names, colours),
                            out / f"{stem}_force_error.png")

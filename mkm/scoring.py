@@ -23,7 +23,7 @@ from mkm.registry import entries
 
 def error_summary(reference_N, force_N, valid, err_pct) -> dict:
     """Over the valid points: how many, the largest |Err%|, the RMSE [N] and the largest
-    |reference - force| [N] (NaN where no point is valid)."""
+    absolute residual ``reference - force`` [N] (NaN where no point is valid)."""
     ok = np.asarray(valid, dtype=bool)
     residual = np.asarray(reference_N, dtype=float)[ok] - np.asarray(force_N, dtype=float)[ok]
     err = np.abs(np.asarray(err_pct, dtype=float)[ok])

@@ -13,7 +13,17 @@ import re
 import sys
 import warnings
 
-from mkm.cli import bench, demo, design, fem, models, surrogate, validation
+from mkm.cli import (
+    bench,
+    demo,
+    design,
+    exchange,
+    fem,
+    identify,
+    models,
+    surrogate,
+    validation,
+)
 
 
 class _Version(argparse.Action):
@@ -51,7 +61,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
                                 parser_class=_Parser)
-    for group in (demo, bench, fem, surrogate, validation, design, models):
+    for group in (demo, bench, exchange, fem, surrogate, validation, design, identify, models):
         group.register(sub)
     return parser
 

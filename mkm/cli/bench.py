@@ -1,11 +1,12 @@
 """``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess``: argument parsing only.
 
-Hardware failures (:class:`mkm.bench.backend.BenchError`) print one line ``mkm: error: ...`` and
-exit
-with status 1; bad input is a ``ValueError`` (status 2, handled by ``mkm.cli.main``). ``mkm
-acquire`` exits with :attr:`mkm.bench.run.RunResult.exit_code` (0 complete, 3 complete with lost
-samples, 128 + N after signal N, 2 when the disk failed, 1 otherwise) and always prints the run
-folder last on stdout once it exists.
+Hardware failures (:class:`mkm.bench.backend.BenchError`, a bench another process holds
+included) print one line ``mkm: error: ...`` and exit with status 1; bad input is a
+``ValueError`` (status 2, handled by ``mkm.cli.main``). ``mkm acquire`` exits with
+:attr:`mkm.bench.run.RunResult.exit_code` (0 complete, 3 complete with lost samples, 128 + N
+after signal N, 2 when the disk failed, 4 when the vent could not be verified, 1 otherwise) and
+always prints the run folder last on stdout once it exists. ``--backend`` choices are the
+backends of :mod:`mkm.bench.backends`.
 """
 
 from __future__ import annotations
@@ -21,9 +22,12 @@ EXIT_FAILED = 1
 
 
 def _positive_seconds(text: str) -> float:
+    from mkm.bench.procedures import MAX_SECONDS
+
     value = parse_number(text, "--seconds")
-    if value <= 0:
-        raise ValueError(f"--seconds {text!r} is invalid: expected a duration > 0 s")
+    if not 0 < value <= MAX_SECONDS:
+        raise ValueError(f"--seconds {text!r} is invalid: expected a duration > 0 s, at most "
+                         f"{MAX_SECONDS:g} s")
     return value
 
 
@@ -39,10 +43,13 @@ def _volts(text: str) -> list[float]:
 
 
 def _add_device_arguments(parser, clock: bool = True) -> None:
+    from mkm.bench.backends import BACKENDS
+
     parser.add_argument("--config", help="bench TOML file (default: the packaged paper "
                         "prototype on the simulated bench, bench/configs/paper_prototype.toml)")
-    parser.add_argument("--backend", choices=("sim", "ni"), default="sim",
-                        help="simulated bench or NI USB-6001 through nidaqmx (default %(default)s)")
+    parser.add_argument("--backend", choices=tuple(BACKENDS), default=None,
+                        help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.values())
+                        + " (default: the config's [daq] backend)")
     if clock:
         parser.add_argument("--clock", choices=("virtual", "real"), default="virtual",
                             help="sim only: virtual time (instant) or real time "
@@ -70,7 +77,11 @@ def register(subparsers) -> None:
     acquire.add_argument("--out", default=str(default_out("runs")),
                          help="folder that receives the run folder (default %(default)s)")
     acquire.add_argument("--plot", action="store_true", help="live plot in a separate window")
-    acquire.add_argument("--no-progress", action="store_true", help="no progress bar")
+    acquire.add_argument("--no-progress", action="store_true",
+                         help="no progress (default: a bar on a terminal, else a status line "
+                         "every 10 s)")
+    acquire.add_argument("--allow-past-lock", action="store_true",
+                         help="record even with eps past the braid lock (refused otherwise)")
     acquire.set_defaults(func=_acquire)
 
     tare = subparsers.add_parser(
@@ -122,12 +133,15 @@ def register(subparsers) -> None:
 
     rep = subparsers.add_parser(
         "reprocess", help="recompute a run's forces from its raw volts with a new calibration",
-        description="Write a new run folder with every force recomputed from the raw load-cell "
-                    "volts with the [loadcell] of NEW.toml (tare and hold averages again), with "
-                    "provenance (reprocessed_from in run.json).",
+        description="Write a new run folder (its name ends in -reprocessed) with every force "
+                    "recomputed from the raw load-cell volts with the [loadcell] of NEW.toml "
+                    "(tare and hold averages again), with provenance (reprocessed_from in "
+                    "run.json). NEW.toml may hold [loadcell] only: its sections replace the "
+                    "run's own configuration's.",
         epilog="example: mkm reprocess mkm-out/runs/RUN --config new.toml --out mkm-out/runs")
     rep.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
-    rep.add_argument("--config", required=True, help="bench TOML with the new [loadcell]")
+    rep.add_argument("--config", required=True,
+                     help="TOML with the new [loadcell] (and any other section to replace)")
     rep.add_argument("--out", help="folder that receives the new run folder (default: beside "
                      "RUN_DIR)")
     rep.set_defaults(func=_reprocess)
@@ -138,36 +152,46 @@ def _failed(exc: Exception) -> int:  # a mkm.bench.backend.BenchError
     return EXIT_FAILED
 
 
-def _acquire(args) -> int:
+def _config(args, **overrides):
     from mkm.bench.config import load_config
+
+    return load_config(args.config, backend=args.backend, **overrides)
+
+
+def _acquire(args) -> int:
+    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.run import acquire, check_out_root
 
-    config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
+    config = _config(args, eps=args.eps, pressures_bar=args.pressures)
     check_out_root(args.out)  # bad --out: one line, exit 2, before the device is opened
     plot = args.plot
     if plot and not has_display():
         print("mkm: warning: --plot needs a display and none is set (DISPLAY and "
               "WAYLAND_DISPLAY are empty): recording without the live plot", file=sys.stderr)
         plot = False
-    result = acquire(config, backend=args.backend, clock=args.clock, out_root=args.out,
-                     progress=not args.no_progress, plot=plot)
+    try:
+        result = acquire(config, clock=args.clock, out_root=args.out,
+                         progress=not args.no_progress, plot=plot,
+                         allow_past_lock=args.allow_past_lock)
+    except BenchError as exc:  # the bench is held by another process: nothing was touched
+        return _failed(exc)
+    simulated = " SIMULATED" if config.simulated else ""
     if result.path is None:
-        print(f"mkm: error: {result.reason}", file=sys.stderr)
+        print(f"mkm: error:{simulated} {result.reason}", file=sys.stderr)
         return result.exit_code
-    print(f"run {result.status}: {result.reason}", file=sys.stderr)
+    print(f"run{simulated} {result.status}: {result.reason}", file=sys.stderr)
     if result.manual_vent_required:
-        print("mkm: VENT THE MUSCLE BY HAND NOW: the vent command failed", file=sys.stderr)
+        print("mkm: VENT THE MUSCLE BY HAND NOW: the vent was not verified", file=sys.stderr)
     print(result.path, flush=True)
     return result.exit_code
 
 
 def _tare(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
-    from mkm.bench.config import load_config
     from mkm.bench.procedures import tare
 
     try:
-        out = tare(load_config(args.config), args.backend, args.clock, args.seconds)
+        out = tare(_config(args), clock=args.clock, seconds=args.seconds)
     except BenchError as exc:
         return _failed(exc)
     print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
@@ -189,16 +213,15 @@ def loadcell_toml(fit: dict, config=None) -> str:
 
 def _calibrate_loadcell(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
-    from mkm.bench.config import load_config
     from mkm.bench.procedures import calibrate_loadcell, fit_loadcell
 
-    config = load_config(args.config)
+    config = _config(args)
     if args.volts is not None:
         out = fit_loadcell(args.masses, args.volts)
     else:
         try:
-            out = calibrate_loadcell(config, args.masses, args.backend, args.clock,
-                                     args.seconds)
+            out = calibrate_loadcell(config, args.masses, clock=args.clock,
+                                     seconds=args.seconds)
         except BenchError as exc:
             return _failed(exc)
     # stdout: the block to paste into the config; stderr: the fit, for the operator
@@ -212,28 +235,25 @@ def _calibrate_loadcell(args) -> int:
 
 def _check(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
-    from mkm.bench.config import load_config
     from mkm.bench.procedures import check
 
-    config = load_config(args.config, eps=args.eps, pressures_bar=args.pressures)
+    config = _config(args, eps=args.eps, pressures_bar=args.pressures)
     try:
-        text = check(config, args.backend)
+        text, warnings = check(config)
     except BenchError as exc:
         return _failed(exc)
     print(text)
-    for line in text.splitlines():
-        if line.startswith("warning:"):
-            print(f"mkm: {line}", file=sys.stderr)
+    for warning in warnings:  # once, on stderr only
+        print(f"mkm: warning: {warning}", file=sys.stderr)
     return 0
 
 
 def _vent(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
-    from mkm.bench.config import load_config
     from mkm.bench.procedures import vent
 
     try:
-        out = vent(load_config(args.config), args.backend, args.clock)
+        out = vent(_config(args), clock=args.clock)
     except BenchError as exc:
         print(f"mkm: error: {exc}; VENT BY HAND", file=sys.stderr)
         return EXIT_FAILED
@@ -247,9 +267,8 @@ def _vent(args) -> int:
 
 
 def _reprocess(args) -> int:
-    from mkm.bench.config import load_config
-    from mkm.bench.reprocess import reprocess
+    from mkm.bench.reprocess import overlay_config, reprocess
 
-    path = reprocess(args.run_dir, load_config(args.config), args.out)
+    path = reprocess(args.run_dir, overlay_config(args.run_dir, args.config), args.out)
     print(path)
     return 0

@@ -21,9 +21,8 @@ from matplotlib.patches import Patch, Rectangle
 
 from mkm.design.result import DesignResult, design_record
 from mkm.design.search import geometry_text, span_text, surrogate_uncertainty
-from mkm.design.spec import NEAR_LOCK_FRACTION
+from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.calibration import calibration_provenance
-from mkm.fem.materials import MATERIALS
 from mkm.fem.records import (
     provenance,
     sidecar_path,
@@ -71,19 +70,21 @@ def write_design(result: DesignResult, out: Path) -> Path:
                                                              lineterminator="\n"))
     figures = []
     best = result.chosen if result.chosen is not None else result.designs.iloc[0]
-    data = contour_data(result, best)
-    for k, req in enumerate(s.requirements, start=1):
-        fig = contour_figure(result, k - 1, best, data)
-        figures.append((save_figure(fig, out / f"requirement{k}_contours.png"),
-                        f"Requirement {k} ({esc(req.label)}): surrogate force over D0 x t0 at "
-                        f"{req.pressure_bar:g} bar and eps = {req.eps:g} (L0 = "
-                        f"{best['L0_mm']:.4g} mm, theta0 = {best['theta0_deg']:.4g} deg, "
-                        f"{esc(best['rubber'])}); black line: the required force, dashed: "
-                        "plus the surrogate margin; hatched: feasible for every requirement "
-                        "and the housing (dotted: its outer diameter limit); dashed box: the "
-                        "constraints (the search's feasible set is the hatched region inside "
-                        "it); markers: the verified designs (white: the FE confirms), star: "
-                        "the chosen design."))
+    # an FE search evaluated its coarse grid only: no model to draw over the whole box
+    if not s.fe_search:
+        data = contour_data(result, best)
+        for k, req in enumerate(s.requirements, start=1):
+            fig = contour_figure(result, k - 1, best, data)
+            figures.append((save_figure(fig, out / f"requirement{k}_contours.png"),
+                            f"Requirement {k} ({esc(req.label)}): surrogate force over D0 x t0 at "
+                            f"{req.pressure_bar:g} bar and eps = {req.eps:g} (L0 = "
+                            f"{best['L0_mm']:.4g} mm, theta0 = {best['theta0_deg']:.4g} deg, "
+                            f"{esc(best['rubber'])}); black line: the required force, dashed: "
+                            "plus the surrogate margin; hatched: feasible for every requirement "
+                            "and the housing (dotted: its outer diameter limit); dashed box: the "
+                            "constraints (the search's feasible set is the hatched region inside "
+                            "it); markers: the verified designs (white: the FE confirms), star: "
+                            "the chosen design."))
     fig = curves_figure(result)
     figures.append((save_figure(fig, out / "fe_curves.png"),
                     "FE force against pressure of the verified designs (axisym, "
@@ -100,7 +101,8 @@ COLUMN_DOCS = {
     "rank": "rank of the design in the surrogate search (1: best by the objective)",
     "D0_mm": "inner tube diameter at rest [mm]", "t0_mm": "wall thickness at rest [mm]",
     "L0_mm": "length at rest [mm]", "theta0_deg": "braid angle at rest [deg]",
-    "rubber": "wall material (fem.materials.MATERIALS)",
+    "rubber": "wall material: calibrated (the calibration's, else Silastic S) or a set of "
+              "mkm.fem.materials.MATERIALS",
     "outer_diameter_mm": "braid diameter of the unloaded muscle at the working pressure [mm] "
                          "(thick-wall kinematics, free contraction)",
     "rubber_volume_cm3": "wall volume at rest [cm^3]",
@@ -214,8 +216,8 @@ def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) ->
             out["force"].append(f)
             out["margin"].append(u)
     out["outer"] = outer_diameter_mm(D0, t0, best["theta0_deg"], s.working_pressure_bar,
-                                     MATERIALS[best["rubber"]].C10_MPa,
-                                     MATERIALS[best["rubber"]].C01_MPa)
+                                     rubber_of(best["rubber"]).C10_MPa,
+                                     rubber_of(best["rubber"]).C01_MPa)
     limit = s.constraints.get("max_outer_diameter_mm")
     out["feasible"] = feasible if limit is None else feasible & (out["outer"] <= limit)
     return out

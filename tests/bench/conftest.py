@@ -105,3 +105,19 @@ def fake_driver(config, _interpreter):
     driver = FakeDriver(interpreter, config)
     with mock.patch("nidaqmx.utils._select_interpreter", return_value=interpreter):
         yield driver
+
+
+@pytest.fixture
+def mkm_cli(capsys):
+    """``mkm_cli(argv) -> (exit status, stdout, stderr)`` of ``mkm argv`` run in-process."""
+    from mkm.cli import main
+
+    def run(argv):
+        try:
+            code = main(argv)
+        except SystemExit as exc:  # argparse --help and errors leave through parser.exit
+            code = exc.code
+        out, err = capsys.readouterr()
+        return code, out, err
+
+    return run

@@ -46,7 +46,21 @@ eps = 0
 [loadcell]
 capacity_N = 1000
 sensitivity_N_per_V = 100
+[daq]
+backend = "sim"
 """
+
+
+def with_settings(extra: str, base: str = BASE) -> str:
+    """``base`` with the ``[section]`` lines of ``extra`` merged into its own tables."""
+    text = base
+    for block in extra.strip().split("\n["):
+        header, _, lines = ("[" + block.lstrip("[")).partition("\n")
+        if f"\n{header}\n" in text:
+            text = text.replace(f"\n{header}\n", f"\n{header}\n{lines}\n", 1)
+        else:
+            text += f"{header}\n{lines}\n"
+    return text
 
 
 def test_minimal_config_takes_defaults():
@@ -74,7 +88,7 @@ def test_minimal_config_takes_defaults():
 ])
 def test_bad_settings_are_named(extra, message):
     with pytest.raises(ValueError, match=message):
-        parse_config(BASE + extra)
+        parse_config(with_settings(extra))
 
 
 def test_load_cell_that_clips_before_capacity_is_refused():
@@ -129,16 +143,13 @@ DEVICE_IMPOSSIBLE = [
 @pytest.mark.parametrize("extra, message", DEVICE_IMPOSSIBLE,
                          ids=[e.split("\n")[1] for e, _ in DEVICE_IMPOSSIBLE])
 def test_device_impossible_settings_are_refused(extra, message):
-    text = BASE + extra
-    if extra.startswith("[loadcell]"):
-        text = BASE.replace("[loadcell]", extra)
     with pytest.raises(ValueError, match=message):
-        parse_config(text)
+        parse_config(with_settings(extra))
 
 
 def test_rse_allows_every_input():
-    c = parse_config(BASE + "[daq]\nterminal_config = 'rse'\n[regulator]\nmonitor_channel = "
-                     "'ai7'")
+    c = parse_config(with_settings("[daq]\nterminal_config = 'rse'\n[regulator]\n"
+                                   "monitor_channel = 'ai7'"))
     assert c.ai_channels == ["ai0", "ai7"]
 
 
@@ -151,10 +162,16 @@ def test_muscle_ids_that_cannot_name_a_folder_or_a_label(muscle_id):
         parse_config(text)
 
 
-def test_geometry_is_bounded():
-    # --D0 1e9 gave 3e17 N
-    with pytest.raises(ValueError, match=r"D0_mm=1e\+09, L0_mm=282 is not a bench muscle"):
-        load_config().replace(muscle={"D0_mm": 1e9})
+@pytest.mark.parametrize("name, value, message", [
+    ("D0_mm", 1e9, r"muscle\.D0_mm=1e\+09 is invalid: expected an inner diameter in \[1, 500\] mm"),
+    ("D0_mm", 1e-300, r"muscle\.D0_mm=1e-300 is invalid"),
+    ("L0_mm", 1e-9, r"muscle\.L0_mm=1e-09 is invalid: expected a length at rest in \[10, 3000\]"),
+    ("t0_mm", 20.0, r"muscle\.t0_mm=20 is too thick for D0_mm=30"),
+])
+def test_geometry_is_in_the_muscle_types_limits(name, value, message):
+    # --D0 1e9 gave 3e17 N; issue 20: D0 1e-300 mm and L0 1e-9 mm were accepted
+    with pytest.raises(ValueError, match=message):
+        load_config().replace(muscle={name: value})
 
 
 def test_huge_staircases_are_refused_with_their_duration():

@@ -19,8 +19,8 @@ def test_console_operator_reasks_on_bad_readings(capsys):
 
 def test_console_operator_vent_and_masses():
     prompts = []
-    operator = ConsoleOperator(lambda p: prompts.append(p) or "")
-    operator.vent()
+    operator = ConsoleOperator(lambda p: prompts.append(p) or "0.02")
+    assert operator.vent() == 0.02  # the reading that confirms the vent
     operator.hang_mass(2.5)
     operator.hang_mass(0.0)
     assert "VENT" in prompts[0] and "Hang 2.5 kg" in prompts[1] and "Unload" in prompts[2]

@@ -42,18 +42,20 @@ def test_tare_on_the_sim(config):
 
 
 def test_check_lists_device_steps_and_duration(config):
-    text = check(config)
+    text, warnings = check(config)
+    assert warnings == []
+    assert "backend: sim (SIMULATED: no hardware is driven)" in text
     assert "USB-6001 (simulated)" in text and "interlock at 1765.2 N" in text
     assert "0,up,0,0.5\n1,up,0,1\n2,down,0,0.5" in text
     assert "estimated duration: 0.3 to 1.1 min" in text  # 19 s to 68 s
 
 
 def test_vent_reads_the_monitor_below_the_threshold(config):
-    from mkm.bench.procedures import VENTED_BELOW_BAR, vent
+    from mkm.bench.procedures import vent
 
     out = vent(config)
-    assert out["vented"] and not out["manual"]
-    assert abs(out["pressure_bar"]) < VENTED_BELOW_BAR
+    assert out["vented"] and not out["manual"] and out["stopped"] is None
+    assert abs(out["pressure_bar"]) < config.safety.vent_below_bar
 
 
 def test_vent_with_a_manual_regulator_says_it_cannot_read(config):
@@ -75,10 +77,10 @@ def test_vent_that_does_not_bring_the_pressure_down_says_so(config, monkeypatch)
             self.bench.pressure_bar = 1.0
             self.bench.regulator_stuck = True
 
-    monkeypatch.setattr(procedures, "make_backend", lambda c, b, clock: Stuck(c))
-    with pytest.raises(BenchError, match=r"still reads 1\.00\d bar 1 s after the vent command: "
-                                         "VENT BY HAND"):
-        procedures.vent(config, wait_s=1.0)
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Stuck(c))
+    with pytest.raises(BenchError, match=r"monitor still reads 1\.00\d bar 1\.1 s after the "
+                                         r"vent, above 0\.05 bar: VENT BY HAND"):
+        procedures.vent(config.replace(safety={"vent_timeout_s": 1.0}))
 
 
 def test_tare_refuses_a_noisy_cell(config):

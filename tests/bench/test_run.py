@@ -19,6 +19,10 @@ def record(config, tmp_path, **faults):
     return result, load_run(result.path)
 
 
+# the tare limits of a +-98 N cell: at most 1 % and 10 % of its capacity
+TCA10_TARE = {"tare_max_std_N": 0.5, "tare_max_shift_N": 9.0}
+
+
 def model_force(config, pressure_bar):
     m = config.muscle
     model = make_model(config.sim.model, L0_mm=m.L0_mm)
@@ -28,7 +32,7 @@ def model_force(config, pressure_bar):
 def test_complete_run_files(config, tmp_path):
     result, run = record(config, tmp_path)
     assert result.status == "complete" and run.complete and run.status == "complete"
-    assert run.path.parent == tmp_path and run.path.name.endswith("_paper-prototype")
+    assert run.path.parent == tmp_path and run.path.name.endswith("_paper-prototype-SIMULATED")
     assert run.problems == []
     # samples.csv: every sample once, time from the index at 10 Hz
     s = run.samples
@@ -66,6 +70,8 @@ def test_complete_run_files(config, tmp_path):
     assert meta["muscle"] == {"id": "paper-prototype", "D0_mm": 30.0, "t0_mm": 3.0,
                               "L0_mm": 282.0, "eps": 0.0}
     assert meta["hardware"]["backend"] == "sim" and meta["hardware"]["simulated"] is True
+    assert meta["simulated"] is True
+    assert meta["vent_check"]["verified"] and meta["vent_check"]["pressure_bar"] < 0.05
     assert meta["hardware"]["sample_rate_hz"] == 10.0
     for key in ("calibration", "tare", "sequence", "provenance", "command", "reason"):
         assert key in meta
@@ -134,7 +140,8 @@ def test_manual_regulator_asks_the_operator(config, tmp_path):
 
 def test_interlock_with_the_papers_tca10(config, tmp_path):
     # The paper's TCA10 is +-10 kg (98.07 N); the prototype pulls ~190 N already at 0.5 bar.
-    c = config.replace(loadcell={"capacity_N": 98.0665, "sensitivity_N_per_V": 9.80665})
+    c = config.replace(loadcell={"capacity_N": 98.0665, "sensitivity_N_per_V": 9.80665},
+                       safety=TCA10_TARE)
     result, run = record(c, tmp_path)
     assert result.status == "aborted" and "force interlock" in result.reason
     assert run.meta["status"] == "aborted"
@@ -204,10 +211,11 @@ class _Interrupting(SimBackend):
 
     def __init__(self, config, after):
         super().__init__(config)
-        self.after = after
+        self.after, self.interrupted = after, False
 
     def read(self, n_samples, timeout_s):
-        if self._index >= self.after:
+        if self._index >= self.after and not self.interrupted:
+            self.interrupted = True
             raise KeyboardInterrupt
         return super().read(n_samples, timeout_s)
 
@@ -246,7 +254,7 @@ def test_unexpected_error_is_recorded_and_raised(config, tmp_path):
     backend.read = lambda n, timeout: (_ for _ in ()).throw(ZeroDivisionError("bug"))
     with pytest.raises(ZeroDivisionError):
         BenchRun(config, backend, tmp_path, handle_signals=False).execute()
-    (folder,) = tmp_path.glob("*_paper-prototype")
+    (folder,) = tmp_path.glob("*_paper-prototype-SIMULATED")
     run = load_run(folder)
     assert run.status == "failed" and "ZeroDivisionError: bug" in run.reason
     assert backend.commands[-1][1] == 0.0

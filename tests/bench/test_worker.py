@@ -87,7 +87,8 @@ def test_regulator_overshoot_trips_the_pressure_interlock(config, tmp_path):
 
 def test_failed_interlock_vent_is_named(config, tmp_path):
     # The paper's +-98 N cell trips on the way to 0.5 bar; the AO fails at the interlock's vent.
-    c = config.replace(loadcell={"capacity_N": 98.0665, "sensitivity_N_per_V": 9.80665})
+    c = config.replace(loadcell={"capacity_N": 98.0665, "sensitivity_N_per_V": 9.80665},
+                       safety={"tare_max_std_N": 0.5, "tare_max_shift_N": 9.0})
     result, run = record(c, tmp_path, ao_fail_at_s=2.05)
     assert result.status == "aborted"
     assert "force interlock" in result.reason
@@ -102,7 +103,9 @@ def test_failed_interlock_vent_is_named(config, tmp_path):
 def test_failed_final_vent_asks_for_a_vent_by_hand(config, tmp_path):
     result, run = record(config, tmp_path, disconnect_at_s=7.0)
     assert result.status == "failed" and result.manual_vent_required
-    assert "VENT BY HAND: the regulator may still hold 0.5 bar" in result.reason
+    assert "vent command failed (DaqDisconnected" in result.reason
+    assert "VENT BY HAND (the regulator may still hold 0.5 bar)" in result.reason
+    assert result.exit_code == 4  # the vent was not verified
     assert run.meta.manual_vent_required and "vented by hand" in run.unvented
     # the bench stays marked: the next command on it vents first and says why
     import json

@@ -56,7 +56,7 @@ def test_ni_without_driver_is_one_clear_line(tmp_path, capsys):
     err = capsys.readouterr().err
     assert rc == 1 and err.count("\n") == 1
     assert "install NI-DAQmx" in err and "--backend sim" in err
-    assert list(tmp_path.iterdir()) == []  # nothing was recorded
+    assert [p.name for p in tmp_path.iterdir()] == ["mkm-state"]  # nothing was recorded
 
 
 def test_calibrate_loadcell_prints_the_toml_block(capsys):
@@ -177,14 +177,14 @@ def test_report_on_run_json_without_D0_is_one_line(tmp_path, capsys):
     assert err.count("\n") == 1 and "muscle.D0_mm is missing" in err
 
 
-def test_report_survives_mathtext_in_a_recorded_id(tmp_path):
-    # an id recorded before ids were restricted: "$...$" made matplotlib parse mathtext
-    from mkm.report import build_report
-
+def test_report_refuses_a_recorded_id_that_is_not_an_id(tmp_path, capsys):
+    # ids are validated when loaded, not only when configured (issue 20): "$...$" made
+    # matplotlib parse mathtext, "/" and markup named folders
     path = _edited_run(tmp_path, id="odd$\\frac{1}$id")
-    html = build_report([path], ["eq2"], out_dir=tmp_path / "r", cache_dir=None,
-                        tolerance=None, surrogate_section=False).read_text(encoding="utf-8")
-    assert "odd$\\frac{1}$id" in html
+    assert main(["report", str(path), "--models", "eq2", "--out", str(tmp_path / "r"),
+                 "--no-cache", "--no-progress"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "muscle.id='odd$\\\\frac{1}$id'" in err
 
 
 def test_report_says_a_run_ended_without_venting(tmp_path):

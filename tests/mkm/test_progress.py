@@ -1,18 +1,29 @@
-"""Progress bars only on a terminal; one summary line."""
+"""Progress: a bar on a terminal, a status line every 10 s elsewhere; one summary line."""
 
 from __future__ import annotations
 
 import io
 import sys
 
-from mkm.progress import progress_bar, summary_line
+from mkm.progress import StatusLine, progress_bar, summary_line
 
 
-def test_no_bar_when_stderr_is_not_a_terminal(monkeypatch):
+def test_no_bar_when_stderr_is_not_a_terminal_a_status_line_instead(monkeypatch):
     monkeypatch.setattr(sys, "stderr", io.StringIO())
-    with progress_bar(3, "report") as bar:
+    with progress_bar(3, "report") as bar:  # done within 10 s: nothing to say
         bar.update(3)
     assert sys.stderr.getvalue() == ""
+    clock = iter([0.0, 4.0, 12.0, 13.0, 25.0])
+    monkeypatch.setattr("mkm.progress.time.monotonic", lambda: next(clock))
+    bar = progress_bar(4, "report", unit="task")
+    assert isinstance(bar, StatusLine)
+    bar.update(1)  # 4 s: quiet
+    bar.update(1)  # 12 s: a line, with the time left at the rate so far
+    bar.update(1)  # 13 s: quiet again
+    bar.update(1)  # 25 s
+    lines = sys.stderr.getvalue().splitlines()
+    assert lines == ["mkm report: 2/4 tasks, 12 s, about 12 s left", "mkm report: 4/4 tasks, 25 s"]
+    assert "\r" not in sys.stderr.getvalue()  # a log gets lines, not bar frames
 
 
 def test_bar_with_an_estimate_on_a_terminal(monkeypatch):

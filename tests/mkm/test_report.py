@@ -219,8 +219,9 @@ def test_summary_table_comes_first_and_names_the_best_model(runs, report):
     best = one.loc[one["max_abs_err_pct"].idxmin()]
     row = html.split('id="summary"')[1].split("</tr>")[1]  # the first run's row
     assert "Thick-wall (Klute-Hannaford) [thickwall]" in row or best["model"] != "thickwall"
-    assert f"[{best['model']}]" in row and f"<td>{best['max_abs_err_pct']:.2f}</td>" in row
-    assert f"<td>{best['rmse_N']:.2f}</td>" in row
+    assert f"[{best['model']}]" in row
+    assert f'<td class="num">{best["max_abs_err_pct"]:.2f}</td>' in row
+    assert f'<td class="num">{best["rmse_N"]:.2f}</td>' in row
     # the paper's names, the spec beside
     assert re.search(r"<td>Equation 2 \(Chou-Hannaford\)</td>\s*<td>eq2</td>", html)
 
@@ -278,10 +279,12 @@ def test_report_renders_in_headless_chromium(report, tmp_path):
     # A probe copy records each image's decoded size once the page has loaded; the report
     # itself stays script-free.
     probe = path.parent / "probe.html"
-    probe.write_text(html.replace("</body>", '<script>addEventListener("load",()=>document.body'
+    probe.write_text(html.replace("</body>", '<script>addEventListener("load",()=>{document.body'
                                   '.setAttribute("data-imgs",[...document.images].map(i=>'
-                                  'i.naturalWidth+"x"+i.naturalHeight).join(",")))</script>'
-                                  "</body>"), encoding="utf-8")
+                                  'i.naturalWidth+"x"+i.naturalHeight).join(","));'
+                                  'document.body.setAttribute("data-summary-top",document'
+                                  '.querySelector("table.summary").getBoundingClientRect().top)'
+                                  "})</script></body>"), encoding="utf-8")
     flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
              "--disable-component-update", "--disable-sync", "--no-first-run",
              "--hide-scrollbars", f"--user-data-dir={tmp_path / 'profile'}"]
@@ -289,6 +292,8 @@ def test_report_renders_in_headless_chromium(report, tmp_path):
                          text=True, timeout=90, check=True).stdout
     sizes = re.search(r'data-imgs="([^"]*)"', dom).group(1).split(",")
     assert len(sizes) == 6
+    # the first screen (800 px) shows the table of every model's errors and speeds
+    assert float(re.search(r'data-summary-top="([^"]*)"', dom).group(1)) < 800
     for size in sizes:
         width, height = map(int, size.split("x"))
         assert width > 500 and height > 300
@@ -324,9 +329,23 @@ def test_a_run_past_the_braid_lock_gets_one_banner(tmp_path):
     from mkm.fem.eq2 import braid_lock
 
     lock = braid_lock()
-    run = acquire(_sim_config(round(lock.eps_max + 0.05, 3), (0.5, 1.0)), out_root=tmp_path)
+    run = acquire(_sim_config(round(lock.eps_max + 0.05, 3), (0.5, 1.0)), out_root=tmp_path,
+                  allow_past_lock=True)  # a lock study
     path = build_report([run.path], parse_models("eq2,thickwall"), out_dir=tmp_path / "r",
                         cache_dir=None, tolerance=None, surrogate_section=False)
     html = path.read_text(encoding="utf-8")
     assert html.count("past the braid lock") == 1
     assert f"eps_max {lock.eps_max:.3f}" in html and "No model is valid there" in html
+
+
+@pytest.mark.slow  # trains a surrogate (the physics kind, with its held-out refits)
+def test_a_first_report_names_the_surrogate_training_before_it_starts(runs, tmp_path,
+                                                                      monkeypatch, capsys):
+    monkeypatch.setenv("MKM_CACHE_DIR", str(tmp_path / "cold"))  # nothing trained yet
+    build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r",
+                 cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
+    err = capsys.readouterr().err
+    assert "mkm report: training the physics surrogate on first use" in err
+    build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r2",
+                 cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
+    assert "training" not in capsys.readouterr().err  # cached now: nothing to announce

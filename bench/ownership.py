@@ -1,0 +1,145 @@
+"""One owner per bench: a lock per device, held by a run (or a tare, a calibration, a check)
+from before the device is opened until after it is closed.
+
+Two processes driving one regulator is the most dangerous state a bench can be in, so a second
+command on a held bench refuses at once, naming the holder's pid, command and start time
+(:class:`BenchBusy`). ``mkm vent`` on a held bench does not fight the holder for the device: it
+asks the holder to stop (:func:`request_stop`; the run polls :meth:`BenchOwner.stop_request` at
+every block and stops at that safe point, venting), waits for the lock, then vents and verifies
+itself. The operating system releases the lock when its process dies (``kill -9``), so a dead
+holder never blocks the bench: the next command takes the lock and vents first
+(:mod:`mkm.bench.unvented`).
+
+The lock (``filelock``, portable to Windows) and two small files live in the bench state
+folder (:func:`mkm.bench.unvented.state_dir`), keyed by the bench (backend and device name):
+``<bench>.lock``, ``<bench>.owner`` (who holds it) and ``<bench>.stop`` (a stop request).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+from pathlib import Path
+
+import filelock
+
+from mkm.bench.backend import BenchError
+from mkm.bench.storage import ProcessIdentity
+from mkm.bench.unvented import bench_folder_name, state_dir
+from mkm.fem.records import provenance, write_atomic
+
+
+class BenchBusy(BenchError):
+    """Another live process holds the bench."""
+
+
+def _paths(bench_key: str) -> tuple[Path, Path, Path]:
+    base = state_dir() / "benches" / bench_folder_name(bench_key)
+    return (base.with_name(base.name + ".lock"), base.with_name(base.name + ".owner"),
+            base.with_name(base.name + ".stop"))
+
+
+def holder(bench_key: str) -> dict | None:
+    """What the holder of ``bench_key`` recorded (pid, command, start), if readable."""
+    owner = _paths(bench_key)[1]
+    try:
+        data = json.loads(owner.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return data if isinstance(data, dict) else None
+
+
+def describe_holder(bench_key: str) -> str:
+    info = holder(bench_key)
+    if not info:
+        return f"bench {bench_key} is held by another process (it left no details)"
+    return (f"bench {bench_key} is in use by pid {info.get('pid')} (`mkm {info.get('command')}`"
+            f", started {info.get('started_utc')})")
+
+
+class BenchOwner:
+    """The lock of one bench, held in a ``with`` block; :class:`BenchBusy` if someone has it."""
+
+    def __init__(self, bench_key: str, command: str):
+        self.bench_key, self.command = bench_key, command
+        self.lock_path, self.owner_path, self.stop_path = _paths(bench_key)
+        self.lock: filelock.BaseFileLock | None = None
+
+    def __enter__(self) -> BenchOwner:
+        try:
+            self.lock_path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise BenchError(f"the bench state folder {self.lock_path.parent} cannot be made "
+                             f"({exc.strerror or exc})") from None
+        lock = filelock.FileLock(self.lock_path, timeout=0)
+        try:
+            lock.acquire()
+        except filelock.Timeout:
+            raise BenchBusy(describe_holder(self.bench_key) + ": one command per bench at a "
+                            "time (`mkm vent` asks a run to stop)") from None
+        except OSError as exc:
+            raise BenchError(f"the bench lock {self.lock_path} cannot be taken "
+                             f"({exc.strerror or exc})") from None
+        self.lock = lock
+        try:
+            self.stop_path.unlink(missing_ok=True)  # a request to an earlier holder
+            me = ProcessIdentity.current()
+            write_atomic(self.owner_path, json.dumps(
+                {"pid": me.pid, "host": me.host, "command": self.command,
+                 "started_utc": provenance()["date_utc"]}))
+        except OSError as exc:
+            self.__exit__()
+            raise BenchError(f"the bench state folder {self.lock_path.parent} is not writable "
+                             f"({exc.strerror or exc})") from None
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if self.lock is None:
+            return
+        for path in (self.owner_path, self.stop_path):
+            try:
+                path.unlink(missing_ok=True)
+            except OSError:
+                pass  # the lock's release below is what matters
+        self.lock.release()
+        self.lock = None
+
+    def stop_request(self) -> str | None:
+        """Who asked this holder to stop (``mkm vent``, pid N), or None."""
+        try:
+            return self.stop_path.read_text(encoding="utf-8").strip() or "a stop request"
+        except OSError:
+            return None
+
+
+def request_stop(bench_key: str, by: str, wait_s: float = 30.0) -> dict | None:
+    """Ask the live holder of ``bench_key`` to stop and wait (``wait_s``) until it has let go.
+
+    Returns the holder's record when there was one (None when the bench was free); raises
+    :class:`BenchBusy` when it did not let go in time.
+    """
+    lock_path, _, stop_path = _paths(bench_key)
+    if not lock_path.parent.is_dir():
+        return None
+    probe = filelock.FileLock(lock_path, timeout=0)
+    try:
+        probe.acquire()
+    except filelock.Timeout:
+        pass
+    else:
+        probe.release()
+        return None
+    info = holder(bench_key) or {}
+    write_atomic(stop_path, f"{by} (pid {os.getpid()})")
+    deadline = time.monotonic() + wait_s
+    while time.monotonic() < deadline:
+        try:
+            probe.acquire()
+        except filelock.Timeout:
+            time.sleep(0.05)
+            continue
+        probe.release()
+        return info
+    raise BenchBusy(f"{describe_holder(bench_key)} and did not stop within {wait_s:g} s of the "
+                    "request: VENT BY HAND")

@@ -1,0 +1,130 @@
+"""Typed settings from TOML: the one TOML reader of the bench and the checks settings share.
+
+:func:`read_toml` parses every TOML the bench reads (configurations, a run folder's
+``config.toml``) and turns any malformed text, including nesting deep enough to exhaust the
+parser's recursion, into one ``ValueError``. :func:`typed_section` fills a frozen dataclass from
+one table: unknown keys, missing required keys and wrong types are named with their
+``section.key``; the dataclass's own ``check()`` then validates the values.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import tomllib
+import typing
+from pathlib import Path
+from typing import Any
+
+from mkm.fem.ranges import parse_pressures
+
+MAX_TEXT_CHARS = 1_000_000  # a bench configuration is a few kB; beyond this it is not one
+
+
+def read_toml(text: str, source: str) -> dict[str, Any]:
+    """The tables of the TOML ``text`` read from ``source``, or one-line ``ValueError``."""
+    if len(text) > MAX_TEXT_CHARS:
+        raise ValueError(f"{source} has {len(text)} characters: expected a TOML file of at most "
+                         f"{MAX_TEXT_CHARS}")
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"{source} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise ValueError(f"{source} is not valid TOML: nested too deeply") from None
+
+
+def read_toml_file(path: str | Path, what: str = "") -> tuple[str, dict[str, Any]]:
+    """The text of the TOML file ``path`` and its tables (:func:`read_toml`); ``what`` prefixes
+    the messages (``"config "``)."""
+    path = Path(path)
+    shown = str(path) if len(str(path)) <= 200 else str(path)[:200] + "..."
+    try:
+        if not path.is_file():
+            raise ValueError(f"{what}{shown} does not exist: expected a TOML file")
+        if path.stat().st_size > MAX_TEXT_CHARS * 4:
+            raise ValueError(f"{what}{shown} is {path.stat().st_size} bytes: expected a TOML "
+                             f"file of at most {MAX_TEXT_CHARS} characters")
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ValueError(f"{what}{shown} cannot be read as UTF-8 text "
+                         f"({getattr(exc, 'strerror', None) or exc})") from None
+    return text, read_toml(text, f"{what}{path}")
+
+
+def positive(name: str, value) -> None:
+    if not value > 0:
+        raise ValueError(f"{name}={value!r} is invalid: expected a number > 0")
+
+
+def within(name: str, value, low, high, unit: str = "", why: str = "") -> None:
+    """``low <= value <= high`` or ``ValueError`` naming the setting, the range and why."""
+    if not low <= value <= high:
+        shown = f"{value:g}" if isinstance(value, float) else repr(value)
+        raise ValueError(f"{name}={shown} is invalid: expected {low:g} to {high:g}"
+                         f"{' ' + unit if unit else ''}{f' ({why})' if why else ''}")
+
+
+def typed_section(cls, table: Any, where: str):
+    """An instance of the dataclass ``cls`` from the TOML ``table`` at ``where``, checked.
+
+    Field types: ``str``, ``float``, ``int``, ``bool``, ``X | None``, ``tuple[float, ...]``
+    (pressures: ``'start:stop:step'`` or a list) and nested dataclasses (sub-tables).
+    """
+    if not isinstance(table, dict):
+        raise ValueError(f"[{where}] must be a table of settings, got {_short(table)}")
+    fields = {f.name: f for f in dataclasses.fields(cls)}
+    unknown = sorted(set(table) - set(fields))
+    if unknown:
+        name = unknown[0] if len(unknown[0]) <= 40 else unknown[0][:40] + "..."
+        raise ValueError(f"{where}.{name} is not a setting: expected some of "
+                         f"{', '.join(fields)}")
+    hints = typing.get_type_hints(cls)
+    values = {}
+    for name, f in fields.items():
+        key = f"{where}.{name}"
+        if name not in table:
+            if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING:
+                raise ValueError(f"{key} is missing: it has no default")
+            continue
+        values[name] = _convert(table[name], hints[name], key)
+    obj = cls(**values)
+    obj.check()
+    return obj
+
+
+def _short(value, n: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= n else text[:n] + "..."
+
+
+def _convert(value, annotation, key: str):
+    if dataclasses.is_dataclass(annotation):
+        return typed_section(annotation, value, key)
+    if annotation == tuple[float, ...]:
+        return _pressures(value, key)
+    args = typing.get_args(annotation)
+    if type(None) in args:
+        if value is None:
+            return None
+        (annotation,) = [a for a in args if a is not type(None)]
+    if annotation is float and isinstance(value, int) and not isinstance(value, bool):
+        try:
+            value = float(value)
+        except OverflowError:
+            raise ValueError(f"{key}={_short(value)} is not a finite number") from None
+    if not isinstance(value, annotation) or (annotation is int and isinstance(value, bool)):
+        raise ValueError(f"{key}={_short(value)} is invalid: expected a {annotation.__name__}")
+    if annotation is float and not math.isfinite(value):
+        raise ValueError(f"{key}={value!r} is not a finite number")
+    return value
+
+
+def _pressures(value, key: str) -> tuple[float, ...]:
+    if isinstance(value, str):
+        return tuple(float(p) for p in parse_pressures(value))
+    if isinstance(value, list) and all(isinstance(v, int | float) and not isinstance(v, bool)
+                                       for v in value):
+        return tuple(float(p) for p in parse_pressures(",".join(str(v) for v in value)))
+    raise ValueError(f"{key}={_short(value)} is invalid: expected 'start:stop:step' or a list "
+                     "of numbers [bar]")

@@ -1,0 +1,143 @@
+"""Settings of the simulated bench (:mod:`mkm.bench.sim`): the ``[sim]``, ``[sim.faults]`` and
+``[sim.truth]`` tables of a bench configuration.
+
+Every time and count is bounded, so no setting can make a simulated run endless: a reader stall
+of at most an hour, a driver buffer of one second to a day, faults at most a day into the run.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from mkm.bench.settings import positive, within
+
+MAX_SIM_TIME_S = 24 * 3600.0  # a fault time, a stall, a buffer: beyond a day is not a test
+MAX_STALL_S = 3600.0
+MIN_SIM_BUFFER_S = 1.0  # at least ten 0.1 s blocks: below, every read overflows and none ends
+MAX_READ_TIMEOUTS = 1000
+
+
+@dataclass(frozen=True)
+class Faults:
+    """Faults the simulated bench injects, at sample time [s]; absent means never."""
+
+    disconnect_at_s: float | None = None
+    read_timeout_at_s: float | None = None
+    read_timeouts: int = 1
+    stall_at_s: float | None = None
+    stall_s: float = 0.0
+    ao_fail_at_s: float | None = None
+    nan_force_at_s: float | None = None  # the load-cell input reads NaN from then on
+    regulator_stuck_at_s: float | None = None  # the regulator stops following the command
+    overshoot_bar: float = 0.0  # the regulator delivers this much above every command
+
+    def check(self):
+        for f in dataclasses.fields(self):
+            value = getattr(self, f.name)
+            if f.name.endswith("_at_s") and value is not None:
+                within(f"sim.faults.{f.name}", value, 0.0, MAX_SIM_TIME_S, "s")
+        within("sim.faults.overshoot_bar", self.overshoot_bar, 0.0, 10.0, "bar")
+        within("sim.faults.read_timeouts", self.read_timeouts, 1, MAX_READ_TIMEOUTS)
+        within("sim.faults.stall_s", self.stall_s, 0.0, MAX_STALL_S, "s")
+
+
+@dataclass(frozen=True)
+class Truth:
+    """The simulated muscle's own braid angle and rubber, where it differs from the nominal one.
+
+    Unset (None): the model's nominal value (the calibrated angle, Silastic S). With ``[sim]``'s
+    ``hysteresis_fraction``, ``creep_fraction`` and ``creep_tau_s`` this is the truth that
+    ``mkm identify`` must find blind: it is recorded in the run's simulator settings only.
+    """
+
+    theta0_deg: float | None = None
+    C10_MPa: float | None = None
+    C01_MPa: float | None = None
+
+    def check(self):
+        from mkm.fem.muscle import check_value
+
+        for f in dataclasses.fields(self):
+            if getattr(self, f.name) is not None:
+                check_value(f.name, getattr(self, f.name), prefix="sim.truth.")
+
+    def model_params(self) -> dict[str, float]:
+        """The set values, as force-model parameters."""
+        return {f.name: float(getattr(self, f.name)) for f in dataclasses.fields(self)
+                if getattr(self, f.name) is not None}
+
+
+TRUTH_FIELDS = tuple(f.name for f in dataclasses.fields(Truth))
+
+
+@dataclass(frozen=True)
+class Sim:
+    """The simulated bench (:mod:`mkm.bench.sim`): the muscle's static force from ``model`` (a
+    ``mkm.fem.ladder`` rung; ``axisym`` on the ``fe_mesh`` mesh), braid friction, creep, noise."""
+
+    model: str = "axisym"
+    fe_mesh: str = "medium"
+    seed: int = 0
+    regulator_tau_s: float = 0.4
+    regulator_slew_bar_per_s: float = 2.0
+    hysteresis_fraction: float = 0.03
+    creep_fraction: float = 0.02
+    creep_tau_s: float = 30.0
+    noise_V: float = 0.002
+    loadcell_offset_V: float = 0.015
+    monitor_noise_V: float = 0.001
+    buffer_s: float | None = None
+    faults: Faults = field(default_factory=Faults)
+    truth: Truth = field(default_factory=Truth)
+
+    def check(self):
+        from mkm.fem.ladder import entry, model_names
+
+        if self.model not in model_names():
+            raise ValueError(f"sim.model={self.model[:40]!r} is unknown: expected one of "
+                             f"{', '.join(model_names())}")
+        if self.fe_mesh not in ("coarse", "medium", "fine"):
+            raise ValueError(f"sim.fe_mesh={self.fe_mesh[:40]!r} is invalid: expected coarse, "
+                             "medium or fine")
+        within("sim.seed", self.seed, 0, 2**63 - 1)
+        within("sim.regulator_tau_s", self.regulator_tau_s, 1e-3, 60.0, "s")
+        within("sim.regulator_slew_bar_per_s", self.regulator_slew_bar_per_s, 1e-3, 1000.0,
+               "bar/s")
+        within("sim.creep_tau_s", self.creep_tau_s, 1e-3, 1e5, "s")
+        for name in ("hysteresis_fraction", "creep_fraction"):
+            within(f"sim.{name}", getattr(self, name), 0.0, 0.5, "(a fraction)")
+        for name in ("noise_V", "monitor_noise_V"):
+            within(f"sim.{name}", getattr(self, name), 0.0, 10.0, "V (the input range)")
+        within("sim.loadcell_offset_V", self.loadcell_offset_V, -10.0, 10.0, "V")
+        if self.buffer_s is not None:
+            positive("sim.buffer_s", self.buffer_s)
+            within("sim.buffer_s", self.buffer_s, MIN_SIM_BUFFER_S, MAX_SIM_TIME_S, "s")
+        self.faults.check()
+        self.truth.check()
+        declared = entry(self.model).parameters
+        refused = [k for k in self.truth.model_params() if k not in declared]
+        if refused:
+            raise ValueError(f"sim.truth.{refused[0]} is not a parameter of sim.model="
+                             f"{self.model!r}: expected some of "
+                             f"{', '.join(k for k in declared if k in TRUTH_FIELDS) or 'none'}")
+
+
+def remove_simulator_settings(run_dir) -> None:
+    """Delete a simulated run's ``[sim]`` settings, its truth among them, from its run.json
+    (the simulator's record and ``sim.*`` overrides) and its config.toml: what is left is what a
+    real bench records, for identification tested blind."""
+    run_dir = Path(run_dir)
+    meta = json.loads((run_dir / "run.json").read_text(encoding="utf-8"))
+    meta.get("hardware", {}).pop("sim", None)
+    meta["config_overrides"] = {k: v for k, v in (meta.get("config_overrides") or {}).items()
+                                if not k.startswith("sim")}
+    (run_dir / "run.json").write_text(json.dumps(meta, indent=2), encoding="utf-8")
+    config = run_dir / "config.toml"
+    text = config.read_text(encoding="utf-8")
+    # every [sim] and [sim.*] table, up to the next other table or the end
+    config.write_text(re.sub(r"(?ms)^\[sim(\.[^\]]*)?\][^\n]*\n.*?(?=^\[(?!sim[.\]])|\Z)",
+                             "", text), encoding="utf-8")

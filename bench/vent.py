@@ -1,0 +1,88 @@
+"""The verified vent: command 0 bar, then read the regulator's monitor until it says the muscle
+is vented.
+
+A vent is only a command until the monitor confirms it: a regulator that sticks keeps its
+pressure whatever it is told. :func:`verify_vent` reads the pressure monitor (electronic
+regulator) until it is below ``safety.vent_below_bar``, for at most ``safety.vent_timeout_s``
+of sample time and wall time; with a manual regulator the operator vents by hand and types the
+manometer reading, which must be below the same threshold.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import asdict, dataclass
+
+from mkm.bench.backend import BenchError, BufferOverflow
+
+
+@dataclass
+class VentCheck:
+    """What the monitor (or the operator) read after the vent."""
+
+    verified: bool
+    pressure_bar: float  # the last reading; NaN when nothing could be read
+    below_bar: float
+    waited_s: float
+    how: str  # "monitor" | "operator"
+    problem: str = ""
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+    def describe(self) -> str:
+        if self.verified:
+            return (f"vent verified: {self.how} read {self.pressure_bar:.3f} bar after "
+                    f"{self.waited_s:.1f} s")
+        if self.problem:
+            return f"the vent could not be verified ({self.problem})"
+        return (f"the {self.how} still reads {self.pressure_bar:.3f} bar {self.waited_s:.1f} s "
+                f"after the vent, above {self.below_bar:g} bar")
+
+
+def verify_vent(backend, config, operator=None, started: bool = True) -> VentCheck:
+    """Confirm that the muscle is vented (the vent command already written).
+
+    Parameters
+    ----------
+    backend : mkm.bench.backend.Backend
+        The open backend; read only if ``started`` (its sample clock runs).
+    config : mkm.bench.config.BenchConfig
+        ``safety.vent_below_bar`` [bar] and ``safety.vent_timeout_s`` [s] bound the check.
+    operator : mkm.bench.operator.Operator, optional
+        With a manual regulator: vents by hand and reads the manometer.
+    """
+    safety = config.safety
+    below, timeout_s = safety.vent_below_bar, safety.vent_timeout_s
+    if not config.regulator.electronic:
+        if operator is None:
+            return VentCheck(False, math.nan, below, 0.0, "operator", "no operator to vent")
+        try:
+            reading = float(operator.vent())
+        except (BenchError, ValueError, TypeError, EOFError, OSError) as exc:
+            return VentCheck(False, math.nan, below, 0.0, "operator",
+                             f"the operator's reading was not given: {type(exc).__name__}")
+        return VentCheck(reading < below, reading, below, 0.0, "operator")
+    if not started:
+        return VentCheck(False, math.nan, below, 0.0, "monitor", "the acquisition never "
+                         "started, so the monitor could not be read")
+    rate = config.daq.sample_rate_hz
+    n = max(1, int(round(0.1 * rate)))
+    start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
+    while True:
+        try:
+            volts = backend.read(n, config.daq.read_timeout_s).volts
+        except BufferOverflow:
+            backend.recover()
+            continue
+        except BenchError as exc:
+            return VentCheck(False, pressure, below, time.monotonic() - start, "monitor",
+                             f"{type(exc).__name__}: {exc}")
+        pressure = float(config.regulator.monitor_bar(volts[-1, 1]))
+        sample_time_s += n / rate
+        waited = max(time.monotonic() - start, sample_time_s)
+        if pressure < below:
+            return VentCheck(True, pressure, below, waited, "monitor")
+        if waited > timeout_s or not math.isfinite(pressure):
+            return VentCheck(False, pressure, below, waited, "monitor")

@@ -1,0 +1,154 @@
+"""Issue 20, finding 6: hostile run folders and configurations give one ValueError, never a
+traceback or a hang (property-based, hypothesis). The fast profile tries a few dozen cases in a
+few seconds; `-m slow` runs many more.
+"""
+
+import json
+import shutil
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from mkm.bench.config import load_config, parse_config
+from mkm.bench.run import acquire
+from mkm.bench.storage import aggregate_samples, load_run
+
+FAST = settings(max_examples=30, deadline=None, database=None,
+                suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                       HealthCheck.too_slow])
+LONG = settings(FAST, max_examples=400)
+
+# JSON values an attacker or a broken disk may leave anywhere in run.json
+hostile_json = st.recursive(
+    st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False)
+    | st.sampled_from([1e308, -1e308, 10**30]) | st.text(max_size=20)
+    | st.sampled_from(["=cmd|' /C calc'!A0", "../../x", "a/b", "<img src=x>", "x" * 1000]),
+    lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=8), inner,
+                                                                 max_size=3),
+    max_leaves=10)
+RUN_KEYS = ["status", "muscle", "gaps", "process", "hardware", "sequence", "counters",
+            "tare", "calibration", "steps_done", "lost_samples", "reason", "schema_version",
+            "stop_signal_number", "unvented_before", "vent_check", "simulated"]
+MUSCLE_KEYS = ["id", "D0_mm", "t0_mm", "L0_mm", "eps"]
+CSV_CELLS = st.sampled_from(["abc", "1e308", "-1e308", "inf", "nan", "", "=1+1", "1,2",
+                             "\"", "step|gap", "0x10", "１"])
+
+
+@pytest.fixture(scope="module")
+def recorded(tmp_path_factory):
+    config = load_config(pressures_bar=[0.5]).replace(
+        sequence={"tare_s": 1.0, "preconditioning_cycles": 0},
+        settle={"min_dwell_s": 1.0, "hold_s": 1.0, "timeout_s": 5.0, "window_s": 1.0})
+    root = tmp_path_factory.mktemp("fuzz")
+    return acquire(config, out_root=root / "runs", notify=lambda m: None).path
+
+
+def _loads_or_one_line(path):
+    """Load everything a report reads; only a one-line ValueError may come out."""
+    try:
+        run = load_run(path)
+        run.samples  # noqa: B018 (read on first use)
+        aggregate_samples(path)
+    except ValueError as exc:
+        assert "\n" not in str(exc) and len(str(exc)) < 2000
+        return False
+    return True
+
+
+def _check_run_json(recorded, tmp_path, edits):
+    folder = tmp_path / "run"
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(recorded, folder)
+    meta = json.loads((folder / "run.json").read_text())
+    for where, key, value in edits:
+        (meta if where == "top" else meta["muscle"])[key] = value
+    (folder / "run.json").write_text(json.dumps(meta))
+    _loads_or_one_line(folder)
+
+
+def _check_csv(recorded, tmp_path, name, row, column, cell):
+    folder = tmp_path / "run"
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(recorded, folder)
+    lines = (folder / name).read_text().splitlines()
+    k = 1 + row % (len(lines) - 1)
+    cells = lines[k].split(",")
+    cells[column % len(cells)] = cell
+    lines[k] = ",".join(cells)
+    (folder / name).write_text("\n".join(lines) + "\n")
+    _loads_or_one_line(folder)
+
+
+edits = st.lists(st.tuples(st.sampled_from(["top", "muscle"]),
+                           st.sampled_from(RUN_KEYS + MUSCLE_KEYS), hostile_json),
+                 min_size=1, max_size=3)
+csv_edits = (st.sampled_from(["samples.csv", "steps.csv", "commands.csv"]),
+             st.integers(0, 100), st.integers(0, 20), CSV_CELLS)
+
+
+@FAST
+@given(edits=edits)
+def test_hostile_run_json_is_one_line(recorded, tmp_path, edits):
+    _check_run_json(recorded, tmp_path, edits)
+
+
+@FAST
+@given(*csv_edits)
+def test_hostile_csv_cells_are_one_line(recorded, tmp_path, name, row, column, cell):
+    _check_csv(recorded, tmp_path, name, row, column, cell)
+
+
+def test_deeply_nested_or_missing_parts_are_one_line(recorded, tmp_path):
+    folder = tmp_path / "run"
+    shutil.copytree(recorded, folder)
+    (folder / "run.json").write_text("[" * 100_000 + "]" * 100_000)
+    assert not _loads_or_one_line(folder)
+    shutil.rmtree(folder)
+    shutil.copytree(recorded, folder)
+    (folder / "samples.csv").unlink()
+    (folder / "steps.csv").unlink()
+    run = load_run(folder)
+    assert "samples.csv is missing" in run.problems and "steps.csv is missing" in run.problems
+
+
+BASE = load_config().text
+toml_values = st.sampled_from(["1e9", "-1", "0", "1e-300", "1e300", "nan", "inf", "'x'",
+                               "'" + "d" * 100_000 + "'", "[]", "{a = 1}", "true",
+                               "'../../etc'", "9" * 30, "'=cmd'"])
+SETTINGS = [line.split(" =")[0] for line in BASE.splitlines()
+            if " = " in line and not line.startswith("#")]
+
+
+@FAST
+@given(key=st.sampled_from(SETTINGS), value=toml_values)
+def test_hostile_config_values_are_one_line(key, value):
+    lines = [f"{key} = {value}" if line.split(" =")[0] == key else line
+             for line in BASE.splitlines()]
+    try:
+        parse_config("\n".join(lines))
+    except ValueError as exc:
+        assert "\n" not in str(exc)
+
+
+def test_a_500_deep_inline_table_and_a_huge_device_name_are_one_line():
+    deep = "[muscle]\nid = " + "{a = " * 500 + "1" + "}" * 500
+    with pytest.raises(ValueError, match="not valid TOML"):
+        parse_config(deep)
+    long = BASE.replace('device = "Dev1"', f'device = "{"D" * 100_000}"')
+    with pytest.raises(ValueError, match=r"daq\.device=.* \(100000 characters\) is invalid"):
+        parse_config(long)
+
+
+@pytest.mark.slow
+@LONG
+@given(edits=edits)
+def test_hostile_run_json_long(recorded, tmp_path, edits):
+    _check_run_json(recorded, tmp_path, edits)
+
+
+@pytest.mark.slow
+@LONG
+@given(*csv_edits)
+def test_hostile_csv_cells_long(recorded, tmp_path, name, row, column, cell):
+    _check_csv(recorded, tmp_path, name, row, column, cell)

@@ -1,0 +1,271 @@
+"""Issue 20: a bench that proves it vented and owns its hardware. One test (or a few) per
+finding; each failed before the fix.
+"""
+
+import errno
+import json
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+from mkm.bench.config import load_config
+from mkm.bench.ownership import BenchBusy, BenchOwner
+from mkm.bench.run import BenchRun, acquire
+from mkm.bench.sim import SimBackend
+from mkm.bench.storage import RunWriter, load_run
+from mkm.bench.unvented import BenchLease, _folder
+
+QUIET = {"notify": lambda m: None}
+
+
+# 1. the vent is verified -------------------------------------------------------------------
+
+def test_a_stuck_regulator_fails_the_run_and_asks_for_a_vent_by_hand(config, tmp_path):
+    # stuck from 4 s, at the 0.5 bar step: the 1.0 bar command is not followed, the interlock
+    # vents, and the monitor still reads ~0.5 bar 10 s (safety.vent_timeout_s) later
+    c = config.replace(sim={"faults": {"regulator_stuck_at_s": 4.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    run = load_run(result.path)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "monitor still reads 0.49" in result.reason and "VENT BY HAND" in result.reason
+    check = run.meta.vent_check
+    assert not check["verified"] and check["pressure_bar"] == pytest.approx(0.5, abs=0.02)
+    assert check["waited_s"] > c.safety.vent_timeout_s
+    assert run.meta.manual_vent_required
+    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked
+    assert json.loads(marker.read_text())["run_path"] == str(run.path)
+
+
+def test_the_cli_says_vent_by_hand_with_its_own_exit_status(tmp_path, mkm_cli):
+    text = load_config().text.replace("monitor_noise_V = 0.001",
+                                      "monitor_noise_V = 0.001\n[sim.faults]\n"
+                                      "regulator_stuck_at_s = 8.0")
+    (tmp_path / "stuck.toml").write_text(text)
+    code, out, err = mkm_cli(["acquire", "--config", str(tmp_path / "stuck.toml"),
+                              "--pressures", "0.5,1", "--out", str(tmp_path / "runs"),
+                              "--no-progress"])
+    assert code == 4 and "VENT THE MUSCLE BY HAND NOW" in err
+    assert out.strip().endswith("-SIMULATED")
+
+
+def test_a_manual_vent_is_confirmed_by_the_operators_reading(config, tmp_path):
+    class StillPressurised:
+        def set_pressure(self, pressure_bar):
+            return pressure_bar
+
+        def vent(self):
+            return 0.3  # the manometer still reads 0.3 bar
+
+    c = config.replace(regulator={"kind": "manual"})
+    result = BenchRun(c, SimBackend(c), tmp_path, operator=StillPressurised(),
+                      handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 4
+    assert "operator still reads 0.300 bar" in result.reason
+
+
+# 2. one owner per bench --------------------------------------------------------------------
+
+def test_a_second_command_on_a_held_bench_refuses_with_the_holder(config, tmp_path, mkm_cli):
+    import os
+
+    with BenchOwner("sim-Dev1", "acquire"):
+        with pytest.raises(BenchBusy, match=rf"bench sim-Dev1 is in use by pid {os.getpid()} "
+                                            r"\(`mkm acquire`, started 20"):
+            acquire(config, out_root=tmp_path, **QUIET)
+        for argv in (["tare"], ["calibrate-loadcell", "--masses", "0,1"],
+                     ["acquire", "--out", str(tmp_path), "--no-progress"], ["check"]):
+            code, _, err = mkm_cli(argv)
+            assert code == 1 and f"in use by pid {os.getpid()}" in err, argv
+    assert not list(tmp_path.glob("*_*"))  # nothing recorded, nothing opened
+
+
+class _Slow(SimBackend):
+    """Virtual clock, but each read after the first step's command takes 20 ms of wall time,
+    so another thread can act while the run is pressurised."""
+
+    def __init__(self, config, pressurised):
+        super().__init__(config)
+        self.pressurised = pressurised
+
+    def read(self, n_samples, timeout_s):
+        if any(volts > 0 for _, volts in self.commands):
+            self.pressurised.set()
+            time.sleep(0.02)
+        return super().read(n_samples, timeout_s)
+
+
+def test_vent_during_a_run_asks_the_run_to_stop(config, tmp_path, mkm_cli):
+    pressurised, results = threading.Event(), []
+    run = BenchRun(config, _Slow(config, pressurised), tmp_path, handle_signals=False, **QUIET)
+    worker = threading.Thread(target=lambda: results.append(run.execute()))
+    worker.start()
+    assert pressurised.wait(30)
+    code, out, err = mkm_cli(["vent"])
+    worker.join(30)
+    (result,) = results
+    assert result.status == "aborted" and "stopped by `mkm vent`" in result.reason
+    assert result.exit_code == 0 or result.exit_code == 1
+    assert code == 0 and out.startswith("vented: ") and "asked the run holding the bench" in err
+    assert load_run(result.path).meta.vent_check["verified"]
+
+
+# 3. interlocks a configuration cannot switch off ---------------------------------------------
+
+@pytest.mark.parametrize("section, values, message", [
+    ("safety", {"pressure_tolerance_bar": 100.0}, r"safety\.pressure_tolerance_bar=100 is "
+     r"invalid: expected 0 to 0\.4 bar \(a tenth of regulator\.full_scale_bar=4\)"),
+    ("safety", {"pressure_follow_s": 1e9}, r"safety\.pressure_follow_s=1e\+09 is invalid: "
+     r"expected 0 to 10 s"),
+    ("safety", {"tare_max_std_N": 1e9}, r"safety\.tare_max_std_N=1e\+09 is invalid: expected 0 "
+     r"to 19\.6133 N \(1 % of loadcell\.capacity_N=1961\.33\)"),
+    ("loadcell", {"capacity_N": 1e300, "sensitivity_N_per_V": 1e300},
+     r"loadcell\.capacity_N=1e\+300 is invalid: expected 0 to 100000 N"),
+    ("muscle", {"D0_mm": 1e-300}, r"muscle\.D0_mm=1e-300 is invalid"),
+    ("muscle", {"L0_mm": 1e-9}, r"muscle\.L0_mm=1e-09 is invalid"),
+])
+def test_interlocks_and_geometry_are_bounded(section, values, message):
+    with pytest.raises(ValueError, match=message):
+        load_config().replace(**{section: values})
+
+
+def test_a_cell_the_muscle_overloads_is_a_warning_from_check(tmp_path, mkm_cli):
+    text = load_config().text.replace("capacity_N = 1961.33", "capacity_N = 300") \
+        .replace("sensitivity_N_per_V = 196.133", "sensitivity_N_per_V = 30") \
+        .replace("tare_max_std_N = 5.0", "tare_max_std_N = 2.0") \
+        .replace("tare_max_shift_N = 100.0", "tare_max_shift_N = 20.0")
+    (tmp_path / "small.toml").write_text(text)
+    code, out, err = mkm_cli(["check", "--config", str(tmp_path / "small.toml")])
+    # Equation 2 at the calibrated 30.8 deg: 820 N at 2.5 bar, against an interlock at 270 N
+    assert code == 0 and "warning" not in out
+    assert err.count("mkm: warning:") == 1
+    assert "develops about 820 N at 2.5 bar (Equation 2), beyond the force interlock at 270 N" \
+        in err
+
+
+# 4. bounded runs ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("section, values, message", [
+    ("sequence", {"tare_s": 1e9}, r"sequence\.tare_s=1e\+09 is invalid: expected 0 to 600 s"),
+    ("sequence", {"preconditioning_hold_s": 1e9}, r"preconditioning_hold_s=1e\+09 is invalid"),
+    ("sequence", {"preconditioning_cycles": 10**6}, r"preconditioning_cycles=1000000 is "
+     r"invalid: expected 0 to 100"),
+    ("settle", {"hold_s": 1e9}, r"settle\.hold_s=1e\+09 is invalid: expected 0 to 3600 s"),
+    ("sim", {"buffer_s": 0.01}, r"sim\.buffer_s=0\.01 is invalid: expected 1 to 86400 s"),
+    ("sim", {"faults": {"stall_s": 1e8}}, r"sim\.faults\.stall_s=1e\+08 is invalid: expected 0 "
+     r"to 3600 s"),
+    ("settle", {"timeout_s": 3600.0}, r"may take up to 19\.0 h .*: expected at most "
+     r"sequence\.max_duration_h=4 h"),
+])
+def test_every_duration_and_count_is_bounded(section, values, message):
+    with pytest.raises(ValueError, match=message):
+        load_config().replace(**{section: values})
+
+
+def test_a_longer_plan_needs_a_larger_max_duration():
+    config = load_config().replace(settle={"timeout_s": 600.0},
+                                   sequence={"max_duration_h": 4.0})  # 19 x 605 s: 3.2 h
+    assert config.sequence.max_duration_h == 4.0
+    with pytest.raises(ValueError, match=r"max_duration_h=100 is invalid: expected 0 to 48 h"):
+        load_config().replace(sequence={"max_duration_h": 100.0})
+
+
+# 5. writes that cannot lie -----------------------------------------------------------------
+
+def test_a_full_disk_at_the_final_write_is_exit_2_and_said(tmp_path, mkm_cli, monkeypatch):
+    write = RunWriter.write_meta
+
+    def full_at_the_end(self, meta):
+        if meta.status != "running":
+            raise OSError(errno.ENOSPC, "No space left on device")
+        write(self, meta)
+
+    monkeypatch.setattr(RunWriter, "write_meta", full_at_the_end)
+    code, out, err = mkm_cli(["acquire", "--pressures", "0.5", "--out", str(tmp_path),
+                              "--no-progress"])
+    assert code == 2
+    assert "run.json could not be written (OSError: [Errno 28] No space left on device)" in err
+    assert load_run(Path(out.strip())).status == "running"  # this process: still alive
+
+
+def test_a_full_disk_at_the_start_leaves_no_folder_and_says_so(tmp_path, mkm_cli, monkeypatch):
+    def full(self, meta):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(RunWriter, "write_meta", full)
+    code, out, err = mkm_cli(["acquire", "--pressures", "0.5", "--out", str(tmp_path / "runs"),
+                              "--no-progress"])
+    assert code == 2 and out == ""
+    assert "recording failed (OSError: [Errno 28] No space left on device)" in err
+    assert list((tmp_path / "runs").iterdir()) == []
+
+
+def test_a_full_state_folder_is_named_not_taken_for_a_failed_vent(config, tmp_path,
+                                                                  monkeypatch):
+    command = BenchLease.command
+
+    def full_at_zero(self, pressure_bar):
+        if pressure_bar == 0.0:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        command(self, pressure_bar)
+
+    monkeypatch.setattr(BenchLease, "command", full_at_zero)
+    result = acquire(config, out_root=tmp_path, **QUIET)
+    run = load_run(result.path)
+    assert "vent command failed" not in result.reason
+    assert "could not be updated (No space left on device)" in result.reason
+    assert run.commands["ok"].all() and run.meta.vent_check["verified"]
+
+
+# 7. spreadsheet-safe outputs, ids validated when loaded ------------------------------------
+
+def test_formula_cells_are_neutralised():
+    import pandas as pd
+
+    from mkm.fem.records import spreadsheet_safe
+
+    frame = pd.DataFrame({"run": ["=HYPERLINK(1)", "+1", "-cmd", "@x", "\tx", "ok"],
+                          "force_N": [-1.0, 2.0, 3.0, 4.0, 5.0, 6.0]})
+    safe = spreadsheet_safe(frame)
+    assert list(safe["run"]) == ["'=HYPERLINK(1)", "'+1", "'-cmd", "'@x", "'\tx", "ok"]
+    assert list(safe["force_N"]) == list(frame["force_N"])  # numbers untouched
+
+
+@pytest.mark.parametrize("edit, message", [
+    (("flags", "=cmd|' /C calc'!A0"), r"samples\.csv is corrupt: flags="),
+    (("id", "<img src=x onerror=alert(1)>"), r"muscle\.id=.*is invalid"),
+    (("id", "a/b"), r"muscle\.id='a/b' .* is invalid"),
+])
+def test_hostile_cells_and_ids_are_refused_when_loaded(config, tmp_path, edit, message):
+    path = acquire(config, out_root=tmp_path, **QUIET).path
+    key, value = edit
+    if key == "flags":
+        lines = (path / "samples.csv").read_text().splitlines()
+        lines[1] = lines[1] + value.replace(",", "")
+        (path / "samples.csv").write_text("\n".join(lines) + "\n")
+    else:
+        meta = json.loads((path / "run.json").read_text())
+        meta["muscle"]["id"] = value
+        (path / "run.json").write_text(json.dumps(meta))
+    with pytest.raises(ValueError, match=message):
+        load_run(path).samples  # noqa: B018 (the samples are read on first use)
+
+
+# 9. the small ones -------------------------------------------------------------------------
+
+def test_a_killed_runs_sample_count_comes_from_samples_csv(config, tmp_path):
+    path = acquire(config, out_root=tmp_path, **QUIET).path
+    meta = json.loads((path / "run.json").read_text())
+    meta["status"], meta["counters"]["samples"] = "running", 20  # the last rewrite's count
+    meta["process"]["pid"] = 2**22 + 5  # dead
+    (path / "run.json").write_text(json.dumps(meta))
+    run = load_run(path)
+    assert run.meta.counters["samples"] == len(run.samples) > 20
+    assert any("samples counted from samples.csv" in p for p in run.problems)
+
+
+def test_stop_to_vent_counts_from_the_first_stop_request(config, tmp_path):
+    run = BenchRun(config, SimBackend(config), tmp_path, handle_signals=False, **QUIET)
+    run.signals.stop_requested_at, run.signals.signal_at = 10.0, 12.5  # Ctrl-C, then again
+    assert run._stop_time() == 10.0
