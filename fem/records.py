@@ -26,7 +26,7 @@ import os
 import platform
 import sys
 from functools import cache
-from importlib.util import find_spec, resolve_name
+from importlib.util import resolve_name
 from pathlib import Path
 from typing import Any
 
@@ -137,7 +137,7 @@ def source_version(*modules: str, data: bool = True) -> str:
         module = stack.pop()
         if module in sources:
             continue
-        spec = find_spec(module)
+        spec = _spec(module)
         if spec is None or not spec.origin or not spec.origin.endswith(".py"):
             continue
         sources[module] = Path(spec.origin).read_bytes()
@@ -154,7 +154,7 @@ def source_version(*modules: str, data: bool = True) -> str:
                          and n not in sources and _is_module(n))
     data_files = set()
     for module in sources if data else ():
-        origin = Path(find_spec(module).origin)
+        origin = Path(_spec(module).origin)
         data_files |= set(origin.parent.glob("*.json"))
     digest = hashlib.sha256()
     for module in sorted(sources):
@@ -165,10 +165,27 @@ def source_version(*modules: str, data: bool = True) -> str:
 
 
 def _is_module(name: str) -> bool:
-    try:
-        return find_spec(name) is not None
-    except (ImportError, ValueError):  # "mkm.fem.calibration.calibrated": a name, not a module
-        return False
+    return _spec(name) is not None  # "mkm.fem.calibration.calibrated": a name, not a module
+
+
+def _spec(name: str):
+    """The spec of module ``name`` as the import system finds it, or None, without executing any
+    module (``importlib.util.find_spec`` imports the parent packages: the whole model stack)."""
+    if name in sys.modules:
+        return getattr(sys.modules[name], "__spec__", None)
+    parent, _, _ = name.rpartition(".")
+    path = None
+    if parent:
+        parent_spec = _spec(parent)
+        if parent_spec is None or parent_spec.submodule_search_locations is None:
+            return None
+        path = list(parent_spec.submodule_search_locations)
+    for finder in sys.meta_path:
+        find = getattr(finder, "find_spec", None)
+        spec = find(name, path) if find is not None else None
+        if spec is not None:
+            return spec
+    return None
 
 
 def file_sha256(path: str | os.PathLike) -> str:
