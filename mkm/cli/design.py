@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 from pathlib import Path
 
 from mkm.cli.common import (
@@ -16,9 +17,30 @@ EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.
            "--t0 2:3 --out mkm-out/design")
 
 
-def register(subparsers) -> None:
-    from mkm.design.spec import OBJECTIVES, parse_bounds, parse_requirement
+def _spec(name: str):
+    """The parser ``name`` of :mod:`mkm.design.spec`, imported when an argument is parsed: the
+    design package loads pandas and matplotlib, which the other commands and ``--help`` do
+    without."""
 
+    def parse(text, *args):
+        from mkm.design import spec
+
+        return getattr(spec, name)(text, *args)
+
+    parse.__name__ = name
+    return parse
+
+
+def _objective(text: str) -> str:
+    from mkm.design.spec import OBJECTIVES
+
+    if text not in OBJECTIVES:
+        raise argparse.ArgumentTypeError(f"{text!r} is invalid: expected one of "
+                                         f"{', '.join(OBJECTIVES)}")
+    return text
+
+
+def register(subparsers) -> None:
     p = subparsers.add_parser(
         "design", help="design a muscle for required forces: surrogate search of the design "
         "box, FE verification of the best designs", epilog=EXAMPLE,
@@ -29,7 +51,7 @@ def register(subparsers) -> None:
         "Writes designs.csv, designs.json (provenance) and design.html under --out; exit "
         "status 1 when no verified design meets every requirement.")
     p.add_argument("--require", action="append", default=[], metavar="F@P,eps=E",
-                   type=argtype(parse_requirement, "--require"),
+                   type=argtype(_spec("parse_requirement"), "--require"),
                    help="force at least F [N] at pressure P [bar], held at shortening eps "
                    "(fraction or %%), e.g. 400N@2bar,eps=0.10; repeatable")
     p.add_argument("--spec", metavar="FILE", help="TOML spec: [[requirement]] tables "
@@ -42,7 +64,7 @@ def register(subparsers) -> None:
                             ("--L0", "L0_mm", "length at rest [mm] (default 282)"),
                             ("--theta0", "theta0_deg", "braid angle at rest [deg] (default: "
                              "the calibration)")):
-        p.add_argument(flag, dest=key, type=argtype(parse_bounds, flag), metavar="V|LO:HI",
+        p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag), metavar="V|LO:HI",
                        help=f"{what}: a value or a range low:high")
     p.add_argument("--rubber", help="wall material(s), comma list: calibrated (default: the "
                    "rubber of the calibration in effect, an identified one, else Silastic S) "
@@ -53,8 +75,9 @@ def register(subparsers) -> None:
     p.add_argument("--max-pressure", dest="max_pressure_bar", metavar="BAR",
                    type=argtype(parse_number, "--max-pressure"),
                    help="largest working pressure [bar] (default: the requirements' largest)")
-    p.add_argument("--objective", choices=OBJECTIVES,
-                   help="ranking of the designs (default min-outer-diameter)")
+    p.add_argument("--objective", type=_objective, metavar="OBJECTIVE",
+                   help="ranking of the designs: min-outer-diameter (default), "
+                   "min-rubber-volume or max-margin")
     p.add_argument("--top", type=int, metavar="N",
                    help="designs verified with the FE model (default 5)")
     p.add_argument("--mesh", choices=("coarse", "medium", "fine"), default="medium",

@@ -24,28 +24,19 @@ writes ``designs.csv``, ``designs.json`` (provenance), ``design.html`` and its f
 (:mod:`mkm.design.page`).
 """
 
-from importlib import import_module
+from mkm.design.page import write_design
+from mkm.design.result import DesignResult, design, design_record, run_design
+from mkm.design.search import Search, pick, search
+from mkm.design.spec import (
+    OBJECTIVES,
+    Constraints,
+    Requirement,
+    load_spec,
+    parse_bounds,
+    parse_requirement,
+)
+from mkm.design.verify import verify
 
-# imported on first use: `mkm design --help` (mkm.design.spec) needs neither pandas nor matplotlib
-_LAZY = {
-    "write_design": "mkm.design.page",
-    "DesignResult": "mkm.design.result", "design": "mkm.design.result",
-    "design_record": "mkm.design.result", "run_design": "mkm.design.result",
-    "Search": "mkm.design.search", "pick": "mkm.design.search", "search": "mkm.design.search",
-    "OBJECTIVES": "mkm.design.spec", "Constraints": "mkm.design.spec",
-    "Requirement": "mkm.design.spec", "load_spec": "mkm.design.spec",
-    "parse_bounds": "mkm.design.spec", "parse_requirement": "mkm.design.spec",
-    "verify": "mkm.design.verify",
-}
-
-__all__ = sorted(_LAZY)
-
-
-def __getattr__(name):
-    if name in _LAZY:
-        return getattr(import_module(_LAZY[name]), name)
-    raise AttributeError(f"module 'mkm.design' has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(__all__)
+__all__ = ["OBJECTIVES", "Constraints", "DesignResult", "Requirement", "Search", "design",
+           "design_record", "load_spec", "parse_bounds",
+           "parse_requirement", "pick", "run_design", "search", "verify", "write_design"]
