@@ -50,6 +50,7 @@ MAX_TARE_STD_FRACTION = 0.01
 MAX_TARE_SHIFT_FRACTION = 0.1
 MAX_VENT_BELOW_BAR = 0.2
 MAX_VENT_TIMEOUT_S = 30.0
+MAX_DATASHEET_FRACTION = 0.05
 
 
 @dataclass(frozen=True)
@@ -117,15 +118,27 @@ class Daq:
 
 @dataclass(frozen=True)
 class LoadCell:
+    """The load cell and its data sheet's error bounds (half-widths, for the uncertainty budget
+    of :mod:`mkm.bench.budget`): ``sensitivity_tolerance_fraction`` of the reading (the paper's
+    TCA10: <= 0.1 %), ``nonlinearity_fraction_fs`` and ``zero_drift_fraction_fs`` (over a run) of
+    the capacity (typical S-beam data sheets: 0.05 % and 0.02 %; set your cell's)."""
+
     capacity_N: float
     sensitivity_N_per_V: float
     offset_V: float = 0.0
     channel: str = "ai0"
+    sensitivity_tolerance_fraction: float = 0.001
+    nonlinearity_fraction_fs: float = 0.0005
+    zero_drift_fraction_fs: float = 0.0002
 
     def check(self):
         positive("loadcell.capacity_N", self.capacity_N)
         within("loadcell.capacity_N", self.capacity_N, 0.0, MAX_CAPACITY_N, "N")
         positive("loadcell.sensitivity_N_per_V", self.sensitivity_N_per_V)
+        for name in ("sensitivity_tolerance_fraction", "nonlinearity_fraction_fs",
+                     "zero_drift_fraction_fs"):
+            within(f"loadcell.{name}", getattr(self, name), 0.0, MAX_DATASHEET_FRACTION,
+                   "(a fraction)", "a data-sheet bound beyond 5 % is not a load cell")
 
     def force_N(self, volts):
         """Force [N] from load-cell volts with this calibration."""
@@ -141,6 +154,7 @@ class Regulator:
     monitor_channel: str = "ai1"
     monitor_V_at_zero: float = 1.0
     monitor_V_at_full_scale: float = 5.0
+    monitor_accuracy_bar: float = 0.04  # +- bound of the pressure reading: 1 % of an ITV's 4 bar
 
     @property
     def electronic(self) -> bool:
@@ -156,6 +170,9 @@ class Regulator:
         if not 0 < self.max_pressure_bar <= self.full_scale_bar:
             raise ValueError(f"regulator.max_pressure_bar={self.max_pressure_bar:g} is invalid: "
                              f"expected 0 < max <= full_scale_bar={self.full_scale_bar:g}")
+        within("regulator.monitor_accuracy_bar", self.monitor_accuracy_bar, 0.0,
+               MAX_TOLERANCE_FRACTION * self.full_scale_bar, "bar",
+               f"a tenth of regulator.full_scale_bar={self.full_scale_bar:g}")
         if not self.monitor_V_at_full_scale > self.monitor_V_at_zero:
             raise ValueError("regulator.monitor_V_at_full_scale must exceed monitor_V_at_zero")
 
