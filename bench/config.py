@@ -28,6 +28,7 @@ from mkm.bench.settings import positive, read_toml, read_toml_file, typed_sectio
 from mkm.bench.sim_settings import Sim
 from mkm.bench.storage import check_muscle_id
 from mkm.fem.muscle import LIMITS, check_value, check_wall
+from mkm.fem.tolerances import Tolerances
 
 DEFAULT_CONFIG = "paper_prototype.toml"
 DEVICE_PATTERN = r"[A-Za-z0-9_][A-Za-z0-9 _.-]{0,63}"  # NI MAX names: Dev1, cDAQ1Mod1
@@ -56,19 +57,34 @@ MAX_DATASHEET_FRACTION = 0.05
 @dataclass(frozen=True)
 class Muscle:
     """The muscle on the bench: its id (names the run folder) and geometry, checked against the
-    one muscle type's limits (:data:`mkm.fem.muscle.LIMITS`)."""
+    one muscle type's limits (:data:`mkm.fem.muscle.LIMITS`), and the +- tolerances it is made
+    to (defaults and meaning: :class:`mkm.fem.tolerances.Tolerances`), which the report
+    propagates to every model's prediction."""
 
     id: str
     D0_mm: float
     t0_mm: float
     L0_mm: float
     eps: float
+    D0_tolerance_mm: float = Tolerances.D0_mm
+    t0_tolerance_mm: float = Tolerances.t0_mm
+    L0_tolerance_mm: float = Tolerances.L0_mm
+    eps_tolerance: float = Tolerances.eps
+    theta0_tolerance_deg: float = Tolerances.theta0_deg
 
     def check(self):
         check_muscle_id(self.id, "muscle.id")
         for name in ("D0_mm", "t0_mm", "L0_mm", "eps"):
             check_value(name, getattr(self, name), "muscle.")
         check_wall(self.D0_mm, self.t0_mm, "muscle.")
+        try:
+            self.tolerances()
+        except ValueError as exc:
+            raise ValueError(f"muscle.{exc}") from None
+
+    def tolerances(self) -> Tolerances:
+        return Tolerances(self.D0_tolerance_mm, self.t0_tolerance_mm, self.L0_tolerance_mm,
+                          self.eps_tolerance, self.theta0_tolerance_deg)
 
 
 @dataclass(frozen=True)

@@ -45,8 +45,9 @@ def coverage(runs: int, eps_values) -> None:
 
 
 def band_speed() -> None:
+    from mkm.fem.tolerances import Tolerances
     from mkm.registry import build_spec
-    from mkm.uncertainty import Tolerances, force_band
+    from mkm.uncertainty import force_band
 
     model = build_spec("surrogate")
     pressure = np.linspace(0.125, 2.5, 20)

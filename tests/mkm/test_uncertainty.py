@@ -6,8 +6,9 @@ import math
 import numpy as np
 import pytest
 
+from mkm.fem.tolerances import Tolerances, draws
 from mkm.registry import parse_spec
-from mkm.uncertainty import Tolerances, draws, force_band, nominal_parameters, with_band
+from mkm.uncertainty import force_band, nominal_parameters, with_band
 
 
 def test_parse_the_design_flag():
@@ -91,3 +92,37 @@ def test_monte_carlo_over_the_surrogate_agrees_with_its_linearisation():
     assert mc.force_u_N == pytest.approx(linear.force_u_N, rel=0.08)
     # at the box's edge (D0 = 30 mm, draws below it) the band is linearised by itself
     assert force_band(model, P, 30.0, 3.0, 0.1, tol).method == "linearised"
+
+
+def test_report_gives_en_per_step_and_a_verdict_per_model(tmp_path):
+    import pandas as pd
+
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+    from mkm.report import build_report
+
+    config = load_config(eps=0.122, pressures_bar=(0.5, 1.5, 2.5))
+    run = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
+    path = build_report([run], ["eq2", "thickwall"], out_dir=tmp_path / "r",
+                        cache_dir=None, tolerance=None, surrogate_section=False)
+    errors = pd.read_csv(path.parent / "run1_errors.csv")
+    steps = pd.read_csv(run / "steps.csv")
+    for _, rows in errors.groupby("model"):
+        rows = rows.set_index("step").loc[steps["step"]]
+        ok = rows["valid"].to_numpy()
+        slope = np.polyfit(rows["pressure_bar"][ok], rows["force_N"][ok], 1)[0]
+        U = np.sqrt(steps["force_U_N"].to_numpy() ** 2
+                    + (slope * steps["pressure_U_bar"].to_numpy()) ** 2
+                    + (2 * rows["force_u_N"].to_numpy()) ** 2)
+        expected = (steps["force_N_mean"].to_numpy() - rows["force_N"].to_numpy()) / U
+        assert rows["E_n"].to_numpy()[ok] == pytest.approx(expected[ok], rel=1e-4)
+        # at 2.5 bar the band (theta0 +-1 deg, D0 +-0.3 mm...) is a few % of the force
+        top = rows["force_N"].idxmax()
+        assert 0.01 < rows.loc[top, "force_u_N"] / rows.loc[top, "force_N"] < 0.15
+    summary = pd.read_csv(path.parent / "summary.csv")
+    for s in summary.itertuples():
+        rows = errors[errors["model"] == s.model]
+        assert s.consistent == bool((rows["E_n"].abs().dropna() <= 1).all())
+        assert abs(s.worst_E_n) == pytest.approx(rows["E_n"].abs().max(), rel=1e-4)
+    html = path.read_text(encoding="utf-8")
+    assert "Measurement uncertainty budget of step" in html and "consistent" in html
