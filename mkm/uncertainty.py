@@ -40,8 +40,9 @@ class Band:
 
 def nominal_parameters(model: ForceModel, D0_mm: float, t0_mm: float, eps: float
                        ) -> dict[str, float]:
-    """The muscle ``model`` predicts for: the geometry given and its own parameters
-    (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``, where it has them)."""
+    """The muscle ``model`` predicts for: the geometry given (``D0_mm``, ``t0_mm`` may be arrays)
+    and its own parameters (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``, where it has
+    them)."""
     from mkm.fem.materials import SILASTIC_S
     from mkm.fem.paper import L0_MM
 
@@ -51,7 +52,8 @@ def nominal_parameters(model: ForceModel, D0_mm: float, t0_mm: float, eps: float
         from mkm.fem.calibration import calibrated
 
         theta = calibrated(model.calibration_key)["theta0_deg"]
-    return {"D0_mm": float(D0_mm), "t0_mm": float(t0_mm), "eps": float(eps),
+    return {"D0_mm": np.asarray(D0_mm, dtype=float), "t0_mm": np.asarray(t0_mm, dtype=float),
+            "eps": float(eps),
             "L0_mm": float(params.get("L0_mm") or L0_MM), "theta0_deg": float(theta),
             "C10_MPa": float(params.get("C10_MPa") or SILASTIC_S.C10_MPa),
             "C01_MPa": float(params.get("C01_MPa") or SILASTIC_S.C01_MPa)}
@@ -97,26 +99,42 @@ def force_band(model: ForceModel, pressure_bar, D0_mm: float, t0_mm: float, eps:
         spread = _surrogate_spread(model, pressure, sample)
         u = np.sqrt(spread**2 + own_std**2)
         return Band(force, np.where(np.isfinite(force), u, np.nan), "monte-carlo")
-    u2 = own_std**2
+    contributions = sensitivities(model, pressure, nominal, tolerances, force, rebuild,
+                                  predict)
+    u2 = own_std**2 + sum(c**2 for c in contributions.values())
+    return Band(force, np.sqrt(u2), "linearised")
+
+
+def sensitivities(model: ForceModel, pressure_bar, nominal: dict, tolerances: Tolerances,
+                  force_N, rebuild: Callable[..., ForceModel] | None = None,
+                  predict: Callable[..., Prediction] | None = None) -> dict[str, np.ndarray]:
+    """``c_i u_i`` [N] per toleranced input: the sensitivity coefficient times the standard
+    uncertainty, signed (negative: the force falls as the input grows), by central differences
+    over +- u_i (one-sided where one side leaves the model's range: a surrogate's box edge, eps
+    below 0). ``nominal`` (:func:`nominal_parameters`) may hold arrays of D0 and t0 (many
+    candidates at once); ``force_N`` is the nominal force. Inputs the model cannot vary
+    (``rebuild`` missing or refusing) are left out.
+    """
+    predict = predict or (lambda m, *args: m.predict(*args))
+    out = {}
     for name, u_i in tolerances.standard().items():
         shifted = []
         for sign in (1.0, -1.0):
             changed = dict(nominal)
             if name == "rubber_fraction":
-                changed["C10_MPa"] *= 1 + sign * u_i
-                changed["C01_MPa"] *= 1 + sign * u_i
+                changed["C10_MPa"] = changed["C10_MPa"] * (1 + sign * u_i)
+                changed["C01_MPa"] = changed["C01_MPa"] * (1 + sign * u_i)
             else:
-                changed[name] += sign * u_i
-            shifted.append(_predict_changed(model, pressure, changed, nominal, rebuild,
+                changed[name] = changed[name] + sign * u_i
+            shifted.append(_predict_changed(model, pressure_bar, changed, nominal, rebuild,
                                             predict))
         if shifted[0] is None:
             continue
-        # (dF/dx u)^2, central over +-u; one-sided where one side leaves the model's range
-        # (a surrogate's box edge, eps below 0)
         central = (shifted[0] - shifted[1]) / 2
-        one_sided = np.where(np.isfinite(shifted[0]), shifted[0] - force, force - shifted[1])
-        u2 = u2 + np.where(np.isfinite(central), central, one_sided) ** 2
-    return Band(force, np.sqrt(u2), "linearised")
+        one_sided = np.where(np.isfinite(shifted[0]), shifted[0] - force_N,
+                             force_N - shifted[1])
+        out[name] = np.where(np.isfinite(central), central, one_sided)
+    return out
 
 
 def _monte_carlo_ready(model, sample: dict[str, np.ndarray]) -> bool:
