@@ -95,7 +95,7 @@ def force_band(model: ForceModel, pressure_bar, D0_mm: float, t0_mm: float, eps:
     sample = draws(nominal, tolerances, n_draws, np.random.default_rng(seed))
     if method not in ("auto", "linearised"):
         raise ValueError(f"method={method!r} is invalid: expected 'auto' or 'linearised'")
-    if method == "auto" and _monte_carlo_ready(model, sample):
+    if method == "auto" and monte_carlo_ready(model, sample):
         spread = _surrogate_spread(model, pressure, sample)
         u = np.sqrt(spread**2 + own_std**2)
         return Band(force, np.where(np.isfinite(force), u, np.nan), "monte-carlo")
@@ -137,7 +137,9 @@ def sensitivities(model: ForceModel, pressure_bar, nominal: dict, tolerances: To
     return out
 
 
-def _monte_carlo_ready(model, sample: dict[str, np.ndarray]) -> bool:
+def monte_carlo_ready(model, sample: dict[str, np.ndarray]) -> bool:
+    """Whether ``model`` is a surrogate taking every input of ``sample`` with every draw in
+    its training box."""
     inputs, box = getattr(model, "inputs", None), getattr(model, "box", None)
     if not inputs or not box or not hasattr(model, "estimator"):
         return False
@@ -150,17 +152,25 @@ def _monte_carlo_ready(model, sample: dict[str, np.ndarray]) -> bool:
     return True
 
 
-def _surrogate_spread(model, pressure: np.ndarray, sample: dict[str, np.ndarray]) -> np.ndarray:
-    """Standard deviation over the draws of the surrogate's force, per pressure (one call)."""
+def surrogate_draws(model, pressure_bar, sample: dict[str, np.ndarray]) -> np.ndarray:
+    """The surrogate's force [N] at every pressure (rows) for every draw (columns) of
+    :func:`mkm.fem.tolerances.draws`, in one call of its estimator (the draws must lie in its
+    box: :func:`monte_carlo_ready`)."""
+    pressure = np.atleast_1d(np.asarray(pressure_bar, dtype=float))
     n = len(next(iter(sample.values())))
     columns = []
     for name in model.inputs:
         if name == "pressure_bar":
             columns.append(np.repeat(pressure, n))
         else:
-            columns.append(np.tile(sample[name], pressure.size))
+            columns.append(np.tile(np.broadcast_to(sample[name], n), pressure.size))
     X = np.column_stack(columns)
-    force = np.asarray(model.estimator.predict(X), dtype=float).reshape(pressure.size, n)
+    return np.asarray(model.estimator.predict(X), dtype=float).reshape(pressure.size, n)
+
+
+def _surrogate_spread(model, pressure: np.ndarray, sample: dict[str, np.ndarray]) -> np.ndarray:
+    """Standard deviation over the draws of the surrogate's force, per pressure."""
+    force = surrogate_draws(model, pressure, sample)
     lo, hi = model.box["pressure_bar"]
     return np.where((pressure >= lo) & (pressure <= hi), force.std(axis=1, ddof=1), np.nan)
 

@@ -126,3 +126,37 @@ def test_report_gives_en_per_step_and_a_verdict_per_model(tmp_path):
         assert abs(s.worst_E_n) == pytest.approx(rows["E_n"].abs().max(), rel=1e-4)
     html = path.read_text(encoding="utf-8")
     assert "Measurement uncertainty budget of step" in html and "consistent" in html
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--tolerance", "D0=abc"], "argument --tolerance: tolerance 'D0=abc' is invalid: expected "
+                                "a number"),
+    (["--tolerance", "D0=0.3", "--probability", "1.5"],
+     "--probability 1.5 is invalid: expected a probability between 0.5 and 1"),
+])
+def test_design_tolerance_bad_input_is_one_line(mkm_run, argv, message):
+    code, out, err = mkm_run(["design", "--require", "580N@2bar,eps=0.10", "--no-progress",
+                              *argv])
+    assert code == 2 and message in err and "Traceback" not in err
+
+
+@pytest.mark.slow  # the default surrogate (trained on first use) and FE sweeps
+def test_robust_design_meets_the_requirement_with_the_probability_asked(tmp_path):
+    from mkm.design import run_design
+
+    tolerances = Tolerances.parse("D0=0.3,t0=0.1,theta0=1,rubber=10%")
+    nominal = run_design(["580N@2bar,eps=0.10"], top=2, mesh="coarse", cache_dir=tmp_path)
+    robust = run_design(["580N@2bar,eps=0.10"], top=2, mesh="coarse", cache_dir=tmp_path,
+                        tolerances=tolerances, probability=0.95)
+    d = robust.designs
+    for column in ("probability_r1", "probability_r1_search", "probability_all",
+                   "r1_tolerance_u_N", "r1_fe_worst_corner_N"):
+        assert column in d
+    # the search's normal approximation is at least 95 %; the Monte Carlo of 4000 draws
+    # (sd 0.3 points) of sums of uniform inputs has lighter tails, so it states more
+    assert (d["probability_r1_search"] >= 0.95 - 1e-9).all()
+    assert (d["probability_all"] >= 0.95 - 0.01).all()
+    # a robust design needs a margin of z_95 u over the nominal one's 3 surrogate std
+    assert robust.chosen["r1_surrogate_N"] > nominal.chosen["r1_surrogate_N"] + 20.0
+    assert (d["r1_fe_worst_corner_N"] < d["r1_fe_N"]).all()
+    assert "worst_corner" not in str(nominal.designs.columns)
