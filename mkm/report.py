@@ -495,7 +495,12 @@ def _budget_section(r: _Run, links: str) -> str:
     if "force_U_N" not in steps or not steps["force_U_N"].notna().any():
         return '<p class="note">This run was recorded without an uncertainty budget.</p>'
     s = steps.loc[steps["force_N_mean"].idxmax()]
-    budget = step_budget(Instrument.from_run(r.meta), float(s["force_N_mean"]),
+    try:
+        instrument = Instrument.from_run(r.meta)
+    except (TypeError, ValueError, ZeroDivisionError):
+        return ('<p class="note">The calibration in run.json is incomplete: the budget\'s terms '
+                "cannot be listed (steps.csv has its totals).</p>")
+    budget = step_budget(instrument, float(s["force_N_mean"]),
                          float(s["force_N_std"]), int(s["n"]), float(s["force_drift_N"]),
                          float(tare.get("std_N", np.nan)), int(tare.get("n", 0)))
     rows = [{"quantity": q, "term": t.name, "type": t.kind,
