@@ -6,7 +6,7 @@ regulator monitor over the hold. Each standard uncertainty below is combined in 
 ``k = 2`` (:data:`COVERAGE_FACTOR`):
 
 force [N]
-    - load-cell sensitivity: ``loadcell.sensitivity_tolerance_fraction`` x |F|, a rectangular
+    - load-cell sensitivity: ``loadcell.sensitivity_tolerance_fraction`` x ``abs(F)``, a rectangular
       bound (type B, divided by sqrt 3);
     - load-cell non-linearity and zero drift: ``loadcell.nonlinearity_fraction_fs`` and
       ``loadcell.zero_drift_fraction_fs`` x ``capacity_N``, rectangular (type B);

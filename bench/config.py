@@ -462,10 +462,11 @@ REQUIRED = ("muscle", "loadcell", "daq")
 
 def parse_config(text: str, source: str = "<string>") -> BenchConfig:
     """Validate the TOML ``text`` of a bench configuration."""
-    return _config(read_toml(text, f"config {source}"), text, source)
+    return config_from_tables(read_toml(text, f"config {source}"), text, source)
 
 
-def _config(data: dict[str, Any], text: str, source: str) -> BenchConfig:
+def config_from_tables(data: dict[str, Any], text: str, source: str) -> BenchConfig:
+    """Validate the tables ``data`` (read from ``text``, named ``source``) into a config."""
     unknown = sorted(set(data) - set(SECTIONS))
     if unknown:
         raise ValueError(f"config {source}: [{unknown[0][:40]}] is not a section: expected "
@@ -508,7 +509,7 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
         config = parse_config(text, f"bench/configs/{DEFAULT_CONFIG}")
     else:
         text, data = read_toml_file(Path(path), "config ")
-        config = _config(data, text, str(path))
+        config = config_from_tables(data, text, str(path))
     changes: dict[str, dict] = {}
     if eps is not None:
         changes["muscle"] = {"eps": float(eps)}

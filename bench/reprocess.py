@@ -14,13 +14,15 @@ SHA-256 of its run.json and samples.csv, and the calibration it had.
 from __future__ import annotations
 
 import dataclasses
+import re
 from pathlib import Path
 
 import numpy as np
 
 from mkm.bench.budget import Instrument
-from mkm.bench.config import BenchConfig
+from mkm.bench.config import BenchConfig, config_from_tables
 from mkm.bench.sequence import HoldStats, Step, validate_tare
+from mkm.bench.settings import read_toml_file
 from mkm.bench.storage import (
     CommandRecord,
     ProcessIdentity,
@@ -31,6 +33,47 @@ from mkm.bench.storage import (
     load_run,
 )
 from mkm.fem.records import file_sha256, provenance
+
+
+def overlay_config(run_dir: str | Path, path: str | Path) -> BenchConfig:
+    """The run's own configuration (its ``config.toml``) with every section of the TOML file
+    ``path`` laid over it: a file holding only ``[loadcell]`` recalibrates and changes nothing
+    else. The text kept is the run's, its replaced sections swapped for the file's."""
+    run_text, run_data = read_toml_file(Path(run_dir) / "config.toml", "the run's config ")
+    new_text, new_data = read_toml_file(path, "config ")
+    if not new_data:
+        raise ValueError(f"config {path}: no section: expected at least [loadcell]")
+    merged = {**run_data, **new_data}
+    text = _swap_sections(run_text, new_text, set(new_data))
+    return config_from_tables(merged, text, f"{Path(run_dir).name}/config.toml + {path}")
+
+
+def _swap_sections(base: str, new: str, names: set[str]) -> str:
+    """``base`` with its top-level tables in ``names`` replaced by those of ``new`` (appended
+    where ``base`` has none)."""
+    def split(text: str) -> list[tuple[str, str]]:
+        parts, name, lines = [], "", []
+        for line in text.splitlines(keepends=True):
+            header = re.match(r"^\s*\[([A-Za-z_][\w.]*)\]\s*(#.*)?$", line)
+            if header:
+                parts.append((name, "".join(lines)))
+                name, lines = header.group(1).split(".")[0], []
+            lines.append(line)
+        parts.append((name, "".join(lines)))
+        return parts
+
+    replacement = {n: "" for n in names}
+    for name, chunk in split(new):
+        if name in names:
+            replacement[name] += chunk
+    out = []
+    for name, chunk in split(base):
+        if name in names:
+            out.append(replacement.pop(name, ""))
+        else:
+            out.append(chunk)
+    out += [chunk for chunk in replacement.values() if chunk]
+    return "".join(part if part.endswith("\n") else part + "\n" for part in out if part)
 
 
 def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | None = None

@@ -66,10 +66,11 @@ class RunStatus(enum.StrEnum):
     ABORTED = "aborted"  # stopped on purpose: interlock, signal, operator
     FAILED = "failed"  # stopped by an error: device, storage, tare
     INCOMPLETE = "incomplete"  # never written: the loader's verdict on a dead "running" record
+    IMPORTED = "imported"  # measured elsewhere (another bench, a spreadsheet): mkm import
 
     @property
     def finished(self) -> bool:
-        return self in (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS)
+        return self in (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS, RunStatus.IMPORTED)
 
 
 WRITTEN_STATUSES = tuple(s for s in RunStatus if s is not RunStatus.INCOMPLETE)
@@ -240,6 +241,7 @@ class RunMeta:
     vent_check: dict[str, Any] | None = None
     unvented_before: list[dict[str, Any]] = field(default_factory=list)
     reprocessed_from: dict[str, Any] | None = None
+    imported_from: dict[str, Any] | None = None
     simulated: bool = False
 
     @property
@@ -288,7 +290,7 @@ class RunMeta:
         values = {k: v for k, v in data.items() if k in known}
         _check_fields(values, where)
         values["status"] = RunStatus(values["status"])
-        values["muscle"] = _muscle(data.get("muscle"), where)
+        values["muscle"] = muscle_from_dict(data.get("muscle"), where)
         if values.get("process") is not None:
             values["process"] = _record(ProcessIdentity, values["process"], f"{where}: process")
         values["gaps"] = [_record(Gap, g, f"{where}: gaps[{k}]")
@@ -299,7 +301,7 @@ class RunMeta:
         return cls(**values)
 
 
-def _muscle(data: Any, where: str) -> MuscleMeta:
+def muscle_from_dict(data: Any, where: str) -> MuscleMeta:
     from mkm.fem.muscle import check_value, check_wall
 
     if not isinstance(data, dict):
@@ -337,7 +339,8 @@ _FIELD_TYPES: dict[str, tuple[type, ...]] = {
     "stop_to_vent_s": (float, int, type(None)), "vented_at_unix_s": (float, int, type(None)),
     "last_command_bar": (float, int), "manual_vent_required": (bool,),
     "vent_check": (dict, type(None)), "unvented_before": (list,),
-    "reprocessed_from": (dict, type(None)), "simulated": (bool,),
+    "reprocessed_from": (dict, type(None)), "imported_from": (dict, type(None)),
+    "simulated": (bool,),
 }
 # Numbers other code reads from the nested objects: section -> key -> (low, high)
 _NESTED_NUMBERS = {
@@ -433,14 +436,17 @@ def _upgrade_v1(data: dict[str, Any]) -> dict[str, Any]:
 
 
 SIMULATED_SUFFIX = "-SIMULATED"
+REPROCESSED_SUFFIX = "-reprocessed"
+IMPORTED_SUFFIX = "-imported"
 
 
 def run_folder_name(muscle_id: str, when: datetime.datetime | None = None, k: int = 1,
-                    simulated: bool = False) -> str:
-    """``<UTC time>_<muscle id>[-k][-SIMULATED]``: the ``k``-th folder of that second."""
+                    simulated: bool = False, origin: str = "") -> str:
+    """``<UTC time>_<muscle id>[-k][-reprocessed|-imported][-SIMULATED]``: the ``k``-th folder
+    of that second; ``origin`` is ``"reprocessed"``, ``"imported"`` or empty (acquired)."""
     when = when or datetime.datetime.now(datetime.UTC)
     return (f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}{f'-{k}' if k > 1 else ''}"
-            f"{SIMULATED_SUFFIX if simulated else ''}")
+            f"{f'-{origin}' if origin else ''}{SIMULATED_SUFFIX if simulated else ''}")
 
 
 def _cell(value, column: str) -> str:
@@ -470,7 +476,9 @@ class RunWriter:
         root.mkdir(parents=True, exist_ok=True)
         when, k = datetime.datetime.now(datetime.UTC), 1
         while True:
-            path = root / run_folder_name(meta.muscle.id, when, k, meta.simulated)
+            origin = ("reprocessed" if meta.reprocessed_from else
+                      "imported" if meta.imported_from else "")
+            path = root / run_folder_name(meta.muscle.id, when, k, meta.simulated, origin)
             try:
                 path.mkdir()
                 break
@@ -717,7 +725,8 @@ class Run:
 
     @property
     def complete(self) -> bool:
-        return self.status == RunStatus.COMPLETE
+        """Every planned step done and nothing lost (an imported table counts as complete)."""
+        return self.status in (RunStatus.COMPLETE, RunStatus.IMPORTED)
 
     @property
     def reason(self) -> str:

@@ -5,6 +5,7 @@ Run outside the test suite:
     .venv/bin/python benchmarks/bench_surrogate.py [--muscles 12] [--seed S] [--mesh fine]
         [--draws 3] [--repeats 300] [--kinds muscle-gp,physics,gp,mlp-paper] [--grid-seeds 0]
         [--out FILE.json]
+    .venv/bin/python benchmarks/bench_surrogate.py --load-only [--processes 7] [--python PY]
 
 - accuracy: the default surrogate (trained on the shipped design) on ``--muscles`` random
   muscles drawn in the whole box (L0, theta0 and the rubber included) with a fresh seed
@@ -18,13 +19,24 @@ Run outside the test suite:
   call as a caller sees it (validation, domain check, estimator): median, 90th percentile,
   minimum and median CPU time over ``--repeats`` calls, per kind (target <= 0.5 ms median;
   the paper: 131 ms), and a single point; the training time of each kind (one BLAS thread);
-- with ``--grid-seeds N`` (default 0: skipped), the wall time of the paper's 27-net grid.
+- with ``--grid-seeds N`` (default 0: skipped), the wall time of the paper's 27-net grid;
+- with ``--load-only``, nothing else but the loading speed as a user meets it: the whole
+  process ``mkm fem solve --model surrogate --D0 40 --t0 3 --eps 0.1`` with the default
+  surrogate already trained in the cache (one warm-up run trains it if not), ``--processes``
+  runs (default 7): median wall and CPU seconds of the process, beside ``--model eq2``
+  (the command line's own floor: Python, numpy, scipy, pandas and the FE package).
+  ``--python`` runs another installation's interpreter (a checkout before a change).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
 import time
 import warnings
 
@@ -32,13 +44,14 @@ import numpy as np
 import pandas as pd
 
 from mkm.fem.records import jsonable, provenance
+from mkm.surrogate.coverage import coverage
 from mkm.surrogate.design import DESIGN_DATASET
-from mkm.surrogate.estimators import KINDS
+from mkm.surrogate.kinds import names
 from mkm.surrogate.offgrid import evaluate_offgrid
 from mkm.surrogate.testset import PAPER_MUSCLES, test_points
 from mkm.surrogate.train import train_surrogate
 from mkm.surrogate.training_data import load_training_data
-from mkm.surrogate.validation import coverage, rmse
+from mkm.surrogate.validation import rmse
 
 
 def timings(call, repeats: int) -> tuple[np.ndarray, np.ndarray]:
@@ -51,6 +64,41 @@ def timings(call, repeats: int) -> tuple[np.ndarray, np.ndarray]:
         call()
         wall[i], cpu[i] = time.perf_counter() - start, time.process_time() - start_cpu
     return wall, cpu
+
+
+LOAD_COMMAND = ("-m", "mkm", "fem", "solve", "--D0", "40", "--t0", "3", "--eps", "0.1")
+
+
+def process_seconds(python: str, model: str, repeats: int) -> dict:
+    """Median wall and CPU (user + system) seconds of ``repeats`` whole processes of
+    :data:`LOAD_COMMAND` with ``--model model``, after one warm-up run."""
+    command = [os.path.abspath(shutil.which(python) or python), *LOAD_COMMAND, "--model", model]
+    env = {**os.environ, "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1"}
+    # run outside any checkout: `-m mkm` would find a source tree in the working directory
+    run = {"check": True, "capture_output": True, "env": env, "cwd": tempfile.gettempdir()}
+    subprocess.run(command, **run)  # trains the surrogate if it is not cached
+    wall, cpu = [], []
+    for _ in range(repeats):
+        before, start = os.times(), time.perf_counter()
+        subprocess.run(command, **run)
+        after = os.times()
+        wall.append(time.perf_counter() - start)
+        cpu.append(after.children_user + after.children_system - before.children_user
+                   - before.children_system)
+    return {"model": model, "repeats": repeats, "wall_median_s": float(np.median(wall)),
+            "cpu_median_s": float(np.median(cpu)), "wall_min_s": float(np.min(wall))}
+
+
+def bench_load(python: str, repeats: int) -> dict:
+    rows = [process_seconds(python, model, repeats) for model in ("eq2", "surrogate")]
+    for r in rows:
+        print(f"mkm fem solve --model {r['model']:9s}: wall median {r['wall_median_s']:.2f} s "
+              f"(min {r['wall_min_s']:.2f}), CPU median {r['cpu_median_s']:.2f} s over "
+              f"{r['repeats']} processes")
+    extra = rows[1]["cpu_median_s"] - rows[0]["cpu_median_s"]
+    print(f"the surrogate's share (CPU, over eq2): {extra:.2f} s")
+    return {"python": python, "processes": rows, "surrogate_cpu_over_eq2_s": extra,
+            **provenance()}
 
 
 def bench_kind(kind: str, repeats: int) -> tuple[dict, object]:
@@ -84,10 +132,22 @@ def main() -> None:
                         help="FE workers (default 1, in-process: Dask workers refuse FE code "
                         "that changed since the client started)")
     parser.add_argument("--repeats", type=int, default=300)
-    parser.add_argument("--kinds", default=",".join(KINDS))
+    parser.add_argument("--kinds", default=",".join(names(include_families=False)))
     parser.add_argument("--grid-seeds", type=int, default=0)
     parser.add_argument("--out", help="also write the results as JSON here")
+    parser.add_argument("--load-only", action="store_true",
+                        help="only the whole-process loading time (see above)")
+    parser.add_argument("--processes", type=int, default=7,
+                        help="processes timed per command (--load-only; default 7)")
+    parser.add_argument("--python", default=sys.executable,
+                        help="interpreter of the installation to time (--load-only)")
     args = parser.parse_args()
+    if args.load_only:
+        result = bench_load(args.python, args.processes)
+        if args.out:
+            with open(args.out, "w", encoding="utf-8") as f:
+                json.dump(result, f, indent=2, default=jsonable)
+        return
 
     data = load_training_data(DESIGN_DATASET)
     best = train_surrogate("best", DESIGN_DATASET)

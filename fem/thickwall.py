@@ -192,6 +192,43 @@ def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, C10_MPa=SILASTIC_S
     return 2.0 * np.sqrt(outer_radius_sq_mm2)
 
 
+def effective_eps_of_slope(slope_N_per_bar, D0_mm, t0_mm, theta0_deg):
+    """The shortening ``e`` [fraction] at which the braid slope ``dF/dP`` equals ``slope``.
+
+    The pressure term of :func:`klute_hannaford` per bar, ``A(e) = A(0) (3 (1 - e)^2 cos^2
+    theta0 - 1) / (3 cos^2 theta0 - 1)``, inverted in closed form; ``slope`` in [N/bar]. A slope
+    above ``A(0)`` gives a negative ``e`` (a lengthening); NaN where no stretch gives it.
+    """
+    c2 = np.cos(np.deg2rad(theta0_deg)) ** 2
+    D_braid = np.asarray(D0_mm, dtype=float) + 2.0 * np.asarray(t0_mm, dtype=float)
+    ratio = slope_N_per_bar / chou_hannaford(1.0, D_braid, 0.0, theta0_deg)
+    with np.errstate(invalid="ignore"):
+        return 1.0 - np.sqrt((ratio * (3.0 * c2 - 1.0) + 1.0) / (3.0 * c2))
+
+
+def effective_eps_of_threshold(threshold_bar, D0_mm, t0_mm, theta0_deg, C10_MPa, C01_MPa):
+    """The shortening ``e`` [fraction] at which :func:`klute_hannaford_threshold_pressure`
+    equals ``threshold_bar`` [bar], one muscle per element (1-D arrays of equal length).
+
+    The threshold grows monotonically with ``e`` up to the braid lock, so Brent's root search
+    between 0 and 0.999 of the lock finds the one root; NaN where the threshold is not in that
+    range (0 or below, or beyond what any shortening short of the lock needs).
+    """
+    from scipy.optimize import brentq
+
+    out = np.full(np.shape(threshold_bar), np.nan)
+    for i, (p, d, t, th, c10, c01) in enumerate(zip(threshold_bar, D0_mm, t0_mm, theta0_deg,
+                                                    C10_MPa, C01_MPa, strict=True)):
+        top = 0.999 * chou_hannaford_eps_max(th)
+
+        def gap(e, p=p, d=d, t=t, th=th, c10=c10, c01=c01):
+            return float(klute_hannaford_threshold_pressure(d, t, e, th, c10, c01)) - p
+
+        if p > 0 and gap(top) > 0 > gap(1e-12):
+            out[i] = brentq(gap, 1e-12, top, xtol=1e-12)
+    return out
+
+
 class ThickWall(CalibratedTheta0, ForceModel):
     """Klute-Hannaford thick-wall model under the paper's isometric lock (``--model thickwall``).
 

@@ -1,7 +1,27 @@
-"""``python -m mkm``: the same as the ``mkm`` command."""
+"""The ``mkm`` command (``python -m mkm`` and the console script): :func:`run`.
 
+The entry point imports nothing heavy before it can handle a stop: a Ctrl-C while the command
+line is still importing ends with one line and status 130, never a traceback; once the command
+has returned (its run vented and recorded), a second Ctrl-C during the interpreter's shutdown
+cannot turn the status into a kill.
+"""
+
+import signal
 import sys
 
-from mkm.cli import main
 
-sys.exit(main())
+def run() -> None:
+    try:
+        from mkm.cli import main
+
+        code = main()
+    except KeyboardInterrupt:
+        print("mkm: interrupted", file=sys.stderr)
+        code = 130
+    if hasattr(signal, "SIGINT"):
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+    sys.exit(code)
+
+
+if __name__ == "__main__":
+    run()

@@ -4,8 +4,8 @@ tolerance.
 "Model no more than a scene needs", as a feature. The scene is the query: a sweep, a bench run,
 with every parameter of the muscle (``L0_mm``, ``theta0_deg``, the rubber ``C10_MPa``,
 ``C01_MPa``). ``auto`` bounds each candidate's error against the finest FE mesh (the paper's
-Equation 7: |F - F_fine| scaled by the largest force of the muscle's sweep) a posteriori, at
-those very points:
+Equation 7: the distance from the fine mesh's force scaled by the largest force of the
+muscle's sweep) a posteriori, at those very points:
 
 - the surrogate is the estimate of the reference there: its force ``R`` and its calibrated
   predictive standard deviation ``s``. Its own bound is ``K s`` (:data:`STD_FACTOR`, K = 3:

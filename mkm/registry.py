@@ -24,6 +24,7 @@ from mkm.auto import AutoModel
 from mkm.fem import ladder
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import C01, C10, L0, THETA0, Entry, Parameter
+from mkm.surrogate import kinds
 
 
 def _surrogate(kind: str | None = None, path: str | None = None,
@@ -47,15 +48,12 @@ def _auto(**params) -> ForceModel:
     return AutoModel(build=build_spec, **params)
 
 
-SURROGATE_KINDS_TEXT = ("best (default: muscle-gp), muscle-gp, physics, gp, mlp-paper or "
-                        "net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]")
-
 APP_ENTRIES: dict[str, Entry] = {
     "surrogate": Entry(
         "surrogate", _surrogate, "Surrogate",
         "scikit-learn surrogate trained on the FE design (or another FE dataset); refuses "
         "muscle parameters its training did not cover", "surrogate",
-        {"kind": Parameter(SURROGATE_KINDS_TEXT, str),
+        {"kind": Parameter(kinds.describe(), str),
          "path": Parameter("folder of a model saved by `mkm surrogate train`", str),
          "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01,
          "accept_mismatch": Parameter("true: load a saved model whose code, calibration or data "

@@ -306,9 +306,10 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
             if tolerance and first:
                 auto = (f'<td rowspan="{len(ordered)}">'
                         f"{esc(choice[0]) if choice else '—'}</td>")
-            rows.append(f"<tr>{run_cell}<td>{name}</td><td>{err}</td><td>{rmse}</td>"
-                        f"<td>{s['seconds_per_point']:.3g}</td>"
-                        f"<td>{s['valid_points']} / {s['points']}</td>{auto}</tr>")
+            rows.append(f'<tr>{run_cell}<td class="name">{name}</td><td class="num">{err}</td>'
+                        f'<td class="num">{rmse}</td>'
+                        f'<td class="num">{s["seconds_per_point"]:.3g}</td>'
+                        f'<td class="num">{s["valid_points"]} / {s["points"]}</td>{auto}</tr>')
     status = "".join(
         f'<tr><td><a href="#run-{r.k}">run {r.k}</a></td><td>{_status_html(r)}</td>'
         f"<td>{len(r.run.steps)} / {esc(_planned_steps(r.meta))}</td>"

@@ -23,7 +23,7 @@ from mkm.registry import entries
 
 def error_summary(reference_N, force_N, valid, err_pct) -> dict:
     """Over the valid points: how many, the largest |Err%|, the RMSE [N] and the largest
-    |reference - force| [N] (NaN where no point is valid)."""
+    absolute residual ``reference - force`` [N] (NaN where no point is valid)."""
     ok = np.asarray(valid, dtype=bool)
     residual = np.asarray(reference_N, dtype=float)[ok] - np.asarray(force_N, dtype=float)[ok]
     err = np.abs(np.asarray(err_pct, dtype=float)[ok])
@@ -103,7 +103,7 @@ def normalised_error(rows: pd.DataFrame, steps: pd.DataFrame) -> pd.DataFrame:
     ``pressure_U_bar`` of steps.csv, k = 2), ``c`` the model's force per bar (the slope of a
     straight line through its valid forces: the models are linear in pressure) so the pressure's
     uncertainty counts in newtons, ``U_model`` twice the prediction's ``force_u_N`` (0 when it
-    has none). |E_n| <= 1: the step and the model agree within their uncertainties. NaN for a
+    has none). ``|E_n| <= 1``: the step and the model agree within their uncertainties. NaN for a
     run recorded without a budget.
     """
     if "force_U_N" not in steps:
@@ -139,9 +139,9 @@ def summarise_run(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
 
 
 def consistency(scored: pd.DataFrame) -> dict:
-    """``consistent``: True when |E_n| <= 1 at every step with a valid force, False otherwise,
+    """``consistent``: True when ``|E_n| <= 1`` at every step with a valid force, False otherwise,
     None when no step has an E_n (no budget, no valid force); ``worst_E_n`` and ``worst_step``:
-    the step of largest |E_n|."""
+    the step of largest ``|E_n|``."""
     en = scored["E_n"].to_numpy(float) if "E_n" in scored else np.array([np.nan])
     if not np.isfinite(en).any():
         return {"consistent": None, "worst_E_n": np.nan, "worst_step": None}

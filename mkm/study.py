@@ -42,6 +42,7 @@ from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_versio
 from mkm.progress import progress_bar
 from mkm.registry import parse_spec
 from mkm.scoring import error_summary, pareto_front
+from mkm.surrogate import kinds as kind_registry
 
 STUDY_PRESSURES = tuple(np.round(np.arange(0.0, 2.5001, 0.25), 2))  # the paper's test sweep
 # name, D0 [mm], t0 [mm], eps, role. I-III: the paper's test muscles (section 3.3); H1-H8 a box
@@ -99,15 +100,13 @@ def physics_predictors() -> list[Predictor]:
 # The study's surrogates unless asked for more: the default kind, the physics ridge and the
 # paper's best net. The generic GP (about 2.5 min of training cold on two cores) and the paper's
 # 54 Table 2 nets (about 10 min) are dominated on the front; `mkm study --surrogates all` adds them.
-STUDY_SURROGATES = ("muscle-gp", "physics", "mlp-paper")
+STUDY_SURROGATES = kind_registry.study_default()
 
 
 def surrogate_kinds(text: str) -> tuple[str, ...]:
     """The kinds named by ``--surrogates``: a comma list of kinds, or ``all`` (every kind, the
     54 paper nets included); a one-line error naming an unknown kind."""
-    from mkm.surrogate.estimators import kind_names
-
-    known = kind_names(include_nets=True)
+    known = kind_registry.names(include_families=True)
     if text.strip() == "all":
         return tuple(known)
     kinds = tuple(k.strip() for k in text.split(",") if k.strip())
@@ -124,7 +123,7 @@ def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR, n_jobs: int 
     """The surrogate ``kinds`` trained on ``dataset`` (default: the shipped one); the default
     kind is the one ``auto`` may use. Kinds not yet in ``cache_dir`` are trained first,
     ``n_jobs`` at a time."""
-    from mkm.surrogate.estimators import BEST
+    BEST = kind_registry.BEST
     from mkm.surrogate.training_data import DEFAULT_DATASET
 
     dataset = dataset or DEFAULT_DATASET

@@ -141,7 +141,7 @@ def monte_carlo_ready(model, sample: dict[str, np.ndarray]) -> bool:
     """Whether ``model`` is a surrogate taking every input of ``sample`` with every draw in
     its training box."""
     inputs, box = getattr(model, "inputs", None), getattr(model, "box", None)
-    if not inputs or not box or not hasattr(model, "estimator"):
+    if not inputs or not box or not (hasattr(model, "predictor") or hasattr(model, "estimator")):
         return False
     for name, values in sample.items():
         if name not in inputs:
@@ -165,7 +165,10 @@ def surrogate_draws(model, pressure_bar, sample: dict[str, np.ndarray]) -> np.nd
         else:
             columns.append(np.tile(np.broadcast_to(sample[name], n), pressure.size))
     X = np.column_stack(columns)
-    return np.asarray(model.estimator.predict(X), dtype=float).reshape(pressure.size, n)
+    predictor = getattr(model, "predictor", None)  # the fitted arrays, without scikit-learn
+    force = predictor.predict(X, False) if predictor is not None else model.estimator.predict(X)
+    force = force[0] if isinstance(force, tuple) else force
+    return np.asarray(force, dtype=float).reshape(pressure.size, n)
 
 
 def _surrogate_spread(model, pressure: np.ndarray, sample: dict[str, np.ndarray]) -> np.ndarray:

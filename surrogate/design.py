@@ -4,8 +4,8 @@ A grid spends the FE budget on corners and planes (27 muscles of the paper's 3 x
 only three values of each input); a space-filling design gives every muscle new values of every
 input. :func:`space_filling` places ``n`` muscles in the box :data:`BOX` of the seven muscle
 parameters (geometry, length, braid angle, rubber): 16 corners of a 2^(7-3) fractional factorial
-(every pair of factors balanced, each corner of the box's main effects seen), then a Latin
-hypercube (``scipy.stats.qmc``, centred-discrepancy optimised) for the rest. Each muscle is one
+[1]_ (every pair of factors balanced, each corner of the box's main effects seen), then a Latin
+hypercube [2]_ (``scipy.stats.qmc``, centred-discrepancy optimised) for the rest. Each muscle is one
 FE sweep (:data:`DESIGN_PRESSURES`), computed with the dataset builder's cache and workers
 (:func:`mkm.fem.dataset.build.run_jobs`). :func:`random_muscles` draws fresh muscles for the
 off-grid evaluation the same way.
@@ -21,9 +21,7 @@ References
 
 from __future__ import annotations
 
-import json
 import sys
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -31,7 +29,7 @@ from scipy.stats import qmc
 
 from mkm.fem.dataset.build import Job, run_jobs
 from mkm.fem.materials import SILASTIC_S
-from mkm.fem.records import package_file, provenance, write_atomic
+from mkm.fem.records import package_file, provenance, write_csv_with_sidecar
 
 #: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).
 DESIGN_DATASET = package_file("mkm.surrogate", "data", "mkm_design.csv")
@@ -139,7 +137,7 @@ def fe_sweeps(muscles: pd.DataFrame, mesh: str = "fine", pressures=DESIGN_PRESSU
 
 def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
                      candidates: int = 2000) -> pd.DataFrame:
-    """``n_muscles`` muscles where a fitted :class:`~mkm.surrogate.estimators.MuscleThresholdGP` is
+    """``n_muscles`` muscles where a fitted :class:`~mkm.surrogate.muscle_gp.MuscleThresholdGP` is
     least sure of the force at the top of the box's pressure range, chosen greedily among
     ``candidates`` random muscles: each pick conditions both processes on it (their posterior
     covariance, rank-one update with the fitted noise), so picks spread out instead of piling
@@ -161,12 +159,13 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
     reach = np.maximum(P_top - Pstar, 1e-3)
     weights = [np.where(A > 0, gain_A / np.maximum(A, 1e-9), 0.0), gain_P / reach]
     covariances, noises = [], []
-    for gp in (estimator.slope_gp_, estimator.threshold_gp_):
+    for gp, post in ((estimator.slope_gp_, estimator.slope_posterior_),
+                     (estimator.threshold_gp_, estimator.threshold_posterior_)):
         kernel = gp.kernel_.k1  # without the white noise: covariance between muscles
         K_star = kernel(zs, gp.X_train_)
         V = np.linalg.solve(gp.L_, K_star.T)
-        covariances.append((kernel(zs) - V.T @ V) * gp._y_train_std ** 2)
-        noises.append(gp.kernel_.k2.noise_level * gp._y_train_std ** 2)
+        covariances.append((kernel(zs) - V.T @ V) * post["y_std"] ** 2)
+        noises.append(gp.kernel_.k2.noise_level * post["y_std"] ** 2)
     chosen = []
     for _ in range(int(n_muscles)):
         score = calibrated * sum(w**2 * np.diag(C)
@@ -196,8 +195,8 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
     frame, done = fe_sweeps(muscles, mesh, workers=workers, cache_dir=cache_dir,
                             progress=progress, desc=f"FE design ({mesh} mesh)")
     if adaptive:
-        from mkm.surrogate.estimators import make_estimator
-        from mkm.surrogate.train import quiet_fits
+        from mkm.surrogate.kinds import make_estimator
+        from mkm.surrogate.quiet import quiet_fits
         from mkm.surrogate.training_data import ALL_INPUTS
 
         used = frame[frame["converged"]]
@@ -223,9 +222,7 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
             "fe_budget_muscles": int(n_muscles + adaptive), "jobs_computed": done["computed"],
             "jobs_from_cache": done["cached"], "workers": done["workers"],
             "muscles_with_failed_points": [int(m) for m in failed]}
-    out = Path(out)
-    write_atomic(out, frame.to_csv(index=False, lineterminator="\n"))
-    write_atomic(out.with_suffix(".json"), json.dumps(info, indent=2, default=str) + "\n")
+    write_csv_with_sidecar(out, frame.to_csv(index=False, lineterminator="\n"), info)
     return frame, info
 
 
@@ -242,7 +239,5 @@ def build_random_set(n_muscles: int, seeds, out, mesh: str = "fine",
             "seeds": [int(s) for s in seeds], "muscles_per_seed": int(n_muscles),
             "box": {k: list(v) for k, v in BOX.items()}, "pressure_bar": list(EVAL_PRESSURES),
             "model": "axisym", "mesh": mesh, "model_version": done["model_version"]}
-    out = Path(out)
-    write_atomic(out, frame.to_csv(index=False, lineterminator="\n"))
-    write_atomic(out.with_suffix(".json"), json.dumps(info, indent=2, default=str) + "\n")
+    write_csv_with_sidecar(out, frame.to_csv(index=False, lineterminator="\n"), info)
     return frame, info

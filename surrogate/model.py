@@ -10,19 +10,15 @@ held: asking for another value is refused with a ``ValueError`` naming both, nev
 from __future__ import annotations
 
 import warnings
+from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
-from sklearn import config_context
-from sklearn.gaussian_process import GaussianProcessRegressor
-from sklearn.pipeline import Pipeline
-from sklearn.preprocessing import FunctionTransformer
 from threadpoolctl import ThreadpoolController
 
 from mkm.fem.interface import INPUTS, Domain, ForceModel
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import L0_MM
-from mkm.surrogate.estimators import MuscleThresholdGP, ThresholdLinearRegressor
 from mkm.surrogate.training_data import PARAMETERS
 
 # Relative slack of "the same value" for a recorded parameter (a CSV round trip keeps ~1e-15).
@@ -31,6 +27,30 @@ SAME_VALUE_RTOL = 1e-9
 
 class OutOfDomainWarning(UserWarning):
     """A surrogate was asked for points outside the box it was trained on."""
+
+
+@dataclass(frozen=True)
+class ErrorMargin:
+    """What training measured of a surrogate's errors on muscles it did not see.
+
+    Attributes
+    ----------
+    worst_abs_error_N : float or None
+        Largest absolute error [N] recorded at training: the worst split of the muscle-held-out
+        refits and the worst test muscle; None when neither was measured.
+    within_1std, within_2std : float or None
+        Median over the muscle-held-out splits of the fraction of held-out points within 1 and
+        2 predictive standard deviations [fraction]; None for a surrogate without a std or
+        without splits.
+    measured_on : str
+        Where the figures come from, for a reader (``"10 muscle-held-out splits, 5 test
+        muscles"``); empty when nothing was measured.
+    """
+
+    worst_abs_error_N: float | None
+    within_1std: float | None
+    within_2std: float | None
+    measured_on: str
 
 
 def default_parameters() -> dict[str, float]:
@@ -52,10 +72,11 @@ class SurrogateForceModel(ForceModel):
 
     Parameters
     ----------
-    estimator : fitted scikit-learn regressor
-        Of ``X`` with the columns ``inputs``.
+    estimator : fitted scikit-learn regressor or None
+        Of ``X`` with the columns ``inputs``; None: ``load_estimator`` gives it on first use
+        of :attr:`estimator`.
     kind : str
-        The estimator's kind (``mkm.surrogate.estimators.make_estimator``).
+        The estimator's kind (:mod:`mkm.surrogate.kinds`).
     inputs : sequence of str
         ``pressure_bar, D0_mm, t0_mm, eps`` and the muscle parameters the estimator takes.
     fixed : dict
@@ -69,13 +90,23 @@ class SurrogateForceModel(ForceModel):
         :func:`default_parameters` (the braid angle of the calibration in effect). A value
         other than the recorded one of a parameter the estimator does not take raises
         ``ValueError`` (here for a given value, at ``predict`` for a default).
+    predictor : object, optional
+        Predicts from the estimator's fitted arrays without scikit-learn (``predict(X,
+        return_std)``, ``has_std``; see :class:`mkm.surrogate.kinds.Kind`): predictions go
+        through it, the same numbers as the estimator's.
+    load_estimator : callable, optional
+        ``() -> estimator``, when ``estimator`` is None.
     """
 
     def __init__(self, estimator, kind: str, inputs, fixed: dict, box: dict,
                  metadata: dict | None = None, L0_mm: float | None = None,
                  theta0_deg: float | None = None, C10_MPa: float | None = None,
-                 C01_MPa: float | None = None):
-        self.estimator = estimator
+                 C01_MPa: float | None = None, *, predictor=None, load_estimator=None):
+        if estimator is None and load_estimator is None:
+            raise ValueError("SurrogateForceModel needs an estimator or load_estimator")
+        self._estimator = estimator
+        self._load_estimator = load_estimator
+        self.predictor = predictor
         self.kind = kind
         self.inputs = tuple(inputs)
         self.fixed = dict(fixed)
@@ -86,7 +117,15 @@ class SurrogateForceModel(ForceModel):
         self._given = {"L0_mm": L0_mm, "theta0_deg": theta0_deg, "C10_MPa": C10_MPa,
                        "C01_MPa": C01_MPa}
         self._resolve({k: v for k, v in self._given.items() if v is not None})  # refuse now
-        self._fast_predict = _validated_predictor(estimator)
+        self._fast_predict = (predictor.predict if predictor is not None
+                              else _validated_predictor(self.estimator))
+
+    @property
+    def estimator(self):
+        """The fitted estimator (read from its model file on first use if not given)."""
+        if self._estimator is None:
+            self._estimator = self._load_estimator()
+        return self._estimator
 
     @property
     def parameters(self) -> dict[str, float]:
@@ -122,8 +161,9 @@ class SurrogateForceModel(ForceModel):
             raise ValueError(f"{self.name} takes no parameter {', '.join(unknown)}: expected "
                              f"some of {', '.join(PARAMETERS)}")
         merged = {**self._given, **{k: v for k, v in parameters.items() if v is not None}}
-        return SurrogateForceModel(self.estimator, self.kind, self.inputs, self.fixed,
-                                   self.box, self.metadata, **merged)
+        return SurrogateForceModel(self._estimator, self.kind, self.inputs, self.fixed,
+                                   self.box, self.metadata, **merged, predictor=self.predictor,
+                                   load_estimator=self._load_estimator)
 
     def params(self):
         dataset = self.metadata.get("dataset", {})
@@ -134,11 +174,40 @@ class SurrogateForceModel(ForceModel):
         return {"kind": self.kind, **parameters, "dataset_sha256": dataset.get("sha256"),
                 "inputs": list(self.inputs), "box": {k: list(v) for k, v in self.box.items()}}
 
+    def error_margin(self) -> ErrorMargin:
+        """The errors on muscles held out of training that training recorded (its metadata's
+        ``metrics``: the muscle-held-out splits and the test muscles)."""
+        metrics = _mapping(self.metadata.get("metrics"))
+        held_out = _mapping(metrics.get("muscle_held_out"))
+        worst, sources = [], []
+        split_worst = _number(_mapping(held_out.get("max_abs_test_N")).get("max"))
+        if split_worst is not None:
+            worst.append(split_worst)
+            sources.append(f"{_mapping(held_out['max_abs_test_N']).get('n', 'its')} "
+                           "muscle-held-out splits")
+        tests = metrics.get("test_muscles")  # a dict says why they were not evaluated
+        errors = [e for e in (_number(_mapping(m).get("max_abs_error_N"))
+                              for m in (tests if isinstance(tests, list) else [])) if e is not None]
+        if errors:
+            worst.append(max(errors))
+            sources.append(f"{len(errors)} test muscles")
+        return ErrorMargin(max(worst) if worst else None,
+                           _number(_mapping(held_out.get("within_1std")).get("median")),
+                           _number(_mapping(held_out.get("within_2std")).get("median")),
+                           ", ".join(sources))
+
     @property
     def has_std(self) -> bool:
         """True when the estimator gives a predictive standard deviation."""
+        if self.predictor is not None:
+            return self.predictor.has_std
+        from sklearn.gaussian_process import GaussianProcessRegressor
+        from sklearn.pipeline import Pipeline
+
+        from mkm.surrogate import muscle_gp
+
         final = self.estimator[-1] if isinstance(self.estimator, Pipeline) else self.estimator
-        return isinstance(final, GaussianProcessRegressor | MuscleThresholdGP)
+        return isinstance(final, GaussianProcessRegressor | muscle_gp.MuscleThresholdGP)
 
     def parameters_outside(self, parameters=None) -> list[str]:
         """The muscle parameters outside the training box, as ``name=value not in [lo, hi]``."""
@@ -171,6 +240,8 @@ class SurrogateForceModel(ForceModel):
         if self._fast_predict is not None:  # numpy on a few points: no thread pool wakes up
             result = self._fast_predict(X, self.has_std)
         else:
+            from sklearn import config_context
+
             # validate_inputs has checked the inputs; with matrices this small BLAS threads
             # only contend (a GP's 33 points took 8 ms threaded on a busy machine, 1.2 on one)
             with config_context(assume_finite=True), _blas().limit(limits=1):
@@ -193,16 +264,34 @@ def _validated_predictor(estimator):
     """``(X, return_std) -> force[, std]`` without scikit-learn's per-call checks (which cost
     more than the arithmetic) for the threshold-linear estimators; None for the others.
     ``ForceModel.predict`` has validated the inputs already."""
-    if isinstance(estimator, MuscleThresholdGP):
+    from sklearn.pipeline import Pipeline
+    from sklearn.preprocessing import FunctionTransformer
+
+    # modules, not names, imported: the code version reads this file, and resolving a name
+    # would load the module (and scikit-learn) where only the predictor is needed
+    from mkm.surrogate import muscle_gp, threshold_linear
+
+    if isinstance(estimator, muscle_gp.MuscleThresholdGP):
         return estimator.predict_validated
     if not (isinstance(estimator, Pipeline) and len(estimator.steps) == 2):
         return None
     features, final = estimator[0], estimator[-1]
-    if not (isinstance(features, FunctionTransformer) and isinstance(final,
-                                                                    ThresholdLinearRegressor)):
+    if not (isinstance(features, FunctionTransformer)
+            and isinstance(final, threshold_linear.ThresholdLinearRegressor)):
         return None
     kw_args = features.kw_args or {}
     return lambda X, _std=False: final.predict_validated(features.func(X, **kw_args))
+
+
+def _mapping(value) -> dict:
+    return value if isinstance(value, dict) else {}
+
+
+def _number(value) -> float | None:
+    """``value`` as a float if it is a finite number, else None (metrics a model does not have)."""
+    if isinstance(value, int | float) and not isinstance(value, bool) and np.isfinite(value):
+        return float(value)
+    return None
 
 
 def _describe(domain: Domain) -> str:

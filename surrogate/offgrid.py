@@ -18,10 +18,11 @@ import pandas as pd
 
 from mkm.fem.paper import equation7_err_pct
 from mkm.fem.records import provenance
+from mkm.surrogate.coverage import coverage
 from mkm.surrogate.design import EVAL_PRESSURES, MUSCLE_PARAMETERS, fe_sweeps, random_muscles
 from mkm.surrogate.model import OutOfDomainWarning, SurrogateForceModel
 from mkm.surrogate.training_data import PARAMETERS
-from mkm.surrogate.validation import coverage, rmse
+from mkm.surrogate.validation import rmse
 
 OUTSIDE_MARGIN = 0.05  # a point outside the box: 5 % of the range beyond one of its ends
 

@@ -1,7 +1,7 @@
 """The paper's 27-network study (its Table 2), repeated over seeds, and the variant that fixes it.
 
 Each of the 27 nets (1/2/3 layers x 25/50/100 neurons x ReLU/tanh/sigmoid) is trained as
-MATLAB's Regression Learner trains ``fitrnet`` (see ``mkm.surrogate.estimators.paper_net``) on the
+MATLAB's Regression Learner trains ``fitrnet`` (see ``mkm.surrogate.paper_nets.paper_net``) on the
 same 80/20 splits (one per seed); on each split: 5-fold cross-validated RMSE on the training
 part (Regression Learner's "validation") and the RMSE of the refit on the held-out 20 %. The
 variant ``standardised`` also standardises the response: with the force left in N, tanh and
@@ -20,7 +20,7 @@ from joblib import Parallel, delayed
 
 from mkm.fem.paper import TABLE2_CSV
 from mkm.fem.records import provenance
-from mkm.surrogate.estimators import PAPER_NETS, paper_net
+from mkm.surrogate.paper_nets import PAPER_NETS, paper_net
 from mkm.surrogate.training_data import PAPER_DATASET, load_training_data
 from mkm.surrogate.validation import split_scores
 

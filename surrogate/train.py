@@ -11,37 +11,23 @@ from __future__ import annotations
 import hashlib
 import json
 import warnings
-from contextlib import contextmanager, nullcontext
+from contextlib import nullcontext
 from pathlib import Path
 
-from sklearn.exceptions import ConvergenceWarning
 from threadpoolctl import threadpool_limits
 
 from mkm.fem.records import file_sha256, provenance, user_cache
-from mkm.surrogate.estimators import BEST, make_estimator
+from mkm.surrogate.coverage import coverage
+from mkm.surrogate.kinds import BEST, make_estimator
 from mkm.surrogate.model import SurrogateForceModel
+from mkm.surrogate.quiet import quiet_fits
 from mkm.surrogate.training_data import DEFAULT_DATASET, STD_CALIBRATION_SET, load_training_data
 from mkm.surrogate.validation import (
     MUSCLE_SPLITS,
-    coverage,
     fit_params,
     muscle_split_scores,
     predict_with_std,
 )
-
-
-@contextmanager
-def quiet_fits():
-    """Silence the warnings every fit here would repeat, expected and not worth a line each."""
-    with warnings.catch_warnings():
-        # A Gaussian process length scale at its bound means an input it finds irrelevant, a
-        # noise level at its bound noise-free FE data.
-        warnings.filterwarnings("ignore", message="The optimal value found for dimension",
-                                category=ConvergenceWarning)
-        # fitrnet, which the nets copy, also stops at its IterationLimit without a warning
-        warnings.filterwarnings("ignore", message="lbfgs failed to converge",
-                                category=ConvergenceWarning)
-        yield
 
 
 def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, splits: int = MUSCLE_SPLITS,
@@ -127,7 +113,7 @@ def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SP
     from mkm.surrogate.io import code_version
 
     parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
-             "versions": provenance()["versions"], "code": code_version()}
+             "versions": provenance()["versions"], "code": code_version(kind)}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
 

@@ -32,7 +32,7 @@ MUSCLE_COLUMNS = ALL_INPUTS[1:]  # what tells one muscle (one FE sweep) from ano
 DEFAULT_DATASET = package_file("mkm.surrogate", "data", "mkm_design.csv")
 PAPER_DATASET = package_file("mkm.surrogate", "data", "mkm_dataset.csv")
 #: Random muscles (seeds recorded in its sidecar) whose FE sweeps set the scale of the default
-#: surrogate's std (:meth:`mkm.surrogate.estimators.MuscleThresholdGP.calibrate_std`): drawn as the
+#: surrogate's std (:meth:`mkm.surrogate.muscle_gp.MuscleThresholdGP.calibrate_std`): drawn as the
 #: off-grid evaluation draws, never used to fit the forces.
 STD_CALIBRATION_SET = package_file("mkm.surrogate", "data", "mkm_std_calibration.csv")
 

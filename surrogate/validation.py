@@ -16,12 +16,12 @@ import inspect
 import time
 
 import numpy as np
-from sklearn.base import clone
-from sklearn.metrics import max_error, root_mean_squared_error
-from sklearn.model_selection import GroupShuffleSplit, KFold, cross_val_predict, train_test_split
 
 from mkm.fem.paper import equation7_err_pct
+from mkm.surrogate.coverage import coverage
 
+# scikit-learn is imported by the functions that use it: loading a saved surrogate reads
+# MUSCLE_SPLITS (the cache's key) and must not wait for scikit-learn to load.
 TEST_SIZE = 0.2  # the paper's 80/20 split
 CV_FOLDS = 5  # Regression Learner's default cross-validation
 MUSCLE_SPLITS = 10  # muscle-held-out splits of a trained surrogate's metrics
@@ -29,6 +29,8 @@ MUSCLE_SPLITS = 10  # muscle-held-out splits of a trained surrogate's metrics
 
 def rmse(a, b) -> float:
     """Root mean squared error (the paper's Equation 6) [unit of the inputs]; broadcast."""
+    from sklearn.metrics import root_mean_squared_error
+
     a, b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
     return float(root_mean_squared_error(a.ravel(), b.ravel()))
 
@@ -51,16 +53,6 @@ def predict_with_std(estimator, X):
     return force, std
 
 
-def coverage(error, std, k: float) -> float:
-    """Fraction of points with ``|error| <= k std`` among those where the model or the FE has
-    a force (points both say are exactly zero, below the threshold, say nothing of the std)."""
-    error, std = np.abs(np.asarray(error)), np.asarray(std)
-    informative = (error > 0) | (std > 0)
-    if not informative.any():
-        return float("nan")
-    return float(np.mean(error[informative] <= k * std[informative]))
-
-
 def worst_err_pct(y_true, y_pred, groups) -> float:
     """Largest |Err%| (Equation 7, per muscle sweep) over the muscles in ``groups``."""
     worst = 0.0
@@ -74,6 +66,8 @@ def worst_err_pct(y_true, y_pred, groups) -> float:
 
 def held_out_scores(y_true, y_pred, std, groups) -> dict:
     """Scores of predictions on held-out muscles [N, %]."""
+    from sklearn.metrics import max_error
+
     scores = {"rmse_test_N": rmse(y_true, y_pred), "max_abs_test_N": float(max_error(y_true,
                                                                                    y_pred)),
               "worst_err_pct": worst_err_pct(y_true, y_pred, groups)}
@@ -85,6 +79,8 @@ def held_out_scores(y_true, y_pred, std, groups) -> dict:
 
 def muscle_splits(groups, n_splits: int = MUSCLE_SPLITS, seed: int = 0):
     """Train/test row indices of ``n_splits`` splits holding out 20 % of the muscles each."""
+    from sklearn.model_selection import GroupShuffleSplit
+
     splitter = GroupShuffleSplit(n_splits=n_splits, test_size=TEST_SIZE, random_state=seed)
     return list(splitter.split(np.zeros(len(groups)), groups=groups))
 
@@ -101,6 +97,8 @@ def muscle_split_scores(estimator, X, y, groups, threshold_pressure_bar=None,
     ``post_fit``: called with each refit model (the std calibration of the trained model);
     ``progress``: called after each split (a progress bar's ``update``).
     """
+    from sklearn.base import clone
+
     scored = np.ones(len(y), dtype=bool) if scored is None else np.asarray(scored, dtype=bool)
     rows, pooled = [], []
     for k, (train, test) in enumerate(muscle_splits(groups, n_splits, seed)):
@@ -140,6 +138,10 @@ def split_scores(estimator, X, y, seed: int, cv_folds: int = CV_FOLDS) -> dict:
     (Regression Learner's "validation"), skipped when ``cv_folds`` is 0;
     ``rmse_test_N`` and ``max_abs_test_N``: the refit on the held-out 20 %.
     """
+    from sklearn.base import clone
+    from sklearn.metrics import max_error
+    from sklearn.model_selection import KFold, cross_val_predict, train_test_split
+
     X_train, X_test, y_train, y_test = train_test_split(X, y, test_size=TEST_SIZE,
                                                         random_state=seed)
     scores = {"seed": seed}

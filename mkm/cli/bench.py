@@ -134,12 +134,15 @@ def register(subparsers) -> None:
 
     rep = subparsers.add_parser(
         "reprocess", help="recompute a run's forces from its raw volts with a new calibration",
-        description="Write a new run folder with every force recomputed from the raw load-cell "
-                    "volts with the [loadcell] of NEW.toml (tare and hold averages again), with "
-                    "provenance (reprocessed_from in run.json).",
+        description="Write a new run folder (its name ends in -reprocessed) with every force "
+                    "recomputed from the raw load-cell volts with the [loadcell] of NEW.toml "
+                    "(tare and hold averages again), with provenance (reprocessed_from in "
+                    "run.json). NEW.toml may hold [loadcell] only: its sections replace the "
+                    "run's own configuration's.",
         epilog="example: mkm reprocess mkm-out/runs/RUN --config new.toml --out mkm-out/runs")
     rep.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
-    rep.add_argument("--config", required=True, help="bench TOML with the new [loadcell]")
+    rep.add_argument("--config", required=True,
+                     help="TOML with the new [loadcell] (and any other section to replace)")
     rep.add_argument("--out", help="folder that receives the new run folder (default: beside "
                      "RUN_DIR)")
     rep.set_defaults(func=_reprocess)
@@ -260,9 +263,8 @@ def _vent(args) -> int:
 
 
 def _reprocess(args) -> int:
-    from mkm.bench.config import load_config
-    from mkm.bench.reprocess import reprocess
+    from mkm.bench.reprocess import overlay_config, reprocess
 
-    path = reprocess(args.run_dir, load_config(args.config), args.out)
+    path = reprocess(args.run_dir, overlay_config(args.run_dir, args.config), args.out)
     print(path)
     return 0

@@ -17,6 +17,7 @@ from mkm.cli.common import (
 from mkm.fem.ranges import parse_number
 from mkm.paths import default_cache, default_out
 from mkm.progress import summary_line
+from mkm.surrogate import kinds
 
 
 def register(subparsers) -> None:
@@ -50,10 +51,11 @@ def register(subparsers) -> None:
         "train", help="fit a surrogate on the FE dataset and save it",
         description="Fit a surrogate kind on an FE dataset (errors over repeated splits that "
         "hold out whole muscles) and save it as a model folder that --model / "
-        "surrogate:path=DIR accept (JSON and skops arrays: loading it runs no code).",
+        "surrogate:path=DIR accept (JSON and skops arrays: loading it runs no code). The "
+        "kinds: " + "; ".join(kinds.describe_each()) + ".",
         epilog="example: mkm surrogate train --kind gp --out mkm-out/models/gp")
     _dataset_argument(train)
-    train.add_argument("--kind", default="best", help=_KINDS_HELP)
+    train.add_argument("--kind", default="best", help=kinds.describe())
     train.add_argument("--splits", type=int, default=10,
                        help="muscle-held-out splits for the metrics (default 10; 0: none)")
     train.add_argument("--out", help="model folder (default mkm-out/models/<kind>)")
@@ -166,10 +168,6 @@ def register(subparsers) -> None:
                              "a terminal)")
         command.set_defaults(func=with_calibration(command.get_default("func")))
     _accept_argument(predict)
-
-
-_KINDS_HELP = ("best (muscle-gp), muscle-gp, physics, gp, mlp-paper or "
-               "net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]")
 
 
 def _parameter_arguments(parser) -> None:

@@ -71,19 +71,21 @@ def write_design(result: DesignResult, out: Path) -> Path:
                                                              lineterminator="\n"))
     figures = []
     best = result.chosen if result.chosen is not None else result.designs.iloc[0]
-    data = contour_data(result, best)
-    for k, req in enumerate(s.requirements, start=1):
-        fig = contour_figure(result, k - 1, best, data)
-        figures.append((save_figure(fig, out / f"requirement{k}_contours.png"),
-                        f"Requirement {k} ({esc(req.label)}): surrogate force over D0 x t0 at "
-                        f"{req.pressure_bar:g} bar and eps = {req.eps:g} (L0 = "
-                        f"{best['L0_mm']:.4g} mm, theta0 = {best['theta0_deg']:.4g} deg, "
-                        f"{esc(best['rubber'])}); black line: the required force, dashed: "
-                        "plus the surrogate margin; hatched: feasible for every requirement "
-                        "and the housing (dotted: its outer diameter limit); dashed box: the "
-                        "constraints (the search's feasible set is the hatched region inside "
-                        "it); markers: the verified designs (white: the FE confirms), star: "
-                        "the chosen design."))
+    # an FE search evaluated its coarse grid only: no model to draw over the whole box
+    if not s.fe_search:
+        data = contour_data(result, best)
+        for k, req in enumerate(s.requirements, start=1):
+            fig = contour_figure(result, k - 1, best, data)
+            figures.append((save_figure(fig, out / f"requirement{k}_contours.png"),
+                            f"Requirement {k} ({esc(req.label)}): surrogate force over D0 x t0 at "
+                            f"{req.pressure_bar:g} bar and eps = {req.eps:g} (L0 = "
+                            f"{best['L0_mm']:.4g} mm, theta0 = {best['theta0_deg']:.4g} deg, "
+                            f"{esc(best['rubber'])}); black line: the required force, dashed: "
+                            "plus the surrogate margin; hatched: feasible for every requirement "
+                            "and the housing (dotted: its outer diameter limit); dashed box: the "
+                            "constraints (the search's feasible set is the hatched region inside "
+                            "it); markers: the verified designs (white: the FE confirms), star: "
+                            "the chosen design."))
     fig = curves_figure(result)
     figures.append((save_figure(fig, out / "fe_curves.png"),
                     "FE force against pressure of the verified designs (axisym, "

@@ -54,8 +54,10 @@ class DesignResult:
         s = self.search
         cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
         ok = int(self.designs["meets_all"].sum())
-        text = (f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
-                f"{int(s.candidates['feasible'].sum())} feasible by the surrogate; "
+        text = (f"{s.fe_search}; " if s.fe_search else "") + (
+                f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
+                f"{int(s.candidates['feasible'].sum())} feasible by the "
+                f"{'FE search' if s.fe_search else 'surrogate'}; "
                 f"{len(self.designs)} verified by the FE (axisym, {self.mesh} mesh) in "
                 f"{self.fe_seconds:.1f} s{cached}, {ok} meet{'s' if ok == 1 else ''} every "
                 "requirement")
@@ -183,6 +185,7 @@ def design_record(result: DesignResult) -> dict:
             "surrogate_uncertainty": s.uncertainty,
             "search": {"candidates": len(s.candidates),
                        "feasible": int(s.candidates["feasible"].sum()),
+                       "searcher": (f"FE ({s.fe_search})" if s.fe_search else "surrogate"),
                        "seconds": s.seconds,
                        "resolution": {"coarse_D0_mm": COARSE_STEPS[0],
                                       "coarse_t0_mm": COARSE_STEPS[1], "D0_mm": D0_STEP_MM,

@@ -39,6 +39,16 @@ MIN_SEPARATION = 0.05
 STD_FACTOR, RECORDED_ERROR_FACTOR, FALLBACK_RELATIVE_MARGIN = 3.0, 2.0, 0.05
 
 
+#: Where the surrogate was not trained (a requirement above its pressures or outside its eps,
+#: a box beyond its geometry or muscle parameters), the FE model itself searches: on its coarse
+#: mesh (a few tenths of a second a sweep), a coarser grid, no refinement, and the requirements'
+#: margin of :data:`FALLBACK_RELATIVE_MARGIN`; the verification then solves the converged mesh.
+FE_SEARCH_BOX = {"D0_mm": (10.0, 60.0), "t0_mm": (1.0, 5.0)}
+FE_SEARCH_MAX_PRESSURE_BAR = 6.0
+FE_SEARCH_STEPS = (2.0, 0.5)
+FE_SEARCH_MESH = "coarse"
+
+
 # --- physics of the housing and the lock --------------------------------------------------------
 
 
@@ -62,29 +72,21 @@ def surrogate_uncertainty(model: ForceModel, prediction, force_N: float) -> tupl
     ``FALLBACK_RELATIVE_MARGIN`` of the required force.
     """
     shape = np.shape(prediction.force_N)
+    margin = model.error_margin() if hasattr(model, "error_margin") else None
     if "force_std_N" in prediction.extras:
-        coverage = ((getattr(model, "metadata", None) or {}).get("metrics") or {}).get(
-            "muscle_held_out", {}).get("within_2std", {}).get("median")
-        told = (f"; held-out muscles within 2 std: {100 * coverage:.0f} %"
-                if coverage is not None else "")
+        covered = margin.within_2std if margin is not None else None
+        told = (f"; held-out muscles within 2 std: {100 * covered:.0f} %"
+                if covered is not None else "")
         return (STD_FACTOR * np.asarray(prediction.extras["force_std_N"], dtype=float),
                 f"{STD_FACTOR:g} x the surrogate's predictive standard deviation{told}")
-    metrics = (getattr(model, "metadata", None) or {}).get("metrics") or {}
-    recorded = []
-    for table in (metrics, metrics.get("muscle_held_out") or {}):  # per split / per muscle
-        if isinstance(table.get("max_abs_test_N"), dict):
-            recorded.append(float(table["max_abs_test_N"]["max"]))
-    tests = metrics.get("test_muscles")
-    if isinstance(tests, list):  # a dict says why they were not evaluated
-        recorded += [float(m["max_abs_error_N"]) for m in tests if "max_abs_error_N" in m]
-    if recorded:
-        worst = max(recorded)
+    if margin is not None and margin.worst_abs_error_N is not None:
+        worst = margin.worst_abs_error_N
         return (np.full(shape, RECORDED_ERROR_FACTOR * worst),
                 f"{RECORDED_ERROR_FACTOR:g} x the largest held-out error recorded at training "
-                f"({worst:.3g} N)")
+                f"({worst:.3g} N, {margin.measured_on})")
     return (np.full(shape, FALLBACK_RELATIVE_MARGIN * force_N),
-            f"{100 * FALLBACK_RELATIVE_MARGIN:g} % of the required force (the surrogate records "
-            "no error)")
+            f"{100 * FALLBACK_RELATIVE_MARGIN:g} % of the required force (the searching model "
+            "records no error)")
 
 
 # --- the search ---------------------------------------------------------------------------------
@@ -102,6 +104,8 @@ class Search:
     uncertainty: str
     seconds: float
     models: dict = field(default_factory=dict)  # (L0, theta0, rubber) -> surrogate
+    #: why the FE model searched instead of the surrogate ("" when the surrogate did)
+    fe_search: str = ""
 
     @property
     def feasible(self) -> pd.DataFrame:
@@ -204,25 +208,39 @@ def search(requirements, constraints: Constraints | dict | None = None,
     domain = base.domain
     at = _predicts_at(base)
     theta0_default = float(calibrated("axisym")["theta0_deg"])  # the FE model's, as verified
-    box = {"D0_mm": constraints.D0_mm or tuple(domain.D0_mm),
-           "t0_mm": constraints.t0_mm or tuple(domain.t0_mm),
+    parameter_box = getattr(base, "box", {})
+    outside = _outside_surrogate(requirements, constraints, domain, parameter_box)
+    default_box = FE_SEARCH_BOX if outside else {"D0_mm": tuple(domain.D0_mm),
+                                                 "t0_mm": tuple(domain.t0_mm)}
+    box = {"D0_mm": constraints.D0_mm or default_box["D0_mm"],
+           "t0_mm": constraints.t0_mm or default_box["t0_mm"],
            "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
            "theta0_deg": constraints.theta0_deg or (theta0_default,) * 2}
-    _check_conflicts(requirements, constraints, box, domain, getattr(base, "box", {}))
+    _check_conflicts(requirements, constraints, box, bool(outside))
     P_work = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
-    models = {(float(L0), float(theta0), rubber): _surrogate_for(spec, base, L0, theta0, rubber)
-              for L0 in _axis(box["L0_mm"]) for theta0 in _axis(box["theta0_deg"])
-              for rubber in constraints.rubber}
+    families = [(float(L0), float(theta0), rubber) for L0 in _axis(box["L0_mm"])
+                for theta0 in _axis(box["theta0_deg"]) for rubber in constraints.rubber]
+    if outside:
+        from mkm.design.verify import fe_model
+
+        models = {f: fe_model(FE_SEARCH_MESH, *f) for f in families}
+        steps, refine = FE_SEARCH_STEPS, False
+        fe_search = (f"outside the surrogate's training box ({'; '.join(outside)}): the FE "
+                     f"model ({FE_SEARCH_MESH} mesh) searched instead, on a "
+                     f"{steps[0]:g} x {steps[1]:g} mm grid of D0 x t0 (slower and coarser)")
+    else:
+        models = {f: _surrogate_for(spec, base, *f) for f in families}
+        steps, refine, fe_search = COARSE_STEPS, True, ""
 
     start = time.perf_counter()  # the search proper: the surrogates are loaded once
     evaluate = _Evaluator(models, requirements, P_work, constraints.max_outer_diameter_mm,
                           tolerances, probability)
-    D0c = _axis(box["D0_mm"], count=_coarse_count(box["D0_mm"], COARSE_STEPS[0]))
-    t0c = _axis(box["t0_mm"], count=_coarse_count(box["t0_mm"], COARSE_STEPS[1]))
-    D0, t0 = (a.ravel() for a in np.meshgrid(D0c, t0c, indexing="ij"))
+    D0c = _axis(box["D0_mm"], count=_coarse_count(box["D0_mm"], steps[0]))
+    t0c = _axis(box["t0_mm"], count=_coarse_count(box["t0_mm"], steps[1]))
+    D0, t0 = _walls(*np.meshgrid(D0c, t0c, indexing="ij"))
     coarse = pd.concat([evaluate(family, D0, t0) for family in models], ignore_index=True)
     coarse = _rank(coarse, objective)
-    seeds = _seeds(coarse)
+    seeds = _seeds(coarse) if refine else coarse.iloc[:0]
     dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
     dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
     fine = []
@@ -231,17 +249,24 @@ def search(requirements, constraints: Constraints | dict | None = None,
                      min(seed["D0_mm"] + dD0, box["D0_mm"][1])), D0_STEP_MM)
         t0f = _axis((max(seed["t0_mm"] - dt0, box["t0_mm"][0]),
                      min(seed["t0_mm"] + dt0, box["t0_mm"][1])), T0_STEP_MM)
-        D0, t0 = (a.ravel() for a in np.meshgrid(D0f, t0f, indexing="ij"))
+        D0, t0 = _walls(*np.meshgrid(D0f, t0f, indexing="ij"))
         fine.append(evaluate((seed["L0_mm"], seed["theta0_deg"], seed["rubber"]), D0, t0))
     cand = pd.concat([coarse, *fine], ignore_index=True)
     cand = cand.round({"D0_mm": 9, "t0_mm": 9}).drop_duplicates(
         ["D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber"])
     cand = _rank(cand, objective)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
-                    float(P_work), evaluate.uncertainty, time.perf_counter() - start, models)
+                    float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
+                    fe_search)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
+
+
+def _walls(D0: np.ndarray, t0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The tubes of a grid that have a wall (t0 < D0/2), flattened."""
+    ok = t0 < D0 / 2
+    return D0[ok], t0[ok]
 
 
 def _seeds(coarse: pd.DataFrame) -> pd.DataFrame:
@@ -307,30 +332,56 @@ class _Evaluator:
         return frame
 
 
-def _check_conflicts(requirements, constraints, box, domain, parameter_box) -> None:
-    """One ``ValueError`` naming every conflict between requirements, constraints and models.
+def _outside_surrogate(requirements, constraints, domain, parameter_box) -> list[str]:
+    """What of the request lies outside the surrogate's training box (empty: it can search).
 
     ``parameter_box``: the surrogate's training box of its muscle parameters (``L0_mm``, ...),
     empty for a surrogate of the geometry alone.
     """
-    problems = []
+    out = []
     spans = {"D0_mm": tuple(domain.D0_mm), "t0_mm": tuple(domain.t0_mm)}
     spans |= {k: tuple(parameter_box[k]) for k in ("L0_mm", "theta0_deg") if k in parameter_box}
     for key, (dlo, dhi) in spans.items():
-        low, high = box[key]
+        given = getattr(constraints, key)
+        if given is None:
+            continue
+        low, high = given
         if low < dlo - 1e-9 * max(abs(dlo), 1) or high > dhi + 1e-9 * max(abs(dhi), 1):
-            problems.append(f"{key}={span_text(low, high)} reaches outside the surrogate's "
-                            f"training box {dlo:g}:{dhi:g}")
+            out.append(f"{key}={span_text(low, high)} beyond {dlo:g}:{dhi:g}")
     for rubber in constraints.rubber:
         for key in ("C10_MPa", "C01_MPa"):
             value = getattr(MATERIALS[rubber], key)
             if key in parameter_box and not (parameter_box[key][0] <= value
                                              <= parameter_box[key][1]):
-                problems.append(f"rubber={rubber} ({key}={value:g}) lies outside the "
-                                f"surrogate's training box {span_text(*parameter_box[key])}")
-    if box["t0_mm"][1] >= box["D0_mm"][0] / 2:
-        problems.append(f"t0_mm up to {box['t0_mm'][1]:g} mm conflicts with D0_mm from "
-                        f"{box['D0_mm'][0]:g} mm: expected t0 < D0/2")
+                out.append(f"rubber={rubber} ({key}={value:g}) beyond "
+                           f"{span_text(*parameter_box[key])}")
+    for req in requirements:
+        if not domain.eps[0] <= req.eps <= domain.eps[1]:
+            out.append(f"eps={req.eps:g} beyond {domain.eps[0]:g}:{domain.eps[1]:g}")
+        if not domain.pressure_bar[0] <= req.pressure_bar <= domain.pressure_bar[1]:
+            out.append(f"{req.pressure_bar:g} bar beyond {domain.pressure_bar[0]:g}:"
+                       f"{domain.pressure_bar[1]:g} bar")
+    return list(dict.fromkeys(out))
+
+
+def _check_conflicts(requirements, constraints, box, fe_search: bool) -> None:
+    """One ``ValueError`` naming every conflict between requirements, constraints and the
+    search's own box (the FE search's :data:`FE_SEARCH_BOX` when ``fe_search``)."""
+    problems = []
+    if fe_search:
+        for key, (flo, fhi) in FE_SEARCH_BOX.items():
+            low, high = box[key]
+            if low < flo or high > fhi:
+                problems.append(f"{key}={span_text(low, high)} reaches outside the FE search's "
+                                f"box {flo:g}:{fhi:g}")
+        for k, req in enumerate(requirements, start=1):
+            if req.pressure_bar > FE_SEARCH_MAX_PRESSURE_BAR:
+                problems.append(f"requirement {k} ({req.label}) at {req.pressure_bar:g} bar is "
+                                f"above {FE_SEARCH_MAX_PRESSURE_BAR:g} bar, the most a "
+                                "pneumatic muscle's design is searched for")
+    if box["t0_mm"][0] >= box["D0_mm"][1] / 2:
+        problems.append(f"t0_mm from {box['t0_mm'][0]:g} mm conflicts with D0_mm up to "
+                        f"{box['D0_mm'][1]:g} mm: expected t0 < D0/2")
     if not box["L0_mm"][0] > 0:
         problems.append(f"L0_mm {box['L0_mm'][0]:g} is invalid: expected a length > 0 mm")
     low, high = box["theta0_deg"]
@@ -344,13 +395,6 @@ def _check_conflicts(requirements, constraints, box, domain, parameter_box) -> N
         if req.eps >= eps_max:
             problems.append(f"requirement {k} ({req.label}) is past the braid lock: eps_max = "
                             f"{eps_max:.3f} at theta0 = {low:.4g} deg (Equation 2)")
-        elif not domain.eps[0] <= req.eps <= domain.eps[1]:
-            problems.append(f"requirement {k} ({req.label}): eps={req.eps:g} is outside the "
-                            f"surrogate's training box {domain.eps[0]:g}:{domain.eps[1]:g}")
-        if not domain.pressure_bar[0] <= req.pressure_bar <= domain.pressure_bar[1]:
-            problems.append(f"requirement {k} ({req.label}): {req.pressure_bar:g} bar is outside "
-                            f"the surrogate's training box {domain.pressure_bar[0]:g}:"
-                            f"{domain.pressure_bar[1]:g} bar")
         if constraints.max_pressure_bar is not None and \
                 req.pressure_bar > constraints.max_pressure_bar:
             problems.append(f"requirement {k} ({req.label}) at {req.pressure_bar:g} bar conflicts "

@@ -52,3 +52,21 @@ def test_reprocess_command_prints_the_new_folder(config, source, tmp_path, capsy
     assert meta["calibration"]["loadcell"]["sensitivity_N_per_V"] == 200.0
     assert meta["reprocessed_from"]["path"] == str(source.path)
     assert main(["reprocess", str(tmp_path), "--config", str(toml)]) == 2  # not a run folder
+
+
+def test_a_loadcell_only_file_recalibrates_and_the_folder_says_reprocessed(source, tmp_path,
+                                                                           capsys):
+    toml = tmp_path / "cell.toml"
+    toml.write_text("[loadcell]\nsensitivity_N_per_V = 200.0\ncapacity_N = 1961.33\n")
+    assert main(["reprocess", str(source.path), "--config", str(toml), "--out",
+                 str(tmp_path / "new")]) == 0
+    path = capsys.readouterr().out.strip()
+    assert path.endswith("-reprocessed-SIMULATED")
+    out = load_run(path)
+    assert out.meta.calibration["loadcell"]["sensitivity_N_per_V"] == 200.0
+    # everything but the cell is the run's own configuration, kept in its config.toml
+    kept = (out.path / "config.toml").read_text()
+    assert "sensitivity_N_per_V = 200.0" in kept and kept.count("[loadcell]") == 1
+    assert out.meta.muscle == source.meta.muscle
+    np.testing.assert_allclose(out.steps["force_N_mean"],
+                               source.steps["force_N_mean"] * 200.0 / 196.133, rtol=2e-5)

@@ -75,6 +75,7 @@ if hasattr(signal, "SIGHUP"):
     STOPS.append(("SIGHUP", 1))
 
 
+@pytest.mark.slow  # sends signals to runs in subprocesses
 @pytest.mark.parametrize("name, times", STOPS, ids=[f"{n}x{k}" for n, k in STOPS])
 def test_stop_signal_vents_within_0_2_s_and_records(tmp_path, name, times):
     proc, folder, flushed = start_run(tmp_path, until="step")  # pressurised when signalled
@@ -103,6 +104,7 @@ def test_stop_signal_vents_within_0_2_s_and_records(tmp_path, name, times):
     assert not list((tmp_path / "mkm-state").rglob("*.json"))  # its marker is gone: vented
 
 
+@pytest.mark.slow  # kills a run in a subprocess
 def test_sigkill_is_noticed_and_vented_by_the_next_command(tmp_path, capsys):
     proc, folder, flushed = start_run(tmp_path, until="step")
     os.kill(proc.pid, getattr(signal, "SIGKILL", signal.SIGTERM))

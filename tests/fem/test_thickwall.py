@@ -17,6 +17,8 @@ from mkm.fem.thickwall import (
     ThickWall,
     braided_tube_elastic_force,
     braided_tube_energy,
+    effective_eps_of_slope,
+    effective_eps_of_threshold,
     klute_hannaford,
     klute_hannaford_threshold_pressure,
 )
@@ -254,3 +256,29 @@ def test_prediction_frame_carries_the_threshold_and_broadcasts():
     assert len(frame) == 6 and "threshold_pressure_bar" in frame
     single = ThickWall(theta0_deg=THETA0).predict(1.0, 40, 3.0, 0.1)
     assert pred.force_N[1, 1] == single.force_N
+
+
+@settings(max_examples=50, deadline=None)
+@given(D0=st.floats(20.0, 60.0), t0=st.floats(1.0, 5.0), theta0=st.floats(20.0, 40.0),
+       fraction=st.floats(0.02, 0.95))
+def test_effective_eps_inverts_the_forward_closed_form(D0, t0, theta0, fraction):
+    # The slope and threshold of the forward model at a shortening e (a fraction of the braid
+    # lock) come back to e: the slope's closed-form inverse to round-off, the threshold's root
+    # search to its xtol of 1e-12 (relative 1e-8 leaves room for a flat threshold near e = 0).
+    e = fraction * chou_hannaford_eps_max(theta0)
+    slope = chou_hannaford(1.0, D0 + 2.0 * t0, e, theta0)
+    threshold = klute_hannaford_threshold_pressure(D0, t0, e, theta0, C10, C01)
+    assert effective_eps_of_slope(slope, D0, t0, theta0) == pytest.approx(e, rel=1e-9)
+    got = effective_eps_of_threshold(np.array([threshold]), [D0], [t0], [theta0], [C10], [C01])
+    assert got[0] == pytest.approx(e, rel=1e-8)
+
+
+def test_effective_eps_is_nan_where_no_shortening_gives_the_value():
+    # a slope far below what any stretch gives, a zero threshold, one beyond the braid
+    # lock's reach; the rest slope is e = 0 exactly
+    rest = chou_hannaford(1.0, 46.0, 0.0, THETA0)
+    assert np.isnan(effective_eps_of_slope(-10.0 * rest, 40.0, 3.0, THETA0))
+    assert effective_eps_of_slope(rest, 40.0, 3.0, THETA0) == 0.0
+    got = effective_eps_of_threshold(np.array([0.0, 1e6]), [40.0] * 2, [3.0] * 2, [THETA0] * 2,
+                                     [C10] * 2, [C01] * 2)
+    assert np.isnan(got).all()

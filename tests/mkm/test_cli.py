@@ -264,3 +264,22 @@ def test_a_library_warning_reaches_the_user_as_one_note(mkm_run):
         unregister("warns")
     assert code == 0 and out.startswith("pressure_bar,")
     assert err == "mkm: note: 2 of 2 points lie outside the training domain\n"
+
+
+def test_a_ctrl_c_while_importing_is_one_line_and_130():
+    import subprocess
+    import sys
+
+    # a Ctrl-C that lands while the command line is still importing (made certain here by an
+    # import hook that raises it)
+    code = ("import sys\n"
+            "class Interrupt:\n"
+            "    def find_spec(self, name, path=None, target=None):\n"
+            "        if name == 'mkm.cli':\n"
+            "            raise KeyboardInterrupt\n"
+            "sys.meta_path.insert(0, Interrupt())\n"
+            "from mkm.__main__ import run\n"
+            "run()\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=60, check=False)
+    assert done.returncode == 130 and done.stderr == "mkm: interrupted\n"

@@ -24,6 +24,7 @@ def test_grid_small_run(thickwall_dataset, tmp_path, capsys):
         "paper", "rmse_test_median_N"]
 
 
+@pytest.mark.slow  # trains surrogates
 def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
     model = tmp_path / "models" / "physics"
     assert main(["surrogate", "train", "--dataset", str(thickwall_dataset), "--kind",

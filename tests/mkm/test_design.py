@@ -126,8 +126,11 @@ def test_conflicting_constraints_are_named():
     with pytest.raises(ValueError, match="at 2 bar conflicts with the largest working pressure "
                                          "1.5 bar"):
         search(["100N@2bar,eps=0.1"], {"max_pressure_bar": 1.5})
-    with pytest.raises(ValueError, match=r"D0_mm=60 reaches outside the surrogate's training"):
-        search(["100N@2bar,eps=0.1"], {"D0_mm": 60})
+    # beyond the surrogate's box the FE searches, up to its own box and 6 bar
+    with pytest.raises(ValueError, match=r"D0_mm=70 reaches outside the FE search's box 10:60"):
+        search(["100N@2bar,eps=0.1"], {"D0_mm": 70})
+    with pytest.raises(ValueError, match=r"at 7 bar is above 6 bar"):
+        search(["100N@7bar,eps=0.1"])
     with pytest.raises(ValueError, match="low 50 is above high 40"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": "50:40"})
 
@@ -239,3 +242,21 @@ def test_braid_angle_range_searched_and_verified_at_the_chosen_angle():
         fe.predict(2.5, best["D0_mm"], best["t0_mm"], 0.20).force_N), rel=1e-9)
     # and the surrogate predicted that muscle, not the default one: within its margin + 5 N
     assert abs(best["r2_surrogate_N"] - best["r2_fe_N"]) <= best["r2_uncertainty_N"] + 5.0
+
+
+def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run):
+    # 3 bar is above the surrogate's 2.5 bar; a narrow box keeps the FE search to a few sweeps
+    code, out, err = mkm_run(["design", "--require", "500N@3bar,eps=0.1", "--D0", "28:34",
+                              "--t0", "1.5:3", "--mesh", MESH, "--top", "1", "--no-progress",
+                              "--out", str(tmp_path)])
+    assert code == 0, err
+    assert "3 bar beyond 0:2.5 bar): the FE model (coarse mesh) searched instead" in err
+    table = pd.read_csv(tmp_path / "designs.csv")
+    best = table.iloc[0]
+    assert best["meets_all"] and best["r1_fe_N"] >= 500.0  # the FE's verdict, at 3 bar
+    assert 28 <= best["D0_mm"] <= 34 and 1.5 <= best["t0_mm"] <= 3
+    # the design is the FE's own force at the geometry it reports
+    assert fe_force(best["D0_mm"], best["t0_mm"], 3.0, 0.1, best["theta0_deg"]) == \
+        pytest.approx(best["r1_fe_N"], rel=1e-6)
+    record = json.loads((tmp_path / "designs.json").read_text())
+    assert record["search"]["searcher"].startswith("FE (outside the surrogate's training box")

@@ -83,3 +83,19 @@ def test_one_cache_folder_for_predictions_surrogates_and_dataset_jobs(tmp_path, 
     monkeypatch.delenv("MKM_CACHE_DIR")
     folders = {Path(DEFAULT_CACHE_DIR).parent, surrogate_cache().parent, dataset_cache().parent}
     assert len(folders) == 1 and folders.pop().is_absolute()
+
+
+@pytest.mark.slow  # two whole demos
+def test_a_demo_replaces_the_runs_of_the_demo_before_it(tmp_path):
+    from mkm.demo import run_demo
+
+    keep = tmp_path / "demo" / "runs" / "my-own-folder"
+    keep.mkdir(parents=True)  # not the demo's: never touched
+    options = {"models": ["eq2"], "tolerance": None, "surrogate_section": False,
+               "cache_dir": None}
+    run_demo(tmp_path / "demo", progress=False, **options)
+    first = sorted(p.name for p in (tmp_path / "demo" / "runs").iterdir())
+    run_demo(tmp_path / "demo", progress=False, **options)
+    second = sorted(p.name for p in (tmp_path / "demo" / "runs").iterdir())
+    assert len(first) == len(second) == 3 and "my-own-folder" in second
+    assert all(name.endswith("-SIMULATED") for name in second if name != "my-own-folder")

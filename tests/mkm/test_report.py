@@ -221,8 +221,9 @@ def test_summary_table_comes_first_and_names_the_best_model(runs, report):
     best = one.loc[one["max_abs_err_pct"].idxmin()]
     row = html.split('id="summary"')[1].split("</tr>")[1]  # the first run's row
     assert "Thick-wall (Klute-Hannaford) [thickwall]" in row or best["model"] != "thickwall"
-    assert f"[{best['model']}]" in row and f"<td>{best['max_abs_err_pct']:.2f}</td>" in row
-    assert f"<td>{best['rmse_N']:.2f}</td>" in row
+    assert f"[{best['model']}]" in row
+    assert f'<td class="num">{best["max_abs_err_pct"]:.2f}</td>' in row
+    assert f'<td class="num">{best["rmse_N"]:.2f}</td>' in row
     # the paper's names, the spec beside
     assert re.search(r"<td>Equation 2 \(Chou-Hannaford\)</td>\s*<td>eq2</td>", html)
 
@@ -280,10 +281,12 @@ def test_report_renders_in_headless_chromium(report, tmp_path):
     # A probe copy records each image's decoded size once the page has loaded; the report
     # itself stays script-free.
     probe = path.parent / "probe.html"
-    probe.write_text(html.replace("</body>", '<script>addEventListener("load",()=>document.body'
+    probe.write_text(html.replace("</body>", '<script>addEventListener("load",()=>{document.body'
                                   '.setAttribute("data-imgs",[...document.images].map(i=>'
-                                  'i.naturalWidth+"x"+i.naturalHeight).join(",")))</script>'
-                                  "</body>"), encoding="utf-8")
+                                  'i.naturalWidth+"x"+i.naturalHeight).join(","));'
+                                  'document.body.setAttribute("data-summary-top",document'
+                                  '.querySelector("table.summary").getBoundingClientRect().top)'
+                                  "})</script></body>"), encoding="utf-8")
     flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
              "--disable-component-update", "--disable-sync", "--no-first-run",
              "--hide-scrollbars", f"--user-data-dir={tmp_path / 'profile'}"]
@@ -291,6 +294,8 @@ def test_report_renders_in_headless_chromium(report, tmp_path):
                          text=True, timeout=90, check=True).stdout
     sizes = re.search(r'data-imgs="([^"]*)"', dom).group(1).split(",")
     assert len(sizes) == 6
+    # the first screen (800 px) shows the table of every model's errors and speeds
+    assert float(re.search(r'data-summary-top="([^"]*)"', dom).group(1)) < 800
     for size in sizes:
         width, height = map(int, size.split("x"))
         assert width > 500 and height > 300

@@ -122,7 +122,7 @@ def test_classify_each_failure():
 
 def test_surrogate_kinds_default_all_and_typos():
     from mkm.study import STUDY_SURROGATES, surrogate_kinds
-    from mkm.surrogate.estimators import BEST
+    from mkm.surrogate.kinds import BEST
 
     assert BEST in STUDY_SURROGATES
     every = surrogate_kinds("all")

@@ -72,11 +72,12 @@ def test_shipped_design_is_what_the_sidecar_says():
         f >= n for f in failed)
 
 
+@pytest.mark.slow  # GP fits
 def test_adaptive_muscles_go_where_the_surrogate_is_unsure():
     # Trained on the space-filling muscles only, the picks have a larger predictive std of the
     # force at 2.5 bar than the candidates on average, and are distinct.
     from mkm.surrogate.design import adaptive_muscles
-    from mkm.surrogate.estimators import make_estimator
+    from mkm.surrogate.kinds import make_estimator
     from mkm.surrogate.training_data import ALL_INPUTS
 
     data = load_training_data(DESIGN_DATASET)

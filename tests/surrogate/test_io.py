@@ -1,11 +1,14 @@
 import json
 import subprocess
 import sys
+import warnings
 import zipfile
 from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from mkm.fem.records import file_sha256
 from mkm.surrogate.io import (
@@ -13,6 +16,7 @@ from mkm.surrogate.io import (
     METADATA_FILE,
     LibraryVersionWarning,
     load_model,
+    metadata_sha256,
     save_model,
 )
 from mkm.surrogate.train import train_surrogate
@@ -32,9 +36,13 @@ def copy_model(directory, to: Path) -> Path:
     return to
 
 
-def rewrite_metadata(folder: Path, edit) -> None:
+def rewrite_metadata(folder: Path, edit, sign: bool = True) -> None:
+    """Edit a model folder's metadata; ``sign``: record the hash of the edited metadata, as a
+    training that wrote it would (else the edit is a tampering)."""
     meta = json.loads((folder / METADATA_FILE).read_text())
     edit(meta)
+    if sign:
+        meta["sha256"] = metadata_sha256(meta)
     (folder / METADATA_FILE).write_text(json.dumps(meta))
 
 
@@ -119,6 +127,7 @@ CRAFTED_OBJECTS = {
 }
 
 
+@pytest.mark.slow  # a subprocess per crafted file
 @pytest.mark.parametrize("what", ["function", "class", "pickle"])
 def test_crafted_model_folder_cannot_run_code(saved, tmp_path, what):
     # A crafted folder with a matching sha256 ran a shell command through a joblib pickle.
@@ -153,6 +162,7 @@ def test_not_a_model_folder(tmp_path):
         load_model(tmp_path)
 
 
+@pytest.mark.slow  # trains a GP
 def test_default_model_is_trained_once_and_cached(thickwall_dataset, tmp_path):
     from mkm.surrogate.train import default_model
 
@@ -164,6 +174,7 @@ def test_default_model_is_trained_once_and_cached(thickwall_dataset, tmp_path):
     assert second.kind == first.kind == "muscle-gp"
 
 
+@pytest.mark.slow  # two training processes
 def test_two_processes_training_at_once(thickwall_dataset, tmp_path):
     # Two processes training the same cached model at once once crashed ("Directory not
     # empty"). With the lock, one trains and saves, the other waits and loads it: both finish,
@@ -179,3 +190,140 @@ def test_two_processes_training_at_once(thickwall_dataset, tmp_path):
     assert outputs[0][0] == outputs[1][0]
     entries = [p for p in tmp_path.iterdir() if p.is_dir()]
     assert len(entries) == 1 and (entries[0] / METADATA_FILE).is_file()
+
+
+def test_error_margin_is_what_training_measured(saved):
+    # The physics kind has no std; its two muscle-held-out splits measured its worst error.
+    model, directory, _ = saved
+    margin = load_model(directory).error_margin()
+    held_out = model.metadata["metrics"]["muscle_held_out"]
+    assert margin.worst_abs_error_N >= held_out["max_abs_test_N"]["max"] > 0
+    assert margin.within_2std is None and "2 muscle-held-out splits" in margin.measured_on
+
+
+def test_widened_box_is_refused(saved, tmp_path):
+    # Widening the box in metadata.json once made D0 = 500 mm predict 128 118 N with valid and
+    # in_domain true. The box is covered by the metadata's hash: the edit is refused.
+    copy = copy_model(saved[1], tmp_path / "widened")
+    rewrite_metadata(copy, lambda m: m["box"].update({"D0_mm": [0.0, 1000.0]}), sign=False)
+    with pytest.raises(ValueError, match="does not match the sha256 it records: it was edited"):
+        load_model(copy)
+
+
+def test_tampered_metadata_is_one_line_on_the_cli(saved, tmp_path, capsys):
+    from mkm.cli import main
+
+    copy = copy_model(saved[1], tmp_path / "widened")
+    rewrite_metadata(copy, lambda m: m["box"].update({"D0_mm": [0.0, 1000.0]}), sign=False)
+    assert main(["fem", "solve", "--model", f"surrogate:path={copy}", "--D0", "500", "--t0",
+                 "3", "--eps", "0.1"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("mkm: error: ") and "edited" in err and err.count("\n") == 1
+
+
+def test_huge_metadata_is_refused_unread(saved, tmp_path):
+    from mkm.surrogate.io import MAX_METADATA_BYTES
+
+    copy = copy_model(saved[1], tmp_path / "huge")
+    (copy / METADATA_FILE).write_text(" " * (MAX_METADATA_BYTES + 1) + "{}")
+    with pytest.raises(ValueError, match=rf"holds {MAX_METADATA_BYTES + 3} bytes: expected at"):
+        load_model(copy)
+
+
+JSON_VALUES = st.recursive(
+    st.none() | st.booleans() | st.integers(-10**6, 10**6)
+    | st.floats(allow_nan=True, allow_infinity=True) | st.text(max_size=8),
+    lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=5), inner,
+                                                                max_size=3),
+    max_leaves=6)
+
+
+def key_paths(node, prefix=()):
+    """Every key path of a JSON object, parents before children."""
+    for key, value in node.items():
+        yield (*prefix, key)
+        if isinstance(value, dict):
+            yield from key_paths(value, (*prefix, key))
+
+
+@settings(max_examples=80, deadline=None)
+@given(data=st.data(), sign=st.booleans())
+def test_malformed_metadata_is_one_value_error(saved, tmp_path_factory, data, sign):
+    # Any edit of the metadata (a value replaced by any JSON, a key dropped, the whole file
+    # replaced) is refused with a ValueError, hash recomputed or not; never another exception.
+    # An edit that keeps the structure with the hash recomputed (what a training could have
+    # written) may load: then it predicts and reports its margin without raising anything else.
+    directory = saved[1]
+    meta = json.loads((directory / METADATA_FILE).read_text())
+    action = data.draw(st.sampled_from(["replace", "drop", "whole"]))
+    if action == "whole":
+        meta = data.draw(JSON_VALUES)
+    else:
+        *parents, key = data.draw(st.sampled_from(list(key_paths(meta))))
+        node = meta
+        for part in parents:
+            node = node[part]
+        if action == "drop":
+            del node[key]
+        else:
+            node[key] = data.draw(JSON_VALUES)
+    if sign and isinstance(meta, dict):
+        meta["sha256"] = metadata_sha256(meta)
+    copy = copy_model(directory, tmp_path_factory.mktemp("fuzz") / "model")
+    (copy / METADATA_FILE).write_text(json.dumps(meta))
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # other library versions, out of the domain
+            model = load_model(copy, accept_mismatch=data.draw(st.booleans()))
+            model.predict([0.0, 1.0, 2.0], 40.0, 3.0, 0.1)
+            model.error_margin()
+    except ValueError as exc:
+        assert "\n" not in str(exc)
+
+
+@pytest.fixture(scope="module")
+def saved_gp(thickwall_dataset, tmp_path_factory):
+    model = train_surrogate("muscle-gp", thickwall_dataset, splits=0)
+    return model, save_model(model, tmp_path_factory.mktemp("models") / "muscle-gp")
+
+
+def test_default_kind_loads_without_scikit_learn(saved_gp):
+    # The muscle GP predicts from predictor.npz: loading and predicting import neither
+    # scikit-learn nor skops (1-2 s of imports), and give the estimator's numbers to the bit.
+    _, directory = saved_gp
+    script = ("import sys\nimport numpy as np\nfrom mkm.surrogate.io import load_model\n"
+              f"m = load_model({str(directory)!r})\n"
+              "p = m.predict(np.linspace(0, 2.5, 11), 41.0, 2.7, 0.13)\n"
+              "print(sorted(k for k in ('sklearn', 'skops') if k in sys.modules))\n"
+              "X = np.column_stack([np.linspace(0, 2.5, 11), *np.full((3, 11), [[41.0], [2.7],"
+              " [0.13]])])\n"
+              "force, std = m.estimator.predict(X, return_std=True)\n"
+              "print(np.array_equal(force, p.force_N), np.array_equal(std, "
+              "p.extras['force_std_N']))\n")
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         timeout=120, check=True)
+    assert run.stdout.split("\n")[:2] == ["[]", "True True"]
+
+
+def test_predictor_file_is_numbers_only(saved_gp, tmp_path):
+    # A predictor file holding a pickled object, with every hash made to match, is refused
+    # (read with allow_pickle=False), and the marker its pickle would write never appears.
+    from mkm.surrogate.io import PREDICTOR_FILE
+
+    marker = tmp_path / "pwned"
+    copy = copy_model(saved_gp[1], tmp_path / "crafted")
+    script = ("import numpy as np, sys\n"
+              "class Evil:\n"
+              "    def __reduce__(self):\n"
+              f"        return (open, ({str(marker)!r}, 'w'))\n"
+              "a = np.empty(1, dtype=object); a[0] = Evil()\n"
+              f"np.savez({str(copy / PREDICTOR_FILE)!r}, z_mean=a)\n")
+    subprocess.run([sys.executable, "-c", script], check=True)
+    rewrite_metadata(copy, lambda m: m["checks"].update(
+        {"predictor_sha256": file_sha256(copy / PREDICTOR_FILE)}))
+    with pytest.raises(ValueError, match="cannot be read as the surrogate's arrays"):
+        load_model(copy)
+    assert not marker.exists()
+    (copy / PREDICTOR_FILE).write_bytes(b"edited")
+    with pytest.raises(ValueError, match="predictor.npz' is missing or does not match"):
+        load_model(copy)

@@ -90,6 +90,7 @@ def test_prediction_is_exact_on_thickwall_data(physics):
                                atol=1e-6 * expected.max())
 
 
+@pytest.mark.slow  # trains the design's GP
 def test_fast_path_equals_the_estimator(physics, design_model):
     # The surrogates skip scikit-learn's per-call checks for speed: same numbers, bit for bit.
     X = np.array([[0.0, 30.0, 2.0, 0.0], [1.3, 41.0, 2.7, 0.13], [2.5, 50.0, 4.0, 0.2]])

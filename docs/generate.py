@@ -1,0 +1,394 @@
+"""Write the generated parts of the documentation into ``docs/_generated/`` (run by ``conf.py``).
+
+Nothing measured is typed into a page: each table and figure here is computed from a file that a
+command wrote, and each include names that command, so rerunning it refreshes the page.
+
+- ``api/``: one page per public module of ``mkm``, ``mkm.fem``, ``mkm.bench`` and
+  ``mkm.surrogate`` (autodoc with numpydoc), and an index listing each package's ``__all__``;
+- ``study_*.md`` and ``speed_accuracy.png``: the speed-accuracy table, its Pareto chart and the
+  surrogates' errors per study muscle, from the shipped study table ``mkm/data/model_errors.csv``
+  (``mkm study --update-shipped``);
+- ``calibration.md``: the shipped braid-angle calibration ``fem/calibration.json``
+  (``mkm fem calibrate --update-shipped``);
+- ``datasets.md``: what the shipped FE datasets are, from their JSON sidecars;
+- ``bench_*.md``: the benchmark tables, from the results the benchmark scripts wrote into
+  ``docs/measured/`` (``make bench-docs`` runs them: :data:`BENCHMARKS`);
+- ``examples/``: one page per script of ``examples/``.
+
+Usage: ``python docs/generate.py [--run-benchmarks [FILE ...]]`` (``sphinx-build`` runs it
+without options through ``conf.py``).
+"""
+
+from __future__ import annotations
+
+import functools
+import importlib
+import inspect
+import json
+import math
+import pkgutil
+import shutil
+from pathlib import Path
+
+import pandas as pd
+
+DOCS = Path(__file__).resolve().parent
+ROOT = DOCS.parent
+OUT = DOCS / "_generated"
+MEASURED = DOCS / "measured"
+EXAMPLES = ROOT / "examples"
+PACKAGES = ("mkm", "mkm.fem", "mkm.bench", "mkm.surrogate")
+SKIPPED_MODULES = {"mkm.__main__"}  # runs the command line on import
+
+
+# --- helpers ----------------------------------------------------------------------------------
+
+def markdown_table(frame: pd.DataFrame, digits: int = 3) -> str:
+    """A GitHub-flavoured Markdown table; floats to ``digits`` significant digits."""
+
+    def cell(value) -> str:
+        if isinstance(value, float):
+            return "" if math.isnan(value) else f"{value:.{digits}g}"
+        return str(value).replace("|", "\\|")
+
+    lines = ["| " + " | ".join(cell(c) for c in frame.columns) + " |",
+             "|" + "---|" * len(frame.columns)]
+    lines += ["| " + " | ".join(cell(v) for v in row) + " |"
+              for row in frame.itertuples(index=False)]
+    return "\n".join(lines) + "\n"
+
+
+def source_note(what: str, command: str, date: str | None = None) -> str:
+    """The line under a generated table: where its numbers come from and how to refresh them."""
+    when = f", measured {date}" if date else ""
+    return f"\n*Generated from {what}{when}; regenerate with `{command}`.*\n"
+
+
+def write(path: Path, text: str) -> None:
+    """Write only when the content changed, so Sphinx rebuilds only what moved."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if not path.exists() or path.read_text(encoding="utf-8") != text:
+        path.write_text(text, encoding="utf-8")
+
+
+# --- API reference ----------------------------------------------------------------------------
+
+def public_modules(package: str) -> list[str]:
+    """The package and every module below it whose dotted name has no leading underscore."""
+    names = [package]
+    if package == "mkm":  # the other three are mapped folders, walked on their own
+        path = importlib.import_module(package).__path__
+        names += [m.name for m in pkgutil.walk_packages(path, "mkm.")]
+    else:
+        path = importlib.import_module(package).__path__
+        names += [m.name for m in pkgutil.walk_packages(path, package + ".")]
+    return [n for n in names if n not in SKIPPED_MODULES
+            and not any(part.startswith("_") for part in n.split("."))]
+
+
+@functools.cache
+def all_modules() -> list[str]:
+    """Every documented module of the four packages, each once."""
+    return tuple(sorted({m for package in PACKAGES for m in public_modules(package)}))
+
+
+def exported(module: str) -> list[str]:
+    """A module's ``__all__`` (the package's front door), empty when it has none."""
+    return list(getattr(importlib.import_module(module), "__all__", []))
+
+
+def defining_module(module: str, name: str) -> str:
+    """Where an exported name is documented: the module that defines it. A function or class
+    names it; a constant is assigned at the top level of its module's source."""
+    obj = getattr(importlib.import_module(module), name)
+    if inspect.isfunction(obj) or inspect.isclass(obj):
+        return obj.__module__
+    for candidate in all_modules():
+        if candidate.startswith(module) and name in _assigned(candidate) and vars(
+                importlib.import_module(candidate)).get(name) is obj:
+            return candidate
+    return module
+
+
+def _assigned(module: str) -> set[str]:
+    """Names a module assigns at its top level (not those it imports)."""
+    import ast
+
+    source = inspect.getsource(importlib.import_module(module))
+    names = set()
+    for node in ast.parse(source).body:
+        targets = node.targets if isinstance(node, ast.Assign) else (
+            [node.target] if isinstance(node, ast.AnnAssign) else [])
+        names |= {t.id for t in targets if isinstance(t, ast.Name)}
+    return names
+
+
+def module_page(module: str) -> str:
+    title = f"``{module}``"
+    lines = [title, "=" * len(title), ""]
+    names = exported(module)
+    if names:
+        # Re-exports are documented where they are defined, so no object is described twice.
+        lines += [f".. automodule:: {module}", "   :no-members:", "",
+                  "Exported names (``__all__``):", ""]
+        for name in sorted(names):
+            target = defining_module(module, name)
+            role = "obj" if target != module else "data"
+            lines.append(f"- :{role}:`{name} <{target}.{name}>`" if target != module
+                         else f"- ``{name}``")
+        lines.append("")
+        own = [n for n in names if defining_module(module, n) == module]
+        if own:
+            lines += [f".. automodule:: {module}", "   :no-index:", "   :members: "
+                      + ", ".join(own), ""]
+    else:
+        lines += [f".. automodule:: {module}", ""]
+    # constants a package exports from here that autodoc leaves out (no ``#:`` comment)
+    from sphinx.pycode import ModuleAnalyzer
+
+    commented = {name for (_, name) in ModuleAnalyzer.for_module(module).find_attr_docs()}
+    for name in sorted(set(exported_constants().get(module, ())) - commented):
+        lines += [f".. autodata:: {module}.{name}", "   :no-value:", ""]
+    return "\n".join(lines)
+
+
+@functools.cache
+def exported_constants() -> dict[str, list[str]]:
+    """Home module -> the constants (not functions or classes) some module exports from it."""
+    homes: dict[str, list[str]] = {}
+    for module in all_modules():
+        for name in exported(module):
+            obj = getattr(importlib.import_module(module), name)
+            if not (inspect.isfunction(obj) or inspect.isclass(obj) or inspect.ismodule(obj)):
+                homes.setdefault(defining_module(module, name), []).append(name)
+    return homes
+
+
+def api_pages() -> None:
+    folder = OUT / "api"
+    modules = all_modules()
+    for module in modules:
+        write(folder / f"{module}.rst", module_page(module))
+    index = ["API reference", "=============", "",
+             "Generated from the docstrings (numpydoc). One page per module; a package's page",
+             "lists its ``__all__``, each name linking to the module that defines it.", ""]
+    for package in PACKAGES:
+        heading = f"``{package}``"
+        children = [m for m in modules if m == package or (
+            m.startswith(package + ".") and not any(
+                m.startswith(p + ".") for p in PACKAGES if p != package and p.startswith(package)))]
+        index += [heading, "-" * len(heading), "", ".. toctree::", "   :maxdepth: 1", ""]
+        index += [f"   {m}" for m in children] + [""]
+    write(folder / "index.rst", "\n".join(index))
+    # pages of modules that no longer exist would be orphans (a warning, so an error)
+    for stale in set(folder.glob("mkm*.rst")) - {folder / f"{m}.rst" for m in modules}:
+        stale.unlink()
+
+
+# --- measured tables --------------------------------------------------------------------------
+
+def study_tables() -> None:
+    """The study's summary, Pareto chart and the surrogates' per-muscle errors, from the shipped
+    table that ``mkm study --update-shipped`` writes (the same numbers ``auto`` reads)."""
+    from mkm.auto import MODEL_ERRORS_FILE
+    from mkm.figures import speed_accuracy_figure
+    from mkm.html import save_figure
+    from mkm.study import readable_summary, summarise
+
+    errors = pd.read_csv(MODEL_ERRORS_FILE)
+    info = json.loads(MODEL_ERRORS_FILE.with_suffix(".json").read_text(encoding="utf-8"))
+    timings = errors[["predictor", "seconds_per_point"]].drop_duplicates()
+    summary = summarise(errors, timings, info["reference"])
+    note = source_note("the shipped study table `mkm/data/model_errors.csv` "
+                       f"({info['machine_name']})", "mkm study --update-shipped",
+                       info["date_utc"][:10])
+    table = readable_summary(summary).drop(columns=["family"])
+    write(OUT / "study_summary.md", markdown_table(table) + note)
+    save_figure(speed_accuracy_figure(summary, info["machine_name"]), OUT / "speed_accuracy.png")
+
+    muscles = pd.DataFrame(info["muscles"], columns=["muscle", "D0_mm", "t0_mm", "eps", "role"])
+    pressures = info["pressures_bar"]
+    lengths = sorted({p["params"]["L0_mm"] for p in info["predictors"].values()
+                      if "L0_mm" in p["params"]})
+    intro = (f"{len(muscles)} study muscles at L0 {', '.join(f'{v:g}' for v in lengths)} mm, "
+             f"each at {len(pressures)} pressures from {min(pressures):g} to "
+             f"{max(pressures):g} bar:\n\n")
+    write(OUT / "study_muscles.md", intro + markdown_table(muscles) + note)
+
+    scored = errors[errors["force_ref_N"].notna() & errors["valid"].astype(bool)]
+    surrogates = scored[scored["family"].str.contains("surrogate", case=False)]
+    per_muscle = (surrogates.assign(abs_err=surrogates["err_pct"].abs(),
+                                    sq=(surrogates["force_N"] - surrogates["force_ref_N"]) ** 2)
+                  .groupby(["predictor", "muscle"], sort=False)
+                  .agg(largest_abs_err_pct=("abs_err", "max"), rmse_N=("sq", "mean"))
+                  .reset_index())
+    per_muscle["rmse_N"] = per_muscle["rmse_N"] ** 0.5
+    wide = per_muscle.pivot(index="muscle", columns="predictor", values="largest_abs_err_pct")
+    wide = wide.reindex(muscles["muscle"]).reset_index()
+    wide.columns = ["muscle"] + [f"{c}: largest \\|Err%\\|" for c in wide.columns[1:]]
+    write(OUT / "surrogate_errors.md", markdown_table(wide) + note)
+
+
+def calibration_table() -> None:
+    """The shipped braid-angle calibration, one row per model (``fem/calibration.json``)."""
+    from mkm.fem.calibration import CALIBRATION_FILE
+
+    data = json.loads(Path(CALIBRATION_FILE).read_text(encoding="utf-8"))
+    rows = [{"model (key)": key, "target": e["target"], "theta0 [deg]": e["theta0_deg"],
+             "slope residual [%]": e["slope_residual_pct"],
+             "threshold [bar]": e["threshold_pressure_bar"]["model"],
+             "force RMSE [N]": e["rmse_N"], "largest residual [N]": e["max_abs_residual_N"],
+             "reference": e["reference"], "date": e["date_utc"][:10]}
+            for key, e in sorted(data.items())]
+    write(OUT / "calibration.md", markdown_table(pd.DataFrame(rows), digits=5)
+          + source_note("`fem/calibration.json`",
+                        "mkm fem calibrate --model SPEC --update-shipped"))
+
+
+def dataset_table() -> None:
+    """What each shipped FE dataset is, from its JSON sidecar."""
+    from mkm.surrogate.training_data import DEFAULT_DATASET
+
+    rows = []
+    for sidecar in sorted(Path(DEFAULT_DATASET).parent.glob("*.json")):
+        meta = json.loads(sidecar.read_text(encoding="utf-8"))
+        data = sidecar.with_suffix(".csv")
+        n_rows = sum(1 for _ in data.open(encoding="utf-8")) - 1 if data.exists() else ""
+        rows.append({"file": f"`{data.name}`", "rows": n_rows,
+                     "what": meta.get("what") or f"grid `{meta.get('grid', '')}`",
+                     "model": meta.get("model", ""), "mesh": meta.get("mesh", ""),
+                     "command": f"`{meta.get('command', '')}`",
+                     "date": meta.get("date_utc", "")[:10]})
+    write(OUT / "datasets.md", markdown_table(pd.DataFrame(rows))
+          + "\n*Generated from the JSON sidecars in `surrogate/data/`; each row names the "
+            "command that wrote it.*\n")
+
+
+#: The benchmarks whose tables the docs show: output file in docs/measured/ -> command (run from
+#: the repository root by ``python docs/generate.py --run-benchmarks``, i.e. ``make bench-docs``).
+#: A ``.csv`` output is the script's stdout (a ``#`` line of provenance, then CSV), unless the
+#: command writes it into ``{dir}`` with its JSON sidecar.
+BENCHMARKS = {
+    "mesh_convergence.csv": "-m mkm fem convergence --out {dir}",
+    "thickwall.csv": "benchmarks/bench_thickwall.py --points 200000 --repeats 5",
+    "axisym.csv": "benchmarks/bench_axisym.py --levels coarse,medium,fine --repeats 3",
+    "design.json": "benchmarks/bench_design.py --repeats 5 --fe-repeats 2 --out {out}",
+    "dataset.json": "benchmarks/bench_dataset.py --workers 1 2 --json {out}",
+}
+
+
+def run_benchmarks(names=None) -> None:
+    """Run the benchmarks of :data:`BENCHMARKS` (all, or ``names``) and keep their results in
+    ``docs/measured/``."""
+    import shlex
+    import subprocess
+    import sys
+
+    MEASURED.mkdir(exist_ok=True)
+    for name, command in BENCHMARKS.items():
+        if names and name not in names:
+            continue
+        target = MEASURED / name
+        args = [sys.executable, *shlex.split(command.format(out=target, dir=MEASURED))]
+        print(f"running {' '.join(args[1:])}", file=sys.stderr)
+        done = subprocess.run(args, cwd=ROOT, capture_output=True, text=True, check=True)
+        if name.endswith(".csv") and "{dir}" not in command:
+            target.write_text(done.stdout, encoding="utf-8")
+
+
+def _benchmark_frame(path: Path) -> tuple[pd.DataFrame, str]:
+    """A benchmark's result table and a line saying when and where it was measured."""
+    sidecar = path.with_suffix(".json")
+    if path.suffix == ".csv" and sidecar.exists():
+        record = json.loads(sidecar.read_text(encoding="utf-8"))
+        return pd.read_csv(path), _measured_on(record)
+    if path.suffix == ".csv":
+        first, _, rest = path.read_text(encoding="utf-8").partition("\n")
+        import io
+
+        return pd.read_csv(io.StringIO(rest)), first.lstrip("# ").strip()
+    record = json.loads(path.read_text(encoding="utf-8"))
+    rows = record.get("rows") or record.get("results")
+    return pd.json_normalize(rows), _measured_on(record)
+
+
+def _measured_on(record: dict) -> str:
+    return f"{record.get('date_utc', '?')}, {record.get('machine', '?')}, " + ", ".join(
+        f"{k} {v}" for k, v in record.get("versions", {}).items())
+
+
+def benchmark_tables() -> None:
+    """One Markdown table per benchmark result in ``docs/measured/``, with the command that
+    measured it; a benchmark not run yet gets a note saying how to run it."""
+    for name, command in BENCHMARKS.items():
+        path = MEASURED / name
+        shown = command.replace(" --out {out}", "").replace(" --json {out}", "").replace(
+            "{dir}", "docs/measured")
+        if not path.exists():
+            text = (f"*Not measured in this checkout: run `make bench-docs` (or `python "
+                    f"{shown}`).*\n")
+        else:
+            frame, measured = _benchmark_frame(path)
+            text = (f"`python {shown}`; measured {measured}.\n\n" + markdown_table(frame, 6)
+                    + source_note(f"`docs/measured/{name}`", "make bench-docs"))
+        write(OUT / f"bench_{path.stem}.md", text)
+
+
+# --- examples ---------------------------------------------------------------------------------
+
+def example_pages() -> None:
+    """One page per example script: its docstring as the text, then the whole script."""
+    import ast
+
+    folder = OUT / "examples"
+    if folder.exists():
+        shutil.rmtree(folder)
+    folder.mkdir(parents=True)
+    index = ["# Examples", "",
+             "Scripts to copy and run (`python examples/NAME.py` from a checkout). Each asserts",
+             "one number it shows; the test suite runs every one (`tests/test_examples.py`).",
+             "", "```{toctree}", ":maxdepth: 1", ""]
+    for script in sorted(EXAMPLES.glob("*.py")):
+        doc = ast.get_docstring(ast.parse(script.read_text(encoding="utf-8"))) or script.stem
+        title, _, body = doc.partition("\n")
+        page = [f"# {title.strip()}", "", body.strip(), "",
+                f"```{{literalinclude}} ../../../examples/{script.name}",
+                ":language: python", ":lines: " + f"{_code_start(script)}-", "```", ""]
+        write(folder / f"{script.stem}.md", "\n".join(page))
+        index.append(script.stem)
+    write(folder / "index.md", "\n".join(index + ["```", ""]))
+
+
+def _code_start(script: Path) -> int:
+    """The first non-blank line after the module docstring."""
+    import ast
+
+    text = script.read_text(encoding="utf-8")
+    line = ast.parse(text).body[0].end_lineno + 1
+    lines = text.splitlines()
+    while line <= len(lines) and not lines[line - 1].strip():
+        line += 1
+    return line
+
+
+def main() -> None:
+    OUT.mkdir(exist_ok=True)
+    api_pages()
+    study_tables()
+    calibration_table()
+    dataset_table()
+    benchmark_tables()
+    example_pages()
+
+
+if __name__ == "__main__":
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--run-benchmarks", nargs="*", metavar="FILE",
+                        help="first run the benchmarks (all, or these outputs: "
+                             + ", ".join(BENCHMARKS) + ") into docs/measured/")
+    options = parser.parse_args()
+    if options.run_benchmarks is not None:
+        run_benchmarks(options.run_benchmarks)
+    main()

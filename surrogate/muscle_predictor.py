@@ -1,0 +1,158 @@
+"""Predictions of the ``muscle-gp`` kind from its fitted arrays alone.
+
+numpy and scipy only: a saved default surrogate predicts without loading scikit-learn or skops
+(the estimator file holds the whole fitted estimator, for refits and calibration; the predictor
+file, ``predictor.npz``, holds these arrays and is read with ``allow_pickle=False``, so it cannot
+run code either). :class:`~mkm.surrogate.muscle_gp.MuscleThresholdGP` predicts through the same
+functions, so both give the same numbers to the bit.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.special import ndtr
+
+from mkm.fem.eq2 import chou_hannaford_eps_max
+from mkm.surrogate.features import braid_slope_N_per_bar, columns_of, thickwall_threshold_bar
+from mkm.surrogate.gp import posterior_mean_std
+
+LINEARITY_BINS_BAR = (0.0, 0.1, 0.25, 0.5, 1.0, 2.0, np.inf)  # of P - P*
+#: The arrays of a Gaussian process's posterior (:func:`mkm.surrogate.gp.posterior`): name, ndim.
+POSTERIOR_ARRAYS = {"X_scaled": 2, "length_scale": 1, "alpha": 1, "L_inv": 2, "amplitude": 0,
+                    "noise": 0, "y_mean": 0, "y_std": 0}
+SCALARS = ("std_scale", "std_power", "std_reference")
+
+
+def muscle_values(X, inputs, fixed):
+    """The muscle's values by name and ``z``, the inputs of the processes: the muscle
+    parameters of ``X`` and the braid diameter over the length."""
+    v = columns_of(X, tuple(inputs), fixed)
+    z = np.column_stack([X[:, 1:], (v["D0_mm"] + 2.0 * v["t0_mm"]) / v["L0_mm"]])
+    return v, z
+
+
+def log_k(X, inputs, fixed, z_mean, z_scale, slope, threshold):
+    """Muscle values, then mean and (uncalibrated) std of ``log k_A`` and ``log k_P`` from the
+    posteriors ``slope`` and ``threshold`` over ``z`` standardised with ``z_mean, z_scale``."""
+    v, z = muscle_values(X, inputs, fixed)
+    zs = (z - z_mean) / z_scale
+    return (v, *posterior_mean_std(slope, zs), *posterior_mean_std(threshold, zs))
+
+
+def calibrated_factor(m_A, c, beta, reference):
+    """``c (log k_A / m_ref)^beta``: the factor of both processes' std of ``log k`` at the
+    slope process's mean ``m_A``."""
+    # k_A > 1 (the caps stretch the shortening); the clip keeps the power finite if not
+    return c * (np.maximum(m_A, 1e-3) / reference) ** beta
+
+
+def from_log_k(v, m_A, s_A, m_P, s_P):
+    """Slope [N/bar] and threshold [bar], with first-order std, from ``log k`` of each (mean
+    and std) of the muscles ``v``."""
+    eps, theta0 = v["eps"], v["theta0_deg"]
+    top = 0.999 * chou_hannaford_eps_max(theta0)
+    e_A = np.minimum(eps * np.exp(m_A), top)
+    e_P = np.minimum(eps * np.exp(m_P), top)
+    A0 = braid_slope_N_per_bar(v["D0_mm"], v["t0_mm"], 0.0, theta0)
+    c2 = np.cos(np.deg2rad(theta0)) ** 2
+    A = np.maximum(A0 * (3.0 * (1.0 - e_A) ** 2 * c2 - 1.0) / (3.0 * c2 - 1.0), 0.0)
+    sd_A = A0 * 6.0 * (1.0 - e_A) * c2 / (3.0 * c2 - 1.0) * e_A * s_A  # |dA/dlog k| s
+    args, rubber = (v["D0_mm"], v["t0_mm"]), (v["C10_MPa"], v["C01_MPa"])
+    Pstar = np.maximum(thickwall_threshold_bar(*args, e_P, theta0, *rubber), 0.0)
+    step = 1e-6
+    dP_dlogk = (thickwall_threshold_bar(*args, e_P * (1 + step), theta0, *rubber)
+                - Pstar) / step
+    return A, sd_A, Pstar, np.abs(dP_dlogk) * s_P
+
+
+def force_parts(P, A, s_A, Pstar, s_P, linearity_bar):
+    """Force [N], its variance [N^2] from the std of ``A`` and ``P*``, and the linearity floor
+    [N] (``linearity_bar`` per bin of :data:`LINEARITY_BINS_BAR`)."""
+    force = A * np.maximum(P - Pstar, 0.0)
+    # E[max(0, x)] and E[max(0, x)^2] for x = P - P* ~ N(mu, s^2); A log-normal with
+    # relative std s_A / A
+    mu, s = P - Pstar, np.maximum(s_P, 1e-12)
+    t = mu / s
+    cdf, pdf = ndtr(t), np.exp(-0.5 * t**2) / np.sqrt(2.0 * np.pi)  # scipy.stats.norm's
+    e1 = mu * cdf + s * pdf
+    e2 = (mu**2 + s**2) * cdf + mu * s * pdf
+    rel = np.divide(s_A, A, out=np.zeros(np.broadcast_shapes(np.shape(s_A), np.shape(A))),
+                    where=A > 0)
+    var = np.maximum(A**2 * (np.exp(2 * rel**2) * e2 - np.exp(rel**2) * e1**2), 0.0)
+    floor = A * linearity_bar[np.digitize(P - Pstar, LINEARITY_BINS_BAR[1:-1])]
+    return force, var, np.where(force > 0, floor, 0.0)
+
+
+@dataclass(frozen=True)
+class MusclePredictor:
+    """A fitted muscle GP's predictions (:class:`~mkm.surrogate.muscle_gp.MuscleThresholdGP`
+    documents the model): its inputs, recorded parameters and fitted arrays."""
+
+    inputs: tuple[str, ...]
+    fixed: dict
+    z_mean: np.ndarray
+    z_scale: np.ndarray
+    slope: dict
+    threshold: dict
+    std_scale: float
+    std_power: float
+    std_reference: float
+    linearity_bar: np.ndarray
+
+    has_std = True
+
+    def decompose(self, X):
+        """``(A, sd_A, P*, sd_P*)`` per row of a validated ``X``."""
+        v, m_A, s_A, m_P, s_P = log_k(X, self.inputs, self.fixed, self.z_mean, self.z_scale,
+                                      self.slope, self.threshold)
+        factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
+        return from_log_k(v, m_A, factor * s_A, m_P, factor * s_P)
+
+    def predict(self, X, return_std: bool = False):
+        """Force [N] (and std [N]) at the rows of a validated float ``X``."""
+        # slope and threshold once per muscle: a sweep is many pressures of a few muscles
+        Z = np.ascontiguousarray(X[:, 1:])
+        keys = Z.view(np.dtype((np.void, Z.dtype.itemsize * Z.shape[1]))).ravel()
+        _, first, which = np.unique(keys, return_index=True, return_inverse=True)
+        A, s_A, Pstar, s_P = (part[which] for part in self.decompose(X[first]))
+        if not return_std:
+            return A * np.maximum(X[:, 0] - Pstar, 0.0)
+        force, var, floor = force_parts(X[:, 0], A, s_A, Pstar, s_P, self.linearity_bar)
+        return force, np.sqrt(var + floor**2)
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        """The fitted numbers as flat named arrays (``numpy.savez``)."""
+        out = {"z_mean": self.z_mean, "z_scale": self.z_scale,
+               "linearity_bar": self.linearity_bar}
+        out.update({f"{process}.{name}": np.asarray(getattr(self, process)[name])
+                    for process in ("slope", "threshold") for name in POSTERIOR_ARRAYS})
+        out.update({name: np.array(getattr(self, name)) for name in SCALARS})
+        return out
+
+    @classmethod
+    def from_arrays(cls, arrays, inputs, fixed) -> MusclePredictor:
+        """The predictor of :meth:`arrays` for ``inputs`` and ``fixed``; a one-line
+        ``ValueError`` naming the first array missing or of the wrong type or shape."""
+        d = len(inputs)  # the muscle parameters of X and the braid diameter over the length
+        expected = {"z_mean": (d,), "z_scale": (d,), "linearity_bar": (len(LINEARITY_BINS_BAR)
+                                                                       - 1,),
+                    **{name: () for name in SCALARS}}
+        for process in ("slope", "threshold"):
+            n = np.shape(arrays.get(f"{process}.alpha", ()))[:1] or (0,)
+            expected.update({f"{process}.{name}": {2: (*n, d), 1: n, 0: ()}[ndim]
+                             for name, ndim in POSTERIOR_ARRAYS.items()})
+            expected[f"{process}.length_scale"] = (d,)
+            expected[f"{process}.L_inv"] = (*n, *n)
+        for name, shape in expected.items():
+            value = arrays.get(name)
+            if (value is None or value.dtype != np.float64 or value.shape != shape
+                    or not np.all(np.isfinite(value))):
+                got = "missing" if value is None else f"{value.dtype} {value.shape}"
+                raise ValueError(f"predictor array {name} is {got}: expected finite float64 "
+                                 f"of shape {shape}")
+        return cls(tuple(inputs), dict(fixed), arrays["z_mean"], arrays["z_scale"],
+                   *({name: arrays[f"{process}.{name}"] for name in POSTERIOR_ARRAYS}
+                     for process in ("slope", "threshold")),
+                   *(float(arrays[name]) for name in SCALARS), arrays["linearity_bar"])

@@ -1,0 +1,109 @@
+"""mkm import / mkm export: a table made by hand reaches the report; a run leaves as a workbook."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from mkm.bench.storage import load_run
+from mkm.cli import main
+from mkm.fem.ladder import make_model
+from mkm.fem.paper import equation7_err_pct
+from mkm.registry import parse_specs
+from mkm.report import build_report
+
+MUSCLE = ["--id", "lab-muscle-7", "--D0", "30", "--t0", "3", "--L0", "282", "--eps", "12.2%"]
+PRESSURES = [0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.0]
+
+
+def _table(theta0: float = 32.0) -> pd.DataFrame:
+    """A lab's table: the thick-wall model's forces at these steps, in the lab's own names."""
+    force = make_model("thickwall", theta0_deg=theta0).predict(PRESSURES, 30.0, 3.0,
+                                                               0.122).force_N
+    return pd.DataFrame({"P [bar]": PRESSURES, "Kraft N": np.round(force, 3),
+                         "sweep": ["up"] * 5 + ["down"] * 2})
+
+
+def _run(argv, capsys):
+    code = main(argv)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
+def test_a_hand_made_table_reaches_the_report(suffix, tmp_path, capsys):
+    table = tmp_path / f"lab{suffix}"
+    frame = _table()
+    frame.to_csv(table, index=False) if suffix == ".csv" else frame.to_excel(table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--columns",
+                           "pressure=P [bar],force=Kraft N,direction=sweep", "--out",
+                           str(tmp_path / "runs")], capsys)
+    assert code == 0, err
+    run = load_run(out.strip().splitlines()[-1])
+    assert run.status == "imported" and run.complete and run.meta.muscle.id == "lab-muscle-7"
+    assert run.meta.imported_from["file"] == table.name
+    assert len(run.meta.imported_from["sha256"]) == 64
+    np.testing.assert_allclose(run.steps["force_N_mean"], frame["Kraft N"])
+    assert run.steps["direction"].tolist() == frame["sweep"].tolist()
+    # the report scores it: thick-wall at the angle that made the table is off by rounding only
+    # (no auto choice here: it would train the default surrogate)
+    build_report([run.path], parse_specs("thickwall:theta0_deg=32"),
+                 out_dir=tmp_path / "report", cache_dir=None, tolerance=None,
+                 surrogate_section=False)
+    summary = pd.read_csv(tmp_path / "report" / "summary.csv")
+    assert summary["valid_points"].iloc[0] == len(PRESSURES)
+    assert summary["max_abs_err_pct"].iloc[0] < 0.01
+    # and a model at another angle is as far off as Equation 7 says
+    other = make_model("thickwall", theta0_deg=30.0).predict(PRESSURES, 30.0, 3.0,
+                                                             0.122).force_N
+    expected = np.abs(equation7_err_pct(frame["Kraft N"], other, frame["Kraft N"].max())).max()
+    build_report([run.path], parse_specs("thickwall:theta0_deg=30"), out_dir=tmp_path / "r30",
+                 cache_dir=None, tolerance=None, surrogate_section=False)
+    got = pd.read_csv(tmp_path / "r30" / "summary.csv")["max_abs_err_pct"].iloc[0]
+    assert got == pytest.approx(expected, rel=1e-3)
+
+
+def test_directions_are_inferred_and_names_found(tmp_path, capsys):
+    table = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure_bar": PRESSURES, "force_N": np.arange(7.0)}).to_csv(table,
+                                                                                index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    steps = load_run(out.strip()).steps
+    assert steps["direction"].tolist() == ["up"] * 5 + ["down"] * 2  # after the top: down
+
+
+@pytest.mark.parametrize("content, argv, message", [
+    ("a,b\n1,2\n", [], "no pressure or force column found among a, b"),
+    ("pressure_bar,force_N\n1,x\n", [], "force column 'force_N', row 2: 'x' is not a finite"),
+    ("pressure_bar,force_N\n-1,2\n", [], "pressure_bar=-1 is invalid"),
+    ("pressure_bar,force_N\n1,2\n", ["--columns", "force=F"], "--columns force='F': no such"),
+    ("pressure_bar,force_N\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
+])
+def test_bad_tables_are_one_line(content, argv, message, tmp_path, capsys):
+    table = tmp_path / "bad.csv"
+    table.write_text(content)
+    code, out, err = _run(["import", str(table), *MUSCLE, *argv, "--out", str(tmp_path)],
+                          capsys)
+    assert code == 2 and out == "" and message in err and err.count("\n") == 1
+    assert not any(p.is_dir() for p in tmp_path.iterdir())  # no folder left behind
+
+
+def test_export_as_workbook_and_csv(tmp_path, capsys):
+    table = tmp_path / "lab.csv"
+    _table().rename(columns={"P [bar]": "pressure_bar", "Kraft N": "force_N",
+                             "sweep": "direction"}).to_csv(table, index=False)
+    _, out, _ = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "runs")], capsys)
+    run = out.strip()
+    code, out, err = _run(["export", run, "--out", str(tmp_path / "run.xlsx")], capsys)
+    assert code == 0, err
+    book = pd.read_excel(tmp_path / "run.xlsx", sheet_name=None)
+    assert set(book) == {"steps", "samples", "metadata"}
+    assert len(book["steps"]) == len(PRESSURES)
+    meta = dict(zip(book["metadata"]["key"], book["metadata"]["value"], strict=True))
+    assert meta["status"] == "imported" and meta["muscle.id"] == "lab-muscle-7"
+    code, out, _ = _run(["export", run, "--format", "csv", "--out", str(tmp_path / "csv")],
+                        capsys)
+    assert code == 0 and sorted(p.name for p in (tmp_path / "csv").iterdir()) == [
+        "metadata.csv", "samples.csv", "steps.csv"]
