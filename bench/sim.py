@@ -6,9 +6,11 @@ the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / ra
 - the regulator: a first-order lag (time constant ``regulator_tau_s``) towards the commanded
   pressure, rate-limited to ``regulator_slew_bar_per_s``, with a 1-5 V monitor output;
 - the muscle: the static force of a physics model (``sim.model``, a ``mkm.fem.ladder`` rung; by
-  default the axisymmetric FE model ``axisym``, which is none of the closed forms a report
+  default the axisymmetric FE model ``axisym``, at the braid angle and rubber of ``[sim.truth]``
+  where set, else the nominal ones, which is none of the closed forms a report
   compares, tabulated over pressure once per muscle, so a sample costs an interpolation) put
-  through two effects no model of the ladder has (no friction, no time dependence there):
+  through two effects no static model of the ladder has, defined once in
+  :mod:`mkm.fem.friction` (the ``friction`` rung predicts them):
 
   * hysteresis, a play operator of half-width ``hysteresis_fraction`` times the force: rising
     pressure reads low, falling high, as Coulomb friction between braid threads does
@@ -49,6 +51,7 @@ from mkm.bench.backend import (
     ReadTimeout,
 )
 from mkm.bench.ni import USB6001
+from mkm.fem.friction import advance
 
 USB6001_RANGE_V = USB6001.ai_range_V
 
@@ -73,13 +76,13 @@ def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
     """
     m, s = config.muscle, config.sim
     mesh = s.fe_mesh if s.model == "axisym" else None
-    return _table(s.model, mesh, m.L0_mm, m.D0_mm, m.t0_mm, m.eps,
-                  config.regulator.full_scale_bar, n)
+    return _table(s.model, mesh, m.L0_mm, tuple(sorted(s.truth.model_params().items())),
+                  m.D0_mm, m.t0_mm, m.eps, config.regulator.full_scale_bar, n)
 
 
 @functools.lru_cache(maxsize=32)
-def _table(model_name, mesh, L0_mm, D0_mm, t0_mm, eps, full_scale_bar, n):
-    model = _model(model_name, mesh, L0_mm)
+def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, full_scale_bar, n):
+    model = _model(model_name, mesh, L0_mm, dict(truth))
     pressure_bar = np.linspace(0.0, full_scale_bar, n)
     prediction = model.predict(pressure_bar, D0_mm, t0_mm, eps)
     force = np.where(prediction.valid, prediction.force_N, 0.0)
@@ -89,10 +92,11 @@ def _table(model_name, mesh, L0_mm, D0_mm, t0_mm, eps, full_scale_bar, n):
     return pressure_bar, force
 
 
-def _model(model_name, mesh, L0_mm):
+def _model(model_name, mesh, L0_mm, truth):
+    """The static model of the simulated muscle: the rung at the ``[sim.truth]`` values."""
     from mkm.fem.ladder import make_model
 
-    return make_model(model_name, L0_mm=L0_mm, **({"mesh": mesh} if mesh else {}))
+    return make_model(model_name, L0_mm=L0_mm, **({"mesh": mesh} if mesh else {}), **truth)
 
 
 def describe_physics(config) -> dict:
@@ -100,7 +104,7 @@ def describe_physics(config) -> dict:
     and the effects added to it."""
     s, m = config.sim, config.muscle
     mesh = s.fe_mesh if s.model == "axisym" else None
-    model = _model(s.model, mesh, m.L0_mm)
+    model = _model(s.model, mesh, m.L0_mm, s.truth.model_params())
     return {
         "force_model": s.model, "force_model_params": model.params(),
         "table": f"{s.model} tabulated at 81 pressures over 0-{config.regulator.full_scale_bar:g}"
@@ -158,9 +162,9 @@ class SimMuscleBench:
             change = (self.target_bar - self.pressure_bar) * self.lag
             self.pressure_bar += min(max(change, -self.max_step_bar), self.max_step_bar)
         static = float(np.interp(self.pressure_bar, self.table_p, self.table_F))
-        h = s.hysteresis_fraction
-        self.hysteretic_N = min(max(self.hysteretic_N, static * (1 - h)), static * (1 + h))
-        self.relaxed_N += (s.creep_fraction * self.hysteretic_N - self.relaxed_N) * self.relax
+        self.hysteretic_N, self.relaxed_N = advance(
+            self.hysteretic_N, self.relaxed_N, static, s.hysteresis_fraction, s.creep_fraction,
+            self.relax)
         # a slack muscle (force relaxing below zero after a pressure drop) cannot push
         force = max(self.hysteretic_N - self.relaxed_N, 0.0) + self.external_force_N
         self.force_N = force  # the truth a measurement of this sample is judged against

@@ -1,5 +1,5 @@
-"""Settings of the simulated bench (:mod:`mkm.bench.sim`): the ``[sim]`` and ``[sim.faults]``
-tables of a bench configuration.
+"""Settings of the simulated bench (:mod:`mkm.bench.sim`): the ``[sim]``, ``[sim.faults]`` and
+``[sim.truth]`` tables of a bench configuration.
 
 Every time and count is bounded, so no setting can make a simulated run endless: a reader stall
 of at most an hour, a driver buffer of one second to a day, faults at most a day into the run.
@@ -8,7 +8,10 @@ of at most an hour, a driver buffer of one second to a day, faults at most a day
 from __future__ import annotations
 
 import dataclasses
+import json
+import re
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from mkm.bench.settings import positive, within
 
@@ -43,6 +46,35 @@ class Faults:
 
 
 @dataclass(frozen=True)
+class Truth:
+    """The simulated muscle's own braid angle and rubber, where it differs from the nominal one.
+
+    Unset (None): the model's nominal value (the calibrated angle, Silastic S). With ``[sim]``'s
+    ``hysteresis_fraction``, ``creep_fraction`` and ``creep_tau_s`` this is the truth that
+    ``mkm identify`` must find blind: it is recorded in the run's simulator settings only.
+    """
+
+    theta0_deg: float | None = None
+    C10_MPa: float | None = None
+    C01_MPa: float | None = None
+
+    def check(self):
+        from mkm.fem.muscle import check_value
+
+        for f in dataclasses.fields(self):
+            if getattr(self, f.name) is not None:
+                check_value(f.name, getattr(self, f.name), prefix="sim.truth.")
+
+    def model_params(self) -> dict[str, float]:
+        """The set values, as force-model parameters."""
+        return {f.name: float(getattr(self, f.name)) for f in dataclasses.fields(self)
+                if getattr(self, f.name) is not None}
+
+
+TRUTH_FIELDS = tuple(f.name for f in dataclasses.fields(Truth))
+
+
+@dataclass(frozen=True)
 class Sim:
     """The simulated bench (:mod:`mkm.bench.sim`): the muscle's static force from ``model`` (a
     ``mkm.fem.ladder`` rung; ``axisym`` on the ``fe_mesh`` mesh), braid friction, creep, noise."""
@@ -60,9 +92,10 @@ class Sim:
     monitor_noise_V: float = 0.001
     buffer_s: float | None = None
     faults: Faults = field(default_factory=Faults)
+    truth: Truth = field(default_factory=Truth)
 
     def check(self):
-        from mkm.fem.ladder import model_names
+        from mkm.fem.ladder import entry, model_names
 
         if self.model not in model_names():
             raise ValueError(f"sim.model={self.model[:40]!r} is unknown: expected one of "
@@ -84,3 +117,27 @@ class Sim:
             positive("sim.buffer_s", self.buffer_s)
             within("sim.buffer_s", self.buffer_s, MIN_SIM_BUFFER_S, MAX_SIM_TIME_S, "s")
         self.faults.check()
+        self.truth.check()
+        declared = entry(self.model).parameters
+        refused = [k for k in self.truth.model_params() if k not in declared]
+        if refused:
+            raise ValueError(f"sim.truth.{refused[0]} is not a parameter of sim.model="
+                             f"{self.model!r}: expected some of "
+                             f"{', '.join(k for k in declared if k in TRUTH_FIELDS) or 'none'}")
+
+
+def remove_simulator_settings(run_dir) -> None:
+    """Delete a simulated run's ``[sim]`` settings, its truth among them, from its run.json
+    (the simulator's record and ``sim.*`` overrides) and its config.toml: what is left is what a
+    real bench records, for identification tested blind."""
+    run_dir = Path(run_dir)
+    meta = json.loads((run_dir / "run.json").read_text(encoding="utf-8"))
+    meta.get("hardware", {}).pop("sim", None)
+    meta["config_overrides"] = {k: v for k, v in (meta.get("config_overrides") or {}).items()
+                                if not k.startswith("sim")}
+    (run_dir / "run.json").write_text(json.dumps(meta, indent=2), encoding="utf-8")
+    config = run_dir / "config.toml"
+    text = config.read_text(encoding="utf-8")
+    # every [sim] and [sim.*] table, up to the next other table or the end
+    config.write_text(re.sub(r"(?ms)^\[sim(\.[^\]]*)?\][^\n]*\n.*?(?=^\[(?!sim[.\]])|\Z)",
+                             "", text), encoding="utf-8")

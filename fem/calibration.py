@@ -45,6 +45,7 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import minimize_scalar
 
+from mkm.fem.materials import MooneyRivlin, mooney_rivlin
 from mkm.fem.records import file_sha256, provenance, source_version, write_atomic
 
 CALIBRATION_FILE = Path(__file__).with_name("calibration.json")
@@ -133,7 +134,9 @@ def calibrated(key: str) -> dict:
 
 
 class CalibratedTheta0:
-    """Mixin of models whose braid angle defaults to their entry in the calibration file."""
+    """Mixin of models whose braid angle defaults to their entry in the calibration file, and
+    whose rubber (if they have one) to the entry's ``C10_MPa``, ``C01_MPa`` where a muscle was
+    identified (``mkm identify``), else to Silastic S."""
 
     theta0_deg: float | None
 
@@ -141,6 +144,16 @@ class CalibratedTheta0:
         if self.theta0_deg is not None:
             return float(self.theta0_deg)
         return calibrated(self.calibration_key)["theta0_deg"]
+
+    def _rubber(self) -> MooneyRivlin:
+        given = {"C10_MPa": self.C10_MPa, "C01_MPa": self.C01_MPa}
+        if None in given.values():
+            try:
+                entry = calibrated(self.calibration_key)
+            except ValueError:  # an explicit angle needs no entry, nor does the nominal rubber
+                entry = {}
+            given = {k: entry.get(k) if v is None else v for k, v in given.items()}
+        return mooney_rivlin(**given)
 
 
 def read_reference(path) -> pd.DataFrame:

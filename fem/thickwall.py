@@ -32,7 +32,7 @@ import numpy as np
 from mkm.fem.calibration import CalibratedTheta0
 from mkm.fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
 from mkm.fem.interface import Domain, ForceModel
-from mkm.fem.materials import SILASTIC_S, MooneyRivlin, mooney_rivlin
+from mkm.fem.materials import SILASTIC_S, MooneyRivlin
 
 
 def mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg):
@@ -260,7 +260,7 @@ class ThickWall(CalibratedTheta0, ForceModel):
 
     @property
     def material(self) -> MooneyRivlin:
-        return mooney_rivlin(self.C10_MPa, self.C01_MPa)
+        return self._rubber()
 
     def params(self):
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,

@@ -23,7 +23,7 @@ from typing import Any
 from mkm.auto import AutoModel
 from mkm.fem import ladder
 from mkm.fem.interface import ForceModel
-from mkm.fem.ladder import C01, C10, L0, THETA0, Entry, Parameter
+from mkm.fem.ladder import C01, C10, L0, MESH, THETA0, Entry, Parameter
 from mkm.surrogate import kinds
 
 
@@ -68,6 +68,24 @@ APP_ENTRIES: dict[str, Entry] = {
          "per_point": Parameter("true: choose per point instead of one model per sweep", bool),
          "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
         colour="tab:purple", contract_spec="auto:tolerance=0.05"),
+    "friction": Entry(
+        "friction", "mkm.fem.friction:FrictionCreep", "Static model + friction and creep",
+        "a static rung with braid friction (rising and falling branches) and one creep mode, "
+        "at the values `mkm identify` wrote into the calibration (default none)", "friction",
+        {"static": Parameter("the static rung: axisym (default), thickwall or eq2", str,
+                             ("axisym", "thickwall", "eq2")),
+         "direction": Parameter("rising (default), falling or mean (the static force)", str,
+                                ("rising", "falling", "mean")),
+         "hold_s": Parameter("time held at the pressure [s]; default 0, inf: relaxed"),
+         "hysteresis_fraction": Parameter("friction band half-width (a fraction); default "
+                                          "calibrated, else 0"),
+         "creep_fraction": Parameter("share of the force creep relaxes (a fraction); default "
+                                     "calibrated, else 0"),
+         "creep_tau_s": Parameter("creep time constant [s]; default calibrated, else 30"),
+         "mesh": MESH, "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
+        colour="tab:brown", expensive=True,
+        contract_spec="friction:static=thickwall,hysteresis_fraction=0.03,creep_fraction=0.02,"
+                      "hold_s=30"),
 }
 
 

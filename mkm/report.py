@@ -59,6 +59,7 @@ from mkm.html import (
     save_figure,
     table_html,
 )
+from mkm.identify.page import report_section
 from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import phase, progress_bar
@@ -156,6 +157,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     for r in runs:
         sections.append(_run_section(r, out, names, colours, prov))
         bar.update(1)
+    sections.append(report_section(run_dirs, out))
     if surrogate_section:
         sections.append(_surrogate_section(out, prov))
         bar.update(1)

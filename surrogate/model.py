@@ -55,11 +55,14 @@ class ErrorMargin:
 
 def default_parameters() -> dict[str, float]:
     """Muscle parameters used when the caller gives none: the paper's length, the calibrated
-    braid angle of the FE model (``fem/calibration.json``) and Silastic S."""
+    braid angle of the FE model (``fem/calibration.json``) and its rubber (an identified
+    muscle's, else Silastic S)."""
     from mkm.fem.calibration import calibrated
 
-    return {"L0_mm": float(L0_MM), "theta0_deg": float(calibrated("axisym")["theta0_deg"]),
-            "C10_MPa": SILASTIC_S.C10_MPa, "C01_MPa": SILASTIC_S.C01_MPa}
+    entry = calibrated("axisym")
+    return {"L0_mm": float(L0_MM), "theta0_deg": float(entry["theta0_deg"]),
+            "C10_MPa": float(entry.get("C10_MPa", SILASTIC_S.C10_MPa)),
+            "C01_MPa": float(entry.get("C01_MPa", SILASTIC_S.C01_MPa))}
 
 
 class SurrogateForceModel(ForceModel):

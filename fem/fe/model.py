@@ -43,7 +43,7 @@ from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, rubber, slidi
 from mkm.fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
 from mkm.fem.fe.newton import OrderedLU, load_path, newton
 from mkm.fem.interface import ForceModel
-from mkm.fem.materials import SILASTIC_S, MooneyRivlin, mooney_rivlin
+from mkm.fem.materials import SILASTIC_S, MooneyRivlin
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
@@ -576,7 +576,7 @@ class Axisym(CalibratedTheta0, ForceModel):
 
     @property
     def material(self) -> MooneyRivlin:
-        return mooney_rivlin(self.C10_MPa, self.C01_MPa)
+        return self._rubber()
 
     @property
     def calibration_key(self) -> str:

@@ -14,7 +14,17 @@ import sys
 import warnings
 
 from mkm import __version__
-from mkm.cli import bench, demo, design, exchange, fem, models, surrogate, validation
+from mkm.cli import (
+    bench,
+    demo,
+    design,
+    exchange,
+    fem,
+    identify,
+    models,
+    surrogate,
+    validation,
+)
 
 
 class _Parser(argparse.ArgumentParser):
@@ -39,7 +49,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"mkm {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
                                 parser_class=_Parser)
-    for group in (demo, bench, exchange, fem, surrogate, validation, design, models):
+    for group in (demo, bench, exchange, fem, surrogate, validation, design, identify, models):
         group.register(sub)
     return parser
 

@@ -21,9 +21,8 @@ from matplotlib.patches import Patch, Rectangle
 
 from mkm.design.result import DesignResult, design_record
 from mkm.design.search import geometry_text, span_text, surrogate_uncertainty
-from mkm.design.spec import NEAR_LOCK_FRACTION
+from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.calibration import calibration_provenance
-from mkm.fem.materials import MATERIALS
 from mkm.fem.records import (
     provenance,
     sidecar_path,
@@ -102,7 +101,8 @@ COLUMN_DOCS = {
     "rank": "rank of the design in the surrogate search (1: best by the objective)",
     "D0_mm": "inner tube diameter at rest [mm]", "t0_mm": "wall thickness at rest [mm]",
     "L0_mm": "length at rest [mm]", "theta0_deg": "braid angle at rest [deg]",
-    "rubber": "wall material (fem.materials.MATERIALS)",
+    "rubber": "wall material: calibrated (the calibration's, else Silastic S) or a set of "
+              "mkm.fem.materials.MATERIALS",
     "outer_diameter_mm": "braid diameter of the unloaded muscle at the working pressure [mm] "
                          "(thick-wall kinematics, free contraction)",
     "rubber_volume_cm3": "wall volume at rest [cm^3]",
@@ -221,8 +221,8 @@ def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) ->
             out["force"].append(f)
             out["margin"].append(u)
     out["outer"] = outer_diameter_mm(D0, t0, best["theta0_deg"], s.working_pressure_bar,
-                                     MATERIALS[best["rubber"]].C10_MPa,
-                                     MATERIALS[best["rubber"]].C01_MPa)
+                                     rubber_of(best["rubber"]).C10_MPa,
+                                     rubber_of(best["rubber"]).C01_MPa)
     limit = s.constraints.get("max_outer_diameter_mm")
     out["feasible"] = feasible if limit is None else feasible & (out["outer"] <= limit)
     return out

@@ -17,11 +17,11 @@ from mkm.design.spec import (
     Constraints,
     Requirement,
     parse_requirement,
+    rubber_of,
 )
 from mkm.fem.calibration import calibrated
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
-from mkm.fem.materials import MATERIALS
 from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import outer_diameter_mm
 from mkm.registry import parse_spec
@@ -54,7 +54,7 @@ FE_SEARCH_MESH = "coarse"
 
 def _constants(rubber: str) -> tuple[float, float]:
     """``(C10_MPa, C01_MPa)`` of a named rubber."""
-    return MATERIALS[rubber].C10_MPa, MATERIALS[rubber].C01_MPa
+    return rubber_of(rubber).C10_MPa, rubber_of(rubber).C01_MPa
 
 
 def rubber_volume_cm3(D0_mm, t0_mm, L0_mm):
@@ -133,7 +133,7 @@ def _predicts_at(model) -> dict:
     if not at:
         fixed = (getattr(model, "metadata", None) or {}).get("dataset", {}).get("fixed") or {}
         at = {k: float(fixed[k]) for k in PARAMETERS if fixed.get(k) is not None}
-    rubber = MATERIALS[DEFAULT_RUBBER]
+    rubber = rubber_of(DEFAULT_RUBBER)
     return {"L0_mm": L0_MM, "C10_MPa": rubber.C10_MPa, "C01_MPa": rubber.C01_MPa} | at
 
 
@@ -145,7 +145,7 @@ def _surrogate_for(spec, base, L0, theta0, rubber):
     with it (named in the ``ValueError``).
     """
     listed = set(spec.entry.parameters) - {k for k, _ in spec.params}
-    material = MATERIALS[rubber]
+    material = rubber_of(rubber)
     wanted = {"L0_mm": float(L0), "theta0_deg": float(theta0), "C10_MPa": material.C10_MPa,
               "C01_MPa": material.C01_MPa}
     at = _predicts_at(base)
@@ -350,7 +350,7 @@ def _outside_surrogate(requirements, constraints, domain, parameter_box) -> list
             out.append(f"{key}={span_text(low, high)} beyond {dlo:g}:{dhi:g}")
     for rubber in constraints.rubber:
         for key in ("C10_MPa", "C01_MPa"):
-            value = getattr(MATERIALS[rubber], key)
+            value = getattr(rubber_of(rubber), key)
             if key in parameter_box and not (parameter_box[key][0] <= value
                                              <= parameter_box[key][1]):
                 out.append(f"rubber={rubber} ({key}={value:g}) beyond "

@@ -7,11 +7,26 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
-from mkm.fem.materials import MATERIALS
+from mkm.fem.calibration import calibrated
+from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin
 from mkm.fem.ranges import parse_fraction, parse_number
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
-DEFAULT_RUBBER = "silastic_s"
+#: the rubber of the calibration in effect (a muscle ``mkm identify`` learnt), else Silastic S
+CALIBRATED_RUBBER = "calibrated"
+DEFAULT_RUBBER = CALIBRATED_RUBBER
+
+
+def rubber_of(name: str) -> MooneyRivlin:
+    """The Mooney-Rivlin rubber a design's ``rubber`` names: a set of
+    :data:`mkm.fem.materials.MATERIALS`, or :data:`CALIBRATED_RUBBER`."""
+    if name == CALIBRATED_RUBBER:
+        try:
+            entry = calibrated("axisym")
+        except ValueError:
+            entry = {}
+        return mooney_rivlin(entry.get("C10_MPa"), entry.get("C01_MPa"))
+    return MATERIALS[name]
 #: A requirement is near the braid lock from 75 % of Equation 2's eps_max on: the pressure term
 #: of the force has fallen to about a fifth of its value at rest there (theta0 = 32 deg).
 NEAR_LOCK_FRACTION = 0.75
@@ -114,10 +129,10 @@ class Constraints:
             if value is not None:
                 object.__setattr__(self, key, parse_bounds(value, key))
         rubber = (self.rubber,) if isinstance(self.rubber, str) else tuple(self.rubber)
-        unknown = [r for r in rubber if r not in MATERIALS]
+        unknown = [r for r in rubber if r not in MATERIALS and r != CALIBRATED_RUBBER]
         if unknown or not rubber:
             raise ValueError(f"rubber {', '.join(unknown) or 'none'} is unknown: expected some "
-                             f"of {', '.join(MATERIALS)}")
+                             f"of {CALIBRATED_RUBBER}, {', '.join(MATERIALS)}")
         object.__setattr__(self, "rubber", rubber)
         for key in ("max_outer_diameter_mm", "max_pressure_bar"):
             value = getattr(self, key)

@@ -7,10 +7,9 @@ import time
 import numpy as np
 import pandas as pd
 
-from mkm.design.spec import NEAR_LOCK_FRACTION
+from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
-from mkm.fem.materials import MATERIALS
 from mkm.registry import parse_spec
 
 CURVE_STEP_BAR = 0.25  # FE force-pressure curves of the verified designs
@@ -21,7 +20,7 @@ CURVE_STEP_BAR = 0.25  # FE force-pressure curves of the verified designs
 
 def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str) -> ForceModel:
     """The axisymmetric FE model (registry ``axisym``) of one design family."""
-    material = MATERIALS[rubber]
+    material = rubber_of(rubber)
     return parse_spec(f"axisym:mesh={mesh}").build(
         L0_mm=float(L0_mm), theta0_deg=float(theta0_deg), C10_MPa=material.C10_MPa,
         C01_MPa=material.C01_MPa)

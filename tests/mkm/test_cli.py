@@ -107,7 +107,7 @@ def test_bad_input_is_one_line_with_status_2(args, message, mkm_run):
 
 @pytest.mark.parametrize("args, message", [
     (["--model", "nope"], "mkm: error: unknown model 'nope' in 'nope': expected one of eq2, "
-     "thickwall, axisym, surrogate, auto (see `mkm models`)"),
+     "thickwall, axisym, surrogate, auto"),
     (["--model", "thickwall", "--diameter", "braid"],
      "mkm: error: --model thickwall: thickwall takes no diameter (its parameters: theta0_deg, "
      "L0_mm, C10_MPa, C01_MPa)"),

@@ -260,3 +260,21 @@ def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run
         pytest.approx(best["r1_fe_N"], rel=1e-6)
     record = json.loads((tmp_path / "designs.json").read_text())
     assert record["search"]["searcher"].startswith("FE (outside the surrogate's training box")
+
+
+def test_the_calibrated_rubber_is_the_identified_one(tmp_path):
+    """The default rubber of a design is the calibration's: Silastic S as shipped, the
+    identified rubber under an identified calibration (``mkm identify --out``)."""
+    import json as _json
+
+    from mkm.design.spec import DEFAULT_RUBBER, rubber_of
+    from mkm.fem.calibration import calibrated, use_calibration
+    from mkm.fem.materials import SILASTIC_S
+
+    assert DEFAULT_RUBBER == "calibrated" and rubber_of("calibrated") == SILASTIC_S
+    entry = dict(calibrated("axisym"), C10_MPa=0.1, C01_MPa=0.09)
+    lab = tmp_path / "lab.json"
+    lab.write_text(_json.dumps({"axisym": entry}))
+    with use_calibration(lab):
+        rubber = rubber_of("calibrated")
+    assert (rubber.C10_MPa, rubber.C01_MPa) == (0.1, 0.09)

@@ -1,0 +1,56 @@
+"""``mkm identify``: argument parsing only; the library is :mod:`mkm.identify`."""
+
+from __future__ import annotations
+
+import sys
+
+from mkm.cli.common import add_calibration_argument, with_calibration
+from mkm.paths import default_out
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "identify", help="fit braid angle, rubber, friction and creep to runs of one muscle",
+        description="Fit the muscle's braid angle theta0, rubber (one scale on Silastic S's "
+        "C10 and C01), braid friction and creep to one or more bench runs of it (both sweep "
+        "directions, the holds' time traces): search with the surrogate, confirm with the FE "
+        "model, 95 % intervals by a bootstrap over steps, friction and creep kept only where "
+        "the data warrant them (BIC), each run predicted from the others. --out DIR receives "
+        "calibration.json (for --calibration in every command), parameters.csv, steps.csv and "
+        "identification.json.",
+        epilog="example: mkm identify RUN_EPS0 RUN_EPS12 --out mkm-out/identify; then "
+        "mkm report RUN_EPS0 RUN_EPS12 --calibration mkm-out/identify/calibration.json")
+    parser.add_argument("runs", nargs="+", metavar="RUN_DIR", help="run folders of one muscle")
+    parser.add_argument("--params", default="theta0,rubber,friction,creep",
+                        help="what to fit, a comma list of theta0, rubber, friction, creep "
+                        "(default all)")
+    parser.add_argument("--model", default="axisym",
+                        help="static model spec that confirms the fit (and searches where the "
+                        "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "
+                        "default %(default)s")
+    parser.add_argument("--search", choices=("surrogate", "model"), default="surrogate",
+                        help="search with the surrogate (default) or with --model itself")
+    parser.add_argument("--seed", type=int, default=0, help="bootstrap seed (default 0)")
+    parser.add_argument("--out", default=None,
+                        help="output folder (default mkm-out/identify/<first run>)")
+    add_calibration_argument(parser)
+    parser.set_defaults(func=with_calibration(_identify))
+
+
+def _identify(args) -> int:
+    from pathlib import Path
+
+    from mkm.identify import identify
+
+    try:
+        result = identify(args.runs, params=args.params, model=args.model, search=args.search,
+                          seed=args.seed, notify=lambda line: print(f"mkm: {line}",
+                                                                    file=sys.stderr))
+    except RuntimeError as exc:  # a fit that failed: said, nothing written
+        print(f"mkm: error: identification failed: {exc}", file=sys.stderr)
+        return 1
+    out = Path(args.out) if args.out else default_out("identify", Path(args.runs[0]).name)
+    files = result.write(out)
+    print(result.summary())
+    print(f"wrote {', '.join(str(p) for p in files.values())}")
+    return 0

@@ -1,0 +1,288 @@
+"""Least-squares fit of a muscle's braid angle, rubber, friction and creep to its bench runs.
+
+The model of a run is the one the simulated bench is made of (:mod:`mkm.fem.friction`): a static
+force ``F(P; theta0, rubber)`` put through the friction play operator and one creep mode along
+the run's own pressure trace, sample by sample. The residuals are model minus measured force at
+every sample of every settled hold, both branches and every run at once
+(:func:`scipy.optimize.least_squares`, trust-region reflective within bounds).
+
+The rubber is one scale on Silastic S's two constants (``C10 = s C10_S``, ``C01 = s C01_S``): a
+force-pressure curve carries one rubber stiffness, not two constants' ratio.
+
+The static force comes from a :class:`StaticSource`: the surrogate (fast: the search) or any
+static rung of the registry (the FE model: the confirmation, and the search itself where the
+surrogate's box does not cover the muscle). :class:`Corrected` adds to the surrogate the
+difference the FE model showed at the optimum (one FE sweep per run), so the final fit is on
+the FE model's force.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from mkm.fem.friction import DEFAULTS as TERM_DEFAULTS
+from mkm.fem.friction import force_history
+from mkm.fem.materials import SILASTIC_S
+
+#: ``--params`` groups and the fitted parameters each holds (internal names)
+GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",),
+          "friction": ("hysteresis_fraction",), "creep": ("creep_fraction", "log_tau")}
+ORDER = ("theta0_deg", "rubber_scale", "hysteresis_fraction", "creep_fraction", "log_tau")
+TERM_BOUNDS = {"hysteresis_fraction": (0.0, 0.3), "creep_fraction": (0.0, 0.3),
+               "log_tau": (math.log(1.0), math.log(1000.0))}
+#: the FE model's search box where the surrogate's does not apply
+FE_BOX = {"theta0_deg": (15.0, 50.0), "rubber_scale": (0.2, 5.0)}
+#: grid of the surrogate's static table [bar] (the simulated bench tabulates at 0.05 bar too)
+TABLE_STEP_BAR = 0.05
+#: an optimum this close to a box edge (a fraction of the box) is at the edge
+EDGE_FRACTION = 1e-3
+
+
+def parse_groups(text: str | None) -> tuple[str, ...]:
+    """``--params`` as group names in canonical order; ``ValueError`` names an unknown one."""
+    if text is None:
+        return tuple(GROUPS)
+    names = [n.strip() for n in str(text).split(",") if n.strip()]
+    unknown = [n for n in names if n not in GROUPS]
+    if unknown:
+        raise ValueError(f"--params {text!r}: unknown parameter {unknown[0]!r}: expected some "
+                         f"of {','.join(GROUPS)}")
+    if not names:
+        raise ValueError(f"--params {text!r} is empty: expected some of {','.join(GROUPS)}")
+    return tuple(g for g in GROUPS if g in names)
+
+
+def full_parameters(values: dict[str, float]) -> dict[str, float]:
+    """The parameters as the toolkit names them, from the internal ones."""
+    scale = values["rubber_scale"]
+    return {"theta0_deg": values["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
+            "C01_MPa": scale * SILASTIC_S.C01_MPa,
+            "hysteresis_fraction": values["hysteresis_fraction"],
+            "creep_fraction": values["creep_fraction"], "creep_tau_s": math.exp(values["log_tau"])}
+
+
+def internal_values(values: dict[str, float]) -> dict[str, float]:
+    """The internal parameters from the toolkit's names (:func:`full_parameters`'s inverse;
+    the rubber scale is C10's)."""
+    return {"theta0_deg": values["theta0_deg"],
+            "rubber_scale": values["C10_MPa"] / SILASTIC_S.C10_MPa,
+            "hysteresis_fraction": values["hysteresis_fraction"],
+            "creep_fraction": values["creep_fraction"],
+            "log_tau": math.log(values["creep_tau_s"])}
+
+
+class StaticSource:
+    """Static force tables of the runs at a braid angle and rubber scale (see the module doc)."""
+
+    name = "static"
+    box: dict[str, tuple[float, float]] = FE_BOX
+
+    def tables(self, runs, theta0_deg: float, rubber_scale: float) -> list[tuple]:
+        raise NotImplementedError
+
+
+class ModelStatic(StaticSource):
+    """A registry spec (``axisym``, ``axisym:mesh=coarse``, ``thickwall``) solved at each run's
+    set pressures."""
+
+    def __init__(self, spec: str, L0_mm: float):
+        from mkm.registry import parse_spec
+
+        self.spec = parse_spec(spec)
+        if "C10_MPa" not in self.spec.entry.parameters:
+            raise ValueError(f"--model {spec!r} has no rubber: expected a model that takes "
+                             "theta0_deg, C10_MPa and C01_MPa (axisym, thickwall)")
+        self.name = self.spec.text
+        self.L0_mm = L0_mm
+        self.calls = 0
+
+    def model(self, theta0_deg: float, rubber_scale: float):
+        return self.spec.with_params(
+            L0_mm=self.L0_mm, theta0_deg=float(theta0_deg),
+            C10_MPa=rubber_scale * SILASTIC_S.C10_MPa,
+            C01_MPa=rubber_scale * SILASTIC_S.C01_MPa).build()
+
+    def tables(self, runs, theta0_deg, rubber_scale):
+        model = self.model(theta0_deg, rubber_scale)
+        out = []
+        for run in runs:
+            grid = run.table_pressures()
+            pred = model.predict(grid, *run.geometry)
+            self.calls += 1
+            if not pred.valid.all():
+                raise RuntimeError(f"{self.name} gives no valid force for run {run.name} at "
+                                   f"theta0_deg={theta0_deg:.3f}, rubber x{rubber_scale:.3f}")
+            out.append((grid, np.maximum(pred.force_N, 0.0)))
+        return out
+
+
+class SurrogateStatic(StaticSource):
+    """The surrogate, tabulated every :data:`TABLE_STEP_BAR` over each run's pressures."""
+
+    name = "surrogate"
+
+    def __init__(self, surrogate, L0_mm: float):
+        self.surrogate, self.L0_mm = surrogate, L0_mm
+        box = surrogate.box
+        self.box = {"theta0_deg": box["theta0_deg"],
+                    "rubber_scale": (max(box["C10_MPa"][0] / SILASTIC_S.C10_MPa,
+                                         box["C01_MPa"][0] / SILASTIC_S.C01_MPa),
+                                     min(box["C10_MPa"][1] / SILASTIC_S.C10_MPa,
+                                         box["C01_MPa"][1] / SILASTIC_S.C01_MPa))}
+
+    def outside(self, runs) -> list[str]:
+        """What of the runs' muscle the surrogate's box does not cover."""
+        box, out = self.surrogate.box, []
+        for run in runs:
+            values = {"D0_mm": run.geometry[0], "t0_mm": run.geometry[1], "eps": run.eps,
+                      "L0_mm": self.L0_mm,
+                      "pressure_bar": float(run.steps["set_pressure_bar"].max())}
+            out += [f"{k}={v:g} not in [{box[k][0]:g}, {box[k][1]:g}]"
+                    for k, v in values.items() if not box[k][0] <= v <= box[k][1] + 1e-9]
+        return sorted(set(out))
+
+    def tables(self, runs, theta0_deg, rubber_scale):
+        model = self.surrogate.with_parameters(
+            L0_mm=self.L0_mm, theta0_deg=float(theta0_deg),
+            C10_MPa=rubber_scale * SILASTIC_S.C10_MPa, C01_MPa=rubber_scale * SILASTIC_S.C01_MPa)
+        top = self.surrogate.box["pressure_bar"][1]
+        grids = [np.arange(0.0, min(top, run.pressure_bar.max()) + TABLE_STEP_BAR,
+                           TABLE_STEP_BAR).clip(max=top) for run in runs]
+        P = np.concatenate(grids)
+        geometry = [np.concatenate([np.full(g.size, v) for g, v in
+                                    zip(grids, column, strict=True)])
+                    for column in zip(*(run.geometry for run in runs), strict=True)]
+        force = np.maximum(model.predict(P, *geometry).force_N, 0.0)
+        return list(zip(grids, np.split(force, np.cumsum([g.size for g in grids])[:-1]),
+                        strict=True))
+
+
+class Corrected(StaticSource):
+    """A source plus, per run, the difference another model showed at one point (FE minus
+    surrogate at the optimum, at the FE's pressures; interpolated between them)."""
+
+    def __init__(self, base: StaticSource, corrections: list[tuple[np.ndarray, np.ndarray]]):
+        self.base, self.corrections = base, corrections
+        self.name, self.box = f"{base.name} corrected by the FE model", base.box
+
+    def tables(self, runs, theta0_deg, rubber_scale):
+        tables = self.base.tables(runs, theta0_deg, rubber_scale)
+        return [(grid, np.maximum(F + np.interp(grid, *self.corrections[k]), 0.0))
+                for k, (grid, F) in enumerate(tables)]
+
+
+def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tuple]:
+    """Per run: the FE model's pressures and FE minus ``base`` there, at ``values``."""
+    fe_tables = fe.tables(runs, values["theta0_deg"], values["rubber_scale"])
+    base_tables = base.tables(runs, values["theta0_deg"], values["rubber_scale"])
+    return [(grid, F - np.interp(grid, *base_tables[k]))
+            for k, (grid, F) in enumerate(fe_tables)]
+
+
+def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
+    """The model's force trace [N] at every sample of each run."""
+    tables = source.tables(runs, values["theta0_deg"], values["rubber_scale"])
+    return [force_history(run.time_s, np.interp(run.pressure_bar, *tables[k]),
+                          values["hysteresis_fraction"], values["creep_fraction"],
+                          math.exp(values["log_tau"]))
+            for k, run in enumerate(runs)]
+
+
+@dataclass
+class Fit:
+    """One least-squares fit: the fitted names, all values (fixed ones included), the residuals
+    at the holds and their Jacobian, and which run and step each residual belongs to."""
+
+    names: tuple[str, ...]
+    values: dict[str, float]
+    residual_N: np.ndarray
+    measured_N: np.ndarray
+    jacobian: np.ndarray
+    cluster: np.ndarray  # (run index, step index) per residual, as one integer
+    run_of_cluster: np.ndarray
+    bounds: dict[str, tuple[float, float]]
+    source: str
+    evaluations: int
+    message: str
+    at_edge: list[str] = field(default_factory=list)
+    tare_se_N: np.ndarray = field(default_factory=lambda: np.zeros(0))  # per run
+
+    @property
+    def n(self) -> int:
+        return int(self.residual_N.size)
+
+    @property
+    def rss(self) -> float:
+        return float(np.sum(self.residual_N ** 2))
+
+    @property
+    def bic(self) -> float:
+        """Bayesian information criterion of the hold residuals (Gaussian, variance fitted)."""
+        return self.n * math.log(self.rss / self.n) + len(self.names) * math.log(self.n)
+
+
+def nominal_values(theta0_deg: float) -> dict[str, float]:
+    """The nominal muscle: the calibrated angle, Silastic S, no friction, no creep."""
+    return {"theta0_deg": float(theta0_deg), "rubber_scale": 1.0,
+            "hysteresis_fraction": TERM_DEFAULTS["hysteresis_fraction"],
+            "creep_fraction": TERM_DEFAULTS["creep_fraction"],
+            "log_tau": math.log(TERM_DEFAULTS["creep_tau_s"])}
+
+
+def fit(source: StaticSource, runs, names, start: dict[str, float]) -> Fit:
+    """Fit ``names`` (of :data:`ORDER`) from ``start`` (every value), the rest held fixed.
+
+    Raises ``RuntimeError`` when the optimiser fails or the residuals are not finite.
+    """
+    names = tuple(n for n in ORDER if n in names)
+    bounds = {n: source.box.get(n) or TERM_BOUNDS[n] for n in names}
+    x0 = np.array([min(max(start[n], bounds[n][0]), bounds[n][1]) for n in names])
+    holds = [run.hold >= 0 for run in runs]
+    counter = [0]
+
+    def values_of(x):
+        return {**start, **dict(zip(names, map(float, x), strict=True))}
+
+    def residuals(x):
+        counter[0] += 1
+        out = traces(source, runs, values_of(x))
+        return np.concatenate([(t - run.force_N)[h]
+                               for t, run, h in zip(out, runs, holds, strict=True)])
+
+    if names:
+        # one residual scale for every parameter: a step of 0.01 deg, 0.1 %, 0.01 in log tau
+        scale = np.array([{"theta0_deg": 0.3, "rubber_scale": 0.05}.get(n, 0.01) for n in names])
+        res = least_squares(residuals, x0, bounds=tuple(np.array(b) for b in zip(
+            *bounds.values(), strict=True)), x_scale=scale, diff_step=1e-4, method="trf",
+            xtol=1e-10, ftol=1e-10, max_nfev=400)
+        if not res.success and res.status <= 0:
+            raise RuntimeError(f"the fit on {source.name} did not converge: {res.message}")
+        x, r, J, message = res.x, res.fun, res.jac, res.message
+    else:
+        x, r, J, message = x0, residuals(x0), np.zeros((0, 0)), "nothing to fit"
+        J = np.zeros((r.size, 0))
+    if not np.all(np.isfinite(r)):
+        raise RuntimeError(f"the fit on {source.name} gave non-finite residuals")
+    steps = [run.hold[h] for run, h in zip(runs, holds, strict=True)]
+    offsets = np.cumsum([0] + [len(run.steps) for run in runs])
+    cluster = np.concatenate([s + offsets[k] for k, s in enumerate(steps)])
+    run_of_cluster = np.repeat(np.arange(len(runs)), [len(run.steps) for run in runs])
+    values = values_of(x)
+    at_edge = [n for n in names if n in source.box and _at_edge(values[n], source.box[n])]
+    measured = np.concatenate([run.force_N[h] for run, h in zip(runs, holds, strict=True)])
+    return Fit(names, values, r, measured, J, cluster, run_of_cluster, bounds, source.name,
+               counter[0], str(message), at_edge, np.array([run.tare_se_N for run in runs]))
+
+
+def _at_edge(value: float, box: tuple[float, float]) -> bool:
+    width = box[1] - box[0]
+    return min(value - box[0], box[1] - value) <= EDGE_FRACTION * width
+
+
+def step_predictions(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
+    """Each run's predicted step means over its settled holds [N]."""
+    return [run.step_means(t) for run, t in zip(runs, traces(source, runs, values), strict=True)]

@@ -1,0 +1,88 @@
+"""95 % confidence intervals, correlation and identifiability of a fit, by a bootstrap over steps.
+
+Each bootstrap replicate draws every run's settled steps with replacement (a step's hold
+samples travel together: their noise and any model error they share stay correlated) and
+refits. The refit is the Gauss-Newton step from the optimum on the resampled residuals, with
+the Jacobian of the optimum (the linearised bootstrap): exact for a model linear in its
+parameters near the optimum, as this one is over an interval's width, and thousands of
+replicates cost milliseconds instead of thousands of fits.
+
+Two errors every step of a run shares are drawn with each replicate, since resampling steps
+cannot show them: the run's zero (its tare's standard error, normal) and the load cell's
+sensitivity (the TCA10's tolerance of +-0.1 %, uniform). Intervals are the replicates' 2.5 and
+97.5 percentiles, clipped to the parameter's bounds.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from mkm.identify.fitting import Fit
+
+REPLICATES = 4000
+LEVEL = 0.95
+#: correlation above which two parameters are said to be confounded by these runs
+CONFOUNDED = 0.95
+#: load-cell sensitivity tolerance (AEP TCA10 data sheet: <= +-0.1 %), a fraction
+SENSITIVITY_TOLERANCE = 0.001
+
+
+def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0) -> dict:
+    """Replicates of the fitted parameters (internal names), their intervals and correlation.
+
+    Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)},
+    "correlation": array (p, p), "identifiable": {name: bool}, "seed", "replicates"}``. A
+    parameter whose column of the Jacobian is (numerically) zero is not identifiable: the runs
+    do not inform it and its interval is its whole bound.
+    """
+    names, J, r = result.names, result.jacobian, result.residual_N
+    p = len(names)
+    rng = np.random.default_rng(seed)
+    if p == 0:
+        return {"draws": np.zeros((replicates, 0)), "interval": {}, "correlation": np.zeros((0, 0)),
+                "identifiable": {}, "seed": seed, "replicates": replicates}
+    column = np.sqrt(np.sum(J**2, axis=0))
+    identifiable = column > 1e-9 * max(column.max(), 1e-300)
+    use = np.flatnonzero(identifiable)
+    J = J[:, use]
+    n_clusters = result.run_of_cluster.size
+    # per step: J'J, J'r, J'F (a sensitivity error) and J'1 (a zero error)
+    JtJ = np.zeros((n_clusters, use.size, use.size))
+    Jtr, JtF, Jt1 = (np.zeros((n_clusters, use.size)) for _ in range(3))
+    np.add.at(JtJ, result.cluster, J[:, :, None] * J[:, None, :])
+    np.add.at(Jtr, result.cluster, J * r[:, None])
+    np.add.at(JtF, result.cluster, J * result.measured_N[:, None])
+    np.add.at(Jt1, result.cluster, J)
+    counts = np.zeros((replicates, n_clusters))
+    for run in np.unique(result.run_of_cluster):
+        members = np.flatnonzero(result.run_of_cluster == run)
+        picks = rng.choice(members, size=(replicates, members.size), replace=True)
+        for b in range(replicates):
+            counts[b] += np.bincount(picks[b], minlength=n_clusters)
+    # a measured force F' = (1 + s) F + z moves the residual model - F' by -(s F + z)
+    s = rng.uniform(-SENSITIVITY_TOLERANCE, SENSITIVITY_TOLERANCE, size=replicates)
+    tare = result.tare_se_N if result.tare_se_N.size else np.zeros(n_clusters)
+    z = rng.standard_normal((replicates, tare.size)) * tare
+    A = np.einsum("bc,cij->bij", counts, JtJ)
+    g = (np.einsum("bc,ci->bi", counts, Jtr) - s[:, None] * np.einsum("bc,ci->bi", counts, JtF)
+         - np.einsum("bc,ci->bi", counts * z[:, result.run_of_cluster], Jt1))
+    x = np.array([result.values[n] for n in names])
+    draws = np.tile(x, (replicates, 1))
+    # the Gauss-Newton step of each replicate from the optimum: -(J'WJ)^-1 J'W r
+    draws[:, use] -= np.linalg.solve(A, g[..., None])[..., 0]
+    low_q, high_q = 100 * (1 - LEVEL) / 2, 100 * (1 + LEVEL) / 2
+    interval = {}
+    for i, name in enumerate(names):
+        lo_b, hi_b = result.bounds[name]
+        if not identifiable[i]:
+            interval[name] = (lo_b, hi_b)
+            continue
+        column_draws = np.clip(draws[:, i], lo_b, hi_b)
+        interval[name] = (float(np.percentile(column_draws, low_q)),
+                          float(np.percentile(column_draws, high_q)))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        correlation = np.corrcoef(draws, rowvar=False) if p > 1 else np.ones((1, 1))
+    correlation = np.where(np.isfinite(correlation), correlation, 0.0)
+    return {"draws": draws, "interval": interval, "correlation": np.atleast_2d(correlation),
+            "identifiable": dict(zip(names, map(bool, identifiable), strict=True)),
+            "seed": seed, "replicates": replicates}

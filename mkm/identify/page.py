@@ -1,0 +1,129 @@
+"""The report's "identified muscle" section, shown when the calibration in effect holds one.
+
+``mkm report RUN... --calibration DIR/calibration.json`` (a file ``mkm identify`` wrote) shows
+the parameters with their intervals and what the runs could not tell; for each run of the report
+the measured rising and falling steps with both branches the identified muscle predicts, the
+hysteresis width per step, and the residuals before (the nominal model: the shipped calibration,
+Silastic S, no friction or creep) and after identification; and the held-out check of the
+identification's own runs. Without an identified muscle in the calibration, the section is
+empty.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from mkm.fem.calibration import CALIBRATION_FILE, calibrated, calibration_file, use_calibration
+from mkm.fem.friction import DEFAULTS
+from mkm.fem.materials import SILASTIC_S
+from mkm.html import esc, figure_html, save_figure, table_html
+from mkm.identify import fitting
+from mkm.identify.runs import load_run_data
+
+KEYS = ("axisym", "thickwall")  # the static models identify confirms with
+
+
+def identified_entry() -> tuple[str, dict] | None:
+    """``(key, entry)`` of the identified muscle in the calibration in effect, or None."""
+    for key in KEYS:
+        try:
+            entry = calibrated(key)
+        except ValueError:
+            continue
+        if "identified" in entry:
+            return key, entry
+    return None
+
+
+def report_section(run_dirs, out: Path) -> str:
+    """The section's HTML (empty without an identified muscle); figures go into ``out``."""
+    found = identified_entry()
+    if found is None:
+        return ""
+    key, entry = found
+    ident = entry["identified"]
+    parts = ['<h2 id="identified">Identified muscle</h2>',
+             f"<p>From <code>{esc(calibration_file())}</code>, written by "
+             f"<code>{esc(entry.get('command', ''))}</code> ({esc(entry.get('date_utc', ''))}) "
+             f"from {len(ident['runs'])} run(s): "
+             f"{esc(', '.join(r['run'] for r in ident['runs']))}. Intervals: "
+             f"{esc(ident['interval_method'])}.</p>"]
+    table = pd.DataFrame(ident["parameters"]).rename(columns={
+        "ci_low": "95 % CI low", "ci_high": "95 % CI high"})
+    parts.append(table_html(table, "Identified parameters (parameters.csv).", digits=5))
+    notes = list(ident.get("notes", [])) + [f"{g}: not warranted by the data (BIC), dropped"
+                                             for g in ident.get("dropped", [])]
+    if notes:
+        parts.append('<p class="note">' + "<br>".join(esc(n) for n in notes) + "</p>")
+
+    spec = key + (f":mesh={entry['model_params']['mesh']}"
+                  if "mesh" in entry.get("model_params", {}) else "")
+    identified = fitting.internal_values({
+        "theta0_deg": entry["theta0_deg"], "C10_MPa": entry.get("C10_MPa", SILASTIC_S.C10_MPa),
+        "C01_MPa": entry.get("C01_MPa", SILASTIC_S.C01_MPa),
+        **{k: entry.get(k, DEFAULTS[k]) for k in DEFAULTS}})
+    with use_calibration(CALIBRATION_FILE):
+        nominal = fitting.nominal_values(calibrated(key)["theta0_deg"])
+    rows = []
+    runs = [load_run_data(p) for p in run_dirs]
+    for k, run in enumerate(runs, start=1):
+        static = fitting.ModelStatic(spec, float(run.muscle["L0_mm"]))
+        after = fitting.step_predictions(static, [run], identified)[0]
+        before = fitting.step_predictions(static, [run], nominal)[0]
+        path = save_figure(_figure(run, before, after, k), Path(out) / f"identified_run{k}.png")
+        parts.append(figure_html(path, f"Run {k} ({esc(run.name)}, eps = {100 * run.eps:.1f} %)."
+                                 " Left: measured steps (filled up, open down) and the branches "
+                                 "the identified muscle predicts. Middle: hysteresis width per "
+                                 "pressure (falling minus rising). Right: residual measured "
+                                 "minus model, nominal and identified."))
+        scale = float(np.max(run.steps["force_N_mean"]))
+        for label, predicted in (("nominal", before), ("identified", after)):
+            err = 100 * (run.steps["force_N_mean"].to_numpy() - predicted) / scale
+            up = run.steps["direction"].to_numpy() == "up"
+            rows.append({"run": run.name, "model": label,
+                         "largest |Err%| rising": np.max(np.abs(err[up])) if up.any() else np.nan,
+                         "largest |Err%| falling": (np.max(np.abs(err[~up])) if (~up).any()
+                                                    else np.nan)})
+    parts.append(table_html(pd.DataFrame(rows), "Before and after identification: largest "
+                            "|Err%| (Equation 7) on each branch, the static model "
+                            f"{esc(spec)} with friction and creep."))
+    held = pd.DataFrame(ident.get("leave_one_run_out", []))
+    if "heldout_rising_pct" in held:
+        parts.append(table_html(held, "Held-out check of the identification's own runs: each "
+                                "predicted from the others (largest |Err%| per branch)."))
+    return "".join(parts)
+
+
+def _figure(run, before, after, k: int):
+    from matplotlib.figure import Figure
+
+    steps = run.steps.assign(before=before, after=after)
+    up, down = steps[steps["direction"] == "up"], steps[steps["direction"] == "down"]
+    fig = Figure(figsize=(12, 3.6), layout="constrained")
+    loop, width, resid = fig.subplots(1, 3)
+    loop.plot(up["pressure_bar_mean"], up["force_N_mean"], "o", color="k", label="measured up")
+    loop.plot(down["pressure_bar_mean"], down["force_N_mean"], "s", mfc="none", color="k",
+              label="measured down")
+    loop.plot(up["pressure_bar_mean"], up["after"], "-", color="tab:brown", label="rising")
+    loop.plot(down["pressure_bar_mean"], down["after"], "--", color="tab:brown",
+              label="falling")
+    loop.set(xlabel="pressure [bar]", ylabel="force [N]", title=f"run {k}: loop")
+    loop.legend(fontsize=8)
+    both = up.merge(down, on="set_pressure_bar", suffixes=("_up", "_down"))
+    width.plot(both["set_pressure_bar"], both["force_N_mean_down"] - both["force_N_mean_up"],
+               "o", color="k", label="measured")
+    width.plot(both["set_pressure_bar"], both["after_down"] - both["after_up"], "-",
+               color="tab:brown", label="identified")
+    width.set(xlabel="pressure [bar]", ylabel="falling - rising [N]", title="hysteresis width")
+    width.legend(fontsize=8)
+    for label, column, colour in (("nominal", "before", "tab:gray"),
+                                  ("identified", "after", "tab:brown")):
+        resid.plot(steps["pressure_bar_mean"], steps["force_N_mean"] - steps[column], "o",
+                   color=colour, label=label)
+    resid.axhline(0.0, color="k", lw=0.5)
+    resid.set(xlabel="pressure [bar]", ylabel="measured - model [N]", title="residuals")
+    resid.legend(fontsize=8)
+    return fig

@@ -1,0 +1,226 @@
+"""``identify``: from bench runs of one muscle to its parameters, intervals and held-out check.
+
+1. Search with the fast surrogate (its box spans theta0 28-38 deg and the rubber x0.5-1.5);
+   where it does not cover the muscle or the optimum lies on its edge, search with the FE model
+   instead and say so.
+2. Model selection: friction and creep are fitted with and without each term; the terms the
+   Bayesian information criterion (BIC) of the hold residuals does not warrant are dropped.
+3. Confirm with the FE model (one sweep per run at the optimum): the surrogate is corrected by
+   the difference the FE shows there and the fit repeated on the corrected force.
+4. 95 % intervals and correlation by a bootstrap over steps (:mod:`mkm.identify.intervals`),
+   and what the runs cannot separate.
+5. Leave-one-run-out: each run predicted by the FE model at the parameters fitted to the
+   others, against the nominal model (the calibrated angle, Silastic S, no friction or creep).
+"""
+
+from __future__ import annotations
+
+import itertools
+import time
+
+import numpy as np
+
+from mkm.fem.paper import equation7_err_pct
+from mkm.identify import fitting
+from mkm.identify.fitting import GROUPS, Corrected, ModelStatic, SurrogateStatic
+from mkm.identify.intervals import CONFOUNDED, bootstrap
+from mkm.identify.result import Identification
+from mkm.identify.runs import load_runs
+
+SEARCHES = ("surrogate", "model")
+#: where the fitted terms start (a term at its zero bound has no gradient to leave it by)
+TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01}
+
+
+def identify(run_dirs, params: str | None = None, model: str = "axisym",
+             search: str = "surrogate", surrogate=None, seed: int = 0,
+             notify=lambda message: None) -> Identification:
+    """Identify the muscle of ``run_dirs`` (see the module docstring).
+
+    Parameters
+    ----------
+    run_dirs : list of path
+        Run folders of one muscle.
+    params : str, optional
+        Comma list of ``theta0``, ``rubber``, ``friction``, ``creep`` (default all).
+    model : str
+        The static model's spec for the confirmation (and a search outside the surrogate's box):
+        a registry spec taking theta0 and the rubber (``axisym``, ``axisym:mesh=coarse``,
+        ``thickwall``).
+    search : {"surrogate", "model"}
+        Search with the surrogate (default), or with ``model`` itself (a closed form is fast).
+    surrogate : SurrogateForceModel, optional
+        The surrogate to search with (default: :func:`mkm.surrogate.default_model`).
+    seed : int
+        Seed of the bootstrap.
+    notify : callable
+        Receives one line per stage.
+    """
+    started = time.perf_counter()
+    groups = fitting.parse_groups(params)
+    if search not in SEARCHES:
+        raise ValueError(f"search={search!r} is invalid: expected one of {', '.join(SEARCHES)}")
+    runs = load_runs(run_dirs)
+    L0_mm = float(runs[0].muscle["L0_mm"])
+    fe = ModelStatic(model, L0_mm)
+    nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build()
+                                     .params()["theta0_deg"])
+    names = [n for g in groups for n in GROUPS[g]]
+    notes: list[str] = []
+    source = fe
+    if search == "surrogate":
+        if surrogate is None:
+            from mkm.surrogate import default_model
+
+            notify("loading the surrogate (trained on first use: minutes)")
+            surrogate = default_model()
+        source = SurrogateStatic(surrogate, L0_mm)
+        outside = source.outside(runs)
+        if outside:
+            notes.append("the surrogate's box does not cover this muscle ("
+                         + "; ".join(outside) + "): searched with the FE model instead")
+            source = fe
+    start = {**nominal, **{n: TERM_START.get(n, nominal[n]) for n in names}}
+
+    notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
+           f"of {len(runs)} run(s) with {source.name}")
+    best, candidates = _select(source, runs, names, start, nominal)
+    if source is not fe and best.at_edge:
+        notes.append(f"the optimum lies on the surrogate's box edge ({', '.join(best.at_edge)}):"
+                     " searched again with the FE model, outside the box")
+        source = fe
+        best, candidates = _select(source, runs, names, best.values, nominal)
+    searched_with = source.name
+
+    confirmation = {"model": fe.name}
+    if source is not fe:
+        notify(f"confirming the optimum with {fe.name} (one sweep per run)")
+        first = best
+        corrections = fitting.fe_correction(source, fe, runs, best.values)
+        source = Corrected(source, corrections)
+        best = fitting.fit(source, runs, best.names, best.values)
+        confirmation.update({
+            "largest_fe_minus_surrogate_N": float(max(np.max(np.abs(d)) for _, d in
+                                                      corrections)),
+            "rms_N_surrogate": _rms(first.residual_N),
+            "rms_N_fe_corrected": _rms(best.residual_N),
+            "shift": {n: best.values[n] - first.values[n] for n in best.names}})
+    else:
+        confirmation["note"] = "searched with the FE model itself"
+
+    notify("intervals: bootstrap over steps")
+    boot = bootstrap(best, seed=seed)
+    notes += _identifiability(runs, best, boot)
+    if best.at_edge:
+        notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
+                     "is cut there")
+
+    notify("leave-one-run-out and the nominal model")
+    checks = _checks(runs, fe, source, best, nominal)
+    single = [c["run"] for c in checks if "heldout" in c and len(
+        {round(r.eps, 4) for r in runs if r.name != c["run"]}) == 1]
+    if single and {"theta0_deg", "rubber_scale"} <= set(best.names):
+        notes.append(f"held out, {', '.join(single)} is predicted from runs at one eps, where "
+                     "theta0 and the rubber are confounded: its held-out error shows what one "
+                     "eps cannot tell, not the error of the fit to every run")
+    return Identification(
+        runs=runs, groups=groups, fit=best, bootstrap=boot, candidates=candidates,
+        confirmation=confirmation, checks=checks, notes=notes, model=fe.name,
+        searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started)
+
+
+def _rms(r) -> float:
+    return float(np.sqrt(np.mean(np.square(r))))
+
+
+def _select(source, runs, names, start, nominal):
+    """The fit of every friction/creep subset of ``names``; the lowest BIC wins."""
+    optional = [g for g in ("friction", "creep") if GROUPS[g][0] in names]
+    candidates, fits = [], {}
+    full = None
+    for dropped in itertools.chain.from_iterable(
+            itertools.combinations(optional, k) for k in range(len(optional) + 1)):
+        keep = [n for n in names if not any(n in GROUPS[g] for g in dropped)]
+        begin = {**(full.values if full else start),
+                 **{n: nominal[n] for g in dropped for n in GROUPS[g]}}
+        result = fitting.fit(source, runs, keep, begin)
+        full = full or result
+        fits[dropped] = result
+        candidates.append({"terms": ", ".join(g for g in optional if g not in dropped) or "none",
+                           "parameters": len(keep), "rss_N2": result.rss,
+                           "bic": result.bic, "n": result.n})
+    chosen = min(fits, key=lambda d: fits[d].bic)
+    for row, dropped in zip(candidates, fits, strict=True):
+        row["chosen"] = dropped == chosen
+    return fits[chosen], candidates
+
+
+def _identifiability(runs, best, boot) -> list[str]:
+    notes = []
+    names = list(best.names)
+    if "theta0_deg" in names and "rubber_scale" in names:
+        i, j = names.index("theta0_deg"), names.index("rubber_scale")
+        corr = float(boot["correlation"][i, j])
+        eps = sorted({round(r.eps, 4) for r in runs})
+        if len(eps) == 1:
+            notes.append(f"theta0 and the rubber are partly confounded by runs at one eps "
+                         f"({eps[0]:g}; correlation {corr:+.2f}): a run at a second eps "
+                         "separates them")
+        else:
+            notes.append(f"theta0 and the rubber are separated by the runs at eps "
+                         f"{', '.join(f'{e:g}' for e in eps)} (correlation {corr:+.2f})")
+    for (a, b) in itertools.combinations(range(len(names)), 2):
+        corr = float(boot["correlation"][a, b])
+        if abs(corr) > CONFOUNDED and {names[a], names[b]} != {"theta0_deg", "rubber_scale"}:
+            notes.append(f"{names[a]} and {names[b]} are confounded (correlation {corr:+.2f})")
+    for name, ok in boot["identifiable"].items():
+        if not ok:
+            notes.append(f"{name} is not identifiable from these runs: its interval is its "
+                         "search bound")
+    if "log_tau" in names and best.values["creep_fraction"] < 1e-3:
+        notes.append("creep_fraction is near 0: creep_tau_s is not identifiable")
+    return notes
+
+
+def _branch_errors(run, predicted) -> dict:
+    """Largest |Err%| (Equation 7 over the run) on the rising and the falling steps."""
+    err = equation7_err_pct(run.steps["force_N_mean"].to_numpy(dtype=float), predicted)
+    up = run.steps["direction"].to_numpy() == "up"
+    return {"rising": float(np.max(np.abs(err[up]))) if up.any() else float("nan"),
+            "falling": float(np.max(np.abs(err[~up]))) if (~up).any() else float("nan"),
+            "err_pct": err}
+
+
+def predict_runs(run_dirs, values: dict, model: str = "axisym") -> list[dict]:
+    """Each run predicted by ``model`` with friction and creep at ``values`` (as
+    :attr:`Identification.values` names them): the step means [N] and the largest |Err%| of
+    each branch (``rising``, ``falling``, ``err_pct`` per step)."""
+    runs = load_runs(run_dirs)
+    internal = fitting.internal_values(values)
+    predicted = fitting.step_predictions(ModelStatic(model, float(runs[0].muscle["L0_mm"])),
+                                         runs, internal)
+    return [{"run": run.name, "predicted_N": p, **_branch_errors(run, p)}
+            for run, p in zip(runs, predicted, strict=True)]
+
+
+def _checks(runs, fe, source, best, nominal) -> list[dict]:
+    """Per run: the nominal model's, the identified model's and the held-out prediction."""
+    before = fitting.step_predictions(fe, runs, nominal)
+    after = fitting.step_predictions(source, runs, best.values)
+    out = []
+    for k, run in enumerate(runs):
+        row = {"run": run.name, "eps": run.eps, "nominal": before[k], "identified": after[k],
+               "nominal_err": _branch_errors(run, before[k]),
+               "identified_err": _branch_errors(run, after[k])}
+        if len(runs) > 1:
+            others = [r for j, r in enumerate(runs) if j != k]
+            others_source = source
+            if isinstance(source, Corrected):
+                others_source = Corrected(source.base, [c for j, c in
+                                                        enumerate(source.corrections) if j != k])
+            held = fitting.fit(others_source, others, best.names, best.values)
+            predicted = fitting.step_predictions(fe, [run], held.values)[0]
+            row.update({"heldout": predicted, "heldout_err": _branch_errors(run, predicted),
+                        "heldout_values": fitting.full_parameters(held.values)})
+        out.append(row)
+    return out

@@ -1,0 +1,237 @@
+"""The identified muscle: its table, its calibration file and its record.
+
+``--out DIR`` receives
+
+- ``calibration.json``: the file ``--calibration`` takes. The static model's entry (``axisym``)
+  holds the identified ``theta0_deg``, ``C10_MPa``, ``C01_MPa`` and the friction and creep terms
+  kept (every model reads its rubber there, the ``friction`` rung its terms), with the runs,
+  their hashes, the parameters and their intervals; the closed forms' entries (``eq2-inner``,
+  ``eq2-braid``, ``thickwall``) hold their own theta0 fitted to the same runs as
+  ``mkm fem calibrate`` fits it, with the identified rubber and terms;
+- ``parameters.csv``: ``parameter,value,ci_low,ci_high,unit``, one row per fitted parameter;
+- ``steps.csv``: every settled step measured, predicted by the nominal model, by the identified
+  one and held out;
+- ``identification.json``: all of it (candidates, confirmation, correlation, notes, provenance).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from mkm.fem.calibration import (
+    calibration_entry,
+    check_reference,
+    default_target,
+    fit_theta0,
+    store_calibration,
+)
+from mkm.fem.materials import SILASTIC_S
+from mkm.fem.records import provenance, source_version, spreadsheet_safe, write_json_atomic
+from mkm.identify.fitting import Fit, full_parameters
+
+UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa",
+         "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
+#: the closed forms whose theta0 is fitted again to the runs, with their spec
+CLOSED_FORMS = {"eq2-inner": "eq2:diameter=inner", "eq2-braid": "eq2:diameter=braid",
+                "thickwall": "thickwall"}
+TERMS = ("hysteresis_fraction", "creep_fraction", "creep_tau_s")
+
+
+@dataclass
+class Identification:
+    """What :func:`mkm.identify.procedure.identify` found (see the module docstring)."""
+
+    runs: list
+    groups: tuple[str, ...]
+    fit: Fit
+    bootstrap: dict
+    candidates: list[dict]
+    confirmation: dict
+    checks: list[dict]
+    notes: list[str]
+    model: str
+    searched_with: str
+    nominal: dict
+    seconds: float
+    files: dict = field(default_factory=dict)
+
+    @property
+    def values(self) -> dict[str, float]:
+        """Every parameter as the toolkit names it (fixed and dropped ones at nominal)."""
+        return full_parameters(self.fit.values)
+
+    @property
+    def dropped(self) -> list[str]:
+        """The friction/creep groups asked for that the information criterion dropped."""
+        return [g for g in ("friction", "creep") if g in self.groups and not any(
+            n in self.fit.names for n in ({"friction": ("hysteresis_fraction",),
+                                           "creep": ("creep_fraction",)}[g]))]
+
+    def parameters(self) -> pd.DataFrame:
+        """``parameter, value, ci_low, ci_high, unit``: one row per fitted parameter."""
+        interval, rows = self.bootstrap["interval"], []
+        for name in self.fit.names:
+            low, high = interval[name]
+            value = self.fit.values[name]
+            if name == "rubber_scale":
+                for key, nominal in (("C10_MPa", SILASTIC_S.C10_MPa),
+                                     ("C01_MPa", SILASTIC_S.C01_MPa)):
+                    rows.append((key, value * nominal, low * nominal, high * nominal))
+            elif name == "log_tau":
+                rows.append(("creep_tau_s", math.exp(value), math.exp(low), math.exp(high)))
+            else:
+                rows.append((name, value, low, high))
+        frame = pd.DataFrame(rows, columns=["parameter", "value", "ci_low", "ci_high"])
+        return frame.assign(unit=frame["parameter"].map(UNITS))
+
+    def correlation(self) -> pd.DataFrame:
+        names = [{"rubber_scale": "rubber", "log_tau": "creep_tau_s"}.get(n, n)
+                 for n in self.fit.names]
+        return pd.DataFrame(self.bootstrap["correlation"], index=names, columns=names)
+
+    def steps_frame(self) -> pd.DataFrame:
+        frames = []
+        for run, check in zip(self.runs, self.checks, strict=True):
+            frame = run.steps[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
+                               "force_N_mean"]].assign(
+                run=run.name, eps=run.eps, nominal_N=check["nominal"],
+                identified_N=check["identified"])
+            if "heldout" in check:
+                frame = frame.assign(heldout_N=check["heldout"])
+            frames.append(frame)
+        table = pd.concat(frames, ignore_index=True)
+        return table[["run", "eps"] + [c for c in table.columns if c not in ("run", "eps")]]
+
+    def checks_table(self) -> pd.DataFrame:
+        """Per run: largest |Err%| on each branch, nominal, identified and held out."""
+        rows = []
+        for check in self.checks:
+            row = {"run": check["run"], "eps": check["eps"]}
+            for what in ("nominal", "identified", "heldout"):
+                if f"{what}_err" in check:
+                    for branch in ("rising", "falling"):
+                        row[f"{what}_{branch}_pct"] = check[f"{what}_err"][branch]
+            rows.append(row)
+        return pd.DataFrame(rows)
+
+    def record(self) -> dict:
+        """Everything, as plain data (identification.json and the calibration's provenance)."""
+        params = self.parameters()
+        return {
+            "runs": [{"run": r.name, "path": str(r.path), "muscle": r.muscle,
+                      "settled_steps": len(r.steps), "sha256": r.sha256} for r in self.runs],
+            "fitted": list(self.groups), "dropped": self.dropped,
+            "parameters": params.to_dict(orient="records"),
+            "interval_method": (f"bootstrap over settled steps within each run, "
+                                f"{self.bootstrap['replicates']} replicates, linearised at the "
+                                f"optimum, percentile 95 %, seed {self.bootstrap['seed']}"),
+            "correlation": self.correlation().round(4).to_dict(),
+            "model_selection": {"criterion": "BIC of the hold residuals",
+                                "candidates": self.candidates},
+            "searched_with": self.searched_with, "model": self.model,
+            "fe_confirmation": self.confirmation, "notes": self.notes,
+            "leave_one_run_out": self.checks_table().to_dict(orient="records"),
+            "seconds": round(self.seconds, 2),
+        }
+
+    def summary(self) -> str:
+        """The result as a user reads it on the terminal."""
+        lines = [f"identified from {len(self.runs)} run(s) "
+                 f"(eps {', '.join(f'{r.eps:g}' for r in self.runs)}), searched with "
+                 f"{self.searched_with}, confirmed with {self.model}, in {self.seconds:.1f} s"]
+        for row in self.parameters().itertuples():
+            lines.append(f"  {row.parameter:<20} {row.value:10.5g}  95 % CI "
+                         f"[{row.ci_low:.5g}, {row.ci_high:.5g}] {row.unit}")
+        for group in self.dropped:
+            lines.append(f"  {group}: not warranted by the data (BIC), dropped")
+        for check in self.checks_table().to_dict(orient="records"):
+            text = (f"  {check['run']}: largest |Err%| rising/falling: nominal "
+                    f"{check['nominal_rising_pct']:.2f}/{check['nominal_falling_pct']:.2f}, "
+                    f"identified {check['identified_rising_pct']:.2f}/"
+                    f"{check['identified_falling_pct']:.2f}")
+            if "heldout_rising_pct" in check:
+                text += (f", held out {check['heldout_rising_pct']:.2f}/"
+                         f"{check['heldout_falling_pct']:.2f}")
+            lines.append(text)
+        lines += [f"  note: {n}" for n in self.notes]
+        return "\n".join(lines)
+
+    def write(self, out_dir) -> dict[str, Path]:
+        """Write the four files into ``out_dir`` (created); return their paths."""
+        from mkm.registry import parse_spec
+
+        out = Path(out_dir)
+        out.mkdir(parents=True, exist_ok=True)
+        info = provenance()
+        record = {**self.record(), "provenance": {
+            **info, "code_version": source_version("mkm.identify.procedure", data=False)}}
+        files = {"calibration": out / "calibration.json", "parameters": out / "parameters.csv",
+                 "steps": out / "steps.csv", "identification": out / "identification.json"}
+        header = (f"# mkm identify: {info['command']} ({info['date_utc']}); runs "
+                  f"{', '.join(r.name for r in self.runs)}\n")
+        for key, frame in (("parameters", self.parameters()), ("steps", self.steps_frame())):
+            with open(files[key], "w", encoding="utf-8", newline="") as f:
+                f.write(header)
+                spreadsheet_safe(frame).to_csv(f, index=False, float_format="%.6g")
+        write_json_atomic(files["identification"], record)
+        files["calibration"].unlink(missing_ok=True)  # one identification per file
+        values = self.values
+        material = {"C10_MPa": round(values["C10_MPa"], 6), "C01_MPa": round(values["C01_MPa"], 6)}
+        terms = {k: round(values[k], 6) for k in TERMS if self._fitted_term(k)}
+        static = parse_spec(self.model).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))
+        model = static.build(theta0_deg=values["theta0_deg"], **material)
+        identified = {"runs": record["runs"], "parameters": record["parameters"],
+                      "interval_method": record["interval_method"], "dropped": self.dropped,
+                      "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"]}
+        reference = self._reference()
+        entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
+                 **material, **terms, "target": "identify", "identified": identified}
+        store_calibration(files["calibration"], model.calibration_key, entry)
+        for key, spec in CLOSED_FORMS.items():
+            if key == model.calibration_key:  # the identified model's own entry stays
+                continue
+            closed = parse_spec(spec).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))
+            rubber = material if "C10_MPa" in closed.entry.parameters else {}
+            fit = fit_theta0(lambda th, s=closed, m=rubber: s.build(theta0_deg=th, **m),
+                             reference, target=default_target(closed.build(theta0_deg=30.0)))
+            built = closed.build(theta0_deg=fit["theta0_deg"], **rubber)
+            entry = calibration_entry(fit, built, ", ".join(r.name for r in self.runs), None,
+                                      closed.entry.module)
+            store_calibration(files["calibration"], key, {
+                **entry, **material, **terms,
+                "reference_sha256": {r.name: r.sha256.get("steps.csv") for r in self.runs}})
+        self.files = files
+        return files
+
+    def _fitted_term(self, key: str) -> bool:
+        group = "friction" if key == "hysteresis_fraction" else "creep"
+        return group in self.groups  # a dropped term is written as 0: the rung must not add it
+
+    def _reference(self) -> pd.DataFrame:
+        """The runs' settled steps as a calibration reference (both branches)."""
+        frames = [run.steps.assign(D0_mm=run.geometry[0], t0_mm=run.geometry[1], eps=run.eps,
+                                   L0_mm=float(run.muscle["L0_mm"]))
+                  .rename(columns={"pressure_bar_mean": "pressure_bar",
+                                   "force_N_mean": "force_N"}) for run in self.runs]
+        table = pd.concat(frames, ignore_index=True)
+        return check_reference(table[["pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm",
+                                      "force_N", "direction"]], "the runs' settled steps")
+
+
+def _entry(theta0_deg: float, model, module: str, reference: pd.DataFrame) -> dict:
+    """The provenance fields every calibration entry has, for the identified model."""
+    info = provenance()
+    prediction = model.predict(*(reference[c].to_numpy() for c in
+                                 ("pressure_bar", "D0_mm", "t0_mm", "eps")))
+    residual = prediction.force_N - reference["force_N"].to_numpy()
+    return {"theta0_deg": round(float(theta0_deg), 4), "reference": "bench runs (identify)",
+            "rmse_N": round(float(np.sqrt(np.mean(residual**2))), 4),
+            "max_abs_residual_N": round(float(np.max(np.abs(residual))), 4),
+            "model_params": {k: v for k, v in model.params().items() if k != "theta0_deg"},
+            "command": info["command"], "date_utc": info["date_utc"],
+            "code_version": source_version(module, data=False), "versions": info["versions"]}

@@ -1,0 +1,141 @@
+"""The bench runs one identification reads: one muscle, its settled steps and its time traces.
+
+Only what a real bench records is read: the muscle (``D0_mm``, ``t0_mm``, ``L0_mm``, ``eps``),
+``steps.csv`` (which steps settled, their direction and hold window) and ``samples.csv`` (the
+pressure and force traces). A simulated run's ``[sim]`` settings are never read: they hold the
+truth the identification is tested against.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from mkm.fem.records import file_sha256
+
+#: muscle geometry that must agree between the runs of one muscle (eps differs by design)
+SAME_MUSCLE = ("D0_mm", "t0_mm", "L0_mm")
+SAME_MUSCLE_RTOL = 1e-6
+
+
+@dataclass
+class RunData:
+    """One run as the fit uses it.
+
+    ``time_s``, ``pressure_bar``, ``force_N``: every sample in time order, the pressure
+    denoised where the run held it (see :func:`load_run_data`); ``hold`` is the index of the
+    settled step each sample's hold belongs to (-1: not in a settled hold); ``steps`` the
+    settled steps (``step``, ``direction``, ``set_pressure_bar``, ``pressure_bar_mean``,
+    ``force_N_mean``, ``hold_start_s``, ``end_s``); ``tare_se_N`` the standard error of the
+    zero the run's forces are measured from (its tare samples' std over their root count).
+    """
+
+    path: Path
+    muscle: dict
+    time_s: np.ndarray
+    pressure_bar: np.ndarray
+    force_N: np.ndarray
+    hold: np.ndarray
+    steps: pd.DataFrame
+    sha256: dict
+    tare_se_N: float = 0.0
+
+    @property
+    def name(self) -> str:
+        return self.path.name
+
+    @property
+    def eps(self) -> float:
+        return float(self.muscle["eps"])
+
+    @property
+    def geometry(self) -> tuple[float, float, float]:
+        """``(D0_mm, t0_mm, eps)``: what a force model's predict takes besides the pressure."""
+        return float(self.muscle["D0_mm"]), float(self.muscle["t0_mm"]), self.eps
+
+    def table_pressures(self) -> np.ndarray:
+        """0 bar and the settled steps' set pressures: where the FE model is solved."""
+        return np.unique(np.r_[0.0, self.steps["set_pressure_bar"].to_numpy(dtype=float)])
+
+    def step_means(self, force_N: np.ndarray) -> np.ndarray:
+        """The mean of a force trace over each settled step's hold [N]."""
+        sums = np.bincount(self.hold[self.hold >= 0], weights=force_N[self.hold >= 0],
+                           minlength=len(self.steps))
+        counts = np.bincount(self.hold[self.hold >= 0], minlength=len(self.steps))
+        return sums / np.maximum(counts, 1)
+
+
+def load_run_data(path) -> RunData:
+    """A run folder for identification; ``ValueError`` names a run that cannot serve.
+
+    Refused: a run whose status is ``failed``, a run without a settled step, a run without its
+    samples. Within each settled hold the regulator has reached the set pressure (the settle
+    criterion), so the hold's samples take the hold's mean pressure: the monitor's noise would
+    otherwise ratchet the friction model's play operator.
+    """
+    from mkm.bench.storage import load_run
+
+    run = load_run(path)
+    path = Path(path)
+    if str(run.status) == "failed":
+        raise ValueError(f"run {path.name} has status failed ({run.reason or 'no reason'}): "
+                         "expected a complete run to identify from")
+    steps = run.steps
+    settled = steps[steps["settled"].astype(bool)] if len(steps) else steps
+    if settled.empty:
+        raise ValueError(f"run {path.name} has no settled step: expected at least one step "
+                         "with settled = true in steps.csv")
+    samples = run.samples
+    samples = samples[np.isfinite(samples["force_N"]) & np.isfinite(samples["pressure_bar"])]
+    if samples.empty:
+        raise ValueError(f"run {path.name} has no finite sample in samples.csv: expected the "
+                         "force and pressure traces")
+    samples = samples.sort_values("time_s")
+    time_s = samples["time_s"].to_numpy(dtype=float)
+    pressure = samples["pressure_bar"].to_numpy(dtype=float).copy()
+    hold = np.full(time_s.size, -1)
+    settled = settled.reset_index(drop=True).assign(
+        hold_start_s=lambda s: s["start_s"] + s["settle_s"])
+    for k, step in settled.iterrows():
+        inside = (time_s >= step["hold_start_s"] - 1e-9) & (time_s <= step["end_s"] + 1e-9)
+        hold[inside] = k
+        pressure[inside] = step["pressure_bar_mean"]
+    # the ramp into a hold does not overshoot it (first-order regulator): clip its noise too
+    in_step = samples["step"].to_numpy()
+    for _, step in settled.iterrows():
+        ramp = (in_step == step["step"]) & (time_s < step["hold_start_s"])
+        bound = step["pressure_bar_mean"]
+        pressure[ramp] = (np.minimum(pressure[ramp], bound) if step["direction"] == "up"
+                          else np.maximum(pressure[ramp], bound))
+    if not (hold >= 0).any():
+        raise ValueError(f"run {path.name}: no sample lies in a settled step's hold window")
+    muscle = {k: run.meta.muscle.__dict__[k] for k in ("id", "D0_mm", "t0_mm", "L0_mm", "eps")}
+    tare = samples.loc[samples["phase"] == "tare", "force_N"].to_numpy(dtype=float)
+    tare_se = float(np.std(tare, ddof=1) / np.sqrt(tare.size)) if tare.size > 1 else 0.0
+    sha = {name: file_sha256(path / name) for name in ("steps.csv", "samples.csv")
+           if (path / name).is_file()}
+    return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
+                   force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
+                   steps=settled[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
+                                  "force_N_mean", "hold_start_s", "end_s"]], sha256=sha,
+                   tare_se_N=tare_se)
+
+
+def load_runs(paths) -> list[RunData]:
+    """The runs of one muscle (:func:`load_run_data` each); ``ValueError`` for runs of
+    different muscles (another tube or length: the muscle id may differ, the geometry not)."""
+    paths = list(paths)
+    if not paths:
+        raise ValueError("no run folder given: expected at least one RUN_DIR")
+    runs = [load_run_data(p) for p in paths]
+    first = runs[0]
+    for run in runs[1:]:
+        for key in SAME_MUSCLE:
+            a, b = float(first.muscle[key]), float(run.muscle[key])
+            if not np.isclose(a, b, rtol=SAME_MUSCLE_RTOL, atol=0.0):
+                raise ValueError(f"runs {first.name} and {run.name} are of different muscles "
+                                 f"({key}={a:g} and {b:g}): expected the runs of one muscle")
+    return runs
