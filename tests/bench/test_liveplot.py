@@ -1,5 +1,7 @@
 """bench.liveplot: the live plot runs in its own process and never makes the run wait."""
 
+import pytest
+
 from mkm.bench.liveplot import LivePlot
 
 
