@@ -71,6 +71,12 @@ class DeviceCapabilities:
     ai_range_V: float  # +- this
     ao: tuple[str, ...]
     ao_range_V: float  # +- this
+    ai_bits: int  # ADC resolution
+
+    @property
+    def ai_lsb_V(self) -> float:
+        """One step of the ADC [V] over the input range (+-10 V at 14 bits: 1.22 mV)."""
+        return 2 * self.ai_range_V / 2**self.ai_bits
 
 
 @dataclass

@@ -28,6 +28,7 @@ from mkm.bench.settings import positive, read_toml, read_toml_file, typed_sectio
 from mkm.bench.sim_settings import Sim
 from mkm.bench.storage import check_muscle_id
 from mkm.fem.muscle import LIMITS, check_value, check_wall
+from mkm.fem.tolerances import Tolerances
 
 DEFAULT_CONFIG = "paper_prototype.toml"
 DEVICE_PATTERN = r"[A-Za-z0-9_][A-Za-z0-9 _.-]{0,63}"  # NI MAX names: Dev1, cDAQ1Mod1
@@ -50,24 +51,40 @@ MAX_TARE_STD_FRACTION = 0.01
 MAX_TARE_SHIFT_FRACTION = 0.1
 MAX_VENT_BELOW_BAR = 0.2
 MAX_VENT_TIMEOUT_S = 30.0
+MAX_DATASHEET_FRACTION = 0.05
 
 
 @dataclass(frozen=True)
 class Muscle:
     """The muscle on the bench: its id (names the run folder) and geometry, checked against the
-    one muscle type's limits (:data:`mkm.fem.muscle.LIMITS`)."""
+    one muscle type's limits (:data:`mkm.fem.muscle.LIMITS`), and the +- tolerances it is made
+    to (defaults and meaning: :class:`mkm.fem.tolerances.Tolerances`), which the report
+    propagates to every model's prediction."""
 
     id: str
     D0_mm: float
     t0_mm: float
     L0_mm: float
     eps: float
+    D0_tolerance_mm: float = Tolerances.D0_mm
+    t0_tolerance_mm: float = Tolerances.t0_mm
+    L0_tolerance_mm: float = Tolerances.L0_mm
+    eps_tolerance: float = Tolerances.eps
+    theta0_tolerance_deg: float = Tolerances.theta0_deg
 
     def check(self):
         check_muscle_id(self.id, "muscle.id")
         for name in ("D0_mm", "t0_mm", "L0_mm", "eps"):
             check_value(name, getattr(self, name), "muscle.")
         check_wall(self.D0_mm, self.t0_mm, "muscle.")
+        try:
+            self.tolerances()
+        except ValueError as exc:
+            raise ValueError(f"muscle.{exc}") from None
+
+    def tolerances(self) -> Tolerances:
+        return Tolerances(self.D0_tolerance_mm, self.t0_tolerance_mm, self.L0_tolerance_mm,
+                          self.eps_tolerance, self.theta0_tolerance_deg)
 
 
 @dataclass(frozen=True)
@@ -117,15 +134,27 @@ class Daq:
 
 @dataclass(frozen=True)
 class LoadCell:
+    """The load cell and its data sheet's error bounds (half-widths, for the uncertainty budget
+    of :mod:`mkm.bench.budget`): ``sensitivity_tolerance_fraction`` of the reading (the paper's
+    TCA10: <= 0.1 %), ``nonlinearity_fraction_fs`` and ``zero_drift_fraction_fs`` (over a run) of
+    the capacity (typical S-beam data sheets: 0.05 % and 0.02 %; set your cell's)."""
+
     capacity_N: float
     sensitivity_N_per_V: float
     offset_V: float = 0.0
     channel: str = "ai0"
+    sensitivity_tolerance_fraction: float = 0.001
+    nonlinearity_fraction_fs: float = 0.0005
+    zero_drift_fraction_fs: float = 0.0002
 
     def check(self):
         positive("loadcell.capacity_N", self.capacity_N)
         within("loadcell.capacity_N", self.capacity_N, 0.0, MAX_CAPACITY_N, "N")
         positive("loadcell.sensitivity_N_per_V", self.sensitivity_N_per_V)
+        for name in ("sensitivity_tolerance_fraction", "nonlinearity_fraction_fs",
+                     "zero_drift_fraction_fs"):
+            within(f"loadcell.{name}", getattr(self, name), 0.0, MAX_DATASHEET_FRACTION,
+                   "(a fraction)", "a data-sheet bound beyond 5 % is not a load cell")
 
     def force_N(self, volts):
         """Force [N] from load-cell volts with this calibration."""
@@ -141,6 +170,7 @@ class Regulator:
     monitor_channel: str = "ai1"
     monitor_V_at_zero: float = 1.0
     monitor_V_at_full_scale: float = 5.0
+    monitor_accuracy_bar: float = 0.04  # +- bound of the pressure reading: 1 % of an ITV's 4 bar
 
     @property
     def electronic(self) -> bool:
@@ -156,6 +186,9 @@ class Regulator:
         if not 0 < self.max_pressure_bar <= self.full_scale_bar:
             raise ValueError(f"regulator.max_pressure_bar={self.max_pressure_bar:g} is invalid: "
                              f"expected 0 < max <= full_scale_bar={self.full_scale_bar:g}")
+        within("regulator.monitor_accuracy_bar", self.monitor_accuracy_bar, 0.0,
+               MAX_TOLERANCE_FRACTION * self.full_scale_bar, "bar",
+               f"a tenth of regulator.full_scale_bar={self.full_scale_bar:g}")
         if not self.monitor_V_at_full_scale > self.monitor_V_at_zero:
             raise ValueError("regulator.monitor_V_at_full_scale must exceed monitor_V_at_zero")
 

@@ -47,6 +47,7 @@ USB6001 = DeviceCapabilities(
     ai_range_V=10.0,
     ao=("ao0", "ao1"),
     ao_range_V=10.0,
+    ai_bits=14,
 )
 USB6001_RANGE_V = USB6001.ai_range_V
 

@@ -29,10 +29,13 @@ def braid_lock(config) -> str | None:
             "little or nothing there")
 
 
-def expected_force_N(config) -> float:
-    """Equation 2's force [N] of the muscle at the highest planned pressure (0 past the lock)."""
+def expected_force_N(config, pressure_bar: float | None = None) -> float:
+    """Equation 2's force [N] of the muscle at ``pressure_bar`` (default: the highest planned
+    pressure), 0 past the lock."""
     m = config.muscle
-    force = chou_hannaford(max(config.sequence.pressures_bar), m.D0_mm, m.eps, _theta0_deg())
+    if pressure_bar is None:
+        pressure_bar = max(config.sequence.pressures_bar)
+    force = chou_hannaford(pressure_bar, m.D0_mm, m.eps, _theta0_deg())
     return max(float(force), 0.0)
 
 

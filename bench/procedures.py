@@ -16,9 +16,10 @@ import numpy as np
 from scipy import stats
 
 from mkm.bench.backend import Backend, BenchError, DeviceInfo
+from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import BenchOwner, request_stop
-from mkm.bench.preflight import warnings
+from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
 from mkm.bench.sequence import estimate_duration_s, plan_steps, validate_tare
 from mkm.bench.sim import STANDARD_GRAVITY
@@ -153,8 +154,9 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
 
 def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
           ) -> tuple[str, list[str]]:
-    """Dry run: device information, limits, the planned steps and the estimated duration; and
-    the warnings of :func:`mkm.bench.preflight.warnings` (braid lock, load cell)."""
+    """Dry run: device information, limits, the planned steps, the estimated duration and the
+    expected uncertainty budget (:func:`expected_budget_lines`); and the warnings of
+    :func:`mkm.bench.preflight.warnings` (braid lock, load cell)."""
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     with session(device, "check") as info:
@@ -180,5 +182,26 @@ def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual
         *(f"{s.step},{s.direction},{s.repeat},{s.set_pressure_bar:g}" for s in plan_steps(config)),
         f"estimated duration: {shortest / 60:.1f} to {longest / 60:.1f} min (at most "
         f"sequence.max_duration_h = {config.sequence.max_duration_h:g} h)",
+        *expected_budget_lines(config),
     ]
     return "\n".join(lines), warnings(config)
+
+
+def expected_budget_lines(config: BenchConfig) -> list[str]:
+    """The uncertainty budget a run of ``config`` can have at each planned pressure (forces
+    from Equation 2; data terms at the settle and tare limits), and its terms at the top."""
+    pressures = sorted(set(config.sequence.pressures_bar))
+    budgets = [(p, expected_force_N(config, p)) for p in pressures]
+    lines = ["expected uncertainty (k = 2; forces by Equation 2; hold scatter, drift and tare "
+             "at their settle and safety limits, so at most this):",
+             "set_pressure_bar,force_N,force_U_N,force_U_percent,pressure_U_bar,largest term"]
+    for p, force in budgets:
+        b = expected_budget(config, force)
+        top = b.ranked("force")[0][0].name
+        share = 100 * b.force_U_N / force if force > 0 else float("nan")
+        lines.append(f"{p:g},{force:.1f},{b.force_U_N:.2f},{share:.2f},"
+                     f"{b.pressure_U_bar:.3f},{top}")
+    p, force = budgets[-1]
+    lines.append(f"force budget at {p:g} bar, terms ranked by their share of the variance:")
+    lines.extend(budget_table(expected_budget(config, force), "force"))
+    return lines

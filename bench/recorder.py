@@ -9,6 +9,7 @@ vent: it returns what went wrong.
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 from mkm.bench.backend import DeviceInfo
@@ -41,7 +42,8 @@ class Recorder:
             muscle=MuscleMeta(m.id, m.D0_mm, m.t0_mm, m.L0_mm, m.eps),
             hardware=info.as_dict(),
             calibration={"loadcell": settings["loadcell"], "regulator": settings["regulator"],
-                         "safety": settings["safety"]},
+                         "safety": settings["safety"],
+                         "muscle_tolerances": dataclasses.asdict(m.tolerances())},
             sequence={**settings["sequence"], "settle": settings["settle"],
                       "force_limit_N": config.force_limit_N, "n_steps": n_steps,
                       "estimated_duration_s": list(estimated_duration_s)},

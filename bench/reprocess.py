@@ -5,23 +5,23 @@ outdated calibration is not lost: :func:`reprocess` writes a new run folder in w
 offset is the mean of the run's own tare samples again (checked by
 :func:`mkm.bench.sequence.validate_tare` with the new settings), every ``force_N`` is
 ``(loadcell_V - offset) x sensitivity`` with the new ``[loadcell]`` and ``[safety]`` sections,
-and every step's hold average is taken again over the same hold window (the samples after
-``start_s + settle_s`` up to ``end_s``). The samples are streamed, so memory does not grow with
-the run. ``run.json`` gets ``reprocessed_from``: the source folder, the SHA-256 of its run.json
-and samples.csv, and the calibration it had.
+and every step's hold average and uncertainty budget are taken again over the same hold window
+(the samples after ``start_s + settle_s`` up to ``end_s``). The samples are streamed, so memory
+does not grow with the run. ``run.json`` gets ``reprocessed_from``: the source folder, the
+SHA-256 of its run.json and samples.csv, and the calibration it had.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import math
 import re
 from pathlib import Path
 
 import numpy as np
 
+from mkm.bench.budget import Instrument
 from mkm.bench.config import BenchConfig, config_from_tables
-from mkm.bench.sequence import validate_tare
+from mkm.bench.sequence import HoldStats, Step, validate_tare
 from mkm.bench.settings import read_toml_file
 from mkm.bench.storage import (
     CommandRecord,
@@ -29,7 +29,6 @@ from mkm.bench.storage import (
     RunStatus,
     RunWriter,
     Sample,
-    StepRecord,
     iter_samples,
     load_run,
 )
@@ -93,7 +92,7 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
     steps = source.steps
     windows = {int(s.step): (float(s.start_s) + float(s.settle_s), float(s.end_s))
                for s in steps.itertuples()}
-    sums = {k: [0, 0.0, 0.0] for k in windows}  # n, sum, sum of squares of the hold forces
+    holds = {k: HoldStats() for k in windows}
     meta = dataclasses.replace(source.meta)
     prov = provenance()
     settings = config.as_dict()
@@ -123,19 +122,17 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
                 continue
             start, end = windows[int(k)]
             t = group["time_s"].to_numpy(float)
-            f = group["force_N"].to_numpy(float)[(t > start + 1e-9) & (t <= end + 1e-9)]
-            acc = sums[int(k)]
-            acc[0] += f.size
-            acc[1] += float(f.sum())
-            acc[2] += float((f**2).sum())
+            inside = (t > start + 1e-9) & (t <= end + 1e-9)
+            for row in group[inside].itertuples(index=False):
+                holds[int(k)].add(float(row.time_s), float(row.force_N), float(row.pressure_bar))
+    instrument = Instrument.from_config(config)
     for s in steps.itertuples():
-        n, total, squares = sums[int(s.step)]
-        mean = total / n if n else math.nan
-        std = math.sqrt(max(squares - total * mean, 0.0) / (n - 1)) if n > 1 else math.nan
-        writer.append_step(StepRecord(int(s.step), s.direction, int(s.repeat),
-                                      float(s.set_pressure_bar), float(s.pressure_bar_mean),
-                                      mean, std, int(n), bool(s.settled), float(s.settle_s),
-                                      float(s.start_s), float(s.end_s)))
+        hold = holds[int(s.step)]
+        row = hold.record(Step(int(s.step), s.direction, int(s.repeat), float(s.set_pressure_bar)),
+                          instrument, tare, bool(s.settled), float(s.settle_s), float(s.start_s),
+                          float(s.end_s))
+        # the pressures were not recomputed: keep the recorded mean
+        writer.append_step(row._replace(pressure_bar_mean=float(s.pressure_bar_mean)))
     for c in source.commands.itertuples(index=False):
         writer.append_command(CommandRecord(*c))
     writer.write_meta(meta)

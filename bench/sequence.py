@@ -1,7 +1,8 @@
 """The run's procedure: tare at 0 bar, pre-conditioning cycles, the pressure staircase.
 
 At each step the pressure is set, the reading is judged steady over the last ``settle.window_s``
-once per second of data (:func:`settle_reached`), then held ``settle.hold_s`` and averaged. Only
+once per second of data (:func:`settle_reached`), then held ``settle.hold_s`` and averaged, with
+the step's uncertainty budget (:mod:`mkm.bench.budget`). Only
 a window's worth of samples is kept while waiting and running sums while holding, so a step
 costs time and memory linear in its length, whatever ``settle.timeout_s``.
 
@@ -18,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mkm.bench.backend import BenchError
+from mkm.bench.budget import Instrument, step_budget
 from mkm.bench.config import BenchConfig
 from mkm.bench.storage import StepRecord
 from mkm.bench.worker import Acquisition
@@ -109,18 +111,31 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
             "shift_N": shift_N, "config_offset_V": cell.offset_V}
 
 
-class _Hold:
-    """Running mean and spread (Welford) of the hold samples."""
+class HoldStats:
+    """Running mean, spread and straight-line trend (Welford's updates) of a hold's samples.
+
+    Memory does not grow with the hold; :meth:`record` turns them into the step's row of
+    ``steps.csv``, with its uncertainty budget (:func:`mkm.bench.budget.step_budget`).
+    """
 
     def __init__(self):
         self.n, self.mean, self.m2 = 0, 0.0, 0.0
+        self.t_mean, self.t_m2, self.tf_c = 0.0, 0.0, 0.0
+        self.t_first, self.t_last = math.nan, math.nan
         self.p_sum, self.p_n = 0.0, 0
 
-    def add(self, force_N: float, pressure_bar: float) -> None:
+    def add(self, time_s: float, force_N: float, pressure_bar: float) -> None:
+        if self.n == 0:
+            self.t_first = time_s
+        self.t_last = time_s
+        t = time_s - self.t_first  # from the hold's start: no cancellation over long runs
         self.n += 1
-        delta = force_N - self.mean
+        delta, dt = force_N - self.mean, t - self.t_mean
         self.mean += delta / self.n
+        self.t_mean += dt / self.n
         self.m2 += delta * (force_N - self.mean)
+        self.t_m2 += dt * (t - self.t_mean)
+        self.tf_c += dt * (force_N - self.mean)
         if math.isfinite(pressure_bar):
             self.p_sum += pressure_bar
             self.p_n += 1
@@ -130,8 +145,27 @@ class _Hold:
         return math.sqrt(self.m2 / (self.n - 1)) if self.n > 1 else math.nan
 
     @property
+    def drift_N(self) -> float:
+        """Change of the least-squares line from the first to the last sample [N]."""
+        if self.n < 3 or self.t_m2 <= 0:
+            return math.nan
+        return self.tf_c / self.t_m2 * (self.t_last - self.t_first)
+
+    @property
     def pressure_mean(self) -> float:
         return self.p_sum / self.p_n if self.p_n else math.nan
+
+    def record(self, step: Step, instrument: Instrument, tare: dict | None, settled: bool,
+               settle_s: float, start_s: float, end_s: float) -> StepRecord:
+        """The step's row of ``steps.csv`` (``tare``: the run's tare, with ``std_N`` and ``n``)."""
+        force = self.mean if self.n else math.nan
+        tare = tare or {}
+        budget = step_budget(instrument, force, self.std, self.n, self.drift_N,
+                             float(tare.get("std_N", math.nan)), int(tare.get("n", 0)))
+        return StepRecord(step.step, step.direction, step.repeat, step.set_pressure_bar,
+                          self.pressure_mean, force, self.std, self.n, bool(settled),
+                          float(settle_s), start_s, end_s, self.drift_N,
+                          **budget.columns())
 
 
 class Staircase:
@@ -144,6 +178,7 @@ class Staircase:
         self.operator = operator
         self.on_step = on_step
         self.steps = plan_steps(config)
+        self.instrument = Instrument.from_config(config)
 
     def run(self) -> None:
         self.tare()
@@ -169,7 +204,7 @@ class Staircase:
         acq.set_pressure(step.set_pressure_bar, "step", self.operator)
         rate = self.config.daq.sample_rate_hz
         window: deque = deque(maxlen=int(math.ceil(st.window_s * rate)) + 2)
-        hold = _Hold()
+        hold = HoldStats()
         start_s = acq.next_index / rate
         settle_s, settled, next_check, elapsed = None, False, st.min_dwell_s, 0.0
         while True:
@@ -178,7 +213,7 @@ class Staircase:
                 if settle_s is None:
                     window.append((elapsed, row.force_N, row.pressure_bar))
                 elif elapsed > settle_s:
-                    hold.add(row.force_N, row.pressure_bar)
+                    hold.add(row.time_s, row.force_N, row.pressure_bar)
             if settle_s is None and elapsed >= next_check:
                 next_check = elapsed + 1.0  # judge once per second of data: cheap and enough
                 t, f, p = (np.array(c) for c in zip(*window, strict=True))
@@ -187,8 +222,6 @@ class Staircase:
                     settle_s = elapsed
             if settle_s is not None and elapsed - settle_s >= st.hold_s:
                 break
-        acq.recorder.step(StepRecord(
-            step.step, step.direction, step.repeat, step.set_pressure_bar, hold.pressure_mean,
-            hold.mean if hold.n else math.nan, hold.std, hold.n, bool(settled), float(settle_s),
-            start_s, start_s + elapsed))
+        acq.recorder.step(hold.record(step, self.instrument, acq.recorder.meta.tare, settled,
+                                      settle_s, start_s, start_s + elapsed))
         self.on_step(step)

@@ -55,8 +55,7 @@ from mkm.fem.friction import advance
 
 USB6001_RANGE_V = USB6001.ai_range_V
 
-ADC_BITS = 14
-LSB_V = 2 * USB6001_RANGE_V / 2**ADC_BITS  # USB-6001: 14 bits over +-10 V = 1.22 mV
+LSB_V = USB6001.ai_lsb_V  # USB-6001: 14 bits over +-10 V = 1.22 mV
 STANDARD_GRAVITY = 9.80665  # m/s^2, for masses hung on the load cell
 MANOMETER_RESOLUTION_BAR = 0.05  # smallest division of a 2.5 bar class-1 dial (paper's NUOVA FIMA)
 
@@ -139,6 +138,7 @@ class SimMuscleBench:
         self.hysteretic_N = 0.0
         self.relaxed_N = 0.0
         self.external_force_N = 0.0
+        self.force_N = 0.0  # true force on the cell at the last sample
         self.regulator_stuck = False  # fault: the regulator no longer follows its command
         self.loadcell_broken = False  # fault: the load-cell input reads NaN
 
@@ -167,6 +167,7 @@ class SimMuscleBench:
             self.relax)
         # a slack muscle (force relaxing below zero after a pressure drop) cannot push
         force = max(self.hysteretic_N - self.relaxed_N, 0.0) + self.external_force_N
+        self.force_N = force  # the truth a measurement of this sample is judged against
         cell_V = (force / cell.sensitivity_N_per_V + s.loadcell_offset_V
                   + s.noise_V * self._normal())
         span = r.monitor_V_at_full_scale - r.monitor_V_at_zero

@@ -110,6 +110,12 @@ class StepRecord(NamedTuple):
     settle_s: float  # time from the step's start to the start of the hold
     start_s: float
     end_s: float
+    # the hold's trend from first to last sample, and the budget of mkm.bench.budget (k = 2)
+    force_drift_N: float = math.nan
+    force_u_N: float = math.nan
+    force_U_N: float = math.nan
+    pressure_u_bar: float = math.nan
+    pressure_U_bar: float = math.nan
 
 
 class CommandRecord(NamedTuple):
@@ -125,6 +131,8 @@ class CommandRecord(NamedTuple):
 
 SAMPLE_COLUMNS = Sample._fields
 STEP_COLUMNS = StepRecord._fields
+# steps.csv before the uncertainty budget: still read, the budget columns empty
+STEP_COLUMNS_UNBUDGETED = STEP_COLUMNS[:STEP_COLUMNS.index("force_drift_N")]
 COMMAND_COLUMNS = CommandRecord._fields
 TIME_COLUMNS = {"time_s", "settle_s", "start_s", "end_s"}  # written with 10 digits: 0.1 s at 1e8 s
 
@@ -572,8 +580,13 @@ class _Prefix(io.RawIOBase):
         return len(data)
 
 
+# Earlier layouts a file may have: its columns missing there are read as empty
+OLDER_COLUMNS = {"steps.csv": (STEP_COLUMNS_UNBUDGETED,)}
+
+
 def _open_rows(path: Path, columns: tuple[str, ...], problems: list[str]):
-    """A text stream over the whole rows of ``path``, its header checked."""
+    """A text stream over the whole rows of ``path``, its header checked (the current one or an
+    earlier layout of :data:`OLDER_COLUMNS`), and the columns it has."""
     whole = _whole_rows_bytes(path)
     if whole < path.stat().st_size:
         problems.append(f"{path.name}: dropped a partial last row")
@@ -581,11 +594,13 @@ def _open_rows(path: Path, columns: tuple[str, ...], problems: list[str]):
     stream = io.TextIOWrapper(io.BufferedReader(_Prefix(raw, whole)), encoding="utf-8",
                               newline="")
     header = stream.readline().rstrip("\r\n")
-    if header != ",".join(columns):
+    layouts = (columns, *OLDER_COLUMNS.get(path.name, ()))
+    found = next((c for c in layouts if header == ",".join(c)), None)
+    if found is None:
         stream.close()
         raw.close()
         raise ValueError(f"{path} is corrupt: expected the header {','.join(columns[:3])}...")
-    return stream, raw
+    return stream, raw, found
 
 
 DTYPES = {"flags": "string", "phase": "string", "direction": "string", "purpose": "string"}
@@ -597,12 +612,12 @@ def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
         problems.append(f"{path.name} is missing")
         empty = pd.DataFrame(columns=list(columns))
         return iter([empty]) if chunksize else empty
-    stream, raw = _open_rows(path, columns, problems)
+    stream, raw, found = _open_rows(path, columns, problems)
     dtypes = {c: t for c, t in DTYPES.items() if c in columns}
 
     def frames():
         try:
-            reader = pd.read_csv(stream, names=list(columns), header=None, dtype=dtypes,
+            reader = pd.read_csv(stream, names=list(found), header=None, dtype=dtypes,
                                  chunksize=chunksize or 200_000)
             while True:
                 try:
@@ -612,7 +627,7 @@ def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
                 except (pd.errors.ParserError, ValueError) as exc:
                     first = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
                     raise ValueError(f"{path} is corrupt: {first}") from None
-                yield _typed(df, path)
+                yield _typed(df, path).reindex(columns=list(columns))
         finally:
             stream.close()
             raw.close()

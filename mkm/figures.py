@@ -77,13 +77,17 @@ INVALID_LABEL = "x above the axes: no valid number (invalid or out of domain)"
 
 
 def _measured(ax, steps: pd.DataFrame, label: str, marker_up="o", marker_down="s") -> None:
-    """Measured mean force ± std per step: filled up sweep, open down sweep."""
+    """Measured mean force per step with its expanded uncertainty (k = 2) in force and pressure
+    (± std where the run has no budget): filled up sweep, open down sweep."""
+    budget = "force_U_N" in steps and steps["force_U_N"].notna().any()
     for direction, marker, face in (("up", marker_up, "black"), ("down", marker_down, "white")):
         sweep = steps[steps["direction"] == direction].sort_values("pressure_bar_mean")
         if len(sweep):
             ax.errorbar(sweep["pressure_bar_mean"], sweep["force_N_mean"],
-                        yerr=sweep["force_N_std"], fmt=marker, markerfacecolor=face,
-                        label=f"{label}, {direction} (mean ± std)", **MEASURED)
+                        yerr=sweep["force_U_N" if budget else "force_N_std"],
+                        xerr=sweep["pressure_U_bar"] if budget else None, fmt=marker,
+                        markerfacecolor=face, label=f"{label}, {direction} "
+                        f"({'mean ± U, k = 2' if budget else 'mean ± std'})", **MEASURED)
 
 
 def _model_curve(ax, rows: pd.DataFrame, colour: str, label: str | None,
@@ -94,8 +98,10 @@ def _model_curve(ax, rows: pd.DataFrame, colour: str, label: str | None,
     force = curve["force_N"].where(curve["valid"])
     ax.plot(curve["pressure_bar"], force, linestyle=linestyle, color=colour, label=label,
             linewidth=linewidth, marker=marker or None, markersize=5, markerfacecolor="none")
-    if "force_std_N" in curve and curve["force_std_N"].notna().any():
-        std = curve["force_std_N"].where(curve["valid"])
+    band = "force_u_N" if "force_u_N" in curve and curve["force_u_N"].notna().any() \
+        else "force_std_N"
+    if band in curve and curve[band].notna().any():
+        std = curve[band].where(curve["valid"])
         ax.fill_between(curve["pressure_bar"], force - 2 * std, force + 2 * std, color=colour,
                         alpha=0.18, linewidth=0)
     return _mark_invalid(ax, curve.loc[~curve["valid"], "pressure_bar"], colour)
@@ -122,7 +128,8 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
         linestyle, marker = styles[model]
         any_invalid |= _model_curve(ax_f, rows, c, names[model], linestyle=linestyle,
                                     linewidth=widths[model], marker=marker)
-        any_band |= "force_std_N" in rows and rows["force_std_N"].notna().any()
+        any_band |= any(c in rows and rows[c].notna().any()
+                        for c in ("force_std_N", "force_u_N"))
         for direction, style, face in (("up", "-", c), ("down", "--", "white")):
             sweep = rows[rows["direction"] == direction].sort_values("pressure_bar")
             for ax, column in ((ax_e, "err_pct"), (ax_r, "residual_N")):
@@ -137,7 +144,7 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
     handles, labels = ax_f.get_legend_handles_labels()
     if any_band:
         handles.append(Patch(color="0.5", alpha=0.3))
-        labels.append("model ± 2 std (its own uncertainty)")
+        labels.append("model ± 2 u (the muscle's tolerances and the model's own std)")
     if any_invalid:
         handles.append(_invalid_handle())
         labels.append(INVALID_LABEL)

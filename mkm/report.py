@@ -40,6 +40,7 @@ from mkm.fem.records import (
     spreadsheet_safe,
     write_json_atomic,
 )
+from mkm.fem.tolerances import Tolerances
 from mkm.figures import (
     model_colours,
     overlay_figure,
@@ -60,10 +61,11 @@ from mkm.html import (
 )
 from mkm.identify.page import report_section
 from mkm.paths import default_out
-from mkm.prediction_cache import DEFAULT_CACHE_DIR, model_version
+from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import phase, progress_bar
-from mkm.registry import Spec, parse_spec
+from mkm.registry import Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
+from mkm.uncertainty import force_band, with_band
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
 
@@ -195,6 +197,7 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
             models[spec, L0_mm] = spec.build(L0_mm=L0_mm)
         model = models[spec, L0_mm]
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
+        pred = _with_band(pred, model, spec, L0_mm, muscle, meta, cache_dir)
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
@@ -204,6 +207,28 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
     return r
+
+
+def _with_band(pred, model, spec: Spec, L0_mm: float, muscle: dict, meta, cache_dir):
+    """``pred`` with the band of the muscle's tolerances (``force_u_N``, :mod:`mkm.uncertainty`;
+    the run's recorded tolerances, else the defaults), FE sweeps through the cache."""
+    recorded = (meta.get("calibration") or {}).get("muscle_tolerances") or {}
+    try:
+        tolerances = Tolerances(**{k: v for k, v in recorded.items()
+                                   if k in Tolerances.__dataclass_fields__})
+    except (TypeError, ValueError):
+        tolerances = Tolerances()
+    known = entries().get(model.name)
+
+    def predict(m, *args):
+        if known is not None and known.expensive:
+            return cached_predict(m, *args, cache_dir=cache_dir)[0]
+        return m.predict(*args)
+
+    band = force_band(model, pred.pressure_bar, muscle["D0_mm"], muscle["t0_mm"],
+                      muscle["eps"], tolerances, predict=predict,
+                      rebuild=lambda **params: spec.with_params(**params).build(L0_mm=L0_mm))
+    return with_band(pred, band)
 
 
 def _announce_training(spec: Spec, bar) -> None:
@@ -442,20 +467,57 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                            "valid points": s["valid_points"], "of": s["points"],
                            "largest |Err%|": s["max_abs_err_pct"], "RMSE [N]": s["rmse_N"],
                            "largest |residual| [N]": s["max_abs_residual_N"],
+                           "worst E_n": s["worst_E_n"], "at step": s["worst_step"],
+                           "consistent": {True: "yes", False: "no"}.get(s["consistent"], "—"),
                            "s per force": s["seconds_per_point"]} for s in r.summary])
     parts += [
         figure_html(fig_path, "Left: measured force per pressure step (mean ± std; filled "
                     "circles up sweep, open squares down sweep) with each model and, where it "
                     "has one, its ± 2 std band. Middle: Err% (Equation 7). Right: residual in "
                     "N (solid up, dashed down). " + provenance_links(r.keys)),
-        table_html(table, f"Per model (files: {stem}_errors.csv, summary.csv). "
+        table_html(table, f"Per model (files: {stem}_errors.csv, summary.csv). E_n = "
+                   "(F_meas − F_model) / √(U_meas² + (c U_p)² + U_model²) per step, every U "
+                   "expanded with k = 2 (c: the model's newtons per bar); consistent: |E_n| ≤ 1 "
+                   "at every valid step. The models have no braid friction and no creep, the "
+                   "measurement has both: a model can be inconsistent by them alone. "
                    + provenance_links(r.keys), formats={"s per force": ".3g"}),
+        _budget_section(r, provenance_links(r.keys[:1])),
         _domain_note(r.scored, _pressure_tolerance(meta), names),
         _invalid_note(r.scored, names),
         _signals(r, out),
         setup,
     ]
     return "".join(parts)
+
+
+def _budget_section(r: _Run, links: str) -> str:
+    """The measurement budget of the run's largest-force step, terms ranked by their share."""
+    from mkm.bench.budget import Instrument, step_budget
+
+    steps, tare = r.run.steps, r.meta.get("tare") or {}
+    if "force_U_N" not in steps or not steps["force_U_N"].notna().any():
+        return '<p class="note">This run was recorded without an uncertainty budget.</p>'
+    s = steps.loc[steps["force_N_mean"].idxmax()]
+    try:
+        instrument = Instrument.from_run(r.meta)
+    except (TypeError, ValueError, ZeroDivisionError):
+        return ('<p class="note">The calibration in run.json is incomplete: the budget\'s terms '
+                "cannot be listed (steps.csv has its totals).</p>")
+    budget = step_budget(instrument, float(s["force_N_mean"]),
+                         float(s["force_N_std"]), int(s["n"]), float(s["force_drift_N"]),
+                         float(tare.get("std_N", np.nan)), int(tare.get("n", 0)))
+    rows = [{"quantity": q, "term": t.name, "type": t.kind,
+             "u": t.u, "share of u² [%]": 100 * share, "from": t.source}
+            for q in ("force", "pressure") for t, share in budget.ranked(q)]
+    caption = (f"Measurement uncertainty budget of step {int(s['step'])} ({s['set_pressure_bar']:g}"
+               f" bar, {s['force_N_mean']:.1f} N, the run's largest force): u in N (force) or "
+               f"bar (pressure), ranked, so the first term is the one to improve. Combined: "
+               f"U = {budget.force_U_N:.2f} N and {budget.pressure_U_bar:.3f} bar (k = 2); "
+               f"the hold drifted {budget.drift_N:+.2f} N (creep: the hold mean is the "
+               "measurand). Every step's U is in steps.csv (force_U_N, pressure_U_bar). "
+               + links)
+    return table_html(pd.DataFrame(rows), caption, formats={"u": ".3g",
+                                                            "share of u² [%]": ".1f"})
 
 
 def _sim_note(sim: dict, specs) -> str:

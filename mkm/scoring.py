@@ -93,19 +93,61 @@ def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.Dat
     rows["residual_N"] = rows["force_meas_N"] - rows["force_N"]
     for key, value in prediction.extras.items():
         rows[key] = np.ravel(value)
+    return normalised_error(rows, steps)
+
+
+def normalised_error(rows: pd.DataFrame, steps: pd.DataFrame) -> pd.DataFrame:
+    """``rows`` with ``E_n`` = (F_meas - F_model) / sqrt(U_meas^2 + (c U_p)^2 + U_model^2).
+
+    ``U_meas`` and ``U_p`` are the step's expanded uncertainties (``force_U_N``,
+    ``pressure_U_bar`` of steps.csv, k = 2), ``c`` the model's force per bar (the slope of a
+    straight line through its valid forces: the models are linear in pressure) so the pressure's
+    uncertainty counts in newtons, ``U_model`` twice the prediction's ``force_u_N`` (0 when it
+    has none). ``|E_n| <= 1``: the step and the model agree within their uncertainties. NaN for a
+    run recorded without a budget.
+    """
+    if "force_U_N" not in steps:
+        rows["E_n"] = np.nan
+        return rows
+    U_meas = steps["force_U_N"].to_numpy(dtype=float)
+    U_p = steps["pressure_U_bar"].to_numpy(dtype=float)
+    ok = rows["valid"].to_numpy(bool) & np.isfinite(rows["force_N"].to_numpy(float))
+    pressure = rows["pressure_bar"].to_numpy(float)
+    slope = 0.0
+    if ok.sum() >= 2 and np.ptp(pressure[ok]) > 0:
+        slope = float(np.polyfit(pressure[ok], rows["force_N"].to_numpy(float)[ok], 1)[0])
+    u_model = rows["force_u_N"].to_numpy(float) if "force_u_N" in rows else 0.0
+    U = np.sqrt(U_meas**2 + (slope * U_p) ** 2 + (2 * np.nan_to_num(u_model)) ** 2)
+    rows["force_meas_U_N"] = U_meas
+    rows["U_N"] = U
+    rows["E_n"] = np.where(ok, rows["residual_N"].to_numpy(float) / U, np.nan)
     return rows
 
 
 def summarise_run(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
     """Numbers per model and run: points, valid points, largest |Err%|, RMSE [N] and largest
-    |residual| [N] over the valid points, seconds per predicted force, from the cache (1/0)."""
+    |residual| [N] over the valid points, seconds per predicted force, from the cache (1/0),
+    and the consistency verdict (:func:`consistency`)."""
     return {
         "model": scored["model"].iloc[0], "points": len(scored),
         **error_summary(scored["force_meas_N"], scored["force_N"], scored["valid"],
                         scored["err_pct"]),
         "seconds_per_point": seconds / max(len(scored), 1),
         "from_cache": int(cached),
+        **consistency(scored),
     }
+
+
+def consistency(scored: pd.DataFrame) -> dict:
+    """``consistent``: True when ``|E_n| <= 1`` at every step with a valid force, False otherwise,
+    None when no step has an E_n (no budget, no valid force); ``worst_E_n`` and ``worst_step``:
+    the step of largest ``|E_n|``."""
+    en = scored["E_n"].to_numpy(float) if "E_n" in scored else np.array([np.nan])
+    if not np.isfinite(en).any():
+        return {"consistent": None, "worst_E_n": np.nan, "worst_step": None}
+    k = int(np.nanargmax(np.abs(en)))
+    return {"consistent": bool(np.nanmax(np.abs(en)) <= 1.0), "worst_E_n": float(en[k]),
+            "worst_step": int(scored["step"].iloc[k])}
 
 
 def pareto_front(cost: np.ndarray, error: np.ndarray) -> np.ndarray:

@@ -39,7 +39,7 @@ def test_every_public_module_of_the_four_packages_is_walked():
         assert package in modules
     # the mapped folders (bench/, fem/, surrogate/) are walked too, subpackages included
     assert {"mkm.bench.storage", "mkm.fem.fe.model", "mkm.fem.dataset.grid",
-            "mkm.surrogate.estimators", "mkm.cli.fem", "mkm.registry"} <= set(modules)
+            "mkm.surrogate.kinds", "mkm.cli.fem", "mkm.registry"} <= set(modules)
 
 
 @pytest.mark.slow

@@ -14,7 +14,7 @@ from mkm.cli.common import (
 from mkm.fem.ranges import parse_number
 
 EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
-           "--t0 2:3 --out mkm-out/design")
+           "--t0 2:3 --out mkm-out/design; robust: add --tolerance D0=0.3,t0=0.1,theta0=1")
 
 
 def _spec(name: str):
@@ -38,6 +38,12 @@ def _objective(text: str) -> str:
         raise argparse.ArgumentTypeError(f"{text!r} is invalid: expected one of "
                                          f"{', '.join(OBJECTIVES)}")
     return text
+
+
+def _tolerances(text: str):
+    from mkm.fem.tolerances import Tolerances  # when given: a robust design's numbers
+
+    return Tolerances.parse(text)
 
 
 def register(subparsers) -> None:
@@ -75,6 +81,15 @@ def register(subparsers) -> None:
     p.add_argument("--max-pressure", dest="max_pressure_bar", metavar="BAR",
                    type=argtype(parse_number, "--max-pressure"),
                    help="largest working pressure [bar] (default: the requirements' largest)")
+    p.add_argument("--tolerance", metavar="D0=MM,t0=MM,theta0=DEG[,...]",
+                   type=argtype(_tolerances),
+                   help="robust designs: +- tolerances the muscle is built to (D0, t0, L0 [mm], "
+                   "eps, theta0 [deg], rubber [%% of C10 and C01]), e.g. "
+                   "D0=0.3,t0=0.1,theta0=1,rubber=10%%; every requirement is then met with "
+                   "--probability and designs.csv gets probability_r<k> columns")
+    p.add_argument("--probability", type=argtype(parse_number, "--probability"), default=0.95,
+                   help="with --tolerance: the probability each design meets every "
+                   "requirement (default: %(default)s)")
     p.add_argument("--objective", type=_objective, metavar="OBJECTIVE",
                    help="ranking of the designs: min-outer-diameter (default), "
                    "min-rubber-volume or max-margin")
@@ -111,6 +126,7 @@ def _design(args) -> int:
                         mesh=args.mesh, surrogate=args.surrogate,
                         progress=not args.no_progress,
                         cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR,
+                        tolerances=args.tolerance, probability=args.probability,
                         workers=args.workers, scheduler=args.scheduler)
     write_design(result, Path(args.out or default_out("design")))
     summary_line("design", result.summary())

@@ -123,7 +123,12 @@ FLAG_TEXT = {"near_lock": f"near the braid lock (eps >= {NEAR_LOCK_FRACTION:g} e
                           "Equation 2, or the FE failed at the locking angle)",
              "threshold_above_pressure": "the threshold pressure is at or above the "
                                          "requirement's pressure: the muscle does not pull",
-             "fe_not_converged": "the FE did not converge"}
+             "fe_not_converged": "the FE did not converge",
+             "worst_corner_short": "the FE force at the worst corner of the tolerances is "
+                                   "short of the requirement (a corner is rarer than the "
+                                   "probability's complement)",
+             "probability_below_target": "the Monte Carlo probability of meeting every "
+                                         "requirement is below the one asked for"}
 
 
 def _constraint_text(key: str, value) -> str:
@@ -154,7 +159,7 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
     reqs = pd.DataFrame([{"requirement": f"r{k}", "force [N] at least": r.force_N,
                           "pressure [bar]": r.pressure_bar, "eps": r.eps}
                          for k, r in enumerate(s.requirements, start=1)])
-    keep = ("_surrogate_N", "_fe_N", "_fe_margin_pct", "_meets")
+    keep = ("_surrogate_N", "_fe_N", "_fe_margin_pct", "_meets", "_fe_worst_corner_N")
     table = result.designs[[c for c in result.designs.columns
                             if not re.match(r"r\d+_", c) or c.endswith(keep)]]
     table = table.drop(columns=["fe_failure"]).set_index("rank").T  # a column per design

@@ -7,6 +7,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 import pandas as pd
 
+from mkm.design.robust import DEFAULT_PROBABILITY, check_designs, check_probability
 from mkm.design.search import (
     AXIS_VALUES,
     COARSE_STEPS,
@@ -69,8 +70,9 @@ class DesignResult:
 
     def table_text(self) -> str:
         """The verified designs, best first, as a plain text table for the terminal."""
+        robust = ["probability_all"] if "probability_all" in self.designs else []
         shown = self.designs[["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
-                              "outer_diameter_mm", "min_fe_margin_pct", "meets_all"]]
+                              "outer_diameter_mm", "min_fe_margin_pct", *robust, "meets_all"]]
         shown = shown.rename(columns={"outer_diameter_mm": "outer_mm",
                                       "min_fe_margin_pct": "FE_margin_%",
                                       "meets_all": "meets"})
@@ -83,9 +85,13 @@ DESIGN_COLUMNS = ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
 
 def run_design(requirements=(), constraints=None, objective=None, top=None, spec=None,
                mesh: str = "medium", surrogate: str = "surrogate",
-               progress: bool = False, cache_dir=None, workers: int | None = None,
+               progress: bool = False, cache_dir=None, tolerances=None,
+               probability: float = DEFAULT_PROBABILITY, workers: int | None = None,
                scheduler: str | None = None) -> DesignResult:
     """Search and verify (:func:`mkm.design_page.write_design` writes the files).
+
+    ``tolerances`` (:class:`mkm.fem.tolerances.Tolerances`): robust designs that meet every
+    requirement with ``probability`` when built to them (:mod:`mkm.design.robust`).
 
     ``spec``: a TOML file (:func:`load_spec`); ``requirements`` are added to its requirements,
     ``constraints`` (a dict) override its constraints, ``objective``/``top`` its own.
@@ -105,12 +111,21 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     top = top if top is not None else base.get("top", 5)
     if isinstance(top, bool) or not isinstance(top, int) or top < 1:
         raise ValueError(f"top={top!r} is invalid: expected a whole number of designs >= 1")
-    found = search(requirements, merged, objective, surrogate)
+    if tolerances is not None:
+        probability = check_probability(probability)
+    found = search(requirements, merged, objective, surrogate, tolerances, probability)
     chosen = pick(found.feasible, top, found.constraints)
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
     designs, curves, seconds, fe_models, hits = verify(
         chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir,
         workers, scheduler)
+    robust: list[str] = []
+    if tolerances is not None:
+        designs = check_designs(designs, found.requirements, found.models, tolerances,
+                                probability, mesh, cache_dir)
+        robust = [c for k in range(1, len(found.requirements) + 1) for c in (
+            f"probability_r{k}", f"probability_r{k}_search", f"r{k}_tolerance_u_N",
+            f"r{k}_fe_worst_corner_N")] + ["probability_all"]
     order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
     designs = designs.sort_values(["meets_all", *order], ascending=[False] + [
         objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",
@@ -118,7 +133,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     n = len(found.requirements)
     columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
-        f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + [
+        f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + robust + [
         "meets_all", "min_fe_margin_pct", "flags", "fe_failure"]
     return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
 

@@ -10,6 +10,7 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 
+from mkm.design.robust import describe, requirement_margin
 from mkm.design.spec import (
     DEFAULT_RUBBER,
     OBJECTIVES,
@@ -172,7 +173,8 @@ def _build(text: str) -> ForceModel:
 
 
 def search(requirements, constraints: Constraints | dict | None = None,
-           objective: str = "min-outer-diameter", surrogate: str = "surrogate") -> Search:
+           objective: str = "min-outer-diameter", surrogate: str = "surrogate",
+           tolerances=None, probability: float = 0.95) -> Search:
     """Predict the candidates of the design box with the surrogate and rank the feasible ones.
 
     Coarse to fine: every candidate of a coarse grid (:data:`COARSE_STEPS` in D0 and t0, times
@@ -180,6 +182,10 @@ def search(requirements, constraints: Constraints | dict | None = None,
     :data:`T0_STEP_MM`) over the coarse cells around the best :data:`SEEDS` coarse candidates
     (:func:`_seeds`): the optimum lies on the boundary of the feasible region, within a coarse
     cell of a feasible coarse candidate.
+
+    With ``tolerances`` (:class:`mkm.fem.tolerances.Tolerances`), a candidate must meet every
+    requirement with ``probability`` when built to them (:mod:`mkm.design.robust`) instead of
+    clearing the surrogate's margin.
 
     Raises ``ValueError`` (one line) for conflicting constraints, requirements past the braid
     lock or outside the surrogate's training box, and when no candidate is feasible (naming the
@@ -227,7 +233,8 @@ def search(requirements, constraints: Constraints | dict | None = None,
         steps, refine, fe_search = COARSE_STEPS, True, ""
 
     start = time.perf_counter()  # the search proper: the surrogates are loaded once
-    evaluate = _Evaluator(models, requirements, P_work, constraints.max_outer_diameter_mm)
+    evaluate = _Evaluator(models, requirements, P_work, constraints.max_outer_diameter_mm,
+                          tolerances, probability)
     D0c = _axis(box["D0_mm"], count=_coarse_count(box["D0_mm"], steps[0]))
     t0c = _axis(box["t0_mm"], count=_coarse_count(box["t0_mm"], steps[1]))
     D0, t0 = _walls(*np.meshgrid(D0c, t0c, indexing="ij"))
@@ -283,9 +290,11 @@ def _coarse_count(bounds, step) -> int:
 class _Evaluator:
     """Surrogate forces, margins and the housing check of candidates of one design family."""
 
-    def __init__(self, models, requirements, P_work, max_outer_diameter_mm):
+    def __init__(self, models, requirements, P_work, max_outer_diameter_mm, tolerances=None,
+                 probability: float = 0.95):
         self.models, self.requirements = models, requirements
         self.P_work, self.limit = P_work, max_outer_diameter_mm
+        self.tolerances, self.probability = tolerances, probability
         self.uncertainty = ""
 
     def __call__(self, family, D0, t0) -> pd.DataFrame:
@@ -302,7 +311,14 @@ class _Evaluator:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # the box lies inside the domain
                 pred = model.predict(req.pressure_bar, D0, t0, req.eps)
-            u, self.uncertainty = surrogate_uncertainty(model, pred, req.force_N)
+            if self.tolerances is None:
+                u, self.uncertainty = surrogate_uncertainty(model, pred, req.force_N)
+            else:
+                u, p, u_tol = requirement_margin(model, pred, req, D0, t0, self.tolerances,
+                                                 self.probability)
+                self.uncertainty = describe(self.tolerances, self.probability)
+                frame[f"probability_r{k}_search"] = p
+                frame[f"r{k}_tolerance_u_N"] = u_tol
             force = np.where(pred.valid & (req.eps < eps_max), pred.force_N, np.nan)
             frame[f"r{k}_surrogate_N"] = force
             frame[f"r{k}_uncertainty_N"] = u

@@ -1,8 +1,11 @@
 """bench.liveplot: the live plot runs in its own process and never makes the run wait."""
 
+import pytest
+
 from mkm.bench.liveplot import LivePlot
 
 
+@pytest.mark.slow  # a plotting process
 def test_live_plot_drops_points_instead_of_blocking(monkeypatch):
     monkeypatch.setenv("MPLBACKEND", "Agg")  # the child process has no display
     plot = LivePlot("test", maxsize=5)

@@ -135,6 +135,7 @@ def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(mkm_run):
     assert lines[1] == "pressure_bar,reference_N,model_N" and len(lines) == 2 + 11
 
 
+@pytest.mark.slow  # a fresh process
 def test_installed_console_script_runs():
     mkm = Path(sys.executable).with_name("mkm")
     done = subprocess.run([str(mkm), "fem", "solve", "--model", "thickwall", "--D0", "35",

@@ -61,6 +61,7 @@ def test_missing_dataset_is_a_one_line_error(tmp_path, capsys):
     assert "does not exist" in capsys.readouterr().err
 
 
+@pytest.mark.slow  # trains a surrogate
 def test_predict_at_an_untrained_length_is_refused(thickwall_dataset, tmp_path, capsys):
     # The fixture holds one length (282 mm): L0 = 150 mm is refused with the reason, both on
     # the command line and through the registry spec `mkm report` builds.

@@ -192,6 +192,7 @@ def test_calibrate_std_matches_normal_coverage(muscle_gp):
     assert coverage(error, new_std, 2.0) == pytest.approx(0.9545, abs=0.05)
 
 
+@pytest.mark.slow  # GP fits
 def test_calibrate_std_on_errors_growing_with_the_end_effect(muscle_gp, monkeypatch):
     # The default surrogate's errors grow with the end-effect correction log k_A (short, wide
     # muscles): here 3 x the model's std x (log k / its median)^1.5, normal. Pooled, they are

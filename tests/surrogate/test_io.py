@@ -287,6 +287,7 @@ def saved_gp(thickwall_dataset, tmp_path_factory):
     return model, save_model(model, tmp_path_factory.mktemp("models") / "muscle-gp")
 
 
+@pytest.mark.slow  # trains, then loads in a fresh process
 def test_default_kind_loads_without_scikit_learn(saved_gp):
     # The muscle GP predicts from predictor.npz: loading and predicting import neither
     # scikit-learn nor skops (1-2 s of imports), and give the estimator's numbers to the bit.

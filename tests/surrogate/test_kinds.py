@@ -95,6 +95,7 @@ def test_study_default_and_trusted_types_come_from_the_entries():
     assert "mkm.surrogate.paper_nets" in kinds.model_modules("net-2x50-relu")
 
 
+@pytest.mark.slow  # a fresh process
 def test_registered_kind_is_listed_by_the_cli_and_mkm_models():
     # A kind registered before the command line is built appears in `mkm surrogate train
     # --help` and in `mkm models` (a fresh process: the registry's texts are read at import).

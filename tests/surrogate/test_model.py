@@ -105,6 +105,7 @@ def test_fast_path_equals_the_estimator(physics, design_model):
     np.testing.assert_array_equal(prediction.extras["force_std_N"], std)
 
 
+@pytest.mark.slow  # trains a GP on the design
 def test_design_model_takes_every_muscle_parameter(design_model):
     assert design_model.inputs == ("pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm",
                                    "theta0_deg", "C10_MPa", "C01_MPa")

@@ -1,0 +1,265 @@
+"""The measurement uncertainty budget of a pressure step (GUM, JCGM 100:2008).
+
+A step's force is the mean of the hold samples minus the tare; its pressure the mean of the
+regulator monitor over the hold. Each standard uncertainty below is combined in quadrature
+(uncorrelated inputs, sensitivity coefficients 1) and expanded with the coverage factor
+``k = 2`` (:data:`COVERAGE_FACTOR`):
+
+force [N]
+    - load-cell sensitivity: ``loadcell.sensitivity_tolerance_fraction`` x ``abs(F)``, a rectangular
+      bound (type B, divided by sqrt 3);
+    - load-cell non-linearity and zero drift: ``loadcell.nonlinearity_fraction_fs`` and
+      ``loadcell.zero_drift_fraction_fs`` x ``capacity_N``, rectangular (type B);
+    - ADC resolution: one step of the device's ADC (the USB-6001: 14 bits over +-10 V, 1.22 mV,
+      0.24 N on a 196 N/V cell) over sqrt 12, for the hold mean and for the tare mean; divided by
+      sqrt n when the scatter is at least half a step (the noise dithers the rounding, which is
+      then independent from sample to sample), not reduced otherwise (type B);
+    - noise over the hold: the scatter about the hold's straight-line trend over sqrt n (type A);
+    - tare spread: the tare's scatter over sqrt n (type A): the offset subtracted from every
+      sample is a mean too.
+
+    The drift within the hold (the trend's change from its first to its last sample, recorded
+    as ``force_drift_N``) is removed from the scatter, so creep is not mistaken for noise, and is
+    not a term: the hold's mean is the measurand, and a trend does not make its mean uncertain.
+    The budget table shows it beside the terms.
+
+pressure [bar]
+    - reading accuracy: ``regulator.monitor_accuracy_bar``, rectangular (type B);
+    - ADC resolution of the monitor input, not reduced by averaging (the monitor's noise is below
+      one step), electronic regulator only.
+
+What the measurand is, and how friction and creep are treated: the measurand is the force the
+muscle develops on the cell during the hold, braid friction and creep included: they are the
+muscle's behaviour, not errors of the instrument, so no term of this budget stands for them.
+The models of the ladder have neither; a model compared with a step therefore differs by the
+friction of the branch (rising pressure reads low, falling high) and the creep so far, which the
+consistency verdict of :mod:`mkm.scoring` shows rather than hides. On simulated runs whose truth
+is known (:mod:`mkm.bench.coverage`) the k = 2 interval covers the mean true force of 95.7 % of
+513 settled steps (``benchmarks/bench_uncertainty.py``).
+
+:func:`step_budget` computes a step's budget from what ``steps.csv`` records (so the report
+recomputes the terms of a recorded step); :func:`expected_budget` the budget a configuration
+allows before anything is pressurised, with the data terms at the settle and tare limits.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+from typing import Any
+
+COVERAGE_FACTOR = 2.0
+SQRT3 = math.sqrt(3.0)
+SQRT12 = math.sqrt(12.0)
+
+
+@dataclass(frozen=True)
+class Term:
+    """One input of a budget: its standard uncertainty ``u`` [N or bar] and where it comes from."""
+
+    name: str
+    quantity: str  # "force" [N] | "pressure" [bar]
+    u: float
+    kind: str  # "A" (from the data) | "B" (data sheet, device)
+    source: str
+
+
+@dataclass(frozen=True)
+class Budget:
+    """The terms of one step, combined (root sum of squares) and expanded with ``k``."""
+
+    terms: tuple[Term, ...]
+    k: float = COVERAGE_FACTOR
+    drift_N: float = math.nan  # the hold's trend, first to last sample: shown, not a term
+
+    def u(self, quantity: str) -> float:
+        """Combined standard uncertainty of ``quantity`` ("force" [N] or "pressure" [bar])."""
+        return math.sqrt(sum(t.u**2 for t in self.terms if t.quantity == quantity))
+
+    @property
+    def force_u_N(self) -> float:
+        return self.u("force")
+
+    @property
+    def force_U_N(self) -> float:
+        return self.k * self.force_u_N
+
+    @property
+    def pressure_u_bar(self) -> float:
+        return self.u("pressure")
+
+    @property
+    def pressure_U_bar(self) -> float:
+        return self.k * self.pressure_u_bar
+
+    def columns(self) -> dict[str, float]:
+        """The four columns of ``steps.csv``."""
+        return {"force_u_N": self.force_u_N, "force_U_N": self.force_U_N,
+                "pressure_u_bar": self.pressure_u_bar, "pressure_U_bar": self.pressure_U_bar}
+
+    def ranked(self, quantity: str) -> list[tuple[Term, float]]:
+        """The terms of ``quantity``, largest first, each with its share of the variance."""
+        terms = [t for t in self.terms if t.quantity == quantity]
+        total = sum(t.u**2 for t in terms)
+        shares = [(t, t.u**2 / total if total > 0 else 0.0) for t in terms]
+        return sorted(shares, key=lambda pair: -pair[1])
+
+
+@dataclass(frozen=True)
+class Instrument:
+    """What a budget needs of the bench: the load cell's calibration and data-sheet bounds, the
+    pressure reading's accuracy, the ADC's step."""
+
+    capacity_N: float
+    sensitivity_N_per_V: float
+    sensitivity_tolerance_fraction: float
+    nonlinearity_fraction_fs: float
+    zero_drift_fraction_fs: float
+    lsb_V: float
+    monitor_accuracy_bar: float
+    monitor_bar_per_V: float  # nan with a manual regulator (no monitor input)
+
+    @classmethod
+    def from_config(cls, config) -> Instrument:
+        """From a :class:`mkm.bench.config.BenchConfig` and its backend's device."""
+        from mkm.bench.backends import backend_entry
+
+        caps = backend_entry(config.daq.backend).capabilities
+        return cls._make(config.loadcell, config.regulator, caps.ai_lsb_V)
+
+    @classmethod
+    def from_run(cls, meta) -> Instrument:
+        """From a run's ``run.json`` (:class:`mkm.bench.storage.RunMeta`): the calibration it
+        recorded, the defaults of :mod:`mkm.bench.config` where it predates a setting."""
+        from mkm.bench.backends import BACKENDS
+        from mkm.bench.config import LoadCell, Regulator
+        from mkm.bench.ni import USB6001
+
+        cell = _section(LoadCell, meta.calibration.get("loadcell") or {})
+        regulator = _section(Regulator, meta.calibration.get("regulator") or {})
+        entry = BACKENDS.get(str(meta.hardware.get("backend")))
+        caps = entry.capabilities if entry else USB6001
+        return cls._make(cell, regulator, caps.ai_lsb_V)
+
+    @classmethod
+    def _make(cls, cell, regulator, lsb_V: float) -> Instrument:
+        span_V = regulator.monitor_V_at_full_scale - regulator.monitor_V_at_zero
+        per_V = regulator.full_scale_bar / span_V if regulator.electronic else math.nan
+        return cls(cell.capacity_N, cell.sensitivity_N_per_V,
+                   cell.sensitivity_tolerance_fraction, cell.nonlinearity_fraction_fs,
+                   cell.zero_drift_fraction_fs, lsb_V, regulator.monitor_accuracy_bar, per_V)
+
+    @property
+    def lsb_N(self) -> float:
+        """One ADC step in newtons."""
+        return self.lsb_V * self.sensitivity_N_per_V
+
+
+def _section(cls, values: dict[str, Any]):
+    """``cls`` from a recorded section: known keys only, defaults for missing optional ones."""
+    known = {f.name for f in fields(cls)}
+    return cls(**{k: v for k, v in values.items() if k in known})
+
+
+def residual_std(std: float, n: int, drift: float) -> float:
+    """Scatter about a straight-line trend from the plain scatter ``std`` of ``n`` equally spaced
+    samples whose trend changes by ``drift`` from the first to the last (ddof 2).
+
+    The trend explains ``drift^2 n (n + 1) / (12 (n - 1))`` of the ``(n - 1) std^2`` sum of
+    squares (exact for equal spacing).
+    """
+    if n < 3 or not math.isfinite(std):
+        return math.nan
+    drift = drift if math.isfinite(drift) else 0.0
+    explained = drift**2 * n * (n + 1) / (12.0 * (n - 1))
+    return math.sqrt(max((n - 1) * std**2 - explained, 0.0) / (n - 2))
+
+
+def _resolution(lsb: float, scatter: float, n: int) -> float:
+    """Standard uncertainty [units of ``lsb``] a rounding to ``lsb`` leaves in a mean of ``n``."""
+    u = lsb / SQRT12
+    dithered = math.isfinite(scatter) and scatter >= lsb / 2
+    return u / math.sqrt(n) if dithered and n > 0 else u
+
+
+def step_budget(instrument: Instrument, force_N: float, force_N_std: float, n: int,
+                force_drift_N: float, tare_std_N: float, tare_n: int) -> Budget:
+    """The uncertainty budget of one step (see the module docstring).
+
+    Parameters
+    ----------
+    instrument : Instrument
+        The bench's calibration and data-sheet bounds.
+    force_N : float
+        The hold's mean force [N].
+    force_N_std : float
+        The hold samples' standard deviation [N] (ddof 1).
+    n : int
+        Samples in the hold.
+    force_drift_N : float
+        Change of the hold's straight-line trend from its first to its last sample [N].
+    tare_std_N, tare_n : float, int
+        The tare's standard deviation [N] and its number of samples.
+    """
+    i = instrument
+    scatter = residual_std(force_N_std, n, force_drift_N)
+    q_hold = _resolution(i.lsb_N, scatter, n)
+    q_tare = _resolution(i.lsb_N, tare_std_N, tare_n)
+    terms = [
+        Term("load-cell sensitivity", "force",
+             i.sensitivity_tolerance_fraction * abs(force_N) / SQRT3, "B",
+             f"loadcell.sensitivity_tolerance_fraction={i.sensitivity_tolerance_fraction:g}"),
+        Term("load-cell non-linearity", "force",
+             i.nonlinearity_fraction_fs * i.capacity_N / SQRT3, "B",
+             f"loadcell.nonlinearity_fraction_fs={i.nonlinearity_fraction_fs:g}"),
+        Term("load-cell zero drift", "force", i.zero_drift_fraction_fs * i.capacity_N / SQRT3,
+             "B", f"loadcell.zero_drift_fraction_fs={i.zero_drift_fraction_fs:g}"),
+        Term("ADC resolution", "force", math.hypot(q_hold, q_tare), "B",
+             f"1 step = {i.lsb_V * 1e3:.3g} mV = {i.lsb_N:.3g} N"),
+        Term("noise over the hold", "force",
+             scatter / math.sqrt(n) if n > 2 and math.isfinite(scatter) else math.nan, "A",
+             f"scatter about the trend {scatter:.3g} N over {n} samples"),
+        Term("tare spread", "force",
+             tare_std_N / math.sqrt(tare_n) if tare_n > 0 else math.nan, "A",
+             f"tare scatter {tare_std_N:.3g} N over {tare_n} samples"),
+        Term("pressure reading accuracy", "pressure", i.monitor_accuracy_bar / SQRT3, "B",
+             f"regulator.monitor_accuracy_bar={i.monitor_accuracy_bar:g}"),
+    ]
+    if math.isfinite(i.monitor_bar_per_V):
+        lsb_bar = i.lsb_V * i.monitor_bar_per_V
+        terms.append(Term("ADC resolution (monitor)", "pressure", lsb_bar / SQRT12, "B",
+                          f"1 step = {lsb_bar:.3g} bar"))
+    return Budget(tuple(terms), drift_N=force_drift_N)
+
+
+def expected_budget(config, force_N: float) -> Budget:
+    """The budget a step of ``config`` can have at the force ``force_N`` [N], before any run.
+
+    The data terms take the largest values a step can pass with: the hold's scatter at
+    ``settle.max_force_std_N``, its drift at ``settle.max_force_slope_N_per_s`` over
+    ``settle.hold_s``, the tare's scatter at ``safety.tare_max_std_N``; so the expanded
+    uncertainty is an upper bound, and the data-sheet terms show what the load cell allows.
+    """
+    st, rate = config.settle, config.daq.sample_rate_hz
+    n = max(int(round(st.hold_s * rate)), 3)
+    tare_n = max(int(round(config.sequence.tare_s * rate)), 2)
+    drift = st.max_force_slope_N_per_s * st.hold_s
+    # the plain scatter of a hold with that trend and that scatter about it
+    std = math.sqrt((st.max_force_std_N**2 * (n - 2) + drift**2 * n * (n + 1) / (12 * (n - 1)))
+                    / (n - 1))
+    return step_budget(Instrument.from_config(config), force_N, std, n, drift,
+                       config.safety.tare_max_std_N, tare_n)
+
+
+def budget_table(budget: Budget, quantity: str = "force") -> list[str]:
+    """Lines of text: the terms of ``quantity`` ranked by their share of the variance."""
+    unit = "N" if quantity == "force" else "bar"
+    lines = [f"term,type,u_{unit},share_percent,source"]
+    for term, share in budget.ranked(quantity):
+        lines.append(f"{term.name},{term.kind},{term.u:.3g},{100 * share:.1f},{term.source}")
+    u = budget.u(quantity)
+    lines.append(f"combined,,{u:.3g},100,expanded U = {budget.k:g} u = {budget.k * u:.3g} {unit}")
+    if quantity == "force" and math.isfinite(budget.drift_N):
+        lines.append(f"(drift within the hold: {budget.drift_N:+.3g} N; the hold mean is the "
+                     "measurand, so not a term)")
+    return lines

@@ -1,0 +1,129 @@
+"""Coverage of the step budget on simulated runs, and the speed of prediction bands.
+
+Run outside the test suite:
+
+    .venv/bin/python benchmarks/bench_uncertainty.py [--runs 27] [--eps 0 0.122]
+
+1. Coverage (mkm.bench.coverage): ``--runs`` simulated runs of the paper's prototype per eps
+   (19 settled steps each; the simulator's noise, 14-bit quantisation, braid friction and creep
+   on; seeds 0..runs-1), every step's k = 2 interval against the mean true force over its hold.
+   Target: 95 +- 3 % of >= 500 pooled steps. Printed: coverage, the pooled steps, the spread of
+   the normalised error (F_meas - F_true) / u (1 if u is the error's standard deviation).
+2. Bands (mkm.uncertainty): the default surrogate's Monte Carlo band at 20 pressures x 1000
+   draws (inside its box: D0 40 mm, t0 3 mm, eps 0.1), best of 5 calls; target <= 0.5 s.
+
+3. Robust design (``--design``, mkm.design with ``--tolerance``): the best design for
+   580 N at 2 bar, eps 0.10 built to D0 +-0.3 mm, t0 +-0.1 mm, theta0 +-1 deg, rubber +-10 %
+   at 95 %; its stated probability (Monte Carlo over the surrogate) against the fraction of
+   ``--fe-draws`` muscles drawn from the same tolerances that the FE model (axisym, medium
+   mesh) finds meeting the requirement. Target: within +-5 points, >= 50 draws.
+
+Prints one CSV block per part and the provenance (versions, command, date) as JSON.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+
+import numpy as np
+
+from mkm.bench.config import load_config
+from mkm.bench.coverage import simulated_coverage
+from mkm.fem.records import provenance
+
+
+def coverage(runs: int, eps_values) -> None:
+    print("eps,runs,steps,covered_percent,z_std,z_mean,seconds")
+    pooled = []
+    for eps in eps_values:
+        start = time.perf_counter()
+        steps = simulated_coverage(load_config(eps=eps), range(runs))
+        seconds = time.perf_counter() - start
+        z = (steps["force_N_mean"] - steps["force_true_N"]) / steps["force_u_N"]
+        pooled.append(steps)
+        print(f"{eps:g},{runs},{len(steps)},{100 * steps['covered'].mean():.1f},"
+              f"{z.std():.3f},{z.mean():.3f},{seconds:.1f}")
+    if len(pooled) > 1:
+        covered = np.concatenate([s["covered"].to_numpy() for s in pooled])
+        print(f"all,{runs * len(pooled)},{covered.size},{100 * covered.mean():.1f},,,")
+
+
+def band_speed() -> None:
+    from mkm.fem.tolerances import Tolerances
+    from mkm.registry import build_spec
+    from mkm.uncertainty import force_band
+
+    model = build_spec("surrogate")
+    pressure = np.linspace(0.125, 2.5, 20)
+    tolerances = Tolerances()
+    times = []
+    for _ in range(5):
+        start = time.perf_counter()
+        band = force_band(model, pressure, 40.0, 3.0, 0.1, tolerances, n_draws=1000)
+        times.append(time.perf_counter() - start)
+    print("model,method,pressures,draws,best_s,median_s,u_at_2.5bar_N,force_at_2.5bar_N")
+    print(f"{model.name},{band.method},{pressure.size},1000,{min(times):.4f},"
+          f"{float(np.median(times)):.4f},{band.force_u_N[-1]:.2f},{band.force_N[-1]:.1f}")
+
+
+def design_check(fe_draws: int, seed: int = 7) -> None:
+    from mkm.design import run_design
+    from mkm.fem.tolerances import Tolerances, draws
+    from mkm.registry import parse_spec
+    from mkm.uncertainty import nominal_parameters
+
+    tolerances = Tolerances.parse("D0=0.3,t0=0.1,theta0=1,rubber=10%")
+    requirement = "580N@2bar,eps=0.10"
+    start = time.perf_counter()
+    result = run_design([requirement], top=3, tolerances=tolerances, probability=0.95)
+    seconds = time.perf_counter() - start
+    req = result.search.requirements[0]
+    print("rank,D0_mm,t0_mm,stated_probability,fe_draws,fe_fraction_met,binomial_sd,"
+          "difference_points,design_s,fe_check_s")
+    for _, d in result.designs.iterrows():
+        model = result.search.models[(float(d["L0_mm"]), float(d["theta0_deg"]), d["rubber"])]
+        nominal = {k: float(v) for k, v in nominal_parameters(
+            model, d["D0_mm"], d["t0_mm"], req.eps).items()}
+        sample = draws(nominal, tolerances, fe_draws, np.random.default_rng(seed))
+        start_fe = time.perf_counter()
+        met = []
+        for i in range(fe_draws):
+            fe = parse_spec("axisym:mesh=medium").build(
+                L0_mm=sample["L0_mm"][i], theta0_deg=sample["theta0_deg"][i],
+                C10_MPa=sample["C10_MPa"][i], C01_MPa=sample["C01_MPa"][i])
+            pred = fe.predict(req.pressure_bar, sample["D0_mm"][i], sample["t0_mm"][i],
+                              sample["eps"][i])
+            met.append(bool(pred.valid.ravel()[0]) and float(pred.force_N.ravel()[0])
+                       >= req.force_N)
+        fraction = float(np.mean(met))
+        stated = float(d["probability_all"])
+        sd = np.sqrt(stated * (1 - stated) / fe_draws)
+        print(f"{int(d['rank'])},{d['D0_mm']:.2f},{d['t0_mm']:.2f},{100 * stated:.1f},"
+              f"{fe_draws},{100 * fraction:.1f},{100 * sd:.1f},"
+              f"{100 * (fraction - stated):+.1f},{seconds:.1f},"
+              f"{time.perf_counter() - start_fe:.1f}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=27, help="simulated runs per eps")
+    parser.add_argument("--eps", type=float, nargs="+", default=[0.0])
+    parser.add_argument("--no-bands", action="store_true", help="skip the band timing")
+    parser.add_argument("--design", action="store_true", help="check a robust design's "
+                        "stated probability with the FE model")
+    parser.add_argument("--fe-draws", type=int, default=100)
+    parser.add_argument("--no-coverage", action="store_true", help="skip the coverage runs")
+    args = parser.parse_args()
+    if not args.no_coverage:
+        coverage(args.runs, args.eps)
+    if not args.no_bands:
+        band_speed()
+    if args.design:
+        design_check(args.fe_draws)
+    print(json.dumps(provenance(), indent=1, default=str))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,163 @@
+"""Robust designs: muscles that meet every requirement with a stated probability when they are
+built to tolerances (``mkm design --tolerance D0=0.3,t0=0.1,theta0=1,rubber=10% --probability
+0.95``).
+
+A muscle built to tolerance has inputs anywhere within the bounds
+(:class:`mkm.fem.tolerances.Tolerances`); its force is then uncertain by ``u_tol``, the GUM
+propagation of the bounds through the surrogate (:func:`mkm.uncertainty.sensitivities`), and
+the surrogate itself by its predictive standard deviation ``s``. Three stages:
+
+1. **Search** (:func:`requirement_margin`): a candidate meets requirement ``k`` with probability
+   ``Phi((F - F_k) / sqrt(u_tol^2 + s^2))`` (normal approximation, vectorised over the whole
+   box); it is feasible when that is at least the probability asked for at every requirement,
+   i.e. when ``F - z_p sqrt(u_tol^2 + s^2) >= F_k`` (``z_p = Phi^-1(p)``).
+2. **Monte Carlo** (:func:`check_designs`): for every verified design, 4000 joint draws from the
+   tolerances through the surrogate (through its linearisation where draws leave its box),
+   each with its own surrogate error ``s N(0, 1)``:
+   ``probability_r<k>`` (requirement ``k`` met) and ``probability_all`` (all met in the same
+   muscle), the numbers designs.csv states.
+3. **Worst corner** (:func:`check_designs`): the FE model at the corner of the tolerance box
+   where the force is lowest (each input at its bound, on the side the sensitivity says lowers
+   the force): ``r<k>_fe_worst_corner_N``. A corner short of the force is flagged
+   (``r<k>:worst_corner_short``), not refused: the corner is rarer than ``1 - p``.
+
+``benchmarks/bench_uncertainty.py --design`` checks the stated probability against the FE model
+on draws from the tolerances.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+from scipy import stats
+
+from mkm.fem.tolerances import Tolerances, draws
+from mkm.registry import parse_spec
+from mkm.uncertainty import monte_carlo_ready, nominal_parameters, sensitivities, surrogate_draws
+
+DEFAULT_PROBABILITY = 0.95
+MC_DRAWS = 4000  # the probability to +-0.7 points (binomial sd at 95 %)
+
+
+def check_probability(probability: float) -> float:
+    """``probability`` if it is in (0.5, 1), else ``ValueError`` naming it."""
+    if isinstance(probability, bool) or not isinstance(probability, int | float) \
+            or not 0.5 < probability < 1.0:
+        raise ValueError(f"--probability {probability!r} is invalid: expected a probability "
+                         "between 0.5 and 1 (0.95 for 95 %)")
+    return float(probability)
+
+
+def requirement_margin(model, prediction, requirement, D0_mm, t0_mm, tolerances: Tolerances,
+                       probability: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The margin [N] a candidate's force must clear ``requirement`` by, for ``probability``;
+    and the probability and ``u_tol`` [N] per candidate.
+
+    ``prediction``: the surrogate's prediction at the candidates (``D0_mm``, ``t0_mm`` arrays).
+    """
+    force = np.asarray(prediction.force_N, dtype=float)
+    std = np.asarray(prediction.extras.get("force_std_N", np.zeros_like(force)), dtype=float)
+    nominal = nominal_parameters(model, D0_mm, t0_mm, requirement.eps)
+    rebuild = getattr(model, "with_parameters", None)
+    contributions = sensitivities(model, requirement.pressure_bar, nominal, tolerances, force,
+                                  rebuild)
+    u_tol = np.sqrt(sum(np.nan_to_num(c) ** 2 for c in contributions.values()))
+    u = np.sqrt(u_tol**2 + std**2)
+    z = stats.norm.ppf(probability)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p = stats.norm.cdf((force - requirement.force_N) / u)
+    return z * u, p, u_tol
+
+
+def describe(tolerances: Tolerances, probability: float) -> str:
+    """What the search's margin is, for designs.json and the page."""
+    bounds = ", ".join(f"{k}=+-{v:g}" for k, v in vars(tolerances).items() if v > 0)
+    z = stats.norm.ppf(probability)
+    return (f"{z:.3g} x sqrt(u_tol^2 + surrogate std^2): each requirement met with probability "
+            f">= {100 * probability:g} % by muscles built to {bounds} (uniform within them)")
+
+
+def check_designs(designs: pd.DataFrame, requirements, models: dict,
+                  tolerances: Tolerances, probability: float, mesh: str, cache_dir=None,
+                  seed: int = 0) -> pd.DataFrame:
+    """``designs`` with the Monte Carlo probabilities and the FE at the worst corner.
+
+    ``models``: the search's surrogates by ``(L0, theta0, rubber)``. Adds
+    ``probability_r<k>``, ``probability_all``, ``r<k>_fe_worst_corner_N`` and the flags
+    ``r<k>:worst_corner_short`` and ``all:probability_below_target``.
+    """
+    from mkm.prediction_cache import cached_predict
+
+    rows = []
+    for _, d in designs.iterrows():
+        key = (float(d["L0_mm"]), float(d["theta0_deg"]), d["rubber"])
+        model = models[key]
+        out, flags = {}, [f for f in str(d.get("flags", "") or "").split(";") if f]
+        met_all = None
+        for k, req in enumerate(requirements, start=1):
+            nominal = nominal_parameters(model, d["D0_mm"], d["t0_mm"], req.eps)
+            nominal = {name: float(v) for name, v in nominal.items()}
+            sample = draws(nominal, tolerances, MC_DRAWS, np.random.default_rng(seed + k))
+            pred = model.predict(req.pressure_bar, d["D0_mm"], d["t0_mm"], req.eps)
+            std = float(np.ravel(pred.extras.get("force_std_N", [0.0]))[0])
+            if monte_carlo_ready(model, sample):
+                force = surrogate_draws(model, req.pressure_bar, sample)[0]
+            else:  # draws off the surrogate's box: its linearisation carries the same draws
+                force = _linear_draws(model, req, nominal, sample, tolerances,
+                                      float(np.ravel(pred.force_N)[0]))
+            noise = np.random.default_rng(seed + 100 + k).standard_normal(MC_DRAWS)
+            met = force + std * noise >= req.force_N
+            out[f"probability_r{k}"] = float(met.mean())
+            met_all = met if met_all is None else met_all & met
+            out[f"r{k}_fe_worst_corner_N"] = _worst_corner_force(
+                model, mesh, nominal, req, tolerances, cache_dir, cached_predict)
+            if out[f"r{k}_fe_worst_corner_N"] < req.force_N:
+                flags.append(f"r{k}:worst_corner_short")
+        out["probability_all"] = float(met_all.mean()) if met_all is not None else np.nan
+        if not out["probability_all"] >= probability:
+            flags.append("all:probability_below_target")
+        out["flags"] = ";".join(flags)
+        rows.append(out)
+    extra = pd.DataFrame(rows, index=designs.index)
+    return pd.concat([designs.drop(columns=["flags"]), extra], axis=1)
+
+
+def _linear_draws(model, req, nominal, sample, tolerances, force_N) -> np.ndarray:
+    """``F + sum_i (dF/dx_i) (x_i - x_i,nominal)`` for every draw (the GUM linearisation)."""
+    contributions = sensitivities(model, req.pressure_bar, nominal, tolerances, force_N,
+                                  getattr(model, "with_parameters", None))
+    u = tolerances.standard()
+    force = np.full(MC_DRAWS, force_N)
+    for name, c in contributions.items():
+        c = float(np.ravel(c)[0])
+        if name == "rubber_fraction":
+            deviation = sample["C10_MPa"] / nominal["C10_MPa"] - 1.0
+        else:
+            deviation = sample[name] - nominal[name]
+        force = force + c / u[name] * deviation
+    return force
+
+
+def _worst_corner_force(model, mesh, nominal, req, tolerances, cache_dir,
+                        cached_predict) -> float:
+    """The FE force at the corner of the tolerance box that lowers the surrogate's force most."""
+    force = float(np.ravel(model.predict(req.pressure_bar, nominal["D0_mm"], nominal["t0_mm"],
+                                         req.eps).force_N)[0])
+    signs = sensitivities(model, req.pressure_bar, nominal, tolerances, force,
+                          getattr(model, "with_parameters", None))
+    bounds = vars(tolerances)
+    corner = dict(nominal)
+    for name, c in signs.items():
+        step = -np.sign(float(np.ravel(c)[0])) * bounds[name]
+        if name == "rubber_fraction":
+            corner["C10_MPa"] *= 1 + step
+            corner["C01_MPa"] *= 1 + step
+        else:
+            corner[name] = corner[name] + step
+    corner["eps"] = max(corner["eps"], 0.0)
+    fe = parse_spec(f"axisym:mesh={mesh}").build(
+        L0_mm=corner["L0_mm"], theta0_deg=corner["theta0_deg"], C10_MPa=corner["C10_MPa"],
+        C01_MPa=corner["C01_MPa"])
+    pred, _ = cached_predict(fe, req.pressure_bar, corner["D0_mm"], corner["t0_mm"],
+                             corner["eps"], cache_dir=cache_dir)
+    return float(np.ravel(np.where(pred.valid, pred.force_N, np.nan))[0])

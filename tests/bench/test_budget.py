@@ -1,0 +1,153 @@
+"""The uncertainty budget of a step (mkm.bench.budget): its terms against GUM arithmetic, its
+columns in steps.csv, mkm check's printout, and its coverage on simulated runs of known truth."""
+
+import math
+
+import numpy as np
+import pytest
+
+from mkm.bench.budget import (
+    Instrument,
+    budget_table,
+    expected_budget,
+    residual_std,
+    step_budget,
+)
+from mkm.bench.config import load_config
+from mkm.bench.coverage import simulated_coverage
+from mkm.bench.procedures import check
+from mkm.bench.run import acquire
+from mkm.bench.sequence import HoldStats, Step
+from mkm.bench.storage import STEP_COLUMNS, STEP_COLUMNS_UNBUDGETED, load_run
+
+
+@pytest.fixture(scope="module")
+def config():
+    return load_config()
+
+
+def test_adc_step_of_the_usb6001_on_the_default_cell(config):
+    # the issue's numbers: 14 bits over +-10 V = 1.22 mV = 0.24 N at 196.133 N/V
+    i = Instrument.from_config(config)
+    assert i.lsb_V == pytest.approx(20.0 / 2**14)
+    assert i.lsb_N == pytest.approx(0.2394, abs=1e-4)
+
+
+def test_terms_follow_the_gum_for_known_inputs(config):
+    i = Instrument.from_config(config)
+    b = step_budget(i, force_N=500.0, force_N_std=0.4, n=50, force_drift_N=0.0,
+                    tare_std_N=0.4, tare_n=50)
+    terms = {t.name: t.u for t in b.terms}
+    assert terms["load-cell sensitivity"] == pytest.approx(0.001 * 500 / math.sqrt(3))
+    assert terms["load-cell non-linearity"] == pytest.approx(0.0005 * 1961.33 / math.sqrt(3))
+    assert terms["load-cell zero drift"] == pytest.approx(0.0002 * 1961.33 / math.sqrt(3))
+    # the scatter about a fitted line has n - 2 degrees of freedom
+    assert terms["noise over the hold"] == pytest.approx(0.4 * math.sqrt(49 / 48) / math.sqrt(50))
+    assert terms["tare spread"] == pytest.approx(0.4 / math.sqrt(50))
+    # dithered (scatter 0.4 N >= half a step): the rounding averages down in hold and tare
+    assert terms["ADC resolution"] == pytest.approx(
+        i.lsb_N / math.sqrt(12) * math.sqrt(2 / 50))
+    assert b.force_u_N == pytest.approx(math.sqrt(sum(
+        u**2 for name, u in terms.items() if not name.startswith(("pressure", "ADC resolution ("))
+    )))
+    assert b.force_U_N == pytest.approx(2 * b.force_u_N)
+    assert b.pressure_u_bar == pytest.approx(math.hypot(
+        0.04 / math.sqrt(3), i.lsb_V * 4.0 / 4.0 / math.sqrt(12)))
+    ranked = b.ranked("force")
+    assert ranked[0][0].name == "load-cell non-linearity"
+    assert sum(share for _, share in ranked) == pytest.approx(1.0)
+
+
+def test_a_quiet_signal_keeps_the_full_rounding(config):
+    # scatter below half a step: the ADC rounds every sample the same way, averaging cannot help
+    i = Instrument.from_config(config)
+    b = step_budget(i, 100.0, 0.05, 50, 0.0, 0.05, 50)
+    q = {t.name: t.u for t in b.terms}["ADC resolution"]
+    assert q == pytest.approx(math.sqrt(2) * i.lsb_N / math.sqrt(12))
+
+
+def test_residual_std_removes_an_exact_trend():
+    rng = np.random.default_rng(1)
+    t = np.arange(50) * 0.1
+    f = 100 + 0.3 * t + rng.normal(0, 0.4, t.size)
+    slope, intercept = np.polyfit(t, f, 1)
+    expected = np.sqrt(np.sum((f - (slope * t + intercept))**2) / (t.size - 2))
+    drift = slope * (t[-1] - t[0])
+    assert residual_std(f.std(ddof=1), t.size, drift) == pytest.approx(expected, rel=1e-9)
+
+
+def test_hold_stats_match_numpy(config):
+    rng = np.random.default_rng(2)
+    t = 10 + np.arange(60) * 0.1
+    f = 300 - 0.2 * (t - 10) + rng.normal(0, 0.5, t.size)
+    hold = HoldStats()
+    for ti, fi in zip(t, f, strict=True):
+        hold.add(float(ti), float(fi), 1.0)
+    assert hold.mean == pytest.approx(f.mean())
+    assert hold.std == pytest.approx(f.std(ddof=1))
+    assert hold.drift_N == pytest.approx(np.polyfit(t, f, 1)[0] * (t[-1] - t[0]))
+    row = hold.record(Step(0, "up", 0, 1.0), Instrument.from_config(config),
+                      {"std_N": 0.4, "n": 50}, True, 5.0, 5.0, 16.0)
+    assert row.force_U_N == pytest.approx(2 * row.force_u_N)
+    assert row.force_u_N > 0.5 / math.sqrt(60)  # at least the noise of the mean
+
+
+def test_steps_csv_carries_the_budget(config, tmp_path):
+    small = config.replace(sequence={"pressures_bar": (0.5, 1.0), "down_sweep": False,
+                                     "preconditioning_cycles": 0})
+    result = acquire(small, out_root=tmp_path, notify=lambda m: None)
+    steps = load_run(result.path).steps
+    assert list(steps.columns) == list(STEP_COLUMNS)
+    for column in ("force_u_N", "force_U_N", "pressure_u_bar", "pressure_U_bar"):
+        assert (steps[column] > 0).all()
+    assert np.allclose(steps["force_U_N"], 2 * steps["force_u_N"], rtol=1e-5)
+    # the default cell's data sheet alone: non-linearity 0.57 N, zero drift 0.23 N
+    assert (steps["force_u_N"] > 0.6).all() and (steps["force_u_N"] < 2.0).all()
+
+
+def test_steps_csv_without_the_budget_still_loads(config, tmp_path):
+    small = config.replace(sequence={"pressures_bar": (0.5,), "down_sweep": False,
+                                     "preconditioning_cycles": 0})
+    path = acquire(small, out_root=tmp_path, notify=lambda m: None).path
+    csv = path / "steps.csv"
+    lines = csv.read_text().splitlines()
+    k = len(STEP_COLUMNS_UNBUDGETED)
+    csv.write_text("\n".join(",".join(line.split(",")[:k]) for line in lines) + "\n")
+    steps = load_run(path).steps
+    assert list(steps.columns) == list(STEP_COLUMNS)
+    assert steps["force_U_N"].isna().all() and steps["force_N_mean"].notna().all()
+
+
+def test_datasheet_settings_are_bounded(config):
+    with pytest.raises(ValueError, match=r"loadcell\.sensitivity_tolerance_fraction=0\.2 is "
+                                         r"invalid: expected 0 to 0\.05"):
+        config.replace(loadcell={"sensitivity_tolerance_fraction": 0.2})
+    with pytest.raises(ValueError, match=r"regulator\.monitor_accuracy_bar=-0\.1 is invalid"):
+        config.replace(regulator={"monitor_accuracy_bar": -0.1})
+
+
+def test_check_prints_the_expected_budget(config):
+    text, _ = check(config)
+    lines = text.splitlines()
+    start = lines.index("set_pressure_bar,force_N,force_U_N,force_U_percent,pressure_U_bar,"
+                        "largest term")
+    rows = [line.split(",") for line in lines[start + 1:start + 11]]
+    assert [float(r[0]) for r in rows] == pytest.approx(np.arange(0.25, 2.51, 0.25))
+    U = [float(r[2]) for r in rows]
+    assert U == sorted(U)  # the sensitivity term grows with the force
+    top = expected_budget(config, float(rows[-1][1]))
+    assert U[-1] == pytest.approx(top.force_U_N, abs=0.01)
+    table = budget_table(top)
+    assert table[0].startswith("term,") and any(line.startswith("combined,") for line in table)
+    assert "term,type,u_N,share_percent,source" in lines
+
+
+def test_coverage_on_simulated_runs():
+    # 5 runs x 19 settled steps of known truth (noise, quantisation, friction, creep on). With
+    # a true coverage of 95 %, 95 steps give 95 +- 2.2 % (binomial sd); the runs share a tare
+    # each, so allow 3 sd either side. The benchmark pools >= 500 steps for the 95 +- 3 % target.
+    steps = simulated_coverage(load_config(), range(5))
+    assert len(steps) == 95
+    assert steps["covered"].mean() >= 0.88
+    z = (steps["force_N_mean"] - steps["force_true_N"]) / steps["force_u_N"]
+    assert 0.75 < z.std() < 1.3  # the standard uncertainty is the error's spread, not a bound
