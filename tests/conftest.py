@@ -2,13 +2,21 @@
 dataset from the thick-wall model (exact, fast) for the surrogate tests."""
 
 import itertools
+import os
 
 import numpy as np
 import pandas as pd
 import pytest
+from hypothesis import settings
 
 from mkm.fem.calibration import calibrated
 from mkm.fem.ladder import make_model
+
+# Property-based tests draw the same cases on every run (a suite that passes does not pass by
+# luck, and a failure reproduces); explore afresh with HYPOTHESIS_PROFILE=explore
+settings.register_profile("suite", derandomize=True, database=None)
+settings.register_profile("explore", derandomize=False)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "suite"))
 
 
 @pytest.fixture(scope="session", autouse=True)

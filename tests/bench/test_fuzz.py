@@ -14,10 +14,12 @@ from mkm.bench.config import load_config, parse_config
 from mkm.bench.run import acquire
 from mkm.bench.storage import aggregate_samples, load_run
 
-FAST = settings(max_examples=30, deadline=None, database=None,
+# the fast profile draws the same cases every run (CI must not be lucky or unlucky); the long one
+# explores afresh
+FAST = settings(max_examples=30, deadline=None, database=None, derandomize=True,
                 suppress_health_check=[HealthCheck.function_scoped_fixture,
                                        HealthCheck.too_slow])
-LONG = settings(FAST, max_examples=400)
+LONG = settings(FAST, max_examples=400, derandomize=False)
 
 # JSON values an attacker or a broken disk may leave anywhere in run.json
 hostile_json = st.recursive(
@@ -62,7 +64,9 @@ def _check_run_json(recorded, tmp_path, edits):
     shutil.copytree(recorded, folder)
     meta = json.loads((folder / "run.json").read_text())
     for where, key, value in edits:
-        (meta if where == "top" else meta["muscle"])[key] = value
+        target = meta if where == "top" else meta.get("muscle")
+        if isinstance(target, dict):  # an earlier edit may have replaced the muscle itself
+            target[key] = value
     (folder / "run.json").write_text(json.dumps(meta))
     _loads_or_one_line(folder)
 

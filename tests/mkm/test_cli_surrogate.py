@@ -82,6 +82,7 @@ def test_predict_at_an_untrained_length_is_refused(thickwall_dataset, tmp_path, 
         spec.build(L0_mm=150.0)
 
 
+@pytest.mark.slow  # FE sweeps of a design and trains on them
 def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
     # Two muscles of the space-filling design at the coarse mesh (FE ~0.3 s each), then the
     # off-grid evaluation of a saved surrogate on two fresh ones: files, provenance, summary.

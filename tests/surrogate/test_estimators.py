@@ -18,6 +18,7 @@ from mkm.surrogate.threshold_linear import ThresholdLinearRegressor
 from mkm.surrogate.training_data import load_training_data
 
 
+@pytest.mark.slow  # scikit-learn's common checks, about 40 per estimator
 @parametrize_with_checks([ThresholdLinearRegressor(), ThresholdLinearRegressor(degree=1)])
 def test_sklearn_contract(estimator, check):
     check(estimator)

@@ -117,6 +117,7 @@ def test_design_model_takes_every_muscle_parameter(design_model):
     assert short < long
 
 
+@pytest.mark.slow  # trains the design's GP
 @pytest.mark.parametrize("parameter, value", [("L0_mm", 120.0), ("L0_mm", 450.0),
                                               ("theta0_deg", 26.0), ("theta0_deg", 40.0),
                                               ("C10_MPa", 0.2), ("C01_MPa", 0.01)])
