@@ -29,8 +29,8 @@ table.kv{font-size:.8em}table.kv td,table.kv th{padding:.1em .5em;text-align:lef
 table caption{font-weight:600;text-align:left;padding:.2em 0}
 .tables{display:flex;flex-wrap:wrap;gap:0 1.5em;
 align-items:flex-start}details{margin:.5em 0}summary{cursor:pointer;font-weight:600}
-table.summary td,table.summary th{font-size:.95em}td.name{text-align:left}
-td.num{text-align:right}.ok{color:#1a7f37}.bad{color:#b00}
+table.summary td,table.summary th{font-size:.95em}table.summary td.name{text-align:left}
+table.summary td.num{text-align:right}.ok{color:#1a7f37}.bad{color:#b00}
 @media print{body{max-width:none;margin:0;font-size:10pt}h2{page-break-after:avoid}
 figure,table,.run-head{page-break-inside:avoid}pre{font-size:7pt}}
 """
