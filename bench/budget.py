@@ -254,11 +254,15 @@ def expected_budget(config, force_N: float) -> Budget:
 def budget_table(budget: Budget, quantity: str = "force") -> list[str]:
     """Lines of text: the terms of ``quantity`` ranked by their share of the variance."""
     unit = "N" if quantity == "force" else "bar"
-    lines = [f"term,type,u_{unit},share_percent,source"]
-    for term, share in budget.ranked(quantity):
-        lines.append(f"{term.name},{term.kind},{term.u:.3g},{100 * share:.1f},{term.source}")
+    ranked = budget.ranked(quantity)
+    width = max([len("combined")] + [len(term.name) for term, _ in ranked])
+    lines = [f"  {'term':<{width}}  type  {'u [' + unit + ']':>8}  share [%]  source"]
+    for term, share in ranked:
+        lines.append(f"  {term.name:<{width}}  {term.kind:<4}  {term.u:>8.3g}  "
+                     f"{100 * share:>9.1f}  {term.source}")
     u = budget.u(quantity)
-    lines.append(f"combined,,{u:.3g},100,expanded U = {budget.k:g} u = {budget.k * u:.3g} {unit}")
+    lines.append(f"  {'combined':<{width}}  {'':<4}  {u:>8.3g}  {100:>9}  expanded U = "
+                 f"{budget.k:g} u = {budget.k * u:.3g} {unit}")
     if quantity == "force" and math.isfinite(budget.drift_N):
         lines.append(f"(drift within the hold: {budget.drift_N:+.3g} N; the hold mean is the "
                      "measurand, so not a term)")

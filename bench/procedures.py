@@ -178,13 +178,23 @@ def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual
         f"sequence: tare {config.sequence.tare_s:g} s, "
         f"{config.sequence.preconditioning_cycles} pre-conditioning cycle(s), "
         f"{config.sequence.repeats} repeat(s)",
-        "step,direction,repeat,set_pressure_bar",
-        *(f"{s.step},{s.direction},{s.repeat},{s.set_pressure_bar:g}" for s in plan_steps(config)),
+        *_plan_lines(plan_steps(config)),
         f"estimated duration: {shortest / 60:.1f} to {longest / 60:.1f} min (at most "
         f"sequence.max_duration_h = {config.sequence.max_duration_h:g} h)",
         *expected_budget_lines(config),
     ]
     return "\n".join(lines), warnings(config)
+
+
+def _plan_lines(steps) -> list[str]:
+    """The planned staircase in words: each sweep's pressures in order, per repeat."""
+    sweeps: dict[tuple[int, str], list[str]] = {}
+    for s in steps:
+        sweeps.setdefault((s.repeat, s.direction), []).append(f"{s.set_pressure_bar:g}")
+    lines = [f"planned steps: {sum(len(v) for v in sweeps.values())}"]
+    for (repeat, direction), pressures in sweeps.items():
+        lines.append(f"  repeat {repeat + 1}, {direction}: {', '.join(pressures)} bar")
+    return lines
 
 
 def expected_budget_lines(config: BenchConfig) -> list[str]:
@@ -194,13 +204,14 @@ def expected_budget_lines(config: BenchConfig) -> list[str]:
     budgets = [(p, expected_force_N(config, p)) for p in pressures]
     lines = ["expected uncertainty (k = 2; forces by Equation 2; hold scatter, drift and tare "
              "at their settle and safety limits, so at most this):",
-             "set_pressure_bar,force_N,force_U_N,force_U_percent,pressure_U_bar,largest term"]
+             f"{'P [bar]':>8} {'F [N]':>8} {'U(F) [N]':>9} {'U(F) [%]':>9} {'U(P) [bar]':>10}"
+             "  largest term"]
     for p, force in budgets:
         b = expected_budget(config, force)
         top = b.ranked("force")[0][0].name
         share = 100 * b.force_U_N / force if force > 0 else float("nan")
-        lines.append(f"{p:g},{force:.1f},{b.force_U_N:.2f},{share:.2f},"
-                     f"{b.pressure_U_bar:.3f},{top}")
+        lines.append(f"{p:>8g} {force:>8.1f} {b.force_U_N:>9.2f} {share:>9.2f} "
+                     f"{b.pressure_U_bar:>10.3f}  {top}")
     p, force = budgets[-1]
     lines.append(f"force budget at {p:g} bar, terms ranked by their share of the variance:")
     lines.extend(budget_table(expected_budget(config, force), "force"))

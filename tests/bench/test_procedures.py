@@ -46,7 +46,7 @@ def test_check_lists_device_steps_and_duration(config):
     assert warnings == []
     assert "backend: sim (SIMULATED: no hardware is driven)" in text
     assert "USB-6001 (simulated)" in text and "interlock at 1765.2 N" in text
-    assert "0,up,0,0.5\n1,up,0,1\n2,down,0,0.5" in text
+    assert ("planned steps: 3\n  repeat 1, up: 0.5, 1 bar\n  repeat 1, down: 0.5 bar") in text
     assert "estimated duration: 0.3 to 1.1 min" in text  # 19 s to 68 s
 
 

@@ -79,7 +79,9 @@ def test_calibrate_loadcell_prints_the_toml_block(capsys):
 
 def test_check_prints_the_plan(capsys):
     assert main(["check", "--pressures", "1,2"]) == 0
-    assert "0,up,0,1\n1,up,0,2\n2,down,0,1" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "planned steps: 3\n  repeat 1, up: 1, 2 bar\n  repeat 1, down: 1 bar" in out
+    assert "," not in out.split("planned steps")[1].split("estimated")[0].replace(", ", "")
 
 
 def test_aborted_run_report_states_steps_planned_and_done(tmp_path):
