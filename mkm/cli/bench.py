@@ -11,7 +11,6 @@ backends of :mod:`mkm.bench.backends`.
 
 from __future__ import annotations
 
-import json
 import sys
 
 from mkm.cli.common import argtype, has_display
@@ -228,7 +227,6 @@ def _calibrate_loadcell(args) -> int:
     print(f"sensitivity_N_per_V = {out['sensitivity_N_per_V']:.4f}, offset_V = "
           f"{out['offset_V']:.5f} (R^2 {out['r_squared']:.6f}, largest residual "
           f"{out['max_abs_residual_N']:.3f} N over {out['n_points']} masses)", file=sys.stderr)
-    print(json.dumps(out, indent=2), file=sys.stderr)
     print(loadcell_toml(out, config))
     return 0
 

@@ -67,8 +67,9 @@ def test_calibrate_loadcell_prints_the_toml_block(capsys):
     assert block["sensitivity_N_per_V"] == pytest.approx(196.133, rel=1e-6)
     assert block["offset_V"] == pytest.approx(0.01, abs=1e-9)
     assert block["channel"] == "ai0" and block["capacity_N"] == 1961.33
-    # the fit goes to stderr, for the operator
-    assert "R^2 1.000000" in captured.err and '"n_points": 2' in captured.err
+    # the fit goes to stderr in one line, for the operator (no JSON dump)
+    assert "R^2 1.000000" in captured.err and "over 2 masses" in captured.err
+    assert captured.err.count("\n") == 1 and "{" not in captured.err
     # pasted into a config, it is a valid [loadcell] section
     text = load_config().text
     head, _, rest = text.partition("[loadcell]")
