@@ -506,7 +506,7 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
     """
     if path is None:
         text = resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG).read_text("utf-8")
-        config = parse_config(text, f"bench/configs/{DEFAULT_CONFIG}")
+        config = parse_config(text, f"the packaged example {DEFAULT_CONFIG}")
     else:
         text, data = read_toml_file(Path(path), "config ")
         config = config_from_tables(data, text, str(path))

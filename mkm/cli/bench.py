@@ -44,8 +44,8 @@ def _volts(text: str) -> list[float]:
 def _add_device_arguments(parser, clock: bool = True) -> None:
     from mkm.bench.backends import BACKENDS
 
-    parser.add_argument("--config", help="bench TOML file (default: the packaged paper "
-                        "prototype on the simulated bench, bench/configs/paper_prototype.toml)")
+    parser.add_argument("--config", help="bench TOML file (default: the packaged example "
+                        "paper_prototype.toml, the paper's prototype on the simulated bench)")
     parser.add_argument("--backend", choices=tuple(BACKENDS), default=None,
                         help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.values())
                         + " (default: the config's [daq] backend)")
