@@ -137,18 +137,26 @@ def module_page(module: str) -> str:
             lines.append(f"- :{role}:`{name} <{target}.{name}>`" if target != module
                          else f"- ``{name}``")
         lines.append("")
-        own = [n for n in names if defining_module(module, n) == module]
-        if own:
-            lines += [f".. automodule:: {module}", "   :no-index:", "   :members: "
-                      + ", ".join(own), ""]
+        # the functions and classes defined here, each with its own (indexed) entry; the
+        # constants below
+        for name in sorted(n for n in names if defining_module(module, n) == module):
+            obj = getattr(importlib.import_module(module), name)
+            if inspect.isclass(obj) or inspect.isfunction(obj):
+                directive = "autoclass" if inspect.isclass(obj) else "autofunction"
+                lines += [f".. {directive}:: {module}.{name}", ""]
     else:
         lines += [f".. automodule:: {module}", ""]
     # constants a package exports from here that autodoc leaves out (no ``#:`` comment)
     from sphinx.pycode import ModuleAnalyzer
 
     commented = {name for (_, name) in ModuleAnalyzer.for_module(module).find_attr_docs()}
-    for name in sorted(set(exported_constants().get(module, ())) - commented):
-        lines += [f".. autodata:: {module}.{name}", "   :no-value:", ""]
+    constants = set(exported_constants().get(module, ()))
+    if names:  # the automodule above documents no member: every exported constant here
+        for name in sorted(constants):
+            lines += [f".. autodata:: {module}.{name}", "   :no-value:", ""]
+    else:
+        for name in sorted(constants - commented):
+            lines += [f".. autodata:: {module}.{name}", "   :no-value:", ""]
     return "\n".join(lines)
 
 

@@ -96,7 +96,7 @@ QUEUED_PER_WORKER = 2
 #: the gain, and a handful of sweeps answers at once.
 AUTO_CLUSTER_SECONDS = 20.0
 #: Dask settings of the local cluster (and advice for a lab's workers): the nanny's
-#: MALLOC_TRIM_THRESHOLD_ makes glibc map and unmap every large temporary array (the FE ran
+#: ``MALLOC_TRIM_THRESHOLD_`` makes glibc map and unmap every large temporary array (the FE ran
 #: 30-50 % slower per job with it); the workers' statistical profiler samples the running task
 #: every 10 ms, and the event loops tick every 20 ms, CPU a single-threaded solve can use.
 QUIET_WORKERS = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
