@@ -17,22 +17,19 @@ from __future__ import annotations
 
 import datetime
 import json
-import os
 import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from mkm.bench.storage import ProcessIdentity
 from mkm.fem.records import write_json_atomic
+from mkm.home import user_state
 
 
 def state_dir() -> Path:
-    """Folder of the bench markers (``MKM_STATE_DIR`` overrides the platform's state folder)."""
-    if os.environ.get("MKM_STATE_DIR"):
-        return Path(os.environ["MKM_STATE_DIR"])
-    import platformdirs
-
-    return Path(platformdirs.user_state_dir("mkm-bench", appauthor=False))
+    """Folder of the bench markers (:func:`mkm.home.user_state`: ``MKM_STATE_DIR`` overrides
+    the platform's state folder)."""
+    return user_state()
 
 
 def bench_folder_name(bench_key: str) -> str:

@@ -81,7 +81,8 @@ from typing import Any
 import numpy as np
 
 from mkm.fem.ladder import entry, make_model
-from mkm.fem.records import provenance, source_version, user_cache, write_atomic
+from mkm.fem.records import provenance, source_version, write_atomic
+from mkm.home import user_cache
 
 #: Target wall time of one Dask task [s]: a scheduler's per-task cost is about a millisecond
 #: (benchmarks/bench_batch.py measures it), so half a second of work hides it below 1 %, while a
@@ -124,7 +125,7 @@ COLUMNS = {
 
 
 def default_cache_dir():
-    """One file per finished job, in the user's cache (:func:`mkm.fem.records.user_cache`)."""
+    """One file per finished job, in the user's cache (:func:`mkm.home.user_cache`)."""
     return user_cache("dataset")
 
 

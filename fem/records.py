@@ -11,9 +11,9 @@ reports share, so they cannot drift apart:
   project module they import, read from the files (the same code gives the same version in every
   process and on every Dask worker), and of the package data files they read;
 - :func:`package_file`: a data file shipped inside a package, found through
-  ``importlib.resources`` (works from a wheel, from any working directory);
-- :func:`user_cache`: the toolkit's folder in the user's cache (every cache of every package:
-  FE predictions, dataset jobs, trained surrogates), one subfolder each.
+  ``importlib.resources`` (works from a wheel, from any working directory).
+
+The toolkit's own folders (the user cache, the state folder) are :mod:`mkm.home`'s.
 """
 
 from __future__ import annotations
@@ -30,22 +30,13 @@ from importlib.util import resolve_name
 from pathlib import Path
 from typing import Any
 
-PROJECT_PACKAGES = ("mkm",)  # the one import root: fem, bench and surrogate live under it
-APP_NAME = "mkm-bench"  # the distribution's name: the user folders of the toolkit
-RECORDED_LIBRARIES = ("mkm-bench", "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas")
+from mkm.home import DISTRIBUTION, PACKAGE, package_version
+
+RECORDED_LIBRARIES = (DISTRIBUTION, "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas")
 
 
 # importlib.metadata, importlib.resources and tempfile are imported where used: the command line
 # imports this module and starts in well under a second only without them
-
-
-def package_version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        return version("mkm-bench")
-    except PackageNotFoundError:  # run from a source tree that was never installed
-        return "0+unknown"
 
 
 def provenance() -> dict[str, Any]:
@@ -61,20 +52,6 @@ def provenance() -> dict[str, Any]:
         except PackageNotFoundError:
             info["versions"][pkg] = "not installed"
     return info
-
-
-CACHE_ENV = "MKM_CACHE_DIR"
-
-
-def user_cache(*parts: str) -> Path:
-    """``$MKM_CACHE_DIR / parts`` if that is set, else ``platformdirs.user_cache_dir("mkm-bench")
-    / parts``: ``~/.cache/mkm-bench`` on Linux, ``%LOCALAPPDATA%\\mkm-bench\\mkm-bench\\Cache``
-    on Windows (not created here). Read at every call, never at import."""
-    if os.environ.get(CACHE_ENV):
-        return Path(os.environ[CACHE_ENV]).joinpath(*parts)
-    import platformdirs
-
-    return Path(platformdirs.user_cache_dir(APP_NAME)).joinpath(*parts)
 
 
 def package_file(package: str, *parts: str) -> Path:
@@ -130,7 +107,7 @@ def source_version(*modules: str, data: bool = True) -> str:
     package directory involved (the calibration): editing the physics, a material constant or the
     calibration changes the version; editing a report does not. ``data=False`` hashes the source
     only (the version a calibration records of the code that made it)."""
-    packages = set(PROJECT_PACKAGES) | {m.split(".")[0] for m in modules}
+    packages = {PACKAGE} | {m.split(".")[0] for m in modules}
     sources: dict[str, bytes] = {}
     stack = list(modules)
     while stack:

@@ -16,7 +16,8 @@ from pathlib import Path
 
 from threadpoolctl import threadpool_limits
 
-from mkm.fem.records import file_sha256, provenance, user_cache
+from mkm.fem.records import file_sha256, provenance
+from mkm.home import user_cache
 from mkm.surrogate.coverage import coverage
 from mkm.surrogate.kinds import BEST, make_estimator
 from mkm.surrogate.model import SurrogateForceModel
@@ -118,7 +119,7 @@ def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SP
 
 
 def default_cache_dir() -> Path:
-    """Folder of the trained models in the user's cache (:func:`mkm.fem.records.user_cache`)."""
+    """Folder of the trained models in the user's cache (:func:`mkm.home.user_cache`)."""
     return user_cache("surrogate")
 
 

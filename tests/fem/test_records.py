@@ -5,6 +5,7 @@ import os
 import pytest
 
 from mkm.fem import records
+from mkm.home import package_version
 
 
 def test_crash_while_writing_keeps_the_old_file(tmp_path, monkeypatch):
@@ -29,7 +30,7 @@ def test_source_version_follows_imports_and_data(tmp_path):
     import mkm.fem.materials  # noqa: F401
     from mkm.fem.records import source_version
     version = source_version("mkm.fem.thickwall")
-    assert version.startswith(records.package_version() + "+")
+    assert version.startswith(package_version() + "+")
     assert version == source_version("mkm.fem.thickwall")  # read from the files: stable
     assert version != source_version("mkm.fem.eq2")
 
