@@ -164,6 +164,7 @@ def test_prediction_cache_returns_the_same_forces(tmp_path):
     assert not np.allclose(other.force_N, first.force_N)
 
 
+@pytest.mark.slow  # FE sweeps on the medium mesh, twice
 def test_second_report_reads_the_fe_from_the_cache(runs, tmp_path):
     cache = tmp_path / "cache"
     paths = [build_report(runs[:1], parse_models("axisym:mesh=coarse"), out_dir=tmp_path / name,
