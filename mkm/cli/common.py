@@ -92,13 +92,21 @@ def with_calibration(func):
     return run
 
 
-def add_geometry_arguments(parser) -> None:
+def add_muscle_arguments(parser, length: bool = False) -> None:
+    """``--D0``, ``--t0``, ``--eps`` (and ``--L0`` with ``length``), all required."""
     parser.add_argument("--D0", required=True, type=argtype(parse_number, "--D0"),
                         help="inner tube diameter [mm]")
     parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0"),
                         help="wall thickness [mm]")
+    if length:
+        parser.add_argument("--L0", required=True, type=argtype(parse_number, "--L0"),
+                            help="length at rest [mm]")
     parser.add_argument("--eps", required=True, type=argtype(parse_fraction),
                         help="shortening ratio, a fraction (0.05) or a percentage (5%%)")
+
+
+def add_geometry_arguments(parser) -> None:
+    add_muscle_arguments(parser)
     parser.add_argument("--pressures", default="0:2.5:0.25", type=argtype(parse_pressures),
                         help="start:stop:step in bar (stop included) or a comma list")
 

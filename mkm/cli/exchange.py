@@ -5,8 +5,7 @@ Argument parsing only: :mod:`mkm.bench.exchange` does the work.
 
 from __future__ import annotations
 
-from mkm.cli.common import argtype
-from mkm.fem.ranges import parse_fraction, parse_number
+from mkm.cli.common import add_muscle_arguments
 
 IMPORT_EXAMPLE = ("example: mkm import lab.xlsx --id lab-muscle-7 --D0 30 --t0 3 --L0 282 "
                   "--eps 12.2% --columns pressure=P_bar,force=F_N")
@@ -23,14 +22,7 @@ def register(subparsers) -> None:
         "with --columns.", epilog=IMPORT_EXAMPLE)
     imp.add_argument("table", help="the CSV or .xlsx file")
     imp.add_argument("--id", required=True, help="the muscle's id (names the run folder)")
-    imp.add_argument("--D0", required=True, type=argtype(parse_number, "--D0"),
-                     help="inner tube diameter [mm]")
-    imp.add_argument("--t0", required=True, type=argtype(parse_number, "--t0"),
-                     help="wall thickness [mm]")
-    imp.add_argument("--L0", required=True, type=argtype(parse_number, "--L0"),
-                     help="length at rest [mm]")
-    imp.add_argument("--eps", required=True, type=argtype(parse_fraction),
-                     help="shortening ratio held, a fraction (0.122) or a percentage (12.2%%)")
+    add_muscle_arguments(imp, length=True)
     imp.add_argument("--columns", default=None, metavar="ROLE=COLUMN,...",
                      help="which column holds what: pressure=..., force=..., direction=..., "
                      "force_std=...")
