@@ -51,17 +51,15 @@ def read_table(path: str | Path) -> pd.DataFrame:
     if not path.is_file():
         raise ValueError(f"{path}: no such file: expected a CSV or .xlsx table")
     suffix = path.suffix.lower()
+    if suffix not in (".xlsx", ".xlsm", ".csv", ".txt"):
+        raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv or .xlsx")
     try:
         if suffix in (".xlsx", ".xlsm"):
             table = pd.read_excel(path, sheet_name=0, engine="openpyxl")
-        elif suffix in (".csv", ".txt"):
-            table = pd.read_csv(path, sep=None, engine="python")  # , or ; as exported
         else:
-            raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv or .xlsx")
+            table = pd.read_csv(path, sep=None, engine="python")  # , or ; as exported
     except (OSError, UnicodeDecodeError, pd.errors.ParserError, pd.errors.EmptyDataError,
             KeyError, TypeError, ValueError) as exc:
-        if isinstance(exc, ValueError) and str(exc).startswith(str(path)):
-            raise
         raise ValueError(f"{path} cannot be read as a table ({type(exc).__name__}: "
                          f"{str(exc)[:120]})") from None
     if len(table) > MAX_ROWS:
