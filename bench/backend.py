@@ -15,9 +15,10 @@ NI-DAQmx status codes to them).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
-import numpy as np
+if TYPE_CHECKING:  # annotations only: the backend registry is read by `mkm --help`
+    import numpy as np
 
 
 class BenchError(RuntimeError):

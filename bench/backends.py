@@ -13,8 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from mkm.bench.backend import Backend, DeviceCapabilities
-from mkm.bench.ni import USB6001, NIBackend
-from mkm.bench.sim import SimBackend
+from mkm.bench.devices import USB6001
 
 
 @dataclass(frozen=True)
@@ -72,7 +71,18 @@ def backend_entry(name: str) -> BackendEntry:
         raise ValueError(f"backend={shown!r} is invalid: expected one of {choices}") from None
 
 
-register(BackendEntry("sim", lambda config, clock="virtual": SimBackend(config, clock=clock),
-                      USB6001, "simulated NI USB-6001 bench", simulated=True))
-register(BackendEntry("ni", lambda config, clock="virtual": NIBackend(config), USB6001,
-                      "NI USB-6001 through nidaqmx", simulated=False))
+# the backends' modules are imported when a run opens one, not when the list is read
+def _sim(config, clock="virtual") -> Backend:
+    from mkm.bench.sim import SimBackend
+
+    return SimBackend(config, clock=clock)
+
+
+def _ni(config, clock="virtual") -> Backend:
+    from mkm.bench.ni import NIBackend
+
+    return NIBackend(config)
+
+
+register(BackendEntry("sim", _sim, USB6001, "simulated NI USB-6001 bench", simulated=True))
+register(BackendEntry("ni", _ni, USB6001, "NI USB-6001 through nidaqmx", simulated=False))

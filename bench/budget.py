@@ -133,7 +133,7 @@ class Instrument:
         recorded, the defaults of :mod:`mkm.bench.config` where it predates a setting."""
         from mkm.bench.backends import BACKENDS
         from mkm.bench.config import LoadCell, Regulator
-        from mkm.bench.ni import USB6001
+        from mkm.bench.devices import USB6001
 
         cell = _section(LoadCell, meta.calibration.get("loadcell") or {})
         regulator = _section(Regulator, meta.calibration.get("regulator") or {})

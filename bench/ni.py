@@ -8,8 +8,7 @@ with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the
 A second task writes the regulator command on AO0, on demand. ``close`` writes the vent command
 before clearing the tasks: the USB-6001's AO keeps its last value when a task is closed.
 
-The device's capabilities (:data:`USB6001`, against which a configuration is validated) and the
-NI-DAQmx status codes (turned into :mod:`mkm.bench.backend` errors) live here; a missing driver
+The NI-DAQmx status codes (turned into :mod:`mkm.bench.backend` errors) live here; a missing driver
 (always the case on Linux) becomes :class:`~mkm.bench.backend.DriverMissing` with what to do.
 """
 
@@ -26,29 +25,13 @@ from mkm.bench.backend import (
     Block,
     BufferOverflow,
     DaqDisconnected,
-    DeviceCapabilities,
     DeviceInfo,
     DeviceReserved,
     DriverMissing,
     ReadTimeout,
 )
+from mkm.bench.devices import USB6001
 
-# NI USB-6001/6002/6003 User Guide (ni.com, "Pinout and Signal Descriptions", "Analog Input"):
-# AI 0-7 single-ended (RSE) or four differential channels AI 0-3 paired with AI 4-7 (AI <0,4>,
-# <1,5>, <2,6>, <3,7>); no NRSE or pseudo-differential mode; one +-10 V range; two analog
-# outputs AO 0-1, +-10 V. NI USB-6001/6002/6003 Specifications: 14-bit ADC, 20 kS/s aggregate
-# maximum sample rate on the USB-6001.
-USB6001 = DeviceCapabilities(
-    product="USB-6001",
-    ai_rse=tuple(f"ai{k}" for k in range(8)),
-    ai_differential={f"ai{k}": f"ai{k + 4}" for k in range(4)},
-    terminal_configs=("differential", "rse"),
-    max_aggregate_rate_hz=20_000.0,
-    ai_range_V=10.0,
-    ao=("ao0", "ao1"),
-    ao_range_V=10.0,
-    ai_bits=14,
-)
 USB6001_RANGE_V = USB6001.ai_range_V
 
 # NI-DAQmx status codes (nidaqmx.error_codes.DAQmxErrors) and what they mean for a run.
@@ -131,7 +114,8 @@ class NIBackend:
                 product, serial = str(dev.product_type), f"{int(dev.serial_num):X}"
             if product != USB6001.product:
                 raise BenchError(f"device {self.device} is a {product}: the bench settings are "
-                                 f"validated for a {USB6001.product} only (bench.ni.USB6001)")
+                                 f"validated for a {USB6001.product} only "
+                                 "(mkm.bench.devices.USB6001)")
             with daq_errors():
                 self.ai_task = nidaqmx.Task("mkm_ai")
                 for channel in self.ai_channels:

@@ -50,7 +50,7 @@ from mkm.bench.backend import (
     DeviceInfo,
     ReadTimeout,
 )
-from mkm.bench.ni import USB6001
+from mkm.bench.devices import USB6001
 from mkm.fem.friction import advance
 
 USB6001_RANGE_V = USB6001.ai_range_V

@@ -25,13 +25,15 @@ import json
 import os
 import platform
 import sys
+import time
 from functools import cache
 from importlib.util import resolve_name
 from pathlib import Path
 from typing import Any
 
-from mkm.home import DISTRIBUTION, PACKAGE, package_version
+from mkm.home import DISTRIBUTION, PACKAGE, package_version, user_cache
 
+RACY_NS = 2_000_000_000  # file systems stamp times to 2 s (FAT) or finer
 RECORDED_LIBRARIES = (DISTRIBUTION, "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas")
 
 
@@ -41,17 +43,24 @@ RECORDED_LIBRARIES = (DISTRIBUTION, "numpy", "scipy", "scikit-fem", "scikit-lear
 
 def provenance() -> dict[str, Any]:
     """Library versions, command line, machine and UTC date, recorded with every generated file."""
+    return {"date_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
+            "command": " ".join(sys.argv), "machine": platform.machine(),
+            "versions": dict(_library_versions())}
+
+
+@cache
+def _library_versions() -> tuple[tuple[str, str], ...]:
+    """Python's and :data:`RECORDED_LIBRARIES`' versions, read once per process (each is a
+    metadata file parsed)."""
     from importlib.metadata import PackageNotFoundError, version
 
-    info = {"date_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
-            "command": " ".join(sys.argv), "machine": platform.machine(),
-            "versions": {"python": platform.python_version()}}
+    versions = [("python", platform.python_version())]
     for pkg in RECORDED_LIBRARIES:
         try:
-            info["versions"][pkg] = version(pkg)
+            versions.append((pkg, version(pkg)))
         except PackageNotFoundError:
-            info["versions"][pkg] = "not installed"
-    return info
+            versions.append((pkg, "not installed"))
+    return tuple(versions)
 
 
 def package_file(package: str, *parts: str) -> Path:
@@ -106,9 +115,55 @@ def source_version(*modules: str, data: bool = True) -> str:
     (read from the source, not from ``sys.modules``), and the ``*.json`` data files of each
     package directory involved (the calibration): editing the physics, a material constant or the
     calibration changes the version; editing a report does not. ``data=False`` hashes the source
-    only (the version a calibration records of the code that made it)."""
+    only (the version a calibration records of the code that made it).
+
+    The result is remembered in the user cache with the size and modification time of every file
+    it read and folder it listed (Python's own test for a stale bytecode file), so a command
+    that checks a cached model does not re-read the project's source each time it starts.
+    """
+    memo = user_cache("source-versions", _memo_name(modules, data))
+    digest = _read_memo(memo)
+    if digest is None:
+        digest, paths = _hash_sources(modules, data)
+        stats = {p: _stat(p) for p in paths}
+        # a file changed within the clock's granularity of now could change again unseen
+        # (git's "racy" files): remembered only once every file is older than that
+        settled = time.time_ns() - RACY_NS
+        try:
+            if all(mtime_ns < settled for mtime_ns, _ in stats.values()):
+                write_json_atomic(memo, {"digest": digest, "stat": stats})
+        except OSError:  # a read-only cache costs time, never a wrong version
+            pass
+    return f"{package_version()}+{digest}"
+
+
+def _memo_name(modules, data: bool) -> str:
+    key = json.dumps([sorted(modules), data, sys.prefix])
+    return hashlib.sha256(key.encode()).hexdigest()[:20] + ".json"
+
+
+def _stat(path: str) -> list[int]:
+    st = os.stat(path)
+    return [st.st_mtime_ns, st.st_size]
+
+
+def _read_memo(memo: Path) -> str | None:
+    """The remembered digest if every file and folder it was made from is unchanged."""
+    try:
+        record = json.loads(memo.read_text(encoding="utf-8"))
+        if all(_stat(path) == list(known) for path, known in record["stat"].items()):
+            return str(record["digest"])
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        pass
+    return None
+
+
+def _hash_sources(modules, data: bool) -> tuple[str, list[str]]:
+    """The digest of :func:`source_version` and every path it depends on (source files, data
+    files, and the folders whose data files were listed)."""
     packages = {PACKAGE} | {m.split(".")[0] for m in modules}
     sources: dict[str, bytes] = {}
+    origins: dict[str, Path] = {}
     stack = list(modules)
     while stack:
         module = stack.pop()
@@ -117,7 +172,8 @@ def source_version(*modules: str, data: bool = True) -> str:
         spec = _spec(module)
         if spec is None or not spec.origin or not spec.origin.endswith(".py"):
             continue
-        sources[module] = Path(spec.origin).read_bytes()
+        origins[module] = Path(spec.origin)
+        sources[module] = origins[module].read_bytes()
         package = spec.name if spec.submodule_search_locations else spec.parent
         for node in ast.walk(ast.parse(sources[module])):
             if isinstance(node, ast.Import):
@@ -129,16 +185,15 @@ def source_version(*modules: str, data: bool = True) -> str:
                 continue
             stack.extend(n for n in names if n.split(".")[0] in packages
                          and n not in sources and _is_module(n))
-    data_files = set()
-    for module in sources if data else ():
-        origin = Path(_spec(module).origin)
-        data_files |= set(origin.parent.glob("*.json"))
+    folders = {origin.parent for origin in origins.values()} if data else set()
+    data_files = {path for folder in folders for path in folder.glob("*.json")}
     digest = hashlib.sha256()
     for module in sorted(sources):
         digest.update(module.encode() + b"\0" + sources[module])
     for path in sorted(data_files):
         digest.update(path.name.encode() + b"\0" + path.read_bytes())
-    return f"{package_version()}+{digest.hexdigest()[:12]}"
+    paths = [str(p) for p in (*origins.values(), *folders, *data_files)]
+    return digest.hexdigest()[:12], paths
 
 
 def _is_module(name: str) -> bool:

@@ -1,6 +1,6 @@
 """Predictions of the ``muscle-gp`` kind from its fitted arrays alone.
 
-numpy and scipy only: a saved default surrogate predicts without loading scikit-learn or skops
+numpy only: a saved default surrogate predicts without loading scikit-learn or skops
 (the estimator file holds the whole fitted estimator, for refits and calibration; the predictor
 file, ``predictor.npz``, holds these arrays and is read with ``allow_pickle=False``, so it cannot
 run code either). :class:`~mkm.surrogate.muscle_gp.MuscleThresholdGP` predicts through the same
@@ -9,10 +9,10 @@ functions, so both give the same numbers to the bit.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.special import ndtr
 
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.surrogate.features import braid_slope_N_per_bar, columns_of, thickwall_threshold_bar
@@ -67,6 +67,16 @@ def from_log_k(v, m_A, s_A, m_P, s_P):
     return A, sd_A, Pstar, np.abs(dP_dlogk) * s_P
 
 
+def _normal_cdf(t):
+    """The standard normal CDF, ``erfc(-t / sqrt 2) / 2`` per element (``math.erfc``: exact to
+    a few ulp, and a sweep needs no scipy import)."""
+    t = np.asarray(t, dtype=float)
+    return 0.5 * _ERFC(-t / math.sqrt(2.0)).astype(float)
+
+
+_ERFC = np.frompyfunc(math.erfc, 1, 1)
+
+
 def force_parts(P, A, s_A, Pstar, s_P, linearity_bar):
     """Force [N], its variance [N^2] from the std of ``A`` and ``P*``, and the linearity floor
     [N] (``linearity_bar`` per bin of :data:`LINEARITY_BINS_BAR`)."""
@@ -75,7 +85,7 @@ def force_parts(P, A, s_A, Pstar, s_P, linearity_bar):
     # relative std s_A / A
     mu, s = P - Pstar, np.maximum(s_P, 1e-12)
     t = mu / s
-    cdf, pdf = ndtr(t), np.exp(-0.5 * t**2) / np.sqrt(2.0 * np.pi)  # scipy.stats.norm's
+    cdf, pdf = _normal_cdf(t), np.exp(-0.5 * t**2) / np.sqrt(2.0 * np.pi)
     e1 = mu * cdf + s * pdf
     e2 = (mu**2 + s**2) * cdf + mu * s * pdf
     rel = np.divide(s_A, A, out=np.zeros(np.broadcast_shapes(np.shape(s_A), np.shape(A))),

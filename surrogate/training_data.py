@@ -18,7 +18,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 
 from mkm.fem.interface import INPUTS, Domain
 from mkm.fem.records import file_sha256, package_file, read_prediction_header
@@ -81,6 +80,8 @@ def load_training_data(path=DEFAULT_DATASET) -> TrainingData:
         raise ValueError(f"dataset {str(path)!r} does not exist: expected a CSV built by "
                          "`mkm surrogate design` or `mkm fem dataset` (columns "
                          "pressure_bar,D0_mm,t0_mm,eps,force_N,...)")
+    import pandas as pd  # here: a saved model predicts without it
+
     frame = pd.read_csv(path, comment="#")
     missing = [c for c in (*INPUTS, "force_N") if c not in frame.columns]
     if missing:

@@ -58,7 +58,7 @@ class ToyBackend(SimBackend):
 
 
 def test_a_registered_backend_is_offered_checked_and_tested(config, tmp_path, mkm_cli):
-    from mkm.bench.ni import USB6001
+    from mkm.bench.devices import USB6001
 
     register(BackendEntry("toy", ToyBackend, USB6001, "toy bench of the tests", simulated=True))
     try:

@@ -1,6 +1,7 @@
 """Tests of fem/records.py: atomic writes, source versions, package files, provenance."""
 
 import os
+import time
 
 import pytest
 
@@ -33,6 +34,38 @@ def test_source_version_follows_imports_and_data(tmp_path):
     assert version.startswith(package_version() + "+")
     assert version == source_version("mkm.fem.thickwall")  # read from the files: stable
     assert version != source_version("mkm.fem.eq2")
+
+
+def test_source_version_is_remembered_until_a_file_changes(tmp_path, monkeypatch):
+    package = tmp_path / "memopkg"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    (package / "model.py").write_text("from memopkg import physics\n")
+    (package / "physics.py").write_text("k = 100.0\n")
+    old = time.time() - 60.0
+    for path in (*package.iterdir(), package):
+        os.utime(path, (old, old))
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.setenv("MKM_CACHE_DIR", str(tmp_path / "cache"))
+    records.source_version.cache_clear()
+    first = records.source_version("memopkg.model")
+    assert len(list((tmp_path / "cache" / "source-versions").iterdir())) == 1
+
+    def no_reading(*args):
+        raise AssertionError("the source was read again")
+
+    records.source_version.cache_clear()
+    with monkeypatch.context() as patch:
+        patch.setattr(records, "_hash_sources", no_reading)
+        assert records.source_version("memopkg.model") == first  # remembered
+    # same size, another time: the edit is seen (and, just written, not remembered)
+    (package / "physics.py").write_text("k = 101.0\n")
+    records.source_version.cache_clear()
+    second = records.source_version("memopkg.model")
+    assert second != first
+    records.source_version.cache_clear()
+    assert records.source_version("memopkg.model") == second
+    records.source_version.cache_clear()
 
 
 def test_package_files_exist():

@@ -287,19 +287,35 @@ def test_a_ctrl_c_while_importing_is_one_line_and_130():
     assert done.returncode == 130 and done.stderr == "mkm: interrupted\n"
 
 
-# numpy may load (the bench's backends, a closed form): the data, plotting and FE stacks may not
-HEAVY = ("pandas", "scipy", "matplotlib", "sklearn", "skfem", "mkm.fem.fe", "dask", "openpyxl")
+# the data, plotting and FE stacks may not load for a quick command; numpy only where it computes
+HEAVY = ("pandas", "scipy", "matplotlib", "sklearn", "skfem", "mkm.fem.fe", "dask", "openpyxl",
+         "skops")
+MUSCLE = ["--D0", "35", "--t0", "2.5", "--eps", "0.05"]
 
 
-@pytest.mark.parametrize("argv", [
-    ["--help"], ["models"],
-    ["fem", "solve", "--model", "eq2", "--D0", "35", "--t0", "2.5", "--eps", "0.05"]])
-def test_quick_commands_start_without_the_heavy_libraries(argv):
-    # a fresh interpreter: what this command imports, not what earlier tests did
+def imported_by(argv) -> list[str]:
+    """The heavy modules (and numpy) a fresh interpreter has imported after ``mkm argv``."""
     code = ("import json, sys\nfrom mkm.cli import main\n"
             "try:\n    main(sys.argv[1:])\nexcept SystemExit:\n    pass\n"
-            f"print(json.dumps([m for m in {HEAVY!r} if m in sys.modules]), file=sys.stderr)")
+            f"print(json.dumps([m for m in {(*HEAVY, 'numpy')!r} if m in sys.modules]), "
+            "file=sys.stderr)")
     done = subprocess.run([sys.executable, "-c", code, *argv], capture_output=True, text=True,
                           check=True)
-    loaded = json.loads(done.stderr.strip().splitlines()[-1])
+    return json.loads(done.stderr.strip().splitlines()[-1])
+
+
+@pytest.mark.parametrize("argv, allowed", [
+    (["--help"], ()), (["models"], ()),
+    (["fem", "solve", "--model", "eq2", *MUSCLE], ("numpy",))])
+def test_quick_commands_start_without_the_heavy_libraries(argv, allowed):
+    loaded = [m for m in imported_by(argv) if m not in allowed]
     assert loaded == [], f"mkm {' '.join(argv)} imported {loaded}"
+
+
+@pytest.mark.slow  # the default surrogate is trained in this session's cache first
+def test_a_trained_surrogate_answers_with_numpy_alone():
+    from mkm.surrogate.train import cached_model
+
+    cached_model("best")
+    loaded = imported_by(["fem", "solve", "--model", "surrogate", *MUSCLE])
+    assert loaded == ["numpy"], f"mkm fem solve --model surrogate imported {loaded}"
