@@ -3,7 +3,8 @@
 A :class:`Job` is one model call, the pressure sweep of one muscle at one ``eps`` with every
 input resolved (the braid angle included: workers never read a calibration file). Every command
 that solves many muscles (the dataset, the surrogate's design and off-grid evaluation, the
-study's references, design verification) makes jobs and hands them to :func:`run_jobs`, which
+study's references, design verification, the identification's FE search and confirmation) makes
+jobs and hands them to :func:`run_jobs`, which
 
 - computes only the jobs missing from the per-job cache (:class:`JobCache`, one JSON file per
   finished job in the user's cache, keyed by the job's inputs and the model's source version):

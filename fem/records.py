@@ -117,21 +117,22 @@ def source_version(*modules: str, data: bool = True) -> str:
     calibration changes the version; editing a report does not. ``data=False`` hashes the source
     only (the version a calibration records of the code that made it).
 
-    The result is remembered in the user cache with the size and modification time of every file
-    it read and folder it listed (Python's own test for a stale bytecode file), so a command
-    that checks a cached model does not re-read the project's source each time it starts.
+    The result is remembered in the user cache with the file each module was found in and the
+    size and modification time of every file and folder it read (Python's own test for a stale
+    bytecode file), so a command that checks a cached model does not re-read the project's
+    source each time it starts.
     """
     memo = user_cache("source-versions", _memo_name(modules, data))
     digest = _read_memo(memo)
     if digest is None:
-        digest, paths = _hash_sources(modules, data)
+        digest, origins, paths = _hash_sources(modules, data)
         stats = {p: _stat(p) for p in paths}
         # a file changed within the clock's granularity of now could change again unseen
         # (git's "racy" files): remembered only once every file is older than that
         settled = time.time_ns() - RACY_NS
         try:
             if all(mtime_ns < settled for mtime_ns, _ in stats.values()):
-                write_json_atomic(memo, {"digest": digest, "stat": stats})
+                write_json_atomic(memo, {"digest": digest, "modules": origins, "stat": stats})
         except OSError:  # a read-only cache costs time, never a wrong version
             pass
     return f"{package_version()}+{digest}"
@@ -148,22 +149,25 @@ def _stat(path: str) -> list[int]:
 
 
 def _read_memo(memo: Path) -> str | None:
-    """The remembered digest if every file and folder it was made from is unchanged."""
+    """The remembered digest if every module still comes from the file it was read from (another
+    ``sys.path`` may find other code) and every file and folder is unchanged."""
     try:
         record = json.loads(memo.read_text(encoding="utf-8"))
-        if all(_stat(path) == list(known) for path, known in record["stat"].items()):
+        if (all(getattr(_spec(name), "origin", None) == origin
+                for name, origin in record["modules"].items())
+                and all(_stat(path) == list(known) for path, known in record["stat"].items())):
             return str(record["digest"])
     except (OSError, ValueError, KeyError, TypeError, AttributeError):
         pass
     return None
 
 
-def _hash_sources(modules, data: bool) -> tuple[str, list[str]]:
-    """The digest of :func:`source_version` and every path it depends on (source files, data
-    files, and the folders whose data files were listed)."""
+def _hash_sources(modules, data: bool) -> tuple[str, dict[str, str], list[str]]:
+    """The digest of :func:`source_version`, the file each module was read from, and every path
+    the digest depends on (source files, data files, the folders whose data files were listed)."""
     packages = {PACKAGE} | {m.split(".")[0] for m in modules}
     sources: dict[str, bytes] = {}
-    origins: dict[str, Path] = {}
+    origins: dict[str, str] = {}
     stack = list(modules)
     while stack:
         module = stack.pop()
@@ -172,8 +176,8 @@ def _hash_sources(modules, data: bool) -> tuple[str, list[str]]:
         spec = _spec(module)
         if spec is None or not spec.origin or not spec.origin.endswith(".py"):
             continue
-        origins[module] = Path(spec.origin)
-        sources[module] = origins[module].read_bytes()
+        origins[module] = spec.origin
+        sources[module] = Path(spec.origin).read_bytes()
         package = spec.name if spec.submodule_search_locations else spec.parent
         for node in ast.walk(ast.parse(sources[module])):
             if isinstance(node, ast.Import):
@@ -185,15 +189,16 @@ def _hash_sources(modules, data: bool) -> tuple[str, list[str]]:
                 continue
             stack.extend(n for n in names if n.split(".")[0] in packages
                          and n not in sources and _is_module(n))
-    folders = {origin.parent for origin in origins.values()} if data else set()
-    data_files = {path for folder in folders for path in folder.glob("*.json")}
+    # a module or data file added to a folder changes the folder's time
+    folders = {Path(origin).parent for origin in origins.values()}
+    data_files = {path for folder in folders for path in folder.glob("*.json")} if data else set()
     digest = hashlib.sha256()
     for module in sorted(sources):
         digest.update(module.encode() + b"\0" + sources[module])
     for path in sorted(data_files):
         digest.update(path.name.encode() + b"\0" + path.read_bytes())
     paths = [str(p) for p in (*origins.values(), *folders, *data_files)]
-    return digest.hexdigest()[:12], paths
+    return digest.hexdigest()[:12], origins, paths
 
 
 def _is_module(name: str) -> bool:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from mkm.cli.common import add_calibration_argument, with_calibration
+from mkm.cli.common import add_batch_arguments, add_calibration_argument, with_calibration
 from mkm.paths import default_out
 
 
@@ -33,6 +33,7 @@ def register(subparsers) -> None:
     parser.add_argument("--seed", type=int, default=0, help="bootstrap seed (default 0)")
     parser.add_argument("--out", default=None,
                         help="output folder (default mkm-out/identify/<first run>)")
+    add_batch_arguments(parser)
     add_calibration_argument(parser)
     parser.set_defaults(func=with_calibration(_identify))
 
@@ -44,8 +45,8 @@ def _identify(args) -> int:
 
     try:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
-                          seed=args.seed, notify=lambda line: print(f"mkm: {line}",
-                                                                    file=sys.stderr))
+                          seed=args.seed, workers=args.workers, scheduler=args.scheduler,
+                          notify=lambda line: print(f"mkm: {line}", file=sys.stderr))
     except RuntimeError as exc:  # a fit that failed: said, nothing written
         print(f"mkm: error: identification failed: {exc}", file=sys.stderr)
         return 1

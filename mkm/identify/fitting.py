@@ -27,6 +27,7 @@ from scipy.optimize import least_squares
 from mkm.fem.friction import DEFAULTS as TERM_DEFAULTS
 from mkm.fem.friction import force_history
 from mkm.fem.materials import SILASTIC_S
+from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
 #: ``--params`` groups and the fitted parameters each holds (internal names)
 GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",),
@@ -87,9 +88,12 @@ class StaticSource:
 
 class ModelStatic(StaticSource):
     """A registry spec (``axisym``, ``axisym:mesh=coarse``, ``thickwall``) solved at each run's
-    set pressures."""
+    set pressures: the runs' sweeps of one call together on the FE batch runner ``runner``
+    (:func:`mkm.prediction_cache.predict_many`: local workers or a Dask cluster), through the
+    prediction cache ``cache_dir`` (a repeated identification solves nothing again; None: no
+    cache)."""
 
-    def __init__(self, spec: str, L0_mm: float):
+    def __init__(self, spec: str, L0_mm: float, runner=None, cache_dir=DEFAULT_CACHE_DIR):
         from mkm.registry import parse_spec
 
         self.spec = parse_spec(spec)
@@ -98,6 +102,7 @@ class ModelStatic(StaticSource):
                              "theta0_deg, C10_MPa and C01_MPa (axisym, thickwall)")
         self.name = self.spec.text
         self.L0_mm = L0_mm
+        self.runner, self.cache_dir = runner, cache_dir
         self.calls = 0
 
     def model(self, theta0_deg: float, rubber_scale: float):
@@ -108,11 +113,13 @@ class ModelStatic(StaticSource):
 
     def tables(self, runs, theta0_deg, rubber_scale):
         model = self.model(theta0_deg, rubber_scale)
+        grids = [run.table_pressures() for run in runs]
+        solved = predict_many([(model, grid, *run.geometry) for grid, run in
+                               zip(grids, runs, strict=True)], self.cache_dir,
+                              runner=self.runner, desc=f"{self.name} sweeps")
+        self.calls += len(runs)
         out = []
-        for run in runs:
-            grid = run.table_pressures()
-            pred = model.predict(grid, *run.geometry)
-            self.calls += 1
+        for grid, run, (pred, _) in zip(grids, runs, solved, strict=True):
             if not pred.valid.all():
                 raise RuntimeError(f"{self.name} gives no valid force for run {run.name} at "
                                    f"theta0_deg={theta0_deg:.3f}, rubber x{rubber_scale:.3f}")

@@ -20,12 +20,14 @@ import time
 
 import numpy as np
 
+from mkm.fem.batch import Runner
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting
 from mkm.identify.fitting import GROUPS, Corrected, ModelStatic, SurrogateStatic
 from mkm.identify.intervals import CONFOUNDED, bootstrap
 from mkm.identify.result import Identification
 from mkm.identify.runs import load_runs
+from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
 SEARCHES = ("surrogate", "model")
 #: where the fitted terms start (a term at its zero bound has no gradient to leave it by)
@@ -34,7 +36,8 @@ TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01}
 
 def identify(run_dirs, params: str | None = None, model: str = "axisym",
              search: str = "surrogate", surrogate=None, seed: int = 0,
-             notify=lambda message: None) -> Identification:
+             notify=lambda message: None, workers: int | None = None,
+             scheduler: str | None = None, cache_dir=DEFAULT_CACHE_DIR) -> Identification:
     """Identify the muscle of ``run_dirs`` (see the module docstring).
 
     Parameters
@@ -55,14 +58,27 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         Seed of the bootstrap.
     notify : callable
         Receives one line per stage.
+    workers, scheduler : optional
+        Where the FE sweeps run (:class:`mkm.fem.batch.Runner`): the runs' sweeps of one
+        evaluation are solved side by side; one local cluster serves the whole identification.
+    cache_dir : path, optional
+        The FE prediction cache (:mod:`mkm.prediction_cache`): an identification repeated or
+        interrupted solves only what it has not solved yet; None: no cache.
     """
     started = time.perf_counter()
     groups = fitting.parse_groups(params)
     if search not in SEARCHES:
         raise ValueError(f"search={search!r} is invalid: expected one of {', '.join(SEARCHES)}")
     runs = load_runs(run_dirs)
-    L0_mm = float(runs[0].muscle["L0_mm"])
-    fe = ModelStatic(model, L0_mm)
+    with Runner(workers, scheduler) as runner:
+        fe = ModelStatic(model, float(runs[0].muscle["L0_mm"]), runner, cache_dir)
+        result = _identify(runs, groups, fe, search, surrogate, seed, notify, started)
+        result.fe_workers = runner.describe()
+    return result
+
+
+def _identify(runs, groups, fe, search, surrogate, seed, notify, started):
+    L0_mm = fe.L0_mm
     nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build()
                                      .params()["theta0_deg"])
     names = [n for g in groups for n in GROUPS[g]]

@@ -58,6 +58,7 @@ class Identification:
     searched_with: str
     nominal: dict
     seconds: float
+    fe_workers: str = "1 worker (in-process)"  # where the FE sweeps ran
     files: dict = field(default_factory=dict)
 
     @property
@@ -136,14 +137,15 @@ class Identification:
             "searched_with": self.searched_with, "model": self.model,
             "fe_confirmation": self.confirmation, "notes": self.notes,
             "leave_one_run_out": self.checks_table().to_dict(orient="records"),
-            "seconds": round(self.seconds, 2),
+            "seconds": round(self.seconds, 2), "fe_workers": self.fe_workers,
         }
 
     def summary(self) -> str:
         """The result as a user reads it on the terminal."""
         lines = [f"identified from {len(self.runs)} run(s) "
                  f"(eps {', '.join(f'{r.eps:g}' for r in self.runs)}), searched with "
-                 f"{self.searched_with}, confirmed with {self.model}, in {self.seconds:.1f} s"]
+                 f"{self.searched_with}, confirmed with {self.model} (FE sweeps on "
+                 f"{self.fe_workers}), in {self.seconds:.1f} s"]
         for row in self.parameters().itertuples():
             lines.append(f"  {row.parameter:<20} {row.value:10.5g}  95 % CI "
                          f"[{row.ci_low:.5g}, {row.ci_high:.5g}] {row.unit}")

@@ -1,6 +1,7 @@
 """Tests of fem/records.py: atomic writes, source versions, package files, provenance."""
 
 import os
+import shutil
 import time
 
 import pytest
@@ -65,6 +66,13 @@ def test_source_version_is_remembered_until_a_file_changes(tmp_path, monkeypatch
     assert second != first
     records.source_version.cache_clear()
     assert records.source_version("memopkg.model") == second
+    # the same module names found elsewhere (another sys.path): that code's version
+    other = tmp_path / "elsewhere"
+    shutil.copytree(package, other / "memopkg")
+    (other / "memopkg" / "physics.py").write_text("k = 102.0\n")
+    monkeypatch.syspath_prepend(str(other))
+    records.source_version.cache_clear()
+    assert records.source_version("memopkg.model") not in (first, second)
     records.source_version.cache_clear()
 
 

@@ -214,6 +214,16 @@ def test_bad_input_is_one_line_and_status_2(one_run, tmp_path, mkm_run, case, me
     assert not out.exists()  # nothing half-written
 
 
+@pytest.mark.slow  # a local Dask cluster
+def test_the_fe_search_on_two_workers_finds_the_same_numbers(muscle, tmp_path):
+    _, runs = muscle
+    found = [identify(runs[:2], params="theta0", model="axisym:mesh=coarse", search="model",
+                      workers=workers, cache_dir=tmp_path / f"cache-{workers}").fit
+             for workers in (1, 2)]
+    assert found[0].values == found[1].values  # the same solves, to the bit
+    assert np.array_equal(found[0].residual_N, found[1].residual_N)
+
+
 @pytest.mark.slow
 def test_the_whole_path_on_the_fe_bench(tmp_path, mkm_run):
     """FE bench, surrogate search and FE confirmation from the CLI; the report shows the

@@ -217,6 +217,15 @@ def test_a_scheduler_and_workers_started_with_the_dask_command(tmp_path, capsys)
         assert design.muscle.nunique() == 2 and design.converged.all()
         assert json.loads((tmp_path / "design.json").read_text())["workers"] == (
             f"the Dask cluster at {address}")
+        # and the identification's FE search, from a simulated run
+        assert main(["acquire", "--backend", "sim", "--eps", "0.1", "--out",
+                     str(tmp_path / "runs")]) == 0
+        run = capsys.readouterr().out.strip().splitlines()[-1]
+        assert main(["identify", run, "--params", "theta0", "--search", "model", "--model",
+                     "axisym:mesh=coarse", "--out", str(tmp_path / "identified"),
+                     "--scheduler", address]) == 0
+        record = json.loads((tmp_path / "identified" / "identification.json").read_text())
+        assert record["fe_workers"] == f"the Dask cluster at {address}"
 
         # a worker with other code joins: the next batch is refused, naming both versions
         other = copy_with_other_physics(tmp_path / "other")
