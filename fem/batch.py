@@ -11,7 +11,8 @@ jobs and hands them to :func:`run_jobs`, which
   an interrupted batch restarted computes only what is missing;
 - runs them in-process (one worker), on a local Dask cluster of single-threaded worker processes
   (started once per :class:`Runner` and reused by every batch of a command), or on an existing
-  Dask cluster given by its scheduler address;
+  Dask cluster given by its scheduler address; while a cluster starts (seconds), this process
+  computes jobs itself;
 - sizes the tasks for the scheduler: single jobs until the first answers, then chunks of about
   :data:`TASK_SECONDS` from the median time of the jobs done so far (small jobs batched so the
   per-task overhead of a few milliseconds is hidden; FE jobs on the fine mesh stay one per
@@ -104,6 +105,8 @@ AUTO_CLUSTER_SECONDS = 20.0
 QUIET_WORKERS = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
                  "distributed.worker.profile.enabled": False,
                  "distributed.admin.tick.interval": "500ms"}
+#: This process computes jobs while its cluster starts (False: the cluster computes every job).
+COMPUTE_WHILE_STARTING = True
 #: How long a batch waits for a cluster without workers before giving up [s].
 WORKER_WAIT_SECONDS = 60.0
 
@@ -441,7 +444,7 @@ def _run(runner: Runner, jobs, cache_dir, progress, desc):
         results[key] = result
         bar.update()
 
-    chunk = 1
+    chunk, here = 1, 0
     with bar:
         if not missing:
             where = "no worker (all cached)"
@@ -458,9 +461,11 @@ def _run(runner: Runner, jobs, cache_dir, progress, desc):
                         finished(key, job, run_chunk((job,))[0])
                     todo = []
             if todo:
-                client = runner.client(len(todo))
-                runner.check_versions(client, models[0], model_ver)
-                chunk = _run_on_dask(client, todo, finished)
+                client, here = _start_while_computing(runner, todo, finished, models[0],
+                                                      model_ver)
+                todo = todo[:len(todo) - here]
+                if todo:
+                    chunk = _run_on_dask(client, todo, finished)
             where = runner.describe()
     if failures:
         raise RuntimeError(f"{len(failures)} of {len(missing)} jobs failed (the others are "
@@ -470,8 +475,31 @@ def _run(runner: Runner, jobs, cache_dir, progress, desc):
                           "valid": bool})
     frame = frame[list(COLUMNS) + [c for c in frame.columns if c not in COLUMNS]]
     return frame, {"computed": len(missing), "cached": n_cached, "workers": where,
+                   "computed_while_starting": here,
                    "chunk_jobs": chunk, "model_version": model_ver,
                    "params": results[keys[0]]["params"]}
+
+
+def _start_while_computing(runner: Runner, todo: list, finished, model: str, version: str):
+    """The runner's Dask client, started (or connected) and its workers' model version checked
+    in a thread while this process computes jobs from the end of ``todo``: its core is idle
+    while the workers start (seconds of process start and imports). Returns the client and how
+    many jobs it computed (the last ones of ``todo``)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    def start():
+        client = runner.client(len(todo))
+        runner.check_versions(client, model, version)
+        return client
+
+    with ThreadPoolExecutor(1, thread_name_prefix="mkm-cluster-start") as pool:
+        starting = pool.submit(start)
+        here = 0
+        while COMPUTE_WHILE_STARTING and here < len(todo) and not starting.done():
+            key, job = todo[len(todo) - 1 - here]
+            finished(key, job, run_chunk((job,))[0])
+            here += 1
+        return starting.result(), here
 
 
 def _run_on_dask(client, missing, finished) -> int:

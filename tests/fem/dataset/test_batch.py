@@ -93,6 +93,7 @@ def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(tmp
     # a long task target: the balance rule alone sizes the chunks, 12 jobs left after the
     # first 4 single-job tasks (2 queued per worker) -> ceil(12 / (4 x 2)) = 2
     monkeypatch.setattr(batch, "TASK_SECONDS", 1e3)
+    monkeypatch.setattr(batch, "COMPUTE_WHILE_STARTING", False)  # every job to the cluster
     with Runner(workers=2) as runner:
         frame, done = run_jobs(FE_JOBS, runner=runner, cache_dir=tmp_path / "two",
                                progress=False)
@@ -104,6 +105,15 @@ def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(tmp
     assert runner._cluster is None  # closed with the block
     assert done["workers"] == "2 local Dask workers"
     assert done["chunk_jobs"] == -(-12 // (CHUNKS_PER_WORKER * 2)) == 2
+    pd.testing.assert_frame_equal(frame[SAME], serial[SAME])  # to the last bit
+
+
+@pytest.mark.slow  # starts Dask
+def test_this_process_computes_while_the_cluster_starts(tmp_path):
+    serial = serial_fe(tmp_path)
+    frame, done = run_jobs(FE_JOBS, workers=2, cache_dir=tmp_path / "two", progress=False)
+    # a coarse job takes about 0.1 s, starting two worker processes seconds
+    assert done["computed_while_starting"] >= 1 and done["computed"] == len(FE_JOBS)
     pd.testing.assert_frame_equal(frame[SAME], serial[SAME])  # to the last bit
 
 
@@ -248,7 +258,10 @@ def test_a_scheduler_and_workers_started_with_the_dask_command(tmp_path, capsys)
         err = capsys.readouterr().err
         assert code == 2 and len(err.splitlines()) == 1
         assert f"has eq2 model version {theirs}, this client has {model_version('eq2')}" in err
-        assert not (tmp_path / "eq2.csv").exists() and not (tmp_path / "eq2").exists()
+        assert not (tmp_path / "eq2.csv").exists()
+        # what this process computed while it checked the workers is kept: its own code's
+        kept = [json.loads(f.read_text()) for f in (tmp_path / "eq2").rglob("*.json")]
+        assert all(job["model_version"] == model_version("eq2") for job in kept)
     finally:
         stop(processes)
 
