@@ -25,6 +25,13 @@ def test_every_package_folder_is_installed_under_its_name():
         for init in (ROOT / folder).rglob("__init__.py"):
             parts = init.parent.relative_to(ROOT / folder).parts
             found.add(".".join((name, *parts)))
+    # the data folders (package data, no code) are listed too, each with its files' patterns
+    data = set(CONFIG["tool"]["setuptools"]["package-data"]) - found
+    for name in data:
+        top = max((n for n in _package_dir() if name.startswith(n + ".")), key=len)
+        folder = ROOT / _package_dir()[top] / Path(*name[len(top) + 1:].split("."))
+        assert not list(folder.glob("*.py")), f"{name} holds code: expected data only"
+        found.add(name)
     # the mapped folders nest (mkm.fem is in mkm/'s list only through its own mapping)
     assert set(CONFIG["tool"]["setuptools"]["packages"]) == found
 
