@@ -492,7 +492,8 @@ def _start_while_computing(runner: Runner, todo: list, finished, model: str, ver
         runner.check_versions(client, model, version)
         return client
 
-    with ThreadPoolExecutor(1, thread_name_prefix="mkm-cluster-start") as pool:
+    pool = ThreadPoolExecutor(1, thread_name_prefix="mkm-cluster-start")
+    try:
         starting = pool.submit(start)
         here = 0
         while COMPUTE_WHILE_STARTING and here < len(todo) and not starting.done():
@@ -500,6 +501,8 @@ def _start_while_computing(runner: Runner, todo: list, finished, model: str, ver
             finished(key, job, run_chunk((job,))[0])
             here += 1
         return starting.result(), here
+    finally:  # Ctrl-C does not wait for a scheduler that may take a minute to answer
+        pool.shutdown(wait=False)
 
 
 def _run_on_dask(client, missing, finished) -> int:
