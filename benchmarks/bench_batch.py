@@ -90,6 +90,7 @@ def strong_scaling(n_jobs: int, meshes, workers) -> list[dict]:
             row = {"mesh": mesh, "jobs": len(jobs), "workers": n, "where": done["workers"],
                    "chunk_jobs": done["chunk_jobs"], "wall_s": wall, "sum_job_solve_s": solve,
                    "cpu_s": done["cpu_s"],
+                   "computed_while_starting": done.get("computed_while_starting", 0),
                    "ratio_to_1_worker": wall / base,
                    "points_not_converged": int((~frame["converged"]).sum())}
             out.append(row)
@@ -213,8 +214,44 @@ def main() -> None:
     print(f"load average after: {load_after[0]:.2f} (1 min)")
     if args.json:
         args.json.write_text(json.dumps({**provenance(), "load_average_before": load_before,
-                                         "load_average_after": load_after, **results},
+                                         "load_average_after": load_after, **results,
+                                         "rows": figures(results)},
                                         indent=2, default=str) + "\n")
+
+
+#: the issue's targets for the ratio of N workers' wall time to one worker's, per mesh
+RATIO_TARGETS = {"medium": 0.6, "coarse": 1.0}
+
+
+def figures(results: dict) -> list[dict]:
+    """The figures as one table (what the docs show): figure, value, unit, target."""
+    rows = []
+    for r in results.get("strong_scaling", []):
+        rows.append({"figure": f"{r['jobs']} {r['mesh']}-mesh jobs on {r['workers']} worker(s)",
+                     "value": round(r["wall_s"], 2), "unit": "s", "target": ""})
+        if r["workers"] > 1:
+            target = RATIO_TARGETS.get(r["mesh"])
+            rows.append({"figure": f"{r['mesh']}: {r['workers']} workers / 1 worker",
+                         "value": round(r["ratio_to_1_worker"], 3), "unit": "",
+                         "target": "" if target is None else f"<= {target}"})
+    s = results.get("scheduler")
+    if s:
+        rows += [{"figure": f"scheduler: task rate, {s['workers']} local workers",
+                  "value": round(s["task_rate_per_s"]), "unit": "tasks/s", "target": ""},
+                 {"figure": "scheduler: overhead per task per worker",
+                  "value": round(s["overhead_per_task_s"] * 1e3, 2), "unit": "ms", "target": ""},
+                 {"figure": f"100 workers on {s['task_seconds']:g} s tasks: share of that rate",
+                  "value": round(100 * s["scheduler_share_at_100_workers"], 1), "unit": "%",
+                  "target": "< 100"},
+                 {"figure": "100 workers: efficiency per task",
+                  "value": round(100 * s["efficiency_per_task"], 1), "unit": "%", "target": ""}]
+    k = results.get("killed_worker")
+    if k:
+        rows += [{"figure": f"killed worker: jobs finished of {k['jobs']}",
+                  "value": k["jobs_finished"], "unit": "jobs", "target": f"{k['jobs']}"},
+                 {"figure": "killed worker: largest difference from in-process",
+                  "value": k["max_abs_diff_N"], "unit": "N", "target": "0"}]
+    return rows
 
 
 if __name__ == "__main__":  # the guard lets Dask spawn worker processes from this script

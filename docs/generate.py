@@ -282,6 +282,8 @@ BENCHMARKS = {
     "axisym.csv": "benchmarks/bench_axisym.py --levels coarse,medium,fine --repeats 3",
     "design.json": "benchmarks/bench_design.py --repeats 5 --fe-repeats 2 --out {out}",
     "dataset.json": "benchmarks/bench_dataset.py --workers 1 2 --json {out}",
+    "batch.json": "benchmarks/bench_batch.py --json {out}",
+    "startup.json": "benchmarks/bench_startup.py --json {out}",
 }
 
 
