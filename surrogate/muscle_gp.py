@@ -81,7 +81,8 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
     each sweep's ``A`` and ``P*`` (:func:`muscle_slopes`) give ``k_A`` and ``k_P``
     (:func:`effective_eps_of_slope`, :func:`effective_eps_of_threshold`); two Gaussian
     processes (Matern 5/2, one length scale per input, a noise term) learn ``log k_A`` and
-    ``log k_P`` over the standardised muscle parameters and ``D_braid / L0``. Predict:
+    ``log k_P`` over the standardised muscle parameters (``sqrt(eps)`` for ``eps``: ``log k_A``
+    is close to linear in it) and ``D_braid / L0``. Predict:
     ``A = A_tw(k_A eps)``, ``P* = P*_tw(k_P eps)``: non-negative and non-decreasing in
     pressure by construction, and the closed form itself at ``eps = 0``, where the FE is too.
     The standard deviation carries the processes' std ``s`` of ``log k``, calibrated as

@@ -27,9 +27,14 @@ SCALARS = ("std_scale", "std_power", "std_reference")
 
 def muscle_values(X, inputs, fixed):
     """The muscle's values by name and ``z``, the inputs of the processes: the muscle
-    parameters of ``X`` and the braid diameter over the length."""
+    parameters of ``X`` (``sqrt(eps)`` in place of ``eps``) and the braid diameter over the
+    length."""
     v = columns_of(X, tuple(inputs), fixed)
     z = np.column_stack([X[:, 1:], (v["D0_mm"] + 2.0 * v["t0_mm"]) / v["L0_mm"]])
+    # log k_A falls steeply as eps leaves 0 and then flattens, most for short wide muscles
+    # (the end zones' share of the shortening shrinks): close to linear in sqrt(eps), which a
+    # stationary process with one length scale follows and a process in eps does not.
+    z[:, tuple(inputs).index("eps") - 1] = np.sqrt(np.maximum(v["eps"], 0.0))
     return v, z
 
 
