@@ -32,6 +32,7 @@ from scipy.stats import qmc
 from mkm.fem.batch import Job, Runner, run_jobs
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.records import package_file, provenance, write_csv_with_sidecar
+from mkm.surrogate.muscle_predictor import process_inputs
 
 #: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).
 DESIGN_DATASET = package_file("mkm.surrogate", "data", "mkm_design.csv")
@@ -186,21 +187,22 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
                                                            for p in MUSCLE_PARAMETERS}}
     X = np.column_stack([values[name] for name in estimator.inputs])
     v, z = estimator._muscle(X)
-    zs = (z - estimator.z_mean_) / estimator.z_scale_
+    zs = process_inputs((z - estimator.z_mean_) / estimator.z_scale_, estimator.inputs)
     _, m_A, _, _, _ = estimator._log_k(X)
     calibrated = estimator._calibrated(m_A) ** 2
-    A, gain_A, Pstar, gain_P = estimator._from_logk(v, 0.0 * zs[:, 0], np.ones(len(zs)),
-                                                    0.0 * zs[:, 0], np.ones(len(zs)))
+    zero, one = np.zeros(len(pool)), np.ones(len(pool))
+    A, gain_A, Pstar, gain_P = estimator._from_logk(v, zero, one, zero, one)
     # the force's relative sensitivity to each process's log k at the top pressure
     reach = np.maximum(P_top - Pstar, 1e-3)
     weights = [np.where(A > 0, gain_A / np.maximum(A, 1e-9), 0.0), gain_P / reach]
     covariances, noises = [], []
-    for gp, post in ((estimator.slope_gp_, estimator.slope_posterior_),
-                     (estimator.threshold_gp_, estimator.threshold_posterior_)):
+    for gp, post, z_process in ((estimator.slope_gp_, estimator.slope_posterior_, zs[0]),
+                                (estimator.threshold_gp_, estimator.threshold_posterior_,
+                                 zs[1])):
         kernel = gp.kernel_.k1  # without the white noise: covariance between muscles
-        K_star = kernel(zs, gp.X_train_)
+        K_star = kernel(z_process, gp.X_train_)
         V = np.linalg.solve(gp.L_, K_star.T)
-        covariances.append((kernel(zs) - V.T @ V) * post["y_std"] ** 2)
+        covariances.append((kernel(z_process) - V.T @ V) * post["y_std"] ** 2)
         noises.append(gp.kernel_.k2.noise_level * post["y_std"] ** 2)
     chosen = []
     for _ in range(int(n_muscles)):
