@@ -8,7 +8,9 @@ parameters (geometry, length, braid angle, rubber): 16 corners of a 2^(7-3) frac
 hypercube [2]_ (``scipy.stats.qmc``, centred-discrepancy optimised) for the rest. Each muscle is one
 FE sweep (:data:`DESIGN_PRESSURES`), computed with the dataset builder's cache and workers
 (:func:`mkm.fem.batch.run_jobs`). :func:`random_muscles` draws fresh muscles for the
-off-grid evaluation the same way.
+off-grid evaluation the same way. A sub-box where the surrogate needs more muscles than the
+box's share (a corner where the end effects change fastest) gets its own space-filling design
+(:func:`refinement_muscles`, ``--refine`` and ``--refine-box``), recorded in the sidecar.
 
 References
 ----------
@@ -30,6 +32,7 @@ from scipy.stats import qmc
 from mkm.fem.batch import Job, Runner, run_jobs
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.records import package_file, provenance, write_csv_with_sidecar
+from mkm.surrogate.muscle_predictor import process_inputs
 
 #: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).
 DESIGN_DATASET = package_file("mkm.surrogate", "data", "mkm_design.csv")
@@ -105,6 +108,37 @@ def space_filling(n_muscles: int, seed: int = 0, box=BOX) -> pd.DataFrame:
     return muscles
 
 
+def parse_sub_box(text: str) -> dict[str, tuple[float, float]]:
+    """``"D0_mm=40:50,L0_mm=150:225"``: ranges of some :data:`MUSCLE_PARAMETERS`, each inside
+    :data:`BOX` with ``lo < hi``; ``ValueError`` (one line, naming the bad part) otherwise."""
+    sub_box = {}
+    for part in str(text).split(","):
+        name, _, span = part.strip().partition("=")
+        bounds = span.split(":")
+        if name not in MUSCLE_PARAMETERS or len(bounds) != 2:
+            raise ValueError(f"--refine-box part {part.strip()!r} is invalid: expected NAME=LO:HI "
+                             f"with NAME one of {', '.join(MUSCLE_PARAMETERS)}")
+        try:
+            lo, hi = (float(b) for b in bounds)
+        except ValueError:
+            raise ValueError(f"--refine-box part {part.strip()!r} is invalid: LO and HI must be "
+                             "numbers") from None
+        box_lo, box_hi = BOX[name]
+        if not box_lo <= lo < hi <= box_hi:
+            raise ValueError(f"--refine-box {name}={lo:g}:{hi:g} is invalid: expected "
+                             f"{box_lo:g} <= LO < HI <= {box_hi:g} (the box)")
+        sub_box[name] = (lo, hi)
+    return sub_box
+
+
+def refinement_muscles(n_muscles: int, sub_box: dict, seed: int = 0) -> pd.DataFrame:
+    """``n_muscles`` space-filling muscles (:func:`space_filling`) in :data:`BOX` narrowed to
+    ``sub_box`` (:func:`parse_sub_box`), origin ``refine``."""
+    muscles = space_filling(n_muscles, seed, {**BOX, **sub_box})
+    muscles["origin"] = "refine"
+    return muscles
+
+
 def random_muscles(n_muscles: int, seed: int, box=BOX) -> pd.DataFrame:
     """``n_muscles`` muscles drawn uniformly in ``box`` (off-grid evaluation; record ``seed``)."""
     unit = np.random.default_rng(seed).random((int(n_muscles), len(MUSCLE_PARAMETERS)))
@@ -153,21 +187,22 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
                                                            for p in MUSCLE_PARAMETERS}}
     X = np.column_stack([values[name] for name in estimator.inputs])
     v, z = estimator._muscle(X)
-    zs = (z - estimator.z_mean_) / estimator.z_scale_
+    zs = process_inputs((z - estimator.z_mean_) / estimator.z_scale_, estimator.inputs)
     _, m_A, _, _, _ = estimator._log_k(X)
     calibrated = estimator._calibrated(m_A) ** 2
-    A, gain_A, Pstar, gain_P = estimator._from_logk(v, 0.0 * zs[:, 0], np.ones(len(zs)),
-                                                    0.0 * zs[:, 0], np.ones(len(zs)))
+    zero, one = np.zeros(len(pool)), np.ones(len(pool))
+    A, gain_A, Pstar, gain_P = estimator._from_logk(v, zero, one, zero, one)
     # the force's relative sensitivity to each process's log k at the top pressure
     reach = np.maximum(P_top - Pstar, 1e-3)
     weights = [np.where(A > 0, gain_A / np.maximum(A, 1e-9), 0.0), gain_P / reach]
     covariances, noises = [], []
-    for gp, post in ((estimator.slope_gp_, estimator.slope_posterior_),
-                     (estimator.threshold_gp_, estimator.threshold_posterior_)):
+    for gp, post, z_process in ((estimator.slope_gp_, estimator.slope_posterior_, zs[0]),
+                                (estimator.threshold_gp_, estimator.threshold_posterior_,
+                                 zs[1])):
         kernel = gp.kernel_.k1  # without the white noise: covariance between muscles
-        K_star = kernel(zs, gp.X_train_)
+        K_star = kernel(z_process, gp.X_train_)
         V = np.linalg.solve(gp.L_, K_star.T)
-        covariances.append((kernel(zs) - V.T @ V) * post["y_std"] ** 2)
+        covariances.append((kernel(z_process) - V.T @ V) * post["y_std"] ** 2)
         noises.append(gp.kernel_.k2.noise_level * post["y_std"] ** 2)
     chosen = []
     for _ in range(int(n_muscles)):
@@ -187,21 +222,33 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
 def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
                  workers: int | None = None, cache_dir=None,
                  progress: bool = True, adaptive: int = 0,
-                 scheduler: str | None = None) -> tuple[pd.DataFrame, dict]:
+                 scheduler: str | None = None, refine: int = 0,
+                 refine_box: dict | None = None) -> tuple[pd.DataFrame, dict]:
     """Compute the design of ``n_muscles`` FE sweeps and write ``out`` (CSV) and ``out.json``;
-    with ``adaptive``, that many more muscles where the default surrogate trained on the
-    first ones is least sure (:func:`adaptive_muscles`).
+    with ``refine``, that many more space-filling muscles in the sub-box ``refine_box``
+    (:func:`refinement_muscles`); with ``adaptive``, that many more muscles where the default
+    surrogate trained on the ones before is least sure (:func:`adaptive_muscles`).
 
-    The sidecar records the box, the seed, the budget, the muscles whose sweep failed (kept in
-    the CSV with ``converged=False``; the loader leaves them out) and the FE provenance.
+    The sidecar records the box, the seed, the budget, the refinement's sub-box, the muscles
+    whose sweep failed (kept in the CSV with ``converged=False``; the loader leaves them out)
+    and the FE provenance.
     """
+    if int(refine) != refine or refine < 0:
+        raise ValueError(f"--refine {refine!r} is invalid: expected a number of muscles >= 0")
+    if refine and not refine_box:
+        raise ValueError(f"--refine {refine} needs --refine-box: expected the sub-box of the "
+                         "refinement muscles (NAME=LO:HI,...)")
     muscles = space_filling(n_muscles, seed)
+    if refine:
+        muscles = pd.concat([muscles, refinement_muscles(refine, refine_box, seed)],
+                            ignore_index=True)
     with Runner(workers, scheduler) as runner:  # the design and its adaptive muscles: one cluster
         return _build_design(muscles, n_muscles, out, seed, mesh, runner, cache_dir, progress,
-                             adaptive)
+                             adaptive, refine_box if refine else None)
 
 
-def _build_design(muscles, n_muscles, out, seed, mesh, runner, cache_dir, progress, adaptive):
+def _build_design(muscles, n_muscles, out, seed, mesh, runner, cache_dir, progress, adaptive,
+                  refine_box):
     """:func:`build_design` on an open :class:`~mkm.fem.batch.Runner`."""
     frame, done = fe_sweeps(muscles, mesh, runner=runner, cache_dir=cache_dir,
                             progress=progress, desc=f"FE design ({mesh} mesh)")
@@ -224,13 +271,18 @@ def _build_design(muscles, n_muscles, out, seed, mesh, runner, cache_dir, progre
     info = {**provenance(),
             "what": "space-filling FE design of the default surrogate (surrogate.design)",
             "design": {"muscles": int(n_muscles), "seed": int(seed), "adaptive": int(adaptive),
+                       "refine": int((muscles["origin"] == "refine").sum()),
+                       "refine_box": ({k: list(v) for k, v in refine_box.items()}
+                                      if refine_box else None),
                        "corners": int((muscles["origin"] == "corner").sum()),
                        "method": "2^(7-3) fractional factorial corners + scipy.stats.qmc "
-                                 "LatinHypercube(optimization='random-cd')"},
+                                 "LatinHypercube(optimization='random-cd'); refinement: the "
+                                 "same in the box narrowed to refine_box, same seed; adaptive: "
+                                 "greedy picks of largest calibrated predictive variance"},
             "box": {k: list(v) for k, v in BOX.items()},
             "pressure_bar": list(DESIGN_PRESSURES),
             "model": "axisym", "mesh": mesh, "model_version": done["model_version"],
-            "fe_budget_muscles": int(n_muscles + adaptive), "jobs_computed": done["computed"],
+            "fe_budget_muscles": int(len(muscles)), "jobs_computed": done["computed"],
             "jobs_from_cache": done["cached"], "workers": done["workers"],
             "muscles_with_failed_points": [int(m) for m in failed]}
     write_csv_with_sidecar(out, frame.to_csv(index=False, lineterminator="\n"), info)

@@ -24,6 +24,7 @@ from mkm.surrogate.muscle_predictor import (
     from_log_k,
     log_k,
     muscle_values,
+    process_inputs,
 )
 
 
@@ -81,7 +82,8 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
     each sweep's ``A`` and ``P*`` (:func:`muscle_slopes`) give ``k_A`` and ``k_P``
     (:func:`effective_eps_of_slope`, :func:`effective_eps_of_threshold`); two Gaussian
     processes (Matern 5/2, one length scale per input, a noise term) learn ``log k_A`` and
-    ``log k_P`` over the standardised muscle parameters and ``D_braid / L0``. Predict:
+    ``log k_P`` over the standardised muscle parameters and ``D_braid / L0`` (the slope's with
+    ``sqrt(eps)`` for ``eps``: ``log k_A`` is close to linear in it). Predict:
     ``A = A_tw(k_A eps)``, ``P* = P*_tw(k_P eps)``: non-negative and non-decreasing in
     pressure by construction, and the closed form itself at ``eps = 0``, where the FE is too.
     The standard deviation carries the processes' std ``s`` of ``log k``, calibrated as
@@ -147,16 +149,16 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
                                              v["C10_MPa"], v["C01_MPa"]) / v["eps"]
         self.z_mean_ = z.mean(axis=0)
         self.z_scale_ = np.where(z.std(axis=0) > 0, z.std(axis=0), 1.0)
-        zs = (z - self.z_mean_) / self.z_scale_
+        zs = process_inputs((z - self.z_mean_) / self.z_scale_, self.inputs)
         processes, fitted = [], []
         with threadpool_limits(limits=1):
-            for name, k in (("slope", k_A), ("threshold", k_P)):
+            for name, k, z_process in (("slope", k_A, zs[0]), ("threshold", k_P, zs[1])):
                 ok = (v["eps"] > 0) & np.isfinite(k) & (k > 0)
                 if ok.sum() < 2:
                     raise ValueError(f"{int(ok.sum())} muscle sweep(s) with eps > 0 and a "
                                      f"measurable {name}: expected at least 2")
-                processes.append(fit_gaussian_process(zs[ok], np.log(k[ok]), self.random_state,
-                                                      self.restarts))
+                processes.append(fit_gaussian_process(z_process[ok], np.log(k[ok]),
+                                                      self.random_state, self.restarts))
                 fitted.append(np.flatnonzero(ok))
             (self.slope_gp_, self.slope_posterior_), (self.threshold_gp_,
                                                       self.threshold_posterior_) = processes
@@ -195,10 +197,11 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
         eq. 5.12) at the fitted hyperparameters; ``c = 1``, ``beta = 0`` when too few muscles
         are in both processes."""
         loo = []
-        for gp, post, rows in zip((self.slope_gp_, self.threshold_gp_),
-                                  (self.slope_posterior_, self.threshold_posterior_), fitted,
-                                  strict=True):
-            mean, std = predict_mean_std(gp, post, zs)  # muscles it did not learn: posterior
+        for gp, post, rows, z_process in zip((self.slope_gp_, self.threshold_gp_),
+                                             (self.slope_posterior_, self.threshold_posterior_),
+                                             fitted, zs, strict=True):
+            # muscles it did not learn: posterior
+            mean, std = predict_mean_std(gp, post, z_process)
             mean[rows], std[rows] = leave_one_out(gp, post)
             loo.append((mean, std))
         self.std_scale_, self.std_power_, self.std_reference_ = 1.0, 0.0, 1.0

@@ -26,19 +26,31 @@ SCALARS = ("std_scale", "std_power", "std_reference")
 
 
 def muscle_values(X, inputs, fixed):
-    """The muscle's values by name and ``z``, the inputs of the processes: the muscle
-    parameters of ``X`` and the braid diameter over the length."""
+    """The muscle's values by name and ``z``: the muscle parameters of ``X``, the braid
+    diameter over the length and ``sqrt(eps)`` (:func:`process_inputs` picks each process's)."""
     v = columns_of(X, tuple(inputs), fixed)
-    z = np.column_stack([X[:, 1:], (v["D0_mm"] + 2.0 * v["t0_mm"]) / v["L0_mm"]])
+    z = np.column_stack([X[:, 1:], (v["D0_mm"] + 2.0 * v["t0_mm"]) / v["L0_mm"],
+                         np.sqrt(np.maximum(v["eps"], 0.0))])
     return v, z
+
+
+def process_inputs(zs, inputs):
+    """The columns of ``zs`` (standardised :func:`muscle_values`) that the slope and the
+    threshold process take: ``sqrt(eps)`` for the slope, ``eps`` for the threshold."""
+    # log k_A falls steeply as eps leaves 0 and then flattens, most for short wide muscles
+    # (the end zones' share of the shortening shrinks): close to linear in sqrt(eps), which a
+    # stationary process with one length scale follows; log k_P varies slowly with eps, and
+    # sqrt(eps) would crowd its large-eps end, where the threshold is steepest near the lock
+    slope = np.delete(zs, tuple(inputs).index("eps") - 1, axis=1)
+    return slope, zs[:, :-1]
 
 
 def log_k(X, inputs, fixed, z_mean, z_scale, slope, threshold):
     """Muscle values, then mean and (uncalibrated) std of ``log k_A`` and ``log k_P`` from the
     posteriors ``slope`` and ``threshold`` over ``z`` standardised with ``z_mean, z_scale``."""
     v, z = muscle_values(X, inputs, fixed)
-    zs = (z - z_mean) / z_scale
-    return (v, *posterior_mean_std(slope, zs), *posterior_mean_std(threshold, zs))
+    z_slope, z_threshold = process_inputs((z - z_mean) / z_scale, inputs)
+    return (v, *posterior_mean_std(slope, z_slope), *posterior_mean_std(threshold, z_threshold))
 
 
 def calibrated_factor(m_A, c, beta, reference):
@@ -153,8 +165,11 @@ class MusclePredictor:
     def from_arrays(cls, arrays, inputs, fixed) -> MusclePredictor:
         """The predictor of :meth:`arrays` for ``inputs`` and ``fixed``; a one-line
         ``ValueError`` naming the first array missing or of the wrong type or shape."""
-        d = len(inputs)  # the muscle parameters of X and the braid diameter over the length
-        expected = {"z_mean": (d,), "z_scale": (d,), "linearity_bar": (len(LINEARITY_BINS_BAR)
+        # each process: the muscle parameters of X and the braid diameter over the length; z
+        # also sqrt(eps) (process_inputs)
+        d = len(inputs)
+        expected = {"z_mean": (d + 1,), "z_scale": (d + 1,),
+                    "linearity_bar": (len(LINEARITY_BINS_BAR)
                                                                        - 1,),
                     **{name: () for name in SCALARS}}
         for process in ("slope", "threshold"):

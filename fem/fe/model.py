@@ -37,7 +37,7 @@ import scipy.sparse as sp
 from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 
 from mkm.fem.calibration import CalibratedTheta0
-from mkm.fem.eq2 import BAR_TO_MPA, check_theta0
+from mkm.fem.eq2 import BAR_TO_MPA, LOCKING_ANGLE_DEG, check_theta0
 from mkm.fem.fe.assembly import Assembler, Term, operator
 from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
 from mkm.fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
@@ -271,6 +271,20 @@ class HalfMuscle:
             return "element inversion (J <= 0)"
         return None
 
+    def braid_angle_deg(self, y) -> float:
+        """Largest braid angle along the muscle [deg from the axis] in the state ``y``.
+
+        An inextensible fibre at ``theta0`` on a surface whose hoop stretch is ``l_t`` makes
+        ``sin theta = l_t sin theta0`` (its length around the axis grows with the radius, its
+        length is fixed), for a bonded braid and a sliding sleeve alike (the sleeve's radius is
+        the rubber's); the widest section has the largest. NaN without a braid.
+        """
+        if self.braid is None:
+            return np.nan
+        l_t = 1.0 + self.braid.values(np.append(y, 0.0))[..., 0] / self.Ro
+        sine = float(np.max(l_t)) * np.sin(np.deg2rad(self.theta0_deg))
+        return float(np.rad2deg(np.arcsin(min(sine, 1.0))))
+
     def tension(self, y) -> np.ndarray:
         """Braid membrane tension at the outer-surface nodes [N/mm]."""
         return y[self.tension_slice]
@@ -384,8 +398,37 @@ class HalfMuscle:
                 report.reason = (f"the braid passes its locking angle before eps={-U_mm / self.H:g}"
                                  f" (the thick-wall mid-section locks first; the path "
                                  f"stopped with: {report.reason})")
+            elif lock := self._locks_before(report.reached, U_mm):
+                report.reason = f"{lock} (the path stopped with: {report.reason})"
             return None, np.nan, report
         return np.append(x[:-1], U_mm), float(x[-1]), report
+
+    def _locks_before(self, reached, U_mm: float) -> str:
+        """Why a free path that stalled short of ``U_mm`` stopped at the braid lock, or "".
+
+        The braid locks where its angle reaches :data:`~mkm.fem.eq2.LOCKING_ANGLE_DEG` (the
+        largest volume: no pressure shortens it further); with the ends held narrow by the caps
+        the widest section gets there before the closed form's lock shortening. The path's last
+        two converged states (``reached``: cap displacement, unknowns) give the rate at which
+        ``cos theta`` of the widest section falls with the shortening; it locks before the
+        target when that line reaches ``1 / sqrt(3)`` by ``U_mm`` (the rate only grows towards
+        the lock, as the middle takes a growing share of the shortening).
+        """
+        if len(reached) < 2 or self.braid is None:
+            return ""
+        (U0, x0), (U1, x1) = reached
+        c0, c1 = (np.cos(np.deg2rad(self.braid_angle_deg(np.append(x[:-1], U))))
+                  for U, x in reached)
+        e0, e1, target = -U0 / self.H, -U1 / self.H, -U_mm / self.H
+        if not (e1 > e0 and c1 < c0):
+            return ""
+        predicted = c1 + (c1 - c0) / (e1 - e0) * (target - e1)
+        if predicted > 1.0 / np.sqrt(3.0):
+            return ""
+        angle = self.braid_angle_deg(np.append(x1[:-1], U1))
+        return (f"the braid locks before eps={target:g}: its angle, {angle:.2f} deg at "
+                f"eps={e1:.4g} and rising, reaches the locking angle {LOCKING_ANGLE_DEG:.2f} deg "
+                f"by eps={e1 + (c1 - 1.0 / np.sqrt(3.0)) / (c0 - c1) * (e1 - e0):.4g}")
 
     def held_path(self, y, P_start_MPa: float, pressures_MPa):
         """Pressure ramp with the cap held where ``y`` has it, from the state ``y`` at

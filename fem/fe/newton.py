@@ -27,6 +27,8 @@ class NewtonReport:
     cutbacks: int = 0
     residual: float = np.nan  # last residual norm relative to the step's first one
     reason: str = ""
+    # a load path that failed: its last (up to two) converged (load, state), newest last
+    reached: tuple = ()
 
 
 class OrderedLU:
@@ -191,7 +193,8 @@ def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks:
     target the target and all later ones are reported not converged; ``label(t)`` names the
     load where it failed in the reason.
 
-    Returns a list with one ``(x or None, NewtonReport)`` per target, in order.
+    Returns a list with one ``(x or None, NewtonReport)`` per target, in order; the report of
+    the target that failed holds the last two converged ``(load, state)`` (``reached``).
     """
     targets = [float(t) for t in targets]
     span = abs(targets[-1] - t0) if targets else 0.0
@@ -220,6 +223,8 @@ def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks:
             if report.cutbacks > max_cutbacks:
                 report.converged = False
                 report.reason = f"{rep.reason} at {label(t_new)} after {max_cutbacks} cut-backs"
+                report.reached = (((t_prev, x_prev.copy()),) if x_prev is not None
+                                  else ()) + ((t, x.copy()),)
                 break
         if not report.converged:
             out.append((None, report))

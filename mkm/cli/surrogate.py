@@ -123,6 +123,13 @@ def register(subparsers) -> None:
     design.add_argument("--adaptive", type=int, default=0,
                         help="then this many more muscles where the surrogate of the first is "
                         "least sure (default 0)")
+    design.add_argument("--refine", type=int, default=0,
+                        help="then this many more space-filling muscles in --refine-box, where "
+                        "the box's share is too few (default 0)")
+    design.add_argument("--refine-box", type=argtype(_sub_box),
+                        help="the sub-box of --refine: NAME=LO:HI,... over D0_mm, t0_mm, eps, "
+                        "L0_mm, theta0_deg, C10_MPa, C01_MPa (the others span the box), "
+                        "recorded in the sidecar")
     design.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
                         help="FE mesh level (default fine, the converged one)")
     add_batch_arguments(design)
@@ -169,6 +176,12 @@ def register(subparsers) -> None:
                              "a terminal)")
         command.set_defaults(func=with_calibration(command.get_default("func")))
     _accept_argument(predict)
+
+
+def _sub_box(text: str) -> dict:
+    from mkm.surrogate.design import parse_sub_box  # on use: the design's imports are heavy
+
+    return parse_sub_box(text)
 
 
 def _parameter_arguments(parser) -> None:
@@ -332,8 +345,10 @@ def _design(args) -> int:
     frame, info = build_design(args.muscles, out, seed=args.seed, mesh=args.mesh,
                                workers=args.workers, cache_dir=args.cache,
                                progress=not args.no_progress, adaptive=args.adaptive,
-                               scheduler=args.scheduler)
-    summary_line("surrogate design", f"{args.muscles} + {args.adaptive} adaptive muscles "
+                               scheduler=args.scheduler, refine=args.refine,
+                               refine_box=args.refine_box)
+    summary_line("surrogate design", f"{args.muscles} + {args.refine} refinement + "
+                 f"{args.adaptive} adaptive muscles "
                  f"({info['jobs_computed']} FE sweeps "
                  f"computed, {info['jobs_from_cache']} from cache, "
                  f"{len(info['muscles_with_failed_points'])} with failed points) in "

@@ -1,4 +1,5 @@
 import numpy as np
+import pandas as pd
 import pytest
 
 from mkm.fem.materials import SILASTIC_S
@@ -7,7 +8,9 @@ from mkm.surrogate.design import (
     DESIGN_DATASET,
     MUSCLE_PARAMETERS,
     corners,
+    parse_sub_box,
     random_muscles,
+    refinement_muscles,
     space_filling,
 )
 from mkm.surrogate.training_data import load_training_data
@@ -53,18 +56,45 @@ def test_random_muscles_follow_their_seed():
     assert not np.allclose(random_muscles(5, seed=2)["D0_mm"], a["D0_mm"])
 
 
+def test_sub_box_is_parsed_inside_the_box():
+    assert parse_sub_box("D0_mm=40:50, eps=0:0.08") == {"D0_mm": (40.0, 50.0), "eps": (0.0, 0.08)}
+    for bad, says in (("D0_mm=40:60", "30 <= LO < HI <= 50"), ("eps=0.1:0.05", "LO < HI"),
+                      ("P=0:1", "NAME one of"), ("L0_mm=150", "NAME=LO:HI"),
+                      ("L0_mm=a:200", "numbers")):
+        with pytest.raises(ValueError, match=says):
+            parse_sub_box(bad)
+
+
+def test_refinement_fills_its_sub_box_only():
+    sub_box = {"D0_mm": (40.0, 50.0), "L0_mm": (150.0, 225.0)}
+    muscles = refinement_muscles(12, sub_box, seed=2)
+    assert set(muscles["origin"]) == {"refine"} and len(muscles) == 12
+    for name in MUSCLE_PARAMETERS:
+        lo, hi = sub_box.get(name, BOX[name])
+        assert muscles[name].between(lo, hi).all(), name
+        # a Latin hypercube of the sub-box: one muscle in each of its 12 strata
+        strata = np.floor((muscles[name] - lo) / (hi - lo) * 12 - 1e-6).clip(0, 11)
+        assert sorted(strata.astype(int)) == list(range(12)), name
+
+
 @pytest.mark.skipif(not DESIGN_DATASET.is_file(), reason="no shipped design")
 def test_shipped_design_is_what_the_sidecar_says():
     data = load_training_data(DESIGN_DATASET)
     info = data.provenance
     n, extra = info["design"]["muscles"], info["design"]["adaptive"]
-    assert info["fe_budget_muscles"] == n + extra and info["mesh"] == "fine"
+    refine, sub_box = info["design"]["refine"], info["design"]["refine_box"]
+    assert info["fe_budget_muscles"] == n + refine + extra and info["mesh"] == "fine"
     assert data.inputs == ("pressure_bar", *MUSCLE_PARAMETERS)
-    # the muscles of the seeded space-filling design are all in, every one the FE solved
-    # (rows of failed points are dropped; the sidecar lists such muscles), then the adaptive
+    # the muscles of the seeded space-filling design and of its refinement are all in, every
+    # one the FE solved (rows of failed points are dropped; the sidecar lists such muscles),
+    # then the adaptive
     failed = info["muscles_with_failed_points"]
-    assert data.n_muscles == n + extra - len(failed)
+    assert data.n_muscles == n + refine + extra - len(failed)
     expected = space_filling(n, info["design"]["seed"])
+    if refine:
+        expected = pd.concat([expected, refinement_muscles(refine, parse_sub_box(",".join(
+            f"{k}={lo}:{hi}" for k, (lo, hi) in sub_box.items())), info["design"]["seed"])])
+    n += refine
     first = np.array([np.flatnonzero(data.groups == g)[0] for g in np.unique(data.groups)])
     got = {tuple(r) for r in data.X[first, 1:]}
     want = {tuple(r) for r in expected[list(MUSCLE_PARAMETERS)].to_numpy()}

@@ -6,6 +6,8 @@ the threshold state's corner compression), on the fine mesh where the medium con
 the coarse mesh with a sliding braid (a false "locking angle").
 """
 
+import re
+
 import numpy as np
 import pytest
 
@@ -109,3 +111,31 @@ def test_fine_mesh_converges_where_the_medium_does():
     np.testing.assert_allclose(fine["force_N"], medium["force_N"], rtol=0,
                                atol=3e-4 * medium["force_N"].max())
     assert np.all(np.diff(fine["force_N"]) > 0)
+
+
+def test_braid_angle_at_rest_is_theta0():
+    half = HalfMuscle(40.0, 3.0, 200.0, 33.0, SILASTIC_S, "coarse")
+    assert half.braid_angle_deg(half.rest_state()) == pytest.approx(33.0, abs=1e-9)
+
+
+def test_a_short_wide_muscle_that_stalls_at_the_lock_says_so():
+    # A muscle of the map (seed 20261201) whose free path inverted elements short of eps: its
+    # widest section's braid angle was 54.24 deg and rising at eps 0.168, so it reaches the
+    # locking angle (54.74 deg) before eps 0.1785, though the closed form's lock is 0.211. Its
+    # ends, held narrow by the caps, make the middle shorten k_P ~ 1 / (1 - 0.38 D_braid / L0)
+    # times eps (surrogate.muscle_gp): the lock at about eps_max / k_P (0.164 here; the middle's
+    # share grows towards the lock, measured 0.176).
+    from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
+
+    D0, t0, eps, theta0, L0 = 56.3016, 4.78701, 0.178513, 42.9768, 112.799
+    out = isometric_sweep([0.0, 1.0], D0, t0, eps, theta0, L0, mesh="medium")
+    assert not out["converged"].any()
+    failure = str(out["failure"][0])
+    match = re.match(r"threshold search failed: the braid locks before eps=0\.178513: its angle, "
+                     r"([\d.]+) deg at eps=([\d.]+) and rising, reaches the locking angle "
+                     r"54\.74 deg by eps=([\d.]+) \(the path stopped with: ", failure)
+    assert match, failure
+    angle, reached, lock = (float(g) for g in match.groups())
+    assert theta0 < angle < LOCKING_ANGLE_DEG and reached < lock < eps
+    k_P = 1.0 / (1.0 - 0.38 * (D0 + 2.0 * t0) / L0)
+    assert lock == pytest.approx(chou_hannaford_eps_max(theta0) / k_P, rel=0.1)
