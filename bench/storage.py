@@ -379,6 +379,10 @@ def _check_fields(values: dict[str, Any], where: str) -> None:
     if not isinstance(settle, dict):
         raise ValueError(f"{where}: sequence.settle={_shown(settle)} is invalid: expected an "
                          "object")
+    for entry in values.get("unvented_before") or []:
+        if not isinstance(entry, dict):
+            raise ValueError(f"{where}: unvented_before holds {_shown(entry)}: expected "
+                             "objects (the runs found unvented)")
     counters = values.get("counters") or {}
     for key, value in counters.items():
         if isinstance(value, bool) or not isinstance(value, int) or value < 0:
