@@ -885,6 +885,8 @@ def aggregate_samples(path: str | Path, bin_s: float | None = None,
 
 
 def _last_time_s(csv: Path) -> float:
+    if not csv.is_file():  # a missing samples.csv reads as no samples (load_run names it)
+        return 0.0
     whole = _whole_rows_bytes(csv)
     with open(csv, "rb") as f:
         f.seek(max(0, whole - 4096))
