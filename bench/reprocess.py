@@ -83,6 +83,9 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
     cell = config.loadcell
     out_root = Path(out_root) if out_root is not None else source.path.parent
     samples_csv = source.path / "samples.csv"
+    if not samples_csv.is_file():
+        raise ValueError(f"run {source.path} has no samples.csv: expected the raw volts to "
+                         "reprocess")
     # pass 1: the tare, from the run's own samples at 0 bar
     tare_V = []
     for chunk in iter_samples(source.path):

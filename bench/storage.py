@@ -379,6 +379,10 @@ def _check_fields(values: dict[str, Any], where: str) -> None:
     if not isinstance(settle, dict):
         raise ValueError(f"{where}: sequence.settle={_shown(settle)} is invalid: expected an "
                          "object")
+    for entry in values.get("unvented_before") or []:
+        if not isinstance(entry, dict):
+            raise ValueError(f"{where}: unvented_before holds {_shown(entry)}: expected "
+                             "objects (the runs found unvented)")
     counters = values.get("counters") or {}
     for key, value in counters.items():
         if isinstance(value, bool) or not isinstance(value, int) or value < 0:
@@ -881,6 +885,8 @@ def aggregate_samples(path: str | Path, bin_s: float | None = None,
 
 
 def _last_time_s(csv: Path) -> float:
+    if not csv.is_file():  # a missing samples.csv reads as no samples (load_run names it)
+        return 0.0
     whole = _whole_rows_bytes(csv)
     with open(csv, "rb") as f:
         f.seek(max(0, whole - 4096))

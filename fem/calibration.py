@@ -45,6 +45,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from mkm.fem.materials import MooneyRivlin, mooney_rivlin
+from mkm.fem.muscle import LIMITS, OPEN_ABOVE, limit_text
 from mkm.fem.records import file_sha256, provenance, source_version, write_atomic
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
@@ -54,6 +55,7 @@ CALIBRATION_FILE = Path(__file__).with_name("calibration.json")
 THETA0_BOUNDS_DEG = (15.0, 50.0)  # practical braids are 20-30 deg; 54.7 deg is the lock angle
 TARGETS = ("slope", "force", "slope+threshold")
 REFERENCE_COLUMNS = ("pressure_bar", "D0_mm", "t0_mm", "eps", "force_N")
+MAX_FORCE_N = 1e6  # a reference force beyond this is a typo or a corrupt cell, not a muscle
 #: Reference points at or below this share of a sweep's largest force count as "below the
 #: reference's threshold" (a held muscle that has not shortened yet, plus sensor noise): they
 #: enter the force residuals but not the slope.
@@ -97,12 +99,36 @@ def _read(path: Path, mtime_ns: int) -> dict:
         raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise ValueError(f"calibration {path}: not valid JSON: {exc}") from None
+    except RecursionError:
+        raise ValueError(f"calibration {path}: not valid JSON: nested too deep") from None
     bad = [k for k, v in entries.items() if not isinstance(v, dict) or "theta0_deg" not in v] \
         if isinstance(entries, dict) else ["(the file)"]
     if bad:
         raise ValueError(f"calibration {path}: entry {bad[0]!r} has no theta0_deg: expected a "
                          "file written by `mkm fem calibrate --out FILE`")
+    for key, entry in entries.items():
+        _check_entry(path, key, entry)
     return entries
+
+
+# what the models read from an entry: numbers (the rubber, a friction rung's settings) and the
+# parameters of the fit
+_NUMBERS = ("theta0_deg", "C10_MPa", "C01_MPa", "hysteresis_fraction", "creep_fraction",
+            "creep_tau_s")
+
+
+def _check_entry(path: Path, key: str, entry: dict) -> None:
+    for name in _NUMBERS:
+        value = entry.get(name)
+        if name != "theta0_deg" and value is None:
+            continue
+        if isinstance(value, bool) or not isinstance(value, int | float) \
+                or not -1e300 < value < 1e300:  # not inf, nan or beyond a float
+            raise ValueError(f"calibration {path}: entry {key!r} has {name}="
+                             f"{str(value)[:40]!r}: expected a finite number")
+    if not isinstance(entry.get("model_params", {}), dict):
+        raise ValueError(f"calibration {path}: entry {key!r} has model_params="
+                         f"{str(entry['model_params'])[:40]!r}: expected a table of parameters")
 
 
 def _load(path: Path) -> dict:
@@ -181,7 +207,7 @@ def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFram
     if missing:
         raise ValueError(f"{name} lacks columns {missing}: expected "
                          f"{', '.join(REFERENCE_COLUMNS)} (optional L0_mm, direction)")
-    frame = frame.dropna(subset=list(REFERENCE_COLUMNS))
+    frame = _numeric(frame, name).dropna(subset=list(REFERENCE_COLUMNS))
     keys = ["D0_mm", "t0_mm", "eps"] + (["L0_mm"] if "L0_mm" in frame else [])
     values = ["pressure_bar", "force_N"]
     frame = frame.assign(level=frame["pressure_bar"].round(3))
@@ -196,6 +222,34 @@ def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFram
     if len(frame) < 2:
         raise ValueError(f"{name} has {len(frame)} usable pressures: expected at least 2")
     return frame[keys + values]
+
+
+def _numeric(frame: pd.DataFrame, name: str) -> pd.DataFrame:
+    """``frame`` with its number columns as floats (a blank cell is NaN: the row is dropped).
+
+    Text, a value outside the muscle limits (:data:`mkm.fem.muscle.LIMITS`), a force beyond
+    :data:`MAX_FORCE_N` or a direction other than up/down is refused, naming the value.
+    """
+    import pandas as pd
+
+    frame = frame.copy()
+    for column in [c for c in (*REFERENCE_COLUMNS, "L0_mm") if c in frame]:
+        values = pd.to_numeric(frame[column], errors="coerce")
+        low, high = LIMITS[column][:2] if column in LIMITS else (-MAX_FORCE_N, MAX_FORCE_N)
+        above = values >= high if column in OPEN_ABOVE else values > high
+        bad = (values.isna() & frame[column].notna()) | (values < low) | above
+        if bad.any():
+            expected = limit_text(column) if column in LIMITS else \
+                f"expected a force within +-{MAX_FORCE_N:g} N"
+            raise ValueError(f"{name}: {column}={str(frame[column][bad].iloc[0])[:40]!r} is "
+                             f"invalid: {expected}")
+        frame[column] = values.astype(float)
+    if "direction" in frame:
+        bad = ~frame["direction"].isin(["up", "down"])
+        if bad.any():
+            raise ValueError(f"{name}: direction={str(frame['direction'][bad].iloc[0])[:40]!r} "
+                             "is invalid: expected up or down")
+    return frame
 
 
 def _sweeps(reference: pd.DataFrame) -> list[pd.DataFrame]:

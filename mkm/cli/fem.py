@@ -211,6 +211,9 @@ def _load_reference(path):
     from mkm.bench.storage import load_run
 
     run = load_run(path)
+    if "steps.csv is missing" in run.problems:
+        raise ValueError(f"run {path} has no steps.csv: expected its settled steps as the "
+                         "reference")
     steps = run.steps[run.steps["settled"]]
     muscle = run.meta.muscle
     frame = pd.DataFrame({"pressure_bar": steps["pressure_bar_mean"],

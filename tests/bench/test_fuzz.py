@@ -1,6 +1,8 @@
 """Issue 20, finding 6: hostile run folders and configurations give one ValueError, never a
-traceback or a hang (property-based, hypothesis). The fast profile tries a few dozen cases in a
-few seconds; `-m slow` runs many more.
+traceback or a hang (property-based, hypothesis), loaded directly and through the commands that
+read a run folder (`mkm reprocess`, `mkm fem calibrate --reference`, `mkm report`). The fast
+profile tries a few dozen cases in a few seconds; `-m slow` runs many more, and the report (a
+few seconds per accepted folder).
 """
 
 import json
@@ -39,9 +41,10 @@ CSV_CELLS = st.sampled_from(["abc", "1e308", "-1e308", "inf", "nan", "", "=1+1",
 
 @pytest.fixture(scope="module")
 def recorded(tmp_path_factory):
-    config = load_config(pressures_bar=[0.5]).replace(
+    # 0.5 and 1 bar measured both ways: a reference `mkm fem calibrate` accepts as it is
+    config = load_config(pressures_bar=[0.5, 1.0, 1.5]).replace(
         sequence={"tare_s": 1.0, "preconditioning_cycles": 0},
-        settle={"min_dwell_s": 1.0, "hold_s": 1.0, "timeout_s": 5.0, "window_s": 1.0})
+        settle={"min_dwell_s": 3.0, "hold_s": 2.0, "timeout_s": 20.0, "window_s": 2.0})
     root = tmp_path_factory.mktemp("fuzz")
     return acquire(config, out_root=root / "runs", notify=lambda m: None).path
 
@@ -58,20 +61,20 @@ def _loads_or_one_line(path):
     return True
 
 
-def _check_run_json(recorded, tmp_path, edits):
+def _edited_run_json(recorded, tmp_path, edits):
     folder = tmp_path / "run"
     shutil.rmtree(folder, ignore_errors=True)
     shutil.copytree(recorded, folder)
     meta = json.loads((folder / "run.json").read_text())
     for where, key, value in edits:
-        target = meta if where == "top" else meta.get("muscle")
-        if isinstance(target, dict):  # an earlier edit may have replaced the muscle itself
+        target = meta if where == "top" else meta.get(where)
+        if isinstance(target, dict):  # an earlier edit may have replaced the table itself
             target[key] = value
     (folder / "run.json").write_text(json.dumps(meta))
-    _loads_or_one_line(folder)
+    return folder
 
 
-def _check_csv(recorded, tmp_path, name, row, column, cell):
+def _edited_csv(recorded, tmp_path, name, row, column, cell):
     folder = tmp_path / "run"
     shutil.rmtree(folder, ignore_errors=True)
     shutil.copytree(recorded, folder)
@@ -81,12 +84,50 @@ def _check_csv(recorded, tmp_path, name, row, column, cell):
     cells[column % len(cells)] = cell
     lines[k] = ",".join(cells)
     (folder / name).write_text("\n".join(lines) + "\n")
-    _loads_or_one_line(folder)
+    return folder
 
 
-edits = st.lists(st.tuples(st.sampled_from(["top", "muscle"]),
-                           st.sampled_from(RUN_KEYS + MUSCLE_KEYS), hostile_json),
-                 min_size=1, max_size=3)
+def _check_run_json(recorded, tmp_path, edits):
+    _loads_or_one_line(_edited_run_json(recorded, tmp_path, edits))
+
+
+def _check_csv(recorded, tmp_path, name, row, column, cell):
+    _loads_or_one_line(_edited_csv(recorded, tmp_path, name, row, column, cell))
+
+
+def _commands(folder, tmp_path):
+    """The commands that read a run folder, each with its own fresh output folder."""
+    out = tmp_path / "out"
+    shutil.rmtree(out, ignore_errors=True)
+    loadcell = tmp_path / "loadcell.toml"
+    loadcell.write_text("[loadcell]\nchannel = \"ai0\"\ncapacity_N = 1961.33\n"
+                        "sensitivity_N_per_V = 200.0\noffset_V = 0.0\n")
+    return {"reprocess": ["reprocess", str(folder), "--config", str(loadcell), "--out",
+                          str(out / "rp")],
+            "calibrate": ["fem", "calibrate", "--model", "eq2", "--reference", str(folder)],
+            "report": ["report", str(folder), "--models", "eq2", "--out", str(out / "report"),
+                       "--no-progress"]}
+
+
+def _through_commands(mkm_cli, folder, tmp_path, names):
+    """Every command either succeeds or refuses with one line, exit 2."""
+    commands = _commands(folder, tmp_path)
+    for name in names:
+        code, out, err = mkm_cli(commands[name])
+        assert code == 0 or (code == 2 and err.count("mkm: error:") == 1
+                             and err.startswith("mkm: error:")), (name, code, err[-2000:])
+
+
+# (where, key): the top level, the muscle, and the nested tables the report and reprocess read
+PLACES = ([("top", k) for k in RUN_KEYS] + [("muscle", k) for k in MUSCLE_KEYS]
+          + [("tare", k) for k in ("n", "std_N", "offset_V")]
+          + [("calibration", k) for k in ("muscle_tolerances", "loadcell", "regulator",
+                                          "safety")]
+          + [("sequence", k) for k in ("settle", "pressures_bar", "force_limit_N", "n_steps")]
+          + [("hardware", k) for k in ("sim", "simulated", "sample_rate_hz", "channels")]
+          + [("vent_check", k) for k in ("verified", "pressure_bar", "waited_s")])
+edits = st.lists(st.tuples(st.sampled_from(PLACES), hostile_json).map(
+    lambda edit: (*edit[0], edit[1])), min_size=1, max_size=3)
 csv_edits = (st.sampled_from(["samples.csv", "steps.csv", "commands.csv"]),
              st.integers(0, 100), st.integers(0, 20), CSV_CELLS)
 
@@ -114,6 +155,55 @@ def test_deeply_nested_or_missing_parts_are_one_line(recorded, tmp_path):
     (folder / "steps.csv").unlink()
     run = load_run(folder)
     assert "samples.csv is missing" in run.problems and "steps.csv is missing" in run.problems
+    assert aggregate_samples(folder).empty  # the report's time series: none
+
+
+FAST_COMMANDS = ["reprocess", "calibrate"]
+
+
+@pytest.mark.parametrize("missing", ["samples.csv", "steps.csv", "commands.csv", "config.toml"])
+def test_a_folder_missing_a_file_is_one_line_through_the_commands(recorded, tmp_path, mkm_cli,
+                                                                   missing):
+    folder = tmp_path / "run"
+    shutil.copytree(recorded, folder)
+    (folder / missing).unlink()
+    _through_commands(mkm_cli, folder, tmp_path, FAST_COMMANDS)
+
+
+def test_the_unedited_run_passes_every_command(recorded, tmp_path, mkm_cli):
+    commands = _commands(recorded, tmp_path)
+    for name in FAST_COMMANDS:
+        code, out, err = mkm_cli(commands[name])
+        assert code == 0, (name, err)
+
+
+def test_runs_found_unvented_are_objects(recorded, tmp_path):
+    folder = _edited_run_json(recorded, tmp_path, [("top", "unvented_before", [None])])
+    with pytest.raises(ValueError, match=r"unvented_before holds None: expected objects"):
+        load_run(folder)
+
+
+@FAST
+@given(edits=edits)
+def test_hostile_run_json_through_the_commands(recorded, tmp_path, mkm_cli, edits):
+    _through_commands(mkm_cli, _edited_run_json(recorded, tmp_path, edits), tmp_path,
+                      FAST_COMMANDS)
+
+
+@FAST
+@given(*csv_edits)
+def test_hostile_csv_cells_through_the_commands(recorded, tmp_path, mkm_cli, name, row,
+                                                column, cell):
+    _through_commands(mkm_cli, _edited_csv(recorded, tmp_path, name, row, column, cell),
+                      tmp_path, FAST_COMMANDS)
+
+
+@pytest.mark.slow  # a few seconds per report; the cells it reads are fuzzed above
+@settings(FAST, max_examples=12)
+@given(edits=edits)
+def test_hostile_run_json_through_the_report(recorded, tmp_path, mkm_cli, edits):
+    _through_commands(mkm_cli, _edited_run_json(recorded, tmp_path, edits), tmp_path,
+                      ["report"])
 
 
 BASE = load_config().text

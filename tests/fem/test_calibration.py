@@ -1,11 +1,14 @@
 """theta0 calibration (fem/calibration.py): targets, references, calibration files, the CLI."""
 
+import itertools
 import json
 import re
 
 import numpy as np
 import pandas as pd
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from mkm.fem.calibration import (
     CALIBRATION_FILE,
@@ -105,6 +108,19 @@ def test_bad_reference_is_named(frame, message):
         check_reference(frame, "ref.csv")
 
 
+@pytest.mark.parametrize(("column", "cell", "message"), [
+    ("force_N", "abc", r"force_N='abc' is invalid: expected a force within \+-1e\+06 N"),
+    ("pressure_bar", "1e308", r"pressure_bar='1e308' is invalid: expected a gauge pressure"),
+    ("D0_mm", "inf", "D0_mm='inf' is invalid: expected an inner diameter"),
+])
+def test_a_reference_cell_that_is_no_number_of_a_muscle_is_named(column, cell, message):
+    frame = pd.DataFrame({"pressure_bar": [1.0, 2.0], "D0_mm": 35.0, "t0_mm": 2.5, "eps": 0.05,
+                          "force_N": [100.0, 200.0]}).astype(object)
+    frame.loc[1, column] = cell
+    with pytest.raises(ValueError, match=f"^reference: {message}"):
+        check_reference(frame)
+
+
 def test_slope_needs_a_rising_reference_and_a_known_target():
     flat = pd.DataFrame({"pressure_bar": [0.0, 1.0, 2.0], "force_N": 0.0, "D0_mm": 35.0,
                          "t0_mm": 2.5, "eps": 0.05})
@@ -144,6 +160,11 @@ def test_selected_file_is_every_models_default_and_is_restored(tmp_path):
 @pytest.mark.parametrize(("text", "message"), [
     (None, "cannot read it"), ("{", "not valid JSON"),
     ('{"axisym": {"rmse_N": 1}}', "entry 'axisym' has no theta0_deg"),
+    ('{"eq2-inner": {"theta0_deg": null}}', "entry 'eq2-inner' has theta0_deg='None': expected "
+     "a finite number"),
+    ('{"thickwall": {"theta0_deg": 30, "C10_MPa": []}}', r"entry 'thickwall' has "
+     r"C10_MPa='\[\]'"),
+    ("[" * 100_000 + "]" * 100_000, "not valid JSON: nested too deep"),
 ])
 def test_bad_calibration_file_is_named_at_once(tmp_path, text, message):
     path = tmp_path / "cal.json"
@@ -232,3 +253,76 @@ def test_calibration_from_a_bench_run_folder_on_the_command_line(sim_run, tmp_pa
     assert sidecar["calibration"]["file"] == str(lab)
     assert sidecar["calibration"]["entry"] == entries["thickwall"]
     assert (pd.read_csv(tmp_path / "d.csv").theta0_deg == theta0).all()
+
+
+# Issue 20: a calibration file or reference table of any content is used or refused in one line
+# (property-based); the suite profile draws the same cases every run
+hostile = st.recursive(
+    st.none() | st.booleans() | st.integers() | st.floats()
+    | st.sampled_from([1e308, -1e308, 10**400, 0.0, -30.0, 90.0, 1e-300]) | st.text(max_size=8),
+    lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=6), inner,
+                                                                max_size=3),
+    max_leaves=6)
+FIELDS = ["theta0_deg", "C10_MPa", "C01_MPa", "model_params", "target"]
+entry_edits = st.lists(st.tuples(st.sampled_from(["eq2-inner", "thickwall", "axisym"]),
+                                 st.sampled_from(FIELDS), hostile), min_size=1, max_size=3)
+
+
+def _one_line_or_success(capsys, argv):
+    from mkm.cli import main
+
+    try:
+        code = main(argv)
+    except SystemExit as exc:
+        code = exc.code
+    err = capsys.readouterr().err
+    assert code == 0 or (code == 2 and err.startswith("mkm: error:")
+                         and err.count("mkm: error:") == 1), (code, err[-2000:])
+
+
+_files = itertools.count()
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+          HealthCheck.function_scoped_fixture])
+@given(edits=entry_edits, whole=st.none() | hostile)
+def test_a_hostile_calibration_file_is_used_or_refused_in_one_line(tmp_path, capsys, edits,
+                                                                  whole):
+    entries = json.loads(CALIBRATION_FILE.read_text())
+    for key, name, value in edits:
+        entries[key][name] = value
+    # a new name each time: the file is cached by path and modification time
+    path = tmp_path / f"cal{next(_files)}.json"
+    path.write_text(json.dumps(entries if whole is None else whole))
+    for model in ("eq2", "thickwall"):
+        _one_line_or_success(capsys, ["fem", "solve", "--model", model, "--calibration",
+                                      str(path), "--D0", "35", "--t0", "2.5", "--eps", "0.05",
+                                      "--pressures", "1,2"])
+
+
+def test_a_calibration_file_nested_100000_deep_is_refused_in_one_line(tmp_path, capsys):
+    path = tmp_path / "deep.json"
+    path.write_text("[" * 100_000 + "]" * 100_000)
+    _one_line_or_success(capsys, ["fem", "solve", "--calibration", str(path), "--D0", "35",
+                                  "--t0", "2.5", "--eps", "0.05"])
+
+
+CELLS = st.sampled_from(["abc", "1e308", "-1e308", "inf", "nan", "", "=1+1", "1,2", '"',
+                         "0x10", "１", "up", "sideways"])
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+          HealthCheck.function_scoped_fixture])
+@given(row=st.integers(0, 30), column=st.integers(0, 7), cell=CELLS)
+def test_a_hostile_reference_table_is_fitted_or_refused_in_one_line(tmp_path, capsys, row,
+                                                                     column, cell):
+    lines = CASE_I_CSV.read_text().splitlines()
+    body = [i for i, line in enumerate(lines) if line and not line.startswith("#")][1:]
+    k = body[row % len(body)]
+    cells = lines[k].split(",")
+    cells[column % len(cells)] = cell
+    lines[k] = ",".join(cells)
+    path = tmp_path / f"ref{next(_files)}.csv"
+    path.write_text("\n".join(lines) + "\n")
+    _one_line_or_success(capsys, ["fem", "calibrate", "--model", "eq2", "--reference",
+                                  str(path)])
