@@ -86,10 +86,10 @@ from mkm.fem.ladder import entry, make_model
 from mkm.fem.records import provenance, source_version, write_atomic
 from mkm.home import user_cache
 
-#: Target wall time of one Dask task [s]: a scheduler's per-task cost is about a millisecond
-#: (benchmarks/bench_batch.py measures it), so half a second of work hides it below 1 %, while a
-#: killed worker loses at most about that much work.
-TASK_SECONDS = 0.5
+#: Target wall time of one Dask task [s]: a task costs a local worker a few milliseconds
+#: (benchmarks/bench_batch.py measures it: 5 ms here), which a second of work hides to 0.5 %,
+#: while a killed worker loses at most about that much work.
+TASK_SECONDS = 1.0
 #: At least this many chunks per worker: the last chunks are short enough to balance the load.
 CHUNKS_PER_WORKER = 4
 #: Tasks kept queued per worker: one running, the next already there when it finishes.
@@ -224,7 +224,12 @@ def run_chunk(jobs: tuple[Job, ...]) -> list[dict[str, Any]]:
 
 
 def worker_model_version(name: str) -> str:
-    """The model's source version where this runs (a worker answers the client's check)."""
+    """The model's source version where this runs (a worker answers the client's check), after
+    importing the model's code: a worker imports it while the client still computes jobs
+    itself, not at its first task."""
+    import importlib
+
+    importlib.import_module(entry(name).module)
     return model_version(name)
 
 
@@ -366,13 +371,17 @@ class Runner:
         return self._client
 
     def check_versions(self, client, model: str, expected: str) -> None:
-        """Refuse the batch if a worker computes ``model`` with other code than this client."""
-        try:
-            versions = client.run(worker_model_version, model)
-        except ImportError as exc:
-            raise ValueError(f"the workers of {self.describe()} cannot import the model "
-                             f"({exc}): install mkm-bench on them") from None
+        """Refuse the batch if a worker computes ``model`` with other code than this client.
+
+        A worker that dies while it answers is left out: it computes nothing, and each result
+        carries the version it was computed with, which the client checks again."""
+        versions = client.run(worker_model_version, model, on_error="return")
         for address, version in sorted(versions.items()):
+            if isinstance(version, ImportError):
+                raise ValueError(f"the workers of {self.describe()} cannot import the model "
+                                 f"({version}): install mkm-bench on them")
+            if isinstance(version, BaseException):
+                continue
             if version != expected:
                 raise ValueError(f"worker {address} has {model} model version {version}, this "
                                  f"client has {expected}: install the same mkm-bench code on "

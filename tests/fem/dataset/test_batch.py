@@ -149,6 +149,32 @@ def test_a_killed_worker_loses_only_its_task(tmp_path):
     pd.testing.assert_frame_equal(frame[SAME], serial[SAME])
 
 
+class AnsweringClient:
+    """What ``Client.run(..., on_error="return")`` gives: each worker's answer or exception."""
+
+    def __init__(self, answers):
+        self.answers = answers
+
+    def run(self, function, *args, on_error):
+        assert on_error == "return"
+        return self.answers
+
+
+def test_the_version_check_names_missing_code_and_skips_a_worker_that_died():
+    mine = model_version("eq2")
+    runner = Runner(scheduler="tcp://lab:8786")
+    # a worker killed mid-check computes nothing: the others decide
+    runner.check_versions(AnsweringClient({"tcp://a": mine, "tcp://b": OSError("closed")}),
+                          "eq2", mine)
+    with pytest.raises(ValueError, match=r"cannot import the model \(No module named 'mkm'\): "
+                                         "install mkm-bench on them"):
+        runner.check_versions(AnsweringClient({"tcp://a": ModuleNotFoundError(
+            "No module named 'mkm'")}), "eq2", mine)
+    with pytest.raises(ValueError, match="worker tcp://b has eq2 model version 0.0.9"):
+        runner.check_versions(AnsweringClient({"tcp://a": mine, "tcp://b": "0.0.9"}), "eq2",
+                              mine)
+
+
 def free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
