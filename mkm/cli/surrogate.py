@@ -347,8 +347,8 @@ def _design(args) -> int:
                                progress=not args.no_progress, adaptive=args.adaptive,
                                scheduler=args.scheduler, refine=args.refine,
                                refine_box=args.refine_box)
-    summary_line("surrogate design", f"{args.muscles} + {args.refine} refinement + "
-                 f"{args.adaptive} adaptive muscles "
+    refined = f" + {args.refine} refinement" if args.refine else ""
+    summary_line("surrogate design", f"{args.muscles}{refined} + {args.adaptive} adaptive muscles "
                  f"({info['jobs_computed']} FE sweeps "
                  f"computed, {info['jobs_from_cache']} from cache, "
                  f"{len(info['muscles_with_failed_points'])} with failed points) in "
