@@ -199,7 +199,7 @@ def test_hostile_csv_cells_through_the_commands(recorded, tmp_path, mkm_cli, nam
 
 
 @pytest.mark.slow  # a few seconds per report; the cells it reads are fuzzed above
-@settings(FAST, max_examples=12)
+@settings(FAST, max_examples=6)
 @given(edits=edits)
 def test_hostile_run_json_through_the_report(recorded, tmp_path, mkm_cli, edits):
     _through_commands(mkm_cli, _edited_run_json(recorded, tmp_path, edits), tmp_path,
