@@ -678,7 +678,7 @@ def _typed(df: pd.DataFrame, path: Path) -> pd.DataFrame:
         magnitude = values.abs()
         if (magnitude > MAX_CELL_MAGNITUDE).any():  # NaN (a broken input) is recorded as such
             raise ValueError(f"{path} is corrupt: {column}="
-                             f"{values[magnitude > MAX_CELL_MAGNITUDE].iloc[0]!r} is beyond "
+                             f"{float(values[magnitude > MAX_CELL_MAGNITUDE].iloc[0])!r} is beyond "
                              f"+-{MAX_CELL_MAGNITUDE:g} (no bench reading is)")
         df[column] = values
     return df
@@ -844,7 +844,13 @@ def aggregate_samples(path: str | Path, bin_s: float | None = None,
     for chunk in _read_csv(csv, SAMPLE_COLUMNS, [], chunksize=chunksize):
         if chunk.empty:
             continue
-        b = np.floor(chunk["time_s"].to_numpy(float) / bin_s).astype(np.int64)
+        time_s = chunk["time_s"].to_numpy(float)
+        bins = np.floor(time_s / bin_s)
+        bad = ~(np.isfinite(bins) & (time_s >= 0) & (bins < 2**62))  # a bin is an int64
+        if bad.any():
+            raise ValueError(f"{csv}: time_s={float(time_s[bad][0])!r} is invalid: expected finite "
+                             "times >= 0 s from the run's start")
+        b = bins.astype(np.int64)
         flags = chunk["flags"].fillna("")
         frame = pd.DataFrame({"bin": b, "step": chunk["step"],
                               "p": chunk["pressure_bar"], "f": chunk["force_N"],

@@ -3,6 +3,7 @@
 import dataclasses
 import json
 import os
+import re
 from pathlib import Path
 
 import numpy as np
@@ -151,3 +152,17 @@ def test_aggregate_samples_streams_and_matches_the_whole(run_path):
     pd.testing.assert_frame_equal(small, bins)
     # default bin: the run's duration over max_bins
     assert len(aggregate_samples(run_path, max_bins=10)) <= 11
+
+
+@pytest.mark.parametrize("bad", ["nan", "-1.0", "1e300"])
+def test_a_sample_time_no_bin_can_hold_is_refused(run_path, bad):
+    csv = run_path / "samples.csv"
+    lines = csv.read_text().splitlines()
+    header = lines[0].split(",")
+    row = lines[3].split(",")
+    row[header.index("time_s")] = bad
+    lines[3] = ",".join(row)
+    csv.write_text("\n".join(lines) + "\n")
+    # one line naming the value: what no bin can hold, or (1e300) what no bench reads
+    with pytest.raises(ValueError, match=re.escape(f"time_s={float(bad)!r} is ")):
+        aggregate_samples(run_path, bin_s=1.0)
