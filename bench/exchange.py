@@ -32,8 +32,8 @@ from mkm.bench.storage import (
     StepRecord,
     load_run,
 )
+from mkm.core.records import file_sha256, provenance, spreadsheet_safe
 from mkm.fem.muscle import check_value
-from mkm.fem.records import file_sha256, provenance, spreadsheet_safe
 
 #: what a table column may hold -> the names looked for when ``--columns`` does not say
 COLUMN_ROLES = {"pressure": ("pressure_bar", "pressure", "p_bar", "p"),

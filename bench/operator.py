@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from mkm.fem.ranges import parse_number
+from mkm.core.ranges import parse_number
 
 
 class Operator(Protocol):

@@ -27,7 +27,7 @@ import filelock
 from mkm.bench.backend import BenchError
 from mkm.bench.storage import ProcessIdentity
 from mkm.bench.unvented import bench_folder_name, state_dir
-from mkm.fem.records import provenance, write_atomic
+from mkm.core.records import provenance, write_atomic
 
 
 class BenchBusy(BenchError):

@@ -25,7 +25,7 @@ from mkm.bench.storage import (
     Sample,
     StepRecord,
 )
-from mkm.fem.records import provenance
+from mkm.core.records import provenance
 
 
 class Recorder:

@@ -32,7 +32,7 @@ from mkm.bench.storage import (
     iter_samples,
     load_run,
 )
-from mkm.fem.records import file_sha256, provenance
+from mkm.core.records import file_sha256, provenance
 
 
 def overlay_config(run_dir: str | Path, path: str | Path) -> BenchConfig:

@@ -16,7 +16,7 @@ import typing
 from pathlib import Path
 from typing import Any
 
-from mkm.fem.ranges import parse_pressures
+from mkm.core.ranges import parse_pressures
 
 MAX_TEXT_CHARS = 1_000_000  # a bench configuration is a few kB; beyond this it is not one
 

@@ -38,7 +38,7 @@ from typing import Any, NamedTuple
 import numpy as np
 import pandas as pd
 
-from mkm.fem.records import spreadsheet_safe_text, write_json_atomic
+from mkm.core.records import spreadsheet_safe_text, write_json_atomic
 
 SCHEMA_VERSION = 2
 # A muscle id names the run folder and labels figures and reports: no path separators, no

@@ -22,12 +22,12 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from mkm.bench.storage import ProcessIdentity
-from mkm.fem.records import write_json_atomic
-from mkm.home import user_state
+from mkm.core.home import user_state
+from mkm.core.records import write_json_atomic
 
 
 def state_dir() -> Path:
-    """Folder of the bench markers (:func:`mkm.home.user_state`: ``MKM_STATE_DIR`` overrides
+    """Folder of the bench markers (:func:`mkm.core.home.user_state`: ``MKM_STATE_DIR`` overrides
     the platform's state folder)."""
     return user_state()
 

@@ -33,7 +33,7 @@ import numpy as np
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.storage import load_run
-from mkm.fem.records import provenance
+from mkm.core.records import provenance
 
 REPO = Path(__file__).resolve().parents[1]
 FAST = "[sequence]\npressures_bar = [0.5, 1.0]\ntare_s = 1.0\npreconditioning_cycles = 0\n"

@@ -24,7 +24,7 @@ from collections import Counter
 
 import numpy as np
 
-from mkm.fem.records import jsonable, provenance
+from mkm.core.records import jsonable, provenance
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict
 from mkm.registry import build_spec
 from mkm.surrogate.design import BOX

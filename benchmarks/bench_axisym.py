@@ -30,7 +30,7 @@ import numpy as np
 
 import mkm.fem.fe.model
 import mkm.fem.fe.newton
-from mkm.fem.records import provenance
+from mkm.core.records import provenance
 
 PRESSURES_BAR = np.arange(0.0, 2.51, 0.25)
 MUSCLE_I = {"D0_mm": 35.0, "t0_mm": 2.5, "L0_mm": 282.0}

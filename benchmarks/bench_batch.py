@@ -33,9 +33,9 @@ from pathlib import Path
 
 import numpy as np
 
+from mkm.core.records import provenance
 from mkm.fem.batch import TASK_SECONDS, Job, run_jobs
 from mkm.fem.calibration import calibrated
-from mkm.fem.records import provenance
 
 PRESSURES = tuple(float(p) for p in np.round(np.arange(0.0, 2.501, 0.25), 2))
 

@@ -14,8 +14,8 @@ import json
 import tempfile
 from pathlib import Path
 
+from mkm.core.records import provenance
 from mkm.fem.dataset import build_dataset
-from mkm.fem.records import provenance
 
 
 def bench(grid: str, model: str, mesh: str | None, workers: list[int]) -> list[dict]:

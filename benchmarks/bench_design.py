@@ -26,8 +26,8 @@ import time
 import numpy as np
 from threadpoolctl import threadpool_limits
 
+from mkm.core.records import provenance
 from mkm.design import pick, search, verify
-from mkm.fem.records import provenance
 
 SPECS = {"one point": ["580N@2bar,eps=0.10"],
          "force-stroke": ["300N@2.5bar,eps=0.10", "250N@2.5bar,eps=0.20"]}

@@ -962,7 +962,7 @@ def main(argv=None) -> int:
     print(table(results))
     print(f"\n{args.mkm}, seed {args.seed}: {len(results)} trials in {seconds:.0f} s")
     if args.json:
-        from mkm.fem.records import provenance
+        from mkm.core.records import provenance
 
         report = Report(args.mkm, args.seed, round(seconds, 1), results)
         Path(args.json).write_text(json.dumps({**asdict(report), "provenance": provenance()},

@@ -33,8 +33,8 @@ import numpy as np
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.core.records import jsonable, provenance
 from mkm.fem.materials import SILASTIC_S
-from mkm.fem.records import jsonable, provenance
 from mkm.identify import identify
 from mkm.identify.procedure import predict_runs
 

@@ -27,7 +27,7 @@ from pathlib import Path
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
-from mkm.fem.records import provenance
+from mkm.core.records import provenance
 
 MKM = str(Path(sys.executable).with_name("mkm"))
 

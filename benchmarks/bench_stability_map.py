@@ -31,8 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
+from mkm.core.records import provenance, source_version
 from mkm.fem.fe.model import isometric_sweep
-from mkm.fem.records import provenance, source_version
 
 BOX = {"eps": (0.0, 0.3), "t0_mm": (1.0, 5.0), "D0_mm": (20.0, 60.0), "theta0_deg": (20.0, 45.0),
        "L0_mm": (100.0, 600.0)}

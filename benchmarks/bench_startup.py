@@ -89,7 +89,7 @@ def main() -> None:
     load_after = os.getloadavg()
     print(f"load average after: {load_after[0]:.2f} (1 min)")
     if args.json:
-        from mkm.fem.records import provenance
+        from mkm.core.records import provenance
 
         rows = [{"command": label, "median_s": round(r["median_s"], 3),
                  "fastest_s": round(r["min_s"], 3),

@@ -43,7 +43,7 @@ import warnings
 import numpy as np
 import pandas as pd
 
-from mkm.fem.records import jsonable, provenance
+from mkm.core.records import jsonable, provenance
 from mkm.surrogate.coverage import coverage
 from mkm.surrogate.design import DESIGN_DATASET
 from mkm.surrogate.kinds import names

@@ -19,8 +19,8 @@ import time
 
 import numpy as np
 
+from mkm.core.records import provenance
 from mkm.fem.ladder import make_model
-from mkm.fem.records import provenance
 
 BOX = {"pressure_bar": (0.0, 2.5), "D0_mm": (30.0, 50.0), "t0_mm": (2.0, 4.0), "eps": (0.0, 0.2)}
 

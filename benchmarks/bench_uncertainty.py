@@ -31,7 +31,7 @@ import numpy as np
 
 from mkm.bench.config import load_config
 from mkm.bench.coverage import simulated_coverage
-from mkm.fem.records import provenance
+from mkm.core.records import provenance
 
 
 def coverage(runs: int, eps_values) -> None:

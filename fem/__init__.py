@@ -6,7 +6,7 @@ the ladder climbs from Equation 2 (``Eq2``, ``mkm.fem.eq2``) through the thick-w
 (``ThickWall``, ``mkm.fem.thickwall``) to the axisymmetric finite-element model (``Axisym``,
 ``mkm.fem.fe``). ``mkm.fem.calibration`` fits the braid angle, ``mkm.fem.dataset`` builds the FE
 dataset,
-``mkm.fem.paper`` holds the reference work's numbers, ``mkm.fem.records`` the provenance plumbing.
+``mkm.fem.paper`` holds the reference work's numbers, ``mkm.core.records`` the provenance plumbing.
 
 Models are imported on first use, so ``import fem`` stays cheap (the FE model loads scikit-fem).
 """

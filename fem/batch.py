@@ -63,7 +63,7 @@ What travels: each task carries its jobs (plain numbers: geometry, ``eps``, pres
 resolved braid angle, the rubber), so a calibration chosen with ``--calibration FILE`` on the
 client reaches the workers through the jobs, and no file is read on a worker. Before any job is
 sent, every worker reports the source version of the model
-(:func:`mkm.fem.records.source_version`: a hash of the model's code and of the package's data
+(:func:`mkm.core.records.source_version`: a hash of the model's code and of the package's data
 files); a worker with other code is refused with the versions of both, and each result carries
 the version it was computed with, so a worker that joins later with other code is refused too.
 """
@@ -82,9 +82,9 @@ from typing import Any
 
 import numpy as np
 
+from mkm.core.home import user_cache
+from mkm.core.records import provenance, source_version, write_atomic
 from mkm.fem.ladder import entry, make_model
-from mkm.fem.records import provenance, source_version, write_atomic
-from mkm.home import user_cache
 
 #: Target wall time of one Dask task [s]: a task costs a local worker a few milliseconds
 #: (benchmarks/bench_batch.py measures it: 5 ms here), which a second of work hides to 0.5 %,
@@ -129,7 +129,7 @@ COLUMNS = {
 
 
 def default_cache_dir():
-    """One file per finished job, in the user's cache (:func:`mkm.home.user_cache`)."""
+    """One file per finished job, in the user's cache (:func:`mkm.core.home.user_cache`)."""
     return user_cache("dataset")
 
 
@@ -167,7 +167,7 @@ def mesh_label(mesh) -> str | None:
 
 
 def model_version(name: str) -> str:
-    """The source version of rung ``name`` (:func:`mkm.fem.records.source_version` of its
+    """The source version of rung ``name`` (:func:`mkm.core.records.source_version` of its
     module)."""
     return source_version(entry(name).module)
 

@@ -44,9 +44,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from mkm.core.records import file_sha256, provenance, source_version, write_atomic
 from mkm.fem.materials import MooneyRivlin, mooney_rivlin
 from mkm.fem.muscle import LIMITS, OPEN_ABOVE, limit_text
-from mkm.fem.records import file_sha256, provenance, source_version, write_atomic
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
     import pandas as pd
@@ -383,7 +383,7 @@ def default_target(model) -> str:
 def calibration_entry(fit: dict, model, reference_name: str, reference_sha256: str | None,
                       module: str) -> dict:
     """The record of one fit: target, reference, theta0, residuals, command, date and code
-    version (:func:`mkm.fem.records.source_version` of the model's module, without its data files,
+    version (:func:`mkm.core.records.source_version` of the model's module, without its data files,
     so that writing the calibration does not change the version it records)."""
     info = provenance()
     entry = {

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from mkm.fem.records import package_file
+from mkm.core.records import package_file
 
 CITATION = ("Antonelli, Beomonte Zobel, Sarwar, Stampone, Actuators 2025, 14(3), 153, "
             "doi:10.3390/act14030153")

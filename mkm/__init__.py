@@ -10,7 +10,7 @@ It sits above the three libraries: ``bench`` (acquisition), ``fem`` (physics) an
 
 def __getattr__(name):
     if name == "__version__":  # read from the installed metadata when asked, not at import
-        from mkm.home import package_version
+        from mkm.core.home import package_version
 
         return package_version()
     raise AttributeError(f"module 'mkm' has no attribute {name!r}")

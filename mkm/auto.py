@@ -37,8 +37,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from mkm.core.records import file_sha256, package_file
 from mkm.fem.interface import ForceModel
-from mkm.fem.records import file_sha256, package_file
 
 MODEL_ERRORS_FILE = package_file("mkm", "data", "model_errors.csv")
 REFERENCE_SPEC = "surrogate"

@@ -15,7 +15,7 @@ import shutil
 import sys
 from pathlib import Path
 
-from mkm.fem.records import write_json_atomic
+from mkm.core.records import write_json_atomic
 from mkm.paths import default_out
 
 RECORD = "demo.json"  # the run folders this demo wrote, replaced by the next one

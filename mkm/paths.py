@@ -5,7 +5,7 @@
   the ``MKM_OUT`` environment variable), one subfolder per command: nothing lands among the
   project's shipped files, and the path is printed at the end of every command.
 - Caches (FE predictions, trained surrogates, dataset jobs) go under :func:`cache_root`, the
-  user's cache folder of the operating system (:func:`mkm.home.user_cache`:
+  user's cache folder of the operating system (:func:`mkm.core.home.user_cache`:
   ``~/.cache/mkm-bench`` on Linux, ``%LOCALAPPDATA%\\mkm-bench\\mkm-bench\\Cache`` on Windows),
   where the libraries keep theirs too (``mkm.surrogate.train``, ``mkm.fem.dataset.build``), so a
   second
@@ -20,7 +20,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from mkm.home import user_cache
+from mkm.core.home import user_cache
 
 OUT_ENV = "MKM_OUT"
 DEFAULT_OUT_ROOT = "mkm-out"

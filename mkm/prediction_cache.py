@@ -1,10 +1,10 @@
 """On-disk cache of force-model predictions, so a second report or study skips the FE solves.
 
 An entry is keyed by the model's name and parameters, the inputs, and the model's *version*
-(:func:`mkm.fem.records.source_version` of its module: the package version plus a hash of the
+(:func:`mkm.core.records.source_version` of its module: the package version plus a hash of the
 sources it depends on and of the calibration), so editing the physics or recalibrating
 invalidates the entry and editing the report does not. Entries are ``.npz`` files written with
-:func:`mkm.fem.records.write_atomic` and read without pickle, in the user's cache folder
+:func:`mkm.core.records.write_atomic` and read without pickle, in the user's cache folder
 (:func:`mkm.paths.default_cache`) unless told otherwise.
 """
 
@@ -19,15 +19,15 @@ from pathlib import Path
 
 import numpy as np
 
+from mkm.core.records import source_version, write_atomic
 from mkm.fem.interface import INPUTS, ForceModel, Prediction
-from mkm.fem.records import source_version, write_atomic
 from mkm.paths import CacheFolder
 
 DEFAULT_CACHE_DIR = CacheFolder("predictions")
 
 
 def model_version(model: ForceModel) -> str:
-    """Version of the code and data behind ``model``: :func:`mkm.fem.records.source_version` of the
+    """Version of the code and data behind ``model``: :func:`mkm.core.records.source_version` of the
     module that defines its class."""
     return source_version(type(model).__module__)
 

@@ -33,13 +33,13 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.fem.paper import L0_MM, TABLE3_CSV
-from mkm.fem.records import (
+from mkm.core.records import (
     provenance,
     read_prediction_header,
     spreadsheet_safe,
     write_json_atomic,
 )
+from mkm.fem.paper import L0_MM, TABLE3_CSV
 from mkm.fem.tolerances import Tolerances
 from mkm.figures import (
     model_colours,

@@ -31,10 +31,10 @@ import numpy as np
 import pandas as pd
 
 from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
+from mkm.core.records import provenance, write_atomic, write_json_atomic
 from mkm.fem import ladder
 from mkm.fem.interface import ForceModel, Prediction
 from mkm.fem.paper import equation7_err_pct
-from mkm.fem.records import provenance, write_atomic, write_json_atomic
 from mkm.figures import speed_accuracy_figure, stability_figure
 from mkm.html import esc, figure_html, html_page, provenance_details, save_figure, table_html
 from mkm.paths import default_out

@@ -29,9 +29,9 @@ import numpy as np
 import pandas as pd
 from scipy.stats import qmc
 
+from mkm.core.records import package_file, provenance, write_csv_with_sidecar
 from mkm.fem.batch import Job, Runner, run_jobs
 from mkm.fem.materials import SILASTIC_S
-from mkm.fem.records import package_file, provenance, write_csv_with_sidecar
 from mkm.surrogate.muscle_predictor import process_inputs
 
 #: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).

@@ -39,8 +39,8 @@ import tempfile
 import warnings
 from pathlib import Path
 
+from mkm.core.records import file_sha256, jsonable, provenance, source_version, write_json_atomic
 from mkm.fem.interface import INPUTS
-from mkm.fem.records import file_sha256, jsonable, provenance, source_version, write_json_atomic
 from mkm.surrogate import kinds
 from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.training_data import ALL_INPUTS, PARAMETERS

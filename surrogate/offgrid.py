@@ -16,8 +16,8 @@ import warnings
 import numpy as np
 import pandas as pd
 
+from mkm.core.records import provenance
 from mkm.fem.paper import equation7_err_pct
-from mkm.fem.records import provenance
 from mkm.surrogate.coverage import coverage
 from mkm.surrogate.design import EVAL_PRESSURES, MUSCLE_PARAMETERS, fe_sweeps, random_muscles
 from mkm.surrogate.model import OutOfDomainWarning, SurrogateForceModel

@@ -18,8 +18,8 @@ from pathlib import Path
 import pandas as pd
 from joblib import Parallel, delayed
 
+from mkm.core.records import provenance
 from mkm.fem.paper import TABLE2_CSV
-from mkm.fem.records import provenance
 from mkm.surrogate.paper_nets import PAPER_NETS, paper_net
 from mkm.surrogate.training_data import PAPER_DATASET, load_training_data
 from mkm.surrogate.validation import split_scores

@@ -13,11 +13,16 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from mkm.core.records import (
+    package_file,
+    provenance,
+    read_prediction_header,
+    write_csv_with_sidecar,
+)
 from mkm.fem import paper
 from mkm.fem.calibration import calibration_provenance
 from mkm.fem.interface import ForceModel
 from mkm.fem.paper import equation7_err_pct
-from mkm.fem.records import package_file, provenance, read_prediction_header, write_csv_with_sidecar
 from mkm.surrogate.training_data import PARAMETERS
 from mkm.surrogate.validation import rmse
 
@@ -40,7 +45,7 @@ def build_fe_reference(model: ForceModel, out=FE_REFERENCE) -> pd.DataFrame:
     """Sweep every test muscle with ``model`` (our FE) and write the reference CSV to ``out``.
 
     A plain CSV with its metadata (the model, its parameters, the calibration and the library
-    versions) in a JSON sidecar beside it (:func:`mkm.fem.records.write_csv_with_sidecar`; read
+    versions) in a JSON sidecar beside it (:func:`mkm.core.records.write_csv_with_sidecar`; read
     back with :func:`read_fe_reference`).
     """
     frames = []

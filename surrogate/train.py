@@ -16,8 +16,8 @@ from pathlib import Path
 
 from threadpoolctl import threadpool_limits
 
-from mkm.fem.records import file_sha256, provenance
-from mkm.home import user_cache
+from mkm.core.home import user_cache
+from mkm.core.records import file_sha256, provenance
 from mkm.surrogate.coverage import coverage
 from mkm.surrogate.kinds import BEST, make_estimator
 from mkm.surrogate.model import SurrogateForceModel
@@ -119,7 +119,7 @@ def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SP
 
 
 def default_cache_dir() -> Path:
-    """Folder of the trained models in the user's cache (:func:`mkm.home.user_cache`)."""
+    """Folder of the trained models in the user's cache (:func:`mkm.core.home.user_cache`)."""
     return user_cache("surrogate")
 
 

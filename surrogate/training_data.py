@@ -19,8 +19,8 @@ from pathlib import Path
 
 import numpy as np
 
+from mkm.core.records import file_sha256, package_file, read_prediction_header
 from mkm.fem.interface import INPUTS, Domain
-from mkm.fem.records import file_sha256, package_file, read_prediction_header
 
 #: Parameters of a muscle that are not arguments of ``ForceModel.predict``: a surrogate takes
 #: each either as an input (the dataset varies it) or as a recorded value (the dataset holds one).

@@ -20,6 +20,7 @@ from typing import Any
 
 import pandas as pd
 
+from mkm.core.records import provenance, write_atomic
 from mkm.fem.batch import (
     COLUMNS,
     Job,
@@ -34,7 +35,6 @@ from mkm.fem.batch import (
 )
 from mkm.fem.dataset.grid import Grid, load_grid
 from mkm.fem.ladder import LADDER, make_model
-from mkm.fem.records import provenance, write_atomic
 
 __all__ = ["COLUMNS", "DEFAULT_OUT", "DatasetRun", "Job", "JobCache", "build_dataset",
            "default_cache_dir", "make_jobs", "model_version", "run_job", "run_jobs"]

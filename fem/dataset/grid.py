@@ -13,10 +13,10 @@ from typing import Any
 
 import numpy as np
 
+from mkm.core.ranges import parse_range
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG
 from mkm.fem.interface import validate_inputs
 from mkm.fem.paper import TABLE1_GRID
-from mkm.fem.ranges import parse_range
 
 GRID_KEYS = ("pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg")
 OPTIONAL_GRID_KEYS = ("L0_mm", "theta0_deg")  # left out: the model's default

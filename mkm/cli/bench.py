@@ -14,7 +14,7 @@ from __future__ import annotations
 import sys
 
 from mkm.cli.common import argtype, has_display
-from mkm.fem.ranges import parse_fraction, parse_number, parse_pressures
+from mkm.core.ranges import parse_fraction, parse_number, parse_pressures
 from mkm.paths import default_out
 
 EXIT_FAILED = 1

@@ -7,8 +7,8 @@ import io
 import os
 import sys
 
-from mkm.fem.ranges import parse_fraction, parse_number, parse_pressures
-from mkm.fem.records import (
+from mkm.core.ranges import parse_fraction, parse_number, parse_pressures
+from mkm.core.records import (
     prediction_metadata,
     sidecar_path,
     write_csv_with_sidecar,
@@ -26,7 +26,7 @@ def has_display() -> bool:
 
 
 def argtype(parse, *args):
-    """Wrap a ``mkm.fem.ranges`` parser for argparse, keeping its one-line message."""
+    """Wrap a ``mkm.core.ranges`` parser for argparse, keeping its one-line message."""
 
     def convert(text):
         try:

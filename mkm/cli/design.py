@@ -11,7 +11,7 @@ from mkm.cli.common import (
     argtype,
     with_calibration,
 )
-from mkm.fem.ranges import parse_number
+from mkm.core.ranges import parse_number
 
 EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
            "--t0 2:3 --out mkm-out/design; robust: add --tolerance D0=0.3,t0=0.1,theta0=1")

@@ -16,8 +16,8 @@ from mkm.cli.common import (
     model_from_args,
     with_calibration,
 )
+from mkm.core.ranges import parse_fraction, parse_number
 from mkm.fem.ladder import model_names
-from mkm.fem.ranges import parse_fraction, parse_number
 from mkm.paths import default_cache, default_out
 
 
@@ -199,8 +199,8 @@ def _load_reference(path):
     A run folder gives its settled steps: the measured mean pressure and force of each step,
     its direction, and the muscle from run.json.
     """
+    from mkm.core.records import file_sha256
     from mkm.fem.calibration import check_reference, read_reference
-    from mkm.fem.records import file_sha256
 
     path = Path(path)
     if not path.is_dir():

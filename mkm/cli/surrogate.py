@@ -15,7 +15,7 @@ from mkm.cli.common import (
     emit_prediction,
     with_calibration,
 )
-from mkm.fem.ranges import parse_number
+from mkm.core.ranges import parse_number
 from mkm.paths import default_cache, default_out
 from mkm.progress import summary_line
 from mkm.surrogate import kinds
@@ -303,7 +303,7 @@ def _figure6(out: Path, reference) -> None:
     """The paper's Figure 6 from run_test's points: the one Figure-6 plot of the project."""
     import pandas as pd
 
-    from mkm.fem.records import read_prediction_header
+    from mkm.core.records import read_prediction_header
     from mkm.figures import surrogate_fe_figure
     from mkm.html import save_figure
 
@@ -358,7 +358,7 @@ def _design(args) -> int:
 
 
 def _evaluate(args) -> int:
-    from mkm.fem.records import write_json_atomic
+    from mkm.core.records import write_json_atomic
     from mkm.surrogate.offgrid import evaluate_offgrid
 
     start = time.perf_counter()

@@ -6,7 +6,7 @@ import argparse
 import time
 
 from mkm.cli.common import add_batch_arguments, add_calibration_argument, with_calibration
-from mkm.fem.ranges import parse_fraction
+from mkm.core.ranges import parse_fraction
 
 
 def register(subparsers) -> None:

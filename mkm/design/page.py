@@ -19,17 +19,17 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-from mkm.design.result import DesignResult, design_record
-from mkm.design.search import geometry_text, span_text, surrogate_uncertainty
-from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
-from mkm.fem.calibration import calibration_provenance
-from mkm.fem.records import (
+from mkm.core.records import (
     provenance,
     sidecar_path,
     source_version,
     write_atomic,
     write_csv_with_sidecar,
 )
+from mkm.design.result import DesignResult, design_record
+from mkm.design.search import geometry_text, span_text, surrogate_uncertainty
+from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
+from mkm.fem.calibration import calibration_provenance
 from mkm.fem.thickwall import outer_diameter_mm
 from mkm.html import (
     esc,

@@ -7,9 +7,9 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
+from mkm.core.ranges import parse_fraction, parse_number
 from mkm.fem.calibration import calibrated
 from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin
-from mkm.fem.ranges import parse_fraction, parse_number
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
 #: the rubber of the calibration in effect (a muscle ``mkm identify`` learnt), else Silastic S

@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from mkm.core.records import provenance, source_version, spreadsheet_safe, write_json_atomic
 from mkm.fem.calibration import (
     calibration_entry,
     check_reference,
@@ -31,7 +32,6 @@ from mkm.fem.calibration import (
     store_calibration,
 )
 from mkm.fem.materials import SILASTIC_S
-from mkm.fem.records import provenance, source_version, spreadsheet_safe, write_json_atomic
 from mkm.identify.fitting import Fit, full_parameters
 
 UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa",

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.fem.records import file_sha256
+from mkm.core.records import file_sha256
 
 #: muscle geometry that must agree between the runs of one muscle (eps differs by design)
 SAME_MUSCLE = ("D0_mm", "t0_mm", "L0_mm")

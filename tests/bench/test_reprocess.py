@@ -9,7 +9,7 @@ from mkm.bench.reprocess import reprocess
 from mkm.bench.run import acquire
 from mkm.bench.storage import load_run
 from mkm.cli import main
-from mkm.fem.records import file_sha256
+from mkm.core.records import file_sha256
 
 
 @pytest.fixture

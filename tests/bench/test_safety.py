@@ -223,7 +223,7 @@ def test_a_full_state_folder_is_named_not_taken_for_a_failed_vent(config, tmp_pa
 def test_formula_cells_are_neutralised():
     import pandas as pd
 
-    from mkm.fem.records import spreadsheet_safe
+    from mkm.core.records import spreadsheet_safe
 
     frame = pd.DataFrame({"run": ["=HYPERLINK(1)", "+1", "-cmd", "@x", "\tx", "ok"],
                           "force_N": [-1.0, 2.0, 3.0, 4.0, 5.0, 6.0]})

@@ -22,7 +22,7 @@ from mkm.bench.storage import (
     iter_samples,
     load_run,
 )
-from mkm.fem.records import write_json_atomic
+from mkm.core.records import write_json_atomic
 
 
 @pytest.fixture

@@ -10,6 +10,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from mkm.core.records import read_prediction_header
 from mkm.fem.calibration import (
     CALIBRATION_FILE,
     calibrate_command,
@@ -24,7 +25,6 @@ from mkm.fem.calibration import (
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import CASE_I_CSV
-from mkm.fem.records import read_prediction_header
 from mkm.fem.thickwall import ThickWall
 
 
@@ -193,7 +193,7 @@ def sim_run(tmp_path_factory):
     """A simulated bench run of the paper's prototype at eps 12.2 %, up and down (a few s)."""
     from mkm.bench.config import DEFAULT_CONFIG
     from mkm.cli import main
-    from mkm.fem.records import package_file
+    from mkm.core.records import package_file
 
     folder = tmp_path_factory.mktemp("bench")
     text = package_file("mkm.bench", "configs", DEFAULT_CONFIG).read_text(encoding="utf-8")

@@ -10,10 +10,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from mkm.core.records import read_prediction_header
 from mkm.fem.calibration import CALIBRATION_FILE
 from mkm.fem.ladder import make_model, model_names
 from mkm.fem.paper import CASE_I_CSV
-from mkm.fem.records import read_prediction_header
 
 CASE_I = CASE_I_CSV
 MODELS = ", ".join(model_names())  # grows as rungs are registered

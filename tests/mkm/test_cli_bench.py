@@ -160,7 +160,7 @@ def test_huge_sequences_are_one_line(argv, message, capsys):
 
 def _edited_run(tmp_path, **muscle):
     from mkm.bench.run import acquire
-    from mkm.fem.records import write_json_atomic
+    from mkm.core.records import write_json_atomic
 
     config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
     path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
@@ -193,7 +193,7 @@ def test_report_refuses_a_recorded_id_that_is_not_an_id(tmp_path, capsys):
 def test_report_says_a_run_ended_without_venting(tmp_path):
     # what kill -9 leaves: run.json "running" from a dead process, no final vent in commands.csv
     from mkm.bench.run import acquire
-    from mkm.fem.records import write_json_atomic
+    from mkm.core.records import write_json_atomic
     from mkm.report import build_report
 
     config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
@@ -217,7 +217,7 @@ def test_report_says_a_run_vented_a_dead_one_first(tmp_path):
     from mkm.bench.run import acquire
     from mkm.bench.storage import ProcessIdentity
     from mkm.bench.unvented import Marker, _folder
-    from mkm.fem.records import write_json_atomic
+    from mkm.core.records import write_json_atomic
     from mkm.report import build_report
 
     dead = ProcessIdentity(2**22 + 7, socket.gethostname(), 1.0, None)

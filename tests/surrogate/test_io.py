@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mkm.fem.records import file_sha256
+from mkm.core.records import file_sha256
 from mkm.surrogate.io import (
     ESTIMATOR_FILE,
     METADATA_FILE,

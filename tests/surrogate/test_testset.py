@@ -2,9 +2,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from mkm.core.records import read_prediction_header
 from mkm.fem.ladder import make_model
 from mkm.fem.paper import equation7_err_pct
-from mkm.fem.records import read_prediction_header
 from mkm.surrogate.testset import (
     TEST_MUSCLES,
     build_fe_reference,

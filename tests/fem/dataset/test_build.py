@@ -9,6 +9,7 @@ import pandas as pd
 import pytest
 
 from mkm.cli import main
+from mkm.core.records import package_file, source_version
 from mkm.fem import batch
 from mkm.fem.calibration import calibrated
 from mkm.fem.dataset import build as dataset
@@ -17,7 +18,6 @@ from mkm.fem.dataset.grid import parse_grid
 from mkm.fem.eq2 import chou_hannaford
 from mkm.fem.ladder import L0, THETA0, Entry
 from mkm.fem.ladder import LADDER as MODELS
-from mkm.fem.records import package_file, source_version
 
 # 2 muscles x 2 eps = 4 jobs of 3 pressures: the smallest grid with more jobs than workers
 TINY_GRID = """

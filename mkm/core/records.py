@@ -13,7 +13,7 @@ reports share, so they cannot drift apart:
 - :func:`package_file`: a data file shipped inside a package, found through
   ``importlib.resources`` (works from a wheel, from any working directory).
 
-The toolkit's own folders (the user cache, the state folder) are :mod:`mkm.home`'s.
+The toolkit's own folders (the user cache, the state folder) are :mod:`mkm.core.home`'s.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from importlib.util import resolve_name
 from pathlib import Path
 from typing import Any
 
-from mkm.home import DISTRIBUTION, PACKAGE, package_version, user_cache
+from mkm.core.home import DISTRIBUTION, PACKAGE, package_version, user_cache
 
 RACY_NS = 2_000_000_000  # file systems stamp times to 2 s (FAT) or finer
 RECORDED_LIBRARIES = (DISTRIBUTION, "numpy", "scipy", "scikit-fem", "scikit-learn", "pandas")

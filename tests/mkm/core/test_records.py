@@ -1,4 +1,4 @@
-"""Tests of fem/records.py: atomic writes, source versions, package files, provenance."""
+"""Tests of mkm/core/records.py: atomic writes, source versions, package files, provenance."""
 
 import os
 import shutil
@@ -6,8 +6,8 @@ import time
 
 import pytest
 
-from mkm.fem import records
-from mkm.home import package_version
+from mkm.core import records
+from mkm.core.home import package_version
 
 
 def test_crash_while_writing_keeps_the_old_file(tmp_path, monkeypatch):
@@ -30,7 +30,7 @@ def test_crash_while_writing_keeps_the_old_file(tmp_path, monkeypatch):
 def test_source_version_follows_imports_and_data(tmp_path):
     # thickwall imports materials: editing a material constant must change the version
     import mkm.fem.materials  # noqa: F401
-    from mkm.fem.records import source_version
+    from mkm.core.records import source_version
     version = source_version("mkm.fem.thickwall")
     assert version.startswith(package_version() + "+")
     assert version == source_version("mkm.fem.thickwall")  # read from the files: stable

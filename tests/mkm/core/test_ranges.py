@@ -1,9 +1,9 @@
-"""The one parser of numbers, fractions and ranges (fem/ranges.py)."""
+"""The one parser of numbers, fractions and ranges (mkm/core/ranges.py)."""
 
 import numpy as np
 import pytest
 
-from mkm.fem.ranges import (
+from mkm.core.ranges import (
     MAX_RANGE_VALUES,
     parse_fraction,
     parse_number,
