@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from mkm.bench.backends import BACKENDS, backend_entry
+from mkm.bench import backends
 from mkm.bench.settings import positive, read_toml, read_toml_file, typed_section, within
 from mkm.bench.sim_settings import Sim
 from mkm.bench.storage import check_muscle_id
@@ -106,7 +106,7 @@ class Daq:
         return int(round(self.buffer_s * self.sample_rate_hz))
 
     def check(self):
-        backend_entry(self.backend)  # one line naming the choices
+        backends.entry(self.backend)  # one line naming the choices
         if not re.fullmatch(DEVICE_PATTERN, self.device):
             shown = self.device if len(self.device) <= 40 else self.device[:40] + "..."
             raise ValueError(f"daq.device={shown!r} ({len(self.device)} characters) is invalid: "
@@ -315,7 +315,7 @@ class BenchConfig:
     @property
     def simulated(self) -> bool:
         """Whether the configured backend drives no hardware."""
-        return backend_entry(self.daq.backend).simulated
+        return backends.entry(self.daq.backend).simulated
 
     @property
     def ai_channels(self) -> list[str]:
@@ -353,7 +353,7 @@ class BenchConfig:
 
     def _check_device(self):
         """Against the capabilities of the configured backend's device."""
-        caps = backend_entry(self.daq.backend).capabilities
+        caps = backends.entry(self.daq.backend).capabilities
         ai, daq, cell, reg = self.ai_channels, self.daq, self.loadcell, self.regulator
         if daq.terminal_config not in caps.terminal_configs:
             raise ValueError(f"daq.terminal_config={daq.terminal_config[:40]!r} is invalid: the "
@@ -489,7 +489,7 @@ def config_from_tables(data: dict[str, Any], text: str, source: str) -> BenchCon
 
 def _backend_choice() -> str:
     return (": expected [daq] backend = " + " or ".join(f"'{e.name}' ({e.label})"
-                                                       for e in BACKENDS.values())
+                                                       for e in backends.BACKENDS.entries())
             + ", so the configuration says whether it drives hardware")
 
 

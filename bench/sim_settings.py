@@ -95,14 +95,15 @@ class Sim:
     truth: Truth = field(default_factory=Truth)
 
     def check(self):
-        from mkm.fem.ladder import entry, model_names
+        from mkm.fem.fe.options import MESH_LEVELS
+        from mkm.fem.ladder import entry, static_names
 
-        if self.model not in model_names():
+        if self.model not in static_names():
             raise ValueError(f"sim.model={self.model[:40]!r} is unknown: expected one of "
-                             f"{', '.join(model_names())}")
-        if self.fe_mesh not in ("coarse", "medium", "fine"):
-            raise ValueError(f"sim.fe_mesh={self.fe_mesh[:40]!r} is invalid: expected coarse, "
-                             "medium or fine")
+                             f"{', '.join(static_names())}")
+        if self.fe_mesh not in MESH_LEVELS:
+            raise ValueError(f"sim.fe_mesh={self.fe_mesh[:40]!r} is invalid: expected one of "
+                             f"{', '.join(MESH_LEVELS)}")
         within("sim.seed", self.seed, 0, 2**63 - 1)
         within("sim.regulator_tau_s", self.regulator_tau_s, 1e-3, 60.0, "s")
         within("sim.regulator_slew_bar_per_s", self.regulator_slew_bar_per_s, 1e-3, 1000.0,

@@ -139,15 +139,16 @@ def _load(path: Path) -> dict:
     return _read(path, mtime)
 
 
-# the option of `mkm fem calibrate` that selects the variant in an entry's key ("eq2-braid")
-_VARIANT_OPTION = {"eq2": "--diameter", "axisym": "--braid"}
-
-
 def calibrate_command(key: str, path) -> str:
-    """The command that writes entry ``key`` into the calibration file ``path``."""
+    """The command that writes entry ``key`` (``eq2-braid``: a rung and the value of one of its
+    text parameters, which the command takes as the option of the same name) into the
+    calibration file ``path``."""
+    from mkm.fem.ladder import entry
+
     rung, _, variant = key.partition("-")
-    option = f" {_VARIANT_OPTION[rung]} {variant}" if variant in ("inner", "braid",
-                                                                  "sliding") else ""
+    option = "".join(f" --{name} {variant}"
+                     for name, parameter in (entry(rung).parameters.items() if variant else ())
+                     if variant in parameter.options())
     return f"mkm fem calibrate --model {rung}{option} --out {path}"
 
 

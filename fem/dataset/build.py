@@ -34,7 +34,7 @@ from mkm.fem.batch import (
     run_jobs,
 )
 from mkm.fem.dataset.grid import Grid, load_grid
-from mkm.fem.ladder import LADDER, make_model
+from mkm.fem.ladder import entry, make_model
 
 __all__ = ["COLUMNS", "DEFAULT_OUT", "DatasetRun", "Job", "JobCache", "build_dataset",
            "default_cache_dir", "make_jobs", "model_version", "run_job", "run_jobs"]
@@ -158,6 +158,6 @@ def _provenance(run: DatasetRun, grid: Grid, jobs: list[Job], done: dict,
         "chunk_jobs": done["chunk_jobs"],
         "cache": str(cache_dir),
         "columns": {c: COLUMNS.get(c, "reported by the model (see "
-                                      f"{LADDER[jobs[0].model].factory})")
+                                      f"{entry(jobs[0].model).factory})")
                     for c in run.frame.columns},
     }

@@ -13,8 +13,8 @@ from pathlib import Path
 import pandas as pd
 
 from mkm.core.records import provenance, write_csv_with_sidecar
-from mkm.fem.fe.mesh import MESH_LEVELS
 from mkm.fem.fe.model import Axisym, isometric_sweep
+from mkm.fem.fe.options import MESH_LEVELS
 from mkm.fem.interface import validate_inputs
 
 

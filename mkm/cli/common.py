@@ -14,7 +14,7 @@ from mkm.core.records import (
     write_csv_with_sidecar,
     write_prediction_csv,
 )
-from mkm.registry import entries, parse_spec
+from mkm.registry import entries, entry, parse_spec
 
 
 def has_display() -> bool:
@@ -49,6 +49,11 @@ def add_batch_arguments(parser) -> None:
                         "tcp://HOST:8786 (workers need the same mkm-bench installed)")
 
 
+def choices(model: str, parameter: str) -> tuple[str, ...]:
+    """The values a registered model's text parameter takes (the registry declares them)."""
+    return entry(model).parameters[parameter].options()
+
+
 def add_model_arguments(parser, theta0: bool = True) -> None:
     parser.add_argument("--model", default="eq2", help=f"predictor spec: one of "
                         f"{', '.join(entries())}, with :key=value parameters (see `mkm models`); "
@@ -56,13 +61,13 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
     if theta0:
         parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
                             help="braid angle at rest [deg] (default: calibrated)")
-    parser.add_argument("--diameter", choices=("inner", "braid"),
+    parser.add_argument("--diameter", choices=choices("eq2", "diameter"),
                         help="eq2 only: diameter convention (default inner, as the paper)")
     parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
                         help="muscle length at rest [mm] (default 282)")
-    parser.add_argument("--mesh", choices=("coarse", "medium", "fine"),
+    parser.add_argument("--mesh", choices=choices("axisym", "mesh"),
                         help="axisym only: FE mesh level (default medium)")
-    parser.add_argument("--braid", choices=("bonded", "sliding"),
+    parser.add_argument("--braid", choices=choices("axisym", "braid"),
                         help="axisym only: fibres bonded to the rubber (default) or a "
                         "frictionless sliding sleeve")
     parser.add_argument("--per-point", action="store_true",

@@ -9,6 +9,7 @@ from mkm.cli.common import (
     add_batch_arguments,
     add_calibration_argument,
     argtype,
+    choices,
     with_calibration,
 )
 from mkm.core.ranges import parse_number
@@ -95,7 +96,7 @@ def register(subparsers) -> None:
                    "min-rubber-volume or max-margin")
     p.add_argument("--top", type=int, metavar="N",
                    help="designs verified with the FE model (default 5)")
-    p.add_argument("--mesh", choices=("coarse", "medium", "fine"), default="medium",
+    p.add_argument("--mesh", choices=choices("axisym", "mesh"), default="medium",
                    help="FE mesh of the verification (default: %(default)s, the converged one)")
     p.add_argument("--surrogate", default="surrogate", metavar="SPEC",
                    help="surrogate spec that searches the box (default: %(default)s)")

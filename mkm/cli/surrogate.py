@@ -12,6 +12,7 @@ from mkm.cli.common import (
     add_calibration_argument,
     add_geometry_arguments,
     argtype,
+    choices,
     emit_prediction,
     with_calibration,
 )
@@ -130,7 +131,7 @@ def register(subparsers) -> None:
                         help="the sub-box of --refine: NAME=LO:HI,... over D0_mm, t0_mm, eps, "
                         "L0_mm, theta0_deg, C10_MPa, C01_MPa (the others span the box), "
                         "recorded in the sidecar")
-    design.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
+    design.add_argument("--mesh", default="fine", choices=choices("axisym", "mesh"),
                         help="FE mesh level (default fine, the converged one)")
     add_batch_arguments(design)
     design.add_argument("--cache", default=str(default_cache("dataset")),
@@ -158,7 +159,7 @@ def register(subparsers) -> None:
     evaluate.add_argument("--muscles", type=int, default=12,
                           help="FE budget: random muscles (default 12)")
     evaluate.add_argument("--seed", type=int, help="seed of the draw (default: a fresh one)")
-    evaluate.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
+    evaluate.add_argument("--mesh", default="fine", choices=choices("axisym", "mesh"),
                           help="FE mesh level of the reference (default fine, the converged one)")
     add_batch_arguments(evaluate)
     evaluate.add_argument("--cache", default=str(default_cache("dataset")),
