@@ -95,8 +95,8 @@ class Sim:
     truth: Truth = field(default_factory=Truth)
 
     def check(self):
-        from mkm.fem.fe.options import MESH_LEVELS
         from mkm.fem.ladder import entry, static_names
+        from mkm.fem.options import MESH_LEVELS
 
         if self.model not in static_names():
             raise ValueError(f"sim.model={self.model[:40]!r} is unknown: expected one of "

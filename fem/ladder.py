@@ -22,7 +22,7 @@ from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
 from mkm.core.registry import Registry
-from mkm.fem.fe.options import BRAIDS, MESH_LEVELS
+from mkm.fem.options import BRAIDS, MESH_LEVELS
 
 if TYPE_CHECKING:  # annotations only: the registry loads without numpy
     from mkm.fem.interface import ForceModel

@@ -14,8 +14,8 @@ import pandas as pd
 
 from mkm.core.records import provenance, write_csv_with_sidecar
 from mkm.fem.fe.model import Axisym, isometric_sweep
-from mkm.fem.fe.options import MESH_LEVELS
 from mkm.fem.interface import validate_inputs
+from mkm.fem.options import MESH_LEVELS
 
 
 def mesh_convergence(D0_mm: float = 35.0, t0_mm: float = 2.5, eps: float = 0.05,

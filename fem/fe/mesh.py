@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from skfem import MeshTri
 
-from mkm.fem.fe.options import MESH_LEVELS
+from mkm.fem.options import MESH_LEVELS
 
 
 def graded_spacing(length_mm: float, n: int, ratio: float) -> np.ndarray:

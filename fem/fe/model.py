@@ -42,9 +42,9 @@ from mkm.fem.fe.assembly import Assembler, Term, operator
 from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
 from mkm.fem.fe.mesh import half_muscle_mesh
 from mkm.fem.fe.newton import OrderedLU, load_path, newton
-from mkm.fem.fe.options import BRAIDS, MESH_LEVELS
 from mkm.fem.interface import ForceModel
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.options import BRAIDS, MESH_LEVELS
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
@@ -472,7 +472,7 @@ class HalfMuscle:
 
 
 def check_sleeve(braid: str) -> str:
-    """``braid`` if it is one of :data:`mkm.fem.fe.options.BRAIDS`, else ``ValueError``."""
+    """``braid`` if it is one of :data:`mkm.fem.options.BRAIDS`, else ``ValueError``."""
     if braid not in BRAIDS:
         raise ValueError(f"braid={braid!r} is invalid: expected one of {', '.join(BRAIDS)}")
     return braid
@@ -507,11 +507,11 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
     L0_mm : float
         Length at rest [mm] (282 in the paper).
     mesh : {"coarse", "medium", "fine"}
-        Mesh level (:data:`mkm.fem.fe.options.MESH_LEVELS`).
+        Mesh level (:data:`mkm.fem.options.MESH_LEVELS`).
     material : MooneyRivlin
         Wall material (default Silastic S, the paper's Equation 3).
     braid : {"bonded", "sliding"}
-        How the braid meets the rubber (:data:`mkm.fem.fe.options.BRAIDS`); ``bonded`` as the
+        How the braid meets the rubber (:data:`mkm.fem.options.BRAIDS`); ``bonded`` as the
         paper's figure suggests (the paper does not say), ``sliding`` the frictionless-sleeve
         limit.
 

@@ -287,7 +287,7 @@ def test_a_ctrl_c_while_importing_is_one_line_and_130():
 
 
 # the data, plotting and FE stacks may not load for a quick command; numpy only where it computes
-HEAVY = ("pandas", "scipy", "matplotlib", "sklearn", "skfem", "mkm.fem.fe.model", "dask",
+HEAVY = ("pandas", "scipy", "matplotlib", "sklearn", "skfem", "mkm.fem.fe", "dask",
          "openpyxl", "skops")
 MUSCLE = ["--D0", "35", "--t0", "2.5", "--eps", "0.05"]
 

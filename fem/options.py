@@ -1,6 +1,7 @@
-"""The FE model's discrete choices, readable without scikit-fem: mesh levels and braids.
+"""The physics models' discrete choices: the FE model's mesh levels and braids.
 
-The registry (:mod:`mkm.fem.ladder`) and every command's choices are derived from these.
+Read without scikit-fem: the registry (:mod:`mkm.fem.ladder`), and through it every command's
+choices, derive from these.
 """
 
 #: level: (elements through the wall, elements along the half length, largest/smallest axial
