@@ -25,6 +25,7 @@ from mkm.core.registry import Registry
 from mkm.fem.options import BRAIDS, MESH_LEVELS
 
 if TYPE_CHECKING:  # annotations only: the registry loads without numpy
+    from mkm.fem.calibration import Calibration
     from mkm.fem.interface import ForceModel
 
 
@@ -135,10 +136,26 @@ class Entry:
                              f"{', '.join(self.parameters) or 'none'}")
         return {k: self.parameters[k].convert(k, v) for k, v in params.items()}
 
-    def build(self, **params) -> ForceModel:
-        """The model with ``params`` (None values mean "use the default")."""
+    def build(self, calibration: Calibration | None = None, **params) -> ForceModel:
+        """The model with ``params`` (None values mean "use the default") and, for a model that
+        takes one, ``calibration`` (None: the shipped one)."""
         given = self.check_params({k: v for k, v in params.items() if v is not None})
-        return self.resolve()(**given)
+        return self.construct(given, calibration)
+
+    def construct(self, params: dict[str, Any], calibration: Calibration | None = None
+                  ) -> ForceModel:
+        """The model from checked ``params``, given ``calibration`` if it takes one."""
+        factory = self.resolve()
+        if calibration is not None and self.takes_calibration:
+            return factory(**params, calibration=calibration)
+        return factory(**params)
+
+    @property
+    def takes_calibration(self) -> bool:
+        """Whether the factory takes a ``calibration`` (a model with a calibrated default)."""
+        import inspect
+
+        return "calibration" in inspect.signature(self.resolve()).parameters
 
 
 MODELS: Registry[Entry] = Registry("model", "see `mkm models`")
@@ -169,9 +186,10 @@ def static_names() -> tuple[str, ...]:
     return MODELS.names(lambda e: e.family in STATIC_FAMILIES)
 
 
-def make_model(name: str, **params) -> ForceModel:
-    """Instantiate model ``name`` with ``params`` (None values mean "use the default")."""
-    return entry(name).build(**params)
+def make_model(name: str, calibration: Calibration | None = None, **params) -> ForceModel:
+    """Instantiate model ``name`` with ``params`` (None values mean "use the default") and
+    ``calibration`` (None: the shipped one)."""
+    return entry(name).build(calibration, **params)
 
 
 register(Entry(

@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from mkm.fem.calibration import CalibratedTheta0
+from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
 from mkm.fem.interface import Domain, ForceModel
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
@@ -245,6 +245,9 @@ class ThickWall(CalibratedTheta0, ForceModel):
         Length at rest [mm]. Recorded only: the mid-section model does not depend on the length.
     C10_MPa, C01_MPa : float, optional
         Mooney-Rivlin constants of the wall [MPa]; default Silastic S (the paper's Equation 3).
+    calibration : Calibration, optional
+        Where the default angle (and an identified rubber) comes from; default the shipped
+        ``fem/calibration.json`` (:class:`mkm.fem.calibration.Calibration`).
     """
 
     name = "thickwall"
@@ -252,8 +255,10 @@ class ThickWall(CalibratedTheta0, ForceModel):
     domain = Domain()
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
-                 C10_MPa: float | None = None, C01_MPa: float | None = None):
+                 C10_MPa: float | None = None, C01_MPa: float | None = None,
+                 calibration: Calibration | None = None):
         self.theta0_deg = theta0_deg
+        self.calibration = calibration
         self.L0_mm = L0_mm
         self.C10_MPa = C10_MPa
         self.C01_MPa = C01_MPa

@@ -35,13 +35,16 @@ from mkm.fem.ladder import (
 from mkm.surrogate import kinds
 
 if TYPE_CHECKING:  # annotations only: `mkm models` loads no model code
+    from mkm.fem.calibration import Calibration
     from mkm.fem.interface import ForceModel
 
 
 def _surrogate(kind: str | None = None, path: str | None = None,
-               accept_mismatch: bool = False, **muscle: float) -> ForceModel:
+               accept_mismatch: bool = False, calibration: Calibration | None = None,
+               **muscle: float) -> ForceModel:
     """The surrogate of ``kind`` (trained on first use) or loaded from ``path``, at the muscle
-    parameters given (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``)."""
+    parameters given (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``; the others from
+    ``calibration``)."""
     if path is not None and kind is not None:
         raise ValueError("surrogate: give kind or path, not both")
     if path is not None:
@@ -52,13 +55,15 @@ def _surrogate(kind: str | None = None, path: str | None = None,
         from mkm.surrogate.train import cached_model
 
         model = cached_model(kind or "best")
-    return model.with_parameters(**muscle) if muscle else model
+    return model.with_parameters(calibration, **muscle) if muscle or calibration else model
 
 
-def _auto(**params) -> ForceModel:
+def _auto(calibration: Calibration | None = None, **params) -> ForceModel:
+    from functools import partial
+
     from mkm.auto import AutoModel  # here: auto reads its table with pandas
 
-    return AutoModel(build=build_spec, **params)
+    return AutoModel(build=partial(build_spec, calibration=calibration), **params)
 
 
 register(Entry(
@@ -129,20 +134,21 @@ class Spec:
         merged.update({k: v for k, v in params.items() if v is not None})
         return Spec(self.name, tuple(sorted(merged.items())))
 
-    def build(self, **defaults) -> ForceModel:
-        """The predictor. ``defaults`` (a bench run's ``L0_mm``, say) apply where the predictor
-        takes that parameter and the spec does not set it."""
+    def build(self, calibration: Calibration | None = None, **defaults) -> ForceModel:
+        """The predictor, with ``calibration`` (None: the shipped one) where it takes one.
+        ``defaults`` (a bench run's ``L0_mm``, say) apply where the predictor takes that
+        parameter and the spec does not set it."""
         params = dict(self.params)
         for key, value in defaults.items():
             if key in self.entry.parameters and value is not None:
                 params.setdefault(key, value)
         given = self.entry.check_params(params, shown=self.text)
-        return self.entry.resolve()(**given)
+        return self.entry.construct(given, calibration)
 
 
-def build_spec(text: str, **defaults) -> ForceModel:
-    """The predictor a spec names: ``parse_spec(text).build(**defaults)``."""
-    return parse_spec(text).build(**defaults)
+def build_spec(text: str, calibration: Calibration | None = None, **defaults) -> ForceModel:
+    """The predictor a spec names: ``parse_spec(text).build(calibration, **defaults)``."""
+    return parse_spec(text).build(calibration, **defaults)
 
 
 def _text(value) -> str:

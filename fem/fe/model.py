@@ -36,7 +36,7 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 
-from mkm.fem.calibration import CalibratedTheta0
+from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.eq2 import BAR_TO_MPA, LOCKING_ANGLE_DEG, check_theta0
 from mkm.fem.fe.assembly import Assembler, Term, operator
 from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
@@ -600,6 +600,9 @@ class Axisym(CalibratedTheta0, ForceModel):
         inextensible at every point. ``sliding``: a frictionless sleeve, one uniform fibre
         tension, only the fibres' total length is kept; its theta0 is calibrated on its own
         (calibration key ``axisym-sliding``).
+    calibration : Calibration, optional
+        Where the default angle (and an identified rubber) comes from; default the shipped
+        ``fem/calibration.json`` (:class:`mkm.fem.calibration.Calibration`).
     """
 
     name = "axisym"
@@ -607,8 +610,10 @@ class Axisym(CalibratedTheta0, ForceModel):
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
                  mesh: str = "medium", C10_MPa: float | None = None,
-                 C01_MPa: float | None = None, braid: str = "bonded"):
+                 C01_MPa: float | None = None, braid: str = "bonded",
+                 calibration: Calibration | None = None):
         self.theta0_deg = theta0_deg
+        self.calibration = calibration
         self.L0_mm = L0_mm
         self.mesh = mesh
         self.C10_MPa = C10_MPa

@@ -76,7 +76,7 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
 
 
 def add_calibration_argument(parser) -> None:
-    """``--calibration FILE``: the theta0 calibration file for this command (see
+    """``--calibration FILE``: the theta0 calibration file for this command (read by
     :func:`with_calibration`); the shipped ``fem/calibration.json`` is left as it is."""
     parser.add_argument("--calibration", metavar="FILE",
                         help="calibration file written by `mkm fem calibrate --out FILE`: the "
@@ -85,13 +85,16 @@ def add_calibration_argument(parser) -> None:
 
 
 def with_calibration(func):
-    """Run the command ``func(args)`` with ``args.calibration`` selected (if given)."""
+    """Run the command ``func(args)`` with ``args.calibration`` read once into a
+    :class:`mkm.fem.calibration.Calibration` (None: the shipped one), which the command hands to
+    what it builds; a file that cannot be used is one line before anything runs."""
 
     def run(args):
-        from mkm.fem.calibration import use_calibration
+        from mkm.fem.calibration import Calibration
 
-        with use_calibration(getattr(args, "calibration", None)):
-            return func(args)
+        path = getattr(args, "calibration", None)
+        args.calibration = Calibration.load(path) if path is not None else None
+        return func(args)
 
     run.__name__ = func.__name__
     return run
@@ -132,7 +135,7 @@ def model_from_args(args, **overrides):
         raise ValueError(f"--model {spec.text}: {spec.name} takes no "
                          f"{', '.join(unknown)} (its parameters: "
                          f"{', '.join(spec.entry.parameters)})")
-    return spec.with_params(**flags).build()
+    return spec.with_params(**flags).build(getattr(args, "calibration", None))
 
 
 def emit_prediction(prediction, out: str | None) -> None:

@@ -128,7 +128,8 @@ def _design(args) -> int:
                         progress=not args.no_progress,
                         cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR,
                         tolerances=args.tolerance, probability=args.probability,
-                        workers=args.workers, scheduler=args.scheduler)
+                        workers=args.workers, scheduler=args.scheduler,
+                        calibration=args.calibration)
     write_design(result, Path(args.out or default_out("design")))
     summary_line("design", result.summary())
     print(result.table_text())

@@ -228,7 +228,8 @@ def _dataset(args) -> int:
     from mkm.fem.dataset import build_dataset
 
     run = build_dataset(args.grid, args.model, mesh=args.mesh, out=args.out,
-                        workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache)
+                        workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache,
+                        calibration=args.calibration)
     print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)
     return 0
 
@@ -238,7 +239,7 @@ def _convergence(args) -> int:
 
     frame, png = convergence_study(args.out, D0_mm=args.D0, t0_mm=args.t0, eps=args.eps,
                                    pressure_bar=args.pressure, theta0_deg=args.theta0,
-                                   L0_mm=args.L0)
+                                   L0_mm=args.L0, calibration=args.calibration)
     print(frame.to_string(index=False, float_format=lambda v: f"{v:.6g}"))
     print(f"wrote {png} and mesh_convergence.csv/.json", file=sys.stderr)
     return 0

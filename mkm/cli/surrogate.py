@@ -250,15 +250,14 @@ def _train(args) -> int:
     return 0
 
 
-def _load(path, accept_mismatch=False, progress=False, **parameters):
+def _load(path, calibration, accept_mismatch=False, progress=False, **parameters):
     from mkm.surrogate.io import load_model
     from mkm.surrogate.train import default_model
 
     parameters = {k: v for k, v in parameters.items() if v is not None}
-    if path == "default":
-        return default_model(progress=progress, **parameters)
-    model = load_model(path, accept_mismatch=accept_mismatch)
-    return model.with_parameters(**parameters) if parameters else model
+    model = (default_model(progress=progress) if path == "default"
+             else load_model(path, accept_mismatch=accept_mismatch))
+    return model.with_parameters(calibration, **parameters)
 
 
 def _label(path: str) -> str:
@@ -268,8 +267,9 @@ def _label(path: str) -> str:
 def _predict(args) -> int:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        model = _load(args.model, args.accept_mismatch, not args.no_progress, L0_mm=args.L0,
-                      theta0_deg=args.theta0, C10_MPa=args.C10, C01_MPa=args.C01)
+        model = _load(args.model, args.calibration, args.accept_mismatch, not args.no_progress,
+                      L0_mm=args.L0, theta0_deg=args.theta0, C10_MPa=args.C10,
+                      C01_MPa=args.C01)
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
         print(f"mkm: warning: {w.message}", file=sys.stderr)
@@ -285,8 +285,8 @@ def _test(args) -> int:
     from mkm.surrogate.train import train_surrogate
 
     paths = args.model or ([] if args.kind else ["default"])
-    models = {_label(path): _load(path, args.accept_mismatch, not args.no_progress)
-              for path in paths}
+    models = {_label(path): _load(path, args.calibration, args.accept_mismatch,
+                                  not args.no_progress) for path in paths}
     models.update({kind: train_surrogate(kind, _dataset(args), splits=0,
                                          progress=not args.no_progress)
                    for kind in args.kind or []})
@@ -320,7 +320,7 @@ def _reference(args) -> int:
     from mkm.fem.ladder import make_model
     from mkm.surrogate.testset import FE_REFERENCE, build_fe_reference
 
-    model = make_model(args.model, mesh=args.mesh, theta0_deg=args.theta0)
+    model = make_model(args.model, args.calibration, mesh=args.mesh, theta0_deg=args.theta0)
     out = FE_REFERENCE if args.update_shipped else args.out
     build_fe_reference(model, out)
     summary_line("surrogate reference", f"wrote {out}")
@@ -363,7 +363,7 @@ def _evaluate(args) -> int:
     from mkm.surrogate.offgrid import evaluate_offgrid
 
     start = time.perf_counter()
-    model = _load(args.model, args.accept_mismatch, not args.no_progress)
+    model = _load(args.model, args.calibration, args.accept_mismatch, not args.no_progress)
     points, summary = evaluate_offgrid(model, args.muscles, args.seed, args.mesh, args.workers,
                                        args.cache, progress=not args.no_progress,
                                        scheduler=args.scheduler)
