@@ -74,7 +74,7 @@ def register(subparsers) -> None:
         p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag), metavar="V|LO:HI",
                        help=f"{what}: a value or a range low:high")
     p.add_argument("--rubber", help="wall material(s), comma list: calibrated (default: the "
-                   "rubber of the calibration in effect, an identified one, else Silastic S) "
+                   "rubber of the --calibration file, an identified one, else Silastic S) "
                    "or silastic_s")
     p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
                    type=argtype(parse_number, "--max-outer-diameter"),

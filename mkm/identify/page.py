@@ -1,4 +1,4 @@
-"""The report's "identified muscle" section, shown when the calibration in effect holds one.
+"""The report's "identified muscle" section, shown when the calibration given holds one.
 
 ``mkm report RUN... --calibration DIR/calibration.json`` (a file ``mkm identify`` wrote) shows
 the parameters with their intervals and what the runs could not tell; for each run of the report
