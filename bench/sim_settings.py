@@ -59,7 +59,7 @@ class Truth:
     C01_MPa: float | None = None
 
     def check(self):
-        from mkm.fem.muscle import check_value
+        from mkm.fem.limits import check_value
 
         for f in dataclasses.fields(self):
             if getattr(self, f.name) is not None:

@@ -48,8 +48,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from mkm.core.records import file_sha256, provenance, source_version, write_atomic
+from mkm.fem.limits import LIMITS, limit_text, outside
 from mkm.fem.materials import MooneyRivlin, mooney_rivlin
-from mkm.fem.muscle import LIMITS, OPEN_ABOVE, limit_text
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
     import pandas as pd
@@ -239,7 +239,7 @@ def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFram
 def _numeric(frame: pd.DataFrame, name: str) -> pd.DataFrame:
     """``frame`` with its number columns as floats (a blank cell is NaN: the row is dropped).
 
-    Text, a value outside the muscle limits (:data:`mkm.fem.muscle.LIMITS`), a force beyond
+    Text, a value outside the muscle limits (:data:`mkm.fem.limits.LIMITS`), a force beyond
     :data:`MAX_FORCE_N` or a direction other than up/down is refused, naming the value.
     """
     import pandas as pd
@@ -247,9 +247,11 @@ def _numeric(frame: pd.DataFrame, name: str) -> pd.DataFrame:
     frame = frame.copy()
     for column in [c for c in (*REFERENCE_COLUMNS, "L0_mm") if c in frame]:
         values = pd.to_numeric(frame[column], errors="coerce")
-        low, high = LIMITS[column][:2] if column in LIMITS else (-MAX_FORCE_N, MAX_FORCE_N)
-        above = values >= high if column in OPEN_ABOVE else values > high
-        bad = (values.isna() & frame[column].notna()) | (values < low) | above
+        if column in LIMITS:
+            beyond = outside(column, values) & values.notna()
+        else:
+            beyond = values.abs() > MAX_FORCE_N
+        bad = (values.isna() & frame[column].notna()) | beyond
         if bad.any():
             expected = limit_text(column) if column in LIMITS else \
                 f"expected a force within +-{MAX_FORCE_N:g} N"
