@@ -47,14 +47,20 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from mkm.core.records import file_sha256, provenance, source_version, write_atomic
+from mkm.core.records import (
+    file_sha256,
+    package_file,
+    provenance,
+    source_version,
+    write_atomic,
+)
 from mkm.fem.limits import LIMITS, limit_text, outside
 from mkm.fem.materials import MooneyRivlin, mooney_rivlin
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
     import pandas as pd
 
-CALIBRATION_FILE = Path(__file__).with_name("calibration.json")
+CALIBRATION_FILE = package_file("mkm.fem", "calibration.json")
 THETA0_BOUNDS_DEG = (15.0, 50.0)  # practical braids are 20-30 deg; 54.7 deg is the lock angle
 TARGETS = ("slope", "force", "slope+threshold")
 REFERENCE_COLUMNS = ("pressure_bar", "D0_mm", "t0_mm", "eps", "force_N")
