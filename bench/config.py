@@ -396,11 +396,8 @@ class BenchConfig:
 
     def _check_duration(self):
         seq, st = self.sequence, self.settle
-        up = len(seq.pressures_bar)
-        n = (up + (up - 1 if seq.down_sweep else 0)) * seq.repeats  # as bench.sequence plans
-        fixed = seq.tare_s + 2 * seq.preconditioning_cycles * seq.preconditioning_hold_s
-        short = fixed + n * (st.min_dwell_s + st.hold_s)
-        long = fixed + n * (st.timeout_s + st.hold_s)
+        n = step_count(self)
+        short, long = estimate_duration_s(self)
         if n > MAX_STEPS:
             raise ValueError(f"the sequence plans {n} steps, {short / 86400:.1f} to "
                              f"{long / 86400:.1f} days: expected at most {MAX_STEPS} steps "
@@ -526,3 +523,42 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
     if backend is not None and backend != config.daq.backend:
         changes["daq"] = {"backend": backend}
     return config.replace(**changes) if changes else config
+
+
+@dataclass(frozen=True)
+class Step:
+    """One planned pressure step of the staircase."""
+
+    step: int
+    direction: str  # "up" | "down"
+    repeat: int
+    set_pressure_bar: float
+
+
+def plan_steps(config: BenchConfig) -> list[Step]:
+    """The staircase: pressures up, then (optionally) down without repeating the top; x repeats."""
+    seq = config.sequence
+    up = list(seq.pressures_bar)
+    down = up[-2::-1] if seq.down_sweep else []
+    steps = []
+    for repeat in range(seq.repeats):
+        for direction, pressures in (("up", up), ("down", down)):
+            for p in pressures:
+                steps.append(Step(len(steps), direction, repeat, p))
+    return steps
+
+
+def step_count(config: BenchConfig) -> int:
+    """``len(plan_steps(config))`` without making the steps (a configuration is checked for
+    the size of its staircase before any is made)."""
+    seq = config.sequence
+    up = len(seq.pressures_bar)
+    return (up + (up - 1 if seq.down_sweep else 0)) * seq.repeats
+
+
+def estimate_duration_s(config: BenchConfig) -> tuple[float, float]:
+    """Shortest and longest run time [s]: every step settling at min dwell, or timing out."""
+    seq, st = config.sequence, config.settle
+    fixed = seq.tare_s + 2 * seq.preconditioning_cycles * seq.preconditioning_hold_s
+    n = step_count(config)
+    return fixed + n * (st.min_dwell_s + st.hold_s), fixed + n * (st.timeout_s + st.hold_s)
