@@ -278,9 +278,12 @@ def time_figure(bins: pd.DataFrame, steps: pd.DataFrame, title: str,
 def surrogate_fe_figure(table: pd.DataFrame, title: str) -> Figure:
     """The paper's Figure 6 with our numbers: FE against surrogate for each test muscle.
 
-    ``table``: ``muscle, pressure_bar, force_fe_N, force_N, valid, err_pct`` and optionally
-    ``model`` (several surrogates: one line style each).
+    ``table``: ``muscle, pressure_bar, force_fe_N, force_N`` (or ``force_pred_N``, as
+    :mod:`mkm.surrogate.testset` writes it), ``valid``, ``err_pct`` (drawn where valid) and
+    optionally ``model`` (several surrogates: one line style each).
     """
+    table = table.rename(columns={"force_pred_N": "force_N"})
+    table = table.assign(err_pct=table["err_pct"].where(table["valid"]))
     fig = Figure(figsize=(11, 4.6), layout="constrained")
     ax_f, ax_e = fig.subplots(1, 2)
     models = list(dict.fromkeys(table["model"])) if "model" in table else [None]

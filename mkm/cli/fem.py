@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import sys
-from pathlib import Path
 
 from mkm.cli.common import (
     add_batch_arguments,
@@ -143,6 +142,7 @@ def _solve(args) -> int:
 
 
 def _calibrate(args) -> int:
+    from mkm.bench.reference import calibration_reference
     from mkm.fem.calibration import (
         CALIBRATION_FILE,
         calibration_entry,
@@ -154,7 +154,7 @@ def _calibrate(args) -> int:
     from mkm.fem.paper import CASE_I_CSV
 
     args.reference = args.reference or str(CASE_I_CSV)
-    reference, name, sha256 = _load_reference(args.reference)
+    reference, name, sha256 = calibration_reference(args.reference)
     overrides = {}
     if "L0_mm" in reference and getattr(args, "L0", None) is None:
         lengths = reference["L0_mm"].unique()
@@ -191,37 +191,6 @@ def _calibrate(args) -> int:
                          strict=True):
         print(f"{p:g},{ref:.2f},{f:.2f}")
     return 0
-
-
-def _load_reference(path):
-    """The reference table of ``--reference``, its name and the SHA-256 of the file read.
-
-    A run folder gives its settled steps: the measured mean pressure and force of each step,
-    its direction, and the muscle from run.json.
-    """
-    from mkm.core.records import file_sha256
-    from mkm.fem.calibration import check_reference, read_reference
-
-    path = Path(path)
-    if not path.is_dir():
-        sha = file_sha256(path) if path.is_file() else None
-        return read_reference(path), path.name, sha
-    import pandas as pd
-
-    from mkm.bench.storage import load_run
-
-    run = load_run(path)
-    if "steps.csv is missing" in run.problems:
-        raise ValueError(f"run {path} has no steps.csv: expected its settled steps as the "
-                         "reference")
-    steps = run.steps[run.steps["settled"]]
-    muscle = run.meta.muscle
-    frame = pd.DataFrame({"pressure_bar": steps["pressure_bar_mean"],
-                          "force_N": steps["force_N_mean"], "direction": steps["direction"],
-                          "D0_mm": muscle.D0_mm, "t0_mm": muscle.t0_mm, "eps": muscle.eps,
-                          "L0_mm": muscle.L0_mm})
-    reference = check_reference(frame, f"run {path} (settled steps of steps.csv)")
-    return reference, f"run {path.name}", file_sha256(path / "steps.csv")
 
 
 def _dataset(args) -> int:

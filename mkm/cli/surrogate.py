@@ -309,8 +309,6 @@ def _figure6(out: Path, reference) -> None:
     from mkm.html import save_figure
 
     points = pd.read_csv(out / "test_muscles_points.csv")
-    points = points.rename(columns={"force_pred_N": "force_N"})
-    points["err_pct"] = points["err_pct"].where(points["valid"])
     fe_model = read_prediction_header(reference).get("model", "FE")
     save_figure(surrogate_fe_figure(points, f"surrogates against our FE model ({fe_model}): "
                                     "the paper's Figure 6"), out / "test_muscles.png")
@@ -359,8 +357,7 @@ def _design(args) -> int:
 
 
 def _evaluate(args) -> int:
-    from mkm.core.records import write_json_atomic
-    from mkm.surrogate.offgrid import evaluate_offgrid
+    from mkm.surrogate.offgrid import evaluate_offgrid, write_offgrid
 
     start = time.perf_counter()
     model = _load(args.model, args.calibration, args.accept_mismatch, not args.no_progress)
@@ -368,9 +365,7 @@ def _evaluate(args) -> int:
                                        args.cache, progress=not args.no_progress,
                                        scheduler=args.scheduler)
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    points.to_csv(out / "offgrid_points.csv", index=False, float_format="%.6g")
-    write_json_atomic(out / "offgrid_summary.json", summary)
+    write_offgrid(points, summary, out)
     cover = (f", within 1/2 std {100 * summary['within_1std']:.0f}/"
              f"{100 * summary['within_2std']:.0f} %" if "within_1std" in summary else "")
     box = summary["outside_box"]
