@@ -234,6 +234,27 @@ class AutoModel(ForceModel):
                 {**out, "valid": valid, "converged": converged}.items()}
 
 
+def spec_of(predictor: str, table: Path | str | None = None) -> str:
+    """The spec of a study predictor (``surrogate-muscle-gp`` -> ``surrogate``); the name itself
+    if the study table does not list it."""
+    if predictor == FALLBACK:
+        return FALLBACK_SPEC
+    rows = candidates(read_model_errors(table or MODEL_ERRORS_FILE))
+    match = rows.loc[rows["predictor"] == predictor, "spec"]
+    return str(match.iloc[0]) if len(match) else predictor
+
+
+def label(predictor: str, table: Path | str | None = None) -> str:
+    """The registry's name of a study predictor (:attr:`mkm.registry.Spec.display_name`), the
+    one name every table and sentence uses for it."""
+    from mkm.registry import parse_spec
+
+    try:
+        return parse_spec(spec_of(predictor, table)).display_name
+    except ValueError:  # a predictor no registry entry has: its study name
+        return predictor
+
+
 def explain(prediction, tolerance: float | None = None) -> str:
     """One line per model used: how many points it answered, its bound and how it was bound.
 
@@ -257,5 +278,5 @@ def explain(prediction, tolerance: float | None = None) -> str:
         else:
             why = (f"the cheapest model whose error bound at these points is <= {tol:g}%: "
                    f"{np.nanmax(bound[here]):.2f}% ({source[here][0]})")
-        lines.append(f"auto: {name} for {here.sum()} of {used.size} points: {why}")
+        lines.append(f"auto: {label(name)} for {here.sum()} of {used.size} points: {why}")
     return "\n".join(lines)

@@ -66,6 +66,7 @@ from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 from mkm.uncertainty import force_band, with_band
+from mkm.verdict import AutoPick, format_seconds, verdict
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
 
@@ -80,7 +81,7 @@ class _Run:
     scored: pd.DataFrame = field(default_factory=pd.DataFrame)
     summary: list[dict] = field(default_factory=list)
     keys: list[str] = field(default_factory=list)
-    auto_choices: dict = field(default_factory=dict)  # tolerance -> (model, explanation)
+    auto_choices: dict = field(default_factory=dict)  # tolerance -> AutoPick or None
 
     @property
     def name(self) -> str:
@@ -140,7 +141,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     specs = [m if isinstance(m, Spec) else parse_spec(m) for m in models]
     out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
     out.mkdir(parents=True, exist_ok=True)
-    names = {s.text: f"{s.entry.label} [{s.text}]" for s in specs}
+    names = {s.text: s.display_name for s in specs}
     colours = model_colours(specs)
     prov: dict[str, dict] = {"software": provenance()}
     bar = progress_bar(len(run_dirs) * (len(specs) + 1) + int(surrogate_section), "report",
@@ -170,7 +171,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
              "(F_meas − F_model) / max F_meas over the run, in %; the residual is "
              "F_meas − F_model in N. A point where a model gives no valid number (invalid, out "
              "of its domain, not converged) is drawn as a cross above the axes, never as a "
-             "force, and left out of every number. Times are seconds per predicted force.</p>")
+             "force, and left out of every number. Times are per predicted force.</p>")
     body = intro + "".join(sections) + provenance_details(prov, "provenance.json")
     path = out / "report.html"
     path.write_text(html_page("McKibben muscle validation report", body), encoding="utf-8")
@@ -271,6 +272,12 @@ def _best(r: _Run) -> dict | None:
     return min(pool, key=lambda s: s["max_abs_err_pct"]) if pool else None
 
 
+def _cell(value) -> str:
+    """A table cell's text: an absent value (no step has an E_n) is the table's dash, never
+    ``None``."""
+    return "—" if value is None or (isinstance(value, float) and np.isnan(value)) else str(value)
+
+
 def _status_html(r: _Run) -> str:
     status = str(r.run.status)
     cls = "ok" if r.run.complete else "bad"
@@ -286,8 +293,10 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
     every model's largest |Err%|, RMSE and seconds per force for every run in one table, the
     model ``auto`` picks for each run, then each run's status."""
     banners = _banners(runs)
+    verdicts = "".join(f'<p class="verdict">{esc(_verdict(r, names, tolerance))}</p>'
+                       for r in runs)
     head = ("<tr><th>run</th><th>model</th><th>largest |Err%|</th><th>RMSE [N]</th>"
-            "<th>s per force</th><th>valid steps</th>"
+            "<th>time per force</th><th>valid steps</th>"
             + (f"<th>auto at {100 * tolerance:g} %</th>" if tolerance else "") + "</tr>")
     rows = []
     for r in runs:
@@ -307,22 +316,23 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
             auto = ""
             if tolerance and first:
                 auto = (f'<td rowspan="{len(ordered)}">'
-                        f"{esc(choice[0]) if choice else '—'}</td>")
+                        f"{esc(choice.name) if choice else '—'}</td>")
             rows.append(f'<tr>{run_cell}<td class="name">{name}</td><td class="num">{err}</td>'
                         f'<td class="num">{rmse}</td>'
-                        f'<td class="num">{s["seconds_per_point"]:.3g}</td>'
+                        f'<td class="num">{format_seconds(s["seconds_per_point"])}</td>'
                         f'<td class="num">{s["valid_points"]} / {s["points"]}</td>{auto}</tr>')
     status = "".join(
         f'<tr><td><a href="#run-{r.k}">run {r.k}</a></td><td>{_status_html(r)}</td>'
         f"<td>{len(r.run.steps)} / {esc(_planned_steps(r.meta))}</td>"
         f"<td>{r.meta.lost_samples}</td></tr>" for r in runs)
     keys = [k for r in runs for k in r.keys]
-    return ('<h2 id="summary">Summary</h2>' + banners
+    return ('<h2 id="summary">Summary</h2>' + verdicts + banners
             + '<div class="table"><table class="summary">'
             f"<thead>{head}</thead><tbody>{''.join(rows)}</tbody></table>"
             '<p class="caption">Every model on every run, best first (in bold: the smallest '
             "largest |Err%|, Equation 7, among the models valid at every kept step). auto: the "
-            "cheapest model whose error bound at the run's points meets the tolerance. "
+            "cheapest model whose error bound against the FE model at the run's points meets "
+            "the tolerance. "
             + provenance_links(dict.fromkeys(keys)) + "</p></div>"
             '<div class="table"><table class="summary"><thead><tr><th>run</th><th>status</th>'
             "<th>steps kept / planned</th><th>lost samples</th></tr></thead>"
@@ -398,13 +408,13 @@ def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours:
     path = save_figure(report_speed_figure(summary, names, colours), out / "speed_accuracy.png")
     table = []
     for model, g in summary.groupby("model", sort=False):
-        table.append({"model": names[model].rsplit(" [", 1)[0], "spec": model,
+        table.append({"model": names[model], "spec": model,
                       "valid points": int(g["valid_points"].sum()),
                       "of": int(g["points"].sum()),
                       "largest |Err%|": g["max_abs_err_pct"].max(),
                       "largest RMSE [N]": g["rmse_N"].max(),
                       "largest |residual| [N]": g["max_abs_residual_N"].max(),
-                      "s per force": g["seconds_per_point"].median(),
+                      "time per force": format_seconds(g["seconds_per_point"].median()),
                       "timed": "from the FE cache (the original solve)" if g["from_cache"].all()
                       else "in this report"})
     keys = dict.fromkeys(k for r in runs for k in r.keys)
@@ -416,7 +426,7 @@ def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours:
                           + provenance_links(keys))
             + table_html(pd.DataFrame(table), "Every model over all runs: the worst of its "
                          "per-run numbers, and the median time per force. "
-                         + provenance_links(keys), formats={"s per force": ".3g"})
+                         + provenance_links(keys))
             + auto)
 
 
@@ -463,13 +473,14 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
     title = (f"run {r.k}: {_plain(muscle.get('id', ''))}, eps = {r.eps_pct:.1f} %")
     fig_path = save_figure(run_figure(steps, r.scored, title, names, colours),
                            out / f"{stem}_force_error.png")
-    table = pd.DataFrame([{"model": names[s["model"]].rsplit(" [", 1)[0], "spec": s["model"],
+    table = pd.DataFrame([{"model": names[s["model"]], "spec": s["model"],
                            "valid points": s["valid_points"], "of": s["points"],
                            "largest |Err%|": s["max_abs_err_pct"], "RMSE [N]": s["rmse_N"],
                            "largest |residual| [N]": s["max_abs_residual_N"],
-                           "worst E_n": s["worst_E_n"], "at step": s["worst_step"],
+                           "worst E_n": s["worst_E_n"], "at step": _cell(s["worst_step"]),
                            "consistent": {True: "yes", False: "no"}.get(s["consistent"], "—"),
-                           "s per force": s["seconds_per_point"]} for s in r.summary])
+                           "time per force": format_seconds(s["seconds_per_point"])}
+                          for s in r.summary])
     parts += [
         figure_html(fig_path, "Left: measured force per pressure step (mean ± std; filled "
                     "circles up sweep, open squares down sweep) with each model and, where it "
@@ -480,7 +491,7 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                    "expanded with k = 2 (c: the model's newtons per bar); consistent: |E_n| ≤ 1 "
                    "at every valid step. The models have no braid friction and no creep, the "
                    "measurement has both: a model can be inconsistent by them alone. "
-                   + provenance_links(r.keys), formats={"s per force": ".3g"}),
+                   + provenance_links(r.keys)),
         _budget_section(r, provenance_links(r.keys[:1])),
         _domain_note(r.scored, _pressure_tolerance(meta), names),
         _invalid_note(r.scored, names),
@@ -607,10 +618,10 @@ def _auto_pressures(r: _Run) -> np.ndarray:
     return np.where((P > top) & (P <= top + tol), top, P)
 
 
-def _auto_choice(r: _Run, tolerance: float):
-    """``(model, explanation)`` of ``auto`` for the whole run, or None (chosen once per run:
-    the summary and the run's section both show it)."""
-    from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain
+def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
+    """What ``auto`` picks for the whole run, or None (chosen once per run: the verdict, the
+    summary and the run's section all show it)."""
+    from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain, label, spec_of
     from mkm.registry import build_spec
 
     if tolerance not in r.auto_choices:
@@ -621,9 +632,49 @@ def _auto_choice(r: _Run, tolerance: float):
                       if m.get(k) is not None}
             auto = AutoModel(tolerance=tolerance, build=build_spec, **muscle)
             chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
-            choice = str(chosen["model_used"][0]), explain(chosen, tolerance)
+            used = str(chosen["model_used"][0])
+            choice = AutoPick(spec_of(used), label(used),
+                              float(np.nanmax(chosen["error_bound_pct"])),
+                              explain(chosen, tolerance))
         r.auto_choices[tolerance] = choice
     return r.auto_choices[tolerance]
+
+
+def _same_model(a: str, b: str) -> bool:
+    """Whether two specs build the same model (``eq2`` and ``eq2:diameter=inner`` do): same
+    entry and same parameters once built (the closed forms and the FE model build in
+    microseconds; a surrogate spec is compared by its text)."""
+    if a == b:
+        return True
+    try:
+        sa, sb = parse_spec(a), parse_spec(b)
+        if sa.name != sb.name or sa.name in ("surrogate", "auto"):
+            return False
+        ma, mb = sa.build(), sb.build()
+    except ValueError:
+        return False
+    return ma.params() == mb.params()
+
+
+def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
+    """The run's verdict sentence (:func:`mkm.verdict.verdict`) with auto's pick and the
+    measurement's distance from the report's FE model, if it has one."""
+    from mkm.verdict import recommend
+
+    label = f"Run {r.k} ({r.name}, eps {r.eps_pct:.1f} %{', SIMULATED' if _simulated(r) else ''})"
+    choice = _auto_choice(r, tolerance) if tolerance and r.summary else None
+    best, _ = recommend(r.summary, tolerance)
+    same = bool(choice and best and _same_model(choice.spec, best["model"]))
+    by_name = {names[s.text]: s for s in r.specs}
+    if choice is not None and choice.name not in by_name:  # auto's pick is a report model
+        match = next((s for s in r.specs if _same_model(choice.spec, s.text)), None)
+        if match is not None:
+            choice = AutoPick(choice.spec, names[match.text], choice.bound_pct,
+                              choice.explanation)
+    fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
+          if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
+    return verdict(label, r.summary, names, tolerance, choice, same,
+                   fe[0] if fe else None, f"mkm identify {r.run.path}")
 
 
 def _auto_paragraph(r: _Run, tolerance: float) -> str:
@@ -632,7 +683,7 @@ def _auto_paragraph(r: _Run, tolerance: float) -> str:
     choice = _auto_choice(r, tolerance)
     if choice is None:
         return ""
-    lines = "<br>".join(esc(line) for line in choice[1].splitlines())
+    lines = "<br>".join(esc(line) for line in choice.explanation.splitlines())
     return (f"<p><b>Model choice for run {r.k}</b> (<code>--model auto --tolerance "
             f"{100 * tolerance:g}%</code>, one model for the whole run, each candidate's error "
             f"bound at this run's points and muscle):<br>{lines}.</p>")

@@ -127,15 +127,29 @@ def normalised_error(rows: pd.DataFrame, steps: pd.DataFrame) -> pd.DataFrame:
 def summarise_run(scored: pd.DataFrame, seconds: float, cached: bool) -> dict:
     """Numbers per model and run: points, valid points, largest |Err%|, RMSE [N] and largest
     |residual| [N] over the valid points, seconds per predicted force, from the cache (1/0),
-    and the consistency verdict (:func:`consistency`)."""
+    the model's band (:func:`band_pct`) and the consistency verdict (:func:`consistency`)."""
     return {
         "model": scored["model"].iloc[0], "points": len(scored),
         **error_summary(scored["force_meas_N"], scored["force_N"], scored["valid"],
                         scored["err_pct"]),
         "seconds_per_point": seconds / max(len(scored), 1),
         "from_cache": int(cached),
+        "band_pct": band_pct(scored),
         **consistency(scored),
     }
+
+
+def band_pct(scored: pd.DataFrame) -> float:
+    """The model's widest ± 2 u band (``force_u_N``, :mod:`mkm.uncertainty`) over its valid
+    steps, in % of the run's largest measured force (Equation 7's scale, so it reads beside
+    |Err%|); NaN for a prediction without a band."""
+    if "force_u_N" not in scored:
+        return np.nan
+    u = scored["force_u_N"].to_numpy(float)[scored["valid"].to_numpy(bool)]
+    scale = float(np.nanmax(scored["force_meas_N"].to_numpy(float)))
+    if not np.isfinite(u).any() or not scale > 0:
+        return np.nan
+    return float(100.0 * 2.0 * np.nanmax(u) / scale)
 
 
 def consistency(scored: pd.DataFrame) -> dict:
