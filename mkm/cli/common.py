@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import io
 import os
+import re
 import sys
 
 from mkm.core.ranges import parse_fraction, parse_number, parse_pressures
@@ -23,6 +24,37 @@ def has_display() -> bool:
     if sys.platform in ("win32", "darwin"):
         return True
     return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+
+
+def command_name(args) -> str:
+    """``mkm <command>`` of the parsed ``args`` (``mkm fem solve``): the prefix of every line
+    the command prints on stderr (set by the parser, :func:`remember_command`)."""
+    return getattr(args, "_mkm_command", None) or "mkm"
+
+
+def remember_command(namespace, prog: str) -> None:
+    """Record the deepest (sub)command's name in ``namespace``: called by each parser after it
+    parsed, the innermost first, so the innermost name stays."""
+    if not getattr(namespace, "_mkm_command", None):
+        namespace._mkm_command = prog
+
+
+def error_line(prog: str, message) -> str:
+    """``mkm <command>: error: <message>``, the one form of every error; argparse's
+    ``argument --eps: --eps 12.2: ...`` is said once: ``--eps 12.2: ...``."""
+    message = str(message)
+    found = re.match(r"argument (\S+?)(?:/\S+)?: (.*)", message, re.DOTALL)
+    if found and found.group(2).startswith(found.group(1)):
+        message = found.group(2)
+    return f"{prog}: error: {message}"
+
+
+def say(args, kind: str, message) -> None:
+    """One line on stderr: ``mkm <command>: <kind>: <message>`` (``error``, ``warning``,
+    ``note``)."""
+    line = (error_line(command_name(args), message) if kind == "error"
+            else f"{command_name(args)}: {kind}: {message}")
+    print(line, file=sys.stderr)
 
 
 def argtype(parse, *args):

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import sys
 import time
 import warnings
 from pathlib import Path
@@ -13,6 +12,7 @@ from mkm.cli.common import (
     add_geometry_arguments,
     argtype,
     emit_prediction,
+    say,
     with_calibration,
 )
 from mkm.core.ranges import parse_number
@@ -271,7 +271,7 @@ def _predict(args) -> int:
                       theta0_deg=args.theta0, C10_MPa=args.C10, C01_MPa=args.C01)
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
-        print(f"mkm: warning: {w.message}", file=sys.stderr)
+        say(args, "warning", w.message)
     emit_prediction(prediction, args.out)
     summary_line("surrogate predict", f"{prediction.force_N.size} points of {model.name} in "
                  f"{1e3 * prediction.seconds:.2f} ms, {int((~prediction.valid).sum())} flagged "
