@@ -244,22 +244,13 @@ def spec_of(predictor: str, table: Path | str | None = None) -> str:
     return str(match.iloc[0]) if len(match) else predictor
 
 
-def label(predictor: str, table: Path | str | None = None) -> str:
-    """The registry's name of a study predictor (:attr:`mkm.registry.Spec.display_name`), the
-    one name every table and sentence uses for it."""
-    from mkm.registry import parse_spec
-
-    try:
-        return parse_spec(spec_of(predictor, table)).display_name
-    except ValueError:  # a predictor no registry entry has: its study name
-        return predictor
-
-
-def explain(prediction, tolerance: float | None = None) -> str:
+def explain(prediction, tolerance: float | None = None,
+            label: Callable[[str], str] = str) -> str:
     """One line per model used: how many points it answered, its bound and how it was bound.
 
     ``prediction``: a :class:`Prediction` of :class:`AutoModel`, or the dict of
-    :meth:`AutoModel.choose` with ``tolerance`` given.
+    :meth:`AutoModel.choose` with ``tolerance`` given; ``label`` names a study predictor
+    (:func:`mkm.verdict.model_label`: the registry's name).
     """
     if isinstance(prediction, dict):
         extras = prediction

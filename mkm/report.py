@@ -66,7 +66,7 @@ from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 from mkm.uncertainty import force_band, with_band
-from mkm.verdict import AutoPick, format_seconds, verdict
+from mkm.verdict import AutoPick, format_seconds, model_label, verdict
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
 
@@ -621,7 +621,7 @@ def _auto_pressures(r: _Run) -> np.ndarray:
 def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
     """What ``auto`` picks for the whole run, or None (chosen once per run: the verdict, the
     summary and the run's section all show it)."""
-    from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain, label, spec_of
+    from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain, spec_of
     from mkm.registry import build_spec
 
     if tolerance not in r.auto_choices:
@@ -633,9 +633,9 @@ def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
             auto = AutoModel(tolerance=tolerance, build=build_spec, **muscle)
             chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
             used = str(chosen["model_used"][0])
-            choice = AutoPick(spec_of(used), label(used),
+            choice = AutoPick(spec_of(used), model_label(used),
                               float(np.nanmax(chosen["error_bound_pct"])),
-                              explain(chosen, tolerance))
+                              explain(chosen, tolerance, model_label))
         r.auto_choices[tolerance] = choice
     return r.auto_choices[tolerance]
 

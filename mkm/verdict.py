@@ -39,6 +39,18 @@ class AutoPick:
     explanation: str
 
 
+def model_label(predictor: str) -> str:
+    """The registry's name (:attr:`mkm.registry.Spec.display_name`) of a study predictor
+    (``surrogate-muscle-gp`` -> ``Surrogate``): the one name every table and sentence uses."""
+    from mkm.auto import spec_of
+    from mkm.registry import parse_spec
+
+    try:
+        return parse_spec(spec_of(predictor)).display_name
+    except ValueError:  # a predictor no registry entry has: its study name
+        return predictor
+
+
 def _fully_valid(row: dict) -> bool:
     return row["points"] > 0 and row["valid_points"] == row["points"]
 

@@ -136,8 +136,9 @@ def _solve(args) -> int:
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     if model.name == "auto":
         from mkm.auto import explain
+        from mkm.verdict import model_label
 
-        print(explain(prediction), file=sys.stderr)
+        print(explain(prediction, label=model_label), file=sys.stderr)
     emit_prediction(prediction, args.out)
     return 0
 
