@@ -69,6 +69,38 @@ def _styles(models) -> dict[str, tuple]:
                 MODEL_MARKERS[i % len(MODEL_MARKERS)]) for i, m in enumerate(models)}
 
 
+#: Two models whose forces differ by less than this fraction of the largest force at every point
+#: are drawn as two lines and named as identical in the legend (one stripe is not two models).
+IDENTICAL_FRACTION = 0.001
+
+
+def _identical(predictions: pd.DataFrame, names: dict[str, str]) -> dict[str, str]:
+    """``model -> " (identical to <name> within 0.1 %)"`` for each model whose forces match an
+    earlier model's at every point where both are valid (and at least one is)."""
+    notes: dict[str, str] = {}
+    curves = {m: rows.drop_duplicates("pressure_bar").set_index("pressure_bar")
+              for m, rows in predictions.groupby("model", sort=False)}
+    scale = float(np.nanmax(np.abs(predictions["force_N"].where(predictions["valid"]))
+                            .to_numpy(float), initial=0.0))
+    if not scale > 0:
+        return notes
+    models = list(curves)
+    for i, model in enumerate(models):
+        for earlier in models[:i]:
+            a, b = curves[model], curves[earlier]
+            both = a.index.intersection(b.index)
+            ok = a.loc[both, "valid"].to_numpy(bool) & b.loc[both, "valid"].to_numpy(bool)
+            if not ok.any():
+                continue
+            gap = np.abs(a.loc[both, "force_N"].to_numpy(float)[ok]
+                         - b.loc[both, "force_N"].to_numpy(float)[ok])
+            if np.all(gap <= IDENTICAL_FRACTION * scale):
+                notes[model] = (f" (identical to {names[earlier]} within "
+                                f"{100 * IDENTICAL_FRACTION:g} %)")
+                break
+    return notes
+
+
 def _invalid_handle() -> Line2D:
     return Line2D([], [], color="0.3", **INVALID_STYLE)
 
@@ -123,11 +155,13 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
     any_invalid, any_band = False, False
     widths = _widths(dict.fromkeys(predictions["model"]))
     styles = _styles(dict.fromkeys(predictions["model"]))
+    identical = _identical(predictions, names)
     for model, rows in predictions.groupby("model", sort=False):
         c = colours[model]
         linestyle, marker = styles[model]
-        any_invalid |= _model_curve(ax_f, rows, c, names[model], linestyle=linestyle,
-                                    linewidth=widths[model], marker=marker)
+        any_invalid |= _model_curve(ax_f, rows, c, names[model] + identical.get(model, ""),
+                                    linestyle=linestyle, linewidth=widths[model],
+                                    marker=marker)
         any_band |= any(c in rows and rows[c].notna().any()
                         for c in ("force_std_N", "force_u_N"))
         for direction, style, face in (("up", "-", c), ("down", "--", "white")):
@@ -148,14 +182,20 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
     if any_invalid:
         handles.append(_invalid_handle())
         labels.append(INVALID_LABEL)
-    ax_f.legend(handles, labels, fontsize=7, loc="upper left")
     ax_e.set_title("Err% (Equation 7)", pad=14)
     ax_r.set_title("residual in newtons", pad=14)
     ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_meas − F_model) / max F_meas [%]")
     ax_r.set(xlabel="pressure P [bar]", ylabel="residual F_meas − F_model [N]")
-    ax_e.legend([Line2D([], [], color="0.3", marker="o", linestyle="-"),
-                 Line2D([], [], color="0.3", marker="s", markerfacecolor="white",
-                        linestyle="--")], ["up sweep", "down sweep"], fontsize=8, loc="best")
+    # the sweeps' styles of the Err% and residual panels: only the sweeps the run has
+    drawn = set(predictions["direction"])
+    for direction, handle in (("up", Line2D([], [], color="0.3", marker="o", linestyle="-")),
+                              ("down", Line2D([], [], color="0.3", marker="s",
+                                              markerfacecolor="white", linestyle="--"))):
+        if direction in drawn:
+            handles.append(handle)
+            labels.append(f"Err% and residual: {direction} sweep")
+    # below the panels, never over a point
+    fig.legend(handles, labels, fontsize=8, loc="outside lower center", ncol=3)
     for ax in (ax_f, ax_e, ax_r):
         ax.grid(True, alpha=0.3)
         ax.set_xlim(left=0.0)
@@ -200,7 +240,7 @@ def overlay_figure(runs: list[tuple[str, pd.DataFrame, pd.DataFrame]], title: st
     if any_invalid:
         handles.append(_invalid_handle())
         labels.append(INVALID_LABEL)
-    ax_f.legend(handles, labels, fontsize=7.5, loc="upper left")
+    fig.legend(handles, labels, fontsize=8, loc="outside lower center", ncol=3)
     ax_f.set_title("measured and modelled force", pad=14)  # room for the invalid strip
     ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]")
     ax_f.set_ylim(bottom=min(0.0, ax_f.get_ylim()[0]))
@@ -302,11 +342,12 @@ def surrogate_fe_figure(table: pd.DataFrame, title: str) -> Figure:
             _mark_invalid(ax_f, one.loc[~one["valid"], "pressure_bar"], c)
     ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]",
              title="FE (dots) and surrogate (lines)")
-    ax_f.legend(fontsize=7, ncol=2, loc="upper left")
     ax_e.axhline(0.0, color="0.6", linewidth=0.8)
     ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_FE − F_sur) / max F_FE [%]",
              title="error against the FE model (Equation 7)")
-    ax_e.legend(fontsize=8)
+    # one colour per muscle in both panels: one legend, below them, never over a point
+    fig.legend(*ax_f.get_legend_handles_labels(), fontsize=8, ncol=4,
+               loc="outside lower center")
     for ax in (ax_f, ax_e):
         ax.grid(True, alpha=0.3)
         ax.set_xlim(left=0.0)

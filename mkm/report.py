@@ -482,10 +482,13 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                            "time per force": format_seconds(s["seconds_per_point"])}
                           for s in r.summary])
     parts += [
-        figure_html(fig_path, "Left: measured force per pressure step (mean ± std; filled "
-                    "circles up sweep, open squares down sweep) with each model and, where it "
-                    "has one, its ± 2 std band. Middle: Err% (Equation 7). Right: residual in "
-                    "N (solid up, dashed down). " + provenance_links(r.keys)),
+        figure_html(fig_path, "Left: measured force per pressure step (mean ± U, k = 2; "
+                    + ("filled circles up sweep, open squares down sweep"
+                       if (steps["direction"] == "down").any() else "the up sweep only")
+                    + ") with each model and, where it has one, its ± 2 u band. Middle: Err% "
+                    "(Equation 7). Right: residual in N"
+                    + (" (solid up, dashed down). " if (steps["direction"] == "down").any()
+                       else ". ") + provenance_links(r.keys)),
         table_html(table, f"Per model (files: {stem}_errors.csv, summary.csv). E_n = "
                    "(F_meas − F_model) / √(U_meas² + (c U_p)² + U_model²) per step, every U "
                    "expanded with k = 2 (c: the model's newtons per bar); consistent: |E_n| ≤ 1 "
