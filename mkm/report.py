@@ -194,8 +194,10 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     L0_mm = float(muscle.get("L0_mm", L0_MM))
     for spec in r.specs:
         if (spec, L0_mm) not in models:  # a surrogate loads in about a second: once is enough
-            _announce_training(spec, bar)
+            training = _announce_training(spec, bar)
             models[spec, L0_mm] = spec.build(L0_mm=L0_mm)
+            if training:  # its own estimate was given: the tasks' time left leaves it out
+                bar.unpause()
         model = models[spec, L0_mm]
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
         pred = _with_band(pred, model, spec, L0_mm, muscle, meta, cache_dir)
@@ -232,18 +234,21 @@ def _with_band(pred, model, spec: Spec, L0_mm: float, muscle: dict, meta, cache_
     return with_band(pred, band)
 
 
-def _announce_training(spec: Spec, bar) -> None:
-    """Name the one long step of a first report before it starts: training the surrogate."""
-    if spec.name != "surrogate" or dict(spec.params).get("path") or getattr(bar, "disable",
-                                                                            False):
-        return
-    from mkm.surrogate.train import is_cached
+def _announce_training(spec: Spec, bar) -> bool:
+    """Name the one long step of a first report before it starts, training the surrogate, with
+    this machine's last time for it (:mod:`mkm.core.durations`); True if it trains."""
+    if spec.name != "surrogate" or dict(spec.params).get("path"):
+        return False
+    from mkm.core.durations import estimate
+    from mkm.surrogate.train import is_cached, training_task
 
     kind = str(dict(spec.params).get("kind", "best"))
-    if not is_cached(kind):
-        phase("report", f"training the {kind} surrogate on first use (GP fits over the FE "
-                        "design: about half a minute on two cores; cached for every later "
-                        "command)")
+    if is_cached(kind):
+        return False
+    phase("report", f"training the {kind} surrogate on first use, "
+                    f"{estimate(training_task(kind))}; cached for every later command",
+          not getattr(bar, "disable", False))
+    return True
 
 
 def _pressure_tolerance(meta) -> float:

@@ -86,9 +86,12 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started):
     source = fe
     if search == "surrogate":
         if surrogate is None:
+            from mkm.core.durations import estimate
             from mkm.surrogate import default_model
+            from mkm.surrogate.train import is_cached, training_task
 
-            notify("loading the surrogate (trained on first use: minutes)")
+            notify("loading the surrogate" if is_cached("best") else
+                   f"training the surrogate on first use, {estimate(training_task('best'))}")
             surrogate = default_model()
         source = SurrogateStatic(surrogate, L0_mm)
         outside = source.outside(runs)

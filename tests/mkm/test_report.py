@@ -381,7 +381,14 @@ def test_a_first_report_names_the_surrogate_training_before_it_starts(runs, tmp_
     build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r",
                  cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
     err = capsys.readouterr().err
-    assert "mkm report: training the physics surrogate on first use" in err
+    assert "mkm report: training the physics surrogate on first use, the first time on this " \
+           "machine: no earlier time to estimate from" in err
+    # the next promise is this machine's own time
+    from mkm.core.durations import estimate, expected_seconds
+    from mkm.surrogate.train import training_task
+
+    assert expected_seconds(training_task("physics")) > 0
+    assert estimate(training_task("physics")).endswith("(this machine, last time)")
     build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r2",
                  cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
     assert "training" not in capsys.readouterr().err  # cached now: nothing to announce
