@@ -496,6 +496,12 @@ def _backend_choice() -> str:
 _BACKEND_CHOICE = _backend_choice()
 
 
+def example_config():
+    """The packaged example configuration (the paper's prototype on the simulated bench), the
+    file to copy and edit: ``mkm check --example > my_bench.toml`` writes it."""
+    return resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG)
+
+
 def load_config(path: str | Path | None = None, eps: float | None = None,
                 pressures_bar=None, backend: str | None = None) -> BenchConfig:
     """The configuration in ``path`` (the packaged default when None).
@@ -505,8 +511,8 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
     --backend`` do; the result is validated again.
     """
     if path is None:
-        text = resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG).read_text("utf-8")
-        config = parse_config(text, f"the packaged example {DEFAULT_CONFIG}")
+        example = example_config()
+        config = parse_config(example.read_text("utf-8"), f"the packaged example {example}")
     else:
         text, data = read_toml_file(Path(path), "config ")
         config = config_from_tables(data, text, str(path))

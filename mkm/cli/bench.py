@@ -45,7 +45,8 @@ def _add_device_arguments(parser, clock: bool = True) -> None:
     from mkm.bench.backends import BACKENDS
 
     parser.add_argument("--config", help="bench TOML file (default: the packaged example "
-                        "paper_prototype.toml, the paper's prototype on the simulated bench)")
+                        "paper_prototype.toml, the paper's prototype on the simulated bench; "
+                        "`mkm check --example > my_bench.toml` writes it for editing)")
     parser.add_argument("--backend", choices=tuple(BACKENDS), default=None,
                         help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.values())
                         + " (default: the config's [daq] backend)")
@@ -115,8 +116,12 @@ def register(subparsers) -> None:
         description="Dry run: validate the config against the USB-6001 (channels, terminal "
         "configuration, rates, ranges), open the device, print the limits, the planned steps "
         "and the expected duration; warns past the braid lock; nothing is pressurised.",
-        epilog="example: mkm check --backend ni --config my_bench.toml")
+        epilog="example: mkm check --backend ni --config my_bench.toml; a config to edit: "
+        "mkm check --example > my_bench.toml")
     _add_device_arguments(check, clock=False)
+    check.add_argument("--example", action="store_true",
+                       help="print the packaged example configuration, to edit: "
+                       "mkm check --example > my_bench.toml (its path on stderr)")
     check.add_argument("--eps", type=argtype(parse_fraction), help="shortening ratio override")
     check.add_argument("--pressures", type=argtype(parse_pressures), help="pressures override")
     check.set_defaults(func=_check)
@@ -235,6 +240,14 @@ def _check(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import check
 
+    if args.example:
+        from mkm.bench.config import example_config
+
+        example = example_config()
+        sys.stdout.write(example.read_text("utf-8"))
+        say(args, "note", f"the packaged example {example}: save it (> my_bench.toml) and set "
+            "[daq] device, the load cell's sensitivity, the regulator and the limits")
+        return 0
     config = _config(args, eps=args.eps, pressures_bar=args.pressures)
     try:
         text, warnings = check(config)

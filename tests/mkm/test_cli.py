@@ -2,6 +2,7 @@
 
 import io
 import json
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -328,3 +329,40 @@ def test_a_trained_surrogate_answers_with_numpy_alone():
     cached_model("best")
     loaded = imported_by(["fem", "solve", "--model", "surrogate", *MUSCLE])
     assert loaded == ["numpy"], f"mkm fem solve --model surrogate imported {loaded}"
+
+
+def _readme_paths(prefix: str) -> set[str]:
+    readme = (Path(__file__).parents[2] / "README.md").read_text(encoding="utf-8")
+    return set(re.findall(rf"(?<![\w/]){re.escape(prefix)}[^\s`\"')]+", readme))
+
+
+def test_readme_run_folders_are_named_as_acquire_names_them(mkm_run, tmp_path):
+    """The README's run folders have the names a real `acquire` prints (time-stamped, the
+    muscle's id), and the shipped runs it names exist: its examples run as written."""
+    code, out, _ = mkm_run(["acquire", "--backend", "sim", "--clock", "virtual", "--pressures",
+                            "0.5", "--no-progress", "--out", str(tmp_path)])
+    assert code == 0
+    printed = Path(out.strip().splitlines()[-1]).name
+    stamp = r"\d{8}T\d{6}Z"
+    assert re.fullmatch(stamp + r"_paper-prototype-SIMULATED", printed), printed
+    # the README's commands drive the real bench (--backend ni): no -SIMULATED suffix
+    pattern = re.compile(stamp + re.escape(printed[16:].removesuffix("-SIMULATED")))
+    named = _readme_paths("mkm-out/runs/")
+    assert named, "the README names no run folder"
+    for path in named:
+        assert pattern.fullmatch(Path(path).name), f"README names {path}: acquire never does"
+    for path in _readme_paths("data/experimental/"):
+        assert (Path(__file__).parents[2] / path / "run.json").is_file(), path
+
+
+def test_check_writes_the_packaged_example_for_editing(mkm_run, tmp_path):
+    code, out, err = mkm_run(["check", "--example"])
+    assert code == 0 and out.startswith("# The paper's bench prototype")
+    from mkm.bench.config import example_config, load_config
+
+    assert f"mkm check: note: the packaged example {example_config()}" in err
+    edited = tmp_path / "my_bench.toml"
+    edited.write_text(out, encoding="utf-8")
+    assert load_config(edited).muscle == load_config().muscle  # the same bench, now editable
+    code, out, _ = mkm_run(["check"])
+    assert code == 0 and f"the packaged example {example_config()}" in out  # its path, named
