@@ -2,6 +2,9 @@
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
+# setuptools' editable install prints an informational banner (a UserWarning) about folders
+# named as the package; here the folder is the package: install quietly
+PIP_INSTALL := PYTHONWARNINGS=ignore::UserWarning $(BIN)/python -m pip install --quiet
 
 .PHONY: demo test test-fast bench docs bench-docs clean
 
@@ -10,15 +13,15 @@ $(BIN)/python:
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
 $(VENV)/.installed: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e .
+	$(PIP_INSTALL) -e .
 	touch $@
 
 $(VENV)/.installed-docs: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e ".[docs]"
+	$(PIP_INSTALL) -e ".[docs]"
 	touch $@ $(VENV)/.installed
 
 $(VENV)/.installed-test: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e ".[test]"
+	$(PIP_INSTALL) -e ".[test]"
 	touch $@ $(VENV)/.installed
 
 # The paper's two tests (eps 0 and 12.2 %) on the simulated bench (virtual clock: seconds) and
@@ -39,7 +42,7 @@ test-fast: $(VENV)/.installed-test
 	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q -m "not slow" -n 2
 
 bench: $(VENV)/.installed-test
-	$(BIN)/python -m pip install --quiet -e ".[bench]"
+	$(PIP_INSTALL) -e ".[bench]"
 	for f in benchmarks/bench_*.py; do $(BIN)/python $$f || exit 1; done
 
 # The documentation site under docs/_build/html: docs/generate.py writes the API pages and the
@@ -50,7 +53,7 @@ docs: $(VENV)/.installed-docs
 
 # Rerun the benchmarks whose tables the documentation shows (docs/measured/; minutes).
 bench-docs: $(VENV)/.installed-test
-	$(BIN)/python -m pip install --quiet -e ".[bench]"
+	$(PIP_INSTALL) -e ".[bench]"
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python docs/generate.py --run-benchmarks
 
 clean:

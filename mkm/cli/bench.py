@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sys
 
-from mkm.cli.common import argtype, has_display, say
+from mkm.cli.common import add_progress_argument, argtype, has_display, say, shared_help
 from mkm.core.ranges import parse_fraction, parse_number, parse_pressures
 from mkm.paths import default_out
 
@@ -71,15 +71,13 @@ def register(subparsers) -> None:
         epilog="example: mkm acquire --backend sim --eps 12.2% --out mkm-out/runs")
     _add_device_arguments(acquire)
     acquire.add_argument("--eps", type=argtype(parse_fraction),
-                         help="shortening ratio, fraction or percent (default: from the config)")
+                         help=shared_help("--eps", "default: the config's"))
     acquire.add_argument("--pressures", type=argtype(parse_pressures),
-                         help="start:stop:step in bar or a comma list (default: from the config)")
+                         help=shared_help("--pressures", "default: the config's"))
     acquire.add_argument("--out", default=str(default_out("runs")),
                          help="folder that receives the run folder (default %(default)s)")
     acquire.add_argument("--plot", action="store_true", help="live plot in a separate window")
-    acquire.add_argument("--no-progress", action="store_true",
-                         help="no progress (default: a bar on a terminal, else a status line "
-                         "every 10 s)")
+    add_progress_argument(acquire)
     acquire.add_argument("--allow-past-lock", action="store_true",
                          help="record even with eps past the braid lock (refused otherwise)")
     acquire.set_defaults(func=_acquire)
@@ -122,8 +120,10 @@ def register(subparsers) -> None:
     check.add_argument("--example", action="store_true",
                        help="print the packaged example configuration, to edit: "
                        "mkm check --example > my_bench.toml (its path on stderr)")
-    check.add_argument("--eps", type=argtype(parse_fraction), help="shortening ratio override")
-    check.add_argument("--pressures", type=argtype(parse_pressures), help="pressures override")
+    check.add_argument("--eps", type=argtype(parse_fraction),
+                       help=shared_help("--eps", "default: the config's"))
+    check.add_argument("--pressures", type=argtype(parse_pressures),
+                       help=shared_help("--pressures", "default: the config's"))
     check.set_defaults(func=_check)
 
     vent = subparsers.add_parser(

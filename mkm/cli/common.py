@@ -70,6 +70,32 @@ def argtype(parse, *args):
     return convert
 
 
+#: One description per option that several commands take, so ``--help`` says the same thing
+#: everywhere; a command adds only its default (``shared_help("--eps", "default: ...")``).
+SHARED_HELP = {
+    "--no-progress": "no progress on stderr: neither the bar (on a terminal) nor the status "
+                     "lines (in a log or a pipe); the summary line and the result's path stay",
+    "--eps": "shortening ratio, a fraction (0.05) or a percentage (5%%)",
+    "--pressures": "pressures in bar: start:stop:step (stop included) or a comma list",
+    "--D0": "inner tube diameter [mm]",
+    "--t0": "wall thickness [mm]",
+    "--L0": "muscle length at rest [mm]",
+    "--theta0": "braid angle at rest [deg]",
+}
+
+
+def shared_help(option: str, extra: str = "") -> str:
+    """The one description of ``option`` (:data:`SHARED_HELP`), with ``extra`` (a command's
+    default) in brackets."""
+    return SHARED_HELP[option] + (f" ({extra})" if extra else "")
+
+
+def add_progress_argument(parser) -> None:
+    """``--no-progress``, described once for every command."""
+    parser.add_argument("--no-progress", action="store_true",
+                        help=shared_help("--no-progress"))
+
+
 def add_batch_arguments(parser) -> None:
     """``--workers N`` / ``--scheduler ADDRESS``: where the command's FE batch runs
     (:class:`mkm.fem.batch.Runner`)."""
@@ -87,11 +113,11 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
                         "default %(default)s")
     if theta0:
         parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
-                            help="braid angle at rest [deg] (default: calibrated)")
+                            help=shared_help("--theta0", "default: calibrated"))
     parser.add_argument("--diameter", choices=("inner", "braid"),
                         help="eq2 only: diameter convention (default inner, as the paper)")
     parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
-                        help="muscle length at rest [mm] (default 282)")
+                        help=shared_help("--L0", "default 282"))
     parser.add_argument("--mesh", choices=("coarse", "medium", "fine"),
                         help="axisym only: FE mesh level (default medium)")
     parser.add_argument("--braid", choices=("bonded", "sliding"),
@@ -127,20 +153,20 @@ def with_calibration(func):
 def add_muscle_arguments(parser, length: bool = False) -> None:
     """``--D0``, ``--t0``, ``--eps`` (and ``--L0`` with ``length``), all required."""
     parser.add_argument("--D0", required=True, type=argtype(parse_number, "--D0"),
-                        help="inner tube diameter [mm]")
+                        help=shared_help("--D0"))
     parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0"),
-                        help="wall thickness [mm]")
+                        help=shared_help("--t0"))
     if length:
         parser.add_argument("--L0", required=True, type=argtype(parse_number, "--L0"),
-                            help="length at rest [mm]")
+                            help=shared_help("--L0"))
     parser.add_argument("--eps", required=True, type=argtype(parse_fraction),
-                        help="shortening ratio, a fraction (0.05) or a percentage (5%%)")
+                        help=shared_help("--eps"))
 
 
 def add_geometry_arguments(parser) -> None:
     add_muscle_arguments(parser)
     parser.add_argument("--pressures", default="0:2.5:0.25", type=argtype(parse_pressures),
-                        help="start:stop:step in bar (stop included) or a comma list")
+                        help=shared_help("--pressures", "default 0:2.5:0.25"))
 
 
 def model_from_args(args, **overrides):

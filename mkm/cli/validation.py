@@ -5,7 +5,12 @@ from __future__ import annotations
 import argparse
 import time
 
-from mkm.cli.common import add_batch_arguments, add_calibration_argument, with_calibration
+from mkm.cli.common import (
+    add_batch_arguments,
+    add_calibration_argument,
+    add_progress_argument,
+    with_calibration,
+)
 from mkm.core.ranges import parse_fraction
 
 
@@ -68,8 +73,7 @@ def _cache_arguments(parser) -> None:
 
 
 def _progress_argument(parser) -> None:
-    parser.add_argument("--no-progress", action="store_true",
-                        help="no progress bar on stderr (also off when stderr is not a terminal)")
+    add_progress_argument(parser)
 
 
 def _kinds(text):

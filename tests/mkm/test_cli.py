@@ -366,3 +366,32 @@ def test_check_writes_the_packaged_example_for_editing(mkm_run, tmp_path):
     assert load_config(edited).muscle == load_config().muscle  # the same bench, now editable
     code, out, _ = mkm_run(["check"])
     assert code == 0 and f"the packaged example {example_config()}" in out  # its path, named
+
+
+def _options(parser, name=()):
+    """``(command, option, help)`` of every option of every subcommand."""
+    import argparse
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub_name, sub in action.choices.items():
+                yield from _options(sub, (*name, sub_name))
+        else:
+            for option in action.option_strings:
+                yield " ".join(name), option, action.help or ""
+
+
+def test_an_option_several_commands_take_is_described_once():
+    """--no-progress says the same thing everywhere (and what it really does: no bar, no
+    status lines); --eps, --pressures and the muscle's dimensions start with one description,
+    a command adds only its default."""
+    from mkm.cli import build_parser
+    from mkm.cli.common import SHARED_HELP
+
+    seen = {}
+    for command, option, text in _options(build_parser()):
+        if option in SHARED_HELP:
+            seen.setdefault(option, []).append(command)
+            assert text.startswith(SHARED_HELP[option]), (command, option, text)
+    assert len(seen["--no-progress"]) >= 12 and len(seen["--eps"]) >= 6
+    assert "status lines" in SHARED_HELP["--no-progress"]
