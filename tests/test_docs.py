@@ -184,3 +184,18 @@ def _items(entries):
             yield name, (item.project_name, item.project_version, item.uri, item.display_name)
         else:
             yield name, tuple(item)
+
+
+def test_recorded_commands_hold_paths_relative_to_the_repository():
+    """The measured results the docs show name the command that measured them as anyone types
+    it in a checkout: no absolute path of the machine that ran it."""
+    import json
+
+    records = sorted((DOCS / "measured").glob("*.json"))
+    assert records
+    for path in records:
+        command = json.loads(path.read_text(encoding="utf-8")).get("command", "")
+        absolute = [t for t in command.split() if t.startswith("/") or re.match(r"[A-Za-z]:", t)]
+        assert not absolute, f"{path.name}: {command}"
+    generate = _generate()
+    assert "{out}" in generate.BENCHMARKS["batch.json"]  # the writer fills in relative paths
