@@ -124,12 +124,12 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     text = f"{run_label}: {head}; {_consistency(row, summary)}."
     if auto is None or tol is None:
         return text
-    if auto_same:
-        return text + f" auto at {tol} picks the same model."
-    measured = next((r for r in summary if names.get(r["model"]) == auto.name), None)
+    measured = row if auto_same else next(
+        (r for r in summary if names.get(r["model"]) == auto.name), None)
     auto_err = _err(measured) if measured is not None else math.nan
-    why = (f" auto at {tol} picks {auto.name} instead: auto bounds the error against the FE "
-           f"model ({auto.bound_pct:.2f} % at this run's points), not against this measurement")
+    which = "the same model" if auto_same else f"{auto.name} instead"
+    why = (f" auto at {tol} picks {which}: auto bounds the error against the FE model "
+           f"({auto.bound_pct:.2f} % at this run's points), not against this measurement")
     if math.isfinite(auto_err) and auto_err > 100 * tolerance:
         if fe_err is not None:
             gap = f"{fe_err[0]} is {fe_err[1]:.2f} % from it"
@@ -139,6 +139,8 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
                        f"measurement differs from the FE model by more than auto's bound "
                        f"({gap}), which points to the muscle, not the model: identify it "
                        f"(`{identify_hint}`).")
+    if auto_same:
+        return text + f" auto at {tol} picks the same model."
     if math.isfinite(auto_err):
         return text + (f"{why}; {auto.name} is {auto_err:.2f} % from it, also within {tol}, "
                        f"and {name} is cheaper but auto cannot bound it within {tol} of the "

@@ -68,3 +68,18 @@ def test_when_auto_picks_another_model_the_sentence_says_why_and_points_to_the_m
     same = verdict("Run 1", ROWS, NAMES, 0.02, AutoPick("thickwall", NAMES["thickwall"], 1.0,
                                                         ""), True)
     assert same.endswith("auto at 2 % picks the same model.")
+
+
+def test_when_auto_agrees_but_the_measurement_is_beyond_the_tolerance_the_muscle_is_named():
+    """mkm demo's case: the surrogate is the closest (4.63 %), auto trusts it within 2 % of the
+    FE model: both say the same model, and the sentence says why it is still 4.63 % off."""
+    rows = [_row("eq2", 20.0, 6e-6, False), _row("surrogate", 4.63, 4.2e-5),
+            _row("axisym", 4.9, 1.2)]
+    text = verdict("Run 1", rows, NAMES, 0.02, AutoPick("surrogate", "Surrogate", 1.1, ""),
+                   True, (NAMES["axisym"], 4.9), "mkm identify r1")
+    assert "no model is within 2 % of the measurement at every step; the closest is Surrogate" \
+        in text
+    assert "auto at 2 % picks the same model: auto bounds the error against the FE model " \
+           "(1.10 % at this run's points), not against this measurement, and here Surrogate " \
+           "is 4.63 % from it" in text
+    assert "FE model (axisymmetric) is 4.90 % from it), which points to the muscle" in text
