@@ -669,7 +669,7 @@ def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
     measurement's distance from the report's FE model, if it has one."""
     from mkm.verdict import recommend
 
-    label = f"Run {r.k} ({r.name}, eps {r.eps_pct:.1f} %{', SIMULATED' if _simulated(r) else ''})"
+    label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
     choice = _auto_choice(r, tolerance) if tolerance and r.summary else None
     best, _ = recommend(r.summary, tolerance)
     same = bool(choice and best and _same_model(choice.spec, best["model"]))

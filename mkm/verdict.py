@@ -83,13 +83,11 @@ def _consistency(row: dict, summary: list[dict]) -> str:
     if row.get("consistent") is None:
         return ("no E_n: the run was recorded without an uncertainty budget" if judged == 0
                 else "no E_n for this model")
-    others = f"{agree} of {judged} models are"
+    others = f"{agree} of {judged} models {'is' if agree == 1 else 'are'}"
     if row["consistent"]:
-        return (f"the measurement and this model agree within their uncertainties "
-                f"(|E_n| ≤ 1 at every step; {others})")
-    return (f"the measurement and this model disagree beyond their uncertainties (E_n = "
-            f"{row['worst_E_n']:+.1f} at step {row['worst_step']}; {others} consistent: the "
-            "models have no braid friction and no creep)")
+        return f"consistent with the measurement (|E_n| ≤ 1 at every step; {others})"
+    return (f"not consistent with the measurement (E_n = {row['worst_E_n']:+.1f} at step "
+            f"{row['worst_step']}; {others}; the models have no braid friction or creep)")
 
 
 def verdict(run_label: str, summary: list[dict], names: dict[str, str],
@@ -110,39 +108,36 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     name = names[row["model"]]
     tol = f"{100 * tolerance:g} %" if tolerance is not None else None
     band = row.get("band_pct")
-    band_text = (f" (its band ± {band:.2f} %)" if band is not None and math.isfinite(band)
+    band_text = (f" (band ± {band:.1f} %)" if band is not None and math.isfinite(band)
                  else "")
-    how_far = (f"{_err(row):.2f} % from the measurement at worst{band_text}, "
+    how_far = (f"{_err(row):.2f} % off at worst{band_text}, "
                f"{format_seconds(row['seconds_per_point'])} per force")
     if within:
         head = f"use {name}, the cheapest model within {tol} of the measurement: {how_far}"
     elif tol is not None:
-        head = (f"no model is within {tol} of the measurement at every step; the closest is "
-                f"{name}: {how_far}")
+        head = f"no model is within {tol} of the measurement; the closest is {name}, {how_far}"
     else:
-        head = f"the closest model is {name}: {how_far}"
-    text = f"{run_label}: {head}; {_consistency(row, summary)}."
+        head = f"the closest model is {name}, {how_far}"
+    text = f"{run_label}: {head}, {_consistency(row, summary)}."
     if auto is None or tol is None:
         return text
     measured = row if auto_same else next(
         (r for r in summary if names.get(r["model"]) == auto.name), None)
     auto_err = _err(measured) if measured is not None else math.nan
-    which = "the same model" if auto_same else f"{auto.name} instead"
-    why = (f" auto at {tol} picks {which}: auto bounds the error against the FE model "
-           f"({auto.bound_pct:.2f} % at this run's points), not against this measurement")
+    which = "it too" if auto_same else f"{auto.name} instead"
+    why = (f" auto at {tol} picks {which}, bounding its error against the FE model "
+           f"({auto.bound_pct:.2f} %), not against this measurement")
     if math.isfinite(auto_err) and auto_err > 100 * tolerance:
-        if fe_err is not None:
-            gap = f"{fe_err[0]} is {fe_err[1]:.2f} % from it"
-        else:
-            gap = f"at least {max(auto_err - auto.bound_pct, 0.0):.2f} %"
-        return text + (f"{why}, and here {auto.name} is {auto_err:.2f} % from it: the "
-                       f"measurement differs from the FE model by more than auto's bound "
-                       f"({gap}), which points to the muscle, not the model: identify it "
+        gap = (f"{fe_err[1]:.2f} %" if fe_err is not None
+               else f"at least {max(auto_err - auto.bound_pct, 0.0):.2f} %")
+        off = "" if auto_same else f", from which it is {auto_err:.2f} % off"
+        return text + (f"{why}{off}: the FE model itself is {gap} off, more than that bound, "
+                       f"which points to the muscle, not the model: identify it "
                        f"(`{identify_hint}`).")
     if auto_same:
-        return text + f" auto at {tol} picks the same model."
+        return text + f" auto at {tol} picks it too."
     if math.isfinite(auto_err):
-        return text + (f"{why}; {auto.name} is {auto_err:.2f} % from it, also within {tol}, "
-                       f"and {name} is cheaper but auto cannot bound it within {tol} of the "
+        return text + (f"{why}; {auto.name} is {auto_err:.2f} % off here, also within {tol}, "
+                       f"and {name} is cheaper, but auto cannot bound it within {tol} of the "
                        "FE model at every point.")
     return text + f"{why} ({auto.name} is not among this report's models)."

@@ -340,12 +340,12 @@ def test_first_screen_opens_with_a_verdict_per_run(runs, report):
     start = html.index('<h2 id="summary">')
     first = html[start:html.index("<table", start)]
     verdicts = re.findall(r'<p class="verdict">(.*?)</p>', first)
-    assert len(verdicts) == 2 and verdicts[0].startswith(f"Run 1 ({runs[0].name}, eps 12.2 %")
+    assert len(verdicts) == 2 and verdicts[0].startswith("Run 1 (eps 12.2 %, simulated): ")
     one = summary[(summary["run"] == runs[0].name) & (summary["valid_points"]
                                                       == summary["points"])]
     best = one.loc[one["max_abs_err_pct"].idxmin()]
-    assert (f"the closest model is {parse_spec(best['model']).display_name}: "
-            f"{best['max_abs_err_pct']:.2f} % from the measurement at worst") in verdicts[0]
+    assert (f"the closest model is {parse_spec(best['model']).display_name}, "
+            f"{best['max_abs_err_pct']:.2f} % off at worst") in verdicts[0]
     assert f"{format_seconds(best['seconds_per_point'])} per force" in verdicts[0]
     assert "E_n" in verdicts[0]
     # one name per model: the summary names each spec by the registry's label and nothing else

@@ -44,12 +44,15 @@ def test_the_cheapest_model_within_the_tolerance_is_the_one_to_use():
 
 def test_the_sentence_names_model_distance_band_speed_and_consistency():
     text = verdict("Run 1", ROWS, NAMES, 0.02)
-    assert text.startswith("Run 1: use Thick-wall (Klute-Hannaford), the cheapest model "
-                           "within 2 % of the measurement: 1.60 % from the measurement at "
-                           "worst (its band ± 0.50 %), 58.4 µs per force")
-    assert "agree within their uncertainties (|E_n| ≤ 1 at every step; 1 of 4 models" in text
+    assert text == ("Run 1: use Thick-wall (Klute-Hannaford), the cheapest model within 2 % of "
+                    "the measurement: 1.60 % off at worst (band ± 0.5 %), 58.4 µs per force, "
+                    "consistent with the measurement (|E_n| ≤ 1 at every step; 1 of 4 models "
+                    "is).")
     none = verdict("Run 1", ROWS, NAMES, 0.01)
-    assert "no model is within 1 % of the measurement at every step; the closest is Thick" in none
+    assert "no model is within 1 % of the measurement; the closest is Thick-wall" in none
+    bad = verdict("Run 1", ROWS, NAMES, 0.10)  # Equation 2: the cheapest within 10 %
+    assert "use Equation 2 (Chou-Hannaford)" in bad
+    assert "not consistent with the measurement (E_n = +2.4 at step 4; 1 of 4 models is;" in bad
 
 
 def test_when_auto_picks_another_model_the_sentence_says_why_and_points_to_the_muscle():
@@ -57,17 +60,17 @@ def test_when_auto_picks_another_model_the_sentence_says_why_and_points_to_the_m
     text = verdict("Run 1", ROWS, NAMES, 0.02, pick, False, (NAMES["axisym"], 5.70),
                    "mkm identify runs/r1")
     # auto's choice and the measured ranking, reconciled in the same sentence
-    assert "auto at 2 % picks Surrogate instead: auto bounds the error against the FE model " \
-           "(0.80 % at this run's points), not against this measurement" in text
-    assert "Surrogate is 5.95 % from it" in text
-    assert "FE model (axisymmetric) is 5.70 % from it" in text
-    assert "points to the muscle, not the model: identify it (`mkm identify runs/r1`)" in text
+    assert text.endswith("auto at 2 % picks Surrogate instead, bounding its error against the "
+                         "FE model (0.80 %), not against this measurement, from which it is "
+                         "5.95 % off: the FE model itself is 5.70 % off, more than that bound, "
+                         "which points to the muscle, not the model: identify it (`mkm identify "
+                         "runs/r1`).")
     # without an FE model in the report, the triangle inequality bounds its distance from below
     bare = verdict("Run 1", ROWS[:3], NAMES, 0.02, pick, False, None)
-    assert f"at least {5.95 - 0.8:.2f} %" in bare
+    assert f"the FE model itself is at least {5.95 - 0.8:.2f} % off" in bare
     same = verdict("Run 1", ROWS, NAMES, 0.02, AutoPick("thickwall", NAMES["thickwall"], 1.0,
                                                         ""), True)
-    assert same.endswith("auto at 2 % picks the same model.")
+    assert same.endswith("auto at 2 % picks it too.")
 
 
 def test_when_auto_agrees_but_the_measurement_is_beyond_the_tolerance_the_muscle_is_named():
@@ -77,9 +80,9 @@ def test_when_auto_agrees_but_the_measurement_is_beyond_the_tolerance_the_muscle
             _row("axisym", 4.9, 1.2)]
     text = verdict("Run 1", rows, NAMES, 0.02, AutoPick("surrogate", "Surrogate", 1.1, ""),
                    True, (NAMES["axisym"], 4.9), "mkm identify r1")
-    assert "no model is within 2 % of the measurement at every step; the closest is Surrogate" \
+    assert "no model is within 2 % of the measurement; the closest is Surrogate, 4.63 % off" \
         in text
-    assert "auto at 2 % picks the same model: auto bounds the error against the FE model " \
-           "(1.10 % at this run's points), not against this measurement, and here Surrogate " \
-           "is 4.63 % from it" in text
-    assert "FE model (axisymmetric) is 4.90 % from it), which points to the muscle" in text
+    assert text.endswith("auto at 2 % picks it too, bounding its error against the FE model "
+                         "(1.10 %), not against this measurement: the FE model itself is 4.90 % "
+                         "off, more than that bound, which points to the muscle, not the model: "
+                         "identify it (`mkm identify r1`).")
