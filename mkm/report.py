@@ -7,8 +7,10 @@ paper's Equation 7 against the measurement and writes ``report.html`` (figures e
 PNG, inline CSS, no script, no external asset) with the PNGs, CSVs and ``provenance.json``
 beside it. The page answers, in this order:
 
-1. how good, per run: a summary table (status, eps, best model, its largest |Err%| and RMSE,
-   lost samples, the ``auto`` choice);
+1. the verdict, per run, in one sentence (:mod:`mkm.verdict`: the model to use, how far, how
+   fast, consistent or not, and ``auto``'s pick reconciled with it), then how good: a summary
+   table (status, eps, every model's largest |Err%|, RMSE and time per force, lost samples, the
+   ``auto`` choice);
 2. the runs of one muscle together (the paper's Figure 7c/d: eps 0 and 12.2 %, every model);
 3. how fast: seconds per predicted force against the largest |Err%| of every model on these runs,
    and the one model ``auto`` picks for each run;
@@ -18,8 +20,9 @@ beside it. The page answers, in this order:
 5. the surrogate against our FE model on the paper's test muscles (Table 3, Figure 6);
 6. provenance, folded, the full JSON in ``provenance.json``.
 
-Models are named as the paper names them (:attr:`mkm.registry.Spec.display_name`) with their
-spec beside; every table and figure names the provenance entries it was computed from.
+Each model has one name, its registry label (:attr:`mkm.registry.Spec.display_name`), in every
+sentence, table and figure; every table and figure names the provenance entries it was computed
+from.
 """
 
 from __future__ import annotations
@@ -733,9 +736,8 @@ def _surrogate_section(out: Path, prov: dict) -> str:
                          "seconds_per_point": seconds / max(len(points), 1)}
     prov["fe-reference"] = {"file": FE_REFERENCE.name, "header": _reference_header()}
     keys = ["surrogate", "fe-reference"]
-    fig_path = save_figure(surrogate_fe_figure(points, f"{model.name} against our FE model "
-                                               "(the paper's Figure 6)"),
-                           out / "surrogate_vs_fe.png")
+    title = f"{parse_spec('surrogate').display_name} against our FE model (the paper's Figure 6)"
+    fig_path = save_figure(surrogate_fe_figure(points, title), out / "surrogate_vs_fe.png")
     return head + "".join([
         table_html(result, "The paper's Table 3 with our numbers: largest |Err%| (Equation 7), "
                    "RMSE and largest error of the default surrogate against our FE model "
