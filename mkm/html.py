@@ -55,6 +55,7 @@ def table_html(df: pd.DataFrame, caption: str, digits: int = 2,
     """An HTML table; floats with ``digits`` decimals unless ``formats`` gives a column's spec
     (seconds span six decades: ``{"time [s]": ".3g"}``)."""
     formats = {"time [s]": ".3g", "seconds_per_point": ".3g"} | (formats or {})
+    df = df.map(lambda v: "—" if v is None else v)  # a column of only None is no exception
     formatters = {c: (lambda v, f=f: "—" if pd.isna(v) else format(v, f))
                   for c, f in formats.items() if c in df.columns}
     body = df.to_html(index=False, border=0, na_rep="—", escape=True, formatters=formatters,

@@ -298,7 +298,7 @@ def _status_html(r: _Run) -> str:
 def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
                      tolerance: float | None) -> str:
     """The first screen: what the runs are (simulated or measured, past the braid lock), then
-    every model's largest |Err%|, RMSE and seconds per force for every run in one table, the
+    every model's largest |Err%|, RMSE and time per force for every run in one table, the
     model ``auto`` picks for each run, then each run's status."""
     banners = _banners(runs)
     verdicts = "".join(f'<p class="verdict">{esc(_verdict(r, names, tolerance))}</p>'
@@ -742,8 +742,9 @@ def _surrogate_section(out: Path, prov: dict) -> str:
         table_html(result, "The paper's Table 3 with our numbers: largest |Err%| (Equation 7), "
                    "RMSE and largest error of the default surrogate against our FE model "
                    f"(I-III: the paper's muscles; others: off-grid muscles). All {len(points)} "
-                   f"points predicted in one call: {seconds / max(len(points), 1):.2g} s per "
-                   "force (the paper: 131 ms for 33, 4 ms per force). "
+                   "points predicted in one call: "
+                   f"{format_seconds(seconds / max(len(points), 1))} per force (the paper: "
+                   "131 ms for 33, 4 ms per force). "
                    + provenance_links(keys)),
         figure_html(fig_path, "FE forces (dots) and the surrogate (lines) per test muscle; "
                     "right: Err% per pressure. " + provenance_links(keys)),

@@ -330,6 +330,8 @@ def test_first_screen_has_every_model_on_every_run_and_says_simulated(report):
     assert "time per force" in summary and "RMSE [N]" in summary
     # speeds in µs or ms, never in scientific notation
     assert not re.search(r"\d\.?\d*e-\d\d", summary)
+    # an absent value is the table's dash: no cell says None (eq2:theta0_deg=50 has no E_n)
+    assert ">None<" not in html
 
 
 def test_first_screen_opens_with_a_verdict_per_run(runs, report):
