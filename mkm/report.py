@@ -69,7 +69,7 @@ from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 from mkm.uncertainty import force_band, with_band
-from mkm.verdict import AutoPick, format_seconds, model_label, verdict
+from mkm.verdict import AutoPick, format_seconds, model_label, recommend, verdict
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
 
@@ -271,15 +271,6 @@ def _planned_steps(meta) -> str:
     return "an unrecorded number planned" if meta.n_steps is None else str(meta.n_steps)
 
 
-def _best(r: _Run) -> dict | None:
-    """The model with the smallest largest |Err%| among those valid at every point (or, if
-    none is, among those valid somewhere)."""
-    rows = [s for s in r.summary if s["valid_points"] > 0]
-    full = [s for s in rows if s["valid_points"] == s["points"]]
-    pool = full or rows
-    return min(pool, key=lambda s: s["max_abs_err_pct"]) if pool else None
-
-
 def _cell(value) -> str:
     """A table cell's text: an absent value (no step has an E_n) is the table's dash, never
     ``None``."""
@@ -310,7 +301,7 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
     for r in runs:
         ordered = sorted(r.summary, key=lambda s: (np.nan_to_num(s["max_abs_err_pct"],
                                                                  nan=np.inf)))
-        best = _best(r)
+        best = recommend(r.summary, tolerance)[0]  # the verdict's model
         choice = _auto_choice(r, tolerance) if tolerance else None
         for i, s in enumerate(ordered):
             first = i == 0
@@ -337,8 +328,10 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
     return ('<h2 id="summary">Summary</h2>' + verdicts + banners
             + '<div class="table"><table class="summary">'
             f"<thead>{head}</thead><tbody>{''.join(rows)}</tbody></table>"
-            '<p class="caption">Every model on every run, best first (in bold: the smallest '
-            "largest |Err%|, Equation 7, among the models valid at every kept step). auto: the "
+            '<p class="caption">Every model on every run, closest first (largest |Err%|, '
+            "Equation 7); in bold, the model the verdict names: the cheapest within the "
+            "tolerance against the measurement, else the closest valid at every kept step. "
+            "auto: the "
             "cheapest model whose error bound against the FE model at the run's points meets "
             "the tolerance. "
             + provenance_links(dict.fromkeys(keys)) + "</p></div>"
@@ -670,8 +663,6 @@ def _same_model(a: str, b: str) -> bool:
 def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
     """The run's verdict sentence (:func:`mkm.verdict.verdict`) with auto's pick and the
     measurement's distance from the report's FE model, if it has one."""
-    from mkm.verdict import recommend
-
     label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
     choice = _auto_choice(r, tolerance) if tolerance and r.summary else None
     best, _ = recommend(r.summary, tolerance)
