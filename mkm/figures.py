@@ -232,7 +232,10 @@ def overlay_figure(runs: list[tuple[str, pd.DataFrame, pd.DataFrame]], title: st
                       linewidth=widths[model])
     models = list(dict.fromkeys(m for _, _, p in runs for m in p["model"]))
     handles = [Line2D([], [], color=colours[m], linewidth=widths[m]) for m in models]
-    labels = [names[m] for m in models]
+    # "identical within 0.1 %" only where it holds on every run of the figure
+    notes = [_identical(p, names) for _, _, p in runs]
+    same = {m: n for m, n in notes[0].items() if all(other.get(m) == n for other in notes)}
+    labels = [names[m] + same.get(m, "") for m in models]
     for i, (label, _, _) in enumerate(runs):
         handles.append(Line2D([], [], color="black", marker=RUN_MARKERS[i % len(RUN_MARKERS)],
                               linestyle=RUN_LINESTYLES[i % len(RUN_LINESTYLES)]))

@@ -131,3 +131,20 @@ def test_coincident_models_are_named_identical_in_the_legend():
     texts = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "Surrogate (identical to FE within 0.1 %)" in texts
     assert "Equation 2" in texts and "FE" in texts
+
+
+def test_the_overlay_names_models_identical_on_every_run():
+    from mkm.figures import overlay_figure
+
+    same = [100.0, 205.0, 100.0]
+    pred = pd.concat([_predictions("axisym", same, [True] * 3),
+                      _predictions("surrogate", same, [True] * 3)])
+    names = {"axisym": "FE", "surrogate": "Surrogate"}
+    colours = {"axisym": "tab:green", "surrogate": "tab:red"}
+    fig = overlay_figure([("run 1", STEPS, pred), ("run 2", STEPS, pred)], "t", names, colours)
+    texts = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "Surrogate (identical to FE within 0.1 %)" in texts
+    apart = pd.concat([_predictions("axisym", same, [True] * 3),
+                       _predictions("surrogate", [110.0, 230.0, 110.0], [True] * 3)])
+    fig = overlay_figure([("run 1", STEPS, pred), ("run 2", STEPS, apart)], "t", names, colours)
+    assert "Surrogate" in [t.get_text() for t in fig.legends[0].get_texts()]
