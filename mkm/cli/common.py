@@ -49,10 +49,31 @@ def error_line(prog: str, message) -> str:
     return f"{prog}: error: {message}"
 
 
+#: The flag that sets a checked quantity: a library's ``D0_mm=-1 is invalid: ...`` about a
+#: value the user typed as ``--D0 -1`` is said about the flag.
+FLAGS = {"D0_mm": ("--D0", "D0"), "t0_mm": ("--t0", "t0"), "L0_mm": ("--L0", "L0"),
+         "eps": ("--eps", "eps"), "muscle.eps": ("--eps", "eps"),
+         "theta0_deg": ("--theta0", "theta0"), "tolerance": ("--tolerance", "tolerance")}
+
+
+def name_the_flag(args, message) -> str:
+    """``message`` about a quantity the command line set, said about its flag:
+    ``D0_mm=-1 is invalid: expected ...`` -> ``--D0 -1: expected ...`` (unchanged when the
+    value came from elsewhere: a config file, a model spec)."""
+    message = str(message)
+    found = re.match(r"([\w.]+)=(\S+) is invalid: (.*)", message, re.DOTALL)
+    if not found or found.group(1) not in FLAGS:
+        return message
+    flag, dest = FLAGS[found.group(1)]
+    if getattr(args, dest, None) is None:
+        return message
+    return f"{flag} {found.group(2)}: {found.group(3)}"
+
+
 def say(args, kind: str, message) -> None:
     """One line on stderr: ``mkm <command>: <kind>: <message>`` (``error``, ``warning``,
     ``note``)."""
-    line = (error_line(command_name(args), message) if kind == "error"
+    line = (error_line(command_name(args), name_the_flag(args, message)) if kind == "error"
             else f"{command_name(args)}: {kind}: {message}")
     print(line, file=sys.stderr)
 

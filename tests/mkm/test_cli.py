@@ -69,11 +69,11 @@ EPS = "expected a shortening ratio in [0, 1) (a fraction)"
 
 @pytest.mark.parametrize("args, message", [
     (["--D0", "-1", "--t0", "2.5", "--eps", "0.05"],
-     "mkm fem solve: error: D0_mm=-1 is invalid: expected an inner diameter in [1, 500] mm"),
+     "mkm fem solve: error: --D0 -1: expected an inner diameter in [1, 500] mm"),
     (["--D0", "0", "--t0", "2.5", "--eps", "0.05"],
-     "mkm fem solve: error: D0_mm=0 is invalid: expected an inner diameter in [1, 500] mm"),
+     "mkm fem solve: error: --D0 0: expected an inner diameter in [1, 500] mm"),
     (["--D0", "35", "--t0", "0", "--eps", "0.05"],
-     "mkm fem solve: error: t0_mm=0 is invalid: expected a wall thickness in [0.05, 100] mm"),
+     "mkm fem solve: error: --t0 0: expected a wall thickness in [0.05, 100] mm"),
     (["--D0", "35", "--t0", "20", "--eps", "0.05"], f"mkm fem solve: error: {THICK}"),
     (["--D0", "35", "--t0", "17.5", "--eps", "0.05"],
      "mkm fem solve: error: t0_mm=17.5 is too thick"),
@@ -123,10 +123,13 @@ def test_bad_input_is_one_line_with_status_2(args, message, mkm_run):
      "theta0_deg, "
      "L0_mm, C10_MPa, C01_MPa)"),
     (["--model", "axisym:mesh=huge"], "mkm fem solve: error: mesh='huge' is invalid"),
+    # set in the spec, not by a flag: named as the spec names it
+    (["--model", "thickwall:theta0_deg=60"],
+     "mkm fem solve: error: theta0_deg=60 is invalid: expected 0 < theta0 < 54.7 deg"),
     (["--model", "axisym:grid=1"], "mkm fem solve: error: model 'axisym:grid=1': unknown parameter "
      "'grid': expected some of mesh, "),
     (["--model", "thickwall", "--theta0", "60"],
-     "mkm fem solve: error: theta0_deg=60 is invalid: expected 0 < theta0 < 54.7 deg"),
+     "mkm fem solve: error: --theta0 60: expected 0 < theta0 < 54.7 deg"),
 ])
 def test_bad_model_choice_is_one_line_with_status_2(args, message, mkm_run):
     argv = ["fem", "solve", "--D0", "35", "--t0", "2.5", "--eps", "0.05", *args]
