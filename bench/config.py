@@ -27,6 +27,7 @@ from mkm.bench.backends import BACKENDS, backend_entry
 from mkm.bench.settings import positive, read_toml, read_toml_file, typed_section, within
 from mkm.bench.sim_settings import Sim
 from mkm.bench.storage import check_muscle_id
+from mkm.core.records import write_atomic
 from mkm.fem.muscle import LIMITS, check_value, check_wall
 from mkm.fem.tolerances import Tolerances
 
@@ -498,8 +499,20 @@ _BACKEND_CHOICE = _backend_choice()
 
 def example_config():
     """The packaged example configuration (the paper's prototype on the simulated bench), the
-    file to copy and edit: ``mkm check --example > my_bench.toml`` writes it."""
+    file to copy and edit (:func:`copy_example_config`)."""
     return resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG)
+
+
+def copy_example_config(path: str | Path) -> Path:
+    """Write the packaged example into ``path`` (UTF-8, whatever the console's encoding: a
+    redirection in Windows PowerShell would write UTF-16) and return it; an existing file is
+    never overwritten."""
+    path = Path(path)
+    if path.exists():
+        raise ValueError(f"{path} exists: kept as it is; name a new file for the example")
+    if not path.parent.is_dir():
+        raise ValueError(f"{path.parent}: no such folder")
+    return write_atomic(path, example_config().read_text("utf-8"))
 
 
 def load_config(path: str | Path | None = None, eps: float | None = None,

@@ -46,7 +46,7 @@ def _add_device_arguments(parser, clock: bool = True) -> None:
 
     parser.add_argument("--config", help="bench TOML file (default: the packaged example "
                         "paper_prototype.toml, the paper's prototype on the simulated bench; "
-                        "`mkm check --example > my_bench.toml` writes it for editing)")
+                        "`mkm check --example my_bench.toml` writes it for editing)")
     parser.add_argument("--backend", choices=tuple(BACKENDS), default=None,
                         help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.values())
                         + " (default: the config's [daq] backend)")
@@ -115,11 +115,12 @@ def register(subparsers) -> None:
         "configuration, rates, ranges), open the device, print the limits, the planned steps "
         "and the expected duration; warns past the braid lock; nothing is pressurised.",
         epilog="example: mkm check --backend ni --config my_bench.toml; a config to edit: "
-        "mkm check --example > my_bench.toml")
+        "mkm check --example my_bench.toml")
     _add_device_arguments(check, clock=False)
-    check.add_argument("--example", action="store_true",
-                       help="print the packaged example configuration, to edit: "
-                       "mkm check --example > my_bench.toml (its path on stderr)")
+    check.add_argument("--example", nargs="?", const="-", metavar="FILE",
+                       help="write the packaged example configuration into FILE to edit it "
+                       "(mkm check --example my_bench.toml; an existing FILE is kept), or "
+                       "print it when no FILE is given")
     check.add_argument("--eps", type=argtype(parse_fraction),
                        help=shared_help("--eps", "default: the config's"))
     check.add_argument("--pressures", type=argtype(parse_pressures),
@@ -241,12 +242,14 @@ def _check(args) -> int:
     from mkm.bench.procedures import check
 
     if args.example:
-        from mkm.bench.config import example_config
+        from mkm.bench.config import copy_example_config, example_config
 
-        example = example_config()
-        sys.stdout.write(example.read_text("utf-8"))
-        say(args, "note", f"the packaged example {example}: save it (> my_bench.toml) and set "
-            "[daq] device, the load cell's sensitivity, the regulator and the limits")
+        if args.example == "-":
+            sys.stdout.write(example_config().read_text("utf-8"))
+        else:
+            print(copy_example_config(args.example), flush=True)
+        say(args, "note", f"the packaged example {example_config()}: set [daq] device and "
+            "backend, the load cell's sensitivity, the regulator and the limits")
         return 0
     config = _config(args, eps=args.eps, pressures_bar=args.pressures)
     try:

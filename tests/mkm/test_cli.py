@@ -365,8 +365,15 @@ def test_check_writes_the_packaged_example_for_editing(mkm_run, tmp_path):
 
     assert f"mkm check: note: the packaged example {example_config()}" in err
     edited = tmp_path / "my_bench.toml"
-    edited.write_text(out, encoding="utf-8")
+    code, out, err = mkm_run(["check", "--example", str(edited)])
+    assert code == 0 and out.strip() == str(edited)
     assert load_config(edited).muscle == load_config().muscle  # the same bench, now editable
+    assert edited.read_bytes() == example_config().read_bytes()  # UTF-8, whatever the console
+    edited.write_text("# my edits\n", encoding="utf-8")
+    code, out, err = mkm_run(["check", "--example", str(edited)])
+    assert code == 2 and err == f"mkm check: error: {edited} exists: kept as it is; name a new " \
+                                "file for the example\n"
+    assert edited.read_text(encoding="utf-8") == "# my edits\n"  # nothing lost
     code, out, _ = mkm_run(["check"])
     assert code == 0 and f"the packaged example {example_config()}" in out  # its path, named
 
