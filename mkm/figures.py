@@ -101,6 +101,17 @@ def _identical(predictions: pd.DataFrame, names: dict[str, str]) -> dict[str, st
     return notes
 
 
+def _time_axis(axis) -> None:
+    """A log axis of seconds labelled as a reader takes durations in (``10 µs``, ``1 ms``),
+    never in scientific notation."""
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
+    from mkm.verdict import format_seconds
+
+    axis.set_major_formatter(FuncFormatter(lambda v, _: format_seconds(v)))
+    axis.set_minor_formatter(NullFormatter())
+
+
 def _invalid_handle() -> Line2D:
     return Line2D([], [], color="0.3", **INVALID_STYLE)
 
@@ -381,7 +392,7 @@ def report_speed_figure(summary: pd.DataFrame, names: dict[str, str],
     handles += [Line2D([], [], color="0.3", marker=RUN_MARKERS[i % len(RUN_MARKERS)],
                        linestyle="none") for i in range(len(runs))]
     labels += [f"run {i + 1}" for i in range(len(runs))]
-    ax.legend(handles, labels, fontsize=7.5, loc="best")
+    fig.legend(handles, labels, fontsize=7.5, loc="outside right upper")  # off the points
     ax.set_xscale("log")
     ax.set_yscale("log")
     from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
@@ -389,7 +400,8 @@ def report_speed_figure(summary: pd.DataFrame, names: dict[str, str],
     ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
     ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     ax.yaxis.set_minor_formatter(NullFormatter())
-    ax.set(xlabel="seconds per predicted force [s]",
+    _time_axis(ax.xaxis)
+    ax.set(xlabel="time per predicted force",
            ylabel="largest |Err%| against the measurement [%]",
            title="speed against accuracy on these runs (lower left is better)")
     ax.grid(True, which="major", alpha=0.35)
@@ -447,7 +459,8 @@ def speed_accuracy_figure(summary: pd.DataFrame, machine: str) -> Figure:
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
-    ax.set(xlabel="seconds per predicted force [s] (one call per muscle sweep, median)",
+    _time_axis(ax.xaxis)
+    ax.set(xlabel="time per predicted force (one call per muscle sweep, median)",
            ylabel="largest |Err%| against the reference [%]",
            title=f"speed against accuracy, measured on {machine}")
     ax.grid(True, which="major", alpha=0.35)

@@ -83,7 +83,15 @@ def test_speed_chart_names_models_in_the_legend_only():
                               {"axisym": "tab:green", "surrogate": "tab:red"})
     ax = fig.axes[0]
     assert not ax.texts  # no labels beside the points: none can print over another
-    assert {t.get_text() for t in ax.get_legend().get_texts()} >= {"FE", "Surrogate"}
+    assert {t.get_text() for t in fig.legends[0].get_texts()} >= {"FE", "Surrogate"}
+    # the time axis in µs and ms, never 10^-5
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    FigureCanvasAgg(fig).draw()
+    ticks = [t.get_text() for t in ax.get_xticklabels() if t.get_text()]
+    assert "10.0 µs" in ticks and "10.0 ms" in ticks, ticks
+    assert not any("e-" in t or "^" in t for t in ticks)
+    assert not _overlaps(fig)
 
 
 def _overlaps(fig) -> list[str]:
