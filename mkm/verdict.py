@@ -17,14 +17,15 @@ from dataclasses import dataclass
 
 
 def format_seconds(seconds: float) -> str:
-    """A duration as a reader takes it in: ``6.1 µs``, ``12 ms``, ``1.4 s`` (three significant
-    digits, never scientific notation); ``—`` when unknown."""
+    """A duration as a reader takes it in: ``6.10 µs``, ``12.0 ms``, ``1.40 s``, ``0.948 µs``
+    (in s, ms or µs, three significant digits, never scientific notation); ``—`` when
+    unknown."""
     if seconds is None or not math.isfinite(seconds) or seconds <= 0:
         return "—"
-    unit, scale = next(((u, f) for u, f in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6))
-                        if seconds >= f), ("ns", 1e-9))
+    unit, scale = next(((u, f) for u, f in (("s", 1.0), ("ms", 1e-3)) if seconds >= f),
+                       ("µs", 1e-6))
     value = seconds / scale
-    decimals = max(0, 2 - int(math.floor(math.log10(value)))) if value >= 1 else 2
+    decimals = max(0, 2 - math.floor(math.log10(value)))
     return f"{value:.{decimals}f} {unit}"
 
 

@@ -25,7 +25,8 @@ ROWS = [_row("eq2", 9.8, 6e-6, False), _row("thickwall", 1.60, 5.84e-5),
 
 @pytest.mark.parametrize(("seconds", "text"), [
     (5.84e-05, "58.4 µs"), (6.0e-6, "6.00 µs"), (0.0123, "12.3 ms"), (1.2, "1.20 s"),
-    (250.0, "250 s"), (4e-10, "0.40 ns"), (math.nan, "—"), (0.0, "—")])
+    (250.0, "250 s"), (9.48e-7, "0.948 µs"), (4e-10, "0.000400 µs"), (math.nan, "—"),
+    (0.0, "—")])
 def test_durations_read_in_units_never_in_scientific_notation(seconds, text):
     assert format_seconds(seconds) == text
     assert "e-" not in format_seconds(seconds) and "e+" not in format_seconds(seconds)
