@@ -26,6 +26,7 @@ import numpy as np
 from mkm.bench import backends
 from mkm.bench.settings import positive, read_toml, read_toml_file, typed_section, within
 from mkm.bench.sim_settings import Sim
+from mkm.core.records import write_atomic
 from mkm.fem.limits import LIMITS, check_muscle_id
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
@@ -501,6 +502,24 @@ def _backend_choice() -> str:
 _BACKEND_CHOICE = _backend_choice()
 
 
+def example_config():
+    """The packaged example configuration (the paper's prototype on the simulated bench), the
+    file to copy and edit (:func:`copy_example_config`)."""
+    return resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG)
+
+
+def copy_example_config(path: str | Path) -> Path:
+    """Write the packaged example into ``path`` (UTF-8, whatever the console's encoding: a
+    redirection in Windows PowerShell would write UTF-16) and return it; an existing file is
+    never overwritten."""
+    path = Path(path)
+    if path.exists():
+        raise ValueError(f"{path} exists: kept as it is; name a new file for the example")
+    if not path.parent.is_dir():
+        raise ValueError(f"{path.parent}: no such folder")
+    return write_atomic(path, example_config().read_text("utf-8"))
+
+
 def load_config(path: str | Path | None = None, eps: float | None = None,
                 pressures_bar=None, backend: str | None = None) -> BenchConfig:
     """The configuration in ``path`` (the packaged default when None).
@@ -510,8 +529,8 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
     --backend`` do; the result is validated again.
     """
     if path is None:
-        text = resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG).read_text("utf-8")
-        config = parse_config(text, f"the packaged example {DEFAULT_CONFIG}")
+        example = example_config()
+        config = parse_config(example.read_text("utf-8"), f"the packaged example {example}")
     else:
         text, data = read_toml_file(Path(path), "config ")
         config = config_from_tables(data, text, str(path))

@@ -13,6 +13,7 @@ from mkm.cli.common import (
     argtype,
     emit_prediction,
     model_from_args,
+    shared_help,
     with_calibration,
 )
 from mkm.core.ranges import parse_fraction, parse_number
@@ -102,17 +103,17 @@ def register(subparsers) -> None:
         "degrees of freedom and seconds per mesh level; CSV, JSON and PNG under --out.",
         epilog="example: mkm fem convergence --D0 35 --t0 2.5 --eps 5% --pressure 2.5")
     conv.add_argument("--D0", default=35.0, type=argtype(parse_number, "--D0"),
-                      help="inner tube diameter [mm] (default: %(default)s, muscle I)")
+                      help=shared_help("--D0", "default: %(default)s, muscle I"))
     conv.add_argument("--t0", default=2.5, type=argtype(parse_number, "--t0"),
-                      help="wall thickness [mm] (default: %(default)s)")
+                      help=shared_help("--t0", "default: %(default)s"))
     conv.add_argument("--eps", default=0.05, type=argtype(parse_fraction),
-                      help="shortening ratio, fraction or percentage (default: %(default)s)")
+                      help=shared_help("--eps", "default: %(default)s"))
     conv.add_argument("--pressure", default=2.5, type=argtype(parse_number, "--pressure"),
                       help="pressure [bar] (default: %(default)s)")
     conv.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
-                      help="braid angle at rest [deg] (default: calibrated)")
+                      help=shared_help("--theta0", "default: calibrated"))
     conv.add_argument("--L0", default=282.0, type=argtype(parse_number, "--L0"),
-                      help="muscle length at rest [mm] (default: %(default)s)")
+                      help=shared_help("--L0", "default: %(default)s"))
     conv.add_argument("--out", default=str(default_out("fem-convergence")),
                       help="folder for the CSV, JSON and PNG (default: %(default)s)")
     add_calibration_argument(conv)
@@ -135,8 +136,9 @@ def _solve(args) -> int:
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     if model.name == "auto":
         from mkm.auto import explain
+        from mkm.verdict import model_label
 
-        print(explain(prediction), file=sys.stderr)
+        print(explain(prediction, label=model_label), file=sys.stderr)
     emit_prediction(prediction, args.out)
     return 0
 
