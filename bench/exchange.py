@@ -316,15 +316,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
                  if "direction" in found else _inferred(pressure))
         up = order == "up"
         zero_at = float(pressure[up].min()) if up.any() else math.nan
-        zero = float(np.mean(force[up & (pressure == zero_at)])) if zero_at <=             series.VENTED_THRESHOLD_BAR else 0.0
-    if tare == "none" or (tare == "auto" and not timed and zero_at > series.VENTED_THRESHOLD_BAR):
-        zero = 0.0
-        handling["tare"] = "none" if tare == "none" else "none: no 0 bar row"
+        zero = float(np.mean(force[up & (pressure == zero_at)])) if up.any() else 0.0
+    if tare == "none":
+        zero, handling["tare"] = 0.0, "none"
+    elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
+        zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:
-        zero = float(tare)
-        handling["tare"] = "given"
+        zero, handling["tare"] = float(tare), "given"
     handling["tare_N"] = zero
     if zero:
         force = force - zero

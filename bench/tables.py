@@ -488,10 +488,12 @@ class Recognition:
         parts = []
         for role, column in self.columns.items():
             d = column.describe()
-            unit = d["unit"]
-            converted = (f" [{unit} -> {d['converted_to']}]" if unit not in (None, d["converted_to"])
-                         and d["converted_to"] else f" [{unit}]" if unit else "")
-            parts.append(f"{column.header!r} -> {role}{converted}")
+            unit, target = d["unit"], d["converted_to"]
+            if unit == "":
+                unit = "fraction"
+            shown = (f" [{unit} -> {target}]" if target and unit != target
+                     else f" [{unit}]" if unit else "")
+            parts.append(f"{column.header!r} -> {role}{shown}")
         extras = []
         if self.table.decimal == ",":
             extras.append("decimal comma")

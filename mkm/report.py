@@ -351,8 +351,10 @@ def _banners(runs: list[_Run]) -> str:
         out.append(f"SIMULATED: {which} came from the simulated bench (a model with noise), "
                    "not from a measurement.")
     for r in runs:
-        theta0 = r.muscle.get("theta0_deg")
-        lock = braid_lock(theta0)
+        try:
+            lock = braid_lock(r.muscle.get("theta0_deg"))
+        except ValueError:  # a calibration file without the FE model's angle: no lock known
+            continue
         if r.muscle.get("eps", 0.0) >= lock.eps_max:
             out.append(f"Run {r.k} is held at eps {r.eps_pct:.1f} %, past the braid lock: "
                        f"{lock}. No model is valid there: the braid cannot shorten so far, so "
@@ -620,8 +622,11 @@ def _auto_choice(r: _Run, tolerance: float):
             muscle = {k: m[k] for k in ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
                       if m.get(k) is not None}
             auto = AutoModel(tolerance=tolerance, build=build_spec, **muscle)
-            chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
-            choice = str(chosen["model_used"][0]), explain(chosen, tolerance)
+            try:
+                chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
+                choice = str(chosen["model_used"][0]), explain(chosen, tolerance)
+            except ValueError as exc:  # a candidate without a calibration in this command
+                choice = "none", f"no model chosen: {exc}"
         r.auto_choices[tolerance] = choice
     return r.auto_choices[tolerance]
 

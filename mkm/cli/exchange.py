@@ -98,8 +98,10 @@ def _export(args) -> int:
     from pathlib import Path
 
     from mkm.bench.exchange import export_run
+    from mkm.bench.folders import one_run_folder
     from mkm.paths import default_out
 
+    args.run = one_run_folder(args.run)
     name = Path(args.run).name
     out = args.out or default_out("export", name + (".xlsx" if args.format == "xlsx" else ""))
     print(export_run(args.run, out, args.format))
