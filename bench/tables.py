@@ -171,7 +171,7 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
         if sheet is not None and sheet not in names:
             raise ValueError(f"--sheet {sheet!r}: {path.name} has no such sheet: it has "
                              f"{', '.join(map(repr, names))}")
-        tables = []
+        tables, problems = [], []
         for name in [sheet] if sheet is not None else names:
             numbers, rows = [], []
             for n, row in enumerate(book[name].iter_rows(values_only=True), start=1):
@@ -181,21 +181,23 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                     rows.append(cells)
                 if len(rows) > MAX_ROWS:
                     raise ValueError(f"{path}, sheet {name!r} has more than {MAX_ROWS} rows")
-            if rows:
+            try:
                 tables.append(_with_header(path, name, numbers, rows, None, "."))
+            except ValueError as exc:  # a sheet of notes: skipped unless it was asked for
+                if sheet is not None:
+                    raise
+                problems.append(str(exc))
     finally:
         book.close()
     if not tables:
-        raise ValueError(f"{path} is empty: no sheet holds a row")
+        raise ValueError(problems[0] if len(problems) == 1 else
+                         f"{path.name}: no sheet holds a table ({'; '.join(problems)[:300]})")
     return tables
 
 
 def _is_number(cell) -> bool:
-    if isinstance(cell, bool):
-        return False
-    if isinstance(cell, int | float):
-        return True
-    return bool(_NUMBER.match(str(cell).strip()))
+    """A number, possibly with a decimal comma or a unit after it."""
+    return _number(cell, ",")[0] is not None
 
 
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
@@ -226,7 +228,7 @@ _WORDS = re.compile(r"[\s_\-./:]+")
 
 
 @cache
-def units(case_sensitive: bool = True):
+def registry(case_sensitive: bool = True):
     """A pint unit registry (made once each: parsing its definitions takes a fraction of a
     second); the case-insensitive one reads ``KGF`` or ``n`` where a header shouts or
     whispers."""
@@ -249,7 +251,7 @@ def parse_unit(text: str):
         return None
     for case_sensitive in (True, False):
         try:
-            return units(case_sensitive).Unit(text)
+            return registry(case_sensitive).Unit(text)
         except (pint.errors.PintError, AttributeError, TypeError, ValueError, KeyError,
                 AssertionError):
             continue
@@ -258,7 +260,7 @@ def parse_unit(text: str):
 
 def _fits(unit, role: Role) -> bool:
     return (unit is not None and role.unit is not None
-            and unit.dimensionality == units().Unit(role.unit or "dimensionless").dimensionality)
+            and unit.dimensionality == registry().Unit(role.unit or "dimensionless").dimensionality)
 
 
 def parse_header(text: str) -> tuple[str, str | None]:
@@ -317,13 +319,13 @@ def parse_assignments(text: str | None, option: str) -> dict[str, str]:
 
 
 def recognise(table: RawTable, columns: dict[str, str] | None = None,
-              unit_overrides: dict[str, str] | None = None) -> dict[str, Column]:
+              units: dict[str, str] | None = None) -> dict[str, Column]:
     """The column of each role found in ``table`` (see the module docstring).
 
-    ``columns`` names a role's column outright, ``unit_overrides`` its unit. ``ValueError``: a
+    ``columns`` names a role's column outright, ``units`` its unit. ``ValueError``: a
     named column missing, two columns claiming one role, or a unit of the wrong dimension.
     """
-    columns, unit_overrides = columns or {}, unit_overrides or {}
+    columns, units = columns or {}, units or {}
     found: dict[str, Column] = {}
     headers = table.header
     for role, header in columns.items():
@@ -343,7 +345,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
             raise ValueError(f"{table.name}: two {role} columns, {found[role].header!r} and "
                              f"{header!r}: choose one with --columns {role}=COLUMN")
         found[role] = Column(role, index, header, unit)
-    for role, unit in unit_overrides.items():
+    for role, unit in units.items():
         if role not in found:
             raise ValueError(f"--units {role}={unit}: {table.name} has no {role} column "
                              f"(found {_listed(c.header for c in found.values())})")
@@ -414,8 +416,10 @@ def _number(cell, decimal: str) -> tuple[float | None, str | None]:
     if isinstance(cell, int | float):
         return float(cell), None
     text = str(cell).strip()
-    match = re.match(r"^(?P<number>\S+?)\s*(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$", text)
-    if not match:
+    if text.lower().lstrip("+-") in ("nan", "inf", "infinity"):
+        return float(text), None
+    match = re.match(r"^(?P<number>[-+.,\deE]+?)\s*(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$", text)
+    if not match or not _NUMBER.match(match.group("number")):
         return None, None
     number = match.group("number")
     if decimal == ",":
@@ -424,8 +428,6 @@ def _number(cell, decimal: str) -> tuple[float | None, str | None]:
         value = float(number)
     except ValueError:
         return None, None
-    if text.lower() in ("nan", "inf", "-inf", "+inf", "infinity"):
-        return value, None
     unit = match.group("unit")
     if unit is not None and parse_unit(unit) is None:
         return None, None
