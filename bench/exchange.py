@@ -44,8 +44,10 @@ from mkm.bench.tables import (
     column_values,
     directions,
     flags,
+    key_values,
     read_tables,
     recognise,
+    sheet_names,
 )
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
 from mkm.fem.muscle import check_value
@@ -121,16 +123,15 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     written then.
     """
     path = Path(path)
-    tables = read_tables(path, sheet)
     muscle = dict(muscle)
-    names = [t.sheet for t in tables]
-    if sheet is None and set(EXPORT_SHEETS) <= set(names):  # mkm export's own workbook
-        meta = next(t for t in tables if t.sheet == "metadata")
-        known = {str(r[0]): r[1] for r in [meta.header, *meta.rows] if len(r) > 1}
+    if sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path)):  # mkm export's own
+        known = key_values(path, "metadata")
         for key in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
             if muscle.get(key) is None and f"muscle.{key}" in known:
                 muscle[key] = known[f"muscle.{key}"]
-        tables = [t for t in tables if t.sheet == "steps"]
+        sheet = "steps"
+    tables = read_tables(path, sheet)
+    names = [t.sheet for t in tables]
     prepared, skipped = [], []
     for table in tables:
         found = recognise(table, columns, units)
@@ -187,8 +188,8 @@ class _Group:
     def columns(self):
         return self.recognition.columns
 
-    def values(self, role: str) -> np.ndarray:
-        return column_values(self.table, self.columns[role])[self.rows]
+    def values(self, role: str, optional: bool = False) -> np.ndarray:
+        return column_values(self.table, self.columns[role], optional)[self.rows]
 
     def cell(self, k: int, role: str) -> str:
         return self.table.cell(int(self.rows[k]), self.columns[role].index)
@@ -254,7 +255,7 @@ def _single(group: _Group, role: str) -> float:
 
 def _muscle(given: dict, group: _Group):
     """The muscle of one state: the table's L0 and eps (or length) over the ones given."""
-    where = f"{group.table.name} ({group.state}): "
+    where = f"{group.table.source.name} ({group.state}): "
     values = dict(given)
     if "L0" in group.columns:
         values["L0_mm"] = _single(group, "L0")
@@ -299,9 +300,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         handling["vented_reading_bar"] = offset
         handling["vented"] = ("detected" if vented == "auto" else
                               "none" if vented == "none" else "given")
+        pressure = pressure - offset
         if offset:
-            pressure = np.maximum(pressure - offset, 0.0)
             notes.append(f"vented reading {offset:.3g} bar {handling['vented']}: subtracted")
+        # a gauge's noise around its vented zero is not a vacuum
+        noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
+        pressure = np.where(noise, 0.0, pressure)
+        handling["readings_below_zero_set_to_0"] = int(noise.sum())
     for k, p in enumerate(pressure):
         if p < 0:
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
@@ -346,7 +351,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
             raise ValueError(f"{table.name} ({group.state}): no step found in the time series "
                              f"(pressure {pressure.min():g}-{pressure.max():g} bar)")
         tare_rows = (np.arange(pressure.size) < series.rising_end(pressure)) & (
-            pressure <= handling["tare_at_bar"] + series.PLATEAU_TOLERANCE_BAR) & (step_of < 0)
+            pressure <= handling["tare_at_bar"] + series.PLATEAU_TOLERANCE_BAR)
         samples = [Sample(k, float(t), int(s), "tare" if tare_rows[k] else "step", math.nan,
                           math.nan, float(p), math.nan, math.nan, float(f), "")
                    for k, (t, s, p, f) in enumerate(zip(time_s, step_of, pressure, force,
@@ -354,7 +359,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         notes.insert(0, f"{len(samples)} samples")
     else:
         shape = "steps"
-        std = group.values("force_std") if "force_std" in found else \
+        std = group.values("force_std", optional=True) if "force_std" in found else \
             np.full(pressure.size, math.nan)
         repeats: dict[tuple[str, float], int] = {}
         steps = []
@@ -368,8 +373,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         handling["slack_rows"] = slack
         if slack:
             notes.append(f"{slack} slack row(s) ({found['slack'].header}): kept at their force")
-    if shape != "staircase" and len({s.direction for s in steps}) == 1 and \
-            not np.any(np.abs(force) > 0):
+    if not np.any(force != 0):
         notes.append("every force is 0 N: no model error can be scored against this run")
     now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
     prov = provenance()

@@ -158,6 +158,35 @@ def _separator(lines: list[str]) -> str:
     return best
 
 
+def sheet_names(path: str | Path) -> list[str]:
+    """The sheets of the workbook ``path`` (empty for a text table)."""
+    import openpyxl
+
+    path = Path(path)
+    if path.suffix.lower() not in (".xlsx", ".xlsm"):
+        return []
+    try:
+        book = openpyxl.load_workbook(path, read_only=True)
+    except Exception:  # read_tables says what is wrong with it
+        return []
+    try:
+        return list(book.sheetnames)
+    finally:
+        book.close()
+
+
+def key_values(path: str | Path, sheet: str) -> dict[str, object]:
+    """A sheet of two columns (key, value) as a dict, the header row left out."""
+    import openpyxl
+
+    book = openpyxl.load_workbook(path, read_only=True, data_only=True)
+    try:
+        rows = list(book[sheet].iter_rows(values_only=True))
+    finally:
+        book.close()
+    return {str(r[0]): r[1] for r in rows[1:] if len(r) > 1 and r[0] is not None}
+
+
 def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
     import openpyxl
 
@@ -374,14 +403,18 @@ def _listed(headers) -> str:
     return ", ".join(shown) if shown else "no named column"
 
 
-def column_values(table: RawTable, column: Column) -> np.ndarray:
+def column_values(table: RawTable, column: Column, optional: bool = False) -> np.ndarray:
     """The cells of ``column`` as numbers in the toolkit's unit (pint converts); ``ValueError``
-    naming the first cell that is text, not finite, or carries a unit other cells do not."""
+    naming the first cell that is text, not finite, or carries a unit other cells do not
+    (``optional``: an empty cell is NaN, a value not known)."""
     role = ROLES[column.role]
     raw = [row[column.index] for row in table.rows]
     values = np.empty(len(raw))
     inline: dict[str, int] = {}
     for k, cell in enumerate(raw):
+        if optional and str(cell).strip() == "":
+            values[k] = math.nan
+            continue
         number, unit = _number(cell, table.decimal)
         if number is None:
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "

@@ -78,6 +78,7 @@ def _import(args) -> int:
     from mkm.paths import default_out
     from mkm.progress import summary_line
 
+    lines: list[str] = []
     runs = import_table(
         args.table, args.out or default_out("runs"),
         {"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0, "L0_mm": args.L0,
@@ -86,7 +87,9 @@ def _import(args) -> int:
         units=parse_assignments(args.units, "--units"), sheet=args.sheet,
         tare=parse_zero(args.tare, "--tare", "N"), vented=parse_zero(args.vented, "--vented",
                                                                        "bar"),
-        select=args.muscle, notify=lambda line: summary_line("import", line))
+        select=args.muscle, notify=lines.append)
+    for line in lines:  # after the import: bad input stays one line
+        summary_line("import", line)
     for run in runs:
         summary_line("import", run.line())
     for run in runs:
