@@ -87,7 +87,9 @@ class ImportedRun:
     notes: list[str]
 
     def line(self) -> str:
-        return f"{self.state}: {self.n_steps} {self.shape} step(s)" + "".join(
+        made = {"steps": "one table row each", "staircase": "the plateaus of a staircase",
+                "ramp": "quasi-static bins of a ramp"}[self.shape]
+        return f"{self.state}: {self.n_steps} step(s), {made}" + "".join(
             f"; {n}" for n in self.notes)
 
 
@@ -232,7 +234,8 @@ def _groups(recognition: Recognition, select: str | None, several_sheets: bool) 
     for key in order:
         rows = np.flatnonzero([tuple(k) == key and kept for k, kept in zip(keys, keep,
                                                                            strict=True)])
-        parts = [f"{label} {value}" for label, value in zip(labels, key, strict=True)]
+        parts = [f"{label} {value}{' mm' if label in ('length', 'L0') else ''}"
+                 for label, value in zip(labels, key, strict=True)]
         if several_sheets or (table.sheet and not parts):
             parts.insert(0, f"sheet {table.sheet!r}")
         groups.append(_Group(recognition, rows, ", ".join(parts) or table.source.name,
