@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from mkm.bench.storage import load_run
 from mkm.registry import parse_specs
@@ -17,6 +18,7 @@ TABLE = Path(__file__).parents[2] / "data" / "published" / "martens_boblan_2017_
 MUSCLE = ["--id", "dmsp-20", "--D0", "20", "--t0", "1.8", "--muscle", "Festo DMSP-20-300"]
 
 
+@pytest.mark.slow  # three command-line reports with figures: about a minute
 def test_martens_boblan_import_identify_report(tmp_path, mkm_cli):
     code, out, err = mkm_cli(["import", str(TABLE), *MUSCLE, "--out", str(tmp_path / "runs")])
     assert code == 0, err
