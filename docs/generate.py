@@ -284,6 +284,7 @@ BENCHMARKS = {
     "dataset.json": "benchmarks/bench_dataset.py --workers 1 2 --json {out}",
     "batch.json": "benchmarks/bench_batch.py --json {out}",
     "startup.json": "benchmarks/bench_startup.py --json {out}",
+    "published.json": "benchmarks/bench_published.py --json {out}",
 }
 
 
