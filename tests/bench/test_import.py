@@ -224,3 +224,31 @@ def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     assert code == 2 and out == "" and err.count("\n") == 1, err
     assert message in err
     assert not (tmp_path / "runs").exists()  # nothing written
+
+
+def test_calibrate_reads_an_imported_run(tmp_path, mkm_cli):
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure [kPa]": PRESSURES[:5] * 100,
+                  "Force (N)": thickwall_N(PRESSURES[:5], 0.122)}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122")
+    code, out, err = mkm_cli(["fem", "calibrate", "--model", "thickwall", "--reference",
+                              str(run.path), "--dry-run"])
+    assert code == 0, err
+    # the forces were made at 32 deg; 6 significant digits stored: the angle back within 0.01
+    theta0 = float(out.split("theta0 = ")[1].split()[0])
+    assert theta0 == pytest.approx(THETA0, abs=0.01)
+
+
+def test_lengths_and_rest_lengths_from_the_file(tmp_path, mkm_cli):
+    # two tubes of one muscle family, cut to 250 and 300 mm, each held at two lengths
+    rows = []
+    for L0, L in ((250.0, 250.0), (250.0, 220.0), (300.0, 270.0), (300.0, 300.0)):
+        eps = (L0 - L) / L0
+        for p, f in zip(PRESSURES[:5], thickwall_N(PRESSURES[:5], eps), strict=True):
+            rows.append({"rest length (mm)": L0, "length (mm)": L, "P (bar)": p, "F (N)": f})
+    path = tmp_path / "family.csv"
+    pd.DataFrame(rows).to_csv(path, index=False)
+    runs, err = _import(mkm_cli, path, "--id", "family-3", "--D0", "30", "--t0", "3")
+    assert [(r.meta.muscle.L0_mm, r.meta.muscle.eps) for r in runs] == [
+        (250.0, 0.0), (250.0, pytest.approx(0.12)), (300.0, pytest.approx(0.1)), (300.0, 0.0)]
+    assert all(r.meta.muscle.id == "family-3" and len(r.steps) == 5 for r in runs)
