@@ -381,6 +381,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
     now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
     prov = provenance()
     imported = {"file": path.name, "sha256": sha, "shape": shape, "state": group.state,
+                "split_by": group.key,
                 **group.recognition.describe(), **handling}
     meta = RunMeta(
         muscle=muscle, status=RunStatus.IMPORTED,

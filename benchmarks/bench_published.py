@@ -12,6 +12,11 @@ out`` otherwise. Its largest |Err%| (the paper's Equation 7, over the length's o
 force) and RMSE [N]; a length where the muscle is slack at every pressure has no Err%. Prints
 one row per length and the wall time of each stage; ``--json`` keeps them (the docs page
 "Validation against published measurements" shows that file).
+
+``--report-timing`` also times ``mkm report`` as a user runs it (a new process, the default
+models, no prediction cache) on the four DMSP-10-250 lengths with force: a 10 mm muscle at
+6.5 bar, outside the surrogate's box (D0 30-50 mm, 0-2.5 bar). One run: it takes tens of
+seconds.
 """
 
 from __future__ import annotations
@@ -61,7 +66,17 @@ def _scores(paths, out: Path, model: str, calibration: Path | None) -> pd.DataFr
     return pd.read_csv(out / "summary.csv").set_index("run")
 
 
-def measure(model: str, work: Path) -> tuple[list[dict], dict]:
+def _timed_report(paths, out: Path) -> float:
+    import subprocess
+
+    script = Path(sys.executable).parent / ("mkm.exe" if os.name == "nt" else "mkm")
+    start = time.perf_counter()
+    subprocess.run([str(script), "report", *paths, "--out", str(out), "--no-cache",
+                    "--no-progress"], check=True, capture_output=True)
+    return time.perf_counter() - start
+
+
+def measure(model: str, work: Path, report_timing: bool = False) -> tuple[list[dict], dict]:
     rows, seconds = [], {}
     for name, (muscle_id, D0, t0) in MUSCLES.items():
         start = time.perf_counter()
@@ -84,6 +99,9 @@ def measure(model: str, work: Path) -> tuple[list[dict], dict]:
         before = _scores(paths, work / f"{muscle_id}-nominal", model, None)
         values = json.loads((identified / "identification.json").read_text(encoding="utf-8"))
         fitted = {p["parameter"]: p["value"] for p in values["parameters"]}
+        if report_timing and muscle_id == "dmsp-10":
+            seconds["mkm report, 4 DMSP-10 lengths, default models, no cache"] = _timed_report(
+                paths[:4], work / "timed")
         for k, path in enumerate(paths):
             run = Path(path).name
             rows.append({
@@ -101,10 +119,12 @@ def run(argv=None) -> dict:
     parser.add_argument("--model", default="thickwall",
                         help="the static model identified and scored (default %(default)s)")
     parser.add_argument("--json", help="write the rows and timings here")
+    parser.add_argument("--report-timing", action="store_true",
+                        help="also time mkm report on four 10 mm runs at 6.5 bar")
     args = parser.parse_args(argv)
     load_before = os.getloadavg() if hasattr(os, "getloadavg") else None
     with tempfile.TemporaryDirectory() as work:
-        rows, seconds = measure(args.model, Path(work))
+        rows, seconds = measure(args.model, Path(work), args.report_timing)
     frame = pd.DataFrame(rows)
     print(frame.to_string(index=False, float_format=lambda v: f"{v:.3g}"))
     for stage, s in seconds.items():
@@ -113,7 +133,9 @@ def run(argv=None) -> dict:
     record = {"date_utc": prov["date_utc"], "command": prov["command"],
               "machine": prov["machine"], "versions": prov["versions"],
               "table": TABLE.name, "table_sha256": file_sha256(TABLE), "model": args.model,
-              "load_average_before": load_before, "seconds": seconds,
+              "load_average_before": load_before,
+              "load_average_after": os.getloadavg() if hasattr(os, "getloadavg") else None,
+              "seconds": seconds,
               "rows": json.loads(frame.to_json(orient="records"))}
     if args.json:
         Path(args.json).write_text(json.dumps(record, indent=2) + "\n", encoding="utf-8")
