@@ -23,7 +23,7 @@ def register(subparsers) -> None:
         "write one run folder per muscle state (a sheet, or a value of an eps, length, L0 or "
         "run column), status 'imported', that report, calibrate, identify and export read. "
         "Columns are recognised by name and unit (P, Pressure (bar), pressure [kPa], p_psi, "
-        "Force (N), F [kgf], load_lbf, t (s), direction, eps, contraction (%%), length (mm)) "
+        "Force (N), F [kgf], load_lbf, t (s), direction, eps, contraction (%), length (mm)) "
         "and converted with pint; what was recognised is printed and recorded in run.json. A "
         "table with a time column is a time series: stored as samples, its steps the plateaus "
         "of a staircase or quasi-static bins of a ramp (rising and falling apart).",
