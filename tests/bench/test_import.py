@@ -252,3 +252,32 @@ def test_lengths_and_rest_lengths_from_the_file(tmp_path, mkm_cli):
     assert [(r.meta.muscle.L0_mm, r.meta.muscle.eps) for r in runs] == [
         (250.0, 0.0), (250.0, pytest.approx(0.12)), (300.0, pytest.approx(0.1)), (300.0, 0.0)]
     assert all(r.meta.muscle.id == "family-3" and len(r.steps) == 5 for r in runs)
+
+
+def test_a_staircase_in_time_identifies_creep_where_holds_were_timed(tmp_path, mkm_cli):
+    # 20 s holds up and down at 10 Hz: creep of 5 % over tau = 5 s relaxes within each hold
+    levels = [0.5, 1.0, 1.5, 2.0, 1.5, 1.0, 0.5]
+    knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
+    for level in levels:
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 21.0]
+        knots_p += [level, level]
+    t = np.arange(0.0, knots_t[-1], 0.1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.05, 5.0)
+    rng = np.random.default_rng(3)
+    path = tmp_path / "stair.csv"
+    pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
+                  "F": truth + rng.normal(0, 0.2, t.size)}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    code, out, err = mkm_cli(["identify", str(run.path), "--model", "thickwall", "--search",
+                              "model", "--params", "theta0,friction,creep", "--out",
+                              str(tmp_path / "id"), "--workers", "1"])
+    assert code == 0, err
+    assert "not fitted" not in out  # both branches and timed holds: friction and creep kept
+    values = {row["parameter"]: row["value"] for row in json.loads(
+        (tmp_path / "id" / "identification.json").read_text())["parameters"]}
+    # 0.2 N of noise on ~300 N: the bootstrap's 95 % intervals are about these widths
+    assert values["theta0_deg"] == pytest.approx(THETA0, abs=0.2)
+    assert values["hysteresis_fraction"] == pytest.approx(0.03, abs=0.003)
+    assert values["creep_fraction"] == pytest.approx(0.05, abs=0.015)
+    assert values["creep_tau_s"] == pytest.approx(5.0, abs=1.5)
