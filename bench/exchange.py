@@ -41,7 +41,6 @@ from mkm.bench.storage import (
 from mkm.bench.tables import (
     Recognition,
     column_text,
-    column_values,
     directions,
     flags,
     key_values,
@@ -191,7 +190,7 @@ class _Group:
         return self.recognition.columns
 
     def values(self, role: str, optional: bool = False) -> np.ndarray:
-        return column_values(self.table, self.columns[role], optional)[self.rows]
+        return self.recognition.values(role, optional)[self.rows]
 
     def cell(self, k: int, role: str) -> str:
         return self.table.cell(int(self.rows[k]), self.columns[role].index)
@@ -225,7 +224,7 @@ def _groups(recognition: Recognition, select: str | None, several_sheets: bool) 
         if role == "run":
             values = column_text(table, found[role])
         else:
-            values = [f"{v:.6g}" for v in column_values(table, found[role])]
+            values = [f"{v:.6g}" for v in recognition.values(role)]
         labels.append(role)
         for k in range(n):
             keys[k].append(values[k])

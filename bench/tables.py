@@ -517,6 +517,15 @@ class Recognition:
     table: RawTable
     columns: dict[str, Column]
     ignored: list[str] = field(default_factory=list)
+    _values: dict = field(default_factory=dict, repr=False)
+
+    def values(self, role: str, optional: bool = False) -> np.ndarray:
+        """:func:`column_values` of the role's column, read once (a table split into many
+        runs is read per run)."""
+        if (role, optional) not in self._values:
+            self._values[role, optional] = column_values(self.table, self.columns[role],
+                                                         optional)
+        return self._values[role, optional]
 
     def line(self) -> str:
         """``P_bar -> pressure [bar], F [kgf] -> force [kgf -> N], ...; decimal comma``."""
