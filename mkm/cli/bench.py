@@ -257,11 +257,21 @@ def _vent(args) -> int:
         return EXIT_FAILED
     if out["manual"]:
         print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "
-              "and check the manometer")
-        return 0
+              "and check the manometer", flush=True)
+        return _bookkeeping(out["bookkeeping"])
     shown = f"{out['pressure_bar']:.3f}".replace("-0.000", "0.000")  # sensor noise around 0
-    print(f"vented: {shown} bar after {out['waited_s']:.1f} s")
-    return 0
+    print(f"vented: {shown} bar after {out['waited_s']:.1f} s", flush=True)
+    return _bookkeeping(out["bookkeeping"])
+
+
+def _bookkeeping(problems: list[str]) -> int:
+    """After a vent: the bench state folder's problems, one line (exit 1: the lock and the
+    markers that keep two commands off one bench do not work until it is mended)."""
+    if not problems:
+        return 0
+    problems = "; ".join(dict.fromkeys(problems))  # request and lock often fail alike
+    print(f"mkm: error: vented, but the bench bookkeeping failed: {problems}", file=sys.stderr)
+    return EXIT_FAILED
 
 
 def _reprocess(args) -> int:
