@@ -30,7 +30,7 @@ from mkm.bench.backend import (
     DriverMissing,
     ReadTimeout,
 )
-from mkm.bench.devices import USB6001
+from mkm.bench.devices import USB6001, device_key
 
 USB6001_RANGE_V = USB6001.ai_range_V
 
@@ -85,8 +85,8 @@ class NIBackend:
 
     def __init__(self, config):
         self.config = config
-        self.device = config.daq.device
-        self.bench_key = f"ni-{self.device}"
+        self.device = config.daq.device.strip()
+        self._bench_key: str | None = None
         self.rate_hz = config.daq.sample_rate_hz
         self.ai_task = None
         self.ao_task = None
@@ -97,11 +97,32 @@ class NIBackend:
         self._started_at: float | None = None
 
     @property
+    def bench_key(self) -> str:
+        """The physical device: ``ni-serial-<serial number>`` as the driver reads it (one key
+        whatever NI MAX calls the device and however the name is written), else the name as
+        NI-DAQmx compares it (driver or device missing: nothing can be driven anyway)."""
+        if self._bench_key is None:
+            try:
+                self._bench_key = f"ni-serial-{self._serial()}"
+            except BenchError:
+                self._bench_key = f"ni-{device_key(self.device)}"
+        return self._bench_key
+
+    def _serial(self) -> str:
+        try:
+            import nidaqmx.system
+        except ImportError:
+            raise DriverMissing(DRIVER_MISSING) from None
+        with daq_errors():
+            return f"{int(nidaqmx.system.Device(self.device).serial_num):X}"
+
+    @property
     def ai_channels(self) -> list[str]:
         return self.config.ai_channels
 
     def open(self) -> DeviceInfo:
         import nidaqmx
+        import nidaqmx.system
         from nidaqmx.constants import AcquisitionType, TerminalConfiguration
         from nidaqmx.stream_readers import AnalogMultiChannelReader
         from nidaqmx.stream_writers import AnalogSingleChannelWriter

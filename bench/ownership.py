@@ -11,7 +11,8 @@ holder never blocks the bench: the next command takes the lock and vents first
 (:mod:`mkm.bench.unvented`).
 
 The lock (``filelock``, portable to Windows) and two small files live in the bench state
-folder (:func:`mkm.bench.unvented.state_dir`), keyed by the bench (backend and device name):
+folder (:func:`mkm.bench.unvented.state_dir`), keyed by the physical bench (the backend and the
+device's serial number on NI, else its name as NI-DAQmx compares it, case folded):
 ``<bench>.lock``, ``<bench>.owner`` (who holds it) and ``<bench>.stop`` (a stop request).
 """
 

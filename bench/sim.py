@@ -196,7 +196,7 @@ class SimBackend:
             raise ValueError(f"clock={clock!r} is invalid: expected 'virtual' or 'real'")
         self.config = config
         self.clock = clock
-        self.bench_key = f"sim-{config.daq.device}"
+        self.bench_key = f"sim-{config.daq.device.strip()}"  # the lock folds the case
         self.rate_hz = config.daq.sample_rate_hz
         buffer_s = config.sim.buffer_s or config.daq.buffer_s
         self.buffer_samples = int(round(buffer_s * self.rate_hz))

@@ -33,8 +33,10 @@ def state_dir() -> Path:
 
 
 def bench_folder_name(bench_key: str) -> str:
-    """``bench_key`` as a file name of the state folder."""
-    return re.sub(r"[^A-Za-z0-9._-]", "_", bench_key)
+    """``bench_key`` as a file name of the state folder: case folded, as NI-DAQmx compares
+    device names (:func:`mkm.bench.devices.device_key`), so one device has one lock on every
+    file system, case-sensitive or not."""
+    return re.sub(r"[^a-z0-9._-]", "_", bench_key.strip().casefold())
 
 
 def _folder(bench_key: str) -> Path:

@@ -14,6 +14,12 @@ from mkm.core.home import user_state
 QUIET = {"notify": lambda m: None}
 
 
+def _lock_path(bench_key):
+    from mkm.bench.unvented import bench_folder_name
+
+    return user_state() / "benches" / f"{bench_folder_name(bench_key)}.lock"
+
+
 def _commands_of_vents(monkeypatch):
     """Record every AO write of the simulated bench (volts), across the backends made."""
     from mkm.bench.sim import SimBackend
@@ -33,7 +39,7 @@ def _commands_of_vents(monkeypatch):
 
 def test_vent_with_a_lock_that_is_a_folder_vents_then_says_so(mkm_cli, monkeypatch):
     written = _commands_of_vents(monkeypatch)
-    (user_state() / "benches" / "sim-Dev1.lock").mkdir(parents=True)
+    _lock_path("sim-Dev1").mkdir(parents=True)
     code, out, err = mkm_cli(["vent", "--backend", "sim"])
     assert out.startswith("vented: 0.000 bar") and written and set(written) == {0.0}
     assert code == 1 and "Traceback" not in err and len(err.strip().splitlines()) == 1
@@ -74,7 +80,7 @@ def test_vent_with_a_full_state_folder_vents_then_says_so(mkm_cli, monkeypatch):
 def test_a_run_is_refused_not_started_when_the_lock_is_a_folder(config, tmp_path):
     from mkm.bench.backend import BenchError
 
-    (user_state() / "benches" / "sim-Dev1.lock").mkdir(parents=True)
+    _lock_path("sim-Dev1").mkdir(parents=True)
     with pytest.raises(BenchError, match="is not a file"):
         acquire(config, out_root=tmp_path / "runs", **QUIET)
     assert list((tmp_path / "runs").iterdir()) == []
@@ -112,3 +118,27 @@ def test_a_normal_run_to_the_limit_is_not_an_over_pressure(config, tmp_path):
     c = config.replace(sequence={"pressures_bar": (2.5,)})
     result = acquire(c, out_root=tmp_path, **QUIET)
     assert result.status == "complete" and result.exit_code == 0
+
+
+# 3. one lock per physical device ------------------------------------------------------------
+
+@pytest.mark.parametrize("device", ["dev1", "Dev1 ", "DEV1"])
+def test_one_device_written_differently_is_one_bench(config, tmp_path, device):
+    from mkm.bench.ownership import BenchBusy, BenchOwner
+    from mkm.bench.sim import SimBackend
+
+    held = SimBackend(config)
+    other = config.replace(daq={"device": device})
+    with BenchOwner(held.bench_key, "acquire"):
+        with pytest.raises(BenchBusy, match="in use by pid"):
+            acquire(other, out_root=tmp_path / "runs", **QUIET)
+    assert _lock_path(SimBackend(other).bench_key) == _lock_path(held.bench_key)
+
+
+def test_a_real_bench_is_keyed_by_its_serial_number(config, fake_driver):
+    from mkm.bench.ni import NIBackend
+
+    # the fake driver's device has serial 0x1F2E3D4, whatever NI MAX calls it
+    keys = {NIBackend(config.replace(daq={"backend": "ni", "device": d})).bench_key
+            for d in ("Dev1", "bench-left")}
+    assert keys == {"ni-serial-1F2E3D4"}
