@@ -39,7 +39,7 @@ def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[De
         info = backend.open()
         try:
             for marker in vent_unvented(backend):
-                notify(f"{marker.describe()}: vented now")
+                notify(marker.vented_now())
             yield info
         finally:
             backend.close()
@@ -134,7 +134,7 @@ def _mend_dead_runs(device: Backend, notify) -> list[str]:
     folders; the problems met (a state folder that cannot be read or written)."""
     try:
         for marker in vent_unvented(device):
-            notify(f"{marker.describe()}: vented now")
+            notify(marker.vented_now())
     except OSError as exc:
         return [f"the markers of dead runs in the bench state folder could not be handled "
                 f"({exc.strerror or exc})"]

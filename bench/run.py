@@ -273,7 +273,7 @@ class BenchRun:
         info = self.backend.open()  # writes the vent command first
         self.unvented = vent_unvented(self.backend)
         for marker in self.unvented:
-            self.notify(f"{marker.describe()}: vented now")
+            self.notify(marker.vented_now())
         self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
                                  estimate_duration_s(self.config),
                                  [vars(m) for m in self.unvented])

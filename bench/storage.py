@@ -66,6 +66,7 @@ class RunStatus(enum.StrEnum):
     ABORTED = "aborted"  # stopped on purpose: interlock, signal, operator
     FAILED = "failed"  # stopped by an error: device, storage, tare
     INCOMPLETE = "incomplete"  # never written: the loader's verdict on a dead "running" record
+    KILLED = "killed"  # its process died mid-run: written by the next command that found it
     IMPORTED = "imported"  # measured elsewhere (another bench, a spreadsheet): mkm import
 
     @property
@@ -798,6 +799,9 @@ def load_run(path: str | Path) -> Run:
         unvented = _unvented(commands)
         if unvented:
             problems.append(unvented)
+    elif status == RunStatus.KILLED:
+        problems.append(meta.reason)
+        unvented = _unvented(commands)
     elif meta.manual_vent_required:
         unvented = "the final vent command failed: the muscle had to be vented by hand"
         problems.append(unvented)

@@ -4,6 +4,8 @@ per finding; each failed before the fix.
 """
 
 import errno
+import json
+import sys
 
 import pytest
 
@@ -142,3 +144,77 @@ def test_a_real_bench_is_keyed_by_its_serial_number(config, fake_driver):
     keys = {NIBackend(config.replace(daq={"backend": "ni", "device": d})).bench_key
             for d in ("Dev1", "bench-left")}
     assert keys == {"ni-serial-1F2E3D4"}
+
+
+# 4. a dead run's folder is mended by the command that finds it --------------------------------
+
+def _killed_run(tmp_path):
+    """`mkm acquire --clock real` killed (SIGKILL) once it has commanded a pressure; returns the
+    run folder. The run records into a relative --out, as an operator types it."""
+    import signal
+    import subprocess
+    import time
+
+    from mkm.bench.config import load_config
+
+    text = load_config().text.replace("tare_s = 5.0", "tare_s = 2.0")
+    (tmp_path / "bench.toml").write_text(text, encoding="utf-8")
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "mkm", "acquire", "--config", "bench.toml", "--clock", "real",
+         "--out", "runs", "--no-progress"], cwd=tmp_path, stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL)
+    try:
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline:
+            commands = list((tmp_path / "runs").glob("*/commands.csv"))
+            if commands and "2.5" in commands[0].read_text():
+                break
+            time.sleep(0.1)
+        else:
+            raise AssertionError("the run never commanded a pressure")
+    finally:
+        proc.send_signal(signal.SIGKILL if hasattr(signal, "SIGKILL") else signal.SIGTERM)
+        proc.wait(30)
+    return commands[0].parent
+
+
+def test_the_command_that_finds_a_killed_run_mends_its_folder(tmp_path, mkm_cli):
+    from mkm.bench.unvented import find_unvented
+
+    path = _killed_run(tmp_path)
+    ((_, marker),) = find_unvented("sim-Dev1")
+    assert marker.run_path == str(path.resolve())  # absolute, whatever the cwd was
+    assert json.loads((path / "run.json").read_text())["status"] == "running"
+    code, out, err = mkm_cli(["vent", "--backend", "sim"])
+    assert code == 0 and "run.json mended: status killed" in err
+    meta = json.loads((path / "run.json").read_text())
+    rows = len((path / "samples.csv").read_text().splitlines()) - 1
+    assert meta["status"] == "killed" and meta["counters"]["samples"] == rows > 10
+    assert "died without closing the record" in meta["reason"] and meta["ended_utc"]
+    assert "last commanded pressure was 2.5 bar" in meta["reason"]
+    assert find_unvented("sim-Dev1") == []
+    run = load_run(path)
+    assert run.status == "killed" and not run.complete
+
+
+def test_a_signal_after_the_run_was_recorded_does_not_contradict_it(tmp_path):
+    import subprocess
+
+    # SIGTERM sent to itself right after the run was recorded, before the process exits
+    script = (
+        "import os, signal, sys\n"
+        "import mkm.bench.run as run\n"
+        "from mkm.__main__ import run as mkm\n"
+        "execute = run.BenchRun.execute\n"
+        "def late(self):\n"
+        "    result = execute(self)\n"
+        "    os.kill(os.getpid(), signal.SIGTERM)\n"
+        "    return result\n"
+        "run.BenchRun.execute = late\n"
+        "sys.argv = ['mkm', 'acquire', '--pressures', '0.5', '--out', 'runs', '--no-progress']\n"
+        "mkm()\n")
+    proc = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=120)
+    (path,) = (tmp_path / "runs").iterdir()
+    assert json.loads((path / "run.json").read_text())["status"] == "complete"
+    assert proc.returncode == 0, proc.stderr[-500:]
