@@ -32,6 +32,7 @@ from mkm.bench.storage import (
     StepRecord,
     load_run,
 )
+from mkm.core.guards import table_file
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
 from mkm.fem.muscle import check_value
 
@@ -47,9 +48,7 @@ EXCEL_MAX_ROWS = 1_048_575  # below the header row
 
 def read_table(path: str | Path) -> pd.DataFrame:
     """The table in ``path`` (``.csv``, ``.xlsx``: the first sheet); ``ValueError`` otherwise."""
-    path = Path(path)
-    if not path.is_file():
-        raise ValueError(f"{path}: no such file: expected a CSV or .xlsx table")
+    path = table_file(path)  # before any parser: links, empty files, bombs, DTDs refused
     suffix = path.suffix.lower()
     if suffix not in (".xlsx", ".xlsm", ".csv", ".txt"):
         raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv or .xlsx")
@@ -168,11 +167,14 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     if fmt not in ("xlsx", "csv"):
         raise ValueError(f"--format {fmt!r} is invalid: expected xlsx or csv")
     run = load_run(run_dir)
+    run.require_content("sheet")
     samples = run.samples
     if fmt == "xlsx" and len(samples) > EXCEL_MAX_ROWS:
         raise ValueError(f"{run.path.name} has {len(samples)} samples: a worksheet holds at "
                          f"most {EXCEL_MAX_ROWS}; use --format csv")
-    metadata = pd.DataFrame(_flatten(run.meta.as_dict()), columns=["key", "value"])
+    # the loader's status: a dead run's record still says "running"
+    metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status)}),
+                            columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}
     out = Path(out)

@@ -38,6 +38,7 @@ from typing import Any, NamedTuple
 import numpy as np
 import pandas as pd
 
+from mkm.core.guards import regular_file
 from mkm.core.records import spreadsheet_safe_text, write_json_atomic
 
 SCHEMA_VERSION = 2
@@ -613,6 +614,8 @@ DTYPES = {"flags": "string", "phase": "string", "direction": "string", "purpose"
 
 def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
               chunksize: int | None = None):
+    if path.is_symlink() or (path.exists() and not path.is_file()):
+        regular_file(path, "run folder file ")  # refused with its reason
     if not path.is_file():
         problems.append(f"{path.name} is missing")
         empty = pd.DataFrame(columns=list(columns))
@@ -737,6 +740,20 @@ class Run:
     def reason(self) -> str:
         return self.meta.reason
 
+    def require_content(self, what: str) -> None:
+        """``ValueError`` (one line naming ``what`` would be written) unless the run holds a
+        measurement: a finite force in its samples, or, imported, in its steps."""
+        if self.status == RunStatus.IMPORTED:
+            forces, where = self.steps.get("force_N_mean", pd.Series(dtype=float)), "steps"
+        else:
+            regular_file(self.path / "samples.csv", f"run {self.path.name}: ")
+            forces, where = self.samples["force_N"], "samples"
+        if len(forces) == 0:
+            raise ValueError(f"run {self.path} has no {where}: no {what} is written from it")
+        if not np.isfinite(pd.to_numeric(forces, errors="coerce").to_numpy(float)).any():
+            raise ValueError(f"run {self.path} has {len(forces)} {where} and not one finite "
+                             f"force: no {what} is written from it")
+
 
 MAX_RUN_JSON_BYTES = 10_000_000
 
@@ -752,6 +769,7 @@ def read_meta(path: str | Path) -> RunMeta:
                          f"({exc.strerror or exc})") from None
     if not is_file:
         raise ValueError(f"{path} is not a run folder: run.json is missing")
+    regular_file(meta_path, "run folder file ")
     if meta_path.stat().st_size > MAX_RUN_JSON_BYTES:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
                          f"record of at most {MAX_RUN_JSON_BYTES}")
@@ -779,6 +797,8 @@ def load_run(path: str | Path) -> Run:
     commands = _read_csv(path / "commands.csv", COMMAND_COLUMNS, problems)
     # partial-row and missing-file problems of samples.csv, without reading it
     samples_csv = path / "samples.csv"
+    if samples_csv.is_symlink() or (samples_csv.exists() and not samples_csv.is_file()):
+        regular_file(samples_csv, "run folder file ")  # a link or a pipe: refused
     if not samples_csv.is_file():
         problems.append("samples.csv is missing")
     else:

@@ -5,7 +5,9 @@ per finding; each failed before the fix.
 
 import errno
 import json
+import os
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -218,3 +220,140 @@ def test_a_signal_after_the_run_was_recorded_does_not_contradict_it(tmp_path):
     (path,) = (tmp_path / "runs").iterdir()
     assert json.loads((path / "run.json").read_text())["status"] == "complete"
     assert proc.returncode == 0, proc.stderr[-500:]
+
+
+# 5. no success without content --------------------------------------------------------------
+
+@pytest.fixture
+def recorded(config, tmp_path):
+    return acquire(config, out_root=tmp_path / "runs", **QUIET).path
+
+
+def _header_only(path):
+    lines = (path / "samples.csv").read_text().splitlines()
+    (path / "samples.csv").write_text(lines[0] + "\n")
+
+
+def test_reprocess_of_a_run_without_samples_refuses(recorded, tmp_path, mkm_cli):
+    _header_only(recorded)
+    (tmp_path / "new.toml").write_text('[loadcell]\nchannel = "ai0"\ncapacity_N = 1961.33\n'
+                                       'sensitivity_N_per_V = 200.0\noffset_V = 0.0\n')
+    before = sorted((tmp_path / "runs").iterdir())
+    code, out, err = mkm_cli(["reprocess", str(recorded), "--config",
+                              str(tmp_path / "new.toml")])
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "has 0 samples and not one finite load-cell reading" in err
+    assert sorted((tmp_path / "runs").iterdir()) == before  # nothing written
+
+
+@pytest.mark.parametrize("damage", ["header only", "missing", "fifo", "link to /dev/zero",
+                                    "no finite force"])
+def test_export_of_a_run_without_content_refuses(recorded, tmp_path, mkm_cli, damage):
+    samples = recorded / "samples.csv"
+    if damage == "header only":
+        _header_only(recorded)
+    elif damage == "missing":
+        samples.unlink()
+    elif damage == "fifo":
+        if not hasattr(os, "mkfifo"):
+            pytest.skip("no FIFOs here")
+        samples.unlink()
+        os.mkfifo(samples)
+    elif damage == "link to /dev/zero":
+        if not Path("/dev/zero").exists():
+            pytest.skip("no /dev/zero here")
+        samples.unlink()
+        samples.symlink_to("/dev/zero")
+    else:
+        lines = samples.read_text().splitlines()
+        header = lines[0].split(",")
+        k = header.index("force_N")
+        rows = [row.split(",") for row in lines[1:]]
+        for row in rows:
+            row[k] = ""
+        samples.write_text("\n".join([lines[0], *(",".join(r) for r in rows)]) + "\n")
+    out_file = tmp_path / "out.xlsx"
+    code, out, err = mkm_cli(["export", str(recorded), "--out", str(out_file)])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert not out_file.exists()
+
+
+def test_export_of_a_dead_run_says_incomplete_not_running(recorded, tmp_path, mkm_cli):
+    meta = json.loads((recorded / "run.json").read_text())
+    meta["status"], meta["process"]["pid"] = "running", 2**22 + 5  # dead
+    (recorded / "run.json").write_text(json.dumps(meta))
+    code, _, err = mkm_cli(["export", str(recorded), "--format", "csv", "--out",
+                            str(tmp_path / "csv")])
+    assert code == 0, err
+    text = (tmp_path / "csv" / "metadata.csv").read_text()
+    assert "status,incomplete" in text and "status,running" not in text
+
+
+# 6. guarded readers -------------------------------------------------------------------------
+
+MUSCLE = ["--id", "lab-7", "--D0", "30", "--t0", "3", "--L0", "282", "--eps", "0.1"]
+
+
+def _workbook(path, sheet_xml: bytes | None = None, pad_bytes: int = 0):
+    """A real .xlsx written by openpyxl, its first sheet's XML replaced or padded if asked."""
+    import zipfile
+
+    import pandas as pd
+
+    pd.DataFrame({"pressure_bar": [0.5, 1.0], "force_N": [10.0, 20.0]}).to_excel(
+        path, index=False, engine="openpyxl")
+    if sheet_xml is None and not pad_bytes:
+        return path
+    with zipfile.ZipFile(path) as old:
+        members = {m.filename: old.read(m) for m in old.infolist()}
+    if sheet_xml is not None:
+        members["xl/worksheets/sheet1.xml"] = sheet_xml
+    if pad_bytes:  # highly compressible: a small file that expands to pad_bytes
+        members["xl/media/pad.bin"] = b"\0" * pad_bytes
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as new:
+        for name, data in members.items():
+            new.writestr(name, data)
+    return path
+
+
+BILLION_LAUGHS = (b'<?xml version="1.0"?><!DOCTYPE lolz [<!ENTITY lol "lol">'
+                  b'<!ENTITY lol2 "&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;">]>'
+                  b'<worksheet xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/'
+                  b'main"><sheetData><row r="1"><c r="A1" t="inlineStr"><is><t>&lol2;</t>'
+                  b'</is></c></row></sheetData></worksheet>')
+
+
+@pytest.mark.parametrize("name, make, message", [
+    ("empty.csv", lambda p: p.write_bytes(b""), "is empty (0 bytes)"),
+    ("text.xlsx", lambda p: p.write_text("pressure_bar,force_N\n1,2\n"),
+     "is not an Excel workbook"),
+    ("random.xlsx", lambda p: p.write_bytes(bytes(range(256)) * 40), "is not an Excel workbook"),
+    ("laughs.xlsx", lambda p: _workbook(p, BILLION_LAUGHS), "holds an XML document type"),
+    ("bomb.xlsx", lambda p: _workbook(p, pad_bytes=250_000_000), "expands to"),
+    ("passwd.csv", lambda p: p.symlink_to("/etc/passwd"), "is a symbolic link: refused"),
+])
+def test_hostile_tables_are_refused_in_one_line(tmp_path, mkm_cli, name, make, message):
+    if name == "passwd.csv" and not Path("/etc/passwd").exists():
+        pytest.skip("no /etc/passwd here")
+    table = tmp_path / name
+    make(table)
+    code, out, err = mkm_cli(["import", str(table), *MUSCLE, "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1 and message in err, err
+    assert "root:" not in err  # no file content in a message
+    assert not (tmp_path / "runs").exists() or not any((tmp_path / "runs").iterdir())
+
+
+def test_a_real_workbook_still_imports(tmp_path, mkm_cli):
+    code, out, err = mkm_cli(["import", str(_workbook(tmp_path / "lab.xlsx")), *MUSCLE,
+                              "--out", str(tmp_path / "runs")])
+    assert code == 0, err
+    assert load_run(out.strip()).status == "imported"
+
+
+@pytest.mark.parametrize("name", ["run.json", "samples.csv", "steps.csv"])
+def test_a_run_folder_file_that_is_a_link_is_refused(recorded, name):
+    target = recorded.parent / f"elsewhere-{name}"
+    (recorded / name).rename(target)
+    (recorded / name).symlink_to(target)
+    with pytest.raises(ValueError, match=f"{name} is a symbolic link: refused"):
+        load_run(recorded).samples  # noqa: B018 (read on first use)
