@@ -26,6 +26,8 @@ import os
 import platform
 import sys
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from functools import cache
 from importlib.util import resolve_name
 from pathlib import Path
@@ -95,6 +97,33 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
         Path(tmp).unlink(missing_ok=True)
         raise
     return path
+
+
+@contextmanager
+def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[Path]:
+    """Write a folder's files whole or not at all: yields a temporary folder beside ``out``
+    (same file system); when the block ends normally each file is moved into ``out`` (made if
+    needed; ``last`` moved last, so its presence means the rest is there), and the temporary
+    folder removed. On any error or interrupt the temporary folder is removed and ``out`` is left
+    as it was: a full disk or a Ctrl-C leaves no partial output. Files of ``out`` that the block
+    did not write are left alone."""
+    import shutil
+    import tempfile
+
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    stage = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".partial", dir=out.parent))
+    try:
+        yield stage
+        out.mkdir(exist_ok=True)
+        names = sorted(p.name for p in stage.iterdir())
+        if last in names:
+            names.remove(last)
+            names.append(last)
+        for name in names:
+            os.replace(stage / name, out / name)
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
 
 
 def write_json_atomic(path: str | os.PathLike, data: Any) -> Path:

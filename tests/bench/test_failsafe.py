@@ -357,3 +357,37 @@ def test_a_run_folder_file_that_is_a_link_is_refused(recorded, name):
     (recorded / name).symlink_to(target)
     with pytest.raises(ValueError, match=f"{name} is a symbolic link: refused"):
         load_run(recorded).samples  # noqa: B018 (read on first use)
+
+
+@pytest.mark.parametrize("failure", [OSError(errno.ENOSPC, "No space left on device"),
+                                     KeyboardInterrupt()])
+def test_a_report_cut_short_leaves_nothing_partial(recorded, tmp_path, monkeypatch, failure):
+    import mkm.report as report
+
+    out = tmp_path / "report"
+    out.mkdir()
+    (out / "notes.txt").write_text("the user's own file")
+
+    def cut(*args, **kwargs):  # the disk fills (or Ctrl-C) at the first figure
+        raise failure
+
+    monkeypatch.setattr(report, "save_figure", cut)
+    expected = ValueError if isinstance(failure, OSError) else KeyboardInterrupt
+    with pytest.raises(expected) as caught:
+        report.build_report([recorded], ["eq2"], out_dir=out, cache_dir=None, tolerance=None,
+                            surrogate_section=False)
+    if expected is ValueError:
+        assert "the report was not written (No space left on device)" in str(caught.value)
+    assert not [p for p in tmp_path.iterdir() if "partial" in p.name]
+    assert [p.name for p in out.iterdir()] == ["notes.txt"]  # nothing partial, nothing lost
+
+
+def test_a_report_that_completes_is_moved_into_place(recorded, tmp_path):
+    from mkm.report import build_report
+
+    path = build_report([recorded], ["eq2"], out_dir=tmp_path / "report", cache_dir=None,
+                        tolerance=None, surrogate_section=False)
+    assert path == tmp_path / "report" / "report.html" and path.is_file()
+    assert (tmp_path / "report" / "summary.csv").is_file()
+    assert not list(tmp_path.glob(".*partial"))
+    assert ".partial" not in path.read_text(encoding="utf-8")  # no staging path leaked
