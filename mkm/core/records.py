@@ -152,7 +152,7 @@ def source_version(*modules: str, data: bool = True) -> str:
     source each time it starts.
     """
     memo = user_cache("source-versions", _memo_name(modules, data))
-    digest = _read_memo(memo)
+    digest = _read_memo(memo, {PACKAGE} | {m.split(".")[0] for m in modules})
     if digest is None:
         digest, origins, paths = _hash_sources(modules, data)
         stats = {p: _stat(p) for p in paths}
@@ -177,18 +177,31 @@ def _stat(path: str) -> list[int]:
     return [st.st_mtime_ns, st.st_size]
 
 
-def _read_memo(memo: Path) -> str | None:
+def _read_memo(memo: Path, packages: set[str]) -> str | None:
     """The remembered digest if every module still comes from the file it was read from (another
     ``sys.path`` may find other code) and every file and folder is unchanged."""
     try:
         record = json.loads(memo.read_text(encoding="utf-8"))
         if (all(getattr(_spec(name), "origin", None) == origin
                 for name, origin in record["modules"].items())
+                and _only_sources(record["modules"], record["stat"], packages)
                 and all(_stat(path) == list(known) for path, known in record["stat"].items())):
             return str(record["digest"])
     except (OSError, ValueError, KeyError, TypeError, AttributeError):
         pass
     return None
+
+
+def _only_sources(origins: dict[str, str], stats: dict[str, Any], packages: set[str]) -> bool:
+    """Whether a memo's paths are the ones :func:`_hash_sources` lists for its modules (their
+    files, their folders, the data files in those folders) and its modules of ``packages``: a
+    memo made up by whoever can write the cache names nothing else."""
+    if not all(name.split(".")[0] in packages for name in origins):
+        return False
+    files = {Path(o) for o in origins.values()}
+    folders = {f.parent for f in files}
+    return all(p in files or p in folders or (p.suffix == ".json" and p.parent in folders)
+               for p in map(Path, stats))
 
 
 def _hash_sources(modules, data: bool) -> tuple[str, dict[str, str], list[str]]:
