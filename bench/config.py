@@ -42,11 +42,19 @@ MAX_BUFFER_VALUES = 20_000_000  # samples x inputs in the driver's host buffer (
 MAX_BLOCK_S = 1.0  # a stop waits for the block in hand: keep it short
 MAX_READ_TIMEOUT_S = 60.0
 MAX_READ_RETRIES = 100
+MAX_SILENCE_S = 60.0  # read_timeout_s x (read_retries + 1): longest a run goes without a reading
 MAX_CAPACITY_N = 1e5  # a 10 t load cell; a McKibben bench needs far less
 # Interlocks within physical bounds: a tolerance of at most a tenth of the regulator's range, a
 # follow time of seconds, tare limits a small part of the cell's capacity.
 MAX_TOLERANCE_FRACTION = 0.1
 MAX_FOLLOW_S = 10.0
+# Floors that let a normal run pass: a regulator needs about a second to follow a step and to
+# exhaust the muscle (the paper's ITV class: 0.1 s response, then the muscle's volume through
+# its exhaust), so shorter follow or vent times fail every run; a force limit below a tenth of
+# the capacity means a load cell of the wrong size (its noise and drift are fractions of it).
+MIN_FOLLOW_S = 1.0
+MIN_VENT_TIMEOUT_S = 2.0
+MIN_FORCE_LIMIT_FRACTION = 0.1
 MAX_TARE_STD_FRACTION = 0.01
 MAX_TARE_SHIFT_FRACTION = 0.1
 MAX_VENT_BELOW_BAR = 0.2
@@ -130,6 +138,11 @@ class Daq:
                              f"least {max(2 * block_s, 0.1):g} s (twice the block, >= 0.1 s)")
         within("daq.read_timeout_s", self.read_timeout_s, 0.1, MAX_READ_TIMEOUT_S, "s")
         within("daq.read_retries", self.read_retries, 0, MAX_READ_RETRIES)
+        silence_s = self.read_timeout_s * (self.read_retries + 1)
+        if silence_s > MAX_SILENCE_S:
+            raise ValueError(f"daq.read_timeout_s={self.read_timeout_s:g} with read_retries="
+                             f"{self.read_retries} lets a run go {silence_s:g} s without a "
+                             f"reading: expected at most {MAX_SILENCE_S:g} s in all")
 
 
 @dataclass(frozen=True)
@@ -280,18 +293,20 @@ class Safety:
     vent_timeout_s: float = 10.0
 
     def check(self):
-        if not 0 < self.force_limit_fraction <= 1:
-            raise ValueError(f"safety.force_limit_fraction={self.force_limit_fraction!r} is "
-                             "invalid: expected a fraction of the load-cell capacity in (0, 1]")
+        within("safety.force_limit_fraction", self.force_limit_fraction,
+               MIN_FORCE_LIMIT_FRACTION, 1.0, "(a fraction of the load-cell capacity)",
+               "below a tenth of its capacity the load cell is the wrong size")
         for name in ("pressure_tolerance_bar", "pressure_follow_s", "tare_max_std_N",
                      "tare_max_shift_N", "vent_below_bar", "vent_timeout_s"):
             positive(f"safety.{name}", getattr(self, name))
-        within("safety.pressure_follow_s", self.pressure_follow_s, 0.0, MAX_FOLLOW_S, "s",
-               "a regulator that has not followed by then is stuck")
+        within("safety.pressure_follow_s", self.pressure_follow_s, MIN_FOLLOW_S, MAX_FOLLOW_S,
+               "s", "a regulator needs about a second to follow; one that has not followed by "
+               f"{MAX_FOLLOW_S:g} s is stuck")
         within("safety.tare_min_samples", self.tare_min_samples, 2, 100_000,
                why="a spread needs two samples")
         within("safety.vent_below_bar", self.vent_below_bar, 0.0, MAX_VENT_BELOW_BAR, "bar")
-        within("safety.vent_timeout_s", self.vent_timeout_s, 0.0, MAX_VENT_TIMEOUT_S, "s")
+        within("safety.vent_timeout_s", self.vent_timeout_s, MIN_VENT_TIMEOUT_S,
+               MAX_VENT_TIMEOUT_S, "s", "a regulator needs seconds to exhaust the muscle")
 
 
 @dataclass(frozen=True)

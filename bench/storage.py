@@ -774,12 +774,24 @@ def read_meta(path: str | Path) -> RunMeta:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
                          f"record of at most {MAX_RUN_JSON_BYTES}")
     try:
-        data = json.loads(meta_path.read_text(encoding="utf-8"))
+        data = json.loads(meta_path.read_text(encoding="utf-8"),
+                          object_pairs_hook=_unique_keys)
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
     except RecursionError:
         raise ValueError(f"{meta_path} is corrupt (nested too deeply)") from None
     return RunMeta.from_dict(data, str(meta_path))
+
+
+def _unique_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """A JSON object, refused (``JSONDecodeError``-like ``ValueError``) when a key repeats:
+    which one a reader keeps differs between readers, so the record would not be one truth."""
+    data = dict(pairs)
+    if len(data) != len(pairs):
+        seen: set[str] = set()
+        key = next(k for k, _ in pairs if k in seen or seen.add(k))
+        raise json.JSONDecodeError(f"the key {_shown(key, 40)} appears twice", "", 0)
+    return data
 
 
 def load_run(path: str | Path) -> Run:

@@ -15,6 +15,9 @@ after commanding the vent:
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
   of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
 
+- reading: a read that times out while a pressure is commanded (at 0 bar, ``daq.read_retries``
+  timeouts in a row are retried); the run is ``failed``.
+
 If the interlock's own vent write fails, the reason says so and asks for a vent by hand.
 """
 
@@ -90,9 +93,14 @@ class Acquisition:
             try:
                 block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
                 break
-            except ReadTimeout:
+            except ReadTimeout as exc:
                 timeouts += 1
                 self.recorder.meta.counters["read_timeouts"] += 1
+                if self.electronic and self.command_bar > 0:
+                    # pressurised and blind: no interlock can act until a reading comes
+                    self._trip(f"read interlock: no reading within {daq.read_timeout_s:g} s "
+                               f"with {self.command_bar:g} bar commanded at "
+                               f"{self.next_index / self.rate_hz:g} s ({exc})", RunStatus.FAILED)
                 if timeouts > daq.read_retries:
                     raise
                 self._pending_flags.append("timeout")

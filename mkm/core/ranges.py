@@ -6,6 +6,7 @@ Each raises ``ValueError`` with a one-line message naming the bad text and what 
 from __future__ import annotations
 
 import math
+import re
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # numpy is imported where arrays are made: `mkm --help` starts without it
@@ -16,13 +17,23 @@ if TYPE_CHECKING:  # numpy is imported where arrays are made: `mkm --help` start
 MAX_RANGE_VALUES = 10_000
 
 
+#: A number as an instrument file or a person writes it: ASCII digits, one decimal point, an
+#: optional exponent. ``float()`` also takes Arabic-Indic or full-width digits and ``0.2_5``,
+#: which no bench setting is meant to be.
+ASCII_DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
+
+
 def parse_number(text: str, name: str) -> float:
+    """``text`` as a finite float, in ASCII decimal notation only (:data:`ASCII_DECIMAL`)."""
     try:
         value = float(text)
     except (TypeError, ValueError):
         raise ValueError(f"{name}={text!r} is not a number") from None
     if not math.isfinite(value):
         raise ValueError(f"{name}={text!r} is not a finite number")
+    if not ASCII_DECIMAL.fullmatch(text.strip(" \t\r\n")):
+        raise ValueError(f"{name}={text!r} is not a number in ASCII decimal notation: "
+                         "expected digits 0-9, one point, an optional exponent (2.5e-1)")
     return value
 
 

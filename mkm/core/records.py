@@ -277,8 +277,14 @@ FORMULA_LEAD = ("=", "+", "-", "@", "\t", "\r")
 
 def spreadsheet_safe_text(text: str) -> str:
     """``text`` with a leading ``'`` if it starts like a formula (:data:`FORMULA_LEAD`), so
-    Excel, LibreOffice and Sheets show it as text instead of evaluating it."""
-    return "'" + text if text.startswith(FORMULA_LEAD) else text
+    Excel, LibreOffice and Sheets show it as text instead of evaluating it. Judged on the cell
+    as a spreadsheet reads it: leading spaces and line breaks stripped, and full-width forms
+    (``＝``, ``＋``) folded to ASCII (NFKC), since some spreadsheets accept those too."""
+    import unicodedata
+
+    lead = unicodedata.normalize("NFKC", text[:64]).lstrip(" \n\v\f\u00a0\u3000")
+    return "'" + text if lead.startswith(FORMULA_LEAD) or text.startswith(FORMULA_LEAD) \
+        else text
 
 
 def spreadsheet_safe(frame):

@@ -391,3 +391,53 @@ def test_a_report_that_completes_is_moved_into_place(recorded, tmp_path):
     assert (tmp_path / "report" / "summary.csv").is_file()
     assert not list(tmp_path.glob(".*partial"))
     assert ".partial" not in path.read_text(encoding="utf-8")  # no staging path leaked
+
+
+# 7. settings with floors, numbers in ASCII, one truth per key, formulas ----------------------
+
+@pytest.mark.parametrize("section, values, message", [
+    ("safety", {"vent_timeout_s": 1e-320}, r"safety\.vent_timeout_s=.* is invalid: expected 2 to"),
+    ("safety", {"pressure_follow_s": 1e-320}, r"safety\.pressure_follow_s=.* expected 1 to 10"),
+    ("safety", {"force_limit_fraction": 1e-320}, r"force_limit_fraction=.* expected 0\.1 to 1"),
+    ("daq", {"read_timeout_s": 60.0, "read_retries": 100},
+     r"lets a run go 6060 s without a reading: expected at most 60 s"),
+])
+def test_settings_that_fail_every_run_are_refused(section, values, message):
+    from mkm.bench.config import load_config
+
+    with pytest.raises(ValueError, match=message):
+        load_config().replace(**{section: values})
+
+
+@pytest.mark.parametrize("text", ["٠.٥", "０.５", "0.2_5", "0,5_0"])
+def test_numbers_are_ascii_decimals(text, mkm_cli, tmp_path):
+    code, out, err = mkm_cli(["acquire", "--pressures", text, "--out", str(tmp_path)])
+    assert code == 2 and "is not a number in ASCII decimal notation" in err, err
+    assert not any(tmp_path.iterdir())
+
+
+def test_run_json_with_a_repeated_key_is_refused(recorded):
+    text = (recorded / "run.json").read_text()
+    (recorded / "run.json").write_text(text.replace('"status": "complete"',
+                                                    '"status": "complete", "status": "running"'))
+    with pytest.raises(ValueError, match="the key 'status' appears twice"):
+        load_run(recorded)
+
+
+@pytest.mark.parametrize("cell", [" =1+1", "\n=1+1", "\uff1d1+1", "\uff0bcmd", "\u3000@x",
+                                  "=1+1"])
+def test_formula_cells_are_neutralised_as_a_spreadsheet_reads_them(cell):
+    from mkm.core.records import spreadsheet_safe_text
+
+    assert spreadsheet_safe_text(cell) == "'" + cell
+    assert spreadsheet_safe_text("a =1") == "a =1"  # a formula only at the start
+
+
+def test_a_read_timeout_while_pressurised_vents_at_once(config, tmp_path):
+    # at 5 s the 0.5 bar step is commanded: one timeout (2 s blind) ends the run, vented
+    c = config.replace(sim={"faults": {"read_timeout_at_s": 5.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    run = load_run(result.path)
+    assert result.status == "failed" and "read interlock: no reading within 2 s" in result.reason
+    assert run.meta.counters["read_timeouts"] == 1
+    assert run.commands["purpose"].iloc[-1] == "vent" and run.meta.vent_check["verified"]

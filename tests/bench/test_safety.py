@@ -117,7 +117,7 @@ def test_vent_during_a_run_asks_the_run_to_stop(config, tmp_path, mkm_cli):
     ("safety", {"pressure_tolerance_bar": 100.0}, r"safety\.pressure_tolerance_bar=100 is "
      r"invalid: expected 0 to 0\.4 bar \(a tenth of regulator\.full_scale_bar=4\)"),
     ("safety", {"pressure_follow_s": 1e9}, r"safety\.pressure_follow_s=1e\+09 is invalid: "
-     r"expected 0 to 10 s"),
+     r"expected 1 to 10 s"),
     ("safety", {"tare_max_std_N": 1e9}, r"safety\.tare_max_std_N=1e\+09 is invalid: expected 0 "
      r"to 19\.6133 N \(1 % of loadcell\.capacity_N=1961\.33\)"),
     ("loadcell", {"capacity_N": 1e300, "sensitivity_N_per_V": 1e300},
