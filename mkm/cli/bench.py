@@ -157,6 +157,22 @@ def _config(args, **overrides):
     return load_config(args.config, backend=args.backend, **overrides)
 
 
+def _hardware_config(args, command: str):
+    """The config of a command that drives the bench at once (vent, tare, calibrate-loadcell):
+    refused without ``--backend`` and without ``--config`` (the packaged example is simulated,
+    and a vent that never happened must not look like one); SIMULATED said on stderr."""
+    from mkm.bench.backends import BACKENDS
+
+    if args.backend is None and args.config is None:
+        raise ValueError(f"mkm {command} drives the bench: pass --backend "
+                         f"{'|'.join(BACKENDS)} (or a --config whose [daq] backend says which)")
+    config = _config(args)
+    if config.simulated:
+        print(f"mkm: SIMULATED bench ({config.daq.backend}): no hardware is driven",
+              file=sys.stderr, flush=True)
+    return config
+
+
 def _acquire(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.run import acquire, check_out_root
@@ -190,7 +206,7 @@ def _tare(args) -> int:
     from mkm.bench.procedures import tare
 
     try:
-        out = tare(_config(args), clock=args.clock, seconds=args.seconds)
+        out = tare(_hardware_config(args, "tare"), clock=args.clock, seconds=args.seconds)
     except BenchError as exc:
         return _failed(exc)
     print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
@@ -214,10 +230,11 @@ def _calibrate_loadcell(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import calibrate_loadcell, fit_loadcell
 
-    config = _config(args)
-    if args.volts is not None:
+    if args.volts is not None:  # volts measured elsewhere: nothing is driven
+        config = _config(args)
         out = fit_loadcell(args.masses, args.volts)
     else:
+        config = _hardware_config(args, "calibrate-loadcell")
         try:
             out = calibrate_loadcell(config, args.masses, clock=args.clock,
                                      seconds=args.seconds)
@@ -250,8 +267,9 @@ def _vent(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import vent
 
+    config = _hardware_config(args, "vent")
     try:
-        out = vent(_config(args), clock=args.clock)
+        out = vent(config, clock=args.clock)
     except BenchError as exc:
         print(f"mkm: error: {exc}; VENT BY HAND", file=sys.stderr)
         return EXIT_FAILED

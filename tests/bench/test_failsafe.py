@@ -46,7 +46,7 @@ def test_vent_with_a_lock_that_is_a_folder_vents_then_says_so(mkm_cli, monkeypat
     _lock_path("sim-Dev1").mkdir(parents=True)
     code, out, err = mkm_cli(["vent", "--backend", "sim"])
     assert out.startswith("vented: 0.000 bar") and written and set(written) == {0.0}
-    assert code == 1 and "Traceback" not in err and len(err.strip().splitlines()) == 1
+    assert code == 1 and "Traceback" not in err and err.count("mkm: error") == 1
     assert "vented, but the bench bookkeeping failed" in err and "is not a file" in err
 
 
@@ -441,3 +441,28 @@ def test_a_read_timeout_while_pressurised_vents_at_once(config, tmp_path):
     assert result.status == "failed" and "read interlock: no reading within 2 s" in result.reason
     assert run.meta.counters["read_timeouts"] == 1
     assert run.commands["purpose"].iloc[-1] == "vent" and run.meta.vent_check["verified"]
+
+
+# 8. hardware commands say what they drive ---------------------------------------------------
+
+@pytest.mark.parametrize("argv", [["vent"], ["tare"], ["calibrate-loadcell", "--masses", "0,1"]])
+def test_a_hardware_command_without_a_backend_refuses(argv, mkm_cli, monkeypatch):
+    from mkm.bench.backends import BACKENDS
+
+    written = _commands_of_vents(monkeypatch)
+    code, out, err = mkm_cli(argv)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert f"mkm {argv[0]} drives the bench: pass --backend {'|'.join(BACKENDS)}" in err
+    assert written == []  # nothing opened
+
+
+@pytest.mark.parametrize("argv", [["vent"], ["tare", "--seconds", "1"],
+                                  ["calibrate-loadcell", "--masses", "0,1", "--seconds", "1"]])
+def test_a_simulated_hardware_command_says_so(argv, mkm_cli):
+    code, out, err = mkm_cli([*argv, "--backend", "sim"])
+    assert code == 0 and "SIMULATED bench (sim): no hardware is driven" in err
+
+
+def test_a_fit_of_volts_measured_elsewhere_needs_no_backend(mkm_cli):
+    code, out, _ = mkm_cli(["calibrate-loadcell", "--masses", "0,10", "--volts", "0.01,0.51"])
+    assert code == 0 and "[loadcell]" in out
