@@ -60,6 +60,7 @@ MAX_TARE_SHIFT_FRACTION = 0.1
 MAX_VENT_BELOW_BAR = 0.2
 MAX_VENT_TIMEOUT_S = 30.0
 MAX_DATASHEET_FRACTION = 0.05
+MONITOR_MARGIN_FRACTION = 0.025  # 0.1 V of a 4 V span: noise and offset of a working output
 
 
 @dataclass(frozen=True)
@@ -214,6 +215,24 @@ class Regulator:
         """Pressure [bar] from the monitor output volts (1-5 V over 0..full scale)."""
         span = self.monitor_V_at_full_scale - self.monitor_V_at_zero
         return (np.asarray(volts) - self.monitor_V_at_zero) / span * self.full_scale_bar
+
+    def monitor_fault(self, volts: float) -> str | None:
+        """What is wrong with a monitor reading no working regulator gives, or None.
+
+        A live-zero output (1-5 V) reads near 0 V only when the regulator is unpowered or its
+        wire is off, which would convert to a negative pressure and pass for a vent; readings
+        beyond :data:`MONITOR_MARGIN_FRACTION` of the span outside the output's range (0.9 V,
+        5.1 V for 1-5 V) are a fault of the monitor, not a pressure."""
+        span = self.monitor_V_at_full_scale - self.monitor_V_at_zero
+        low = self.monitor_V_at_zero - MONITOR_MARGIN_FRACTION * span
+        high = self.monitor_V_at_full_scale + MONITOR_MARGIN_FRACTION * span
+        if low <= volts <= high:
+            return None
+        return (f"monitor fault: the monitor reads {volts:.3f} V, outside its "
+                f"{self.monitor_V_at_zero:g}-{self.monitor_V_at_full_scale:g} V output "
+                f"(below {low:.3g} V: regulator unpowered or wire off)" if volts < low else
+                f"monitor fault: the monitor reads {volts:.3f} V, above its "
+                f"{self.monitor_V_at_full_scale:g} V full scale")
 
 
 

@@ -47,6 +47,7 @@ from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import BenchLease, Marker, vent_unvented
 from mkm.bench.vent import VentCheck, verify_vent
+from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
 
 EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
@@ -216,7 +217,8 @@ class BenchRun:
         Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
         holds the bench.
         """
-        with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner:
+        with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
+                awake():  # Windows must not sleep with the muscle pressurised
             self.owner = owner
             if self.handle_signals:
                 with self.signals:

@@ -7,9 +7,10 @@ after commanding the vent:
 
 - force: ``|force| >= safety.force_limit_fraction x capacity``, a reading within 2 LSB of a rail
   (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
-- pressure (electronic regulator): a non-finite measured pressure; a pressure more than the
-  tolerance away from the command for longer than ``safety.pressure_follow_s`` (a regulator
-  that does not follow);
+- pressure (electronic regulator): a non-finite measured pressure; a monitor reading no
+  working regulator gives (a live-zero output at 0 V: unpowered, wire off); a pressure more
+  than the tolerance away from the command for longer than ``safety.pressure_follow_s`` (a
+  regulator that does not follow);
 - over-pressure, on the measured pressure whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
@@ -162,6 +163,9 @@ class Acquisition:
                     f"({safety.force_limit_fraction:g} x capacity {self.cell.capacity_N:g} N)")
         if not self.electronic:
             return None
+        fault = self.config.regulator.monitor_fault(monitor_V)
+        if fault:
+            return f"pressure interlock: {fault} at {t_s:g} s"
         if abs(pressure - self.command_bar) <= safety.pressure_tolerance_bar:
             self._off_since_s = None
         elif self._off_since_s is None:

@@ -466,3 +466,51 @@ def test_a_simulated_hardware_command_says_so(argv, mkm_cli):
 def test_a_fit_of_volts_measured_elsewhere_needs_no_backend(mkm_cli):
     code, out, _ = mkm_cli(["calibrate-loadcell", "--masses", "0,10", "--volts", "0.01,0.51"])
     assert code == 0 and "[loadcell]" in out
+
+
+# 9. the real device's monitor: a reading no regulator gives is no vent --------------------------
+
+def test_a_lost_monitor_mid_run_is_a_fault_not_a_vent(config, tmp_path):
+    # at 4 s (the 0.5 bar step) the monitor input drops to 0 V: converted, -1 bar, which would
+    # pass for vented; it is a monitor fault: the run vents and asks for a vent by hand
+    c = config.replace(sim={"faults": {"monitor_lost_at_s": 4.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    run = load_run(result.path)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "monitor fault: the monitor reads 0.000 V" in result.reason
+    assert "VENT BY HAND" in result.reason and not run.meta.vent_check["verified"]
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    assert tripped["time_s"].iloc[0] == pytest.approx(4.0)  # the first sample at 0 V
+
+
+def test_mkm_vent_with_a_lost_monitor_says_vent_by_hand(tmp_path, mkm_cli):
+    from mkm.bench.config import load_config
+
+    text = load_config().text.replace("monitor_noise_V = 0.001", "monitor_noise_V = 0.001\n"
+                                      "[sim.faults]\nmonitor_lost_at_s = 0.0")
+    (tmp_path / "lost.toml").write_text(text, encoding="utf-8")
+    code, out, err = mkm_cli(["vent", "--config", str(tmp_path / "lost.toml")])
+    assert code == 1 and out == "" and "VENT BY HAND" in err
+    assert "could not be verified (monitor fault: the monitor reads 0.000 V" in err
+
+
+def test_a_run_keeps_windows_awake_and_lets_it_sleep_after(config, tmp_path, monkeypatch):
+    import ctypes
+
+    from mkm.bench import wakelock
+
+    states = []
+
+    class Kernel32:
+        def SetThreadExecutionState(self, flags):  # noqa: N802 (the Windows name)
+            states.append((flags, len(list(tmp_path.glob("*/samples.csv")))))
+            return 0x80000000
+
+    monkeypatch.setattr(wakelock, "WINDOWS", True)
+    monkeypatch.setattr(ctypes, "windll", type("WinDLL", (), {"kernel32": Kernel32()}),
+                        raising=False)
+    result = acquire(config, out_root=tmp_path, **QUIET)
+    assert result.status == "complete"
+    # asked before the run folder existed, released once it was recorded
+    assert states == [(wakelock.ES_CONTINUOUS | wakelock.ES_SYSTEM_REQUIRED, 0),
+                      (wakelock.ES_CONTINUOUS, 1)]
