@@ -44,6 +44,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from mkm.core.guards import regular_file
 from mkm.core.records import file_sha256, provenance, source_version, write_atomic
 from mkm.fem.materials import MooneyRivlin, mooney_rivlin
 from mkm.fem.muscle import LIMITS, OPEN_ABOVE, limit_text
@@ -132,6 +133,8 @@ def _check_entry(path: Path, key: str, entry: dict) -> None:
 
 
 def _load(path: Path) -> dict:
+    if path.is_symlink():  # a link may lead anywhere: refused, never quoted
+        regular_file(path, "calibration ")
     try:
         mtime = path.stat().st_mtime_ns
     except OSError as exc:

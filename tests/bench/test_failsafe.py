@@ -514,3 +514,13 @@ def test_a_run_keeps_windows_awake_and_lets_it_sleep_after(config, tmp_path, mon
     # asked before the run folder existed, released once it was recorded
     assert states == [(wakelock.ES_CONTINUOUS | wakelock.ES_SYSTEM_REQUIRED, 0),
                       (wakelock.ES_CONTINUOUS, 1)]
+
+
+def test_a_calibration_file_that_is_a_link_is_refused(tmp_path, mkm_cli):
+    from mkm.fem.calibration import CALIBRATION_FILE
+
+    link = tmp_path / "calibration.json"
+    link.symlink_to(CALIBRATION_FILE)
+    code, out, err = mkm_cli(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
+                              "--eps", "0.1", "--pressures", "1", "--calibration", str(link)])
+    assert code == 2 and out == "" and "is a symbolic link: refused" in err
