@@ -39,7 +39,7 @@ from mkm.bench.backend import Backend, BenchError
 from mkm.bench.backends import backend_entry
 from mkm.bench.config import BenchConfig
 from mkm.bench.operator import Operator
-from mkm.bench.ownership import BenchOwner
+from mkm.bench.ownership import BenchOwner, StateFolderBroken
 from mkm.bench.preflight import braid_lock, loadcell_warning
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase, estimate_duration_s, plan_steps
@@ -279,8 +279,13 @@ class BenchRun:
         self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
                                  estimate_duration_s(self.config),
                                  [vars(m) for m in self.unvented])
-        self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
-                                self.recorder.path, self.recorder.meta.started_utc)
+        try:
+            self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
+                                    self.recorder.path, self.recorder.meta.started_utc)
+        except OSError as exc:  # the state folder, not the run folder: said as such
+            raise StateFolderBroken(f"the bench marker cannot be written in the bench state "
+                                    f"folder ({exc.strerror or exc}): nothing was "
+                                    "pressurised") from None
         if self.config.simulated:
             self.notify(f"SIMULATED bench ({self.config.daq.backend}): no hardware is driven; "
                         f"recording into {self.recorder.path}")

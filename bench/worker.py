@@ -29,6 +29,7 @@ import time
 
 from mkm.bench.backend import Backend, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
+from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.recorder import Recorder
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
 
@@ -227,9 +228,9 @@ class Acquisition:
             try:
                 self.lease.command(clamped)
             except OSError as exc:
-                raise OSError(exc.errno, f"the bench marker {self.lease.path} could not be "
-                              f"written ({exc.strerror or exc}): {clamped:g} bar not "
-                              "commanded") from None
+                raise StateFolderBroken(f"the bench marker {self.lease.path} in the bench state "
+                                        f"folder could not be written ({exc.strerror or exc}): "
+                                        f"{clamped:g} bar not commanded") from None
         try:
             self.backend.write_command(volts)
             ok = True

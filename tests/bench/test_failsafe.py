@@ -524,3 +524,23 @@ def test_a_calibration_file_that_is_a_link_is_refused(tmp_path, mkm_cli):
     code, out, err = mkm_cli(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
                               "--eps", "0.1", "--pressures", "1", "--calibration", str(link)])
     assert code == 2 and out == "" and "is a symbolic link: refused" in err
+
+
+def test_a_state_folder_problem_is_named_not_called_a_recording_failure(config, tmp_path,
+                                                                      monkeypatch):
+    from mkm.bench.unvented import BenchLease
+
+    command = BenchLease.command
+
+    def full(self, pressure_bar):
+        if pressure_bar > 0:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        command(self, pressure_bar)
+
+    monkeypatch.setattr(BenchLease, "command", full)
+    result = acquire(config, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 1
+    assert "StateFolderBroken: the bench marker" in result.reason
+    assert "recording failed" not in result.reason and "0.5 bar not commanded" in result.reason
+    assert load_run(result.path).meta.vent_check is None or \
+        load_run(result.path).meta.vent_check["verified"]
