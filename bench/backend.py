@@ -113,8 +113,9 @@ class Block:
 class Backend(Protocol):
     """Transport to the bench: one AI task with every input, one AO command, a hardware clock.
 
-    ``bench_key`` names the physical bench (backend and device, ``ni-Dev1``) for the markers of
-    :mod:`mkm.bench.unvented`.
+    ``bench_key`` names the physical bench (backend and device: ``ni-serial-1F2E3D4``,
+    ``sim-Dev1``) for the locks and markers of :mod:`mkm.bench.ownership` and
+    :mod:`mkm.bench.unvented`, which fold its case as NI-DAQmx compares device names.
     """
 
     bench_key: str

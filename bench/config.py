@@ -43,16 +43,25 @@ MAX_BUFFER_VALUES = 20_000_000  # samples x inputs in the driver's host buffer (
 MAX_BLOCK_S = 1.0  # a stop waits for the block in hand: keep it short
 MAX_READ_TIMEOUT_S = 60.0
 MAX_READ_RETRIES = 100
+MAX_SILENCE_S = 60.0  # read_timeout_s x (read_retries + 1): longest a run goes without a reading
 MAX_CAPACITY_N = 1e5  # a 10 t load cell; a McKibben bench needs far less
 # Interlocks within physical bounds: a tolerance of at most a tenth of the regulator's range, a
 # follow time of seconds, tare limits a small part of the cell's capacity.
 MAX_TOLERANCE_FRACTION = 0.1
 MAX_FOLLOW_S = 10.0
+# Floors that let a normal run pass: a regulator needs about a second to follow a step and to
+# exhaust the muscle (the paper's ITV class: 0.1 s response, then the muscle's volume through
+# its exhaust), so shorter follow or vent times fail every run; a force limit below a tenth of
+# the capacity means a load cell of the wrong size (its noise and drift are fractions of it).
+MIN_FOLLOW_S = 1.0
+MIN_VENT_TIMEOUT_S = 2.0
+MIN_FORCE_LIMIT_FRACTION = 0.1
 MAX_TARE_STD_FRACTION = 0.01
 MAX_TARE_SHIFT_FRACTION = 0.1
 MAX_VENT_BELOW_BAR = 0.2
 MAX_VENT_TIMEOUT_S = 30.0
 MAX_DATASHEET_FRACTION = 0.05
+MONITOR_MARGIN_FRACTION = 0.025  # 0.1 V of a 4 V span: noise and offset of a working output
 
 
 def read_muscle(table: Any, where: str = "muscle") -> Muscle:
@@ -112,6 +121,11 @@ class Daq:
                              f"least {max(2 * block_s, 0.1):g} s (twice the block, >= 0.1 s)")
         within("daq.read_timeout_s", self.read_timeout_s, 0.1, MAX_READ_TIMEOUT_S, "s")
         within("daq.read_retries", self.read_retries, 0, MAX_READ_RETRIES)
+        silence_s = self.read_timeout_s * (self.read_retries + 1)
+        if silence_s > MAX_SILENCE_S:
+            raise ValueError(f"daq.read_timeout_s={self.read_timeout_s:g} with read_retries="
+                             f"{self.read_retries} lets a run go {silence_s:g} s without a "
+                             f"reading: expected at most {MAX_SILENCE_S:g} s in all")
 
 
 @dataclass(frozen=True)
@@ -183,6 +197,24 @@ class Regulator:
         """Pressure [bar] from the monitor output volts (1-5 V over 0..full scale)."""
         span = self.monitor_V_at_full_scale - self.monitor_V_at_zero
         return (np.asarray(volts) - self.monitor_V_at_zero) / span * self.full_scale_bar
+
+    def monitor_fault(self, volts: float) -> str | None:
+        """What is wrong with a monitor reading no working regulator gives, or None.
+
+        A live-zero output (1-5 V) reads near 0 V only when the regulator is unpowered or its
+        wire is off, which would convert to a negative pressure and pass for a vent; readings
+        beyond :data:`MONITOR_MARGIN_FRACTION` of the span outside the output's range (0.9 V,
+        5.1 V for 1-5 V) are a fault of the monitor, not a pressure."""
+        span = self.monitor_V_at_full_scale - self.monitor_V_at_zero
+        low = self.monitor_V_at_zero - MONITOR_MARGIN_FRACTION * span
+        high = self.monitor_V_at_full_scale + MONITOR_MARGIN_FRACTION * span
+        if low <= volts <= high:
+            return None
+        return (f"monitor fault: the monitor reads {volts:.3f} V, outside its "
+                f"{self.monitor_V_at_zero:g}-{self.monitor_V_at_full_scale:g} V output "
+                f"(below {low:.3g} V: regulator unpowered or wire off)" if volts < low else
+                f"monitor fault: the monitor reads {volts:.3f} V, above its "
+                f"{self.monitor_V_at_full_scale:g} V full scale")
 
 
 
@@ -262,18 +294,20 @@ class Safety:
     vent_timeout_s: float = 10.0
 
     def check(self):
-        if not 0 < self.force_limit_fraction <= 1:
-            raise ValueError(f"safety.force_limit_fraction={self.force_limit_fraction!r} is "
-                             "invalid: expected a fraction of the load-cell capacity in (0, 1]")
+        within("safety.force_limit_fraction", self.force_limit_fraction,
+               MIN_FORCE_LIMIT_FRACTION, 1.0, "(a fraction of the load-cell capacity)",
+               "below a tenth of its capacity the load cell is the wrong size")
         for name in ("pressure_tolerance_bar", "pressure_follow_s", "tare_max_std_N",
                      "tare_max_shift_N", "vent_below_bar", "vent_timeout_s"):
             positive(f"safety.{name}", getattr(self, name))
-        within("safety.pressure_follow_s", self.pressure_follow_s, 0.0, MAX_FOLLOW_S, "s",
-               "a regulator that has not followed by then is stuck")
+        within("safety.pressure_follow_s", self.pressure_follow_s, MIN_FOLLOW_S, MAX_FOLLOW_S,
+               "s", "a regulator needs about a second to follow; one that has not followed by "
+               f"{MAX_FOLLOW_S:g} s is stuck")
         within("safety.tare_min_samples", self.tare_min_samples, 2, 100_000,
                why="a spread needs two samples")
         within("safety.vent_below_bar", self.vent_below_bar, 0.0, MAX_VENT_BELOW_BAR, "bar")
-        within("safety.vent_timeout_s", self.vent_timeout_s, 0.0, MAX_VENT_TIMEOUT_S, "s")
+        within("safety.vent_timeout_s", self.vent_timeout_s, MIN_VENT_TIMEOUT_S,
+               MAX_VENT_TIMEOUT_S, "s", "a regulator needs seconds to exhaust the muscle")
 
 
 @dataclass(frozen=True)

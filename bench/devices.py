@@ -25,3 +25,10 @@ USB6001 = DeviceCapabilities(
     ao_range_V=10.0,
     ai_bits=14,
 )
+
+
+def device_key(device: str) -> str:
+    """The device name as NI-DAQmx compares it: case-insensitive, surrounding spaces dropped
+    (``"Dev1 "``, ``"dev1"`` and ``"DEV1"`` are one device), for the locks and markers of
+    :mod:`mkm.bench.ownership` and :mod:`mkm.bench.unvented`."""
+    return device.strip().casefold()

@@ -405,11 +405,14 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     if fmt not in ("xlsx", "csv"):
         raise ValueError(f"--format {fmt!r} is invalid: expected xlsx or csv")
     run = load_run(run_dir)
+    run.require_content("sheet")
     samples = run.samples
     if fmt == "xlsx" and len(samples) > EXCEL_MAX_ROWS:
         raise ValueError(f"{run.path.name} has {len(samples)} samples: a worksheet holds at "
                          f"most {EXCEL_MAX_ROWS}; use --format csv")
-    metadata = pd.DataFrame(_flatten(run.meta.as_dict()), columns=["key", "value"])
+    # the loader's status: a dead run's record still says "running"
+    metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status)}),
+                            columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}
     out = Path(out)

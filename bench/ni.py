@@ -5,8 +5,10 @@ One AI task holds every input (the USB-6001 has one multiplexed ADC): the load c
 electronic regulator, its monitor output, each with an explicit terminal configuration and the
 +-10 V range (never the driver defaults). The task runs continuously on the hardware sample clock
 with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the run's plain loop.
-A second task writes the regulator command on AO0, on demand. ``close`` writes the vent command
-before clearing the tasks: the USB-6001's AO keeps its last value when a task is closed.
+A second task writes the regulator command on AO0, on demand, started at open so the channel is
+reserved until close. ``close`` writes the vent command before clearing the tasks: the
+USB-6001's AO keeps its last value when a task is closed. A device NI MAX simulates is refused:
+it would drive nothing while the run says it drove the bench.
 
 The NI-DAQmx status codes (turned into :mod:`mkm.bench.backend` errors) live here; a missing driver
 (always the case on Linux) becomes :class:`~mkm.bench.backend.DriverMissing` with what to do.
@@ -30,13 +32,14 @@ from mkm.bench.backend import (
     DriverMissing,
     ReadTimeout,
 )
-from mkm.bench.devices import USB6001
+from mkm.bench.devices import USB6001, device_key
 
 USB6001_RANGE_V = USB6001.ai_range_V
 
 # NI-DAQmx status codes (nidaqmx.error_codes.DAQmxErrors) and what they mean for a run.
 NI_ERROR_CODES: dict[int, type[BenchError]] = {
     -200279: BufferOverflow,  # SAMPLES_NO_LONGER_AVAILABLE: the buffer was overwritten
+    -200361: BufferOverflow,  # ONBOARD_MEMORY_OVERFLOW: USB-600x FIFO full, samples lost
     -200284: ReadTimeout,  # SAMPLES_NOT_YET_AVAILABLE: timeout elapsed
     -50405: DaqDisconnected,  # PAL_TRANSFER_ABORTED: USB transfer aborted, device gone
     -201003: DaqDisconnected,  # DEV_CANNOT_BE_ACCESSED
@@ -85,8 +88,8 @@ class NIBackend:
 
     def __init__(self, config):
         self.config = config
-        self.device = config.daq.device
-        self.bench_key = f"ni-{self.device}"
+        self.device = config.daq.device.strip()
+        self._bench_key: str | None = None
         self.rate_hz = config.daq.sample_rate_hz
         self.ai_task = None
         self.ao_task = None
@@ -97,11 +100,32 @@ class NIBackend:
         self._started_at: float | None = None
 
     @property
+    def bench_key(self) -> str:
+        """The physical device: ``ni-serial-<serial number>`` as the driver reads it (one key
+        whatever NI MAX calls the device and however the name is written), else the name as
+        NI-DAQmx compares it (driver or device missing: nothing can be driven anyway)."""
+        if self._bench_key is None:
+            try:
+                self._bench_key = f"ni-serial-{self._serial()}"
+            except BenchError:
+                self._bench_key = f"ni-{device_key(self.device)}"
+        return self._bench_key
+
+    def _serial(self) -> str:
+        try:
+            import nidaqmx.system
+        except ImportError:
+            raise DriverMissing(DRIVER_MISSING) from None
+        with daq_errors():
+            return f"{int(nidaqmx.system.Device(self.device).serial_num):X}"
+
+    @property
     def ai_channels(self) -> list[str]:
         return self.config.ai_channels
 
     def open(self) -> DeviceInfo:
         import nidaqmx
+        import nidaqmx.system
         from nidaqmx.constants import AcquisitionType, TerminalConfiguration
         from nidaqmx.stream_readers import AnalogMultiChannelReader
         from nidaqmx.stream_writers import AnalogSingleChannelWriter
@@ -112,6 +136,10 @@ class NIBackend:
             with daq_errors():
                 dev = nidaqmx.system.Device(self.device)
                 product, serial = str(dev.product_type), f"{int(dev.serial_num):X}"
+                simulated = dev.is_simulated is True
+            if simulated:
+                raise BenchError(f"device {self.device} is a simulated {product} (NI MAX): no "
+                                 "hardware would be driven; run with --backend sim to simulate")
             if product != USB6001.product:
                 raise BenchError(f"device {self.device} is a {product}: the bench settings are "
                                  f"validated for a {USB6001.product} only "
@@ -132,8 +160,12 @@ class NIBackend:
                     self.ao_task.ao_channels.add_ao_voltage_chan(
                         f"{self.device}/{self.config.regulator.command_channel}",
                         min_val=0.0, max_val=10.0)
+                    # started once: the channel stays reserved for the whole run (an
+                    # auto-started task would release it after every write, to NI MAX's
+                    # test panel or another program)
+                    self.ao_task.start()
                     self._writer = AnalogSingleChannelWriter(self.ao_task.out_stream,
-                                                             auto_start=True)
+                                                             auto_start=False)
                 self.write_command(VENT_V)
                 actual_rate = float(self.ai_task.timing.samp_clk_rate)
         except BaseException:

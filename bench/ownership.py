@@ -11,7 +11,8 @@ holder never blocks the bench: the next command takes the lock and vents first
 (:mod:`mkm.bench.unvented`).
 
 The lock (``filelock``, portable to Windows) and two small files live in the bench state
-folder (:func:`mkm.bench.unvented.state_dir`), keyed by the bench (backend and device name):
+folder (:func:`mkm.bench.unvented.state_dir`), keyed by the physical bench (the backend and the
+device's serial number on NI, else its name as NI-DAQmx compares it, case folded):
 ``<bench>.lock``, ``<bench>.owner`` (who holds it) and ``<bench>.stop`` (a stop request).
 """
 
@@ -32,6 +33,18 @@ from mkm.core.records import provenance, write_atomic
 
 class BenchBusy(BenchError):
     """Another live process holds the bench."""
+
+
+class StateFolderBroken(BenchError):
+    """The bench state folder cannot be used (read-only, full, a lock that is not a file):
+    the bookkeeping fails, the vent must not."""
+
+
+def _usable_lock(lock_path: Path) -> None:
+    """:class:`StateFolderBroken` when ``lock_path`` exists but is not a file (a folder, a
+    FIFO): no lock can be taken there, and on Windows taking it would wait instead of fail."""
+    if (lock_path.exists() or lock_path.is_symlink()) and not lock_path.is_file():
+        raise StateFolderBroken(f"the bench lock {lock_path} is not a file: remove it")
 
 
 def _paths(bench_key: str) -> tuple[Path, Path, Path]:
@@ -70,8 +83,9 @@ class BenchOwner:
         try:
             self.lock_path.parent.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
-            raise BenchError(f"the bench state folder {self.lock_path.parent} cannot be made "
-                             f"({exc.strerror or exc})") from None
+            raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} cannot be "
+                                    f"made ({exc.strerror or exc})") from None
+        _usable_lock(self.lock_path)
         lock = filelock.FileLock(self.lock_path, timeout=0)
         try:
             lock.acquire()
@@ -79,8 +93,8 @@ class BenchOwner:
             raise BenchBusy(describe_holder(self.bench_key) + ": one command per bench at a "
                             "time (`mkm vent` asks a run to stop)") from None
         except OSError as exc:
-            raise BenchError(f"the bench lock {self.lock_path} cannot be taken "
-                             f"({exc.strerror or exc})") from None
+            raise StateFolderBroken(f"the bench lock {self.lock_path} cannot be taken "
+                                    f"({exc.strerror or exc})") from None
         self.lock = lock
         try:
             self.stop_path.unlink(missing_ok=True)  # a request to an earlier holder
@@ -90,8 +104,8 @@ class BenchOwner:
                  "started_utc": provenance()["date_utc"]}))
         except OSError as exc:
             self.__exit__()
-            raise BenchError(f"the bench state folder {self.lock_path.parent} is not writable "
-                             f"({exc.strerror or exc})") from None
+            raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} is not "
+                                    f"writable ({exc.strerror or exc})") from None
         return self
 
     def __exit__(self, *exc) -> None:
@@ -117,21 +131,31 @@ def request_stop(bench_key: str, by: str, wait_s: float = 30.0) -> dict | None:
     """Ask the live holder of ``bench_key`` to stop and wait (``wait_s``) until it has let go.
 
     Returns the holder's record when there was one (None when the bench was free); raises
-    :class:`BenchBusy` when it did not let go in time.
+    :class:`BenchBusy` when it did not let go in time, :class:`StateFolderBroken` when the
+    state folder cannot be used (nobody can be asked: the caller vents all the same).
     """
     lock_path, _, stop_path = _paths(bench_key)
     if not lock_path.parent.is_dir():
         return None
+    _usable_lock(lock_path)
     probe = filelock.FileLock(lock_path, timeout=0)
     try:
         probe.acquire()
     except filelock.Timeout:
         pass
+    except OSError as exc:
+        raise StateFolderBroken(f"the bench lock {lock_path} cannot be probed "
+                                f"({exc.strerror or exc})") from None
     else:
         probe.release()
         return None
     info = holder(bench_key) or {}
-    write_atomic(stop_path, f"{by} (pid {os.getpid()})")
+    try:
+        write_atomic(stop_path, f"{by} (pid {os.getpid()})")
+    except OSError as exc:
+        raise StateFolderBroken(f"the stop request {stop_path} cannot be written "
+                                f"({exc.strerror or exc}): the run holding the bench was not "
+                                "asked to stop") from None
     deadline = time.monotonic() + wait_s
     while time.monotonic() < deadline:
         try:

@@ -18,7 +18,7 @@ from scipy import stats
 from mkm.bench.backend import Backend, BenchError, DeviceInfo
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
-from mkm.bench.ownership import BenchOwner, request_stop
+from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
 from mkm.bench.sequence import validate_tare
@@ -39,7 +39,7 @@ def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[De
         info = backend.open()
         try:
             for marker in vent_unvented(backend):
-                notify(f"{marker.describe()}: vented now")
+                notify(marker.vented_now())
             yield info
         finally:
             backend.close()
@@ -75,33 +75,70 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
 
 def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
          notify=notify_stderr, stop_wait_s: float = STOP_WAIT_S) -> dict:
-    """Command 0 bar and verify it (:func:`mkm.bench.vent.verify_vent`).
+    """Command 0 bar and verify it (:func:`mkm.bench.vent.verify_vent`), then do the
+    bookkeeping.
 
     A live run holding the bench is asked to stop first (it vents itself at its next safe
-    point), then the bench is vented and verified here. Returns ``pressure_bar`` (the last
-    reading; NaN with a manual regulator, to be vented by hand), ``vented``, ``waited_s``,
-    ``manual`` and ``stopped`` (the holder asked to stop, or None). Raises :class:`BenchError`
-    when the device cannot be opened or the pressure stays above ``safety.vent_below_bar`` for
-    ``safety.vent_timeout_s``.
+    point), then the bench is vented and verified here. The bench state folder (lock, stop
+    request, markers of dead runs) is bookkeeping: when it cannot be used (read-only, full, a
+    lock that is not a file) the vent goes ahead without it and the problem is returned in
+    ``bookkeeping`` instead of stopping the vent. Returns ``pressure_bar`` (the last reading;
+    NaN with a manual regulator, to be vented by hand), ``vented``, ``waited_s``, ``manual``,
+    ``stopped`` (the holder asked to stop, or None) and ``bookkeeping`` (problems met, after
+    the vent). Raises :class:`BenchError` when the device cannot be opened or the pressure stays
+    above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live holder does not let
+    go.
     """
     config = with_backend(config, backend)
     device = make_backend(config, clock)
-    stopped = request_stop(getattr(device, "bench_key", "unknown"), "`mkm vent`", stop_wait_s)
+    key = getattr(device, "bench_key", "unknown")
+    bookkeeping: list[str] = []
+    stopped = None
+    try:
+        stopped = request_stop(key, "`mkm vent`", stop_wait_s)
+    except StateFolderBroken as exc:
+        bookkeeping.append(str(exc))
     if stopped:
         notify(f"asked the run holding the bench (pid {stopped.get('pid')}, `mkm "
                f"{stopped.get('command')}`, started {stopped.get('started_utc')}) to stop; it "
                "stopped")
-    with session(device, "vent", notify):
+    owner = BenchOwner(key, "vent")
+    try:
+        owner.__enter__()
+    except StateFolderBroken as exc:  # vent without the lock: venting twice is harmless
+        bookkeeping.append(str(exc))
+    try:
+        device.open()  # writes the vent command
         device.write_command(0.0)
-        if not config.regulator.electronic:
-            return {"pressure_bar": float("nan"), "vented": False, "waited_s": 0.0,
-                    "manual": True, "stopped": stopped}
-        device.start()
-        check = verify_vent(device, config)
+        if config.regulator.electronic:
+            device.start()
+            check = verify_vent(device, config)
+        bookkeeping.extend(_mend_dead_runs(device, notify))
+    finally:
+        try:
+            device.close()
+        finally:
+            owner.__exit__()
+    if not config.regulator.electronic:
+        return {"pressure_bar": float("nan"), "vented": False, "waited_s": 0.0,
+                "manual": True, "stopped": stopped, "bookkeeping": bookkeeping}
     if not check.verified:
-        raise BenchError(f"{check.describe()}: VENT BY HAND and check the regulator")
+        raise BenchError(f"{check.describe()}: VENT BY HAND and check the regulator"
+                         + "".join(f"; {p}" for p in bookkeeping))
     return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
-            "manual": False, "stopped": stopped}
+            "manual": False, "stopped": stopped, "bookkeeping": bookkeeping}
+
+
+def _mend_dead_runs(device: Backend, notify) -> list[str]:
+    """After the vent: name the runs that died without venting on this bench and mend their
+    folders; the problems met (a state folder that cannot be read or written)."""
+    try:
+        for marker in vent_unvented(device):
+            notify(marker.vented_now())
+    except OSError as exc:
+        return [f"the markers of dead runs in the bench state folder could not be handled "
+                f"({exc.strerror or exc})"]
+    return []
 
 
 def fit_loadcell(mass_kg, volts) -> dict:

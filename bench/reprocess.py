@@ -32,6 +32,7 @@ from mkm.bench.storage import (
     iter_samples,
     load_run,
 )
+from mkm.core.guards import regular_file
 from mkm.core.records import file_sha256, provenance
 
 
@@ -39,7 +40,8 @@ def overlay_config(run_dir: str | Path, path: str | Path) -> BenchConfig:
     """The run's own configuration (its ``config.toml``) with every section of the TOML file
     ``path`` laid over it: a file holding only ``[loadcell]`` recalibrates and changes nothing
     else. The text kept is the run's, its replaced sections swapped for the file's."""
-    run_text, run_data = read_toml_file(Path(run_dir) / "config.toml", "the run's config ")
+    run_text, run_data = read_toml_file(regular_file(Path(run_dir) / "config.toml",
+                                                     "the run's config "), "the run's config ")
     new_text, new_data = read_toml_file(path, "config ")
     if not new_data:
         raise ValueError(f"config {path}: no section: expected at least [loadcell]")
@@ -86,10 +88,16 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
     if not samples_csv.is_file():
         raise ValueError(f"run {source.path} has no samples.csv: expected the raw volts to "
                          "reprocess")
-    # pass 1: the tare, from the run's own samples at 0 bar
-    tare_V = []
+    regular_file(samples_csv, f"run {source.path.name}: ")
+    # pass 1: the tare, from the run's own samples at 0 bar; and what there is to reprocess
+    tare_V, rows, finite = [], 0, 0
     for chunk in iter_samples(source.path):
         tare_V.extend(chunk.loc[chunk["phase"] == "tare", "loadcell_V"].tolist())
+        rows += len(chunk)
+        finite += int(np.isfinite(chunk["loadcell_V"].to_numpy(float)).sum())
+    if not finite:
+        raise ValueError(f"run {source.path} has {rows} samples and not one finite load-cell "
+                         "reading: nothing to reprocess")
     tare = validate_tare(tare_V, config) if tare_V else None
     offset_V = tare["offset_V"] if tare else cell.offset_V
     steps = source.steps

@@ -39,7 +39,7 @@ from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
-from mkm.bench.ownership import BenchOwner
+from mkm.bench.ownership import BenchOwner, StateFolderBroken
 from mkm.bench.preflight import braid_lock, loadcell_warning
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
@@ -47,6 +47,7 @@ from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import BenchLease, Marker, vent_unvented
 from mkm.bench.vent import VentCheck, verify_vent
+from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
 
 EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
@@ -216,7 +217,8 @@ class BenchRun:
         Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
         holds the bench.
         """
-        with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner:
+        with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
+                awake():  # Windows must not sleep with the muscle pressurised
             self.owner = owner
             if self.handle_signals:
                 with self.signals:
@@ -273,12 +275,17 @@ class BenchRun:
         info = self.backend.open()  # writes the vent command first
         self.unvented = vent_unvented(self.backend)
         for marker in self.unvented:
-            self.notify(f"{marker.describe()}: vented now")
+            self.notify(marker.vented_now())
         self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
                                  estimate_duration_s(self.config),
                                  [vars(m) for m in self.unvented])
-        self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
-                                self.recorder.path, self.recorder.meta.started_utc)
+        try:
+            self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
+                                    self.recorder.path, self.recorder.meta.started_utc)
+        except OSError as exc:  # the state folder, not the run folder: said as such
+            raise StateFolderBroken(f"the bench marker cannot be written in the bench state "
+                                    f"folder ({exc.strerror or exc}): nothing was "
+                                    "pressurised") from None
         if self.config.simulated:
             self.notify(f"SIMULATED bench ({self.config.daq.backend}): no hardware is driven; "
                         f"recording into {self.recorder.path}")

@@ -34,6 +34,10 @@ CTRL_LOGOFF_EVENT, CTRL_SHUTDOWN_EVENT = 5, 6
 CONSOLE_EVENTS = {CTRL_CLOSE_EVENT: "console closed", CTRL_LOGOFF_EVENT: "log-off",
                   CTRL_SHUTDOWN_EVENT: "system shutdown"}
 CONSOLE_HOLD_S = 4.5  # Windows kills the process 5 s after CTRL_CLOSE_EVENT
+#: Set by the ``mkm`` console entry point, which exits once the command returns: a run's stop
+#: signals then stay ignored after it is recorded, since a signal there would end the process
+#: with 128 + N while run.json says how the run really ended. In-process callers keep theirs.
+LINGER = False
 
 
 class StopSignal(BaseException):
@@ -56,10 +60,13 @@ class StopSignals:
     ``stop_requested_at`` is the ``time.monotonic()`` of the first Ctrl-C (None before), and
     ``signal_at`` that of the last stop signal received. :meth:`hold` ignores further signals
     while the shutdown vents and records; :meth:`done` releases a held Windows console handler.
+    ``linger`` (default :data:`LINGER`): the stop signals stay ignored after the block.
     """
 
     def __init__(self, on_first_interrupt: Callable[[], None] | None = None,
-                 interrupt_main: Callable[[int], None] | None = None):
+                 interrupt_main: Callable[[int], None] | None = None,
+                 linger: bool | None = None):
+        self.linger = LINGER if linger is None else linger
         self.on_first_interrupt = on_first_interrupt
         self.stop_requested_at: float | None = None
         self.signal_at: float | None = None
@@ -83,7 +90,7 @@ class StopSignals:
     def __exit__(self, *exc) -> None:
         self.done()
         for signum, handler in self._previous.items():
-            signal.signal(signum, handler)
+            signal.signal(signum, signal.SIG_IGN if self.linger else handler)
         self._previous.clear()
         if self._console_callback is not None:
             import ctypes

@@ -29,7 +29,8 @@ return at once, a one-hour run takes seconds) or ``real`` (reads wait for the sa
 Faults from ``[sim.faults]`` fire at sample time: disconnect, read timeouts, a reader stall (the
 clock runs on and samples pile up in the buffer: a stall shorter than the buffer delays the
 reading and every later command, a longer one overflows it and loses the samples), an AO write
-failure, a load-cell input reading NaN, a regulator that stops following, an overshoot.
+failure, a load-cell input reading NaN, a regulator that stops following, an overshoot, a
+monitor input that reads 0 V (``monitor_lost_at_s``: regulator unpowered, wire off).
 :func:`describe_physics` says what the simulated muscle is (recorded in run.json).
 """
 
@@ -141,6 +142,7 @@ class SimMuscleBench:
         self.force_N = 0.0  # true force on the cell at the last sample
         self.regulator_stuck = False  # fault: the regulator no longer follows its command
         self.loadcell_broken = False  # fault: the load-cell input reads NaN
+        self.monitor_lost = False  # fault: the monitor input reads 0 V (unpowered, wire off)
 
     def set_command_volts(self, volts: float) -> None:
         r = self.config.regulator
@@ -173,6 +175,8 @@ class SimMuscleBench:
         span = r.monitor_V_at_full_scale - r.monitor_V_at_zero
         monitor_V = (r.monitor_V_at_zero + self.pressure_bar / r.full_scale_bar * span
                      + s.monitor_noise_V * self._normal())
+        if self.monitor_lost:
+            monitor_V = 0.0
         if self.loadcell_broken:
             return math.nan, quantize_volts(monitor_V)
         return quantize_volts(cell_V), quantize_volts(monitor_V)
@@ -196,7 +200,7 @@ class SimBackend:
             raise ValueError(f"clock={clock!r} is invalid: expected 'virtual' or 'real'")
         self.config = config
         self.clock = clock
-        self.bench_key = f"sim-{config.daq.device}"
+        self.bench_key = f"sim-{config.daq.device.strip()}"  # the lock folds the case
         self.rate_hz = config.daq.sample_rate_hz
         buffer_s = config.sim.buffer_s or config.daq.buffer_s
         self.buffer_samples = int(round(buffer_s * self.rate_hz))
@@ -251,6 +255,8 @@ class SimBackend:
                 self.bench.loadcell_broken = True
             if f.regulator_stuck_at_s is not None and t_s >= f.regulator_stuck_at_s:
                 self.bench.regulator_stuck = True
+            if f.monitor_lost_at_s is not None and t_s >= f.monitor_lost_at_s:
+                self.bench.monitor_lost = True
             self._fifo.append(self.bench.step())
             self._head += 1
         if len(self._fifo) > self.buffer_samples:

@@ -34,6 +34,7 @@ class Faults:
     nan_force_at_s: float | None = None  # the load-cell input reads NaN from then on
     regulator_stuck_at_s: float | None = None  # the regulator stops following the command
     overshoot_bar: float = 0.0  # the regulator delivers this much above every command
+    monitor_lost_at_s: float | None = None  # the monitor input reads 0 V from then on
 
     def check(self):
         for f in dataclasses.fields(self):

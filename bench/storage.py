@@ -37,6 +37,7 @@ from typing import Any, NamedTuple
 import numpy as np
 import pandas as pd
 
+from mkm.core.guards import regular_file
 from mkm.core.records import spreadsheet_safe_text, write_json_atomic
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
@@ -51,6 +52,7 @@ class RunStatus(enum.StrEnum):
     ABORTED = "aborted"  # stopped on purpose: interlock, signal, operator
     FAILED = "failed"  # stopped by an error: device, storage, tare
     INCOMPLETE = "incomplete"  # never written: the loader's verdict on a dead "running" record
+    KILLED = "killed"  # its process died mid-run: written by the next command that found it
     IMPORTED = "imported"  # measured elsewhere (another bench, a spreadsheet): mkm import
 
     @property
@@ -583,6 +585,8 @@ DTYPES = {"flags": "string", "phase": "string", "direction": "string", "purpose"
 
 def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
               chunksize: int | None = None):
+    if path.is_symlink() or (path.exists() and not path.is_file()):
+        regular_file(path, "run folder file ")  # refused with its reason
     if not path.is_file():
         problems.append(f"{path.name} is missing")
         empty = pd.DataFrame(columns=list(columns))
@@ -707,6 +711,20 @@ class Run:
     def reason(self) -> str:
         return self.meta.reason
 
+    def require_content(self, what: str) -> None:
+        """``ValueError`` (one line naming ``what`` would be written) unless the run holds a
+        measurement: a finite force in its samples, or, imported, in its steps."""
+        if self.status == RunStatus.IMPORTED:
+            forces, where = self.steps.get("force_N_mean", pd.Series(dtype=float)), "steps"
+        else:
+            regular_file(self.path / "samples.csv", f"run {self.path.name}: ")
+            forces, where = self.samples["force_N"], "samples"
+        if len(forces) == 0:
+            raise ValueError(f"run {self.path} has no {where}: no {what} is written from it")
+        if not np.isfinite(pd.to_numeric(forces, errors="coerce").to_numpy(float)).any():
+            raise ValueError(f"run {self.path} has {len(forces)} {where} and not one finite "
+                             f"force: no {what} is written from it")
+
 
 MAX_RUN_JSON_BYTES = 10_000_000
 
@@ -724,16 +742,29 @@ def read_meta(path: str | Path) -> RunMeta:
         if not path.exists():
             raise ValueError(f"{path}: no such folder")
         raise ValueError(f"{path} is not a run folder: run.json is missing")
+    regular_file(meta_path, "run folder file ")
     if meta_path.stat().st_size > MAX_RUN_JSON_BYTES:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
                          f"record of at most {MAX_RUN_JSON_BYTES}")
     try:
-        data = json.loads(meta_path.read_text(encoding="utf-8"))
+        data = json.loads(meta_path.read_text(encoding="utf-8"),
+                          object_pairs_hook=_unique_keys)
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
     except RecursionError:
         raise ValueError(f"{meta_path} is corrupt (nested too deeply)") from None
     return RunMeta.from_dict(data, str(meta_path))
+
+
+def _unique_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """A JSON object, refused (``JSONDecodeError``-like ``ValueError``) when a key repeats:
+    which one a reader keeps differs between readers, so the record would not be one truth."""
+    data = dict(pairs)
+    if len(data) != len(pairs):
+        seen: set[str] = set()
+        key = next(k for k, _ in pairs if k in seen or seen.add(k))
+        raise json.JSONDecodeError(f"the key {_shown(key, 40)} appears twice", "", 0)
+    return data
 
 
 def load_run(path: str | Path) -> Run:
@@ -751,6 +782,8 @@ def load_run(path: str | Path) -> Run:
     commands = _read_csv(path / "commands.csv", COMMAND_COLUMNS, problems)
     # partial-row and missing-file problems of samples.csv, without reading it
     samples_csv = path / "samples.csv"
+    if samples_csv.is_symlink() or (samples_csv.exists() and not samples_csv.is_file()):
+        regular_file(samples_csv, "run folder file ")  # a link or a pipe: refused
     if not samples_csv.is_file():
         problems.append("samples.csv is missing")
     else:
@@ -771,6 +804,9 @@ def load_run(path: str | Path) -> Run:
         unvented = _unvented(commands)
         if unvented:
             problems.append(unvented)
+    elif status == RunStatus.KILLED:
+        problems.append(meta.reason)
+        unvented = _unvented(commands)
     elif meta.manual_vent_required:
         unvented = "the final vent command failed: the muscle had to be vented by hand"
         problems.append(unvented)

@@ -28,6 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
+from mkm.core.guards import table_file
+
 #: the largest table read (rows below the header, over all sheets)
 MAX_ROWS = 2_000_000
 SEPARATORS = (",", ";", "\t")
@@ -112,8 +114,9 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     """The tables in ``path``: one for a text file, one per sheet of a workbook (or the sheet
     named ``sheet``); ``ValueError`` naming the file when it cannot be read."""
     path = Path(path)
-    if not path.is_file():
+    if not path.exists():
         raise ValueError(f"{path}: no such file: expected a CSV, TSV or .xlsx table")
+    path = table_file(path)  # before any parser: links, empty files, bombs, DTDs refused
     suffix = path.suffix.lower()
     if suffix in (".xlsx", ".xlsm"):
         return _read_workbook(path, sheet)

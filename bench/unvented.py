@@ -33,8 +33,10 @@ def state_dir() -> Path:
 
 
 def bench_folder_name(bench_key: str) -> str:
-    """``bench_key`` as a file name of the state folder."""
-    return re.sub(r"[^A-Za-z0-9._-]", "_", bench_key)
+    """``bench_key`` as a file name of the state folder: case folded, as NI-DAQmx compares
+    device names (:func:`mkm.bench.devices.device_key`), so one device has one lock on every
+    file system, case-sensitive or not."""
+    return re.sub(r"[^a-z0-9._-]", "_", bench_key.strip().casefold())
 
 
 def _folder(bench_key: str) -> Path:
@@ -51,11 +53,22 @@ class Marker:
     process: dict
     last_command_bar: float = 0.0
     last_command_utc: str = ""
+    mended: str = ""  # what the finder did to the run folder (not written in the marker)
 
     def describe(self) -> str:
         return (f"run {self.run_path} (started {self.started_utc}, pid {self.process['pid']}) "
                 f"ended without venting; its last commanded pressure was "
                 f"{self.last_command_bar:g} bar at {self.last_command_utc or self.started_utc}")
+
+    def vented_now(self) -> str:
+        """What the command that found the marker says once it vented (and mended the run)."""
+        return f"{self.describe()}: vented now{f'; {self.mended}' if self.mended else ''}"
+
+    def record(self) -> dict:
+        """The marker as written in the state folder."""
+        data = asdict(self)
+        del data["mended"]
+        return data
 
 
 class BenchLease:
@@ -63,14 +76,15 @@ class BenchLease:
 
     def __init__(self, bench_key: str, run_path: Path, started_utc: str):
         me = ProcessIdentity.current()
-        self.marker = Marker(bench_key, str(run_path), started_utc, asdict(me))
+        # absolute: the next command may run from another folder
+        self.marker = Marker(bench_key, str(Path(run_path).resolve()), started_utc, asdict(me))
         folder = _folder(bench_key)
         folder.mkdir(parents=True, exist_ok=True)
         self.path = folder / f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}.json"
         self._write()
 
     def _write(self) -> None:
-        write_json_atomic(self.path, asdict(self.marker))
+        write_json_atomic(self.path, self.marker.record())
 
     def command(self, pressure_bar: float) -> None:
         if pressure_bar == self.marker.last_command_bar:
@@ -110,6 +124,43 @@ def vent_unvented(backend) -> list[Marker]:
     if not found:
         return []
     backend.write_command(0.0)
-    for path, _ in found:
+    for path, marker in found:
+        marker.mended = mend_run(marker)
         path.unlink(missing_ok=True)
     return [marker for _, marker in found]
+
+
+def mend_run(marker: Marker) -> str:
+    """Make the run folder of a dead run tell the truth, once its bench is vented: a run.json
+    still ``running`` becomes ``killed``, with the sample count of the rows on disk and the time
+    of death as far as known (samples.csv's last write). Returns what was done, in words."""
+    from mkm.bench.storage import RunStatus, load_run, read_meta
+    from mkm.core.records import provenance
+
+    path = Path(marker.run_path)
+    if not path.is_absolute():
+        return f"its folder {path} is not an absolute path: not mended"
+    try:
+        meta = read_meta(path)
+    except (ValueError, OSError) as exc:
+        return f"its run.json could not be read ({str(exc)[:200]}): not mended"
+    if meta.status != RunStatus.RUNNING:
+        return ""  # it recorded its own end
+    if not meta.process or meta.process.pid != marker.process.get("pid"):
+        return "its run.json names another process: not mended"
+    samples = load_run(path).meta.counters["samples"]  # the loader counts the rows on disk
+    csv = path / "samples.csv"
+    died = (datetime.datetime.fromtimestamp(csv.stat().st_mtime, datetime.UTC)
+            .isoformat(timespec="seconds") if csv.is_file() else marker.last_command_utc)
+    meta.status = RunStatus.KILLED
+    meta.counters["samples"] = samples
+    meta.ended_utc = died or None
+    meta.reason = (f"its process (pid {marker.process.get('pid')}) died without closing the "
+                   f"record (killed or power lost), at about {died or 'an unknown time'}; its "
+                   f"last commanded pressure was {marker.last_command_bar:g} bar; vented by the "
+                   f"next command at {provenance()['date_utc']}")
+    try:
+        write_json_atomic(path / "run.json", meta.as_dict())
+    except OSError as exc:
+        return f"its run.json could not be rewritten ({exc.strerror or exc}): not mended"
+    return f"run.json mended: status killed, {samples} samples on disk"

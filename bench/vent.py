@@ -4,8 +4,10 @@ is vented.
 A vent is only a command until the monitor confirms it: a regulator that sticks keeps its
 pressure whatever it is told. :func:`verify_vent` reads the pressure monitor (electronic
 regulator) until it is below ``safety.vent_below_bar``, for at most ``safety.vent_timeout_s``
-of sample time and wall time; with a manual regulator the operator vents by hand and types the
-manometer reading, which must be below the same threshold.
+of sample time and wall time, judging only samples acquired after the vent write and only
+plausible ones (a live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: a monitor fault,
+never a vent, :meth:`mkm.bench.config.Regulator.monitor_fault`); with a manual regulator the
+operator vents by hand and types the manometer reading, which must be below the same threshold.
 """
 
 from __future__ import annotations
@@ -70,6 +72,14 @@ def verify_vent(backend, config, operator=None, started: bool = True) -> VentChe
     rate = config.daq.sample_rate_hz
     n = max(1, int(round(0.1 * rate)))
     start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
+    try:  # samples acquired before the vent write say nothing about the vent
+        stale = backend.available()
+        if stale > 0:
+            backend.read(stale, config.daq.read_timeout_s)
+    except BufferOverflow:
+        backend.recover()
+    except BenchError as exc:
+        return VentCheck(False, pressure, below, 0.0, "monitor", f"{type(exc).__name__}: {exc}")
     while True:
         try:
             volts = backend.read(n, config.daq.read_timeout_s).volts
@@ -79,9 +89,13 @@ def verify_vent(backend, config, operator=None, started: bool = True) -> VentChe
         except BenchError as exc:
             return VentCheck(False, pressure, below, time.monotonic() - start, "monitor",
                              f"{type(exc).__name__}: {exc}")
-        pressure = float(config.regulator.monitor_bar(volts[-1, 1]))
+        monitor_V = float(volts[-1, 1])
+        pressure = float(config.regulator.monitor_bar(monitor_V))
         sample_time_s += n / rate
         waited = max(time.monotonic() - start, sample_time_s)
+        fault = config.regulator.monitor_fault(monitor_V) if math.isfinite(monitor_V) else None
+        if fault:  # no reading of a working regulator: nothing is verified by it
+            return VentCheck(False, pressure, below, waited, "monitor", fault)
         if pressure < below:
             return VentCheck(True, pressure, below, waited, "monitor")
         if waited > timeout_s or not math.isfinite(pressure):

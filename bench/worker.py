@@ -7,10 +7,17 @@ after commanding the vent:
 
 - force: ``|force| >= safety.force_limit_fraction x capacity``, a reading within 2 LSB of a rail
   (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
-- pressure (electronic regulator): a non-finite measured pressure; a pressure above
-  ``regulator.max_pressure_bar + safety.pressure_tolerance_bar`` (overshoot); a pressure more
+- pressure (electronic regulator): a non-finite measured pressure; a monitor reading no
+  working regulator gives (a live-zero output at 0 V: unpowered, wire off); a pressure more
   than the tolerance away from the command for longer than ``safety.pressure_follow_s`` (a
-  regulator that does not follow).
+  regulator that does not follow);
+- over-pressure, on the measured pressure whatever the tolerance: above
+  ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
+  longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
+  of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
+
+- reading: a read that times out while a pressure is commanded (at 0 bar, ``daq.read_retries``
+  timeouts in a row are retried); the run is ``failed``.
 
 If the interlock's own vent write fails, the reason says so and asks for a vent by hand.
 """
@@ -22,10 +29,18 @@ import time
 
 from mkm.bench.backend import Backend, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
+from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.recorder import Recorder
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
 
 RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
+# The muscle's limit is max_pressure_bar. A regulator at its command reads within its accuracy
+# class (about 1 % of its full scale, at most about 2 % of max_pressure_bar on the paper's 4 bar
+# regulator at 2.5 bar) plus monitor noise, so 2 % above the limit held for a second is an
+# overshoot, not noise; 10 % above it is never a reading of a working regulator at the limit.
+OVERPRESSURE_MARGIN_FRACTION = 0.02
+OVERPRESSURE_HOLD_S = 1.0  # a step's transient settles within the regulator's time constant
+OVERPRESSURE_HARD_FRACTION = 0.10
 
 
 class Stop(Exception):
@@ -68,6 +83,7 @@ class Acquisition:
         self.marker_problem = ""  # the bench marker could not be updated after a vent
         self._pending_flags: list[str] = []
         self._off_since_s: float | None = None  # pressure away from the command since then
+        self._over_since_s: float | None = None  # pressure above the limit's margin since then
 
     # one block -------------------------------------------------------------------------------
 
@@ -79,9 +95,14 @@ class Acquisition:
             try:
                 block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
                 break
-            except ReadTimeout:
+            except ReadTimeout as exc:
                 timeouts += 1
                 self.recorder.meta.counters["read_timeouts"] += 1
+                if self.electronic and self.command_bar > 0:
+                    # pressurised and blind: no interlock can act until a reading comes
+                    self._trip(f"read interlock: no reading within {daq.read_timeout_s:g} s "
+                               f"with {self.command_bar:g} bar commanded at "
+                               f"{self.next_index / self.rate_hz:g} s ({exc})", RunStatus.FAILED)
                 if timeouts > daq.read_retries:
                     raise
                 self._pending_flags.append("timeout")
@@ -92,7 +113,7 @@ class Acquisition:
                                       resumed / self.rate_hz, str(exc)))
                 self._pending_flags.append("gap")
                 self.next_index = resumed
-        trips: list[str] = []
+        trips: list[tuple[str, RunStatus]] = []
         rows = [self._sample(block.first_index + k, volts, phase, step, set_bar, trips)
                 for k, volts in enumerate(block.volts)]
         self.recorder.samples(rows)
@@ -100,14 +121,14 @@ class Acquisition:
         for observer in self.observers:
             observer.block(rows)
         if trips:
-            self._trip(trips[0])
+            self._trip(*trips[0])
         stop = self.stop_requested()
         if stop is not None:
             raise stop
         return rows
 
     def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
-                trips: list[str]) -> Sample:
+                trips: list[tuple[str, RunStatus]]) -> Sample:
         reg = self.config.regulator
         cell_V = float(volts[0])
         monitor_V = float(volts[1]) if self.electronic else math.nan
@@ -119,10 +140,12 @@ class Acquisition:
         elif abs(cell_V) >= 10.0 - RAIL_MARGIN_V:
             flags.append("clipped")
             self.recorder.meta.counters["clipped_samples"] += 1
-        trip = self._interlock(index / self.rate_hz, force, pressure, cell_V, monitor_V, flags)
+        t_s = index / self.rate_hz
+        over = self._overpressure(t_s, pressure) if self.electronic else None
+        trip = over or self._interlock(t_s, force, pressure, cell_V, monitor_V, flags)
         if trip:
             flags.append("interlock")
-            trips.append(trip)
+            trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
         return Sample(index, index / self.rate_hz, step, phase, set_bar,
                       self.command_bar if self.electronic else math.nan, pressure, cell_V,
                       monitor_V, force, "|".join(flags))
@@ -130,7 +153,7 @@ class Acquisition:
     def _interlock(self, t_s, force, pressure, cell_V, monitor_V, flags) -> str | None:
         """The interlock this sample trips (its message), or None."""
         limit = self.config.force_limit_N
-        safety, reg = self.config.safety, self.config.regulator
+        safety = self.config.safety
         if "nonfinite" in flags:
             what = "force" if not math.isfinite(force) else "pressure"
             return (f"{what} interlock: the {what} reading is not a number (load cell "
@@ -141,10 +164,9 @@ class Acquisition:
                     f"({safety.force_limit_fraction:g} x capacity {self.cell.capacity_N:g} N)")
         if not self.electronic:
             return None
-        if pressure > reg.max_pressure_bar + safety.pressure_tolerance_bar:
-            return (f"pressure interlock: {pressure:.3f} bar measured at {t_s:g} s, above "
-                    f"max_pressure_bar {reg.max_pressure_bar:g} + "
-                    f"{safety.pressure_tolerance_bar:g} bar (regulator overshoot)")
+        fault = self.config.regulator.monitor_fault(monitor_V)
+        if fault:
+            return f"pressure interlock: {fault} at {t_s:g} s"
         if abs(pressure - self.command_bar) <= safety.pressure_tolerance_bar:
             self._off_since_s = None
         elif self._off_since_s is None:
@@ -156,13 +178,31 @@ class Acquisition:
                     f"{safety.pressure_tolerance_bar:g} bar)")
         return None
 
-    def _trip(self, message: str) -> None:
+    def _overpressure(self, t_s: float, pressure: float) -> str | None:
+        """The over-pressure interlock's message for this measured pressure [bar], or None."""
+        limit = self.config.regulator.max_pressure_bar
+        soft, hard = OVERPRESSURE_MARGIN_FRACTION * limit, OVERPRESSURE_HARD_FRACTION * limit
+        if not pressure > limit + soft:  # NaN is the non-finite interlock's
+            self._over_since_s = None
+            return None
+        if self._over_since_s is None:
+            self._over_since_s = t_s
+        if pressure > limit + hard:
+            return (f"over-pressure interlock: {pressure:.3f} bar measured at {t_s:g} s, above "
+                    f"max_pressure_bar {limit:g} + {hard:.3g} bar (regulator overshoot)")
+        if t_s - self._over_since_s > OVERPRESSURE_HOLD_S:
+            return (f"over-pressure interlock: {pressure:.3f} bar measured at {t_s:g} s, above "
+                    f"max_pressure_bar {limit:g} + {soft:.3g} bar for more than "
+                    f"{OVERPRESSURE_HOLD_S:g} s (regulator overshoot)")
+        return None
+
+    def _trip(self, message: str, status: RunStatus = RunStatus.ABORTED) -> None:
         try:
             self.command(0.0, "interlock vent")
         except Exception as exc:
-            raise Stop(RunStatus.ABORTED, f"{message}; the interlock's vent command failed "
+            raise Stop(status, f"{message}; the interlock's vent command failed "
                        f"({type(exc).__name__}: {exc}): VENT BY HAND") from exc
-        raise Stop(RunStatus.ABORTED, f"{message}; vented")
+        raise Stop(status, f"{message}; vented")
 
     # commands --------------------------------------------------------------------------------
 
@@ -188,9 +228,9 @@ class Acquisition:
             try:
                 self.lease.command(clamped)
             except OSError as exc:
-                raise OSError(exc.errno, f"the bench marker {self.lease.path} could not be "
-                              f"written ({exc.strerror or exc}): {clamped:g} bar not "
-                              "commanded") from None
+                raise StateFolderBroken(f"the bench marker {self.lease.path} in the bench state "
+                                        f"folder could not be written ({exc.strerror or exc}): "
+                                        f"{clamped:g} bar not commanded") from None
         try:
             self.backend.write_command(volts)
             ok = True

@@ -47,6 +47,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from mkm.core.guards import regular_file
 from mkm.core.records import (
     file_sha256,
     package_file,
@@ -149,6 +150,8 @@ def _check_entry(path: Path, key: str, entry: dict) -> None:
 
 
 def _load(path: Path) -> dict:
+    if path.is_symlink():  # a link may lead anywhere: refused, never quoted
+        regular_file(path, "calibration ")
     try:
         mtime = path.stat().st_mtime_ns
     except OSError as exc:

@@ -41,6 +41,7 @@ from mkm.core.records import (
     provenance,
     read_prediction_header,
     spreadsheet_safe,
+    staged_folder,
     write_json_atomic,
 )
 from mkm.fem.calibration import Calibration
@@ -142,15 +143,27 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
         The models' default braid angles and rubber, and the identified muscle shown (None:
         the shipped ``fem/calibration.json``).
     """
-    from mkm.bench.storage import load_run
-
     start = time.perf_counter()
     run_dirs = [Path(p) for p in run_dirs]
     if not run_dirs:
         raise ValueError("no run folder given: expected at least one RUN_DIR")
     specs = [m if isinstance(m, Spec) else parse_spec(m) for m in models]
     out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
-    out.mkdir(parents=True, exist_ok=True)
+    try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
+        with staged_folder(out, last="report.html") as stage:
+            _write_report(run_dirs, specs, stage, cache_dir, tolerance, surrogate_section,
+                          progress, start, calibration)
+    except OSError as exc:
+        raise ValueError(f"the report was not written ({exc.strerror or type(exc).__name__}"
+                         f"{f': {exc.filename}' if exc.filename else ''}); {out} is as it "
+                         "was") from None
+    return out / "report.html"
+
+
+def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_section,
+                  progress, start, calibration: Calibration | None) -> None:
+    from mkm.bench.storage import load_run
+
     names = {s.text: s.display_name for s in specs}
     colours = model_colours(specs)
     prov: dict[str, dict] = {"software": provenance()}
@@ -184,9 +197,8 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
              "of its domain, not converged) is drawn as a cross above the axes, never as a "
              "force, and left out of every number. Times are per predicted force.</p>")
     body = intro + "".join(sections) + provenance_details(prov, "provenance.json")
-    path = out / "report.html"
-    path.write_text(html_page("McKibben muscle validation report", body), encoding="utf-8")
-    return path
+    (out / "report.html").write_text(html_page("McKibben muscle validation report", body),
+                                     encoding="utf-8")
 
 
 def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:

@@ -163,6 +163,22 @@ def _config(args, **overrides):
     return load_config(args.config, backend=args.backend, **overrides)
 
 
+def _hardware_config(args, command: str):
+    """The config of a command that drives the bench at once (vent, tare, calibrate-loadcell):
+    refused without ``--backend`` and without ``--config`` (the packaged example is simulated,
+    and a vent that never happened must not look like one); SIMULATED said on stderr."""
+    from mkm.bench.backends import BACKENDS
+
+    if args.backend is None and args.config is None:
+        raise ValueError(f"mkm {command} drives the bench: pass --backend "
+                         f"{'|'.join(BACKENDS)} (or a --config whose [daq] backend says which)")
+    config = _config(args)
+    if config.simulated:
+        print(f"mkm: SIMULATED bench ({config.daq.backend}): no hardware is driven",
+              file=sys.stderr, flush=True)
+    return config
+
+
 def _acquire(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.run import acquire, check_out_root
@@ -196,7 +212,7 @@ def _tare(args) -> int:
     from mkm.bench.procedures import tare
 
     try:
-        out = tare(_config(args), clock=args.clock, seconds=args.seconds)
+        out = tare(_hardware_config(args, "tare"), clock=args.clock, seconds=args.seconds)
     except BenchError as exc:
         return _failed(args, exc)
     print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
@@ -220,10 +236,11 @@ def _calibrate_loadcell(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import calibrate_loadcell, fit_loadcell
 
-    config = _config(args)
-    if args.volts is not None:
+    if args.volts is not None:  # volts measured elsewhere: nothing is driven
+        config = _config(args)
         out = fit_loadcell(args.masses, args.volts)
     else:
+        config = _hardware_config(args, "calibrate-loadcell")
         try:
             out = calibrate_loadcell(config, args.masses, clock=args.clock,
                                      seconds=args.seconds)
@@ -266,18 +283,29 @@ def _vent(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import vent
 
+    config = _hardware_config(args, "vent")
     try:
-        out = vent(_config(args), clock=args.clock)
+        out = vent(config, clock=args.clock)
     except BenchError as exc:
         say(args, "error", f"{exc}; VENT BY HAND")
         return EXIT_FAILED
     if out["manual"]:
         print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "
-              "and check the manometer")
-        return 0
+              "and check the manometer", flush=True)
+        return _bookkeeping(out["bookkeeping"])
     shown = f"{out['pressure_bar']:.3f}".replace("-0.000", "0.000")  # sensor noise around 0
-    print(f"vented: {shown} bar after {out['waited_s']:.1f} s")
-    return 0
+    print(f"vented: {shown} bar after {out['waited_s']:.1f} s", flush=True)
+    return _bookkeeping(out["bookkeeping"])
+
+
+def _bookkeeping(problems: list[str]) -> int:
+    """After a vent: the bench state folder's problems, one line (exit 1: the lock and the
+    markers that keep two commands off one bench do not work until it is mended)."""
+    if not problems:
+        return 0
+    problems = "; ".join(dict.fromkeys(problems))  # request and lock often fail alike
+    print(f"mkm: error: vented, but the bench bookkeeping failed: {problems}", file=sys.stderr)
+    return EXIT_FAILED
 
 
 def _reprocess(args) -> int:

@@ -6,6 +6,7 @@ Each raises ``ValueError`` with a one-line message naming the bad text and what 
 from __future__ import annotations
 
 import math
+import re
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # numpy is imported where arrays are made: `mkm --help` starts without it
@@ -16,9 +17,15 @@ if TYPE_CHECKING:  # numpy is imported where arrays are made: `mkm --help` start
 MAX_RANGE_VALUES = 10_000
 
 
+#: A number as an instrument file or a person writes it: ASCII digits, one decimal point, an
+#: optional exponent. ``float()`` also takes Arabic-Indic or full-width digits and ``0.2_5``,
+#: which no bench setting is meant to be.
+ASCII_DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
+
+
 def parse_number(text: str, name: str) -> float:
-    """A finite number; a decimal comma (``12,2``, as a European keyboard types it) is read as
-    a decimal point."""
+    """``text`` as a finite float, in ASCII decimal notation only (:data:`ASCII_DECIMAL`); a
+    decimal comma (``12,2``, as a European keyboard types it) is read as a decimal point."""
     cleaned = str(text).strip()
     if cleaned.count(",") == 1 and "." not in cleaned:
         cleaned = cleaned.replace(",", ".")
@@ -28,6 +35,9 @@ def parse_number(text: str, name: str) -> float:
         raise ValueError(f"{name}={text!r} is not a number") from None
     if not math.isfinite(value):
         raise ValueError(f"{name}={text!r} is not a finite number")
+    if not ASCII_DECIMAL.fullmatch(cleaned.strip(" \t\r\n")):
+        raise ValueError(f"{name}={text!r} is not a number in ASCII decimal notation: "
+                         "expected digits 0-9, one point, an optional exponent (2.5e-1)")
     return value
 
 

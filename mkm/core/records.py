@@ -26,6 +26,8 @@ import os
 import platform
 import sys
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from functools import cache
 from importlib.util import resolve_name
 from pathlib import Path, PureWindowsPath
@@ -112,6 +114,33 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
     return path
 
 
+@contextmanager
+def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[Path]:
+    """Write a folder's files whole or not at all: yields a temporary folder beside ``out``
+    (same file system); when the block ends normally each file is moved into ``out`` (made if
+    needed; ``last`` moved last, so its presence means the rest is there), and the temporary
+    folder removed. On any error or interrupt the temporary folder is removed and ``out`` is left
+    as it was: a full disk or a Ctrl-C leaves no partial output. Files of ``out`` that the block
+    did not write are left alone."""
+    import shutil
+    import tempfile
+
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    stage = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".partial", dir=out.parent))
+    try:
+        yield stage
+        out.mkdir(exist_ok=True)
+        names = sorted(p.name for p in stage.iterdir())
+        if last in names:
+            names.remove(last)
+            names.append(last)
+        for name in names:
+            os.replace(stage / name, out / name)
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+
+
 def write_json_atomic(path: str | os.PathLike, data: Any) -> Path:
     """:func:`write_atomic` of ``data`` as indented JSON (numpy values as lists or text)."""
     return write_atomic(path, json.dumps(data, indent=2, default=jsonable) + "\n")
@@ -138,7 +167,7 @@ def source_version(*modules: str, data: bool = True) -> str:
     source each time it starts.
     """
     memo = user_cache("source-versions", _memo_name(modules, data))
-    digest = _read_memo(memo)
+    digest = _read_memo(memo, {PACKAGE} | {m.split(".")[0] for m in modules})
     if digest is None:
         digest, origins, paths = _hash_sources(modules, data)
         stats = {p: _stat(p) for p in paths}
@@ -163,18 +192,31 @@ def _stat(path: str) -> list[int]:
     return [st.st_mtime_ns, st.st_size]
 
 
-def _read_memo(memo: Path) -> str | None:
+def _read_memo(memo: Path, packages: set[str]) -> str | None:
     """The remembered digest if every module still comes from the file it was read from (another
     ``sys.path`` may find other code) and every file and folder is unchanged."""
     try:
         record = json.loads(memo.read_text(encoding="utf-8"))
         if (all(getattr(_spec(name), "origin", None) == origin
                 for name, origin in record["modules"].items())
+                and _only_sources(record["modules"], record["stat"], packages)
                 and all(_stat(path) == list(known) for path, known in record["stat"].items())):
             return str(record["digest"])
     except (OSError, ValueError, KeyError, TypeError, AttributeError):
         pass
     return None
+
+
+def _only_sources(origins: dict[str, str], stats: dict[str, Any], packages: set[str]) -> bool:
+    """Whether a memo's paths are the ones :func:`_hash_sources` lists for its modules (their
+    files, their folders, the data files in those folders) and its modules of ``packages``: a
+    memo made up by whoever can write the cache names nothing else."""
+    if not all(name.split(".")[0] in packages for name in origins):
+        return False
+    files = {Path(o) for o in origins.values()}
+    folders = {f.parent for f in files}
+    return all(p in files or p in folders or (p.suffix == ".json" and p.parent in folders)
+               for p in map(Path, stats))
 
 
 def _hash_sources(modules, data: bool) -> tuple[str, dict[str, str], list[str]]:
@@ -250,8 +292,14 @@ FORMULA_LEAD = ("=", "+", "-", "@", "\t", "\r")
 
 def spreadsheet_safe_text(text: str) -> str:
     """``text`` with a leading ``'`` if it starts like a formula (:data:`FORMULA_LEAD`), so
-    Excel, LibreOffice and Sheets show it as text instead of evaluating it."""
-    return "'" + text if text.startswith(FORMULA_LEAD) else text
+    Excel, LibreOffice and Sheets show it as text instead of evaluating it. Judged on the cell
+    as a spreadsheet reads it: leading spaces and line breaks stripped, and full-width forms
+    (``＝``, ``＋``) folded to ASCII (NFKC), since some spreadsheets accept those too."""
+    import unicodedata
+
+    lead = unicodedata.normalize("NFKC", text[:64]).lstrip(" \n\v\f\u00a0\u3000")
+    return "'" + text if lead.startswith(FORMULA_LEAD) or text.startswith(FORMULA_LEAD) \
+        else text
 
 
 def spreadsheet_safe(frame):

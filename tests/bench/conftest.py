@@ -58,9 +58,19 @@ class FakeDriver:
         interpreter.get_timing_attribute_double.return_value = actual_rate_hz
         interpreter.get_device_attribute_string.return_value = "USB-6001"
         interpreter.get_device_attribute_uint32.return_value = 0x1F2E3D4
+        interpreter.get_device_attribute_bool.return_value = False  # is_simulated
         interpreter.driver_version = (25, 0, 0)
         self.acquired = 0  # samples the "hardware" took since the task started
         self.overflow_behind = 0  # an overflow: the hardware ran this far ahead of the reader
+        self.disconnected = False  # once the device is gone, every write fails as on USB
+
+    def disconnect(self):
+        """The USB cable is pulled: reads and writes fail with -50405 from now on."""
+        from nidaqmx.errors import DaqReadError
+
+        self.disconnected = True
+        self.interpreter.read_analog_f64.side_effect = DaqReadError("USB transfer aborted",
+                                                                    -50405, 0)
 
     def start(self, handle):
         self.acquired = 0  # the count restarts with the task
@@ -86,6 +96,10 @@ class FakeDriver:
         return data, n_samples
 
     def write(self, handle, auto_start, timeout, value):
+        if self.disconnected:
+            from nidaqmx.errors import DaqWriteError
+
+            raise DaqWriteError("USB transfer aborted", -50405, 0)
         self.bench.set_command_volts(value)
         return 1
 

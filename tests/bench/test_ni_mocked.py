@@ -50,7 +50,11 @@ def test_tasks_channels_and_clock(config, fake_driver):
     it.create_ao_voltage_chan.assert_called_once_with(AO, "Dev1/ao0", "", 0.0, 10.0,
                                                       VoltageUnits.VOLTS.value, "")
     # vented at open
-    assert calls(fake_driver, "write_analog_scalar_f64")[0].args == (AO, True, 1.0, 0.0)
+    assert calls(fake_driver, "write_analog_scalar_f64")[0].args == (AO, False, 1.0, 0.0)
+    # the AO task started (reserved) before its first write, not auto-started by each write
+    names = [c[0] for c in it.mock_calls]
+    assert names.index("start_task") < names.index("write_analog_scalar_f64")
+    assert calls(fake_driver, "start_task")[0].args == (AO,)
     # read back: actual rate, product type, serial number
     assert info.sample_rate_hz == 10.0 and info.product_type == "USB-6001"
     assert info.serial_number == "1F2E3D4" and not info.simulated
@@ -97,11 +101,12 @@ def test_whole_run_writes_commands_and_vents_before_clearing(config, fake_driver
     vent_check = run.meta.vent_check
     assert vent_check["verified"] and vent_check["pressure_bar"] < 0.05
     assert len(reads) - len(run.samples) == round(vent_check["waited_s"] / 0.1)
-    fake_driver.interpreter.start_task.assert_called_once_with(AI)
+    assert [c.args for c in calls(fake_driver, "start_task")] == [(AO,), (AI,)]
 
 
 @pytest.mark.parametrize("code, error", [
-    (-200279, BufferOverflow), (-200284, ReadTimeout), (-50405, DaqDisconnected),
+    (-200279, BufferOverflow), (-200361, BufferOverflow), (-200284, ReadTimeout),
+    (-50405, DaqDisconnected),
     (-201003, DaqDisconnected), (-200324, DaqDisconnected), (-50103, DeviceReserved),
     (-200022, DeviceReserved),
 ])
@@ -181,10 +186,50 @@ def test_overflow_restarts_the_task_and_counts_the_lost_samples(config, fake_dri
     assert s["sample"].iloc[24] == 24 + 6100 and s["flags"].iloc[24] == "gap"
     assert (s["flags"] == "gap").sum() == 1
     assert fake_driver.interpreter.stop_task.call_count == 1
-    assert fake_driver.interpreter.start_task.call_count == 2
+    assert [c.args for c in calls(fake_driver, "start_task")].count((AI,)) == 2
 
 
-# The private hooks below were checked against nidaqmx 1.7.0; pyproject pins nidaqmx>=1.0,<2.
+def test_close_alone_writes_0_V_last_before_clearing(config, fake_driver):
+    # procedures.session relies on close() alone: the run's shutdown is not there to vent
+    backend = NIBackend(config)
+    backend.open()
+    backend.write_command(6.25)  # 2.5 bar on a 4 bar / 10 V regulator
+    backend.close()
+    names = [c[0] for c in fake_driver.interpreter.mock_calls]
+    writes = calls(fake_driver, "write_analog_scalar_f64")
+    assert writes[-1].args[3] == 0.0 and writes[-2].args[3] == 6.25
+    last_write = max(i for i, n in enumerate(names) if n == "write_analog_scalar_f64")
+    assert last_write < min(i for i, n in enumerate(names) if n == "clear_task")
+
+
+def test_a_device_simulated_in_ni_max_is_refused(config, fake_driver):
+    fake_driver.interpreter.get_device_attribute_bool.return_value = True  # is_simulated
+    with pytest.raises(BenchError, match="Dev1 is a simulated USB-6001 \\(NI MAX\\): no "
+                                         "hardware would be driven"):
+        NIBackend(config).open()
+    assert not calls(fake_driver, "create_task")
+
+
+def test_a_pulled_cable_mid_run_asks_for_a_vent_by_hand(config, fake_driver, tmp_path):
+    # reads and writes fail alike once the device is gone: the vent cannot be written, so the
+    # run cannot claim one (the fake driver used to accept writes after a disconnect)
+    reads = {"n": 0}
+    normal = fake_driver.read
+
+    def read(*args):
+        reads["n"] += 1
+        if reads["n"] > 30:
+            fake_driver.disconnect()
+            return fake_driver.interpreter.read_analog_f64(*args)
+        return normal(*args)
+
+    fake_driver.interpreter.read_analog_f64.side_effect = read
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "vent command failed" in result.reason and "VENT BY HAND" in result.reason
+
+
+# The private hooks below were checked against nidaqmx 1.7.0; pyproject pins nidaqmx>=1.3,<2.
 CHECKED_HOOKS = {
     "create_task": ["session_name"],
     "create_ai_voltage_chan": ["task", "physical_channel", "name_to_assign_to_channel",
@@ -209,7 +254,7 @@ def test_canary_nidaqmx_private_hooks():
     from nidaqmx.task import Task
 
     major, minor = (int(x) for x in version("nidaqmx").split(".")[:2])
-    assert (1, 0) <= (major, minor) < (2, 0), "nidaqmx outside the range checked (>=1.0,<2)"
+    assert (1, 3) <= (major, minor) < (2, 0), "nidaqmx outside the range checked (>=1.3,<2)"
     assert list(inspect.signature(nidaqmx.utils._select_interpreter).parameters) == [
         "grpc_options", "interpreter"]
     assert "utils._select_interpreter(" in inspect.getsource(Task.__init__)

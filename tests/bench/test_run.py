@@ -166,16 +166,17 @@ def test_fault_disconnect(config, tmp_path):
 
 
 def test_fault_one_read_timeout_is_retried(config, tmp_path):
-    result, run = record(config, tmp_path, read_timeout_at_s=5.0)
+    # at 1 s, in the tare at 0 bar: retried (pressurised, it vents: test_failsafe)
+    result, run = record(config, tmp_path, read_timeout_at_s=1.0)
     assert result.status == "complete"
     assert run.meta["counters"]["read_timeouts"] == 1
     flagged = run.samples[run.samples["flags"] == "timeout"]
-    assert list(flagged["time_s"]) == [5.0]
+    assert list(flagged["time_s"]) == [1.0]
     np.testing.assert_array_equal(run.samples["sample"], np.arange(len(run.samples)))  # no gap
 
 
 def test_fault_persistent_read_timeout_fails(config, tmp_path):
-    result, run = record(config, tmp_path, read_timeout_at_s=5.0, read_timeouts=10)
+    result, run = record(config, tmp_path, read_timeout_at_s=1.0, read_timeouts=10)
     assert result.status == "failed" and "ReadTimeout" in result.reason
     assert run.meta["counters"]["read_timeouts"] == config.daq.read_retries + 1
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]

@@ -74,7 +74,8 @@ def test_a_second_command_on_a_held_bench_refuses_with_the_holder(config, tmp_pa
         with pytest.raises(BenchBusy, match=rf"bench sim-Dev1 is in use by pid {os.getpid()} "
                                             r"\(`mkm acquire`, started 20"):
             acquire(config, out_root=tmp_path, **QUIET)
-        for argv in (["tare"], ["calibrate-loadcell", "--masses", "0,1"],
+        for argv in (["tare", "--backend", "sim"],
+                     ["calibrate-loadcell", "--masses", "0,1", "--backend", "sim"],
                      ["acquire", "--out", str(tmp_path), "--no-progress"], ["check"]):
             code, _, err = mkm_cli(argv)
             assert code == 1 and f"in use by pid {os.getpid()}" in err, argv
@@ -102,7 +103,7 @@ def test_vent_during_a_run_asks_the_run_to_stop(config, tmp_path, mkm_cli):
     worker = threading.Thread(target=lambda: results.append(run.execute()))
     worker.start()
     assert pressurised.wait(30)
-    code, out, err = mkm_cli(["vent"])
+    code, out, err = mkm_cli(["vent", "--backend", "sim"])
     worker.join(30)
     (result,) = results
     assert result.status == "aborted" and "stopped by `mkm vent`" in result.reason
@@ -117,7 +118,7 @@ def test_vent_during_a_run_asks_the_run_to_stop(config, tmp_path, mkm_cli):
     ("safety", {"pressure_tolerance_bar": 100.0}, r"safety\.pressure_tolerance_bar=100 is "
      r"invalid: expected 0 to 0\.4 bar \(a tenth of regulator\.full_scale_bar=4\)"),
     ("safety", {"pressure_follow_s": 1e9}, r"safety\.pressure_follow_s=1e\+09 is invalid: "
-     r"expected 0 to 10 s"),
+     r"expected 1 to 10 s"),
     ("safety", {"tare_max_std_N": 1e9}, r"safety\.tare_max_std_N=1e\+09 is invalid: expected 0 "
      r"to 19\.6133 N \(1 % of loadcell\.capacity_N=1961\.33\)"),
     ("loadcell", {"capacity_N": 1e300, "sensitivity_N_per_V": 1e300},

@@ -126,7 +126,7 @@ def test_sigkill_is_noticed_and_vented_by_the_next_command(tmp_path, capsys):
     assert "ended without venting" not in capsys.readouterr().err
 
 
-@pytest.mark.parametrize("command", [["check"], ["tare", "--seconds", "1"],
+@pytest.mark.parametrize("command", [["check"], ["tare", "--seconds", "1", "--backend", "sim"],
                                      ["acquire", "--pressures", "0.5", "--no-progress"]])
 def test_every_bench_command_vents_a_dead_run_first(tmp_path, capsys, command):
     from mkm.bench.storage import ProcessIdentity

@@ -119,3 +119,23 @@ def test_the_recorded_command_is_what_a_user_types():
     assert command_line(["/usr/local/bin/mkm", "report", "r1"]) == "mkm report r1"
     assert command_line(["benchmarks/bench_batch.py", "--json", "docs/measured/batch.json"]) \
         == "benchmarks/bench_batch.py --json docs/measured/batch.json"
+
+
+def test_a_memo_naming_files_outside_the_sources_is_not_trusted(tmp_path, monkeypatch):
+    import json
+
+    monkeypatch.setenv("MKM_CACHE_DIR", str(tmp_path / "cache"))
+    records.source_version.cache_clear()
+    true = records.source_version("mkm.fem.thickwall")
+    (memo,) = (tmp_path / "cache" / "source-versions").iterdir()
+    record = json.loads(memo.read_text())
+    # whoever can write the cache adds a path of their choosing and another digest
+    outside = tmp_path / "elsewhere.json"
+    outside.write_text("{}")
+    st = outside.stat()
+    record["stat"][str(outside)] = [st.st_mtime_ns, st.st_size]
+    record["digest"] = "forged000000"
+    memo.write_text(json.dumps(record))
+    records.source_version.cache_clear()
+    assert records.source_version("mkm.fem.thickwall") == true  # hashed again, not the memo's
+    records.source_version.cache_clear()
