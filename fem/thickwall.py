@@ -376,9 +376,11 @@ class ThickWall(CalibratedTheta0, ForceModel):
         return self._rubber()
 
     def params(self):
+        """The parameters; ``gap_mm`` only when there is a gap, so that every record and cache
+        key of a gap-free muscle stays what it was."""
+        gap = {"gap_mm": self.gap_mm} if self.gap_mm else {}
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,
-                "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa,
-                "gap_mm": self.gap_mm}
+                "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa, **gap}
 
     def _forces(self, P, D0, t0, eps):
         theta0 = check_theta0(self._theta0())
