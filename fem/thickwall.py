@@ -42,6 +42,7 @@ from mkm.fem.calibration import CalibratedTheta0
 from mkm.fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
 from mkm.fem.interface import Domain, ForceModel
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.muscle import check_value
 
 
 def _rest_radii(D0_mm, t0_mm, gap_mm):
@@ -363,8 +364,7 @@ class ThickWall(CalibratedTheta0, ForceModel):
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
                  C10_MPa: float | None = None, C01_MPa: float | None = None,
                  gap_mm: float = 0.0):
-        if not (np.isfinite(gap_mm) and 0.0 <= gap_mm < 100.0):
-            raise ValueError(f"gap_mm={gap_mm:g} is invalid: expected a radial gap in [0, 100) mm")
+        gap_mm = check_value("gap_mm", gap_mm)
         self.theta0_deg = theta0_deg
         self.L0_mm = L0_mm
         self.C10_MPa = C10_MPa

@@ -22,8 +22,8 @@ def register(subparsers) -> None:
         "mkm report RUN_EPS0 RUN_EPS12 --calibration mkm-out/identify/calibration.json")
     parser.add_argument("runs", nargs="+", metavar="RUN_DIR", help="run folders of one muscle")
     parser.add_argument("--params", default="theta0,rubber,friction,creep",
-                        help="what to fit, a comma list of theta0, rubber, friction, creep "
-                        "(default all)")
+                        help="what to fit, a comma list of theta0, rubber, friction, creep, "
+                        "gap (default all but gap; gap needs --model thickwall)")
     parser.add_argument("--model", default="axisym",
                         help="static model spec that confirms the fit (and searches where the "
                         "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "

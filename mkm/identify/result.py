@@ -34,7 +34,7 @@ from mkm.fem.calibration import (
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify.fitting import Fit, full_parameters
 
-UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa",
+UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
          "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
 #: the closed forms whose theta0 is fitted again to the runs, with their spec
 CLOSED_FORMS = {"eq2-inner": "eq2:diameter=inner", "eq2-braid": "eq2:diameter=braid",
@@ -186,7 +186,8 @@ class Identification:
         material = {"C10_MPa": round(values["C10_MPa"], 6), "C01_MPa": round(values["C01_MPa"], 6)}
         terms = {k: round(values[k], 6) for k in TERMS if self._fitted_term(k)}
         static = parse_spec(self.model).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))
-        model = static.build(theta0_deg=values["theta0_deg"], **material)
+        gap = {"gap_mm": round(values["gap_mm"], 6)} if "gap_mm" in values else {}
+        model = static.build(theta0_deg=values["theta0_deg"], **material, **gap)
         identified = {"runs": record["runs"], "parameters": record["parameters"],
                       "interval_method": record["interval_method"], "dropped": self.dropped,
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"]}

@@ -142,5 +142,6 @@ def test_registry_passes_the_gap_and_refuses_a_bad_one():
     model = make_model("thickwall", theta0_deg=28.0, gap_mm="0.5")
     assert model.params()["gap_mm"] == 0.5
     assert model.predict(0.05, 20, 1.8, 0.0).force_N == 0.0  # below its threshold at rest
-    with pytest.raises(ValueError, match=r"^gap_mm=-1 is invalid: expected a radial gap"):
+    with pytest.raises(ValueError, match=r"^gap_mm=-1 is invalid: expected a radial gap between "
+                                         r"tube and braid in \[0, 100\] mm"):
         make_model("thickwall", gap_mm=-1)
