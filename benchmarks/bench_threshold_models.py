@@ -502,7 +502,7 @@ def check_quadrature() -> float:
 
 
 def jsonable_frame(frame: pd.DataFrame) -> list[dict]:
-    return json.loads(frame.to_json(orient="records"))
+    return json.loads(frame.to_json(orient="records", double_precision=6))
 
 
 def main() -> None:
@@ -523,7 +523,7 @@ def main() -> None:
               "rows": jsonable_frame(selection),
               "before_after": jsonable_frame(before_after(study, maps)),
               "simulated": jsonable_frame(simulated_table(simulated)),
-              "fits": jsonable_frame(study), "simulated_fits": jsonable_frame(simulated)}
+              "fits": jsonable_frame(study)}
     write_json_atomic(args.out, record)
     buffer = io.BytesIO()
     curves_figure(study, maps).savefig(buffer, format="png", dpi=100, metadata={
