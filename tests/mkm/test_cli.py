@@ -111,7 +111,7 @@ def test_bad_input_is_one_line_with_status_2(args, message, mkm_run):
      "thickwall, axisym, surrogate, auto"),
     (["--model", "thickwall", "--diameter", "braid"],
      "mkm: error: --model thickwall: thickwall takes no diameter (its parameters: theta0_deg, "
-     "L0_mm, C10_MPa, C01_MPa)"),
+     "L0_mm, C10_MPa, C01_MPa, gap_mm)"),
     (["--model", "axisym:mesh=huge"], "mkm: error: mesh='huge' is invalid"),
     (["--model", "axisym:grid=1"], "mkm: error: model 'axisym:grid=1': unknown parameter "
      "'grid': expected some of mesh, "),
