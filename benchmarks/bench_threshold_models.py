@@ -21,6 +21,8 @@ C10 and C01 times ``s``) fitted, plus the physics it adds:
   Mooney-Rivlin), its wall force by Gauss-Legendre quadrature through the wall;
 - ``ends``: the clamped ends' share, by Tondu and Lopez's factor (the mid-section held at ``k
   eps``); the ladder's FE models the ends themselves, this is their closed-form stand-in;
+- ``rest length``: the rest length fitted (``rest_offset``, the shortening of the table's longest
+  length): not physics of the muscle but of the data's reading;
 
 alone and in pairs (a pair's gap is the braid-nominal one). Data: the Martens and Boblan force
 maps of two Festo muscles
@@ -79,6 +81,7 @@ EXTRAS = {
     "stretch_per_bar": (0.002, 0.0, 0.05, "fibre stretch per bar [1/bar]"),
     "gent_inv_Jm": (0.05, 0.0, 2.0, "Gent 1/Jm [-]"),
     "end_factor": (1.1, 1.0, 2.0, "Tondu-Lopez end factor k [-]"),
+    "rest_offset": (0.005, -0.05, 0.05, "shortening of the table's longest length [fraction]"),
 }
 BASE = {"theta0_deg": ((24.0, 28.0, 32.0), 15.0, 45.0), "rubber_scale": ((1.0, 5.0), 0.1, 50.0)}
 
@@ -101,6 +104,7 @@ CANDIDATES = (
     Candidate("extensibility", ("stretch_per_bar",)),
     Candidate("Gent", ("gent_inv_Jm",)),
     Candidate("ends", ("end_factor",)),
+    Candidate("rest length", ("rest_offset",)),
     Candidate("gap + extensibility", ("gap_inside_mm", "stretch_per_bar")),
     Candidate("gap + Gent", ("gap_inside_mm", "gent_inv_Jm")),
     Candidate("gap + ends", ("gap_inside_mm", "end_factor")),
@@ -143,13 +147,13 @@ def gent_elastic_force(D0_mm, t0_mm, eps, theta0_deg, gap_mm, C10_MPa, C01_MPa, 
 
 def candidate_force(P, eps, D0_mm, t0_mm, theta0_deg, rubber_scale, gap_mm=0.0,
                     gap_inside_mm=0.0, slack=0.0, stretch_per_bar=0.0, gent_inv_Jm=0.0,
-                    end_factor=1.0, raw=False):
+                    end_factor=1.0, rest_offset=0.0, raw=False):
     """Isometric force [N] of a candidate (see the module docstring); 0 where the muscle is
     slack (below its threshold, or held beyond its braid lock), NaN where the wall has no state
     (past the Gent limit). ``raw``: the force before the slack is taken out (negative below
     the threshold)."""
     P = np.asarray(P, dtype=float)
-    eps = end_factor * np.asarray(eps, dtype=float)
+    eps = end_factor * (rest_offset + (1.0 - rest_offset) * np.asarray(eps, dtype=float))
     D0_mm, gap_mm = D0_mm - 2.0 * gap_inside_mm, gap_mm + gap_inside_mm
     stretch = 1.0 + slack + stretch_per_bar * P  # thread stretch
     theta = np.arccos(np.cos(np.deg2rad(theta0_deg)) / stretch)
@@ -170,11 +174,12 @@ def candidate_force(P, eps, D0_mm, t0_mm, theta0_deg, rubber_scale, gap_mm=0.0,
                     0.0)
 
 
-def threshold_at_rest_bar(D0_mm, t0_mm, params: dict) -> float:
-    """The pressure [bar] at which the candidate's force at eps 0 turns positive (Brent's root
-    of the raw force between 0 and 10 bar); NaN where it has none there."""
+def threshold_at_rest_bar(D0_mm, t0_mm, params: dict, eps: float = 0.0) -> float:
+    """The pressure [bar] at which the candidate's force at ``eps`` (the table's longest length)
+    turns positive (Brent's root of the raw force between 0 and 10 bar); NaN where it has none
+    there."""
     def force(p):
-        return float(candidate_force(p, 0.0, D0_mm, t0_mm, raw=True, **params))
+        return float(candidate_force(p, eps, D0_mm, t0_mm, raw=True, **params))
 
     if not force(10.0) > 0:
         return float("nan")
@@ -185,14 +190,37 @@ def threshold_at_rest_bar(D0_mm, t0_mm, params: dict) -> float:
 
 # --- data -------------------------------------------------------------------------------------
 
+#: Festo's type code is DMSP-<diameter>-<nominal length in mm>: the rest length a second reading
+#: of the maps takes (the table's longest length is 296 mm for the DMSP-20-300)
+NOMINAL_LENGTH_MM = {"Festo DMSP-20-300": 300.0, "Festo DMSP-10-250": 250.0}
+
+
 @dataclass(frozen=True)
 class ForceMap:
-    """One muscle's isometric map: rows ``eps, pressure_bar, force_N, zero_entry``."""
+    """One muscle's isometric map: rows ``eps, pressure_bar, force_N, zero_entry`` with ``eps``
+    the table's (0 at its longest length ``table_L0_mm``); the model is held at the shortening
+    from ``rest_length_mm`` (:meth:`model_eps`)."""
 
     muscle: str
     D0_mm: float
     t0_mm: float
     rows: pd.DataFrame
+    table_L0_mm: float
+    rest_length_mm: float
+
+    @property
+    def reading(self) -> str:
+        """Which rest length the model takes: the table's longest or the nominal one."""
+        which = "table" if self.rest_length_mm == self.table_L0_mm else "nominal"
+        return f"{self.rest_length_mm:g} mm ({which})"
+
+    def model_eps(self, eps):
+        """The shortening from the rest length of a table shortening ``eps`` [fraction]."""
+        return 1.0 - (1.0 - np.asarray(eps, dtype=float)) * self.table_L0_mm / self.rest_length_mm
+
+    def at_nominal_length(self) -> ForceMap:
+        return ForceMap(self.muscle, self.D0_mm, self.t0_mm, self.rows, self.table_L0_mm,
+                        NOMINAL_LENGTH_MM[self.muscle])
 
     @property
     def largest_force_N(self) -> float:
@@ -224,11 +252,12 @@ def read_maps(path: Path = MAP_FILE) -> list[ForceMap]:
     frame = pd.read_csv(path, comment="#")
     maps = []
     for muscle, rows in frame.groupby("muscle", sort=False):
+        L0_mm = float(rows["L0_mm"].iloc[0])
         maps.append(ForceMap(muscle, float(rows["D0_nominal_mm"].iloc[0]),
                              float(rows["t0_mm_third_party"].iloc[0]),
                              rows.rename(columns={"P_bar": "pressure_bar"})[
                                  ["eps", "pressure_bar", "force_N", "zero_entry"]]
-                             .reset_index(drop=True)))
+                             .reset_index(drop=True), L0_mm, L0_mm))
     return maps
 
 
@@ -252,7 +281,7 @@ class Fit:
 
 def _residuals(force_map: ForceMap, rows: pd.DataFrame, params: dict) -> np.ndarray:
     """Model minus table [N]; a zero entry's residual is the model's pull there (0 if slack)."""
-    model = candidate_force(rows["pressure_bar"].to_numpy(), rows["eps"].to_numpy(),
+    model = candidate_force(rows["pressure_bar"].to_numpy(), force_map.model_eps(rows["eps"]),
                             force_map.D0_mm, force_map.t0_mm, **params)
     return model - rows["force_N"].to_numpy()
 
@@ -296,7 +325,8 @@ def score(fit: Fit, force_map: ForceMap, train_eps) -> dict:
     rest = rows["eps"].to_numpy() == 0
     held_out = ~np.isin(rows["eps"].to_numpy(), train_eps)
     aic, bic = fit.criteria()
-    threshold = threshold_at_rest_bar(force_map.D0_mm, force_map.t0_mm, fit.params)
+    threshold = threshold_at_rest_bar(force_map.D0_mm, force_map.t0_mm, fit.params,
+                                      float(force_map.model_eps(0.0)))
     rest_held_out = 0.0 not in train_eps
     return {"converged": True, **fit.params,
             "rest_max_err_pct": (float(np.max(np.abs(err[measured & rest])))
@@ -320,7 +350,8 @@ def study_map(force_map: ForceMap) -> pd.DataFrame:
         train = force_map.rows[np.isin(force_map.rows["eps"], pair)]
         for candidate in CANDIDATES:
             fit = fit_candidate(candidate, force_map, train)
-            records.append({"muscle": force_map.muscle, "train_eps": list(pair),
+            records.append({"muscle": force_map.muscle, "rest length": force_map.reading,
+                            "train_eps": list(pair),
                             "default_pair": list(pair) == force_map.held[:2],
                             "rest_fitted": 0.0 in pair,
                             "model": candidate.name, "n_params": candidate.n_params,
@@ -334,19 +365,22 @@ def study_map(force_map: ForceMap) -> pd.DataFrame:
 
 
 def selection_table(study: pd.DataFrame) -> pd.DataFrame:
-    """One row per muscle and candidate: the default pair's scores and the spread over pairs."""
+    """One row per muscle, rest length and candidate: the default pair's scores and the spread
+    over pairs."""
     rows = []
-    for (muscle, model), group in study.groupby(["muscle", "model"], sort=False):
+    for (muscle, reading, model), group in study.groupby(["muscle", "rest length", "model"],
+                                                         sort=False):
         default = group[group["default_pair"]].iloc[0]
         done = group[group["converged"] & ~group["rest_fitted"]]
         rest_fitted = group[group["converged"] & group["rest_fitted"]]
         rows.append({
-            "muscle": muscle, "model": model, "params": int(default["n_params"]),
+            "muscle": muscle, "rest length": reading, "model": model,
+            "params": int(default["n_params"]),
             "converged": f"{int(group['converged'].sum())}/{len(group)}",
             "rest curve max err %": default.get("rest_max_err_pct"),
             "other lengths max err %": default.get("other_max_err_pct"),
             "slack pull %": default.get("slack_pull_pct"),
-            "P* eps0 bar": default.get("threshold_eps0_bar"),
+            "P* at the longest length bar": default.get("threshold_eps0_bar"),
             "dAIC": default.get("daic"), "dBIC": default.get("dbic"),
             "held-out max err % (median over pairs)": float(done["held_out_max_err_pct"].median()),
             "held-out max err % (worst pair)": float(done["held_out_max_err_pct"].max()),
@@ -357,25 +391,49 @@ def selection_table(study: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def before_after(study: pd.DataFrame, maps: list[ForceMap]) -> pd.DataFrame:
-    """Baseline against the kept model on each muscle's default pair, with the measured
-    threshold."""
+def _default_fit(study: pd.DataFrame, force_map: ForceMap, model: str) -> pd.Series:
+    return study[(study["muscle"] == force_map.muscle) & (study["model"] == model)
+                 & (study["rest length"] == force_map.reading) & study["default_pair"]].iloc[0]
+
+
+def before_after(study: pd.DataFrame, readings: list[ForceMap]) -> pd.DataFrame:
+    """Baseline against the kept model on each muscle's default pair, per rest length, with the
+    measured threshold at the table's longest length."""
     rows = []
-    for force_map in maps:
+    for force_map in readings:
         measured = force_map.measured_threshold_bar()
         for model in (BASELINE, KEPT):
-            r = study[(study["muscle"] == force_map.muscle) & (study["model"] == model)
-                      & study["default_pair"]].iloc[0]
-            rows.append({"muscle": force_map.muscle, "model": model,
+            r = _default_fit(study, force_map, model)
+            rows.append({"muscle": force_map.muscle, "rest length": force_map.reading,
+                         "model": model,
                          "trained on eps": ", ".join(f"{e:g}" for e in r["train_eps"]),
                          "theta0 deg": r.get("theta0_deg"), "rubber x Silastic S":
                          r.get("rubber_scale"), "gap mm": r.get("gap_inside_mm", 0.0),
                          "rest curve max err %": r.get("rest_max_err_pct"),
                          "other lengths max err %": r.get("other_max_err_pct"),
-                         "P* eps0 bar": r.get("threshold_eps0_bar"),
-                         "measured P* eps0 bar": measured["estimate_bar"],
+                         "P* at the longest length bar": r.get("threshold_eps0_bar"),
+                         "measured P* bar": measured["estimate_bar"],
                          "measured bracket bar":
                              f"{measured['low_bar']:g}-{measured['high_bar']:g}"})
+    return pd.DataFrame(rows)
+
+
+def fitted_rest_lengths(study: pd.DataFrame, maps: list[ForceMap]) -> pd.DataFrame:
+    """The rest length [mm] the ``rest length`` candidate finds on each pair that includes the
+    table's longest length (where the threshold there is measured, not extrapolated)."""
+    rows = []
+    for force_map in maps:
+        fits = study[(study["muscle"] == force_map.muscle) & (study["model"] == "rest length")
+                     & (study["rest length"] == force_map.reading) & study["rest_fitted"]
+                     & study["converged"]]
+        for _, fit in fits.iterrows():
+            rows.append({"muscle": force_map.muscle, "table's longest length mm":
+                         force_map.table_L0_mm, "nominal length mm":
+                         NOMINAL_LENGTH_MM[force_map.muscle],
+                         "fitted on eps": ", ".join(f"{e:g}" for e in fit["train_eps"]),
+                         "fitted rest length mm": force_map.table_L0_mm
+                         / (1.0 - fit["rest_offset"]),
+                         "other lengths max err %": fit["other_max_err_pct"]})
     return pd.DataFrame(rows)
 
 
@@ -385,21 +443,21 @@ def simulated_map(truth_params: dict, like: ForceMap, rng) -> ForceMap:
     """``like``'s grid with the truth's forces plus Gaussian noise; slack where the truth pulls
     nothing (a zero entry, as the published tables mark it)."""
     rows = like.rows[["eps", "pressure_bar"]].copy()
-    force = candidate_force(rows["pressure_bar"].to_numpy(), rows["eps"].to_numpy(),
+    force = candidate_force(rows["pressure_bar"].to_numpy(), like.model_eps(rows["eps"]),
                             like.D0_mm, like.t0_mm, **truth_params)
     noise = rng.normal(0.0, SIM_NOISE_FRACTION * np.nanmax(force), force.shape)
     slack = ~(force > 0)
     rows["force_N"] = np.where(slack, 0.0, np.maximum(force + noise, 0.0))
     rows["zero_entry"] = slack.astype(int)
-    return ForceMap(f"simulated {like.muscle}", like.D0_mm, like.t0_mm, rows)
+    return ForceMap(f"simulated {like.muscle}", like.D0_mm, like.t0_mm, rows,
+                    like.table_L0_mm, like.rest_length_mm)
 
 
 def simulated_study(study: pd.DataFrame, like: ForceMap, seed: int) -> pd.DataFrame:
     """A simulated map of ``like``'s grid per truth (:data:`TRUTHS`); every candidate fitted to
     it on ``like``'s default pair."""
     rng = np.random.default_rng(seed)
-    baseline = study[(study["muscle"] == like.muscle) & (study["model"] == BASELINE)
-                     & study["default_pair"]].iloc[0]
+    baseline = _default_fit(study, like, BASELINE)
     rows = []
     for truth, extras in TRUTHS.items():
         truth_params = {"theta0_deg": float(baseline["theta0_deg"]),
@@ -442,6 +500,8 @@ def simulated_table(simulated: pd.DataFrame) -> pd.DataFrame:
 # --- figure -----------------------------------------------------------------------------------
 
 def curves_figure(study: pd.DataFrame, maps: list[ForceMap]):
+    """Per muscle (table reading): the map, the baseline (dashed) and the kept model (solid)
+    fitted on the default pair, and the baseline with the nominal rest length (dotted)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -449,9 +509,11 @@ def curves_figure(study: pd.DataFrame, maps: list[ForceMap]):
 
     fig, axes = plt.subplots(2, len(maps), figsize=(6.2 * len(maps), 9.0))
     for column, force_map in enumerate(maps):
-        fits = {m: study[(study["muscle"] == force_map.muscle) & (study["model"] == m)
-                         & study["default_pair"]].iloc[0] for m in (BASELINE, KEPT)}
-        train = fits[KEPT]["train_eps"]
+        nominal = force_map.at_nominal_length()
+        lines = [(force_map, BASELINE, "--"), (force_map, KEPT, "-")]
+        if nominal.reading != force_map.reading:
+            lines.append((nominal, BASELINE, ":"))
+        train = _default_fit(study, force_map, KEPT)["train_eps"]
         for row, top in enumerate((None, 2.0)):
             ax = axes[row, column]
             lengths = sorted(force_map.rows["eps"].unique()) if top is None else [0.0]
@@ -465,24 +527,26 @@ def curves_figure(study: pd.DataFrame, maps: list[ForceMap]):
                 ax.plot(rows["pressure_bar"][~loaded], rows["force_N"][~loaded], "o",
                         mfc="none", color=colour, ms=4)
                 pressures = np.linspace(0.0, top or rows["pressure_bar"].max(), 300)
-                for model, style in ((BASELINE, "--"), (KEPT, "-")):
-                    params = {k: fits[model][k] for k in
-                              ["theta0_deg", "rubber_scale", *next(
-                                  c.extras for c in CANDIDATES if c.name == model)]}
-                    ax.plot(pressures, candidate_force(pressures, eps, force_map.D0_mm,
-                                                       force_map.t0_mm, **params),
+                for reading, model, style in lines:
+                    fit = _default_fit(study, reading, model)
+                    params = {k: fit[k] for k in ["theta0_deg", "rubber_scale", *next(
+                        c.extras for c in CANDIDATES if c.name == model)]}
+                    ax.plot(pressures, candidate_force(pressures, reading.model_eps(eps),
+                                                       reading.D0_mm, reading.t0_mm, **params),
                             style, color=colour, lw=1.2)
             ax.set_xlabel("pressure [bar]")
             ax.set_ylabel("force [N]")
-            ax.set_title(force_map.muscle + ("" if top is None else ": rest length, low pressure"))
+            ax.set_title(force_map.muscle + ("" if top is None else
+                                             ": longest length, low pressure"))
             if top is not None:
                 ax.set_xlim(0, top)
                 ax.set_ylim(-5, float(force_map.rows[(force_map.rows["eps"] == 0)
                                                      & (force_map.rows["pressure_bar"] <= top)]
                                       ["force_N"].max()) * 1.15)
             ax.grid(alpha=0.3)
-            ax.legend(fontsize=7, title=f"dashed: {BASELINE}; solid: {KEPT}; hollow: slack",
-                      title_fontsize=7)
+            ax.legend(fontsize=7, loc="upper left")
+    fig.suptitle(f"dashed: {BASELINE}; solid: {KEPT}; dotted: {BASELINE} with the nominal "
+                 "rest length; hollow: slack entries", fontsize=9)
     fig.tight_layout()
     return fig
 
@@ -513,7 +577,9 @@ def main() -> None:
 
     quadrature_error = check_quadrature()
     maps = read_maps()
-    study = pd.concat([study_map(m) for m in maps], ignore_index=True)
+    readings = [*maps, *(m.at_nominal_length() for m in maps
+                         if NOMINAL_LENGTH_MM[m.muscle] != m.table_L0_mm)]
+    study = pd.concat([study_map(m) for m in readings], ignore_index=True)
     selection = selection_table(study)
     simulated = simulated_study(study, maps[0], args.seed)
     record = {**provenance(), "seed": args.seed, "data": str(MAP_FILE.relative_to(ROOT)),
@@ -521,8 +587,9 @@ def main() -> None:
               "gent_quadrature_relative_error": quadrature_error,
               "measured_threshold_eps0": {m.muscle: m.measured_threshold_bar() for m in maps},
               "rows": jsonable_frame(selection),
-              "before_after": jsonable_frame(before_after(study, maps)),
+              "before_after": jsonable_frame(before_after(study, readings)),
               "simulated": jsonable_frame(simulated_table(simulated)),
+              "rest_length": jsonable_frame(fitted_rest_lengths(study, maps)),
               "fits": jsonable_frame(study)}
     write_json_atomic(args.out, record)
     buffer = io.BytesIO()

@@ -347,15 +347,16 @@ def benchmark_tables() -> None:
 
 
 def threshold_model_tables() -> None:
-    """The threshold study's before/after and simulated-truth tables (its selection table is
-    the generic ``bench_threshold_models.md``), from ``docs/measured/threshold_models.json``."""
+    """The threshold study's before/after, simulated-truth and fitted rest-length tables (its
+    selection table is the generic ``bench_threshold_models.md``), from
+    ``docs/measured/threshold_models.json``."""
     path = MEASURED / "threshold_models.json"
-    for key in ("before_after", "simulated"):
+    for key in ("before_after", "simulated", "rest_length"):
         if not path.exists():
             text = "*Not measured in this checkout: run `make bench-docs`.*\n"
         else:
             record = json.loads(path.read_text(encoding="utf-8"))
-            text = (markdown_table(pd.DataFrame(record[key]), 3)
+            text = (markdown_table(pd.DataFrame(record[key]), 4)
                     + source_note("`docs/measured/threshold_models.json`", "make bench-docs",
                                   record["date_utc"][:10]))
         write(OUT / f"threshold_{key}.md", text)
