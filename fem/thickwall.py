@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from mkm.fem.calibration import CalibratedTheta0
+from mkm.fem.calibration import CalibratedTheta0, calibrated
 from mkm.fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
 from mkm.fem.interface import Domain, ForceModel
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
@@ -352,9 +352,11 @@ class ThickWall(CalibratedTheta0, ForceModel):
         Length at rest [mm]. Recorded only: the mid-section model does not depend on the length.
     C10_MPa, C01_MPa : float, optional
         Mooney-Rivlin constants of the wall [MPa]; default Silastic S (the paper's Equation 3).
-    gap_mm : float, default 0
+    gap_mm : float, optional
         Radial gap between tube and braid at rest [mm] (:func:`klute_hannaford`); with a gap the
-        threshold is above zero even at ``eps = 0``.
+        threshold is above zero even at ``eps = 0``. Default: the calibration entry's
+        ``gap_mm`` where a muscle was identified with one (``mkm identify --params ...,gap``),
+        else 0.
     """
 
     name = "thickwall"
@@ -363,13 +365,14 @@ class ThickWall(CalibratedTheta0, ForceModel):
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
                  C10_MPa: float | None = None, C01_MPa: float | None = None,
-                 gap_mm: float = 0.0):
-        gap_mm = check_value("gap_mm", gap_mm)
+                 gap_mm: float | None = None):
+        if gap_mm is not None:
+            gap_mm = check_value("gap_mm", gap_mm)
         self.theta0_deg = theta0_deg
         self.L0_mm = L0_mm
         self.C10_MPa = C10_MPa
         self.C01_MPa = C01_MPa
-        self.gap_mm = float(gap_mm)
+        self.gap_mm = gap_mm
 
     @property
     def material(self) -> MooneyRivlin:
@@ -378,14 +381,24 @@ class ThickWall(CalibratedTheta0, ForceModel):
     def params(self):
         """The parameters; ``gap_mm`` only when there is a gap, so that every record and cache
         key of a gap-free muscle stays what it was."""
-        gap = {"gap_mm": self.gap_mm} if self.gap_mm else {}
+        gap = {"gap_mm": self._gap()} if self._gap() else {}
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,
                 "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa, **gap}
+
+    def _gap(self) -> float:
+        """The gap [mm]: given, else the calibration entry's (an identified muscle), else 0."""
+        if self.gap_mm is not None:
+            return self.gap_mm
+        try:
+            entry = calibrated(self.calibration_key)
+        except ValueError:  # no entry for this model: an explicit angle needs none
+            return 0.0
+        return check_value("gap_mm", entry.get("gap_mm", 0.0), prefix="calibration ")
 
     def _forces(self, P, D0, t0, eps):
         theta0 = check_theta0(self._theta0())
         C10, C01 = self.material.C10_MPa, self.material.C01_MPa
-        gap = self.gap_mm
+        gap = self._gap()
         threshold = klute_hannaford_threshold_pressure(D0, t0, eps, theta0, C10, C01, gap)
         reachable = eps < chou_hannaford_eps_max(theta0)
         force = np.where(reachable, klute_hannaford(P, D0, t0, eps, theta0, C10, C01, gap),

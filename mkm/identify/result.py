@@ -193,7 +193,7 @@ class Identification:
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"]}
         reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
-                 **material, **terms, "target": "identify", "identified": identified}
+                 **material, **gap, **terms, "target": "identify", "identified": identified}
         store_calibration(files["calibration"], model.calibration_key, entry)
         for key, spec in CLOSED_FORMS.items():
             if key == model.calibration_key:  # the identified model's own entry stays

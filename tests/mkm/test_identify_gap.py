@@ -4,14 +4,19 @@ at two eps (the thick-wall closed form simulates and identifies; issue target: t
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.fem.calibration import use_calibration
+from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
+from mkm.identify.page import report_section
 
 SEED = int(np.random.SeedSequence().entropy % 2**32)
 
@@ -40,7 +45,7 @@ def gapped(tmp_path_factory):
     return truth, [record(truth, eps, out, seed=k) for k, eps in enumerate((0.0, 0.122))]
 
 
-def test_a_simulated_gap_is_found_blind_from_two_eps(gapped):
+def test_a_simulated_gap_is_found_blind_from_two_eps(gapped, tmp_path):
     truth, runs = gapped
     result = identify(runs, params="theta0,rubber,gap,friction,creep", model="thickwall",
                       search="model")
@@ -53,6 +58,25 @@ def test_a_simulated_gap_is_found_blind_from_two_eps(gapped):
     low, high = table.loc["gap_mm", ["ci_low", "ci_high"]]
     assert low <= found["gap_mm"] <= high and table.loc["gap_mm", "unit"] == "mm"
     assert result.values["gap_mm"] == found["gap_mm"]
+
+    # the calibration it writes carries the gap to every command that takes --calibration
+    files = result.write(tmp_path / "identified")
+    with use_calibration(files["calibration"]):
+        model = make_model("thickwall")
+        assert model.params()["gap_mm"] == pytest.approx(found["gap_mm"], abs=1e-6)
+        explicit = make_model("thickwall", theta0_deg=model.params()["theta0_deg"],
+                              C10_MPa=model.material.C10_MPa, C01_MPa=model.material.C01_MPa,
+                              gap_mm=model.params()["gap_mm"])
+        pressures = np.linspace(0.0, 2.5, 11)
+        np.testing.assert_array_equal(model.predict(pressures, 30.0, 3.0, 0.0).force_N,
+                                      explicit.predict(pressures, 30.0, 3.0, 0.0).force_N)
+        # the report's identified muscle predicts with the gap: as closely as the fit itself
+        (tmp_path / "page").mkdir()
+        page = report_section(runs, tmp_path / "page")
+        assert "gap_mm" in page
+        identified = re.findall(r"<td>identified</td>\s*<td>([0-9.e+-]+)</td>", page)
+        assert identified and max(map(float, identified)) < 0.5, page
+    assert "gap_mm" not in make_model("thickwall").params()  # the shipped calibration has none
 
 
 def test_a_gap_asked_of_a_model_without_one_is_refused(gapped):
