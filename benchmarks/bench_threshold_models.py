@@ -38,6 +38,10 @@ of held lengths is tried; the default pair is the two longest below the rest len
 include the rest length are tried too and summarised apart: they say whether a model can hold
 the whole map when the rest-length curve is known, not whether it predicts it.
 
+Each map is read with the table's longest length as the rest length (the data file's reading)
+and, where it differs, with Festo's nominal length (:data:`NOMINAL_LENGTH_MM`): the DMSP-20-300's
+table starts at 296 mm, its type code says 300 mm.
+
 The same study then runs on simulated maps whose truth is one physics each (:data:`TRUTHS`, on
 the baseline's fit to the DMSP-20-300 and that muscle's grid, with Gaussian noise of 0.5 % of the
 largest force, seeded): does the selection find the physics that made the data, and the gap its
@@ -45,8 +49,9 @@ size?
 
     .venv/bin/python benchmarks/bench_threshold_models.py [--out FILE.json] [--seed 0]
 
-writes FILE.json (rows: the model-selection table; also the before/after and simulated tables,
-provenance) and FILE.png (the fitted curves). ``make bench-docs`` runs it into docs/measured/.
+writes FILE.json (rows: the model-selection table; also the before/after, simulated and fitted
+rest-length tables, every fit, provenance) and FILE.png (the fitted curves). ``make bench-docs``
+runs it into docs/measured/.
 """
 
 from __future__ import annotations
