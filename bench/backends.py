@@ -3,8 +3,9 @@ label and whether it is simulated.
 
 ``mkm.bench.run.make_backend``, the ``--backend`` choices of the ``mkm`` bench commands, the
 configuration's ``[daq] backend`` check and the backend contract test all read
-:data:`BACKENDS`; a backend added with :func:`register` is offered, validated and tested by all
-of them at once (scikit-learn's ``all_estimators`` idea).
+:data:`BACKENDS` (a :class:`mkm.core.registry.Registry`); a backend added with :func:`register`
+is offered, validated and tested by all of them at once (scikit-learn's ``all_estimators``
+idea).
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from dataclasses import dataclass
 
 from mkm.bench.backend import Backend, DeviceCapabilities
 from mkm.bench.devices import USB6001
+from mkm.core.registry import Registry
 
 
 @dataclass(frozen=True)
@@ -42,33 +44,26 @@ class BackendEntry:
     simulated: bool
 
 
-BACKENDS: dict[str, BackendEntry] = {}
+BACKENDS: Registry[BackendEntry] = Registry("backend", shown=lambda e: f"{e.name!r} ({e.label})")
 
 
-def register(entry: BackendEntry) -> None:
+def register(entry: BackendEntry) -> BackendEntry:
     """Add ``entry`` (its name must be new)."""
-    if entry.name in BACKENDS:
-        raise ValueError(f"backend {entry.name!r} is already registered")
-    BACKENDS[entry.name] = entry
+    return BACKENDS.register(entry)
 
 
 def unregister(name: str) -> None:
-    """Remove the backend ``name``."""
-    BACKENDS.pop(name, None)
+    """Remove the backend ``name`` (an unknown name is refused)."""
+    BACKENDS.unregister(name)
 
 
-def backend_names() -> tuple[str, ...]:
-    return tuple(BACKENDS)
+def names() -> tuple[str, ...]:
+    return BACKENDS.names()
 
 
-def backend_entry(name: str) -> BackendEntry:
-    """The entry of ``name``, or ``ValueError`` naming the choices."""
-    try:
-        return BACKENDS[name]
-    except (KeyError, TypeError):
-        choices = ", ".join(f"{e.name!r} ({e.label})" for e in BACKENDS.values())
-        shown = name if not isinstance(name, str) or len(name) <= 40 else name[:40] + "..."
-        raise ValueError(f"backend={shown!r} is invalid: expected one of {choices}") from None
+def entry(name: str) -> BackendEntry:
+    """The entry of ``name``, or a one-line ``ValueError`` naming the choices."""
+    return BACKENDS.entry(name)
 
 
 # the backends' modules are imported when a run opens one, not when the list is read

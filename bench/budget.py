@@ -122,9 +122,9 @@ class Instrument:
     @classmethod
     def from_config(cls, config) -> Instrument:
         """From a :class:`mkm.bench.config.BenchConfig` and its backend's device."""
-        from mkm.bench.backends import backend_entry
+        from mkm.bench import backends
 
-        caps = backend_entry(config.daq.backend).capabilities
+        caps = backends.entry(config.daq.backend).capabilities
         return cls._make(config.loadcell, config.regulator, caps.ai_lsb_V)
 
     @classmethod
@@ -137,8 +137,8 @@ class Instrument:
 
         cell = _section(LoadCell, meta.calibration.get("loadcell") or {})
         regulator = _section(Regulator, meta.calibration.get("regulator") or {})
-        entry = BACKENDS.get(str(meta.hardware.get("backend")))
-        caps = entry.capabilities if entry else USB6001
+        name = str(meta.hardware.get("backend"))
+        caps = BACKENDS.entry(name).capabilities if name in BACKENDS else USB6001
         return cls._make(cell, regulator, caps.ai_lsb_V)
 
     @classmethod

@@ -23,11 +23,11 @@ from typing import Any
 
 import numpy as np
 
-from mkm.bench.backends import BACKENDS, backend_entry
+from mkm.bench import backends
 from mkm.bench.settings import positive, read_toml, read_toml_file, typed_section, within
 from mkm.bench.sim_settings import Sim
-from mkm.bench.storage import check_muscle_id
-from mkm.fem.muscle import LIMITS, check_value, check_wall
+from mkm.fem.limits import LIMITS, check_muscle_id
+from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
 DEFAULT_CONFIG = "paper_prototype.toml"
@@ -54,37 +54,18 @@ MAX_VENT_TIMEOUT_S = 30.0
 MAX_DATASHEET_FRACTION = 0.05
 
 
-@dataclass(frozen=True)
-class Muscle:
-    """The muscle on the bench: its id (names the run folder) and geometry, checked against the
-    one muscle type's limits (:data:`mkm.fem.muscle.LIMITS`), and the +- tolerances it is made
-    to (defaults and meaning: :class:`mkm.fem.tolerances.Tolerances`), which the report
-    propagates to every model's prediction."""
-
-    id: str
-    D0_mm: float
-    t0_mm: float
-    L0_mm: float
-    eps: float
-    D0_tolerance_mm: float = Tolerances.D0_mm
-    t0_tolerance_mm: float = Tolerances.t0_mm
-    L0_tolerance_mm: float = Tolerances.L0_mm
-    eps_tolerance: float = Tolerances.eps
-    theta0_tolerance_deg: float = Tolerances.theta0_deg
-
-    def check(self):
-        check_muscle_id(self.id, "muscle.id")
-        for name in ("D0_mm", "t0_mm", "L0_mm", "eps"):
-            check_value(name, getattr(self, name), "muscle.")
-        check_wall(self.D0_mm, self.t0_mm, "muscle.")
-        try:
-            self.tolerances()
-        except ValueError as exc:
-            raise ValueError(f"muscle.{exc}") from None
-
-    def tolerances(self) -> Tolerances:
-        return Tolerances(self.D0_tolerance_mm, self.t0_tolerance_mm, self.L0_tolerance_mm,
-                          self.eps_tolerance, self.theta0_tolerance_deg)
+def read_muscle(table: Any, where: str = "muscle") -> Muscle:
+    """The bench's muscle from its ``[muscle]`` table: the one muscle type
+    (:class:`mkm.fem.muscle.Muscle`, checked against its limits), with an ``id`` (it names the
+    run folder) and the +- tolerances of ``[muscle.tolerances]`` (defaults and meaning:
+    :class:`mkm.fem.tolerances.Tolerances`), which the report propagates to every model's
+    prediction."""
+    if not isinstance(table, dict):
+        raise ValueError(f"[{where}] must be a table of settings, got {str(table)[:60]}")
+    table = dict(table)
+    tolerances = typed_section(Tolerances, table.pop("tolerances", {}), f"{where}.tolerances")
+    check_muscle_id(table.get("id"), f"{where}.id")
+    return Muscle.from_dict(table, where, tolerances=tolerances)
 
 
 @dataclass(frozen=True)
@@ -106,7 +87,7 @@ class Daq:
         return int(round(self.buffer_s * self.sample_rate_hz))
 
     def check(self):
-        backend_entry(self.backend)  # one line naming the choices
+        backends.entry(self.backend)  # one line naming the choices
         if not re.fullmatch(DEVICE_PATTERN, self.device):
             shown = self.device if len(self.device) <= 40 else self.device[:40] + "..."
             raise ValueError(f"daq.device={shown!r} ({len(self.device)} characters) is invalid: "
@@ -315,7 +296,7 @@ class BenchConfig:
     @property
     def simulated(self) -> bool:
         """Whether the configured backend drives no hardware."""
-        return backend_entry(self.daq.backend).simulated
+        return backends.entry(self.daq.backend).simulated
 
     @property
     def ai_channels(self) -> list[str]:
@@ -353,7 +334,7 @@ class BenchConfig:
 
     def _check_device(self):
         """Against the capabilities of the configured backend's device."""
-        caps = backend_entry(self.daq.backend).capabilities
+        caps = backends.entry(self.daq.backend).capabilities
         ai, daq, cell, reg = self.ai_channels, self.daq, self.loadcell, self.regulator
         if daq.terminal_config not in caps.terminal_configs:
             raise ValueError(f"daq.terminal_config={daq.terminal_config[:40]!r} is invalid: the "
@@ -432,14 +413,26 @@ class BenchConfig:
                              "split the run)")
 
     def replace(self, **sections) -> BenchConfig:
-        """A copy with some settings changed: ``replace(muscle={"eps": 0.1})``."""
-        changes = {name: _replace(getattr(self, name), values)
-                   for name, values in sections.items()}
+        """A copy with some settings changed: ``replace(muscle={"eps": 0.1})``; the text
+        (the run folder's ``config.toml``) changed with them, its comments kept."""
+        import tomlkit
+
+        changes = {}
+        for name, values in sections.items():
+            try:
+                changes[name] = _replace(getattr(self, name), values)
+            except ValueError as exc:  # the muscle checks itself when made
+                raise ValueError(f"{name}.{exc}") from None
         overrides = {**self.overrides, **{f"{name}.{key}": value for name, values in
                                           sections.items() for key, value in values.items()}}
-        new = dataclasses.replace(self, **changes, overrides=overrides)
+        document = tomlkit.parse(self.text) if self.text else tomlkit.document()
+        for name, values in sections.items():
+            _set_toml(document.setdefault(name, tomlkit.table()), values)
+        new = dataclasses.replace(self, **changes, overrides=overrides,
+                                  text=tomlkit.dumps(document))
         for section in changes.values():
-            section.check()
+            if hasattr(section, "check"):
+                section.check()
         new.check()
         return new
 
@@ -449,13 +442,27 @@ class BenchConfig:
                 if f.name not in ("source", "text", "overrides")}
 
 
+def _set_toml(table, values: dict[str, Any]) -> None:
+    """Write ``values`` into the TOML ``table`` (a sub-table for a dict; None, which TOML
+    cannot hold, removes the key: the setting's default)."""
+    import tomlkit
+
+    for key, value in values.items():
+        if isinstance(value, dict):
+            _set_toml(table.setdefault(key, tomlkit.table()), value)
+        elif value is None:
+            table.pop(key, None)
+        else:
+            table[key] = list(value) if isinstance(value, tuple) else value
+
+
 def _replace(section, values: dict[str, Any]):
     nested = {k: _replace(getattr(section, k), v) for k, v in values.items()
               if isinstance(v, dict) and dataclasses.is_dataclass(getattr(section, k))}
     return dataclasses.replace(section, **{**values, **nested})
 
 
-SECTIONS = {"muscle": Muscle, "daq": Daq, "loadcell": LoadCell, "regulator": Regulator,
+SECTIONS = {"muscle": read_muscle, "daq": Daq, "loadcell": LoadCell, "regulator": Regulator,
             "sequence": Sequence, "settle": Settle, "safety": Safety, "sim": Sim}
 REQUIRED = ("muscle", "loadcell", "daq")
 
@@ -478,8 +485,9 @@ def config_from_tables(data: dict[str, Any], text: str, source: str) -> BenchCon
     if isinstance(data["daq"], dict) and "backend" not in data["daq"]:
         raise ValueError(f"config {source}: daq.backend is missing" + _BACKEND_CHOICE)
     try:
-        sections = {name: typed_section(cls, data[name], name)
-                    for name, cls in SECTIONS.items() if name in data}
+        sections = {name: (read(data[name], name) if read is read_muscle
+                           else typed_section(read, data[name], name))
+                    for name, read in SECTIONS.items() if name in data}
         config = BenchConfig(**sections, source=source, text=text)
         config.check()
     except ValueError as exc:
@@ -489,7 +497,7 @@ def config_from_tables(data: dict[str, Any], text: str, source: str) -> BenchCon
 
 def _backend_choice() -> str:
     return (": expected [daq] backend = " + " or ".join(f"'{e.name}' ({e.label})"
-                                                       for e in BACKENDS.values())
+                                                       for e in backends.BACKENDS.entries())
             + ", so the configuration says whether it drives hardware")
 
 

@@ -25,7 +25,6 @@ import pandas as pd
 from mkm.bench.storage import (
     DIRECTIONS,
     MAX_CELL_MAGNITUDE,
-    MuscleMeta,
     RunMeta,
     RunStatus,
     RunWriter,
@@ -33,7 +32,8 @@ from mkm.bench.storage import (
     load_run,
 )
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
-from mkm.fem.muscle import check_value
+from mkm.fem.limits import check_value
+from mkm.fem.muscle import Muscle
 
 #: what a table column may hold -> the names looked for when ``--columns`` does not say
 COLUMN_ROLES = {"pressure": ("pressure_bar", "pressure", "p_bar", "p"),
@@ -126,7 +126,7 @@ def _directions(table: pd.DataFrame, column: str | None, pressure: np.ndarray) -
     return values
 
 
-def import_table(path: str | Path, muscle: MuscleMeta, out_root: str | Path,
+def import_table(path: str | Path, muscle: Muscle, out_root: str | Path,
                  columns: dict[str, str] | None = None) -> Path:
     """A run folder (status ``imported``) under ``out_root`` from the table ``path``; returns
     its path. ``muscle``: the muscle measured (id, D0_mm, t0_mm, L0_mm, eps)."""

@@ -4,25 +4,28 @@
   Equation 2 leaves its range and the muscle pulls little or nothing (``mkm acquire`` refuses
   such a run unless told ``--allow-past-lock``; ``mkm check`` warns);
 - :func:`loadcell_warning`: whether the muscle's expected force at the highest planned pressure
-  (Equation 2, the paper's model, at its calibrated braid angle) reaches the force interlock,
-  which would stop the run there. A warning, not a refusal: the interlock protects the cell.
+  (Equation 2, the paper's model) reaches the force interlock, which would stop the run there.
+  A warning, not a refusal: the interlock protects the cell.
+
+Both read one braid angle: the muscle's ``theta0_deg`` when the configuration gives it, else
+the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says which).
 """
 
 from __future__ import annotations
 
-from mkm.fem.calibration import calibrated
-from mkm.fem.eq2 import Eq2, chou_hannaford
+from mkm.fem.eq2 import BraidLock, chou_hannaford
 from mkm.fem.eq2 import braid_lock as fem_braid_lock
 
 
-def _theta0_deg() -> float:
-    return float(calibrated(Eq2().calibration_key)["theta0_deg"])
+def muscle_lock(config) -> BraidLock:
+    """The braid lock of the configured muscle, at its own angle or the calibrated one."""
+    return fem_braid_lock(config.muscle.theta0_deg)
 
 
 def braid_lock(config) -> str | None:
     """The message when ``config.muscle.eps`` is at or past the braid lock
     (:func:`mkm.fem.eq2.braid_lock`, the one definition every command uses), else None."""
-    lock = fem_braid_lock(getattr(config.muscle, "theta0_deg", None))
+    lock = muscle_lock(config)
     if config.muscle.eps < lock.eps_max:
         return None
     return (f"eps {config.muscle.eps:g} is past the braid lock, {lock}; the muscle pulls "
@@ -35,7 +38,7 @@ def expected_force_N(config, pressure_bar: float | None = None) -> float:
     m = config.muscle
     if pressure_bar is None:
         pressure_bar = max(config.sequence.pressures_bar)
-    force = chou_hannaford(pressure_bar, m.D0_mm, m.eps, _theta0_deg())
+    force = chou_hannaford(pressure_bar, m.D0_mm, m.eps, muscle_lock(config).theta0_deg)
     return max(float(force), 0.0)
 
 

@@ -17,7 +17,6 @@ from mkm.bench.config import BenchConfig
 from mkm.bench.storage import (
     CommandRecord,
     Gap,
-    MuscleMeta,
     ProcessIdentity,
     RunMeta,
     RunStatus,
@@ -39,11 +38,11 @@ class Recorder:
         settings = config.as_dict()
         process = ProcessIdentity.current()
         self.meta = RunMeta(
-            muscle=MuscleMeta(m.id, m.D0_mm, m.t0_mm, m.L0_mm, m.eps),
+            muscle=m,
             hardware=info.as_dict(),
             calibration={"loadcell": settings["loadcell"], "regulator": settings["regulator"],
                          "safety": settings["safety"],
-                         "muscle_tolerances": dataclasses.asdict(m.tolerances())},
+                         "muscle_tolerances": dataclasses.asdict(m.tolerances)},
             sequence={**settings["sequence"], "settle": settings["settle"],
                       "force_limit_N": config.force_limit_N, "n_steps": n_steps,
                       "estimated_duration_s": list(estimated_duration_s)},

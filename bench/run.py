@@ -35,8 +35,8 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError
-from mkm.bench.backends import backend_entry
 from mkm.bench.config import BenchConfig
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner
@@ -360,7 +360,7 @@ class BenchRun:
 
 def make_backend(config: BenchConfig, clock: str = "virtual") -> Backend:
     """The backend of ``config.daq.backend`` (:mod:`mkm.bench.backends`), not yet opened."""
-    return backend_entry(config.daq.backend).factory(config, clock)
+    return backends.entry(config.daq.backend).factory(config, clock)
 
 
 def make_operator(config: BenchConfig, backend: Backend) -> Operator:

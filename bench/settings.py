@@ -88,8 +88,12 @@ def typed_section(cls, table: Any, where: str):
                 raise ValueError(f"{key} is missing: it has no default")
             continue
         values[name] = _convert(table[name], hints[name], key)
-    obj = cls(**values)
-    obj.check()
+    try:
+        obj = cls(**values)  # a type that checks itself when made (the tolerances)
+    except ValueError as exc:
+        raise ValueError(f"[{where}] {exc}") from None
+    if hasattr(obj, "check"):
+        obj.check()
     return obj
 
 

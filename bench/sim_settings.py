@@ -61,7 +61,7 @@ class Truth:
     gap_mm: float | None = None
 
     def check(self):
-        from mkm.fem.muscle import check_value
+        from mkm.fem.limits import check_value
 
         for f in dataclasses.fields(self):
             if getattr(self, f.name) is not None:
@@ -97,14 +97,15 @@ class Sim:
     truth: Truth = field(default_factory=Truth)
 
     def check(self):
-        from mkm.fem.ladder import entry, model_names
+        from mkm.fem.ladder import entry, static_names
+        from mkm.fem.options import MESH_LEVELS
 
-        if self.model not in model_names():
+        if self.model not in static_names():
             raise ValueError(f"sim.model={self.model[:40]!r} is unknown: expected one of "
-                             f"{', '.join(model_names())}")
-        if self.fe_mesh not in ("coarse", "medium", "fine"):
-            raise ValueError(f"sim.fe_mesh={self.fe_mesh[:40]!r} is invalid: expected coarse, "
-                             "medium or fine")
+                             f"{', '.join(static_names())}")
+        if self.fe_mesh not in MESH_LEVELS:
+            raise ValueError(f"sim.fe_mesh={self.fe_mesh[:40]!r} is invalid: expected one of "
+                             f"{', '.join(MESH_LEVELS)}")
         within("sim.seed", self.seed, 0, 2**63 - 1)
         within("sim.regulator_tau_s", self.regulator_tau_s, 1e-3, 60.0, "s")
         within("sim.regulator_slew_bar_per_s", self.regulator_slew_bar_per_s, 1e-3, 1000.0,

@@ -29,7 +29,6 @@ import io
 import json
 import math
 import os
-import re
 import socket
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -39,24 +38,10 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.records import spreadsheet_safe_text, write_json_atomic
+from mkm.fem.muscle import Muscle
+from mkm.fem.tolerances import Tolerances
 
 SCHEMA_VERSION = 2
-# A muscle id names the run folder and labels figures and reports: no path separators, no
-# markup, no spreadsheet formula, no mathtext.
-MUSCLE_ID_PATTERN = r"[A-Za-z0-9][A-Za-z0-9._+-]{0,63}"
-
-
-def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
-    """``value`` if it is a valid muscle id (:data:`MUSCLE_ID_PATTERN`), else ``ValueError``."""
-    if not isinstance(value, str) or not re.fullmatch(MUSCLE_ID_PATTERN, value):
-        text = value if isinstance(value, str) else repr(value)
-        shown = repr(text if len(text) <= 40 else text[:40] + "...")
-        raise ValueError(f"{where}={shown} ({len(text)} characters) is invalid: expected 1 to "
-                         "64 letters, digits or . _ + - (it names the run folder and labels "
-                         "figures)")
-    return value
-
-
 class RunStatus(enum.StrEnum):
     """Status of a run in ``run.json`` (a ``str``: ``RunStatus.COMPLETE == "complete"``)."""
 
@@ -189,15 +174,6 @@ class Gap:
 
 
 @dataclass
-class MuscleMeta:
-    id: str
-    D0_mm: float
-    t0_mm: float
-    L0_mm: float
-    eps: float  # shortening ratio, a fraction
-
-
-@dataclass
 class RunMeta:
     """Everything ``run.json`` holds. :meth:`as_dict` writes it, :meth:`from_dict` reads it.
 
@@ -212,7 +188,7 @@ class RunMeta:
     the ``gaps``.
     """
 
-    muscle: MuscleMeta
+    muscle: Muscle
     status: RunStatus = RunStatus.RUNNING
     reason: str = ""
     schema_version: int = SCHEMA_VERSION
@@ -250,6 +226,7 @@ class RunMeta:
 
     def as_dict(self) -> dict[str, Any]:
         data = dataclasses.asdict(self)
+        data["muscle"] = self.muscle.record()
         data["status"] = str(self.status)
         del data["schema_version"]
         return {"schema_version": SCHEMA_VERSION, **data}
@@ -290,7 +267,8 @@ class RunMeta:
         values = {k: v for k, v in data.items() if k in known}
         _check_fields(values, where)
         values["status"] = RunStatus(values["status"])
-        values["muscle"] = muscle_from_dict(data.get("muscle"), where)
+        tolerances = (data.get("calibration") or {}).get("muscle_tolerances")
+        values["muscle"] = muscle_from_dict(data.get("muscle"), where, tolerances)
         if values.get("process") is not None:
             values["process"] = _record(ProcessIdentity, values["process"], f"{where}: process")
         values["gaps"] = [_record(Gap, g, f"{where}: gaps[{k}]")
@@ -301,26 +279,19 @@ class RunMeta:
         return cls(**values)
 
 
-def muscle_from_dict(data: Any, where: str) -> MuscleMeta:
-    from mkm.fem.muscle import check_value, check_wall
-
+def muscle_from_dict(data: Any, where: str, tolerances: Any = None) -> Muscle:
+    """The run's muscle (:class:`mkm.fem.muscle.Muscle`): ``run.json``'s ``muscle`` with its
+    ``id``, and the tolerances recorded with the run's calibration (the defaults where they are
+    not, or not usable)."""
     if not isinstance(data, dict):
         raise ValueError(f"{where} has no 'muscle' object: expected id, D0_mm, t0_mm, L0_mm, eps")
-    values = {}
-    for name in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
-        if name not in data:
-            raise ValueError(f"{where}: muscle.{name} is missing: expected the muscle's {name}")
-        value = data[name]
-        if name == "id":
-            check_muscle_id(value, f"{where}: muscle.id")
-        elif isinstance(value, bool) or not isinstance(value, int | float):
-            raise ValueError(f"{where}: muscle.{name}={_shown(value)} is invalid: expected a "
-                             "number")
-        else:
-            value = check_value(name, value, f"{where}: muscle.")
-        values[name] = value
-    check_wall(values["D0_mm"], values["t0_mm"], f"{where}: muscle.")
-    return MuscleMeta(**values)
+    if "id" not in data:
+        raise ValueError(f"{where}: muscle.id is missing: expected the muscle's id")
+    try:
+        made_to = Tolerances(**tolerances) if isinstance(tolerances, dict) else Tolerances()
+    except (TypeError, ValueError):
+        made_to = Tolerances()
+    return Muscle.from_dict(data, f"{where}: muscle", tolerances=made_to)
 
 
 def _shown(value: Any, n: int = 60) -> str:

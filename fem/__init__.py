@@ -16,7 +16,7 @@ from importlib import import_module
 _LAZY = {
     "Domain": "mkm.fem.interface", "ForceModel": "mkm.fem.interface",
     "Prediction": "mkm.fem.interface", "validate_inputs": "mkm.fem.interface",
-    "LADDER": "mkm.fem.ladder", "make_model": "mkm.fem.ladder", "model_names": "mkm.fem.ladder",
+    "MODELS": "mkm.fem.ladder", "make_model": "mkm.fem.ladder",
     "Eq2": "mkm.fem.eq2", "chou_hannaford": "mkm.fem.eq2", "chou_hannaford_eps_max": "mkm.fem.eq2",
     "LOCKING_ANGLE_DEG": "mkm.fem.eq2",
     "ThickWall": "mkm.fem.thickwall", "klute_hannaford": "mkm.fem.thickwall",

@@ -121,7 +121,7 @@ COLUMNS = {
     "iterations": "Newton iterations at this point (models that iterate; empty otherwise)",
     "cutbacks": "load-step cutbacks at this point (models that iterate; empty otherwise)",
     "seconds": "wall time of the model's predict() for the job's whole pressure sweep [s]",
-    "model": "model name in fem.ladder.LADDER",
+    "model": "model name in mkm.fem.ladder.MODELS",
     "mesh": "mesh level of the model (empty for mesh-free models)",
     "theta0_deg": "braid angle at rest [deg]",
     "L0_mm": "muscle length at rest [mm]",

@@ -2,10 +2,12 @@
 
 A calibration file (JSON) maps a model's calibration key (``"eq2-inner"``, ``"thickwall"``,
 ``"axisym"``) to its fitted ``theta0_deg`` with the target, reference, residuals, command, date
-and code version of the fit. ``fem/calibration.json`` ships with the package and is every
-model's default; :func:`use_calibration` selects another file (a bench prototype's fit) for
-the duration of a command without touching the shipped one. Only theta0 is fitted; everything
-else in the physics stays as measured or published.
+and code version of the fit. A :class:`Calibration` is such a file, read and checked once: the
+shipped ``fem/calibration.json`` (:meth:`Calibration.shipped`) is every model's default, and a
+command given another file (a bench prototype's fit, ``--calibration FILE``) loads it with
+:meth:`Calibration.load` and hands it to the models it builds (their ``calibration``
+parameter); the shipped one is never touched. Only theta0 is fitted here; everything else in
+the physics stays as measured or published.
 
 Targets (:func:`fit_theta0`):
 
@@ -35,23 +37,30 @@ it carries the whole friction offset. A run without a down sweep is fitted as it
 
 from __future__ import annotations
 
-import contextlib
 import json
 import os
+from collections.abc import Mapping
+from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from mkm.core.records import file_sha256, provenance, source_version, write_atomic
+from mkm.core.records import (
+    file_sha256,
+    package_file,
+    provenance,
+    source_version,
+    write_atomic,
+)
+from mkm.fem.limits import LIMITS, limit_text, outside
 from mkm.fem.materials import MooneyRivlin, mooney_rivlin
-from mkm.fem.muscle import LIMITS, OPEN_ABOVE, limit_text
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
     import pandas as pd
 
-CALIBRATION_FILE = Path(__file__).with_name("calibration.json")
+CALIBRATION_FILE = package_file("mkm.fem", "calibration.json")
 THETA0_BOUNDS_DEG = (15.0, 50.0)  # practical braids are 20-30 deg; 54.7 deg is the lock angle
 TARGETS = ("slope", "force", "slope+threshold")
 REFERENCE_COLUMNS = ("pressure_bar", "D0_mm", "t0_mm", "eps", "force_N")
@@ -61,34 +70,42 @@ MAX_FORCE_N = 1e6  # a reference force beyond this is a typo or a corrupt cell, 
 #: enter the force residuals but not the slope.
 THRESHOLD_FLOOR_FRACTION = 0.02
 
-_selected: Path | None = None
 
+@dataclass(frozen=True, eq=False)
+class Calibration:
+    """A calibration file's entries, read and checked once (see the module docstring).
 
-def calibration_file() -> Path:
-    """The calibration file in effect: the one :func:`use_calibration` selected, else shipped."""
-    return _selected or CALIBRATION_FILE
-
-
-@contextlib.contextmanager
-def use_calibration(path: str | os.PathLike | None):
-    """Make ``path`` the calibration file every model reads its default theta0 from.
-
-    ``None`` keeps the current one. The file is checked at once (readable JSON of entries with
-    a ``theta0_deg``); the previous selection is restored on exit. Models resolve theta0 when
-    they predict, and the dataset builder sends its workers the resolved angle, so workers
-    never read a calibration file of their own.
+    Models take one as their ``calibration`` parameter (None: :meth:`shipped`); the dataset
+    builder and the FE batch runner send their workers the resolved angle, so workers never read
+    a calibration file of their own.
     """
-    global _selected
-    if path is None:
-        yield calibration_file()
-        return
-    path = Path(path)
-    _load(path)
-    previous, _selected = _selected, path
-    try:
-        yield path
-    finally:
-        _selected = previous
+
+    path: Path
+    entries: Mapping[str, dict]
+
+    @classmethod
+    def load(cls, path: str | os.PathLike | None = None) -> Calibration:
+        """The calibration in ``path`` (None: the shipped one); a one-line ``ValueError`` for a
+        file that is unreadable, not JSON or holds an entry without a finite ``theta0_deg``."""
+        path = CALIBRATION_FILE if path is None else Path(path)
+        return cls(path, _load(path))
+
+    @classmethod
+    def shipped(cls) -> Calibration:
+        """The shipped ``fem/calibration.json``."""
+        return cls.load(None)
+
+    @property
+    def is_shipped(self) -> bool:
+        return self.path == CALIBRATION_FILE
+
+    def entry(self, key: str) -> dict:
+        """Entry ``key`` (for example ``"eq2-inner"``); ``ValueError`` naming the command that
+        writes it if there is none."""
+        if key not in self.entries:
+            raise ValueError(f"no calibrated theta0 for model {key!r} in {self.path}: pass "
+                             f"--theta0 or run `{calibrate_command(key, self.path)}`")
+        return self.entries[key]
 
 
 @cache
@@ -139,45 +156,46 @@ def _load(path: Path) -> dict:
     return _read(path, mtime)
 
 
-# the option of `mkm fem calibrate` that selects the variant in an entry's key ("eq2-braid")
-_VARIANT_OPTION = {"eq2": "--diameter", "axisym": "--braid"}
-
-
 def calibrate_command(key: str, path) -> str:
-    """The command that writes entry ``key`` into the calibration file ``path``."""
+    """The command that writes entry ``key`` (``eq2-braid``: a rung and the value of one of its
+    text parameters, which the command takes as the option of the same name) into the
+    calibration file ``path``."""
+    from mkm.fem.ladder import entry
+
     rung, _, variant = key.partition("-")
-    option = f" {_VARIANT_OPTION[rung]} {variant}" if variant in ("inner", "braid",
-                                                                  "sliding") else ""
+    option = "".join(f" --{name} {variant}"
+                     for name, parameter in (entry(rung).parameters.items() if variant else ())
+                     if variant in parameter.options())
     return f"mkm fem calibrate --model {rung}{option} --out {path}"
 
 
-def calibrated(key: str) -> dict:
-    """The entry ``key`` (for example ``"eq2-inner"``) of the calibration file in effect."""
-    path = calibration_file()
-    entries = _load(path)
-    if key not in entries:
-        raise ValueError(f"no calibrated theta0 for model {key!r} in {path}: pass --theta0 or "
-                         f"run `{calibrate_command(key, path)}`")
-    return entries[key]
+def calibrated(key: str, calibration: Calibration | None = None) -> dict:
+    """Entry ``key`` (for example ``"eq2-inner"``) of ``calibration`` (None: the shipped one)."""
+    return (calibration or Calibration.shipped()).entry(key)
 
 
 class CalibratedTheta0:
-    """Mixin of models whose braid angle defaults to their entry in the calibration file, and
-    whose rubber (if they have one) to the entry's ``C10_MPa``, ``C01_MPa`` where a muscle was
-    identified (``mkm identify``), else to Silastic S."""
+    """Mixin of models whose braid angle defaults to their entry in their ``calibration`` (None:
+    the shipped one), and whose rubber (if they have one) to the entry's ``C10_MPa``,
+    ``C01_MPa`` where a muscle was identified (``mkm identify``), else to Silastic S."""
 
     theta0_deg: float | None
+    calibration: Calibration | None = None
+
+    def calibrated_entry(self) -> dict:
+        """This model's entry in its calibration."""
+        return calibrated(self.calibration_key, self.calibration)
 
     def _theta0(self) -> float:
         if self.theta0_deg is not None:
             return float(self.theta0_deg)
-        return calibrated(self.calibration_key)["theta0_deg"]
+        return self.calibrated_entry()["theta0_deg"]
 
     def _rubber(self) -> MooneyRivlin:
         given = {"C10_MPa": self.C10_MPa, "C01_MPa": self.C01_MPa}
         if None in given.values():
             try:
-                entry = calibrated(self.calibration_key)
+                entry = self.calibrated_entry()
             except ValueError:  # an explicit angle needs no entry, nor does the nominal rubber
                 entry = {}
             given = {k: entry.get(k) if v is None else v for k, v in given.items()}
@@ -227,7 +245,7 @@ def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFram
 def _numeric(frame: pd.DataFrame, name: str) -> pd.DataFrame:
     """``frame`` with its number columns as floats (a blank cell is NaN: the row is dropped).
 
-    Text, a value outside the muscle limits (:data:`mkm.fem.muscle.LIMITS`), a force beyond
+    Text, a value outside the muscle limits (:data:`mkm.fem.limits.LIMITS`), a force beyond
     :data:`MAX_FORCE_N` or a direction other than up/down is refused, naming the value.
     """
     import pandas as pd
@@ -235,9 +253,11 @@ def _numeric(frame: pd.DataFrame, name: str) -> pd.DataFrame:
     frame = frame.copy()
     for column in [c for c in (*REFERENCE_COLUMNS, "L0_mm") if c in frame]:
         values = pd.to_numeric(frame[column], errors="coerce")
-        low, high = LIMITS[column][:2] if column in LIMITS else (-MAX_FORCE_N, MAX_FORCE_N)
-        above = values >= high if column in OPEN_ABOVE else values > high
-        bad = (values.isna() & frame[column].notna()) | (values < low) | above
+        if column in LIMITS:
+            beyond = outside(column, values) & values.notna()
+        else:
+            beyond = values.abs() > MAX_FORCE_N
+        bad = (values.isna() & frame[column].notna()) | beyond
         if bad.any():
             expected = limit_text(column) if column in LIMITS else \
                 f"expected a force within +-{MAX_FORCE_N:g} N"
@@ -437,7 +457,9 @@ def calibration_provenance(model) -> dict:
     """
     if getattr(model, "theta0_deg", None) is not None:
         return {"source": "theta0_deg given explicitly", "theta0_deg": model.theta0_deg}
-    path = calibration_file()
+    calibration = getattr(model, "calibration", None) or Calibration.shipped()
     key = model.calibration_key
-    return {"file": "shipped fem/calibration.json" if path == CALIBRATION_FILE else str(path),
-            "sha256": file_sha256(path), "key": key, "entry": calibrated(key)}
+    return {"file": "shipped fem/calibration.json" if calibration.is_shipped
+            else str(calibration.path),
+            "sha256": file_sha256(calibration.path), "key": key,
+            "entry": calibration.entry(key)}

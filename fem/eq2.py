@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mkm.fem.calibration import CalibratedTheta0, calibrated
+from mkm.fem.calibration import CalibratedTheta0, Calibration, calibrated
 from mkm.fem.interface import Domain, ForceModel
 
 BAR_TO_MPA = 0.1  # 1 bar = 0.1 MPa = 0.1 N/mm^2, so N/mm^2 * mm^2 = N
@@ -92,18 +92,19 @@ class BraidLock:
                 f"{self.source})")
 
 
-def braid_lock(theta0_deg: float | None = None) -> BraidLock:
+def braid_lock(theta0_deg: float | None = None,
+               calibration: Calibration | None = None) -> BraidLock:
     """The one braid-lock limit of a muscle, for every command (check, acquire, report, design).
 
     The lock is the braid's geometry (:func:`chou_hannaford_eps_max`), the same whatever the
     force model; only the angle at rest differs: the muscle's own ``theta0_deg`` when known,
     else the calibrated angle of the FE model, the toolkit's reference (``axisym`` in
-    ``fem/calibration.json``).
+    ``calibration``, default the shipped ``fem/calibration.json``).
     """
     if theta0_deg is not None:
         theta0, source = check_theta0(theta0_deg), "the muscle's theta0"
     else:
-        theta0 = float(calibrated("axisym")["theta0_deg"])
+        theta0 = float(calibrated("axisym", calibration)["theta0_deg"])
         source = "the FE model's calibrated theta0 (axisym)"
     return BraidLock(float(chou_hannaford_eps_max(theta0)), theta0, source)
 
@@ -119,14 +120,18 @@ class Eq2(CalibratedTheta0, ForceModel):
         ``inner`` uses D0 as the paper does; ``braid`` uses D0 + 2 t0.
     L0_mm : float
         Length at rest [mm]. Recorded only: Equation 2 does not depend on the length.
+    calibration : Calibration, optional
+        Where the default angle (and an identified rubber) comes from; default the shipped
+        ``fem/calibration.json`` (:class:`mkm.fem.calibration.Calibration`).
     """
 
     name = "eq2"
     domain = Domain()
 
     def __init__(self, theta0_deg: float | None = None, diameter: str = "inner",
-                 L0_mm: float = 282.0):
+                 L0_mm: float = 282.0, calibration: Calibration | None = None):
         self.theta0_deg = theta0_deg
+        self.calibration = calibration
         self.diameter = diameter
         self.L0_mm = L0_mm
 

@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from mkm.fem.calibration import calibrated
+from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.interface import ForceModel
 
 DIRECTIONS = ("rising", "falling", "mean")
@@ -107,15 +107,17 @@ class FrictionCreep(ForceModel):
         Default: the static model's calibration entry, else 0.
     creep_tau_s : float, optional
         Creep time constant [s]; default the calibration entry's, else 30.
-    mesh, theta0_deg, L0_mm, C10_MPa, C01_MPa
-        Passed to the static model (those it takes).
+    mesh, theta0_deg, L0_mm, C10_MPa, C01_MPa, calibration
+        Passed to the static model (those it takes); the calibration also holds the friction
+        and creep terms.
     """
 
     name = "friction"
 
     def __init__(self, static: str = "axisym", direction: str = "rising", hold_s: float = 0.0,
                  hysteresis_fraction: float | None = None, creep_fraction: float | None = None,
-                 creep_tau_s: float | None = None, **static_params):
+                 creep_tau_s: float | None = None, calibration: Calibration | None = None,
+                 **static_params):
         from mkm.fem.ladder import make_model
 
         if static == self.name:
@@ -125,7 +127,8 @@ class FrictionCreep(ForceModel):
                              f"{', '.join(DIRECTIONS)}")
         if not hold_s >= 0:
             raise ValueError(f"hold_s={hold_s!r} is invalid: expected a time >= 0 s")
-        self.static_model = make_model(static, **static_params)
+        self.static_model = make_model(static, calibration=calibration, **static_params)
+        self.calibration = calibration
         self.static, self.direction, self.hold_s = static, direction, float(hold_s)
         self._given = {"hysteresis_fraction": hysteresis_fraction,
                        "creep_fraction": creep_fraction, "creep_tau_s": creep_tau_s}
@@ -145,7 +148,7 @@ class FrictionCreep(ForceModel):
         entry = {}
         if any(v is None for v in self._given.values()):
             try:
-                entry = calibrated(self.calibration_key)
+                entry = calibrated(self.calibration_key, self.calibration)
             except ValueError:  # no entry for the static model: no identified friction
                 entry = {}
         return {k: float(v if v is not None else entry.get(k, DEFAULTS[k]))

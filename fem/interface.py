@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
-from mkm.fem.muscle import LIMITS, OPEN_ABOVE, check_wall, limit_text
+from mkm.fem.limits import LIMITS, check_wall, limit_text, outside
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -108,9 +108,7 @@ def validate_inputs(pressure_bar, D0_mm, t0_mm, eps) -> tuple[np.ndarray, ...]:
         if bad.any():
             raise ValueError(f"{name}={a[bad].flat[0]:g} is not a finite number")
     for name, a in zip(INPUTS, (P, D0, t0, e), strict=True):
-        low, high = LIMITS[name][:2]
-        _check(a, (a < low) | ((a >= high) if name in OPEN_ABOVE else (a > high)), name,
-               limit_text(name))
+        _check(a, outside(name, a), name, limit_text(name))
     bad = t0 >= D0 / 2
     if bad.any():
         i = np.flatnonzero(bad.ravel())[0]

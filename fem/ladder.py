@@ -1,4 +1,4 @@
-"""The registry of force models: the physics ladder here, the application adds the rest.
+"""The one registry of force models: every predictor by name, physics and application alike.
 
 An :class:`Entry` is everything the toolkit knows about a force model, in one place: how to build
 it (``"module:Class"``, imported on first use so that a cheap model never loads the FE machinery),
@@ -6,9 +6,12 @@ its parameters (declared once, as scikit-learn declares ``_parameter_constraints
 tests check them against the constructor), its label and colour in every figure, its family,
 whether its predictions are worth caching, and the variants the speed-accuracy study scores.
 
-:data:`LADDER` holds the physics rungs (Equation 2, the thick-wall closed form, the FE model).
-The application's registry (:mod:`mkm.registry`) reads them and adds the surrogate and ``auto``;
-:func:`register` adds a model from outside (a plug-in, a test).
+:data:`MODELS` holds them: the physics rungs (Equation 2, the thick-wall closed form, the FE
+model) and the friction-and-creep model are registered here; the application registers the
+surrogate and ``auto`` (:mod:`mkm.registry`, which also parses specs); :func:`register` adds a
+model from outside (a plug-in, a test). Every list of models elsewhere (the static rungs, the
+closed forms identify refits, the study's variants and stability maps, the choices of the
+command line) is derived from it.
 """
 
 from __future__ import annotations
@@ -18,7 +21,11 @@ from dataclasses import dataclass, field
 from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
+from mkm.core.registry import Registry
+from mkm.fem.options import BRAIDS, MESH_LEVELS
+
 if TYPE_CHECKING:  # annotations only: the registry loads without numpy
+    from mkm.fem.calibration import Calibration
     from mkm.fem.interface import ForceModel
 
 
@@ -27,11 +34,16 @@ class Parameter:
     """A parameter of a force model: what it is (with its unit and default) and its type.
 
     ``kind`` converts a spec's text (``float``, ``str`` or ``bool``); ``choices`` lists the
-    values a text parameter may take (empty: any)."""
+    values a text parameter may take (empty: any), or is a function that derives them (from the
+    registry, when it is read)."""
 
     description: str
     kind: type = float
-    choices: tuple[str, ...] = ()
+    choices: tuple[str, ...] | Callable[[], tuple[str, ...]] = ()
+
+    def options(self) -> tuple[str, ...]:
+        """The values a text parameter may take (empty: any)."""
+        return tuple(self.choices()) if callable(self.choices) else self.choices
 
     def convert(self, name: str, value: Any) -> Any:
         """``value`` as this parameter's type; ``ValueError`` names the parameter otherwise."""
@@ -50,9 +62,10 @@ class Parameter:
                 raise ValueError(f"{name}={value!r} is invalid: expected a number "
                                  f"({self.description})") from None
         value = str(value)
-        if self.choices and value not in self.choices:
+        options = self.options()
+        if options and value not in options:
             raise ValueError(f"{name}={value!r} is invalid: expected one of "
-                             f"{', '.join(self.choices)}")
+                             f"{', '.join(options)}")
         return value
 
 
@@ -61,17 +74,23 @@ THETA0 = Parameter("braid angle at rest [deg]; default calibrated")
 L0 = Parameter("length at rest [mm]; default 282")
 C10 = Parameter("rubber Mooney-Rivlin C10 [MPa]; default Silastic S (0.0694)")
 C01 = Parameter("rubber Mooney-Rivlin C01 [MPa]; default Silastic S (0.0628)")
-MESH = Parameter("coarse, medium (default) or fine", str, ("coarse", "medium", "fine"))
+MESH = Parameter(f"mesh level: {', '.join(MESH_LEVELS)} (default medium)", str,
+                 tuple(MESH_LEVELS))
+#: the families whose models are static physics rungs (friction's static model, the rungs the
+#: dataset builder and the simulated bench may use)
+STATIC_FAMILIES = ("closed form", "FE")
 
 
 @dataclass(frozen=True)
 class StudyVariant:
-    """A variant the speed-accuracy study scores: its label, its spec, and whether ``auto`` may
-    choose it (a model of other physics than the reference, a sliding braid, may not)."""
+    """A variant the speed-accuracy study scores: its label, its spec, whether ``auto`` may
+    choose it (a model of other physics than the reference, a sliding braid, may not) and
+    whether the study maps where it fails (``stability``)."""
 
     label: str
     spec: str
     auto_candidate: bool = True
+    stability: bool = True
 
 
 @dataclass(frozen=True)
@@ -117,73 +136,109 @@ class Entry:
                              f"{', '.join(self.parameters) or 'none'}")
         return {k: self.parameters[k].convert(k, v) for k, v in params.items()}
 
-    def build(self, **params) -> ForceModel:
-        """The model with ``params`` (None values mean "use the default")."""
+    def build(self, calibration: Calibration | None = None, **params) -> ForceModel:
+        """The model with ``params`` (None values mean "use the default") and, for a model that
+        takes one, ``calibration`` (None: the shipped one)."""
         given = self.check_params({k: v for k, v in params.items() if v is not None})
-        return self.resolve()(**given)
+        return self.construct(given, calibration)
+
+    def construct(self, params: dict[str, Any], calibration: Calibration | None = None
+                  ) -> ForceModel:
+        """The model from checked ``params``, given ``calibration`` if it takes one."""
+        factory = self.resolve()
+        if calibration is not None and self.takes_calibration:
+            return factory(**params, calibration=calibration)
+        return factory(**params)
+
+    @property
+    def takes_calibration(self) -> bool:
+        """Whether the factory takes a ``calibration`` (a model with a calibrated default)."""
+        import inspect
+
+        return "calibration" in inspect.signature(self.resolve()).parameters
 
 
-LADDER: dict[str, Entry] = {
-    "eq2": Entry(
-        "eq2", "mkm.fem.eq2:Eq2", "Equation 2 (Chou-Hannaford)",
-        "Equation 2 of the paper (Chou-Hannaford), thin-walled, no rubber", "closed form",
-        {"diameter": Parameter("inner (the paper's D0, default) or braid (D0 + 2 t0)", str,
-                               ("inner", "braid")),
-         "theta0_deg": THETA0,
-         "L0_mm": Parameter("length at rest [mm] (recorded only)")},
-        colour="tab:blue",
-        study=(StudyVariant("eq2-inner", "eq2:diameter=inner"),
-               StudyVariant("eq2-braid", "eq2:diameter=braid")),
-        contract_spec="eq2"),
-    "thickwall": Entry(
-        "thickwall", "mkm.fem.thickwall:ThickWall", "Thick-wall (Klute-Hannaford)",
-        "thick-walled Mooney-Rivlin tube in the braid, mid-section closed form "
-        "(Klute-Hannaford)", "closed form",
-        {"theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10, "C01_MPa": C01,
-         "gap_mm": Parameter("radial gap between tube and braid at rest [mm]; default the "
-                             "calibration's (an identified muscle), else 0")},
-        colour="tab:orange", study=(StudyVariant("thickwall", "thickwall"),),
-        contract_spec="thickwall"),
-    "axisym": Entry(
-        "axisym", "mkm.fem.fe.model:Axisym", "FE model (axisymmetric)",
-        "axisymmetric finite-element model (scikit-fem), caps and braid included", "FE",
-        {"mesh": MESH, "theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10, "C01_MPa": C01,
-         "braid": Parameter("bonded (default: fibres glued to the rubber) or sliding "
-                            "(frictionless sleeve), each with its own calibrated theta0", str,
-                            ("bonded", "sliding"))},
-        colour="tab:green", expensive=True,
-        study=(*(StudyVariant(f"axisym-{m}", f"axisym:mesh={m}")
-                 for m in ("coarse", "medium", "fine")),
-               StudyVariant("axisym-sliding", "axisym:braid=sliding", auto_candidate=False)),
-        contract_spec="axisym:mesh=coarse"),
-}
+MODELS: Registry[Entry] = Registry("model", "see `mkm models`")
 
 
-def register(entry: Entry) -> None:
-    """Add ``entry`` to the ladder (a name already taken is refused)."""
-    if entry.name in LADDER:
-        raise ValueError(f"model {entry.name!r} is already registered")
-    LADDER[entry.name] = entry
+def register(entry: Entry) -> Entry:
+    """Add ``entry`` to :data:`MODELS` (a name already taken is refused)."""
+    return MODELS.register(entry)
 
 
 def unregister(name: str) -> None:
-    LADDER.pop(name, None)
-
-
-def model_names() -> list[str]:
-    return list(LADDER)
+    """Remove model ``name`` from :data:`MODELS` (an unknown name is refused)."""
+    MODELS.unregister(name)
 
 
 def entry(name: str) -> Entry:
-    if name not in LADDER:
-        raise ValueError(f"unknown model {name!r}: expected one of {', '.join(LADDER)}")
-    return LADDER[name]
+    """The entry of model ``name``; a one-line ``ValueError`` naming the choices otherwise."""
+    return MODELS.entry(name)
 
 
-def model_class(name: str) -> Callable[..., ForceModel]:
-    return entry(name).resolve()
+def names() -> tuple[str, ...]:
+    """Every registered model, in registration order."""
+    return MODELS.names()
 
 
-def make_model(name: str, **params) -> ForceModel:
-    """Instantiate rung ``name`` with ``params`` (None values mean "use the default")."""
-    return entry(name).build(**params)
+def static_names() -> tuple[str, ...]:
+    """The static physics rungs (:data:`STATIC_FAMILIES`), in registration order."""
+    return MODELS.names(lambda e: e.family in STATIC_FAMILIES)
+
+
+def make_model(name: str, calibration: Calibration | None = None, **params) -> ForceModel:
+    """Instantiate model ``name`` with ``params`` (None values mean "use the default") and
+    ``calibration`` (None: the shipped one)."""
+    return entry(name).build(calibration, **params)
+
+
+register(Entry(
+    "eq2", "mkm.fem.eq2:Eq2", "Equation 2 (Chou-Hannaford)",
+    "Equation 2 of the paper (Chou-Hannaford), thin-walled, no rubber", "closed form",
+    {"diameter": Parameter("inner (the paper's D0, default) or braid (D0 + 2 t0)", str,
+                           ("inner", "braid")),
+     "theta0_deg": THETA0,
+     "L0_mm": Parameter("length at rest [mm] (recorded only)")},
+    colour="tab:blue",
+    study=(StudyVariant("eq2-inner", "eq2:diameter=inner"),
+           StudyVariant("eq2-braid", "eq2:diameter=braid")),
+    contract_spec="eq2"))
+register(Entry(
+    "thickwall", "mkm.fem.thickwall:ThickWall", "Thick-wall (Klute-Hannaford)",
+    "thick-walled Mooney-Rivlin tube in the braid, mid-section closed form "
+    "(Klute-Hannaford)", "closed form",
+    {"theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10, "C01_MPa": C01,
+     "gap_mm": Parameter("radial gap between tube and braid at rest [mm]; default the "
+                         "calibration's (an identified muscle), else 0")},
+    colour="tab:orange", study=(StudyVariant("thickwall", "thickwall"),),
+    contract_spec="thickwall"))
+register(Entry(
+    "axisym", "mkm.fem.fe.model:Axisym", "FE model (axisymmetric)",
+    "axisymmetric finite-element model (scikit-fem), caps and braid included", "FE",
+    {"mesh": MESH, "theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10, "C01_MPa": C01,
+     "braid": Parameter("bonded (default: fibres glued to the rubber) or sliding "
+                        "(frictionless sleeve), each with its own calibrated theta0", str,
+                        BRAIDS)},
+    colour="tab:green", expensive=True,
+    study=(*(StudyVariant(f"axisym-{m}", f"axisym:mesh={m}", stability=m == "medium")
+             for m in MESH_LEVELS),
+           StudyVariant("axisym-sliding", "axisym:braid=sliding", auto_candidate=False,
+                        stability=False)),
+    contract_spec="axisym:mesh=coarse"))
+register(Entry(
+    "friction", "mkm.fem.friction:FrictionCreep", "Static model + friction and creep",
+    "a static rung with braid friction (rising and falling branches) and one creep mode, "
+    "at the values `mkm identify` wrote into the calibration (default none)", "friction",
+    {"static": Parameter("the static rung (default axisym)", str, static_names),
+     "direction": Parameter("rising (default), falling or mean (the static force)", str,
+                            ("rising", "falling", "mean")),
+     "hold_s": Parameter("time held at the pressure [s]; default 0, inf: relaxed"),
+     "hysteresis_fraction": Parameter("friction band half-width (a fraction); default "
+                                      "calibrated, else 0"),
+     "creep_fraction": Parameter("share of the force creep relaxes (a fraction); default "
+                                 "calibrated, else 0"),
+     "creep_tau_s": Parameter("creep time constant [s]; default calibrated, else 30"),
+     "mesh": MESH, "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
+    colour="tab:brown", expensive=True,
+    contract_spec="friction:static=thickwall,hysteresis_fraction=0.03,creep_fraction=0.02,"
+                  "hold_s=30"))

@@ -1,63 +1,31 @@
-"""The muscle: one description of a McKibben muscle and one set of limits for every package.
+"""The muscle: one description of a McKibben muscle for every package.
 
 A muscle is its tube (inner diameter ``D0_mm``, wall ``t0_mm``), its length at rest ``L0_mm``,
-its braid angle at rest ``theta0_deg`` and its rubber (Mooney-Rivlin ``C10_MPa``, ``C01_MPa``);
-the shortening ratio ``eps`` (a fraction) is where it is held. ``None`` for the angle or the
-rubber means "the model's default" (the calibrated angle, Silastic S).
+its braid angle at rest ``theta0_deg`` and its rubber (Mooney-Rivlin ``C10_MPa``, ``C01_MPa``),
+the +- tolerances it is made to, and, on a bench, its ``id``; the shortening ratio ``eps`` (a
+fraction) is where it is held. ``None`` for the angle or the rubber means "not known": the
+models' defaults (the calibrated angle, Silastic S).
 
-:data:`LIMITS` are the bounds beyond which a value is a typo, not a muscle (``--D0 1e9`` would
-give 3e17 N; ``D0 1e-300`` a zero force). The force-model interface checks its arrays against
-them (:func:`mkm.fem.interface.validate_inputs`), the bench configuration, the run folder and
-design check their muscles with :func:`check_muscle`: one validator, one set of limits.
+The bench configuration's ``[muscle]`` table, a run folder's ``run.json``, the force models'
+parameters (:meth:`Muscle.model_params`), identify and design all use this one type, checked
+when made against the one set of limits (:mod:`mkm.fem.limits`).
 """
 
 from __future__ import annotations
 
-import math
-from dataclasses import asdict, dataclass
+import dataclasses
+from dataclasses import dataclass, field
 from typing import Any
 
-#: name -> (low, high, what the value is, unit); both bounds included except :data:`OPEN_ABOVE`
-LIMITS: dict[str, tuple[float, float, str, str]] = {
-    "pressure_bar": (0.0, 1000.0, "a gauge pressure", "bar"),
-    "D0_mm": (1.0, 500.0, "an inner diameter", "mm"),
-    "t0_mm": (0.05, 100.0, "a wall thickness", "mm"),
-    "L0_mm": (10.0, 3000.0, "a length at rest", "mm"),
-    "eps": (0.0, 1.0, "a shortening ratio", "(a fraction)"),
-    "theta0_deg": (1.0, 89.0, "a braid angle at rest", "deg"),
-    "C10_MPa": (1e-4, 100.0, "a Mooney-Rivlin C10", "MPa"),
-    "C01_MPa": (0.0, 100.0, "a Mooney-Rivlin C01", "MPa"),
-    "gap_mm": (0.0, 100.0, "a radial gap between tube and braid", "mm"),
-}
-#: the upper bound of these is excluded (eps = 1 is a muscle of zero length)
-OPEN_ABOVE = frozenset({"eps"})
+from mkm.fem.limits import LIMITS, check_muscle_id, check_value, check_wall
+from mkm.fem.tolerances import Tolerances
 
-
-def limit_text(name: str) -> str:
-    """``expected an inner diameter in [1, 500] mm``."""
-    low, high, what, unit = LIMITS[name]
-    close = ")" if name in OPEN_ABOVE else "]"
-    return f"expected {what} in [{low:g}, {high:g}{close} {unit}"
-
-
-def check_value(name: str, value: Any, prefix: str = "") -> float:
-    """``value`` as a float inside :data:`LIMITS`; ``ValueError`` names it and the range."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{prefix}{name}={value!r} is not a number: {limit_text(name)}") from None
-    low, high = LIMITS[name][:2]
-    above = number >= high if name in OPEN_ABOVE else number > high
-    if not math.isfinite(number) or number < low or above:
-        raise ValueError(f"{prefix}{name}={number:g} is invalid: {limit_text(name)}")
-    return number
-
-
-def check_wall(D0_mm: float, t0_mm: float, prefix: str = "") -> None:
-    """A wall thinner than the tube's radius (``t0_mm < D0_mm / 2``)."""
-    if not t0_mm < D0_mm / 2:
-        raise ValueError(f"{prefix}t0_mm={t0_mm:g} is too thick for D0_mm={D0_mm:g}: expected "
-                         f"t0_mm < D0_mm/2 = {D0_mm / 2:g}")
+#: the numbers of a muscle, in the order run.json and tables list them
+NUMBERS = ("D0_mm", "t0_mm", "L0_mm", "eps", "theta0_deg", "C10_MPa", "C01_MPa")
+#: the numbers a muscle always has (the others: None when not known)
+REQUIRED = ("D0_mm", "t0_mm", "L0_mm", "eps")
+#: the parameters a force model takes from a muscle (the geometry goes to ``predict``)
+MODEL_PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 
 
 @dataclass(frozen=True)
@@ -75,7 +43,12 @@ class Muscle:
     theta0_deg : float or None
         Braid angle at rest [deg]; None: the model's calibrated angle.
     C10_MPa, C01_MPa : float or None
-        Mooney-Rivlin constants of the rubber [MPa]; None: Silastic S.
+        Mooney-Rivlin constants of the rubber [MPa]; None: the calibration's, else Silastic S.
+    id : str
+        What the muscle is called on a bench (names its run folders); empty for a muscle of a
+        computation.
+    tolerances : Tolerances
+        The +- bounds it is made to (:class:`mkm.fem.tolerances.Tolerances`).
     """
 
     D0_mm: float
@@ -85,29 +58,59 @@ class Muscle:
     theta0_deg: float | None = None
     C10_MPa: float | None = None
     C01_MPa: float | None = None
+    id: str = ""
+    tolerances: Tolerances = field(default_factory=Tolerances)
 
     def __post_init__(self):
-        check_muscle(self)
-        for name, value in asdict(self).items():  # numbers from TOML or text: floats
-            if value is not None:
-                object.__setattr__(self, name, float(value))
+        for name in NUMBERS:
+            value = getattr(self, name)
+            if value is not None or name in REQUIRED:
+                object.__setattr__(self, name, check_value(name, value))
+        check_wall(self.D0_mm, self.t0_mm)
+        if self.id:
+            check_muscle_id(self.id, "id")
+        if not isinstance(self.tolerances, Tolerances):
+            raise ValueError(f"tolerances={self.tolerances!r} is invalid: expected Tolerances")
 
-    def as_dict(self) -> dict[str, float | None]:
-        return asdict(self)
+    @classmethod
+    def from_dict(cls, data: Any, where: str = "muscle", **extra) -> Muscle:
+        """The muscle a table holds (a run.json's ``muscle``, a config's ``[muscle]``): the
+        required numbers, the known ones and ``id``; ``extra`` (``tolerances=...``) added.
+        ``ValueError`` names ``where`` and the bad or missing field."""
+        if not isinstance(data, dict):
+            raise ValueError(f"{where} is not a table: expected {', '.join(('id', *REQUIRED))}")
+        for name in REQUIRED:
+            if name not in data:
+                raise ValueError(f"{where}.{name} is missing: expected the muscle's "
+                                 f"{LIMITS[name][2][2:]}")
+        known = {f.name for f in dataclasses.fields(cls)} - {"tolerances"}
+        unknown = sorted(set(data) - known)
+        if unknown:
+            raise ValueError(f"{where}.{str(unknown[0])[:40]} is not a field of a muscle: "
+                             f"expected some of {', '.join(sorted(known))}")
+        if "id" in data:
+            check_muscle_id(data["id"], f"{where}.id")
+        for name in NUMBERS:
+            value = data.get(name)
+            if value is not None and (isinstance(value, bool)
+                                      or not isinstance(value, int | float)):
+                raise ValueError(f"{where}.{name}={str(value)[:40]!r} is invalid: expected a "
+                                 "number")
+        try:
+            return cls(**{k: data[k] for k in data}, **extra)
+        except ValueError as exc:
+            raise ValueError(f"{where}.{exc}") from None
+
+    def record(self) -> dict[str, Any]:
+        """What a run folder records of it: ``id``, the geometry and ``eps``, and the angle and
+        rubber when known (the tolerances go with the run's calibration)."""
+        return {"id": self.id, **{k: getattr(self, k) for k in NUMBERS
+                                  if getattr(self, k) is not None}}
+
+    def replace(self, **changes) -> Muscle:
+        """A copy with some fields changed, checked again."""
+        return dataclasses.replace(self, **changes)
 
     def model_params(self) -> dict[str, float]:
-        """The parameters a force model takes (``L0_mm``, and the angle and rubber if set)."""
-        keys = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
-        return {k: getattr(self, k) for k in keys if getattr(self, k) is not None}
-
-
-def check_muscle(muscle, prefix: str = "") -> None:
-    """Check every set field of ``muscle`` (a :class:`Muscle` or any object with some of its
-    attributes: a bench configuration's muscle, a run's metadata) against :data:`LIMITS`."""
-    for name in ("D0_mm", "t0_mm", "L0_mm", "eps", "theta0_deg", "C10_MPa", "C01_MPa"):
-        value = getattr(muscle, name, None)
-        if value is not None:
-            check_value(name, value, prefix)
-    D0, t0 = getattr(muscle, "D0_mm", None), getattr(muscle, "t0_mm", None)
-    if D0 is not None and t0 is not None:
-        check_wall(float(D0), float(t0), prefix)
+        """The parameters a force model takes (``L0_mm``, and the angle and rubber if known)."""
+        return {k: getattr(self, k) for k in MODEL_PARAMETERS if getattr(self, k) is not None}

@@ -38,11 +38,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from mkm.fem.calibration import CalibratedTheta0, calibrated
+from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
 from mkm.fem.interface import Domain, ForceModel
+from mkm.fem.limits import check_value
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
-from mkm.fem.muscle import check_value
 
 
 def _rest_radii(D0_mm, t0_mm, gap_mm):
@@ -357,6 +357,9 @@ class ThickWall(CalibratedTheta0, ForceModel):
         threshold is above zero even at ``eps = 0``. Default: the calibration entry's
         ``gap_mm`` where a muscle was identified with one (``mkm identify --params ...,gap``),
         else 0.
+    calibration : Calibration, optional
+        Where the default angle (and an identified rubber and gap) comes from; default the shipped
+        ``fem/calibration.json`` (:class:`mkm.fem.calibration.Calibration`).
     """
 
     name = "thickwall"
@@ -365,10 +368,11 @@ class ThickWall(CalibratedTheta0, ForceModel):
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
                  C10_MPa: float | None = None, C01_MPa: float | None = None,
-                 gap_mm: float | None = None):
+                 gap_mm: float | None = None, calibration: Calibration | None = None):
         if gap_mm is not None:
             gap_mm = check_value("gap_mm", gap_mm)
         self.theta0_deg = theta0_deg
+        self.calibration = calibration
         self.L0_mm = L0_mm
         self.C10_MPa = C10_MPa
         self.C01_MPa = C01_MPa
@@ -390,7 +394,7 @@ class ThickWall(CalibratedTheta0, ForceModel):
         if self.gap_mm is not None:
             return self.gap_mm
         try:
-            entry = calibrated(self.calibration_key)
+            entry = self.calibrated_entry()
         except ValueError:  # no entry for this model: an explicit angle needs none
             return 0.0
         return check_value("gap_mm", entry.get("gap_mm", 0.0), prefix="calibration ")

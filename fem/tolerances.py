@@ -17,7 +17,7 @@ from dataclasses import asdict, dataclass, fields
 
 import numpy as np
 
-from mkm.fem.muscle import LIMITS
+from mkm.fem.limits import LIMITS
 
 SQRT3 = math.sqrt(3.0)
 #: what ``--tolerance`` calls each field
@@ -99,7 +99,7 @@ def draws(nominal: dict[str, float], tolerances: Tolerances, n: int,
           rng: np.random.Generator) -> dict[str, np.ndarray]:
     """``n`` joint draws of the muscle's inputs (``D0_mm, t0_mm, L0_mm, eps, theta0_deg,
     C10_MPa, C01_MPa``) around ``nominal``, uniform within the bounds, clipped to
-    :data:`mkm.fem.muscle.LIMITS` (eps at 0 stays at 0 or above)."""
+    :data:`mkm.fem.limits.LIMITS` (eps at 0 stays at 0 or above)."""
     bounds = asdict(tolerances)
     out = {}
     for name in ("D0_mm", "t0_mm", "L0_mm", "eps", "theta0_deg"):

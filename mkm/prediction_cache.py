@@ -127,9 +127,9 @@ def predict_many(requests, cache_dir: Path | str | None = DEFAULT_CACHE_DIR, *,
 def _job(model: ForceModel, inputs):
     """The batch job of a sweep, or None when the runner cannot carry it."""
     from mkm.fem.batch import Job
-    from mkm.fem.ladder import LADDER
+    from mkm.fem.ladder import MODELS
 
-    known = LADDER.get(model.name)
+    known = MODELS.entry(model.name) if model.name in MODELS else None
     params = model.params()
     P, D0, t0, eps = inputs
     if (known is None or not known.expensive or not set(params) <= set(JOB_PARAMETERS)

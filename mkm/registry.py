@@ -6,10 +6,10 @@ A *spec* names a predictor and its parameters: ``NAME[:key=value[,key=value...]]
 --models``, ``mkm study`` and ``auto``'s candidates all read specs with :func:`parse_spec` and
 build them with :meth:`Spec.build`; ``mkm models`` prints :func:`describe`.
 
-The entries are the physics ladder's (:data:`mkm.fem.ladder.LADDER`) followed by the
-application's own (:data:`APP_ENTRIES`: the surrogate and ``auto``); :func:`register` adds one.
-Each :class:`~mkm.fem.ladder.Entry` carries everything a list elsewhere would: factory,
-parameters, label, colour, family, caching, study variants.
+There is one registry of force models, :data:`mkm.fem.ladder.MODELS`: the physics package
+registers its rungs and the friction model, this module the application's own (the surrogate
+and ``auto``). Each :class:`~mkm.fem.ladder.Entry` carries everything a list elsewhere would:
+factory, parameters, label, colour, family, caching, study variants.
 
 In a comma list of specs (``--models eq2,axisym:mesh=coarse,L0_mm=150,surrogate``) an item
 with ``=`` and no ``:`` is one more parameter of the spec before it.
@@ -20,18 +20,31 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from mkm.fem import ladder
-from mkm.fem.ladder import C01, C10, L0, MESH, THETA0, Entry, Parameter
+from mkm.fem.ladder import (
+    C01,
+    C10,
+    L0,
+    MODELS,
+    THETA0,
+    Entry,
+    Parameter,
+    entry,
+    register,
+    unregister,
+)
 from mkm.surrogate import kinds
 
 if TYPE_CHECKING:  # annotations only: `mkm models` loads no model code
+    from mkm.fem.calibration import Calibration
     from mkm.fem.interface import ForceModel
 
 
 def _surrogate(kind: str | None = None, path: str | None = None,
-               accept_mismatch: bool = False, **muscle: float) -> ForceModel:
+               accept_mismatch: bool = False, calibration: Calibration | None = None,
+               **muscle: float) -> ForceModel:
     """The surrogate of ``kind`` (trained on first use) or loaded from ``path``, at the muscle
-    parameters given (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``)."""
+    parameters given (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``; the others from
+    ``calibration``)."""
     if path is not None and kind is not None:
         raise ValueError("surrogate: give kind or path, not both")
     if path is not None:
@@ -42,80 +55,44 @@ def _surrogate(kind: str | None = None, path: str | None = None,
         from mkm.surrogate.train import cached_model
 
         model = cached_model(kind or "best")
-    return model.with_parameters(**muscle) if muscle else model
+    return model.with_parameters(calibration, **muscle) if muscle or calibration else model
 
 
-def _auto(**params) -> ForceModel:
+def _auto(calibration: Calibration | None = None, **params) -> ForceModel:
+    from functools import partial
+
     from mkm.auto import AutoModel  # here: auto reads its table with pandas
 
-    return AutoModel(build=build_spec, **params)
+    return AutoModel(build=partial(build_spec, calibration=calibration), **params)
 
 
-APP_ENTRIES: dict[str, Entry] = {
-    "surrogate": Entry(
-        "surrogate", _surrogate, "Surrogate",
-        "scikit-learn surrogate trained on the FE design (or another FE dataset); refuses "
-        "muscle parameters its training did not cover", "surrogate",
-        {"kind": Parameter(kinds.describe(), str),
-         "path": Parameter("folder of a model saved by `mkm surrogate train`", str),
-         "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01,
-         "accept_mismatch": Parameter("true: load a saved model whose code, calibration or data "
-                                      "differ (default false)", bool)},
-        colour="tab:red", contract_spec="surrogate"),
-    "auto": Entry(
-        "auto", _auto, "auto (cheapest within tolerance)",
-        "the cheapest predictor whose error bound at the point asked meets a tolerance", "auto",
-        {"tolerance": Parameter("largest |Err%| against the finest FE, a fraction; "
-                                "default 0.02"),
-         "table": Parameter("study table (default: the shipped one, from `mkm study`)", str),
-         "per_point": Parameter("true: choose per point instead of one model per sweep", bool),
-         "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
-        colour="tab:purple", contract_spec="auto:tolerance=0.05"),
-    "friction": Entry(
-        "friction", "mkm.fem.friction:FrictionCreep", "Static model + friction and creep",
-        "a static rung with braid friction (rising and falling branches) and one creep mode, "
-        "at the values `mkm identify` wrote into the calibration (default none)", "friction",
-        {"static": Parameter("the static rung: axisym (default), thickwall or eq2", str,
-                             ("axisym", "thickwall", "eq2")),
-         "direction": Parameter("rising (default), falling or mean (the static force)", str,
-                                ("rising", "falling", "mean")),
-         "hold_s": Parameter("time held at the pressure [s]; default 0, inf: relaxed"),
-         "hysteresis_fraction": Parameter("friction band half-width (a fraction); default "
-                                          "calibrated, else 0"),
-         "creep_fraction": Parameter("share of the force creep relaxes (a fraction); default "
-                                     "calibrated, else 0"),
-         "creep_tau_s": Parameter("creep time constant [s]; default calibrated, else 30"),
-         "mesh": MESH, "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
-        colour="tab:brown", expensive=True,
-        contract_spec="friction:static=thickwall,hysteresis_fraction=0.03,creep_fraction=0.02,"
-                      "hold_s=30"),
-}
+register(Entry(
+    "surrogate", _surrogate, "Surrogate",
+    "scikit-learn surrogate trained on the FE design (or another FE dataset); refuses "
+    "muscle parameters its training did not cover", "surrogate",
+    {"kind": Parameter(kinds.describe(), str),
+     "path": Parameter("folder of a model saved by `mkm surrogate train`", str),
+     "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01,
+     "accept_mismatch": Parameter("true: load a saved model whose code, calibration or data "
+                                  "differ (default false)", bool)},
+    colour="tab:red", contract_spec="surrogate"))
+register(Entry(
+    "auto", _auto, "auto (cheapest within tolerance)",
+    "the cheapest predictor whose error bound at the point asked meets a tolerance", "auto",
+    {"tolerance": Parameter("largest |Err%| against the finest FE, a fraction; "
+                            "default 0.02"),
+     "table": Parameter("study table (default: the shipped one, from `mkm study`)", str),
+     "per_point": Parameter("true: choose per point instead of one model per sweep", bool),
+     "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
+    colour="tab:purple", contract_spec="auto:tolerance=0.05"))
+
+__all__ = ["MODELS", "Spec", "build_spec", "colour", "describe", "entries", "entry",
+           "parse_spec", "parse_specs", "register", "unregister"]
 
 
 def entries() -> dict[str, Entry]:
-    """Every registered predictor, physics first, in the order they are listed."""
-    return {**ladder.LADDER, **APP_ENTRIES}
-
-
-def entry(name: str) -> Entry:
-    every = entries()
-    if name not in every:
-        raise ValueError(f"unknown model {name!r}: expected one of {', '.join(every)} "
-                         "(see `mkm models`)")
-    return every[name]
-
-
-def register(new: Entry, physics: bool = False) -> None:
-    """Add ``new`` to the registry: to the physics ladder (``physics=True``: the dataset
-    builder and the simulated bench see it too) or to the application's entries."""
-    if new.name in entries():
-        raise ValueError(f"model {new.name!r} is already registered")
-    (ladder.LADDER if physics else APP_ENTRIES)[new.name] = new
-
-
-def unregister(name: str) -> None:
-    ladder.LADDER.pop(name, None)
-    APP_ENTRIES.pop(name, None)
+    """Every registered predictor by name, physics first, in the order they are listed."""
+    return {e.name: e for e in MODELS.entries()}
 
 
 def colour(name: str) -> str:
@@ -157,20 +134,21 @@ class Spec:
         merged.update({k: v for k, v in params.items() if v is not None})
         return Spec(self.name, tuple(sorted(merged.items())))
 
-    def build(self, **defaults) -> ForceModel:
-        """The predictor. ``defaults`` (a bench run's ``L0_mm``, say) apply where the predictor
-        takes that parameter and the spec does not set it."""
+    def build(self, calibration: Calibration | None = None, **defaults) -> ForceModel:
+        """The predictor, with ``calibration`` (None: the shipped one) where it takes one.
+        ``defaults`` (a bench run's ``L0_mm``, say) apply where the predictor takes that
+        parameter and the spec does not set it."""
         params = dict(self.params)
         for key, value in defaults.items():
             if key in self.entry.parameters and value is not None:
                 params.setdefault(key, value)
         given = self.entry.check_params(params, shown=self.text)
-        return self.entry.resolve()(**given)
+        return self.entry.construct(given, calibration)
 
 
-def build_spec(text: str, **defaults) -> ForceModel:
-    """The predictor a spec names: ``parse_spec(text).build(**defaults)``."""
-    return parse_spec(text).build(**defaults)
+def build_spec(text: str, calibration: Calibration | None = None, **defaults) -> ForceModel:
+    """The predictor a spec names: ``parse_spec(text).build(calibration, **defaults)``."""
+    return parse_spec(text).build(calibration, **defaults)
 
 
 def _text(value) -> str:
@@ -183,11 +161,10 @@ def parse_spec(text: str) -> Spec:
     """A :class:`Spec` from ``NAME[:key=value,...]``; ``ValueError`` names what is wrong."""
     name, _, rest = str(text).strip().partition(":")
     name = name.strip()
-    every = entries()
-    if name not in every:
+    if name not in MODELS:
         raise ValueError(f"unknown model {name!r} in {text!r}: expected one of "
-                         f"{', '.join(every)} (see `mkm models`)")
-    declared = every[name].parameters
+                         f"{', '.join(MODELS)} (see `mkm models`)")
+    declared = MODELS.entry(name).parameters
     params = {}
     for item in filter(None, (i.strip() for i in rest.split(","))):
         key, sep, value = item.partition("=")

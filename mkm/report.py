@@ -28,6 +28,7 @@ import json
 import time
 import warnings
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -39,6 +40,7 @@ from mkm.core.records import (
     spreadsheet_safe,
     write_json_atomic,
 )
+from mkm.fem.calibration import Calibration
 from mkm.fem.paper import L0_MM, TABLE3_CSV
 from mkm.fem.tolerances import Tolerances
 from mkm.figures import (
@@ -77,6 +79,8 @@ class _Run:
     k: int
     run: object  # bench.storage.Run
     specs: list[Spec]
+    #: the models' default angles and rubber (None: the shipped ``fem/calibration.json``)
+    calibration: Calibration | None = None
     scored: pd.DataFrame = field(default_factory=pd.DataFrame)
     summary: list[dict] = field(default_factory=list)
     keys: list[str] = field(default_factory=list)
@@ -109,7 +113,7 @@ class _Run:
 def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
                  cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
                  tolerance: float | None = 0.02, surrogate_section: bool = True,
-                 progress: bool = False) -> Path:
+                 progress: bool = False, calibration: Calibration | None = None) -> Path:
     """Write ``report.html`` (plus PNGs, CSVs and ``provenance.json``) for bench runs into
     ``out_dir``; return its path.
 
@@ -130,6 +134,9 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
         Add the comparison of the default surrogate with the FE model on the test muscles.
     progress : bool
         Progress bar on stderr (shown only when stderr is a terminal).
+    calibration : Calibration, optional
+        The models' default braid angles and rubber, and the identified muscle shown (None:
+        the shipped ``fem/calibration.json``).
     """
     from mkm.bench.storage import load_run
 
@@ -147,7 +154,8 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
                        progress, unit="task")
     runs, models = [], {}  # one model per spec and rest length for the whole report
     for k, run_dir in enumerate(run_dirs, start=1):
-        runs.append(_score(_Run(k, load_run(run_dir), specs), cache_dir, prov, bar, models))
+        runs.append(_score(_Run(k, load_run(run_dir), specs, calibration), cache_dir, prov, bar,
+                           models))
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
     spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
@@ -157,7 +165,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     for r in runs:
         sections.append(_run_section(r, out, names, colours, prov))
         bar.update(1)
-    sections.append(report_section(run_dirs, out))
+    sections.append(report_section(run_dirs, out, calibration))
     if surrogate_section:
         sections.append(_surrogate_section(out, prov))
         bar.update(1)
@@ -194,10 +202,10 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     for spec in r.specs:
         if (spec, L0_mm) not in models:  # a surrogate loads in about a second: once is enough
             _announce_training(spec, bar)
-            models[spec, L0_mm] = spec.build(L0_mm=L0_mm)
+            models[spec, L0_mm] = spec.build(r.calibration, L0_mm=L0_mm)
         model = models[spec, L0_mm]
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
-        pred = _with_band(pred, model, spec, L0_mm, muscle, meta, cache_dir)
+        pred = _with_band(pred, model, spec, L0_mm, r, cache_dir)
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
@@ -209,10 +217,11 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     return r
 
 
-def _with_band(pred, model, spec: Spec, L0_mm: float, muscle: dict, meta, cache_dir):
+def _with_band(pred, model, spec: Spec, L0_mm: float, r: _Run, cache_dir):
     """``pred`` with the band of the muscle's tolerances (``force_u_N``, :mod:`mkm.uncertainty`;
     the run's recorded tolerances, else the defaults), FE sweeps through the cache."""
-    recorded = (meta.get("calibration") or {}).get("muscle_tolerances") or {}
+    muscle = r.muscle
+    recorded = (r.meta.get("calibration") or {}).get("muscle_tolerances") or {}
     try:
         tolerances = Tolerances(**{k: v for k, v in recorded.items()
                                    if k in Tolerances.__dataclass_fields__})
@@ -227,7 +236,8 @@ def _with_band(pred, model, spec: Spec, L0_mm: float, muscle: dict, meta, cache_
 
     band = force_band(model, pred.pressure_bar, muscle["D0_mm"], muscle["t0_mm"],
                       muscle["eps"], tolerances, predict=predict,
-                      rebuild=lambda **params: spec.with_params(**params).build(L0_mm=L0_mm))
+                      rebuild=lambda **params: spec.with_params(**params).build(r.calibration,
+                                                                                L0_mm=L0_mm))
     return with_band(pred, band)
 
 
@@ -352,7 +362,7 @@ def _banners(runs: list[_Run]) -> str:
                    "not from a measurement.")
     for r in runs:
         theta0 = r.muscle.get("theta0_deg")
-        lock = braid_lock(theta0)
+        lock = braid_lock(theta0, r.calibration)
         if r.muscle.get("eps", 0.0) >= lock.eps_max:
             out.append(f"Run {r.k} is held at eps {r.eps_pct:.1f} %, past the braid lock: "
                        f"{lock}. No model is valid there: the braid cannot shorten so far, so "
@@ -619,7 +629,8 @@ def _auto_choice(r: _Run, tolerance: float):
             m = r.muscle
             muscle = {k: m[k] for k in ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
                       if m.get(k) is not None}
-            auto = AutoModel(tolerance=tolerance, build=build_spec, **muscle)
+            auto = AutoModel(tolerance=tolerance,
+                             build=partial(build_spec, calibration=r.calibration), **muscle)
             chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
             choice = str(chosen["model_used"][0]), explain(chosen, tolerance)
         r.auto_choices[tolerance] = choice

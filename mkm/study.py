@@ -75,6 +75,8 @@ class Predictor:
     build: Callable[[], ForceModel]
     spec: str = ""
     cached: bool = False
+    #: mapped by the stability study unless the study names its own methods
+    stability: bool = False
 
 
 def registry_predictor(label: str, spec: str, cached: bool = False) -> Predictor:
@@ -89,11 +91,12 @@ def physics_predictors() -> list[Predictor]:
     another physical assumption than the reference's bonded braid, shown but never a candidate
     of ``auto``)."""
     out = []
-    for known in ladder.LADDER.values():
+    for known in ladder.MODELS.entries():
         for variant in known.study:
             parsed = parse_spec(variant.spec)
             out.append(Predictor(variant.label, known.family, parsed.build,
-                                 parsed.text if variant.auto_candidate else "", known.expensive))
+                                 parsed.text if variant.auto_candidate else "", known.expensive,
+                                 variant.stability))
     return out
 
 
@@ -101,6 +104,9 @@ def physics_predictors() -> list[Predictor]:
 # paper's best net. The generic GP (about 2.5 min of training cold on two cores) and the paper's
 # 54 Table 2 nets (about 10 min) are dominated on the front; `mkm study --surrogates all` adds them.
 STUDY_SURROGATES = kind_registry.study_default()
+# the surrogates whose failures the stability study maps: the physics ridge and the paper's net
+# (the default kind refuses what it was not trained on instead of failing)
+STABILITY_SURROGATES = ("physics", "mlp-paper")
 
 
 def surrogate_kinds(text: str) -> tuple[str, ...]:
@@ -139,7 +145,8 @@ def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR, n_jobs: int 
                   "paper net, standardised force" if kind.endswith("standardised")
                   else "paper net")
         out.append(Predictor(f"surrogate-{kind}", family,
-                             lambda kind=kind: trained_surrogate(kind, dataset, cache_dir)))
+                             lambda kind=kind: trained_surrogate(kind, dataset, cache_dir),
+                             stability=kind in STABILITY_SURROGATES))
     return out
 
 
@@ -189,12 +196,20 @@ class StudyConfig:
         return cls(predictors=lambda cache_dir: physics_predictors() + surrogate_predictors(
             cache_dir=cache_dir, kinds=tuple(kinds)))
     reference: str = "axisym-fine"
-    stability_methods: tuple = ("eq2-inner", "eq2-braid", "thickwall", "axisym-medium",
-                                "surrogate-physics", "surrogate-mlp-paper")
+    #: the predictors whose failures are mapped; None: every predictor marked ``stability``
+    stability_methods: tuple | None = None
     stability_muscles: tuple = STABILITY_MUSCLES
     stability_pressures: tuple = STABILITY_PRESSURES
     stability_eps: tuple = STABILITY_EPS
     timing_muscle: str = "I"
+
+
+def stability_methods(config: StudyConfig, predictors: list[Predictor]) -> tuple[str, ...]:
+    """The labels the stability study maps: the config's own, else every predictor marked
+    ``stability`` (the registry's study variants say which)."""
+    if config.stability_methods is not None:
+        return tuple(config.stability_methods)
+    return tuple(p.label for p in predictors if p.stability)
 
 
 def machine_name() -> str:
@@ -370,7 +385,7 @@ def solve_fe_sweeps(config: StudyConfig, predictors: list[Predictor],
                 for m in config.muscles]
     P_map = np.asarray(config.stability_pressures, float)
     requests += [(models[p.label], P_map, D0, t0, e) for p in predictors
-                 if p.cached and p.label in config.stability_methods
+                 if p.cached and p.label in stability_methods(config, predictors)
                  for _, D0, t0 in config.stability_muscles for e in config.stability_eps]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # out-of-domain is recorded per point, not shouted
@@ -403,7 +418,7 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
         _SHOW_PROGRESS.reset(token)
     models = {p.label: p.build() for p in predictors}
     labels = {p.label for p in predictors}
-    methods = [m for m in config.stability_methods if m in labels]
+    methods = [m for m in stability_methods(config, predictors) if m in labels]
     if cache_dir is not None:
         solve_fe_sweeps(config, predictors, models, cache_dir, progress, workers, scheduler)
     bar = progress_bar(len(predictors) + len(methods), "study", progress, unit="method")

@@ -51,7 +51,8 @@ def nominal_parameters(model: ForceModel, D0_mm: float, t0_mm: float, eps: float
     if theta is None:
         from mkm.fem.calibration import calibrated
 
-        theta = calibrated(model.calibration_key)["theta0_deg"]
+        theta = calibrated(model.calibration_key,
+                           getattr(model, "calibration", None))["theta0_deg"]
     return {"D0_mm": np.asarray(D0_mm, dtype=float), "t0_mm": np.asarray(t0_mm, dtype=float),
             "eps": float(eps),
             "L0_mm": float(params.get("L0_mm") or L0_MM), "theta0_deg": float(theta),

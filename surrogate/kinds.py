@@ -12,8 +12,9 @@ scikit-learn. A kind's parameters are its factory's keyword arguments beyond ``i
 whose ``members`` name each of its kinds with the factory's arguments.
 
 ``best`` names :data:`BEST`, the kind chosen by the numbers (muscle-held-out and off-grid errors,
-see the README's surrogate section). :func:`register` adds a kind (a plugin's, a test's) and
-:func:`unregister` removes it.
+see the README's surrogate section). :data:`KINDS` is a :class:`mkm.core.registry.Registry`:
+:func:`register` adds a kind (a plugin's, a test's), :func:`unregister` removes it,
+:func:`entry` finds the entry that builds a kind and :func:`names` lists them.
 """
 
 from __future__ import annotations
@@ -22,6 +23,8 @@ import importlib
 import inspect
 from collections.abc import Callable
 from dataclasses import dataclass
+
+from mkm.core.registry import Registry
 
 BEST = "muscle-gp"
 CALL_INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
@@ -101,35 +104,33 @@ class Kind:
         return factory(**{k: v for k, v in common.items() if k in accepted}, **arguments)
 
 
-_REGISTRY: dict[str, Kind] = {}
+KINDS: Registry[Kind] = Registry("surrogate kind")
 
 
 def register(kind: Kind) -> Kind:
-    """Add ``kind``; ``ValueError`` if its name is taken."""
-    if kind.name in _REGISTRY or kind.name == "best":
-        raise ValueError(f"surrogate kind {kind.name!r} is registered already: expected a new "
-                         "name")
-    _REGISTRY[kind.name] = kind
-    return kind
+    """Add ``kind``; ``ValueError`` if its name is taken (``best`` is)."""
+    if kind.name == "best":
+        raise ValueError("surrogate kind 'best' is already registered: expected a new name")
+    return KINDS.register(kind)
 
 
 def unregister(name: str) -> None:
-    """Remove the kind ``name`` (``KeyError`` if it is not registered)."""
-    del _REGISTRY[name]
+    """Remove the kind ``name``; ``ValueError`` if it is not registered."""
+    KINDS.unregister(name)
 
 
 def registered() -> tuple[Kind, ...]:
     """Every registered entry, in registration order."""
-    return tuple(_REGISTRY.values())
+    return KINDS.entries()
 
 
-def lookup(name: str) -> tuple[Kind, dict]:
+def _find(name: str) -> tuple[Kind, dict]:
     """The entry that builds kind ``name`` (``best``: :data:`BEST`) and the factory arguments
     it fixes; a one-line ``ValueError`` naming the known kinds if none does."""
     name = BEST if name == "best" else name
-    if name in _REGISTRY and _REGISTRY[name].members is None:
-        return _REGISTRY[name], {}
-    for kind in _REGISTRY.values():
+    if name in KINDS and KINDS.entry(name).members is None:
+        return KINDS.entry(name), {}
+    for kind in KINDS.entries():
         if kind.members is not None:
             members = _resolve(kind.members)()
             if name in members:
@@ -137,12 +138,18 @@ def lookup(name: str) -> tuple[Kind, dict]:
     raise ValueError(f"unknown surrogate kind {name!r}: expected {describe()}")
 
 
+def entry(name: str) -> Kind:
+    """The entry that builds kind ``name``: its own, its family's (a paper net), or
+    :data:`BEST`'s for ``best``; a one-line ``ValueError`` naming the known kinds otherwise."""
+    return _find(name)[0]
+
+
 def names(include_families: bool = True) -> list[str]:
     """Every kind name: the single kinds, then (``include_families``) each family's members."""
-    singles = [k.name for k in _REGISTRY.values() if k.members is None]
+    singles = list(KINDS.names(lambda k: k.members is None))
     if not include_families:
         return singles
-    return singles + [n for k in _REGISTRY.values() if k.members is not None for n in k.names()]
+    return singles + [n for k in KINDS.entries() if k.members is not None for n in k.names()]
 
 
 def make_estimator(kind: str, inputs=CALL_INPUTS, fixed=None, random_state: int = 0,
@@ -150,13 +157,13 @@ def make_estimator(kind: str, inputs=CALL_INPUTS, fixed=None, random_state: int 
     """A fresh, unfitted estimator of ``kind`` on ``X`` of columns ``inputs``, with ``fixed``
     the values of the muscle parameters that are not; ``parameters``: the kind's own (see
     :meth:`Kind.parameters`), a one-line ``ValueError`` for any other."""
-    entry, arguments = lookup(kind)
-    allowed = [p for p in entry.parameters() if p not in arguments]  # a member fixes its own
+    found, arguments = _find(kind)
+    allowed = [p for p in found.parameters() if p not in arguments]  # a member fixes its own
     unknown = sorted(set(parameters) - set(allowed))
     if unknown:
         raise ValueError(f"surrogate kind {kind!r} takes no parameter {', '.join(unknown)}: "
                          f"expected some of {', '.join(allowed) or 'none'}")
-    return entry.build(inputs, fixed, random_state, **arguments, **parameters)
+    return found.build(inputs, fixed, random_state, **arguments, **parameters)
 
 
 def describe() -> str:
@@ -180,18 +187,18 @@ def study_default() -> tuple[str, ...]:
 
 def trusted_types(kind: str) -> tuple[str, ...]:
     """The types a model file of ``kind`` may hold beyond those skops trusts itself."""
-    return lookup(kind)[0].trusted_types
+    return entry(kind).trusted_types
 
 
 def predictor_class(kind: str):
     """The class that predicts ``kind`` from its saved arrays, or None (see :class:`Kind`)."""
-    entry = lookup(kind)[0]
-    return None if entry.predictor is None else _resolve(entry.predictor)
+    found = entry(kind)
+    return None if found.predictor is None else _resolve(found.predictor)
 
 
 def model_modules(kind: str) -> tuple[str, ...]:
     """The project modules whose code a loaded estimator of ``kind`` runs."""
-    return (*BASE_MODULES, *lookup(kind)[0].modules)
+    return (*BASE_MODULES, *entry(kind).modules)
 
 
 for _kind in (

@@ -12,6 +12,7 @@ from __future__ import annotations
 import warnings
 from dataclasses import dataclass
 from functools import cache
+from typing import TYPE_CHECKING
 
 import numpy as np
 from threadpoolctl import ThreadpoolController
@@ -20,6 +21,9 @@ from mkm.fem.interface import INPUTS, Domain, ForceModel
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import L0_MM
 from mkm.surrogate.training_data import PARAMETERS
+
+if TYPE_CHECKING:
+    from mkm.fem.calibration import Calibration
 
 # Relative slack of "the same value" for a recorded parameter (a CSV round trip keeps ~1e-15).
 SAME_VALUE_RTOL = 1e-9
@@ -53,13 +57,13 @@ class ErrorMargin:
     measured_on: str
 
 
-def default_parameters() -> dict[str, float]:
+def default_parameters(calibration: Calibration | None = None) -> dict[str, float]:
     """Muscle parameters used when the caller gives none: the paper's length, the calibrated
-    braid angle of the FE model (``fem/calibration.json``) and its rubber (an identified
-    muscle's, else Silastic S)."""
+    braid angle of the FE model in ``calibration`` (None: the shipped ``fem/calibration.json``)
+    and its rubber (an identified muscle's, else Silastic S)."""
     from mkm.fem.calibration import calibrated
 
-    entry = calibrated("axisym")
+    entry = calibrated("axisym", calibration)
     return {"L0_mm": float(L0_MM), "theta0_deg": float(entry["theta0_deg"]),
             "C10_MPa": float(entry.get("C10_MPa", SILASTIC_S.C10_MPa)),
             "C01_MPa": float(entry.get("C01_MPa", SILASTIC_S.C01_MPa))}
@@ -90,7 +94,7 @@ class SurrogateForceModel(ForceModel):
         Training data hash and provenance, metrics, versions (see ``mkm.surrogate.io``).
     L0_mm, theta0_deg, C10_MPa, C01_MPa : float, optional
         The muscle's length [mm], braid angle at rest [deg] and rubber [MPa]. Default:
-        :func:`default_parameters` (the braid angle of the calibration in effect). A value
+        :func:`default_parameters` (the braid angle of ``calibration``). A value
         other than the recorded one of a parameter the estimator does not take raises
         ``ValueError`` (here for a given value, at ``predict`` for a default).
     predictor : object, optional
@@ -99,17 +103,21 @@ class SurrogateForceModel(ForceModel):
         through it, the same numbers as the estimator's.
     load_estimator : callable, optional
         ``() -> estimator``, when ``estimator`` is None.
+    calibration : Calibration, optional
+        Where the default muscle parameters come from (None: the shipped one).
     """
 
     def __init__(self, estimator, kind: str, inputs, fixed: dict, box: dict,
                  metadata: dict | None = None, L0_mm: float | None = None,
                  theta0_deg: float | None = None, C10_MPa: float | None = None,
-                 C01_MPa: float | None = None, *, predictor=None, load_estimator=None):
+                 C01_MPa: float | None = None, *, predictor=None, load_estimator=None,
+                 calibration: Calibration | None = None):
         if estimator is None and load_estimator is None:
             raise ValueError("SurrogateForceModel needs an estimator or load_estimator")
         self._estimator = estimator
         self._load_estimator = load_estimator
         self.predictor = predictor
+        self.calibration = calibration
         self.kind = kind
         self.inputs = tuple(inputs)
         self.fixed = dict(fixed)
@@ -132,12 +140,12 @@ class SurrogateForceModel(ForceModel):
 
     @property
     def parameters(self) -> dict[str, float]:
-        """The muscle parameters predictions are for, defaults resolved now (the calibration
-        in effect gives the default braid angle, as for the physics models)."""
+        """The muscle parameters predictions are for, defaults resolved now (its calibration
+        gives the default braid angle, as for the physics models)."""
         given = {k: v for k, v in self._given.items() if v is not None}
         missing = [k for k in PARAMETERS if k not in given]
         if missing:
-            defaults = default_parameters()
+            defaults = default_parameters(self.calibration)
             given.update({k: defaults[k] for k in missing})
         return self._resolve(given)
 
@@ -157,8 +165,10 @@ class SurrogateForceModel(ForceModel):
             resolved[name] = float(value)
         return resolved
 
-    def with_parameters(self, **parameters) -> SurrogateForceModel:
-        """The same fitted surrogate for another muscle (``L0_mm=..., theta0_deg=...``)."""
+    def with_parameters(self, calibration: Calibration | None = None,
+                        **parameters) -> SurrogateForceModel:
+        """The same fitted surrogate for another muscle (``L0_mm=..., theta0_deg=...``), its
+        defaults from ``calibration`` (None: this one's)."""
         unknown = sorted(set(parameters) - set(PARAMETERS))
         if unknown:
             raise ValueError(f"{self.name} takes no parameter {', '.join(unknown)}: expected "
@@ -166,7 +176,8 @@ class SurrogateForceModel(ForceModel):
         merged = {**self._given, **{k: v for k, v in parameters.items() if v is not None}}
         return SurrogateForceModel(self._estimator, self.kind, self.inputs, self.fixed,
                                    self.box, self.metadata, **merged, predictor=self.predictor,
-                                   load_estimator=self._load_estimator)
+                                   load_estimator=self._load_estimator,
+                                   calibration=calibration or self.calibration)
 
     def params(self):
         dataset = self.metadata.get("dataset", {})

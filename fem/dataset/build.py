@@ -33,8 +33,9 @@ from mkm.fem.batch import (
     run_job,
     run_jobs,
 )
+from mkm.fem.calibration import Calibration
 from mkm.fem.dataset.grid import Grid, load_grid
-from mkm.fem.ladder import LADDER, make_model
+from mkm.fem.ladder import entry, make_model
 
 __all__ = ["COLUMNS", "DEFAULT_OUT", "DatasetRun", "Job", "JobCache", "build_dataset",
            "default_cache_dir", "make_jobs", "model_version", "run_job", "run_jobs"]
@@ -42,8 +43,10 @@ __all__ = ["COLUMNS", "DEFAULT_OUT", "DatasetRun", "Job", "JobCache", "build_dat
 DEFAULT_OUT = Path("data/mkm_dataset.csv")
 
 
-def make_jobs(grid: Grid, model: str, mesh: str | None = None) -> list[Job]:
-    """One job per muscle and eps, with theta0 resolved (calibrated default made explicit).
+def make_jobs(grid: Grid, model: str, mesh: str | None = None,
+              calibration: Calibration | None = None) -> list[Job]:
+    """One job per muscle and eps, with theta0 resolved (the default of ``calibration``, None:
+    the shipped one, made explicit).
 
     Resolving theta0 here makes the cache key change when the calibration does, and sends
     workers the angle itself rather than a lookup in their own ``fem/calibration.json``.
@@ -51,7 +54,8 @@ def make_jobs(grid: Grid, model: str, mesh: str | None = None) -> list[Job]:
     jobs = []
     for D0, t0, e, L0, theta0 in itertools.product(grid.D0_mm, grid.t0_mm, grid.eps,
                                                    grid.L0_mm, grid.theta0_deg):
-        params = make_model(model, theta0_deg=theta0, L0_mm=L0, mesh=mesh).params()
+        params = make_model(model, calibration, theta0_deg=theta0, L0_mm=L0,
+                            mesh=mesh).params()
         jobs.append(Job(model=model, mesh=mesh_label(params.get("mesh", mesh)), D0_mm=D0,
                         t0_mm=t0, eps=e, L0_mm=params.get("L0_mm", L0),
                         theta0_deg=params.get("theta0_deg", theta0),
@@ -94,7 +98,7 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
                   mesh: str | None = None, out: str | os.PathLike | None = DEFAULT_OUT,
                   workers: int | None = None, scheduler: str | None = None,
                   runner: Runner | None = None, cache_dir: str | os.PathLike | None = None,
-                  progress: bool = True) -> DatasetRun:
+                  progress: bool = True, calibration: Calibration | None = None) -> DatasetRun:
     """Build the dataset of ``model`` over ``grid``: compute the jobs not in the cache, write the
     CSV ``out`` (one row per point: :data:`COLUMNS`, then any other per-point output of the
     model) and its provenance ``out.json``.
@@ -104,12 +108,13 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
     existing Dask cluster instead; ``runner`` runs it on a :class:`~mkm.fem.batch.Runner` already
     open (its workers reused). Non-converged points are kept with ``converged=False`` and
     NaN force. ``out=None`` writes nothing (the rows are in the returned ``frame``).
+    ``calibration`` gives the default theta0 (None: the shipped one).
     """
     check_where(workers, scheduler)
     grid = grid if isinstance(grid, Grid) else load_grid(grid)
     cache_dir = default_cache_dir() if cache_dir is None else cache_dir
     start = time.perf_counter()
-    jobs = make_jobs(grid, model, mesh)
+    jobs = make_jobs(grid, model, mesh, calibration)
     frame, done = run_jobs(jobs, workers=workers, scheduler=scheduler, runner=runner,
                            cache_dir=cache_dir, progress=progress, desc=f"{model} dataset")
     run = DatasetRun(frame=frame, jobs_total=len(jobs), jobs_computed=done["computed"],
@@ -118,19 +123,19 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
     if out is not None:
         run.out = Path(out)
         run.sidecar = run.out.with_suffix(".json")
-        info = _provenance(run, grid, jobs, done, cache_dir)
+        info = _provenance(run, grid, jobs, done, cache_dir, calibration)
         write_atomic(run.out, frame.to_csv(index=False, lineterminator="\n"))
         write_atomic(run.sidecar, json.dumps(info, indent=2) + "\n")
     return run
 
 
 def _provenance(run: DatasetRun, grid: Grid, jobs: list[Job], done: dict,
-                cache_dir) -> dict[str, Any]:
+                cache_dir, calibration: Calibration | None) -> dict[str, Any]:
     from mkm.fem.calibration import calibration_provenance
 
     info = provenance()
     info["versions"]["dask.distributed"] = version("distributed")
-    model = make_model(jobs[0].model, mesh=jobs[0].mesh)
+    model = make_model(jobs[0].model, calibration, mesh=jobs[0].mesh)
     if None not in grid.theta0_deg:
         calibration = {"key": model.calibration_key, "source": "theta0_deg given by the grid"}
     else:
@@ -158,6 +163,6 @@ def _provenance(run: DatasetRun, grid: Grid, jobs: list[Job], done: dict,
         "chunk_jobs": done["chunk_jobs"],
         "cache": str(cache_dir),
         "columns": {c: COLUMNS.get(c, "reported by the model (see "
-                                      f"{LADDER[jobs[0].model].factory})")
+                                      f"{entry(jobs[0].model).factory})")
                     for c in run.frame.columns},
     }

@@ -13,14 +13,16 @@ from pathlib import Path
 import pandas as pd
 
 from mkm.core.records import provenance, write_csv_with_sidecar
-from mkm.fem.fe.mesh import MESH_LEVELS
+from mkm.fem.calibration import Calibration
 from mkm.fem.fe.model import Axisym, isometric_sweep
 from mkm.fem.interface import validate_inputs
+from mkm.fem.options import MESH_LEVELS
 
 
 def mesh_convergence(D0_mm: float = 35.0, t0_mm: float = 2.5, eps: float = 0.05,
                      pressure_bar: float = 2.5, theta0_deg: float | None = None,
-                     L0_mm: float = 282.0, levels=tuple(MESH_LEVELS)) -> pd.DataFrame:
+                     L0_mm: float = 282.0, levels=tuple(MESH_LEVELS),
+                     calibration: Calibration | None = None) -> pd.DataFrame:
     """Force of one isometric point per mesh level (default: muscle I at 2.5 bar).
 
     Returns one row per level: ``mesh``, ``elements_wall``, ``elements_length``, ``dofs``,
@@ -28,7 +30,7 @@ def mesh_convergence(D0_mm: float = 35.0, t0_mm: float = 2.5, eps: float = 0.05,
     ``force_change_vs_finest`` (relative to the last level).
     """
     validate_inputs(pressure_bar, D0_mm, t0_mm, eps)
-    theta0 = Axisym(theta0_deg=theta0_deg).params()["theta0_deg"]
+    theta0 = Axisym(theta0_deg=theta0_deg, calibration=calibration).params()["theta0_deg"]
     rows = []
     for level in levels:
         start = time.perf_counter()

@@ -11,12 +11,7 @@ from __future__ import annotations
 import numpy as np
 from skfem import MeshTri
 
-# level: (elements through the wall, elements along the half length, largest/smallest axial size)
-MESH_LEVELS: dict[str, tuple[int, int, float]] = {
-    "coarse": (2, 16, 8.0),
-    "medium": (3, 32, 8.0),
-    "fine": (6, 96, 8.0),
-}
+from mkm.fem.options import MESH_LEVELS
 
 
 def graded_spacing(length_mm: float, n: int, ratio: float) -> np.ndarray:

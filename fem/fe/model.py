@@ -36,14 +36,15 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 
-from mkm.fem.calibration import CalibratedTheta0
+from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.eq2 import BAR_TO_MPA, LOCKING_ANGLE_DEG, check_theta0
 from mkm.fem.fe.assembly import Assembler, Term, operator
 from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
-from mkm.fem.fe.mesh import MESH_LEVELS, half_muscle_mesh
+from mkm.fem.fe.mesh import half_muscle_mesh
 from mkm.fem.fe.newton import OrderedLU, load_path, newton
 from mkm.fem.interface import ForceModel
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.options import BRAIDS, MESH_LEVELS
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
@@ -58,10 +59,6 @@ FREE_PATH_CUTBACKS = 12
 #: threshold): forces within 3e-8 of the strict solution, a Newton iteration fewer on about a
 #: third of the steps
 FORCE_RTOL = 1e-8
-#: How the braid meets the rubber: ``bonded`` (fibres glued to the outer surface point by point,
-#: inextensible everywhere) or ``sliding`` (a frictionless sleeve: one uniform fibre tension and
-#: the sleeve's total length kept, see :func:`mkm.fem.fe.forms.sliding_sleeve_length`)
-SLEEVES = ("bonded", "sliding")
 
 
 class HalfMuscle:
@@ -475,9 +472,9 @@ class HalfMuscle:
 
 
 def check_sleeve(braid: str) -> str:
-    """``braid`` if it is one of :data:`SLEEVES`, else ``ValueError``."""
-    if braid not in SLEEVES:
-        raise ValueError(f"braid={braid!r} is invalid: expected one of {', '.join(SLEEVES)}")
+    """``braid`` if it is one of :data:`mkm.fem.options.BRAIDS`, else ``ValueError``."""
+    if braid not in BRAIDS:
+        raise ValueError(f"braid={braid!r} is invalid: expected one of {', '.join(BRAIDS)}")
     return braid
 
 
@@ -510,12 +507,13 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
     L0_mm : float
         Length at rest [mm] (282 in the paper).
     mesh : {"coarse", "medium", "fine"}
-        Mesh level (:data:`mkm.fem.fe.mesh.MESH_LEVELS`).
+        Mesh level (:data:`mkm.fem.options.MESH_LEVELS`).
     material : MooneyRivlin
         Wall material (default Silastic S, the paper's Equation 3).
     braid : {"bonded", "sliding"}
-        How the braid meets the rubber (:data:`SLEEVES`); ``bonded`` as the paper's figure
-        suggests (the paper does not say), ``sliding`` the frictionless-sleeve limit.
+        How the braid meets the rubber (:data:`mkm.fem.options.BRAIDS`); ``bonded`` as the
+        paper's figure suggests (the paper does not say), ``sliding`` the frictionless-sleeve
+        limit.
 
     Returns
     -------
@@ -602,6 +600,9 @@ class Axisym(CalibratedTheta0, ForceModel):
         inextensible at every point. ``sliding``: a frictionless sleeve, one uniform fibre
         tension, only the fibres' total length is kept; its theta0 is calibrated on its own
         (calibration key ``axisym-sliding``).
+    calibration : Calibration, optional
+        Where the default angle (and an identified rubber) comes from; default the shipped
+        ``fem/calibration.json`` (:class:`mkm.fem.calibration.Calibration`).
     """
 
     name = "axisym"
@@ -609,8 +610,10 @@ class Axisym(CalibratedTheta0, ForceModel):
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
                  mesh: str = "medium", C10_MPa: float | None = None,
-                 C01_MPa: float | None = None, braid: str = "bonded"):
+                 C01_MPa: float | None = None, braid: str = "bonded",
+                 calibration: Calibration | None = None):
         self.theta0_deg = theta0_deg
+        self.calibration = calibration
         self.L0_mm = L0_mm
         self.mesh = mesh
         self.C10_MPa = C10_MPa

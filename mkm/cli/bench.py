@@ -46,8 +46,8 @@ def _add_device_arguments(parser, clock: bool = True) -> None:
 
     parser.add_argument("--config", help="bench TOML file (default: the packaged example "
                         "paper_prototype.toml, the paper's prototype on the simulated bench)")
-    parser.add_argument("--backend", choices=tuple(BACKENDS), default=None,
-                        help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.values())
+    parser.add_argument("--backend", choices=BACKENDS.names(), default=None,
+                        help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.entries())
                         + " (default: the config's [daq] backend)")
     if clock:
         parser.add_argument("--clock", choices=("virtual", "real"), default="virtual",

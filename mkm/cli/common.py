@@ -14,7 +14,7 @@ from mkm.core.records import (
     write_csv_with_sidecar,
     write_prediction_csv,
 )
-from mkm.registry import entries, parse_spec
+from mkm.registry import entries, entry, parse_spec
 
 
 def has_display() -> bool:
@@ -49,6 +49,11 @@ def add_batch_arguments(parser) -> None:
                         "tcp://HOST:8786 (workers need the same mkm-bench installed)")
 
 
+def choices(model: str, parameter: str) -> tuple[str, ...]:
+    """The values a registered model's text parameter takes (the registry declares them)."""
+    return entry(model).parameters[parameter].options()
+
+
 def add_model_arguments(parser, theta0: bool = True) -> None:
     parser.add_argument("--model", default="eq2", help=f"predictor spec: one of "
                         f"{', '.join(entries())}, with :key=value parameters (see `mkm models`); "
@@ -56,13 +61,13 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
     if theta0:
         parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
                             help="braid angle at rest [deg] (default: calibrated)")
-    parser.add_argument("--diameter", choices=("inner", "braid"),
+    parser.add_argument("--diameter", choices=choices("eq2", "diameter"),
                         help="eq2 only: diameter convention (default inner, as the paper)")
     parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
                         help="muscle length at rest [mm] (default 282)")
-    parser.add_argument("--mesh", choices=("coarse", "medium", "fine"),
+    parser.add_argument("--mesh", choices=choices("axisym", "mesh"),
                         help="axisym only: FE mesh level (default medium)")
-    parser.add_argument("--braid", choices=("bonded", "sliding"),
+    parser.add_argument("--braid", choices=choices("axisym", "braid"),
                         help="axisym only: fibres bonded to the rubber (default) or a "
                         "frictionless sliding sleeve")
     parser.add_argument("--per-point", action="store_true",
@@ -71,7 +76,7 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
 
 
 def add_calibration_argument(parser) -> None:
-    """``--calibration FILE``: the theta0 calibration file for this command (see
+    """``--calibration FILE``: the theta0 calibration file for this command (read by
     :func:`with_calibration`); the shipped ``fem/calibration.json`` is left as it is."""
     parser.add_argument("--calibration", metavar="FILE",
                         help="calibration file written by `mkm fem calibrate --out FILE`: the "
@@ -80,13 +85,16 @@ def add_calibration_argument(parser) -> None:
 
 
 def with_calibration(func):
-    """Run the command ``func(args)`` with ``args.calibration`` selected (if given)."""
+    """Run the command ``func(args)`` with ``args.calibration`` read once into a
+    :class:`mkm.fem.calibration.Calibration` (None: the shipped one), which the command hands to
+    what it builds; a file that cannot be used is one line before anything runs."""
 
     def run(args):
-        from mkm.fem.calibration import use_calibration
+        from mkm.fem.calibration import Calibration
 
-        with use_calibration(getattr(args, "calibration", None)):
-            return func(args)
+        path = getattr(args, "calibration", None)
+        args.calibration = Calibration.load(path) if path is not None else None
+        return func(args)
 
     run.__name__ = func.__name__
     return run
@@ -127,7 +135,7 @@ def model_from_args(args, **overrides):
         raise ValueError(f"--model {spec.text}: {spec.name} takes no "
                          f"{', '.join(unknown)} (its parameters: "
                          f"{', '.join(spec.entry.parameters)})")
-    return spec.with_params(**flags).build()
+    return spec.with_params(**flags).build(getattr(args, "calibration", None))
 
 
 def emit_prediction(prediction, out: str | None) -> None:

@@ -9,6 +9,7 @@ from mkm.cli.common import (
     add_batch_arguments,
     add_calibration_argument,
     argtype,
+    choices,
     with_calibration,
 )
 from mkm.core.ranges import parse_number
@@ -73,7 +74,7 @@ def register(subparsers) -> None:
         p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag), metavar="V|LO:HI",
                        help=f"{what}: a value or a range low:high")
     p.add_argument("--rubber", help="wall material(s), comma list: calibrated (default: the "
-                   "rubber of the calibration in effect, an identified one, else Silastic S) "
+                   "rubber of the --calibration file, an identified one, else Silastic S) "
                    "or silastic_s")
     p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
                    type=argtype(parse_number, "--max-outer-diameter"),
@@ -95,7 +96,7 @@ def register(subparsers) -> None:
                    "min-rubber-volume or max-margin")
     p.add_argument("--top", type=int, metavar="N",
                    help="designs verified with the FE model (default 5)")
-    p.add_argument("--mesh", choices=("coarse", "medium", "fine"), default="medium",
+    p.add_argument("--mesh", choices=choices("axisym", "mesh"), default="medium",
                    help="FE mesh of the verification (default: %(default)s, the converged one)")
     p.add_argument("--surrogate", default="surrogate", metavar="SPEC",
                    help="surrogate spec that searches the box (default: %(default)s)")
@@ -127,7 +128,8 @@ def _design(args) -> int:
                         progress=not args.no_progress,
                         cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR,
                         tolerances=args.tolerance, probability=args.probability,
-                        workers=args.workers, scheduler=args.scheduler)
+                        workers=args.workers, scheduler=args.scheduler,
+                        calibration=args.calibration)
     write_design(result, Path(args.out or default_out("design")))
     summary_line("design", result.summary())
     print(result.table_text())

@@ -17,7 +17,7 @@ from mkm.cli.common import (
     with_calibration,
 )
 from mkm.core.ranges import parse_fraction, parse_number
-from mkm.fem.ladder import model_names
+from mkm.fem.ladder import static_names
 from mkm.paths import default_cache, default_out
 
 
@@ -83,7 +83,7 @@ def register(subparsers) -> None:
         "mkm-out/dataset/thickwall.csv")
     data.add_argument("--grid", default="paper",
                       help="'paper' (Table 1 of the paper, 162 points) or a grid TOML file")
-    data.add_argument("--model", default="axisym", help=f"one of {', '.join(model_names())} "
+    data.add_argument("--model", default="axisym", help=f"one of {', '.join(static_names())} "
                       "(default: %(default)s)")
     data.add_argument("--mesh", help="mesh level of FE models (default: the model's)")
     data.add_argument("--out", default=str(default_out("dataset", "mkm_dataset.csv")),
@@ -150,7 +150,7 @@ def _calibrate(args) -> int:
         fit_theta0,
         store_calibration,
     )
-    from mkm.fem.ladder import LADDER
+    from mkm.fem.ladder import entry, static_names
     from mkm.fem.paper import CASE_I_CSV
 
     args.reference = args.reference or str(CASE_I_CSV)
@@ -164,9 +164,9 @@ def _calibrate(args) -> int:
                              "(a model has one length)")
         overrides["L0_mm"] = float(lengths[0])
     model = model_from_args(args, theta0_deg=30.0, **overrides)
-    if model.name not in LADDER:
+    if model.name not in static_names():
         raise ValueError(f"--model {args.model}: only the physics models "
-                         f"{', '.join(LADDER)} have a theta0 to calibrate")
+                         f"{', '.join(static_names())} have a theta0 to calibrate")
     target = args.target or default_target(model)
     fit = fit_theta0(lambda th: model_from_args(args, theta0_deg=th, **overrides), reference,
                      target)
@@ -175,7 +175,7 @@ def _calibrate(args) -> int:
     paths = [] if args.dry_run else [p for p in (args.out, args.update_shipped and
                                                  CALIBRATION_FILE) if p]
     if paths:
-        entry = calibration_entry(fit, model, name, sha256, LADDER[model.name].module)
+        entry = calibration_entry(fit, model, name, sha256, entry(model.name).module)
         for path in paths:
             store_calibration(path, model.calibration_key, entry)
             print(f"stored in {path} under {model.calibration_key!r}", file=sys.stderr)
@@ -228,7 +228,8 @@ def _dataset(args) -> int:
     from mkm.fem.dataset import build_dataset
 
     run = build_dataset(args.grid, args.model, mesh=args.mesh, out=args.out,
-                        workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache)
+                        workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache,
+                        calibration=args.calibration)
     print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)
     return 0
 
@@ -238,7 +239,7 @@ def _convergence(args) -> int:
 
     frame, png = convergence_study(args.out, D0_mm=args.D0, t0_mm=args.t0, eps=args.eps,
                                    pressure_bar=args.pressure, theta0_deg=args.theta0,
-                                   L0_mm=args.L0)
+                                   L0_mm=args.L0, calibration=args.calibration)
     print(frame.to_string(index=False, float_format=lambda v: f"{v:.6g}"))
     print(f"wrote {png} and mesh_convergence.csv/.json", file=sys.stderr)
     return 0

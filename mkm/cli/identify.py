@@ -46,7 +46,8 @@ def _identify(args) -> int:
     try:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
                           seed=args.seed, workers=args.workers, scheduler=args.scheduler,
-                          notify=lambda line: print(f"mkm: {line}", file=sys.stderr))
+                          notify=lambda line: print(f"mkm: {line}", file=sys.stderr),
+                          calibration=args.calibration)
     except RuntimeError as exc:  # a fit that failed: said, nothing written
         print(f"mkm: error: identification failed: {exc}", file=sys.stderr)
         return 1

@@ -12,6 +12,7 @@ from mkm.cli.common import (
     add_calibration_argument,
     add_geometry_arguments,
     argtype,
+    choices,
     emit_prediction,
     with_calibration,
 )
@@ -130,7 +131,7 @@ def register(subparsers) -> None:
                         help="the sub-box of --refine: NAME=LO:HI,... over D0_mm, t0_mm, eps, "
                         "L0_mm, theta0_deg, C10_MPa, C01_MPa (the others span the box), "
                         "recorded in the sidecar")
-    design.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
+    design.add_argument("--mesh", default="fine", choices=choices("axisym", "mesh"),
                         help="FE mesh level (default fine, the converged one)")
     add_batch_arguments(design)
     design.add_argument("--cache", default=str(default_cache("dataset")),
@@ -158,7 +159,7 @@ def register(subparsers) -> None:
     evaluate.add_argument("--muscles", type=int, default=12,
                           help="FE budget: random muscles (default 12)")
     evaluate.add_argument("--seed", type=int, help="seed of the draw (default: a fresh one)")
-    evaluate.add_argument("--mesh", default="fine", choices=("coarse", "medium", "fine"),
+    evaluate.add_argument("--mesh", default="fine", choices=choices("axisym", "mesh"),
                           help="FE mesh level of the reference (default fine, the converged one)")
     add_batch_arguments(evaluate)
     evaluate.add_argument("--cache", default=str(default_cache("dataset")),
@@ -249,15 +250,14 @@ def _train(args) -> int:
     return 0
 
 
-def _load(path, accept_mismatch=False, progress=False, **parameters):
+def _load(path, calibration, accept_mismatch=False, progress=False, **parameters):
     from mkm.surrogate.io import load_model
     from mkm.surrogate.train import default_model
 
     parameters = {k: v for k, v in parameters.items() if v is not None}
-    if path == "default":
-        return default_model(progress=progress, **parameters)
-    model = load_model(path, accept_mismatch=accept_mismatch)
-    return model.with_parameters(**parameters) if parameters else model
+    model = (default_model(progress=progress) if path == "default"
+             else load_model(path, accept_mismatch=accept_mismatch))
+    return model.with_parameters(calibration, **parameters)
 
 
 def _label(path: str) -> str:
@@ -267,8 +267,9 @@ def _label(path: str) -> str:
 def _predict(args) -> int:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        model = _load(args.model, args.accept_mismatch, not args.no_progress, L0_mm=args.L0,
-                      theta0_deg=args.theta0, C10_MPa=args.C10, C01_MPa=args.C01)
+        model = _load(args.model, args.calibration, args.accept_mismatch, not args.no_progress,
+                      L0_mm=args.L0, theta0_deg=args.theta0, C10_MPa=args.C10,
+                      C01_MPa=args.C01)
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
         print(f"mkm: warning: {w.message}", file=sys.stderr)
@@ -284,8 +285,8 @@ def _test(args) -> int:
     from mkm.surrogate.train import train_surrogate
 
     paths = args.model or ([] if args.kind else ["default"])
-    models = {_label(path): _load(path, args.accept_mismatch, not args.no_progress)
-              for path in paths}
+    models = {_label(path): _load(path, args.calibration, args.accept_mismatch,
+                                  not args.no_progress) for path in paths}
     models.update({kind: train_surrogate(kind, _dataset(args), splits=0,
                                          progress=not args.no_progress)
                    for kind in args.kind or []})
@@ -319,7 +320,7 @@ def _reference(args) -> int:
     from mkm.fem.ladder import make_model
     from mkm.surrogate.testset import FE_REFERENCE, build_fe_reference
 
-    model = make_model(args.model, mesh=args.mesh, theta0_deg=args.theta0)
+    model = make_model(args.model, args.calibration, mesh=args.mesh, theta0_deg=args.theta0)
     out = FE_REFERENCE if args.update_shipped else args.out
     build_fe_reference(model, out)
     summary_line("surrogate reference", f"wrote {out}")
@@ -362,7 +363,7 @@ def _evaluate(args) -> int:
     from mkm.surrogate.offgrid import evaluate_offgrid
 
     start = time.perf_counter()
-    model = _load(args.model, args.accept_mismatch, not args.no_progress)
+    model = _load(args.model, args.calibration, args.accept_mismatch, not args.no_progress)
     points, summary = evaluate_offgrid(model, args.muscles, args.seed, args.mesh, args.workers,
                                        args.cache, progress=not args.no_progress,
                                        scheduler=args.scheduler)

@@ -102,7 +102,8 @@ def _report(args) -> int:
     start = time.perf_counter()
     specs = parse_specs(args.models)
     path = build_report(args.runs, specs, out_dir=args.out, cache_dir=_cache(args),
-                        tolerance=args.tolerance, progress=not args.no_progress)
+                        tolerance=args.tolerance, progress=not args.no_progress,
+                        calibration=args.calibration)
     summary_line("report", f"{len(args.runs)} run(s) x {len(specs)} model(s) in "
                  f"{time.perf_counter() - start:.1f} s; summary.csv beside the report")
     print(path)

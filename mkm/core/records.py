@@ -65,10 +65,11 @@ def _library_versions() -> tuple[tuple[str, str], ...]:
 
 def package_file(package: str, *parts: str) -> Path:
     """Path of a data file shipped inside ``package`` (``package_file("mkm.fem", "data",
-    "x.csv")``)."""
+    "x.csv")``): the file itself, not a link to it (a strict editable install links each file
+    of the source tree, and ``--update-shipped`` must write the source's)."""
     from importlib.resources import files
 
-    return Path(str(files(package).joinpath(*parts)))
+    return Path(str(files(package).joinpath(*parts))).resolve()
 
 
 def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:

@@ -60,7 +60,7 @@ def write_design(result: DesignResult, out: Path) -> Path:
                "version": source_version(type(fe).__module__),
                "calibration": calibration_provenance(fe)} if fe else None,
         # where the default theta0 (the constraints' default) came from
-        "default_theta0": calibration_provenance(parse_spec("axisym").build()),
+        "default_theta0": calibration_provenance(parse_spec("axisym").build(s.calibration)),
         "design_version": source_version("mkm.design"),
     }
     record["columns"] = COLUMN_DOCS
@@ -221,8 +221,8 @@ def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) ->
             out["force"].append(f)
             out["margin"].append(u)
     out["outer"] = outer_diameter_mm(D0, t0, best["theta0_deg"], s.working_pressure_bar,
-                                     rubber_of(best["rubber"]).C10_MPa,
-                                     rubber_of(best["rubber"]).C01_MPa)
+                                     rubber_of(best["rubber"], s.calibration).C10_MPa,
+                                     rubber_of(best["rubber"], s.calibration).C01_MPa)
     limit = s.constraints.get("max_outer_diameter_mm")
     out["feasible"] = feasible if limit is None else feasible & (out["outer"] <= limit)
     return out

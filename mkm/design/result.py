@@ -27,6 +27,7 @@ from mkm.design.spec import (
     parse_requirement,
 )
 from mkm.design.verify import verify
+from mkm.fem.calibration import Calibration
 
 # --- the API ------------------------------------------------------------------------------------
 
@@ -87,7 +88,8 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
                mesh: str = "medium", surrogate: str = "surrogate",
                progress: bool = False, cache_dir=None, tolerances=None,
                probability: float = DEFAULT_PROBABILITY, workers: int | None = None,
-               scheduler: str | None = None) -> DesignResult:
+               scheduler: str | None = None,
+               calibration: Calibration | None = None) -> DesignResult:
     """Search and verify (:func:`mkm.design_page.write_design` writes the files).
 
     ``tolerances`` (:class:`mkm.fem.tolerances.Tolerances`): robust designs that meet every
@@ -96,7 +98,8 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     ``spec``: a TOML file (:func:`load_spec`); ``requirements`` are added to its requirements,
     ``constraints`` (a dict) override its constraints, ``objective``/``top`` its own.
     ``cache_dir``: FE prediction cache (None: solve every sweep). ``workers``/``scheduler``:
-    where the FE sweeps run (:func:`mkm.design.verify.verify`).
+    where the FE sweeps run (:func:`mkm.design.verify.verify`). ``calibration``: the default
+    braid angle's and the ``calibrated`` rubber's (None: the shipped one).
     """
     base = load_spec(spec) if spec else {"requirements": [], "constraints": {}}
     requirements = list(base["requirements"]) + [
@@ -113,12 +116,13 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         raise ValueError(f"top={top!r} is invalid: expected a whole number of designs >= 1")
     if tolerances is not None:
         probability = check_probability(probability)
-    found = search(requirements, merged, objective, surrogate, tolerances, probability)
+    found = search(requirements, merged, objective, surrogate, tolerances, probability,
+                   calibration)
     chosen = pick(found.feasible, top, found.constraints)
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
     designs, curves, seconds, fe_models, hits = verify(
         chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir,
-        workers, scheduler)
+        workers, scheduler, calibration)
     robust: list[str] = []
     if tolerances is not None:
         designs = check_designs(designs, found.requirements, found.models, tolerances,
@@ -140,7 +144,8 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
 
 def design(requirements, constraints=None, objective: str = "min-outer-diameter", *,
            top: int = 5, mesh: str = "medium", surrogate: str = "surrogate",
-           progress: bool = False, cache_dir=None) -> pd.DataFrame:
+           progress: bool = False, cache_dir=None,
+           calibration: Calibration | None = None) -> pd.DataFrame:
     """Verified designs for force requirements, best first: the Python API of ``mkm design``.
 
     Parameters
@@ -161,6 +166,9 @@ def design(requirements, constraints=None, objective: str = "min-outer-diameter"
         Progress bar of the FE verification on stderr (when it is a terminal).
     cache_dir : path, optional
         FE prediction cache (:mod:`mkm.prediction_cache`); None solves every sweep.
+    calibration : Calibration, optional
+        The default braid angle's and the ``calibrated`` rubber's (None: the shipped
+        ``fem/calibration.json``).
 
     Returns
     -------
@@ -172,7 +180,8 @@ def design(requirements, constraints=None, objective: str = "min-outer-diameter"
         objective order. ``attrs`` holds the requirements, constraints and search summary.
     """
     result = run_design(requirements, constraints, objective, top, mesh=mesh,
-                        surrogate=surrogate, progress=progress, cache_dir=cache_dir)
+                        surrogate=surrogate, progress=progress, cache_dir=cache_dir,
+                        calibration=calibration)
     frame = result.designs.copy()
     frame.attrs.update(design_record(result))
     return frame

@@ -19,7 +19,7 @@ from mkm.design.spec import (
     parse_requirement,
     rubber_of,
 )
-from mkm.fem.calibration import calibrated
+from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
 from mkm.fem.paper import L0_MM
@@ -52,9 +52,10 @@ FE_SEARCH_MESH = "coarse"
 # --- physics of the housing and the lock --------------------------------------------------------
 
 
-def _constants(rubber: str) -> tuple[float, float]:
+def _constants(rubber: str, calibration: Calibration | None) -> tuple[float, float]:
     """``(C10_MPa, C01_MPa)`` of a named rubber."""
-    return rubber_of(rubber).C10_MPa, rubber_of(rubber).C01_MPa
+    material = rubber_of(rubber, calibration)
+    return material.C10_MPa, material.C01_MPa
 
 
 def rubber_volume_cm3(D0_mm, t0_mm, L0_mm):
@@ -106,6 +107,8 @@ class Search:
     models: dict = field(default_factory=dict)  # (L0, theta0, rubber) -> surrogate
     #: why the FE model searched instead of the surrogate ("" when the surrogate did)
     fe_search: str = ""
+    #: the default braid angle's and the ``calibrated`` rubber's (None: the shipped one)
+    calibration: Calibration | None = None
 
     @property
     def feasible(self) -> pd.DataFrame:
@@ -125,7 +128,7 @@ def _axis(bounds, step=None, count=AXIS_VALUES) -> np.ndarray:
 PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")  # besides the predict() inputs
 
 
-def _predicts_at(model) -> dict:
+def _predicts_at(model, calibration: Calibration | None) -> dict:
     """The muscle parameters a surrogate predicts at: its own ``parameters`` when it has them,
     else what its training data held fixed (``metadata["dataset"]["fixed"]``); Silastic S
     where nothing is recorded of the rubber."""
@@ -133,11 +136,11 @@ def _predicts_at(model) -> dict:
     if not at:
         fixed = (getattr(model, "metadata", None) or {}).get("dataset", {}).get("fixed") or {}
         at = {k: float(fixed[k]) for k in PARAMETERS if fixed.get(k) is not None}
-    rubber = rubber_of(DEFAULT_RUBBER)
+    rubber = rubber_of(DEFAULT_RUBBER, calibration)
     return {"L0_mm": L0_MM, "C10_MPa": rubber.C10_MPa, "C01_MPa": rubber.C01_MPa} | at
 
 
-def _surrogate_for(spec, base, L0, theta0, rubber):
+def _surrogate_for(spec, base, L0, theta0, rubber, calibration: Calibration | None):
     """The surrogate ``base`` (built from ``spec``) at ``(L0, theta0, rubber)``.
 
     A parameter is passed to the surrogate only when the registry entry lists it (a build
@@ -145,10 +148,10 @@ def _surrogate_for(spec, base, L0, theta0, rubber):
     with it (named in the ``ValueError``).
     """
     listed = set(spec.entry.parameters) - {k for k, _ in spec.params}
-    material = rubber_of(rubber)
+    material = rubber_of(rubber, calibration)
     wanted = {"L0_mm": float(L0), "theta0_deg": float(theta0), "C10_MPa": material.C10_MPa,
               "C01_MPa": material.C01_MPa}
-    at = _predicts_at(base)
+    at = _predicts_at(base, calibration)
     params, conflicts = {}, []
     for key, value in wanted.items():
         if key in listed:
@@ -162,19 +165,20 @@ def _surrogate_for(spec, base, L0, theta0, rubber):
     if not params:
         return base
     if hasattr(base, "with_parameters"):
-        return base.with_parameters(**params)  # the same fitted model, no reload
-    return _build(spec.with_params(**params).text)
+        return base.with_parameters(calibration, **params)  # the same fitted model, no reload
+    return _build(spec.with_params(**params).text, calibration)
 
 
 @lru_cache(maxsize=32)
-def _build(text: str) -> ForceModel:
+def _build(text: str, calibration: Calibration | None) -> ForceModel:
     """Surrogates by spec text, built once per process (loading one takes about a second)."""
-    return parse_spec(text).build()
+    return parse_spec(text).build(calibration)
 
 
 def search(requirements, constraints: Constraints | dict | None = None,
            objective: str = "min-outer-diameter", surrogate: str = "surrogate",
-           tolerances=None, probability: float = 0.95) -> Search:
+           tolerances=None, probability: float = 0.95,
+           calibration: Calibration | None = None) -> Search:
     """Predict the candidates of the design box with the surrogate and rank the feasible ones.
 
     Coarse to fine: every candidate of a coarse grid (:data:`COARSE_STEPS` in D0 and t0, times
@@ -182,6 +186,9 @@ def search(requirements, constraints: Constraints | dict | None = None,
     :data:`T0_STEP_MM`) over the coarse cells around the best :data:`SEEDS` coarse candidates
     (:func:`_seeds`): the optimum lies on the boundary of the feasible region, within a coarse
     cell of a feasible coarse candidate.
+
+    ``calibration`` gives the default braid angle and the ``calibrated`` rubber (None: the
+    shipped one).
 
     With ``tolerances`` (:class:`mkm.fem.tolerances.Tolerances`), a candidate must meet every
     requirement with ``probability`` when built to them (:mod:`mkm.design.robust`) instead of
@@ -204,37 +211,38 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if spec.name != "surrogate":
         raise ValueError(f"--surrogate {surrogate!r}: expected a surrogate spec "
                          "(surrogate, surrogate:kind=gp, surrogate:path=DIR)")
-    base = _build(spec.text)
+    base = _build(spec.text, calibration)
     domain = base.domain
-    at = _predicts_at(base)
-    theta0_default = float(calibrated("axisym")["theta0_deg"])  # the FE model's, as verified
+    at = _predicts_at(base, calibration)
+    # the FE model's, as verified
+    theta0_default = float(calibrated("axisym", calibration)["theta0_deg"])
     parameter_box = getattr(base, "box", {})
-    outside = _outside_surrogate(requirements, constraints, domain, parameter_box)
+    outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration)
     default_box = FE_SEARCH_BOX if outside else {"D0_mm": tuple(domain.D0_mm),
                                                  "t0_mm": tuple(domain.t0_mm)}
     box = {"D0_mm": constraints.D0_mm or default_box["D0_mm"],
            "t0_mm": constraints.t0_mm or default_box["t0_mm"],
            "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
            "theta0_deg": constraints.theta0_deg or (theta0_default,) * 2}
-    _check_conflicts(requirements, constraints, box, bool(outside))
+    _check_conflicts(requirements, constraints, box, bool(outside), calibration)
     P_work = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
     families = [(float(L0), float(theta0), rubber) for L0 in _axis(box["L0_mm"])
                 for theta0 in _axis(box["theta0_deg"]) for rubber in constraints.rubber]
     if outside:
         from mkm.design.verify import fe_model
 
-        models = {f: fe_model(FE_SEARCH_MESH, *f) for f in families}
+        models = {f: fe_model(FE_SEARCH_MESH, *f, calibration) for f in families}
         steps, refine = FE_SEARCH_STEPS, False
         fe_search = (f"outside the surrogate's training box ({'; '.join(outside)}): the FE "
                      f"model ({FE_SEARCH_MESH} mesh) searched instead, on a "
                      f"{steps[0]:g} x {steps[1]:g} mm grid of D0 x t0 (slower and coarser)")
     else:
-        models = {f: _surrogate_for(spec, base, *f) for f in families}
+        models = {f: _surrogate_for(spec, base, *f, calibration) for f in families}
         steps, refine, fe_search = COARSE_STEPS, True, ""
 
     start = time.perf_counter()  # the search proper: the surrogates are loaded once
     evaluate = _Evaluator(models, requirements, P_work, constraints.max_outer_diameter_mm,
-                          tolerances, probability)
+                          tolerances, probability, calibration)
     D0c = _axis(box["D0_mm"], count=_coarse_count(box["D0_mm"], steps[0]))
     t0c = _axis(box["t0_mm"], count=_coarse_count(box["t0_mm"], steps[1]))
     D0, t0 = _walls(*np.meshgrid(D0c, t0c, indexing="ij"))
@@ -257,7 +265,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     cand = _rank(cand, objective)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
-                    fe_search)
+                    fe_search, calibration)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
@@ -291,8 +299,8 @@ class _Evaluator:
     """Surrogate forces, margins and the housing check of candidates of one design family."""
 
     def __init__(self, models, requirements, P_work, max_outer_diameter_mm, tolerances=None,
-                 probability: float = 0.95):
-        self.models, self.requirements = models, requirements
+                 probability: float = 0.95, calibration: Calibration | None = None):
+        self.models, self.requirements, self.calibration = models, requirements, calibration
         self.P_work, self.limit = P_work, max_outer_diameter_mm
         self.tolerances, self.probability = tolerances, probability
         self.uncertainty = ""
@@ -303,7 +311,7 @@ class _Evaluator:
         frame = pd.DataFrame({"D0_mm": D0, "t0_mm": t0, "L0_mm": float(L0),
                               "theta0_deg": float(theta0), "rubber": rubber})
         frame["outer_diameter_mm"] = outer_diameter_mm(D0, t0, theta0, self.P_work,
-                                                       *_constants(rubber))
+                                                       *_constants(rubber, self.calibration))
         frame["rubber_volume_cm3"] = rubber_volume_cm3(D0, t0, L0)
         eps_max = float(chou_hannaford_eps_max(theta0))
         shortfall = np.empty((len(frame), len(self.requirements)))
@@ -332,7 +340,8 @@ class _Evaluator:
         return frame
 
 
-def _outside_surrogate(requirements, constraints, domain, parameter_box) -> list[str]:
+def _outside_surrogate(requirements, constraints, domain, parameter_box,
+                       calibration: Calibration | None = None) -> list[str]:
     """What of the request lies outside the surrogate's training box (empty: it can search).
 
     ``parameter_box``: the surrogate's training box of its muscle parameters (``L0_mm``, ...),
@@ -350,7 +359,7 @@ def _outside_surrogate(requirements, constraints, domain, parameter_box) -> list
             out.append(f"{key}={span_text(low, high)} beyond {dlo:g}:{dhi:g}")
     for rubber in constraints.rubber:
         for key in ("C10_MPa", "C01_MPa"):
-            value = getattr(rubber_of(rubber), key)
+            value = getattr(rubber_of(rubber, calibration), key)
             if key in parameter_box and not (parameter_box[key][0] <= value
                                              <= parameter_box[key][1]):
                 out.append(f"rubber={rubber} ({key}={value:g}) beyond "
@@ -364,7 +373,8 @@ def _outside_surrogate(requirements, constraints, domain, parameter_box) -> list
     return list(dict.fromkeys(out))
 
 
-def _check_conflicts(requirements, constraints, box, fe_search: bool) -> None:
+def _check_conflicts(requirements, constraints, box, fe_search: bool,
+                     calibration: Calibration | None = None) -> None:
     """One ``ValueError`` naming every conflict between requirements, constraints and the
     search's own box (the FE search's :data:`FE_SEARCH_BOX` when ``fe_search``)."""
     problems = []
@@ -404,7 +414,7 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool) -> None:
         # the thinnest, narrowest tube of the box, at the largest theta0 and the working pressure
         P = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
         smallest = min(float(outer_diameter_mm(box["D0_mm"][0], box["t0_mm"][0], theta0, P,
-                                               *_constants(rubber)))
+                                               *_constants(rubber, calibration)))
                        for theta0 in box["theta0_deg"] for rubber in constraints.rubber)
         if smallest > constraints.max_outer_diameter_mm:
             problems.append(f"max_outer_diameter_mm={constraints.max_outer_diameter_mm:g} "

@@ -8,21 +8,22 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from mkm.core.ranges import parse_fraction, parse_number
-from mkm.fem.calibration import calibrated
+from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
-#: the rubber of the calibration in effect (a muscle ``mkm identify`` learnt), else Silastic S
+#: the rubber of the calibration (a muscle ``mkm identify`` learnt), else Silastic S
 CALIBRATED_RUBBER = "calibrated"
 DEFAULT_RUBBER = CALIBRATED_RUBBER
 
 
-def rubber_of(name: str) -> MooneyRivlin:
+def rubber_of(name: str, calibration: Calibration | None = None) -> MooneyRivlin:
     """The Mooney-Rivlin rubber a design's ``rubber`` names: a set of
-    :data:`mkm.fem.materials.MATERIALS`, or :data:`CALIBRATED_RUBBER`."""
+    :data:`mkm.fem.materials.MATERIALS`, or :data:`CALIBRATED_RUBBER` (the FE model's entry in
+    ``calibration``, default the shipped one)."""
     if name == CALIBRATED_RUBBER:
         try:
-            entry = calibrated("axisym")
+            entry = calibrated("axisym", calibration)
         except ValueError:
             entry = {}
         return mooney_rivlin(entry.get("C10_MPa"), entry.get("C01_MPa"))

@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
+from mkm.fem.calibration import Calibration
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
 from mkm.registry import parse_spec
@@ -18,9 +19,11 @@ CURVE_STEP_BAR = 0.25  # FE force-pressure curves of the verified designs
 # --- FE verification ----------------------------------------------------------------------------
 
 
-def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str) -> ForceModel:
-    """The axisymmetric FE model (registry ``axisym``) of one design family."""
-    material = rubber_of(rubber)
+def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str,
+             calibration: Calibration | None = None) -> ForceModel:
+    """The axisymmetric FE model (registry ``axisym``) of one design family (``calibration``:
+    where the ``calibrated`` rubber comes from)."""
+    material = rubber_of(rubber, calibration)
     return parse_spec(f"axisym:mesh={mesh}").build(
         L0_mm=float(L0_mm), theta0_deg=float(theta0_deg), C10_MPa=material.C10_MPa,
         C01_MPa=material.C01_MPa)
@@ -28,7 +31,8 @@ def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str) -> ForceMo
 
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
            curve_to_bar: float | None = None, progress: bool = False, cache_dir=None,
-           workers: int | None = None, scheduler: str | None = None):
+           workers: int | None = None, scheduler: str | None = None,
+           calibration: Calibration | None = None):
     """FE forces of ``designs`` at every requirement, and their force-pressure curves.
 
     One FE sweep per design and distinct eps, through the requirements' pressures and
@@ -55,7 +59,7 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
     for _, row in designs.iterrows():
         key = (row["L0_mm"], row["theta0_deg"], row["rubber"])
         if key not in models:
-            models[key] = fe_model(mesh, *key)
+            models[key] = fe_model(mesh, *key, calibration)
         requests += [(models[key], pressures[eps], row["D0_mm"], row["t0_mm"], eps)
                      for eps in eps_levels]
     solved = iter(predict_many(requests, cache_dir, workers=workers, scheduler=scheduler,

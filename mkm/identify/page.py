@@ -1,4 +1,4 @@
-"""The report's "identified muscle" section, shown when the calibration in effect holds one.
+"""The report's "identified muscle" section, shown when the calibration given holds one.
 
 ``mkm report RUN... --calibration DIR/calibration.json`` (a file ``mkm identify`` wrote) shows
 the parameters with their intervals and what the runs could not tell; for each run of the report
@@ -16,37 +16,32 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.fem.calibration import CALIBRATION_FILE, calibrated, calibration_file, use_calibration
+from mkm.fem.calibration import Calibration
 from mkm.fem.friction import DEFAULTS
 from mkm.fem.materials import SILASTIC_S
 from mkm.html import esc, figure_html, save_figure, table_html
 from mkm.identify import fitting
 from mkm.identify.runs import load_run_data
 
-KEYS = ("axisym", "thickwall")  # the static models identify confirms with
+
+def identified_entry(calibration: Calibration) -> tuple[str, dict] | None:
+    """``(key, entry)`` of the identified muscle in ``calibration`` (the entry of the static
+    model identify confirmed with), or None."""
+    return next(((key, entry) for key, entry in calibration.entries.items()
+                 if "identified" in entry), None)
 
 
-def identified_entry() -> tuple[str, dict] | None:
-    """``(key, entry)`` of the identified muscle in the calibration in effect, or None."""
-    for key in KEYS:
-        try:
-            entry = calibrated(key)
-        except ValueError:
-            continue
-        if "identified" in entry:
-            return key, entry
-    return None
-
-
-def report_section(run_dirs, out: Path) -> str:
-    """The section's HTML (empty without an identified muscle); figures go into ``out``."""
-    found = identified_entry()
+def report_section(run_dirs, out: Path, calibration: Calibration | None = None) -> str:
+    """The section's HTML (empty without an identified muscle in ``calibration``, default the
+    shipped one); figures go into ``out``."""
+    calibration = calibration or Calibration.shipped()
+    found = identified_entry(calibration)
     if found is None:
         return ""
     key, entry = found
     ident = entry["identified"]
     parts = ['<h2 id="identified">Identified muscle</h2>',
-             f"<p>From <code>{esc(calibration_file())}</code>, written by "
+             f"<p>From <code>{esc(calibration.path)}</code>, written by "
              f"<code>{esc(entry.get('command', ''))}</code> ({esc(entry.get('date_utc', ''))}) "
              f"from {len(ident['runs'])} run(s): "
              f"{esc(', '.join(r['run'] for r in ident['runs']))}. Intervals: "
@@ -66,8 +61,7 @@ def report_section(run_dirs, out: Path) -> str:
         "C01_MPa": entry.get("C01_MPa", SILASTIC_S.C01_MPa),
         **{k: entry.get(k, DEFAULTS[k]) for k in DEFAULTS},
         **({"gap_mm": entry["gap_mm"]} if "gap_mm" in entry else {})})
-    with use_calibration(CALIBRATION_FILE):
-        nominal = fitting.nominal_values(calibrated(key)["theta0_deg"])
+    nominal = fitting.nominal_values(Calibration.shipped().entry(key)["theta0_deg"])
     rows = []
     runs = [load_run_data(p) for p in run_dirs]
     for k, run in enumerate(runs, start=1):

@@ -21,6 +21,7 @@ import time
 import numpy as np
 
 from mkm.fem.batch import Runner
+from mkm.fem.calibration import Calibration
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting
 from mkm.identify.fitting import GROUPS, Corrected, ModelStatic, SurrogateStatic
@@ -37,7 +38,8 @@ TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01, "gap_mm": 0.2
 def identify(run_dirs, params: str | None = None, model: str = "axisym",
              search: str = "surrogate", surrogate=None, seed: int = 0,
              notify=lambda message: None, workers: int | None = None,
-             scheduler: str | None = None, cache_dir=DEFAULT_CACHE_DIR) -> Identification:
+             scheduler: str | None = None, cache_dir=DEFAULT_CACHE_DIR,
+             calibration: Calibration | None = None) -> Identification:
     """Identify the muscle of ``run_dirs`` (see the module docstring).
 
     Parameters
@@ -65,6 +67,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
     cache_dir : path, optional
         The FE prediction cache (:mod:`mkm.prediction_cache`): an identification repeated or
         interrupted solves only what it has not solved yet; None: no cache.
+    calibration : Calibration, optional
+        Where the nominal muscle's angle comes from (None: the shipped one).
     """
     started = time.perf_counter()
     groups = fitting.parse_groups(params)
@@ -76,14 +80,15 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         if "gap" in groups and "gap_mm" not in fe.spec.entry.parameters:
             raise ValueError(f"--params gap needs a model with a gap between tube and braid: "
                              f"--model {model!r} has none (expected thickwall)")
-        result = _identify(runs, groups, fe, search, surrogate, seed, notify, started)
+        result = _identify(runs, groups, fe, search, surrogate, seed, notify, started,
+                           calibration)
         result.fe_workers = runner.describe()
     return result
 
 
-def _identify(runs, groups, fe, search, surrogate, seed, notify, started):
+def _identify(runs, groups, fe, search, surrogate, seed, notify, started, calibration):
     L0_mm = fe.L0_mm
-    nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build()
+    nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
                                      .params()["theta0_deg"])
     names = [n for g in groups for n in GROUPS[g]]
     notes: list[str] = []

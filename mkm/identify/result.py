@@ -31,15 +31,19 @@ from mkm.fem.calibration import (
     fit_theta0,
     store_calibration,
 )
+from mkm.fem.ladder import MODELS
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify.fitting import Fit, full_parameters
 
 UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
          "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
-#: the closed forms whose theta0 is fitted again to the runs, with their spec
-CLOSED_FORMS = {"eq2-inner": "eq2:diameter=inner", "eq2-braid": "eq2:diameter=braid",
-                "thickwall": "thickwall"}
 TERMS = ("hysteresis_fraction", "creep_fraction", "creep_tau_s")
+
+
+def closed_forms() -> tuple[str, ...]:
+    """The specs of every registered closed form's study variants (``eq2:diameter=inner``,
+    ``eq2:diameter=braid``, ``thickwall``)."""
+    return tuple(v.spec for e in MODELS.entries() if e.family == "closed form" for v in e.study)
 
 
 @dataclass
@@ -195,10 +199,11 @@ class Identification:
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}
         store_calibration(files["calibration"], model.calibration_key, entry)
-        for key, spec in CLOSED_FORMS.items():
+        for spec in closed_forms():  # their theta0 fitted again to the runs
+            closed = parse_spec(spec).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))
+            key = closed.build(theta0_deg=30.0).calibration_key
             if key == model.calibration_key:  # the identified model's own entry stays
                 continue
-            closed = parse_spec(spec).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))
             rubber = material if "C10_MPa" in closed.entry.parameters else {}
             fit = fit_theta0(lambda th, s=closed, m=rubber: s.build(theta0_deg=th, **m),
                              reference, target=default_target(closed.build(theta0_deg=30.0)))

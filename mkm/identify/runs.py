@@ -112,7 +112,7 @@ def load_run_data(path) -> RunData:
                           else np.maximum(pressure[ramp], bound))
     if not (hold >= 0).any():
         raise ValueError(f"run {path.name}: no sample lies in a settled step's hold window")
-    muscle = {k: run.meta.muscle.__dict__[k] for k in ("id", "D0_mm", "t0_mm", "L0_mm", "eps")}
+    muscle = run.meta.muscle.record()
     tare = samples.loc[samples["phase"] == "tare", "force_N"].to_numpy(dtype=float)
     tare_se = float(np.std(tare, ddof=1) / np.sqrt(tare.size)) if tare.size > 1 else 0.0
     sha = {name: file_sha256(path / name) for name in ("steps.csv", "samples.csv")

@@ -15,7 +15,7 @@ from mkm.bench.storage import load_run
 def check_contract(config, name, out_root):
     """A short staircase on backend ``name``: complete, every sample once in order, vented last
     and the vent verified, marked simulated exactly when the registry says so."""
-    entry = BACKENDS[name]
+    entry = BACKENDS.entry(name)
     result = acquire(config, backend=name, out_root=out_root, notify=lambda m: None)
     run = load_run(result.path)
     assert result.status == "complete" and result.exit_code == 0, result.reason
@@ -32,7 +32,7 @@ def check_contract(config, name, out_root):
 
 @pytest.mark.parametrize("name", list(BACKENDS))
 def test_every_registered_backend_meets_the_contract(name, config, tmp_path, request):
-    if not BACKENDS[name].simulated:
+    if not BACKENDS.entry(name).simulated:
         request.getfixturevalue("fake_driver")  # NI: nidaqmx's own code, the driver faked
     check_contract(config, name, tmp_path)
 

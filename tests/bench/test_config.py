@@ -36,6 +36,42 @@ def test_overrides_are_validated_and_recorded():
         load_config(pressures_bar=[1.0, 3.0])
 
 
+def test_an_override_is_in_the_text_a_run_folder_keeps(tmp_path):
+    """eps is in one place: what config.toml says is what run.json says (issue 30: --eps 0.122
+    left config.toml at eps = 0.0)."""
+    import json
+    import tomllib
+    from dataclasses import replace
+
+    from mkm.bench.run import acquire
+
+    c = load_config(eps=0.122)
+    assert tomllib.loads(c.text)["muscle"]["eps"] == 0.122
+    assert "# shortening ratio (fraction), set by the threaded rod" in c.text  # comments kept
+    c = replace(c, sequence=replace(c.sequence, pressures_bar=(0.5,), preconditioning_cycles=0))
+    run = acquire(c, out_root=tmp_path)
+    folder = tomllib.loads((run.path / "config.toml").read_text(encoding="utf-8"))
+    recorded = json.loads((run.path / "run.json").read_text(encoding="utf-8"))
+    assert folder["muscle"]["eps"] == recorded["muscle"]["eps"] == 0.122
+
+
+def test_a_known_braid_angle_and_rubber_are_the_muscles_own():
+    from mkm.bench.preflight import braid_lock, expected_force_N
+    from mkm.fem.eq2 import chou_hannaford, chou_hannaford_eps_max
+
+    c = parse_config(with_settings("[muscle]\ntheta0_deg = 25.0\nC10_MPa = 0.1\nC01_MPa = 0.05"))
+    assert (c.muscle.theta0_deg, c.muscle.C10_MPa, c.muscle.C01_MPa) == (25.0, 0.1, 0.05)
+    # both preflight checks read the muscle's own angle: the lock at 25 deg is eps 0.363
+    assert braid_lock(c.replace(muscle={"eps": 0.3})) is None
+    eps_max = float(chou_hannaford_eps_max(25.0))
+    assert f"{eps_max:.3f}" in braid_lock(c.replace(muscle={"eps": 0.37}))
+    assert expected_force_N(c, 2.0) == pytest.approx(float(chou_hannaford(2.0, 30.0, 0.0, 25.0)))
+    with pytest.raises(ValueError, match=r"muscle\.theta0_deg=95 is invalid"):
+        parse_config(with_settings("[muscle]\ntheta0_deg = 95"))
+    with pytest.raises(ValueError, match=r"muscle\.D0_tolerance_mm is not a field of a muscle"):
+        parse_config(with_settings("[muscle]\nD0_tolerance_mm = 0.3"))
+
+
 BASE = """
 [muscle]
 id = "m1"

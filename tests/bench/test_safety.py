@@ -137,10 +137,11 @@ def test_a_cell_the_muscle_overloads_is_a_warning_from_check(tmp_path, mkm_cli):
         .replace("tare_max_shift_N = 100.0", "tare_max_shift_N = 20.0")
     (tmp_path / "small.toml").write_text(text)
     code, out, err = mkm_cli(["check", "--config", str(tmp_path / "small.toml")])
-    # Equation 2 at the calibrated 30.8 deg: 820 N at 2.5 bar, against an interlock at 270 N
+    # Equation 2 at the braid lock's angle (the FE model's calibrated 33.0 deg): 662 N at
+    # 2.5 bar, against an interlock at 270 N
     assert code == 0 and "warning" not in out
     assert err.count("mkm: warning:") == 1
-    assert "develops about 820 N at 2.5 bar (Equation 2), beyond the force interlock at 270 N" \
+    assert "develops about 662 N at 2.5 bar (Equation 2), beyond the force interlock at 270 N" \
         in err
 
 

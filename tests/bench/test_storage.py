@@ -13,7 +13,6 @@ import pytest
 from mkm.bench.run import acquire
 from mkm.bench.storage import (
     SCHEMA_VERSION,
-    MuscleMeta,
     RunMeta,
     RunStatus,
     RunWriter,
@@ -23,6 +22,7 @@ from mkm.bench.storage import (
     load_run,
 )
 from mkm.core.records import write_json_atomic
+from mkm.fem.muscle import Muscle
 
 
 @pytest.fixture
@@ -129,7 +129,7 @@ def test_tampered_text_cells_are_refused(run_path):
 
 def test_time_keeps_a_tenth_of_a_second_after_days(tmp_path):
     # 6 significant digits lost the 0.1 s after 27.8 h (100,000 s)
-    writer = RunWriter(tmp_path, RunMeta(MuscleMeta("m", 30.0, 3.0, 282.0, 0.0)), "")
+    writer = RunWriter(tmp_path, RunMeta(Muscle(30.0, 3.0, 282.0, 0.0, id="m")), "")
     writer.append_samples([Sample(1_000_001, 1_000_001 / 10, 0, "step", 1.0, 1.0, 1.0, 0.5,
                                   2.0, 98.0, "")])
     writer.close()

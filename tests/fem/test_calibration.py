@@ -13,14 +13,13 @@ from hypothesis import strategies as st
 from mkm.core.records import read_prediction_header
 from mkm.fem.calibration import (
     CALIBRATION_FILE,
+    Calibration,
     calibrate_command,
     calibrated,
-    calibration_file,
     check_reference,
     fit_theta0,
     read_reference,
     store_calibration,
-    use_calibration,
 )
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
@@ -144,17 +143,20 @@ def test_a_missing_entry_names_the_command_that_writes_it(key, command):
     assert args.out == "lab.json"
 
 
-def test_selected_file_is_every_models_default_and_is_restored(tmp_path):
+def test_a_calibration_is_a_value_given_to_the_models_that_take_it(tmp_path):
     lab = tmp_path / "lab.json"
     lab.write_text(json.dumps({"thickwall": {"theta0_deg": 28.5}}))
     shipped = calibrated("thickwall")["theta0_deg"]
-    with use_calibration(lab) as selected:
-        assert selected == lab == calibration_file()
-        assert make_model("thickwall").params()["theta0_deg"] == 28.5
-        with pytest.raises(ValueError, match=f"no calibrated theta0 for model 'axisym' in {lab}"):
-            make_model("axisym").params()
-    assert calibration_file() == CALIBRATION_FILE
+    calibration = Calibration.load(lab)
+    assert calibration.path == lab and not calibration.is_shipped
+    model = make_model("thickwall", calibration)
+    assert model.params()["theta0_deg"] == 28.5
+    with pytest.raises(ValueError, match=f"no calibrated theta0 for model 'axisym' in {lab}"):
+        make_model("axisym", calibration).params()
+    # no state anywhere: the shipped default is untouched, and each model keeps its own
+    assert Calibration.shipped().is_shipped and Calibration.shipped().path == CALIBRATION_FILE
     assert make_model("thickwall").params()["theta0_deg"] == shipped
+    assert model.params()["theta0_deg"] == 28.5
 
 
 @pytest.mark.parametrize(("text", "message"), [
@@ -171,8 +173,7 @@ def test_bad_calibration_file_is_named_at_once(tmp_path, text, message):
     if text is not None:
         path.write_text(text)
     with pytest.raises(ValueError, match=f"^calibration {re.escape(str(path))}: {message}"):
-        with use_calibration(path):
-            pass
+        Calibration.load(path)
 
 
 def test_store_replaces_one_entry_and_keeps_the_others(tmp_path):
@@ -243,7 +244,6 @@ def test_calibration_from_a_bench_run_folder_on_the_command_line(sim_run, tmp_pa
     expected = ThickWall(theta0_deg=theta0).predict(
         header.pressure_bar, 40.0, 3.0, 0.1).force_N
     np.testing.assert_allclose(header.force_N, expected, rtol=1e-5)
-    assert calibration_file() == CALIBRATION_FILE  # the selection ends with the command
     grid = tmp_path / "grid.toml"
     grid.write_text('pressure_bar = [1, 2]\nD0_mm = 40\nt0_mm = 3\neps = 0.1\n')
     assert main(["fem", "dataset", "--grid", str(grid), "--model", "thickwall", "--workers", "1",

@@ -9,7 +9,7 @@ import pytest
 
 from mkm.bench.config import load_config
 from mkm.bench.sim import SimMuscleBench
-from mkm.fem.calibration import use_calibration
+from mkm.fem.calibration import Calibration
 from mkm.fem.friction import FrictionCreep, branch_factors, force_history
 from mkm.fem.ladder import make_model
 
@@ -58,16 +58,16 @@ def test_without_terms_the_rung_is_its_static_model():
     np.testing.assert_array_equal(wrapped.force_N, static.force_N)
 
 
-def test_terms_default_to_the_calibration_in_effect(tmp_path):
+def test_terms_default_to_the_calibration_given(tmp_path):
     path = tmp_path / "calibration.json"
     path.write_text(json.dumps({"thickwall": {"theta0_deg": 31.0, "hysteresis_fraction": 0.05,
                                               "creep_fraction": 0.01, "creep_tau_s": 12.0}}))
-    with use_calibration(path):
-        model = FrictionCreep(static="thickwall", direction="falling")
-        assert model.terms == {"hysteresis_fraction": 0.05, "creep_fraction": 0.01,
-                               "creep_tau_s": 12.0}
-        force = float(model.predict(2.0, D0, T0, 0.0).force_N)
-        static = float(make_model("thickwall").predict(2.0, D0, T0, 0.0).force_N)
+    calibration = Calibration.load(path)
+    model = FrictionCreep(static="thickwall", direction="falling", calibration=calibration)
+    assert model.terms == {"hysteresis_fraction": 0.05, "creep_fraction": 0.01,
+                           "creep_tau_s": 12.0}
+    force = float(model.predict(2.0, D0, T0, 0.0).force_N)
+    static = float(make_model("thickwall", calibration).predict(2.0, D0, T0, 0.0).force_N)
     assert force == pytest.approx(1.05 * static, rel=1e-12)
     assert FrictionCreep(static="thickwall").terms["hysteresis_fraction"] == 0.0  # shipped
 

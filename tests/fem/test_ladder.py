@@ -6,13 +6,14 @@ import sys
 import pytest
 
 from mkm.fem.eq2 import Eq2
-from mkm.fem.ladder import LADDER, make_model, model_class, model_names
+from mkm.fem.ladder import entry, make_model, names, static_names
 
 
 def test_every_rung_builds_and_orders_as_the_physics_says():
-    assert model_names() == ["eq2", "thickwall", "axisym"]
+    assert static_names() == ("eq2", "thickwall", "axisym")
+    assert names()[:4] == ("eq2", "thickwall", "axisym", "friction")
     force = {}
-    for name in LADDER:
+    for name in static_names():
         model = make_model(name, theta0_deg=32.0, mesh="coarse" if name == "axisym" else None)
         assert model.name == name and model.params()["theta0_deg"] == 32.0
         force[name] = float(model.predict(2.5, 35.0, 2.5, 0.05).force_N)
@@ -29,7 +30,7 @@ def test_none_means_default_and_unknown_parameters_are_named():
                        "diameter, theta0_deg, L0_mm$"):
         make_model("eq2", mesh="fine")
     with pytest.raises(ValueError, match="^unknown model 'fe': expected one of eq2, thickwall"):
-        model_class("fe")
+        entry("fe")
 
 
 def test_cheap_rungs_do_not_import_the_fe_machinery():
@@ -42,7 +43,7 @@ def test_cheap_rungs_do_not_import_the_fe_machinery():
 
 def test_rungs_with_a_threshold_say_so():
     # has_threshold picks the default calibration target: it must match what the rung reports
-    for name in LADDER:
+    for name in static_names():
         model = make_model(name, theta0_deg=32.0, mesh="coarse" if name == "axisym" else None)
         pred = model.predict([0.0, 2.5], 35.0, 2.5, 0.05)
         reports = "threshold_pressure_bar" in pred.extras

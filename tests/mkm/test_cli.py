@@ -12,11 +12,10 @@ import pytest
 
 from mkm.core.records import read_prediction_header
 from mkm.fem.calibration import CALIBRATION_FILE
-from mkm.fem.ladder import make_model, model_names
+from mkm.fem.ladder import make_model
 from mkm.fem.paper import CASE_I_CSV
 
 CASE_I = CASE_I_CSV
-MODELS = ", ".join(model_names())  # grows as rungs are registered
 SOLVE = ["fem", "solve", "--model", "eq2", "--D0", "35", "--t0", "2.5"]
 
 
@@ -108,7 +107,7 @@ def test_bad_input_is_one_line_with_status_2(args, message, mkm_run):
 
 @pytest.mark.parametrize("args, message", [
     (["--model", "nope"], "mkm: error: unknown model 'nope' in 'nope': expected one of eq2, "
-     "thickwall, axisym, surrogate, auto"),
+     "thickwall, axisym, friction, surrogate, auto"),
     (["--model", "thickwall", "--diameter", "braid"],
      "mkm: error: --model thickwall: thickwall takes no diameter (its parameters: theta0_deg, "
      "L0_mm, C10_MPa, C01_MPa, gap_mm)"),
@@ -288,8 +287,8 @@ def test_a_ctrl_c_while_importing_is_one_line_and_130():
 
 
 # the data, plotting and FE stacks may not load for a quick command; numpy only where it computes
-HEAVY = ("pandas", "scipy", "matplotlib", "sklearn", "skfem", "mkm.fem.fe", "dask", "openpyxl",
-         "skops")
+HEAVY = ("pandas", "scipy", "matplotlib", "sklearn", "skfem", "mkm.fem.fe", "dask",
+         "openpyxl", "skops")
 MUSCLE = ["--D0", "35", "--t0", "2.5", "--eps", "0.05"]
 
 

@@ -268,13 +268,12 @@ def test_the_calibrated_rubber_is_the_identified_one(tmp_path):
     import json as _json
 
     from mkm.design.spec import DEFAULT_RUBBER, rubber_of
-    from mkm.fem.calibration import calibrated, use_calibration
+    from mkm.fem.calibration import Calibration, calibrated
     from mkm.fem.materials import SILASTIC_S
 
     assert DEFAULT_RUBBER == "calibrated" and rubber_of("calibrated") == SILASTIC_S
     entry = dict(calibrated("axisym"), C10_MPa=0.1, C01_MPa=0.09)
     lab = tmp_path / "lab.json"
     lab.write_text(_json.dumps({"axisym": entry}))
-    with use_calibration(lab):
-        rubber = rubber_of("calibrated")
+    rubber = rubber_of("calibrated", Calibration.load(lab))
     assert (rubber.C10_MPa, rubber.C01_MPa) == (0.1, 0.09)

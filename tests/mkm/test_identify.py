@@ -20,7 +20,7 @@ import pytest
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
-from mkm.fem.calibration import use_calibration
+from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
@@ -117,13 +117,13 @@ def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mk
     assert float(learnt.strip().splitlines()[-1].split(",")[4]) == pytest.approx(
         float(expected), abs=0.005)
     # the friction rung reads the identified terms: its falling branch is (1 + h) the static
-    with use_calibration(out / "calibration.json"):
-        rung = build_spec("friction:static=thickwall,direction=falling")
-        static = make_model("thickwall").predict(2.0, 30.0, 3.0, 0.1).force_N
-        h = rung.terms["hysteresis_fraction"]
-        assert h == entry.get("hysteresis_fraction", 0.0)
-        assert float(rung.predict(2.0, 30.0, 3.0, 0.1).force_N) == pytest.approx(
-            float(static) * (1 + h), rel=1e-9)
+    learnt = Calibration.load(out / "calibration.json")
+    rung = build_spec("friction:static=thickwall,direction=falling", learnt)
+    static = make_model("thickwall", learnt).predict(2.0, 30.0, 3.0, 0.1).force_N
+    h = rung.terms["hysteresis_fraction"]
+    assert h == entry.get("hysteresis_fraction", 0.0)
+    assert float(rung.predict(2.0, 30.0, 3.0, 0.1).force_N) == pytest.approx(
+        float(static) * (1 + h), rel=1e-9)
 
 
 def test_one_eps_confounds_the_angle_and_the_rubber_and_idle_terms_are_dropped(tmp_path):

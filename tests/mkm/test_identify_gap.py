@@ -12,7 +12,7 @@ import pytest
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
-from mkm.fem.calibration import use_calibration
+from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
@@ -61,21 +61,21 @@ def test_a_simulated_gap_is_found_blind_from_two_eps(gapped, tmp_path):
 
     # the calibration it writes carries the gap to every command that takes --calibration
     files = result.write(tmp_path / "identified")
-    with use_calibration(files["calibration"]):
-        model = make_model("thickwall")
-        assert model.params()["gap_mm"] == pytest.approx(found["gap_mm"], abs=1e-6)
-        explicit = make_model("thickwall", theta0_deg=model.params()["theta0_deg"],
-                              C10_MPa=model.material.C10_MPa, C01_MPa=model.material.C01_MPa,
-                              gap_mm=model.params()["gap_mm"])
-        pressures = np.linspace(0.0, 2.5, 11)
-        np.testing.assert_array_equal(model.predict(pressures, 30.0, 3.0, 0.0).force_N,
-                                      explicit.predict(pressures, 30.0, 3.0, 0.0).force_N)
-        # the report's identified muscle predicts with the gap: as closely as the fit itself
-        (tmp_path / "page").mkdir()
-        page = report_section(runs, tmp_path / "page")
-        assert "gap_mm" in page
-        identified = re.findall(r"<td>identified</td>\s*<td>([0-9.e+-]+)</td>", page)
-        assert identified and max(map(float, identified)) < 0.5, page
+    learnt = Calibration.load(files["calibration"])
+    model = make_model("thickwall", learnt)
+    assert model.params()["gap_mm"] == pytest.approx(found["gap_mm"], abs=1e-6)
+    explicit = make_model("thickwall", theta0_deg=model.params()["theta0_deg"],
+                          C10_MPa=model.material.C10_MPa, C01_MPa=model.material.C01_MPa,
+                          gap_mm=model.params()["gap_mm"])
+    pressures = np.linspace(0.0, 2.5, 11)
+    np.testing.assert_array_equal(model.predict(pressures, 30.0, 3.0, 0.0).force_N,
+                                  explicit.predict(pressures, 30.0, 3.0, 0.0).force_N)
+    # the report's identified muscle predicts with the gap: as closely as the fit itself
+    (tmp_path / "page").mkdir()
+    page = report_section(runs, tmp_path / "page", learnt)
+    assert "gap_mm" in page
+    identified = re.findall(r"<td>identified</td>\s*<td>([0-9.e+-]+)</td>", page)
+    assert identified and max(map(float, identified)) < 0.5, page
     assert "gap_mm" not in make_model("thickwall").params()  # the shipped calibration has none
 
 

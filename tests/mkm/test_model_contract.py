@@ -25,7 +25,7 @@ import pytest
 from mkm.fem.calibration import calibrated
 from mkm.fem.eq2 import chou_hannaford
 from mkm.fem.interface import ForceModel
-from mkm.fem.ladder import L0, THETA0, Entry
+from mkm.fem.ladder import L0, THETA0, Entry, StudyVariant
 from mkm.registry import build_spec, entries, register, unregister
 
 D0, T0 = 30.0, 2.0
@@ -103,12 +103,12 @@ class TenfoldOff(IdealCylinder):
 
 TOY = Entry("toy-ideal", IdealCylinder, "Ideal cylinder (toy)", "a toy for the registry test",
             "closed form", {"theta0_deg": THETA0, "L0_mm": L0}, colour="tab:cyan",
-            contract_spec="toy-ideal")
+            study=(StudyVariant("toy-ideal", "toy-ideal"),), contract_spec="toy-ideal")
 
 
 @pytest.fixture
 def toy():
-    register(TOY, physics=True)
+    register(TOY)
     yield TOY
     unregister(TOY.name)
 
@@ -127,6 +127,33 @@ def test_a_registered_toy_is_everywhere_at_once(toy, mkm_run, tmp_path):
     code, _, err = mkm_run(["fem", "solve", "--model", "toy-ideal:mesh=fine", "--D0", "40",
                             "--t0", "3", "--eps", "0"])
     assert code == 2 and "expected some of theta0_deg, L0_mm" in err
+
+
+def test_a_registered_toy_is_in_every_list_derived_from_the_registry(toy, mkm_run, tmp_path):
+    from mkm.auto import candidates, read_model_errors
+    from mkm.fem.ladder import entry
+    from mkm.identify.result import closed_forms
+    from mkm.study import StudyConfig, physics_predictors, run_study, stability_methods
+
+    assert "toy-ideal" in entry("friction").parameters["static"].options()
+    code, out, err = mkm_run(["fem", "solve", "--model", "friction:static=toy-ideal,"
+                              "theta0_deg=30", "--D0", "40", "--t0", "3", "--eps", "0",
+                              "--pressures", "2"])
+    assert code == 0, err  # the toy's force (1662 N, above) as the static rung, no friction
+    assert float(out.strip().splitlines()[-1].split(",")[4]) == pytest.approx(1661.9, abs=0.1)
+    assert "toy-ideal" in closed_forms()  # identify refits its theta0
+    predictors = physics_predictors()
+    assert "toy-ideal" in [p.label for p in predictors]  # the study scores it
+    assert "toy-ideal" in stability_methods(StudyConfig(), predictors)  # and maps it
+    closed = StudyConfig(
+        muscles=(("I", 35.0, 2.5, 0.05, "test"),), pressures=(0.0, 1.25, 2.5),
+        predictors=lambda cache_dir: [p for p in physics_predictors()
+                                      if p.family == "closed form"],
+        reference="eq2-braid", stability_muscles=(("smallest", 30.0, 2.0),),
+        stability_pressures=(0.0, 2.0), stability_eps=(0.0, 0.1))
+    run_study(tmp_path / "study", closed, cache_dir=None)
+    table = read_model_errors(tmp_path / "study" / "model_errors.csv")
+    assert "toy-ideal" in set(candidates(table)["spec"])  # auto may choose it
 
 
 def test_a_registered_toy_is_scored_in_the_report(toy, tmp_path):

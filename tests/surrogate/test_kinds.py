@@ -67,7 +67,7 @@ def test_kind_contract(kind, thickwall_dataset, tmp_path):
     rms = np.sqrt(np.mean((force - data.y) ** 2))
     assert rms <= IN_SAMPLE_RMS * data.y.max(), f"{kind}: in-sample RMS {rms:.3g} N"
     loaded = load_model(save_model(model, tmp_path / kind))
-    assert loaded.kind == kinds.lookup(kind)[0].name or loaded.kind == kind
+    assert loaded.kind == kinds.entry(kind).name or loaded.kind == kind
     P = np.linspace(0.0, 2.5, 11)
     before, after = model.predict(P, 41.0, 2.7, 0.13), loaded.predict(P, 41.0, 2.7, 0.13)
     np.testing.assert_array_equal(after.force_N, before.force_N)
@@ -84,7 +84,7 @@ def test_unknown_parameter_of_a_kind_is_one_line():
 
 
 def test_a_kind_name_is_registered_once():
-    with pytest.raises(ValueError, match="'physics' is registered already"):
+    with pytest.raises(ValueError, match="'physics' is already registered"):
         kinds.register(kinds.Kind("physics", toy_estimator, "again", "a duplicate"))
 
 

@@ -61,13 +61,12 @@ def test_recorded_parameter_at_another_value_is_refused(physics, parameter, valu
 def test_default_angle_other_than_recorded_is_refused_at_predict(physics, tmp_path):
     # A user who calibrates theta0 on a bench run gets a refusal, not a surrogate silently
     # trained at another angle.
-    from mkm.fem.calibration import use_calibration
+    from mkm.fem.calibration import Calibration
 
     other = tmp_path / "calibration.json"
     other.write_text('{"axisym": {"theta0_deg": 30.0}}')
-    with use_calibration(other), pytest.raises(ValueError, match=r"theta0_deg=30 \(the "
-                                                                  r"default\) refused"):
-        physics.predict(1.0, 40.0, 3.0, 0.1)
+    with pytest.raises(ValueError, match=r"theta0_deg=30 \(the default\) refused"):
+        physics.with_parameters(Calibration.load(other)).predict(1.0, 40.0, 3.0, 0.1)
 
 
 def test_gp_gives_a_predictive_spread(gp):

@@ -16,8 +16,7 @@ from mkm.fem.dataset import build as dataset
 from mkm.fem.dataset.build import Job, build_dataset, model_version, run_job
 from mkm.fem.dataset.grid import parse_grid
 from mkm.fem.eq2 import chou_hannaford
-from mkm.fem.ladder import L0, THETA0, Entry
-from mkm.fem.ladder import LADDER as MODELS
+from mkm.fem.ladder import L0, THETA0, Entry, register, unregister
 
 # 2 muscles x 2 eps = 4 jobs of 3 pressures: the smallest grid with more jobs than workers
 TINY_GRID = """
@@ -150,10 +149,11 @@ def fake_model(tmp_path, monkeypatch):
     (package / "model.py").write_text(FAKE_MODEL)
     (package / "physics.py").write_text("stiffness_N_per_bar = 100.0\n")
     monkeypatch.syspath_prepend(str(tmp_path))
-    monkeypatch.setitem(MODELS, "fake", Entry("fake", "fakemkm.model:Fake", "Fake", "a fake model",
-                                              "test", {"theta0_deg": THETA0, "L0_mm": L0}))
+    register(Entry("fake", "fakemkm.model:Fake", "Fake", "a fake model", "test",
+                   {"theta0_deg": THETA0, "L0_mm": L0}))
     source_version.cache_clear()
     yield package
+    unregister("fake")
     source_version.cache_clear()
 
 

@@ -3,7 +3,8 @@
 import numpy as np
 import pytest
 
-from mkm.fem.fe.mesh import MESH_LEVELS, graded_spacing, half_muscle_mesh
+from mkm.fem.fe.mesh import graded_spacing, half_muscle_mesh
+from mkm.fem.options import MESH_LEVELS
 
 
 @pytest.mark.parametrize(("n", "ratio"), [(16, 8.0), (96, 32.0), (1, 5.0)])
