@@ -4,9 +4,12 @@ VENV := .venv
 BIN := $(VENV)/bin
 # Strict editable install: a tree of links under build/ that type checkers, IDEs and import-graph
 # readers resolve (mkm.fem is fem/, ...). A module added or removed changes its folder, which
-# installs again.
+# installs again. setuptools prints an informational banner (a UserWarning) about folders named
+# as the package; here the folder is the package: install quietly.
+PIP_INSTALL := PYTHONWARNINGS=ignore::UserWarning $(BIN)/python -m pip install --quiet
 EDITABLE := --config-settings editable_mode=strict -e
-PACKAGE_DIRS := $(shell find mkm bench fem surrogate -type d -not -name __pycache__)
+# (with a trailing slash: `bench` is also a target)
+PACKAGE_DIRS := $(shell find mkm bench fem surrogate -type d -not -name __pycache__ -printf '%p/ ')
 
 .PHONY: demo test test-fast bench docs bench-docs clean
 
@@ -15,15 +18,15 @@ $(BIN)/python:
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
 $(VENV)/.installed: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/python
-	$(BIN)/python -m pip install --quiet $(EDITABLE) .
+	$(PIP_INSTALL) $(EDITABLE) .
 	touch $@
 
 $(VENV)/.installed-docs: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/python
-	$(BIN)/python -m pip install --quiet $(EDITABLE) ".[docs]"
+	$(PIP_INSTALL) $(EDITABLE) ".[docs]"
 	touch $@ $(VENV)/.installed
 
 $(VENV)/.installed-test: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/python
-	$(BIN)/python -m pip install --quiet $(EDITABLE) ".[test]"
+	$(PIP_INSTALL) $(EDITABLE) ".[test]"
 	touch $@ $(VENV)/.installed
 
 # The paper's two tests (eps 0 and 12.2 %) on the simulated bench (virtual clock: seconds) and
@@ -46,7 +49,7 @@ test-fast: $(VENV)/.installed-test
 	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q -m "not slow" -n 2
 
 bench: $(VENV)/.installed-test
-	$(BIN)/python -m pip install --quiet -e ".[bench]"
+	$(PIP_INSTALL) -e ".[bench]"
 	for f in benchmarks/bench_*.py; do $(BIN)/python $$f || exit 1; done
 
 # The documentation site under docs/_build/html: docs/generate.py writes the API pages and the
@@ -57,7 +60,7 @@ docs: $(VENV)/.installed-docs
 
 # Rerun the benchmarks whose tables the documentation shows (docs/measured/; minutes).
 bench-docs: $(VENV)/.installed-test
-	$(BIN)/python -m pip install --quiet -e ".[bench]"
+	$(PIP_INSTALL) -e ".[bench]"
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python docs/generate.py --run-benchmarks
 
 clean:

@@ -26,6 +26,7 @@ import numpy as np
 from mkm.bench import backends
 from mkm.bench.settings import positive, read_toml, read_toml_file, typed_section, within
 from mkm.bench.sim_settings import Sim
+from mkm.core.records import write_atomic
 from mkm.fem.limits import LIMITS, check_muscle_id
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
@@ -396,11 +397,8 @@ class BenchConfig:
 
     def _check_duration(self):
         seq, st = self.sequence, self.settle
-        up = len(seq.pressures_bar)
-        n = (up + (up - 1 if seq.down_sweep else 0)) * seq.repeats  # as bench.sequence plans
-        fixed = seq.tare_s + 2 * seq.preconditioning_cycles * seq.preconditioning_hold_s
-        short = fixed + n * (st.min_dwell_s + st.hold_s)
-        long = fixed + n * (st.timeout_s + st.hold_s)
+        n = step_count(self)
+        short, long = estimate_duration_s(self)
         if n > MAX_STEPS:
             raise ValueError(f"the sequence plans {n} steps, {short / 86400:.1f} to "
                              f"{long / 86400:.1f} days: expected at most {MAX_STEPS} steps "
@@ -504,6 +502,24 @@ def _backend_choice() -> str:
 _BACKEND_CHOICE = _backend_choice()
 
 
+def example_config():
+    """The packaged example configuration (the paper's prototype on the simulated bench), the
+    file to copy and edit (:func:`copy_example_config`)."""
+    return resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG)
+
+
+def copy_example_config(path: str | Path) -> Path:
+    """Write the packaged example into ``path`` (UTF-8, whatever the console's encoding: a
+    redirection in Windows PowerShell would write UTF-16) and return it; an existing file is
+    never overwritten."""
+    path = Path(path)
+    if path.exists():
+        raise ValueError(f"{path} exists: kept as it is; name a new file for the example")
+    if not path.parent.is_dir():
+        raise ValueError(f"{path.parent}: no such folder")
+    return write_atomic(path, example_config().read_text("utf-8"))
+
+
 def load_config(path: str | Path | None = None, eps: float | None = None,
                 pressures_bar=None, backend: str | None = None) -> BenchConfig:
     """The configuration in ``path`` (the packaged default when None).
@@ -513,8 +529,8 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
     --backend`` do; the result is validated again.
     """
     if path is None:
-        text = resources.files("mkm.bench").joinpath("configs", DEFAULT_CONFIG).read_text("utf-8")
-        config = parse_config(text, f"the packaged example {DEFAULT_CONFIG}")
+        example = example_config()
+        config = parse_config(example.read_text("utf-8"), f"the packaged example {example}")
     else:
         text, data = read_toml_file(Path(path), "config ")
         config = config_from_tables(data, text, str(path))
@@ -526,3 +542,42 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
     if backend is not None and backend != config.daq.backend:
         changes["daq"] = {"backend": backend}
     return config.replace(**changes) if changes else config
+
+
+@dataclass(frozen=True)
+class Step:
+    """One planned pressure step of the staircase."""
+
+    step: int
+    direction: str  # "up" | "down"
+    repeat: int
+    set_pressure_bar: float
+
+
+def plan_steps(config: BenchConfig) -> list[Step]:
+    """The staircase: pressures up, then (optionally) down without repeating the top; x repeats."""
+    seq = config.sequence
+    up = list(seq.pressures_bar)
+    down = up[-2::-1] if seq.down_sweep else []
+    steps = []
+    for repeat in range(seq.repeats):
+        for direction, pressures in (("up", up), ("down", down)):
+            for p in pressures:
+                steps.append(Step(len(steps), direction, repeat, p))
+    return steps
+
+
+def step_count(config: BenchConfig) -> int:
+    """``len(plan_steps(config))`` without making the steps (a configuration is checked for
+    the size of its staircase before any is made)."""
+    seq = config.sequence
+    up = len(seq.pressures_bar)
+    return (up + (up - 1 if seq.down_sweep else 0)) * seq.repeats
+
+
+def estimate_duration_s(config: BenchConfig) -> tuple[float, float]:
+    """Shortest and longest run time [s]: every step settling at min dwell, or timing out."""
+    seq, st = config.sequence, config.settle
+    fixed = seq.tare_s + 2 * seq.preconditioning_cycles * seq.preconditioning_hold_s
+    n = step_count(config)
+    return fixed + n * (st.min_dwell_s + st.hold_s), fixed + n * (st.timeout_s + st.hold_s)

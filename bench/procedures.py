@@ -17,11 +17,11 @@ from scipy import stats
 
 from mkm.bench.backend import Backend, BenchError, DeviceInfo
 from mkm.bench.budget import budget_table, expected_budget
-from mkm.bench.config import BenchConfig
+from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
-from mkm.bench.sequence import estimate_duration_s, plan_steps, validate_tare
+from mkm.bench.sequence import validate_tare
 from mkm.bench.sim import STANDARD_GRAVITY
 from mkm.bench.unvented import vent_unvented
 from mkm.bench.vent import verify_vent

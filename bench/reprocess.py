@@ -20,8 +20,8 @@ from pathlib import Path
 import numpy as np
 
 from mkm.bench.budget import Instrument
-from mkm.bench.config import BenchConfig, config_from_tables
-from mkm.bench.sequence import HoldStats, Step, validate_tare
+from mkm.bench.config import BenchConfig, Step, config_from_tables
+from mkm.bench.sequence import HoldStats, validate_tare
 from mkm.bench.settings import read_toml_file
 from mkm.bench.storage import (
     CommandRecord,

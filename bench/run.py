@@ -37,12 +37,12 @@ from pathlib import Path
 
 from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError
-from mkm.bench.config import BenchConfig
+from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner
 from mkm.bench.preflight import braid_lock, loadcell_warning
 from mkm.bench.recorder import Recorder
-from mkm.bench.sequence import Staircase, estimate_duration_s, plan_steps
+from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import BenchLease, Marker, vent_unvented

@@ -14,46 +14,14 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from dataclasses import dataclass
 
 import numpy as np
 
 from mkm.bench.backend import BenchError
 from mkm.bench.budget import Instrument, step_budget
-from mkm.bench.config import BenchConfig
+from mkm.bench.config import BenchConfig, Step, plan_steps
 from mkm.bench.storage import StepRecord
 from mkm.bench.worker import Acquisition
-
-
-@dataclass(frozen=True)
-class Step:
-    """One planned pressure step of the staircase."""
-
-    step: int
-    direction: str  # "up" | "down"
-    repeat: int
-    set_pressure_bar: float
-
-
-def plan_steps(config: BenchConfig) -> list[Step]:
-    """The staircase: pressures up, then (optionally) down without repeating the top; x repeats."""
-    seq = config.sequence
-    up = list(seq.pressures_bar)
-    down = up[-2::-1] if seq.down_sweep else []
-    steps = []
-    for repeat in range(seq.repeats):
-        for direction, pressures in (("up", up), ("down", down)):
-            for p in pressures:
-                steps.append(Step(len(steps), direction, repeat, p))
-    return steps
-
-
-def estimate_duration_s(config: BenchConfig) -> tuple[float, float]:
-    """Shortest and longest run time [s]: every step settling at min dwell, or timing out."""
-    seq, st = config.sequence, config.settle
-    fixed = seq.tare_s + 2 * seq.preconditioning_cycles * seq.preconditioning_hold_s
-    n = len(plan_steps(config))
-    return fixed + n * (st.min_dwell_s + st.hold_s), fixed + n * (st.timeout_s + st.hold_s)
 
 
 def settle_reached(t_s: np.ndarray, force_N: np.ndarray, pressure_bar: np.ndarray,

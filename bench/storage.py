@@ -1,15 +1,15 @@
 """The run folder contract: one module writes it and reads it back.
 
-One folder per run, named ``<UTC time>_<muscle id>``::
+One folder per run, named ``<UTC time>_<muscle id>``:
 
-    run.json      :class:`RunMeta`, written atomically at start (status ``running``) and at the
-                  end (a :class:`RunStatus`, with the reason); ``schema_version`` says which
-                  layout it has (files without it are version 1 and still load)
-    config.toml   the bench configuration as given
-    samples.csv   one :class:`Sample` per row, appended and flushed after every block read
-    steps.csv     one :class:`StepRecord` per pressure step, appended when the step ends
-    commands.csv  one :class:`CommandRecord` per regulator command, with whether the write
-                  succeeded
+- ``run.json``: :class:`RunMeta`, written atomically at start (status ``running``) and at the
+  end (a :class:`RunStatus`, with the reason); ``schema_version`` says which layout it has
+  (files without it are version 1 and still load);
+- ``config.toml``: the bench configuration as given;
+- ``samples.csv``: one :class:`Sample` per row, appended and flushed after every block read;
+- ``steps.csv``: one :class:`StepRecord` per pressure step, appended when the step ends;
+- ``commands.csv``: one :class:`CommandRecord` per regulator command, with whether the write
+  succeeded.
 
 Rows are flushed to the operating system after every block, so a run killed at any moment keeps
 every sample read before its last block. ``fsync`` (which costs milliseconds) runs for run.json
@@ -721,6 +721,8 @@ def read_meta(path: str | Path) -> RunMeta:
         raise ValueError(f"{str(path)[:200]} cannot be read as a run folder "
                          f"({exc.strerror or exc})") from None
     if not is_file:
+        if not path.exists():
+            raise ValueError(f"{path}: no such folder")
         raise ValueError(f"{path} is not a run folder: run.json is missing")
     if meta_path.stat().st_size > MAX_RUN_JSON_BYTES:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "

@@ -47,6 +47,7 @@ import csv
 import json
 import os
 import random
+import re
 import resource
 import shutil
 import signal
@@ -101,12 +102,14 @@ class Proc:
         return None
 
     def refusal(self) -> str:
-        lines = [line for line in self.err.splitlines() if line.startswith("mkm: error:")]
+        # one prefix for every error: "mkm <command>: error:"
+        lines = [line for line in self.err.splitlines()
+                 if re.match(r"mkm( [a-z-]+)*: error:", line)]
         if self.code == 0:
             return "exit 0"
         if self.code == 2 and len(lines) == 1:
             return "refused (exit 2, one line)"
-        return f"exit {self.code}" + (" with mkm: error" if lines else "")
+        return f"exit {self.code}" + (" with an error line" if lines else "")
 
 
 def set_key(text: str, section: str, key: str, value: str) -> str:

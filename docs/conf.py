@@ -30,7 +30,10 @@ extensions = [
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
     "sphinx.ext.viewcode",
+    "sphinx-mathjax-offline",  # MathJax 3 copied into _static: equations render offline
 ]
+# the local copy, never the CDN (the lab PC has no internet)
+mathjax_path = "mathjax/tex-chtml.js"
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 # the generated tables are included into pages, not pages of their own
 exclude_patterns = ["_build", "measured", "_generated/*.md"]

@@ -301,7 +301,11 @@ def run_benchmarks(names=None) -> None:
         if names and name not in names:
             continue
         target = MEASURED / name
-        args = [sys.executable, *shlex.split(command.format(out=target, dir=MEASURED))]
+        # paths relative to the repository (the benchmarks run there): the recorded command
+        # says what to type in any checkout, not where this one lies
+        relative = {"out": target.relative_to(ROOT).as_posix(),
+                    "dir": MEASURED.relative_to(ROOT).as_posix()}
+        args = [sys.executable, *shlex.split(command.format(**relative))]
         print(f"running {' '.join(args[1:])}", file=sys.stderr)
         done = subprocess.run(args, cwd=ROOT, capture_output=True, text=True, check=True)
         if name.endswith(".csv") and "{dir}" not in command:

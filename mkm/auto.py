@@ -234,11 +234,23 @@ class AutoModel(ForceModel):
                 {**out, "valid": valid, "converged": converged}.items()}
 
 
-def explain(prediction, tolerance: float | None = None) -> str:
+def spec_of(predictor: str, table: Path | str | None = None) -> str:
+    """The spec of a study predictor (``surrogate-muscle-gp`` -> ``surrogate``); the name itself
+    if the study table does not list it."""
+    if predictor == FALLBACK:
+        return FALLBACK_SPEC
+    rows = candidates(read_model_errors(table or MODEL_ERRORS_FILE))
+    match = rows.loc[rows["predictor"] == predictor, "spec"]
+    return str(match.iloc[0]) if len(match) else predictor
+
+
+def explain(prediction, tolerance: float | None = None,
+            label: Callable[[str], str] = str) -> str:
     """One line per model used: how many points it answered, its bound and how it was bound.
 
     ``prediction``: a :class:`Prediction` of :class:`AutoModel`, or the dict of
-    :meth:`AutoModel.choose` with ``tolerance`` given.
+    :meth:`AutoModel.choose` with ``tolerance`` given; ``label`` names a study predictor
+    (:func:`mkm.verdict.model_label`: the registry's name).
     """
     if isinstance(prediction, dict):
         extras = prediction
@@ -257,5 +269,5 @@ def explain(prediction, tolerance: float | None = None) -> str:
         else:
             why = (f"the cheapest model whose error bound at these points is <= {tol:g}%: "
                    f"{np.nanmax(bound[here]):.2f}% ({source[here][0]})")
-        lines.append(f"auto: {name} for {here.sum()} of {used.size} points: {why}")
+        lines.append(f"auto: {label(name)} for {here.sum()} of {used.size} points: {why}")
     return "\n".join(lines)

@@ -69,6 +69,49 @@ def _styles(models) -> dict[str, tuple]:
                 MODEL_MARKERS[i % len(MODEL_MARKERS)]) for i, m in enumerate(models)}
 
 
+#: Two models whose forces differ by less than this fraction of the largest force at every point
+#: are drawn as two lines and named as identical in the legend (one stripe is not two models).
+IDENTICAL_FRACTION = 0.001
+
+
+def _identical(predictions: pd.DataFrame, names: dict[str, str]) -> dict[str, str]:
+    """``model -> " (identical to <name> within 0.1 %)"`` for each model whose forces match an
+    earlier model's at every point where both are valid (and at least one is)."""
+    notes: dict[str, str] = {}
+    curves = {m: rows.drop_duplicates("pressure_bar").set_index("pressure_bar")
+              for m, rows in predictions.groupby("model", sort=False)}
+    scale = float(np.nanmax(np.abs(predictions["force_N"].where(predictions["valid"]))
+                            .to_numpy(float), initial=0.0))
+    if not scale > 0:
+        return notes
+    models = list(curves)
+    for i, model in enumerate(models):
+        for earlier in models[:i]:
+            a, b = curves[model], curves[earlier]
+            both = a.index.intersection(b.index)
+            ok = a.loc[both, "valid"].to_numpy(bool) & b.loc[both, "valid"].to_numpy(bool)
+            if not ok.any():
+                continue
+            gap = np.abs(a.loc[both, "force_N"].to_numpy(float)[ok]
+                         - b.loc[both, "force_N"].to_numpy(float)[ok])
+            if np.all(gap <= IDENTICAL_FRACTION * scale):
+                notes[model] = (f" (identical to {names[earlier]} within "
+                                f"{100 * IDENTICAL_FRACTION:g} %)")
+                break
+    return notes
+
+
+def _time_axis(axis) -> None:
+    """A log axis of seconds labelled as a reader takes durations in (``10 µs``, ``1 ms``),
+    never in scientific notation."""
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
+    from mkm.verdict import format_seconds
+
+    axis.set_major_formatter(FuncFormatter(lambda v, _: format_seconds(v)))
+    axis.set_minor_formatter(NullFormatter())
+
+
 def _invalid_handle() -> Line2D:
     return Line2D([], [], color="0.3", **INVALID_STYLE)
 
@@ -123,11 +166,13 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
     any_invalid, any_band = False, False
     widths = _widths(dict.fromkeys(predictions["model"]))
     styles = _styles(dict.fromkeys(predictions["model"]))
+    identical = _identical(predictions, names)
     for model, rows in predictions.groupby("model", sort=False):
         c = colours[model]
         linestyle, marker = styles[model]
-        any_invalid |= _model_curve(ax_f, rows, c, names[model], linestyle=linestyle,
-                                    linewidth=widths[model], marker=marker)
+        any_invalid |= _model_curve(ax_f, rows, c, names[model] + identical.get(model, ""),
+                                    linestyle=linestyle, linewidth=widths[model],
+                                    marker=marker)
         any_band |= any(c in rows and rows[c].notna().any()
                         for c in ("force_std_N", "force_u_N"))
         for direction, style, face in (("up", "-", c), ("down", "--", "white")):
@@ -148,14 +193,20 @@ def run_figure(steps: pd.DataFrame, predictions: pd.DataFrame, title: str,
     if any_invalid:
         handles.append(_invalid_handle())
         labels.append(INVALID_LABEL)
-    ax_f.legend(handles, labels, fontsize=7, loc="upper left")
     ax_e.set_title("Err% (Equation 7)", pad=14)
     ax_r.set_title("residual in newtons", pad=14)
     ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_meas − F_model) / max F_meas [%]")
     ax_r.set(xlabel="pressure P [bar]", ylabel="residual F_meas − F_model [N]")
-    ax_e.legend([Line2D([], [], color="0.3", marker="o", linestyle="-"),
-                 Line2D([], [], color="0.3", marker="s", markerfacecolor="white",
-                        linestyle="--")], ["up sweep", "down sweep"], fontsize=8, loc="best")
+    # the sweeps' styles of the Err% and residual panels: only the sweeps the run has
+    drawn = set(predictions["direction"])
+    for direction, handle in (("up", Line2D([], [], color="0.3", marker="o", linestyle="-")),
+                              ("down", Line2D([], [], color="0.3", marker="s",
+                                              markerfacecolor="white", linestyle="--"))):
+        if direction in drawn:
+            handles.append(handle)
+            labels.append(f"Err% and residual: {direction} sweep")
+    # below the panels, never over a point
+    fig.legend(handles, labels, fontsize=8, loc="outside lower center", ncol=3)
     for ax in (ax_f, ax_e, ax_r):
         ax.grid(True, alpha=0.3)
         ax.set_xlim(left=0.0)
@@ -192,7 +243,10 @@ def overlay_figure(runs: list[tuple[str, pd.DataFrame, pd.DataFrame]], title: st
                       linewidth=widths[model])
     models = list(dict.fromkeys(m for _, _, p in runs for m in p["model"]))
     handles = [Line2D([], [], color=colours[m], linewidth=widths[m]) for m in models]
-    labels = [names[m] for m in models]
+    # "identical within 0.1 %" only where it holds on every run of the figure
+    notes = [_identical(p, names) for _, _, p in runs]
+    same = {m: n for m, n in notes[0].items() if all(other.get(m) == n for other in notes)}
+    labels = [names[m] + same.get(m, "") for m in models]
     for i, (label, _, _) in enumerate(runs):
         handles.append(Line2D([], [], color="black", marker=RUN_MARKERS[i % len(RUN_MARKERS)],
                               linestyle=RUN_LINESTYLES[i % len(RUN_LINESTYLES)]))
@@ -200,7 +254,7 @@ def overlay_figure(runs: list[tuple[str, pd.DataFrame, pd.DataFrame]], title: st
     if any_invalid:
         handles.append(_invalid_handle())
         labels.append(INVALID_LABEL)
-    ax_f.legend(handles, labels, fontsize=7.5, loc="upper left")
+    fig.legend(handles, labels, fontsize=8, loc="outside lower center", ncol=3)
     ax_f.set_title("measured and modelled force", pad=14)  # room for the invalid strip
     ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]")
     ax_f.set_ylim(bottom=min(0.0, ax_f.get_ylim()[0]))
@@ -278,9 +332,12 @@ def time_figure(bins: pd.DataFrame, steps: pd.DataFrame, title: str,
 def surrogate_fe_figure(table: pd.DataFrame, title: str) -> Figure:
     """The paper's Figure 6 with our numbers: FE against surrogate for each test muscle.
 
-    ``table``: ``muscle, pressure_bar, force_fe_N, force_N, valid, err_pct`` and optionally
-    ``model`` (several surrogates: one line style each).
+    ``table``: ``muscle, pressure_bar, force_fe_N, force_N`` (or ``force_pred_N``, as
+    :mod:`mkm.surrogate.testset` writes it), ``valid``, ``err_pct`` (drawn where valid) and
+    optionally ``model`` (several surrogates: one line style each).
     """
+    table = table.rename(columns={"force_pred_N": "force_N"})
+    table = table.assign(err_pct=table["err_pct"].where(table["valid"]))
     fig = Figure(figsize=(11, 4.6), layout="constrained")
     ax_f, ax_e = fig.subplots(1, 2)
     models = list(dict.fromkeys(table["model"])) if "model" in table else [None]
@@ -302,11 +359,12 @@ def surrogate_fe_figure(table: pd.DataFrame, title: str) -> Figure:
             _mark_invalid(ax_f, one.loc[~one["valid"], "pressure_bar"], c)
     ax_f.set(xlabel="pressure P [bar]", ylabel="force F [N]",
              title="FE (dots) and surrogate (lines)")
-    ax_f.legend(fontsize=7, ncol=2, loc="upper left")
     ax_e.axhline(0.0, color="0.6", linewidth=0.8)
     ax_e.set(xlabel="pressure P [bar]", ylabel="Err% = (F_FE − F_sur) / max F_FE [%]",
              title="error against the FE model (Equation 7)")
-    ax_e.legend(fontsize=8)
+    # one colour per muscle in both panels: one legend, below them, never over a point
+    fig.legend(*ax_f.get_legend_handles_labels(), fontsize=8, ncol=4,
+               loc="outside lower center")
     for ax in (ax_f, ax_e):
         ax.grid(True, alpha=0.3)
         ax.set_xlim(left=0.0)
@@ -337,7 +395,7 @@ def report_speed_figure(summary: pd.DataFrame, names: dict[str, str],
     handles += [Line2D([], [], color="0.3", marker=RUN_MARKERS[i % len(RUN_MARKERS)],
                        linestyle="none") for i in range(len(runs))]
     labels += [f"run {i + 1}" for i in range(len(runs))]
-    ax.legend(handles, labels, fontsize=7.5, loc="best")
+    fig.legend(handles, labels, fontsize=7.5, loc="outside right upper")  # off the points
     ax.set_xscale("log")
     ax.set_yscale("log")
     from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
@@ -345,7 +403,8 @@ def report_speed_figure(summary: pd.DataFrame, names: dict[str, str],
     ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
     ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     ax.yaxis.set_minor_formatter(NullFormatter())
-    ax.set(xlabel="seconds per predicted force [s]",
+    _time_axis(ax.xaxis)
+    ax.set(xlabel="time per predicted force",
            ylabel="largest |Err%| against the measurement [%]",
            title="speed against accuracy on these runs (lower left is better)")
     ax.grid(True, which="major", alpha=0.35)
@@ -403,7 +462,8 @@ def speed_accuracy_figure(summary: pd.DataFrame, machine: str) -> Figure:
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
-    ax.set(xlabel="seconds per predicted force [s] (one call per muscle sweep, median)",
+    _time_axis(ax.xaxis)
+    ax.set(xlabel="time per predicted force (one call per muscle sweep, median)",
            ylabel="largest |Err%| against the reference [%]",
            title=f"speed against accuracy, measured on {machine}")
     ax.grid(True, which="major", alpha=0.35)

@@ -22,6 +22,7 @@ figcaption,.caption{font-size:.85em;color:#444}
 .status{padding:.4em .8em;border-radius:4px;font-weight:600;display:inline-block}
 .status-complete{background:#d9f0d3}.status-other{background:#fdd;border:1px solid #c00}
 .note{background:#fff8e1;border-left:4px solid #f0b400;padding:.4em .8em}
+.verdict{font-size:1.05em;background:#eef5ff;border-left:4px solid #2a6fdb;padding:.5em .8em}
 pre{background:#f6f6f6;padding:.6em;overflow-x:auto;font-size:.8em;white-space:pre-wrap}
 dl.kv{display:grid;grid-template-columns:max-content auto;gap:.1em 1em}dl.kv dt{font-weight:600}
 dl.kv dd{margin:0}
@@ -54,6 +55,7 @@ def table_html(df: pd.DataFrame, caption: str, digits: int = 2,
     """An HTML table; floats with ``digits`` decimals unless ``formats`` gives a column's spec
     (seconds span six decades: ``{"time [s]": ".3g"}``)."""
     formats = {"time [s]": ".3g", "seconds_per_point": ".3g"} | (formats or {})
+    df = df.map(lambda v: "—" if v is None else v)  # a column of only None is no exception
     formatters = {c: (lambda v, f=f: "—" if pd.isna(v) else format(v, f))
                   for c, f in formats.items() if c in df.columns}
     body = df.to_html(index=False, border=0, na_rep="—", escape=True, formatters=formatters,

@@ -27,11 +27,18 @@ class StatusLine:
         self.stream = stream or sys.stderr
         self.n = 0
         self.postfix = ""
-        self.start = self.last = time.monotonic()
+        self.start = self.last = self.last_update = time.monotonic()
+
+    def unpause(self) -> None:
+        """Leave the time since the last update out of the rate (tqdm's name): a one-off
+        phase with its own estimate (a first-use training) does not inflate the time left."""
+        now = time.monotonic()
+        self.start += now - self.last_update
+        self.last_update = now
 
     def update(self, n: int = 1) -> None:
         self.n += n
-        now = time.monotonic()
+        now = self.last_update = time.monotonic()
         if now - self.last >= self.interval_s:
             self.last = now
             self.print_status(now)
@@ -74,8 +81,9 @@ def progress_bar(total: int, desc: str, enabled: bool = True, unit: str = "item"
 
 
 def phase(command: str, text: str, enabled: bool = True) -> None:
-    """Name a long step before it starts (``training the default surrogate, about 30 s``), so
-    no command is silent for long whatever the terminal."""
+    """Name a long step before it starts (``training the best surrogate on first use, about
+    40 s (this machine, last time)``: :func:`mkm.core.durations.estimate`), so no command is
+    silent for long whatever the terminal."""
     if enabled:
         print(f"mkm {command}: {text}", file=sys.stderr, flush=True)
 

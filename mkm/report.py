@@ -7,8 +7,10 @@ paper's Equation 7 against the measurement and writes ``report.html`` (figures e
 PNG, inline CSS, no script, no external asset) with the PNGs, CSVs and ``provenance.json``
 beside it. The page answers, in this order:
 
-1. how good, per run: a summary table (status, eps, best model, its largest |Err%| and RMSE,
-   lost samples, the ``auto`` choice);
+1. the verdict, per run, in one sentence (:mod:`mkm.verdict`: the model to use, how far, how
+   fast, consistent or not, and ``auto``'s pick reconciled with it), then how good: a summary
+   table (status, eps, every model's largest |Err%|, RMSE and time per force, lost samples, the
+   ``auto`` choice);
 2. the runs of one muscle together (the paper's Figure 7c/d: eps 0 and 12.2 %, every model);
 3. how fast: seconds per predicted force against the largest |Err%| of every model on these runs,
    and the one model ``auto`` picks for each run;
@@ -18,8 +20,9 @@ beside it. The page answers, in this order:
 5. the surrogate against our FE model on the paper's test muscles (Table 3, Figure 6);
 6. provenance, folded, the full JSON in ``provenance.json``.
 
-Models are named as the paper names them (:attr:`mkm.registry.Spec.display_name`) with their
-spec beside; every table and figure names the provenance entries it was computed from.
+Each model has one name, its registry label (:attr:`mkm.registry.Spec.display_name`), in every
+sentence, table and figure; every table and figure names the provenance entries it was computed
+from.
 """
 
 from __future__ import annotations
@@ -68,6 +71,7 @@ from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 from mkm.uncertainty import force_band, with_band
+from mkm.verdict import AutoPick, format_seconds, model_label, recommend, verdict
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
 
@@ -84,7 +88,7 @@ class _Run:
     scored: pd.DataFrame = field(default_factory=pd.DataFrame)
     summary: list[dict] = field(default_factory=list)
     keys: list[str] = field(default_factory=list)
-    auto_choices: dict = field(default_factory=dict)  # tolerance -> (model, explanation)
+    auto_choices: dict = field(default_factory=dict)  # tolerance -> AutoPick or None
 
     @property
     def name(self) -> str:
@@ -147,7 +151,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     specs = [m if isinstance(m, Spec) else parse_spec(m) for m in models]
     out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
     out.mkdir(parents=True, exist_ok=True)
-    names = {s.text: f"{s.entry.label} [{s.text}]" for s in specs}
+    names = {s.text: s.display_name for s in specs}
     colours = model_colours(specs)
     prov: dict[str, dict] = {"software": provenance()}
     bar = progress_bar(len(run_dirs) * (len(specs) + 1) + int(surrogate_section), "report",
@@ -178,7 +182,7 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
              "(F_meas − F_model) / max F_meas over the run, in %; the residual is "
              "F_meas − F_model in N. A point where a model gives no valid number (invalid, out "
              "of its domain, not converged) is drawn as a cross above the axes, never as a "
-             "force, and left out of every number. Times are seconds per predicted force.</p>")
+             "force, and left out of every number. Times are per predicted force.</p>")
     body = intro + "".join(sections) + provenance_details(prov, "provenance.json")
     path = out / "report.html"
     path.write_text(html_page("McKibben muscle validation report", body), encoding="utf-8")
@@ -201,8 +205,10 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     L0_mm = float(muscle.get("L0_mm", L0_MM))
     for spec in r.specs:
         if (spec, L0_mm) not in models:  # a surrogate loads in about a second: once is enough
-            _announce_training(spec, bar)
+            training = _announce_training(spec, bar)
             models[spec, L0_mm] = spec.build(r.calibration, L0_mm=L0_mm)
+            if training:  # its own estimate was given: the tasks' time left leaves it out
+                bar.unpause()
         model = models[spec, L0_mm]
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
         pred = _with_band(pred, model, spec, L0_mm, r, cache_dir)
@@ -241,18 +247,21 @@ def _with_band(pred, model, spec: Spec, L0_mm: float, r: _Run, cache_dir):
     return with_band(pred, band)
 
 
-def _announce_training(spec: Spec, bar) -> None:
-    """Name the one long step of a first report before it starts: training the surrogate."""
-    if spec.name != "surrogate" or dict(spec.params).get("path") or getattr(bar, "disable",
-                                                                            False):
-        return
-    from mkm.surrogate.train import is_cached
+def _announce_training(spec: Spec, bar) -> bool:
+    """Name the one long step of a first report before it starts, training the surrogate, with
+    this machine's last time for it (:mod:`mkm.core.durations`); True if it trains."""
+    if spec.name != "surrogate" or dict(spec.params).get("path"):
+        return False
+    from mkm.core.durations import estimate
+    from mkm.surrogate.train import is_cached, training_task
 
     kind = str(dict(spec.params).get("kind", "best"))
-    if not is_cached(kind):
-        phase("report", f"training the {kind} surrogate on first use (GP fits over the FE "
-                        "design: about half a minute on two cores; cached for every later "
-                        "command)")
+    if is_cached(kind):
+        return False
+    phase("report", f"training the {kind} surrogate on first use, "
+                    f"{estimate(training_task(kind))}; cached for every later command",
+          not getattr(bar, "disable", False))
+    return True
 
 
 def _pressure_tolerance(meta) -> float:
@@ -272,13 +281,10 @@ def _planned_steps(meta) -> str:
     return "an unrecorded number planned" if meta.n_steps is None else str(meta.n_steps)
 
 
-def _best(r: _Run) -> dict | None:
-    """The model with the smallest largest |Err%| among those valid at every point (or, if
-    none is, among those valid somewhere)."""
-    rows = [s for s in r.summary if s["valid_points"] > 0]
-    full = [s for s in rows if s["valid_points"] == s["points"]]
-    pool = full or rows
-    return min(pool, key=lambda s: s["max_abs_err_pct"]) if pool else None
+def _cell(value) -> str:
+    """A table cell's text: an absent value (no step has an E_n) is the table's dash, never
+    ``None``."""
+    return "—" if value is None or (isinstance(value, float) and np.isnan(value)) else str(value)
 
 
 def _status_html(r: _Run) -> str:
@@ -293,17 +299,19 @@ def _status_html(r: _Run) -> str:
 def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
                      tolerance: float | None) -> str:
     """The first screen: what the runs are (simulated or measured, past the braid lock), then
-    every model's largest |Err%|, RMSE and seconds per force for every run in one table, the
+    every model's largest |Err%|, RMSE and time per force for every run in one table, the
     model ``auto`` picks for each run, then each run's status."""
     banners = _banners(runs)
+    verdicts = "".join(f'<p class="verdict">{esc(_verdict(r, names, tolerance))}</p>'
+                       for r in runs)
     head = ("<tr><th>run</th><th>model</th><th>largest |Err%|</th><th>RMSE [N]</th>"
-            "<th>s per force</th><th>valid steps</th>"
+            "<th>time per force</th><th>valid steps</th>"
             + (f"<th>auto at {100 * tolerance:g} %</th>" if tolerance else "") + "</tr>")
     rows = []
     for r in runs:
         ordered = sorted(r.summary, key=lambda s: (np.nan_to_num(s["max_abs_err_pct"],
                                                                  nan=np.inf)))
-        best = _best(r)
+        best = recommend(r.summary, tolerance)[0]  # the verdict's model
         choice = _auto_choice(r, tolerance) if tolerance else None
         for i, s in enumerate(ordered):
             first = i == 0
@@ -317,22 +325,25 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
             auto = ""
             if tolerance and first:
                 auto = (f'<td rowspan="{len(ordered)}">'
-                        f"{esc(choice[0]) if choice else '—'}</td>")
+                        f"{esc(choice.name) if choice else '—'}</td>")
             rows.append(f'<tr>{run_cell}<td class="name">{name}</td><td class="num">{err}</td>'
                         f'<td class="num">{rmse}</td>'
-                        f'<td class="num">{s["seconds_per_point"]:.3g}</td>'
+                        f'<td class="num">{format_seconds(s["seconds_per_point"])}</td>'
                         f'<td class="num">{s["valid_points"]} / {s["points"]}</td>{auto}</tr>')
     status = "".join(
         f'<tr><td><a href="#run-{r.k}">run {r.k}</a></td><td>{_status_html(r)}</td>'
         f"<td>{len(r.run.steps)} / {esc(_planned_steps(r.meta))}</td>"
         f"<td>{r.meta.lost_samples}</td></tr>" for r in runs)
     keys = [k for r in runs for k in r.keys]
-    return ('<h2 id="summary">Summary</h2>' + banners
+    return ('<h2 id="summary">Summary</h2>' + verdicts + banners
             + '<div class="table"><table class="summary">'
             f"<thead>{head}</thead><tbody>{''.join(rows)}</tbody></table>"
-            '<p class="caption">Every model on every run, best first (in bold: the smallest '
-            "largest |Err%|, Equation 7, among the models valid at every kept step). auto: the "
-            "cheapest model whose error bound at the run's points meets the tolerance. "
+            '<p class="caption">Every model on every run, closest first (largest |Err%|, '
+            "Equation 7); in bold, the model the verdict names: the cheapest within the "
+            "tolerance against the measurement, else the closest valid at every kept step. "
+            "auto: the "
+            "cheapest model whose error bound against the FE model at the run's points meets "
+            "the tolerance. "
             + provenance_links(dict.fromkeys(keys)) + "</p></div>"
             '<div class="table"><table class="summary"><thead><tr><th>run</th><th>status</th>'
             "<th>steps kept / planned</th><th>lost samples</th></tr></thead>"
@@ -408,13 +419,13 @@ def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours:
     path = save_figure(report_speed_figure(summary, names, colours), out / "speed_accuracy.png")
     table = []
     for model, g in summary.groupby("model", sort=False):
-        table.append({"model": names[model].rsplit(" [", 1)[0], "spec": model,
+        table.append({"model": names[model], "spec": model,
                       "valid points": int(g["valid_points"].sum()),
                       "of": int(g["points"].sum()),
                       "largest |Err%|": g["max_abs_err_pct"].max(),
                       "largest RMSE [N]": g["rmse_N"].max(),
                       "largest |residual| [N]": g["max_abs_residual_N"].max(),
-                      "s per force": g["seconds_per_point"].median(),
+                      "time per force": format_seconds(g["seconds_per_point"].median()),
                       "timed": "from the FE cache (the original solve)" if g["from_cache"].all()
                       else "in this report"})
     keys = dict.fromkeys(k for r in runs for k in r.keys)
@@ -426,7 +437,7 @@ def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours:
                           + provenance_links(keys))
             + table_html(pd.DataFrame(table), "Every model over all runs: the worst of its "
                          "per-run numbers, and the median time per force. "
-                         + provenance_links(keys), formats={"s per force": ".3g"})
+                         + provenance_links(keys))
             + auto)
 
 
@@ -473,24 +484,28 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
     title = (f"run {r.k}: {_plain(muscle.get('id', ''))}, eps = {r.eps_pct:.1f} %")
     fig_path = save_figure(run_figure(steps, r.scored, title, names, colours),
                            out / f"{stem}_force_error.png")
-    table = pd.DataFrame([{"model": names[s["model"]].rsplit(" [", 1)[0], "spec": s["model"],
+    table = pd.DataFrame([{"model": names[s["model"]], "spec": s["model"],
                            "valid points": s["valid_points"], "of": s["points"],
                            "largest |Err%|": s["max_abs_err_pct"], "RMSE [N]": s["rmse_N"],
                            "largest |residual| [N]": s["max_abs_residual_N"],
-                           "worst E_n": s["worst_E_n"], "at step": s["worst_step"],
+                           "worst E_n": s["worst_E_n"], "at step": _cell(s["worst_step"]),
                            "consistent": {True: "yes", False: "no"}.get(s["consistent"], "—"),
-                           "s per force": s["seconds_per_point"]} for s in r.summary])
+                           "time per force": format_seconds(s["seconds_per_point"])}
+                          for s in r.summary])
     parts += [
-        figure_html(fig_path, "Left: measured force per pressure step (mean ± std; filled "
-                    "circles up sweep, open squares down sweep) with each model and, where it "
-                    "has one, its ± 2 std band. Middle: Err% (Equation 7). Right: residual in "
-                    "N (solid up, dashed down). " + provenance_links(r.keys)),
+        figure_html(fig_path, "Left: measured force per pressure step (mean ± U, k = 2; "
+                    + ("filled circles up sweep, open squares down sweep"
+                       if (steps["direction"] == "down").any() else "the up sweep only")
+                    + ") with each model and, where it has one, its ± 2 u band. Middle: Err% "
+                    "(Equation 7). Right: residual in N"
+                    + (" (solid up, dashed down). " if (steps["direction"] == "down").any()
+                       else ". ") + provenance_links(r.keys)),
         table_html(table, f"Per model (files: {stem}_errors.csv, summary.csv). E_n = "
                    "(F_meas − F_model) / √(U_meas² + (c U_p)² + U_model²) per step, every U "
                    "expanded with k = 2 (c: the model's newtons per bar); consistent: |E_n| ≤ 1 "
                    "at every valid step. The models have no braid friction and no creep, the "
                    "measurement has both: a model can be inconsistent by them alone. "
-                   + provenance_links(r.keys), formats={"s per force": ".3g"}),
+                   + provenance_links(r.keys)),
         _budget_section(r, provenance_links(r.keys[:1])),
         _domain_note(r.scored, _pressure_tolerance(meta), names),
         _invalid_note(r.scored, names),
@@ -617,10 +632,10 @@ def _auto_pressures(r: _Run) -> np.ndarray:
     return np.where((P > top) & (P <= top + tol), top, P)
 
 
-def _auto_choice(r: _Run, tolerance: float):
-    """``(model, explanation)`` of ``auto`` for the whole run, or None (chosen once per run:
-    the summary and the run's section both show it)."""
-    from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain
+def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
+    """What ``auto`` picks for the whole run, or None (chosen once per run: the verdict, the
+    summary and the run's section all show it)."""
+    from mkm.auto import MODEL_ERRORS_FILE, AutoModel, explain, spec_of
     from mkm.registry import build_spec
 
     if tolerance not in r.auto_choices:
@@ -632,9 +647,47 @@ def _auto_choice(r: _Run, tolerance: float):
             auto = AutoModel(tolerance=tolerance,
                              build=partial(build_spec, calibration=r.calibration), **muscle)
             chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
-            choice = str(chosen["model_used"][0]), explain(chosen, tolerance)
+            used = str(chosen["model_used"][0])
+            choice = AutoPick(spec_of(used), model_label(used),
+                              float(np.nanmax(chosen["error_bound_pct"])),
+                              explain(chosen, tolerance, model_label))
         r.auto_choices[tolerance] = choice
     return r.auto_choices[tolerance]
+
+
+def _same_model(a: str, b: str) -> bool:
+    """Whether two specs build the same model (``eq2`` and ``eq2:diameter=inner`` do): same
+    entry and same parameters once built (the closed forms and the FE model build in
+    microseconds; a surrogate spec is compared by its text)."""
+    if a == b:
+        return True
+    try:
+        sa, sb = parse_spec(a), parse_spec(b)
+        if sa.name != sb.name or sa.name in ("surrogate", "auto"):
+            return False
+        ma, mb = sa.build(), sb.build()
+    except ValueError:
+        return False
+    return ma.params() == mb.params()
+
+
+def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
+    """The run's verdict sentence (:func:`mkm.verdict.verdict`) with auto's pick and the
+    measurement's distance from the report's FE model, if it has one."""
+    label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
+    choice = _auto_choice(r, tolerance) if tolerance and r.summary else None
+    best, _ = recommend(r.summary, tolerance)
+    same = bool(choice and best and _same_model(choice.spec, best["model"]))
+    by_name = {names[s.text]: s for s in r.specs}
+    if choice is not None and choice.name not in by_name:  # auto's pick is a report model
+        match = next((s for s in r.specs if _same_model(choice.spec, s.text)), None)
+        if match is not None:
+            choice = AutoPick(choice.spec, names[match.text], choice.bound_pct,
+                              choice.explanation)
+    fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
+          if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
+    return verdict(label, r.summary, names, tolerance, choice, same,
+                   fe[0] if fe else None, f"mkm identify {r.run.path}")
 
 
 def _auto_paragraph(r: _Run, tolerance: float) -> str:
@@ -643,7 +696,7 @@ def _auto_paragraph(r: _Run, tolerance: float) -> str:
     choice = _auto_choice(r, tolerance)
     if choice is None:
         return ""
-    lines = "<br>".join(esc(line) for line in choice[1].splitlines())
+    lines = "<br>".join(esc(line) for line in choice.explanation.splitlines())
     return (f"<p><b>Model choice for run {r.k}</b> (<code>--model auto --tolerance "
             f"{100 * tolerance:g}%</code>, one model for the whole run, each candidate's error "
             f"bound at this run's points and muscle):<br>{lines}.</p>")
@@ -685,15 +738,15 @@ def _surrogate_section(out: Path, prov: dict) -> str:
                          "seconds_per_point": seconds / max(len(points), 1)}
     prov["fe-reference"] = {"file": FE_REFERENCE.name, "header": _reference_header()}
     keys = ["surrogate", "fe-reference"]
-    fig_path = save_figure(surrogate_fe_figure(points, f"{model.name} against our FE model "
-                                               "(the paper's Figure 6)"),
-                           out / "surrogate_vs_fe.png")
+    title = f"{parse_spec('surrogate').display_name} against our FE model (the paper's Figure 6)"
+    fig_path = save_figure(surrogate_fe_figure(points, title), out / "surrogate_vs_fe.png")
     return head + "".join([
         table_html(result, "The paper's Table 3 with our numbers: largest |Err%| (Equation 7), "
                    "RMSE and largest error of the default surrogate against our FE model "
                    f"(I-III: the paper's muscles; others: off-grid muscles). All {len(points)} "
-                   f"points predicted in one call: {seconds / max(len(points), 1):.2g} s per "
-                   "force (the paper: 131 ms for 33, 4 ms per force). "
+                   "points predicted in one call: "
+                   f"{format_seconds(seconds / max(len(points), 1))} per force (the paper: "
+                   "131 ms for 33, 4 ms per force). "
                    + provenance_links(keys)),
         figure_html(fig_path, "FE forces (dots) and the surrogate (lines) per test muscle; "
                     "right: Err% per pressure. " + provenance_links(keys)),

@@ -12,11 +12,12 @@ and 2 predictive std, and whether every point just outside the box is flagged.
 from __future__ import annotations
 
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
-from mkm.core.records import provenance
+from mkm.core.records import provenance, write_atomic, write_json_atomic
 from mkm.fem.paper import equation7_err_pct
 from mkm.surrogate.coverage import coverage
 from mkm.surrogate.design import EVAL_PRESSURES, MUSCLE_PARAMETERS, fe_sweeps, random_muscles
@@ -116,3 +117,13 @@ def outside_box_check(model: SurrogateForceModel, muscle) -> dict:
             n += 1
             flagged += int(not prediction.valid.all())
     return {"points": n, "flagged": flagged}
+
+
+def write_offgrid(points: pd.DataFrame, summary: dict, out) -> tuple[Path, Path]:
+    """:func:`evaluate_offgrid`'s points and summary as ``offgrid_points.csv`` and
+    ``offgrid_summary.json`` in the folder ``out``, written atomically."""
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    csv = write_atomic(out / "offgrid_points.csv",
+                       points.to_csv(index=False, float_format="%.6g", lineterminator="\n"))
+    return csv, write_json_atomic(out / "offgrid_summary.json", summary)

@@ -16,6 +16,7 @@ from pathlib import Path
 
 from threadpoolctl import threadpool_limits
 
+from mkm.core.durations import timed
 from mkm.core.home import user_cache
 from mkm.core.records import file_sha256, provenance
 from mkm.surrogate.coverage import coverage
@@ -123,6 +124,12 @@ def default_cache_dir() -> Path:
     return user_cache("surrogate")
 
 
+def training_task(kind: str, dataset=DEFAULT_DATASET) -> str:
+    """The name under which :mod:`mkm.core.durations` keeps how long training ``kind`` on
+    ``dataset`` took."""
+    return f"surrogate-training-{kind}-{Path(dataset).stem}"
+
+
 def is_cached(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
               splits: int = MUSCLE_SPLITS) -> bool:
     """Whether :func:`cached_model` would load ``kind`` rather than train it (callers name the
@@ -158,7 +165,8 @@ def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
                     return load_model(directory)
                 except (Warning, ValueError):
                     pass
-        model = train_surrogate(kind, dataset, splits=splits, progress=progress)
+        with timed(training_task(kind, dataset)):  # the next first-use promise is this machine's
+            model = train_surrogate(kind, dataset, splits=splits, progress=progress)
         save_model(model, directory, lock=nullcontext())  # this lock is held already
     return model
 

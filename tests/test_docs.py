@@ -2,10 +2,14 @@
 public function and class of ``mkm``, ``mkm.fem``, ``mkm.bench`` and ``mkm.surrogate`` has a page
 in its API reference."""
 
+import ast
 import importlib
 import inspect
+import os
+import re
 import subprocess
 import sys
+from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
@@ -42,17 +46,113 @@ def test_every_public_module_of_the_four_packages_is_walked():
             "mkm.surrogate.kinds", "mkm.cli.fem", "mkm.registry"} <= set(modules)
 
 
-@pytest.mark.slow
-def test_the_site_builds_with_warnings_as_errors_and_documents_every_public_name(tmp_path):
+@pytest.fixture(scope="module")
+def site(tmp_path_factory):
+    """The site built once for the tests below (``make docs``'s command, every page rebuilt)."""
     pytest.importorskip("sphinx", reason="the docs extra is not installed (pip install .[docs])")
-    from sphinx.util.inventory import InventoryFile
-
-    html = tmp_path / "html"
+    html = tmp_path_factory.mktemp("site") / "html"
     done = subprocess.run(
         [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-E", "-q", "-b", "html",
          str(DOCS), str(html)], capture_output=True, text=True, timeout=900,
-        env={**__import__("os").environ, "MPLBACKEND": "Agg"})
+        env={**os.environ, "MPLBACKEND": "Agg"})
     assert done.returncode == 0, done.stderr[-4000:]
+    return html
+
+
+def _pages(html: Path):
+    """The rendered pages: the built site's HTML without viewcode's source listings (which
+    show docstrings as written, roles included)."""
+    return [p for p in html.rglob("*.html") if "_modules" not in p.parts]
+
+
+class _Assets(HTMLParser):
+    """What a page loads: the ``src`` of scripts and images, the ``href`` of links."""
+
+    def __init__(self):
+        super().__init__()
+        self.loaded: list[str] = []
+        self.text: list[str] = []
+        self._skip = 0
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag in ("script", "img", "iframe") and attrs.get("src"):
+            self.loaded.append(attrs["src"])
+        if tag == "link" and attrs.get("href"):
+            self.loaded.append(attrs["href"])
+        if tag in ("script", "style"):
+            self._skip += 1
+
+    def handle_endtag(self, tag):
+        if tag in ("script", "style"):
+            self._skip -= 1
+
+    def handle_data(self, data):
+        if not self._skip:
+            self.text.append(data)
+
+
+def _parse(page: Path) -> _Assets:
+    parser = _Assets()
+    parser.feed(page.read_text(encoding="utf-8"))
+    return parser
+
+
+@pytest.mark.slow
+def test_the_site_loads_nothing_from_outside_and_ships_its_math_renderer(site):
+    """A lab PC without internet shows every page whole: no script, style, font or image is
+    fetched from another host (MathJax is served from the site itself)."""
+    outside = {(p.relative_to(site).as_posix(), url) for p in _pages(site)
+               for url in _parse(p).loaded if re.match(r"(https?:)?//", url)}
+    assert not outside, sorted(outside)[:10]
+    page = (site / "_generated" / "api" / "mkm.fem.eq2.html").read_text(encoding="utf-8")
+    scripts = re.findall(r'<script[^>]*src="([^"]*mathjax[^"]*)"', page)
+    assert scripts, "no MathJax on the page of Equation 2"
+    local = (site / "_generated" / "api" / scripts[0].split("?")[0]).resolve()
+    assert local.is_file() and local.stat().st_size > 100_000  # the renderer, not a stub
+
+
+def _defines_public_names(module_name: str) -> bool:
+    """Whether a module defines anything public at its top level (a function, a class or an
+    assigned name without a leading underscore)."""
+    source = getattr(importlib.import_module(module_name), "__file__", None)
+    if not source or not source.endswith(".py"):
+        return False
+    tree = ast.parse(Path(source).read_text(encoding="utf-8"))
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef):
+            names = [node.name]
+        elif isinstance(node, ast.Assign):
+            names = [t.id for t in node.targets if isinstance(t, ast.Name)]
+        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
+            names = [node.target.id]
+        else:
+            continue
+        if any(not n.startswith("_") for n in names):
+            return True
+    return False
+
+
+@pytest.mark.slow
+def test_every_module_page_lists_its_members_and_no_role_shows_raw(site):
+    api = site / "_generated" / "api"
+    empty = [m for m in _generate().all_modules() if _defines_public_names(m)
+             and '<dl class="py' not in (api / f"{m}.html").read_text(encoding="utf-8")]
+    assert not empty, f"API pages without members: {empty}"
+    raw = {}
+    for page in _pages(site):
+        found = re.findall(r":(?:class|func|meth|mod|data|attr|exc|ref|doc|math):`[^`]*`",
+                           "".join(_parse(page).text))
+        if found:
+            raw[page.relative_to(site).as_posix()] = found[:3]
+    assert not raw, f"raw roles in rendered text: {raw}"
+
+
+@pytest.mark.slow
+def test_the_site_builds_with_warnings_as_errors_and_documents_every_public_name(site):
+    from sphinx.util.inventory import InventoryFile
+
+    html = site
     for page in ("index", "getting-started", "validation", "developer", "whats-new",
                  "guide/force-models", "guide/bench", "_generated/examples/index",
                  "_generated/api/index"):
@@ -84,3 +184,18 @@ def _items(entries):
             yield name, (item.project_name, item.project_version, item.uri, item.display_name)
         else:
             yield name, tuple(item)
+
+
+def test_recorded_commands_hold_paths_relative_to_the_repository():
+    """The measured results the docs show name the command that measured them as anyone types
+    it in a checkout: no absolute path of the machine that ran it."""
+    import json
+
+    records = sorted((DOCS / "measured").glob("*.json"))
+    assert records
+    for path in records:
+        command = json.loads(path.read_text(encoding="utf-8")).get("command", "")
+        absolute = [t for t in command.split() if t.startswith("/") or re.match(r"[A-Za-z]:", t)]
+        assert not absolute, f"{path.name}: {command}"
+    generate = _generate()
+    assert "{out}" in generate.BENCHMARKS["batch.json"]  # the writer fills in relative paths

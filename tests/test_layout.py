@@ -44,3 +44,22 @@ def test_every_application_module_is_in_a_layer():
     modules |= {p.parent.name for p in (ROOT / "mkm").glob("*/__init__.py")}
     modules |= {name.split(".")[1] for name in _package_dir() if name.count(".") == 1}
     assert modules == named
+
+
+def test_build_outputs_are_ignored_and_installs_are_quiet():
+    """``python -m pip wheel -w dist .`` (getting started) leaves nothing for git to show, and
+    the Makefile's editable installs (``make docs`` among them) print no setuptools banner: the
+    banner is a UserWarning of the build backend, which inherits the environment."""
+    import shutil
+    import subprocess
+
+    ignored = (ROOT / ".gitignore").read_text(encoding="utf-8").splitlines()
+    assert "dist/" in ignored and "build/" in ignored
+    if shutil.which("make") is None:
+        return
+    lines = subprocess.run(["make", "-n", "-B", ".venv/.installed-docs", ".venv/.installed",
+                            ".venv/.installed-test"], cwd=ROOT, capture_output=True, text=True,
+                           check=True, timeout=60).stdout.splitlines()
+    installs = [line for line in lines if "pip install" in line and " -e " in line]
+    assert len(installs) == 3
+    assert all(line.startswith("PYTHONWARNINGS=ignore::UserWarning ") for line in installs)

@@ -2,7 +2,7 @@
 one library function.
 
 Bad input (a ``ValueError`` from the library or a malformed argument) prints one line
-``mkm: error: ...`` and exits with status 2, without a traceback.
+``mkm <command>: error: ...`` and exits with status 2, without a traceback.
 """
 
 from __future__ import annotations
@@ -24,6 +24,7 @@ from mkm.cli import (
     surrogate,
     validation,
 )
+from mkm.cli.common import command_name, error_line, remember_command, say
 
 
 class _Version(argparse.Action):
@@ -46,13 +47,22 @@ class _Parser(argparse.ArgumentParser):
         # only treats plain negative numbers so and has no public setting for it
         self._negative_number_matcher = re.compile(r"^-\.?\d")
 
+    def parse_known_args(self, args=None, namespace=None):
+        namespace, rest = super().parse_known_args(args, namespace)
+        remember_command(namespace, self.prog)
+        return namespace, rest
+
     def error(self, message):  # one line, no usage dump
-        self.exit(2, f"{self.prog}: error: {message}\n")
+        self.exit(2, error_line(self.prog, message) + "\n")
 
 
-def _note(message, category, filename, lineno, file=None, line=None) -> None:
-    """A warning as a user reads it: one line, no source path (the library's own words)."""
-    print(f"mkm: note: {message}", file=sys.stderr)
+def _notes(args):
+    """Warnings as a user reads them: one line, no source path (the library's own words)."""
+
+    def show(message, category, filename, lineno, file=None, line=None) -> None:
+        say(args, "note", message)
+
+    return show
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -78,16 +88,16 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     try:
         with warnings.catch_warnings():
-            warnings.showwarning = _note
+            warnings.showwarning = _notes(args)
             return int(args.func(args) or 0)
     except ValueError as exc:
-        print(f"mkm: error: {exc}", file=sys.stderr)
+        say(args, "error", exc)
         return 2
     except BrokenPipeError:  # `mkm ... | head`: the reader left, which is not an error
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
     except KeyboardInterrupt:
-        print("mkm: interrupted", file=sys.stderr)
+        print(f"{command_name(args)}: interrupted", file=sys.stderr)
         return 130
 
 

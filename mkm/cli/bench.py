@@ -1,7 +1,7 @@
 """``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess``: argument parsing only.
 
 Hardware failures (:class:`mkm.bench.backend.BenchError`, a bench another process holds
-included) print one line ``mkm: error: ...`` and exit with status 1; bad input is a
+included) print one line ``mkm <command>: error: ...`` and exit with status 1; bad input is a
 ``ValueError`` (status 2, handled by ``mkm.cli.main``). ``mkm acquire`` exits with
 :attr:`mkm.bench.run.RunResult.exit_code` (0 complete, 3 complete with lost samples, 128 + N
 after signal N, 2 when the disk failed, 4 when the vent could not be verified, 1 otherwise) and
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sys
 
-from mkm.cli.common import argtype, has_display
+from mkm.cli.common import add_progress_argument, argtype, has_display, say, shared_help
 from mkm.core.ranges import parse_fraction, parse_number, parse_pressures
 from mkm.paths import default_out
 
@@ -45,7 +45,8 @@ def _add_device_arguments(parser, clock: bool = True) -> None:
     from mkm.bench.backends import BACKENDS
 
     parser.add_argument("--config", help="bench TOML file (default: the packaged example "
-                        "paper_prototype.toml, the paper's prototype on the simulated bench)")
+                        "paper_prototype.toml, the paper's prototype on the simulated bench; "
+                        "`mkm check --example my_bench.toml` writes it for editing)")
     parser.add_argument("--backend", choices=BACKENDS.names(), default=None,
                         help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.entries())
                         + " (default: the config's [daq] backend)")
@@ -70,15 +71,13 @@ def register(subparsers) -> None:
         epilog="example: mkm acquire --backend sim --eps 12.2% --out mkm-out/runs")
     _add_device_arguments(acquire)
     acquire.add_argument("--eps", type=argtype(parse_fraction),
-                         help="shortening ratio, fraction or percent (default: from the config)")
+                         help=shared_help("--eps", "default: the config's"))
     acquire.add_argument("--pressures", type=argtype(parse_pressures),
-                         help="start:stop:step in bar or a comma list (default: from the config)")
+                         help=shared_help("--pressures", "default: the config's"))
     acquire.add_argument("--out", default=str(default_out("runs")),
                          help="folder that receives the run folder (default %(default)s)")
     acquire.add_argument("--plot", action="store_true", help="live plot in a separate window")
-    acquire.add_argument("--no-progress", action="store_true",
-                         help="no progress (default: a bar on a terminal, else a status line "
-                         "every 10 s)")
+    add_progress_argument(acquire)
     acquire.add_argument("--allow-past-lock", action="store_true",
                          help="record even with eps past the braid lock (refused otherwise)")
     acquire.set_defaults(func=_acquire)
@@ -115,10 +114,17 @@ def register(subparsers) -> None:
         description="Dry run: validate the config against the USB-6001 (channels, terminal "
         "configuration, rates, ranges), open the device, print the limits, the planned steps "
         "and the expected duration; warns past the braid lock; nothing is pressurised.",
-        epilog="example: mkm check --backend ni --config my_bench.toml")
+        epilog="example: mkm check --backend ni --config my_bench.toml; a config to edit: "
+        "mkm check --example my_bench.toml")
     _add_device_arguments(check, clock=False)
-    check.add_argument("--eps", type=argtype(parse_fraction), help="shortening ratio override")
-    check.add_argument("--pressures", type=argtype(parse_pressures), help="pressures override")
+    check.add_argument("--example", nargs="?", const="-", metavar="FILE",
+                       help="write the packaged example configuration into FILE to edit it "
+                       "(mkm check --example my_bench.toml; an existing FILE is kept), or "
+                       "print it when no FILE is given")
+    check.add_argument("--eps", type=argtype(parse_fraction),
+                       help=shared_help("--eps", "default: the config's"))
+    check.add_argument("--pressures", type=argtype(parse_pressures),
+                       help=shared_help("--pressures", "default: the config's"))
     check.set_defaults(func=_check)
 
     vent = subparsers.add_parser(
@@ -146,8 +152,8 @@ def register(subparsers) -> None:
     rep.set_defaults(func=_reprocess)
 
 
-def _failed(exc: Exception) -> int:  # a mkm.bench.backend.BenchError
-    print(f"mkm: error: {exc}", file=sys.stderr)
+def _failed(args, exc: Exception) -> int:  # a mkm.bench.backend.BenchError
+    say(args, "error", exc)
     return EXIT_FAILED
 
 
@@ -165,22 +171,22 @@ def _acquire(args) -> int:
     check_out_root(args.out)  # bad --out: one line, exit 2, before the device is opened
     plot = args.plot
     if plot and not has_display():
-        print("mkm: warning: --plot needs a display and none is set (DISPLAY and "
-              "WAYLAND_DISPLAY are empty): recording without the live plot", file=sys.stderr)
+        say(args, "warning", "--plot needs a display and none is set (DISPLAY and "
+            "WAYLAND_DISPLAY are empty): recording without the live plot")
         plot = False
     try:
         result = acquire(config, clock=args.clock, out_root=args.out,
                          progress=not args.no_progress, plot=plot,
                          allow_past_lock=args.allow_past_lock)
     except BenchError as exc:  # the bench is held by another process: nothing was touched
-        return _failed(exc)
+        return _failed(args, exc)
     simulated = " SIMULATED" if config.simulated else ""
     if result.path is None:
-        print(f"mkm: error:{simulated} {result.reason}", file=sys.stderr)
+        say(args, "error", f"{simulated.strip()} {result.reason}".strip())
         return result.exit_code
     print(f"run{simulated} {result.status}: {result.reason}", file=sys.stderr)
     if result.manual_vent_required:
-        print("mkm: VENT THE MUSCLE BY HAND NOW: the vent was not verified", file=sys.stderr)
+        say(args, "error", "VENT THE MUSCLE BY HAND NOW: the vent was not verified")
     print(result.path, flush=True)
     return result.exit_code
 
@@ -192,7 +198,7 @@ def _tare(args) -> int:
     try:
         out = tare(_config(args), clock=args.clock, seconds=args.seconds)
     except BenchError as exc:
-        return _failed(exc)
+        return _failed(args, exc)
     print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
           f"{out['std_N']:.2f} N, n = {out['n']}); {out['shift_from_config_N']:+.2f} N from the "
           "config's offset_V")
@@ -222,7 +228,7 @@ def _calibrate_loadcell(args) -> int:
             out = calibrate_loadcell(config, args.masses, clock=args.clock,
                                      seconds=args.seconds)
         except BenchError as exc:
-            return _failed(exc)
+            return _failed(args, exc)
     # stdout: the block to paste into the config; stderr: the fit, for the operator
     print(f"sensitivity_N_per_V = {out['sensitivity_N_per_V']:.4f}, offset_V = "
           f"{out['offset_V']:.5f} (R^2 {out['r_squared']:.6f}, largest residual "
@@ -235,14 +241,24 @@ def _check(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import check
 
+    if args.example:
+        from mkm.bench.config import copy_example_config, example_config
+
+        if args.example == "-":
+            sys.stdout.write(example_config().read_text("utf-8"))
+        else:
+            print(copy_example_config(args.example), flush=True)
+        say(args, "note", f"the packaged example {example_config()}: set [daq] device and "
+            "backend, the load cell's sensitivity, the regulator and the limits")
+        return 0
     config = _config(args, eps=args.eps, pressures_bar=args.pressures)
     try:
         text, warnings = check(config)
     except BenchError as exc:
-        return _failed(exc)
+        return _failed(args, exc)
     print(text)
     for warning in warnings:  # once, on stderr only
-        print(f"mkm: warning: {warning}", file=sys.stderr)
+        say(args, "warning", warning)
     return 0
 
 
@@ -253,7 +269,7 @@ def _vent(args) -> int:
     try:
         out = vent(_config(args), clock=args.clock)
     except BenchError as exc:
-        print(f"mkm: error: {exc}; VENT BY HAND", file=sys.stderr)
+        say(args, "error", f"{exc}; VENT BY HAND")
         return EXIT_FAILED
     if out["manual"]:
         print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "

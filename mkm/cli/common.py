@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import io
 import os
+import re
 import sys
 
 from mkm.core.ranges import parse_fraction, parse_number, parse_pressures
@@ -25,6 +26,58 @@ def has_display() -> bool:
     return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
 
 
+def command_name(args) -> str:
+    """``mkm <command>`` of the parsed ``args`` (``mkm fem solve``): the prefix of every line
+    the command prints on stderr (set by the parser, :func:`remember_command`)."""
+    return getattr(args, "_mkm_command", None) or "mkm"
+
+
+def remember_command(namespace, prog: str) -> None:
+    """Record the deepest (sub)command's name in ``namespace``: called by each parser after it
+    parsed, the innermost first, so the innermost name stays."""
+    if not getattr(namespace, "_mkm_command", None):
+        namespace._mkm_command = prog
+
+
+def error_line(prog: str, message) -> str:
+    """``mkm <command>: error: <message>``, the one form of every error; argparse's
+    ``argument --eps: --eps 12.2: ...`` is said once: ``--eps 12.2: ...``."""
+    message = str(message)
+    found = re.match(r"argument (\S+?)(?:/\S+)?: (.*)", message, re.DOTALL)
+    if found and found.group(2).startswith(found.group(1)):
+        message = found.group(2)
+    return f"{prog}: error: {message}"
+
+
+#: The flag that sets a checked quantity: a library's ``D0_mm=-1 is invalid: ...`` about a
+#: value the user typed as ``--D0 -1`` is said about the flag.
+FLAGS = {"D0_mm": ("--D0", "D0"), "t0_mm": ("--t0", "t0"), "L0_mm": ("--L0", "L0"),
+         "eps": ("--eps", "eps"), "muscle.eps": ("--eps", "eps"),
+         "theta0_deg": ("--theta0", "theta0"), "tolerance": ("--tolerance", "tolerance")}
+
+
+def name_the_flag(args, message) -> str:
+    """``message`` about a quantity the command line set, said about its flag:
+    ``D0_mm=-1 is invalid: expected ...`` -> ``--D0 -1: expected ...`` (unchanged when the
+    value came from elsewhere: a config file, a model spec)."""
+    message = str(message)
+    found = re.match(r"([\w.]+)=(\S+) is invalid: (.*)", message, re.DOTALL)
+    if not found or found.group(1) not in FLAGS:
+        return message
+    flag, dest = FLAGS[found.group(1)]
+    if getattr(args, dest, None) is None:
+        return message
+    return f"{flag} {found.group(2)}: {found.group(3)}"
+
+
+def say(args, kind: str, message) -> None:
+    """One line on stderr: ``mkm <command>: <kind>: <message>`` (``error``, ``warning``,
+    ``note``)."""
+    line = (error_line(command_name(args), name_the_flag(args, message)) if kind == "error"
+            else f"{command_name(args)}: {kind}: {message}")
+    print(line, file=sys.stderr)
+
+
 def argtype(parse, *args):
     """Wrap a ``mkm.core.ranges`` parser for argparse, keeping its one-line message."""
 
@@ -36,6 +89,32 @@ def argtype(parse, *args):
 
     convert.__name__ = parse.__name__
     return convert
+
+
+#: One description per option that several commands take, so ``--help`` says the same thing
+#: everywhere; a command adds only its default (``shared_help("--eps", "default: ...")``).
+SHARED_HELP = {
+    "--no-progress": "no progress on stderr: neither the bar (on a terminal) nor the status "
+                     "lines (in a log or a pipe); the summary line and the result's path stay",
+    "--eps": "shortening ratio, a fraction (0.05) or a percentage (5%%)",
+    "--pressures": "pressures in bar: start:stop:step (stop included) or a comma list",
+    "--D0": "inner tube diameter [mm]",
+    "--t0": "wall thickness [mm]",
+    "--L0": "muscle length at rest [mm]",
+    "--theta0": "braid angle at rest [deg]",
+}
+
+
+def shared_help(option: str, extra: str = "") -> str:
+    """The one description of ``option`` (:data:`SHARED_HELP`), with ``extra`` (a command's
+    default) in brackets."""
+    return SHARED_HELP[option] + (f" ({extra})" if extra else "")
+
+
+def add_progress_argument(parser) -> None:
+    """``--no-progress``, described once for every command."""
+    parser.add_argument("--no-progress", action="store_true",
+                        help=shared_help("--no-progress"))
 
 
 def add_batch_arguments(parser) -> None:
@@ -60,11 +139,11 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
                         "default %(default)s")
     if theta0:
         parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
-                            help="braid angle at rest [deg] (default: calibrated)")
+                            help=shared_help("--theta0", "default: calibrated"))
     parser.add_argument("--diameter", choices=choices("eq2", "diameter"),
                         help="eq2 only: diameter convention (default inner, as the paper)")
     parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
-                        help="muscle length at rest [mm] (default 282)")
+                        help=shared_help("--L0", "default 282"))
     parser.add_argument("--mesh", choices=choices("axisym", "mesh"),
                         help="axisym only: FE mesh level (default medium)")
     parser.add_argument("--braid", choices=choices("axisym", "braid"),
@@ -103,20 +182,20 @@ def with_calibration(func):
 def add_muscle_arguments(parser, length: bool = False) -> None:
     """``--D0``, ``--t0``, ``--eps`` (and ``--L0`` with ``length``), all required."""
     parser.add_argument("--D0", required=True, type=argtype(parse_number, "--D0"),
-                        help="inner tube diameter [mm]")
+                        help=shared_help("--D0"))
     parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0"),
-                        help="wall thickness [mm]")
+                        help=shared_help("--t0"))
     if length:
         parser.add_argument("--L0", required=True, type=argtype(parse_number, "--L0"),
-                            help="length at rest [mm]")
+                            help=shared_help("--L0"))
     parser.add_argument("--eps", required=True, type=argtype(parse_fraction),
-                        help="shortening ratio, a fraction (0.05) or a percentage (5%%)")
+                        help=shared_help("--eps"))
 
 
 def add_geometry_arguments(parser) -> None:
     add_muscle_arguments(parser)
     parser.add_argument("--pressures", default="0:2.5:0.25", type=argtype(parse_pressures),
-                        help="start:stop:step in bar (stop included) or a comma list")
+                        help=shared_help("--pressures", "default 0:2.5:0.25"))
 
 
 def model_from_args(args, **overrides):

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import time
 
+from mkm.cli.common import add_progress_argument
+
 
 def register(subparsers) -> None:
     demo = subparsers.add_parser(
@@ -16,8 +18,7 @@ def register(subparsers) -> None:
         "report.html)")
     demo.add_argument("--out", help="folder for runs/ and report/ (default: mkm-out/demo, or "
                       "$MKM_OUT/demo)")
-    demo.add_argument("--no-progress", action="store_true",
-                      help="no progress bars on stderr (also off when stderr is not a terminal)")
+    add_progress_argument(demo)
     demo.set_defaults(func=_demo)
 
 

@@ -8,8 +8,10 @@ from pathlib import Path
 from mkm.cli.common import (
     add_batch_arguments,
     add_calibration_argument,
+    add_progress_argument,
     argtype,
     choices,
+    shared_help,
     with_calibration,
 )
 from mkm.core.ranges import parse_number
@@ -64,13 +66,13 @@ def register(subparsers) -> None:
     p.add_argument("--spec", metavar="FILE", help="TOML spec: [[requirement]] tables "
                    "(force_N, pressure_bar, eps), [constraints], objective, top; the flags "
                    "add requirements and override the rest")
-    for flag, key, what in (("--D0", "D0_mm", "inner diameter [mm] (default: the surrogate's "
-                             "training box)"),
-                            ("--t0", "t0_mm", "wall thickness [mm] (default: the surrogate's "
-                             "training box)"),
-                            ("--L0", "L0_mm", "length at rest [mm] (default 282)"),
-                            ("--theta0", "theta0_deg", "braid angle at rest [deg] (default: "
-                             "the calibration)")):
+    for flag, key, what in (("--D0", "D0_mm", shared_help("--D0", "default: the surrogate's "
+                                                          "training box")),
+                            ("--t0", "t0_mm", shared_help("--t0", "default: the surrogate's "
+                                                          "training box")),
+                            ("--L0", "L0_mm", shared_help("--L0", "default 282")),
+                            ("--theta0", "theta0_deg", shared_help("--theta0", "default: the "
+                                                                   "calibration"))):
         p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag), metavar="V|LO:HI",
                        help=f"{what}: a value or a range low:high")
     p.add_argument("--rubber", help="wall material(s), comma list: calibrated (default: the "
@@ -105,7 +107,7 @@ def register(subparsers) -> None:
     p.add_argument("--cache", metavar="DIR", help="FE predictions kept here, so a second run "
                    "is fast (default: the user cache, predictions/)")
     p.add_argument("--no-cache", action="store_true", help="solve every FE sweep; no cache")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
+    add_progress_argument(p)
     add_batch_arguments(p)
     p.set_defaults(func=with_calibration(_design))
 

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import sys
-from pathlib import Path
 
 from mkm.cli.common import (
     add_batch_arguments,
@@ -14,6 +13,7 @@ from mkm.cli.common import (
     argtype,
     emit_prediction,
     model_from_args,
+    shared_help,
     with_calibration,
 )
 from mkm.core.ranges import parse_fraction, parse_number
@@ -103,17 +103,17 @@ def register(subparsers) -> None:
         "degrees of freedom and seconds per mesh level; CSV, JSON and PNG under --out.",
         epilog="example: mkm fem convergence --D0 35 --t0 2.5 --eps 5% --pressure 2.5")
     conv.add_argument("--D0", default=35.0, type=argtype(parse_number, "--D0"),
-                      help="inner tube diameter [mm] (default: %(default)s, muscle I)")
+                      help=shared_help("--D0", "default: %(default)s, muscle I"))
     conv.add_argument("--t0", default=2.5, type=argtype(parse_number, "--t0"),
-                      help="wall thickness [mm] (default: %(default)s)")
+                      help=shared_help("--t0", "default: %(default)s"))
     conv.add_argument("--eps", default=0.05, type=argtype(parse_fraction),
-                      help="shortening ratio, fraction or percentage (default: %(default)s)")
+                      help=shared_help("--eps", "default: %(default)s"))
     conv.add_argument("--pressure", default=2.5, type=argtype(parse_number, "--pressure"),
                       help="pressure [bar] (default: %(default)s)")
     conv.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
-                      help="braid angle at rest [deg] (default: calibrated)")
+                      help=shared_help("--theta0", "default: calibrated"))
     conv.add_argument("--L0", default=282.0, type=argtype(parse_number, "--L0"),
-                      help="muscle length at rest [mm] (default: %(default)s)")
+                      help=shared_help("--L0", "default: %(default)s"))
     conv.add_argument("--out", default=str(default_out("fem-convergence")),
                       help="folder for the CSV, JSON and PNG (default: %(default)s)")
     add_calibration_argument(conv)
@@ -136,13 +136,15 @@ def _solve(args) -> int:
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     if model.name == "auto":
         from mkm.auto import explain
+        from mkm.verdict import model_label
 
-        print(explain(prediction), file=sys.stderr)
+        print(explain(prediction, label=model_label), file=sys.stderr)
     emit_prediction(prediction, args.out)
     return 0
 
 
 def _calibrate(args) -> int:
+    from mkm.bench.reference import calibration_reference
     from mkm.fem.calibration import (
         CALIBRATION_FILE,
         calibration_entry,
@@ -154,7 +156,7 @@ def _calibrate(args) -> int:
     from mkm.fem.paper import CASE_I_CSV
 
     args.reference = args.reference or str(CASE_I_CSV)
-    reference, name, sha256 = _load_reference(args.reference)
+    reference, name, sha256 = calibration_reference(args.reference)
     overrides = {}
     if "L0_mm" in reference and getattr(args, "L0", None) is None:
         lengths = reference["L0_mm"].unique()
@@ -191,37 +193,6 @@ def _calibrate(args) -> int:
                          strict=True):
         print(f"{p:g},{ref:.2f},{f:.2f}")
     return 0
-
-
-def _load_reference(path):
-    """The reference table of ``--reference``, its name and the SHA-256 of the file read.
-
-    A run folder gives its settled steps: the measured mean pressure and force of each step,
-    its direction, and the muscle from run.json.
-    """
-    from mkm.core.records import file_sha256
-    from mkm.fem.calibration import check_reference, read_reference
-
-    path = Path(path)
-    if not path.is_dir():
-        sha = file_sha256(path) if path.is_file() else None
-        return read_reference(path), path.name, sha
-    import pandas as pd
-
-    from mkm.bench.storage import load_run
-
-    run = load_run(path)
-    if "steps.csv is missing" in run.problems:
-        raise ValueError(f"run {path} has no steps.csv: expected its settled steps as the "
-                         "reference")
-    steps = run.steps[run.steps["settled"]]
-    muscle = run.meta.muscle
-    frame = pd.DataFrame({"pressure_bar": steps["pressure_bar_mean"],
-                          "force_N": steps["force_N_mean"], "direction": steps["direction"],
-                          "D0_mm": muscle.D0_mm, "t0_mm": muscle.t0_mm, "eps": muscle.eps,
-                          "L0_mm": muscle.L0_mm})
-    reference = check_reference(frame, f"run {path} (settled steps of steps.csv)")
-    return reference, f"run {path.name}", file_sha256(path / "steps.csv")
 
 
 def _dataset(args) -> int:

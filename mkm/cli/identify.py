@@ -4,7 +4,13 @@ from __future__ import annotations
 
 import sys
 
-from mkm.cli.common import add_batch_arguments, add_calibration_argument, with_calibration
+from mkm.cli.common import (
+    add_batch_arguments,
+    add_calibration_argument,
+    command_name,
+    say,
+    with_calibration,
+)
 from mkm.paths import default_out
 
 
@@ -46,10 +52,11 @@ def _identify(args) -> int:
     try:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
                           seed=args.seed, workers=args.workers, scheduler=args.scheduler,
-                          notify=lambda line: print(f"mkm: {line}", file=sys.stderr),
+                          notify=lambda line: print(f"{command_name(args)}: {line}",
+                                                      file=sys.stderr),
                           calibration=args.calibration)
     except RuntimeError as exc:  # a fit that failed: said, nothing written
-        print(f"mkm: error: identification failed: {exc}", file=sys.stderr)
+        say(args, "error", f"identification failed: {exc}")
         return 1
     out = Path(args.out) if args.out else default_out("identify", Path(args.runs[0]).name)
     files = result.write(out)

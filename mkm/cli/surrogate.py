@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import sys
 import time
 import warnings
 from pathlib import Path
@@ -11,9 +10,12 @@ from mkm.cli.common import (
     add_batch_arguments,
     add_calibration_argument,
     add_geometry_arguments,
+    add_progress_argument,
     argtype,
     choices,
     emit_prediction,
+    say,
+    shared_help,
     with_calibration,
 )
 from mkm.core.ranges import parse_number
@@ -102,7 +104,7 @@ def register(subparsers) -> None:
     ref.add_argument("--model", default="axisym", help="FE model (default %(default)s)")
     ref.add_argument("--mesh", help="mesh level of the FE model (default: its own)")
     ref.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
-                     help="braid angle at rest [deg] (default: calibrated)")
+                     help=shared_help("--theta0", "default: calibrated"))
     ref.add_argument("--out", default=str(default_out("surrogate-reference",
                                                       "fe_test_muscles.csv")),
                      help="CSV to write (default %(default)s)")
@@ -172,9 +174,7 @@ def register(subparsers) -> None:
     for command in (grid, train, predict, test, ref, design, evaluate):
         # the default braid angle of a surrogate, and the FE's, come from the calibration
         add_calibration_argument(command)
-        command.add_argument("--no-progress", action="store_true",
-                             help="no progress bar on stderr (none either when stderr is not "
-                             "a terminal)")
+        add_progress_argument(command)
         command.set_defaults(func=with_calibration(command.get_default("func")))
     _accept_argument(predict)
 
@@ -187,9 +187,9 @@ def _sub_box(text: str) -> dict:
 
 def _parameter_arguments(parser) -> None:
     parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
-                        help="muscle length at rest [mm] (default 282)")
+                        help=shared_help("--L0", "default 282"))
     parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
-                        help="braid angle at rest [deg] (default: calibrated)")
+                        help=shared_help("--theta0", "default: calibrated"))
     parser.add_argument("--C10", type=argtype(parse_number, "--C10"),
                         help="rubber Mooney-Rivlin C10 [MPa] (default Silastic S, 0.0694)")
     parser.add_argument("--C01", type=argtype(parse_number, "--C01"),
@@ -272,7 +272,7 @@ def _predict(args) -> int:
                       C01_MPa=args.C01)
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
-        print(f"mkm: warning: {w.message}", file=sys.stderr)
+        say(args, "warning", w.message)
     emit_prediction(prediction, args.out)
     summary_line("surrogate predict", f"{prediction.force_N.size} points of {model.name} in "
                  f"{1e3 * prediction.seconds:.2f} ms, {int((~prediction.valid).sum())} flagged "
@@ -309,8 +309,6 @@ def _figure6(out: Path, reference) -> None:
     from mkm.html import save_figure
 
     points = pd.read_csv(out / "test_muscles_points.csv")
-    points = points.rename(columns={"force_pred_N": "force_N"})
-    points["err_pct"] = points["err_pct"].where(points["valid"])
     fe_model = read_prediction_header(reference).get("model", "FE")
     save_figure(surrogate_fe_figure(points, f"surrogates against our FE model ({fe_model}): "
                                     "the paper's Figure 6"), out / "test_muscles.png")
@@ -359,8 +357,7 @@ def _design(args) -> int:
 
 
 def _evaluate(args) -> int:
-    from mkm.core.records import write_json_atomic
-    from mkm.surrogate.offgrid import evaluate_offgrid
+    from mkm.surrogate.offgrid import evaluate_offgrid, write_offgrid
 
     start = time.perf_counter()
     model = _load(args.model, args.calibration, args.accept_mismatch, not args.no_progress)
@@ -368,9 +365,7 @@ def _evaluate(args) -> int:
                                        args.cache, progress=not args.no_progress,
                                        scheduler=args.scheduler)
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    points.to_csv(out / "offgrid_points.csv", index=False, float_format="%.6g")
-    write_json_atomic(out / "offgrid_summary.json", summary)
+    write_offgrid(points, summary, out)
     cover = (f", within 1/2 std {100 * summary['within_1std']:.0f}/"
              f"{100 * summary['within_2std']:.0f} %" if "within_1std" in summary else "")
     box = summary["outside_box"]

@@ -5,7 +5,12 @@ from __future__ import annotations
 import argparse
 import time
 
-from mkm.cli.common import add_batch_arguments, add_calibration_argument, with_calibration
+from mkm.cli.common import (
+    add_batch_arguments,
+    add_calibration_argument,
+    add_progress_argument,
+    with_calibration,
+)
 from mkm.core.ranges import parse_fraction
 
 
@@ -26,10 +31,11 @@ def register(subparsers) -> None:
                         "(default: %(default)s)")
     report.add_argument("--out", help="output folder (default: mkm-out/report/<first run name>)")
     report.add_argument("--tolerance", default=0.02, type=_fraction,
-                        help="tolerance of the auto model choice shown per run, e.g. 2%% "
-                        "(default: 2%%)")
+                        help="largest |Err%%| a model may have: the verdict names the cheapest "
+                        "model within it against the measurement, auto the cheapest within it "
+                        "against the FE model; e.g. 2%% (default: 2%%)")
     _cache_arguments(report)
-    _progress_argument(report)
+    add_progress_argument(report)
     add_calibration_argument(report)
     report.set_defaults(func=with_calibration(_report))
 
@@ -52,7 +58,7 @@ def register(subparsers) -> None:
                        "the paper's 54 nets too; cold, about 13 more minutes of training) "
                        "(default: muscle-gp,physics,mlp-paper)")
     _cache_arguments(study)
-    _progress_argument(study)
+    add_progress_argument(study)
     add_batch_arguments(study)
     study.set_defaults(func=_study)
 
@@ -65,11 +71,6 @@ def _cache_arguments(parser) -> None:
     parser.add_argument("--no-cache", action="store_true",
                         help="recompute every FE prediction and retrain the study's surrogates; "
                         "read and write no cache")
-
-
-def _progress_argument(parser) -> None:
-    parser.add_argument("--no-progress", action="store_true",
-                        help="no progress bar on stderr (also off when stderr is not a terminal)")
 
 
 def _kinds(text):

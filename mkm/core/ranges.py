@@ -17,8 +17,13 @@ MAX_RANGE_VALUES = 10_000
 
 
 def parse_number(text: str, name: str) -> float:
+    """A finite number; a decimal comma (``12,2``, as a European keyboard types it) is read as
+    a decimal point."""
+    cleaned = str(text).strip()
+    if cleaned.count(",") == 1 and "." not in cleaned:
+        cleaned = cleaned.replace(",", ".")
     try:
-        value = float(text)
+        value = float(cleaned)
     except (TypeError, ValueError):
         raise ValueError(f"{name}={text!r} is not a number") from None
     if not math.isfinite(value):
@@ -64,8 +69,21 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
 
 
 def parse_fraction(text: str, name: str = "--eps") -> float:
-    """A fraction (``0.05``) or a percentage (``5%``); both mean 0.05."""
+    """A fraction (``0.05``) or a percentage (``5%``, ``12,2%``); both mean 0.05.
+
+    A fraction must lie in [0, 1): ``12.2`` is a percentage typed without its sign, and the
+    message says so (``--eps 12.2: a fraction is expected; did you mean 12.2%?``).
+    """
     text = text.strip()
     if text.endswith("%"):
-        return parse_number(text[:-1], name) / 100.0
-    return parse_number(text, name)
+        value = parse_number(text[:-1], name) / 100.0
+        if not 0.0 <= value < 1.0:
+            raise ValueError(f"{name} {text}: a percentage in [0, 100) is expected")
+        return value
+    value = parse_number(text, name)
+    if 1.0 <= value < 100.0:
+        raise ValueError(f"{name} {text}: a fraction is expected; did you mean {text}%?")
+    if not 0.0 <= value < 1.0:
+        raise ValueError(f"{name} {text}: a fraction in [0, 1) or a percentage (5%) is "
+                         "expected")
+    return value

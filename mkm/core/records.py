@@ -28,7 +28,7 @@ import sys
 import time
 from functools import cache
 from importlib.util import resolve_name
-from pathlib import Path
+from pathlib import Path, PureWindowsPath
 from typing import Any
 
 from mkm.core.home import DISTRIBUTION, PACKAGE, package_version, user_cache
@@ -41,10 +41,24 @@ RECORDED_LIBRARIES = (DISTRIBUTION, "numpy", "scipy", "scikit-fem", "scikit-lear
 # imports this module and starts in well under a second only without them
 
 
+def command_line(argv: list[str] | None = None) -> str:
+    """The command as a user types it: ``mkm fem convergence --out docs/measured`` whether it ran
+    as the console script (``mkm``, ``mkm.exe``) or as ``python -m mkm`` (whose ``argv[0]`` is the
+    absolute path of ``mkm/__main__.py`` on the machine that ran it)."""
+    argv = list(sys.argv if argv is None else argv)
+    if argv:
+        first = PureWindowsPath(argv[0])  # either separator, on any system
+        if first.name == "__main__.py":
+            argv[0] = first.parent.name
+        elif first.stem == "mkm":
+            argv[0] = "mkm"
+    return " ".join(argv)
+
+
 def provenance() -> dict[str, Any]:
     """Library versions, command line, machine and UTC date, recorded with every generated file."""
     return {"date_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
-            "command": " ".join(sys.argv), "machine": platform.machine(),
+            "command": command_line(), "machine": platform.machine(),
             "versions": dict(_library_versions())}
 
 

@@ -97,9 +97,12 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, calibr
         notes.append(f"the surrogate has no gap between tube and braid: searched with {fe.name}")
     elif search == "surrogate":
         if surrogate is None:
+            from mkm.core.durations import estimate
             from mkm.surrogate import default_model
+            from mkm.surrogate.train import is_cached, training_task
 
-            notify("loading the surrogate (trained on first use: minutes)")
+            notify("loading the surrogate" if is_cached("best") else
+                   f"training the surrogate on first use, {estimate(training_task('best'))}")
             surrogate = default_model()
         source = SurrogateStatic(surrogate, L0_mm)
         outside = source.outside(runs)
@@ -147,9 +150,11 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, calibr
     single = [c["run"] for c in checks if "heldout" in c and len(
         {round(r.eps, 4) for r in runs if r.name != c["run"]}) == 1]
     if single and {"theta0_deg", "rubber_scale"} <= set(best.names):
-        notes.append(f"held out, {', '.join(single)} is predicted from runs at one eps, where "
-                     "theta0 and the rubber are confounded: its held-out error shows what one "
-                     "eps cannot tell, not the error of the fit to every run")
+        which = (f"run {single[0]} is" if len(single) == 1
+                 else f"runs {', '.join(single)} are each")
+        notes.append(f"when held out, {which} predicted from runs at a single eps, where theta0 "
+                     "and the rubber are confounded: the held-out error shows what one eps "
+                     "cannot tell, not the error of the fit to every run")
     return Identification(
         runs=runs, groups=groups, fit=best, bootstrap=boot, candidates=candidates,
         confirmation=confirmation, checks=checks, notes=notes, model=fe.name,

@@ -13,11 +13,11 @@ from mkm.bench.budget import (
     residual_std,
     step_budget,
 )
-from mkm.bench.config import load_config
+from mkm.bench.config import Step, load_config
 from mkm.bench.coverage import simulated_coverage
 from mkm.bench.procedures import check
 from mkm.bench.run import acquire
-from mkm.bench.sequence import HoldStats, Step
+from mkm.bench.sequence import HoldStats
 from mkm.bench.storage import STEP_COLUMNS, STEP_COLUMNS_UNBUDGETED, load_run
 
 

@@ -140,7 +140,7 @@ def test_a_cell_the_muscle_overloads_is_a_warning_from_check(tmp_path, mkm_cli):
     # Equation 2 at the braid lock's angle (the FE model's calibrated 33.0 deg): 662 N at
     # 2.5 bar, against an interlock at 270 N
     assert code == 0 and "warning" not in out
-    assert err.count("mkm: warning:") == 1
+    assert err.count("mkm check: warning:") == 1
     assert "develops about 662 N at 2.5 bar (Equation 2), beyond the force interlock at 270 N" \
         in err
 

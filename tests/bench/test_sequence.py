@@ -4,14 +4,9 @@ import numpy as np
 import pytest
 
 from mkm.bench import sequence as bench_sequence
+from mkm.bench.config import estimate_duration_s, plan_steps, step_count
 from mkm.bench.run import acquire
-from mkm.bench.sequence import (
-    TareInvalid,
-    estimate_duration_s,
-    plan_steps,
-    settle_reached,
-    validate_tare,
-)
+from mkm.bench.sequence import TareInvalid, settle_reached, validate_tare
 from mkm.bench.storage import load_run
 
 
@@ -24,6 +19,8 @@ def test_plan_up_down_repeats(config):
     assert [s.step for s in steps] == list(range(10))
     no_down = c.replace(sequence={"down_sweep": False, "repeats": 1})
     assert [s.set_pressure_bar for s in plan_steps(no_down)] == [0.5, 1.0, 1.5]
+    for each in (c, no_down, c.replace(sequence={"pressures_bar": (2.0,), "repeats": 3})):
+        assert step_count(each) == len(plan_steps(each))  # the configuration's own check
 
 
 def test_estimated_duration(config):

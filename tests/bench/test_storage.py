@@ -66,6 +66,8 @@ def test_reused_pid_does_not_look_alive(run_path):
 def test_not_a_run_folder(tmp_path):
     with pytest.raises(ValueError, match="is not a run folder: run.json is missing"):
         load_run(tmp_path)
+    with pytest.raises(ValueError, match="nope: no such folder$"):
+        load_run(tmp_path / "nope")
 
 
 def test_corrupt_run_json(run_path):

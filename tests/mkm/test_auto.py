@@ -15,6 +15,7 @@ from mkm.auto import MESH_SAFETY, STD_FACTOR, AutoModel, explain, read_model_err
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import make_model
 from mkm.registry import build_spec
+from mkm.verdict import model_label
 
 STD_N = 2.0
 # costs in s per force; the FE meshes' recorded |Err%| against the fine mesh
@@ -86,6 +87,9 @@ def test_the_cheapest_model_whose_bound_meets_the_tolerance_answers(table_path):
     np.testing.assert_array_equal(pred.force_N,
                                   make_model("thickwall").predict(P, 35.0, 2.5, 0.05).force_N)
     assert "|thickwall - surrogate| + 3 x the surrogate's calibrated std" in explain(pred)
+    # named as every table names it: the registry's label
+    assert explain(pred, label=model_label).startswith(
+        "auto: Thick-wall (Klute-Hannaford) for 3 of 3 points")
     # above Equation 2's bound, the cheaper one answers
     loose = auto(table_path, tolerance=min(0.99, 1.01 * eq2 / 100)).predict(P, 35.0, 2.5, 0.05)
     assert set(loose.extras["model_used"]) == {"eq2-braid"}

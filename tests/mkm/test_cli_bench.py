@@ -29,19 +29,23 @@ def test_acquire_prints_the_run_folder_last(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("argv, message", [
-    (["acquire", "--eps", "1.2"], "muscle.eps=1.2 is invalid"),
     (["acquire", "--pressures", "0:4:1"], "above regulator.max_pressure_bar=2.5"),
     (["acquire", "--config", "/nope.toml"], "config /nope.toml does not exist"),
 ])
 def test_bad_values_are_one_line(argv, message, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err
-    assert err.startswith("mkm: error:") and message in err and err.count("\n") == 1
+    assert err.startswith("mkm acquire: error:") and message in err and err.count("\n") == 1
 
 
 @pytest.mark.parametrize("argv, message", [
     (["calibrate-loadcell", "--masses", "0,-1"], "negative mass"),
     (["tare", "--seconds", "0"], "expected a duration > 0 s"),
+    # the flag named as typed, the fix suggested; a decimal comma is a decimal point
+    (["acquire", "--eps", "12.2"], "mkm acquire: error: --eps 12.2: a fraction is expected; "
+     "did you mean 12.2%?\n"),
+    (["check", "--eps", "12,2"], "mkm check: error: --eps 12,2: a fraction is expected; "
+     "did you mean 12,2%?\n"),
 ])
 def test_bad_arguments_are_one_line(argv, message, capsys):
     with pytest.raises(SystemExit) as exit_info:
@@ -135,13 +139,14 @@ def test_check_rejects_what_the_device_cannot_run(tmp_path, capsys, setting, mes
     config.write_text("\n".join(lines) + "\n")
     assert main(["check", "--config", str(config)]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("mkm: error: config ") and message in err and err.count("\n") == 1
+    assert err.startswith("mkm check: error: config ") and message in err and err.count("\n") == 1
 
 
 def test_check_warns_past_the_braid_lock(capsys):
     assert main(["check", "--eps", "0.4"]) == 0
     err = capsys.readouterr().err
-    assert "mkm: warning: eps 0.4 is past the braid lock" in err and "locking angle 54.7" in err
+    assert "mkm check: warning: eps 0.4 is past the braid lock" in err
+    assert "locking angle 54.7" in err
 
 
 @pytest.mark.parametrize("argv, message", [

@@ -36,7 +36,8 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
     lines = captured.out.splitlines()
     assert lines[0] == "pressure_bar,D0_mm,t0_mm,eps,force_N,valid,converged,in_domain"
     assert lines[-1].startswith("3,35,2.5,0.05,") and lines[-1].endswith(",False,True,False")
-    assert captured.err.startswith("mkm: warning: 1 of 7 points lie outside the training")
+    assert captured.err.startswith("mkm surrogate predict: warning: 1 of 7 points lie outside "
+                                   "the training")
 
     reference = tmp_path / "ref.csv"
     theta0 = str(calibrated("axisym")["theta0_deg"])  # the angle the fixture was built at
@@ -53,7 +54,8 @@ def test_bad_kind_is_a_one_line_error(thickwall_dataset, capsys):
     assert main(["surrogate", "train", "--dataset", str(thickwall_dataset), "--kind",
                  "forest"]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("mkm: error: unknown surrogate kind 'forest'") and err.count("\n") == 1
+    assert err.startswith("mkm surrogate train: error: unknown surrogate kind 'forest'")
+    assert err.count("\n") == 1
 
 
 def test_missing_dataset_is_a_one_line_error(tmp_path, capsys):
@@ -74,8 +76,8 @@ def test_predict_at_an_untrained_length_is_refused(thickwall_dataset, tmp_path, 
     assert main(["surrogate", "predict", "--model", str(model), "--D0", "35", "--t0", "2.5",
                  "--eps", "5%", "--L0", "150"]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("mkm: error: surrogate-physics was trained at L0_mm=282 only: "
-                          "L0_mm=150 refused") and err.count("\n") == 1
+    assert err.startswith("mkm surrogate predict: error: surrogate-physics was trained at "
+                          "L0_mm=282 only: L0_mm=150 refused") and err.count("\n") == 1
     spec = parse_spec(f"surrogate:path={model}")
     assert spec.build(L0_mm=282.0).params()["L0_mm"] == 282.0
     with pytest.raises(ValueError, match="L0_mm=150 refused"):

@@ -66,8 +66,8 @@ def test_models_that_agree_stay_two_lines():
                       _predictions("surrogate", same, [True] * 3)])
     fig = run_figure(STEPS, pred, "t", {"axisym": "FE", "surrogate": "Surrogate"},
                      {"axisym": "tab:green", "surrogate": "tab:red"})
-    lines = {line.get_label(): line for line in fig.axes[0].lines
-             if line.get_label() in ("FE", "Surrogate")}
+    lines = {line.get_label().split(" (")[0]: line for line in fig.axes[0].lines
+             if line.get_label().split(" (")[0] in ("FE", "Surrogate")}
     fe, sur = lines["FE"], lines["Surrogate"]
     assert (fe.get_linestyle(), fe.get_marker()) != (sur.get_linestyle(), sur.get_marker())
     assert fe.get_linewidth() > sur.get_linewidth()  # the one beneath shows around the other
@@ -83,4 +83,76 @@ def test_speed_chart_names_models_in_the_legend_only():
                               {"axisym": "tab:green", "surrogate": "tab:red"})
     ax = fig.axes[0]
     assert not ax.texts  # no labels beside the points: none can print over another
-    assert {t.get_text() for t in ax.get_legend().get_texts()} >= {"FE", "Surrogate"}
+    assert {t.get_text() for t in fig.legends[0].get_texts()} >= {"FE", "Surrogate"}
+    # the time axis in µs and ms, never 10^-5
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    FigureCanvasAgg(fig).draw()
+    ticks = [t.get_text() for t in ax.get_xticklabels() if t.get_text()]
+    assert "10.0 µs" in ticks and "10.0 ms" in ticks, ticks
+    assert not any("e-" in t or "^" in t for t in ticks)
+    assert not _overlaps(fig)
+
+
+def _overlaps(fig) -> list[str]:
+    """The axes a legend of ``fig`` covers (drawn extents in pixels)."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    legends = list(fig.legends) + [ax.get_legend() for ax in fig.axes if ax.get_legend()]
+    hits = []
+    for legend in legends:
+        box = legend.get_window_extent(renderer)
+        hits += [ax.get_title() for ax in fig.axes if box.overlaps(ax.get_window_extent(renderer))]
+    return hits
+
+
+def test_legends_stay_outside_the_data_and_list_only_what_is_drawn():
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    pred = pd.concat([_predictions("axisym", [100.0, 205.0, 100.0], [True] * 3),
+                      _predictions("eq2", [110.0, 230.0, 110.0], [True] * 3)])
+    fig = run_figure(STEPS, pred, "t", {"axisym": "FE", "eq2": "Equation 2"},
+                     {"axisym": "tab:green", "eq2": "tab:blue"})
+    FigureCanvasAgg(fig)
+    assert not _overlaps(fig)
+    texts = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "Err% and residual: down sweep" in texts
+    # an imported run without a down sweep: no "down sweep" in any legend
+    up = STEPS[STEPS["direction"] == "up"].reset_index(drop=True)
+    only_up = pred[pred["direction"] == "up"]
+    fig = run_figure(up, only_up, "t", {"axisym": "FE", "eq2": "Equation 2"},
+                     {"axisym": "tab:green", "eq2": "tab:blue"})
+    FigureCanvasAgg(fig)
+    texts = [t.get_text() for legend in fig.legends for t in legend.get_texts()]
+    assert not any("down" in t for t in texts), texts
+
+
+def test_coincident_models_are_named_identical_in_the_legend():
+    same = [100.0, 205.0, 100.0]
+    close = [100.05, 205.1, 100.05]  # within 0.1 % of 205 N
+    pred = pd.concat([_predictions("axisym", same, [True] * 3),
+                      _predictions("surrogate", close, [True] * 3),
+                      _predictions("eq2", [110.0, 230.0, 110.0], [True] * 3)])
+    names = {"axisym": "FE", "surrogate": "Surrogate", "eq2": "Equation 2"}
+    fig = run_figure(STEPS, pred, "t", names, {"axisym": "tab:green", "surrogate": "tab:red",
+                                              "eq2": "tab:blue"})
+    texts = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "Surrogate (identical to FE within 0.1 %)" in texts
+    assert "Equation 2" in texts and "FE" in texts
+
+
+def test_the_overlay_names_models_identical_on_every_run():
+    from mkm.figures import overlay_figure
+
+    same = [100.0, 205.0, 100.0]
+    pred = pd.concat([_predictions("axisym", same, [True] * 3),
+                      _predictions("surrogate", same, [True] * 3)])
+    names = {"axisym": "FE", "surrogate": "Surrogate"}
+    colours = {"axisym": "tab:green", "surrogate": "tab:red"}
+    fig = overlay_figure([("run 1", STEPS, pred), ("run 2", STEPS, pred)], "t", names, colours)
+    texts = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "Surrogate (identical to FE within 0.1 %)" in texts
+    apart = pd.concat([_predictions("axisym", same, [True] * 3),
+                       _predictions("surrogate", [110.0, 230.0, 110.0], [True] * 3)])
+    fig = overlay_figure([("run 1", STEPS, pred), ("run 2", STEPS, apart)], "t", names, colours)
+    assert "Surrogate" in [t.get_text() for t in fig.legends[0].get_texts()]

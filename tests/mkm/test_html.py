@@ -22,3 +22,15 @@ def test_provenance_is_folded_and_every_link_has_its_anchor():
     assert html.count("<details>") == 1 and 'href="provenance.json"' in html
     for anchor in re.findall(r'href="#(prov-[^"]+)"', html):
         assert f'id="{anchor}"' in html
+
+
+def test_an_empty_cell_is_the_dash_never_none():
+    import pandas as pd
+
+    from mkm.html import table_html
+
+    # an imported run has no budget: no step has an E_n, so "at step" is None throughout
+    html = table_html(pd.DataFrame({"model": ["eq2", "thickwall"], "at step": [None, None],
+                                    "worst E_n": [float("nan")] * 2}), "caption")
+    assert "None" not in html and "nan" not in html
+    assert html.count("<td>—</td>") == 4

@@ -46,3 +46,17 @@ def test_bar_with_an_estimate_on_a_terminal(monkeypatch):
 def test_summary_line(capsys):
     summary_line("report", "2 run(s) in 3.0 s")
     assert capsys.readouterr().err == "mkm report: 2 run(s) in 3.0 s\n"
+
+
+def test_a_phase_with_its_own_estimate_stays_out_of_the_time_left(monkeypatch):
+    """A first-use training (99 s) before the first task does not make the 10 s tasks look
+    like 100 s ones: the status line's estimate is the tasks' own rate."""
+    monkeypatch.setattr(sys, "stderr", io.StringIO())
+    clock = iter([0.0, 99.0, 109.0, 119.0, 119.0])
+    monkeypatch.setattr("mkm.progress.time.monotonic", lambda: next(clock))
+    bar = progress_bar(4, "report", unit="task")
+    bar.unpause()  # 99 s: the training ends, announced with its own estimate
+    bar.update(1)  # 109 s: one task of 10 s (a line: 10 s since the last one)
+    bar.update(1)  # 119 s: a line
+    assert sys.stderr.getvalue().splitlines() == ["mkm report: 1/4 tasks, 10 s, about 30 s left",
+                                                  "mkm report: 2/4 tasks, 20 s, about 20 s left"]

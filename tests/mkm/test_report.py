@@ -23,9 +23,11 @@ from mkm.fem.interface import Domain
 from mkm.fem.ladder import make_model
 from mkm.fem.paper import equation7_err_pct
 from mkm.prediction_cache import cached_predict
+from mkm.registry import parse_spec
 from mkm.registry import parse_specs as parse_models
 from mkm.report import build_report
 from mkm.scoring import domain_pressures
+from mkm.verdict import format_seconds
 
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 
@@ -123,7 +125,8 @@ def test_invalid_points_are_reported_not_scored(runs, report):
     errors = pd.read_csv(path.parent / "run1_errors.csv")
     invalid = errors[errors["model"] == "eq2:theta0_deg=50"]
     assert invalid["force_N"].isna().all() and invalid["err_pct"].isna().all()
-    assert "[eq2:theta0_deg=50]: " in html and "shown as crosses above the axes" in html
+    assert "Equation 2 (Chou-Hannaford), theta0_deg=50: " in html
+    assert "shown as crosses above the axes" in html
 
 
 def test_aborted_run_is_reported_as_aborted(runs, report):
@@ -221,8 +224,7 @@ def test_summary_table_comes_first_and_names_the_best_model(runs, report):
                                                       == summary["points"])]
     best = one.loc[one["max_abs_err_pct"].idxmin()]
     row = html.split('id="summary"')[1].split("</tr>")[1]  # the first run's row
-    assert "Thick-wall (Klute-Hannaford) [thickwall]" in row or best["model"] != "thickwall"
-    assert f"[{best['model']}]" in row
+    assert f"<b>{parse_spec(best['model']).display_name}</b>" in row
     assert f'<td class="num">{best["max_abs_err_pct"]:.2f}</td>' in row
     assert f'<td class="num">{best["rmse_N"]:.2f}</td>' in row
     # the paper's names, the spec beside
@@ -323,9 +325,42 @@ def test_first_screen_has_every_model_on_every_run_and_says_simulated(report):
         '<h2 id="summary">') + 5)]
     assert "SIMULATED: run 1, run 2 came from the simulated bench" in summary
     # one row per model and run: 3 models x 2 runs, each with its error, RMSE and speed
-    assert summary.count("Thick-wall (Klute-Hannaford) [thickwall]") == 2
-    assert summary.count("[eq2:theta0_deg=50]") == 2
-    assert "s per force" in summary and "RMSE [N]" in summary
+    assert summary.count("Thick-wall (Klute-Hannaford)<") == 2
+    assert summary.count("Equation 2 (Chou-Hannaford), theta0_deg=50<") == 2
+    assert "time per force" in summary and "RMSE [N]" in summary
+    # speeds in µs or ms, never in scientific notation
+    assert not re.search(r"\d\.?\d*e-\d\d", summary)
+    # an absent value is the table's dash: no cell says None (eq2:theta0_deg=50 has no E_n)
+    assert ">None<" not in html
+
+
+def test_first_screen_opens_with_a_verdict_per_run(runs, report):
+    """The sentence before any table: the closest model valid at every step (no tolerance
+    asked), its distance and speed as the tables give them, and the E_n verdict."""
+    path, html = report
+    summary = pd.read_csv(path.parent / "summary.csv")
+    start = html.index('<h2 id="summary">')
+    first = html[start:html.index("<table", start)]
+    verdicts = re.findall(r'<p class="verdict">(.*?)</p>', first)
+    assert len(verdicts) == 2 and verdicts[0].startswith("Run 1 (eps 12.2 %, simulated): ")
+    one = summary[(summary["run"] == runs[0].name) & (summary["valid_points"]
+                                                      == summary["points"])]
+    best = one.loc[one["max_abs_err_pct"].idxmin()]
+    assert (f"the closest model is {parse_spec(best['model']).display_name}, "
+            f"{best['max_abs_err_pct']:.2f} % off at worst") in verdicts[0]
+    assert f"{format_seconds(best['seconds_per_point'])} per force" in verdicts[0]
+    assert "E_n" in verdicts[0]
+    # one name per model: the summary names each spec by the registry's label and nothing else
+    assert "[thickwall]" not in html and "Surrogate [" not in html
+
+
+def test_same_model_compares_built_parameters():
+    from mkm.report import _same_model
+
+    assert _same_model("eq2", "eq2:diameter=inner")  # inner is Equation 2's default
+    assert not _same_model("eq2", "eq2:diameter=braid")
+    assert not _same_model("axisym", "axisym:mesh=fine")
+    assert not _same_model("thickwall", "eq2")
 
 
 def test_a_run_past_the_braid_lock_gets_one_banner(tmp_path):
@@ -348,7 +383,14 @@ def test_a_first_report_names_the_surrogate_training_before_it_starts(runs, tmp_
     build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r",
                  cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
     err = capsys.readouterr().err
-    assert "mkm report: training the physics surrogate on first use" in err
+    assert "mkm report: training the physics surrogate on first use, the first time on this " \
+           "machine: no earlier time to estimate from" in err
+    # the next promise is this machine's own time
+    from mkm.core.durations import estimate, expected_seconds
+    from mkm.surrogate.train import training_task
+
+    assert expected_seconds(training_task("physics")) > 0
+    assert estimate(training_task("physics")).endswith("(this machine, last time)")
     build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r2",
                  cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
     assert "training" not in capsys.readouterr().err  # cached now: nothing to announce

@@ -218,7 +218,7 @@ def test_tampered_metadata_is_one_line_on_the_cli(saved, tmp_path, capsys):
     assert main(["fem", "solve", "--model", f"surrogate:path={copy}", "--D0", "500", "--t0",
                  "3", "--eps", "0.1"]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("mkm: error: ") and "edited" in err and err.count("\n") == 1
+    assert err.startswith("mkm fem solve: error: ") and "edited" in err and err.count("\n") == 1
 
 
 def test_huge_metadata_is_refused_unread(saved, tmp_path):

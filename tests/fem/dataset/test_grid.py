@@ -72,6 +72,7 @@ def test_bad_grid_file_on_the_command_line(tmp_path, capsys):
                  str(tmp_path / "d.csv"), "--cache", str(tmp_path / "cache")])
     err = capsys.readouterr().err
     assert code == 2
-    assert err == f"mkm: error: grid {bad}: unknown key 't_mm': expected some of pressure_bar, " \
+    assert err == f"mkm fem dataset: error: grid {bad}: unknown key 't_mm': expected some of " \
+                  "pressure_bar, " \
                   "D0_mm, t0_mm, eps, L0_mm, theta0_deg\n"
     assert not (tmp_path / "d.csv").exists()

@@ -26,6 +26,9 @@ def test_pressures_as_range_or_comma_list():
 
 def test_fraction_or_percentage_mean_the_same():
     assert parse_fraction("5%") == parse_fraction("0.05") == pytest.approx(0.05, rel=1e-15)
+    # a decimal comma, as a European keyboard types it
+    assert parse_fraction("12,2%") == parse_fraction("0,122") == pytest.approx(0.122)
+    assert parse_number("35,5", "--D0") == 35.5
 
 
 @pytest.mark.parametrize(("call", "message"), [
@@ -38,6 +41,11 @@ def test_fraction_or_percentage_mean_the_same():
     (lambda: parse_pressures(""), "--pressures is empty"),
     (lambda: parse_pressures("1,-0.5"), "negative pressure -0.5 bar"),
     (lambda: parse_fraction("five%"), "--eps='five' is not a number"),
+    (lambda: parse_fraction("12.2"), "^--eps 12.2: a fraction is expected; did you mean 12.2%"),
+    (lambda: parse_fraction("2", "--tolerance"), "^--tolerance 2: a fraction is expected; "
+     "did you mean 2%"),
+    (lambda: parse_fraction("150%"), r"^--eps 150%: a percentage in \[0, 100\) is expected$"),
+    (lambda: parse_number("1,2,3", "--D0"), "^--D0='1,2,3' is not a number$"),
 ])
 def test_bad_text_gives_one_line_naming_it(call, message):
     with pytest.raises(ValueError, match=message) as info:

@@ -107,3 +107,15 @@ def test_prediction_csv_is_what_pandas_writes(model, params, muscle):
     records.write_prediction_csv(pred, buf)
     assert buf.getvalue() == pred.to_frame().to_csv(index=False, float_format="%.6g",
                                                     lineterminator="\n")
+
+
+def test_the_recorded_command_is_what_a_user_types():
+    from mkm.core.records import command_line
+
+    # `python -m mkm` puts the absolute path of mkm/__main__.py first: recorded as `mkm`
+    assert command_line(["/home/lab/mkm-bench/mkm/__main__.py", "fem", "convergence"]) == \
+        "mkm fem convergence"
+    assert command_line(["C:\\venv\\Scripts\\mkm.exe", "demo"]) == "mkm demo"
+    assert command_line(["/usr/local/bin/mkm", "report", "r1"]) == "mkm report r1"
+    assert command_line(["benchmarks/bench_batch.py", "--json", "docs/measured/batch.json"]) \
+        == "benchmarks/bench_batch.py --json docs/measured/batch.json"

@@ -1,0 +1,41 @@
+"""A measurement as a calibration reference: a CSV table, or the settled steps of a run folder.
+
+:func:`calibration_reference` is what ``mkm fem calibrate --reference`` reads: the table
+:func:`mkm.fem.calibration.check_reference` checks (``pressure_bar, D0_mm, t0_mm, eps,
+force_N``, optional ``L0_mm`` and ``direction``), with its name and the SHA-256 of the file
+read, for the calibration's provenance.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pandas as pd
+
+from mkm.bench.storage import load_run
+from mkm.core.records import file_sha256
+from mkm.fem.calibration import check_reference, read_reference
+
+
+def calibration_reference(path) -> tuple[pd.DataFrame, str, str | None]:
+    """The reference table at ``path``, its name and the SHA-256 of the file read.
+
+    A run folder gives its settled steps: the measured mean pressure and force of each step,
+    its direction, and the muscle from run.json.
+    """
+    path = Path(path)
+    if not path.is_dir():
+        sha = file_sha256(path) if path.is_file() else None
+        return read_reference(path), path.name, sha
+    run = load_run(path)
+    if "steps.csv is missing" in run.problems:
+        raise ValueError(f"run {path} has no steps.csv: expected its settled steps as the "
+                         "reference")
+    steps = run.steps[run.steps["settled"]]
+    muscle = run.meta.muscle
+    frame = pd.DataFrame({"pressure_bar": steps["pressure_bar_mean"],
+                          "force_N": steps["force_N_mean"], "direction": steps["direction"],
+                          "D0_mm": muscle.D0_mm, "t0_mm": muscle.t0_mm, "eps": muscle.eps,
+                          "L0_mm": muscle.L0_mm})
+    reference = check_reference(frame, f"run {path} (settled steps of steps.csv)")
+    return reference, f"run {path.name}", file_sha256(path / "steps.csv")

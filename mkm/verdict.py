@@ -1,0 +1,144 @@
+"""The report's verdict per run, in one sentence: which model to use, how far, how fast, whether
+the measurement and the models agree, and why ``auto`` may pick another model.
+
+The model to use is the cheapest (seconds per force) whose largest |Err%| against the
+measurement (the paper's Equation 7) meets the tolerance at every kept step; when none does, the
+closest. ``auto`` bounds a model's error against the FE model, not against a measurement
+(:mod:`mkm.auto`): when its choice differs, the sentence says so, and when the model auto trusts
+is further from the measurement than the tolerance, the measurement is further from the FE model
+than auto's bound, which points to the muscle (its braid angle, its rubber), not to the model.
+Nothing here computes a number: the inputs are the rows of :func:`mkm.scoring.summarise_run`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+def format_seconds(seconds: float) -> str:
+    """A duration as a reader takes it in: ``6.10 µs``, ``12.0 ms``, ``1.40 s``, ``0.948 µs``
+    (in s, ms or µs, three significant digits, never scientific notation); ``—`` when
+    unknown."""
+    if seconds is None or not math.isfinite(seconds) or seconds <= 0:
+        return "—"
+    unit, scale = next(((u, f) for u, f in (("s", 1.0), ("ms", 1e-3)) if seconds >= f),
+                       ("µs", 1e-6))
+    value = seconds / scale
+    decimals = max(0, 2 - math.floor(math.log10(value)))
+    return f"{value:.{decimals}f} {unit}"
+
+
+@dataclass(frozen=True)
+class AutoPick:
+    """What ``auto`` chose for a run: the spec, the name shown, its error bound against the FE
+    model [%] (largest over the run's points) and auto's own explanation."""
+
+    spec: str
+    name: str
+    bound_pct: float
+    explanation: str
+
+
+def model_label(predictor: str) -> str:
+    """The registry's name (:attr:`mkm.registry.Spec.display_name`) of a study predictor
+    (``surrogate-muscle-gp`` -> ``Surrogate``): the one name every table and sentence uses."""
+    from mkm.auto import spec_of
+    from mkm.registry import parse_spec
+
+    try:
+        return parse_spec(spec_of(predictor)).display_name
+    except ValueError:  # a predictor no registry entry has: its study name
+        return predictor
+
+
+def _fully_valid(row: dict) -> bool:
+    return row["points"] > 0 and row["valid_points"] == row["points"]
+
+
+def _err(row: dict) -> float:
+    value = row.get("max_abs_err_pct")
+    return math.inf if value is None or not math.isfinite(value) else float(value)
+
+
+def recommend(summary: list[dict], tolerance: float | None) -> tuple[dict | None, bool]:
+    """``(row, within)``: the cheapest model valid at every step whose largest |Err%| meets
+    ``tolerance`` (a fraction), ``within`` True; else the closest model (valid at every step if
+    one is, else valid somewhere), ``within`` False; ``(None, False)`` if no model is valid
+    anywhere. Without a tolerance: the closest."""
+    full = [r for r in summary if _fully_valid(r) and math.isfinite(_err(r))]
+    if tolerance is not None:
+        meets = [r for r in full if _err(r) <= 100.0 * tolerance]
+        if meets:
+            return min(meets, key=lambda r: (r["seconds_per_point"], _err(r))), True
+    pool = full or [r for r in summary if r["valid_points"] > 0 and math.isfinite(_err(r))]
+    if not pool:
+        return None, False
+    return min(pool, key=_err), False
+
+
+def _consistency(row: dict, summary: list[dict]) -> str:
+    verdicts = [r.get("consistent") for r in summary]
+    agree = sum(v is True for v in verdicts)
+    judged = sum(v is not None for v in verdicts)
+    if row.get("consistent") is None:
+        return ("no E_n: the run was recorded without an uncertainty budget" if judged == 0
+                else "no E_n for this model")
+    others = f"{agree} of {judged} models {'is' if agree == 1 else 'are'}"
+    if row["consistent"]:
+        return f"consistent with the measurement (|E_n| ≤ 1 at every step; {others})"
+    return (f"not consistent with the measurement (E_n = {row['worst_E_n']:+.1f} at step "
+            f"{row['worst_step']}; {others}; the models have no braid friction or creep)")
+
+
+def verdict(run_label: str, summary: list[dict], names: dict[str, str],
+            tolerance: float | None, auto: AutoPick | None = None,
+            auto_same: bool = False, fe_err: tuple[str, float] | None = None,
+            identify_hint: str = "mkm identify RUN_DIR") -> str:
+    """The verdict sentence of one run (plain text).
+
+    ``summary``: one :func:`mkm.scoring.summarise_run` row per model (``model`` is the spec
+    text, named by ``names``), each with ``band_pct`` (the model's ± 2 u band at its worst step,
+    % of the largest measured force) when it has a band. ``auto``: auto's pick at ``tolerance``,
+    ``auto_same``: whether it is the recommended model. ``fe_err``: ``(name, largest |Err%|)``
+    of an FE model of the report, the measurement's distance from the FE model.
+    """
+    row, within = recommend(summary, tolerance)
+    if row is None:
+        return f"{run_label}: no model gives a valid force at any kept step: nothing to use."
+    name = names[row["model"]]
+    tol = f"{100 * tolerance:g} %" if tolerance is not None else None
+    band = row.get("band_pct")
+    band_text = (f" (band ± {band:.1f} %)" if band is not None and math.isfinite(band)
+                 else "")
+    how_far = (f"{_err(row):.2f} % off at worst{band_text}, "
+               f"{format_seconds(row['seconds_per_point'])} per force")
+    if within:
+        head = f"use {name}, the cheapest model within {tol} of the measurement: {how_far}"
+    elif tol is not None:
+        head = f"no model is within {tol} of the measurement; the closest is {name}, {how_far}"
+    else:
+        head = f"the closest model is {name}, {how_far}"
+    text = f"{run_label}: {head}, {_consistency(row, summary)}."
+    if auto is None or tol is None:
+        return text
+    measured = row if auto_same else next(
+        (r for r in summary if names.get(r["model"]) == auto.name), None)
+    auto_err = _err(measured) if measured is not None else math.nan
+    which = "it too" if auto_same else f"{auto.name} instead"
+    why = (f" auto at {tol} picks {which}, bounding its error against the FE model "
+           f"({auto.bound_pct:.2f} %), not against this measurement")
+    if math.isfinite(auto_err) and auto_err > 100 * tolerance:
+        gap = (f"{fe_err[1]:.2f} %" if fe_err is not None
+               else f"at least {max(auto_err - auto.bound_pct, 0.0):.2f} %")
+        off = "" if auto_same else f", from which it is {auto_err:.2f} % off"
+        return text + (f"{why}{off}: the FE model itself is {gap} off, more than that bound, "
+                       f"which points to the muscle, not the model: identify it "
+                       f"(`{identify_hint}`).")
+    if auto_same:
+        return text + f" auto at {tol} picks it too."
+    if math.isfinite(auto_err):
+        return text + (f"{why}; {auto.name} is {auto_err:.2f} % off here, also within {tol}, "
+                       f"and {name} is cheaper, but auto cannot bound it within {tol} of the "
+                       "FE model at every point.")
+    return text + f"{why} ({auto.name} is not among this report's models)."

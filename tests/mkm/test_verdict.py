@@ -1,0 +1,89 @@
+"""The report's verdict sentence: the model to use, how far, how fast, consistent or not, and
+why auto's pick may differ (rows shaped as :func:`mkm.scoring.summarise_run` writes them)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from mkm.verdict import AutoPick, format_seconds, recommend, verdict
+
+
+def _row(model, err, seconds, consistent=True, valid=5, band=0.5):
+    return {"model": model, "points": 5, "valid_points": valid, "max_abs_err_pct": err,
+            "seconds_per_point": seconds, "band_pct": band, "consistent": consistent,
+            "worst_E_n": 2.4 if consistent is False else 0.3, "worst_step": 4}
+
+
+NAMES = {"eq2": "Equation 2 (Chou-Hannaford)", "thickwall": "Thick-wall (Klute-Hannaford)",
+         "surrogate": "Surrogate", "axisym": "FE model (axisymmetric)"}
+# The imported run of the issue: thick-wall 1.60 % off, the surrogate 5.95 %
+ROWS = [_row("eq2", 9.8, 6e-6, False), _row("thickwall", 1.60, 5.84e-5),
+        _row("surrogate", 5.95, 2e-4, False), _row("axisym", 5.70, 1.2, False)]
+
+
+@pytest.mark.parametrize(("seconds", "text"), [
+    (5.84e-05, "58.4 µs"), (6.0e-6, "6.00 µs"), (0.0123, "12.3 ms"), (1.2, "1.20 s"),
+    (250.0, "250 s"), (9.48e-7, "0.948 µs"), (4e-10, "0.000400 µs"), (math.nan, "—"),
+    (0.0, "—")])
+def test_durations_read_in_units_never_in_scientific_notation(seconds, text):
+    assert format_seconds(seconds) == text
+    assert "e-" not in format_seconds(seconds) and "e+" not in format_seconds(seconds)
+
+
+def test_the_cheapest_model_within_the_tolerance_is_the_one_to_use():
+    assert recommend(ROWS, 0.02) == (ROWS[1], True)
+    # loose: Equation 2 is the cheapest within 10 %
+    assert recommend(ROWS, 0.10) == (ROWS[0], True)
+    # tight: none is within, the closest is named
+    assert recommend(ROWS, 0.01) == (ROWS[1], False)
+    # a model invalid at a step is not used while one valid at every step exists
+    partial = [_row("eq2", 0.5, 1e-6, valid=3), ROWS[1]]
+    assert recommend(partial, 0.02) == (ROWS[1], True)
+
+
+def test_the_sentence_names_model_distance_band_speed_and_consistency():
+    text = verdict("Run 1", ROWS, NAMES, 0.02)
+    assert text == ("Run 1: use Thick-wall (Klute-Hannaford), the cheapest model within 2 % of "
+                    "the measurement: 1.60 % off at worst (band ± 0.5 %), 58.4 µs per force, "
+                    "consistent with the measurement (|E_n| ≤ 1 at every step; 1 of 4 models "
+                    "is).")
+    none = verdict("Run 1", ROWS, NAMES, 0.01)
+    assert "no model is within 1 % of the measurement; the closest is Thick-wall" in none
+    bad = verdict("Run 1", ROWS, NAMES, 0.10)  # Equation 2: the cheapest within 10 %
+    assert "use Equation 2 (Chou-Hannaford)" in bad
+    assert "not consistent with the measurement (E_n = +2.4 at step 4; 1 of 4 models is;" in bad
+
+
+def test_when_auto_picks_another_model_the_sentence_says_why_and_points_to_the_muscle():
+    pick = AutoPick("surrogate", "Surrogate", 0.8, "")
+    text = verdict("Run 1", ROWS, NAMES, 0.02, pick, False, (NAMES["axisym"], 5.70),
+                   "mkm identify runs/r1")
+    # auto's choice and the measured ranking, reconciled in the same sentence
+    assert text.endswith("auto at 2 % picks Surrogate instead, bounding its error against the "
+                         "FE model (0.80 %), not against this measurement, from which it is "
+                         "5.95 % off: the FE model itself is 5.70 % off, more than that bound, "
+                         "which points to the muscle, not the model: identify it (`mkm identify "
+                         "runs/r1`).")
+    # without an FE model in the report, the triangle inequality bounds its distance from below
+    bare = verdict("Run 1", ROWS[:3], NAMES, 0.02, pick, False, None)
+    assert f"the FE model itself is at least {5.95 - 0.8:.2f} % off" in bare
+    same = verdict("Run 1", ROWS, NAMES, 0.02, AutoPick("thickwall", NAMES["thickwall"], 1.0,
+                                                        ""), True)
+    assert same.endswith("auto at 2 % picks it too.")
+
+
+def test_when_auto_agrees_but_the_measurement_is_beyond_the_tolerance_the_muscle_is_named():
+    """mkm demo's case: the surrogate is the closest (4.63 %), auto trusts it within 2 % of the
+    FE model: both say the same model, and the sentence says why it is still 4.63 % off."""
+    rows = [_row("eq2", 20.0, 6e-6, False), _row("surrogate", 4.63, 4.2e-5),
+            _row("axisym", 4.9, 1.2)]
+    text = verdict("Run 1", rows, NAMES, 0.02, AutoPick("surrogate", "Surrogate", 1.1, ""),
+                   True, (NAMES["axisym"], 4.9), "mkm identify r1")
+    assert "no model is within 2 % of the measurement; the closest is Surrogate, 4.63 % off" \
+        in text
+    assert text.endswith("auto at 2 % picks it too, bounding its error against the FE model "
+                         "(1.10 %), not against this measurement: the FE model itself is 4.90 % "
+                         "off, more than that bound, which points to the muscle, not the model: "
+                         "identify it (`mkm identify r1`).")
