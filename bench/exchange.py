@@ -1,15 +1,20 @@
-"""Measurements in and out of run folders: another bench's table in, a run out to a spreadsheet.
+"""Measurements in and out of run folders: another lab's table in, a run out to a spreadsheet.
 
-- :func:`import_table`: a CSV or Excel table of forces measured elsewhere (another bench, a
-  spreadsheet; one row per step: pressure, force, optionally the sweep direction and the force's
-  standard deviation) becomes a run folder with status ``imported``, the muscle as the user
-  gives it, and the source file's name and SHA-256 in ``imported_from``. It has no samples and
-  no commands (the table holds none); ``mkm report``, ``mkm fem calibrate --reference`` and
-  ``mkm identify`` read it like any run.
+- :func:`import_table`: the table a lab has (CSV, TSV, semicolon CSV with decimal commas, or an
+  ``.xlsx`` workbook, every sheet or one; columns found by name and unit by
+  :mod:`mkm.bench.tables`, converted by pint) becomes run folders with status ``imported``:
+  one per muscle state (a sheet, or a value of an eps, length, L0 or run-id column), all of one
+  muscle id. A step table (one row per held pressure) gives the steps as they are; a time series
+  (a ``time`` column) is stored as samples and its steps derived (:mod:`mkm.bench.series`: a
+  staircase's plateaus as the bench judges them, or a ramp's quasi-static bins per branch), its
+  force zeroed at the lowest pressure of the rising branch and a vented pressure reading above
+  zero taken as the record's zero. ``imported_from`` in run.json records the source file's name
+  and SHA-256, the sheet, the columns and units recognised, the shape, the tare and the vented
+  reading. ``mkm report``, ``mkm fem calibrate --reference``, ``mkm identify`` and
+  ``mkm export`` read these runs like any other.
 - :func:`export_run`: a run folder as one Excel workbook (sheets ``steps``, ``samples``,
-  ``metadata``) or as three CSV files, every text cell spreadsheet-safe.
-
-Tables are read with pandas' readers (``openpyxl`` for ``.xlsx``); nothing in them can run code.
+  ``metadata``) or as three CSV files, every text cell spreadsheet-safe. Its ``steps`` sheet
+  imports back to the same steps.
 """
 
 from __future__ import annotations
@@ -17,149 +22,381 @@ from __future__ import annotations
 import datetime
 import json
 import math
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
+from mkm.bench import series
 from mkm.bench.storage import (
-    DIRECTIONS,
-    MAX_CELL_MAGNITUDE,
     RunMeta,
     RunStatus,
     RunWriter,
+    Sample,
     StepRecord,
     load_run,
+    muscle_from_dict,
+)
+from mkm.bench.tables import (
+    Recognition,
+    column_text,
+    directions,
+    flags,
+    key_values,
+    read_tables,
+    recognise,
+    sheet_names,
 )
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
 from mkm.fem.limits import check_value
-from mkm.fem.muscle import Muscle
 
-#: what a table column may hold -> the names looked for when ``--columns`` does not say
-COLUMN_ROLES = {"pressure": ("pressure_bar", "pressure", "p_bar", "p"),
-                "force": ("force_N", "force", "f_n", "f"),
-                "direction": ("direction", "dir", "branch"),
-                "force_std": ("force_std_N", "force_N_std", "std_N", "force_std")}
 REQUIRED_ROLES = ("pressure", "force")
-MAX_ROWS = 100_000
+#: columns whose values split one table into runs (one muscle state each)
+SPLIT_ROLES = ("run", "eps", "length", "L0")
 EXCEL_MAX_ROWS = 1_048_575  # below the header row
+#: the sheets of mkm's own export: its steps sheet is the table, its metadata the muscle
+EXPORT_SHEETS = ("steps", "samples", "metadata")
+#: ``--tare`` and ``--vented``: found in the data (auto), none, or a value given
+ZERO_CHOICES = ("auto", "none")
 
 
-def read_table(path: str | Path) -> pd.DataFrame:
-    """The table in ``path`` (``.csv``, ``.xlsx``: the first sheet); ``ValueError`` otherwise."""
-    path = Path(path)
-    if not path.is_file():
-        raise ValueError(f"{path}: no such file: expected a CSV or .xlsx table")
-    suffix = path.suffix.lower()
-    if suffix not in (".xlsx", ".xlsm", ".csv", ".txt"):
-        raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv or .xlsx")
+def parse_zero(text: str | float | None, option: str, unit: str) -> str | float:
+    """``auto``, ``none`` or a number (``--tare 3.2``, ``--vented 0.6``)."""
+    if text is None or text in ZERO_CHOICES:
+        return text or "auto"
     try:
-        if suffix in (".xlsx", ".xlsm"):
-            table = pd.read_excel(path, sheet_name=0, engine="openpyxl")
-        else:
-            table = pd.read_csv(path, sep=None, engine="python")  # , or ; as exported
-    except (OSError, UnicodeDecodeError, pd.errors.ParserError, pd.errors.EmptyDataError,
-            KeyError, TypeError, ValueError) as exc:
-        raise ValueError(f"{path} cannot be read as a table ({type(exc).__name__}: "
-                         f"{str(exc)[:120]})") from None
-    if len(table) > MAX_ROWS:
-        raise ValueError(f"{path} has {len(table)} rows: expected one row per step (at most "
-                         f"{MAX_ROWS})")
-    return table
+        value = float(text)
+    except (TypeError, ValueError):
+        raise ValueError(f"{option} {text!r} is invalid: expected auto, none or a number "
+                         f"[{unit}]") from None
+    if not math.isfinite(value):
+        raise ValueError(f"{option} {text!r} is invalid: expected a finite number [{unit}]")
+    return value
 
 
-def parse_columns(text: str | None) -> dict[str, str]:
-    """``pressure=P [bar],force=F`` -> ``{"pressure": "P [bar]", "force": "F"}``."""
-    out = {}
-    for item in filter(None, (i.strip() for i in (text or "").split(","))):
-        role, sep, column = item.partition("=")
-        role = role.strip()
-        if not sep or role not in COLUMN_ROLES or not column.strip():
-            raise ValueError(f"--columns item {item!r} is invalid: expected ROLE=COLUMN with ROLE "
-                             f"one of {', '.join(COLUMN_ROLES)}")
-        out[role] = column.strip()
+@dataclass
+class ImportedRun:
+    """One run folder written by :func:`import_table` and what was done to make it."""
+
+    path: Path
+    state: str  # the muscle state: "eps 0.0473", "sheet 'B'"
+    shape: str  # "steps", "staircase" or "ramp"
+    n_steps: int
+    notes: list[str]
+
+    def line(self) -> str:
+        made = {"steps": "one table row each", "staircase": "the plateaus of a staircase",
+                "ramp": "quasi-static bins of a ramp"}[self.shape]
+        return f"{self.state}: {self.n_steps} step(s), {made}" + "".join(
+            f"; {n}" for n in self.notes)
+
+
+def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
+                 columns: dict[str, str] | None = None, units: dict[str, str] | None = None,
+                 sheet: str | None = None, tare: str | float = "auto",
+                 vented: str | float = "auto", select: str | None = None,
+                 notify=lambda line: None) -> list[ImportedRun]:
+    """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
+    module docstring).
+
+    Parameters
+    ----------
+    muscle : dict
+        ``id``, ``D0_mm``, ``t0_mm`` and, unless the table has them, ``L0_mm`` and ``eps``
+        (``None``: take them from the table).
+    columns, units : dict, optional
+        Role -> column header, role -> unit: the reader's guesses overridden.
+    sheet : str, optional
+        The workbook's sheet to read (default: every sheet holding pressure and force).
+    tare : "auto", "none" or float
+        The force's zero [N]: the force at the lowest pressure of the rising branch (``auto``;
+        a step table only when it has a 0 bar row), none, or this value.
+    vented : "auto", "none" or float
+        The pressure read vented [bar], subtracted from a time series' pressures: detected
+        (``auto``), none, or this value.
+    select : str, optional
+        The muscle to import where the table's muscle column holds several.
+    notify : callable
+        Receives the line of what was recognised in each table.
+
+    Raises ``ValueError`` naming the file and the cell of what cannot be imported; nothing is
+    written then.
+    """
+    path = Path(path)
+    muscle = dict(muscle)
+    if sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path)):  # mkm export's own
+        known = key_values(path, "metadata")
+        for key in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
+            if muscle.get(key) is None and f"muscle.{key}" in known:
+                muscle[key] = known[f"muscle.{key}"]
+        sheet = "steps"
+    tables = read_tables(path, sheet)
+    names = [t.sheet for t in tables]
+    prepared, skipped = [], []
+    for table in tables:
+        found = recognise(table, columns, units)
+        missing = [r for r in REQUIRED_ROLES if r not in found]
+        if missing and len(tables) > 1 and "pressure" not in found and "force" not in found:
+            skipped.append(table.sheet)
+            continue
+        if missing:
+            raise ValueError(f"{table.name}: no {' or '.join(missing)} column among "
+                             f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "
+                             f"name it with --columns {missing[0]}=COLUMN (and --units "
+                             f"{missing[0]}=UNIT)")
+        recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
+                                                 k not in {c.index for c in found.values()}])
+        notify(f"{table.name}: {recognition.line()}"
+               + (f"; sheets without pressure and force skipped: {', '.join(skipped)}"
+                  if skipped else ""))
+        prepared.append(recognition)
+    if not prepared:
+        raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
+                         f"{', '.join(map(repr, names))})")
+    groups = []
+    for recognition in prepared:
+        groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
+    muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
+    sha = file_sha256(path)
+    built = [_build(path, sha, g, m, tare, vented) for g, m in zip(groups, muscles, strict=True)]
+    out = []
+    for g, (meta, steps, samples, notes, shape) in zip(groups, built, strict=True):
+        writer = RunWriter(out_root, meta, f"# imported from {path.name}: no bench "
+                           "configuration\n")
+        writer.append_samples(samples)
+        for step in steps:
+            writer.append_step(step)
+        writer.close()
+        out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
     return out
 
 
-def _pick(table: pd.DataFrame, columns: dict[str, str]) -> dict[str, str]:
-    """The table column of each role: as given, else the first known name (any case)."""
-    by_lower = {str(c).strip().lower(): c for c in table.columns}
-    chosen = {}
-    for role, names in COLUMN_ROLES.items():
-        if role in columns:
-            if columns[role] not in table.columns:
-                raise ValueError(f"--columns {role}={columns[role]!r}: no such column: the "
-                                 f"table has {', '.join(map(str, table.columns))}")
-            chosen[role] = columns[role]
+@dataclass
+class _Group:
+    """The rows of one muscle state in one table."""
+
+    recognition: Recognition
+    rows: np.ndarray
+    state: str
+    key: dict
+
+    @property
+    def table(self):
+        return self.recognition.table
+
+    @property
+    def columns(self):
+        return self.recognition.columns
+
+    def values(self, role: str, optional: bool = False) -> np.ndarray:
+        return self.recognition.values(role, optional)[self.rows]
+
+    def cell(self, k: int, role: str) -> str:
+        return self.table.cell(int(self.rows[k]), self.columns[role].index)
+
+
+def _groups(recognition: Recognition, select: str | None, several_sheets: bool) -> list[_Group]:
+    """The table's rows split into muscle states (see :data:`SPLIT_ROLES`)."""
+    table, found = recognition.table, recognition.columns
+    n = len(table.rows)
+    keep = np.ones(n, dtype=bool)
+    if "muscle" in found:
+        names = column_text(table, found["muscle"])
+        distinct = list(dict.fromkeys(names))
+        if select is None and len(distinct) > 1:
+            raise ValueError(f"{table.name}: column {found['muscle'].header!r} holds "
+                             f"{len(distinct)} muscles ({', '.join(map(repr, distinct))}): "
+                             "choose one with --muscle NAME")
+        if select is not None:
+            if select not in distinct:
+                raise ValueError(f"--muscle {select!r}: {table.name} has no such muscle in "
+                                 f"column {found['muscle'].header!r}: it has "
+                                 f"{', '.join(map(repr, distinct))}")
+            keep = np.array([v == select for v in names])
+    elif select is not None:
+        raise ValueError(f"--muscle {select!r}: {table.name} has no muscle column")
+    keys = [[] for _ in range(n)]
+    labels = []
+    for role in SPLIT_ROLES:
+        if role not in found:
             continue
-        found = next((by_lower[n.lower()] for n in names if n.lower() in by_lower), None)
-        if found is not None:
-            chosen[role] = found
-    missing = [r for r in REQUIRED_ROLES if r not in chosen]
-    if missing:
-        raise ValueError(f"no {' or '.join(missing)} column found among "
-                         f"{', '.join(map(str, table.columns))}: name it with --columns "
-                         "pressure=COLUMN,force=COLUMN")
-    return chosen
+        if role == "run":
+            values = column_text(table, found[role])
+        else:
+            values = [f"{v:.6g}" for v in recognition.values(role)]
+        labels.append(role)
+        for k in range(n):
+            keys[k].append(values[k])
+    order = list(dict.fromkeys(tuple(k) for k, kept in zip(keys, keep, strict=True) if kept))
+    groups = []
+    for key in order:
+        rows = np.flatnonzero([tuple(k) == key and kept for k, kept in zip(keys, keep,
+                                                                           strict=True)])
+        parts = [f"{label} {value}{' mm' if label in ('length', 'L0') else ''}"
+                 for label, value in zip(labels, key, strict=True)]
+        if several_sheets or (table.sheet and not parts):
+            parts.insert(0, f"sheet {table.sheet!r}")
+        groups.append(_Group(recognition, rows, ", ".join(parts) or table.source.name,
+                             dict(zip(labels, key, strict=True))))
+    if not groups:
+        raise ValueError(f"{table.name} has no row to import")
+    return groups
 
 
-def _numbers(table: pd.DataFrame, column: str, role: str) -> np.ndarray:
-    values = pd.to_numeric(table[column], errors="coerce").to_numpy(dtype=float)
-    bad = ~np.isfinite(values) | (np.abs(values) > MAX_CELL_MAGNITUDE)
-    if bad.any():
-        row = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{role} column {column!r}, row {row + 2}: {table[column].iloc[row]!r} "
-                         "is not a finite number")
-    return values
+def _single(group: _Group, role: str) -> float:
+    values = group.values(role)
+    if role in ("length", "L0"):
+        bad = np.flatnonzero(~(np.isfinite(values) & (values > 0)))
+        if bad.size:
+            raise ValueError(f"{group.table.name}, cell {group.cell(int(bad[0]), role)} (column "
+                             f"{group.columns[role].header!r}): {values[bad[0]]:g} mm is not a "
+                             "length: expected a finite length > 0 mm")
+    return float(values[0])
 
 
-def _directions(table: pd.DataFrame, column: str | None, pressure: np.ndarray) -> list[str]:
-    """The sweep of each row: as given, else up to the highest pressure and down after it."""
-    if column is None:
-        top = int(np.argmax(pressure))
-        return ["up" if k <= top else "down" for k in range(len(pressure))]
-    values = [str(v).strip().lower() for v in table[column]]
-    for row, value in enumerate(values):
-        if value not in DIRECTIONS:
-            raise ValueError(f"direction column {column!r}, row {row + 2}: {value!r} is "
-                             f"invalid: expected {' or '.join(DIRECTIONS)}")
-    return values
+def _muscle(given: dict, group: _Group):
+    """The muscle of one state: the table's L0 and eps (or length) over the ones given."""
+    where = f"{group.table.source.name} ({group.state}): "
+    values = dict(given)
+    if "L0" in group.columns:
+        values["L0_mm"] = _single(group, "L0")
+    if "eps" in group.columns:
+        values["eps"] = _single(group, "eps")
+    elif "length" in group.columns:
+        length = _single(group, "length")
+        if values.get("L0_mm") is None:
+            raise ValueError(f"{where}a length column but no L0: give --L0 (the length at rest, "
+                             "mm) or an L0 column, so that eps = (L0 - L) / L0")
+        values["eps"] = (float(values["L0_mm"]) - length) / float(values["L0_mm"])
+        if values["eps"] < 0:
+            raise ValueError(f"{where}length {length:g} mm is above L0 = {values['L0_mm']:g} "
+                             "mm: expected a held length at most the length at rest")
+    for key, option in (("id", "--id"), ("D0_mm", "--D0"), ("t0_mm", "--t0"),
+                        ("L0_mm", "--L0"), ("eps", "--eps")):
+        if values.get(key) is None:
+            raise ValueError(f"{where}no {key}: give {option} (the table has no "
+                             f"{'eps or length' if key == 'eps' else key} column)")
+    try:
+        values = {k: (v if k == "id" else float(v)) for k, v in values.items()}
+    except (TypeError, ValueError):
+        raise ValueError(f"{where}the muscle {values} has a value that is not a number") from None
+    return muscle_from_dict(values, where.rstrip(": "))
 
 
-def import_table(path: str | Path, muscle: Muscle, out_root: str | Path,
-                 columns: dict[str, str] | None = None) -> Path:
-    """A run folder (status ``imported``) under ``out_root`` from the table ``path``; returns
-    its path. ``muscle``: the muscle measured (id, D0_mm, t0_mm, L0_mm, eps)."""
-    path = Path(path)
-    table = read_table(path)
-    if table.empty:
-        raise ValueError(f"{path} has no rows: expected one row per step")
-    chosen = _pick(table, columns or {})
-    pressure = _numbers(table, chosen["pressure"], "pressure")
-    for value in pressure:
-        check_value("pressure_bar", value, f"{path.name}: ")
-    force = _numbers(table, chosen["force"], "force")
-    std = (_numbers(table, chosen["force_std"], "force_std") if "force_std" in chosen
-           else np.full(len(table), math.nan))
-    directions = _directions(table, chosen.get("direction"), pressure)
+def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
+    """The run record, steps, samples, notes and shape of one muscle state."""
+    table, found = group.table, group.columns
+    pressure, force = group.values("pressure"), group.values("force")
+    notes, handling = [], {}
+    timed = "time" in found
+    if timed:
+        time_s = group.values("time")
+        back = np.flatnonzero(np.diff(time_s) < 0)
+        if back.size:
+            raise ValueError(f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')} "
+                             f"(column {found['time'].header!r}): the time goes backwards: "
+                             "expected samples in time order")
+        offset = series.vented_offset(time_s, pressure) if vented == "auto" else (
+            0.0 if vented == "none" else float(vented))
+        handling["vented_reading_bar"] = offset
+        handling["vented"] = ("detected" if vented == "auto" else
+                              "none" if vented == "none" else "given")
+        pressure = pressure - offset
+        if offset:
+            notes.append(f"vented reading {offset:.3g} bar {handling['vented']}: subtracted")
+        # a gauge's noise around its vented zero is not a vacuum
+        noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
+        pressure = np.where(noise, 0.0, pressure)
+        handling["readings_below_zero_set_to_0"] = int(noise.sum())
+    for k, p in enumerate(pressure):
+        if p < 0:
+            raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
+                             f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
+                             "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
+        check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
+    if timed:
+        zero, zero_at = series.tare(pressure, force)
+        handling["tare_at_bar"] = zero_at
+    else:
+        order = (np.array(directions(table, found["direction"]))[group.rows]
+                 if "direction" in found else _inferred(pressure))
+        up = order == "up"
+        zero_at = float(pressure[up].min()) if up.any() else math.nan
+        zero = float(np.mean(force[up & (pressure == zero_at)])) if up.any() else 0.0
+    if tare == "none":
+        zero, handling["tare"] = 0.0, "none"
+    elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
+        zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
+    elif tare == "auto":
+        handling["tare"] = "force at the lowest pressure of the rising branch"
+    else:
+        zero, handling["tare"] = float(tare), "given"
+    handling["tare_N"] = zero
+    if zero:
+        force = force - zero
+        notes.append(f"tare {zero:.4g} N subtracted ({handling['tare']})")
+    samples: list[Sample] = []
+    if timed:
+        shape = series.shape(time_s, pressure)
+        if shape == "staircase":
+            from mkm.bench.config import load_config
+
+            steps, step_of = series.staircase_steps(time_s, pressure, force, load_config())
+            handling["steps_from"] = ("plateaus judged by the bench's settle test "
+                                      "(packaged [settle] criteria), averaged by HoldStats")
+        else:
+            steps, step_of, width = series.ramp_steps(time_s, pressure, force)
+            handling["steps_from"] = (f"quasi-static bins of {width:.3g} bar, rising and "
+                                      "falling branches apart")
+        if not steps:
+            raise ValueError(f"{table.name} ({group.state}): no step found in the time series "
+                             f"(pressure {pressure.min():g}-{pressure.max():g} bar)")
+        tare_rows = (np.arange(pressure.size) < series.rising_end(pressure)) & (
+            pressure <= handling["tare_at_bar"] + series.PLATEAU_TOLERANCE_BAR)
+        samples = [Sample(k, float(t), int(s), "tare" if tare_rows[k] else "step", math.nan,
+                          math.nan, float(p), math.nan, math.nan, float(f), "")
+                   for k, (t, s, p, f) in enumerate(zip(time_s, step_of, pressure, force,
+                                                        strict=True))]
+        notes.insert(0, f"{len(samples)} samples")
+    else:
+        shape = "steps"
+        std = group.values("force_std", optional=True) if "force_std" in found else \
+            np.full(pressure.size, math.nan)
+        repeats: dict[tuple[str, float], int] = {}
+        steps = []
+        for k, (p, f, s, d) in enumerate(zip(pressure, force, std, order, strict=True)):
+            key = (d, round(float(p), 3))
+            repeats[key] = repeats.get(key, -1) + 1
+            steps.append(StepRecord(k, d, repeats[key], float(p), float(p), float(f), float(s),
+                                    1, True, math.nan, math.nan, math.nan))
+    if "slack" in found:
+        slack = int(flags(table, found["slack"])[group.rows].sum())
+        handling["slack_rows"] = slack
+        if slack:
+            notes.append(f"{slack} slack row(s) ({found['slack'].header}): kept at their force")
+    if not np.any(force != 0):
+        notes.append("every force is 0 N: no model error can be scored against this run")
     now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
     prov = provenance()
+    imported = {"file": path.name, "sha256": sha, "shape": shape, "state": group.state,
+                "split_by": group.key,
+                **group.recognition.describe(), **handling}
     meta = RunMeta(
         muscle=muscle, status=RunStatus.IMPORTED,
-        reason=f"imported from {path.name}: measured elsewhere, no samples or commands",
-        hardware={"backend": "import"}, sequence={"n_steps": len(table)},
-        steps_done=len(table), command=prov["command"], provenance=prov, started_utc=now,
-        ended_utc=now, imported_from={"file": path.name, "sha256": file_sha256(path),
-                                      "columns": {r: str(c) for r, c in chosen.items()}})
-    writer = RunWriter(out_root, meta, f"# imported from {path.name}: no bench configuration\n")
-    repeats: dict[tuple[str, float], int] = {}
-    for k, (p, f, s, d) in enumerate(zip(pressure, force, std, directions, strict=True)):
-        key = (d, round(float(p), 3))
-        repeats[key] = repeats.get(key, 0) + 1
-        writer.append_step(StepRecord(k, d, repeats[key] - 1, float(p), float(p), float(f),
-                                      float(s), 1, True, math.nan, math.nan, math.nan))
-    writer.close()
-    return writer.path
+        reason=f"imported from {path.name} ({group.state}): measured elsewhere, "
+        + ("samples and steps derived from them" if timed else "one row per step, no samples"),
+        hardware={"backend": "import"}, sequence={"n_steps": len(steps)},
+        steps_done=len(steps), command=prov["command"], provenance=prov, started_utc=now,
+        ended_utc=now, imported_from=imported, counters={
+            "samples": len(samples), "read_timeouts": 0, "clipped_samples": 0})
+    return meta, steps, samples, notes, shape
+
+
+def _inferred(pressure: np.ndarray) -> np.ndarray:
+    """Up to the (first) highest pressure, down after it."""
+    top = int(np.argmax(pressure))
+    return np.array(["up" if k <= top else "down" for k in range(pressure.size)])
 
 
 def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:

@@ -285,6 +285,7 @@ BENCHMARKS = {
     "dataset.json": "benchmarks/bench_dataset.py --workers 1 2 --json {out}",
     "batch.json": "benchmarks/bench_batch.py --json {out}",
     "startup.json": "benchmarks/bench_startup.py --json {out}",
+    "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
 }
 
@@ -333,6 +334,21 @@ def _measured_on(record: dict) -> str:
         f"{k} {v}" for k, v in record.get("versions", {}).items())
 
 
+def _stage_seconds(path: Path) -> str:
+    """The wall time of each stage a benchmark records under ``seconds`` (with the machine's
+    load average: it may be shared), as a second table."""
+    if path.suffix != ".json":
+        return ""
+    record = json.loads(path.read_text(encoding="utf-8"))
+    if "seconds" not in record:
+        return ""
+    frame = pd.DataFrame({"stage": list(record["seconds"]),
+                          "wall time [s]": list(record["seconds"].values())})
+    load = record.get("load_average_before")
+    return ("\nWall time of each stage" + (f" (load average {load[0]:.1f} before)" if load
+                                           else "") + ":\n\n" + markdown_table(frame, 3))
+
+
 def benchmark_tables() -> None:
     """One Markdown table per benchmark result in ``docs/measured/``, with the command that
     measured it; a benchmark not run yet gets a note saying how to run it."""
@@ -346,6 +362,7 @@ def benchmark_tables() -> None:
         else:
             frame, measured = _benchmark_frame(path)
             text = (f"`python {shown}`; measured {measured}.\n\n" + markdown_table(frame, 6)
+                    + _stage_seconds(path)
                     + source_note(f"`docs/measured/{name}`", "make bench-docs"))
         write(OUT / f"bench_{path.stem}.md", text)
 

@@ -372,8 +372,10 @@ def _banners(runs: list[_Run]) -> str:
         out.append(f"SIMULATED: {which} came from the simulated bench (a model with noise), "
                    "not from a measurement.")
     for r in runs:
-        theta0 = r.muscle.get("theta0_deg")
-        lock = braid_lock(theta0, r.calibration)
+        try:
+            lock = braid_lock(r.muscle.get("theta0_deg"), r.calibration)
+        except ValueError:  # a calibration file without the FE model's angle: no lock known
+            continue
         if r.muscle.get("eps", 0.0) >= lock.eps_max:
             out.append(f"Run {r.k} is held at eps {r.eps_pct:.1f} %, past the braid lock: "
                        f"{lock}. No model is valid there: the braid cannot shorten so far, so "
@@ -646,11 +648,15 @@ def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
                       if m.get(k) is not None}
             auto = AutoModel(tolerance=tolerance,
                              build=partial(build_spec, calibration=r.calibration), **muscle)
-            chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
-            used = str(chosen["model_used"][0])
-            choice = AutoPick(spec_of(used), model_label(used),
-                              float(np.nanmax(chosen["error_bound_pct"])),
-                              explain(chosen, tolerance, model_label))
+            try:
+                chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
+            except ValueError:  # a candidate without a calibration in this command: no choice
+                chosen = None
+            if chosen is not None:
+                used = str(chosen["model_used"][0])
+                choice = AutoPick(spec_of(used), model_label(used),
+                                  float(np.nanmax(chosen["error_bound_pct"])),
+                                  explain(chosen, tolerance, model_label))
         r.auto_choices[tolerance] = choice
     return r.auto_choices[tolerance]
 

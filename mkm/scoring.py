@@ -93,7 +93,9 @@ def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.Dat
         "force_meas_std_N": steps["force_N_std"].to_numpy(),
         "force_N": force, "valid": valid, "settled": steps["settled"].to_numpy(),
     })
-    rows["err_pct"] = equation7_err_pct(rows["force_meas_N"], rows["force_N"], scale)
+    # a run without force (a slack muscle all the way) has no Err%; its residuals still count
+    rows["err_pct"] = (equation7_err_pct(rows["force_meas_N"], rows["force_N"], scale)
+                       if scale > 0 else np.nan)
     rows["residual_N"] = rows["force_meas_N"] - rows["force_N"]
     for key, value in prediction.extras.items():
         rows[key] = np.ravel(value)

@@ -281,8 +281,10 @@ def _vent(args) -> int:
 
 
 def _reprocess(args) -> int:
+    from mkm.bench.folders import one_run_folder
     from mkm.bench.reprocess import overlay_config, reprocess
 
+    args.run_dir = one_run_folder(args.run_dir)
     path = reprocess(args.run_dir, overlay_config(args.run_dir, args.config), args.out)
     print(path)
     return 0

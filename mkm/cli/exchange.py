@@ -5,36 +5,64 @@ Argument parsing only: :mod:`mkm.bench.exchange` does the work.
 
 from __future__ import annotations
 
-from mkm.cli.common import add_muscle_arguments
+from mkm.cli.common import argtype, shared_help
+from mkm.core.ranges import parse_fraction, parse_number
 
-IMPORT_EXAMPLE = ("example: mkm import lab.xlsx --id lab-muscle-7 --D0 30 --t0 3 --L0 282 "
-                  "--eps 12.2% --columns pressure=P_bar,force=F_N")
+IMPORT_EXAMPLE = ("examples: mkm import lab.csv --id lab-muscle-7 --D0 30 --t0 3 --L0 282 "
+                  "--eps 12.2%   (header 'Pressure (kPa);Force (N)' read and converted); "
+                  "mkm import forcemaps.csv --id dmsp-20 --D0 20 --t0 1.8 --muscle "
+                  "\"Festo DMSP-20-300\"   (one run per length)")
 EXPORT_EXAMPLE = "example: mkm export mkm-out/demo/runs/<run> --format xlsx --out run.xlsx"
 
 
 def register(subparsers) -> None:
     imp = subparsers.add_parser(
-        "import", help="a table of forces measured elsewhere (CSV or Excel) as a run folder",
-        description="Read a CSV or .xlsx table (one row per step: pressure [bar], force [N], "
-        "optionally direction up/down and the force's standard deviation [N]) and write a run "
-        "folder with status 'imported' that report, calibrate and identify read. Columns are "
-        "found by name (pressure_bar, force_N, direction, force_std_N, any case) or named "
-        "with --columns.", epilog=IMPORT_EXAMPLE)
-    imp.add_argument("table", help="the CSV or .xlsx file")
-    imp.add_argument("--id", required=True, help="the muscle's id (names the run folder)")
-    add_muscle_arguments(imp, length=True)
+        "import", help="a table of forces measured elsewhere (CSV, TSV or Excel) as run folders",
+        description="Read the table a lab has (CSV, TSV or semicolon CSV with decimal commas, "
+        "or every sheet of an .xlsx workbook; a title row above the header is skipped) and "
+        "write one run folder per muscle state (a sheet, or a value of an eps, length, L0 or "
+        "run column), status 'imported', that report, calibrate, identify and export read. "
+        "Columns are recognised by name and unit (P, Pressure (bar), pressure [kPa], p_psi, "
+        "Force (N), F [kgf], load_lbf, t (s), direction, eps, contraction (%), length (mm)) "
+        "and converted with pint; what was recognised is printed and recorded in run.json. A "
+        "table with a time column is a time series: stored as samples, its steps the plateaus "
+        "of a staircase or quasi-static bins of a ramp (rising and falling apart).",
+        epilog=IMPORT_EXAMPLE)
+    imp.add_argument("table", help="the CSV, TSV or .xlsx file")
+    imp.add_argument("--id", help="the muscle's id (names the run folders; default: the one "
+                     "in a workbook written by mkm export)")
+    imp.add_argument("--D0", type=argtype(parse_number, "--D0"), help=shared_help("--D0"))
+    imp.add_argument("--t0", type=argtype(parse_number, "--t0"), help=shared_help("--t0"))
+    imp.add_argument("--L0", type=argtype(parse_number, "--L0"),
+                     help=shared_help("--L0", "default: the table's L0 column"))
+    imp.add_argument("--eps", type=argtype(parse_fraction),
+                     help=shared_help("--eps", "default: the table's eps or length column"))
     imp.add_argument("--columns", default=None, metavar="ROLE=COLUMN,...",
-                     help="which column holds what: pressure=..., force=..., direction=..., "
-                     "force_std=...")
+                     help="which column holds what, where the names do not say: pressure=..., "
+                     "force=..., time=..., direction=..., eps=..., length=..., run=...")
+    imp.add_argument("--units", default=None, metavar="ROLE=UNIT,...",
+                     help="the unit of a column whose header names none or the wrong one, "
+                     "e.g. pressure=kPa,force=lbf (default: bar, N, s, mm, a fraction)")
+    imp.add_argument("--sheet", default=None, help="the workbook's sheet (default: every sheet "
+                     "with a pressure and a force column, one run each)")
+    imp.add_argument("--muscle", default=None, metavar="NAME",
+                     help="the muscle to import where the table's muscle column holds several")
+    imp.add_argument("--tare", default="auto", metavar="auto|none|N",
+                     help="the force's zero: the force at the lowest pressure of the rising "
+                     "branch (auto; a step table only with a 0 bar row), none, or a value [N]")
+    imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
+                     help="what the pressure reads vented, subtracted from a time series: "
+                     "detected at its start (auto), none, or a value [bar]")
     imp.add_argument("--out", default=None,
-                     help="folder to put the run folder in (default: mkm-out/runs)")
+                     help="folder to put the run folders in (default: mkm-out/runs)")
     imp.set_defaults(func=_import)
 
     exp = subparsers.add_parser(
         "export", help="a run folder as one Excel workbook or three CSV files",
         description="Write a run's steps, samples and metadata (run.json flattened to key, "
         "value) as one .xlsx workbook with three sheets, or as steps.csv, samples.csv and "
-        "metadata.csv in a folder; text cells are spreadsheet-safe.", epilog=EXPORT_EXAMPLE)
+        "metadata.csv in a folder; text cells are spreadsheet-safe. mkm import reads the "
+        "workbook back.", epilog=EXPORT_EXAMPLE)
     exp.add_argument("run", help="the run folder")
     exp.add_argument("--format", default="xlsx", choices=("xlsx", "csv"))
     exp.add_argument("--out", default=None,
@@ -43,17 +71,27 @@ def register(subparsers) -> None:
 
 
 def _import(args) -> int:
-    from mkm.bench.exchange import import_table, parse_columns
-    from mkm.bench.storage import muscle_from_dict
+    from mkm.bench.exchange import import_table, parse_zero
+    from mkm.bench.tables import parse_assignments
     from mkm.paths import default_out
     from mkm.progress import summary_line
 
-    muscle = muscle_from_dict({"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0,
-                                  "L0_mm": args.L0, "eps": args.eps}, "the muscle")
-    path = import_table(args.table, muscle, args.out or default_out("runs"),
-                        parse_columns(args.columns))
-    summary_line("import", f"{args.table} as an imported run")
-    print(path)
+    lines: list[str] = []
+    runs = import_table(
+        args.table, args.out or default_out("runs"),
+        {"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0, "L0_mm": args.L0,
+         "eps": args.eps},
+        columns=parse_assignments(args.columns, "--columns"),
+        units=parse_assignments(args.units, "--units"), sheet=args.sheet,
+        tare=parse_zero(args.tare, "--tare", "N"), vented=parse_zero(args.vented, "--vented",
+                                                                       "bar"),
+        select=args.muscle, notify=lines.append)
+    for line in lines:  # after the import: bad input stays one line
+        summary_line("import", line)
+    for run in runs:
+        summary_line("import", run.line())
+    for run in runs:
+        print(run.path)
     return 0
 
 
@@ -61,8 +99,10 @@ def _export(args) -> int:
     from pathlib import Path
 
     from mkm.bench.exchange import export_run
+    from mkm.bench.folders import one_run_folder
     from mkm.paths import default_out
 
+    args.run = one_run_folder(args.run)
     name = Path(args.run).name
     out = args.out or default_out("export", name + (".xlsx" if args.format == "xlsx" else ""))
     print(export_run(args.run, out, args.format))

@@ -156,6 +156,10 @@ def _calibrate(args) -> int:
     from mkm.fem.paper import CASE_I_CSV
 
     args.reference = args.reference or str(CASE_I_CSV)
+    if any(c in args.reference for c in "*?"):
+        from mkm.bench.folders import one_run_folder
+
+        args.reference = str(one_run_folder(args.reference))
     reference, name, sha256 = calibration_reference(args.reference)
     overrides = {}
     if "L0_mm" in reference and getattr(args, "L0", None) is None:

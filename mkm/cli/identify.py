@@ -26,7 +26,9 @@ def register(subparsers) -> None:
         "identification.json.",
         epilog="example: mkm identify RUN_EPS0 RUN_EPS12 --out mkm-out/identify; then "
         "mkm report RUN_EPS0 RUN_EPS12 --calibration mkm-out/identify/calibration.json")
-    parser.add_argument("runs", nargs="+", metavar="RUN_DIR", help="run folders of one muscle")
+    parser.add_argument("runs", nargs="+", metavar="RUN_DIR",
+                        help="run folders of one muscle; a pattern (runs/*, expanded by mkm in "
+                        "any shell) or a folder holding run folders")
     parser.add_argument("--params", default="theta0,rubber,friction,creep",
                         help="what to fit, a comma list of theta0, rubber, friction, creep, "
                         "gap (default all but gap; gap needs --model thickwall)")
@@ -47,8 +49,10 @@ def register(subparsers) -> None:
 def _identify(args) -> int:
     from pathlib import Path
 
+    from mkm.bench.folders import run_folders
     from mkm.identify import identify
 
+    args.runs = run_folders(args.runs)
     try:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
                           seed=args.seed, workers=args.workers, scheduler=args.scheduler,

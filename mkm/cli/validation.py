@@ -22,9 +22,11 @@ def register(subparsers) -> None:
         "against time, Err% (Equation 7) and residuals in N, the speed-accuracy chart and the "
         "model `auto` would choose. Writes report.html (self-contained) with CSVs, PNGs and "
         "provenance.json beside it; prints the path of report.html last.",
-        epilog="example: mkm report mkm-out/demo/runs/* --models eq2,thickwall,surrogate "
+        epilog="example: mkm report \"mkm-out/demo/runs/*\" --models eq2,thickwall,surrogate "
         "--out mkm-out/my-report")
-    report.add_argument("runs", nargs="+", metavar="RUN_DIR", help="run folder(s) of mkm acquire")
+    report.add_argument("runs", nargs="+", metavar="RUN_DIR",
+                        help="run folder(s) of mkm acquire or mkm import; a pattern (runs/*, "
+                        "expanded by mkm in any shell) or a folder holding run folders")
     report.add_argument("--models", default="eq2,thickwall,axisym,surrogate",
                         help="comma list of predictor specs (see `mkm models`): eq2, thickwall, "
                         "axisym:mesh=coarse, surrogate, surrogate:kind=gp, surrogate:path=DIR "
@@ -96,11 +98,13 @@ def _cache(args):
 
 
 def _report(args) -> int:
+    from mkm.bench.folders import run_folders
     from mkm.progress import summary_line
     from mkm.registry import parse_specs
     from mkm.report import build_report
 
     start = time.perf_counter()
+    args.runs = run_folders(args.runs)
     specs = parse_specs(args.models)
     path = build_report(args.runs, specs, out_dir=args.out, cache_dir=_cache(args),
                         tolerance=args.tolerance, progress=not args.no_progress,

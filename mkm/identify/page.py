@@ -76,7 +76,9 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
                                  "minus model, nominal and identified."))
         scale = float(np.max(run.steps["force_N_mean"]))
         for label, predicted in (("nominal", before), ("identified", after)):
-            err = 100 * (run.steps["force_N_mean"].to_numpy() - predicted) / scale
+            # a run without force (slack all the way) has no Err%
+            err = (100 * (run.steps["force_N_mean"].to_numpy() - predicted) / scale
+                   if scale > 0 else np.full(len(predicted), np.nan))
             up = run.steps["direction"].to_numpy() == "up"
             rows.append({"run": run.name, "model": label,
                          "largest |Err%| rising": np.max(np.abs(err[up])) if up.any() else np.nan,

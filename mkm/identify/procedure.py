@@ -75,23 +75,40 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
     if search not in SEARCHES:
         raise ValueError(f"search={search!r} is invalid: expected one of {', '.join(SEARCHES)}")
     runs = load_runs(run_dirs)
+    groups, notes = supported_groups(groups, runs)
     with Runner(workers, scheduler) as runner:
         fe = ModelStatic(model, float(runs[0].muscle["L0_mm"]), runner, cache_dir)
         if "gap" in groups and "gap_mm" not in fe.spec.entry.parameters:
             raise ValueError(f"--params gap needs a model with a gap between tube and braid: "
                              f"--model {model!r} has none (expected thickwall)")
-        result = _identify(runs, groups, fe, search, surrogate, seed, notify, started,
+        result = _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                            calibration)
         result.fe_workers = runner.describe()
     return result
 
 
-def _identify(runs, groups, fe, search, surrogate, seed, notify, started, calibration):
+def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
+    """The groups the runs can tell, and a note for each left out: friction needs a rising and
+    a falling branch, creep holds of known duration (:attr:`RunData.timed`)."""
+    kept, notes = list(groups), []
+    if "friction" in kept and not any({"up", "down"} <= set(r.steps["direction"]) for r in runs):
+        kept.remove("friction")
+        notes.append("friction not fitted: no run has both a rising and a falling branch")
+    if "creep" in kept and not any(r.timed for r in runs):
+        kept.remove("creep")
+        notes.append("creep not fitted: no run has timed holds (a step table or a ramp)")
+    if not kept:
+        raise ValueError(f"--params {','.join(groups)}: nothing these runs can tell ("
+                         + "; ".join(notes) + ")")
+    return tuple(kept), notes
+
+
+def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration):
     L0_mm = fe.L0_mm
     nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
                                      .params()["theta0_deg"])
     names = [n for g in groups for n in GROUPS[g]]
-    notes: list[str] = []
+    notes = list(notes)
     source = fe
     if search == "surrogate" and "gap_mm" in names:
         notes.append(f"the surrogate has no gap between tube and braid: searched with {fe.name}")

@@ -4,6 +4,12 @@ Only what a real bench records is read: the muscle (``D0_mm``, ``t0_mm``, ``L0_m
 ``steps.csv`` (which steps settled, their direction and hold window) and ``samples.csv`` (the
 pressure and force traces). A simulated run's ``[sim]`` settings are never read: they hold the
 truth the identification is tested against.
+
+An imported step table (``mkm import``: one row per step, no samples) is read as one sample per
+step, at the step's mean pressure and force, one second apart: the friction play operator
+depends on the order of the pressures, not on time, and its holds are not timed, so creep is
+not fitted from it (:attr:`RunData.timed`). Nor from an imported ramp, whose steps are bins of
+a continuous sweep rather than holds.
 """
 
 from __future__ import annotations
@@ -42,6 +48,7 @@ class RunData:
     steps: pd.DataFrame
     sha256: dict
     tare_se_N: float = 0.0
+    timed: bool = True  # the holds have their real durations (creep can be fitted)
 
     @property
     def name(self) -> str:
@@ -90,6 +97,9 @@ def load_run_data(path) -> RunData:
                          "with settled = true in steps.csv")
     samples = run.samples
     samples = samples[np.isfinite(samples["force_N"]) & np.isfinite(samples["pressure_bar"])]
+    imported = run.meta.imported_from or {}
+    if samples.empty and str(run.status) == "imported":
+        return _from_steps(path, run, settled)
     if samples.empty:
         raise ValueError(f"run {path.name} has no finite sample in samples.csv: expected the "
                          "force and pressure traces")
@@ -112,7 +122,7 @@ def load_run_data(path) -> RunData:
                           else np.maximum(pressure[ramp], bound))
     if not (hold >= 0).any():
         raise ValueError(f"run {path.name}: no sample lies in a settled step's hold window")
-    muscle = run.meta.muscle.record()
+    muscle = _muscle(run)
     tare = samples.loc[samples["phase"] == "tare", "force_N"].to_numpy(dtype=float)
     tare_se = float(np.std(tare, ddof=1) / np.sqrt(tare.size)) if tare.size > 1 else 0.0
     sha = {name: file_sha256(path / name) for name in ("steps.csv", "samples.csv")
@@ -121,7 +131,25 @@ def load_run_data(path) -> RunData:
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=settled[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
                                   "force_N_mean", "hold_start_s", "end_s"]], sha256=sha,
-                   tare_se_N=tare_se)
+                   tare_se_N=tare_se, timed=imported.get("shape") != "ramp")
+
+
+def _muscle(run) -> dict:
+    return run.meta.muscle.record()
+
+
+def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
+    """An imported step table as one sample per step (see the module docstring)."""
+    settled = settled.reset_index(drop=True)
+    time_s = np.arange(len(settled), dtype=float)
+    steps = settled.assign(hold_start_s=time_s, end_s=time_s)
+    return RunData(path=path, muscle=_muscle(run), time_s=time_s,
+                   pressure_bar=settled["pressure_bar_mean"].to_numpy(dtype=float),
+                   force_N=settled["force_N_mean"].to_numpy(dtype=float),
+                   hold=np.arange(len(settled)),
+                   steps=steps[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
+                                "force_N_mean", "hold_start_s", "end_s"]],
+                   sha256={"steps.csv": file_sha256(path / "steps.csv")}, timed=False)
 
 
 def load_runs(paths) -> list[RunData]:

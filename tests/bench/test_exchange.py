@@ -74,22 +74,6 @@ def test_directions_are_inferred_and_names_found(tmp_path, capsys):
     assert steps["direction"].tolist() == ["up"] * 5 + ["down"] * 2  # after the top: down
 
 
-@pytest.mark.parametrize("content, argv, message", [
-    ("a,b\n1,2\n", [], "no pressure or force column found among a, b"),
-    ("pressure_bar,force_N\n1,x\n", [], "force column 'force_N', row 2: 'x' is not a finite"),
-    ("pressure_bar,force_N\n-1,2\n", [], "pressure_bar=-1 is invalid"),
-    ("pressure_bar,force_N\n1,2\n", ["--columns", "force=F"], "--columns force='F': no such"),
-    ("pressure_bar,force_N\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
-])
-def test_bad_tables_are_one_line(content, argv, message, tmp_path, capsys):
-    table = tmp_path / "bad.csv"
-    table.write_text(content)
-    code, out, err = _run(["import", str(table), *MUSCLE, *argv, "--out", str(tmp_path)],
-                          capsys)
-    assert code == 2 and out == "" and message in err and err.count("\n") == 1
-    assert not any(p.is_dir() for p in tmp_path.iterdir())  # no folder left behind
-
-
 def test_export_as_workbook_and_csv(tmp_path, capsys):
     table = tmp_path / "lab.csv"
     _table().rename(columns={"P [bar]": "pressure_bar", "Kraft N": "force_N",

@@ -1,0 +1,68 @@
+"""Run folders named on a command line: patterns and parent folders expanded by mkm itself.
+
+Windows ``cmd`` and PowerShell hand ``mkm-out/runs/*`` to a program as it is typed (only a POSIX
+shell expands it), so every command that takes run folders passes its arguments through
+:func:`run_folders`: the same line works in ``cmd``, PowerShell and bash.
+"""
+
+from __future__ import annotations
+
+import glob
+from pathlib import Path
+
+RUN_RECORD = "run.json"
+PATTERN_CHARACTERS = ("*", "?")
+
+
+def is_run_folder(path: Path) -> bool:
+    return (path / RUN_RECORD).is_file()
+
+
+def _children(folder: Path) -> list[Path]:
+    """The run folders directly inside ``folder``, by name (a time stamp: oldest first)."""
+    return sorted((p for p in folder.iterdir() if p.is_dir() and is_run_folder(p)),
+                  key=lambda p: p.name)
+
+
+def run_folders(arguments) -> list[Path]:
+    """The run folders ``arguments`` name, in order, each once.
+
+    An argument with ``*`` or ``?`` is a pattern (:func:`glob.glob`), its matches sorted; a
+    folder that is not a run folder but holds run folders stands for them; anything else is
+    passed on as it is (the loader says what is wrong with it). ``ValueError`` for a pattern or
+    folder that names no run folder.
+    """
+    out: list[Path] = []
+    for argument in map(str, arguments):
+        if any(c in argument for c in PATTERN_CHARACTERS):
+            matches = [Path(m) for m in sorted(glob.glob(argument))]
+            found = []
+            for match in matches:
+                if is_run_folder(match):
+                    found.append(match)
+                elif match.is_dir():
+                    found += _children(match)
+            if not found:
+                raise ValueError(f"{argument} matches no run folder ({len(matches)} match(es) "
+                                 f"without {RUN_RECORD}): expected run folders of mkm acquire "
+                                 "or mkm import")
+            out += found
+            continue
+        path = Path(argument)
+        if path.is_dir() and not is_run_folder(path):
+            inside = _children(path)
+            if not inside:
+                raise ValueError(f"{path} is not a run folder ({RUN_RECORD} is missing) and "
+                                 "holds none: expected a run folder or a folder of them")
+            out += inside
+        else:
+            out.append(path)
+    return list(dict.fromkeys(out))
+
+
+def one_run_folder(argument) -> Path:
+    """The single run folder ``argument`` names (a pattern must match exactly one)."""
+    found = run_folders([argument])
+    if len(found) != 1:
+        raise ValueError(f"{argument} names {len(found)} run folders: expected one")
+    return found[0]

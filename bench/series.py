@@ -1,0 +1,191 @@
+"""Steps from a time series another lab recorded: a pressure staircase or a continuous ramp.
+
+A lab's record is pressure and force sampled in time. Before any step is taken from it:
+
+- :func:`vented_offset`: the pressure the record reads while the muscle is vented (its first
+  samples, before the pressure starts to rise); a gauge that reads 0.5-1 bar at rest is
+  detected, and by default that reading is the record's zero;
+- :func:`tare`: the force at the lowest pressure of the rising branch is the force's zero
+  (a load cell is rarely at 0 N when the muscle is slack).
+
+Then :func:`shape` tells a staircase (the pressure held on plateaus most of the time) from a
+ramp, and the steps are taken:
+
+- :func:`staircase_steps`: each plateau is a step, its settling judged by the bench's own test
+  (:func:`mkm.bench.sequence.settle_reached`, with the packaged configuration's ``[settle]``
+  criteria) and its hold averaged by the bench's :class:`mkm.bench.sequence.HoldStats`; a
+  plateau that never settles is averaged over its second half and recorded ``settled = false``;
+- :func:`ramp_steps`: quasi-static points, the samples binned by pressure on each branch apart
+  (rising up to the highest pressure, falling after it), each bin a step with its samples'
+  mean; a branch's bins follow each other in time, as the holds of a staircase do.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from mkm.bench.sequence import HoldStats, settle_reached
+from mkm.bench.storage import StepRecord
+
+#: a plateau: the pressure within this of its median [bar] ...
+PLATEAU_TOLERANCE_BAR = 0.03
+#: ... for at least this long [s]
+PLATEAU_MIN_S = 2.0
+#: a staircase holds its plateaus at least this share of the record's time
+STAIRCASE_SHARE = 0.5
+#: a vented reading at least this far above zero is reported [bar]
+VENTED_THRESHOLD_BAR = 0.02
+#: quasi-static bins of a ramp: this many over its pressure range, at least this wide [bar]
+RAMP_BINS = 20
+RAMP_MIN_BIN_BAR = 0.02
+
+
+@dataclass
+class Plateau:
+    """Samples ``start`` to ``stop`` (exclusive) held near ``level_bar``."""
+
+    start: int
+    stop: int
+    level_bar: float
+
+
+def plateaus(time_s: np.ndarray, pressure_bar: np.ndarray,
+             tolerance_bar: float = PLATEAU_TOLERANCE_BAR,
+             min_s: float = PLATEAU_MIN_S) -> list[Plateau]:
+    """Runs of consecutive samples within ``tolerance_bar`` of their running median, lasting at
+    least ``min_s`` s."""
+    out, start = [], 0
+    n = pressure_bar.size
+    while start < n:
+        stop = start + 1
+        level = pressure_bar[start]
+        while stop < n and abs(pressure_bar[stop] - level) <= tolerance_bar:
+            stop += 1
+            if (stop - start) % 16 == 0:  # a running median: noise does not drag the level
+                level = float(np.median(pressure_bar[start:stop]))
+        if time_s[stop - 1] - time_s[start] >= min_s:
+            out.append(Plateau(start, stop, float(np.median(pressure_bar[start:stop]))))
+            start = stop
+        else:
+            start += 1
+    return out
+
+
+def rising_end(pressure_bar: np.ndarray) -> int:
+    """Index after the last sample of the rising branch (the first highest pressure)."""
+    return int(np.argmax(pressure_bar)) + 1
+
+
+def vented_offset(time_s: np.ndarray, pressure_bar: np.ndarray) -> float:
+    """The pressure the record reads vented [bar]: the median of its first plateau when that
+    plateau starts the record and is its lowest level, else 0 (the record starts pressurised)."""
+    found = plateaus(time_s, pressure_bar, min_s=min(PLATEAU_MIN_S, 0.5))
+    if not found or found[0].start != 0:
+        return 0.0
+    level = found[0].level_bar
+    if level > np.percentile(pressure_bar, 5) + PLATEAU_TOLERANCE_BAR:
+        return 0.0
+    return level if level >= VENTED_THRESHOLD_BAR else 0.0
+
+
+def tare(pressure_bar: np.ndarray, force_N: np.ndarray) -> tuple[float, float]:
+    """The force's zero [N]: the mean force of the rising branch's samples within
+    :data:`PLATEAU_TOLERANCE_BAR` of its lowest pressure; and that pressure [bar]."""
+    rising = slice(0, rising_end(pressure_bar))
+    p, f = pressure_bar[rising], force_N[rising]
+    low = float(p.min())
+    return float(f[p <= low + PLATEAU_TOLERANCE_BAR].mean()), low
+
+
+def shape(time_s: np.ndarray, pressure_bar: np.ndarray) -> str:
+    """``"staircase"`` when plateaus above the vented level hold at least
+    :data:`STAIRCASE_SHARE` of the pressurised time and there are two or more, else
+    ``"ramp"``."""
+    low = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
+    pressurised = pressure_bar > low
+    if not pressurised.any():
+        return "ramp"
+    held = [q for q in plateaus(time_s, pressure_bar) if q.level_bar > low]
+    dt = np.diff(time_s, append=time_s[-1])
+    held_s = sum(float(dt[q.start:q.stop].sum()) for q in held)
+    return "staircase" if len(held) >= 2 and held_s >= STAIRCASE_SHARE * float(
+        dt[pressurised].sum()) else "ramp"
+
+
+def staircase_steps(time_s, pressure_bar, force_N, settle_config) -> tuple[list[StepRecord],
+                                                                            np.ndarray]:
+    """The steps of a staircase (module docstring) and each sample's step (-1: between
+    steps). ``settle_config``: a :class:`mkm.bench.config.BenchConfig` whose ``[settle]``
+    judges the plateaus."""
+    low = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
+    held = [q for q in plateaus(time_s, pressure_bar) if q.level_bar > low]
+    step_of = np.full(time_s.size, -1)
+    records, previous = [], 0.0
+    repeats: dict[tuple[str, float], int] = {}
+    for k, q in enumerate(held):
+        t, f, p = time_s[q.start:q.stop], force_N[q.start:q.stop], pressure_bar[q.start:q.stop]
+        direction = "up" if q.level_bar >= previous else "down"
+        previous = q.level_bar
+        settle_at, settled = _settle_index(t, f, p, q.level_bar, settle_config)
+        hold = HoldStats()
+        for j in range(settle_at, t.size):
+            hold.add(float(t[j]), float(f[j]), float(p[j]))
+        key = (direction, round(q.level_bar, 2))
+        repeats[key] = repeats.get(key, -1) + 1
+        step_of[q.start:q.stop] = k
+        records.append(StepRecord(
+            k, direction, repeats[key], round(q.level_bar, 4), hold.pressure_mean, hold.mean,
+            hold.std, hold.n, settled, float(t[settle_at] - t[0]), float(t[0]), float(t[-1]),
+            hold.drift_N))
+    return records, step_of
+
+
+def _settle_index(t, f, p, level_bar, config) -> tuple[int, bool]:
+    """The first sample of the hold: where the bench's settle test first passes, judged once
+    per second of data after ``settle.min_dwell_s`` (or the plateau's half, if that is
+    shorter); the second half of the plateau when it never passes."""
+    start = min(config.settle.min_dwell_s, 0.5 * (t[-1] - t[0]))
+    check = t[0] + start
+    for j in range(1, t.size):
+        if t[j] < check:
+            continue
+        if settle_reached(t[:j + 1], f[:j + 1], p[:j + 1], level_bar, config):
+            return j, True
+        check = t[j] + 1.0
+    return t.size // 2, False
+
+
+def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndarray, float]:
+    """The quasi-static points of a ramp (module docstring), each sample's step (-1: none),
+    and the bin width [bar]."""
+    top = rising_end(pressure_bar)
+    low, high = float(pressure_bar.min()), float(pressure_bar.max())
+    width = max((high - low) / RAMP_BINS, RAMP_MIN_BIN_BAR)
+    step_of = np.full(time_s.size, -1)
+    records: list[StepRecord] = []
+    for direction, part in (("up", slice(0, top)), ("down", slice(top, time_s.size))):
+        p = pressure_bar[part]
+        if p.size == 0:
+            continue
+        index = np.floor((p - low) / width).clip(0, RAMP_BINS - 1).astype(int)
+        # each bin one stretch of time: a sample the noise drops back a bin stays in this one
+        index = np.maximum.accumulate(index) if direction == "up" else \
+            np.minimum.accumulate(index)
+        offset = part.start
+        for b in (np.unique(index) if direction == "up" else np.unique(index)[::-1]):
+            members = np.flatnonzero(index == b) + offset
+            if members.size < 2:
+                continue
+            hold = HoldStats()
+            for j in members:
+                hold.add(float(time_s[j]), float(force_N[j]), float(pressure_bar[j]))
+            k = len(records)
+            step_of[members] = k
+            records.append(StepRecord(
+                k, direction, 0, round(low + (b + 0.5) * width, 4), hold.pressure_mean,
+                hold.mean, hold.std, hold.n, True, 0.0, float(time_s[members[0]]),
+                float(time_s[members[-1]]), math.nan))
+    return records, step_of, width

@@ -1,0 +1,551 @@
+"""Tables labs keep: read any common layout and recognise what each column holds, in what unit.
+
+- :func:`read_tables`: a ``.csv``/``.tsv``/``.txt`` file (separator ``,``, ``;`` or tab, decimal
+  commas detected, ``#`` comment lines and title rows above the header skipped) or an ``.xlsx``
+  workbook (every sheet, or one named) as :class:`RawTable` s of text and number cells, each cell
+  keeping its place in the file so that a bad one can be named (``lab.csv, cell B7``).
+- :func:`parse_header`: a header such as ``Pressure (bar)``, ``pressure [kPa]``, ``p_psi``,
+  ``F [kgf]``, ``load_lbf``, ``t (s)`` or ``contraction (%)`` as a name and a unit.
+- :func:`recognise`: which column holds each :data:`ROLES` entry (the name matched against the
+  role's spellings, the unit checked to have the role's dimension), ``--columns`` and
+  ``--units`` overriding.
+- :func:`column_values`: a recognised column's cells as numbers in the toolkit's unit
+  (bar, N, s, mm, fraction), converted by pint.
+
+Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
+workbook's cached values, never its formulas).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import re
+from dataclasses import dataclass, field
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+
+#: the largest table read (rows below the header, over all sheets)
+MAX_ROWS = 2_000_000
+SEPARATORS = (",", ";", "\t")
+STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual"}
+
+
+@dataclass(frozen=True)
+class Role:
+    """What a column may hold: the spellings of its name, its unit (``None``: text or flags)."""
+
+    names: tuple[str, ...]
+    unit: str | None = None  # the toolkit's unit; "" is a dimensionless fraction
+
+
+#: every column a lab's table may have -> the names it goes by (lower case, words joined by one
+#: space) and the toolkit's unit
+ROLES = {
+    "pressure": Role(("p", "pressure", "pres", "druck"), "bar"),
+    "force": Role(("f", "force", "load", "kraft", "tension"), "N"),
+    "time": Role(("t", "time", "zeit", "elapsed", "elapsed time"), "s"),
+    "direction": Role(("direction", "dir", "branch", "sweep")),
+    "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
+    "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
+                 "shortening ratio", "contraction ratio"), ""),
+    "length": Role(("l", "length", "held length", "laenge"), "mm"),
+    "L0": Role(("l0", "rest length", "initial length", "length at rest"), "mm"),
+    "run": Role(("run", "run id", "test", "trial", "series")),
+    "muscle": Role(("muscle", "muscle id", "actuator", "specimen")),
+    "slack": Role(("zero entry", "slack")),
+}
+#: the direction words a table may use -> the run folder's ``up``/``down``
+DIRECTION_WORDS = {"up": "up", "rising": "up", "increasing": "up", "loading": "up",
+                   "down": "down", "falling": "down", "decreasing": "down", "unloading": "down"}
+
+
+@dataclass
+class RawTable:
+    """One table as read: ``header`` and ``rows`` of cells (text or numbers), with the file row
+    of each (1-based, as a spreadsheet shows it)."""
+
+    source: Path
+    sheet: str | None
+    header: list[str]
+    header_row: int
+    rows: list[list]
+    row_numbers: list[int]
+    title_rows: int = 0
+    separator: str | None = None
+    decimal: str = "."
+
+    @property
+    def name(self) -> str:
+        return f"{self.source.name}, sheet {self.sheet!r}" if self.sheet else self.source.name
+
+    def cell(self, k: int, column: int) -> str:
+        """The spreadsheet reference of data row ``k``'s cell in ``column`` (``B7``)."""
+        return f"{_column_letters(column)}{self.row_numbers[k]}"
+
+    def describe(self) -> dict:
+        """What the reader found, for the run folder's provenance."""
+        return {"sheet": self.sheet, "header_row": self.header_row,
+                "title_rows": self.title_rows, "separator": self.separator,
+                "decimal": self.decimal, "rows": len(self.rows)}
+
+
+def _column_letters(index: int) -> str:
+    letters = ""
+    index += 1
+    while index:
+        index, rest = divmod(index - 1, 26)
+        letters = chr(ord("A") + rest) + letters
+    return letters
+
+
+# --- reading ----------------------------------------------------------------------------------
+
+_NUMBER = re.compile(r"^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$")
+_COMMA_DECIMAL = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
+
+
+def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
+    """The tables in ``path``: one for a text file, one per sheet of a workbook (or the sheet
+    named ``sheet``); ``ValueError`` naming the file when it cannot be read."""
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"{path}: no such file: expected a CSV, TSV or .xlsx table")
+    suffix = path.suffix.lower()
+    if suffix in (".xlsx", ".xlsm"):
+        return _read_workbook(path, sheet)
+    if suffix not in (".csv", ".tsv", ".txt"):
+        raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv, .tsv, .txt "
+                         "or .xlsx")
+    if sheet is not None:
+        raise ValueError(f"--sheet {sheet!r}: {path.name} is a text table, it has no sheets")
+    try:
+        text = path.read_bytes().decode("utf-8-sig")
+    except UnicodeDecodeError:
+        text = path.read_bytes().decode("latin-1")  # older Windows exports
+    except OSError as exc:
+        raise ValueError(f"{path} cannot be read ({exc.strerror or exc})") from None
+    return [_text_table(path, text)]
+
+
+def _text_table(path: Path, text: str) -> RawTable:
+    lines = [(k + 1, line) for k, line in enumerate(text.splitlines())
+             if line.strip() and not line.lstrip().startswith("#")]
+    if not lines:
+        raise ValueError(f"{path} is empty: expected a header row and one row per step or "
+                         "sample")
+    separator = _separator([line for _, line in lines])
+    parsed = [(n, cells) for n, (cells,) in
+              ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)]
+    decimal = "," if separator != "," and any(
+        _COMMA_DECIMAL.match(c.strip()) for _, cells in parsed[1:50] for c in cells) else "."
+    return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
+                        decimal)
+
+
+def _separator(lines: list[str]) -> str:
+    """The separator that splits the most lines into the same number (>= 2) of fields."""
+    best, score = ",", -1
+    for sep in SEPARATORS:
+        counts = [len(next(csv.reader([line], delimiter=sep))) for line in lines[:200]]
+        common = max(set(counts), key=counts.count)
+        agree = counts.count(common) if common >= 2 else 0
+        if agree > score:
+            best, score = sep, agree
+    return best
+
+
+def sheet_names(path: str | Path) -> list[str]:
+    """The sheets of the workbook ``path`` (empty for a text table)."""
+    import openpyxl
+
+    path = Path(path)
+    if path.suffix.lower() not in (".xlsx", ".xlsm"):
+        return []
+    try:
+        book = openpyxl.load_workbook(path, read_only=True)
+    except Exception:  # read_tables says what is wrong with it
+        return []
+    try:
+        return list(book.sheetnames)
+    finally:
+        book.close()
+
+
+def key_values(path: str | Path, sheet: str) -> dict[str, object]:
+    """A sheet of two columns (key, value) as a dict, the header row left out."""
+    import openpyxl
+
+    book = openpyxl.load_workbook(path, read_only=True, data_only=True)
+    try:
+        rows = list(book[sheet].iter_rows(values_only=True))
+    finally:
+        book.close()
+    return {str(r[0]): r[1] for r in rows[1:] if len(r) > 1 and r[0] is not None}
+
+
+def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
+    import openpyxl
+
+    try:
+        book = openpyxl.load_workbook(path, read_only=True, data_only=True)
+    except Exception as exc:  # openpyxl raises many kinds for a file that is not a workbook
+        raise ValueError(f"{path} cannot be read as a workbook ({type(exc).__name__}: "
+                         f"{str(exc)[:120]})") from None
+    try:
+        names = book.sheetnames
+        if sheet is not None and sheet not in names:
+            raise ValueError(f"--sheet {sheet!r}: {path.name} has no such sheet: it has "
+                             f"{', '.join(map(repr, names))}")
+        tables, problems = [], []
+        for name in [sheet] if sheet is not None else names:
+            numbers, rows = [], []
+            for n, row in enumerate(book[name].iter_rows(values_only=True), start=1):
+                cells = ["" if v is None else v for v in row]
+                if any(str(c).strip() for c in cells):
+                    numbers.append(n)
+                    rows.append(cells)
+                if len(rows) > MAX_ROWS:
+                    raise ValueError(f"{path}, sheet {name!r} has more than {MAX_ROWS} rows")
+            try:
+                tables.append(_with_header(path, name, numbers, rows, None, "."))
+            except ValueError as exc:  # a sheet of notes: skipped unless it was asked for
+                if sheet is not None:
+                    raise
+                problems.append(str(exc))
+    finally:
+        book.close()
+    if not tables:
+        raise ValueError(problems[0] if len(problems) == 1 else
+                         f"{path.name}: no sheet holds a table ({'; '.join(problems)[:300]})")
+    return tables
+
+
+def _is_number(cell) -> bool:
+    """A number, possibly with a decimal comma or a unit after it."""
+    return _number(cell, ",")[0] is not None
+
+
+def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
+    """The header is the row above the first row with two numbers; rows above it are titles."""
+    first_data = next((k for k, cells in enumerate(rows)
+                       if sum(_is_number(c) for c in cells) >= 2), None)
+    where = f"{path.name}, sheet {sheet!r}" if sheet else path.name
+    if first_data is None:
+        raise ValueError(f"{where} has no row of numbers: expected a header row and one row "
+                         "per step or sample")
+    if first_data == 0:
+        raise ValueError(f"{where} has no header row: expected column names above the numbers "
+                         "(pressure, force, ...)")
+    header_index = first_data - 1
+    width = max(len(r) for r in rows[first_data:])
+    header = [str(c).strip() for c in rows[header_index]] + [""] * width
+    data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:]]
+    if len(data) > MAX_ROWS:
+        raise ValueError(f"{where} has {len(data)} rows: expected at most {MAX_ROWS}")
+    return RawTable(path, sheet, header[:width], numbers[header_index], data,
+                    numbers[first_data:], header_index, separator, decimal)
+
+
+# --- recognising ------------------------------------------------------------------------------
+
+_BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}]*)[)\]}]\s*$")
+_WORDS = re.compile(r"[\s_\-./:]+")
+
+
+@cache
+def registry(case_sensitive: bool = True):
+    """A pint unit registry (made once each: parsing its definitions takes a fraction of a
+    second); the case-insensitive one reads ``KGF`` or ``n`` where a header shouts or
+    whispers."""
+    import pint
+
+    return pint.UnitRegistry(case_sensitive=case_sensitive)
+
+
+#: words of a header that pint would read as a unit but a header means as English
+NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
+
+
+def parse_unit(text: str):
+    """``text`` as a pint unit, or ``None`` if it is not one (case as written first, then any
+    case)."""
+    import pint
+
+    text = text.strip()
+    if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
+        return None
+    for case_sensitive in (True, False):
+        try:
+            return registry(case_sensitive).Unit(text)
+        except (pint.errors.PintError, AttributeError, TypeError, ValueError, KeyError,
+                AssertionError):
+            continue
+    return None
+
+
+def _fits(unit, role: Role) -> bool:
+    return (unit is not None and role.unit is not None
+            and unit.dimensionality == registry().Unit(role.unit or "dimensionless").dimensionality)
+
+
+def parse_header(text: str) -> tuple[str, str | None]:
+    """A column header as its name (lower case, words joined by one space, statistics words
+    such as ``mean`` dropped) and its unit as written (``None`` when it names none).
+
+    ``Pressure (bar)`` -> ``("pressure", "bar")``; ``p_psi`` -> ``("p", "psi")``;
+    ``force_N_mean`` -> ``("force", "N")``; ``eps`` -> ``("eps", None)``.
+    """
+    text = str(text).strip()
+    match = _BRACKETED.match(text)
+    if match and match.group("name").strip():
+        return _name(_WORDS.split(match.group("name"))), match.group("unit").strip() or None
+    words = [w for w in _WORDS.split(text) if w]
+    for k, word in enumerate(words[1:], start=1):
+        unit = parse_unit(word)
+        if unit is not None and any(_fits(unit, r) for r in ROLES.values()):
+            return _name(words[:k] + words[k + 1:]), word
+    return _name(words), None
+
+
+def _name(words) -> str:
+    return " ".join(w.lower() for w in words
+                    if w and w.lower() not in STAT_WORDS and w.lower() not in NOT_UNITS)
+
+
+@dataclass
+class Column:
+    """A recognised column: its index and header, its unit as read and the toolkit's."""
+
+    role: str
+    index: int
+    header: str
+    unit: str | None = None  # as the table (or --units) says; None: the toolkit's own
+    given: bool = False  # named by --columns
+
+    def describe(self) -> dict:
+        role_unit = ROLES[self.role].unit
+        return {"column": self.header, "unit": self.unit if self.unit is not None else role_unit,
+                "converted_to": role_unit if role_unit else ("fraction" if role_unit == ""
+                                                             else None)}
+
+
+def parse_assignments(text: str | None, option: str) -> dict[str, str]:
+    """``pressure=P [bar],force=F`` (``--columns``, ``--units``) -> ``{"pressure": "P [bar]",
+    "force": "F"}``; ``ValueError`` naming a bad item."""
+    out = {}
+    for item in filter(None, (i.strip() for i in (text or "").split(","))):
+        role, sep, value = item.partition("=")
+        role = role.strip()
+        if not sep or role not in ROLES or not value.strip():
+            raise ValueError(f"{option} item {item!r} is invalid: expected ROLE=VALUE with ROLE "
+                             f"one of {', '.join(ROLES)}")
+        out[role] = value.strip()
+    return out
+
+
+def recognise(table: RawTable, columns: dict[str, str] | None = None,
+              units: dict[str, str] | None = None) -> dict[str, Column]:
+    """The column of each role found in ``table`` (see the module docstring).
+
+    ``columns`` names a role's column outright, ``units`` its unit. ``ValueError``: a
+    named column missing, two columns claiming one role, or a unit of the wrong dimension.
+    """
+    columns, units = columns or {}, units or {}
+    found: dict[str, Column] = {}
+    headers = table.header
+    for role, header in columns.items():
+        if header not in headers:
+            raise ValueError(f"--columns {role}={header!r}: {table.name} has no such column: "
+                             f"it has {_listed(headers)}")
+        found[role] = Column(role, headers.index(header), header, parse_header(header)[1], True)
+    taken = {c.index for c in found.values()}
+    for index, header in enumerate(headers):
+        if index in taken or not header:
+            continue
+        name, unit = parse_header(header)
+        role = next((r for r, spec in ROLES.items() if name in spec.names), None)
+        if role is None or role in columns:
+            continue
+        if role in found:
+            raise ValueError(f"{table.name}: two {role} columns, {found[role].header!r} and "
+                             f"{header!r}: choose one with --columns {role}=COLUMN")
+        found[role] = Column(role, index, header, unit)
+    for role, unit in units.items():
+        if role not in found:
+            raise ValueError(f"--units {role}={unit}: {table.name} has no {role} column "
+                             f"(found {_listed(c.header for c in found.values())})")
+        found[role].unit = unit
+    for column in found.values():
+        _check_unit(table, column)
+    return found
+
+
+def _check_unit(table: RawTable, column: Column) -> None:
+    role = ROLES[column.role]
+    if column.unit is None:
+        return
+    if role.unit is None:
+        raise ValueError(f"{table.name}: column {column.header!r} ({column.role}) takes no "
+                         f"unit, got {column.unit!r}")
+    unit = parse_unit(column.unit)
+    if not _fits(unit, role):
+        raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
+                         f"unit of {column.role} (expected one like "
+                         f"{role.unit or 'percent'})")
+
+
+def _listed(headers) -> str:
+    shown = [repr(str(h)) for h in headers if str(h)]
+    return ", ".join(shown) if shown else "no named column"
+
+
+def column_values(table: RawTable, column: Column, optional: bool = False) -> np.ndarray:
+    """The cells of ``column`` as numbers in the toolkit's unit (pint converts); ``ValueError``
+    naming the first cell that is text, not finite, or carries a unit other cells do not
+    (``optional``: an empty cell is NaN, a value not known)."""
+    role = ROLES[column.role]
+    raw = [row[column.index] for row in table.rows]
+    values = np.empty(len(raw))
+    inline: dict[str, int] = {}
+    for k, cell in enumerate(raw):
+        if optional and str(cell).strip() == "":
+            values[k] = math.nan
+            continue
+        number, unit = _number(cell, table.decimal)
+        if number is None:
+            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+                             f"{column.header!r}): {_shown(cell)} is not a number")
+        if not math.isfinite(number):
+            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+                             f"{column.header!r}): {_shown(cell)} is not a finite number")
+        if unit is not None:
+            inline.setdefault(unit, k)
+        values[k] = number
+    unit = column.unit
+    if inline:
+        if len(inline) > 1 or (unit is not None and unit not in inline):
+            (u1, k1), (u2, k2) = sorted({**({unit: -1} if unit and unit not in inline else {}),
+                                         **inline}.items(), key=lambda kv: kv[1])[:2]
+            where1 = "the header" if k1 < 0 else f"cell {table.cell(k1, column.index)}"
+            raise ValueError(f"{table.name}: mixed units in column {column.header!r}: {u1!r} "
+                             f"in {where1}, {u2!r} in cell {table.cell(k2, column.index)}: "
+                             "expected one unit per column")
+        unit = next(iter(inline))
+        _check_unit(table, Column(column.role, column.index, column.header, unit))
+    if unit is None or role.unit is None:
+        return values
+    target = role.unit or "dimensionless"
+    return (values * parse_unit(unit)).to(target).magnitude
+
+
+def _number(cell, decimal: str) -> tuple[float | None, str | None]:
+    """A cell as a number and the unit written after it (``'2,5 bar'`` -> 2.5, ``'bar'``)."""
+    if isinstance(cell, bool):
+        return None, None
+    if isinstance(cell, int | float):
+        return float(cell), None
+    text = str(cell).strip()
+    if text.lower().lstrip("+-") in ("nan", "inf", "infinity"):
+        return float(text), None
+    match = re.match(r"^(?P<number>[-+.,\deE]+?)\s*(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$", text)
+    if not match or not _NUMBER.match(match.group("number")):
+        return None, None
+    number = match.group("number")
+    if decimal == ",":
+        number = number.replace(",", ".")
+    try:
+        value = float(number)
+    except ValueError:
+        return None, None
+    unit = match.group("unit")
+    if unit is not None and parse_unit(unit) is None:
+        return None, None
+    return value, unit
+
+
+def _shown(cell) -> str:
+    text = repr(cell if isinstance(cell, str) else str(cell))
+    return text if len(text) <= 40 else text[:40] + "...'"
+
+
+def column_text(table: RawTable, column: Column) -> list[str]:
+    """The cells of ``column`` as stripped text (numbers without a trailing ``.0``)."""
+    out = []
+    for row in table.rows:
+        cell = row[column.index]
+        if isinstance(cell, float) and cell.is_integer():
+            cell = int(cell)
+        out.append(str(cell).strip())
+    return out
+
+
+def directions(table: RawTable, column: Column) -> list[str]:
+    """The direction column as ``up``/``down`` (:data:`DIRECTION_WORDS`); ``ValueError``
+    naming the first cell that is neither."""
+    out = []
+    for k, value in enumerate(column_text(table, column)):
+        word = DIRECTION_WORDS.get(value.lower())
+        if word is None:
+            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+                             f"{column.header!r}): {_shown(value)} is not a direction: expected "
+                             f"one of {', '.join(DIRECTION_WORDS)}")
+        out.append(word)
+    return out
+
+
+def flags(table: RawTable, column: Column) -> np.ndarray:
+    """A flag column (1/0, true/false, yes/no) as booleans; ``ValueError`` naming a bad cell."""
+    words = {"1": True, "0": False, "true": True, "false": False, "yes": True, "no": False,
+             "": False}
+    out = np.zeros(len(table.rows), dtype=bool)
+    for k, value in enumerate(column_text(table, column)):
+        if value.lower() not in words:
+            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+                             f"{column.header!r}): {_shown(value)} is not a flag: expected 1 or 0")
+        out[k] = words[value.lower()]
+    return out
+
+
+@dataclass
+class Recognition:
+    """What was recognised in one table: for the one-line summary and the provenance."""
+
+    table: RawTable
+    columns: dict[str, Column]
+    ignored: list[str] = field(default_factory=list)
+    _values: dict = field(default_factory=dict, repr=False)
+
+    def values(self, role: str, optional: bool = False) -> np.ndarray:
+        """:func:`column_values` of the role's column, read once (a table split into many
+        runs is read per run)."""
+        if (role, optional) not in self._values:
+            self._values[role, optional] = column_values(self.table, self.columns[role],
+                                                         optional)
+        return self._values[role, optional]
+
+    def line(self) -> str:
+        """``P_bar -> pressure [bar], F [kgf] -> force [kgf -> N], ...; decimal comma``."""
+        parts = []
+        for role, column in self.columns.items():
+            d = column.describe()
+            unit, target = d["unit"], d["converted_to"]
+            if unit == "":
+                unit = "fraction"
+            shown = (f" [{unit} -> {target}]" if target and unit != target
+                     else f" [{unit}]" if unit else "")
+            parts.append(f"{column.header!r} -> {role}{shown}")
+        extras = []
+        if self.table.decimal == ",":
+            extras.append("decimal comma")
+        if self.table.title_rows:
+            extras.append(f"{self.table.title_rows} title row(s) skipped")
+        return ", ".join(parts) + (f"; {', '.join(extras)}" if extras else "")
+
+    def describe(self) -> dict:
+        return {**self.table.describe(),
+                "columns": {role: c.describe() for role, c in self.columns.items()},
+                "ignored_columns": self.ignored}

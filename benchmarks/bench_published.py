@@ -1,0 +1,146 @@
+"""Validation against a published measurement: Martens & Boblan's force maps of two Festo
+muscles (``data/published/``) imported, identified on two lengths, reported on the others.
+
+    .venv/bin/python benchmarks/bench_published.py [--model thickwall] [--json FILE]
+
+Per muscle: ``mkm import`` (one run per length), ``mkm identify`` on the rest length and the
+length nearest eps 10 % (``--model``, searched with it: the surrogate's box ends at 2.5 bar and
+the tables reach 6.5-6.75), then every length scored twice by the report's scoring
+(:func:`mkm.report.build_report`): with the nominal model (the shipped calibration, Silastic S)
+and with the identified calibration. A length is ``identified`` when the fit saw it, ``held
+out`` otherwise. Its largest |Err%| (the paper's Equation 7, over the length's own largest
+force) and RMSE [N]; a length where the muscle is slack at every pressure has no Err%. Prints
+one row per length and the wall time of each stage; ``--json`` keeps them (the docs page
+"Validation against published measurements" shows that file).
+
+``--report-timing`` also times ``mkm report`` as a user runs it (a new process, the default
+models, no prediction cache) on the four DMSP-10-250 lengths with force: a 10 mm muscle at
+6.5 bar, outside the surrogate's box (D0 30-50 mm, 0-2.5 bar). One run: it takes tens of
+seconds.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import pandas as pd
+
+from mkm.cli import main as mkm
+from mkm.core.records import file_sha256, provenance
+from mkm.fem.calibration import use_calibration
+from mkm.registry import parse_specs
+from mkm.report import build_report
+
+TABLE = Path(__file__).resolve().parents[1] / "data" / "published" / \
+    "martens_boblan_2017_forcemaps.csv"
+#: the table's muscles: its name in the muscle column, the id, nominal D0 and the third
+#: party's wall (the file's header says where each comes from)
+MUSCLES = {"Festo DMSP-20-300": ("dmsp-20", 20.0, 1.8), "Festo DMSP-10-250": ("dmsp-10", 10.0,
+                                                                               1.8)}
+IDENTIFY_EPS = (0.0, 0.10)  # the rest length and the length nearest this
+
+
+def _quiet(argv) -> list[str]:
+    """``mkm argv`` in-process; its stdout lines (stderr kept out of the benchmark's)."""
+    import contextlib
+    import io
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()) as err:
+        code = mkm(argv)
+    if code != 0:
+        raise SystemExit(f"mkm {' '.join(argv)} failed ({code}): {err.getvalue().strip()}")
+    return out.getvalue().split()
+
+
+def _scores(paths, out: Path, model: str, calibration: Path | None) -> pd.DataFrame:
+    with use_calibration(calibration):
+        build_report(paths, parse_specs(model), out_dir=out, cache_dir=None, tolerance=None,
+                     surrogate_section=False)
+    return pd.read_csv(out / "summary.csv").set_index("run")
+
+
+def _timed_report(paths, out: Path) -> float:
+    import subprocess
+
+    script = Path(sys.executable).parent / ("mkm.exe" if os.name == "nt" else "mkm")
+    start = time.perf_counter()
+    subprocess.run([str(script), "report", *paths, "--out", str(out), "--no-cache",
+                    "--no-progress"], check=True, capture_output=True)
+    return time.perf_counter() - start
+
+
+def measure(model: str, work: Path, report_timing: bool = False) -> tuple[list[dict], dict]:
+    rows, seconds = [], {}
+    for name, (muscle_id, D0, t0) in MUSCLES.items():
+        start = time.perf_counter()
+        paths = _quiet(["import", str(TABLE), "--id", muscle_id, "--D0", str(D0), "--t0",
+                        str(t0), "--muscle", name, "--out", str(work / muscle_id)])
+        seconds[f"{muscle_id} import"] = time.perf_counter() - start
+        from mkm.bench.storage import read_meta
+
+        eps = [read_meta(p).muscle.eps for p in paths]
+        fit = sorted({min(range(len(eps)), key=lambda k: abs(eps[k] - e)) for e in IDENTIFY_EPS})
+        identified = work / f"{muscle_id}-identified"
+        start = time.perf_counter()
+        _quiet(["identify", *(paths[k] for k in fit), "--model", model, "--search", "model",
+                "--workers", "1", "--out", str(identified)])
+        seconds[f"{muscle_id} identify"] = time.perf_counter() - start
+        start = time.perf_counter()
+        after = _scores(paths, work / f"{muscle_id}-report", model,
+                        identified / "calibration.json")
+        seconds[f"{muscle_id} report"] = time.perf_counter() - start
+        before = _scores(paths, work / f"{muscle_id}-nominal", model, None)
+        values = json.loads((identified / "identification.json").read_text(encoding="utf-8"))
+        fitted = {p["parameter"]: p["value"] for p in values["parameters"]}
+        if report_timing and muscle_id == "dmsp-10":
+            seconds["mkm report, 4 DMSP-10 lengths, default models, no cache"] = _timed_report(
+                paths[:4], work / "timed")
+        for k, path in enumerate(paths):
+            run = Path(path).name
+            rows.append({
+                "muscle": name, "eps": eps[k], "role": "identified" if k in fit else "held out",
+                "nominal |Err%|": before.loc[run, "max_abs_err_pct"],
+                "identified |Err%|": after.loc[run, "max_abs_err_pct"],
+                "nominal RMSE [N]": before.loc[run, "rmse_N"],
+                "identified RMSE [N]": after.loc[run, "rmse_N"],
+                "theta0 [deg]": fitted["theta0_deg"], "C10 [MPa]": fitted["C10_MPa"]})
+    return rows, seconds
+
+
+def run(argv=None) -> dict:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--model", default="thickwall",
+                        help="the static model identified and scored (default %(default)s)")
+    parser.add_argument("--json", help="write the rows and timings here")
+    parser.add_argument("--report-timing", action="store_true",
+                        help="also time mkm report on four 10 mm runs at 6.5 bar")
+    args = parser.parse_args(argv)
+    load_before = os.getloadavg() if hasattr(os, "getloadavg") else None
+    with tempfile.TemporaryDirectory() as work:
+        rows, seconds = measure(args.model, Path(work), args.report_timing)
+    frame = pd.DataFrame(rows)
+    print(frame.to_string(index=False, float_format=lambda v: f"{v:.3g}"))
+    for stage, s in seconds.items():
+        print(f"{stage}: {s:.1f} s", file=sys.stderr)
+    prov = provenance()
+    record = {"date_utc": prov["date_utc"], "command": prov["command"],
+              "machine": prov["machine"], "versions": prov["versions"],
+              "table": TABLE.name, "table_sha256": file_sha256(TABLE), "model": args.model,
+              "load_average_before": load_before,
+              "load_average_after": os.getloadavg() if hasattr(os, "getloadavg") else None,
+              "seconds": seconds,
+              "rows": json.loads(frame.to_json(orient="records"))}
+    if args.json:
+        Path(args.json).write_text(json.dumps(record, indent=2) + "\n", encoding="utf-8")
+    return record
+
+
+if __name__ == "__main__":
+    run()

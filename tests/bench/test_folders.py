@@ -1,0 +1,43 @@
+"""Run-folder arguments expanded by mkm itself, so one line works in cmd, PowerShell and bash."""
+
+from __future__ import annotations
+
+import pytest
+
+from mkm.bench.folders import one_run_folder, run_folders
+
+
+def _runs(root, *names):
+    for name in names:
+        (root / name).mkdir(parents=True)
+        (root / name / "run.json").write_text("{}")
+    return [root / n for n in names]
+
+
+def test_patterns_and_parent_folders(tmp_path):
+    a, b, c = _runs(tmp_path / "runs", "20260101T000000Z_m-1", "20260101T000001Z_m-2",
+                    "20260102T000000Z_other")
+    (tmp_path / "runs" / "notes.txt").write_text("not a run")
+    assert run_folders([str(tmp_path / "runs" / "*")]) == [a, b, c]
+    assert run_folders([str(tmp_path / "runs" / "2026010?T000000Z_*")]) == [a, c]
+    assert run_folders([tmp_path / "runs"]) == [a, b, c]  # a folder of run folders
+    assert run_folders([a, str(tmp_path / "runs" / "*")]) == [a, b, c]  # each once
+    assert run_folders([tmp_path / "missing"]) == [tmp_path / "missing"]  # the loader names it
+    assert one_run_folder(str(tmp_path / "runs" / "*other")) == c
+
+
+def test_a_pattern_naming_no_run_is_refused(tmp_path):
+    (tmp_path / "empty").mkdir()
+    with pytest.raises(ValueError, match=r"matches no run folder"):
+        run_folders([str(tmp_path / "nothing" / "*")])
+    with pytest.raises(ValueError, match="is not a run folder .* and holds none"):
+        run_folders([tmp_path / "empty"])
+    _runs(tmp_path, "r1", "r2")
+    with pytest.raises(ValueError, match="names 2 run folders: expected one"):
+        one_run_folder(str(tmp_path / "r*"))
+
+
+def test_report_takes_a_quoted_pattern(tmp_path, mkm_cli):
+    # what cmd passes: the pattern itself
+    code, out, err = mkm_cli(["report", str(tmp_path / "runs" / "*"), "--models", "eq2"])
+    assert code == 2 and "matches no run folder" in err and err.count("\n") == 1

@@ -1,0 +1,283 @@
+"""mkm import on the files colleagues really send: their headers, units, separators, title rows,
+workbooks and time series reach the run folder with the right numbers, and the report.
+
+The "measurements" are the thick-wall model's forces at theta0 = 32 deg (through the friction
+play operator for the time series), written in each lab's units by the units' definitions; the
+report then scores the thick-wall model at that angle against each imported run: an error of
+rounding only means every number arrived where it belongs.
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from mkm.bench.storage import load_run
+from mkm.fem.friction import force_history
+from mkm.fem.ladder import make_model
+from mkm.registry import parse_specs
+from mkm.report import build_report
+
+LBF_N = 0.45359237 * 9.80665  # the international pound-force, by definition
+MUSCLE = ["--id", "lab-muscle-7", "--D0", "30", "--t0", "3", "--L0", "282"]
+PRESSURES = np.array([0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.0])
+THETA0 = 32.0
+
+
+def thickwall_N(pressure_bar, eps: float) -> np.ndarray:
+    return make_model("thickwall", theta0_deg=THETA0).predict(
+        np.asarray(pressure_bar, dtype=float), 30.0, 3.0, eps).force_N
+
+
+def _import(mkm_cli, path, *argv):
+    code, out, err = mkm_cli(["import", str(path), *argv, "--out", str(path.parent / "runs")])
+    assert code == 0, err
+    return [load_run(line) for line in out.strip().splitlines()], err
+
+
+def _scores(tmp_path, runs, name="report") -> pd.DataFrame:
+    """Thick-wall at the angle that made the files, scored against the imported runs."""
+    build_report([r.path for r in runs], parse_specs(f"thickwall:theta0_deg={THETA0:g}"),
+                 out_dir=tmp_path / name, cache_dir=None, tolerance=None,
+                 surrogate_section=False)
+    return pd.read_csv(tmp_path / name / "summary.csv")
+
+
+def test_kpa_and_lbf_headers(tmp_path, mkm_cli):
+    force = thickwall_N(PRESSURES, 0.122)
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"Pressure [kPa]": PRESSURES * 100, "load_lbf": force / LBF_N,
+                  "direction": ["up"] * 5 + ["down"] * 2}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    assert "'Pressure [kPa]' -> pressure [kPa -> bar], 'load_lbf' -> force [lbf -> N]" in err
+    # steps.csv keeps 6 significant digits
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], PRESSURES, rtol=1e-6)
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)
+    recorded = run.meta.imported_from
+    assert recorded["columns"]["force"] == {"column": "load_lbf", "unit": "lbf",
+                                            "converted_to": "N"}
+    assert recorded["file"] == "lab.csv" and len(recorded["sha256"]) == 64
+    assert recorded["tare"] == "none: the table has no 0 bar row"
+    assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
+
+
+def test_semicolons_decimal_commas_and_a_title_row(tmp_path, mkm_cli):
+    force = thickwall_N(PRESSURES[:5], 0.0)
+    rows = "\n".join(f"{p:.2f};{f:.3f}".replace(".", ",") for p, f in zip(PRESSURES[:5], force,
+                                                                         strict=True))
+    path = tmp_path / "messung.csv"
+    path.write_text(f"Messung Muskel 7;02.11.2026\nDruck (bar);Kraft (N)\n{rows}\n",
+                    encoding="latin-1")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "decimal comma, 1 title row(s) skipped" in err
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)
+    assert run.meta.imported_from["decimal"] == "," and run.meta.imported_from["title_rows"] == 1
+    assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
+
+
+def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
+    path = tmp_path / "muscle7.xlsx"
+    with pd.ExcelWriter(path) as book:
+        for sheet, eps in (("eps 0", 0.0), ("eps 12.2", 0.122)):
+            frame = pd.DataFrame({"P (bar)": PRESSURES[:5],
+                                  "F [kgf]": thickwall_N(PRESSURES[:5], eps) / 9.80665,
+                                  "contraction (%)": 100 * eps})
+            frame.to_excel(book, sheet_name=sheet, index=False, startrow=1)  # a blank row above
+    runs, err = _import(mkm_cli, path, *MUSCLE)
+    assert [r.meta.muscle.eps for r in runs] == pytest.approx([0.0, 0.122], abs=1e-12)
+    assert [r.meta.imported_from["sheet"] for r in runs] == ["eps 0", "eps 12.2"]
+    for run in runs:
+        np.testing.assert_allclose(run.steps["force_N_mean"],
+                                   thickwall_N(PRESSURES[:5], run.meta.muscle.eps), rtol=1e-5)
+    assert (_scores(tmp_path, runs)["max_abs_err_pct"] < 0.01).all()
+    (one,), _ = _import(mkm_cli, path, *MUSCLE, "--sheet", "eps 12.2")
+    assert one.meta.muscle.eps == pytest.approx(0.122)
+
+
+def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.6):
+    """A lab's 100 Hz record: 2 s vented, 10 s up to 2.5 bar, 10 s down, 1 s vented; the gauge
+    reads ``vented_bar`` at rest, the load cell ``tare_N``; noise 0.005 bar and 0.3 N."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(0.0, 23.0, 1.0 / rate_hz)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.122), 0.0), h, 0.0, 30.0)
+    frame = pd.DataFrame({"t (s)": t, "p_psi": (p + vented_bar + rng.normal(0, 0.005, t.size))
+                          * 1e5 / (LBF_N / 0.0254**2),
+                          "Force (N)": truth + tare_N + rng.normal(0, 0.3, t.size)})
+    return frame, p, truth
+
+
+def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
+    frame, p, truth = _ramp()
+    path = tmp_path / "ramp.csv"
+    frame.to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    recorded = run.meta.imported_from
+    assert recorded["shape"] == "ramp" and "quasi-static bins of a ramp" in err
+    # the gauge's noise is 0.005 bar: its median over 2 s is within 0.002 of what it read
+    assert recorded["vented_reading_bar"] == pytest.approx(0.6, abs=0.002)
+    # 200 vented samples of 0.3 N noise: the zero is within 0.1 N of the load cell's offset
+    assert recorded["tare_N"] == pytest.approx(7.5, abs=0.1)
+    samples = run.samples
+    assert len(samples) == len(frame) and (samples["phase"] == "tare").sum() >= 150
+    steps = run.steps
+    assert set(steps["direction"]) == {"up", "down"}
+    assert steps["pressure_bar_mean"].max() == pytest.approx(2.5, abs=0.1)
+    # each quasi-static point is its samples' mean: within the noise (0.3 N / sqrt(n)) and the
+    # tare's error of the noiseless force at those samples
+    for step in steps.itertuples():
+        inside = (samples["step"] == step.step).to_numpy()
+        assert step.force_N_mean == pytest.approx(truth[inside].mean(),
+                                                  abs=0.1 + 4 * 0.3 / np.sqrt(step.n))
+    # friction shows: the falling branch lies above the rising one at the same pressure
+    up = steps[steps["direction"] == "up"].set_index("set_pressure_bar")["force_N_mean"]
+    down = steps[steps["direction"] == "down"].set_index("set_pressure_bar")["force_N_mean"]
+    both = up.index.intersection(down.index)
+    assert (down[both] >= up[both] - 1.0).all() and (down[both] - up[both]).max() > 5.0
+    summary = _scores(tmp_path, [run])
+    assert summary["valid_points"].iloc[0] == len(steps)
+    # thick-wall has no friction: it sits between the branches, off by about h = 5 %
+    assert 2.0 < summary["max_abs_err_pct"].iloc[0] < 8.0
+
+
+def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
+    frame, _, _ = _ramp()
+    frame.to_csv(tmp_path / "ramp.csv", index=False)
+    (run,), _ = _import(mkm_cli, tmp_path / "ramp.csv", *MUSCLE, "--eps", "12.2%")
+    code, out, err = mkm_cli(["identify", str(run.path), "--model", "thickwall", "--search",
+                              "model", "--params", "theta0,friction,creep", "--out",
+                              str(tmp_path / "id"), "--workers", "1"])
+    assert code == 0, err
+    assert "creep not fitted: no run has timed holds" in out
+    values = {row["parameter"]: row["value"] for row in json.loads(
+        (tmp_path / "id" / "identification.json").read_text())["parameters"]}
+    # 2300 samples of 0.3 N noise over ~600 N of force: the angle within 0.2 deg, the friction
+    # band within 0.5 % of the force
+    assert values["theta0_deg"] == pytest.approx(THETA0, abs=0.2)
+    assert values["hysteresis_fraction"] == pytest.approx(0.05, abs=0.005)
+
+
+def test_a_staircase_in_time_gives_the_bench_steps(tmp_path, mkm_cli):
+    levels = [0.5, 1.0, 1.5, 1.0, 0.5]
+    rng = np.random.default_rng(2)
+    knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
+    for level in levels:  # a 1 s ramp, then 12 s held
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 13.0]
+        knots_p += [level, level]
+    t = np.arange(0.0, knots_t[-1], 0.1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.0, 30.0)
+    path = tmp_path / "staircase.tsv"
+    pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
+                  "F": truth + rng.normal(0, 0.2, t.size)}).to_csv(path, sep="\t", index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    steps = run.steps
+    assert run.meta.imported_from["shape"] == "staircase"
+    assert steps["direction"].tolist() == ["up", "up", "up", "down", "down"]
+    assert steps["set_pressure_bar"].tolist() == pytest.approx(levels, abs=0.01)
+    assert steps["settled"].all()  # 0.2 N of noise passes the bench's settle test
+    for step in steps.itertuples():
+        hold = (t >= step.start_s + step.settle_s - 1e-9) & (t <= step.end_s + 1e-9)
+        assert step.force_N_mean == pytest.approx(truth[hold].mean(), abs=0.15)
+
+
+def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure_bar": PRESSURES, "force_N": thickwall_N(PRESSURES, 0.122),
+                  "direction": ["up"] * 5 + ["down"] * 2}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122")
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), err = _import(mkm_cli, tmp_path / "run.xlsx")  # the muscle from its metadata
+    assert "'pressure_bar_mean' -> pressure [bar], 'force_N_mean' -> force [N]" in err
+    assert again.meta.muscle == run.meta.muscle
+    for column in ("pressure_bar_mean", "force_N_mean", "direction"):
+        assert again.steps[column].tolist() == run.steps[column].tolist()
+
+
+@pytest.mark.parametrize("content, argv, message", [
+    ("", [], "lab.csv is empty"),
+    ("a,b\n1,2\n", [], "lab.csv: no pressure or force column among 'a', 'b'"),
+    ("Pressure (bar),Force (N)\n1,2\n1,x\n", [], "lab.csv, cell B3 (column 'Force (N)'): 'x' "
+     "is not a number"),
+    ("P,F\n1 bar,2\n150 kPa,3\n", [], "lab.csv: mixed units in column 'P': 'bar' in cell A2, "
+     "'kPa' in cell A3"),
+    ("P,F,length (mm)\n1,2,250\n1,3,-5\n", [], "lab.csv, cell C3 (column 'length (mm)'): -5 mm "
+     "is not a length"),
+    ("P,F,length (mm)\n1,2,nan\n", [], "lab.csv, cell C2 (column 'length (mm)'): 'nan' is not a "
+     "finite number"),
+    ("P,F\n-1,2\n", [], "lab.csv, cell A2 (column 'P'): -1 bar is below 0"),
+    ("P,F\n1,2\n", ["--columns", "force=G"], "--columns force='G': lab.csv has no such column"),
+    ("P,F\n1,2\n", ["--units", "force=bar"], "'bar' is not a unit of force"),
+    ("P,F\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
+    ("P,F,muscle\n1,2,A\n1,2,B\n", [], "column 'muscle' holds 2 muscles ('A', 'B'): choose one "
+     "with --muscle NAME"),
+])
+def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
+    path = tmp_path / "lab.csv"
+    path.write_text(content)
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", *argv, "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert message in err
+    assert not (tmp_path / "runs").exists()  # nothing written
+
+
+def test_calibrate_reads_an_imported_run(tmp_path, mkm_cli):
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure [kPa]": PRESSURES[:5] * 100,
+                  "Force (N)": thickwall_N(PRESSURES[:5], 0.122)}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122")
+    code, out, err = mkm_cli(["fem", "calibrate", "--model", "thickwall", "--reference",
+                              str(run.path), "--dry-run"])
+    assert code == 0, err
+    # the forces were made at 32 deg; 6 significant digits stored: the angle back within 0.01
+    theta0 = float(out.split("theta0 = ")[1].split()[0])
+    assert theta0 == pytest.approx(THETA0, abs=0.01)
+
+
+def test_lengths_and_rest_lengths_from_the_file(tmp_path, mkm_cli):
+    # two tubes of one muscle family, cut to 250 and 300 mm, each held at two lengths
+    rows = []
+    for L0, L in ((250.0, 250.0), (250.0, 220.0), (300.0, 270.0), (300.0, 300.0)):
+        eps = (L0 - L) / L0
+        for p, f in zip(PRESSURES[:5], thickwall_N(PRESSURES[:5], eps), strict=True):
+            rows.append({"rest length (mm)": L0, "length (mm)": L, "P (bar)": p, "F (N)": f})
+    path = tmp_path / "family.csv"
+    pd.DataFrame(rows).to_csv(path, index=False)
+    runs, err = _import(mkm_cli, path, "--id", "family-3", "--D0", "30", "--t0", "3")
+    assert [(r.meta.muscle.L0_mm, r.meta.muscle.eps) for r in runs] == [
+        (250.0, 0.0), (250.0, pytest.approx(0.12)), (300.0, pytest.approx(0.1)), (300.0, 0.0)]
+    assert all(r.meta.muscle.id == "family-3" and len(r.steps) == 5 for r in runs)
+
+
+def test_a_staircase_in_time_identifies_creep_where_holds_were_timed(tmp_path, mkm_cli):
+    # 20 s holds up and down at 10 Hz: creep of 5 % over tau = 5 s relaxes within each hold
+    levels = [0.5, 1.0, 1.5, 2.0, 1.5, 1.0, 0.5]
+    knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
+    for level in levels:
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 21.0]
+        knots_p += [level, level]
+    t = np.arange(0.0, knots_t[-1], 0.1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.05, 5.0)
+    rng = np.random.default_rng(3)
+    path = tmp_path / "stair.csv"
+    pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
+                  "F": truth + rng.normal(0, 0.2, t.size)}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    code, out, err = mkm_cli(["identify", str(run.path), "--model", "thickwall", "--search",
+                              "model", "--params", "theta0,friction,creep", "--out",
+                              str(tmp_path / "id"), "--workers", "1"])
+    assert code == 0, err
+    assert "not fitted" not in out  # both branches and timed holds: friction and creep kept
+    values = {row["parameter"]: row["value"] for row in json.loads(
+        (tmp_path / "id" / "identification.json").read_text())["parameters"]}
+    # 0.2 N of noise on ~300 N: the bootstrap's 95 % intervals are about these widths
+    assert values["theta0_deg"] == pytest.approx(THETA0, abs=0.2)
+    assert values["hysteresis_fraction"] == pytest.approx(0.03, abs=0.003)
+    assert values["creep_fraction"] == pytest.approx(0.05, abs=0.015)
+    assert values["creep_tau_s"] == pytest.approx(5.0, abs=1.5)

@@ -1,0 +1,116 @@
+"""The table reader: layouts labs use, headers in common spellings, units converted by pint."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from mkm.bench.tables import column_values, parse_header, read_tables, recognise
+
+# Units by their definitions (not by the code under test): the international pound is
+# 0.45359237 kg, standard gravity 9.80665 m/s^2, the inch 0.0254 m.
+LBF_N = 0.45359237 * 9.80665
+KGF_N = 9.80665
+PSI_BAR = LBF_N / 0.0254**2 / 1e5
+
+
+@pytest.mark.parametrize("header, name, unit", [
+    ("P", "p", None), ("Pressure (bar)", "pressure", "bar"), ("pressure [kPa]", "pressure", "kPa"),
+    ("p_psi", "p", "psi"), ("Force (N)", "force", "N"), ("F [kgf]", "f", "kgf"),
+    ("load_lbf", "load", "lbf"), ("time", "time", None), ("t (s)", "t", "s"),
+    ("direction", "direction", None), ("eps", "eps", None), ("contraction (%)", "contraction", "%"),
+    ("length (mm)", "length", "mm"), ("pressure_bar_mean", "pressure", "bar"),
+    ("force_N_mean", "force", "N"), ("force_N_std", "force std", "N"),
+    ("set_pressure_bar", "set pressure", "bar"), ("Time in s", "time", "s"),
+    ("zero_entry", "zero entry", None),
+])
+def test_headers_in_common_spellings(header, name, unit):
+    assert parse_header(header) == (name, unit)
+
+
+def _one(tmp_path, text, name="lab.csv"):
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    (table,) = read_tables(path)
+    return table, recognise(table)
+
+
+def test_units_converted_by_their_definitions(tmp_path):
+    path = tmp_path / "a.csv"
+    path.write_text("p_psi,F [kgf],load_lbf,pressure [kPa]\n10,2,3,150\n20,4,6,250\n")
+    (table,) = read_tables(path)
+    # two columns claim the pressure (and two the force): the reader does not guess
+    with pytest.raises(ValueError, match="two pressure columns, 'p_psi' and 'pressure"):
+        recognise(table, {"force": "F [kgf]"})
+    found = recognise(table, {"pressure": "p_psi", "force": "F [kgf]"})
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [10 * PSI_BAR, 20 * PSI_BAR], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["force"]), [2 * KGF_N, 4 * KGF_N],
+                               rtol=1e-12)
+    table, found = _one(tmp_path, "pressure [kPa];load_lbf\n150;3\n250;6\n", "b.csv")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5, 2.5], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["force"]), [3 * LBF_N, 6 * LBF_N],
+                               rtol=1e-12)
+
+
+def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
+    table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
+                        "Kontraktion (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
+    assert (table.separator, table.decimal, table.title_rows, table.header_row) == (";", ",", 1, 3)
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.0])
+    np.testing.assert_allclose(column_values(table, found["force"]), [12.25, 40.5])
+    assert "eps" not in found  # "Kontraktion" is not a spelling the reader knows: --columns
+    found = recognise(table, {"eps": "Kontraktion (%)"})
+    np.testing.assert_allclose(column_values(table, found["eps"]), [0.122, 0.122])
+
+
+def test_tab_separated_with_units_overridden(tmp_path):
+    table, found = _one(tmp_path, "P\tF\n100\t10\n200\t20\n", "lab.tsv")
+    assert table.separator == "\t"
+    found = recognise(table, units={"pressure": "kPa", "force": "lbf"})
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.0, 2.0])
+    np.testing.assert_allclose(column_values(table, found["force"]), [10 * LBF_N, 20 * LBF_N])
+
+
+def test_every_sheet_or_one(tmp_path):
+    path = tmp_path / "book.xlsx"
+    with pd.ExcelWriter(path) as book:
+        pd.DataFrame({"P (bar)": [0.5, 1.0], "F (N)": [1.0, 2.0]}).to_excel(book, sheet_name="eps0",
+                                                                           index=False)
+        pd.DataFrame({"note": ["nothing here"]}).to_excel(book, sheet_name="notes", index=False,
+                                                         startrow=2)
+        pd.DataFrame({"P (bar)": [0.5], "F (N)": [3.0]}).to_excel(book, sheet_name="eps12",
+                                                                  index=False)
+    tables = read_tables(path, None)
+    assert [t.sheet for t in tables] == ["eps0", "eps12"]  # a sheet without numbers is no table
+    (table,) = read_tables(path, "eps12")
+    assert column_values(table, recognise(table)["force"]).tolist() == [3.0]
+    with pytest.raises(ValueError, match="--sheet 'x': book.xlsx has no such sheet"):
+        read_tables(path, "x")
+
+
+@pytest.mark.parametrize("text, message", [
+    ("", "lab.csv is empty"),
+    ("P,F\n", "has no row of numbers"),
+    ("P,F\n1,2\n1,abc\n", "lab.csv, cell B3 (column 'F'): 'abc' is not a number"),
+    ("P,F\n1,2\n1,nan\n", "lab.csv, cell B3 (column 'F'): 'nan' is not a finite number"),
+    ("P,F\n1 bar,2\n150 kPa,2\n", "mixed units in column 'P': 'bar' in cell A2, 'kPa' in cell A3"),
+    ("P (bar),F\n1,2\n150 kPa,2\n", "mixed units in column 'P (bar)': 'bar' in the header, "
+     "'kPa' in cell A3"),
+    ("P [kg],F\n1,2\n", "'kg' is not a unit of pressure"),
+])
+def test_bad_cells_are_named(tmp_path, text, message):
+    path = tmp_path / "lab.csv"
+    path.write_text(text)
+    with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
+        (table,) = read_tables(path)
+        found = recognise(table)
+        for column in found.values():
+            column_values(table, column)
+
+
+def test_units_written_in_the_cells(tmp_path):
+    table, found = _one(tmp_path, "P,F\n150 kPa,2 lbf\n250 kPa,4 lbf\n")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5, 2.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [2 * LBF_N, 4 * LBF_N])
