@@ -48,16 +48,18 @@ class Faults:
 
 @dataclass(frozen=True)
 class Truth:
-    """The simulated muscle's own braid angle and rubber, where it differs from the nominal one.
+    """The simulated muscle's own braid angle, rubber and gap between tube and braid (a model
+    that takes ``gap_mm``: ``thickwall``), where they differ from the nominal ones.
 
-    Unset (None): the model's nominal value (the calibrated angle, Silastic S). With ``[sim]``'s
-    ``hysteresis_fraction``, ``creep_fraction`` and ``creep_tau_s`` this is the truth that
-    ``mkm identify`` must find blind: it is recorded in the run's simulator settings only.
+    Unset (None): the model's nominal value (the calibrated angle, Silastic S, no gap). With
+    ``[sim]``'s ``hysteresis_fraction``, ``creep_fraction`` and ``creep_tau_s`` this is the truth
+    that ``mkm identify`` must find blind: it is recorded in the run's simulator settings only.
     """
 
     theta0_deg: float | None = None
     C10_MPa: float | None = None
     C01_MPa: float | None = None
+    gap_mm: float | None = None
 
     def check(self):
         from mkm.fem.limits import check_value

@@ -11,6 +11,7 @@ command wrote, and each include names that command, so rerunning it refreshes th
 - ``calibration.md``: the shipped braid-angle calibration ``fem/calibration.json``
   (``mkm fem calibrate --update-shipped``);
 - ``datasets.md``: what the shipped FE datasets are, from their JSON sidecars;
+- ``threshold_*.md``: the threshold study's before/after and simulated-truth tables;
 - ``bench_*.md``: the benchmark tables, from the results the benchmark scripts wrote into
   ``docs/measured/`` (``make bench-docs`` runs them: :data:`BENCHMARKS`);
 - ``examples/``: one page per script of ``examples/``.
@@ -285,6 +286,7 @@ BENCHMARKS = {
     "batch.json": "benchmarks/bench_batch.py --json {out}",
     "startup.json": "benchmarks/bench_startup.py --json {out}",
     "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
+    "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
 }
 
 
@@ -365,6 +367,22 @@ def benchmark_tables() -> None:
         write(OUT / f"bench_{path.stem}.md", text)
 
 
+def threshold_model_tables() -> None:
+    """The threshold study's before/after, simulated-truth and fitted rest-length tables (its
+    selection table is the generic ``bench_threshold_models.md``), from
+    ``docs/measured/threshold_models.json``."""
+    path = MEASURED / "threshold_models.json"
+    for key in ("before_after", "simulated", "rest_length"):
+        if not path.exists():
+            text = "*Not measured in this checkout: run `make bench-docs`.*\n"
+        else:
+            record = json.loads(path.read_text(encoding="utf-8"))
+            text = (markdown_table(pd.DataFrame(record[key]), 4)
+                    + source_note("`docs/measured/threshold_models.json`", "make bench-docs",
+                                  record["date_utc"][:10]))
+        write(OUT / f"threshold_{key}.md", text)
+
+
 # --- examples ---------------------------------------------------------------------------------
 
 def example_pages() -> None:
@@ -409,6 +427,7 @@ def main() -> None:
     calibration_table()
     dataset_table()
     benchmark_tables()
+    threshold_model_tables()
     example_pages()
 
 

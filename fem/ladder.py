@@ -207,7 +207,9 @@ register(Entry(
     "thickwall", "mkm.fem.thickwall:ThickWall", "Thick-wall (Klute-Hannaford)",
     "thick-walled Mooney-Rivlin tube in the braid, mid-section closed form "
     "(Klute-Hannaford)", "closed form",
-    {"theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10, "C01_MPa": C01},
+    {"theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10, "C01_MPa": C01,
+     "gap_mm": Parameter("radial gap between tube and braid at rest [mm]; default the "
+                         "calibration's (an identified muscle), else 0")},
     colour="tab:orange", study=(StudyVariant("thickwall", "thickwall"),),
     contract_spec="thickwall"))
 register(Entry(

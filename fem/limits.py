@@ -23,6 +23,7 @@ LIMITS: dict[str, tuple[float, float, str, str]] = {
     "theta0_deg": (1.0, 89.0, "a braid angle at rest", "deg"),
     "C10_MPa": (1e-4, 100.0, "a Mooney-Rivlin C10", "MPa"),
     "C01_MPa": (0.0, 100.0, "a Mooney-Rivlin C01", "MPa"),
+    "gap_mm": (0.0, 100.0, "a radial gap between tube and braid", "mm"),
 }
 #: the upper bound of these is excluded (eps = 1 is a muscle of zero length)
 OPEN_ABOVE = frozenset({"eps"})

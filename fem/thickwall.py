@@ -23,6 +23,15 @@ Derivation (the wall as annulus ``Ri <= R <= Ro`` at rest, ``x = R^2``):
 - virtual work of pressure, wall and load: ``F = -P dV/dL + dE/dlz``. The wall volume is
   constant, so ``dV/dL`` of the cavity equals that of the braid cylinder and the pressure term is
   Equation 2 written with the braid diameter ``D0 + 2 t0``.
+
+A radial gap ``g`` between the tube and the sleeve at rest (``gap_mm``, default 0) changes only
+the braid's rest radius, ``Rb = Ro + g``: the tube first inflates freely
+(:func:`mooney_rivlin_tube_inflation_pressure`) until its outer surface reaches the sleeve at
+:func:`gap_closing_pressure`, then follows the braid, ``r_o^2 = Rb^2 (1 - lz^2 cos^2 theta0) /
+sin^2 theta0``, with ``k = r_o^2 - Ro^2 / lz``. The energy and force formulas above hold for any
+``k`` (they integrate ``W`` over the material radii), the pressure term uses the braid diameter
+``D0 + 2 t0 + 2 g``, and the force is affine in ``P`` again once in contact: a threshold even at
+``eps = 0``. With ``g = 0`` every expression is the gap-free one, term for term.
 """
 
 from __future__ import annotations
@@ -32,36 +41,50 @@ import numpy as np
 from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.eq2 import check_theta0, chou_hannaford, chou_hannaford_eps_max
 from mkm.fem.interface import Domain, ForceModel
+from mkm.fem.limits import check_value
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
 
 
-def mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg):
+def _rest_radii(D0_mm, t0_mm, gap_mm):
+    """``Ri^2`` [mm^2], ``Ro`` [mm] and ``Rb^2 - Ro^2 = g (2 Ro + g)`` [mm^2] (0 without a gap)."""
+    Ro = np.asarray(D0_mm, dtype=float) / 2.0 + np.asarray(t0_mm, dtype=float)
+    gap = np.asarray(gap_mm, dtype=float)
+    return (np.asarray(D0_mm, dtype=float) / 2.0) ** 2, Ro, gap * (2.0 * Ro + gap)
+
+
+def mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg, gap_mm=0.0):
     """Squared radii [mm^2], ``lz``, ``k`` and the log hoop-stretch ratio ``M`` of the wall.
 
-    Written in ``eps`` rather than ``1 - lz`` so that nothing cancels at small shortening and
-    the rest state (``eps = 0``) is exactly stress free.
+    Returns ``Ri^2, Ro^2, lz, k, r_i^2, r_o^2, M, cot^2 theta0`` of the tube in contact with the
+    braid (``r_o`` the braid's radius; ``gap_mm`` [mm] the radial gap between tube and braid at
+    rest). Written in ``eps`` rather than ``1 - lz`` so that nothing cancels at small shortening
+    and the rest state (``eps = 0``, no gap) is exactly stress free.
     """
-    Ri2 = (np.asarray(D0_mm, dtype=float) / 2.0) ** 2
-    Ro2 = (np.asarray(D0_mm, dtype=float) / 2.0 + np.asarray(t0_mm, dtype=float)) ** 2
+    Ri2, Ro, opening = _rest_radii(D0_mm, t0_mm, gap_mm)
+    Ro2 = Ro**2
+    Rb2 = Ro2 + opening
     eps = np.asarray(eps, dtype=float)
     lz = 1.0 - eps
     cot2 = 1.0 / np.tan(np.deg2rad(theta0_deg)) ** 2
-    hoop_o = eps * (2.0 - eps) * cot2  # r_o^2 / Ro^2 - 1
-    k = Ro2 * (hoop_o - eps / lz)  # r^2 = k + R^2 / lz
+    hoop_o = eps * (2.0 - eps) * cot2  # r_o^2 / Rb^2 - 1
+    k = Ro2 * (hoop_o - eps / lz) + opening * (1.0 + hoop_o)  # r^2 = k + R^2 / lz
     ri2 = k + Ri2 / lz
     with np.errstate(invalid="ignore", divide="ignore"):
-        M = np.log1p(k / Ri2 + eps / lz) - np.log1p(hoop_o)  # ln(a_i / a_o), NaN if r_i^2 < 0
-    return Ri2, Ro2, lz, k, ri2, Ro2 * (1.0 + hoop_o), M, cot2
+        # ln(a_i / a_o), a_o = (Rb^2 / Ro^2) (1 + hoop_o); NaN if r_i^2 < 0
+        M = (np.log1p(k / Ri2 + eps / lz) - np.log1p(hoop_o)
+             - 2.0 * np.log1p(np.asarray(gap_mm, dtype=float) / Ro))
+    return Ri2, Ro2, lz, k, ri2, Rb2 * (1.0 + hoop_o), M, cot2
 
 
-def braided_tube_energy(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa):
+def braided_tube_energy(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa, gap_mm=0.0):
     """Mooney-Rivlin energy of the braided tube's mid-section per unit rest length [N = mJ/mm].
 
     Closed-form integral over the wall of ``W = C10 (I1 - 3) + C01 (I2 - 3)`` for the
-    deformation the braid imposes at shortening ``eps`` (see the module docstring). NaN where
-    the inner radius has collapsed (``r_i^2 <= 0``): no such deformation exists.
+    deformation the braid imposes at shortening ``eps`` (see the module docstring), the tube in
+    contact with the braid (``gap_mm`` [mm] the radial gap at rest). NaN where the inner radius
+    has collapsed (``r_i^2 <= 0``): no such deformation exists.
     """
-    Ri2, Ro2, lz, k, ri2, _, M, _ = mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg)
+    Ri2, Ro2, lz, k, ri2, _, M, _ = mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg, gap_mm)
     D = Ro2 - Ri2
     e2 = (1.0 - lz) ** 2
     # lz^2 + 2/lz - 3 = eps^2 (3 - eps) / lz and 2 lz + 1/lz^2 - 3 = eps^2 (1 + 2 lz) / lz^2
@@ -70,17 +93,19 @@ def braided_tube_energy(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa):
     return np.where(ri2 > 0, energy, np.nan)
 
 
-def braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa):
+def braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa, gap_mm=0.0):
     """``dE/dlz`` [N]: the wall's share of the developed force (negative while shortened).
 
     The analytic derivative of :func:`braided_tube_energy` with respect to the axial stretch;
     since the total energy is ``L0 E`` and ``L = L0 lz``, it is also ``dW/dL`` of the whole wall.
-    NaN where the inner radius has collapsed.
+    With a gap (``gap_mm`` [mm]) the tube in contact is inflated even at ``eps = 0`` and this is
+    negative there. NaN where the inner radius has collapsed.
     """
-    Ri2, Ro2, lz, k, ri2, ro2, M, cot2 = mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg)
+    Ri2, Ro2, lz, k, ri2, ro2, M, cot2 = mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg,
+                                                                gap_mm)
     D = Ro2 - Ri2
     e = 1.0 - lz
-    dro2 = -2.0 * Ro2 * lz * cot2  # d(r_o^2)/dlz
+    dro2 = -2.0 * (Ro2 + _rest_radii(D0_mm, t0_mm, gap_mm)[2]) * lz * cot2  # d(r_o^2)/dlz
     dk = dro2 + Ro2 / lz**2
     with np.errstate(invalid="ignore", divide="ignore"):
         dM = (dro2 + D / lz**2) / ri2 - dro2 / ro2
@@ -92,12 +117,12 @@ def braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa):
 
 
 def klute_hannaford(pressure_bar, D0_mm, t0_mm, eps, theta0_deg,
-                    C10_MPa=SILASTIC_S.C10_MPa, C01_MPa=SILASTIC_S.C01_MPa):
+                    C10_MPa=SILASTIC_S.C10_MPa, C01_MPa=SILASTIC_S.C01_MPa, gap_mm=0.0):
     r"""Klute-Hannaford virtual-work force of a McKibben muscle with a thick Mooney-Rivlin wall.
 
     .. math::
         F = \frac{\pi D_b^2 P}{4 \sin^2\theta_0}\left(3(1-\varepsilon)^2\cos^2\theta_0 - 1\right)
-            + \frac{dE}{d\lambda_z}, \qquad D_b = D_0 + 2 t_0
+            + \frac{dE}{d\lambda_z}, \qquad D_b = D_0 + 2 t_0 + 2 g
 
     where ``E`` is the wall's stored energy per unit rest length (:func:`braided_tube_energy`).
 
@@ -116,6 +141,11 @@ def klute_hannaford(pressure_bar, D0_mm, t0_mm, eps, theta0_deg,
     C10_MPa, C01_MPa : float, default Silastic S
         Mooney-Rivlin constants [MPa]; default from the paper's Equation 3 (C10 = 0.0694,
         C01 = 0.0628).
+    gap_mm : array_like, default 0
+        Radial gap ``g`` between the tube's outer surface and the braid at rest [mm]. The
+        formula is the force once the tube has met the braid (at :func:`gap_closing_pressure`,
+        below the threshold pressure); ``E`` then includes the free inflation that closed the
+        gap.
 
     Returns
     -------
@@ -129,7 +159,9 @@ def klute_hannaford(pressure_bar, D0_mm, t0_mm, eps, theta0_deg,
     -----
     Holds in the cylindrical mid-section of a long muscle: the clamped end caps (which keep the
     ends narrow) are outside the model, as are braid friction and hysteresis. With ``C10 = C01 =
-    0`` or ``t0 -> 0`` it is Equation 2 with the braid diameter exactly.
+    0`` or ``t0 -> 0`` it is Equation 2 with the braid diameter exactly. A gap (a clearance
+    between tube and sleeve at rest) makes the tube inflate freely before the braid carries
+    load, so the force starts above a threshold pressure even at ``eps = 0``.
 
     References
     ----------
@@ -144,27 +176,102 @@ def klute_hannaford(pressure_bar, D0_mm, t0_mm, eps, theta0_deg,
 
     See Also
     --------
-    fem.eq2.chou_hannaford, klute_hannaford_threshold_pressure
+    fem.eq2.chou_hannaford, klute_hannaford_threshold_pressure, gap_closing_pressure
     """
-    D_braid = np.asarray(D0_mm, dtype=float) + 2.0 * np.asarray(t0_mm, dtype=float)
-    return (chou_hannaford(pressure_bar, D_braid, eps, theta0_deg)
-            + braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa))
+    return (chou_hannaford(pressure_bar, _braid_diameter(D0_mm, t0_mm, gap_mm), eps, theta0_deg)
+            + braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa,
+                                         gap_mm))
+
+
+def _braid_diameter(D0_mm, t0_mm, gap_mm):
+    """``D0 + 2 t0 + 2 g`` [mm]: the braid's diameter at rest."""
+    return (np.asarray(D0_mm, dtype=float) + 2.0 * np.asarray(t0_mm, dtype=float)
+            + 2.0 * np.asarray(gap_mm, dtype=float))
 
 
 def klute_hannaford_threshold_pressure(D0_mm, t0_mm, eps, theta0_deg,
-                                       C10_MPa=SILASTIC_S.C10_MPa, C01_MPa=SILASTIC_S.C01_MPa):
+                                       C10_MPa=SILASTIC_S.C10_MPa, C01_MPa=SILASTIC_S.C01_MPa,
+                                       gap_mm=0.0):
     """Pressure [bar] at which a free muscle has shortened by ``eps``: ``F(P*) = 0``.
 
-    ``P* = -(dE/dlz) / A`` with ``A`` the force per bar of the pressure term. Zero at ``eps = 0``,
-    growing with ``eps`` and ``t0``; NaN at and beyond the braid lock (``A <= 0``: no pressure
-    shortens the muscle that far) and where the inner radius has collapsed.
+    ``P* = -(dE/dlz) / A`` with ``A`` the force per bar of the pressure term. Without a gap zero
+    at ``eps = 0``, growing with ``eps`` and ``t0``; a gap ``gap_mm`` [mm] adds the pressure that
+    inflates the tube to the braid (:func:`gap_closing_pressure`) and the little more that
+    overcomes the free tube's push on its ends there. NaN at and beyond the braid lock (``A <=
+    0``: no pressure shortens the muscle that far) and where the inner radius has collapsed.
     """
-    D_braid = np.asarray(D0_mm, dtype=float) + 2.0 * np.asarray(t0_mm, dtype=float)
-    per_bar = chou_hannaford(1.0, D_braid, eps, theta0_deg)
-    elastic = braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa)
+    per_bar = chou_hannaford(1.0, _braid_diameter(D0_mm, t0_mm, gap_mm), eps, theta0_deg)
+    elastic = braided_tube_elastic_force(D0_mm, t0_mm, eps, theta0_deg, C10_MPa, C01_MPa,
+                                         gap_mm)
     with np.errstate(divide="ignore", invalid="ignore"):
         threshold = -elastic / per_bar + 0.0  # + 0.0 turns the -0.0 at eps = 0 into 0.0
     return np.where(per_bar > 0, threshold, np.nan)
+
+
+def mooney_rivlin_tube_inflation_pressure(D0_mm, t0_mm, outer_radius_mm, eps,
+                                          C10_MPa=SILASTIC_S.C10_MPa,
+                                          C01_MPa=SILASTIC_S.C01_MPa):
+    r"""Pressure [bar] that holds a free thick incompressible Mooney-Rivlin tube at outer radius
+    ``outer_radius_mm`` and axial stretch ``lz = 1 - eps`` (no braid, no load on the surface).
+
+    .. math::
+        P = \int_{r_i}^{r_o} \frac{\sigma_{\theta\theta} - \sigma_{rr}}{r}\,dr
+          = \frac{C_{10} + C_{01} \lambda_z^2}{\lambda_z}
+            \left[\ln\frac{a_i}{a_o} + k\left(\frac{1}{r_i^2} - \frac{1}{r_o^2}\right)\right]
+
+    with ``r^2 = k + R^2 / lz``, ``k = r_o^2 - Ro^2 / lz`` and ``a = r^2 / R^2`` at the inner and
+    outer surfaces: radial equilibrium integrated through the wall, where for Mooney-Rivlin
+    ``sigma_tt - sigma_rr = 2 (C10 + C01 lz^2) (a - 1 / (a lz^2))`` and the integral is
+    elementary in ``r^2``.
+
+    Parameters
+    ----------
+    D0_mm, t0_mm : array_like
+        Inner diameter and wall thickness of the tube at rest [mm].
+    outer_radius_mm : array_like
+        Deformed outer radius [mm] (at least ``D0/2 + t0`` at ``eps = 0``).
+    eps : array_like
+        Shortening ratio [fraction]; the tube's axial stretch is ``1 - eps``.
+    C10_MPa, C01_MPa : float, default Silastic S
+        Mooney-Rivlin constants [MPa].
+
+    Returns
+    -------
+    numpy.ndarray
+        Gauge pressure [bar]; NaN where the inner radius would collapse.
+
+    References
+    ----------
+    .. [1] R. W. Ogden, "Non-Linear Elastic Deformations", Dover 1997 (extension and inflation
+       of a thick-walled tube).
+    .. [2] D. M. Haughton, R. W. Ogden, "Bifurcation of inflated circular cylinders of elastic
+       material under axial loading - II. Exact theory for thick-walled tubes", J. Mech. Phys.
+       Solids 27, 489-512, 1979.
+    """
+    Ri2, Ro, _ = _rest_radii(D0_mm, t0_mm, 0.0)
+    lz = 1.0 - np.asarray(eps, dtype=float)
+    ro2 = np.asarray(outer_radius_mm, dtype=float) ** 2
+    k = ro2 - Ro**2 / lz
+    ri2 = k + Ri2 / lz
+    with np.errstate(invalid="ignore", divide="ignore"):
+        M = np.log(ri2 / Ri2) - np.log(ro2 / Ro**2)
+        pressure_MPa = (C10_MPa + C01_MPa * lz**2) / lz * (M + k * (1.0 / ri2 - 1.0 / ro2))
+    return np.where(ri2 > 0, 10.0 * pressure_MPa, np.nan)
+
+
+def gap_closing_pressure(D0_mm, t0_mm, eps, theta0_deg, gap_mm,
+                         C10_MPa=SILASTIC_S.C10_MPa, C01_MPa=SILASTIC_S.C01_MPa):
+    """Pressure [bar] at which the freely inflating tube reaches the braid: the contact pressure.
+
+    :func:`mooney_rivlin_tube_inflation_pressure` at the braid's radius ``r_o^2 = Rb^2 (1 - lz^2
+    cos^2 theta0) / sin^2 theta0``, ``Rb = D0/2 + t0 + gap_mm`` [mm], at axial stretch ``1 -
+    eps``. Zero without a gap at ``eps = 0``; below it the braid carries nothing. The threshold
+    of :func:`klute_hannaford_threshold_pressure` lies at or above it (the free tube held at
+    its length pushes on its ends).
+    """
+    ro2 = mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg, gap_mm)[5]
+    return mooney_rivlin_tube_inflation_pressure(D0_mm, t0_mm, np.sqrt(ro2), eps, C10_MPa,
+                                                 C01_MPa)
 
 
 def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, C10_MPa=SILASTIC_S.C10_MPa,
@@ -245,8 +352,13 @@ class ThickWall(CalibratedTheta0, ForceModel):
         Length at rest [mm]. Recorded only: the mid-section model does not depend on the length.
     C10_MPa, C01_MPa : float, optional
         Mooney-Rivlin constants of the wall [MPa]; default Silastic S (the paper's Equation 3).
+    gap_mm : float, optional
+        Radial gap between tube and braid at rest [mm] (:func:`klute_hannaford`); with a gap the
+        threshold is above zero even at ``eps = 0``. Default: the calibration entry's
+        ``gap_mm`` where a muscle was identified with one (``mkm identify --params ...,gap``),
+        else 0.
     calibration : Calibration, optional
-        Where the default angle (and an identified rubber) comes from; default the shipped
+        Where the default angle (and an identified rubber and gap) comes from; default the shipped
         ``fem/calibration.json`` (:class:`mkm.fem.calibration.Calibration`).
     """
 
@@ -256,27 +368,45 @@ class ThickWall(CalibratedTheta0, ForceModel):
 
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
                  C10_MPa: float | None = None, C01_MPa: float | None = None,
-                 calibration: Calibration | None = None):
+                 gap_mm: float | None = None, calibration: Calibration | None = None):
+        if gap_mm is not None:
+            gap_mm = check_value("gap_mm", gap_mm)
         self.theta0_deg = theta0_deg
         self.calibration = calibration
         self.L0_mm = L0_mm
         self.C10_MPa = C10_MPa
         self.C01_MPa = C01_MPa
+        self.gap_mm = gap_mm
 
     @property
     def material(self) -> MooneyRivlin:
         return self._rubber()
 
     def params(self):
+        """The parameters; ``gap_mm`` only when there is a gap, so that every record and cache
+        key of a gap-free muscle stays what it was."""
+        gap = {"gap_mm": self._gap()} if self._gap() else {}
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,
-                "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa}
+                "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa, **gap}
+
+    def _gap(self) -> float:
+        """The gap [mm]: given, else the calibration entry's (an identified muscle), else 0."""
+        if self.gap_mm is not None:
+            return self.gap_mm
+        try:
+            entry = self.calibrated_entry()
+        except ValueError:  # no entry for this model: an explicit angle needs none
+            return 0.0
+        return check_value("gap_mm", entry.get("gap_mm", 0.0), prefix="calibration ")
 
     def _forces(self, P, D0, t0, eps):
         theta0 = check_theta0(self._theta0())
         C10, C01 = self.material.C10_MPa, self.material.C01_MPa
-        threshold = klute_hannaford_threshold_pressure(D0, t0, eps, theta0, C10, C01)
+        gap = self._gap()
+        threshold = klute_hannaford_threshold_pressure(D0, t0, eps, theta0, C10, C01, gap)
         reachable = eps < chou_hannaford_eps_max(theta0)
-        force = np.where(reachable, klute_hannaford(P, D0, t0, eps, theta0, C10, C01), np.nan)
+        force = np.where(reachable, klute_hannaford(P, D0, t0, eps, theta0, C10, C01, gap),
+                         np.nan)
         # below P* the isometric lock is not yet engaged; the maximum only absorbs round-off
         # of A P - B just above P* (NaN passes through it)
         force = np.where(P <= threshold, 0.0, np.maximum(force, 0.0))

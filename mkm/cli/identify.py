@@ -30,8 +30,8 @@ def register(subparsers) -> None:
                         help="run folders of one muscle; a pattern (runs/*, expanded by mkm in "
                         "any shell) or a folder holding run folders")
     parser.add_argument("--params", default="theta0,rubber,friction,creep",
-                        help="what to fit, a comma list of theta0, rubber, friction, creep "
-                        "(default all)")
+                        help="what to fit, a comma list of theta0, rubber, friction, creep, "
+                        "gap (default all but gap; gap needs --model thickwall)")
     parser.add_argument("--model", default="axisym",
                         help="static model spec that confirms the fit (and searches where the "
                         "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "

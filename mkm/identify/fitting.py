@@ -7,7 +7,9 @@ every sample of every settled hold, both branches and every run at once
 (:func:`scipy.optimize.least_squares`, trust-region reflective within bounds).
 
 The rubber is one scale on Silastic S's two constants (``C10 = s C10_S``, ``C01 = s C01_S``): a
-force-pressure curve carries one rubber stiffness, not two constants' ratio.
+force-pressure curve carries one rubber stiffness, not two constants' ratio. The radial gap
+between tube and braid (``gap``, :func:`mkm.fem.thickwall.klute_hannaford`) is fitted only when
+asked, with a static model that takes it.
 
 The static force comes from a :class:`StaticSource`: the surrogate (fast: the search) or any
 static rung of the registry (the FE model: the confirmation, and the search itself where the
@@ -31,12 +33,16 @@ from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
 #: ``--params`` groups and the fitted parameters each holds (internal names)
 GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",),
-          "friction": ("hysteresis_fraction",), "creep": ("creep_fraction", "log_tau")}
-ORDER = ("theta0_deg", "rubber_scale", "hysteresis_fraction", "creep_fraction", "log_tau")
+          "friction": ("hysteresis_fraction",), "creep": ("creep_fraction", "log_tau"),
+          "gap": ("gap_mm",)}
+#: what ``--params`` fits when not given: a gap only when asked
+DEFAULT_GROUPS = ("theta0", "rubber", "friction", "creep")
+ORDER = ("theta0_deg", "rubber_scale", "gap_mm", "hysteresis_fraction", "creep_fraction",
+         "log_tau")
 TERM_BOUNDS = {"hysteresis_fraction": (0.0, 0.3), "creep_fraction": (0.0, 0.3),
                "log_tau": (math.log(1.0), math.log(1000.0))}
 #: the FE model's search box where the surrogate's does not apply
-FE_BOX = {"theta0_deg": (15.0, 50.0), "rubber_scale": (0.2, 5.0)}
+FE_BOX = {"theta0_deg": (15.0, 50.0), "rubber_scale": (0.2, 5.0), "gap_mm": (0.0, 5.0)}
 #: grid of the surrogate's static table [bar] (the simulated bench tabulates at 0.05 bar too)
 TABLE_STEP_BAR = 0.05
 #: an optimum this close to a box edge (a fraction of the box) is at the edge
@@ -46,7 +52,7 @@ EDGE_FRACTION = 1e-3
 def parse_groups(text: str | None) -> tuple[str, ...]:
     """``--params`` as group names in canonical order; ``ValueError`` names an unknown one."""
     if text is None:
-        return tuple(GROUPS)
+        return DEFAULT_GROUPS
     names = [n.strip() for n in str(text).split(",") if n.strip()]
     unknown = [n for n in names if n not in GROUPS]
     if unknown:
@@ -63,7 +69,8 @@ def full_parameters(values: dict[str, float]) -> dict[str, float]:
     return {"theta0_deg": values["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
             "C01_MPa": scale * SILASTIC_S.C01_MPa,
             "hysteresis_fraction": values["hysteresis_fraction"],
-            "creep_fraction": values["creep_fraction"], "creep_tau_s": math.exp(values["log_tau"])}
+            "creep_fraction": values["creep_fraction"], "creep_tau_s": math.exp(values["log_tau"]),
+            **_gap(values)}
 
 
 def internal_values(values: dict[str, float]) -> dict[str, float]:
@@ -73,7 +80,12 @@ def internal_values(values: dict[str, float]) -> dict[str, float]:
             "rubber_scale": values["C10_MPa"] / SILASTIC_S.C10_MPa,
             "hysteresis_fraction": values["hysteresis_fraction"],
             "creep_fraction": values["creep_fraction"],
-            "log_tau": math.log(values["creep_tau_s"])}
+            "log_tau": math.log(values["creep_tau_s"]), **_gap(values)}
+
+
+def _gap(values: dict) -> dict:
+    """``gap_mm`` where the values have one (a gap is fitted only when asked)."""
+    return {"gap_mm": values["gap_mm"]} if "gap_mm" in values else {}
 
 
 class StaticSource:
@@ -82,7 +94,8 @@ class StaticSource:
     name = "static"
     box: dict[str, tuple[float, float]] = FE_BOX
 
-    def tables(self, runs, theta0_deg: float, rubber_scale: float) -> list[tuple]:
+    def tables(self, runs, theta0_deg: float, rubber_scale: float,
+               gap_mm: float = 0.0) -> list[tuple]:
         raise NotImplementedError
 
 
@@ -105,14 +118,15 @@ class ModelStatic(StaticSource):
         self.runner, self.cache_dir = runner, cache_dir
         self.calls = 0
 
-    def model(self, theta0_deg: float, rubber_scale: float):
+    def model(self, theta0_deg: float, rubber_scale: float, gap_mm: float = 0.0):
+        gap = {"gap_mm": float(gap_mm)} if gap_mm else {}
         return self.spec.with_params(
             L0_mm=self.L0_mm, theta0_deg=float(theta0_deg),
             C10_MPa=rubber_scale * SILASTIC_S.C10_MPa,
-            C01_MPa=rubber_scale * SILASTIC_S.C01_MPa).build()
+            C01_MPa=rubber_scale * SILASTIC_S.C01_MPa, **gap).build()
 
-    def tables(self, runs, theta0_deg, rubber_scale):
-        model = self.model(theta0_deg, rubber_scale)
+    def tables(self, runs, theta0_deg, rubber_scale, gap_mm=0.0):
+        model = self.model(theta0_deg, rubber_scale, gap_mm)
         grids = [run.table_pressures() for run in runs]
         solved = predict_many([(model, grid, *run.geometry) for grid, run in
                                zip(grids, runs, strict=True)], self.cache_dir,
@@ -152,7 +166,9 @@ class SurrogateStatic(StaticSource):
                     for k, v in values.items() if not box[k][0] <= v <= box[k][1] + 1e-9]
         return sorted(set(out))
 
-    def tables(self, runs, theta0_deg, rubber_scale):
+    def tables(self, runs, theta0_deg, rubber_scale, gap_mm=0.0):
+        if gap_mm:
+            raise ValueError("the surrogate has no gap between tube and braid")
         model = self.surrogate.with_parameters(
             L0_mm=self.L0_mm, theta0_deg=float(theta0_deg),
             C10_MPa=rubber_scale * SILASTIC_S.C10_MPa, C01_MPa=rubber_scale * SILASTIC_S.C01_MPa)
@@ -176,23 +192,28 @@ class Corrected(StaticSource):
         self.base, self.corrections = base, corrections
         self.name, self.box = f"{base.name} corrected by the FE model", base.box
 
-    def tables(self, runs, theta0_deg, rubber_scale):
-        tables = self.base.tables(runs, theta0_deg, rubber_scale)
+    def tables(self, runs, theta0_deg, rubber_scale, gap_mm=0.0):
+        tables = self.base.tables(runs, theta0_deg, rubber_scale, gap_mm)
         return [(grid, np.maximum(F + np.interp(grid, *self.corrections[k]), 0.0))
                 for k, (grid, F) in enumerate(tables)]
 
 
 def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tuple]:
     """Per run: the FE model's pressures and FE minus ``base`` there, at ``values``."""
-    fe_tables = fe.tables(runs, values["theta0_deg"], values["rubber_scale"])
-    base_tables = base.tables(runs, values["theta0_deg"], values["rubber_scale"])
+    fe_tables = fe.tables(runs, *_static(values))
+    base_tables = base.tables(runs, *_static(values))
     return [(grid, F - np.interp(grid, *base_tables[k]))
             for k, (grid, F) in enumerate(fe_tables)]
 
 
+def _static(values: dict) -> tuple[float, float, float]:
+    """The static force's parameters: braid angle, rubber scale, gap (0 where not fitted)."""
+    return values["theta0_deg"], values["rubber_scale"], values.get("gap_mm", 0.0)
+
+
 def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
     """The model's force trace [N] at every sample of each run."""
-    tables = source.tables(runs, values["theta0_deg"], values["rubber_scale"])
+    tables = source.tables(runs, *_static(values))
     return [force_history(run.time_s, np.interp(run.pressure_bar, *tables[k]),
                           values["hysteresis_fraction"], values["creep_fraction"],
                           math.exp(values["log_tau"]))
@@ -262,7 +283,8 @@ def fit(source: StaticSource, runs, names, start: dict[str, float]) -> Fit:
 
     if names:
         # one residual scale for every parameter: a step of 0.01 deg, 0.1 %, 0.01 in log tau
-        scale = np.array([{"theta0_deg": 0.3, "rubber_scale": 0.05}.get(n, 0.01) for n in names])
+        scale = np.array([{"theta0_deg": 0.3, "rubber_scale": 0.05, "gap_mm": 0.05}.get(n, 0.01)
+                          for n in names])
         res = least_squares(residuals, x0, bounds=tuple(np.array(b) for b in zip(
             *bounds.values(), strict=True)), x_scale=scale, diff_step=1e-4, method="trf",
             xtol=1e-10, ftol=1e-10, max_nfev=400)

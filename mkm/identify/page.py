@@ -59,7 +59,8 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
     identified = fitting.internal_values({
         "theta0_deg": entry["theta0_deg"], "C10_MPa": entry.get("C10_MPa", SILASTIC_S.C10_MPa),
         "C01_MPa": entry.get("C01_MPa", SILASTIC_S.C01_MPa),
-        **{k: entry.get(k, DEFAULTS[k]) for k in DEFAULTS}})
+        **{k: entry.get(k, DEFAULTS[k]) for k in DEFAULTS},
+        **({"gap_mm": entry["gap_mm"]} if "gap_mm" in entry else {})})
     nominal = fitting.nominal_values(Calibration.shipped().entry(key)["theta0_deg"])
     rows = []
     runs = [load_run_data(p) for p in run_dirs]

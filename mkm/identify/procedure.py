@@ -32,7 +32,7 @@ from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
 SEARCHES = ("surrogate", "model")
 #: where the fitted terms start (a term at its zero bound has no gradient to leave it by)
-TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01}
+TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01, "gap_mm": 0.2}
 
 
 def identify(run_dirs, params: str | None = None, model: str = "axisym",
@@ -47,7 +47,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
     run_dirs : list of path
         Run folders of one muscle.
     params : str, optional
-        Comma list of ``theta0``, ``rubber``, ``friction``, ``creep`` (default all).
+        Comma list of ``theta0``, ``rubber``, ``friction``, ``creep``, ``gap`` (default all but
+        ``gap``; the gap needs a ``model`` that takes ``gap_mm``: ``thickwall``).
     model : str
         The static model's spec for the confirmation (and a search outside the surrogate's box):
         a registry spec taking theta0 and the rubber (``axisym``, ``axisym:mesh=coarse``,
@@ -77,6 +78,9 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
     groups, notes = supported_groups(groups, runs)
     with Runner(workers, scheduler) as runner:
         fe = ModelStatic(model, float(runs[0].muscle["L0_mm"]), runner, cache_dir)
+        if "gap" in groups and "gap_mm" not in fe.spec.entry.parameters:
+            raise ValueError(f"--params gap needs a model with a gap between tube and braid: "
+                             f"--model {model!r} has none (expected thickwall)")
         result = _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                            calibration)
         result.fe_workers = runner.describe()
@@ -106,7 +110,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     names = [n for g in groups for n in GROUPS[g]]
     notes = list(notes)
     source = fe
-    if search == "surrogate":
+    if search == "surrogate" and "gap_mm" in names:
+        notes.append(f"the surrogate has no gap between tube and braid: searched with {fe.name}")
+    elif search == "surrogate":
         if surrogate is None:
             from mkm.core.durations import estimate
             from mkm.surrogate import default_model
@@ -121,7 +127,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             notes.append("the surrogate's box does not cover this muscle ("
                          + "; ".join(outside) + "): searched with the FE model instead")
             source = fe
-    start = {**nominal, **{n: TERM_START.get(n, nominal[n]) for n in names}}
+    start = {**nominal, **{n: TERM_START[n] if n in TERM_START else nominal[n] for n in names}}
 
     notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
            f"of {len(runs)} run(s) with {source.name}")

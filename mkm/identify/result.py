@@ -35,7 +35,7 @@ from mkm.fem.ladder import MODELS
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify.fitting import Fit, full_parameters
 
-UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa",
+UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
          "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
 TERMS = ("hysteresis_fraction", "creep_fraction", "creep_tau_s")
 
@@ -190,13 +190,14 @@ class Identification:
         material = {"C10_MPa": round(values["C10_MPa"], 6), "C01_MPa": round(values["C01_MPa"], 6)}
         terms = {k: round(values[k], 6) for k in TERMS if self._fitted_term(k)}
         static = parse_spec(self.model).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))
-        model = static.build(theta0_deg=values["theta0_deg"], **material)
+        gap = {"gap_mm": round(values["gap_mm"], 6)} if "gap_mm" in values else {}
+        model = static.build(theta0_deg=values["theta0_deg"], **material, **gap)
         identified = {"runs": record["runs"], "parameters": record["parameters"],
                       "interval_method": record["interval_method"], "dropped": self.dropped,
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"]}
         reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
-                 **material, **terms, "target": "identify", "identified": identified}
+                 **material, **gap, **terms, "target": "identify", "identified": identified}
         store_calibration(files["calibration"], model.calibration_key, entry)
         for spec in closed_forms():  # their theta0 fitted again to the runs
             closed = parse_spec(spec).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))

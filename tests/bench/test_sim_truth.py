@@ -74,6 +74,22 @@ def test_the_truth_is_recorded_in_the_simulator_settings(config, tmp_path):
     result = acquire(c, out_root=tmp_path)
     meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
     sim = meta["hardware"]["sim"]
-    assert sim["truth"] == {"theta0_deg": 31.5, "C10_MPa": None, "C01_MPa": None}
+    assert sim["truth"] == {"theta0_deg": 31.5, "C10_MPa": None, "C01_MPa": None,
+                            "gap_mm": None}
     assert sim["physics"]["force_model_params"]["theta0_deg"] == 31.5
     assert "[sim.truth]\ntheta0_deg = 31.5" in (result.path / "config.toml").read_text("utf-8")
+
+
+def test_a_gap_truth_is_the_thick_wall_muscle_with_that_gap(config):
+    m = config.muscle
+    pressure, force = static_force_table(quiet(config, model="thickwall",
+                                               truth={"gap_mm": 0.8}))
+    expected = make_model("thickwall", L0_mm=m.L0_mm, gap_mm=0.8).predict(
+        pressure, m.D0_mm, m.t0_mm, m.eps)
+    # the table is the model at its pressures: only the table's own arithmetic differs
+    np.testing.assert_allclose(force, expected.force_N, rtol=1e-12, atol=1e-12)
+    _, gap_free = static_force_table(quiet(config, model="thickwall"))
+    assert np.argmax(force > 0) > np.argmax(gap_free > 0)  # the force starts later
+    with pytest.raises(ValueError, match=r"sim.truth.gap_mm is not a parameter of "
+                                         r"sim.model='axisym'"):
+        config.replace(sim={"truth": {"gap_mm": 0.8}})

@@ -119,7 +119,7 @@ def test_bad_input_is_one_line_with_status_2(args, message, mkm_run):
     (["--model", "thickwall", "--diameter", "braid"],
      "mkm fem solve: error: --model thickwall: thickwall takes no diameter (its parameters: "
      "theta0_deg, "
-     "L0_mm, C10_MPa, C01_MPa)"),
+     "L0_mm, C10_MPa, C01_MPa, gap_mm)"),
     (["--model", "axisym:mesh=huge"], "mkm fem solve: error: mesh='huge' is invalid"),
     # set in the spec, not by a flag: named as the spec names it
     (["--model", "thickwall:theta0_deg=60"],

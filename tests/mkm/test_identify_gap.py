@@ -1,0 +1,86 @@
+"""mkm identify --params ...,gap: a simulated gap between tube and braid, found blind from runs
+at two eps (the thick-wall closed form simulates and identifies; issue target: the gap within
+10 % of its value)."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from mkm.bench.config import load_config
+from mkm.bench.run import acquire
+from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.fem.calibration import Calibration
+from mkm.fem.ladder import make_model
+from mkm.fem.materials import SILASTIC_S
+from mkm.identify import identify
+from mkm.identify.page import report_section
+
+SEED = int(np.random.SeedSequence().entropy % 2**32)
+
+
+def record(truth: dict, eps: float, out, seed: int):
+    """One blind simulated staircase (0.25-2.5 bar up and down) of the thick-wall muscle
+    ``truth``, with the simulator's default friction, creep and noise."""
+    scale = truth["rubber_scale"]
+    config = load_config(eps=eps).replace(sim={
+        "model": "thickwall", "seed": seed,
+        "truth": {"theta0_deg": truth["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
+                  "C01_MPa": scale * SILASTIC_S.C01_MPa, "gap_mm": truth["gap_mm"]}})
+    result = acquire(config, out_root=out, notify=lambda message: None)
+    assert result.status == "complete"
+    remove_simulator_settings(result.path)
+    assert "gap_mm" not in (result.path / "run.json").read_text(encoding="utf-8")
+    return result.path
+
+
+@pytest.fixture(scope="module")
+def gapped(tmp_path_factory):
+    rng = np.random.default_rng(SEED)
+    truth = {"theta0_deg": rng.uniform(28.0, 36.0), "rubber_scale": rng.uniform(0.8, 1.5),
+             "gap_mm": rng.uniform(0.5, 1.5)}
+    out = tmp_path_factory.mktemp("gap-runs")
+    return truth, [record(truth, eps, out, seed=k) for k, eps in enumerate((0.0, 0.122))]
+
+
+def test_a_simulated_gap_is_found_blind_from_two_eps(gapped, tmp_path):
+    truth, runs = gapped
+    result = identify(runs, params="theta0,rubber,gap,friction,creep", model="thickwall",
+                      search="model")
+    found, why = result.fit.values, f"seed {SEED}, truth {truth}"
+    # the issue's target is 10 %; in its own family the fit finds the gap to about 0.1 % (six
+    # seeds, default friction, creep and noise), so 2 % leaves room for unlucky noise draws
+    assert found["gap_mm"] == pytest.approx(truth["gap_mm"], rel=0.02), why
+    assert found["theta0_deg"] == pytest.approx(truth["theta0_deg"], abs=0.3), why
+    table = result.parameters().set_index("parameter")
+    low, high = table.loc["gap_mm", ["ci_low", "ci_high"]]
+    assert low <= found["gap_mm"] <= high and table.loc["gap_mm", "unit"] == "mm"
+    assert result.values["gap_mm"] == found["gap_mm"]
+
+    # the calibration it writes carries the gap to every command that takes --calibration
+    files = result.write(tmp_path / "identified")
+    learnt = Calibration.load(files["calibration"])
+    model = make_model("thickwall", learnt)
+    assert model.params()["gap_mm"] == pytest.approx(found["gap_mm"], abs=1e-6)
+    explicit = make_model("thickwall", theta0_deg=model.params()["theta0_deg"],
+                          C10_MPa=model.material.C10_MPa, C01_MPa=model.material.C01_MPa,
+                          gap_mm=model.params()["gap_mm"])
+    pressures = np.linspace(0.0, 2.5, 11)
+    np.testing.assert_array_equal(model.predict(pressures, 30.0, 3.0, 0.0).force_N,
+                                  explicit.predict(pressures, 30.0, 3.0, 0.0).force_N)
+    # the report's identified muscle predicts with the gap: as closely as the fit itself
+    (tmp_path / "page").mkdir()
+    page = report_section(runs, tmp_path / "page", learnt)
+    assert "gap_mm" in page
+    identified = re.findall(r"<td>identified</td>\s*<td>([0-9.e+-]+)</td>", page)
+    assert identified and max(map(float, identified)) < 0.5, page
+    assert "gap_mm" not in make_model("thickwall").params()  # the shipped calibration has none
+
+
+def test_a_gap_asked_of_a_model_without_one_is_refused(gapped):
+    _, runs = gapped
+    with pytest.raises(ValueError, match=r"--params gap needs a model with a gap between tube "
+                                         r"and braid: --model 'axisym:mesh=coarse' has none"):
+        identify(runs, params="theta0,gap", model="axisym:mesh=coarse", search="model")
