@@ -445,10 +445,8 @@ class BenchConfig:
                              "split the run)")
 
     def replace(self, **sections) -> BenchConfig:
-        """A copy with some settings changed: ``replace(muscle={"eps": 0.1})``; the text
-        (the run folder's ``config.toml``) changed with them, its comments kept."""
-        import tomlkit
-
+        """A copy with some settings changed: ``replace(muscle={"eps": 0.1})``, recorded in
+        ``overrides`` (and in :meth:`effective_text`)."""
         changes = {}
         for name, values in sections.items():
             try:
@@ -457,16 +455,25 @@ class BenchConfig:
                 raise ValueError(f"{name}.{exc}") from None
         overrides = {**self.overrides, **{f"{name}.{key}": value for name, values in
                                           sections.items() for key, value in values.items()}}
-        document = tomlkit.parse(self.text) if self.text else tomlkit.document()
-        for name, values in sections.items():
-            _set_toml(document.setdefault(name, tomlkit.table()), values)
-        new = dataclasses.replace(self, **changes, overrides=overrides,
-                                  text=tomlkit.dumps(document))
+        new = dataclasses.replace(self, **changes, overrides=overrides)
         for section in changes.values():
             if hasattr(section, "check"):
                 section.check()
         new.check()
         return new
+
+    def effective_text(self) -> str:
+        """The configuration's text with its overrides written in, comments kept: what a run
+        folder's ``config.toml`` holds, so that it says what run.json says."""
+        if not self.overrides:
+            return self.text
+        import tomlkit
+
+        document = tomlkit.parse(self.text) if self.text else tomlkit.document()
+        for setting, value in self.overrides.items():
+            section, _, key = setting.partition(".")
+            _set_toml(document.setdefault(section, tomlkit.table()), {key: value})
+        return tomlkit.dumps(document)
 
     def as_dict(self) -> dict[str, Any]:
         return {f.name: dataclasses.asdict(getattr(self, f.name))

@@ -50,7 +50,7 @@ class Recorder:
             command=prov["command"], provenance=prov, started_utc=prov["date_utc"],
             process=process, unvented_before=list(unvented_before or []),
             simulated=bool(info.simulated))
-        self.writer = RunWriter(out_root, self.meta, config.text)  # run.json first
+        self.writer = RunWriter(out_root, self.meta, config.effective_text())  # run.json first
 
     @property
     def path(self) -> Path:

@@ -46,8 +46,8 @@ def test_an_override_is_in_the_text_a_run_folder_keeps(tmp_path):
     from mkm.bench.run import acquire
 
     c = load_config(eps=0.122)
-    assert tomllib.loads(c.text)["muscle"]["eps"] == 0.122
-    assert "# shortening ratio (fraction), set by the threaded rod" in c.text  # comments kept
+    assert tomllib.loads(c.effective_text())["muscle"]["eps"] == 0.122
+    assert "# shortening ratio (fraction), set by the threaded rod" in c.effective_text()
     c = replace(c, sequence=replace(c.sequence, pressures_bar=(0.5,), preconditioning_cycles=0))
     run = acquire(c, out_root=tmp_path)
     folder = tomllib.loads((run.path / "config.toml").read_text(encoding="utf-8"))
