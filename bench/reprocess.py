@@ -118,7 +118,8 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
     meta.provenance, meta.command = prov, prov["command"]
     # run.json first, "running" from this process until every file is written
     writer = RunWriter(out_root, dataclasses.replace(
-        meta, status=RunStatus.RUNNING, process=ProcessIdentity.current()), config.effective_text())
+        meta, status=RunStatus.RUNNING, process=ProcessIdentity.current()),
+        config.effective_text())
     # pass 2: every sample again, forces from the raw volts
     for chunk in iter_samples(source.path):
         during_tare = (chunk["phase"] == "tare").to_numpy()
