@@ -28,44 +28,11 @@ its running task; Dask's scheduler gives it to another worker (up to
 ``distributed.scheduler.allowed-failures`` deaths per task, 3 by default) and the batch finishes
 with every job.
 
-Running on a lab's own cluster
-------------------------------
-Start a scheduler and workers, then give its address to any batch command::
-
-    dask scheduler --port 8786                                   # on one machine
-    dask worker tcp://HOST:8786 --nworkers 4 --nthreads 1        # on each machine
-    mkm fem dataset --model axisym --mesh fine --scheduler tcp://HOST:8786
-
-One thread per worker process: a job is one sparse solve at a time, so processes, not threads,
-use the cores (set ``OMP_NUM_THREADS=1`` in the workers' environment as the local cluster's
-nanny does); the local cluster also turns off what steals CPU from a solve
-(:data:`QUIET_WORKERS`), which a lab's workers get from the environment::
-
-    export DASK_DISTRIBUTED__WORKER__PROFILE__ENABLED=False
-    export DASK_DISTRIBUTED__ADMIN__TICK__INTERVAL=500ms
-
-On an HPC queue, dask-jobqueue starts the workers as batch jobs::
-
-    from dask_jobqueue import SLURMCluster
-    from mkm.fem.dataset import build_dataset
-
-    cluster = SLURMCluster(cores=1, processes=1, memory="2GB", walltime="02:00:00",
-                           job_script_prologue=["source /path/to/venv/bin/activate",
-                                                "export OMP_NUM_THREADS=1"])
-    cluster.scale(jobs=100)  # 100 single-threaded workers, one queue job each
-    build_dataset("grid.toml", "axisym", mesh="fine", scheduler=cluster.scheduler_address)
-
-(or keep the cluster open and give ``cluster.scheduler_address`` to ``--scheduler``).
-
-What the workers need: Python with the same ``mkm-bench`` code and its dependencies (``pip
-install mkm-bench`` from the same source or wheel: numpy, scipy, scikit-fem, dask[distributed]).
-What travels: each task carries its jobs (plain numbers: geometry, ``eps``, pressures, the
-resolved braid angle, the rubber), so a calibration chosen with ``--calibration FILE`` on the
-client reaches the workers through the jobs, and no file is read on a worker. Before any job is
-sent, every worker reports the source version of the model
-(:func:`mkm.core.records.source_version`: a hash of the model's code and of the package's data
-files); a worker with other code is refused with the versions of both, and each result carries
-the version it was computed with, so a worker that joins later with other code is refused too.
+How to run it on a lab's own cluster or an HPC queue, and what the workers need, is in the
+datasets guide (``docs/guide/datasets.md``, "Scale-out with Dask"). Before any job is sent, every
+worker reports the source version of the model (:func:`mkm.core.records.source_version`); a
+worker with other code is refused with the versions of both, and each result carries the version
+it was computed with.
 """
 
 from __future__ import annotations
