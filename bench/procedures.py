@@ -141,6 +141,23 @@ def _mend_dead_runs(device: Backend, notify) -> list[str]:
     return []
 
 
+def loadcell_table(fit: dict, config: BenchConfig | None = None) -> str:
+    """The ``[loadcell]`` table to paste into a bench configuration, from a fit
+    (:func:`fit_loadcell`): the configured channel and capacity, the fitted sensitivity and
+    offset (6 significant digits), as TOML."""
+    import tomlkit
+
+    table = tomlkit.table()
+    if config is not None:
+        table["channel"] = config.loadcell.channel
+        table["capacity_N"] = config.loadcell.capacity_N
+    table["sensitivity_N_per_V"] = float(f"{fit['sensitivity_N_per_V']:.6g}")
+    table["offset_V"] = float(f"{fit['offset_V']:.6g}")
+    document = tomlkit.document()
+    document["loadcell"] = table
+    return tomlkit.dumps(document).rstrip("\n")
+
+
 def fit_loadcell(mass_kg, volts) -> dict:
     """Least-squares load-cell calibration from known masses and the mean volts under each.
 

@@ -221,20 +221,9 @@ def _tare(args) -> int:
     return 0
 
 
-def loadcell_toml(fit: dict, config=None) -> str:
-    """The ``[loadcell]`` block to paste into a bench config, from a fit."""
-    lines = ["[loadcell]"]
-    if config is not None:
-        lines += [f'channel = "{config.loadcell.channel}"',
-                  f"capacity_N = {config.loadcell.capacity_N!r}"]
-    lines += [f"sensitivity_N_per_V = {fit['sensitivity_N_per_V']:.6g}",
-              f"offset_V = {fit['offset_V']:.6g}"]
-    return "\n".join(lines)
-
-
 def _calibrate_loadcell(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
-    from mkm.bench.procedures import calibrate_loadcell, fit_loadcell
+    from mkm.bench.procedures import calibrate_loadcell, fit_loadcell, loadcell_table
 
     if args.volts is not None:  # volts measured elsewhere: nothing is driven
         config = _config(args)
@@ -250,7 +239,7 @@ def _calibrate_loadcell(args) -> int:
     print(f"sensitivity_N_per_V = {out['sensitivity_N_per_V']:.4f}, offset_V = "
           f"{out['offset_V']:.5f} (R^2 {out['r_squared']:.6f}, largest residual "
           f"{out['max_abs_residual_N']:.3f} N over {out['n_points']} masses)", file=sys.stderr)
-    print(loadcell_toml(out, config))
+    print(loadcell_table(out, config))
     return 0
 
 
