@@ -51,6 +51,11 @@ class Term:
         self.keep_r = self.dofs >= 0
         self.keep_K = self.keep_r[:, :, None] & self.keep_r[:, None, :]
         self._keep_K_flat = np.flatnonzero(self.keep_K)  # np.take is faster than a mask
+        # work arrays of the element matrices, kept: a fresh array of a megabyte per assembly
+        # costs its page faults again each time (the allocator returns freed memory to the
+        # system), as much as the products themselves
+        self._BH = np.empty((e, i, q, a))
+        self._Ke = np.empty((e, i, i))
 
     def values(self, y_ext):
         """Variables at the quadrature points; ``y_ext`` ends with a zero read by fixed dofs."""
@@ -63,13 +68,13 @@ class Term:
         return np.matmul(self.B_flat, (grad * self.w[..., None]).reshape(e, q * a, 1))[..., 0]
 
     def element_arrays(self, grad, hess):
-        """Element vectors (e, i) and the kept entries of the element matrices."""
+        """Element vectors (e, i) and the kept entries of the element matrices,
+        ``K_e = sum_q B_q (w_q H_q) B_q^T``."""
         e, q, i, a = self.B.shape
-        re = self.element_vectors(grad)
-        BH = np.matmul(self.B, hess * self.w[..., None, None])  # (e, q, i, b)
-        Ke = np.matmul(BH.transpose(0, 2, 1, 3).reshape(e, i, q * a),
-                       self.B_flat.transpose(0, 2, 1))
-        return re, np.take(Ke, self._keep_K_flat)
+        # B (w H) written in (e, i, q, a) order, so that K_e is one product over (q, a)
+        np.matmul(self.B, hess * self.w[..., None, None], out=self._BH.transpose(0, 2, 1, 3))
+        np.matmul(self._BH.reshape(e, i, q * a), self.B_flat.transpose(0, 2, 1), out=self._Ke)
+        return self.element_vectors(grad), np.take(self._Ke, self._keep_K_flat)
 
     def pattern(self):
         rows = np.broadcast_to(self.dofs[:, :, None], self.keep_K.shape)[self.keep_K]

@@ -70,18 +70,20 @@ def mooney_rivlin_incompressible_tangent(y: np.ndarray, material: MooneyRivlin) 
     """
     a, b, c, d, t, p = np.moveaxis(y, -1, 0)
     C10, C01 = material.C10_MPa, material.C01_MPa
-    x = y[..., :4]
-    jp = np.stack([d, -c, -b, a], axis=-1)
+    x = np.moveaxis(y[..., :4], -1, 0)
+    jp = np.stack([d, -c, -b, a])
     j = a * d - b * c
-    H = np.zeros(y.shape + (6,))
-    H[..., :4, :4] = ((2 * C10 + 2 * C01 * t * t)[..., None, None] * np.eye(4)
-                      + 2 * C01 * jp[..., :, None] * jp[..., None, :]
-                      + (2 * C01 * j - p * t)[..., None, None] * _DJ_DF2)
-    H[..., :4, 4] = H[..., 4, :4] = 4 * C01 * t[..., None] * x - p[..., None] * jp
-    H[..., :4, 5] = H[..., 5, :4] = -t[..., None] * jp
-    H[..., 4, 4] = 2 * C10 + 2 * C01 * np.sum(x * x, axis=-1)
-    H[..., 4, 5] = H[..., 5, 4] = -j
-    return H
+    # built as H[row, column, ...] (whole rows of points at a time), returned as a view
+    H = np.empty((6, 6) + t.shape)
+    H[:4, :4] = (2 * C01 * jp[:, None] * jp[None, :]
+                 + (2 * C01 * j - p * t) * _DJ_DF2.reshape(_DJ_DF2.shape + (1,) * t.ndim))
+    H[range(4), range(4)] += 2 * C10 + 2 * C01 * t * t
+    H[:4, 4] = H[4, :4] = 4 * C01 * t * x - p * jp
+    H[:4, 5] = H[5, :4] = -t * jp
+    H[4, 4] = 2 * C10 + 2 * C01 * np.sum(x * x, axis=0)
+    H[4, 5] = H[5, 4] = -j
+    H[5, 5] = 0.0
+    return np.moveaxis(H, (0, 1), (-2, -1))
 
 
 def rubber(y: np.ndarray, material: MooneyRivlin) -> tuple[np.ndarray, np.ndarray]:
