@@ -69,7 +69,9 @@ class Term:
 
     def element_arrays(self, grad, hess):
         """Element vectors (e, i) and the kept entries of the element matrices,
-        ``K_e = sum_q B_q (w_q H_q) B_q^T``."""
+        ``K_e = sum_q B_q (w_q H_q) B_q^T`` (None where ``hess`` is None: the vectors only)."""
+        if hess is None:
+            return self.element_vectors(grad), None
         e, q, i, a = self.B.shape
         # B (w H) written in (e, i, q, a) order, so that K_e is one product over (q, a)
         np.matmul(self.B, hess * self.w[..., None, None], out=self._BH.transpose(0, 2, 1, 3))
@@ -77,8 +79,10 @@ class Term:
         return self.element_vectors(grad), np.take(self._Ke, self._keep_K_flat)
 
     def pattern(self):
-        rows = np.broadcast_to(self.dofs[:, :, None], self.keep_K.shape)[self.keep_K]
-        cols = np.broadcast_to(self.dofs[:, None, :], self.keep_K.shape)[self.keep_K]
+        """Row and column of the kept element-matrix entries, in the order of their data."""
+        e, i = self.dofs.shape
+        rows = np.take(np.repeat(self.dofs, i, axis=1), self._keep_K_flat)
+        cols = np.take(np.tile(self.dofs, (1, i)), self._keep_K_flat)
         return rows, cols
 
     def vector(self, re, n: int) -> np.ndarray:
@@ -95,11 +99,16 @@ class Assembler:
 
     def __init__(self, terms, n: int):
         self.n = n
-        rows = np.concatenate([t.pattern()[0] for t in terms])
-        cols = np.concatenate([t.pattern()[1] for t in terms])
-        keys, self._slot = np.unique(rows * n + cols, return_inverse=True)
-        self._indices = keys % n
-        self._indptr = np.searchsorted(keys // n, np.arange(n + 1))
+        patterns = [t.pattern() for t in terms]
+        rows = np.concatenate([p[0] for p in patterns])
+        cols = np.concatenate([p[1] for p in patterns])
+        pattern = sp.csr_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
+        pattern.sum_duplicates()  # sorted column indices, one entry per (row, column)
+        self._indices, self._indptr = pattern.indices, pattern.indptr
+        # where each kept element entry lands in the CSR data: stored entries are sorted by
+        # (row, column), so a binary search of the same key finds it
+        stored = np.repeat(np.arange(n), np.diff(self._indptr)) * n + self._indices
+        self._slot = np.searchsorted(stored, rows * n + cols)
 
     def entries(self) -> tuple[np.ndarray, np.ndarray]:
         """Row and column of every stored entry of :meth:`matrix`, in the order of its data."""

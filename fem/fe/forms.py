@@ -86,12 +86,6 @@ def mooney_rivlin_incompressible_tangent(y: np.ndarray, material: MooneyRivlin) 
     return np.moveaxis(H, (0, 1), (-2, -1))
 
 
-def rubber(y: np.ndarray, material: MooneyRivlin) -> tuple[np.ndarray, np.ndarray]:
-    """Gradient and Hessian of the incompressible Mooney-Rivlin density (see above)."""
-    return (mooney_rivlin_incompressible(y, material),
-            mooney_rivlin_incompressible_tangent(y, material))
-
-
 def cavity_volume(y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     r"""Volume density of the closed cavity along the inner surface, ``v = pi r^2 dz/dZ``.
 
