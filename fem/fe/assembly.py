@@ -12,6 +12,8 @@ The physics (which variables, which density) lives in :mod:`mkm.fem.fe.forms` an
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 import scipy.sparse as sp
 
@@ -102,13 +104,8 @@ class Assembler:
         patterns = [t.pattern() for t in terms]
         rows = np.concatenate([p[0] for p in patterns])
         cols = np.concatenate([p[1] for p in patterns])
-        pattern = sp.csr_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
-        pattern.sum_duplicates()  # sorted column indices, one entry per (row, column)
-        self._indices, self._indptr = pattern.indices, pattern.indptr
-        # where each kept element entry lands in the CSR data: stored entries are sorted by
-        # (row, column), so a binary search of the same key finds it
-        stored = np.repeat(np.arange(n), np.diff(self._indptr)) * n + self._indices
-        self._slot = np.searchsorted(stored, rows * n + cols)
+        self._indices, self._indptr, self._slot = csr_slots(
+            n, rows.astype(np.int64).tobytes(), cols.astype(np.int64).tobytes())
 
     def entries(self) -> tuple[np.ndarray, np.ndarray]:
         """Row and column of every stored entry of :meth:`matrix`, in the order of its data."""
@@ -118,3 +115,24 @@ class Assembler:
         """Sparse matrix from the kept element entries of each term, concatenated in order."""
         data = np.bincount(self._slot, np.concatenate(blocks), minlength=self._indices.size)
         return sp.csr_matrix((data, self._indices, self._indptr), shape=(self.n, self.n))
+
+
+@lru_cache(maxsize=4)
+def csr_slots(n: int, rows: bytes, cols: bytes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """CSR ``indices`` and ``indptr`` of the entries ``(rows, cols)`` (int64 bytes) of an
+    ``n x n`` matrix, and the slot in its data where each entry lands (duplicates summed).
+
+    Kept for the next call with the same entries: every muscle of one mesh level and boundary
+    conditions has the same pattern, and finding it costs as much as a few assemblies on the
+    fine mesh. The arrays are read-only, shared by every matrix of that pattern.
+    """
+    rows, cols = np.frombuffer(rows, dtype=np.int64), np.frombuffer(cols, dtype=np.int64)
+    pattern = sp.csr_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
+    pattern.sum_duplicates()  # sorted column indices, one entry per (row, column)
+    # where each entry lands in the CSR data: stored entries are sorted by (row, column), so a
+    # binary search of the same key finds it
+    stored = np.repeat(np.arange(n), np.diff(pattern.indptr)) * n + pattern.indices
+    slots = np.searchsorted(stored, rows * n + cols)
+    for array in (pattern.indices, pattern.indptr, slots):
+        array.flags.writeable = False
+    return pattern.indices, pattern.indptr, slots

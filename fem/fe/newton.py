@@ -11,6 +11,7 @@ cannot be reached is returned with ``converged=False``, its iterations, residual
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 import scipy.sparse as sp
@@ -38,7 +39,8 @@ class OrderedLU:
     Newton's tangents share their pattern; SuperLU's default column ordering (COLAMD), found
     afresh at every factorisation, costs as much as the numerical factorisation of the FE
     tangents. Here the reverse Cuthill-McKee ordering of the pattern (symmetrised, dense rows
-    last: :func:`_banded_order`) is found at the first matrix of a pattern and reused, and
+    last: :func:`_banded_order`) is found at the first matrix of a pattern and reused (by
+    every instance: :func:`_ordering` keeps the last few patterns' orderings), and
     SuperLU factorises the symmetrically permuted matrix in its natural column order, in its
     symmetric mode (a diagonal pivot is taken while it is at least a tenth of the column's
     largest: the tangent of an energy is symmetric, and this keeps the band). The permuted
@@ -58,7 +60,9 @@ class OrderedLU:
     def __call__(self, A) -> _PermutedLU:
         A = A if getattr(A, "format", None) in ("csr", "csc") else sp.csc_matrix(A)
         if not self._same_pattern(A):
-            self._order(A)
+            (self._perm, self._inverse, self._source, self._p_indices,
+             self._p_indptr) = _ordering(A.format, A.shape, self.leading, A.indptr.tobytes(),
+                                         A.indices.tobytes(), A.indices.dtype.str)
             self._pattern = (A.format, A.shape, A.indptr.copy(), A.indices.copy())
         permuted = sp.csc_matrix((A.data[self._source], self._p_indices, self._p_indptr),
                                  shape=(self._perm.size,) * 2)
@@ -73,18 +77,29 @@ class OrderedLU:
         return (A.format == fmt and A.shape == shape and np.array_equal(A.indptr, indptr)
                 and np.array_equal(A.indices, indices))
 
-    def _order(self, A) -> None:
-        # A's entries numbered 1..nnz in its own storage order (1-based: no zero is dropped)
-        numbered = A.__class__((np.arange(1.0, A.nnz + 1.0), A.indices, A.indptr),
-                               shape=A.shape).tocsc()
-        if self.leading is not None:
-            numbered = numbered[:self.leading, :self.leading]
-        self._perm = _banded_order(numbered.tocsr())
-        self._inverse = np.argsort(self._perm)
-        numbered = numbered[self._perm][:, self._perm].tocsc()
-        numbered.sort_indices()
-        self._source = numbered.data.astype(np.intp) - 1
-        self._p_indices, self._p_indptr = numbered.indices, numbered.indptr
+
+@lru_cache(maxsize=4)
+def _ordering(fmt: str, shape: tuple, leading: int | None, indptr: bytes, indices: bytes,
+              index_dtype: str):
+    """The ordering of :class:`OrderedLU` for one sparsity pattern (``indptr``, ``indices``
+    as bytes): ``(perm, inverse, source, indices, indptr)``, where the permuted matrix's data
+    is ``A.data[source]``. Kept for the next call: every muscle of one mesh level has the same
+    pattern, and on the fine mesh the ordering costs as much as a factorisation."""
+    indptr = np.frombuffer(indptr, dtype=index_dtype)
+    indices = np.frombuffer(indices, dtype=index_dtype)
+    # A's entries numbered 1..nnz in its own storage order (1-based: no zero is dropped)
+    matrix = sp.csr_matrix if fmt == "csr" else sp.csc_matrix
+    numbered = matrix((np.arange(1.0, indices.size + 1.0), indices, indptr), shape=shape).tocsc()
+    if leading is not None:
+        numbered = numbered[:leading, :leading]
+    perm = _banded_order(numbered.tocsr())
+    numbered = numbered[perm][:, perm].tocsc()
+    numbered.sort_indices()
+    ordering = (perm, np.argsort(perm), numbered.data.astype(np.intp) - 1, numbered.indices,
+                numbered.indptr)
+    for array in ordering:  # shared by every OrderedLU of the pattern
+        array.flags.writeable = False
+    return ordering
 
 
 #: A row coupled to more than this many times the median row's unknowns is dense (a mesh node
