@@ -7,14 +7,14 @@ Run outside the test suite:
 
 Muscle I (D0 35 mm, t0 2.5 mm, L0 282 mm) at the calibrated theta0, pressures 0 to 2.5 bar in
 0.25 bar steps, as `mkm fem solve` runs it. For each level and eps it reports the median wall
-time of the sweep, the unknowns, the Newton iterations (threshold search + pressure ramp;
-a chord iteration counts as one) and where the time goes: mesh and operator set-up, tangent
-assembly (with the residual-only assemblies of chord iterations), sparse LU (SuperLU) and the
-rest (Python, back-substitutions), with the number of tangent assemblies, residual-only
-assemblies and factorisations (counts do not depend on the machine's load). The split is
-measured by wrapping those functions with timers in this script only. The LU column is
-SuperLU's factorisation only; the pressure ramp's symmetric permutation
-(:class:`mkm.fem.fe.newton.OrderedLU`) counts as "rest".
+time of the sweep and its median CPU time (``cpu_seconds``: on a shared machine the closer to
+what an idle core takes), the unknowns, the Newton iterations (threshold search + pressure
+ramp; a chord iteration counts as one), the number of tangent assemblies, residual-only
+assemblies (chord iterations) and factorisations (counts do not depend on the machine's load),
+and where the CPU time goes: mesh and operator set-up, assembly (tangents and residuals),
+sparse LU (SuperLU's factorisation only) and the rest (back-substitutions, the pressure ramp's
+symmetric permutation, Python). The split is measured by wrapping those functions with timers
+in this script only.
 
 ``--baseline REV`` times the same sweeps with the FE code of git revision ``REV`` too (a copy
 made with ``git archive``), each repeat of it and of the working tree in its own process, in
@@ -144,7 +144,7 @@ def medians(runs: list[list[dict]]) -> list[dict]:
     """Per case, the run of median time with the median CPU time (the counts do not vary
     between runs)."""
     rows = []
-    for case in zip(*runs):
+    for case in zip(*runs, strict=True):
         row = dict(sorted(case, key=lambda r: r["seconds"])[len(case) // 2])
         row["cpu_seconds"] = float(np.median([r["cpu_seconds"] for r in case]))
         rows.append(row)

@@ -54,7 +54,7 @@ def mooney_rivlin_incompressible(y: np.ndarray, material: MooneyRivlin) -> np.nd
     j = a * d - b * c
     # dpsi/dF2 = (2 C10 + 2 C01 F_tt^2) F2 + (2 C01 j - p F_tt) j', j' = dj/dF2 = (d, -c, -b, a)
     k_F, k_j = 2 * C10 + 2 * C01 * t * t, 2 * C01 * j - p * t
-    g = np.empty((6,) + t.shape)
+    g = np.empty((6,) + t.shape, dtype=np.result_type(y, float))  # complex for a complex step
     g[0] = k_F * a + k_j * d
     g[1] = k_F * b - k_j * c
     g[2] = k_F * c - k_j * b
@@ -76,7 +76,7 @@ def mooney_rivlin_incompressible_tangent(y: np.ndarray, material: MooneyRivlin) 
     jp = np.stack([d, -c, -b, a])
     j = a * d - b * c
     # built as H[row, column, ...] (whole rows of points at a time), returned as a view
-    H = np.empty((6, 6) + t.shape)
+    H = np.empty((6, 6) + t.shape, dtype=np.result_type(y, float))
     H[:4, :4] = (2 * C01 * jp[:, None] * jp[None, :]
                  + (2 * C01 * j - p * t) * _DJ_DF2.reshape(_DJ_DF2.shape + (1,) * t.ndim))
     H[range(4), range(4)] += 2 * C10 + 2 * C01 * t * t
