@@ -12,6 +12,8 @@ The physics (which variables, which density) lives in :mod:`mkm.fem.fe.forms` an
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 import scipy.sparse as sp
 
@@ -51,6 +53,11 @@ class Term:
         self.keep_r = self.dofs >= 0
         self.keep_K = self.keep_r[:, :, None] & self.keep_r[:, None, :]
         self._keep_K_flat = np.flatnonzero(self.keep_K)  # np.take is faster than a mask
+        # work arrays of the element matrices, kept: a fresh array of a megabyte per assembly
+        # costs its page faults again each time (the allocator returns freed memory to the
+        # system), as much as the products themselves
+        self._BH = np.empty((e, i, q, a))
+        self._Ke = np.empty((e, i, i))
 
     def values(self, y_ext):
         """Variables at the quadrature points; ``y_ext`` ends with a zero read by fixed dofs."""
@@ -63,17 +70,21 @@ class Term:
         return np.matmul(self.B_flat, (grad * self.w[..., None]).reshape(e, q * a, 1))[..., 0]
 
     def element_arrays(self, grad, hess):
-        """Element vectors (e, i) and the kept entries of the element matrices."""
+        """Element vectors (e, i) and the kept entries of the element matrices,
+        ``K_e = sum_q B_q (w_q H_q) B_q^T`` (None where ``hess`` is None: the vectors only)."""
+        if hess is None:
+            return self.element_vectors(grad), None
         e, q, i, a = self.B.shape
-        re = self.element_vectors(grad)
-        BH = np.matmul(self.B, hess * self.w[..., None, None])  # (e, q, i, b)
-        Ke = np.matmul(BH.transpose(0, 2, 1, 3).reshape(e, i, q * a),
-                       self.B_flat.transpose(0, 2, 1))
-        return re, np.take(Ke, self._keep_K_flat)
+        # B (w H) written in (e, i, q, a) order, so that K_e is one product over (q, a)
+        np.matmul(self.B, hess * self.w[..., None, None], out=self._BH.transpose(0, 2, 1, 3))
+        np.matmul(self._BH.reshape(e, i, q * a), self.B_flat.transpose(0, 2, 1), out=self._Ke)
+        return self.element_vectors(grad), np.take(self._Ke, self._keep_K_flat)
 
     def pattern(self):
-        rows = np.broadcast_to(self.dofs[:, :, None], self.keep_K.shape)[self.keep_K]
-        cols = np.broadcast_to(self.dofs[:, None, :], self.keep_K.shape)[self.keep_K]
+        """Row and column of the kept element-matrix entries, in the order of their data."""
+        e, i = self.dofs.shape
+        rows = np.take(np.repeat(self.dofs, i, axis=1), self._keep_K_flat)
+        cols = np.take(np.tile(self.dofs, (1, i)), self._keep_K_flat)
         return rows, cols
 
     def vector(self, re, n: int) -> np.ndarray:
@@ -90,11 +101,11 @@ class Assembler:
 
     def __init__(self, terms, n: int):
         self.n = n
-        rows = np.concatenate([t.pattern()[0] for t in terms])
-        cols = np.concatenate([t.pattern()[1] for t in terms])
-        keys, self._slot = np.unique(rows * n + cols, return_inverse=True)
-        self._indices = keys % n
-        self._indptr = np.searchsorted(keys // n, np.arange(n + 1))
+        patterns = [t.pattern() for t in terms]
+        rows = np.concatenate([p[0] for p in patterns])
+        cols = np.concatenate([p[1] for p in patterns])
+        self._indices, self._indptr, self._slot = csr_slots(
+            n, rows.astype(np.int64).tobytes(), cols.astype(np.int64).tobytes())
 
     def entries(self) -> tuple[np.ndarray, np.ndarray]:
         """Row and column of every stored entry of :meth:`matrix`, in the order of its data."""
@@ -104,3 +115,24 @@ class Assembler:
         """Sparse matrix from the kept element entries of each term, concatenated in order."""
         data = np.bincount(self._slot, np.concatenate(blocks), minlength=self._indices.size)
         return sp.csr_matrix((data, self._indices, self._indptr), shape=(self.n, self.n))
+
+
+@lru_cache(maxsize=4)
+def csr_slots(n: int, rows: bytes, cols: bytes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """CSR ``indices`` and ``indptr`` of the entries ``(rows, cols)`` (int64 bytes) of an
+    ``n x n`` matrix, and the slot in its data where each entry lands (duplicates summed).
+
+    Kept for the next call with the same entries: every muscle of one mesh level and boundary
+    conditions has the same pattern, and finding it costs as much as a few assemblies on the
+    fine mesh. The arrays are read-only, shared by every matrix of that pattern.
+    """
+    rows, cols = np.frombuffer(rows, dtype=np.int64), np.frombuffer(cols, dtype=np.int64)
+    pattern = sp.csr_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
+    pattern.sum_duplicates()  # sorted column indices, one entry per (row, column)
+    # where each entry lands in the CSR data: stored entries are sorted by (row, column), so a
+    # binary search of the same key finds it
+    stored = np.repeat(np.arange(n), np.diff(pattern.indptr)) * n + pattern.indices
+    slots = np.searchsorted(stored, rows * n + cols)
+    for array in (pattern.indices, pattern.indptr, slots):
+        array.flags.writeable = False
+    return pattern.indices, pattern.indptr, slots

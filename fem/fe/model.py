@@ -39,9 +39,15 @@ from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.eq2 import BAR_TO_MPA, LOCKING_ANGLE_DEG, check_theta0
 from mkm.fem.fe.assembly import Assembler, Term, operator
-from mkm.fem.fe.forms import braid_inextensibility, cavity_volume, rubber, sliding_sleeve_length
+from mkm.fem.fe.forms import (
+    braid_inextensibility,
+    cavity_volume,
+    mooney_rivlin_incompressible,
+    mooney_rivlin_incompressible_tangent,
+    sliding_sleeve_length,
+)
 from mkm.fem.fe.mesh import half_muscle_mesh
-from mkm.fem.fe.newton import OrderedLU, load_path, newton
+from mkm.fem.fe.newton import Chord, OrderedLU, load_path, newton
 from mkm.fem.interface import ForceModel
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
 from mkm.fem.options import BRAIDS, MESH_LEVELS
@@ -54,11 +60,13 @@ INTORDER = 4
 #: span/2e4. Near the braid lock the fine mesh's small cap elements need 7 (a mesh graded 32:1
 #: needs 9); the former 6 made the fine mesh "invert at the lock", an artefact.
 FREE_PATH_CUTBACKS = 12
-#: A pressure step of the held ramp is converged once the next Newton step would change the
-#: cap force by less than this fraction of the force (or of the cap force at 1 bar, near the
-#: threshold): forces within 3e-8 of the strict solution, a Newton iteration fewer on about a
-#: third of the steps
-FORCE_RTOL = 1e-8
+#: A pressure step of the held ramp is converged once the correction still to come, as the
+#: factorisation at hand estimates it, would change the cap force by less than this fraction of
+#: the force (or of the cap force at 1 bar, near the threshold). The chord iterations' estimate
+#: is rougher than a fresh Newton step's, so the bar is set low: a point of a sweep and the same
+#: point solved alone agree to 1e-9 (at 1e-8 they differed by up to 4e-7), at two or three
+#: residuals more per step
+FORCE_RTOL = 1e-10
 
 
 class HalfMuscle:
@@ -161,24 +169,28 @@ class HalfMuscle:
         y[self.p_slice] = 2 * self.material.C10_MPa + 4 * self.material.C01_MPa
         return y
 
-    def assemble(self, y, pressure_MPa):
+    def assemble(self, y, pressure_MPa, tangent: bool = True):
         """Residual ``dPi/dy``, tangent ``d2Pi/dy2`` (CSR) and ``dV/dy`` at the reduced state.
 
-        The cap reaction (the last residual entry) of every state assembled is kept, so the
-        force of a converged state is read from the assembly Newton made to check it.
+        ``tangent=False`` leaves the tangent out (``None``): a chord iteration, which reuses a
+        factorised tangent, needs the residual only, at a fraction of the cost. The cap
+        reaction (the last residual entry) of every state assembled is kept, so the force of a
+        converged state is read from the assembly Newton made to check it.
         """
-        result = self._assemble(y, pressure_MPa)
+        result = self._assemble(y, pressure_MPa, tangent)
         if len(self._reactions) > 256:  # a sweep needs a few dozen; bound the memory
             self._reactions.clear()
         self._reactions[pressure_MPa, np.asarray(y, dtype=float).tobytes()] = float(result[0][-1])
         return result
 
-    def _assemble(self, y, pressure_MPa):
+    def _assemble(self, y, pressure_MPa, tangent=True):
         y_ext = np.append(y, 0.0)
-        g, h = rubber(self.rubber.values(y_ext), self.material)
-        r_rub, K_rub = self.rubber.element_arrays(g, h)
+        yr = self.rubber.values(y_ext)
+        h = mooney_rivlin_incompressible_tangent(yr, self.material) if tangent else None
+        r_rub, K_rub = self.rubber.element_arrays(mooney_rivlin_incompressible(yr, self.material),
+                                                  h)
         _, g, h = cavity_volume(self.cavity.values(y_ext))
-        dV_cav, K_cav = self.cavity.element_arrays(g, -pressure_MPa * h)
+        dV_cav, K_cav = self.cavity.element_arrays(g, -pressure_MPa * h if tangent else None)
         dV = self.cavity.vector(dV_cav, self.n)
         r = self.rubber.vector(r_rub, self.n) - pressure_MPa * dV
         blocks = [K_rub, K_cav]
@@ -186,17 +198,18 @@ class HalfMuscle:
         if self.braid is not None:
             yb = self.braid.values(y_ext)
             gb, dgb, hgb = self._constraint(yb[..., :3], self.theta0_deg, self.Ro)
-            r_br, K_br = self._braid_arrays(gb, dgb, hgb, yb[..., 3])
+            r_br, K_br = self._braid_arrays(gb, dgb, hgb, yb[..., 3], tangent)
             # the constraint rows do not depend on the tension: the gaps of this state
             gap = self.braid.vector(r_br, self.n)[self.tension_slice]
             slack = self.slack_nodes(y[self.tension_slice], gap)
             if slack.any():  # slack fibres carry nothing: the braid term without their tension
                 y_taut = y_ext.copy()
                 y_taut[self.tension_slice][slack] = 0.0
-                r_br, K_br = self._braid_arrays(gb, dgb, hgb, self.braid.values(y_taut)[..., 3])
+                r_br, K_br = self._braid_arrays(gb, dgb, hgb, self.braid.values(y_taut)[..., 3],
+                                                tangent)
             r += self.braid.vector(r_br, self.n)
             blocks.append(K_br)
-        K = self.assembler.matrix(blocks)
+        K = self.assembler.matrix(blocks) if tangent else None
         if slack is not None and slack.any():
             self._release(r, K, y, slack)
         return r, K, dV
@@ -213,9 +226,12 @@ class HalfMuscle:
         g, _, _ = self._constraint(yb[..., :3], self.theta0_deg, self.Ro)
         return self._tension_rows(g) / self._tension_weight_mm2
 
-    def _braid_arrays(self, g, dg, hg, tension):
-        """Element vectors and matrices of the braid term ``int tension g dA``."""
+    def _braid_arrays(self, g, dg, hg, tension, tangent=True):
+        """Element vectors and matrices (None without ``tangent``) of the braid term
+        ``int tension g dA``."""
         grad = np.concatenate([tension[..., None] * dg, g[..., None]], axis=-1)
+        if not tangent:
+            return self.braid.element_arrays(grad, None)
         hess = np.zeros(grad.shape + (4,))
         hess[..., :3, :3] = tension[..., None, None] * hg
         hess[..., :3, 3] = hess[..., 3, :3] = dg
@@ -245,7 +261,8 @@ class HalfMuscle:
         return tension + self._membrane_N_per_mm * gap / self._tension_weight_mm2 < 0.0
 
     def _release(self, r, K, y, slack) -> None:
-        """Make the slack tension dofs' rows ``lambda_i = 0`` in ``r`` and ``K`` (in place).
+        """Make the slack tension dofs' rows ``lambda_i = 0`` in ``r`` and ``K`` (in place;
+        ``K`` None: the residual only).
 
         Row and column of each are emptied (the rest of the system no longer sees it: its
         tension was left out of the assembly) and the diagonal is ``-weight / k``, so the
@@ -254,6 +271,8 @@ class HalfMuscle:
         scale = -self._tension_weight_mm2[slack] / self._membrane_N_per_mm
         dofs = np.flatnonzero(slack) + self.tension_slice.start
         r[dofs] = scale * y[dofs]
+        if K is None:
+            return
         released = np.zeros(self.n, dtype=bool)
         released[dofs] = True
         K.data[released[self._entry_rows] | released[self._entry_cols]] = 0.0
@@ -360,6 +379,9 @@ class HalfMuscle:
             r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])
             return r, sp.hstack([K[:, :-1], -dV[:, None]], format="csr")
 
+        def free_residual(x, U):
+            return self.assemble(np.append(x[:-1], U), x[-1], tangent=False)[0]
+
         def check(x, U):
             return self.inverted(np.append(x[:-1], U))
 
@@ -368,6 +390,7 @@ class HalfMuscle:
             if start is None:
                 return None, None
             x, report = newton(lambda x: free(x, U), start, check=lambda x: check(x, U),
+                               residual=lambda x: free_residual(x, U), chord=Chord(),
                                **self._newton_options())
             inflated = x[-1] > 0 and not self.slack_everywhere(np.append(x[:-1], U))
             return (x if report.converged and inflated else None), report
@@ -383,6 +406,8 @@ class HalfMuscle:
         spent += 0 if first is None else first.iterations
         if x0 is None:
             U_start, x0 = 0.0, np.append(self.rest_state()[:-1], 0.0)
+        # full Newton on this path near the lock: chord iterations there would spend their
+        # iterations where Newton finds the inversion that names the reason at once
         [(x, report)] = load_path(free, x0, U_start, [U_mm], check=check,
                                   max_cutbacks=FREE_PATH_CUTBACKS,
                                   label=lambda U: f"cap displacement {U:.3g} mm",
@@ -440,6 +465,11 @@ class HalfMuscle:
             last["K"], last["force"] = K, r[-1]
             return r[:-1], K
 
+        def held_residual(x, P):  # for chord iterations: the tangent of the last Newton step
+            r, _, _ = self.assemble(np.append(x, U), P, tangent=False)
+            last["force"] = r[-1]
+            return r[:-1]
+
         def force_converged(x, step):
             # the force is the cap reaction r[-1]: the next Newton step changes it by the cap
             # row of the tangent times that step (first order; Newton's error after this
@@ -455,7 +485,8 @@ class HalfMuscle:
         path = load_path(held, y[:-1], P_start_MPa, pressures_MPa,
                          check=lambda x, P: self.inverted(np.append(x, U)),
                          label=lambda P: f"{P / BAR_TO_MPA:.4g} bar", factorize=self._held_lu,
-                         accept=force_converged, **self._newton_options())
+                         accept=force_converged, residual=held_residual,
+                         **self._newton_options())
         return [(None if x is None else np.append(x, U), report) for x, report in path]
 
     def cavity_volume(self, y) -> float:

@@ -11,6 +11,7 @@ cannot be reached is returned with ``converged=False``, its iterations, residual
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 import scipy.sparse as sp
@@ -38,7 +39,8 @@ class OrderedLU:
     Newton's tangents share their pattern; SuperLU's default column ordering (COLAMD), found
     afresh at every factorisation, costs as much as the numerical factorisation of the FE
     tangents. Here the reverse Cuthill-McKee ordering of the pattern (symmetrised, dense rows
-    last: :func:`_banded_order`) is found at the first matrix of a pattern and reused, and
+    last: :func:`_banded_order`) is found at the first matrix of a pattern and reused (by
+    every instance: :func:`_ordering` keeps the last few patterns' orderings), and
     SuperLU factorises the symmetrically permuted matrix in its natural column order, in its
     symmetric mode (a diagonal pivot is taken while it is at least a tenth of the column's
     largest: the tangent of an energy is symmetric, and this keeps the band). The permuted
@@ -58,7 +60,9 @@ class OrderedLU:
     def __call__(self, A) -> _PermutedLU:
         A = A if getattr(A, "format", None) in ("csr", "csc") else sp.csc_matrix(A)
         if not self._same_pattern(A):
-            self._order(A)
+            (self._perm, self._inverse, self._source, self._p_indices,
+             self._p_indptr) = _ordering(A.format, A.shape, self.leading, A.indptr.tobytes(),
+                                         A.indices.tobytes(), A.indices.dtype.str)
             self._pattern = (A.format, A.shape, A.indptr.copy(), A.indices.copy())
         permuted = sp.csc_matrix((A.data[self._source], self._p_indices, self._p_indptr),
                                  shape=(self._perm.size,) * 2)
@@ -73,18 +77,29 @@ class OrderedLU:
         return (A.format == fmt and A.shape == shape and np.array_equal(A.indptr, indptr)
                 and np.array_equal(A.indices, indices))
 
-    def _order(self, A) -> None:
-        # A's entries numbered 1..nnz in its own storage order (1-based: no zero is dropped)
-        numbered = A.__class__((np.arange(1.0, A.nnz + 1.0), A.indices, A.indptr),
-                               shape=A.shape).tocsc()
-        if self.leading is not None:
-            numbered = numbered[:self.leading, :self.leading]
-        self._perm = _banded_order(numbered.tocsr())
-        self._inverse = np.argsort(self._perm)
-        numbered = numbered[self._perm][:, self._perm].tocsc()
-        numbered.sort_indices()
-        self._source = numbered.data.astype(np.intp) - 1
-        self._p_indices, self._p_indptr = numbered.indices, numbered.indptr
+
+@lru_cache(maxsize=4)
+def _ordering(fmt: str, shape: tuple, leading: int | None, indptr: bytes, indices: bytes,
+              index_dtype: str):
+    """The ordering of :class:`OrderedLU` for one sparsity pattern (``indptr``, ``indices``
+    as bytes): ``(perm, inverse, source, indices, indptr)``, where the permuted matrix's data
+    is ``A.data[source]``. Kept for the next call: every muscle of one mesh level has the same
+    pattern, and on the fine mesh the ordering costs as much as a factorisation."""
+    indptr = np.frombuffer(indptr, dtype=index_dtype)
+    indices = np.frombuffer(indices, dtype=index_dtype)
+    # A's entries numbered 1..nnz in its own storage order (1-based: no zero is dropped)
+    matrix = sp.csr_matrix if fmt == "csr" else sp.csc_matrix
+    numbered = matrix((np.arange(1.0, indices.size + 1.0), indices, indptr), shape=shape).tocsc()
+    if leading is not None:
+        numbered = numbered[:leading, :leading]
+    perm = _banded_order(numbered.tocsr())
+    numbered = numbered[perm][:, perm].tocsc()
+    numbered.sort_indices()
+    ordering = (perm, np.argsort(perm), numbered.data.astype(np.intp) - 1, numbered.indices,
+                numbered.indptr)
+    for array in ordering:  # shared by every OrderedLU of the pattern
+        array.flags.writeable = False
+    return ordering
 
 
 #: A row coupled to more than this many times the median row's unknowns is dense (a mesh node
@@ -124,9 +139,27 @@ def _splu(jacobian):
     return splu(jacobian.tocsc())
 
 
+@dataclass
+class Chord:
+    """A factorised tangent kept across the Newton iterations and solves of one problem.
+
+    A chord (modified Newton) iteration ``x <- x - J0^-1 r(x)`` with the tangent ``J0`` of an
+    earlier state costs one residual and one back-substitution, where a Newton iteration
+    assembles and factorises the tangent. It converges linearly: the residual shrinks by a
+    rate that grows with the distance from ``J0``'s state. :func:`newton` keeps iterating
+    with ``lu`` while that rate is at most ``max_rate`` and otherwise factorises the tangent
+    at the current iterate (a Newton step), which becomes ``lu``. At 0.25 ten chord
+    iterations (about the cost of one factorisation and assembly) gain six digits.
+    """
+
+    max_rate: float = 0.25
+    lu: object = None
+
+
 def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20,
            residual_floor: float = 0.0, check=None,
-           factorize=None, accept=None) -> tuple[np.ndarray, NewtonReport]:
+           factorize=None, accept=None, residual=None,
+           chord: Chord | None = None) -> tuple[np.ndarray, NewtonReport]:
     """Solve ``fun(x) = 0`` from ``x0``; ``fun`` returns ``(residual, sparse jacobian)``.
 
     Converged when the residual fell below ``rtol`` times the first residual (or below
@@ -136,53 +169,76 @@ def newton(fun, x0, *, rtol: float = 1e-9, xtol: float = 1e-9, maxiter: int = 20
     iterations. ``factorize(jacobian)`` returns an object with ``solve(b)`` (default: SuperLU
     of the jacobian; or an :class:`OrderedLU` kept across the solves of one problem, which may
     read the jacobian as the leading block of a larger matrix). ``accept(x, step)``, the
-    caller's own test of an iterate whose residual fell below the first one, given the next
-    Newton step estimated by the factorisation at hand, may call ``x`` converged earlier (the
-    FE model: when that step would change the force it reports by less than it needs). An
-    early rise of the residual is not called divergence (full Newton often overshoots in the
-    first iterations); only non-finite numbers, a state rejected by ``check`` or ``maxiter``
-    iterations stop it.
+    caller's own test of an iterate whose residual fell below the first one, given the
+    correction still to come as estimated by the factorisation at hand, may call ``x``
+    converged earlier (the FE model: when that correction would change the force it reports by
+    less than it needs). An early rise of the residual is not called divergence (full Newton
+    often overshoots in the first iterations); only non-finite numbers, a state rejected by
+    ``check`` or ``maxiter`` iterations stop it.
+
+    With ``residual(x)`` (the residual alone, cheaper than ``fun``) and a :class:`Chord` the
+    iterations are chord iterations with ``chord.lu`` (a factorisation left there by an
+    earlier solve, or the first one of this) while the residual contracts by at most
+    ``chord.max_rate``; the estimated correction to come is then the next chord step over
+    ``1 - rate`` (a geometric series).
     """
     factorize = factorize or _splu
     x = np.array(x0, dtype=float)
-    r, jac = fun(x)
-    first = float(np.linalg.norm(r))
+    chords = residual is not None and chord is not None
+    lu = chord.lu if chords else None
+    r, jac = (residual(x), None) if lu is not None else fun(x)
+    first = norm = float(np.linalg.norm(r))
     if not np.isfinite(first):
         return x, NewtonReport(False, 0, residual=np.inf, reason="non-finite residual")
     if first <= residual_floor:
         return x, NewtonReport(True, 0, residual=0.0)
     tol = max(rtol * first, residual_floor)
+    chord_step = None  # the next chord step, solved for the convergence test
     for it in range(1, maxiter + 1):
-        try:
-            lu = factorize(jac)
-        except RuntimeError:  # SuperLU: "Factor is exactly singular"
-            return x, NewtonReport(False, it, reason="singular tangent")
-        dx = lu.solve(-r)
+        if lu is None:  # a Newton step: the tangent at x, factorised
+            if jac is None:
+                r, jac = fun(x)
+            try:
+                lu = factorize(jac)
+            except RuntimeError:  # SuperLU: "Factor is exactly singular"
+                return x, NewtonReport(False, it, reason="singular tangent")
+            if chords:
+                chord.lu = lu
+            chord_step = None
+        dx = lu.solve(-r) if chord_step is None else chord_step
         if not np.all(np.isfinite(dx)):
             return x, NewtonReport(False, it, reason="singular tangent")
         x = x + dx
         if check is not None and (reason := check(x)):
             return x, NewtonReport(False, it, reason=reason)
-        r, jac = fun(x)
+        previous = norm
+        r, jac = (residual(x), None) if chords else fun(x)
         if not np.all(np.isfinite(r)):
             return x, NewtonReport(False, it, reason="non-finite residual")
         norm = float(np.linalg.norm(r))
-        rel = norm / first
-        if accept is not None and norm < first and accept(x, lu.solve(-r)):
+        rel, rate = norm / first, norm / previous
+        # the increment that would come next, by the factorisation at hand (a chord step:
+        # one back-substitution, no assembly or factorisation), tells whether x has
+        # converged; near the solution it equals the Newton step to second order, and the
+        # chord iterations' remaining steps sum to it over (1 - rate)
+        chord_step = lu.solve(-r)
+        step = chord_step / (1.0 - rate) if chords else chord_step
+        if chords and rate >= 1.0:
+            step = None  # not contracting: no estimate of what is still to come
+        if accept is not None and norm < first and step is not None and accept(x, step):
             return x, NewtonReport(True, it, residual=rel)
         if norm <= tol:
-            # the increment that would come next, by the factorisation at hand (a chord step:
-            # one back-substitution, no assembly or factorisation), tells whether x has
-            # converged; near the solution it equals the Newton step to second order
             size = xtol * max(np.linalg.norm(x), 1.0)
-            if np.linalg.norm(dx) <= size or np.linalg.norm(lu.solve(-r)) <= size:
+            if np.linalg.norm(dx) <= size or (step is not None and np.linalg.norm(step) <= size):
                 return x, NewtonReport(True, it, residual=rel)
+        if not chords or rate > chord.max_rate:
+            lu = None  # full Newton, or a chord contracting too slowly: a Newton step next
     return x, NewtonReport(False, maxiter, residual=rel,
                            reason=f"Newton did not converge in {maxiter} iterations")
 
 
 def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks: int = 6,
-              grow: float = 1.5, easy_iterations: int = 4, check=None,
+              grow: float = 1.5, easy_iterations: int = 4, check=None, residual=None,
               label=lambda t: f"t={t:.4g}", **newton_options):
     """Follow the equilibrium path ``fun(x, t) = 0`` from ``(x0, t0)`` through ``targets``.
 
@@ -191,7 +247,9 @@ def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks:
     ``easy_iterations`` lets the next grow by ``grow``. A linear (secant) predictor starts each
     step from the last two converged states. After ``max_cutbacks`` halvings on the way to one
     target the target and all later ones are reported not converged; ``label(t)`` names the
-    load where it failed in the reason.
+    load where it failed in the reason. With ``residual(x, t)`` (the residual alone) the
+    steps are solved by chord iterations with one :class:`Chord` (see :func:`newton`): a
+    factorised tangent serves the steps after it while it contracts well.
 
     Returns a list with one ``(x or None, NewtonReport)`` per target, in order; the report of
     the target that failed holds the last two converged ``(load, state)`` (``reached``).
@@ -201,6 +259,7 @@ def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks:
     dt = span / increments if span > 0 else 0.0
     x, t = np.array(x0, dtype=float), float(t0)
     x_prev, t_prev = None, None
+    chord = Chord() if residual is not None else None
     out = []
     for i, target in enumerate(targets):
         report = NewtonReport(True, residual=0.0)
@@ -210,7 +269,9 @@ def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks:
             guess = x if x_prev is None else x + (x - x_prev) * (t_new - t) / (t - t_prev)
             x_new, rep = newton(lambda y, tt=t_new: fun(y, tt), guess,
                                 check=None if check is None else lambda y, tt=t_new: check(y, tt),
-                                **newton_options)
+                                residual=None if residual is None
+                                else lambda y, tt=t_new: residual(y, tt),
+                                chord=chord, **newton_options)
             report.iterations += rep.iterations
             report.residual = rep.residual
             if rep.converged:
@@ -220,6 +281,8 @@ def load_path(fun, x0, t0: float, targets, *, increments: int = 5, max_cutbacks:
                 continue
             report.cutbacks += 1
             dt = abs(step) / 2.0
+            if chord is not None:
+                chord.lu = None  # a failed step's factorisation may be from far off the path
             if report.cutbacks > max_cutbacks:
                 report.converged = False
                 report.reason = f"{rep.reason} at {label(t_new)} after {max_cutbacks} cut-backs"

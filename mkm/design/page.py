@@ -27,7 +27,13 @@ from mkm.core.records import (
     write_csv_with_sidecar,
 )
 from mkm.design.result import DesignResult, design_record
-from mkm.design.search import geometry_text, span_text, surrogate_uncertainty
+from mkm.design.search import (
+    FE_SEARCH_MESH,
+    box_text,
+    geometry_text,
+    span_text,
+    surrogate_uncertainty,
+)
 from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.calibration import calibration_provenance
 from mkm.fem.thickwall import outer_diameter_mm
@@ -173,7 +179,9 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
             notes.append(f"design rank {row['rank']}, {k}: {FLAG_TEXT[code]}")
     parts = [
         f"<p>Generated {esc(software['date_utc'])} by <code>{esc(software['command'])}</code>. "
-        f"Objective: <b>{esc(s.objective)}</b>. The surrogate searched the box; the FE model "
+        f"Objective: <b>{esc(s.objective)}</b>. The "
+        f"{'FE model (' + FE_SEARCH_MESH + ' mesh)' if s.fe_search else 'surrogate'} searched "
+        f"the box {esc(box_text(s.box))}; the FE model "
         "(axisym, " + esc(result.mesh) + " mesh) verified the best designs: a design meets "
         "the requirements only when the FE says so, and every margin below is the FE's.</p>",
         status,

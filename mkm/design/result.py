@@ -15,6 +15,7 @@ from mkm.design.search import (
     SEEDS,
     T0_STEP_MM,
     Search,
+    box_edges,
     geometry_text,
     pick,
     search,
@@ -55,7 +56,7 @@ class DesignResult:
         s = self.search
         cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
         ok = int(self.designs["meets_all"].sum())
-        text = (f"{s.fe_search}; " if s.fe_search else "") + (
+        text = "".join(f"{note}; " for note in (s.fe_search, s.box_note()) if note) + (
                 f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
                 f"{int(s.candidates['feasible'].sum())} feasible by the "
                 f"{'FE search' if s.fe_search else 'surrogate'}; "
@@ -65,8 +66,12 @@ class DesignResult:
         best = self.chosen
         if best is None:
             return text + ": none confirmed, see the table's FE margins"
-        return (text + f"; chosen: {geometry_text(best)}, outer diameter "
-                f"{best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar")
+        text += (f"; chosen: {geometry_text(best)}, outer diameter "
+                 f"{best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar")
+        if edges := box_edges(best, s.constraints):
+            text += (f"; it sits on the edge of the search box ({', '.join(edges)}): a larger "
+                     "box might hold a better design")
+        return text
 
 
     def table_text(self) -> str:
@@ -198,6 +203,9 @@ def design_record(result: DesignResult) -> dict:
             "search": {"candidates": len(s.candidates),
                        "feasible": int(s.candidates["feasible"].sum()),
                        "searcher": (f"FE ({s.fe_search})" if s.fe_search else "surrogate"),
+                       "box": s.box, "surrogate_box": s.surrogate_box,
+                       # "" when the box searched is the surrogate's
+                       "box_note": s.box_note(),
                        "seconds": s.seconds,
                        "resolution": {"coarse_D0_mm": COARSE_STEPS[0],
                                       "coarse_t0_mm": COARSE_STEPS[1], "D0_mm": D0_STEP_MM,
@@ -207,4 +215,8 @@ def design_record(result: DesignResult) -> dict:
                              "seconds": result.fe_seconds,
                              "sweeps_from_cache": result.fe_cached,
                              "near_lock_fraction_of_eps_max": NEAR_LOCK_FRACTION},
+            # the searched ranges the chosen design sits on an end of (a larger box might
+            # hold a better one); empty when none or nothing is confirmed
+            "chosen_on_box_edge": ([] if result.chosen is None
+                                   else box_edges(result.chosen, s.constraints)),
             "summary": result.summary()}

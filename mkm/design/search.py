@@ -44,6 +44,9 @@ STD_FACTOR, RECORDED_ERROR_FACTOR, FALLBACK_RELATIVE_MARGIN = 3.0, 2.0, 0.05
 #: mesh (a few tenths of a second a sweep), a coarser grid, no refinement, and the requirements'
 #: margin of :data:`FALLBACK_RELATIVE_MARGIN`; the verification then solves the converged mesh.
 FE_SEARCH_BOX = {"D0_mm": (10.0, 60.0), "t0_mm": (1.0, 5.0)}
+#: The geometry the search box spans (the surrogate's training box spans them too)
+BOX_KEYS = ("D0_mm", "t0_mm")
+BOX_NAMES = {"D0_mm": "D0", "t0_mm": "t0", "L0_mm": "L0", "theta0_deg": "theta0"}
 FE_SEARCH_MAX_PRESSURE_BAR = 6.0
 FE_SEARCH_STEPS = (2.0, 0.5)
 FE_SEARCH_MESH = "coarse"
@@ -109,10 +112,35 @@ class Search:
     fe_search: str = ""
     #: the default braid angle's and the ``calibrated`` rubber's (None: the shipped one)
     calibration: Calibration | None = None
+    #: the surrogate's training box of the geometry, ``{"D0_mm": [low, high], "t0_mm": ...}``
+    surrogate_box: dict = field(default_factory=dict)
+    #: what set each searched range of :data:`BOX_KEYS`: "as constrained", "the FE search's
+    #: default" or "the surrogate's"
+    box_origin: dict = field(default_factory=dict)
 
     @property
     def feasible(self) -> pd.DataFrame:
         return self.candidates[self.candidates["feasible"]]
+
+    @property
+    def box(self) -> dict:
+        """The searched ranges of :data:`BOX_KEYS`, ``{key: [low, high]}``."""
+        return {k: list(self.constraints[k]) for k in BOX_KEYS}
+
+    def box_note(self) -> str:
+        """The searched D0 x t0 box where it is not the surrogate's training box (and
+        whether it reaches beyond it), else ""."""
+        if not self.surrogate_box or all(np.allclose(self.box[k], self.surrogate_box[k])
+                                         for k in BOX_KEYS):
+            return ""
+        beyond = any(low < slo - 1e-9 or high > shi + 1e-9 for (low, high), (slo, shi) in
+                     ((self.box[k], self.surrogate_box[k]) for k in BOX_KEYS))
+        origins = set(self.box_origin.values())
+        origin = (origins.pop() if len(origins) == 1 else ", ".join(
+            f"{BOX_NAMES[k]} {o}" for k, o in self.box_origin.items()))
+        where = "beyond" if beyond else "inside"
+        return (f"searched the box {box_text(self.box)} ({origin}), {where} the surrogate's "
+                f"{box_text(self.surrogate_box)}")
 
 
 def _axis(bounds, step=None, count=AXIS_VALUES) -> np.ndarray:
@@ -218,8 +246,10 @@ def search(requirements, constraints: Constraints | dict | None = None,
     theta0_default = float(calibrated("axisym", calibration)["theta0_deg"])
     parameter_box = getattr(base, "box", {})
     outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration)
-    default_box = FE_SEARCH_BOX if outside else {"D0_mm": tuple(domain.D0_mm),
-                                                 "t0_mm": tuple(domain.t0_mm)}
+    surrogate_box = {"D0_mm": list(domain.D0_mm), "t0_mm": list(domain.t0_mm)}
+    default_box = FE_SEARCH_BOX if outside else surrogate_box
+    box_origin = {k: "as constrained" if getattr(constraints, k) else
+                  "the FE search's default" if outside else "the surrogate's" for k in BOX_KEYS}
     box = {"D0_mm": constraints.D0_mm or default_box["D0_mm"],
            "t0_mm": constraints.t0_mm or default_box["t0_mm"],
            "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
@@ -265,7 +295,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     cand = _rank(cand, objective)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
-                    fe_search, calibration)
+                    fe_search, calibration, surrogate_box, box_origin)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
@@ -423,6 +453,29 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool,
                             f"{smallest:.1f} mm wide at {P:g} bar")
     if problems:
         raise ValueError("; ".join(problems))
+
+
+def box_text(box: dict) -> str:
+    """``D0 30:50 mm x t0 2:4 mm`` of a box ``{key: [low, high]}``."""
+    return " x ".join(f"{BOX_NAMES[k]} {span_text(*v)} {'deg' if k.endswith('deg') else 'mm'}"
+                      for k, v in box.items())
+
+
+def box_edges(row, box: dict) -> list[str]:
+    """The searched ranges of ``box`` (D0, t0, L0, theta0; a fixed value is no range) whose
+    end a design ``row`` sits on, as ``D0 = 30 mm (the lower end of 30:50)``: there a larger
+    box might hold a better design."""
+    edges = []
+    for key, name in BOX_NAMES.items():
+        low, high = box.get(key, (0.0, 0.0))
+        if not high > low:
+            continue
+        at = float(row[key])
+        unit = "deg" if key.endswith("deg") else "mm"
+        for end, bound in (("lower", low), ("upper", high)):
+            if abs(at - bound) <= 1e-6 * (high - low):  # the grids hold both ends exactly
+                edges.append(f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})")
+    return edges
 
 
 def span_text(low: float, high: float) -> str:

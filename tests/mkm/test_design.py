@@ -15,9 +15,12 @@ import pytest
 from mkm.design import (
     Requirement,
     design,
+    design_record,
     parse_requirement,
+    run_design,
     search,
 )
+from mkm.design.search import box_edges
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, outer_diameter_mm
@@ -260,6 +263,41 @@ def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run
         pytest.approx(best["r1_fe_N"], rel=1e-6)
     record = json.loads((tmp_path / "designs.json").read_text())
     assert record["search"]["searcher"].startswith("FE (outside the surrogate's training box")
+    # it says which box it searched, and that it reaches beyond the surrogate's
+    note = ("searched the box D0 28:34 mm x t0 1.5:3 mm (as constrained), beyond the "
+            "surrogate's D0 30:50 mm x t0 2:4 mm")
+    assert note in err and record["search"]["box_note"] == note
+    assert record["search"]["box"] == {"D0_mm": [28.0, 34.0], "t0_mm": [1.5, 3.0]}
+    # and whether the chosen design sits on an end of a searched range
+    ends = [best["D0_mm"] in (28.0, 34.0), best["t0_mm"] in (1.5, 3.0)]
+    assert len(record["chosen_on_box_edge"]) == sum(ends)
+    assert ("sits on the edge of the search box" in err) == any(ends)
+
+
+def test_the_search_box_is_named_where_it_is_not_the_surrogates():
+    reqs = [Requirement(300.0, 2.0, 0.10)]
+    assert search(reqs).box_note() == ""  # the surrogate's own box: nothing to say
+    inside = search(reqs, {"D0_mm": (32.0, 40.0)})
+    assert inside.box == {"D0_mm": [32.0, 40.0], "t0_mm": [2.0, 4.0]}
+    assert inside.box_note() == ("searched the box D0 32:40 mm x t0 2:4 mm (D0 as constrained, "
+                                 "t0 the surrogate's), inside the surrogate's D0 30:50 mm x "
+                                 "t0 2:4 mm")
+
+
+def test_a_design_on_the_edge_of_the_search_box_is_named():
+    # 100 N at 2 bar and eps 10 % is met by the thinnest, narrowest tube of the box (D0 35,
+    # t0 2.5 develops about 4x that): the smallest outer diameter sits in the box's corner,
+    # and a box reaching to smaller tubes would hold a narrower design
+    result = run_design(["100N@2bar,eps=0.1"], top=1, mesh=MESH)
+    best = result.chosen
+    assert (best["D0_mm"], best["t0_mm"]) == (30.0, 2.0)
+    edges = ["D0 = 30 mm (the lower end of 30:50)", "t0 = 2 mm (the lower end of 2:4)"]
+    assert design_record(result)["chosen_on_box_edge"] == edges
+    assert (f"it sits on the edge of the search box ({', '.join(edges)}): a larger box might "
+            "hold a better design") in result.summary()
+    # a design inside the box, or on a fixed value (no range), sits on no edge
+    box = {"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0], "L0_mm": [282.0, 282.0]}
+    assert box_edges({"D0_mm": 30.05, "t0_mm": 3.99, "L0_mm": 282.0}, box) == []
 
 
 def test_the_calibrated_rubber_is_the_identified_one(tmp_path):
