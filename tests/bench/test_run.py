@@ -75,7 +75,7 @@ def test_complete_run_files(config, tmp_path):
     assert meta["hardware"]["sample_rate_hz"] == 10.0
     for key in ("calibration", "tare", "sequence", "provenance", "command", "reason"):
         assert key in meta
-    assert (run.path / "config.toml").read_text() == config.text
+    assert (run.path / "config.toml").read_text() == config.effective_text()  # overrides in it
 
 
 def test_measured_force_is_the_model_within_hysteresis_and_creep(config, tmp_path):
