@@ -74,6 +74,8 @@ THETA0 = Parameter("braid angle at rest [deg]; default calibrated")
 L0 = Parameter("length at rest [mm]; default 282")
 C10 = Parameter("rubber Mooney-Rivlin C10 [MPa]; default Silastic S (0.0694)")
 C01 = Parameter("rubber Mooney-Rivlin C01 [MPa]; default Silastic S (0.0628)")
+GAP = Parameter("radial gap between tube and braid at rest [mm]; default the calibration's "
+                "(an identified muscle), else 0")
 MESH = Parameter(f"mesh level: {', '.join(MESH_LEVELS)} (default medium)", str,
                  tuple(MESH_LEVELS))
 #: the families whose models are static physics rungs (friction's static model, the rungs the
@@ -208,8 +210,7 @@ register(Entry(
     "thick-walled Mooney-Rivlin tube in the braid, mid-section closed form "
     "(Klute-Hannaford)", "closed form",
     {"theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10, "C01_MPa": C01,
-     "gap_mm": Parameter("radial gap between tube and braid at rest [mm]; default the "
-                         "calibration's (an identified muscle), else 0")},
+     "gap_mm": GAP},
     colour="tab:orange", study=(StudyVariant("thickwall", "thickwall"),),
     contract_spec="thickwall"))
 register(Entry(

@@ -21,7 +21,11 @@ by default ONE model answers the whole call, the cheapest whose largest bound ov
 meets the tolerance and whose prediction is valid at every point, so a curve never mixes models.
 ``per_point=True`` chooses per point. Outside the surrogate's box (a point, or a muscle parameter
 it was not trained on) there is no estimate of the reference: only the FE meshes qualify, and
-the fine mesh answers if nothing else does. Each point records the model that answered
+the fine mesh answers if nothing else does. A gap between tube and braid (``gap_mm`` other than
+0) is modelled by the closed form only: neither the surrogate nor the FE takes it, so only the
+candidates that take it may answer, bound by their error at the same points without the gap
+(the gap's own physics has no reference to be checked against), and when none meets the
+tolerance auto says so instead of answering without the gap. Each point records the model that answered
 (``model_used``), its bound (``error_bound_pct``) and how the bound was obtained
 (``bound_source``); :func:`explain` says it in words, and the parameters (the provenance) name
 the reference and the factor.
@@ -39,6 +43,7 @@ import pandas as pd
 
 from mkm.core.records import file_sha256, package_file
 from mkm.fem.interface import ForceModel
+from mkm.registry import parse_spec
 
 MODEL_ERRORS_FILE = package_file("mkm", "data", "model_errors.csv")
 REFERENCE_SPEC = "surrogate"
@@ -50,6 +55,7 @@ STD_FACTOR = 3.0
 MESH_SAFETY = 1.5
 MIN_SCALE_N = 1.0  # a sweep that never pulls (all below threshold) is scored in newtons
 PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
+GAP_FREE = "its bound at gap_mm=0 (no reference models the gap)"
 
 
 @cache
@@ -105,6 +111,9 @@ class AutoModel(ForceModel):
     L0_mm, theta0_deg, C10_MPa, C01_MPa : float, optional
         The muscle: length at rest [mm], braid angle at rest [deg], rubber [MPa]; passed to
         every candidate (None: each model's default).
+    gap_mm : float, optional
+        Radial gap between tube and braid at rest [mm]; passed to the candidates that take it
+        (the registry entry's parameters say which), and other than 0 only they may answer.
     build : callable
         ``build(spec, **muscle) -> ForceModel``: makes a candidate from a spec (the registry's
         :func:`mkm.registry.build_spec`, which passes itself when it builds auto).
@@ -115,34 +124,44 @@ class AutoModel(ForceModel):
     def __init__(self, tolerance: float = 0.02, table: str | None = None,
                  per_point: bool = False, L0_mm: float | None = None,
                  theta0_deg: float | None = None, C10_MPa: float | None = None,
-                 C01_MPa: float | None = None, *, build: Callable[..., ForceModel]):
+                 C01_MPa: float | None = None, gap_mm: float | None = None, *,
+                 build: Callable[..., ForceModel]):
         self.tolerance = tolerance
         self.table = table
         self.per_point = bool(per_point)
         self.L0_mm, self.theta0_deg = L0_mm, theta0_deg
         self.C10_MPa, self.C01_MPa = C10_MPa, C01_MPa
+        self.gap_mm = gap_mm
         self.build = build
 
     @property
     def muscle(self) -> dict[str, float]:
         return {k: getattr(self, k) for k in PARAMETERS if getattr(self, k) is not None}
 
+    @property
+    def gapped(self) -> bool:
+        """Whether the muscle has a gap, which only some candidates model."""
+        return bool(self.gap_mm)
+
     def params(self):
         path = Path(self.table or MODEL_ERRORS_FILE)
         digest = file_sha256(path)[:12] if path.exists() else None
-        return {"tolerance": self.tolerance, "per_point": self.per_point, **self.muscle,
+        gap = {"gap_mm": self.gap_mm} if self.gap_mm is not None else {}
+        return {"tolerance": self.tolerance, "per_point": self.per_point, **self.muscle, **gap,
                 "table": path.name, "table_sha256": digest, "reference": REFERENCE_SPEC,
                 "std_factor": STD_FACTOR, "mesh_safety": MESH_SAFETY}
 
-    def _candidate(self, spec: str) -> ForceModel:
-        return self.build(spec, **self.muscle)
+    def _candidate(self, spec: str, gap: bool = True) -> ForceModel:
+        """Candidate ``spec`` at the muscle; with its gap if ``gap`` and it takes one."""
+        extra = {"gap_mm": self.gap_mm} if gap and self.gap_mm is not None else {}
+        return self.build(spec, **self.muscle, **extra)
 
     def reference(self, P, D0, t0, eps) -> tuple[np.ndarray, np.ndarray] | None:
         """``(R, s)``: the surrogate's force and standard deviation [N] at every point, or None
         where it cannot estimate the reference (a point or a muscle parameter outside its box,
         or no predictive std)."""
         try:
-            model = self._candidate(REFERENCE_SPEC)
+            model = self._candidate(REFERENCE_SPEC, gap=False)
         except ValueError:  # a muscle parameter the surrogate was not trained on
             return None
         with warnings.catch_warnings():
@@ -177,6 +196,8 @@ class AutoModel(ForceModel):
                 break
             if row.predictor == FALLBACK:
                 continue
+            if self.gapped and "gap_mm" not in parse_spec(row.spec).entry.parameters:
+                continue  # it would answer without the gap
             model_pred = None
             if row.family == "FE":
                 bound = np.full(P.shape, MESH_SAFETY * row.recorded_err_pct)
@@ -190,11 +211,13 @@ class AutoModel(ForceModel):
             else:
                 with warnings.catch_warnings():
                     warnings.simplefilter("ignore")  # a point it flags goes to the next one
-                    model_pred = self._candidate(row.spec).predict(P, D0, t0, eps)
-                gap = np.abs(np.ravel(model_pred.force_N) - R)
-                bound = 100.0 * (gap + STD_FACTOR * s) / scale
+                    model_pred = self._candidate(row.spec, gap=False).predict(P, D0, t0, eps)
+                distance = np.abs(np.ravel(model_pred.force_N) - R)
+                bound = 100.0 * (distance + STD_FACTOR * s) / scale
                 why = (f"|{row.predictor} - surrogate| + {STD_FACTOR:g} x the surrogate's "
                        "calibrated std")
+                if self.gapped:
+                    model_pred, why = None, f"{GAP_FREE}: {why}"  # it answers with the gap
             meets = bound <= tol  # NaN never meets it
             if not self.per_point and not meets[todo].all():
                 continue
@@ -216,6 +239,14 @@ class AutoModel(ForceModel):
             todo[ok] = False
         if ref is None:
             source[todo] = "outside the surrogate's box: no estimate of the reference there"
+        if self.gapped and todo.any():
+            raise ValueError(
+                f"auto: gap_mm={self.gap_mm:g} is modelled by the closed form only (the "
+                "surrogate and the FE have no gap), and no candidate taking it has an error "
+                f"bound <= {tol:g}% at {todo.sum()} of {todo.size} points"
+                + (" (outside the surrogate's box)" if ref is None else "")
+                + ": ask a larger --tolerance or "
+                f"--model thickwall:gap_mm={self.gap_mm:g}")
         return {"force_N": force, "model_used": used.astype(str),
                 "error_bound_pct": bound_used, "bound_source": source.astype(str)}
 

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING, Any
 from mkm.fem.ladder import (
     C01,
     C10,
+    GAP,
     L0,
     MODELS,
     THETA0,
@@ -62,7 +63,11 @@ def _auto(calibration: Calibration | None = None, **params) -> ForceModel:
     from functools import partial
 
     from mkm.auto import AutoModel  # here: auto reads its table with pandas
+    from mkm.fem.calibration import Calibration
 
+    if params.get("gap_mm") is None:  # as the thick-wall candidate would: an identified gap
+        found = (calibration or Calibration.shipped()).entries.get("thickwall", {})
+        params["gap_mm"] = found.get("gap_mm")
     return AutoModel(build=partial(build_spec, calibration=calibration), **params)
 
 
@@ -83,7 +88,8 @@ register(Entry(
                             "default 0.02"),
      "table": Parameter("study table (default: the shipped one, from `mkm study`)", str),
      "per_point": Parameter("true: choose per point instead of one model per sweep", bool),
-     "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
+     "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01,
+     "gap_mm": GAP},
     colour="tab:purple", contract_spec="auto:tolerance=0.05"))
 
 __all__ = ["MODELS", "Spec", "build_spec", "colour", "describe", "entries", "entry",
