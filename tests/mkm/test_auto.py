@@ -175,3 +175,64 @@ def test_cli_solve_auto_says_what_it_used(mkm_run):
     chosen = rows[rows["model_used"] != "axisym-fine"]
     assert (chosen["error_bound_pct"] <= 2.0).all()
     assert err.startswith("auto: ") and " for 11 of 11 points" in err
+
+
+def test_a_gap_only_the_closed_form_models_never_reaches_the_surrogate_or_the_fe(table_path):
+    """gap_mm other than 0: the surrogate and the FE take no gap, so only the thick-wall form
+    may answer, at its gap-free bound; where that bound misses the tolerance auto refuses."""
+    with_gap = make_model("thickwall", gap_mm=0.5).predict(P, 35.0, 2.5, 0.05)
+    gap_free = make_model("thickwall").predict(P, 35.0, 2.5, 0.05)
+    gapped = with_gap.force_N
+    thick = _bound_pct("thickwall")
+    pred = auto(table_path, tolerance=1.01 * thick.max() / 100, gap_mm=0.5).predict(
+        P, 35.0, 2.5, 0.05)
+    assert set(pred.extras["model_used"]) == {"thickwall"}
+    np.testing.assert_array_equal(pred.force_N, gapped)
+    # the answer is the gapped muscle's (a higher threshold), not the gap-free one
+    assert (with_gap.extras["threshold_pressure_bar"]
+            > gap_free.extras["threshold_pressure_bar"]).all()
+    assert not np.allclose(gapped, gap_free.force_N, rtol=1e-3)
+    np.testing.assert_allclose(pred.extras["error_bound_pct"], thick)
+    assert "no reference models the gap" in explain(pred)
+    assert pred.params["gap_mm"] == 0.5
+
+    # where the surrogate alone meets the tolerance without a gap, with one nothing does
+    ref = make_model("axisym", mesh="coarse").predict(P, 35.0, 2.5, 0.05).force_N
+    tol = 1.01 * STD_FACTOR * STD_N / ref.max()
+    assert tol < thick.max() / 100  # the thick-wall form does not meet it
+    assert set(auto(table_path, tolerance=tol).predict(P, 35.0, 2.5, 0.05)
+               .extras["model_used"]) == {"surrogate-muscle-gp"}
+    with pytest.raises(ValueError, match=r"gap_mm=0.5 is modelled by the closed form only "
+                                         r"\(the surrogate and the FE have no gap\)"):
+        auto(table_path, tolerance=tol, gap_mm=0.5).predict(P, 35.0, 2.5, 0.05)
+    # outside the surrogate's box the FE would answer without a gap: refused too
+    with pytest.raises(ValueError, match="outside the surrogate's box"):
+        auto(table_path, tolerance=0.5, gap_mm=0.5).predict(P, 55.0, 2.5, 0.05)
+
+
+def test_a_zero_gap_changes_nothing(table_path):
+    tol = 1.01 * _bound_pct("thickwall").max() / 100
+    plain = auto(table_path, tolerance=tol).predict(P, 35.0, 2.5, 0.05)
+    zero = auto(table_path, tolerance=tol, gap_mm=0.0).predict(P, 35.0, 2.5, 0.05)
+    np.testing.assert_array_equal(zero.force_N, plain.force_N)
+    for key in ("model_used", "error_bound_pct", "bound_source"):
+        np.testing.assert_array_equal(zero.extras[key], plain.extras[key])
+
+
+@pytest.mark.slow  # the default surrogate (GP training)
+def test_cli_solve_auto_with_a_gap_answers_with_the_closed_form(mkm_run):
+    from io import StringIO
+
+    muscle = ["--D0", "30", "--t0", "2", "--eps", "0.05"]
+    code, out, err = mkm_run(["fem", "solve", "--model", "auto:gap_mm=0.5", "--tolerance",
+                              "2%", *muscle])
+    assert code == 0, err
+    rows = pd.read_csv(StringIO(out))
+    assert set(rows["model_used"]) == {"thickwall"}, err
+    expected = make_model("thickwall", gap_mm=0.5).predict(rows["pressure_bar"], 30.0, 2.0,
+                                                           0.05).force_N
+    np.testing.assert_allclose(rows["force_N"], expected, rtol=1e-5)  # the CSV's 6 digits
+    code, out, err = mkm_run(["fem", "solve", "--model", "auto:gap_mm=0.5", "--tolerance",
+                              "0.01%", *muscle])
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and "gap_mm=0.5 is modelled by the closed form only" in err
