@@ -4,8 +4,9 @@
 the parameters with their intervals and what the runs could not tell; for each run of the report
 the measured rising and falling steps with both branches the identified muscle predicts, the
 hysteresis width per step, and the residuals before (the nominal model: the shipped calibration,
-Silastic S, no friction or creep) and after identification; and the held-out check of the
-identification's own runs. Without an identified muscle in the calibration, the section is
+Silastic S, no friction or creep) and after identification; the identified muscle's threshold
+pressure at each run's eps against the measured one (:func:`threshold_row`); and the held-out
+check of the identification's own runs. Without an identified muscle in the calibration, the section is
 empty.
 """
 
@@ -16,9 +17,10 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.fem.calibration import Calibration
+from mkm.fem.calibration import THRESHOLD_FLOOR_FRACTION, Calibration, line_above_threshold
 from mkm.fem.friction import DEFAULTS
 from mkm.fem.materials import SILASTIC_S
+from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.html import esc, figure_html, save_figure, table_html
 from mkm.identify import fitting
 from mkm.identify.runs import load_run_data
@@ -62,7 +64,7 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
         **{k: entry.get(k, DEFAULTS[k]) for k in DEFAULTS},
         **({"gap_mm": entry["gap_mm"]} if "gap_mm" in entry else {})})
     nominal = fitting.nominal_values(Calibration.shipped().entry(key)["theta0_deg"])
-    rows = []
+    rows, thresholds = [], []
     runs = [load_run_data(p) for p in run_dirs]
     for k, run in enumerate(runs, start=1):
         static = fitting.ModelStatic(spec, float(run.muscle["L0_mm"]))
@@ -74,6 +76,7 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
                                  "the identified muscle predicts. Middle: hysteresis width per "
                                  "pressure (falling minus rising). Right: residual measured "
                                  "minus model, nominal and identified."))
+        thresholds.append(threshold_row(run, static, identified))
         scale = float(np.max(run.steps["force_N_mean"]))
         for label, predicted in (("nominal", before), ("identified", after)):
             # a run without force (slack all the way) has no Err%
@@ -87,11 +90,45 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
     parts.append(table_html(pd.DataFrame(rows), "Before and after identification: largest "
                             "|Err%| (Equation 7) on each branch, the static model "
                             f"{esc(spec)} with friction and creep."))
+    parts.append(table_html(pd.DataFrame(thresholds), "Threshold pressure at each run's eps: "
+                            "the identified static model's (the pressure below which the held "
+                            "muscle pulls nothing) against the measured one, the zero of the "
+                            "least-squares line through the run's settled steps above its "
+                            "noise floor.", digits=3))
     held = pd.DataFrame(ident.get("leave_one_run_out", []))
     if "heldout_rising_pct" in held:
         parts.append(table_html(held, "Held-out check of the identification's own runs: each "
                                 "predicted from the others (largest |Err%| per branch)."))
     return "".join(parts)
+
+
+def threshold_row(run, static, values: dict) -> dict:
+    """The identified threshold pressure [bar] at the run's eps against the measured one.
+
+    Fitted: the ``threshold_pressure_bar`` of the identified static model where it reports one
+    (the thick-wall form), else the thick-wall form's
+    (:func:`mkm.fem.thickwall.klute_hannaford_threshold_pressure`) at the identified angle,
+    rubber and gap. Measured: the zero of the least-squares line through the settled steps,
+    rising and falling (friction and creep scale the force, so they leave the zero where it is),
+    whose force is above the noise floor: the larger of 2 % of the run's largest step force
+    (:data:`mkm.fem.calibration.THRESHOLD_FLOOR_FRACTION`, the calibration's floor for the same
+    line) and three standard errors of the run's zero (its tare), below which a step may be a
+    muscle not yet pulling.
+    """
+    D0_mm, t0_mm, eps = run.geometry
+    gap_mm = values.get("gap_mm", 0.0)
+    model = static.model(values["theta0_deg"], values["rubber_scale"], gap_mm)
+    if model.has_threshold:
+        fitted = float(model.predict(0.0, D0_mm, t0_mm, eps).extras["threshold_pressure_bar"])
+    else:
+        rubber = model.material
+        fitted = float(klute_hannaford_threshold_pressure(
+            D0_mm, t0_mm, eps, values["theta0_deg"], rubber.C10_MPa, rubber.C01_MPa, gap_mm))
+    force = run.steps["force_N_mean"].to_numpy(dtype=float)
+    floor = max(THRESHOLD_FLOOR_FRACTION * np.max(force, initial=0.0), 3.0 * run.tare_se_N)
+    _, measured = line_above_threshold(run.steps["pressure_bar_mean"], force, floor)
+    return {"run": run.name, "eps": eps, "fitted threshold [bar]": fitted,
+            "measured threshold [bar]": measured, "fitted - measured [bar]": fitted - measured}
 
 
 def _figure(run, before, after, k: int):
