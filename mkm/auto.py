@@ -25,8 +25,8 @@ the fine mesh answers if nothing else does. A gap between tube and braid (``gap_
 0) is modelled by the closed form only: neither the surrogate nor the FE takes it, so only the
 candidates that take it may answer, bound by their error at the same points without the gap
 (the gap's own physics has no reference to be checked against), and when none meets the
-tolerance auto says so instead of answering without the gap. Each point records the model that answered
-(``model_used``), its bound (``error_bound_pct``) and how the bound was obtained
+tolerance auto says so instead of answering without the gap. Each point records the model that
+answered (``model_used``), its bound (``error_bound_pct``) and how the bound was obtained
 (``bound_source``); :func:`explain` says it in words, and the parameters (the provenance) name
 the reference and the factor.
 """
@@ -43,7 +43,7 @@ import pandas as pd
 
 from mkm.core.records import file_sha256, package_file
 from mkm.fem.interface import ForceModel
-from mkm.registry import parse_spec
+from mkm.fem.ladder import MODELS
 
 MODEL_ERRORS_FILE = package_file("mkm", "data", "model_errors.csv")
 REFERENCE_SPEC = "surrogate"
@@ -83,6 +83,12 @@ def candidates(table: pd.DataFrame) -> pd.DataFrame:
             .agg(seconds_per_point=("seconds_per_point", "median"),
                  recorded_err_pct=("abs_err", "max")))
     return rows.sort_values("seconds_per_point", kind="stable").reset_index(drop=True)
+
+
+def takes_gap(spec: str) -> bool:
+    """Whether the predictor of ``spec`` takes ``gap_mm`` (its registry entry's parameters)."""
+    name = spec.partition(":")[0]
+    return name in MODELS.names() and "gap_mm" in MODELS.entry(name).parameters
 
 
 def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
@@ -196,7 +202,7 @@ class AutoModel(ForceModel):
                 break
             if row.predictor == FALLBACK:
                 continue
-            if self.gapped and "gap_mm" not in parse_spec(row.spec).entry.parameters:
+            if self.gapped and not takes_gap(row.spec):
                 continue  # it would answer without the gap
             model_pred = None
             if row.family == "FE":

@@ -6,8 +6,8 @@ the measured rising and falling steps with both branches the identified muscle p
 hysteresis width per step, and the residuals before (the nominal model: the shipped calibration,
 Silastic S, no friction or creep) and after identification; the identified muscle's threshold
 pressure at each run's eps against the measured one (:func:`threshold_row`); and the held-out
-check of the identification's own runs. Without an identified muscle in the calibration, the section is
-empty.
+check of the identification's own runs. Without an identified muscle in the calibration, the
+section is empty.
 """
 
 from __future__ import annotations

@@ -236,3 +236,14 @@ def test_cli_solve_auto_with_a_gap_answers_with_the_closed_form(mkm_run):
                               "0.01%", *muscle])
     assert code == 2 and out == ""
     assert err.count("\n") == 1 and "gap_mm=0.5 is modelled by the closed form only" in err
+
+
+def test_an_identified_gap_is_autos_default_as_the_thick_walls(tmp_path):
+    from mkm.fem.calibration import Calibration
+
+    shipped = Calibration.shipped()
+    entries = {**shipped.entries, "thickwall": {**shipped.entry("thickwall"), "gap_mm": 0.7}}
+    learnt = Calibration(tmp_path / "calibration.json", entries)
+    assert build_spec("auto", learnt).gap_mm == 0.7
+    assert build_spec("auto:gap_mm=0", learnt).gap_mm == 0.0  # asked: the muscle has none
+    assert build_spec("auto").gap_mm is None  # the shipped calibration identified no gap
