@@ -7,8 +7,9 @@ electronic regulator, its monitor output, each with an explicit terminal configu
 with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the run's plain loop.
 A second task writes the regulator command on AO0, on demand, started at open so the channel is
 reserved until close. ``close`` writes the vent command before clearing the tasks: the
-USB-6001's AO keeps its last value when a task is closed. A device NI MAX simulates is refused:
-it would drive nothing while the run says it drove the bench.
+USB-6001's AO keeps its last value when a task is closed, and through a lost USB transfer:
+:meth:`NIBackend.revive` resets a lost device and vents it on fresh tasks. A device NI MAX
+simulates is refused: it would drive nothing while the run says it drove the bench.
 
 The NI-DAQmx status codes (turned into :mod:`mkm.bench.backend` errors) live here; a missing driver
 (always the case on Linux) becomes :class:`~mkm.bench.backend.DriverMissing` with what to do.

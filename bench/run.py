@@ -19,6 +19,8 @@ Safety, in every exit path:
   (:mod:`mkm.bench.signals`); either way, and on any error, ``shutdown`` commands the vent, closes
   the
   device, then records the truth in run.json;
+- a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
+  a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``; if not,
   the run is ``failed``, asks for a VENT BY HAND and its bench marker stays.
@@ -310,14 +312,18 @@ class BenchRun:
         task (bounded); the run's own vent command then records it. What happened, one phrase."""
         try:
             self.backend.revive()
-            self._started = True  # a fresh AI task runs: the vent is verified as always
-            if self.acquisition is not None:
-                self.acquisition.command(0.0, "vent")
         except BaseException as exc:
             return (f"vent command failed ({type(lost).__name__}: {lost}); resetting the device "
                     f"did not bring it back ({type(exc).__name__}: {exc})")
-        return (f"the vent command failed ({type(lost).__name__}: {lost}): the device was reset "
+        self._started = True  # a fresh AI task runs: the vent is verified as always
+        done = (f"the vent command failed ({type(lost).__name__}: {lost}): the device was reset "
                 "and vented on a fresh task")
+        if self.acquisition is not None:
+            try:
+                self.acquisition.command(0.0, "vent")
+            except BaseException as exc:  # 0 V was written by revive(); its record failed
+                return f"{done}, but recording that vent failed ({type(exc).__name__}: {exc})"
+        return done
 
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
                  signal_number=None) -> tuple[RunStatus, str]:
