@@ -7,8 +7,9 @@ electronic regulator, its monitor output, each with an explicit terminal configu
 with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the run's plain loop.
 A second task writes the regulator command on AO0, on demand, started at open so the channel is
 reserved until close. ``close`` writes the vent command before clearing the tasks: the
-USB-6001's AO keeps its last value when a task is closed. A device NI MAX simulates is refused:
-it would drive nothing while the run says it drove the bench.
+USB-6001's AO keeps its last value when a task is closed, and through a lost USB transfer:
+:meth:`NIBackend.revive` resets a lost device and vents it on fresh tasks. A device NI MAX
+simulates is refused: it would drive nothing while the run says it drove the bench.
 
 The NI-DAQmx status codes (turned into :mod:`mkm.bench.backend` errors) live here; a missing driver
 (always the case on Linux) becomes :class:`~mkm.bench.backend.DriverMissing` with what to do.
@@ -60,6 +61,9 @@ DRIVER_MISSING = ("NI-DAQmx driver not found: install NI-DAQmx (Windows; NI does
                   "USB-6001 on Linux) or run on the simulated bench with --backend sim")
 TERMINAL_CONFIG_NAMES = {"differential": "DIFF", "rse": "RSE"}  # what the USB-6001 has
 VENT_V = 0.0  # an ITV-class regulator exhausts at 0 V command
+# A device lost mid-run is reset and given fresh tasks for at most this long [s], every
+# REVIVE_EVERY_S, before the vent is declared impossible: the operator must hear within seconds.
+REVIVE_WITHIN_S, REVIVE_EVERY_S = 3.0, 0.5
 
 
 @contextmanager
@@ -98,6 +102,7 @@ class NIBackend:
         self._index = 0
         self._base = 0  # hardware index of the current task start's first sample
         self._started_at: float | None = None
+        self._serial_opened: str | None = None
 
     @property
     def bench_key(self) -> str:
@@ -124,14 +129,9 @@ class NIBackend:
         return self.config.ai_channels
 
     def open(self) -> DeviceInfo:
-        import nidaqmx
         import nidaqmx.system
-        from nidaqmx.constants import AcquisitionType, TerminalConfiguration
-        from nidaqmx.stream_readers import AnalogMultiChannelReader
-        from nidaqmx.stream_writers import AnalogSingleChannelWriter
 
         daq = self.config.daq
-        terminal = getattr(TerminalConfiguration, TERMINAL_CONFIG_NAMES[daq.terminal_config])
         try:
             with daq_errors():
                 dev = nidaqmx.system.Device(self.device)
@@ -144,28 +144,9 @@ class NIBackend:
                 raise BenchError(f"device {self.device} is a {product}: the bench settings are "
                                  f"validated for a {USB6001.product} only "
                                  "(mkm.bench.devices.USB6001)")
+            self._serial_opened = serial
             with daq_errors():
-                self.ai_task = nidaqmx.Task("mkm_ai")
-                for channel in self.ai_channels:
-                    self.ai_task.ai_channels.add_ai_voltage_chan(
-                        f"{self.device}/{channel}", terminal_config=terminal,
-                        min_val=-USB6001_RANGE_V, max_val=USB6001_RANGE_V)
-                self.ai_task.timing.cfg_samp_clk_timing(
-                    self.rate_hz, sample_mode=AcquisitionType.CONTINUOUS,
-                    samps_per_chan=daq.buffer_samples)
-                self.ai_task.in_stream.input_buf_size = daq.buffer_samples
-                self._reader = AnalogMultiChannelReader(self.ai_task.in_stream)
-                if self.config.regulator.electronic:
-                    self.ao_task = nidaqmx.Task("mkm_ao")
-                    self.ao_task.ao_channels.add_ao_voltage_chan(
-                        f"{self.device}/{self.config.regulator.command_channel}",
-                        min_val=0.0, max_val=10.0)
-                    # started once: the channel stays reserved for the whole run (an
-                    # auto-started task would release it after every write, to NI MAX's
-                    # test panel or another program)
-                    self.ao_task.start()
-                    self._writer = AnalogSingleChannelWriter(self.ao_task.out_stream,
-                                                             auto_start=False)
+                self._make_tasks()
                 self.write_command(VENT_V)
                 actual_rate = float(self.ai_task.timing.samp_clk_rate)
         except BaseException:
@@ -179,6 +160,38 @@ class NIBackend:
         return DeviceInfo(backend="ni", simulated=False, product_type=product,
                           serial_number=serial, sample_rate_hz=actual_rate, channels=channels,
                           extra={"device": self.device, "nidaqmx": _nidaqmx_version()})
+
+    def _make_tasks(self) -> None:
+        """The AI task (every input, hardware clock) and, with an electronic regulator, the AO
+        task, started so that AO0 stays reserved."""
+        import nidaqmx
+        from nidaqmx.constants import AcquisitionType, TerminalConfiguration
+        from nidaqmx.stream_readers import AnalogMultiChannelReader
+        from nidaqmx.stream_writers import AnalogSingleChannelWriter
+
+        daq = self.config.daq
+        terminal = getattr(TerminalConfiguration, TERMINAL_CONFIG_NAMES[daq.terminal_config])
+        self.ai_task = nidaqmx.Task("mkm_ai")
+        for channel in self.ai_channels:
+            self.ai_task.ai_channels.add_ai_voltage_chan(
+                f"{self.device}/{channel}", terminal_config=terminal,
+                min_val=-USB6001_RANGE_V, max_val=USB6001_RANGE_V)
+        self.ai_task.timing.cfg_samp_clk_timing(
+            self.rate_hz, sample_mode=AcquisitionType.CONTINUOUS,
+            samps_per_chan=daq.buffer_samples)
+        self.ai_task.in_stream.input_buf_size = daq.buffer_samples
+        self._reader = AnalogMultiChannelReader(self.ai_task.in_stream)
+        if self.config.regulator.electronic:
+            self.ao_task = nidaqmx.Task("mkm_ao")
+            self.ao_task.ao_channels.add_ao_voltage_chan(
+                f"{self.device}/{self.config.regulator.command_channel}",
+                min_val=0.0, max_val=10.0)
+            # started once: the channel stays reserved for the whole run (an
+            # auto-started task would release it after every write, to NI MAX's
+            # test panel or another program)
+            self.ao_task.start()
+            self._writer = AnalogSingleChannelWriter(self.ao_task.out_stream,
+                                                     auto_start=False)
 
     def start(self) -> None:
         with daq_errors():
@@ -220,6 +233,51 @@ class NIBackend:
             return
         with daq_errors(AOWriteFailed):
             self._writer.write_one_sample(float(volts), timeout=1.0)
+
+    def revive(self, within_s: float = REVIVE_WITHIN_S) -> None:
+        """After a device loss (-50405, -200324, the device gone): reset the device, make fresh
+        tasks, write the vent command and restart the AI task, retried every
+        :data:`REVIVE_EVERY_S` for at most ``within_s`` [s] of wall time.
+
+        A USB-6001 keeps its last AO value through a lost transfer, so the regulator holds the
+        run's pressure until a task on a live device writes 0 V (DAQmx Reset Device aborts the
+        dead tasks; NI-DAQmx Help, "DAQmx Reset Device"). The serial number must be the one
+        opened: another device under the same name is not the bench. Raises the last
+        :class:`BenchError` when the device stays lost; the vent is then still to be verified.
+        """
+        import nidaqmx.system
+
+        deadline = time.monotonic() + within_s
+        while True:
+            self._drop_tasks()
+            try:
+                with daq_errors():
+                    device = nidaqmx.system.Device(self.device)
+                    device.reset_device()
+                    serial = f"{int(device.serial_num):X}"
+                if self._serial_opened is not None and serial != self._serial_opened:
+                    raise BenchError(f"device {self.device} came back as serial {serial}, not "
+                                     f"the bench's {self._serial_opened}")
+                with daq_errors():
+                    self._make_tasks()
+                self.write_command(VENT_V)
+                self.start()
+                return
+            except BenchError as exc:
+                last = exc
+            if time.monotonic() + REVIVE_EVERY_S > deadline:
+                raise last
+            time.sleep(REVIVE_EVERY_S)
+
+    def _drop_tasks(self) -> None:
+        """Clear the tasks of a lost device; their handles are dead, so errors say nothing."""
+        for name in ("ai_task", "ao_task"):
+            task = getattr(self, name)
+            if task is not None:
+                with suppress(Exception):
+                    task.close()
+            setattr(self, name, None)
+        self._writer = self._reader = None
 
     def close(self) -> None:
         """Vent first, then clear the AI and AO tasks; every step is tried, the first error wins."""

@@ -19,6 +19,8 @@ Safety, in every exit path:
   (:mod:`mkm.bench.signals`); either way, and on any error, ``shutdown`` commands the vent, closes
   the
   device, then records the truth in run.json;
+- a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
+  a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``; if not,
   the run is ``failed``, asks for a VENT BY HAND and its bench marker stays.
@@ -36,7 +38,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from mkm.bench import backends
-from mkm.bench.backend import Backend, BenchError
+from mkm.bench.backend import Backend, BenchError, DaqDisconnected
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
@@ -305,6 +307,24 @@ class BenchRun:
             if hasattr(observer, "step"):
                 observer.step(step)
 
+    def _revive(self, lost: DaqDisconnected) -> str:
+        """The vent after a device loss: the backend resets the device and writes 0 V on a fresh
+        task (bounded); the run's own vent command then records it. What happened, one phrase."""
+        try:
+            self.backend.revive()
+        except BaseException as exc:
+            return (f"vent command failed ({type(lost).__name__}: {lost}); resetting the device "
+                    f"did not bring it back ({type(exc).__name__}: {exc})")
+        self._started = True  # a fresh AI task runs: the vent is verified as always
+        done = (f"the vent command failed ({type(lost).__name__}: {lost}): the device was reset "
+                "and vented on a fresh task")
+        if self.acquisition is not None:
+            try:
+                self.acquisition.command(0.0, "vent")
+            except BaseException as exc:  # 0 V was written by revive(); its record failed
+                return f"{done}, but recording that vent failed ({type(exc).__name__}: {exc})"
+        return done
+
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
                  signal_number=None) -> tuple[RunStatus, str]:
         """Vent, verify the vent, close the device, record the outcome. Never raises; returns
@@ -319,6 +339,8 @@ class BenchRun:
         except BaseException as exc:  # the device may be gone; closing must still happen
             if acq is not None and acq.vented:  # written; only its record failed
                 problems.append(f"recording the vent failed ({type(exc).__name__}: {exc})")
+            elif isinstance(exc, DaqDisconnected) and hasattr(self.backend, "revive"):
+                problems.append(self._revive(exc))
             else:
                 problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
         if acq is not None and acq.marker_problem:

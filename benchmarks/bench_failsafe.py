@@ -381,17 +381,25 @@ STEPS = {1: finding_1, 2: finding_2, 3: finding_3, 4: finding_4, 5: finding_5, 6
          7: finding_7, 8: finding_8, 9: finding_9}
 
 
-def table(results: list[Result]) -> str:
-    lines = ["| # | finding | trials | bad | outcomes (bad ones starred) |",
-             "|---|---|---|---|---|"]
+def summary(results: list[Result]) -> list[dict]:
+    """One row per finding: its trials, the bad ones, the commonest outcomes (bad ones starred)."""
     by: dict[int, list[Result]] = {}
     for r in results:
         by.setdefault(r.finding, []).append(r)
-    for finding, rows in sorted(by.items()):
-        counts = Counter(("*" if r.bad else "") + r.outcome[:50] for r in rows)
-        shown = "; ".join(f"{o} x{c}" for o, c in counts.most_common(5))
-        lines.append(f"| {finding} | {FINDINGS[finding]} | {len(rows)} | "
-                     f"{sum(r.bad for r in rows)} | {shown} |")
+    rows = []
+    for finding, found in sorted(by.items()):
+        counts = Counter(("*" if r.bad else "") + r.outcome[:50] for r in found)
+        rows.append({"#": finding, "finding": FINDINGS[finding], "trials": len(found),
+                     "bad": sum(r.bad for r in found),
+                     "outcomes": "; ".join(f"{o} x{c}" for o, c in counts.most_common(5))})
+    return rows
+
+
+def table(results: list[Result]) -> str:
+    lines = ["| # | finding | trials | bad | outcomes (bad ones starred) |",
+             "|---|---|---|---|---|"]
+    lines += [f"| {r['#']} | {r['finding']} | {r['trials']} | {r['bad']} | {r['outcomes']} |"
+              for r in summary(results)]
     lines.append(f"| | all | {len(results)} | {sum(r.bad for r in results)} | |")
     return "\n".join(lines)
 
@@ -423,10 +431,14 @@ def main(argv=None) -> int:
     seconds = time.perf_counter() - start
     print(table(results))
     print(f"\n{args.mkm}, seed {args.seed}: {len(results)} trials in {seconds:.0f} s")
-    if args.json:
+    if args.json:  # the summary as "rows" (the docs' table), every trial with its outcome
         from dataclasses import asdict
 
-        Path(args.json).write_text(json.dumps([asdict(r) for r in results], indent=1))
+        from mkm.core.records import provenance, write_atomic
+
+        record = {**provenance(), "seed": args.seed, "total_s": round(seconds, 1),
+                  "rows": summary(results), "trials": [asdict(r) for r in results]}
+        write_atomic(args.json, json.dumps(record, indent=1) + "\n")
     return 0
 
 

@@ -55,6 +55,7 @@ class FakeDriver:
         interpreter.get_read_attribute_uint32.side_effect = self.read_attribute
         interpreter.get_read_attribute_uint64.side_effect = self.read_attribute_64
         interpreter.start_task.side_effect = self.start
+        interpreter.reset_device.side_effect = self.reset
         interpreter.get_timing_attribute_double.return_value = actual_rate_hz
         interpreter.get_device_attribute_string.return_value = "USB-6001"
         interpreter.get_device_attribute_uint32.return_value = 0x1F2E3D4
@@ -71,6 +72,19 @@ class FakeDriver:
         self.disconnected = True
         self.interpreter.read_analog_f64.side_effect = DaqReadError("USB transfer aborted",
                                                                     -50405, 0)
+
+    def reset(self, device_name):
+        """DAQmx Reset Device: a device that is gone is absent (-200324)."""
+        from nidaqmx.errors import DaqError
+
+        if self.disconnected:
+            raise DaqError("device absent or unavailable", -200324)
+
+    def reconnect(self, device_name=None):
+        """The device is back (what ``reset_device`` finds after a glitch): reads and writes work
+        again, on the bench as it was left (the regulator still at its last command)."""
+        self.disconnected = False
+        self.interpreter.read_analog_f64.side_effect = self.read
 
     def start(self, handle):
         self.acquired = 0  # the count restarts with the task

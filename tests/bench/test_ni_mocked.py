@@ -22,13 +22,27 @@ from mkm.bench.backend import (
     DriverMissing,
     ReadTimeout,
 )
-from mkm.bench.ni import NIBackend
+from mkm.bench.ni import REVIVE_EVERY_S, REVIVE_WITHIN_S, NIBackend
 from mkm.bench.run import acquire
 from mkm.bench.storage import load_run
 
 pytestmark = pytest.mark.mocked_hardware
 
 AI, AO = "handle-mkm_ai", "handle-mkm_ao"
+
+
+@pytest.fixture
+def instant_clock(monkeypatch):
+    """The NI backend's clock, whose sleeps pass at once: a device lost for good is retried
+    until its bound without the test waiting for it, and the bound is counted exactly."""
+    from types import SimpleNamespace
+
+    import mkm.bench.ni as ni
+
+    clock = {"t": 0.0}
+    monkeypatch.setattr(ni, "time", SimpleNamespace(
+        monotonic=lambda: clock["t"], sleep=lambda s: clock.update(t=clock["t"] + s)))
+    return clock
 
 
 def calls(driver, name):
@@ -210,7 +224,8 @@ def test_a_device_simulated_in_ni_max_is_refused(config, fake_driver):
     assert not calls(fake_driver, "create_task")
 
 
-def test_a_pulled_cable_mid_run_asks_for_a_vent_by_hand(config, fake_driver, tmp_path):
+def test_a_pulled_cable_mid_run_asks_for_a_vent_by_hand(config, fake_driver, tmp_path,
+                                                        instant_clock):
     # reads and writes fail alike once the device is gone: the vent cannot be written, so the
     # run cannot claim one (the fake driver used to accept writes after a disconnect)
     reads = {"n": 0}
@@ -227,6 +242,53 @@ def test_a_pulled_cable_mid_run_asks_for_a_vent_by_hand(config, fake_driver, tmp
     result = acquire(config, backend="ni", out_root=tmp_path)
     assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
     assert "vent command failed" in result.reason and "VENT BY HAND" in result.reason
+
+
+
+def _lost_after(fake_driver, n_reads):
+    """Reads work ``n_reads`` times, then the device is gone (reads and writes fail, -50405)."""
+    reads = {"n": 0}
+    normal = fake_driver.read
+
+    def read(*args):
+        reads["n"] += 1
+        if reads["n"] > n_reads:
+            fake_driver.disconnect()
+            return fake_driver.interpreter.read_analog_f64(*args)
+        return normal(*args)
+
+    fake_driver.interpreter.read_analog_f64.side_effect = read
+
+
+def test_a_device_back_after_a_reset_is_vented_and_verified(config, fake_driver, tmp_path):
+    # the regulator holds 1.25-2.5 V (0.5-1 bar) when the transfer aborts; the device answers
+    # again after DAQmx Reset Device, so a fresh AO task vents it and the monitor confirms
+    _lost_after(fake_driver, 30)
+    fake_driver.interpreter.reset_device.side_effect = fake_driver.reconnect
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert not result.manual_vent_required and "VENT BY HAND" not in result.reason
+    assert "DaqDisconnected" in result.reason and "reset and vented" in result.reason
+    fake_driver.interpreter.reset_device.assert_called_once_with("Dev1")
+    writes = [c.args[3] for c in calls(fake_driver, "write_analog_scalar_f64")]
+    assert writes[-1] == 0.0 and max(writes) > 0
+    # the verification is the simulated regulator exhausting, read on the fresh AI task: below
+    # safety.vent_below_bar (0.05 bar), as for any vent
+    vent_check = load_run(result.path).meta.vent_check
+    assert vent_check["verified"] and vent_check["pressure_bar"] < 0.05
+    assert fake_driver.bench.target_bar == 0.0
+
+
+def test_a_device_that_stays_lost_asks_for_a_vent_by_hand_within_the_bound(
+        config, fake_driver, tmp_path, instant_clock):
+    _lost_after(fake_driver, 30)  # and every reset finds the device absent (-200324)
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "did not bring it back" in result.reason and "VENT BY HAND" in result.reason
+    assert 0 < instant_clock["t"] <= REVIVE_WITHIN_S
+    # retried every REVIVE_EVERY_S until the bound: attempts at 0, 0.5, ..., 3.0 s
+    attempts = fake_driver.interpreter.reset_device.call_count
+    assert attempts == int(REVIVE_WITHIN_S / REVIVE_EVERY_S) + 1
 
 
 # The private hooks below were checked against nidaqmx 1.7.0; pyproject pins nidaqmx>=1.3,<2.
