@@ -232,8 +232,13 @@ def _identifiability(runs, best, boot) -> list[str]:
 
 
 def _branch_errors(run, predicted) -> dict:
-    """Largest |Err%| (Equation 7 over the run) on the rising and the falling steps."""
-    err = equation7_err_pct(run.steps["force_N_mean"].to_numpy(dtype=float), predicted)
+    """Largest |Err%| (Equation 7 over the run) on the rising and the falling steps; NaN for a
+    run without force (a slack muscle all the way: no Equation 7, as in the report)."""
+    measured = run.steps["force_N_mean"].to_numpy(dtype=float)
+    if not np.nanmax(measured, initial=0.0) > 0:
+        err = np.full(measured.shape, np.nan)
+        return {"rising": float("nan"), "falling": float("nan"), "err_pct": err}
+    err = equation7_err_pct(measured, predicted)
     up = run.steps["direction"].to_numpy() == "up"
     return {"rising": float(np.max(np.abs(err[up]))) if up.any() else float("nan"),
             "falling": float(np.max(np.abs(err[~up]))) if (~up).any() else float("nan"),

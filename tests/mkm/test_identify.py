@@ -251,3 +251,18 @@ def test_the_whole_path_on_the_fe_bench(tmp_path, mkm_run):
     page = (tmp_path / "report" / "report.html").read_text(encoding="utf-8")
     assert "Identified muscle" in page and "identified_run2.png" not in page  # embedded
     assert (tmp_path / "report" / "identified_run2.png").is_file()
+
+
+def test_a_run_without_force_has_no_equation7_error_in_the_checks():
+    """A slack muscle (0 N at every step, as the published DMSP-10 at its shortest length):
+    identify's run checks give NaN, as the report does, instead of refusing the whole fit."""
+    from types import SimpleNamespace
+
+    from mkm.identify.procedure import _branch_errors
+
+    steps = pd.DataFrame({"force_N_mean": [0.0, 0.0, 0.0], "direction": ["up", "up", "down"]})
+    out = _branch_errors(SimpleNamespace(steps=steps), np.array([1.0, 2.0, 1.0]))
+    assert np.isnan(out["rising"]) and np.isnan(out["falling"]) and np.isnan(out["err_pct"]).all()
+    pulled = steps.assign(force_N_mean=[10.0, 20.0, 10.0])
+    out = _branch_errors(SimpleNamespace(steps=pulled), np.array([9.0, 20.0, 12.0]))
+    assert out["rising"] == pytest.approx(5.0) and out["falling"] == pytest.approx(10.0)
