@@ -6,9 +6,9 @@ the +- tolerances it is made to, and, on a bench, its ``id``; the shortening rat
 fraction) is where it is held. ``None`` for the angle or the rubber means "not known": the
 models' defaults (the calibrated angle, Silastic S).
 
-The bench configuration's ``[muscle]`` table, a run folder's ``run.json``, the force models'
-parameters (:meth:`Muscle.model_params`), identify and design all use this one type, checked
-when made against the one set of limits (:mod:`mkm.fem.limits`).
+The bench configuration's ``[muscle]`` table and a run folder's ``run.json`` (read by report
+and identify) use this one type, checked when made against the one set of limits
+(:mod:`mkm.fem.limits`).
 """
 
 from __future__ import annotations
@@ -24,8 +24,6 @@ from mkm.fem.tolerances import Tolerances
 NUMBERS = ("D0_mm", "t0_mm", "L0_mm", "eps", "theta0_deg", "C10_MPa", "C01_MPa")
 #: the numbers a muscle always has (the others: None when not known)
 REQUIRED = ("D0_mm", "t0_mm", "L0_mm", "eps")
-#: the parameters a force model takes from a muscle (the geometry goes to ``predict``)
-MODEL_PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 
 
 @dataclass(frozen=True)
@@ -106,11 +104,3 @@ class Muscle:
         rubber when known (the tolerances go with the run's calibration)."""
         return {"id": self.id, **{k: getattr(self, k) for k in NUMBERS
                                   if getattr(self, k) is not None}}
-
-    def replace(self, **changes) -> Muscle:
-        """A copy with some fields changed, checked again."""
-        return dataclasses.replace(self, **changes)
-
-    def model_params(self) -> dict[str, float]:
-        """The parameters a force model takes (``L0_mm``, and the angle and rubber if known)."""
-        return {k: getattr(self, k) for k in MODEL_PARAMETERS if getattr(self, k) is not None}
