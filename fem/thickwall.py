@@ -389,16 +389,6 @@ class ThickWall(CalibratedTheta0, ForceModel):
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,
                 "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa, **gap}
 
-    def _gap(self) -> float:
-        """The gap [mm]: given, else the calibration entry's (an identified muscle), else 0."""
-        if self.gap_mm is not None:
-            return self.gap_mm
-        try:
-            entry = self.calibrated_entry()
-        except ValueError:  # no entry for this model: an explicit angle needs none
-            return 0.0
-        return check_value("gap_mm", entry.get("gap_mm", 0.0), prefix="calibration ")
-
     def _forces(self, P, D0, t0, eps):
         theta0 = check_theta0(self._theta0())
         C10, C01 = self.material.C10_MPa, self.material.C01_MPa
