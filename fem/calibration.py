@@ -48,7 +48,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from mkm.core.guards import regular_file
-from mkm.fem.limits import check_value
 from mkm.core.records import (
     file_sha256,
     package_file,
@@ -56,7 +55,7 @@ from mkm.core.records import (
     source_version,
     write_atomic,
 )
-from mkm.fem.limits import LIMITS, limit_text, outside
+from mkm.fem.limits import LIMITS, check_value, limit_text, outside
 from mkm.fem.materials import MooneyRivlin, mooney_rivlin
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
