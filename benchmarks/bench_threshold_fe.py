@@ -8,7 +8,9 @@ gap model (gap inside the nominal braid) are fitted with the FE model (coarse me
 its forces are the fine mesh's to 2e-5, ``tests/fem/fe/test_contact.py``) on each muscle's
 default pair of held lengths, started from the closed form's fit, and scored as the study
 scores them (largest error as % of the muscle's largest force on the rest-length curve and on
-the other held lengths, the threshold at the table's longest length against the measured one).
+the other held lengths, the threshold at the table's longest length against the measured one),
+each map read with the table's longest length and, where it differs, Festo's nominal length as
+the rest length (as the study reads them).
 
     .venv/bin/python benchmarks/bench_threshold_fe.py [--out FILE.json] [--muscles DMSP-10-250]
 
@@ -71,9 +73,10 @@ def fe_physics(L0_mm: float) -> Physics:
 
 def study(muscles) -> list[dict]:
     rows = []
-    for force_map in read_maps():
-        if not any(m in force_map.muscle for m in muscles):
-            continue
+    maps = [m for m in read_maps() if any(name in m.muscle for name in muscles)]
+    readings = [r for m in maps for r in (m, m.at_nominal_length())
+                if r is m or r.rest_length_mm != m.table_L0_mm]  # the nominal one if another
+    for force_map in readings:
         pair = force_map.held[:2]
         train = force_map.rows[np.isin(force_map.rows["eps"], pair)]
         measured = force_map.measured_threshold_bar()

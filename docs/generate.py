@@ -289,6 +289,7 @@ BENCHMARKS = {
     "startup.json": "benchmarks/bench_startup.py --json {out}",
     "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
+    "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
 }
 

@@ -323,7 +323,7 @@ def test_a_gap_makes_the_fe_search_and_verify_with_it():
     result = run_design(["300N@2.5bar,eps=0.1"], {"D0_mm": "30:32", "t0_mm": "2:2.5",
                                                   "gap_mm": 0.5}, top=1, mesh=MESH)
     assert "gap_mm=0.5, which the surrogate does not model: the FE model (coarse mesh) " \
-           "searched instead" in result.found.fe_search
+           "searched instead" in result.search.fe_search
     best = result.chosen
     assert best["meets_all"]
     gapped = Axisym(theta0_deg=best["theta0_deg"], mesh=MESH, gap_mm=0.5)
