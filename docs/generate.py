@@ -290,6 +290,7 @@ BENCHMARKS = {
     "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
     "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
+    "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 1 --seed 0 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
 }
 
