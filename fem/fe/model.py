@@ -17,7 +17,10 @@ strain:
   pushing. The braid is tension-only, ``g <= 0, lambda >= 0, lambda g = 0`` node by node
   (:meth:`HalfMuscle.slack_nodes`: a primal-dual active set inside Newton); it matters at the
   clamped cap's corner, where the free muscle near its threshold shortens the surface along
-  the fibres;
+  the fibres. With a radial gap between tube and braid at rest (``gap_mm``) the same
+  complementarity, with the braid's own rest radius in the fibre stretch, is the unilateral
+  contact of tube and braid: the tube inflates freely until it reaches the braid, which acts
+  only where they touch;
 * the air pressure is the potential ``-P V`` of the closed cavity (inner surface and cap), a
   follower load with a symmetric tangent whose cap share lands in the cap reaction;
 * the developed force is the reaction ``dPi/dU`` on the cap. For the half model this is already
@@ -390,7 +393,10 @@ class HalfMuscle:
         displacement from the thick-wall solution at a fifth of the shortening (or from rest
         where there is none), with up to :data:`FREE_PATH_CUTBACKS` halvings (the small cap
         elements of a fine mesh need short steps near the lock). Returns the state, the
-        pressure [MPa] and the report (iterations of all attempts).
+        pressure [MPa] and the report (iterations of all attempts). With a gap, ``U_mm = 0``
+        too (the threshold at rest length): there is no path to follow, and a failed solve
+        from the thick-wall start is reported as such. A path that ends off the inflated branch
+        is reported too, never returned.
         """
         def free(x, U):
             r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])
@@ -435,13 +441,12 @@ class HalfMuscle:
                                   label=lambda U: f"cap displacement {U:.3g} mm",
                                   **self._newton_options())
         report.iterations += spent
-        if x is not None and not (x[-1] > 0 and not self.slack_everywhere(np.append(x[:-1],
-                                                                                  U_mm))):
-            # a bare tube sucked shorter (a braid slack everywhere, P <= 0): not the muscle
+        if x is not None and (x[-1] <= 0 or self.slack_everywhere(np.append(x[:-1], U_mm))):
+            # a bare tube sucked shorter, not the muscle: say so rather than return it
             report.converged = False
-            x, report.reason = None, (f"the free path ended off the inflated branch (pressure "
-                                      f"{x[-1] / BAR_TO_MPA:.3g} bar, braid slack everywhere: "
-                                      f"{self.slack_everywhere(np.append(x[:-1], U_mm))})")
+            x, report.reason = None, (f"the free path ended off the inflated branch (at "
+                                      f"{x[-1] / BAR_TO_MPA:.3g} bar, or with the braid slack "
+                                      "everywhere)")
         if x is None:
             if self.thick_wall_start(U_mm) is None:
                 # the closed form's mid-section is past the lock, and the muscle's narrow ends
