@@ -107,8 +107,9 @@ def test_contact_complementarity_at_the_threshold_and_above():
     # their length: g = 0 to the Newton tolerance) or off the braid (tension 0, g < 0: the
     # tube inside it); never through it (g > 0). At the threshold at eps = 0 the mid-section
     # touches and the cap's corner, held at the tube's rest radius, does not (l_f^2 - 1 there
-    # is -3 %, measured: fibres 1.6 % short); at 3 bar the tube's slope next to the cap stretches the fibres there
-    # too, and every node touches. Tension dofs are sorted by Z (the corner last).
+    # is -3 %, measured: fibres 1.6 % short); at 3 bar the tube's slope next to the cap
+    # stretches the fibres there too, and every node touches. Tension dofs are sorted by Z
+    # (the corner last).
     half = HalfMuscle(D0, T0, 282.0, THETA0, SILASTIC_S, "coarse", gap_mm=0.5)
     y, threshold_MPa, report = half.free_path(0.0)
     assert report.converged and threshold_MPa > 0
