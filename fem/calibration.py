@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -60,6 +60,8 @@ from mkm.fem.materials import MooneyRivlin, mooney_rivlin
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
     import pandas as pd
+
+    from mkm.fem.interface import ForceModel
 
 CALIBRATION_FILE = package_file("mkm.fem", "calibration.json")
 THETA0_BOUNDS_DEG = (15.0, 50.0)  # practical braids are 20-30 deg; 54.7 deg is the lock angle
@@ -408,6 +410,61 @@ def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
         fit["threshold_offset_bar"] = float(offset)
         fit["rmse_shifted_N"] = float(np.sqrt(np.mean((shifted_force[ok] - measured[ok]) ** 2)))
     return fit
+
+
+@dataclass(frozen=True)
+class Fitted:
+    """What :func:`calibrate` found: the fit (:func:`fit_theta0`'s dict), the model at the fitted
+    angle, and the reference fitted."""
+
+    fit: dict
+    model: ForceModel
+    reference: pd.DataFrame
+
+    def summary(self, reference_name: str) -> str:
+        """One line: the angle, the target, the slopes and residuals."""
+        fit = self.fit
+        extra = (f", threshold offset {fit['threshold_offset_bar']:+.3f} bar (shifted RMSE "
+                 f"{fit['rmse_shifted_N']:.2f} N)" if "threshold_offset_bar" in fit else "")
+        return (f"model {self.model.calibration_key}: theta0 = {fit['theta0_deg']:.3f} deg "
+                f"(target {fit['target']}), slope {fit['slope_model_N_per_bar']:.2f} N/bar "
+                f"against {fit['slope_reference_N_per_bar']:.2f} "
+                f"({fit['slope_residual_pct']:+.3f} %), RMSE {fit['rmse_N']:.2f} N, largest "
+                f"residual {fit['max_abs_residual_N']:.2f} N{extra} ({fit['evaluations']} "
+                f"evaluations) against {reference_name}")
+
+    def table_csv(self) -> str:
+        """The reference and the calibrated model's forces, as CSV lines."""
+        rows = zip(self.reference["pressure_bar"], self.reference["force_N"],
+                   self.fit["force_N"], strict=True)
+        return "pressure_bar,reference_N,model_N\n" + "".join(
+            f"{p:g},{ref:.2f},{f:.2f}\n" for p, ref, f in rows)
+
+
+def calibrate(build: Callable[..., ForceModel], reference: pd.DataFrame,
+              target: str | None = None, L0_mm: float | None = None) -> Fitted:
+    """theta0 of the model ``build(theta0_deg=..., L0_mm=...)`` fitted to ``reference``
+    (:func:`fit_theta0`; ``target`` None: :func:`default_target`).
+
+    The model's length is ``L0_mm``, else the reference's (one length: a model has one), else
+    the model's default. Only the static physics rungs have an angle to calibrate.
+    """
+    from mkm.fem.ladder import static_names
+
+    lengths = reference["L0_mm"].unique() if "L0_mm" in reference else []
+    if L0_mm is None and len(lengths) > 1:
+        raise ValueError(f"the reference holds muscles of lengths "
+                         f"{', '.join(f'{v:g}' for v in lengths)} mm: expected one L0_mm "
+                         "(a model has one length)")
+    if L0_mm is None and len(lengths):
+        L0_mm = float(lengths[0])
+    model = build(theta0_deg=30.0, L0_mm=L0_mm)
+    if model.name not in static_names():
+        raise ValueError(f"model {model.name!r}: only the physics models "
+                         f"{', '.join(static_names())} have a theta0 to calibrate")
+    fit = fit_theta0(lambda th: build(theta0_deg=th, L0_mm=L0_mm), reference,
+                     target or default_target(model))
+    return Fitted(fit, build(theta0_deg=fit["theta0_deg"], L0_mm=L0_mm), reference)
 
 
 def default_target(model) -> str:

@@ -23,6 +23,8 @@ from mkm.fem.limits import LIMITS, check_wall, limit_text, outside
 if TYPE_CHECKING:
     import pandas as pd
 
+    from mkm.fem.muscle import Muscle
+
 INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
 MAX_PRESSURE_BAR = LIMITS["pressure_bar"][1]
 MAX_D0_MM = LIMITS["D0_mm"][1]
@@ -158,6 +160,23 @@ class ForceModel:
             model=self.name, params=self.params(), pressure_bar=P, D0_mm=D0, t0_mm=t0, eps=e,
             force_N=force, valid=valid, converged=converged, seconds=seconds, extras=extras,
         )
+
+    def predict_muscle(self, muscle: Muscle, pressure_bar) -> Prediction:
+        """Forces [N] of ``muscle`` held at its ``eps``, at ``pressure_bar`` [bar].
+
+        The model must be this muscle's (``make_model(name, muscle=muscle)``): a length, angle or
+        rubber the muscle knows and the model was built with another is refused, not silently
+        predicted for another muscle.
+        """
+        params = self.params()
+        for key, value in muscle.model_parameters().items():
+            built = params.get(key)
+            if isinstance(built, int | float) and not np.isclose(built, value, rtol=1e-12,
+                                                                  atol=0.0):
+                raise ValueError(f"{key}={value:g} of the muscle differs from the {self.name} "
+                                 f"model's {key}={built:g}: expected a model built for this "
+                                 "muscle (make_model(..., muscle=muscle))")
+        return self.predict(pressure_bar, muscle.D0_mm, muscle.t0_mm, muscle.eps)
 
     def _forces(self, P, D0, t0, eps) -> dict[str, np.ndarray]:
         """Return at least ``{"force_N": ...}``; optionally ``valid``, ``converged`` and extras."""

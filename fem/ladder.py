@@ -27,6 +27,7 @@ from mkm.fem.options import BRAIDS, MESH_LEVELS
 if TYPE_CHECKING:  # annotations only: the registry loads without numpy
     from mkm.fem.calibration import Calibration
     from mkm.fem.interface import ForceModel
+    from mkm.fem.muscle import Muscle
 
 
 @dataclass(frozen=True)
@@ -138,11 +139,21 @@ class Entry:
                              f"{', '.join(self.parameters) or 'none'}")
         return {k: self.parameters[k].convert(k, v) for k, v in params.items()}
 
-    def build(self, calibration: Calibration | None = None, **params) -> ForceModel:
+    def build(self, calibration: Calibration | None = None, muscle: Muscle | None = None,
+              **params) -> ForceModel:
         """The model with ``params`` (None values mean "use the default") and, for a model that
-        takes one, ``calibration`` (None: the shipped one)."""
-        given = self.check_params({k: v for k, v in params.items() if v is not None})
-        return self.construct(given, calibration)
+        takes one, ``calibration`` (None: the shipped one); ``muscle``: the model of that muscle
+        (its length, and its angle and rubber where known, where the model takes them and
+        ``params`` do not set them)."""
+        given = self.muscle_defaults(muscle)
+        given.update({k: v for k, v in params.items() if v is not None})
+        return self.construct(self.check_params(given), calibration)
+
+    def muscle_defaults(self, muscle: Muscle | None) -> dict[str, Any]:
+        """What of ``muscle`` (:meth:`Muscle.model_parameters`) this model takes."""
+        if muscle is None:
+            return {}
+        return {k: v for k, v in muscle.model_parameters().items() if k in self.parameters}
 
     def construct(self, params: dict[str, Any], calibration: Calibration | None = None
                   ) -> ForceModel:
@@ -188,10 +199,12 @@ def static_names() -> tuple[str, ...]:
     return MODELS.names(lambda e: e.family in STATIC_FAMILIES)
 
 
-def make_model(name: str, calibration: Calibration | None = None, **params) -> ForceModel:
-    """Instantiate model ``name`` with ``params`` (None values mean "use the default") and
-    ``calibration`` (None: the shipped one)."""
-    return entry(name).build(calibration, **params)
+def make_model(name: str, calibration: Calibration | None = None,
+               muscle: Muscle | None = None, **params) -> ForceModel:
+    """Instantiate model ``name`` with ``params`` (None values mean "use the default"),
+    ``calibration`` (None: the shipped one) and, given a ``muscle``, its length, angle and rubber
+    (:meth:`Entry.build`)."""
+    return entry(name).build(calibration, muscle, **params)
 
 
 register(Entry(

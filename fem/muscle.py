@@ -6,9 +6,10 @@ the +- tolerances it is made to, and, on a bench, its ``id``; the shortening rat
 fraction) is where it is held. ``None`` for the angle or the rubber means "not known": the
 models' defaults (the calibrated angle, Silastic S).
 
-The bench configuration's ``[muscle]`` table and a run folder's ``run.json`` (read by report
-and identify) use this one type, checked when made against the one set of limits
-(:mod:`mkm.fem.limits`).
+The bench configuration's ``[muscle]`` table, a run folder's ``run.json`` (read by report and
+identify), the force models (:meth:`mkm.fem.interface.ForceModel.predict_muscle`, models built
+for a muscle with ``make_model(..., muscle=...)``) and design's results use this one type,
+checked when made against the one set of limits (:mod:`mkm.fem.limits`).
 """
 
 from __future__ import annotations
@@ -22,6 +23,8 @@ from mkm.fem.tolerances import Tolerances
 
 #: the numbers of a muscle, in the order run.json and tables list them
 NUMBERS = ("D0_mm", "t0_mm", "L0_mm", "eps", "theta0_deg", "C10_MPa", "C01_MPa")
+#: the numbers a force model is built with (its geometry and eps are what it predicts at)
+MODEL_PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 #: the numbers a muscle always has (the others: None when not known)
 REQUIRED = ("D0_mm", "t0_mm", "L0_mm", "eps")
 
@@ -98,6 +101,11 @@ class Muscle:
             return cls(**{k: data[k] for k in data}, **extra)
         except ValueError as exc:
             raise ValueError(f"{where}.{exc}") from None
+
+    def model_parameters(self) -> dict[str, float]:
+        """What a force model of this muscle is built with: ``L0_mm``, and the angle and the
+        rubber where known (the others stay the model's calibrated defaults)."""
+        return {k: getattr(self, k) for k in MODEL_PARAMETERS if getattr(self, k) is not None}
 
     def record(self) -> dict[str, Any]:
         """What a run folder records of it: ``id``, the geometry and ``eps``, and the angle and

@@ -38,6 +38,7 @@ from mkm.surrogate import kinds
 if TYPE_CHECKING:  # annotations only: `mkm models` loads no model code
     from mkm.fem.calibration import Calibration
     from mkm.fem.interface import ForceModel
+    from mkm.fem.muscle import Muscle
 
 
 def _surrogate(kind: str | None = None, path: str | None = None,
@@ -140,21 +141,24 @@ class Spec:
         merged.update({k: v for k, v in params.items() if v is not None})
         return Spec(self.name, tuple(sorted(merged.items())))
 
-    def build(self, calibration: Calibration | None = None, **defaults) -> ForceModel:
+    def build(self, calibration: Calibration | None = None, muscle: Muscle | None = None,
+              **defaults) -> ForceModel:
         """The predictor, with ``calibration`` (None: the shipped one) where it takes one.
-        ``defaults`` (a bench run's ``L0_mm``, say) apply where the predictor takes that
-        parameter and the spec does not set it."""
+        ``defaults`` (a bench run's ``L0_mm``, say) and the ``muscle``'s length, angle and
+        rubber (where known) apply where the predictor takes that parameter and the spec does
+        not set it; ``defaults`` over the muscle's."""
         params = dict(self.params)
-        for key, value in defaults.items():
+        for key, value in {**self.entry.muscle_defaults(muscle), **defaults}.items():
             if key in self.entry.parameters and value is not None:
                 params.setdefault(key, value)
         given = self.entry.check_params(params, shown=self.text)
         return self.entry.construct(given, calibration)
 
 
-def build_spec(text: str, calibration: Calibration | None = None, **defaults) -> ForceModel:
-    """The predictor a spec names: ``parse_spec(text).build(calibration, **defaults)``."""
-    return parse_spec(text).build(calibration, **defaults)
+def build_spec(text: str, calibration: Calibration | None = None,
+               muscle: Muscle | None = None, **defaults) -> ForceModel:
+    """The predictor a spec names: ``parse_spec(text).build(calibration, muscle, **defaults)``."""
+    return parse_spec(text).build(calibration, muscle, **defaults)
 
 
 def _text(value) -> str:

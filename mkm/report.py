@@ -45,7 +45,8 @@ from mkm.core.records import (
     write_json_atomic,
 )
 from mkm.fem.calibration import Calibration
-from mkm.fem.paper import L0_MM, TABLE3_CSV
+from mkm.fem.muscle import Muscle
+from mkm.fem.paper import TABLE3_CSV
 from mkm.fem.tolerances import Tolerances
 from mkm.figures import (
     model_colours,
@@ -100,12 +101,12 @@ class _Run:
         return self.run.meta
 
     @property
-    def muscle(self) -> dict:
-        return dict(self.meta.get("muscle") or {})
+    def muscle(self) -> Muscle:
+        return self.meta.muscle
 
     @property
     def eps_pct(self) -> float:
-        return 100.0 * float(self.muscle.get("eps", np.nan))
+        return 100.0 * self.muscle.eps
 
     @property
     def label(self) -> str:
@@ -214,16 +215,16 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         bar.update(len(r.specs))
         return r
     frames = []
-    L0_mm = float(muscle.get("L0_mm", L0_MM))
+    built_for = tuple(sorted(muscle.model_parameters().items()))
     for spec in r.specs:
-        if (spec, L0_mm) not in models:  # a surrogate loads in about a second: once is enough
+        if (spec, built_for) not in models:  # a surrogate loads in about a second: once will do
             training = _announce_training(spec, bar)
-            models[spec, L0_mm] = spec.build(r.calibration, L0_mm=L0_mm)
+            models[spec, built_for] = spec.build(r.calibration, muscle)
             if training:  # its own estimate was given: the tasks' time left leaves it out
                 bar.unpause()
-        model = models[spec, L0_mm]
+        model = models[spec, built_for]
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
-        pred = _with_band(pred, model, spec, L0_mm, r, cache_dir)
+        pred = _with_band(pred, model, spec, r, cache_dir)
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
@@ -235,7 +236,7 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     return r
 
 
-def _with_band(pred, model, spec: Spec, L0_mm: float, r: _Run, cache_dir):
+def _with_band(pred, model, spec: Spec, r: _Run, cache_dir):
     """``pred`` with the band of the muscle's tolerances (``force_u_N``, :mod:`mkm.uncertainty`;
     the run's recorded tolerances, else the defaults), FE sweeps through the cache."""
     muscle = r.muscle
@@ -252,10 +253,10 @@ def _with_band(pred, model, spec: Spec, L0_mm: float, r: _Run, cache_dir):
             return cached_predict(m, *args, cache_dir=cache_dir)[0]
         return m.predict(*args)
 
-    band = force_band(model, pred.pressure_bar, muscle["D0_mm"], muscle["t0_mm"],
-                      muscle["eps"], tolerances, predict=predict,
+    band = force_band(model, pred.pressure_bar, muscle.D0_mm, muscle.t0_mm, muscle.eps,
+                      tolerances, predict=predict,
                       rebuild=lambda **params: spec.with_params(**params).build(r.calibration,
-                                                                                L0_mm=L0_mm))
+                                                                                muscle))
     return with_band(pred, band)
 
 
@@ -385,10 +386,10 @@ def _banners(runs: list[_Run]) -> str:
                    "not from a measurement.")
     for r in runs:
         try:
-            lock = braid_lock(r.muscle.get("theta0_deg"), r.calibration)
+            lock = braid_lock(r.muscle.theta0_deg, r.calibration)
         except ValueError:  # a calibration file without the FE model's angle: no lock known
             continue
-        if r.muscle.get("eps", 0.0) >= lock.eps_max:
+        if r.muscle.eps >= lock.eps_max:
             out.append(f"Run {r.k} is held at eps {r.eps_pct:.1f} %, past the braid lock: "
                        f"{lock}. No model is valid there: the braid cannot shorten so far, so "
                        "the muscle pulls little or nothing and every model's number is flagged "
@@ -403,8 +404,7 @@ def _overlay_section(runs: list[_Run], out: Path, names: dict, colours: dict) ->
         if r.scored.empty:
             continue
         m = r.muscle
-        groups.setdefault((m.get("id"), m.get("D0_mm"), m.get("t0_mm"), m.get("L0_mm")),
-                          []).append(r)
+        groups.setdefault((m.id, m.D0_mm, m.t0_mm, m.L0_mm), []).append(r)
     parts = []
     for i, ((mid, D0, t0, L0), members) in enumerate(groups.items(), start=1):
         if len(members) < 2:
@@ -469,7 +469,7 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
     hardware = dict(meta.get("hardware") or {})
     sim = hardware.pop("sim", None) if hardware.get("simulated") else None
     source = "From run.json. " + provenance_links(r.keys[:1])
-    tables = [mapping_table(muscle | {"eps [%]": r.eps_pct}, "Muscle", source),
+    tables = [mapping_table(muscle.record() | {"eps [%]": r.eps_pct}, "Muscle", source),
               mapping_table(hardware, "Hardware", source),
               mapping_table(meta.get("calibration") or {}, "Calibration", source),
               mapping_table(meta.get("tare") or {}, "Tare at 0 bar", source)]
@@ -495,7 +495,7 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
 
     stem = f"run{r.k}"
     spreadsheet_safe(r.scored).to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
-    title = (f"run {r.k}: {_plain(muscle.get('id', ''))}, eps = {r.eps_pct:.1f} %")
+    title = f"run {r.k}: {_plain(muscle.id)}, eps = {r.eps_pct:.1f} %"
     fig_path = save_figure(run_figure(steps, r.scored, title, names, colours),
                            out / f"{stem}_force_error.png")
     table = pd.DataFrame([{"model": names[s["model"]], "spec": s["model"],
@@ -656,12 +656,11 @@ def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
         choice = None
         if not r.run.steps.empty and MODEL_ERRORS_FILE.exists():
             m = r.muscle
-            muscle = {k: m[k] for k in ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
-                      if m.get(k) is not None}
             auto = AutoModel(tolerance=tolerance,
-                             build=partial(build_spec, calibration=r.calibration), **muscle)
+                             build=partial(build_spec, calibration=r.calibration),
+                             **m.model_parameters())
             try:
-                chosen = auto.choose(_auto_pressures(r), m["D0_mm"], m["t0_mm"], m["eps"])
+                chosen = auto.choose(_auto_pressures(r), m.D0_mm, m.t0_mm, m.eps)
             except ValueError:  # a candidate without a calibration in this command: no choice
                 chosen = None
             if chosen is not None:

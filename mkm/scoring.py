@@ -16,6 +16,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.fem.interface import ForceModel, Prediction
+from mkm.fem.muscle import Muscle
 from mkm.fem.paper import equation7_err_pct
 from mkm.prediction_cache import cached_predict
 from mkm.registry import entries
@@ -36,7 +37,7 @@ def error_summary(reference_N, force_N, valid, err_pct) -> dict:
     }
 
 
-def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict, cache_dir,
+def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: Muscle, cache_dir,
                   pressure_tolerance_bar: float = 0.0) -> tuple[Prediction, bool]:
     """Model forces at each step's measured mean pressure (through the cache for FE models),
     timed on a warm model (the cheap ones are called twice, the second call timed).
@@ -46,7 +47,7 @@ def predict_steps(model: ForceModel, steps: pd.DataFrame, muscle: dict, cache_di
     the 2.5 bar step is the 2.5 bar the surrogate was trained to, not an extrapolation.
     """
     pressure = domain_pressures(model, evaluation_pressures(steps), pressure_tolerance_bar)
-    args = (pressure, muscle["D0_mm"], muscle["t0_mm"], muscle["eps"])
+    args = (pressure, muscle.D0_mm, muscle.t0_mm, muscle.eps)
     known = entries().get(model.name)
     if known is not None and known.expensive:  # seconds per sweep: cached
         return cached_predict(model, *args, cache_dir=cache_dir)

@@ -147,12 +147,11 @@ def _calibrate(args) -> int:
     from mkm.bench.reference import calibration_reference
     from mkm.fem.calibration import (
         CALIBRATION_FILE,
+        calibrate,
         calibration_entry,
-        default_target,
-        fit_theta0,
         store_calibration,
     )
-    from mkm.fem.ladder import entry, static_names
+    from mkm.fem.ladder import entry
     from mkm.fem.paper import CASE_I_CSV
 
     args.reference = args.reference or str(CASE_I_CSV)
@@ -161,41 +160,19 @@ def _calibrate(args) -> int:
 
         args.reference = str(one_run_folder(args.reference))
     reference, name, sha256 = calibration_reference(args.reference)
-    overrides = {}
-    if "L0_mm" in reference and getattr(args, "L0", None) is None:
-        lengths = reference["L0_mm"].unique()
-        if len(lengths) > 1:
-            raise ValueError(f"reference {args.reference} holds muscles of lengths "
-                             f"{', '.join(f'{v:g}' for v in lengths)} mm: expected one L0_mm "
-                             "(a model has one length)")
-        overrides["L0_mm"] = float(lengths[0])
-    model = model_from_args(args, theta0_deg=30.0, **overrides)
-    if model.name not in static_names():
-        raise ValueError(f"--model {args.model}: only the physics models "
-                         f"{', '.join(static_names())} have a theta0 to calibrate")
-    target = args.target or default_target(model)
-    fit = fit_theta0(lambda th: model_from_args(args, theta0_deg=th, **overrides), reference,
-                     target)
-    model = model_from_args(args, theta0_deg=fit["theta0_deg"], **overrides)
+    fitted = calibrate(lambda **params: model_from_args(args, **params), reference,
+                       args.target, getattr(args, "L0", None))
+    model = fitted.model
     # stored before anything is printed: `| head` closing stdout must not lose the fit
     paths = [] if args.dry_run else [p for p in (args.out, args.update_shipped and
                                                  CALIBRATION_FILE) if p]
     if paths:
-        entry = calibration_entry(fit, model, name, sha256, entry(model.name).module)
+        record = calibration_entry(fitted.fit, model, name, sha256, entry(model.name).module)
         for path in paths:
-            store_calibration(path, model.calibration_key, entry)
+            store_calibration(path, model.calibration_key, record)
             print(f"stored in {path} under {model.calibration_key!r}", file=sys.stderr)
-    extra = (f", threshold offset {fit['threshold_offset_bar']:+.3f} bar (shifted RMSE "
-             f"{fit['rmse_shifted_N']:.2f} N)" if "threshold_offset_bar" in fit else "")
-    print(f"model {model.calibration_key}: theta0 = {fit['theta0_deg']:.3f} deg (target "
-          f"{target}), slope {fit['slope_model_N_per_bar']:.2f} N/bar against "
-          f"{fit['slope_reference_N_per_bar']:.2f} ({fit['slope_residual_pct']:+.3f} %), "
-          f"RMSE {fit['rmse_N']:.2f} N, largest residual {fit['max_abs_residual_N']:.2f} N"
-          f"{extra} ({fit['evaluations']} evaluations) against {name}")
-    print("pressure_bar,reference_N,model_N")
-    for p, ref, f in zip(reference["pressure_bar"], reference["force_N"], fit["force_N"],
-                         strict=True):
-        print(f"{p:g},{ref:.2f},{f:.2f}")
+    print(fitted.summary(name))
+    sys.stdout.write(fitted.table_csv())
     return 0
 
 

@@ -24,11 +24,13 @@ from mkm.design.spec import (
     DEFAULT_RUBBER,
     NEAR_LOCK_FRACTION,
     Constraints,
+    design_muscle,
     load_spec,
     parse_requirement,
 )
 from mkm.design.verify import verify
 from mkm.fem.calibration import Calibration
+from mkm.fem.muscle import Muscle
 
 # --- the API ------------------------------------------------------------------------------------
 
@@ -51,6 +53,13 @@ class DesignResult:
         """The best design the FE confirms (a row), or None."""
         ok = self.designs[self.designs["meets_all"]]
         return ok.iloc[0] if len(ok) else None
+
+    def chosen_muscle(self, calibration: Calibration | None = None) -> Muscle | None:
+        """The chosen design as a :class:`~mkm.fem.muscle.Muscle` (at rest, eps 0), ready for
+        ``make_model(name, muscle=...)``; None when no design is confirmed. ``calibration``: where
+        a ``calibrated`` rubber comes from."""
+        best = self.chosen
+        return None if best is None else design_muscle(best, calibration)
 
     def summary(self) -> str:
         s = self.search
@@ -223,4 +232,7 @@ def design_record(result: DesignResult) -> dict:
             # hold a better one); empty when none or nothing is confirmed
             "chosen_on_box_edge": ([] if result.chosen is None
                                    else box_edges(result.chosen, s.constraints)),
+            # the chosen design as the muscle every other command reads (null: none confirmed)
+            "chosen_muscle": chosen.record() if (chosen := result.chosen_muscle(
+                s.calibration)) else None,
             "summary": result.summary()}

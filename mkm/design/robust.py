@@ -31,6 +31,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from mkm.fem.muscle import NUMBERS, Muscle
 from mkm.fem.tolerances import Tolerances, draws
 from mkm.registry import parse_spec
 from mkm.uncertainty import monte_carlo_ready, nominal_parameters, sensitivities, surrogate_draws
@@ -155,9 +156,8 @@ def _worst_corner_force(model, mesh, nominal, req, tolerances, cache_dir,
         else:
             corner[name] = corner[name] + step
     corner["eps"] = max(corner["eps"], 0.0)
-    fe = parse_spec(f"axisym:mesh={mesh}").build(
-        L0_mm=corner["L0_mm"], theta0_deg=corner["theta0_deg"], C10_MPa=corner["C10_MPa"],
-        C01_MPa=corner["C01_MPa"])
-    pred, _ = cached_predict(fe, req.pressure_bar, corner["D0_mm"], corner["t0_mm"],
-                             corner["eps"], cache_dir=cache_dir)
+    muscle = Muscle(**{k: corner[k] for k in NUMBERS})
+    fe = parse_spec(f"axisym:mesh={mesh}").build(muscle=muscle)
+    pred, _ = cached_predict(fe, req.pressure_bar, muscle.D0_mm, muscle.t0_mm, muscle.eps,
+                             cache_dir=cache_dir)
     return float(np.ravel(np.where(pred.valid, pred.force_N, np.nan))[0])

@@ -11,6 +11,7 @@ from mkm.core.ranges import parse_fraction, parse_number
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.limits import check_value
 from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin
+from mkm.fem.muscle import Muscle
 
 OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
 #: the rubber of the calibration (a muscle ``mkm identify`` learnt), else Silastic S
@@ -29,6 +30,15 @@ def rubber_of(name: str, calibration: Calibration | None = None) -> MooneyRivlin
             entry = {}
         return mooney_rivlin(entry.get("C10_MPa"), entry.get("C01_MPa"))
     return MATERIALS[name]
+def design_muscle(row, calibration: Calibration | None = None, eps: float = 0.0) -> Muscle:
+    """The muscle a design (a row of the designs' table) describes, held at ``eps``: its
+    geometry, length, braid angle and rubber (``rubber`` named as in :func:`rubber_of`)."""
+    rubber = rubber_of(str(row["rubber"]), calibration)
+    return Muscle(D0_mm=float(row["D0_mm"]), t0_mm=float(row["t0_mm"]),
+                  L0_mm=float(row["L0_mm"]), eps=eps, theta0_deg=float(row["theta0_deg"]),
+                  C10_MPa=rubber.C10_MPa, C01_MPa=rubber.C01_MPa)
+
+
 #: A requirement is near the braid lock from 75 % of Equation 2's eps_max on: the pressure term
 #: of the force has fallen to about a fifth of its value at rest there (theta0 = 32 deg).
 NEAR_LOCK_FRACTION = 0.75

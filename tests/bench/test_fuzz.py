@@ -1,11 +1,13 @@
 """Issue 20, finding 6: hostile run folders and configurations give one ValueError, never a
 traceback or a hang (property-based, hypothesis), loaded directly and through the commands that
 read a run folder (`mkm reprocess`, `mkm fem calibrate --reference`, `mkm report`). The fast
-profile tries a few dozen cases in a few seconds; `-m slow` runs many more, and the report (a
-few seconds per accepted folder).
+profile tries a few dozen cases in a few seconds (`-m slow` adds the report, a few seconds per
+accepted folder); `HYPOTHESIS_PROFILE=explore` also runs the long exploration, 400 fresh cases
+each, which the suite leaves out: it finds new cases, it does not guard old ones.
 """
 
 import json
+import os
 import re
 import shutil
 
@@ -23,6 +25,8 @@ FAST = settings(max_examples=30, deadline=None, database=None, derandomize=True,
                 suppress_health_check=[HealthCheck.function_scoped_fixture,
                                        HealthCheck.too_slow])
 LONG = settings(FAST, max_examples=400, derandomize=False)
+explore = pytest.mark.skipif(os.environ.get("HYPOTHESIS_PROFILE") != "explore",
+                             reason="exploration (400 fresh cases): HYPOTHESIS_PROFILE=explore")
 
 # JSON values an attacker or a broken disk may leave anywhere in run.json
 hostile_json = st.recursive(
@@ -235,14 +239,14 @@ def test_a_500_deep_inline_table_and_a_huge_device_name_are_one_line():
         parse_config(long)
 
 
-@pytest.mark.slow
+@explore
 @LONG
 @given(edits=edits)
 def test_hostile_run_json_long(recorded, tmp_path, edits):
     _check_run_json(recorded, tmp_path, edits)
 
 
-@pytest.mark.slow
+@explore
 @LONG
 @given(*csv_edits)
 def test_hostile_csv_cells_long(recorded, tmp_path, name, row, column, cell):

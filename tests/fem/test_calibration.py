@@ -326,3 +326,23 @@ def test_a_hostile_reference_table_is_fitted_or_refused_in_one_line(tmp_path, ca
     path.write_text("\n".join(lines) + "\n")
     _one_line_or_success(capsys, ["fem", "calibrate", "--model", "eq2", "--reference",
                                   str(path)])
+
+
+def test_calibrate_takes_the_references_one_length_and_refuses_two_or_a_model_without_angle():
+    from mkm.fem.calibration import calibrate
+
+    reference = read_reference(CASE_I_CSV)
+    # the paper's muscle I is Equation 2's own case: a force fit through the origin, where the
+    # slope is exact (the shipped eq2-inner entry: slope residual below 0.01 %)
+    fitted = calibrate(lambda **p: make_model("eq2", **p), reference.assign(L0_mm=150.0))
+    assert fitted.model.params()["L0_mm"] == 150.0
+    assert fitted.fit["theta0_deg"] == pytest.approx(calibrated("eq2-inner")["theta0_deg"],
+                                                     abs=2e-3)
+    lines = fitted.table_csv().splitlines()
+    assert lines[0] == "pressure_bar,reference_N,model_N" and len(lines) == len(reference) + 1
+    two = pd.concat([reference.assign(L0_mm=150.0), reference.assign(L0_mm=200.0)])
+    with pytest.raises(ValueError, match="^the reference holds muscles of lengths 150, 200 mm"):
+        calibrate(lambda **p: make_model("eq2", **p), two)
+    with pytest.raises(ValueError, match="^model 'friction': only the physics models eq2, "
+                       "thickwall, axisym have a theta0 to calibrate$"):
+        calibrate(lambda **p: make_model("friction", **p), reference)

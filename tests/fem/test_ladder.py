@@ -50,3 +50,25 @@ def test_rungs_with_a_threshold_say_so():
         assert model.has_threshold == reports
         if reports:
             assert 0.1 < pred.extras["threshold_pressure_bar"][0] < 0.2  # muscle I: 0.14 bar
+
+
+def test_a_model_built_for_a_muscle_predicts_that_muscle_and_refuses_another():
+    from mkm.fem.muscle import Muscle
+
+    muscle = Muscle(D0_mm=35.0, t0_mm=2.5, L0_mm=150.0, eps=0.05, theta0_deg=31.0,
+                    C10_MPa=0.05, C01_MPa=0.06)
+    model = make_model("thickwall", muscle=muscle)
+    params = model.params()
+    assert (params["L0_mm"], params["theta0_deg"], params["C10_MPa"], params["C01_MPa"]) == (
+        150.0, 31.0, 0.05, 0.06)
+    # the muscle's geometry and eps are where it predicts: the same numbers as predict()
+    assert float(model.predict_muscle(muscle, 2.0).force_N) == float(
+        model.predict(2.0, 35.0, 2.5, 0.05).force_N)
+    # an explicit parameter wins over the muscle's; Equation 2 takes no rubber, so only the
+    # length and the angle reach it
+    assert make_model("thickwall", muscle=muscle, theta0_deg=33.0).params()["theta0_deg"] == 33.0
+    assert make_model("eq2", muscle=muscle).params()["theta0_deg"] == 31.0
+    other = make_model("thickwall", theta0_deg=31.0, L0_mm=150.0)  # Silastic S, not its rubber
+    with pytest.raises(ValueError, match="^C10_MPa=0.05 of the muscle differs from the "
+                       "thickwall model's C10_MPa=0.0"):
+        other.predict_muscle(muscle, 2.0)

@@ -23,6 +23,7 @@ from mkm.design import (
 from mkm.design.search import box_edges
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
+from mkm.fem.ladder import make_model
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, outer_diameter_mm
 from mkm.registry import entry
 
@@ -293,6 +294,15 @@ def test_a_design_on_the_edge_of_the_search_box_is_named():
     assert (best["D0_mm"], best["t0_mm"]) == (30.0, 2.0)
     edges = ["D0 = 30 mm (the lower end of 30:50)", "t0 = 2 mm (the lower end of 2:4)"]
     assert design_record(result)["chosen_on_box_edge"] == edges
+    # the chosen design is a muscle every model reads: its FE, built for that muscle, gives the
+    # FE force the verification recorded at the requirement (a point alone and in the verifying
+    # sweep agree to 2.3e-9: the solver's force tolerance, fem FORCE_RTOL)
+    muscle = result.chosen_muscle()
+    assert design_record(result)["chosen_muscle"] == muscle.record()
+    assert (muscle.D0_mm, muscle.t0_mm, muscle.L0_mm) == (30.0, 2.0, best["L0_mm"])
+    fe = make_model("axisym", mesh=MESH, muscle=muscle)
+    assert float(fe.predict(2.0, muscle.D0_mm, muscle.t0_mm, 0.1).force_N) == pytest.approx(
+        best["r1_fe_N"], rel=1e-8)
     assert (f"it sits on the edge of the search box ({', '.join(edges)}): a larger box might "
             "hold a better design") in result.summary()
     # a design inside the box, or on a fixed value (no range), sits on no edge
