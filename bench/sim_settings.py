@@ -49,7 +49,7 @@ class Faults:
 @dataclass(frozen=True)
 class Truth:
     """The simulated muscle's own braid angle, rubber and gap between tube and braid (a model
-    that takes ``gap_mm``: ``thickwall``), where they differ from the nominal ones.
+    that takes ``gap_mm``: ``thickwall``, ``axisym``), where they differ from the nominal ones.
 
     Unset (None): the model's nominal value (the calibrated angle, Silastic S, no gap). With
     ``[sim]``'s ``hysteresis_fraction``, ``creep_fraction`` and ``creep_tau_s`` this is the truth

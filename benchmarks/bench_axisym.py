@@ -3,7 +3,7 @@
 Run outside the test suite:
 
     .venv/bin/python benchmarks/bench_axisym.py [--levels coarse,medium,fine] [--repeats 3]
-        [--eps 0.05,0.2] [--braids bonded,sliding] [--baseline main]
+        [--eps 0.05,0.2] [--braids bonded,sliding] [--gaps 0,0.5] [--baseline main]
 
 Muscle I (D0 35 mm, t0 2.5 mm, L0 282 mm) at the calibrated theta0, pressures 0 to 2.5 bar in
 0.25 bar steps, as `mkm fem solve` runs it. For each level and eps it reports the median wall
@@ -15,6 +15,10 @@ and where the CPU time goes: mesh and operator set-up, assembly (tangents and re
 sparse LU (SuperLU's factorisation only) and the rest (back-substitutions, the pressure ramp's
 symmetric permutation, Python). The split is measured by wrapping those functions with timers
 in this script only.
+
+``--gaps 0,0.5`` times each case at each radial gap between tube and braid [mm] (the
+unilateral contact; a gap also makes eps = 0 solve its threshold state) and adds, per gapped
+case, its median time over the gap-free case's (``vs_no_gap``: one run, both in turn).
 
 ``--baseline REV`` times the same sweeps with the FE code of git revision ``REV`` too (a copy
 made with ``git archive``), each repeat of it and of the working tree in its own process, in
@@ -77,7 +81,8 @@ def _assembly_kind(self, y, pressure_MPa, tangent=True):
     return "" if tangent else "_residual"
 
 
-def bench_sweep(level: str, eps: float, theta0_deg: float, braid: str = "bonded") -> dict:
+def bench_sweep(level: str, eps: float, theta0_deg: float, braid: str = "bonded",
+                gap_mm: float = 0.0) -> dict:
     timers = Timers()
     half = mkm.fem.fe.model.HalfMuscle
     init, assemble, splu = half.__init__, half._assemble, mkm.fem.fe.newton.splu
@@ -88,7 +93,7 @@ def bench_sweep(level: str, eps: float, theta0_deg: float, braid: str = "bonded"
         start, cpu = time.perf_counter(), time.process_time()
         out = mkm.fem.fe.model.isometric_sweep(
             PRESSURES_BAR, MUSCLE_I["D0_mm"], MUSCLE_I["t0_mm"], eps, theta0_deg, MUSCLE_I["L0_mm"],
-            level, braid=braid)
+            level, braid=braid, **({"gap_mm": gap_mm} if gap_mm else {}))
         total, cpu = time.perf_counter() - start, time.process_time() - cpu
     finally:
         half.__init__, half._assemble = init, assemble
@@ -97,7 +102,8 @@ def bench_sweep(level: str, eps: float, theta0_deg: float, braid: str = "bonded"
     threshold_iterations = int(out["iterations"][below].max()) if below.any() else 0
     t, calls = timers.seconds, timers.calls
     assembly_s = t.get("assembly", 0.0) + t.get("assembly_residual", 0.0)
-    return {"mesh": level, "braid": braid, "eps": eps, "dofs": int(out["dofs"][0]),
+    return {"mesh": level, "braid": braid, "eps": eps, "gap_mm": gap_mm,
+            "dofs": int(out["dofs"][0]),
             "seconds": total, "cpu_seconds": cpu,
             "iterations": threshold_iterations + int(out["iterations"][~below].sum()),
             "assemblies": calls.get("assembly", 0), "residuals": calls.get("assembly_residual", 0),
@@ -110,9 +116,9 @@ def bench_sweep(level: str, eps: float, theta0_deg: float, braid: str = "bonded"
 def run_once(args) -> list[dict]:
     """One sweep of every case asked for, in this process."""
     theta0 = mkm.fem.fe.model.Axisym().params()["theta0_deg"]
-    return [bench_sweep(level, float(eps), theta0, braid)
+    return [bench_sweep(level, float(eps), theta0, braid, float(gap))
             for level in args.levels.split(",") for eps in args.eps.split(",")
-            for braid in args.braids.split(",")]
+            for braid in args.braids.split(",") for gap in args.gaps.split(",")]
 
 
 def checkout(revision: str, root: Path) -> Path:
@@ -135,7 +141,7 @@ def in_process(args, pythonpath: Path | None) -> list[dict]:
         env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(pythonpath),
                                                           env.get("PYTHONPATH")]))
     command = [sys.executable, __file__, "--levels", args.levels, "--eps", args.eps,
-               "--braids", args.braids, "--once"]
+               "--braids", args.braids, "--gaps", args.gaps, "--once"]
     done = subprocess.run(command, env=env, capture_output=True, text=True, check=True)
     return json.loads(done.stdout)
 
@@ -156,6 +162,7 @@ def main() -> None:
     parser.add_argument("--levels", default="coarse,medium,fine")
     parser.add_argument("--eps", default="0.05,0.2")
     parser.add_argument("--braids", default="bonded")
+    parser.add_argument("--gaps", default="0", help="radial gaps [mm], comma list")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--baseline", metavar="REV",
                         help="also time the FE code of this git revision (e.g. main)")
@@ -165,9 +172,9 @@ def main() -> None:
         print(json.dumps(run_once(args)))
         return
     theta0 = mkm.fem.fe.model.Axisym().params()["theta0_deg"]
-    columns = ["mesh", "braid", "eps", "dofs", "seconds", "cpu_seconds", "iterations", "assemblies",
-               "residuals", "factorisations", "setup_s", "assembly_s", "lu_s", "other_s",
-               "converged", "force_2p5bar_N"]
+    columns = ["mesh", "braid", "eps", "gap_mm", "dofs", "seconds", "cpu_seconds", "iterations",
+               "assemblies", "residuals", "factorisations", "setup_s", "assembly_s", "lu_s",
+               "other_s", "converged", "force_2p5bar_N"]
     if args.baseline is None:
         rows = medians([run_once(args) for _ in range(args.repeats)])
     else:
@@ -188,6 +195,12 @@ def main() -> None:
         columns += [f"{args.baseline}_seconds", f"{args.baseline}_cpu_seconds",
                     f"{args.baseline}_iterations",
                     f"{args.baseline}_factorisations", "speedup", "cpu_speedup"]
+    if "," in args.gaps:
+        no_gap = {(r["mesh"], r["braid"], r["eps"]): r["seconds"] for r in rows
+                  if r["gap_mm"] == 0}
+        for r in rows:
+            r["vs_no_gap"] = r["seconds"] / no_gap.get((r["mesh"], r["braid"], r["eps"]), np.nan)
+        columns.append("vs_no_gap")
     info = provenance()
     print(f"# muscle I, 11 pressures 0-2.5 bar, theta0 {theta0} deg, median of {args.repeats}; "
           f"{info['date_utc']}, {info['machine']}, {json.dumps(info['versions'])}")
@@ -197,7 +210,7 @@ def main() -> None:
 
 
 def _text(column: str, value) -> str:
-    if column == "eps":
+    if column in ("eps", "gap_mm"):
         return f"{value:g}"
     if isinstance(value, float):
         return f"{value:.2f}" if abs(value) >= 100 else f"{value:.3f}"

@@ -193,6 +193,20 @@ def threshold_at_rest_bar(D0_mm, t0_mm, params: dict, eps: float = 0.0) -> float
     return brentq(force, 0.0, 10.0, xtol=1e-6)
 
 
+@dataclass(frozen=True)
+class Physics:
+    """How a candidate's force and threshold are computed: ``force(P, eps, D0_mm, t0_mm,
+    **params)`` as :func:`candidate_force`, ``threshold(D0_mm, t0_mm, params, eps)`` as
+    :func:`threshold_at_rest_bar`. The closed forms by default; another script may fit the same
+    candidates with the FE model."""
+
+    force: object = candidate_force
+    threshold: object = threshold_at_rest_bar
+
+
+CLOSED_FORM = Physics()
+
+
 # --- data -------------------------------------------------------------------------------------
 
 #: Festo's type code is DMSP-<diameter>-<nominal length in mm>: the rest length a second reading
@@ -284,54 +298,61 @@ class Fit:
         return base + 2 * k, base + k * np.log(n)
 
 
-def _residuals(force_map: ForceMap, rows: pd.DataFrame, params: dict) -> np.ndarray:
+def _residuals(force_map: ForceMap, rows: pd.DataFrame, params: dict,
+               physics: Physics = CLOSED_FORM) -> np.ndarray:
     """Model minus table [N]; a zero entry's residual is the model's pull there (0 if slack)."""
-    model = candidate_force(rows["pressure_bar"].to_numpy(), force_map.model_eps(rows["eps"]),
-                            force_map.D0_mm, force_map.t0_mm, **params)
+    model = physics.force(rows["pressure_bar"].to_numpy(), force_map.model_eps(rows["eps"]),
+                          force_map.D0_mm, force_map.t0_mm, **params)
     return model - rows["force_N"].to_numpy()
 
 
-def fit_candidate(candidate: Candidate, force_map: ForceMap, train: pd.DataFrame) -> Fit:
-    """Least squares with bounds from every start; the best converged fit, or a failed one."""
+def fit_candidate(candidate: Candidate, force_map: ForceMap, train: pd.DataFrame,
+                  physics: Physics = CLOSED_FORM, starts=None) -> Fit:
+    """Least squares with bounds from every start (default: every pair of :data:`BASE`'s
+    starts, the extras at theirs); the best converged fit, or a failed one."""
     names = ["theta0_deg", "rubber_scale", *candidate.extras]
     lower = [BASE[n][1] for n in names[:2]] + [EXTRAS[e][1] for e in candidate.extras]
     upper = [BASE[n][2] for n in names[:2]] + [EXTRAS[e][2] for e in candidate.extras]
     scale = force_map.largest_force_N
 
     def residuals(x):
-        r = _residuals(force_map, train, dict(zip(names, x, strict=True))) / scale
+        r = _residuals(force_map, train, dict(zip(names, x, strict=True)), physics) / scale
         return np.nan_to_num(r, nan=1.0)  # no wall state (Gent limit): a whole largest force off
 
     best, messages = None, set()
-    for theta0, rubber in itertools.product(*(BASE[n][0] for n in ("theta0_deg", "rubber_scale"))):
-        x0 = [theta0, rubber] + [EXTRAS[e][0] for e in candidate.extras]
+    if starts is None:
+        starts = [[theta0, rubber] + [EXTRAS[e][0] for e in candidate.extras]
+                  for theta0, rubber in itertools.product(
+                      *(BASE[n][0] for n in ("theta0_deg", "rubber_scale")))]
+    for x0 in starts:
         result = least_squares(residuals, x0, bounds=(lower, upper), x_scale="jac",
                                xtol=1e-10, ftol=1e-12, max_nfev=2000)
         messages.add(result.message)
         finite = np.all(np.isfinite(_residuals(force_map, train,
-                                               dict(zip(names, result.x, strict=True)))))
+                                               dict(zip(names, result.x, strict=True)),
+                                               physics)))
         if result.status > 0 and finite and (best is None or result.cost < best.cost):
             best = result
     if best is None:
         return Fit(candidate, False, {}, float("nan"), len(train), "; ".join(sorted(messages)))
     params = dict(zip(names, (float(v) for v in best.x), strict=True))
-    rss = float(np.sum(_residuals(force_map, train, params) ** 2))
+    rss = float(np.sum(_residuals(force_map, train, params, physics) ** 2))
     return Fit(candidate, True, params, rss, len(train), best.message)
 
 
-def score(fit: Fit, force_map: ForceMap, train_eps) -> dict:
+def score(fit: Fit, force_map: ForceMap, train_eps, physics: Physics = CLOSED_FORM) -> dict:
     """Held-out errors as % of the muscle's largest force, and the threshold at eps 0."""
     if not fit.converged:
         return {"converged": False, "message": fit.message}
     rows = force_map.rows
     scale = force_map.largest_force_N / 100.0
-    err = _residuals(force_map, rows, fit.params) / scale
+    err = _residuals(force_map, rows, fit.params, physics) / scale
     measured = rows["zero_entry"].to_numpy() == 0
     rest = rows["eps"].to_numpy() == 0
     held_out = ~np.isin(rows["eps"].to_numpy(), train_eps)
     aic, bic = fit.criteria()
-    threshold = threshold_at_rest_bar(force_map.D0_mm, force_map.t0_mm, fit.params,
-                                      float(force_map.model_eps(0.0)))
+    threshold = physics.threshold(force_map.D0_mm, force_map.t0_mm, fit.params,
+                                  float(force_map.model_eps(0.0)))
     rest_held_out = 0.0 not in train_eps
     return {"converged": True, **fit.params,
             "rest_max_err_pct": (float(np.max(np.abs(err[measured & rest])))

@@ -281,12 +281,16 @@ BENCHMARKS = {
     "mesh_convergence.csv": "-m mkm fem convergence --out {dir}",
     "thickwall.csv": "benchmarks/bench_thickwall.py --points 200000 --repeats 5",
     "axisym.csv": "benchmarks/bench_axisym.py --levels coarse,medium,fine --repeats 3",
+    "axisym_gap.csv": "benchmarks/bench_axisym.py --levels coarse,medium,fine --eps 0,0.05,0.2 "
+                      "--gaps 0,0.5 --repeats 3",
     "design.json": "benchmarks/bench_design.py --repeats 5 --fe-repeats 2 --out {out}",
     "dataset.json": "benchmarks/bench_dataset.py --workers 1 2 --json {out}",
     "batch.json": "benchmarks/bench_batch.py --json {out}",
     "startup.json": "benchmarks/bench_startup.py --json {out}",
     "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
+    "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
+    "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 1 --seed 0 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
 }
 

@@ -55,7 +55,7 @@ from mkm.core.records import (
     source_version,
     write_atomic,
 )
-from mkm.fem.limits import LIMITS, limit_text, outside
+from mkm.fem.limits import LIMITS, check_value, limit_text, outside
 from mkm.fem.materials import MooneyRivlin, mooney_rivlin
 
 if TYPE_CHECKING:  # imported where used: every model reads a calibration, few fit one
@@ -182,10 +182,12 @@ def calibrated(key: str, calibration: Calibration | None = None) -> dict:
 class CalibratedTheta0:
     """Mixin of models whose braid angle defaults to their entry in their ``calibration`` (None:
     the shipped one), and whose rubber (if they have one) to the entry's ``C10_MPa``,
-    ``C01_MPa`` where a muscle was identified (``mkm identify``), else to Silastic S."""
+    ``C01_MPa`` where a muscle was identified (``mkm identify``), else to Silastic S, and whose
+    gap between tube and braid (if they take one) to the entry's ``gap_mm``, else 0."""
 
     theta0_deg: float | None
     calibration: Calibration | None = None
+    gap_mm: float | None = None
 
     def calibrated_entry(self) -> dict:
         """This model's entry in its calibration."""
@@ -195,6 +197,17 @@ class CalibratedTheta0:
         if self.theta0_deg is not None:
             return float(self.theta0_deg)
         return self.calibrated_entry()["theta0_deg"]
+
+    def _gap(self) -> float:
+        """The radial gap between tube and braid [mm] of a model that takes one (``gap_mm``):
+        given, else the entry's where a muscle was identified with one, else 0."""
+        if self.gap_mm is not None:
+            return self.gap_mm
+        try:
+            entry = self.calibrated_entry()
+        except ValueError:  # no entry for this model: an explicit angle needs none
+            return 0.0
+        return check_value("gap_mm", entry.get("gap_mm", 0.0), prefix="calibration ")
 
     def _rubber(self) -> MooneyRivlin:
         given = {"C10_MPa": self.C10_MPa, "C01_MPa": self.C01_MPa}

@@ -232,7 +232,8 @@ register(Entry(
     {"mesh": MESH, "theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10, "C01_MPa": C01,
      "braid": Parameter("bonded (default: fibres glued to the rubber) or sliding "
                         "(frictionless sleeve), each with its own calibrated theta0", str,
-                        BRAIDS)},
+                        BRAIDS),
+     "gap_mm": GAP},
     colour="tab:green", expensive=True,
     study=(*(StudyVariant(f"axisym-{m}", f"axisym:mesh={m}", stability=m == "medium")
              for m in MESH_LEVELS),

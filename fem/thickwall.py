@@ -275,7 +275,7 @@ def gap_closing_pressure(D0_mm, t0_mm, eps, theta0_deg, gap_mm,
 
 
 def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, C10_MPa=SILASTIC_S.C10_MPa,
-                      C01_MPa=SILASTIC_S.C01_MPa):
+                      C01_MPa=SILASTIC_S.C01_MPa, gap_mm=0.0):
     """Braid (outer) diameter [mm] of the unloaded muscle at ``pressure_bar``: its largest.
 
     An unloaded muscle contracts freely until the threshold pressure of its shortening equals the
@@ -284,7 +284,9 @@ def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, C10_MPa=SILASTIC_S
     ``[0, eps_max)``); any load holds it at a smaller shortening and diameter. The braid of
     constant thread length then has ``D_out^2 = (D0 + 2 t0)^2 (1 + eps_f (2 - eps_f) cot^2
     theta0)`` (:func:`mid_section_kinematics`). Mid-section value: the caps keep the ends
-    narrower. Rubber constants in [MPa] (default Silastic S).
+    narrower. Rubber constants in [MPa] (default Silastic S); with a radial gap ``gap_mm``
+    [mm] between tube and braid, the braid's rest diameter is ``D0 + 2 t0 + 2 gap`` (a muscle
+    below its threshold at rest length keeps it).
     """
     D0, t0, theta0, P = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in
                                               (D0_mm, t0_mm, theta0_deg, pressure_bar)))
@@ -292,10 +294,11 @@ def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, C10_MPa=SILASTIC_S
     high = np.broadcast_to(chou_hannaford_eps_max(theta0), D0.shape).copy()
     for _ in range(40):  # eps to 2^-40 of eps_max
         mid = 0.5 * (low + high)
-        threshold = klute_hannaford_threshold_pressure(D0, t0, mid, theta0, C10_MPa, C01_MPa)
+        threshold = klute_hannaford_threshold_pressure(D0, t0, mid, theta0, C10_MPa, C01_MPa,
+                                                       gap_mm)
         below = np.nan_to_num(threshold, nan=np.inf) <= P
         low, high = np.where(below, mid, low), np.where(below, high, mid)
-    outer_radius_sq_mm2 = mid_section_kinematics(D0, t0, low, theta0)[5]
+    outer_radius_sq_mm2 = mid_section_kinematics(D0, t0, low, theta0, gap_mm)[5]
     return 2.0 * np.sqrt(outer_radius_sq_mm2)
 
 
@@ -388,16 +391,6 @@ class ThickWall(CalibratedTheta0, ForceModel):
         gap = {"gap_mm": self._gap()} if self._gap() else {}
         return {"theta0_deg": self._theta0(), "L0_mm": self.L0_mm,
                 "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa, **gap}
-
-    def _gap(self) -> float:
-        """The gap [mm]: given, else the calibration entry's (an identified muscle), else 0."""
-        if self.gap_mm is not None:
-            return self.gap_mm
-        try:
-            entry = self.calibrated_entry()
-        except ValueError:  # no entry for this model: an explicit angle needs none
-            return 0.0
-        return check_value("gap_mm", entry.get("gap_mm", 0.0), prefix="calibration ")
 
     def _forces(self, P, D0, t0, eps):
         theta0 = check_theta0(self._theta0())

@@ -106,7 +106,8 @@ def cavity_volume(y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return v, grad, hess
 
 
-def braid_inextensibility(y: np.ndarray, theta0_deg: float, Ro_mm: float):
+def braid_inextensibility(y: np.ndarray, theta0_deg: float, Ro_mm: float,
+                          braid_radius_mm: float | None = None):
     r"""Stretch constraint of two inextensible helical fibre families at +-theta0.
 
     A fibre element of length ``dS`` at rest spans ``dS cos theta0`` along the axis and
@@ -116,16 +117,26 @@ def braid_inextensibility(y: np.ndarray, theta0_deg: float, Ro_mm: float):
     Inextensible fibres: ``g = l_f^2 - 1 = 0``. Both families give the same constraint in an
     axisymmetric state (no torsion).
 
+    A braid of rest radius ``R_b = braid_radius_mm`` above the tube's ``R_o`` (a radial gap)
+    lies on the tube where the tube reaches it; there its hoop stretch is the tube's radius
+    over its own, ``l_t = (1 + u_r / R_o) R_o / R_b`` (the same as above when ``R_b = R_o``,
+    bit for bit: the factor is exactly 1). Where the tube is inside it, ``g < 0``: the fibres
+    are slack, which the tension-only braid of the model (``g <= 0``, tension ``>= 0``,
+    complementary) lets them be. That complementarity is then the unilateral contact of tube
+    and braid: no penetration (the braid's radius is bounded by its threads) and a contact
+    pressure, the hoop share of the tension, only where they touch.
+
     Returns ``g``, its gradient and Hessian with respect to ``y = (u_r, du_r/dZ, du_z/dZ)``.
     """
     c2 = np.cos(np.deg2rad(theta0_deg)) ** 2
     s2 = 1.0 - c2
+    ratio = 1.0 if braid_radius_mm is None else Ro_mm / braid_radius_mm
     ur, urZ, uzZ = y[..., 0], y[..., 1], y[..., 2]
-    lt = 1.0 + ur / Ro_mm
+    lt = (1.0 + ur / Ro_mm) * ratio
     g = c2 * ((1.0 + uzZ) ** 2 + urZ**2) + s2 * lt * lt - 1.0
-    grad = np.stack([2 * s2 * lt / Ro_mm, 2 * c2 * urZ, 2 * c2 * (1.0 + uzZ)], axis=-1)
+    grad = np.stack([2 * s2 * lt * ratio / Ro_mm, 2 * c2 * urZ, 2 * c2 * (1.0 + uzZ)], axis=-1)
     hess = np.zeros(y.shape + (3,))
-    hess[..., 0, 0] = 2 * s2 / Ro_mm**2
+    hess[..., 0, 0] = 2 * s2 * ratio**2 / Ro_mm**2
     hess[..., 1, 1] = 2 * c2
     hess[..., 2, 2] = 2 * c2
     return g, grad, hess

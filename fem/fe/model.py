@@ -17,7 +17,10 @@ strain:
   pushing. The braid is tension-only, ``g <= 0, lambda >= 0, lambda g = 0`` node by node
   (:meth:`HalfMuscle.slack_nodes`: a primal-dual active set inside Newton); it matters at the
   clamped cap's corner, where the free muscle near its threshold shortens the surface along
-  the fibres;
+  the fibres. With a radial gap between tube and braid at rest (``gap_mm``) the same
+  complementarity, with the braid's own rest radius in the fibre stretch, is the unilateral
+  contact of tube and braid: the tube inflates freely until it reaches the braid, which acts
+  only where they touch;
 * the air pressure is the potential ``-P V`` of the closed cavity (inner surface and cap), a
   follower load with a symmetric tangent whose cap share lands in the cap reaction;
 * the developed force is the reaction ``dPi/dU`` on the cap. For the half model this is already
@@ -31,6 +34,9 @@ it); phase 2 holds the cap and ramps the pressure through the requested values.
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
+from functools import partial
 
 import numpy as np
 import scipy.sparse as sp
@@ -47,8 +53,9 @@ from mkm.fem.fe.forms import (
     sliding_sleeve_length,
 )
 from mkm.fem.fe.mesh import half_muscle_mesh
-from mkm.fem.fe.newton import Chord, OrderedLU, load_path, newton
+from mkm.fem.fe.newton import Chord, NewtonReport, OrderedLU, load_path, newton
 from mkm.fem.interface import ForceModel
+from mkm.fem.limits import check_value
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
 from mkm.fem.options import BRAIDS, MESH_LEVELS
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
@@ -77,13 +84,20 @@ class HalfMuscle:
     """
 
     def __init__(self, D0_mm, t0_mm, L0_mm, theta0_deg, material: MooneyRivlin, mesh: str,
-                 braid: bool = True, cap: str = "clamped", sleeve: str = "bonded"):
+                 braid: bool = True, cap: str = "clamped", sleeve: str = "bonded",
+                 gap_mm: float = 0.0):
         if cap not in ("clamped", "sliding"):
             raise ValueError(f"cap={cap!r} is invalid: expected 'clamped' or 'sliding'")
         check_sleeve(sleeve)
+        check_gap(gap_mm, sleeve)
         self.sleeve = sleeve
-        self._constraint = braid_inextensibility if sleeve == "bonded" else sliding_sleeve_length
         self.Ri, self.Ro, self.H = D0_mm / 2.0, D0_mm / 2.0 + t0_mm, L0_mm / 2.0
+        # the braid's rest radius: a gap puts it outside the tube (bonded braid only)
+        self.gap_mm = float(gap_mm)
+        self.Rb = self.Ro + self.gap_mm
+        self._constraint = (sliding_sleeve_length if sleeve == "sliding" else
+                            partial(braid_inextensibility,
+                                    braid_radius_mm=self.Rb if self.gap_mm else None))
         self.theta0_deg, self.material = theta0_deg, material
         m = half_muscle_mesh(D0_mm, t0_mm, L0_mm, mesh)
         eu = ElementVector(ElementTriP2())
@@ -293,11 +307,14 @@ class HalfMuscle:
         An inextensible fibre at ``theta0`` on a surface whose hoop stretch is ``l_t`` makes
         ``sin theta = l_t sin theta0`` (its length around the axis grows with the radius, its
         length is fixed), for a bonded braid and a sliding sleeve alike (the sleeve's radius is
-        the rubber's); the widest section has the largest. NaN without a braid.
+        the rubber's); the widest section has the largest (with a gap the braid's hoop
+        stretch is the tube's radius over the braid's rest radius, where they touch). NaN
+        without a braid.
         """
         if self.braid is None:
             return np.nan
-        l_t = 1.0 + self.braid.values(np.append(y, 0.0))[..., 0] / self.Ro
+        u_r = self.braid.values(np.append(y, 0.0))[..., 0]
+        l_t = (1.0 + u_r / self.Ro) * (self.Ro / self.Rb)
         sine = float(np.max(l_t)) * np.sin(np.deg2rad(self.theta0_deg))
         return float(np.rad2deg(np.arcsin(min(sine, 1.0))))
 
@@ -330,13 +347,16 @@ class HalfMuscle:
         ``r^2 = k + R^2 / (1 - eps)``, at the thick-wall threshold pressure. Towards the clamped
         cap the radial displacement is faded out over half a diameter (the end zone); the wall
         pressure starts at rest and the braid tension at :meth:`taut_tension` of that pressure,
-        Newton finds them with the rest.
+        Newton finds them with the rest. With a gap, the closed form's tube in contact with the
+        braid (the same kinematics with the braid's radius).
         """
         eps = -U_mm / self.H
         D0, t0 = 2.0 * self.Ri, self.Ro - self.Ri
-        _, _, lz, k, ri2, _, _, _ = mid_section_kinematics(D0, t0, eps, self.theta0_deg)
+        _, _, lz, k, ri2, _, _, _ = mid_section_kinematics(D0, t0, eps, self.theta0_deg,
+                                                           self.gap_mm)
         threshold_bar = klute_hannaford_threshold_pressure(
-            D0, t0, eps, self.theta0_deg, self.material.C10_MPa, self.material.C01_MPa)
+            D0, t0, eps, self.theta0_deg, self.material.C10_MPa, self.material.C01_MPa,
+            self.gap_mm)
         if not (ri2 > 0 and np.isfinite(threshold_bar)):
             return None
         R, Z = self._dof_RZ
@@ -373,7 +393,10 @@ class HalfMuscle:
         displacement from the thick-wall solution at a fifth of the shortening (or from rest
         where there is none), with up to :data:`FREE_PATH_CUTBACKS` halvings (the small cap
         elements of a fine mesh need short steps near the lock). Returns the state, the
-        pressure [MPa] and the report (iterations of all attempts).
+        pressure [MPa] and the report (iterations of all attempts). With a gap, ``U_mm = 0``
+        too (the threshold at rest length): there is no path to follow, and a failed solve
+        from the thick-wall start is reported as such. A path that ends off the inflated branch
+        is reported too, never returned.
         """
         def free(x, U):
             r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])
@@ -406,6 +429,11 @@ class HalfMuscle:
         spent += 0 if first is None else first.iterations
         if x0 is None:
             U_start, x0 = 0.0, np.append(self.rest_state()[:-1], 0.0)
+        if U_start == U_mm:  # eps = 0 with a gap: no path to follow, the one solve failed
+            reason = "" if report is None else report.reason
+            return None, np.nan, replace(report or NewtonReport(False), converged=False, reason=(
+                f"the tube in contact with the braid at eps=0 was not found from the thick-wall "
+                f"start ({reason or 'it landed off the inflated branch'})"))
         # full Newton on this path near the lock: chord iterations there would spend their
         # iterations where Newton finds the inversion that names the reason at once
         [(x, report)] = load_path(free, x0, U_start, [U_mm], check=check,
@@ -413,6 +441,12 @@ class HalfMuscle:
                                   label=lambda U: f"cap displacement {U:.3g} mm",
                                   **self._newton_options())
         report.iterations += spent
+        if x is not None and (x[-1] <= 0 or self.slack_everywhere(np.append(x[:-1], U_mm))):
+            # a bare tube sucked shorter, not the muscle: say so rather than return it
+            report.converged = False
+            x, report.reason = None, (f"the free path ended off the inflated branch (at "
+                                      f"{x[-1] / BAR_TO_MPA:.3g} bar, or with the braid slack "
+                                      "everywhere)")
         if x is None:
             if self.thick_wall_start(U_mm) is None:
                 # the closed form's mid-section is past the lock, and the muscle's narrow ends
@@ -509,9 +543,22 @@ def check_sleeve(braid: str) -> str:
     return braid
 
 
-def check_parameters(theta0_deg: float, L0_mm: float, mesh: str, braid: str = "bonded") -> None:
+def check_gap(gap_mm: float, braid: str = "bonded") -> float:
+    """``gap_mm`` if it is in its range (:data:`mkm.fem.limits.LIMITS`) and the braid takes it,
+    else ``ValueError``: a sliding sleeve has one uniform tension, so it cannot lie on the tube
+    in the middle and off it near the caps, as a braid with a gap does."""
+    gap_mm = check_value("gap_mm", gap_mm)
+    if gap_mm and braid != "bonded":
+        raise ValueError(f"gap_mm={gap_mm:g} is invalid with braid={braid!r}: a gap is "
+                         "modelled with the bonded braid only")
+    return gap_mm
+
+
+def check_parameters(theta0_deg: float, L0_mm: float, mesh: str, braid: str = "bonded",
+                     gap_mm: float = 0.0) -> None:
     """Raise ``ValueError`` naming a model parameter outside its physical range."""
     check_sleeve(braid)
+    check_gap(gap_mm, braid)
     check_theta0(theta0_deg)
     if not L0_mm > 0:
         raise ValueError(f"L0_mm={L0_mm:g} is invalid: expected a length > 0 mm")
@@ -522,7 +569,7 @@ def check_parameters(theta0_deg: float, L0_mm: float, mesh: str, braid: str = "b
 def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0_deg: float,
                     L0_mm: float = 282.0, mesh: str = "medium",
                     material: MooneyRivlin = SILASTIC_S,
-                    braid: str = "bonded") -> dict[str, np.ndarray]:
+                    braid: str = "bonded", gap_mm: float = 0.0) -> dict[str, np.ndarray]:
     """Isometric force of one muscle over a pressure sweep, by the axisymmetric FE model.
 
     Parameters
@@ -545,6 +592,13 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
         How the braid meets the rubber (:data:`mkm.fem.options.BRAIDS`); ``bonded`` as the
         paper's figure suggests (the paper does not say), ``sliding`` the frictionless-sleeve
         limit.
+    gap_mm : float
+        Radial gap between the tube's outer surface and the braid at rest [mm] (bonded braid
+        only). The tube inflates freely until it reaches the braid, which carries load only
+        where they touch (a unilateral contact: the tension-only braid's complementarity, see
+        :func:`mkm.fem.fe.forms.braid_inextensibility`); then even at ``eps = 0`` the force
+        starts above a threshold pressure, found as at ``eps > 0`` (the muscle held at its
+        length, the pressure unknown). 0 (default): no gap, today's model.
 
     Returns
     -------
@@ -554,18 +608,20 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
         to the step's first), ``min_tension_N_per_mm`` (braid), ``failure`` (empty when
         converged); per sweep: ``threshold_pressure_bar`` (P*, force zero up to it) and ``dofs``.
     """
-    check_parameters(theta0_deg, L0_mm, mesh, braid)
+    check_parameters(theta0_deg, L0_mm, mesh, braid, gap_mm)
     P_bar = np.atleast_1d(np.asarray(pressure_bar, dtype=float))
-    half = HalfMuscle(D0_mm, t0_mm, L0_mm, theta0_deg, material, mesh, sleeve=braid)
+    half = HalfMuscle(D0_mm, t0_mm, L0_mm, theta0_deg, material, mesh, sleeve=braid,
+                      gap_mm=gap_mm)
     levels = np.unique(P_bar)
     out = {k: np.zeros(levels.size) for k in ("force_N", "iterations", "cutbacks", "residual",
                                               "min_tension_N_per_mm")}
     out["converged"] = np.zeros(levels.size, dtype=bool)
     out["failure"] = np.full(levels.size, "", dtype=object)
 
-    # phase 1: free shortening to U* = -eps L0/2 gives the threshold pressure P*
+    # phase 1: free shortening to U* = -eps L0/2 gives the threshold pressure P* (with a gap
+    # also at eps = 0: the braid carries nothing until the tube reaches it)
     y, threshold_MPa, report = half.rest_state(), 0.0, None
-    if eps > 0:
+    if eps > 0 or half.gap_mm:
         y, threshold_MPa, report = half.free_path(-eps * half.H)
         failure = report.reason
         if threshold_MPa < 0:
@@ -631,6 +687,11 @@ class Axisym(CalibratedTheta0, ForceModel):
         inextensible at every point. ``sliding``: a frictionless sleeve, one uniform fibre
         tension, only the fibres' total length is kept; its theta0 is calibrated on its own
         (calibration key ``axisym-sliding``).
+    gap_mm : float, optional
+        Radial gap between the tube and the (bonded) braid at rest [mm]: the tube inflates
+        freely until it meets the braid, a unilateral contact (:func:`isometric_sweep`).
+        Default: the calibration entry's ``gap_mm`` where a muscle was identified with one,
+        else 0 (no gap: the model without contact, unchanged).
     calibration : Calibration, optional
         Where the default angle (and an identified rubber) comes from; default the shipped
         ``fem/calibration.json`` (:class:`mkm.fem.calibration.Calibration`).
@@ -642,7 +703,9 @@ class Axisym(CalibratedTheta0, ForceModel):
     def __init__(self, theta0_deg: float | None = None, L0_mm: float = 282.0,
                  mesh: str = "medium", C10_MPa: float | None = None,
                  C01_MPa: float | None = None, braid: str = "bonded",
-                 calibration: Calibration | None = None):
+                 gap_mm: float | None = None, calibration: Calibration | None = None):
+        if gap_mm is not None:
+            gap_mm = check_gap(gap_mm, braid)
         self.theta0_deg = theta0_deg
         self.calibration = calibration
         self.L0_mm = L0_mm
@@ -650,6 +713,7 @@ class Axisym(CalibratedTheta0, ForceModel):
         self.C10_MPa = C10_MPa
         self.C01_MPa = C01_MPa
         self.braid = braid
+        self.gap_mm = gap_mm
 
     @property
     def material(self) -> MooneyRivlin:
@@ -664,12 +728,15 @@ class Axisym(CalibratedTheta0, ForceModel):
                   "C10_MPa": self.material.C10_MPa, "C01_MPa": self.material.C01_MPa}
         if self.braid != "bonded":  # the default stays out: older records keep their keys
             params["braid"] = self.braid
+        if gap := self._gap():  # likewise: a gap-free muscle's records and cache keys unchanged
+            params["gap_mm"] = gap
         return params
 
     def _forces(self, P, D0, t0, eps):
         check_sleeve(self.braid)
         theta0 = self._theta0()
-        check_parameters(theta0, self.L0_mm, self.mesh, self.braid)
+        gap = self._gap()
+        check_parameters(theta0, self.L0_mm, self.mesh, self.braid, gap)
         geometry = np.stack([D0.ravel(), t0.ravel(), eps.ravel()], axis=1)
         groups, which = np.unique(geometry, axis=0, return_inverse=True)
         which = which.ravel()
@@ -677,7 +744,7 @@ class Axisym(CalibratedTheta0, ForceModel):
         for g, (d, t, e) in enumerate(groups):
             points = np.flatnonzero(which == g)
             sweep = isometric_sweep(P.ravel()[points], d, t, e, theta0, self.L0_mm, self.mesh,
-                                    self.material, self.braid)
+                                    self.material, self.braid, gap)
             for key, values in sweep.items():
                 if key not in out:
                     out[key] = np.empty(P.size, dtype=values.dtype)

@@ -81,6 +81,10 @@ def register(subparsers) -> None:
     p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
                    type=argtype(parse_number, "--max-outer-diameter"),
                    help="largest outer diameter at the working pressure [mm] (the housing)")
+    p.add_argument("--gap", dest="gap_mm", metavar="MM", type=argtype(parse_number, "--gap"),
+                   help="radial gap between tube and braid at rest of the muscles as built "
+                   "[mm] (default 0): the surrogate has none, so the FE model, which takes "
+                   "it, searches and verifies")
     p.add_argument("--max-pressure", dest="max_pressure_bar", metavar="BAR",
                    type=argtype(parse_number, "--max-pressure"),
                    help="largest working pressure [bar] (default: the requirements' largest)")
@@ -119,7 +123,8 @@ def _design(args) -> int:
     from mkm.progress import summary_line
 
     constraints = {k: getattr(args, k) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg",
-                                                 "max_outer_diameter_mm", "max_pressure_bar")}
+                                                 "max_outer_diameter_mm", "max_pressure_bar",
+                                                 "gap_mm")}
     if args.rubber:
         constraints["rubber"] = tuple(r.strip() for r in args.rubber.split(",") if r.strip())
     if not args.require and not args.spec:

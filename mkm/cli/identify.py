@@ -31,7 +31,7 @@ def register(subparsers) -> None:
                         "any shell) or a folder holding run folders")
     parser.add_argument("--params", default="theta0,rubber,friction,creep",
                         help="what to fit, a comma list of theta0, rubber, friction, creep, "
-                        "gap (default all but gap; gap needs --model thickwall)")
+                        "gap (default all but gap; gap needs --model thickwall or axisym)")
     parser.add_argument("--model", default="axisym",
                         help="static model spec that confirms the fit (and searches where the "
                         "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "

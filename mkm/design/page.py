@@ -230,7 +230,8 @@ def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) ->
             out["margin"].append(u)
     out["outer"] = outer_diameter_mm(D0, t0, best["theta0_deg"], s.working_pressure_bar,
                                      rubber_of(best["rubber"], s.calibration).C10_MPa,
-                                     rubber_of(best["rubber"], s.calibration).C01_MPa)
+                                     rubber_of(best["rubber"], s.calibration).C01_MPa,
+                                     s.gap_mm)
     limit = s.constraints.get("max_outer_diameter_mm")
     out["feasible"] = feasible if limit is None else feasible & (out["outer"] <= limit)
     return out

@@ -130,13 +130,17 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         raise ValueError(f"top={top!r} is invalid: expected a whole number of designs >= 1")
     if tolerances is not None:
         probability = check_probability(probability)
+        if merged.get("gap_mm"):
+            raise ValueError(f"gap_mm={merged['gap_mm']} with --tolerance: a robust design "
+                             "with a gap between tube and braid is not modelled (its Monte "
+                             "Carlo runs on the surrogate, which has no gap)")
     found = search(requirements, merged, objective, surrogate, tolerances, probability,
                    calibration)
     chosen = pick(found.feasible, top, found.constraints)
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
     designs, curves, seconds, fe_models, hits = verify(
         chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir,
-        workers, scheduler, calibration)
+        workers, scheduler, calibration, found.gap_mm)
     robust: list[str] = []
     if tolerances is not None:
         designs = check_designs(designs, found.requirements, found.models, tolerances,

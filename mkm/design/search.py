@@ -117,6 +117,8 @@ class Search:
     #: what set each searched range of :data:`BOX_KEYS`: "as constrained", "the FE search's
     #: default" or "the surrogate's"
     box_origin: dict = field(default_factory=dict)
+    #: the radial gap between tube and braid of the muscles as built [mm] (0: none)
+    gap_mm: float = 0.0
 
     @property
     def feasible(self) -> pd.DataFrame:
@@ -246,6 +248,9 @@ def search(requirements, constraints: Constraints | dict | None = None,
     theta0_default = float(calibrated("axisym", calibration)["theta0_deg"])
     parameter_box = getattr(base, "box", {})
     outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration)
+    gap = constraints.gap_mm or 0.0
+    # the surrogate has no gap: the FE model, which takes it, searches (in the surrogate's box)
+    unmodelled = [f"gap_mm={gap:g}, which the surrogate does not model"] if gap else []
     surrogate_box = {"D0_mm": list(domain.D0_mm), "t0_mm": list(domain.t0_mm)}
     default_box = FE_SEARCH_BOX if outside else surrogate_box
     box_origin = {k: "as constrained" if getattr(constraints, k) else
@@ -258,13 +263,14 @@ def search(requirements, constraints: Constraints | dict | None = None,
     P_work = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
     families = [(float(L0), float(theta0), rubber) for L0 in _axis(box["L0_mm"])
                 for theta0 in _axis(box["theta0_deg"]) for rubber in constraints.rubber]
-    if outside:
+    if outside or unmodelled:
         from mkm.design.verify import fe_model
 
-        models = {f: fe_model(FE_SEARCH_MESH, *f, calibration) for f in families}
+        models = {f: fe_model(FE_SEARCH_MESH, *f, calibration, gap) for f in families}
         steps, refine = FE_SEARCH_STEPS, False
-        fe_search = (f"outside the surrogate's training box ({'; '.join(outside)}): the FE "
-                     f"model ({FE_SEARCH_MESH} mesh) searched instead, on a "
+        why = "; ".join(([f"outside the surrogate's training box ({'; '.join(outside)})"]
+                         if outside else []) + unmodelled)
+        fe_search = (f"{why}: the FE model ({FE_SEARCH_MESH} mesh) searched instead, on a "
                      f"{steps[0]:g} x {steps[1]:g} mm grid of D0 x t0 (slower and coarser)")
     else:
         models = {f: _surrogate_for(spec, base, *f, calibration) for f in families}
@@ -272,7 +278,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
 
     start = time.perf_counter()  # the search proper: the surrogates are loaded once
     evaluate = _Evaluator(models, requirements, P_work, constraints.max_outer_diameter_mm,
-                          tolerances, probability, calibration)
+                          tolerances, probability, calibration, gap)
     D0c = _axis(box["D0_mm"], count=_coarse_count(box["D0_mm"], steps[0]))
     t0c = _axis(box["t0_mm"], count=_coarse_count(box["t0_mm"], steps[1]))
     D0, t0 = _walls(*np.meshgrid(D0c, t0c, indexing="ij"))
@@ -295,7 +301,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     cand = _rank(cand, objective)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
-                    fe_search, calibration, surrogate_box, box_origin)
+                    fe_search, calibration, surrogate_box, box_origin, gap)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
@@ -329,8 +335,10 @@ class _Evaluator:
     """Surrogate forces, margins and the housing check of candidates of one design family."""
 
     def __init__(self, models, requirements, P_work, max_outer_diameter_mm, tolerances=None,
-                 probability: float = 0.95, calibration: Calibration | None = None):
+                 probability: float = 0.95, calibration: Calibration | None = None,
+                 gap_mm: float = 0.0):
         self.models, self.requirements, self.calibration = models, requirements, calibration
+        self.gap_mm = gap_mm
         self.P_work, self.limit = P_work, max_outer_diameter_mm
         self.tolerances, self.probability = tolerances, probability
         self.uncertainty = ""
@@ -341,7 +349,8 @@ class _Evaluator:
         frame = pd.DataFrame({"D0_mm": D0, "t0_mm": t0, "L0_mm": float(L0),
                               "theta0_deg": float(theta0), "rubber": rubber})
         frame["outer_diameter_mm"] = outer_diameter_mm(D0, t0, theta0, self.P_work,
-                                                       *_constants(rubber, self.calibration))
+                                                       *_constants(rubber, self.calibration),
+                                                       self.gap_mm)
         frame["rubber_volume_cm3"] = rubber_volume_cm3(D0, t0, L0)
         eps_max = float(chou_hannaford_eps_max(theta0))
         shortfall = np.empty((len(frame), len(self.requirements)))
@@ -488,6 +497,8 @@ def _describe_constraints(constraints: Constraints, box: dict) -> dict:
     out["rubber"] = list(constraints.rubber)
     out["max_outer_diameter_mm"] = constraints.max_outer_diameter_mm
     out["max_pressure_bar"] = constraints.max_pressure_bar
+    if constraints.gap_mm:  # a gap-free design's record keeps its keys
+        out["gap_mm"] = constraints.gap_mm
     return out
 
 

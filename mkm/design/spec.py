@@ -9,6 +9,7 @@ from pathlib import Path
 
 from mkm.core.ranges import parse_fraction, parse_number
 from mkm.fem.calibration import Calibration, calibrated
+from mkm.fem.limits import check_value
 from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin
 from mkm.fem.muscle import Muscle
 
@@ -124,6 +125,10 @@ class Constraints:
         Largest braid diameter of the muscle at the working pressure [mm] (its housing).
     max_pressure_bar : float, optional
         Largest working pressure [bar]; also the pressure the housing check uses.
+    gap_mm : float, optional
+        Radial gap between the tube and the braid at rest [mm] of the muscles as built (a
+        fixed value, not searched). The surrogate has no gap: with one, the FE model (which
+        takes it) searches and verifies.
     """
 
     D0_mm: tuple[float, float] | None = None
@@ -133,6 +138,7 @@ class Constraints:
     rubber: tuple[str, ...] = (DEFAULT_RUBBER,)
     max_outer_diameter_mm: float | None = None
     max_pressure_bar: float | None = None
+    gap_mm: float | None = None
 
     def __post_init__(self):
         for key in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg"):
@@ -152,6 +158,8 @@ class Constraints:
                 if not value > 0:
                     raise ValueError(f"{key}={value:g} is invalid: expected a value > 0")
                 object.__setattr__(self, key, value)
+        if self.gap_mm is not None:
+            object.__setattr__(self, "gap_mm", check_value("gap_mm", self.gap_mm))
 
 
 SPEC_KEYS = {"objective", "top", "requirement", "constraints"}

@@ -20,19 +20,20 @@ CURVE_STEP_BAR = 0.25  # FE force-pressure curves of the verified designs
 
 
 def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str,
-             calibration: Calibration | None = None) -> ForceModel:
+             calibration: Calibration | None = None, gap_mm: float = 0.0) -> ForceModel:
     """The axisymmetric FE model (registry ``axisym``) of one design family (``calibration``:
-    where the ``calibrated`` rubber comes from)."""
+    where the ``calibrated`` rubber comes from; ``gap_mm``: the radial gap between tube and
+    braid [mm], 0 for none)."""
     material = rubber_of(rubber, calibration)
     return parse_spec(f"axisym:mesh={mesh}").build(
         L0_mm=float(L0_mm), theta0_deg=float(theta0_deg), C10_MPa=material.C10_MPa,
-        C01_MPa=material.C01_MPa)
+        C01_MPa=material.C01_MPa, gap_mm=float(gap_mm))
 
 
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
            curve_to_bar: float | None = None, progress: bool = False, cache_dir=None,
            workers: int | None = None, scheduler: str | None = None,
-           calibration: Calibration | None = None):
+           calibration: Calibration | None = None, gap_mm: float = 0.0):
     """FE forces of ``designs`` at every requirement, and their force-pressure curves.
 
     One FE sweep per design and distinct eps, through the requirements' pressures and
@@ -59,7 +60,7 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
     for _, row in designs.iterrows():
         key = (row["L0_mm"], row["theta0_deg"], row["rubber"])
         if key not in models:
-            models[key] = fe_model(mesh, *key, calibration)
+            models[key] = fe_model(mesh, *key, calibration, gap_mm)
         requests += [(models[key], pressures[eps], row["D0_mm"], row["t0_mm"], eps)
                      for eps in eps_levels]
     solved = iter(predict_many(requests, cache_dir, workers=workers, scheduler=scheduler,

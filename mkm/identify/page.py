@@ -106,7 +106,7 @@ def threshold_row(run, static, values: dict) -> dict:
     """The identified threshold pressure [bar] at the run's eps against the measured one.
 
     Fitted: the ``threshold_pressure_bar`` of the identified static model where it reports one
-    (the thick-wall form), else the thick-wall form's
+    (the thick-wall form, the FE, both with the gap), else the thick-wall form's
     (:func:`mkm.fem.thickwall.klute_hannaford_threshold_pressure`) at the identified angle,
     rubber and gap. Measured: the zero of the least-squares line through the settled steps,
     rising and falling (friction and creep scale the force, so they leave the zero where it is),

@@ -22,6 +22,7 @@ import numpy as np
 
 from mkm.fem.batch import Runner
 from mkm.fem.calibration import Calibration
+from mkm.fem.ladder import MODELS, STATIC_FAMILIES
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting
 from mkm.identify.fitting import GROUPS, Corrected, ModelStatic, SurrogateStatic
@@ -48,7 +49,7 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         Run folders of one muscle.
     params : str, optional
         Comma list of ``theta0``, ``rubber``, ``friction``, ``creep``, ``gap`` (default all but
-        ``gap``; the gap needs a ``model`` that takes ``gap_mm``: ``thickwall``).
+        ``gap``; the gap needs a ``model`` that takes ``gap_mm``: ``thickwall``, ``axisym``).
     model : str
         The static model's spec for the confirmation (and a search outside the surrogate's box):
         a registry spec taking theta0 and the rubber (``axisym``, ``axisym:mesh=coarse``,
@@ -79,8 +80,11 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
     with Runner(workers, scheduler) as runner:
         fe = ModelStatic(model, float(runs[0].muscle["L0_mm"]), runner, cache_dir)
         if "gap" in groups and "gap_mm" not in fe.spec.entry.parameters:
+            gapped = [e.name for e in MODELS.entries() if "gap_mm" in e.parameters
+                      and e.family in STATIC_FAMILIES]
             raise ValueError(f"--params gap needs a model with a gap between tube and braid: "
-                             f"--model {model!r} has none (expected thickwall)")
+                             f"--model {model!r} has none (expected one of "
+                             f"{', '.join(gapped)})")
         result = _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                            calibration)
         result.fe_workers = runner.describe()

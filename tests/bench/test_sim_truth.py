@@ -90,6 +90,8 @@ def test_a_gap_truth_is_the_thick_wall_muscle_with_that_gap(config):
     np.testing.assert_allclose(force, expected.force_N, rtol=1e-12, atol=1e-12)
     _, gap_free = static_force_table(quiet(config, model="thickwall"))
     assert np.argmax(force > 0) > np.argmax(gap_free > 0)  # the force starts later
+    # the FE takes a gap too (a unilateral contact); a rung without one refuses it
+    assert config.replace(sim={"truth": {"gap_mm": 0.8}}).sim.truth.gap_mm == 0.8
     with pytest.raises(ValueError, match=r"sim.truth.gap_mm is not a parameter of "
-                                         r"sim.model='axisym'"):
-        config.replace(sim={"truth": {"gap_mm": 0.8}})
+                                         r"sim.model='eq2'"):
+        config.replace(sim={"model": "eq2", "truth": {"gap_mm": 0.8}})

@@ -18,6 +18,7 @@ from mkm.fem.thickwall import (
     klute_hannaford_threshold_pressure,
     mid_section_kinematics,
     mooney_rivlin_tube_inflation_pressure,
+    outer_diameter_mm,
 )
 
 GAP_FREE = Path(__file__).parent / "data" / "thickwall_gap_free.csv"
@@ -145,3 +146,14 @@ def test_registry_passes_the_gap_and_refuses_a_bad_one():
     with pytest.raises(ValueError, match=r"^gap_mm=-1 is invalid: expected a radial gap between "
                                          r"tube and braid in \[0, 100\] mm"):
         make_model("thickwall", gap_mm=-1)
+
+
+def test_outer_diameter_with_a_gap_is_the_wider_braids():
+    # below the threshold at rest length the muscle does not shorten: the braid keeps its rest
+    # diameter D0 + 2 t0 + 2 g (the tube inside it); above, it shortens and the braid of
+    # constant thread length widens from there
+    D0, t0, theta0, gap = 20.0, 1.8, 28.0, 0.5
+    threshold = float(klute_hannaford_threshold_pressure(D0, t0, 0.0, theta0, gap_mm=gap))
+    assert outer_diameter_mm(D0, t0, theta0, 0.5 * threshold, gap_mm=gap) == pytest.approx(
+        D0 + 2 * t0 + 2 * gap, rel=1e-9)
+    assert outer_diameter_mm(D0, t0, theta0, 2.0, gap_mm=gap) > D0 + 2 * t0 + 2 * gap + 1.0

@@ -325,3 +325,25 @@ def test_the_calibrated_rubber_is_the_identified_one(tmp_path):
     lab.write_text(_json.dumps({"axisym": entry}))
     rubber = rubber_of("calibrated", Calibration.load(lab))
     assert (rubber.C10_MPa, rubber.C01_MPa) == (0.1, 0.09)
+
+
+def test_a_gap_makes_the_fe_search_and_verify_with_it():
+    # the surrogate has no gap: with one the FE model (which takes it) searches the
+    # surrogate's box and verifies, and says why; the verified force is the FE's with the gap
+    result = run_design(["300N@2.5bar,eps=0.1"], {"D0_mm": "30:32", "t0_mm": "2:2.5",
+                                                  "gap_mm": 0.5}, top=1, mesh=MESH)
+    assert "gap_mm=0.5, which the surrogate does not model: the FE model (coarse mesh) " \
+           "searched instead" in result.search.fe_search
+    best = result.chosen
+    assert best["meets_all"]
+    gapped = Axisym(theta0_deg=best["theta0_deg"], mesh=MESH, gap_mm=0.5)
+    assert float(gapped.predict(2.5, best["D0_mm"], best["t0_mm"], 0.1).force_N) == \
+        pytest.approx(best["r1_fe_N"], rel=1e-6)
+    assert float(fe_force(best["D0_mm"], best["t0_mm"], 2.5, 0.1, best["theta0_deg"])) != \
+        pytest.approx(best["r1_fe_N"], rel=1e-3)  # not the gap-free muscle's
+    assert design_record(result)["constraints"]["gap_mm"] == 0.5
+    with pytest.raises(ValueError, match="gap_mm=0.5 with --tolerance"):
+        from mkm.fem.tolerances import Tolerances
+
+        run_design(["300N@2.5bar,eps=0.1"], {"gap_mm": 0.5}, top=1, mesh=MESH,
+                   tolerances=Tolerances.parse("D0=0.3"))

@@ -102,7 +102,18 @@ def test_a_simulated_gap_is_found_blind_from_two_eps(gapped, tmp_path):
 
 
 def test_a_gap_asked_of_a_model_without_one_is_refused(gapped):
+    # every physics rung with a rubber takes the gap now: a plug-in rung without one (the
+    # thick-wall form registered without its gap parameter) is what identify must refuse
+    from mkm.fem.ladder import C01, C10, L0, THETA0, Entry, register, unregister
+
     _, runs = gapped
-    with pytest.raises(ValueError, match=r"--params gap needs a model with a gap between tube "
-                                         r"and braid: --model 'axisym:mesh=coarse' has none"):
-        identify(runs, params="theta0,gap", model="axisym:mesh=coarse", search="model")
+    register(Entry("nogap", "mkm.fem.thickwall:ThickWall", "no gap", "a rung without a gap",
+                   "closed form", {"theta0_deg": THETA0, "L0_mm": L0, "C10_MPa": C10,
+                                   "C01_MPa": C01}))
+    try:
+        with pytest.raises(ValueError, match=r"--params gap needs a model with a gap between "
+                                             r"tube and braid: --model 'nogap' has none "
+                                             r"\(expected one of thickwall, axisym\)"):
+            identify(runs, params="theta0,gap", model="nogap", search="model")
+    finally:
+        unregister("nogap")
