@@ -23,7 +23,11 @@ Safety, in every exit path:
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``; if not,
-  the run is ``failed``, asks for a VENT BY HAND and its bench marker stays.
+  the run is ``failed``, asks for a VENT BY HAND and its bench marker stays;
+- a closed Windows console leaves seconds before the process is ended: the run vents, writes
+  run.json with why it stopped and syncs its rows before the vent check, which stops at the
+  grace deadline (:meth:`mkm.bench.signals.StopSignals.grace_deadline`) so the final record
+  is written before Windows ends the process.
 
 The exit status of ``mkm acquire`` is :attr:`RunResult.exit_code`: 0 complete, 3 complete with
 lost samples, 128 + N after signal N, 2 when the run's storage failed (disk full), 4 when the
@@ -325,6 +329,24 @@ class BenchRun:
                 return f"{done}, but recording that vent failed ({type(exc).__name__}: {exc})"
         return done
 
+    def _keep_books(self, status: RunStatus, reason: str, problems: list[str], signal_name,
+                    signal_number) -> None:
+        """A closed Windows console: the process is ended within seconds, so once the vent is
+        commanded, run.json says why the run stopped and that the vent is not yet verified
+        (``manual_vent_required`` until the check says otherwise), and the rows are synced,
+        before the vent check takes what time is left."""
+        if self.recorder is None:
+            return
+        meta = self.recorder.meta
+        meta.stop_signal, meta.stop_signal_number = signal_name, signal_number
+        meta.manual_vent_required = True
+        pending = ("the vent was commanded; its check had not ended when Windows was about to "
+                   "end the process: VENT BY HAND or verify it with `mkm vent`")
+        try:
+            self.recorder.mark(status, "; ".join(filter(None, [reason, *problems, pending])))
+        except OSError:
+            pass  # the disk: the final record meets it again and says so
+
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
                  signal_number=None) -> tuple[RunStatus, str]:
         """Vent, verify the vent, close the device, record the outcome. Never raises; returns
@@ -345,9 +367,12 @@ class BenchRun:
                 problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
         if acq is not None and acq.marker_problem:
             problems.append(acq.marker_problem)
+        if self.signals.grace_deadline() is not None:
+            self._keep_books(status, reason, problems, signal_name, signal_number)
         try:
             self.vent_check = verify_vent(self.backend, self.config, self.operator,
-                                          started=self._started)
+                                          started=self._started,
+                                          deadline=self.signals.grace_deadline)
         except BaseException as exc:
             self.vent_check = VentCheck(False, float("nan"), self.config.safety.vent_below_bar,
                                         0.0, "monitor", f"{type(exc).__name__}: {exc}")
