@@ -8,7 +8,8 @@ with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the
 A second task writes the regulator command on AO0, on demand, started at open so the channel is
 reserved until close. ``close`` writes the vent command before clearing the tasks: the
 USB-6001's AO keeps its last value when a task is closed, and through a lost USB transfer:
-:meth:`NIBackend.revive` resets a lost device and vents it on fresh tasks. A device NI MAX
+:meth:`NIBackend.revive` resets a lost device and vents it on fresh tasks, and ``open`` resets
+a device that answers as lost before giving up. A device NI MAX
 simulates is refused: it would drive nothing while the run says it drove the bench.
 
 The NI-DAQmx status codes (turned into :mod:`mkm.bench.backend` errors) live here; a missing driver
@@ -129,6 +130,31 @@ class NIBackend:
         return self.config.ai_channels
 
     def open(self) -> DeviceInfo:
+        """Open the device and vent it. A device that answers as lost (-50405, -200324,
+        -201003: a run lost it, or a USB glitch) is reset and opened again, every
+        :data:`REVIVE_EVERY_S` for at most :data:`REVIVE_WITHIN_S`: `mkm vent` after a loss must
+        still reach the regulator it left pressurised."""
+        deadline = time.monotonic() + REVIVE_WITHIN_S
+        while True:
+            try:
+                return self._open()
+            except DaqDisconnected:
+                if time.monotonic() + REVIVE_EVERY_S > deadline:
+                    raise
+            time.sleep(REVIVE_EVERY_S)
+            with suppress(BenchError):  # a device still absent: the next open says so
+                self._reset_device()
+
+    def _reset_device(self) -> str:
+        """DAQmx Reset Device (aborts every task on it); the serial number it answers with."""
+        import nidaqmx.system
+
+        with daq_errors():
+            device = nidaqmx.system.Device(self.device)
+            device.reset_device()
+            return f"{int(device.serial_num):X}"
+
+    def _open(self) -> DeviceInfo:
         import nidaqmx.system
 
         daq = self.config.daq
@@ -245,16 +271,11 @@ class NIBackend:
         opened: another device under the same name is not the bench. Raises the last
         :class:`BenchError` when the device stays lost; the vent is then still to be verified.
         """
-        import nidaqmx.system
-
         deadline = time.monotonic() + within_s
         while True:
             self._drop_tasks()
             try:
-                with daq_errors():
-                    device = nidaqmx.system.Device(self.device)
-                    device.reset_device()
-                    serial = f"{int(device.serial_num):X}"
+                serial = self._reset_device()
                 if self._serial_opened is not None and serial != self._serial_opened:
                     raise BenchError(f"device {self.device} came back as serial {serial}, not "
                                      f"the bench's {self._serial_opened}")

@@ -18,7 +18,7 @@ import math
 import time
 from dataclasses import asdict, dataclass
 
-from mkm.bench.backend import BenchError, BufferOverflow
+from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected
 
 
 @dataclass
@@ -31,6 +31,7 @@ class VentCheck:
     waited_s: float
     how: str  # "monitor" | "operator"
     problem: str = ""
+    device_lost: bool = False  # the monitor's reads failed with the device gone
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -85,7 +86,8 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     except BufferOverflow:
         backend.recover()
     except BenchError as exc:
-        return VentCheck(False, pressure, below, 0.0, "monitor", f"{type(exc).__name__}: {exc}")
+        return VentCheck(False, pressure, below, 0.0, "monitor", f"{type(exc).__name__}: {exc}",
+                         isinstance(exc, DaqDisconnected))
     while True:
         cut, now, read_s = deadline(), time.monotonic(), config.daq.read_timeout_s
         if cut is not None:
@@ -102,7 +104,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
             continue
         except BenchError as exc:
             return VentCheck(False, pressure, below, time.monotonic() - start, "monitor",
-                             f"{type(exc).__name__}: {exc}")
+                             f"{type(exc).__name__}: {exc}", isinstance(exc, DaqDisconnected))
         monitor_V = float(volts[-1, 1])
         pressure = float(config.regulator.monitor_bar(monitor_V))
         sample_time_s += n / rate

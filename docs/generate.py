@@ -288,6 +288,7 @@ BENCHMARKS = {
     "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
+    "console_close.json": "benchmarks/bench_console_close.py --json {out}",
 }
 
 
