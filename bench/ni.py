@@ -104,6 +104,7 @@ class NIBackend:
         self._base = 0  # hardware index of the current task start's first sample
         self._started_at: float | None = None
         self._serial_opened: str | None = None
+        self._lost_deadline: float | None = None
 
     @property
     def bench_key(self) -> str:
@@ -122,28 +123,39 @@ class NIBackend:
             import nidaqmx.system
         except ImportError:
             raise DriverMissing(DRIVER_MISSING) from None
-        with daq_errors():
-            return f"{int(nidaqmx.system.Device(self.device).serial_num):X}"
+
+        def read() -> str:
+            with daq_errors():
+                return f"{int(nidaqmx.system.Device(self.device).serial_num):X}"
+
+        return self._reset_while_lost(read)
+
+    def _reset_while_lost(self, attempt):
+        """``attempt()``, and while the device answers as lost (-50405, -200324, -201003: a run
+        lost it, or a USB glitch) DAQmx Reset Device and again, every :data:`REVIVE_EVERY_S`
+        until :data:`REVIVE_WITHIN_S` after the first such call of this backend (the bench key
+        and the open share the bound): `mkm vent` after a loss must still reach the regulator
+        the run left pressurised, and the run's lock and marker."""
+        if self._lost_deadline is None:
+            self._lost_deadline = time.monotonic() + REVIVE_WITHIN_S
+        while True:
+            try:
+                return attempt()
+            except DaqDisconnected:
+                if time.monotonic() + REVIVE_EVERY_S > self._lost_deadline:
+                    raise
+            time.sleep(REVIVE_EVERY_S)
+            with suppress(BenchError):  # a device still absent: the next attempt says so
+                self._reset_device()
 
     @property
     def ai_channels(self) -> list[str]:
         return self.config.ai_channels
 
     def open(self) -> DeviceInfo:
-        """Open the device and vent it. A device that answers as lost (-50405, -200324,
-        -201003: a run lost it, or a USB glitch) is reset and opened again, every
-        :data:`REVIVE_EVERY_S` for at most :data:`REVIVE_WITHIN_S`: `mkm vent` after a loss must
-        still reach the regulator it left pressurised."""
-        deadline = time.monotonic() + REVIVE_WITHIN_S
-        while True:
-            try:
-                return self._open()
-            except DaqDisconnected:
-                if time.monotonic() + REVIVE_EVERY_S > deadline:
-                    raise
-            time.sleep(REVIVE_EVERY_S)
-            with suppress(BenchError):  # a device still absent: the next open says so
-                self._reset_device()
+        """Open the device and vent it; a device that answers as lost is reset and opened
+        again within the bound (:meth:`_reset_while_lost`)."""
+        return self._reset_while_lost(self._open)
 
     def _reset_device(self) -> str:
         """DAQmx Reset Device (aborts every task on it); the serial number it answers with."""

@@ -438,3 +438,36 @@ def test_a_device_absent_at_open_fails_within_the_bound(config, fake_driver, ins
     with pytest.raises(DaqDisconnected, match="-50405"):
         vent(config, backend="ni")
     assert 0 < instant_clock["t"] <= REVIVE_WITHIN_S
+
+
+def test_mkm_vent_finds_the_lock_and_marker_of_the_run_that_lost_the_device(
+        config, fake_driver, tmp_path, instant_clock, capsys):
+    # the run's lock and marker are keyed by the serial number, which a lost device cannot
+    # answer: without the reset, `mkm vent` would key the bench by its name and miss the run
+    from nidaqmx.errors import DaqError
+
+    from mkm.bench.procedures import vent
+    from mkm.bench.storage import ProcessIdentity
+    from mkm.bench.unvented import Marker, _folder
+    from mkm.core.records import write_json_atomic
+
+    dead = ProcessIdentity(2**22 + 9, "bench-pc", 1.0, None)  # pid above pid_max
+    marker = Marker("ni-serial-1F2E3D4", str(tmp_path / "lost-run"), "2026-12-02T10:00:00+00:00",
+                    vars(dead), 2.5, "2026-12-02T10:05:00+00:00")
+    folder = _folder("ni-serial-1F2E3D4")
+    folder.mkdir(parents=True)
+    write_json_atomic(folder / "dead.json", vars(marker))
+    _lost_until_reset(fake_driver)
+
+    def serial(*args):
+        if fake_driver.disconnected:
+            raise DaqError("USB transfer aborted", -50405)
+        return 0x1F2E3D4
+
+    fake_driver.interpreter.get_device_attribute_uint32.side_effect = serial
+    notes = []
+    out = vent(config, backend="ni", notify=notes.append)
+    assert out["vented"]
+    assert any(str(tmp_path / "lost-run") in note and "vented now" in note for note in notes)
+    assert not (folder / "dead.json").exists()
+    assert instant_clock["t"] <= REVIVE_WITHIN_S  # the key and the open share one bound
