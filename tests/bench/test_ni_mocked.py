@@ -471,3 +471,52 @@ def test_mkm_vent_finds_the_lock_and_marker_of_the_run_that_lost_the_device(
     assert any(str(tmp_path / "lost-run") in note and "vented now" in note for note in notes)
     assert not (folder / "dead.json").exists()
     assert instant_clock["t"] <= REVIVE_WITHIN_S  # the key and the open share one bound
+
+
+def _reset_benchmark():
+    """benchmarks/bench_ni_reset.py, the hardware measurement of the revive, as a module."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).parents[2] / "benchmarks" / "bench_ni_reset.py"
+    spec = importlib.util.spec_from_file_location("bench_ni_reset", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("simulated, product, names, expected", [
+    (True, "USB-6001", "Dev1", "is simulated in NI MAX"),
+    (False, "USB-6009", "Dev1", "is a USB-6009, not a USB-6001"),
+    (False, "USB-6001", "Dev2", "is not connected (NI-DAQmx lists Dev2)"),
+])
+def test_the_reset_measurement_refuses_without_a_real_usb_6001(fake_driver, capsys, simulated,
+                                                               product, names, expected):
+    fake_driver.interpreter.get_system_info_attribute_string.return_value = names
+    fake_driver.interpreter.get_device_attribute_bool.return_value = simulated
+    fake_driver.interpreter.get_device_attribute_string.return_value = product
+    assert _reset_benchmark().main(["--device", "Dev1"]) == 2
+    err = capsys.readouterr().err
+    assert expected in err and "BLOCKED" in err and err.count("\n") == 1
+    assert not calls(fake_driver, "create_task") and not calls(fake_driver, "reset_device")
+
+
+def test_the_reset_measurement_refuses_without_the_driver(fake_driver, capsys):
+    fake_driver.interpreter.get_system_info_attribute_string.side_effect = DaqNotFoundError("x")
+    assert _reset_benchmark().main(["--device", "Dev1"]) == 2
+    assert "NI-DAQmx driver is not installed here" in capsys.readouterr().err
+
+
+def test_the_reset_measurement_times_revives_and_writes_0_V_only(fake_driver, tmp_path, capsys):
+    import json
+
+    fake_driver.interpreter.get_system_info_attribute_string.return_value = "Dev1"
+    out = tmp_path / "reset.json"
+    assert _reset_benchmark().main(["--device", "Dev1", "--repeats", "3", "--json",
+                                    str(out)]) == 0
+    record = json.loads(out.read_text())
+    assert len(record["live"]["revive_s"]) == len(record["live"]["reset_s"]) == 3
+    assert record["device"]["serial_number"] == "1F2E3D4" and record["versions"]["python"]
+    assert fake_driver.interpreter.reset_device.call_count == 3 + 3 + 1
+    assert {c.args[3] for c in calls(fake_driver, "write_analog_scalar_f64")} == {0.0}
+    assert "| revive (reset, fresh tasks, 0 V) | 3 |" in capsys.readouterr().out
