@@ -133,17 +133,20 @@ class NIBackend:
     def _reset_while_lost(self, attempt):
         """``attempt()``, and while the device answers as lost (-50405, -200324, -201003: a run
         lost it, or a USB glitch) DAQmx Reset Device and again, every :data:`REVIVE_EVERY_S`
-        until :data:`REVIVE_WITHIN_S` after the first such call of this backend (the bench key
-        and the open share the bound): `mkm vent` after a loss must still reach the regulator
-        the run left pressurised, and the run's lock and marker."""
-        if self._lost_deadline is None:
-            self._lost_deadline = time.monotonic() + REVIVE_WITHIN_S
+        until :data:`REVIVE_WITHIN_S` after the first loss met (a device that stays lost for the
+        bench key is not waited for again by the open): `mkm vent` after a loss must still
+        reach the regulator the run left pressurised, and the run's lock and marker."""
         while True:
             try:
-                return attempt()
+                result = attempt()
             except DaqDisconnected:
+                if self._lost_deadline is None:
+                    self._lost_deadline = time.monotonic() + REVIVE_WITHIN_S
                 if time.monotonic() + REVIVE_EVERY_S > self._lost_deadline:
                     raise
+            else:
+                self._lost_deadline = None  # answered: a later loss gets the whole bound
+                return result
             time.sleep(REVIVE_EVERY_S)
             with suppress(BenchError):  # a device still absent: the next attempt says so
                 self._reset_device()
