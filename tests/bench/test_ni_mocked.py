@@ -520,3 +520,15 @@ def test_the_reset_measurement_times_revives_and_writes_0_V_only(fake_driver, tm
     assert fake_driver.interpreter.reset_device.call_count == 3 + 3 + 1
     assert {c.args[3] for c in calls(fake_driver, "write_analog_scalar_f64")} == {0.0}
     assert "| revive (reset, fresh tasks, 0 V) | 3 |" in capsys.readouterr().out
+
+
+def test_a_loss_after_the_key_was_read_still_gets_the_whole_reset_bound(
+        config, fake_driver, instant_clock):
+    # `mkm vent` reads the key, then may wait up to 30 s for a live run to stop before it opens
+    backend = NIBackend(config)
+    assert backend.bench_key == "ni-serial-1F2E3D4"
+    instant_clock["t"] += 30.0
+    _lost_until_reset(fake_driver)
+    assert backend.open().serial_number == "1F2E3D4"
+    fake_driver.interpreter.reset_device.assert_called_once_with("Dev1")
+    backend.close()
