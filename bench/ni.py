@@ -8,7 +8,8 @@ with a buffer of ``daq.buffer_s`` (>= 10 min) and is read in small blocks by the
 A second task writes the regulator command on AO0, on demand, started at open so the channel is
 reserved until close. ``close`` writes the vent command before clearing the tasks: the
 USB-6001's AO keeps its last value when a task is closed, and through a lost USB transfer:
-:meth:`NIBackend.revive` resets a lost device and vents it on fresh tasks. A device NI MAX
+:meth:`NIBackend.revive` resets a lost device and vents it on fresh tasks, and ``open`` resets
+a device that answers as lost before giving up. A device NI MAX
 simulates is refused: it would drive nothing while the run says it drove the bench.
 
 The NI-DAQmx status codes (turned into :mod:`mkm.bench.backend` errors) live here; a missing driver
@@ -103,6 +104,7 @@ class NIBackend:
         self._base = 0  # hardware index of the current task start's first sample
         self._started_at: float | None = None
         self._serial_opened: str | None = None
+        self._lost_deadline: float | None = None
 
     @property
     def bench_key(self) -> str:
@@ -121,14 +123,53 @@ class NIBackend:
             import nidaqmx.system
         except ImportError:
             raise DriverMissing(DRIVER_MISSING) from None
-        with daq_errors():
-            return f"{int(nidaqmx.system.Device(self.device).serial_num):X}"
+
+        def read() -> str:
+            with daq_errors():
+                return f"{int(nidaqmx.system.Device(self.device).serial_num):X}"
+
+        return self._reset_while_lost(read)
+
+    def _reset_while_lost(self, attempt):
+        """``attempt()``, and while the device answers as lost (-50405, -200324, -201003: a run
+        lost it, or a USB glitch) DAQmx Reset Device and again, every :data:`REVIVE_EVERY_S`
+        until :data:`REVIVE_WITHIN_S` after the first loss met (a device that stays lost for the
+        bench key is not waited for again by the open): `mkm vent` after a loss must still
+        reach the regulator the run left pressurised, and the run's lock and marker."""
+        while True:
+            try:
+                result = attempt()
+            except DaqDisconnected:
+                if self._lost_deadline is None:
+                    self._lost_deadline = time.monotonic() + REVIVE_WITHIN_S
+                if time.monotonic() + REVIVE_EVERY_S > self._lost_deadline:
+                    raise
+            else:
+                self._lost_deadline = None  # answered: a later loss gets the whole bound
+                return result
+            time.sleep(REVIVE_EVERY_S)
+            with suppress(BenchError):  # a device still absent: the next attempt says so
+                self._reset_device()
 
     @property
     def ai_channels(self) -> list[str]:
         return self.config.ai_channels
 
     def open(self) -> DeviceInfo:
+        """Open the device and vent it; a device that answers as lost is reset and opened
+        again within the bound (:meth:`_reset_while_lost`)."""
+        return self._reset_while_lost(self._open)
+
+    def _reset_device(self) -> str:
+        """DAQmx Reset Device (aborts every task on it); the serial number it answers with."""
+        import nidaqmx.system
+
+        with daq_errors():
+            device = nidaqmx.system.Device(self.device)
+            device.reset_device()
+            return f"{int(device.serial_num):X}"
+
+    def _open(self) -> DeviceInfo:
         import nidaqmx.system
 
         daq = self.config.daq
@@ -245,16 +286,11 @@ class NIBackend:
         opened: another device under the same name is not the bench. Raises the last
         :class:`BenchError` when the device stays lost; the vent is then still to be verified.
         """
-        import nidaqmx.system
-
         deadline = time.monotonic() + within_s
         while True:
             self._drop_tasks()
             try:
-                with daq_errors():
-                    device = nidaqmx.system.Device(self.device)
-                    device.reset_device()
-                    serial = f"{int(device.serial_num):X}"
+                serial = self._reset_device()
                 if self._serial_opened is not None and serial != self._serial_opened:
                     raise BenchError(f"device {self.device} came back as serial {serial}, not "
                                      f"the bench's {self._serial_opened}")

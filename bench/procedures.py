@@ -15,7 +15,7 @@ from contextlib import contextmanager
 import numpy as np
 from scipy import stats
 
-from mkm.bench.backend import Backend, BenchError, DeviceInfo
+from mkm.bench.backend import Backend, BenchError, DaqDisconnected, DeviceInfo
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
@@ -33,8 +33,8 @@ STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
 @contextmanager
 def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[DeviceInfo]:
     """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
-    command), vent and report a bench a dead run left pressurised, and close (vent again) on
-    exit."""
+    command; a lost NI device is reset and opened again first), vent and report a bench a dead
+    run left pressurised, and close (vent again) on exit."""
     with BenchOwner(getattr(backend, "bench_key", "unknown"), command):
         info = backend.open()
         try:
@@ -85,7 +85,9 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     ``bookkeeping`` instead of stopping the vent. Returns ``pressure_bar`` (the last reading;
     NaN with a manual regulator, to be vented by hand), ``vented``, ``waited_s``, ``manual``,
     ``stopped`` (the holder asked to stop, or None) and ``bookkeeping`` (problems met, after
-    the vent). Raises :class:`BenchError` when the device cannot be opened or the pressure stays
+    the vent). A device lost (at open, on the vent write or on the check's reads) is reset and
+    vented on fresh tasks first (NI: ``open`` and ``revive``, within a few seconds). Raises
+    :class:`BenchError` when the device cannot be opened or stays lost, when the pressure stays
     above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live holder does not let
     go.
     """
@@ -108,11 +110,8 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     except StateFolderBroken as exc:  # vent without the lock: venting twice is harmless
         bookkeeping.append(str(exc))
     try:
-        device.open()  # writes the vent command
-        device.write_command(0.0)
-        if config.regulator.electronic:
-            device.start()
-            check = verify_vent(device, config)
+        device.open()  # writes the vent command (a lost device is reset first)
+        check = _vent_and_verify(device, config)
         bookkeeping.extend(_mend_dead_runs(device, notify))
     finally:
         try:
@@ -127,6 +126,30 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
                          + "".join(f"; {p}" for p in bookkeeping))
     return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
             "manual": False, "stopped": stopped, "bookkeeping": bookkeeping}
+
+
+def _vent_and_verify(device: Backend, config: BenchConfig):
+    """Write 0 bar and, with an electronic regulator, verify it; a device lost on the write or
+    on the check's reads is reset and vented on fresh tasks once (``revive``, NI only), and
+    the vent checked again. The check (None with a manual regulator)."""
+    revive = getattr(device, "revive", None)
+    try:
+        device.write_command(0.0)
+        started = False
+    except DaqDisconnected:
+        if revive is None:
+            raise
+        revive()  # raises when the device stays lost: VENT BY HAND
+        revive, started = None, True
+    if not config.regulator.electronic:
+        return None
+    if not started:
+        device.start()
+    check = verify_vent(device, config)
+    if check.device_lost and revive is not None:
+        revive()
+        check = verify_vent(device, config)
+    return check
 
 
 def _mend_dead_runs(device: Backend, notify) -> list[str]:

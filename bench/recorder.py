@@ -78,6 +78,14 @@ class Recorder:
         self.meta.tare = tare
         self.save()
 
+    def mark(self, status: RunStatus, reason: str) -> None:
+        """Write the outcome known so far into run.json and sync the rows: the books kept before
+        a step that the process may not outlive (a closed Windows console's vent check)."""
+        self.meta.status, self.meta.reason = status, reason
+        self.meta.ended_utc = provenance()["date_utc"]
+        self.save()
+        self.writer.sync()
+
     def finish(self, status: RunStatus, reason: str) -> list[str]:
         """Record the outcome, sync and close every file; return the problems met (never
         raises: the caller must still be able to say where the run is)."""

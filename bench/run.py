@@ -23,7 +23,11 @@ Safety, in every exit path:
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``; if not,
-  the run is ``failed``, asks for a VENT BY HAND and its bench marker stays.
+  the run is ``failed``, asks for a VENT BY HAND and its bench marker stays;
+- a closed Windows console leaves seconds before the process is ended: the run vents, writes
+  run.json with why it stopped and syncs its rows before the vent check, which stops at the
+  grace deadline (:meth:`mkm.bench.signals.StopSignals.grace_deadline`) so the final record
+  is written before Windows ends the process.
 
 The exit status of ``mkm acquire`` is :attr:`RunResult.exit_code`: 0 complete, 3 complete with
 lost samples, 128 + N after signal N, 2 when the run's storage failed (disk full), 4 when the
@@ -307,23 +311,56 @@ class BenchRun:
             if hasattr(observer, "step"):
                 observer.step(step)
 
-    def _revive(self, lost: DaqDisconnected) -> str:
-        """The vent after a device loss: the backend resets the device and writes 0 V on a fresh
-        task (bounded); the run's own vent command then records it. What happened, one phrase."""
+    def _revive(self, lost: str) -> tuple[bool, str]:
+        """The vent after a device loss (``lost`` says what failed): the backend resets the
+        device and writes 0 V on a fresh task (bounded); the run's own vent command then
+        records it. Whether the device came back, and what happened in one phrase."""
         try:
             self.backend.revive()
         except BaseException as exc:
-            return (f"vent command failed ({type(lost).__name__}: {lost}); resetting the device "
-                    f"did not bring it back ({type(exc).__name__}: {exc})")
+            return False, (f"{lost}; resetting the device did not bring it back "
+                           f"({type(exc).__name__}: {exc})")
         self._started = True  # a fresh AI task runs: the vent is verified as always
-        done = (f"the vent command failed ({type(lost).__name__}: {lost}): the device was reset "
-                "and vented on a fresh task")
+        done = f"{lost}: the device was reset and vented on a fresh task"
         if self.acquisition is not None:
             try:
                 self.acquisition.command(0.0, "vent")
             except BaseException as exc:  # 0 V was written by revive(); its record failed
-                return f"{done}, but recording that vent failed ({type(exc).__name__}: {exc})"
-        return done
+                return True, (f"{done}, but recording that vent failed "
+                              f"({type(exc).__name__}: {exc})")
+        return True, done
+
+    def _keep_books(self, status: RunStatus, reason: str, problems: list[str], signal_name,
+                    signal_number) -> None:
+        """A closed Windows console: the process is ended within seconds, so once the vent is
+        commanded, run.json says why the run stopped and that the vent is not yet verified
+        (``manual_vent_required`` until the check says otherwise), and the rows are synced,
+        before the vent check takes what time is left."""
+        if self.recorder is None:
+            return
+        meta = self.recorder.meta
+        meta.stop_signal, meta.stop_signal_number = signal_name, signal_number
+        meta.manual_vent_required = True
+        pending = ("the vent was commanded; its check had not ended when Windows was about to "
+                   "end the process: VENT BY HAND or verify it with `mkm vent`")
+        try:
+            self.recorder.mark(status, "; ".join(filter(None, [reason, *problems, pending])))
+        except OSError:
+            pass  # the disk: the final record meets it again and says so
+
+    def _verify(self, gone: bool = False) -> VentCheck:
+        """The vent check (:func:`mkm.bench.vent.verify_vent`), bounded by a closed console's
+        grace deadline; never raises. ``gone``: the device is lost for good, nothing to read."""
+        below = self.config.safety.vent_below_bar
+        if gone:
+            return VentCheck(False, float("nan"), below, 0.0, "monitor", "the device is gone",
+                             device_lost=True)
+        try:
+            return verify_vent(self.backend, self.config, self.operator, started=self._started,
+                               deadline=self.signals.grace_deadline)
+        except BaseException as exc:
+            return VentCheck(False, float("nan"), below, 0.0, "monitor",
+                             f"{type(exc).__name__}: {exc}")
 
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
                  signal_number=None) -> tuple[RunStatus, str]:
@@ -331,6 +368,8 @@ class BenchRun:
         the final status and reason (``failed`` when the vent could not be verified)."""
         problems = []
         acq = self.acquisition
+        revive = hasattr(self.backend, "revive")  # a device loss is tried once, then said
+        gone = False  # lost, and the reset did not bring it back: nothing can be read
         try:
             if acq is not None:
                 acq.command(0.0, "vent")
@@ -339,18 +378,23 @@ class BenchRun:
         except BaseException as exc:  # the device may be gone; closing must still happen
             if acq is not None and acq.vented:  # written; only its record failed
                 problems.append(f"recording the vent failed ({type(exc).__name__}: {exc})")
-            elif isinstance(exc, DaqDisconnected) and hasattr(self.backend, "revive"):
-                problems.append(self._revive(exc))
+            elif isinstance(exc, DaqDisconnected) and revive:
+                back, said = self._revive(f"vent command failed ({type(exc).__name__}: {exc})")
+                problems.append(said)
+                revive, gone = False, not back
             else:
                 problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
         if acq is not None and acq.marker_problem:
             problems.append(acq.marker_problem)
-        try:
-            self.vent_check = verify_vent(self.backend, self.config, self.operator,
-                                          started=self._started)
-        except BaseException as exc:
-            self.vent_check = VentCheck(False, float("nan"), self.config.safety.vent_below_bar,
-                                        0.0, "monitor", f"{type(exc).__name__}: {exc}")
+        if self.signals.grace_deadline() is not None:
+            self._keep_books(status, reason, problems, signal_name, signal_number)
+        self.vent_check = self._verify(gone)
+        if self.vent_check.device_lost and revive:
+            # the vent was written, but the device was lost before the monitor confirmed it
+            back, said = self._revive(f"the vent check's reads failed "
+                                      f"({self.vent_check.problem})")
+            problems.append(said)
+            self.vent_check = self._verify(not back)
         if not self._started and self.config.regulator.electronic and \
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify

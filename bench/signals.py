@@ -8,13 +8,19 @@ goes, :class:`StopSignals` handles:
 - a second ``SIGINT``, ``SIGTERM`` (kill, service stop), ``SIGHUP`` (terminal or SSH session
   closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows): raise :class:`StopSignal` at once, which
   unwinds to the run's shutdown: vent, close the device, record. The exit status is 128 + N;
-- on Windows, closing the console window, log-off and shutdown arrive as console control
-  events (``SetConsoleCtrlHandler``), not as signals: the handler turns them into ``SIGBREAK``
-  in the main thread and holds the process (Windows ends it when the handler returns, after at
-  most 5 s) until the run has vented and recorded.
+- on Windows, closing the console window arrives as a console control event
+  (``CTRL_CLOSE_EVENT``, ``SetConsoleCtrlHandler``), not as a signal, on a thread Windows makes
+  for it: the handler turns it into ``SIGBREAK`` in the main thread and holds the process until
+  the run has vented and recorded. Windows ends the process when the handler returns and at the
+  latest 5 s after the event, so the run's shutdown has a grace deadline
+  (:meth:`StopSignals.grace_deadline`): vent, write run.json with why it stopped, sync the rows,
+  verify the vent with what time is left, close the device, record. ``CTRL_LOGOFF_EVENT`` and
+  ``CTRL_SHUTDOWN_EVENT`` are handled the same, but Windows sends them to services only: an
+  interactive console program is ended at log-off without notice (its bench marker then makes
+  the next command vent, :mod:`mkm.bench.unvented`).
 
 Only the signals this platform has are touched (``hasattr(signal, name)``), and the console
-handler is installed only when ``sys.platform == "win32"``.
+handler is installed only on Windows (:data:`WINDOWS`).
 """
 
 from __future__ import annotations
@@ -34,6 +40,10 @@ CTRL_LOGOFF_EVENT, CTRL_SHUTDOWN_EVENT = 5, 6
 CONSOLE_EVENTS = {CTRL_CLOSE_EVENT: "console closed", CTRL_LOGOFF_EVENT: "log-off",
                   CTRL_SHUTDOWN_EVENT: "system shutdown"}
 CONSOLE_HOLD_S = 4.5  # Windows kills the process 5 s after CTRL_CLOSE_EVENT
+# Of the hold, what the last steps keep back: closing the device and writing run.json with its
+# files synced take milliseconds on the bench PC; half a second leaves room for a slow disk.
+CONSOLE_RECORD_S = 0.5
+WINDOWS = sys.platform == "win32"
 #: Set by the ``mkm`` console entry point, which exits once the command returns: a run's stop
 #: signals then stay ignored after it is recorded, since a signal there would end the process
 #: with 128 + N while run.json says how the run really ended. In-process callers keep theirs.
@@ -71,6 +81,7 @@ class StopSignals:
         self.stop_requested_at: float | None = None
         self.signal_at: float | None = None
         self.console_event: str | None = None
+        self.console_event_at: float | None = None
         self._previous: dict[int, object] = {}
         self._finished = threading.Event()
         self._console_callback = None
@@ -82,7 +93,7 @@ class StopSignals:
             return self  # signal handlers can only be installed in the main thread
         for signum in STOP_SIGNALS:
             self._previous[signum] = signal.signal(signum, self._handle)
-        if sys.platform == "win32":
+        if WINDOWS:
             self._install_console_handler()
         self.active = True
         return self
@@ -118,6 +129,14 @@ class StopSignals:
     def done(self) -> None:
         self._finished.set()
 
+    def grace_deadline(self) -> float | None:
+        """The ``time.monotonic()`` by which the vent check must end so that the run is
+        recorded before Windows ends the process (a console closed); None without a console
+        event: nothing bounds the shutdown then."""
+        if self.console_event_at is None:
+            return None
+        return self.console_event_at + CONSOLE_HOLD_S - CONSOLE_RECORD_S
+
     # Windows console control events ----------------------------------------------------------
 
     def on_console_event(self, event: int) -> bool:
@@ -125,6 +144,7 @@ class StopSignals:
         when this returns, so it returns only once the run has vented and recorded)."""
         if event not in CONSOLE_EVENTS:
             return False  # Ctrl-C and Ctrl-Break: Python raises SIGINT and SIGBREAK itself
+        self.console_event_at = time.monotonic()
         self.console_event = CONSOLE_EVENTS[event]
         interrupt = self._interrupt_main
         if interrupt is None:

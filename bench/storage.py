@@ -500,6 +500,13 @@ class RunWriter:
     def append_command(self, row: CommandRecord) -> None:
         self._append("commands", [row])
 
+    def sync(self) -> None:
+        """Sync every open file to disk, leaving it open (rows kept through a power cut)."""
+        for f, _ in self._files.values():
+            if not f.closed:
+                f.flush()
+                os.fsync(f.fileno())
+
     def close(self) -> None:
         """Sync every file to disk and close it; every file is tried, the first error raised."""
         errors = []

@@ -8,6 +8,8 @@ of sample time and wall time, judging only samples acquired after the vent write
 plausible ones (a live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: a monitor fault,
 never a vent, :meth:`mkm.bench.config.Regulator.monitor_fault`); with a manual regulator the
 operator vents by hand and types the manometer reading, which must be below the same threshold.
+A check with a ``deadline`` (Windows ends a closed console's process within 5 s) stops at it,
+unverified, so the run can still be recorded.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ import math
 import time
 from dataclasses import asdict, dataclass
 
-from mkm.bench.backend import BenchError, BufferOverflow
+from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected
 
 
 @dataclass
@@ -29,6 +31,7 @@ class VentCheck:
     waited_s: float
     how: str  # "monitor" | "operator"
     problem: str = ""
+    device_lost: bool = False  # the monitor's reads failed with the device gone
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -43,7 +46,8 @@ class VentCheck:
                 f"after the vent, above {self.below_bar:g} bar")
 
 
-def verify_vent(backend, config, operator=None, started: bool = True) -> VentCheck:
+def verify_vent(backend, config, operator=None, started: bool = True,
+                deadline=lambda: None) -> VentCheck:
     """Confirm that the muscle is vented (the vent command already written).
 
     Parameters
@@ -54,6 +58,9 @@ def verify_vent(backend, config, operator=None, started: bool = True) -> VentChe
         ``safety.vent_below_bar`` [bar] and ``safety.vent_timeout_s`` [s] bound the check.
     operator : mkm.bench.operator.Operator, optional
         With a manual regulator: vents by hand and reads the manometer.
+    deadline : callable, optional
+        Returns the ``time.monotonic()`` [s] at which the check gives up unverified, or None
+        (asked before every read: a console closed during the check bounds it too).
     """
     safety = config.safety
     below, timeout_s = safety.vent_below_bar, safety.vent_timeout_s
@@ -79,16 +86,25 @@ def verify_vent(backend, config, operator=None, started: bool = True) -> VentChe
     except BufferOverflow:
         backend.recover()
     except BenchError as exc:
-        return VentCheck(False, pressure, below, 0.0, "monitor", f"{type(exc).__name__}: {exc}")
+        return VentCheck(False, pressure, below, 0.0, "monitor", f"{type(exc).__name__}: {exc}",
+                         isinstance(exc, DaqDisconnected))
     while True:
+        cut, now, read_s = deadline(), time.monotonic(), config.daq.read_timeout_s
+        if cut is not None:
+            if now >= cut:
+                waited = max(now - start, sample_time_s)
+                return VentCheck(False, pressure, below, waited, "monitor",
+                                 f"cut short after {waited:.1f} s: the process is about to be "
+                                 "ended (console closed)")
+            read_s = min(read_s, max(cut - now, 2 * n / rate))  # a block's time at least
         try:
-            volts = backend.read(n, config.daq.read_timeout_s).volts
+            volts = backend.read(n, read_s).volts
         except BufferOverflow:
             backend.recover()
             continue
         except BenchError as exc:
             return VentCheck(False, pressure, below, time.monotonic() - start, "monitor",
-                             f"{type(exc).__name__}: {exc}")
+                             f"{type(exc).__name__}: {exc}", isinstance(exc, DaqDisconnected))
         monitor_V = float(volts[-1, 1])
         pressure = float(config.regulator.monitor_bar(monitor_V))
         sample_time_s += n / rate

@@ -27,7 +27,11 @@ column); inputs are built from that environment's own packaged configuration. Pe
    a run.json with a repeated key through `mkm export`: bad on exit 0;
 8. `mkm vent`, `tare`, `calibrate-loadcell` without `--backend` and `--config`: bad on exit 0;
 9. the regulator's monitor lost (0 V) during a run or before `mkm vent`: bad when the vent is
-   called verified (exit 0, or run.json's vent_check verified).
+   called verified (exit 0, or run.json's vent_check verified);
+10. a closed Windows console during a real-clock run (a process of that environment's Python
+   calling the console handler from another thread, as Windows does), the regulator venting or
+   stuck at pressure: bad when the handler is released (Windows ends the process) later than
+   4.5 s after the event, or run.json then still says `running` or calls a stuck vent verified.
 
 A traceback, a hang or death by a signal is bad in every category. Prints one Markdown table.
 """
@@ -53,7 +57,7 @@ FINDINGS = {1: "vent with a broken state folder", 2: "over-pressure on the measu
             3: "one lock per device", 4: "a killed run's folder mended",
             5: "no success without content", 6: "guarded readers",
             7: "settings, numbers, run.json keys", 8: "hardware commands name their backend",
-            9: "a lost monitor is no vent"}
+            9: "a lost monitor is no vent", 10: "a closed console recorded in time"}
 
 
 def _outcome(proc, good: str, bad_when: bool, bad: str) -> tuple[str, bool]:
@@ -377,8 +381,64 @@ def finding_9(env: Env, rng: random.Random, n: int = 5) -> list[Result]:
     return results
 
 
+CONSOLE_CLOSE = """
+import json, sys, threading, time
+from mkm.bench import signals
+from mkm.bench.config import load_config
+from mkm.bench.run import BenchRun, make_backend
+
+event_at_s, stuck, out = float(sys.argv[1]), sys.argv[2] == "stuck", sys.argv[3]
+faults = {"regulator_stuck_at_s": event_at_s - 0.1} if stuck else {}
+config = load_config().replace(
+    sequence={"pressures_bar": (0.5, 1.0), "tare_s": 1.0, "preconditioning_cycles": 0},
+    sim={"faults": faults})
+run = BenchRun(config, make_backend(config, "real"), out, notify=lambda m: None)
+seen = {}
+
+def close():
+    while run.acquisition is None or run.acquisition.next_index < event_at_s * 10:
+        time.sleep(0.005)
+    start = time.monotonic()
+    run.signals.on_console_event(signals.CTRL_CLOSE_EVENT)
+    seen["released_s"] = time.monotonic() - start
+    seen["meta"] = json.loads((run.recorder.path / "run.json").read_text())
+
+closer = threading.Thread(target=close, daemon=True)
+closer.start()
+run.execute()
+closer.join(15)
+print(json.dumps({"released_s": seen["released_s"], "status": seen["meta"]["status"],
+                  "verified": bool((seen["meta"].get("vent_check") or {}).get("verified"))}))
+"""
+
+
+def finding_10(env: Env, rng: random.Random, n: int = 4) -> list[Result]:
+    results = []
+    for k in range(n):
+        regulator = ("venting", "stuck")[k % 2]
+        event_at_s = round(1.0 + rng.uniform(0.5, 2.5), 2)  # in the first step (0.5 bar)
+        t = env.fresh("console")
+        start = time.perf_counter()
+        try:
+            seen = json.loads(env.snippet(CONSOLE_CLOSE, str(event_at_s), regulator,
+                                          str(t / "runs")).splitlines()[-1])
+        except (RuntimeError, ValueError, IndexError) as exc:
+            results.append(Result(10, f"console closed at {event_at_s:g} s, {regulator}",
+                                  f"no outcome ({str(exc).strip().splitlines()[-1][:60]})",
+                                  True, time.perf_counter() - start))
+            continue
+        late = seen["released_s"] > 4.5
+        bad = late or seen["status"] == "running" or (regulator == "stuck" and seen["verified"])
+        outcome = (f"{'late' if late else 'recorded'}: {seen['status']}"
+                   f"{', verified' if seen['verified'] else ''}")
+        results.append(Result(10, f"console closed at {event_at_s:g} s, regulator {regulator}",
+                              outcome, bad, time.perf_counter() - start, None,
+                              f"released {seen['released_s']:.2f} s after the event"))
+    return results
+
+
 STEPS = {1: finding_1, 2: finding_2, 3: finding_3, 4: finding_4, 5: finding_5, 6: finding_6,
-         7: finding_7, 8: finding_8, 9: finding_9}
+         7: finding_7, 8: finding_8, 9: finding_9, 10: finding_10}
 
 
 def summary(results: list[Result]) -> list[dict]:

@@ -292,6 +292,7 @@ BENCHMARKS = {
     "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
     "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 1 --seed 0 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
+    "console_close.json": "benchmarks/bench_console_close.py --json {out}",
 }
 
 

@@ -34,6 +34,35 @@ def _hermetic_folders(tmp_path_factory):
         yield home
 
 
+class Symlinks:
+    """Symbolic links where this platform lets the test make them: ``symlink(link, target)``
+    makes one, or skips the test with the reason. Windows refuses them without developer mode
+    or the SeCreateSymbolicLinkPrivilege (WinError 1314); whether it does is tried once, with
+    ``os.symlink`` in ``folder``, when this is made."""
+
+    def __init__(self, folder):
+        probe = folder / "probe-link"
+        try:
+            os.symlink(folder / "probe-target", probe)
+        except (OSError, NotImplementedError) as exc:
+            self.reason = f"this platform cannot make symbolic links here ({exc})"
+        else:
+            probe.unlink()
+            self.reason = None
+
+    def __call__(self, link, target):
+        if self.reason:
+            pytest.skip(self.reason)
+        os.symlink(target, link)
+        return link
+
+
+@pytest.fixture(scope="session")
+def symlink(tmp_path_factory):
+    """:class:`Symlinks`, tried once per session."""
+    return Symlinks(tmp_path_factory.mktemp("symlink-probe"))
+
+
 @pytest.fixture(scope="session")
 def thickwall_dataset(tmp_path_factory):
     """The paper's Table 1 grid computed with ``thickwall``, as ``mkm fem dataset`` writes it,

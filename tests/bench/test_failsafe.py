@@ -248,7 +248,8 @@ def test_reprocess_of_a_run_without_samples_refuses(recorded, tmp_path, mkm_cli)
 
 @pytest.mark.parametrize("damage", ["header only", "missing", "fifo", "link to /dev/zero",
                                     "no finite force"])
-def test_export_of_a_run_without_content_refuses(recorded, tmp_path, mkm_cli, damage):
+def test_export_of_a_run_without_content_refuses(recorded, tmp_path, mkm_cli, damage,
+                                                  symlink):
     samples = recorded / "samples.csv"
     if damage == "header only":
         _header_only(recorded)
@@ -263,7 +264,7 @@ def test_export_of_a_run_without_content_refuses(recorded, tmp_path, mkm_cli, da
         if not Path("/dev/zero").exists():
             pytest.skip("no /dev/zero here")
         samples.unlink()
-        samples.symlink_to("/dev/zero")
+        symlink(samples, "/dev/zero")
     else:
         lines = samples.read_text().splitlines()
         header = lines[0].split(",")
@@ -330,13 +331,17 @@ BILLION_LAUGHS = (b'<?xml version="1.0"?><!DOCTYPE lolz [<!ENTITY lol "lol">'
     ("random.xlsx", lambda p: p.write_bytes(bytes(range(256)) * 40), "is not an Excel workbook"),
     ("laughs.xlsx", lambda p: _workbook(p, BILLION_LAUGHS), "holds an XML document type"),
     ("bomb.xlsx", lambda p: _workbook(p, pad_bytes=250_000_000), "expands to"),
-    ("passwd.csv", lambda p: p.symlink_to("/etc/passwd"), "is a symbolic link: refused"),
+    ("passwd.csv", None, "is a symbolic link: refused"),
 ])
-def test_hostile_tables_are_refused_in_one_line(tmp_path, mkm_cli, name, make, message):
-    if name == "passwd.csv" and not Path("/etc/passwd").exists():
-        pytest.skip("no /etc/passwd here")
+def test_hostile_tables_are_refused_in_one_line(tmp_path, mkm_cli, symlink, name, make,
+                                                message):
     table = tmp_path / name
-    make(table)
+    if make is None:  # a link to a file a table never is
+        if not Path("/etc/passwd").exists():
+            pytest.skip("no /etc/passwd here")
+        symlink(table, "/etc/passwd")
+    else:
+        make(table)
     code, out, err = mkm_cli(["import", str(table), *MUSCLE, "--out", str(tmp_path / "runs")])
     assert code == 2 and out == "" and err.count("\n") == 1 and message in err, err
     assert "root:" not in err  # no file content in a message
@@ -350,11 +355,24 @@ def test_a_real_workbook_still_imports(tmp_path, mkm_cli):
     assert load_run(out.strip()).status == "imported"
 
 
+def test_link_tests_skip_where_the_platform_refuses_links(symlink, tmp_path, monkeypatch):
+    # Windows without developer mode: os.symlink raises OSError, WinError 1314
+    def refuse(src, dst, target_is_directory=False):
+        raise OSError(1314, "A required privilege is not held by the client")
+
+    monkeypatch.setattr(os, "symlink", refuse)
+    refused = type(symlink)(tmp_path)  # the probe, tried once
+    assert "cannot make symbolic links here" in refused.reason
+    with pytest.raises(pytest.skip.Exception, match="privilege is not held"):
+        refused(tmp_path / "link", tmp_path / "target")
+    assert symlink.reason is None or sys.platform == "win32"  # links work on Linux and macOS
+
+
 @pytest.mark.parametrize("name", ["run.json", "samples.csv", "steps.csv"])
-def test_a_run_folder_file_that_is_a_link_is_refused(recorded, name):
+def test_a_run_folder_file_that_is_a_link_is_refused(recorded, name, symlink):
     target = recorded.parent / f"elsewhere-{name}"
     (recorded / name).rename(target)
-    (recorded / name).symlink_to(target)
+    symlink(recorded / name, target)
     with pytest.raises(ValueError, match=f"{name} is a symbolic link: refused"):
         load_run(recorded).samples  # noqa: B018 (read on first use)
 
@@ -516,11 +534,10 @@ def test_a_run_keeps_windows_awake_and_lets_it_sleep_after(config, tmp_path, mon
                       (wakelock.ES_CONTINUOUS, 1)]
 
 
-def test_a_calibration_file_that_is_a_link_is_refused(tmp_path, mkm_cli):
+def test_a_calibration_file_that_is_a_link_is_refused(tmp_path, mkm_cli, symlink):
     from mkm.fem.calibration import CALIBRATION_FILE
 
-    link = tmp_path / "calibration.json"
-    link.symlink_to(CALIBRATION_FILE)
+    link = symlink(tmp_path / "calibration.json", CALIBRATION_FILE)
     code, out, err = mkm_cli(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
                               "--eps", "0.1", "--pressures", "1", "--calibration", str(link)])
     assert code == 2 and out == "" and "is a symbolic link: refused" in err

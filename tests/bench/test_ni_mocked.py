@@ -169,9 +169,11 @@ def test_disconnect_mid_run_vents_then_clears(config, fake_driver, tmp_path):
     result = acquire(config, backend="ni", out_root=tmp_path)
     assert result.status == "failed" and "DaqDisconnected" in result.reason
     assert len(load_run(result.path).samples) == 30
-    names = [c[0] for c in fake_driver.interpreter.mock_calls]
-    first_clear = names.index("clear_task")
-    assert names[:first_clear][::-1].index("write_analog_scalar_f64") < 3  # vent right before
+    mock_calls = fake_driver.interpreter.mock_calls
+    first_clear = [c[0] for c in mock_calls].index("clear_task")
+    # the vent is the last write before any task is cleared, and the last write of all
+    before = [c for c in mock_calls[:first_clear] if c[0] == "write_analog_scalar_f64"]
+    assert before[-1].args[3] == 0.0 and max(c.args[3] for c in before) > 0
     assert fake_driver.interpreter.write_analog_scalar_f64.call_args.args[3] == 0.0
 
 
@@ -242,7 +244,6 @@ def test_a_pulled_cable_mid_run_asks_for_a_vent_by_hand(config, fake_driver, tmp
     result = acquire(config, backend="ni", out_root=tmp_path)
     assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
     assert "vent command failed" in result.reason and "VENT BY HAND" in result.reason
-
 
 
 def _lost_after(fake_driver, n_reads):
@@ -331,3 +332,203 @@ def test_another_device_is_refused(config, fake_driver):
                                          "for a USB-6001 only"):
         NIBackend(config).open()
     assert not calls(fake_driver, "create_task")  # refused before any task was made
+
+
+def _reads_lost_after(fake_driver, n_reads):
+    """Reads work ``n_reads`` times, then fail with -50405 while writes still succeed (the AO
+    write reached the device, the monitor cannot be read back); a reset brings reads back."""
+    reads = {"n": 0}
+    normal = fake_driver.read
+
+    def read(*args):
+        reads["n"] += 1
+        if reads["n"] > n_reads:
+            raise DaqReadError("USB transfer aborted", -50405, 0)
+        return normal(*args)
+
+    fake_driver.interpreter.read_analog_f64.side_effect = read
+
+    def reset(device_name):
+        reads["n"] = -10**9  # the fresh tasks read again
+
+    fake_driver.interpreter.reset_device.side_effect = reset
+
+
+def test_a_vent_check_whose_reads_are_lost_resets_the_device_and_verifies(
+        config, fake_driver, tmp_path):
+    # the read that lost the device stops the run; the vent write succeeds, the vent check's
+    # reads fail: without a reset there is no reading, and the run would ask for a vent by hand
+    _reads_lost_after(fake_driver, 30)
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert not result.manual_vent_required and "VENT BY HAND" not in result.reason
+    assert "the vent check's reads failed" in result.reason
+    assert "reset and vented on a fresh task" in result.reason
+    fake_driver.interpreter.reset_device.assert_called_once_with("Dev1")
+    vent_check = load_run(result.path).meta.vent_check
+    assert vent_check["verified"] and vent_check["pressure_bar"] < 0.05  # as for any vent
+    assert calls(fake_driver, "write_analog_scalar_f64")[-1].args[3] == 0.0
+
+
+def test_a_vent_check_whose_reads_stay_lost_asks_for_a_vent_by_hand(
+        config, fake_driver, tmp_path, instant_clock):
+    _reads_lost_after(fake_driver, 30)
+    from nidaqmx.errors import DaqError
+
+    fake_driver.interpreter.reset_device.side_effect = DaqError("device absent", -200324)
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.exit_code == 4 and result.manual_vent_required
+    assert "the vent check's reads failed" in result.reason
+    assert "did not bring it back" in result.reason and "VENT BY HAND" in result.reason
+    assert fake_driver.interpreter.reset_device.call_count == \
+        int(REVIVE_WITHIN_S / REVIVE_EVERY_S) + 1  # retried until its bound, no longer
+
+
+def _lost_until_reset(fake_driver):
+    """The device a run lost: every call into it fails with -50405 until DAQmx Reset Device."""
+    from nidaqmx.errors import DaqError
+
+    fake_driver.disconnect()
+    make_channel = fake_driver.interpreter.create_ai_voltage_chan
+
+    def create(*args):
+        if fake_driver.disconnected:
+            raise DaqError("USB transfer aborted", -50405)
+
+    make_channel.side_effect = create
+    fake_driver.interpreter.reset_device.side_effect = fake_driver.reconnect
+
+
+def test_mkm_vent_resets_a_device_lost_before_it_and_vents(config, fake_driver, instant_clock):
+    from mkm.bench.procedures import vent
+
+    _lost_until_reset(fake_driver)
+    fake_driver.bench.set_command_volts(6.25)  # the lost run left 2.5 bar commanded
+    out = vent(config, backend="ni")
+    assert out["vented"] and out["pressure_bar"] < 0.05
+    fake_driver.interpreter.reset_device.assert_called_once_with("Dev1")
+    assert fake_driver.bench.target_bar == 0.0
+
+
+def test_mkm_vent_resets_a_device_whose_reads_are_lost_in_the_check(config, fake_driver):
+    from mkm.bench.procedures import vent
+
+    _reads_lost_after(fake_driver, 0)
+    fake_driver.bench.set_command_volts(6.25)
+    out = vent(config, backend="ni")
+    assert out["vented"] and out["pressure_bar"] < 0.05
+    fake_driver.interpreter.reset_device.assert_called_once_with("Dev1")
+
+
+def test_a_session_at_open_resets_a_lost_device(config, fake_driver, instant_clock):
+    # tare, check and calibrate-loadcell open the device in procedures.session
+    from mkm.bench.procedures import tare
+
+    _lost_until_reset(fake_driver)
+    out = tare(config, backend="ni", seconds=1.0)
+    assert out["device"]["serial_number"] == "1F2E3D4"
+    fake_driver.interpreter.reset_device.assert_called_once_with("Dev1")
+
+
+def test_a_device_absent_at_open_fails_within_the_bound(config, fake_driver, instant_clock):
+    from mkm.bench.procedures import vent
+
+    _lost_until_reset(fake_driver)
+    fake_driver.interpreter.reset_device.side_effect = fake_driver.reset  # stays absent
+    with pytest.raises(DaqDisconnected, match="-50405"):
+        vent(config, backend="ni")
+    assert 0 < instant_clock["t"] <= REVIVE_WITHIN_S
+
+
+def test_mkm_vent_finds_the_lock_and_marker_of_the_run_that_lost_the_device(
+        config, fake_driver, tmp_path, instant_clock, capsys):
+    # the run's lock and marker are keyed by the serial number, which a lost device cannot
+    # answer: without the reset, `mkm vent` would key the bench by its name and miss the run
+    from nidaqmx.errors import DaqError
+
+    from mkm.bench.procedures import vent
+    from mkm.bench.storage import ProcessIdentity
+    from mkm.bench.unvented import Marker, _folder
+    from mkm.core.records import write_json_atomic
+
+    dead = ProcessIdentity(2**22 + 9, "bench-pc", 1.0, None)  # pid above pid_max
+    marker = Marker("ni-serial-1F2E3D4", str(tmp_path / "lost-run"), "2026-12-02T10:00:00+00:00",
+                    vars(dead), 2.5, "2026-12-02T10:05:00+00:00")
+    folder = _folder("ni-serial-1F2E3D4")
+    folder.mkdir(parents=True)
+    write_json_atomic(folder / "dead.json", vars(marker))
+    _lost_until_reset(fake_driver)
+
+    def serial(*args):
+        if fake_driver.disconnected:
+            raise DaqError("USB transfer aborted", -50405)
+        return 0x1F2E3D4
+
+    fake_driver.interpreter.get_device_attribute_uint32.side_effect = serial
+    notes = []
+    out = vent(config, backend="ni", notify=notes.append)
+    assert out["vented"]
+    assert any(str(tmp_path / "lost-run") in note and "vented now" in note for note in notes)
+    assert not (folder / "dead.json").exists()
+    assert instant_clock["t"] <= REVIVE_WITHIN_S  # the key and the open share one bound
+
+
+def _reset_benchmark():
+    """benchmarks/bench_ni_reset.py, the hardware measurement of the revive, as a module."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).parents[2] / "benchmarks" / "bench_ni_reset.py"
+    spec = importlib.util.spec_from_file_location("bench_ni_reset", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("simulated, product, names, expected", [
+    (True, "USB-6001", "Dev1", "is simulated in NI MAX"),
+    (False, "USB-6009", "Dev1", "is a USB-6009, not a USB-6001"),
+    (False, "USB-6001", "Dev2", "is not connected (NI-DAQmx lists Dev2)"),
+])
+def test_the_reset_measurement_refuses_without_a_real_usb_6001(fake_driver, capsys, simulated,
+                                                               product, names, expected):
+    fake_driver.interpreter.get_system_info_attribute_string.return_value = names
+    fake_driver.interpreter.get_device_attribute_bool.return_value = simulated
+    fake_driver.interpreter.get_device_attribute_string.return_value = product
+    assert _reset_benchmark().main(["--device", "Dev1"]) == 2
+    err = capsys.readouterr().err
+    assert expected in err and "BLOCKED" in err and err.count("\n") == 1
+    assert not calls(fake_driver, "create_task") and not calls(fake_driver, "reset_device")
+
+
+def test_the_reset_measurement_refuses_without_the_driver(fake_driver, capsys):
+    fake_driver.interpreter.get_system_info_attribute_string.side_effect = DaqNotFoundError("x")
+    assert _reset_benchmark().main(["--device", "Dev1"]) == 2
+    assert "NI-DAQmx driver is not installed here" in capsys.readouterr().err
+
+
+def test_the_reset_measurement_times_revives_and_writes_0_V_only(fake_driver, tmp_path, capsys):
+    import json
+
+    fake_driver.interpreter.get_system_info_attribute_string.return_value = "Dev1"
+    out = tmp_path / "reset.json"
+    assert _reset_benchmark().main(["--device", "Dev1", "--repeats", "3", "--json",
+                                    str(out)]) == 0
+    record = json.loads(out.read_text())
+    assert len(record["live"]["revive_s"]) == len(record["live"]["reset_s"]) == 3
+    assert record["device"]["serial_number"] == "1F2E3D4" and record["versions"]["python"]
+    assert fake_driver.interpreter.reset_device.call_count == 3 + 3 + 1
+    assert {c.args[3] for c in calls(fake_driver, "write_analog_scalar_f64")} == {0.0}
+    assert "| revive (reset, fresh tasks, 0 V) | 3 |" in capsys.readouterr().out
+
+
+def test_a_loss_after_the_key_was_read_still_gets_the_whole_reset_bound(
+        config, fake_driver, instant_clock):
+    # `mkm vent` reads the key, then may wait up to 30 s for a live run to stop before it opens
+    backend = NIBackend(config)
+    assert backend.bench_key == "ni-serial-1F2E3D4"
+    instant_clock["t"] += 30.0
+    _lost_until_reset(fake_driver)
+    assert backend.open().serial_number == "1F2E3D4"
+    fake_driver.interpreter.reset_device.assert_called_once_with("Dev1")
+    backend.close()

@@ -5,6 +5,7 @@ Each test runs for about 2-4 s of wall time: the process starts (imports ~1.5 s)
 signalled. Issue 12: only SIGINT vented; SIGTERM and SIGHUP left the last command in place.
 """
 
+import json
 import os
 import signal
 import socket
@@ -169,3 +170,98 @@ def test_stop_signal_names_the_signal_and_exit_code():
     stop = StopSignal(signal.SIGTERM)
     assert stop.name == "SIGTERM" and stop.exit_code == 128 + signal.SIGTERM
     assert str(StopSignal(signal.SIGINT, "second Ctrl-C")) == "SIGINT (second Ctrl-C)"
+
+
+class _Kernel32:
+    """``kernel32.SetConsoleCtrlHandler`` as Windows has it: it keeps the registered handler
+    (a ctypes callback), which Windows then calls on its own thread at a console event."""
+
+    def __init__(self):
+        self.registrations = []
+
+    def SetConsoleCtrlHandler(self, handler, add):  # noqa: N802 (the Windows name)
+        self.registrations.append((handler, bool(add)))
+        return 1
+
+
+@pytest.fixture
+def windows_console(monkeypatch):
+    """The Windows API part of mkm.bench.signals on this platform: WINDOWS set, ``ctypes.windll``
+    a fake kernel32, ``WINFUNCTYPE`` the C calling convention (stdcall exists on Windows only)."""
+    import ctypes
+
+    import mkm.bench.signals as signals
+
+    kernel32 = _Kernel32()
+    monkeypatch.setattr(signals, "WINDOWS", True)
+    monkeypatch.setattr(ctypes, "windll", type("WinDLL", (), {"kernel32": kernel32}),
+                        raising=False)
+    monkeypatch.setattr(ctypes, "WINFUNCTYPE", ctypes.CFUNCTYPE, raising=False)
+    return kernel32
+
+
+def test_the_console_handler_is_registered_called_through_ctypes_and_removed(windows_console):
+    guard = StopSignals()
+    with guard:
+        ((handler, added),) = windows_console.registrations
+        assert added
+        assert handler(CTRL_C_EVENT) == 0  # not ours: Python turns Ctrl-C into SIGINT
+        returned = []
+        caller = threading.Thread(target=lambda: returned.append(handler(CTRL_CLOSE_EVENT)))
+        with pytest.raises(StopSignal) as stop:  # Windows' thread stops the main thread
+            caller.start()
+            deadline = time.monotonic() + 2.0
+            while time.monotonic() < deadline:
+                time.sleep(0.01)
+        assert stop.value.detail == "console closed"
+        assert caller.is_alive()  # held until the run has recorded
+        guard.done()
+        caller.join(1.0)
+        assert returned == [1]
+    assert windows_console.registrations[-1] == (handler, False)
+
+
+@pytest.mark.slow  # a real-clock run held at pressure, about 3 s
+def test_console_close_vents_then_records_within_the_grace_time(config, tmp_path,
+                                                                 monkeypatch, windows_console):
+    # Windows ends the process when the handler returns, at the latest 5 s after the event. A
+    # regulator stuck at pressure keeps the vent check waiting up to vent_timeout_s (10 s), so
+    # the run must vent, keep its books and cut the check short so as to be recorded in time.
+    # The hold is shortened to 1.5 s here (the same code path, a third of the wait).
+    import mkm.bench.signals as signals
+    from mkm.bench.run import BenchRun, make_backend
+
+    monkeypatch.setattr(signals, "CONSOLE_HOLD_S", 1.5)
+    stuck_at_s = 1.5  # sample time: the first step (0.5 bar) has raised the pressure
+    c = config.replace(sequence={"tare_s": 1.0},
+                       sim={"faults": {"regulator_stuck_at_s": stuck_at_s}})
+    assert c.safety.vent_timeout_s > 4 * signals.CONSOLE_HOLD_S
+    run = BenchRun(c, make_backend(c, "real"), tmp_path / "runs", notify=lambda m: None)
+    seen = {}
+
+    def windows_closes_the_console():
+        while run.acquisition is None or run.acquisition.next_index < 10 * (stuck_at_s + 0.2):
+            time.sleep(0.01)
+        ((handler, _),) = windows_console.registrations
+        seen["event"], seen["unix"] = time.monotonic(), time.time()
+        seen["returned"] = handler(CTRL_CLOSE_EVENT)
+        seen["released"] = time.monotonic()
+        # Windows ends the process here: what the run folder says now is all it will say
+        seen["run.json"] = json.loads((run.recorder.path / "run.json").read_text())
+
+    closer = threading.Thread(target=windows_closes_the_console)
+    closer.start()
+    result = run.execute()
+    closer.join(5.0)
+    assert seen["returned"] == 1
+    assert seen["released"] - seen["event"] < signals.CONSOLE_HOLD_S
+    meta = seen["run.json"]
+    assert meta["status"] == "failed" and meta["stop_signal"] == "SIGTERM"
+    assert "console closed" in meta["reason"] and "cut short" in meta["reason"]
+    assert meta["manual_vent_required"] and "VENT BY HAND" in meta["reason"]
+    assert meta["vent_check"]["pressure_bar"] > c.safety.vent_below_bar  # stuck, held
+    assert meta["vented_at_unix_s"] - seen["unix"] < VENT_WITHIN_S  # the vent came first
+    assert meta["counters"]["samples"] == len(load_run(result.path).samples) > 0
+    last = load_run(result.path).commands.iloc[-1]
+    assert last["purpose"] == "vent" and last["ok"] and last["command_bar"] == 0.0
+    assert result.manual_vent_required and list((tmp_path / "mkm-state").rglob("*.json"))
