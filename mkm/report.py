@@ -667,7 +667,8 @@ def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
                 used = str(chosen["model_used"][0])
                 choice = AutoPick(spec_of(used), model_label(used),
                                   float(np.nanmax(chosen["error_bound_pct"])),
-                                  explain(chosen, tolerance, model_label))
+                                  explain(chosen, tolerance, model_label,
+                                          gap_mm=auto.resolved_gap_mm()))
         r.auto_choices[tolerance] = choice
     return r.auto_choices[tolerance]
 
