@@ -253,9 +253,9 @@ def test_an_identified_gap_is_autos_default_as_the_thick_walls(tmp_path):
     shipped = Calibration.shipped()
     entries = {**shipped.entries, "thickwall": {**shipped.entry("thickwall"), "gap_mm": 0.7}}
     learnt = Calibration(tmp_path / "calibration.json", entries)
-    assert build_spec("auto", learnt).gap_mm == 0.7
-    assert build_spec("auto:gap_mm=0", learnt).gap_mm == 0.0  # asked: the muscle has none
-    assert build_spec("auto").gap_mm is None  # the shipped calibration identified no gap
+    assert build_spec("auto", learnt).resolved_gap_mm() == 0.7
+    assert build_spec("auto:gap_mm=0", learnt).resolved_gap_mm() == 0.0  # asked: none
+    assert build_spec("auto").resolved_gap_mm() == 0.0  # the shipped calibration has none
 
 
 def test_a_gap_the_calibration_holds_keeps_the_surrogate_out_too(table_path, tmp_path):
