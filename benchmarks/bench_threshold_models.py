@@ -499,6 +499,31 @@ def fitted_rest_lengths(study: pd.DataFrame, maps: list[ForceMap]) -> pd.DataFra
     return pd.DataFrame(rows)
 
 
+def measured_lines(maps: list[ForceMap]) -> pd.DataFrame:
+    """Per muscle and held length: the least-squares line through its measured forces (slope
+    and zero, the threshold the data themselves give) and the largest deviation from it, as %
+    of the muscle's largest force; the model-free picture of how the threshold grows with the
+    shortening."""
+    rows = []
+    for force_map in maps:
+        for eps, group in force_map.rows.groupby("eps"):
+            loaded = group[group["zero_entry"] == 0]
+            if len(loaded) < 3:
+                continue
+            slope, intercept = np.polyfit(loaded["pressure_bar"], loaded["force_N"], 1)
+            deviation = np.polyval([slope, intercept], loaded["pressure_bar"]) - loaded["force_N"]
+            slack = group[(group["zero_entry"] == 1)
+                          & (group["pressure_bar"] < loaded["pressure_bar"].min())]
+            rows.append({"muscle": force_map.muscle, "eps (table)": float(eps),
+                         "points": len(loaded), "slope N/bar": float(slope),
+                         "line's zero bar": float(-intercept / slope),
+                         "last slack entry bar": (float(slack["pressure_bar"].max())
+                                                  if len(slack) else float("nan")),
+                         "largest deviation %": float(100.0 * np.max(np.abs(deviation))
+                                                      / force_map.largest_force_N)})
+    return pd.DataFrame(rows)
+
+
 # --- simulated maps ---------------------------------------------------------------------------
 
 def simulated_map(truth_params: dict, like: ForceMap, rng) -> ForceMap:
@@ -652,6 +677,7 @@ def main() -> None:
               "before_after": jsonable_frame(before_after(study, readings)),
               "simulated": jsonable_frame(simulated_table(simulated)),
               "rest_length": jsonable_frame(fitted_rest_lengths(study, maps)),
+              "lines": jsonable_frame(measured_lines(maps)),
               "fits": jsonable_frame(study)}
     write_json_atomic(args.out, record)
     buffer = io.BytesIO()
