@@ -30,19 +30,19 @@ C10 and C01 times ``s``) fitted, plus the physics it adds:
 
 alone and in pairs (a pair's gap is the braid-nominal one). The maps are isometric ramps read
 once (one force per length and pressure, no loading and unloading branch): friction or
-hysteresis, which only the difference between the branches shows, cannot be fitted to them. Data: the Martens and Boblan force
-maps of two Festo muscles
-(``data/published/``; D0 the nominal diameter, t0 1.8 mm as the third party assumed). Each
-candidate is fitted (``scipy.optimize.least_squares``, bounds, several starts; a fit that does
-not converge is reported as such) on two held lengths other than the rest length, and scored on
-the rest-length curve and the other held lengths: the largest error as % of the muscle's largest
-measured force (100 % at a point where the fitted law has no wall state), the threshold pressure at eps 0 against the measured one, and AIC/BIC of the
-training fit. The table's ``zero_entry`` rows (0 N where the muscle is slack) are kept as
-one-sided constraints: the model's isometric force there (zero below its threshold) is the
-residual, so a model is charged only for predicting a pull where the muscle was slack. Every pair
-of held lengths is tried; the default pair is the two longest below the rest length. Pairs that
-include the rest length are tried too and summarised apart: they say whether a model can hold
-the whole map when the rest-length curve is known, not whether it predicts it.
+hysteresis, which only the difference between the branches shows, cannot be fitted to them.
+Data: the Martens and Boblan force maps of two Festo muscles (``data/published/``; D0 the nominal
+diameter, t0 1.8 mm as the third party assumed). Each candidate is fitted
+(``scipy.optimize.least_squares``, bounds, several starts; a fit that does not converge is reported
+as such) on two held lengths other than the rest length, and scored on the rest-length curve and the
+other held lengths: the largest error as % of the muscle's largest measured force (100 % at a point
+where the fitted law has no wall state), the threshold pressure at eps 0 against the measured one,
+and AIC/BIC of the training fit. The table's ``zero_entry`` rows (0 N where the muscle is slack) are
+kept as one-sided constraints: the model's isometric force there (zero below its threshold) is the
+residual, so a model is charged only for predicting a pull where the muscle was slack. Every pair of
+held lengths is tried; the default pair is the two longest below the rest length. Pairs that include
+the rest length are tried too and summarised apart: they say whether a model can hold the whole map
+when the rest-length curve is known, not whether it predicts it.
 
 Each map is read with the table's longest length as the rest length (the data file's reading)
 and, where it differs, with Festo's nominal length (:data:`NOMINAL_LENGTH_MM`): the DMSP-20-300's

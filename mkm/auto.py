@@ -16,21 +16,21 @@ muscle's sweep) a posteriori, at those very points:
   convergence table (the study's, ``mkm/data/model_errors.csv``, times :data:`MESH_SAFETY`);
   the fine mesh is the reference (bound 0).
 
-Candidates are tried cheapest first (their measured seconds per force, from the study table);
-by default ONE model answers the whole call, the cheapest whose largest bound over all points
-meets the tolerance and whose prediction is valid at every point, so a curve never mixes models.
-``per_point=True`` chooses per point. Outside the surrogate's box (a point, or a muscle parameter
-it was not trained on) there is no estimate of the reference: only the FE meshes qualify, and
-the fine mesh answers if nothing else does. A gap between tube and braid (``gap_mm`` other than
-0, given or held by the candidates' calibration: a muscle identified with a gap) is modelled by the closed form and the FE (their registry entries take it), not by the
-surrogate, so only they may answer: the closed form bound by its error at the same points
-without the gap (the surrogate, the reference's estimate, has no gap), an FE mesh by its
-recorded mesh error (with a gap the coarse mesh is as close to the fine one:
-``tests/fem/fe/test_contact.py``), and the fine mesh, with the gap, if nothing else meets the
-tolerance. Each point records the model that
-answered (``model_used``), its bound (``error_bound_pct``) and how the bound was obtained
-(``bound_source``); :func:`explain` says it in words, and the parameters (the provenance) name
-the reference and the factor.
+Candidates are tried cheapest first (their measured seconds per force, from the study table); by
+default ONE model answers the whole call, the cheapest whose largest bound over all points meets the
+tolerance and whose prediction is valid at every point, so a curve never mixes models.
+``per_point=True`` chooses per point. Outside the surrogate's box (a point, or a muscle parameter it
+was not trained on) there is no estimate of the reference: only the FE meshes qualify, and the fine
+mesh answers if nothing else does. A gap between tube and braid (``gap_mm`` other than 0, given or
+held by the candidates' calibration: a muscle identified with a gap) is modelled by the closed form
+and the FE (their registry entries take it), not by the surrogate, so only they may answer: the
+closed form bound by its error at the same points without the gap (the surrogate, the reference's
+estimate, has no gap), an FE mesh by its recorded mesh error (with a gap the coarse mesh is as close
+to the fine one: ``tests/fem/fe/test_contact.py``), and the fine mesh, with the gap, if nothing else
+meets the tolerance; :func:`explain` says first that the surrogate cannot answer. Each point records
+the model that answered (``model_used``), its bound (``error_bound_pct``) and how the bound was
+obtained (``bound_source``); :func:`explain` says it in words, and the parameters (the provenance)
+name the reference and the factor.
 """
 
 from __future__ import annotations
