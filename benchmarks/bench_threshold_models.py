@@ -133,6 +133,8 @@ BASELINE, KEPT = "thick-wall (baseline)", "gap, braid nominal"
 #: rubber fitted to the DMSP-20-300)
 TRUTHS = {"thick-wall (baseline)": {}, "gap, braid nominal": {"gap_inside_mm": 0.9},
           "extensibility": {"stretch_per_bar": 0.01}, "Gent": {"gent_inv_Jm": 0.3},
+          # W1 = C10 (1 - 0.6 x + 0.3 x^2): softens by a fifth at I1 - 3 = 0.5, never to zero
+          "Yeoh": {"yeoh_c20": -0.3, "yeoh_c30": 0.1},
           "ends": {"end_factor": 1.15}}
 
 
