@@ -19,24 +19,30 @@ C10 and C01 times ``s``) fitted, plus the physics it adds:
 - ``Gent``: the rubber's I1 term stiffening at large stretch, ``W = -(C10 / j) ln(1 - j (I1 -
   3)) + C01 (I2 - 3)`` (Gent 1996 with the Mooney-Rivlin I2 term; ``j = 1 / Jm``, 0 is
   Mooney-Rivlin), its wall force by Gauss-Legendre quadrature through the wall;
+- ``Yeoh``: the rubber's I1 term as Yeoh's cubic, ``W = C10 (I1 - 3) + C20 (I1 - 3)^2 + C30 (I1
+  - 3)^3 + C01 (I2 - 3)`` (Yeoh 1993 with the Mooney-Rivlin I2 term, so that C20 = C30 = 0 is
+  today's rubber; ``yeoh_c20``, ``yeoh_c30`` are C20 / C10 and C30 / C10): a filled rubber's
+  stiff start that softens (C20 < 0) and stiffens again at large stretch, by the same quadrature;
 - ``ends``: the clamped ends' share, by Tondu and Lopez's factor (the mid-section held at ``k
   eps``); the ladder's FE models the ends themselves, this is their closed-form stand-in;
 - ``rest length``: the rest length fitted (``rest_offset``, the shortening of the table's longest
   length): not physics of the muscle but of the data's reading;
 
-alone and in pairs (a pair's gap is the braid-nominal one). Data: the Martens and Boblan force
-maps of two Festo muscles
-(``data/published/``; D0 the nominal diameter, t0 1.8 mm as the third party assumed). Each
-candidate is fitted (``scipy.optimize.least_squares``, bounds, several starts; a fit that does
-not converge is reported as such) on two held lengths other than the rest length, and scored on
-the rest-length curve and the other held lengths: the largest error as % of the muscle's largest
-measured force, the threshold pressure at eps 0 against the measured one, and AIC/BIC of the
-training fit. The table's ``zero_entry`` rows (0 N where the muscle is slack) are kept as
-one-sided constraints: the model's isometric force there (zero below its threshold) is the
-residual, so a model is charged only for predicting a pull where the muscle was slack. Every pair
-of held lengths is tried; the default pair is the two longest below the rest length. Pairs that
-include the rest length are tried too and summarised apart: they say whether a model can hold
-the whole map when the rest-length curve is known, not whether it predicts it.
+alone and in pairs (a pair's gap is the braid-nominal one). The maps are isometric ramps read
+once (one force per length and pressure, no loading and unloading branch): friction or
+hysteresis, which only the difference between the branches shows, cannot be fitted to them.
+Data: the Martens and Boblan force maps of two Festo muscles (``data/published/``; D0 the nominal
+diameter, t0 1.8 mm as the third party assumed). Each candidate is fitted
+(``scipy.optimize.least_squares``, bounds, several starts; a fit that does not converge is reported
+as such) on two held lengths other than the rest length, and scored on the rest-length curve and the
+other held lengths: the largest error as % of the muscle's largest measured force (100 % at a point
+where the fitted law has no wall state), the threshold pressure at eps 0 against the measured one,
+and AIC/BIC of the training fit. The table's ``zero_entry`` rows (0 N where the muscle is slack) are
+kept as one-sided constraints: the model's isometric force there (zero below its threshold) is the
+residual, so a model is charged only for predicting a pull where the muscle was slack. Every pair of
+held lengths is tried; the default pair is the two longest below the rest length. Pairs that include
+the rest length are tried too and summarised apart: they say whether a model can hold the whole map
+when the rest-length curve is known, not whether it predicts it.
 
 Each map is read with the table's longest length as the rest length (the data file's reading)
 and, where it differs, with Festo's nominal length (:data:`NOMINAL_LENGTH_MM`): the DMSP-20-300's
@@ -85,6 +91,10 @@ EXTRAS = {
     "slack": (0.01, 0.0, 0.2, "braid thread slack [fraction]"),
     "stretch_per_bar": (0.002, 0.0, 0.05, "fibre stretch per bar [1/bar]"),
     "gent_inv_Jm": (0.05, 0.0, 2.0, "Gent 1/Jm [-]"),
+    # W1 = C10 (1 + 2 c20 x + 3 c30 x^2) > 0 for every x = I1 - 3 >= 0 needs c20 > -sqrt(3 c30):
+    # a start that softens a little and stiffens a little
+    "yeoh_c20": (-0.1, -2.0, 2.0, "Yeoh C20 / C10 [-]"),
+    "yeoh_c30": (0.05, 0.0, 5.0, "Yeoh C30 / C10 [-]"),
     "end_factor": (1.1, 1.0, 2.0, "Tondu-Lopez end factor k [-]"),
     "rest_offset": (0.005, -0.05, 0.05, "shortening of the table's longest length [fraction]"),
 }
@@ -108,11 +118,14 @@ CANDIDATES = (
     Candidate("slack", ("slack",)),
     Candidate("extensibility", ("stretch_per_bar",)),
     Candidate("Gent", ("gent_inv_Jm",)),
+    Candidate("Yeoh", ("yeoh_c20", "yeoh_c30")),
     Candidate("ends", ("end_factor",)),
     Candidate("rest length", ("rest_offset",)),
     Candidate("gap + extensibility", ("gap_inside_mm", "stretch_per_bar")),
     Candidate("gap + Gent", ("gap_inside_mm", "gent_inv_Jm")),
+    Candidate("gap + Yeoh", ("gap_inside_mm", "yeoh_c20", "yeoh_c30")),
     Candidate("gap + ends", ("gap_inside_mm", "end_factor")),
+    Candidate("gap + rest length", ("gap_inside_mm", "rest_offset")),
     Candidate("extensibility + Gent", ("stretch_per_bar", "gent_inv_Jm")),
 )
 BASELINE, KEPT = "thick-wall (baseline)", "gap, braid nominal"
@@ -120,17 +133,21 @@ BASELINE, KEPT = "thick-wall (baseline)", "gap, braid nominal"
 #: rubber fitted to the DMSP-20-300)
 TRUTHS = {"thick-wall (baseline)": {}, "gap, braid nominal": {"gap_inside_mm": 0.9},
           "extensibility": {"stretch_per_bar": 0.01}, "Gent": {"gent_inv_Jm": 0.3},
+          # W1 = C10 (1 - 0.6 x + 0.3 x^2): softens by a fifth at I1 - 3 = 0.5, never to zero
+          "Yeoh": {"yeoh_c20": -0.3, "yeoh_c30": 0.1},
           "ends": {"end_factor": 1.15}}
 
 
 # --- the candidates' physics ------------------------------------------------------------------
 
-def gent_elastic_force(D0_mm, t0_mm, eps, theta0_deg, gap_mm, C10_MPa, C01_MPa, inv_Jm):
-    """``dE/dlz`` [N] of the braided tube with the Gent-Mooney-Rivlin energy, by quadrature.
+def i1_law_elastic_force(D0_mm, t0_mm, eps, theta0_deg, gap_mm, C10_MPa, C01_MPa, w1_factor):
+    """``dE/dlz`` [N] of the braided tube whose rubber has ``W1 = dW/dI1 = C10 w1_factor(I1 -
+    3)`` and ``dW/dI2 = C01``, by quadrature through the wall.
 
     ``E = pi * integral of W dx`` over ``x = R^2`` through the wall, differentiated under the
-    integral: ``W1 dI1/dlz + C01 dI2/dlz`` with ``W1 = C10 / (1 - j (I1 - 3))``. The
-    kinematics are :func:`mkm.fem.thickwall.mid_section_kinematics`'. NaN past the Gent limit.
+    integral: ``W1 dI1/dlz + C01 dI2/dlz``. The kinematics are
+    :func:`mkm.fem.thickwall.mid_section_kinematics`'. NaN where ``w1_factor`` is NaN or not
+    positive (no stable wall state: past the Gent limit, a Yeoh law that softens to nothing).
     """
     Ri2, Ro2, lz, k, _, ro2, _, cot2 = mid_section_kinematics(D0_mm, t0_mm, eps, theta0_deg,
                                                               gap_mm)
@@ -145,14 +162,29 @@ def gent_elastic_force(D0_mm, t0_mm, eps, theta0_deg, gap_mm, C10_MPa, C01_MPa, 
     dI1 = 2.0 * lz_ + da - da / (a**2 * lz_**2) - 2.0 / (a * lz_**3)
     dI2 = da * lz_**2 + 2.0 * a * lz_ - 2.0 / lz_**3 - da / a**2
     with np.errstate(divide="ignore", invalid="ignore"):
-        room = 1.0 - np.asarray(inv_Jm, dtype=float)[..., None] * (I1 - 3.0)
-        W1 = np.where(room > 0, C10_MPa / room, np.nan)
+        factor = w1_factor(I1 - 3.0)
+        W1 = np.where(factor > 0, C10_MPa * factor, np.nan)
     return np.pi * np.sum((W1 * dI1 + C01_MPa * dI2) * GAUSS_W, axis=-1) * half
+
+
+def gent_elastic_force(D0_mm, t0_mm, eps, theta0_deg, gap_mm, C10_MPa, C01_MPa, inv_Jm):
+    """``dE/dlz`` [N] with the Gent-Mooney-Rivlin energy (``W1 = C10 / (1 - j (I1 - 3))``)."""
+    j = np.asarray(inv_Jm, dtype=float)[..., None]
+    return i1_law_elastic_force(D0_mm, t0_mm, eps, theta0_deg, gap_mm, C10_MPa, C01_MPa,
+                                lambda x: 1.0 / (1.0 - j * x))
+
+
+def yeoh_elastic_force(D0_mm, t0_mm, eps, theta0_deg, gap_mm, C10_MPa, C01_MPa, c20, c30):
+    """``dE/dlz`` [N] with the Yeoh-Mooney-Rivlin energy (``W1 = C10 (1 + 2 c20 x + 3 c30
+    x^2)``, ``x = I1 - 3``)."""
+    c20, c30 = (np.asarray(c, dtype=float)[..., None] for c in (c20, c30))
+    return i1_law_elastic_force(D0_mm, t0_mm, eps, theta0_deg, gap_mm, C10_MPa, C01_MPa,
+                                lambda x: 1.0 + 2.0 * c20 * x + 3.0 * c30 * x**2)
 
 
 def candidate_force(P, eps, D0_mm, t0_mm, theta0_deg, rubber_scale, gap_mm=0.0,
                     gap_inside_mm=0.0, slack=0.0, stretch_per_bar=0.0, gent_inv_Jm=0.0,
-                    end_factor=1.0, rest_offset=0.0, raw=False):
+                    end_factor=1.0, rest_offset=0.0, yeoh_c20=0.0, yeoh_c30=0.0, raw=False):
     """Isometric force [N] of a candidate (see the module docstring); 0 where the muscle is
     slack (below its threshold, or held beyond its braid lock), NaN where the wall has no state
     (past the Gent limit). ``raw``: the force before the slack is taken out (negative below
@@ -170,6 +202,10 @@ def candidate_force(P, eps, D0_mm, t0_mm, theta0_deg, rubber_scale, gap_mm=0.0,
     if gent_inv_Jm:
         force = (chou_hannaford(P, 2.0 * braid_radius, eps, theta_deg)
                  + gent_elastic_force(D0_mm, t0_mm, eps, theta_deg, gap, C10, C01, gent_inv_Jm))
+    elif yeoh_c20 or yeoh_c30:
+        force = (chou_hannaford(P, 2.0 * braid_radius, eps, theta_deg)
+                 + yeoh_elastic_force(D0_mm, t0_mm, eps, theta_deg, gap, C10, C01, yeoh_c20,
+                                      yeoh_c30))
     else:
         force = klute_hannaford(P, D0_mm, t0_mm, eps, theta_deg, C10, C01, gap)
     if raw:
@@ -346,7 +382,9 @@ def score(fit: Fit, force_map: ForceMap, train_eps, physics: Physics = CLOSED_FO
         return {"converged": False, "message": fit.message}
     rows = force_map.rows
     scale = force_map.largest_force_N / 100.0
-    err = _residuals(force_map, rows, fit.params, physics) / scale
+    # a point where the fitted law has no wall state (a Yeoh law softened to nothing, past the
+    # Gent limit) counts as a whole largest force off, as in the fit
+    err = np.nan_to_num(_residuals(force_map, rows, fit.params, physics) / scale, nan=100.0)
     measured = rows["zero_entry"].to_numpy() == 0
     rest = rows["eps"].to_numpy() == 0
     held_out = ~np.isin(rows["eps"].to_numpy(), train_eps)
@@ -460,6 +498,31 @@ def fitted_rest_lengths(study: pd.DataFrame, maps: list[ForceMap]) -> pd.DataFra
                          "fitted rest length mm": force_map.table_L0_mm
                          / (1.0 - fit["rest_offset"]),
                          "other lengths max err %": fit["other_max_err_pct"]})
+    return pd.DataFrame(rows)
+
+
+def measured_lines(maps: list[ForceMap]) -> pd.DataFrame:
+    """Per muscle and held length: the least-squares line through its measured forces (slope
+    and zero, the threshold the data themselves give) and the largest deviation from it, as %
+    of the muscle's largest force; the model-free picture of how the threshold grows with the
+    shortening."""
+    rows = []
+    for force_map in maps:
+        for eps, group in force_map.rows.groupby("eps"):
+            loaded = group[group["zero_entry"] == 0]
+            if len(loaded) < 3:
+                continue
+            slope, intercept = np.polyfit(loaded["pressure_bar"], loaded["force_N"], 1)
+            deviation = np.polyval([slope, intercept], loaded["pressure_bar"]) - loaded["force_N"]
+            slack = group[(group["zero_entry"] == 1)
+                          & (group["pressure_bar"] < loaded["pressure_bar"].min())]
+            rows.append({"muscle": force_map.muscle, "eps (table)": float(eps),
+                         "points": len(loaded), "slope N/bar": float(slope),
+                         "line's zero bar": float(-intercept / slope),
+                         "last slack entry bar": (float(slack["pressure_bar"].max())
+                                                  if len(slack) else float("nan")),
+                         "largest deviation %": float(100.0 * np.max(np.abs(deviation))
+                                                      / force_map.largest_force_N)})
     return pd.DataFrame(rows)
 
 
@@ -616,6 +679,7 @@ def main() -> None:
               "before_after": jsonable_frame(before_after(study, readings)),
               "simulated": jsonable_frame(simulated_table(simulated)),
               "rest_length": jsonable_frame(fitted_rest_lengths(study, maps)),
+              "lines": jsonable_frame(measured_lines(maps)),
               "fits": jsonable_frame(study)}
     write_json_atomic(args.out, record)
     buffer = io.BytesIO()

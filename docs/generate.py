@@ -374,11 +374,11 @@ def benchmark_tables() -> None:
 
 
 def threshold_model_tables() -> None:
-    """The threshold study's before/after, simulated-truth and fitted rest-length tables (its
-    selection table is the generic ``bench_threshold_models.md``), from
+    """The threshold study's before/after, simulated-truth, fitted rest-length and measured
+    line tables (its selection table is the generic ``bench_threshold_models.md``), from
     ``docs/measured/threshold_models.json``."""
     path = MEASURED / "threshold_models.json"
-    for key in ("before_after", "simulated", "rest_length"):
+    for key in ("before_after", "simulated", "rest_length", "lines"):
         if not path.exists():
             text = "*Not measured in this checkout: run `make bench-docs`.*\n"
         else:

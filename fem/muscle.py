@@ -1,10 +1,11 @@
 """The muscle: one description of a McKibben muscle for every package.
 
 A muscle is its tube (inner diameter ``D0_mm``, wall ``t0_mm``), its length at rest ``L0_mm``,
-its braid angle at rest ``theta0_deg`` and its rubber (Mooney-Rivlin ``C10_MPa``, ``C01_MPa``),
-the +- tolerances it is made to, and, on a bench, its ``id``; the shortening ratio ``eps`` (a
-fraction) is where it is held. ``None`` for the angle or the rubber means "not known": the
-models' defaults (the calibrated angle, Silastic S).
+its braid angle at rest ``theta0_deg``, its rubber (Mooney-Rivlin ``C10_MPa``, ``C01_MPa``), the
+radial gap between its tube and its braid at rest ``gap_mm``, the +- tolerances it is made to,
+and, on a bench, its ``id``; the shortening ratio ``eps`` (a fraction) is where it is held.
+``None`` for the angle, the rubber or the gap means "not known": the models' defaults (the
+calibrated angle, Silastic S, the calibration's gap or none).
 
 The bench configuration's ``[muscle]`` table, a run folder's ``run.json`` (read by report and
 identify), the force models (:meth:`mkm.fem.interface.ForceModel.predict_muscle`, models built
@@ -22,9 +23,10 @@ from mkm.fem.limits import LIMITS, check_muscle_id, check_value, check_wall
 from mkm.fem.tolerances import Tolerances
 
 #: the numbers of a muscle, in the order run.json and tables list them
-NUMBERS = ("D0_mm", "t0_mm", "L0_mm", "eps", "theta0_deg", "C10_MPa", "C01_MPa")
-#: the numbers a force model is built with (its geometry and eps are what it predicts at)
-MODEL_PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
+NUMBERS = ("D0_mm", "t0_mm", "L0_mm", "eps", "theta0_deg", "C10_MPa", "C01_MPa", "gap_mm")
+#: the numbers a force model is built with (its geometry and eps are what it predicts at; a
+#: model takes those of them it has a parameter for, ``gap_mm`` only the models of a gap)
+MODEL_PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa", "gap_mm")
 #: the numbers a muscle always has (the others: None when not known)
 REQUIRED = ("D0_mm", "t0_mm", "L0_mm", "eps")
 
@@ -45,6 +47,10 @@ class Muscle:
         Braid angle at rest [deg]; None: the model's calibrated angle.
     C10_MPa, C01_MPa : float or None
         Mooney-Rivlin constants of the rubber [MPa]; None: the calibration's, else Silastic S.
+    gap_mm : float or None
+        Radial gap between the tube's outer surface and the braid at rest [mm] (the braid is
+        ``D0 + 2 t0 + 2 gap`` wide); None: the calibration's (an identified muscle), else 0.
+        Only the models of a gap (``thickwall``, ``axisym``) take it.
     id : str
         What the muscle is called on a bench (names its run folders); empty for a muscle of a
         computation.
@@ -59,6 +65,7 @@ class Muscle:
     theta0_deg: float | None = None
     C10_MPa: float | None = None
     C01_MPa: float | None = None
+    gap_mm: float | None = None
     id: str = ""
     tolerances: Tolerances = field(default_factory=Tolerances)
 
@@ -108,7 +115,7 @@ class Muscle:
         return {k: getattr(self, k) for k in MODEL_PARAMETERS if getattr(self, k) is not None}
 
     def record(self) -> dict[str, Any]:
-        """What a run folder records of it: ``id``, the geometry and ``eps``, and the angle and
-        rubber when known (the tolerances go with the run's calibration)."""
+        """What a run folder records of it: ``id``, the geometry and ``eps``, and the angle,
+        rubber and gap when known (the tolerances go with the run's calibration)."""
         return {"id": self.id, **{k: getattr(self, k) for k in NUMBERS
                                   if getattr(self, k) is not None}}

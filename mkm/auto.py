@@ -16,21 +16,21 @@ muscle's sweep) a posteriori, at those very points:
   convergence table (the study's, ``mkm/data/model_errors.csv``, times :data:`MESH_SAFETY`);
   the fine mesh is the reference (bound 0).
 
-Candidates are tried cheapest first (their measured seconds per force, from the study table);
-by default ONE model answers the whole call, the cheapest whose largest bound over all points
-meets the tolerance and whose prediction is valid at every point, so a curve never mixes models.
-``per_point=True`` chooses per point. Outside the surrogate's box (a point, or a muscle parameter
-it was not trained on) there is no estimate of the reference: only the FE meshes qualify, and
-the fine mesh answers if nothing else does. A gap between tube and braid (``gap_mm`` other than
-0) is modelled by the closed form and the FE (their registry entries take it), not by the
-surrogate, so only they may answer: the closed form bound by its error at the same points
-without the gap (the surrogate, the reference's estimate, has no gap), an FE mesh by its
-recorded mesh error (with a gap the coarse mesh is as close to the fine one:
-``tests/fem/fe/test_contact.py``), and the fine mesh, with the gap, if nothing else meets the
-tolerance. Each point records the model that
-answered (``model_used``), its bound (``error_bound_pct``) and how the bound was obtained
-(``bound_source``); :func:`explain` says it in words, and the parameters (the provenance) name
-the reference and the factor.
+Candidates are tried cheapest first (their measured seconds per force, from the study table); by
+default ONE model answers the whole call, the cheapest whose largest bound over all points meets the
+tolerance and whose prediction is valid at every point, so a curve never mixes models.
+``per_point=True`` chooses per point. Outside the surrogate's box (a point, or a muscle parameter it
+was not trained on) there is no estimate of the reference: only the FE meshes qualify, and the fine
+mesh answers if nothing else does. A gap between tube and braid (``gap_mm`` other than 0, given or
+held by the candidates' calibration: a muscle identified with a gap) is modelled by the closed form
+and the FE (their registry entries take it), not by the surrogate, so only they may answer: the
+closed form bound by its error at the same points without the gap (the surrogate, the reference's
+estimate, has no gap), an FE mesh by its recorded mesh error (with a gap the coarse mesh is as close
+to the fine one: ``tests/fem/fe/test_contact.py``), and the fine mesh, with the gap, if nothing else
+meets the tolerance; :func:`explain` says first that the surrogate cannot answer. Each point records
+the model that answered (``model_used``), its bound (``error_bound_pct``) and how the bound was
+obtained (``bound_source``); :func:`explain` says it in words, and the parameters (the provenance)
+name the reference and the factor.
 """
 
 from __future__ import annotations
@@ -93,6 +93,13 @@ def takes_gap(spec: str) -> bool:
     return name in MODELS.names() and "gap_mm" in MODELS.entry(name).parameters
 
 
+def physics_rungs(gap: bool) -> list[str]:
+    """The registry's physics rungs (closed forms and FE) that take ``gap_mm`` (or not)."""
+    return [name for name in MODELS.names()
+            if MODELS.entry(name).family in ("closed form", "FE")
+            and ("gap_mm" in MODELS.entry(name).parameters) == gap]
+
+
 def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
     """Per point, the largest reference force of its muscle (same D0, t0, eps): Equation 7's
     denominator."""
@@ -148,20 +155,40 @@ class AutoModel(ForceModel):
 
     @property
     def gapped(self) -> bool:
-        """Whether the muscle has a gap, which only some candidates model."""
-        return bool(self.gap_mm)
+        """Whether the muscle has a gap, which only some candidates model: given, or else the
+        one a candidate of a gap takes from its calibration (a muscle identified with one)."""
+        return bool(self.resolved_gap_mm())
+
+    def resolved_gap_mm(self) -> float:
+        """The gap [mm] the candidates of a gap answer with: ``gap_mm`` if given, else the
+        largest their calibration entries hold (0 where they hold none)."""
+        if self.gap_mm is not None:
+            return float(self.gap_mm)
+        gaps = [0.0]
+        for name in physics_rungs(gap=True):
+            try:
+                gaps.append(float(self.build(name, **self.muscle).params().get("gap_mm", 0.0)))
+            except ValueError:  # no entry in this calibration: it has no gap of its own
+                continue
+        return max(gaps)
 
     def params(self):
         path = Path(self.table or MODEL_ERRORS_FILE)
         digest = file_sha256(path)[:12] if path.exists() else None
         gap = {"gap_mm": self.gap_mm} if self.gap_mm is not None else {}
+        resolved = self.resolved_gap_mm()
+        gap.update({"resolved_gap_mm": resolved} if resolved else {})
         return {"tolerance": self.tolerance, "per_point": self.per_point, **self.muscle, **gap,
                 "table": path.name, "table_sha256": digest, "reference": REFERENCE_SPEC,
                 "std_factor": STD_FACTOR, "mesh_safety": MESH_SAFETY}
 
     def _candidate(self, spec: str, gap: bool = True) -> ForceModel:
-        """Candidate ``spec`` at the muscle; with its gap if ``gap`` and it takes one."""
-        extra = {"gap_mm": self.gap_mm} if gap and self.gap_mm is not None else {}
+        """Candidate ``spec`` at the muscle; if it takes a gap, with the muscle's if ``gap``
+        (given, else its calibration's), else with none."""
+        extra = {}
+        if takes_gap(spec):
+            extra = ({"gap_mm": 0.0} if not gap
+                     else {"gap_mm": self.gap_mm} if self.gap_mm is not None else {})
         return self.build(spec, **self.muscle, **extra)
 
     def reference(self, P, D0, t0, eps) -> tuple[np.ndarray, np.ndarray] | None:
@@ -196,6 +223,7 @@ class AutoModel(ForceModel):
         source = np.full(P.shape, "the fine mesh is the reference", dtype=object)
         todo = np.ones(P.shape, dtype=bool)
         ref = self.reference(P, D0, t0, eps)
+        gapped = self.gapped
         if ref is not None:
             R, s = ref
             scale = _sweep_scale(R, np.stack([D0, t0, eps], axis=1))
@@ -204,7 +232,7 @@ class AutoModel(ForceModel):
                 break
             if row.predictor == FALLBACK:
                 continue
-            if self.gapped and not takes_gap(row.spec):
+            if gapped and not takes_gap(row.spec):
                 continue  # it would answer without the gap
             model_pred = None
             if row.family == "FE":
@@ -224,7 +252,7 @@ class AutoModel(ForceModel):
                 bound = 100.0 * (distance + STD_FACTOR * s) / scale
                 why = (f"|{row.predictor} - surrogate| + {STD_FACTOR:g} x the surrogate's "
                        "calibrated std")
-                if self.gapped:
+                if gapped:
                     model_pred, why = None, f"{GAP_FREE}: {why}"  # it answers with the gap
             meets = bound <= tol  # NaN never meets it
             if not self.per_point and not meets[todo].all():
@@ -275,18 +303,30 @@ def spec_of(predictor: str, table: Path | str | None = None) -> str:
     return str(match.iloc[0]) if len(match) else predictor
 
 
+def gap_note(gap_mm: float | None) -> str | None:
+    """What a gap between tube and braid leaves out of auto's candidates (None without one):
+    the surrogate and the physics rungs whose registry entry takes no ``gap_mm``."""
+    if not gap_mm:
+        return None
+    return (f"auto: gap_mm={gap_mm:g}: the surrogate models no gap between tube and braid and "
+            f"cannot answer here, nor can {', '.join(physics_rungs(gap=False))}; the "
+            f"candidates are {', '.join(physics_rungs(gap=True))}, with the gap")
+
+
 def explain(prediction, tolerance: float | None = None,
-            label: Callable[[str], str] = str) -> str:
-    """One line per model used: how many points it answered, its bound and how it was bound.
+            label: Callable[[str], str] = str, gap_mm: float | None = None) -> str:
+    """One line per model used: how many points it answered, its bound and how it was bound;
+    first, with a gap between tube and braid, which models could not answer (:func:`gap_note`).
 
     ``prediction``: a :class:`Prediction` of :class:`AutoModel`, or the dict of
-    :meth:`AutoModel.choose` with ``tolerance`` given; ``label`` names a study predictor
-    (:func:`mkm.verdict.model_label`: the registry's name).
+    :meth:`AutoModel.choose` with ``tolerance`` (and the muscle's ``gap_mm``, if any) given;
+    ``label`` names a study predictor (:func:`mkm.verdict.model_label`: the registry's name).
     """
     if isinstance(prediction, dict):
         extras = prediction
     else:
         extras, tolerance = prediction.extras, prediction.params["tolerance"]
+        gap_mm = prediction.params.get("resolved_gap_mm")
     tol = 100.0 * tolerance
     used = np.ravel(extras["model_used"])
     bound = np.ravel(extras["error_bound_pct"])
@@ -301,4 +341,5 @@ def explain(prediction, tolerance: float | None = None,
             why = (f"the cheapest model whose error bound at these points is <= {tol:g}%: "
                    f"{np.nanmax(bound[here]):.2f}% ({source[here][0]})")
         lines.append(f"auto: {label(name)} for {here.sum()} of {used.size} points: {why}")
-    return "\n".join(lines)
+    note = gap_note(gap_mm)
+    return "\n".join([note, *lines] if note else lines)

@@ -64,11 +64,8 @@ def _auto(calibration: Calibration | None = None, **params) -> ForceModel:
     from functools import partial
 
     from mkm.auto import AutoModel  # here: auto reads its table with pandas
-    from mkm.fem.calibration import Calibration
 
-    if params.get("gap_mm") is None:  # as the thick-wall candidate would: an identified gap
-        found = (calibration or Calibration.shipped()).entries.get("thickwall", {})
-        params["gap_mm"] = found.get("gap_mm")
+    # a gap not given is the candidates' own (their calibration's): AutoModel.resolved_gap_mm
     return AutoModel(build=partial(build_spec, calibration=calibration), **params)
 
 

@@ -116,7 +116,31 @@ class _Run:
 # --- the report -------------------------------------------------------------------------------
 
 
-def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
+def default_models(calibration: Calibration | None = None) -> list[Spec]:
+    """:data:`DEFAULT_MODELS` less those that cannot take their defaults from ``calibration``
+    (a muscle identified with the thick-wall form has no FE entry, which the FE model and the
+    surrogate read); each left out is said in a warning naming the reason."""
+    specs = [parse_spec(text) for text in DEFAULT_MODELS]
+    if calibration is None:
+        return specs
+    kept = []
+    for spec in specs:
+        try:
+            if spec.name == "surrogate":  # its defaults, without loading (or training) it
+                from mkm.surrogate.model import default_parameters
+
+                default_parameters(calibration)
+            else:
+                spec.build(calibration).params()
+        except ValueError as exc:
+            warnings.warn(f"{spec.text} left out of the report: {exc}; or name the models "
+                          "with --models", stacklevel=2)
+            continue
+        kept.append(spec)
+    return kept
+
+
+def build_report(run_dirs, models=None, out_dir=None,
                  cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
                  tolerance: float | None = 0.02, surrogate_section: bool = True,
                  progress: bool = False, calibration: Calibration | None = None) -> Path:
@@ -127,9 +151,10 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     ----------
     run_dirs : list of path
         Run folders written by ``mkm acquire`` (real or simulated; aborted ones included).
-    models : iterable of str or Spec
+    models : iterable of str or Spec, optional
         Predictor specs (``eq2``, ``thickwall``, ``axisym:mesh=coarse``, ``surrogate``,
-        ``surrogate:path=DIR``), drawn in this order.
+        ``surrogate:path=DIR``), drawn in this order; default :func:`default_models` (those
+        of :data:`DEFAULT_MODELS` the calibration serves).
     out_dir : path, optional
         Output folder (default ``mkm-out/report/<first run folder name>``).
     cache_dir : path or None
@@ -148,7 +173,8 @@ def build_report(run_dirs, models=DEFAULT_MODELS, out_dir=None,
     run_dirs = [Path(p) for p in run_dirs]
     if not run_dirs:
         raise ValueError("no run folder given: expected at least one RUN_DIR")
-    specs = [m if isinstance(m, Spec) else parse_spec(m) for m in models]
+    specs = (default_models(calibration) if models is None
+             else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
     out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
         with staged_folder(out, last="report.html") as stage:
@@ -667,7 +693,8 @@ def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
                 used = str(chosen["model_used"][0])
                 choice = AutoPick(spec_of(used), model_label(used),
                                   float(np.nanmax(chosen["error_bound_pct"])),
-                                  explain(chosen, tolerance, model_label))
+                                  explain(chosen, tolerance, model_label,
+                                          gap_mm=auto.resolved_gap_mm()))
         r.auto_choices[tolerance] = choice
     return r.auto_choices[tolerance]
 

@@ -27,10 +27,11 @@ def register(subparsers) -> None:
     report.add_argument("runs", nargs="+", metavar="RUN_DIR",
                         help="run folder(s) of mkm acquire or mkm import; a pattern (runs/*, "
                         "expanded by mkm in any shell) or a folder holding run folders")
-    report.add_argument("--models", default="eq2,thickwall,axisym,surrogate",
+    report.add_argument("--models",
                         help="comma list of predictor specs (see `mkm models`): eq2, thickwall, "
                         "axisym:mesh=coarse, surrogate, surrogate:kind=gp, surrogate:path=DIR "
-                        "(default: %(default)s)")
+                        "(default: eq2,thickwall,axisym,surrogate, less those --calibration "
+                        "has no entry for, said in a note)")
     report.add_argument("--out", help="output folder (default: mkm-out/report/<first run name>)")
     report.add_argument("--tolerance", default=0.02, type=_fraction,
                         help="largest |Err%%| a model may have: the verdict names the cheapest "
@@ -101,11 +102,12 @@ def _report(args) -> int:
     from mkm.bench.folders import run_folders
     from mkm.progress import summary_line
     from mkm.registry import parse_specs
-    from mkm.report import build_report
+    from mkm.report import build_report, default_models
 
     start = time.perf_counter()
     args.runs = run_folders(args.runs)
-    specs = parse_specs(args.models)
+    specs = (default_models(args.calibration) if args.models is None
+             else parse_specs(args.models))
     path = build_report(args.runs, specs, out_dir=args.out, cache_dir=_cache(args),
                         tolerance=args.tolerance, progress=not args.no_progress,
                         calibration=args.calibration)

@@ -57,9 +57,10 @@ class DesignResult:
     def chosen_muscle(self, calibration: Calibration | None = None) -> Muscle | None:
         """The chosen design as a :class:`~mkm.fem.muscle.Muscle` (at rest, eps 0), ready for
         ``make_model(name, muscle=...)``; None when no design is confirmed. ``calibration``: where
-        a ``calibrated`` rubber comes from."""
-        best = self.chosen
-        return None if best is None else design_muscle(best, calibration)
+        a ``calibrated`` rubber comes from. A design with a gap between tube and braid records
+        it (``gap_mm``), so a model built for the muscle predicts with it."""
+        best, gap = self.chosen, self.search.constraints.get("gap_mm")
+        return None if best is None else design_muscle(best, calibration, gap_mm=gap)
 
     def summary(self) -> str:
         s = self.search

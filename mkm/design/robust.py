@@ -156,7 +156,7 @@ def _worst_corner_force(model, mesh, nominal, req, tolerances, cache_dir,
         else:
             corner[name] = corner[name] + step
     corner["eps"] = max(corner["eps"], 0.0)
-    muscle = Muscle(**{k: corner[k] for k in NUMBERS})
+    muscle = Muscle(**{k: corner.get(k) for k in NUMBERS})
     fe = parse_spec(f"axisym:mesh={mesh}").build(muscle=muscle)
     pred, _ = cached_predict(fe, req.pressure_bar, muscle.D0_mm, muscle.t0_mm, muscle.eps,
                              cache_dir=cache_dir)

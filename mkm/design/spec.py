@@ -30,13 +30,15 @@ def rubber_of(name: str, calibration: Calibration | None = None) -> MooneyRivlin
             entry = {}
         return mooney_rivlin(entry.get("C10_MPa"), entry.get("C01_MPa"))
     return MATERIALS[name]
-def design_muscle(row, calibration: Calibration | None = None, eps: float = 0.0) -> Muscle:
+def design_muscle(row, calibration: Calibration | None = None, eps: float = 0.0,
+                  gap_mm: float | None = None) -> Muscle:
     """The muscle a design (a row of the designs' table) describes, held at ``eps``: its
-    geometry, length, braid angle and rubber (``rubber`` named as in :func:`rubber_of`)."""
+    geometry, length, braid angle and rubber (``rubber`` named as in :func:`rubber_of`), and
+    the gap between tube and braid it was designed with (``gap_mm`` [mm]; None or 0: none)."""
     rubber = rubber_of(str(row["rubber"]), calibration)
     return Muscle(D0_mm=float(row["D0_mm"]), t0_mm=float(row["t0_mm"]),
                   L0_mm=float(row["L0_mm"]), eps=eps, theta0_deg=float(row["theta0_deg"]),
-                  C10_MPa=rubber.C10_MPa, C01_MPa=rubber.C01_MPa)
+                  C10_MPa=rubber.C10_MPa, C01_MPa=rubber.C01_MPa, gap_mm=gap_mm or None)
 
 
 #: A requirement is near the braid lock from 75 % of Equation 2's eps_max on: the pressure term

@@ -157,3 +157,27 @@ def test_outer_diameter_with_a_gap_is_the_wider_braids():
     assert outer_diameter_mm(D0, t0, theta0, 0.5 * threshold, gap_mm=gap) == pytest.approx(
         D0 + 2 * t0 + 2 * gap, rel=1e-9)
     assert outer_diameter_mm(D0, t0, theta0, 2.0, gap_mm=gap) > D0 + 2 * t0 + 2 * gap + 1.0
+
+
+def test_a_muscle_carries_its_gap_to_the_models_of_a_gap_only():
+    from mkm.fem.muscle import Muscle
+
+    muscle = Muscle(D0_mm=20.0, t0_mm=1.8, eps=0.0, theta0_deg=28.0, C10_MPa=C10, C01_MPa=C01,
+                    gap_mm=0.5, id="gapped")
+    assert muscle.record()["gap_mm"] == 0.5
+    assert Muscle.from_dict(muscle.record()) == muscle  # what run.json and design record
+    assert "gap_mm" not in Muscle(D0_mm=20.0, t0_mm=1.8, id="m").record()  # not known
+    model = make_model("thickwall", muscle=muscle)
+    pressures = np.linspace(0.0, 2.0, 9)
+    np.testing.assert_array_equal(
+        model.predict_muscle(muscle, pressures).force_N,
+        klute_hannaford(pressures, 20.0, 1.8, 0.0, 28.0, C10, C01, 0.5).clip(min=0.0))
+    # the threshold at rest length is the gapped muscle's, not 0
+    threshold = float(model.predict_muscle(muscle, 0.5).extras["threshold_pressure_bar"])
+    assert threshold > 0.1
+    assert threshold == pytest.approx(
+        klute_hannaford_threshold_pressure(20.0, 1.8, 0.0, 28.0, C10, C01, 0.5), rel=1e-12)
+    assert "gap_mm" not in make_model("eq2", muscle=muscle).params()  # Equation 2 has none
+    with pytest.raises(ValueError, match=r"^muscle.gap_mm=-0.1 is invalid: expected a radial "
+                                         r"gap between tube and braid"):
+        Muscle.from_dict({**muscle.record(), "gap_mm": -0.1})

@@ -7,11 +7,14 @@ the real default surrogate and check the promise against the FE itself.
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pandas as pd
 import pytest
 
 from mkm.auto import MESH_SAFETY, STD_FACTOR, AutoModel, explain, read_model_errors
+from mkm.fem.calibration import Calibration
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import make_model
 from mkm.registry import build_spec
@@ -194,6 +197,9 @@ def test_a_gap_never_reaches_the_surrogate(table_path):
     assert not np.allclose(gapped, gap_free.force_N, rtol=1e-3)
     np.testing.assert_allclose(pred.extras["error_bound_pct"], thick)
     assert "no reference models the gap" in explain(pred)
+    assert explain(pred).splitlines()[0] == (
+        "auto: gap_mm=0.5: the surrogate models no gap between tube and braid and cannot "
+        "answer here, nor can eq2; the candidates are thickwall, axisym, with the gap")
     assert pred.params["gap_mm"] == 0.5
 
     # where the surrogate alone meets the tolerance without a gap, with one the FE answers,
@@ -247,6 +253,35 @@ def test_an_identified_gap_is_autos_default_as_the_thick_walls(tmp_path):
     shipped = Calibration.shipped()
     entries = {**shipped.entries, "thickwall": {**shipped.entry("thickwall"), "gap_mm": 0.7}}
     learnt = Calibration(tmp_path / "calibration.json", entries)
-    assert build_spec("auto", learnt).gap_mm == 0.7
-    assert build_spec("auto:gap_mm=0", learnt).gap_mm == 0.0  # asked: the muscle has none
-    assert build_spec("auto").gap_mm is None  # the shipped calibration identified no gap
+    assert build_spec("auto", learnt).resolved_gap_mm() == 0.7
+    assert build_spec("auto:gap_mm=0", learnt).resolved_gap_mm() == 0.0  # asked: none
+    assert build_spec("auto").resolved_gap_mm() == 0.0  # the shipped calibration has none
+
+
+def test_a_gap_the_calibration_holds_keeps_the_surrogate_out_too(table_path, tmp_path):
+    """A muscle identified with a gap (its calibration entry holds ``gap_mm``): auto answers
+    with the gap as if it had been given, and says the surrogate cannot."""
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {"theta0_deg": 30.0, "gap_mm": 0.5},
+                               "axisym": {"theta0_deg": 30.0, "gap_mm": 0.5}}))
+    calibration = Calibration.load(lab)
+
+    def build(spec, **muscle):
+        return fake_build(spec, **muscle) if spec == "surrogate" else build_spec(
+            spec, calibration=calibration, **muscle)
+
+    given = AutoModel(table=table_path, build=build, tolerance=0.01, gap_mm=0.5,
+                      theta0_deg=30.0)
+    held = AutoModel(table=table_path, build=build, tolerance=0.01, theta0_deg=30.0)
+    assert held.resolved_gap_mm() == 0.5
+    a, b = (m.predict(P, 35.0, 2.5, 0.05) for m in (given, held))
+    assert set(b.extras["model_used"]) == {"axisym-coarse"}  # its bound 0.6 % meets 1 %
+    np.testing.assert_array_equal(a.force_N, b.force_N)
+    np.testing.assert_array_equal(b.force_N, make_model(
+        "axisym", mesh="coarse", theta0_deg=30.0, gap_mm=0.5).predict(P, 35.0, 2.5, 0.05).force_N)
+    assert explain(b).startswith("auto: gap_mm=0.5: the surrogate models no gap")
+    # without the gap the surrogate, cheaper, meets the same tolerance and answers
+    free = AutoModel(table=table_path, build=fake_build, tolerance=0.01, theta0_deg=30.0)
+    assert set(free.predict(P, 35.0, 2.5, 0.05).extras["model_used"]) == {
+        "surrogate-muscle-gp"}
+    assert "gap_mm" not in explain(free.predict(P, 35.0, 2.5, 0.05))

@@ -7,6 +7,7 @@ below. The default of the command is the medium mesh.
 
 import json
 import re
+from dataclasses import replace
 
 import numpy as np
 import pandas as pd
@@ -342,6 +343,13 @@ def test_a_gap_makes_the_fe_search_and_verify_with_it():
     assert float(fe_force(best["D0_mm"], best["t0_mm"], 2.5, 0.1, best["theta0_deg"])) != \
         pytest.approx(best["r1_fe_N"], rel=1e-3)  # not the gap-free muscle's
     assert design_record(result)["constraints"]["gap_mm"] == 0.5
+    # the chosen muscle records its gap, so every model built for it predicts with it
+    muscle = result.chosen_muscle()
+    assert muscle.gap_mm == 0.5 and design_record(result)["chosen_muscle"]["gap_mm"] == 0.5
+    built = make_model("axisym", mesh=MESH, muscle=muscle)
+    assert built.params()["gap_mm"] == 0.5
+    assert float(built.predict_muscle(replace(muscle, eps=0.1), 2.5).force_N) == \
+        pytest.approx(best["r1_fe_N"], rel=1e-6)
     with pytest.raises(ValueError, match="gap_mm=0.5 with --tolerance"):
         from mkm.fem.tolerances import Tolerances
 

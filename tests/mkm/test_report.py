@@ -394,3 +394,22 @@ def test_a_first_report_names_the_surrogate_training_before_it_starts(runs, tmp_
     build_report(runs[:1], parse_models("surrogate:kind=physics"), out_dir=tmp_path / "r2",
                  cache_dir=None, tolerance=None, surrogate_section=False, progress=True)
     assert "training" not in capsys.readouterr().err  # cached now: nothing to announce
+
+
+def test_default_models_leave_out_what_an_identified_calibration_cannot_serve(tmp_path):
+    """A muscle identified with the thick-wall form (here with a gap) has closed-form entries
+    only: the FE model and the surrogate, which read the FE entry, are left out with a note;
+    the shipped calibration serves all four."""
+    from mkm.fem.calibration import Calibration
+    from mkm.report import DEFAULT_MODELS, default_models
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {"theta0_deg": 31.0, "gap_mm": 0.8},
+                               "eq2-inner": {"theta0_deg": 30.0}}))
+    with pytest.warns(UserWarning) as notes:
+        kept = default_models(Calibration.load(lab))
+    assert [s.text for s in kept] == ["eq2", "thickwall"]
+    assert [str(n.message).split(" left out")[0] for n in notes] == ["axisym", "surrogate"]
+    assert "no calibrated theta0 for model 'axisym'" in str(notes[0].message)
+    assert make_model("thickwall", Calibration.load(lab)).params()["gap_mm"] == 0.8
+    assert [s.text for s in default_models(None)] == list(DEFAULT_MODELS)
