@@ -21,8 +21,6 @@ import re
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-import numpy as np
-
 #: name -> (low, high, what the value is, unit); both bounds included except :data:`OPEN_ABOVE`
 LIMITS: dict[str, tuple[float, float, str, str]] = {
     "pressure_bar": (0.0, 1000.0, "a gauge pressure", "bar"),
@@ -90,13 +88,20 @@ def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
 
 #: The braid's locking angle, arccos(1/sqrt(3)) = 54.7356 deg from the axis: at it the sleeve
 #: encloses its largest volume and the muscle can shorten no further.
-LOCKING_ANGLE_DEG = float(np.rad2deg(np.arccos(1.0 / np.sqrt(3.0))))
+LOCKING_ANGLE_DEG = math.degrees(math.acos(1.0 / math.sqrt(3.0)))
 
 
 def lock_eps(theta0_deg):
     """The shortening at which a braid of angle ``theta0_deg`` [deg] at rest locks [fraction]:
-    ``1 - 1 / (sqrt(3) cos theta0)`` (the braid angle reaches :data:`LOCKING_ANGLE_DEG`)."""
-    return 1.0 - 1.0 / (np.sqrt(3.0) * np.cos(np.deg2rad(theta0_deg)))
+    ``1 - 1 / (sqrt(3) cos theta0)`` (the braid angle reaches :data:`LOCKING_ANGLE_DEG`); a
+    number or an array."""
+    if isinstance(theta0_deg, int | float):  # quick commands state the range without numpy
+        cos = math.cos(math.radians(theta0_deg))
+    else:
+        import numpy as np
+
+        cos = np.cos(np.deg2rad(theta0_deg))
+    return 1.0 - 1.0 / (math.sqrt(3.0) * cos)
 
 
 @dataclass(frozen=True)
