@@ -22,9 +22,10 @@ own limit, negative force, force falling with pressure by more than
 model that refuses the muscle outright is ``refused`` with its message.
 
 Writes ``--out``, a JSON (provenance, the draw's seed and box, the range stated, and under
-``rows`` the counts per model, outcome and reason: the table the docs show), and beside it a CSV
-of one row per muscle and model (the muscle, P*, the outcome, the reason, the first failing
-pressure, the largest force, the wall time); prints the counts.
+``rows`` the counts per model, outcome and reason: the table the docs show), and beside it a
+CSV of one row per muscle and model (the muscle and its eps as a fraction of the braid lock,
+P*, the outcome, the reason, the first failing pressure, the largest force, the wall time);
+prints the counts.
 """
 
 from __future__ import annotations
@@ -40,7 +41,7 @@ import pandas as pd
 
 from mkm.core.records import provenance, source_version, write_json_atomic
 from mkm.fem import ladder
-from mkm.fem.limits import PRACTICAL_RANGE, range_text
+from mkm.fem.limits import PRACTICAL_RANGE, lock_eps, range_text
 from mkm.fem.sampling import draw_muscles
 from mkm.registry import parse_spec
 from mkm.study import classify
@@ -99,11 +100,16 @@ def counts_table(frame: pd.DataFrame) -> pd.DataFrame:
     """Per model: sweeps, and how many per outcome and reason."""
     rows = []
     for model, g in frame.groupby("model", sort=False):
-        outcomes = collections.Counter(zip(g["outcome"], g["reason"].fillna(""), strict=True))
+        reasons = g["reason"].fillna("")
+        outcomes = collections.Counter(zip(g["outcome"], reasons, strict=True))
         for (outcome, reason), count in outcomes.most_common():
+            these = g[(g["outcome"] == outcome) & (reasons == reason)]
             rows.append({"model": model, "sweeps": len(g), "outcome": outcome,
                          "count": count, "reason": reason,
-                         "median seconds per sweep": float(g["seconds"].median())})
+                         # where the failures lie: how close to the braid lock
+                         "smallest eps/lock": (float(f"{these['eps_per_lock'].min():.3g}")
+                                               if outcome != "ok" else None),
+                         "median seconds per sweep": float(f"{g['seconds'].median():.3g}")})
     return pd.DataFrame(rows)
 
 
@@ -124,6 +130,7 @@ def main() -> None:
     for spec in args.models.split(","):
         for i, muscle in enumerate(draw.muscles[:limits.get(spec, args.muscles)]):
             rows.append({"muscle": i, **{k: v for k, v in muscle.record().items() if k != "id"},
+                         "eps_per_lock": muscle.eps / float(lock_eps(muscle.theta0_deg)),
                          "model": spec, **run_sweep(spec, muscle)})
         done = pd.DataFrame([r for r in rows if r["model"] == spec])
         print(f"{spec}: {len(done)} sweeps, median {done['seconds'].median():.3f} s per sweep")
@@ -136,7 +143,8 @@ def main() -> None:
     frame.to_csv(out.with_suffix(".csv"), index=False, float_format="%.6g",
                  lineterminator="\n")
     info = {**provenance(), "code_version": source_version("mkm.fem.fe.model"),
-            "draw": draw.record(), "range": range_text(), "models": args.models.split(","),
+            "seed": draw.seed, "draw": draw.record(), "range": range_text(),
+            "models": args.models.split(","),
             "limits": limits, "grid_bar": grid_bar().tolist(),
             "above_threshold_bar": ABOVE_THRESHOLD_BAR.tolist(),
             "rows": counts_table(frame).to_dict(orient="records")}
