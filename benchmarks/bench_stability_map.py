@@ -48,8 +48,8 @@ from mkm.study import classify
 
 
 def default_models() -> str:
-    """Every physics variant the study scores (the registry's), the fine mesh left out: it
-    costs about ten medium sweeps and fails where medium does (the mesh study)."""
+    """Every physics variant the study scores (the registry's), the fine mesh left out: a
+    fine sweep costs several medium ones (``--models`` adds it)."""
     return ",".join(v.spec for entry in ladder.MODELS.entries() for v in entry.study
                     if "mesh=fine" not in v.spec)
 
