@@ -318,6 +318,21 @@ def test_a_design_on_the_edge_of_the_search_box_is_named():
     assert box_edges({"D0_mm": 30.05, "t0_mm": 3.99, "L0_mm": 282.0}, box) == []
 
 
+def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):
+    # the same corner optimum as above (D0 30, t0 2 of the surrogate's 30:50 x 2:4), as a user
+    # sees it: one line of its own on stderr, one note on design.html; the box is the
+    # surrogate's own, so no box line
+    code, out, err = mkm_run(["design", "--require", "100N@2bar,eps=0.1", "--top", "1",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 0, err
+    line = ("the chosen design sits on the edge of the search box D0 30:50 mm x t0 2:4 mm: "
+            "D0 = 30 mm (the lower end of 30:50), t0 = 2 mm (the lower end of 2:4); a larger "
+            "box might hold a better design")
+    assert f"mkm design: {line}\n" in err and "searched the box" not in err
+    page = (tmp_path / "design.html").read_text(encoding="utf-8")
+    assert f'<p class="note">{esc(line)}</p>' in page
+
+
 def test_the_calibrated_rubber_is_the_identified_one(tmp_path):
     """The default rubber of a design is the calibration's: Silastic S as shipped, the
     identified rubber under an identified calibration (``mkm identify --out``)."""
