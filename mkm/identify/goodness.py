@@ -132,20 +132,28 @@ class Goodness:
 
 def runs_test(values) -> tuple[int, float]:
     """Wald-Wolfowitz runs test on the signs of ``values`` (zeros left out): the number of runs
-    and the one-sided probability of so few under independent signs (normal approximation
-    with a continuity correction; 1 when one sign is missing)."""
+    and the one-sided mid-p of so few under independent signs, from the exact distribution of
+    the runs given the counts of each sign (mid-p: ``P(R < r) + P(R = r) / 2``, near uniform on
+    noise where the plain exact p is conservative); 1 when one sign is missing."""
     signs = np.sign(np.asarray(values, dtype=float))
     signs = signs[signs != 0]
-    n_pos, n_neg = int(np.sum(signs > 0)), int(np.sum(signs < 0))
-    if n_pos == 0 or n_neg == 0:
+    n1, n2 = int(np.sum(signs > 0)), int(np.sum(signs < 0))
+    if n1 == 0 or n2 == 0:
         return (1 if signs.size else 0), 1.0
     runs = int(1 + np.sum(signs[1:] != signs[:-1]))
-    n = n_pos + n_neg
-    mean = 2.0 * n_pos * n_neg / n + 1.0
-    var = 2.0 * n_pos * n_neg * (2.0 * n_pos * n_neg - n) / (n**2 * (n - 1))
-    if var <= 0:
-        return runs, 1.0
-    return runs, float(stats.norm.cdf((runs - mean + 0.5) / math.sqrt(var)))
+    total = math.comb(n1 + n2, n1)
+
+    def probability(r: int) -> float:
+        k, odd = divmod(r, 2)
+        if odd:
+            ways = (math.comb(n1 - 1, k) * math.comb(n2 - 1, k - 1)
+                    + math.comb(n1 - 1, k - 1) * math.comb(n2 - 1, k)) if k >= 1 else 0
+        else:
+            ways = 2 * math.comb(n1 - 1, k - 1) * math.comb(n2 - 1, k - 1) if k >= 1 else 0
+        return ways / total
+
+    below = sum(probability(r) for r in range(2, runs))
+    return runs, float(below + probability(runs) / 2)
 
 
 def chi_square(residual, noise, shared: float = 0.0) -> float:
