@@ -75,9 +75,9 @@ def coverage(runs: int, eps_values, out: str | None = None) -> None:
                "seeds": f"0..{runs - 1} per eps"}
     print(f"all: {json.dumps(summary)}")
     if out:
-        Path(out).write_text(json.dumps(jsonable({
+        Path(out).write_text(json.dumps({
             "rows": rows, "all": summary, "target": "force coverage 95 +- 3 %",
-            "provenance": provenance()}), indent=1), encoding="utf-8")
+            "provenance": provenance()}, indent=1, default=jsonable), encoding="utf-8")
 
 
 def band_speed() -> None:

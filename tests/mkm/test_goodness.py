@@ -114,3 +114,16 @@ def test_the_chi_square_with_a_shared_tare_is_the_full_covariance_one():
     C = np.diag(s**2) + tare**2
     assert goodness.chi_square(r, s, tare) == pytest.approx(float(r @ np.linalg.solve(C, r)),
                                                             rel=1e-12)
+
+
+def test_a_fit_within_its_noise_is_called_a_misfit_in_about_2_percent_of_cases():
+    rng = np.random.default_rng(9)
+    nu = 8.0
+    alarms = 0
+    for _ in range(4000):
+        chi2 = rng.chisquare(nu, 4)
+        branches = [goodness.Branch("r", "loading", 9, c, nu, float(stats.chi2.sf(c, nu)), 5,
+                                    0.5, 0.1, 0.1) for c in chi2]
+        alarms += bool(goodness.Goodness(branches, float(chi2.sum()), 4 * nu).misfit)
+    # the pooled test at 1 %, each of 4 branches at 0.25 %: at most 2 %, at least 1 %
+    assert 0.008 < alarms / 4000 < 0.022
