@@ -168,11 +168,20 @@ def main(argv=None) -> int:
                "per_parameter": per_parameter, "seed": args.seed}
     print(json.dumps(summary, indent=1))
     if args.out:
+        table = [{"draw": r["draw"], "departure": r["departure"],
+                  "departure_values": ", ".join(
+                      f"{a}={b:.5g}" if isinstance(b, float) else f"{a}={b}"
+                      for a, b in r["departure_values"].items()),
+                  "chi2_per_nu": round(r["chi2_per_nu"], 3),
+                  "misfit_line": "yes" if r["misfit_line"] else "no",
+                  "missed": ", ".join(r["missed"]) or "-",
+                  "silent_miss": "SILENT" if r["silent_miss"] else "no",
+                  "seconds": r["seconds"]} for r in rows]
         Path(args.out).write_text(json.dumps({
-            "rows": rows, "summary": summary,
+            **provenance(), "rows": table, "summary": summary, "draws": rows,
             "targets": "every parameter's 95 % interval covers the truth in >= 90 % of the "
-                       "draws or a misfit line was printed; silent misses: 0",
-            "provenance": provenance()}, indent=1, default=jsonable), encoding="utf-8")
+                       "draws or a misfit line was printed; silent misses: 0"},
+            indent=1, default=jsonable), encoding="utf-8")
     return 0
 
 

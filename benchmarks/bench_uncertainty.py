@@ -76,8 +76,8 @@ def coverage(runs: int, eps_values, out: str | None = None) -> None:
     print(f"all: {json.dumps(summary)}")
     if out:
         Path(out).write_text(json.dumps({
-            "rows": rows, "all": summary, "target": "force coverage 95 +- 3 %",
-            "provenance": provenance()}, indent=1, default=jsonable), encoding="utf-8")
+            **provenance(), "rows": rows, "all": summary,
+            "target": "force coverage 95 +- 3 %"}, indent=1, default=jsonable), encoding="utf-8")
 
 
 def band_speed() -> None:
