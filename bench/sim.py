@@ -113,6 +113,11 @@ def describe_physics(config) -> dict:
     s, m = config.sim, config.muscle
     mesh = s.fe_mesh if s.model == "axisym" else None
     model = _model(s.model, mesh, m.L0_mm, s.truth.model_params())
+    geometry = dict(zip(("D0_mm", "t0_mm"), s.truth.geometry(m), strict=True))
+    departures = [f"true {k} {v:g} (declared {getattr(m, k):g})" for k, v in geometry.items()
+                  if v != getattr(m, k)]
+    departures += [f"{k} {getattr(s.truth, k):g}" for k in INSTRUMENT_BOUNDS
+                   if getattr(s.truth, k) is not None]
     return {
         "force_model": s.model, "force_model_params": model.params(),
         "table": f"{s.model} tabulated at 81 pressures over 0-{config.regulator.full_scale_bar:g}"
@@ -121,11 +126,13 @@ def describe_physics(config) -> dict:
                     " x force (rising and falling branches apart)",
         "creep": f"{s.creep_fraction:g} of the force relaxed with tau {s.creep_tau_s:g} s",
         "noise": f"load-cell noise {s.noise_V * 1e3:g} mV rms, 14-bit quantisation",
-        "true_geometry": dict(zip(("D0_mm", "t0_mm"), s.truth.geometry(m), strict=True)),
+        "true_geometry": geometry,
         "instruments": {name: s.truth.instrument(name) for name in INSTRUMENT_BOUNDS},
         "summary": f"the {s.model} model's force{f' ({mesh} mesh)' if mesh else ''} with "
                    f"{100 * s.hysteresis_fraction:g} % braid friction (rising and falling "
-                   f"branches apart), {100 * s.creep_fraction:g} % creep and load-cell noise",
+                   f"branches apart), {100 * s.creep_fraction:g} % creep and load-cell noise"
+                   + (f"; departures from the configuration: {', '.join(departures)}"
+                      if departures else ""),
     }
 
 

@@ -201,6 +201,9 @@ def test_the_departures_are_stripped_with_the_simulator_settings(config, tmp_pat
     assert meta["muscle"]["t0_mm"] == m.t0_mm
     assert meta["hardware"]["sim"]["truth"]["t0_mm"] == m.t0_mm - 0.3
     assert meta["hardware"]["sim"]["physics"]["instruments"]["loadcell_gain"] == 1.001
+    assert meta["hardware"]["sim"]["physics"]["summary"].endswith(
+        "departures from the configuration: true t0_mm 2.7 (declared 3), loadcell_gain 1.001, "
+        "monitor_offset_bar 0.02")
     remove_simulator_settings(result.path)
     text = (result.path / "run.json").read_text(encoding="utf-8")
     for key in ("loadcell_gain", "monitor_offset_bar", '"truth"'):
