@@ -15,18 +15,18 @@ Per run and branch (rising, falling): ``chi2 = r' C^-1 r`` over the branch's ``n
 ``nu = n`` degrees of freedom: the fit minimises the residuals of every hold sample, not this
 chi-square (the within-hold creep and the ramps inform it too), so its parameters do not take
 ``p`` degrees of freedom from it (on in-family simulated runs the fitted chi-square exceeds the
-truth's more often than not); and a Wald-Wolfowitz runs test on the signs of the residuals in pressure order (too few
-runs: the residuals have structure, a curve the model does not follow). The fit does not fit
-within its noise when all steps' ``chi2`` together is that large with a probability below
-:data:`MISFIT_P`, or one branch's is below :data:`MISFIT_P` over the number of branches (so a
-fit that does fit is called a misfit in about 0.2 % of identifications,
-``benchmarks/bench_identify_coverage.py --departures in-family`` measures it); then the
-intervals are widened by the Birge ratio ``sqrt(chi2 / nu)`` of all steps together (where it
-exceeds 1), the usual remedy when the spread of the data exceeds their stated noise (Birge 1932;
-the Particle Data Group's scale factor), so the intervals are at least as wide as the misfit
-says the model's errors are. It is a widening, not a model of the discrepancy: a systematic
-error (a monitor offset, a braid the model does not have) biases the estimate as well, which the
-warning line says.
+truth's more often than not); and a Wald-Wolfowitz runs test on the signs of the residuals in
+pressure order (too few runs: the residuals have structure, a curve the model does not follow).
+The fit does not fit within its noise when all steps' ``chi2`` together is that large with a
+probability below :data:`MISFIT_P`, or one branch's is below :data:`MISFIT_P` over the number
+of branches (were the steps' noise exactly what they show, a fit that fits would be called a
+misfit in 0.2 % of identifications; ``benchmarks/bench_identify_coverage.py --departures
+in-family`` measures it on simulated runs); then the intervals are widened by the Birge ratio
+``sqrt(chi2 / nu)`` of all steps together (where it exceeds 1), the usual remedy when the spread
+of the data exceeds their stated noise (Birge 1932; the Particle Data Group's scale factor), so
+the intervals are at least as wide as the misfit says the model's errors are. It is a
+widening, not a model of the discrepancy: a systematic error (a monitor offset, a braid the
+model does not have) biases the estimate as well, which the warning line says.
 
 The bench's instrument tolerances (the load cell's gain, the monitor's accuracy) are not noise
 here: they are errors the data share, and a fit that cannot absorb them shows them as misfit.
