@@ -2,8 +2,14 @@
 
 A step's force is the mean of the hold samples minus the tare; its pressure the mean of the
 regulator monitor over the hold. Each standard uncertainty below is combined in quadrature
-(uncorrelated inputs, sensitivity coefficients 1) and expanded with the coverage factor
-``k = 2`` (:data:`COVERAGE_FACTOR`):
+(uncorrelated inputs, sensitivity coefficients 1) and expanded to a coverage probability of
+95.45 % (:data:`COVERAGE_PROBABILITY`, the probability of k = 2 for a normal distribution) with a
+coverage factor ``k`` of its own per quantity (:func:`coverage_factor`): the quantile of the
+terms' own distributions combined, rectangular bounds (type B data-sheet terms, an ADC step not
+dithered) convolved with the normal remainder. ``k`` is 2 when the normal terms dominate and
+falls to 1.65 (``0.9545 sqrt 3``) when one rectangular bound does: a k = 2 interval there covers
+100 %, not 95 %. The type A terms' degrees of freedom (tens of samples each) are taken as
+infinite. The budget table states each quantity's ``k``.
 
 force [N]
     - load-cell sensitivity: ``loadcell.sensitivity_tolerance_fraction`` x ``abs(F)``, a rectangular
@@ -34,8 +40,9 @@ muscle's behaviour, not errors of the instrument, so no term of this budget stan
 The models of the ladder have neither; a model compared with a step therefore differs by the
 friction of the branch (rising pressure reads low, falling high) and the creep so far, which the
 consistency verdict of :mod:`mkm.scoring` shows rather than hides. On simulated runs whose truth
-is known (:mod:`mkm.bench.coverage`) the k = 2 interval covers the mean true force of 95.7 % of
-513 settled steps (``benchmarks/bench_uncertainty.py``).
+is known, with its instrument errors drawn within the data sheet (:mod:`mkm.bench.coverage`),
+``benchmarks/bench_uncertainty.py`` measures how often the expanded interval covers the mean true
+force and pressure of a step (:doc:`/guide/uncertainty`).
 
 :func:`step_budget` computes a step's budget from what ``steps.csv`` records (so the report
 recomputes the terms of a recorded step); :func:`expected_budget` the budget a configuration
@@ -48,9 +55,15 @@ import math
 from dataclasses import dataclass, fields
 from typing import Any
 
-COVERAGE_FACTOR = 2.0
+import numpy as np
+from scipy import signal, special
+
+#: the coverage probability of the expanded uncertainties: a normal distribution's at k = 2
+COVERAGE_PROBABILITY = math.erf(2.0 / math.sqrt(2.0))
 SQRT3 = math.sqrt(3.0)
 SQRT12 = math.sqrt(12.0)
+#: grid points over the combined distribution's support when k is computed
+_GRID = 4001
 
 
 @dataclass(frozen=True)
@@ -62,6 +75,40 @@ class Term:
     u: float
     kind: str  # "A" (from the data) | "B" (data sheet, device)
     source: str
+    distribution: str = "normal"  # "normal" | "rectangular" (a +- bound, u = half-width / sqrt 3)
+
+
+def coverage_factor(terms, probability: float = COVERAGE_PROBABILITY) -> float:
+    """``k`` such that ``+- k u`` covers ``probability`` of the sum of ``terms`` (each with its
+    own distribution, independent): rectangular terms convolved on a grid with the normal
+    remainder. 2 for normal terms alone at 95.45 %; ``probability * sqrt 3`` for one
+    rectangular term alone; NaN when the combined ``u`` is not finite or zero."""
+    terms = [t for t in terms if math.isfinite(t.u) and t.u > 0]
+    u = math.sqrt(sum(t.u**2 for t in terms))
+    if not terms or not math.isfinite(u):
+        return math.nan
+    halves = [SQRT3 * t.u for t in terms if t.distribution == "rectangular"]
+    sigma = math.sqrt(sum(t.u**2 for t in terms if t.distribution != "rectangular"))
+    if not halves:
+        return math.sqrt(2.0) * float(special.erfinv(probability))
+    if sigma == 0 and len(halves) == 1:
+        return probability * SQRT3
+    reach = sum(halves) + 8.0 * sigma
+    x = np.linspace(-reach, reach, _GRID)
+    h = x[1] - x[0]
+    density = np.zeros_like(x)
+    density[_GRID // 2] = 1.0 / h
+    for a in halves:  # each rectangular term: a box of half-width a, unit area
+        box = (np.abs(x) <= a).astype(float)
+        density = signal.fftconvolve(density, box / box.sum(), mode="same")
+    if sigma > 0:
+        gauss = np.exp(-0.5 * (x / sigma) ** 2)
+        density = signal.fftconvolve(density, gauss / gauss.sum(), mode="same")
+    cdf = np.cumsum(np.clip(density, 0.0, None)) * h
+    cdf /= cdf[-1]
+    half = x[_GRID // 2:]
+    inside = cdf[_GRID // 2:] - cdf[_GRID // 2::-1][:half.size]  # P(|X| <= x), symmetric
+    return float(np.interp(probability, inside, half) / u)
 
 
 @dataclass(frozen=True)
@@ -69,12 +116,16 @@ class Budget:
     """The terms of one step, combined (root sum of squares) and expanded with ``k``."""
 
     terms: tuple[Term, ...]
-    k: float = COVERAGE_FACTOR
     drift_N: float = math.nan  # the hold's trend, first to last sample: shown, not a term
 
     def u(self, quantity: str) -> float:
         """Combined standard uncertainty of ``quantity`` ("force" [N] or "pressure" [bar])."""
         return math.sqrt(sum(t.u**2 for t in self.terms if t.quantity == quantity))
+
+    def k(self, quantity: str) -> float:
+        """Coverage factor of ``quantity`` for :data:`COVERAGE_PROBABILITY`
+        (:func:`coverage_factor`)."""
+        return coverage_factor([t for t in self.terms if t.quantity == quantity])
 
     @property
     def force_u_N(self) -> float:
@@ -82,7 +133,7 @@ class Budget:
 
     @property
     def force_U_N(self) -> float:
-        return self.k * self.force_u_N
+        return self.k("force") * self.force_u_N
 
     @property
     def pressure_u_bar(self) -> float:
@@ -90,7 +141,7 @@ class Budget:
 
     @property
     def pressure_U_bar(self) -> float:
-        return self.k * self.pressure_u_bar
+        return self.k("pressure") * self.pressure_u_bar
 
     def columns(self) -> dict[str, float]:
         """The four columns of ``steps.csv``."""
@@ -208,14 +259,16 @@ def step_budget(instrument: Instrument, force_N: float, force_N_std: float, n: i
     terms = [
         Term("load-cell sensitivity", "force",
              i.sensitivity_tolerance_fraction * abs(force_N) / SQRT3, "B",
-             f"loadcell.sensitivity_tolerance_fraction={i.sensitivity_tolerance_fraction:g}"),
+             f"loadcell.sensitivity_tolerance_fraction={i.sensitivity_tolerance_fraction:g}",
+             "rectangular"),
         Term("load-cell non-linearity", "force",
              i.nonlinearity_fraction_fs * i.capacity_N / SQRT3, "B",
-             f"loadcell.nonlinearity_fraction_fs={i.nonlinearity_fraction_fs:g}"),
+             f"loadcell.nonlinearity_fraction_fs={i.nonlinearity_fraction_fs:g}", "rectangular"),
         Term("load-cell zero drift", "force", i.zero_drift_fraction_fs * i.capacity_N / SQRT3,
-             "B", f"loadcell.zero_drift_fraction_fs={i.zero_drift_fraction_fs:g}"),
+             "B", f"loadcell.zero_drift_fraction_fs={i.zero_drift_fraction_fs:g}", "rectangular"),
         Term("ADC resolution", "force", math.hypot(q_hold, q_tare), "B",
-             f"1 step = {i.lsb_V * 1e3:.3g} mV = {i.lsb_N:.3g} N"),
+             f"1 step = {i.lsb_V * 1e3:.3g} mV = {i.lsb_N:.3g} N",
+             "normal" if math.isfinite(scatter) and scatter >= i.lsb_N / 2 else "rectangular"),
         Term("noise over the hold", "force",
              scatter / math.sqrt(n) if n > 2 and math.isfinite(scatter) else math.nan, "A",
              f"scatter about the trend {scatter:.3g} N over {n} samples"),
@@ -223,12 +276,12 @@ def step_budget(instrument: Instrument, force_N: float, force_N_std: float, n: i
              tare_std_N / math.sqrt(tare_n) if tare_n > 0 else math.nan, "A",
              f"tare scatter {tare_std_N:.3g} N over {tare_n} samples"),
         Term("pressure reading accuracy", "pressure", i.monitor_accuracy_bar / SQRT3, "B",
-             f"regulator.monitor_accuracy_bar={i.monitor_accuracy_bar:g}"),
+             f"regulator.monitor_accuracy_bar={i.monitor_accuracy_bar:g}", "rectangular"),
     ]
     if math.isfinite(i.monitor_bar_per_V):
         lsb_bar = i.lsb_V * i.monitor_bar_per_V
         terms.append(Term("ADC resolution (monitor)", "pressure", lsb_bar / SQRT12, "B",
-                          f"1 step = {lsb_bar:.3g} bar"))
+                          f"1 step = {lsb_bar:.3g} bar", "rectangular"))
     return Budget(tuple(terms), drift_N=force_drift_N)
 
 
@@ -261,8 +314,10 @@ def budget_table(budget: Budget, quantity: str = "force") -> list[str]:
         lines.append(f"  {term.name:<{width}}  {term.kind:<4}  {term.u:>8.3g}  "
                      f"{100 * share:>9.1f}  {term.source}")
     u = budget.u(quantity)
+    k = budget.k(quantity)
     lines.append(f"  {'combined':<{width}}  {'':<4}  {u:>8.3g}  {100:>9}  expanded U = "
-                 f"{budget.k:g} u = {budget.k * u:.3g} {unit}")
+                 f"{k:.3g} u = {k * u:.3g} {unit} (k for {100 * COVERAGE_PROBABILITY:.2f} % "
+                 "of the terms' distributions combined)")
     if quantity == "force" and math.isfinite(budget.drift_N):
         lines.append(f"(drift within the hold: {budget.drift_N:+.3g} N; the hold mean is the "
                      "measurand, so not a term)")

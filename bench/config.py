@@ -27,7 +27,7 @@ from mkm.bench import backends
 from mkm.bench.settings import positive, read_toml, read_toml_file, typed_section, within
 from mkm.bench.sim_settings import Sim
 from mkm.core.records import write_atomic
-from mkm.fem.limits import LIMITS, check_muscle_id
+from mkm.fem.limits import LIMITS, check_muscle_id, check_wall
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
@@ -348,6 +348,7 @@ class BenchConfig:
                              f"regulator.max_pressure_bar={self.regulator.max_pressure_bar:g}: "
                              "expected every planned pressure within the limit")
         self._check_interlocks()
+        check_wall(*self.sim.truth.geometry(self.muscle), prefix="sim.truth.")
         self._check_device()
         self._check_duration()
 

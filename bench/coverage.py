@@ -1,17 +1,20 @@
-"""Does the k = 2 interval of :mod:`mkm.bench.budget` cover the truth? Checked on simulated runs.
+"""Does the expanded interval of :mod:`mkm.bench.budget` cover the truth? Checked on simulated
+runs.
 
-The simulated bench (:mod:`mkm.bench.sim`) knows the force on its cell at every sample: the
-model's static force with braid friction and creep (the measurand, see
-:mod:`mkm.bench.budget`). :func:`simulated_coverage` records whole runs through the normal run
-code, one per seed, and compares every settled step's recorded force with the mean true force
-over the same hold samples: covered when ``|F_meas - F_true| <= force_U_N``.
+The simulated bench (:mod:`mkm.bench.sim`) knows the force on its cell and the pressure in the
+muscle at every sample: the model's static force with braid friction and creep (the measurand,
+see :mod:`mkm.bench.budget`). :func:`simulated_coverage` records whole runs through the normal
+run code, one per seed, and compares every settled step's recorded force and pressure with the
+mean true ones over the same hold samples: covered when ``|F_meas - F_true| <= force_U_N`` (and
+``|P_meas - P_true| <= pressure_U_bar``).
 
-The simulated load cell is ideal: its sensitivity is exact, it is linear and its zero does not
-drift. The runs are therefore recorded with the data-sheet terms at zero
-(``loadcell.sensitivity_tolerance_fraction``, ``nonlinearity_fraction_fs``,
-``zero_drift_fraction_fs``), so what is checked is what the data decide: noise, quantisation,
-tare and drift. The data-sheet terms are rectangular bounds; a k = 2 interval covers a
-rectangular error always, so with them on the coverage can only rise.
+Each run's instruments are drawn within the data sheet the configuration declares
+(:func:`instrument_draw`): the load cell's gain uniform within
+``loadcell.sensitivity_tolerance_fraction``, the pressure monitor's error uniform within
+``regulator.monitor_accuracy_bar``, as an offset (even seeds) or as a gain reaching the bound at
+``regulator.max_pressure_bar`` (odd seeds). The simulated cell is linear and its zero does not
+drift, so those two data-sheet terms (``nonlinearity_fraction_fs``, ``zero_drift_fraction_fs``)
+are set to zero: they would have nothing to cover.
 """
 
 from __future__ import annotations
@@ -26,18 +29,34 @@ from mkm.bench.run import BenchRun
 from mkm.bench.sim import SimBackend
 from mkm.bench.storage import load_run
 
-IDEAL_CELL = {"sensitivity_tolerance_fraction": 0.0, "nonlinearity_fraction_fs": 0.0,
-              "zero_drift_fraction_fs": 0.0}
+#: the data-sheet terms the simulated cell has no error for
+LINEAR_CELL = {"nonlinearity_fraction_fs": 0.0, "zero_drift_fraction_fs": 0.0}
 
 
-def _recorded(backend: SimBackend) -> list[float]:
-    """Make ``backend`` keep the true force of every sample it takes; return that list."""
+def instrument_draw(config, seed: int) -> dict:
+    """``[sim.truth]``'s instrument errors for run ``seed``, uniform within the data sheet of
+    ``config`` (see the module docstring)."""
+    rng = np.random.default_rng([int(seed), 0x1A57])
+    tolerance = config.loadcell.sensitivity_tolerance_fraction
+    accuracy = config.regulator.monitor_accuracy_bar
+    draw = {"loadcell_gain": 1.0 + float(rng.uniform(-tolerance, tolerance))}
+    error = float(rng.uniform(-accuracy, accuracy))
+    if seed % 2 == 0:
+        draw["monitor_offset_bar"] = error
+    else:
+        draw["monitor_gain"] = 1.0 + error / config.regulator.max_pressure_bar
+    return draw
+
+
+def _recorded(backend: SimBackend) -> list[tuple[float, float]]:
+    """Make ``backend`` keep the true force and pressure of every sample it takes; return that
+    list."""
     bench, truth = backend.bench, []
     step = bench.step
 
     def recording_step():
         volts = step()
-        truth.append(bench.force_N)
+        truth.append((bench.force_N, bench.pressure_bar))
         return volts
 
     bench.step = recording_step
@@ -45,19 +64,21 @@ def _recorded(backend: SimBackend) -> list[float]:
 
 
 def simulated_run_steps(config, seed: int, out_root: str | Path) -> pd.DataFrame:
-    """The steps of one simulated run of ``config`` with ``sim.seed = seed``, each with
-    ``force_true_N`` (mean true force over its hold samples) and ``covered``."""
-    config = config.replace(loadcell=IDEAL_CELL, sim={"seed": int(seed)})
+    """The steps of one simulated run of ``config`` with ``sim.seed = seed`` and its instruments
+    drawn (:func:`instrument_draw`), each step with ``force_true_N`` and ``pressure_true_bar``
+    (the means over its hold samples), ``covered`` (the force) and ``pressure_covered``."""
+    truth = {**config.sim.truth.__dict__, **instrument_draw(config, seed)}
+    config = config.replace(loadcell=LINEAR_CELL, sim={"seed": int(seed), "truth": truth})
     backend = SimBackend(config)
     truth_list = _recorded(backend)
     result = BenchRun(config, backend, out_root, handle_signals=False,
                       notify=lambda message: None).execute()
     if not result.status.finished:
         raise RuntimeError(f"simulated run {seed} did not finish: {result.reason}")
-    truth = np.asarray(truth_list)
+    true_force, true_pressure = np.asarray(truth_list).T
     steps = load_run(result.path).steps.copy()
     rate = config.daq.sample_rate_hz
-    true_means = []
+    true_means, true_pressures = [], []
     for s in steps.itertuples():
         # the hold: samples after start_s + settle_s up to end_s (as bench.sequence averages)
         first = round((s.start_s + s.settle_s) * rate) + 1
@@ -65,10 +86,16 @@ def simulated_run_steps(config, seed: int, out_root: str | Path) -> pd.DataFrame
         if last + 1 - first != s.n:
             raise RuntimeError(f"step {s.step}: {last + 1 - first} true samples in the hold, "
                                f"{s.n} recorded")
-        true_means.append(float(truth[first:last + 1].mean()))
+        true_means.append(float(true_force[first:last + 1].mean()))
+        true_pressures.append(float(true_pressure[first:last + 1].mean()))
     steps["force_true_N"] = true_means
+    steps["pressure_true_bar"] = true_pressures
     steps["seed"] = seed
+    for key, value in instrument_draw(config, seed).items():
+        steps[key] = value
     steps["covered"] = (steps["force_N_mean"] - steps["force_true_N"]).abs() <= steps["force_U_N"]
+    steps["pressure_covered"] = ((steps["pressure_bar_mean"] - steps["pressure_true_bar"]).abs()
+                                 <= steps["pressure_U_bar"])
     return steps
 
 

@@ -279,8 +279,8 @@ def expected_budget_lines(config: BenchConfig) -> list[str]:
     from Equation 2; data terms at the settle and tare limits), and its terms at the top."""
     pressures = sorted(set(config.sequence.pressures_bar))
     budgets = [(p, expected_force_N(config, p)) for p in pressures]
-    lines = ["expected uncertainty (k = 2; forces by Equation 2; hold scatter, drift and tare "
-             "at their settle and safety limits, so at most this):",
+    lines = ["expected uncertainty (U at 95.45 %; forces by Equation 2; hold scatter, drift and "
+             "tare at their settle and safety limits, so at most this):",
              f"{'P [bar]':>8} {'F [N]':>8} {'U(F) [N]':>9} {'U(F) [%]':>9} {'U(P) [bar]':>10}"
              "  largest term"]
     for p, force in budgets:

@@ -22,6 +22,12 @@ the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / ra
 - the load cell: force over sensitivity plus offset and Gaussian noise, clipped at the +-10 V rails
   and quantised to the USB-6001's 14 bits over +-10 V (1 LSB = 1.22 mV).
 
+``[sim.truth]`` (:class:`mkm.bench.sim_settings.Truth`) makes the bench wrong the way real ones
+are, unknown to the configuration: the muscle's true geometry, braid and rubber, a load cell whose
+output per newton is ``loadcell_gain`` times the configured one, a regulator sensor reading
+``monitor_gain * P + monitor_offset_bar`` (the regulator holds that reading at the command, so
+the monitor reads the command while the true pressure is off by the sensor's error).
+
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
 muscle cannot push. The clock is ``virtual`` (reads
@@ -52,6 +58,7 @@ from mkm.bench.backend import (
     ReadTimeout,
 )
 from mkm.bench.devices import USB6001
+from mkm.bench.sim_settings import INSTRUMENT_BOUNDS
 from mkm.fem.friction import advance
 
 USB6001_RANGE_V = USB6001.ai_range_V
@@ -78,7 +85,7 @@ def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
     m, s = config.muscle, config.sim
     mesh = s.fe_mesh if s.model == "axisym" else None
     return _table(s.model, mesh, m.L0_mm, tuple(sorted(s.truth.model_params().items())),
-                  m.D0_mm, m.t0_mm, m.eps, config.regulator.full_scale_bar, n)
+                  *s.truth.geometry(m), m.eps, config.regulator.full_scale_bar, n)
 
 
 @functools.lru_cache(maxsize=32)
@@ -106,6 +113,11 @@ def describe_physics(config) -> dict:
     s, m = config.sim, config.muscle
     mesh = s.fe_mesh if s.model == "axisym" else None
     model = _model(s.model, mesh, m.L0_mm, s.truth.model_params())
+    geometry = dict(zip(("D0_mm", "t0_mm"), s.truth.geometry(m), strict=True))
+    departures = [f"true {k} {v:g} (declared {getattr(m, k):g})" for k, v in geometry.items()
+                  if v != getattr(m, k)]
+    departures += [f"{k} {getattr(s.truth, k):g}" for k in INSTRUMENT_BOUNDS
+                   if getattr(s.truth, k) is not None]
     return {
         "force_model": s.model, "force_model_params": model.params(),
         "table": f"{s.model} tabulated at 81 pressures over 0-{config.regulator.full_scale_bar:g}"
@@ -114,9 +126,13 @@ def describe_physics(config) -> dict:
                     " x force (rising and falling branches apart)",
         "creep": f"{s.creep_fraction:g} of the force relaxed with tau {s.creep_tau_s:g} s",
         "noise": f"load-cell noise {s.noise_V * 1e3:g} mV rms, 14-bit quantisation",
+        "true_geometry": geometry,
+        "instruments": {name: s.truth.instrument(name) for name in INSTRUMENT_BOUNDS},
         "summary": f"the {s.model} model's force{f' ({mesh} mesh)' if mesh else ''} with "
                    f"{100 * s.hysteresis_fraction:g} % braid friction (rising and falling "
-                   f"branches apart), {100 * s.creep_fraction:g} % creep and load-cell noise",
+                   f"branches apart), {100 * s.creep_fraction:g} % creep and load-cell noise"
+                   + (f"; departures from the configuration: {', '.join(departures)}"
+                      if departures else ""),
     }
 
 
@@ -132,6 +148,9 @@ class SimMuscleBench:
         self.max_step_bar = s.regulator_slew_bar_per_s * self.dt
         self.relax = 1.0 - math.exp(-self.dt / s.creep_tau_s)
         self.rng = np.random.default_rng(s.seed)
+        self.loadcell_gain = s.truth.instrument("loadcell_gain")
+        self.monitor_gain = s.truth.instrument("monitor_gain")
+        self.monitor_offset_bar = s.truth.instrument("monitor_offset_bar")
         self._noise = np.empty(0)
         self._next_noise = 0
         self.target_bar = 0.0
@@ -146,7 +165,10 @@ class SimMuscleBench:
 
     def set_command_volts(self, volts: float) -> None:
         r = self.config.regulator
-        self.target_bar = min(max(volts, 0.0), 10.0) / 10.0 * r.full_scale_bar
+        command_bar = min(max(volts, 0.0), 10.0) / 10.0 * r.full_scale_bar
+        # the regulator holds its own sensor's reading at the command (a zero command vents)
+        self.target_bar = (max((command_bar - self.monitor_offset_bar) / self.monitor_gain, 0.0)
+                           if command_bar > 0 else 0.0)
         if self.target_bar > 0:
             self.target_bar += self.config.sim.faults.overshoot_bar
 
@@ -170,10 +192,11 @@ class SimMuscleBench:
         # a slack muscle (force relaxing below zero after a pressure drop) cannot push
         force = max(self.hysteretic_N - self.relaxed_N, 0.0) + self.external_force_N
         self.force_N = force  # the truth a measurement of this sample is judged against
-        cell_V = (force / cell.sensitivity_N_per_V + s.loadcell_offset_V
+        cell_V = (self.loadcell_gain * force / cell.sensitivity_N_per_V + s.loadcell_offset_V
                   + s.noise_V * self._normal())
         span = r.monitor_V_at_full_scale - r.monitor_V_at_zero
-        monitor_V = (r.monitor_V_at_zero + self.pressure_bar / r.full_scale_bar * span
+        sensed_bar = self.monitor_gain * self.pressure_bar + self.monitor_offset_bar
+        monitor_V = (r.monitor_V_at_zero + sensed_bar / r.full_scale_bar * span
                      + s.monitor_noise_V * self._normal())
         if self.monitor_lost:
             monitor_V = 0.0

@@ -48,35 +48,68 @@ class Faults:
 
 @dataclass(frozen=True)
 class Truth:
-    """The simulated muscle's own braid angle, rubber and gap between tube and braid (a model
-    that takes ``gap_mm``: ``thickwall``, ``axisym``), where they differ from the nominal ones.
+    """The simulated muscle and instruments as they are, where they differ from what the
+    configuration declares.
 
-    Unset (None): the model's nominal value (the calibrated angle, Silastic S, no gap). With
-    ``[sim]``'s ``hysteresis_fraction``, ``creep_fraction`` and ``creep_tau_s`` this is the truth
-    that ``mkm identify`` must find blind: it is recorded in the run's simulator settings only.
+    The muscle: its braid angle, rubber, gap between tube and braid (a model that takes
+    ``gap_mm``: ``thickwall``, ``axisym``), braid (``bonded`` or ``sliding``, a model that takes
+    ``braid``: ``axisym``) and its true geometry ``D0_mm``, ``t0_mm`` (``[muscle]`` keeps the
+    declared one, which is what a fit reads). The instruments: ``loadcell_gain``, the cell's true
+    output per newton over the configured one (1.02 records forces 2 % high);
+    ``monitor_gain`` and ``monitor_offset_bar``, the regulator's pressure sensor (the monitor
+    reads ``monitor_gain * P + monitor_offset_bar`` for a true pressure ``P``, and the regulator
+    holds that reading at the command, as an ITV does with its own sensor).
+
+    Unset (None): the nominal value (the calibrated angle, Silastic S, no gap, a bonded braid,
+    the declared geometry, exact instruments). With ``[sim]``'s ``hysteresis_fraction``,
+    ``creep_fraction`` and ``creep_tau_s`` this is the truth that ``mkm identify`` must find
+    blind: it is recorded in the run's simulator settings only
+    (:func:`remove_simulator_settings` deletes it).
     """
 
     theta0_deg: float | None = None
     C10_MPa: float | None = None
     C01_MPa: float | None = None
     gap_mm: float | None = None
+    braid: str | None = None
+    D0_mm: float | None = None
+    t0_mm: float | None = None
+    loadcell_gain: float | None = None
+    monitor_gain: float | None = None
+    monitor_offset_bar: float | None = None
 
     def check(self):
         from mkm.fem.limits import check_value
 
-        for f in dataclasses.fields(self):
-            if getattr(self, f.name) is not None:
-                check_value(f.name, getattr(self, f.name), prefix="sim.truth.")
+        for name in MODEL_FIELDS + GEOMETRY_FIELDS:
+            if name != "braid" and getattr(self, name) is not None:
+                check_value(name, getattr(self, name), prefix="sim.truth.")
+        for name, (low, high, unit) in INSTRUMENT_BOUNDS.items():
+            if getattr(self, name) is not None:
+                within(f"sim.truth.{name}", getattr(self, name), low, high, unit)
 
-    def model_params(self) -> dict[str, float]:
-        """The set values, as force-model parameters."""
-        return {f.name: float(getattr(self, f.name)) for f in dataclasses.fields(self)
-                if getattr(self, f.name) is not None}
+    def model_params(self) -> dict[str, float | str]:
+        """The set values the force model takes (angle, rubber, gap, braid)."""
+        return {name: (getattr(self, name) if name == "braid" else float(getattr(self, name)))
+                for name in MODEL_FIELDS if getattr(self, name) is not None}
+
+    def geometry(self, muscle) -> tuple[float, float]:
+        """The true ``(D0_mm, t0_mm)``: the set ones, else ``muscle``'s declared ones."""
+        return (float(self.D0_mm if self.D0_mm is not None else muscle.D0_mm),
+                float(self.t0_mm if self.t0_mm is not None else muscle.t0_mm))
+
+    def instrument(self, name: str) -> float:
+        """An instrument's truth, its exact value (gain 1, offset 0) when unset."""
+        value = getattr(self, name)
+        return float(value) if value is not None else (0.0 if name.endswith("_bar") else 1.0)
 
 
-TRUTH_FIELDS = tuple(f.name for f in dataclasses.fields(Truth))
-
-
+#: the truths the force model takes; the true geometry; the instruments' truths and bounds
+MODEL_FIELDS = ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "braid")
+GEOMETRY_FIELDS = ("D0_mm", "t0_mm")
+INSTRUMENT_BOUNDS = {"loadcell_gain": (0.9, 1.1, "(a cell 10 % off its calibration is broken)"),
+                     "monitor_gain": (0.9, 1.1, "(a sensor 10 % off is broken)"),
+                     "monitor_offset_bar": (-0.5, 0.5, "bar")}
 @dataclass(frozen=True)
 class Sim:
     """The simulated bench (:mod:`mkm.bench.sim`): the muscle's static force from ``model`` (a
@@ -127,7 +160,12 @@ class Sim:
         if refused:
             raise ValueError(f"sim.truth.{refused[0]} is not a parameter of sim.model="
                              f"{self.model!r}: expected some of "
-                             f"{', '.join(k for k in declared if k in TRUTH_FIELDS) or 'none'}")
+                             f"{', '.join(k for k in declared if k in MODEL_FIELDS) or 'none'}")
+        if self.truth.braid is not None:
+            choices = declared["braid"].options()
+            if self.truth.braid not in choices:
+                raise ValueError(f"sim.truth.braid={self.truth.braid[:40]!r} is invalid: "
+                                 f"expected one of {', '.join(choices)}")
 
 
 def remove_simulator_settings(run_dir) -> None:

@@ -97,7 +97,7 @@ class StepRecord(NamedTuple):
     settle_s: float  # time from the step's start to the start of the hold
     start_s: float
     end_s: float
-    # the hold's trend from first to last sample, and the budget of mkm.bench.budget (k = 2)
+    # the hold's trend from first to last sample, and the budget of mkm.bench.budget (U at 95.45 %)
     force_drift_N: float = math.nan
     force_u_N: float = math.nan
     force_U_N: float = math.nan

@@ -298,6 +298,11 @@ BENCHMARKS = {
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
     "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
     "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 1 --seed 0 --out {out}",
+    "identify_coverage.json": "benchmarks/bench_identify_coverage.py --draws 27 --out {out}",
+    "identify_coverage_infamily.json": "benchmarks/bench_identify_coverage.py --draws 30 "
+                                       "--seed 7 --departures in-family --out {out}",
+    "budget_coverage.json": "benchmarks/bench_uncertainty.py --runs 100 --eps 0 0.122 "
+                            "--no-bands --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
     "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --out {out}",

@@ -120,7 +120,7 @@ INVALID_LABEL = "x above the axes: no valid number (invalid or out of domain)"
 
 
 def _measured(ax, steps: pd.DataFrame, label: str, marker_up="o", marker_down="s") -> None:
-    """Measured mean force per step with its expanded uncertainty (k = 2) in force and pressure
+    """Measured mean force per step with its expanded uncertainty (95.45 %) in force and pressure
     (± std where the run has no budget): filled up sweep, open down sweep."""
     budget = "force_U_N" in steps and steps["force_U_N"].notna().any()
     for direction, marker, face in (("up", marker_up, "black"), ("down", marker_down, "white")):
@@ -130,7 +130,7 @@ def _measured(ax, steps: pd.DataFrame, label: str, marker_up="o", marker_down="s
                         yerr=sweep["force_U_N" if budget else "force_N_std"],
                         xerr=sweep["pressure_U_bar"] if budget else None, fmt=marker,
                         markerfacecolor=face, label=f"{label}, {direction} "
-                        f"({'mean ± U, k = 2' if budget else 'mean ± std'})", **MEASURED)
+                        f"({'mean ± U, 95.45 %' if budget else 'mean ± std'})", **MEASURED)
 
 
 def _model_curve(ax, rows: pd.DataFrame, colour: str, label: str | None,

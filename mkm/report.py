@@ -533,7 +533,7 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                            "time per force": format_seconds(s["seconds_per_point"])}
                           for s in r.summary])
     parts += [
-        figure_html(fig_path, "Left: measured force per pressure step (mean ± U, k = 2; "
+        figure_html(fig_path, "Left: measured force per pressure step (mean ± U at 95.45 %; "
                     + ("filled circles up sweep, open squares down sweep"
                        if (steps["direction"] == "down").any() else "the up sweep only")
                     + ") with each model and, where it has one, its ± 2 u band. Middle: Err% "
@@ -542,7 +542,7 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                        else ". ") + provenance_links(r.keys)),
         table_html(table, f"Per model (files: {stem}_errors.csv, summary.csv). E_n = "
                    "(F_meas − F_model) / √(U_meas² + (c U_p)² + U_model²) per step, every U "
-                   "expanded with k = 2 (c: the model's newtons per bar); consistent: |E_n| ≤ 1 "
+                   "expanded to 95.45 % (c: the model's newtons per bar); consistent: |E_n| ≤ 1 "
                    "at every valid step. The models have no braid friction and no creep, the "
                    "measurement has both: a model can be inconsistent by them alone. "
                    + provenance_links(r.keys)),
@@ -577,7 +577,8 @@ def _budget_section(r: _Run, links: str) -> str:
     caption = (f"Measurement uncertainty budget of step {int(s['step'])} ({s['set_pressure_bar']:g}"
                f" bar, {s['force_N_mean']:.1f} N, the run's largest force): u in N (force) or "
                f"bar (pressure), ranked, so the first term is the one to improve. Combined: "
-               f"U = {budget.force_U_N:.2f} N and {budget.pressure_U_bar:.3f} bar (k = 2); "
+               f"U = {budget.force_U_N:.2f} N (k = {budget.k('force'):.3g}) and "
+               f"{budget.pressure_U_bar:.3f} bar (k = {budget.k('pressure'):.3g}), 95.45 %; "
                f"the hold drifted {budget.drift_N:+.2f} N (creep: the hold mean is the "
                "measurand). Every step's U is in steps.csv (force_U_N, pressure_U_bar). "
                + links)

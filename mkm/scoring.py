@@ -107,7 +107,7 @@ def normalised_error(rows: pd.DataFrame, steps: pd.DataFrame) -> pd.DataFrame:
     """``rows`` with ``E_n`` = (F_meas - F_model) / sqrt(U_meas^2 + (c U_p)^2 + U_model^2).
 
     ``U_meas`` and ``U_p`` are the step's expanded uncertainties (``force_U_N``,
-    ``pressure_U_bar`` of steps.csv, k = 2), ``c`` the model's force per bar (the slope of a
+    ``pressure_U_bar`` of steps.csv, 95.45 %), ``c`` the model's force per bar (the slope of a
     straight line through its valid forces: the models are linear in pressure) so the pressure's
     uncertainty counts in newtons, ``U_model`` twice the prediction's ``force_u_N`` (0 when it
     has none). ``|E_n| <= 1``: the step and the model agree within their uncertainties. NaN for a

@@ -8,7 +8,8 @@
 3. Confirm with the FE model (one sweep per run at the optimum): the surrogate is corrected by
    the difference the FE shows there and the fit repeated on the corrected force.
 4. 95 % intervals and correlation by a bootstrap over steps (:mod:`mkm.identify.intervals`),
-   and what the runs cannot separate.
+   and what the runs cannot separate; the goodness of fit (:mod:`mkm.identify.goodness`): a
+   misfit beyond the steps' noise is named in one line and widens the intervals.
 5. Leave-one-run-out: each run predicted by the FE model at the parameters fitted to the
    others, against the nominal model (the calibrated angle, Silastic S, no friction or creep).
 """
@@ -24,7 +25,7 @@ from mkm.fem.batch import Runner
 from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import MODELS, STATIC_FAMILIES
 from mkm.fem.paper import equation7_err_pct
-from mkm.identify import fitting
+from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, Corrected, ModelStatic, SurrogateStatic
 from mkm.identify.intervals import CONFOUNDED, bootstrap
 from mkm.identify.result import Identification
@@ -161,6 +162,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
 
     notify("intervals: bootstrap over steps")
     boot = bootstrap(best, seed=seed)
+    fitness = goodness.assess(runs, best)
+    boot = goodness.widen(boot, best, fitness)
+    notes += [line for line in (fitness.line(),) if line]
     notes += _identifiability(runs, best, boot)
     if best.at_edge:
         notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
@@ -179,7 +183,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     return Identification(
         runs=runs, groups=groups, fit=best, bootstrap=boot, candidates=candidates,
         confirmation=confirmation, checks=checks, notes=notes, model=fe.name,
-        searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started)
+        searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started,
+        goodness=fitness)
 
 
 def _rms(r) -> float:

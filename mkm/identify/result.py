@@ -34,6 +34,7 @@ from mkm.fem.calibration import (
 from mkm.fem.ladder import MODELS
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify.fitting import Fit, full_parameters
+from mkm.identify.goodness import Goodness
 
 UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
          "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
@@ -64,6 +65,7 @@ class Identification:
     seconds: float
     fe_workers: str = "1 worker (in-process)"  # where the FE sweeps ran
     files: dict = field(default_factory=dict)
+    goodness: Goodness | None = None  # the misfit record (mkm.identify.goodness)
 
     @property
     def values(self) -> dict[str, float]:
@@ -134,12 +136,15 @@ class Identification:
             "parameters": params.to_dict(orient="records"),
             "interval_method": (f"bootstrap over settled steps within each run, "
                                 f"{self.bootstrap['replicates']} replicates, linearised at the "
-                                f"optimum, percentile 95 %, seed {self.bootstrap['seed']}"),
+                                f"optimum, percentile 95 %, seed {self.bootstrap['seed']}"
+                                + (f", widened x{self.goodness.birge_ratio:.3g} by the misfit"
+                                   if self.goodness and self.goodness.birge_ratio > 1 else "")),
             "correlation": self.correlation().round(4).to_dict(),
             "model_selection": {"criterion": "BIC of the hold residuals",
                                 "candidates": self.candidates},
             "searched_with": self.searched_with, "model": self.model,
             "fe_confirmation": self.confirmation, "notes": self.notes,
+            "goodness_of_fit": self.goodness.record() if self.goodness else None,
             "leave_one_run_out": self.checks_table().to_dict(orient="records"),
             "seconds": round(self.seconds, 2), "fe_workers": self.fe_workers,
         }
@@ -155,6 +160,11 @@ class Identification:
                          f"[{row.ci_low:.5g}, {row.ci_high:.5g}] {row.unit}")
         for group in self.dropped:
             lines.append(f"  {group}: not warranted by the data (BIC), dropped")
+        if self.goodness is not None and self.goodness.judged:
+            g = self.goodness
+            lines.append(f"  goodness of fit: chi2/nu = {g.reduced:.3g} over "
+                         f"{sum(b.steps for b in g.branches)} settled steps against their own "
+                         f"noise ({'a misfit, see below' if g.misfit else 'within the noise'})")
         for check in self.checks_table().to_dict(orient="records"):
             text = (f"  {check['run']}: largest |Err%| rising/falling: nominal "
                     f"{check['nominal_rising_pct']:.2f}/{check['nominal_falling_pct']:.2f}, "
@@ -194,7 +204,8 @@ class Identification:
         model = static.build(theta0_deg=values["theta0_deg"], **material, **gap)
         identified = {"runs": record["runs"], "parameters": record["parameters"],
                       "interval_method": record["interval_method"], "dropped": self.dropped,
-                      "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"]}
+                      "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"],
+                      "misfit": record["goodness_of_fit"]}
         reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}

@@ -35,7 +35,8 @@ class RunData:
     denoised where the run held it (see :func:`load_run_data`); ``hold`` is the index of the
     settled step each sample's hold belongs to (-1: not in a settled hold); ``steps`` the
     settled steps (``step``, ``direction``, ``set_pressure_bar``, ``pressure_bar_mean``,
-    ``force_N_mean``, ``hold_start_s``, ``end_s``); ``tare_se_N`` the standard error of the
+    ``force_N_mean``, ``hold_start_s``, ``end_s``, ``pressure_se_bar``: the standard error of the
+    hold's mean pressure, NaN for an imported step); ``tare_se_N`` the standard error of the
     zero the run's forces are measured from (its tare samples' std over their root count).
     """
 
@@ -109,10 +110,14 @@ def load_run_data(path) -> RunData:
     hold = np.full(time_s.size, -1)
     settled = settled.reset_index(drop=True).assign(
         hold_start_s=lambda s: s["start_s"] + s["settle_s"])
+    pressure_se = np.full(len(settled), np.nan)
     for k, step in settled.iterrows():
         inside = (time_s >= step["hold_start_s"] - 1e-9) & (time_s <= step["end_s"] + 1e-9)
         hold[inside] = k
+        if inside.sum() > 1:  # the monitor's noise in the hold mean (goodness of fit uses it)
+            pressure_se[k] = np.std(pressure[inside], ddof=1) / np.sqrt(inside.sum())
         pressure[inside] = step["pressure_bar_mean"]
+    settled["pressure_se_bar"] = pressure_se
     # the ramp into a hold does not overshoot it (first-order regulator): clip its noise too
     in_step = samples["step"].to_numpy()
     for _, step in settled.iterrows():
@@ -130,7 +135,8 @@ def load_run_data(path) -> RunData:
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=settled[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
-                                  "force_N_mean", "hold_start_s", "end_s"]], sha256=sha,
+                                  "force_N_mean", "hold_start_s", "end_s", "pressure_se_bar"]],
+                   sha256=sha,
                    tare_se_N=tare_se, timed=imported.get("shape") != "ramp")
 
 

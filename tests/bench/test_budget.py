@@ -7,8 +7,11 @@ import numpy as np
 import pytest
 
 from mkm.bench.budget import (
+    COVERAGE_PROBABILITY,
     Instrument,
+    Term,
     budget_table,
+    coverage_factor,
     expected_budget,
     residual_std,
     step_budget,
@@ -50,7 +53,9 @@ def test_terms_follow_the_gum_for_known_inputs(config):
     assert b.force_u_N == pytest.approx(math.sqrt(sum(
         u**2 for name, u in terms.items() if not name.startswith(("pressure", "ADC resolution ("))
     )))
-    assert b.force_U_N == pytest.approx(2 * b.force_u_N)
+    assert b.force_U_N == pytest.approx(b.k("force") * b.force_u_N)
+    # the rectangular data-sheet bounds dominate: k between one bound alone's 1.65 and 2
+    assert 1.7 < b.k("force") < 2.0
     assert b.pressure_u_bar == pytest.approx(math.hypot(
         0.04 / math.sqrt(3), i.lsb_V * 4.0 / 4.0 / math.sqrt(12)))
     ranked = b.ranked("force")
@@ -88,7 +93,7 @@ def test_hold_stats_match_numpy(config):
     assert hold.drift_N == pytest.approx(np.polyfit(t, f, 1)[0] * (t[-1] - t[0]))
     row = hold.record(Step(0, "up", 0, 1.0), Instrument.from_config(config),
                       {"std_N": 0.4, "n": 50}, True, 5.0, 5.0, 16.0)
-    assert row.force_U_N == pytest.approx(2 * row.force_u_N)
+    assert 1.65 < row.force_U_N / row.force_u_N <= 2.0
     assert row.force_u_N > 0.5 / math.sqrt(60)  # at least the noise of the mean
 
 
@@ -100,7 +105,8 @@ def test_steps_csv_carries_the_budget(config, tmp_path):
     assert list(steps.columns) == list(STEP_COLUMNS)
     for column in ("force_u_N", "force_U_N", "pressure_u_bar", "pressure_U_bar"):
         assert (steps[column] > 0).all()
-    assert np.allclose(steps["force_U_N"], 2 * steps["force_u_N"], rtol=1e-5)
+    k = steps["force_U_N"] / steps["force_u_N"]
+    assert ((k > 1.65) & (k <= 2.0 + 1e-4)).all()
     # the default cell's data sheet alone: non-linearity 0.57 N, zero drift 0.23 N
     assert (steps["force_u_N"] > 0.6).all() and (steps["force_u_N"] < 2.0).all()
 
@@ -143,11 +149,38 @@ def test_check_prints_the_expected_budget(config):
 
 
 def test_coverage_on_simulated_runs():
-    # 5 runs x 19 settled steps of known truth (noise, quantisation, friction, creep on). With
-    # a true coverage of 95 %, 95 steps give 95 +- 2.2 % (binomial sd); the runs share a tare
-    # each, so allow 3 sd either side. The benchmark pools >= 500 steps for the 95 +- 3 % target.
+    # 5 runs x 19 settled steps of known truth (noise, quantisation, friction, creep on), each
+    # run's load-cell gain and monitor error drawn within the data sheet. The steps of a run
+    # share its gain, so 5 runs tell little about the coverage (the benchmark pools 200 runs
+    # for the 95 +- 3 % target); here: the standard uncertainty is the error's spread.
     steps = simulated_coverage(load_config(), range(5))
     assert len(steps) == 95
-    assert steps["covered"].mean() >= 0.88
+    assert steps["covered"].mean() >= 0.75
     z = (steps["force_N_mean"] - steps["force_true_N"]) / steps["force_u_N"]
-    assert 0.75 < z.std() < 1.3  # the standard uncertainty is the error's spread, not a bound
+    assert 0.6 < z.std() < 1.4
+    # the recorded force is the true one times the drawn gain, to within the step's noise
+    top = steps.loc[steps["force_true_N"] > 500]
+    assert ((top["force_N_mean"] / top["force_true_N"] - top["loadcell_gain"]).abs()
+            < 3 * top["force_u_N"] / top["force_true_N"]).all()
+
+
+def test_coverage_factors_are_the_quantiles_of_known_distributions():
+    normal = Term("noise", "force", 1.0, "A", "")
+
+    def bound(u):
+        return Term("bound", "force", u, "B", "", "rectangular")
+
+    assert COVERAGE_PROBABILITY == pytest.approx(0.9545, abs=1e-4)
+    assert coverage_factor([normal]) == pytest.approx(2.0, abs=1e-9)
+    assert coverage_factor([bound(1.0)]) == pytest.approx(COVERAGE_PROBABILITY * math.sqrt(3))
+    # two equal bounds: a triangle of half-width 2a; P(|X| <= x) = 1 - (1 - x/2a)^2
+    a = math.sqrt(3)
+    x = 2 * a * (1 - math.sqrt(1 - COVERAGE_PROBABILITY))
+    assert coverage_factor([bound(1.0), bound(1.0)]) == pytest.approx(x / math.sqrt(2),
+                                                                      rel=2e-3)
+    # a bound and a normal term of equal u: checked against 400 000 seeded draws
+    rng = np.random.default_rng(3)
+    draws = rng.uniform(-a, a, 400_000) + rng.standard_normal(400_000)
+    k = coverage_factor([bound(1.0), normal])
+    assert np.mean(np.abs(draws) <= k * math.sqrt(2)) == pytest.approx(COVERAGE_PROBABILITY,
+                                                                       abs=0.002)

@@ -8,7 +8,8 @@ import pytest
 
 from mkm.bench.config import parse_config
 from mkm.bench.run import acquire
-from mkm.bench.sim import SimMuscleBench, static_force_table
+from mkm.bench.sim import LSB_V, SimMuscleBench, static_force_table
+from mkm.bench.sim_settings import remove_simulator_settings
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
 
@@ -75,7 +76,9 @@ def test_the_truth_is_recorded_in_the_simulator_settings(config, tmp_path):
     meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
     sim = meta["hardware"]["sim"]
     assert sim["truth"] == {"theta0_deg": 31.5, "C10_MPa": None, "C01_MPa": None,
-                            "gap_mm": None}
+                            "gap_mm": None, "braid": None, "D0_mm": None, "t0_mm": None,
+                            "loadcell_gain": None, "monitor_gain": None,
+                            "monitor_offset_bar": None}
     assert sim["physics"]["force_model_params"]["theta0_deg"] == 31.5
     assert "[sim.truth]\ntheta0_deg = 31.5" in (result.path / "config.toml").read_text("utf-8")
 
@@ -95,3 +98,114 @@ def test_a_gap_truth_is_the_thick_wall_muscle_with_that_gap(config):
     with pytest.raises(ValueError, match=r"sim.truth.gap_mm is not a parameter of "
                                          r"sim.model='eq2'"):
         config.replace(sim={"model": "eq2", "truth": {"gap_mm": 0.8}})
+
+
+def settled(config, pressure_bar: float = 2.0):
+    """The bench after 10 s at ``pressure_bar``: (load-cell V, monitor V) and the bench."""
+    bench = SimMuscleBench(config)
+    bench.set_command_volts(config.regulator.command_volts(pressure_bar))
+    for _ in range(100):  # the regulator has settled to 1e-10 bar
+        volts = bench.step()
+    return volts, bench
+
+
+def test_a_loadcell_gain_records_every_force_that_much_high(config):
+    c = quiet(config, model="thickwall", truth={"loadcell_gain": 1.02})
+    volts, bench = settled(c)
+    recorded = volts[0] * c.loadcell.sensitivity_N_per_V
+    # 2 % of ~760 N is 15 N; one ADC step is 0.24 N
+    assert recorded - bench.force_N == pytest.approx(0.02 * bench.force_N,
+                                                     abs=LSB_V * c.loadcell.sensitivity_N_per_V)
+    # the force itself is the muscle's, at the pressure held: the gain changes the reading only
+    _, exact = settled(quiet(config, model="thickwall"))
+    assert bench.force_N == pytest.approx(exact.force_N, rel=1e-12)
+
+
+@pytest.mark.parametrize("truth, read", [
+    ({"monitor_offset_bar": 0.03}, lambda p: p + 0.03),
+    ({"monitor_gain": 1.01}, lambda p: 1.01 * p),
+    ({"monitor_gain": 0.99, "monitor_offset_bar": -0.02}, lambda p: 0.99 * p - 0.02),
+])
+def test_the_monitor_reads_the_true_pressure_through_its_error(config, truth, read):
+    c = quiet(config, model="thickwall", truth=truth)
+    volts, bench = settled(c)
+    recorded_bar = float(c.regulator.monitor_bar(volts[1]))
+    lsb_bar = float(c.regulator.monitor_bar(c.regulator.monitor_V_at_zero + LSB_V))
+    assert recorded_bar == pytest.approx(read(bench.pressure_bar), abs=lsb_bar)
+    # the regulator holds its own sensor at the command: the monitor reads 2 bar, the muscle
+    # sees the pressure that makes the sensor read it
+    assert recorded_bar == pytest.approx(2.0, abs=lsb_bar)
+    assert read(bench.pressure_bar) == pytest.approx(2.0, abs=1e-9)
+
+
+def test_a_true_wall_other_than_the_declared_one_changes_the_force_as_the_model_says(config):
+    m = config.muscle
+    c = quiet(config, model="thickwall", truth={"t0_mm": m.t0_mm - 0.4})
+    assert c.muscle.t0_mm == m.t0_mm  # the declared muscle is unchanged
+    pressure, force = static_force_table(c)
+    model = make_model("thickwall", L0_mm=m.L0_mm)
+    thin = model.predict(pressure, m.D0_mm, m.t0_mm - 0.4, m.eps)
+    np.testing.assert_allclose(force, np.maximum(thin.force_N, 0.0), rtol=1e-12, atol=1e-12)
+    _, declared = static_force_table(quiet(config, model="thickwall"))
+    # D0 is the inner diameter: a thinner wall puts the braid on a smaller circle, the pressure
+    # acts on less area (Equation 2's D^2), and the muscle pulls less: 30 N less at 2 bar
+    k = np.searchsorted(pressure, 2.0)
+    assert declared[k] - force[k] > 20.0
+    d0 = quiet(config, model="thickwall", truth={"D0_mm": m.D0_mm + 0.3})
+    wide = model.predict(pressure, m.D0_mm + 0.3, m.t0_mm, m.eps)
+    np.testing.assert_allclose(static_force_table(d0)[1], np.maximum(wide.force_N, 0.0),
+                               rtol=1e-12, atol=1e-12)
+
+
+def test_a_sliding_braid_truth_is_the_fe_models_sliding_sleeve(config):
+    m = config.muscle
+    truth = {"braid": "sliding", "theta0_deg": 32.0}
+    pressure, force = static_force_table(quiet(config, truth=truth))
+    fe = make_model("axisym", mesh="coarse", L0_mm=m.L0_mm, **truth)
+    at = pressure[[20, 40, 80]]
+    expected = fe.predict(at, m.D0_mm, m.t0_mm, m.eps).force_N
+    np.testing.assert_allclose(force[[20, 40, 80]], expected, rtol=1e-9)
+
+
+@pytest.mark.parametrize("truth, message", [
+    ({"braid": "glued"}, "sim.truth.braid='glued' is invalid: expected one of bonded, sliding"),
+    ({"loadcell_gain": 1.5}, "sim.truth.loadcell_gain=1.5 is invalid: expected 0.9 to 1.1"),
+    ({"monitor_gain": 0.5}, "sim.truth.monitor_gain=0.5 is invalid: expected 0.9 to 1.1"),
+    ({"monitor_offset_bar": -1.0}, "sim.truth.monitor_offset_bar=-1 is invalid: expected -0.5 "
+                                   "to 0.5 bar"),
+    ({"t0_mm": 16.0}, "sim.truth.t0_mm=16 is too thick for D0_mm=30"),
+    ({"D0_mm": 0.1}, "sim.truth.D0_mm=0.1 is invalid"),
+])
+def test_an_out_of_bounds_departure_is_named(config, truth, message):
+    with pytest.raises(ValueError, match=message):
+        config.replace(sim={"truth": truth})
+
+
+def test_a_bad_departure_is_one_line_and_exit_2_from_mkm_check(config, tmp_path, capsys):
+    from mkm.cli import main
+
+    path = tmp_path / "bad.toml"
+    path.write_text(config.text + "\n[sim.truth]\nloadcell_gain = 1.5\n", encoding="utf-8")
+    assert main(["check", "--config", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "sim.truth.loadcell_gain=1.5 is invalid" in err[0]
+
+
+def test_the_departures_are_stripped_with_the_simulator_settings(config, tmp_path):
+    m = config.muscle
+    c = config.replace(sim={"model": "thickwall", "truth": {
+        "t0_mm": m.t0_mm - 0.3, "loadcell_gain": 1.001, "monitor_offset_bar": 0.02}})
+    result = acquire(c, out_root=tmp_path)
+    meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
+    # what a fit reads is the declared muscle; the truth is in the simulator's settings only
+    assert meta["muscle"]["t0_mm"] == m.t0_mm
+    assert meta["hardware"]["sim"]["truth"]["t0_mm"] == m.t0_mm - 0.3
+    assert meta["hardware"]["sim"]["physics"]["instruments"]["loadcell_gain"] == 1.001
+    assert meta["hardware"]["sim"]["physics"]["summary"].endswith(
+        "departures from the configuration: true t0_mm 2.7 (declared 3), loadcell_gain 1.001, "
+        "monitor_offset_bar 0.02")
+    remove_simulator_settings(result.path)
+    text = (result.path / "run.json").read_text(encoding="utf-8")
+    for key in ("loadcell_gain", "monitor_offset_bar", '"truth"'):
+        assert key not in text
+    assert "[sim" not in (result.path / "config.toml").read_text(encoding="utf-8")

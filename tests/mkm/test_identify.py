@@ -104,6 +104,12 @@ def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mk
     assert [r["run"] for r in entry["identified"]["runs"]] == [p.name for p in runs]
     assert all(len(r["sha256"]["steps.csv"]) == 64 for r in entry["identified"]["runs"])
     assert {"eq2-inner", "eq2-braid"} <= set(calibration)
+    # the misfit record: an in-family fit is within its noise (chi2/nu of ~50 steps has sd 0.2;
+    # the truth is fresh each session, so the 2 % false alarm is not asserted away)
+    misfit = entry["identified"]["misfit"]
+    assert misfit["judged"] and misfit["chi2_per_nu"] < 2.0
+    assert (misfit["misfit_line"] is None) == (misfit["birge_ratio"] == 1.0)
+    assert len(misfit["branches"]) == 2 * len(runs) and "goodness of fit: chi2/nu = " in stdout
 
     # fem solve with --calibration is the thick-wall model of the identified muscle
     argv = ["fem", "solve", "--model", "thickwall", "--D0", "30", "--t0", "3", "--eps", "0.1",

@@ -1,0 +1,257 @@
+"""Goodness of fit of an identification: do the settled steps agree with the model within their
+own noise?
+
+Each settled step's mean residual (model minus measured, over its hold) is judged against the
+noise of that mean, measured on the step itself:
+
+- the scatter of the hold's residuals about their mean over root n (the load cell's noise and
+  quantisation; a creep trend the model follows is not in it, one it misses is);
+- the monitor's noise in the hold's mean pressure times the force's slope there (the model is
+  evaluated at that mean, so its noise moves the residual);
+- the run's tare, shared by every step of the run (a correlated term: its standard error on
+  every element of the run's covariance).
+
+Per run and branch (rising, falling): ``chi2 = r' C^-1 r`` over the branch's ``n`` steps, with
+``nu = n`` degrees of freedom: the fit minimises the residuals of every hold sample, not this
+chi-square (the within-hold creep and the ramps inform it too), so its parameters do not take
+``p`` degrees of freedom from it (on in-family simulated runs the fitted chi-square exceeds the
+truth's more often than not); and a Wald-Wolfowitz runs test on the signs of the residuals in
+pressure order (too few runs: the residuals have structure, a curve the model does not follow).
+The fit does not fit within its noise when all steps' ``chi2`` together is that large with a
+probability below :data:`MISFIT_P`, or one branch's is below :data:`MISFIT_P` over the number
+of branches (were the steps' noise exactly what they show, a fit that fits would be called a
+misfit in 0.2 % of identifications; ``benchmarks/bench_identify_coverage.py --departures
+in-family`` measures it on simulated runs); then the intervals are widened by the Birge ratio
+``sqrt(chi2 / nu)`` of all steps together (where it exceeds 1), the usual remedy when the spread
+of the data exceeds their stated noise (Birge 1932; the Particle Data Group's scale factor), so
+the intervals are at least as wide as the misfit says the model's errors are. It is a
+widening, not a model of the discrepancy: a systematic error (a monitor offset, a braid the
+model does not have) biases the estimate as well, which the warning line says.
+
+The bench's instrument tolerances (the load cell's gain, the monitor's accuracy) are not noise
+here: they are errors the data share, and a fit that cannot absorb them shows them as misfit.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import stats
+
+#: a misfit: all steps' chi-square this improbable under their noise alone (a branch's: this
+#: over the number of branches)
+MISFIT_P = 1e-3
+#: runs-test probability below which the residuals are said to have structure
+STRUCTURE_P = 0.01
+BRANCHES = {"up": "loading", "down": "unloading"}
+
+
+@dataclass
+class Branch:
+    """One run's branch: its steps' mean residuals, their noise and the statistics."""
+
+    run: str
+    branch: str  # "loading" | "unloading"
+    steps: int
+    chi2: float
+    nu: float
+    p_value: float  # P(chi2 >= observed | the noise alone)
+    runs: int  # sign runs of the residuals in pressure order
+    runs_p: float  # one-sided: P(this few runs | independent signs)
+    rms_residual_N: float
+    rms_noise_N: float
+
+    @property
+    def reduced(self) -> float:
+        return self.chi2 / self.nu if self.nu > 0 else math.nan
+
+    def record(self) -> dict:
+        return {"run": self.run, "branch": self.branch, "steps": self.steps,
+                "chi2": round(self.chi2, 3), "nu": round(self.nu, 3),
+                "chi2_per_nu": round(self.reduced, 3), "p_value": float(f"{self.p_value:.3g}"),
+                "sign_runs": self.runs, "runs_test_p": float(f"{self.runs_p:.3g}"),
+                "rms_residual_N": round(self.rms_residual_N, 4),
+                "rms_noise_N": round(self.rms_noise_N, 4)}
+
+
+@dataclass
+class Goodness:
+    """The judgement of one fit: per run and branch, and the widening it calls for."""
+
+    branches: list[Branch]
+    chi2: float
+    nu: float
+    judged: bool = True
+    why_not: str = ""
+    widened: dict = field(default_factory=dict)  # parameter: factor applied
+
+    @property
+    def reduced(self) -> float:
+        return self.chi2 / self.nu if self.nu > 0 else math.nan
+
+    @property
+    def p_value(self) -> float:
+        """P(chi2 of all steps >= observed | the noise alone)."""
+        return float(stats.chi2.sf(self.chi2, self.nu)) if self.nu > 0 else math.nan
+
+    @property
+    def misfit(self) -> list[Branch]:
+        """The branches to name when the fit is a misfit (see the module docstring): those
+        beyond their noise at :data:`MISFIT_P`, else the worst one; empty when it fits."""
+        if not self.branches:
+            return []
+        alone = [b for b in self.branches if b.p_value < MISFIT_P / len(self.branches)]
+        if not alone and not self.p_value < MISFIT_P:
+            return []
+        return [b for b in self.branches if b.p_value < MISFIT_P] or [
+            max(self.branches, key=lambda b: b.reduced)]
+
+    @property
+    def birge_ratio(self) -> float:
+        """The factor the intervals are widened by: ``sqrt(chi2 / nu)`` of all steps when a
+        branch misfits and that exceeds 1, else 1."""
+        if not self.misfit or not self.reduced > 1:
+            return 1.0
+        return math.sqrt(self.reduced)
+
+    def line(self) -> str | None:
+        """One line when the model does not fit within the noise (None when it does)."""
+        bad = sorted(self.misfit, key=lambda b: -b.reduced)
+        if not bad:
+            return None
+        shown = "; ".join(
+            f"run {b.run} {b.branch} chi2/nu={b.reduced:.3g}"
+            + (f" structured (runs test p={b.runs_p:.2g})" if b.runs_p < STRUCTURE_P else "")
+            for b in bad[:4])
+        more = f"; and {len(bad) - 4} more" if len(bad) > 4 else ""
+        return (f"misfit: {shown}{more}: the model does not follow these steps within their "
+                f"noise, intervals widened by x{self.birge_ratio:.3g} (the estimates may be "
+                "biased too: check the monitor's zero, the load cell's calibration, the muscle's "
+                "wall and braid)")
+
+    def record(self) -> dict:
+        return {"method": "chi-square of the settled steps' mean residuals against their own "
+                          f"noise (hold scatter, monitor noise x slope, tare), per run and "
+                          f"branch; misfit when all steps' p < {MISFIT_P:g} or a branch's < "
+                          f"{MISFIT_P:g} / branches; Wald-Wolfowitz runs test on "
+                          "the residuals' signs in pressure order; intervals widened by the "
+                          "Birge ratio sqrt(chi2/nu) on a misfit",
+                "judged": self.judged, **({"why_not": self.why_not} if not self.judged else {}),
+                "chi2": round(self.chi2, 3), "nu": round(self.nu, 3),
+                "chi2_per_nu": round(self.reduced, 3) if self.nu > 0 else None,
+                "p_value": float(f"{self.p_value:.3g}") if self.nu > 0 else None,
+                "misfit_branches": [f"{b.run} {b.branch}" for b in self.misfit],
+                "birge_ratio": round(self.birge_ratio, 4),
+                "misfit_line": self.line(), "widened": self.widened,
+                "branches": [b.record() for b in self.branches]}
+
+
+def runs_test(values) -> tuple[int, float]:
+    """Wald-Wolfowitz runs test on the signs of ``values`` (zeros left out): the number of runs
+    and the one-sided mid-p of so few under independent signs, from the exact distribution of
+    the runs given the counts of each sign (mid-p: ``P(R < r) + P(R = r) / 2``, near uniform on
+    noise where the plain exact p is conservative); 1 when one sign is missing."""
+    signs = np.sign(np.asarray(values, dtype=float))
+    signs = signs[signs != 0]
+    n1, n2 = int(np.sum(signs > 0)), int(np.sum(signs < 0))
+    if n1 == 0 or n2 == 0:
+        return (1 if signs.size else 0), 1.0
+    runs = int(1 + np.sum(signs[1:] != signs[:-1]))
+    total = math.comb(n1 + n2, n1)
+
+    def probability(r: int) -> float:
+        k, odd = divmod(r, 2)
+        if odd:
+            ways = (math.comb(n1 - 1, k) * math.comb(n2 - 1, k - 1)
+                    + math.comb(n1 - 1, k - 1) * math.comb(n2 - 1, k)) if k >= 1 else 0
+        else:
+            ways = 2 * math.comb(n1 - 1, k - 1) * math.comb(n2 - 1, k - 1) if k >= 1 else 0
+        return ways / total
+
+    below = sum(probability(r) for r in range(2, runs))
+    return runs, float(below + probability(runs) / 2)
+
+
+def chi_square(residual, noise, shared: float = 0.0) -> float:
+    """``r' C^-1 r`` with ``C = diag(noise^2) + shared^2`` (a term every element shares)."""
+    r, var = np.asarray(residual, dtype=float), np.asarray(noise, dtype=float) ** 2
+    if shared > 0:  # Sherman-Morrison: (D + s^2 11')^-1
+        w = r / var
+        return float(r @ w - shared**2 * np.sum(w) ** 2 / (1.0 + shared**2 * np.sum(1 / var)))
+    return float(np.sum(r**2 / var))
+
+
+def _slopes(steps) -> np.ndarray:
+    """dF/dP [N/bar] at each step, from the run's own step means (both branches' means at each
+    distinct pressure)."""
+    P = steps["pressure_bar_mean"].to_numpy(dtype=float)
+    F = steps["force_N_mean"].to_numpy(dtype=float)
+    levels, inverse = np.unique(np.round(P, 3), return_inverse=True)
+    if levels.size < 2:
+        return np.zeros(P.size)
+    mean_P = np.bincount(inverse, P) / np.bincount(inverse)
+    mean_F = np.bincount(inverse, F) / np.bincount(inverse)
+    return np.gradient(mean_F, mean_P)[inverse]
+
+
+def assess(runs, fit) -> Goodness:
+    """The goodness of ``fit`` (:class:`mkm.identify.fitting.Fit`) to ``runs``."""
+    if not all(r.timed for r in runs):
+        return Goodness([], 0.0, 0.0, judged=False,
+                        why_not="a step table or a ramp has no hold samples to measure its "
+                                "noise from")
+    n_steps = fit.run_of_cluster.size
+    sums = np.bincount(fit.cluster, fit.residual_N, minlength=n_steps)
+    counts = np.bincount(fit.cluster, minlength=n_steps)
+    mean = sums / np.maximum(counts, 1)
+    squares = np.bincount(fit.cluster, (fit.residual_N - mean[fit.cluster]) ** 2,
+                          minlength=n_steps)
+    scatter2 = squares / np.maximum(counts - 1, 1) / np.maximum(counts, 1)
+    branches, offset = [], 0
+    for k, run in enumerate(runs):
+        steps = run.steps.reset_index(drop=True)
+        here = slice(offset, offset + len(steps))
+        offset += len(steps)
+        pressure_se = steps.get("pressure_se_bar")
+        pressure_se = (np.nan_to_num(pressure_se.to_numpy(dtype=float)) if pressure_se is
+                       not None else np.zeros(len(steps)))
+        noise = np.sqrt(scatter2[here] + (_slopes(steps) * pressure_se) ** 2)
+        tare = float(fit.tare_se_N[k]) if fit.tare_se_N.size else 0.0
+        for direction, branch in BRANCHES.items():
+            pick = (steps["direction"].to_numpy() == direction) & (counts[here] > 1)
+            if not pick.any():
+                continue
+            r, s = mean[here][pick], noise[pick]
+            s = np.maximum(s, 1e-12)
+            chi2 = chi_square(r, s, tare)
+            nu = float(pick.sum())
+            order = np.argsort(steps["pressure_bar_mean"].to_numpy()[pick], kind="stable")
+            n_runs, runs_p = runs_test(r[order])
+            branches.append(Branch(
+                run.name, branch, int(pick.sum()), chi2, nu,
+                float(stats.chi2.sf(chi2, nu)) if nu > 0 else math.nan, n_runs, runs_p,
+                float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2)))))
+    chi2 = sum(b.chi2 for b in branches)
+    nu = sum(b.nu for b in branches)
+    return Goodness(branches, chi2, nu)
+
+
+def widen(boot: dict, fit, goodness: Goodness) -> dict:
+    """``boot`` (:func:`mkm.identify.intervals.bootstrap`) with every interval of an identifiable
+    parameter widened about the estimate by the Birge ratio (clipped to the parameter's bounds);
+    unchanged when the fit is within the noise."""
+    factor = goodness.birge_ratio
+    if factor <= 1.0:
+        return boot
+    interval = dict(boot["interval"])
+    for name, (low, high) in boot["interval"].items():
+        if not boot["identifiable"].get(name, True):
+            continue
+        value = fit.values[name]
+        lo_b, hi_b = fit.bounds[name]
+        interval[name] = (max(value - factor * (value - low), lo_b),
+                          min(value + factor * (high - value), hi_b))
+        goodness.widened[name] = round(factor, 4)
+    return {**boot, "interval": interval, "unwidened_interval": boot["interval"]}

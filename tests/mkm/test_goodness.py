@@ -1,0 +1,137 @@
+"""Goodness of fit of an identification (mkm.identify.goodness): in-family runs fit within their
+noise, a bench that is wrong the way real ones are does not, and says so.
+
+The runs are simulated with the thick-wall closed form and fitted with it (as the fast tests of
+``test_identify.py``): the model is the simulator's, so an in-family fit leaves only the noise.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy import stats
+
+from mkm.bench.config import load_config
+from mkm.bench.run import acquire
+from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.identify import fitting, goodness
+from mkm.identify.fitting import ModelStatic
+from mkm.identify.runs import load_runs
+
+NAMES = ("theta0_deg", "rubber_scale", "hysteresis_fraction", "creep_fraction", "log_tau")
+
+
+def fitted(tmp_path_factory, truth: dict):
+    """Two blind simulated runs (eps 0 and 12.2 %) of ``truth`` and the thick-wall fit to
+    them."""
+    out = tmp_path_factory.mktemp("goodness")
+    paths = []
+    for k, eps in enumerate((0.0, 0.122)):
+        config = load_config(eps=eps).replace(
+            sequence={"pressures_bar": (0.5, 1.0, 1.5, 2.0, 2.5), "preconditioning_cycles": 0},
+            sim={"model": "thickwall", "seed": 11 + k, "truth": truth})
+        result = acquire(config, out_root=out, notify=lambda message: None)
+        assert result.status == "complete"
+        remove_simulator_settings(result.path)
+        paths.append(result.path)
+    runs = load_runs(paths)
+    source = ModelStatic("thickwall", float(runs[0].muscle["L0_mm"]), cache_dir=None)
+    start = {**fitting.nominal_values(33.0), "hysteresis_fraction": 0.02,
+             "creep_fraction": 0.01}
+    return runs, fitting.fit(source, runs, NAMES, start)
+
+
+@pytest.fixture(scope="module")
+def in_family(tmp_path_factory):
+    return fitted(tmp_path_factory, {})
+
+
+@pytest.fixture(scope="module")
+def offset(tmp_path_factory):
+    return fitted(tmp_path_factory, {"monitor_offset_bar": 0.03})
+
+
+def test_in_family_runs_fit_within_their_noise(in_family):
+    runs, fit = in_family
+    good = goodness.assess(runs, fit)
+    assert len(good.branches) == 4  # two runs, loading and unloading
+    # 18 steps: chi2/nu of pure noise has sd sqrt(2/18) = 0.33
+    assert good.nu == 18
+    assert 0.3 < good.reduced < 2.0, good.record()
+    assert stats.chi2.sf(good.chi2, good.nu) > 0.01
+    assert not good.misfit and good.line() is None and good.birge_ratio == 1.0
+    # the step means' noise is the load cell's (0.002 V x 196 N/V = 0.39 N a sample) over
+    # root 50 hold samples, plus the monitor's (1 mV = 1 mbar) over root 50 times ~400 N/bar
+    for branch in good.branches:
+        assert 0.05 < branch.rms_noise_N < 0.12
+
+
+def test_a_monitor_offset_is_a_misfit_named_in_one_line(offset):
+    runs, fit = offset
+    good = goodness.assess(runs, fit)
+    # 0.03 bar on a muscle of ~400 N/bar is ~12 N at every step, against ~0.08 N of noise: a
+    # fit of theta0 and the rubber absorbs most of it, the threshold's shape it cannot
+    assert good.reduced > 50, good.record()
+    assert good.misfit
+    line = good.line()
+    assert line.startswith("misfit: run ") and "\n" not in line
+    assert f"intervals widened by x{math.sqrt(good.reduced):.3g}" in line
+    assert good.birge_ratio == pytest.approx(math.sqrt(good.reduced))
+
+
+def test_a_misfit_widens_every_interval_by_the_birge_ratio(offset):
+    runs, fit = offset
+    good = goodness.assess(runs, fit)
+    boot = {"interval": {n: (fit.values[n] - 1e-3, fit.values[n] + 2e-3) for n in fit.names},
+            "identifiable": {n: True for n in fit.names}}
+    wide = goodness.widen(boot, fit, good)
+    k = good.birge_ratio
+    theta = fit.values["theta0_deg"]
+    low, high = wide["interval"]["theta0_deg"]
+    assert (theta - low, high - theta) == pytest.approx((k * 1e-3, k * 2e-3))
+    lo_b, hi_b = fit.bounds["creep_fraction"]
+    assert lo_b <= wide["interval"]["creep_fraction"][0]  # clipped to the bounds
+    assert wide["unwidened_interval"] == boot["interval"]
+    assert goodness.widen(boot, fit, goodness.Goodness([], 10.0, 10.0)) is boot
+
+
+def test_the_runs_test_is_uniform_on_white_noise_and_finds_a_curve():
+    rng = np.random.default_rng(5)
+    p = np.array([goodness.runs_test(rng.standard_normal(20))[1] for _ in range(2000)])
+    # mid-p of the exact distribution: P(p <= a) ~ a (2000 draws: +-0.015 at 2 sd near 0.05)
+    for a in (0.05, 0.25, 0.5, 0.75):
+        assert np.mean(p <= a) == pytest.approx(a, abs=max(0.025, 0.1 * a))
+    # a bow (positive at both ends, negative between: a curvature the model misses)
+    runs, p_bow = goodness.runs_test(np.r_[np.ones(5), -np.ones(10), np.ones(5)])
+    assert runs == 3 and p_bow < 0.001
+
+
+def test_the_chi_square_with_a_shared_tare_is_the_full_covariance_one():
+    rng = np.random.default_rng(2)
+    r, s, tare = rng.standard_normal(9), rng.uniform(0.05, 0.2, 9), 0.3
+    C = np.diag(s**2) + tare**2
+    assert goodness.chi_square(r, s, tare) == pytest.approx(float(r @ np.linalg.solve(C, r)),
+                                                            rel=1e-12)
+
+
+def test_a_misfit_is_called_at_the_stated_tails_only():
+    nu = 10.0
+
+    def judged(chi2s):
+        branches = [goodness.Branch("r", "loading", 10, c, nu, float(stats.chi2.sf(c, nu)), 5,
+                                    0.5, 0.1, 0.1) for c in chi2s]
+        return goodness.Goodness(branches, float(sum(chi2s)), nu * len(chi2s))
+
+    # all four branches together just inside and just beyond the pooled 0.1 % tail
+    edge = stats.chi2.isf(goodness.MISFIT_P, 4 * nu) / 4
+    assert not judged([edge * 0.99] * 4).misfit
+    inside = judged([edge * 1.01] * 4)
+    assert len(inside.misfit) == 1 and inside.birge_ratio == pytest.approx(
+        math.sqrt(edge * 1.01 / nu))
+    # one branch alone beyond 0.1 % / 4 branches, the others quiet: named, the pooled
+    # chi-square need not be beyond its own tail
+    alone = stats.chi2.isf(goodness.MISFIT_P / 4, nu)
+    assert [b.chi2 for b in judged([alone * 1.01, nu, nu, nu]).misfit] == [alone * 1.01]
+    assert not judged([alone * 0.99, 0.5 * nu, 0.5 * nu, 0.5 * nu]).misfit
