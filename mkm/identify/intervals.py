@@ -9,8 +9,11 @@ replicates cost milliseconds instead of thousands of fits.
 
 Two errors every step of a run shares are drawn with each replicate, since resampling steps
 cannot show them: the run's zero (its tare's standard error, normal) and the load cell's
-sensitivity (the TCA10's tolerance of +-0.1 %, uniform). Intervals are the replicates' 2.5 and
-97.5 percentiles, clipped to the parameter's bounds.
+sensitivity (uniform within the tolerance the runs declare: the data cannot see it, so the
+interval must carry it). A nuisance parameter with a prior (the pressure monitor's offset,
+within its declared accuracy) adds the prior's information to the normal equations and a draw
+of the prior's centre to each replicate. Intervals are the replicates' 2.5 and 97.5
+percentiles, clipped to the parameter's bounds.
 """
 
 from __future__ import annotations
@@ -23,17 +26,21 @@ REPLICATES = 4000
 LEVEL = 0.95
 #: correlation above which two parameters are said to be confounded by these runs
 CONFOUNDED = 0.95
-#: load-cell sensitivity tolerance (AEP TCA10 data sheet: <= +-0.1 %), a fraction
+#: load-cell sensitivity tolerance where none is declared (AEP TCA10 data sheet: <= +-0.1 %)
 SENSITIVITY_TOLERANCE = 0.001
 
 
-def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0) -> dict:
+def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
+              sensitivity_tolerance: float = SENSITIVITY_TOLERANCE,
+              prior_sd: dict[str, float] | None = None) -> dict:
     """Replicates of the fitted parameters (internal names), their intervals and correlation.
 
     Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)},
     "correlation": array (p, p), "identifiable": {name: bool}, "seed", "replicates"}``. A
     parameter whose column of the Jacobian is (numerically) zero is not identifiable: the runs
-    do not inform it and its interval is its whole bound.
+    do not inform it and its interval is its whole bound. ``sensitivity_tolerance``: the load
+    cell's (a fraction, uniform); ``prior_sd``: a normal prior's standard deviation per
+    parameter, weighed against the residuals' variance.
     """
     names, J, r = result.names, result.jacobian, result.residual_N
     p = len(names)
@@ -60,13 +67,22 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0) -> dict:
         for b in range(replicates):
             counts[b] += np.bincount(picks[b], minlength=n_clusters)
     # a measured force F' = (1 + s) F + z moves the residual model - F' by -(s F + z)
-    s = rng.uniform(-SENSITIVITY_TOLERANCE, SENSITIVITY_TOLERANCE, size=replicates)
+    s = rng.uniform(-sensitivity_tolerance, sensitivity_tolerance, size=replicates)
     tare = result.tare_se_N if result.tare_se_N.size else np.zeros(n_clusters)
     z = rng.standard_normal((replicates, tare.size)) * tare
     A = np.einsum("bc,cij->bij", counts, JtJ)
     g = (np.einsum("bc,ci->bi", counts, Jtr) - s[:, None] * np.einsum("bc,ci->bi", counts, JtF)
          - np.einsum("bc,ci->bi", counts * z[:, result.run_of_cluster], Jt1))
     x = np.array([result.values[n] for n in names])
+    # a prior sd_p on a parameter: the residual r_p = (sigma / sd_p)(x - c), c drawn about
+    # the optimum per replicate (the fit itself stays within hard bounds)
+    sigma2 = result.rss / max(result.n, 1)
+    for name, sd in (prior_sd or {}).items():
+        if name in names and identifiable[names.index(name)]:
+            k = int(np.flatnonzero(use == names.index(name))[0])
+            weight = sigma2 / sd**2
+            A[:, k, k] += weight
+            g[:, k] -= weight * rng.standard_normal(replicates) * sd
     draws = np.tile(x, (replicates, 1))
     # the Gauss-Newton step of each replicate from the optimum: -(J'WJ)^-1 J'W r
     draws[:, use] -= np.linalg.solve(A, g[..., None])[..., 0]

@@ -25,13 +25,23 @@ from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import MODELS, STATIC_FAMILIES
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting
-from mkm.identify.fitting import GROUPS, Corrected, ModelStatic, SurrogateStatic
+from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
 from mkm.identify.intervals import CONFOUNDED, bootstrap
 from mkm.identify.result import Identification
 from mkm.identify.runs import load_runs
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
 SEARCHES = ("surrogate", "model")
+#: C10 and C01 reported apart only when the 95 % interval of C01/C10 lies within this
+#: fraction of it ...
+RATIO_WIDTH = 0.25
+#: ... and the static parameters' Fisher matrix (columns normalised) is this well conditioned
+RATIO_CONDITION = 1e8
+#: the 95 % half-width above which an interval is wide (the issue's targets: theta0 within
+#: 0.3 deg, the rubber within 10 %, friction within one point, the wall within 0.1 mm)
+PRECISION = {"theta0_deg": 0.3, "rubber_scale": 0.10, "c01_fraction": 0.1, "t0_mm": 0.1,
+             "D0_mm": 0.1, "gap_mm": 0.1, "hysteresis_fraction": 0.01, "creep_fraction": 0.01,
+             "log_tau": 0.5}
 #: where the fitted terms start (a term at its zero bound has no gradient to leave it by)
 TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01, "gap_mm": 0.2}
 
@@ -78,7 +88,7 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
     runs = load_runs(run_dirs)
     groups, notes = supported_groups(groups, runs)
     with Runner(workers, scheduler) as runner:
-        fe = ModelStatic(model, float(runs[0].muscle["L0_mm"]), runner, cache_dir)
+        fe = ModelStatic(model, runner, cache_dir)
         if "gap" in groups and "gap_mm" not in fe.spec.entry.parameters:
             gapped = [e.name for e in MODELS.entries() if "gap_mm" in e.parameters
                       and e.family in STATIC_FAMILIES]
@@ -101,6 +111,9 @@ def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
     if "creep" in kept and not any(r.timed for r in runs):
         kept.remove("creep")
         notes.append("creep not fitted: no run has timed holds (a step table or a ramp)")
+    if "offset" in kept and not min(r.monitor_accuracy_bar for r in runs) > 0:
+        kept.remove("offset")
+        notes.append("the pressure monitor's offset not fitted: a run declares its accuracy 0")
     if not kept:
         raise ValueError(f"--params {','.join(groups)}: nothing these runs can tell ("
                          + "; ".join(notes) + ")")
@@ -108,7 +121,7 @@ def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
 
 
 def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration):
-    L0_mm = fe.L0_mm
+    L0_mm = float(runs[0].muscle["L0_mm"])
     nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
                                      .params()["theta0_deg"])
     names = [n for g in groups for n in GROUPS[g]]
@@ -125,13 +138,15 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             notify("loading the surrogate" if is_cached("best") else
                    f"training the surrogate on first use, {estimate(training_task('best'))}")
             surrogate = default_model()
-        source = SurrogateStatic(surrogate, L0_mm)
+        source = SurrogateStatic(surrogate)
         outside = source.outside(runs)
         if outside:
             notes.append("the surrogate's box does not cover this muscle ("
                          + "; ".join(outside) + "): searched with the FE model instead")
             source = fe
-    start = {**nominal, **{n: TERM_START[n] if n in TERM_START else nominal[n] for n in names}}
+    declared = {n: float(runs[0].muscle[n]) for n in fitting.GEOMETRY}
+    start = {**nominal, **{n: TERM_START.get(n, nominal.get(n, declared.get(n, 0.0)))
+                           for n in names}}
 
     notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
            f"of {len(runs)} run(s) with {source.name}")
@@ -160,7 +175,13 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         confirmation["note"] = "searched with the FE model itself"
 
     notify("intervals: bootstrap over steps")
-    boot = bootstrap(best, seed=seed)
+    boot = bootstrap(best, seed=seed, **instrument_terms(runs))
+    rubber = {"separated": False}
+    if "rubber_scale" in best.names:
+        notify("does the data separate C10 and C01? (their ratio fitted too)")
+        free, free_boot, rubber = _rubber_ratio(source, runs, best, seed)
+        if rubber["separated"]:
+            best, boot = free, free_boot
     notes += _identifiability(runs, best, boot)
     if best.at_edge:
         notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
@@ -179,7 +200,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     return Identification(
         runs=runs, groups=groups, fit=best, bootstrap=boot, candidates=candidates,
         confirmation=confirmation, checks=checks, notes=notes, model=fe.name,
-        searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started)
+        searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started,
+        rubber=rubber)
 
 
 def _rms(r) -> float:
@@ -208,24 +230,73 @@ def _select(source, runs, names, start, nominal):
     return fits[chosen], candidates
 
 
+def instrument_terms(runs) -> dict:
+    """What the bootstrap draws of the instrument (:func:`mkm.identify.intervals.bootstrap`):
+    the load cell's sensitivity tolerance (one cell for every run: the largest declared), and
+    the monitor offset's prior, uniform within the smallest declared accuracy (its standard
+    deviation, accuracy over root 3)."""
+    accuracy = min(r.monitor_accuracy_bar for r in runs)
+    return {"sensitivity_tolerance": max(r.sensitivity_tolerance for r in runs),
+            "prior_sd": {"pressure_offset_bar": accuracy / np.sqrt(3.0)}}
+
+
+def _rubber_ratio(source, runs, best, seed):
+    """The fit with C01's share of the rubber free, its bootstrap, and whether the runs
+    separate C10 and C01 (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`)."""
+    names = (*best.names, "c01_fraction")
+    try:
+        free = fitting.fit(source, runs, names,
+                           {**best.values, "c01_fraction": fitting.SILASTIC_C01_FRACTION})
+    except RuntimeError as exc:
+        return best, None, {"separated": False, "why": f"the fit with the ratio free failed: "
+                            f"{exc}"}
+    boot = bootstrap(free, seed=seed, **instrument_terms(runs))
+    i = free.names.index("c01_fraction")
+    share = free.values["c01_fraction"]
+    ratio = share / (1.0 - share)
+    draws = np.clip(boot["draws"][:, i], 0.0, 0.999)
+    low, high = (float(v) for v in np.percentile(draws / (1.0 - draws), [2.5, 97.5]))
+    static = [free.names.index(n) for n in STATIC_NAMES if n in free.names]
+    J = free.jacobian[:, static]
+    norms = np.sqrt(np.sum(J**2, axis=0))
+    condition = (float(np.linalg.cond((J / norms).T @ (J / norms))) if np.all(norms > 0)
+                 else float("inf"))
+    separated = bool(boot["identifiable"]["c01_fraction"] and ratio > 0
+                     and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio
+                     and condition < RATIO_CONDITION)
+    return free, boot, {"separated": separated, "ratio_C01_over_C10": ratio,
+                        "ratio_ci": [low, high], "condition": condition,
+                        "rule": f"C10 and C01 reported apart when the 95 % interval of C01/C10 "
+                                f"lies within +-{100 * RATIO_WIDTH:.0f} % of it and the "
+                                f"condition number of the static parameters' normalised "
+                                f"Fisher matrix is below {RATIO_CONDITION:.0e}"}
+
+
 def _identifiability(runs, best, boot) -> list[str]:
+    """Notes on what the runs do not fix: a confounding only where it makes an interval wide
+    (wider than :data:`PRECISION`: the issue's targets), a parameter the runs do not inform."""
     notes = []
     names = list(best.names)
+    wide = {n: _wide(n, best.values[n], boot["interval"][n]) for n in names}
     if "theta0_deg" in names and "rubber_scale" in names:
         i, j = names.index("theta0_deg"), names.index("rubber_scale")
         corr = float(boot["correlation"][i, j])
         eps = sorted({round(r.eps, 4) for r in runs})
-        if len(eps) == 1:
+        if len(eps) == 1 and (wide["theta0_deg"] or wide["rubber_scale"]):
             notes.append(f"theta0 and the rubber are partly confounded by runs at one eps "
                          f"({eps[0]:g}; correlation {corr:+.2f}): a run at a second eps "
                          "separates them")
-        else:
+        elif len(eps) > 1:
             notes.append(f"theta0 and the rubber are separated by the runs at eps "
                          f"{', '.join(f'{e:g}' for e in eps)} (correlation {corr:+.2f})")
     for (a, b) in itertools.combinations(range(len(names)), 2):
         corr = float(boot["correlation"][a, b])
-        if abs(corr) > CONFOUNDED and {names[a], names[b]} != {"theta0_deg", "rubber_scale"}:
-            notes.append(f"{names[a]} and {names[b]} are confounded (correlation {corr:+.2f})")
+        pair = {names[a], names[b]}
+        if (abs(corr) > CONFOUNDED and pair != {"theta0_deg", "rubber_scale"}
+                and (wide[names[a]] or wide[names[b]])):
+            widened = " and ".join(n for n in (names[a], names[b]) if wide[n])
+            notes.append(f"{names[a]} and {names[b]} are confounded (correlation {corr:+.2f}):"
+                         f" the interval of {widened} is wide because of it")
     for name, ok in boot["identifiable"].items():
         if not ok:
             notes.append(f"{name} is not identifiable from these runs: its interval is its "
@@ -233,6 +304,15 @@ def _identifiability(runs, best, boot) -> list[str]:
     if "log_tau" in names and best.values["creep_fraction"] < 1e-3:
         notes.append("creep_fraction is near 0: creep_tau_s is not identifiable")
     return notes
+
+
+def _wide(name: str, value: float, interval) -> bool:
+    """Whether the 95 % interval's half-width exceeds :data:`PRECISION` (relative for the
+    rubber scale; the monitor's offset, a nuisance, is never wide)."""
+    if name not in PRECISION:
+        return False
+    half = (interval[1] - interval[0]) / 2
+    return half > PRECISION[name] * (abs(value) if name == "rubber_scale" else 1.0)
 
 
 def _branch_errors(run, predicted) -> dict:
@@ -255,30 +335,41 @@ def predict_runs(run_dirs, values: dict, model: str = "axisym") -> list[dict]:
     each branch (``rising``, ``falling``, ``err_pct`` per step)."""
     runs = load_runs(run_dirs)
     internal = fitting.internal_values(values)
-    predicted = fitting.step_predictions(ModelStatic(model, float(runs[0].muscle["L0_mm"])),
-                                         runs, internal)
+    predicted = fitting.step_predictions(ModelStatic(model), runs, internal)
     return [{"run": run.name, "predicted_N": p, **_branch_errors(run, p)}
             for run, p in zip(runs, predicted, strict=True)]
 
 
+def held_out_groups(runs) -> list[tuple[str, list[int]]]:
+    """What is held out in turn: each run (over eps), and each length when the runs have
+    several lengths and one of them several runs (a whole length held out)."""
+    groups = [("run", [k]) for k in range(len(runs))] if len(runs) > 1 else []
+    lengths = fitting.by_length(runs)
+    if len(lengths) > 1 and any(len(m) > 1 for m in lengths.values()):
+        groups += [("length", members) for members in lengths.values()]
+    return groups
+
+
 def _checks(runs, fe, source, best, nominal) -> list[dict]:
-    """Per run: the nominal model's, the identified model's and the held-out prediction."""
+    """Per run: the nominal model's and the identified model's prediction, and the held-out
+    ones (:func:`held_out_groups`: the run predicted from the others by the FE model)."""
     before = fitting.step_predictions(fe, runs, nominal)
     after = fitting.step_predictions(source, runs, best.values)
-    out = []
-    for k, run in enumerate(runs):
-        row = {"run": run.name, "eps": run.eps, "nominal": before[k], "identified": after[k],
-               "nominal_err": _branch_errors(run, before[k]),
-               "identified_err": _branch_errors(run, after[k])}
-        if len(runs) > 1:
-            others = [r for j, r in enumerate(runs) if j != k]
-            others_source = source
-            if isinstance(source, Corrected):
-                others_source = Corrected(source.base, [c for j, c in
-                                                        enumerate(source.corrections) if j != k])
-            held = fitting.fit(others_source, others, best.names, best.values)
-            predicted = fitting.step_predictions(fe, [run], held.values)[0]
-            row.update({"heldout": predicted, "heldout_err": _branch_errors(run, predicted),
-                        "heldout_values": fitting.full_parameters(held.values)})
-        out.append(row)
+    out = [{"run": run.name, "eps": run.eps, "L0_mm": float(run.muscle["L0_mm"]),
+            "nominal": before[k], "identified": after[k],
+            "nominal_err": _branch_errors(run, before[k]),
+            "identified_err": _branch_errors(run, after[k])}
+           for k, run in enumerate(runs)]
+    for kind, members in held_out_groups(runs):
+        others = [r for j, r in enumerate(runs) if j not in members]
+        kept = source
+        if isinstance(source, Corrected):
+            for k in sorted(members, reverse=True):
+                kept = kept.without(k)
+        held = fitting.fit(kept, others, best.names, best.values)
+        predicted = fitting.step_predictions(fe, [runs[k] for k in members], held.values)
+        for k, p in zip(members, predicted, strict=True):
+            prefix = "heldout" if kind == "run" else "length_heldout"
+            out[k].update({prefix: p, f"{prefix}_err": _branch_errors(runs[k], p),
+                           f"{prefix}_values": fitting.full_parameters(held.values)})
     return out

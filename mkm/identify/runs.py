@@ -22,8 +22,9 @@ import pandas as pd
 
 from mkm.core.records import file_sha256
 
-#: muscle geometry that must agree between the runs of one muscle (eps differs by design)
-SAME_MUSCLE = ("D0_mm", "t0_mm", "L0_mm")
+#: the tube that must agree between the runs of one muscle family (eps and the length
+#: ``L0_mm`` may differ: the same tube and braid cut to several lengths)
+SAME_MUSCLE = ("D0_mm", "t0_mm")
 SAME_MUSCLE_RTOL = 1e-6
 
 
@@ -36,7 +37,9 @@ class RunData:
     settled step each sample's hold belongs to (-1: not in a settled hold); ``steps`` the
     settled steps (``step``, ``direction``, ``set_pressure_bar``, ``pressure_bar_mean``,
     ``force_N_mean``, ``hold_start_s``, ``end_s``); ``tare_se_N`` the standard error of the
-    zero the run's forces are measured from (its tare samples' std over their root count).
+    zero the run's forces are measured from (its tare samples' std over their root count);
+    the instrument's declared bounds from ``run.json`` (:meth:`mkm.bench.budget.Instrument.
+    from_run`: the defaults of :mod:`mkm.bench.config` where a run did not record them).
     """
 
     path: Path
@@ -49,6 +52,10 @@ class RunData:
     sha256: dict
     tare_se_N: float = 0.0
     timed: bool = True  # the holds have their real durations (creep can be fitted)
+    #: the pressure monitor's declared accuracy [bar] (+- bound) and the load cell's
+    #: sensitivity tolerance (a fraction), from the run's recorded calibration
+    monitor_accuracy_bar: float = 0.04
+    sensitivity_tolerance: float = 0.001
 
     @property
     def name(self) -> str:
@@ -131,11 +138,20 @@ def load_run_data(path) -> RunData:
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=settled[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
                                   "force_N_mean", "hold_start_s", "end_s"]], sha256=sha,
-                   tare_se_N=tare_se, timed=imported.get("shape") != "ramp")
+                   tare_se_N=tare_se, timed=imported.get("shape") != "ramp",
+                   **_instrument(run))
 
 
 def _muscle(run) -> dict:
     return run.meta.muscle.record()
+
+
+def _instrument(run) -> dict:
+    from mkm.bench.budget import Instrument
+
+    instrument = Instrument.from_run(run.meta)
+    return {"monitor_accuracy_bar": float(instrument.monitor_accuracy_bar),
+            "sensitivity_tolerance": float(instrument.sensitivity_tolerance_fraction)}
 
 
 def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
@@ -149,12 +165,14 @@ def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
                    hold=np.arange(len(settled)),
                    steps=steps[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
                                 "force_N_mean", "hold_start_s", "end_s"]],
-                   sha256={"steps.csv": file_sha256(path / "steps.csv")}, timed=False)
+                   sha256={"steps.csv": file_sha256(path / "steps.csv")}, timed=False,
+                   **_instrument(run))
 
 
 def load_runs(paths) -> list[RunData]:
-    """The runs of one muscle (:func:`load_run_data` each); ``ValueError`` for runs of
-    different muscles (another tube or length: the muscle id may differ, the geometry not)."""
+    """The runs of one muscle family (:func:`load_run_data` each); ``ValueError`` for runs of
+    different tubes (the muscle id and the length may differ, the tube's diameter and wall
+    not)."""
     paths = list(paths)
     if not paths:
         raise ValueError("no run folder given: expected at least one RUN_DIR")
