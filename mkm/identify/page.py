@@ -6,8 +6,8 @@ the measured rising and falling steps with both branches the identified muscle p
 hysteresis width per step, and the residuals before (the nominal model: the shipped calibration,
 Silastic S, no friction or creep) and after identification; the identified muscle's threshold
 pressure at each run's eps against the measured one (:func:`threshold_row`). The held-out
-check of the identification's own runs comes first: the honest predictive error. Without an identified muscle in the calibration, the
-section is empty.
+check of the identification's own runs comes first: the honest predictive error. Without an
+identified muscle in the calibration, the section is empty.
 """
 
 from __future__ import annotations
@@ -23,14 +23,8 @@ from mkm.fem.materials import SILASTIC_S
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.html import esc, figure_html, save_figure, table_html
 from mkm.identify import fitting
+from mkm.identify.band import identified_entry
 from mkm.identify.runs import load_run_data
-
-
-def identified_entry(calibration: Calibration) -> tuple[str, dict] | None:
-    """``(key, entry)`` of the identified muscle in ``calibration`` (the entry of the static
-    model identify confirmed with), or None."""
-    return next(((key, entry) for key, entry in calibration.entries.items()
-                 if "identified" in entry), None)
 
 
 def report_section(run_dirs, out: Path, calibration: Calibration | None = None) -> str:
