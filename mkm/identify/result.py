@@ -98,8 +98,10 @@ class Identification:
         def add(name, value, low=math.nan, high=math.nan, status="fitted", source="the runs"):
             rows.append((name, value, low, high, UNITS.get(name, ""), status, source))
 
-        def replicated(function):
-            values = function({**self.fit.values, **dict(zip(names, draws.T, strict=True))})
+        def replicated(function):  # a derived parameter's interval, draws within bounds
+            clipped = {n: np.clip(column, *self.fit.bounds[n])
+                       for n, column in zip(names, draws.T, strict=True)}
+            values = function({**self.fit.values, **clipped})
             return tuple(float(v) for v in np.percentile(values, [2.5, 97.5]))
 
         values = self.values
