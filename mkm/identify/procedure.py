@@ -303,6 +303,16 @@ def _identifiability(runs, best, boot) -> list[str]:
             widened = " and ".join(n for n in (names[a], names[b]) if wide[n])
             notes.append(f"{names[a]} and {names[b]} are confounded (correlation {corr:+.2f}):"
                          f" the interval of {widened} is wide because of it")
+    for name in fitting.GEOMETRY:
+        if name in names:
+            i = names.index(name)
+            low, high = boot["interval"][name]
+            with_ = ", ".join(f"{names[j]} {boot['correlation'][i, j]:+.2f}"
+                              for j in range(len(names)) if j != i and names[j] in (
+                                  *STATIC_NAMES, "pressure_offset_bar"))
+            notes.append(f"{name} fitted: {best.values[name]:.3f} mm (95 % CI {low:.3f}-"
+                         f"{high:.3f}; declared {float(runs[0].muscle[name]):g} mm); "
+                         f"its correlation with {with_}")
     for name, ok in boot["identifiable"].items():
         if not ok:
             notes.append(f"{name} is not identifiable from these runs: its interval is its "

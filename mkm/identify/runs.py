@@ -183,5 +183,6 @@ def load_runs(paths) -> list[RunData]:
             a, b = float(first.muscle[key]), float(run.muscle[key])
             if not np.isclose(a, b, rtol=SAME_MUSCLE_RTOL, atol=0.0):
                 raise ValueError(f"runs {first.name} and {run.name} are of different muscles "
-                                 f"({key}={a:g} and {b:g}): expected the runs of one muscle")
+                                 f"({key}={a:g} and {b:g}): expected the runs of one tube (the "
+                                 "length may differ)")
     return runs
