@@ -358,13 +358,13 @@ def fit(source: StaticSource, runs, names, start: dict[str, float]) -> Fit:
     cluster = np.concatenate([s + offsets[k] for k, s in enumerate(steps)])
     run_of_cluster = np.repeat(np.arange(len(runs)), [len(run.steps) for run in runs])
     values = values_of(x)
-    at_edge = [n for n in names if n in source.box and _at_edge(values[n], bounds[n])]
+    edges = [n for n in names if n in source.box and at_edge(values[n], bounds[n])]
     measured = np.concatenate([run.force_N[h] for run, h in zip(runs, holds, strict=True)])
     return Fit(names, values, r, measured, J, cluster, run_of_cluster, bounds, source.name,
-               counter[0], str(message), at_edge, np.array([run.tare_se_N for run in runs]))
+               counter[0], str(message), edges, np.array([run.tare_se_N for run in runs]))
 
 
-def _at_edge(value: float, box: tuple[float, float]) -> bool:
+def at_edge(value: float, box: tuple[float, float]) -> bool:
     width = box[1] - box[0]
     return min(value - box[0], box[1] - value) <= EDGE_FRACTION * width
 

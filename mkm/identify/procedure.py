@@ -178,8 +178,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
 
     notify("intervals: bootstrap over steps")
     boot = bootstrap(best, seed=seed, **instrument_terms(runs))
-    rubber = {"separated": False}
-    if "rubber_scale" in best.names:
+    rubber = {"separated": False, "why": "runs at one eps: the rubber's ratio not tested"}
+    if "rubber_scale" in best.names and len({round(r.eps, 4) for r in runs}) > 1:
         notify("does the data separate C10 and C01? (their ratio fitted too)")
         free, free_boot, rubber = _rubber_ratio(source, runs, best, seed)
         if rubber["separated"]:
@@ -188,6 +188,12 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if best.at_edge:
         notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
                      "is cut there")
+    if "pressure_offset_bar" in best.names and fitting.at_edge(best.values["pressure_offset_bar"],
+                                                         best.bounds["pressure_offset_bar"]):
+        notes.append(f"the pressure monitor's offset is at its declared accuracy "
+                     f"({best.values['pressure_offset_bar']:+.3g} bar): the runs' threshold "
+                     "wants more than the monitor may be off; check the monitor's zero, or the "
+                     "model does not fit these runs near the threshold")
 
     notify("leave-one-run-out and the nominal model")
     checks = _checks(runs, fe, source, best, nominal)

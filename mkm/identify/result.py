@@ -109,7 +109,10 @@ class Identification:
             value = self.fit.values[name]
             if name == "rubber_scale" and self.rubber.get("separated"):
                 for k, key in enumerate(("C10_MPa", "C01_MPa")):
-                    add(key, values[key], *replicated(lambda v, k=k: rubber(v)[k]),
+                    low, high = replicated(lambda v, k=k: rubber(v)[k])
+                    # a search bound cuts the replicates (said in a note): the interval
+                    # still holds the estimate
+                    add(key, values[key], min(low, values[key]), max(high, values[key]),
                         source=f"the runs (correlation C10-C01 "
                                f"{self.rubber_correlation():+.2f})")
             elif name == "rubber_scale":
@@ -142,9 +145,12 @@ class Identification:
             if name not in names:
                 add(name, float(self.runs[0].muscle[name]), status="assumed",
                     source="the runs' declared muscle (run.json)")
+        where = ("the load cell's declared tolerance (run.json calibration)"
+                 if all(r.instrument_declared for r in self.runs) else
+                 "the configuration's default load-cell tolerance (a run declares none)")
         add("loadcell_sensitivity_tolerance", self.sensitivity_tolerance, status="assumed",
-            source="the load cell's declared tolerance (run.json calibration): invisible to "
-                   "the data, drawn into every interval and prediction band")
+            source=f"{where}: invisible to the data, drawn into every interval and prediction "
+                   "band")
         return pd.DataFrame(rows, columns=["parameter", "value", "ci_low", "ci_high", "unit",
                                            "status", "source"])
 

@@ -38,8 +38,8 @@ class RunData:
     settled steps (``step``, ``direction``, ``set_pressure_bar``, ``pressure_bar_mean``,
     ``force_N_mean``, ``hold_start_s``, ``end_s``); ``tare_se_N`` the standard error of the
     zero the run's forces are measured from (its tare samples' std over their root count);
-    the instrument's declared bounds from ``run.json`` (:meth:`mkm.bench.budget.Instrument.
-    from_run`: the defaults of :mod:`mkm.bench.config` where a run did not record them).
+    the instrument's declared bounds from ``run.json``'s calibration (the defaults of
+    :mod:`mkm.bench.config` where a run did not record them: ``instrument_declared`` False).
     """
 
     path: Path
@@ -56,6 +56,7 @@ class RunData:
     #: sensitivity tolerance (a fraction), from the run's recorded calibration
     monitor_accuracy_bar: float = 0.04
     sensitivity_tolerance: float = 0.001
+    instrument_declared: bool = True  # False: the run recorded no bounds, defaults taken
 
     @property
     def name(self) -> str:
@@ -147,11 +148,21 @@ def _muscle(run) -> dict:
 
 
 def _instrument(run) -> dict:
-    from mkm.bench.budget import Instrument
+    """The declared bounds of the run's instrument (its recorded ``loadcell`` and
+    ``regulator``), the configuration's defaults where it recorded none (an imported table)."""
+    import dataclasses
 
-    instrument = Instrument.from_run(run.meta)
-    return {"monitor_accuracy_bar": float(instrument.monitor_accuracy_bar),
-            "sensitivity_tolerance": float(instrument.sensitivity_tolerance_fraction)}
+    from mkm.bench.config import LoadCell, Regulator
+
+    out = {}
+    for cls, section, name, key in (
+            (Regulator, "regulator", "monitor_accuracy_bar", "monitor_accuracy_bar"),
+            (LoadCell, "loadcell", "sensitivity_tolerance_fraction", "sensitivity_tolerance")):
+        recorded = run.meta.calibration.get(section) or {}
+        default = next(f.default for f in dataclasses.fields(cls) if f.name == name)
+        out[key] = float(recorded.get(name, default))
+        out["instrument_declared"] = out.get("instrument_declared", True) and name in recorded
+    return out
 
 
 def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
