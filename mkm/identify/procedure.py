@@ -188,10 +188,11 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if best.at_edge:
         notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
                      "is cut there")
-    if "pressure_offset_bar" in best.names and fitting.at_edge(best.values["pressure_offset_bar"],
-                                                         best.bounds["pressure_offset_bar"]):
+    offset = best.values.get("pressure_offset_bar")
+    if "pressure_offset_bar" in best.names and fitting.at_edge(
+            offset, best.bounds["pressure_offset_bar"]):
         notes.append(f"the pressure monitor's offset is at its declared accuracy "
-                     f"({best.values['pressure_offset_bar']:+.3g} bar): the runs' threshold "
+                     f"({offset:+.3g} bar): the runs' threshold "
                      "wants more than the monitor may be off; check the monitor's zero, or the "
                      "model does not fit these runs near the threshold")
 
