@@ -37,7 +37,7 @@ import pandas as pd
 
 from mkm.cli import main as mkm
 from mkm.core.records import file_sha256, provenance
-from mkm.fem.calibration import use_calibration
+from mkm.fem.calibration import Calibration
 from mkm.registry import parse_specs
 from mkm.report import build_report
 
@@ -66,9 +66,9 @@ def _quiet(argv) -> list[str]:
 
 
 def _scores(paths, out: Path, model: str, calibration: Path | None) -> pd.DataFrame:
-    with use_calibration(calibration):
-        build_report(paths, parse_specs(model), out_dir=out, cache_dir=None, tolerance=None,
-                     surrogate_section=False)
+    build_report(paths, parse_specs(model), out_dir=out, cache_dir=None, tolerance=None,
+                 surrogate_section=False,
+                 calibration=Calibration.load(calibration) if calibration else None)
     return pd.read_csv(out / "summary.csv").set_index("run")
 
 

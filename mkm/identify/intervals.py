@@ -85,7 +85,11 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
             g[:, k] -= weight * rng.standard_normal(replicates) * sd
     draws = np.tile(x, (replicates, 1))
     # the Gauss-Newton step of each replicate from the optimum: -(J'WJ)^-1 J'W r
-    draws[:, use] -= np.linalg.solve(A, g[..., None])[..., 0]
+    try:
+        step = np.linalg.solve(A, g[..., None])[..., 0]
+    except np.linalg.LinAlgError:  # a replicate without the steps that inform a parameter
+        step = (np.linalg.pinv(A) @ g[..., None])[..., 0]
+    draws[:, use] -= step
     low_q, high_q = 100 * (1 - LEVEL) / 2, 100 * (1 + LEVEL) / 2
     interval = {}
     for i, name in enumerate(names):
