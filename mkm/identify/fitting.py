@@ -135,6 +135,10 @@ class StaticSource:
         """Per run: pressures [bar] and the static force there [N]."""
         raise NotImplementedError
 
+    def share_bounds(self, rubber_scale: float) -> tuple[float, float]:
+        """Where C01's share of the rubber is searched at this rubber scale."""
+        return TERM_BOUNDS["c01_fraction"]
+
 
 class ModelStatic(StaticSource):
     """A registry spec (``axisym``, ``axisym:mesh=coarse``, ``thickwall``) solved at each run's
@@ -193,6 +197,14 @@ class SurrogateStatic(StaticSource):
                                          box["C01_MPa"][1] / SILASTIC_S.C01_MPa)),
                     "t0_mm": box["t0_mm"], "D0_mm": box["D0_mm"]}
 
+    def share_bounds(self, rubber_scale):
+        """C01's share keeping both constants inside the box at this scale (the scale moves
+        little once the ratio is freed: fitted first)."""
+        box, total = self.surrogate.box, rubber_scale * (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
+        low = max(box["C01_MPa"][0] / total, 1.0 - box["C10_MPa"][1] / total)
+        high = min(box["C01_MPa"][1] / total, 1.0 - box["C10_MPa"][0] / total)
+        return (low, high) if low < high else (SILASTIC_C01_FRACTION,) * 2
+
     def outside(self, runs) -> list[str]:
         """What of the runs' muscle the surrogate's box does not cover."""
         box, out = self.surrogate.box, []
@@ -239,6 +251,9 @@ class Corrected(StaticSource):
         return [(grid, np.maximum(F + np.interp(grid, *self.corrections[k]), 0.0))
                 for k, (grid, F) in enumerate(tables)]
 
+    def share_bounds(self, rubber_scale):
+        return self.base.share_bounds(rubber_scale)
+
     def without(self, k: int) -> Corrected:
         """The same correction for the runs but the ``k``-th (a run held out)."""
         return Corrected(self.base, [c for j, c in enumerate(self.corrections) if j != k])
@@ -263,10 +278,12 @@ def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
             for k, run in enumerate(runs)]
 
 
-def bounds_of(name: str, source: StaticSource, runs) -> tuple[float, float]:
+def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float, float]:
     """Where ``name`` is searched: the source's box, the terms' bounds, the declared wall and
     diameter within :data:`GEOMETRY_FACTORS` (inside the source's box), the monitor's offset
     within its accuracy (the smallest declared by the runs)."""
+    if name == "c01_fraction":
+        return source.share_bounds(start["rubber_scale"])
     if name == "pressure_offset_bar":
         accuracy = min(run.monitor_accuracy_bar for run in runs)
         return (-accuracy, accuracy)
@@ -320,13 +337,14 @@ def nominal_values(theta0_deg: float) -> dict[str, float]:
             "log_tau": math.log(TERM_DEFAULTS["creep_tau_s"])}
 
 
-def fit(source: StaticSource, runs, names, start: dict[str, float]) -> Fit:
+def fit(source: StaticSource, runs, names, start: dict[str, float],
+        max_nfev: int = 400) -> Fit:
     """Fit ``names`` (of :data:`ORDER`) from ``start`` (every value), the rest held fixed.
 
     Raises ``RuntimeError`` when the optimiser fails or the residuals are not finite.
     """
     names = tuple(n for n in ORDER if n in names)
-    bounds = {n: bounds_of(n, source, runs) for n in names}
+    bounds = {n: bounds_of(n, source, runs, start) for n in names}
     x0 = np.array([min(max(start[n], bounds[n][0]), bounds[n][1]) for n in names])
     holds = [run.hold >= 0 for run in runs]
     counter = [0]
@@ -344,7 +362,7 @@ def fit(source: StaticSource, runs, names, start: dict[str, float]) -> Fit:
         scale = np.array([X_SCALE.get(n, 0.01) for n in names])
         res = least_squares(residuals, x0, bounds=tuple(np.array(b) for b in zip(
             *bounds.values(), strict=True)), x_scale=scale, diff_step=1e-4, method="trf",
-            xtol=1e-10, ftol=1e-10, max_nfev=400)
+            xtol=1e-10, ftol=1e-10, max_nfev=max_nfev)
         if not res.success and res.status <= 0:
             raise RuntimeError(f"the fit on {source.name} did not converge: {res.message}")
         x, r, J, message = res.x, res.fun, res.jac, res.message

@@ -33,6 +33,9 @@ from mkm.identify.runs import load_runs
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
 SEARCHES = ("surrogate", "model")
+#: a reduced candidate (friction or creep dropped) that has not converged after this many
+#: evaluations is not the model (it starts at the full model's optimum)
+CANDIDATE_EVALUATIONS = 150
 #: C10 and C01 reported apart when the 95 % interval of C01/C10 lies within this fraction of
 #: it (the runs measure the ratio) or excludes Silastic S's (the runs reject the assumed one:
 #: holding it would bias the rest) ...
@@ -227,15 +230,25 @@ def _select(source, runs, names, start, nominal):
         keep = [n for n in names if not any(n in GROUPS[g] for g in dropped)]
         begin = {**(full.values if full else start),
                  **{n: nominal[n] for g in dropped for n in GROUPS[g]}}
-        result = fitting.fit(source, runs, keep, begin)
+        terms = ", ".join(g for g in optional if g not in dropped) or "none"
+        try:
+            result = fitting.fit(source, runs, keep, begin,
+                                 max_nfev=CANDIDATE_EVALUATIONS if dropped else 400)
+        except RuntimeError as exc:
+            if full is None:  # the full model itself: nothing to select from
+                raise
+            # a model without a term the runs need may wander without converging: it is not
+            # the one, and the others are compared without it
+            candidates.append({"terms": terms, "parameters": len(keep), "dropped": dropped,
+                               "not_converged": str(exc)})
+            continue
         full = full or result
         fits[dropped] = result
-        candidates.append({"terms": ", ".join(g for g in optional if g not in dropped) or "none",
-                           "parameters": len(keep), "rss_N2": result.rss,
-                           "bic": result.bic, "n": result.n})
+        candidates.append({"terms": terms, "parameters": len(keep), "rss_N2": result.rss,
+                           "bic": result.bic, "n": result.n, "dropped": dropped})
     chosen = min(fits, key=lambda d: fits[d].bic)
-    for row, dropped in zip(candidates, fits, strict=True):
-        row["chosen"] = dropped == chosen
+    for row in candidates:
+        row["chosen"] = row.pop("dropped") == chosen
     return fits[chosen], candidates
 
 
@@ -259,6 +272,12 @@ def _rubber_ratio(source, runs, best, seed):
     except RuntimeError as exc:
         return best, None, {"separated": False, "why": f"the fit with the ratio free failed: "
                             f"{exc}"}
+    share_box = tuple(free.bounds["c01_fraction"])
+    if share_box != fitting.TERM_BOUNDS["c01_fraction"] and (
+            share_box[0] == share_box[1] or fitting.at_edge(free.values["c01_fraction"],
+                                                            share_box)):
+        return best, None, {"separated": False, "why": "C01's share reached the search box "
+                            f"({source.name}'s) before the runs fixed it"}
     boot = bootstrap(free, seed=seed, **instrument_terms(runs))
     i = free.names.index("c01_fraction")
     share = free.values["c01_fraction"]
