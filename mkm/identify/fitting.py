@@ -48,6 +48,8 @@ TERM_BOUNDS = {"hysteresis_fraction": (0.0, 0.3), "creep_fraction": (0.0, 0.3),
                "log_tau": (math.log(1.0), math.log(1000.0)), "c01_fraction": (0.0, 0.9)}
 #: a fitted wall or diameter searched within these factors of the declared one
 GEOMETRY_FACTORS = {"t0_mm": (0.5, 1.5), "D0_mm": (0.8, 1.2)}
+#: how far the rubber scale may move once C01's share is freed (its box on the surrogate)
+SCALE_MARGIN = 0.02
 #: Silastic S's share of C01 in C10 + C01 (the rubber's assumed ratio)
 SILASTIC_C01_FRACTION = SILASTIC_S.C01_MPa / (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
 #: the FE model's search box where the surrogate's does not apply
@@ -198,11 +200,12 @@ class SurrogateStatic(StaticSource):
                     "t0_mm": box["t0_mm"], "D0_mm": box["D0_mm"]}
 
     def share_bounds(self, rubber_scale):
-        """C01's share keeping both constants inside the box at this scale (the scale moves
-        little once the ratio is freed: fitted first)."""
+        """C01's share keeping both constants inside the box at this scale give or take
+        :data:`SCALE_MARGIN` (the scale moves little once the ratio is freed: fitted first)."""
         box, total = self.surrogate.box, rubber_scale * (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
-        low = max(box["C01_MPa"][0] / total, 1.0 - box["C10_MPa"][1] / total)
-        high = min(box["C01_MPa"][1] / total, 1.0 - box["C10_MPa"][0] / total)
+        small, large = total * (1 - SCALE_MARGIN), total * (1 + SCALE_MARGIN)
+        low = max(box["C01_MPa"][0] / small, 1.0 - box["C10_MPa"][1] / large)
+        high = min(box["C01_MPa"][1] / large, 1.0 - box["C10_MPa"][0] / small)
         return (low, high) if low < high else (SILASTIC_C01_FRACTION,) * 2
 
     def outside(self, runs) -> list[str]:
