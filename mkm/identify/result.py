@@ -176,12 +176,12 @@ class Identification:
 
     def band(self) -> dict:
         """What a prediction band needs (:func:`mkm.identify.band.prediction_band`): the static
-        parameters' values and covariance (the bootstrap's: the monitor's offset and the load
+        parameters' values and covariance (the bootstrap's, as its intervals see it:
+        :func:`mkm.identify.intervals.robust_covariance`; the monitor's offset and the load
         cell's tolerance inside), and the load cell's tolerance itself."""
         names = [n for n in STATIC_NAMES if n in self.fit.names]
         index = [self.fit.names.index(n) for n in names]
-        draws = self.bootstrap["draws"][:, index]
-        covariance = np.atleast_2d(np.cov(draws, rowvar=False)) if names else np.zeros((0, 0))
+        covariance = self.bootstrap["covariance"][np.ix_(index, index)]
         return {"parameters": names, "values": [self.fit.values[n] for n in names],
                 "covariance": covariance.tolist(),
                 "sensitivity_tolerance": self.sensitivity_tolerance}

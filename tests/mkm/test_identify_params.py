@@ -27,7 +27,7 @@ from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
 from mkm.identify.band import Z95, prediction_band
 from mkm.identify.fitting import Fit
-from mkm.identify.intervals import bootstrap
+from mkm.identify.intervals import bootstrap, robust_covariance
 from mkm.identify.procedure import _identifiability
 from mkm.registry import parse_spec
 
@@ -63,6 +63,30 @@ def test_a_nuisance_the_runs_barely_see_keeps_its_prior():
     low, high = bootstrap(fit, sensitivity_tolerance=0.0,
                           prior_sd={"pressure_offset_bar": sd})["interval"]["pressure_offset_bar"]
     assert high == pytest.approx(Z95 * sd, rel=0.05) and low == pytest.approx(-Z95 * sd, rel=0.05)
+
+
+def test_the_band_covariance_ignores_a_few_wild_replicates():
+    # a replicate whose steps miss the threshold can land far off; 0.1 % of them must not
+    # rule the band (a plain standard deviation would be ~60 times too large here)
+    rng = np.random.default_rng(0)
+    sd, rho = np.array([0.01, 0.002]), -0.8
+    cov = np.array([[1, rho], [rho, 1]]) * np.outer(sd, sd)
+    draws = rng.multivariate_normal([32.0, 1.1], cov, size=4000)
+    draws[:4] += [20.0, 0.1]
+    robust = robust_covariance(draws)
+    np.testing.assert_allclose(np.sqrt(np.diag(robust)), sd, rtol=0.05)
+    assert robust[0, 1] / np.sqrt(robust[0, 0] * robust[1, 1]) == pytest.approx(rho, abs=0.03)
+
+
+def test_a_parameter_the_runs_do_not_inform_carries_its_whole_bound():
+    # no information (a zero column): its variance is the uniform's over its search bound,
+    # so a band made from it says how little the runs tell
+    fit = one_parameter_fit(np.zeros(10), np.ones(10), np.full(10, 5.0), name="rubber_scale",
+                            value=1.0)
+    fit.bounds["rubber_scale"] = (0.2, 5.0)
+    boot = bootstrap(fit)
+    assert boot["interval"]["rubber_scale"] == (0.2, 5.0)
+    assert boot["covariance"][0, 0] == pytest.approx(4.8**2 / 12)
 
 
 def test_a_confounding_note_only_when_it_makes_an_interval_wide():
