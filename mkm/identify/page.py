@@ -43,7 +43,8 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
              f"{esc(', '.join(r['run'] for r in ident['runs']))}. Intervals: "
              f"{esc(ident['interval_method'])}.</p>"]
     held = pd.DataFrame(ident.get("leave_one_run_out", []))
-    columns = [c for c in held.columns if "heldout" in c]
+    columns = [f"{what}_{branch}_pct" for what in ("heldout", "length_heldout")
+               for branch in ("rising", "falling") if f"{what}_{branch}_pct" in held]
     if columns:
         parts.append(table_html(held[["run", "eps", *(["L0_mm"] if "L0_mm" in held else []),
                                       *columns]],
@@ -53,7 +54,9 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
     else:
         parts.append('<p class="note">Predictive error not measured: one run, nothing to '
                      "hold out.</p>")
-    table = pd.DataFrame(ident["parameters"]).rename(columns={
+    table = pd.DataFrame(ident["parameters"])
+    table = table[[c for c in ("parameter", "value", "ci_low", "ci_high", "unit", "status",
+                               "source") if c in table]].rename(columns={
         "ci_low": "95 % CI low", "ci_high": "95 % CI high"})
     parts.append(table_html(table, "Identified parameters (parameters.csv): fitted, derived "
                             "and assumed, with where each comes from.", digits=5))
