@@ -8,9 +8,13 @@
 3. Confirm with the FE model (one sweep per run at the optimum): the surrogate is corrected by
    the difference the FE shows there and the fit repeated on the corrected force.
 4. 95 % intervals and correlation by a bootstrap over steps (:mod:`mkm.identify.intervals`),
-   and what the runs cannot separate.
-5. Leave-one-run-out: each run predicted by the FE model at the parameters fitted to the
-   others, against the nominal model (the calibrated angle, Silastic S, no friction or creep).
+   the load cell's declared tolerance and the monitor offset's prior inside, and what the runs
+   cannot separate (a note only where it makes an interval wide: :data:`PRECISION`).
+5. The rubber: C01's share fitted as well; C10 and C01 reported apart only where the runs
+   separate them (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`), else one scale.
+6. Leave-one-run-out (and one length out, for runs of several lengths): each run predicted by
+   the FE model at the parameters fitted to the others, against the nominal model (the
+   calibrated angle, Silastic S, no friction or creep).
 """
 
 from __future__ import annotations
@@ -63,8 +67,10 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
     run_dirs : list of path
         Run folders of one muscle.
     params : str, optional
-        Comma list of ``theta0``, ``rubber``, ``friction``, ``creep``, ``gap`` (default all but
-        ``gap``; the gap needs a ``model`` that takes ``gap_mm``: ``thickwall``, ``axisym``).
+        Comma list of ``theta0``, ``rubber``, ``t0``, ``D0``, ``friction``, ``creep``, ``gap``,
+        ``offset`` (default ``theta0,rubber,friction,creep,offset``: the declared wall and
+        diameter taken as given; the gap needs a ``model`` that takes ``gap_mm``:
+        ``thickwall``, ``axisym``).
     model : str
         The static model's spec for the confirmation (and a search outside the surrogate's box):
         a registry spec taking theta0 and the rubber (``axisym``, ``axisym:mesh=coarse``,
