@@ -37,8 +37,8 @@ from mkm.identify.runs import load_runs
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
 SEARCHES = ("surrogate", "model")
-#: a reduced candidate (friction or creep dropped) that has not converged after this many
-#: evaluations is not the model (it starts at the full model's optimum)
+#: a reduced candidate (friction or creep dropped), or a fit to the runs but one, that has not
+#: converged after this many evaluations from the full optimum is given up
 CANDIDATE_EVALUATIONS = 150
 #: C10 and C01 reported apart when the 95 % interval of C01/C10 lies within this fraction of
 #: it (the runs measure the ratio) or excludes Silastic S's (the runs reject the assumed one:
@@ -207,6 +207,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
 
     notify("leave-one-run-out and the nominal model")
     checks = _checks(runs, fe, source, best, nominal)
+    failed = [c["run"] for c in checks if "heldout_failed" in c or "length_heldout_failed" in c]
+    if failed:
+        notes.append(f"held out, {', '.join(failed)} could not be predicted: the fit to the other "
+                     f"runs did not converge (they do not fix {', '.join(best.names)} together)")
     single = [c["run"] for c in checks if "heldout" in c and len(
         {round(r.eps, 4) for r in runs if r.name != c["run"]}) == 1]
     if single and {"theta0_deg", "rubber_scale"} <= set(best.names):
@@ -414,10 +418,19 @@ def _checks(runs, fe, source, best, nominal) -> list[dict]:
         if isinstance(source, Corrected):
             for k in sorted(members, reverse=True):
                 kept = kept.without(k)
-        held = fitting.fit(kept, others, best.names, best.values)
+        prefix = "heldout" if kind == "run" else "length_heldout"
+        try:
+            held = fitting.fit(kept, others, best.names, best.values,
+                               max_nfev=CANDIDATE_EVALUATIONS)
+        except RuntimeError as exc:  # the other runs do not fix the parameters: said, no error
+            for k in members:
+                nan = np.full(len(runs[k].steps), np.nan)
+                out[k].update({prefix: nan, f"{prefix}_failed": str(exc),
+                               f"{prefix}_err": {"rising": np.nan, "falling": np.nan,
+                                                 "err_pct": nan}})
+            continue
         predicted = fitting.step_predictions(fe, [runs[k] for k in members], held.values)
         for k, p in zip(members, predicted, strict=True):
-            prefix = "heldout" if kind == "run" else "length_heldout"
             out[k].update({prefix: p, f"{prefix}_err": _branch_errors(runs[k], p),
                            f"{prefix}_values": fitting.full_parameters(held.values)})
     return out
