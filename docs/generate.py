@@ -291,6 +291,7 @@ BENCHMARKS = {
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
     "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
     "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 1 --seed 0 --out {out}",
+    "identify_t0.json": "benchmarks/bench_identify_t0.py --draws 6 --seed 0 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
 }
