@@ -40,6 +40,7 @@ from mkm.fem.calibration import (
 from mkm.fem.ladder import MODELS
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify.fitting import GEOMETRY, STATIC_NAMES, Fit, full_parameters, geometry, rubber
+from mkm.identify.intervals import robust_covariance
 
 UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
          "t0_mm": "mm", "D0_mm": "mm", "pressure_offset_bar": "bar",
@@ -164,7 +165,8 @@ class Identification:
         """The bootstrap correlation of C10 and C01 (where the runs separate them)."""
         names, draws = list(self.fit.names), self.bootstrap["draws"]
         C10, C01 = rubber({**self.fit.values, **dict(zip(names, draws.T, strict=True))})
-        return float(np.corrcoef(C10, C01)[0, 1])
+        covariance = robust_covariance(np.column_stack([C10, C01]))
+        return float(covariance[0, 1] / np.sqrt(covariance[0, 0] * covariance[1, 1]))
 
     def identified(self) -> dict:
         """What was fitted, what assumed and from what (calibration.json's ``identified``)."""
