@@ -152,8 +152,11 @@ def _summary(rows: list[dict]) -> str:
 
 def _time_cli(runs, out: Path) -> float:
     start = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "mkm", "identify", *map(str, runs), "--out",
-                    str(out)], check=True, capture_output=True)
+    # -P: the repository's folder mkm/ (the application alone) is not the installed package
+    done = subprocess.run([sys.executable, "-P", "-m", "mkm", "identify", *map(str, runs),
+                           "--out", str(out)], capture_output=True, text=True)
+    if done.returncode != 0:
+        raise SystemExit(f"mkm identify failed ({done.returncode}): {done.stderr.strip()}")
     return time.perf_counter() - start
 
 

@@ -303,6 +303,7 @@ BENCHMARKS = {
                                        "--seed 7 --departures in-family --out {out}",
     "budget_coverage.json": "benchmarks/bench_uncertainty.py --runs 100 --eps 0 0.122 "
                             "--no-bands --out {out}",
+    "identify_t0.json": "benchmarks/bench_identify_t0.py --draws 6 --seed 0 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
     "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --out {out}",
@@ -369,6 +370,19 @@ def _stage_seconds(path: Path) -> str:
                                            else "") + ":\n\n" + markdown_table(frame, 3))
 
 
+def _second_table(path: Path) -> str:
+    """A benchmark's leave-one-length-out table (``leave_one_length_out``: its params and
+    rows), where it records one."""
+    if path.suffix != ".json":
+        return ""
+    held = json.loads(path.read_text(encoding="utf-8")).get("leave_one_length_out")
+    if not held:
+        return ""
+    return (f"\nLeave one length out (`mkm identify` on every length with `--params "
+            f"{held['params']}`, each length predicted from the others):\n\n"
+            + markdown_table(pd.json_normalize(held["rows"]), 4))
+
+
 def benchmark_tables() -> None:
     """One Markdown table per benchmark result in ``docs/measured/``, with the command that
     measured it; a benchmark not run yet gets a note saying how to run it."""
@@ -382,7 +396,7 @@ def benchmark_tables() -> None:
         else:
             frame, measured = _benchmark_frame(path)
             text = (f"`python {shown}`; measured {measured}.\n\n" + markdown_table(frame, 6)
-                    + _stage_seconds(path)
+                    + _second_table(path) + _stage_seconds(path)
                     + source_note(f"`docs/measured/{name}`", "make bench-docs"))
         write(OUT / f"bench_{path.stem}.md", text)
 

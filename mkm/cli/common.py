@@ -201,6 +201,11 @@ def add_geometry_arguments(parser) -> None:
 def model_from_args(args, **overrides):
     """The predictor of ``--model SPEC`` with the shortcut flags (``--mesh``, ``--theta0``, ...)
     laid over the spec's own parameters; a flag the predictor does not take is an error."""
+    return spec_from_args(args, **overrides).build(getattr(args, "calibration", None))
+
+
+def spec_from_args(args, **overrides):
+    """The :class:`mkm.registry.Spec` :func:`model_from_args` builds."""
     spec = parse_spec(args.model)
     flags = {"theta0_deg": getattr(args, "theta0", None),
              "diameter": getattr(args, "diameter", None), "L0_mm": getattr(args, "L0", None),
@@ -214,7 +219,7 @@ def model_from_args(args, **overrides):
         raise ValueError(f"--model {spec.text}: {spec.name} takes no "
                          f"{', '.join(unknown)} (its parameters: "
                          f"{', '.join(spec.entry.parameters)})")
-    return spec.with_params(**flags).build(getattr(args, "calibration", None))
+    return spec.with_params(**flags)
 
 
 def emit_prediction(prediction, out: str | None) -> None:

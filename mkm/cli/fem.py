@@ -14,6 +14,7 @@ from mkm.cli.common import (
     emit_prediction,
     model_from_args,
     shared_help,
+    spec_from_args,
     with_calibration,
 )
 from mkm.core.ranges import parse_fraction, parse_number
@@ -134,6 +135,16 @@ def _target(text: str) -> str:
 def _solve(args) -> int:
     model = model_from_args(args)
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
+    if args.calibration is not None:  # an identified muscle's: its 95 % band beside the force
+        import dataclasses
+
+        from mkm.identify.band import prediction_band
+
+        band = prediction_band(spec_from_args(args), args.calibration, prediction.force_N,
+                               args.pressures, args.D0, args.t0, args.eps)
+        if band is not None:
+            prediction = dataclasses.replace(prediction,
+                                             extras={"band95_N": band, **prediction.extras})
     if model.name == "auto":
         from mkm.auto import explain
         from mkm.verdict import model_label

@@ -18,10 +18,12 @@ def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "identify", help="fit braid angle, rubber, friction and creep to runs of one muscle",
         description="Fit the muscle's braid angle theta0, rubber (one scale on Silastic S's "
-        "C10 and C01), braid friction and creep to one or more bench runs of it (both sweep "
-        "directions, the holds' time traces): search with the surrogate, confirm with the FE "
-        "model, 95 % intervals by a bootstrap over steps, friction and creep kept only where "
-        "the data warrant them (BIC), each run predicted from the others. --out DIR receives "
+        "C10 and C01 unless the runs separate them), braid friction and creep, and the pressure "
+        "monitor's offset, to one or more bench runs of one tube (several eps and lengths; "
+        "both sweep directions, the holds' time traces): search with the surrogate, confirm "
+        "with the FE model, 95 % intervals by a bootstrap over steps with the instrument's "
+        "declared tolerances inside, friction and creep kept only where the data warrant them "
+        "(BIC). Prints first each run predicted from the others. --out DIR receives "
         "calibration.json (for --calibration in every command), parameters.csv, steps.csv and "
         "identification.json.",
         epilog="example: mkm identify RUN_EPS0 RUN_EPS12 --out mkm-out/identify; then "
@@ -29,9 +31,12 @@ def register(subparsers) -> None:
     parser.add_argument("runs", nargs="+", metavar="RUN_DIR",
                         help="run folders of one muscle; a pattern (runs/*, expanded by mkm in "
                         "any shell) or a folder holding run folders")
-    parser.add_argument("--params", default="theta0,rubber,friction,creep",
-                        help="what to fit, a comma list of theta0, rubber, friction, creep, "
-                        "gap (default all but gap; gap needs --model thickwall or axisym)")
+    parser.add_argument("--params", default=None,
+                        help="what to fit, a comma list of theta0, rubber, t0, D0, friction, "
+                        "creep, gap, offset (default theta0,rubber,friction,creep,offset: the "
+                        "runs' declared wall and diameter taken as given; t0 and D0 for a "
+                        "muscle whose wall is unknown; offset is the pressure monitor's, "
+                        "within its declared accuracy; gap needs --model thickwall or axisym)")
     parser.add_argument("--model", default="axisym",
                         help="static model spec that confirms the fit (and searches where the "
                         "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "

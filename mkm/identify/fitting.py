@@ -7,15 +7,15 @@ every sample of every settled hold, both branches and every run at once
 (:func:`scipy.optimize.least_squares`, trust-region reflective within bounds).
 
 The rubber is one scale on Silastic S's two constants (``C10 = s C10_S``, ``C01 = s C01_S``): a
-force-pressure curve carries one rubber stiffness, not two constants' ratio. The radial gap
+force-pressure curve mostly carries one rubber stiffness, not two constants' ratio. The share of
+C01 in ``C10 + C01`` (``c01_fraction``, Silastic S's by default) is fitted only where the runs
+separate it (:func:`mkm.identify.procedure.identify` tests it). The tube's wall ``t0_mm`` and
+diameter ``D0_mm`` are the runs' declared ones unless fitted (``--params t0``, ``D0``: one tube
+for every run; each run keeps its own length ``L0_mm``). The pressure monitor's offset
+``pressure_offset_bar`` (what it reads above the truth) is a nuisance parameter within the
+monitor's declared accuracy: it moves the threshold, which the runs see. The radial gap
 between tube and braid (``gap``, :func:`mkm.fem.thickwall.klute_hannaford`) is fitted only when
 asked, with a static model that takes it.
-
-The static force comes from a :class:`StaticSource`: the surrogate (fast: the search) or any
-static rung of the registry (the FE model: the confirmation, and the search itself where the
-surrogate's box does not cover the muscle). :class:`Corrected` adds to the surrogate the
-difference the FE model showed at the optimum (one FE sweep per run), so the final fit is on
-the FE model's force.
 """
 
 from __future__ import annotations
@@ -32,19 +32,33 @@ from mkm.fem.materials import SILASTIC_S
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
 #: ``--params`` groups and the fitted parameters each holds (internal names)
-GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",),
-          "friction": ("hysteresis_fraction",), "creep": ("creep_fraction", "log_tau"),
-          "gap": ("gap_mm",)}
-#: what ``--params`` fits when not given: a gap only when asked
-DEFAULT_GROUPS = ("theta0", "rubber", "friction", "creep")
-ORDER = ("theta0_deg", "rubber_scale", "gap_mm", "hysteresis_fraction", "creep_fraction",
-         "log_tau")
+GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",), "t0": ("t0_mm",),
+          "D0": ("D0_mm",), "friction": ("hysteresis_fraction",),
+          "creep": ("creep_fraction", "log_tau"), "gap": ("gap_mm",),
+          "offset": ("pressure_offset_bar",)}
+#: what ``--params`` fits when not given: the wall, the diameter and a gap only when asked
+DEFAULT_GROUPS = ("theta0", "rubber", "friction", "creep", "offset")
+ORDER = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "gap_mm",
+         "pressure_offset_bar", "hysteresis_fraction", "creep_fraction", "log_tau")
+#: the parameters of the static force (the rest are friction, creep and the monitor)
+STATIC_NAMES = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "gap_mm")
+#: the tube's geometry, which a fit may take from the runs or fit (one tube for every run)
+GEOMETRY = ("D0_mm", "t0_mm")
 TERM_BOUNDS = {"hysteresis_fraction": (0.0, 0.3), "creep_fraction": (0.0, 0.3),
-               "log_tau": (math.log(1.0), math.log(1000.0))}
+               "log_tau": (math.log(1.0), math.log(1000.0)), "c01_fraction": (0.0, 0.9)}
+#: a fitted wall or diameter searched within these factors of the declared one
+GEOMETRY_FACTORS = {"t0_mm": (0.5, 1.5), "D0_mm": (0.8, 1.2)}
+#: how far the rubber scale may move once C01's share is freed (its box on the surrogate)
+SCALE_MARGIN = 0.02
+#: Silastic S's share of C01 in C10 + C01 (the rubber's assumed ratio)
+SILASTIC_C01_FRACTION = SILASTIC_S.C01_MPa / (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
 #: the FE model's search box where the surrogate's does not apply
 FE_BOX = {"theta0_deg": (15.0, 50.0), "rubber_scale": (0.2, 5.0), "gap_mm": (0.0, 5.0)}
 #: grid of the surrogate's static table [bar] (the simulated bench tabulates at 0.05 bar too)
 TABLE_STEP_BAR = 0.05
+#: one residual scale for every parameter (least_squares' x_scale)
+X_SCALE = {"theta0_deg": 0.3, "rubber_scale": 0.05, "gap_mm": 0.05, "t0_mm": 0.05,
+           "D0_mm": 0.1, "c01_fraction": 0.05}
 #: an optimum this close to a box edge (a fraction of the box) is at the edge
 EDGE_FRACTION = 1e-3
 
@@ -63,50 +77,79 @@ def parse_groups(text: str | None) -> tuple[str, ...]:
     return tuple(g for g in GROUPS if g in names)
 
 
+def rubber(values: dict[str, float]) -> tuple[float, float]:
+    """``(C10_MPa, C01_MPa)`` of the internal values: the scale on Silastic S and, where
+    fitted, C01's share of the sum."""
+    total = values["rubber_scale"] * (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
+    share = values.get("c01_fraction", SILASTIC_C01_FRACTION)
+    return total * (1.0 - share), total * share
+
+
 def full_parameters(values: dict[str, float]) -> dict[str, float]:
     """The parameters as the toolkit names them, from the internal ones."""
-    scale = values["rubber_scale"]
-    return {"theta0_deg": values["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
-            "C01_MPa": scale * SILASTIC_S.C01_MPa,
+    C10, C01 = rubber(values)
+    return {"theta0_deg": values["theta0_deg"], "C10_MPa": C10, "C01_MPa": C01,
             "hysteresis_fraction": values["hysteresis_fraction"],
             "creep_fraction": values["creep_fraction"], "creep_tau_s": math.exp(values["log_tau"]),
-            **_gap(values)}
+            **_optional(values)}
 
 
 def internal_values(values: dict[str, float]) -> dict[str, float]:
-    """The internal parameters from the toolkit's names (:func:`full_parameters`'s inverse;
-    the rubber scale is C10's)."""
+    """The internal parameters from the toolkit's names (:func:`full_parameters`'s inverse)."""
+    total = values["C10_MPa"] + values["C01_MPa"]
+    share = values["C01_MPa"] / total
+    ratio = {} if math.isclose(share, SILASTIC_C01_FRACTION, rel_tol=1e-5) else {
+        "c01_fraction": share}
     return {"theta0_deg": values["theta0_deg"],
-            "rubber_scale": values["C10_MPa"] / SILASTIC_S.C10_MPa,
+            "rubber_scale": total / (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa), **ratio,
             "hysteresis_fraction": values["hysteresis_fraction"],
             "creep_fraction": values["creep_fraction"],
-            "log_tau": math.log(values["creep_tau_s"]), **_gap(values)}
+            "log_tau": math.log(values["creep_tau_s"]), **_optional(values)}
 
 
-def _gap(values: dict) -> dict:
-    """``gap_mm`` where the values have one (a gap is fitted only when asked)."""
-    return {"gap_mm": values["gap_mm"]} if "gap_mm" in values else {}
+def _optional(values: dict) -> dict:
+    """The values fitted only when asked (a gap, the wall, the diameter, the monitor offset)."""
+    return {k: values[k] for k in ("gap_mm", *GEOMETRY, "pressure_offset_bar") if k in values}
+
+
+def geometry(run, values: dict) -> tuple[float, float, float]:
+    """``(D0_mm, t0_mm, eps)`` of ``run``, the tube's fitted wall or diameter in place of the
+    declared one where ``values`` has it."""
+    D0_mm, t0_mm, eps = run.geometry
+    return values.get("D0_mm", D0_mm), values.get("t0_mm", t0_mm), eps
+
+
+def by_length(runs) -> dict[float, list[int]]:
+    """The runs' indices grouped by their length ``L0_mm`` (one model per length)."""
+    groups: dict[float, list[int]] = {}
+    for k, run in enumerate(runs):
+        groups.setdefault(float(run.muscle["L0_mm"]), []).append(k)
+    return groups
 
 
 class StaticSource:
-    """Static force tables of the runs at a braid angle and rubber scale (see the module doc)."""
+    """Static force tables of the runs at the internal ``values`` (see the module doc)."""
 
     name = "static"
     box: dict[str, tuple[float, float]] = FE_BOX
 
-    def tables(self, runs, theta0_deg: float, rubber_scale: float,
-               gap_mm: float = 0.0) -> list[tuple]:
+    def tables(self, runs, values: dict) -> list[tuple]:
+        """Per run: pressures [bar] and the static force there [N]."""
         raise NotImplementedError
+
+    def share_bounds(self, rubber_scale: float) -> tuple[float, float]:
+        """Where C01's share of the rubber is searched at this rubber scale."""
+        return TERM_BOUNDS["c01_fraction"]
 
 
 class ModelStatic(StaticSource):
     """A registry spec (``axisym``, ``axisym:mesh=coarse``, ``thickwall``) solved at each run's
-    set pressures: the runs' sweeps of one call together on the FE batch runner ``runner``
-    (:func:`mkm.prediction_cache.predict_many`: local workers or a Dask cluster), through the
-    prediction cache ``cache_dir`` (a repeated identification solves nothing again; None: no
-    cache)."""
+    set pressures and length: the runs' sweeps of one call together on the FE batch runner
+    ``runner`` (:func:`mkm.prediction_cache.predict_many`: local workers or a Dask cluster),
+    through the prediction cache ``cache_dir`` (a repeated identification solves nothing
+    again; None: no cache)."""
 
-    def __init__(self, spec: str, L0_mm: float, runner=None, cache_dir=DEFAULT_CACHE_DIR):
+    def __init__(self, spec: str, runner=None, cache_dir=DEFAULT_CACHE_DIR):
         from mkm.registry import parse_spec
 
         self.spec = parse_spec(spec)
@@ -114,29 +157,29 @@ class ModelStatic(StaticSource):
             raise ValueError(f"--model {spec!r} has no rubber: expected a model that takes "
                              "theta0_deg, C10_MPa and C01_MPa (axisym, thickwall)")
         self.name = self.spec.text
-        self.L0_mm = L0_mm
         self.runner, self.cache_dir = runner, cache_dir
         self.calls = 0
 
-    def model(self, theta0_deg: float, rubber_scale: float, gap_mm: float = 0.0):
-        gap = {"gap_mm": float(gap_mm)} if gap_mm else {}
-        return self.spec.with_params(
-            L0_mm=self.L0_mm, theta0_deg=float(theta0_deg),
-            C10_MPa=rubber_scale * SILASTIC_S.C10_MPa,
-            C01_MPa=rubber_scale * SILASTIC_S.C01_MPa, **gap).build()
+    def model(self, values: dict, L0_mm: float):
+        """The static model of length ``L0_mm`` at the internal ``values``."""
+        gap = {"gap_mm": float(values["gap_mm"])} if values.get("gap_mm") else {}
+        C10, C01 = rubber(values)
+        return self.spec.with_params(L0_mm=float(L0_mm), theta0_deg=float(values["theta0_deg"]),
+                                     C10_MPa=C10, C01_MPa=C01, **gap).build()
 
-    def tables(self, runs, theta0_deg, rubber_scale, gap_mm=0.0):
-        model = self.model(theta0_deg, rubber_scale, gap_mm)
+    def tables(self, runs, values):
+        models = {L0: self.model(values, L0) for L0 in by_length(runs)}
         grids = [run.table_pressures() for run in runs]
-        solved = predict_many([(model, grid, *run.geometry) for grid, run in
-                               zip(grids, runs, strict=True)], self.cache_dir,
+        solved = predict_many([(models[float(run.muscle["L0_mm"])], grid,
+                                *geometry(run, values))
+                               for grid, run in zip(grids, runs, strict=True)], self.cache_dir,
                               runner=self.runner, desc=f"{self.name} sweeps")
         self.calls += len(runs)
         out = []
         for grid, run, (pred, _) in zip(grids, runs, solved, strict=True):
             if not pred.valid.all():
                 raise RuntimeError(f"{self.name} gives no valid force for run {run.name} at "
-                                   f"theta0_deg={theta0_deg:.3f}, rubber x{rubber_scale:.3f}")
+                                   + ", ".join(f"{k}={v:.4g}" for k, v in values.items()))
             out.append((grid, np.maximum(pred.force_N, 0.0)))
         return out
 
@@ -146,42 +189,56 @@ class SurrogateStatic(StaticSource):
 
     name = "surrogate"
 
-    def __init__(self, surrogate, L0_mm: float):
-        self.surrogate, self.L0_mm = surrogate, L0_mm
+    def __init__(self, surrogate):
+        self.surrogate = surrogate
         box = surrogate.box
         self.box = {"theta0_deg": box["theta0_deg"],
                     "rubber_scale": (max(box["C10_MPa"][0] / SILASTIC_S.C10_MPa,
                                          box["C01_MPa"][0] / SILASTIC_S.C01_MPa),
                                      min(box["C10_MPa"][1] / SILASTIC_S.C10_MPa,
-                                         box["C01_MPa"][1] / SILASTIC_S.C01_MPa))}
+                                         box["C01_MPa"][1] / SILASTIC_S.C01_MPa)),
+                    "t0_mm": box["t0_mm"], "D0_mm": box["D0_mm"]}
+
+    def share_bounds(self, rubber_scale):
+        """C01's share keeping both constants inside the box at this scale give or take
+        :data:`SCALE_MARGIN` (the scale moves little once the ratio is freed: fitted first)."""
+        box, total = self.surrogate.box, rubber_scale * (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
+        small, large = total * (1 - SCALE_MARGIN), total * (1 + SCALE_MARGIN)
+        low = max(box["C01_MPa"][0] / small, 1.0 - box["C10_MPa"][1] / large)
+        high = min(box["C01_MPa"][1] / large, 1.0 - box["C10_MPa"][0] / small)
+        return (low, high) if low < high else (SILASTIC_C01_FRACTION,) * 2
 
     def outside(self, runs) -> list[str]:
         """What of the runs' muscle the surrogate's box does not cover."""
         box, out = self.surrogate.box, []
         for run in runs:
             values = {"D0_mm": run.geometry[0], "t0_mm": run.geometry[1], "eps": run.eps,
-                      "L0_mm": self.L0_mm,
+                      "L0_mm": float(run.muscle["L0_mm"]),
                       "pressure_bar": float(run.steps["set_pressure_bar"].max())}
             out += [f"{k}={v:g} not in [{box[k][0]:g}, {box[k][1]:g}]"
                     for k, v in values.items() if not box[k][0] <= v <= box[k][1] + 1e-9]
         return sorted(set(out))
 
-    def tables(self, runs, theta0_deg, rubber_scale, gap_mm=0.0):
-        if gap_mm:
+    def tables(self, runs, values):
+        if values.get("gap_mm"):
             raise ValueError("the surrogate has no gap between tube and braid")
-        model = self.surrogate.with_parameters(
-            L0_mm=self.L0_mm, theta0_deg=float(theta0_deg),
-            C10_MPa=rubber_scale * SILASTIC_S.C10_MPa, C01_MPa=rubber_scale * SILASTIC_S.C01_MPa)
+        C10, C01 = rubber(values)
         top = self.surrogate.box["pressure_bar"][1]
-        grids = [np.arange(0.0, min(top, run.pressure_bar.max()) + TABLE_STEP_BAR,
-                           TABLE_STEP_BAR).clip(max=top) for run in runs]
-        P = np.concatenate(grids)
-        geometry = [np.concatenate([np.full(g.size, v) for g, v in
-                                    zip(grids, column, strict=True)])
-                    for column in zip(*(run.geometry for run in runs), strict=True)]
-        force = np.maximum(model.predict(P, *geometry).force_N, 0.0)
-        return list(zip(grids, np.split(force, np.cumsum([g.size for g in grids])[:-1]),
-                        strict=True))
+        out: list = [None] * len(runs)
+        for L0_mm, members in by_length(runs).items():
+            model = self.surrogate.with_parameters(
+                L0_mm=L0_mm, theta0_deg=float(values["theta0_deg"]), C10_MPa=C10, C01_MPa=C01)
+            grids = [np.arange(0.0, min(top, runs[k].pressure_bar.max()) + TABLE_STEP_BAR,
+                               TABLE_STEP_BAR).clip(max=top) for k in members]
+            P = np.concatenate(grids)
+            columns = zip(*(geometry(runs[k], values) for k in members), strict=True)
+            geom = [np.concatenate([np.full(g.size, v) for g, v in
+                                    zip(grids, column, strict=True)]) for column in columns]
+            force = np.maximum(model.predict(P, *geom).force_N, 0.0)
+            parts = np.split(force, np.cumsum([g.size for g in grids])[:-1])
+            for k, grid, F in zip(members, grids, parts, strict=True):
+                out[k] = (grid, F)
+        return out
 
 
 class Corrected(StaticSource):
@@ -192,32 +249,54 @@ class Corrected(StaticSource):
         self.base, self.corrections = base, corrections
         self.name, self.box = f"{base.name} corrected by the FE model", base.box
 
-    def tables(self, runs, theta0_deg, rubber_scale, gap_mm=0.0):
-        tables = self.base.tables(runs, theta0_deg, rubber_scale, gap_mm)
+    def tables(self, runs, values):
+        tables = self.base.tables(runs, values)
         return [(grid, np.maximum(F + np.interp(grid, *self.corrections[k]), 0.0))
                 for k, (grid, F) in enumerate(tables)]
+
+    def share_bounds(self, rubber_scale):
+        return self.base.share_bounds(rubber_scale)
+
+    def without(self, k: int) -> Corrected:
+        """The same correction for the runs but the ``k``-th (a run held out)."""
+        return Corrected(self.base, [c for j, c in enumerate(self.corrections) if j != k])
 
 
 def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tuple]:
     """Per run: the FE model's pressures and FE minus ``base`` there, at ``values``."""
-    fe_tables = fe.tables(runs, *_static(values))
-    base_tables = base.tables(runs, *_static(values))
+    fe_tables = fe.tables(runs, values)
+    base_tables = base.tables(runs, values)
     return [(grid, F - np.interp(grid, *base_tables[k]))
             for k, (grid, F) in enumerate(fe_tables)]
 
 
-def _static(values: dict) -> tuple[float, float, float]:
-    """The static force's parameters: braid angle, rubber scale, gap (0 where not fitted)."""
-    return values["theta0_deg"], values["rubber_scale"], values.get("gap_mm", 0.0)
-
-
 def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
-    """The model's force trace [N] at every sample of each run."""
-    tables = source.tables(runs, *_static(values))
-    return [force_history(run.time_s, np.interp(run.pressure_bar, *tables[k]),
+    """The model's force trace [N] at every sample of each run (the static force at the true
+    pressure: the reading less the monitor's offset)."""
+    tables = source.tables(runs, values)
+    offset = values.get("pressure_offset_bar", 0.0)
+    return [force_history(run.time_s, np.interp(run.pressure_bar - offset, *tables[k]),
                           values["hysteresis_fraction"], values["creep_fraction"],
                           math.exp(values["log_tau"]))
             for k, run in enumerate(runs)]
+
+
+def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float, float]:
+    """Where ``name`` is searched: the source's box, the terms' bounds, the declared wall and
+    diameter within :data:`GEOMETRY_FACTORS` (inside the source's box), the monitor's offset
+    within its accuracy (the smallest declared by the runs)."""
+    if name == "c01_fraction":
+        return source.share_bounds(start["rubber_scale"])
+    if name == "pressure_offset_bar":
+        accuracy = min(run.monitor_accuracy_bar for run in runs)
+        return (-accuracy, accuracy)
+    if name in GEOMETRY_FACTORS:
+        declared = float(runs[0].muscle[name])
+        low, high = (f * declared for f in GEOMETRY_FACTORS[name])
+        if name in source.box:
+            low, high = max(low, source.box[name][0]), min(high, source.box[name][1])
+        return (low, high)
+    return source.box.get(name) or TERM_BOUNDS[name]
 
 
 @dataclass
@@ -261,13 +340,14 @@ def nominal_values(theta0_deg: float) -> dict[str, float]:
             "log_tau": math.log(TERM_DEFAULTS["creep_tau_s"])}
 
 
-def fit(source: StaticSource, runs, names, start: dict[str, float]) -> Fit:
+def fit(source: StaticSource, runs, names, start: dict[str, float],
+        max_nfev: int = 400) -> Fit:
     """Fit ``names`` (of :data:`ORDER`) from ``start`` (every value), the rest held fixed.
 
     Raises ``RuntimeError`` when the optimiser fails or the residuals are not finite.
     """
     names = tuple(n for n in ORDER if n in names)
-    bounds = {n: source.box.get(n) or TERM_BOUNDS[n] for n in names}
+    bounds = {n: bounds_of(n, source, runs, start) for n in names}
     x0 = np.array([min(max(start[n], bounds[n][0]), bounds[n][1]) for n in names])
     holds = [run.hold >= 0 for run in runs]
     counter = [0]
@@ -282,12 +362,10 @@ def fit(source: StaticSource, runs, names, start: dict[str, float]) -> Fit:
                                for t, run, h in zip(out, runs, holds, strict=True)])
 
     if names:
-        # one residual scale for every parameter: a step of 0.01 deg, 0.1 %, 0.01 in log tau
-        scale = np.array([{"theta0_deg": 0.3, "rubber_scale": 0.05, "gap_mm": 0.05}.get(n, 0.01)
-                          for n in names])
+        scale = np.array([X_SCALE.get(n, 0.01) for n in names])
         res = least_squares(residuals, x0, bounds=tuple(np.array(b) for b in zip(
             *bounds.values(), strict=True)), x_scale=scale, diff_step=1e-4, method="trf",
-            xtol=1e-10, ftol=1e-10, max_nfev=400)
+            xtol=1e-10, ftol=1e-10, max_nfev=max_nfev)
         if not res.success and res.status <= 0:
             raise RuntimeError(f"the fit on {source.name} did not converge: {res.message}")
         x, r, J, message = res.x, res.fun, res.jac, res.message
@@ -301,13 +379,13 @@ def fit(source: StaticSource, runs, names, start: dict[str, float]) -> Fit:
     cluster = np.concatenate([s + offsets[k] for k, s in enumerate(steps)])
     run_of_cluster = np.repeat(np.arange(len(runs)), [len(run.steps) for run in runs])
     values = values_of(x)
-    at_edge = [n for n in names if n in source.box and _at_edge(values[n], source.box[n])]
+    edges = [n for n in names if n in source.box and at_edge(values[n], bounds[n])]
     measured = np.concatenate([run.force_N[h] for run, h in zip(runs, holds, strict=True)])
     return Fit(names, values, r, measured, J, cluster, run_of_cluster, bounds, source.name,
-               counter[0], str(message), at_edge, np.array([run.tare_se_N for run in runs]))
+               counter[0], str(message), edges, np.array([run.tare_se_N for run in runs]))
 
 
-def _at_edge(value: float, box: tuple[float, float]) -> bool:
+def at_edge(value: float, box: tuple[float, float]) -> bool:
     width = box[1] - box[0]
     return min(value - box[0], box[1] - value) <= EDGE_FRACTION * width
 

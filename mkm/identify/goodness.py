@@ -116,6 +116,17 @@ class Goodness:
             return 1.0
         return math.sqrt(self.reduced)
 
+    @property
+    def discrepancy_rms_N(self) -> float:
+        """The residual the noise does not explain, over every step (root of the mean square
+        residual less the mean square noise); 0 when the model fits within the noise."""
+        steps = sum(b.steps for b in self.branches)
+        if not self.misfit or steps == 0:
+            return 0.0
+        excess = sum(b.steps * (b.rms_residual_N ** 2 - b.rms_noise_N ** 2)
+                     for b in self.branches) / steps
+        return math.sqrt(max(excess, 0.0))
+
     def line(self) -> str | None:
         """One line when the model does not fit within the noise (None when it does)."""
         bad = sorted(self.misfit, key=lambda b: -b.reduced)

@@ -9,8 +9,11 @@ replicates cost milliseconds instead of thousands of fits.
 
 Two errors every step of a run shares are drawn with each replicate, since resampling steps
 cannot show them: the run's zero (its tare's standard error, normal) and the load cell's
-sensitivity (the TCA10's tolerance of +-0.1 %, uniform). Intervals are the replicates' 2.5 and
-97.5 percentiles, clipped to the parameter's bounds.
+sensitivity (uniform within the tolerance the runs declare: the data cannot see it, so the
+interval must carry it). A nuisance parameter with a prior (the pressure monitor's offset,
+within its declared accuracy) adds the prior's information to the normal equations and a draw
+of the prior's centre to each replicate. Intervals are the replicates' 2.5 and 97.5
+percentiles, clipped to the parameter's bounds.
 """
 
 from __future__ import annotations
@@ -23,23 +26,29 @@ REPLICATES = 4000
 LEVEL = 0.95
 #: correlation above which two parameters are said to be confounded by these runs
 CONFOUNDED = 0.95
-#: load-cell sensitivity tolerance (AEP TCA10 data sheet: <= +-0.1 %), a fraction
+#: load-cell sensitivity tolerance where none is declared (AEP TCA10 data sheet: <= +-0.1 %)
 SENSITIVITY_TOLERANCE = 0.001
 
 
-def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0) -> dict:
+def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
+              sensitivity_tolerance: float = SENSITIVITY_TOLERANCE,
+              prior_sd: dict[str, float] | None = None) -> dict:
     """Replicates of the fitted parameters (internal names), their intervals and correlation.
 
     Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)},
-    "correlation": array (p, p), "identifiable": {name: bool}, "seed", "replicates"}``. A
-    parameter whose column of the Jacobian is (numerically) zero is not identifiable: the runs
-    do not inform it and its interval is its whole bound.
+    "correlation": array (p, p), "covariance": array (p, p) (:func:`robust_covariance`),
+    "identifiable": {name: bool}, "seed", "replicates"}``. A parameter whose column of the
+    Jacobian is (numerically) zero is not identifiable: the runs do not inform it, its interval
+    is its whole bound and its variance a uniform's over it. ``sensitivity_tolerance``: the load
+    cell's (a fraction, uniform); ``prior_sd``: a normal prior's standard deviation per
+    parameter, weighed against the residuals' variance.
     """
     names, J, r = result.names, result.jacobian, result.residual_N
     p = len(names)
     rng = np.random.default_rng(seed)
     if p == 0:
         return {"draws": np.zeros((replicates, 0)), "interval": {}, "correlation": np.zeros((0, 0)),
+                "covariance": np.zeros((0, 0)),
                 "identifiable": {}, "seed": seed, "replicates": replicates}
     column = np.sqrt(np.sum(J**2, axis=0))
     identifiable = column > 1e-9 * max(column.max(), 1e-300)
@@ -60,16 +69,29 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0) -> dict:
         for b in range(replicates):
             counts[b] += np.bincount(picks[b], minlength=n_clusters)
     # a measured force F' = (1 + s) F + z moves the residual model - F' by -(s F + z)
-    s = rng.uniform(-SENSITIVITY_TOLERANCE, SENSITIVITY_TOLERANCE, size=replicates)
+    s = rng.uniform(-sensitivity_tolerance, sensitivity_tolerance, size=replicates)
     tare = result.tare_se_N if result.tare_se_N.size else np.zeros(n_clusters)
     z = rng.standard_normal((replicates, tare.size)) * tare
     A = np.einsum("bc,cij->bij", counts, JtJ)
     g = (np.einsum("bc,ci->bi", counts, Jtr) - s[:, None] * np.einsum("bc,ci->bi", counts, JtF)
          - np.einsum("bc,ci->bi", counts * z[:, result.run_of_cluster], Jt1))
     x = np.array([result.values[n] for n in names])
+    # a prior sd_p on a parameter: the residual r_p = (sigma / sd_p)(x - c), c drawn about
+    # the optimum per replicate (the fit itself stays within hard bounds)
+    sigma2 = result.rss / max(result.n, 1)
+    for name, sd in (prior_sd or {}).items():
+        if name in names and identifiable[names.index(name)]:
+            k = int(np.flatnonzero(use == names.index(name))[0])
+            weight = sigma2 / sd**2
+            A[:, k, k] += weight
+            g[:, k] -= weight * rng.standard_normal(replicates) * sd
     draws = np.tile(x, (replicates, 1))
     # the Gauss-Newton step of each replicate from the optimum: -(J'WJ)^-1 J'W r
-    draws[:, use] -= np.linalg.solve(A, g[..., None])[..., 0]
+    try:
+        step = np.linalg.solve(A, g[..., None])[..., 0]
+    except np.linalg.LinAlgError:  # a replicate without the steps that inform a parameter
+        step = (np.linalg.pinv(A) @ g[..., None])[..., 0]
+    draws[:, use] -= step
     low_q, high_q = 100 * (1 - LEVEL) / 2, 100 * (1 + LEVEL) / 2
     interval = {}
     for i, name in enumerate(names):
@@ -80,9 +102,35 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0) -> dict:
         column_draws = np.clip(draws[:, i], lo_b, hi_b)
         interval[name] = (float(np.percentile(column_draws, low_q)),
                           float(np.percentile(column_draws, high_q)))
+    covariance = robust_covariance(draws)
+    for i in np.flatnonzero(~identifiable):  # the runs say nothing: uniform over its bound
+        lo_b, hi_b = result.bounds[names[i]]
+        covariance[i, :] = covariance[:, i] = 0.0
+        covariance[i, i] = (hi_b - lo_b) ** 2 / 12.0
     with np.errstate(invalid="ignore", divide="ignore"):
-        correlation = np.corrcoef(draws, rowvar=False) if p > 1 else np.ones((1, 1))
+        sd = np.sqrt(np.diag(covariance))
+        correlation = covariance / np.outer(sd, sd) if p > 1 else np.ones((1, 1))
     correlation = np.where(np.isfinite(correlation), correlation, 0.0)
     return {"draws": draws, "interval": interval, "correlation": np.atleast_2d(correlation),
+            "covariance": covariance,
             "identifiable": dict(zip(names, map(bool, identifiable), strict=True)),
             "seed": seed, "replicates": replicates}
+
+
+def robust_covariance(draws: np.ndarray) -> np.ndarray:
+    """The replicates' covariance as their percentile intervals see it: each standard deviation
+    the 95 % interval's half-width over 1.96, each correlation from the ranks (Spearman's rho,
+    as the normal's correlation ``2 sin(pi rho / 6)``). A replicate whose resampled steps lack
+    what fixes a parameter can land far off; a handful of those in thousands leave the
+    percentiles where they are but would rule a plain covariance."""
+    from scipy.stats import rankdata
+
+    draws = np.atleast_2d(np.asarray(draws, dtype=float).T).T
+    low, high = np.percentile(draws, [100 * (1 - LEVEL) / 2, 100 * (1 + LEVEL) / 2], axis=0)
+    sd = (high - low) / (2 * 1.959964)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rho = np.corrcoef(rankdata(draws, axis=0), rowvar=False)
+    rho = np.where(np.isfinite(rho), np.atleast_2d(rho), 0.0)
+    R = 2 * np.sin(np.pi / 6 * rho)
+    np.fill_diagonal(R, 1.0)
+    return R * np.outer(sd, sd)

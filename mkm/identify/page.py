@@ -5,9 +5,9 @@ the parameters with their intervals and what the runs could not tell; for each r
 the measured rising and falling steps with both branches the identified muscle predicts, the
 hysteresis width per step, and the residuals before (the nominal model: the shipped calibration,
 Silastic S, no friction or creep) and after identification; the identified muscle's threshold
-pressure at each run's eps against the measured one (:func:`threshold_row`); and the held-out
-check of the identification's own runs. Without an identified muscle in the calibration, the
-section is empty.
+pressure at each run's eps against the measured one (:func:`threshold_row`). The held-out
+check of the identification's own runs comes first: the honest predictive error. Without an
+identified muscle in the calibration, the section is empty.
 """
 
 from __future__ import annotations
@@ -23,14 +23,8 @@ from mkm.fem.materials import SILASTIC_S
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.html import esc, figure_html, save_figure, table_html
 from mkm.identify import fitting
+from mkm.identify.band import identified_entry
 from mkm.identify.runs import load_run_data
-
-
-def identified_entry(calibration: Calibration) -> tuple[str, dict] | None:
-    """``(key, entry)`` of the identified muscle in ``calibration`` (the entry of the static
-    model identify confirmed with), or None."""
-    return next(((key, entry) for key, entry in calibration.entries.items()
-                 if "identified" in entry), None)
 
 
 def report_section(run_dirs, out: Path, calibration: Calibration | None = None) -> str:
@@ -48,9 +42,24 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
              f"from {len(ident['runs'])} run(s): "
              f"{esc(', '.join(r['run'] for r in ident['runs']))}. Intervals: "
              f"{esc(ident['interval_method'])}.</p>"]
-    table = pd.DataFrame(ident["parameters"]).rename(columns={
+    held = pd.DataFrame(ident.get("leave_one_run_out", []))
+    columns = [f"{what}_{branch}_pct" for what in ("heldout", "length_heldout")
+               for branch in ("rising", "falling") if f"{what}_{branch}_pct" in held]
+    if columns:
+        parts.append(table_html(held[["run", "eps", *(["L0_mm"] if "L0_mm" in held else []),
+                                      *columns]],
+                                "Predictive error first: each of the identification's runs "
+                                "predicted by the FE model from the others (largest |Err%| "
+                                "per branch; length_heldout: its whole length held out)."))
+    else:
+        parts.append('<p class="note">Predictive error not measured: one run, nothing to '
+                     "hold out.</p>")
+    table = pd.DataFrame(ident["parameters"])
+    table = table[[c for c in ("parameter", "value", "ci_low", "ci_high", "unit", "status",
+                               "source") if c in table]].rename(columns={
         "ci_low": "95 % CI low", "ci_high": "95 % CI high"})
-    parts.append(table_html(table, "Identified parameters (parameters.csv).", digits=5))
+    parts.append(table_html(table, "Identified parameters (parameters.csv): fitted, derived "
+                            "and assumed, with where each comes from.", digits=5))
     notes = list(ident.get("notes", [])) + [f"{g}: not warranted by the data (BIC), dropped"
                                              for g in ident.get("dropped", [])]
     if notes:
@@ -58,16 +67,19 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
 
     spec = key + (f":mesh={entry['model_params']['mesh']}"
                   if "mesh" in entry.get("model_params", {}) else "")
+    fitted = {row["parameter"]: row["value"] for row in ident["parameters"]
+              if row.get("status", "fitted") == "fitted"}
     identified = fitting.internal_values({
         "theta0_deg": entry["theta0_deg"], "C10_MPa": entry.get("C10_MPa", SILASTIC_S.C10_MPa),
         "C01_MPa": entry.get("C01_MPa", SILASTIC_S.C01_MPa),
         **{k: entry.get(k, DEFAULTS[k]) for k in DEFAULTS},
-        **({"gap_mm": entry["gap_mm"]} if "gap_mm" in entry else {})})
+        **({"gap_mm": entry["gap_mm"]} if "gap_mm" in entry else {}),
+        **{k: fitted[k] for k in (*fitting.GEOMETRY, "pressure_offset_bar") if k in fitted}})
     nominal = fitting.nominal_values(Calibration.shipped().entry(key)["theta0_deg"])
     rows, thresholds = [], []
     runs = [load_run_data(p) for p in run_dirs]
+    static = fitting.ModelStatic(spec)
     for k, run in enumerate(runs, start=1):
-        static = fitting.ModelStatic(spec, float(run.muscle["L0_mm"]))
         after = fitting.step_predictions(static, [run], identified)[0]
         before = fitting.step_predictions(static, [run], nominal)[0]
         path = save_figure(_figure(run, before, after, k), Path(out) / f"identified_run{k}.png")
@@ -95,10 +107,6 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
                             "muscle pulls nothing) against the measured one, the zero of the "
                             "least-squares line through the run's settled steps above its "
                             "noise floor.", digits=3))
-    held = pd.DataFrame(ident.get("leave_one_run_out", []))
-    if "heldout_rising_pct" in held:
-        parts.append(table_html(held, "Held-out check of the identification's own runs: each "
-                                "predicted from the others (largest |Err%| per branch)."))
     return "".join(parts)
 
 
@@ -115,15 +123,16 @@ def threshold_row(run, static, values: dict) -> dict:
     line) and three standard errors of the run's zero (its tare), below which a step may be a
     muscle not yet pulling.
     """
-    D0_mm, t0_mm, eps = run.geometry
+    D0_mm, t0_mm, eps = fitting.geometry(run, values)
     gap_mm = values.get("gap_mm", 0.0)
-    model = static.model(values["theta0_deg"], values["rubber_scale"], gap_mm)
+    model = static.model(values, float(run.muscle["L0_mm"]))
     if model.has_threshold:
         fitted = float(model.predict(0.0, D0_mm, t0_mm, eps).extras["threshold_pressure_bar"])
     else:
         rubber = model.material
         fitted = float(klute_hannaford_threshold_pressure(
             D0_mm, t0_mm, eps, values["theta0_deg"], rubber.C10_MPa, rubber.C01_MPa, gap_mm))
+    fitted += values.get("pressure_offset_bar", 0.0)  # as the monitor reads it
     force = run.steps["force_N_mean"].to_numpy(dtype=float)
     floor = max(THRESHOLD_FLOOR_FRACTION * np.max(force, initial=0.0), 3.0 * run.tare_se_N)
     _, measured = line_above_threshold(run.steps["pressure_bar_mean"], force, floor)

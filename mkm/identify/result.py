@@ -8,7 +8,13 @@
   their hashes, the parameters and their intervals; the closed forms' entries (``eq2-inner``,
   ``eq2-braid``, ``thickwall``) hold their own theta0 fitted to the same runs as
   ``mkm fem calibrate`` fits it, with the identified rubber and terms;
-- ``parameters.csv``: ``parameter,value,ci_low,ci_high,unit``, one row per fitted parameter;
+- ``parameters.csv``: ``parameter,value,ci_low,ci_high,unit,status,source``: each fitted
+  parameter (``fitted``, with its 95 % interval), what follows from them (``derived``) and what
+  the fit took as given (``assumed``, with where from: the rubber's C01/C10 ratio where the runs
+  do not separate C10 and C01, the declared wall and diameter where not fitted, the load
+  cell's sensitivity tolerance); calibration.json's ``identified`` says the same in
+  ``fitted: [...]`` and ``assumed: {name: source}``, with ``band``: the static parameters'
+  covariance a prediction band needs (:mod:`mkm.identify.band`);
 - ``steps.csv``: every settled step measured, predicted by the nominal model, by the identified
   one and held out;
 - ``identification.json``: all of it (candidates, confirmation, correlation, notes, provenance).
@@ -33,10 +39,14 @@ from mkm.fem.calibration import (
 )
 from mkm.fem.ladder import MODELS
 from mkm.fem.materials import SILASTIC_S
-from mkm.identify.fitting import Fit, full_parameters
+from mkm.identify.fitting import GEOMETRY, STATIC_NAMES, Fit, full_parameters, geometry, rubber
 from mkm.identify.goodness import Goodness
+from mkm.identify.intervals import robust_covariance
 
 UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
+         "t0_mm": "mm", "D0_mm": "mm", "pressure_offset_bar": "bar",
+         "rubber_scale": "x Silastic S", "C01_over_C10": "ratio",
+         "loadcell_sensitivity_tolerance": "fraction",
          "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
 TERMS = ("hysteresis_fraction", "creep_fraction", "creep_tau_s")
 
@@ -64,6 +74,7 @@ class Identification:
     nominal: dict
     seconds: float
     fe_workers: str = "1 worker (in-process)"  # where the FE sweeps ran
+    rubber: dict = field(default_factory=dict)  # whether the runs separate C10 and C01
     files: dict = field(default_factory=dict)
     goodness: Goodness | None = None  # the misfit record (mkm.identify.goodness)
 
@@ -80,21 +91,107 @@ class Identification:
                                            "creep": ("creep_fraction",)}[g]))]
 
     def parameters(self) -> pd.DataFrame:
-        """``parameter, value, ci_low, ci_high, unit``: one row per fitted parameter."""
-        interval, rows = self.bootstrap["interval"], []
-        for name in self.fit.names:
-            low, high = interval[name]
+        """``parameter, value, ci_low, ci_high, unit, status, source``: each fitted parameter
+        (status ``fitted``), what follows from them (``derived``) and what the fit took as
+        given (``assumed``, with where from); intervals from the bootstrap's replicates."""
+        names, draws = list(self.fit.names), self.bootstrap["draws"]
+        interval = self.bootstrap["interval"]
+        rows = []
+
+        def add(name, value, low=math.nan, high=math.nan, status="fitted", source="the runs"):
+            rows.append((name, value, low, high, UNITS.get(name, ""), status, source))
+
+        def replicated(function):  # a derived parameter's interval, draws within bounds
+            clipped = {n: np.clip(column, *self.fit.bounds[n])
+                       for n, column in zip(names, draws.T, strict=True)}
+            values = function({**self.fit.values, **clipped})
+            return tuple(float(v) for v in np.percentile(values, [2.5, 97.5]))
+
+        values = self.values
+        for name in names:
             value = self.fit.values[name]
-            if name == "rubber_scale":
-                for key, nominal in (("C10_MPa", SILASTIC_S.C10_MPa),
-                                     ("C01_MPa", SILASTIC_S.C01_MPa)):
-                    rows.append((key, value * nominal, low * nominal, high * nominal))
+            if name == "rubber_scale" and self.rubber.get("separated"):
+                for k, key in enumerate(("C10_MPa", "C01_MPa")):
+                    low, high = replicated(lambda v, k=k: rubber(v)[k])
+                    # a search bound cuts the replicates (said in a note): the interval
+                    # still holds the estimate
+                    add(key, values[key], min(low, values[key]), max(high, values[key]),
+                        source=f"the runs (correlation C10-C01 "
+                               f"{self.rubber_correlation():+.2f})")
+            elif name == "rubber_scale":
+                add("rubber_scale", value, *interval[name], source="the runs: one scale on "
+                    "Silastic S's C10 and C01 (a force-pressure curve carries one stiffness)")
+                ratio = SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa
+                why = ("Silastic S's ratio: the runs do not separate C10 and C01"
+                       + (f" (C01/C10 95 % interval {self.rubber['ratio_ci'][0]:.3g}-"
+                          f"{self.rubber['ratio_ci'][1]:.3g}, condition number "
+                          f"{self.rubber['condition']:.2g})" if "ratio_ci" in self.rubber
+                          else ""))
+                add("C01_over_C10", ratio, status="assumed", source=why)
+                for key in ("C10_MPa", "C01_MPa"):
+                    add(key, values[key], status="derived",
+                        source="rubber_scale times Silastic S's, at the assumed ratio")
+            elif name == "c01_fraction":
+                continue  # reported as C10 and C01 above
             elif name == "log_tau":
-                rows.append(("creep_tau_s", math.exp(value), math.exp(low), math.exp(high)))
+                add("creep_tau_s", math.exp(value), *np.exp(interval[name]))
+            elif name == "pressure_offset_bar":
+                add(name, value, *interval[name], source="nuisance: the monitor's offset within "
+                    f"its declared accuracy +-{min(r.monitor_accuracy_bar for r in self.runs):g}"
+                    " bar (moves the threshold)")
+            elif name in GEOMETRY:
+                add(name, value, *interval[name], source=f"the runs (declared "
+                    f"{float(self.runs[0].muscle[name]):g} mm)")
             else:
-                rows.append((name, value, low, high))
-        frame = pd.DataFrame(rows, columns=["parameter", "value", "ci_low", "ci_high"])
-        return frame.assign(unit=frame["parameter"].map(UNITS))
+                add(name, value, *interval[name])
+        for name in GEOMETRY:
+            if name not in names:
+                add(name, float(self.runs[0].muscle[name]), status="assumed",
+                    source="the runs' declared muscle (run.json)")
+        where = ("the load cell's declared tolerance (run.json calibration)"
+                 if all(r.instrument_declared for r in self.runs) else
+                 "the configuration's default load-cell tolerance (a run declares none)")
+        add("loadcell_sensitivity_tolerance", self.sensitivity_tolerance, status="assumed",
+            source=f"{where}: invisible to the data, drawn into every interval and prediction "
+                   "band")
+        return pd.DataFrame(rows, columns=["parameter", "value", "ci_low", "ci_high", "unit",
+                                           "status", "source"])
+
+    @property
+    def sensitivity_tolerance(self) -> float:
+        """The load cell's declared sensitivity tolerance (a fraction; the largest of the
+        runs')."""
+        return max(r.sensitivity_tolerance for r in self.runs)
+
+    def rubber_correlation(self) -> float:
+        """The bootstrap correlation of C10 and C01 (where the runs separate them)."""
+        names, draws = list(self.fit.names), self.bootstrap["draws"]
+        C10, C01 = rubber({**self.fit.values, **dict(zip(names, draws.T, strict=True))})
+        covariance = robust_covariance(np.column_stack([C10, C01]))
+        return float(covariance[0, 1] / np.sqrt(covariance[0, 0] * covariance[1, 1]))
+
+    def identified(self) -> dict:
+        """What was fitted, what assumed and from what (calibration.json's ``identified``)."""
+        table = self.parameters()
+        return {"fitted": table.loc[table["status"] == "fitted", "parameter"].tolist(),
+                "assumed": dict(zip(table.loc[table["status"] == "assumed", "parameter"],
+                                    table.loc[table["status"] == "assumed", "source"],
+                                    strict=True))}
+
+    def band(self) -> dict:
+        """What a prediction band needs (:func:`mkm.identify.band.prediction_band`): the static
+        parameters' values and covariance (the bootstrap's, as its intervals see it:
+        :func:`mkm.identify.intervals.robust_covariance`; the monitor's offset and the load
+        cell's tolerance inside), the load cell's tolerance itself, and on a misfit the
+        residual the steps' noise does not explain (``misfit_rms_N``)."""
+        names = [n for n in STATIC_NAMES if n in self.fit.names]
+        index = [self.fit.names.index(n) for n in names]
+        covariance = self.bootstrap["covariance"][np.ix_(index, index)]
+        misfit = self.goodness.discrepancy_rms_N if self.goodness else 0.0
+        return {"parameters": names, "values": [self.fit.values[n] for n in names],
+                "covariance": covariance.tolist(),
+                "sensitivity_tolerance": self.sensitivity_tolerance,
+                **({"misfit_rms_N": round(misfit, 4)} if misfit > 0 else {})}
 
     def correlation(self) -> pd.DataFrame:
         names = [{"rubber_scale": "rubber", "log_tau": "creep_tau_s"}.get(n, n)
@@ -115,16 +212,29 @@ class Identification:
         return table[["run", "eps"] + [c for c in table.columns if c not in ("run", "eps")]]
 
     def checks_table(self) -> pd.DataFrame:
-        """Per run: largest |Err%| on each branch, nominal, identified and held out."""
+        """Per run: largest |Err%| on each branch, nominal, identified and held out (the run
+        alone, and its whole length where :func:`mkm.identify.procedure.held_out_groups` holds
+        lengths out)."""
         rows = []
         for check in self.checks:
-            row = {"run": check["run"], "eps": check["eps"]}
-            for what in ("nominal", "identified", "heldout"):
+            row = {"run": check["run"], "eps": check["eps"], "L0_mm": check["L0_mm"]}
+            for what in ("heldout", "length_heldout", "nominal", "identified"):
                 if f"{what}_err" in check:
                     for branch in ("rising", "falling"):
                         row[f"{what}_{branch}_pct"] = check[f"{what}_err"][branch]
             rows.append(row)
         return pd.DataFrame(rows)
+
+    def _lengths(self) -> str:
+        return ", ".join(f"{v:g}" for v in sorted({float(r.muscle["L0_mm"]) for r in self.runs}))
+
+    def predictive_table(self) -> pd.DataFrame:
+        """The honest predictive error, the first table shown: each run's largest |Err%| per
+        branch when held out (predicted by the FE model from the other runs, and from the
+        other lengths where several were fitted). Empty with one run."""
+        table = self.checks_table()
+        keep = [c for c in table.columns if "heldout" in c]
+        return table[["run", "eps", "L0_mm", *keep]] if keep else table.iloc[0:0]
 
     def record(self) -> dict:
         """Everything, as plain data (identification.json and the calibration's provenance)."""
@@ -132,12 +242,16 @@ class Identification:
         return {
             "runs": [{"run": r.name, "path": str(r.path), "muscle": r.muscle,
                       "settled_steps": len(r.steps), "sha256": r.sha256} for r in self.runs],
-            "fitted": list(self.groups), "dropped": self.dropped,
+            "groups": list(self.groups), "dropped": self.dropped,
+            **self.identified(),
             "parameters": params.to_dict(orient="records"),
+            "rubber": self.rubber,
             "interval_method": (f"bootstrap over settled steps within each run, "
                                 f"{self.bootstrap['replicates']} replicates, linearised at the "
-                                f"optimum, percentile 95 %, seed {self.bootstrap['seed']}"
-                                + (f", widened x{self.goodness.birge_ratio:.3g} by the misfit"
+                                f"optimum, percentile 95 %, seed {self.bootstrap['seed']}; the "
+                                f"load cell's sensitivity uniform within "
+                                f"+-{self.sensitivity_tolerance:g}"
+                                + (f"; widened x{self.goodness.birge_ratio:.3g} by the misfit"
                                    if self.goodness and self.goodness.birge_ratio > 1 else "")),
             "correlation": self.correlation().round(4).to_dict(),
             "model_selection": {"criterion": "BIC of the hold residuals",
@@ -146,18 +260,35 @@ class Identification:
             "fe_confirmation": self.confirmation, "notes": self.notes,
             "goodness_of_fit": self.goodness.record() if self.goodness else None,
             "leave_one_run_out": self.checks_table().to_dict(orient="records"),
+            "band": self.band(),
             "seconds": round(self.seconds, 2), "fe_workers": self.fe_workers,
         }
 
     def summary(self) -> str:
-        """The result as a user reads it on the terminal."""
+        """The result as a user reads it on the terminal: the held-out error first."""
         lines = [f"identified from {len(self.runs)} run(s) "
-                 f"(eps {', '.join(f'{r.eps:g}' for r in self.runs)}), searched with "
-                 f"{self.searched_with}, confirmed with {self.model} (FE sweeps on "
+                 f"(eps {', '.join(f'{r.eps:g}' for r in self.runs)}; L0 "
+                 f"{self._lengths()} mm), "
+                 f"searched with {self.searched_with}, confirmed with {self.model} (FE sweeps on "
                  f"{self.fe_workers}), in {self.seconds:.1f} s"]
+        held = self.predictive_table()
+        if len(held):
+            lines.append("  predictive error, each run predicted from the others "
+                         "(largest |Err%| rising/falling):")
+            for row in held.to_dict(orient="records"):
+                text = (f"    {row['run']} (eps {row['eps']:g}, L0 {row['L0_mm']:g} mm): "
+                        f"{row['heldout_rising_pct']:.2f}/{row['heldout_falling_pct']:.2f}")
+                if "length_heldout_rising_pct" in row and np.isfinite(
+                        row["length_heldout_rising_pct"]):
+                    text += (f"; its length held out {row['length_heldout_rising_pct']:.2f}/"
+                             f"{row['length_heldout_falling_pct']:.2f}")
+                lines.append(text)
+        else:
+            lines.append("  predictive error: not measured (one run: nothing to hold out)")
         for row in self.parameters().itertuples():
-            lines.append(f"  {row.parameter:<20} {row.value:10.5g}  95 % CI "
-                         f"[{row.ci_low:.5g}, {row.ci_high:.5g}] {row.unit}")
+            interval = (f"95 % CI [{row.ci_low:.5g}, {row.ci_high:.5g}]"
+                        if np.isfinite(row.ci_low) else f"{row.status:<21}")
+            lines.append(f"  {row.parameter:<30} {row.value:10.5g}  {interval} {row.unit}")
         for group in self.dropped:
             lines.append(f"  {group}: not warranted by the data (BIC), dropped")
         if self.goodness is not None and self.goodness.judged:
@@ -166,14 +297,10 @@ class Identification:
                          f"{sum(b.steps for b in g.branches)} settled steps against their own "
                          f"noise ({'a misfit, see below' if g.misfit else 'within the noise'})")
         for check in self.checks_table().to_dict(orient="records"):
-            text = (f"  {check['run']}: largest |Err%| rising/falling: nominal "
-                    f"{check['nominal_rising_pct']:.2f}/{check['nominal_falling_pct']:.2f}, "
-                    f"identified {check['identified_rising_pct']:.2f}/"
-                    f"{check['identified_falling_pct']:.2f}")
-            if "heldout_rising_pct" in check:
-                text += (f", held out {check['heldout_rising_pct']:.2f}/"
-                         f"{check['heldout_falling_pct']:.2f}")
-            lines.append(text)
+            lines.append(f"  {check['run']}: largest |Err%| rising/falling: nominal "
+                         f"{check['nominal_rising_pct']:.2f}/{check['nominal_falling_pct']:.2f}, "
+                         f"identified {check['identified_rising_pct']:.2f}/"
+                         f"{check['identified_falling_pct']:.2f}")
         lines += [f"  note: {n}" for n in self.notes]
         return "\n".join(lines)
 
@@ -202,10 +329,11 @@ class Identification:
         static = parse_spec(self.model).with_params(L0_mm=float(self.runs[0].muscle["L0_mm"]))
         gap = {"gap_mm": round(values["gap_mm"], 6)} if "gap_mm" in values else {}
         model = static.build(theta0_deg=values["theta0_deg"], **material, **gap)
-        identified = {"runs": record["runs"], "parameters": record["parameters"],
+        identified = {"runs": record["runs"], "fitted": record["fitted"],
+                      "assumed": record["assumed"], "parameters": record["parameters"],
                       "interval_method": record["interval_method"], "dropped": self.dropped,
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"],
-                      "misfit": record["goodness_of_fit"]}
+                      "misfit": record["goodness_of_fit"], "band": record["band"]}
         reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}
@@ -233,7 +361,8 @@ class Identification:
 
     def _reference(self) -> pd.DataFrame:
         """The runs' settled steps as a calibration reference (both branches)."""
-        frames = [run.steps.assign(D0_mm=run.geometry[0], t0_mm=run.geometry[1], eps=run.eps,
+        frames = [run.steps.assign(D0_mm=geometry(run, self.fit.values)[0],
+                                   t0_mm=geometry(run, self.fit.values)[1], eps=run.eps,
                                    L0_mm=float(run.muscle["L0_mm"]))
                   .rename(columns={"pressure_bar_mean": "pressure_bar",
                                    "force_N_mean": "force_N"}) for run in self.runs]

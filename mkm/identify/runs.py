@@ -22,8 +22,9 @@ import pandas as pd
 
 from mkm.core.records import file_sha256
 
-#: muscle geometry that must agree between the runs of one muscle (eps differs by design)
-SAME_MUSCLE = ("D0_mm", "t0_mm", "L0_mm")
+#: the tube that must agree between the runs of one muscle family (eps and the length
+#: ``L0_mm`` may differ: the same tube and braid cut to several lengths)
+SAME_MUSCLE = ("D0_mm", "t0_mm")
 SAME_MUSCLE_RTOL = 1e-6
 
 
@@ -37,7 +38,9 @@ class RunData:
     settled steps (``step``, ``direction``, ``set_pressure_bar``, ``pressure_bar_mean``,
     ``force_N_mean``, ``hold_start_s``, ``end_s``, ``pressure_se_bar``: the standard error of the
     hold's mean pressure, NaN for an imported step); ``tare_se_N`` the standard error of the
-    zero the run's forces are measured from (its tare samples' std over their root count).
+    zero the run's forces are measured from (its tare samples' std over their root count);
+    the instrument's declared bounds from ``run.json``'s calibration (the defaults of
+    :mod:`mkm.bench.config` where a run did not record them: ``instrument_declared`` False).
     """
 
     path: Path
@@ -50,6 +53,11 @@ class RunData:
     sha256: dict
     tare_se_N: float = 0.0
     timed: bool = True  # the holds have their real durations (creep can be fitted)
+    #: the pressure monitor's declared accuracy [bar] (+- bound) and the load cell's
+    #: sensitivity tolerance (a fraction), from the run's recorded calibration
+    monitor_accuracy_bar: float = 0.04
+    sensitivity_tolerance: float = 0.001
+    instrument_declared: bool = True  # False: the run recorded no bounds, defaults taken
 
     @property
     def name(self) -> str:
@@ -136,12 +144,30 @@ def load_run_data(path) -> RunData:
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=settled[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
                                   "force_N_mean", "hold_start_s", "end_s", "pressure_se_bar"]],
-                   sha256=sha,
-                   tare_se_N=tare_se, timed=imported.get("shape") != "ramp")
+                   sha256=sha, tare_se_N=tare_se, timed=imported.get("shape") != "ramp",
+                   **_instrument(run))
 
 
 def _muscle(run) -> dict:
     return run.meta.muscle.record()
+
+
+def _instrument(run) -> dict:
+    """The declared bounds of the run's instrument (its recorded ``loadcell`` and
+    ``regulator``), the configuration's defaults where it recorded none (an imported table)."""
+    import dataclasses
+
+    from mkm.bench.config import LoadCell, Regulator
+
+    out = {}
+    for cls, section, name, key in (
+            (Regulator, "regulator", "monitor_accuracy_bar", "monitor_accuracy_bar"),
+            (LoadCell, "loadcell", "sensitivity_tolerance_fraction", "sensitivity_tolerance")):
+        recorded = run.meta.calibration.get(section) or {}
+        default = next(f.default for f in dataclasses.fields(cls) if f.name == name)
+        out[key] = float(recorded.get(name, default))
+        out["instrument_declared"] = out.get("instrument_declared", True) and name in recorded
+    return out
 
 
 def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
@@ -155,12 +181,14 @@ def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
                    hold=np.arange(len(settled)),
                    steps=steps[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
                                 "force_N_mean", "hold_start_s", "end_s"]],
-                   sha256={"steps.csv": file_sha256(path / "steps.csv")}, timed=False)
+                   sha256={"steps.csv": file_sha256(path / "steps.csv")}, timed=False,
+                   **_instrument(run))
 
 
 def load_runs(paths) -> list[RunData]:
-    """The runs of one muscle (:func:`load_run_data` each); ``ValueError`` for runs of
-    different muscles (another tube or length: the muscle id may differ, the geometry not)."""
+    """The runs of one muscle family (:func:`load_run_data` each); ``ValueError`` for runs of
+    different tubes (the muscle id and the length may differ, the tube's diameter and wall
+    not)."""
     paths = list(paths)
     if not paths:
         raise ValueError("no run folder given: expected at least one RUN_DIR")
@@ -171,5 +199,6 @@ def load_runs(paths) -> list[RunData]:
             a, b = float(first.muscle[key]), float(run.muscle[key])
             if not np.isclose(a, b, rtol=SAME_MUSCLE_RTOL, atol=0.0):
                 raise ValueError(f"runs {first.name} and {run.name} are of different muscles "
-                                 f"({key}={a:g} and {b:g}): expected the runs of one muscle")
+                                 f"({key}={a:g} and {b:g}): expected the runs of one tube (the "
+                                 "length may differ)")
     return runs

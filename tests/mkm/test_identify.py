@@ -90,16 +90,30 @@ def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mk
     assert code == 0, err
     assert "hysteresis_fraction" in stdout and "95 % CI" in stdout
     table = pd.read_csv(out / "parameters.csv", comment="#")
-    assert list(table.columns) == ["parameter", "value", "ci_low", "ci_high", "unit"]
-    fitted = set(table["parameter"])
-    assert {"theta0_deg", "C10_MPa", "C01_MPa"} <= fitted <= {
-        "theta0_deg", "C10_MPa", "C01_MPa", "hysteresis_fraction", "creep_fraction",
-        "creep_tau_s"}
-    assert (table["ci_low"] <= table["value"]).all() and (table["value"] <= table["ci_high"]).all()
+    assert list(table.columns) == ["parameter", "value", "ci_low", "ci_high", "unit", "status",
+                                   "source"]
+    status = table.groupby("status")["parameter"].apply(set)
+    assert {"theta0_deg", "pressure_offset_bar"} <= status["fitted"] <= {
+        "theta0_deg", "rubber_scale", "C10_MPa", "C01_MPa", "pressure_offset_bar",
+        "hysteresis_fraction", "creep_fraction", "creep_tau_s"}
+    # the rubber: one scale (C10 and C01 derived at an assumed ratio) or both fitted
+    assert ("rubber_scale" in status["fitted"]) != ({"C10_MPa", "C01_MPa"} <= status["fitted"])
+    assert {"D0_mm", "t0_mm", "loadcell_sensitivity_tolerance"} <= status["assumed"]
+    fitted = table[table["status"] == "fitted"]
+    assert (fitted["ci_low"] <= fitted["value"]).all()
+    assert (fitted["value"] <= fitted["ci_high"]).all()
+    assert table.loc[table["status"] != "fitted", "ci_low"].isna().all()
+    # the monitor's offset stays within the accuracy the config declares (0.04 bar)
+    offset = table.set_index("parameter").loc["pressure_offset_bar"]
+    assert -0.04 <= offset["ci_low"] and offset["ci_high"] <= 0.04
     values = table.set_index("parameter")["value"]
+    # the held-out error is the first table the terminal shows
+    assert stdout.splitlines()[1].startswith("  predictive error, each run predicted")
 
     calibration = json.loads((out / "calibration.json").read_text(encoding="utf-8"))
     entry = calibration["thickwall"]
+    assert entry["identified"]["fitted"] == fitted["parameter"].tolist()
+    assert set(entry["identified"]["assumed"]) == status["assumed"]
     assert entry["theta0_deg"] == pytest.approx(values["theta0_deg"], abs=1e-4)
     assert [r["run"] for r in entry["identified"]["runs"]] == [p.name for p in runs]
     assert all(len(r["sha256"]["steps.csv"]) == 64 for r in entry["identified"]["runs"])
@@ -119,9 +133,11 @@ def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mk
     assert code == 0 and learnt != shipped
     expected = make_model("thickwall", theta0_deg=entry["theta0_deg"], C10_MPa=entry["C10_MPa"],
                           C01_MPa=entry["C01_MPa"]).predict(2.0, 30.0, 3.0, 0.1).force_N
+    row = dict(zip(*(line.split(",") for line in learnt.strip().splitlines()), strict=True))
     # the CSV prints forces to 0.01 N
-    assert float(learnt.strip().splitlines()[-1].split(",")[4]) == pytest.approx(
-        float(expected), abs=0.005)
+    assert float(row["force_N"]) == pytest.approx(float(expected), abs=0.005)
+    # the band holds at least the load cell's tolerance (uniform +-0.1 %: sd 0.1 %/root 3)
+    assert float(row["band95_N"]) >= 1.959964 * 0.001 / np.sqrt(3) * float(expected) - 1e-4
     # the friction rung reads the identified terms: its falling branch is (1 + h) the static
     learnt = Calibration.load(out / "calibration.json")
     rung = build_spec("friction:static=thickwall,direction=falling", learnt)
@@ -142,6 +158,8 @@ def test_one_eps_confounds_the_angle_and_the_rubber_and_idle_terms_are_dropped(t
     # a muscle without friction or creep: the BIC does not warrant either term
     assert result.dropped == ["friction", "creep"], result.candidates
     assert "heldout_err" not in result.checks[0]  # one run: nothing to hold out
+    # no false alarm: a confounding note only names an interval it makes wide
+    assert all("wide because of it" in n for n in result.notes if "are confounded" in n)
 
 
 class BoxOnly:
@@ -185,10 +203,10 @@ def _copy(run, tmp_path, name):
 
 @pytest.mark.parametrize("case, message", [
     ("other-muscle", "are of different muscles (D0_mm=30 and 40): expected the runs of one "
-                     "muscle"),
+                     "tube (the length may differ)"),
     ("no-settled-step", "has no settled step: expected at least one step with settled = true"),
     ("unknown-parameter", "--params 'theta0,stiffness': unknown parameter 'stiffness': expected "
-                          "some of theta0,rubber,friction,creep"),
+                          "some of theta0,rubber,t0,D0,friction,creep,gap,offset"),
     ("failed", "has status failed"),
 ])
 def test_bad_input_is_one_line_and_status_2(one_run, tmp_path, mkm_run, case, message):
