@@ -42,17 +42,31 @@ class Term:
     w : numpy.ndarray, shape (elements, points)
         Quadrature weights times any measure factor (``2 pi R dx`` in axisymmetry).
     red : numpy.ndarray of int
-        Map full dof -> reduced unknown, ``-1`` where the dof is fixed at zero.
+        Map full dof -> reduced unknown (onto ``0 .. n - 1``), ``-1`` where the dof is fixed
+        at zero.
+
+    The variables and the residual go through one global sparse operator ``G`` (rows: the
+    variables at every quadrature point; columns: the reduced unknowns; the nonzeros of ``B``
+    of the free dofs), so both are one sparse product each, ``y = y0 + G z`` and
+    ``r = G^T (w dpsi/dy)``, with no gather, per-element product or scatter.
     """
 
     def __init__(self, B, y0, dofs, w, red):
-        self.B, self.y0, self.w = B, y0, w
+        self.B, self.w = B, w
         self.dofs = red[dofs].T  # (elements, dofs) in reduced numbering, -1 where fixed
         e, q, i, a = B.shape
+        self.shape = (e, q, a)
+        self._y0 = np.broadcast_to(y0, self.shape).reshape(-1).copy()
+        n = int(red.max()) + 1
+        row = np.broadcast_to(np.arange(e * q * a).reshape(e, q, 1, a), B.shape)
+        col = np.broadcast_to(self.dofs[:, None, :, None], B.shape)
+        nonzero = (col >= 0) & (B != 0)
+        self.G = sp.csr_matrix((B[nonzero], (row[nonzero], col[nonzero])), shape=(e * q * a, n))
+        self._GT = self.G.T.tocsr()
         self.B_flat = B.transpose(0, 2, 1, 3).reshape(e, i, q * a)
-        self.keep_r = self.dofs >= 0
-        self.keep_K = self.keep_r[:, :, None] & self.keep_r[:, None, :]
-        self._keep_K_flat = np.flatnonzero(self.keep_K)  # np.take is faster than a mask
+        keep_r = self.dofs >= 0
+        # np.take is faster than a mask
+        self._keep_K_flat = np.flatnonzero(keep_r[:, :, None] & keep_r[:, None, :])
         # work arrays of the element matrices, kept: a fresh array of a megabyte per assembly
         # costs its page faults again each time (the allocator returns freed memory to the
         # system), as much as the products themselves
@@ -60,25 +74,26 @@ class Term:
         self._Ke = np.empty((e, i, i))
 
     def values(self, y_ext):
-        """Variables at the quadrature points; ``y_ext`` ends with a zero read by fixed dofs."""
-        e, q, _, a = self.B.shape
-        return self.y0 + np.matmul(y_ext[self.dofs][:, None, :], self.B_flat).reshape(e, q, a)
+        """Variables at the quadrature points, shape (elements, points, variables), of the
+        reduced unknowns ``y_ext`` (any entries past the ``n`` unknowns are not read)."""
+        return (self._y0 + self.G @ y_ext[:self.G.shape[1]]).reshape(self.shape)
 
-    def element_vectors(self, grad):
-        """Element vectors (e, i) of the density gradient ``grad`` (e, q, variables)."""
-        e, q, i, a = self.B.shape
-        return np.matmul(self.B_flat, (grad * self.w[..., None]).reshape(e, q * a, 1))[..., 0]
+    def residual(self, grad) -> np.ndarray:
+        """The global vector (length ``n``, fixed dofs dropped) of the density gradient
+        ``grad`` (elements, points, variables): ``int dpsi/dy . B phi_i w`` for every unknown."""
+        return self._GT @ (grad * self.w[..., None]).reshape(-1)
 
-    def element_arrays(self, grad, hess):
-        """Element vectors (e, i) and the kept entries of the element matrices,
-        ``K_e = sum_q B_q (w_q H_q) B_q^T`` (None where ``hess`` is None: the vectors only)."""
+    def arrays(self, grad, hess):
+        """The global vector of ``grad`` (:meth:`residual`) and the kept entries of the element
+        matrices, ``K_e = sum_q B_q (w_q H_q) B_q^T`` (None where ``hess`` is None), in the
+        order of :meth:`pattern`."""
         if hess is None:
-            return self.element_vectors(grad), None
+            return self.residual(grad), None
         e, q, i, a = self.B.shape
         # B (w H) written in (e, i, q, a) order, so that K_e is one product over (q, a)
         np.matmul(self.B, hess * self.w[..., None, None], out=self._BH.transpose(0, 2, 1, 3))
         np.matmul(self._BH.reshape(e, i, q * a), self.B_flat.transpose(0, 2, 1), out=self._Ke)
-        return self.element_vectors(grad), np.take(self._Ke, self._keep_K_flat)
+        return self.residual(grad), np.take(self._Ke, self._keep_K_flat)
 
     def pattern(self):
         """Row and column of the kept element-matrix entries, in the order of their data."""
@@ -86,10 +101,6 @@ class Term:
         rows = np.take(np.repeat(self.dofs, i, axis=1), self._keep_K_flat)
         cols = np.take(np.tile(self.dofs, (1, i)), self._keep_K_flat)
         return rows, cols
-
-    def vector(self, re, n: int) -> np.ndarray:
-        """The global vector (length ``n``) of element vectors ``re`` (fixed dofs dropped)."""
-        return np.bincount(self.dofs[self.keep_r], re[self.keep_r], minlength=n)
 
 
 class Assembler:
@@ -117,7 +128,7 @@ class Assembler:
         return sp.csr_matrix((data, self._indices, self._indptr), shape=(self.n, self.n))
 
 
-@lru_cache(maxsize=4)
+@lru_cache(maxsize=8)
 def csr_slots(n: int, rows: bytes, cols: bytes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """CSR ``indices`` and ``indptr`` of the entries ``(rows, cols)`` (int64 bytes) of an
     ``n x n`` matrix, and the slot in its data where each entry lands (duplicates summed).
