@@ -63,14 +63,17 @@ class Term:
         nonzero = (col >= 0) & (B != 0)
         self.G = sp.csr_matrix((B[nonzero], (row[nonzero], col[nonzero])), shape=(e * q * a, n))
         self._GT = self.G.T.tocsr()
-        self.B_flat = B.transpose(0, 2, 1, 3).reshape(e, i, q * a)
+        # K_e = B_flat X with X = (w H) B^T per point: two products of contiguous operands
+        self._B_flat = np.ascontiguousarray(B.transpose(0, 2, 1, 3).reshape(e, i, q * a))
+        self._Bt = np.ascontiguousarray(B.transpose(0, 1, 3, 2))
         keep_r = self.dofs >= 0
         # np.take is faster than a mask
         self._keep_K_flat = np.flatnonzero(keep_r[:, :, None] & keep_r[:, None, :])
         # work arrays of the element matrices, kept: a fresh array of a megabyte per assembly
         # costs its page faults again each time (the allocator returns freed memory to the
         # system), as much as the products themselves
-        self._BH = np.empty((e, i, q, a))
+        self._wH = np.empty((e, q, a, a))
+        self._X = np.empty((e, q, a, i))
         self._Ke = np.empty((e, i, i))
 
     def values(self, y_ext):
@@ -90,9 +93,9 @@ class Term:
         if hess is None:
             return self.residual(grad), None
         e, q, i, a = self.B.shape
-        # B (w H) written in (e, i, q, a) order, so that K_e is one product over (q, a)
-        np.matmul(self.B, hess * self.w[..., None, None], out=self._BH.transpose(0, 2, 1, 3))
-        np.matmul(self._BH.reshape(e, i, q * a), self.B_flat.transpose(0, 2, 1), out=self._Ke)
+        np.multiply(hess, self.w[..., None, None], out=self._wH)
+        np.matmul(self._wH, self._Bt, out=self._X)
+        np.matmul(self._B_flat, self._X.reshape(e, q * a, i), out=self._Ke)
         return self.residual(grad), np.take(self._Ke, self._keep_K_flat)
 
     def pattern(self):

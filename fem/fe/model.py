@@ -169,7 +169,12 @@ class HalfMuscle:
             self._tension_weight_mm2 = self._tension_rows(np.ones(Bb.shape[:2]))
             self._membrane_N_per_mm = 3.0 * (material.C10_MPa + material.C01_MPa) * t0_mm
             rows, cols = self.assembler.entries()
-            self._entry_rows, self._entry_cols = rows, cols
+            in_tension = ((rows >= self.tension_slice.start) & (rows < self.tension_slice.stop)
+                          | (cols >= self.tension_slice.start) & (cols < self.tension_slice.stop))
+            # the entries in a tension dof's row or column: the only ones _release touches
+            self._tension_entries = np.flatnonzero(in_tension)
+            self._entry_rows, self._entry_cols = (rows[self._tension_entries],
+                                                  cols[self._tension_entries])
             self._tension_diagonal = np.flatnonzero(
                 (rows == cols) & (rows >= self.tension_slice.start)
                 & (rows < self.tension_slice.stop))
@@ -307,7 +312,8 @@ class HalfMuscle:
             return
         released = np.zeros(self.n, dtype=bool)
         released[dofs] = True
-        K.data[released[self._entry_rows] | released[self._entry_cols]] = 0.0
+        K.data[self._tension_entries[released[self._entry_rows]
+                                     | released[self._entry_cols]]] = 0.0
         K.data[self._tension_diagonal[slack]] = scale
 
     def inverted(self, y) -> str | None:
