@@ -58,14 +58,15 @@ class Term:
         self.shape = (e, q, a)
         self._y0 = np.broadcast_to(y0, self.shape).reshape(-1).copy()
         n = int(red.max()) + 1
-        row = np.broadcast_to(np.arange(e * q * a).reshape(e, q, 1, a), B.shape)
-        col = np.broadcast_to(self.dofs[:, None, :, None], B.shape)
-        nonzero = (col >= 0) & (B != 0)
-        self.G = sp.csr_matrix((B[nonzero], (row[nonzero], col[nonzero])), shape=(e * q * a, n))
-        self._GT = self.G.T.tocsr()
         # K_e = B_flat X with X = (w H) B^T per point: two products of contiguous operands
         self._B_flat = np.ascontiguousarray(B.transpose(0, 2, 1, 3).reshape(e, i, q * a))
         self._Bt = np.ascontiguousarray(B.transpose(0, 1, 3, 2))
+        # G row by row straight from B^T's (e, q, a, i) order: no sorting
+        nonzero = (self._Bt != 0) & (self.dofs[:, None, None, :] >= 0)
+        indptr = np.concatenate([[0], np.cumsum(nonzero.sum(axis=-1).ravel())])
+        indices = np.broadcast_to(self.dofs[:, None, None, :], nonzero.shape)[nonzero]
+        self.G = sp.csr_matrix((self._Bt[nonzero], indices, indptr), shape=(e * q * a, n))
+        self._GT = self.G.T.tocsr()
         keep_r = self.dofs >= 0
         # np.take is faster than a mask
         self._keep_K_flat = np.flatnonzero(keep_r[:, :, None] & keep_r[:, None, :])
