@@ -2,9 +2,11 @@
 
 An energy ``Pi = sum_terms int psi(y) w`` whose pointwise variables are affine in the unknowns,
 ``y = y0 + B z`` at every quadrature point, with ``B`` constant (total-Lagrangian: integrals
-over the reference configuration). Then the element vectors and matrices of every term are two
-batched matrix products of ``B`` with the gradient and Hessian of ``psi`` with respect to ``y``,
-and the global sparse pattern is fixed once: each assembly only sums entries into place.
+over the reference configuration). Then the variables at every point and the residual are one
+sparse product each with the global form of ``B`` (``y = y0 + G z``, ``r = G^T w dpsi/dy``),
+the element matrices two batched matrix products of ``B`` with the Hessian of ``psi`` with
+respect to ``y``, and the global sparse pattern is fixed once: each assembly only sums entries
+into place.
 
 The physics (which variables, which density) lives in :mod:`mkm.fem.fe.forms` and
 :mod:`mkm.fem.fe.model`; this module knows scikit-fem bases, dof maps and sparse matrices only.
@@ -52,7 +54,7 @@ class Term:
     """
 
     def __init__(self, B, y0, dofs, w, red):
-        self.B, self.w = B, w
+        self.w = w
         self.dofs = red[dofs].T  # (elements, dofs) in reduced numbering, -1 where fixed
         e, q, i, a = B.shape
         self.shape = (e, q, a)
@@ -77,10 +79,10 @@ class Term:
         self._X = np.empty((e, q, a, i))
         self._Ke = np.empty((e, i, i))
 
-    def values(self, y_ext):
+    def values(self, y):
         """Variables at the quadrature points, shape (elements, points, variables), of the
-        reduced unknowns ``y_ext`` (any entries past the ``n`` unknowns are not read)."""
-        return (self._y0 + self.G @ y_ext[:self.G.shape[1]]).reshape(self.shape)
+        reduced unknowns ``y`` (entries past the ``n`` unknowns, if any, are not read)."""
+        return (self._y0 + self.G @ y[:self.G.shape[1]]).reshape(self.shape)
 
     def residual(self, grad) -> np.ndarray:
         """The global vector (length ``n``, fixed dofs dropped) of the density gradient
@@ -93,7 +95,7 @@ class Term:
         order of :meth:`pattern`."""
         if hess is None:
             return self.residual(grad), None
-        e, q, i, a = self.B.shape
+        e, q, a, i = self._Bt.shape
         np.multiply(hess, self.w[..., None, None], out=self._wH)
         np.matmul(self._wH, self._Bt, out=self._X)
         np.matmul(self._B_flat, self._X.reshape(e, q * a, i), out=self._Ke)
