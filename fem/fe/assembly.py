@@ -59,16 +59,20 @@ class Term:
         e, q, i, a = B.shape
         self.shape = (e, q, a)
         self._y0 = np.broadcast_to(y0, self.shape).reshape(-1).copy()
-        n = int(red.max()) + 1
         # K_e = B_flat X with X = (w H) B^T per point: two products of contiguous operands
         self._B_flat = np.ascontiguousarray(B.transpose(0, 2, 1, 3).reshape(e, i, q * a))
         self._Bt = np.ascontiguousarray(B.transpose(0, 1, 3, 2))
-        # G row by row straight from B^T's (e, q, a, i) order: no sorting
-        nonzero = (self._Bt != 0) & (self.dofs[:, None, None, :] >= 0)
-        indptr = np.concatenate([[0], np.cumsum(nonzero.sum(axis=-1).ravel())])
-        indices = np.broadcast_to(self.dofs[:, None, None, :], nonzero.shape)[nonzero]
-        self.G = sp.csr_matrix((self._Bt[nonzero], indices, indptr), shape=(e * q * a, n))
-        self._GT = self.G.T.tocsr()
+        # G's rows are B^T's (e, q, a) rows, its entries the (variable, dof) pairs B couples
+        # anywhere, of the free dofs: a structure of the dof map alone, shared by the muscles
+        # of one mesh level (an exact zero of B at some point is stored, and adds nothing)
+        support = np.any(self._Bt != 0, axis=(0, 1))
+        source, indices, indptr, t_order, t_indices, t_indptr = _operator_pattern(
+            q, int(red.max()) + 1, support.tobytes(), support.shape,
+            self.dofs.astype(np.int64).tobytes(), self.dofs.shape)
+        data = np.take(self._Bt, source)
+        self.G = sp.csr_matrix((data, indices, indptr), shape=(e * q * a, t_indptr.size - 1))
+        self._GT = sp.csr_matrix((np.take(data, t_order), t_indices, t_indptr),
+                                 shape=self.G.shape[::-1])
         keep_r = self.dofs >= 0
         # np.take is faster than a mask
         self._keep_K_flat = np.flatnonzero(keep_r[:, :, None] & keep_r[:, None, :])
@@ -103,10 +107,7 @@ class Term:
 
     def pattern(self):
         """Row and column of the kept element-matrix entries, in the order of their data."""
-        e, i = self.dofs.shape
-        rows = np.take(np.repeat(self.dofs, i, axis=1), self._keep_K_flat)
-        cols = np.take(np.tile(self.dofs, (1, i)), self._keep_K_flat)
-        return rows, cols
+        return _kept_entries(self.dofs)
 
 
 class Assembler:
@@ -118,11 +119,8 @@ class Assembler:
 
     def __init__(self, terms, n: int):
         self.n = n
-        patterns = [t.pattern() for t in terms]
-        rows = np.concatenate([p[0] for p in patterns])
-        cols = np.concatenate([p[1] for p in patterns])
-        self._indices, self._indptr, self._slot = csr_slots(
-            n, rows.astype(np.int64).tobytes(), cols.astype(np.int64).tobytes())
+        self._indices, self._indptr, self._slot = _assembly_pattern(
+            n, tuple((t.dofs.astype(np.int64).tobytes(), t.dofs.shape) for t in terms))
 
     def entries(self) -> tuple[np.ndarray, np.ndarray]:
         """Row and column of every stored entry of :meth:`matrix`, in the order of its data."""
@@ -135,15 +133,58 @@ class Assembler:
 
 
 @lru_cache(maxsize=8)
-def csr_slots(n: int, rows: bytes, cols: bytes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """CSR ``indices`` and ``indptr`` of the entries ``(rows, cols)`` (int64 bytes) of an
-    ``n x n`` matrix, and the slot in its data where each entry lands (duplicates summed).
+def _operator_pattern(q: int, n: int, support: bytes, support_shape: tuple, dofs: bytes,
+                      dofs_shape: tuple):
+    """The structure of a term's global operator ``G`` and of ``G^T``: ``(source, indices,
+    indptr)`` of ``G`` (its data is ``B^T.flat[source]``) and ``(order, indices, indptr)`` of
+    ``G^T`` (its data is ``G.data[order]``), for the ``(variables, dofs)`` ``support`` of the
+    operator and the element dofs ``dofs`` (reduced, -1 where fixed; int64 bytes). Kept for
+    the next muscle of the same mesh level; the arrays are read-only."""
+    support = np.frombuffer(support, dtype=bool).reshape(support_shape)
+    dofs = np.frombuffer(dofs, dtype=np.int64).reshape(dofs_shape)
+    e, i = dofs.shape
+    mask = np.broadcast_to(support[None, None] & (dofs[:, None, None, :] >= 0),
+                           (e, q) + support.shape)
+    source = np.flatnonzero(mask)
+    indices = np.broadcast_to(dofs[:, None, None, :], mask.shape).reshape(-1)[source]
+    indptr = np.concatenate([[0], np.cumsum(mask.sum(axis=-1).reshape(-1))])
+    numbered = sp.csr_matrix((np.arange(source.size, dtype=float), indices, indptr),
+                             shape=(indptr.size - 1, n))
+    transposed = numbered.T.tocsr()
+    pattern = (source, indices, indptr, transposed.data.astype(np.intp), transposed.indices,
+               transposed.indptr)
+    for array in pattern:
+        array.flags.writeable = False
+    return pattern
 
-    Kept for the next call with the same entries: every muscle of one mesh level and boundary
-    conditions has the same pattern, and finding it costs as much as a few assemblies on the
-    fine mesh. The arrays are read-only, shared by every matrix of that pattern.
+
+def _kept_entries(dofs) -> tuple[np.ndarray, np.ndarray]:
+    """Row and column of the element-matrix entries between free dofs (``dofs``: elements x
+    dofs, reduced, -1 where fixed), element by element in row-major order."""
+    i = dofs.shape[1]
+    rows, cols = np.repeat(dofs, i, axis=1).reshape(-1), np.tile(dofs, (1, i)).reshape(-1)
+    kept = (rows >= 0) & (cols >= 0)
+    return rows[kept], cols[kept]
+
+
+@lru_cache(maxsize=8)
+def _assembly_pattern(n: int, terms: tuple):
+    """:func:`csr_slots` of the kept element-matrix entries of terms given by their element
+    dofs (``(int64 bytes, shape)`` each), in order: the pattern depends on the dof maps alone,
+    so a muscle of a mesh level already seen finds it by them (a key a thirtieth of the
+    entries' size), where finding it costs as much as a few assemblies on the fine mesh."""
+    entries = [_kept_entries(np.frombuffer(b, dtype=np.int64).reshape(shape))
+               for b, shape in terms]
+    rows = np.concatenate([r for r, _ in entries])
+    cols = np.concatenate([c for _, c in entries])
+    return csr_slots(n, rows, cols)
+
+
+def csr_slots(n: int, rows, cols) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """CSR ``indices`` and ``indptr`` of the entries ``(rows, cols)`` (int64) of an ``n x n``
+    matrix, and the slot in its data where each entry lands (duplicates summed); read-only
+    (kept by :func:`_assembly_pattern`, shared by every matrix of that pattern).
     """
-    rows, cols = np.frombuffer(rows, dtype=np.int64), np.frombuffer(cols, dtype=np.int64)
     pattern = sp.csr_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
     pattern.sum_duplicates()  # sorted column indices, one entry per (row, column)
     # where each entry lands in the CSR data: stored entries are sorted by (row, column), so a

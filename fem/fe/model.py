@@ -44,7 +44,7 @@ from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 
 from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.eq2 import BAR_TO_MPA, LOCKING_ANGLE_DEG, check_theta0
-from mkm.fem.fe.assembly import Assembler, Term, csr_slots, operator
+from mkm.fem.fe.assembly import Assembler, Term, operator
 from mkm.fem.fe.forms import (
     braid_inextensibility,
     cavity_volume,
@@ -181,13 +181,7 @@ class HalfMuscle:
         # the ramp's tangents (the leading block: without the cap) keep one ordering, and so do
         # the free path's (the pressure's column -dV/dy, dense along the inner surface, is
         # numbered last); the free tangent's pattern: K's without the cap column, plus dV's
-        rows, cols = self.assembler.entries()
-        self._K_inner = np.flatnonzero(cols < self.n - 1)
-        self._dV_rows = np.unique(self.cavity.dofs[self.cavity.dofs >= 0])
-        self._free_indices, self._free_indptr, self._free_slots = csr_slots(
-            self.n, np.concatenate([rows[self._K_inner], self._dV_rows]).astype(np.int64).tobytes(),
-            np.concatenate([cols[self._K_inner], np.full(self._dV_rows.size, self.n - 1)]
-                           ).astype(np.int64).tobytes())
+        self._free_pattern()
         self._held_lu = OrderedLU(leading=self.n - 1)
         self._free_lu = OrderedLU()
 
@@ -482,6 +476,25 @@ class HalfMuscle:
                 report.reason = f"{lock} (the path stopped with: {report.reason})"
             return None, np.nan, report
         return np.append(x[:-1], U_mm), float(x[-1]), report
+
+    def _free_pattern(self) -> None:
+        """The free tangent's CSR pattern from K's (sorted columns, the cap's last): in each row
+        K's entries left of the cap column, then the pressure column where dV has a row."""
+        rows, cols = self.assembler.entries()
+        K_indptr = np.append(np.searchsorted(rows, np.arange(self.n)), rows.size)
+        self._K_inner = np.flatnonzero(cols < self.n - 1)
+        self._dV_rows = np.unique(self.cavity.dofs[self.cavity.dofs >= 0])
+        counts = np.bincount(rows[self._K_inner], minlength=self.n)
+        counts[self._dV_rows] += 1
+        indptr = np.concatenate([[0], np.cumsum(counts)])
+        inner_rows = rows[self._K_inner]
+        inner_slots = indptr[inner_rows] + self._K_inner - K_indptr[inner_rows]
+        dV_slots = indptr[self._dV_rows + 1] - 1
+        self._free_slots = np.concatenate([inner_slots, dV_slots])
+        self._free_indices = np.empty(indptr[-1], dtype=cols.dtype)
+        self._free_indices[self._free_slots] = np.concatenate(
+            [cols[self._K_inner], np.full(self._dV_rows.size, self.n - 1)])
+        self._free_indptr = indptr
 
     def _free_tangent(self, K, dV) -> sp.csr_matrix:
         """The free muscle's tangent: ``K`` with its cap column replaced by ``-dV`` (the
