@@ -95,8 +95,9 @@ class Term:
 
     def arrays(self, grad, hess):
         """The global vector of ``grad`` (:meth:`residual`) and the kept entries of the element
-        matrices, ``K_e = sum_q B_q (w_q H_q) B_q^T`` (None where ``hess`` is None), in the
-        order of :meth:`pattern`."""
+        matrices, ``K_e = sum_q B_q (w_q H_q) B_q^T`` (None where ``hess`` is None): those
+        between free dofs, element by element in row-major order (as :class:`Assembler`
+        reads them)."""
         if hess is None:
             return self.residual(grad), None
         e, q, a, i = self._Bt.shape
@@ -105,13 +106,11 @@ class Term:
         np.matmul(self._B_flat, self._X.reshape(e, q * a, i), out=self._Ke)
         return self.residual(grad), np.take(self._Ke, self._keep_K_flat)
 
-    def pattern(self):
-        """Row and column of the kept element-matrix entries, in the order of their data."""
-        return _kept_entries(self.dofs)
-
 
 class Assembler:
-    """The CSR pattern of a list of terms over ``n`` reduced unknowns, built once.
+    """The CSR pattern of a list of terms over ``n`` reduced unknowns, found once per set of
+    dof maps (kept for every later list of terms with the same maps: every muscle of a mesh
+    level).
 
     :meth:`matrix` sums the kept element-matrix entries of each term (in the order of ``terms``)
     into that pattern.
@@ -169,7 +168,7 @@ def _kept_entries(dofs) -> tuple[np.ndarray, np.ndarray]:
 
 @lru_cache(maxsize=8)
 def _assembly_pattern(n: int, terms: tuple):
-    """:func:`csr_slots` of the kept element-matrix entries of terms given by their element
+    """:func:`_csr_slots` of the kept element-matrix entries of terms given by their element
     dofs (``(int64 bytes, shape)`` each), in order: the pattern depends on the dof maps alone,
     so a muscle of a mesh level already seen finds it by them (a key a thirtieth of the
     entries' size), where finding it costs as much as a few assemblies on the fine mesh."""
@@ -177,10 +176,10 @@ def _assembly_pattern(n: int, terms: tuple):
                for b, shape in terms]
     rows = np.concatenate([r for r, _ in entries])
     cols = np.concatenate([c for _, c in entries])
-    return csr_slots(n, rows, cols)
+    return _csr_slots(n, rows, cols)
 
 
-def csr_slots(n: int, rows, cols) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _csr_slots(n: int, rows, cols) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """CSR ``indices`` and ``indptr`` of the entries ``(rows, cols)`` (int64) of an ``n x n``
     matrix, and the slot in its data where each entry lands (duplicates summed); read-only
     (kept by :func:`_assembly_pattern`, shared by every matrix of that pattern).
