@@ -160,6 +160,7 @@ class HalfMuscle:
         terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
         self.assembler = Assembler(terms, self.n)
         self._reactions: dict[tuple[float, bytes], float] = {}
+        self._last_rubber: tuple[np.ndarray, np.ndarray] | None = None
         if braid:
             # tension-only braid (slack_nodes): a tension dof's constraint residual over its
             # weight int phi_i dA is the mean of g = l_f^2 - 1 ~ 2 x fibre strain around it;
@@ -168,13 +169,21 @@ class HalfMuscle:
             self._tension_weight_mm2 = self._tension_rows(np.ones(Bb.shape[:2]))
             self._membrane_N_per_mm = 3.0 * (material.C10_MPa + material.C01_MPa) * t0_mm
             rows, cols = self.assembler.entries()
-            self._entry_rows, self._entry_cols = rows, cols
+            in_tension = ((rows >= self.tension_slice.start) & (rows < self.tension_slice.stop)
+                          | (cols >= self.tension_slice.start) & (cols < self.tension_slice.stop))
+            # the entries in a tension dof's row or column: the only ones _release touches
+            self._tension_entries = np.flatnonzero(in_tension)
+            self._entry_rows, self._entry_cols = (rows[self._tension_entries],
+                                                  cols[self._tension_entries])
             self._tension_diagonal = np.flatnonzero(
                 (rows == cols) & (rows >= self.tension_slice.start)
                 & (rows < self.tension_slice.stop))
-        # the ramp's tangents (the leading block: without the cap) keep one ordering; the free
-        # path's, with the pressure's dense column, fill in badly under it: SuperLU's own there
+        # the ramp's tangents (the leading block: without the cap) keep one ordering, and so do
+        # the free path's (the pressure's column -dV/dy, dense along the inner surface, is
+        # numbered last); the free tangent's pattern: K's without the cap column, plus dV's
+        self._free_pattern()
         self._held_lu = OrderedLU(leading=self.n - 1)
+        self._free_lu = OrderedLU()
 
     def rest_state(self) -> np.ndarray:
         """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
@@ -198,45 +207,53 @@ class HalfMuscle:
         return result
 
     def _assemble(self, y, pressure_MPa, tangent=True):
-        y_ext = np.append(y, 0.0)
-        yr = self.rubber.values(y_ext)
+        y = np.asarray(y, dtype=float)
+        yr = self._rubber_values(y)
         h = mooney_rivlin_incompressible_tangent(yr, self.material) if tangent else None
-        r_rub, K_rub = self.rubber.element_arrays(mooney_rivlin_incompressible(yr, self.material),
-                                                  h)
-        _, g, h = cavity_volume(self.cavity.values(y_ext))
-        dV_cav, K_cav = self.cavity.element_arrays(g, -pressure_MPa * h if tangent else None)
-        dV = self.cavity.vector(dV_cav, self.n)
-        r = self.rubber.vector(r_rub, self.n) - pressure_MPa * dV
+        r, K_rub = self.rubber.arrays(mooney_rivlin_incompressible(yr, self.material), h)
+        _, g, h = cavity_volume(self.cavity.values(y))
+        dV, K_cav = self.cavity.arrays(g, -pressure_MPa * h if tangent else None)
+        r -= pressure_MPa * dV
         blocks = [K_rub, K_cav]
         slack = None
         if self.braid is not None:
-            yb = self.braid.values(y_ext)
+            yb = self.braid.values(y)
             gb, dgb, hgb = self._constraint(yb[..., :3], self.theta0_deg, self.Ro)
             r_br, K_br = self._braid_arrays(gb, dgb, hgb, yb[..., 3], tangent)
             # the constraint rows do not depend on the tension: the gaps of this state
-            gap = self.braid.vector(r_br, self.n)[self.tension_slice]
+            gap = r_br[self.tension_slice]
             slack = self.slack_nodes(y[self.tension_slice], gap)
             if slack.any():  # slack fibres carry nothing: the braid term without their tension
-                y_taut = y_ext.copy()
+                y_taut = y.copy()
                 y_taut[self.tension_slice][slack] = 0.0
                 r_br, K_br = self._braid_arrays(gb, dgb, hgb, self.braid.values(y_taut)[..., 3],
                                                 tangent)
-            r += self.braid.vector(r_br, self.n)
+            r += r_br
             blocks.append(K_br)
         K = self.assembler.matrix(blocks) if tangent else None
         if slack is not None and slack.any():
             self._release(r, K, y, slack)
         return r, K, dV
 
+    def _rubber_values(self, y) -> np.ndarray:
+        """The rubber's variables at ``y`` (read-only), the last state's kept: Newton checks
+        a state (:meth:`inverted`) and then assembles it."""
+        if self._last_rubber is not None and np.array_equal(self._last_rubber[0], y):
+            return self._last_rubber[1]
+        values = self.rubber.values(y)
+        values.flags.writeable = False
+        self._last_rubber = (np.array(y, dtype=float), values)  # a copy: y may change after
+        return values
+
     def _tension_rows(self, density) -> np.ndarray:
         """``int phi_i density dA`` over the outer surface for each tension dof ``i``."""
         grad = np.zeros(density.shape + (4,))
         grad[..., 3] = density
-        return self.braid.vector(self.braid.element_vectors(grad), self.n)[self.tension_slice]
+        return self.braid.residual(grad)[self.tension_slice]
 
     def fibre_stretch_gap(self, y) -> np.ndarray:
         """Mean of ``l_f^2 - 1`` around each tension dof: < 0 where the fibres are slack."""
-        yb = self.braid.values(np.append(y, 0.0))
+        yb = self.braid.values(y)
         g, _, _ = self._constraint(yb[..., :3], self.theta0_deg, self.Ro)
         return self._tension_rows(g) / self._tension_weight_mm2
 
@@ -245,11 +262,11 @@ class HalfMuscle:
         ``int tension g dA``."""
         grad = np.concatenate([tension[..., None] * dg, g[..., None]], axis=-1)
         if not tangent:
-            return self.braid.element_arrays(grad, None)
+            return self.braid.arrays(grad, None)
         hess = np.zeros(grad.shape + (4,))
         hess[..., :3, :3] = tension[..., None, None] * hg
         hess[..., :3, 3] = hess[..., 3, :3] = dg
-        return self.braid.element_arrays(grad, hess)
+        return self.braid.arrays(grad, hess)
 
     def slack_nodes(self, tension, gap) -> np.ndarray:
         r"""Tension dofs whose fibres are slack: True where ``lambda + k g_i <= 0``.
@@ -289,12 +306,13 @@ class HalfMuscle:
             return
         released = np.zeros(self.n, dtype=bool)
         released[dofs] = True
-        K.data[released[self._entry_rows] | released[self._entry_cols]] = 0.0
+        K.data[self._tension_entries[released[self._entry_rows]
+                                     | released[self._entry_cols]]] = 0.0
         K.data[self._tension_diagonal[slack]] = scale
 
     def inverted(self, y) -> str | None:
         """Reason to reject a state at once: an element turned inside out (J <= 0)."""
-        f = self.rubber.values(np.append(y, 0.0))
+        f = self._rubber_values(y)
         if not np.all(np.isfinite(f)):
             return "non-finite displacement"
         if np.any(f[..., 4] <= 0) or np.any(f[..., 0] * f[..., 3] - f[..., 1] * f[..., 2] <= 0):
@@ -313,7 +331,7 @@ class HalfMuscle:
         """
         if self.braid is None:
             return np.nan
-        u_r = self.braid.values(np.append(y, 0.0))[..., 0]
+        u_r = self.braid.values(y)[..., 0]
         l_t = (1.0 + u_r / self.Ro) * (self.Ro / self.Rb)
         sine = float(np.max(l_t)) * np.sin(np.deg2rad(self.theta0_deg))
         return float(np.rad2deg(np.arcsin(min(sine, 1.0))))
@@ -400,7 +418,7 @@ class HalfMuscle:
         """
         def free(x, U):
             r, K, dV = self.assemble(np.append(x[:-1], U), x[-1])
-            return r, sp.hstack([K[:, :-1], -dV[:, None]], format="csr")
+            return r, self._free_tangent(K, dV)
 
         def free_residual(x, U):
             return self.assemble(np.append(x[:-1], U), x[-1], tangent=False)[0]
@@ -414,7 +432,7 @@ class HalfMuscle:
                 return None, None
             x, report = newton(lambda x: free(x, U), start, check=lambda x: check(x, U),
                                residual=lambda x: free_residual(x, U), chord=Chord(),
-                               **self._newton_options())
+                               factorize=self._free_lu, **self._newton_options())
             inflated = x[-1] > 0 and not self.slack_everywhere(np.append(x[:-1], U))
             return (x if report.converged and inflated else None), report
 
@@ -439,7 +457,7 @@ class HalfMuscle:
         [(x, report)] = load_path(free, x0, U_start, [U_mm], check=check,
                                   max_cutbacks=FREE_PATH_CUTBACKS,
                                   label=lambda U: f"cap displacement {U:.3g} mm",
-                                  **self._newton_options())
+                                  factorize=self._free_lu, **self._newton_options())
         report.iterations += spent
         if x is not None and (x[-1] <= 0 or self.slack_everywhere(np.append(x[:-1], U_mm))):
             # a bare tube sucked shorter, not the muscle: say so rather than return it
@@ -458,6 +476,32 @@ class HalfMuscle:
                 report.reason = f"{lock} (the path stopped with: {report.reason})"
             return None, np.nan, report
         return np.append(x[:-1], U_mm), float(x[-1]), report
+
+    def _free_pattern(self) -> None:
+        """The free tangent's CSR pattern from K's (sorted columns, the cap's last): in each row
+        K's entries left of the cap column, then the pressure column where dV has a row."""
+        rows, cols = self.assembler.entries()
+        K_indptr = np.append(np.searchsorted(rows, np.arange(self.n)), rows.size)
+        self._K_inner = np.flatnonzero(cols < self.n - 1)
+        self._dV_rows = np.unique(self.cavity.dofs[self.cavity.dofs >= 0])
+        counts = np.bincount(rows[self._K_inner], minlength=self.n)
+        counts[self._dV_rows] += 1
+        indptr = np.concatenate([[0], np.cumsum(counts)])
+        inner_rows = rows[self._K_inner]
+        inner_slots = indptr[inner_rows] + self._K_inner - K_indptr[inner_rows]
+        dV_slots = indptr[self._dV_rows + 1] - 1
+        self._free_slots = np.concatenate([inner_slots, dV_slots])
+        self._free_indices = np.empty(indptr[-1], dtype=cols.dtype)
+        self._free_indices[self._free_slots] = np.concatenate(
+            [cols[self._K_inner], np.full(self._dV_rows.size, self.n - 1)])
+        self._free_indptr = indptr
+
+    def _free_tangent(self, K, dV) -> sp.csr_matrix:
+        """The free muscle's tangent: ``K`` with its cap column replaced by ``-dV`` (the
+        pressure is the unknown there), gathered into the pattern found once."""
+        data = np.empty(self._free_indices.size)
+        data[self._free_slots] = np.concatenate([K.data[self._K_inner], -dV[self._dV_rows]])
+        return sp.csr_matrix((data, self._free_indices, self._free_indptr), shape=K.shape)
 
     def _locks_before(self, reached, U_mm: float) -> str:
         """Why a free path that stalled short of ``U_mm`` stopped at the braid lock, or "".
@@ -525,7 +569,7 @@ class HalfMuscle:
 
     def cavity_volume(self, y) -> float:
         """Volume of the half muscle's cavity [mm^3] (inside the rubber, up to the cap)."""
-        v, _, _ = cavity_volume(self.cavity.values(np.append(y, 0.0)))
+        v, _, _ = cavity_volume(self.cavity.values(y))
         return float(np.sum(v * self.cavity.w))
 
     def cap_force(self, y, pressure_MPa: float) -> float:

@@ -47,9 +47,9 @@ class OrderedLU:
     matrix is gathered from the matrix's entries by one precomputed index, in whatever sparse
     format it comes, so no slicing or format conversion is repeated either. ``leading=m``
     factorises the leading ``m x m`` block only (the FE tangent without the held cap's row and
-    column). A matrix of another pattern gets its own ordering. The FE model's free path (a
-    pressure unknown beside the cap's equation: not symmetric) is left to ``splu``. Call it
-    like ``splu``:
+    column). A matrix of another pattern gets its own ordering. The FE model's free path (the
+    pressure as the cap's unknown: symmetric but for that column, which is dense along the
+    inner surface and numbered last) uses one too. Call it like ``splu``:
     ``OrderedLU()(A).solve(b)``.
     """
 

@@ -187,6 +187,25 @@ def test_braid_goes_slack_at_the_cap_at_the_threshold_only():
     assert half.tension(y2).min() > 0 and half.compression(y2) == ""
 
 
+def test_free_tangent_is_the_tangent_with_the_pressure_column():
+    # The free muscle's unknowns are the state without the cap displacement, and the pressure:
+    # its tangent is K with the cap column replaced by dr/dP = -dV, gathered into a pattern
+    # found once. At the threshold state (the cap corner's fibres slack: a released row) it
+    # is that matrix entry for entry (the same numbers moved, nothing summed).
+    half = HalfMuscle(35.0, 2.5, 282.0, THETA0, SILASTIC_S, "coarse")
+    y, P, _ = half.free_path(-0.05 * half.H)
+    _, K, dV = half.assemble(y, P)
+    assert (half.tension(y) == 0).any()
+    expected = sp.hstack([K[:, :-1], -dV[:, None]], format="csr")
+    assert abs(half._free_tangent(K, dV) - expected).max() == 0.0
+    # the rubber's variables kept from the check of a state are that state's, also after the
+    # caller changed it in place
+    z = y.copy()
+    assert half.inverted(z) is None
+    z[: half.n // 2] *= 1.001
+    np.testing.assert_array_equal(half._rubber_values(z), half.rubber.values(z))
+
+
 @pytest.mark.slow  # solves the fine mesh
 def test_threshold_search_on_the_graded_fine_mesh_near_the_lock():
     # D0 30, t0 2, eps 30 % at theta0 32.109 deg is a step from the braid lock: P* = 19.13
