@@ -8,8 +8,10 @@ Equation 7: the distance from the fine mesh's force scaled by the largest force 
 muscle's sweep) a posteriori, at those very points:
 
 - the surrogate is the estimate of the reference there: its force ``R`` and its calibrated
-  predictive standard deviation ``s``. Its own bound is ``K s`` (:data:`STD_FACTOR`, K = 3:
-  beyond it lies 0.3 % of a calibrated normal error);
+  predictive standard deviation ``s`` (rescaled on held-out FE muscles so that 1, 2 and 3 std
+  hold 68, 95 and 99.7 % of its errors: the model's metadata ``std_rescale`` records the
+  factor, the muscles and what they measured). Its own bound is ``K s`` (:data:`STD_FACTOR`,
+  K = 3: beyond it lies 0.3 % of the errors);
 - a closed form's bound is ``|F - R| + K s``: its distance from the surrogate plus the
   surrogate's own uncertainty, so it holds wherever the surrogate's does;
 - an FE mesh's bound is its mesh error, the largest |Err%| against the fine mesh in the recorded
