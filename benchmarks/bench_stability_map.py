@@ -1,49 +1,60 @@
-"""Stability map of the axisymmetric FE model: random isometric sweeps over the box, counted by
-outcome per mesh and braid.
+"""Stability map over the practical range: fresh random muscles, every physics model, each sweep
+counted by outcome, every failure with its reason.
 
 Run outside the test suite:
 
-    .venv/bin/python benchmarks/bench_stability_map.py [--sweeps 1260] [--seed 20261201]
-        [--meshes coarse,medium,fine] [--braids bonded,sliding]
-        [--limit fine=60] [--out stability_map.csv]
+    .venv/bin/python benchmarks/bench_stability_map.py [--muscles 60] [--seed N]
+        [--models SPEC,...] [--limit SPEC=n;...]
+        [--out docs/measured/stability_map.json]
 
-The box: eps 0-0.3, t0 1-5 mm, D0 20-60 mm, theta0 20-45 deg, L0 100-600 mm (uniform draws,
-Silastic S), pressures 0-5 bar. Each muscle is drawn once from the seed, so the first N muscles
-are the same on every mesh and braid (``--limit fine=60`` runs the first 60 there only: a
-fine-mesh sweep costs about ten medium ones). A sweep is two solves: the grid 0, 0.5, ..., 5 bar,
-then three pressures just above its threshold P* (P* + 0.0005, 0.002 and 0.008 bar: the widths
-of the band where the held cap inherited the threshold state's corner compression). A sweep is
-converged when every point is; otherwise it is counted under the first failed point's reason,
-with its numbers stripped. A converged sweep whose force falls with pressure anywhere above P*
-(by more than 1e-6 of its largest force) is counted as ``converged, not monotone``: a converged
-force that is wrong. Prints the counts per mesh and braid and writes one row per sweep (with
-the muscle, P*, the reason, the wall time) to ``--out`` with a provenance JSON beside it.
+The muscles are drawn by :func:`mkm.fem.sampling.draw_muscles` from
+:data:`mkm.fem.limits.PRACTICAL_RANGE` (the seed is a fresh one unless given, and recorded:
+``--seed`` draws the same muscles again); each keeps its own length, braid angle and rubber.
+Each model (a registry spec; default every physics variant the study scores but the fine mesh:
+Equation 2 on both diameters, thick-wall, the FE coarse and medium meshes and the sliding braid)
+predicts each muscle's isometric sweep over the range's pressures
+(0 to its top in 0.5 bar steps) and, for a model with a threshold P*, three pressures just above
+it (P* + 0.0005, 0.002 and 0.008 bar: the band where the held cap inherits the threshold
+state's corner compression). A sweep's outcome is the first non-``ok`` status of its points by
+the study's classification (:func:`mkm.study.classify`: not converged, invalid by the model's
+own limit, negative force, force falling with pressure by more than
+:data:`mkm.study.FORCE_NOISE_N`), with the reason the model gave and its numbers stripped; a
+model that refuses the muscle outright is ``refused`` with its message.
+
+Writes ``--out``, a JSON (provenance, the draw's seed and box, the range stated, and under
+``rows`` the counts per model, outcome and reason: the table the docs show), and beside it a
+CSV of one row per muscle and model (the muscle and its eps as a fraction of the braid lock,
+P*, the outcome, the reason, the first failing pressure, the largest force, the wall time);
+prints the counts.
 """
 
 from __future__ import annotations
 
 import argparse
 import collections
-import json
 import re
 import time
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 
-from mkm.core.records import provenance, source_version
-from mkm.fem.fe.model import isometric_sweep
+from mkm.core.records import provenance, source_version, write_json_atomic
+from mkm.fem import ladder
+from mkm.fem.limits import PRACTICAL_RANGE, lock_eps, range_text
+from mkm.fem.sampling import draw_muscles
+from mkm.registry import parse_spec
+from mkm.study import classify
 
-BOX = {"eps": (0.0, 0.3), "t0_mm": (1.0, 5.0), "D0_mm": (20.0, 60.0), "theta0_deg": (20.0, 45.0),
-       "L0_mm": (100.0, 600.0)}
-GRID_BAR = np.linspace(0.0, 5.0, 11)
+
+def default_models() -> str:
+    """Every physics variant the study scores (the registry's), the fine mesh left out: it
+    costs about ten medium sweeps and fails where medium does (the mesh study)."""
+    return ",".join(v.spec for entry in ladder.MODELS.entries() for v in entry.study
+                    if "mesh=fine" not in v.spec)
+
+STEP_BAR = 0.5
 ABOVE_THRESHOLD_BAR = np.array([0.0005, 0.002, 0.008])
-
-
-def draw_muscles(n: int, seed: int) -> list[dict[str, float]]:
-    """``n`` muscles drawn uniformly from :data:`BOX` (the same first muscles for any ``n``)."""
-    rng = np.random.default_rng(seed)
-    return [{k: float(rng.uniform(lo, hi)) for k, (lo, hi) in BOX.items()} for _ in range(n)]
 
 
 def reason_class(failure: str) -> str:
@@ -51,65 +62,94 @@ def reason_class(failure: str) -> str:
     return re.sub(r"-?\d+(\.\d+)?(e-?\d+)?", "#", failure)
 
 
-def run_sweep(muscle: dict, mesh: str, braid: str) -> dict:
+def grid_bar() -> np.ndarray:
+    low, high = PRACTICAL_RANGE.pressure_bar
+    return np.arange(low, high + STEP_BAR / 2, STEP_BAR)
+
+
+def run_sweep(spec: str, muscle) -> dict:
+    """One muscle's sweep by one model: its outcome, reason and cost."""
     start = time.perf_counter()
-    args = (muscle["D0_mm"], muscle["t0_mm"], muscle["eps"], muscle["theta0_deg"],
-            muscle["L0_mm"], mesh)
-    grid = isometric_sweep(GRID_BAR, *args, braid=braid)
-    threshold = float(grid["threshold_pressure_bar"][0])
-    P, parts = GRID_BAR, [grid]
-    if np.isfinite(threshold) and threshold > 0:
-        band = threshold + ABOVE_THRESHOLD_BAR
-        parts.append(isometric_sweep(band, *args, braid=braid))
-        P = np.concatenate([GRID_BAR, band])
-    force = np.concatenate([p["force_N"] for p in parts])
-    failure = np.concatenate([p["failure"] for p in parts])
-    converged = np.concatenate([p["converged"] for p in parts])
-    if converged.all():
-        order = np.argsort(P)
-        rising = np.diff(force[order])
-        monotone = bool(np.all(rising >= -1e-6 * max(np.abs(force).max(), 1.0)))
-        outcome = "converged" if monotone else "converged, not monotone"
-    else:
-        outcome = reason_class(str(failure[np.flatnonzero(~converged)[0]]))
-    return {**muscle, "mesh": mesh, "braid": braid, "threshold_pressure_bar": threshold,
-            "outcome": outcome, "seconds": time.perf_counter() - start}
+    row = {"threshold_pressure_bar": np.nan, "outcome": "ok", "reason": "",
+           "first_failing_pressure_bar": np.nan, "largest_force_N": np.nan}
+    try:
+        model = parse_spec(spec).build(muscle=muscle)
+        parts = [model.predict_muscle(muscle, grid_bar())]
+        threshold = float(np.ravel(parts[0].extras.get("threshold_pressure_bar", [np.nan]))[0])
+        if np.isfinite(threshold) and 0 < threshold < PRACTICAL_RANGE.pressure_bar[1]:
+            parts.append(model.predict_muscle(muscle, threshold + ABOVE_THRESHOLD_BAR))
+    except ValueError as exc:  # the model refuses the muscle: its own limit, stated
+        return {**row, "outcome": "refused", "reason": str(exc),
+                "seconds": time.perf_counter() - start}
+    row["threshold_pressure_bar"] = threshold
+    P = np.concatenate([np.ravel(p.pressure_bar) for p in parts])
+    force = np.concatenate([np.ravel(p.force_N) for p in parts])
+    status = np.concatenate([classify(p) for p in parts])
+    messages = np.concatenate([np.ravel(p.extras.get("failure", np.full(p.force_N.size, "")))
+                               for p in parts]).astype(str)
+    row["largest_force_N"] = float(np.nanmax(force)) if np.isfinite(force).any() else np.nan
+    bad = np.flatnonzero(status != "ok")
+    if bad.size:
+        first = bad[np.argmin(P[bad])]
+        row.update(outcome=str(status[first]), reason=reason_class(messages[first]),
+                   first_failing_pressure_bar=float(P[first]))
+    return {**row, "seconds": time.perf_counter() - start}
+
+
+def counts_table(frame: pd.DataFrame) -> pd.DataFrame:
+    """Per model: sweeps, and how many per outcome and reason."""
+    rows = []
+    for model, g in frame.groupby("model", sort=False):
+        reasons = g["reason"].fillna("")
+        outcomes = collections.Counter(zip(g["outcome"], reasons, strict=True))
+        for (outcome, reason), count in outcomes.most_common():
+            these = g[(g["outcome"] == outcome) & (reasons == reason)]
+            rows.append({"model": model, "sweeps": len(g), "outcome": outcome,
+                         "count": count, "reason": reason,
+                         # where the failures lie: how close to the braid lock
+                         "smallest eps/lock": (float(f"{these['eps_per_lock'].min():.3g}")
+                                               if outcome != "ok" else None),
+                         "median seconds per sweep": float(f"{g['seconds'].median():.3g}")})
+    return pd.DataFrame(rows)
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--sweeps", type=int, default=1260)
-    parser.add_argument("--seed", type=int, default=20261201)
-    parser.add_argument("--meshes", default="coarse,medium,fine")
-    parser.add_argument("--braids", default="bonded,sliding")
-    parser.add_argument("--limit", default="", help="mesh=n,...: fewer sweeps on a mesh")
-    parser.add_argument("--out", default="stability_map.csv")
+    parser.add_argument("--muscles", type=int, default=60)
+    parser.add_argument("--seed", type=int, default=None,
+                        help="draw these muscles again (default: a fresh seed, recorded)")
+    parser.add_argument("--models", default=default_models(),
+                        help="registry specs, comma separated")
+    parser.add_argument("--limit", default="", help="spec=n;...: the first n muscles only")
+    parser.add_argument("--out", default="stability_map.json")
     args = parser.parse_args()
-    limits = {k: int(v) for k, v in (item.split("=") for item in args.limit.split(",") if item)}
-    muscles = draw_muscles(args.sweeps, args.seed)
+    limits = {k: int(v) for k, v in (item.rsplit("=", 1) for item in args.limit.split(";")
+                                     if item)}
+    draw = draw_muscles(args.muscles, args.seed)
     rows = []
-    for mesh in args.meshes.split(","):
-        for braid in args.braids.split(","):
-            for muscle in muscles[:limits.get(mesh, args.sweeps)]:
-                rows.append(run_sweep(muscle, mesh, braid))
-            done = [r for r in rows if r["mesh"] == mesh and r["braid"] == braid]
-            counts = collections.Counter(r["outcome"] for r in done)
-            seconds = np.median([r["seconds"] for r in done])
-            print(f"{mesh} {braid}: {len(done)} sweeps, median {seconds:.2f} s per sweep")
-            for outcome, count in counts.most_common():
-                print(f"  {count:5d}  {outcome}")
+    for spec in args.models.split(","):
+        for i, muscle in enumerate(draw.muscles[:limits.get(spec, args.muscles)]):
+            rows.append({"muscle": i, **{k: v for k, v in muscle.record().items() if k != "id"},
+                         "eps_per_lock": muscle.eps / float(lock_eps(muscle.theta0_deg)),
+                         "model": spec, **run_sweep(spec, muscle)})
+        done = pd.DataFrame([r for r in rows if r["model"] == spec])
+        print(f"{spec}: {len(done)} sweeps, median {done['seconds'].median():.3f} s per sweep")
+        for (outcome, reason), n in collections.Counter(
+                zip(done["outcome"], done["reason"], strict=True)).most_common():
+            print(f"  {n:5d}  {outcome}{': ' + reason if reason else ''}")
+    frame = pd.DataFrame(rows)
     out = Path(args.out)
-    columns = list(rows[0])
-    with open(out, "w", encoding="utf-8", newline="\n") as f:
-        f.write(",".join(columns) + "\n")
-        for r in rows:
-            f.write(",".join(json.dumps(r[c]) if isinstance(r[c], str) else f"{r[c]:.6g}"
-                             for c in columns) + "\n")
+    out.parent.mkdir(parents=True, exist_ok=True)
+    frame.to_csv(out.with_suffix(".csv"), index=False, float_format="%.6g",
+                 lineterminator="\n")
     info = {**provenance(), "code_version": source_version("mkm.fem.fe.model"),
-            "seed": args.seed, "sweeps": args.sweeps, "limits": limits, "box": BOX,
-            "grid_bar": GRID_BAR.tolist(), "above_threshold_bar": ABOVE_THRESHOLD_BAR.tolist()}
-    out.with_suffix(".json").write_text(json.dumps(info, indent=1), encoding="utf-8")
-    print(f"wrote {out}")
+            "seed": draw.seed, "draw": draw.record(), "range": range_text(),
+            "models": args.models.split(","),
+            "limits": limits, "grid_bar": grid_bar().tolist(),
+            "above_threshold_bar": ABOVE_THRESHOLD_BAR.tolist(),
+            "rows": counts_table(frame).to_dict(orient="records")}
+    write_json_atomic(out, info)
+    print(f"wrote {out} (seed {draw.seed})")
 
 
 if __name__ == "__main__":

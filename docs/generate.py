@@ -254,6 +254,13 @@ def calibration_table() -> None:
                         "mkm fem calibrate --model SPEC --update-shipped"))
 
 
+def practical_range() -> None:
+    """The practical range as the code states it (:func:`mkm.fem.limits.range_text`)."""
+    from mkm.fem.limits import range_text
+
+    write(OUT / "practical_range.md", f"{range_text()[0].upper()}{range_text()[1:]}.\n")
+
+
 def dataset_table() -> None:
     """What each shipped FE dataset is, from its JSON sidecar."""
     from mkm.surrogate.training_data import DEFAULT_DATASET
@@ -293,6 +300,7 @@ BENCHMARKS = {
     "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 1 --seed 0 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
+    "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --out {out}",
 }
 
 
@@ -336,7 +344,8 @@ def _benchmark_frame(path: Path) -> tuple[pd.DataFrame, str]:
 
 
 def _measured_on(record: dict) -> str:
-    return f"{record.get('date_utc', '?')}, {record.get('machine', '?')}, " + ", ".join(
+    seed = f", seed {record['seed']}" if "seed" in record else ""  # fresh draws, recorded
+    return f"{record.get('date_utc', '?')}, {record.get('machine', '?')}{seed}, " + ", ".join(
         f"{k} {v}" for k, v in record.get("versions", {}).items())
 
 
@@ -431,6 +440,7 @@ def main() -> None:
     api_pages()
     study_tables()
     calibration_table()
+    practical_range()
     dataset_table()
     benchmark_tables()
     threshold_model_tables()

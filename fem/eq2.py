@@ -11,11 +11,9 @@ import numpy as np
 
 from mkm.fem.calibration import CalibratedTheta0, Calibration, calibrated
 from mkm.fem.interface import Domain, ForceModel
+from mkm.fem.limits import LOCKING_ANGLE_DEG, lock_eps
 
 BAR_TO_MPA = 0.1  # 1 bar = 0.1 MPa = 0.1 N/mm^2, so N/mm^2 * mm^2 = N
-#: The braid's locking angle, arccos(1/sqrt(3)) = 54.7356 deg from the axis: at it the sleeve
-#: encloses its largest volume and the muscle can shorten no further.
-LOCKING_ANGLE_DEG = float(np.rad2deg(np.arccos(1.0 / np.sqrt(3.0))))
 
 
 def check_theta0(theta0_deg: float) -> float:
@@ -72,9 +70,9 @@ def chou_hannaford_eps_max(theta0_deg):
     """Largest shortening ratio at which Equation 2 is non-negative [fraction].
 
     ``eps_max = 1 - 1 / (sqrt(3) cos theta0)``: the braid reaches its locking angle (54.7 deg)
-    there, and beyond it the formula turns negative.
+    there, and beyond it the formula turns negative (:func:`mkm.fem.limits.lock_eps`).
     """
-    return 1.0 - 1.0 / (np.sqrt(3.0) * np.cos(np.deg2rad(theta0_deg)))
+    return lock_eps(theta0_deg)
 
 
 @dataclass(frozen=True)

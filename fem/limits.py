@@ -1,17 +1,25 @@
-"""The one set of limits of a muscle's numbers, and the one check of them.
+"""The one set of limits of a muscle's numbers, the one check of them, and the practical range.
 
 :data:`LIMITS` are the bounds beyond which a value is a typo, not a muscle (``--D0 1e9`` would
 give 3e17 N; ``D0 1e-300`` a zero force). :func:`outside` is the check, for a number or an array
 of them; the force-model interface (:func:`mkm.fem.interface.validate_inputs`), reference tables
 (:mod:`mkm.fem.calibration`), tolerances and the muscle type (:class:`mkm.fem.muscle.Muscle`:
 the bench configuration, the run folder, design) all ask it.
+
+:data:`PRACTICAL_RANGE` is much narrower: every braided muscle a lab buys or makes (Festo-class
+10-40 mm muscles at 6-8 bar as well as the paper's silicone tubes). Every physics model accepts
+it, the stability map covers it and the default surrogate is trained over it;
+:func:`range_text` is how it is stated to a user, and :func:`mkm.fem.sampling.draw_muscles`
+draws fresh muscles from it.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
-from typing import Any
+from dataclasses import dataclass
+from typing import Any, ClassVar
 
 #: name -> (low, high, what the value is, unit); both bounds included except :data:`OPEN_ABOVE`
 LIMITS: dict[str, tuple[float, float, str, str]] = {
@@ -76,3 +84,151 @@ def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
                          "64 letters, digits or . _ + - (it names the run folder and labels "
                          "figures)")
     return value
+
+
+#: The braid's locking angle, arccos(1/sqrt(3)) = 54.7356 deg from the axis: at it the sleeve
+#: encloses its largest volume and the muscle can shorten no further.
+LOCKING_ANGLE_DEG = math.degrees(math.acos(1.0 / math.sqrt(3.0)))
+
+
+def lock_eps(theta0_deg):
+    """The shortening at which a braid of angle ``theta0_deg`` [deg] at rest locks [fraction]:
+    ``1 - 1 / (sqrt(3) cos theta0)`` (the braid angle reaches :data:`LOCKING_ANGLE_DEG`); a
+    number or an array."""
+    if isinstance(theta0_deg, int | float):  # quick commands state the range without numpy
+        cos = math.cos(math.radians(theta0_deg))
+    else:
+        import numpy as np
+
+        cos = np.cos(np.deg2rad(theta0_deg))
+    return 1.0 - 1.0 / (math.sqrt(3.0) * cos)
+
+
+@dataclass(frozen=True)
+class PracticalRange:
+    """A box of muscles: ``(low, high)`` per named quantity (both included) and the coupled
+    constraints between them.
+
+    Attributes
+    ----------
+    D0_mm, t0_mm, L0_mm : (float, float)
+        Inner diameter, wall thickness and length at rest of the tube [mm].
+    pressure_bar : (float, float)
+        Gauge pressure [bar].
+    theta0_deg : (float, float)
+        Braid angle at rest [deg].
+    C10_MPa : (float, float)
+        Mooney-Rivlin C10 of the rubber [MPa].
+    C01_per_C10 : (float, float)
+        The rubber's C01 / C10 (a ratio).
+    eps_per_lock : (float, float)
+        The shortening ratio as a fraction of the braid lock's, ``eps / lock_eps(theta0)``.
+    t0_per_D0_max : float
+        The thickest wall: ``t0_mm <= t0_per_D0_max * D0_mm``.
+    L0_per_D0_min : float
+        The shortest muscle: ``L0_mm >= L0_per_D0_min * D0_mm``.
+    """
+
+    D0_mm: tuple[float, float] = (5.0, 60.0)
+    t0_mm: tuple[float, float] = (0.5, 6.0)
+    L0_mm: tuple[float, float] = (50.0, 1000.0)
+    pressure_bar: tuple[float, float] = (0.0, 8.0)
+    theta0_deg: tuple[float, float] = (15.0, 40.0)
+    C10_MPa: tuple[float, float] = (0.03, 0.6)
+    C01_per_C10: tuple[float, float] = (0.0, 1.5)
+    eps_per_lock: tuple[float, float] = (0.0, 1.0)
+    t0_per_D0_max: float = 0.3
+    L0_per_D0_min: float = 3.0
+
+    #: the quantities held as (low, high), in the order they are stated
+    INTERVALS: ClassVar[tuple[str, ...]] = ("D0_mm", "t0_mm", "L0_mm", "pressure_bar",
+                                            "theta0_deg", "C10_MPa", "C01_per_C10",
+                                            "eps_per_lock")
+
+    def __post_init__(self):
+        for name in self.INTERVALS:
+            low, high = (float(v) for v in getattr(self, name))
+            if not low <= high:
+                raise ValueError(f"{name}=({low:g}, {high:g}) is invalid: expected low <= high")
+            if name in LIMITS and (outside(name, low) or outside(name, high)):
+                raise ValueError(f"{name}=({low:g}, {high:g}) is invalid: {limit_text(name)}")
+            object.__setattr__(self, name, (low, high))
+        if not (0.0 <= self.eps_per_lock[0] and self.eps_per_lock[1] <= 1.0):
+            raise ValueError(f"eps_per_lock={self.eps_per_lock} is invalid: expected within "
+                             "[0, 1] (beyond 1 the braid is past its lock)")
+        if not 0.0 < self.t0_per_D0_max < 0.5:
+            raise ValueError(f"t0_per_D0_max={self.t0_per_D0_max:g} is invalid: expected in "
+                             "(0, 0.5) (a wall thinner than the tube's radius)")
+
+    def hull(self) -> dict[str, tuple[float, float]]:
+        """The rectangular box around the range, per muscle number and pressure (the coupled
+        constraints left out): ``eps`` up to the lock at the smallest angle, ``C01_MPa`` up to
+        the largest ratio times the largest C10."""
+        out = {name: getattr(self, name) for name in
+               ("pressure_bar", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "C10_MPa")}
+        out["t0_mm"] = (self.t0_mm[0], min(self.t0_mm[1], self.t0_per_D0_max * self.D0_mm[1]))
+        out["eps"] = (self.eps_per_lock[0] * float(lock_eps(self.theta0_deg[1])),
+                      self.eps_per_lock[1] * float(lock_eps(self.theta0_deg[0])))
+        out["C01_MPa"] = (self.C01_per_C10[0] * self.C10_MPa[0],
+                          self.C01_per_C10[1] * self.C10_MPa[1])
+        return out
+
+    def violations(self, **values) -> list[str]:
+        """What of one muscle (``D0_mm=..., t0_mm=..., eps=..., C01_MPa=...``: any of the
+        quantities, by their muscle names) lies outside the range, one phrase each; empty
+        inside. ``eps`` is checked against the lock when ``theta0_deg`` is given, ``C01_MPa``
+        when ``C10_MPa`` is."""
+        out = []
+        for name in ("D0_mm", "t0_mm", "L0_mm", "pressure_bar", "theta0_deg", "C10_MPa"):
+            if values.get(name) is not None:
+                low, high = getattr(self, name)
+                if not low <= float(values[name]) <= high:
+                    out.append(f"{name}={float(values[name]):g} outside [{low:g}, {high:g}]")
+        D0, t0, L0 = (values.get(k) for k in ("D0_mm", "t0_mm", "L0_mm"))
+        if D0 is not None and t0 is not None and t0 > self.t0_per_D0_max * D0:
+            out.append(f"t0_mm={t0:g} above {self.t0_per_D0_max:g} D0_mm = "
+                       f"{self.t0_per_D0_max * D0:g}")
+        if D0 is not None and L0 is not None and L0 < self.L0_per_D0_min * D0:
+            out.append(f"L0_mm={L0:g} below {self.L0_per_D0_min:g} D0_mm = "
+                       f"{self.L0_per_D0_min * D0:g}")
+        C10, C01 = values.get("C10_MPa"), values.get("C01_MPa")
+        if C10 is not None and C01 is not None:
+            low, high = self.C01_per_C10
+            if not low * C10 <= C01 <= high * C10:
+                out.append(f"C01_MPa={C01:g} outside [{low:g}, {high:g}] x C10_MPa")
+        theta0, eps = values.get("theta0_deg"), values.get("eps")
+        if theta0 is not None and eps is not None:
+            lock = float(lock_eps(theta0))
+            low, high = (f * lock for f in self.eps_per_lock)
+            if not low <= eps <= high:
+                out.append(f"eps={eps:g} outside [{low:.4g}, {high:.4g}] (the braid lock at "
+                           f"theta0_deg={theta0:g} is {lock:.4g})")
+        return out
+
+    def replace(self, **changes) -> PracticalRange:
+        """A copy with some quantities changed (checked again)."""
+        return dataclasses.replace(self, **changes)
+
+
+#: Every braided muscle a lab buys or makes: see :func:`range_text`.
+PRACTICAL_RANGE = PracticalRange()
+
+
+def range_text(box: PracticalRange = PRACTICAL_RANGE) -> str:
+    """The range stated for a user, numbers taken from ``box``."""
+    def span(name: str) -> str:
+        low, high = getattr(box, name)
+        return f"{low:g}-{high:g}"
+
+    theta_low, theta_high = box.theta0_deg
+    lock_high, lock_low = (float(lock_eps(a)) for a in (theta_low, theta_high))
+    if box.eps_per_lock == (0.0, 1.0):
+        eps = "eps from 0 to the braid lock"
+    else:
+        eps = f"eps from {box.eps_per_lock[0]:g} to {box.eps_per_lock[1]:g} of the braid lock"
+    return (f"inner diameter D0 {span('D0_mm')} mm, wall t0 {span('t0_mm')} mm with t0 <= "
+            f"{box.t0_per_D0_max:g} D0, length L0 {span('L0_mm')} mm with L0 >= "
+            f"{box.L0_per_D0_min:g} D0, pressure {span('pressure_bar')} bar, braid angle "
+            f"theta0 {span('theta0_deg')} deg, rubber C10 {span('C10_MPa')} MPa with C01/C10 "
+            f"{span('C01_per_C10')}, {eps} (eps_max = 1 - 1/(sqrt(3) cos theta0): "
+            f"{lock_high:.3f} at {theta_low:g} deg, {lock_low:.3f} at {theta_high:g} deg)")

@@ -17,6 +17,7 @@ with ``=`` and no ``:`` is one more parameter of the spec before it.
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -33,6 +34,7 @@ from mkm.fem.ladder import (
     register,
     unregister,
 )
+from mkm.fem.limits import range_text
 from mkm.surrogate import kinds
 
 if TYPE_CHECKING:  # annotations only: `mkm models` loads no model code
@@ -214,4 +216,7 @@ def describe() -> str:
     lines.append("")
     lines.append("spec syntax: NAME[:key=value[,key=value]], e.g. axisym:mesh=coarse, "
                  "eq2:diameter=braid, surrogate:kind=gp, surrogate:path=DIR")
+    lines.append("")
+    lines += textwrap.wrap("practical range (every physics model accepts it; the FE converges "
+                           "over it or names its reason): " + range_text(), 100)
     return "\n".join(lines)

@@ -8,8 +8,9 @@ its error is the paper's Equation 7 against the reference, the finest FE mesh, o
 where the reference converged; its cost is seconds per predicted force, timed in this run on
 this machine. The Pareto front is the set of predictors that no other beats in both.
 
-Stability: each method over a grid of pressure and eps for the smallest and the largest muscle
-of the paper's grid, classified per point (valid, invalid by the model's own limit, not
+Stability: each method over a grid of pressure and eps for the smallest and the largest tube of
+the practical range (:data:`mkm.fem.limits.PRACTICAL_RANGE`), and the largest with the thinnest
+wall, classified per point (valid, invalid by the model's own limit, not
 converged, outside the training domain, negative, falling with pressure).
 
 The point-by-point errors go to ``mkm/data/model_errors.csv``, the table the ``auto`` model reads.
@@ -34,6 +35,7 @@ from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
 from mkm.core.records import provenance, write_atomic, write_json_atomic
 from mkm.fem import ladder
 from mkm.fem.interface import ForceModel, Prediction
+from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.paper import equation7_err_pct
 from mkm.figures import speed_accuracy_figure, stability_figure
 from mkm.html import esc, figure_html, html_page, provenance_details, save_figure, table_html
@@ -56,9 +58,16 @@ STUDY_MUSCLES = (
         (d, t, e) for d in (32.0, 48.0) for t in (2.2, 3.8) for e in (0.02, 0.18))),
     ("P12", 30.0, 3.0, 0.122, "prototype"),
 )
-STABILITY_MUSCLES = (("smallest: D0 30 mm, t0 2 mm", 30.0, 2.0),
-                     ("largest: D0 50 mm, t0 4 mm", 50.0, 4.0))
-STABILITY_PRESSURES = tuple(np.round(np.arange(0.0, 4.0001, 0.25), 2))
+# The stability maps span the practical range (mkm.fem.limits): its smallest and its largest
+# tube, and the largest with the thinnest wall, up to its top pressure.
+_D0, _t0 = PRACTICAL_RANGE.D0_mm, PRACTICAL_RANGE.t0_mm
+_t0_largest = min(_t0[1], PRACTICAL_RANGE.t0_per_D0_max * _D0[1])
+STABILITY_MUSCLES = (
+    (f"smallest: D0 {_D0[0]:g} mm, t0 {_t0[0]:g} mm", _D0[0], _t0[0]),
+    (f"largest: D0 {_D0[1]:g} mm, t0 {_t0_largest:g} mm", _D0[1], _t0_largest),
+    (f"largest, thinnest wall: D0 {_D0[1]:g} mm, t0 {_t0[0]:g} mm", _D0[1], _t0[0]))
+STABILITY_PRESSURES = tuple(np.round(np.arange(0.0, PRACTICAL_RANGE.pressure_bar[1] + 1e-4,
+                                               0.5), 2))
 STABILITY_EPS = tuple(np.round(np.arange(0.0, 0.3501, 0.05), 3))
 # whether run_study shows progress, seen by the predictor factories it calls
 _SHOW_PROGRESS: ContextVar[bool] = ContextVar("mkm_study_progress", default=False)

@@ -139,6 +139,8 @@ def _design(args) -> int:
                         calibration=args.calibration)
     write_design(result, Path(args.out or default_out("design")))
     summary_line("design", result.summary())
+    for note in result.notes():
+        summary_line("design", note)
     print(result.table_text())
     print(result.files["html"])
     return 0 if result.chosen is not None else 1

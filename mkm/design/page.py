@@ -185,6 +185,7 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
         "(axisym, " + esc(result.mesh) + " mesh) verified the best designs: a design meets "
         "the requirements only when the FE says so, and every margin below is the FE's.</p>",
         status,
+        *(f'<p class="note">{esc(note)}</p>' for note in result.notes()),
         table_html(reqs, "Requirements: the force the muscle must develop at least, held at "
                    "eps, at that pressure."),
         kv_html({"constraints": ", ".join(_constraint_text(k, v)

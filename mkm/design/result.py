@@ -10,12 +10,14 @@ import pandas as pd
 from mkm.design.robust import DEFAULT_PROBABILITY, check_designs, check_probability
 from mkm.design.search import (
     AXIS_VALUES,
+    BOX_NAMES,
     COARSE_STEPS,
     D0_STEP_MM,
     SEEDS,
     T0_STEP_MM,
     Search,
     box_edges,
+    box_text,
     geometry_text,
     pick,
     search,
@@ -65,7 +67,7 @@ class DesignResult:
         s = self.search
         cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
         ok = int(self.designs["meets_all"].sum())
-        text = "".join(f"{note}; " for note in (s.fe_search, s.box_note()) if note) + (
+        text = (f"{s.fe_search}; " if s.fe_search else "") + (
                 f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
                 f"{int(s.candidates['feasible'].sum())} feasible by the "
                 f"{'FE search' if s.fe_search else 'surrogate'}; "
@@ -75,13 +77,24 @@ class DesignResult:
         best = self.chosen
         if best is None:
             return text + ": none confirmed, see the table's FE margins"
-        text += (f"; chosen: {geometry_text(best)}, outer diameter "
-                 f"{best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar")
-        if edges := box_edges(best, s.constraints):
-            text += (f"; it sits on the edge of the search box ({', '.join(edges)}): a larger "
-                     "box might hold a better design")
-        return text
+        return text + (f"; chosen: {geometry_text(best)}, outer diameter "
+                       f"{best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar")
 
+    def notes(self) -> list[str]:
+        """What a user must know of the box searched, one line each: the box when it is not
+        the surrogate's (:meth:`Search.box_note`), and the chosen design on an end of a
+        searched range (:func:`~mkm.design.search.box_edges`), where a larger box might hold
+        a better design. Empty when neither."""
+        s = self.search
+        notes = [s.box_note()] if s.box_note() else []
+        best = self.chosen
+        if best is not None and (edges := box_edges(best, s.constraints)):
+            ranges = {k: v for k, v in s.constraints.items()
+                      if k in BOX_NAMES and v[1] > v[0]}
+            notes.append(f"the chosen design sits on the edge of the search box "
+                         f"{box_text(ranges)}: {', '.join(edges)}; a larger box might hold a "
+                         "better design")
+        return notes
 
     def table_text(self) -> str:
         """The verified designs, best first, as a plain text table for the terminal."""
@@ -232,6 +245,8 @@ def design_record(result: DesignResult) -> dict:
             # hold a better one); empty when none or nothing is confirmed
             "chosen_on_box_edge": ([] if result.chosen is None
                                    else box_edges(result.chosen, s.constraints)),
+            # the lines the command prints besides its summary (the box, the edge)
+            "notes": result.notes(),
             # the chosen design as the muscle every other command reads (null: none confirmed)
             "chosen_muscle": chosen.record() if (chosen := result.chosen_muscle(
                 s.calibration)) else None,

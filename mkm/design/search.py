@@ -22,6 +22,7 @@ from mkm.design.spec import (
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
+from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import outer_diameter_mm
 from mkm.registry import parse_spec
@@ -43,11 +44,12 @@ STD_FACTOR, RECORDED_ERROR_FACTOR, FALLBACK_RELATIVE_MARGIN = 3.0, 2.0, 0.05
 #: a box beyond its geometry or muscle parameters), the FE model itself searches: on its coarse
 #: mesh (a few tenths of a second a sweep), a coarser grid, no refinement, and the requirements'
 #: margin of :data:`FALLBACK_RELATIVE_MARGIN`; the verification then solves the converged mesh.
-FE_SEARCH_BOX = {"D0_mm": (10.0, 60.0), "t0_mm": (1.0, 5.0)}
+#: Its box, and the largest pressure it designs for, are the practical range's.
+FE_SEARCH_BOX = {"D0_mm": PRACTICAL_RANGE.D0_mm, "t0_mm": PRACTICAL_RANGE.t0_mm}
 #: The geometry the search box spans (the surrogate's training box spans them too)
 BOX_KEYS = ("D0_mm", "t0_mm")
 BOX_NAMES = {"D0_mm": "D0", "t0_mm": "t0", "L0_mm": "L0", "theta0_deg": "theta0"}
-FE_SEARCH_MAX_PRESSURE_BAR = 6.0
+FE_SEARCH_MAX_PRESSURE_BAR = PRACTICAL_RANGE.pressure_bar[1]
 FE_SEARCH_STEPS = (2.0, 0.5)
 FE_SEARCH_MESH = "coarse"
 
@@ -114,8 +116,8 @@ class Search:
     calibration: Calibration | None = None
     #: the surrogate's training box of the geometry, ``{"D0_mm": [low, high], "t0_mm": ...}``
     surrogate_box: dict = field(default_factory=dict)
-    #: what set each searched range of :data:`BOX_KEYS`: "as constrained", "the FE search's
-    #: default" or "the surrogate's"
+    #: what set each searched range of :data:`BOX_KEYS`: "as constrained", "the practical
+    #: range" (the FE search's default) or "the surrogate's"
     box_origin: dict = field(default_factory=dict)
     #: the radial gap between tube and braid of the muscles as built [mm] (0: none)
     gap_mm: float = 0.0
@@ -254,7 +256,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     surrogate_box = {"D0_mm": list(domain.D0_mm), "t0_mm": list(domain.t0_mm)}
     default_box = FE_SEARCH_BOX if outside else surrogate_box
     box_origin = {k: "as constrained" if getattr(constraints, k) else
-                  "the FE search's default" if outside else "the surrogate's" for k in BOX_KEYS}
+                  "the practical range" if outside else "the surrogate's" for k in BOX_KEYS}
     box = {"D0_mm": constraints.D0_mm or default_box["D0_mm"],
            "t0_mm": constraints.t0_mm or default_box["t0_mm"],
            "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
@@ -422,12 +424,12 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool,
             low, high = box[key]
             if low < flo or high > fhi:
                 problems.append(f"{key}={span_text(low, high)} reaches outside the FE search's "
-                                f"box {flo:g}:{fhi:g}")
+                                f"box {flo:g}:{fhi:g} (the practical range)")
         for k, req in enumerate(requirements, start=1):
             if req.pressure_bar > FE_SEARCH_MAX_PRESSURE_BAR:
                 problems.append(f"requirement {k} ({req.label}) at {req.pressure_bar:g} bar is "
-                                f"above {FE_SEARCH_MAX_PRESSURE_BAR:g} bar, the most a "
-                                "pneumatic muscle's design is searched for")
+                                f"above {FE_SEARCH_MAX_PRESSURE_BAR:g} bar, the top of the "
+                                "practical range a design is searched in")
     if box["t0_mm"][0] >= box["D0_mm"][1] / 2:
         problems.append(f"t0_mm from {box['t0_mm'][0]:g} mm conflicts with D0_mm up to "
                         f"{box['D0_mm'][1]:g} mm: expected t0 < D0/2")

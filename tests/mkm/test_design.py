@@ -25,6 +25,7 @@ from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
 from mkm.fem.ladder import make_model
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, outer_diameter_mm
+from mkm.html import esc
 from mkm.registry import entry
 
 MESH = "coarse"
@@ -130,11 +131,12 @@ def test_conflicting_constraints_are_named():
     with pytest.raises(ValueError, match="at 2 bar conflicts with the largest working pressure "
                                          "1.5 bar"):
         search(["100N@2bar,eps=0.1"], {"max_pressure_bar": 1.5})
-    # beyond the surrogate's box the FE searches, up to its own box and 6 bar
-    with pytest.raises(ValueError, match=r"D0_mm=70 reaches outside the FE search's box 10:60"):
+    # beyond the surrogate's box the FE searches, up to the practical range: 5-60 mm, 8 bar
+    with pytest.raises(ValueError, match=r"D0_mm=70 reaches outside the FE search's box 5:60 "
+                                         r"\(the practical range\)"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": 70})
-    with pytest.raises(ValueError, match=r"at 7 bar is above 6 bar"):
-        search(["100N@7bar,eps=0.1"])
+    with pytest.raises(ValueError, match=r"at 9 bar is above 8 bar, the top of the practical"):
+        search(["100N@9bar,eps=0.1"])
     with pytest.raises(ValueError, match="low 50 is above high 40"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": "50:40"})
 
@@ -267,12 +269,15 @@ def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run
     # it says which box it searched, and that it reaches beyond the surrogate's
     note = ("searched the box D0 28:34 mm x t0 1.5:3 mm (as constrained), beyond the "
             "surrogate's D0 30:50 mm x t0 2:4 mm")
-    assert note in err and record["search"]["box_note"] == note
+    assert f"mkm design: {note}\n" in err and record["search"]["box_note"] == note
+    assert f'<p class="note">{esc(note)}</p>' in (tmp_path / "design.html").read_text(
+        encoding="utf-8")
     assert record["search"]["box"] == {"D0_mm": [28.0, 34.0], "t0_mm": [1.5, 3.0]}
     # and whether the chosen design sits on an end of a searched range
     ends = [best["D0_mm"] in (28.0, 34.0), best["t0_mm"] in (1.5, 3.0)]
     assert len(record["chosen_on_box_edge"]) == sum(ends)
-    assert ("sits on the edge of the search box" in err) == any(ends)
+    assert ("mkm design: the chosen design sits on the edge of the search box D0 28:34 mm x "
+            "t0 1.5:3 mm: " in err) == any(ends)
 
 
 def test_the_search_box_is_named_where_it_is_not_the_surrogates():
@@ -303,8 +308,11 @@ def test_a_design_on_the_edge_of_the_search_box_is_named():
     fe = make_model("axisym", mesh=MESH, muscle=muscle)
     assert float(fe.predict(2.0, muscle.D0_mm, muscle.t0_mm, 0.1).force_N) == pytest.approx(
         best["r1_fe_N"], rel=1e-8)
-    assert (f"it sits on the edge of the search box ({', '.join(edges)}): a larger box might "
-            "hold a better design") in result.summary()
+    # one line of its own, naming the box searched and the ends the design sits on
+    assert result.notes() == [
+        "the chosen design sits on the edge of the search box D0 30:50 mm x t0 2:4 mm: "
+        f"{', '.join(edges)}; a larger box might hold a better design"]
+    assert design_record(result)["notes"] == result.notes()
     # a design inside the box, or on a fixed value (no range), sits on no edge
     box = {"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0], "L0_mm": [282.0, 282.0]}
     assert box_edges({"D0_mm": 30.05, "t0_mm": 3.99, "L0_mm": 282.0}, box) == []

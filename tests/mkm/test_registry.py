@@ -72,3 +72,11 @@ def test_display_name_is_the_papers():
     assert parse_spec("eq2").display_name == "Equation 2 (Chou-Hannaford)"
     assert parse_spec("eq2:diameter=braid").display_name == (
         "Equation 2 (Chou-Hannaford), diameter=braid")
+
+
+def test_models_states_the_practical_range_from_its_numbers():
+    from mkm.fem.limits import range_text
+
+    text = " ".join(describe().split())  # wrapped at 100 columns
+    assert range_text() in text
+    assert "D0 5-60 mm" in text and "pressure 0-8 bar" in text
