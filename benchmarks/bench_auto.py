@@ -29,6 +29,7 @@ from collections import Counter
 
 import numpy as np
 
+from mkm.auto import MIN_SCALE_N
 from mkm.core.records import jsonable, provenance
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict
 from mkm.registry import build_spec
@@ -37,7 +38,6 @@ from mkm.surrogate.design import BOX
 SWEEP_BAR = np.round(np.arange(0.25, 2.501, 0.25), 2)
 KINDS = ("sweep", "sweep", "point", "near threshold")
 ABOVE_THRESHOLD_BAR = (0.01, 0.1)
-MIN_SCALE_N = 1.0
 
 
 def draw(rng: np.random.Generator) -> tuple[dict, tuple, float, float]:

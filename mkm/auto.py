@@ -18,8 +18,7 @@ muscle's sweep) a posteriori, at those very points:
   of force ``F`` and slope ``A`` (the mesh's own), relative to the largest force of the call
   (:func:`mkm.mesh_errors.point_bound_pct`), with ``a`` the largest threshold shift (over
   ``P*``) and ``b`` the largest relative error measured on fresh random muscles of the practical
-  range
-  (``mkm/data/mesh_errors.csv``, :mod:`mkm.mesh_errors`). Over a sweep it is small; at a
+  range (``mkm/data/mesh_errors.csv``, :mod:`mkm.mesh_errors`). Over a sweep it is small; at a
   single point just above the threshold ``P*`` it is large, as the error is (a coarse mesh's
   threshold shifted by 0.003 bar is 0.8 % of the force 0.4 bar above it). Without that table,
   the largest |Err%| in the study's convergence table times :data:`MESH_SAFETY`. The fine mesh
@@ -65,7 +64,7 @@ STD_FACTOR = 3.0
 # A mesh's recorded error is the largest over the study's muscles; another muscle may do a
 # little worse
 MESH_SAFETY = 1.5
-MIN_SCALE_N = 1.0  # a sweep that never pulls (all below threshold) is scored in newtons
+MIN_SCALE_N = mesh_errors.MIN_SCALE_N
 PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 GAP_FREE = "its bound at gap_mm=0 (no reference models the gap)"
 
