@@ -3,7 +3,7 @@ mesh at a single point as well as over a sweep.
 
 A coarser mesh's force differs from the fine mesh's in two ways: its threshold ``P*`` is
 shifted (by 0.01-1 % of it) and the bend just above it differs, and its slope differs by a small
-fraction. So at a point of force ``F`` (the mesh's) and slope ``A = F / (P - P*)``
+fraction. So at a point of force ``F`` (the mesh's) and slope ``A = F / (P - P*)``::
 
     |F - F_fine| <= a P* A + b F
 
