@@ -174,10 +174,12 @@ def main() -> None:
     offgrid_pooled = {"muscles": args.muscles * args.draws,
                       "within_1std": coverage(error, pooled["force_std_N"], 1.0),
                       "within_2std": coverage(error, pooled["force_std_N"], 2.0),
+                      "within_3std": coverage(error, pooled["force_std_N"], 3.0),
                       "rmse_N": rmse(pooled["force_fe_N"], pooled["force_N"])}
     print(f"off-grid, {args.draws} draws pooled ({offgrid_pooled['muscles']} muscles): within 1 "
           f"std {100 * offgrid_pooled['within_1std']:.1f} % (68 +- 7), within 2 std "
-          f"{100 * offgrid_pooled['within_2std']:.1f} % (95 +- 4), RMSE "
+          f"{100 * offgrid_pooled['within_2std']:.1f} % (95 +- 4), within 3 std "
+          f"{100 * offgrid_pooled['within_3std']:.1f} % (99.7), RMSE "
           f"{offgrid_pooled['rmse_N']:.3f} N")
     held_out = best.metadata["metrics"]["muscle_held_out"]
     print(f"muscle-held-out (10 splits): RMSE median {held_out['rmse_test_N']['median']:.3f} N "

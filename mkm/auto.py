@@ -8,13 +8,21 @@ Equation 7: the distance from the fine mesh's force scaled by the largest force 
 muscle's sweep) a posteriori, at those very points:
 
 - the surrogate is the estimate of the reference there: its force ``R`` and its calibrated
-  predictive standard deviation ``s``. Its own bound is ``K s`` (:data:`STD_FACTOR`, K = 3:
-  beyond it lies 0.3 % of a calibrated normal error);
+  predictive standard deviation ``s`` (rescaled on held-out FE muscles so that 1, 2 and 3 std
+  hold 68, 95 and 99.7 % of its errors: the model's metadata ``std_rescale`` records the
+  factor, the muscles and what they measured). Its own bound is ``K s`` (:data:`STD_FACTOR`,
+  K = 3: beyond it lies 0.3 % of the errors);
 - a closed form's bound is ``|F - R| + K s``: its distance from the surrogate plus the
   surrogate's own uncertainty, so it holds wherever the surrogate's does;
-- an FE mesh's bound is its mesh error, the largest |Err%| against the fine mesh in the recorded
-  convergence table (the study's, ``mkm/data/model_errors.csv``, times :data:`MESH_SAFETY`);
-  the fine mesh is the reference (bound 0).
+- an FE mesh's bound is its mesh error at the scale of the call: ``a P* A + b F`` at each point
+  of force ``F`` and slope ``A`` (the mesh's own), relative to the largest force of the call
+  (:func:`mkm.mesh_errors.point_bound_pct`), with ``a`` the largest threshold shift (over
+  ``P*``) and ``b`` the largest relative error measured on fresh random muscles of the practical
+  range (``mkm/data/mesh_errors.csv``, :mod:`mkm.mesh_errors`). Over a sweep it is small; at a
+  single point just above the threshold ``P*`` it is large, as the error is (a coarse mesh's
+  threshold shifted by 0.003 bar is 0.8 % of the force 0.4 bar above it). Without that table,
+  the largest |Err%| in the study's convergence table times :data:`MESH_SAFETY`. The fine mesh
+  is the reference (bound 0).
 
 Candidates are tried cheapest first (their measured seconds per force, from the study table); by
 default ONE model answers the whole call, the cheapest whose largest bound over all points meets the
@@ -43,6 +51,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from mkm import mesh_errors
 from mkm.core.records import file_sha256, package_file
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import MODELS
@@ -55,7 +64,7 @@ STD_FACTOR = 3.0
 # A mesh's recorded error is the largest over the study's muscles; another muscle may do a
 # little worse
 MESH_SAFETY = 1.5
-MIN_SCALE_N = 1.0  # a sweep that never pulls (all below threshold) is scored in newtons
+MIN_SCALE_N = mesh_errors.MIN_SCALE_N
 PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 GAP_FREE = "its bound at gap_mm=0 (no reference models the gap)"
 
@@ -121,6 +130,9 @@ class AutoModel(ForceModel):
     table : str, optional
         Study table (default ``mkm/data/model_errors.csv``, written by ``mkm study``): the
         candidates, their measured cost and the FE meshes' recorded errors.
+    mesh_errors : str, optional
+        Mesh error table (default ``mkm/data/mesh_errors.csv``, :mod:`mkm.mesh_errors`): the
+        FE meshes' bound at the scale of the call.
     per_point : bool
         False (default): one model for the whole call. True: the cheapest model per point.
     L0_mm, theta0_deg, C10_MPa, C01_MPa : float, optional
@@ -139,10 +151,11 @@ class AutoModel(ForceModel):
     def __init__(self, tolerance: float = 0.02, table: str | None = None,
                  per_point: bool = False, L0_mm: float | None = None,
                  theta0_deg: float | None = None, C10_MPa: float | None = None,
-                 C01_MPa: float | None = None, gap_mm: float | None = None, *,
-                 build: Callable[..., ForceModel]):
+                 C01_MPa: float | None = None, gap_mm: float | None = None,
+                 mesh_errors: str | None = None, *, build: Callable[..., ForceModel]):
         self.tolerance = tolerance
         self.table = table
+        self.mesh_errors = mesh_errors
         self.per_point = bool(per_point)
         self.L0_mm, self.theta0_deg = L0_mm, theta0_deg
         self.C10_MPa, self.C01_MPa = C10_MPa, C01_MPa
@@ -178,9 +191,12 @@ class AutoModel(ForceModel):
         gap = {"gap_mm": self.gap_mm} if self.gap_mm is not None else {}
         resolved = self.resolved_gap_mm()
         gap.update({"resolved_gap_mm": resolved} if resolved else {})
+        meshes = Path(self.mesh_errors or mesh_errors.MESH_ERRORS_FILE)
         return {"tolerance": self.tolerance, "per_point": self.per_point, **self.muscle, **gap,
                 "table": path.name, "table_sha256": digest, "reference": REFERENCE_SPEC,
-                "std_factor": STD_FACTOR, "mesh_safety": MESH_SAFETY}
+                "std_factor": STD_FACTOR, "mesh_safety": MESH_SAFETY,
+                "mesh_errors": meshes.name,
+                "mesh_errors_sha256": file_sha256(meshes)[:12] if meshes.exists() else None}
 
     def _candidate(self, spec: str, gap: bool = True) -> ForceModel:
         """Candidate ``spec`` at the muscle; if it takes a gap, with the muscle's if ``gap``
@@ -236,9 +252,7 @@ class AutoModel(ForceModel):
                 continue  # it would answer without the gap
             model_pred = None
             if row.family == "FE":
-                bound = np.full(P.shape, MESH_SAFETY * row.recorded_err_pct)
-                why = (f"mesh error: {MESH_SAFETY:g} x its largest |Err%| against the fine "
-                       "mesh in the study's convergence table")
+                model_pred, bound, why = self._mesh_bound(row, P, D0, t0, eps)
             elif ref is None:
                 continue  # no estimate of the reference here: only the FE may answer
             elif row.spec == REFERENCE_SPEC:
@@ -277,6 +291,30 @@ class AutoModel(ForceModel):
             source[todo] = "outside the surrogate's box: no estimate of the reference there"
         return {"force_N": force, "model_used": used.astype(str),
                 "error_bound_pct": bound_used, "bound_source": source.astype(str)}
+
+    def _mesh_bound(self, row, P, D0, t0, eps):
+        """An FE mesh's prediction (None if not run), its bound [%] per point and how it was
+        obtained: from the mesh error model at the call's scale when the model covers the mesh
+        (:func:`mkm.mesh_errors.point_bound_pct`), else the study table's largest error."""
+        mesh = dict(part.split("=", 1) for part in row.spec.partition(":")[2].split(",")
+                    if "=" in part).get("mesh")
+        model = mesh_errors.mesh_model(self.mesh_errors or mesh_errors.MESH_ERRORS_FILE)
+        if mesh not in model:
+            return (None, np.full(P.shape, MESH_SAFETY * row.recorded_err_pct),
+                    f"mesh error: {MESH_SAFETY:g} x its largest |Err%| against the fine mesh "
+                    "in the study's convergence table")
+        a, b = model[mesh]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            pred = self._candidate(row.spec).predict(P, D0, t0, eps)
+        force = np.ravel(pred.force_N)
+        threshold = np.ravel(pred.extras.get("threshold_pressure_bar", np.full(P.shape, np.nan)))
+        bound = mesh_errors.point_bound_pct(force, P, threshold, np.stack([D0, t0, eps], axis=1),
+                                            a, b)
+        bound[~np.ravel(pred.valid) | ~np.isfinite(bound)] = np.inf
+        return pred, bound, (f"mesh error at this call's scale: {100 * a:.3f} % of P* x the "
+                             f"slope + {100 * b:.3f} % of the force, the largest over fresh "
+                             f"random muscles x {mesh_errors.SAFETY:g}")
 
     def _forces(self, P, D0, t0, eps):
         out = self.choose(P, D0, t0, eps)

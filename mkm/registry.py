@@ -87,6 +87,8 @@ register(Entry(
     {"tolerance": Parameter("largest |Err%| against the finest FE, a fraction; "
                             "default 0.02"),
      "table": Parameter("study table (default: the shipped one, from `mkm study`)", str),
+     "mesh_errors": Parameter("FE mesh error table (default: the shipped one, from `mkm "
+                              "study --mesh-muscles N`)", str),
      "per_point": Parameter("true: choose per point instead of one model per sweep", bool),
      "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01,
      "gap_mm": GAP},

@@ -11,6 +11,15 @@ COVERAGE_TARGETS = ((1.0, 0.6827, 0.07), (2.0, 0.9545, 0.04))
 #: Grid of :func:`coverage_fit`: the scale ``c`` (log-spaced) and the power ``beta``.
 STD_SCALES = np.geomspace(0.1, 10.0, 161)
 STD_POWERS = np.linspace(-0.5, 2.5, 31)
+#: What a normal error gives within 1, 2 and 3 std: :func:`rescale_fit`'s targets.
+NORMAL_COVERAGE = ((1.0, 0.6827), (2.0, 0.9545), (3.0, 0.9973))
+#: Grid of :func:`rescale_fit`: factors 0.25-4, 0.5 % apart, and powers of eps.
+STD_RESCALES = np.geomspace(0.25, 4.0, 557)
+RESCALE_POWERS = np.round(np.linspace(-0.5, 1.5, 41), 3)
+#: The rescale's shortening is relative to this one [fraction] (mid-box), and never taken
+#: below the smallest (at eps = 0 the force has no end-effect error: the std is the floor's).
+RESCALE_EPS_REF = 0.1
+RESCALE_EPS_MIN = 1e-3
 
 
 def coverage(error, std, k: float) -> float:
@@ -44,4 +53,37 @@ def coverage_fit(error, std_of) -> tuple[float, float]:
         i = int(np.argmin(misfit))
         if misfit[i] < best_misfit:
             best, best_misfit = (float(STD_SCALES[i]), float(beta)), misfit[i]
+    return best
+
+
+def rescale_factor(shortening, k: float, power: float):
+    """``k (shortening / RESCALE_EPS_REF)^power``: the factor of the whole std at an (effective)
+    shortening [fraction]."""
+    return k * (np.maximum(shortening, RESCALE_EPS_MIN) / RESCALE_EPS_REF) ** power
+
+
+def rescale_fit(error, std, shortening) -> tuple[float, float]:
+    """The ``(k, power)`` whose bands ``rescale_factor(shortening, k, power) std`` hold closest
+    to the
+    normal fractions within 1, 2 and 3 std (:data:`NORMAL_COVERAGE`): the smallest largest miss
+    over the three on the grid :data:`STD_RESCALES` x :data:`RESCALE_POWERS` (of equal misses,
+    the power closest to 0, then the smallest factor); ``(1, 0)`` when no point is informative
+    (:func:`coverage`)."""
+    error, std = np.abs(np.asarray(error, dtype=float)), np.asarray(std, dtype=float)
+    eps = np.broadcast_to(np.asarray(shortening, dtype=float), error.shape)
+    informative = (error > 0) | (std > 0)
+    if not informative.any():
+        return 1.0, 0.0
+    error, std, eps = error[informative], std[informative], eps[informative]
+    best, best_miss = (1.0, 0.0), np.inf
+    for power in sorted(RESCALE_POWERS, key=abs):
+        # |error| <= n k f std  <=>  |error| / (f std) <= n k: the sorted ratios count them
+        with np.errstate(divide="ignore"):
+            ratio = np.sort(error / (rescale_factor(eps, 1.0, power) * std))
+        miss = np.max([np.abs(np.searchsorted(ratio, n * STD_RESCALES, side="right")
+                              / ratio.size - target)
+                       for n, target in NORMAL_COVERAGE], axis=0)
+        i = int(np.argmin(miss))
+        if miss[i] < best_miss - 1e-12:
+            best, best_miss = (float(STD_RESCALES[i]), float(power)), miss[i]
     return best

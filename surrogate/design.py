@@ -62,6 +62,9 @@ DESIGN_PRESSURES = tuple(float(p) for p in np.round(np.arange(0.0, 3.001, 0.25),
 #: Pressures of evaluation sweeps [bar]: the paper's test pressures, inside the box.
 EVAL_PRESSURES = tuple(float(p) for p in np.round(np.arange(0.0, 2.501, 0.25), 2))
 
+#: Pressures of a sweep over the practical range [bar]: 0-8 bar every 0.5 bar.
+PRACTICAL_PRESSURES = tuple(float(p) for p in np.round(np.arange(0.0, 8.001, 0.5), 2))
+
 N_CORNERS = 16  # the 2^(7-3) fractional factorial
 MIN_MUSCLES_WITH_CORNERS = 2 * N_CORNERS  # below: corners would be most of the budget
 
@@ -304,5 +307,44 @@ def build_random_set(n_muscles: int, seeds, out, mesh: str = "fine",
             "seeds": [int(s) for s in seeds], "muscles_per_seed": int(n_muscles),
             "box": {k: list(v) for k, v in BOX.items()}, "pressure_bar": list(EVAL_PRESSURES),
             "model": "axisym", "mesh": mesh, "model_version": done["model_version"]}
+    write_csv_with_sidecar(out, frame.to_csv(index=False, lineterminator="\n"), info)
+    return frame, info
+
+
+def practical_muscles(n_muscles: int, seed: int) -> pd.DataFrame:
+    """``n_muscles`` fresh random muscles of the practical range
+    (:func:`mkm.fem.sampling.draw_muscles`: log-uniform sizes, coupled wall and length, eps up to
+    95 % of the braid lock), one row per muscle with :data:`MUSCLE_PARAMETERS` and ``origin``."""
+    from mkm.fem.sampling import draw_muscles
+
+    columns = draw_muscles(int(n_muscles), int(seed)).columns()
+    return pd.DataFrame({p: np.round(columns[p], 6) for p in MUSCLE_PARAMETERS}).assign(
+        origin=f"practical seed {seed}")
+
+
+def build_practical_set(n_muscles: int, seed: int, out, mesh: str = "fine",
+                        workers: int | None = None, cache_dir=None, progress: bool = True,
+                        scheduler: str | None = None) -> tuple[pd.DataFrame, dict]:
+    """FE sweeps (:data:`PRACTICAL_PRESSURES`) of ``n_muscles`` random muscles of the practical
+    range (:func:`practical_muscles`), written to ``out`` and ``out.json`` (the draw, its box's
+    hull as the dataset's box, provenance): the FE data a surrogate of the whole range learns
+    from or is scored on. Muscles whose sweep fails are kept with ``converged=False`` (the
+    loader leaves those rows out) and listed in the sidecar."""
+    from mkm.fem.limits import PRACTICAL_RANGE
+    from mkm.fem.sampling import draw_muscles
+
+    muscles = practical_muscles(n_muscles, seed)
+    frame, done = fe_sweeps(muscles, mesh, PRACTICAL_PRESSURES, workers=workers,
+                            cache_dir=cache_dir, progress=progress,
+                            desc="FE muscles of the practical range", scheduler=scheduler)
+    frame["origin"] = muscles["origin"].to_numpy()[frame["muscle"].to_numpy()]
+    failed = sorted(set(frame.loc[~frame["converged"], "muscle"].tolist()))
+    info = {**provenance(), "what": "random muscles of the practical range (surrogate.design)",
+            "draw": draw_muscles(0, int(seed)).record() | {"muscles": int(n_muscles)},
+            "box": {k: list(v) for k, v in PRACTICAL_RANGE.hull().items()},
+            "pressure_bar": list(PRACTICAL_PRESSURES), "model": "axisym", "mesh": mesh,
+            "model_version": done["model_version"], "jobs_computed": done["computed"],
+            "jobs_from_cache": done["cached"],
+            "muscles_with_failed_points": [int(m) for m in failed]}
     write_csv_with_sidecar(out, frame.to_csv(index=False, lineterminator="\n"), info)
     return frame, info

@@ -14,7 +14,7 @@ from sklearn.utils.validation import check_is_fitted, validate_data
 from threadpoolctl import threadpool_limits
 
 from mkm.fem.thickwall import effective_eps_of_slope, effective_eps_of_threshold
-from mkm.surrogate.coverage import coverage_fit
+from mkm.surrogate.coverage import coverage_fit, rescale_fit
 from mkm.surrogate.gp import fit_gaussian_process, leave_one_out, predict_mean_std
 from mkm.surrogate.muscle_predictor import (
     LINEARITY_BINS_BAR,
@@ -71,6 +71,18 @@ def muscle_slopes(P, y, groups, threshold=None):
     return muscles, A, Pstar, linearity
 
 
+def bend_below_line_bar(Pstar, fe_threshold) -> float:
+    """How far below the lines' thresholds ``Pstar`` the FE forces start [bar]: the largest
+    ``P*_line - P*_FE`` over the sweeps (0 without FE thresholds). The FE force rises from its
+    own threshold with a bend, so the straight line through the points above it crosses zero
+    a little higher (0.002 bar typically, 0.006 at most over the shipped design)."""
+    if fe_threshold is None:
+        return 0.0
+    gap = np.asarray(Pstar, dtype=float) - np.asarray(fe_threshold, dtype=float)
+    gap = gap[np.isfinite(gap)]
+    return float(max(gap.max(initial=0.0), 0.0))
+
+
 class MuscleThresholdGP(RegressorMixin, BaseEstimator):
     """``F = A max(0, P - P*)``: slope and threshold of the thick-wall closed form at effective
     shortenings learnt by Gaussian processes over the muscle parameters.
@@ -89,8 +101,9 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
     The standard deviation carries the processes' std ``s`` of ``log k``, calibrated as
     ``c s (log k_A / m_ref)^beta`` (:meth:`_calibrated`), through ``A`` and ``P*`` (first
     order) to the force exactly for a Gaussian ``P*`` and a log-normal ``A`` (the moments of
-    ``max(0, P - P*)``), plus the error of the threshold-linear form itself where the force is
-    not zero (``linearity_bar_``, measured on the training sweeps). ``log k_A``, the slope
+    ``max(0, P - P*)``), plus the error of the threshold-linear form itself from a little below
+    the threshold up (``linearity_bar_`` and ``bend_bar_``, measured on the training sweeps:
+    :func:`~mkm.surrogate.muscle_predictor.linearity_floor_bar`). ``log k_A``, the slope
     process's mean, is the size of the end-effect correction (largest for short, wide muscles
     at a low braid angle): the processes' own std misses that their errors grow with it (the
     muscles at theta0 28-30 deg and L0 150-200 mm were off by 1.9 std RMS with one scale, the
@@ -98,7 +111,9 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
     scale gave both 68 % within 1 std and 95 % within 2. ``c`` (``std_scale_``) and ``beta``
     (``std_power_``; ``m_ref``, ``std_reference_``, the median ``log k_A`` of the points) are
     fitted (:func:`coverage_fit`) to leave-one-muscle-out errors at fit time, then by
-    :meth:`calibrate_std` to muscles the fit did not see.
+    :meth:`calibrate_std` to muscles the fit did not see; last, a factor of the whole std
+    (``std_rescale_ (k_A eps / 0.1)^std_rescale_power_``, :meth:`rescale_std`) fitted on a
+    held-out set of further muscles makes 1, 2 and 3 std hold 68, 95 and 99.7 % of the errors.
 
     Parameters
     ----------
@@ -142,6 +157,9 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
                      else np.asarray(threshold_pressure_bar, dtype=float))
         muscles, A, Pstar, self.linearity_bar_ = muscle_slopes(X[:, 0], y, groups, threshold)
         first = np.array([np.flatnonzero(groups == m)[0] for m in muscles])
+        self.bend_bar_ = bend_below_line_bar(Pstar, None if threshold is None
+                                             else threshold[first])
+        self.std_rescale_, self.std_rescale_power_ = 1.0, 0.0
         v, z = self._muscle(X[first])
         with np.errstate(divide="ignore", invalid="ignore"):  # eps = 0: no k, not used
             k_A = effective_eps_of_slope(A, v["D0_mm"], v["t0_mm"], v["theta0_deg"]) / v["eps"]
@@ -189,7 +207,7 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
     _from_logk = staticmethod(from_log_k)
 
     def _force_parts(self, P, A, s_A, Pstar, s_P):
-        return force_parts(P, A, s_A, Pstar, s_P, self.linearity_bar_)
+        return force_parts(P, A, s_A, Pstar, s_P, self.linearity_bar_, self.bend_bar_)
 
     def _calibrate_std(self, X, y, v, zs, first, groups, fitted):
         """Fit ``std_scale_`` and ``std_power_`` (:func:`coverage_fit`) to leave-one-muscle-out
@@ -247,6 +265,23 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
         self._fit_std(X[:, 0], np.asarray(y, dtype=float), *self._log_k(X))
         return self
 
+    def rescale_std(self, X, y):
+        """Set ``std_rescale_`` and ``std_rescale_power_``, the factor ``k (k_A eps /
+        0.1)^power`` of the whole predictive std, from FE sweeps ``(X, y)`` of muscles neither
+        the fit nor :meth:`calibrate_std` saw (the held-out set): the one whose 1, 2 and 3 std
+        bands hold closest to 68.27, 95.45 and 99.73 % of their points
+        (:func:`~mkm.surrogate.coverage.rescale_fit`). The power of the slope's effective
+        shortening ``k_A eps``: with the std calibrated on ``log k_A`` alone, the errors of the
+        largest eps (0.15-0.2) fell outside 1 std twice as often as those below 0.04, and the
+        short, wide muscles at a low braid angle (the largest ``k_A``) grow with them.
+        Returns ``self``."""
+        check_is_fitted(self)
+        X = validate_data(self, X, reset=False)
+        force, std, shortening = self.predictor().std_parts(X)
+        self.std_rescale_, self.std_rescale_power_ = rescale_fit(
+            np.asarray(y, dtype=float) - force, std, shortening)
+        return self
+
     def predict(self, X, return_std: bool = False):
         check_is_fitted(self)
         return self.predict_validated(validate_data(self, X, reset=False), return_std)
@@ -262,4 +297,6 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
         return MusclePredictor(tuple(self.inputs), dict(self.fixed or {}), self.z_mean_,
                                self.z_scale_, self.slope_posterior_, self.threshold_posterior_,
                                float(self.std_scale_), float(self.std_power_),
-                               float(self.std_reference_), self.linearity_bar_)
+                               float(self.std_reference_), float(self.bend_bar_),
+                               float(self.std_rescale_), float(self.std_rescale_power_),
+                               self.linearity_bar_)

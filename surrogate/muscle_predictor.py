@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mkm.fem.eq2 import chou_hannaford_eps_max
+from mkm.surrogate.coverage import rescale_factor
 from mkm.surrogate.features import braid_slope_N_per_bar, columns_of, thickwall_threshold_bar
 from mkm.surrogate.gp import posterior_mean_std
 
@@ -22,7 +23,8 @@ LINEARITY_BINS_BAR = (0.0, 0.1, 0.25, 0.5, 1.0, 2.0, np.inf)  # of P - P*
 #: The arrays of a Gaussian process's posterior (:func:`mkm.surrogate.gp.posterior`): name, ndim.
 POSTERIOR_ARRAYS = {"X_scaled": 2, "length_scale": 1, "alpha": 1, "L_inv": 2, "amplitude": 0,
                     "noise": 0, "y_mean": 0, "y_std": 0}
-SCALARS = ("std_scale", "std_power", "std_reference")
+SCALARS = ("std_scale", "std_power", "std_reference", "bend_bar", "std_rescale",
+           "std_rescale_power")
 
 
 def muscle_values(X, inputs, fixed):
@@ -60,13 +62,17 @@ def calibrated_factor(m_A, c, beta, reference):
     return c * (np.maximum(m_A, 1e-3) / reference) ** beta
 
 
+def effective_shortening(v, m):
+    """``k eps`` [fraction] at ``log k`` = ``m`` of the muscles ``v``, kept short of the braid
+    lock."""
+    return np.minimum(v["eps"] * np.exp(m), 0.999 * chou_hannaford_eps_max(v["theta0_deg"]))
+
+
 def from_log_k(v, m_A, s_A, m_P, s_P):
     """Slope [N/bar] and threshold [bar], with first-order std, from ``log k`` of each (mean
     and std) of the muscles ``v``."""
-    eps, theta0 = v["eps"], v["theta0_deg"]
-    top = 0.999 * chou_hannaford_eps_max(theta0)
-    e_A = np.minimum(eps * np.exp(m_A), top)
-    e_P = np.minimum(eps * np.exp(m_P), top)
+    theta0 = v["theta0_deg"]
+    e_A, e_P = effective_shortening(v, m_A), effective_shortening(v, m_P)
     A0 = braid_slope_N_per_bar(v["D0_mm"], v["t0_mm"], 0.0, theta0)
     c2 = np.cos(np.deg2rad(theta0)) ** 2
     A = np.maximum(A0 * (3.0 * (1.0 - e_A) ** 2 * c2 - 1.0) / (3.0 * c2 - 1.0), 0.0)
@@ -97,9 +103,21 @@ PYTHON_CDF_MAX = 10_000  # elements: about 1.5 ms element by element
 _ERFC = np.frompyfunc(math.erfc, 1, 1)
 
 
-def force_parts(P, A, s_A, Pstar, s_P, linearity_bar):
+def linearity_floor_bar(x_bar, linearity_bar, bend_bar):
+    """The threshold-linear form's own error [bar] at ``x_bar = P - P*``: the training sweeps'
+    RMS residual per bin of :data:`LINEARITY_BINS_BAR` (``linearity_bar``), made non-increasing
+    in ``x`` (the bin where the line crosses the FE curve has a small RMS, not small errors),
+    and applied from ``bend_bar`` below the line's threshold, where the FE force already starts
+    (the FE curve bends in above its own threshold, which lies up to ``bend_bar`` below the
+    line's); 0 further below."""
+    envelope = np.maximum.accumulate(np.asarray(linearity_bar)[::-1])[::-1]
+    floor = envelope[np.digitize(np.maximum(x_bar, 0.0), LINEARITY_BINS_BAR[1:-1])]
+    return np.where(x_bar > -bend_bar, floor, 0.0)
+
+
+def force_parts(P, A, s_A, Pstar, s_P, linearity_bar, bend_bar=0.0):
     """Force [N], its variance [N^2] from the std of ``A`` and ``P*``, and the linearity floor
-    [N] (``linearity_bar`` per bin of :data:`LINEARITY_BINS_BAR`)."""
+    [N] (:func:`linearity_floor_bar` times the slope)."""
     force = A * np.maximum(P - Pstar, 0.0)
     # E[max(0, x)] and E[max(0, x)^2] for x = P - P* ~ N(mu, s^2); A log-normal with
     # relative std s_A / A
@@ -111,8 +129,7 @@ def force_parts(P, A, s_A, Pstar, s_P, linearity_bar):
     rel = np.divide(s_A, A, out=np.zeros(np.broadcast_shapes(np.shape(s_A), np.shape(A))),
                     where=A > 0)
     var = np.maximum(A**2 * (np.exp(2 * rel**2) * e2 - np.exp(rel**2) * e1**2), 0.0)
-    floor = A * linearity_bar[np.digitize(P - Pstar, LINEARITY_BINS_BAR[1:-1])]
-    return force, var, np.where(force > 0, floor, 0.0)
+    return force, var, A * linearity_floor_bar(P - Pstar, linearity_bar, bend_bar)
 
 
 @dataclass(frozen=True)
@@ -129,28 +146,48 @@ class MusclePredictor:
     std_scale: float
     std_power: float
     std_reference: float
+    bend_bar: float
+    std_rescale: float
+    std_rescale_power: float
     linearity_bar: np.ndarray
 
     has_std = True
 
     def decompose(self, X):
         """``(A, sd_A, P*, sd_P*)`` per row of a validated ``X``."""
+        return self._parts(X)[:4]
+
+    def _parts(self, X):
+        """:meth:`decompose`, then the effective shortening of the slope ``k_A eps``."""
         v, m_A, s_A, m_P, s_P = log_k(X, self.inputs, self.fixed, self.z_mean, self.z_scale,
                                       self.slope, self.threshold)
         factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
-        return from_log_k(v, m_A, factor * s_A, m_P, factor * s_P)
+        return (*from_log_k(v, m_A, factor * s_A, m_P, factor * s_P),
+                effective_shortening(v, m_A))
 
-    def predict(self, X, return_std: bool = False):
-        """Force [N] (and std [N]) at the rows of a validated float ``X``."""
-        # slope and threshold once per muscle: a sweep is many pressures of a few muscles
+    def std_parts(self, X):
+        """Per row of a validated ``X``: force [N], its std before the rescale [N] and the
+        effective shortening ``k_A eps`` the rescale takes."""
+        A, s_A, Pstar, s_P, shortening = self._per_muscle(X)
+        force, var, floor = force_parts(X[:, 0], A, s_A, Pstar, s_P, self.linearity_bar,
+                                        self.bend_bar)
+        return force, np.sqrt(var + floor**2), shortening
+
+    def _per_muscle(self, X):
+        """:meth:`_parts` once per muscle of ``X``, per row."""
+        # a sweep is many pressures of a few muscles
         Z = np.ascontiguousarray(X[:, 1:])
         keys = Z.view(np.dtype((np.void, Z.dtype.itemsize * Z.shape[1]))).ravel()
         _, first, which = np.unique(keys, return_index=True, return_inverse=True)
-        A, s_A, Pstar, s_P = (part[which] for part in self.decompose(X[first]))
+        return tuple(part[which] for part in self._parts(X[first]))
+
+    def predict(self, X, return_std: bool = False):
+        """Force [N] (and std [N]) at the rows of a validated float ``X``."""
         if not return_std:
+            A, _, Pstar, _, _ = self._per_muscle(X)
             return A * np.maximum(X[:, 0] - Pstar, 0.0)
-        force, var, floor = force_parts(X[:, 0], A, s_A, Pstar, s_P, self.linearity_bar)
-        return force, np.sqrt(var + floor**2)
+        force, std, shortening = self.std_parts(X)
+        return force, std * rescale_factor(shortening, self.std_rescale, self.std_rescale_power)
 
     def arrays(self) -> dict[str, np.ndarray]:
         """The fitted numbers as flat named arrays (``numpy.savez``)."""

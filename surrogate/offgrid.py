@@ -5,8 +5,8 @@ Muscle-held-out splits still draw the test muscles from the design the surrogate
 parameter it takes; the recorded value of the others), with a seed it records (a fresh one by
 default, so repeated runs are new draws), computes their FE sweeps (:mod:`mkm.surrogate.design`,
 through the dataset cache), and scores the surrogate on them: the largest |Err%| of each muscle
-(the paper's Equation 7), the pooled RMSE (``sklearn.metrics``), the fraction of points within 1
-and 2 predictive std, and whether every point just outside the box is flagged.
+(the paper's Equation 7), the pooled RMSE (``sklearn.metrics``), the fraction of points within 1,
+2 and 3 predictive std, and whether every point just outside the box is flagged.
 """
 
 from __future__ import annotations
@@ -93,6 +93,7 @@ def evaluate_offgrid(model: SurrogateForceModel, n_muscles: int = 12, seed: int 
     if points["force_std_N"].notna().all():
         summary["within_1std"] = coverage(errors, points["force_std_N"], 1.0)
         summary["within_2std"] = coverage(errors, points["force_std_N"], 2.0)
+        summary["within_3std"] = coverage(errors, points["force_std_N"], 3.0)
     summary["outside_box"] = outside_box_check(model, muscles.iloc[0])
     return points, summary
 

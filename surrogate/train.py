@@ -23,7 +23,12 @@ from mkm.surrogate.coverage import coverage
 from mkm.surrogate.kinds import BEST, make_estimator
 from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.quiet import quiet_fits
-from mkm.surrogate.training_data import DEFAULT_DATASET, STD_CALIBRATION_SET, load_training_data
+from mkm.surrogate.training_data import (
+    DEFAULT_DATASET,
+    STD_CALIBRATION_SET,
+    STD_HOLDOUT_SET,
+    load_training_data,
+)
 from mkm.surrogate.validation import (
     MUSCLE_SPLITS,
     fit_params,
@@ -40,8 +45,14 @@ def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, splits: int = M
     data = load_training_data(dataset)
     estimator = make_estimator(resolved, data.inputs, data.fixed, random_state=random_state)
     calibration = std_calibration_set(estimator, data)
-    post_fit = (None if calibration is None
-                else lambda model: model.calibrate_std(calibration.X, calibration.y))
+    holdout = std_calibration_set(estimator, data, STD_HOLDOUT_SET)
+
+    def post_fit(model):
+        model.calibrate_std(calibration.X, calibration.y)
+        if holdout is not None:
+            model.rescale_std(holdout.X, holdout.y)
+
+    post_fit = None if calibration is None else post_fit
     bar = _bar(splits + 1, f"train {resolved}", progress)
     with quiet_fits(), threadpool_limits(limits=1), bar:
         in_box = (data.X[:, 0] >= data.box["pressure_bar"][0]) & (
@@ -69,20 +80,34 @@ def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, splits: int = M
             "std_reference": float(estimator.std_reference_),
             "within_1std": coverage(calibration.y - force, std, 1.0),
             "within_2std": coverage(calibration.y - force, std, 2.0)}
+    if calibration is not None and holdout is not None:
+        force, std = predict_with_std(estimator, holdout.X)
+        metadata["std_rescale"] = {
+            "factor": float(estimator.std_rescale_),
+            "shortening_power": float(estimator.std_rescale_power_),
+            "path": holdout.path,
+            "sha256": holdout.sha256, "n_muscles": holdout.n_muscles,
+            "seeds": holdout.provenance.get("seeds"),
+            "command": holdout.provenance.get("command"),
+            "method": "factor * (k_A eps / 0.1)^shortening_power times the whole std, the "
+                      "one whose 1/2/3 std bands hold closest to 68.27/95.45/99.73 % of the "
+                      "held-out errors (largest miss smallest)",
+            **{f"within_{k}std": coverage(holdout.y - force, std, float(k)) for k in (1, 2, 3)}}
     model = SurrogateForceModel(estimator, resolved, data.inputs, data.fixed, data.box,
                                 metadata)
     metrics["test_muscles"] = _test_muscle_metrics(model)
     return model
 
 
-def std_calibration_set(estimator, data):
-    """The shipped random muscles that scale the std of ``estimator`` (``None`` when it has no
-    std to scale, or is trained on other inputs: a surrogate of one length, angle and rubber
-    keeps the scale of its own training muscles)."""
+def std_calibration_set(estimator, data, path=STD_CALIBRATION_SET):
+    """The shipped random muscles at ``path`` that scale the std of ``estimator`` (the
+    calibration set, or the held-out set :data:`STD_HOLDOUT_SET`; ``None`` when it has no std
+    to scale, or is trained on other inputs: a surrogate of one length, angle and rubber keeps
+    the scale of its own training muscles)."""
 
-    if not hasattr(estimator, "calibrate_std") or not STD_CALIBRATION_SET.is_file():
+    if not hasattr(estimator, "calibrate_std") or not path.is_file():
         return None
-    calibration = load_training_data(STD_CALIBRATION_SET)
+    calibration = load_training_data(path)
     return calibration if calibration.inputs == data.inputs else None
 
 
@@ -111,11 +136,14 @@ def _test_muscle_metrics(model: SurrogateForceModel):
 
 def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SPLITS) -> str:
     """Hash of what a trained surrogate depends on: the data, the kind, the splits, the source
-    of the surrogate and of every physics module it calls (calibration included), libraries."""
+    of the surrogate and of every physics module it calls (calibration included), libraries,
+    and the random muscles that scale its std."""
     from mkm.surrogate.io import code_version
 
     parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
-             "versions": provenance()["versions"], "code": code_version(kind)}
+             "versions": provenance()["versions"], "code": code_version(kind),
+             "std_sets": [file_sha256(p) for p in (STD_CALIBRATION_SET, STD_HOLDOUT_SET)
+                          if p.is_file()]}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
 

@@ -146,7 +146,14 @@ def register(subparsers) -> None:
     design.add_argument("--update-shipped", action="store_true",
                         help="write the shipped file instead: surrogate/data/mkm_design.csv "
                         "(what the default surrogate trains on), or with --random-seeds "
-                        "surrogate/data/mkm_std_calibration.csv (what scales its std)")
+                        "surrogate/data/mkm_std_calibration.csv (what scales its std), or "
+                        "with --random-seeds --held-out surrogate/data/mkm_std_holdout.csv "
+                        "(what rescales its std to 68/95/99.7 %% within 1/2/3 std)")
+    design.add_argument("--held-out", action="store_true",
+                        help="with --random-seeds --update-shipped: write the held-out set")
+    design.add_argument("--range", choices=("box", "practical"), default="box",
+                        help="practical: --muscles fresh random muscles of the practical range "
+                        "(seed --seed; sweeps 0-8 bar) instead of the box's design")
     design.set_defaults(func=_design)
 
     evaluate = sub.add_parser(
@@ -326,13 +333,35 @@ def _reference(args) -> int:
 
 
 def _design(args) -> int:
-    from mkm.surrogate.design import DESIGN_DATASET, build_design, build_random_set
-    from mkm.surrogate.training_data import STD_CALIBRATION_SET
+    from mkm.surrogate.design import (
+        DESIGN_DATASET,
+        build_design,
+        build_practical_set,
+        build_random_set,
+    )
+    from mkm.surrogate.training_data import STD_CALIBRATION_SET, STD_HOLDOUT_SET
 
     start = time.perf_counter()
+    if args.held_out and not (args.random_seeds and args.update_shipped):
+        raise ValueError("--held-out is invalid here: expected it with --random-seeds and "
+                         "--update-shipped (it names the shipped file to write)")
+    if args.range == "practical":
+        if args.random_seeds or args.update_shipped or args.adaptive or args.refine:
+            raise ValueError("--range practical is invalid with --random-seeds, "
+                             "--update-shipped, --adaptive or --refine: expected --muscles, "
+                             "--seed and --out")
+        frame, info = build_practical_set(args.muscles, args.seed, Path(args.out),
+                                          mesh=args.mesh, workers=args.workers,
+                                          cache_dir=args.cache, progress=not args.no_progress,
+                                          scheduler=args.scheduler)
+        summary_line("surrogate design", f"{args.muscles} random muscles of the practical range "
+                     f"(seed {args.seed}, {len(info['muscles_with_failed_points'])} with failed "
+                     f"points) in {time.perf_counter() - start:.0f} s; wrote {args.out}")
+        return 0
     if args.random_seeds:
         seeds = [int(parse_number(v, "--random-seeds")) for v in args.random_seeds.split(",")]
-        out = STD_CALIBRATION_SET if args.update_shipped else Path(args.out)
+        shipped = STD_HOLDOUT_SET if args.held_out else STD_CALIBRATION_SET
+        out = shipped if args.update_shipped else Path(args.out)
         frame, info = build_random_set(args.muscles, seeds, out, mesh=args.mesh,
                                        workers=args.workers, cache_dir=args.cache,
                                        progress=not args.no_progress, scheduler=args.scheduler)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import time
+from pathlib import Path
 
 from mkm.cli.common import (
     add_batch_arguments,
@@ -60,6 +61,15 @@ def register(subparsers) -> None:
                        help="surrogate kinds scored: a comma list or `all` (the generic gp and "
                        "the paper's 54 nets too; cold, about 13 more minutes of training) "
                        "(default: muscle-gp,physics,mlp-paper)")
+    study.add_argument("--mesh-muscles", type=int, default=0, metavar="N",
+                       help="also measure the FE meshes' errors against the fine mesh on N "
+                       "fresh random muscles of the practical range (mesh_errors.csv: the "
+                       "bound `auto` gives a mesh at the scale of each call; --update-shipped "
+                       "replaces mkm/data/mesh_errors.csv); ~3 FE sweeps per muscle")
+    study.add_argument("--mesh-seed", type=int,
+                       help="seed of --mesh-muscles' draw (default: fresh, recorded)")
+    study.add_argument("--mesh-only", action="store_true",
+                       help="only the --mesh-muscles measurement, not the study")
     _cache_arguments(study)
     add_progress_argument(study)
     add_batch_arguments(study)
@@ -122,6 +132,14 @@ def _study(args) -> int:
     from mkm.study import StudyConfig, run_study
 
     start = time.perf_counter()
+    if args.mesh_only and not args.mesh_muscles:
+        raise ValueError("--mesh-only needs --mesh-muscles N: expected a number of muscles")
+    if args.mesh_muscles < 0:
+        raise ValueError(f"--mesh-muscles {args.mesh_muscles} is invalid: expected >= 0")
+    if args.mesh_muscles:
+        _mesh_errors(args)
+    if args.mesh_only:
+        return 0
     config = StudyConfig.with_surrogates(args.surrogates) if args.surrogates else StudyConfig()
     path = run_study(args.out, config, cache_dir=_cache(args),
                      update_shipped=args.update_shipped, progress=not args.no_progress,
@@ -130,3 +148,24 @@ def _study(args) -> int:
     summary_line("study", f"done in {time.perf_counter() - start:.0f} s{shipped}")
     print(path)
     return 0
+
+
+def _mesh_errors(args) -> None:
+    import numpy as np
+
+    from mkm import mesh_errors
+    from mkm.paths import default_out
+    from mkm.progress import summary_line
+
+    start = time.perf_counter()
+    seed = (args.mesh_seed if args.mesh_seed is not None
+            else int(np.random.SeedSequence().entropy % 2**32))
+    out = (mesh_errors.MESH_ERRORS_FILE if args.update_shipped
+           else Path(args.out or default_out("study")) / "mesh_errors.csv")
+    _, info = mesh_errors.measure(args.mesh_muscles, seed, out, workers=args.workers,
+                                  scheduler=args.scheduler, cache_dir=_cache(args),
+                                  progress=not args.no_progress)
+    summary_line("study", f"mesh errors of {args.mesh_muscles} muscles (seed {seed}, "
+                 f"{info['fe_failed_muscles']} with a failed FE sweep) in "
+                 f"{time.perf_counter() - start:.0f} s: {mesh_errors.summary_line(out)}; "
+                 f"wrote {out}")

@@ -121,3 +121,16 @@ def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
 def test_design_budget_must_be_positive(capsys):
     assert main(["surrogate", "design", "--muscles", "0"]) == 2
     assert "--muscles 0 is invalid" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["surrogate", "design", "--muscles", "1", "--held-out"],
+     "--held-out is invalid here: expected it with --random-seeds and --update-shipped"),
+    (["surrogate", "design", "--muscles", "1", "--range", "practical", "--update-shipped"],
+     "--range practical is invalid with --random-seeds, --update-shipped"),
+    (["study", "--mesh-only"], "--mesh-only needs --mesh-muscles N"),
+    (["study", "--mesh-muscles", "-3", "--mesh-only"], "--mesh-muscles -3 is invalid"),
+])
+def test_design_and_mesh_study_options_refused_with_one_line(mkm_run, argv, message):
+    code, _, err = mkm_run(argv)
+    assert code == 2 and message in err and len(err.strip().splitlines()) == 1

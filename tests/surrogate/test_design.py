@@ -123,3 +123,19 @@ def test_adaptive_muscles_go_where_the_surrogate_is_unsure():
         return std / np.maximum(force, 1.0)
 
     assert relative_std(picks).mean() > 2 * relative_std(pool).mean()
+
+
+def test_practical_muscles_lie_in_the_practical_range_and_follow_their_seed():
+    from mkm.fem.limits import PRACTICAL_RANGE
+    from mkm.surrogate.design import practical_muscles
+
+    muscles = practical_muscles(50, 4)
+    assert muscles.equals(practical_muscles(50, 4))
+    assert not muscles.equals(practical_muscles(50, 5))
+    assert set(muscles["origin"]) == {"practical seed 4"}
+    for m in muscles.itertuples():
+        # rounded to 6 decimals as the CSV holds them: the upper bounds hold to that precision
+        values = {p: getattr(m, p) for p in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg",
+                                             "C10_MPa", "C01_MPa", "eps")}
+        assert PRACTICAL_RANGE.violations(**{k: v * (1 - 1e-6) if k in ("t0_mm", "eps", "C01_MPa")
+                                             else v for k, v in values.items()}) == [], values

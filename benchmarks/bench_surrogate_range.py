@@ -1,0 +1,94 @@
+"""A surrogate of the whole practical range against issue 34's targets, on fresh muscles.
+
+Run outside the test suite:
+
+    .venv/bin/mkm surrogate design --range practical --muscles 600 --seed S0 --out TRAIN.csv
+    .venv/bin/python benchmarks/bench_surrogate_range.py --train TRAIN.csv [--kind muscle-gp]
+        [--muscles 60] [--box-muscles 40] [--seed S] [--out FILE.json]
+
+Fits ``--kind`` on the FE sweeps of ``--train`` (one BLAS thread), then draws ``--muscles``
+fresh muscles of the practical range (:func:`mkm.surrogate.design.practical_muscles`, seed
+printed and recorded; sweeps 0-8 bar) and ``--box-muscles`` fresh muscles of the paper's box
+(:func:`mkm.surrogate.design.random_muscles`, sweeps 0-2.5 bar), solves them at the fine mesh
+(through the dataset cache) and prints per set the worst and median of each muscle's largest
+|Err%| (Equation 7 over its sweep; muscles without force and those whose FE failed are counted
+and left out). Targets: over the range worst <= 1 %, median <= 0.2 %; in the box worst
+<= 0.25 %.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from mkm.core.records import jsonable, provenance
+from mkm.surrogate.design import EVAL_PRESSURES, build_practical_set, fe_sweeps, random_muscles
+from mkm.surrogate.kinds import make_estimator
+from mkm.surrogate.quiet import quiet_fits
+from mkm.surrogate.training_data import load_training_data
+
+
+def worst_per_muscle(estimator, data) -> np.ndarray:
+    """Each muscle's largest |F - F_FE| over its sweep, in % of its largest FE force."""
+    force = estimator.predict(data.X)
+    out = []
+    for g in np.unique(data.groups):
+        rows = data.groups == g
+        top = float(np.max(np.abs(data.y[rows])))
+        if top > 0:
+            out.append(100.0 * float(np.max(np.abs(force[rows] - data.y[rows]))) / top)
+    return np.array(out)
+
+
+def summary(label: str, errors: np.ndarray, drawn: int) -> dict:
+    row = {"muscles_drawn": drawn, "muscles_scored": int(errors.size),
+           "worst_pct": float(errors.max()), "median_pct": float(np.median(errors)),
+           "p90_pct": float(np.percentile(errors, 90))}
+    print(f"{label}: {errors.size} of {drawn} muscles scored: worst {row['worst_pct']:.3f} %, "
+          f"median {row['median_pct']:.3f} %, 90th percentile {row['p90_pct']:.3f} %")
+    return row
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--train", required=True, help="FE sweeps to fit (CSV with sidecar)")
+    parser.add_argument("--kind", default="muscle-gp")
+    parser.add_argument("--muscles", type=int, default=60)
+    parser.add_argument("--box-muscles", type=int, default=40)
+    parser.add_argument("--seed", type=int, default=None)
+    parser.add_argument("--out", default=None)
+    args = parser.parse_args()
+    seed = args.seed if args.seed is not None else int(np.random.SeedSequence().entropy % 2**32)
+    print(f"seed {seed}")
+    train = load_training_data(args.train)
+    start = time.perf_counter()
+    with quiet_fits():
+        estimator = make_estimator(args.kind, train.inputs).fit(
+            train.X, train.y, threshold_pressure_bar=train.threshold_pressure_bar)
+    print(f"{args.kind} fitted on {train.n_muscles} muscles in {time.perf_counter() - start:.0f} s")
+    results = {"seed": seed, "kind": args.kind, "train": train.summary()}
+    with tempfile.TemporaryDirectory() as folder:
+        practical = Path(folder) / "practical.csv"
+        build_practical_set(args.muscles, seed, practical, progress=False)
+        results["practical_range"] = summary(
+            "practical range", worst_per_muscle(estimator, load_training_data(practical)),
+            args.muscles)
+        box = random_muscles(args.box_muscles, seed)
+        frame, _ = fe_sweeps(box, "fine", EVAL_PRESSURES, progress=False)
+        path = Path(folder) / "box.csv"
+        frame.to_csv(path, index=False)
+        results["paper_box"] = summary(
+            "paper's box", worst_per_muscle(estimator, load_training_data(path)),
+            args.box_muscles)
+    if args.out:
+        with open(args.out, "w", encoding="utf-8") as f:
+            json.dump({**results, "provenance": provenance()}, f, indent=2, default=jsonable)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,160 @@
+"""How far each FE mesh is from the finest, at the scale of a call: the bound ``auto`` gives a
+mesh at a single point as well as over a sweep.
+
+A coarser mesh's force differs from the fine mesh's in two ways: its threshold ``P*`` is
+shifted (by 0.01-1 % of it) and the bend just above it differs, and its slope differs by a small
+fraction. So at a point of force ``F`` (the mesh's) and slope ``A = F / (P - P*)``::
+
+    |F - F_fine| <= a P* A + b F
+
+with ``b`` the largest relative error from ``2 P*`` up (the slope's) and ``a`` the largest
+error ``b`` leaves, in bar over ``P*`` (the threshold's shift, the bend), both
+measured on fresh random muscles of the practical range
+(:func:`measure`, seeds recorded; ``mkm study --mesh-muscles N``). Relative to the largest force
+of the call (Equation 7's scale) the bound is small over a sweep and large just above ``P*``,
+where a shift of the threshold is a large part of a small force: the single-point call
+``auto`` answered from the coarse mesh with a sweep-scale bound of 0.08 % was 0.77 % off.
+
+The table (``mkm/data/mesh_errors.csv`` + JSON sidecar) holds one row per muscle and mesh;
+:func:`mesh_model` reads ``a`` and ``b`` per mesh (the largest over the muscles, times
+:data:`SAFETY`) and :func:`point_bound_pct` applies them to a prediction.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+
+from mkm.core.records import package_file, provenance, write_csv_with_sidecar
+
+MESH_ERRORS_FILE = package_file("mkm", "data", "mesh_errors.csv")
+#: The meshes measured against the fine one.
+MESHES = ("coarse", "medium")
+#: The pressures of each sweep [bar]: the practical range every 0.5 bar.
+PRESSURES_BAR = tuple(float(p) for p in np.round(np.arange(0.0, 8.001, 0.5), 2))
+#: The largest shift and error over the measured muscles; another muscle may do a little worse.
+SAFETY = 1.5
+MIN_SCALE_N = 1.0  # a call that never pulls (all below threshold) is scored in newtons
+
+
+def _muscle_rows(mesh: str, sweep, fine) -> dict:
+    """Of one muscle's sweep at ``mesh`` against the ``fine`` one (rows of
+    :func:`mkm.fem.batch.run_jobs`): ``b``, the largest relative error from twice the
+    threshold up (the slope's), and ``a``, the error ``b`` leaves, in bar over ``P*`` at the
+    mesh's slope (the threshold's shift, the bend just above it)."""
+    P = sweep["pressure_bar"].to_numpy()
+    F, F_fine = sweep["force_N"].to_numpy(), fine["force_N"].to_numpy()
+    P_star = float(sweep["threshold_pressure_bar"].iloc[0])
+    above = F > 0
+    row = {"mesh": mesh, "threshold_bar": P_star,
+           "threshold_shift_bar": abs(P_star - float(fine["threshold_pressure_bar"].iloc[0])),
+           "largest_err_pct": float(100 * np.max(np.abs(F - F_fine))
+                                    / max(np.max(F_fine), MIN_SCALE_N))}
+    if not above.any():
+        return {**row, "relative_error": 0.0, "shift_per_threshold": 0.0}
+    # the slope's error where the threshold's is a small part of the force: P >= 2 P*
+    far = above & (P >= 2.0 * P_star)
+    relative = float(np.max(np.abs(F[far] - F_fine[far]) / F[far], initial=0.0))
+    slope = np.max(F[above] / (P[above] - P_star))  # threshold-linear: one slope
+    left = np.maximum(np.abs(F - F_fine) - relative * F, 0.0)
+    shift = float(np.max(left) / slope / P_star) if P_star > 0 else 0.0
+    return {**row, "relative_error": relative, "shift_per_threshold": shift}
+
+
+def measure(n_muscles: int, seed: int, out=MESH_ERRORS_FILE, workers: int | None = None,
+            scheduler: str | None = None, cache_dir=None, progress: bool = True):
+    """Solve ``n_muscles`` fresh random muscles of the practical range
+    (:func:`mkm.fem.sampling.draw_muscles`, ``seed``) at every mesh of :data:`MESHES` and the
+    fine one (:data:`PRESSURES_BAR`; the batch runner: local workers or the Dask cluster at
+    ``scheduler``) and write one row per muscle and mesh to ``out`` with its sidecar. A muscle
+    whose fine sweep fails anywhere is recorded with ``fe_failed`` and not scored."""
+    import pandas as pd
+
+    from mkm.fem.batch import Job, Runner
+    from mkm.fem.sampling import draw_muscles
+
+    drawn = draw_muscles(int(n_muscles), seed)
+    frames = {}
+    with Runner(workers, scheduler) as runner:
+        for mesh in (*MESHES, "fine"):
+            jobs = [Job(model="axisym", mesh=mesh, D0_mm=m.D0_mm, t0_mm=m.t0_mm, eps=m.eps,
+                        L0_mm=m.L0_mm, theta0_deg=m.theta0_deg, pressure_bar=PRESSURES_BAR,
+                        C10_MPa=m.C10_MPa, C01_MPa=m.C01_MPa) for m in drawn.muscles]
+            frame, done = runner.run(jobs, cache_dir=cache_dir, progress=progress,
+                                     desc=f"FE {mesh} mesh, {n_muscles} muscles")
+            frame.insert(0, "muscle", np.repeat(np.arange(len(jobs)), len(PRESSURES_BAR)))
+            frames[mesh] = frame
+    rows = []
+    for k, muscle in enumerate(drawn.muscles):
+        fine = frames["fine"][frames["fine"]["muscle"] == k]
+        base = {"muscle": k, **{name: getattr(muscle, name) for name in
+                                ("D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg", "C10_MPa",
+                                 "C01_MPa")}}
+        for mesh in MESHES:
+            sweep = frames[mesh][frames[mesh]["muscle"] == k]
+            if not (fine["converged"].all() and sweep["converged"].all()):
+                rows.append({**base, "mesh": mesh, "fe_failed": True})
+                continue
+            rows.append({**base, **_muscle_rows(mesh, sweep, fine), "fe_failed": False})
+    table = pd.DataFrame(rows)
+    info = {**provenance(), "what": "FE mesh errors against the fine mesh (mkm.mesh_errors)",
+            "draw": drawn.record(), "pressure_bar": list(PRESSURES_BAR),
+            "meshes": list(MESHES), "model_version": done["model_version"],
+            "fe_failed_muscles": int(table.groupby("muscle")["fe_failed"].any().sum())}
+    write_csv_with_sidecar(out, table.to_csv(index=False, lineterminator="\n"), info)
+    return table, info
+
+
+@cache
+def mesh_model(path: Path | str = MESH_ERRORS_FILE) -> dict[str, tuple[float, float]]:
+    """Per mesh ``(a, b)``: the largest threshold error (over ``P*``) and relative error over
+    the measured muscles (:func:`_muscle_rows`), times :data:`SAFETY`; empty without a
+    table."""
+    import pandas as pd
+
+    path = Path(path)
+    if not path.is_file():
+        return {}
+    table = pd.read_csv(path)
+    scored = table[~table["fe_failed"].astype(bool)]
+    return {mesh: (SAFETY * float(rows["shift_per_threshold"].max()),
+                   SAFETY * float(rows["relative_error"].max()))
+            for mesh, rows in scored.groupby("mesh")}
+
+
+def point_bound_pct(force_N, pressure_bar, threshold_bar, geometry, a: float,
+                    b: float) -> np.ndarray:
+    """Per point, the bound [%] of a mesh's force against the fine mesh's, ``a P* A + b F``
+    relative to the largest force of its muscle in the call less its own bound (Equation 7's
+    scale: a single point is its own; never below 1 N).
+
+    ``force_N``, ``pressure_bar``, ``threshold_bar`` (the mesh's ``P*``) per point; ``geometry``
+    ``(n, k)``: the points of one muscle share a row. A point at zero force within ``a P*`` of
+    the threshold (the fine force may have started) takes the slope of its muscle's points
+    above the threshold; with none, it has no bound (inf).
+    """
+    F, P, P_star = (np.ravel(np.asarray(v, dtype=float)) for v in
+                    (force_N, pressure_bar, threshold_bar))
+    bound = np.full(F.shape, np.inf)
+    _, which = np.unique(np.asarray(geometry), axis=0, return_inverse=True)
+    which = which.ravel()
+    for g in np.unique(which):
+        here = np.flatnonzero(which == g)
+        f, p, star = F[here], P[here], P_star[here]
+        above = f > 0
+        slope = np.where(above, f / np.maximum(p - star, 1e-12), np.nan)
+        muscle_slope = np.nanmax(slope) if above.any() else np.nan
+        slope = np.where(above, slope, np.where(p > star * (1 - a), muscle_slope, 0.0))
+        error_N = a * star * slope + b * f
+        scale = max(np.max(f - error_N, initial=0.0), MIN_SCALE_N)
+        bound[here] = np.where(np.isfinite(error_N), 100.0 * error_N / scale, np.inf)
+    return bound
+
+
+def summary_line(path: Path | str = MESH_ERRORS_FILE) -> str:
+    """The model in words, for ``auto``'s explanation."""
+    model = mesh_model(path)
+    return "; ".join(f"{mesh}: {100 * a:.3f} % of P* x the slope + {100 * b:.3f} % of the "
+                     "force" for mesh, (a, b) in model.items())
