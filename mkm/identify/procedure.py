@@ -195,6 +195,13 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         free, free_boot, rubber = _rubber_ratio(source, runs, best, seed)
         if rubber["separated"]:
             best, boot = free, free_boot
+        elif "ratio_ci" in rubber:
+            low, high = rubber["ratio_ci"]
+            notes.append(f"C10 and C01 not separated by these runs (C01/C10 95 % interval "
+                         f"{low:.3g}-{high:.3g}): one rubber scale at Silastic S's ratio "
+                         f"{SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa:.3g} assumed; the C10 and "
+                         "C01 written are that assumption's (the stiffness the runs fix, "
+                         "not two measured constants)")
     fitness = goodness.assess(runs, best)
     boot = goodness.widen(boot, best, fitness)
     notes += [line for line in (fitness.line(),) if line]
