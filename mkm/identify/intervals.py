@@ -134,3 +134,27 @@ def robust_covariance(draws: np.ndarray) -> np.ndarray:
     R = 2 * np.sin(np.pi / 6 * rho)
     np.fill_diagonal(R, 1.0)
     return R * np.outer(sd, sd)
+
+
+def extend(boot: dict, result: Fit, terms: dict) -> dict:
+    """``boot`` with each interval of an identifiable parameter extended by the model-form
+    ``terms`` (:func:`mkm.identify.procedure.model_form_terms`): a ``one-sided`` term's shift
+    ``d`` extends it to hold the interval moved by ``d`` too, a ``symmetric`` one by ``|d|``
+    on both sides; clipped to the parameter's bounds. The intervals before are kept as
+    ``before_model_form``."""
+    applied = [t for t in terms.values() if "shift" in t]
+    if not applied:
+        return boot
+    interval = dict(boot["interval"])
+    for name, (low, high) in boot["interval"].items():
+        if not boot["identifiable"].get(name, True):
+            continue
+        for term in applied:
+            d = term["shift"].get(name, 0.0)
+            if term["kind"] == "one-sided":
+                low, high = min(low, low + d), max(high, high + d)
+            else:
+                low, high = low - abs(d), high + abs(d)
+        lo_b, hi_b = result.bounds[name]
+        interval[name] = (max(low, lo_b), min(high, hi_b))
+    return {**boot, "interval": interval, "before_model_form": boot["interval"]}

@@ -30,10 +30,11 @@ from mkm.fem.batch import Runner
 from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import MODELS, STATIC_FAMILIES
 from mkm.fem.materials import SILASTIC_S
+from mkm.fem.options import BRAIDS
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
-from mkm.identify.intervals import CONFOUNDED, bootstrap
+from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
 from mkm.identify.result import Identification
 from mkm.identify.runs import load_runs
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
@@ -61,7 +62,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
              search: str = "surrogate", surrogate=None, seed: int = 0,
              notify=lambda message: None, workers: int | None = None,
              scheduler: str | None = None, cache_dir=DEFAULT_CACHE_DIR,
-             calibration: Calibration | None = None) -> Identification:
+             calibration: Calibration | None = None, braid: str | None = None
+             ) -> Identification:
     """Identify the muscle of ``run_dirs`` (see the module docstring).
 
     Parameters
@@ -93,6 +95,10 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         interrupted solves only what it has not solved yet; None: no cache.
     calibration : Calibration, optional
         Where the nominal muscle's angle comes from (None: the shipped one).
+    braid : {"bonded", "sliding"}, optional
+        The muscle's braid when it is known: the confirmation model takes it and no braid
+        model-form term is added (:func:`model_form_terms`). None: ``model``'s own braid, and
+        the intervals carry the other braid's shift.
     """
     started = time.perf_counter()
     groups = fitting.parse_groups(params)
@@ -100,6 +106,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         raise ValueError(f"search={search!r} is invalid: expected one of {', '.join(SEARCHES)}")
     runs = load_runs(run_dirs)
     groups, notes = supported_groups(groups, runs)
+    if braid is not None:
+        model = _with_braid(model, braid)
     with Runner(workers, scheduler) as runner:
         fe = ModelStatic(model, runner, cache_dir)
         if "gap" in groups and "gap_mm" not in fe.spec.entry.parameters:
@@ -109,7 +117,7 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
                              f"--model {model!r} has none (expected one of "
                              f"{', '.join(gapped)})")
         result = _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
-                           calibration)
+                           calibration, braid)
         result.fe_workers = runner.describe()
     return result
 
@@ -133,7 +141,23 @@ def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
     return tuple(kept), notes
 
 
-def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration):
+def _with_braid(model: str, braid: str) -> str:
+    """``model``'s spec with the braid ``braid``; ``ValueError`` when it has no braid option or
+    ``braid`` is not one of :data:`mkm.fem.options.BRAIDS`."""
+    from mkm.registry import parse_spec
+
+    if braid not in BRAIDS:
+        raise ValueError(f"--braid {braid!r}: expected one of {', '.join(BRAIDS)}")
+    spec = parse_spec(model)
+    if "braid" not in spec.entry.parameters:
+        braided = [e.name for e in MODELS.entries() if "braid" in e.parameters]
+        raise ValueError(f"--braid {braid}: --model {model!r} has no braid option (expected "
+                         f"one of {', '.join(braided)})")
+    return spec.with_params(braid=braid).text
+
+
+def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration,
+              braid=None):
     L0_mm = float(runs[0].muscle["L0_mm"])
     nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
                                      .params()["theta0_deg"])
@@ -204,6 +228,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                          "not two measured constants)")
     fitness = goodness.assess(runs, best)
     boot = goodness.widen(boot, best, fitness)
+    notify("model-form terms: the FE model at the optimum (and the other braid)")
+    terms = model_form_terms(source, fe, runs, best, braid)
+    boot = extend(boot, best, terms)
     notes += [line for line in (fitness.line(),) if line]
     notes += _identifiability(runs, best, boot)
     if best.at_edge:
@@ -235,7 +262,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         runs=runs, groups=groups, fit=best, bootstrap=boot, candidates=candidates,
         confirmation=confirmation, checks=checks, notes=notes, model=fe.name,
         searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started,
-        goodness=fitness, rubber=rubber)
+        goodness=fitness, rubber=rubber, model_form=terms)
 
 
 def _rms(r) -> float:
@@ -282,6 +309,65 @@ def instrument_terms(runs) -> dict:
     accuracy = min(r.monitor_accuracy_bar for r in runs)
     return {"sensitivity_tolerance": max(r.sensitivity_tolerance for r in runs),
             "prior_sd": {"pressure_offset_bar": accuracy / np.sqrt(3.0)}}
+
+
+def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> dict:
+    """What the fit's own model may have wrong, as the shift of every fitted parameter a refit
+    would make (one Gauss-Newton step from the optimum with its Jacobian, on the static force's
+    change; one FE sweep per run each):
+
+    - ``fe_correction`` (when the fit ran on the surrogate corrected by the FE model at the
+      first optimum): the FE model against the corrected surrogate at the final optimum, whose
+      difference the correction at one point leaves (symmetric: an error of unknown sign);
+    - ``braid`` (when the muscle's braid is not given and ``fe`` has the option): the other
+      braid of :data:`mkm.fem.options.BRAIDS` against ``fe``'s at the optimum: the runs cannot
+      tell a sliding sleeve from a bonded braid (chi2/nu stays near 1), so the intervals hold
+      both (one-sided: the other braid's estimate).
+
+    Returns ``{term: {"kind", "what", "shift": {name: value}}}`` (and a ``skipped`` reason
+    where a term does not apply)."""
+    terms: dict = {}
+    values = best.values
+    fe_tables = None
+    if source is not fe:
+        fe_tables = fe.tables(runs, values)
+        terms["fe_correction"] = {
+            "kind": "symmetric", "what": f"{fe.name} minus {source.name} at the optimum",
+            "shift": _shift(source, runs, best, [
+                (g, F - np.interp(g, *t)) for (g, F), t in
+                zip(fe_tables, source.tables(runs, values), strict=True)])}
+    if braid is not None:
+        terms["braid"] = {"skipped": f"the braid is given ({braid})"}
+    elif "braid" not in fe.spec.entry.parameters:
+        terms["braid"] = {"skipped": f"{fe.name} has no braid option"}
+    else:
+        current = dict(fe.spec.params).get("braid", BRAIDS[0])
+        other = next(b for b in BRAIDS if b != current)
+        alternative = ModelStatic(fe.spec.with_params(braid=other).text, fe.runner,
+                                  fe.cache_dir)
+        fe_tables = fe_tables or fe.tables(runs, values)
+        terms["braid"] = {
+            "kind": "one-sided", "what": f"{alternative.name} minus {fe.name} at the optimum",
+            "shift": _shift(source, runs, best, [
+                (g, F - np.interp(g, *t)) for (g, F), t in
+                zip(alternative.tables(runs, values), fe_tables, strict=True)])}
+    return terms
+
+
+def _shift(source, runs, best, differences) -> dict[str, float]:
+    """The refit's shift of ``best``'s parameters when the static force of each run changes by
+    ``differences`` (per run: pressures and the change there): ``-(J'J)^-1 J' dr``, the change
+    ``dr`` of the hold residuals through the friction and creep of each run's trace."""
+    base = fitting.traces(source, runs, best.values)
+    moved = fitting.traces(Corrected(source, differences), runs, best.values)
+    holds = [run.hold >= 0 for run in runs]
+    dr = np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds, strict=True)])
+    J = best.jacobian
+    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
+    step = np.zeros(len(best.names))
+    if usable.any():
+        step[usable] = -np.linalg.lstsq(J[:, usable], dr, rcond=None)[0]
+    return {n: float(v) for n, v in zip(best.names, step, strict=True)}
 
 
 def _rubber_ratio(source, runs, best, seed):

@@ -77,6 +77,8 @@ class Identification:
     rubber: dict = field(default_factory=dict)  # whether the runs separate C10 and C01
     files: dict = field(default_factory=dict)
     goodness: Goodness | None = None  # the misfit record (mkm.identify.goodness)
+    #: the model-form terms in the intervals (mkm.identify.procedure.model_form_terms)
+    model_form: dict = field(default_factory=dict)
 
     @property
     def values(self) -> dict[str, float]:
@@ -182,11 +184,16 @@ class Identification:
         """What a prediction band needs (:func:`mkm.identify.band.prediction_band`): the static
         parameters' values and covariance (the bootstrap's, as its intervals see it:
         :func:`mkm.identify.intervals.robust_covariance`; the monitor's offset and the load
-        cell's tolerance inside), the load cell's tolerance itself, and on a misfit the
-        residual the steps' noise does not explain (``misfit_rms_N``)."""
+        cell's tolerance inside; plus each model-form term's shift ``d``: ``d d'``, over 3 for a
+        one-sided one, the other braid's estimate as a uniform between the two), the load
+        cell's tolerance itself, and on a misfit the residual the steps' noise does not explain (``misfit_rms_N``)."""
         names = [n for n in STATIC_NAMES if n in self.fit.names]
         index = [self.fit.names.index(n) for n in names]
-        covariance = self.bootstrap["covariance"][np.ix_(index, index)]
+        covariance = self.bootstrap["covariance"][np.ix_(index, index)].copy()
+        for term in self.model_form.values():  # a shift d: variance d d' (uniform 0..d: /3)
+            if "shift" in term:
+                d = np.array([term["shift"].get(n, 0.0) for n in names])
+                covariance += np.outer(d, d) / (3.0 if term["kind"] == "one-sided" else 1.0)
         misfit = self.goodness.discrepancy_rms_N if self.goodness else 0.0
         return {"parameters": names, "values": [self.fit.values[n] for n in names],
                 "covariance": covariance.tolist(),
@@ -252,7 +259,12 @@ class Identification:
                                 f"load cell's sensitivity uniform within "
                                 f"+-{self.sensitivity_tolerance:g}"
                                 + (f"; widened x{self.goodness.birge_ratio:.3g} by the misfit"
-                                   if self.goodness and self.goodness.birge_ratio > 1 else "")),
+                                   if self.goodness and self.goodness.birge_ratio > 1 else "")
+                                + "".join(f"; extended by the model-form term {name} "
+                                          f"({term['what']}, {term['kind']})"
+                                          for name, term in self.model_form.items()
+                                          if "shift" in term)),
+            "model_form": self.model_form,
             "correlation": self.correlation().round(4).to_dict(),
             "model_selection": {"criterion": "BIC of the hold residuals",
                                 "candidates": self.candidates},
@@ -333,7 +345,8 @@ class Identification:
                       "assumed": record["assumed"], "parameters": record["parameters"],
                       "interval_method": record["interval_method"], "dropped": self.dropped,
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"],
-                      "misfit": record["goodness_of_fit"], "band": record["band"]}
+                      "misfit": record["goodness_of_fit"], "band": record["band"],
+                      "model_form": record["model_form"]}
         reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}
