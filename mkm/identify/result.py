@@ -186,7 +186,8 @@ class Identification:
         :func:`mkm.identify.intervals.robust_covariance`; the monitor's offset and the load
         cell's tolerance inside; plus each model-form term's shift ``d``: ``d d'``, over 3 for a
         one-sided one, the other braid's estimate as a uniform between the two), the load
-        cell's tolerance itself, and on a misfit the residual the steps' noise does not explain (``misfit_rms_N``)."""
+        cell's tolerance itself, and on a misfit the residual the steps' noise does not explain
+        (``misfit_rms_N``)."""
         names = [n for n in STATIC_NAMES if n in self.fit.names]
         index = [self.fit.names.index(n) for n in names]
         covariance = self.bootstrap["covariance"][np.ix_(index, index)].copy()
