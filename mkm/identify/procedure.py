@@ -212,7 +212,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         confirmation["note"] = "searched with the FE model itself"
 
     notify("intervals: bootstrap over steps")
-    boot = bootstrap(best, seed=seed, **instrument_terms(runs))
+    boot = bootstrap(best, seed=seed, **instrument_terms(runs),
+                     uniform_terms=shared_terms(source, runs, best))
     rubber = {"separated": False, "why": "runs at one eps: the rubber's ratio not tested"}
     if "rubber_scale" in best.names and len({round(r.eps, 4) for r in runs}) > 1:
         notify("does the data separate C10 and C01? (their ratio fitted too)")
@@ -311,6 +312,31 @@ def instrument_terms(runs) -> dict:
             "prior_sd": {"pressure_offset_bar": accuracy / np.sqrt(3.0)}}
 
 
+def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
+    """What every run shares and the fit takes as given, as the bootstrap's uniform terms
+    (:func:`mkm.identify.intervals.bootstrap`): the hold residuals' sensitivity to each (a
+    forward difference of a tenth of its bound) and its +- bound: the tube's declared wall
+    and diameter where not fitted (their declared tolerances, the largest of the runs'), and
+    the pressure monitor's gain (its declared accuracy reached at the regulator's top pressure:
+    the offset is fitted, a reading error growing with the pressure is not). The data see
+    these only through the other parameters: the intervals carry them."""
+    bounds = {n: (max(r.geometry_tolerance_mm.get(n, 0.0) for r in runs),
+                  float(runs[0].muscle[n])) for n in fitting.GEOMETRY if n not in best.names}
+    bounds["pressure_gain"] = (min(r.monitor_accuracy_bar / r.monitor_range_bar
+                                   for r in runs), 1.0)
+    holds = [run.hold >= 0 for run in runs]
+    out, base = {}, None
+    for name, (half, at) in bounds.items():
+        if not half > 0:
+            continue
+        base = base or fitting.traces(source, runs, best.values)
+        step = 0.1 * half
+        moved = fitting.traces(source, runs, {**best.values, name: at + step})
+        out[name] = (np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds,
+                                                                   strict=True)]) / step, half)
+    return out
+
+
 def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> dict:
     """What the fit's own model may have wrong, as the shift of every fitted parameter a refit
     would make (one Gauss-Newton step from the optimum with its Jacobian, on the static force's
@@ -386,7 +412,8 @@ def _rubber_ratio(source, runs, best, seed):
                                                             share_box)):
         return best, None, {"separated": False, "why": "C01's share reached the search box "
                             f"({source.name}'s) before the runs fixed it"}
-    boot = bootstrap(free, seed=seed, **instrument_terms(runs))
+    boot = bootstrap(free, seed=seed, **instrument_terms(runs),
+                     uniform_terms=shared_terms(source, runs, free))
     i = free.names.index("c01_fraction")
     share = free.values["c01_fraction"]
     ratio = share / (1.0 - share)

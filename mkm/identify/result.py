@@ -103,11 +103,29 @@ class Identification:
         def add(name, value, low=math.nan, high=math.nan, status="fitted", source="the runs"):
             rows.append((name, value, low, high, UNITS.get(name, ""), status, source))
 
-        def replicated(function):  # a derived parameter's interval, draws within bounds
-            clipped = {n: np.clip(column, *self.fit.bounds[n])
-                       for n, column in zip(names, draws.T, strict=True)}
-            values = function({**self.fit.values, **clipped})
-            return tuple(float(v) for v in np.percentile(values, [2.5, 97.5]))
+        def replicated(function):
+            """A derived parameter's interval: the draws within bounds, widened as the fitted
+            ones (the misfit's Birge ratio about the estimate) and moved by each model-form
+            term's shift (both ways for a symmetric one)."""
+            def interval(shift):
+                clipped = {n: np.clip(column + shift.get(n, 0.0), *self.fit.bounds[n])
+                           for n, column in zip(names, draws.T, strict=True)}
+                values = function({**self.fit.values, **clipped})
+                return np.percentile(values, [2.5, 97.5])
+
+            centre = float(function(self.fit.values))
+            factor = self.goodness.birge_ratio if self.goodness else 1.0
+            base = interval({})
+            low, high = (centre + factor * (v - centre) for v in base)
+            for term in self.model_form.values():
+                if "shift" not in term:
+                    continue
+                d = term["shift"]
+                for shift in ([d] if term["kind"] == "one-sided" else
+                              [d, {n: -v for n, v in d.items()}]):
+                    moved = interval(shift) - base
+                    low, high = min(low, low + moved[0]), max(high, high + moved[1])
+            return float(low), float(high)
 
         values = self.values
         for name in names:
@@ -148,8 +166,10 @@ class Identification:
                 add(name, value, *interval[name])
         for name in GEOMETRY:
             if name not in names:
+                tolerance = max(r.geometry_tolerance_mm.get(name, 0.0) for r in self.runs)
                 add(name, float(self.runs[0].muscle[name]), status="assumed",
-                    source="the runs' declared muscle (run.json)")
+                    source=f"the runs' declared muscle (run.json), +-{tolerance:g} mm its "
+                           "declared tolerance, drawn into every interval")
         where = ("the load cell's declared tolerance (run.json calibration)"
                  if all(r.instrument_declared for r in self.runs) else
                  "the configuration's default load-cell tolerance (a run declares none)")
@@ -164,6 +184,13 @@ class Identification:
         """The load cell's declared sensitivity tolerance (a fraction; the largest of the
         runs')."""
         return max(r.sensitivity_tolerance for r in self.runs)
+
+    def _geometry_tolerances(self) -> dict[str, float]:
+        """The declared wall's and diameter's tolerances drawn into the intervals (those not
+        fitted)."""
+        out = {n: max(r.geometry_tolerance_mm.get(n, 0.0) for r in self.runs)
+               for n in GEOMETRY if n not in self.fit.names}
+        return {n: t for n, t in out.items() if t > 0}
 
     def rubber_correlation(self) -> float:
         """The bootstrap correlation of C10 and C01 (where the runs separate them)."""
@@ -259,6 +286,10 @@ class Identification:
                                 f"optimum, percentile 95 %, seed {self.bootstrap['seed']}; the "
                                 f"load cell's sensitivity uniform within "
                                 f"+-{self.sensitivity_tolerance:g}"
+                                + "".join(f"; the declared {n} uniform within +-{t:g} mm"
+                                          for n, t in self._geometry_tolerances().items())
+                                + "; the pressure monitor's gain uniform within its declared "
+                                  "accuracy at the regulator's top pressure"
                                 + (f"; widened x{self.goodness.birge_ratio:.3g} by the misfit"
                                    if self.goodness and self.goodness.birge_ratio > 1 else "")
                                 + "".join(f"; extended by the model-form term {name} "
