@@ -8,12 +8,16 @@
 3. Confirm with the FE model (one sweep per run at the optimum): the surrogate is corrected by
    the difference the FE shows there and the fit repeated on the corrected force.
 4. 95 % intervals and correlation by a bootstrap over steps (:mod:`mkm.identify.intervals`),
-   the load cell's declared tolerance and the monitor offset's prior inside, and what the runs
-   cannot separate (a note only where it makes an interval wide: :data:`PRECISION`); the
-   goodness of fit (:mod:`mkm.identify.goodness`): a misfit beyond the steps' noise is named in
-   one line and widens the intervals.
+   with what every step shares inside: the load cell's declared tolerance, the monitor
+   offset's prior and its gain, the declared wall and diameter within their tolerances
+   (:func:`shared_terms`); what the runs cannot separate (a note only where it makes an
+   interval wide: :data:`PRECISION`); the goodness of fit (:mod:`mkm.identify.goodness`): a
+   misfit beyond the steps' noise is named in one line and widens the intervals; the
+   model-form terms (:func:`model_form_terms`: the FE model against the corrected surrogate,
+   the other braid) extend them.
 5. The rubber: C01's share fitted as well; C10 and C01 reported apart only where the runs
-   separate them (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`), else one scale.
+   separate them (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`; a rejected Silastic ratio
+   counts only with the braid known), else one scale and a note.
 6. Leave-one-run-out (and one length out, for runs of several lengths): each run predicted by
    the FE model at the parameters fitted to the others, against the nominal model (the
    calibrated angle, Silastic S, no friction or creep).
