@@ -80,7 +80,10 @@ def main(argv=None) -> int:
                    "theta0_error_deg": result.fit.values["theta0_deg"] - truth["theta0_deg"],
                    "seconds": seconds}
             rows.append(row)
-            details.append({"truth": truth, "notes": result.notes})
+            details.append({"truth": truth, "notes": result.notes,
+                            "model_form": result.model_form,
+                            "t0_ci_before_model_form_mm": result.bootstrap.get(
+                                "before_model_form", {}).get("t0_mm")})
             print(f"draw {k}: declared {declared:.2f} mm, fitted {t0:.3f} mm [{low:.3f}, "
                   f"{high:.3f}] ({'covers' if row['covered'] else 'MISSES'} {TRUE_T0_MM:g}); "
                   f"theta0 error {row['theta0_error_deg']:+.3f} deg; {seconds:.1f} s",
