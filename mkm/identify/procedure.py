@@ -373,9 +373,8 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
         fe_tables = fe.tables(runs, values)
         terms["fe_correction"] = {
             "kind": "symmetric", "what": f"{fe.name} minus {source.name} at the optimum",
-            "shift": _shift(source, runs, best, [
-                (g, F - np.interp(g, *t)) for (g, F), t in
-                zip(fe_tables, source.tables(runs, values), strict=True)])}
+            "shift": _shift(source, runs, best,
+                            _minus(fe_tables, source.tables(runs, values)))}
     if braid is not None:
         terms["braid"] = {"skipped": f"the braid is given ({braid})"}
     elif "braid" not in fe.spec.entry.parameters:
@@ -388,10 +387,15 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
         fe_tables = fe_tables or fe.tables(runs, values)
         terms["braid"] = {
             "kind": "one-sided", "what": f"{alternative.name} minus {fe.name} at the optimum",
-            "shift": _shift(source, runs, best, [
-                (g, F - np.interp(g, *t)) for (g, F), t in
-                zip(alternative.tables(runs, values), fe_tables, strict=True)])}
+            "shift": _shift(source, runs, best,
+                            _minus(alternative.tables(runs, values), fe_tables))}
     return terms
+
+
+def _minus(tables, others) -> list[tuple]:
+    """Per run: ``tables``' pressures and their force less ``others``' there."""
+    return [(grid, F - np.interp(grid, *other))
+            for (grid, F), other in zip(tables, others, strict=True)]
 
 
 def _shift(source, runs, best, differences) -> dict[str, float]:
