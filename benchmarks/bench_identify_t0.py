@@ -8,7 +8,9 @@ Run outside the test suite:
 Each draw is a fresh muscle of :func:`bench_identify.draw` (theta0 28-38 deg, rubber x0.6-1.5,
 friction 0-8 %, creep 0-4 %) on the simulated FE bench with the configuration's 3 mm wall; its
 runs at eps 0 and 12.2 % are acquired, the truth deleted, and run.json's declared wall moved by
-0.3-0.5 mm (either sign: what a third party's guess may be off by). ``identify`` then fits the
+0.3-0.5 mm (either sign: what a third party's guess may be off by); ``--d0-tolerance-mm``
+sets the diameter's declared tolerance (0: the wall's interval without it, the FE-correction
+term and the noise alone). ``identify`` then fits the
 wall with the braid angle, rubber, friction, creep and the monitor's offset (surrogate search,
 FE confirmation). One row per draw: the declared and fitted wall, its 95 % interval, whether it
 covers the truth, the braid angle's error, and seconds. The issue's target: the wall within
@@ -35,10 +37,14 @@ TRUE_T0_MM = 3.0  # the packaged configuration's wall: what the simulator builds
 TARGET_MM = 0.1
 
 
-def declare_wall(run: Path, t0_mm: float) -> None:
-    """Move the wall run.json declares (the simulated muscle keeps its own)."""
+def declare_wall(run: Path, t0_mm: float, D0_tolerance_mm: float | None = None) -> None:
+    """Move the wall run.json declares (the simulated muscle keeps its own); and the diameter's
+    declared tolerance, where given."""
     meta = json.loads((run / "run.json").read_text(encoding="utf-8"))
     meta["muscle"]["t0_mm"] = t0_mm
+    if D0_tolerance_mm is not None:
+        meta.setdefault("calibration", {}).setdefault("muscle_tolerances", {})[
+            "D0_mm"] = D0_tolerance_mm
     (run / "run.json").write_text(json.dumps(meta), encoding="utf-8")
 
 
@@ -46,6 +52,9 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--draws", type=int, default=6)
     parser.add_argument("--seed", type=int, default=None)
+    parser.add_argument("--d0-tolerance-mm", type=float, default=None,
+                        help="the diameter's tolerance run.json declares (default: the "
+                             "configuration's): 0 shows the wall's interval without it")
     parser.add_argument("--out", help="write the rows and provenance as JSON here")
     args = parser.parse_args(argv)
     seed = args.seed if args.seed is not None else int(np.random.SeedSequence().entropy % 2**32)
@@ -59,7 +68,7 @@ def main(argv=None) -> int:
             declared = TRUE_T0_MM + rng.choice([-1.0, 1.0]) * rng.uniform(0.3, 0.5)
             runs = [acquire_truth(truth, eps, Path(tmp) / f"draw{k}") for eps in FIT_EPS]
             for run in runs:
-                declare_wall(run, declared)
+                declare_wall(run, declared, args.d0_tolerance_mm)
             start = time.perf_counter()
             result = identify(runs, params="theta0,rubber,t0,friction,creep,offset")
             seconds = time.perf_counter() - start
@@ -71,7 +80,10 @@ def main(argv=None) -> int:
                    "theta0_error_deg": result.fit.values["theta0_deg"] - truth["theta0_deg"],
                    "seconds": seconds}
             rows.append(row)
-            details.append({"truth": truth, "notes": result.notes})
+            details.append({"truth": truth, "notes": result.notes,
+                            "model_form": result.model_form,
+                            "t0_ci_before_model_form_mm": result.bootstrap.get(
+                                "before_model_form", {}).get("t0_mm")})
             print(f"draw {k}: declared {declared:.2f} mm, fitted {t0:.3f} mm [{low:.3f}, "
                   f"{high:.3f}] ({'covers' if row['covered'] else 'MISSES'} {TRUE_T0_MM:g}); "
                   f"theta0 error {row['theta0_error_deg']:+.3f} deg; {seconds:.1f} s",

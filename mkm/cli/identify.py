@@ -11,6 +11,7 @@ from mkm.cli.common import (
     say,
     with_calibration,
 )
+from mkm.fem.options import BRAIDS
 from mkm.paths import default_out
 
 
@@ -43,6 +44,10 @@ def register(subparsers) -> None:
                         "default %(default)s")
     parser.add_argument("--search", choices=("surrogate", "model"), default="surrogate",
                         help="search with the surrogate (default) or with --model itself")
+    parser.add_argument("--braid", choices=BRAIDS, default=None,
+                        help="the muscle's braid when known (a --model with a braid option): "
+                             "no braid model-form term in the intervals (default: the model's "
+                             "own braid, the intervals holding the other's estimate too)")
     parser.add_argument("--seed", type=int, default=0, help="bootstrap seed (default 0)")
     parser.add_argument("--out", default=None,
                         help="output folder (default mkm-out/identify/<first run>)")
@@ -60,6 +65,7 @@ def _identify(args) -> int:
     args.runs = run_folders(args.runs)
     try:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
+                          braid=args.braid,
                           seed=args.seed, workers=args.workers, scheduler=args.scheduler,
                           notify=lambda line: print(f"{command_name(args)}: {line}",
                                                       file=sys.stderr),

@@ -272,10 +272,13 @@ def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tup
 
 def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
     """The model's force trace [N] at every sample of each run (the static force at the true
-    pressure: the reading less the monitor's offset)."""
+    pressure: the reading less the monitor's offset, over its gain ``pressure_gain``, 1 unless
+    a sensitivity is taken)."""
     tables = source.tables(runs, values)
     offset = values.get("pressure_offset_bar", 0.0)
-    return [force_history(run.time_s, np.interp(run.pressure_bar - offset, *tables[k]),
+    gain = values.get("pressure_gain", 1.0)
+    return [force_history(run.time_s, np.interp((run.pressure_bar - offset) / gain,
+                                                *tables[k]),
                           values["hysteresis_fraction"], values["creep_fraction"],
                           math.exp(values["log_tau"]))
             for k, run in enumerate(runs)]

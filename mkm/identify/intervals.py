@@ -7,10 +7,12 @@ the Jacobian of the optimum (the linearised bootstrap): exact for a model linear
 parameters near the optimum, as this one is over an interval's width, and thousands of
 replicates cost milliseconds instead of thousands of fits.
 
-Two errors every step of a run shares are drawn with each replicate, since resampling steps
-cannot show them: the run's zero (its tare's standard error, normal) and the load cell's
+Errors every step of a run shares are drawn with each replicate, since resampling steps
+cannot show them: the run's zero (its tare's standard error, normal), the load cell's
 sensitivity (uniform within the tolerance the runs declare: the data cannot see it, so the
-interval must carry it). A nuisance parameter with a prior (the pressure monitor's offset,
+interval must carry it) and the tube's declared wall and diameter where they are not fitted
+(uniform within their declared tolerances, through the residuals' sensitivity to each). A
+nuisance parameter with a prior (the pressure monitor's offset,
 within its declared accuracy) adds the prior's information to the normal equations and a draw
 of the prior's centre to each replicate. Intervals are the replicates' 2.5 and 97.5
 percentiles, clipped to the parameter's bounds.
@@ -32,7 +34,8 @@ SENSITIVITY_TOLERANCE = 0.001
 
 def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
               sensitivity_tolerance: float = SENSITIVITY_TOLERANCE,
-              prior_sd: dict[str, float] | None = None) -> dict:
+              prior_sd: dict[str, float] | None = None,
+              uniform_terms: dict[str, tuple[np.ndarray, float]] | None = None) -> dict:
     """Replicates of the fitted parameters (internal names), their intervals and correlation.
 
     Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)},
@@ -41,7 +44,9 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     Jacobian is (numerically) zero is not identifiable: the runs do not inform it, its interval
     is its whole bound and its variance a uniform's over it. ``sensitivity_tolerance``: the load
     cell's (a fraction, uniform); ``prior_sd``: a normal prior's standard deviation per
-    parameter, weighed against the residuals' variance.
+    parameter, weighed against the residuals' variance; ``uniform_terms``: an input every
+    run shares and the fit takes as given (the tube's declared wall and diameter), as the
+    residuals' sensitivity to it (one value per residual) and its +- tolerance (uniform).
     """
     names, J, r = result.names, result.jacobian, result.residual_N
     p = len(names)
@@ -75,6 +80,11 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     A = np.einsum("bc,cij->bij", counts, JtJ)
     g = (np.einsum("bc,ci->bi", counts, Jtr) - s[:, None] * np.einsum("bc,ci->bi", counts, JtF)
          - np.einsum("bc,ci->bi", counts * z[:, result.run_of_cluster], Jt1))
+    for column, half in (uniform_terms or {}).values():  # r moves by u column
+        Jtc = np.zeros((n_clusters, use.size))
+        np.add.at(Jtc, result.cluster, J * np.asarray(column, dtype=float)[:, None])
+        u = rng.uniform(-half, half, size=replicates)
+        g += u[:, None] * np.einsum("bc,ci->bi", counts, Jtc)
     x = np.array([result.values[n] for n in names])
     # a prior sd_p on a parameter: the residual r_p = (sigma / sd_p)(x - c), c drawn about
     # the optimum per replicate (the fit itself stays within hard bounds)
@@ -134,3 +144,27 @@ def robust_covariance(draws: np.ndarray) -> np.ndarray:
     R = 2 * np.sin(np.pi / 6 * rho)
     np.fill_diagonal(R, 1.0)
     return R * np.outer(sd, sd)
+
+
+def extend(boot: dict, result: Fit, terms: dict) -> dict:
+    """``boot`` with each interval of an identifiable parameter extended by the model-form
+    ``terms`` (:func:`mkm.identify.procedure.model_form_terms`): a ``one-sided`` term's shift
+    ``d`` extends it to hold the interval moved by ``d`` too, a ``symmetric`` one by ``|d|``
+    on both sides; clipped to the parameter's bounds. The intervals before are kept as
+    ``before_model_form``."""
+    applied = [t for t in terms.values() if "shift" in t]
+    if not applied:
+        return boot
+    interval = dict(boot["interval"])
+    for name, (low, high) in boot["interval"].items():
+        if not boot["identifiable"].get(name, True):
+            continue
+        for term in applied:
+            d = term["shift"].get(name, 0.0)
+            if term["kind"] == "one-sided":
+                low, high = min(low, low + d), max(high, high + d)
+            else:
+                low, high = low - abs(d), high + abs(d)
+        lo_b, hi_b = result.bounds[name]
+        interval[name] = (max(low, lo_b), min(high, hi_b))
+    return {**boot, "interval": interval, "before_model_form": boot["interval"]}

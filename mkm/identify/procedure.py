@@ -8,12 +8,16 @@
 3. Confirm with the FE model (one sweep per run at the optimum): the surrogate is corrected by
    the difference the FE shows there and the fit repeated on the corrected force.
 4. 95 % intervals and correlation by a bootstrap over steps (:mod:`mkm.identify.intervals`),
-   the load cell's declared tolerance and the monitor offset's prior inside, and what the runs
-   cannot separate (a note only where it makes an interval wide: :data:`PRECISION`); the
-   goodness of fit (:mod:`mkm.identify.goodness`): a misfit beyond the steps' noise is named in
-   one line and widens the intervals.
+   with what every step shares inside: the load cell's declared tolerance, the monitor
+   offset's prior and its gain, the declared wall and diameter within their tolerances
+   (:func:`shared_terms`); what the runs cannot separate (a note only where it makes an
+   interval wide: :data:`PRECISION`); the goodness of fit (:mod:`mkm.identify.goodness`): a
+   misfit beyond the steps' noise is named in one line and widens the intervals; the
+   model-form terms (:func:`model_form_terms`: the FE model against the corrected surrogate,
+   the other braid) extend them.
 5. The rubber: C01's share fitted as well; C10 and C01 reported apart only where the runs
-   separate them (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`), else one scale.
+   separate them (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`; a rejected Silastic ratio
+   counts only with the braid known), else one scale and a note.
 6. Leave-one-run-out (and one length out, for runs of several lengths): each run predicted by
    the FE model at the parameters fitted to the others, against the nominal model (the
    calibrated angle, Silastic S, no friction or creep).
@@ -30,10 +34,11 @@ from mkm.fem.batch import Runner
 from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import MODELS, STATIC_FAMILIES
 from mkm.fem.materials import SILASTIC_S
+from mkm.fem.options import BRAIDS
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
-from mkm.identify.intervals import CONFOUNDED, bootstrap
+from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
 from mkm.identify.result import Identification
 from mkm.identify.runs import load_runs
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
@@ -61,7 +66,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
              search: str = "surrogate", surrogate=None, seed: int = 0,
              notify=lambda message: None, workers: int | None = None,
              scheduler: str | None = None, cache_dir=DEFAULT_CACHE_DIR,
-             calibration: Calibration | None = None) -> Identification:
+             calibration: Calibration | None = None, braid: str | None = None
+             ) -> Identification:
     """Identify the muscle of ``run_dirs`` (see the module docstring).
 
     Parameters
@@ -93,6 +99,10 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         interrupted solves only what it has not solved yet; None: no cache.
     calibration : Calibration, optional
         Where the nominal muscle's angle comes from (None: the shipped one).
+    braid : {"bonded", "sliding"}, optional
+        The muscle's braid when it is known: the confirmation model takes it and no braid
+        model-form term is added (:func:`model_form_terms`). None: ``model``'s own braid, and
+        the intervals carry the other braid's shift.
     """
     started = time.perf_counter()
     groups = fitting.parse_groups(params)
@@ -100,6 +110,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         raise ValueError(f"search={search!r} is invalid: expected one of {', '.join(SEARCHES)}")
     runs = load_runs(run_dirs)
     groups, notes = supported_groups(groups, runs)
+    if braid is not None:
+        model = _with_braid(model, braid)
     with Runner(workers, scheduler) as runner:
         fe = ModelStatic(model, runner, cache_dir)
         if "gap" in groups and "gap_mm" not in fe.spec.entry.parameters:
@@ -109,7 +121,7 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
                              f"--model {model!r} has none (expected one of "
                              f"{', '.join(gapped)})")
         result = _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
-                           calibration)
+                           calibration, braid)
         result.fe_workers = runner.describe()
     return result
 
@@ -133,7 +145,23 @@ def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
     return tuple(kept), notes
 
 
-def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration):
+def _with_braid(model: str, braid: str) -> str:
+    """``model``'s spec with the braid ``braid``; ``ValueError`` when it has no braid option or
+    ``braid`` is not one of :data:`mkm.fem.options.BRAIDS`."""
+    from mkm.registry import parse_spec
+
+    if braid not in BRAIDS:
+        raise ValueError(f"--braid {braid!r}: expected one of {', '.join(BRAIDS)}")
+    spec = parse_spec(model)
+    if "braid" not in spec.entry.parameters:
+        braided = [e.name for e in MODELS.entries() if "braid" in e.parameters]
+        raise ValueError(f"--braid {braid}: --model {model!r} has no braid option (expected "
+                         f"one of {', '.join(braided)})")
+    return spec.with_params(braid=braid).text
+
+
+def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration,
+              braid=None):
     L0_mm = float(runs[0].muscle["L0_mm"])
     nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
                                      .params()["theta0_deg"])
@@ -188,15 +216,36 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         confirmation["note"] = "searched with the FE model itself"
 
     notify("intervals: bootstrap over steps")
-    boot = bootstrap(best, seed=seed, **instrument_terms(runs))
+    boot = bootstrap(best, seed=seed, **instrument_terms(runs),
+                     uniform_terms=shared_terms(source, runs, best))
     rubber = {"separated": False, "why": "runs at one eps: the rubber's ratio not tested"}
+    terms = None
     if "rubber_scale" in best.names and len({round(r.eps, 4) for r in runs}) > 1:
         notify("does the data separate C10 and C01? (their ratio fitted too)")
-        free, free_boot, rubber = _rubber_ratio(source, runs, best, seed)
+        free, free_boot, rubber, free_terms = _rubber_ratio(source, fe, runs, best, seed,
+                                                            braid)
         if rubber["separated"]:
-            best, boot = free, free_boot
+            best, boot, terms = free, free_boot, free_terms
+        elif rubber.get("rejects_silastic_ratio") and rubber.get("braid_in_doubt"):
+            low, high = rubber["ratio_ci"]
+            notes.append(f"the runs reject Silastic S's C01/C10 (95 % interval {low:.3g}-"
+                         f"{high:.3g}), but a braid other than {fe.name}'s bends the curve the "
+                         "same way: one rubber scale kept at Silastic S's ratio, its interval "
+                         "holding the other braid's; give --braid if the braid is known, and "
+                         "C10 and C01 are reported apart")
+        elif "ratio_ci" in rubber:
+            low, high = rubber["ratio_ci"]
+            notes.append(f"C10 and C01 not separated by these runs (C01/C10 95 % interval "
+                         f"{low:.3g}-{high:.3g}): one rubber scale at Silastic S's ratio "
+                         f"{SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa:.3g} assumed; the C10 and "
+                         "C01 written are that assumption's (the stiffness the runs fix, "
+                         "not two measured constants)")
     fitness = goodness.assess(runs, best)
     boot = goodness.widen(boot, best, fitness)
+    notify("model-form terms: the FE model at the optimum (and the other braid)")
+    if terms is None:
+        terms = model_form_terms(source, fe, runs, best, braid)
+    boot = extend(boot, best, terms)
     notes += [line for line in (fitness.line(),) if line]
     notes += _identifiability(runs, best, boot)
     if best.at_edge:
@@ -228,7 +277,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         runs=runs, groups=groups, fit=best, bootstrap=boot, candidates=candidates,
         confirmation=confirmation, checks=checks, notes=notes, model=fe.name,
         searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started,
-        goodness=fitness, rubber=rubber)
+        goodness=fitness, rubber=rubber, model_form=terms)
 
 
 def _rms(r) -> float:
@@ -277,28 +326,119 @@ def instrument_terms(runs) -> dict:
             "prior_sd": {"pressure_offset_bar": accuracy / np.sqrt(3.0)}}
 
 
-def _rubber_ratio(source, runs, best, seed):
-    """The fit with C01's share of the rubber free, its bootstrap, and whether the runs
-    separate C10 and C01 (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`)."""
+def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
+    """What every run shares and the fit takes as given, as the bootstrap's uniform terms
+    (:func:`mkm.identify.intervals.bootstrap`): the hold residuals' sensitivity to each (a
+    forward difference of a tenth of its bound) and its +- bound: the tube's declared wall
+    and diameter where not fitted (their declared tolerances, the largest of the runs'), and
+    the pressure monitor's gain (its declared accuracy reached at the regulator's top pressure:
+    the offset is fitted, a reading error growing with the pressure is not). The data see
+    these only through the other parameters: the intervals carry them."""
+    bounds = {n: (max(r.geometry_tolerance_mm.get(n, 0.0) for r in runs),
+                  float(runs[0].muscle[n])) for n in fitting.GEOMETRY if n not in best.names}
+    bounds["pressure_gain"] = (min(r.monitor_accuracy_bar / r.monitor_range_bar
+                                   for r in runs), 1.0)
+    holds = [run.hold >= 0 for run in runs]
+    out, base = {}, None
+    for name, (half, at) in bounds.items():
+        if not half > 0:
+            continue
+        base = base or fitting.traces(source, runs, best.values)
+        step = 0.1 * half
+        moved = fitting.traces(source, runs, {**best.values, name: at + step})
+        out[name] = (np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds,
+                                                                   strict=True)]) / step, half)
+    return out
+
+
+def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> dict:
+    """What the fit's own model may have wrong, as the shift of every fitted parameter a refit
+    would make (one Gauss-Newton step from the optimum with its Jacobian, on the static force's
+    change; one FE sweep per run each):
+
+    - ``fe_correction`` (when the fit ran on the surrogate corrected by the FE model at the
+      first optimum): the FE model against the corrected surrogate at the final optimum, whose
+      difference the correction at one point leaves (symmetric: an error of unknown sign);
+    - ``braid`` (when the muscle's braid is not given and ``fe`` has the option): the other
+      braid of :data:`mkm.fem.options.BRAIDS` against ``fe``'s at the optimum: the runs cannot
+      tell a sliding sleeve from a bonded braid (chi2/nu stays near 1), so the intervals hold
+      both (one-sided: the other braid's estimate).
+
+    Returns ``{term: {"kind", "what", "shift": {name: value}}}`` (and a ``skipped`` reason
+    where a term does not apply)."""
+    terms: dict = {}
+    values = best.values
+    fe_tables = None
+    if source is not fe:
+        fe_tables = fe.tables(runs, values)
+        terms["fe_correction"] = {
+            "kind": "symmetric", "what": f"{fe.name} minus {source.name} at the optimum",
+            "shift": _shift(source, runs, best,
+                            _minus(fe_tables, source.tables(runs, values)))}
+    if braid is not None:
+        terms["braid"] = {"skipped": f"the braid is given ({braid})"}
+    elif "braid" not in fe.spec.entry.parameters:
+        terms["braid"] = {"skipped": f"{fe.name} has no braid option"}
+    else:
+        current = dict(fe.spec.params).get("braid", BRAIDS[0])
+        other = next(b for b in BRAIDS if b != current)
+        alternative = ModelStatic(fe.spec.with_params(braid=other).text, fe.runner,
+                                  fe.cache_dir)
+        fe_tables = fe_tables or fe.tables(runs, values)
+        terms["braid"] = {
+            "kind": "one-sided", "what": f"{alternative.name} minus {fe.name} at the optimum",
+            "shift": _shift(source, runs, best,
+                            _minus(alternative.tables(runs, values), fe_tables))}
+    return terms
+
+
+def _minus(tables, others) -> list[tuple]:
+    """Per run: ``tables``' pressures and their force less ``others``' there."""
+    return [(grid, F - np.interp(grid, *other))
+            for (grid, F), other in zip(tables, others, strict=True)]
+
+
+def _shift(source, runs, best, differences) -> dict[str, float]:
+    """The refit's shift of ``best``'s parameters when the static force of each run changes by
+    ``differences`` (per run: pressures and the change there): ``-(J'J)^-1 J' dr``, the change
+    ``dr`` of the hold residuals through the friction and creep of each run's trace."""
+    base = fitting.traces(source, runs, best.values)
+    moved = fitting.traces(Corrected(source, differences), runs, best.values)
+    holds = [run.hold >= 0 for run in runs]
+    dr = np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds, strict=True)])
+    J = best.jacobian
+    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
+    step = np.zeros(len(best.names))
+    if usable.any():
+        step[usable] = -np.linalg.lstsq(J[:, usable], dr, rcond=None)[0]
+    return {n: float(v) for n, v in zip(best.names, step, strict=True)}
+
+
+def _rubber_ratio(source, fe, runs, best, seed, braid):
+    """The fit with C01's share of the rubber free, its bootstrap, whether the runs separate
+    C10 and C01 (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`), and its model-form terms
+    (:func:`model_form_terms`): the ratio's interval holds their shifts too, so that a braid
+    the model does not have, which can look like another ratio, does not separate them."""
     names = (*best.names, "c01_fraction")
     try:
         free = fitting.fit(source, runs, names,
                            {**best.values, "c01_fraction": fitting.SILASTIC_C01_FRACTION})
     except RuntimeError as exc:
         return best, None, {"separated": False, "why": f"the fit with the ratio free failed: "
-                            f"{exc}"}
+                            f"{exc}"}, None
     share_box = tuple(free.bounds["c01_fraction"])
     if share_box != fitting.TERM_BOUNDS["c01_fraction"] and (
             share_box[0] == share_box[1] or fitting.at_edge(free.values["c01_fraction"],
                                                             share_box)):
         return best, None, {"separated": False, "why": "C01's share reached the search box "
-                            f"({source.name}'s) before the runs fixed it"}
-    boot = bootstrap(free, seed=seed, **instrument_terms(runs))
-    i = free.names.index("c01_fraction")
+                            f"({source.name}'s) before the runs fixed it"}, None
+    boot = bootstrap(free, seed=seed, **instrument_terms(runs),
+                     uniform_terms=shared_terms(source, runs, free))
+    terms = model_form_terms(source, fe, runs, free, braid)
     share = free.values["c01_fraction"]
     ratio = share / (1.0 - share)
-    draws = np.clip(boot["draws"][:, i], 0.0, 0.999)
-    low, high = (float(v) for v in np.percentile(draws / (1.0 - draws), [2.5, 97.5]))
+    low, high = (min(v, 0.999) / (1.0 - min(v, 0.999))
+                 for v in extend(boot, free, terms)["interval"]["c01_fraction"])
     static = [free.names.index(n) for n in STATIC_NAMES if n in free.names]
     J = free.jacobian[:, static]
     norms = np.sqrt(np.sum(J**2, axis=0))
@@ -307,16 +447,23 @@ def _rubber_ratio(source, runs, best, seed):
     assumed = SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa
     narrow = ratio > 0 and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio
     rejected = not low <= assumed <= high
-    separated = bool(boot["identifiable"]["c01_fraction"] and (narrow or rejected)
+    # a braid the model may not have bends the curve as another ratio would (measured on the
+    # sliding sleeve: C01 driven to 0): with the braid in doubt, a rejection alone is not a
+    # measurement of the ratio
+    braid_doubt = "shift" in terms.get("braid", {})
+    separated = bool(boot["identifiable"]["c01_fraction"]
+                     and (narrow or (rejected and not braid_doubt))
                      and condition < RATIO_CONDITION)
     return free, boot, {"separated": separated, "ratio_C01_over_C10": ratio,
                         "ratio_ci": [low, high], "condition": condition,
-                        "rejects_silastic_ratio": rejected,
+                        "rejects_silastic_ratio": rejected, "braid_in_doubt": braid_doubt,
                         "rule": f"C10 and C01 reported apart when the condition number of the "
                                 f"static parameters' normalised Fisher matrix is below "
                                 f"{RATIO_CONDITION:.0e} and the 95 % interval of C01/C10 lies "
                                 f"within +-{100 * RATIO_WIDTH:.0f} % of it or excludes Silastic "
-                                f"S's {assumed:.3f}"}
+                                f"S's {assumed:.3f} (the interval holding the model-form "
+                                f"terms' shifts; excluding it is not enough while the braid "
+                                f"is in doubt)"}, terms
 
 
 def _identifiability(runs, best, boot) -> list[str]:

@@ -77,6 +77,8 @@ class Identification:
     rubber: dict = field(default_factory=dict)  # whether the runs separate C10 and C01
     files: dict = field(default_factory=dict)
     goodness: Goodness | None = None  # the misfit record (mkm.identify.goodness)
+    #: the model-form terms in the intervals (mkm.identify.procedure.model_form_terms)
+    model_form: dict = field(default_factory=dict)
 
     @property
     def values(self) -> dict[str, float]:
@@ -101,11 +103,29 @@ class Identification:
         def add(name, value, low=math.nan, high=math.nan, status="fitted", source="the runs"):
             rows.append((name, value, low, high, UNITS.get(name, ""), status, source))
 
-        def replicated(function):  # a derived parameter's interval, draws within bounds
-            clipped = {n: np.clip(column, *self.fit.bounds[n])
-                       for n, column in zip(names, draws.T, strict=True)}
-            values = function({**self.fit.values, **clipped})
-            return tuple(float(v) for v in np.percentile(values, [2.5, 97.5]))
+        def replicated(function):
+            """A derived parameter's interval: the draws within bounds, widened as the fitted
+            ones (the misfit's Birge ratio about the estimate) and moved by each model-form
+            term's shift (both ways for a symmetric one)."""
+            def interval(shift):
+                clipped = {n: np.clip(column + shift.get(n, 0.0), *self.fit.bounds[n])
+                           for n, column in zip(names, draws.T, strict=True)}
+                values = function({**self.fit.values, **clipped})
+                return np.percentile(values, [2.5, 97.5])
+
+            centre = float(function(self.fit.values))
+            factor = self.goodness.birge_ratio if self.goodness else 1.0
+            base = interval({})
+            low, high = (centre + factor * (v - centre) for v in base)
+            for term in self.model_form.values():
+                if "shift" not in term:
+                    continue
+                d = term["shift"]
+                for shift in ([d] if term["kind"] == "one-sided" else
+                              [d, {n: -v for n, v in d.items()}]):
+                    moved = interval(shift) - base
+                    low, high = min(low, low + moved[0]), max(high, high + moved[1])
+            return float(low), float(high)
 
         values = self.values
         for name in names:
@@ -146,8 +166,10 @@ class Identification:
                 add(name, value, *interval[name])
         for name in GEOMETRY:
             if name not in names:
+                tolerance = max(r.geometry_tolerance_mm.get(name, 0.0) for r in self.runs)
                 add(name, float(self.runs[0].muscle[name]), status="assumed",
-                    source="the runs' declared muscle (run.json)")
+                    source=f"the runs' declared muscle (run.json), +-{tolerance:g} mm its "
+                           "declared tolerance, drawn into every interval")
         where = ("the load cell's declared tolerance (run.json calibration)"
                  if all(r.instrument_declared for r in self.runs) else
                  "the configuration's default load-cell tolerance (a run declares none)")
@@ -162,6 +184,13 @@ class Identification:
         """The load cell's declared sensitivity tolerance (a fraction; the largest of the
         runs')."""
         return max(r.sensitivity_tolerance for r in self.runs)
+
+    def _geometry_tolerances(self) -> dict[str, float]:
+        """The declared wall's and diameter's tolerances drawn into the intervals (those not
+        fitted)."""
+        out = {n: max(r.geometry_tolerance_mm.get(n, 0.0) for r in self.runs)
+               for n in GEOMETRY if n not in self.fit.names}
+        return {n: t for n, t in out.items() if t > 0}
 
     def rubber_correlation(self) -> float:
         """The bootstrap correlation of C10 and C01 (where the runs separate them)."""
@@ -182,11 +211,17 @@ class Identification:
         """What a prediction band needs (:func:`mkm.identify.band.prediction_band`): the static
         parameters' values and covariance (the bootstrap's, as its intervals see it:
         :func:`mkm.identify.intervals.robust_covariance`; the monitor's offset and the load
-        cell's tolerance inside), the load cell's tolerance itself, and on a misfit the
-        residual the steps' noise does not explain (``misfit_rms_N``)."""
+        cell's tolerance inside; plus each model-form term's shift ``d``: ``d d'``, over 3 for a
+        one-sided one, the other braid's estimate as a uniform between the two), the load
+        cell's tolerance itself, and on a misfit the residual the steps' noise does not explain
+        (``misfit_rms_N``)."""
         names = [n for n in STATIC_NAMES if n in self.fit.names]
         index = [self.fit.names.index(n) for n in names]
-        covariance = self.bootstrap["covariance"][np.ix_(index, index)]
+        covariance = self.bootstrap["covariance"][np.ix_(index, index)].copy()
+        for term in self.model_form.values():  # a shift d: variance d d' (uniform 0..d: /3)
+            if "shift" in term:
+                d = np.array([term["shift"].get(n, 0.0) for n in names])
+                covariance += np.outer(d, d) / (3.0 if term["kind"] == "one-sided" else 1.0)
         misfit = self.goodness.discrepancy_rms_N if self.goodness else 0.0
         return {"parameters": names, "values": [self.fit.values[n] for n in names],
                 "covariance": covariance.tolist(),
@@ -251,8 +286,17 @@ class Identification:
                                 f"optimum, percentile 95 %, seed {self.bootstrap['seed']}; the "
                                 f"load cell's sensitivity uniform within "
                                 f"+-{self.sensitivity_tolerance:g}"
+                                + "".join(f"; the declared {n} uniform within +-{t:g} mm"
+                                          for n, t in self._geometry_tolerances().items())
+                                + "; the pressure monitor's gain uniform within its declared "
+                                  "accuracy at the regulator's top pressure"
                                 + (f"; widened x{self.goodness.birge_ratio:.3g} by the misfit"
-                                   if self.goodness and self.goodness.birge_ratio > 1 else "")),
+                                   if self.goodness and self.goodness.birge_ratio > 1 else "")
+                                + "".join(f"; extended by the model-form term {name} "
+                                          f"({term['what']}, {term['kind']})"
+                                          for name, term in self.model_form.items()
+                                          if "shift" in term)),
+            "model_form": self.model_form,
             "correlation": self.correlation().round(4).to_dict(),
             "model_selection": {"criterion": "BIC of the hold residuals",
                                 "candidates": self.candidates},
@@ -333,7 +377,8 @@ class Identification:
                       "assumed": record["assumed"], "parameters": record["parameters"],
                       "interval_method": record["interval_method"], "dropped": self.dropped,
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"],
-                      "misfit": record["goodness_of_fit"], "band": record["band"]}
+                      "misfit": record["goodness_of_fit"], "band": record["band"],
+                      "model_form": record["model_form"]}
         reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}

@@ -14,7 +14,7 @@ a continuous sweep rather than holds.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -58,6 +58,11 @@ class RunData:
     monitor_accuracy_bar: float = 0.04
     sensitivity_tolerance: float = 0.001
     instrument_declared: bool = True  # False: the run recorded no bounds, defaults taken
+    #: the regulator's top pressure [bar]: the monitor's accuracy holds up to it
+    monitor_range_bar: float = 2.5
+    #: the tube's declared +- tolerances [mm] (``D0_mm``, ``t0_mm``: run.json's
+    #: ``calibration.muscle_tolerances``, :class:`mkm.fem.tolerances.Tolerances` where none)
+    geometry_tolerance_mm: dict = field(default_factory=lambda: _tube_tolerances(None))
 
     @property
     def name(self) -> str:
@@ -148,6 +153,13 @@ def load_run_data(path) -> RunData:
                    **_instrument(run))
 
 
+def _tube_tolerances(tolerances) -> dict[str, float]:
+    from mkm.fem.tolerances import Tolerances
+
+    made_to = tolerances if tolerances is not None else Tolerances()
+    return {"D0_mm": float(made_to.D0_mm), "t0_mm": float(made_to.t0_mm)}
+
+
 def _muscle(run) -> dict:
     return run.meta.muscle.record()
 
@@ -162,11 +174,13 @@ def _instrument(run) -> dict:
     out = {}
     for cls, section, name, key in (
             (Regulator, "regulator", "monitor_accuracy_bar", "monitor_accuracy_bar"),
-            (LoadCell, "loadcell", "sensitivity_tolerance_fraction", "sensitivity_tolerance")):
+            (LoadCell, "loadcell", "sensitivity_tolerance_fraction", "sensitivity_tolerance"),
+            (Regulator, "regulator", "max_pressure_bar", "monitor_range_bar")):
         recorded = run.meta.calibration.get(section) or {}
         default = next(f.default for f in dataclasses.fields(cls) if f.name == name)
         out[key] = float(recorded.get(name, default))
         out["instrument_declared"] = out.get("instrument_declared", True) and name in recorded
+    out["geometry_tolerance_mm"] = _tube_tolerances(getattr(run.meta.muscle, "tolerances", None))
     return out
 
 

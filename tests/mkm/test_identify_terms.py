@@ -1,0 +1,143 @@
+"""What identify's intervals carry besides the steps' noise: inputs every run shares and the fit
+takes as given (the tube's declared wall and diameter, the monitor's gain; uniform terms of the
+bootstrap) and what its own model may have wrong (model-form terms: the other braid, the FE
+model against the corrected surrogate), checked against closed-form expectations on a model
+linear in its parameter."""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from mkm.identify import fitting
+from mkm.identify.fitting import Fit, StaticSource
+from mkm.identify.intervals import bootstrap, extend
+from mkm.identify.procedure import _shift, _with_braid
+
+
+def linear_fit(x, a=2.0, name="theta0_deg") -> Fit:
+    """``F = a x`` fitted exactly (zero residuals), one sample per step, one run."""
+    n = x.size
+    return Fit((name,), {name: a}, np.zeros(n), a * x, x[:, None], np.arange(n),
+               np.zeros(n, dtype=int), {name: (-1e9, 1e9)}, "test", 1, "", [], np.zeros(1))
+
+
+def test_a_shared_input_within_its_tolerance_is_inside_the_interval():
+    # the residual moves by u x with u uniform in +-h: the refit of a moves by -u, so the 95 %
+    # interval is a +- 0.95 h, which no resampling of the steps can show
+    x = np.linspace(1.0, 10.0, 20)
+    fit = linear_fit(x)
+    h = 0.01
+    low, high = bootstrap(fit, sensitivity_tolerance=0.0,
+                          uniform_terms={"t0_mm": (x, h)})["interval"]["theta0_deg"]
+    assert (2.0 - low) / h == pytest.approx(0.95, abs=0.01)
+    assert (high - 2.0) / h == pytest.approx(0.95, abs=0.01)
+    # a column the parameter does not see (orthogonal to x) leaves the interval near a point
+    # (a resampling of the steps breaks the orthogonality a little)
+    ones = np.ones_like(x)
+    orthogonal = ones - ones @ x / (x @ x) * x
+    low, high = bootstrap(fit, sensitivity_tolerance=0.0,
+                          uniform_terms={"t0_mm": (orthogonal, h)})["interval"]["theta0_deg"]
+    assert high - low < 0.05 * 2 * 0.95 * h
+
+
+def test_model_form_terms_extend_one_side_or_both():
+    fit = linear_fit(np.linspace(1.0, 2.0, 5))
+    fit.bounds["theta0_deg"] = (0.0, 2.05)
+    boot = {"interval": {"theta0_deg": (1.9, 2.02)}, "identifiable": {"theta0_deg": True}}
+    one = extend(boot, fit, {"braid": {"kind": "one-sided", "shift": {"theta0_deg": -0.3}}})
+    assert one["interval"]["theta0_deg"] == pytest.approx((1.6, 2.02))
+    assert one["before_model_form"] == boot["interval"]
+    both = extend(boot, fit, {"fe_correction": {"kind": "symmetric",
+                                                "shift": {"theta0_deg": -0.02}}})
+    assert both["interval"]["theta0_deg"] == pytest.approx((1.88, 2.04))
+    clipped = extend(boot, fit, {"braid": {"kind": "one-sided", "shift": {"theta0_deg": 0.1}}})
+    assert clipped["interval"]["theta0_deg"] == pytest.approx((1.9, 2.05))  # the bound
+    assert extend(boot, fit, {"braid": {"skipped": "given"}}) is boot
+
+
+class Line(StaticSource):
+    """A static force ``a P`` tabulated on 0-2.5 bar."""
+
+    name = "line"
+
+    def tables(self, runs, values):
+        grid = np.linspace(0.0, 2.5, 26)
+        return [(grid, values["theta0_deg"] * grid) for _ in runs]
+
+
+def test_the_refit_shift_of_a_static_force_change_is_the_gauss_newton_step():
+    # the static force changes by d P at the same a: the refit of F = a P to the same data moves
+    # a by -d (exact: linear model);
+    # the shift is -(J'J)^-1 J' dr with dr the change at the hold samples
+    P = np.linspace(0.2, 2.4, 12)
+    run = SimpleNamespace(time_s=np.arange(P.size, dtype=float), pressure_bar=P,
+                          hold=np.arange(P.size))
+    values = {**fitting.nominal_values(2.0), "hysteresis_fraction": 0.0, "creep_fraction": 0.0}
+    fit = linear_fit(P, a=2.0)
+    fit.values.update(values)
+    grid = np.linspace(0.0, 2.5, 26)
+    shift = _shift(Line(), [run], fit, [(grid, 0.03 * grid)])
+    assert shift["theta0_deg"] == pytest.approx(-0.03, rel=1e-9)
+    # the monitor's gain: the static force read at (P - offset) / gain
+    traced = fitting.traces(Line(), [run], {**fit.values, "pressure_gain": 1.01,
+                                            "pressure_offset_bar": 0.02})[0]
+    assert traced == pytest.approx(2.0 * (P - 0.02) / 1.01)
+
+
+def test_a_known_braid_needs_a_model_with_the_option():
+    assert _with_braid("axisym:mesh=coarse", "sliding") == "axisym:braid=sliding,mesh=coarse"
+    with pytest.raises(ValueError, match=r"--braid sliding: --model 'thickwall' has no braid "
+                                         r"option \(expected one of .*axisym"):
+        _with_braid("thickwall", "sliding")
+    with pytest.raises(ValueError, match="--braid 'glued': expected one of bonded, sliding"):
+        _with_braid("axisym", "glued")
+
+
+@pytest.fixture(scope="module")
+def sliding_runs(tmp_path_factory):
+    """Two blind runs (eps 0, 12.2 %) of a muscle with a sliding braid, the coarse FE bench."""
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+    from mkm.bench.sim_settings import remove_simulator_settings
+
+    out = tmp_path_factory.mktemp("sliding")
+    paths = []
+    for k, eps in enumerate((0.0, 0.122)):
+        config = load_config(eps=eps).replace(
+            sequence={"pressures_bar": (0.5, 1.0, 1.5, 2.0, 2.5), "preconditioning_cycles": 0},
+            sim={"model": "axisym", "fe_mesh": "coarse", "seed": 21 + k,
+                 "hysteresis_fraction": 0.03, "creep_fraction": 0.0,
+                 "truth": {"theta0_deg": 33.0, "braid": "sliding"}})
+        result = acquire(config, out_root=out, notify=lambda message: None)
+        assert result.status == "complete"
+        remove_simulator_settings(result.path)
+        paths.append(result.path)
+    return paths
+
+
+@pytest.mark.slow
+def test_a_sliding_braid_under_a_bonded_fit_is_inside_the_rubber_interval(sliding_runs):
+    from mkm.identify import identify
+
+    result = identify(sliding_runs, params="theta0,rubber,friction,offset",
+                      model="axisym:mesh=coarse", search="model")
+    braid = result.model_form["braid"]
+    assert braid["kind"] == "one-sided" and "braid=sliding" in braid["what"]
+    # the sliding sleeve stiffens the curve less than a bonded braid: the bonded fit's rubber
+    # lands 1.5-2 % low (the coverage benchmark), and the refit with the other braid raises it
+    # (here 0.982 and +0.018): the shifted estimate is the sliding truth's
+    scale = result.fit.values["rubber_scale"]
+    assert scale < 0.99
+    assert scale + braid["shift"]["rubber_scale"] == pytest.approx(1.0, abs=0.005)
+    table = result.parameters().set_index("parameter")
+    assert table.loc["rubber_scale", "ci_low"] <= 1.0 <= table.loc["rubber_scale", "ci_high"]
+    assert not result.rubber["separated"]  # the sliding pull on the ratio separates nothing
+    assert "extended by the model-form term braid" in result.record()["interval_method"]
+    # the braid given: the confirmation model's, no braid term, and the rubber found closer
+    known = identify(sliding_runs, params="theta0,rubber,friction,offset",
+                     model="axisym:mesh=coarse", search="model", braid="sliding")
+    assert "skipped" in known.model_form["braid"]
+    assert known.fit.values["rubber_scale"] == pytest.approx(1.0, abs=0.005)
