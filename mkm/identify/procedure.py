@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import itertools
 import time
+import warnings
 
 import numpy as np
 
@@ -222,8 +223,11 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     terms = None
     if "rubber_scale" in best.names and len({round(r.eps, 4) for r in runs}) > 1:
         notify("does the data separate C10 and C01? (their ratio fitted too)")
-        free, free_boot, rubber, free_terms = _rubber_ratio(source, fe, runs, best, seed,
-                                                            braid)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            free, free_boot, rubber, free_terms = _rubber_ratio(source, fe, runs, best, seed,
+                                                                braid)
+        notes += _outside_box(caught)
         if rubber["separated"]:
             best, boot, terms = free, free_boot, free_terms
         elif rubber.get("rejects_silastic_ratio") and rubber.get("braid_in_doubt"):
@@ -412,6 +416,21 @@ def _shift(source, runs, best, differences) -> dict[str, float]:
     if usable.any():
         step[usable] = -np.linalg.lstsq(J[:, usable], dr, rcond=None)[0]
     return {n: float(v) for n, v in zip(best.names, step, strict=True)}
+
+
+def _outside_box(caught) -> list[str]:
+    """Warnings of the fit with the rubber's ratio free passed on, except the surrogate's
+    out-of-domain ones, which that fit repeats once per evaluation: one note says it instead."""
+    outside = [w for w in caught if w.category.__name__ == "OutOfDomainWarning"]
+    for w in caught:
+        if w not in outside:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    if not outside:
+        return []
+    first = str(outside[0].message).partition("(")[2].partition(")")[0]
+    return [f"the fit with C01's share free left the surrogate's training box in "
+            f"{len(outside)} evaluations (first: {first}): the test of C10 and C01 is "
+            "extrapolated there"]
 
 
 def _rubber_ratio(source, fe, runs, best, seed, braid):

@@ -141,3 +141,28 @@ def test_a_sliding_braid_under_a_bonded_fit_is_inside_the_rubber_interval(slidin
                      model="axisym:mesh=coarse", search="model", braid="sliding")
     assert "skipped" in known.model_form["braid"]
     assert known.fit.values["rubber_scale"] == pytest.approx(1.0, abs=0.005)
+
+
+def test_out_of_domain_warnings_of_the_ratio_fit_become_one_note():
+    """The fit with C01's share free repeats the surrogate's out-of-domain warning once per
+    evaluation: one note counts them and names the first; any other warning passes on."""
+    import warnings
+
+    from mkm.identify.procedure import _outside_box
+    from mkm.surrogate.model import OutOfDomainWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for c01 in (0.0311, 0.0305, 0.0304):
+            warnings.warn(f"102 of 102 points lie outside the training domain (C01_MPa={c01} "
+                          "not in [0.0314, 0.0942]): flagged valid=False", OutOfDomainWarning,
+                          stacklevel=1)
+        warnings.warn("something else", RuntimeWarning, stacklevel=1)
+    with warnings.catch_warnings(record=True) as passed:
+        warnings.simplefilter("always")
+        notes = _outside_box(caught)
+    assert notes == ["the fit with C01's share free left the surrogate's training box in 3 "
+                     "evaluations (first: C01_MPa=0.0311 not in [0.0314, 0.0942]): the test of "
+                     "C10 and C01 is extrapolated there"]
+    assert [str(w.message) for w in passed] == ["something else"]
+    assert _outside_box([]) == []
