@@ -39,8 +39,8 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     """Replicates of the fitted parameters (internal names), their intervals and correlation.
 
     Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)},
-    "correlation": array (p, p), "covariance": array (p, p) (:func:`robust_covariance`),
-    "identifiable": {name: bool}, "seed", "replicates"}``. A parameter whose column of the
+    "correlation": array (p, p), "covariance": array (p, p), "identifiable": {name: bool},
+    "seed", "replicates"}`` (the covariance is :func:`robust_covariance`'s). A parameter whose column of the
     Jacobian is (numerically) zero is not identifiable: the runs do not inform it, its interval
     is its whole bound and its variance a uniform's over it. ``sensitivity_tolerance``: the load
     cell's (a fraction, uniform); ``prior_sd``: a normal prior's standard deviation per
