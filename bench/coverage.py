@@ -17,9 +17,9 @@ uniform within the bound, independent, and the error in between on the line join
 bound over the range is met at every pressure when it is met at both ends). At either end the
 error is then uniform within the bound, as the budget's rectangular term says; in between it
 is the mean of two such errors, weighted by the position in the range, more often small:
-the budget's interval, right at the ends, covers more there. The simulated cell is linear and its zero does not
-drift, so those two data-sheet terms (``nonlinearity_fraction_fs``, ``zero_drift_fraction_fs``)
-are set to zero: they would have nothing to cover.
+the budget's interval, right at the ends, covers more there. The simulated cell is linear and
+its zero does not drift, so those two data-sheet terms (``nonlinearity_fraction_fs``,
+``zero_drift_fraction_fs``) are set to zero: they would have nothing to cover.
 """
 
 from __future__ import annotations

@@ -78,7 +78,8 @@ def coverage(runs: int, eps_values, out: str | None = None) -> None:
         Path(out).write_text(json.dumps({
             **provenance(), "rows": rows, "all": summary,
             "target": "force and pressure coverage 95 +- 3 % (the pressure's at the range's "
-                      "ends, where a bound over the range is reached)"}, indent=1, default=jsonable), encoding="utf-8")
+                      "ends, where a bound over the range is reached)"},
+            indent=1, default=jsonable), encoding="utf-8")
 
 
 def band_speed() -> None:
