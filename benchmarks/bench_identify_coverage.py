@@ -42,6 +42,7 @@ from mkm.bench.sim_settings import remove_simulator_settings
 from mkm.core.records import jsonable, provenance
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
+from mkm.identify.band import check_heldout
 
 FIT_EPS = (0.0, 0.122)
 #: the held-out run's eps, alternating draw by draw: inside the fitted span and beyond it
@@ -172,65 +173,12 @@ def judge(result, muscle: dict, config) -> list[dict]:
     return rows
 
 
-def heldout(result, run: Path, out: Path) -> dict:
-    """A third run of the same muscle predicted with ``result``'s calibration: each settled
-    step's mean against the identified model's prediction of it (friction and creep along the
-    hold, :func:`mkm.identify.procedure.predict_runs`) and the calibration's 95 % band at the
-    step's pressure (:func:`mkm.identify.band.prediction_band`, what ``mkm fem solve
-    --calibration`` prints). The band is the true force's; a measured step mean carries its own
-    noise too (the hold's scatter over root n and the run's tare, as the goodness of fit
-    takes it), so a step is inside when ``|measured - predicted| <= sqrt(band95^2 + (1.96
-    noise)^2)`` (``inside``), and, stricter, within the band alone (``in_band``): a slack step
-    (no force predicted, band 0) is never in the band alone. A run is inside when every step
-    is."""
-    from mkm.bench.storage import load_run
-    from mkm.fem.calibration import Calibration
-    from mkm.identify.band import Z95, prediction_band
-    from mkm.identify.procedure import predict_runs
-    from mkm.identify.runs import load_runs
-    from mkm.registry import parse_spec
-
-    files = result.write(out)
-    calibration = Calibration.load(files["calibration"])
-    (held,) = load_runs([run])
-    predicted = predict_runs([run], result.values, model=result.model)[0]["predicted_N"]
-    measured = held.steps["force_N_mean"].to_numpy(dtype=float)
-    pressure = held.steps["pressure_bar_mean"].to_numpy(dtype=float)
-    m = held.muscle
-    spec = parse_spec(result.model).with_params(L0_mm=float(m["L0_mm"]))
-    band = prediction_band(spec, calibration, predicted, pressure, float(m["D0_mm"]),
-                           float(m["t0_mm"]), held.eps)
-    if band is None:
-        raise RuntimeError(f"{files['calibration']}: no prediction band for {result.model}")
-    raw = load_run(run).steps
-    raw = raw[raw["settled"].astype(bool)]
-    noise = np.hypot(raw["force_N_std"].to_numpy(dtype=float)
-                     / np.sqrt(raw["n"].to_numpy(dtype=float)), held.tare_se_N)
-    error = np.abs(measured - predicted)
-    reach = np.hypot(band, Z95 * noise)
-    inside, in_band = error <= reach, error <= band
-    pulled = band > 0
-    worst = int(np.argmax(error / reach))
-    return {"eps": held.eps, "steps": int(inside.size), "steps_inside": int(inside.sum()),
-            "steps_in_band": int(in_band.sum()), "slack_steps": int((~pulled).sum()),
-            "run_inside": bool(inside.all()), "run_in_band": bool(in_band.all()),
-            "run_in_band_pulled": bool(in_band[pulled].all()),
-            "worst_error_over_reach": round(float(error[worst] / reach[worst]), 3),
-            "median_error_over_band": round(float(np.median(error[pulled] / band[pulled])), 4),
-            "worst_step": {"pressure_bar": round(float(pressure[worst]), 4),
-                           "error_N": round(float(error[worst]), 3),
-                           "band95_N": round(float(band[worst]), 3),
-                           "noise_N": round(float(noise[worst]), 4)},
-            "band95_median_percent": round(float(np.median(100 * band[pulled]
-                                                            / predicted[pulled])), 2)}
-
-
 def one(muscle: dict, out: Path, config, heldout_eps: float) -> dict:
     start = time.perf_counter()
     runs = [acquire_blind(muscle, eps, out) for eps in (*FIT_EPS, heldout_eps)]
     sliding = muscle["departure"] == "sliding braid"
     result = identify(runs[:-1], model=FE if sliding else "thickwall", search="model", seed=0)
-    predicted = heldout(result, runs[-1], out / "identified")
+    predicted = check_heldout(result, runs[-1], out / "identified")
     misfit = result.goodness.line() if result.goodness else None
     parameters = judge(result, muscle, config)
     missed = [p["parameter"] for p in parameters if not p["covered"]]
