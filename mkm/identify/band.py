@@ -114,7 +114,7 @@ def check_heldout(result, run_dir, out_dir) -> dict:
     error = np.abs(measured - predicted)
     reach = np.hypot(band, Z95 * noise)
     inside, in_band = error <= reach, error <= band
-    pulled = band > 0
+    pulled = (band > 0) & (predicted > 0)  # a step the muscle pulls at, by the prediction
     worst = int(np.argmax(error / np.maximum(reach, 1e-12)))
     ratio = error[pulled] / band[pulled] if pulled.any() else np.full(1, np.nan)
     return {"eps": held.eps, "steps": int(inside.size), "steps_inside": int(inside.sum()),
