@@ -10,11 +10,16 @@ mean true ones over the same hold samples: covered when ``|F_meas - F_true| <= f
 
 Each run's instruments are drawn within the data sheet the configuration declares
 (:func:`instrument_draw`): the load cell's gain uniform within
-``loadcell.sensitivity_tolerance_fraction``, the pressure monitor's error uniform within
-``regulator.monitor_accuracy_bar``, as an offset (even seeds) or as a gain reaching the bound at
-``regulator.max_pressure_bar`` (odd seeds). The simulated cell is linear and its zero does not
-drift, so those two data-sheet terms (``nonlinearity_fraction_fs``, ``zero_drift_fraction_fs``)
-are set to zero: they would have nothing to cover.
+``loadcell.sensitivity_tolerance_fraction``; the pressure monitor as a linear sensor (an offset
+and a gain) that meets ``regulator.monitor_accuracy_bar`` over the whole range, uniform over
+every such sensor: its error at 0 bar and its error at ``regulator.max_pressure_bar`` each
+uniform within the bound, independent, and the error in between on the line joining them (a
+bound over the range is met at every pressure when it is met at both ends). At either end the
+error is then uniform within the bound, as the budget's rectangular term says; in between it
+is the mean of two such errors, weighted by the position in the range, more often small:
+the budget's interval, right at the ends, covers more there. The simulated cell is linear and
+its zero does not drift, so those two data-sheet terms (``nonlinearity_fraction_fs``,
+``zero_drift_fraction_fs``) are set to zero: they would have nothing to cover.
 """
 
 from __future__ import annotations
@@ -39,13 +44,11 @@ def instrument_draw(config, seed: int) -> dict:
     rng = np.random.default_rng([int(seed), 0x1A57])
     tolerance = config.loadcell.sensitivity_tolerance_fraction
     accuracy = config.regulator.monitor_accuracy_bar
-    draw = {"loadcell_gain": 1.0 + float(rng.uniform(-tolerance, tolerance))}
-    error = float(rng.uniform(-accuracy, accuracy))
-    if seed % 2 == 0:
-        draw["monitor_offset_bar"] = error
-    else:
-        draw["monitor_gain"] = 1.0 + error / config.regulator.max_pressure_bar
-    return draw
+    gain = 1.0 + float(rng.uniform(-tolerance, tolerance))
+    at_zero, at_full_scale = rng.uniform(-accuracy, accuracy, size=2)
+    return {"loadcell_gain": gain, "monitor_offset_bar": float(at_zero),
+            "monitor_gain": 1.0 + float(at_full_scale - at_zero)
+            / config.regulator.max_pressure_bar}
 
 
 def _recorded(backend: SimBackend) -> list[tuple[float, float]]:

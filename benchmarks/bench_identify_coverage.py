@@ -20,8 +20,14 @@ closed form (``search="model"``), or, for the sliding braid, simulated with the 
 sliding sleeve and fitted with its bonded braid (coarse mesh).
 
 For every reported parameter: does its interval cover the truth? A draw whose misses all come
-with a misfit line is warned; a miss without one is silent. Target: no silent miss. Prints one
-row per draw and the summary; ``--out`` writes them with the seeds and provenance.
+with a misfit line is warned; a miss without one is silent. Target: no silent miss.
+
+A third run of the same muscle and departure, at eps 6 % or 18 % (:data:`HELDOUT_EPS`, draw by
+draw), is predicted with the calibration identify wrote and judged against its band
+(:func:`mkm.identify.band.check_heldout`: a step inside when within the band and its own noise,
+a run when every settled step is). Target: held-out runs inside in >= 90 % of the draws.
+
+Prints one row per draw and the summary; ``--out`` writes them with the seeds and provenance.
 """
 
 from __future__ import annotations
@@ -42,8 +48,11 @@ from mkm.bench.sim_settings import remove_simulator_settings
 from mkm.core.records import jsonable, provenance
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
+from mkm.identify.band import check_heldout
 
 FIT_EPS = (0.0, 0.122)
+#: the held-out run's eps, alternating draw by draw: inside the fitted span and beyond it
+HELDOUT_EPS = (0.06, 0.18)
 DEPARTURES = ("in-family", "monitor offset", "monitor gain", "loadcell gain", "rubber C01=0",
               "rubber C01=2C10", "sliding braid", "true t0", "true D0")
 FE = "axisym:mesh=coarse"
@@ -170,11 +179,12 @@ def judge(result, muscle: dict, config) -> list[dict]:
     return rows
 
 
-def one(muscle: dict, out: Path, config) -> dict:
+def one(muscle: dict, out: Path, config, heldout_eps: float) -> dict:
     start = time.perf_counter()
-    runs = [acquire_blind(muscle, eps, out) for eps in FIT_EPS]
+    runs = [acquire_blind(muscle, eps, out) for eps in (*FIT_EPS, heldout_eps)]
     sliding = muscle["departure"] == "sliding braid"
-    result = identify(runs, model=FE if sliding else "thickwall", search="model", seed=0)
+    result = identify(runs[:-1], model=FE if sliding else "thickwall", search="model", seed=0)
+    predicted = check_heldout(result, runs[-1], out / "identified")
     misfit = result.goodness.line() if result.goodness else None
     parameters = judge(result, muscle, config)
     missed = [p["parameter"] for p in parameters if not p["covered"]]
@@ -188,7 +198,8 @@ def one(muscle: dict, out: Path, config) -> dict:
             "chi2_per_nu": result.goodness.reduced if result.goodness else None,
             "misfit_line": misfit, "silent_miss": bool(missed and not misfit),
             "silent_far_miss": bool(far and not misfit),
-            "notes": result.notes, "seconds": round(time.perf_counter() - start, 1)}
+            "heldout": predicted, "notes": result.notes,
+            "seconds": round(time.perf_counter() - start, 1)}
 
 
 def _values(row: dict, sep: str = ";") -> str:
@@ -198,6 +209,11 @@ def _values(row: dict, sep: str = ";") -> str:
 
 def _silent(row: dict) -> str:
     return "SILENT-FAR" if row["silent_far_miss"] else "SILENT" if row["silent_miss"] else "no"
+
+
+def _heldout(row: dict) -> str:
+    h = row["heldout"]
+    return f"{h['eps']:g},{h['steps_inside']}/{h['steps']}"
 
 
 def summarise(rows: list[dict], departures, seed: int) -> dict:
@@ -226,7 +242,27 @@ def summarise(rows: list[dict], departures, seed: int) -> dict:
     unwarned = [r for r in rows if r["misfit_line"] is None]
     chance = sum(1 - 0.95 ** sum(p["status"] == "fitted" for p in r["parameters"])
                  for r in unwarned)
+    held = [r["heldout"] for r in rows]
+    steps = sum(h["steps"] for h in held)
+    heldout = {
+        "runs": len(held),
+        "runs_inside_percent": round(100 * np.mean([h["run_inside"] for h in held]), 1),
+        "runs_in_band_alone_percent": round(100 * np.mean([h["run_in_band"] for h in held]), 1),
+        "runs_in_band_alone_pulled_steps_percent":
+            round(100 * np.mean([h["run_in_band_pulled"] for h in held]), 1),
+        "steps": steps,
+        "steps_inside_percent": round(100 * sum(h["steps_inside"] for h in held) / steps, 1),
+        "steps_in_band_alone_percent": round(100 * sum(h["steps_in_band"] for h in held)
+                                             / steps, 1),
+        "median_error_over_band": round(float(np.median([h["median_error_over_band"]
+                                                         for h in held])), 4),
+        "band95_median_percent": round(float(np.median([h["band95_median_percent"]
+                                                        for h in held])), 2),
+        "runs_inside_percent_by_eps": {
+            f"{e:g}": round(100 * np.mean([h["run_inside"] for h in held if h["eps"] == e]), 1)
+            for e in sorted({h["eps"] for h in held})}}
     return {"draws": len(rows), "silent_misses": sum(r["silent_miss"] for r in rows),
+            "heldout_in_band": heldout,
             "silent_far_misses": sum(r["silent_far_miss"] for r in rows),
             "chance_silent_draws": round(chance, 1),
             "parameter_judgements_unwarned": sum(len(r["parameters"]) for r in unwarned),
@@ -251,16 +287,19 @@ def main(argv=None) -> int:
     rng = np.random.default_rng(args.seed)
     config = load_config()
     rows = []
-    print("draw,departure,departure_values,chi2_per_nu,misfit,missed,far,silent_miss,seconds")
+    print("draw,departure,departure_values,chi2_per_nu,misfit,missed,far,silent_miss,"
+          "heldout_eps,heldout_steps_inside,heldout_worst_error_over_reach,seconds")
     with tempfile.TemporaryDirectory() as tmp:
         os.environ["MKM_STATE_DIR"] = str(Path(tmp) / "state")
         for k in range(args.draws):
             muscle = draw(rng, departures[k % len(departures)], config)
-            row = one(muscle, Path(tmp) / f"draw{k}", config)
+            row = one(muscle, Path(tmp) / f"draw{k}", config,
+                      HELDOUT_EPS[k % len(HELDOUT_EPS)])
             rows.append({"draw": k, **row})
             print(f"{k},{row['departure']},{_values(row)},{row['chi2_per_nu']:.3g},"
                   f"{'yes' if row['misfit_line'] else 'no'},{'|'.join(row['missed']) or '-'},"
-                  f"{'|'.join(row['far']) or '-'},{_silent(row)},{row['seconds']}", flush=True)
+                  f"{'|'.join(row['far']) or '-'},{_silent(row)},{_heldout(row)},"
+                  f"{row['heldout']['worst_error_over_reach']},{row['seconds']}", flush=True)
     summary = summarise(rows, departures, args.seed)
     print(json.dumps(summary, indent=1))
     if args.out:
@@ -271,13 +310,19 @@ def main(argv=None) -> int:
                   "rubber": "apart" if r["rubber_separated"] else "one scale",
                   "missed": ", ".join(r["missed"]) or "-",
                   "far": ", ".join(r["far"]) or "-", "silent_miss": _silent(r),
+                  "heldout_eps": r["heldout"]["eps"],
+                  "heldout_steps_inside": f"{r['heldout']['steps_inside']}/"
+                                          f"{r['heldout']['steps']}",
+                  "heldout_band95_percent": r["heldout"]["band95_median_percent"],
+                  "heldout_error_over_band": r["heldout"]["median_error_over_band"],
                   "seconds": r["seconds"]} for r in rows]
         Path(args.out).write_text(json.dumps({
             **provenance(), "rows": table, "summary": summary, "draws": rows,
             "targets": "every parameter's 95 % interval covers the truth in >= 90 % of the "
                        "draws or a misfit line was printed; silent misses: 0 beyond what "
                        "chance explains (chance_silent_draws; none far: truth outside by "
-                       "more than the interval's half-width)"},
+                       "more than the interval's half-width); held-out runs inside their "
+                       "printed band in >= 90 % of cases"},
             indent=1, default=jsonable), encoding="utf-8")
     return 0
 

@@ -16,6 +16,9 @@
 
 A fitted wall or diameter enters only as the solve's own ``--t0``/``--D0``: the band assumes
 the identified muscle's geometry is what is solved (parameters.csv gives the fitted values).
+
+:func:`check_heldout` judges a run the fit did not see against the band
+(``benchmarks/bench_identify_coverage.py`` counts the held-out runs inside it).
 """
 
 from __future__ import annotations
@@ -70,6 +73,63 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps)
     variance = variance + (tolerance / np.sqrt(3.0) * np.ravel(force_N)) ** 2
     variance = variance + float(band.get("misfit_rms_N", 0.0)) ** 2
     return Z95 * np.sqrt(variance).reshape(np.shape(force_N))
+
+
+def check_heldout(result, run_dir, out_dir) -> dict:
+    """A run of the identified muscle the fit did not see (``run_dir``) predicted with the
+    calibration the identification ``result`` writes into ``out_dir``: each settled step's mean
+    against the identified model's prediction of it (friction and creep along the hold,
+    :func:`mkm.identify.procedure.predict_runs`) and the calibration's 95 % band at the step's
+    pressure (:func:`prediction_band`, what ``mkm fem solve --calibration`` prints).
+
+    The band is the true force's; a measured step mean carries its own noise too (the hold's
+    scatter over root n and the run's tare, as the goodness of fit takes it), so a step is
+    inside when ``|measured - predicted| <= sqrt(band95^2 + (1.96 noise)^2)`` (``inside``),
+    and, stricter, within the band alone (``in_band``): a slack step (no force predicted, band
+    0) is never in the band alone. A run is inside when every step is. Returns the counts, the
+    worst step and the band's median width (a percentage of the force where it pulls).
+    """
+    from mkm.bench.storage import load_run
+    from mkm.fem.calibration import Calibration
+    from mkm.identify.procedure import predict_runs
+    from mkm.identify.runs import load_runs
+    from mkm.registry import parse_spec
+
+    files = result.write(out_dir)
+    calibration = Calibration.load(files["calibration"])
+    (held,) = load_runs([run_dir])
+    predicted = predict_runs([run_dir], result.values, model=result.model)[0]["predicted_N"]
+    measured = held.steps["force_N_mean"].to_numpy(dtype=float)
+    pressure = held.steps["pressure_bar_mean"].to_numpy(dtype=float)
+    m = held.muscle
+    spec = parse_spec(result.model).with_params(L0_mm=float(m["L0_mm"]))
+    band = prediction_band(spec, calibration, predicted, pressure, float(m["D0_mm"]),
+                           float(m["t0_mm"]), held.eps)
+    if band is None:
+        raise RuntimeError(f"{files['calibration']}: no prediction band for {result.model}")
+    raw = load_run(run_dir).steps
+    raw = raw[raw["settled"].astype(bool)]
+    noise = np.hypot(raw["force_N_std"].to_numpy(dtype=float)
+                     / np.sqrt(raw["n"].to_numpy(dtype=float)), held.tare_se_N)
+    error = np.abs(measured - predicted)
+    reach = np.hypot(band, Z95 * noise)
+    inside, in_band = error <= reach, error <= band
+    pulled = (band > 0) & (predicted > 0)  # a step the muscle pulls at, by the prediction
+    worst = int(np.argmax(error / np.maximum(reach, 1e-12)))
+    ratio = error[pulled] / band[pulled] if pulled.any() else np.full(1, np.nan)
+    return {"eps": held.eps, "steps": int(inside.size), "steps_inside": int(inside.sum()),
+            "steps_in_band": int(in_band.sum()), "slack_steps": int((~pulled).sum()),
+            "run_inside": bool(inside.all()), "run_in_band": bool(in_band.all()),
+            "run_in_band_pulled": bool(in_band[pulled].all()),
+            "worst_error_over_reach": round(float(error[worst] / reach[worst]), 3),
+            "median_error_over_band": round(float(np.median(ratio)), 4),
+            "worst_step": {"pressure_bar": round(float(pressure[worst]), 4),
+                           "error_N": round(float(error[worst]), 3),
+                           "band95_N": round(float(band[worst]), 3),
+                           "noise_N": round(float(noise[worst]), 4)},
+            "band95_median_percent": round(float(np.median(100 * band[pulled]
+                                                            / predicted[pulled]))
+                                           if pulled.any() else float("nan"), 2)}
 
 
 def _force(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps):

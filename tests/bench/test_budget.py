@@ -17,7 +17,7 @@ from mkm.bench.budget import (
     step_budget,
 )
 from mkm.bench.config import Step, load_config
-from mkm.bench.coverage import simulated_coverage
+from mkm.bench.coverage import instrument_draw, simulated_coverage
 from mkm.bench.procedures import check
 from mkm.bench.run import acquire
 from mkm.bench.sequence import HoldStats
@@ -162,6 +162,26 @@ def test_coverage_on_simulated_runs():
     top = steps.loc[steps["force_true_N"] > 500]
     assert ((top["force_N_mean"] / top["force_true_N"] - top["loadcell_gain"]).abs()
             < 3 * top["force_u_N"] / top["force_true_N"]).all()
+
+
+def test_monitor_draws_meet_the_data_sheet_over_the_range_and_reach_it_at_its_ends():
+    # the monitor reads gain * P + offset: a linear sensor within +-a at 0 and at full scale is
+    # within it at every pressure; every such sensor equally likely makes the error at either
+    # end uniform on +-a (mean |e| = a/2, the budget's rectangular term exact there) and the
+    # error mid-range the mean of two such: P(|e| <= a/2) = 3/4 instead of 1/2
+    config = load_config()
+    a, top = config.regulator.monitor_accuracy_bar, config.regulator.max_pressure_bar
+    draws = [instrument_draw(config, seed) for seed in range(4000)]
+    offset = np.array([d["monitor_offset_bar"] for d in draws])
+    full = np.array([(d["monitor_gain"] - 1) * top for d in draws]) + offset
+    middle = offset + (full - offset) / 2
+    for end in (offset, full):
+        assert np.abs(end).max() <= a
+        assert np.mean(np.abs(end)) == pytest.approx(a / 2, rel=0.03)  # binomial sd ~1 %
+    assert np.mean(np.abs(middle) <= a / 2) == pytest.approx(0.75, abs=0.03)
+    assert abs(np.corrcoef(offset, full)[0, 1]) < 0.05
+    gain = np.array([d["loadcell_gain"] for d in draws]) - 1
+    assert np.abs(gain).max() <= config.loadcell.sensitivity_tolerance_fraction
 
 
 def test_coverage_factors_are_the_quantiles_of_known_distributions():
