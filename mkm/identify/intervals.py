@@ -38,15 +38,15 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
               uniform_terms: dict[str, tuple[np.ndarray, float]] | None = None) -> dict:
     """Replicates of the fitted parameters (internal names), their intervals and correlation.
 
-    Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)},
-    "correlation": array (p, p), "covariance": array (p, p), "identifiable": {name: bool},
-    "seed", "replicates"}`` (the covariance is :func:`robust_covariance`'s). A parameter whose column of the
-    Jacobian is (numerically) zero is not identifiable: the runs do not inform it, its interval
-    is its whole bound and its variance a uniform's over it. ``sensitivity_tolerance``: the load
-    cell's (a fraction, uniform); ``prior_sd``: a normal prior's standard deviation per
-    parameter, weighed against the residuals' variance; ``uniform_terms``: an input every
-    run shares and the fit takes as given (the tube's declared wall and diameter), as the
-    residuals' sensitivity to it (one value per residual) and its +- tolerance (uniform).
+    Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)}, "correlation":
+    array (p, p), "covariance": array (p, p), "identifiable": {name: bool}, "seed",
+    "replicates"}`` (the covariance is :func:`robust_covariance`'s). A parameter whose column of
+    the Jacobian is (numerically) zero is not identifiable: the runs do not inform it, its
+    interval is its whole bound and its variance a uniform's over it. ``sensitivity_tolerance``:
+    the load cell's (a fraction, uniform); ``prior_sd``: a normal prior's standard deviation per
+    parameter, weighed against the residuals' variance; ``uniform_terms``: an input every run
+    shares and the fit takes as given (the tube's declared wall and diameter), as the residuals'
+    sensitivity to it (one value per residual) and its +- tolerance (uniform).
     """
     names, J, r = result.names, result.jacobian, result.residual_N
     p = len(names)
