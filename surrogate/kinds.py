@@ -27,6 +27,8 @@ from dataclasses import dataclass
 from mkm.core.registry import Registry
 
 BEST = "muscle-gp"
+#: The kind auto takes as the reference where :data:`BEST`'s box does not cover a call.
+RANGE = "muscle-gp-range"
 CALL_INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
 #: Arguments every factory may take; the others are the kind's parameters.
 COMMON_ARGUMENTS = ("inputs", "fixed", "random_state")
