@@ -65,6 +65,11 @@ def train_surrogate(kind: str = "best", dataset=None, splits: int | None = None,
     resolved = BEST if kind == "best" else kind
     own_dataset, calibration_path, holdout_path = kind_files(resolved)
     splits = kind_splits(resolved, splits)
+    missing = [p for p in (calibration_path, holdout_path) if not p.is_file()]
+    if entry(resolved).std_sets is not None and missing:
+        raise ValueError(f"surrogate kind {resolved!r} calibrates its std on {missing[0]}, "
+                         "which is missing: expected the file shipped with the package "
+                         "(reinstall it)")
     data = load_training_data(own_dataset if dataset is None else dataset)
     estimator = make_estimator(resolved, data.inputs, data.fixed, random_state=random_state)
     calibration = std_calibration_set(estimator, data, calibration_path)
