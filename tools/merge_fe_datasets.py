@@ -40,7 +40,7 @@ def main() -> None:
     box = json.loads(Path(box_source).with_suffix(".json").read_text(encoding="utf-8"))
     meta = {**provenance(), "what": what, "box": box["box"], "draw": box.get("draw", {}),
             "pressure_bar": box.get("pressure_bar"), "model": "axisym", "mesh": "fine",
-            "sources": parts}
+            "seeds": [p["seed"] for p in parts], "sources": parts}
     Path(out).with_suffix(".json").write_text(json.dumps(meta, indent=2), encoding="utf-8")
     print(f"{out}: {len(merged)} rows, {merged['muscle'].nunique()} muscles")
 

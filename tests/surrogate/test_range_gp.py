@@ -43,3 +43,44 @@ def test_its_sets_cover_the_practical_range_and_never_share_a_muscle():
             assert not a & b
     # 768, 80 and 60 drawn; a muscle the FE solved at no pressure has no row to learn from
     assert (design.n_muscles, calibration.n_muscles, holdout.n_muscles) == (765, 79, 59)
+
+
+@pytest.fixture(scope="module")
+def range_model():
+    from mkm.surrogate.train import cached_model
+
+    return cached_model(kinds.RANGE)  # about 2-4 min of one core the first time
+
+
+@pytest.mark.slow
+def test_its_std_holds_on_muscles_nothing_saw(range_model):
+    # 40 random muscles of the practical range (seed 20261224, tests/surrogate/data/
+    # range_check.json) that neither the fit (seeds 20261220, 20261222 and the box design), the
+    # calibration (20261223) nor the rescale (20261221) saw. A calibrated std: 68.27 / 95.45 /
+    # 99.73 % within 1 / 2 / 3 std. Measured: COVERAGE. The pins: PINS.
+    from mkm.surrogate.coverage import coverage
+    from mkm.surrogate.validation import predict_with_std
+
+    data = load_training_data(CHECK_SET)
+    force, std = predict_with_std(range_model.estimator, data.X)
+    error = data.y - force
+    assert coverage(error, std, 1.0) == pytest.approx(0.6827, abs=0.10)
+    assert coverage(error, std, 2.0) == pytest.approx(0.9545, abs=0.04)
+    assert coverage(error, std, 3.0) == pytest.approx(0.9973, abs=0.03)
+    assert range_model.metadata["std_rescale"]["n_muscles"] == 59
+
+
+@pytest.mark.slow
+def test_auto_answers_a_festo_class_muscle_with_it_within_tolerance(range_model):
+    # A 10 mm muscle at 1-6 bar (DMSP-10 class): outside the default's box (D0 30-50 mm,
+    # P 0-2.5 bar), inside the practical range
+    from mkm.auto import RANGE_PREDICTOR, explain
+    from mkm.registry import build_spec
+
+    muscle = {"L0_mm": 250.0, "theta0_deg": 25.0, "C10_MPa": 0.3, "C01_MPa": 0.1}
+    P, D0, t0, eps = np.arange(1.0, 6.01, 1.0), 10.0, 1.5, 0.05
+    pred = build_spec("auto:tolerance=0.05", **muscle).predict(P, D0, t0, eps)
+    assert set(pred.extras["model_used"]) == {RANGE_PREDICTOR}, explain(pred)
+    fine = build_spec("axisym:mesh=fine", **muscle).predict(P, D0, t0, eps).force_N
+    error_pct = 100 * np.max(np.abs(pred.force_N - fine)) / np.max(fine)
+    assert error_pct <= np.max(pred.extras["error_bound_pct"]) <= 5.0
