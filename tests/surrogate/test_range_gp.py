@@ -75,14 +75,17 @@ def test_its_std_holds_on_muscles_nothing_saw(range_model):
 @pytest.mark.slow
 def test_auto_answers_a_festo_class_muscle_with_it_within_tolerance(range_model):
     # A 10 mm muscle at 1-6 bar (DMSP-10 class): outside the default's box (D0 30-50 mm,
-    # P 0-2.5 bar), inside the practical range
+    # P 0-2.5 bar), inside the practical range. At 5 % the thick-wall form meets it through the
+    # range surrogate (bound 3.4 %); at 2 % the range surrogate itself is the cheapest
     from mkm.auto import RANGE_PREDICTOR, explain
     from mkm.registry import build_spec
 
     muscle = {"L0_mm": 250.0, "theta0_deg": 25.0, "C10_MPa": 0.3, "C01_MPa": 0.1}
     P, D0, t0, eps = np.arange(1.0, 6.01, 1.0), 10.0, 1.5, 0.05
-    pred = build_spec("auto:tolerance=0.05", **muscle).predict(P, D0, t0, eps)
-    assert set(pred.extras["model_used"]) == {RANGE_PREDICTOR}, explain(pred)
     fine = build_spec("axisym:mesh=fine", **muscle).predict(P, D0, t0, eps).force_N
-    error_pct = 100 * np.max(np.abs(pred.force_N - fine)) / np.max(fine)
-    assert error_pct <= np.max(pred.extras["error_bound_pct"]) <= 5.0
+    for tolerance, answers in ((0.02, {RANGE_PREDICTOR}), (0.05, {"thickwall"})):
+        pred = build_spec(f"auto:tolerance={tolerance}", **muscle).predict(P, D0, t0, eps)
+        assert set(pred.extras["model_used"]) == answers, explain(pred)
+        assert "practical range" in explain(pred) or answers != {RANGE_PREDICTOR}
+        error_pct = 100 * np.max(np.abs(pred.force_N - fine)) / np.max(fine)
+        assert error_pct <= np.max(pred.extras["error_bound_pct"]) <= 100 * tolerance
