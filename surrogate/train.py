@@ -49,6 +49,16 @@ def kind_files(kind: str) -> tuple[Path, Path, Path]:
     return (dataset, *(package_file("mkm.surrogate", "data", name) for name in found.std_sets))
 
 
+def std_sets(kind: str, dataset) -> tuple[Path, Path]:
+    """The random muscles that calibrate and rescale the std of ``kind`` trained on ``dataset``
+    (None: its own): its own sets on its own dataset, the default surrogate's on any other (the
+    sets belong with the muscles the dataset covers)."""
+    own, calibration, holdout = kind_files(kind)
+    if dataset is None or Path(dataset) == own:
+        return calibration, holdout
+    return STD_CALIBRATION_SET, STD_HOLDOUT_SET
+
+
 def kind_splits(kind: str, splits: int | None) -> int:
     """``splits``, or when None the kind's own number of muscle-held-out refits."""
     if splits is not None:
@@ -63,10 +73,11 @@ def train_surrogate(kind: str = "best", dataset=None, splits: int | None = None,
     refits on ``splits`` muscle-held-out splits (0: none; None: the kind's number).
     ``progress``: a progress bar on stderr over the fits."""
     resolved = BEST if kind == "best" else kind
-    own_dataset, calibration_path, holdout_path = kind_files(resolved)
+    own_dataset = kind_files(resolved)[0]
+    calibration_path, holdout_path = std_sets(resolved, dataset)
     splits = kind_splits(resolved, splits)
     missing = [p for p in (calibration_path, holdout_path) if not p.is_file()]
-    if entry(resolved).std_sets is not None and missing:
+    if entry(resolved).std_sets is not None and missing and dataset in (None, own_dataset):
         raise ValueError(f"surrogate kind {resolved!r} calibrates its std on {missing[0]}, "
                          "which is missing: expected the file shipped with the package "
                          "(reinstall it)")
@@ -170,7 +181,8 @@ def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SP
 
     parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
              "versions": provenance()["versions"], "code": code_version(kind),
-             "std_sets": [file_sha256(p) for p in kind_files(kind)[1:] if p.is_file()]}
+             "std_sets": [file_sha256(p) for p in std_sets(BEST if kind == "best" else kind,
+                                                           dataset) if p.is_file()]}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
 
