@@ -5,15 +5,19 @@ Run outside the test suite:
     .venv/bin/mkm surrogate design --range practical --muscles 600 --seed S0 --out TRAIN.csv
     .venv/bin/python benchmarks/bench_surrogate_range.py --train TRAIN.csv [--kind muscle-gp]
         [--muscles 60] [--box-muscles 40] [--seed S] [--out FILE.json]
+    .venv/bin/python benchmarks/bench_surrogate_range.py --kind muscle-gp-range [...]
 
-Fits ``--kind`` on the FE sweeps of ``--train`` (one BLAS thread), then draws ``--muscles``
+Fits ``--kind`` on the FE sweeps of ``--train`` (one BLAS thread), or without ``--train`` takes
+the kind as shipped (trained on its own dataset with its std calibrated, through the one
+surrogate cache: :func:`mkm.surrogate.train.cached_model`), then draws ``--muscles``
 fresh muscles of the practical range (:func:`mkm.surrogate.design.practical_muscles`, seed
 printed and recorded; sweeps 0-8 bar) and ``--box-muscles`` fresh muscles of the paper's box
 (:func:`mkm.surrogate.design.random_muscles`, sweeps 0-2.5 bar), solves them at the fine mesh
 (through the dataset cache) and prints per set the worst and median of each muscle's largest
 |Err%| (Equation 7 over its sweep; muscles without force and those whose FE failed are counted
-and left out). Targets: over the range worst <= 1 %, median <= 0.2 %; in the box worst
-<= 0.25 %.
+and left out) and, for a kind with a std, the share of points within 1, 2 and 3 std (a
+calibrated std: 68.27, 95.45, 99.73 %). Targets: over the range worst <= 1 %, median
+<= 0.2 %; in the box worst <= 0.25 %.
 """
 
 from __future__ import annotations
@@ -30,6 +34,7 @@ from mkm.core.records import jsonable, provenance
 from mkm.surrogate.design import EVAL_PRESSURES, build_practical_set, fe_sweeps, random_muscles
 from mkm.surrogate.kinds import make_estimator
 from mkm.surrogate.quiet import quiet_fits
+from mkm.surrogate.train import cached_model
 from mkm.surrogate.training_data import load_training_data
 
 
@@ -45,18 +50,35 @@ def worst_per_muscle(estimator, data) -> np.ndarray:
     return np.array(out)
 
 
-def summary(label: str, errors: np.ndarray, drawn: int) -> dict:
+def std_coverage(estimator, data) -> dict | None:
+    """Share of the points within 1, 2 and 3 predictive std of the FE (None without a std)."""
+    from mkm.surrogate.coverage import coverage
+    from mkm.surrogate.validation import predict_with_std
+
+    if not hasattr(estimator, "calibrate_std"):
+        return None
+    force, std = predict_with_std(estimator, data.X)
+    return {f"within_{k}std": coverage(data.y - force, std, float(k)) for k in (1, 2, 3)}
+
+
+def summary(label: str, estimator, data, drawn: int) -> dict:
+    errors = worst_per_muscle(estimator, data)
     row = {"muscles_drawn": drawn, "muscles_scored": int(errors.size),
            "worst_pct": float(errors.max()), "median_pct": float(np.median(errors)),
-           "p90_pct": float(np.percentile(errors, 90))}
+           "p90_pct": float(np.percentile(errors, 90)),
+           "std_coverage": std_coverage(estimator, data)}
+    cover = row["std_coverage"]
+    within = ("" if cover is None else ", within 1/2/3 std " + " / ".join(
+        f"{100 * cover[f'within_{k}std']:.1f}" for k in (1, 2, 3)) + " % of the points")
     print(f"{label}: {errors.size} of {drawn} muscles scored: worst {row['worst_pct']:.3f} %, "
-          f"median {row['median_pct']:.3f} %, 90th percentile {row['p90_pct']:.3f} %")
+          f"median {row['median_pct']:.3f} %, 90th percentile {row['p90_pct']:.3f} %{within}")
     return row
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--train", required=True, help="FE sweeps to fit (CSV with sidecar)")
+    parser.add_argument("--train", default=None,
+                        help="FE sweeps to fit (CSV with sidecar); default: the kind as shipped")
     parser.add_argument("--kind", default="muscle-gp")
     parser.add_argument("--muscles", type=int, default=60)
     parser.add_argument("--box-muscles", type=int, default=40)
@@ -65,26 +87,32 @@ def main() -> None:
     args = parser.parse_args()
     seed = args.seed if args.seed is not None else int(np.random.SeedSequence().entropy % 2**32)
     print(f"seed {seed}")
-    train = load_training_data(args.train)
     start = time.perf_counter()
-    with quiet_fits():
-        estimator = make_estimator(args.kind, train.inputs).fit(
-            train.X, train.y, threshold_pressure_bar=train.threshold_pressure_bar)
-    print(f"{args.kind} fitted on {train.n_muscles} muscles in {time.perf_counter() - start:.0f} s")
-    results = {"seed": seed, "kind": args.kind, "train": train.summary()}
+    if args.train is None:
+        model = cached_model(args.kind)
+        estimator, train = model.estimator, model.metadata["dataset"]
+        print(f"{args.kind} as shipped ({train['n_muscles']} muscles), loaded or trained in "
+              f"{time.perf_counter() - start:.0f} s")
+    else:
+        data = load_training_data(args.train)
+        with quiet_fits():
+            estimator = make_estimator(args.kind, data.inputs).fit(
+                data.X, data.y, threshold_pressure_bar=data.threshold_pressure_bar)
+        train = data.summary()
+        print(f"{args.kind} fitted on {data.n_muscles} muscles in "
+              f"{time.perf_counter() - start:.0f} s")
+    results = {"seed": seed, "kind": args.kind, "train": train}
     with tempfile.TemporaryDirectory() as folder:
         practical = Path(folder) / "practical.csv"
         build_practical_set(args.muscles, seed, practical, progress=False)
         results["practical_range"] = summary(
-            "practical range", worst_per_muscle(estimator, load_training_data(practical)),
-            args.muscles)
+            "practical range", estimator, load_training_data(practical), args.muscles)
         box = random_muscles(args.box_muscles, seed)
         frame, _ = fe_sweeps(box, "fine", EVAL_PRESSURES, progress=False)
         path = Path(folder) / "box.csv"
         frame.to_csv(path, index=False)
         results["paper_box"] = summary(
-            "paper's box", worst_per_muscle(estimator, load_training_data(path)),
-            args.box_muscles)
+            "paper's box", estimator, load_training_data(path), args.box_muscles)
     if args.out:
         with open(args.out, "w", encoding="utf-8") as f:
             json.dump({**results, "provenance": provenance()}, f, indent=2, default=jsonable)

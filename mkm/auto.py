@@ -55,9 +55,14 @@ from mkm import mesh_errors
 from mkm.core.records import file_sha256, package_file
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import MODELS
+from mkm.surrogate import kinds
 
 MODEL_ERRORS_FILE = package_file("mkm", "data", "model_errors.csv")
 REFERENCE_SPEC = "surrogate"
+#: Outside the default surrogate's box, the surrogate of the practical range is the reference
+#: (:data:`mkm.surrogate.kinds.RANGE`); it answers in the default's place, under this name.
+RANGE_SPEC = f"surrogate:kind={kinds.RANGE}"
+RANGE_PREDICTOR = f"surrogate-{kinds.RANGE}"
 FALLBACK = "axisym-fine"
 FALLBACK_SPEC = "axisym:mesh=fine"
 STD_FACTOR = 3.0
@@ -194,6 +199,7 @@ class AutoModel(ForceModel):
         meshes = Path(self.mesh_errors or mesh_errors.MESH_ERRORS_FILE)
         return {"tolerance": self.tolerance, "per_point": self.per_point, **self.muscle, **gap,
                 "table": path.name, "table_sha256": digest, "reference": REFERENCE_SPEC,
+                "reference_outside_its_box": RANGE_SPEC,
                 "std_factor": STD_FACTOR, "mesh_safety": MESH_SAFETY,
                 "mesh_errors": meshes.name,
                 "mesh_errors_sha256": file_sha256(meshes)[:12] if meshes.exists() else None}
@@ -207,20 +213,24 @@ class AutoModel(ForceModel):
                      else {"gap_mm": self.gap_mm} if self.gap_mm is not None else {})
         return self.build(spec, **self.muscle, **extra)
 
-    def reference(self, P, D0, t0, eps) -> tuple[np.ndarray, np.ndarray] | None:
-        """``(R, s)``: the surrogate's force and standard deviation [N] at every point, or None
-        where it cannot estimate the reference (a point or a muscle parameter outside its box,
-        or no predictive std)."""
-        try:
-            model = self._candidate(REFERENCE_SPEC, gap=False)
-        except ValueError:  # a muscle parameter the surrogate was not trained on
-            return None
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # out of its box: handled below
-            pred = model.predict(P, D0, t0, eps)
-        if "force_std_N" not in pred.extras or not pred.valid.all():
-            return None
-        return np.ravel(pred.force_N), np.ravel(pred.extras["force_std_N"])
+    def reference(self, P, D0, t0, eps):
+        """``(R, s, spec, prediction)``: the surrogate's force and standard deviation [N] at
+        every point, the spec of the surrogate that gave them and its prediction; None where no
+        surrogate can estimate the reference (a point or a muscle parameter outside its box, or
+        no predictive std). The default surrogate (:data:`REFERENCE_SPEC`) wherever it covers
+        the call; only where it does not, the practical range's (:data:`RANGE_SPEC`)."""
+        for spec in (REFERENCE_SPEC, RANGE_SPEC):
+            try:
+                model = self._candidate(spec, gap=False)
+            except ValueError:  # a muscle parameter the surrogate was not trained on
+                continue
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # out of its box: handled below
+                pred = model.predict(P, D0, t0, eps)
+            if "force_std_N" in pred.extras and pred.valid.all():
+                return (np.ravel(pred.force_N), np.ravel(pred.extras["force_std_N"]), spec,
+                        pred)
+        return None
 
     def choose(self, P, D0, t0, eps) -> dict[str, np.ndarray]:
         """Per point: the predictor that answers (``model_used``), its error bound [%], how
@@ -241,7 +251,7 @@ class AutoModel(ForceModel):
         ref = self.reference(P, D0, t0, eps)
         gapped = self.gapped
         if ref is not None:
-            R, s = ref
+            R, s, ref_spec, ref_pred = ref
             scale = _sweep_scale(R, np.stack([D0, t0, eps], axis=1))
         for row in candidates(table).itertuples():
             if not todo.any():
@@ -250,7 +260,7 @@ class AutoModel(ForceModel):
                 continue
             if gapped and not takes_gap(row.spec):
                 continue  # it would answer without the gap
-            model_pred = None
+            model_pred, predictor = None, row.predictor
             if row.family == "FE":
                 model_pred, bound, why = self._mesh_bound(row, P, D0, t0, eps)
             elif ref is None:
@@ -258,6 +268,10 @@ class AutoModel(ForceModel):
             elif row.spec == REFERENCE_SPEC:
                 bound = 100.0 * STD_FACTOR * s / scale
                 why = f"{STD_FACTOR:g} x the surrogate's calibrated std"
+                if ref_spec == RANGE_SPEC:  # it answers in the default's place
+                    model_pred, predictor = ref_pred, RANGE_PREDICTOR
+                    why = (f"{STD_FACTOR:g} x the calibrated std of the practical range's "
+                           "surrogate (outside the default surrogate's box)")
             else:
                 with warnings.catch_warnings():
                     warnings.simplefilter("ignore")  # a point it flags goes to the next one
@@ -283,7 +297,7 @@ class AutoModel(ForceModel):
                 continue  # one model for the whole query: it must answer every point
             ok = idx[valid[idx]]
             force[ok] = np.ravel(model_pred.force_N)[ok]
-            used[ok] = row.predictor
+            used[ok] = predictor
             bound_used[ok] = bound[ok]
             source[ok] = why
             todo[ok] = False
@@ -336,6 +350,8 @@ def spec_of(predictor: str, table: Path | str | None = None) -> str:
     if the study table does not list it."""
     if predictor == FALLBACK:
         return FALLBACK_SPEC
+    if predictor == RANGE_PREDICTOR:
+        return RANGE_SPEC
     rows = candidates(read_model_errors(table or MODEL_ERRORS_FILE))
     match = rows.loc[rows["predictor"] == predictor, "spec"]
     return str(match.iloc[0]) if len(match) else predictor

@@ -27,6 +27,8 @@ from dataclasses import dataclass
 from mkm.core.registry import Registry
 
 BEST = "muscle-gp"
+#: The kind auto takes as the reference where :data:`BEST`'s box does not cover a call.
+RANGE = "muscle-gp-range"
 CALL_INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
 #: Arguments every factory may take; the others are the kind's parameters.
 COMMON_ARGUMENTS = ("inputs", "fixed", "random_state")
@@ -73,6 +75,15 @@ class Kind:
         A class whose ``from_arrays(arrays, inputs, fixed)`` predicts from the arrays of the
         fitted estimator's ``predictor().arrays()`` without scikit-learn; saved beside the
         estimator, it makes loading fast. None: the estimator file is loaded.
+    dataset : str, optional
+        The FE dataset it trains on when none is given: a file of ``mkm.surrogate``'s data
+        folder. None: the default design (:data:`mkm.surrogate.training_data.DEFAULT_DATASET`).
+    std_sets : (str, str), optional
+        The random muscles that calibrate its std and the held-out ones that rescale it
+        (files of the same folder). None: the default surrogate's.
+    splits : int, optional
+        Muscle-held-out refits whose errors a training records (None: the default number);
+        a kind that takes minutes to fit records fewer, so its first use stays short.
     """
 
     name: str
@@ -84,6 +95,9 @@ class Kind:
     modules: tuple[str, ...] = ()
     members: str | Callable | None = None
     predictor: str | Callable | None = None
+    dataset: str | None = None
+    std_sets: tuple[str, str] | None = None
+    splits: int | None = None
 
     def names(self) -> list[str]:
         """The kind names this entry builds: its own, or every member of the family."""
@@ -210,6 +224,15 @@ for _kind in (
          trusted_types=("mkm.surrogate.muscle_gp.MuscleThresholdGP", *KERNEL_TYPES),
          modules=("mkm.surrogate.muscle_gp",),
          predictor="mkm.surrogate.muscle_predictor:MusclePredictor"),
+    Kind("muscle-gp-range", "mkm.surrogate.range_gp:RangeThresholdGP", "muscle GP (range)",
+         "the muscle GP over the practical range (D0 5-60 mm, P 0-8 bar, rubber C10 "
+         "0.03-0.6 MPa), its processes on log-scaled sizes and rubber; auto's reference "
+         "outside the default surrogate's box",
+         trusted_types=("mkm.surrogate.range_gp.RangeThresholdGP", *KERNEL_TYPES),
+         modules=("mkm.surrogate.muscle_gp", "mkm.surrogate.range_gp"),
+         predictor="mkm.surrogate.range_gp:RangePredictor",
+         dataset="mkm_range_design.csv",
+         std_sets=("mkm_range_std_calibration.csv", "mkm_range_std_holdout.csv"), splits=0),
     Kind("physics", "mkm.surrogate.feature_models:physics_model", "physics ridge",
          "F = A max(0, P - P*) with the closed form's slope and threshold corrected by "
          "ridge-penalised polynomials of the geometry (no std)",

@@ -18,9 +18,9 @@ from threadpoolctl import threadpool_limits
 
 from mkm.core.durations import timed
 from mkm.core.home import user_cache
-from mkm.core.records import file_sha256, provenance
+from mkm.core.records import file_sha256, package_file, provenance
 from mkm.surrogate.coverage import coverage
-from mkm.surrogate.kinds import BEST, make_estimator
+from mkm.surrogate.kinds import BEST, entry, make_estimator
 from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.quiet import quiet_fits
 from mkm.surrogate.training_data import (
@@ -37,15 +37,54 @@ from mkm.surrogate.validation import (
 )
 
 
-def train_surrogate(kind: str = "best", dataset=DEFAULT_DATASET, splits: int = MUSCLE_SPLITS,
+def kind_files(kind: str) -> tuple[Path, Path, Path]:
+    """The dataset ``kind`` trains on when none is given, and the random muscles that calibrate
+    and rescale its std (its registry entry's, :class:`mkm.surrogate.kinds.Kind`; the default
+    surrogate's when it names none)."""
+    found = entry(kind)
+    dataset = (package_file("mkm.surrogate", "data", found.dataset) if found.dataset
+               else DEFAULT_DATASET)
+    if found.std_sets is None:
+        return dataset, STD_CALIBRATION_SET, STD_HOLDOUT_SET
+    return (dataset, *(package_file("mkm.surrogate", "data", name) for name in found.std_sets))
+
+
+def std_sets(kind: str, dataset) -> tuple[Path, Path]:
+    """The random muscles that calibrate and rescale the std of ``kind`` trained on ``dataset``
+    (None: its own): its own sets on its own dataset, the default surrogate's on any other (the
+    sets belong with the muscles the dataset covers)."""
+    own, calibration, holdout = kind_files(kind)
+    if dataset is None or Path(dataset) == own:
+        return calibration, holdout
+    return STD_CALIBRATION_SET, STD_HOLDOUT_SET
+
+
+def kind_splits(kind: str, splits: int | None) -> int:
+    """``splits``, or when None the kind's own number of muscle-held-out refits."""
+    if splits is not None:
+        return splits
+    own = entry(kind).splits
+    return MUSCLE_SPLITS if own is None else own
+
+
+def train_surrogate(kind: str = "best", dataset=None, splits: int | None = None,
                     random_state: int = 0, progress: bool = False) -> SurrogateForceModel:
-    """Fit ``kind`` on the whole dataset; metrics from refits on ``splits`` muscle-held-out
-    splits (0: none). ``progress``: a progress bar on stderr over the fits."""
+    """Fit ``kind`` on the whole dataset (None: the kind's, :func:`kind_files`); metrics from
+    refits on ``splits`` muscle-held-out splits (0: none; None: the kind's number).
+    ``progress``: a progress bar on stderr over the fits."""
     resolved = BEST if kind == "best" else kind
-    data = load_training_data(dataset)
+    own_dataset = kind_files(resolved)[0]
+    calibration_path, holdout_path = std_sets(resolved, dataset)
+    splits = kind_splits(resolved, splits)
+    missing = [p for p in (calibration_path, holdout_path) if not p.is_file()]
+    if entry(resolved).std_sets is not None and missing and dataset in (None, own_dataset):
+        raise ValueError(f"surrogate kind {resolved!r} calibrates its std on {missing[0]}, "
+                         "which is missing: expected the file shipped with the package "
+                         "(reinstall it)")
+    data = load_training_data(own_dataset if dataset is None else dataset)
     estimator = make_estimator(resolved, data.inputs, data.fixed, random_state=random_state)
-    calibration = std_calibration_set(estimator, data)
-    holdout = std_calibration_set(estimator, data, STD_HOLDOUT_SET)
+    calibration = std_calibration_set(estimator, data, calibration_path)
+    holdout = std_calibration_set(estimator, data, holdout_path)
 
     def post_fit(model):
         model.calibrate_std(calibration.X, calibration.y)
@@ -142,8 +181,8 @@ def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SP
 
     parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
              "versions": provenance()["versions"], "code": code_version(kind),
-             "std_sets": [file_sha256(p) for p in (STD_CALIBRATION_SET, STD_HOLDOUT_SET)
-                          if p.is_file()]}
+             "std_sets": [file_sha256(p) for p in std_sets(BEST if kind == "best" else kind,
+                                                           dataset) if p.is_file()]}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
 
@@ -158,17 +197,25 @@ def training_task(kind: str, dataset=DEFAULT_DATASET) -> str:
     return f"surrogate-training-{kind}-{Path(dataset).stem}"
 
 
-def is_cached(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
-              splits: int = MUSCLE_SPLITS) -> bool:
+def _cache_folder(kind, dataset, cache_dir, splits) -> tuple[Path, Path, int]:
+    """The cache folder of ``kind`` on ``dataset`` (None: the kind's), the dataset and the
+    splits resolved."""
+    resolved = BEST if kind == "best" else kind
+    dataset = kind_files(resolved)[0] if dataset is None else Path(dataset)
+    splits = kind_splits(resolved, splits)
+    cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
+    return cache_dir / f"{kind}-{cache_key(dataset, kind, splits)}", dataset, splits
+
+
+def is_cached(kind: str = "best", dataset=None, cache_dir=None,
+              splits: int | None = None) -> bool:
     """Whether :func:`cached_model` would load ``kind`` rather than train it (callers name the
     training phase before it starts)."""
-    cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
-    directory = cache_dir / f"{kind}-{cache_key(dataset, kind, splits)}"
-    return (directory / "metadata.json").is_file()
+    return (_cache_folder(kind, dataset, cache_dir, splits)[0] / "metadata.json").is_file()
 
 
-def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
-                 splits: int = MUSCLE_SPLITS, progress: bool = False) -> SurrogateForceModel:
+def cached_model(kind: str = "best", dataset=None, cache_dir=None,
+                 splits: int | None = None, progress: bool = False) -> SurrogateForceModel:
     """Surrogate ``kind`` trained on ``dataset``, as a fitted ForceModel: the one surrogate cache.
 
     Trained on first use and kept under ``cache_dir`` (default: the user's cache folder) as
@@ -180,11 +227,10 @@ def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
 
     from mkm.surrogate.io import load_model, save_model
 
-    if not Path(dataset).is_file():
+    directory, dataset, splits = _cache_folder(kind, dataset, cache_dir, splits)
+    if not dataset.is_file():
         load_training_data(dataset)  # raises the ValueError that says what is missing
-    cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
-    cache_dir.mkdir(parents=True, exist_ok=True)
-    directory = cache_dir / f"{kind}-{cache_key(dataset, kind, splits)}"
+    directory.parent.mkdir(parents=True, exist_ok=True)
     with FileLock(str(directory) + ".lock"):
         if (directory / "metadata.json").is_file():
             with warnings.catch_warnings():
@@ -199,7 +245,7 @@ def cached_model(kind: str = "best", dataset=DEFAULT_DATASET, cache_dir=None,
     return model
 
 
-def default_model(dataset=DEFAULT_DATASET, cache_dir=None, progress: bool = False,
+def default_model(dataset=None, cache_dir=None, progress: bool = False,
                   **parameters) -> SurrogateForceModel:
     """The default (``best``) surrogate trained on ``dataset`` (see :func:`cached_model`), for
     the muscle ``parameters`` (``L0_mm``, ``theta0_deg``, ``C10_MPa``, ``C01_MPa``);

@@ -14,7 +14,16 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from mkm.auto import MESH_SAFETY, STD_FACTOR, AutoModel, explain, read_model_errors
+from mkm.auto import (
+    MESH_SAFETY,
+    RANGE_PREDICTOR,
+    RANGE_SPEC,
+    STD_FACTOR,
+    AutoModel,
+    explain,
+    read_model_errors,
+    spec_of,
+)
 from mkm.fem.calibration import Calibration
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import make_model
@@ -32,27 +41,31 @@ TABLE = {"eq2-braid": ("eq2:diameter=braid", "closed form", 1e-6, 0.0),
 
 
 class FakeSurrogate(ForceModel):
-    """The coarse FE model with a constant predictive std of STD_N, valid for D0 <= 50 mm."""
+    """The coarse FE model with a constant predictive std of ``std_N`` (STD_N), valid for D0 <=
+    ``D0_max_mm`` (50 mm: the default surrogate's box)."""
 
     name = "surrogate"
 
-    def __init__(self, **muscle):
+    def __init__(self, std_N=STD_N, D0_max_mm=50.0, **muscle):
         self.fe = make_model("axisym", mesh="coarse", **muscle)
         self.muscle = muscle
+        self.std_N, self.D0_max_mm = std_N, D0_max_mm
 
     def params(self):
         return dict(self.muscle)
 
     def _forces(self, P, D0, t0, eps):
         pred = self.fe.predict(P, D0, t0, eps)
-        return {"force_N": pred.force_N, "valid": pred.valid & (D0 <= 50.0),
-                "force_std_N": np.full(P.shape, STD_N)}
+        return {"force_N": pred.force_N, "valid": pred.valid & (D0 <= self.D0_max_mm),
+                "force_std_N": np.full(P.shape, self.std_N)}
 
 
 def fake_build(spec: str, **muscle) -> ForceModel:
     if spec == "surrogate":
         return FakeSurrogate(**{k: v for k, v in muscle.items() if k != "L0_mm"},
                              L0_mm=muscle.get("L0_mm", 282.0))
+    if spec == RANGE_SPEC:  # the unit tests' auto has no surrogate of the practical range
+        raise ValueError("no surrogate of the practical range in these tests")
     return build_spec(spec, **muscle)
 
 
@@ -130,6 +143,43 @@ def test_outside_the_surrogates_box_only_the_fe_answers(table_path):
     strict = auto(table_path, tolerance=0.005).predict(P, 55.0, 2.5, 0.05)
     assert set(strict.extras["model_used"]) == {"axisym-fine"}
     assert "outside the surrogate's box" in explain(strict)
+
+
+RANGE_STD_N = 1.0
+
+
+def test_outside_the_default_box_the_range_surrogate_answers_and_never_inside(table_path):
+    built = []
+
+    def build(spec, **muscle):
+        built.append(spec)
+        if spec == RANGE_SPEC:  # the practical range's: valid up to D0 60 mm, its own std
+            return FakeSurrogate(std_N=RANGE_STD_N, D0_max_mm=60.0, L0_mm=282.0, **muscle)
+        return fake_build(spec, **muscle)
+
+    def run(D0, tolerance):
+        return AutoModel(table=table_path, build=build, tolerance=tolerance,
+                         mesh_errors=str(Path(table_path).with_name("none.csv"))
+                         ).predict(P, D0, 2.5, 0.05)
+
+    ref = make_model("axisym", mesh="coarse").predict(P, 55.0, 2.5, 0.05).force_N
+    bound = 100 * STD_FACTOR * RANGE_STD_N / ref.max()
+    thick = 100 * (np.abs(make_model("thickwall").predict(P, 55.0, 2.5, 0.05).force_N - ref)
+                   + STD_FACTOR * RANGE_STD_N) / ref.max()
+    assert bound < thick.max()  # a tolerance between them leaves the surrogate the cheapest
+    pred = run(55.0, 1.01 * bound / 100)
+    assert set(pred.extras["model_used"]) == {RANGE_PREDICTOR}
+    np.testing.assert_allclose(pred.extras["error_bound_pct"], bound)
+    np.testing.assert_array_equal(pred.force_N, ref)
+    assert "practical range's surrogate" in explain(pred)
+    assert spec_of(RANGE_PREDICTOR) == RANGE_SPEC
+    # its bound is its calibrated std: below it, the mesh answers
+    assert set(run(55.0, 0.9 * bound / 100).extras["model_used"]) != {RANGE_PREDICTOR}
+    # inside the default's box the default answers and the range's is never built
+    built.clear()
+    inside = run(35.0, 0.05)
+    assert RANGE_SPEC not in built
+    assert RANGE_PREDICTOR not in set(inside.extras["model_used"])
 
 
 def test_per_point_may_mix_models_a_sweep_never_does(table_path):

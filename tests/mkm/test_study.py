@@ -126,7 +126,7 @@ def test_surrogate_kinds_default_all_and_typos():
 
     assert BEST in STUDY_SURROGATES
     every = surrogate_kinds("all")
-    assert len(every) == 4 + 54 and set(STUDY_SURROGATES) <= set(every)
+    assert len(every) == 5 + 54 and set(STUDY_SURROGATES) <= set(every)
     assert surrogate_kinds(" physics, net-1x25-relu ") == ("physics", "net-1x25-relu")
     with pytest.raises(ValueError, match="unknown kind physcs"):
         surrogate_kinds("muscle-gp,physcs")

@@ -76,7 +76,7 @@ def test_paper_net_matches_fitrnet_settings():
 
 def test_every_kind_builds():
     kinds = names()
-    assert len(kinds) == 4 + 54 and "mlp-standardised" not in kinds  # dropped: see README
+    assert len(kinds) == 5 + 54 and "mlp-standardised" not in kinds  # dropped: see README
     for name in kinds:
         make_estimator(name)
 
