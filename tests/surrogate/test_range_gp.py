@@ -52,7 +52,7 @@ def range_model():
     return cached_model(kinds.RANGE)  # about 2-4 min of one core the first time
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_its_std_holds_on_muscles_nothing_saw(range_model):
     # 40 random muscles of the practical range (seed 20261224, tests/surrogate/data/
     # range_check.json) that neither the fit (seeds 20261220, 20261222 and the box design), the
@@ -72,7 +72,7 @@ def test_its_std_holds_on_muscles_nothing_saw(range_model):
     assert range_model.metadata["std_rescale"]["n_muscles"] == 158
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_auto_answers_a_festo_class_muscle_with_it_within_tolerance(range_model):
     # A 10 mm muscle at 1-6 bar (DMSP-10 class): outside the default's box (D0 30-50 mm,
     # P 0-2.5 bar), inside the practical range. At 5 % the thick-wall form meets it through the
