@@ -125,6 +125,18 @@ def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
     return scale
 
 
+def _announce_first_training(kind: str) -> None:
+    """Say before a surrogate trains on first use (minutes for the practical range's), so that a
+    command does not wait without a word."""
+    from mkm.core.durations import estimate
+    from mkm.surrogate.train import is_cached, kind_files, training_task
+
+    if not is_cached(kind):
+        warnings.warn(f"training the surrogate {kind} on first use, "
+                      f"{estimate(training_task(kind, kind_files(kind)[0]))}; later calls load "
+                      "it", stacklevel=3)
+
+
 class AutoModel(ForceModel):
     """The cheapest model meeting ``tolerance`` at the query (``--model auto --tolerance 2%``).
 
@@ -220,6 +232,8 @@ class AutoModel(ForceModel):
         no predictive std). The default surrogate (:data:`REFERENCE_SPEC`) wherever it covers
         the call; only where it does not, the practical range's (:data:`RANGE_SPEC`)."""
         for spec in (REFERENCE_SPEC, RANGE_SPEC):
+            if spec == RANGE_SPEC:
+                _announce_first_training(kinds.RANGE)
             try:
                 model = self._candidate(spec, gap=False)
             except ValueError:  # a muscle parameter the surrogate was not trained on

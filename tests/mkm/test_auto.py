@@ -8,6 +8,7 @@ the real default surrogate and check the promise against the FE itself.
 from __future__ import annotations
 
 import json
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -396,3 +397,20 @@ def test_a_gap_the_calibration_holds_keeps_the_surrogate_out_too(table_path, tmp
     assert set(free.predict(P, 35.0, 2.5, 0.05).extras["model_used"]) == {
         "surrogate-muscle-gp"}
     assert "gap_mm" not in explain(free.predict(P, 35.0, 2.5, 0.05))
+
+
+def test_a_surrogate_about_to_train_is_announced_first(monkeypatch):
+    """A first use outside the default's box trains the practical range's surrogate for
+    minutes: auto says so before it starts, with the promise of how long, and not once cached."""
+    import mkm.surrogate.train as train
+    from mkm.auto import _announce_first_training
+    from mkm.surrogate import kinds
+
+    monkeypatch.setattr(train, "is_cached", lambda kind: False)
+    with pytest.warns(UserWarning, match=f"training the surrogate {kinds.RANGE} on first use, "
+                                         ".*; later calls load it"):
+        _announce_first_training(kinds.RANGE)
+    monkeypatch.setattr(train, "is_cached", lambda kind: True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        _announce_first_training(kinds.RANGE)
