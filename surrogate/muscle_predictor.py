@@ -128,7 +128,11 @@ def force_parts(P, A, s_A, Pstar, s_P, linearity_bar, bend_bar=0.0):
     e2 = (mu**2 + s**2) * cdf + mu * s * pdf
     rel = np.divide(s_A, A, out=np.zeros(np.broadcast_shapes(np.shape(s_A), np.shape(A))),
                     where=A > 0)
-    var = np.maximum(A**2 * (np.exp(2 * rel**2) * e2 - np.exp(rel**2) * e1**2), 0.0)
+    # a slope whose std dwarfs it (far outside the training data) overflows: its variance is
+    # unbounded, said as inf rather than a NaN
+    with np.errstate(over="ignore", invalid="ignore"):
+        var = A**2 * (np.exp(2 * rel**2) * e2 - np.exp(rel**2) * e1**2)
+    var = np.where(np.isfinite(var), np.maximum(var, 0.0), np.inf)
     return force, var, A * linearity_floor_bar(P - Pstar, linearity_bar, bend_bar)
 
 
