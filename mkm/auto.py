@@ -125,6 +125,18 @@ def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
     return scale
 
 
+def _in_practical_range(P, D0, t0, eps) -> bool:
+    """Whether every point lies in the practical range's box (:meth:`PracticalRange.hull
+    <mkm.fem.limits.PracticalRange.hull>`: past the lock at every angle, or a tube no muscle of
+    the range has, is outside)."""
+    from mkm.fem.limits import PRACTICAL_RANGE
+
+    box = PRACTICAL_RANGE.hull()
+    return all(np.all((np.asarray(value) >= box[name][0]) & (np.asarray(value) <= box[name][1]))
+               for name, value in (("pressure_bar", P), ("D0_mm", D0), ("t0_mm", t0),
+                                   ("eps", eps)))
+
+
 def _announce_first_training(kind: str) -> None:
     """Say before a surrogate trains on first use (minutes for the practical range's), so that a
     command does not wait without a word."""
@@ -233,6 +245,8 @@ class AutoModel(ForceModel):
         the call; only where it does not, the practical range's (:data:`RANGE_SPEC`)."""
         for spec in (REFERENCE_SPEC, RANGE_SPEC):
             if spec == RANGE_SPEC:
+                if not _in_practical_range(P, D0, t0, eps):
+                    continue  # no surrogate answers there: none is trained for it
                 _announce_first_training(kinds.RANGE)
             try:
                 model = self._candidate(spec, gap=False)
