@@ -52,13 +52,11 @@ def worst_per_muscle(estimator, data) -> np.ndarray:
 
 def std_coverage(estimator, data) -> dict | None:
     """Share of the points within 1, 2 and 3 predictive std of the FE (None without a std)."""
-    from mkm.surrogate.coverage import coverage
-    from mkm.surrogate.validation import predict_with_std
+    from mkm.surrogate.validation import std_coverage as within
 
     if not hasattr(estimator, "calibrate_std"):
         return None
-    force, std = predict_with_std(estimator, data.X)
-    return {f"within_{k}std": coverage(data.y - force, std, float(k)) for k in (1, 2, 3)}
+    return within(estimator, data.X, data.y)
 
 
 def summary(label: str, estimator, data, drawn: int) -> dict:

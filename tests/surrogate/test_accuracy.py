@@ -121,15 +121,13 @@ def test_std_coverage_on_held_out_muscles(best):
     # points; 2 and 3 std keep the 3 points.
     from pathlib import Path
 
-    from mkm.surrogate.coverage import coverage
     from mkm.surrogate.training_data import load_training_data
-    from mkm.surrogate.validation import predict_with_std
+    from mkm.surrogate.validation import std_coverage
 
     data = load_training_data(Path(__file__).parent / "data" / "std_test_muscles.csv")
     assert data.n_muscles == 120
-    force, std = predict_with_std(best.estimator, data.X)
-    error = data.y - force
-    assert coverage(error, std, 1.0) == pytest.approx(0.6827, abs=0.08)
-    assert coverage(error, std, 2.0) == pytest.approx(0.9545, abs=0.03)
-    assert coverage(error, std, 3.0) == pytest.approx(0.9973, abs=0.03)
+    within = std_coverage(best.estimator, data.X, data.y)
+    assert within["within_1std"] == pytest.approx(0.6827, abs=0.08)
+    assert within["within_2std"] == pytest.approx(0.9545, abs=0.03)
+    assert within["within_3std"] == pytest.approx(0.9973, abs=0.03)
     assert best.metadata["std_rescale"]["n_muscles"] == 360

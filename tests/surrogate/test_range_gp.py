@@ -60,15 +60,13 @@ def test_its_std_holds_on_muscles_nothing_saw(range_model):
     # 95.45 / 99.73 % within 1 / 2 / 3 std. Measured: 65.3 / 89.1 / 96.0 % (rescaled on 59
     # held-out muscles instead of 158: 60.5 / 86.6 / 93.9 %). The std is short in the tails: the
     # pins hold what it reaches, a little looser than the default's (3 points, 8 at 1 std).
-    from mkm.surrogate.coverage import coverage
-    from mkm.surrogate.validation import predict_with_std
+    from mkm.surrogate.validation import std_coverage
 
     data = load_training_data(CHECK_SET)
-    force, std = predict_with_std(range_model.estimator, data.X)
-    error = data.y - force
-    assert coverage(error, std, 1.0) == pytest.approx(0.6827, abs=0.08)
-    assert coverage(error, std, 2.0) == pytest.approx(0.9545, abs=0.08)
-    assert coverage(error, std, 3.0) == pytest.approx(0.9973, abs=0.05)
+    within = std_coverage(range_model.estimator, data.X, data.y)
+    assert within["within_1std"] == pytest.approx(0.6827, abs=0.08)
+    assert within["within_2std"] == pytest.approx(0.9545, abs=0.08)
+    assert within["within_3std"] == pytest.approx(0.9973, abs=0.05)
     assert range_model.metadata["std_rescale"]["n_muscles"] == 158
 
 
