@@ -229,6 +229,11 @@ def test_check_prints_the_expected_budget(config):
     assert table[0].split()[:2] == ["term", "type"]
     assert any(line.split()[0] == "combined" for line in table)
     assert table[0] in lines and "," not in table[0]  # a table to read, not CSV in the prose
+    # the pressure's terms at the top pressure: the declared components, each on its line
+    text, _ = check(config.replace(regulator=COMPONENTS))
+    span = [line for line in text.splitlines() if "monitor span error" in line]
+    assert len(span) == 1 and span[0].endswith("regulator.monitor_span_fraction=0.004 x 2.5 bar")
+    assert "monitor non-linearity" in text and "pressure reading accuracy" not in text
 
 
 def test_coverage_on_simulated_runs():
