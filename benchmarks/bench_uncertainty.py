@@ -44,7 +44,6 @@ from mkm.bench.config import load_config
 from mkm.bench.coverage import simulated_coverage
 from mkm.core.records import jsonable, provenance
 
-
 #: The monitor's error declared as components: the packaged 0.04 bar itemised, an illustration
 #: and not a data sheet: the worst case of their sum at the top of the range, 0.016 + 0.004 x
 #: 2.5 + 0.008 + 0.012 / 2 = 0.04 bar, is the single bound (0.4 % of the 4 bar scale for the
