@@ -164,6 +164,22 @@ def test_monitor_components_are_terms_of_their_own(config):
     assert names == ["monitor zero error", "ADC resolution (monitor)"]
 
 
+def test_a_run_records_the_components_and_its_steps_carry_them(config, tmp_path):
+    small = config.replace(regulator=COMPONENTS, sequence={
+        "pressures_bar": (2.0,), "down_sweep": False, "preconditioning_cycles": 0})
+    run = load_run(acquire(small, out_root=tmp_path, notify=lambda m: None).path)
+    # the report recomputes a step's terms from run.json: the components are there
+    i = Instrument.from_run(run.meta)
+    assert i.monitor_components == COMPONENTS
+    s = run.steps.iloc[0]
+    b = step_budget(i, s.force_N_mean, s.force_N_std, int(s.n), s.force_drift_N, math.nan, 0,
+                    pressure_bar=s.pressure_bar_mean)
+    assert s.pressure_u_bar == pytest.approx(b.pressure_u_bar, rel=1e-5)  # steps.csv: 6 digits
+    assert s.pressure_u_bar == pytest.approx(math.sqrt(
+        (0.016**2 + (0.004 * s.pressure_bar_mean)**2 + 0.008**2 + 0.006**2) / 3
+        + (i.lsb_V * i.monitor_bar_per_V)**2 / 12), rel=1e-5)
+
+
 def test_without_components_the_pressure_budget_is_the_one_bound(config):
     i = Instrument.from_config(config)
     assert config.regulator.monitor_components == {} and i.monitor_components == {}
