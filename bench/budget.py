@@ -30,7 +30,14 @@ force [N]
     The budget table shows it beside the terms.
 
 pressure [bar]
-    - reading accuracy: ``regulator.monitor_accuracy_bar``, rectangular (type B);
+    - the reading's error from the data sheet (type B, each rectangular: nothing more than a
+      bound being known, GUM 4.3.7), as ``[regulator]`` declares it
+      (:data:`mkm.bench.config.MONITOR_COMPONENTS`): either ``monitor_accuracy_bar``, one
+      bound at every pressure; or its components, each its own term: the zero error
+      ``monitor_zero_bar``, the span error ``monitor_span_fraction`` x the reading, the
+      non-linearity ``monitor_nonlinearity_bar`` and half the hysteresis
+      ``monitor_hysteresis_bar`` (a branch's reading is off by at most half the difference
+      between the rising and falling ones);
     - ADC resolution of the monitor input, not reduced by averaging (the monitor's noise is below
       one step), electronic regulator only.
 
@@ -52,7 +59,7 @@ allows before anything is pressurised, with the data terms at the settle and tar
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, field, fields
 from typing import Any
 
 import numpy as np
@@ -169,6 +176,8 @@ class Instrument:
     lsb_V: float
     monitor_accuracy_bar: float
     monitor_bar_per_V: float  # nan with a manual regulator (no monitor input)
+    #: the declared components of the reading's error (``Regulator.monitor_components``)
+    monitor_components: dict[str, float] = field(default_factory=dict)
 
     @classmethod
     def from_config(cls, config) -> Instrument:
@@ -198,7 +207,8 @@ class Instrument:
         per_V = regulator.full_scale_bar / span_V if regulator.electronic else math.nan
         return cls(cell.capacity_N, cell.sensitivity_N_per_V,
                    cell.sensitivity_tolerance_fraction, cell.nonlinearity_fraction_fs,
-                   cell.zero_drift_fraction_fs, lsb_V, regulator.monitor_accuracy_bar, per_V)
+                   cell.zero_drift_fraction_fs, lsb_V, regulator.monitor_accuracy_bar, per_V,
+                   regulator.monitor_components)
 
     @property
     def lsb_N(self) -> float:
@@ -233,8 +243,33 @@ def _resolution(lsb: float, scatter: float, n: int) -> float:
     return u / math.sqrt(n) if dithered and n > 0 else u
 
 
+def reading_terms(instrument: Instrument, pressure_bar: float) -> list[Term]:
+    """The data-sheet terms of a pressure reading of ``pressure_bar`` [bar]: one per declared
+    component, else the one bound ``monitor_accuracy_bar`` (see the module docstring)."""
+    components = instrument.monitor_components
+    if not components:
+        a = instrument.monitor_accuracy_bar
+        return [Term("pressure reading accuracy", "pressure", a / SQRT3, "B",
+                     f"regulator.monitor_accuracy_bar={a:g}", "rectangular")]
+    from mkm.bench.config import MONITOR_COMPONENTS
+
+    terms = []
+    for name, bound in components.items():
+        source = f"regulator.{name}={bound:g}"
+        if name == "monitor_span_fraction":
+            half, source = bound * abs(pressure_bar), f"{source} x {pressure_bar:.3g} bar"
+        elif name == "monitor_hysteresis_bar":
+            half, source = bound / 2, f"{source}, half on either branch"
+        else:
+            half = bound
+        terms.append(Term(f"monitor {MONITOR_COMPONENTS[name][1]}", "pressure", half / SQRT3,
+                          "B", source, "rectangular"))
+    return terms
+
+
 def step_budget(instrument: Instrument, force_N: float, force_N_std: float, n: int,
-                force_drift_N: float, tare_std_N: float, tare_n: int) -> Budget:
+                force_drift_N: float, tare_std_N: float, tare_n: int, *,
+                pressure_bar: float) -> Budget:
     """The uncertainty budget of one step (see the module docstring).
 
     Parameters
@@ -251,6 +286,8 @@ def step_budget(instrument: Instrument, force_N: float, force_N_std: float, n: i
         Change of the hold's straight-line trend from its first to its last sample [N].
     tare_std_N, tare_n : float, int
         The tare's standard deviation [N] and its number of samples.
+    pressure_bar : float
+        The hold's mean pressure reading [bar] (the span error is a fraction of it).
     """
     i = instrument
     scatter = residual_std(force_N_std, n, force_drift_N)
@@ -275,8 +312,7 @@ def step_budget(instrument: Instrument, force_N: float, force_N_std: float, n: i
         Term("tare spread", "force",
              tare_std_N / math.sqrt(tare_n) if tare_n > 0 else math.nan, "A",
              f"tare scatter {tare_std_N:.3g} N over {tare_n} samples"),
-        Term("pressure reading accuracy", "pressure", i.monitor_accuracy_bar / SQRT3, "B",
-             f"regulator.monitor_accuracy_bar={i.monitor_accuracy_bar:g}", "rectangular"),
+        *reading_terms(i, pressure_bar),
     ]
     if math.isfinite(i.monitor_bar_per_V):
         lsb_bar = i.lsb_V * i.monitor_bar_per_V
@@ -285,8 +321,9 @@ def step_budget(instrument: Instrument, force_N: float, force_N_std: float, n: i
     return Budget(tuple(terms), drift_N=force_drift_N)
 
 
-def expected_budget(config, force_N: float) -> Budget:
-    """The budget a step of ``config`` can have at the force ``force_N`` [N], before any run.
+def expected_budget(config, force_N: float, pressure_bar: float) -> Budget:
+    """The budget a step of ``config`` can have at the force ``force_N`` [N] and the pressure
+    ``pressure_bar`` [bar], before any run.
 
     The data terms take the largest values a step can pass with: the hold's scatter at
     ``settle.max_force_std_N``, its drift at ``settle.max_force_slope_N_per_s`` over
@@ -301,7 +338,7 @@ def expected_budget(config, force_N: float) -> Budget:
     std = math.sqrt((st.max_force_std_N**2 * (n - 2) + drift**2 * n * (n + 1) / (12 * (n - 1)))
                     / (n - 1))
     return step_budget(Instrument.from_config(config), force_N, std, n, drift,
-                       config.safety.tare_max_std_N, tare_n)
+                       config.safety.tare_max_std_N, tare_n, pressure_bar=pressure_bar)
 
 
 def budget_table(budget: Budget, quantity: str = "force") -> list[str]:

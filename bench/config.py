@@ -62,6 +62,19 @@ MAX_VENT_BELOW_BAR = 0.2
 MAX_VENT_TIMEOUT_S = 30.0
 MAX_DATASHEET_FRACTION = 0.05
 MONITOR_MARGIN_FRACTION = 0.025  # 0.1 V of a 4 V span: noise and offset of a working output
+#: The pressure reading's error as ``[regulator]`` declares it, name: (unit, what it is).
+#: Either one +- bound at every pressure (``monitor_accuracy_bar``, alone), or the components a
+#: pressure sensor's data sheet itemises, each a +- bound (those declared replace the single
+#: one in the budget): the zero (offset) error; the span (gain) error, a fraction of the
+#: reading; the non-linearity, the largest departure from the line through the zero and
+#: full-scale readings; the hysteresis, the largest difference between the readings of one
+#: pressure approached rising and falling (so +- half of it on either branch). Repeatability is
+#: left out: a random error of each approach, which no simulated truth stands for.
+MONITOR_COMPONENTS = {"monitor_accuracy_bar": ("bar", "reading accuracy"),
+                      "monitor_zero_bar": ("bar", "zero error"),
+                      "monitor_span_fraction": ("fraction", "span error"),
+                      "monitor_nonlinearity_bar": ("bar", "non-linearity"),
+                      "monitor_hysteresis_bar": ("bar", "hysteresis")}
 
 
 def read_muscle(table: Any, where: str = "muscle") -> Muscle:
@@ -167,6 +180,11 @@ class Regulator:
     monitor_V_at_zero: float = 1.0
     monitor_V_at_full_scale: float = 5.0
     monitor_accuracy_bar: float = 0.04  # +- bound of the pressure reading: 1 % of an ITV's 4 bar
+    # the reading's error as a data sheet itemises it (None: not declared; see MONITOR_COMPONENTS)
+    monitor_zero_bar: float | None = None
+    monitor_span_fraction: float | None = None
+    monitor_nonlinearity_bar: float | None = None
+    monitor_hysteresis_bar: float | None = None
 
     @property
     def electronic(self) -> bool:
@@ -182,11 +200,24 @@ class Regulator:
         if not 0 < self.max_pressure_bar <= self.full_scale_bar:
             raise ValueError(f"regulator.max_pressure_bar={self.max_pressure_bar:g} is invalid: "
                              f"expected 0 < max <= full_scale_bar={self.full_scale_bar:g}")
-        within("regulator.monitor_accuracy_bar", self.monitor_accuracy_bar, 0.0,
-               MAX_TOLERANCE_FRACTION * self.full_scale_bar, "bar",
-               f"a tenth of regulator.full_scale_bar={self.full_scale_bar:g}")
+        for name, (unit, _) in MONITOR_COMPONENTS.items():
+            value = getattr(self, name)
+            if name == "monitor_accuracy_bar" or value is not None:
+                high = (MAX_DATASHEET_FRACTION if unit == "fraction"
+                        else MAX_TOLERANCE_FRACTION * self.full_scale_bar)
+                within(f"regulator.{name}", value, 0.0, high,
+                       "(a fraction of the reading)" if unit == "fraction" else "bar",
+                       "a sensor 5 % off is broken" if unit == "fraction" else
+                       f"a tenth of regulator.full_scale_bar={self.full_scale_bar:g}")
         if not self.monitor_V_at_full_scale > self.monitor_V_at_zero:
             raise ValueError("regulator.monitor_V_at_full_scale must exceed monitor_V_at_zero")
+
+    @property
+    def monitor_components(self) -> dict[str, float]:
+        """The components of the reading's error the configuration declares (name: bound), empty
+        when it declares only ``monitor_accuracy_bar``."""
+        return {name: float(getattr(self, name)) for name in MONITOR_COMPONENTS
+                if name != "monitor_accuracy_bar" and getattr(self, name) is not None}
 
     def command_volts(self, pressure_bar: float) -> float:
         """AO command [V, 0-10] for ``pressure_bar``, clamped to ``[0, max_pressure_bar]``."""
@@ -349,6 +380,13 @@ class BenchConfig:
                              "expected every planned pressure within the limit")
         self._check_interlocks()
         check_wall(*self.sim.truth.geometry(self.muscle), prefix="sim.truth.")
+        if self.sim.truth.monitor_bow_bar is not None:
+            # within a tenth of full scale the bowed sensor still reads a higher pressure
+            # higher: its slope is at least gain - 4 bow / full scale >= 0.9 - 0.4
+            fs = self.regulator.full_scale_bar
+            within("sim.truth.monitor_bow_bar", self.sim.truth.monitor_bow_bar,
+                   -MAX_TOLERANCE_FRACTION * fs, MAX_TOLERANCE_FRACTION * fs, "bar",
+                   f"a tenth of regulator.full_scale_bar={fs:g}")
         self._check_device()
         self._check_duration()
 

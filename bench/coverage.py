@@ -10,16 +10,27 @@ mean true ones over the same hold samples: covered when ``|F_meas - F_true| <= f
 
 Each run's instruments are drawn within the data sheet the configuration declares
 (:func:`instrument_draw`): the load cell's gain uniform within
-``loadcell.sensitivity_tolerance_fraction``; the pressure monitor as a linear sensor (an offset
-and a gain) that meets ``regulator.monitor_accuracy_bar`` over the whole range, uniform over
-every such sensor: its error at 0 bar and its error at ``regulator.max_pressure_bar`` each
-uniform within the bound, independent, and the error in between on the line joining them (a
-bound over the range is met at every pressure when it is met at both ends). At either end the
-error is then uniform within the bound, as the budget's rectangular term says; in between it
-is the mean of two such errors, weighted by the position in the range, more often small:
-the budget's interval, right at the ends, covers more there. The simulated cell is linear and
-its zero does not drift, so those two data-sheet terms (``nonlinearity_fraction_fs``,
-``zero_drift_fraction_fs``) are set to zero: they would have nothing to cover.
+``loadcell.sensitivity_tolerance_fraction``; the pressure monitor from what ``[regulator]``
+declares of its error (:data:`mkm.bench.config.MONITOR_COMPONENTS`):
+
+- its components: each drawn uniformly within its own bound, independent: the offset within
+  ``monitor_zero_bar``, the gain within ``1 +- monitor_span_fraction``, the bow's amplitude
+  (``[sim.truth] monitor_bow_bar``, a non-linearity zero at both ends of the sensor's scale)
+  within ``monitor_nonlinearity_bar``, the difference between rising and falling readings
+  within ``0..monitor_hysteresis_bar``; a component not declared is not drawn (exact). Each
+  then reaches its bound somewhere: the zero everywhere, the span at the top of the range,
+  the bow at mid-scale (2 bar on a 4 bar sensor), the hysteresis on every branch;
+- ``monitor_accuracy_bar`` alone: a linear sensor (an offset and a gain) that meets the bound
+  over the whole range, uniform over every such sensor: its error at 0 bar and its error at
+  ``regulator.max_pressure_bar`` each uniform within the bound, independent, and the error in
+  between on the line joining them (a bound over the range is met at every pressure when it is
+  met at both ends). At either end the error is then uniform within the bound, as the budget's
+  rectangular term says; in between it is the mean of two such errors, weighted by the position
+  in the range, more often small: the budget's interval, right at the ends, covers more there.
+
+The simulated cell is linear and its zero does not drift, so those two data-sheet terms
+(``nonlinearity_fraction_fs``, ``zero_drift_fraction_fs``) are set to zero: they would have
+nothing to cover.
 """
 
 from __future__ import annotations
@@ -43,8 +54,20 @@ def instrument_draw(config, seed: int) -> dict:
     ``config`` (see the module docstring)."""
     rng = np.random.default_rng([int(seed), 0x1A57])
     tolerance = config.loadcell.sensitivity_tolerance_fraction
-    accuracy = config.regulator.monitor_accuracy_bar
     gain = 1.0 + float(rng.uniform(-tolerance, tolerance))
+    components = config.regulator.monitor_components
+    if components:
+        # the truth each declared component stands for, and the interval it is drawn from
+        drawn = {"monitor_zero_bar": ("monitor_offset_bar", -1.0, 0.0),
+                 "monitor_span_fraction": ("monitor_gain", -1.0, 1.0),
+                 "monitor_nonlinearity_bar": ("monitor_bow_bar", -1.0, 0.0),
+                 "monitor_hysteresis_bar": ("monitor_hysteresis_bar", 0.0, 0.0)}
+        truth = {}
+        for name, bound in components.items():
+            key, low, shift = drawn[name]
+            truth[key] = shift + float(rng.uniform(low * bound, bound))
+        return {"loadcell_gain": gain, **truth}
+    accuracy = config.regulator.monitor_accuracy_bar
     at_zero, at_full_scale = rng.uniform(-accuracy, accuracy, size=2)
     return {"loadcell_gain": gain, "monitor_offset_bar": float(at_zero),
             "monitor_gain": 1.0 + float(at_full_scale - at_zero)

@@ -284,12 +284,15 @@ def expected_budget_lines(config: BenchConfig) -> list[str]:
              f"{'P [bar]':>8} {'F [N]':>8} {'U(F) [N]':>9} {'U(F) [%]':>9} {'U(P) [bar]':>10}"
              "  largest term"]
     for p, force in budgets:
-        b = expected_budget(config, force)
+        b = expected_budget(config, force, p)
         top = b.ranked("force")[0][0].name
         share = 100 * b.force_U_N / force if force > 0 else float("nan")
         lines.append(f"{p:>8g} {force:>8.1f} {b.force_U_N:>9.2f} {share:>9.2f} "
                      f"{b.pressure_U_bar:>10.3f}  {top}")
     p, force = budgets[-1]
+    top = expected_budget(config, force, p)
     lines.append(f"force budget at {p:g} bar, terms ranked by their share of the variance:")
-    lines.extend(budget_table(expected_budget(config, force), "force"))
+    lines.extend(budget_table(top, "force"))
+    lines.append(f"pressure budget at {p:g} bar:")
+    lines.extend(budget_table(top, "pressure"))
     return lines

@@ -129,7 +129,8 @@ class HoldStats:
         force = self.mean if self.n else math.nan
         tare = tare or {}
         budget = step_budget(instrument, force, self.std, self.n, self.drift_N,
-                             float(tare.get("std_N", math.nan)), int(tare.get("n", 0)))
+                             float(tare.get("std_N", math.nan)), int(tare.get("n", 0)),
+                             pressure_bar=self.pressure_mean)
         return StepRecord(step.step, step.direction, step.repeat, step.set_pressure_bar,
                           self.pressure_mean, force, self.std, self.n, bool(settled),
                           float(settle_s), start_s, end_s, self.drift_N,

@@ -25,8 +25,10 @@ the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / ra
 ``[sim.truth]`` (:class:`mkm.bench.sim_settings.Truth`) makes the bench wrong the way real ones
 are, unknown to the configuration: the muscle's true geometry, braid and rubber, a load cell whose
 output per newton is ``loadcell_gain`` times the configured one, a regulator sensor reading
-``monitor_gain * P + monitor_offset_bar`` (the regulator holds that reading at the command, so
-the monitor reads the command while the true pressure is off by the sensor's error).
+``monitor_gain * P + monitor_offset_bar`` plus a bow ``monitor_bow_bar * 4 x (1 - x)`` (``x`` the
+pressure over the sensor's full scale) and a hysteresis ``monitor_hysteresis_bar`` between its
+rising and falling readings (the regulator holds that reading at the command, so the monitor
+reads the command while the true pressure is off by the sensor's error).
 
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
@@ -151,6 +153,13 @@ class SimMuscleBench:
         self.loadcell_gain = s.truth.instrument("loadcell_gain")
         self.monitor_gain = s.truth.instrument("monitor_gain")
         self.monitor_offset_bar = s.truth.instrument("monitor_offset_bar")
+        self.monitor_bow_bar = s.truth.instrument("monitor_bow_bar")
+        self.monitor_hysteresis_bar = s.truth.instrument("monitor_hysteresis_bar")
+        # the sensor's play operator: its output stays within half the hysteresis of the
+        # pressure, so a rising pressure reads that much low and a falling one high
+        self.monitor_played_bar = 0.0
+        self.monitor_branch = -1.0  # -1 rising, +1 falling: the side the regulator expects
+        self.command_bar = 0.0
         self._noise = np.empty(0)
         self._next_noise = 0
         self.target_bar = 0.0
@@ -166,11 +175,34 @@ class SimMuscleBench:
     def set_command_volts(self, volts: float) -> None:
         r = self.config.regulator
         command_bar = min(max(volts, 0.0), 10.0) / 10.0 * r.full_scale_bar
+        if command_bar != self.command_bar:
+            self.monitor_branch = -1.0 if command_bar > self.command_bar else 1.0
+        self.command_bar = command_bar
         # the regulator holds its own sensor's reading at the command (a zero command vents)
-        self.target_bar = (max((command_bar - self.monitor_offset_bar) / self.monitor_gain, 0.0)
-                           if command_bar > 0 else 0.0)
+        self.target_bar = (max(self.sensor_inverse_bar(
+            command_bar - self.monitor_branch * self.monitor_hysteresis_bar / 2), 0.0)
+            if command_bar > 0 else 0.0)
         if self.target_bar > 0:
             self.target_bar += self.config.sim.faults.overshoot_bar
+
+    def sensor_bar(self, pressure_bar: float) -> float:
+        """The regulator sensor's reading of ``pressure_bar`` without its hysteresis: gain,
+        offset and bow."""
+        x = pressure_bar / self.config.regulator.full_scale_bar
+        return (self.monitor_gain * pressure_bar + self.monitor_offset_bar
+                + self.monitor_bow_bar * 4.0 * x * (1.0 - x))
+
+    def sensor_inverse_bar(self, reading_bar: float) -> float:
+        """The pressure whose :meth:`sensor_bar` is ``reading_bar``: the root of the quadratic
+        ``(g + b) P - b P^2 / FS = reading - offset`` (``b = 4 bow / FS``) next to the linear
+        sensor's, in the form that stays exact as the bow goes to zero."""
+        fs = self.config.regulator.full_scale_bar
+        b = 4.0 * self.monitor_bow_bar / fs
+        c = reading_bar - self.monitor_offset_bar
+        if b == 0:
+            return c / self.monitor_gain
+        slope = self.monitor_gain + b
+        return 2.0 * c / (slope + math.sqrt(max(slope**2 - 4.0 * b * c / fs, 0.0)))
 
     def _normal(self) -> float:
         if self._next_noise >= self._noise.size:
@@ -195,7 +227,11 @@ class SimMuscleBench:
         cell_V = (self.loadcell_gain * force / cell.sensitivity_N_per_V + s.loadcell_offset_V
                   + s.noise_V * self._normal())
         span = r.monitor_V_at_full_scale - r.monitor_V_at_zero
-        sensed_bar = self.monitor_gain * self.pressure_bar + self.monitor_offset_bar
+        half = self.monitor_hysteresis_bar / 2
+        self.monitor_played_bar = min(max(self.monitor_played_bar, self.pressure_bar - half),
+                                      self.pressure_bar + half)
+        sensed_bar = self.sensor_bar(self.pressure_bar) + self.monitor_played_bar \
+            - self.pressure_bar
         monitor_V = (r.monitor_V_at_zero + sensed_bar / r.full_scale_bar * span
                      + s.monitor_noise_V * self._normal())
         if self.monitor_lost:

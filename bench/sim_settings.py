@@ -56,9 +56,13 @@ class Truth:
     ``braid``: ``axisym``) and its true geometry ``D0_mm``, ``t0_mm`` (``[muscle]`` keeps the
     declared one, which is what a fit reads). The instruments: ``loadcell_gain``, the cell's true
     output per newton over the configured one (1.02 records forces 2 % high);
-    ``monitor_gain`` and ``monitor_offset_bar``, the regulator's pressure sensor (the monitor
-    reads ``monitor_gain * P + monitor_offset_bar`` for a true pressure ``P``, and the regulator
-    holds that reading at the command, as an ITV does with its own sensor).
+    ``monitor_gain``, ``monitor_offset_bar``, ``monitor_bow_bar`` and ``monitor_hysteresis_bar``,
+    the regulator's pressure sensor: the monitor reads ``monitor_gain * P + monitor_offset_bar +
+    monitor_bow_bar * 4 x (1 - x)`` for a true pressure ``P`` (``x = P /
+    regulator.full_scale_bar``: a bow, zero at both ends of the sensor's range, largest at
+    mid-scale), less half ``monitor_hysteresis_bar`` on a rising pressure and plus half on a
+    falling one (a play operator: the two branches ``monitor_hysteresis_bar`` apart); the
+    regulator holds that reading at the command, as an ITV does with its own sensor.
 
     Unset (None): the nominal value (the calibrated angle, Silastic S, no gap, a bonded braid,
     the declared geometry, exact instruments). With ``[sim]``'s ``hysteresis_fraction``,
@@ -77,6 +81,8 @@ class Truth:
     loadcell_gain: float | None = None
     monitor_gain: float | None = None
     monitor_offset_bar: float | None = None
+    monitor_bow_bar: float | None = None
+    monitor_hysteresis_bar: float | None = None
 
     def check(self):
         from mkm.fem.limits import check_value
@@ -109,7 +115,9 @@ MODEL_FIELDS = ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "braid")
 GEOMETRY_FIELDS = ("D0_mm", "t0_mm")
 INSTRUMENT_BOUNDS = {"loadcell_gain": (0.9, 1.1, "(a cell 10 % off its calibration is broken)"),
                      "monitor_gain": (0.9, 1.1, "(a sensor 10 % off is broken)"),
-                     "monitor_offset_bar": (-0.5, 0.5, "bar")}
+                     "monitor_offset_bar": (-0.5, 0.5, "bar"),
+                     "monitor_bow_bar": (-0.5, 0.5, "bar"),  # and a tenth of full scale
+                     "monitor_hysteresis_bar": (0.0, 0.5, "bar")}
 @dataclass(frozen=True)
 class Sim:
     """The simulated bench (:mod:`mkm.bench.sim`): the muscle's static force from ``model`` (a

@@ -371,11 +371,16 @@ def _stage_seconds(path: Path) -> str:
 
 
 def _second_table(path: Path) -> str:
-    """A benchmark's leave-one-length-out table (``leave_one_length_out``: its params and
-    rows), where it records one."""
+    """A benchmark's second table, where it records one: the leave-one-length-out table
+    (``leave_one_length_out``: its params and rows) or the coverage per set pressure
+    (``by_set_pressure``)."""
     if path.suffix != ".json":
         return ""
-    held = json.loads(path.read_text(encoding="utf-8")).get("leave_one_length_out")
+    record = json.loads(path.read_text(encoding="utf-8"))
+    if record.get("by_set_pressure"):
+        return ("\nPressure coverage per set pressure [%], rising and falling steps pooled:\n\n"
+                + markdown_table(pd.json_normalize(record["by_set_pressure"]), 4))
+    held = record.get("leave_one_length_out")
     if not held:
         return ""
     return (f"\nLeave one length out (`mkm identify` on every length with `--params "

@@ -570,7 +570,8 @@ def _budget_section(r: _Run, links: str) -> str:
                 "cannot be listed (steps.csv has its totals).</p>")
     budget = step_budget(instrument, float(s["force_N_mean"]),
                          float(s["force_N_std"]), int(s["n"]), float(s["force_drift_N"]),
-                         float(tare.get("std_N", np.nan)), int(tare.get("n", 0)))
+                         float(tare.get("std_N", np.nan)), int(tare.get("n", 0)),
+                         pressure_bar=float(s["pressure_bar_mean"]))
     rows = [{"quantity": q, "term": t.name, "type": t.kind,
              "u": t.u, "share of u² [%]": 100 * share, "from": t.source}
             for q in ("force", "pressure") for t, share in budget.ranked(q)]

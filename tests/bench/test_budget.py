@@ -39,7 +39,7 @@ def test_adc_step_of_the_usb6001_on_the_default_cell(config):
 def test_terms_follow_the_gum_for_known_inputs(config):
     i = Instrument.from_config(config)
     b = step_budget(i, force_N=500.0, force_N_std=0.4, n=50, force_drift_N=0.0,
-                    tare_std_N=0.4, tare_n=50)
+                    tare_std_N=0.4, tare_n=50, pressure_bar=2.0)
     terms = {t.name: t.u for t in b.terms}
     assert terms["load-cell sensitivity"] == pytest.approx(0.001 * 500 / math.sqrt(3))
     assert terms["load-cell non-linearity"] == pytest.approx(0.0005 * 1961.33 / math.sqrt(3))
@@ -66,7 +66,7 @@ def test_terms_follow_the_gum_for_known_inputs(config):
 def test_a_quiet_signal_keeps_the_full_rounding(config):
     # scatter below half a step: the ADC rounds every sample the same way, averaging cannot help
     i = Instrument.from_config(config)
-    b = step_budget(i, 100.0, 0.05, 50, 0.0, 0.05, 50)
+    b = step_budget(i, 100.0, 0.05, 50, 0.0, 0.05, 50, pressure_bar=0.5)
     q = {t.name: t.u for t in b.terms}["ADC resolution"]
     assert q == pytest.approx(math.sqrt(2) * i.lsb_N / math.sqrt(12))
 
@@ -132,6 +132,105 @@ def test_datasheet_settings_are_bounded(config):
         config.replace(regulator={"monitor_accuracy_bar": -0.1})
 
 
+#: a monitor's error itemised (bar, and a fraction of the reading for the span)
+COMPONENTS = {"monitor_zero_bar": 0.016, "monitor_span_fraction": 0.004,
+              "monitor_nonlinearity_bar": 0.008, "monitor_hysteresis_bar": 0.012}
+
+
+def test_monitor_components_are_terms_of_their_own(config):
+    c = config.replace(regulator=COMPONENTS)
+    i = Instrument.from_config(c)
+    lsb_bar = 20.0 / 2**14 * 4.0 / 4.0  # one ADC step over the 4 V monitor span of 4 bar
+    for p, expected_u in ((0.0, 0.010899), (4.0, 0.014287)):
+        b = step_budget(i, 500.0, 0.4, 50, 0.0, 0.4, 50, pressure_bar=p)
+        terms = {t.name: t for t in b.terms if t.quantity == "pressure"}
+        assert {t.distribution for t in terms.values()} == {"rectangular"}
+        # GUM 4.3.7: a +- a bound, nothing more known, is u = a / sqrt 3; the span error is a
+        # fraction of the reading; a branch's reading is off by at most half the hysteresis
+        u = math.sqrt((0.016**2 + (0.004 * p)**2 + 0.008**2 + (0.012 / 2)**2) / 3
+                      + lsb_bar**2 / 12)
+        assert terms["monitor span error"].u == pytest.approx(0.004 * p / math.sqrt(3))
+        assert terms["monitor hysteresis"].u == pytest.approx(0.006 / math.sqrt(3))
+        assert "pressure reading accuracy" not in terms
+        assert b.pressure_u_bar == pytest.approx(u, rel=1e-12)
+        assert b.pressure_u_bar == pytest.approx(expected_u, rel=1e-4)
+        # four bounds and a step convolved: between one bound alone's 1.65 and a normal's 2
+        assert 1.8 < b.k("pressure") < 2.0
+        assert b.pressure_U_bar == pytest.approx(b.k("pressure") * u)
+    # a component not declared is no term
+    only = Instrument.from_config(config.replace(regulator={"monitor_zero_bar": 0.02}))
+    names = [t.name for t in step_budget(only, 500.0, 0.4, 50, 0.0, 0.4, 50,
+                                         pressure_bar=1.0).terms if t.quantity == "pressure"]
+    assert names == ["monitor zero error", "ADC resolution (monitor)"]
+
+
+def test_a_run_records_the_components_and_its_steps_carry_them(config, tmp_path):
+    small = config.replace(regulator=COMPONENTS, sequence={
+        "pressures_bar": (2.0,), "down_sweep": False, "preconditioning_cycles": 0})
+    run = load_run(acquire(small, out_root=tmp_path, notify=lambda m: None).path)
+    # the report recomputes a step's terms from run.json: the components are there
+    i = Instrument.from_run(run.meta)
+    assert i.monitor_components == COMPONENTS
+    s = run.steps.iloc[0]
+    b = step_budget(i, s.force_N_mean, s.force_N_std, int(s.n), s.force_drift_N, math.nan, 0,
+                    pressure_bar=s.pressure_bar_mean)
+    assert s.pressure_u_bar == pytest.approx(b.pressure_u_bar, rel=1e-5)  # steps.csv: 6 digits
+    assert s.pressure_u_bar == pytest.approx(math.sqrt(
+        (0.016**2 + (0.004 * s.pressure_bar_mean)**2 + 0.008**2 + 0.006**2) / 3
+        + (i.lsb_V * i.monitor_bar_per_V)**2 / 12), rel=1e-5)
+
+
+def test_without_components_the_pressure_budget_is_the_one_bound(config):
+    i = Instrument.from_config(config)
+    assert config.regulator.monitor_components == {} and i.monitor_components == {}
+    lsb_bar = i.lsb_V * i.monitor_bar_per_V  # 1.22 mV over 1 V/bar
+    expected = (Term("pressure reading accuracy", "pressure", 0.04 / math.sqrt(3), "B",
+                     "regulator.monitor_accuracy_bar=0.04", "rectangular"),
+                Term("ADC resolution (monitor)", "pressure", lsb_bar / math.sqrt(12), "B",
+                     f"1 step = {lsb_bar:.3g} bar", "rectangular"))
+    for p in (0.0, 1.0, 2.5):
+        b = step_budget(i, 500.0, 0.4, 50, 0.0, 0.4, 50, pressure_bar=p)
+        assert tuple(t for t in b.terms if t.quantity == "pressure") == expected
+        # one bound dominating: k near 0.9545 sqrt 3
+        assert b.pressure_U_bar == pytest.approx(0.0382, abs=1e-4)
+
+
+@pytest.mark.parametrize("setting, message", [
+    ("monitor_span_fraction = 0.2", "regulator.monitor_span_fraction=0.2 is invalid: expected "
+                                    "0 to 0.05 (a fraction of the reading)"),
+    ("monitor_zero_bar = -0.01", "regulator.monitor_zero_bar=-0.01 is invalid: expected 0 to "
+                                 "0.4 bar"),
+    ("monitor_hysteresis_bar = 1.0", "regulator.monitor_hysteresis_bar=1 is invalid"),
+])
+def test_a_bad_component_is_one_line_and_exit_2(config, tmp_path, capsys, setting, message):
+    from mkm.cli import main
+
+    path = tmp_path / "bad.toml"
+    path.write_text(config.text.replace("[regulator]\n", f"[regulator]\n{setting}\n"),
+                    encoding="utf-8")
+    assert main(["check", "--config", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and message in err[0]
+
+
+def test_monitor_component_draws_fill_each_bound(config):
+    # each component uniform within its own bound, independent: the truth it stands for
+    c = config.replace(regulator=COMPONENTS)
+    draws = [instrument_draw(c, seed) for seed in range(2000)]
+    for key, low, high in (("monitor_offset_bar", -0.016, 0.016),
+                           ("monitor_gain", 1 - 0.004, 1 + 0.004),
+                           ("monitor_bow_bar", -0.008, 0.008),
+                           ("monitor_hysteresis_bar", 0.0, 0.012)):
+        x = np.array([d[key] for d in draws])
+        assert low <= x.min() and x.max() <= high
+        # uniform: a mean in the middle, a standard deviation of width / sqrt 12 (sd 1.6 %)
+        assert x.mean() == pytest.approx((low + high) / 2, abs=0.03 * (high - low))
+        assert x.std() == pytest.approx((high - low) / math.sqrt(12), rel=0.05)
+    # only monitor_accuracy_bar: the draw is the linear sensor's, unchanged
+    assert set(instrument_draw(config, 0)) == {"loadcell_gain", "monitor_offset_bar",
+                                               "monitor_gain"}
+
+
 def test_check_prints_the_expected_budget(config):
     text, _ = check(config)
     lines = text.splitlines()
@@ -140,12 +239,17 @@ def test_check_prints_the_expected_budget(config):
     assert [float(r[0]) for r in rows] == pytest.approx(np.arange(0.25, 2.51, 0.25))
     U = [float(r[2]) for r in rows]
     assert U == sorted(U)  # the sensitivity term grows with the force
-    top = expected_budget(config, float(rows[-1][1]))
+    top = expected_budget(config, float(rows[-1][1]), float(rows[-1][0]))
     assert U[-1] == pytest.approx(top.force_U_N, abs=0.01)
     table = budget_table(top)
     assert table[0].split()[:2] == ["term", "type"]
     assert any(line.split()[0] == "combined" for line in table)
     assert table[0] in lines and "," not in table[0]  # a table to read, not CSV in the prose
+    # the pressure's terms at the top pressure: the declared components, each on its line
+    text, _ = check(config.replace(regulator=COMPONENTS))
+    span = [line for line in text.splitlines() if "monitor span error" in line]
+    assert len(span) == 1 and span[0].endswith("regulator.monitor_span_fraction=0.004 x 2.5 bar")
+    assert "monitor non-linearity" in text and "pressure reading accuracy" not in text
 
 
 def test_coverage_on_simulated_runs():

@@ -78,7 +78,8 @@ def test_the_truth_is_recorded_in_the_simulator_settings(config, tmp_path):
     assert sim["truth"] == {"theta0_deg": 31.5, "C10_MPa": None, "C01_MPa": None,
                             "gap_mm": None, "braid": None, "D0_mm": None, "t0_mm": None,
                             "loadcell_gain": None, "monitor_gain": None,
-                            "monitor_offset_bar": None}
+                            "monitor_offset_bar": None, "monitor_bow_bar": None,
+                            "monitor_hysteresis_bar": None}
     assert sim["physics"]["force_model_params"]["theta0_deg"] == 31.5
     assert "[sim.truth]\ntheta0_deg = 31.5" in (result.path / "config.toml").read_text("utf-8")
 
@@ -136,6 +137,52 @@ def test_the_monitor_reads_the_true_pressure_through_its_error(config, truth, re
     # sees the pressure that makes the sensor read it
     assert recorded_bar == pytest.approx(2.0, abs=lsb_bar)
     assert read(bench.pressure_bar) == pytest.approx(2.0, abs=1e-9)
+
+
+def bow(p, amplitude_bar, full_scale_bar=4.0):
+    """The simulated sensor's non-linearity: zero at both ends of its scale, the amplitude at
+    mid-scale."""
+    x = p / full_scale_bar
+    return amplitude_bar * 4 * x * (1 - x)
+
+
+@pytest.mark.parametrize("truth, read", [
+    ({"monitor_bow_bar": 0.03}, lambda p: p + bow(p, 0.03)),
+    # on a rising pressure a sensor with hysteresis reads half of it low
+    ({"monitor_gain": 1.01, "monitor_offset_bar": -0.01, "monitor_bow_bar": -0.02,
+      "monitor_hysteresis_bar": 0.02}, lambda p: 1.01 * p - 0.01 + bow(p, -0.02) - 0.01),
+])
+def test_the_monitor_reads_truth_times_gain_plus_offset_plus_bow(config, truth, read):
+    c = quiet(config, model="thickwall", truth=truth)
+    for pressure in (0.5, 2.0):
+        volts, bench = settled(c, pressure)
+        recorded_bar = float(c.regulator.monitor_bar(volts[1]))
+        lsb_bar = float(c.regulator.monitor_bar(c.regulator.monitor_V_at_zero + LSB_V))
+        assert recorded_bar == pytest.approx(read(bench.pressure_bar), abs=lsb_bar)
+        # the regulator holds the bowed reading at the command too
+        assert read(bench.pressure_bar) == pytest.approx(pressure, abs=1e-9)
+
+
+def test_the_monitors_hysteresis_splits_its_rising_and_falling_readings(config):
+    c = quiet(config, model="thickwall", truth={"monitor_hysteresis_bar": 0.02})
+    bench = SimMuscleBench(c)
+    true_bar = {}
+    for branch, command in (("rising", 2.0), ("top", 2.5), ("falling", 2.0)):
+        bench.set_command_volts(c.regulator.command_volts(command))
+        for _ in range(100):
+            volts = bench.step()
+        assert float(c.regulator.monitor_bar(volts[1])) == pytest.approx(command, abs=2e-3)
+        true_bar[branch] = bench.pressure_bar
+    # the monitor reads 2 bar on both branches: rising, the truth is 0.01 bar above it (the
+    # sensor reads low); falling, 0.01 bar below
+    assert true_bar["rising"] == pytest.approx(2.01, abs=1e-9)
+    assert true_bar["falling"] == pytest.approx(1.99, abs=1e-9)
+
+
+def test_a_bow_beyond_a_tenth_of_full_scale_is_refused(config):
+    with pytest.raises(ValueError, match=r"sim\.truth\.monitor_bow_bar=0\.45 is invalid: "
+                                         r"expected -0\.4 to 0\.4 bar"):
+        config.replace(sim={"truth": {"monitor_bow_bar": 0.45}})
 
 
 def test_a_true_wall_other_than_the_declared_one_changes_the_force_as_the_model_says(config):
