@@ -59,8 +59,7 @@ allows before anything is pressurised, with the data terms at the settle and tar
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, fields
-from typing import Any
+from dataclasses import dataclass, field
 
 import numpy as np
 from scipy import signal, special
@@ -192,11 +191,11 @@ class Instrument:
         """From a run's ``run.json`` (:class:`mkm.bench.storage.RunMeta`): the calibration it
         recorded, the defaults of :mod:`mkm.bench.config` where it predates a setting."""
         from mkm.bench.backends import BACKENDS
-        from mkm.bench.config import LoadCell, Regulator
+        from mkm.bench.config import LoadCell, Regulator, from_record
         from mkm.bench.devices import USB6001
 
-        cell = _section(LoadCell, meta.calibration.get("loadcell") or {})
-        regulator = _section(Regulator, meta.calibration.get("regulator") or {})
+        cell = from_record(LoadCell, meta.calibration.get("loadcell") or {})
+        regulator = from_record(Regulator, meta.calibration.get("regulator") or {})
         name = str(meta.hardware.get("backend"))
         caps = BACKENDS.entry(name).capabilities if name in BACKENDS else USB6001
         return cls._make(cell, regulator, caps.ai_lsb_V)
@@ -214,12 +213,6 @@ class Instrument:
     def lsb_N(self) -> float:
         """One ADC step in newtons."""
         return self.lsb_V * self.sensitivity_N_per_V
-
-
-def _section(cls, values: dict[str, Any]):
-    """``cls`` from a recorded section: known keys only, defaults for missing optional ones."""
-    known = {f.name for f in fields(cls)}
-    return cls(**{k: v for k, v in values.items() if k in known})
 
 
 def residual_std(std: float, n: int, drift: float) -> float:

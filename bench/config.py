@@ -77,6 +77,13 @@ MONITOR_COMPONENTS = {"monitor_accuracy_bar": ("bar", "reading accuracy"),
                       "monitor_hysteresis_bar": ("bar", "hysteresis")}
 
 
+def from_record(cls, values: dict[str, Any]):
+    """Section ``cls`` from what a run recorded of it: known keys only, defaults for the rest
+    (a run that predates a setting)."""
+    known = {f.name for f in dataclasses.fields(cls)}
+    return cls(**{k: v for k, v in values.items() if k in known})
+
+
 def read_muscle(table: Any, where: str = "muscle") -> Muscle:
     """The bench's muscle from its ``[muscle]`` table: the one muscle type
     (:class:`mkm.fem.muscle.Muscle`, checked against its limits), with an ``id`` (it names the
@@ -218,6 +225,19 @@ class Regulator:
         when it declares only ``monitor_accuracy_bar``."""
         return {name: float(getattr(self, name)) for name in MONITOR_COMPONENTS
                 if name != "monitor_accuracy_bar" and getattr(self, name) is not None}
+
+    def reading_bounds(self) -> tuple[float, float]:
+        """The +- bounds of the reading's offset [bar] and of its gain error [fraction] (what an
+        identification fits as a nuisance or carries as a shared term). With components: the
+        zero error plus what no straight line carries (the non-linearity, half the hysteresis)
+        as the offset, the span error as the gain; with the one accuracy, the whole bound as
+        either (the gain's reached at ``max_pressure_bar``). A component not declared is 0."""
+        parts = self.monitor_components
+        if not parts:
+            return self.monitor_accuracy_bar, self.monitor_accuracy_bar / self.max_pressure_bar
+        offset = (parts.get("monitor_zero_bar", 0.0) + parts.get("monitor_nonlinearity_bar", 0.0)
+                  + parts.get("monitor_hysteresis_bar", 0.0) / 2)
+        return offset, parts.get("monitor_span_fraction", 0.0)
 
     def command_volts(self, pressure_bar: float) -> float:
         """AO command [V, 0-10] for ``pressure_bar``, clamped to ``[0, max_pressure_bar]``."""

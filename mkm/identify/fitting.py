@@ -287,12 +287,12 @@ def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
 def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float, float]:
     """Where ``name`` is searched: the source's box, the terms' bounds, the declared wall and
     diameter within :data:`GEOMETRY_FACTORS` (inside the source's box), the monitor's offset
-    within its accuracy (the smallest declared by the runs)."""
+    within its declared bound (the smallest of the runs')."""
     if name == "c01_fraction":
         return source.share_bounds(start["rubber_scale"])
     if name == "pressure_offset_bar":
-        accuracy = min(run.monitor_accuracy_bar for run in runs)
-        return (-accuracy, accuracy)
+        bound = min(run.monitor_offset_bound_bar for run in runs)
+        return (-bound, bound)
     if name in GEOMETRY_FACTORS:
         declared = float(runs[0].muscle[name])
         low, high = (f * declared for f in GEOMETRY_FACTORS[name])

@@ -137,9 +137,9 @@ def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
     if "creep" in kept and not any(r.timed for r in runs):
         kept.remove("creep")
         notes.append("creep not fitted: no run has timed holds (a step table or a ramp)")
-    if "offset" in kept and not min(r.monitor_accuracy_bar for r in runs) > 0:
+    if "offset" in kept and not min(r.monitor_offset_bound_bar for r in runs) > 0:
         kept.remove("offset")
-        notes.append("the pressure monitor's offset not fitted: a run declares its accuracy 0")
+        notes.append("the pressure monitor's offset not fitted: a run declares it exact")
     if not kept:
         raise ValueError(f"--params {','.join(groups)}: nothing these runs can tell ("
                          + "; ".join(notes) + ")")
@@ -258,7 +258,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     offset = best.values.get("pressure_offset_bar")
     if "pressure_offset_bar" in best.names and fitting.at_edge(
             offset, best.bounds["pressure_offset_bar"]):
-        notes.append(f"the pressure monitor's offset is at its declared accuracy "
+        notes.append(f"the pressure monitor's offset is at its declared bound "
                      f"({offset:+.3g} bar): the runs' threshold "
                      "wants more than the monitor may be off; check the monitor's zero, or the "
                      "model does not fit these runs near the threshold")
@@ -325,9 +325,9 @@ def instrument_terms(runs) -> dict:
     the load cell's sensitivity tolerance (one cell for every run: the largest declared), and
     the monitor offset's prior, uniform within the smallest declared accuracy (its standard
     deviation, accuracy over root 3)."""
-    accuracy = min(r.monitor_accuracy_bar for r in runs)
+    bound = min(r.monitor_offset_bound_bar for r in runs)
     return {"sensitivity_tolerance": max(r.sensitivity_tolerance for r in runs),
-            "prior_sd": {"pressure_offset_bar": accuracy / np.sqrt(3.0)}}
+            "prior_sd": {"pressure_offset_bar": bound / np.sqrt(3.0)}}
 
 
 def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
@@ -335,13 +335,13 @@ def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
     (:func:`mkm.identify.intervals.bootstrap`): the hold residuals' sensitivity to each (a
     forward difference of a tenth of its bound) and its +- bound: the tube's declared wall
     and diameter where not fitted (their declared tolerances, the largest of the runs'), and
-    the pressure monitor's gain (its declared accuracy reached at the regulator's top pressure:
-    the offset is fitted, a reading error growing with the pressure is not). The data see
+    the pressure monitor's gain (its declared span error, or its one accuracy reached at the
+    regulator's top pressure: the offset is fitted, a reading error growing with the pressure
+    is not). The data see
     these only through the other parameters: the intervals carry them."""
     bounds = {n: (max(r.geometry_tolerance_mm.get(n, 0.0) for r in runs),
                   float(runs[0].muscle[n])) for n in fitting.GEOMETRY if n not in best.names}
-    bounds["pressure_gain"] = (min(r.monitor_accuracy_bar / r.monitor_range_bar
-                                   for r in runs), 1.0)
+    bounds["pressure_gain"] = (min(r.monitor_gain_bound for r in runs), 1.0)
     holds = [run.hold >= 0 for run in runs]
     out, base = {}, None
     for name, (half, at) in bounds.items():

@@ -157,7 +157,7 @@ class Identification:
                 add("creep_tau_s", math.exp(value), *np.exp(interval[name]))
             elif name == "pressure_offset_bar":
                 add(name, value, *interval[name], source="nuisance: the monitor's offset within "
-                    f"its declared accuracy +-{min(r.monitor_accuracy_bar for r in self.runs):g}"
+                    f"its declared bound +-{min(r.monitor_offset_bound_bar for r in self.runs):g}"
                     " bar (moves the threshold)")
             elif name in GEOMETRY:
                 add(name, value, *interval[name], source=f"the runs (declared "

@@ -53,13 +53,13 @@ class RunData:
     sha256: dict
     tare_se_N: float = 0.0
     timed: bool = True  # the holds have their real durations (creep can be fitted)
-    #: the pressure monitor's declared accuracy [bar] (+- bound) and the load cell's
-    #: sensitivity tolerance (a fraction), from the run's recorded calibration
-    monitor_accuracy_bar: float = 0.04
+    #: the pressure monitor's declared +- bounds of its offset [bar] and gain error [fraction]
+    #: (:meth:`mkm.bench.config.Regulator.reading_bounds`) and the load cell's sensitivity
+    #: tolerance (a fraction), from the run's recorded calibration
+    monitor_offset_bound_bar: float = 0.04
+    monitor_gain_bound: float = 0.016
     sensitivity_tolerance: float = 0.001
     instrument_declared: bool = True  # False: the run recorded no bounds, defaults taken
-    #: the regulator's top pressure [bar]: the monitor's accuracy holds up to it
-    monitor_range_bar: float = 2.5
     #: the tube's declared +- tolerances [mm] (``D0_mm``, ``t0_mm``: run.json's
     #: ``calibration.muscle_tolerances``, :class:`mkm.fem.tolerances.Tolerances` where none)
     geometry_tolerance_mm: dict = field(default_factory=lambda: _tube_tolerances(None))
@@ -167,21 +167,19 @@ def _muscle(run) -> dict:
 def _instrument(run) -> dict:
     """The declared bounds of the run's instrument (its recorded ``loadcell`` and
     ``regulator``), the configuration's defaults where it recorded none (an imported table)."""
-    import dataclasses
+    from mkm.bench.config import LoadCell, Regulator, from_record
 
-    from mkm.bench.config import LoadCell, Regulator
-
-    out = {}
-    for cls, section, name, key in (
-            (Regulator, "regulator", "monitor_accuracy_bar", "monitor_accuracy_bar"),
-            (LoadCell, "loadcell", "sensitivity_tolerance_fraction", "sensitivity_tolerance"),
-            (Regulator, "regulator", "max_pressure_bar", "monitor_range_bar")):
-        recorded = run.meta.calibration.get(section) or {}
-        default = next(f.default for f in dataclasses.fields(cls) if f.name == name)
-        out[key] = float(recorded.get(name, default))
-        out["instrument_declared"] = out.get("instrument_declared", True) and name in recorded
-    out["geometry_tolerance_mm"] = _tube_tolerances(getattr(run.meta.muscle, "tolerances", None))
-    return out
+    recorded = {s: run.meta.calibration.get(s) or {} for s in ("loadcell", "regulator")}
+    regulator = from_record(Regulator, recorded["regulator"])
+    offset, gain = regulator.reading_bounds()
+    return {"monitor_offset_bound_bar": offset, "monitor_gain_bound": gain,
+            "sensitivity_tolerance": from_record(LoadCell, recorded["loadcell"])
+            .sensitivity_tolerance_fraction,
+            "instrument_declared": ("monitor_accuracy_bar" in recorded["regulator"]
+                                    and "max_pressure_bar" in recorded["regulator"]
+                                    and "sensitivity_tolerance_fraction" in recorded["loadcell"]),
+            "geometry_tolerance_mm": _tube_tolerances(getattr(run.meta.muscle, "tolerances",
+                                                              None))}
 
 
 def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:

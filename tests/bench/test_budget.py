@@ -22,6 +22,7 @@ from mkm.bench.procedures import check
 from mkm.bench.run import acquire
 from mkm.bench.sequence import HoldStats
 from mkm.bench.storage import STEP_COLUMNS, STEP_COLUMNS_UNBUDGETED, load_run
+from mkm.identify.runs import load_run_data
 
 
 @pytest.fixture(scope="module")
@@ -178,9 +179,20 @@ def test_a_run_records_the_components_and_its_steps_carry_them(config, tmp_path)
     assert s.pressure_u_bar == pytest.approx(math.sqrt(
         (0.016**2 + (0.004 * s.pressure_bar_mean)**2 + 0.008**2 + 0.006**2) / 3
         + (i.lsb_V * i.monitor_bar_per_V)**2 / 12), rel=1e-5)
+    # identify bounds the monitor's offset by what no line carries (zero, non-linearity, half
+    # the hysteresis) and its gain by the span error, read from the same record
+    data = load_run_data(run.path)
+    assert data.instrument_declared
+    assert data.monitor_offset_bound_bar == pytest.approx(0.016 + 0.008 + 0.012 / 2)
+    assert data.monitor_gain_bound == pytest.approx(0.004)
 
 
 def test_without_components_the_pressure_budget_is_the_one_bound(config):
+    # identify's bounds: the one accuracy as the offset, and as the gain at the top pressure
+    regulator = config.regulator
+    assert regulator.reading_bounds() == (regulator.monitor_accuracy_bar,
+                                          regulator.monitor_accuracy_bar
+                                          / regulator.max_pressure_bar)
     i = Instrument.from_config(config)
     assert config.regulator.monitor_components == {} and i.monitor_components == {}
     lsb_bar = i.lsb_V * i.monitor_bar_per_V  # 1.22 mV over 1 V/bar
