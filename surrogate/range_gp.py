@@ -8,7 +8,8 @@ large ones' scale. The processes here take ``log D0``, ``log t0``, ``log L0``, `
 rubber ratio ``C01 / C10`` and ``log(D_braid / L0)`` (with ``theta0``, ``eps`` and ``sqrt(eps)``
 as the default's). Measured on 60 fresh muscles of the range, fitted on the same 768: worst
 error 1.97 % against 4.88 % with the default's linear inputs (``docs/guide/surrogates.md``).
-The slope, threshold, std and its calibration are the default's.
+The slope, threshold and std are the default's; the std keeps the fit's leave-one-muscle-out
+calibration (:meth:`RangeThresholdGP.calibrate_std`) before the held-out rescale.
 """
 
 from __future__ import annotations

@@ -3,9 +3,9 @@
 Usage: python -P tools/merge_fe_datasets.py OUT.csv WHAT BOX_SOURCE.csv SOURCE.csv [SOURCE ...]
 
 ``BOX_SOURCE``: the source whose sidecar box (and draw) the merged set claims. A source that
-is itself a merge keeps its own sources (nested), so a set grown step by step names them all. The solver's
-diagnostics columns are dropped (the shipped sets stay small); muscle ids are offset so each
-source's muscles stay apart. Builds the shipped ``muscle-gp-range`` sets
+is itself a merge keeps its own sources (nested), so a set grown step by step names them all.
+The solver's diagnostics columns are dropped (the shipped sets stay small); muscle ids are
+offset so each source's muscles stay apart. Builds the shipped ``muscle-gp-range`` sets
 (``surrogate/data/mkm_range_*.csv``; their sidecars record the command).
 """
 

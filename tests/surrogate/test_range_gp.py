@@ -50,7 +50,7 @@ def test_its_sets_cover_the_practical_range_and_never_share_a_muscle():
 def range_model():
     from mkm.surrogate.train import cached_model
 
-    return cached_model(kinds.RANGE)  # about 2-4 min of one core the first time
+    return cached_model(kinds.RANGE)  # about 70 s of one core the first time
 
 
 @pytest.mark.heavy
