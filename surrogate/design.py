@@ -24,6 +24,7 @@ References
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -32,7 +33,8 @@ from scipy.stats import qmc
 from mkm.core.records import package_file, provenance, write_csv_with_sidecar
 from mkm.fem.batch import Job, Runner, run_jobs
 from mkm.fem.materials import SILASTIC_S
-from mkm.surrogate.muscle_predictor import process_inputs
+from mkm.surrogate.coverage import rescale_factor
+from mkm.surrogate.muscle_predictor import effective_shortening, process_inputs
 
 #: The shipped design dataset (``mkm surrogate design --muscles 96 --out`` this file).
 DESIGN_DATASET = package_file("mkm.surrogate", "data", "mkm_design.csv")
@@ -175,28 +177,35 @@ def fe_sweeps(muscles: pd.DataFrame, mesh: str = "fine", pressures=DESIGN_PRESSU
     return frame, done
 
 
-def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
-                     candidates: int = 2000) -> pd.DataFrame:
+def adaptive_muscles(estimator, n_muscles: int, seed: int = 0, candidates: int = 2000,
+                     pool: pd.DataFrame | None = None, pressure_top_bar: float | None = None,
+                     reach_min_bar: float = 1e-3) -> pd.DataFrame:
     """``n_muscles`` muscles where a fitted :class:`~mkm.surrogate.muscle_gp.MuscleThresholdGP` is
-    least sure of the force at the top of the box's pressure range, chosen greedily among
-    ``candidates`` random muscles: each pick conditions both processes on it (their posterior
+    least sure of the force at the top pressure ``pressure_top_bar`` (default: the box's),
+    relative to that force, chosen greedily among ``pool`` (default: ``candidates`` random
+    muscles of the box): each pick conditions both processes on it (their posterior
     covariance, rank-one update with the fitted noise), so picks spread out instead of piling
     up in one corner. The processes' variance is weighted by the square of the estimator's
-    calibrated std factor (``c (log k_A / m_ref)^beta``): its errors grow with the end-effect
-    correction, largest for short muscles at a low braid angle, and so do the picks there."""
-    pool = random_muscles(candidates, seed)
-    P_top = BOX["pressure_bar"][1]
+    calibrated std factor (``c (log k_A / m_ref)^beta`` times the rescale ``k (k_A eps /
+    0.1)^power``, 1 for an estimator just fitted): its errors grow with the end-effect
+    correction, largest for short muscles at a low braid angle, and so do the picks there. The
+    threshold's share is taken over at least ``reach_min_bar`` above it (over the practical
+    range, one pressure step: a muscle whose threshold nears the top pressure has a force too
+    small to say much). Picks from ``pool`` keep its origin, prefixed ``adaptive``."""
+    pool = random_muscles(candidates, seed) if pool is None else pool.reset_index(drop=True)
+    P_top = BOX["pressure_bar"][1] if pressure_top_bar is None else float(pressure_top_bar)
     values = {"pressure_bar": np.full(len(pool), P_top), **{p: pool[p].to_numpy()
                                                            for p in MUSCLE_PARAMETERS}}
     X = np.column_stack([values[name] for name in estimator.inputs])
     v, z = estimator._muscle(X)
     zs = process_inputs((z - estimator.z_mean_) / estimator.z_scale_, estimator.inputs)
     _, m_A, _, _, _ = estimator._log_k(X)
-    calibrated = estimator._calibrated(m_A) ** 2
+    calibrated = (estimator._calibrated(m_A) * rescale_factor(
+        effective_shortening(v, m_A), estimator.std_rescale_, estimator.std_rescale_power_)) ** 2
     zero, one = np.zeros(len(pool)), np.ones(len(pool))
     A, gain_A, Pstar, gain_P = estimator._from_logk(v, zero, one, zero, one)
     # the force's relative sensitivity to each process's log k at the top pressure
-    reach = np.maximum(P_top - Pstar, 1e-3)
+    reach = np.maximum(P_top - Pstar, reach_min_bar)
     weights = [np.where(A > 0, gain_A / np.maximum(A, 1e-9), 0.0), gain_P / reach]
     covariances, noises = [], []
     for gp, post, z_process in ((estimator.slope_gp_, estimator.slope_posterior_, zs[0]),
@@ -218,7 +227,8 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0,
             column = C[:, pick].copy()
             C -= np.outer(column, column) / (column[pick] + noise)
     picked = pool.iloc[chosen].reset_index(drop=True)
-    picked["origin"] = f"adaptive seed {seed}"
+    picked["origin"] = (f"adaptive seed {seed}" if "origin" not in pool
+                        else "adaptive " + picked["origin"])
     return picked
 
 
@@ -324,16 +334,36 @@ def practical_muscles(n_muscles: int, seed: int) -> pd.DataFrame:
 
 def build_practical_set(n_muscles: int, seed: int, out, mesh: str = "fine",
                         workers: int | None = None, cache_dir=None, progress: bool = True,
-                        scheduler: str | None = None) -> tuple[pd.DataFrame, dict]:
+                        scheduler: str | None = None,
+                        adaptive: int = 0) -> tuple[pd.DataFrame, dict]:
     """FE sweeps (:data:`PRACTICAL_PRESSURES`) of ``n_muscles`` random muscles of the practical
     range (:func:`practical_muscles`), written to ``out`` and ``out.json`` (the draw, its box's
     hull as the dataset's box, provenance): the FE data a surrogate of the whole range learns
-    from or is scored on. Muscles whose sweep fails are kept with ``converged=False`` (the
-    loader leaves those rows out) and listed in the sidecar."""
+    from or is scored on. With ``adaptive``, only that many of the ``n_muscles`` drawn: those
+    where the shipped practical-range surrogate (:data:`~mkm.surrogate.kinds.RANGE`) is least
+    sure of the force at 8 bar relative to it (:func:`adaptive_muscles`; the sidecar records
+    the dataset it was trained on). Muscles whose sweep fails are kept with
+    ``converged=False`` (the loader leaves those rows out) and listed in the sidecar."""
     from mkm.fem.limits import PRACTICAL_RANGE
     from mkm.fem.sampling import draw_muscles
 
     muscles = practical_muscles(n_muscles, seed)
+    picked_by = None
+    if adaptive:
+        from mkm.surrogate.kinds import RANGE
+        from mkm.surrogate.train import cached_model
+
+        if not 0 < int(adaptive) <= n_muscles:
+            raise ValueError(f"--adaptive {adaptive!r} is invalid: expected 1 to --muscles "
+                             f"({n_muscles}) picks among the muscles drawn")
+        model = cached_model(RANGE)
+        muscles = adaptive_muscles(model.estimator, adaptive, seed, pool=muscles,
+                                   pressure_top_bar=PRACTICAL_PRESSURES[-1],
+                                   reach_min_bar=PRACTICAL_PRESSURES[1] - PRACTICAL_PRESSURES[0])
+        picked_by = {"kind": RANGE, "candidates": int(n_muscles), "picks": int(adaptive),
+                     "dataset": {"file": Path(model.metadata["dataset"]["path"]).name,
+                                 **{k: model.metadata["dataset"].get(k)
+                                    for k in ("sha256", "n_muscles")}}}
     frame, done = fe_sweeps(muscles, mesh, PRACTICAL_PRESSURES, workers=workers,
                             cache_dir=cache_dir, progress=progress,
                             desc="FE muscles of the practical range", scheduler=scheduler)
@@ -341,6 +371,7 @@ def build_practical_set(n_muscles: int, seed: int, out, mesh: str = "fine",
     failed = sorted(set(frame.loc[~frame["converged"], "muscle"].tolist()))
     info = {**provenance(), "what": "random muscles of the practical range (surrogate.design)",
             "draw": draw_muscles(0, int(seed)).record() | {"muscles": int(n_muscles)},
+            "adaptive": picked_by,
             "box": {k: list(v) for k, v in PRACTICAL_RANGE.hull().items()},
             "pressure_bar": list(PRACTICAL_PRESSURES), "model": "axisym", "mesh": mesh,
             "model_version": done["model_version"], "jobs_computed": done["computed"],

@@ -8,7 +8,8 @@ large ones' scale. The processes here take ``log D0``, ``log t0``, ``log L0``, `
 rubber ratio ``C01 / C10`` and ``log(D_braid / L0)`` (with ``theta0``, ``eps`` and ``sqrt(eps)``
 as the default's). Measured on 60 fresh muscles of the range, fitted on the same 768: worst
 error 1.97 % against 4.88 % with the default's linear inputs (``docs/guide/surrogates.md``).
-The slope, threshold, std and its calibration are the default's.
+The slope, threshold and std are the default's; the std keeps the fit's leave-one-muscle-out
+calibration (:meth:`RangeThresholdGP.calibrate_std`) before the held-out rescale.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from __future__ import annotations
 from dataclasses import fields
 
 import numpy as np
+from sklearn.utils.validation import check_is_fitted
 
 from mkm.surrogate.features import columns_of
 from mkm.surrogate.gp import posterior_mean_std
@@ -68,8 +70,24 @@ class RangeThresholdGP(MuscleThresholdGP):
     """:class:`~mkm.surrogate.muscle_gp.MuscleThresholdGP` with its processes on log-scaled
     sizes and rubber (:func:`range_muscle_values`); same parameters."""
 
+    def __init__(self, inputs=("pressure_bar", "D0_mm", "t0_mm", "eps"), fixed=None,
+                 restarts: int = 1, random_state: int = 0):
+        # one optimiser restart: on the 990 muscles of its dataset three gave the same fresh
+        # errors (worst and median within 0.5 %) in 3.5 times the time (150 s against 43 s)
+        super().__init__(inputs, fixed, restarts, random_state)
+
     def _muscle(self, X):
         return range_muscle_values(X, self.inputs, self.fixed)
+
+    def calibrate_std(self, X, y):
+        """Keep the calibration :meth:`fit` made on the leave-one-muscle-out errors of its
+        training muscles (990): fitted again on the calibration set's 79 muscles, the power
+        came out 1.5 (0.6 from the 990) and the std, rescaled, held 90 % of the 158 held-out
+        muscles' points within 2 std and 95 % within 3 (93 and 98 % kept). The calibration set
+        stays a set nothing fitted on (``train_surrogate`` records its coverage). Returns
+        ``self``."""
+        check_is_fitted(self)
+        return self
 
     def _log_k(self, X):
         return self.predictor().log_k(X)

@@ -125,7 +125,8 @@ def register(subparsers) -> None:
     design.add_argument("--seed", type=int, default=0, help="Latin hypercube seed (default 0)")
     design.add_argument("--adaptive", type=int, default=0,
                         help="then this many more muscles where the surrogate of the first is "
-                        "least sure (default 0)")
+                        "least sure (default 0); with --range practical: only this many of the "
+                        "--muscles drawn, where the shipped muscle-gp-range is least sure")
     design.add_argument("--refine", type=int, default=0,
                         help="then this many more space-filling muscles in --refine-box, where "
                         "the box's share is too few (default 0)")
@@ -346,15 +347,17 @@ def _design(args) -> int:
         raise ValueError("--held-out is invalid here: expected it with --random-seeds and "
                          "--update-shipped (it names the shipped file to write)")
     if args.range == "practical":
-        if args.random_seeds or args.update_shipped or args.adaptive or args.refine:
+        if args.random_seeds or args.update_shipped or args.refine:
             raise ValueError("--range practical is invalid with --random-seeds, "
-                             "--update-shipped, --adaptive or --refine: expected --muscles, "
-                             "--seed and --out")
+                             "--update-shipped or --refine: expected --muscles, --seed, "
+                             "--adaptive and --out")
         frame, info = build_practical_set(args.muscles, args.seed, Path(args.out),
                                           mesh=args.mesh, workers=args.workers,
                                           cache_dir=args.cache, progress=not args.no_progress,
-                                          scheduler=args.scheduler)
-        summary_line("surrogate design", f"{args.muscles} random muscles of the practical range "
+                                          scheduler=args.scheduler, adaptive=args.adaptive)
+        picked = (f"{args.adaptive} picked among {args.muscles}" if args.adaptive
+                  else str(args.muscles))
+        summary_line("surrogate design", f"{picked} random muscles of the practical range "
                      f"(seed {args.seed}, {len(info['muscles_with_failed_points'])} with failed "
                      f"points) in {time.perf_counter() - start:.0f} s; wrote {args.out}")
         return 0

@@ -123,6 +123,24 @@ def test_adaptive_muscles_go_where_the_surrogate_is_unsure():
         return std / np.maximum(force, 1.0)
 
     assert relative_std(picks).mean() > 2 * relative_std(pool).mean()
+    # from a given pool (the practical range's draw, weighed at its top pressure): picks of it,
+    # named after it
+    from mkm.surrogate.design import practical_muscles
+
+    practical = practical_muscles(100, 2)
+    chosen = adaptive_muscles(estimator, 3, pool=practical, pressure_top_bar=8.0,
+                              reach_min_bar=0.5)
+    assert set(chosen["origin"]) == {"adaptive practical seed 2"}
+    drawn = {tuple(r) for r in practical[list(MUSCLE_PARAMETERS)].to_numpy()}
+    assert {tuple(r) for r in chosen[list(MUSCLE_PARAMETERS)].to_numpy()} <= drawn
+    assert len(chosen.drop_duplicates()) == 3
+
+
+def test_practical_adaptive_picks_at_most_the_muscles_drawn(tmp_path):
+    from mkm.surrogate.design import build_practical_set
+
+    with pytest.raises(ValueError, match="--adaptive 6 is invalid"):
+        build_practical_set(5, 1, tmp_path / "a.csv", adaptive=6)
 
 
 def test_practical_muscles_lie_in_the_practical_range_and_follow_their_seed():
