@@ -94,7 +94,7 @@ def muscle_splits(groups, n_splits: int = MUSCLE_SPLITS, seed: int = 0):
 
 def muscle_split_scores(estimator, X, y, groups, threshold_pressure_bar=None,
                         n_splits: int = MUSCLE_SPLITS, seed: int = 0, scored=None,
-                        post_fit=None, progress=None) -> dict:
+                        post_fit=None, progress=None, only=None) -> dict:
     """Refit ``estimator`` on each muscle-held-out split and score it on the held-out muscles.
 
     ``scored``: rows that may be scored (default all; the rows inside the box, where a sweep
@@ -102,13 +102,16 @@ def muscle_split_scores(estimator, X, y, groups, threshold_pressure_bar=None,
     {score: summarise(...)}, "points": (y_true, y_pred, std) of every held-out point pooled}``;
     the coverage scores also hold ``pooled``, over every held-out point of every split.
     ``post_fit``: called with each refit model (the std calibration of the trained model);
-    ``progress``: called after each split (a progress bar's ``update``).
+    ``progress``: called after each split (a progress bar's ``update``); ``only``: the indices
+    of the splits to refit (default all; a check of a few splits of a stored result).
     """
     from sklearn.base import clone
 
     scored = np.ones(len(y), dtype=bool) if scored is None else np.asarray(scored, dtype=bool)
     rows, pooled = [], []
     for k, (train, test) in enumerate(muscle_splits(groups, n_splits, seed)):
+        if only is not None and k not in only:
+            continue
         test = test[scored[test]]
         model = clone(estimator)
         start = time.perf_counter()

@@ -6,7 +6,7 @@ import pytest
 
 from mkm.surrogate.offgrid import evaluate_offgrid
 from mkm.surrogate.testset import FE_REFERENCE, PAPER_MUSCLES, read_fe_reference
-from mkm.surrogate.train import train_surrogate
+from mkm.surrogate.train import cached_model
 from mkm.surrogate.training_data import DEFAULT_DATASET
 
 pytestmark = [pytest.mark.slow,  # trains the default surrogate with its held-out refits
@@ -18,7 +18,10 @@ pytestmark = [pytest.mark.slow,  # trains the default surrogate with its held-ou
 
 @pytest.fixture(scope="module")
 def best():
-    return train_surrogate("best")
+    """The default surrogate as every command gets it: trained once per session into the
+    suite's cache (the same training as ``train_surrogate("best")``) and shared with the
+    report and CLI tests, which would otherwise train it a second time."""
+    return cached_model("best")
 
 
 def test_reference_is_our_fe_model():
