@@ -173,8 +173,8 @@ def _instrument(run) -> dict:
     regulator = from_record(Regulator, recorded["regulator"])
     offset, gain = regulator.reading_bounds()
     return {"monitor_offset_bound_bar": offset, "monitor_gain_bound": gain,
-            "sensitivity_tolerance": from_record(LoadCell, recorded["loadcell"])
-            .sensitivity_tolerance_fraction,
+            "sensitivity_tolerance": recorded["loadcell"].get(
+                "sensitivity_tolerance_fraction", LoadCell.sensitivity_tolerance_fraction),
             "instrument_declared": ("monitor_accuracy_bar" in recorded["regulator"]
                                     and "max_pressure_bar" in recorded["regulator"]
                                     and "sensitivity_tolerance_fraction" in recorded["loadcell"]),
