@@ -133,4 +133,4 @@ def test_std_coverage_on_held_out_muscles(best):
     assert within["within_1std"] == pytest.approx(0.6827, abs=0.08)
     assert within["within_2std"] == pytest.approx(0.9545, abs=0.03)
     assert within["within_3std"] == pytest.approx(0.9973, abs=0.03)
-    assert best.metadata["std_rescale"]["n_muscles"] == 360
+    assert best.metadata["std_rescale"]["n_muscles"] == 840
