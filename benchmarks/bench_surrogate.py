@@ -124,8 +124,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--muscles", type=int, default=12, help="random muscles per draw")
     parser.add_argument("--draws", type=int, default=3,
-                        help="off-grid draws (seeds --seed, --seed + 1, ...); coverage is pooled over "
-                        "them: one draw of 12 muscles moves it by ~+-13 %%")
+                        help="off-grid draws (seeds --seed, --seed + 1, ...); coverage is "
+                        "pooled over them: one draw of 12 muscles moves it by ~+-13 %%")
     parser.add_argument("--seed", type=int,
                         help="seed of the first draw, the next draws take the next seeds "
                         "(default: a fresh seed per draw)")

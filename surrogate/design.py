@@ -187,8 +187,9 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0, candidates: int =
     covariance, rank-one update with the fitted noise), so picks spread out instead of piling
     up in one corner. The processes' variance is weighted by the square of the estimator's
     calibrated std factor (``c (log k_A / m_ref)^beta`` times the rescale ``k (k_A eps /
-    0.1)^power (theta0 / 30 deg)^angle_power``, 1 for an estimator just fitted): its errors grow with the end-effect
-    correction, largest for short muscles at a low braid angle, and so do the picks there. The
+    0.1)^power (theta0 / 30 deg)^angle_power``, 1 for an estimator just fitted): its errors
+    grow with the end-effect correction, largest for short muscles at a low braid angle, and so
+    do the picks there. The
     threshold's share is taken over at least ``reach_min_bar`` above it (over the practical
     range, one pressure step: a muscle whose threshold nears the top pressure has a force too
     small to say much). Picks from ``pool`` keep its origin, prefixed ``adaptive``."""
