@@ -13,13 +13,19 @@ STD_SCALES = np.geomspace(0.1, 10.0, 161)
 STD_POWERS = np.linspace(-0.5, 2.5, 31)
 #: What a normal error gives within 1, 2 and 3 std: :func:`rescale_fit`'s targets.
 NORMAL_COVERAGE = ((1.0, 0.6827), (2.0, 0.9545), (3.0, 0.9973))
-#: Grid of :func:`rescale_fit`: factors 0.25-4, 0.5 % apart, and powers of eps.
+#: Grid of :func:`rescale_fit`: factors 0.25-4, 0.5 % apart, powers of eps and of the braid angle.
 STD_RESCALES = np.geomspace(0.25, 4.0, 557)
 RESCALE_POWERS = np.round(np.linspace(-0.5, 1.5, 41), 3)
+RESCALE_ANGLE_POWERS = np.round(np.linspace(-2.0, 1.0, 16), 3)
 #: The rescale's shortening is relative to this one [fraction] (mid-box), and never taken
 #: below the smallest (at eps = 0 the force has no end-effect error: the std is the floor's).
 RESCALE_EPS_REF = 0.1
 RESCALE_EPS_MIN = 1e-3
+#: The rescale's braid angle is relative to this one [deg].
+RESCALE_THETA_REF_DEG = 30.0
+#: :func:`rescale_fit` asks the bands to hold in each of this many equal shares of the points
+#: sorted by braid angle, as well as in all of them.
+RESCALE_ANGLE_GROUPS = 3
 
 
 def coverage(error, std, k: float) -> float:
@@ -56,34 +62,52 @@ def coverage_fit(error, std_of) -> tuple[float, float]:
     return best
 
 
-def rescale_factor(shortening, k: float, power: float):
-    """``k (shortening / RESCALE_EPS_REF)^power``: the factor of the whole std at an (effective)
-    shortening [fraction]."""
-    return k * (np.maximum(shortening, RESCALE_EPS_MIN) / RESCALE_EPS_REF) ** power
+def rescale_factor(shortening, theta0_deg, k: float, power: float, angle_power: float = 0.0):
+    """``k (shortening / RESCALE_EPS_REF)^power (theta0 / RESCALE_THETA_REF_DEG)^angle_power``:
+    the factor of the whole std at an (effective) shortening [fraction] and braid angle [deg]."""
+    return (k * (np.maximum(shortening, RESCALE_EPS_MIN) / RESCALE_EPS_REF) ** power
+            * (np.asarray(theta0_deg, dtype=float) / RESCALE_THETA_REF_DEG) ** angle_power)
 
 
-def rescale_fit(error, std, shortening) -> tuple[float, float]:
-    """The ``(k, power)`` whose bands ``rescale_factor(shortening, k, power) std`` hold closest
-    to the
-    normal fractions within 1, 2 and 3 std (:data:`NORMAL_COVERAGE`): the smallest largest miss
-    over the three on the grid :data:`STD_RESCALES` x :data:`RESCALE_POWERS` (of equal misses,
-    the power closest to 0, then the smallest factor); ``(1, 0)`` when no point is informative
-    (:func:`coverage`)."""
+def _band_miss(ratio) -> np.ndarray:
+    """For each factor of :data:`STD_RESCALES`, the largest miss of the 1, 2 and 3 std
+    fractions (:data:`NORMAL_COVERAGE`) of the sorted ``|error| / std`` ratios ``ratio``."""
+    # |error| <= n k std  <=>  |error| / std <= n k: the sorted ratios count them
+    return np.max([np.abs(np.searchsorted(ratio, n * STD_RESCALES, side="right") / ratio.size
+                          - target) for n, target in NORMAL_COVERAGE], axis=0)
+
+
+def rescale_fit(error, std, shortening, theta0_deg) -> tuple[float, float, float]:
+    """The ``(k, power, angle_power)`` whose bands ``rescale_factor(shortening, theta0_deg, k,
+    power, angle_power) std`` hold closest to the normal fractions within 1, 2 and 3 std
+    (:data:`NORMAL_COVERAGE`) over all the points and in each of :data:`RESCALE_ANGLE_GROUPS`
+    equal shares of them sorted by braid angle: the smallest largest miss on the grid
+    :data:`STD_RESCALES` x :data:`RESCALE_POWERS` x :data:`RESCALE_ANGLE_POWERS` (of equal
+    misses, the powers closest to 0, then the smallest factor); ``(1, 0, 0)`` when no point is
+    informative (:func:`coverage`).
+
+    Pooled alone, a std too wide at high braid angles and too narrow at low ones can hold the
+    right fractions on average while the low angles' errors make the tails: the shares keep
+    the bands right where the errors are (the braid's slope near its lock, steepest at low
+    angles)."""
     error, std = np.abs(np.asarray(error, dtype=float)), np.asarray(std, dtype=float)
     eps = np.broadcast_to(np.asarray(shortening, dtype=float), error.shape)
+    theta = np.broadcast_to(np.asarray(theta0_deg, dtype=float), error.shape)
     informative = (error > 0) | (std > 0)
     if not informative.any():
-        return 1.0, 0.0
-    error, std, eps = error[informative], std[informative], eps[informative]
-    best, best_miss = (1.0, 0.0), np.inf
-    for power in sorted(RESCALE_POWERS, key=abs):
-        # |error| <= n k f std  <=>  |error| / (f std) <= n k: the sorted ratios count them
-        with np.errstate(divide="ignore"):
-            ratio = np.sort(error / (rescale_factor(eps, 1.0, power) * std))
-        miss = np.max([np.abs(np.searchsorted(ratio, n * STD_RESCALES, side="right")
-                              / ratio.size - target)
-                       for n, target in NORMAL_COVERAGE], axis=0)
-        i = int(np.argmin(miss))
-        if miss[i] < best_miss - 1e-12:
-            best, best_miss = (float(STD_RESCALES[i]), float(power)), miss[i]
+        return 1.0, 0.0, 0.0
+    error, std, eps, theta = (a[informative] for a in (error, std, eps, theta))
+    order = np.argsort(theta, kind="stable")
+    shares = [order] + ([] if theta.size < 3 * RESCALE_ANGLE_GROUPS else
+                        np.array_split(order, RESCALE_ANGLE_GROUPS))
+    best, best_miss = (1.0, 0.0, 0.0), np.inf
+    for angle_power in sorted(RESCALE_ANGLE_POWERS, key=abs):
+        for power in sorted(RESCALE_POWERS, key=abs):
+            with np.errstate(divide="ignore"):
+                ratio = error / (rescale_factor(eps, theta, 1.0, power, angle_power) * std)
+            miss = np.max([_band_miss(np.sort(ratio[rows])) for rows in shares], axis=0)
+            i = int(np.argmin(miss))
+            if miss[i] < best_miss - 1e-12:
+                best, best_miss = ((float(STD_RESCALES[i]), float(power), float(angle_power)),
+                                   miss[i])
     return best

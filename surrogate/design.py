@@ -187,8 +187,9 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0, candidates: int =
     covariance, rank-one update with the fitted noise), so picks spread out instead of piling
     up in one corner. The processes' variance is weighted by the square of the estimator's
     calibrated std factor (``c (log k_A / m_ref)^beta`` times the rescale ``k (k_A eps /
-    0.1)^power``, 1 for an estimator just fitted): its errors grow with the end-effect
-    correction, largest for short muscles at a low braid angle, and so do the picks there. The
+    0.1)^power (theta0 / 30 deg)^angle_power``, 1 for an estimator just fitted): its errors
+    grow with the end-effect correction, largest for short muscles at a low braid angle, and so
+    do the picks there. The
     threshold's share is taken over at least ``reach_min_bar`` above it (over the practical
     range, one pressure step: a muscle whose threshold nears the top pressure has a force too
     small to say much). Picks from ``pool`` keep its origin, prefixed ``adaptive``."""
@@ -201,7 +202,8 @@ def adaptive_muscles(estimator, n_muscles: int, seed: int = 0, candidates: int =
     zs = process_inputs((z - estimator.z_mean_) / estimator.z_scale_, estimator.inputs)
     _, m_A, _, _, _ = estimator._log_k(X)
     calibrated = (estimator._calibrated(m_A) * rescale_factor(
-        effective_shortening(v, m_A), estimator.std_rescale_, estimator.std_rescale_power_)) ** 2
+        effective_shortening(v, m_A), v["theta0_deg"], estimator.std_rescale_,
+        estimator.std_rescale_power_, estimator.std_rescale_angle_power_)) ** 2
     zero, one = np.zeros(len(pool)), np.ones(len(pool))
     A, gain_A, Pstar, gain_P = estimator._from_logk(v, zero, one, zero, one)
     # the force's relative sensitivity to each process's log k at the top pressure

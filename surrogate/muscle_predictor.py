@@ -24,7 +24,7 @@ LINEARITY_BINS_BAR = (0.0, 0.1, 0.25, 0.5, 1.0, 2.0, np.inf)  # of P - P*
 POSTERIOR_ARRAYS = {"X_scaled": 2, "length_scale": 1, "alpha": 1, "L_inv": 2, "amplitude": 0,
                     "noise": 0, "y_mean": 0, "y_std": 0}
 SCALARS = ("std_scale", "std_power", "std_reference", "bend_bar", "std_rescale",
-           "std_rescale_power")
+           "std_rescale_power", "std_rescale_angle_power")
 
 
 def muscle_values(X, inputs, fixed):
@@ -153,6 +153,7 @@ class MusclePredictor:
     bend_bar: float
     std_rescale: float
     std_rescale_power: float
+    std_rescale_angle_power: float
     linearity_bar: np.ndarray
 
     has_std = True
@@ -170,12 +171,13 @@ class MusclePredictor:
                 effective_shortening(v, m_A))
 
     def std_parts(self, X):
-        """Per row of a validated ``X``: force [N], its std before the rescale [N] and the
-        effective shortening ``k_A eps`` the rescale takes."""
+        """Per row of a validated ``X``: force [N], its std before the rescale [N], and the
+        effective shortening ``k_A eps`` [fraction] and braid angle [deg] the rescale takes."""
         A, s_A, Pstar, s_P, shortening = self._per_muscle(X)
         force, var, floor = force_parts(X[:, 0], A, s_A, Pstar, s_P, self.linearity_bar,
                                         self.bend_bar)
-        return force, np.sqrt(var + floor**2), shortening
+        theta0 = columns_of(X, self.inputs, self.fixed)["theta0_deg"]
+        return force, np.sqrt(var + floor**2), shortening, theta0
 
     def _per_muscle(self, X):
         """:meth:`_parts` once per muscle of ``X``, per row."""
@@ -190,8 +192,9 @@ class MusclePredictor:
         if not return_std:
             A, _, Pstar, _, _ = self._per_muscle(X)
             return A * np.maximum(X[:, 0] - Pstar, 0.0)
-        force, std, shortening = self.std_parts(X)
-        return force, std * rescale_factor(shortening, self.std_rescale, self.std_rescale_power)
+        force, std, shortening, theta0 = self.std_parts(X)
+        return force, std * rescale_factor(shortening, theta0, self.std_rescale,
+                                           self.std_rescale_power, self.std_rescale_angle_power)
 
     def arrays(self) -> dict[str, np.ndarray]:
         """The fitted numbers as flat named arrays (``numpy.savez``)."""

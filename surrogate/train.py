@@ -114,13 +114,15 @@ def train_surrogate(kind: str = "best", dataset=None, splits: int | None = None,
         metadata["std_rescale"] = {
             "factor": float(estimator.std_rescale_),
             "shortening_power": float(estimator.std_rescale_power_),
+            "angle_power": float(estimator.std_rescale_angle_power_),
             "path": holdout.path,
             "sha256": holdout.sha256, "n_muscles": holdout.n_muscles,
             "seeds": holdout.provenance.get("seeds"),
             "command": holdout.provenance.get("command"),
-            "method": "factor * (k_A eps / 0.1)^shortening_power times the whole std, the "
-                      "one whose 1/2/3 std bands hold closest to 68.27/95.45/99.73 % of the "
-                      "held-out errors (largest miss smallest)",
+            "method": "factor * (k_A eps / 0.1)^shortening_power * (theta0 / 30 deg)^angle_power "
+                      "times the whole std, the one whose 1/2/3 std bands hold closest to "
+                      "68.27/95.45/99.73 % of the held-out errors, over all of them and in each "
+                      "third by braid angle (largest miss smallest)",
             **std_coverage(estimator, holdout.X, holdout.y)}
     model = SurrogateForceModel(estimator, resolved, data.inputs, data.fixed, data.box,
                                 metadata)
