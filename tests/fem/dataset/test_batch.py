@@ -80,16 +80,19 @@ def test_runner_and_workers_together_are_refused(tmp_path):
         Runner(0)
 
 
-def serial_fe(tmp_path):
-    frame, done = run_jobs(FE_JOBS, workers=1, cache_dir=tmp_path / "serial", progress=False)
+@pytest.fixture(scope="module")
+def serial(tmp_path_factory):
+    """The FE jobs solved in this process, once for the tests that compare Dask's rows to
+    them."""
+    frame, done = run_jobs(FE_JOBS, workers=1, cache_dir=tmp_path_factory.mktemp("serial"),
+                           progress=False)
     assert done["workers"] == "1 worker (in-process)" and frame.converged.all()
     return frame
 
 
 @pytest.mark.slow  # starts Dask
-def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(tmp_path,
+def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(serial, tmp_path,
                                                                           monkeypatch):
-    serial = serial_fe(tmp_path)
     # a long task target: the balance rule alone sizes the chunks, 12 jobs left after the
     # first 4 single-job tasks (2 queued per worker) -> ceil(12 / (4 x 2)) = 2
     monkeypatch.setattr(batch, "TASK_SECONDS", 1e3)
@@ -109,8 +112,7 @@ def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(tmp
 
 
 @pytest.mark.slow  # starts Dask
-def test_this_process_computes_while_the_cluster_starts(tmp_path):
-    serial = serial_fe(tmp_path)
+def test_this_process_computes_while_the_cluster_starts(serial, tmp_path):
     frame, done = run_jobs(FE_JOBS, workers=2, cache_dir=tmp_path / "two", progress=False)
     # a coarse job takes about 0.1 s, starting two worker processes seconds
     assert done["computed_while_starting"] >= 1 and done["computed"] == len(FE_JOBS)
@@ -119,10 +121,9 @@ def test_this_process_computes_while_the_cluster_starts(tmp_path):
 
 @pytest.mark.slow  # starts Dask, kills a worker process
 @pytest.mark.skipif(not hasattr(signal, "SIGKILL"), reason="SIGKILL is POSIX")
-def test_a_killed_worker_loses_only_its_task(tmp_path):
+def test_a_killed_worker_loses_only_its_task(serial, tmp_path):
     from dask.distributed import Client, LocalCluster
 
-    serial = serial_fe(tmp_path)
     cache = tmp_path / "cluster"
     killed = []
 
