@@ -274,9 +274,8 @@ def test_a_scheduler_and_workers_started_with_the_dask_command(tmp_path, capsys)
                                 cwd=other, capture_output=True, text=True,
                                 check=True).stdout.strip()
         assert theirs != model_version("eq2")
-        # (without a nanny: the worker in the command's own process, one interpreter fewer)
         processes.append(start(["worker", address, "--nthreads", "1", "--no-dashboard",
-                                "--no-nanny", "--name", "other-code"], other_env, cwd=other))
+                                "--name", "other-code"], other_env, cwd=other))
         from dask.distributed import Client
 
         with Client(address) as client:
