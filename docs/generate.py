@@ -111,8 +111,10 @@ def defining_module(module: str, name: str) -> str:
     return module
 
 
-def _assigned(module: str) -> set[str]:
-    """Names a module assigns at its top level (not those it imports)."""
+@functools.cache
+def _assigned(module: str) -> frozenset[str]:
+    """Names a module assigns at its top level (not those it imports); each module's source
+    parsed once per build."""
     import ast
 
     source = inspect.getsource(importlib.import_module(module))
@@ -121,7 +123,7 @@ def _assigned(module: str) -> set[str]:
         targets = node.targets if isinstance(node, ast.Assign) else (
             [node.target] if isinstance(node, ast.AnnAssign) else [])
         names |= {t.id for t in targets if isinstance(t, ast.Name)}
-    return names
+    return frozenset(names)
 
 
 def module_page(module: str) -> str:

@@ -320,3 +320,24 @@ def test_coverage_factors_are_the_quantiles_of_known_distributions():
     k = coverage_factor([bound(1.0), normal])
     assert np.mean(np.abs(draws) <= k * math.sqrt(2)) == pytest.approx(COVERAGE_PROBABILITY,
                                                                        abs=0.002)
+
+
+
+def test_the_convolution_is_the_direct_sum_centred():
+    """The coverage factor convolves through scipy.fft (scipy.signal, a second of import at every
+    acquisition's start, is left out): the direct sum's numbers, centred as ``mode="same"``,
+    boxes of both parities and a Gaussian."""
+    from mkm.bench.budget import _convolve_same
+
+    rng = np.random.default_rng(7)
+    x = np.linspace(-3.0, 3.0, 4001)
+    density = np.zeros_like(x)
+    density[2000] = 1.0 / (x[1] - x[0])
+    kernels = [(np.abs(x) <= a).astype(float) for a in rng.uniform(0.05, 1.0, 3)]
+    kernels.append(np.exp(-0.5 * (x / 0.3) ** 2))
+    kernels.append(np.ones(6))  # an even length: the centring's other case
+    for kernel in kernels:
+        expected = np.convolve(density, kernel / kernel.sum(), mode="same")
+        got = _convolve_same(density, kernel / kernel.sum())
+        np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12 * expected.max())
+        density = got

@@ -122,7 +122,9 @@ def sliding_runs(tmp_path_factory):
 def test_a_sliding_braid_under_a_bonded_fit_is_inside_the_rubber_interval(sliding_runs):
     from mkm.identify import identify
 
-    result = identify(sliding_runs, params="theta0,rubber,friction,offset",
+    # the monitor's offset left out (the simulated monitor has none: its truth unset is 0;
+    # fitting it moves nothing below and costs a fifth of the FE sweeps)
+    result = identify(sliding_runs, params="theta0,rubber,friction",
                       model="axisym:mesh=coarse", search="model")
     braid = result.model_form["braid"]
     assert braid["kind"] == "one-sided" and "braid=sliding" in braid["what"]
@@ -137,7 +139,7 @@ def test_a_sliding_braid_under_a_bonded_fit_is_inside_the_rubber_interval(slidin
     assert not result.rubber["separated"]  # the sliding pull on the ratio separates nothing
     assert "extended by the model-form term braid" in result.record()["interval_method"]
     # the braid given: the confirmation model's, no braid term, and the rubber found closer
-    known = identify(sliding_runs, params="theta0,rubber,friction,offset",
+    known = identify(sliding_runs, params="theta0,rubber,friction",
                      model="axisym:mesh=coarse", search="model", braid="sliding")
     assert "skipped" in known.model_form["braid"]
     assert known.fit.values["rubber_scale"] == pytest.approx(1.0, abs=0.005)

@@ -4,7 +4,9 @@ the files that ship with the project (mkm.paths)."""
 from __future__ import annotations
 
 import argparse
+import contextlib
 import hashlib
+import io
 import subprocess
 from pathlib import Path
 
@@ -52,22 +54,36 @@ def _shipped_hashes() -> dict[str, str]:
             if (ROOT / f).exists()}
 
 
+@pytest.fixture(scope="module")
+def first_demo(tmp_path_factory):
+    """``mkm demo`` run once from an empty folder with the default output root, for the tests
+    below: the folder, the shipped files' hashes before it (None outside a git work tree) and
+    the last line it printed."""
+    folder = tmp_path_factory.mktemp("cwd")
+    before = _shipped_hashes() if (ROOT / ".git").exists() else None
+    out = io.StringIO()
+    with pytest.MonkeyPatch.context() as mp, contextlib.redirect_stdout(out):
+        mp.chdir(folder)
+        mp.delenv("MKM_OUT", raising=False)
+        mp.setenv("XDG_CACHE_HOME", str(folder / "cache"))
+        assert main(["demo", "--no-progress"]) == 0
+    return folder, before, Path(out.getvalue().splitlines()[-1])
+
+
 @pytest.mark.slow  # the demo trains the default surrogate
 @pytest.mark.skipif(not (ROOT / ".git").exists(), reason="not a git work tree")
-def test_demo_and_report_leave_the_shipped_files_alone(monkeypatch, tmp_path, capsys):
-    before = _shipped_hashes()
-    monkeypatch.chdir(tmp_path)
+def test_demo_and_report_leave_the_shipped_files_alone(first_demo, monkeypatch, capsys):
+    folder, before, report = first_demo
+    monkeypatch.chdir(folder)
     monkeypatch.delenv("MKM_OUT", raising=False)
-    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
-    assert main(["demo", "--no-progress"]) == 0
-    report = Path(capsys.readouterr().out.splitlines()[-1])
-    runs = sorted((tmp_path / "mkm-out" / "demo" / "runs").iterdir())
+    monkeypatch.setenv("XDG_CACHE_HOME", str(folder / "cache"))
+    runs = sorted((folder / "mkm-out" / "demo" / "runs").iterdir())
     assert main(["report", *map(str, runs), "--models", "eq2,thickwall", "--no-progress"]) == 0
     again = Path(capsys.readouterr().out.splitlines()[-1])
     # defaults: ./mkm-out/demo/report and ./mkm-out/report/<first run>
     assert report == Path("mkm-out") / "demo" / "report" / "report.html"
     assert again == Path("mkm-out") / "report" / runs[0].name / "report.html"
-    assert (tmp_path / again).is_file()
+    assert (folder / again).is_file()
     assert _shipped_hashes() == before
 
 
@@ -85,17 +101,16 @@ def test_one_cache_folder_for_predictions_surrogates_and_dataset_jobs(tmp_path, 
     assert len(folders) == 1 and folders.pop().is_absolute()
 
 
-@pytest.mark.slow  # two whole demos
-def test_a_demo_replaces_the_runs_of_the_demo_before_it(tmp_path):
+@pytest.mark.slow  # a second whole demo
+def test_a_demo_replaces_the_runs_of_the_demo_before_it(first_demo):
     from mkm.demo import run_demo
 
-    keep = tmp_path / "demo" / "runs" / "my-own-folder"
-    keep.mkdir(parents=True)  # not the demo's: never touched
-    options = {"models": ["eq2"], "tolerance": None, "surrogate_section": False,
-               "cache_dir": None}
-    run_demo(tmp_path / "demo", progress=False, **options)
-    first = sorted(p.name for p in (tmp_path / "demo" / "runs").iterdir())
-    run_demo(tmp_path / "demo", progress=False, **options)
-    second = sorted(p.name for p in (tmp_path / "demo" / "runs").iterdir())
+    demo = first_demo[0] / "mkm-out" / "demo"
+    keep = demo / "runs" / "my-own-folder"
+    keep.mkdir(parents=True, exist_ok=True)  # not the demo's: never touched
+    first = sorted(p.name for p in (demo / "runs").iterdir())
+    run_demo(demo, progress=False, models=["eq2"], tolerance=None, surrogate_section=False,
+             cache_dir=None)
+    second = sorted(p.name for p in (demo / "runs").iterdir())
     assert len(first) == len(second) == 3 and "my-own-folder" in second
     assert all(name.endswith("-SIMULATED") for name in second if name != "my-own-folder")

@@ -80,16 +80,19 @@ def test_runner_and_workers_together_are_refused(tmp_path):
         Runner(0)
 
 
-def serial_fe(tmp_path):
-    frame, done = run_jobs(FE_JOBS, workers=1, cache_dir=tmp_path / "serial", progress=False)
+@pytest.fixture(scope="module")
+def serial(tmp_path_factory):
+    """The FE jobs solved in this process, once for the tests that compare Dask's rows to
+    them."""
+    frame, done = run_jobs(FE_JOBS, workers=1, cache_dir=tmp_path_factory.mktemp("serial"),
+                           progress=False)
     assert done["workers"] == "1 worker (in-process)" and frame.converged.all()
     return frame
 
 
 @pytest.mark.slow  # starts Dask
-def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(tmp_path,
+def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(serial, tmp_path,
                                                                           monkeypatch):
-    serial = serial_fe(tmp_path)
     # a long task target: the balance rule alone sizes the chunks, 12 jobs left after the
     # first 4 single-job tasks (2 queued per worker) -> ceil(12 / (4 x 2)) = 2
     monkeypatch.setattr(batch, "TASK_SECONDS", 1e3)
@@ -109,8 +112,7 @@ def test_chunked_runs_on_two_workers_are_bit_identical_and_reuse_the_cluster(tmp
 
 
 @pytest.mark.slow  # starts Dask
-def test_this_process_computes_while_the_cluster_starts(tmp_path):
-    serial = serial_fe(tmp_path)
+def test_this_process_computes_while_the_cluster_starts(serial, tmp_path):
     frame, done = run_jobs(FE_JOBS, workers=2, cache_dir=tmp_path / "two", progress=False)
     # a coarse job takes about 0.1 s, starting two worker processes seconds
     assert done["computed_while_starting"] >= 1 and done["computed"] == len(FE_JOBS)
@@ -119,10 +121,9 @@ def test_this_process_computes_while_the_cluster_starts(tmp_path):
 
 @pytest.mark.slow  # starts Dask, kills a worker process
 @pytest.mark.skipif(not hasattr(signal, "SIGKILL"), reason="SIGKILL is POSIX")
-def test_a_killed_worker_loses_only_its_task(tmp_path):
+def test_a_killed_worker_loses_only_its_task(serial, tmp_path):
     from dask.distributed import Client, LocalCluster
 
-    serial = serial_fe(tmp_path)
     cache = tmp_path / "cluster"
     killed = []
 
@@ -230,7 +231,9 @@ def test_a_scheduler_and_workers_started_with_the_dask_command(tmp_path, capsys)
     processes = [start(["scheduler", "--host", "127.0.0.1", "--port", address.rsplit(":")[-1],
                         "--no-dashboard"], env)]
     try:
-        processes.append(start(["worker", address, "--nworkers", "2", "--nthreads", "1",
+        # one worker process is a cluster as a lab's; test_chunked_runs_on_two_workers_... and
+        # the identification's test on two workers split the work
+        processes.append(start(["worker", address, "--nworkers", "1", "--nthreads", "1",
                                 "--no-dashboard"], env))
         grid = tmp_path / "grid.toml"
         grid.write_text('pressure_bar = "0:2:1"\nD0_mm = [30, 40]\nt0_mm = 2.5\n'
@@ -276,7 +279,7 @@ def test_a_scheduler_and_workers_started_with_the_dask_command(tmp_path, capsys)
         from dask.distributed import Client
 
         with Client(address) as client:
-            client.wait_for_workers(3, timeout=60)
+            client.wait_for_workers(2, timeout=60)
         capsys.readouterr()
         code = main(["fem", "dataset", "--grid", str(grid), "--model", "eq2", "--cache",
                      str(tmp_path / "eq2"), "--out", str(tmp_path / "eq2.csv"), "--scheduler",
