@@ -278,19 +278,18 @@ def expected_budget_lines(config: BenchConfig) -> list[str]:
     """The uncertainty budget a run of ``config`` can have at each planned pressure (forces
     from Equation 2; data terms at the settle and tare limits), and its terms at the top."""
     pressures = sorted(set(config.sequence.pressures_bar))
-    budgets = [(p, expected_force_N(config, p)) for p in pressures]
+    budgets = [(p, force, expected_budget(config, force, p))
+               for p, force in ((p, expected_force_N(config, p)) for p in pressures)]
     lines = ["expected uncertainty (U at 95.45 %; forces by Equation 2; hold scatter, drift and "
              "tare at their settle and safety limits, so at most this):",
              f"{'P [bar]':>8} {'F [N]':>8} {'U(F) [N]':>9} {'U(F) [%]':>9} {'U(P) [bar]':>10}"
              "  largest term"]
-    for p, force in budgets:
-        b = expected_budget(config, force, p)
+    for p, force, b in budgets:
         top = b.ranked("force")[0][0].name
         share = 100 * b.force_U_N / force if force > 0 else float("nan")
         lines.append(f"{p:>8g} {force:>8.1f} {b.force_U_N:>9.2f} {share:>9.2f} "
                      f"{b.pressure_U_bar:>10.3f}  {top}")
-    p, force = budgets[-1]
-    top = expected_budget(config, force, p)
+    p, _, top = budgets[-1]
     lines.append(f"force budget at {p:g} bar, terms ranked by their share of the variance:")
     lines.extend(budget_table(top, "force"))
     lines.append(f"pressure budget at {p:g} bar:")

@@ -323,8 +323,9 @@ def _select(source, runs, names, start, nominal):
 def instrument_terms(runs) -> dict:
     """What the bootstrap draws of the instrument (:func:`mkm.identify.intervals.bootstrap`):
     the load cell's sensitivity tolerance (one cell for every run: the largest declared), and
-    the monitor offset's prior, uniform within the smallest declared accuracy (its standard
-    deviation, accuracy over root 3)."""
+    the monitor offset's prior, uniform within the smallest declared offset bound
+    (:meth:`mkm.bench.config.Regulator.reading_bounds`; its standard deviation, the bound over
+    root 3)."""
     bound = min(r.monitor_offset_bound_bar for r in runs)
     return {"sensitivity_tolerance": max(r.sensitivity_tolerance for r in runs),
             "prior_sd": {"pressure_offset_bar": bound / np.sqrt(3.0)}}
