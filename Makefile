@@ -11,7 +11,7 @@ EDITABLE := --config-settings editable_mode=strict -e
 # (with a trailing slash: `bench` is also a target)
 PACKAGE_DIRS := $(shell find mkm bench fem surrogate -type d -not -name __pycache__ -printf '%p/ ')
 
-.PHONY: demo test test-fast test-heavy bench docs bench-docs clean
+.PHONY: demo test test-fast bench docs bench-docs clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -40,16 +40,13 @@ test: $(VENV)/.installed-test
 	$(BIN)/ruff check .
 	$(BIN)/python tools/lint_imports.py
 	$(BIN)/python tools/check_static_imports.py
-	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q -m "not heavy" --durations=15
+	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q --durations=15
 
 test-fast: $(VENV)/.installed-test
 	$(BIN)/ruff check .
 	$(BIN)/python tools/lint_imports.py
 	$(BIN)/python tools/check_static_imports.py
-	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q -m "not slow and not heavy" -n 2
-
-test-heavy: $(VENV)/.installed-test
-	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q -m heavy
+	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q -m "not slow" -n 2
 
 bench: $(VENV)/.installed-test
 	$(PIP_INSTALL) -e ".[bench]"

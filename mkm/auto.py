@@ -138,8 +138,8 @@ def _in_practical_range(P, D0, t0, eps) -> bool:
 
 
 def _announce_first_training(kind: str) -> None:
-    """Say before a surrogate trains on first use (minutes for the practical range's), so that a
-    command does not wait without a word."""
+    """Say before a surrogate trains on first use (seconds at its shipped kernels, a minute for
+    the practical range's without them), so that a command does not wait without a word."""
     from mkm.core.durations import estimate
     from mkm.surrogate.train import is_cached, kind_files, training_task
 

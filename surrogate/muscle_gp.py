@@ -181,6 +181,8 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
                 fitted.append(np.flatnonzero(ok))
             (self.slope_gp_, self.slope_posterior_), (self.threshold_gp_,
                                                       self.threshold_posterior_) = processes
+            # processes fitted at shipped hyperparameters (fit_gaussian_process), for provenance
+            self.kernels_reused_ = sum(gp.optimizer is None for gp, _ in processes)
             self._calibrate_std(X, y, v, zs, first, groups, fitted)
         self.n_muscles_ = int(muscles.size)
         return self

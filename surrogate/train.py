@@ -20,6 +20,7 @@ from mkm.core.durations import timed
 from mkm.core.home import user_cache
 from mkm.core.records import file_sha256, package_file, provenance
 from mkm.surrogate.coverage import coverage
+from mkm.surrogate.gp import KERNELS_FILE
 from mkm.surrogate.kinds import BEST, entry, make_estimator
 from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.quiet import quiet_fits
@@ -100,6 +101,12 @@ def train_surrogate(kind: str = "best", dataset=None, splits: int | None = None,
                                            "computed": shipped["provenance"]}
     metadata = {"kind_requested": kind, "random_state": random_state,
                 "dataset": data.summary(), "metrics": metrics, "trained": provenance()}
+    if getattr(estimator, "kernels_reused_", 0):
+        metadata["gp_kernels_from"] = {
+            "path": KERNELS_PATH.name, "sha256": file_sha256(KERNELS_PATH),
+            "processes": int(estimator.kernels_reused_),
+            "why": "the processes' hyperparameters optimised on these same points "
+                   "(tools/record_gp_kernels.py), fitted at them without the search"}
     if calibration is not None:
         # what the calibration reached on its own muscles (the errors are not normal: not 68 / 95 %)
         force, std = predict_with_std(estimator, calibration.X)
@@ -168,6 +175,7 @@ def _held_out(estimator, data, splits, post_fit, progress=None, only=None) -> di
 # (benchmarks/bench_held_out.py writes the file; tests/surrogate/test_held_out.py refits a split
 # and compares).
 HELD_OUT_FILE = package_file("mkm.surrogate", "data", "muscle_held_out.json")
+KERNELS_PATH = package_file("mkm.surrogate", "data", KERNELS_FILE)
 
 
 def held_out_key(kind: str, dataset, splits: int) -> str:
@@ -250,6 +258,7 @@ def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SP
 
     parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
              "versions": provenance()["versions"], "code": code_version(kind),
+             "gp_kernels": file_sha256(KERNELS_PATH) if KERNELS_PATH.is_file() else None,
              "std_sets": [file_sha256(p) for p in std_sets(BEST if kind == "best" else kind,
                                                            dataset) if p.is_file()]}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]

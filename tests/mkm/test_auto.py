@@ -409,8 +409,9 @@ def test_a_gap_the_calibration_holds_keeps_the_surrogate_out_too(table_path, tmp
 
 
 def test_a_surrogate_about_to_train_is_announced_first(monkeypatch):
-    """A first use outside the default's box trains the practical range's surrogate for
-    minutes: auto says so before it starts, with the promise of how long, and not once cached."""
+    """A first use outside the default's box trains the practical range's surrogate (a minute
+    where its kernels are not shipped): auto says so before it starts, with the promise of how
+    long, and not once cached."""
     import mkm.surrogate.train as train
     from mkm.auto import _announce_first_training
     from mkm.surrogate import kinds

@@ -50,10 +50,10 @@ def test_its_sets_cover_the_practical_range_and_never_share_a_muscle():
 def range_model():
     from mkm.surrogate.train import cached_model
 
-    return cached_model(kinds.RANGE)  # about 70 s of one core the first time
+    return cached_model(kinds.RANGE)  # seconds: fitted at its shipped kernels
 
 
-@pytest.mark.heavy
+@pytest.mark.slow
 def test_its_std_holds_on_muscles_nothing_saw(range_model):
     # 40 random muscles of the practical range (seed 20261224, tests/surrogate/data/
     # range_check.json) that neither the fit (seeds 20261220, 20261222, 20261227 and the box
@@ -72,7 +72,7 @@ def test_its_std_holds_on_muscles_nothing_saw(range_model):
     assert range_model.metadata["std_rescale"]["n_muscles"] == 458
 
 
-@pytest.mark.heavy
+@pytest.mark.slow
 def test_auto_answers_a_festo_class_muscle_with_it_within_tolerance(range_model):
     # A 10 mm muscle at 1-6 bar (DMSP-10 class): outside the default's box (D0 30-50 mm,
     # P 0-2.5 bar), inside the practical range. At 5 % the thick-wall form meets it through the
@@ -92,3 +92,10 @@ def test_auto_answers_a_festo_class_muscle_with_it_within_tolerance(range_model)
         error_pct = 100 * np.max(np.abs(pred.force_N - fine)) / np.max(fine)
         assert np.max(pred.extras["error_bound_pct"]) <= 100 * tolerance
         assert error_pct <= 100 * tolerance
+
+
+@pytest.mark.slow
+def test_it_is_fitted_at_the_shipped_kernels(range_model):
+    # seconds instead of a minute on first use: stale after a change of its dataset or of its
+    # processes' inputs (regenerate with tools/record_gp_kernels.py)
+    assert range_model.metadata["gp_kernels_from"]["processes"] == 2
