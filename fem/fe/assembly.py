@@ -14,6 +14,7 @@ The physics (which variables, which density) lives in :mod:`mkm.fem.fe.forms` an
 
 from __future__ import annotations
 
+import copy
 from functools import lru_cache
 
 import numpy as np
@@ -79,9 +80,20 @@ class Term:
         # work arrays of the element matrices, kept: a fresh array of a megabyte per assembly
         # costs its page faults again each time (the allocator returns freed memory to the
         # system), as much as the products themselves
+        self._work()
+
+    def _work(self) -> None:
+        e, q, a, i = self._Bt.shape
         self._wH = np.empty((e, q, a, a))
         self._X = np.empty((e, q, a, i))
         self._Ke = np.empty((e, i, i))
+
+    def fresh(self) -> Term:
+        """This term with work arrays of its own (the operators shared, read only): one per
+        muscle, so that muscles of one geometry assembling at once never share them."""
+        term = copy.copy(self)
+        term._work()
+        return term
 
     def values(self, y):
         """Variables at the quadrature points, shape (elements, points, variables), of the

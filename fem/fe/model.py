@@ -36,7 +36,7 @@ it); phase 2 holds the cap and ramps the pressure through the requested values.
 from __future__ import annotations
 
 from dataclasses import replace
-from functools import partial
+from functools import lru_cache, partial
 
 import numpy as np
 import scipy.sparse as sp
@@ -90,6 +90,24 @@ class HalfMuscle:
             raise ValueError(f"cap={cap!r} is invalid: expected 'clamped' or 'sliding'")
         check_sleeve(sleeve)
         check_gap(gap_mm, sleeve)
+        # the discretisation of a geometry (scikit-fem's bases: a quarter of a coarse sweep) is
+        # shared by every muscle of that geometry; the work arrays and solver state are this one's
+        self.__dict__.update(_discretised(float(D0_mm), float(t0_mm), float(L0_mm), mesh,
+                                          bool(braid), cap, sleeve, float(gap_mm)))
+        self.rubber, self.cavity = self.rubber.fresh(), self.cavity.fresh()
+        self.braid = self.braid.fresh() if braid else None
+        self.theta0_deg, self.material = theta0_deg, material
+        if braid:
+            self._membrane_N_per_mm = 3.0 * (material.C10_MPa + material.C01_MPa) * t0_mm
+        self._reactions: dict[tuple[float, bytes], float] = {}
+        self._last_rubber: tuple[np.ndarray, np.ndarray] | None = None
+        self._held_lu = OrderedLU(leading=self.n - 1)
+        self._free_lu = OrderedLU()
+
+    def _discretise(self, D0_mm, t0_mm, L0_mm, mesh: str, braid: bool, cap: str, sleeve: str,
+                    gap_mm: float) -> None:
+        """Mesh, bases, operators, dof maps and sparsity patterns of one geometry: what
+        :func:`_discretised` keeps (no material, no state)."""
         self.sleeve = sleeve
         self.Ri, self.Ro, self.H = D0_mm / 2.0, D0_mm / 2.0 + t0_mm, L0_mm / 2.0
         # the braid's rest radius: a gap puts it outside the tube (bonded braid only)
@@ -98,7 +116,6 @@ class HalfMuscle:
         self._constraint = (sliding_sleeve_length if sleeve == "sliding" else
                             partial(braid_inextensibility,
                                     braid_radius_mm=self.Rb if self.gap_mm else None))
-        self.theta0_deg, self.material = theta0_deg, material
         m = half_muscle_mesh(D0_mm, t0_mm, L0_mm, mesh)
         eu = ElementVector(ElementTriP2())
         ub = Basis(m, eu, intorder=INTORDER)
@@ -159,15 +176,12 @@ class HalfMuscle:
         self.braid = Term(*braid_term, red) if braid else None
         terms = [t for t in (self.rubber, self.cavity, self.braid) if t is not None]
         self.assembler = Assembler(terms, self.n)
-        self._reactions: dict[tuple[float, bytes], float] = {}
-        self._last_rubber: tuple[np.ndarray, np.ndarray] | None = None
         if braid:
             # tension-only braid (slack_nodes): a tension dof's constraint residual over its
             # weight int phi_i dA is the mean of g = l_f^2 - 1 ~ 2 x fibre strain around it;
             # the wall's membrane stiffness E t0 / 2 = 3 (C10 + C01) t0 [N/mm] turns that into
             # the tension it would take to hold it, which the active set compares with lambda
             self._tension_weight_mm2 = self._tension_rows(np.ones(Bb.shape[:2]))
-            self._membrane_N_per_mm = 3.0 * (material.C10_MPa + material.C01_MPa) * t0_mm
             rows, cols = self.assembler.entries()
             in_tension = ((rows >= self.tension_slice.start) & (rows < self.tension_slice.stop)
                           | (cols >= self.tension_slice.start) & (cols < self.tension_slice.stop))
@@ -182,8 +196,6 @@ class HalfMuscle:
         # the free path's (the pressure's column -dV/dy, dense along the inner surface, is
         # numbered last); the free tangent's pattern: K's without the cap column, plus dV's
         self._free_pattern()
-        self._held_lu = OrderedLU(leading=self.n - 1)
-        self._free_lu = OrderedLU()
 
     def rest_state(self) -> np.ndarray:
         """Reduced unknowns at rest: no displacement, no tension, and the wall pressure that
@@ -578,6 +590,17 @@ class HalfMuscle:
         if key not in self._reactions:
             self.assemble(y, pressure_MPa)
         return self._reactions[key]
+
+
+@lru_cache(maxsize=8)
+def _discretised(D0_mm: float, t0_mm: float, L0_mm: float, mesh: str, braid: bool, cap: str,
+                 sleeve: str, gap_mm: float) -> dict:
+    """The attributes :meth:`HalfMuscle._discretise` sets for one geometry, built once for the
+    muscles of that geometry (a fit varies the angle and the rubber, not the tube). Read only:
+    each :class:`HalfMuscle` takes fresh work arrays of its terms (:meth:`Term.fresh`)."""
+    bare = HalfMuscle.__new__(HalfMuscle)
+    bare._discretise(D0_mm, t0_mm, L0_mm, mesh, braid, cap, sleeve, gap_mm)
+    return dict(vars(bare))
 
 
 def check_sleeve(braid: str) -> str:
