@@ -293,3 +293,27 @@ def test_sliding_sleeve_differs_from_bonded_in_the_end_zone_only():
     model = Axisym(braid="sliding")
     assert model.calibration_key == "axisym-sliding" and model.params()["braid"] == "sliding"
     assert "braid" not in Axisym().params()  # the default keeps older records' keys
+
+
+def test_muscles_of_one_geometry_share_its_discretisation_not_their_work():
+    """A fit solves many muscles of one tube (angle and rubber vary): they share the mesh,
+    bases and operators, each assembles in work arrays of its own, so muscles of one geometry
+    solved at once in two threads (a Dask worker's) give the forces solved one after the
+    other."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    a = HalfMuscle(35.0, 3.0, 282.0, 30.0, SILASTIC_S, "coarse")
+    b = HalfMuscle(35.0, 3.0, 282.0, 36.0, SILASTIC_S, "coarse")
+    assert a.assembler is b.assembler and a.rubber.G is b.rubber.G
+    assert a.rubber._Ke is not b.rubber._Ke and a._held_lu is not b._held_lu
+    assert HalfMuscle(35.0, 3.1, 282.0, 30.0, SILASTIC_S, "coarse").rubber.G is not a.rubber.G
+    P = np.arange(0.5, 2.51, 0.5)
+    cases = [(theta0, material) for theta0 in (28.0, 33.0, 38.0)
+             for material in (SILASTIC_S, MooneyRivlin(0.1, 0.02))]
+    serial = [isometric_sweep(P, 35.0, 3.0, 0.1, theta0, mesh="coarse", material=material)
+              ["force_N"] for theta0, material in cases]
+    with ThreadPoolExecutor(2) as pool:
+        threaded = list(pool.map(lambda c: isometric_sweep(
+            P, 35.0, 3.0, 0.1, c[0], mesh="coarse", material=c[1])["force_N"], cases * 3))
+    for k, force in enumerate(threaded):
+        np.testing.assert_array_equal(force, serial[k % len(cases)])
