@@ -38,6 +38,7 @@ from threadpoolctl import threadpool_limits
 from mkm.core.records import jsonable, package_file, provenance
 from mkm.fem.limits import lock_eps
 from mkm.fem.thickwall import effective_eps_of_slope, effective_eps_of_threshold
+from mkm.surrogate.features import braid_slope_N_per_bar, thickwall_threshold_bar
 from mkm.surrogate.gp import fit_gaussian_process, posterior_mean_std
 from mkm.surrogate.muscle_gp import muscle_slopes
 from mkm.surrogate.muscle_predictor import process_inputs
@@ -114,18 +115,15 @@ def fit(data, target, lock_input, restarts):
 
 def errors_pct(fitted, data, target, lock_input):
     """Each muscle's largest |F - F_FE| over its sweep in % of its largest FE force."""
-    from mkm.surrogate.muscle_predictor import from_log_k
-
     z_mean, z_scale, slope, threshold = fitted
     muscles, _, _, v, z = muscles_of(data)
     columns = process_columns(v, z, z_mean, z_scale, data.inputs, lock_input)
     e_A, e_P = (shortening_of(v, posterior_mean_std(post, Z)[0], target)
                 for post, Z in zip((slope, threshold), columns, strict=True))
-    # from_log_k at log k = log(e / eps): the kind's slope and threshold of a shortening
-    with np.errstate(divide="ignore", invalid="ignore"):
-        A, _, Pstar, _ = from_log_k(v, np.log(e_A / v["eps"]), 0.0, np.log(e_P / v["eps"]), 0.0)
-    A, Pstar = np.where(v["eps"] > 0, A, from_log_k(v, 0.0, 0.0, 0.0, 0.0)[0]), np.nan_to_num(
-        Pstar)
+    # the kind's slope and threshold at these shortenings (a target may give a lengthening)
+    A = np.maximum(braid_slope_N_per_bar(v["D0_mm"], v["t0_mm"], e_A, v["theta0_deg"]), 0.0)
+    Pstar = np.maximum(np.nan_to_num(thickwall_threshold_bar(
+        v["D0_mm"], v["t0_mm"], e_P, v["theta0_deg"], v["C10_MPa"], v["C01_MPa"])), 0.0)
     out = []
     for k, m in enumerate(muscles):
         rows = data.groups == m
