@@ -82,6 +82,7 @@ def test_a_fresh_random_truth_is_found_and_predicts_a_held_out_run(muscle):
     assert all("heldout_err" in c for c in result.checks)
 
 
+@pytest.mark.slow  # three runs identified from the command line: seconds, out of the fast tier
 def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mkm_run):
     _, runs = muscle
     out = tmp_path / "identified"

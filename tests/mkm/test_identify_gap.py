@@ -46,6 +46,7 @@ def gapped(tmp_path_factory):
     return truth, [record(truth, eps, out, seed=k) for k, eps in enumerate((0.0, 0.122))]
 
 
+@pytest.mark.slow  # a gap, theta0 and the rubber fitted blind: seconds, out of the fast tier
 def test_a_simulated_gap_is_found_blind_from_two_eps(gapped, tmp_path):
     truth, runs = gapped
     result = identify(runs, params="theta0,rubber,gap,friction,creep", model="thickwall",
