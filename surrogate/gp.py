@@ -84,13 +84,18 @@ def kernel_key(Z, y, random_state: int, restarts: int) -> str:
     return digest.hexdigest()
 
 
+def kernels_path():
+    """Where :data:`KERNELS_FILE` is installed."""
+    from mkm.core.records import package_file
+
+    return package_file("mkm.surrogate", "data", KERNELS_FILE)
+
+
 @functools.cache
 def shipped_kernels() -> dict[str, list[float]]:
     """Key (:func:`kernel_key`) -> optimised log-hyperparameters (``kernel_.theta``), as
     shipped in :data:`KERNELS_FILE` (empty without it)."""
-    from mkm.core.records import package_file
-
-    path = package_file("mkm.surrogate", "data", KERNELS_FILE)
+    path = kernels_path()
     if not path.is_file():
         return {}
     return dict(json.loads(path.read_text(encoding="utf-8"))["kernels"])

@@ -20,7 +20,7 @@ from mkm.core.durations import timed
 from mkm.core.home import user_cache
 from mkm.core.records import file_sha256, package_file, provenance
 from mkm.surrogate.coverage import coverage
-from mkm.surrogate.gp import KERNELS_FILE
+from mkm.surrogate.gp import kernels_path
 from mkm.surrogate.kinds import BEST, entry, make_estimator
 from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.quiet import quiet_fits
@@ -175,7 +175,7 @@ def _held_out(estimator, data, splits, post_fit, progress=None, only=None) -> di
 # (benchmarks/bench_held_out.py writes the file; tests/surrogate/test_held_out.py refits a split
 # and compares).
 HELD_OUT_FILE = package_file("mkm.surrogate", "data", "muscle_held_out.json")
-KERNELS_PATH = package_file("mkm.surrogate", "data", KERNELS_FILE)
+KERNELS_PATH = kernels_path()
 
 
 def held_out_key(kind: str, dataset, splits: int) -> str:
