@@ -79,8 +79,14 @@ def kernel_key(Z, y, random_state: int, restarts: int) -> str:
         values = np.asarray(values, dtype=float)
         digest.update(repr(values.shape).encode())
         digest.update(np.char.mod(f"%.{KEY_DIGITS - 1}e", values.ravel()).tobytes())
+    # the kernel by its parameters' values (bounds, nu, starting values), not by its repr,
+    # whose layout is scikit-learn's to change
     kernel = gaussian_process(np.shape(Z)[1], random_state, restarts).kernel
-    digest.update(f"{kernel!r} restarts={restarts} random_state={random_state}".encode())
+    settings = {name: np.asarray(value).tolist()
+                for name, value in kernel.get_params(deep=True).items()
+                if not hasattr(value, "get_params")}
+    digest.update(json.dumps({"kernel": settings, "restarts": restarts,
+                              "random_state": random_state}, sort_keys=True).encode())
     return digest.hexdigest()
 
 
