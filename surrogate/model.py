@@ -18,8 +18,10 @@ import numpy as np
 from threadpoolctl import ThreadpoolController
 
 from mkm.fem.interface import INPUTS, Domain, ForceModel
+from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import L0_MM
+from mkm.surrogate.kinds import RANGE
 from mkm.surrogate.training_data import PARAMETERS
 
 if TYPE_CHECKING:
@@ -235,6 +237,22 @@ class SurrogateForceModel(ForceModel):
                 out.append(f"{name}={value:g} not in [{lo:g}, {hi:g}]")
         return out
 
+    def _range_hint(self, P, D0, t0, eps, parameters) -> str:
+        """Where every point lies in the practical range and this is not the range's kind: the
+        spec that answers there (empty otherwise)."""
+        if self.kind == RANGE:
+            return ""
+        P, D0, t0, eps = (a.ravel() for a in np.broadcast_arrays(
+            *(np.asarray(a, dtype=float) for a in (P, D0, t0, eps))))
+        fixed = {name: parameters.get(name) for name in PARAMETERS}
+        if (not np.all(np.isfinite(P))
+                or any(PRACTICAL_RANGE.violations(pressure_bar=p) for p in (P.min(), P.max()))
+                or any(PRACTICAL_RANGE.violations(D0_mm=d, t0_mm=t, eps=e, **fixed)
+                       for d, t, e in set(zip(D0, t0, eps, strict=True)))):
+            return ""
+        return (f"; these points lie in the practical range, where the spec "
+                f"surrogate:kind={RANGE} (or auto) answers")
+
     def _forces(self, P, D0, t0, eps):
         parameters = self.parameters  # refuses a recorded parameter at another value
         inside = self.domain.contains(P, D0, t0, eps)
@@ -245,7 +263,8 @@ class SurrogateForceModel(ForceModel):
             n_out = int((~inside).sum())
             why = "; ".join(outside) if outside else _describe(self.domain)
             warnings.warn(f"{n_out} of {inside.size} points lie outside the training domain "
-                          f"({why}): flagged valid=False, in_domain=False",
+                          f"({why}): flagged valid=False, in_domain=False"
+                          + self._range_hint(P, D0, t0, eps, parameters),
                           OutOfDomainWarning, stacklevel=3)
         columns = [np.ravel(a) for a in (P, D0, t0, eps)]
         columns += [np.full(P.size, parameters[n]) for n in self.inputs[len(INPUTS):]]

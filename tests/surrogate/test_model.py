@@ -128,3 +128,16 @@ def test_parameter_outside_the_box_flags_every_point(design_model, parameter, va
                                                 "in"):
         prediction = local.predict([0.5, 1.0, 2.0], 40.0, 3.0, 0.1)
     assert not prediction.valid.any() and not prediction.extras["in_domain"].any()
+
+
+@pytest.mark.slow  # trains the design's GP
+def test_outside_its_box_inside_the_practical_range_it_names_the_spec_that_answers(design_model):
+    # a 10 mm muscle at 6 bar: outside the default's box, inside the practical range
+    with pytest.warns(OutOfDomainWarning, match=r"practical range, where the spec "
+                                                r"surrogate:kind=muscle-gp-range \(or auto\)"):
+        design_model.with_parameters(L0_mm=250.0, theta0_deg=25.0).predict(
+            [2.0, 6.0], 10.0, 1.0, 0.05)
+    # 1.5 m long: outside the practical range too (L0 50-1000 mm), so no spec is named
+    with pytest.warns(OutOfDomainWarning) as record:
+        design_model.with_parameters(L0_mm=1500.0).predict([0.5, 1.0], 40.0, 3.0, 0.1)
+    assert "practical range" not in str(record[0].message)
