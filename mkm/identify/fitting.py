@@ -187,10 +187,12 @@ class ModelStatic(StaticSource):
 class SurrogateStatic(StaticSource):
     """The surrogate, tabulated every :data:`TABLE_STEP_BAR` over each run's pressures."""
 
-    name = "surrogate"
-
     def __init__(self, surrogate):
+        from mkm.surrogate.kinds import BEST
+
         self.surrogate = surrogate
+        kind = getattr(surrogate, "kind", BEST)
+        self.name = "surrogate" if kind == BEST else f"surrogate:kind={kind}"
         box = surrogate.box
         self.box = {"theta0_deg": box["theta0_deg"],
                     "rubber_scale": (max(box["C10_MPa"][0] / SILASTIC_S.C10_MPa,

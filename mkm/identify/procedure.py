@@ -1,8 +1,8 @@
 """``identify``: from bench runs of one muscle to its parameters, intervals and held-out check.
 
-1. Search with the fast surrogate (its box spans theta0 28-38 deg and the rubber x0.5-1.5);
-   where it does not cover the muscle or the optimum lies on its edge, search with the FE model
-   instead and say so.
+1. Search with the fast surrogate (the default's box spans theta0 28-38 deg and the rubber
+   x0.5-1.5; outside it, the practical range's); where neither covers the muscle or the optimum
+   lies on the box's edge, search with the FE model instead and say so.
 2. Model selection: friction and creep are fitted with and without each term; the terms the
    Bayesian information criterion (BIC) of the hold residuals does not warrant are dropped.
 3. Confirm with the FE model (one sweep per run at the optimum): the surrogate is corrected by
@@ -87,7 +87,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
     search : {"surrogate", "model"}
         Search with the surrogate (default), or with ``model`` itself (a closed form is fast).
     surrogate : SurrogateForceModel, optional
-        The surrogate to search with (default: :func:`mkm.surrogate.default_model`).
+        The surrogate to search with (default: the default surrogate, or outside its box the
+        practical range's, :data:`mkm.surrogate.kinds.RANGE`).
     seed : int
         Seed of the bootstrap.
     notify : callable
@@ -161,6 +162,35 @@ def _with_braid(model: str, braid: str) -> str:
     return spec.with_params(braid=braid).text
 
 
+def _covering_surrogate(runs, surrogate, notify) -> tuple[SurrogateStatic | None, str | None]:
+    """The surrogate to search with and a note: ``surrogate`` when given; else the default
+    surrogate where its box covers the runs' muscle, the practical range's
+    (:data:`mkm.surrogate.kinds.RANGE`) where only its box does; None (search with the FE
+    model) where neither does."""
+    from mkm.core.durations import estimate
+    from mkm.surrogate.kinds import BEST, RANGE
+    from mkm.surrogate.train import cached_model, is_cached, kind_files, training_task
+
+    def load(kind):
+        notify(f"loading the surrogate {kind}" if is_cached(kind) else
+               f"training the surrogate {kind} on first use, "
+               f"{estimate(training_task(kind, kind_files(kind)[0]))}")
+        return cached_model(kind)
+
+    first_outside = None
+    for candidate in ([surrogate] if surrogate is not None else [BEST, RANGE]):
+        source = SurrogateStatic(load(candidate) if isinstance(candidate, str) else candidate)
+        outside = source.outside(runs)
+        if not outside:
+            return source, (None if first_outside is None else
+                            f"the default surrogate's box does not cover this muscle ("
+                            f"{'; '.join(first_outside)}): searched with {source.name}, the "
+                            "practical range's")
+        first_outside = first_outside or outside
+    return None, ("the surrogate's box does not cover this muscle (" + "; ".join(first_outside)
+                  + "): searched with the FE model instead")
+
+
 def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration,
               braid=None):
     L0_mm = float(runs[0].muscle["L0_mm"])
@@ -172,20 +202,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if search == "surrogate" and "gap_mm" in names:
         notes.append(f"the surrogate has no gap between tube and braid: searched with {fe.name}")
     elif search == "surrogate":
-        if surrogate is None:
-            from mkm.core.durations import estimate
-            from mkm.surrogate import default_model
-            from mkm.surrogate.train import is_cached, training_task
-
-            notify("loading the surrogate" if is_cached("best") else
-                   f"training the surrogate on first use, {estimate(training_task('best'))}")
-            surrogate = default_model()
-        source = SurrogateStatic(surrogate)
-        outside = source.outside(runs)
-        if outside:
-            notes.append("the surrogate's box does not cover this muscle ("
-                         + "; ".join(outside) + "): searched with the FE model instead")
-            source = fe
+        found, note = _covering_surrogate(runs, surrogate, notify)
+        notes += [note] if note else []
+        source = fe if found is None else found
     declared = {n: float(runs[0].muscle[n]) for n in fitting.GEOMETRY}
     start = {**nominal, **{n: TERM_START.get(n, nominal.get(n, declared.get(n, 0.0)))
                            for n in names}}
