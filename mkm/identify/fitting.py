@@ -28,6 +28,7 @@ from scipy.optimize import least_squares
 
 from mkm.fem.friction import DEFAULTS as TERM_DEFAULTS
 from mkm.fem.friction import force_history
+from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.materials import SILASTIC_S
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
@@ -52,8 +53,11 @@ GEOMETRY_FACTORS = {"t0_mm": (0.5, 1.5), "D0_mm": (0.8, 1.2)}
 SCALE_MARGIN = 0.02
 #: Silastic S's share of C01 in C10 + C01 (the rubber's assumed ratio)
 SILASTIC_C01_FRACTION = SILASTIC_S.C01_MPa / (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
-#: the FE model's search box where the surrogate's does not apply
-FE_BOX = {"theta0_deg": (15.0, 50.0), "rubber_scale": (0.2, 5.0), "gap_mm": (0.0, 5.0)}
+#: the FE model's search box where the surrogate's does not apply: the rubber up to the
+#: practical range's stiffest (C10 0.6 MPa, natural rubber and chloroprene) at Silastic's ratio
+FE_BOX = {"theta0_deg": (15.0, 50.0),
+          "rubber_scale": (0.2, PRACTICAL_RANGE.C10_MPa[1] / SILASTIC_S.C10_MPa),
+          "gap_mm": (0.0, 5.0)}
 #: grid of the surrogate's static table [bar] (the simulated bench tabulates at 0.05 bar too)
 TABLE_STEP_BAR = 0.05
 #: one residual scale for every parameter (least_squares' x_scale)

@@ -278,32 +278,53 @@ def test_the_whole_path_on_the_fe_bench(tmp_path, mkm_run):
     assert (tmp_path / "report" / "identified_run2.png").is_file()
 
 
-@pytest.mark.slow  # FE bench, the practical range's surrogate, FE confirmation
-def test_a_festo_class_muscle_is_searched_with_the_practical_range_surrogate(tmp_path):
-    """A 10 mm muscle with a stiff membrane at up to 6 bar, outside the default surrogate's box:
-    the practical range's surrogate searches (not the FE model) and the FE confirms."""
-    rng = np.random.default_rng(SEED + 2)
-    truth = {"theta0_deg": rng.uniform(22.0, 30.0), "rubber_scale": rng.uniform(3.0, 6.0)}
+def _festo_class_runs(truth: dict, out, model: str) -> list:
+    """Blind runs of a 10 mm muscle (wall 1.5 mm, 250 mm) at eps 0.06 and 0.18, 0.5-6 bar,
+    simulated with ``model`` at the angle and rubber scale of ``truth``."""
     runs = []
     for k, eps in enumerate((0.06, 0.18)):
         config = load_config(eps=eps).replace(
             muscle={"D0_mm": 10.0, "t0_mm": 1.5, "L0_mm": 250.0},
             regulator={"max_pressure_bar": 6.0, "full_scale_bar": 10.0},
             sequence={"pressures_bar": tuple(np.arange(1, 13) / 2), "preconditioning_cycles": 0},
-            sim={"model": "axisym", "fe_mesh": "coarse", "seed": k, "hysteresis_fraction": 0.0,
+            sim={"model": model, "fe_mesh": "coarse", "seed": k, "hysteresis_fraction": 0.0,
                  "creep_fraction": 0.0, "truth": {
                      "theta0_deg": truth["theta0_deg"],
                      "C10_MPa": truth["rubber_scale"] * SILASTIC_S.C10_MPa,
                      "C01_MPa": truth["rubber_scale"] * SILASTIC_S.C01_MPa}})
-        run = acquire(config, out_root=tmp_path, notify=lambda message: None).path
+        run = acquire(config, out_root=out, notify=lambda message: None).path
         remove_simulator_settings(run)
         runs.append(run)
+    return runs
+
+
+@pytest.mark.slow  # FE bench, the practical range's surrogate, FE confirmation
+def test_a_festo_class_muscle_is_searched_with_the_practical_range_surrogate(tmp_path):
+    """A 10 mm muscle with a stiff membrane at up to 6 bar, outside the default surrogate's box:
+    the practical range's surrogate searches (not the FE model) and the FE confirms."""
+    rng = np.random.default_rng(SEED + 2)
+    truth = {"theta0_deg": rng.uniform(22.0, 30.0), "rubber_scale": rng.uniform(3.0, 6.0)}
+    runs = _festo_class_runs(truth, tmp_path, "axisym")
     result = identify(runs, params="theta0,rubber", model="axisym:mesh=coarse")
     why = f"seed {SEED + 2}, truth {truth}, notes {result.notes}"
     assert result.searched_with == "surrogate:kind=muscle-gp-range", why
     assert any("default surrogate's box does not cover this muscle (D0_mm=10 not in [30, 50]"
                in n and "searched with surrogate:kind=muscle-gp-range" in n
                for n in result.notes), why
+    assert result.fit.values["theta0_deg"] == pytest.approx(truth["theta0_deg"], abs=0.3), why
+    assert result.fit.values["rubber_scale"] == pytest.approx(truth["rubber_scale"],
+                                                              rel=0.1), why
+
+
+def test_the_model_search_reaches_the_stiffest_rubber_of_the_practical_range(tmp_path):
+    """Natural rubber or chloroprene (C10 about 0.5 MPa, 7-8 x Silastic S) searched with the
+    model itself: found, not stopped at the edge of the search box."""
+    rng = np.random.default_rng(SEED + 3)
+    truth = {"theta0_deg": rng.uniform(22.0, 30.0), "rubber_scale": rng.uniform(7.0, 8.0)}
+    runs = _festo_class_runs(truth, tmp_path, "thickwall")
+    result = identify(runs, params="theta0,rubber", model="thickwall", search="model")
+    why = f"seed {SEED + 3}, truth {truth}, notes {result.notes}"
+    assert not result.fit.at_edge, why
     assert result.fit.values["theta0_deg"] == pytest.approx(truth["theta0_deg"], abs=0.3), why
     assert result.fit.values["rubber_scale"] == pytest.approx(truth["rubber_scale"],
                                                               rel=0.1), why
