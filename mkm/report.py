@@ -37,6 +37,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from mkm.auto import RANGE_SPEC
 from mkm.core.records import (
     provenance,
     read_prediction_header,
@@ -75,7 +76,8 @@ from mkm.scoring import evaluation_pressures, predict_steps, score_run, summaris
 from mkm.uncertainty import force_band, with_band
 from mkm.verdict import AutoPick, format_seconds, model_label, recommend, verdict
 
-DEFAULT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
+SURROGATE = "surrogate"
+DEFAULT_MODELS = ("eq2", "thickwall", "axisym", SURROGATE)
 
 
 @dataclass
@@ -91,6 +93,8 @@ class _Run:
     summary: list[dict] = field(default_factory=list)
     keys: list[str] = field(default_factory=list)
     auto_choices: dict = field(default_factory=dict)  # tolerance -> AutoPick or None
+    #: spec text -> the spec whose model answered in its place (:func:`_score`)
+    in_place: dict = field(default_factory=dict)
 
     @property
     def name(self) -> str:
@@ -200,6 +204,11 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
     for k, run_dir in enumerate(run_dirs, start=1):
         runs.append(_score(_Run(k, load_run(run_dir), specs, calibration), cache_dir, prov, bar,
                            models))
+    in_place = [r.k for r in runs if SURROGATE in r.in_place]
+    if in_place:
+        warnings.warn(f"run{'s' if len(in_place) > 1 else ''} {', '.join(map(str, in_place))}: "
+                      f"the default surrogate's box does not cover the muscle; the practical "
+                      f"range's ({RANGE_SPEC}) is scored as {SURROGATE!r}", stacklevel=2)
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
     spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
@@ -243,14 +252,24 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     frames = []
     built_for = tuple(sorted(muscle.model_parameters().items()))
     for spec in r.specs:
-        if (spec, built_for) not in models:  # a surrogate loads in about a second: once will do
-            training = _announce_training(spec, bar)
-            models[spec, built_for] = spec.build(r.calibration, muscle)
-            if training:  # its own estimate was given: the tasks' time left leaves it out
-                bar.unpause()
-        model = models[spec, built_for]
+        built = spec
+        model = _model(models, spec, built_for, r, bar)
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
-        pred = _with_band(pred, model, spec, r, cache_dir)
+        if spec.text == SURROGATE and not pred.valid.any():
+            # outside the default's box: the practical range's surrogate answers in its place
+            # where it covers the muscle, under the same name (as auto's reference does)
+            wider = parse_spec(RANGE_SPEC)
+            try:
+                candidate = _model(models, wider, built_for, r, bar)
+            except ValueError:  # a muscle parameter it was not trained on either
+                candidate = None
+            if candidate is not None:
+                answer = predict_steps(candidate, steps, muscle, cache_dir,
+                                       _pressure_tolerance(meta))
+                if answer[0].valid.all():
+                    built, model, (pred, cached) = wider, candidate, answer
+                    r.in_place[spec.text] = wider.text
+        pred = _with_band(pred, model, built, r, cache_dir)
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
@@ -260,6 +279,17 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
     return r
+
+
+def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):
+    """``spec``'s model of the run's muscle, built once per report (a surrogate loads in about
+    a second: once will do)."""
+    if (spec, built_for) not in models:
+        training = _announce_training(spec, bar)
+        models[spec, built_for] = spec.build(r.calibration, r.muscle)
+        if training:  # its own estimate was given: the tasks' time left leaves it out
+            bar.unpause()
+    return models[spec, built_for]
 
 
 def _with_band(pred, model, spec: Spec, r: _Run, cache_dir):
@@ -723,10 +753,12 @@ def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
     label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
     choice = _auto_choice(r, tolerance) if tolerance and r.summary else None
     best, _ = recommend(r.summary, tolerance)
-    same = bool(choice and best and _same_model(choice.spec, best["model"]))
+    same = bool(choice and best and _same_model(choice.spec,
+                                                r.in_place.get(best["model"], best["model"])))
     by_name = {names[s.text]: s for s in r.specs}
     if choice is not None and choice.name not in by_name:  # auto's pick is a report model
-        match = next((s for s in r.specs if _same_model(choice.spec, s.text)), None)
+        match = next((s for s in r.specs
+                      if _same_model(choice.spec, r.in_place.get(s.text, s.text))), None)
         if match is not None:
             choice = AutoPick(choice.spec, names[match.text], choice.bound_pct,
                               choice.explanation)

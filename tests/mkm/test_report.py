@@ -413,3 +413,25 @@ def test_default_models_leave_out_what_an_identified_calibration_cannot_serve(tm
     assert "no calibrated theta0 for model 'axisym'" in str(notes[0].message)
     assert make_model("thickwall", Calibration.load(lab)).params()["gap_mm"] == 0.8
     assert [s.text for s in default_models(None)] == list(DEFAULT_MODELS)
+
+
+@pytest.mark.slow  # the default and the practical range's surrogates
+def test_a_festo_class_muscle_gets_the_practical_range_surrogate_as_surrogate(tmp_path):
+    """A 10 mm muscle at up to 6 bar lies outside the default surrogate's box: the practical
+    range's answers as ``surrogate``, scored at every step, said once and in the provenance."""
+    config = load_config(eps=0.1).replace(
+        muscle={"D0_mm": 10.0, "t0_mm": 1.5, "L0_mm": 250.0},
+        regulator={"max_pressure_bar": 6.0, "full_scale_bar": 10.0},
+        sequence={"pressures_bar": (1.0, 3.0, 6.0), "preconditioning_cycles": 0,
+                  "down_sweep": False},
+        sim={"model": "thickwall"})
+    run = acquire(config, out_root=tmp_path).path
+    with pytest.warns(UserWarning, match=r"run 1: the default surrogate's box does not cover "
+                                         r"the muscle; the practical range's \(surrogate:kind="
+                                         r"muscle-gp-range\) is scored as 'surrogate'"):
+        path = build_report([run], parse_models("thickwall,surrogate"), out_dir=tmp_path / "r",
+                            cache_dir=None, tolerance=None, surrogate_section=False)
+    summary = pd.read_csv(path.parent / "summary.csv").set_index("model")
+    assert summary.loc["surrogate", "valid_points"] == summary.loc["thickwall", "valid_points"] > 0
+    provenance = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
+    assert provenance["model-surrogate"]["model"] == "surrogate-muscle-gp-range"
