@@ -37,7 +37,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.auto import RANGE_SPEC
+from mkm.auto import RANGE_SPEC, REFERENCE_SPEC
 from mkm.core.records import (
     provenance,
     read_prediction_header,
@@ -76,8 +76,7 @@ from mkm.scoring import evaluation_pressures, predict_steps, score_run, summaris
 from mkm.uncertainty import force_band, with_band
 from mkm.verdict import AutoPick, format_seconds, model_label, recommend, verdict
 
-SURROGATE = "surrogate"
-DEFAULT_MODELS = ("eq2", "thickwall", "axisym", SURROGATE)
+DEFAULT_MODELS = ("eq2", "thickwall", "axisym", REFERENCE_SPEC)
 
 
 @dataclass
@@ -204,11 +203,11 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
     for k, run_dir in enumerate(run_dirs, start=1):
         runs.append(_score(_Run(k, load_run(run_dir), specs, calibration), cache_dir, prov, bar,
                            models))
-    in_place = [r.k for r in runs if SURROGATE in r.in_place]
+    in_place = [r.k for r in runs if REFERENCE_SPEC in r.in_place]
     if in_place:
         warnings.warn(f"run{'s' if len(in_place) > 1 else ''} {', '.join(map(str, in_place))}: "
                       f"the default surrogate's box does not cover the muscle; the practical "
-                      f"range's ({RANGE_SPEC}) is scored as {SURROGATE!r}", stacklevel=2)
+                      f"range's ({RANGE_SPEC}) is scored as {REFERENCE_SPEC!r}", stacklevel=2)
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
     spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
@@ -255,7 +254,7 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         built = spec
         model = _model(models, spec, built_for, r, bar)
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
-        if spec.text == SURROGATE and not pred.valid.any():
+        if spec.text == REFERENCE_SPEC and not pred.valid.any():
             # outside the default's box: the practical range's surrogate answers in its place
             # where it covers the muscle, under the same name (as auto's reference does)
             wider = parse_spec(RANGE_SPEC)

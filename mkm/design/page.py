@@ -180,7 +180,7 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
     parts = [
         f"<p>Generated {esc(software['date_utc'])} by <code>{esc(software['command'])}</code>. "
         f"Objective: <b>{esc(s.objective)}</b>. The "
-        f"{'FE model (' + FE_SEARCH_MESH + ' mesh)' if s.fe_search else 'surrogate'} searched "
+        f"{'FE model (' + FE_SEARCH_MESH + ' mesh)' if s.fe_search else esc(s.searcher)} searched "
         f"the box {esc(box_text(s.box))}; the FE model "
         "(axisym, " + esc(result.mesh) + " mesh) verified the best designs: a design meets "
         "the requirements only when the FE says so, and every margin below is the FE's.</p>",
@@ -219,13 +219,17 @@ def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) ->
     d = model.domain
     D0, t0 = np.meshgrid(np.linspace(*d.D0_mm, n_D0), np.linspace(*d.t0_mm, n_t0))
     out = {"D0": D0, "t0": t0, "force": [], "margin": []}
-    feasible = np.ones(D0.shape, dtype=bool)
+    # a box as wide as the practical range's holds walls thicker than the tube's radius: no tube
+    wall = t0 < D0 / 2
+    feasible = wall.copy()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         for r in s.requirements:
-            pred = model.predict(r.pressure_bar, D0, t0, r.eps)
-            u, _ = surrogate_uncertainty(model, pred, r.force_N)
-            f = np.where(pred.valid, pred.force_N, np.nan)
+            pred = model.predict(r.pressure_bar, D0[wall], t0[wall], r.eps)
+            margin, _ = surrogate_uncertainty(model, pred, r.force_N)
+            f, u = np.full(D0.shape, np.nan), np.full(D0.shape, np.nan)
+            f[wall] = np.where(pred.valid, pred.force_N, np.nan)
+            u[wall] = margin
             feasible &= np.nan_to_num(f - u, nan=-np.inf) >= r.force_N
             out["force"].append(f)
             out["margin"].append(u)

@@ -68,10 +68,10 @@ class DesignResult:
         s = self.search
         cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
         ok = int(self.designs["meets_all"].sum())
-        text = (f"{s.fe_search}; " if s.fe_search else "") + (
+        text = "".join(f"{why}; " for why in (s.fe_search, s.searcher_note) if why) + (
                 f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
                 f"{int(s.candidates['feasible'].sum())} feasible by the "
-                f"{'FE search' if s.fe_search else 'surrogate'}; "
+                f"{'FE search' if s.fe_search else s.searcher}; "
                 f"{len(self.designs)} verified by the FE (axisym, {self.mesh} mesh) in "
                 f"{self.fe_seconds:.1f} s{cached}, {ok} meet{'s' if ok == 1 else ''} every "
                 "requirement")
@@ -229,7 +229,8 @@ def design_record(result: DesignResult) -> dict:
             "surrogate_uncertainty": s.uncertainty,
             "search": {"candidates": len(s.candidates),
                        "feasible": int(s.candidates["feasible"].sum()),
-                       "searcher": (f"FE ({s.fe_search})" if s.fe_search else "surrogate"),
+                       "searcher": (f"FE ({s.fe_search})" if s.fe_search else s.searcher),
+                       "searcher_note": s.searcher_note,
                        "box": s.box, "surrogate_box": s.surrogate_box,
                        # "" when the box searched is the surrogate's
                        "box_note": s.box_note(),

@@ -10,6 +10,7 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 
+from mkm.auto import RANGE_SPEC, REFERENCE_SPEC
 from mkm.design.robust import describe, requirement_margin
 from mkm.design.spec import (
     DEFAULT_RUBBER,
@@ -112,6 +113,9 @@ class Search:
     models: dict = field(default_factory=dict)  # (L0, theta0, rubber) -> surrogate
     #: why the FE model searched instead of the surrogate ("" when the surrogate did)
     fe_search: str = ""
+    #: the spec of the surrogate that searched, and why when it is not the one asked for
+    searcher: str = "surrogate"
+    searcher_note: str = ""
     #: the default braid angle's and the ``calibrated`` rubber's (None: the shipped one)
     calibration: Calibration | None = None
     #: the surrogate's training box of the geometry, ``{"D0_mm": [low, high], "t0_mm": ...}``
@@ -245,11 +249,21 @@ def search(requirements, constraints: Constraints | dict | None = None,
                          "(surrogate, surrogate:kind=gp, surrogate:path=DIR)")
     base = _build(spec.text, calibration)
     domain = base.domain
+    parameter_box = getattr(base, "box", {})
+    outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration)
+    searcher_note = ""
+    if outside and spec.text == REFERENCE_SPEC:
+        # the practical range's surrogate searches where it covers what the default's box does not
+        wider = parse_spec(RANGE_SPEC)
+        wide = _build(wider.text, calibration)
+        if not _outside_surrogate(requirements, constraints, wide.domain,
+                                  getattr(wide, "box", {}), calibration):
+            searcher_note = (f"outside the default surrogate's training box ("
+                             f"{'; '.join(outside)}): the practical range's surrogate searched")
+            spec, base, domain, outside = wider, wide, wide.domain, []
     at = _predicts_at(base, calibration)
     # the FE model's, as verified
     theta0_default = float(calibrated("axisym", calibration)["theta0_deg"])
-    parameter_box = getattr(base, "box", {})
-    outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration)
     gap = constraints.gap_mm or 0.0
     # the surrogate has no gap: the FE model, which takes it, searches (in the surrogate's box)
     unmodelled = [f"gap_mm={gap:g}, which the surrogate does not model"] if gap else []
@@ -303,7 +317,8 @@ def search(requirements, constraints: Constraints | dict | None = None,
     cand = _rank(cand, objective)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
-                    fe_search, calibration, surrogate_box, box_origin, gap)
+                    fe_search, spec.text, searcher_note, calibration, surrogate_box, box_origin,
+                    gap)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result

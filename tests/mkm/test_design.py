@@ -25,6 +25,7 @@ from mkm.design.search import box_edges
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
 from mkm.fem.ladder import make_model
+from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, outer_diameter_mm
 from mkm.html import esc
 from mkm.registry import entry
@@ -34,9 +35,9 @@ MESH = "coarse"
 pytestmark = pytest.mark.slow
 
 
-def fe_force(D0, t0, pressure_bar, eps, theta0_deg):
-    return float(Axisym(theta0_deg=theta0_deg, mesh=MESH).predict(pressure_bar, D0, t0,
-                                                                  eps).force_N)
+def fe_force(D0, t0, pressure_bar, eps, theta0_deg, L0_mm=L0_MM):
+    return float(Axisym(theta0_deg=theta0_deg, L0_mm=L0_mm, mesh=MESH).predict(
+        pressure_bar, D0, t0, eps).force_N)
 
 
 
@@ -252,10 +253,11 @@ def test_braid_angle_range_searched_and_verified_at_the_chosen_angle():
 
 
 def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run):
-    # 3 bar is above the surrogate's 2.5 bar; a narrow box keeps the FE search to a few sweeps
+    # 3 bar is above the surrogate's 2.5 bar; a narrow box keeps the FE search to a few sweeps;
+    # the kind named, the practical range's does not search in its place
     code, out, err = mkm_run(["design", "--require", "500N@3bar,eps=0.1", "--D0", "28:34",
                               "--t0", "1.5:3", "--mesh", MESH, "--top", "1", "--no-progress",
-                              "--out", str(tmp_path)])
+                              "--surrogate", "surrogate:kind=muscle-gp", "--out", str(tmp_path)])
     assert code == 0, err
     assert "3 bar beyond 0:2.5 bar): the FE model (coarse mesh) searched instead" in err
     table = pd.read_csv(tmp_path / "designs.csv")
@@ -279,6 +281,25 @@ def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run
     assert len(record["chosen_on_box_edge"]) == sum(ends)
     assert ("mkm design: the chosen design sits on the edge of the search box D0 28:34 mm x "
             "t0 1.5:3 mm: " in err) == any(ends)
+
+
+@pytest.mark.slow  # the practical range's surrogate
+def test_a_festo_class_requirement_is_searched_with_the_practical_range_surrogate(tmp_path,
+                                                                                  mkm_run):
+    # 6 bar and a 10 mm tube: outside the default surrogate's box, inside the practical range
+    code, out, err = mkm_run(["design", "--require", "300N@6bar,eps=0.1", "--D0", "8:14",
+                              "--t0", "1:2", "--L0", "250", "--theta0", "25", "--mesh", MESH,
+                              "--top", "2", "--no-progress", "--out", str(tmp_path)])
+    assert code == 0, err
+    assert ("outside the default surrogate's training box (D0_mm=8:14 beyond 30:50; t0_mm=1:2 "
+            "beyond 2:4; theta0_deg=25 beyond 28:38; 6 bar beyond 0:2.5 bar): the practical "
+            "range's surrogate searched" in err)
+    record = json.loads((tmp_path / "designs.json").read_text())
+    assert record["search"]["searcher"] == "surrogate:kind=muscle-gp-range"
+    best = pd.read_csv(tmp_path / "designs.csv").iloc[0]
+    assert best["meets_all"] and best["r1_fe_N"] >= 300.0  # the FE's verdict, at 6 bar
+    assert fe_force(best["D0_mm"], best["t0_mm"], 6.0, 0.1, 25.0, L0_mm=250.0) == \
+        pytest.approx(best["r1_fe_N"], rel=1e-5)  # the CSV's 6 significant digits
 
 
 def test_the_search_box_is_named_where_it_is_not_the_surrogates():
