@@ -39,8 +39,10 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     """Replicates of the fitted parameters (internal names), their intervals and correlation.
 
     Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)}, "correlation":
-    array (p, p), "covariance": array (p, p), "identifiable": {name: bool}, "seed",
-    "replicates"}`` (the covariance is :func:`robust_covariance`'s). A parameter whose column of
+    array (p, p), "covariance": array (p, p), "identifiable": {name: bool}, "stretched":
+    [name], "seed", "replicates"}`` (the covariance is :func:`robust_covariance`'s; an interval
+    the replicates' 95 % range would give without its estimate is stretched to hold it, and
+    its name listed in ``stretched``). A parameter whose column of
     the Jacobian is (numerically) zero is not identifiable: the runs do not inform it, its
     interval is its whole bound and its variance a uniform's over it. ``sensitivity_tolerance``:
     the load cell's (a fraction, uniform); ``prior_sd``: a normal prior's standard deviation per
@@ -54,7 +56,8 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     if p == 0:
         return {"draws": np.zeros((replicates, 0)), "interval": {}, "correlation": np.zeros((0, 0)),
                 "covariance": np.zeros((0, 0)),
-                "identifiable": {}, "seed": seed, "replicates": replicates}
+                "identifiable": {}, "stretched": [], "seed": seed,
+                "replicates": replicates}
     column = np.sqrt(np.sum(J**2, axis=0))
     identifiable = column > 1e-9 * max(column.max(), 1e-300)
     use = np.flatnonzero(identifiable)
@@ -103,15 +106,21 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
         step = (np.linalg.pinv(A) @ g[..., None])[..., 0]
     draws[:, use] -= step
     low_q, high_q = 100 * (1 - LEVEL) / 2, 100 * (1 + LEVEL) / 2
-    interval = {}
+    interval, stretched = {}, []
     for i, name in enumerate(names):
         lo_b, hi_b = result.bounds[name]
         if not identifiable[i]:
             interval[name] = (lo_b, hi_b)
             continue
         column_draws = np.clip(draws[:, i], lo_b, hi_b)
-        interval[name] = (float(np.percentile(column_draws, low_q)),
-                          float(np.percentile(column_draws, high_q)))
+        low, high = (float(np.percentile(column_draws, q)) for q in (low_q, high_q))
+        # the replicates step from the optimum as if it were free: where a parameter rests on a
+        # bound the residuals still push against it, and the push moves the others' steps
+        # with it, so that their range can leave the estimate out; stretched, and said
+        if not low <= x[i] <= high:
+            stretched.append(name)
+            low, high = min(low, float(x[i])), max(high, float(x[i]))
+        interval[name] = (low, high)
     covariance = robust_covariance(draws)
     for i in np.flatnonzero(~identifiable):  # the runs say nothing: uniform over its bound
         lo_b, hi_b = result.bounds[names[i]]
@@ -124,7 +133,7 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     return {"draws": draws, "interval": interval, "correlation": np.atleast_2d(correlation),
             "covariance": covariance,
             "identifiable": dict(zip(names, map(bool, identifiable), strict=True)),
-            "seed": seed, "replicates": replicates}
+            "stretched": stretched, "seed": seed, "replicates": replicates}
 
 
 def robust_covariance(draws: np.ndarray) -> np.ndarray:

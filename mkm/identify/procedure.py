@@ -271,6 +271,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     boot = extend(boot, best, terms)
     notes += [line for line in (fitness.line(),) if line]
     notes += _identifiability(runs, best, boot)
+    if boot.get("stretched"):
+        notes.append(f"{', '.join(boot['stretched'])}: the bootstrap's 95 % range left the "
+                     "estimate out (its replicates step as if a parameter resting on a bound "
+                     "were free): the interval is stretched to hold it; read it as approximate")
     if best.at_edge:
         notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
                      "is cut there")

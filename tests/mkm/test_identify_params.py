@@ -216,3 +216,16 @@ def test_a_rubber_unlike_silastic_is_reported_as_two_constants(tmp_path):
         assert table.loc[name, "status"] == "fitted"
         assert table.loc[name, "ci_low"] <= truth <= table.loc[name, "ci_high"], table
     assert "C01_over_C10" not in table.index
+
+
+def test_an_interval_always_holds_its_estimate_and_says_when_stretched():
+    # residuals that still push the parameter one way (as at a bound a neighbour rests on):
+    # every replicate steps the same way, so their 95 % range leaves the estimate out
+    x = np.linspace(1.0, 10.0, 20)
+    fit = one_parameter_fit(x, np.full(20, 0.5), 2.0 * x, value=2.0)
+    boot = bootstrap(fit, sensitivity_tolerance=0.0)
+    low, high = boot["interval"]["theta0_deg"]
+    assert low < high == 2.0  # the replicates all below: stretched up to the estimate
+    assert boot["stretched"] == ["theta0_deg"]
+    centred = one_parameter_fit(x, np.random.default_rng(0).standard_normal(20), 2.0 * x)
+    assert bootstrap(centred, sensitivity_tolerance=0.0)["stretched"] == []
