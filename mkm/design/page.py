@@ -210,7 +210,7 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
 # --- figures ------------------------------------------------------------------------------------
 
 
-def contour_data(result: DesignResult, best, n_D0: int = 161, n_t0: int = 81) -> dict:
+def contour_data(result: DesignResult, best, n_D0: int = 81, n_t0: int = 41) -> dict:
     """The surrogate over its whole D0 x t0 box at ``best``'s L0, theta0 and rubber, for the
     contour figures: ``D0``, ``t0`` grids [mm], per requirement ``force`` and ``margin`` [N],
     ``outer`` diameter [mm] and ``feasible`` (every requirement with its margin, the housing)."""
