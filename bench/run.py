@@ -236,7 +236,8 @@ class BenchRun:
         signal_name = signal_number = None
         try:
             self.startup()
-            Staircase(self.config, self.acquisition, self.operator, self._on_step).run()
+            Staircase(self.config, self.acquisition, self.operator, self._on_step,
+                      self.notify).run()
             status, reason, exit_code = self._finished()
         except Stop as stop:
             status, reason = stop.status, stop.reason

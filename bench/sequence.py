@@ -45,6 +45,19 @@ def settle_reached(t_s: np.ndarray, force_N: np.ndarray, pressure_bar: np.ndarra
         st.pressure_tolerance_bar
 
 
+def settle_warning(tare_std_N: float, config: BenchConfig) -> str:
+    """What a load cell noisier at rest than ``settle.max_force_std_N`` does to a run (no step
+    can settle: each waits ``settle.timeout_s`` and is recorded unsettled), or ""."""
+    st = config.settle
+    if not tare_std_N > st.max_force_std_N:
+        return ""
+    return (f"the load cell spreads {tare_std_N:.2f} N rms at 0 bar, above "
+            f"settle.max_force_std_N={st.max_force_std_N:g}: no step can settle, each will wait "
+            f"settle.timeout_s={st.timeout_s:g} s and be recorded settled = false; for this cell "
+            f"set [settle] max_force_std_N to about {3 * tare_std_N:.2g} (Ctrl-C stops the run "
+            "at a safe point, vented)")
+
+
 class TareInvalid(BenchError):
     """The tare at 0 bar is not usable: the run must not start."""
 
@@ -141,11 +154,12 @@ class Staircase:
     """The procedure of one run: tare, pre-conditioning, steps, through ``acquisition``."""
 
     def __init__(self, config: BenchConfig, acquisition: Acquisition, operator=None,
-                 on_step=lambda step: None):
+                 on_step=lambda step: None, notify=lambda message: None):
         self.config = config
         self.acq = acquisition
         self.operator = operator
         self.on_step = on_step
+        self.notify = notify
         self.steps = plan_steps(config)
         self.instrument = Instrument.from_config(config)
 
@@ -167,6 +181,9 @@ class Staircase:
         tare = validate_tare(volts, self.config)
         self.acq.tare_offset_V = tare["offset_V"]
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
+        warning = settle_warning(tare["std_N"], self.config)
+        if warning:
+            self.notify(f"warning: {warning}")
 
     def run_step(self, step: Step) -> None:
         acq, st = self.acq, self.config.settle

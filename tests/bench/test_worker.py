@@ -5,6 +5,7 @@ short staircase tares for 2 s (samples 0-19) and commands 0.5 bar at 2.0 s.
 """
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -140,3 +141,21 @@ def test_stall_longer_than_the_buffer_loses_the_samples(config, tmp_path):
     result, run = record(c, tmp_path, stall_at_s=1.0, stall_s=11.0)
     assert result.status == "complete_with_gaps" and run.meta.lost_samples == 110
     assert math.isclose(run.meta.gaps[0].end_s - run.meta.gaps[0].start_s, 11.0)
+
+
+def test_a_cell_noisier_than_the_settle_limit_is_said_at_the_tare(config, tmp_path):
+    # 20 mV of noise x 196 N/V: some 3-4 N rms at rest, inside safety.tare_max_std_N = 5 N,
+    # above settle.max_force_std_N = 1.5 N, so no step can settle; said once the tare is taken
+    said = []
+    result = acquire(config.replace(sim={"noise_V": 0.02}), out_root=tmp_path,
+                     notify=said.append)
+    warning = [m for m in said if "above settle.max_force_std_N=1.5: no step can settle" in m]
+    assert len(warning) == 1
+    spread, advice = map(float, re.search(r"spreads ([\d.]+) N rms.*to about ([\d.]+)",
+                                          warning[0]).groups())
+    assert spread == pytest.approx(load_run(result.path).meta.tare["std_N"], abs=0.005)
+    assert advice == pytest.approx(3 * spread, rel=0.05)
+    assert not load_run(result.path).steps["settled"].any()
+    quiet = []
+    acquire(config, out_root=tmp_path, notify=quiet.append)  # the default cell settles
+    assert not any("settle.max_force_std_N" in m for m in quiet)
