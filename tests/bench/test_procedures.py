@@ -39,6 +39,9 @@ def test_tare_on_the_sim(config):
     assert out["n"] == 100
     assert out["offset_V"] == pytest.approx(config.sim.loadcell_offset_V, abs=1e-3)  # 5 sigma
     assert out["std_N"] == pytest.approx(0.002 * config.loadcell.sensitivity_N_per_V, rel=0.25)
+    assert out["settle_warning"] == ""  # 0.4 N rms: steps settle under the 1.5 N limit
+    noisy = tare(config.replace(sim={"noise_V": 0.02}), seconds=10.0)  # inside the tare limit
+    assert noisy["settle_warning"].startswith(f"the load cell spreads {noisy['std_N']:.2f} N rms")
 
 
 def test_check_lists_device_steps_and_duration(config):
