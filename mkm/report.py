@@ -380,7 +380,7 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
         ordered = sorted(r.summary, key=lambda s: (np.nan_to_num(s["max_abs_err_pct"],
                                                                  nan=np.inf)))
         best = recommend(r.summary, tolerance)[0]  # the verdict's model
-        choice = _auto_choice(r, tolerance) if tolerance else None
+        choice = _named_choice(r, names, tolerance) if tolerance else None
         for i, s in enumerate(ordered):
             first = i == 0
             run_cell = (f'<td rowspan="{len(ordered)}"><a href="#run-{r.k}">run {r.k}</a>: '
@@ -730,6 +730,18 @@ def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
     return r.auto_choices[tolerance]
 
 
+def _named_choice(r: _Run, names: dict, tolerance: float) -> AutoPick | None:
+    """:func:`_auto_choice` under the report's name of the model it picks, where it is one of
+    the report's (the practical range's surrogate answering as ``surrogate`` included)."""
+    choice = _auto_choice(r, tolerance)
+    if choice is None or choice.name in {names[s.text] for s in r.specs}:
+        return choice
+    match = next((s for s in r.specs
+                  if _same_model(choice.spec, r.in_place.get(s.text, s.text))), None)
+    return choice if match is None else AutoPick(choice.spec, names[match.text],
+                                                 choice.bound_pct, choice.explanation)
+
+
 def _same_model(a: str, b: str) -> bool:
     """Whether two specs build the same model (``eq2`` and ``eq2:diameter=inner`` do): same
     entry and same parameters once built (the closed forms and the FE model build in
@@ -750,17 +762,10 @@ def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
     """The run's verdict sentence (:func:`mkm.verdict.verdict`) with auto's pick and the
     measurement's distance from the report's FE model, if it has one."""
     label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
-    choice = _auto_choice(r, tolerance) if tolerance and r.summary else None
+    choice = _named_choice(r, names, tolerance) if tolerance and r.summary else None
     best, _ = recommend(r.summary, tolerance)
     same = bool(choice and best and _same_model(choice.spec,
                                                 r.in_place.get(best["model"], best["model"])))
-    by_name = {names[s.text]: s for s in r.specs}
-    if choice is not None and choice.name not in by_name:  # auto's pick is a report model
-        match = next((s for s in r.specs
-                      if _same_model(choice.spec, r.in_place.get(s.text, s.text))), None)
-        if match is not None:
-            choice = AutoPick(choice.spec, names[match.text], choice.bound_pct,
-                              choice.explanation)
     fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
           if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
     return verdict(label, r.summary, names, tolerance, choice, same,
