@@ -198,7 +198,7 @@ def _predict_changed(model, pressure, changed: dict, nominal: dict, rebuild, pre
             out = predict(target, pressure, changed["D0_mm"], changed["t0_mm"],
                           changed["eps"])
     except ValueError:
-        return np.full(pressure.shape, np.nan)
+        return np.full(np.shape(pressure), np.nan)
     return np.where(out.valid, out.force_N, np.nan)
 
 

@@ -162,3 +162,19 @@ def test_robust_design_meets_the_requirement_with_the_probability_asked(tmp_path
     assert robust.chosen["r1_surrogate_N"] > nominal.chosen["r1_surrogate_N"] + 20.0
     assert (d["r1_fe_worst_corner_N"] < d["r1_fe_N"]).all()
     assert "worst_corner" not in str(nominal.designs.columns)
+
+
+def test_a_drawn_muscle_with_no_tube_is_nan_at_a_single_pressure():
+    """A robust design draws walls at the tolerance: one past the tube's radius has no force
+    (NaN), at one pressure as at a sweep, instead of failing the design."""
+    from mkm.fem.ladder import make_model
+    from mkm.uncertainty import _predict_changed
+
+    nominal = {"D0_mm": 8.0, "t0_mm": 3.9, "eps": 0.1, "L0_mm": 250.0, "theta0_deg": 25.0,
+               "C10_MPa": 0.1, "C01_MPa": 0.1}
+    changed = {**nominal, "t0_mm": 4.2}  # t0 >= D0 / 2: no tube
+    model = make_model("thickwall")
+    for pressure in (6.0, np.array([2.0, 6.0])):
+        out = _predict_changed(model, pressure, changed, nominal, None,
+                               lambda m, *args: m.predict(*args))
+        assert np.shape(out) == np.shape(pressure) and np.isnan(out).all()
