@@ -141,11 +141,11 @@ def _announce_first_training(kind: str) -> None:
     """Say before a surrogate trains on first use (seconds at its shipped kernels, a minute for
     the practical range's without them), so that a command does not wait without a word."""
     from mkm.core.durations import estimate
-    from mkm.surrogate.train import is_cached, kind_files, training_task
+    from mkm.surrogate.train import is_cached, training_task
 
     if not is_cached(kind):
         warnings.warn(f"training the surrogate {kind} on first use, "
-                      f"{estimate(training_task(kind, kind_files(kind)[0]))}; later calls load "
+                      f"{estimate(training_task(kind))}; later calls load "
                       "it", stacklevel=3)
 
 

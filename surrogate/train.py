@@ -269,9 +269,11 @@ def default_cache_dir() -> Path:
     return user_cache("surrogate")
 
 
-def training_task(kind: str, dataset=DEFAULT_DATASET) -> str:
+def training_task(kind: str, dataset=None) -> str:
     """The name under which :mod:`mkm.core.durations` keeps how long training ``kind`` on
-    ``dataset`` took."""
+    ``dataset`` (None: the kind's own, :func:`kind_files`) took."""
+    if dataset is None:
+        dataset = kind_files(BEST if kind == "best" else kind)[0]
     return f"surrogate-training-{kind}-{Path(dataset).stem}"
 
 

@@ -169,12 +169,12 @@ def _covering_surrogate(runs, surrogate, notify) -> tuple[SurrogateStatic | None
     model) where neither does."""
     from mkm.core.durations import estimate
     from mkm.surrogate.kinds import BEST, RANGE
-    from mkm.surrogate.train import cached_model, is_cached, kind_files, training_task
+    from mkm.surrogate.train import cached_model, is_cached, training_task
 
     def load(kind):
         notify(f"loading the surrogate {kind}" if is_cached(kind) else
                f"training the surrogate {kind} on first use, "
-               f"{estimate(training_task(kind, kind_files(kind)[0]))}")
+               f"{estimate(training_task(kind))}")
         return cached_model(kind)
 
     first_outside = None
