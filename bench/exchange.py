@@ -394,9 +394,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
 
 
 def _inferred(pressure: np.ndarray) -> np.ndarray:
-    """Up to the (first) highest pressure, down after it."""
-    top = int(np.argmax(pressure))
-    return np.array(["up" if k <= top else "down" for k in range(pressure.size)])
+    """Each row's direction from the pressure's change since the row before: up where it
+    rose, down where it fell, a repeated pressure as the row before; the first row up. A
+    table of several cycles has a rising branch in each, not only in the first."""
+    out, direction = [], "up"
+    for k in range(pressure.size):
+        if k and pressure[k] != pressure[k - 1]:
+            direction = "up" if pressure[k] > pressure[k - 1] else "down"
+        out.append(direction)
+    return np.array(out)
 
 
 def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:

@@ -82,6 +82,20 @@ def test_directions_are_inferred_and_names_found(tmp_path, capsys):
     assert steps["direction"].tolist() == ["up"] * 5 + ["down"] * 2  # after the top: down
 
 
+def test_directions_of_repeated_cycles_are_inferred_per_cycle(tmp_path, capsys):
+    table = tmp_path / "cycles.csv"
+    pressures = [0, 1, 2, 3, 2, 1, 0, 1, 2, 3, 2, 1, 0]
+    pd.DataFrame({"pressure_bar": pressures, "force_N": np.arange(13.0)}).to_csv(table,
+                                                                                 index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    steps = load_run(out.strip()).steps
+    # the second cycle rises again: its rising rows are "up", the first cycle's repeats
+    assert steps["direction"].tolist() == (["up"] * 4 + ["down"] * 3) + (["up"] * 3
+                                                                         + ["down"] * 3)
+    assert steps["repeat"].tolist() == [0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1]
+
+
 def test_export_as_workbook_and_csv(tmp_path, capsys):
     table = tmp_path / "lab.csv"
     _table().rename(columns={"P [bar]": "pressure_bar", "Kraft N": "force_N",
