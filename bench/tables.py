@@ -273,12 +273,24 @@ def registry(case_sensitive: bool = True):
 NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
 
 
+#: unit spellings of lab headers that pint reads otherwise (any case) -> what a lab means:
+#: ``[-]`` dimensionless, ``MPA``/``mpa`` not millipascal, ``KN`` not knot, ``kp`` the kilopond
+#: not the kilopoise, ``MBAR`` not megabar, ``MM``/``S``/``MS`` not megamolar or siemens, and
+#: the gauge suffixes (the toolkit's pressures are gauge pressures)
+LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", "pa": "Pa",
+             "kpa": "kPa", "mpa": "MPa", "psi": "psi", "psig": "psi", "n": "N", "kn": "kN",
+             "dan": "daN", "kp": "kgf", "kilopond": "kgf", "kgf": "kgf", "lbf": "lbf",
+             "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
+
+
 def parse_unit(text: str):
-    """``text`` as a pint unit, or ``None`` if it is not one (case as written first, then any
-    case)."""
+    """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
+    case as written, then any case)."""
     import pint
 
     text = text.strip()
+    if text.lower() in LAB_UNITS:
+        return registry().Unit(LAB_UNITS[text.lower()])
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
         return None
     for case_sensitive in (True, False):

@@ -54,6 +54,24 @@ def test_units_converted_by_their_definitions(tmp_path):
                                rtol=1e-12)
 
 
+def test_unit_spellings_pint_reads_otherwise(tmp_path):
+    # [-] is dimensionless; MPA/mpa a megapascal (pint: millipascal), KN a kilonewton (pint:
+    # knot), kp a kilopond (pint: kilopoise); all-caps MBAR, MM and S as a lab means them
+    table, found = _one(tmp_path, "T [S],P [mpa],F [KN],eps [-],L [MM]\n0,0.25,0.5,0.1,250\n"
+                        "1,0.5,1,0.1,250\n")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [2.5, 5.0], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["force"]), [500, 1000], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["eps"]), [0.1, 0.1], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["length"]), [250, 250], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["time"]), [0, 1], rtol=1e-12)
+    table, found = _one(tmp_path, "p [barg];F [kp]\n1,5;2\n2,5;4\n", "b.csv")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5, 2.5], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["force"]), [2 * KGF_N, 4 * KGF_N],
+                               rtol=1e-12)
+    table, found = _one(tmp_path, "P [MBAR],F [N]\n500,1\n1500,2\n", "c.csv")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.5], rtol=1e-12)
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
                         "Kontraktion (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
