@@ -256,7 +256,7 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
 # --- recognising ------------------------------------------------------------------------------
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}]*)[)\]}]\s*$")
-_WORDS = re.compile(r"[\s_\-./:]+")
+_WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
 
 
 @cache

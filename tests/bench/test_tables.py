@@ -23,7 +23,8 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     ("length (mm)", "length", "mm"), ("pressure_bar_mean", "pressure", "bar"),
     ("force_N_mean", "force", "N"), ("force_N_std", "force std", "N"),
     ("set_pressure_bar", "set pressure", "bar"), ("Time in s", "time", "s"),
-    ("zero_entry", "zero entry", None),
+    ("zero_entry", "zero entry", None), ("Pressure, bar", "pressure", "bar"),
+    ("Force, kN", "force", "kN"),
 ])
 def test_headers_in_common_spellings(header, name, unit):
     assert parse_header(header) == (name, unit)
