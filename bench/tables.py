@@ -141,8 +141,10 @@ def _text_table(path: Path, text: str) -> RawTable:
         raise ValueError(f"{path} is empty: expected a header row and one row per step or "
                          "sample")
     separator = _separator([line for _, line in lines])
+    # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
     parsed = [(n, cells) for n, (cells,) in
-              ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)]
+              ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)
+              if any(c.strip() for c in cells)]
     decimal = "," if separator != "," and any(
         _COMMA_DECIMAL.match(c.strip()) for _, cells in parsed[1:50] for c in cells) else "."
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,

@@ -84,6 +84,14 @@ def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     np.testing.assert_allclose(column_values(table, found["eps"]), [0.122, 0.122])
 
 
+def test_rows_of_separators_only_are_blank(tmp_path):
+    # a spreadsheet's export: empty rows as ";;", between the data and after it
+    table, found = _one(tmp_path, "Druck (bar);Kraft (N);Notiz\n0,5;12,25;\n;;\n1,0;40,5;ok\n"
+                        ";;\n ; ; \n")
+    np.testing.assert_allclose(column_values(table, found["force"]), [12.25, 40.5])
+    assert table.row_numbers == [2, 4]  # a bad cell is still named by its row in the file
+
+
 def test_tab_separated_with_units_overridden(tmp_path):
     table, found = _one(tmp_path, "P\tF\n100\t10\n200\t20\n", "lab.tsv")
     assert table.separator == "\t"
