@@ -143,6 +143,32 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     assert 2.0 < summary["max_abs_err_pct"].iloc[0] < 8.0
 
 
+def test_a_ramp_repeated_twice_has_two_rising_and_two_falling_branches(tmp_path, mkm_cli):
+    # 2 s vented, then two cycles 0 -> 2.5 -> 0 bar of 20 s each
+    rng = np.random.default_rng(3)
+    t = np.arange(0.0, 42.0, 0.01)
+    p = np.interp(t, [0, 2, 12, 22, 32, 42], [0, 0, 2.5, 0, 2.5, 0])
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.122), 0.0), 0.05, 0.0, 30.0)
+    path = tmp_path / "cycles.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p + rng.normal(0, 0.005, t.size),
+                  "F (N)": truth + rng.normal(0, 0.3, t.size)}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    steps, samples = run.steps, run.samples
+    branches = steps.groupby(["direction", "repeat"])
+    assert sorted(branches.groups) == [("down", 0), ("down", 1), ("up", 0), ("up", 1)]
+    # each branch spans its cycle's pressures, and each point is its own samples' mean: none
+    # averages a whole cycle (the second rise was binned into the first's top bin)
+    for (_, repeat), branch in branches:
+        assert branch["pressure_bar_mean"].max() == pytest.approx(2.5, abs=0.15)
+        assert (branch["start_s"] >= 20.0 * repeat).all()
+        assert (branch["end_s"] <= 22.0 + 20.0 * repeat + 0.5).all()
+    for step in steps.itertuples():
+        inside = (samples["step"] == step.step).to_numpy()
+        assert np.ptp(p[inside]) < 0.3, step
+        assert step.force_N_mean == pytest.approx(truth[inside].mean(),
+                                                  abs=0.2 + 4 * 0.3 / np.sqrt(step.n))
+
+
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     frame, _, _ = _ramp()
     frame.to_csv(tmp_path / "ramp.csv", index=False)
