@@ -49,7 +49,7 @@ from mkm.bench.tables import (
     sheet_names,
 )
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
-from mkm.fem.limits import check_value
+from mkm.fem.limits import PRACTICAL_RANGE, check_value
 
 REQUIRED_ROLES = ("pressure", "force")
 #: columns whose values split one table into runs (one muscle state each)
@@ -309,6 +309,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
         pressure = np.where(noise, 0.0, pressure)
         handling["readings_below_zero_set_to_0"] = int(noise.sum())
+    top_bar = float(pressure.max())
+    if found["pressure"].unit is None and top_bar > PRACTICAL_RANGE.pressure_bar[1]:
+        # a header without a unit is read as bar: kPa or psi would pass as a bar 10-100 times
+        notes.append(f"pressures up to {top_bar:g} bar, read as bar since "
+                     f"{found['pressure'].header!r} names no unit: above the "
+                     f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; if they "
+                     "are kPa or psi, import again with --units pressure=kPa (or psi)")
     for k, p in enumerate(pressure):
         if p < 0:
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "

@@ -96,6 +96,22 @@ def test_directions_of_repeated_cycles_are_inferred_per_cycle(tmp_path, capsys):
     assert steps["repeat"].tolist() == [0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1]
 
 
+def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, capsys):
+    table = tmp_path / "kpa.csv"
+    pd.DataFrame({"P": [0, 100, 250], "F": [0.0, 100.0, 250.0]}).to_csv(table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 250.0  # as the file says
+    assert ("pressures up to 250 bar, read as bar since 'P' names no unit: above the 8 bar of "
+            "any braided muscle; if they are kPa or psi, import again with --units "
+            "pressure=kPa") in err
+    # a unit given, by the header or --units, is not questioned
+    code, out, err = _run(["import", str(table), *MUSCLE, "--units", "pressure=kPa", "--out",
+                           str(tmp_path)], capsys)
+    assert code == 0 and "read as bar" not in err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 2.5
+
+
 def test_export_as_workbook_and_csv(tmp_path, capsys):
     table = tmp_path / "lab.csv"
     _table().rename(columns={"P [bar]": "pressure_bar", "Kraft N": "force_N",
