@@ -263,6 +263,11 @@ def _muscle(given: dict, group: _Group):
         values["L0_mm"] = _single(group, "L0")
     if "eps" in group.columns:
         values["eps"] = _single(group, "eps")
+        column = group.columns["eps"]
+        if column.unit is None and 1 <= values["eps"] < 100:
+            raise ValueError(f"{where}column {column.header!r}: eps {values['eps']:g} is not "
+                             "a fraction: expected a shortening ratio in [0, 1); if the "
+                             "column is a percentage, give --units eps=%")
     elif "length" in group.columns:
         length = _single(group, "length")
         if values.get("L0_mm") is None:

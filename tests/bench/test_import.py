@@ -241,6 +241,8 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
     ("P,F\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
     ("P,F,muscle\n1,2,A\n1,2,B\n", [], "column 'muscle' holds 2 muscles ('A', 'B'): choose one "
      "with --muscle NAME"),
+    ("P,F,contraction\n1,2,12.2\n", [], "column 'contraction': eps 12.2 is not a fraction: "
+     "expected a shortening ratio in [0, 1); if the column is a percentage, give --units eps=%"),
 ])
 def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
