@@ -215,8 +215,11 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                     rows.append(cells)
                 if len(rows) > MAX_ROWS:
                     raise ValueError(f"{path}, sheet {name!r} has more than {MAX_ROWS} rows")
+            # numbers a German Excel stored as text ("1,5") have a decimal comma
+            decimal = "," if any(isinstance(c, str) and _COMMA_DECIMAL.match(c.strip())
+                                 for cells in rows[:50] for c in cells) else "."
             try:
-                tables.append(_with_header(path, name, numbers, rows, None, "."))
+                tables.append(_with_header(path, name, numbers, rows, None, decimal))
             except ValueError as exc:  # a sheet of notes: skipped unless it was asked for
                 if sheet is not None:
                     raise

@@ -117,6 +117,17 @@ def test_every_sheet_or_one(tmp_path):
         read_tables(path, "x")
 
 
+def test_a_workbooks_numbers_stored_as_text_with_decimal_commas(tmp_path):
+    path = tmp_path / "book.xlsx"
+    pd.DataFrame({"Druck [bar]": ["0", "1,5", "2,75"], "Kraft [N]": [0.0, 150.5, "300,25"]}
+                 ).to_excel(path, index=False)
+    (table,) = read_tables(path)
+    found = recognise(table)
+    assert table.decimal == ","
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5, 2.75])
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5, 300.25])
+
+
 @pytest.mark.parametrize("text, message", [
     ("", "lab.csv is empty"),
     ("P,F\n", "has no row of numbers"),
