@@ -422,6 +422,8 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     folder ``out`` holding ``steps.csv``, ``samples.csv`` and ``metadata.csv``."""
     if fmt not in ("xlsx", "csv"):
         raise ValueError(f"--format {fmt!r} is invalid: expected xlsx or csv")
+    out = Path(out)
+    _check_export_target(out, fmt)
     run = load_run(run_dir)
     run.require_content("sheet")
     samples = run.samples
@@ -433,7 +435,6 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}
-    out = Path(out)
     if fmt == "xlsx":
         out.parent.mkdir(parents=True, exist_ok=True)
         with pd.ExcelWriter(out, engine="openpyxl") as book:
@@ -444,6 +445,24 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     for name, frame in sheets.items():
         frame.to_csv(out / f"{name}.csv", index=False, float_format="%.10g")
     return out
+
+
+def _check_export_target(out: Path, fmt: str) -> None:
+    """``ValueError`` unless ``out`` can take the export: a workbook named ``.xlsx`` that is
+    new or one mkm export wrote (never a lab's own table), or a folder for the CSV files."""
+    if fmt == "csv":
+        if out.exists() and not out.is_dir():
+            raise ValueError(f"--out {out} is a file: expected a folder for steps.csv, "
+                             "samples.csv and metadata.csv (--format csv)")
+        return
+    if out.suffix.lower() != ".xlsx":
+        raise ValueError(f"--out {out}: expected a workbook name ending in .xlsx (or --format "
+                         "csv and a folder)")
+    if out.is_dir():
+        raise ValueError(f"--out {out} is a folder: expected a workbook name ending in .xlsx")
+    if out.exists() and set(sheet_names(out)) != set(EXPORT_SHEETS):
+        raise ValueError(f"--out {out} exists and is not a workbook mkm export wrote: expected "
+                         "a new name (nothing is overwritten)")
 
 
 def _flatten(data, prefix: str = "") -> list[tuple[str, str]]:

@@ -129,3 +129,29 @@ def test_export_as_workbook_and_csv(tmp_path, capsys):
                         capsys)
     assert code == 0 and sorted(p.name for p in (tmp_path / "csv").iterdir()) == [
         "metadata.csv", "samples.csv", "steps.csv"]
+
+
+def test_export_never_overwrites_a_lab_file_and_names_a_bad_target(tmp_path, capsys):
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    run = _import(table, tmp_path, capsys).path
+    source = table.read_bytes()
+    own = tmp_path / "own.xlsx"
+    _table().to_excel(own, index=False)
+    for out, fmt, message in [
+            (table, "xlsx", "expected a workbook name ending in .xlsx"),
+            (table, "csv", "is a file: expected a folder for steps.csv"),
+            (tmp_path, "xlsx", "expected a workbook name ending in .xlsx"),
+            (own, "xlsx", "exists and is not a workbook mkm export wrote: expected a new name")]:
+        code, out_text, err = _run(["export", str(run), "--format", fmt, "--out", str(out)],
+                                   capsys)
+        assert code == 2 and out_text == "" and err.count("\n") == 1, err
+        assert message in err
+    assert table.read_bytes() == source  # the lab's table is as it was
+    assert pd.read_excel(own).equals(_table())
+    # an export is replaced by a new export of the same name
+    again = tmp_path / "run.xlsx"
+    for _ in range(2):
+        code, _, err = _run(["export", str(run), "--out", str(again)], capsys)
+        assert code == 0, err
+
