@@ -155,3 +155,18 @@ def test_export_never_overwrites_a_lab_file_and_names_a_bad_target(tmp_path, cap
         code, _, err = _run(["export", str(run), "--out", str(again)], capsys)
         assert code == 0, err
 
+
+def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys):
+    # a bench run's vented step as the monitor read it: -0.000146 bar
+    table = tmp_path / "steps.csv"
+    table.write_text("pressure_bar_mean,force_N_mean\n0.0002,0\n1,366.9\n-0.000146,0.04\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--tare", "none", "--out",
+                           str(tmp_path)], capsys)
+    assert code == 0, err
+    run = load_run(out.strip())
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0002, 1.0, 0.0]
+    assert run.meta.imported_from["readings_below_zero_set_to_0"] == 1
+    table.write_text("P,F\n0,0\n1,100\n-0.05,0\n")  # more than noise: a vacuum, refused
+    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 2 and "cell A4 (column 'P'): -0.05 bar is below 0" in err
+
