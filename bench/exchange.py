@@ -131,6 +131,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             if muscle.get(key) is None and f"muscle.{key}" in known:
                 muscle[key] = known[f"muscle.{key}"]
         sheet = "steps"
+        if tare == "auto":  # its forces were zeroed when it was recorded or imported
+            tare = "none"
     tables = read_tables(path, sheet)
     names = [t.sheet for t in tables]
     prepared, skipped = [], []

@@ -224,6 +224,20 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
         assert again.steps[column].tolist() == run.steps[column].tolist()
 
 
+def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
+    # a bench run's vented step reads a little force after its tare: the export keeps it, and
+    # its import must not subtract it a second time
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure_bar": [0.0, 1.0, 2.0, 1.0, 0.0],
+                  "force_N": [-0.04, 366.9, 734.6, 386.4, 0.05]}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--tare", "none")
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), err = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert "tare" not in err and again.meta.imported_from["tare_N"] == 0.0
+    assert again.steps["force_N_mean"].tolist() == [-0.04, 366.9, 734.6, 386.4, 0.05]
+
+
 @pytest.mark.parametrize("content, argv, message", [
     ("", [], "lab.csv is empty"),
     ("a,b\n1,2\n", [], "lab.csv: no pressure or force column among 'a', 'b'"),
