@@ -392,6 +392,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
             notes.append(f"{slack} slack row(s) ({found['slack'].header}): kept at their force")
     if not np.any(force != 0):
         notes.append("every force is 0 N: no model error can be scored against this run")
+    elif np.ptp(pressure) > 0 and np.polyfit(pressure, force, 1)[0] < 0:
+        # a muscle pulls harder the higher its pressure: a falling force is a load cell read
+        # with the opposite sign (compression positive), which every model would score as wrong
+        low, high = int(np.argmin(pressure)), int(np.argmax(pressure))
+        notes.append(f"the force falls as the pressure rises ({force[low]:.4g} N at "
+                     f"{pressure[low]:g} bar, {force[high]:.4g} N at {pressure[high]:g} bar): "
+                     "a muscle pulls harder with pressure; is the load cell's sign reversed?")
     now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
     prov = provenance()
     imported = {"file": path.name, "sha256": sha, "shape": shape, "state": group.state,

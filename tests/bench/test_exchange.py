@@ -170,3 +170,16 @@ def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys
     code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
     assert code == 2 and "cell A4 (column 'P'): -0.05 bar is below 0" in err
 
+
+def test_a_force_that_falls_as_the_pressure_rises_is_questioned(tmp_path, capsys):
+    table = tmp_path / "compression.csv"
+    table.write_text("P [bar],F [N]\n0,0\n1,-100\n2,-200\n3,-300\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["force_N_mean"].tolist() == [0, -100, -200, -300]
+    assert ("the force falls as the pressure rises (0 N at 0 bar, -300 N at 3 bar): a muscle "
+            "pulls harder with pressure; is the load cell's sign reversed?") in err
+    table.write_text("P [bar],F [N]\n0,0\n1,100\n2,200\n1,110\n0,3\n")
+    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0 and "sign" not in err
+
