@@ -13,6 +13,7 @@ from mkm.cli.common import (
     argtype,
     emit_prediction,
     model_from_args,
+    parse_within,
     shared_help,
     spec_from_args,
     with_calibration,
@@ -111,9 +112,9 @@ def register(subparsers) -> None:
                       help=shared_help("--eps", "default: %(default)s"))
     conv.add_argument("--pressure", default=2.5, type=argtype(parse_number, "--pressure"),
                       help="pressure [bar] (default: %(default)s)")
-    conv.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+    conv.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                       help=shared_help("--theta0", "default: calibrated"))
-    conv.add_argument("--L0", default=282.0, type=argtype(parse_number, "--L0"),
+    conv.add_argument("--L0", default=282.0, type=argtype(parse_within, "--L0", "L0_mm"),
                       help=shared_help("--L0", "default: %(default)s"))
     conv.add_argument("--out", default=str(default_out("fem-convergence")),
                       help="folder for the CSV, JSON and PNG (default: %(default)s)")

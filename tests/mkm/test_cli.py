@@ -106,11 +106,27 @@ EPS = "expected a shortening ratio in [0, 1) (a fraction)"
      "start 2"),
     (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "0:x:1"],
      "mkm fem solve: error: --pressures='x' is not a number"),
+    # Equation 2 only records L0: a typo must not reach its record
+    (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--L0", "-5"],
+     "mkm fem solve: error: --L0 -5: expected a length at rest in [10, 3000] mm"),
 ])
 def test_bad_input_is_one_line_with_status_2(args, message, mkm_run):
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", *args])
     assert code == 2 and out == ""
     assert err.startswith(message) and err.count("\n") == 1 and "Traceback" not in err
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--L0", "0"], "--L0 0: expected a length at rest in [10, 3000] mm"),
+    (["--C10", "-1"], "--C10 -1: expected a Mooney-Rivlin C10 in [0.0001, 100] MPa"),
+    (["--theta0", "0"], "--theta0 0: expected a braid angle at rest in [1, 89] deg"),
+])
+def test_a_surrogate_takes_no_muscle_outside_the_limits(args, message, mkm_run):
+    # it would flag the point and answer NaN, or a force for a negative rubber constant
+    code, out, err = mkm_run(["surrogate", "predict", "--D0", "40", "--t0", "3", "--eps", "0.1",
+                              "--pressures", "1", *args])
+    assert code == 2 and out == ""
+    assert err == f"mkm surrogate predict: error: {message}\n"
 
 
 @pytest.mark.parametrize("args, message", [
