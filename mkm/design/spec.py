@@ -85,8 +85,18 @@ def parse_requirement(text: str, name: str = "--require") -> Requirement:
         raise ValueError(f"{name} {text!r} is malformed: expected FORCE N@PRESSURE bar,eps=EPS, "
                          "for example 400N@2bar,eps=0.10")
     force, pressure, eps = match.groups()
-    return Requirement(parse_number(force, f"{name} force"),
-                       parse_number(pressure, f"{name} pressure"), parse_fraction(eps, name))
+    # as typed, unit included: the pattern took the N and bar off ("300kN" would be "300k")
+    typed_force, _, rest = str(text).partition("@")
+    typed = {"force": (force, typed_force.strip(), "newtons (N)"),
+             "pressure": (pressure, rest.split(",")[0].strip(), "bar")}
+    numbers = {}
+    for what, (number, shown, unit) in typed.items():
+        try:
+            numbers[what] = parse_number(number, f"{name} {what}")
+        except ValueError:
+            raise ValueError(f"{name} {text!r}: {what} {shown!r}: expected a finite number of "
+                             f"{unit}, for example 400N@2bar,eps=0.10") from None
+    return Requirement(numbers["force"], numbers["pressure"], parse_fraction(eps, name))
 
 
 def parse_bounds(text, name: str) -> tuple[float, float]:

@@ -46,6 +46,12 @@ def test_requirement_syntax():
     assert parse_requirement(" 400 N @ 2 bar , eps = 10% ") == Requirement(400.0, 2.0, 0.10)
     with pytest.raises(ValueError, match="malformed: expected FORCE N@PRESSURE bar,eps=EPS"):
         parse_requirement("400N at 2bar")
+    # another unit is named as typed, not with its N or bar taken off ("300k")
+    with pytest.raises(ValueError, match=r"force '0\.4kN': expected a finite number of "
+                       r"newtons \(N\), for example 400N@2bar"):
+        parse_requirement("0.4kN@2bar,eps=0.1")
+    with pytest.raises(ValueError, match="pressure '200kPa': expected a finite number of bar"):
+        parse_requirement("400N@200kPa,eps=0.1")
     with pytest.raises(ValueError, match="force -5 N is invalid"):
         parse_requirement("-5N@2bar,eps=0.1")
 
