@@ -121,7 +121,11 @@ def test_minimal_config_takes_defaults():
     ("[daq]\nsample_rate = 10", r"daq\.sample_rate is not a setting"),
     ("[regulator]\nkind = 'pneumatic'", r"regulator\.kind='pneumatic' is invalid"),
     ("[regulator]\nmax_pressure_bar = 5", r"regulator\.max_pressure_bar=5 is invalid"),
-    ("[sequence]\npressures_bar = '0:2:-1'", r"step -1 must be > 0"),
+    # the setting is named, not the --pressures flag of the command line
+    ("[sequence]\npressures_bar = '0:2:-1'",
+     r": sequence\.pressures_bar '0:2:-1': step -1 must be > 0"),
+    ("[sequence]\npressures_bar = [0.5, -1]",
+     r": sequence\.pressures_bar '0\.5,-1' has a negative pressure -1 bar"),
     ("[sequence]\npressures_bar = 'abc'", r"is not a number"),
     ("[sequence]\npressures_bar = [1, 'x']", r"expected 'start:stop:step' or a list"),
     ("[sequence]\npressures_bar = [1]\nrepeats = 0", r"sequence\.repeats=0 is invalid"),
