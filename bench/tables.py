@@ -126,11 +126,16 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     if sheet is not None:
         raise ValueError(f"--sheet {sheet!r}: {path.name} is a text table, it has no sheets")
     try:
-        text = path.read_bytes().decode("utf-8-sig")
-    except UnicodeDecodeError:
-        text = path.read_bytes().decode("latin-1")  # older Windows exports
+        data = path.read_bytes()
     except OSError as exc:
         raise ValueError(f"{path} cannot be read ({exc.strerror or exc})") from None
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text" is UTF-16
+        text = data.decode("utf-16", errors="replace")
+    else:
+        try:
+            text = data.decode("utf-8-sig")
+        except UnicodeDecodeError:
+            text = data.decode("latin-1")  # older Windows exports
     return [_text_table(path, text)]
 
 

@@ -92,6 +92,17 @@ def test_rows_of_separators_only_are_blank(tmp_path):
     assert table.row_numbers == [2, 4]  # a bad cell is still named by its row in the file
 
 
+def test_excels_unicode_text_is_utf16(tmp_path):
+    # Excel's "Unicode Text (*.txt)": UTF-16 with a byte-order mark, tab separated
+    path = tmp_path / "export.txt"
+    path.write_bytes("Druck [bar]\tKraft [N]\r\n0\t0\r\n1,5\t150,5\r\n".encode("utf-16"))
+    (table,) = read_tables(path)
+    found = recognise(table)
+    assert (table.separator, table.decimal) == ("\t", ",")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5])
+
+
 def test_tab_separated_with_units_overridden(tmp_path):
     table, found = _one(tmp_path, "P\tF\n100\t10\n200\t20\n", "lab.tsv")
     assert table.separator == "\t"
