@@ -54,7 +54,7 @@ ROLES = {
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
                  "shortening ratio", "contraction ratio"), ""),
-    "length": Role(("l", "length", "held length", "laenge"), "mm"),
+    "length": Role(("l", "length", "held length", "laenge", "länge"), "mm"),
     "L0": Role(("l0", "rest length", "initial length", "length at rest"), "mm"),
     "run": Role(("run", "run id", "test", "trial", "series")),
     "muscle": Role(("muscle", "muscle id", "actuator", "specimen")),

@@ -103,6 +103,15 @@ def test_excels_unicode_text_is_utf16(tmp_path):
     np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5])
 
 
+def test_a_windows_1252_header_with_an_umlaut(tmp_path):
+    path = tmp_path / "lab.csv"
+    path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
+    (table,) = read_tables(path)
+    found = recognise(table)
+    assert found["length"].header == "Länge [mm]"  # as "laenge" is
+    np.testing.assert_allclose(column_values(table, found["length"]), [250.0])
+
+
 def test_tab_separated_with_units_overridden(tmp_path):
     table, found = _one(tmp_path, "P\tF\n100\t10\n200\t20\n", "lab.tsv")
     assert table.separator == "\t"
