@@ -279,6 +279,15 @@ def _muscle(given: dict, group: _Group):
         if values["eps"] < 0:
             raise ValueError(f"{where}length {length:g} mm is above L0 = {values['L0_mm']:g} "
                              "mm: expected a held length at most the length at rest")
+    # an option the table's own column would silently override is a conflict, said
+    for key, option, roles in (("L0_mm", "--L0", ("L0",)), ("eps", "--eps", ("eps", "length"))):
+        column = next((group.columns[r] for r in roles if r in group.columns), None)
+        if column is not None and given.get(key) is not None and not math.isclose(
+                float(given[key]), float(values[key]), rel_tol=1e-9, abs_tol=1e-12):
+            raise ValueError(f"{where}{option} {float(given[key]):g} conflicts with the "
+                             f"table's {key} {float(values[key]):g} (column "
+                             f"{column.header!r}): expected one of them; without {option} "
+                             "the table's is used")
     for key, option in (("id", "--id"), ("D0_mm", "--D0"), ("t0_mm", "--t0"),
                         ("L0_mm", "--L0"), ("eps", "--eps")):
         if values.get(key) is None:

@@ -245,7 +245,7 @@ def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
      "is not a number"),
     ("P,F\n1 bar,2\n150 kPa,3\n", [], "lab.csv: mixed units in column 'P': 'bar' in cell A2, "
      "'kPa' in cell A3"),
-    ("P,F,length (mm)\n1,2,250\n1,3,-5\n", [], "lab.csv, cell C3 (column 'length (mm)'): -5 mm "
+    ("P,F,length (mm)\n1,2,282\n1,3,-5\n", [], "lab.csv, cell C3 (column 'length (mm)'): -5 mm "
      "is not a length"),
     ("P,F,length (mm)\n1,2,nan\n", [], "lab.csv, cell C2 (column 'length (mm)'): 'nan' is not a "
      "finite number"),
@@ -257,6 +257,12 @@ def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
      "with --muscle NAME"),
     ("P,F,contraction\n1,2,12.2\n", [], "column 'contraction': eps 12.2 is not a fraction: "
      "expected a shortening ratio in [0, 1); if the column is a percentage, give --units eps=%"),
+    # --eps 0 and --L0 282 given (MUSCLE): a table's own eps, length or L0 is not silently
+    # taken over them
+    ("P,F,eps\n1,2,0.1\n", [], "lab.csv (eps 0.1): --eps 0 conflicts with the table's eps 0.1 "
+     "(column 'eps'): expected one of them; without --eps the table's is used"),
+    ("P,F,L0_mm,length\n1,2,250,250\n", [], "--L0 282 conflicts with the table's L0_mm 250 "
+     "(column 'L0_mm')"),
 ])
 def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
