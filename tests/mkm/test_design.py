@@ -147,6 +147,10 @@ def test_conflicting_constraints_are_named():
         search(["100N@9bar,eps=0.1"])
     with pytest.raises(ValueError, match="low 50 is above high 40"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": "50:40"})
+    # a length that is a typo is refused before any search (it searched, "no valid force")
+    with pytest.raises(ValueError, match=r"L0_mm=1e\+09 is invalid: expected a length at rest "
+                                         r"in \[10, 3000\] mm"):
+        search(["100N@2bar,eps=0.1"], {"L0_mm": 1e9})
 
 
 @pytest.mark.parametrize("argv, message", [
