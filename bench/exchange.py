@@ -111,7 +111,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         The workbook's sheet to read (default: every sheet holding pressure and force).
     tare : "auto", "none" or float
         The force's zero [N]: the force at the lowest pressure of the rising branch (``auto``;
-        a step table only when it has a 0 bar row), none, or this value.
+        only when that pressure is 0 bar), none, or this value.
     vented : "auto", "none" or float
         The pressure read vented [bar], subtracted from a time series' pressures: detected
         (``auto``), none, or this value.
@@ -352,6 +352,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         zero, handling["tare"] = 0.0, "none"
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
         zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
+    elif tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR:
+        # the force of a record that starts pressurised is the muscle's pull, not the zero
+        zero, handling["tare"] = 0.0, (f"none: the record has no 0 bar reading (its rising "
+                                       f"branch starts at {zero_at:g} bar)")
+        notes.append(f"no tare: {handling['tare'][6:]}; --tare N gives one")
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:

@@ -169,6 +169,23 @@ def test_a_ramp_repeated_twice_has_two_rising_and_two_falling_branches(tmp_path,
                                                   abs=0.2 + 4 * 0.3 / np.sqrt(step.n))
 
 
+def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm_cli):
+    # 1 -> 2.5 -> 1 bar, never vented: the force at 1 bar is the muscle's, not the zero
+    t = np.arange(0.0, 20.0, 0.01)
+    p = np.interp(t, [0, 10, 20], [1.0, 2.5, 1.0])
+    path = tmp_path / "pressurised.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p, "F (N)": thickwall_N(p, 0.122)}).to_csv(path,
+                                                                                  index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    assert run.meta.imported_from["tare_N"] == 0.0
+    assert ("no tare: the record has no 0 bar reading (its rising branch starts at 1 bar); "
+            "--tare N gives one") in err
+    for step in run.steps.itertuples():  # each point the force of its own pressures
+        inside = (run.samples["step"] == step.step).to_numpy()
+        assert step.force_N_mean == pytest.approx(thickwall_N(p[inside], 0.122).mean(),
+                                                  rel=1e-5)  # 6 digits kept
+
+
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     frame, _, _ = _ramp()
     frame.to_csv(tmp_path / "ramp.csv", index=False)
