@@ -14,6 +14,7 @@ from mkm.cli.common import (
     emit_prediction,
     model_from_args,
     parse_within,
+    say,
     shared_help,
     spec_from_args,
     with_calibration,
@@ -152,6 +153,11 @@ def _solve(args) -> int:
 
         print(explain(prediction, label=model_label), file=sys.stderr)
     emit_prediction(prediction, args.out)
+    invalid = int((~prediction.valid).sum())
+    if invalid:  # the CSV's force_N of such a point is a number, not a force: said once
+        say(args, "warning", f"{invalid} of {prediction.valid.size} points valid=False (past "
+            "the braid lock, or outside the model's domain or not converged): their force_N "
+            "is not a force of the muscle")
     return 0
 
 

@@ -46,6 +46,18 @@ def test_pressures_range_and_list(text, expected, mkm_run):
     np.testing.assert_allclose(frame.pressure_bar, expected, rtol=0, atol=1e-12)
 
 
+def test_a_point_past_the_braid_lock_is_flagged_on_stderr_too(mkm_run):
+    code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
+                              "--eps", "0.5", "--pressures", "0,1"])
+    assert code == 0 and out.splitlines()[2].endswith(",False,True")  # Equation 2's -120 N
+    assert err == ("mkm fem solve: warning: 2 of 2 points valid=False (past the braid lock, or "
+                   "outside the model's domain or not converged): their force_N is not a force "
+                   "of the muscle\n")
+    code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
+                              "--eps", "0.05", "--pressures", "0,1"])
+    assert code == 0 and err == ""
+
+
 def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     out = tmp_path / "sweep.csv"
     code, stdout, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
