@@ -22,6 +22,7 @@ import csv
 import io
 import math
 import re
+import tokenize
 from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
@@ -307,7 +308,7 @@ def parse_unit(text: str):
         try:
             return registry(case_sensitive).Unit(text)
         except (pint.errors.PintError, AttributeError, TypeError, ValueError, KeyError,
-                AssertionError):
+                AssertionError, tokenize.TokenError):  # the last: "(%", a bracket left open
             continue
     return None
 

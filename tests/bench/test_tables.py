@@ -24,6 +24,7 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     ("force_N_mean", "force", "N"), ("force_N_std", "force std", "N"),
     ("set_pressure_bar", "set pressure", "bar"), ("Time in s", "time", "s"),
     ("zero_entry", "zero entry", None), ("Pressure, bar", "pressure", "bar"),
+    ("eps (%", "eps (%", None),  # a bracket left open: no unit, and no traceback
     ("Force, kN", "force", "kN"),
 ])
 def test_headers_in_common_spellings(header, name, unit):
