@@ -243,6 +243,14 @@ def _is_number(cell) -> bool:
     return _number(cell, ",")[0] is not None
 
 
+def _units_row(cells: list[str]) -> bool:
+    """Whether a header row holds units of the roles only (``s``, ``[kPa]``, ``(N)``, ``%``,
+    ``-``); names such as ``P`` or ``F`` are not (pint: poise, farad)."""
+    units = [c.strip("[]() ") for c in cells if c]
+    return bool(units) and all(any(_fits(parse_unit(u), role) for role in ROLES.values())
+                               for u in units)
+
+
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     """The header is the row above the first row with two numbers; rows above it are titles."""
     first_data = next((k for k, cells in enumerate(rows)
@@ -257,6 +265,12 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     header_index = first_data - 1
     width = max(len(r) for r in rows[first_data:])
     header = [str(c).strip() for c in rows[header_index]] + [""] * width
+    if header_index > 0 and _units_row(header):
+        # a logger's two header rows, names over units ("Druck" over "kPa"): one header
+        names = [str(c).strip() for c in rows[header_index - 1]] + [""] * width
+        header = [f"{n} [{u.strip('[]()')}]" if n and u else n or u
+                  for n, u in zip(names, header, strict=False)]
+        header_index -= 1
     data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:]]
     if len(data) > MAX_ROWS:
         raise ValueError(f"{where} has {len(data)} rows: expected at most {MAX_ROWS}")

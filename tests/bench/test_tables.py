@@ -113,6 +113,18 @@ def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     np.testing.assert_allclose(column_values(table, found["length"]), [250.0])
 
 
+def test_a_loggers_units_row_under_the_names(tmp_path):
+    table, found = _one(tmp_path, "Messung 7\nZeit;Druck;Kraft\ns;[kPa];(N)\n0;0;1,5\n"
+                        "0,1;150;12,25\n")
+    assert table.header == ["Zeit [s]", "Druck [kPa]", "Kraft [N]"]
+    assert (table.header_row, table.title_rows) == (2, 1)
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+    # one header of names that pint also reads (P: poise, F: farad) is not a units row
+    table, found = _one(tmp_path, "Messung 7;x\nP;F\n1;2\n3;4\n", "b.csv")
+    assert table.header == ["P", "F"] and set(found) == {"pressure", "force"}
+
+
 def test_tab_separated_with_units_overridden(tmp_path):
     table, found = _one(tmp_path, "P\tF\n100\t10\n200\t20\n", "lab.tsv")
     assert table.separator == "\t"
