@@ -6,7 +6,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from mkm.bench.tables import column_values, parse_header, read_tables, recognise
+from mkm.bench.tables import column_values, parse_header, parse_unit, read_tables, recognise
 
 # Units by their definitions (not by the code under test): the international pound is
 # 0.45359237 kg, standard gravity 9.80665 m/s^2, the inch 0.0254 m.
@@ -29,6 +29,11 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
 ])
 def test_headers_in_common_spellings(header, name, unit):
     assert parse_header(header) == (name, unit)
+
+
+@pytest.mark.parametrize("text", ["(%", "N/0", "bar(", "**"])
+def test_text_pint_cannot_parse_is_no_unit(text):
+    assert parse_unit(text) is None  # not a traceback from pint's parser
 
 
 def _one(tmp_path, text, name="lab.csv"):
