@@ -207,6 +207,20 @@ def test_spec_file_unknown_key(tmp_path, mkm_run):
     assert code == 2 and "unknown constraint(s) D0" in err
 
 
+@pytest.mark.parametrize("text, message", [
+    ("requirement = 5\n", "requirement = 5 is invalid: expected [[requirement]] tables"),
+    # TOML: a key written below [[requirement]] is that requirement's
+    ("[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = 0.1\ntop = 1\n",
+     "requirement 1 must have exactly force_N, pressure_bar and eps (it has top: keys written "
+     "below a [[requirement]] belong to it; put them above the first)"),
+])
+def test_a_spec_file_shaped_wrong_is_one_line(text, message, tmp_path, mkm_run):
+    spec = tmp_path / "spec.toml"
+    spec.write_text(text, encoding="utf-8")
+    code, out, err = mkm_run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")])
+    assert code == 2 and out == "" and err.count("\n") == 1 and message in err, err
+
+
 def test_verification_flags_from_the_fe():
     """Below the threshold pressure, near and past the braid lock, by the FE itself (the
     surrogate's box stops at eps 0.2, so the search never proposes these)."""
