@@ -373,7 +373,10 @@ def parse_assignments(text: str | None, option: str) -> dict[str, str]:
     """``pressure=P [bar],force=F`` (``--columns``, ``--units``) -> ``{"pressure": "P [bar]",
     "force": "F"}``; ``ValueError`` naming a bad item."""
     out = {}
-    for item in filter(None, (i.strip() for i in (text or "").split(","))):
+    # an item ends at a comma before the next NAME=, so a header may hold commas itself
+    # ("force=Kraft, gemessen,pressure=Druck")
+    items = re.split(r",(?=\s*[A-Za-z_]\w*\s*=)", text or "")
+    for item in filter(None, (i.strip() for i in items)):
         role, sep, value = item.partition("=")
         role = role.strip()
         if not sep or role not in ROLES or not value.strip():

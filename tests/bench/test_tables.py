@@ -6,7 +6,14 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from mkm.bench.tables import column_values, parse_header, parse_unit, read_tables, recognise
+from mkm.bench.tables import (
+    column_values,
+    parse_assignments,
+    parse_header,
+    parse_unit,
+    read_tables,
+    recognise,
+)
 
 # Units by their definitions (not by the code under test): the international pound is
 # 0.45359237 kg, standard gravity 9.80665 m/s^2, the inch 0.0254 m.
@@ -34,6 +41,15 @@ def test_headers_in_common_spellings(header, name, unit):
 @pytest.mark.parametrize("text", ["(%", "N/0", "bar(", "**"])
 def test_text_pint_cannot_parse_is_no_unit(text):
     assert parse_unit(text) is None  # not a traceback from pint's parser
+
+
+def test_a_column_named_with_a_comma_in_its_header():
+    assert parse_assignments("force=Kraft, gemessen,pressure=Druck", "--columns") == {
+        "force": "Kraft, gemessen", "pressure": "Druck"}
+    assert parse_assignments("pressure=kPa, force = lbf", "--units") == {
+        "pressure": "kPa", "force": "lbf"}
+    with pytest.raises(ValueError, match="--columns item 'weight=F' is invalid"):
+        parse_assignments("pressure=P,weight=F", "--columns")
 
 
 def _one(tmp_path, text, name="lab.csv"):
