@@ -432,9 +432,14 @@ def _check_unit(table: RawTable, column: Column) -> None:
                          f"unit, got {column.unit!r}")
     unit = parse_unit(column.unit)
     if not _fits(unit, role):
+        # a load cell's display in kg or lb shows a mass for the force it weighs
+        weighed = (column.role == "force" and unit is not None
+                   and unit.dimensionality == registry().Unit("kg").dimensionality)
+        hint = ("; if the load cell shows the weight it holds, give --units force=kgf (lb: "
+                "lbf)" if weighed else "")
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
                          f"unit of {column.role} (expected one like "
-                         f"{role.unit or 'percent'})")
+                         f"{role.unit or 'percent'}){hint}")
 
 
 def _listed(headers) -> str:
