@@ -162,6 +162,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
     sha = file_sha256(path)
     built = [_build(path, sha, g, m, tare, vented) for g, m in zip(groups, muscles, strict=True)]
+    from mkm.bench.run import check_out_root
+
+    check_out_root(out_root)
     out = []
     for g, (meta, steps, samples, notes, shape) in zip(groups, built, strict=True):
         writer = RunWriter(out_root, meta, f"# imported from {path.name}: no bench "

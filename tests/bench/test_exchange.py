@@ -183,3 +183,12 @@ def test_a_force_that_falls_as_the_pressure_rises_is_questioned(tmp_path, capsys
     code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
     assert code == 0 and "sign" not in err
 
+
+
+def test_import_into_a_file_is_one_line_and_writes_nothing(tmp_path, capsys):
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(table)], capsys)
+    assert code == 2 and out == ""
+    assert err == f"mkm import: error: --out {table} is a file: expected a folder for the run " \
+                  "folders\n"
