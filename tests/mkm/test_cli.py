@@ -431,3 +431,19 @@ def test_an_option_several_commands_take_is_described_once():
             assert text.startswith(SHARED_HELP[option]), (command, option, text)
     assert len(seen["--no-progress"]) >= 12 and len(seen["--eps"]) >= 6
     assert "status lines" in SHARED_HELP["--no-progress"]
+
+
+@pytest.mark.parametrize("argv", [
+    ["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05", "--out",
+     "{dir}"],
+    ["design", "--require", "300N@2.5bar,eps=0.1", "--out", "{file}"],
+])
+def test_an_out_path_the_command_cannot_use_is_one_line(argv, tmp_path, mkm_run):
+    # a folder where a file goes, a file where a folder goes
+    taken = tmp_path / "taken.csv"
+    taken.write_text("a lab's file\n")
+    argv = [a.format(dir=tmp_path, file=taken) for a in argv]
+    code, out, err = mkm_run(argv)
+    assert code == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert err.startswith(f"mkm {argv[0]}") and "expected a path this command can use" in err
+    assert taken.read_text() == "a lab's file\n"
