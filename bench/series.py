@@ -86,7 +86,7 @@ def branches(pressure_bar: np.ndarray) -> list[tuple[int, int, str]]:
     out, start, direction, extreme = [], 0, "up", 0
     for k in range(1, n):
         rise = pressure_bar[k] - pressure_bar[extreme]
-        if rise > 0 if direction == "up" else rise < 0:
+        if (rise > 0) if direction == "up" else (rise < 0):  # further along the branch
             extreme = k
         elif abs(rise) > turn:
             out.append((start, extreme + 1, direction))
