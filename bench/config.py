@@ -282,6 +282,15 @@ class Sequence:
     def check(self):
         if len(self.pressures_bar) == 0:
             raise ValueError("sequence.pressures_bar is empty: expected at least one pressure")
+        pressures = self.pressures_bar
+        # the steps are labelled up in the order given and down in reverse: a falling list
+        # would record its falling branch as the rising one
+        for low, high in zip(pressures[:-1], pressures[1:], strict=True):
+            if not high > low:
+                raise ValueError(f"sequence.pressures_bar goes from {low:g} to {high:g} bar: "
+                                 "expected the rising staircase, each pressure above the one "
+                                 "before (down_sweep adds the falling branch, repeats the "
+                                 "cycles)")
         within("sequence.repeats", self.repeats, 1, MAX_STEPS)
         within("sequence.preconditioning_cycles", self.preconditioning_cycles, 0,
                MAX_PRECONDITIONING_CYCLES)

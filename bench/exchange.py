@@ -49,7 +49,7 @@ from mkm.bench.tables import (
     sheet_names,
 )
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
-from mkm.fem.limits import check_value
+from mkm.fem.limits import PRACTICAL_RANGE, check_value
 
 REQUIRED_ROLES = ("pressure", "force")
 #: columns whose values split one table into runs (one muscle state each)
@@ -111,7 +111,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         The workbook's sheet to read (default: every sheet holding pressure and force).
     tare : "auto", "none" or float
         The force's zero [N]: the force at the lowest pressure of the rising branch (``auto``;
-        a step table only when it has a 0 bar row), none, or this value.
+        only when that pressure is 0 bar), none, or this value.
     vented : "auto", "none" or float
         The pressure read vented [bar], subtracted from a time series' pressures: detected
         (``auto``), none, or this value.
@@ -131,6 +131,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             if muscle.get(key) is None and f"muscle.{key}" in known:
                 muscle[key] = known[f"muscle.{key}"]
         sheet = "steps"
+        if tare == "auto":  # its forces were zeroed when it was recorded or imported
+            tare = "none"
     tables = read_tables(path, sheet)
     names = [t.sheet for t in tables]
     prepared, skipped = [], []
@@ -160,6 +162,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
     sha = file_sha256(path)
     built = [_build(path, sha, g, m, tare, vented) for g, m in zip(groups, muscles, strict=True)]
+    from mkm.bench.run import check_out_root
+
+    check_out_root(out_root)
     out = []
     for g, (meta, steps, samples, notes, shape) in zip(groups, built, strict=True):
         writer = RunWriter(out_root, meta, f"# imported from {path.name}: no bench "
@@ -263,6 +268,11 @@ def _muscle(given: dict, group: _Group):
         values["L0_mm"] = _single(group, "L0")
     if "eps" in group.columns:
         values["eps"] = _single(group, "eps")
+        column = group.columns["eps"]
+        if column.unit is None and 1 <= values["eps"] < 100:
+            raise ValueError(f"{where}column {column.header!r}: eps {values['eps']:g} is not "
+                             "a fraction: expected a shortening ratio in [0, 1); if the "
+                             "column is a percentage, give --units eps=%")
     elif "length" in group.columns:
         length = _single(group, "length")
         if values.get("L0_mm") is None:
@@ -272,6 +282,15 @@ def _muscle(given: dict, group: _Group):
         if values["eps"] < 0:
             raise ValueError(f"{where}length {length:g} mm is above L0 = {values['L0_mm']:g} "
                              "mm: expected a held length at most the length at rest")
+    # an option the table's own column would silently override is a conflict, said
+    for key, option, roles in (("L0_mm", "--L0", ("L0",)), ("eps", "--eps", ("eps", "length"))):
+        column = next((group.columns[r] for r in roles if r in group.columns), None)
+        if column is not None and given.get(key) is not None and not math.isclose(
+                float(given[key]), float(values[key]), rel_tol=1e-9, abs_tol=1e-12):
+            raise ValueError(f"{where}{option} {float(given[key]):g} conflicts with the "
+                             f"table's {key} {float(values[key]):g} (column "
+                             f"{column.header!r}): expected one of them; without {option} "
+                             "the table's is used")
     for key, option in (("id", "--id"), ("D0_mm", "--D0"), ("t0_mm", "--t0"),
                         ("L0_mm", "--L0"), ("eps", "--eps")):
         if values.get(key) is None:
@@ -305,10 +324,18 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         pressure = pressure - offset
         if offset:
             notes.append(f"vented reading {offset:.3g} bar {handling['vented']}: subtracted")
-        # a gauge's noise around its vented zero is not a vacuum
-        noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
-        pressure = np.where(noise, 0.0, pressure)
-        handling["readings_below_zero_set_to_0"] = int(noise.sum())
+    # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
+    # -0.0001 bar too)
+    noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
+    pressure = np.where(noise, 0.0, pressure)
+    handling["readings_below_zero_set_to_0"] = int(noise.sum())
+    top_bar = float(pressure.max())
+    if found["pressure"].unit is None and top_bar > PRACTICAL_RANGE.pressure_bar[1]:
+        # a header without a unit is read as bar: kPa or psi would pass as a bar 10-100 times
+        notes.append(f"pressures up to {top_bar:g} bar, read as bar since "
+                     f"{found['pressure'].header!r} names no unit: above the "
+                     f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; if they "
+                     "are kPa or psi, import again with --units pressure=kPa (or psi)")
     for k, p in enumerate(pressure):
         if p < 0:
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
@@ -328,6 +355,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         zero, handling["tare"] = 0.0, "none"
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
         zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
+    elif tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR:
+        # the force of a record that starts pressurised is the muscle's pull, not the zero
+        zero, handling["tare"] = 0.0, (f"none: the record has no 0 bar reading (its rising "
+                                       f"branch starts at {zero_at:g} bar)")
+        notes.append(f"no tare: {handling['tare'][6:]}; --tare N gives one")
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:
@@ -377,6 +409,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
             notes.append(f"{slack} slack row(s) ({found['slack'].header}): kept at their force")
     if not np.any(force != 0):
         notes.append("every force is 0 N: no model error can be scored against this run")
+    elif np.ptp(pressure) > 0 and np.polyfit(pressure, force, 1)[0] < 0:
+        # a muscle pulls harder the higher its pressure: a falling force is a load cell read
+        # with the opposite sign (compression positive), which every model would score as wrong
+        low, high = int(np.argmin(pressure)), int(np.argmax(pressure))
+        notes.append(f"the force falls as the pressure rises ({force[low]:.4g} N at "
+                     f"{pressure[low]:g} bar, {force[high]:.4g} N at {pressure[high]:g} bar): "
+                     "a muscle pulls harder with pressure; is the load cell's sign reversed?")
     now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
     prov = provenance()
     imported = {"file": path.name, "sha256": sha, "shape": shape, "state": group.state,
@@ -394,9 +433,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
 
 
 def _inferred(pressure: np.ndarray) -> np.ndarray:
-    """Up to the (first) highest pressure, down after it."""
-    top = int(np.argmax(pressure))
-    return np.array(["up" if k <= top else "down" for k in range(pressure.size)])
+    """Each row's direction from the pressure's change since the row before: up where it
+    rose, down where it fell, a repeated pressure as the row before; the first row up. A
+    table of several cycles has a rising branch in each, not only in the first."""
+    out, direction = [], "up"
+    for k in range(pressure.size):
+        if k and pressure[k] != pressure[k - 1]:
+            direction = "up" if pressure[k] > pressure[k - 1] else "down"
+        out.append(direction)
+    return np.array(out)
 
 
 def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
@@ -404,6 +449,8 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     folder ``out`` holding ``steps.csv``, ``samples.csv`` and ``metadata.csv``."""
     if fmt not in ("xlsx", "csv"):
         raise ValueError(f"--format {fmt!r} is invalid: expected xlsx or csv")
+    out = Path(out)
+    _check_export_target(out, fmt)
     run = load_run(run_dir)
     run.require_content("sheet")
     samples = run.samples
@@ -415,7 +462,6 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}
-    out = Path(out)
     if fmt == "xlsx":
         out.parent.mkdir(parents=True, exist_ok=True)
         with pd.ExcelWriter(out, engine="openpyxl") as book:
@@ -426,6 +472,24 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     for name, frame in sheets.items():
         frame.to_csv(out / f"{name}.csv", index=False, float_format="%.10g")
     return out
+
+
+def _check_export_target(out: Path, fmt: str) -> None:
+    """``ValueError`` unless ``out`` can take the export: a workbook named ``.xlsx`` that is
+    new or one mkm export wrote (never a lab's own table), or a folder for the CSV files."""
+    if fmt == "csv":
+        if out.exists() and not out.is_dir():
+            raise ValueError(f"--out {out} is a file: expected a folder for steps.csv, "
+                             "samples.csv and metadata.csv (--format csv)")
+        return
+    if out.suffix.lower() != ".xlsx":
+        raise ValueError(f"--out {out}: expected a workbook name ending in .xlsx (or --format "
+                         "csv and a folder)")
+    if out.is_dir():
+        raise ValueError(f"--out {out} is a folder: expected a workbook name ending in .xlsx")
+    if out.exists() and set(sheet_names(out)) != set(EXPORT_SHEETS):
+        raise ValueError(f"--out {out} exists and is not a workbook mkm export wrote: expected "
+                         "a new name (nothing is overwritten)")
 
 
 def _flatten(data, prefix: str = "") -> list[tuple[str, str]]:

@@ -16,8 +16,9 @@ ramp, and the steps are taken:
   criteria) and its hold averaged by the bench's :class:`mkm.bench.sequence.HoldStats`; a
   plateau that never settles is averaged over its second half and recorded ``settled = false``;
 - :func:`ramp_steps`: quasi-static points, the samples binned by pressure on each branch apart
-  (rising up to the highest pressure, falling after it), each bin a step with its samples'
-  mean; a branch's bins follow each other in time, as the holds of a staircase do.
+  (:func:`branches`: rising and falling, each cycle of a repeated ramp its own), each bin a
+  step with its samples' mean; a branch's bins follow each other in time, as the holds of a
+  staircase do.
 """
 
 from __future__ import annotations
@@ -41,6 +42,8 @@ VENTED_THRESHOLD_BAR = 0.02
 #: quasi-static bins of a ramp: this many over its pressure range, at least this wide [bar]
 RAMP_BINS = 20
 RAMP_MIN_BIN_BAR = 0.02
+#: a ramp turns (up to down, or back) where the pressure comes back this share of its range
+TURN_SHARE = 0.1
 
 
 @dataclass
@@ -74,9 +77,29 @@ def plateaus(time_s: np.ndarray, pressure_bar: np.ndarray,
     return out
 
 
+def branches(pressure_bar: np.ndarray) -> list[tuple[int, int, str]]:
+    """The record as monotone branches ``(start, stop, direction)``, stop exclusive: it turns
+    where the pressure comes back :data:`TURN_SHARE` of its range from the branch's extreme
+    (less is noise), so a record of several cycles has a rising and a falling branch each."""
+    n = pressure_bar.size
+    turn = TURN_SHARE * float(np.ptp(pressure_bar)) if n else 0.0
+    out, start, direction, extreme = [], 0, "up", 0
+    for k in range(1, n):
+        rise = pressure_bar[k] - pressure_bar[extreme]
+        if (rise > 0) if direction == "up" else (rise < 0):  # further along the branch
+            extreme = k
+        elif abs(rise) > turn:
+            out.append((start, extreme + 1, direction))
+            start, direction = extreme + 1, "down" if direction == "up" else "up"
+            part = pressure_bar[start:k + 1]
+            extreme = start + int(np.argmin(part) if direction == "down" else np.argmax(part))
+    out.append((start, n, direction))
+    return out
+
+
 def rising_end(pressure_bar: np.ndarray) -> int:
-    """Index after the last sample of the rising branch (the first highest pressure)."""
-    return int(np.argmax(pressure_bar)) + 1
+    """Index after the last sample of the first rising branch (its highest pressure)."""
+    return branches(pressure_bar)[0][1]
 
 
 def vented_offset(time_s: np.ndarray, pressure_bar: np.ndarray) -> float:
@@ -161,12 +184,15 @@ def _settle_index(t, f, p, level_bar, config) -> tuple[int, bool]:
 def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndarray, float]:
     """The quasi-static points of a ramp (module docstring), each sample's step (-1: none),
     and the bin width [bar]."""
-    top = rising_end(pressure_bar)
     low, high = float(pressure_bar.min()), float(pressure_bar.max())
     width = max((high - low) / RAMP_BINS, RAMP_MIN_BIN_BAR)
     step_of = np.full(time_s.size, -1)
     records: list[StepRecord] = []
-    for direction, part in (("up", slice(0, top)), ("down", slice(top, time_s.size))):
+    repeats = {"up": 0, "down": 0}
+    for start, stop, direction in branches(pressure_bar):
+        part = slice(start, stop)
+        repeat = repeats[direction]
+        repeats[direction] += 1
         p = pressure_bar[part]
         if p.size == 0:
             continue
@@ -185,7 +211,7 @@ def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndar
             k = len(records)
             step_of[members] = k
             records.append(StepRecord(
-                k, direction, 0, round(low + (b + 0.5) * width, 4), hold.pressure_mean,
+                k, direction, repeat, round(low + (b + 0.5) * width, 4), hold.pressure_mean,
                 hold.mean, hold.std, hold.n, True, 0.0, float(time_s[members[0]]),
                 float(time_s[members[-1]]), math.nan))
     return records, step_of, width

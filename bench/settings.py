@@ -126,9 +126,9 @@ def _convert(value, annotation, key: str):
 
 def _pressures(value, key: str) -> tuple[float, ...]:
     if isinstance(value, str):
-        return tuple(float(p) for p in parse_pressures(value))
+        return tuple(float(p) for p in parse_pressures(value, key))
     if isinstance(value, list) and all(isinstance(v, int | float) and not isinstance(v, bool)
                                        for v in value):
-        return tuple(float(p) for p in parse_pressures(",".join(str(v) for v in value)))
+        return tuple(float(p) for p in parse_pressures(",".join(str(v) for v in value), key))
     raise ValueError(f"{key}={_short(value)} is invalid: expected 'start:stop:step' or a list "
                      "of numbers [bar]")

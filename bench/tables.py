@@ -54,7 +54,7 @@ ROLES = {
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
                  "shortening ratio", "contraction ratio"), ""),
-    "length": Role(("l", "length", "held length", "laenge"), "mm"),
+    "length": Role(("l", "length", "held length", "laenge", "länge"), "mm"),
     "L0": Role(("l0", "rest length", "initial length", "length at rest"), "mm"),
     "run": Role(("run", "run id", "test", "trial", "series")),
     "muscle": Role(("muscle", "muscle id", "actuator", "specimen")),
@@ -126,11 +126,16 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     if sheet is not None:
         raise ValueError(f"--sheet {sheet!r}: {path.name} is a text table, it has no sheets")
     try:
-        text = path.read_bytes().decode("utf-8-sig")
-    except UnicodeDecodeError:
-        text = path.read_bytes().decode("latin-1")  # older Windows exports
+        data = path.read_bytes()
     except OSError as exc:
         raise ValueError(f"{path} cannot be read ({exc.strerror or exc})") from None
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text" is UTF-16
+        text = data.decode("utf-16", errors="replace")
+    else:
+        try:
+            text = data.decode("utf-8-sig")
+        except UnicodeDecodeError:
+            text = data.decode("latin-1")  # older Windows exports
     return [_text_table(path, text)]
 
 
@@ -141,8 +146,10 @@ def _text_table(path: Path, text: str) -> RawTable:
         raise ValueError(f"{path} is empty: expected a header row and one row per step or "
                          "sample")
     separator = _separator([line for _, line in lines])
+    # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
     parsed = [(n, cells) for n, (cells,) in
-              ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)]
+              ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)
+              if any(c.strip() for c in cells)]
     decimal = "," if separator != "," and any(
         _COMMA_DECIMAL.match(c.strip()) for _, cells in parsed[1:50] for c in cells) else "."
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
@@ -213,8 +220,11 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                     rows.append(cells)
                 if len(rows) > MAX_ROWS:
                     raise ValueError(f"{path}, sheet {name!r} has more than {MAX_ROWS} rows")
+            # numbers a German Excel stored as text ("1,5") have a decimal comma
+            decimal = "," if any(isinstance(c, str) and _COMMA_DECIMAL.match(c.strip())
+                                 for cells in rows[:50] for c in cells) else "."
             try:
-                tables.append(_with_header(path, name, numbers, rows, None, "."))
+                tables.append(_with_header(path, name, numbers, rows, None, decimal))
             except ValueError as exc:  # a sheet of notes: skipped unless it was asked for
                 if sheet is not None:
                     raise
@@ -232,6 +242,14 @@ def _is_number(cell) -> bool:
     return _number(cell, ",")[0] is not None
 
 
+def _units_row(cells: list[str]) -> bool:
+    """Whether a header row holds units of the roles only (``s``, ``[kPa]``, ``(N)``, ``%``,
+    ``-``); names such as ``P`` or ``F`` are not (pint: poise, farad)."""
+    units = [c.strip("[]() ") for c in cells if c]
+    return bool(units) and all(any(_fits(parse_unit(u), role) for role in ROLES.values())
+                               for u in units)
+
+
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     """The header is the row above the first row with two numbers; rows above it are titles."""
     first_data = next((k for k, cells in enumerate(rows)
@@ -246,6 +264,12 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     header_index = first_data - 1
     width = max(len(r) for r in rows[first_data:])
     header = [str(c).strip() for c in rows[header_index]] + [""] * width
+    if header_index > 0 and _units_row(header):
+        # a logger's two header rows, names over units ("Druck" over "kPa"): one header
+        names = [str(c).strip() for c in rows[header_index - 1]] + [""] * width
+        header = [f"{n} [{u.strip('[]()')}]" if n and u else n or u
+                  for n, u in zip(names, header, strict=False)]
+        header_index -= 1
     data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:]]
     if len(data) > MAX_ROWS:
         raise ValueError(f"{where} has {len(data)} rows: expected at most {MAX_ROWS}")
@@ -256,7 +280,7 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
 # --- recognising ------------------------------------------------------------------------------
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}]*)[)\]}]\s*$")
-_WORDS = re.compile(r"[\s_\-./:]+")
+_WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
 
 
 @cache
@@ -273,19 +297,28 @@ def registry(case_sensitive: bool = True):
 NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
 
 
-def parse_unit(text: str):
-    """``text`` as a pint unit, or ``None`` if it is not one (case as written first, then any
-    case)."""
-    import pint
+#: unit spellings of lab headers that pint reads otherwise (any case) -> what a lab means:
+#: ``[-]`` dimensionless, ``MPA``/``mpa`` not millipascal, ``KN`` not knot, ``kp`` the kilopond
+#: not the kilopoise, ``MBAR`` not megabar, ``MM``/``S``/``MS`` not megamolar or siemens, and
+#: the gauge suffixes (the toolkit's pressures are gauge pressures)
+LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", "pa": "Pa",
+             "kpa": "kPa", "mpa": "MPa", "psi": "psi", "psig": "psi", "n": "N", "kn": "kN",
+             "dan": "daN", "kp": "kgf", "kilopond": "kgf", "kgf": "kgf", "lbf": "lbf",
+             "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
 
+
+def parse_unit(text: str):
+    """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
+    case as written, then any case)."""
     text = text.strip()
+    if text.lower() in LAB_UNITS:
+        return registry().Unit(LAB_UNITS[text.lower()])
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
         return None
     for case_sensitive in (True, False):
         try:
             return registry(case_sensitive).Unit(text)
-        except (pint.errors.PintError, AttributeError, TypeError, ValueError, KeyError,
-                AssertionError):
+        except Exception:  # pint's parser raises many kinds: "(%" TokenError, "N/0" division
             continue
     return None
 
@@ -340,7 +373,10 @@ def parse_assignments(text: str | None, option: str) -> dict[str, str]:
     """``pressure=P [bar],force=F`` (``--columns``, ``--units``) -> ``{"pressure": "P [bar]",
     "force": "F"}``; ``ValueError`` naming a bad item."""
     out = {}
-    for item in filter(None, (i.strip() for i in (text or "").split(","))):
+    # an item ends at a comma before the next NAME=, so a header may hold commas itself
+    # ("force=Kraft, gemessen,pressure=Druck")
+    items = re.split(r",(?=\s*[A-Za-z_]\w*\s*=)", text or "")
+    for item in filter(None, (i.strip() for i in items)):
         role, sep, value = item.partition("=")
         role = role.strip()
         if not sep or role not in ROLES or not value.strip():
@@ -396,9 +432,14 @@ def _check_unit(table: RawTable, column: Column) -> None:
                          f"unit, got {column.unit!r}")
     unit = parse_unit(column.unit)
     if not _fits(unit, role):
+        # a load cell's display in kg or lb shows a mass for the force it weighs
+        weighed = (column.role == "force" and unit is not None
+                   and unit.dimensionality == registry().Unit("kg").dimensionality)
+        hint = ("; if the load cell shows the weight it holds, give --units force=kgf (lb: "
+                "lbf)" if weighed else "")
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
                          f"unit of {column.role} (expected one like "
-                         f"{role.unit or 'percent'})")
+                         f"{role.unit or 'percent'}){hint}")
 
 
 def _listed(headers) -> str:

@@ -104,6 +104,10 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     of an FE model of the report, the measurement's distance from the FE model.
     """
     row, within = recommend(summary, tolerance)
+    if row is None and any(r["valid_points"] > 0 for r in summary):
+        # valid forces without an error: Equation 7 divides by the largest measured force
+        return (f"{run_label}: no model can be scored: the run's largest measured force is "
+                "not above 0 N (a slack muscle), and Equation 7's error is relative to it.")
     if row is None:
         return f"{run_label}: no model gives a valid force at any kept step: nothing to use."
     name = names[row["model"]]

@@ -96,6 +96,12 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # `mkm ... | head`: the reader left, which is not an error
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except OSError as exc:  # a path the command cannot use (--out naming a folder, a file...)
+        path = exc.filename2 or exc.filename  # an atomic write's target, not its temporary
+        say(args, "error", f"{path}: {exc.strerror or exc}: expected a path this command can "
+            "use (a file's name where it writes a file, a folder's where a folder)" if path
+            else exc)
+        return 2
     except KeyboardInterrupt:
         print(f"{command_name(args)}: interrupted", file=sys.stderr)
         return 130

@@ -78,6 +78,17 @@ def say(args, kind: str, message) -> None:
     print(line, file=sys.stderr)
 
 
+def parse_within(text: str, flag: str, name: str) -> float:
+    """``text`` as a number inside ``LIMITS[name]`` (:mod:`mkm.fem.limits`): a model that only
+    records a value (Equation 2's ``L0_mm``) or flags it (a surrogate) must not take a typo."""
+    from mkm.fem.limits import limit_text, outside
+
+    value = parse_number(text, flag)
+    if outside(name, value):
+        raise ValueError(f"{flag} {text}: {limit_text(name)}")
+    return value
+
+
 def argtype(parse, *args):
     """Wrap a ``mkm.core.ranges`` parser for argparse, keeping its one-line message."""
 
@@ -138,11 +149,11 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
                         f"{', '.join(entries())}, with :key=value parameters (see `mkm models`); "
                         "default %(default)s")
     if theta0:
-        parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+        parser.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                             help=shared_help("--theta0", "default: calibrated"))
     parser.add_argument("--diameter", choices=choices("eq2", "diameter"),
                         help="eq2 only: diameter convention (default inner, as the paper)")
-    parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
+    parser.add_argument("--L0", type=argtype(parse_within, "--L0", "L0_mm"),
                         help=shared_help("--L0", "default 282"))
     parser.add_argument("--mesh", choices=choices("axisym", "mesh"),
                         help="axisym only: FE mesh level (default medium)")
@@ -186,7 +197,7 @@ def add_muscle_arguments(parser, length: bool = False) -> None:
     parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0"),
                         help=shared_help("--t0"))
     if length:
-        parser.add_argument("--L0", required=True, type=argtype(parse_number, "--L0"),
+        parser.add_argument("--L0", required=True, type=argtype(parse_within, "--L0", "L0_mm"),
                             help=shared_help("--L0"))
     parser.add_argument("--eps", required=True, type=argtype(parse_fraction),
                         help=shared_help("--eps"))

@@ -49,7 +49,7 @@ def register(subparsers) -> None:
                      help="the muscle to import where the table's muscle column holds several")
     imp.add_argument("--tare", default="auto", metavar="auto|none|N",
                      help="the force's zero: the force at the lowest pressure of the rising "
-                     "branch (auto; a step table only with a 0 bar row), none, or a value [N]")
+                     "branch (auto; only when that pressure is 0 bar), none, or a value [N]")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series: "
                      "detected at its start (auto), none, or a value [bar]")

@@ -13,6 +13,8 @@ from mkm.cli.common import (
     argtype,
     emit_prediction,
     model_from_args,
+    parse_within,
+    say,
     shared_help,
     spec_from_args,
     with_calibration,
@@ -111,9 +113,9 @@ def register(subparsers) -> None:
                       help=shared_help("--eps", "default: %(default)s"))
     conv.add_argument("--pressure", default=2.5, type=argtype(parse_number, "--pressure"),
                       help="pressure [bar] (default: %(default)s)")
-    conv.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+    conv.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                       help=shared_help("--theta0", "default: calibrated"))
-    conv.add_argument("--L0", default=282.0, type=argtype(parse_number, "--L0"),
+    conv.add_argument("--L0", default=282.0, type=argtype(parse_within, "--L0", "L0_mm"),
                       help=shared_help("--L0", "default: %(default)s"))
     conv.add_argument("--out", default=str(default_out("fem-convergence")),
                       help="folder for the CSV, JSON and PNG (default: %(default)s)")
@@ -151,6 +153,11 @@ def _solve(args) -> int:
 
         print(explain(prediction, label=model_label), file=sys.stderr)
     emit_prediction(prediction, args.out)
+    invalid = int((~prediction.valid).sum())
+    if invalid:  # the CSV's force_N of such a point is a number, not a force: said once
+        say(args, "warning", f"{invalid} of {prediction.valid.size} points valid=False (past "
+            "the braid lock, or outside the model's domain or not converged): their force_N "
+            "is not a force of the muscle")
     return 0
 
 

@@ -14,6 +14,7 @@ from mkm.cli.common import (
     argtype,
     choices,
     emit_prediction,
+    parse_within,
     say,
     shared_help,
     with_calibration,
@@ -194,13 +195,13 @@ def _sub_box(text: str) -> dict:
 
 
 def _parameter_arguments(parser) -> None:
-    parser.add_argument("--L0", type=argtype(parse_number, "--L0"),
+    parser.add_argument("--L0", type=argtype(parse_within, "--L0", "L0_mm"),
                         help=shared_help("--L0", "default 282"))
-    parser.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+    parser.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                         help=shared_help("--theta0", "default: calibrated"))
-    parser.add_argument("--C10", type=argtype(parse_number, "--C10"),
+    parser.add_argument("--C10", type=argtype(parse_within, "--C10", "C10_MPa"),
                         help="rubber Mooney-Rivlin C10 [MPa] (default Silastic S, 0.0694)")
-    parser.add_argument("--C01", type=argtype(parse_number, "--C01"),
+    parser.add_argument("--C01", type=argtype(parse_within, "--C01", "C01_MPa"),
                         help="rubber Mooney-Rivlin C01 [MPa] (default Silastic S, 0.0628)")
 
 

@@ -23,7 +23,7 @@ from mkm.design.spec import (
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
-from mkm.fem.limits import PRACTICAL_RANGE
+from mkm.fem.limits import PRACTICAL_RANGE, limit_text, outside
 from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import outer_diameter_mm
 from mkm.registry import parse_spec
@@ -448,8 +448,9 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool,
     if box["t0_mm"][0] >= box["D0_mm"][1] / 2:
         problems.append(f"t0_mm from {box['t0_mm'][0]:g} mm conflicts with D0_mm up to "
                         f"{box['D0_mm'][1]:g} mm: expected t0 < D0/2")
-    if not box["L0_mm"][0] > 0:
-        problems.append(f"L0_mm {box['L0_mm'][0]:g} is invalid: expected a length > 0 mm")
+    low, high = box["L0_mm"]
+    if outside("L0_mm", low) or outside("L0_mm", high):  # a typo, not a muscle (--L0 1e9)
+        problems.append(f"L0_mm={span_text(low, high)} is invalid: {limit_text('L0_mm')}")
     low, high = box["theta0_deg"]
     angle_ok = 0 < low and high < LOCKING_ANGLE_DEG
     if not angle_ok:

@@ -85,8 +85,18 @@ def parse_requirement(text: str, name: str = "--require") -> Requirement:
         raise ValueError(f"{name} {text!r} is malformed: expected FORCE N@PRESSURE bar,eps=EPS, "
                          "for example 400N@2bar,eps=0.10")
     force, pressure, eps = match.groups()
-    return Requirement(parse_number(force, f"{name} force"),
-                       parse_number(pressure, f"{name} pressure"), parse_fraction(eps, name))
+    # as typed, unit included: the pattern took the N and bar off ("300kN" would be "300k")
+    typed_force, _, rest = str(text).partition("@")
+    typed = {"force": (force, typed_force.strip(), "newtons (N)"),
+             "pressure": (pressure, rest.split(",")[0].strip(), "bar")}
+    numbers = {}
+    for what, (number, shown, unit) in typed.items():
+        try:
+            numbers[what] = parse_number(number, f"{name} {what}")
+        except ValueError:
+            raise ValueError(f"{name} {text!r}: {what} {shown!r}: expected a finite number of "
+                             f"{unit}, for example 400N@2bar,eps=0.10") from None
+    return Requirement(numbers["force"], numbers["pressure"], parse_fraction(eps, name))
 
 
 def parse_bounds(text, name: str) -> tuple[float, float]:
@@ -178,19 +188,27 @@ def load_spec(path) -> dict:
         table = tomllib.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
         raise ValueError(f"--spec {path}: no such file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"--spec {path} is not valid TOML: {exc}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise ValueError(f"--spec {path} is not valid TOML (UTF-8): {exc}") from None
     unknown = sorted(set(table) - SPEC_KEYS)
     if unknown:
         raise ValueError(f"--spec {path}: unknown key(s) {', '.join(unknown)}: expected some of "
                          f"{', '.join(sorted(SPEC_KEYS))}")
     out: dict = {k: table[k] for k in ("objective", "top") if k in table}
     requirements = []
-    for i, item in enumerate(table.get("requirement", []), start=1):
+    items = table.get("requirement", [])
+    if not isinstance(items, list):
+        raise ValueError(f"--spec {path}: requirement = {items!r} is invalid: expected "
+                         "[[requirement]] tables of force_N, pressure_bar and eps")
+    for i, item in enumerate(items, start=1):
         keys = {"force_N", "pressure_bar", "eps"}
         if not isinstance(item, dict) or set(item) != keys:
+            extra = sorted(set(item) - keys) if isinstance(item, dict) else []
+            # TOML puts every key after [[requirement]] into that requirement
+            hint = (f" (it has {', '.join(extra)}: keys written below a [[requirement]] "
+                    "belong to it; put them above the first)" if extra else "")
             raise ValueError(f"--spec {path}: requirement {i} must have exactly force_N, "
-                             "pressure_bar and eps")
+                             f"pressure_bar and eps{hint}")
         eps = item["eps"]
         eps = parse_fraction(eps) if isinstance(eps, str) else parse_number(eps, "eps")
         requirements.append(Requirement(parse_number(item["force_N"], "force_N"),

@@ -31,10 +31,12 @@ import pandas as pd
 
 from mkm.core.records import provenance, source_version, spreadsheet_safe, write_json_atomic
 from mkm.fem.calibration import (
+    THRESHOLD_FLOOR_FRACTION,
     calibration_entry,
     check_reference,
     default_target,
     fit_theta0,
+    line_above_threshold,
     store_calibration,
 )
 from mkm.fem.ladder import MODELS
@@ -389,14 +391,18 @@ class Identification:
             if key == model.calibration_key:  # the identified model's own entry stays
                 continue
             rubber = material if "C10_MPa" in closed.entry.parameters else {}
+            target = default_target(closed.build(theta0_deg=30.0))
+            used = self.runs if target == "force" else self._rising()
+            if not used:
+                continue
             fit = fit_theta0(lambda th, s=closed, m=rubber: s.build(theta0_deg=th, **m),
-                             reference, target=default_target(closed.build(theta0_deg=30.0)))
+                             self._reference(used), target=target)
             built = closed.build(theta0_deg=fit["theta0_deg"], **rubber)
-            entry = calibration_entry(fit, built, ", ".join(r.name for r in self.runs), None,
+            entry = calibration_entry(fit, built, ", ".join(r.name for r in used), None,
                                       closed.entry.module)
             store_calibration(files["calibration"], key, {
                 **entry, **material, **terms,
-                "reference_sha256": {r.name: r.sha256.get("steps.csv") for r in self.runs}})
+                "reference_sha256": {r.name: r.sha256.get("steps.csv") for r in used}})
         self.files = files
         return files
 
@@ -404,13 +410,22 @@ class Identification:
         group = "friction" if key == "hysteresis_fraction" else "creep"
         return group in self.groups  # a dropped term is written as 0: the rung must not add it
 
-    def _reference(self) -> pd.DataFrame:
-        """The runs' settled steps as a calibration reference (both branches)."""
+    def _rising(self) -> list:
+        """The runs whose force rises above its threshold: a closed form's slope is fitted to
+        these alone (a run slack at every pressure, as a published table's shortest length
+        is, has no slope to fit)."""
+        return [run for run in self.runs if line_above_threshold(
+            run.steps["pressure_bar_mean"], run.steps["force_N_mean"],
+            THRESHOLD_FLOOR_FRACTION * run.steps["force_N_mean"].max())[0] > 0]
+
+    def _reference(self, runs=None) -> pd.DataFrame:
+        """The settled steps of ``runs`` (default: every run) as a calibration reference (both
+        branches)."""
         frames = [run.steps.assign(D0_mm=geometry(run, self.fit.values)[0],
                                    t0_mm=geometry(run, self.fit.values)[1], eps=run.eps,
                                    L0_mm=float(run.muscle["L0_mm"]))
                   .rename(columns={"pressure_bar_mean": "pressure_bar",
-                                   "force_N_mean": "force_N"}) for run in self.runs]
+                                   "force_N_mean": "force_N"}) for run in runs or self.runs]
         table = pd.concat(frames, ignore_index=True)
         return check_reference(table[["pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm",
                                       "force_N", "direction"]], "the runs' settled steps")

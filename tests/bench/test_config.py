@@ -36,6 +36,16 @@ def test_overrides_are_validated_and_recorded():
         load_config(pressures_bar=[1.0, 3.0])
 
 
+def test_a_staircase_given_falling_is_refused():
+    # its steps would be labelled up while the pressure falls, and down while it rises
+    with pytest.raises(ValueError, match=r"sequence\.pressures_bar goes from 2 to 1 bar: "
+                       "expected the rising staircase"):
+        load_config(pressures_bar=[2.0, 1.0, 0.5])
+    with pytest.raises(ValueError, match="goes from 1 to 1 bar"):
+        load_config(pressures_bar=[0.5, 1.0, 1.0])
+    assert load_config(pressures_bar=[0.5, 1.0]).sequence.pressures_bar == (0.5, 1.0)
+
+
 def test_an_override_is_in_the_text_a_run_folder_keeps(tmp_path):
     """eps is in one place: what config.toml says is what run.json says (issue 30: --eps 0.122
     left config.toml at eps = 0.0)."""
@@ -111,7 +121,11 @@ def test_minimal_config_takes_defaults():
     ("[daq]\nsample_rate = 10", r"daq\.sample_rate is not a setting"),
     ("[regulator]\nkind = 'pneumatic'", r"regulator\.kind='pneumatic' is invalid"),
     ("[regulator]\nmax_pressure_bar = 5", r"regulator\.max_pressure_bar=5 is invalid"),
-    ("[sequence]\npressures_bar = '0:2:-1'", r"step -1 must be > 0"),
+    # the setting is named, not the --pressures flag of the command line
+    ("[sequence]\npressures_bar = '0:2:-1'",
+     r": sequence\.pressures_bar '0:2:-1': step -1 must be > 0"),
+    ("[sequence]\npressures_bar = [0.5, -1]",
+     r": sequence\.pressures_bar '0\.5,-1' has a negative pressure -1 bar"),
     ("[sequence]\npressures_bar = 'abc'", r"is not a number"),
     ("[sequence]\npressures_bar = [1, 'x']", r"expected 'start:stop:step' or a list"),
     ("[sequence]\npressures_bar = [1]\nrepeats = 0", r"sequence\.repeats=0 is invalid"),

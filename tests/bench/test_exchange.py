@@ -82,6 +82,36 @@ def test_directions_are_inferred_and_names_found(tmp_path, capsys):
     assert steps["direction"].tolist() == ["up"] * 5 + ["down"] * 2  # after the top: down
 
 
+def test_directions_of_repeated_cycles_are_inferred_per_cycle(tmp_path, capsys):
+    table = tmp_path / "cycles.csv"
+    pressures = [0, 1, 2, 3, 2, 1, 0, 1, 2, 3, 2, 1, 0]
+    pd.DataFrame({"pressure_bar": pressures, "force_N": np.arange(13.0)}).to_csv(table,
+                                                                                 index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    steps = load_run(out.strip()).steps
+    # the second cycle rises again: its rising rows are "up", the first cycle's repeats
+    assert steps["direction"].tolist() == (["up"] * 4 + ["down"] * 3) + (["up"] * 3
+                                                                         + ["down"] * 3)
+    assert steps["repeat"].tolist() == [0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1]
+
+
+def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, capsys):
+    table = tmp_path / "kpa.csv"
+    pd.DataFrame({"P": [0, 100, 250], "F": [0.0, 100.0, 250.0]}).to_csv(table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 250.0  # as the file says
+    assert ("pressures up to 250 bar, read as bar since 'P' names no unit: above the 8 bar of "
+            "any braided muscle; if they are kPa or psi, import again with --units "
+            "pressure=kPa") in err
+    # a unit given, by the header or --units, is not questioned
+    code, out, err = _run(["import", str(table), *MUSCLE, "--units", "pressure=kPa", "--out",
+                           str(tmp_path)], capsys)
+    assert code == 0 and "read as bar" not in err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 2.5
+
+
 def test_export_as_workbook_and_csv(tmp_path, capsys):
     table = tmp_path / "lab.csv"
     _table().rename(columns={"P [bar]": "pressure_bar", "Kraft N": "force_N",
@@ -99,3 +129,66 @@ def test_export_as_workbook_and_csv(tmp_path, capsys):
                         capsys)
     assert code == 0 and sorted(p.name for p in (tmp_path / "csv").iterdir()) == [
         "metadata.csv", "samples.csv", "steps.csv"]
+
+
+def test_export_never_overwrites_a_lab_file_and_names_a_bad_target(tmp_path, capsys):
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    run = _import(table, tmp_path, capsys).path
+    source = table.read_bytes()
+    own = tmp_path / "own.xlsx"
+    _table().to_excel(own, index=False)
+    for out, fmt, message in [
+            (table, "xlsx", "expected a workbook name ending in .xlsx"),
+            (table, "csv", "is a file: expected a folder for steps.csv"),
+            (tmp_path, "xlsx", "expected a workbook name ending in .xlsx"),
+            (own, "xlsx", "exists and is not a workbook mkm export wrote: expected a new name")]:
+        code, out_text, err = _run(["export", str(run), "--format", fmt, "--out", str(out)],
+                                   capsys)
+        assert code == 2 and out_text == "" and err.count("\n") == 1, err
+        assert message in err
+    assert table.read_bytes() == source  # the lab's table is as it was
+    assert pd.read_excel(own).equals(_table())
+    # an export is replaced by a new export of the same name
+    again = tmp_path / "run.xlsx"
+    for _ in range(2):
+        code, _, err = _run(["export", str(run), "--out", str(again)], capsys)
+        assert code == 0, err
+
+
+def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys):
+    # a bench run's vented step as the monitor read it: -0.000146 bar
+    table = tmp_path / "steps.csv"
+    table.write_text("pressure_bar_mean,force_N_mean\n0.0002,0\n1,366.9\n-0.000146,0.04\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--tare", "none", "--out",
+                           str(tmp_path)], capsys)
+    assert code == 0, err
+    run = load_run(out.strip())
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0002, 1.0, 0.0]
+    assert run.meta.imported_from["readings_below_zero_set_to_0"] == 1
+    table.write_text("P,F\n0,0\n1,100\n-0.05,0\n")  # more than noise: a vacuum, refused
+    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 2 and "cell A4 (column 'P'): -0.05 bar is below 0" in err
+
+
+def test_a_force_that_falls_as_the_pressure_rises_is_questioned(tmp_path, capsys):
+    table = tmp_path / "compression.csv"
+    table.write_text("P [bar],F [N]\n0,0\n1,-100\n2,-200\n3,-300\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["force_N_mean"].tolist() == [0, -100, -200, -300]
+    assert ("the force falls as the pressure rises (0 N at 0 bar, -300 N at 3 bar): a muscle "
+            "pulls harder with pressure; is the load cell's sign reversed?") in err
+    table.write_text("P [bar],F [N]\n0,0\n1,100\n2,200\n1,110\n0,3\n")
+    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0 and "sign" not in err
+
+
+
+def test_import_into_a_file_is_one_line_and_writes_nothing(tmp_path, capsys):
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(table)], capsys)
+    assert code == 2 and out == ""
+    assert err == f"mkm import: error: --out {table} is a file: expected a folder for the run " \
+                  "folders\n"

@@ -143,6 +143,49 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     assert 2.0 < summary["max_abs_err_pct"].iloc[0] < 8.0
 
 
+def test_a_ramp_repeated_twice_has_two_rising_and_two_falling_branches(tmp_path, mkm_cli):
+    # 2 s vented, then two cycles 0 -> 2.5 -> 0 bar of 20 s each
+    rng = np.random.default_rng(3)
+    t = np.arange(0.0, 42.0, 0.01)
+    p = np.interp(t, [0, 2, 12, 22, 32, 42], [0, 0, 2.5, 0, 2.5, 0])
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.122), 0.0), 0.05, 0.0, 30.0)
+    path = tmp_path / "cycles.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p + rng.normal(0, 0.005, t.size),
+                  "F (N)": truth + rng.normal(0, 0.3, t.size)}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    steps, samples = run.steps, run.samples
+    branches = steps.groupby(["direction", "repeat"])
+    assert sorted(branches.groups) == [("down", 0), ("down", 1), ("up", 0), ("up", 1)]
+    # each branch spans its cycle's pressures, and each point is its own samples' mean: none
+    # averages a whole cycle (the second rise was binned into the first's top bin)
+    for (_, repeat), branch in branches:
+        assert branch["pressure_bar_mean"].max() == pytest.approx(2.5, abs=0.15)
+        assert (branch["start_s"] >= 20.0 * repeat).all()
+        assert (branch["end_s"] <= 22.0 + 20.0 * repeat + 0.5).all()
+    for step in steps.itertuples():
+        inside = (samples["step"] == step.step).to_numpy()
+        assert np.ptp(p[inside]) < 0.3, step
+        assert step.force_N_mean == pytest.approx(truth[inside].mean(),
+                                                  abs=0.2 + 4 * 0.3 / np.sqrt(step.n))
+
+
+def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm_cli):
+    # 1 -> 2.5 -> 1 bar, never vented: the force at 1 bar is the muscle's, not the zero
+    t = np.arange(0.0, 20.0, 0.01)
+    p = np.interp(t, [0, 10, 20], [1.0, 2.5, 1.0])
+    path = tmp_path / "pressurised.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p, "F (N)": thickwall_N(p, 0.122)}).to_csv(path,
+                                                                                  index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    assert run.meta.imported_from["tare_N"] == 0.0
+    assert ("no tare: the record has no 0 bar reading (its rising branch starts at 1 bar); "
+            "--tare N gives one") in err
+    for step in run.steps.itertuples():  # each point the force of its own pressures
+        inside = (run.samples["step"] == step.step).to_numpy()
+        assert step.force_N_mean == pytest.approx(thickwall_N(p[inside], 0.122).mean(),
+                                                  rel=1e-5)  # 6 digits kept
+
+
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     frame, _, _ = _ramp()
     frame.to_csv(tmp_path / "ramp.csv", index=False)
@@ -198,6 +241,20 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
         assert again.steps[column].tolist() == run.steps[column].tolist()
 
 
+def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
+    # a bench run's vented step reads a little force after its tare: the export keeps it, and
+    # its import must not subtract it a second time
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure_bar": [0.0, 1.0, 2.0, 1.0, 0.0],
+                  "force_N": [-0.04, 366.9, 734.6, 386.4, 0.05]}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--tare", "none")
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), err = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert "tare" not in err and again.meta.imported_from["tare_N"] == 0.0
+    assert again.steps["force_N_mean"].tolist() == [-0.04, 366.9, 734.6, 386.4, 0.05]
+
+
 @pytest.mark.parametrize("content, argv, message", [
     ("", [], "lab.csv is empty"),
     ("a,b\n1,2\n", [], "lab.csv: no pressure or force column among 'a', 'b'"),
@@ -205,16 +262,26 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
      "is not a number"),
     ("P,F\n1 bar,2\n150 kPa,3\n", [], "lab.csv: mixed units in column 'P': 'bar' in cell A2, "
      "'kPa' in cell A3"),
-    ("P,F,length (mm)\n1,2,250\n1,3,-5\n", [], "lab.csv, cell C3 (column 'length (mm)'): -5 mm "
+    ("P,F,length (mm)\n1,2,282\n1,3,-5\n", [], "lab.csv, cell C3 (column 'length (mm)'): -5 mm "
      "is not a length"),
     ("P,F,length (mm)\n1,2,nan\n", [], "lab.csv, cell C2 (column 'length (mm)'): 'nan' is not a "
      "finite number"),
     ("P,F\n-1,2\n", [], "lab.csv, cell A2 (column 'P'): -1 bar is below 0"),
     ("P,F\n1,2\n", ["--columns", "force=G"], "--columns force='G': lab.csv has no such column"),
     ("P,F\n1,2\n", ["--units", "force=bar"], "'bar' is not a unit of force"),
+    ("P,F [kg]\n1,2\n", [], "column 'F [kg]': 'kg' is not a unit of force (expected one like "
+     "N); if the load cell shows the weight it holds, give --units force=kgf (lb: lbf)"),
     ("P,F\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
     ("P,F,muscle\n1,2,A\n1,2,B\n", [], "column 'muscle' holds 2 muscles ('A', 'B'): choose one "
      "with --muscle NAME"),
+    ("P,F,contraction\n1,2,12.2\n", [], "column 'contraction': eps 12.2 is not a fraction: "
+     "expected a shortening ratio in [0, 1); if the column is a percentage, give --units eps=%"),
+    # --eps 0 and --L0 282 given (MUSCLE): a table's own eps, length or L0 is not silently
+    # taken over them
+    ("P,F,eps\n1,2,0.1\n", [], "lab.csv (eps 0.1): --eps 0 conflicts with the table's eps 0.1 "
+     "(column 'eps'): expected one of them; without --eps the table's is used"),
+    ("P,F,L0_mm,length\n1,2,250,250\n", [], "--L0 282 conflicts with the table's L0_mm 250 "
+     "(column 'L0_mm')"),
 ])
 def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"

@@ -6,7 +6,14 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from mkm.bench.tables import column_values, parse_header, read_tables, recognise
+from mkm.bench.tables import (
+    column_values,
+    parse_assignments,
+    parse_header,
+    parse_unit,
+    read_tables,
+    recognise,
+)
 
 # Units by their definitions (not by the code under test): the international pound is
 # 0.45359237 kg, standard gravity 9.80665 m/s^2, the inch 0.0254 m.
@@ -23,10 +30,26 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     ("length (mm)", "length", "mm"), ("pressure_bar_mean", "pressure", "bar"),
     ("force_N_mean", "force", "N"), ("force_N_std", "force std", "N"),
     ("set_pressure_bar", "set pressure", "bar"), ("Time in s", "time", "s"),
-    ("zero_entry", "zero entry", None),
+    ("zero_entry", "zero entry", None), ("Pressure, bar", "pressure", "bar"),
+    ("eps (%", "eps (%", None),  # a bracket left open: no unit, and no traceback
+    ("Force, kN", "force", "kN"),
 ])
 def test_headers_in_common_spellings(header, name, unit):
     assert parse_header(header) == (name, unit)
+
+
+@pytest.mark.parametrize("text", ["(%", "N/0", "bar(", "**"])
+def test_text_pint_cannot_parse_is_no_unit(text):
+    assert parse_unit(text) is None  # not a traceback from pint's parser
+
+
+def test_a_column_named_with_a_comma_in_its_header():
+    assert parse_assignments("force=Kraft, gemessen,pressure=Druck", "--columns") == {
+        "force": "Kraft, gemessen", "pressure": "Druck"}
+    assert parse_assignments("pressure=kPa, force = lbf", "--units") == {
+        "pressure": "kPa", "force": "lbf"}
+    with pytest.raises(ValueError, match="--columns item 'weight=F' is invalid"):
+        parse_assignments("pressure=P,weight=F", "--columns")
 
 
 def _one(tmp_path, text, name="lab.csv"):
@@ -54,6 +77,24 @@ def test_units_converted_by_their_definitions(tmp_path):
                                rtol=1e-12)
 
 
+def test_unit_spellings_pint_reads_otherwise(tmp_path):
+    # [-] is dimensionless; MPA/mpa a megapascal (pint: millipascal), KN a kilonewton (pint:
+    # knot), kp a kilopond (pint: kilopoise); all-caps MBAR, MM and S as a lab means them
+    table, found = _one(tmp_path, "T [S],P [mpa],F [KN],eps [-],L [MM]\n0,0.25,0.5,0.1,250\n"
+                        "1,0.5,1,0.1,250\n")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [2.5, 5.0], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["force"]), [500, 1000], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["eps"]), [0.1, 0.1], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["length"]), [250, 250], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["time"]), [0, 1], rtol=1e-12)
+    table, found = _one(tmp_path, "p [barg];F [kp]\n1,5;2\n2,5;4\n", "b.csv")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5, 2.5], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["force"]), [2 * KGF_N, 4 * KGF_N],
+                               rtol=1e-12)
+    table, found = _one(tmp_path, "P [MBAR],F [N]\n500,1\n1500,2\n", "c.csv")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.5], rtol=1e-12)
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
                         "Kontraktion (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
@@ -63,6 +104,46 @@ def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     assert "eps" not in found  # "Kontraktion" is not a spelling the reader knows: --columns
     found = recognise(table, {"eps": "Kontraktion (%)"})
     np.testing.assert_allclose(column_values(table, found["eps"]), [0.122, 0.122])
+
+
+def test_rows_of_separators_only_are_blank(tmp_path):
+    # a spreadsheet's export: empty rows as ";;", between the data and after it
+    table, found = _one(tmp_path, "Druck (bar);Kraft (N);Notiz\n0,5;12,25;\n;;\n1,0;40,5;ok\n"
+                        ";;\n ; ; \n")
+    np.testing.assert_allclose(column_values(table, found["force"]), [12.25, 40.5])
+    assert table.row_numbers == [2, 4]  # a bad cell is still named by its row in the file
+
+
+def test_excels_unicode_text_is_utf16(tmp_path):
+    # Excel's "Unicode Text (*.txt)": UTF-16 with a byte-order mark, tab separated
+    path = tmp_path / "export.txt"
+    path.write_bytes("Druck [bar]\tKraft [N]\r\n0\t0\r\n1,5\t150,5\r\n".encode("utf-16"))
+    (table,) = read_tables(path)
+    found = recognise(table)
+    assert (table.separator, table.decimal) == ("\t", ",")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5])
+
+
+def test_a_windows_1252_header_with_an_umlaut(tmp_path):
+    path = tmp_path / "lab.csv"
+    path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
+    (table,) = read_tables(path)
+    found = recognise(table)
+    assert found["length"].header == "Länge [mm]"  # as "laenge" is
+    np.testing.assert_allclose(column_values(table, found["length"]), [250.0])
+
+
+def test_a_loggers_units_row_under_the_names(tmp_path):
+    table, found = _one(tmp_path, "Messung 7\nZeit;Druck;Kraft\ns;[kPa];(N)\n0;0;1,5\n"
+                        "0,1;150;12,25\n")
+    assert table.header == ["Zeit [s]", "Druck [kPa]", "Kraft [N]"]
+    assert (table.header_row, table.title_rows) == (2, 1)
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+    # one header of names that pint also reads (P: poise, F: farad) is not a units row
+    table, found = _one(tmp_path, "Messung 7;x\nP;F\n1;2\n3;4\n", "b.csv")
+    assert table.header == ["P", "F"] and set(found) == {"pressure", "force"}
 
 
 def test_tab_separated_with_units_overridden(tmp_path):
@@ -88,6 +169,17 @@ def test_every_sheet_or_one(tmp_path):
     assert column_values(table, recognise(table)["force"]).tolist() == [3.0]
     with pytest.raises(ValueError, match="--sheet 'x': book.xlsx has no such sheet"):
         read_tables(path, "x")
+
+
+def test_a_workbooks_numbers_stored_as_text_with_decimal_commas(tmp_path):
+    path = tmp_path / "book.xlsx"
+    pd.DataFrame({"Druck [bar]": ["0", "1,5", "2,75"], "Kraft [N]": [0.0, 150.5, "300,25"]}
+                 ).to_excel(path, index=False)
+    (table,) = read_tables(path)
+    found = recognise(table)
+    assert table.decimal == ","
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5, 2.75])
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5, 300.25])
 
 
 @pytest.mark.parametrize("text, message", [

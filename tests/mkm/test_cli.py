@@ -46,6 +46,18 @@ def test_pressures_range_and_list(text, expected, mkm_run):
     np.testing.assert_allclose(frame.pressure_bar, expected, rtol=0, atol=1e-12)
 
 
+def test_a_point_past_the_braid_lock_is_flagged_on_stderr_too(mkm_run):
+    code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
+                              "--eps", "0.5", "--pressures", "0,1"])
+    assert code == 0 and out.splitlines()[2].endswith(",False,True")  # Equation 2's -120 N
+    assert err == ("mkm fem solve: warning: 2 of 2 points valid=False (past the braid lock, or "
+                   "outside the model's domain or not converged): their force_N is not a force "
+                   "of the muscle\n")
+    code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
+                              "--eps", "0.05", "--pressures", "0,1"])
+    assert code == 0 and err == ""
+
+
 def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     out = tmp_path / "sweep.csv"
     code, stdout, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
@@ -106,11 +118,27 @@ EPS = "expected a shortening ratio in [0, 1) (a fraction)"
      "start 2"),
     (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--pressures", "0:x:1"],
      "mkm fem solve: error: --pressures='x' is not a number"),
+    # Equation 2 only records L0: a typo must not reach its record
+    (["--D0", "35", "--t0", "2.5", "--eps", "0.05", "--L0", "-5"],
+     "mkm fem solve: error: --L0 -5: expected a length at rest in [10, 3000] mm"),
 ])
 def test_bad_input_is_one_line_with_status_2(args, message, mkm_run):
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", *args])
     assert code == 2 and out == ""
     assert err.startswith(message) and err.count("\n") == 1 and "Traceback" not in err
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--L0", "0"], "--L0 0: expected a length at rest in [10, 3000] mm"),
+    (["--C10", "-1"], "--C10 -1: expected a Mooney-Rivlin C10 in [0.0001, 100] MPa"),
+    (["--theta0", "0"], "--theta0 0: expected a braid angle at rest in [1, 89] deg"),
+])
+def test_a_surrogate_takes_no_muscle_outside_the_limits(args, message, mkm_run):
+    # it would flag the point and answer NaN, or a force for a negative rubber constant
+    code, out, err = mkm_run(["surrogate", "predict", "--D0", "40", "--t0", "3", "--eps", "0.1",
+                              "--pressures", "1", *args])
+    assert code == 2 and out == ""
+    assert err == f"mkm surrogate predict: error: {message}\n"
 
 
 @pytest.mark.parametrize("args, message", [
@@ -403,3 +431,19 @@ def test_an_option_several_commands_take_is_described_once():
             assert text.startswith(SHARED_HELP[option]), (command, option, text)
     assert len(seen["--no-progress"]) >= 12 and len(seen["--eps"]) >= 6
     assert "status lines" in SHARED_HELP["--no-progress"]
+
+
+@pytest.mark.parametrize("argv", [
+    ["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05", "--out",
+     "{dir}"],
+    ["design", "--require", "300N@2.5bar,eps=0.1", "--out", "{file}"],
+])
+def test_an_out_path_the_command_cannot_use_is_one_line(argv, tmp_path, mkm_run):
+    # a folder where a file goes, a file where a folder goes
+    taken = tmp_path / "taken.csv"
+    taken.write_text("a lab's file\n")
+    argv = [a.format(dir=tmp_path, file=taken) for a in argv]
+    code, out, err = mkm_run(argv)
+    assert code == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert err.startswith(f"mkm {argv[0]}") and "expected a path this command can use" in err
+    assert taken.read_text() == "a lab's file\n"

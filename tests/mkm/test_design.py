@@ -46,6 +46,12 @@ def test_requirement_syntax():
     assert parse_requirement(" 400 N @ 2 bar , eps = 10% ") == Requirement(400.0, 2.0, 0.10)
     with pytest.raises(ValueError, match="malformed: expected FORCE N@PRESSURE bar,eps=EPS"):
         parse_requirement("400N at 2bar")
+    # another unit is named as typed, not with its N or bar taken off ("300k")
+    with pytest.raises(ValueError, match=r"force '0\.4kN': expected a finite number of "
+                       r"newtons \(N\), for example 400N@2bar"):
+        parse_requirement("0.4kN@2bar,eps=0.1")
+    with pytest.raises(ValueError, match="pressure '200kPa': expected a finite number of bar"):
+        parse_requirement("400N@200kPa,eps=0.1")
     with pytest.raises(ValueError, match="force -5 N is invalid"):
         parse_requirement("-5N@2bar,eps=0.1")
 
@@ -141,6 +147,10 @@ def test_conflicting_constraints_are_named():
         search(["100N@9bar,eps=0.1"])
     with pytest.raises(ValueError, match="low 50 is above high 40"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": "50:40"})
+    # a length that is a typo is refused before any search (it searched, "no valid force")
+    with pytest.raises(ValueError, match=r"L0_mm=1e\+09 is invalid: expected a length at rest "
+                                         r"in \[10, 3000\] mm"):
+        search(["100N@2bar,eps=0.1"], {"L0_mm": 1e9})
 
 
 @pytest.mark.parametrize("argv, message", [
@@ -195,6 +205,20 @@ def test_spec_file_unknown_key(tmp_path, mkm_run):
     spec.write_text("[constraints]\nD0 = 40\n", encoding="utf-8")
     code, _, err = mkm_run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")])
     assert code == 2 and "unknown constraint(s) D0" in err
+
+
+@pytest.mark.parametrize("text, message", [
+    ("requirement = 5\n", "requirement = 5 is invalid: expected [[requirement]] tables"),
+    # TOML: a key written below [[requirement]] is that requirement's
+    ("[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = 0.1\ntop = 1\n",
+     "requirement 1 must have exactly force_N, pressure_bar and eps (it has top: keys written "
+     "below a [[requirement]] belong to it; put them above the first)"),
+])
+def test_a_spec_file_shaped_wrong_is_one_line(text, message, tmp_path, mkm_run):
+    spec = tmp_path / "spec.toml"
+    spec.write_text(text, encoding="utf-8")
+    code, out, err = mkm_run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")])
+    assert code == 2 and out == "" and err.count("\n") == 1 and message in err, err
 
 
 def test_verification_flags_from_the_fe():

@@ -344,3 +344,29 @@ def test_a_run_without_force_has_no_equation7_error_in_the_checks():
     pulled = steps.assign(force_N_mean=[10.0, 20.0, 10.0])
     out = _branch_errors(SimpleNamespace(steps=pulled), np.array([9.0, 20.0, 12.0]))
     assert out["rising"] == pytest.approx(5.0) and out["falling"] == pytest.approx(10.0)
+
+
+def test_a_slack_run_leaves_the_closed_forms_slope_fits_to_the_others(tmp_path):
+    """The published DMSP-10 (data/published/): its shortest length is slack at every pressure.
+    Writing the identification refits each closed form's angle to the runs' slopes; the slack
+    run has none, and is left out of those fits instead of failing the write."""
+    from pathlib import Path
+
+    from mkm.bench.exchange import import_table
+
+    table = Path(__file__).parents[2] / "data" / "published" / "martens_boblan_2017_forcemaps.csv"
+    runs = import_table(table, tmp_path / "runs", {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5,
+                                                   "L0_mm": None, "eps": None},
+                        select="Festo DMSP-10-250")
+    rising, slack = runs[0].path, runs[-1].path  # eps 0 and eps 0.208, 0 N throughout
+    result = identify([rising, slack], params="theta0,rubber", model="thickwall",
+                      search="model")
+    # as if an FE model was identified: thickwall is then one of the closed forms refitted
+    result.model = "axisym:mesh=coarse"
+    result.write(tmp_path / "id")
+    entries = json.loads((tmp_path / "id" / "calibration.json").read_text(encoding="utf-8"))
+    assert entries["thickwall"]["reference"] == rising.name
+    assert list(entries["thickwall"]["reference_sha256"]) == [rising.name]
+    assert 15.0 < entries["thickwall"]["theta0_deg"] < 40.0
+    # the force target of Equation 2 fits every force, 0 N included
+    assert entries["eq2-inner"]["reference"] == f"{rising.name}, {slack.name}"

@@ -87,3 +87,14 @@ def test_when_auto_agrees_but_the_measurement_is_beyond_the_tolerance_the_muscle
                          "(1.10 %), not against this measurement: the FE model itself is 4.90 % "
                          "off, more than that bound, which points to the muscle, not the model: "
                          "identify it (`mkm identify r1`).")
+
+
+def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
+    # the published DMSP-10 at its shortest length: 0 N at every step, every model valid
+    slack = [_row("eq2", math.nan, 1e-6), _row("thickwall", math.nan, 2e-5)]
+    assert verdict("Run 1 (eps 20.8 %)", slack, NAMES, 0.02) == (
+        "Run 1 (eps 20.8 %): no model can be scored: the run's largest measured force is not "
+        "above 0 N (a slack muscle), and Equation 7's error is relative to it.")
+    invalid = [_row("eq2", math.nan, 1e-6, valid=0)]
+    assert verdict("Run 1", invalid, NAMES, 0.02) == (
+        "Run 1: no model gives a valid force at any kept step: nothing to use.")
