@@ -10,7 +10,8 @@
   role's spellings, the unit checked to have the role's dimension), ``--columns`` and
   ``--units`` overriding.
 - :func:`column_values`: a recognised column's cells as numbers in the toolkit's unit
-  (bar, N, s, mm, fraction), converted by pint.
+  (bar, N, s, mm, fraction), converted by pint; a time column of clock readings
+  (``hh:mm:ss.fff``) or date-times as seconds from its first row.
 
 Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
 workbook's cached values, never its formulas).
@@ -19,6 +20,7 @@ workbook's cached values, never its formulas).
 from __future__ import annotations
 
 import csv
+import datetime
 import io
 import math
 import re
@@ -453,6 +455,10 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     (``optional``: an empty cell is NaN, a value not known)."""
     role = ROLES[column.role]
     raw = [row[column.index] for row in table.rows]
+    if column.role == "time":
+        elapsed = _elapsed_s(table, column, raw)
+        if elapsed is not None:
+            return elapsed
     values = np.empty(len(raw))
     inline: dict[str, int] = {}
     for k, cell in enumerate(raw):
@@ -484,6 +490,66 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         return values
     target = role.unit or "dimensionless"
     return (values * parse_unit(unit)).to(target).magnitude
+
+
+_CLOCK = re.compile(r"^(?P<h>\d{1,3}):(?P<m>\d{2}):(?P<s>\d{2}(?:[.,]\d*)?)$")
+_DAY_S = 86400.0
+
+
+def _clock(cell) -> tuple[str, float] | None:
+    """A cell holding a time of day (``hh:mm:ss[.fff]``, a workbook's time), a duration (a
+    workbook's time delta) or a date-time (ISO or ``dd.mm.yyyy hh:mm:ss``), as its kind and
+    seconds; ``None`` for any other cell."""
+    if isinstance(cell, datetime.datetime):
+        return "date-time", _epoch_s(cell)
+    if isinstance(cell, datetime.time):
+        return "clock", cell.hour * 3600.0 + cell.minute * 60.0 + cell.second \
+            + cell.microsecond / 1e6
+    if isinstance(cell, datetime.timedelta):
+        return "duration", cell.total_seconds()
+    text = str(cell).strip()
+    if ":" not in text:
+        return None
+    match = _CLOCK.match(text)
+    if match:
+        return "clock", (int(match["h"]) * 3600.0 + int(match["m"]) * 60.0
+                         + float(match["s"].replace(",", ".")))
+    for parse in (datetime.datetime.fromisoformat,
+                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S"),
+                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f")):
+        try:
+            return "date-time", _epoch_s(parse(text.replace(",", ".")))
+        except ValueError:
+            continue
+    return None
+
+
+def _epoch_s(moment: datetime.datetime) -> float:
+    # naive arithmetic: the machine's time zone and its summer time play no part
+    if moment.tzinfo is not None:
+        moment = moment.astimezone(datetime.UTC).replace(tzinfo=None)
+    return (moment - datetime.datetime(1970, 1, 1)).total_seconds()
+
+
+def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
+    """A time column of clock readings or date-times as seconds from its first row (``None``:
+    the column holds numbers); ``ValueError`` naming a cell that is neither, or of a kind
+    other than the first's."""
+    kinds = [_clock(cell) for cell in raw]
+    if kinds[0] is None:
+        return None
+    values = np.empty(len(raw))
+    for k, (cell, reading) in enumerate(zip(raw, kinds, strict=True)):
+        if reading is None or reading[0] != kinds[0][0]:
+            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+                             f"{column.header!r}): {_shown(cell)} is not a {kinds[0][0]} as "
+                             f"the first row's {_shown(raw[0])}: expected one kind of time "
+                             "per column")
+        values[k] = reading[1]
+    if kinds[0][0] == "clock":
+        # a time of day restarts at midnight: a step back of more than half a day is the next day
+        values += _DAY_S * np.cumsum(np.r_[0.0, np.diff(values) < -_DAY_S / 2])
+    return values - values[0]
 
 
 def _number(cell, decimal: str) -> tuple[float | None, str | None]:

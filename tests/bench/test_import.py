@@ -9,6 +9,7 @@ rounding only means every number arrived where it belongs.
 
 from __future__ import annotations
 
+import datetime
 import json
 
 import numpy as np
@@ -141,6 +142,50 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     assert summary["valid_points"].iloc[0] == len(steps)
     # thick-wall has no friction: it sits between the branches, off by about h = 5 %
     assert 2.0 < summary["max_abs_err_pct"].iloc[0] < 8.0
+
+
+def _clock_text(seconds: float, start_s: float) -> str:
+    hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
+    minutes, secs = divmod(rest, 60.0)
+    return f"{int(hours):02d}:{int(minutes):02d}:{secs:06.3f}"
+
+
+def test_a_time_column_of_clock_readings_or_date_times_is_seconds_from_the_first(tmp_path,
+                                                                                 mkm_cli):
+    frame, _, _ = _ramp()
+    seconds = frame.pop("t (s)").to_numpy()
+    numeric = tmp_path / "numeric" / "ramp.csv"
+    numeric.parent.mkdir()
+    frame.assign(**{"t (s)": seconds}).to_csv(numeric, index=False)
+    (expected,), _ = _import(mkm_cli, numeric, *MUSCLE, "--eps", "12.2%")
+    # a logger's clock, 5 s before midnight: the readings pass 00:00:00
+    clock = tmp_path / "clock" / "ramp.csv"
+    clock.parent.mkdir()
+    frame.assign(Zeit=[_clock_text(s, 86395.0) for s in seconds]).to_csv(clock, index=False)
+    # a workbook's date-time cells
+    stamped = tmp_path / "stamped" / "ramp.xlsx"
+    stamped.parent.mkdir()
+    start = datetime.datetime(2026, 3, 29, 1, 59, 50)  # summer time starts at 02:00 in Europe
+    frame.assign(time=[start + datetime.timedelta(milliseconds=round(s * 1000))
+                       for s in seconds]).to_excel(stamped, index=False)
+    for path in (clock, stamped):
+        (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+        assert run.samples["time_s"].iloc[0] == 0.0
+        # the clock is written to the millisecond
+        np.testing.assert_allclose(run.samples["time_s"], expected.samples["time_s"], atol=1e-3)
+        assert len(run.steps) == len(expected.steps)
+        np.testing.assert_allclose(run.steps["force_N_mean"], expected.steps["force_N_mean"],
+                                   atol=1e-6)
+
+
+def test_a_time_column_mixing_clock_readings_and_numbers_names_the_cell(tmp_path, mkm_cli):
+    path = tmp_path / "lab.csv"
+    path.write_text("Zeit,P,F\n10:00:00,0,1\n10:00:01,1,2\n2,2,3\n")
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1, err
+    assert ("lab.csv, cell A4 (column 'Zeit'): '2' is not a clock as the first row's "
+            "'10:00:00'") in err
 
 
 def test_a_ramp_repeated_twice_has_two_rising_and_two_falling_branches(tmp_path, mkm_cli):
