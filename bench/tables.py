@@ -14,7 +14,7 @@
   (``hh:mm:ss.fff``) or date-times as seconds from its first row.
 
 Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
-workbook's cached values, never its formulas).
+workbook's cached values; a formula's text is read only to name it where no value was saved).
 """
 
 from __future__ import annotations
@@ -467,8 +467,12 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
             continue
         number, unit = _number(cell, table.decimal)
         if number is None:
+            formula = _formula(table, k, column.index) if cell == "" else None
+            why = (f"holds the formula {_shown(formula)} without a value saved: open and save "
+                   "the workbook in Excel (or LibreOffice) to compute it, or export it as CSV"
+                   if formula else f"{_shown(cell)} is not a number")
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
-                             f"{column.header!r}): {_shown(cell)} is not a number")
+                             f"{column.header!r}): {why}")
         if not math.isfinite(number):
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
                              f"{column.header!r}): {_shown(cell)} is not a finite number")
@@ -550,6 +554,21 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
         # a time of day restarts at midnight: a step back of more than half a day is the next day
         values += _DAY_S * np.cumsum(np.r_[0.0, np.diff(values) < -_DAY_S / 2])
     return values - values[0]
+
+
+def _formula(table: RawTable, k: int, column: int) -> str | None:
+    """The formula in a workbook cell read empty: openpyxl reads the value a spreadsheet saved
+    with it, and a workbook written by a program other than a spreadsheet has none."""
+    if table.sheet is None:
+        return None
+    import openpyxl
+
+    book = openpyxl.load_workbook(table.source, read_only=True, data_only=False)
+    try:
+        cell = book[table.sheet][table.cell(k, column)]
+        return cell.value if cell.data_type == "f" else None
+    finally:
+        book.close()
 
 
 def _number(cell, decimal: str) -> tuple[float | None, str | None]:

@@ -206,3 +206,25 @@ def test_units_written_in_the_cells(tmp_path):
     table, found = _one(tmp_path, "P,F\n150 kPa,2 lbf\n250 kPa,4 lbf\n")
     np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5, 2.5])
     np.testing.assert_allclose(column_values(table, found["force"]), [2 * LBF_N, 4 * LBF_N])
+
+
+def test_a_formula_without_a_saved_value_is_named_as_a_formula(tmp_path):
+    import openpyxl
+
+    # openpyxl (as pandas, or a lab's script) writes a formula without the value a spreadsheet
+    # would save with it
+    book = openpyxl.Workbook()
+    book.active.title = "eps0"
+    for row in (["P (bar)", "F (N)"], [1.0, 150.0], [2.0, "=B2*2"]):
+        book.active.append(row)
+    path = tmp_path / "book.xlsx"
+    book.save(path)
+    (table,) = read_tables(path)
+    found = recognise(table)
+    assert column_values(table, found["pressure"]).tolist() == [1.0, 2.0]
+    with pytest.raises(ValueError) as caught:
+        column_values(table, found["force"])
+    assert str(caught.value) == (
+        "book.xlsx, sheet 'eps0', cell B3 (column 'F (N)'): holds the formula '=B2*2' without "
+        "a value saved: open and save the workbook in Excel (or LibreOffice) to compute it, or "
+        "export it as CSV")
