@@ -59,7 +59,8 @@ def register(subparsers) -> None:
     add_model_arguments(cal, theta0=False)
     cal.add_argument("--reference", metavar="CSV|RUN_DIR",
                      help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (optional L0_mm, "
-                     "direction) or a run folder of mkm acquire (default: the paper's muscle I)")
+                     "direction), a run folder of mkm acquire or mkm import, or a folder of "
+                     "them (one sweep each) (default: the paper's muscle I)")
     cal.add_argument("--target", type=_target, metavar="TARGET",
                      help="slope: dF/dP above the threshold (default for models with a "
                      "threshold pressure); force: least squares on every force (default for "
@@ -173,10 +174,6 @@ def _calibrate(args) -> int:
     from mkm.fem.paper import CASE_I_CSV
 
     args.reference = args.reference or str(CASE_I_CSV)
-    if any(c in args.reference for c in "*?"):
-        from mkm.bench.folders import one_run_folder
-
-        args.reference = str(one_run_folder(args.reference))
     reference, name, sha256 = calibration_reference(args.reference)
     fitted = calibrate(lambda **params: model_from_args(args, **params), reference,
                        args.target, getattr(args, "L0", None))

@@ -351,6 +351,27 @@ def test_calibrate_reads_an_imported_run(tmp_path, mkm_cli):
     assert theta0 == pytest.approx(THETA0, abs=0.01)
 
 
+def test_calibrate_reads_a_folder_of_runs_as_other_commands_do(tmp_path, mkm_cli):
+    # one table, two shortenings: two run folders in runs/
+    path = tmp_path / "lab.csv"
+    pressures = np.r_[PRESSURES[:5], PRESSURES[:5]]
+    eps = np.repeat([0.05, 0.15], 5)
+    pd.DataFrame({"pressure [kPa]": pressures * 100, "eps": eps,
+                  "Force (N)": np.r_[thickwall_N(PRESSURES[:5], 0.05),
+                                     thickwall_N(PRESSURES[:5], 0.15)]}).to_csv(path, index=False)
+    runs, _ = _import(mkm_cli, path, *MUSCLE)
+    assert len(runs) == 2
+    for reference in (tmp_path / "runs", tmp_path / "runs" / "*"):
+        code, out, err = mkm_cli(["fem", "calibrate", "--model", "thickwall", "--reference",
+                                  str(reference), "--dry-run"])
+        assert code == 0, err
+        assert f"against 2 runs in {reference}" in out
+        # both sweeps fitted: 10 forces, each made at 32 deg
+        assert len(out.strip().splitlines()) == 1 + 1 + 10
+        theta0 = float(out.split("theta0 = ")[1].split()[0])
+        assert theta0 == pytest.approx(THETA0, abs=0.01)
+
+
 def test_lengths_and_rest_lengths_from_the_file(tmp_path, mkm_cli):
     # two tubes of one muscle family, cut to 250 and 300 mm, each held at two lengths
     rows = []
