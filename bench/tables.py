@@ -373,7 +373,7 @@ class Column:
 
 def parse_assignments(text: str | None, option: str) -> dict[str, str]:
     """``pressure=P [bar],force=F`` (``--columns``, ``--units``) -> ``{"pressure": "P [bar]",
-    "force": "F"}``; ``ValueError`` naming a bad item."""
+    "force": "F"}``; ``ValueError`` naming a bad item or a role given twice."""
     out = {}
     # an item ends at a comma before the next NAME=, so a header may hold commas itself
     # ("force=Kraft, gemessen,pressure=Druck")
@@ -384,6 +384,9 @@ def parse_assignments(text: str | None, option: str) -> dict[str, str]:
         if not sep or role not in ROLES or not value.strip():
             raise ValueError(f"{option} item {item!r} is invalid: expected ROLE=VALUE with ROLE "
                              f"one of {', '.join(ROLES)}")
+        if role in out:
+            raise ValueError(f"{option} gives {role} twice ({role}={out[role]}, {item}): "
+                             "expected one value per role")
         out[role] = value.strip()
     return out
 

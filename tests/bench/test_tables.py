@@ -52,6 +52,18 @@ def test_a_column_named_with_a_comma_in_its_header():
         parse_assignments("pressure=P,weight=F", "--columns")
 
 
+@pytest.mark.parametrize("text, option, message", [
+    ("force=N,force=kN", "--units", "--units gives force twice (force=N, force=kN): expected one "
+     "value per role"),
+    ("pressure=P,force=F,pressure=Druck", "--columns", "--columns gives pressure twice "
+     "(pressure=P, pressure=Druck)"),
+])
+def test_a_role_given_twice_is_refused(text, option, message):
+    with pytest.raises(ValueError) as caught:
+        parse_assignments(text, option)
+    assert message in str(caught.value)
+
+
 def _one(tmp_path, text, name="lab.csv"):
     path = tmp_path / name
     path.write_text(text, encoding="utf-8")
