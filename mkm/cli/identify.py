@@ -7,10 +7,12 @@ import sys
 from mkm.cli.common import (
     add_batch_arguments,
     add_calibration_argument,
+    argtype,
     command_name,
     say,
     with_calibration,
 )
+from mkm.core.ranges import parse_seed
 from mkm.fem.options import BRAIDS
 from mkm.paths import default_out
 
@@ -48,7 +50,8 @@ def register(subparsers) -> None:
                         help="the muscle's braid when known (a --model with a braid option): "
                              "no braid model-form term in the intervals (default: the model's "
                              "own braid, the intervals holding the other's estimate too)")
-    parser.add_argument("--seed", type=int, default=0, help="bootstrap seed (default 0)")
+    parser.add_argument("--seed", type=argtype(parse_seed, "--seed"), default=0,
+                        help="bootstrap seed (default 0)")
     parser.add_argument("--out", default=None,
                         help="output folder (default mkm-out/identify/<first run>)")
     add_batch_arguments(parser)

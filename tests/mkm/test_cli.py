@@ -164,6 +164,23 @@ def test_bad_model_choice_is_one_line_with_status_2(args, message, mkm_run):
     assert err.startswith(message) and err.count("\n") == 1
 
 
+@pytest.mark.parametrize("argv, message", [
+    (["identify", "RUN", "--seed", "-1"], "mkm identify: error: --seed='-1' is invalid: "
+     "expected a seed >= 0"),
+    (["surrogate", "design", "--muscles", "2", "--seed", "-1"], "mkm surrogate design: error: "
+     "--seed='-1' is invalid: expected a seed >= 0"),
+    (["surrogate", "evaluate", "--seed", "1.5"], "mkm surrogate evaluate: error: --seed='1.5' "
+     "is not a whole number: expected a seed >= 0"),
+    (["study", "--mesh-muscles", "1", "--mesh-seed", "-2"], "mkm study: error: "
+     "--mesh-seed='-2' is invalid: expected a seed >= 0"),
+])
+def test_a_negative_seed_is_named_before_anything_runs(argv, message, mkm_run):
+    # numpy's own word came after the work: 'expected non-negative integer', no option named
+    code, out, err = mkm_run(argv)
+    assert code == 2 and out == ""
+    assert err == message + "\n"
+
+
 def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(mkm_run):
     before = CALIBRATION_FILE.read_bytes()
     code, out, _ = mkm_run(["fem", "calibrate", "--model", "thickwall", "--dry-run",
