@@ -51,7 +51,8 @@ class Role:
 ROLES = {
     "pressure": Role(("p", "pressure", "pres", "druck"), "bar"),
     "force": Role(("f", "force", "load", "kraft", "tension"), "N"),
-    "time": Role(("t", "time", "zeit", "elapsed", "elapsed time"), "s"),
+    "time": Role(("t", "time", "zeit", "elapsed", "elapsed time", "timestamp", "time stamp",
+                  "datetime", "date time", "uhrzeit", "zeitstempel"), "s"),
     "direction": Role(("direction", "dir", "branch", "sweep")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",

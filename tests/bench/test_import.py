@@ -178,6 +178,21 @@ def test_a_time_column_of_clock_readings_or_date_times_is_seconds_from_the_first
                                    atol=1e-6)
 
 
+@pytest.mark.parametrize("header", ["Timestamp", "Date/Time", "Uhrzeit"])
+def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli):
+    # was: the column not recognised, the 1-per-second record read as 23 steps of one row each
+    t = np.arange(0.0, 23.0, 1.0)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    start = datetime.datetime(2026, 3, 1, 10, 0, 0)
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({header: [(start + datetime.timedelta(seconds=s)).isoformat(sep=" ")
+                           for s in t], "P": p, "F": 150.0 * p}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0.1")
+    assert f"{header!r} -> time" in err
+    assert run.meta.imported_from["shape"] == "ramp"
+    assert run.samples["time_s"].tolist() == t.tolist()
+
+
 def test_a_time_column_mixing_clock_readings_and_numbers_names_the_cell(tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
     path.write_text("Zeit,P,F\n10:00:00,0,1\n10:00:01,1,2\n2,2,3\n")
