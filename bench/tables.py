@@ -110,6 +110,8 @@ def _column_letters(index: int) -> str:
 # --- reading ----------------------------------------------------------------------------------
 
 _NUMBER = re.compile(r"^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$")
+_NUMBER_AND_UNIT = tuple(re.compile(rf"^(?P<number>[-+.,\deE]+{lazy})\s*"
+                                    r"(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$") for lazy in ("", "?"))
 _COMMA_DECIMAL = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
 
 
@@ -584,17 +586,20 @@ def _number(cell, decimal: str) -> tuple[float | None, str | None]:
     text = str(cell).strip()
     if text.lower().lstrip("+-") in ("nan", "inf", "infinity"):
         return float(text), None
-    match = re.match(r"^(?P<number>[-+.,\deE]+?)\s*(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$", text)
-    if not match or not _NUMBER.match(match.group("number")):
+    # the longest number first: the shortest would read '1e9' as 1 'e9' ('2 E' is 2 E, though)
+    for pattern in _NUMBER_AND_UNIT:
+        match = pattern.match(text)
+        if match and _NUMBER.match(match.group("number")):
+            number, unit = match.group("number"), match.group("unit")
+            break
+    else:
         return None, None
-    number = match.group("number")
     if decimal == ",":
         number = number.replace(",", ".")
     try:
         value = float(number)
     except ValueError:
         return None, None
-    unit = match.group("unit")
     if unit is not None and parse_unit(unit) is None:
         return None, None
     return value, unit

@@ -240,3 +240,12 @@ def test_a_formula_without_a_saved_value_is_named_as_a_formula(tmp_path):
         "book.xlsx, sheet 'eps0', cell B3 (column 'F (N)'): holds the formula '=B2*2' without "
         "a value saved: open and save the workbook in Excel (or LibreOffice) to compute it, or "
         "export it as CSV")
+
+
+def test_numbers_in_scientific_notation(tmp_path):
+    # '1e2' was read as 1 with the unit 'e2', which pint does not know: 'not a number'
+    table, found = _one(tmp_path, "P,F\n0.5,5E1\n1,1e2\n1.5,1.5e2 N\n2,2.0e+02\n2.5,2.5E2N\n")
+    np.testing.assert_allclose(column_values(table, found["force"]),
+                               [50.0, 100.0, 150.0, 200.0, 250.0])
+    table, found = _one(tmp_path, "P,F\n1,2.5E-1 kN\n2,5e-1 kN\n")
+    np.testing.assert_allclose(column_values(table, found["force"]), [250.0, 500.0])
