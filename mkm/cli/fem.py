@@ -207,6 +207,11 @@ def _convergence(args) -> int:
     frame, png = convergence_study(args.out, D0_mm=args.D0, t0_mm=args.t0, eps=args.eps,
                                    pressure_bar=args.pressure, theta0_deg=args.theta0,
                                    L0_mm=args.L0, calibration=args.calibration)
-    print(frame.to_string(index=False, float_format=lambda v: f"{v:.6g}"))
+    failed = frame[~frame["converged"]]
+    print(frame.drop(columns="failure").to_string(index=False,
+                                                  float_format=lambda v: f"{v:.6g}"))
     print(f"wrote {png} and mesh_convergence.csv/.json", file=sys.stderr)
+    if len(failed):  # a NaN force is no mesh error: said with why
+        say(args, "warning", f"mesh {', '.join(failed['mesh'])} did not converge, force_N NaN: "
+            f"{failed['failure'].iloc[0]}")
     return 0

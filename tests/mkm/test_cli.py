@@ -181,6 +181,19 @@ def test_a_negative_seed_is_named_before_anything_runs(argv, message, mkm_run):
     assert err == message + "\n"
 
 
+def test_convergence_past_the_braid_lock_says_why_its_forces_are_nan(mkm_run, tmp_path):
+    # eps 0.5 is past the braid lock (eps_max 0.31 at the calibrated angle): no mesh converges;
+    # was: a table of NaN with exit 0 and not a word
+    code, out, err = mkm_run(["fem", "convergence", "--eps", "0.5", "--out", str(tmp_path)])
+    assert code == 0 and out.count("False") == 3
+    warning = err.splitlines()[-1]
+    assert warning.startswith("mkm fem convergence: warning: mesh coarse, medium, fine did not "
+                              "converge, force_N NaN: threshold search failed: the braid passes "
+                              "its locking angle before eps=0.5")
+    frame = pd.read_csv(tmp_path / "mesh_convergence.csv")
+    assert frame["failure"].str.contains("locking angle").all()
+
+
 def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(mkm_run):
     before = CALIBRATION_FILE.read_bytes()
     code, out, _ = mkm_run(["fem", "calibrate", "--model", "thickwall", "--dry-run",
