@@ -244,3 +244,13 @@ def test_shipped_dataset_rebuilds(D0_mm, t0_mm, eps):
     # about that; 1e-6 leaves margin yet catches any change of physics or mesh (coarse vs
     # medium mesh differ by 5e-4)
     np.testing.assert_allclose(rebuilt.force_N, shipped.force_N, rtol=1e-6, atol=1e-6)
+
+
+@pytest.mark.parametrize("model", ["surrogate", "auto", "friction"])
+def test_a_dataset_is_built_of_a_physics_model_only(model, tmp_path):
+    # was: a 'dataset' of the surrogate (or of auto's pick) written as if the FE had made it
+    with pytest.raises(ValueError) as caught:
+        tiny(model, out=tmp_path / "d.csv", workers=1, cache_dir=tmp_path)
+    assert str(caught.value) == (f"--model {model!r} is no physics model a dataset is built "
+                                 "of: expected one of eq2, thickwall, axisym")
+    assert not (tmp_path / "d.csv").exists()
