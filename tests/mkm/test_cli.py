@@ -194,6 +194,15 @@ def test_convergence_past_the_braid_lock_says_why_its_forces_are_nan(mkm_run, tm
     assert frame["failure"].str.contains("locking angle").all()
 
 
+@pytest.mark.parametrize("command", ["design", "evaluate"])
+def test_surrogate_fe_budget_is_named_as_the_option(command, mkm_run):
+    # evaluate said 'n_muscles=0', a name the user never typed
+    code, out, err = mkm_run(["surrogate", command, "--muscles", "0"])
+    assert code == 2 and out == ""
+    assert err == (f"mkm surrogate {command}: error: --muscles 0 is invalid: expected an FE "
+                   "budget of at least 1 muscle\n")
+
+
 def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(mkm_run):
     before = CALIBRATION_FILE.read_bytes()
     code, out, _ = mkm_run(["fem", "calibrate", "--model", "thickwall", "--dry-run",
