@@ -122,6 +122,11 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
             raise ValueError(f"--params gap needs a model with a gap between tube and braid: "
                              f"--model {model!r} has none (expected one of "
                              f"{', '.join(gapped)})")
+        if "gap" in groups and dict(fe.spec.params).get("braid") == "sliding":
+            # said before the search, not as its start value refused by the model
+            raise ValueError(f"--params gap needs the bonded braid: {fe.name} has the sliding "
+                             "sleeve, which takes no gap (expected --braid bonded and a --model "
+                             "without braid=sliding)")
         result = _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                            calibration, braid)
         result.fe_workers = runner.describe()

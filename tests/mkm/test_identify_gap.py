@@ -114,6 +114,20 @@ def test_a_gap_fitted_with_the_fe_leaves_the_sliding_braid_out_of_the_intervals(
     assert result.fit.values["gap_mm"] > 0.0
 
 
+@pytest.mark.parametrize("model, braid", [("axisym:mesh=coarse", "sliding"),
+                                          ("axisym:mesh=coarse,braid=sliding", None)])
+def test_a_gap_with_the_sliding_sleeve_is_refused_before_the_search(gapped, model, braid):
+    # was: 'gap_mm=0.2 is invalid with braid=sliding', the search's start value refused
+    _, runs = gapped
+    with pytest.raises(ValueError) as caught:
+        identify(runs, params="theta0,gap", model=model, braid=braid, search="model",
+                 workers=1, cache_dir=None)
+    assert str(caught.value) == (
+        "--params gap needs the bonded braid: axisym:braid=sliding,mesh=coarse has the sliding "
+        "sleeve, which takes no gap (expected --braid bonded and a --model without "
+        "braid=sliding)")
+
+
 def test_a_gap_asked_of_a_model_without_one_is_refused(gapped):
     # every physics rung with a rubber takes the gap now: a plug-in rung without one (the
     # thick-wall form registered without its gap parameter) is what identify must refuse
