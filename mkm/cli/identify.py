@@ -7,6 +7,7 @@ import sys
 from mkm.cli.common import (
     add_batch_arguments,
     add_calibration_argument,
+    add_progress_argument,
     argtype,
     command_name,
     say,
@@ -56,6 +57,7 @@ def register(subparsers) -> None:
                         help="output folder (default mkm-out/identify/<first run>)")
     add_batch_arguments(parser)
     add_calibration_argument(parser)
+    add_progress_argument(parser)
     parser.set_defaults(func=with_calibration(_identify))
 
 
@@ -70,8 +72,8 @@ def _identify(args) -> int:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
                           braid=args.braid,
                           seed=args.seed, workers=args.workers, scheduler=args.scheduler,
-                          notify=lambda line: print(f"{command_name(args)}: {line}",
-                                                      file=sys.stderr),
+                          notify=(lambda line: None) if args.no_progress else
+                          lambda line: print(f"{command_name(args)}: {line}", file=sys.stderr),
                           calibration=args.calibration)
     except RuntimeError as exc:  # a fit that failed: said, nothing written
         say(args, "error", f"identification failed: {exc}")

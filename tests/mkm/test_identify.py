@@ -202,6 +202,17 @@ def _copy(run, tmp_path, name):
     return target
 
 
+def test_no_progress_leaves_the_result_alone(one_run, tmp_path, mkm_run):
+    # every long command takes --no-progress (getting started); identify refused it
+    argv = ["identify", str(one_run), "--params", "theta0", "--model", "thickwall", "--search",
+            "model", "--out", str(tmp_path / "out")]
+    code, out, err = mkm_run([*argv, "--no-progress"])
+    assert code == 0 and err == ""
+    assert out.splitlines()[-1].startswith(f"wrote {tmp_path / 'out' / 'calibration.json'}")
+    code, _, err = mkm_run(argv)
+    assert code == 0 and "mkm identify: fitting theta0 on " in err
+
+
 @pytest.mark.parametrize("model, family", [("auto", "auto"), ("auto:tolerance=0.05", "auto"),
                                            ("friction", "friction"), ("surrogate", "surrogate")])
 def test_a_model_that_is_no_static_physics_is_refused(one_run, tmp_path, mkm_run, model, family):
