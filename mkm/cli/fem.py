@@ -10,6 +10,7 @@ from mkm.cli.common import (
     add_calibration_argument,
     add_geometry_arguments,
     add_model_arguments,
+    add_progress_argument,
     argtype,
     emit_prediction,
     model_from_args,
@@ -98,6 +99,7 @@ def register(subparsers) -> None:
                       help="one file per finished job; re-runs compute only what is missing "
                       "(default: %(default)s)")
     add_calibration_argument(data)
+    add_progress_argument(data)
     data.set_defaults(func=with_calibration(_dataset))
 
     conv = fem_sub.add_parser(
@@ -196,7 +198,7 @@ def _dataset(args) -> int:
 
     run = build_dataset(args.grid, args.model, mesh=args.mesh, out=args.out,
                         workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache,
-                        calibration=args.calibration)
+                        progress=not args.no_progress, calibration=args.calibration)
     print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)
     return 0
 
