@@ -210,10 +210,21 @@ def fit_loadcell(mass_kg, volts) -> dict:
             "max_abs_residual_N": float(np.abs(residual_N).max()), "n_points": int(m.size)}
 
 
+def check_masses(config: BenchConfig, mass_kg) -> None:
+    """``ValueError`` for a mass heavier than the load cell's capacity: it overloads the cell,
+    and its reading clipped at the rail would bend the fitted sensitivity without a word."""
+    heaviest, capacity_N = max(mass_kg), config.loadcell.capacity_N
+    if heaviest * STANDARD_GRAVITY > capacity_N:
+        raise ValueError(f"--masses: {heaviest:g} kg weighs {heaviest * STANDARD_GRAVITY:.0f} N, "
+                         f"beyond the load cell's loadcell.capacity_N={capacity_N:g}: expected "
+                         f"masses up to {capacity_N / STANDARD_GRAVITY:.4g} kg")
+
+
 def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
                        clock: str = "virtual", seconds: float = 3.0) -> dict:
     """Hang each mass in turn (the operator does), average the volts, fit the calibration."""
     seconds = _seconds(seconds)
+    check_masses(config, mass_kg)
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     operator = make_operator(config, device)

@@ -1,6 +1,7 @@
 """A measurement as a calibration reference: a CSV table, or the settled steps of a run folder.
 
-:func:`calibration_reference` is what ``mkm fem calibrate --reference`` reads: the table
+:func:`calibration_reference` is what ``mkm fem calibrate --reference`` reads (a CSV, a run
+folder, or a folder of them as other commands take runs): the table
 :func:`mkm.fem.calibration.check_reference` checks (``pressure_bar, D0_mm, t0_mm, eps,
 force_N``, optional ``L0_mm`` and ``direction``), with its name and the SHA-256 of the file
 read, for the calibration's provenance.
@@ -8,10 +9,12 @@ read, for the calibration's provenance.
 
 from __future__ import annotations
 
+import hashlib
 from pathlib import Path
 
 import pandas as pd
 
+from mkm.bench.folders import PATTERN_CHARACTERS, is_run_folder, run_folders
 from mkm.bench.storage import load_run
 from mkm.core.records import file_sha256
 from mkm.fem.calibration import check_reference, read_reference
@@ -21,12 +24,32 @@ def calibration_reference(path) -> tuple[pd.DataFrame, str, str | None]:
     """The reference table at ``path``, its name and the SHA-256 of the file read.
 
     A run folder gives its settled steps: the measured mean pressure and force of each step,
-    its direction, and the muscle from run.json.
+    its direction, and the muscle from run.json. A folder of run folders, or a pattern, gives
+    theirs together, one sweep per muscle state (the name says how many runs; the SHA-256 is
+    that of their steps.csv files' names and SHA-256 in order).
     """
+    text = str(path)
     path = Path(path)
+    if any(c in text for c in PATTERN_CHARACTERS) or (path.is_dir() and not is_run_folder(path)):
+        runs = run_folders([text])
+        if len(runs) > 1:
+            frames, shas = zip(*(_run_steps(run) for run in runs), strict=True)
+            reference = check_reference(pd.concat(frames, ignore_index=True),
+                                        f"{len(runs)} runs in {text} (settled steps)")
+            listed = "".join(f"{run.name} {sha}\n" for run, sha in zip(runs, shas, strict=True))
+            return reference, f"{len(runs)} runs in {text}", hashlib.sha256(
+                listed.encode()).hexdigest()
+        path = runs[0]
     if not path.is_dir():
         sha = file_sha256(path) if path.is_file() else None
         return read_reference(path), path.name, sha
+    frame, sha = _run_steps(path)
+    reference = check_reference(frame, f"run {path} (settled steps of steps.csv)")
+    return reference, f"run {path.name}", sha
+
+
+def _run_steps(path: Path) -> tuple[pd.DataFrame, str]:
+    """A run folder's settled steps as reference rows, and the SHA-256 of its steps.csv."""
     run = load_run(path)
     if "steps.csv is missing" in run.problems:
         raise ValueError(f"run {path} has no steps.csv: expected its settled steps as the "
@@ -37,5 +60,4 @@ def calibration_reference(path) -> tuple[pd.DataFrame, str, str | None]:
                           "force_N": steps["force_N_mean"], "direction": steps["direction"],
                           "D0_mm": muscle.D0_mm, "t0_mm": muscle.t0_mm, "eps": muscle.eps,
                           "L0_mm": muscle.L0_mm})
-    reference = check_reference(frame, f"run {path} (settled steps of steps.csv)")
-    return reference, f"run {path.name}", file_sha256(path / "steps.csv")
+    return frame, file_sha256(path / "steps.csv")

@@ -31,6 +31,7 @@ from mkm.bench.storage import (
     Sample,
     iter_samples,
     load_run,
+    read_meta,
 )
 from mkm.core.guards import regular_file
 from mkm.core.records import file_sha256, provenance
@@ -40,6 +41,7 @@ def overlay_config(run_dir: str | Path, path: str | Path) -> BenchConfig:
     """The run's own configuration (its ``config.toml``) with every section of the TOML file
     ``path`` laid over it: a file holding only ``[loadcell]`` recalibrates and changes nothing
     else. The text kept is the run's, its replaced sections swapped for the file's."""
+    read_meta(run_dir)  # a folder that is none is named so, not as a missing config.toml
     run_text, run_data = read_toml_file(regular_file(Path(run_dir) / "config.toml",
                                                      "the run's config "), "the run's config ")
     new_text, new_data = read_toml_file(path, "config ")

@@ -10,15 +10,17 @@
   role's spellings, the unit checked to have the role's dimension), ``--columns`` and
   ``--units`` overriding.
 - :func:`column_values`: a recognised column's cells as numbers in the toolkit's unit
-  (bar, N, s, mm, fraction), converted by pint.
+  (bar, N, s, mm, fraction), converted by pint; a time column of clock readings
+  (``hh:mm:ss.fff``) or date-times as seconds from its first row.
 
 Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
-workbook's cached values, never its formulas).
+workbook's cached values; a formula's text is read only to name it where no value was saved).
 """
 
 from __future__ import annotations
 
 import csv
+import datetime
 import io
 import math
 import re
@@ -49,7 +51,8 @@ class Role:
 ROLES = {
     "pressure": Role(("p", "pressure", "pres", "druck"), "bar"),
     "force": Role(("f", "force", "load", "kraft", "tension"), "N"),
-    "time": Role(("t", "time", "zeit", "elapsed", "elapsed time"), "s"),
+    "time": Role(("t", "time", "zeit", "elapsed", "elapsed time", "timestamp", "time stamp",
+                  "datetime", "date time", "uhrzeit", "zeitstempel"), "s"),
     "direction": Role(("direction", "dir", "branch", "sweep")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
@@ -107,6 +110,8 @@ def _column_letters(index: int) -> str:
 # --- reading ----------------------------------------------------------------------------------
 
 _NUMBER = re.compile(r"^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$")
+_NUMBER_AND_UNIT = tuple(re.compile(rf"^(?P<number>[-+.,\deE]+{lazy})\s*"
+                                    r"(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$") for lazy in ("", "?"))
 _COMMA_DECIMAL = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
 
 
@@ -371,7 +376,7 @@ class Column:
 
 def parse_assignments(text: str | None, option: str) -> dict[str, str]:
     """``pressure=P [bar],force=F`` (``--columns``, ``--units``) -> ``{"pressure": "P [bar]",
-    "force": "F"}``; ``ValueError`` naming a bad item."""
+    "force": "F"}``; ``ValueError`` naming a bad item or a role given twice."""
     out = {}
     # an item ends at a comma before the next NAME=, so a header may hold commas itself
     # ("force=Kraft, gemessen,pressure=Druck")
@@ -382,6 +387,9 @@ def parse_assignments(text: str | None, option: str) -> dict[str, str]:
         if not sep or role not in ROLES or not value.strip():
             raise ValueError(f"{option} item {item!r} is invalid: expected ROLE=VALUE with ROLE "
                              f"one of {', '.join(ROLES)}")
+        if role in out:
+            raise ValueError(f"{option} gives {role} twice ({role}={out[role]}, {item}): "
+                             "expected one value per role")
         out[role] = value.strip()
     return out
 
@@ -453,6 +461,10 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     (``optional``: an empty cell is NaN, a value not known)."""
     role = ROLES[column.role]
     raw = [row[column.index] for row in table.rows]
+    if column.role == "time":
+        elapsed = _elapsed_s(table, column, raw)
+        if elapsed is not None:
+            return elapsed
     values = np.empty(len(raw))
     inline: dict[str, int] = {}
     for k, cell in enumerate(raw):
@@ -461,8 +473,12 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
             continue
         number, unit = _number(cell, table.decimal)
         if number is None:
+            formula = _formula(table, k, column.index) if cell == "" else None
+            why = (f"holds the formula {_shown(formula)} without a value saved: open and save "
+                   "the workbook in Excel (or LibreOffice) to compute it, or export it as CSV"
+                   if formula else f"{_shown(cell)} is not a number")
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
-                             f"{column.header!r}): {_shown(cell)} is not a number")
+                             f"{column.header!r}): {why}")
         if not math.isfinite(number):
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
                              f"{column.header!r}): {_shown(cell)} is not a finite number")
@@ -486,6 +502,81 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     return (values * parse_unit(unit)).to(target).magnitude
 
 
+_CLOCK = re.compile(r"^(?P<h>\d{1,3}):(?P<m>\d{2}):(?P<s>\d{2}(?:[.,]\d*)?)$")
+_DAY_S = 86400.0
+
+
+def _clock(cell) -> tuple[str, float] | None:
+    """A cell holding a time of day (``hh:mm:ss[.fff]``, a workbook's time), a duration (a
+    workbook's time delta) or a date-time (ISO or ``dd.mm.yyyy hh:mm:ss``), as its kind and
+    seconds; ``None`` for any other cell."""
+    if isinstance(cell, datetime.datetime):
+        return "date-time", _epoch_s(cell)
+    if isinstance(cell, datetime.time):
+        return "clock", cell.hour * 3600.0 + cell.minute * 60.0 + cell.second \
+            + cell.microsecond / 1e6
+    if isinstance(cell, datetime.timedelta):
+        return "duration", cell.total_seconds()
+    text = str(cell).strip()
+    if ":" not in text:
+        return None
+    match = _CLOCK.match(text)
+    if match:
+        return "clock", (int(match["h"]) * 3600.0 + int(match["m"]) * 60.0
+                         + float(match["s"].replace(",", ".")))
+    for parse in (datetime.datetime.fromisoformat,
+                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S"),
+                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f")):
+        try:
+            return "date-time", _epoch_s(parse(text.replace(",", ".")))
+        except ValueError:
+            continue
+    return None
+
+
+def _epoch_s(moment: datetime.datetime) -> float:
+    # naive arithmetic: the machine's time zone and its summer time play no part
+    if moment.tzinfo is not None:
+        moment = moment.astimezone(datetime.UTC).replace(tzinfo=None)
+    return (moment - datetime.datetime(1970, 1, 1)).total_seconds()
+
+
+def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
+    """A time column of clock readings or date-times as seconds from its first row (``None``:
+    the column holds numbers); ``ValueError`` naming a cell that is neither, or of a kind
+    other than the first's."""
+    kinds = [_clock(cell) for cell in raw]
+    if kinds[0] is None:
+        return None
+    values = np.empty(len(raw))
+    for k, (cell, reading) in enumerate(zip(raw, kinds, strict=True)):
+        if reading is None or reading[0] != kinds[0][0]:
+            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+                             f"{column.header!r}): {_shown(cell)} is not a {kinds[0][0]} as "
+                             f"the first row's {_shown(raw[0])}: expected one kind of time "
+                             "per column")
+        values[k] = reading[1]
+    if kinds[0][0] == "clock":
+        # a time of day restarts at midnight: a step back of more than half a day is the next day
+        values += _DAY_S * np.cumsum(np.r_[0.0, np.diff(values) < -_DAY_S / 2])
+    return values - values[0]
+
+
+def _formula(table: RawTable, k: int, column: int) -> str | None:
+    """The formula in a workbook cell read empty: openpyxl reads the value a spreadsheet saved
+    with it, and a workbook written by a program other than a spreadsheet has none."""
+    if table.sheet is None:
+        return None
+    import openpyxl
+
+    book = openpyxl.load_workbook(table.source, read_only=True, data_only=False)
+    try:
+        cell = book[table.sheet][table.cell(k, column)]
+        return cell.value if cell.data_type == "f" else None
+    finally:
+        book.close()
+
+
 def _number(cell, decimal: str) -> tuple[float | None, str | None]:
     """A cell as a number and the unit written after it (``'2,5 bar'`` -> 2.5, ``'bar'``)."""
     if isinstance(cell, bool):
@@ -495,17 +586,20 @@ def _number(cell, decimal: str) -> tuple[float | None, str | None]:
     text = str(cell).strip()
     if text.lower().lstrip("+-") in ("nan", "inf", "infinity"):
         return float(text), None
-    match = re.match(r"^(?P<number>[-+.,\deE]+?)\s*(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$", text)
-    if not match or not _NUMBER.match(match.group("number")):
+    # the longest number first: the shortest would read '1e9' as 1 'e9' ('2 E' is 2 E, though)
+    for pattern in _NUMBER_AND_UNIT:
+        match = pattern.match(text)
+        if match and _NUMBER.match(match.group("number")):
+            number, unit = match.group("number"), match.group("unit")
+            break
+    else:
         return None, None
-    number = match.group("number")
     if decimal == ",":
         number = number.replace(",", ".")
     try:
         value = float(number)
     except ValueError:
         return None, None
-    unit = match.group("unit")
     if unit is not None and parse_unit(unit) is None:
         return None, None
     return value, unit

@@ -202,7 +202,14 @@ def parse_specs(text: str) -> list[Spec]:
             groups.append(item)
     if not groups:
         raise ValueError(f"--models {text!r} is empty: expected for example eq2,thickwall")
-    return [parse_spec(g) for g in groups]
+    specs = [parse_spec(g) for g in groups]
+    seen: dict[str, str] = {}
+    for group, spec in zip(groups, specs, strict=True):
+        if spec.text in seen:  # scored twice, its rows in every table twice
+            raise ValueError(f"--models {text!r} names {spec.text} twice ({seen[spec.text]!r} "
+                             f"and {group!r}): expected each model once")
+        seen[spec.text] = group
+    return specs
 
 
 def describe() -> str:

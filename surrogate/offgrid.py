@@ -45,7 +45,8 @@ def evaluate_offgrid(model: SurrogateForceModel, n_muscles: int = 12, seed: int 
     per-muscle largest |Err%|, pooled RMSE, coverage, the out-of-box check, provenance).
     """
     if int(n_muscles) != n_muscles or n_muscles < 1:
-        raise ValueError(f"n_muscles={n_muscles!r} is invalid: expected at least 1 muscle")
+        raise ValueError(f"--muscles {n_muscles!r} is invalid: expected an FE budget of at "
+                         "least 1 muscle")
     if seed is None:
         seed = int(np.random.SeedSequence().entropy % 2**32)  # fresh, and recorded
     muscles = random_muscles(n_muscles, seed, muscle_box(model))

@@ -35,12 +35,17 @@ from mkm.fem.batch import (
 )
 from mkm.fem.calibration import Calibration
 from mkm.fem.dataset.grid import Grid, load_grid
-from mkm.fem.ladder import entry, make_model
+from mkm.fem.ladder import entry, make_model, static_names
 
 __all__ = ["COLUMNS", "DEFAULT_OUT", "DatasetRun", "Job", "JobCache", "build_dataset",
            "default_cache_dir", "make_jobs", "model_version", "run_job", "run_jobs"]
 
 DEFAULT_OUT = Path("data/mkm_dataset.csv")
+
+
+#: families no dataset is built of: the surrogate and auto's pick are fitted to a dataset,
+#: friction's branches and creep belong to a history, not to a muscle's static force
+NOT_PHYSICS = ("surrogate", "auto", "friction")
 
 
 def make_jobs(grid: Grid, model: str, mesh: str | None = None,
@@ -51,6 +56,9 @@ def make_jobs(grid: Grid, model: str, mesh: str | None = None,
     Resolving theta0 here makes the cache key change when the calibration does, and sends
     workers the angle itself rather than a lookup in their own ``fem/calibration.json``.
     """
+    if entry(model).family in NOT_PHYSICS:
+        raise ValueError(f"--model {model!r} is no physics model a dataset is built of: "
+                         f"expected one of {', '.join(static_names())}")
     jobs = []
     for D0, t0, e, L0, theta0 in itertools.product(grid.D0_mm, grid.t0_mm, grid.eps,
                                                    grid.L0_mm, grid.theta0_deg):

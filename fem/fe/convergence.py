@@ -26,8 +26,9 @@ def mesh_convergence(D0_mm: float = 35.0, t0_mm: float = 2.5, eps: float = 0.05,
     """Force of one isometric point per mesh level (default: muscle I at 2.5 bar).
 
     Returns one row per level: ``mesh``, ``elements_wall``, ``elements_length``, ``dofs``,
-    ``force_N``, ``threshold_pressure_bar``, ``seconds``, ``iterations``, ``converged`` and
-    ``force_change_vs_finest`` (relative to the last level).
+    ``force_N``, ``threshold_pressure_bar``, ``seconds``, ``iterations``, ``converged``,
+    ``failure`` (why a level did not converge; empty otherwise) and ``force_change_vs_finest``
+    (relative to the last level).
     """
     validate_inputs(pressure_bar, D0_mm, t0_mm, eps)
     theta0 = Axisym(theta0_deg=theta0_deg, calibration=calibration).params()["theta0_deg"]
@@ -41,7 +42,8 @@ def mesh_convergence(D0_mm: float = 35.0, t0_mm: float = 2.5, eps: float = 0.05,
                      "threshold_pressure_bar": float(out["threshold_pressure_bar"][0]),
                      "seconds": time.perf_counter() - start,
                      "iterations": int(out["iterations"][0]),
-                     "converged": bool(out["converged"][0])})
+                     "converged": bool(out["converged"][0]),
+                     "failure": str(out["failure"][0])})
     frame = pd.DataFrame(rows)
     finest = frame["force_N"].iloc[-1]
     frame["force_change_vs_finest"] = (frame["force_N"] - finest) / finest

@@ -225,10 +225,16 @@ def _tare(args) -> int:
 
 def _calibrate_loadcell(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
-    from mkm.bench.procedures import calibrate_loadcell, fit_loadcell, loadcell_table
+    from mkm.bench.procedures import (
+        calibrate_loadcell,
+        check_masses,
+        fit_loadcell,
+        loadcell_table,
+    )
 
     if args.volts is not None:  # volts measured elsewhere: nothing is driven
         config = _config(args)
+        check_masses(config, args.masses)
         out = fit_loadcell(args.masses, args.volts)
     else:
         config = _hardware_config(args, "calibrate-loadcell")

@@ -94,9 +94,9 @@ def register(subparsers) -> None:
                    "eps, theta0 [deg], rubber [%% of C10 and C01]), e.g. "
                    "D0=0.3,t0=0.1,theta0=1,rubber=10%%; every requirement is then met with "
                    "--probability and designs.csv gets probability_r<k> columns")
-    p.add_argument("--probability", type=argtype(parse_number, "--probability"), default=0.95,
+    p.add_argument("--probability", type=argtype(parse_number, "--probability"),
                    help="with --tolerance: the probability each design meets every "
-                   "requirement (default: %(default)s)")
+                   "requirement (default: 0.95)")
     p.add_argument("--objective", type=_objective, metavar="OBJECTIVE",
                    help="ranking of the designs: min-outer-diameter (default), "
                    "min-rubber-volume or max-margin")
@@ -130,11 +130,17 @@ def _design(args) -> int:
     if not args.require and not args.spec:
         raise ValueError("no requirement given: expected --require F@P,eps=E (for example "
                          "--require 400N@2bar,eps=0.10) or --spec FILE")
+    if args.probability is not None and args.tolerance is None:
+        # a nominal design has no probability: the number would be dropped without a word
+        raise ValueError(f"--probability {args.probability:g} needs --tolerance: expected the "
+                         "tolerances the muscle is built to, e.g. --tolerance "
+                         "D0=0.3,t0=0.1,theta0=1")
+    robust = {} if args.probability is None else {"probability": args.probability}
     result = run_design(args.require, constraints, args.objective, args.top, spec=args.spec,
                         mesh=args.mesh, surrogate=args.surrogate,
                         progress=not args.no_progress,
                         cache_dir=None if args.no_cache else args.cache or DEFAULT_CACHE_DIR,
-                        tolerances=args.tolerance, probability=args.probability,
+                        tolerances=args.tolerance, **robust,
                         workers=args.workers, scheduler=args.scheduler,
                         calibration=args.calibration)
     write_design(result, Path(args.out or default_out("design")))

@@ -10,6 +10,7 @@ from mkm.cli.common import (
     add_calibration_argument,
     add_geometry_arguments,
     add_model_arguments,
+    add_progress_argument,
     argtype,
     emit_prediction,
     model_from_args,
@@ -59,7 +60,8 @@ def register(subparsers) -> None:
     add_model_arguments(cal, theta0=False)
     cal.add_argument("--reference", metavar="CSV|RUN_DIR",
                      help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (optional L0_mm, "
-                     "direction) or a run folder of mkm acquire (default: the paper's muscle I)")
+                     "direction), a run folder of mkm acquire or mkm import, or a folder of "
+                     "them (one sweep each) (default: the paper's muscle I)")
     cal.add_argument("--target", type=_target, metavar="TARGET",
                      help="slope: dF/dP above the threshold (default for models with a "
                      "threshold pressure); force: least squares on every force (default for "
@@ -97,6 +99,7 @@ def register(subparsers) -> None:
                       help="one file per finished job; re-runs compute only what is missing "
                       "(default: %(default)s)")
     add_calibration_argument(data)
+    add_progress_argument(data)
     data.set_defaults(func=with_calibration(_dataset))
 
     conv = fem_sub.add_parser(
@@ -173,10 +176,6 @@ def _calibrate(args) -> int:
     from mkm.fem.paper import CASE_I_CSV
 
     args.reference = args.reference or str(CASE_I_CSV)
-    if any(c in args.reference for c in "*?"):
-        from mkm.bench.folders import one_run_folder
-
-        args.reference = str(one_run_folder(args.reference))
     reference, name, sha256 = calibration_reference(args.reference)
     fitted = calibrate(lambda **params: model_from_args(args, **params), reference,
                        args.target, getattr(args, "L0", None))
@@ -199,7 +198,7 @@ def _dataset(args) -> int:
 
     run = build_dataset(args.grid, args.model, mesh=args.mesh, out=args.out,
                         workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache,
-                        calibration=args.calibration)
+                        progress=not args.no_progress, calibration=args.calibration)
     print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)
     return 0
 
@@ -210,6 +209,11 @@ def _convergence(args) -> int:
     frame, png = convergence_study(args.out, D0_mm=args.D0, t0_mm=args.t0, eps=args.eps,
                                    pressure_bar=args.pressure, theta0_deg=args.theta0,
                                    L0_mm=args.L0, calibration=args.calibration)
-    print(frame.to_string(index=False, float_format=lambda v: f"{v:.6g}"))
+    failed = frame[~frame["converged"]]
+    print(frame.drop(columns="failure").to_string(index=False,
+                                                  float_format=lambda v: f"{v:.6g}"))
     print(f"wrote {png} and mesh_convergence.csv/.json", file=sys.stderr)
+    if len(failed):  # a NaN force is no mesh error: said with why
+        say(args, "warning", f"mesh {', '.join(failed['mesh'])} did not converge, force_N NaN: "
+            f"{failed['failure'].iloc[0]}")
     return 0

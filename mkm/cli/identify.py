@@ -7,10 +7,13 @@ import sys
 from mkm.cli.common import (
     add_batch_arguments,
     add_calibration_argument,
+    add_progress_argument,
+    argtype,
     command_name,
     say,
     with_calibration,
 )
+from mkm.core.ranges import parse_seed
 from mkm.fem.options import BRAIDS
 from mkm.paths import default_out
 
@@ -48,11 +51,13 @@ def register(subparsers) -> None:
                         help="the muscle's braid when known (a --model with a braid option): "
                              "no braid model-form term in the intervals (default: the model's "
                              "own braid, the intervals holding the other's estimate too)")
-    parser.add_argument("--seed", type=int, default=0, help="bootstrap seed (default 0)")
+    parser.add_argument("--seed", type=argtype(parse_seed, "--seed"), default=0,
+                        help="bootstrap seed (default 0)")
     parser.add_argument("--out", default=None,
                         help="output folder (default mkm-out/identify/<first run>)")
     add_batch_arguments(parser)
     add_calibration_argument(parser)
+    add_progress_argument(parser)
     parser.set_defaults(func=with_calibration(_identify))
 
 
@@ -67,8 +72,8 @@ def _identify(args) -> int:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
                           braid=args.braid,
                           seed=args.seed, workers=args.workers, scheduler=args.scheduler,
-                          notify=lambda line: print(f"{command_name(args)}: {line}",
-                                                      file=sys.stderr),
+                          notify=(lambda line: None) if args.no_progress else
+                          lambda line: print(f"{command_name(args)}: {line}", file=sys.stderr),
                           calibration=args.calibration)
     except RuntimeError as exc:  # a fit that failed: said, nothing written
         say(args, "error", f"identification failed: {exc}")

@@ -19,7 +19,7 @@ from mkm.cli.common import (
     shared_help,
     with_calibration,
 )
-from mkm.core.ranges import parse_number
+from mkm.core.ranges import parse_number, parse_seed
 from mkm.paths import default_cache, default_out
 from mkm.progress import summary_line
 from mkm.surrogate import kinds
@@ -123,7 +123,8 @@ def register(subparsers) -> None:
         epilog="example: mkm surrogate design --muscles 24 --mesh medium")
     design.add_argument("--muscles", required=True, type=int,
                         help="FE budget: number of muscles (one FE sweep each)")
-    design.add_argument("--seed", type=int, default=0, help="Latin hypercube seed (default 0)")
+    design.add_argument("--seed", type=argtype(parse_seed, "--seed"), default=0,
+                        help="Latin hypercube seed (default 0)")
     design.add_argument("--adaptive", type=int, default=0,
                         help="then this many more muscles where the surrogate of the first is "
                         "least sure (default 0); with --range practical: only this many of the "
@@ -169,7 +170,8 @@ def register(subparsers) -> None:
                           help="folder written by `mkm surrogate train`, or default")
     evaluate.add_argument("--muscles", type=int, default=12,
                           help="FE budget: random muscles (default 12)")
-    evaluate.add_argument("--seed", type=int, help="seed of the draw (default: a fresh one)")
+    evaluate.add_argument("--seed", type=argtype(parse_seed, "--seed"),
+                          help="seed of the draw (default: a fresh one)")
     evaluate.add_argument("--mesh", default="fine", choices=choices("axisym", "mesh"),
                           help="FE mesh level of the reference (default fine, the converged one)")
     add_batch_arguments(evaluate)

@@ -10,9 +10,10 @@ from mkm.cli.common import (
     add_batch_arguments,
     add_calibration_argument,
     add_progress_argument,
+    argtype,
     with_calibration,
 )
-from mkm.core.ranges import parse_fraction
+from mkm.core.ranges import parse_fraction, parse_seed
 
 
 def register(subparsers) -> None:
@@ -66,7 +67,7 @@ def register(subparsers) -> None:
                        "fresh random muscles of the practical range (mesh_errors.csv: the "
                        "bound `auto` gives a mesh at the scale of each call; --update-shipped "
                        "replaces mkm/data/mesh_errors.csv); ~3 FE sweeps per muscle")
-    study.add_argument("--mesh-seed", type=int,
+    study.add_argument("--mesh-seed", type=argtype(parse_seed, "--mesh-seed"),
                        help="seed of --mesh-muscles' draw (default: fresh, recorded)")
     study.add_argument("--mesh-only", action="store_true",
                        help="only the --mesh-muscles measurement, not the study")

@@ -41,6 +41,17 @@ def parse_number(text: str, name: str) -> float:
     return value
 
 
+def parse_seed(text: str, name: str) -> int:
+    """``text`` as a random seed: a whole number >= 0 (numpy's generators take no other)."""
+    try:
+        value = int(str(text).strip())
+    except ValueError:
+        raise ValueError(f"{name}={text!r} is not a whole number: expected a seed >= 0") from None
+    if value < 0:
+        raise ValueError(f"{name}={text!r} is invalid: expected a seed >= 0")
+    return value
+
+
 def parse_range(text: str, name: str) -> np.ndarray:
     """``"start:stop:step"``, stop included (tolerant to round-off), as a float array."""
     parts = text.strip().split(":")

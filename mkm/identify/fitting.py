@@ -154,9 +154,16 @@ class ModelStatic(StaticSource):
     again; None: no cache)."""
 
     def __init__(self, spec: str, runner=None, cache_dir=DEFAULT_CACHE_DIR):
+        from mkm.fem.ladder import STATIC_FAMILIES
         from mkm.registry import parse_spec
 
         self.spec = parse_spec(spec)
+        if self.spec.entry.family not in STATIC_FAMILIES:
+            # auto, friction and the surrogate pick, add to or stand for a static physics model:
+            # none is the physics the fit is confirmed with
+            raise ValueError(f"--model {spec!r} is not a static physics model (its family: "
+                             f"{self.spec.entry.family}): expected one that takes theta0_deg, "
+                             "C10_MPa and C01_MPa (axisym, thickwall)")
         if "C10_MPa" not in self.spec.entry.parameters:
             raise ValueError(f"--model {spec!r} has no rubber: expected a model that takes "
                              "theta0_deg, C10_MPa and C01_MPa (axisym, thickwall)")

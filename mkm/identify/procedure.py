@@ -122,6 +122,11 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
             raise ValueError(f"--params gap needs a model with a gap between tube and braid: "
                              f"--model {model!r} has none (expected one of "
                              f"{', '.join(gapped)})")
+        if "gap" in groups and dict(fe.spec.params).get("braid") == "sliding":
+            # said before the search, not as its start value refused by the model
+            raise ValueError(f"--params gap needs the bonded braid: {fe.name} has the sliding "
+                             "sleeve, which takes no gap (expected --braid bonded and a --model "
+                             "without braid=sliding)")
         result = _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                            calibration, braid)
         result.fe_workers = runner.describe()
@@ -390,7 +395,8 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
     - ``braid`` (when the muscle's braid is not given and ``fe`` has the option): the other
       braid of :data:`mkm.fem.options.BRAIDS` against ``fe``'s at the optimum: the runs cannot
       tell a sliding sleeve from a bonded braid (chi2/nu stays near 1), so the intervals hold
-      both (one-sided: the other braid's estimate).
+      both (one-sided: the other braid's estimate); not with a fitted gap, which only the
+      bonded braid takes.
 
     Returns ``{term: {"kind", "what", "shift": {name: value}}}`` (and a ``skipped`` reason
     where a term does not apply)."""
@@ -407,6 +413,10 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
         terms["braid"] = {"skipped": f"the braid is given ({braid})"}
     elif "braid" not in fe.spec.entry.parameters:
         terms["braid"] = {"skipped": f"{fe.name} has no braid option"}
+    elif "gap_mm" in best.names:
+        # the sliding sleeve takes no gap: there is no other braid's estimate to hold
+        terms["braid"] = {"skipped": "a gap is fitted, and a gap is modelled with the bonded "
+                                     "braid only"}
     else:
         current = dict(fe.spec.params).get("braid", BRAIDS[0])
         other = next(b for b in BRAIDS if b != current)

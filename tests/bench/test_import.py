@@ -9,6 +9,7 @@ rounding only means every number arrived where it belongs.
 
 from __future__ import annotations
 
+import datetime
 import json
 
 import numpy as np
@@ -141,6 +142,65 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     assert summary["valid_points"].iloc[0] == len(steps)
     # thick-wall has no friction: it sits between the branches, off by about h = 5 %
     assert 2.0 < summary["max_abs_err_pct"].iloc[0] < 8.0
+
+
+def _clock_text(seconds: float, start_s: float) -> str:
+    hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
+    minutes, secs = divmod(rest, 60.0)
+    return f"{int(hours):02d}:{int(minutes):02d}:{secs:06.3f}"
+
+
+def test_a_time_column_of_clock_readings_or_date_times_is_seconds_from_the_first(tmp_path,
+                                                                                 mkm_cli):
+    frame, _, _ = _ramp()
+    seconds = frame.pop("t (s)").to_numpy()
+    numeric = tmp_path / "numeric" / "ramp.csv"
+    numeric.parent.mkdir()
+    frame.assign(**{"t (s)": seconds}).to_csv(numeric, index=False)
+    (expected,), _ = _import(mkm_cli, numeric, *MUSCLE, "--eps", "12.2%")
+    # a logger's clock, 5 s before midnight: the readings pass 00:00:00
+    clock = tmp_path / "clock" / "ramp.csv"
+    clock.parent.mkdir()
+    frame.assign(Zeit=[_clock_text(s, 86395.0) for s in seconds]).to_csv(clock, index=False)
+    # a workbook's date-time cells
+    stamped = tmp_path / "stamped" / "ramp.xlsx"
+    stamped.parent.mkdir()
+    start = datetime.datetime(2026, 3, 29, 1, 59, 50)  # summer time starts at 02:00 in Europe
+    frame.assign(time=[start + datetime.timedelta(milliseconds=round(s * 1000))
+                       for s in seconds]).to_excel(stamped, index=False)
+    for path in (clock, stamped):
+        (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+        assert run.samples["time_s"].iloc[0] == 0.0
+        # the clock is written to the millisecond
+        np.testing.assert_allclose(run.samples["time_s"], expected.samples["time_s"], atol=1e-3)
+        assert len(run.steps) == len(expected.steps)
+        np.testing.assert_allclose(run.steps["force_N_mean"], expected.steps["force_N_mean"],
+                                   atol=1e-6)
+
+
+@pytest.mark.parametrize("header", ["Timestamp", "Date/Time", "Uhrzeit"])
+def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli):
+    # was: the column not recognised, the 1-per-second record read as 23 steps of one row each
+    t = np.arange(0.0, 23.0, 1.0)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    start = datetime.datetime(2026, 3, 1, 10, 0, 0)
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({header: [(start + datetime.timedelta(seconds=s)).isoformat(sep=" ")
+                           for s in t], "P": p, "F": 150.0 * p}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0.1")
+    assert f"{header!r} -> time" in err
+    assert run.meta.imported_from["shape"] == "ramp"
+    assert run.samples["time_s"].tolist() == t.tolist()
+
+
+def test_a_time_column_mixing_clock_readings_and_numbers_names_the_cell(tmp_path, mkm_cli):
+    path = tmp_path / "lab.csv"
+    path.write_text("Zeit,P,F\n10:00:00,0,1\n10:00:01,1,2\n2,2,3\n")
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1, err
+    assert ("lab.csv, cell A4 (column 'Zeit'): '2' is not a clock as the first row's "
+            "'10:00:00'") in err
 
 
 def test_a_ramp_repeated_twice_has_two_rising_and_two_falling_branches(tmp_path, mkm_cli):
@@ -304,6 +364,27 @@ def test_calibrate_reads_an_imported_run(tmp_path, mkm_cli):
     # the forces were made at 32 deg; 6 significant digits stored: the angle back within 0.01
     theta0 = float(out.split("theta0 = ")[1].split()[0])
     assert theta0 == pytest.approx(THETA0, abs=0.01)
+
+
+def test_calibrate_reads_a_folder_of_runs_as_other_commands_do(tmp_path, mkm_cli):
+    # one table, two shortenings: two run folders in runs/
+    path = tmp_path / "lab.csv"
+    pressures = np.r_[PRESSURES[:5], PRESSURES[:5]]
+    eps = np.repeat([0.05, 0.15], 5)
+    pd.DataFrame({"pressure [kPa]": pressures * 100, "eps": eps,
+                  "Force (N)": np.r_[thickwall_N(PRESSURES[:5], 0.05),
+                                     thickwall_N(PRESSURES[:5], 0.15)]}).to_csv(path, index=False)
+    runs, _ = _import(mkm_cli, path, *MUSCLE)
+    assert len(runs) == 2
+    for reference in (tmp_path / "runs", tmp_path / "runs" / "*"):
+        code, out, err = mkm_cli(["fem", "calibrate", "--model", "thickwall", "--reference",
+                                  str(reference), "--dry-run"])
+        assert code == 0, err
+        assert f"against 2 runs in {reference}" in out
+        # both sweeps fitted: 10 forces, each made at 32 deg
+        assert len(out.strip().splitlines()) == 1 + 1 + 10
+        theta0 = float(out.split("theta0 = ")[1].split()[0])
+        assert theta0 == pytest.approx(THETA0, abs=0.01)
 
 
 def test_lengths_and_rest_lengths_from_the_file(tmp_path, mkm_cli):

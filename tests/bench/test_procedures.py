@@ -34,6 +34,18 @@ def test_calibrate_loadcell_on_the_sim(config):
     assert fit["offset_V"] == pytest.approx(config.sim.loadcell_offset_V, abs=1.5e-3)
 
 
+def test_calibrate_loadcell_refuses_a_mass_beyond_the_cells_capacity(config):
+    # 300 kg on the 1961.33 N cell: its reading clips at the 10 V rail (1961 N at 196.133 N/V)
+    # and the fit would give 296 N/V, 51 % high, with R^2 0.99994
+    with pytest.raises(ValueError) as caught:
+        calibrate_loadcell(config, [0.0, 5.0, 300.0], seconds=1.0)
+    assert str(caught.value) == ("--masses: 300 kg weighs 2942 N, beyond the load cell's "
+                                 "loadcell.capacity_N=1961.33: expected masses up to 200 kg")
+    fit = calibrate_loadcell(config, [0.0, 5.0, 190.0], seconds=1.0)  # within: the slope holds
+    assert fit["sensitivity_N_per_V"] == pytest.approx(config.loadcell.sensitivity_N_per_V,
+                                                       rel=2e-3)
+
+
 def test_tare_on_the_sim(config):
     out = tare(config, seconds=10.0)
     assert out["n"] == 100

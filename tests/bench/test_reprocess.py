@@ -70,3 +70,12 @@ def test_a_loadcell_only_file_recalibrates_and_the_folder_says_reprocessed(sourc
     assert out.meta.muscle == source.meta.muscle
     np.testing.assert_allclose(out.steps["force_N_mean"],
                                source.steps["force_N_mean"] * 200.0 / 196.133, rtol=2e-5)
+
+
+def test_a_run_folder_that_does_not_exist_is_named_so(config, tmp_path, capsys):
+    # was: "the run's config .../config.toml does not exist", as if --config were at fault
+    toml = tmp_path / "new.toml"
+    toml.write_text(config.text)
+    assert main(["reprocess", str(tmp_path / "nothere"), "--config", str(toml)]) == 2
+    assert capsys.readouterr().err == f"mkm reprocess: error: {tmp_path / 'nothere'}: no such " \
+        "folder\n"

@@ -52,6 +52,18 @@ def test_a_column_named_with_a_comma_in_its_header():
         parse_assignments("pressure=P,weight=F", "--columns")
 
 
+@pytest.mark.parametrize("text, option, message", [
+    ("force=N,force=kN", "--units", "--units gives force twice (force=N, force=kN): expected one "
+     "value per role"),
+    ("pressure=P,force=F,pressure=Druck", "--columns", "--columns gives pressure twice "
+     "(pressure=P, pressure=Druck)"),
+])
+def test_a_role_given_twice_is_refused(text, option, message):
+    with pytest.raises(ValueError) as caught:
+        parse_assignments(text, option)
+    assert message in str(caught.value)
+
+
 def _one(tmp_path, text, name="lab.csv"):
     path = tmp_path / name
     path.write_text(text, encoding="utf-8")
@@ -206,3 +218,34 @@ def test_units_written_in_the_cells(tmp_path):
     table, found = _one(tmp_path, "P,F\n150 kPa,2 lbf\n250 kPa,4 lbf\n")
     np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5, 2.5])
     np.testing.assert_allclose(column_values(table, found["force"]), [2 * LBF_N, 4 * LBF_N])
+
+
+def test_a_formula_without_a_saved_value_is_named_as_a_formula(tmp_path):
+    import openpyxl
+
+    # openpyxl (as pandas, or a lab's script) writes a formula without the value a spreadsheet
+    # would save with it
+    book = openpyxl.Workbook()
+    book.active.title = "eps0"
+    for row in (["P (bar)", "F (N)"], [1.0, 150.0], [2.0, "=B2*2"]):
+        book.active.append(row)
+    path = tmp_path / "book.xlsx"
+    book.save(path)
+    (table,) = read_tables(path)
+    found = recognise(table)
+    assert column_values(table, found["pressure"]).tolist() == [1.0, 2.0]
+    with pytest.raises(ValueError) as caught:
+        column_values(table, found["force"])
+    assert str(caught.value) == (
+        "book.xlsx, sheet 'eps0', cell B3 (column 'F (N)'): holds the formula '=B2*2' without "
+        "a value saved: open and save the workbook in Excel (or LibreOffice) to compute it, or "
+        "export it as CSV")
+
+
+def test_numbers_in_scientific_notation(tmp_path):
+    # '1e2' was read as 1 with the unit 'e2', which pint does not know: 'not a number'
+    table, found = _one(tmp_path, "P,F\n0.5,5E1\n1,1e2\n1.5,1.5e2 N\n2,2.0e+02\n2.5,2.5E2N\n")
+    np.testing.assert_allclose(column_values(table, found["force"]),
+                               [50.0, 100.0, 150.0, 200.0, 250.0])
+    table, found = _one(tmp_path, "P,F\n1,2.5E-1 kN\n2,5e-1 kN\n")
+    np.testing.assert_allclose(column_values(table, found["force"]), [250.0, 500.0])

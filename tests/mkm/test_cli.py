@@ -164,6 +164,45 @@ def test_bad_model_choice_is_one_line_with_status_2(args, message, mkm_run):
     assert err.startswith(message) and err.count("\n") == 1
 
 
+@pytest.mark.parametrize("argv, message", [
+    (["identify", "RUN", "--seed", "-1"], "mkm identify: error: --seed='-1' is invalid: "
+     "expected a seed >= 0"),
+    (["surrogate", "design", "--muscles", "2", "--seed", "-1"], "mkm surrogate design: error: "
+     "--seed='-1' is invalid: expected a seed >= 0"),
+    (["surrogate", "evaluate", "--seed", "1.5"], "mkm surrogate evaluate: error: --seed='1.5' "
+     "is not a whole number: expected a seed >= 0"),
+    (["study", "--mesh-muscles", "1", "--mesh-seed", "-2"], "mkm study: error: "
+     "--mesh-seed='-2' is invalid: expected a seed >= 0"),
+])
+def test_a_negative_seed_is_named_before_anything_runs(argv, message, mkm_run):
+    # numpy's own word came after the work: 'expected non-negative integer', no option named
+    code, out, err = mkm_run(argv)
+    assert code == 2 and out == ""
+    assert err == message + "\n"
+
+
+def test_convergence_past_the_braid_lock_says_why_its_forces_are_nan(mkm_run, tmp_path):
+    # eps 0.5 is past the braid lock (eps_max 0.31 at the calibrated angle): no mesh converges;
+    # was: a table of NaN with exit 0 and not a word
+    code, out, err = mkm_run(["fem", "convergence", "--eps", "0.5", "--out", str(tmp_path)])
+    assert code == 0 and out.count("False") == 3
+    warning = err.splitlines()[-1]
+    assert warning.startswith("mkm fem convergence: warning: mesh coarse, medium, fine did not "
+                              "converge, force_N NaN: threshold search failed: the braid passes "
+                              "its locking angle before eps=0.5")
+    frame = pd.read_csv(tmp_path / "mesh_convergence.csv")
+    assert frame["failure"].str.contains("locking angle").all()
+
+
+@pytest.mark.parametrize("command", ["design", "evaluate"])
+def test_surrogate_fe_budget_is_named_as_the_option(command, mkm_run):
+    # evaluate said 'n_muscles=0', a name the user never typed
+    code, out, err = mkm_run(["surrogate", command, "--muscles", "0"])
+    assert code == 2 and out == ""
+    assert err == (f"mkm surrogate {command}: error: --muscles 0 is invalid: expected an FE "
+                   "budget of at least 1 muscle\n")
+
+
 def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(mkm_run):
     before = CALIBRATION_FILE.read_bytes()
     code, out, _ = mkm_run(["fem", "calibrate", "--model", "thickwall", "--dry-run",

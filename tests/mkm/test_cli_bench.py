@@ -82,6 +82,13 @@ def test_calibrate_loadcell_prints_the_toml_block(capsys):
     assert config.loadcell.sensitivity_N_per_V == pytest.approx(196.133, rel=1e-6)
 
 
+def test_calibrate_loadcell_volts_of_a_mass_beyond_capacity_are_refused(capsys):
+    assert main(["calibrate-loadcell", "--masses", "0,10,300", "--volts", "0.01,0.51,10"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "300 kg weighs 2942 N, beyond the load cell's " \
+        "loadcell.capacity_N=1961.33: expected masses up to 200 kg" in err
+
+
 def test_check_prints_the_plan(capsys):
     assert main(["check", "--pressures", "1,2"]) == 0
     out = capsys.readouterr().out

@@ -202,6 +202,29 @@ def _copy(run, tmp_path, name):
     return target
 
 
+def test_no_progress_leaves_the_result_alone(one_run, tmp_path, mkm_run):
+    # every long command takes --no-progress (getting started); identify refused it
+    argv = ["identify", str(one_run), "--params", "theta0", "--model", "thickwall", "--search",
+            "model", "--out", str(tmp_path / "out")]
+    code, out, err = mkm_run([*argv, "--no-progress"])
+    assert code == 0 and err == ""
+    assert out.splitlines()[-1].startswith(f"wrote {tmp_path / 'out' / 'calibration.json'}")
+    code, _, err = mkm_run(argv)
+    assert code == 0 and "mkm identify: fitting theta0 on " in err
+
+
+@pytest.mark.parametrize("model, family", [("auto", "auto"), ("auto:tolerance=0.05", "auto"),
+                                           ("friction", "friction"), ("surrogate", "surrogate")])
+def test_a_model_that_is_no_static_physics_is_refused(one_run, tmp_path, mkm_run, model, family):
+    # auto: a KeyError traceback ('theta0_deg') after the runs were read
+    out = tmp_path / "out"
+    code, stdout, err = mkm_run(["identify", str(one_run), "--model", model, "--out", str(out)])
+    assert code == 2 and stdout == "" and not out.exists()
+    assert err == (f"mkm identify: error: --model {model!r} is not a static physics model (its "
+                   f"family: {family}): expected one that takes theta0_deg, C10_MPa and C01_MPa "
+                   "(axisym, thickwall)\n")
+
+
 @pytest.mark.parametrize("case, message", [
     ("other-muscle", "are of different muscles (D0_mm=30 and 40): expected the runs of one "
                      "tube (the length may differ)"),

@@ -102,6 +102,32 @@ def test_a_simulated_gap_is_found_blind_from_two_eps(gapped, tmp_path):
     assert float(rows[0][2]) > 0.03, (table, why)
 
 
+def test_a_gap_fitted_with_the_fe_leaves_the_sliding_braid_out_of_the_intervals(gapped):
+    # the guide's `--params theta0,rubber,gap --model axisym:mesh=coarse`: the sliding sleeve
+    # takes no gap, so its model-form term cannot be computed (was: 'gap_mm=0.66 is invalid
+    # with braid='sliding'' after the fit, nothing written)
+    truth, runs = gapped
+    result = identify(runs[:1], params="theta0,gap", model="axisym:mesh=coarse",
+                      search="model", workers=1, cache_dir=None)
+    assert result.model_form["braid"] == {
+        "skipped": "a gap is fitted, and a gap is modelled with the bonded braid only"}
+    assert result.fit.values["gap_mm"] > 0.0
+
+
+@pytest.mark.parametrize("model, braid", [("axisym:mesh=coarse", "sliding"),
+                                          ("axisym:mesh=coarse,braid=sliding", None)])
+def test_a_gap_with_the_sliding_sleeve_is_refused_before_the_search(gapped, model, braid):
+    # was: 'gap_mm=0.2 is invalid with braid=sliding', the search's start value refused
+    _, runs = gapped
+    with pytest.raises(ValueError) as caught:
+        identify(runs, params="theta0,gap", model=model, braid=braid, search="model",
+                 workers=1, cache_dir=None)
+    assert str(caught.value) == (
+        "--params gap needs the bonded braid: axisym:braid=sliding,mesh=coarse has the sliding "
+        "sleeve, which takes no gap (expected --braid bonded and a --model without "
+        "braid=sliding)")
+
+
 def test_a_gap_asked_of_a_model_without_one_is_refused(gapped):
     # every physics rung with a rubber takes the gap now: a plug-in rung without one (the
     # thick-wall form registered without its gap parameter) is what identify must refuse

@@ -80,3 +80,16 @@ def test_models_states_the_practical_range_from_its_numbers():
     text = " ".join(describe().split())  # wrapped at 100 columns
     assert range_text() in text
     assert "D0 5-60 mm" in text and "pressure 0-8 bar" in text
+
+
+def test_a_model_named_twice_is_refused():
+    # mkm report --models eq2,eq2 scored eq2 twice: two identical rows in summary.csv
+    with pytest.raises(ValueError) as caught:
+        parse_specs("eq2,thickwall,eq2")
+    assert str(caught.value) == ("--models 'eq2,thickwall,eq2' names eq2 twice ('eq2' and "
+                                 "'eq2'): expected each model once")
+    with pytest.raises(ValueError, match="names axisym:mesh=coarse twice"):
+        parse_specs("axisym:mesh=coarse,eq2,axisym:mesh=coarse")
+    # the same rung with other parameters is another model
+    assert [s.text for s in parse_specs("eq2,eq2:theta0_deg=50")] == ["eq2",
+                                                                      "eq2:theta0_deg=50"]

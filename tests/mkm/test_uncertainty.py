@@ -135,6 +135,9 @@ def test_report_gives_en_per_step_and_a_verdict_per_model(tmp_path):
                                 "a number"),
     (["--tolerance", "D0=0.3", "--probability", "1.5"],
      "--probability 1.5 is invalid: expected a probability between 0.5 and 1"),
+    # a nominal design has no probability to meet: the option is not dropped without a word
+    (["--probability", "0.99"], "mkm design: error: --probability 0.99 needs --tolerance: "
+     "expected the tolerances the muscle is built to, e.g. --tolerance D0=0.3,t0=0.1,theta0=1\n"),
 ])
 def test_design_tolerance_bad_input_is_one_line(mkm_run, argv, message):
     code, out, err = mkm_run(["design", "--require", "580N@2bar,eps=0.10", "--no-progress",

@@ -244,3 +244,34 @@ def test_shipped_dataset_rebuilds(D0_mm, t0_mm, eps):
     # about that; 1e-6 leaves margin yet catches any change of physics or mesh (coarse vs
     # medium mesh differ by 5e-4)
     np.testing.assert_allclose(rebuilt.force_N, shipped.force_N, rtol=1e-6, atol=1e-6)
+
+
+@pytest.mark.parametrize("model", ["surrogate", "auto", "friction"])
+def test_a_dataset_is_built_of_a_physics_model_only(model, tmp_path):
+    # was: a 'dataset' of the surrogate (or of auto's pick) written as if the FE had made it
+    with pytest.raises(ValueError) as caught:
+        tiny(model, out=tmp_path / "d.csv", workers=1, cache_dir=tmp_path)
+    assert str(caught.value) == (f"--model {model!r} is no physics model a dataset is built "
+                                 "of: expected one of eq2, thickwall, axisym")
+    assert not (tmp_path / "d.csv").exists()
+
+
+def test_the_command_takes_no_progress(tmp_path, monkeypatch, capsys):
+    # its help promised a progress bar, and every long command's --no-progress was refused here
+    import mkm.fem.dataset
+
+    asked = {}
+    real = mkm.fem.dataset.build_dataset
+
+    def recording(*args, **kwargs):
+        asked.update(kwargs)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(mkm.fem.dataset, "build_dataset", recording)
+    grid = tmp_path / "grid.toml"
+    grid.write_text(TINY_GRID)
+    assert main(["fem", "dataset", "--grid", str(grid), "--model", "eq2", "--out",
+                 str(tmp_path / "d.csv"), "--cache", str(tmp_path / "cache"), "--workers", "1",
+                 "--no-progress"]) == 0
+    assert asked["progress"] is False
+    assert len(pd.read_csv(tmp_path / "d.csv")) == 12
