@@ -650,7 +650,16 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
         changes["sequence"] = {"pressures_bar": tuple(float(p) for p in pressures_bar)}
     if backend is not None and backend != config.daq.backend:
         changes["daq"] = {"backend": backend}
-    return config.replace(**changes) if changes else config
+    try:
+        return config.replace(**changes) if changes else config
+    except ValueError as exc:
+        # a value the command line gave is named as typed there, not as a setting of the file
+        message = str(exc)
+        for key, flag, given in (("sequence.pressures_bar", "--pressures", pressures_bar),
+                                 ("muscle.eps", "--eps", eps)):
+            if given is not None and message.startswith(key):
+                raise ValueError(f"{flag}: {message}") from None
+        raise
 
 
 @dataclass(frozen=True)

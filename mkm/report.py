@@ -788,7 +788,8 @@ def _surrogate_section(out: Path, prov: dict) -> str:
     """The paper's Table 3 and Figure 6 with our numbers: the default surrogate against our FE
     reference of the test muscles (the paper's I, II, III and the surrogate package's off-grid
     ones), computed by :mod:`mkm.surrogate.testset`."""
-    head = "<h2>Surrogate against the FE model on the paper's test muscles I, II, III</h2>"
+    head = ("<h2>Surrogate against the FE model on the paper's test muscles I, II, III and "
+            "off-grid muscles</h2>")
     from mkm import surrogate
     from mkm.surrogate.testset import FE_REFERENCE, compare_on_test_muscles, read_fe_reference
 

@@ -30,15 +30,18 @@ def test_overrides_are_validated_and_recorded():
     assert c.muscle.eps == 0.122
     assert c.sequence.pressures_bar == (0.5, 1.0)
     assert c.overrides == {"muscle.eps": 0.122, "sequence.pressures_bar": (0.5, 1.0)}
-    with pytest.raises(ValueError, match=r"muscle\.eps=1\.5 is invalid"):
+    # named as the option typed, with the setting it overrides
+    with pytest.raises(ValueError, match=r"^--eps: muscle\.eps=1\.5 is invalid"):
         load_config(eps=1.5)
-    with pytest.raises(ValueError, match="above regulator.max_pressure_bar=2.5"):
+    with pytest.raises(ValueError, match=r"^--pressures: sequence\.pressures_bar has 3 bar, "
+                       "above regulator.max_pressure_bar=2.5"):
         load_config(pressures_bar=[1.0, 3.0])
 
 
 def test_a_staircase_given_falling_is_refused():
     # its steps would be labelled up while the pressure falls, and down while it rises
-    with pytest.raises(ValueError, match=r"sequence\.pressures_bar goes from 2 to 1 bar: "
+    with pytest.raises(ValueError, match=r"^--pressures: sequence\.pressures_bar goes from 2 "
+                       "to 1 bar: "
                        "expected the rising staircase"):
         load_config(pressures_bar=[2.0, 1.0, 0.5])
     with pytest.raises(ValueError, match="goes from 1 to 1 bar"):
