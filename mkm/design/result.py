@@ -83,12 +83,22 @@ class DesignResult:
 
     def notes(self) -> list[str]:
         """What a user must know of the box searched, one line each: the box when it is not
-        the surrogate's (:meth:`Search.box_note`), and the chosen design on an end of a
+        the surrogate's (:meth:`Search.box_note`), the chosen design on an end of a
         searched range (:func:`~mkm.design.search.box_edges`), where a larger box might hold
-        a better design. Empty when neither."""
+        a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
+        required force (the design then is larger than the requirement needs). Empty when
+        none."""
         s = self.search
         notes = [s.box_note()] if s.box_note() else []
         best = self.chosen
+        if best is not None:
+            share = max(float(best[f"r{k}_uncertainty_N"]) / r.force_N
+                        for k, r in enumerate(s.requirements, start=1))
+            if share > LARGE_MARGIN_SHARE:
+                notes.append(f"{s.searcher} searched with a margin of up to {100 * share:.0f} "
+                             f"% of a required force ({s.uncertainty}): the chosen design pulls "
+                             "about that much more than required (its FE margin); a surrogate "
+                             "with a predictive std (the default) searches closer")
         if best is not None and (edges := box_edges(best, s.constraints)):
             ranges = {k: v for k, v in s.constraints.items()
                       if k in BOX_NAMES and v[1] > v[0]}
@@ -107,6 +117,9 @@ class DesignResult:
                                       "meets_all": "meets"})
         return shown.to_string(index=False, float_format=lambda v: f"{v:.4g}")
 
+
+#: A searching margin above this share of a required force is said (:meth:`DesignResult.notes`)
+LARGE_MARGIN_SHARE = 0.5
 
 DESIGN_COLUMNS = ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
                   "outer_diameter_mm", "rubber_volume_cm3"]
