@@ -577,7 +577,10 @@ def _open_rows(path: Path, columns: tuple[str, ...], problems: list[str]):
     raw = open(path, "rb")
     stream = io.TextIOWrapper(io.BufferedReader(_Prefix(raw, whole)), encoding="utf-8",
                               newline="")
-    header = stream.readline().rstrip("\r\n")
+    try:
+        header = stream.readline().rstrip("\r\n")
+    except UnicodeDecodeError:
+        header = None  # not text: refused below as any other header
     layouts = (columns, *OLDER_COLUMNS.get(path.name, ()))
     found = next((c for c in layouts if header == ",".join(c)), None)
     if found is None:

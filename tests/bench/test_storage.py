@@ -168,3 +168,9 @@ def test_a_sample_time_no_bin_can_hold_is_refused(run_path, bad):
     # one line naming the value: what no bin can hold, or (1e300) what no bench reads
     with pytest.raises(ValueError, match=re.escape(f"time_s={float(bad)!r} is ")):
         aggregate_samples(run_path, bin_s=1.0)
+
+
+def test_binary_samples_csv_is_named(run_path):
+    (run_path / "samples.csv").write_bytes(b"\xfa\xfb,\n" * 100)  # not UTF-8
+    with pytest.raises(ValueError, match=r"samples\.csv is corrupt: expected the header"):
+        load_run(run_path)
