@@ -820,8 +820,26 @@ def load_run(path: str | Path) -> Run:
     elif meta.manual_vent_required:
         unvented = "the final vent command failed: the muscle had to be vented by hand"
         problems.append(unvented)
+    if status != RunStatus.INCOMPLETE:
+        problems.extend(_rows_lost(Run(path, meta, steps, status), samples_csv))
     return Run(path=path, meta=meta, steps=steps, status=status, commands=commands,
                problems=problems, unvented=unvented)
+
+
+def _rows_lost(run: Run, samples_csv: Path) -> list[str]:
+    """Rows a closed record counted that its files no longer hold (a copy cut short, a file
+    emptied): the run's numbers would be computed from part of it, so the loss is named."""
+    lost = []
+    counted = run.meta.counters.get("samples")
+    if isinstance(counted, int) and samples_csv.is_file():
+        held = run.n_samples
+        if held < counted:
+            lost.append(f"samples.csv holds {held} samples, run.json counted {counted}: "
+                        f"{counted - held} lost")
+    if (run.path / "steps.csv").is_file() and len(run.steps) < run.meta.steps_done:
+        lost.append(f"steps.csv holds {len(run.steps)} steps, run.json counted "
+                    f"{run.meta.steps_done} done: {run.meta.steps_done - len(run.steps)} lost")
+    return lost
 
 
 def _unvented(commands: pd.DataFrame) -> str | None:

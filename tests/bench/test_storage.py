@@ -170,6 +170,26 @@ def test_a_sample_time_no_bin_can_hold_is_refused(run_path, bad):
         aggregate_samples(run_path, bin_s=1.0)
 
 
+def test_closed_run_with_rows_lost_names_the_loss(run_path):
+    # A complete run copied short: whole rows gone, no partial row to betray it.
+    counted = json.loads((run_path / "run.json").read_text())["counters"]["samples"]
+    lines = (run_path / "samples.csv").read_text().splitlines(keepends=True)
+    (run_path / "samples.csv").write_text("".join(lines[:101]))
+    steps = (run_path / "steps.csv").read_text().splitlines(keepends=True)
+    (run_path / "steps.csv").write_text("".join(steps[:2]))
+    run = load_run(run_path)
+    assert run.status == "complete"
+    done = run.meta.steps_done
+    assert f"samples.csv holds 100 samples, run.json counted {counted}: {counted - 100} lost" \
+        in run.problems
+    assert f"steps.csv holds 1 steps, run.json counted {done} done: {done - 1} lost" \
+        in run.problems
+
+
+def test_intact_run_has_no_problems(run_path):
+    assert load_run(run_path).problems == []
+
+
 def test_binary_samples_csv_is_named(run_path):
     (run_path / "samples.csv").write_bytes(b"\xfa\xfb,\n" * 100)  # not UTF-8
     with pytest.raises(ValueError, match=r"samples\.csv is corrupt: expected the header"):
