@@ -689,6 +689,8 @@ class Run:
     commands: pd.DataFrame = field(default_factory=pd.DataFrame)
     problems: list[str] = field(default_factory=list)
     unvented: str | None = None
+    #: the rows its files lost against its closed record (also in ``problems``)
+    rows_lost: list[str] = field(default_factory=list)
     _samples: pd.DataFrame | None = None
 
     @property
@@ -820,10 +822,10 @@ def load_run(path: str | Path) -> Run:
     elif meta.manual_vent_required:
         unvented = "the final vent command failed: the muscle had to be vented by hand"
         problems.append(unvented)
-    if status != RunStatus.INCOMPLETE:
-        problems.extend(_rows_lost(Run(path, meta, steps, status), samples_csv))
+    lost = ([] if status == RunStatus.INCOMPLETE
+            else _rows_lost(Run(path, meta, steps, status), samples_csv))
     return Run(path=path, meta=meta, steps=steps, status=status, commands=commands,
-               problems=problems, unvented=unvented)
+               problems=problems + lost, unvented=unvented, rows_lost=lost)
 
 
 def _rows_lost(run: Run, samples_csv: Path) -> list[str]:
