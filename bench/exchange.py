@@ -481,8 +481,10 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     if fmt == "xlsx" and len(samples) > EXCEL_MAX_ROWS:
         raise ValueError(f"{run.path.name} has {len(samples)} samples: a worksheet holds at "
                          f"most {EXCEL_MAX_ROWS}; use --format csv")
-    # the loader's status: a dead run's record still says "running"
-    metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status)}),
+    # the loader's status and problems: a dead run's record still says "running", a copy cut
+    # short still says every sample is there
+    metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status),
+                                      "problems": run.problems}),
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}
