@@ -232,6 +232,7 @@ def test_a_model_that_is_no_static_physics_is_refused(one_run, tmp_path, mkm_run
     ("unknown-parameter", "--params 'theta0,stiffness': unknown parameter 'stiffness': expected "
                           "some of theta0,rubber,t0,D0,friction,creep,gap,offset"),
     ("failed", "has status failed"),
+    ("lost-rows", "samples.csv holds 400 samples, run.json counted"),
 ])
 def test_bad_input_is_one_line_and_status_2(one_run, tmp_path, mkm_run, case, message):
     runs, params = [one_run], "theta0,rubber"
@@ -248,6 +249,11 @@ def test_bad_input_is_one_line_and_status_2(one_run, tmp_path, mkm_run, case, me
         runs = [bad]
     elif case == "unknown-parameter":
         params = "theta0,stiffness"
+    elif case == "lost-rows":  # a copy cut short: the later holds had no samples, Err% 100
+        bad = _copy(one_run, tmp_path, "cut")
+        lines = (bad / "samples.csv").read_text().splitlines(keepends=True)
+        (bad / "samples.csv").write_text("".join(lines[:401]))
+        runs = [bad]
     else:
         bad = _copy(one_run, tmp_path, "failed")
         meta = json.loads((bad / "run.json").read_text(encoding="utf-8"))
