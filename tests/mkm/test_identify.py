@@ -11,6 +11,7 @@ friction within 1 point, a held-out run within 1.5 % largest |Err%| on both bran
 from __future__ import annotations
 
 import json
+import re
 import shutil
 
 import numpy as np
@@ -399,3 +400,20 @@ def test_a_slack_run_leaves_the_closed_forms_slope_fits_to_the_others(tmp_path):
     assert 15.0 < entries["thickwall"]["theta0_deg"] < 40.0
     # the force target of Equation 2 fits every force, 0 N included
     assert entries["eq2-inner"]["reference"] == f"{rising.name}, {slack.name}"
+
+
+def test_a_run_without_a_falling_step_says_so_instead_of_nan(one_run, tmp_path, mkm_run):
+    # a run stopped on its way up printed 'nominal 0.50/nan, identified 0.45/nan'
+    rising = _copy(one_run, tmp_path, "rising")
+    steps = pd.read_csv(rising / "steps.csv")
+    steps.assign(settled=steps["settled"] & (steps["direction"] == "up")).to_csv(
+        rising / "steps.csv", index=False)
+    code, out, err = mkm_run(["identify", str(rising), "--params", "theta0", "--model",
+                              "thickwall", "--search", "model", "--out", str(tmp_path / "out"),
+                              "--no-progress"])
+    assert code == 0, err
+    (line,) = [x for x in out.splitlines() if "rising/falling" in x]
+    assert re.fullmatch(r"  rising: largest \|Err%\| rising/falling: nominal \d+\.\d\d/none "
+                        r"\(no falling step\), identified \d+\.\d\d/none \(no falling step\)",
+                        line), line
+    assert "nan" not in out
