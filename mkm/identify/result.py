@@ -29,7 +29,13 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.core.records import provenance, source_version, spreadsheet_safe, write_json_atomic
+from mkm.core.records import (
+    finite_or_null,
+    provenance,
+    source_version,
+    spreadsheet_safe,
+    write_json_atomic,
+)
 from mkm.fem.calibration import (
     THRESHOLD_FLOOR_FRACTION,
     calibration_entry,
@@ -359,8 +365,9 @@ class Identification:
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
         info = provenance()
-        record = {**self.record(), "provenance": {
-            **info, "code_version": source_version("mkm.identify.procedure", data=False)}}
+        # an assumed parameter's interval, a branch without steps: null, not NaN (no JSON)
+        record = finite_or_null({**self.record(), "provenance": {
+            **info, "code_version": source_version("mkm.identify.procedure", data=False)}})
         files = {"calibration": out / "calibration.json", "parameters": out / "parameters.csv",
                  "steps": out / "steps.csv", "identification": out / "identification.json"}
         header = (f"# mkm identify: {info['command']} ({info['date_utc']}); runs "

@@ -417,3 +417,20 @@ def test_a_run_without_a_falling_step_says_so_instead_of_nan(one_run, tmp_path, 
                         r"\(no falling step\), identified \d+\.\d\d/none \(no falling step\)",
                         line), line
     assert "nan" not in out
+
+
+def test_the_written_json_is_strict_json(one_run, tmp_path, mkm_run):
+    # identification.json and calibration.json held NaN (an assumed parameter's interval), which
+    # jq, browsers and every strict parser refuse
+    out = tmp_path / "out"
+    code, _, err = mkm_run(["identify", str(one_run), "--params", "theta0", "--model",
+                            "thickwall", "--search", "model", "--out", str(out), "--no-progress"])
+    assert code == 0, err
+
+    def refuse(constant):
+        raise ValueError(f"{constant} in strict JSON")
+
+    record = json.loads((out / "identification.json").read_text(), parse_constant=refuse)
+    json.loads((out / "calibration.json").read_text(), parse_constant=refuse)
+    assumed = [p for p in record["parameters"] if p["status"] == "assumed"]
+    assert assumed and all(p["ci_low"] is None and p["ci_high"] is None for p in assumed)
