@@ -356,6 +356,9 @@ def _check_fields(values: dict[str, Any], where: str) -> None:
         if not isinstance(entry, dict):
             raise ValueError(f"{where}: unvented_before holds {_shown(entry)}: expected "
                              "objects (the runs found unvented)")
+    steps_done = values.get("steps_done", 0)
+    if isinstance(steps_done, int) and not isinstance(steps_done, bool) and steps_done < 0:
+        raise ValueError(f"{where}: steps_done={steps_done} is invalid: expected a count >= 0")
     counters = values.get("counters") or {}
     for key, value in counters.items():
         if isinstance(value, bool) or not isinstance(value, int) or value < 0:

@@ -194,3 +194,14 @@ def test_binary_samples_csv_is_named(run_path):
     (run_path / "samples.csv").write_bytes(b"\xfa\xfb,\n" * 100)  # not UTF-8
     with pytest.raises(ValueError, match=r"samples\.csv is corrupt: expected the header"):
         load_run(run_path)
+
+
+def test_a_negative_steps_done_is_refused(run_path):
+    # steps_done -3 loaded as a run that had done fewer than no steps
+    meta = json.loads((run_path / "run.json").read_text())
+    meta["steps_done"] = -3
+    write_json_atomic(run_path / "run.json", meta)
+    with pytest.raises(ValueError) as caught:
+        load_run(run_path)
+    assert str(caught.value) == (f"{run_path / 'run.json'}: steps_done=-3 is invalid: expected "
+                                 "a count >= 0")
