@@ -578,7 +578,8 @@ def _open_rows(path: Path, columns: tuple[str, ...], problems: list[str]):
     if whole < path.stat().st_size:
         problems.append(f"{path.name}: dropped a partial last row")
     raw = open(path, "rb")
-    stream = io.TextIOWrapper(io.BufferedReader(_Prefix(raw, whole)), encoding="utf-8",
+    # utf-8-sig: a file saved again on Windows (Excel's "CSV UTF-8") starts with a BOM
+    stream = io.TextIOWrapper(io.BufferedReader(_Prefix(raw, whole)), encoding="utf-8-sig",
                               newline="")
     try:
         header = stream.readline().rstrip("\r\n")
@@ -762,7 +763,7 @@ def read_meta(path: str | Path) -> RunMeta:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
                          f"record of at most {MAX_RUN_JSON_BYTES}")
     try:
-        data = json.loads(meta_path.read_text(encoding="utf-8"),
+        data = json.loads(meta_path.read_text(encoding="utf-8-sig"),  # a BOM: Windows editors
                           object_pairs_hook=_unique_keys)
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None

@@ -205,3 +205,19 @@ def test_a_negative_steps_done_is_refused(run_path):
         load_run(run_path)
     assert str(caught.value) == (f"{run_path / 'run.json'}: steps_done=-3 is invalid: expected "
                                  "a count >= 0")
+
+
+def test_a_run_folder_saved_again_on_windows_loads_the_same(run_path):
+    # a BOM (Excel's "CSV UTF-8", Windows editors) and CRLF line ends: refused as corrupt
+    from mkm.bench.reprocess import overlay_config
+
+    before = load_run(run_path)
+    cell = overlay_config(run_path, run_path / "config.toml").loadcell
+    for name in ("run.json", "samples.csv", "steps.csv", "commands.csv", "config.toml"):
+        text = (run_path / name).read_text(encoding="utf-8")
+        (run_path / name).write_bytes(b"\xef\xbb\xbf" + text.replace("\n", "\r\n").encode())
+    after = load_run(run_path)
+    assert after.problems == [] and after.status == before.status
+    pd.testing.assert_frame_equal(after.steps, before.steps)
+    pd.testing.assert_frame_equal(after.samples, before.samples)
+    assert overlay_config(run_path, run_path / "config.toml").loadcell == cell
