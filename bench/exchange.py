@@ -29,6 +29,8 @@ import numpy as np
 import pandas as pd
 
 from mkm.bench import series
+from mkm.bench.config import MAX_CAPACITY_N
+from mkm.bench.sim_settings import INSTRUMENT_BOUNDS
 from mkm.bench.storage import (
     RunMeta,
     RunStatus,
@@ -61,8 +63,21 @@ EXPORT_SHEETS = ("steps", "samples", "metadata")
 ZERO_CHOICES = ("auto", "none")
 
 
+#: What a given zero may be [its unit], and why. A vented pressure sensor reads its offset: at
+#: most the half bar the simulator allows a sensor's offset below zero (more is a broken
+#: sensor), and above zero up to the top of the practical range (an absolute sensor reads
+#: 1.013 bar vented; 8 bar vented is no offset of a muscle's sensor). A tare is a load cell's
+#: reading: within the largest cell a bench configuration accepts.
+ZERO_LIMITS = {"--tare": (-MAX_CAPACITY_N, MAX_CAPACITY_N,
+                          "the largest load cell a bench takes"),
+               "--vented": (-INSTRUMENT_BOUNDS["monitor_offset_bar"][1],
+                            PRACTICAL_RANGE.pressure_bar[1],
+                            "a pressure sensor's offset below zero, the practical range above")}
+
+
 def parse_zero(text: str | float | None, option: str, unit: str) -> str | float:
-    """``auto``, ``none`` or a number (``--tare 3.2``, ``--vented 0.6``)."""
+    """``auto``, ``none`` or a number (``--tare 3.2``, ``--vented 0.6``) within
+    :data:`ZERO_LIMITS`."""
     if text is None or text in ZERO_CHOICES:
         return text or "auto"
     try:
@@ -72,6 +87,10 @@ def parse_zero(text: str | float | None, option: str, unit: str) -> str | float:
                          f"[{unit}]") from None
     if not math.isfinite(value):
         raise ValueError(f"{option} {text!r} is invalid: expected a finite number [{unit}]")
+    low, high, why = ZERO_LIMITS.get(option, (-math.inf, math.inf, ""))
+    if not low <= value <= high:
+        raise ValueError(f"{option} {text!r} is invalid: expected a number in [{low:g}, "
+                         f"{high:g}] {unit} ({why})")
     return value
 
 
@@ -125,6 +144,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     """
     path = Path(path)
     muscle = dict(muscle)
+    tare, vented = parse_zero(tare, "--tare", "N"), parse_zero(vented, "--vented", "bar")
     if sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path)):  # mkm export's own
         known = key_values(path, "metadata")
         for key in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
@@ -364,6 +384,10 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:
         zero, handling["tare"] = float(tare), "given"
+        if zero >= float(np.nanmax(force)):  # every force <= 0: a muscle that never pulled
+            raise ValueError(f"{table.name}: --tare {zero:g} N is not below the largest force "
+                             f"of the table, {float(np.nanmax(force)):g} N: expected the force "
+                             "read at 0 bar")
     handling["tare_N"] = zero
     if zero:
         force = force - zero
@@ -457,8 +481,10 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     if fmt == "xlsx" and len(samples) > EXCEL_MAX_ROWS:
         raise ValueError(f"{run.path.name} has {len(samples)} samples: a worksheet holds at "
                          f"most {EXCEL_MAX_ROWS}; use --format csv")
-    # the loader's status: a dead run's record still says "running"
-    metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status)}),
+    # the loader's status and problems: a dead run's record still says "running", a copy cut
+    # short still says every sample is there
+    metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status),
+                                      "problems": run.problems}),
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}

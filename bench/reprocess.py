@@ -84,6 +84,10 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
               ) -> Path:
     """Write a copy of the run ``run_dir`` recalibrated with ``config.loadcell``; return it."""
     source = load_run(run_dir)
+    # the copy would be a complete run with steps or samples missing and not a word of it
+    if "steps.csv is missing" in source.problems or source.rows_lost:
+        gone = source.rows_lost[0] if source.rows_lost else "steps.csv is missing"
+        raise ValueError(f"run {source.path}: {gone}: expected the whole record to reprocess")
     cell = config.loadcell
     out_root = Path(out_root) if out_root is not None else source.path.parent
     samples_csv = source.path / "samples.csv"

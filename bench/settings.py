@@ -45,7 +45,7 @@ def read_toml_file(path: str | Path, what: str = "") -> tuple[str, dict[str, Any
         if path.stat().st_size > MAX_TEXT_CHARS * 4:
             raise ValueError(f"{what}{shown} is {path.stat().st_size} bytes: expected a TOML "
                              f"file of at most {MAX_TEXT_CHARS} characters")
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # a BOM: saved by a Windows editor
     except (OSError, UnicodeDecodeError) as exc:
         raise ValueError(f"{what}{shown} cannot be read as UTF-8 text "
                          f"({getattr(exc, 'strerror', None) or exc})") from None

@@ -356,6 +356,9 @@ def _check_fields(values: dict[str, Any], where: str) -> None:
         if not isinstance(entry, dict):
             raise ValueError(f"{where}: unvented_before holds {_shown(entry)}: expected "
                              "objects (the runs found unvented)")
+    steps_done = values.get("steps_done", 0)
+    if isinstance(steps_done, int) and not isinstance(steps_done, bool) and steps_done < 0:
+        raise ValueError(f"{where}: steps_done={steps_done} is invalid: expected a count >= 0")
     counters = values.get("counters") or {}
     for key, value in counters.items():
         if isinstance(value, bool) or not isinstance(value, int) or value < 0:
@@ -575,9 +578,13 @@ def _open_rows(path: Path, columns: tuple[str, ...], problems: list[str]):
     if whole < path.stat().st_size:
         problems.append(f"{path.name}: dropped a partial last row")
     raw = open(path, "rb")
-    stream = io.TextIOWrapper(io.BufferedReader(_Prefix(raw, whole)), encoding="utf-8",
+    # utf-8-sig: a file saved again on Windows (Excel's "CSV UTF-8") starts with a BOM
+    stream = io.TextIOWrapper(io.BufferedReader(_Prefix(raw, whole)), encoding="utf-8-sig",
                               newline="")
-    header = stream.readline().rstrip("\r\n")
+    try:
+        header = stream.readline().rstrip("\r\n")
+    except UnicodeDecodeError:
+        header = None  # not text: refused below as any other header
     layouts = (columns, *OLDER_COLUMNS.get(path.name, ()))
     found = next((c for c in layouts if header == ",".join(c)), None)
     if found is None:
@@ -686,6 +693,8 @@ class Run:
     commands: pd.DataFrame = field(default_factory=pd.DataFrame)
     problems: list[str] = field(default_factory=list)
     unvented: str | None = None
+    #: the rows its files lost against its closed record (also in ``problems``)
+    rows_lost: list[str] = field(default_factory=list)
     _samples: pd.DataFrame | None = None
 
     @property
@@ -754,7 +763,7 @@ def read_meta(path: str | Path) -> RunMeta:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
                          f"record of at most {MAX_RUN_JSON_BYTES}")
     try:
-        data = json.loads(meta_path.read_text(encoding="utf-8"),
+        data = json.loads(meta_path.read_text(encoding="utf-8-sig"),  # a BOM: Windows editors
                           object_pairs_hook=_unique_keys)
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
@@ -817,8 +826,26 @@ def load_run(path: str | Path) -> Run:
     elif meta.manual_vent_required:
         unvented = "the final vent command failed: the muscle had to be vented by hand"
         problems.append(unvented)
+    lost = ([] if status == RunStatus.INCOMPLETE
+            else _rows_lost(Run(path, meta, steps, status), samples_csv))
     return Run(path=path, meta=meta, steps=steps, status=status, commands=commands,
-               problems=problems, unvented=unvented)
+               problems=problems + lost, unvented=unvented, rows_lost=lost)
+
+
+def _rows_lost(run: Run, samples_csv: Path) -> list[str]:
+    """Rows a closed record counted that its files no longer hold (a copy cut short, a file
+    emptied): the run's numbers would be computed from part of it, so the loss is named."""
+    lost = []
+    counted = run.meta.counters.get("samples")
+    if isinstance(counted, int) and samples_csv.is_file():
+        held = run.n_samples
+        if held < counted:
+            lost.append(f"samples.csv holds {held} samples, run.json counted {counted}: "
+                        f"{counted - held} lost")
+    if (run.path / "steps.csv").is_file() and len(run.steps) < run.meta.steps_done:
+        lost.append(f"steps.csv holds {len(run.steps)} steps, run.json counted "
+                    f"{run.meta.steps_done} done: {run.meta.steps_done - len(run.steps)} lost")
+    return lost
 
 
 def _unvented(commands: pd.DataFrame) -> str | None:

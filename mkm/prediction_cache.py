@@ -15,6 +15,7 @@ import hashlib
 import io
 import json
 import tempfile
+import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -56,8 +57,9 @@ def cached_predict(model: ForceModel, pressure_bar, D0_mm, t0_mm, eps,
     if cache_dir is None:
         return model.predict(*inputs), False
     path = _path(model, inputs, cache_dir)
-    if path.exists():
-        return _load(path), True
+    cached = _load_entry(path)
+    if cached is not None:
+        return cached, True
     prediction = model.predict(*inputs)
     _store(prediction, path)
     return prediction, False
@@ -97,8 +99,9 @@ def predict_many(requests, cache_dir: Path | str | None = DEFAULT_CACHE_DIR, *,
     for i, (model, *values) in enumerate(requests):
         inputs = _inputs(*values)
         path = None if cache_dir is None else _path(model, inputs, cache_dir)
-        if path is not None and path.exists():
-            out[i] = _load(path), True
+        cached = None if path is None else _load_entry(path)
+        if cached is not None:
+            out[i] = cached, True
             continue
         job = _job(model, inputs)
         if job is None:
@@ -172,6 +175,18 @@ def _store(prediction: Prediction, path: Path) -> None:
     buffer = io.BytesIO()
     np.savez(buffer, **arrays)
     write_atomic(path, buffer.getvalue())
+
+
+def _load_entry(path: Path) -> Prediction | None:
+    """The cached prediction at ``path``; None when there is none or it cannot be read (a
+    write cut short by a full disk or a kill, a file damaged since): computed again and
+    replaced, as a miss."""
+    if not path.exists():
+        return None
+    try:
+        return _load(path)
+    except (OSError, EOFError, ValueError, KeyError, TypeError, zipfile.BadZipFile):
+        return None
 
 
 def _load(path: Path) -> Prediction:

@@ -127,6 +127,23 @@ class Spec:
         return self.text
 
     @property
+    def canonical(self) -> str:
+        """:attr:`text` less the parameters given at their factory's default
+        (``axisym:mesh=medium`` is ``axisym``), so one model spelled two ways is one model. A
+        muscle parameter (``L0_mm``) is kept: unset, it is the run's muscle's, not the
+        default."""
+        import inspect
+
+        from mkm.fem.muscle import MODEL_PARAMETERS
+
+        signature = inspect.signature(self.entry.resolve()).parameters
+        kept = tuple((k, v) for k, v in self.params
+                     if k in MODEL_PARAMETERS or k not in signature
+                     or signature[k].default is inspect.Parameter.empty
+                     or signature[k].default != v)
+        return Spec(self.name, kept).text
+
+    @property
     def entry(self) -> Entry:
         return entry(self.name)
 
@@ -205,10 +222,11 @@ def parse_specs(text: str) -> list[Spec]:
     specs = [parse_spec(g) for g in groups]
     seen: dict[str, str] = {}
     for group, spec in zip(groups, specs, strict=True):
-        if spec.text in seen:  # scored twice, its rows in every table twice
-            raise ValueError(f"--models {text!r} names {spec.text} twice ({seen[spec.text]!r} "
+        same = spec.canonical
+        if same in seen:  # scored twice, its rows in every table twice
+            raise ValueError(f"--models {text!r} names {same} twice ({seen[same]!r} "
                              f"and {group!r}): expected each model once")
-        seen[spec.text] = group
+        seen[same] = group
     return specs
 
 

@@ -114,8 +114,9 @@ def register(subparsers) -> None:
                       help=shared_help("--t0", "default: %(default)s"))
     conv.add_argument("--eps", default=0.05, type=argtype(parse_fraction),
                       help=shared_help("--eps", "default: %(default)s"))
-    conv.add_argument("--pressure", default=2.5, type=argtype(parse_number, "--pressure"),
-                      help="pressure [bar] (default: %(default)s)")
+    conv.add_argument("--pressure", default=2.5, type=_practical_pressure,
+                      help="pressure [bar], within the practical range's 0-8 bar "
+                      "(default: %(default)s)")
     conv.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                       help=shared_help("--theta0", "default: calibrated"))
     conv.add_argument("--L0", default=282.0, type=argtype(parse_within, "--L0", "L0_mm"),
@@ -124,6 +125,22 @@ def register(subparsers) -> None:
                       help="folder for the CSV, JSON and PNG (default: %(default)s)")
     add_calibration_argument(conv)
     conv.set_defaults(func=with_calibration(_convergence))
+
+
+def _practical_pressure(text: str) -> float:
+    """``--pressure`` of the mesh study: within the practical range, the pressures the chosen
+    mesh is used at (a study at 100 bar would pick a mesh for a muscle no lab runs)."""
+    from mkm.fem.limits import PRACTICAL_RANGE
+
+    try:
+        value = parse_number(text, "--pressure")
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+    low, high = PRACTICAL_RANGE.pressure_bar
+    if not low <= value <= high:
+        raise argparse.ArgumentTypeError(f"--pressure {text}: expected a pressure in "
+                                         f"[{low:g}, {high:g}] bar, the practical range")
+    return value
 
 
 def _target(text: str) -> str:

@@ -22,6 +22,7 @@ import ast
 import datetime
 import hashlib
 import json
+import math
 import os
 import platform
 import sys
@@ -144,6 +145,21 @@ def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[P
 def write_json_atomic(path: str | os.PathLike, data: Any) -> Path:
     """:func:`write_atomic` of ``data`` as indented JSON (numpy values as lists or text)."""
     return write_atomic(path, json.dumps(data, indent=2, default=jsonable) + "\n")
+
+
+def finite_or_null(data: Any) -> Any:
+    """``data`` with every NaN or infinity as None, so ``json.dumps`` writes ``null`` (JSON has
+    no NaN: jq, browsers and strict parsers refuse a file holding one); dicts, lists, tuples
+    and numpy values followed."""
+    if isinstance(data, dict):
+        return {k: finite_or_null(v) for k, v in data.items()}
+    if isinstance(data, (list, tuple)):
+        return [finite_or_null(v) for v in data]
+    if hasattr(data, "tolist") and not isinstance(data, (str, bytes)):
+        return finite_or_null(data.tolist())
+    if isinstance(data, float) and not math.isfinite(data):
+        return None
+    return data
 
 
 def jsonable(value):

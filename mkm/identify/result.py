@@ -29,7 +29,13 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.core.records import provenance, source_version, spreadsheet_safe, write_json_atomic
+from mkm.core.records import (
+    finite_or_null,
+    provenance,
+    source_version,
+    spreadsheet_safe,
+    write_json_atomic,
+)
 from mkm.fem.calibration import (
     THRESHOLD_FLOOR_FRACTION,
     calibration_entry,
@@ -323,11 +329,12 @@ class Identification:
                          "(largest |Err%| rising/falling):")
             for row in held.to_dict(orient="records"):
                 text = (f"    {row['run']} (eps {row['eps']:g}, L0 {row['L0_mm']:g} mm): "
-                        f"{row['heldout_rising_pct']:.2f}/{row['heldout_falling_pct']:.2f}")
+                        f"{_branches(row['heldout_rising_pct'], row['heldout_falling_pct'])}")
                 if "length_heldout_rising_pct" in row and np.isfinite(
                         row["length_heldout_rising_pct"]):
-                    text += (f"; its length held out {row['length_heldout_rising_pct']:.2f}/"
-                             f"{row['length_heldout_falling_pct']:.2f}")
+                    text += ("; its length held out "
+                             + _branches(row["length_heldout_rising_pct"],
+                                         row["length_heldout_falling_pct"]))
                 lines.append(text)
         else:
             lines.append("  predictive error: not measured (one run: nothing to hold out)")
@@ -343,10 +350,11 @@ class Identification:
                          f"{sum(b.steps for b in g.branches)} settled steps against their own "
                          f"noise ({'a misfit, see below' if g.misfit else 'within the noise'})")
         for check in self.checks_table().to_dict(orient="records"):
-            lines.append(f"  {check['run']}: largest |Err%| rising/falling: nominal "
-                         f"{check['nominal_rising_pct']:.2f}/{check['nominal_falling_pct']:.2f}, "
-                         f"identified {check['identified_rising_pct']:.2f}/"
-                         f"{check['identified_falling_pct']:.2f}")
+            nominal = _branches(check["nominal_rising_pct"], check["nominal_falling_pct"])
+            identified = _branches(check["identified_rising_pct"],
+                                   check["identified_falling_pct"])
+            lines.append(f"  {check['run']}: largest |Err%| rising/falling: nominal {nominal}, "
+                         f"identified {identified}")
         lines += [f"  note: {n}" for n in self.notes]
         return "\n".join(lines)
 
@@ -357,8 +365,9 @@ class Identification:
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
         info = provenance()
-        record = {**self.record(), "provenance": {
-            **info, "code_version": source_version("mkm.identify.procedure", data=False)}}
+        # an assumed parameter's interval, a branch without steps: null, not NaN (no JSON)
+        record = finite_or_null({**self.record(), "provenance": {
+            **info, "code_version": source_version("mkm.identify.procedure", data=False)}})
         files = {"calibration": out / "calibration.json", "parameters": out / "parameters.csv",
                  "steps": out / "steps.csv", "identification": out / "identification.json"}
         header = (f"# mkm identify: {info['command']} ({info['date_utc']}); runs "
@@ -443,3 +452,11 @@ def _entry(theta0_deg: float, model, module: str, reference: pd.DataFrame) -> di
             "model_params": {k: v for k, v in model.params().items() if k != "theta0_deg"},
             "command": info["command"], "date_utc": info["date_utc"],
             "code_version": source_version(module, data=False), "versions": info["versions"]}
+
+
+def _branches(rising_pct: float, falling_pct: float) -> str:
+    """``0.50/1.20``; a branch without a settled step is said so, not printed as nan (a run
+    aborted on its way up has no falling step)."""
+    shown = [f"{v:.2f}" if np.isfinite(v) else f"none ({name} step)"
+             for v, name in ((rising_pct, "no rising"), (falling_pct, "no falling"))]
+    return "/".join(shown)

@@ -104,6 +104,9 @@ def load_run_data(path) -> RunData:
     if str(run.status) == "failed":
         raise ValueError(f"run {path.name} has status failed ({run.reason or 'no reason'}): "
                          "expected a complete run to identify from")
+    if run.rows_lost:  # steps whose hold samples are gone would be fitted as forces of zero
+        raise ValueError(f"run {path.name}: {run.rows_lost[0]}: expected the whole record to "
+                         "identify from")
     steps = run.steps
     settled = steps[steps["settled"].astype(bool)] if len(steps) else steps
     if settled.empty:

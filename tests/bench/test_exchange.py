@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -192,3 +194,21 @@ def test_import_into_a_file_is_one_line_and_writes_nothing(tmp_path, capsys):
     assert code == 2 and out == ""
     assert err == f"mkm import: error: --out {table} is a file: expected a folder for the run " \
                   "folders\n"
+
+
+def test_export_of_a_run_that_lost_rows_says_so(config, tmp_path, capsys):
+    # the metadata said complete, lost_samples 0, over a samples sheet of a third of the run
+    from mkm.bench.run import acquire
+
+    path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
+    counted = json.loads((path / "run.json").read_text())["counters"]["samples"]
+    lines = (path / "samples.csv").read_text().splitlines(keepends=True)
+    (path / "samples.csv").write_text("".join(lines[:61]))
+    code, _, err = _run(["export", str(path), "--format", "csv", "--out",
+                         str(tmp_path / "csv")], capsys)
+    assert code == 0, err
+    frame = pd.read_csv(tmp_path / "csv" / "metadata.csv", keep_default_na=False)
+    meta = dict(zip(frame["key"], frame["value"], strict=True))
+    assert json.loads(meta["problems"]) == [
+        f"samples.csv holds 60 samples, run.json counted {counted}: {counted - 60} lost"]
+    assert len(pd.read_csv(tmp_path / "csv" / "samples.csv")) == 60

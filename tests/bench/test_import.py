@@ -429,3 +429,26 @@ def test_a_staircase_in_time_identifies_creep_where_holds_were_timed(tmp_path, m
     assert values["hysteresis_fraction"] == pytest.approx(0.03, abs=0.003)
     assert values["creep_fraction"] == pytest.approx(0.05, abs=0.015)
     assert values["creep_tau_s"] == pytest.approx(5.0, abs=1.5)
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--vented", "-1"], "--vented '-1' is invalid: expected a number in [-0.5, 8] bar (a "
+     "pressure sensor's offset below zero, the practical range above)"),
+    (["--vented", "9"], "--vented '9' is invalid: expected a number in [-0.5, 8] bar (a "
+     "pressure sensor's offset below zero, the practical range above)"),
+    (["--tare", "1e9"], "--tare '1e9' is invalid: expected a number in [-100000, 100000] N "
+     "(the largest load cell a bench takes)"),
+    (["--tare", "2000"], "record.csv: --tare 2000 N is not below the largest force of the "
+     "table, 1000 N: expected the force read at 0 bar"),
+])
+def test_a_given_zero_no_lab_could_mean_is_refused(argv, message, tmp_path, mkm_cli):
+    # --vented -1 added 1 bar to every pressure, --tare 1e9 took 1e9 N from every force
+    t = np.arange(0.0, 20.0, 0.1)
+    p = np.interp(t, [0, 5, 10, 15, 20], [0.0, 0.0, 2.5, 0.0, 0.0])
+    path = tmp_path / "record.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p, "F (N)": 400.0 * p}).to_csv(path, index=False)
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", *argv,
+                              "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == ""
+    assert err == f"mkm import: error: {message}\n"
+    assert not (tmp_path / "runs").exists()

@@ -79,3 +79,20 @@ def test_a_run_folder_that_does_not_exist_is_named_so(config, tmp_path, capsys):
     assert main(["reprocess", str(tmp_path / "nothere"), "--config", str(toml)]) == 2
     assert capsys.readouterr().err == f"mkm reprocess: error: {tmp_path / 'nothere'}: no such " \
         "folder\n"
+
+
+@pytest.mark.parametrize("damage, message", [
+    ("steps", r"steps\.csv is missing: expected the whole record to reprocess"),
+    ("samples", r"samples\.csv holds 50 samples, run\.json counted \d+: \d+ lost: expected the "
+                r"whole record to reprocess"),
+])
+def test_a_source_that_lost_rows_is_refused(damage, message, config, source, tmp_path):
+    # the copy was a complete run with 0 steps (or steps of no samples) and not a word of it
+    if damage == "steps":
+        (source.path / "steps.csv").unlink()
+    else:
+        lines = (source.path / "samples.csv").read_text().splitlines(keepends=True)
+        (source.path / "samples.csv").write_text("".join(lines[:51]))
+    with pytest.raises(ValueError, match=message):
+        reprocess(source.path, config, out_root=tmp_path / "again")
+    assert not (tmp_path / "again").exists()

@@ -168,3 +168,56 @@ def test_a_sample_time_no_bin_can_hold_is_refused(run_path, bad):
     # one line naming the value: what no bin can hold, or (1e300) what no bench reads
     with pytest.raises(ValueError, match=re.escape(f"time_s={float(bad)!r} is ")):
         aggregate_samples(run_path, bin_s=1.0)
+
+
+def test_closed_run_with_rows_lost_names_the_loss(run_path):
+    # A complete run copied short: whole rows gone, no partial row to betray it.
+    counted = json.loads((run_path / "run.json").read_text())["counters"]["samples"]
+    lines = (run_path / "samples.csv").read_text().splitlines(keepends=True)
+    (run_path / "samples.csv").write_text("".join(lines[:101]))
+    steps = (run_path / "steps.csv").read_text().splitlines(keepends=True)
+    (run_path / "steps.csv").write_text("".join(steps[:2]))
+    run = load_run(run_path)
+    assert run.status == "complete"
+    done = run.meta.steps_done
+    assert f"samples.csv holds 100 samples, run.json counted {counted}: {counted - 100} lost" \
+        in run.problems
+    assert f"steps.csv holds 1 steps, run.json counted {done} done: {done - 1} lost" \
+        in run.problems
+
+
+def test_intact_run_has_no_problems(run_path):
+    assert load_run(run_path).problems == []
+
+
+def test_binary_samples_csv_is_named(run_path):
+    (run_path / "samples.csv").write_bytes(b"\xfa\xfb,\n" * 100)  # not UTF-8
+    with pytest.raises(ValueError, match=r"samples\.csv is corrupt: expected the header"):
+        load_run(run_path)
+
+
+def test_a_negative_steps_done_is_refused(run_path):
+    # steps_done -3 loaded as a run that had done fewer than no steps
+    meta = json.loads((run_path / "run.json").read_text())
+    meta["steps_done"] = -3
+    write_json_atomic(run_path / "run.json", meta)
+    with pytest.raises(ValueError) as caught:
+        load_run(run_path)
+    assert str(caught.value) == (f"{run_path / 'run.json'}: steps_done=-3 is invalid: expected "
+                                 "a count >= 0")
+
+
+def test_a_run_folder_saved_again_on_windows_loads_the_same(run_path):
+    # a BOM (Excel's "CSV UTF-8", Windows editors) and CRLF line ends: refused as corrupt
+    from mkm.bench.reprocess import overlay_config
+
+    before = load_run(run_path)
+    cell = overlay_config(run_path, run_path / "config.toml").loadcell
+    for name in ("run.json", "samples.csv", "steps.csv", "commands.csv", "config.toml"):
+        text = (run_path / name).read_text(encoding="utf-8")
+        (run_path / name).write_bytes(b"\xef\xbb\xbf" + text.replace("\n", "\r\n").encode())
+    after = load_run(run_path)
+    assert after.problems == [] and after.status == before.status
+    pd.testing.assert_frame_equal(after.steps, before.steps)
+    pd.testing.assert_frame_equal(after.samples, before.samples)
+    assert overlay_config(run_path, run_path / "config.toml").loadcell == cell

@@ -194,6 +194,17 @@ def test_convergence_past_the_braid_lock_says_why_its_forces_are_nan(mkm_run, tm
     assert frame["failure"].str.contains("locking angle").all()
 
 
+@pytest.mark.parametrize("pressure", ["100", "-1", "8.5"])
+def test_convergence_pressure_is_within_the_practical_range(pressure, mkm_run, tmp_path):
+    # 100 bar ran the three meshes (minutes) for a muscle no lab runs
+    code, out, err = mkm_run(["fem", "convergence", "--pressure", pressure,
+                              "--out", str(tmp_path)])
+    assert code == 2 and out == ""
+    assert err.splitlines()[-1] == (f"mkm fem convergence: error: --pressure {pressure}: "
+                                    "expected a pressure in [0, 8] bar, the practical range")
+    assert not any(tmp_path.iterdir())
+
+
 @pytest.mark.parametrize("command", ["design", "evaluate"])
 def test_surrogate_fe_budget_is_named_as_the_option(command, mkm_run):
     # evaluate said 'n_muscles=0', a name the user never typed

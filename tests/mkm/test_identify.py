@@ -11,6 +11,7 @@ friction within 1 point, a held-out run within 1.5 % largest |Err%| on both bran
 from __future__ import annotations
 
 import json
+import re
 import shutil
 
 import numpy as np
@@ -232,6 +233,7 @@ def test_a_model_that_is_no_static_physics_is_refused(one_run, tmp_path, mkm_run
     ("unknown-parameter", "--params 'theta0,stiffness': unknown parameter 'stiffness': expected "
                           "some of theta0,rubber,t0,D0,friction,creep,gap,offset"),
     ("failed", "has status failed"),
+    ("lost-rows", "samples.csv holds 400 samples, run.json counted"),
 ])
 def test_bad_input_is_one_line_and_status_2(one_run, tmp_path, mkm_run, case, message):
     runs, params = [one_run], "theta0,rubber"
@@ -248,6 +250,11 @@ def test_bad_input_is_one_line_and_status_2(one_run, tmp_path, mkm_run, case, me
         runs = [bad]
     elif case == "unknown-parameter":
         params = "theta0,stiffness"
+    elif case == "lost-rows":  # a copy cut short: the later holds had no samples, Err% 100
+        bad = _copy(one_run, tmp_path, "cut")
+        lines = (bad / "samples.csv").read_text().splitlines(keepends=True)
+        (bad / "samples.csv").write_text("".join(lines[:401]))
+        runs = [bad]
     else:
         bad = _copy(one_run, tmp_path, "failed")
         meta = json.loads((bad / "run.json").read_text(encoding="utf-8"))
@@ -393,3 +400,37 @@ def test_a_slack_run_leaves_the_closed_forms_slope_fits_to_the_others(tmp_path):
     assert 15.0 < entries["thickwall"]["theta0_deg"] < 40.0
     # the force target of Equation 2 fits every force, 0 N included
     assert entries["eq2-inner"]["reference"] == f"{rising.name}, {slack.name}"
+
+
+def test_a_run_without_a_falling_step_says_so_instead_of_nan(one_run, tmp_path, mkm_run):
+    # a run stopped on its way up printed 'nominal 0.50/nan, identified 0.45/nan'
+    rising = _copy(one_run, tmp_path, "rising")
+    steps = pd.read_csv(rising / "steps.csv")
+    steps.assign(settled=steps["settled"] & (steps["direction"] == "up")).to_csv(
+        rising / "steps.csv", index=False)
+    code, out, err = mkm_run(["identify", str(rising), "--params", "theta0", "--model",
+                              "thickwall", "--search", "model", "--out", str(tmp_path / "out"),
+                              "--no-progress"])
+    assert code == 0, err
+    (line,) = [x for x in out.splitlines() if "rising/falling" in x]
+    assert re.fullmatch(r"  rising: largest \|Err%\| rising/falling: nominal \d+\.\d\d/none "
+                        r"\(no falling step\), identified \d+\.\d\d/none \(no falling step\)",
+                        line), line
+    assert "nan" not in out
+
+
+def test_the_written_json_is_strict_json(one_run, tmp_path, mkm_run):
+    # identification.json and calibration.json held NaN (an assumed parameter's interval), which
+    # jq, browsers and every strict parser refuse
+    out = tmp_path / "out"
+    code, _, err = mkm_run(["identify", str(one_run), "--params", "theta0", "--model",
+                            "thickwall", "--search", "model", "--out", str(out), "--no-progress"])
+    assert code == 0, err
+
+    def refuse(constant):
+        raise ValueError(f"{constant} in strict JSON")
+
+    record = json.loads((out / "identification.json").read_text(), parse_constant=refuse)
+    json.loads((out / "calibration.json").read_text(), parse_constant=refuse)
+    assumed = [p for p in record["parameters"] if p["status"] == "assumed"]
+    assert assumed and all(p["ci_low"] is None and p["ci_high"] is None for p in assumed)

@@ -82,3 +82,18 @@ def test_predict_many_batches_the_fe_sweeps_and_equals_predict(tmp_path, axisym)
     again = predict_many(requests, tmp_path / "predictions", workers=1)
     assert [hit for _, hit in again] == [True] * 4
     assert again[1][0].seconds == solved[1][0].seconds
+
+
+@pytest.mark.parametrize("damage", [b"", b"PK\x03\x04 cut", b"x" * 500])
+def test_a_damaged_entry_is_computed_again_and_replaced(damage, tmp_path):
+    # a write cut short or a damaged file: BadZipFile / EOFError / ValueError tracebacks
+    model = parse_spec("thickwall").build()
+    pressures = np.array([0.5, 1.0])
+    first, hit = cached_predict(model, pressures, 30.0, 3.0, 0.0, cache_dir=tmp_path)
+    (entry,) = tmp_path.glob("*.npz")
+    entry.write_bytes(damage)
+    again, hit = cached_predict(model, pressures, 30.0, 3.0, 0.0, cache_dir=tmp_path)
+    assert not hit
+    np.testing.assert_array_equal(again.force_N, first.force_N)
+    (many,) = prediction_cache.predict_many([(model, pressures, 30.0, 3.0, 0.0)], tmp_path)
+    assert many[1] and np.array_equal(many[0].force_N, first.force_N)  # replaced: a hit now

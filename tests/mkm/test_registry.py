@@ -93,3 +93,21 @@ def test_a_model_named_twice_is_refused():
     # the same rung with other parameters is another model
     assert [s.text for s in parse_specs("eq2,eq2:theta0_deg=50")] == ["eq2",
                                                                       "eq2:theta0_deg=50"]
+
+
+@pytest.mark.parametrize("text, same", [
+    ("axisym,axisym:mesh=medium", "axisym"),  # medium is Axisym's default mesh
+    ("eq2:diameter=inner,eq2", "eq2"),
+    ("friction,friction:static=axisym,direction=rising", "friction"),
+])
+def test_a_model_spelled_at_its_defaults_is_named_twice(text, same):
+    # axisym and axisym:mesh=medium were scored as two models, the same numbers in two rows
+    with pytest.raises(ValueError, match=rf"names {same} twice"):
+        parse_specs(text)
+
+
+def test_a_muscle_parameter_at_the_factory_default_is_another_model():
+    # L0_mm unset is the run's muscle's length, not 282 mm: both are kept
+    assert [s.text for s in parse_specs("eq2,eq2:L0_mm=282")] == ["eq2", "eq2:L0_mm=282"]
+    assert [s.text for s in parse_specs("axisym,axisym:mesh=coarse")] == [
+        "axisym", "axisym:mesh=coarse"]
