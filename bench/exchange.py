@@ -187,14 +187,25 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     check_out_root(out_root)
     out = []
     for g, (meta, steps, samples, notes, shape) in zip(groups, built, strict=True):
+        label = _folder_label(meta.muscle, [b[0].muscle for b in built])
         writer = RunWriter(out_root, meta, f"# imported from {path.name}: no bench "
-                           "configuration\n")
+                           "configuration\n", label)
         writer.append_samples(samples)
         for step in steps:
             writer.append_step(step)
         writer.close()
         out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
     return out
+
+
+def _folder_label(muscle, muscles) -> str:
+    """What tells one run of a table from the others in its folder's name (not the second it
+    was written in): its eps, and its rest length where the table holds several; empty for a
+    table of one run."""
+    if len(muscles) < 2:
+        return ""
+    several_L0 = len({m.L0_mm for m in muscles}) > 1
+    return f"{f'L0{muscle.L0_mm:g}mm-' if several_L0 else ''}eps{muscle.eps:.4g}"
 
 
 @dataclass

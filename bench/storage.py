@@ -421,11 +421,14 @@ IMPORTED_SUFFIX = "-imported"
 
 
 def run_folder_name(muscle_id: str, when: datetime.datetime | None = None, k: int = 1,
-                    simulated: bool = False, origin: str = "") -> str:
-    """``<UTC time>_<muscle id>[-k][-reprocessed|-imported][-SIMULATED]``: the ``k``-th folder
-    of that second; ``origin`` is ``"reprocessed"``, ``"imported"`` or empty (acquired)."""
+                    simulated: bool = False, origin: str = "", label: str = "") -> str:
+    """``<UTC time>_<muscle id>[-label][-k][-reprocessed|-imported][-SIMULATED]``: the
+    ``k``-th folder of that second; ``label`` tells apart the runs one command writes (an
+    imported table's lengths: ``eps0.064``); ``origin`` is ``"reprocessed"``, ``"imported"``
+    or empty (acquired)."""
     when = when or datetime.datetime.now(datetime.UTC)
-    return (f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}{f'-{k}' if k > 1 else ''}"
+    return (f"{when:%Y%m%dT%H%M%SZ}_{muscle_id}{f'-{label}' if label else ''}"
+            f"{f'-{k}' if k > 1 else ''}"
             f"{f'-{origin}' if origin else ''}{SIMULATED_SUFFIX if simulated else ''}")
 
 
@@ -446,10 +449,11 @@ class RunWriter:
 
     The folder is made with its run.json first (``meta``), then config.toml and the CSV
     headers; if any of that fails (a full disk) the folder is removed again and the
-    ``OSError`` raised, so no folder exists without its run.json.
+    ``OSError`` raised, so no folder exists without its run.json. ``label`` goes into the
+    folder's name (:func:`run_folder_name`).
     """
 
-    def __init__(self, root: str | Path, meta: RunMeta, config_text: str):
+    def __init__(self, root: str | Path, meta: RunMeta, config_text: str, label: str = ""):
         import shutil
 
         root = Path(root)
@@ -458,7 +462,8 @@ class RunWriter:
         while True:
             origin = ("reprocessed" if meta.reprocessed_from else
                       "imported" if meta.imported_from else "")
-            path = root / run_folder_name(meta.muscle.id, when, k, meta.simulated, origin)
+            path = root / run_folder_name(meta.muscle.id, when, k, meta.simulated, origin,
+                                          label)
             try:
                 path.mkdir()
                 break

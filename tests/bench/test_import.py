@@ -90,11 +90,14 @@ def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
     runs, err = _import(mkm_cli, path, *MUSCLE)
     assert [r.meta.muscle.eps for r in runs] == pytest.approx([0.0, 0.122], abs=1e-12)
     assert [r.meta.imported_from["sheet"] for r in runs] == ["eps 0", "eps 12.2"]
+    assert [r.path.name.split("_", 1)[1] for r in runs] == [
+        "lab-muscle-7-eps0-imported", "lab-muscle-7-eps0.122-imported"]
+    (one,), _ = _import(mkm_cli, path, *MUSCLE, "--sheet", "eps 12.2")
+    assert one.path.name.endswith("_lab-muscle-7-imported")  # one run: no label
     for run in runs:
         np.testing.assert_allclose(run.steps["force_N_mean"],
                                    thickwall_N(PRESSURES[:5], run.meta.muscle.eps), rtol=1e-5)
     assert (_scores(tmp_path, runs)["max_abs_err_pct"] < 0.01).all()
-    (one,), _ = _import(mkm_cli, path, *MUSCLE, "--sheet", "eps 12.2")
     assert one.meta.muscle.eps == pytest.approx(0.122)
 
 
@@ -400,6 +403,10 @@ def test_lengths_and_rest_lengths_from_the_file(tmp_path, mkm_cli):
     assert [(r.meta.muscle.L0_mm, r.meta.muscle.eps) for r in runs] == [
         (250.0, 0.0), (250.0, pytest.approx(0.12)), (300.0, pytest.approx(0.1)), (300.0, 0.0)]
     assert all(r.meta.muscle.id == "family-3" and len(r.steps) == 5 for r in runs)
+    # each folder says which length it holds, whatever second it was written in
+    assert [r.path.name.split("_", 1)[1] for r in runs] == [
+        "family-3-L0250mm-eps0-imported", "family-3-L0250mm-eps0.12-imported",
+        "family-3-L0300mm-eps0.1-imported", "family-3-L0300mm-eps0-imported"]
 
 
 def test_a_staircase_in_time_identifies_creep_where_holds_were_timed(tmp_path, mkm_cli):
