@@ -74,7 +74,14 @@ from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 from mkm.uncertainty import force_band, with_band
-from mkm.verdict import AutoPick, format_seconds, model_label, recommend, verdict
+from mkm.verdict import (
+    AutoPick,
+    format_seconds,
+    model_label,
+    muscle_advice,
+    recommend,
+    verdict,
+)
 
 DEFAULT_MODELS = ("eq2", "thickwall", "axisym", REFERENCE_SPEC)
 
@@ -769,7 +776,19 @@ def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
     fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
           if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
     return verdict(label, r.summary, names, tolerance, choice, same,
-                   fe[0] if fe else None, f"mkm identify {r.run.path}")
+                   fe[0] if fe else None, muscle_advice(
+                       str(r.run.path), _identified_runs(r.calibration),
+                       r.calibration.path.name if r.calibration else ""))
+
+
+def _identified_runs(calibration: Calibration | None) -> list[dict]:
+    """The runs a calibration was identified on (``mkm identify`` records them in the entry of
+    the model it identified with); empty for the shipped one or one written by hand."""
+    for entry in (calibration.entries.values() if calibration else ()):
+        runs = (entry.get("identified") or {}).get("runs") if isinstance(entry, dict) else None
+        if isinstance(runs, list) and runs and all(isinstance(r, dict) for r in runs):
+            return runs
+    return []
 
 
 def _auto_paragraph(r: _Run, tolerance: float) -> str:

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 
 def format_seconds(seconds: float) -> str:
@@ -91,17 +92,39 @@ def _consistency(row: dict, summary: list[dict]) -> str:
             f"{row['worst_step']}; {others}; the models have no braid friction or creep)")
 
 
+def muscle_advice(run_path: str, identified: list[dict] | None = None,
+                  calibration_name: str = "") -> str:
+    """What the FE model's distance from a run, beyond auto's bound, tells a reader: identify
+    the muscle; or, where the report's calibration was identified (``identified``: its runs as
+    :mod:`mkm.identify` records them, ``run``, ``path`` and ``muscle``), that it does not carry
+    over to a run it did not see (identify with the run among the others), or, for one of its
+    own runs, that the model does not fit it (no calibration would)."""
+    if not identified:
+        return f"which points to the muscle, not the model: identify it (`mkm identify {run_path}`)"
+    name = f" ({calibration_name})" if calibration_name else ""
+    if any(r.get("run") == Path(run_path).name for r in identified):
+        return (f"although the calibration{name} was identified on this run with the others: "
+                "the model does not fit them all with one muscle (the identification's misfit "
+                "notes say where)")
+    at = ", ".join(f"{r['muscle']['eps']:g}" for r in identified if "muscle" in r)
+    paths = " ".join(str(r["path"]) for r in identified if "path" in r)
+    return (f"which points to the muscle, not the model: the calibration{name}, identified on "
+            f"the runs at eps {at}, does not carry over to this run; identify with it among "
+            f"them (`mkm identify {paths} {run_path}`)")
+
+
 def verdict(run_label: str, summary: list[dict], names: dict[str, str],
             tolerance: float | None, auto: AutoPick | None = None,
             auto_same: bool = False, fe_err: tuple[str, float] | None = None,
-            identify_hint: str = "mkm identify RUN_DIR") -> str:
+            advice: str | None = None) -> str:
     """The verdict sentence of one run (plain text).
 
     ``summary``: one :func:`mkm.scoring.summarise_run` row per model (``model`` is the spec
     text, named by ``names``), each with ``band_pct`` (the model's ± 2 u band at its worst step,
     % of the largest measured force) when it has a band. ``auto``: auto's pick at ``tolerance``,
     ``auto_same``: whether it is the recommended model. ``fe_err``: ``(name, largest |Err%|)``
-    of an FE model of the report, the measurement's distance from the FE model.
+    of an FE model of the report, the measurement's distance from the FE model; ``advice``:
+    what that distance, beyond auto's bound, tells (:func:`muscle_advice`).
     """
     row, within = recommend(summary, tolerance)
     if row is None and any(r["valid_points"] > 0 for r in summary):
@@ -137,8 +160,7 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
                else f"at least {max(auto_err - auto.bound_pct, 0.0):.2f} %")
         off = "" if auto_same else f", from which it is {auto_err:.2f} % off"
         return text + (f"{why}{off}: the FE model itself is {gap} off, more than that bound, "
-                       f"which points to the muscle, not the model: identify it "
-                       f"(`{identify_hint}`).")
+                       f"{advice or muscle_advice('RUN_DIR')}.")
     if auto_same:
         return text + f" auto at {tol} picks it too."
     if math.isfinite(auto_err):

@@ -435,3 +435,15 @@ def test_a_festo_class_muscle_gets_the_practical_range_surrogate_as_surrogate(tm
     assert summary.loc["surrogate", "valid_points"] == summary.loc["thickwall", "valid_points"] > 0
     provenance = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
     assert provenance["model-surrogate"]["model"] == "surrogate-muscle-gp-range"
+
+
+def test_the_verdict_knows_the_runs_an_identified_calibration_saw(tmp_path):
+    from mkm.fem.calibration import Calibration
+    from mkm.report import _identified_runs
+
+    runs = [{"run": "r2", "path": "runs/r2", "muscle": {"eps": 0.064}}]
+    entries = {"thickwall": {"theta0_deg": 26.0},
+               "axisym": {"theta0_deg": 26.3, "identified": {"runs": runs}}}
+    assert _identified_runs(Calibration(tmp_path / "calibration.json", entries)) == runs
+    assert _identified_runs(Calibration.shipped()) == []  # the paper's fit: no runs of a lab
+    assert _identified_runs(None) == []

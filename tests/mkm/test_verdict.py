@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from mkm.verdict import AutoPick, format_seconds, recommend, verdict
+from mkm.verdict import AutoPick, format_seconds, muscle_advice, recommend, verdict
 
 
 def _row(model, err, seconds, consistent=True, valid=5, band=0.5):
@@ -59,7 +59,7 @@ def test_the_sentence_names_model_distance_band_speed_and_consistency():
 def test_when_auto_picks_another_model_the_sentence_says_why_and_points_to_the_muscle():
     pick = AutoPick("surrogate", "Surrogate", 0.8, "")
     text = verdict("Run 1", ROWS, NAMES, 0.02, pick, False, (NAMES["axisym"], 5.70),
-                   "mkm identify runs/r1")
+                   muscle_advice("runs/r1"))
     # auto's choice and the measured ranking, reconciled in the same sentence
     assert text.endswith("auto at 2 % picks Surrogate instead, bounding its error against the "
                          "FE model (0.80 %), not against this measurement, from which it is "
@@ -80,13 +80,33 @@ def test_when_auto_agrees_but_the_measurement_is_beyond_the_tolerance_the_muscle
     rows = [_row("eq2", 20.0, 6e-6, False), _row("surrogate", 4.63, 4.2e-5),
             _row("axisym", 4.9, 1.2)]
     text = verdict("Run 1", rows, NAMES, 0.02, AutoPick("surrogate", "Surrogate", 1.1, ""),
-                   True, (NAMES["axisym"], 4.9), "mkm identify r1")
+                   True, (NAMES["axisym"], 4.9), muscle_advice("r1"))
     assert "no model is within 2 % of the measurement; the closest is Surrogate, 4.63 % off" \
         in text
     assert text.endswith("auto at 2 % picks it too, bounding its error against the FE model "
                          "(1.10 %), not against this measurement: the FE model itself is 4.90 % "
                          "off, more than that bound, which points to the muscle, not the model: "
                          "identify it (`mkm identify r1`).")
+
+
+def test_with_an_identified_calibration_the_advice_says_whether_it_saw_the_run():
+    """The published DMSP-10's rest length, scored with the calibration identified on its
+    eps 0.064 and 0.184 lengths: identifying that run alone (the advice without a calibration)
+    would fit theta0 and the rubber on one eps, where they are confounded."""
+    identified = [{"run": f"r{k}", "path": f"runs/r{k}", "muscle": {"eps": eps}}
+                  for k, eps in ((2, 0.064), (4, 0.184))]
+    held_out = muscle_advice("runs/r1", identified, "calibration.json")
+    assert held_out == ("which points to the muscle, not the model: the calibration "
+                        "(calibration.json), identified on the runs at eps 0.064, 0.184, does "
+                        "not carry over to this run; identify with it among them (`mkm identify "
+                        "runs/r2 runs/r4 runs/r1`)")
+    seen = muscle_advice("elsewhere/r4", identified, "calibration.json")
+    assert seen.startswith("although the calibration (calibration.json) was identified on this "
+                           "run with the others: the model does not fit them all")
+    assert "points to the muscle" not in seen
+    pick = AutoPick("surrogate", "Surrogate", 0.8, "")
+    text = verdict("Run 1", ROWS, NAMES, 0.02, pick, False, (NAMES["axisym"], 5.70), held_out)
+    assert text.endswith(f"more than that bound, {held_out}.")
 
 
 def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
