@@ -272,19 +272,20 @@ def default_cache_dir() -> Path:
 def training_task(kind: str, dataset=None) -> str:
     """The name under which :mod:`mkm.core.durations` keeps how long training ``kind`` on
     ``dataset`` (None: the kind's own, :func:`kind_files`) took."""
+    kind = BEST if kind == "best" else kind
     if dataset is None:
-        dataset = kind_files(BEST if kind == "best" else kind)[0]
+        dataset = kind_files(kind)[0]
     return f"surrogate-training-{kind}-{Path(dataset).stem}"
 
 
 def _cache_folder(kind, dataset, cache_dir, splits) -> tuple[Path, Path, int]:
     """The cache folder of ``kind`` on ``dataset`` (None: the kind's), the dataset and the
-    splits resolved."""
+    splits resolved; ``best`` and the kind it names share one folder (one model, trained once)."""
     resolved = BEST if kind == "best" else kind
     dataset = kind_files(resolved)[0] if dataset is None else Path(dataset)
     splits = kind_splits(resolved, splits)
     cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
-    return cache_dir / f"{kind}-{cache_key(dataset, kind, splits)}", dataset, splits
+    return cache_dir / f"{resolved}-{cache_key(dataset, resolved, splits)}", dataset, splits
 
 
 def is_cached(kind: str = "best", dataset=None, cache_dir=None,

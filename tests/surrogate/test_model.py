@@ -141,3 +141,14 @@ def test_outside_its_box_inside_the_practical_range_it_names_the_spec_that_answe
     with pytest.warns(OutOfDomainWarning) as record:
         design_model.with_parameters(L0_mm=1500.0).predict([0.5, 1.0], 40.0, 3.0, 0.1)
     assert "practical range" not in str(record[0].message)
+
+
+def test_best_and_the_kind_it_names_are_one_cached_model(design_model):
+    # the default surrogate is asked for as `best` (spec `surrogate`) and by its kind
+    # (identify, auto): one training on first use, not one per name
+    from mkm.surrogate.kinds import BEST
+    from mkm.surrogate.train import is_cached, training_task
+
+    assert is_cached(BEST)
+    assert training_task("best") == training_task(BEST)
+    assert cached_model(BEST).metadata["trained"] == design_model.metadata["trained"]
