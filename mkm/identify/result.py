@@ -349,6 +349,8 @@ class Identification:
             lines.append(f"  goodness of fit: chi2/nu = {g.reduced:.3g} over "
                          f"{sum(b.steps for b in g.branches)} settled steps against their own "
                          f"noise ({'a misfit, see below' if g.misfit else 'within the noise'})")
+        elif self.goodness is not None:
+            lines.append(self._unjudged_line())
         for check in self.checks_table().to_dict(orient="records"):
             nominal = _branches(check["nominal_rising_pct"], check["nominal_falling_pct"])
             identified = _branches(check["identified_rising_pct"],
@@ -357,6 +359,23 @@ class Identification:
                          f"identified {identified}")
         lines += [f"  note: {n}" for n in self.notes]
         return "\n".join(lines)
+
+    def _unjudged_line(self) -> str:
+        """Without the steps' noise (a table: one value per step) no chi-square says whether
+        the model fits: the line gives the largest miss on the fitted runs instead, for the
+        reader to weigh against the instruments' accuracy."""
+        line = f"  goodness of fit: not judged ({self.goodness.why_not})"
+        checks = self.checks_table()
+        if not len(checks):
+            return line
+        misses = checks.reindex(columns=["identified_rising_pct", "identified_falling_pct"]
+                                ).astype(float).max(axis=1)
+        if not np.isfinite(misses).any():
+            return line
+        worst = checks.loc[misses.idxmax()]
+        return (f"{line}: the identified model misses its own runs by up to "
+                f"{misses.max():.2f} % of their largest force (run {worst['run']}, eps "
+                f"{worst['eps']:g}); weigh that against the load cell's and the table's accuracy")
 
     def write(self, out_dir) -> dict[str, Path]:
         """Write the four files into ``out_dir`` (created); return their paths."""
