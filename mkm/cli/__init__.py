@@ -15,6 +15,7 @@ import warnings
 
 from mkm.cli import (
     bench,
+    data,
     demo,
     design,
     exchange,
@@ -71,7 +72,8 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
                                 parser_class=_Parser)
-    for group in (demo, bench, exchange, fem, surrogate, validation, design, identify, models):
+    for group in (demo, bench, exchange, data, fem, surrogate, validation, design, identify,
+                  models):
         group.register(sub)
     return parser
 
