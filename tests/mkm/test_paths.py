@@ -176,3 +176,20 @@ def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch,
     assert main(["import", name, "--id", "dmsp-20", "--D0", "20", "--t0", "1.8", "--muscle",
                  "Festo DMSP-20-300", "--out", "runs"]) == 0
     assert len(capsys.readouterr().out.split()) == 6  # one run per length
+
+
+SOURCE_TREE_ONLY = ("data/", "examples/", "benchmarks/", "tests/", "docs/", "tools/")
+
+
+def test_the_documented_python_reads_no_file_of_the_source_tree():
+    """The Python the user docs show runs from a wheel: no path into the checkout (was:
+    ``load_run("data/experimental/...")`` in the README and the run-folder page, a folder the
+    wheel does not hold)."""
+    checked = 0
+    for doc in USER_DOCS:
+        for block in re.findall(r"```python\n(.*?)```", doc.read_text("utf-8"), re.DOTALL):
+            checked += 1
+            for literal in re.findall(r"[\"']([^\"'\n]+)[\"']", block):
+                assert not literal.replace("\\", "/").startswith(SOURCE_TREE_ONLY), \
+                    f"{doc.name}: {literal!r} is a path of the source tree"
+    assert checked >= 2
