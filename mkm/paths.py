@@ -18,6 +18,7 @@ the calibration) always takes an explicit flag of the command that writes it.
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 from mkm.core.home import user_cache
@@ -103,3 +104,15 @@ def copy_published_table(name: str, to: str | os.PathLike | None = None) -> Path
         raise ValueError(f"{target.parent}: no such folder")
     shutil.copyfile(source, target)
     return target
+
+
+# characters that split or change an argument in cmd, PowerShell or a POSIX shell
+_SHELL_SPECIAL = re.compile(r"[\s&|<>^;()'`$%!,{}\[\]*?#]")
+
+
+def command_argument(path: str | os.PathLike) -> str:
+    """``path`` as one argument of a command the user may copy: in double quotes (which cmd,
+    PowerShell and bash all read as one argument) where it holds a space or a character a shell
+    treats specially (``C:\\Users\\Lab PC\\mkm-out\\runs\\R``), else as it is."""
+    text = str(path)
+    return f'"{text}"' if not text or _SHELL_SPECIAL.search(text) else text

@@ -68,7 +68,7 @@ from mkm.html import (
     table_html,
 )
 from mkm.identify.page import report_section
-from mkm.paths import default_out
+from mkm.paths import command_argument, default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, entries, parse_spec
@@ -769,7 +769,13 @@ def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
     fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
           if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
     return verdict(label, r.summary, names, tolerance, choice, same,
-                   fe[0] if fe else None, f"mkm identify {r.run.path}")
+                   fe[0] if fe else None, identify_command(r.run.path))
+
+
+def identify_command(run_path) -> str:
+    """The ``mkm identify`` line a verdict suggests for a run, its path one argument even with a
+    space in it (a Windows user folder)."""
+    return f"mkm identify {command_argument(run_path)}"
 
 
 def _auto_paragraph(r: _Run, tolerance: float) -> str:

@@ -435,3 +435,17 @@ def test_a_festo_class_muscle_gets_the_practical_range_surrogate_as_surrogate(tm
     assert summary.loc["surrogate", "valid_points"] == summary.loc["thickwall", "valid_points"] > 0
     provenance = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
     assert provenance["model-surrogate"]["model"] == "surrogate-muscle-gp-range"
+
+
+def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument():
+    """The ``mkm identify RUN`` a verdict suggests can be copied into cmd, PowerShell or bash
+    (was: ``mkm identify C:\\Users\\Lab PC\\...``, two arguments)."""
+    import shlex
+
+    from mkm.report import identify_command
+
+    assert identify_command(Path("mkm-out/runs/R")) == "mkm identify mkm-out/runs/R"
+    assert identify_command(r"C:\Users\Lab PC\mkm-out\runs\R") == \
+        r'mkm identify "C:\Users\Lab PC\mkm-out\runs\R"'
+    path = "/tmp/lab user é/Prüfstand (2)/runs/R"
+    assert shlex.split(identify_command(path)) == ["mkm", "identify", path]
