@@ -27,7 +27,8 @@ def _children(folder: Path) -> list[Path]:
 def run_folders(arguments) -> list[Path]:
     """The run folders ``arguments`` name, in order, each once.
 
-    An argument with ``*`` or ``?`` is a pattern (:func:`glob.glob`), its matches sorted; a
+    An argument with ``*`` or ``?`` is a pattern (:func:`glob.glob`; ``[`` and ``]`` are
+    themselves, as in a folder's name), its matches sorted; a
     folder that is not a run folder but holds run folders stands for them; anything else is
     passed on as it is (the loader says what is wrong with it). ``ValueError`` for a pattern or
     folder that names no run folder.
@@ -35,7 +36,9 @@ def run_folders(arguments) -> list[Path]:
     out: list[Path] = []
     for argument in map(str, arguments):
         if any(c in argument for c in PATTERN_CHARACTERS):
-            matches = [Path(m) for m in sorted(glob.glob(argument))]
+            # only * and ? are patterns: a [ is itself (a Windows folder "Messung [2]"), as
+            # glob.escape writes it
+            matches = [Path(m) for m in sorted(glob.glob(argument.replace("[", "[[]")))]
             found = []
             for match in matches:
                 if is_run_folder(match):

@@ -41,3 +41,12 @@ def test_report_takes_a_quoted_pattern(tmp_path, mkm_cli):
     # what cmd passes: the pattern itself
     code, out, err = mkm_cli(["report", str(tmp_path / "runs" / "*"), "--models", "eq2"])
     assert code == 2 and "matches no run folder" in err and err.count("\n") == 1
+
+
+def test_a_bracket_in_a_folder_name_is_itself_not_a_pattern(tmp_path):
+    """Only ``*`` and ``?`` are patterns, as documented (was: ``Messung [2]/runs/*`` matched no
+    run folder, glob reading ``[2]`` as a set of characters)."""
+    root = tmp_path / "Messung [2] é"
+    a, b = _runs(root / "runs", "20260101T000000Z_m", "20260101T000001Z_m")
+    assert run_folders([str(root / "runs" / "*")]) == [a, b]
+    assert one_run_folder(str(root / "runs" / "*01Z_m")) == b
