@@ -193,3 +193,20 @@ def test_the_documented_python_reads_no_file_of_the_source_tree():
                 assert not literal.replace("\\", "/").startswith(SOURCE_TREE_ONLY), \
                     f"{doc.name}: {literal!r} is a path of the source tree"
     assert checked >= 2
+
+
+def test_every_documented_out_is_in_the_working_folder():
+    """``--out`` in a command the user docs show names no folder of the installed package's
+    sources (was: ``mkm fem dataset ... --out surrogate/data/mkm_dataset.csv``, the checkout's
+    shipped file; from a wheel a stray ./surrogate/data/ folder)."""
+    packages = ("mkm/", "bench/", "fem/", "surrogate/")
+    seen = 0
+    for doc in USER_DOCS:
+        for line in doc.read_text("utf-8").splitlines():
+            command = line.strip()
+            if not command.startswith("mkm "):
+                continue
+            for out in re.findall(r"--out\s+(\S+)", command):
+                seen += 1
+                assert not out.replace("\\", "/").startswith(packages), f"{doc.name}: {command}"
+    assert seen >= 10
