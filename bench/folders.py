@@ -8,6 +8,7 @@ shell expands it), so every command that takes run folders passes its arguments 
 from __future__ import annotations
 
 import glob
+import re
 from pathlib import Path
 
 RUN_RECORD = "run.json"
@@ -18,16 +19,30 @@ def is_run_folder(path: Path) -> bool:
     return (path / RUN_RECORD).is_file()
 
 
+# <UTC time>_<muscle id>[-k][-reprocessed|-imported][-SIMULATED] (mkm.bench.storage's names)
+_NAME = re.compile(r"^(?P<stem>.*?)(?:-(?P<k>\d+))?"
+                   r"(?P<tail>(?:-reprocessed|-imported)?(?:-SIMULATED)?)$")
+
+
+def run_order(path: Path) -> tuple:
+    """Sort key of run folders: by start time, the folders of one second in the order they
+    were made (``X_m``, ``X_m-2``, ..., ``X_m-10``), which their names alone do not give: by
+    name ``-2`` comes before the first and ``-10`` before ``-2``."""
+    found = _NAME.match(path.name)
+    return (found["stem"], int(found["k"] or 1), found["tail"], str(path))
+
+
 def _children(folder: Path) -> list[Path]:
-    """The run folders directly inside ``folder``, by name (a time stamp: oldest first)."""
+    """The run folders directly inside ``folder``, oldest first (:func:`run_order`)."""
     return sorted((p for p in folder.iterdir() if p.is_dir() and is_run_folder(p)),
-                  key=lambda p: p.name)
+                  key=run_order)
 
 
 def run_folders(arguments) -> list[Path]:
     """The run folders ``arguments`` name, in order, each once.
 
-    An argument with ``*`` or ``?`` is a pattern (:func:`glob.glob`), its matches sorted; a
+    An argument with ``*`` or ``?`` is a pattern (:func:`glob.glob`; ``[`` and ``]`` are
+    themselves, as in a folder's name), its matches oldest first; a
     folder that is not a run folder but holds run folders stands for them; anything else is
     passed on as it is (the loader says what is wrong with it). ``ValueError`` for a pattern or
     folder that names no run folder.
@@ -35,7 +50,10 @@ def run_folders(arguments) -> list[Path]:
     out: list[Path] = []
     for argument in map(str, arguments):
         if any(c in argument for c in PATTERN_CHARACTERS):
-            matches = [Path(m) for m in sorted(glob.glob(argument))]
+            # only * and ? are patterns: a [ is itself (a Windows folder "Messung [2]"), as
+            # glob.escape writes it
+            matches = sorted((Path(m) for m in glob.glob(argument.replace("[", "[[]"))),
+                             key=run_order)
             found = []
             for match in matches:
                 if is_run_folder(match):

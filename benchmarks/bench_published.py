@@ -1,5 +1,5 @@
 """Validation against a published measurement: Martens & Boblan's force maps of two Festo
-muscles (``data/published/``) imported, identified on two lengths, reported on the others.
+muscles (``mkm/data/published/``) imported, identified on two lengths, reported on the others.
 
     .venv/bin/python benchmarks/bench_published.py [--model thickwall] [--json FILE]
 
@@ -38,11 +38,11 @@ import pandas as pd
 from mkm.cli import main as mkm
 from mkm.core.records import file_sha256, provenance
 from mkm.fem.calibration import Calibration
+from mkm.paths import published_table
 from mkm.registry import parse_specs
 from mkm.report import build_report
 
-TABLE = Path(__file__).resolve().parents[1] / "data" / "published" / \
-    "martens_boblan_2017_forcemaps.csv"
+TABLE = published_table("martens_boblan_2017_forcemaps.csv")
 #: the table's muscles: its name in the muscle column, the id, nominal D0 and the third
 #: party's wall (the file's header says where each comes from)
 MUSCLES = {"Festo DMSP-20-300": ("dmsp-20", 20.0, 1.8), "Festo DMSP-10-250": ("dmsp-10", 10.0,

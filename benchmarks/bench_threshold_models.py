@@ -31,8 +31,8 @@ C10 and C01 times ``s``) fitted, plus the physics it adds:
 alone and in pairs (a pair's gap is the braid-nominal one). The maps are isometric ramps read
 once (one force per length and pressure, no loading and unloading branch): friction or
 hysteresis, which only the difference between the branches shows, cannot be fitted to them.
-Data: the Martens and Boblan force maps of two Festo muscles (``data/published/``; D0 the nominal
-diameter, t0 1.8 mm as the third party assumed). Each candidate is fitted
+Data: the Martens and Boblan force maps of two Festo muscles (``mkm/data/published/``; D0 the
+nominal diameter, t0 1.8 mm as the third party assumed). Each candidate is fitted
 (``scipy.optimize.least_squares``, bounds, several starts; a fit that does not converge is reported
 as such) on two held lengths other than the rest length, and scored on the rest-length curve and the
 other held lengths: the largest error as % of the muscle's largest measured force (100 % at a point
@@ -79,7 +79,7 @@ from mkm.fem.materials import SILASTIC_S
 from mkm.fem.thickwall import braided_tube_elastic_force, klute_hannaford, mid_section_kinematics
 
 ROOT = Path(__file__).resolve().parents[1]
-MAP_FILE = ROOT / "data" / "published" / "martens_boblan_2017_forcemaps.csv"
+MAP_FILE = ROOT / "mkm" / "data" / "published" / "martens_boblan_2017_forcemaps.csv"
 DEFAULT_OUT = ROOT / "docs" / "measured" / "threshold_models.json"
 GAUSS_X, GAUSS_W = np.polynomial.legendre.leggauss(24)  # smooth integrand: 24 nodes to ~1e-12
 SIM_NOISE_FRACTION = 0.005  # of the largest force: about a good load cell's share of a map

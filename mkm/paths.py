@@ -18,6 +18,7 @@ the calibration) always takes an explicit flag of the command that writes it.
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 from mkm.core.home import user_cache
@@ -60,3 +61,58 @@ class CacheFolder(os.PathLike):
 
     def __repr__(self) -> str:
         return f"CacheFolder{self.parts!r}"
+
+
+#: The package holding measurements published by other labs (``mkm data``): shipped with the
+#: wheel, so the documented ``mkm import`` of them works without the source tree.
+PUBLISHED_PACKAGE = "mkm.data.published"
+
+
+def published_tables() -> dict[str, Path]:
+    """The shipped published measurements, by file name (``martens_boblan_2017_forcemaps.csv``)."""
+    from importlib.resources import files
+
+    folder = files(PUBLISHED_PACKAGE)
+    # resolved: a strict editable install links each file, and mkm import refuses links
+    return {p.name: Path(str(p)).resolve() for p in sorted(folder.iterdir(), key=lambda p: p.name)
+            if p.name.endswith(".csv")}
+
+
+def published_table(name: str) -> Path:
+    """The shipped file ``name`` (as :func:`published_tables` names it); ``ValueError`` naming
+    the shipped ones for any other name."""
+    tables = published_tables()
+    if name not in tables:
+        raise ValueError(f"{name!r} is not a shipped published table: expected one of "
+                         f"{', '.join(tables)} (mkm data list)")
+    return tables[name]
+
+
+def copy_published_table(name: str, to: str | os.PathLike | None = None) -> Path:
+    """Copy the shipped table ``name`` byte for byte (its SHA-256 is its provenance, recorded by
+    ``mkm import``) to ``to``: a file name, an existing folder (the file keeps its name there),
+    or None (the working folder). An existing file is kept: ``ValueError``."""
+    import shutil
+
+    source = published_table(name)
+    target = Path(name) if to is None else Path(to)
+    if target.is_dir():
+        target = target / name
+    if target.exists():
+        raise ValueError(f"{target} exists: kept as it is; name a new file for {name}")
+    if not target.parent.is_dir():
+        raise ValueError(f"{target.parent}: no such folder")
+    shutil.copyfile(source, target)
+    return target
+
+
+# characters that split or change an argument in cmd, PowerShell or a POSIX shell
+_SHELL_SPECIAL = re.compile(r"[\s&|<>^;()'`$%!,{}\[\]*?#]")
+
+
+def command_argument(path: str | os.PathLike) -> str:
+    """``path`` as one argument of a command the user may copy: in double quotes (which cmd,
+    PowerShell and bash all read as one argument) where it holds a space or a character a shell
+    treats specially (``C:\\Users\\Lab PC\\mkm-out\\runs\\R``), else as it is."""
+    text = str(path)
+    return f'"{text}"' if not text or _SHELL_SPECIAL.search(text) else text

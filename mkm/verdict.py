@@ -16,6 +16,8 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from mkm.paths import command_argument
+
 
 def format_seconds(seconds: float) -> str:
     """A duration as a reader takes it in: ``6.10 µs``, ``12.0 ms``, ``1.40 s``, ``0.948 µs``
@@ -100,17 +102,24 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
     over to a run it did not see (identify with the run among the others), or, for one of its
     own runs, that the model does not fit it (no calibration would)."""
     if not identified:
-        return f"which points to the muscle, not the model: identify it (`mkm identify {run_path}`)"
+        return ("which points to the muscle, not the model: identify it "
+                f"(`{identify_command(run_path)}`)")
     name = f" ({calibration_name})" if calibration_name else ""
     if any(r.get("run") == Path(run_path).name for r in identified):
         return (f"although the calibration{name} was identified on this run with the others: "
                 "the model does not fit them all with one muscle (the identification's misfit "
                 "notes say where)")
     at = ", ".join(f"{r['muscle']['eps']:g}" for r in identified if "muscle" in r)
-    paths = " ".join(str(r["path"]) for r in identified if "path" in r)
+    paths = [r["path"] for r in identified if "path" in r]
     return (f"which points to the muscle, not the model: the calibration{name}, identified on "
             f"the runs at eps {at}, does not carry over to this run; identify with it among "
-            f"them (`mkm identify {paths} {run_path}`)")
+            f"them (`{identify_command(*paths, run_path)}`)")
+
+
+def identify_command(*run_paths) -> str:
+    """The ``mkm identify`` line a verdict suggests, each run path one argument even with a
+    space in it (a Windows user folder)."""
+    return " ".join(["mkm identify", *(command_argument(p) for p in run_paths)])
 
 
 def verdict(run_label: str, summary: list[dict], names: dict[str, str],

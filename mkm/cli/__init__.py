@@ -8,6 +8,7 @@ Bad input (a ``ValueError`` from the library or a malformed argument) prints one
 from __future__ import annotations
 
 import argparse
+import io
 import os
 import re
 import sys
@@ -15,6 +16,7 @@ import warnings
 
 from mkm.cli import (
     bench,
+    data,
     demo,
     design,
     exchange,
@@ -71,7 +73,8 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
                                 parser_class=_Parser)
-    for group in (demo, bench, exchange, fem, surrogate, validation, design, identify, models):
+    for group in (demo, bench, exchange, data, fem, surrogate, validation, design, identify,
+                  models):
         group.register(sub)
     return parser
 
@@ -81,6 +84,12 @@ def main(argv: list[str] | None = None) -> int:
 
     if not has_display():  # the one place the backend is chosen: files only, no window
         os.environ.setdefault("MPLBACKEND", "Agg")
+    # Windows writes a redirected stdout (`mkm report ... > log.txt`, a pipe) in the ANSI code
+    # page: a path it cannot encode (C:\Users\Łukasz\...) is escaped, as on stderr, instead of
+    # failing the command after its work is done
+    for stream in (sys.stdout, sys.stderr):
+        if isinstance(stream, io.TextIOWrapper):
+            stream.reconfigure(errors="backslashreplace")
     parser = build_parser()
     if not (sys.argv[1:] if argv is None else argv):  # `mkm` alone: the help, not an error
         parser.print_help()

@@ -41,3 +41,27 @@ def test_report_takes_a_quoted_pattern(tmp_path, mkm_cli):
     # what cmd passes: the pattern itself
     code, out, err = mkm_cli(["report", str(tmp_path / "runs" / "*"), "--models", "eq2"])
     assert code == 2 and "matches no run folder" in err and err.count("\n") == 1
+
+
+def test_a_bracket_in_a_folder_name_is_itself_not_a_pattern(tmp_path):
+    """Only ``*`` and ``?`` are patterns, as documented (was: ``Messung [2]/runs/*`` matched no
+    run folder, glob reading ``[2]`` as a set of characters)."""
+    root = tmp_path / "Messung [2] é"
+    a, b = _runs(root / "runs", "20260101T000000Z_m", "20260101T000001Z_m")
+    assert run_folders([str(root / "runs" / "*")]) == [a, b]
+    assert one_run_folder(str(root / "runs" / "*01Z_m")) == b
+
+
+def test_runs_of_one_second_come_in_the_order_they_were_made(tmp_path):
+    """``mkm import`` of a table of six lengths makes ``X_dmsp-20-imported``,
+    ``X_dmsp-20-2-imported``, ... in one second: a pattern or their folder gives them in that
+    order (was: by name, the -2 ... -6 folders first and the first made last; -10 before -2)."""
+    stamp = "20261204T180132Z_"
+    made = [f"{stamp}dmsp-20-imported", *(f"{stamp}dmsp-20-{k}-imported" for k in (2, 3, 10)),
+            f"{stamp}lab-7-SIMULATED", f"{stamp}lab-7-2-SIMULATED", "20261204T180133Z_dmsp-20"]
+    runs = _runs(tmp_path / "runs", *reversed(made))[::-1]  # made in reverse: not by mtime
+    assert run_folders([str(tmp_path / "runs" / "*")])[:4] == runs[:4]
+    assert run_folders([tmp_path / "runs"])[:4] == runs[:4]
+    by_id = run_folders([str(tmp_path / "runs" / "*lab-7*")])
+    assert by_id == [runs[4], runs[5]]
+    assert run_folders([tmp_path / "runs"])[-1] == runs[-1]  # the next second after them

@@ -1,5 +1,5 @@
 """A published measurement from the command line: Martens & Boblan's force maps of the Festo
-DMSP-20-300 (data/published/) imported, identified on two lengths, reported on the others."""
+DMSP-20-300 (mkm/data/published/) imported, identified on two lengths, reported on the others."""
 
 from __future__ import annotations
 
@@ -13,9 +13,10 @@ import pytest
 
 from mkm.bench.storage import load_run
 from mkm.fem.ladder import make_model
+from mkm.paths import published_table
 from mkm.scoring import predict_steps, score_run, summarise_run
 
-TABLE = Path(__file__).parents[2] / "data" / "published" / "martens_boblan_2017_forcemaps.csv"
+TABLE = published_table("martens_boblan_2017_forcemaps.csv")
 MUSCLE = ["--id", "dmsp-20", "--D0", "20", "--t0", "1.8", "--muscle", "Festo DMSP-20-300"]
 
 

@@ -497,3 +497,22 @@ def test_an_out_path_the_command_cannot_use_is_one_line(argv, tmp_path, mkm_run)
     assert code == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
     assert err.startswith(f"mkm {argv[0]}") and "expected a path this command can use" in err
     assert taken.read_text() == "a lab's file\n"
+
+
+def test_a_path_the_console_code_page_cannot_encode_is_escaped_not_an_error(tmp_path,
+                                                                            monkeypatch):
+    """stdout redirected on Windows is in the ANSI code page (cp1252): a path with a letter
+    outside it is printed escaped and the command succeeds (was: the file written, then
+    ``mkm data copy: error: 'charmap' codec can't encode character '\\u0141'``, exit 2)."""
+    from mkm.cli import main
+
+    folder = tmp_path / "Łódź lab"
+    folder.mkdir()
+    out = io.TextIOWrapper(io.BytesIO(), encoding="cp1252")
+    monkeypatch.setattr(sys, "stdout", out)
+    assert main(["data", "copy", "martens_boblan_2017_forcemaps.csv", str(folder)]) == 0
+    out.flush()
+    printed = out.buffer.getvalue().decode("cp1252").strip()
+    expected = str(folder / "martens_boblan_2017_forcemaps.csv")
+    assert printed == expected.replace("Ł", "\\u0141").replace("ź", "\\u017a")
+    assert (folder / "martens_boblan_2017_forcemaps.csv").is_file()

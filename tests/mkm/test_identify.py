@@ -377,14 +377,13 @@ def test_a_run_without_force_has_no_equation7_error_in_the_checks():
 
 
 def test_a_slack_run_leaves_the_closed_forms_slope_fits_to_the_others(tmp_path):
-    """The published DMSP-10 (data/published/): its shortest length is slack at every pressure.
+    """The published DMSP-10 (mkm data): its shortest length is slack at every pressure.
     Writing the identification refits each closed form's angle to the runs' slopes; the slack
     run has none, and is left out of those fits instead of failing the write."""
-    from pathlib import Path
-
     from mkm.bench.exchange import import_table
+    from mkm.paths import published_table
 
-    table = Path(__file__).parents[2] / "data" / "published" / "martens_boblan_2017_forcemaps.csv"
+    table = published_table("martens_boblan_2017_forcemaps.csv")
     runs = import_table(table, tmp_path / "runs", {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5,
                                                    "L0_mm": None, "eps": None},
                         select="Festo DMSP-10-250")

@@ -7,6 +7,7 @@ import argparse
 import contextlib
 import hashlib
 import io
+import re
 import subprocess
 from pathlib import Path
 
@@ -114,3 +115,98 @@ def test_a_demo_replaces_the_runs_of_the_demo_before_it(first_demo):
     second = sorted(p.name for p in (demo / "runs").iterdir())
     assert len(first) == len(second) == 3 and "my-own-folder" in second
     assert all(name.endswith("-SIMULATED") for name in second if name != "my-own-folder")
+
+
+# what a user runs, as the documentation shows it (the developer guide's commands are run in a
+# checkout and may name its files)
+USER_DOCS = [ROOT / "README.md", ROOT / "docs" / "getting-started.md",
+             ROOT / "docs" / "published.md", *sorted((ROOT / "docs" / "guide").glob("*.md"))]
+
+
+def test_every_documented_import_reads_a_table_a_wheel_user_has():
+    """``mkm import FILE`` as the docs show it names the user's own table or a shipped one that
+    ``mkm data copy`` wrote into the working folder before it (was: the source tree's
+    ``data/published/...``, which a wheel does not hold)."""
+    from mkm.paths import published_tables
+
+    shipped = published_tables()
+    assert "martens_boblan_2017_forcemaps.csv" in shipped
+    seen = 0
+    for doc in USER_DOCS:
+        text = doc.read_text("utf-8")
+        for found in re.finditer(r"^\s*mkm import (\S+)", text, re.MULTILINE):
+            table = found.group(1)
+            seen += 1
+            assert "/" not in table and "\\" not in table, f"{doc.name}: mkm import {table}"
+            if table in shipped:
+                assert f"mkm data copy {table}" in text[:found.start()], \
+                    f"{doc.name}: mkm import {table} without mkm data copy {table} before it"
+    assert seen >= 3
+
+
+def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch, capsys):
+    """``mkm data copy NAME`` writes the published table into the working folder (a path with a
+    space and a non-ASCII letter here), its SHA-256 the one its README records, and keeps an
+    existing file; ``mkm data path`` and ``list`` name the installed file."""
+    name = "martens_boblan_2017_forcemaps.csv"
+    work = tmp_path / "Prüfstand 1"
+    work.mkdir()
+    monkeypatch.chdir(work)
+    assert main(["data", "copy", name]) == 0
+    assert capsys.readouterr().out.strip() == name
+    digest = hashlib.sha256((work / name).read_bytes()).hexdigest()
+    readme = (ROOT / "mkm" / "data" / "published" / "README.md").read_text("utf-8")
+    assert f"SHA-256 `{digest}`" in readme
+    assert main(["data", "copy", name]) == 2  # kept, said in one line
+    assert "exists: kept as it is" in capsys.readouterr().err
+    assert main(["data", "copy", name, "sub/maps.csv"]) == 2  # no such folder
+    assert "no such folder" in capsys.readouterr().err
+    (work / "sub").mkdir()
+    assert main(["data", "copy", name, "sub"]) == 0
+    assert capsys.readouterr().out.strip() == str(Path("sub") / name)
+    assert main(["data", "path", name]) == 0
+    path = Path(capsys.readouterr().out.strip())
+    assert not path.is_symlink()  # mkm import refuses links (a strict editable install's)
+    assert path.read_bytes() == (work / name).read_bytes()
+    assert main(["data", "list"]) == 0
+    assert capsys.readouterr().out.split("\t")[0] == name
+    assert main(["data", "path", "nope.csv"]) == 2
+    assert capsys.readouterr().err.startswith("mkm data path: error: 'nope.csv' is not a shipped")
+    # the copy imports as the documentation shows it
+    assert main(["import", name, "--id", "dmsp-20", "--D0", "20", "--t0", "1.8", "--muscle",
+                 "Festo DMSP-20-300", "--out", "runs"]) == 0
+    assert len(capsys.readouterr().out.split()) == 6  # one run per length
+
+
+SOURCE_TREE_ONLY = ("data/", "examples/", "benchmarks/", "tests/", "docs/", "tools/")
+
+
+def test_the_documented_python_reads_no_file_of_the_source_tree():
+    """The Python the user docs show runs from a wheel: no path into the checkout (was:
+    ``load_run("data/experimental/...")`` in the README and the run-folder page, a folder the
+    wheel does not hold)."""
+    checked = 0
+    for doc in USER_DOCS:
+        for block in re.findall(r"```python\n(.*?)```", doc.read_text("utf-8"), re.DOTALL):
+            checked += 1
+            for literal in re.findall(r"[\"']([^\"'\n]+)[\"']", block):
+                assert not literal.replace("\\", "/").startswith(SOURCE_TREE_ONLY), \
+                    f"{doc.name}: {literal!r} is a path of the source tree"
+    assert checked >= 2
+
+
+def test_every_documented_out_is_in_the_working_folder():
+    """``--out`` in a command the user docs show names no folder of the installed package's
+    sources (was: ``mkm fem dataset ... --out surrogate/data/mkm_dataset.csv``, the checkout's
+    shipped file; from a wheel a stray ./surrogate/data/ folder)."""
+    packages = ("mkm/", "bench/", "fem/", "surrogate/")
+    seen = 0
+    for doc in USER_DOCS:
+        for line in doc.read_text("utf-8").splitlines():
+            command = line.strip()
+            if not command.startswith("mkm "):
+                continue
+            for out in re.findall(r"--out\s+(\S+)", command):
+                seen += 1
+                assert not out.replace("\\", "/").startswith(packages), f"{doc.name}: {command}"
+    assert seen >= 10

@@ -447,3 +447,17 @@ def test_the_verdict_knows_the_runs_an_identified_calibration_saw(tmp_path):
     assert _identified_runs(Calibration(tmp_path / "calibration.json", entries)) == runs
     assert _identified_runs(Calibration.shipped()) == []  # the paper's fit: no runs of a lab
     assert _identified_runs(None) == []
+
+
+def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument():
+    """The ``mkm identify RUN`` a verdict suggests can be copied into cmd, PowerShell or bash
+    (was: ``mkm identify C:\\Users\\Lab PC\\...``, two arguments)."""
+    import shlex
+
+    from mkm.verdict import identify_command
+
+    assert identify_command(Path("mkm-out/runs/R")) == "mkm identify mkm-out/runs/R"
+    assert identify_command(r"C:\Users\Lab PC\mkm-out\runs\R") == \
+        r'mkm identify "C:\Users\Lab PC\mkm-out\runs\R"'
+    path = "/tmp/lab user é/Prüfstand (2)/runs/R"
+    assert shlex.split(identify_command(path)) == ["mkm", "identify", path]
