@@ -50,6 +50,7 @@ import numpy as np
 from mkm.core.guards import regular_file
 from mkm.core.records import (
     file_sha256,
+    one_argument,
     package_file,
     provenance,
     source_version,
@@ -171,7 +172,7 @@ def calibrate_command(key: str, path) -> str:
     option = "".join(f" --{name} {variant}"
                      for name, parameter in (entry(rung).parameters.items() if variant else ())
                      if variant in parameter.options())
-    return f"mkm fem calibrate --model {rung}{option} --out {path}"
+    return f"mkm fem calibrate --model {rung}{option} --out {one_argument(path)}"
 
 
 def calibrated(key: str, calibration: Calibration | None = None) -> dict:

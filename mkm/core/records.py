@@ -55,7 +55,14 @@ def command_line(argv: list[str] | None = None) -> str:
             argv[0] = first.parent.name
         elif first.stem == "mkm":
             argv[0] = "mkm"
-    return " ".join(argv)
+    return " ".join(map(one_argument, argv))
+
+
+def one_argument(text) -> str:
+    """``text`` as one argument of a command line a user copies back: in double quotes where it
+    is empty or holds a space (a Windows user folder), else as it is."""
+    text = str(text)
+    return f'"{text}"' if not text or any(c.isspace() for c in text) else text
 
 
 def provenance() -> dict[str, Any]:

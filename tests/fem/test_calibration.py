@@ -346,3 +346,14 @@ def test_calibrate_takes_the_references_one_length_and_refuses_two_or_a_model_wi
     with pytest.raises(ValueError, match="^model 'friction': only the physics models eq2, "
                        "thickwall, axisym have a theta0 to calibrate$"):
         calibrate(lambda **p: make_model("friction", **p), reference)
+
+
+def test_the_command_that_writes_an_entry_keeps_a_path_with_a_space_one_argument():
+    import shlex
+
+    from mkm.cli import build_parser
+
+    path = r"C:\Users\Lab PC\lab.json"
+    command = calibrate_command("thickwall", path)
+    assert command == r'mkm fem calibrate --model thickwall --out "C:\Users\Lab PC\lab.json"'
+    assert build_parser().parse_args(shlex.split(command, posix=False)[1:]).out.strip('"') == path

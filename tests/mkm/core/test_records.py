@@ -119,6 +119,9 @@ def test_the_recorded_command_is_what_a_user_types():
     assert command_line(["/usr/local/bin/mkm", "report", "r1"]) == "mkm report r1"
     assert command_line(["benchmarks/bench_batch.py", "--json", "docs/measured/batch.json"]) \
         == "benchmarks/bench_batch.py --json docs/measured/batch.json"
+    # a path with a space stays one argument (was: `mkm report C:\\Users\\Lab PC\\R`, two)
+    assert command_line(["mkm", "report", r"C:\Users\Lab PC\R", "--muscle", ""]) == \
+        r'mkm report "C:\Users\Lab PC\R" --muscle ""'
 
 
 def test_a_memo_naming_files_outside_the_sources_is_not_trusted(tmp_path, monkeypatch):
