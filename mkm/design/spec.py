@@ -34,11 +34,21 @@ def design_muscle(row, calibration: Calibration | None = None, eps: float = 0.0,
                   gap_mm: float | None = None) -> Muscle:
     """The muscle a design (a row of the designs' table) describes, held at ``eps``: its
     geometry, length, braid angle and rubber (``rubber`` named as in :func:`rubber_of`), and
-    the gap between tube and braid it was designed with (``gap_mm`` [mm]; None or 0: none)."""
+    the gap between tube and braid it was designed with (``gap_mm`` [mm]; None or 0: none).
+    Its id is :func:`design_id`'s."""
     rubber = rubber_of(str(row["rubber"]), calibration)
     return Muscle(D0_mm=float(row["D0_mm"]), t0_mm=float(row["t0_mm"]),
                   L0_mm=float(row["L0_mm"]), eps=eps, theta0_deg=float(row["theta0_deg"]),
-                  C10_MPa=rubber.C10_MPa, C01_MPa=rubber.C01_MPa, gap_mm=gap_mm or None)
+                  C10_MPa=rubber.C10_MPa, C01_MPa=rubber.C01_MPa, gap_mm=gap_mm or None,
+                  id=design_id(row))
+
+
+def design_id(row) -> str:
+    """A design's muscle id from its geometry, ``design-D31.25-t2.5-L282-th30`` (D0, t0 and L0
+    [mm], theta0 [deg]): a valid id for a bench config's ``[muscle]`` and a run folder's name,
+    and the same design always the same id."""
+    return (f"design-D{float(row['D0_mm']):.4g}-t{float(row['t0_mm']):.4g}"
+            f"-L{float(row['L0_mm']):.4g}-th{float(row['theta0_deg']):.4g}")
 
 
 #: A requirement is near the braid lock from 75 % of Equation 2's eps_max on: the pressure term

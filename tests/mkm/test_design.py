@@ -22,9 +22,11 @@ from mkm.design import (
     search,
 )
 from mkm.design.search import box_edges
+from mkm.design.spec import design_muscle
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
 from mkm.fem.ladder import make_model
+from mkm.fem.muscle import Muscle
 from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, outer_diameter_mm
 from mkm.html import esc
@@ -362,6 +364,16 @@ def test_a_design_on_the_edge_of_the_search_box_is_named():
     # a design inside the box, or on a fixed value (no range), sits on no edge
     box = {"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0], "L0_mm": [282.0, 282.0]}
     assert box_edges({"D0_mm": 30.05, "t0_mm": 3.99, "L0_mm": 282.0}, box) == []
+
+
+def test_the_chosen_muscle_has_an_id_a_bench_config_takes():
+    """designs.json's chosen_muscle is read as a config's [muscle]: its id names the design's
+    geometry (an empty id is refused there, and names no run folder)."""
+    row = pd.Series({"D0_mm": 31.25, "t0_mm": 2.5, "L0_mm": 282.0, "theta0_deg": 30.0,
+                     "rubber": "calibrated"})
+    record = design_muscle(row).record()
+    assert record["id"] == "design-D31.25-t2.5-L282-th30"
+    assert Muscle.from_dict(record, "chosen_muscle").id == record["id"]
 
 
 def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):
