@@ -511,13 +511,16 @@ def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours:
 
 
 def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> str:
+    from mkm.bench.storage import reason_shown
+
     meta, muscle, steps = r.meta, r.muscle, r.run.steps
     parts = [f'<section class="run-head"><h2 id="run-{r.k}">Run {r.k}: {esc(r.name)}</h2>',
              f"<p>status: <b>{_status_html(r)}</b>"]
     n_samples = getattr(r.run, "n_samples", None)
     n_samples = len(r.run.samples) if n_samples is None else n_samples
     if not r.run.complete:
-        parts.append(f" — reason: {esc(meta.get('reason') or 'not recorded')}. Kept: "
+        reason = reason_shown(str(meta.get("reason") or "")) or "not recorded"
+        parts.append(f" — reason: {esc(reason)}. Kept: "
                      f"{len(steps)} settled step(s) of {_planned_steps(meta)}, "
                      f"{n_samples} sample(s). Only what was kept is scored below.")
     parts.append("</p>")

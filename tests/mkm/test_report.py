@@ -18,6 +18,7 @@ import pytest
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
+from mkm.bench.storage import reason_shown
 from mkm.fem.calibration import calibrated
 from mkm.fem.interface import Domain
 from mkm.fem.ladder import make_model
@@ -143,6 +144,24 @@ def test_aborted_run_is_reported_as_aborted(runs, report):
     first = samples.loc[samples["flags"].fillna("").str.contains("interlock"), "time_s"].min()
     assert f"Event: force interlock at {first:.1f} s" in section
     assert re.search(r"status: <b><span[^>]*>complete<", html.split('<h2 id="run-2">')[0])
+
+
+def test_a_reason_of_any_length_is_shown_bounded(runs, tmp_path):
+    """A run.json reason written by hand or another tool (a pasted log of 100 000 characters):
+    the report shows its first line, cut, and says where the whole is; run.json keeps it."""
+    run = Path(shutil.copytree(runs[1], tmp_path / "run"))
+    meta = json.loads((run / "run.json").read_text(encoding="utf-8"))
+    meta["reason"] = "valve stuck open\n" + "x" * 100_000
+    (run / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    path = build_report([run], parse_models("eq2"), out_dir=tmp_path / "r", cache_dir=None,
+                        tolerance=None, surrogate_section=False)
+    html = path.read_text(encoding="utf-8")
+    assert "reason: valve stuck open... (in full in run.json). Kept:" in html
+    assert "x" * 300 not in html
+    long_line = "y" * 100_000
+    assert reason_shown(long_line) == "y" * 200 + "... (in full in run.json)"
+    assert reason_shown("force interlock") == "force interlock"
+    assert json.loads((run / "run.json").read_text(encoding="utf-8"))["reason"] == meta["reason"]
 
 
 def test_every_table_and_figure_names_its_provenance(report):
