@@ -113,6 +113,8 @@ _NUMBER = re.compile(r"^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$")
 _NUMBER_AND_UNIT = tuple(re.compile(rf"^(?P<number>[-+.,\deE]+{lazy})\s*"
                                     r"(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$") for lazy in ("", "?"))
 _COMMA_DECIMAL = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
+_POINT_DECIMAL = re.compile(r"^[+-]?\d*\.\d+([eE][+-]?\d+)?$")
+_THOUSANDS = re.compile(r"^[+-]?\d{1,3}(,\d{3})+$")
 
 
 def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
@@ -155,10 +157,26 @@ def _text_table(path: Path, text: str) -> RawTable:
     parsed = [(n, cells) for n, (cells,) in
               ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)
               if any(c.strip() for c in cells)]
-    decimal = "," if separator != "," and any(
-        _COMMA_DECIMAL.match(c.strip()) for _, cells in parsed[1:50] for c in cells) else "."
+    decimal = _decimal(path, separator, [c.strip() for _, cells in parsed[1:200] for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
+
+
+def _decimal(path: Path, separator: str, cells: list[str]) -> str:
+    """The decimal mark of a text table's number cells. In a ``,``-separated file a number
+    holding a comma was quoted (``"1,5"``): a decimal comma, unless other cells have decimal
+    points (then the commas group thousands) or every such cell could be either
+    (``"1,500"``: refused, naming it)."""
+    commas = [c for c in cells if _COMMA_DECIMAL.match(c)]
+    if separator != ",":
+        return "," if commas else "."
+    if not commas or any(_POINT_DECIMAL.match(c) for c in cells):
+        return "."
+    if all(_THOUSANDS.match(c) for c in commas):
+        raise ValueError(f"{path.name}: numbers such as {commas[0]!r} in a comma-separated file "
+                         "could be decimal commas or thousands: expected the file saved with "
+                         "';' as separator, or its numbers without thousands separators")
+    return ","
 
 
 def _separator(lines: list[str]) -> str:
