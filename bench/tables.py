@@ -24,7 +24,7 @@ import datetime
 import io
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache
 from pathlib import Path
 
@@ -82,6 +82,8 @@ class RawTable:
     title_rows: int = 0
     separator: str | None = None
     decimal: str = "."
+    #: the first blank cell of each row :func:`without_blank_rows` left out (``B7``)
+    blanks_skipped: list[str] = field(default_factory=list)
 
     @property
     def name(self) -> str:
@@ -95,7 +97,8 @@ class RawTable:
         """What the reader found, for the run folder's provenance."""
         return {"sheet": self.sheet, "header_row": self.header_row,
                 "title_rows": self.title_rows, "separator": self.separator,
-                "decimal": self.decimal, "rows": len(self.rows)}
+                "decimal": self.decimal, "rows": len(self.rows),
+                "rows_skipped_for_a_blank_cell": self.blanks_skipped}
 
 
 def _column_letters(index: int) -> str:
@@ -580,17 +583,46 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
+def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
+    """``table`` without the rows whose cell in one of ``columns`` is blank (a lab sheet's
+    stray empty cell: that row's reading is not known, and no value is made up for it), the
+    first blank cell of each in ``blanks_skipped``. A workbook cell read empty that holds a
+    formula stays, for :func:`column_values` to name."""
+    blank = {k: next(c.index for c in columns if str(row[c.index]).strip() == "")
+             for k, row in enumerate(table.rows)
+             if any(str(row[c.index]).strip() == "" for c in columns)}
+    formulas = _formulas(table, [(k, c.index) for k in blank for c in columns])
+    skipped = [k for k in blank if not any((k, c.index) in formulas for c in columns)]
+    if not skipped:
+        return table
+    keep = [k for k in range(len(table.rows)) if k not in set(skipped)]
+    return replace(table, rows=[table.rows[k] for k in keep],
+                   row_numbers=[table.row_numbers[k] for k in keep],
+                   blanks_skipped=[table.cell(k, blank[k]) for k in skipped])
+
+
 def _formula(table: RawTable, k: int, column: int) -> str | None:
     """The formula in a workbook cell read empty: openpyxl reads the value a spreadsheet saved
     with it, and a workbook written by a program other than a spreadsheet has none."""
-    if table.sheet is None:
-        return None
+    return _formulas(table, [(k, column)]).get((k, column))
+
+
+def _formulas(table: RawTable, cells: list[tuple[int, int]]) -> dict[tuple[int, int], str]:
+    """The formulas of those of ``cells`` (data row, column) that hold one, the workbook read
+    once; none in a text table."""
+    if table.sheet is None or not cells:
+        return {}
     import openpyxl
 
     book = openpyxl.load_workbook(table.source, read_only=True, data_only=False)
     try:
-        cell = book[table.sheet][table.cell(k, column)]
-        return cell.value if cell.data_type == "f" else None
+        sheet = book[table.sheet]
+        found = {}
+        for k, column in cells:
+            cell = sheet[table.cell(k, column)]
+            if cell.data_type == "f":
+                found[k, column] = cell.value
+        return found
     finally:
         book.close()
 
@@ -699,6 +731,9 @@ class Recognition:
             extras.append("decimal comma")
         if self.table.title_rows:
             extras.append(f"{self.table.title_rows} title row(s) skipped")
+        if skipped := self.table.blanks_skipped:
+            extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
+                          + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))
         return ", ".join(parts) + (f"; {', '.join(extras)}" if extras else "")
 
     def describe(self) -> dict:
