@@ -68,7 +68,7 @@ from mkm.html import (
     table_html,
 )
 from mkm.identify.page import report_section
-from mkm.paths import default_out
+from mkm.paths import check_writable, default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, entries, parse_spec
@@ -178,15 +178,15 @@ def build_report(run_dirs, models=None, out_dir=None,
         raise ValueError("no run folder given: expected at least one RUN_DIR")
     specs = (default_models(calibration) if models is None
              else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
-    out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
+    out = check_writable(Path(out_dir) if out_dir else default_out("report", run_dirs[0].name))
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
         with staged_folder(out, last="report.html") as stage:
             _write_report(run_dirs, specs, stage, cache_dir, tolerance, surrogate_section,
                           progress, start, calibration)
     except OSError as exc:
+        where = exc.filename2 or exc.filename  # the file asked for, not its temporary
         raise ValueError(f"the report was not written ({exc.strerror or type(exc).__name__}"
-                         f"{f': {exc.filename}' if exc.filename else ''}); {out} is as it "
-                         "was") from None
+                         f"{f': {where}' if where else ''}); {out} is as it was") from None
     return out / "report.html"
 
 
