@@ -106,7 +106,8 @@ def parse_requirement(text: str, name: str = "--require") -> Requirement:
         except ValueError:
             raise ValueError(f"{name} {text!r}: {what} {shown!r}: expected a finite number of "
                              f"{unit}, for example 400N@2bar,eps=0.10") from None
-    return Requirement(numbers["force"], numbers["pressure"], parse_fraction(eps, name))
+    return Requirement(numbers["force"], numbers["pressure"],
+                       parse_fraction(eps, f"{name} {text!r}: eps"))
 
 
 def parse_bounds(text, name: str) -> tuple[float, float]:
@@ -219,10 +220,13 @@ def load_spec(path) -> dict:
                     "belong to it; put them above the first)" if extra else "")
             raise ValueError(f"--spec {path}: requirement {i} must have exactly force_N, "
                              f"pressure_bar and eps{hint}")
+        where = f"--spec {path}: requirement {i}"
         eps = item["eps"]
-        eps = parse_fraction(eps) if isinstance(eps, str) else parse_number(eps, "eps")
-        requirements.append(Requirement(parse_number(item["force_N"], "force_N"),
-                                        parse_number(item["pressure_bar"], "pressure_bar"), eps))
+        eps = (parse_fraction(eps, f"{where} eps") if isinstance(eps, str)
+               else parse_number(eps, f"{where} eps"))
+        requirements.append(Requirement(parse_number(item["force_N"], f"{where} force_N"),
+                                        parse_number(item["pressure_bar"],
+                                                     f"{where} pressure_bar"), eps))
     out["requirements"] = requirements
     constraints = table.get("constraints", {})
     fields = set(Constraints.__dataclass_fields__)

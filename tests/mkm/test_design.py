@@ -56,6 +56,10 @@ def test_requirement_syntax():
         parse_requirement("400N@200kPa,eps=0.1")
     with pytest.raises(ValueError, match="force -5 N is invalid"):
         parse_requirement("-5N@2bar,eps=0.1")
+    # the requirement as typed, not its eps alone under the option's name ('--require 10')
+    with pytest.raises(ValueError, match=r"^--require '300N@2\.5bar,eps=10': eps 10: a fraction "
+                       r"is expected; did you mean 10%\?$"):
+        parse_requirement("300N@2.5bar,eps=10")
 
 
 def test_outer_diameter_is_the_free_contraction_of_the_thick_wall_model():
@@ -215,6 +219,11 @@ def test_spec_file_unknown_key(tmp_path, mkm_run):
     ("[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = 0.1\ntop = 1\n",
      "requirement 1 must have exactly force_N, pressure_bar and eps (it has top: keys written "
      "below a [[requirement]] belong to it; put them above the first)"),
+    # a requirement's value is named in the file, not as an option never typed (--eps)
+    ('[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = "10"\n',
+     "requirement 1 eps 10: a fraction is expected; did you mean 10%?"),
+    ('[[requirement]]\nforce_N = "300N"\npressure_bar = 2.5\neps = 0.1\n',
+     "requirement 1 force_N='300N' is not a number"),
 ])
 def test_a_spec_file_shaped_wrong_is_one_line(text, message, tmp_path, mkm_run):
     spec = tmp_path / "spec.toml"
