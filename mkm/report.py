@@ -28,6 +28,7 @@ from.
 from __future__ import annotations
 
 import json
+import math
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -208,6 +209,9 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
         warnings.warn(f"run{'s' if len(in_place) > 1 else ''} {', '.join(map(str, in_place))}: "
                       f"the default surrogate's box does not cover the muscle; the practical "
                       f"range's ({RANGE_SPEC}) is scored as {REFERENCE_SPEC!r}", stacklevel=2)
+    other = _calibration_of_another_muscle(runs)
+    if other:
+        warnings.warn(other, stacklevel=2)
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
     spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
@@ -449,7 +453,41 @@ def _banners(runs: list[_Run]) -> str:
                        f"{lock}. No model is valid there: the braid cannot shorten so far, so "
                        "the muscle pulls little or nothing and every model's number is flagged "
                        "invalid.")
+    other = _calibration_of_another_muscle(runs)
+    if other:
+        out.append(other)
     return "".join(f'<p class="note">{esc(line)}</p>' for line in out)
+
+
+def _calibration_of_another_muscle(runs: list[_Run]) -> str | None:
+    """The line naming the runs whose muscle (D0, t0) is not the one the calibration's
+    identified muscle was identified on, or None: its braid angle and rubber are that muscle's,
+    so every calibrated model predicts these runs as that muscle's."""
+    from mkm.identify.band import identified_entry
+
+    calibration = runs[0].calibration if runs else None
+    found = identified_entry(calibration) if calibration is not None else None
+    if found is None:
+        return None
+    muscles = {(m["D0_mm"], m["t0_mm"]): m.get("id", "")
+               for m in (r.get("muscle") or {} for r in found[1]["identified"].get("runs", []))
+               if "D0_mm" in m and "t0_mm" in m}
+    if not muscles:
+        return None
+    others = [r for r in runs if not any(
+        math.isclose(r.muscle.D0_mm, D0, rel_tol=1e-3) and
+        math.isclose(r.muscle.t0_mm, t0, rel_tol=1e-3) for D0, t0 in muscles)]
+    if not others:
+        return None
+    which = ", ".join(f"{r.k} ({r.muscle.id or 'no id'}, D0 {r.muscle.D0_mm:g} mm, t0 "
+                      f"{r.muscle.t0_mm:g} mm)" for r in others)
+    identified = ", ".join(f"{i or 'no id'}, D0 {D0:g} mm, t0 {t0:g} mm"
+                           for (D0, t0), i in muscles.items())
+    return (f"Run{'s' if len(others) > 1 else ''} {which}: the calibration "
+            f"{calibration.path} was identified on another muscle ({identified}); its braid "
+            "angle and rubber are that muscle's, so every calibrated model predicts "
+            f"{'these runs' if len(others) > 1 else 'this run'} as that muscle's. Identify "
+            "this muscle's own (mkm identify) or leave --calibration out.")
 
 
 def _overlay_section(runs: list[_Run], out: Path, names: dict, colours: dict) -> str:

@@ -434,6 +434,33 @@ def test_default_models_leave_out_what_an_identified_calibration_cannot_serve(tm
     assert [s.text for s in default_models(None)] == list(DEFAULT_MODELS)
 
 
+def test_a_calibration_identified_on_another_muscle_is_said(tmp_path):
+    """--calibration of a muscle identified elsewhere (a 10 mm Festo muscle's angle and rubber
+    on the 30 mm prototype: every calibrated model 67-93 % off, without a word): the runs of
+    another D0 or t0 are named with the muscle the calibration is of; its own runs are not."""
+    from types import SimpleNamespace
+
+    from mkm.fem.calibration import Calibration
+    from mkm.fem.muscle import Muscle
+    from mkm.report import _calibration_of_another_muscle
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {"theta0_deg": 27.7, "identified": {"runs": [
+        {"run": "a", "muscle": {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5, "L0_mm": 250.0,
+                                "eps": 0.0}}]}}}))
+    calibration = Calibration.load(lab)
+    runs = [SimpleNamespace(k=1, muscle=Muscle(30.0, 3.0, id="paper-prototype"),
+                            calibration=calibration),
+            SimpleNamespace(k=2, muscle=Muscle(10.0, 1.5, id="dmsp-10"),
+                            calibration=calibration)]
+    line = _calibration_of_another_muscle(runs)
+    assert line.startswith(f"Run 1 (paper-prototype, D0 30 mm, t0 3 mm): the calibration {lab} "
+                           "was identified on another muscle (dmsp-10, D0 10 mm, t0 1.5 mm)")
+    assert _calibration_of_another_muscle(runs[1:]) is None
+    shipped = SimpleNamespace(**{**vars(runs[0]), "calibration": None})
+    assert _calibration_of_another_muscle([shipped]) is None
+
+
 @pytest.mark.slow  # the default and the practical range's surrogates
 def test_a_festo_class_muscle_gets_the_practical_range_surrogate_as_surrogate(tmp_path):
     """A 10 mm muscle at up to 6 bar lies outside the default surrogate's box: the practical
