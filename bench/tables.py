@@ -118,6 +118,10 @@ _NUMBER_AND_UNIT = tuple(re.compile(rf"^(?P<number>[-+.,\deE]+{lazy})\s*"
 _COMMA_DECIMAL = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
 _POINT_DECIMAL = re.compile(r"^[+-]?\d*\.\d+([eE][+-]?\d+)?$")
 _THOUSANDS = re.compile(r"^[+-]?\d{1,3}(,\d{3})+$")
+#: a number with thousands grouped and a decimal mark ('1.234,5', '1,234.5'): unambiguous where
+#: the table's decimal mark is known (a grouped number without one is not: '1.234')
+_GROUPED = {",": re.compile(r"^(?P<number>[+-]?\d{1,3}(\.\d{3})+,\d+)(?P<rest>.*)$"),
+            ".": re.compile(r"^(?P<number>[+-]?\d{1,3}(,\d{3})+\.\d+)(?P<rest>.*)$")}
 
 
 def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
@@ -170,7 +174,7 @@ def _decimal(path: Path, separator: str, cells: list[str]) -> str:
     holding a comma was quoted (``"1,5"``): a decimal comma, unless other cells have decimal
     points (then the commas group thousands) or every such cell could be either
     (``"1,500"``: refused, naming it)."""
-    commas = [c for c in cells if _COMMA_DECIMAL.match(c)]
+    commas = [c for c in cells if _COMMA_DECIMAL.match(c) or _GROUPED[","].match(c)]
     if separator != ",":
         return "," if commas else "."
     if not commas or any(_POINT_DECIMAL.match(c) for c in cells):
@@ -636,6 +640,9 @@ def _number(cell, decimal: str) -> tuple[float | None, str | None]:
     text = str(cell).strip()
     if text.lower().lstrip("+-") in ("nan", "inf", "infinity"):
         return float(text), None
+    grouped = _GROUPED[decimal].match(text)
+    if grouped:  # '1.234,5' (decimal comma) or '1,234.5': the thousands' marks dropped
+        text = grouped["number"].replace("," if decimal == "." else ".", "") + grouped["rest"]
     # the longest number first: the shortest would read '1e9' as 1 'e9' ('2 E' is 2 E, though)
     for pattern in _NUMBER_AND_UNIT:
         match = pattern.match(text)

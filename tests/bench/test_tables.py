@@ -134,6 +134,16 @@ def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
         _one(tmp_path, 'P [bar],F [N]\n1,"1,500"\n2,"2,250"\n', "ambiguous.csv")
 
 
+def test_thousands_grouped_beside_a_decimal_mark(tmp_path):
+    # a force column formatted with thousands (a Festo DMSP-20 pulls 1500 N), as German and
+    # English spreadsheets export it; unambiguous beside the decimal mark
+    table, found = _one(tmp_path, "Druck [bar];Kraft [N]\n1;1.234,5\n2;12.634,25 N\n", "de.csv")
+    assert table.decimal == ","
+    np.testing.assert_allclose(column_values(table, found["force"]), [1234.5, 12634.25])
+    table, found = _one(tmp_path, 'P [bar],F [N]\n0.5,250.5\n1,"1,234.5"\n', "en.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [250.5, 1234.5])
+
+
 def test_rows_of_separators_only_are_blank(tmp_path):
     # a spreadsheet's export: empty rows as ";;", between the data and after it
     table, found = _one(tmp_path, "Druck (bar);Kraft (N);Notiz\n0,5;12,25;\n;;\n1,0;40,5;ok\n"
