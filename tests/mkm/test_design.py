@@ -151,6 +151,11 @@ def test_conflicting_constraints_are_named():
         search(["100N@2bar,eps=0.1"], {"D0_mm": 70})
     with pytest.raises(ValueError, match=r"at 9 bar is above 8 bar, the top of the practical"):
         search(["100N@9bar,eps=0.1"])
+    # the housing is checked at the largest working pressure: not beyond the practical range
+    # either (--max-pressure 20 checked it at 20 bar, 'outer diameter 50.8 mm at 20 bar')
+    with pytest.raises(ValueError, match=r"max_pressure_bar=20 is invalid: expected at most 8 "
+                                         "bar, the top of the practical range"):
+        search(["100N@2bar,eps=0.1"], {"max_pressure_bar": 20})
     with pytest.raises(ValueError, match="low 50 is above high 40"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": "50:40"})
     # a length that is a typo is refused before any search (it searched, "no valid force")
