@@ -170,6 +170,12 @@ def test_conflicting_constraints_are_named():
     (["--require", "100N@2bar"], "malformed"),
     (["--require", "100N@2bar,eps=0.1", "--max-pressure", "1"], "conflicts with the largest"),
     ([], "no requirement given"),
+    # a constraint is named as the option typed, not as the spec file's key
+    (["--require", "100N@2bar,eps=0.1", "--max-pressure", "0"],
+     "mkm design: error: --max-pressure 0: expected a value > 0"),
+    (["--require", "100N@2bar,eps=0.1", "--max-outer-diameter", "0"],
+     "mkm design: error: --max-outer-diameter 0: expected a value > 0"),
+    (["--require", "100N@2bar,eps=0.1", "--gap", "-1"], "mkm design: error: --gap -1: expected "),
 ])
 def test_cli_errors_are_one_line(argv, message, mkm_run, tmp_path):
     code, out, err = mkm_run(["design", *argv, "--out", str(tmp_path / "d")])
