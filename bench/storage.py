@@ -301,6 +301,20 @@ def _shown(value: Any, n: int = 60) -> str:
     return text if len(text) <= n else text[:n] + "..."
 
 
+#: The most of a run's ``reason`` a summary shows (a report, a loader's problem, a refusal):
+#: a reason written by hand or by another tool may be any length; run.json keeps it whole.
+REASON_SHOWN_CHARS = 200
+
+
+def reason_shown(reason: str) -> str:
+    """``reason`` as a summary shows it: its first line, at most :data:`REASON_SHOWN_CHARS`
+    characters, with ``... (in full in run.json)`` where it is cut."""
+    text = reason.strip()
+    first = text.splitlines()[0] if text else ""
+    shown = first if len(first) <= REASON_SHOWN_CHARS else first[:REASON_SHOWN_CHARS].rstrip()
+    return shown if shown == text else f"{shown}... (in full in run.json)"
+
+
 # The JSON type each field of run.json must have (None allowed where the field is optional).
 _FIELD_TYPES: dict[str, tuple[type, ...]] = {
     "reason": (str,), "hardware": (dict,), "calibration": (dict,), "tare": (dict, type(None)),
@@ -826,7 +840,7 @@ def load_run(path: str | Path) -> Run:
         if unvented:
             problems.append(unvented)
     elif status == RunStatus.KILLED:
-        problems.append(meta.reason)
+        problems.append(reason_shown(meta.reason))
         unvented = _unvented(commands)
     elif meta.manual_vent_required:
         unvented = "the final vent command failed: the muscle had to be vented by hand"

@@ -24,7 +24,7 @@ import datetime
 import io
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache
 from pathlib import Path
 
@@ -82,6 +82,8 @@ class RawTable:
     title_rows: int = 0
     separator: str | None = None
     decimal: str = "."
+    #: the first blank cell of each row :func:`without_blank_rows` left out (``B7``)
+    blanks_skipped: list[str] = field(default_factory=list)
 
     @property
     def name(self) -> str:
@@ -95,7 +97,8 @@ class RawTable:
         """What the reader found, for the run folder's provenance."""
         return {"sheet": self.sheet, "header_row": self.header_row,
                 "title_rows": self.title_rows, "separator": self.separator,
-                "decimal": self.decimal, "rows": len(self.rows)}
+                "decimal": self.decimal, "rows": len(self.rows),
+                "rows_skipped_for_a_blank_cell": self.blanks_skipped}
 
 
 def _column_letters(index: int) -> str:
@@ -113,6 +116,12 @@ _NUMBER = re.compile(r"^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$")
 _NUMBER_AND_UNIT = tuple(re.compile(rf"^(?P<number>[-+.,\deE]+{lazy})\s*"
                                     r"(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$") for lazy in ("", "?"))
 _COMMA_DECIMAL = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
+_POINT_DECIMAL = re.compile(r"^[+-]?\d*\.\d+([eE][+-]?\d+)?$")
+_THOUSANDS = re.compile(r"^[+-]?\d{1,3}(,\d{3})+$")
+#: a number with thousands grouped and a decimal mark ('1.234,5', '1,234.5'): unambiguous where
+#: the table's decimal mark is known (a grouped number without one is not: '1.234')
+_GROUPED = {",": re.compile(r"^(?P<number>[+-]?\d{1,3}(\.\d{3})+,\d+)(?P<rest>.*)$"),
+            ".": re.compile(r"^(?P<number>[+-]?\d{1,3}(,\d{3})+\.\d+)(?P<rest>.*)$")}
 
 
 def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
@@ -155,10 +164,26 @@ def _text_table(path: Path, text: str) -> RawTable:
     parsed = [(n, cells) for n, (cells,) in
               ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)
               if any(c.strip() for c in cells)]
-    decimal = "," if separator != "," and any(
-        _COMMA_DECIMAL.match(c.strip()) for _, cells in parsed[1:50] for c in cells) else "."
+    decimal = _decimal(path, separator, [c.strip() for _, cells in parsed[1:200] for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
+
+
+def _decimal(path: Path, separator: str, cells: list[str]) -> str:
+    """The decimal mark of a text table's number cells. In a ``,``-separated file a number
+    holding a comma was quoted (``"1,5"``): a decimal comma, unless other cells have decimal
+    points (then the commas group thousands) or every such cell could be either
+    (``"1,500"``: refused, naming it)."""
+    commas = [c for c in cells if _COMMA_DECIMAL.match(c) or _GROUPED[","].match(c)]
+    if separator != ",":
+        return "," if commas else "."
+    if not commas or any(_POINT_DECIMAL.match(c) for c in cells):
+        return "."
+    if all(_THOUSANDS.match(c) for c in commas):
+        raise ValueError(f"{path.name}: numbers such as {commas[0]!r} in a comma-separated file "
+                         "could be decimal commas or thousands: expected the file saved with "
+                         "';' as separator, or its numbers without thousands separators")
+    return ","
 
 
 def _separator(lines: list[str]) -> str:
@@ -562,17 +587,46 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
+def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
+    """``table`` without the rows whose cell in one of ``columns`` is blank (a lab sheet's
+    stray empty cell: that row's reading is not known, and no value is made up for it), the
+    first blank cell of each in ``blanks_skipped``. A workbook cell read empty that holds a
+    formula stays, for :func:`column_values` to name."""
+    blank = {k: next(c.index for c in columns if str(row[c.index]).strip() == "")
+             for k, row in enumerate(table.rows)
+             if any(str(row[c.index]).strip() == "" for c in columns)}
+    formulas = _formulas(table, [(k, c.index) for k in blank for c in columns])
+    skipped = [k for k in blank if not any((k, c.index) in formulas for c in columns)]
+    if not skipped:
+        return table
+    keep = [k for k in range(len(table.rows)) if k not in set(skipped)]
+    return replace(table, rows=[table.rows[k] for k in keep],
+                   row_numbers=[table.row_numbers[k] for k in keep],
+                   blanks_skipped=[table.cell(k, blank[k]) for k in skipped])
+
+
 def _formula(table: RawTable, k: int, column: int) -> str | None:
     """The formula in a workbook cell read empty: openpyxl reads the value a spreadsheet saved
     with it, and a workbook written by a program other than a spreadsheet has none."""
-    if table.sheet is None:
-        return None
+    return _formulas(table, [(k, column)]).get((k, column))
+
+
+def _formulas(table: RawTable, cells: list[tuple[int, int]]) -> dict[tuple[int, int], str]:
+    """The formulas of those of ``cells`` (data row, column) that hold one, the workbook read
+    once; none in a text table."""
+    if table.sheet is None or not cells:
+        return {}
     import openpyxl
 
     book = openpyxl.load_workbook(table.source, read_only=True, data_only=False)
     try:
-        cell = book[table.sheet][table.cell(k, column)]
-        return cell.value if cell.data_type == "f" else None
+        sheet = book[table.sheet]
+        found = {}
+        for k, column in cells:
+            cell = sheet[table.cell(k, column)]
+            if cell.data_type == "f":
+                found[k, column] = cell.value
+        return found
     finally:
         book.close()
 
@@ -586,6 +640,9 @@ def _number(cell, decimal: str) -> tuple[float | None, str | None]:
     text = str(cell).strip()
     if text.lower().lstrip("+-") in ("nan", "inf", "infinity"):
         return float(text), None
+    grouped = _GROUPED[decimal].match(text)
+    if grouped:  # '1.234,5' (decimal comma) or '1,234.5': the thousands' marks dropped
+        text = grouped["number"].replace("," if decimal == "." else ".", "") + grouped["rest"]
     # the longest number first: the shortest would read '1e9' as 1 'e9' ('2 E' is 2 E, though)
     for pattern in _NUMBER_AND_UNIT:
         match = pattern.match(text)
@@ -681,6 +738,9 @@ class Recognition:
             extras.append("decimal comma")
         if self.table.title_rows:
             extras.append(f"{self.table.title_rows} title row(s) skipped")
+        if skipped := self.table.blanks_skipped:
+            extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
+                          + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))
         return ", ".join(parts) + (f"; {', '.join(extras)}" if extras else "")
 
     def describe(self) -> dict:

@@ -36,11 +36,13 @@ class Parameter:
 
     ``kind`` converts a spec's text (``float``, ``str`` or ``bool``); ``choices`` lists the
     values a text parameter may take (empty: any), or is a function that derives them (from the
-    registry, when it is read)."""
+    registry, when it is read); ``fraction`` marks a float that is a fraction, which a spec may
+    write as a percentage too (``tolerance=2%``)."""
 
     description: str
     kind: type = float
     choices: tuple[str, ...] | Callable[[], tuple[str, ...]] = ()
+    fraction: bool = False
 
     def options(self) -> tuple[str, ...]:
         """The values a text parameter may take (empty: any)."""
@@ -57,6 +59,10 @@ class Parameter:
                 return str(value).lower() == "true"
             raise ValueError(f"{name}={value!r} is invalid: expected true or false")
         if self.kind is float:
+            if self.fraction and isinstance(value, str):
+                from mkm.core.ranges import parse_fraction
+
+                return parse_fraction(value, name)
             try:
                 return float(value)
             except (TypeError, ValueError):
@@ -249,9 +255,9 @@ register(Entry(
                             ("rising", "falling", "mean")),
      "hold_s": Parameter("time held at the pressure [s]; default 0, inf: relaxed"),
      "hysteresis_fraction": Parameter("friction band half-width (a fraction); default "
-                                      "calibrated, else 0"),
+                                      "calibrated, else 0", fraction=True),
      "creep_fraction": Parameter("share of the force creep relaxes (a fraction); default "
-                                 "calibrated, else 0"),
+                                 "calibrated, else 0", fraction=True),
      "creep_tau_s": Parameter("creep time constant [s]; default calibrated, else 30"),
      "mesh": MESH, "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
     colour="tab:brown", expensive=True,

@@ -116,3 +116,27 @@ def command_argument(path: str | os.PathLike) -> str:
     treats specially (``C:\\Users\\Lab PC\\mkm-out\\runs\\R``), else as it is."""
     text = str(path)
     return f'"{text}"' if not text or _SHELL_SPECIAL.search(text) else text
+
+
+def check_writable(out: str | os.PathLike) -> Path:
+    """``out``, a folder or file a command will write, if a file can be made where it goes
+    (in ``out`` when it is a folder that exists, else in the nearest folder above it that
+    exists); else ``ValueError``. Called before a long computation: a read-only place is said
+    before the work, not after it, when the work would be lost."""
+    import tempfile
+
+    out = Path(out)
+    place = out if out.is_dir() else out.parent
+    while not place.exists() and place != place.parent:
+        place = place.parent
+    if not place.is_dir():
+        return out  # a file where a folder goes: the writer's own check names it
+    try:
+        with tempfile.TemporaryFile(dir=place):
+            pass
+    except OSError as exc:
+        where = "" if place == out else f": {place} is not writable for this user"
+        raise ValueError(f"{out} cannot be written{where} ({exc.strerror or exc}): expected "
+                         "--out in a folder this user can write to; nothing was computed or "
+                         "written") from None
+    return out

@@ -84,8 +84,8 @@ register(Entry(
 register(Entry(
     "auto", _auto, "auto (cheapest within tolerance)",
     "the cheapest predictor whose error bound at the point asked meets a tolerance", "auto",
-    {"tolerance": Parameter("largest |Err%| against the finest FE, a fraction; "
-                            "default 0.02"),
+    {"tolerance": Parameter("largest |Err%| against the finest FE, a fraction (or 2%); "
+                            "default 0.02", fraction=True),
      "table": Parameter("study table (default: the shipped one, from `mkm study`)", str),
      "mesh_errors": Parameter("FE mesh error table (default: the shipped one, from `mkm "
                               "study --mesh-muscles N`)", str),

@@ -28,6 +28,7 @@ from.
 from __future__ import annotations
 
 import json
+import math
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -68,7 +69,7 @@ from mkm.html import (
     table_html,
 )
 from mkm.identify.page import report_section
-from mkm.paths import default_out
+from mkm.paths import check_writable, default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import phase, progress_bar
 from mkm.registry import Spec, entries, parse_spec
@@ -185,15 +186,15 @@ def build_report(run_dirs, models=None, out_dir=None,
         raise ValueError("no run folder given: expected at least one RUN_DIR")
     specs = (default_models(calibration) if models is None
              else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
-    out = Path(out_dir) if out_dir else default_out("report", run_dirs[0].name)
+    out = check_writable(Path(out_dir) if out_dir else default_out("report", run_dirs[0].name))
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
         with staged_folder(out, last="report.html") as stage:
             _write_report(run_dirs, specs, stage, cache_dir, tolerance, surrogate_section,
                           progress, start, calibration)
     except OSError as exc:
+        where = exc.filename2 or exc.filename  # the file asked for, not its temporary
         raise ValueError(f"the report was not written ({exc.strerror or type(exc).__name__}"
-                         f"{f': {exc.filename}' if exc.filename else ''}); {out} is as it "
-                         "was") from None
+                         f"{f': {where}' if where else ''}); {out} is as it was") from None
     return out / "report.html"
 
 
@@ -215,6 +216,9 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
         warnings.warn(f"run{'s' if len(in_place) > 1 else ''} {', '.join(map(str, in_place))}: "
                       f"the default surrogate's box does not cover the muscle; the practical "
                       f"range's ({RANGE_SPEC}) is scored as {REFERENCE_SPEC!r}", stacklevel=2)
+    other = _calibration_of_another_muscle(runs)
+    if other:
+        warnings.warn(other, stacklevel=2)
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
     spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g")
 
@@ -456,7 +460,36 @@ def _banners(runs: list[_Run]) -> str:
                        f"{lock}. No model is valid there: the braid cannot shorten so far, so "
                        "the muscle pulls little or nothing and every model's number is flagged "
                        "invalid.")
+    other = _calibration_of_another_muscle(runs)
+    if other:
+        out.append(other)
     return "".join(f'<p class="note">{esc(line)}</p>' for line in out)
+
+
+def _calibration_of_another_muscle(runs: list[_Run]) -> str | None:
+    """The line naming the runs whose muscle (D0, t0) is not the one the calibration's
+    identified muscle was identified on, or None: its braid angle and rubber are that muscle's,
+    so every calibrated model predicts these runs as that muscle's."""
+    calibration = runs[0].calibration if runs else None
+    muscles = {(m["D0_mm"], m["t0_mm"]): m.get("id", "")
+               for m in (r.get("muscle") or {} for r in _identified_runs(calibration))
+               if "D0_mm" in m and "t0_mm" in m}
+    if not muscles:
+        return None
+    others = [r for r in runs if not any(
+        math.isclose(r.muscle.D0_mm, D0, rel_tol=1e-3) and
+        math.isclose(r.muscle.t0_mm, t0, rel_tol=1e-3) for D0, t0 in muscles)]
+    if not others:
+        return None
+    which = ", ".join(f"{r.k} ({r.muscle.id or 'no id'}, D0 {r.muscle.D0_mm:g} mm, t0 "
+                      f"{r.muscle.t0_mm:g} mm)" for r in others)
+    identified = ", ".join(f"{i or 'no id'}, D0 {D0:g} mm, t0 {t0:g} mm"
+                           for (D0, t0), i in muscles.items())
+    return (f"Run{'s' if len(others) > 1 else ''} {which}: the calibration "
+            f"{calibration.path} was identified on another muscle ({identified}); its braid "
+            "angle and rubber are that muscle's, so every calibrated model predicts "
+            f"{'these runs' if len(others) > 1 else 'this run'} as that muscle's. Identify "
+            "this muscle's own (mkm identify) or leave --calibration out.")
 
 
 def _overlay_section(runs: list[_Run], out: Path, names: dict, colours: dict) -> str:
@@ -518,13 +551,16 @@ def _speed_section(runs, summary: pd.DataFrame, out: Path, names: dict, colours:
 
 
 def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> str:
+    from mkm.bench.storage import reason_shown
+
     meta, muscle, steps = r.meta, r.muscle, r.run.steps
     parts = [f'<section class="run-head"><h2 id="run-{r.k}">Run {r.k}: {esc(r.name)}</h2>',
              f"<p>status: <b>{_status_html(r)}</b>"]
     n_samples = getattr(r.run, "n_samples", None)
     n_samples = len(r.run.samples) if n_samples is None else n_samples
     if not r.run.complete:
-        parts.append(f" — reason: {esc(meta.get('reason') or 'not recorded')}. Kept: "
+        reason = reason_shown(str(meta.get("reason") or "")) or "not recorded"
+        parts.append(f" — reason: {esc(reason)}. Kept: "
                      f"{len(steps)} settled step(s) of {_planned_steps(meta)}, "
                      f"{n_samples} sample(s). Only what was kept is scored below.")
     parts.append("</p>")
@@ -784,11 +820,11 @@ def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
 def _identified_runs(calibration: Calibration | None) -> list[dict]:
     """The runs a calibration was identified on (``mkm identify`` records them in the entry of
     the model it identified with); empty for the shipped one or one written by hand."""
-    for entry in (calibration.entries.values() if calibration else ()):
-        runs = (entry.get("identified") or {}).get("runs") if isinstance(entry, dict) else None
-        if isinstance(runs, list) and runs and all(isinstance(r, dict) for r in runs):
-            return runs
-    return []
+    from mkm.identify.band import identified_entry
+
+    found = identified_entry(calibration) if calibration is not None else None
+    runs = found[1]["identified"].get("runs") if found else None
+    return [r for r in runs if isinstance(r, dict)] if isinstance(runs, list) else []
 
 
 def _auto_paragraph(r: _Run, tolerance: float) -> str:

@@ -8,6 +8,7 @@ Bad input (a ``ValueError`` from the library or a malformed argument) prints one
 from __future__ import annotations
 
 import argparse
+import errno
 import io
 import os
 import re
@@ -107,9 +108,14 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     except OSError as exc:  # a path the command cannot use (--out naming a folder, a file...)
         path = exc.filename2 or exc.filename  # an atomic write's target, not its temporary
-        say(args, "error", f"{path}: {exc.strerror or exc}: expected a path this command can "
-            "use (a file's name where it writes a file, a folder's where a folder)" if path
-            else exc)
+        if path and exc.errno in (errno.EACCES, errno.EPERM, errno.EROFS):
+            say(args, "error", f"{path} cannot be written ({exc.strerror}): expected a folder "
+                "this user can write to (not read-only); the command's files there are as "
+                "they were")
+        else:
+            say(args, "error", f"{path}: {exc.strerror or exc}: expected a path this command "
+                "can use (a file's name where it writes a file, a folder's where a folder)"
+                if path else exc)
         return 2
     except KeyboardInterrupt:
         print(f"{command_name(args)}: interrupted", file=sys.stderr)

@@ -53,7 +53,11 @@ def error_line(prog: str, message) -> str:
 #: value the user typed as ``--D0 -1`` is said about the flag.
 FLAGS = {"D0_mm": ("--D0", "D0"), "t0_mm": ("--t0", "t0"), "L0_mm": ("--L0", "L0"),
          "eps": ("--eps", "eps"), "muscle.eps": ("--eps", "eps"),
-         "theta0_deg": ("--theta0", "theta0"), "tolerance": ("--tolerance", "tolerance")}
+         "theta0_deg": ("--theta0", "theta0"), "tolerance": ("--tolerance", "tolerance"),
+         # mkm design's constraints
+         "max_pressure_bar": ("--max-pressure", "max_pressure_bar"),
+         "max_outer_diameter_mm": ("--max-outer-diameter", "max_outer_diameter_mm"),
+         "gap_mm": ("--gap", "gap_mm")}
 
 
 def name_the_flag(args, message) -> str:

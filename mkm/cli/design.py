@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from mkm.cli.common import (
     add_batch_arguments,
@@ -118,7 +117,7 @@ def register(subparsers) -> None:
 
 def _design(args) -> int:
     from mkm.design import run_design, write_design
-    from mkm.paths import default_out
+    from mkm.paths import check_writable, default_out
     from mkm.prediction_cache import DEFAULT_CACHE_DIR
     from mkm.progress import summary_line
 
@@ -136,6 +135,7 @@ def _design(args) -> int:
                          "tolerances the muscle is built to, e.g. --tolerance "
                          "D0=0.3,t0=0.1,theta0=1")
     robust = {} if args.probability is None else {"probability": args.probability}
+    out = check_writable(args.out or default_out("design"))
     result = run_design(args.require, constraints, args.objective, args.top, spec=args.spec,
                         mesh=args.mesh, surrogate=args.surrogate,
                         progress=not args.no_progress,
@@ -143,7 +143,7 @@ def _design(args) -> int:
                         tolerances=args.tolerance, **robust,
                         workers=args.workers, scheduler=args.scheduler,
                         calibration=args.calibration)
-    write_design(result, Path(args.out or default_out("design")))
+    write_design(result, out)
     summary_line("design", result.summary())
     for note in result.notes():
         summary_line("design", note)

@@ -15,7 +15,7 @@ from mkm.cli.common import (
 )
 from mkm.core.ranges import parse_seed
 from mkm.fem.options import BRAIDS
-from mkm.paths import default_out
+from mkm.paths import check_writable, default_out
 
 
 def register(subparsers) -> None:
@@ -68,6 +68,8 @@ def _identify(args) -> int:
     from mkm.identify import identify
 
     args.runs = run_folders(args.runs)
+    out = check_writable(Path(args.out) if args.out else
+                         default_out("identify", Path(args.runs[0]).name))
     try:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
                           braid=args.braid,
@@ -78,7 +80,6 @@ def _identify(args) -> int:
     except RuntimeError as exc:  # a fit that failed: said, nothing written
         say(args, "error", f"identification failed: {exc}")
         return 1
-    out = Path(args.out) if args.out else default_out("identify", Path(args.runs[0]).name)
     files = result.write(out)
     print(result.summary())
     print(f"wrote {', '.join(str(p) for p in files.values())}")

@@ -72,8 +72,8 @@ def register(subparsers) -> None:
         "saved one; points outside its training domain are flagged valid=false, with a warning.",
         epilog="example: mkm surrogate predict --D0 35 --t0 2.5 --eps 5% --pressures 0:2.5:0.5")
     predict.add_argument("--model", default="default",
-                         help="folder written by `mkm surrogate train`, or default (the cached "
-                         "best surrogate)")
+                         help="folder written by `mkm surrogate train`, default (the cached "
+                         "best surrogate), or surrogate:kind=KIND (trained on first use)")
     add_geometry_arguments(predict)
     _parameter_arguments(predict)
     predict.add_argument("--out", help="write the CSV here instead of stdout")
@@ -167,7 +167,8 @@ def register(subparsers) -> None:
         "outside the box are flagged. Writes offgrid_points.csv and offgrid_summary.json.",
         epilog="example: mkm surrogate evaluate --muscles 4 --mesh medium")
     evaluate.add_argument("--model", default="default",
-                          help="folder written by `mkm surrogate train`, or default")
+                          help="folder written by `mkm surrogate train`, default, or "
+                          "surrogate:kind=KIND")
     evaluate.add_argument("--muscles", type=int, default=12,
                           help="FE budget: random muscles (default 12)")
     evaluate.add_argument("--seed", type=argtype(parse_seed, "--seed"),
@@ -263,12 +264,28 @@ def _train(args) -> int:
 
 def _load(path, calibration, accept_mismatch=False, progress=False, **parameters):
     from mkm.surrogate.io import load_model
-    from mkm.surrogate.train import default_model
+    from mkm.surrogate.train import cached_model, default_model
 
     parameters = {k: v for k, v in parameters.items() if v is not None}
-    model = (default_model(progress=progress) if path == "default"
-             else load_model(path, accept_mismatch=accept_mismatch))
+    if path == "default":
+        model = default_model(progress=progress)
+    elif str(path).startswith("surrogate:") and not Path(path).exists():
+        # the spec a warning names where another kind answers (surrogate:kind=muscle-gp-range)
+        model = cached_model(_spec_kind(path), progress=progress)
+    else:
+        model = load_model(path, accept_mismatch=accept_mismatch)
     return model.with_parameters(calibration, **parameters)
+
+
+def _spec_kind(text: str) -> str:
+    """The kind a ``surrogate:kind=K`` spec names; ``ValueError`` for any other spec."""
+    from mkm.registry import parse_spec
+
+    params = dict(parse_spec(text).params)
+    if set(params) != {"kind"}:
+        raise ValueError(f"--model {text!r}: expected a folder written by `mkm surrogate "
+                         "train`, default, or surrogate:kind=KIND (`mkm models` lists the kinds)")
+    return str(params["kind"])
 
 
 def _label(path: str) -> str:

@@ -106,7 +106,10 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     import tempfile
 
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    except OSError as exc:  # named by the file asked for, not by its temporary
+        raise type(exc)(exc.errno, exc.strerror, str(path)) from None
     umask = os.umask(0)
     os.umask(umask)
     try:
@@ -135,7 +138,10 @@ def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[P
 
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    stage = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".partial", dir=out.parent))
+    try:
+        stage = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".partial", dir=out.parent))
+    except OSError as exc:  # named by the folder asked for, not by its temporary
+        raise type(exc)(exc.errno, exc.strerror, str(out)) from None
     try:
         yield stage
         out.mkdir(exist_ok=True)
@@ -144,7 +150,10 @@ def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[P
             names.remove(last)
             names.append(last)
         for name in names:
-            os.replace(stage / name, out / name)
+            try:
+                os.replace(stage / name, out / name)
+            except OSError as exc:
+                raise type(exc)(exc.errno, exc.strerror, str(out / name)) from None
     finally:
         shutil.rmtree(stage, ignore_errors=True)
 

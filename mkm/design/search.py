@@ -445,6 +445,11 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool,
                 problems.append(f"requirement {k} ({req.label}) at {req.pressure_bar:g} bar is "
                                 f"above {FE_SEARCH_MAX_PRESSURE_BAR:g} bar, the top of the "
                                 "practical range a design is searched in")
+    if (constraints.max_pressure_bar or 0.0) > FE_SEARCH_MAX_PRESSURE_BAR:
+        # the housing is checked at it: no model of the toolkit is trusted above it
+        problems.append(f"max_pressure_bar={constraints.max_pressure_bar:g} is invalid: "
+                        f"expected at most {FE_SEARCH_MAX_PRESSURE_BAR:g} bar, the top of the "
+                        "practical range a design is searched in")
     if box["t0_mm"][0] >= box["D0_mm"][1] / 2:
         problems.append(f"t0_mm from {box['t0_mm'][0]:g} mm conflicts with D0_mm up to "
                         f"{box['D0_mm'][1]:g} mm: expected t0 < D0/2")

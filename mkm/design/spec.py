@@ -34,11 +34,21 @@ def design_muscle(row, calibration: Calibration | None = None, eps: float = 0.0,
                   gap_mm: float | None = None) -> Muscle:
     """The muscle a design (a row of the designs' table) describes, held at ``eps``: its
     geometry, length, braid angle and rubber (``rubber`` named as in :func:`rubber_of`), and
-    the gap between tube and braid it was designed with (``gap_mm`` [mm]; None or 0: none)."""
+    the gap between tube and braid it was designed with (``gap_mm`` [mm]; None or 0: none).
+    Its id is :func:`design_id`'s."""
     rubber = rubber_of(str(row["rubber"]), calibration)
     return Muscle(D0_mm=float(row["D0_mm"]), t0_mm=float(row["t0_mm"]),
                   L0_mm=float(row["L0_mm"]), eps=eps, theta0_deg=float(row["theta0_deg"]),
-                  C10_MPa=rubber.C10_MPa, C01_MPa=rubber.C01_MPa, gap_mm=gap_mm or None)
+                  C10_MPa=rubber.C10_MPa, C01_MPa=rubber.C01_MPa, gap_mm=gap_mm or None,
+                  id=design_id(row))
+
+
+def design_id(row) -> str:
+    """A design's muscle id from its geometry, ``design-D31.25-t2.5-L282-th30`` (D0, t0 and L0
+    [mm], theta0 [deg]): a valid id for a bench config's ``[muscle]`` and a run folder's name,
+    and the same design always the same id."""
+    return (f"design-D{float(row['D0_mm']):.4g}-t{float(row['t0_mm']):.4g}"
+            f"-L{float(row['L0_mm']):.4g}-th{float(row['theta0_deg']):.4g}")
 
 
 #: A requirement is near the braid lock from 75 % of Equation 2's eps_max on: the pressure term
@@ -96,7 +106,8 @@ def parse_requirement(text: str, name: str = "--require") -> Requirement:
         except ValueError:
             raise ValueError(f"{name} {text!r}: {what} {shown!r}: expected a finite number of "
                              f"{unit}, for example 400N@2bar,eps=0.10") from None
-    return Requirement(numbers["force"], numbers["pressure"], parse_fraction(eps, name))
+    return Requirement(numbers["force"], numbers["pressure"],
+                       parse_fraction(eps, f"{name} {text!r}: eps"))
 
 
 def parse_bounds(text, name: str) -> tuple[float, float]:
@@ -209,10 +220,13 @@ def load_spec(path) -> dict:
                     "belong to it; put them above the first)" if extra else "")
             raise ValueError(f"--spec {path}: requirement {i} must have exactly force_N, "
                              f"pressure_bar and eps{hint}")
+        where = f"--spec {path}: requirement {i}"
         eps = item["eps"]
-        eps = parse_fraction(eps) if isinstance(eps, str) else parse_number(eps, "eps")
-        requirements.append(Requirement(parse_number(item["force_N"], "force_N"),
-                                        parse_number(item["pressure_bar"], "pressure_bar"), eps))
+        eps = (parse_fraction(eps, f"{where} eps") if isinstance(eps, str)
+               else parse_number(eps, f"{where} eps"))
+        requirements.append(Requirement(parse_number(item["force_N"], f"{where} force_N"),
+                                        parse_number(item["pressure_bar"],
+                                                     f"{where} pressure_bar"), eps))
     out["requirements"] = requirements
     constraints = table.get("constraints", {})
     fields = set(Constraints.__dataclass_fields__)

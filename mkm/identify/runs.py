@@ -97,13 +97,14 @@ def load_run_data(path) -> RunData:
     criterion), so the hold's samples take the hold's mean pressure: the monitor's noise would
     otherwise ratchet the friction model's play operator.
     """
-    from mkm.bench.storage import load_run
+    from mkm.bench.storage import load_run, reason_shown
 
     run = load_run(path)
     path = Path(path)
     if str(run.status) == "failed":
-        raise ValueError(f"run {path.name} has status failed ({run.reason or 'no reason'}): "
-                         "expected a complete run to identify from")
+        raise ValueError(f"run {path.name} has status failed "
+                         f"({reason_shown(run.reason) or 'no reason'}): expected a complete run "
+                         "to identify from")
     if run.rows_lost:  # steps whose hold samples are gone would be fitted as forces of zero
         raise ValueError(f"run {path.name}: {run.rows_lost[0]}: expected the whole record to "
                          "identify from")

@@ -65,6 +65,22 @@ def test_kpa_and_lbf_headers(tmp_path, mkm_cli):
     assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
 
 
+@pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
+def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_path, mkm_cli):
+    force = thickwall_N(PRESSURES, 0.122)
+    frame = pd.DataFrame({"Pressure (bar)": PRESSURES, "Force (N)": force})
+    frame.loc[3, "Force (N)"] = np.nan  # a stray empty cell: file row 5
+    frame.loc[5, "Pressure (bar)"] = np.nan  # file row 7
+    path = tmp_path / f"lab{suffix}"
+    frame.to_csv(path, index=False) if suffix == ".csv" else frame.to_excel(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    assert "2 row(s) with a blank cell skipped: B5, A7" in err
+    kept = [0, 1, 2, 4, 6]  # no value made up for the rows skipped
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], PRESSURES[kept], rtol=1e-6)
+    np.testing.assert_allclose(run.steps["force_N_mean"], force[kept], rtol=1e-5)
+    assert run.meta.imported_from["rows_skipped_for_a_blank_cell"] == ["B5", "A7"]
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES[:5], 0.0)
     rows = "\n".join(f"{p:.2f};{f:.3f}".replace(".", ",") for p, f in zip(PRESSURES[:5], force,

@@ -118,6 +118,32 @@ def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     np.testing.assert_allclose(column_values(table, found["eps"]), [0.122, 0.122])
 
 
+def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
+    # a lab's export with ',' between fields keeps its decimal commas quoted
+    table, found = _one(tmp_path, 'Pressure [bar],Force [N]\n"0,0","0"\n"0,5","12,25"\n'
+                        '"1,5","50,125"\n')
+    assert (table.separator, table.decimal) == (",", ",")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 0.5, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 12.25, 50.125])
+    # beside decimal points, a quoted comma groups thousands: not a decimal comma
+    table, _ = _one(tmp_path, 'P [bar],F [N]\n0.5,"1,250"\n1.5,300.5\n', "points.csv")
+    assert table.decimal == "."
+    # every comma three digits from the end: either reading fits, so neither is guessed
+    with pytest.raises(ValueError, match=r"ambiguous.csv: numbers such as '1,500' in a "
+                       "comma-separated file could be decimal commas or thousands"):
+        _one(tmp_path, 'P [bar],F [N]\n1,"1,500"\n2,"2,250"\n', "ambiguous.csv")
+
+
+def test_thousands_grouped_beside_a_decimal_mark(tmp_path):
+    # a force column formatted with thousands (a Festo DMSP-20 pulls 1500 N), as German and
+    # English spreadsheets export it; unambiguous beside the decimal mark
+    table, found = _one(tmp_path, "Druck [bar];Kraft [N]\n1;1.234,5\n2;12.634,25 N\n", "de.csv")
+    assert table.decimal == ","
+    np.testing.assert_allclose(column_values(table, found["force"]), [1234.5, 12634.25])
+    table, found = _one(tmp_path, 'P [bar],F [N]\n0.5,250.5\n1,"1,234.5"\n', "en.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [250.5, 1234.5])
+
+
 def test_rows_of_separators_only_are_blank(tmp_path):
     # a spreadsheet's export: empty rows as ";;", between the data and after it
     table, found = _one(tmp_path, "Druck (bar);Kraft (N);Notiz\n0,5;12,25;\n;;\n1,0;40,5;ok\n"

@@ -516,3 +516,38 @@ def test_a_path_the_console_code_page_cannot_encode_is_escaped_not_an_error(tmp_
     expected = str(folder / "martens_boblan_2017_forcemaps.csv")
     assert printed == expected.replace("Ł", "\\u0141").replace("ź", "\\u017a")
     assert (folder / "martens_boblan_2017_forcemaps.csv").is_file()
+
+
+RUN_DIR = Path(__file__).resolve().parents[2] / "data" / "experimental" / \
+    "20261123T084037Z_paper-prototype"
+
+
+@pytest.mark.parametrize("argv, out", [
+    (["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05"], "s.csv"),
+    (["report", str(RUN_DIR), "--models", "eq2", "--no-cache"], None),
+    (["report", str(RUN_DIR), "--models", "eq2", "--no-cache"], "report"),
+    (["identify", str(RUN_DIR), "--no-progress"], "identify"),
+    (["design", "--require", "300N@2.5bar,eps=0.1"], "design"),
+])
+def test_a_read_only_out_is_one_line_before_any_work(argv, out, tmp_path, mkm_run):
+    folder = tmp_path / "read-only"
+    folder.mkdir()
+    (folder / "kept.txt").write_text("a lab's file\n")
+    folder.chmod(0o555)
+    try:
+        try:
+            (folder / "probe").touch()
+        except PermissionError:
+            pass
+        else:
+            pytest.skip("this user (root) writes into a read-only folder: nothing to test")
+        target = folder / out if out else folder
+        code, stdout, err = mkm_run([*argv, "--out", str(target)])
+        assert code == 2 and stdout == "" and err.count("\n") == 1, err
+        # the place asked for, not a temporary file beside it
+        assert err.startswith(f"mkm {argv[0]}"), err
+        assert f": error: {target} cannot be written" in err and "Permission denied" in err
+        assert ".tmp" not in err and ".partial" not in err
+        assert sorted(p.name for p in folder.iterdir()) == ["kept.txt"]
+    finally:
+        folder.chmod(0o755)

@@ -134,3 +134,24 @@ def test_design_budget_must_be_positive(capsys):
 def test_design_and_mesh_study_options_refused_with_one_line(mkm_run, argv, message):
     code, _, err = mkm_run(argv)
     assert code == 2 and message in err and len(err.strip().splitlines()) == 1
+
+
+@pytest.mark.slow  # trains the practical range's surrogate
+def test_predict_takes_the_spec_its_warning_names(tmp_path, capsys):
+    """Outside the default surrogate's box, its warning names surrogate:kind=muscle-gp-range:
+    --model takes that spec (was: "is not a saved surrogate: metadata.json missing")."""
+    from mkm.registry import parse_spec
+
+    out = tmp_path / "range.csv"
+    assert main(["surrogate", "predict", "--model", "surrogate:kind=muscle-gp-range", "--D0",
+                 "10", "--t0", "1.5", "--eps", "0.1", "--L0", "250", "--pressures", "6,8",
+                 "--out", str(out)]) == 0
+    table = pd.read_csv(out, comment="#")
+    expected = parse_spec("surrogate:kind=muscle-gp-range,L0_mm=250").build().predict(
+        [6.0, 8.0], 10.0, 1.5, 0.1).force_N
+    assert table["valid"].all() and table["force_N"].to_numpy() == pytest.approx(expected,
+                                                                                 rel=1e-5)
+    assert main(["surrogate", "predict", "--model", "surrogate:kind=physics,L0_mm=3", "--D0",
+                 "10", "--t0", "1.5", "--eps", "0.1"]) == 2
+    assert "expected a folder written by `mkm surrogate train`, default, or " \
+        "surrogate:kind=KIND" in capsys.readouterr().err

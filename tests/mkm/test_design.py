@@ -22,9 +22,11 @@ from mkm.design import (
     search,
 )
 from mkm.design.search import box_edges
+from mkm.design.spec import design_muscle
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
 from mkm.fem.ladder import make_model
+from mkm.fem.muscle import Muscle
 from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, outer_diameter_mm
 from mkm.html import esc
@@ -54,6 +56,10 @@ def test_requirement_syntax():
         parse_requirement("400N@200kPa,eps=0.1")
     with pytest.raises(ValueError, match="force -5 N is invalid"):
         parse_requirement("-5N@2bar,eps=0.1")
+    # the requirement as typed, not its eps alone under the option's name ('--require 10')
+    with pytest.raises(ValueError, match=r"^--require '300N@2\.5bar,eps=10': eps 10: a fraction "
+                       r"is expected; did you mean 10%\?$"):
+        parse_requirement("300N@2.5bar,eps=10")
 
 
 def test_outer_diameter_is_the_free_contraction_of_the_thick_wall_model():
@@ -145,6 +151,11 @@ def test_conflicting_constraints_are_named():
         search(["100N@2bar,eps=0.1"], {"D0_mm": 70})
     with pytest.raises(ValueError, match=r"at 9 bar is above 8 bar, the top of the practical"):
         search(["100N@9bar,eps=0.1"])
+    # the housing is checked at the largest working pressure: not beyond the practical range
+    # either (--max-pressure 20 checked it at 20 bar, 'outer diameter 50.8 mm at 20 bar')
+    with pytest.raises(ValueError, match=r"max_pressure_bar=20 is invalid: expected at most 8 "
+                                         "bar, the top of the practical range"):
+        search(["100N@2bar,eps=0.1"], {"max_pressure_bar": 20})
     with pytest.raises(ValueError, match="low 50 is above high 40"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": "50:40"})
     # a length that is a typo is refused before any search (it searched, "no valid force")
@@ -159,6 +170,12 @@ def test_conflicting_constraints_are_named():
     (["--require", "100N@2bar"], "malformed"),
     (["--require", "100N@2bar,eps=0.1", "--max-pressure", "1"], "conflicts with the largest"),
     ([], "no requirement given"),
+    # a constraint is named as the option typed, not as the spec file's key
+    (["--require", "100N@2bar,eps=0.1", "--max-pressure", "0"],
+     "mkm design: error: --max-pressure 0: expected a value > 0"),
+    (["--require", "100N@2bar,eps=0.1", "--max-outer-diameter", "0"],
+     "mkm design: error: --max-outer-diameter 0: expected a value > 0"),
+    (["--require", "100N@2bar,eps=0.1", "--gap", "-1"], "mkm design: error: --gap -1: expected "),
 ])
 def test_cli_errors_are_one_line(argv, message, mkm_run, tmp_path):
     code, out, err = mkm_run(["design", *argv, "--out", str(tmp_path / "d")])
@@ -213,6 +230,11 @@ def test_spec_file_unknown_key(tmp_path, mkm_run):
     ("[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = 0.1\ntop = 1\n",
      "requirement 1 must have exactly force_N, pressure_bar and eps (it has top: keys written "
      "below a [[requirement]] belong to it; put them above the first)"),
+    # a requirement's value is named in the file, not as an option never typed (--eps)
+    ('[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = "10"\n',
+     "requirement 1 eps 10: a fraction is expected; did you mean 10%?"),
+    ('[[requirement]]\nforce_N = "300N"\npressure_bar = 2.5\neps = 0.1\n',
+     "requirement 1 force_N='300N' is not a number"),
 ])
 def test_a_spec_file_shaped_wrong_is_one_line(text, message, tmp_path, mkm_run):
     spec = tmp_path / "spec.toml"
@@ -362,6 +384,16 @@ def test_a_design_on_the_edge_of_the_search_box_is_named():
     # a design inside the box, or on a fixed value (no range), sits on no edge
     box = {"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0], "L0_mm": [282.0, 282.0]}
     assert box_edges({"D0_mm": 30.05, "t0_mm": 3.99, "L0_mm": 282.0}, box) == []
+
+
+def test_the_chosen_muscle_has_an_id_a_bench_config_takes():
+    """designs.json's chosen_muscle is read as a config's [muscle]: its id names the design's
+    geometry (an empty id is refused there, and names no run folder)."""
+    row = pd.Series({"D0_mm": 31.25, "t0_mm": 2.5, "L0_mm": 282.0, "theta0_deg": 30.0,
+                     "rubber": "calibrated"})
+    record = design_muscle(row).record()
+    assert record["id"] == "design-D31.25-t2.5-L282-th30"
+    assert Muscle.from_dict(record, "chosen_muscle").id == record["id"]
 
 
 def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):

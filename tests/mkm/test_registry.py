@@ -16,6 +16,11 @@ from mkm.registry import describe, entries, parse_spec, parse_specs
     ("surrogate:kind=gp", "surrogate", {"kind": "gp"}, "surrogate:kind=gp"),
     ("auto:tolerance=0.05,per_point=true", "auto", {"tolerance": 0.05, "per_point": True},
      "auto:per_point=True,tolerance=0.05"),
+    # a fraction written as a percentage, as --tolerance takes it and auto's message suggests
+    ("auto:tolerance=5%", "auto", {"tolerance": 0.05}, "auto:tolerance=0.05"),
+    ("friction:static=thickwall,hysteresis_fraction=3%", "friction",
+     {"static": "thickwall", "hysteresis_fraction": 0.03},
+     "friction:hysteresis_fraction=0.03,static=thickwall"),
 ])
 def test_spec_round_trip(text, name, params, canonical):
     spec = parse_spec(text)

@@ -18,6 +18,7 @@ import pytest
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
+from mkm.bench.storage import reason_shown
 from mkm.fem.calibration import calibrated
 from mkm.fem.interface import Domain
 from mkm.fem.ladder import make_model
@@ -143,6 +144,24 @@ def test_aborted_run_is_reported_as_aborted(runs, report):
     first = samples.loc[samples["flags"].fillna("").str.contains("interlock"), "time_s"].min()
     assert f"Event: force interlock at {first:.1f} s" in section
     assert re.search(r"status: <b><span[^>]*>complete<", html.split('<h2 id="run-2">')[0])
+
+
+def test_a_reason_of_any_length_is_shown_bounded(runs, tmp_path):
+    """A run.json reason written by hand or another tool (a pasted log of 100 000 characters):
+    the report shows its first line, cut, and says where the whole is; run.json keeps it."""
+    run = Path(shutil.copytree(runs[1], tmp_path / "run"))
+    meta = json.loads((run / "run.json").read_text(encoding="utf-8"))
+    meta["reason"] = "valve stuck open\n" + "x" * 100_000
+    (run / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    path = build_report([run], parse_models("eq2"), out_dir=tmp_path / "r", cache_dir=None,
+                        tolerance=None, surrogate_section=False)
+    html = path.read_text(encoding="utf-8")
+    assert "reason: valve stuck open... (in full in run.json). Kept:" in html
+    assert "x" * 300 not in html
+    long_line = "y" * 100_000
+    assert reason_shown(long_line) == "y" * 200 + "... (in full in run.json)"
+    assert reason_shown("force interlock") == "force interlock"
+    assert json.loads((run / "run.json").read_text(encoding="utf-8"))["reason"] == meta["reason"]
 
 
 def test_every_table_and_figure_names_its_provenance(report):
@@ -413,6 +432,33 @@ def test_default_models_leave_out_what_an_identified_calibration_cannot_serve(tm
     assert "no calibrated theta0 for model 'axisym'" in str(notes[0].message)
     assert make_model("thickwall", Calibration.load(lab)).params()["gap_mm"] == 0.8
     assert [s.text for s in default_models(None)] == list(DEFAULT_MODELS)
+
+
+def test_a_calibration_identified_on_another_muscle_is_said(tmp_path):
+    """--calibration of a muscle identified elsewhere (a 10 mm Festo muscle's angle and rubber
+    on the 30 mm prototype: every calibrated model 67-93 % off, without a word): the runs of
+    another D0 or t0 are named with the muscle the calibration is of; its own runs are not."""
+    from types import SimpleNamespace
+
+    from mkm.fem.calibration import Calibration
+    from mkm.fem.muscle import Muscle
+    from mkm.report import _calibration_of_another_muscle
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {"theta0_deg": 27.7, "identified": {"runs": [
+        {"run": "a", "muscle": {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5, "L0_mm": 250.0,
+                                "eps": 0.0}}]}}}))
+    calibration = Calibration.load(lab)
+    runs = [SimpleNamespace(k=1, muscle=Muscle(30.0, 3.0, id="paper-prototype"),
+                            calibration=calibration),
+            SimpleNamespace(k=2, muscle=Muscle(10.0, 1.5, id="dmsp-10"),
+                            calibration=calibration)]
+    line = _calibration_of_another_muscle(runs)
+    assert line.startswith(f"Run 1 (paper-prototype, D0 30 mm, t0 3 mm): the calibration {lab} "
+                           "was identified on another muscle (dmsp-10, D0 10 mm, t0 1.5 mm)")
+    assert _calibration_of_another_muscle(runs[1:]) is None
+    shipped = SimpleNamespace(**{**vars(runs[0]), "calibration": None})
+    assert _calibration_of_another_muscle([shipped]) is None
 
 
 @pytest.mark.slow  # the default and the practical range's surrogates
