@@ -43,9 +43,10 @@ def run_folders(arguments) -> list[Path]:
 
     An argument with ``*`` or ``?`` is a pattern (:func:`glob.glob`; ``[`` and ``]`` are
     themselves, as in a folder's name), its matches oldest first; a
-    folder that is not a run folder but holds run folders stands for them; anything else is
-    passed on as it is (the loader says what is wrong with it). ``ValueError`` for a pattern or
-    folder that names no run folder.
+    folder that is not a run folder but holds run folders stands for them, and a run's
+    ``run.json`` for its folder; anything else is passed on as it is (the loader says what is
+    wrong with it). ``ValueError`` for a pattern or folder that names no run folder, and for
+    another file.
     """
     out: list[Path] = []
     for argument in map(str, arguments):
@@ -73,6 +74,14 @@ def run_folders(arguments) -> list[Path]:
                 raise ValueError(f"{path} is not a run folder ({RUN_RECORD} is missing) and "
                                  "holds none: expected a run folder or a folder of them")
             out += inside
+        elif path.is_file() and path.name == RUN_RECORD:
+            out.append(path.parent)  # a run's record stands for its folder
+        elif path.is_file():
+            # a shell's * passes every file beside the run folders (a README): say how to
+            # let mkm expand the pattern instead
+            raise ValueError(f"{path} is a file, not a run folder: expected run folders; to "
+                             f"pass a folder's runs, quote the pattern (\"{path.parent / '*'}\") "
+                             "or name the folder, and mkm takes only its run folders")
         else:
             out.append(path)
     return list(dict.fromkeys(out))

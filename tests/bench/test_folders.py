@@ -37,6 +37,17 @@ def test_a_pattern_naming_no_run_is_refused(tmp_path):
         one_run_folder(str(tmp_path / "r*"))
 
 
+def test_a_file_beside_the_runs_says_how_to_pass_them_and_a_run_json_is_its_run(tmp_path):
+    # bash expands `mkm report runs/*` itself: the README beside the runs comes as an argument
+    a, b = _runs(tmp_path / "runs", "r1", "r2")
+    readme = tmp_path / "runs" / "README.md"
+    readme.write_text("two runs")
+    with pytest.raises(ValueError, match=r"README.md is a file, not a run folder: .*quote the "
+                                         r"pattern \(\".*runs.\*\"\)"):
+        run_folders([a, readme, b])
+    assert run_folders([a / "run.json", b]) == [a, b]
+
+
 def test_report_takes_a_quoted_pattern(tmp_path, mkm_cli):
     # what cmd passes: the pattern itself
     code, out, err = mkm_cli(["report", str(tmp_path / "runs" / "*"), "--models", "eq2"])
