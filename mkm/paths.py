@@ -118,14 +118,18 @@ def command_argument(path: str | os.PathLike) -> str:
     return f'"{text}"' if not text or _SHELL_SPECIAL.search(text) else text
 
 
-def check_writable(out: str | os.PathLike) -> Path:
-    """``out``, a folder or file a command will write, if a file can be made where it goes
-    (in ``out`` when it is a folder that exists, else in the nearest folder above it that
-    exists); else ``ValueError``. Called before a long computation: a read-only place is said
-    before the work, not after it, when the work would be lost."""
+def check_writable(out: str | os.PathLike, folder: bool = False) -> Path:
+    """``out``, a folder (``folder``) or file a command will write, if a file can be made where
+    it goes (in ``out`` when it is a folder that exists, else in the nearest folder above it that
+    exists); else ``ValueError``. Called before a long computation: a read-only place, or a file
+    where the command makes a folder, is said before the work, not after it, when the work
+    would be lost."""
     import tempfile
 
     out = Path(out)
+    if folder and out.exists() and not out.is_dir():
+        raise ValueError(f"{out} is a file: expected --out to name a folder (new or one the "
+                         "command wrote before); nothing was computed or written")
     place = out if out.is_dir() else out.parent
     while not place.exists() and place != place.parent:
         place = place.parent

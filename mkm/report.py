@@ -186,7 +186,8 @@ def build_report(run_dirs, models=None, out_dir=None,
         raise ValueError("no run folder given: expected at least one RUN_DIR")
     specs = (default_models(calibration) if models is None
              else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
-    out = check_writable(Path(out_dir) if out_dir else default_out("report", run_dirs[0].name))
+    out = check_writable(Path(out_dir) if out_dir else default_out("report", run_dirs[0].name),
+                         folder=True)
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
         with staged_folder(out, last="report.html") as stage:
             _write_report(run_dirs, specs, stage, cache_dir, tolerance, surrogate_section,

@@ -135,7 +135,7 @@ def _design(args) -> int:
                          "tolerances the muscle is built to, e.g. --tolerance "
                          "D0=0.3,t0=0.1,theta0=1")
     robust = {} if args.probability is None else {"probability": args.probability}
-    out = check_writable(args.out or default_out("design"))
+    out = check_writable(args.out or default_out("design"), folder=True)
     result = run_design(args.require, constraints, args.objective, args.top, spec=args.spec,
                         mesh=args.mesh, surrogate=args.surrogate,
                         progress=not args.no_progress,

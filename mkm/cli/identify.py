@@ -69,7 +69,7 @@ def _identify(args) -> int:
 
     args.runs = run_folders(args.runs)
     out = check_writable(Path(args.out) if args.out else
-                         default_out("identify", Path(args.runs[0]).name))
+                         default_out("identify", Path(args.runs[0]).name), folder=True)
     try:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
                           braid=args.braid,
