@@ -151,6 +151,11 @@ def default_models(calibration: Calibration | None = None) -> list[Spec]:
     return kept
 
 
+def report_folder(out_dir, run_dirs) -> Path:
+    """Where :func:`build_report` writes: ``out_dir``, else ``mkm-out/report/<first run>``."""
+    return Path(out_dir) if out_dir else default_out("report", Path(run_dirs[0]).name)
+
+
 def build_report(run_dirs, models=None, out_dir=None,
                  cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
                  tolerance: float | None = 0.02, surrogate_section: bool = True,
@@ -186,8 +191,7 @@ def build_report(run_dirs, models=None, out_dir=None,
         raise ValueError("no run folder given: expected at least one RUN_DIR")
     specs = (default_models(calibration) if models is None
              else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
-    out = check_writable(Path(out_dir) if out_dir else default_out("report", run_dirs[0].name),
-                         folder=True)
+    out = check_writable(report_folder(out_dir, run_dirs), folder=True)
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
         with staged_folder(out, last="report.html") as stage:
             _write_report(run_dirs, specs, stage, cache_dir, tolerance, surrogate_section,

@@ -119,13 +119,31 @@ def _report(args) -> int:
     args.runs = run_folders(args.runs)
     specs = (default_models(args.calibration) if args.models is None
              else parse_specs(args.models))
+    earlier = _earlier_report(args.out, args.runs)
     path = build_report(args.runs, specs, out_dir=args.out, cache_dir=_cache(args),
                         tolerance=args.tolerance, progress=not args.no_progress,
                         calibration=args.calibration)
     summary_line("report", f"{len(args.runs)} run(s) x {len(specs)} model(s) in "
-                 f"{time.perf_counter() - start:.1f} s; summary.csv beside the report")
+                 f"{time.perf_counter() - start:.1f} s; summary.csv beside the report"
+                 + (f"; replaced the report of {earlier} there (--out names another folder "
+                    "to keep both)" if earlier else ""))
     print(path)
     return 0
+
+
+def _earlier_report(out, runs) -> str | None:
+    """When (UTC, to the minute) the report that ``mkm report`` is about to replace was written,
+    or None: the default folder is named after the first run, so a second report of the same
+    runs (another calibration, other models) lands where the first is."""
+    import datetime
+
+    from mkm.report import report_folder
+
+    page = report_folder(out, runs) / "report.html" if runs else None
+    if page is None or not page.is_file():
+        return None
+    when = datetime.datetime.fromtimestamp(page.stat().st_mtime, datetime.UTC)
+    return f"{when:%Y-%m-%d %H:%M} UTC"
 
 
 def _study(args) -> int:

@@ -558,3 +558,13 @@ def test_a_read_only_out_is_one_line_before_any_work(argv, out, tmp_path, mkm_ru
         assert sorted(p.name for p in folder.iterdir()) == ["kept.txt"]
     finally:
         folder.chmod(0o755)
+
+
+def test_a_report_replacing_an_earlier_one_says_so(tmp_path, mkm_run):
+    argv = ["report", str(RUN_DIR), "--models", "eq2", "--no-cache", "--no-progress", "--out",
+            str(tmp_path / "report")]
+    code, out, err = mkm_run(argv)
+    assert code == 0 and "replaced" not in err, err
+    code, out, err = mkm_run([*argv[:3], "thickwall", *argv[4:]])
+    assert code == 0 and "; replaced the report of 20" in err, err
+    assert "(--out names another folder to keep both)" in err
