@@ -32,7 +32,10 @@ def parse_number(text: str, name: str) -> float:
     try:
         value = float(cleaned)
     except (TypeError, ValueError):
-        raise ValueError(f"{name}={text!r} is not a number") from None
+        with_unit = re.fullmatch(r"\s*[-+]?[\d.]+(?:[eE][-+]?\d+)?\s*([^\W\d_]+)\s*", cleaned)
+        hint = (f": expected the number alone, without {with_unit.group(1)!r} (in the unit "
+                "the name or --help gives)" if with_unit else "")
+        raise ValueError(f"{name}={text!r} is not a number{hint}") from None
     if not math.isfinite(value):
         raise ValueError(f"{name}={text!r} is not a finite number")
     if not ASCII_DECIMAL.fullmatch(cleaned.strip(" \t\r\n")):

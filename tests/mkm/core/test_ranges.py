@@ -41,6 +41,9 @@ def test_fraction_or_percentage_mean_the_same():
     (lambda: parse_pressures(""), "--pressures is empty"),
     (lambda: parse_pressures("1,-0.5"), "negative pressure -0.5 bar"),
     (lambda: parse_fraction("five%"), "--eps='five' is not a number"),
+    # a unit typed after the number: said, not only refused
+    (lambda: parse_number("282mm", "--L0"), "--L0='282mm' is not a number: expected the "
+                                           "number alone, without 'mm'"),
     (lambda: parse_fraction("12.2"), "^--eps 12.2: a fraction is expected; did you mean 12.2%"),
     (lambda: parse_fraction("2", "--tolerance"), "^--tolerance 2: a fraction is expected; "
      "did you mean 2%"),
