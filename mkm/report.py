@@ -386,7 +386,7 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
     every model's largest |Err%|, RMSE and time per force for every run in one table, the
     model ``auto`` picks for each run, then each run's status."""
     banners = _banners(runs)
-    verdicts = "".join(f'<p class="verdict">{esc(_verdict(r, names, tolerance))}</p>'
+    verdicts = "".join(f'<p class="verdict">{esc(_verdict(r, names, tolerance, runs))}</p>'
                        for r in runs)
     head = ("<tr><th>run</th><th>model</th><th>largest |Err%|</th><th>RMSE [N]</th>"
             "<th>time per force</th><th>valid steps</th>"
@@ -806,9 +806,11 @@ def _same_model(a: str, b: str) -> bool:
     return ma.params() == mb.params()
 
 
-def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
+def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = ()) -> str:
     """The run's verdict sentence (:func:`mkm.verdict.verdict`) with auto's pick and the
-    measurement's distance from the report's FE model, if it has one."""
+    measurement's distance from the report's FE model, if it has one; the identify command it
+    suggests takes every run of ``runs`` of the same muscle (one eps alone confounds the braid
+    angle and the rubber)."""
     label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
     choice = _named_choice(r, names, tolerance) if tolerance and r.summary else None
     best, _ = recommend(r.summary, tolerance)
@@ -819,7 +821,14 @@ def _verdict(r: _Run, names: dict, tolerance: float | None) -> str:
     return verdict(label, r.summary, names, tolerance, choice, same,
                    fe[0] if fe else None, muscle_advice(
                        str(r.run.path), _identified_runs(r.calibration),
-                       r.calibration.path.name if r.calibration else ""))
+                       r.calibration.path.name if r.calibration else "",
+                       [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)]))
+
+
+def _same_muscle(a: Muscle, b: Muscle) -> bool:
+    """One tube: the same id, diameter and wall (its runs may be held at other lengths)."""
+    return a.id == b.id and math.isclose(a.D0_mm, b.D0_mm, rel_tol=1e-6) and math.isclose(
+        a.t0_mm, b.t0_mm, rel_tol=1e-6)
 
 
 def _identified_runs(calibration: Calibration | None) -> list[dict]:

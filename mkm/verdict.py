@@ -95,15 +95,18 @@ def _consistency(row: dict, summary: list[dict]) -> str:
 
 
 def muscle_advice(run_path: str, identified: list[dict] | None = None,
-                  calibration_name: str = "") -> str:
+                  calibration_name: str = "", muscle_runs=()) -> str:
     """What the FE model's distance from a run, beyond auto's bound, tells a reader: identify
-    the muscle; or, where the report's calibration was identified (``identified``: its runs as
-    :mod:`mkm.identify` records them, ``run``, ``path`` and ``muscle``), that it does not carry
-    over to a run it did not see (identify with the run among the others), or, for one of its
-    own runs, that the model does not fit it (no calibration would)."""
+    the muscle, from ``muscle_runs`` (its runs at hand, this one among them); or, where the
+    report's calibration was identified (``identified``: its runs as :mod:`mkm.identify`
+    records them, ``run``, ``path`` and ``muscle``), that it does not carry over to a run it did
+    not see (identify with the run among the others), or, for one of its own runs, that the
+    model does not fit it (no calibration would)."""
     if not identified:
-        return ("which points to the muscle, not the model: identify it "
-                f"(`{identify_command(run_path)}`)")
+        runs = list(dict.fromkeys([*muscle_runs, run_path]))
+        whose = "it" if len(runs) == 1 else f"it from its {len(runs)} runs here"
+        return ("which points to the muscle, not the model: identify "
+                f"{whose} (`{identify_command(*runs)}`)")
     name = f" ({calibration_name})" if calibration_name else ""
     if any(r.get("run") == Path(run_path).name for r in identified):
         return (f"although the calibration{name} was identified on this run with the others: "

@@ -109,6 +109,15 @@ def test_with_an_identified_calibration_the_advice_says_whether_it_saw_the_run()
     assert text.endswith(f"more than that bound, {held_out}.")
 
 
+def test_the_identify_it_suggests_takes_every_run_of_the_muscle_at_hand():
+    # mkm demo's two runs of one prototype: one eps alone confounds the angle and the rubber
+    assert muscle_advice("runs/r1", muscle_runs=["runs/r1", "runs/r2"]) == (
+        "which points to the muscle, not the model: identify it from its 2 runs here "
+        "(`mkm identify runs/r1 runs/r2`)")
+    assert muscle_advice("runs/r1", muscle_runs=["runs/r1"]).endswith(
+        "identify it (`mkm identify runs/r1`)")
+
+
 def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
     # the published DMSP-10 at its shortest length: 0 N at every step, every model valid
     slack = [_row("eq2", math.nan, 1e-6), _row("thickwall", math.nan, 2e-5)]
