@@ -111,7 +111,8 @@ def parse_requirement(text: str, name: str = "--require") -> Requirement:
 
 
 def parse_bounds(text, name: str) -> tuple[float, float]:
-    """``(low, high)`` from a value (``"37"``, fixed) or a range ``"30:50"``; numbers pass."""
+    """``(low, high)`` from a value (``"37"``, fixed) or a range ``"30:50"``, above 0 (a size
+    or an angle); numbers pass."""
     if isinstance(text, int | float):
         value = parse_number(text, name)
         return value, value
@@ -125,6 +126,8 @@ def parse_bounds(text, name: str) -> tuple[float, float]:
         raise ValueError(f"{name} {text!r} is malformed: expected a value or low:high "
                          "(for example 30:50)")
     low, high = (parse_number(p, name) for p in parts)
+    if low <= 0:  # a diameter, wall, length or angle: a sign typo, not a muscle
+        raise ValueError(f"{name} {text!r} is invalid: expected values above 0")
     if low > high:
         raise ValueError(f"{name} {text!r} conflicts with itself: low {low:g} is above high "
                          f"{high:g}")

@@ -176,6 +176,11 @@ def test_conflicting_constraints_are_named():
     (["--require", "100N@2bar,eps=0.1", "--max-outer-diameter", "0"],
      "mkm design: error: --max-outer-diameter 0: expected a value > 0"),
     (["--require", "100N@2bar,eps=0.1", "--gap", "-1"], "mkm design: error: --gap -1: expected "),
+    # a sign typo is the option's, not a conflict with the search box and the wall
+    (["--require", "100N@2bar,eps=0.1", "--D0", "-5"],
+     "mkm design: error: --D0 '-5' is invalid: expected values above 0"),
+    (["--require", "100N@2bar,eps=0.1", "--t0", "0:2"],
+     "mkm design: error: --t0 '0:2' is invalid: expected values above 0"),
 ])
 def test_cli_errors_are_one_line(argv, message, mkm_run, tmp_path):
     code, out, err = mkm_run(["design", *argv, "--out", str(tmp_path / "d")])
