@@ -188,9 +188,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     from mkm.bench.run import check_out_root
 
     check_out_root(out_root)
-    out = []
+    out, muscles = [], [b[0].muscle for b in built]
     for g, (meta, steps, samples, notes, shape) in zip(groups, built, strict=True):
-        label = _folder_label(meta.muscle, [b[0].muscle for b in built])
+        label = _folder_label(meta.muscle, muscles)
         writer = RunWriter(out_root, meta, f"# imported from {path.name}: no bench "
                            "configuration\n", label)
         writer.append_samples(samples)

@@ -826,9 +826,9 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
 
 
 def _same_muscle(a: Muscle, b: Muscle) -> bool:
-    """One tube: the same id, diameter and wall (its runs may be held at other lengths)."""
-    return a.id == b.id and math.isclose(a.D0_mm, b.D0_mm, rel_tol=1e-6) and math.isclose(
-        a.t0_mm, b.t0_mm, rel_tol=1e-6)
+    """One tube: the same id, diameter and wall as run.json records them (its runs may be held
+    at other lengths; :func:`_overlay_section` groups by these and the length)."""
+    return (a.id, a.D0_mm, a.t0_mm) == (b.id, b.D0_mm, b.t0_mm)
 
 
 def _identified_runs(calibration: Calibration | None) -> list[dict]:

@@ -138,10 +138,15 @@ def registered() -> tuple[Kind, ...]:
     return KINDS.entries()
 
 
+def named(name: str) -> str:
+    """The kind ``name`` stands for: :data:`BEST` for ``best``, else itself."""
+    return BEST if name == "best" else name
+
+
 def _find(name: str) -> tuple[Kind, dict]:
     """The entry that builds kind ``name`` (``best``: :data:`BEST`) and the factory arguments
     it fixes; a one-line ``ValueError`` naming the known kinds if none does."""
-    name = BEST if name == "best" else name
+    name = named(name)
     if name in KINDS and KINDS.entry(name).members is None:
         return KINDS.entry(name), {}
     for kind in KINDS.entries():

@@ -21,7 +21,7 @@ from mkm.core.home import user_cache
 from mkm.core.records import file_sha256, package_file, provenance
 from mkm.surrogate.coverage import coverage
 from mkm.surrogate.gp import kernels_path
-from mkm.surrogate.kinds import BEST, entry, make_estimator
+from mkm.surrogate.kinds import BEST, entry, make_estimator, named
 from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.quiet import quiet_fits
 from mkm.surrogate.training_data import (
@@ -74,7 +74,7 @@ def train_surrogate(kind: str = "best", dataset=None, splits: int | None = None,
     """Fit ``kind`` on the whole dataset (None: the kind's, :func:`kind_files`); metrics from
     refits on ``splits`` muscle-held-out splits (0: none; None: the kind's number).
     ``progress``: a progress bar on stderr over the fits."""
-    resolved = BEST if kind == "best" else kind
+    resolved = named(kind)
     own_dataset = kind_files(resolved)[0]
     splits = kind_splits(resolved, splits)
     data, estimator, calibration, holdout, post_fit = _training_setup(resolved, dataset,
@@ -259,7 +259,7 @@ def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SP
     parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
              "versions": provenance()["versions"], "code": code_version(kind),
              "gp_kernels": file_sha256(KERNELS_PATH) if KERNELS_PATH.is_file() else None,
-             "std_sets": [file_sha256(p) for p in std_sets(BEST if kind == "best" else kind,
+             "std_sets": [file_sha256(p) for p in std_sets(named(kind),
                                                            dataset) if p.is_file()]}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
@@ -272,7 +272,7 @@ def default_cache_dir() -> Path:
 def training_task(kind: str, dataset=None) -> str:
     """The name under which :mod:`mkm.core.durations` keeps how long training ``kind`` on
     ``dataset`` (None: the kind's own, :func:`kind_files`) took."""
-    kind = BEST if kind == "best" else kind
+    kind = named(kind)
     if dataset is None:
         dataset = kind_files(kind)[0]
     return f"surrogate-training-{kind}-{Path(dataset).stem}"
@@ -281,7 +281,7 @@ def training_task(kind: str, dataset=None) -> str:
 def _cache_folder(kind, dataset, cache_dir, splits) -> tuple[Path, Path, int]:
     """The cache folder of ``kind`` on ``dataset`` (None: the kind's), the dataset and the
     splits resolved; ``best`` and the kind it names share one folder (one model, trained once)."""
-    resolved = BEST if kind == "best" else kind
+    resolved = named(kind)
     dataset = kind_files(resolved)[0] if dataset is None else Path(dataset)
     splits = kind_splits(resolved, splits)
     cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
