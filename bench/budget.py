@@ -148,9 +148,15 @@ class Budget:
     def force_u_N(self) -> float:
         return self.u("force")
 
+    def U(self, quantity: str) -> float:
+        """Expanded uncertainty of ``quantity``: ``k u``; 0 where no term has any (a table's
+        quantity whose accuracy its lab did not declare)."""
+        u = self.u(quantity)
+        return 0.0 if u == 0 else self.k(quantity) * u
+
     @property
     def force_U_N(self) -> float:
-        return self.k("force") * self.force_u_N
+        return self.U("force")
 
     @property
     def pressure_u_bar(self) -> float:
@@ -158,7 +164,7 @@ class Budget:
 
     @property
     def pressure_U_bar(self) -> float:
-        return self.k("pressure") * self.pressure_u_bar
+        return self.U("pressure")
 
     def columns(self) -> dict[str, float]:
         """The four columns of ``steps.csv``."""
@@ -323,6 +329,66 @@ def step_budget(instrument: Instrument, force_N: float, force_N_std: float, n: i
         terms.append(Term("ADC resolution (monitor)", "pressure", lsb_bar / SQRT12, "B",
                           f"1 step = {lsb_bar:.3g} bar", "rectangular"))
     return Budget(tuple(terms), drift_N=force_drift_N)
+
+
+#: what a declared accuracy may bound (``mkm import --accuracy``): each quantity's unit
+DECLARED_QUANTITIES = {"force": "N", "pressure": "bar"}
+
+
+@dataclass(frozen=True)
+class Declared:
+    """The +- bound every value of one quantity keeps, as a data sheet or a lab states it for a
+    table measured elsewhere: a part in the quantity's unit (``absolute``, N or bar) and a part
+    proportional to the value (``fraction``); ``text`` as it was given."""
+
+    absolute: float = 0.0
+    fraction: float = 0.0
+    text: str = ""
+
+    def record(self) -> dict:
+        return {"absolute": self.absolute, "fraction_of_value": self.fraction, "given": self.text}
+
+    @classmethod
+    def from_record(cls, record: dict) -> Declared:
+        return cls(float(record.get("absolute", 0.0)),
+                   float(record.get("fraction_of_value", 0.0)), str(record.get("given", "")))
+
+
+def declared_budget(declared: dict[str, Declared], force_N: float, pressure_bar: float,
+                    force_N_std: float = math.nan, n: int = 1,
+                    force_drift_N: float = math.nan) -> Budget:
+    """The budget of a step measured elsewhere, from the bounds its lab declares
+    (``declared``: quantity -> :class:`Declared`): each part of a bound its own rectangular
+    term (type B; a data sheet's "0.1 % FS + 0.5 % of reading" is two terms), and, for a
+    plateau of a time series (``n`` > 2 samples), the noise over it as on the bench (type A).
+    A quantity with no declared bound has none: its ``u`` is 0."""
+    values = {"force": force_N, "pressure": pressure_bar}
+    terms = []
+    for quantity, bound in declared.items():
+        unit, given = DECLARED_QUANTITIES[quantity], f"--accuracy {quantity}={bound.text}"
+        if bound.absolute > 0:
+            terms.append(Term(f"declared {quantity} accuracy", quantity,
+                              bound.absolute / SQRT3, "B", f"{given}: +-{bound.absolute:g} "
+                              f"{unit}", "rectangular"))
+        if bound.fraction > 0:
+            half = bound.fraction * abs(values[quantity])
+            terms.append(Term(f"declared {quantity} accuracy (of the value)", quantity,
+                              half / SQRT3, "B", f"{given}: {100 * bound.fraction:g} % x "
+                              f"{abs(values[quantity]):.4g} {unit}", "rectangular"))
+    scatter = residual_std(force_N_std, n, force_drift_N)
+    if n > 2 and math.isfinite(scatter):
+        terms.append(Term("noise over the hold", "force", scatter / math.sqrt(n), "A",
+                          f"scatter about the trend {scatter:.3g} N over {n} samples"))
+    return Budget(tuple(terms), drift_N=force_drift_N)
+
+
+def declared_step_budget(declared: dict[str, Declared], step, plateau: bool) -> Budget:
+    """:func:`declared_budget` of one imported step (a :class:`mkm.bench.storage.StepRecord`
+    or a row of its ``steps.csv``); ``plateau``: the step is a time series' plateau, whose
+    scatter is noise (a ramp's bin spreads over a rising force, a table row has one value)."""
+    held = (float(step.force_N_std), int(step.n), float(step.force_drift_N)) if plateau else ()
+    return declared_budget(declared, float(step.force_N_mean), float(step.pressure_bar_mean),
+                           *held)
 
 
 def expected_budget(config, force_N: float, pressure_bar: float) -> Budget:

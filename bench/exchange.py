@@ -22,8 +22,10 @@ from __future__ import annotations
 import datetime
 import json
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -53,6 +55,9 @@ from mkm.bench.tables import (
 )
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
 from mkm.fem.limits import PRACTICAL_RANGE, check_value
+
+if TYPE_CHECKING:
+    from mkm.bench.budget import Declared
 
 REQUIRED_ROLES = ("pressure", "force")
 #: columns whose values split one table into runs (one muscle state each)
@@ -95,6 +100,57 @@ def parse_zero(text: str | float | None, option: str, unit: str) -> str | float:
     return value
 
 
+#: the largest bound ``--accuracy`` takes for each quantity [its unit], and why: beyond it the
+#: value says nothing (a fraction of 100 %) or the table is not a measurement of a braided muscle
+ACCURACY_LIMITS = {"force": (MAX_CAPACITY_N, "the largest load cell a bench takes"),
+                   "pressure": (PRACTICAL_RANGE.pressure_bar[1], "the practical range's top")}
+_BOUND_PART = re.compile(r"^(?P<number>\d*[.,]?\d+(?:[eE][+-]?\d+)?)\s*(?P<unit>.*)$")
+
+
+def parse_accuracy(text: str | None) -> dict[str, Declared]:
+    """``--accuracy force=0.5N+0.2%,pressure=0.01bar`` -> quantity -> :class:`Declared`: each
+    bound a sum of parts, a number with a unit of the quantity (converted by pint; a bare number
+    is N or bar) or a percentage of the value; ``ValueError`` naming a bad item."""
+    from mkm.bench.budget import DECLARED_QUANTITIES, Declared
+    from mkm.bench.tables import parse_assignments, parse_unit, registry
+
+    out = {}
+    for quantity, given in parse_assignments(text, "--accuracy").items():
+        if quantity not in DECLARED_QUANTITIES:
+            raise ValueError(f"--accuracy {quantity}={given} is invalid: expected a bound of "
+                             f"{' or '.join(DECLARED_QUANTITIES)}")
+        unit, (largest, why) = DECLARED_QUANTITIES[quantity], ACCURACY_LIMITS[quantity]
+        expected = (f"expected a +- bound such as {quantity}=0.5{unit}, {quantity}=1% (of each "
+                    f"value) or their sum {quantity}=0.5{unit}+1%")
+        absolute = fraction = 0.0
+        for part in given.split("+"):
+            match = _BOUND_PART.match(part.strip())
+            if not match:
+                raise ValueError(f"--accuracy {quantity}={given} is invalid: {expected}")
+            number = float(match["number"].replace(",", "."))
+            written = match["unit"].strip()
+            if written == "%":
+                fraction += number / 100.0
+                continue
+            if written.lower().replace(" ", "") in ("%fs", "%offullscale", "%f.s."):
+                raise ValueError(f"--accuracy {quantity}={given}: a share of full scale is a "
+                                 f"bound in {unit} (0.1 % of a 500 {unit} range: 0.5{unit}): "
+                                 f"{expected}")
+            found = parse_unit(written) if written else registry().Unit(unit)
+            if found is None or found.dimensionality != registry().Unit(unit).dimensionality:
+                raise ValueError(f"--accuracy {quantity}={given}: {written!r} is not a unit of "
+                                 f"{quantity}: {expected}")
+            absolute += float(registry().Quantity(number, found).to(unit).magnitude)
+        if not (absolute > 0 or fraction > 0):
+            raise ValueError(f"--accuracy {quantity}={given}: a bound of 0 claims exact values: "
+                             f"{expected}")
+        if fraction >= 1 or absolute > largest:
+            raise ValueError(f"--accuracy {quantity}={given} is invalid: expected less than "
+                             f"100 % and at most {largest:g} {unit} ({why})")
+        out[quantity] = Declared(absolute, fraction, given)
+    return out
+
+
 @dataclass
 class ImportedRun:
     """One run folder written by :func:`import_table` and what was done to make it."""
@@ -116,6 +172,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  columns: dict[str, str] | None = None, units: dict[str, str] | None = None,
                  sheet: str | None = None, tare: str | float = "auto",
                  vented: str | float = "auto", select: str | None = None,
+                 accuracy: dict[str, Declared] | None = None,
                  notify=lambda line: None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -137,6 +194,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         (``auto``), none, or this value.
     select : str, optional
         The muscle to import where the table's muscle column holds several.
+    accuracy : dict, optional
+        Quantity -> :class:`mkm.bench.budget.Declared`: the +- bounds the lab declares for its
+        forces and pressures (:func:`parse_accuracy`). Each step then carries its uncertainty
+        budget (:func:`mkm.bench.budget.declared_budget`), so ``mkm report`` scores E_n and
+        ``mkm identify`` judges its fit; without it neither can.
     notify : callable
         Receives the line of what was recognised in each table.
 
@@ -184,7 +246,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
     sha = file_sha256(path)
-    built = [_build(path, sha, g, m, tare, vented) for g, m in zip(groups, muscles, strict=True)]
+    built = [_build(path, sha, g, m, tare, vented, accuracy or {})
+             for g, m in zip(groups, muscles, strict=True)]
     from mkm.bench.run import check_out_root
 
     check_out_root(out_root)
@@ -337,7 +400,7 @@ def _muscle(given: dict, group: _Group):
     return muscle_from_dict(values, where.rstrip(": "))
 
 
-def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
+def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy):
     """The run record, steps, samples, notes and shape of one muscle state."""
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), group.values("force")
@@ -440,6 +503,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
             repeats[key] = repeats.get(key, -1) + 1
             steps.append(StepRecord(k, d, repeats[key], float(p), float(p), float(f), float(s),
                                     1, True, math.nan, math.nan, math.nan))
+    if accuracy:
+        steps = _with_budget(steps, accuracy, shape)
+        handling["declared_accuracy"] = {q: b.record() for q, b in accuracy.items()}
+        if "pressure" not in accuracy:
+            notes.append("no pressure accuracy declared: the pressures counted as exact")
     if "slack" in found:
         slack = int(flags(table, found["slack"])[group.rows].sum())
         handling["slack_rows"] = slack
@@ -468,6 +536,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented):
         ended_utc=now, imported_from=imported, counters={
             "samples": len(samples), "read_timeouts": 0, "clipped_samples": 0})
     return meta, steps, samples, notes, shape
+
+
+def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],
+                 shape: str) -> list[StepRecord]:
+    """``steps`` with the budget of the bounds the lab declared."""
+    from mkm.bench.budget import declared_step_budget
+
+    return [s._replace(**declared_step_budget(accuracy, s, shape == "staircase").columns())
+            for s in steps]
 
 
 def _inferred(pressure: np.ndarray) -> np.ndarray:

@@ -76,6 +76,8 @@ from mkm.registry import Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 from mkm.uncertainty import force_band, with_band
 from mkm.verdict import (
+    NO_BUDGET,
+    NO_BUDGET_IMPORTED,
     AutoPick,
     format_seconds,
     model_label,
@@ -634,21 +636,30 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
 
 def _budget_section(r: _Run, links: str) -> str:
     """The measurement budget of the run's largest-force step, terms ranked by their share."""
-    from mkm.bench.budget import Instrument, step_budget
+    from mkm.bench.budget import Declared, Instrument, declared_step_budget, step_budget
 
     steps, tare = r.run.steps, r.meta.get("tare") or {}
+    declared = (r.meta.get("imported_from") or {}).get("declared_accuracy")
     if "force_U_N" not in steps or not steps["force_U_N"].notna().any():
-        return '<p class="note">This run was recorded without an uncertainty budget.</p>'
+        return ('<p class="note">This run was recorded without an uncertainty budget'
+                + (": import its table again with the instruments' accuracy (mkm import "
+                   "--accuracy force=...,pressure=...) to score E_n.</p>"
+                   if r.meta.get("imported_from") else ".</p>"))
     s = steps.loc[steps["force_N_mean"].idxmax()]
-    try:
-        instrument = Instrument.from_run(r.meta)
-    except (TypeError, ValueError, ZeroDivisionError):
-        return ('<p class="note">The calibration in run.json is incomplete: the budget\'s terms '
-                "cannot be listed (steps.csv has its totals).</p>")
-    budget = step_budget(instrument, float(s["force_N_mean"]),
-                         float(s["force_N_std"]), int(s["n"]), float(s["force_drift_N"]),
-                         float(tare.get("std_N", np.nan)), int(tare.get("n", 0)),
-                         pressure_bar=float(s["pressure_bar_mean"]))
+    if declared:
+        budget = declared_step_budget(
+            {q: Declared.from_record(b) for q, b in declared.items()}, s,
+            r.meta["imported_from"].get("shape") == "staircase")
+    else:
+        try:
+            instrument = Instrument.from_run(r.meta)
+        except (TypeError, ValueError, ZeroDivisionError):
+            return ('<p class="note">The calibration in run.json is incomplete: the budget\'s '
+                    "terms cannot be listed (steps.csv has its totals).</p>")
+        budget = step_budget(instrument, float(s["force_N_mean"]),
+                             float(s["force_N_std"]), int(s["n"]), float(s["force_drift_N"]),
+                             float(tare.get("std_N", np.nan)), int(tare.get("n", 0)),
+                             pressure_bar=float(s["pressure_bar_mean"]))
     rows = [{"quantity": q, "term": t.name, "type": t.kind,
              "u": t.u, "share of u² [%]": 100 * share, "from": t.source}
             for q in ("force", "pressure") for t, share in budget.ranked(q)]
@@ -656,12 +667,20 @@ def _budget_section(r: _Run, links: str) -> str:
                f" bar, {s['force_N_mean']:.1f} N, the run's largest force): u in N (force) or "
                f"bar (pressure), ranked, so the first term is the one to improve. Combined: "
                f"U = {budget.force_U_N:.2f} N (k = {budget.k('force'):.3g}) and "
-               f"{budget.pressure_U_bar:.3f} bar (k = {budget.k('pressure'):.3g}), 95.45 %; "
-               f"the hold drifted {budget.drift_N:+.2f} N (creep: the hold mean is the "
-               "measurand). Every step's U is in steps.csv (force_U_N, pressure_U_bar). "
-               + links)
+               + (f"{budget.pressure_U_bar:.3f} bar (k = {budget.k('pressure'):.3g}), 95.45 %"
+                  if budget.pressure_u_bar > 0 else "the pressure exact (no accuracy declared)")
+               + (f"; the hold drifted {budget.drift_N:+.2f} N (creep: the hold mean is the "
+                  "measurand)" if np.isfinite(budget.drift_N) else "")
+               + (f"; the bounds its lab declared at import ({_declared_text(declared)})"
+                  if declared else "")
+               + ". Every step's U is in steps.csv (force_U_N, pressure_U_bar). " + links)
     return table_html(pd.DataFrame(rows), caption, formats={"u": ".3g",
                                                             "share of u² [%]": ".1f"})
+
+
+def _declared_text(declared: dict) -> str:
+    """``mkm import --accuracy`` as it was given, from run.json's ``declared_accuracy``."""
+    return "--accuracy " + ",".join(f"{q}={b.get('given', '')}" for q, b in declared.items())
 
 
 def _sim_note(sim: dict, specs) -> str:
@@ -822,7 +841,8 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
                    fe[0] if fe else None, muscle_advice(
                        str(r.run.path), _identified_runs(r.calibration),
                        r.calibration.path.name if r.calibration else "",
-                       [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)]))
+                       [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)]),
+                   NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET)
 
 
 def _same_muscle(a: Muscle, b: Muscle) -> bool:

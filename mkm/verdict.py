@@ -80,13 +80,19 @@ def recommend(summary: list[dict], tolerance: float | None) -> tuple[dict | None
     return min(pool, key=_err), False
 
 
-def _consistency(row: dict, summary: list[dict]) -> str:
+#: why a run has no E_n: its steps carry no uncertainty budget
+NO_BUDGET = "the run was recorded without an uncertainty budget"
+#: the same for a table imported without the instruments' accuracy, and what gives it one
+NO_BUDGET_IMPORTED = ("the table was imported without its instruments' accuracy (mkm import "
+                      "--accuracy force=...,pressure=... gives its steps one)")
+
+
+def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET) -> str:
     verdicts = [r.get("consistent") for r in summary]
     agree = sum(v is True for v in verdicts)
     judged = sum(v is not None for v in verdicts)
     if row.get("consistent") is None:
-        return ("no E_n: the run was recorded without an uncertainty budget" if judged == 0
-                else "no E_n for this model")
+        return f"no E_n: {no_budget}" if judged == 0 else "no E_n for this model"
     others = f"{agree} of {judged} models {'is' if agree == 1 else 'are'}"
     if row["consistent"]:
         return f"consistent with the measurement (|E_n| ≤ 1 at every step; {others})"
@@ -128,7 +134,7 @@ def identify_command(*run_paths) -> str:
 def verdict(run_label: str, summary: list[dict], names: dict[str, str],
             tolerance: float | None, auto: AutoPick | None = None,
             auto_same: bool = False, fe_err: tuple[str, float] | None = None,
-            advice: str | None = None) -> str:
+            advice: str | None = None, no_budget: str = NO_BUDGET) -> str:
     """The verdict sentence of one run (plain text).
 
     ``summary``: one :func:`mkm.scoring.summarise_run` row per model (``model`` is the spec
@@ -136,7 +142,8 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     % of the largest measured force) when it has a band. ``auto``: auto's pick at ``tolerance``,
     ``auto_same``: whether it is the recommended model. ``fe_err``: ``(name, largest |Err%|)``
     of an FE model of the report, the measurement's distance from the FE model; ``advice``:
-    what that distance, beyond auto's bound, tells (:func:`muscle_advice`).
+    what that distance, beyond auto's bound, tells (:func:`muscle_advice`); ``no_budget``: why
+    the run has no E_n, if it has none.
     """
     row, within = recommend(summary, tolerance)
     if row is None and any(r["valid_points"] > 0 for r in summary):
@@ -158,7 +165,7 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
         head = f"no model is within {tol} of the measurement; the closest is {name}, {how_far}"
     else:
         head = f"the closest model is {name}, {how_far}"
-    text = f"{run_label}: {head}, {_consistency(row, summary)}."
+    text = f"{run_label}: {head}, {_consistency(row, summary, no_budget)}."
     if auto is None or tol is None:
         return text
     measured = row if auto_same else next(

@@ -54,6 +54,13 @@ def register(subparsers) -> None:
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series: "
                      "detected at its start (auto), none, or a value [bar]")
+    imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
+                     help="the +- bound each force and pressure value keeps (the load cell's "
+                     "and the sensor's data sheet, or the table's stated accuracy): a value "
+                     "with its unit, a percentage of the value, or their sum, e.g. "
+                     "force=0.5N+0.2%%,pressure=0.01bar; each step then carries its "
+                     "uncertainty, so mkm report scores E_n and mkm identify judges its fit "
+                     "(default: none declared, neither can)")
     imp.add_argument("--out", default=None,
                      help="folder to put the run folders in (default: mkm-out/runs)")
     imp.set_defaults(func=_import)
@@ -72,7 +79,7 @@ def register(subparsers) -> None:
 
 
 def _import(args) -> int:
-    from mkm.bench.exchange import import_table, parse_zero
+    from mkm.bench.exchange import import_table, parse_accuracy, parse_zero
     from mkm.bench.tables import parse_assignments
     from mkm.paths import default_out
     from mkm.progress import summary_line
@@ -86,7 +93,7 @@ def _import(args) -> int:
         units=parse_assignments(args.units, "--units"), sheet=args.sheet,
         tare=parse_zero(args.tare, "--tare", "N"), vented=parse_zero(args.vented, "--vented",
                                                                        "bar"),
-        select=args.muscle, notify=lines.append)
+        select=args.muscle, accuracy=parse_accuracy(args.accuracy), notify=lines.append)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

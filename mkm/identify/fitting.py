@@ -4,7 +4,11 @@ The model of a run is the one the simulated bench is made of (:mod:`mkm.fem.fric
 force ``F(P; theta0, rubber)`` put through the friction play operator and one creep mode along
 the run's own pressure trace, sample by sample. The residuals are model minus measured force at
 every sample of every settled hold, both branches and every run at once
-(:func:`scipy.optimize.least_squares`, trust-region reflective within bounds).
+(:func:`scipy.optimize.least_squares`, trust-region reflective within bounds). A step of an
+imported table whose lab declared its accuracy is weighed by the inverse of its declared noise
+(:func:`weights`): a 1 % bound makes the steps of a 500 N muscle ten times as uncertain as
+those of a 50 N one, and an unweighted fit would let the strong muscle's steps drown the weak
+one's.
 
 The rubber is one scale on Silastic S's two constants (``C10 = s C10_S``, ``C01 = s C01_S``): a
 force-pressure curve mostly carries one rubber stiffness, not two constants' ratio. The share of
@@ -333,14 +337,30 @@ class Fit:
     message: str
     at_edge: list[str] = field(default_factory=list)
     tare_se_N: np.ndarray = field(default_factory=lambda: np.zeros(0))  # per run
+    #: each residual's weight in the fit (:func:`weights`); the residuals and the Jacobian
+    #: above are the unweighted ones [N]
+    weight: np.ndarray | None = None
 
     @property
     def n(self) -> int:
         return int(self.residual_N.size)
 
     @property
+    def w(self) -> np.ndarray:
+        return np.ones(self.n) if self.weight is None else self.weight
+
+    @property
+    def weighted_residual(self) -> np.ndarray:
+        return self.w * self.residual_N
+
+    @property
+    def weighted_jacobian(self) -> np.ndarray:
+        return self.w[:, None] * self.jacobian
+
+    @property
     def rss(self) -> float:
-        return float(np.sum(self.residual_N ** 2))
+        """The sum of the weighted residuals' squares: what the fit minimises."""
+        return float(np.sum(self.weighted_residual ** 2))
 
     @property
     def bic(self) -> float:
@@ -356,6 +376,19 @@ def nominal_values(theta0_deg: float) -> dict[str, float]:
             "log_tau": math.log(TERM_DEFAULTS["creep_tau_s"])}
 
 
+def weights(runs) -> list[np.ndarray]:
+    """Each run's weight per hold sample: 1, except on the steps of a run whose noise its lab
+    declared (:meth:`~mkm.identify.runs.RunData.declared_noise_N`), weighed by the inverse of
+    that noise relative to the median of every declared step's (so a fit of tables alone
+    minimises the chi-square, and their weights stay of the order of one beside bench runs)."""
+    noise = [run.declared_noise_N() for run in runs]
+    declared = [n for n in noise if n is not None]
+    reference = float(np.median(np.concatenate(declared))) if declared else 1.0
+    return [np.ones(int((run.hold >= 0).sum())) if n is None
+            else reference / np.maximum(n, 1e-12)[run.hold[run.hold >= 0]]
+            for run, n in zip(runs, noise, strict=True)]
+
+
 def fit(source: StaticSource, runs, names, start: dict[str, float],
         max_nfev: int = 400) -> Fit:
     """Fit ``names`` (of :data:`ORDER`) from ``start`` (every value), the rest held fixed.
@@ -366,6 +399,7 @@ def fit(source: StaticSource, runs, names, start: dict[str, float],
     bounds = {n: bounds_of(n, source, runs, start) for n in names}
     x0 = np.array([min(max(start[n], bounds[n][0]), bounds[n][1]) for n in names])
     holds = [run.hold >= 0 for run in runs]
+    w = np.concatenate(weights(runs))
     counter = [0]
 
     def values_of(x):
@@ -374,8 +408,8 @@ def fit(source: StaticSource, runs, names, start: dict[str, float],
     def residuals(x):
         counter[0] += 1
         out = traces(source, runs, values_of(x))
-        return np.concatenate([(t - run.force_N)[h]
-                               for t, run, h in zip(out, runs, holds, strict=True)])
+        return w * np.concatenate([(t - run.force_N)[h]
+                                   for t, run, h in zip(out, runs, holds, strict=True)])
 
     if names:
         scale = np.array([X_SCALE.get(n, 0.01) for n in names])
@@ -390,6 +424,7 @@ def fit(source: StaticSource, runs, names, start: dict[str, float],
         J = np.zeros((r.size, 0))
     if not np.all(np.isfinite(r)):
         raise RuntimeError(f"the fit on {source.name} gave non-finite residuals")
+    r, J = r / w, J / w[:, None]
     steps = [run.hold[h] for run, h in zip(runs, holds, strict=True)]
     offsets = np.cumsum([0] + [len(run.steps) for run in runs])
     cluster = np.concatenate([s + offsets[k] for k, s in enumerate(steps)])
@@ -398,7 +433,8 @@ def fit(source: StaticSource, runs, names, start: dict[str, float],
     edges = [n for n in names if n in source.box and at_edge(values[n], bounds[n])]
     measured = np.concatenate([run.force_N[h] for run, h in zip(runs, holds, strict=True)])
     return Fit(names, values, r, measured, J, cluster, run_of_cluster, bounds, source.name,
-               counter[0], str(message), edges, np.array([run.tare_se_N for run in runs]))
+               counter[0], str(message), edges, np.array([run.tare_se_N for run in runs]),
+               None if np.all(w == 1) else w)
 
 
 def at_edge(value: float, box: tuple[float, float]) -> bool:

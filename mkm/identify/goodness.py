@@ -40,6 +40,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy import stats
 
+from mkm.identify.runs import step_slopes
+
 #: a misfit: all steps' chi-square this improbable under their noise alone (a branch's: this
 #: over the number of branches)
 MISFIT_P = 1e-3
@@ -85,6 +87,7 @@ class Goodness:
     nu: float
     judged: bool = True
     why_not: str = ""
+    left_out: list[str] = field(default_factory=list)  # runs whose steps show no noise
     widened: dict = field(default_factory=dict)  # parameter: factor applied
 
     @property
@@ -150,6 +153,8 @@ class Goodness:
                           "the residuals' signs in pressure order; intervals widened by the "
                           "Birge ratio sqrt(chi2/nu) on a misfit",
                 "judged": self.judged, **({"why_not": self.why_not} if not self.judged else {}),
+                **({"runs_not_judged": self.left_out,
+                    "why_runs_not_judged": NO_NOISE} if self.left_out and self.judged else {}),
                 "chi2": round(self.chi2, 3), "nu": round(self.nu, 3),
                 "chi2_per_nu": round(self.reduced, 3) if self.nu > 0 else None,
                 "p_value": float(f"{self.p_value:.3g}") if self.nu > 0 else None,
@@ -194,25 +199,10 @@ def chi_square(residual, noise, shared: float = 0.0) -> float:
     return float(np.sum(r**2 / var))
 
 
-def _slopes(steps) -> np.ndarray:
-    """dF/dP [N/bar] at each step, from the run's own step means (both branches' means at each
-    distinct pressure)."""
-    P = steps["pressure_bar_mean"].to_numpy(dtype=float)
-    F = steps["force_N_mean"].to_numpy(dtype=float)
-    levels, inverse = np.unique(np.round(P, 3), return_inverse=True)
-    if levels.size < 2:
-        return np.zeros(P.size)
-    mean_P = np.bincount(inverse, P) / np.bincount(inverse)
-    mean_F = np.bincount(inverse, F) / np.bincount(inverse)
-    return np.gradient(mean_F, mean_P)[inverse]
-
-
 def assess(runs, fit) -> Goodness:
-    """The goodness of ``fit`` (:class:`mkm.identify.fitting.Fit`) to ``runs``."""
-    if not all(r.timed for r in runs):
-        return Goodness([], 0.0, 0.0, judged=False,
-                        why_not="a step table or a ramp has no hold samples to measure its "
-                                "noise from")
+    """The goodness of ``fit`` (:class:`mkm.identify.fitting.Fit`) to ``runs``: each run's steps
+    against their noise (:func:`_step_noise`); a run that shows none is left out, and with
+    none left the fit is not judged."""
     n_steps = fit.run_of_cluster.size
     sums = np.bincount(fit.cluster, fit.residual_N, minlength=n_steps)
     counts = np.bincount(fit.cluster, minlength=n_steps)
@@ -220,18 +210,18 @@ def assess(runs, fit) -> Goodness:
     squares = np.bincount(fit.cluster, (fit.residual_N - mean[fit.cluster]) ** 2,
                           minlength=n_steps)
     scatter2 = squares / np.maximum(counts - 1, 1) / np.maximum(counts, 1)
-    branches, offset = [], 0
+    branches, offset, left_out = [], 0, []
     for k, run in enumerate(runs):
         steps = run.steps.reset_index(drop=True)
         here = slice(offset, offset + len(steps))
         offset += len(steps)
-        pressure_se = steps.get("pressure_se_bar")
-        pressure_se = (np.nan_to_num(pressure_se.to_numpy(dtype=float)) if pressure_se is
-                       not None else np.zeros(len(steps)))
-        noise = np.sqrt(scatter2[here] + (_slopes(steps) * pressure_se) ** 2)
+        noise, usable = _step_noise(run, steps, scatter2[here], counts[here])
+        if noise is None:
+            left_out.append(run.name)
+            continue
         tare = float(fit.tare_se_N[k]) if fit.tare_se_N.size else 0.0
         for direction, branch in BRANCHES.items():
-            pick = (steps["direction"].to_numpy() == direction) & (counts[here] > 1)
+            pick = (steps["direction"].to_numpy() == direction) & usable
             if not pick.any():
                 continue
             r, s = mean[here][pick], noise[pick]
@@ -244,9 +234,33 @@ def assess(runs, fit) -> Goodness:
                 run.name, branch, int(pick.sum()), chi2, nu,
                 float(stats.chi2.sf(chi2, nu)) if nu > 0 else math.nan, n_runs, runs_p,
                 float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2)))))
+    if not branches:
+        return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE, left_out=left_out)
     chi2 = sum(b.chi2 for b in branches)
     nu = sum(b.nu for b in branches)
-    return Goodness(branches, chi2, nu)
+    return Goodness(branches, chi2, nu, left_out=left_out)
+
+
+#: why a run's steps show no noise, and what gives them one
+NO_NOISE = ("a step table or a ramp has no hold samples to measure its noise from; import it "
+            "with the instruments' accuracy (mkm import --accuracy force=...,pressure=...) to "
+            "judge it")
+
+
+def _step_noise(run, steps, scatter2, counts) -> tuple[np.ndarray | None, np.ndarray]:
+    """The noise [N] of each step's mean residual and which steps have one: a held step's from
+    its hold (the scatter and the monitor's noise times the slope); an imported table's or
+    ramp's from the bounds its lab declared (:meth:`~mkm.identify.runs.RunData.declared_noise_N`,
+    taken as independent from value to value); ``None`` for a run with neither."""
+    if run.timed:
+        pressure_se = steps.get("pressure_se_bar")
+        pressure_se = (np.nan_to_num(pressure_se.to_numpy(dtype=float)) if pressure_se is
+                       not None else np.zeros(len(steps)))
+        return np.sqrt(scatter2 + (step_slopes(steps) * pressure_se) ** 2), counts > 1
+    noise = run.declared_noise_N()
+    if noise is None:
+        return None, np.zeros(len(steps), bool)
+    return noise, counts > 0
 
 
 def widen(boot: dict, fit, goodness: Goodness) -> dict:

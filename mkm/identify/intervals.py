@@ -50,7 +50,9 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     shares and the fit takes as given (the tube's declared wall and diameter), as the residuals'
     sensitivity to it (one value per residual) and its +- tolerance (uniform).
     """
-    names, J, r = result.names, result.jacobian, result.residual_N
+    # in the weighted fit's space (every weight 1 for bench runs): the Gauss-Newton step of a
+    # replicate and the measured force's and zero's errors, each times the residual's weight
+    names, J, r, w = result.names, result.weighted_jacobian, result.weighted_residual, result.w
     p = len(names)
     rng = np.random.default_rng(seed)
     if p == 0:
@@ -68,8 +70,8 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     Jtr, JtF, Jt1 = (np.zeros((n_clusters, use.size)) for _ in range(3))
     np.add.at(JtJ, result.cluster, J[:, :, None] * J[:, None, :])
     np.add.at(Jtr, result.cluster, J * r[:, None])
-    np.add.at(JtF, result.cluster, J * result.measured_N[:, None])
-    np.add.at(Jt1, result.cluster, J)
+    np.add.at(JtF, result.cluster, J * (w * result.measured_N)[:, None])
+    np.add.at(Jt1, result.cluster, J * w[:, None])
     counts = np.zeros((replicates, n_clusters))
     for run in np.unique(result.run_of_cluster):
         members = np.flatnonzero(result.run_of_cluster == run)
@@ -85,7 +87,7 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
          - np.einsum("bc,ci->bi", counts * z[:, result.run_of_cluster], Jt1))
     for column, half in (uniform_terms or {}).values():  # r moves by u column
         Jtc = np.zeros((n_clusters, use.size))
-        np.add.at(Jtc, result.cluster, J * np.asarray(column, dtype=float)[:, None])
+        np.add.at(Jtc, result.cluster, J * (w * np.asarray(column, dtype=float))[:, None])
         u = rng.uniform(-half, half, size=replicates)
         g += u[:, None] * np.einsum("bc,ci->bi", counts, Jtc)
     x = np.array([result.values[n] for n in names])

@@ -444,11 +444,11 @@ def _shift(source, runs, best, differences) -> dict[str, float]:
     moved = fitting.traces(Corrected(source, differences), runs, best.values)
     holds = [run.hold >= 0 for run in runs]
     dr = np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds, strict=True)])
-    J = best.jacobian
+    J = best.weighted_jacobian
     usable = np.sqrt(np.sum(J**2, axis=0)) > 0
     step = np.zeros(len(best.names))
     if usable.any():
-        step[usable] = -np.linalg.lstsq(J[:, usable], dr, rcond=None)[0]
+        step[usable] = -np.linalg.lstsq(J[:, usable], best.w * dr, rcond=None)[0]
     return {n: float(v) for n, v in zip(best.names, step, strict=True)}
 
 
@@ -493,7 +493,7 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     low, high = (min(v, 0.999) / (1.0 - min(v, 0.999))
                  for v in extend(boot, free, terms)["interval"]["c01_fraction"])
     static = [free.names.index(n) for n in STATIC_NAMES if n in free.names]
-    J = free.jacobian[:, static]
+    J = free.weighted_jacobian[:, static]
     norms = np.sqrt(np.sum(J**2, axis=0))
     condition = (float(np.linalg.cond((J / norms).T @ (J / norms))) if np.all(norms > 0)
                  else float("inf"))

@@ -346,9 +346,14 @@ class Identification:
             lines.append(f"  {group}: not warranted by the data (BIC), dropped")
         if self.goodness is not None and self.goodness.judged:
             g = self.goodness
+            declared = [r.name for r in self.runs if r.declared and not r.timed]
+            against = ("their noise (the declared accuracy of the imported tables)"
+                       if declared else "their own noise")
             lines.append(f"  goodness of fit: chi2/nu = {g.reduced:.3g} over "
-                         f"{sum(b.steps for b in g.branches)} settled steps against their own "
-                         f"noise ({'a misfit, see below' if g.misfit else 'within the noise'})")
+                         f"{sum(b.steps for b in g.branches)} settled steps against {against} "
+                         f"({'a misfit, see below' if g.misfit else 'within the noise'})"
+                         + (f"; not judged on {', '.join(g.left_out)} (no noise: import with "
+                            "--accuracy)" if g.left_out else ""))
         elif self.goodness is not None:
             lines.append(self._unjudged_line())
         for check in self.checks_table().to_dict(orient="records"):

@@ -37,7 +37,9 @@ class RunData:
     settled step each sample's hold belongs to (-1: not in a settled hold); ``steps`` the
     settled steps (``step``, ``direction``, ``set_pressure_bar``, ``pressure_bar_mean``,
     ``force_N_mean``, ``hold_start_s``, ``end_s``, ``pressure_se_bar``: the standard error of the
-    hold's mean pressure, NaN for an imported step); ``tare_se_N`` the standard error of the
+    hold's mean pressure, NaN for an imported step; ``force_u_N``, ``pressure_u_bar``: the
+    step's standard uncertainties from its budget, NaN where it has none, for an imported run
+    the bounds its lab declared); ``tare_se_N`` the standard error of the
     zero the run's forces are measured from (its tare samples' std over their root count);
     the instrument's declared bounds from ``run.json``'s calibration (the defaults of
     :mod:`mkm.bench.config` where a run did not record them: ``instrument_declared`` False).
@@ -53,6 +55,9 @@ class RunData:
     sha256: dict
     tare_se_N: float = 0.0
     timed: bool = True  # the holds have their real durations (creep can be fitted)
+    #: an imported run whose lab declared its accuracy (``mkm import --accuracy``): its steps'
+    #: budgets stand for the noise a table's single values cannot show
+    declared: bool = False
     #: the pressure monitor's declared +- bounds of its offset [bar] and gain error [fraction]
     #: (:meth:`mkm.bench.config.Regulator.reading_bounds`) and the load cell's sensitivity
     #: tolerance (a fraction), from the run's recorded calibration
@@ -81,12 +86,36 @@ class RunData:
         """0 bar and the settled steps' set pressures: where the FE model is solved."""
         return np.unique(np.r_[0.0, self.steps["set_pressure_bar"].to_numpy(dtype=float)])
 
+    def declared_noise_N(self) -> np.ndarray | None:
+        """Each step's noise [N] from the bounds its lab declared (an imported table or ramp,
+        ``mkm import --accuracy``): the force's standard uncertainty and the pressure's times
+        the force's slope there, the only statement of a single value's noise there is;
+        ``None`` for a run with timed holds (their scatter shows it) or no declared bounds."""
+        force_u = self.steps["force_u_N"].to_numpy(dtype=float)
+        if self.timed or not self.declared or not np.isfinite(force_u).all():
+            return None
+        pressure_u = np.nan_to_num(self.steps["pressure_u_bar"].to_numpy(dtype=float))
+        return np.sqrt(force_u**2 + (step_slopes(self.steps) * pressure_u) ** 2)
+
     def step_means(self, force_N: np.ndarray) -> np.ndarray:
         """The mean of a force trace over each settled step's hold [N]."""
         sums = np.bincount(self.hold[self.hold >= 0], weights=force_N[self.hold >= 0],
                            minlength=len(self.steps))
         counts = np.bincount(self.hold[self.hold >= 0], minlength=len(self.steps))
         return sums / np.maximum(counts, 1)
+
+
+def step_slopes(steps: pd.DataFrame) -> np.ndarray:
+    """dF/dP [N/bar] at each step, from the run's own step means (both branches' means at each
+    distinct pressure)."""
+    P = steps["pressure_bar_mean"].to_numpy(dtype=float)
+    F = steps["force_N_mean"].to_numpy(dtype=float)
+    levels, inverse = np.unique(np.round(P, 3), return_inverse=True)
+    if levels.size < 2:
+        return np.zeros(P.size)
+    mean_P = np.bincount(inverse, P) / np.bincount(inverse)
+    mean_F = np.bincount(inverse, F) / np.bincount(inverse)
+    return np.gradient(mean_F, mean_P)[inverse]
 
 
 def load_run_data(path) -> RunData:
@@ -151,10 +180,15 @@ def load_run_data(path) -> RunData:
            if (path / name).is_file()}
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
-                   steps=settled[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
-                                  "force_N_mean", "hold_start_s", "end_s", "pressure_se_bar"]],
-                   sha256=sha, tare_se_N=tare_se, timed=imported.get("shape") != "ramp",
-                   **_instrument(run))
+                   steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
+                   timed=imported.get("shape") != "ramp", **_instrument(run))
+
+
+def _columns(steps: pd.DataFrame, *extra: str) -> pd.DataFrame:
+    """The columns of :attr:`RunData.steps`, the budget's NaN where the run recorded none."""
+    budget = {c: steps[c] if c in steps else np.nan for c in ("force_u_N", "pressure_u_bar")}
+    return steps[["step", "direction", "set_pressure_bar", "pressure_bar_mean", "force_N_mean",
+                  "hold_start_s", "end_s", *extra]].assign(**budget)
 
 
 def _tube_tolerances(tolerances) -> dict[str, float]:
@@ -179,6 +213,7 @@ def _instrument(run) -> dict:
     return {"monitor_offset_bound_bar": offset, "monitor_gain_bound": gain,
             "sensitivity_tolerance": recorded["loadcell"].get(
                 "sensitivity_tolerance_fraction", LoadCell.sensitivity_tolerance_fraction),
+            "declared": bool((run.meta.imported_from or {}).get("declared_accuracy")),
             "instrument_declared": ("monitor_accuracy_bar" in recorded["regulator"]
                                     and "max_pressure_bar" in recorded["regulator"]
                                     and "sensitivity_tolerance_fraction" in recorded["loadcell"]),
@@ -195,8 +230,7 @@ def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
                    pressure_bar=settled["pressure_bar_mean"].to_numpy(dtype=float),
                    force_N=settled["force_N_mean"].to_numpy(dtype=float),
                    hold=np.arange(len(settled)),
-                   steps=steps[["step", "direction", "set_pressure_bar", "pressure_bar_mean",
-                                "force_N_mean", "hold_start_s", "end_s"]],
+                   steps=_columns(steps),
                    sha256={"steps.csv": file_sha256(path / "steps.csv")}, timed=False,
                    **_instrument(run))
 

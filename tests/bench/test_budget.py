@@ -341,3 +341,26 @@ def test_the_convolution_is_the_direct_sum_centred():
         got = _convolve_same(density, kernel / kernel.sum())
         np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12 * expected.max())
         density = got
+
+
+def test_a_declared_accuracy_is_one_rectangular_term_per_part():
+    """A table measured elsewhere carries the bounds its lab declares: each part its own
+    rectangular term (u = a / sqrt 3), the expanded U the quantile of their sum."""
+    from mkm.bench.budget import Declared, declared_budget
+
+    declared = {"force": Declared(0.5, 0.01, "0.5N+1%"), "pressure": Declared(0.01, 0.0, "")}
+    budget = declared_budget(declared, force_N=50.0, pressure_bar=2.0)
+    # 0.5 N and 1 % of 50 N: two equal bounds, a triangle of half-width 1 N
+    assert budget.force_u_N == pytest.approx(math.sqrt(2 / 3) * 0.5)
+    triangle = 2 * 0.5 * (1 - math.sqrt(1 - COVERAGE_PROBABILITY))
+    assert budget.force_U_N == pytest.approx(triangle, rel=2e-3)
+    # one bound alone: U is 95.45 % of the half-width
+    assert budget.pressure_U_bar == pytest.approx(COVERAGE_PROBABILITY * 0.01)
+    # a pressure without a declared bound has none: U 0, so E_n still has a denominator
+    alone = declared_budget({"force": Declared(0.5)}, 50.0, 2.0)
+    assert (alone.pressure_u_bar, alone.pressure_U_bar) == (0.0, 0.0)
+    # a plateau of a time series adds its noise over the hold (type A), as the bench does
+    held = declared_budget({"force": Declared(0.5)}, 50.0, 2.0, force_N_std=0.3, n=30,
+                           force_drift_N=0.0)
+    noise = residual_std(0.3, 30, 0.0) / math.sqrt(30)
+    assert held.force_u_N == pytest.approx(math.hypot(0.5 / math.sqrt(3), noise))

@@ -16,11 +16,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from mkm.bench.budget import COVERAGE_PROBABILITY
 from mkm.bench.storage import load_run
 from mkm.fem.friction import force_history
 from mkm.fem.ladder import make_model
 from mkm.registry import parse_specs
 from mkm.report import build_report
+from mkm.scoring import predict_steps, score_run
 
 LBF_N = 0.45359237 * 9.80665  # the international pound-force, by definition
 MUSCLE = ["--id", "lab-muscle-7", "--D0", "30", "--t0", "3", "--L0", "282"]
@@ -475,3 +477,62 @@ def test_a_given_zero_no_lab_could_mean_is_refused(argv, message, tmp_path, mkm_
     assert code == 2 and out == ""
     assert err == f"mkm import: error: {message}\n"
     assert not (tmp_path / "runs").exists()
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("force=0.5N+1%", {"force": (0.5, 0.01)}),
+    ("force=0.1 kgf,pressure=10kPa", {"force": (0.980665, 0.0), "pressure": (0.1, 0.0)}),
+    ("force=0,5 N+0,2%", {"force": (0.5, 0.002)}),  # decimal commas
+    ("pressure=0.02", {"pressure": (0.02, 0.0)}),  # a bare number in bar, as a header's
+])
+def test_a_declared_accuracy_is_read_in_the_toolkit_units(text, expected):
+    from mkm.bench.exchange import parse_accuracy
+
+    parsed = parse_accuracy(text)
+    assert {q: (pytest.approx(b.absolute), pytest.approx(b.fraction))
+            for q, b in parsed.items()} == expected
+
+
+@pytest.mark.parametrize("text, message", [
+    ("force=0.1%FS", "a share of full scale is a bound in N"),
+    ("force=0.02bar", "'bar' is not a unit of force"),
+    ("torque=1N", "expected ROLE=VALUE"),
+    ("eps=1%", "expected a bound of force or pressure"),
+    ("force=0N", "a bound of 0 claims exact values"),
+    ("force=150%", "expected less than 100 % and at most"),
+    ("force=lots", "expected a +- bound such as force=0.5N"),
+])
+def test_a_bad_accuracy_is_one_line_naming_it(text, message, tmp_path, mkm_cli):
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"P [bar]": PRESSURES, "F [N]": thickwall_N(PRESSURES, 0.122)}).to_csv(
+        path, index=False)
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0.122", "--accuracy",
+                              text, "--out", str(tmp_path / "runs")])
+    assert code == 2 and message in err and len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "runs").exists()
+
+
+def test_a_declared_accuracy_gives_the_steps_their_budget_and_e_n(tmp_path, mkm_cli):
+    """With the lab's bounds a table's steps carry U, so the report scores E_n against it."""
+    force = thickwall_N(PRESSURES, 0.122)
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"P [bar]": PRESSURES, "F [N]": force,
+                  "direction": ["up"] * 5 + ["down"] * 2}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122", "--accuracy",
+                          "force=0.5N+1%,pressure=0.01bar")
+    declared = run.meta.imported_from["declared_accuracy"]
+    assert declared["force"] == {"absolute": 0.5, "fraction_of_value": 0.01,
+                                 "given": "0.5N+1%"}
+    u = np.hypot(0.5, 0.01 * force) / np.sqrt(3)
+    np.testing.assert_allclose(run.steps["force_u_N"], u, rtol=1e-5)
+    assert (run.steps["force_U_N"] < 2 * u).all() and (run.steps["force_U_N"] > 1.6 * u).all()
+    np.testing.assert_allclose(run.steps["pressure_U_bar"], COVERAGE_PROBABILITY * 0.01, rtol=1e-5)
+    # E_n of a model 5.5 % off, without a band of its own: the residual over the step's U
+    # with the pressure's U times the model's slope
+    off = make_model("thickwall", theta0_deg=THETA0 + 0.5)
+    pred, _ = predict_steps(off, run.steps, run.meta.muscle, cache_dir=None)
+    scored = score_run(run.steps, pred, "off")
+    slope = np.polyfit(PRESSURES, pred.force_N, 1)[0]
+    U = np.hypot(run.steps["force_U_N"], slope * run.steps["pressure_U_bar"])
+    np.testing.assert_allclose(scored["E_n"], (force - pred.force_N) / U, rtol=1e-4)
+    assert scored["E_n"].max() > 5  # 5 % off at 2.5 bar: five times U

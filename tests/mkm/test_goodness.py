@@ -135,3 +135,59 @@ def test_a_misfit_is_called_at_the_stated_tails_only():
     alone = stats.chi2.isf(goodness.MISFIT_P / 4, nu)
     assert [b.chi2 for b in judged([alone * 1.01, nu, nu, nu]).misfit] == [alone * 1.01]
     assert not judged([alone * 0.99, 0.5 * nu, 0.5 * nu, 0.5 * nu]).misfit
+
+
+def declared_tables(tmp_path, truth: dict, accuracy: str | None, seed: int = 5):
+    """Two step tables (eps 0 and 12.2 %) of the thick-wall model at ``truth``, each force off by
+    a draw within the bounds ``accuracy`` declares (0.5 N and 1 % of the value, uniform each),
+    imported with ``accuracy``, and the thick-wall fit of the angle and the rubber to them."""
+    import pandas as pd
+
+    from mkm.bench.exchange import import_table, parse_accuracy
+    from mkm.fem.ladder import make_model
+
+    rng = np.random.default_rng(seed)
+    pressure = np.arange(0.25, 2.51, 0.25)
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for eps in (0.0, 0.122):
+        force = make_model("thickwall", **truth).predict(pressure, 30.0, 3.0, eps).force_N
+        force = force + rng.uniform(-0.5, 0.5, force.size) + 0.01 * force * rng.uniform(
+            -1, 1, force.size)
+        table = tmp_path / f"eps{eps}.csv"
+        pd.DataFrame({"P [bar]": pressure, "F [N]": force}).to_csv(table, index=False)
+        (run,) = import_table(table, tmp_path / "runs", {"id": "lab-7", "D0_mm": 30.0,
+                                                        "t0_mm": 3.0, "L0_mm": 282.0,
+                                                        "eps": eps},
+                              accuracy=parse_accuracy(accuracy))
+        paths.append(run.path)
+    runs = load_runs(paths)
+    source = ModelStatic("thickwall", 282.0, cache_dir=None)
+    names = ("theta0_deg", "rubber_scale")
+    return runs, fitting.fit(source, runs, names, fitting.nominal_values(33.0))
+
+
+def test_tables_with_a_declared_accuracy_are_judged_against_it(tmp_path):
+    """A table has one value per step: no noise of its own to judge a fit by. Its lab's declared
+    bounds stand for it: tables the fitted model made fit within them (20 steps, two parameters
+    fitted: chi2/nu about 0.9, sd 0.3); tables of a muscle with a 0.5 mm gap between tube and
+    braid, which the fitted model has not, do not, and the intervals widen."""
+    runs, fit = declared_tables(tmp_path / "in", {"theta0_deg": 32.0}, "force=0.5N+1%")
+    good = goodness.assess(runs, fit)
+    assert good.judged and len(good.branches) == 2 and good.nu == 20
+    assert not good.misfit and 0.3 < good.reduced < 1.8
+    # the noise of each step is its declared u (no pressure bound: the pressures exact)
+    u = np.hypot(0.5, 0.01 * runs[1].steps["force_N_mean"]) / math.sqrt(3)
+    assert good.branches[1].rms_noise_N == pytest.approx(float(np.sqrt(np.mean(u**2))),
+                                                         rel=1e-4)
+    runs, fit = declared_tables(tmp_path / "gap", {"theta0_deg": 32.0, "gap_mm": 0.5},
+                                "force=0.5N+1%")
+    good = goodness.assess(runs, fit)
+    assert good.misfit and good.birge_ratio > 2
+    assert "misfit: run " in good.line()
+
+
+def test_tables_without_a_declared_accuracy_are_not_judged_and_say_how_to_be(tmp_path):
+    runs, fit = declared_tables(tmp_path, {"theta0_deg": 32.0}, None)
+    good = goodness.assess(runs, fit)
+    assert not good.judged and "mkm import --accuracy force=" in good.why_not
