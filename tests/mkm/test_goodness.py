@@ -137,7 +137,7 @@ def test_a_misfit_is_called_at_the_stated_tails_only():
     assert not judged([alone * 0.99, 0.5 * nu, 0.5 * nu, 0.5 * nu]).misfit
 
 
-def declared_tables(tmp_path, truth: dict, accuracy: str | None, seed: int = 5):
+def declared_tables(tmp_path, truth: dict, accuracy: str | None | tuple, seed: int = 5):
     """Two step tables (eps 0 and 12.2 %) of the thick-wall model at ``truth``, each force off by
     a draw within the bounds ``accuracy`` declares (0.5 N and 1 % of the value, uniform each),
     imported with ``accuracy``, and the thick-wall fit of the angle and the rubber to them."""
@@ -150,7 +150,8 @@ def declared_tables(tmp_path, truth: dict, accuracy: str | None, seed: int = 5):
     pressure = np.arange(0.25, 2.51, 0.25)
     tmp_path.mkdir(parents=True, exist_ok=True)
     paths = []
-    for eps in (0.0, 0.122):
+    given = accuracy if isinstance(accuracy, tuple) else (accuracy, accuracy)
+    for eps, accuracy in zip((0.0, 0.122), given, strict=True):
         force = make_model("thickwall", **truth).predict(pressure, 30.0, 3.0, eps).force_N
         force = force + rng.uniform(-0.5, 0.5, force.size) + 0.01 * force * rng.uniform(
             -1, 1, force.size)
@@ -191,3 +192,11 @@ def test_tables_without_a_declared_accuracy_are_not_judged_and_say_how_to_be(tmp
     runs, fit = declared_tables(tmp_path, {"theta0_deg": 32.0}, None)
     good = goodness.assess(runs, fit)
     assert not good.judged and "mkm import --accuracy force=" in good.why_not
+
+
+def test_a_table_without_a_declared_accuracy_is_left_out_of_the_judgement_and_named(tmp_path):
+    runs, fit = declared_tables(tmp_path, {"theta0_deg": 32.0}, ("force=0.5N+1%", None))
+    good = goodness.assess(runs, fit)
+    assert good.judged and [b.run for b in good.branches] == [runs[0].name]
+    assert good.left_out == [runs[1].name]
+    assert good.record()["runs_not_judged"] == [runs[1].name]
