@@ -27,6 +27,7 @@ from.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import time
@@ -116,6 +117,14 @@ class _Run:
     @property
     def muscle(self) -> Muscle:
         return self.meta.muscle
+
+    @property
+    def predicted(self) -> Muscle:
+        """The muscle the models predict: the run's, with the wall and diameter the
+        calibration identified where it identified them on this muscle (its braid angle and
+        rubber were fitted together with them: with the declared wall they miss its own runs)."""
+        fitted = _identified_geometry(self.calibration, self.muscle)
+        return dataclasses.replace(self.muscle, **fitted) if fitted else self.muscle
 
     @property
     def eps_pct(self) -> float:
@@ -256,7 +265,7 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
 
 def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     """Predict and score every model on the run's kept steps; record provenance."""
-    meta, muscle = r.meta, r.muscle
+    meta, muscle = r.meta, r.predicted
     run_key = f"run-{r.k}"
     prov[run_key] = {"path": str(r.run.path), **{key: meta.get(key) for key in
                                                   ("provenance", "command", "config_source",
@@ -303,7 +312,7 @@ def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):
     a second: once will do)."""
     if (spec, built_for) not in models:
         training = _announce_training(spec, bar)
-        models[spec, built_for] = spec.build(r.calibration, r.muscle)
+        models[spec, built_for] = spec.build(r.calibration, r.predicted)
         if training:  # its own estimate was given: the tasks' time left leaves it out
             bar.unpause()
     return models[spec, built_for]
@@ -312,7 +321,7 @@ def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):
 def _with_band(pred, model, spec: Spec, r: _Run, cache_dir):
     """``pred`` with the band of the muscle's tolerances (``force_u_N``, :mod:`mkm.uncertainty`;
     the run's recorded tolerances, else the defaults), FE sweeps through the cache."""
-    muscle = r.muscle
+    muscle = r.predicted
     recorded = (r.meta.get("calibration") or {}).get("muscle_tolerances") or {}
     try:
         tolerances = Tolerances(**{k: v for k, v in recorded.items()
@@ -574,7 +583,11 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
     hardware = dict(meta.get("hardware") or {})
     sim = hardware.pop("sim", None) if hardware.get("simulated") else None
     source = "From run.json. " + provenance_links(r.keys[:1])
-    tables = [mapping_table(muscle.record() | {"eps [%]": r.eps_pct}, "Muscle", source),
+    identified = {f"{k} identified (the models')": v for k, v in
+                  _identified_geometry(r.calibration, muscle).items()}
+    tables = [mapping_table(muscle.record() | {"eps [%]": r.eps_pct} | identified, "Muscle",
+                            source + (" The models predict with the wall or diameter the "
+                                      "calibration identified." if identified else "")),
               mapping_table(hardware, "Hardware", source),
               mapping_table(meta.get("calibration") or {}, "Calibration", source),
               mapping_table(meta.get("tare") or {}, "Tare at 0 bar", source)]
@@ -779,7 +792,7 @@ def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
     if tolerance not in r.auto_choices:
         choice = None
         if not r.run.steps.empty and MODEL_ERRORS_FILE.exists():
-            m = r.muscle
+            m = r.predicted
             auto = AutoModel(tolerance=tolerance,
                              build=partial(build_spec, calibration=r.calibration),
                              **m.model_parameters())
@@ -859,6 +872,22 @@ def _identified_runs(calibration: Calibration | None) -> list[dict]:
     found = identified_entry(calibration) if calibration is not None else None
     runs = found[1]["identified"].get("runs") if found else None
     return [r for r in runs if isinstance(r, dict)] if isinstance(runs, list) else []
+
+
+def _identified_geometry(calibration: Calibration | None, muscle: Muscle) -> dict[str, float]:
+    """The wall and diameter [mm] ``mkm identify --params t0,D0`` fitted, when ``muscle`` (as
+    run.json declares it) is the one it fitted them on; empty otherwise."""
+    from mkm.identify.band import identified_entry
+
+    found = identified_entry(calibration) if calibration is not None else None
+    declared = [r.get("muscle") or {} for r in _identified_runs(calibration)]
+    if not found or not any(m.get("id") == muscle.id and all(
+            math.isclose(float(m.get(k, math.nan)), getattr(muscle, k), rel_tol=1e-9)
+            for k in ("D0_mm", "t0_mm")) for m in declared):
+        return {}
+    return {p["parameter"]: float(p["value"]) for p in found[1]["identified"].get(
+        "parameters", []) if p.get("parameter") in ("D0_mm", "t0_mm")
+        and p.get("status") == "fitted"}
 
 
 def _auto_paragraph(r: _Run, tolerance: float) -> str:

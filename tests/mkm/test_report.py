@@ -507,3 +507,42 @@ def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument()
         r'mkm identify "C:\Users\Lab PC\mkm-out\runs\R"'
     path = "/tmp/lab user é/Prüfstand (2)/runs/R"
     assert shlex.split(identify_command(path)) == ["mkm", "identify", path]
+
+
+def test_a_calibration_that_identified_the_wall_predicts_its_muscle_with_it(tmp_path):
+    """identify --params t0 fits the wall with the angle and the rubber (correlated 0.99): the
+    report predicts the identified muscle's runs with that wall, not the declared one, so the
+    runs the calibration was fitted on score as identify scored them."""
+    from mkm.bench.exchange import import_table, parse_accuracy
+    from mkm.fem.calibration import Calibration
+    from mkm.identify.procedure import identify
+
+    pressure = np.arange(0.25, 2.51, 0.25)
+    paths = []
+    for eps in (0.0, 0.122):
+        table = tmp_path / f"eps{eps}.csv"
+        force = make_model("thickwall", theta0_deg=32.0).predict(pressure, 30.0, 3.0,
+                                                                   eps).force_N
+        pd.DataFrame({"P [bar]": pressure, "F [N]": force}).to_csv(table, index=False)
+        # the lab declares a wall 0.5 mm too thin
+        (run,) = import_table(table, tmp_path / "runs", {
+            "id": "lab-7", "D0_mm": 30.0, "t0_mm": 2.5, "L0_mm": 282.0, "eps": eps},
+            accuracy=parse_accuracy("force=0.5N+1%"))
+        paths.append(run.path)
+    result = identify(paths, params="theta0,rubber,t0", model="thickwall", search="model",
+                      cache_dir=None)
+    assert result.fit.values["t0_mm"] == pytest.approx(3.0, abs=0.05)
+    result.write(tmp_path / "id")
+    calibration = Calibration.load(tmp_path / "id" / "calibration.json")
+    identified = {c["run"]: c["identified_rising_pct"] for c in
+                  result.checks_table().to_dict(orient="records")}
+    build_report(paths, parse_models("thickwall"), out_dir=tmp_path / "report", cache_dir=None,
+                 tolerance=None, surrogate_section=False, calibration=calibration)
+    summary = pd.read_csv(tmp_path / "report" / "summary.csv").set_index("run")
+    for path in paths:
+        assert summary.loc[path.name, "max_abs_err_pct"] == pytest.approx(
+            identified[path.name], abs=0.01)
+        assert identified[path.name] < 0.5
+    html = (tmp_path / "report" / "report.html").read_text(encoding="utf-8")
+    shown = re.search(r"t0_mm identified \(the models(?:&#x27;|')\)</td>\s*<td>([\d.]+)<", html)
+    assert float(shown[1]) == pytest.approx(result.fit.values["t0_mm"], rel=1e-5)
