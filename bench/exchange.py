@@ -13,8 +13,8 @@
   reading. ``mkm report``, ``mkm fem calibrate --reference``, ``mkm identify`` and
   ``mkm export`` read these runs like any other.
 - :func:`export_run`: a run folder as one Excel workbook (sheets ``steps``, ``samples``,
-  ``metadata``) or as three CSV files, every text cell spreadsheet-safe. Its ``steps`` sheet
-  imports back to the same steps.
+  ``metadata``) or as three CSV files, every text cell spreadsheet-safe. The workbook imports
+  back to the run it was: steps, samples, calibration and tare.
 """
 
 from __future__ import annotations
@@ -163,7 +163,8 @@ class ImportedRun:
 
     def line(self) -> str:
         made = {"steps": "one table row each", "staircase": "the plateaus of a staircase",
-                "ramp": "quasi-static bins of a ramp"}[self.shape]
+                "ramp": "quasi-static bins of a ramp",
+                "export": "the exported run's own, with its samples"}[self.shape]
         return f"{self.state}: {self.n_steps} step(s), {made}" + "".join(
             f"; {n}" for n in self.notes)
 
@@ -208,7 +209,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     path = Path(path)
     muscle = dict(muscle)
     tare, vented = parse_zero(tare, "--tare", "N"), parse_zero(vented, "--vented", "bar")
-    if sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path)):  # mkm export's own
+    exported = sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path))
+    if exported:  # mkm export's own
         known = key_values(path, "metadata")
         for key in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
             if muscle.get(key) is None and f"muscle.{key}" in known:
@@ -248,6 +250,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     sha = file_sha256(path)
     built = [_build(path, sha, g, m, tare, vented, accuracy or {})
              for g, m in zip(groups, muscles, strict=True)]
+    if exported and len(built) == 1 and not accuracy:
+        built = [_restored(path, *built[0])]
     from mkm.bench.run import check_out_root
 
     check_out_root(out_root)
@@ -262,6 +266,67 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         writer.close()
         out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
     return out
+
+
+def _restored(path: Path, meta, steps, samples, notes, shape):
+    """mkm export's workbook as the run it was: its steps as recorded (set pressures, holds,
+    uncertainty budgets), its samples, its calibration and tare, each sheet checked as a run
+    folder's files are (:func:`mkm.bench.storage.checked_rows`)."""
+    from mkm.bench.storage import SAMPLE_COLUMNS, STEP_COLUMNS, checked_rows
+
+    sheets = {name: pd.read_excel(path, sheet_name=name, dtype={
+        c: "string" for c in ("direction", "phase", "flags")}) for name in ("steps", "samples")}
+    recorded = sheets["steps"]
+    if not set(STEP_COLUMNS) <= set(recorded.columns) or len(recorded) != len(steps):
+        return meta, steps, samples, notes, shape  # edited since: read as any table
+    where = f"{path.name}, sheet"
+    steps = [StepRecord(*row) for row in checked_rows(
+        recorded[list(STEP_COLUMNS)].copy(), f"{where} 'steps'").astype(object).itertuples(
+        index=False)]
+    rows = sheets["samples"]
+    if set(SAMPLE_COLUMNS) <= set(rows.columns) and len(rows):
+        samples = [Sample(*row) for row in checked_rows(
+            rows[list(SAMPLE_COLUMNS)].copy(), f"{where} 'samples'").astype(object).itertuples(
+            index=False)]
+        notes.insert(0, f"{len(samples)} samples")
+        shape = "export"
+    known = key_values(path, "metadata")
+    for part in ("calibration", "tare"):
+        restored = _unflattened(known, part)
+        if restored:
+            setattr(meta, part, restored)
+    meta.imported_from = {**meta.imported_from, "shape": shape,
+                          "restored": "steps, samples, calibration and tare of mkm export"}
+    meta.counters["samples"] = len(samples)
+    return meta, steps, samples, notes, shape
+
+
+def _unflattened(known: dict, part: str) -> dict:
+    """The ``part.`` keys of mkm export's metadata sheet (:func:`_flatten`) as run.json held
+    them: nested, each cell's number, bool, list or text back."""
+    out: dict = {}
+    for key, cell in known.items():
+        if not key.startswith(f"{part}."):
+            continue
+        node, *path = key.split(".")[1:][::-1]
+        target = out
+        for name in reversed(path):
+            target = target.setdefault(name, {})
+        target[node] = _cell_value(cell)
+    return out
+
+
+def _cell_value(cell):
+    if cell is None or cell == "":
+        return None
+    if isinstance(cell, str):
+        if cell in ("True", "False"):
+            return cell == "True"
+        try:
+            return json.loads(cell)
+        except ValueError:
+            return cell
+    return cell
 
 
 def _folder_label(muscle, muscles) -> str:

@@ -639,7 +639,7 @@ def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
                 except (pd.errors.ParserError, ValueError) as exc:
                     first = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
                     raise ValueError(f"{path} is corrupt: {first}") from None
-                yield _typed(df, path).reindex(columns=list(columns))
+                yield checked_rows(df, path).reindex(columns=list(columns))
         finally:
             stream.close()
             raw.close()
@@ -650,7 +650,10 @@ def _read_csv(path: Path, columns: tuple[str, ...], problems: list[str],
     return pd.concat(parts, ignore_index=True) if parts else pd.DataFrame(columns=list(columns))
 
 
-def _typed(df: pd.DataFrame, path: Path) -> pd.DataFrame:
+def checked_rows(df: pd.DataFrame, path: Path | str) -> pd.DataFrame:
+    """``df`` (rows of a run folder's CSV, or of mkm export's sheet) typed, its text columns
+    within their fixed vocabulary and its numbers within bounds; ``ValueError`` naming
+    ``path`` and the first bad cell otherwise."""
     if "flags" in df:
         df["flags"] = df["flags"].fillna("")
     for column in ("settled", "ok"):

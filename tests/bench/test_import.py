@@ -322,6 +322,41 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
         assert again.steps[column].tolist() == run.steps[column].tolist()
 
 
+def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, mkm_cli):
+    """A colleague's exported bench run imports back with its own steps (set pressures, holds,
+    uncertainty budgets), samples, calibration and tare, so the report scores E_n and identify
+    sees timed holds as they were."""
+    from mkm.bench.run import acquire
+
+    run = load_run(acquire(config, out_root=tmp_path / "bench",
+                           notify=lambda message: None).path)
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), err = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert f"the exported run's own, with its samples; {len(run.samples)} samples" in err
+    pd.testing.assert_frame_equal(again.steps, run.steps, rtol=1e-9, check_dtype=False)
+    pd.testing.assert_frame_equal(again.samples, run.samples, rtol=1e-9, check_dtype=False)
+    assert (again.meta.calibration, again.meta.tare) == (run.meta.calibration, run.meta.tare)
+    assert again.steps["force_U_N"].notna().all()
+
+
+def test_an_exported_workbook_with_a_formula_in_its_samples_is_refused(config, tmp_path,
+                                                                        mkm_cli):
+    from mkm.bench.run import acquire
+
+    run = acquire(config, out_root=tmp_path / "bench", notify=lambda message: None).path
+    mkm_cli(["export", str(run), "--out", str(tmp_path / "run.xlsx")])
+    book = pd.read_excel(tmp_path / "run.xlsx", sheet_name=None)
+    book["samples"].loc[3, "phase"] = "=HYPERLINK(\"x\")"
+    with pd.ExcelWriter(tmp_path / "edited.xlsx") as writer:
+        for name, frame in book.items():
+            frame.to_excel(writer, sheet_name=name, index=False)
+    code, out, err = mkm_cli(["import", str(tmp_path / "edited.xlsx"), "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and "edited.xlsx, sheet 'samples' is corrupt: phase=" in err
+    assert not (tmp_path / "runs").exists()
+
+
 def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
     # a bench run's vented step reads a little force after its tare: the export keeps it, and
     # its import must not subtract it a second time
