@@ -178,7 +178,8 @@ class Identification:
                 add(name, float(self.runs[0].muscle[name]), status="assumed",
                     source=f"the runs' declared muscle (run.json), +-{tolerance:g} mm its "
                            "declared tolerance, drawn into every interval")
-        where = ("the load cell's declared tolerance (run.json calibration)"
+        where = ("the load cell's declared tolerance (run.json calibration, or mkm import "
+                 "--accuracy)"
                  if all(r.instrument_declared for r in self.runs) else
                  "the configuration's default load-cell tolerance (a run declares none)")
         add("loadcell_sensitivity_tolerance", self.sensitivity_tolerance, status="assumed",

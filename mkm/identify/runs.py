@@ -210,15 +210,40 @@ def _instrument(run) -> dict:
     recorded = {s: run.meta.calibration.get(s) or {} for s in ("loadcell", "regulator")}
     regulator = from_record(Regulator, recorded["regulator"])
     offset, gain = regulator.reading_bounds()
-    return {"monitor_offset_bound_bar": offset, "monitor_gain_bound": gain,
-            "sensitivity_tolerance": recorded["loadcell"].get(
-                "sensitivity_tolerance_fraction", LoadCell.sensitivity_tolerance_fraction),
-            "declared": bool((run.meta.imported_from or {}).get("declared_accuracy")),
-            "instrument_declared": ("monitor_accuracy_bar" in recorded["regulator"]
-                                    and "max_pressure_bar" in recorded["regulator"]
-                                    and "sensitivity_tolerance_fraction" in recorded["loadcell"]),
-            "geometry_tolerance_mm": _tube_tolerances(getattr(run.meta.muscle, "tolerances",
-                                                              None))}
+    out = {"monitor_offset_bound_bar": offset, "monitor_gain_bound": gain,
+           "sensitivity_tolerance": recorded["loadcell"].get(
+               "sensitivity_tolerance_fraction", LoadCell.sensitivity_tolerance_fraction),
+           "instrument_declared": ("monitor_accuracy_bar" in recorded["regulator"]
+                                   and "max_pressure_bar" in recorded["regulator"]
+                                   and "sensitivity_tolerance_fraction" in recorded["loadcell"]),
+           "geometry_tolerance_mm": _tube_tolerances(getattr(run.meta.muscle, "tolerances",
+                                                             None))}
+    return {**out, **_declared_instrument(run)}
+
+
+def _declared_instrument(run) -> dict:
+    """An imported run's instrument from the bounds its lab declared (``mkm import
+    --accuracy``): the force's share of the value as the load cell's sensitivity tolerance, the
+    pressure's bound as the monitor's offset (its share of the value at the run's top pressure
+    where it has no absolute part) and its share as the monitor's gain. A data sheet does not
+    say which part of a bound is shared by every value and which is each value's own: the
+    intervals take both readings (these drawn as shared, the fit weighed by them as each
+    value's own). Empty where none was declared."""
+    from mkm.bench.budget import Declared
+
+    declared = (run.meta.imported_from or {}).get("declared_accuracy") or {}
+    if not declared:
+        return {}
+    out: dict = {"declared": True}
+    if "force" in declared:
+        out["sensitivity_tolerance"] = Declared.from_record(declared["force"]).fraction
+        out["instrument_declared"] = True
+    if "pressure" in declared:
+        bound = Declared.from_record(declared["pressure"])
+        top = float(run.steps["pressure_bar_mean"].max()) if len(run.steps) else 0.0
+        out["monitor_offset_bound_bar"] = bound.absolute or bound.fraction * top
+        out["monitor_gain_bound"] = bound.fraction
+    return out
 
 
 def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
