@@ -303,6 +303,11 @@ BENCHMARKS = {
     "identify_coverage.json": "benchmarks/bench_identify_coverage.py --draws 27 --out {out}",
     "identify_coverage_infamily.json": "benchmarks/bench_identify_coverage.py --draws 30 "
                                        "--seed 7 --departures in-family --out {out}",
+    "identify_coverage_tables.json": "benchmarks/bench_identify_coverage.py --draws 24 "
+                                     "--seed 41 --departures 'in-family,monitor offset,monitor "
+                                     "gain,loadcell gain,rubber C01=0,rubber C01=2C10,true t0,"
+                                     "true D0' --tables force=1N+0.1%,pressure=0.04bar "
+                                     "--out {out}",
     "budget_coverage.json": "benchmarks/bench_uncertainty.py --runs 100 --eps 0 0.122 "
                             "--no-bands --out {out}",
     "identify_t0.json": "benchmarks/bench_identify_t0.py --draws 6 --seed 0 --out {out}",

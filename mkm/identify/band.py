@@ -83,7 +83,8 @@ def check_heldout(result, run_dir, out_dir) -> dict:
     pressure (:func:`prediction_band`, what ``mkm fem solve --calibration`` prints).
 
     The band is the true force's; a measured step mean carries its own noise too (the hold's
-    scatter over root n and the run's tare, as the goodness of fit takes it), so a step is
+    scatter over root n and the run's tare, as the goodness of fit takes it; an imported
+    table's the noise its lab declared), so a step is
     inside when ``|measured - predicted| <= sqrt(band95^2 + (1.96 noise)^2)`` (``inside``),
     and, stricter, within the band alone (``in_band``): a slack step (no force predicted, band
     0) is never in the band alone. A run is inside when every step is. Returns the counts, the
@@ -109,8 +110,10 @@ def check_heldout(result, run_dir, out_dir) -> dict:
         raise RuntimeError(f"{files['calibration']}: no prediction band for {result.model}")
     raw = load_run(run_dir).steps
     raw = raw[raw["settled"].astype(bool)]
-    noise = np.hypot(raw["force_N_std"].to_numpy(dtype=float)
-                     / np.sqrt(raw["n"].to_numpy(dtype=float)), held.tare_se_N)
+    declared = held.declared_noise_N()  # a table's: its single values show none
+    noise = declared if declared is not None else np.hypot(
+        raw["force_N_std"].to_numpy(dtype=float) / np.sqrt(raw["n"].to_numpy(dtype=float)),
+        held.tare_se_N)
     error = np.abs(measured - predicted)
     reach = np.hypot(band, Z95 * noise)
     inside, in_band = error <= reach, error <= band

@@ -35,7 +35,8 @@ SENSITIVITY_TOLERANCE = 0.001
 def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
               sensitivity_tolerance: float = SENSITIVITY_TOLERANCE,
               prior_sd: dict[str, float] | None = None,
-              uniform_terms: dict[str, tuple[np.ndarray, float]] | None = None) -> dict:
+              uniform_terms: dict[str, tuple[np.ndarray, float]] | None = None,
+              step_u_N: np.ndarray | None = None) -> dict:
     """Replicates of the fitted parameters (internal names), their intervals and correlation.
 
     Returns ``{"draws": array (replicates, p), "interval": {name: (low, high)}, "correlation":
@@ -48,7 +49,9 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     the load cell's (a fraction, uniform); ``prior_sd``: a normal prior's standard deviation per
     parameter, weighed against the residuals' variance; ``uniform_terms``: an input every run
     shares and the fit takes as given (the tube's declared wall and diameter), as the residuals'
-    sensitivity to it (one value per residual) and its +- tolerance (uniform).
+    sensitivity to it (one value per residual) and its +- tolerance (uniform); ``step_u_N``:
+    a standard uncertainty of each step's measured value that its residuals cannot show (an
+    imported table's declared accuracy, 0 elsewhere), drawn normal and independent per step.
     """
     # in the weighted fit's space (every weight 1 for bench runs): the Gauss-Newton step of a
     # replicate and the measured force's and zero's errors, each times the residual's weight
@@ -85,6 +88,11 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     A = np.einsum("bc,cij->bij", counts, JtJ)
     g = (np.einsum("bc,ci->bi", counts, Jtr) - s[:, None] * np.einsum("bc,ci->bi", counts, JtF)
          - np.einsum("bc,ci->bi", counts * z[:, result.run_of_cluster], Jt1))
+    if step_u_N is not None:
+        # each step's value off by e moves its residuals by -e: once per step, as measured
+        # once (a step resampled twice would count its one error twice)
+        e = rng.standard_normal((replicates, n_clusters)) * np.asarray(step_u_N, dtype=float)
+        g -= np.einsum("bc,ci->bi", e, Jt1)
     for column, half in (uniform_terms or {}).values():  # r moves by u column
         Jtc = np.zeros((n_clusters, use.size))
         np.add.at(Jtc, result.cluster, J * (w * np.asarray(column, dtype=float))[:, None])

@@ -350,13 +350,18 @@ def _select(source, runs, names, start, nominal):
 
 def instrument_terms(runs) -> dict:
     """What the bootstrap draws of the instrument (:func:`mkm.identify.intervals.bootstrap`):
-    the load cell's sensitivity tolerance (one cell for every run: the largest declared), and
-    the monitor offset's prior, uniform within the smallest declared offset bound
+    the load cell's sensitivity tolerance (one cell for every run: the largest declared), the
+    monitor offset's prior, uniform within the smallest declared offset bound
     (:meth:`mkm.bench.config.Regulator.reading_bounds`; its standard deviation, the bound over
-    root 3)."""
+    root 3), and each imported step's declared noise
+    (:meth:`~mkm.identify.runs.RunData.declared_noise_N`: its residual cannot show it)."""
     bound = min(r.monitor_offset_bound_bar for r in runs)
+    declared = [r.declared_noise_N() for r in runs]
     return {"sensitivity_tolerance": max(r.sensitivity_tolerance for r in runs),
-            "prior_sd": {"pressure_offset_bar": bound / np.sqrt(3.0)}}
+            "prior_sd": {"pressure_offset_bar": bound / np.sqrt(3.0)},
+            "step_u_N": (np.concatenate([np.zeros(len(r.steps)) if d is None else d
+                                         for r, d in zip(runs, declared, strict=True)])
+                         if any(d is not None for d in declared) else None)}
 
 
 def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:

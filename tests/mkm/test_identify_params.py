@@ -52,6 +52,25 @@ def test_the_load_cell_tolerance_is_inside_every_interval():
     assert (a - low) / (a * tol) == pytest.approx(0.95, abs=0.01)
 
 
+def test_a_declared_step_noise_the_residuals_cannot_show_is_inside_every_interval():
+    # F = a x fitted exactly (a table's single values show no noise), each value declared
+    # uncertain by u: a moves by sum(x e) / sum(x^2), sd u / sqrt(sum x^2); the resampling of
+    # 20 steps varies sum(x^2) by a quarter, which widens the interval by some 10 %
+    x = np.linspace(1.0, 10.0, 20)
+    a, u = 2.0, 0.5
+    fit = one_parameter_fit(x, np.zeros_like(x), a * x, value=a)
+    low, high = bootstrap(fit, sensitivity_tolerance=0.0,
+                          step_u_N=np.full(x.size, u))["interval"]["theta0_deg"]
+    half = Z95 * u / np.sqrt(np.sum(x**2))
+    assert 1.0 < (high - a) / half < 1.15 and 1.0 < (a - low) / half < 1.15
+    # weighed by the inverse of each value's noise (a fit of tables), the same in the
+    # weighted space
+    weighted = one_parameter_fit(x, np.zeros_like(x), a * x, value=a)
+    weighted.weight = np.full(x.size, 3.0)
+    assert bootstrap(weighted, sensitivity_tolerance=0.0, step_u_N=np.full(x.size, u))[
+        "interval"]["theta0_deg"] == pytest.approx((low, high), rel=1e-12)
+
+
 def test_a_nuisance_the_runs_barely_see_keeps_its_prior():
     # the monitor's offset nearly invisible (a tiny column): its interval is its prior's,
     # +-1.96 sd, not the bound nor a point
