@@ -571,3 +571,16 @@ def test_a_declared_accuracy_gives_the_steps_their_budget_and_e_n(tmp_path, mkm_
     U = np.hypot(run.steps["force_U_N"], slope * run.steps["pressure_U_bar"])
     np.testing.assert_allclose(scored["E_n"], (force - pred.force_N) / U, rtol=1e-4)
     assert scored["E_n"].max() > 5  # 5 % off at 2.5 bar: five times U
+
+
+def test_without_a_declared_accuracy_the_report_says_how_to_score_e_n(tmp_path, mkm_cli):
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"P [bar]": PRESSURES, "F [N]": thickwall_N(PRESSURES, 0.122)}).to_csv(
+        path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122")
+    assert run.steps["force_U_N"].isna().all()
+    _scores(tmp_path, [run])
+    text = (tmp_path / "report" / "report.html").read_text(encoding="utf-8").replace("&#x27;", "'")
+    assert ("no E_n: the table was imported without its instruments' accuracy (mkm import "
+            "--accuracy force=...,pressure=... gives its steps one)") in text
+    assert "import its table again with the instruments' accuracy" in text

@@ -70,3 +70,28 @@ def test_martens_boblan_import_identify_report(tmp_path, mkm_cli):
     last = Path(held_out[-1]).name
     assert math.isnan(identified.loc[last, "max_abs_err_pct"])
     assert identified.loc[last, "rmse_N"] < nominal[last]["rmse_N"]
+
+
+def test_a_declared_accuracy_judges_the_fit_to_the_published_dmsp_10(tmp_path, mkm_cli):
+    """The DMSP-10-250's map with an assumed accuracy (0.5 N + 1 %, 0.01 bar: a typical cell
+    and sensor; the transcription gives none): the thick-wall fit of two held lengths misses
+    them by a little more than that (measured chi2/nu 2.4: the form has no clamped ends),
+    with the rest length among them by a hundred times more (115: the threshold at rest length
+    that no rung of the ladder has), and both say so."""
+    muscle = ["--id", "dmsp-10", "--D0", "10", "--t0", "1.5", "--muscle", "Festo DMSP-10-250"]
+    code, out, err = mkm_cli(["import", str(TABLE), *muscle, "--accuracy",
+                              "force=0.5N+1%,pressure=0.01bar", "--out", str(tmp_path / "runs")])
+    assert code == 0, err
+    paths = dict(zip([0.0, 0.064, 0.124, 0.184, 0.208], out.split(), strict=True))
+    fits = {}
+    for name, eps in (("two", (0.064, 0.184)), ("with rest", (0.0, 0.064, 0.184))):
+        code, out, err = mkm_cli(["identify", *(paths[e] for e in eps), "--model", "thickwall",
+                                  "--search", "model", "--out", str(tmp_path / name),
+                                  "--no-progress"])
+        assert code == 0, err
+        assert "against their noise (the declared accuracy of the imported tables)" in out
+        record = json.loads((tmp_path / name / "identification.json").read_text(
+            encoding="utf-8"))["goodness_of_fit"]
+        fits[name] = record["chi2_per_nu"]
+        assert record["judged"] and record["misfit_line"]
+    assert 1.5 < fits["two"] < 4 and fits["with rest"] > 60
