@@ -11,7 +11,8 @@ after commanding the vent:
   working regulator gives (a live-zero output at 0 V: unpowered, wire off); a pressure more
   than the tolerance away from the command for longer than ``safety.pressure_follow_s`` (a
   regulator that does not follow);
-- over-pressure, on the measured pressure whatever the tolerance: above
+- over-pressure, on the measured pressure (the monitor's, or the manometer reading the operator
+  typed with a manual regulator) whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
   of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
@@ -141,7 +142,9 @@ class Acquisition:
             flags.append("clipped")
             self.recorder.meta.counters["clipped_samples"] += 1
         t_s = index / self.rate_hz
-        over = self._overpressure(t_s, pressure) if self.electronic else None
+        # the measured pressure is the monitor's, or the operator's manometer reading: a hand
+        # regulator turned past the limit is as over-pressured as an electronic one
+        over = self._overpressure(t_s, pressure)
         trip = over or self._interlock(t_s, force, pressure, cell_V, monitor_V, flags)
         if trip:
             flags.append("interlock")

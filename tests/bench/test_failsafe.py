@@ -118,6 +118,30 @@ def test_a_wide_tolerance_cannot_permit_an_over_pressure(config, tmp_path):
     assert run.samples["pressure_bar"].max() < 2.75 + 0.2
 
 
+def test_a_hand_regulator_turned_past_the_limit_fails_the_run(config, tmp_path):
+    # a manual regulator: the measured pressure is the manometer reading the operator types;
+    # 2.5 bar typed at the 1.0 bar step (max_pressure_bar 2.0) is an over-pressure, not a step
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    class Overshooting:
+        def set_pressure(self, pressure_bar):
+            return 2.5 * pressure_bar
+
+        def vent(self):
+            return 0.0
+
+    c = config.replace(regulator={"kind": "manual", "max_pressure_bar": 2.0})
+    result = BenchRun(c, SimBackend(c), tmp_path, operator=Overshooting(), handle_signals=False,
+                      **QUIET).execute()
+    run = load_run(result.path)
+    assert result.status == "failed" and result.exit_code == 1
+    assert result.reason.startswith("over-pressure interlock: 2.500 bar measured at ")
+    tripped = run.samples[run.samples["flags"] == "interlock"]
+    assert list(tripped["pressure_bar"]) == [2.5] and list(tripped["step"]) == [1]
+    assert run.steps["set_pressure_bar"].tolist() == [0.5]  # the 1.0 bar step was not recorded
+
+
 def test_a_normal_run_to_the_limit_is_not_an_over_pressure(config, tmp_path):
     c = config.replace(sequence={"pressures_bar": (2.5,)})
     result = acquire(c, out_root=tmp_path, **QUIET)
