@@ -25,6 +25,7 @@ from __future__ import annotations
 import dataclasses
 import datetime
 import enum
+import errno
 import io
 import json
 import math
@@ -511,6 +512,16 @@ class RunWriter:
         f.write("".join(",".join(_cell(v, c) for v, c in zip(row, columns, strict=True)) + "\n"
                         for row in rows))
         f.flush()
+        self._check_linked(f, name)
+
+    def _check_linked(self, f, name: str) -> None:
+        """``FileNotFoundError`` when ``f`` was deleted under the run (its folder removed): on
+        POSIX the writes of an open file then go on into a file no one can read, so the run
+        would record nothing while it pressurises the muscle."""
+        if os.fstat(f.fileno()).st_nlink == 0:
+            raise FileNotFoundError(errno.ENOENT, f"{name}.csv was deleted while recording (its "
+                                    "rows went with it): the run folder was removed",
+                                    str(self.path))
 
     def append_samples(self, rows: list[Sample]) -> None:
         """Flushed to the operating system before returning."""

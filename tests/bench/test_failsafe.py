@@ -403,6 +403,31 @@ def test_a_run_folder_file_that_is_a_link_is_refused(recorded, name, symlink):
         load_run(recorded).samples  # noqa: B018 (read on first use)
 
 
+def test_a_run_folder_deleted_mid_run_stops_the_run(config, tmp_path, monkeypatch):
+    # the folder removed after the tare (a clean-up of the runs folder): the run must not go on
+    # pressurising the muscle into files no one can read; it vents and says what happened
+    import shutil
+
+    from mkm.bench.recorder import Recorder
+
+    tare = Recorder.tare
+
+    def tare_then_delete(self, values):
+        tare(self, values)
+        shutil.rmtree(self.path)
+
+    monkeypatch.setattr(Recorder, "tare", tare_then_delete)
+    written = _commands_of_vents(monkeypatch)
+    result = acquire(config, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 2
+    assert "commands.csv was deleted while recording (its rows went with it): the run folder " \
+           "was removed" in result.reason
+    assert written[-2:] == [0.0, 0.0]  # the step's command went out, then the vent, then close
+    meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
+    assert meta["status"] == "failed" and meta["vent_check"]["verified"]
+    assert meta["counters"]["samples"] == 20  # the 2 s tare, then nothing more was recorded
+
+
 @pytest.mark.parametrize("failure", [OSError(errno.ENOSPC, "No space left on device"),
                                      KeyboardInterrupt()])
 def test_a_report_cut_short_leaves_nothing_partial(recorded, tmp_path, monkeypatch, failure):
