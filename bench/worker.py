@@ -83,6 +83,7 @@ class Acquisition:
         self.vented = False  # the last command written was a successful vent
         self.marker_problem = ""  # the bench marker could not be updated after a vent
         self._pending_flags: list[str] = []
+        self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
         self._off_since_s: float | None = None  # pressure away from the command since then
         self._over_since_s: float | None = None  # pressure above the limit's margin since then
 
@@ -91,6 +92,7 @@ class Acquisition:
     def read_block(self, phase: str, step: int, set_bar: float) -> list[Sample]:
         """Read one block (retrying timeouts, recovering overflows), record it, check it."""
         daq = self.config.daq
+        self._reading = (phase, step, set_bar)
         timeouts = 0
         while True:
             try:
@@ -108,12 +110,7 @@ class Acquisition:
                     raise
                 self._pending_flags.append("timeout")
             except BufferOverflow as exc:
-                resumed = self.backend.recover()
-                lost = resumed - self.next_index
-                self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
-                                      resumed / self.rate_hz, str(exc)))
-                self._pending_flags.append("gap")
-                self.next_index = resumed
+                self._overflowed(exc)
         trips: list[tuple[str, RunStatus]] = []
         rows = [self._sample(block.first_index + k, volts, phase, step, set_bar, trips)
                 for k, volts in enumerate(block.volts)]
@@ -128,8 +125,37 @@ class Acquisition:
             raise stop
         return rows
 
+    def _overflowed(self, exc: BufferOverflow) -> None:
+        """Restart after a buffer overflow and record the gap of the samples lost."""
+        resumed = self.backend.recover()
+        lost = resumed - self.next_index
+        self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
+                              resumed / self.rate_hz, str(exc)))
+        self._pending_flags.append("gap")
+        self.next_index = resumed
+
+    def drain(self) -> None:
+        """Record the samples the device already holds: acquired before the stop, unread (the
+        block a signal or an interlock cut, a reader that fell behind). Called after the vent,
+        before the vent check, which reads past them. Reads only what is there; no interlock
+        is judged (the vent is commanded), so none is flagged."""
+        waiting = self.backend.available()
+        if waiting <= 0:
+            return
+        try:
+            block = self.backend.read(waiting, self.config.daq.read_timeout_s)
+        except BufferOverflow as exc:
+            self._overflowed(exc)
+            return
+        phase, step, set_bar = self._reading
+        self.recorder.samples([self._sample(block.first_index + k, volts, phase, step, set_bar)
+                               for k, volts in enumerate(block.volts)])
+        self.next_index = block.first_index + len(block.volts)
+
     def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
-                trips: list[tuple[str, RunStatus]]) -> Sample:
+                trips: list[tuple[str, RunStatus]] | None = None) -> Sample:
+        """The sample of ``volts``; its interlocks are judged (their trips added to ``trips``)
+        unless ``trips`` is None."""
         reg = self.config.regulator
         cell_V = float(volts[0])
         monitor_V = float(volts[1]) if self.electronic else math.nan
@@ -142,13 +168,14 @@ class Acquisition:
             flags.append("clipped")
             self.recorder.meta.counters["clipped_samples"] += 1
         t_s = index / self.rate_hz
-        # the measured pressure is the monitor's, or the operator's manometer reading: a hand
-        # regulator turned past the limit is as over-pressured as an electronic one
-        over = self._overpressure(t_s, pressure)
-        trip = over or self._interlock(t_s, force, pressure, cell_V, monitor_V, flags)
-        if trip:
-            flags.append("interlock")
-            trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
+        if trips is not None:
+            # the measured pressure is the monitor's, or the operator's manometer reading: a
+            # hand regulator turned past the limit is as over-pressured as an electronic one
+            over = self._overpressure(t_s, pressure)
+            trip = over or self._interlock(t_s, force, pressure, cell_V, monitor_V, flags)
+            if trip:
+                flags.append("interlock")
+                trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
         return Sample(index, index / self.rate_hz, step, phase, set_bar,
                       self.command_bar if self.electronic else math.nan, pressure, cell_V,
                       monitor_V, force, "|".join(flags))
