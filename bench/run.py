@@ -426,8 +426,8 @@ class BenchRun:
         if unverified:
             status = RunStatus.FAILED
             held = self.vent_check.pressure_bar
-            if not held == held:  # nothing read: what was last commanded
-                held = acq.command_bar if acq is not None else 0.0
+            if not held == held:  # nothing plausible read by the check
+                held = acq.held_bar() if acq is not None else 0.0
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
                             f"still hold {held:.3g} bar)")
         if problems:

@@ -79,6 +79,7 @@ class Acquisition:
         self.tare_offset_V = config.loadcell.offset_V
         self.command_bar = 0.0
         self.manometer_bar = math.nan
+        self.measured_bar = math.nan  # the last plausible pressure read (see held_bar)
         self.next_index = 0
         self.vented = False  # the last command written was a successful vent
         self.marker_problem = ""  # the bench marker could not be updated after a vent
@@ -161,6 +162,8 @@ class Acquisition:
         monitor_V = float(volts[1]) if self.electronic else math.nan
         pressure = float(reg.monitor_bar(monitor_V)) if self.electronic else self.manometer_bar
         force = (cell_V - self.tare_offset_V) * self.cell.sensitivity_N_per_V
+        if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
+            self.measured_bar = pressure
         flags, self._pending_flags = self._pending_flags, []
         if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
             flags.append("nonfinite")
@@ -233,6 +236,14 @@ class Acquisition:
             raise Stop(status, f"{message}; the interlock's vent command failed "
                        f"({type(exc).__name__}: {exc}): VENT BY HAND") from exc
         raise Stop(status, f"{message}; vented")
+
+    def held_bar(self) -> float:
+        """The pressure [bar] the regulator may still hold when its vent is not verified: its
+        command while the vent was not written, else the last plausible pressure measured (a
+        lost monitor's 0 V converts to -1 bar, which is no pressure at all)."""
+        if self.vented and math.isfinite(self.measured_bar):
+            return self.measured_bar
+        return self.command_bar
 
     # commands --------------------------------------------------------------------------------
 

@@ -5,6 +5,7 @@ per finding; each failed before the fix.
 
 import errno
 import json
+import math
 import os
 import sys
 from pathlib import Path
@@ -550,6 +551,11 @@ def test_a_lost_monitor_mid_run_is_a_fault_not_a_vent(config, tmp_path):
     assert "VENT BY HAND" in result.reason and not run.meta.vent_check["verified"]
     tripped = run.samples[run.samples["flags"].str.contains("interlock")]
     assert tripped["time_s"].iloc[0] == pytest.approx(4.0)  # the first sample at 0 V
+    # what the regulator may still hold: the 0.5 bar step's last reading, not 0 V's -1 bar
+    last = run.samples["pressure_bar"][run.samples["time_s"] < 4.0].iloc[-1]
+    assert result.reason.endswith(f"VENT BY HAND (the regulator may still hold {last:.3g} bar)")
+    assert last == pytest.approx(0.5, abs=0.02)
+    assert math.isnan(run.meta.vent_check["pressure_bar"])  # 0 V read: no pressure
 
 
 def test_mkm_vent_with_a_lost_monitor_says_vent_by_hand(tmp_path, mkm_cli):
