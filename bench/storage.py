@@ -39,7 +39,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.guards import regular_file
-from mkm.core.records import spreadsheet_safe_text, write_json_atomic
+from mkm.core.records import finite_or_null, spreadsheet_safe_text, write_json_atomic
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
@@ -228,11 +228,13 @@ class RunMeta:
         return self.sequence.get("n_steps")
 
     def as_dict(self) -> dict[str, Any]:
+        """run.json's content: strict JSON, so nothing read (a vent check on a lost device or
+        monitor, NaN) is ``null``, which jq, a browser and a spreadsheet's JSON import read."""
         data = dataclasses.asdict(self)
         data["muscle"] = self.muscle.record()
         data["status"] = str(self.status)
         del data["schema_version"]
-        return {"schema_version": SCHEMA_VERSION, **data}
+        return finite_or_null({"schema_version": SCHEMA_VERSION, **data})
 
     # A read-only mapping view, for code that shows run.json generically (provenance dumps).
     def get(self, key: str, default: Any = None) -> Any:

@@ -5,7 +5,6 @@ per finding; each failed before the fix.
 
 import errno
 import json
-import math
 import os
 import sys
 from pathlib import Path
@@ -555,7 +554,22 @@ def test_a_lost_monitor_mid_run_is_a_fault_not_a_vent(config, tmp_path):
     last = run.samples["pressure_bar"][run.samples["time_s"] < 4.0].iloc[-1]
     assert result.reason.endswith(f"VENT BY HAND (the regulator may still hold {last:.3g} bar)")
     assert last == pytest.approx(0.5, abs=0.02)
-    assert math.isnan(run.meta.vent_check["pressure_bar"])  # 0 V read: no pressure
+    assert run.meta.vent_check["pressure_bar"] is None  # 0 V read: no pressure
+
+
+def test_run_json_of_a_vent_check_that_read_nothing_is_strict_json(config, tmp_path):
+    # the monitor lost: the check's pressure is no number; run.json said NaN, which jq and
+    # every strict JSON reader refuse
+    c = config.replace(sim={"faults": {"monitor_lost_at_s": 4.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+
+    def refuse(constant):
+        raise ValueError(f"{constant} is not JSON")
+
+    meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"),
+                      parse_constant=refuse)
+    assert meta["vent_check"]["pressure_bar"] is None and not meta["vent_check"]["verified"]
+    assert load_run(result.path).meta.vent_check["pressure_bar"] is None
 
 
 def test_mkm_vent_with_a_lost_monitor_says_vent_by_hand(tmp_path, mkm_cli):
