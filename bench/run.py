@@ -349,6 +349,20 @@ class BenchRun:
         except OSError:
             pass  # the disk: the final record meets it again and says so
 
+    @staticmethod
+    def _drain(acq: Acquisition) -> list[str]:
+        """After the vent: record the samples acquired before it and not yet read
+        (:meth:`Acquisition.drain`); the problem met (never raises: the vent check comes next).
+        A device that fails to answer is left to the vent check, which reads it and says so."""
+        try:
+            acq.drain()
+        except BenchError:
+            return []
+        except Exception as exc:  # the disk, or a device half closed by a failed revive
+            return [f"the samples acquired before the stop could not be recorded "
+                    f"({type(exc).__name__}: {exc})"]
+        return []
+
     def _verify(self, gone: bool = False) -> VentCheck:
         """The vent check (:func:`mkm.bench.vent.verify_vent`), bounded by a closed console's
         grace deadline; never raises. ``gone``: the device is lost for good, nothing to read."""
@@ -387,6 +401,8 @@ class BenchRun:
                 problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
         if acq is not None and acq.marker_problem:
             problems.append(acq.marker_problem)
+        if acq is not None and self._started and not gone:
+            problems.extend(self._drain(acq))
         if self.signals.grace_deadline() is not None:
             self._keep_books(status, reason, problems, signal_name, signal_number)
         self.vent_check = self._verify(gone)
@@ -410,8 +426,8 @@ class BenchRun:
         if unverified:
             status = RunStatus.FAILED
             held = self.vent_check.pressure_bar
-            if not held == held:  # nothing read: what was last commanded
-                held = acq.command_bar if acq is not None else 0.0
+            if not held == held:  # nothing plausible read by the check
+                held = acq.held_bar() if acq is not None else 0.0
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
                             f"still hold {held:.3g} bar)")
         if problems:

@@ -25,6 +25,7 @@ from __future__ import annotations
 import dataclasses
 import datetime
 import enum
+import errno
 import io
 import json
 import math
@@ -38,7 +39,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.guards import regular_file
-from mkm.core.records import spreadsheet_safe_text, write_json_atomic
+from mkm.core.records import finite_or_null, spreadsheet_safe_text, write_json_atomic
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
@@ -227,11 +228,13 @@ class RunMeta:
         return self.sequence.get("n_steps")
 
     def as_dict(self) -> dict[str, Any]:
+        """run.json's content: strict JSON, so nothing read (a vent check on a lost device or
+        monitor, NaN) is ``null``, which jq, a browser and a spreadsheet's JSON import read."""
         data = dataclasses.asdict(self)
         data["muscle"] = self.muscle.record()
         data["status"] = str(self.status)
         del data["schema_version"]
-        return {"schema_version": SCHEMA_VERSION, **data}
+        return finite_or_null({"schema_version": SCHEMA_VERSION, **data})
 
     # A read-only mapping view, for code that shows run.json generically (provenance dumps).
     def get(self, key: str, default: Any = None) -> Any:
@@ -511,6 +514,16 @@ class RunWriter:
         f.write("".join(",".join(_cell(v, c) for v, c in zip(row, columns, strict=True)) + "\n"
                         for row in rows))
         f.flush()
+        self._check_linked(f, name)
+
+    def _check_linked(self, f, name: str) -> None:
+        """``FileNotFoundError`` when ``f`` was deleted under the run (its folder removed): on
+        POSIX the writes of an open file then go on into a file no one can read, so the run
+        would record nothing while it pressurises the muscle."""
+        if os.fstat(f.fileno()).st_nlink == 0:
+            raise FileNotFoundError(errno.ENOENT, f"{name}.csv was deleted while recording (its "
+                                    "rows went with it): the run folder was removed",
+                                    str(self.path))
 
     def append_samples(self, rows: list[Sample]) -> None:
         """Flushed to the operating system before returning."""

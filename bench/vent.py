@@ -106,12 +106,13 @@ def verify_vent(backend, config, operator=None, started: bool = True,
             return VentCheck(False, pressure, below, time.monotonic() - start, "monitor",
                              f"{type(exc).__name__}: {exc}", isinstance(exc, DaqDisconnected))
         monitor_V = float(volts[-1, 1])
-        pressure = float(config.regulator.monitor_bar(monitor_V))
         sample_time_s += n / rate
         waited = max(time.monotonic() - start, sample_time_s)
         fault = config.regulator.monitor_fault(monitor_V) if math.isfinite(monitor_V) else None
-        if fault:  # no reading of a working regulator: nothing is verified by it
+        if fault:  # no reading of a working regulator: nothing is verified by it, and its
+            # conversion (0 V: -1 bar) is no pressure: the last plausible reading is kept
             return VentCheck(False, pressure, below, waited, "monitor", fault)
+        pressure = float(config.regulator.monitor_bar(monitor_V))
         if pressure < below:
             return VentCheck(True, pressure, below, waited, "monitor")
         if waited > timeout_s or not math.isfinite(pressure):

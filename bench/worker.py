@@ -11,7 +11,8 @@ after commanding the vent:
   working regulator gives (a live-zero output at 0 V: unpowered, wire off); a pressure more
   than the tolerance away from the command for longer than ``safety.pressure_follow_s`` (a
   regulator that does not follow);
-- over-pressure, on the measured pressure whatever the tolerance: above
+- over-pressure, on the measured pressure (the monitor's, or the manometer reading the operator
+  typed with a manual regulator) whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
   of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
@@ -78,10 +79,12 @@ class Acquisition:
         self.tare_offset_V = config.loadcell.offset_V
         self.command_bar = 0.0
         self.manometer_bar = math.nan
+        self.measured_bar = math.nan  # the last plausible pressure read (see held_bar)
         self.next_index = 0
         self.vented = False  # the last command written was a successful vent
         self.marker_problem = ""  # the bench marker could not be updated after a vent
         self._pending_flags: list[str] = []
+        self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
         self._off_since_s: float | None = None  # pressure away from the command since then
         self._over_since_s: float | None = None  # pressure above the limit's margin since then
 
@@ -90,6 +93,7 @@ class Acquisition:
     def read_block(self, phase: str, step: int, set_bar: float) -> list[Sample]:
         """Read one block (retrying timeouts, recovering overflows), record it, check it."""
         daq = self.config.daq
+        self._reading = (phase, step, set_bar)
         timeouts = 0
         while True:
             try:
@@ -107,12 +111,7 @@ class Acquisition:
                     raise
                 self._pending_flags.append("timeout")
             except BufferOverflow as exc:
-                resumed = self.backend.recover()
-                lost = resumed - self.next_index
-                self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
-                                      resumed / self.rate_hz, str(exc)))
-                self._pending_flags.append("gap")
-                self.next_index = resumed
+                self._overflowed(exc)
         trips: list[tuple[str, RunStatus]] = []
         rows = [self._sample(block.first_index + k, volts, phase, step, set_bar, trips)
                 for k, volts in enumerate(block.volts)]
@@ -127,13 +126,44 @@ class Acquisition:
             raise stop
         return rows
 
+    def _overflowed(self, exc: BufferOverflow) -> None:
+        """Restart after a buffer overflow and record the gap of the samples lost."""
+        resumed = self.backend.recover()
+        lost = resumed - self.next_index
+        self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
+                              resumed / self.rate_hz, str(exc)))
+        self._pending_flags.append("gap")
+        self.next_index = resumed
+
+    def drain(self) -> None:
+        """Record the samples the device already holds: acquired before the stop, unread (the
+        block a signal or an interlock cut, a reader that fell behind). Called after the vent,
+        before the vent check, which reads past them. Reads only what is there; no interlock
+        is judged (the vent is commanded), so none is flagged."""
+        waiting = self.backend.available()
+        if waiting <= 0:
+            return
+        try:
+            block = self.backend.read(waiting, self.config.daq.read_timeout_s)
+        except BufferOverflow as exc:
+            self._overflowed(exc)
+            return
+        phase, step, set_bar = self._reading
+        self.recorder.samples([self._sample(block.first_index + k, volts, phase, step, set_bar)
+                               for k, volts in enumerate(block.volts)])
+        self.next_index = block.first_index + len(block.volts)
+
     def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
-                trips: list[tuple[str, RunStatus]]) -> Sample:
+                trips: list[tuple[str, RunStatus]] | None = None) -> Sample:
+        """The sample of ``volts``; its interlocks are judged (their trips added to ``trips``)
+        unless ``trips`` is None."""
         reg = self.config.regulator
         cell_V = float(volts[0])
         monitor_V = float(volts[1]) if self.electronic else math.nan
         pressure = float(reg.monitor_bar(monitor_V)) if self.electronic else self.manometer_bar
         force = (cell_V - self.tare_offset_V) * self.cell.sensitivity_N_per_V
+        if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
+            self.measured_bar = pressure
         flags, self._pending_flags = self._pending_flags, []
         if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
             flags.append("nonfinite")
@@ -141,11 +171,14 @@ class Acquisition:
             flags.append("clipped")
             self.recorder.meta.counters["clipped_samples"] += 1
         t_s = index / self.rate_hz
-        over = self._overpressure(t_s, pressure) if self.electronic else None
-        trip = over or self._interlock(t_s, force, pressure, cell_V, monitor_V, flags)
-        if trip:
-            flags.append("interlock")
-            trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
+        if trips is not None:
+            # the measured pressure is the monitor's, or the operator's manometer reading: a
+            # hand regulator turned past the limit is as over-pressured as an electronic one
+            over = self._overpressure(t_s, pressure)
+            trip = over or self._interlock(t_s, force, pressure, cell_V, monitor_V, flags)
+            if trip:
+                flags.append("interlock")
+                trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
         return Sample(index, index / self.rate_hz, step, phase, set_bar,
                       self.command_bar if self.electronic else math.nan, pressure, cell_V,
                       monitor_V, force, "|".join(flags))
@@ -203,6 +236,14 @@ class Acquisition:
             raise Stop(status, f"{message}; the interlock's vent command failed "
                        f"({type(exc).__name__}: {exc}): VENT BY HAND") from exc
         raise Stop(status, f"{message}; vented")
+
+    def held_bar(self) -> float:
+        """The pressure [bar] the regulator may still hold when its vent is not verified: its
+        command while the vent was not written, else the last plausible pressure measured (a
+        lost monitor's 0 V converts to -1 bar, which is no pressure at all)."""
+        if self.vented and math.isfinite(self.measured_bar):
+            return self.measured_bar
+        return self.command_bar
 
     # commands --------------------------------------------------------------------------------
 

@@ -10,7 +10,6 @@ invalidates what it computed; in-process, local workers or a Dask cluster).
 from __future__ import annotations
 
 import itertools
-import json
 import os
 import time
 from dataclasses import dataclass
@@ -20,7 +19,7 @@ from typing import Any
 
 import pandas as pd
 
-from mkm.core.records import provenance, write_atomic
+from mkm.core.records import check_csv_with_sidecar, provenance, write_csv_with_sidecar
 from mkm.fem.batch import (
     COLUMNS,
     Job,
@@ -119,6 +118,8 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
     ``calibration`` gives the default theta0 (None: the shipped one).
     """
     check_where(workers, scheduler)
+    if out is not None:  # before hours of FE: a file in the way is said now
+        check_csv_with_sidecar(out)
     grid = grid if isinstance(grid, Grid) else load_grid(grid)
     cache_dir = default_cache_dir() if cache_dir is None else cache_dir
     start = time.perf_counter()
@@ -132,8 +133,7 @@ def build_dataset(grid: str | os.PathLike | Grid = "paper", model: str = "axisym
         run.out = Path(out)
         run.sidecar = run.out.with_suffix(".json")
         info = _provenance(run, grid, jobs, done, cache_dir, calibration)
-        write_atomic(run.out, frame.to_csv(index=False, lineterminator="\n"))
-        write_atomic(run.sidecar, json.dumps(info, indent=2) + "\n")
+        write_csv_with_sidecar(run.out, frame.to_csv(index=False, lineterminator="\n"), info)
     return run
 
 

@@ -351,10 +351,45 @@ def sidecar_path(path: str | os.PathLike) -> Path:
     return Path(path).with_suffix(".json")
 
 
+def _holds_provenance(path: Path) -> bool:
+    """Whether ``path`` is JSON written by mkm: an object holding :func:`provenance` (at its
+    top, or as its ``software``)."""
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    keys = {"date_utc", "command"}
+    return isinstance(data, dict) and any(
+        isinstance(d, dict) and keys <= d.keys() for d in (data, data.get("software")))
+
+
+def check_csv_with_sidecar(path: str | os.PathLike) -> Path:
+    """``path`` if a CSV and its sidecar (:func:`sidecar_path`) may be written there, else
+    ``ValueError`` naming the file in the way. The sidecar's name comes from the CSV's, so the
+    user never named it: ``--out lab.csv`` must not replace the lab's calibration ``lab.json``,
+    nor ``--out sweep.json`` the CSV by its own metadata. Each file must be new or an earlier
+    output (its sidecar holding mkm's provenance)."""
+    path = Path(path)
+    sidecar = sidecar_path(path)
+    if sidecar == path:
+        raise ValueError(f"{path}: its metadata goes to {sidecar.name}, the same file: expected "
+                         "a .csv name")
+    if sidecar.exists() and not _holds_provenance(sidecar):
+        raise ValueError(f"{sidecar} is not the metadata of an earlier {path.name} (no mkm "
+                         f"provenance in it), and {path.name}'s would replace it: kept as it is; "
+                         "expected another name for the CSV")
+    if path.is_file() and not sidecar.exists():
+        raise ValueError(f"{path} exists and was not written by mkm (no {sidecar.name} beside "
+                         "it): kept as it is; expected a new name for the CSV")
+    return path
+
+
 def write_csv_with_sidecar(path: str | os.PathLike, csv_text: str, metadata: dict) -> Path:
     """A plain CSV (no comment lines: spreadsheets read those as data) at ``path`` and its
-    metadata as JSON beside it (:func:`sidecar_path`), both written atomically."""
-    path = write_atomic(path, csv_text)
+    metadata as JSON beside it (:func:`sidecar_path`), both written atomically; ``ValueError``
+    before anything is written when either would replace a file the user has
+    (:func:`check_csv_with_sidecar`)."""
+    path = write_atomic(check_csv_with_sidecar(path), csv_text)
     write_json_atomic(sidecar_path(path), metadata)
     return path
 

@@ -118,6 +118,30 @@ def test_a_wide_tolerance_cannot_permit_an_over_pressure(config, tmp_path):
     assert run.samples["pressure_bar"].max() < 2.75 + 0.2
 
 
+def test_a_hand_regulator_turned_past_the_limit_fails_the_run(config, tmp_path):
+    # a manual regulator: the measured pressure is the manometer reading the operator types;
+    # 2.5 bar typed at the 1.0 bar step (max_pressure_bar 2.0) is an over-pressure, not a step
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    class Overshooting:
+        def set_pressure(self, pressure_bar):
+            return 2.5 * pressure_bar
+
+        def vent(self):
+            return 0.0
+
+    c = config.replace(regulator={"kind": "manual", "max_pressure_bar": 2.0})
+    result = BenchRun(c, SimBackend(c), tmp_path, operator=Overshooting(), handle_signals=False,
+                      **QUIET).execute()
+    run = load_run(result.path)
+    assert result.status == "failed" and result.exit_code == 1
+    assert result.reason.startswith("over-pressure interlock: 2.500 bar measured at ")
+    tripped = run.samples[run.samples["flags"] == "interlock"]
+    assert list(tripped["pressure_bar"]) == [2.5] and list(tripped["step"]) == [1]
+    assert run.steps["set_pressure_bar"].tolist() == [0.5]  # the 1.0 bar step was not recorded
+
+
 def test_a_normal_run_to_the_limit_is_not_an_over_pressure(config, tmp_path):
     c = config.replace(sequence={"pressures_bar": (2.5,)})
     result = acquire(c, out_root=tmp_path, **QUIET)
@@ -379,6 +403,31 @@ def test_a_run_folder_file_that_is_a_link_is_refused(recorded, name, symlink):
         load_run(recorded).samples  # noqa: B018 (read on first use)
 
 
+def test_a_run_folder_deleted_mid_run_stops_the_run(config, tmp_path, monkeypatch):
+    # the folder removed after the tare (a clean-up of the runs folder): the run must not go on
+    # pressurising the muscle into files no one can read; it vents and says what happened
+    import shutil
+
+    from mkm.bench.recorder import Recorder
+
+    tare = Recorder.tare
+
+    def tare_then_delete(self, values):
+        tare(self, values)
+        shutil.rmtree(self.path)
+
+    monkeypatch.setattr(Recorder, "tare", tare_then_delete)
+    written = _commands_of_vents(monkeypatch)
+    result = acquire(config, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 2
+    assert "commands.csv was deleted while recording (its rows went with it): the run folder " \
+           "was removed" in result.reason
+    assert written[-2:] == [0.0, 0.0]  # the step's command went out, then the vent, then close
+    meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
+    assert meta["status"] == "failed" and meta["vent_check"]["verified"]
+    assert meta["counters"]["samples"] == 20  # the 2 s tare, then nothing more was recorded
+
+
 @pytest.mark.parametrize("failure", [OSError(errno.ENOSPC, "No space left on device"),
                                      KeyboardInterrupt()])
 def test_a_report_cut_short_leaves_nothing_partial(recorded, tmp_path, monkeypatch, failure):
@@ -501,6 +550,26 @@ def test_a_lost_monitor_mid_run_is_a_fault_not_a_vent(config, tmp_path):
     assert "VENT BY HAND" in result.reason and not run.meta.vent_check["verified"]
     tripped = run.samples[run.samples["flags"].str.contains("interlock")]
     assert tripped["time_s"].iloc[0] == pytest.approx(4.0)  # the first sample at 0 V
+    # what the regulator may still hold: the 0.5 bar step's last reading, not 0 V's -1 bar
+    last = run.samples["pressure_bar"][run.samples["time_s"] < 4.0].iloc[-1]
+    assert result.reason.endswith(f"VENT BY HAND (the regulator may still hold {last:.3g} bar)")
+    assert last == pytest.approx(0.5, abs=0.02)
+    assert run.meta.vent_check["pressure_bar"] is None  # 0 V read: no pressure
+
+
+def test_run_json_of_a_vent_check_that_read_nothing_is_strict_json(config, tmp_path):
+    # the monitor lost: the check's pressure is no number; run.json said NaN, which jq and
+    # every strict JSON reader refuse
+    c = config.replace(sim={"faults": {"monitor_lost_at_s": 4.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+
+    def refuse(constant):
+        raise ValueError(f"{constant} is not JSON")
+
+    meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"),
+                      parse_constant=refuse)
+    assert meta["vent_check"]["pressure_bar"] is None and not meta["vent_check"]["verified"]
+    assert load_run(result.path).meta.vent_check["pressure_bar"] is None
 
 
 def test_mkm_vent_with_a_lost_monitor_says_vent_by_hand(tmp_path, mkm_cli):

@@ -143,6 +143,22 @@ def test_stall_longer_than_the_buffer_loses_the_samples(config, tmp_path):
     assert math.isclose(run.meta.gaps[0].end_s - run.meta.gaps[0].start_s, 11.0)
 
 
+def test_samples_waiting_in_the_buffer_at_a_stop_are_recorded(config, tmp_path):
+    # A 5 s stall at 3.0 s (0.5 bar commanded): samples 30-79 wait in the buffer; the first,
+    # a NaN force, trips the interlock. The 49 behind it were acquired before the stop: they
+    # are recorded (before the fix the vent check read and dropped them), no interlock judged.
+    result, run = record(config, tmp_path, stall_at_s=3.0, stall_s=5.0, nan_force_at_s=3.0)
+    assert result.status == "aborted" and "force interlock" in result.reason
+    s = run.samples
+    np.testing.assert_array_equal(s["sample"], np.arange(80))
+    assert run.meta.counters["samples"] == 80 and run.meta.lost_samples == 0
+    assert list(s["flags"].iloc[29:]) == ["", "nonfinite|interlock"] + ["nonfinite"] * 49
+    assert set(s["phase"].iloc[30:]) == {"step"} and set(s["step"].iloc[30:]) == {0}
+    assert set(s["command_bar"].iloc[31:]) == {0.0}  # the vent, dated at the reader's sample 31
+    assert run.commands["sample"].iloc[-1] == 31
+    assert_vented_last(run)
+
+
 def test_a_cell_noisier_than_the_settle_limit_is_said_at_the_tare(config, tmp_path):
     # 20 mV of noise x 196 N/V: some 3-4 N rms at rest, inside safety.tare_max_std_N = 5 N,
     # above settle.max_force_std_N = 1.5 N, so no step can settle; said once the tare is taken

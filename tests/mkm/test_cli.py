@@ -58,6 +58,36 @@ def test_a_point_past_the_braid_lock_is_flagged_on_stderr_too(mkm_run):
     assert code == 0 and err == ""
 
 
+def test_solve_out_keeps_the_users_files_beside_it(tmp_path, mkm_run):
+    # the README's lab.json (mkm fem calibrate --out) read by --calibration while --out lab.csv
+    # names the sweep: its metadata went to lab.json, replacing the calibration it had just read
+    from mkm.core.records import package_file
+
+    lab = tmp_path / "lab.json"
+    lab.write_bytes(package_file("mkm.fem", "calibration.json").read_bytes())
+    before = lab.read_bytes()
+    code, out, err = mkm_run([*SOLVE, "--eps", "0.05", "--calibration", str(lab),
+                              "--out", str(tmp_path / "lab.csv")])
+    assert code == 2 and err == (
+        f"mkm fem solve: error: {lab} is not the metadata of an earlier lab.csv (no mkm "
+        "provenance in it), and lab.csv's would replace it: kept as it is; expected another "
+        "name for the CSV\n")
+    assert lab.read_bytes() == before and not (tmp_path / "lab.csv").exists()
+    mine = tmp_path / "my_bench.toml"  # a file of the user's named as the CSV
+    mine.write_text("[muscle]\n")
+    code, out, err = mkm_run([*SOLVE, "--eps", "0.05", "--out", str(mine)])
+    assert code == 2 and err == (f"mkm fem solve: error: {mine} exists and was not written by "
+                                 "mkm (no my_bench.json beside it): kept as it is; expected a "
+                                 "new name for the CSV\n")
+    assert mine.read_text() == "[muscle]\n" and not (tmp_path / "my_bench.json").exists()
+    code, out, err = mkm_run([*SOLVE, "--eps", "0.05", "--out", str(tmp_path / "sweep.json")])
+    assert code == 2 and err.endswith("sweep.json: its metadata goes to sweep.json, the same "
+                                      "file: expected a .csv name\n")
+    sweep = tmp_path / "sweep.csv"  # an earlier output of its own is replaced
+    for _ in range(2):
+        assert mkm_run([*SOLVE, "--eps", "0.05", "--out", str(sweep)])[0] == 0
+
+
 def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     out = tmp_path / "sweep.csv"
     code, stdout, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",

@@ -275,3 +275,13 @@ def test_the_command_takes_no_progress(tmp_path, monkeypatch, capsys):
                  "--no-progress"]) == 0
     assert asked["progress"] is False
     assert len(pd.read_csv(tmp_path / "d.csv")) == 12
+
+
+def test_a_file_of_the_users_in_the_sidecars_place_is_said_before_any_job(tmp_path):
+    # --out lab.csv beside the lab's calibration lab.json: refused before the FE runs, kept
+    lab = tmp_path / "lab.json"
+    lab.write_text('{"thickwall": {"theta0_deg": 31.0}}\n')
+    with pytest.raises(ValueError, match=r"lab.json is not the metadata of an earlier lab.csv"):
+        tiny(out=tmp_path / "lab.csv", workers=1, cache_dir=tmp_path / "cache")
+    assert lab.read_text() == '{"thickwall": {"theta0_deg": 31.0}}\n'
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["lab.json"]  # no job was cached
