@@ -295,8 +295,12 @@ def _restored(path: Path, meta, steps, samples, notes, shape):
         restored = _unflattened(known, part)
         if restored:
             setattr(meta, part, restored)
+    status, reason = known.get("status"), known.get("reason")
+    if status and status != "complete":  # a run cut short stays marked with why
+        meta.reason += f"; recorded as {status}: {reason or 'no reason recorded'}"
     meta.imported_from = {**meta.imported_from, "shape": shape,
-                          "restored": "steps, samples, calibration and tare of mkm export"}
+                          "restored": "steps, samples, calibration and tare of mkm export",
+                          "recorded_status": status, "recorded_reason": reason}
     meta.counters["samples"] = len(samples)
     return meta, steps, samples, notes, shape
 

@@ -574,6 +574,11 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
              f"<p>status: <b>{_status_html(r)}</b>"]
     n_samples = getattr(r.run, "n_samples", None)
     n_samples = len(r.run.samples) if n_samples is None else n_samples
+    imported = meta.get("imported_from") or {}
+    recorded = imported.get("recorded_status")
+    if recorded and recorded != "complete":  # an exported run cut short, imported back
+        why = reason_shown(str(imported.get("recorded_reason") or ""))
+        parts.append(f" — recorded as <b>{esc(recorded)}</b>: {esc(why)}")
     if not r.run.complete:
         reason = reason_shown(str(meta.get("reason") or "")) or "not recorded"
         parts.append(f" — reason: {esc(reason)}. Kept: "

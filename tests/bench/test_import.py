@@ -338,6 +338,23 @@ def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, m
     pd.testing.assert_frame_equal(again.samples, run.samples, rtol=1e-9, check_dtype=False)
     assert (again.meta.calibration, again.meta.tare) == (run.meta.calibration, run.meta.tare)
     assert again.steps["force_U_N"].notna().all()
+    assert again.meta.imported_from["recorded_status"] == "complete"
+
+
+def test_an_exported_run_that_was_cut_short_stays_marked_with_why(config, tmp_path, mkm_cli):
+    from mkm.bench.run import acquire
+
+    faulty = config.replace(sim={"faults": {"nan_force_at_s": 20.0}})
+    result = acquire(faulty, out_root=tmp_path / "bench", notify=lambda message: None)
+    run = load_run(result.path)
+    assert str(run.status) != "complete" and run.meta.reason
+    mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    (again,), _ = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert f"; recorded as {run.status}: {run.meta.reason}" in again.meta.reason
+    assert again.meta.imported_from["recorded_reason"] == run.meta.reason
+    _scores(tmp_path, [again])
+    page = (tmp_path / "report" / "report.html").read_text(encoding="utf-8")
+    assert f"recorded as <b>{run.status}</b>" in page
 
 
 def test_an_exported_workbook_with_a_formula_in_its_samples_is_refused(config, tmp_path,
