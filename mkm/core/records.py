@@ -351,9 +351,30 @@ def sidecar_path(path: str | os.PathLike) -> Path:
     return Path(path).with_suffix(".json")
 
 
+def check_sidecar_free(path: str | os.PathLike) -> None:
+    """``ValueError`` unless the sidecar of the CSV ``path`` may be written: a name other than
+    the CSV's, and no file there unless the CSV is there too (the pair an earlier run wrote,
+    which the same ``--out`` asks to rewrite); a JSON beside no such CSV is a file of the
+    user's (``lab.json``, the calibration, beside ``--out lab.csv``)."""
+    path = Path(path)
+    sidecar = sidecar_path(path)
+    if sidecar == path:
+        raise ValueError(f"{os.fspath(path)}: the CSV and its JSON metadata would be the same "
+                         "file: expected a name ending in .csv")
+    if sidecar.exists() and not path.exists():
+        raise ValueError(f"{sidecar} exists and is not the metadata of a CSV {path.name} (the "
+                         f"metadata of {path.name} would replace it): expected another name "
+                         "for the CSV; nothing was written")
+
+
 def write_csv_with_sidecar(path: str | os.PathLike, csv_text: str, metadata: dict) -> Path:
     """A plain CSV (no comment lines: spreadsheets read those as data) at ``path`` and its
-    metadata as JSON beside it (:func:`sidecar_path`), both written atomically."""
+    metadata as JSON beside it (:func:`sidecar_path`), both written atomically.
+
+    The CSV is the file asked for; the sidecar is not, so a JSON of the user's under its name
+    (``--out lab.csv`` beside the calibration ``lab.json``) is refused before anything is
+    written, as is a CSV name that is its own sidecar's (``--out x.json``)."""
+    check_sidecar_free(path)
     path = write_atomic(path, csv_text)
     write_json_atomic(sidecar_path(path), metadata)
     return path
