@@ -79,8 +79,32 @@ def calibration_snapshot() -> dict:
     return json.loads(Path(CALIBRATION_FILE).read_text(encoding="utf-8"))
 
 
+#: every file a saved model folder holds (the predictor only for kinds that declare one)
+MODEL_FILES = frozenset({ESTIMATOR_FILE, PREDICTOR_FILE, METADATA_FILE})
+
+
+def check_replaceable(directory) -> None:
+    """``ValueError`` unless ``directory`` may become a model folder: absent, empty, or a model
+    folder (only :data:`MODEL_FILES`), which saving replaces whole. Any other folder is the
+    user's (``--out mkm-out/runs``): replacing it would delete what it holds."""
+    directory = Path(directory)
+    if not directory.exists():
+        return
+    if not directory.is_dir():
+        raise ValueError(f"{directory} is a file: expected a folder for the model (new, or one "
+                         "`mkm surrogate train` wrote)")
+    others = sorted(p.name for p in directory.iterdir() if p.name not in MODEL_FILES)
+    if others:
+        shown = ", ".join(others[:3]) + (f" and {len(others) - 3} more" if len(others) > 3
+                                         else "")
+        raise ValueError(f"{directory} holds files that are not a saved model ({shown}): "
+                         "expected a new folder or one `mkm surrogate train` wrote; nothing "
+                         "was replaced")
+
+
 def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
-    """Write ``model`` to ``directory`` (created; replaced whole if it exists).
+    """Write ``model`` to ``directory`` (created; a model folder there is replaced whole, any
+    other folder refused: :func:`check_replaceable`).
 
     ``lock``: a context manager held while writing (default: ``<directory>.lock``).
     """
@@ -89,6 +113,7 @@ def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
     from filelock import FileLock
 
     directory = Path(directory)
+    check_replaceable(directory)
     directory.parent.mkdir(parents=True, exist_ok=True)
     with lock if lock is not None else FileLock(str(directory) + ".lock"):
         staging = Path(tempfile.mkdtemp(prefix=f".{directory.name}-", dir=directory.parent))

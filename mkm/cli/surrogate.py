@@ -241,13 +241,15 @@ def _grid(args) -> int:
 
 
 def _train(args) -> int:
-    from mkm.surrogate.io import save_model
+    from mkm.surrogate.io import check_replaceable, save_model
     from mkm.surrogate.train import train_surrogate
 
     start = time.perf_counter()
+    out = args.out or default_out("models", args.kind)
+    check_replaceable(out)  # before the training, which takes minutes
     model = train_surrogate(args.kind, _dataset(args), splits=args.splits,
                             progress=not args.no_progress)
-    out = save_model(model, args.out or default_out("models", args.kind))
+    out = save_model(model, out)
     held_out = model.metadata["metrics"]["muscle_held_out"]
     text = f"wrote {out} ({model.kind}) in {time.perf_counter() - start:.0f} s"
     if held_out:
