@@ -348,3 +348,11 @@ def test_saving_never_replaces_a_folder_of_the_users(saved, tmp_path):
     again = copy_model(directory, tmp_path / "model")
     save_model(model, again)
     assert load_model(again).kind == "physics"
+
+
+def test_saving_leaves_the_folder_alone_beside_the_model(saved, tmp_path):
+    """``mkm surrogate train --out DIR`` used to leave ``DIR.lock`` beside the model for good
+    (filelock keeps its file): the lock now lives in the user's cache."""
+    model, _, _ = saved
+    save_model(model, tmp_path / "model")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["model"]
