@@ -85,7 +85,14 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
     else:
         if not text:
             raise ValueError(f"{name} is empty: expected start:stop:step or a comma list")
-        values = np.array([parse_number(p, name) for p in text.split(",")])
+        parts = text.split(",")
+        label = f"{name} {text!r}: entry" if len(parts) > 1 else name
+        try:
+            values = np.array([parse_number(p, label) for p in parts])
+        except ValueError as exc:  # '0-8', '0,1,,2': the whole text and the forms it may take
+            raise ValueError(str(exc) if "expected" in str(exc) else
+                             f"{exc}: expected start:stop:step (for example 0:8:0.5) or a comma "
+                             "list (0,1,2.5), in bar") from None
     if (values < 0).any():
         raise ValueError(f"{name} {text!r} has a negative pressure "
                          f"{values[values < 0][0]:g} bar: expected gauge pressures >= 0")

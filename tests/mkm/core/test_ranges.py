@@ -40,6 +40,11 @@ def test_fraction_or_percentage_mean_the_same():
     (lambda: parse_range("0:1e12:1", "p"), f"expected at most {MAX_RANGE_VALUES}"),
     (lambda: parse_pressures(""), "--pressures is empty"),
     (lambda: parse_pressures("1,-0.5"), "negative pressure -0.5 bar"),
+    # a mistyped sweep names the whole text and the two forms it may take
+    (lambda: parse_pressures("0-8"), r"^--pressures='0-8' is not a number: expected "
+     r"start:stop:step \(for example 0:8:0\.5\) or a comma list \(0,1,2\.5\), in bar$"),
+    (lambda: parse_pressures("0,1,,2"), r"^--pressures '0,1,,2': entry='' is not a number: "
+     "expected start:stop:step"),
     (lambda: parse_fraction("five%"), "--eps='five' is not a number"),
     # a unit typed after the number: said, not only refused
     (lambda: parse_number("282mm", "--L0"), "--L0='282mm' is not a number: expected the "
