@@ -108,9 +108,9 @@ def register(subparsers) -> None:
         description="Mesh study of the axisymmetric FE model at one muscle and pressure: force, "
         "degrees of freedom and seconds per mesh level; CSV, JSON and PNG under --out.",
         epilog="example: mkm fem convergence --D0 35 --t0 2.5 --eps 5% --pressure 2.5")
-    conv.add_argument("--D0", default=35.0, type=argtype(parse_number, "--D0"),
+    conv.add_argument("--D0", default=35.0, type=argtype(parse_number, "--D0", "mm"),
                       help=shared_help("--D0", "default: %(default)s, muscle I"))
-    conv.add_argument("--t0", default=2.5, type=argtype(parse_number, "--t0"),
+    conv.add_argument("--t0", default=2.5, type=argtype(parse_number, "--t0", "mm"),
                       help=shared_help("--t0", "default: %(default)s"))
     conv.add_argument("--eps", default=0.05, type=argtype(parse_fraction),
                       help=shared_help("--eps", "default: %(default)s"))
@@ -133,7 +133,7 @@ def _practical_pressure(text: str) -> float:
     from mkm.fem.limits import PRACTICAL_RANGE
 
     try:
-        value = parse_number(text, "--pressure")
+        value = parse_number(text, "--pressure", "bar")
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
     low, high = PRACTICAL_RANGE.pressure_bar

@@ -104,7 +104,7 @@ def register(subparsers) -> None:
         epilog="example: mkm surrogate reference --mesh coarse --out mkm-out/ref.csv")
     ref.add_argument("--model", default="axisym", help="FE model (default %(default)s)")
     ref.add_argument("--mesh", help="mesh level of the FE model (default: its own)")
-    ref.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+    ref.add_argument("--theta0", type=argtype(parse_number, "--theta0", "deg"),
                      help=shared_help("--theta0", "default: calibrated"))
     ref.add_argument("--out", default=str(default_out("surrogate-reference",
                                                       "fe_test_muscles.csv")),

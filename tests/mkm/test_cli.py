@@ -58,6 +58,17 @@ def test_a_point_past_the_braid_lock_is_flagged_on_stderr_too(mkm_run):
     assert code == 0 and err == ""
 
 
+def test_solve_takes_numbers_typed_with_their_units(mkm_run):
+    """The sweep of a 1.5 inch muscle typed in inches, kPa and degrees is the one typed in the
+    options' own units (``--L0 282mm`` was refused)."""
+    typed = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "1.5in", "--t0", "2.5mm",
+                     "--L0", "0.282m", "--theta0", "30deg", "--eps", "0.05",
+                     "--pressures", "0:250kPa:50kPa"])
+    plain = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "38.1", "--t0", "2.5",
+                     "--L0", "282", "--theta0", "30", "--eps", "0.05", "--pressures", "0:2.5:0.5"])
+    assert typed == plain and typed[0] == 0
+
+
 @pytest.mark.parametrize("model", ["eq2", "thickwall", "axisym:mesh=coarse"])
 def test_solve_outside_the_practical_range_says_so(mkm_run, model):
     """A physics model asked above the range's 8 bar, or for a muscle outside it, computes
