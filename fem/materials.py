@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from mkm.fem.limits import check_value
+
 
 @dataclass(frozen=True)
 class MooneyRivlin:
@@ -39,8 +41,12 @@ SILASTIC_S = MATERIALS["silastic_s"]
 
 
 def mooney_rivlin(C10_MPa: float | None = None, C01_MPa: float | None = None) -> MooneyRivlin:
-    """The Mooney-Rivlin rubber with these constants [MPa]; a None is Silastic S's value."""
+    """The Mooney-Rivlin rubber with these constants [MPa]; a None is Silastic S's value.
+
+    Every rubber a user names (a spec's ``C10_MPa=...``, a calibration, a design constraint)
+    is made here, so the constants are checked against the limits: a negative or absurd one
+    gave a force at 0 bar, or a negative one, marked valid."""
     if C10_MPa is None and C01_MPa is None:
         return SILASTIC_S
-    return MooneyRivlin(SILASTIC_S.C10_MPa if C10_MPa is None else float(C10_MPa),
-                        SILASTIC_S.C01_MPa if C01_MPa is None else float(C01_MPa))
+    return MooneyRivlin(SILASTIC_S.C10_MPa if C10_MPa is None else check_value("C10_MPa", C10_MPa),
+                        SILASTIC_S.C01_MPa if C01_MPa is None else check_value("C01_MPa", C01_MPa))

@@ -24,8 +24,8 @@ a key missing or of the wrong type, larger than :data:`MAX_METADATA_BYTES`) or d
 its hash, whose estimator file does not match its recorded hash, or (unless
 ``accept_mismatch=True``) whose checks do not match this installation, naming each difference;
 other library versions warn (:class:`LibraryVersionWarning`). :func:`save_model` writes under a
-lock file (``filelock``: works on Windows too) and swaps the folder in whole, so two processes
-saving at once cannot leave half a model or crash on each other.
+lock file in the user's cache (``filelock``: works on Windows too) and swaps the folder in
+whole, so two processes saving at once cannot leave half a model or crash on each other.
 """
 
 from __future__ import annotations
@@ -79,18 +79,56 @@ def calibration_snapshot() -> dict:
     return json.loads(Path(CALIBRATION_FILE).read_text(encoding="utf-8"))
 
 
-def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
-    """Write ``model`` to ``directory`` (created; replaced whole if it exists).
+#: every file a saved model folder holds (the predictor only for kinds that declare one)
+MODEL_FILES = frozenset({ESTIMATOR_FILE, PREDICTOR_FILE, METADATA_FILE})
 
-    ``lock``: a context manager held while writing (default: ``<directory>.lock``).
+
+def check_replaceable(directory) -> None:
+    """``ValueError`` unless ``directory`` may become a model folder: absent, empty, or a model
+    folder (only :data:`MODEL_FILES`), which saving replaces whole. Any other folder is the
+    user's (``--out mkm-out/runs``): replacing it would delete what it holds."""
+    directory = Path(directory)
+    if not directory.exists():
+        return
+    if not directory.is_dir():
+        raise ValueError(f"{directory} is a file: expected a folder for the model (new, or one "
+                         "`mkm surrogate train` wrote)")
+    others = sorted(p.name for p in directory.iterdir() if p.name not in MODEL_FILES)
+    if others:
+        shown = ", ".join(others[:3]) + (f" and {len(others) - 3} more" if len(others) > 3
+                                         else "")
+        raise ValueError(f"{directory} holds files that are not a saved model ({shown}): "
+                         "expected a new folder or one `mkm surrogate train` wrote; nothing "
+                         "was replaced")
+
+
+def save_lock(directory: Path):
+    """The lock of saving a model to ``directory``: a file in the user's cache named by the
+    folder's resolved path. ``filelock`` leaves its file behind, and a ``DIR.lock`` beside the
+    user's ``--out DIR`` would stay there for good."""
+    from filelock import FileLock
+
+    from mkm.core.home import user_cache
+
+    key = hashlib.sha256(os.fsencode(directory.resolve())).hexdigest()[:16]
+    locks = user_cache("locks")
+    locks.mkdir(parents=True, exist_ok=True)
+    return FileLock(str(locks / f"model-{key}.lock"))
+
+
+def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
+    """Write ``model`` to ``directory`` (created; a model folder there is replaced whole, any
+    other folder refused: :func:`check_replaceable`).
+
+    ``lock``: a context manager held while writing (default: :func:`save_lock`).
     """
     import numpy as np
     import skops.io as sio
-    from filelock import FileLock
 
     directory = Path(directory)
+    check_replaceable(directory)
     directory.parent.mkdir(parents=True, exist_ok=True)
-    with lock if lock is not None else FileLock(str(directory) + ".lock"):
+    with lock if lock is not None else save_lock(directory):
         staging = Path(tempfile.mkdtemp(prefix=f".{directory.name}-", dir=directory.parent))
         try:
             sio.dump(model.estimator, staging / ESTIMATOR_FILE)

@@ -18,7 +18,7 @@ import numpy as np
 from threadpoolctl import ThreadpoolController
 
 from mkm.fem.interface import INPUTS, Domain, ForceModel
-from mkm.fem.limits import PRACTICAL_RANGE
+from mkm.fem.limits import PRACTICAL_RANGE, check_value
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import L0_MM
 from mkm.surrogate.kinds import RANGE
@@ -127,8 +127,11 @@ class SurrogateForceModel(ForceModel):
         self.metadata = metadata or {}
         self.name = f"surrogate-{kind}"
         self.domain = Domain(**{name: self.box[name] for name in INPUTS})
-        self._given = {"L0_mm": L0_mm, "theta0_deg": theta0_deg, "C10_MPa": C10_MPa,
-                       "C01_MPa": C01_MPa}
+        # a value outside LIMITS is a typo (C10_MPa=-1), refused as the physics models do;
+        # one inside them but outside the box is a muscle, flagged where it is predicted
+        self._given = {name: None if value is None else check_value(name, value)
+                       for name, value in (("L0_mm", L0_mm), ("theta0_deg", theta0_deg),
+                                           ("C10_MPa", C10_MPa), ("C01_MPa", C01_MPa))}
         self._resolve({k: v for k, v in self._given.items() if v is not None})  # refuse now
         self._fast_predict = (predictor.predict if predictor is not None
                               else _validated_predictor(self.estimator))

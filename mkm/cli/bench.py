@@ -23,7 +23,7 @@ EXIT_FAILED = 1
 def _positive_seconds(text: str) -> float:
     from mkm.bench.procedures import MAX_SECONDS
 
-    value = parse_number(text, "--seconds")
+    value = parse_number(text, "--seconds", "s")
     if not 0 < value <= MAX_SECONDS:
         raise ValueError(f"--seconds {text!r} is invalid: expected a duration > 0 s, at most "
                          f"{MAX_SECONDS:g} s")
@@ -31,14 +31,14 @@ def _positive_seconds(text: str) -> float:
 
 
 def _masses(text: str) -> list[float]:
-    values = [parse_number(t, "--masses") for t in text.split(",")]
+    values = [parse_number(t, "--masses", "kg") for t in text.split(",")]
     if any(v < 0 for v in values):
         raise ValueError(f"--masses {text!r} has a negative mass: expected kg >= 0")
     return values
 
 
 def _volts(text: str) -> list[float]:
-    return [parse_number(t, "--volts") for t in text.split(",")]
+    return [parse_number(t, "--volts", "V") for t in text.split(",")]
 
 
 def _add_device_arguments(parser, clock: bool = True) -> None:

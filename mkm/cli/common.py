@@ -85,9 +85,10 @@ def say(args, kind: str, message) -> None:
 def parse_within(text: str, flag: str, name: str) -> float:
     """``text`` as a number inside ``LIMITS[name]`` (:mod:`mkm.fem.limits`): a model that only
     records a value (Equation 2's ``L0_mm``) or flags it (a surrogate) must not take a typo."""
-    from mkm.fem.limits import limit_text, outside
+    from mkm.fem.limits import LIMITS, limit_text, outside
 
-    value = parse_number(text, flag)
+    unit = LIMITS[name][3]
+    value = parse_number(text, flag, None if unit.startswith("(") else unit)
     if outside(name, value):
         raise ValueError(f"{flag} {text}: {limit_text(name)}")
     return value
@@ -196,9 +197,9 @@ def with_calibration(func):
 
 def add_muscle_arguments(parser, length: bool = False) -> None:
     """``--D0``, ``--t0``, ``--eps`` (and ``--L0`` with ``length``), all required."""
-    parser.add_argument("--D0", required=True, type=argtype(parse_number, "--D0"),
+    parser.add_argument("--D0", required=True, type=argtype(parse_number, "--D0", "mm"),
                         help=shared_help("--D0"))
-    parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0"),
+    parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0", "mm"),
                         help=shared_help("--t0"))
     if length:
         parser.add_argument("--L0", required=True, type=argtype(parse_within, "--L0", "L0_mm"),

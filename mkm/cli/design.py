@@ -78,14 +78,14 @@ def register(subparsers) -> None:
                    "rubber of the --calibration file, an identified one, else Silastic S) "
                    "or silastic_s")
     p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
-                   type=argtype(parse_number, "--max-outer-diameter"),
+                   type=argtype(parse_number, "--max-outer-diameter", "mm"),
                    help="largest outer diameter at the working pressure [mm] (the housing)")
-    p.add_argument("--gap", dest="gap_mm", metavar="MM", type=argtype(parse_number, "--gap"),
+    p.add_argument("--gap", dest="gap_mm", metavar="MM", type=argtype(parse_number, "--gap", "mm"),
                    help="radial gap between tube and braid at rest of the muscles as built "
                    "[mm] (default 0): the surrogate has none, so the FE model, which takes "
                    "it, searches and verifies")
     p.add_argument("--max-pressure", dest="max_pressure_bar", metavar="BAR",
-                   type=argtype(parse_number, "--max-pressure"),
+                   type=argtype(parse_number, "--max-pressure", "bar"),
                    help="largest working pressure [bar] (default: the requirements' largest)")
     p.add_argument("--tolerance", metavar="D0=MM,t0=MM,theta0=DEG[,...]",
                    type=argtype(_tolerances),

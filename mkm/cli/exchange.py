@@ -32,9 +32,9 @@ def register(subparsers) -> None:
     imp.add_argument("table", help="the CSV, TSV or .xlsx file")
     imp.add_argument("--id", help="the muscle's id (names the run folders; default: the one "
                      "in a workbook written by mkm export)")
-    imp.add_argument("--D0", type=argtype(parse_number, "--D0"), help=shared_help("--D0"))
-    imp.add_argument("--t0", type=argtype(parse_number, "--t0"), help=shared_help("--t0"))
-    imp.add_argument("--L0", type=argtype(parse_number, "--L0"),
+    imp.add_argument("--D0", type=argtype(parse_number, "--D0", "mm"), help=shared_help("--D0"))
+    imp.add_argument("--t0", type=argtype(parse_number, "--t0", "mm"), help=shared_help("--t0"))
+    imp.add_argument("--L0", type=argtype(parse_number, "--L0", "mm"),
                      help=shared_help("--L0", "default: the table's L0 column"))
     imp.add_argument("--eps", type=argtype(parse_fraction),
                      help=shared_help("--eps", "default: the table's eps or length column"))

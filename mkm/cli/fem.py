@@ -108,9 +108,9 @@ def register(subparsers) -> None:
         description="Mesh study of the axisymmetric FE model at one muscle and pressure: force, "
         "degrees of freedom and seconds per mesh level; CSV, JSON and PNG under --out.",
         epilog="example: mkm fem convergence --D0 35 --t0 2.5 --eps 5% --pressure 2.5")
-    conv.add_argument("--D0", default=35.0, type=argtype(parse_number, "--D0"),
+    conv.add_argument("--D0", default=35.0, type=argtype(parse_number, "--D0", "mm"),
                       help=shared_help("--D0", "default: %(default)s, muscle I"))
-    conv.add_argument("--t0", default=2.5, type=argtype(parse_number, "--t0"),
+    conv.add_argument("--t0", default=2.5, type=argtype(parse_number, "--t0", "mm"),
                       help=shared_help("--t0", "default: %(default)s"))
     conv.add_argument("--eps", default=0.05, type=argtype(parse_fraction),
                       help=shared_help("--eps", "default: %(default)s"))
@@ -133,7 +133,7 @@ def _practical_pressure(text: str) -> float:
     from mkm.fem.limits import PRACTICAL_RANGE
 
     try:
-        value = parse_number(text, "--pressure")
+        value = parse_number(text, "--pressure", "bar")
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
     low, high = PRACTICAL_RANGE.pressure_bar
@@ -173,12 +173,33 @@ def _solve(args) -> int:
 
         print(explain(prediction, label=model_label), file=sys.stderr)
     emit_prediction(prediction, args.out)
+    outside = _outside_practical_range(prediction, args.D0, args.t0)
+    if outside:  # computed all the same (inside LIMITS it is a muscle), but never validated
+        say(args, "warning", f"outside the practical range every model is validated over "
+            f"({'; '.join(outside)}): computed all the same, an extrapolation (`mkm models` "
+            "states the range)")
     invalid = int((~prediction.valid).sum())
     if invalid:  # the CSV's force_N of such a point is a number, not a force: said once
         say(args, "warning", f"{invalid} of {prediction.valid.size} points valid=False (past "
             "the braid lock, or outside the model's domain or not converged): their force_N "
             "is not a force of the muscle")
     return 0
+
+
+def _outside_practical_range(prediction, D0_mm: float, t0_mm: float) -> list[str]:
+    """What of the sweep lies outside the practical range, one phrase each; empty inside, and
+    for a model that flags its own domain (a surrogate's ``in_domain``). eps is left out: past
+    the braid lock the points are ``valid=False``, which the warning after says."""
+    from mkm.fem.limits import PRACTICAL_RANGE
+
+    if "in_domain" in prediction.extras:
+        return []
+    muscle = {k: prediction.params.get(k) for k in ("L0_mm", "theta0_deg", "C10_MPa",
+                                                    "C01_MPa")}
+    pressures = (float(prediction.pressure_bar.min()), float(prediction.pressure_bar.max()))
+    found = [v for p in pressures for v in PRACTICAL_RANGE.violations(pressure_bar=p)]
+    return list(dict.fromkeys(found)) + PRACTICAL_RANGE.violations(
+        D0_mm=D0_mm, t0_mm=t0_mm, **{k: v for k, v in muscle.items() if v is not None})
 
 
 def _calibrate(args) -> int:

@@ -104,7 +104,7 @@ def register(subparsers) -> None:
         epilog="example: mkm surrogate reference --mesh coarse --out mkm-out/ref.csv")
     ref.add_argument("--model", default="axisym", help="FE model (default %(default)s)")
     ref.add_argument("--mesh", help="mesh level of the FE model (default: its own)")
-    ref.add_argument("--theta0", type=argtype(parse_number, "--theta0"),
+    ref.add_argument("--theta0", type=argtype(parse_number, "--theta0", "deg"),
                      help=shared_help("--theta0", "default: calibrated"))
     ref.add_argument("--out", default=str(default_out("surrogate-reference",
                                                       "fe_test_muscles.csv")),
@@ -241,13 +241,15 @@ def _grid(args) -> int:
 
 
 def _train(args) -> int:
-    from mkm.surrogate.io import save_model
+    from mkm.surrogate.io import check_replaceable, save_model
     from mkm.surrogate.train import train_surrogate
 
     start = time.perf_counter()
+    out = args.out or default_out("models", args.kind)
+    check_replaceable(out)  # before the training, which takes minutes
     model = train_surrogate(args.kind, _dataset(args), splits=args.splits,
                             progress=not args.no_progress)
-    out = save_model(model, args.out or default_out("models", args.kind))
+    out = save_model(model, out)
     held_out = model.metadata["metrics"]["muscle_held_out"]
     text = f"wrote {out} ({model.kind}) in {time.perf_counter() - start:.0f} s"
     if held_out:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import re
+from functools import cache
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # numpy is imported where arrays are made: `mkm --help` starts without it
@@ -23,17 +24,26 @@ MAX_RANGE_VALUES = 10_000
 ASCII_DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
 
 
-def parse_number(text: str, name: str) -> float:
+def parse_number(text: str, name: str, unit: str | None = None) -> float:
     """``text`` as a finite float, in ASCII decimal notation only (:data:`ASCII_DECIMAL`); a
-    decimal comma (``12,2``, as a European keyboard types it) is read as a decimal point."""
+    decimal comma (``12,2``, as a European keyboard types it) is read as a decimal point.
+
+    ``unit``: the unit of the option (``"mm"``, ``"bar"``, ``"deg"``); a number typed with a
+    unit (``282mm``, ``1.5in``, ``250kPa``, ``30deg``) is converted into it by pint, and a
+    unit of another kind is refused naming both. Without ``unit`` a unit typed is refused with
+    a hint."""
     cleaned = str(text).strip()
     if cleaned.count(",") == 1 and "." not in cleaned:
         cleaned = cleaned.replace(",", ".")
+    with_unit = re.fullmatch(r"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\W\d_]+|°)",
+                             cleaned)
+    if with_unit and unit is not None:
+        return convert_unit(parse_number(with_unit.group(1), name), with_unit.group(2), unit,
+                            f"{name}={text!r}")
     try:
         value = float(cleaned)
     except (TypeError, ValueError):
-        with_unit = re.fullmatch(r"\s*[-+]?[\d.]+(?:[eE][-+]?\d+)?\s*([^\W\d_]+)\s*", cleaned)
-        hint = (f": expected the number alone, without {with_unit.group(1)!r} (in the unit "
+        hint = (f": expected the number alone, without {with_unit.group(2)!r} (in the unit "
                 "the name or --help gives)" if with_unit else "")
         raise ValueError(f"{name}={text!r} is not a number{hint}") from None
     if not math.isfinite(value):
@@ -42,6 +52,37 @@ def parse_number(text: str, name: str) -> float:
         raise ValueError(f"{name}={text!r} is not a number in ASCII decimal notation: "
                          "expected digits 0-9, one point, an optional exponent (2.5e-1)")
     return value
+
+
+def convert_unit(value: float, typed: str, unit: str, what: str) -> float:
+    """``value`` in the unit ``typed`` (pint's spelling: mm, in, kPa, psi, deg, rad, ...) as a
+    number in ``unit``; ``what`` names the text in the one-line ``ValueError``."""
+    import pint
+
+    registry = _unit_registry()
+    try:
+        converted = registry.Quantity(value, typed).to(unit).magnitude
+        return float(f"{converted:.12g}")  # 1.5in is 38.1 mm, not 38.099999999999994
+    except pint.UndefinedUnitError:
+        raise ValueError(f"{what}: {typed!r} is not a unit: expected a number in {unit}, or "
+                         f"one with a unit such as {UNIT_EXAMPLES.get(unit, unit)}") from None
+    except pint.DimensionalityError:
+        raise ValueError(f"{what}: {typed!r} is not a unit of the same kind as {unit}: "
+                         f"expected a number in {unit}, or one with a unit such as "
+                         f"{UNIT_EXAMPLES.get(unit, unit)}") from None
+
+
+#: what a unit typed may look like, per unit of an option (for the messages)
+UNIT_EXAMPLES = {"mm": "282mm or 1.5in", "bar": "2.5bar or 250kPa", "deg": "30deg",
+                 "s": "90s or 2min", "kg": "5kg or 500g", "V": "2V or 500mV"}
+
+
+@cache
+def _unit_registry():
+    """pint's registry, built once (a second of parsing definitions)."""
+    import pint
+
+    return pint.UnitRegistry()
 
 
 def parse_seed(text: str, name: str) -> int:
@@ -55,13 +96,14 @@ def parse_seed(text: str, name: str) -> int:
     return value
 
 
-def parse_range(text: str, name: str) -> np.ndarray:
-    """``"start:stop:step"``, stop included (tolerant to round-off), as a float array."""
+def parse_range(text: str, name: str, unit: str | None = None) -> np.ndarray:
+    """``"start:stop:step"``, stop included (tolerant to round-off), as a float array; each
+    number may carry a unit when ``unit`` is given (:func:`parse_number`)."""
     parts = text.strip().split(":")
     if len(parts) != 3:
         raise ValueError(f"{name} {text!r} is malformed: expected start:stop:step "
                          "(for example 0:2.5:0.25)")
-    start, stop, step = (parse_number(p, name) for p in parts)
+    start, stop, step = (parse_number(p, name, unit) for p in parts)
     if step <= 0:
         raise ValueError(f"{name} {text!r}: step {step:g} must be > 0")
     if stop < start:
@@ -76,16 +118,24 @@ def parse_range(text: str, name: str) -> np.ndarray:
 
 
 def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
-    """``"start:stop:step"`` or a comma list, in bar; gauge pressures >= 0."""
+    """``"start:stop:step"`` or a comma list, in bar (a number typed with another unit of
+    pressure, ``250kPa``, converted); gauge pressures >= 0."""
     import numpy as np
 
     text = text.strip()
     if ":" in text:
-        values = parse_range(text, name)
+        values = parse_range(text, name, "bar")
     else:
         if not text:
             raise ValueError(f"{name} is empty: expected start:stop:step or a comma list")
-        values = np.array([parse_number(p, name) for p in text.split(",")])
+        parts = text.split(",")
+        label = f"{name} {text!r}: entry" if len(parts) > 1 else name
+        try:
+            values = np.array([parse_number(p, label, "bar") for p in parts])
+        except ValueError as exc:  # '0-8', '0,1,,2': the whole text and the forms it may take
+            raise ValueError(str(exc) if "expected" in str(exc) else
+                             f"{exc}: expected start:stop:step (for example 0:8:0.5) or a comma "
+                             "list (0,1,2.5), in bar") from None
     if (values < 0).any():
         raise ValueError(f"{name} {text!r} has a negative pressure "
                          f"{values[values < 0][0]:g} bar: expected gauge pressures >= 0")

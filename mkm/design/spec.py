@@ -110,11 +110,17 @@ def parse_requirement(text: str, name: str = "--require") -> Requirement:
                        parse_fraction(eps, f"{name} {text!r}: eps"))
 
 
-def parse_bounds(text, name: str) -> tuple[float, float]:
+def unit_of(key: str) -> str:
+    """The unit a constraint's name ends in: ``D0_mm`` -> ``mm``."""
+    return key.rsplit("_", 1)[1]
+
+
+def parse_bounds(text, name: str, unit: str | None = None) -> tuple[float, float]:
     """``(low, high)`` from a value (``"37"``, fixed) or a range ``"30:50"``, above 0 (a size
-    or an angle); numbers pass."""
+    or an angle); numbers pass; with ``unit``, a number typed with a unit is converted
+    (``"8mm:0.55in"``, :func:`mkm.core.ranges.parse_number`)."""
     if isinstance(text, int | float):
-        value = parse_number(text, name)
+        value = parse_number(text, name, unit)
         return value, value
     if isinstance(text, list | tuple):
         parts = list(text)
@@ -125,7 +131,7 @@ def parse_bounds(text, name: str) -> tuple[float, float]:
     if len(parts) != 2:
         raise ValueError(f"{name} {text!r} is malformed: expected a value or low:high "
                          "(for example 30:50)")
-    low, high = (parse_number(p, name) for p in parts)
+    low, high = (parse_number(p, name, unit) for p in parts)
     if low <= 0:  # a diameter, wall, length or angle: a sign typo, not a muscle
         raise ValueError(f"{name} {text!r} is invalid: expected values above 0")
     if low > high:
@@ -170,7 +176,7 @@ class Constraints:
         for key in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg"):
             value = getattr(self, key)
             if value is not None:
-                object.__setattr__(self, key, parse_bounds(value, key))
+                object.__setattr__(self, key, parse_bounds(value, key, unit_of(key)))
         rubber = (self.rubber,) if isinstance(self.rubber, str) else tuple(self.rubber)
         unknown = [r for r in rubber if r not in MATERIALS and r != CALIBRATED_RUBBER]
         if unknown or not rubber:
@@ -180,7 +186,7 @@ class Constraints:
         for key in ("max_outer_diameter_mm", "max_pressure_bar"):
             value = getattr(self, key)
             if value is not None:
-                value = parse_number(value, key)
+                value = parse_number(value, key, unit_of(key))
                 if not value > 0:
                     raise ValueError(f"{key}={value:g} is invalid: expected a value > 0")
                 object.__setattr__(self, key, value)

@@ -83,3 +83,15 @@ def test_analytic_tangent_matches_complex_step_and_finite_differences():
 def test_tangent_keeps_batch_shape(shape):
     y = np.ones(shape)
     assert mooney_rivlin_incompressible_tangent(y, SILASTIC_S).shape == shape + (6,)
+
+
+@pytest.mark.parametrize(("spec", "name"), [
+    ("thickwall:C10_MPa=-1", "C10_MPa"), ("axisym:mesh=coarse,C10_MPa=-1", "C10_MPa"),
+    ("thickwall:C01_MPa=-1", "C01_MPa"), ("thickwall:C10_MPa=1e9", "C10_MPa")])
+def test_a_rubber_outside_the_limits_is_refused(spec, name):
+    """A spec's rubber used to bypass the limits: thickwall:C10_MPa=-1 pulled 378 N at 0 bar
+    (threshold -1.03 bar) and the FE -51 N at 1 bar, both valid=True."""
+    from mkm.registry import parse_spec
+
+    with pytest.raises(ValueError, match=rf"^{name}=\S+ is invalid: expected a Mooney-Rivlin"):
+        parse_spec(spec).build().predict([0.0, 1.0], 35, 2.5, 0.05)

@@ -88,6 +88,36 @@ def test_solve_out_keeps_the_users_files_beside_it(tmp_path, mkm_run):
         assert mkm_run([*SOLVE, "--eps", "0.05", "--out", str(sweep)])[0] == 0
 
 
+def test_solve_takes_numbers_typed_with_their_units(mkm_run):
+    """The sweep of a 1.5 inch muscle typed in inches, kPa and degrees is the one typed in the
+    options' own units (``--L0 282mm`` was refused)."""
+    typed = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "1.5in", "--t0", "2.5mm",
+                     "--L0", "0.282m", "--theta0", "30deg", "--eps", "0.05",
+                     "--pressures", "0:250kPa:50kPa"])
+    plain = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "38.1", "--t0", "2.5",
+                     "--L0", "282", "--theta0", "30", "--eps", "0.05", "--pressures", "0:2.5:0.5"])
+    assert typed == plain and typed[0] == 0
+
+
+@pytest.mark.parametrize("model", ["eq2", "thickwall", "axisym:mesh=coarse"])
+def test_solve_outside_the_practical_range_says_so(mkm_run, model):
+    """A physics model asked above the range's 8 bar, or for a muscle outside it, computes
+    (inside LIMITS it is a muscle) but used to say nothing: its force is an extrapolation."""
+    code, out, err = mkm_run(["fem", "solve", "--model", model, "--D0", "35", "--t0", "2.5",
+                              "--eps", "0.05", "--pressures", "0,9,12"])
+    assert code == 0 and len(out.splitlines()) == 4
+    assert err == ("mkm fem solve: warning: outside the practical range every model is "
+                   "validated over (pressure_bar=12 outside [0, 8]): computed all the same, an "
+                   "extrapolation (`mkm models` states the range)\n")
+    rubber = {"eq2": "eq2", "thickwall": "thickwall:C10_MPa=1",  # Equation 2 has no rubber
+              "axisym:mesh=coarse": "axisym:mesh=coarse,C10_MPa=1"}[model]
+    code, _, err = mkm_run(["fem", "solve", "--model", rubber, "--D0", "80", "--t0", "2.5",
+                            "--eps", "0.05", "--L0", "100", "--pressures", "0,1"])
+    assert code == 0 and "D0_mm=80 outside [5, 60]" in err
+    assert "L0_mm=100 below 3 D0_mm = 240" in err
+    assert ("C10_MPa=1 outside [0.03, 0.6]" in err) == (model != "eq2")
+
+
 def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     out = tmp_path / "sweep.csv"
     code, stdout, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",

@@ -479,3 +479,14 @@ def test_a_searching_margin_larger_than_the_requirement_is_said():
     default = run_design(["300N@2.5bar,eps=0.1"], top=1, mesh=MESH)
     assert default.chosen["r1_uncertainty_N"] / 300.0 < 0.1
     assert not any("searched with a margin" in n for n in default.notes())
+
+
+def test_constraints_typed_with_units_are_converted():
+    """``--D0 8mm:0.55in``, ``--max-outer-diameter 2.5in`` and ``--max-pressure 600kPa`` are
+    the numbers in the constraints' own units (mm, bar), as any option's are."""
+    from mkm.design.spec import Constraints
+
+    constraints = Constraints(D0_mm="8mm:0.55in", max_outer_diameter_mm="2.5in",
+                              max_pressure_bar="600kPa")
+    assert constraints.D0_mm == (8.0, 13.97)
+    assert constraints.max_outer_diameter_mm == 63.5 and constraints.max_pressure_bar == 6.0

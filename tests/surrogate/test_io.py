@@ -331,3 +331,28 @@ def test_predictor_file_is_numbers_only(saved_gp, tmp_path):
     (copy / PREDICTOR_FILE).write_bytes(b"edited")
     with pytest.raises(ValueError, match="predictor.npz' is missing or does not match"):
         load_model(copy)
+
+
+def test_saving_never_replaces_a_folder_of_the_users(saved, tmp_path):
+    """``save_model`` (``mkm surrogate train --out DIR``) used to swap out any folder at DIR
+    and delete it: ``--out mkm-out/runs`` deleted every run. A model folder is still
+    replaced, as retraining into it asks."""
+    model, directory, _ = saved
+    runs = tmp_path / "runs"
+    runs.mkdir()
+    (runs / "run1.csv").write_text("precious", encoding="utf-8")
+    with pytest.raises(ValueError, match=r"runs holds files that are not a saved model "
+                       r"\(run1\.csv\): .* nothing was replaced"):
+        save_model(model, runs)
+    assert (runs / "run1.csv").read_text(encoding="utf-8") == "precious"
+    again = copy_model(directory, tmp_path / "model")
+    save_model(model, again)
+    assert load_model(again).kind == "physics"
+
+
+def test_saving_leaves_the_folder_alone_beside_the_model(saved, tmp_path):
+    """``mkm surrogate train --out DIR`` used to leave ``DIR.lock`` beside the model for good
+    (filelock keeps its file): the lock now lives in the user's cache."""
+    model, _, _ = saved
+    save_model(model, tmp_path / "model")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["model"]

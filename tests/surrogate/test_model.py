@@ -152,3 +152,12 @@ def test_best_and_the_kind_it_names_are_one_cached_model(design_model):
     assert is_cached(BEST)
     assert training_task("best") == training_task(BEST)
     assert cached_model(BEST).metadata["trained"] == design_model.metadata["trained"]
+
+
+@pytest.mark.parametrize(("parameter", "value"), [("C10_MPa", -1.0), ("C01_MPa", -5.0),
+                                                  ("L0_mm", 1e9)])
+def test_a_parameter_outside_the_limits_is_refused(physics, parameter, value):
+    """surrogate:C10_MPa=-1 used to be flagged out of the box (valid=False, exit 0) where the
+    physics models refuse it: outside LIMITS a value is a typo, not a muscle."""
+    with pytest.raises(ValueError, match=rf"^{parameter}=\S+ is invalid: expected"):
+        physics.with_parameters(**{parameter: value})

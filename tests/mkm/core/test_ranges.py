@@ -31,6 +31,22 @@ def test_fraction_or_percentage_mean_the_same():
     assert parse_number("35,5", "--D0") == 35.5
 
 
+def test_a_number_typed_with_a_unit_is_converted_into_the_options():
+    """``--L0 282mm`` used to be refused ("expected the number alone"); every option that
+    names its unit now converts a unit typed (pint), and refuses one of another kind."""
+    assert parse_number("282mm", "--L0", "mm") == 282.0
+    assert parse_number("1.5in", "--D0", "mm") == 38.1  # 25.4 mm per inch, exactly
+    assert parse_number("12,5 mm", "--D0", "mm") == 12.5
+    assert parse_number("30deg", "--theta0", "deg") == parse_number("30°", "--theta0", "deg")
+    np.testing.assert_allclose(parse_pressures("0:250kPa:50kPa"), [0, 0.5, 1, 1.5, 2, 2.5])
+    np.testing.assert_allclose(parse_pressures("0,1bar,100psi"), [0, 1, 6.894757], rtol=1e-6)
+    with pytest.raises(ValueError, match=r"^--L0='282kg': 'kg' is not a unit of the same kind "
+                       r"as mm: expected a number in mm, or one with a unit such as 282mm"):
+        parse_number("282kg", "--L0", "mm")
+    with pytest.raises(ValueError, match=r"^--L0='282zz': 'zz' is not a unit: expected"):
+        parse_number("282zz", "--L0", "mm")
+
+
 @pytest.mark.parametrize(("call", "message"), [
     (lambda: parse_number("abc", "--D0"), "^--D0='abc' is not a number$"),
     (lambda: parse_number("inf", "--D0"), "^--D0='inf' is not a finite number$"),
@@ -40,6 +56,11 @@ def test_fraction_or_percentage_mean_the_same():
     (lambda: parse_range("0:1e12:1", "p"), f"expected at most {MAX_RANGE_VALUES}"),
     (lambda: parse_pressures(""), "--pressures is empty"),
     (lambda: parse_pressures("1,-0.5"), "negative pressure -0.5 bar"),
+    # a mistyped sweep names the whole text and the two forms it may take
+    (lambda: parse_pressures("0-8"), r"^--pressures='0-8' is not a number: expected "
+     r"start:stop:step \(for example 0:8:0\.5\) or a comma list \(0,1,2\.5\), in bar$"),
+    (lambda: parse_pressures("0,1,,2"), r"^--pressures '0,1,,2': entry='' is not a number: "
+     "expected start:stop:step"),
     (lambda: parse_fraction("five%"), "--eps='five' is not a number"),
     # a unit typed after the number: said, not only refused
     (lambda: parse_number("282mm", "--L0"), "--L0='282mm' is not a number: expected the "

@@ -142,3 +142,25 @@ def test_a_memo_naming_files_outside_the_sources_is_not_trusted(tmp_path, monkey
     records.source_version.cache_clear()
     assert records.source_version("mkm.fem.thickwall") == true  # hashed again, not the memo's
     records.source_version.cache_clear()
+
+
+def test_a_sidecar_never_replaces_a_json_of_the_users(tmp_path):
+    """``--out lab.csv`` beside the calibration ``lab.json`` used to overwrite the calibration
+    with the CSV's metadata, and ``--out x.json`` wrote the CSV, then its metadata over it."""
+    calibration = tmp_path / "lab.json"
+    calibration.write_text('{"axisym-bonded": {"theta0_deg": 31.0}}', encoding="utf-8")
+    with pytest.raises(ValueError, match=r"lab\.json is not the metadata of an earlier lab\.csv "
+                       r"\(no mkm provenance in it\).* kept as it is"):
+        records.write_csv_with_sidecar(tmp_path / "lab.csv", "a\n1\n", records.provenance())
+    assert calibration.read_text(encoding="utf-8") == '{"axisym-bonded": {"theta0_deg": 31.0}}'
+    assert not (tmp_path / "lab.csv").exists()
+    with pytest.raises(ValueError, match=r"x\.json: its metadata goes to x\.json, the same "
+                       "file"):
+        records.write_csv_with_sidecar(tmp_path / "x.json", "a\n1\n", records.provenance())
+    assert not (tmp_path / "x.json").exists()
+    # the pair an earlier run wrote is rewritten when the same --out is asked again
+    for value in ("1", "2"):
+        records.write_csv_with_sidecar(tmp_path / "s.csv", f"a\n{value}\n",
+                                       {**records.provenance(), "run": value})
+    assert (tmp_path / "s.csv").read_text(encoding="utf-8") == "a\n2\n"
+    assert '"run": "2"' in (tmp_path / "s.json").read_text(encoding="utf-8")
