@@ -123,6 +123,12 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
     import numpy as np
 
     text = text.strip()
+    # '0,100,200kPa': 100 would be read in bar (a zero is zero in every unit)
+    typed = [bool(re.search(r"[^\W\d_]|°", p)) for p in re.split(r"[:,]", text)
+             if not re.fullmatch(r"\s*[+-]?0*\.?0*\s*", p)]
+    if any(typed) and not all(typed):
+        raise ValueError(f"{name} {text!r} gives a unit to some entries only: expected every "
+                         "entry with its unit (0kPa,100kPa,200kPa) or none (in bar)")
     if ":" in text:
         values = parse_range(text, name, "bar")
     else:

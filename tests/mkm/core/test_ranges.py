@@ -56,6 +56,11 @@ def test_a_number_typed_with_a_unit_is_converted_into_the_options():
     (lambda: parse_range("0:1e12:1", "p"), f"expected at most {MAX_RANGE_VALUES}"),
     (lambda: parse_pressures(""), "--pressures is empty"),
     (lambda: parse_pressures("1,-0.5"), "negative pressure -0.5 bar"),
+    # 0 and 100 would be bar: a unit on the last entry alone made a 100 bar step
+    (lambda: parse_pressures("0,100,200kPa"), r"^--pressures '0,100,200kPa' gives a unit to "
+     r"some entries only: expected every entry with its unit \(0kPa,100kPa,200kPa\) or none"),
+    (lambda: parse_pressures("0:250kPa:50"), "gives a unit to some entries only"),
+    (lambda: parse_pressures("0.5,1,2psi"), "gives a unit to some entries only"),
     # a mistyped sweep names the whole text and the two forms it may take
     (lambda: parse_pressures("0-8"), r"^--pressures='0-8' is not a number: expected "
      r"start:stop:step \(for example 0:8:0\.5\) or a comma list \(0,1,2\.5\), in bar$"),
