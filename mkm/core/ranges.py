@@ -124,9 +124,10 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
 
     text = text.strip()
     # '0,100,200kPa': 100 would be read in bar (a zero is zero in every unit)
-    typed = [bool(re.search(r"[^\W\d_]|°", p)) for p in re.split(r"[:,]", text)
-             if not re.fullmatch(r"\s*[+-]?0*\.?0*\s*", p)]
-    if any(typed) and not all(typed):
+    number = r"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*"
+    entries = [p for p in re.split(r"[:,]", text) if not re.fullmatch(r"\s*[+-]?0*\.?0*\s*", p)]
+    if (any(re.fullmatch(number + r"(?:[^\W\d_]+|°)\s*", p) for p in entries)
+            and any(re.fullmatch(number, p) for p in entries)):
         raise ValueError(f"{name} {text!r} gives a unit to some entries only: expected every "
                          "entry with its unit (0kPa,100kPa,200kPa) or none (in bar)")
     if ":" in text:
