@@ -180,10 +180,33 @@ def _solve(args) -> int:
             "states the range)")
     invalid = int((~prediction.valid).sum())
     if invalid:  # the CSV's force_N of such a point is a number, not a force: said once
-        say(args, "warning", f"{invalid} of {prediction.valid.size} points valid=False (past "
-            "the braid lock, or outside the model's domain or not converged): their force_N "
-            "is not a force of the muscle")
+        say(args, "warning", f"{invalid} of {prediction.valid.size} points valid=False "
+            f"({_invalid_reasons(prediction)}): their force_N is not a force of the muscle")
     return 0
+
+
+def _invalid_reasons(prediction) -> str:
+    """Why the sweep's points are ``valid=False``, as far as the prediction tells: past the
+    braid lock of its angle (with eps_max), not converged, outside the model's domain."""
+    import numpy as np
+
+    from mkm.fem.limits import lock_eps
+
+    bad = ~np.asarray(prediction.valid, dtype=bool)
+    theta0 = prediction.params.get("theta0_deg")
+    reasons = []
+    if isinstance(theta0, int | float):
+        locked = bad & (np.asarray(prediction.eps, dtype=float) >= lock_eps(float(theta0)))
+        if locked.any():
+            reasons.append(f"{int(locked.sum())} past the braid lock: eps >= eps_max "
+                           f"{lock_eps(float(theta0)):.4g} at theta0 {float(theta0):g} deg")
+            bad = bad & ~locked
+    unconverged = bad & ~np.asarray(prediction.converged, dtype=bool)
+    if unconverged.any():
+        reasons.append(f"{int(unconverged.sum())} not converged")
+    if (bad & ~unconverged).any():
+        reasons.append(f"{int((bad & ~unconverged).sum())} outside the model's domain")
+    return "; ".join(reasons)
 
 
 def _outside_practical_range(prediction, D0_mm: float, t0_mm: float) -> list[str]:

@@ -50,9 +50,11 @@ def test_a_point_past_the_braid_lock_is_flagged_on_stderr_too(mkm_run):
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
                               "--eps", "0.5", "--pressures", "0,1"])
     assert code == 0 and out.splitlines()[2].endswith(",False,True")  # Equation 2's -120 N
-    assert err == ("mkm fem solve: warning: 2 of 2 points valid=False (past the braid lock, or "
-                   "outside the model's domain or not converged): their force_N is not a force "
-                   "of the muscle\n")
+    # the shipped calibration's Equation 2 angle, 30.778 deg: 1 - 1 / (sqrt 3 cos theta0)
+    eps_max = 1 - 1 / (np.sqrt(3) * np.cos(np.deg2rad(30.778)))
+    assert err == ("mkm fem solve: warning: 2 of 2 points valid=False (2 past the braid lock: "
+                   f"eps >= eps_max {eps_max:.4g} at theta0 30.778 deg): their force_N is not a "
+                   "force of the muscle\n")
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
                               "--eps", "0.05", "--pressures", "0,1"])
     assert code == 0 and err == ""
@@ -628,3 +630,17 @@ def test_a_report_replacing_an_earlier_one_says_so(tmp_path, mkm_run):
     code, out, err = mkm_run([*argv[:3], "thickwall", *argv[4:]])
     assert code == 0 and "; replaced the report of 20" in err, err
     assert "(--out names another folder to keep both)" in err
+
+
+def test_the_invalid_points_warning_names_each_reason():
+    from mkm.cli.fem import _invalid_reasons
+    from mkm.fem.interface import Prediction
+
+    eps = np.array([0.05, 0.05, 0.05, 0.5])
+    prediction = Prediction("axisym", {"theta0_deg": 30.0}, np.ones(4), np.full(4, 30.0),
+                            np.full(4, 3.0), eps, np.ones(4), np.array([True, False, False, False]),
+                            np.array([True, False, True, True]), 0.0)
+    eps_max = 1 - 1 / (np.sqrt(3) * np.cos(np.deg2rad(30.0)))
+    assert _invalid_reasons(prediction) == (f"1 past the braid lock: eps >= eps_max "
+                                            f"{eps_max:.4g} at theta0 30 deg; 1 not converged; "
+                                            "1 outside the model's domain")
