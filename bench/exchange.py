@@ -251,7 +251,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     built = [_build(path, sha, g, m, tare, vented, accuracy or {})
              for g, m in zip(groups, muscles, strict=True)]
     if exported and len(built) == 1 and not accuracy:
-        built = [_restored(path, *built[0])]
+        built = [_restored(path, known, *built[0])]
     from mkm.bench.run import check_out_root
 
     check_out_root(out_root)
@@ -268,10 +268,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     return out
 
 
-def _restored(path: Path, meta, steps, samples, notes, shape):
+def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
     """mkm export's workbook as the run it was: its steps as recorded (set pressures, holds,
-    uncertainty budgets), its samples, its calibration and tare, each sheet checked as a run
-    folder's files are (:func:`mkm.bench.storage.checked_rows`)."""
+    uncertainty budgets), its samples, its calibration and tare (from ``known``, its metadata
+    sheet), each sheet checked as a run folder's files are
+    (:func:`mkm.bench.storage.checked_rows`)."""
     from mkm.bench.storage import SAMPLE_COLUMNS, STEP_COLUMNS, checked_rows
 
     sheets = {name: pd.read_excel(path, sheet_name=name, dtype={
@@ -290,7 +291,6 @@ def _restored(path: Path, meta, steps, samples, notes, shape):
             index=False)]
         notes.insert(0, f"{len(samples)} samples")
         shape = "export"
-    known = key_values(path, "metadata")
     for part in ("calibration", "tare"):
         restored = _unflattened(known, part)
         if restored:
