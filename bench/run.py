@@ -302,7 +302,8 @@ class BenchRun:
             self._observers.append(_Plot(self.config.muscle.id))
         self.acquisition = Acquisition(
             self.config, self.backend, self.recorder, stop_requested=self._pending_stop,
-            stop_time=self._stop_time, lease=self.lease, observers=self._observers)
+            stop_time=self._stop_time, lease=self.lease, observers=self._observers,
+            guard=self.signals.deferred)
         self.acquisition.command(0.0, "vent")
         self.backend.start()
         self._started = True

@@ -29,7 +29,8 @@ import signal
 import sys
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 
 STOP_SIGNAL_NAMES = ("SIGINT", "SIGTERM", "SIGHUP", "SIGBREAK")
 STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(signal, n))
@@ -87,6 +88,8 @@ class StopSignals:
         self._console_callback = None
         self._interrupt_main = interrupt_main
         self.active = False
+        self._deferring = False
+        self._deferred: StopSignal | None = None
 
     def __enter__(self) -> StopSignals:
         if threading.current_thread() is not threading.main_thread():
@@ -119,7 +122,27 @@ class StopSignals:
             return
         self.signal_at = now
         detail = "second Ctrl-C" if signum == signal.SIGINT else (self.console_event or "")
+        if self._deferring:
+            self._deferred = self._deferred or StopSignal(signum, detail)
+            return
         raise StopSignal(signum, detail)
+
+    @contextmanager
+    def deferred(self) -> Iterator[None]:
+        """Hold a stop signal that arrives inside until the block ends, then raise it.
+
+        For a block read from the device and its recording: a signal raised between the two
+        would lose samples the device no longer holds. The delay is the block's own: a DAQmx
+        read blocks in C, where no Python handler runs anyway.
+        """
+        self._deferring = True
+        try:
+            yield
+        finally:
+            self._deferring = False
+            stop, self._deferred = self._deferred, None
+            if stop is not None:
+                raise stop
 
     def hold(self) -> None:
         """Ignore every stop signal from now on (the shutdown must not be cut)."""

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 import time
+from contextlib import nullcontext
 
 from mkm.bench.backend import Backend, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
@@ -61,12 +62,15 @@ class Acquisition:
     ``mkm vent`` asking) or None; ``stop_time`` the ``time.monotonic()`` of the first request;
     ``observers`` get every block (``block(samples)``) for progress and plots.
     ``lease`` (a :class:`mkm.bench.unvented.BenchLease`) learns every commanded pressure.
+    ``guard`` makes the context that a block's read and its recording share (the run's
+    :meth:`mkm.bench.signals.StopSignals.deferred`: no signal between the two loses the block).
     """
 
     def __init__(self, config: BenchConfig, backend: Backend, recorder: Recorder,
                  stop_requested=lambda: None, stop_time=lambda: None, lease=None,
-                 observers=()):
+                 observers=(), guard=nullcontext):
         self.config = config
+        self.guard = guard
         self.backend = backend
         self.recorder = recorder
         self.stop_requested = stop_requested
@@ -95,9 +99,15 @@ class Acquisition:
         daq = self.config.daq
         self._reading = (phase, step, set_bar)
         timeouts = 0
+        trips: list[tuple[str, RunStatus]] = []
         while True:
             try:
-                block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
+                with self.guard():
+                    block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
+                    rows = [self._sample(block.first_index + k, volts, phase, step, set_bar,
+                                         trips) for k, volts in enumerate(block.volts)]
+                    self.recorder.samples(rows)
+                    self.next_index = block.first_index + len(block.volts)
                 break
             except ReadTimeout as exc:
                 timeouts += 1
@@ -112,11 +122,6 @@ class Acquisition:
                 self._pending_flags.append("timeout")
             except BufferOverflow as exc:
                 self._overflowed(exc)
-        trips: list[tuple[str, RunStatus]] = []
-        rows = [self._sample(block.first_index + k, volts, phase, step, set_bar, trips)
-                for k, volts in enumerate(block.volts)]
-        self.recorder.samples(rows)
-        self.next_index = block.first_index + len(block.volts)
         for observer in self.observers:
             observer.block(rows)
         if trips:

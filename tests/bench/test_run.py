@@ -1,6 +1,7 @@
 """bench.run on the simulated bench (virtual clock): sequence, settle logic, files, faults."""
 
 import json
+import signal
 
 import numpy as np
 import pandas as pd
@@ -248,6 +249,27 @@ def test_first_ctrl_c_stops_at_the_next_block(config, tmp_path):
     assert loaded.commands["purpose"].iloc[-1] == "vent"
     assert backend.commands[-1][1] == 0.0  # the device's last command is the vent
     assert loaded.meta["stop_to_vent_s"] < 0.05  # no waiting in between on the virtual clock
+
+
+def test_a_signal_while_a_block_is_read_keeps_the_block(config, tmp_path):
+    """SIGTERM arriving as the device hands over a block (after DAQmx has removed it from its
+    buffer): the block is recorded, then the run stops and vents; drain cannot find it again."""
+    backend = SimBackend(config)
+    original = backend.read
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:
+            signal.raise_signal(signal.SIGTERM)  # its handler runs before read returns
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True).execute()
+    loaded = load_run(result.path)
+    assert result.status == "aborted" and "SIGTERM" in result.reason
+    assert loaded.samples["sample"].iloc[-1] == 30  # the block in hand, nothing after
+    assert list(loaded.samples["sample"]) == list(range(31))
+    assert loaded.commands["purpose"].iloc[-1] == "vent" and backend.commands[-1][1] == 0.0
 
 
 def test_unexpected_error_is_recorded_and_raised(config, tmp_path):
