@@ -114,7 +114,9 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
     prov = provenance()
     settings = config.as_dict()
     meta.reprocessed_from = {
-        "path": str(source.path), "run_json_sha256": file_sha256(source.path / "run.json"),
+        # absolute: a path relative to where the command ran says nothing once elsewhere
+        "path": str(source.path.resolve()),
+        "run_json_sha256": file_sha256(source.path / "run.json"),
         "samples_sha256": file_sha256(samples_csv),
         "calibration": source.meta.calibration, "tare": source.meta.tare,
         "config_source": config.source, "date_utc": prov["date_utc"]}

@@ -1,6 +1,7 @@
 """bench.reprocess: a new calibration applied to a run's raw volts gives the forces it implies."""
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -35,7 +36,7 @@ def test_forces_follow_the_new_sensitivity(config, source, tmp_path):
     assert out.meta.tare["offset_V"] == pytest.approx(source.meta.tare["offset_V"], rel=1e-5)
     assert out.meta.calibration["loadcell"]["sensitivity_N_per_V"] == pytest.approx(215.7463)
     prov = out.meta.reprocessed_from
-    assert prov["path"] == str(source.path)
+    assert prov["path"] == str(source.path.resolve())
     assert prov["samples_sha256"] == file_sha256(source.path / "samples.csv")
     assert prov["calibration"]["loadcell"]["sensitivity_N_per_V"] == 196.133
     assert out.commands.equals(source.commands)
@@ -50,8 +51,20 @@ def test_reprocess_command_prints_the_new_folder(config, source, tmp_path, capsy
     path = capsys.readouterr().out.strip()
     meta = json.loads((tmp_path / "new" / path.split("/")[-1] / "run.json").read_text())
     assert meta["calibration"]["loadcell"]["sensitivity_N_per_V"] == 200.0
-    assert meta["reprocessed_from"]["path"] == str(source.path)
+    assert meta["reprocessed_from"]["path"] == str(source.path.resolve())
     assert main(["reprocess", str(tmp_path), "--config", str(toml)]) == 2  # not a run folder
+
+
+def test_the_source_of_a_reprocessed_run_is_recorded_by_its_absolute_path(
+        config, source, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(source.path.parent)
+    toml = tmp_path / "new.toml"
+    toml.write_text(config.text)
+    assert main(["reprocess", source.path.name, "--config", str(toml), "--out",
+                 str(tmp_path / "new")]) == 0
+    (folder,) = (tmp_path / "new").iterdir()
+    recorded = json.loads((folder / "run.json").read_text())["reprocessed_from"]["path"]
+    assert Path(recorded).is_absolute() and Path(recorded) == source.path.resolve()
 
 
 def test_a_loadcell_only_file_recalibrates_and_the_folder_says_reprocessed(source, tmp_path,
