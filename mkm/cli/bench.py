@@ -14,7 +14,7 @@ from __future__ import annotations
 import sys
 
 from mkm.cli.common import add_progress_argument, argtype, has_display, say, shared_help
-from mkm.core.ranges import parse_fraction, parse_number, parse_pressures
+from mkm.core.ranges import decimal_comma_reading, parse_fraction, parse_number, parse_pressures
 from mkm.paths import default_out
 
 EXIT_FAILED = 1
@@ -72,7 +72,7 @@ def register(subparsers) -> None:
     _add_device_arguments(acquire)
     acquire.add_argument("--eps", type=argtype(parse_fraction),
                          help=shared_help("--eps", "default: the config's"))
-    acquire.add_argument("--pressures", type=argtype(parse_pressures),
+    acquire.add_argument("--pressures",
                          help=shared_help("--pressures", "default: the config's"))
     acquire.add_argument("--out", default=str(default_out("runs")),
                          help="folder that receives the run folder (default %(default)s)")
@@ -123,7 +123,7 @@ def register(subparsers) -> None:
                        "print it when no FILE is given")
     check.add_argument("--eps", type=argtype(parse_fraction),
                        help=shared_help("--eps", "default: the config's"))
-    check.add_argument("--pressures", type=argtype(parse_pressures),
+    check.add_argument("--pressures",
                        help=shared_help("--pressures", "default: the config's"))
     check.set_defaults(func=_check)
 
@@ -163,6 +163,19 @@ def _config(args, **overrides):
     return load_config(args.config, backend=args.backend, **overrides)
 
 
+def _staircase(args):
+    """``--pressures`` in bar (None: the config's); a list that also reads as one number with
+    a decimal comma (``1,5``) is said to be the steps it is, before anything is pressurised."""
+    if args.pressures is None:
+        return None
+    values = parse_pressures(args.pressures)
+    single = decimal_comma_reading(args.pressures)
+    if single is not None:
+        say(args, "note", f"--pressures {args.pressures!r} is two steps, {values[0]:g} and "
+            f"{values[1]:g} bar; for one step at {single:g} bar write {single:g}")
+    return values
+
+
 def _hardware_config(args, command: str):
     """The config of a command that drives the bench at once (vent, tare, calibrate-loadcell):
     refused without ``--backend`` and without ``--config`` (the packaged example is simulated,
@@ -183,7 +196,7 @@ def _acquire(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.run import acquire, check_out_root
 
-    config = _config(args, eps=args.eps, pressures_bar=args.pressures)
+    config = _config(args, eps=args.eps, pressures_bar=_staircase(args))
     check_out_root(args.out)  # bad --out: one line, exit 2, before the device is opened
     plot = args.plot
     if plot and not has_display():
@@ -265,7 +278,7 @@ def _check(args) -> int:
         say(args, "note", f"the packaged example {example_config()}: set [daq] device and "
             "backend, the load cell's sensitivity, the regulator and the limits")
         return 0
-    config = _config(args, eps=args.eps, pressures_bar=args.pressures)
+    config = _config(args, eps=args.eps, pressures_bar=_staircase(args))
     try:
         text, warnings = check(config)
     except BenchError as exc:

@@ -117,6 +117,13 @@ def parse_range(text: str, name: str, unit: str | None = None) -> np.ndarray:
     return np.round(start + step * np.arange(int(count)), 12)
 
 
+def decimal_comma_reading(text: str) -> float | None:
+    """The number ``text`` is when its comma is a decimal comma (``"1,5"``: 1.5), or None: a
+    comma list of two whole numbers reads either way."""
+    match = re.fullmatch(r"\s*(\d+),(\d+)\s*", text)
+    return None if match is None else float(f"{match[1]}.{match[2]}")
+
+
 def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
     """``"start:stop:step"`` or a comma list, in bar (a number typed with another unit of
     pressure, ``250kPa``, converted); gauge pressures >= 0."""

@@ -96,6 +96,20 @@ def test_check_prints_the_plan(capsys):
     assert "," not in out.split("planned steps")[1].split("estimated")[0].replace(", ", "")
 
 
+def test_a_staircase_that_reads_as_a_decimal_comma_says_which_steps_it_is(capsys):
+    # '1,2' is the steps 1 and 2 bar, as in every mkm command; a lab that writes 1.2 bar as
+    # '1,2' learns it before the muscle is pressurised
+    assert main(["check", "--pressures", "1,2"]) == 0
+    captured = capsys.readouterr()
+    assert "up: 1, 2 bar" in captured.out
+    assert captured.err.strip() == ("mkm check: note: --pressures '1,2' is two steps, 1 and 2 "
+                                     "bar; for one step at 1.2 bar write 1.2")
+    assert main(["check", "--pressures", "0.5,1"]) == 0
+    assert "note" not in capsys.readouterr().err
+    assert main(["check", "--pressures", "1,x"]) == 2
+    assert capsys.readouterr().err.count("\n") == 1
+
+
 def test_aborted_run_report_states_steps_planned_and_done(tmp_path):
     # Issue 10: the writer stored a count, the reader expected a list, so every aborted run's
     # report said "of an unrecorded number planned". Interlock at 20 % of the 1961 N cell
