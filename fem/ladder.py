@@ -37,12 +37,14 @@ class Parameter:
     ``kind`` converts a spec's text (``float``, ``str`` or ``bool``); ``choices`` lists the
     values a text parameter may take (empty: any), or is a function that derives them (from the
     registry, when it is read); ``fraction`` marks a float that is a fraction, which a spec may
-    write as a percentage too (``tolerance=2%``)."""
+    write as a percentage too (``tolerance=2%``); ``unit`` is a float's unit, in which a spec's
+    number typed with another unit of its kind (``gap_mm=500um``) is converted."""
 
     description: str
     kind: type = float
     choices: tuple[str, ...] | Callable[[], tuple[str, ...]] = ()
     fraction: bool = False
+    unit: str | None = None
 
     def options(self) -> tuple[str, ...]:
         """The values a text parameter may take (empty: any)."""
@@ -66,8 +68,16 @@ class Parameter:
             try:
                 return float(value)
             except (TypeError, ValueError):
-                raise ValueError(f"{name}={value!r} is invalid: expected a number "
-                                 f"({self.description})") from None
+                pass
+            if isinstance(value, str):  # a unit, a decimal comma: read as the CLI's options are
+                from mkm.core.ranges import parse_number
+
+                try:
+                    return parse_number(value, name, self.unit)
+                except ValueError as exc:
+                    raise ValueError(f"{exc} ({self.description})") from None
+            raise ValueError(f"{name}={value!r} is invalid: expected a number "
+                             f"({self.description})")
         value = str(value)
         options = self.options()
         if options and value not in options:
@@ -77,12 +87,12 @@ class Parameter:
 
 
 # Parameters several models share, declared once
-THETA0 = Parameter("braid angle at rest [deg]; default calibrated")
-L0 = Parameter("length at rest [mm]; default 282")
-C10 = Parameter("rubber Mooney-Rivlin C10 [MPa]; default Silastic S (0.0694)")
-C01 = Parameter("rubber Mooney-Rivlin C01 [MPa]; default Silastic S (0.0628)")
+THETA0 = Parameter("braid angle at rest [deg]; default calibrated", unit="deg")
+L0 = Parameter("length at rest [mm]; default 282", unit="mm")
+C10 = Parameter("rubber Mooney-Rivlin C10 [MPa]; default Silastic S (0.0694)", unit="MPa")
+C01 = Parameter("rubber Mooney-Rivlin C01 [MPa]; default Silastic S (0.0628)", unit="MPa")
 GAP = Parameter("radial gap between tube and braid at rest [mm]; default the calibration's "
-                "(an identified muscle), else 0")
+                "(an identified muscle), else 0", unit="mm")
 MESH = Parameter(f"mesh level: {', '.join(MESH_LEVELS)} (default medium)", str,
                  tuple(MESH_LEVELS))
 #: the families whose models are static physics rungs (friction's static model, the rungs the
@@ -219,7 +229,7 @@ register(Entry(
     {"diameter": Parameter("inner (the paper's D0, default) or braid (D0 + 2 t0)", str,
                            ("inner", "braid")),
      "theta0_deg": THETA0,
-     "L0_mm": Parameter("length at rest [mm] (recorded only)")},
+     "L0_mm": Parameter("length at rest [mm] (recorded only)", unit="mm")},
     colour="tab:blue",
     study=(StudyVariant("eq2-inner", "eq2:diameter=inner"),
            StudyVariant("eq2-braid", "eq2:diameter=braid")),
@@ -253,12 +263,13 @@ register(Entry(
     {"static": Parameter("the static rung (default axisym)", str, static_names),
      "direction": Parameter("rising (default), falling or mean (the static force)", str,
                             ("rising", "falling", "mean")),
-     "hold_s": Parameter("time held at the pressure [s]; default 0, inf: relaxed"),
+     "hold_s": Parameter("time held at the pressure [s]; default 0, inf: relaxed", unit="s"),
      "hysteresis_fraction": Parameter("friction band half-width (a fraction); default "
                                       "calibrated, else 0", fraction=True),
      "creep_fraction": Parameter("share of the force creep relaxes (a fraction); default "
                                  "calibrated, else 0", fraction=True),
-     "creep_tau_s": Parameter("creep time constant [s]; default calibrated, else 30"),
+     "creep_tau_s": Parameter("creep time constant [s]; default calibrated, else 30",
+                              unit="s"),
      "mesh": MESH, "L0_mm": L0, "theta0_deg": THETA0, "C10_MPa": C10, "C01_MPa": C01},
     colour="tab:brown", expensive=True,
     contract_spec="friction:static=thickwall,hysteresis_fraction=0.03,creep_fraction=0.02,"

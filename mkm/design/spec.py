@@ -97,15 +97,19 @@ def parse_requirement(text: str, name: str = "--require") -> Requirement:
     force, pressure, eps = match.groups()
     # as typed, unit included: the pattern took the N and bar off ("300kN" would be "300k")
     typed_force, _, rest = str(text).partition("@")
-    typed = {"force": (force, typed_force.strip(), "newtons (N)"),
-             "pressure": (pressure, rest.split(",")[0].strip(), "bar")}
+    typed = {"force": (force, typed_force.strip(), "N", "newtons (N)", "0.4kN"),
+             "pressure": (pressure, rest.split(",")[0].strip(), "bar", "bar", "200kPa")}
     numbers = {}
-    for what, (number, shown, unit) in typed.items():
+    for what, (number, shown, unit, unit_name, other) in typed.items():
         try:
             numbers[what] = parse_number(number, f"{name} {what}")
         except ValueError:
-            raise ValueError(f"{name} {text!r}: {what} {shown!r}: expected a finite number of "
-                             f"{unit}, for example 400N@2bar,eps=0.10") from None
+            try:  # another unit of its kind, converted as the CLI's options are (0.4kN, 200kPa)
+                numbers[what] = parse_number(shown, f"{name} {what}", unit)
+            except ValueError:
+                raise ValueError(f"{name} {text!r}: {what} {shown!r}: expected a finite "
+                                 f"number of {unit_name} (or with a unit of its kind, {other}),"
+                                 " for example 400N@2bar,eps=0.10") from None
     return Requirement(numbers["force"], numbers["pressure"],
                        parse_fraction(eps, f"{name} {text!r}: eps"))
 

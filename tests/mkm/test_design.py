@@ -48,12 +48,17 @@ def test_requirement_syntax():
     assert parse_requirement(" 400 N @ 2 bar , eps = 10% ") == Requirement(400.0, 2.0, 0.10)
     with pytest.raises(ValueError, match="malformed: expected FORCE N@PRESSURE bar,eps=EPS"):
         parse_requirement("400N at 2bar")
-    # another unit is named as typed, not with its N or bar taken off ("300k")
-    with pytest.raises(ValueError, match=r"force '0\.4kN': expected a finite number of "
-                       r"newtons \(N\), for example 400N@2bar"):
-        parse_requirement("0.4kN@2bar,eps=0.1")
-    with pytest.raises(ValueError, match="pressure '200kPa': expected a finite number of bar"):
-        parse_requirement("400N@200kPa,eps=0.1")
+    # another unit of its kind is converted, as --D0 282mm is (0.4 kN, 200 kPa = 2 bar,
+    # 29 psi = 1.99948 bar); one of another kind is named as typed, not with its N or bar
+    # taken off ("300k")
+    assert parse_requirement("0.4kN@200kPa,eps=0.1") == Requirement(400.0, 2.0, 0.1)
+    assert parse_requirement("400N@29psi,eps=0.1").pressure_bar == pytest.approx(1.99948,
+                                                                                 rel=1e-5)
+    with pytest.raises(ValueError, match=r"force '400bar': expected a finite number of "
+                       r"newtons \(N\) \(or with a unit of its kind, 0\.4kN\), for example"):
+        parse_requirement("400bar@2bar,eps=0.1")
+    with pytest.raises(ValueError, match="pressure '2N': expected a finite number of bar"):
+        parse_requirement("400N@2N,eps=0.1")
     with pytest.raises(ValueError, match="force -5 N is invalid"):
         parse_requirement("-5N@2bar,eps=0.1")
     # the requirement as typed, not its eps alone under the option's name ('--require 10')

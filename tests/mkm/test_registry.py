@@ -21,6 +21,13 @@ from mkm.registry import describe, entries, parse_spec, parse_specs
     ("friction:static=thickwall,hysteresis_fraction=3%", "friction",
      {"static": "thickwall", "hysteresis_fraction": 0.03},
      "friction:hysteresis_fraction=0.03,static=thickwall"),
+    # a number typed with a unit of its kind, as the CLI's --D0 282mm: converted by pint into
+    # the unit the name gives (500 um = 0.5 mm, 100 kPa = 0.1 MPa, 2 min = 120 s)
+    ("thickwall:gap_mm=500um,C10_MPa=100kPa,theta0_deg=0.5rad", "thickwall",
+     {"gap_mm": 0.5, "C10_MPa": 0.1, "theta0_deg": pytest.approx(28.6478897565)},
+     "thickwall:C10_MPa=0.1,gap_mm=0.5,theta0_deg=28.6478897565"),
+    ("friction:static=thickwall,hold_s=2min", "friction",
+     {"static": "thickwall", "hold_s": 120.0}, "friction:hold_s=120,static=thickwall"),
 ])
 def test_spec_round_trip(text, name, params, canonical):
     spec = parse_spec(text)
@@ -40,6 +47,8 @@ def test_comma_lists_keep_parameters_with_their_model():
     ("axisym:grid=1", "unknown parameter 'grid': expected some of mesh, theta0_deg, L0_mm, "
                       "C10_MPa, C01_MPa, braid"),
     ("", "unknown model ''"),
+    ("thickwall:gap_mm=0.5kPa", "gap_mm='0.5kPa': 'kPa' is not a unit of the same kind as mm"),
+    ("thickwall:gap_mm=abc", r"gap_mm='abc' is not a number \(radial gap"),
 ])
 def test_bad_specs_name_the_bad_part(text, message):
     with pytest.raises(ValueError, match=message):
