@@ -248,8 +248,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
     sha = file_sha256(path)
-    built = [_build(path, sha, g, m, tare, vented, accuracy or {})
-             for g, m in zip(groups, muscles, strict=True)]
+    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override)
+             for g, (m, override) in zip(groups, muscles, strict=True)]
     if exported and len(built) == 1 and not accuracy:
         built = [_restored(path, known, *built[0])]
     from mkm.bench.run import check_out_root
@@ -427,12 +427,24 @@ def _single(group: _Group, role: str) -> float:
 
 
 def _muscle(given: dict, group: _Group):
-    """The muscle of one state: the table's L0 and eps (or length) over the ones given."""
+    """The muscle of one state: the table's L0 and eps (or length) over the ones given, but
+    ``--L0`` over the table's L0 where its held lengths give eps anew; and what was
+    overridden (a note, or None)."""
     where = f"{group.table.source.name} ({group.state}): "
     values = dict(given)
+    override = None
     if "L0" in group.columns:
-        values["L0_mm"] = _single(group, "L0")
-    if "eps" in group.columns:
+        table_L0 = _single(group, "L0")
+        values["L0_mm"] = table_L0
+        if (given.get("L0_mm") is not None and "length" in group.columns
+                and not math.isclose(float(given["L0_mm"]), table_L0, rel_tol=1e-9)):
+            # a catalogue muscle's nominal length over the table's longest: the held lengths
+            # are measured, their eps follows from the rest length
+            values["L0_mm"] = float(given["L0_mm"])
+            override = (f"L0 {values['L0_mm']:g} mm from --L0 over the table's "
+                        f"{table_L0:g} mm (column {group.columns['L0'].header!r}): eps "
+                        f"from the held lengths (column {group.columns['length'].header!r})")
+    if "eps" in group.columns and override is None:
         values["eps"] = _single(group, "eps")
         column = group.columns["eps"]
         if column.unit is None and 1 <= values["eps"] < 100:
@@ -453,10 +465,12 @@ def _muscle(given: dict, group: _Group):
         column = next((group.columns[r] for r in roles if r in group.columns), None)
         if column is not None and given.get(key) is not None and not math.isclose(
                 float(given[key]), float(values[key]), rel_tol=1e-9, abs_tol=1e-12):
+            other = (" (--L0 replaces the table's L0 where a length column gives eps anew)"
+                     if key == "L0_mm" else "")
             raise ValueError(f"{where}{option} {float(given[key]):g} conflicts with the "
                              f"table's {key} {float(values[key]):g} (column "
                              f"{column.header!r}): expected one of them; without {option} "
-                             "the table's is used")
+                             f"the table's is used{other}")
     for key, option in (("id", "--id"), ("D0_mm", "--D0"), ("t0_mm", "--t0"),
                         ("L0_mm", "--L0"), ("eps", "--eps")):
         if values.get(key) is None:
@@ -466,14 +480,16 @@ def _muscle(given: dict, group: _Group):
         values = {k: (v if k == "id" else float(v)) for k, v in values.items()}
     except (TypeError, ValueError):
         raise ValueError(f"{where}the muscle {values} has a value that is not a number") from None
-    return muscle_from_dict(values, where.rstrip(": "))
+    return muscle_from_dict(values, where.rstrip(": ")), override
 
 
-def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy):
-    """The run record, steps, samples, notes and shape of one muscle state."""
+def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
+           override=None):
+    """The run record, steps, samples, notes and shape of one muscle state (``override``: what
+    an option replaced of the table, said first)."""
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), group.values("force")
-    notes, handling = [], {}
+    notes, handling = ([override], {"L0": override}) if override else ([], {})
     timed = "time" in found
     if timed:
         time_s = group.values("time")

@@ -413,8 +413,9 @@ def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
     # taken over them
     ("P,F,eps\n1,2,0.1\n", [], "lab.csv (eps 0.1): --eps 0 conflicts with the table's eps 0.1 "
      "(column 'eps'): expected one of them; without --eps the table's is used"),
-    ("P,F,L0_mm,length\n1,2,250,250\n", [], "--L0 282 conflicts with the table's L0_mm 250 "
-     "(column 'L0_mm')"),
+    ("P,F,L0_mm,eps\n1,2,250,0\n", [], "--L0 282 conflicts with the table's L0_mm 250 "
+     "(column 'L0_mm'): expected one of them; without --L0 the table's is used (--L0 replaces "
+     "the table's L0 where a length column gives eps anew)"),
 ])
 def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
@@ -424,6 +425,21 @@ def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     assert code == 2 and out == "" and err.count("\n") == 1, err
     assert message in err
     assert not (tmp_path / "runs").exists()  # nothing written
+
+
+def test_l0_given_replaces_the_tables_and_the_held_lengths_give_eps(tmp_path, mkm_cli):
+    # a catalogue muscle's nominal length over the table's longest (the DMSP-20-300 read at
+    # 300 mm, docs/guide/threshold.md): eps = (282 - L) / 282 from the measured lengths, the
+    # table's own eps column (against its 250 mm) set aside, and both said
+    path = tmp_path / "lab.csv"
+    path.write_text("P,F,L0_mm,length,eps\n1,2,250,250,0\n2,5,250,250,0\n"
+                    "1,1,250,240,0.04\n2,3,250,240,0.04\n")
+    runs, err = _import(mkm_cli, path, "--id", "m", "--D0", "30", "--t0", "3", "--L0", "282")
+    assert sorted(r.meta.muscle.eps for r in runs) == pytest.approx([32 / 282, 42 / 282])
+    assert {r.meta.muscle.L0_mm for r in runs} == {282.0}
+    note = ("L0 282 mm from --L0 over the table's 250 mm (column 'L0_mm'): eps from the held "
+            "lengths (column 'length')")
+    assert err.count(note) == 2 and all(r.meta.imported_from["L0"] == note for r in runs)
 
 
 def test_calibrate_reads_an_imported_run(tmp_path, mkm_cli):
