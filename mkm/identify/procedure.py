@@ -34,6 +34,7 @@ import numpy as np
 from mkm.fem.batch import Runner
 from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import MODELS, STATIC_FAMILIES
+from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.options import BRAIDS
 from mkm.fem.paper import equation7_err_pct
@@ -254,6 +255,20 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         notes += _outside_box(caught)
         if rubber["separated"]:
             best, boot, terms = free, free_boot, free_terms
+            ratio, (_, top) = rubber["ratio_C01_over_C10"], PRACTICAL_RANGE.C01_per_C10
+            if fitting.at_edge(free.values["c01_fraction"], free.bounds["c01_fraction"]):
+                # a Festo membrane pushes it to 9: fits best there, but the box set the number
+                notes.append(f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs "
+                             "want more of C01 than the box allows, so the ratio "
+                             "is the box's, not measured, and its interval is cut there")
+            if ratio > top:
+                notes.append(f"the identified rubber's C01/C10 {ratio:.3g} is above the "
+                             f"practical range's {top:g} (`mkm models`): every model "
+                             "extrapolates with it and the surrogate cannot answer for it")
+        elif "why" in rubber:
+            notes.append(f"C10 and C01 not separated: {rubber['why']}: one rubber scale at "
+                         f"Silastic S's ratio {SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa:.3g} "
+                         "assumed")
         elif rubber.get("rejects_silastic_ratio") and rubber.get("braid_in_doubt"):
             low, high = rubber["ratio_ci"]
             notes.append(f"the runs reject Silastic S's C01/C10 (95 % interval {low:.3g}-"
