@@ -132,7 +132,12 @@ def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[P
     needed; ``last`` moved last, so its presence means the rest is there), and the temporary
     folder removed. On any error or interrupt the temporary folder is removed and ``out`` is left
     as it was: a full disk or a Ctrl-C leaves no partial output. Files of ``out`` that the block
-    did not write are left alone."""
+    did not write are left alone.
+
+    The files it replaces are moved aside first, all of them before any new one comes in: on
+    Windows a file another program holds open (a summary.csv shown in Excel) cannot be moved,
+    and the old ones already moved go back, so ``out`` never mixes this run's files with the
+    last one's."""
     import shutil
     import tempfile
 
@@ -149,13 +154,43 @@ def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[P
         if last in names:
             names.remove(last)
             names.append(last)
-        for name in names:
-            try:
-                os.replace(stage / name, out / name)
-            except OSError as exc:
-                raise type(exc)(exc.errno, exc.strerror, str(out / name)) from None
+        _swap_in(stage, out, names)
     finally:
         shutil.rmtree(stage, ignore_errors=True)
+
+
+def _swap_in(stage: Path, out: Path, names: list[str]) -> None:
+    """Move ``names`` from ``stage`` into ``out``, the files they replace moved aside into
+    ``stage``'s ``.old`` first; an error restores ``out`` as it was and is raised naming the
+    file in ``out``."""
+    aside = stage / ".old"
+    aside.mkdir()
+    moved_aside: list[str] = []
+    moved_in: list[str] = []
+    try:
+        for name in names:
+            if (out / name).exists() or (out / name).is_symlink():
+                _move(out / name, aside / name, out / name)
+                moved_aside.append(name)
+        for name in names:
+            _move(stage / name, out / name, out / name)
+            moved_in.append(name)
+    except BaseException:
+        for name in moved_in:
+            (out / name).unlink(missing_ok=True)
+        for name in moved_aside:
+            os.replace(aside / name, out / name)
+        raise
+
+
+def _move(source: Path, target: Path, named: Path) -> None:
+    try:
+        os.replace(source, target)
+    except OSError as exc:  # named by the user's file; on Windows mostly one held open
+        detail = exc.strerror or str(exc)
+        if sys.platform == "win32" and isinstance(exc, PermissionError):
+            detail += " (open in another program? close it there)"
+        raise type(exc)(exc.errno, detail, str(named)) from None
 
 
 def write_json_atomic(path: str | os.PathLike, data: Any) -> Path:

@@ -164,3 +164,35 @@ def test_a_sidecar_never_replaces_a_json_of_the_users(tmp_path):
                                        {**records.provenance(), "run": value})
     assert (tmp_path / "s.csv").read_text(encoding="utf-8") == "a\n2\n"
     assert '"run": "2"' in (tmp_path / "s.json").read_text(encoding="utf-8")
+
+
+def test_a_staged_folder_replaces_all_its_files_or_none(tmp_path, monkeypatch):
+    # Windows cannot move a file another program holds open (a summary shown in Excel): the
+    # old files already moved aside come back, none of the new ones stays, the error names it
+    out = tmp_path / "report"
+    out.mkdir()
+    for name in ("a.csv", "b.csv", "mine.txt"):
+        (out / name).write_text(f"old {name}")
+    replace = os.replace
+
+    def held_open(source, target):
+        if os.fspath(out / "b.csv") in (os.fspath(source), os.fspath(target)):
+            raise PermissionError(13, "Permission denied")
+        replace(source, target)
+
+    monkeypatch.setattr(records.os, "replace", held_open)
+    with pytest.raises(PermissionError) as raised:
+        with records.staged_folder(out, last="report.html") as stage:
+            for name in ("a.csv", "b.csv", "report.html"):
+                (stage / name).write_text(f"new {name}")
+    assert raised.value.filename == str(out / "b.csv")
+    assert {p.name: p.read_text() for p in out.iterdir()} == {
+        "a.csv": "old a.csv", "b.csv": "old b.csv", "mine.txt": "old mine.txt"}
+    assert [p.name for p in tmp_path.iterdir()] == ["report"]  # no staging folder left
+    monkeypatch.setattr(records.os, "replace", replace)
+    with records.staged_folder(out, last="report.html") as stage:
+        for name in ("a.csv", "report.html"):
+            (stage / name).write_text(f"new {name}")
+    assert {p.name: p.read_text() for p in out.iterdir()} == {
+        "a.csv": "new a.csv", "b.csv": "old b.csv", "mine.txt": "old mine.txt",
+        "report.html": "new report.html"}
