@@ -475,12 +475,28 @@ def _muscle(given: dict, group: _Group):
                         ("L0_mm", "--L0"), ("eps", "--eps")):
         if values.get(key) is None:
             raise ValueError(f"{where}no {key}: give {option} (the table has no "
-                             f"{'eps or length' if key == 'eps' else key} column)")
+                             f"{'eps or length' if key == 'eps' else key} column"
+                             f"{_look_alike(group, key)})")
     try:
         values = {k: (v if k == "id" else float(v)) for k, v in values.items()}
     except (TypeError, ValueError):
         raise ValueError(f"{where}the muscle {values} has a value that is not a number") from None
     return muscle_from_dict(values, where.rstrip(": ")), override
+
+
+#: header stems of the columns a table may hold the tube's size in under another name
+SIZE_STEMS = {"D0_mm": ("d0", "diameter", "inner diameter"), "t0_mm": ("t0", "wall", "thickness")}
+
+
+def _look_alike(group: _Group, key: str) -> str:
+    """``; its column 'D0_nominal_mm' holds 20`` for a column left unrecognised whose name
+    reads as ``key`` (a catalogue's nominal diameter): the value to check and give."""
+    table = group.table
+    for k, header in enumerate(table.header):
+        name = str(header or "").strip().lower()
+        if header in group.recognition.ignored and name.startswith(SIZE_STEMS.get(key, ())):
+            return f"; its column {header!r} holds {table.rows[int(group.rows[0])][k]}"
+    return ""
 
 
 def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,

@@ -427,6 +427,20 @@ def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     assert not (tmp_path / "runs").exists()  # nothing written
 
 
+def test_a_size_under_another_name_is_pointed_at(tmp_path, mkm_cli):
+    # a catalogue's nominal diameter is not silently taken for the tube's: named, to be given
+    path = tmp_path / "lab.csv"
+    path.write_text("P,F,D0_nominal_mm,wall thickness (mm)\n1,2,20,1.8\n2,5,20,1.8\n")
+    code, out, err = mkm_cli(["import", str(path), "--id", "m", "--L0", "300", "--eps", "0"])
+    assert code == 2 and err.count("\n") == 1
+    assert "no D0_mm: give --D0 (the table has no D0_mm column; its column 'D0_nominal_mm' " \
+        "holds 20)" in err
+    code, out, err = mkm_cli(["import", str(path), "--id", "m", "--L0", "300", "--eps", "0",
+                              "--D0", "20"])
+    assert "no t0_mm: give --t0 (the table has no t0_mm column; its column 'wall thickness " \
+        "(mm)' holds 1.8)" in err
+
+
 def test_l0_given_replaces_the_tables_and_the_held_lengths_give_eps(tmp_path, mkm_cli):
     # a catalogue muscle's nominal length over the table's longest (the DMSP-20-300 read at
     # 300 mm, docs/guide/threshold.md): eps = (282 - L) / 282 from the measured lengths, the
