@@ -118,7 +118,7 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
             f.write(data.encode("utf-8") if isinstance(data, str) else data)
             f.flush()
             os.fsync(f.fileno())
-        os.replace(tmp, path)
+        _move(Path(tmp), path, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise

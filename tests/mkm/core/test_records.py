@@ -196,3 +196,20 @@ def test_a_staged_folder_replaces_all_its_files_or_none(tmp_path, monkeypatch):
     assert {p.name: p.read_text() for p in out.iterdir()} == {
         "a.csv": "new a.csv", "b.csv": "old b.csv", "mine.txt": "old mine.txt",
         "report.html": "new report.html"}
+
+
+def test_a_file_windows_holds_open_is_named_with_what_to_do(tmp_path, monkeypatch):
+    target = tmp_path / "summary.csv"
+    target.write_text("old")
+
+    def held_open(source, destination):
+        raise PermissionError(13, "Permission denied", os.fspath(source), None,
+                              os.fspath(destination))
+
+    monkeypatch.setattr(records.os, "replace", held_open)
+    monkeypatch.setattr(records.sys, "platform", "win32")
+    with pytest.raises(PermissionError) as raised:
+        records.write_atomic(target, "new")
+    assert raised.value.filename == str(target)
+    assert raised.value.strerror == "Permission denied (open in another program? close it there)"
+    assert target.read_text() == "old" and [p.name for p in tmp_path.iterdir()] == ["summary.csv"]
