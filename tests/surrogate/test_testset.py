@@ -1,3 +1,5 @@
+import re
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -66,6 +68,22 @@ def test_eq2_error_on_muscle_III_is_what_equation_7_says(thickwall_reference):
     expected = np.max(np.abs(100 * (sweep["force_N"] - eq2) / sweep["force_N"].max()))
     got = summary.set_index("muscle").loc["III", "max_abs_err_pct"]
     assert got == pytest.approx(expected, rel=1e-9)
+
+
+def test_reference_without_its_columns_is_named(thickwall_reference, tmp_path):
+    # Excel's ';' export reads as one column: `mkm surrogate test --reference` ended in a
+    # KeyError traceback naming 'converged'
+    table = pd.read_csv(thickwall_reference, comment="#")
+    path = tmp_path / "semicolons.csv"
+    table.to_csv(path, index=False, sep=";", lineterminator="\r\n")
+    with pytest.raises(ValueError, match=re.escape(
+            f"FE reference {str(path)!r} lacks column(s) muscle, pressure_bar, D0_mm, t0_mm, "
+            "eps, force_N: expected a CSV with columns muscle,pressure_bar,D0_mm,t0_mm,eps,"
+            "force_N (as `mkm surrogate reference` writes it)")):
+        read_fe_reference(path)
+    # published forces carry no solver flags: read as they are, every point kept
+    table.drop(columns=["converged", "valid"]).to_csv(path, index=False)
+    assert read_fe_reference(path)["force_N"].tolist() == table["force_N"].tolist()
 
 
 def test_reference_with_failed_points_is_refused(thickwall_reference, tmp_path):
