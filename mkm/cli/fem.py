@@ -172,7 +172,7 @@ def _solve(args) -> int:
         from mkm.verdict import model_label
 
         print(explain(prediction, label=model_label), file=sys.stderr)
-    emit_prediction(prediction, args.out)
+    emit_prediction(prediction, args.out, model)
     outside = _outside_practical_range(prediction, args.D0, args.t0)
     if outside:  # computed all the same (inside LIMITS it is a muscle), but never validated
         say(args, "warning", f"outside the practical range every model is validated over "

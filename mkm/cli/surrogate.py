@@ -303,7 +303,7 @@ def _predict(args) -> int:
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
         say(args, "warning", w.message)
-    emit_prediction(prediction, args.out)
+    emit_prediction(prediction, args.out, model)
     summary_line("surrogate predict", f"{prediction.force_N.size} points of {model.name} in "
                  f"{1e3 * prediction.seconds:.2f} ms, {int((~prediction.valid).sum())} flagged "
                  "outside the training domain")
