@@ -14,9 +14,11 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.records import (
+    file_sha256,
     package_file,
     provenance,
     read_prediction_header,
+    source_version,
     write_csv_with_sidecar,
 )
 from mkm.fem import paper
@@ -146,8 +148,16 @@ def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE
         summaries.append(summary.assign(model=name))
     points = pd.concat(all_points, ignore_index=True)
     summary = pd.concat(summaries, ignore_index=True)
-    summary.to_csv(out_dir / "test_muscles.csv", index=False, float_format="%.6g")
-    points.to_csv(out_dir / "test_muscles_points.csv", index=False, float_format="%.6g")
+    # provenance: the reference read, each model and the code behind it, the command
+    info = {"reference": str(reference_path), "reference_sha256": file_sha256(reference_path),
+            "reference_params": reference.attrs.get("params", {}),
+            "models": {name: {"model": model.name, "params": model.params(),
+                              "version": source_version(type(model).__module__)}
+                       for name, model in models.items()}, **provenance()}
+    info = json.loads(json.dumps(info, default=str))
+    for name, frame in (("test_muscles.csv", summary), ("test_muscles_points.csv", points)):
+        write_csv_with_sidecar(out_dir / name, frame.to_csv(index=False, float_format="%.6g",
+                                                             lineterminator="\n"), info)
     (out_dir / "test_muscles.md").write_text(markdown_table(summary), encoding="utf-8")
     return summary
 

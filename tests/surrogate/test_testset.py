@@ -56,6 +56,15 @@ def test_model_against_itself_has_zero_error(thickwall_reference, tmp_path):
         assert (tmp_path / name).stat().st_size > 0
     table = (tmp_path / "test_muscles.md").read_text()
     assert "| paper, 3 x 100 ReLU (its FE) | 6.55 | 7.92 | 9.34 |" in table
+    # provenance beside each CSV (was none): the reference read, the model and its code
+    from mkm.core.records import file_sha256, source_version
+
+    for name in ("test_muscles.csv", "test_muscles_points.csv"):
+        info = read_prediction_header(tmp_path / name)
+        assert info["reference_sha256"] == file_sha256(thickwall_reference)
+        assert info["models"]["thickwall"]["version"] == source_version("mkm.fem.thickwall")
+        assert info["models"]["thickwall"]["params"] == model.params()
+        assert {"date_utc", "command", "versions"} <= set(info)
 
 
 def test_eq2_error_on_muscle_III_is_what_equation_7_says(thickwall_reference):
