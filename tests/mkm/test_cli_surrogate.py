@@ -16,6 +16,15 @@ def test_grid_small_run(thickwall_dataset, tmp_path, capsys):
     table = pd.read_csv(out / "paper_grid.csv").set_index("variant")
     assert list(table["paper_valid_N"]) == [421.37, 421.37]  # Table 2 beside ours
     assert (out / "paper_grid.md").exists() and (out / "paper_grid.png").exists()
+    # provenance beside both CSVs (was none: a comment in the .md without the command)
+    from mkm.core.records import file_sha256, read_prediction_header, source_version
+
+    for name in ("paper_grid.csv", "paper_grid_runs.csv"):
+        info = read_prediction_header(out / name)
+        assert info["dataset_sha256"] == file_sha256(thickwall_dataset)
+        assert info["seeds"] == [0] and info["nets"] == [10]
+        assert info["code_version"] == source_version("mkm.surrogate.paper_grid")
+        assert {"command", "date_utc", "versions"} <= set(info)
     # The paper's failure and its fix: tanh with the response in N predicts about the mean
     # (forces spread over ~500 N, RMSE of the mean ~500 N); standardising the response fixes
     # it (measured: ~300 N against ~10 N; the 5x factor leaves room for other seeds).
