@@ -283,6 +283,21 @@ def test_convergence_past_the_braid_lock_says_why_its_forces_are_nan(mkm_run, tm
     assert frame["failure"].str.contains("locking angle").all()
 
 
+def test_convergence_below_the_threshold_says_why_there_is_no_force_change(mkm_run, tmp_path):
+    # muscle I held at eps 10 % pulls nothing below its threshold P* (about 0.3 bar: the wall
+    # is stretched first): 0 N on every mesh, and the change 0/0; was a column of NaN, no word
+    code, out, err = mkm_run(["fem", "convergence", "--eps", "0.1", "--pressure", "0.1",
+                              "--out", str(tmp_path)])
+    frame = pd.read_csv(tmp_path / "mesh_convergence.csv")
+    assert code == 0 and (frame["force_N"] == 0).all() and frame["converged"].all()
+    threshold = frame["threshold_pressure_bar"].iloc[-1]
+    assert 0.1 < threshold < 0.5
+    assert err.splitlines()[-1] == (
+        "mkm fem convergence: warning: force 0 N on every mesh: 0.1 bar is below the threshold "
+        f"pressure ({threshold:.4g} bar on the finest mesh), so force_change_vs_finest is "
+        "empty; compare threshold_pressure_bar, or give a --pressure above it")
+
+
 @pytest.mark.parametrize("pressure", ["100", "-1", "8.5"])
 def test_convergence_pressure_is_within_the_practical_range(pressure, mkm_run, tmp_path):
     # 100 bar ran the three meshes (minutes) for a muscle no lab runs
