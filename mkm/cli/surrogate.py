@@ -91,8 +91,9 @@ def register(subparsers) -> None:
                       help="also train this kind on --dataset and test it (repeatable)")
     _dataset_argument(test)
     _accept_argument(test)
-    test.add_argument("--reference", help="FE reference CSV (default "
-                      "data/reference/fe_test_muscles.csv)")
+    test.add_argument("--reference", help="FE reference CSV (default: the shipped one, "
+                      "surrogate/data/fe_test_muscles.csv, from `mkm surrogate reference "
+                      "--update-shipped`)")
     test.add_argument("--out", default=str(default_out("surrogate-test")),
                       help="folder (default %(default)s)")
     test.set_defaults(func=_test)

@@ -164,3 +164,17 @@ def test_predict_takes_the_spec_its_warning_names(tmp_path, capsys):
                  "10", "--t0", "1.5", "--eps", "0.1"]) == 2
     assert "expected a folder written by `mkm surrogate train`, default, or " \
         "surrogate:kind=KIND" in capsys.readouterr().err
+
+
+def test_test_help_names_the_reference_it_reads(capsys):
+    # the help named data/reference/fe_test_muscles.csv, a file that does not exist
+    from pathlib import Path
+
+    from mkm.surrogate.testset import FE_REFERENCE
+
+    with pytest.raises(SystemExit):
+        main(["surrogate", "test", "--help"])
+    shipped = Path(FE_REFERENCE)
+    named = f"{shipped.parent.parent.name}/{shipped.parent.name}/{shipped.name}"
+    assert named == "surrogate/data/fe_test_muscles.csv" and shipped.is_file()
+    assert named in " ".join(capsys.readouterr().out.split())
