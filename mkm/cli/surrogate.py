@@ -312,16 +312,17 @@ def _predict(args) -> int:
 
 
 def _test(args) -> int:
-    from mkm.surrogate.testset import FE_REFERENCE, run_test
+    from mkm.surrogate.testset import FE_REFERENCE, read_fe_reference, run_test
     from mkm.surrogate.train import train_surrogate
 
+    reference = args.reference or FE_REFERENCE
+    read_fe_reference(reference)  # a bad reference is named before minutes of training
     paths = args.model or ([] if args.kind else ["default"])
     models = {_label(path): _load(path, args.calibration, args.accept_mismatch,
                                   not args.no_progress) for path in paths}
     models.update({kind: train_surrogate(kind, _dataset(args), splits=0,
                                          progress=not args.no_progress)
                    for kind in args.kind or []})
-    reference = args.reference or FE_REFERENCE
     summary = run_test(models, args.out, reference)
     _figure6(Path(args.out), reference)
     print(summary.to_string(index=False, float_format=lambda v: f"{v:.3g}"))

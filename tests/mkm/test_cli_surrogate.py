@@ -178,3 +178,23 @@ def test_test_help_names_the_reference_it_reads(capsys):
     named = f"{shipped.parent.parent.name}/{shipped.parent.name}/{shipped.name}"
     assert named == "surrogate/data/fe_test_muscles.csv" and shipped.is_file()
     assert named in " ".join(capsys.readouterr().out.split())
+
+
+def test_test_names_a_bad_reference_before_training(tmp_path, capsys, monkeypatch):
+    # `--kind gp` trains for minutes before the reference was read; a reference missing its
+    # columns must be named at once, nothing trained, nothing written
+    import mkm.surrogate.train
+
+    def no_training(*args, **kwargs):
+        raise AssertionError("trained before the reference was read")
+
+    monkeypatch.setattr(mkm.surrogate.train, "train_surrogate", no_training)
+    bad = tmp_path / "reference.csv"
+    bad.write_text("muscle;pressure_bar;force_N\r\nI;1,0;366,9\r\n")
+    out = tmp_path / "out"
+    assert main(["surrogate", "test", "--kind", "gp", "--reference", str(bad), "--out",
+                 str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"mkm surrogate test: error: FE reference {str(bad)!r} lacks "
+                          "column(s) muscle, pressure_bar, D0_mm, t0_mm, eps, force_N")
+    assert err.count("\n") == 1 and not out.exists()
