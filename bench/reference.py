@@ -16,8 +16,9 @@ import pandas as pd
 
 from mkm.bench.folders import PATTERN_CHARACTERS, is_run_folder, run_folders
 from mkm.bench.storage import load_run
+from mkm.bench.tables import read_tables
 from mkm.core.records import file_sha256
-from mkm.fem.calibration import check_reference, read_reference
+from mkm.fem.calibration import check_reference
 
 
 def calibration_reference(path) -> tuple[pd.DataFrame, str, str | None]:
@@ -42,10 +43,23 @@ def calibration_reference(path) -> tuple[pd.DataFrame, str, str | None]:
         path = runs[0]
     if not path.is_dir():
         sha = file_sha256(path) if path.is_file() else None
-        return read_reference(path), path.name, sha
+        return check_reference(_table(path), str(path)), path.name, sha
     frame, sha = _run_steps(path)
     reference = check_reference(frame, f"run {path} (settled steps of steps.csv)")
     return reference, f"run {path.name}", sha
+
+
+def _table(path: Path) -> pd.DataFrame:
+    """A reference table as a lab's spreadsheet saves it (:func:`mkm.bench.tables.read_tables`:
+    separator ``,``, ``;`` or tab, decimal commas, CRLF, ``#`` comments, or an ``.xlsx``), its
+    cells as text with a decimal point, for :func:`mkm.fem.calibration.check_reference`."""
+    table = read_tables(path)[0]
+
+    def point(cell):
+        return cell.replace(",", ".") if table.decimal == "," and isinstance(cell, str) else cell
+
+    return pd.DataFrame([[point(cell) for cell in row] for row in table.rows],
+                        columns=table.header)
 
 
 def _run_steps(path: Path) -> tuple[pd.DataFrame, str]:

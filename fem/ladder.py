@@ -22,6 +22,7 @@ from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
 from mkm.core.registry import Registry
+from mkm.fem.limits import check_value
 from mkm.fem.options import BRAIDS, MESH_LEVELS
 
 if TYPE_CHECKING:  # annotations only: the registry loads without numpy
@@ -37,18 +38,25 @@ class Parameter:
     ``kind`` converts a spec's text (``float``, ``str`` or ``bool``); ``choices`` lists the
     values a text parameter may take (empty: any), or is a function that derives them (from the
     registry, when it is read); ``fraction`` marks a float that is a fraction, which a spec may
-    write as a percentage too (``tolerance=2%``); ``unit`` is a float's unit, in which a spec's
-    number typed with another unit of its kind (``gap_mm=500um``) is converted."""
+    write as a percentage too (``tolerance=2%``); ``limit`` names the muscle number of
+    :data:`mkm.fem.limits.LIMITS` a float must lie in (a spec's ``L0_mm=5`` is a typo, refused
+    as ``--L0 5`` is); ``unit`` is a float's unit (default: the limit's, from its name), in
+    which a number typed with another unit of its kind (``gap_mm=500um``) is converted."""
 
     description: str
     kind: type = float
     choices: tuple[str, ...] | Callable[[], tuple[str, ...]] = ()
     fraction: bool = False
+    limit: str = ""
     unit: str | None = None
 
     def options(self) -> tuple[str, ...]:
         """The values a text parameter may take (empty: any)."""
         return tuple(self.choices()) if callable(self.choices) else self.choices
+
+    def number_unit(self) -> str | None:
+        """The unit a float's number is in: ``unit``, else its limit's (``gap_mm``: mm)."""
+        return self.unit or (self.limit.rpartition("_")[2] if self.limit else None)
 
     def convert(self, name: str, value: Any) -> Any:
         """``value`` as this parameter's type; ``ValueError`` names the parameter otherwise."""
@@ -66,18 +74,20 @@ class Parameter:
 
                 return parse_fraction(value, name)
             try:
-                return float(value)
+                number = float(value)
             except (TypeError, ValueError):
-                pass
-            if isinstance(value, str):  # a unit, a decimal comma: read as the CLI's options are
+                if not isinstance(value, str):
+                    raise ValueError(f"{name}={value!r} is invalid: expected a number "
+                                     f"({self.description})") from None
                 from mkm.core.ranges import parse_number
 
-                try:
-                    return parse_number(value, name, self.unit)
+                try:  # a unit, a decimal comma: read as the CLI's options are
+                    number = parse_number(value, name, self.number_unit())
                 except ValueError as exc:
                     raise ValueError(f"{exc} ({self.description})") from None
-            raise ValueError(f"{name}={value!r} is invalid: expected a number "
-                             f"({self.description})")
+            if self.limit:
+                return check_value(self.limit, number)
+            return number
         value = str(value)
         options = self.options()
         if options and value not in options:
@@ -87,12 +97,12 @@ class Parameter:
 
 
 # Parameters several models share, declared once
-THETA0 = Parameter("braid angle at rest [deg]; default calibrated", unit="deg")
-L0 = Parameter("length at rest [mm]; default 282", unit="mm")
-C10 = Parameter("rubber Mooney-Rivlin C10 [MPa]; default Silastic S (0.0694)", unit="MPa")
-C01 = Parameter("rubber Mooney-Rivlin C01 [MPa]; default Silastic S (0.0628)", unit="MPa")
+THETA0 = Parameter("braid angle at rest [deg]; default calibrated", limit="theta0_deg")
+L0 = Parameter("length at rest [mm]; default 282", limit="L0_mm")
+C10 = Parameter("rubber Mooney-Rivlin C10 [MPa]; default Silastic S (0.0694)", limit="C10_MPa")
+C01 = Parameter("rubber Mooney-Rivlin C01 [MPa]; default Silastic S (0.0628)", limit="C01_MPa")
 GAP = Parameter("radial gap between tube and braid at rest [mm]; default the calibration's "
-                "(an identified muscle), else 0", unit="mm")
+                "(an identified muscle), else 0", limit="gap_mm")
 MESH = Parameter(f"mesh level: {', '.join(MESH_LEVELS)} (default medium)", str,
                  tuple(MESH_LEVELS))
 #: the families whose models are static physics rungs (friction's static model, the rungs the
@@ -229,7 +239,7 @@ register(Entry(
     {"diameter": Parameter("inner (the paper's D0, default) or braid (D0 + 2 t0)", str,
                            ("inner", "braid")),
      "theta0_deg": THETA0,
-     "L0_mm": Parameter("length at rest [mm] (recorded only)", unit="mm")},
+     "L0_mm": Parameter("length at rest [mm] (recorded only)", limit="L0_mm")},
     colour="tab:blue",
     study=(StudyVariant("eq2-inner", "eq2:diameter=inner"),
            StudyVariant("eq2-braid", "eq2:diameter=braid")),

@@ -18,7 +18,7 @@ from pathlib import Path
 import pandas as pd
 from joblib import Parallel, delayed
 
-from mkm.core.records import provenance
+from mkm.core.records import provenance, source_version, write_csv_with_sidecar
 from mkm.fem.paper import TABLE2_CSV
 from mkm.surrogate.paper_nets import PAPER_NETS, paper_net
 from mkm.surrogate.training_data import PAPER_DATASET, load_training_data
@@ -163,8 +163,14 @@ def paper_grid_study(out_dir, dataset=PAPER_DATASET, seeds: int = 10, jobs: int 
     header = (f"<!-- dataset {dataset} ({load_training_data(dataset).sha256[:12]}), seeds 0-"
               f"{seeds - 1}, jobs {jobs}, {seconds:.0f} s, {info['date_utc']}, "
               f"{info['versions']} -->\n")
-    runs.to_csv(out_dir / "paper_grid_runs.csv", index=False, float_format="%.6g")
-    table.to_csv(out_dir / "paper_grid.csv", index=False, float_format="%.6g")
+    # provenance beside each CSV: the dataset, the splits and nets, the code, the command
+    record = {"dataset": str(dataset), "dataset_sha256": load_training_data(dataset).sha256,
+              "seeds": list(range(seeds)), "jobs": jobs, "variants": list(variants),
+              "nets": None if nets is None else list(nets), "seconds": seconds,
+              "code_version": source_version("mkm.surrogate.paper_grid"), **info}
+    for name, frame in (("paper_grid_runs.csv", runs), ("paper_grid.csv", table)):
+        write_csv_with_sidecar(out_dir / name, frame.to_csv(index=False, float_format="%.6g",
+                                                             lineterminator="\n"), record)
     (out_dir / "paper_grid.md").write_text(header + markdown_grid(table), encoding="utf-8")
     plot_grid(table, out_dir / "paper_grid.png")
     return table

@@ -14,9 +14,11 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.records import (
+    file_sha256,
     package_file,
     provenance,
     read_prediction_header,
+    source_version,
     write_csv_with_sidecar,
 )
 from mkm.fem import paper
@@ -28,6 +30,8 @@ from mkm.surrogate.validation import rmse
 
 #: Our FE sweeps of the test muscles, shipped with the package (``mkm surrogate reference``).
 FE_REFERENCE = package_file("mkm.surrogate", "data", "fe_test_muscles.csv")
+#: the columns an FE reference must have (``converged`` and ``valid`` are read where present)
+REFERENCE_COLUMNS = ("muscle", "pressure_bar", "D0_mm", "t0_mm", "eps", "force_N")
 
 # name: (D0_mm, t0_mm, eps). I-III: the paper's section 3.3; IV, V: ours, off the grid.
 TEST_MUSCLES = {**paper.TEST_MUSCLES, "IV": (32.0, 3.5, 0.08), "V": (47.0, 2.25, 0.12)}
@@ -68,13 +72,25 @@ def build_fe_reference(model: ForceModel, out=FE_REFERENCE) -> pd.DataFrame:
 
 
 def read_fe_reference(path=FE_REFERENCE) -> pd.DataFrame:
+    """The FE reference at ``path``: :data:`REFERENCE_COLUMNS`, and ``converged`` and ``valid``
+    where the FE wrote them (a table of published forces has none); ``ValueError`` naming a
+    missing column or a point the FE did not solve."""
     path = Path(path)
     if not path.is_file():
         raise ValueError(f"FE reference {str(path)!r} does not exist: build it with "
                          "`mkm surrogate reference --model axisym`")
     table = pd.read_csv(path, comment="#")
+    missing = [c for c in REFERENCE_COLUMNS if c not in table.columns]
+    if missing:
+        raise ValueError(f"FE reference {str(path)!r} lacks column(s) {', '.join(missing)}: "
+                         f"expected a CSV with columns {','.join(REFERENCE_COLUMNS)} (as "
+                         "`mkm surrogate reference` writes it)")
     table.attrs["params"] = read_prediction_header(path).get("params", {})
-    bad = table[~(table["converged"].astype(bool) & table["valid"].astype(bool))]
+    solved = np.ones(len(table), dtype=bool)
+    for flag in ("converged", "valid"):
+        if flag in table:
+            solved &= table[flag].astype(bool).to_numpy()
+    bad = table[~solved]
     if len(bad):
         raise ValueError(f"FE reference {str(path)!r} has {len(bad)} unconverged or invalid "
                          f"point(s) (first: muscle {bad['muscle'].iloc[0]}): expected a clean "
@@ -132,8 +148,16 @@ def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE
         summaries.append(summary.assign(model=name))
     points = pd.concat(all_points, ignore_index=True)
     summary = pd.concat(summaries, ignore_index=True)
-    summary.to_csv(out_dir / "test_muscles.csv", index=False, float_format="%.6g")
-    points.to_csv(out_dir / "test_muscles_points.csv", index=False, float_format="%.6g")
+    # provenance: the reference read, each model and the code behind it, the command
+    info = {"reference": str(reference_path), "reference_sha256": file_sha256(reference_path),
+            "reference_params": reference.attrs.get("params", {}),
+            "models": {name: {"model": model.name, "params": model.params(),
+                              "version": source_version(type(model).__module__)}
+                       for name, model in models.items()}, **provenance()}
+    info = json.loads(json.dumps(info, default=str))
+    for name, frame in (("test_muscles.csv", summary), ("test_muscles_points.csv", points)):
+        write_csv_with_sidecar(out_dir / name, frame.to_csv(index=False, float_format="%.6g",
+                                                             lineterminator="\n"), info)
     (out_dir / "test_muscles.md").write_text(markdown_table(summary), encoding="utf-8")
     return summary
 

@@ -16,6 +16,7 @@ import numpy as np
 from mkm.core.ranges import parse_range
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG
 from mkm.fem.interface import validate_inputs
+from mkm.fem.limits import check_value
 from mkm.fem.paper import TABLE1_GRID
 
 GRID_KEYS = ("pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg")
@@ -63,12 +64,13 @@ def parse_grid(text: str, source: str) -> Grid:
         validate_inputs(P, D0, t0, e)
     except ValueError as exc:
         raise ValueError(f"grid {source}: {exc}") from None
-    for key, low, high in (("L0_mm", 0.0, np.inf), ("theta0_deg", 0.0, LOCKING_ANGLE_DEG)):
+    for key in OPTIONAL_GRID_KEYS:  # the limits of every input (a typo is refused)
         for v in values.get(key, ()):
-            if not low < v < high:
-                raise ValueError(f"grid {source}: {key}={v:g} is invalid: expected "
-                                 + (f"{low:g} < {key}" if high == np.inf
-                                    else f"{low:g} < {key} < {high:g} (the braid locking angle)"))
+            check_value(key, v, prefix=f"grid {source}: ")
+    for v in values.get("theta0_deg", ()):
+        if not v < LOCKING_ANGLE_DEG:
+            raise ValueError(f"grid {source}: theta0_deg={v:g} is invalid: expected "
+                             f"theta0_deg < {LOCKING_ANGLE_DEG:g} (the braid locking angle)")
     return Grid(**{k: tuple(float(v) for v in vals) for k, vals in values.items()}, source=source)
 
 

@@ -14,7 +14,7 @@ import pandas as pd
 
 from mkm.core.records import provenance, write_csv_with_sidecar
 from mkm.fem.calibration import Calibration
-from mkm.fem.fe.model import Axisym, isometric_sweep
+from mkm.fem.fe.model import Axisym
 from mkm.fem.interface import validate_inputs
 from mkm.fem.options import MESH_LEVELS
 
@@ -31,24 +31,27 @@ def mesh_convergence(D0_mm: float = 35.0, t0_mm: float = 2.5, eps: float = 0.05,
     (relative to the last level).
     """
     validate_inputs(pressure_bar, D0_mm, t0_mm, eps)
-    theta0 = Axisym(theta0_deg=theta0_deg, calibration=calibration).params()["theta0_deg"]
-    rows = []
+    rows, params = [], {}
     for level in levels:
+        # the muscle of the calibration: its angle, and its rubber and gap where identified
+        model = Axisym(theta0_deg=theta0_deg, L0_mm=L0_mm, mesh=level, calibration=calibration)
         start = time.perf_counter()
-        out = isometric_sweep([pressure_bar], D0_mm, t0_mm, eps, theta0, L0_mm, level)
+        out = model.predict([pressure_bar], D0_mm, t0_mm, eps)
+        seconds = time.perf_counter() - start
+        params = model.params()
         n_r, n_z, _ = MESH_LEVELS[level]
         rows.append({"mesh": level, "elements_wall": n_r, "elements_length": n_z,
-                     "dofs": int(out["dofs"][0]), "force_N": float(out["force_N"][0]),
-                     "threshold_pressure_bar": float(out["threshold_pressure_bar"][0]),
-                     "seconds": time.perf_counter() - start,
-                     "iterations": int(out["iterations"][0]),
-                     "converged": bool(out["converged"][0]),
-                     "failure": str(out["failure"][0])})
+                     "dofs": int(out.extras["dofs"][0]), "force_N": float(out.force_N[0]),
+                     "threshold_pressure_bar": float(out.extras["threshold_pressure_bar"][0]),
+                     "seconds": seconds,
+                     "iterations": int(out.extras["iterations"][0]),
+                     "converged": bool(out.converged[0]),
+                     "failure": str(out.extras["failure"][0])})
     frame = pd.DataFrame(rows)
     finest = frame["force_N"].iloc[-1]
     frame["force_change_vs_finest"] = (frame["force_N"] - finest) / finest
     frame.attrs.update(D0_mm=D0_mm, t0_mm=t0_mm, eps=eps, pressure_bar=pressure_bar,
-                       theta0_deg=theta0, L0_mm=L0_mm)
+                       **{k: v for k, v in params.items() if k != "mesh"})
     return frame
 
 

@@ -238,13 +238,23 @@ def spec_from_args(args, **overrides):
     return spec.with_params(**flags)
 
 
-def emit_prediction(prediction, out: str | None) -> None:
+def emit_prediction(prediction, out: str | None, model=None) -> None:
     """The prediction as plain CSV to ``out`` with its metadata in a JSON sidecar (announced on
-    stderr), or the CSV alone to stdout."""
+    stderr), or the CSV alone to stdout. Given the ``model`` that made it, the sidecar also
+    records its code version and, for a model with a calibrated angle, which calibration gave
+    it (:func:`mkm.fem.calibration.calibration_provenance`)."""
     if out:
         buffer = io.StringIO()
         write_prediction_csv(prediction, buffer)
-        path = write_csv_with_sidecar(out, buffer.getvalue(), prediction_metadata(prediction))
+        metadata = prediction_metadata(prediction)
+        if model is not None:
+            from mkm.fem.calibration import CalibratedTheta0, calibration_provenance
+            from mkm.prediction_cache import model_version
+
+            metadata["model_version"] = model_version(model)
+            if isinstance(model, CalibratedTheta0):
+                metadata["calibration"] = calibration_provenance(model)
+        path = write_csv_with_sidecar(out, buffer.getvalue(), metadata)
         print(f"wrote {path} and {sidecar_path(path).name}", file=sys.stderr)
     else:
         write_prediction_csv(prediction, sys.stdout)

@@ -172,7 +172,7 @@ def _solve(args) -> int:
         from mkm.verdict import model_label
 
         print(explain(prediction, label=model_label), file=sys.stderr)
-    emit_prediction(prediction, args.out)
+    emit_prediction(prediction, args.out, model)
     outside = _outside_practical_range(prediction, args.D0, args.t0)
     if outside:  # computed all the same (inside LIMITS it is a muscle), but never validated
         say(args, "warning", f"outside the practical range every model is validated over "
@@ -277,4 +277,9 @@ def _convergence(args) -> int:
     if len(failed):  # a NaN force is no mesh error: said with why
         say(args, "warning", f"mesh {', '.join(failed['mesh'])} did not converge, force_N NaN: "
             f"{failed['failure'].iloc[0]}")
+    elif (frame["force_N"] == 0).all():  # below P*: no force to compare, 0/0 is no error
+        say(args, "warning", f"force 0 N on every mesh: {args.pressure:g} bar is below the "
+            f"threshold pressure ({frame['threshold_pressure_bar'].iloc[-1]:.4g} bar on the "
+            "finest mesh), so force_change_vs_finest is empty; compare threshold_pressure_bar, "
+            "or give a --pressure above it")
     return 0

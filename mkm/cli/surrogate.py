@@ -91,8 +91,9 @@ def register(subparsers) -> None:
                       help="also train this kind on --dataset and test it (repeatable)")
     _dataset_argument(test)
     _accept_argument(test)
-    test.add_argument("--reference", help="FE reference CSV (default "
-                      "data/reference/fe_test_muscles.csv)")
+    test.add_argument("--reference", help="FE reference CSV (default: the shipped one, "
+                      "surrogate/data/fe_test_muscles.csv, from `mkm surrogate reference "
+                      "--update-shipped`)")
     test.add_argument("--out", default=str(default_out("surrogate-test")),
                       help="folder (default %(default)s)")
     test.set_defaults(func=_test)
@@ -303,7 +304,7 @@ def _predict(args) -> int:
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
         say(args, "warning", w.message)
-    emit_prediction(prediction, args.out)
+    emit_prediction(prediction, args.out, model)
     summary_line("surrogate predict", f"{prediction.force_N.size} points of {model.name} in "
                  f"{1e3 * prediction.seconds:.2f} ms, {int((~prediction.valid).sum())} flagged "
                  "outside the training domain")
@@ -311,16 +312,17 @@ def _predict(args) -> int:
 
 
 def _test(args) -> int:
-    from mkm.surrogate.testset import FE_REFERENCE, run_test
+    from mkm.surrogate.testset import FE_REFERENCE, read_fe_reference, run_test
     from mkm.surrogate.train import train_surrogate
 
+    reference = args.reference or FE_REFERENCE
+    read_fe_reference(reference)  # a bad reference is named before minutes of training
     paths = args.model or ([] if args.kind else ["default"])
     models = {_label(path): _load(path, args.calibration, args.accept_mismatch,
                                   not args.no_progress) for path in paths}
     models.update({kind: train_surrogate(kind, _dataset(args), splits=0,
                                          progress=not args.no_progress)
                    for kind in args.kind or []})
-    reference = args.reference or FE_REFERENCE
     summary = run_test(models, args.out, reference)
     _figure6(Path(args.out), reference)
     print(summary.to_string(index=False, float_format=lambda v: f"{v:.3g}"))

@@ -357,3 +357,24 @@ def test_the_command_that_writes_an_entry_keeps_a_path_with_a_space_one_argument
     command = calibrate_command("thickwall", path)
     assert command == r'mkm fem calibrate --model thickwall --out "C:\Users\Lab PC\lab.json"'
     assert build_parser().parse_args(shlex.split(command, posix=False)[1:]).out.strip('"') == path
+
+
+def test_a_reference_saved_by_a_european_spreadsheet_gives_the_same_fit(tmp_path, capsys):
+    from mkm.cli import main
+
+    # the paper's muscle I as Excel saves it with a decimal comma: ';' separators, CRLF; it
+    # is the same table, so the same angle (was: "Error tokenizing data. C error: Expected 3
+    # fields in line 3, saw 5")
+    lines = [line for line in CASE_I_CSV.read_text().splitlines()
+             if line and not line.startswith("#")]
+    windows = tmp_path / "case_I_excel.csv"
+    windows.write_bytes("\r\n".join(line.replace(",", ";").replace(".", ",")
+                                    for line in lines).encode("cp1252") + b"\r\n")
+    fits = []
+    for path in (CASE_I_CSV, windows):
+        assert main(["fem", "calibrate", "--model", "eq2", "--reference", str(path)]) == 0
+        fits.append(capsys.readouterr().out.splitlines())
+    plain, excel = fits
+    assert excel[0] == plain[0].replace(CASE_I_CSV.name, windows.name)
+    assert excel[1:] == plain[1:]
+    assert f"theta0 = {calibrated('eq2-inner')['theta0_deg']:.3f} deg" in excel[0]

@@ -6,7 +6,7 @@ import sys
 import pytest
 
 from mkm.fem.eq2 import Eq2
-from mkm.fem.ladder import entry, make_model, names, static_names
+from mkm.fem.ladder import MODELS, entry, make_model, names, static_names
 
 
 def test_every_rung_builds_and_orders_as_the_physics_says():
@@ -72,3 +72,22 @@ def test_a_model_built_for_a_muscle_predicts_that_muscle_and_refuses_another():
     with pytest.raises(ValueError, match="^C10_MPa=0.05 of the muscle differs from the "
                        "thickwall model's C10_MPa=0.0"):
         other.predict_muscle(muscle, 2.0)
+
+
+@pytest.mark.parametrize("name, value, expected", [
+    # a typo, not a muscle (fem/limits.py LIMITS), refused as the flags --theta0 0.5 and --L0 5
+    # are: theta0 0.5 deg gave Equation 2 1.3 MN on a 30 mm tube at 1 bar, valid
+    ("theta0_deg", "0.5", r"a braid angle at rest in \[1, 89\] deg"),
+    ("L0_mm", "5", r"a length at rest in \[10, 3000\] mm"),
+    ("L0_mm", "nan", r"a length at rest in \[10, 3000\] mm"),
+    ("C01_MPa", "-0.1", r"a Mooney-Rivlin C01 in \[0, 100\] MPa"),
+    ("gap_mm", "-1", r"a radial gap between tube and braid in \[0, 100\] mm"),
+])
+def test_muscle_parameters_outside_the_limits_are_refused_by_every_model(name, value, expected):
+    from mkm.registry import parse_spec
+
+    takers = [e.name for e in MODELS.entries() if name in e.parameters]
+    assert takers  # every muscle number is a parameter of some model
+    for model in takers:
+        with pytest.raises(ValueError, match=f"^{name}={value} is invalid: expected {expected}$"):
+            parse_spec(f"{model}:{name}={value}")

@@ -136,6 +136,33 @@ def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     np.testing.assert_allclose(frame.force_N, expected, rtol=1e-5)  # CSV keeps 6 digits
 
 
+def test_solve_sidecar_names_the_code_and_the_calibration_behind_the_forces(tmp_path, mkm_run):
+    # provenance: the code version (as `mkm fem dataset` records it) and which calibration
+    # gave theta0; was only the parameters' values
+    from mkm.core.records import file_sha256, source_version
+    from mkm.fem.calibration import CALIBRATION_FILE
+
+    out = tmp_path / "sweep.csv"
+    code, _, _ = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
+                          "--eps", "15%", "--out", str(out)])
+    header = read_prediction_header(out)
+    assert code == 0 and header["model_version"] == source_version("mkm.fem.thickwall")
+    assert header["calibration"]["key"] == "thickwall"
+    assert header["calibration"]["sha256"] == file_sha256(CALIBRATION_FILE)
+    assert header["calibration"]["entry"]["theta0_deg"] == header["params"]["theta0_deg"]
+    lab = tmp_path / "lab.json"
+    lab.write_text(CALIBRATION_FILE.read_text())
+    code, _, _ = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "40", "--t0", "3", "--eps",
+                          "15%", "--calibration", str(lab), "--out", str(out)])
+    header = read_prediction_header(out)
+    assert code == 0 and header["calibration"]["file"] == str(lab)
+    assert header["model_version"] == source_version("mkm.fem.eq2")
+    code, _, _ = mkm_run(["fem", "solve", "--model", "eq2", "--theta0", "30", "--D0", "40",
+                          "--t0", "3", "--eps", "15%", "--out", str(out)])
+    assert read_prediction_header(out)["calibration"] == {
+        "source": "theta0_deg given explicitly", "theta0_deg": 30.0}
+
+
 THICK = "t0_mm=20 is too thick for D0_mm=35: expected t0_mm < D0_mm/2 = 17.5"
 EPS = "expected a shortening ratio in [0, 1) (a fraction)"
 
@@ -254,6 +281,21 @@ def test_convergence_past_the_braid_lock_says_why_its_forces_are_nan(mkm_run, tm
                               "its locking angle before eps=0.5")
     frame = pd.read_csv(tmp_path / "mesh_convergence.csv")
     assert frame["failure"].str.contains("locking angle").all()
+
+
+def test_convergence_below_the_threshold_says_why_there_is_no_force_change(mkm_run, tmp_path):
+    # muscle I held at eps 10 % pulls nothing below its threshold P* (about 0.3 bar: the wall
+    # is stretched first): 0 N on every mesh, and the change 0/0; was a column of NaN, no word
+    code, out, err = mkm_run(["fem", "convergence", "--eps", "0.1", "--pressure", "0.1",
+                              "--out", str(tmp_path)])
+    frame = pd.read_csv(tmp_path / "mesh_convergence.csv")
+    assert code == 0 and (frame["force_N"] == 0).all() and frame["converged"].all()
+    threshold = frame["threshold_pressure_bar"].iloc[-1]
+    assert 0.1 < threshold < 0.5
+    assert err.splitlines()[-1] == (
+        "mkm fem convergence: warning: force 0 N on every mesh: 0.1 bar is below the threshold "
+        f"pressure ({threshold:.4g} bar on the finest mesh), so force_change_vs_finest is "
+        "empty; compare threshold_pressure_bar, or give a --pressure above it")
 
 
 @pytest.mark.parametrize("pressure", ["100", "-1", "8.5"])

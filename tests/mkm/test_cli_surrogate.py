@@ -16,6 +16,15 @@ def test_grid_small_run(thickwall_dataset, tmp_path, capsys):
     table = pd.read_csv(out / "paper_grid.csv").set_index("variant")
     assert list(table["paper_valid_N"]) == [421.37, 421.37]  # Table 2 beside ours
     assert (out / "paper_grid.md").exists() and (out / "paper_grid.png").exists()
+    # provenance beside both CSVs (was none: a comment in the .md without the command)
+    from mkm.core.records import file_sha256, read_prediction_header, source_version
+
+    for name in ("paper_grid.csv", "paper_grid_runs.csv"):
+        info = read_prediction_header(out / name)
+        assert info["dataset_sha256"] == file_sha256(thickwall_dataset)
+        assert info["seeds"] == [0] and info["nets"] == [10]
+        assert info["code_version"] == source_version("mkm.surrogate.paper_grid")
+        assert {"command", "date_utc", "versions"} <= set(info)
     # The paper's failure and its fix: tanh with the response in N predicts about the mean
     # (forces spread over ~500 N, RMSE of the mean ~500 N); standardising the response fixes
     # it (measured: ~300 N against ~10 N; the 5x factor leaves room for other seeds).
@@ -155,3 +164,37 @@ def test_predict_takes_the_spec_its_warning_names(tmp_path, capsys):
                  "10", "--t0", "1.5", "--eps", "0.1"]) == 2
     assert "expected a folder written by `mkm surrogate train`, default, or " \
         "surrogate:kind=KIND" in capsys.readouterr().err
+
+
+def test_test_help_names_the_reference_it_reads(capsys):
+    # the help named data/reference/fe_test_muscles.csv, a file that does not exist
+    from pathlib import Path
+
+    from mkm.surrogate.testset import FE_REFERENCE
+
+    with pytest.raises(SystemExit):
+        main(["surrogate", "test", "--help"])
+    shipped = Path(FE_REFERENCE)
+    named = f"{shipped.parent.parent.name}/{shipped.parent.name}/{shipped.name}"
+    assert named == "surrogate/data/fe_test_muscles.csv" and shipped.is_file()
+    assert named in " ".join(capsys.readouterr().out.split())
+
+
+def test_test_names_a_bad_reference_before_training(tmp_path, capsys, monkeypatch):
+    # `--kind gp` trains for minutes before the reference was read; a reference missing its
+    # columns must be named at once, nothing trained, nothing written
+    import mkm.surrogate.train
+
+    def no_training(*args, **kwargs):
+        raise AssertionError("trained before the reference was read")
+
+    monkeypatch.setattr(mkm.surrogate.train, "train_surrogate", no_training)
+    bad = tmp_path / "reference.csv"
+    bad.write_text("muscle;pressure_bar;force_N\r\nI;1,0;366,9\r\n")
+    out = tmp_path / "out"
+    assert main(["surrogate", "test", "--kind", "gp", "--reference", str(bad), "--out",
+                 str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"mkm surrogate test: error: FE reference {str(bad)!r} lacks "
+                          "column(s) muscle, pressure_bar, D0_mm, t0_mm, eps, force_N")
+    assert err.count("\n") == 1 and not out.exists()

@@ -1,3 +1,5 @@
+import re
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -54,6 +56,15 @@ def test_model_against_itself_has_zero_error(thickwall_reference, tmp_path):
         assert (tmp_path / name).stat().st_size > 0
     table = (tmp_path / "test_muscles.md").read_text()
     assert "| paper, 3 x 100 ReLU (its FE) | 6.55 | 7.92 | 9.34 |" in table
+    # provenance beside each CSV (was none): the reference read, the model and its code
+    from mkm.core.records import file_sha256, source_version
+
+    for name in ("test_muscles.csv", "test_muscles_points.csv"):
+        info = read_prediction_header(tmp_path / name)
+        assert info["reference_sha256"] == file_sha256(thickwall_reference)
+        assert info["models"]["thickwall"]["version"] == source_version("mkm.fem.thickwall")
+        assert info["models"]["thickwall"]["params"] == model.params()
+        assert {"date_utc", "command", "versions"} <= set(info)
 
 
 def test_eq2_error_on_muscle_III_is_what_equation_7_says(thickwall_reference):
@@ -66,6 +77,22 @@ def test_eq2_error_on_muscle_III_is_what_equation_7_says(thickwall_reference):
     expected = np.max(np.abs(100 * (sweep["force_N"] - eq2) / sweep["force_N"].max()))
     got = summary.set_index("muscle").loc["III", "max_abs_err_pct"]
     assert got == pytest.approx(expected, rel=1e-9)
+
+
+def test_reference_without_its_columns_is_named(thickwall_reference, tmp_path):
+    # Excel's ';' export reads as one column: `mkm surrogate test --reference` ended in a
+    # KeyError traceback naming 'converged'
+    table = pd.read_csv(thickwall_reference, comment="#")
+    path = tmp_path / "semicolons.csv"
+    table.to_csv(path, index=False, sep=";", lineterminator="\r\n")
+    with pytest.raises(ValueError, match=re.escape(
+            f"FE reference {str(path)!r} lacks column(s) muscle, pressure_bar, D0_mm, t0_mm, "
+            "eps, force_N: expected a CSV with columns muscle,pressure_bar,D0_mm,t0_mm,eps,"
+            "force_N (as `mkm surrogate reference` writes it)")):
+        read_fe_reference(path)
+    # published forces carry no solver flags: read as they are, every point kept
+    table.drop(columns=["converged", "valid"]).to_csv(path, index=False)
+    assert read_fe_reference(path)["force_N"].tolist() == table["force_N"].tolist()
 
 
 def test_reference_with_failed_points_is_refused(thickwall_reference, tmp_path):

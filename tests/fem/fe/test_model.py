@@ -317,3 +317,27 @@ def test_muscles_of_one_geometry_share_its_discretisation_not_their_work():
             P, 35.0, 3.0, 0.1, c[0], mesh="coarse", material=c[1])["force_N"], cases * 3))
     for k, force in enumerate(threaded):
         np.testing.assert_array_equal(force, serial[k % len(cases)])
+
+
+def test_mesh_convergence_studies_the_calibrated_muscle(tmp_path):
+    # `mkm fem convergence --calibration FILE` of an identified muscle (its rubber in the
+    # entry) must study that muscle, the one `mkm fem solve --model axisym --calibration FILE`
+    # solves: it solved Silastic S instead (863.5 N against 792.8 N at 2.5 bar, medium mesh)
+    import json
+
+    from mkm.fem.calibration import CALIBRATION_FILE, Calibration
+    from mkm.fem.fe.convergence import mesh_convergence
+
+    entries = json.loads(CALIBRATION_FILE.read_text())
+    entries["axisym"].update(C10_MPa=0.2, C01_MPa=0.1)
+    path = tmp_path / "identified.json"
+    path.write_text(json.dumps(entries))
+    calibration = Calibration.load(path)
+    frame = mesh_convergence(levels=("coarse",), calibration=calibration)
+    model = Axisym(mesh="coarse", calibration=calibration)
+    expected = float(model.predict([2.5], 35.0, 2.5, 0.05).force_N[0])
+    assert frame["force_N"].iloc[0] == pytest.approx(expected, rel=1e-9)
+    # a stiffer wall costs force: below Silastic S's, by more than the mesh could explain
+    silastic = float(Axisym(mesh="coarse").predict([2.5], 35.0, 2.5, 0.05).force_N[0])
+    assert frame["force_N"].iloc[0] < 0.95 * silastic
+    assert (frame.attrs["C10_MPa"], frame.attrs["C01_MPa"]) == (0.2, 0.1)
