@@ -27,6 +27,14 @@ LONGEST_FIRST = ("tests/test_docs.py", "tests/mkm/test_identify.py", "tests/mkm/
                  "tests/mkm/test_identify_terms.py")
 
 
+def pytest_configure(config):
+    """A module of :data:`LONGEST_FIRST` renamed or removed is an error: the list would
+    silently order nothing."""
+    missing = [name for name in LONGEST_FIRST if not (config.rootpath / name).is_file()]
+    if missing:
+        raise pytest.UsageError(f"tests/conftest.py: LONGEST_FIRST names no module {missing}")
+
+
 def pytest_collection_modifyitems(config, items):
     """Under pytest-xdist, :data:`LONGEST_FIRST` first (the same order in every process: each
     collects the suite and they must agree); a stable sort, so the rest keep their order."""
