@@ -34,13 +34,15 @@ $(VENV)/.installed-test: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/python
 demo: $(VENV)/.installed
 	$(BIN)/mkm demo
 
-# Everything, then the 15 slowest tests; `make test-fast` leaves out the `slow` tier (wheel and
-# venv builds, signals, Dask, Chromium, the fine mesh, GP training) while you work.
+# Everything, then the 15 slowest tests, on both cores (CI's machine has two): a module runs whole
+# in one process (its fixtures built once), the longest modules first (tests/conftest.py); under
+# 10 minutes on CI, install included. `make test-fast` leaves out the `slow` tier (wheel and venv
+# builds, signals, Dask, Chromium, the fine mesh, GP training) while you work.
 test: $(VENV)/.installed-test
 	$(BIN)/ruff check .
 	$(BIN)/python tools/lint_imports.py
 	$(BIN)/python tools/check_static_imports.py
-	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q --durations=15
+	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q --durations=15 -n 2 --dist loadfile --no-loadscope-reorder
 
 test-fast: $(VENV)/.installed-test
 	$(BIN)/ruff check .

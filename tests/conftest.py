@@ -18,6 +18,31 @@ settings.register_profile("suite", derandomize=True, database=None)
 settings.register_profile("explore", derandomize=False)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "suite"))
 
+# `make test` shares the modules out between two processes (pytest-xdist, ``--dist loadfile``:
+# a module's fixtures are built once, in one process). These modules take the longest (the
+# site's build, the wheel's venv, the identifications); handed out first, neither process is
+# left running one of them alone at the end.
+LONGEST_FIRST = ("tests/test_docs.py", "tests/mkm/test_identify.py", "tests/mkm/test_install.py",
+                 "tests/mkm/test_report.py", "tests/mkm/test_identify_params.py",
+                 "tests/mkm/test_identify_terms.py")
+
+
+def pytest_configure(config):
+    """A module of :data:`LONGEST_FIRST` renamed or removed is an error: the list would
+    silently order nothing."""
+    missing = [name for name in LONGEST_FIRST if not (config.rootpath / name).is_file()]
+    if missing:
+        raise pytest.UsageError(f"tests/conftest.py: LONGEST_FIRST names no module {missing}")
+
+
+def pytest_collection_modifyitems(config, items):
+    """Under pytest-xdist, :data:`LONGEST_FIRST` first (the same order in every process: each
+    collects the suite and they must agree); a stable sort, so the rest keep their order."""
+    if not os.environ.get("PYTEST_XDIST_WORKER"):
+        return
+    rank = {name: i for i, name in enumerate(LONGEST_FIRST)}
+    items.sort(key=lambda item: rank.get(item.nodeid.split("::")[0], len(rank)))
+
 
 @pytest.fixture(scope="session", autouse=True)
 def _hermetic_folders(tmp_path_factory):

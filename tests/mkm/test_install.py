@@ -155,4 +155,5 @@ def test_make_demo_runs_mkm_demo():
     lines = done.stdout.splitlines()
     assert ".venv/bin/mkm demo" in lines
     assert ".venv/bin/python tools/lint_imports.py" in lines
-    assert any(line.endswith("-m pytest -q --durations=15") for line in lines)
+    assert any(line.endswith("-m pytest -q --durations=15 -n 2 --dist loadfile "
+                             "--no-loadscope-reorder") for line in lines)
