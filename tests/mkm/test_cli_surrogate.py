@@ -160,7 +160,9 @@ def test_predict_takes_the_spec_its_warning_names(tmp_path, capsys):
         [6.0, 8.0], 10.0, 1.5, 0.1).force_N
     assert table["valid"].all() and table["force_N"].to_numpy() == pytest.approx(expected,
                                                                                  rel=1e-5)
-    assert main(["surrogate", "predict", "--model", "surrogate:kind=physics,L0_mm=3", "--D0",
+    # a spec with more than its kind is not a model --model takes (L0 within its limits: a
+    # length of 3 mm is refused before, as --L0 3 is)
+    assert main(["surrogate", "predict", "--model", "surrogate:kind=physics,L0_mm=300", "--D0",
                  "10", "--t0", "1.5", "--eps", "0.1"]) == 2
     assert "expected a folder written by `mkm surrogate train`, default, or " \
         "surrogate:kind=KIND" in capsys.readouterr().err
