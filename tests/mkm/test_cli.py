@@ -296,6 +296,12 @@ def test_convergence_below_the_threshold_says_why_there_is_no_force_change(mkm_r
         "mkm fem convergence: warning: force 0 N on every mesh: 0.1 bar is below the threshold "
         f"pressure ({threshold:.4g} bar on the finest mesh), so force_change_vs_finest is "
         "empty; compare threshold_pressure_bar, or give a --pressure above it")
+    # its sidecar names the code that made the numbers, as every generated file's does
+    from mkm.core.records import source_version
+
+    sidecar = json.loads((tmp_path / "mesh_convergence.json").read_text(encoding="utf-8"))
+    assert sidecar["code_version"] == source_version("mkm.fem.fe.convergence",
+                                                     "mkm.fem.fe.model")
 
 
 @pytest.mark.parametrize("pressure", ["100", "-1", "8.5"])
