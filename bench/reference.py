@@ -16,7 +16,7 @@ import pandas as pd
 
 from mkm.bench.folders import PATTERN_CHARACTERS, is_run_folder, run_folders
 from mkm.bench.storage import load_run
-from mkm.bench.tables import read_tables
+from mkm.bench.tables import plain_number, read_tables
 from mkm.core.records import file_sha256
 from mkm.fem.calibration import check_reference
 
@@ -52,13 +52,15 @@ def calibration_reference(path) -> tuple[pd.DataFrame, str, str | None]:
 def _table(path: Path) -> pd.DataFrame:
     """A reference table as a lab's spreadsheet saves it (:func:`mkm.bench.tables.read_tables`:
     separator ``,``, ``;`` or tab, decimal commas, CRLF, ``#`` comments, or an ``.xlsx``), its
-    cells as text with a decimal point, for :func:`mkm.fem.calibration.check_reference`."""
+    number cells read as every imported table's are, for
+    :func:`mkm.fem.calibration.check_reference`."""
     table = read_tables(path)[0]
 
-    def point(cell):
-        return cell.replace(",", ".") if table.decimal == "," and isinstance(cell, str) else cell
+    def cell_value(cell):
+        number = plain_number(cell, table.decimal)
+        return cell if number is None else number
 
-    return pd.DataFrame([[point(cell) for cell in row] for row in table.rows],
+    return pd.DataFrame([[cell_value(cell) for cell in row] for row in table.rows],
                         columns=table.header)
 
 

@@ -631,6 +631,13 @@ def _formulas(table: RawTable, cells: list[tuple[int, int]]) -> dict[tuple[int, 
         book.close()
 
 
+def plain_number(cell, decimal: str) -> float | None:
+    """A cell that is a number alone (no unit after it) as a float, read as every column is
+    (decimal mark ``decimal``, thousands' marks dropped); None otherwise."""
+    number, unit = _number(cell, decimal)
+    return number if unit is None else None
+
+
 def _number(cell, decimal: str) -> tuple[float | None, str | None]:
     """A cell as a number and the unit written after it (``'2,5 bar'`` -> 2.5, ``'bar'``)."""
     if isinstance(cell, bool):
