@@ -31,6 +31,13 @@ MODEL_PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa", "gap_mm")
 REQUIRED = ("D0_mm", "t0_mm", "L0_mm", "eps")
 
 
+def eps_at_rest_length(L0_mm: float, eps: float, rest_length_mm: float) -> float:
+    """The shortening ratio of a muscle declared ``L0_mm`` long at rest and held at ``eps``
+    (its held length ``L0_mm (1 - eps)``) when its rest length is ``rest_length_mm`` instead
+    [mm, fraction]: a table's longest length already shortened, a rest length identified."""
+    return 1.0 - L0_mm * (1.0 - eps) / rest_length_mm
+
+
 @dataclass(frozen=True)
 class Muscle:
     """A McKibben muscle (see the module docstring); checked when made.

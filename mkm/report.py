@@ -48,7 +48,7 @@ from mkm.core.records import (
     write_json_atomic,
 )
 from mkm.fem.calibration import Calibration
-from mkm.fem.muscle import Muscle
+from mkm.fem.muscle import Muscle, eps_at_rest_length
 from mkm.fem.paper import TABLE3_CSV
 from mkm.fem.tolerances import Tolerances
 from mkm.figures import (
@@ -880,19 +880,23 @@ def _identified_runs(calibration: Calibration | None) -> list[dict]:
 
 
 def _identified_geometry(calibration: Calibration | None, muscle: Muscle) -> dict[str, float]:
-    """The wall and diameter [mm] ``mkm identify --params t0,D0`` fitted, when ``muscle`` (as
-    run.json declares it) is the one it fitted them on; empty otherwise."""
+    """The wall, diameter and rest length [mm] ``mkm identify --params t0,D0,L0`` fitted, when
+    ``muscle`` (as run.json declares it) is the one it fitted them on (with a fitted rest
+    length, the run's ``eps`` at it: its held length kept); empty otherwise."""
     from mkm.identify.band import identified_entry
 
     found = identified_entry(calibration) if calibration is not None else None
     declared = [r.get("muscle") or {} for r in _identified_runs(calibration)]
     if not found or not any(m.get("id") == muscle.id and all(
             math.isclose(float(m.get(k, math.nan)), getattr(muscle, k), rel_tol=1e-9)
-            for k in ("D0_mm", "t0_mm")) for m in declared):
+            for k in ("D0_mm", "t0_mm", "L0_mm")) for m in declared):
         return {}
-    return {p["parameter"]: float(p["value"]) for p in found[1]["identified"].get(
-        "parameters", []) if p.get("parameter") in ("D0_mm", "t0_mm")
+    fitted = {p["parameter"]: float(p["value"]) for p in found[1]["identified"].get(
+        "parameters", []) if p.get("parameter") in ("D0_mm", "t0_mm", "L0_mm")
         and p.get("status") == "fitted"}
+    if "L0_mm" in fitted:
+        fitted["eps"] = eps_at_rest_length(muscle.L0_mm, muscle.eps, fitted["L0_mm"])
+    return fitted
 
 
 def _auto_paragraph(r: _Run, tolerance: float) -> str:

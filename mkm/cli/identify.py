@@ -37,10 +37,13 @@ def register(subparsers) -> None:
                         "any shell) or a folder holding run folders")
     parser.add_argument("--params", default=None,
                         help="what to fit, a comma list of theta0, rubber, t0, D0, friction, "
-                        "creep, gap, offset (default theta0,rubber,friction,creep,offset: the "
-                        "runs' declared wall and diameter taken as given; t0 and D0 for a "
-                        "muscle whose wall is unknown; offset is the pressure monitor's, "
-                        "within its declared accuracy; gap needs --model thickwall or axisym)")
+                        "creep, gap, offset, L0 (default theta0,rubber,friction,creep,offset: "
+                        "the runs' declared wall, diameter and rest length taken as given; t0 "
+                        "and D0 for a muscle whose wall is unknown; offset is the pressure "
+                        "monitor's, within its declared accuracy; gap needs --model thickwall "
+                        "or axisym; L0, the rest length, for runs of one length whose table "
+                        "may start already shortened: each run's eps follows from its held "
+                        "length)")
     parser.add_argument("--model", default="axisym",
                         help="static model spec that confirms the fit (and searches where the "
                         "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "

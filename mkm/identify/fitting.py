@@ -15,7 +15,12 @@ force-pressure curve mostly carries one rubber stiffness, not two constants' rat
 C01 in ``C10 + C01`` (``c01_fraction``, Silastic S's by default) is fitted only where the runs
 separate it (:func:`mkm.identify.procedure.identify` tests it). The tube's wall ``t0_mm`` and
 diameter ``D0_mm`` are the runs' declared ones unless fitted (``--params t0``, ``D0``: one tube
-for every run; each run keeps its own length ``L0_mm``). The pressure monitor's offset
+for every run; each run keeps its own length ``L0_mm``). The rest length ``L0_mm`` is fitted
+when asked (``--params L0``: one muscle, one rest length): each run keeps its held length
+``L0 (1 - eps)``, so its shortening follows from the fitted rest length. A table's longest
+length may already be shortened (a Festo map starts at 296 mm of a 300 mm muscle), and a
+threshold at the declared rest length may be a rest length a little longer. The pressure
+monitor's offset
 ``pressure_offset_bar`` (what it reads above the truth) is a nuisance parameter within the
 monitor's declared accuracy: it moves the threshold, which the runs see. The radial gap
 between tube and braid (``gap``, :func:`mkm.fem.thickwall.klute_hannaford`) is fitted only when
@@ -34,25 +39,30 @@ from mkm.fem.friction import DEFAULTS as TERM_DEFAULTS
 from mkm.fem.friction import force_history
 from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.materials import SILASTIC_S
+from mkm.fem.muscle import eps_at_rest_length
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
 #: ``--params`` groups and the fitted parameters each holds (internal names)
 GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",), "t0": ("t0_mm",),
           "D0": ("D0_mm",), "friction": ("hysteresis_fraction",),
           "creep": ("creep_fraction", "log_tau"), "gap": ("gap_mm",),
-          "offset": ("pressure_offset_bar",)}
+          "offset": ("pressure_offset_bar",), "L0": ("L0_mm",)}
 #: what ``--params`` fits when not given: the wall, the diameter and a gap only when asked
 DEFAULT_GROUPS = ("theta0", "rubber", "friction", "creep", "offset")
-ORDER = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "gap_mm",
+ORDER = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm", "gap_mm",
          "pressure_offset_bar", "hysteresis_fraction", "creep_fraction", "log_tau")
 #: the parameters of the static force (the rest are friction, creep and the monitor)
-STATIC_NAMES = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "gap_mm")
+STATIC_NAMES = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm",
+                "gap_mm")
 #: the tube's geometry, which a fit may take from the runs or fit (one tube for every run)
 GEOMETRY = ("D0_mm", "t0_mm")
 TERM_BOUNDS = {"hysteresis_fraction": (0.0, 0.3), "creep_fraction": (0.0, 0.3),
                "log_tau": (math.log(1.0), math.log(1000.0)), "c01_fraction": (0.0, 0.9)}
 #: a fitted wall or diameter searched within these factors of the declared one
 GEOMETRY_FACTORS = {"t0_mm": (0.5, 1.5), "D0_mm": (0.8, 1.2)}
+#: a fitted rest length searched from the longest held length (no run stretched beyond its
+#: rest length) up to this factor of the declared one
+REST_LENGTH_FACTOR = 1.05
 #: how far the rubber scale may move once C01's share is freed (its box on the surrogate)
 SCALE_MARGIN = 0.02
 #: Silastic S's share of C01 in C10 + C01 (the rubber's assumed ratio)
@@ -66,7 +76,7 @@ FE_BOX = {"theta0_deg": (15.0, 50.0),
 TABLE_STEP_BAR = 0.05
 #: one residual scale for every parameter (least_squares' x_scale)
 X_SCALE = {"theta0_deg": 0.3, "rubber_scale": 0.05, "gap_mm": 0.05, "t0_mm": 0.05,
-           "D0_mm": 0.1, "c01_fraction": 0.05}
+           "D0_mm": 0.1, "L0_mm": 0.5, "c01_fraction": 0.05}
 #: an optimum this close to a box edge (a fraction of the box) is at the edge
 EDGE_FRACTION = 1e-3
 
@@ -116,14 +126,24 @@ def internal_values(values: dict[str, float]) -> dict[str, float]:
 
 
 def _optional(values: dict) -> dict:
-    """The values fitted only when asked (a gap, the wall, the diameter, the monitor offset)."""
-    return {k: values[k] for k in ("gap_mm", *GEOMETRY, "pressure_offset_bar") if k in values}
+    """The values fitted only when asked (a gap, the wall, the diameter, the rest length, the
+    monitor offset)."""
+    return {k: values[k] for k in ("gap_mm", *GEOMETRY, "L0_mm", "pressure_offset_bar")
+            if k in values}
+
+
+def rest_length(run, values: dict) -> float:
+    """``run``'s rest length [mm]: the fitted one where ``values`` has it, else its declared."""
+    return float(values.get("L0_mm", run.muscle["L0_mm"]))
 
 
 def geometry(run, values: dict) -> tuple[float, float, float]:
     """``(D0_mm, t0_mm, eps)`` of ``run``, the tube's fitted wall or diameter in place of the
-    declared one where ``values`` has it."""
+    declared one where ``values`` has it, and the shortening of its held length
+    ``L0 (1 - eps)`` from the fitted rest length where it has one."""
     D0_mm, t0_mm, eps = run.geometry
+    if "L0_mm" in values:
+        eps = eps_at_rest_length(float(run.muscle["L0_mm"]), eps, float(values["L0_mm"]))
     return values.get("D0_mm", D0_mm), values.get("t0_mm", t0_mm), eps
 
 
@@ -176,9 +196,11 @@ class ModelStatic(StaticSource):
         self.calls = 0
 
     def model(self, values: dict, L0_mm: float):
-        """The static model of length ``L0_mm`` at the internal ``values``."""
+        """The static model of length ``L0_mm`` (the fitted rest length where ``values`` has
+        one) at the internal ``values``."""
         gap = {"gap_mm": float(values["gap_mm"])} if values.get("gap_mm") else {}
         C10, C01 = rubber(values)
+        L0_mm = values.get("L0_mm", L0_mm)
         return self.spec.with_params(L0_mm=float(L0_mm), theta0_deg=float(values["theta0_deg"]),
                                      C10_MPa=C10, C01_MPa=C01, **gap).build()
 
@@ -214,7 +236,7 @@ class SurrogateStatic(StaticSource):
                                          box["C01_MPa"][0] / SILASTIC_S.C01_MPa),
                                      min(box["C10_MPa"][1] / SILASTIC_S.C10_MPa,
                                          box["C01_MPa"][1] / SILASTIC_S.C01_MPa)),
-                    "t0_mm": box["t0_mm"], "D0_mm": box["D0_mm"]}
+                    "t0_mm": box["t0_mm"], "D0_mm": box["D0_mm"], "L0_mm": box["L0_mm"]}
 
     def share_bounds(self, rubber_scale):
         """C01's share keeping both constants inside the box at this scale give or take
@@ -244,7 +266,8 @@ class SurrogateStatic(StaticSource):
         out: list = [None] * len(runs)
         for L0_mm, members in by_length(runs).items():
             model = self.surrogate.with_parameters(
-                L0_mm=L0_mm, theta0_deg=float(values["theta0_deg"]), C10_MPa=C10, C01_MPa=C01)
+                L0_mm=values.get("L0_mm", L0_mm), theta0_deg=float(values["theta0_deg"]),
+                C10_MPa=C10, C01_MPa=C01)
             grids = [np.arange(0.0, min(top, runs[k].pressure_bar.max()) + TABLE_STEP_BAR,
                                TABLE_STEP_BAR).clip(max=top) for k in members]
             P = np.concatenate(grids)
@@ -303,16 +326,21 @@ def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
 
 def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float, float]:
     """Where ``name`` is searched: the source's box, the terms' bounds, the declared wall and
-    diameter within :data:`GEOMETRY_FACTORS` (inside the source's box), the monitor's offset
-    within its declared bound (the smallest of the runs')."""
+    diameter within :data:`GEOMETRY_FACTORS` and the rest length from the longest held length
+    to :data:`REST_LENGTH_FACTOR` of the declared one (inside the source's box), the monitor's
+    offset within its declared bound (the smallest of the runs')."""
     if name == "c01_fraction":
         return source.share_bounds(start["rubber_scale"])
     if name == "pressure_offset_bar":
         bound = min(run.monitor_offset_bound_bar for run in runs)
         return (-bound, bound)
-    if name in GEOMETRY_FACTORS:
+    if name in GEOMETRY_FACTORS or name == "L0_mm":
         declared = float(runs[0].muscle[name])
-        low, high = (f * declared for f in GEOMETRY_FACTORS[name])
+        if name == "L0_mm":
+            low = max(float(run.muscle[name]) * (1.0 - run.eps) for run in runs)
+            high = REST_LENGTH_FACTOR * declared
+        else:
+            low, high = (f * declared for f in GEOMETRY_FACTORS[name])
         if name in source.box:
             low, high = max(low, source.box[name][0]), min(high, source.box[name][1])
         return (low, high)

@@ -52,7 +52,7 @@ from mkm.identify.goodness import Goodness
 from mkm.identify.intervals import robust_covariance
 
 UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
-         "t0_mm": "mm", "D0_mm": "mm", "pressure_offset_bar": "bar",
+         "t0_mm": "mm", "D0_mm": "mm", "L0_mm": "mm", "pressure_offset_bar": "bar",
          "rubber_scale": "x Silastic S", "C01_over_C10": "ratio",
          "loadcell_sensitivity_tolerance": "fraction",
          "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
@@ -170,6 +170,10 @@ class Identification:
             elif name in GEOMETRY:
                 add(name, value, *interval[name], source=f"the runs (declared "
                     f"{float(self.runs[0].muscle[name]):g} mm)")
+            elif name == "L0_mm":
+                add(name, value, *interval[name], source=f"the runs (declared "
+                    f"{float(self.runs[0].muscle[name]):g} mm): each run's eps from its held "
+                    "length at this rest length")
             else:
                 add(name, value, *interval[name])
         for name in GEOMETRY:

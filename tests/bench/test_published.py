@@ -3,6 +3,7 @@ DMSP-20-300 (mkm/data/published/) imported, identified on two lengths, reported 
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 from pathlib import Path
@@ -124,3 +125,73 @@ def test_the_dmsp_20_read_at_its_nominal_length(tmp_path, mkm_cli):
     pred, _ = predict_steps(model, runs[0].steps, runs[0].meta.muscle, cache_dir=None)
     scored = summarise_run(score_run(runs[0].steps, pred, "thickwall"), pred.seconds, False)
     assert scored["max_abs_err_pct"] < 3.0
+
+
+@pytest.mark.slow  # an import and an identification from the command line: ten seconds
+def test_the_dmsp_20_rest_length_is_identified_from_its_table(tmp_path, mkm_cli):
+    """Read as the table gives it (its longest length, 296 mm, the rest length), the
+    DMSP-20-300 identified with its rest length fitted on the rest-length run and one other
+    finds Festo's nominal 300 mm (measured 299.75 mm, 95 % interval 299.59-299.88, chi2/nu 1.04
+    against the declared accuracy); without it the fit misses by a hundred times its noise
+    (chi2/nu 399). The report predicts every run of the table at the identified rest length,
+    each held at its own length: the rest-length curve within 1 % of its largest force
+    (measured 0.73 %; 10.6 % at the table's length)."""
+    code, out, err = mkm_cli(["import", str(TABLE), *MUSCLE, "--accuracy",
+                              "force=1N+1%,pressure=0.01bar", "--out", str(tmp_path / "runs")])
+    assert code == 0, err
+    paths = out.split()
+    fitted = {}
+    for params in ("theta0,rubber", "theta0,rubber,L0"):
+        code, out, err = mkm_cli(["identify", paths[0], paths[1], "--params", params, "--model",
+                                  "thickwall", "--search", "model", "--no-progress", "--out",
+                                  str(tmp_path / params)])
+        assert code == 0, err
+        record = json.loads((tmp_path / params / "identification.json").read_text(
+            encoding="utf-8"))
+        fitted[params] = record
+    chi2 = {k: r["goodness_of_fit"]["chi2_per_nu"] for k, r in fitted.items()}
+    assert chi2["theta0,rubber"] > 100 and chi2["theta0,rubber,L0"] < 2, chi2
+    row = next(p for p in fitted["theta0,rubber,L0"]["parameters"] if p["parameter"] == "L0_mm")
+    assert row["status"] == "fitted" and row["unit"] == "mm"
+    assert row["value"] == pytest.approx(300.0, abs=0.5)
+    assert row["ci_low"] <= row["value"] <= row["ci_high"] and row["ci_high"] - row["ci_low"] < 1
+    assert "L0_mm fitted: 299.7" in out and "declared 296 mm" in out
+
+    from mkm.report import _identified_geometry
+
+    calibration = Calibration.load(tmp_path / "theta0,rubber,L0" / "calibration.json")
+    rest = load_run(paths[0])
+    geometry = _identified_geometry(calibration, rest.meta.muscle)
+    assert geometry["L0_mm"] == row["value"]
+    assert geometry["eps"] == pytest.approx(1 - 296.0 / row["value"], abs=1e-12)
+    # another muscle (another declared rest length) is not the identified one
+    other = dataclasses.replace(rest.meta.muscle, L0_mm=250.0)
+    assert _identified_geometry(calibration, other) == {}
+    muscle = dataclasses.replace(rest.meta.muscle, **geometry)
+    model = make_model("thickwall", calibration, muscle)
+    pred, _ = predict_steps(model, rest.steps, muscle, cache_dir=None)
+    scored = summarise_run(score_run(rest.steps, pred, "thickwall"), pred.seconds, False)
+    assert scored["max_abs_err_pct"] < 1.0
+
+
+def test_a_ratio_the_fits_barely_prefer_is_not_separated(tmp_path, mkm_cli):
+    """The DMSP-10-250 on its rest length and eps 0.064 with its rest length fitted: freeing
+    C01's share drives it to its search box's edge (C01/C10 9) and the linearised bootstrap
+    then excludes Silastic S's ratio, yet the fit's chi2 falls by 0.1 only (against 3.84 for
+    one parameter more at 95 %). The rubber stays one scale at Silastic S's ratio, and the note
+    says why; held at the ratio of 9, the eps 0.208 length was missed by 8.6 % of the largest
+    force instead of 3.2 %."""
+    muscle = ["--id", "dmsp-10", "--D0", "10", "--t0", "1.5", "--muscle", "Festo DMSP-10-250"]
+    code, out, err = mkm_cli(["import", str(TABLE), *muscle, "--accuracy",
+                              "force=0.5N+1%,pressure=0.01bar", "--out", str(tmp_path / "runs")])
+    assert code == 0, err
+    paths = out.split()
+    code, out, err = mkm_cli(["identify", paths[0], paths[1], "--params", "theta0,rubber,L0",
+                              "--model", "thickwall", "--search", "model", "--no-progress",
+                              "--out", str(tmp_path / "id")])
+    assert code == 0, err
+    rubber = json.loads((tmp_path / "id" / "identification.json").read_text(
+        encoding="utf-8"))["rubber"]
+    assert not rubber["separated"] and rubber["chi2_improvement"] < 1.0, rubber
+    assert not rubber["ratio_ci"][0] <= 0.905 <= rubber["ratio_ci"][1]  # the bootstrap's
+    assert "yet freeing it lowers chi2 by only" in out

@@ -403,6 +403,20 @@ def test_every_help_example_parses():
         assert callable(args.func)
 
 
+def test_identify_help_names_every_parameter_group_it_fits():
+    """``--params``' help lists each group of the fit's registry (``fitting.GROUPS``), so a
+    group added there cannot be missing from the help (the CLI does not import the fit)."""
+    import re
+
+    from mkm.cli import build_parser
+    from mkm.identify.fitting import GROUPS
+
+    sub = dict((name, parser) for name, parser in _subcommands(build_parser()))[("identify",)]
+    action = next(a for a in sub._actions if "--params" in a.option_strings)
+    listed = re.search(r"a comma list of ([\w, ]+?) \(", action.help).group(1)
+    assert [g.strip() for g in listed.split(",")] == list(GROUPS)
+
+
 def test_every_readme_example_parses():
     """Every `mkm ...` line in the README's code blocks is a command line mkm accepts (lines
     with placeholders such as RUN_DIR, <RUN> or [optional] parts are templates, not commands)."""

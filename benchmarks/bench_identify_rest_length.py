@@ -1,0 +1,114 @@
+"""``mkm identify --params theta0,rubber,L0`` on the Martens and Boblan maps, as a lab reads them.
+
+Run outside the test suite:
+
+    .venv/bin/python benchmarks/bench_identify_rest_length.py [--out FILE.json]
+
+Each Festo muscle of ``martens_boblan_2017_forcemaps.csv`` is imported as the table gives it
+(``mkm import``: its longest length is its rest length, 296 mm for the DMSP-20-300, 250 mm for
+the DMSP-10-250) with the accuracy the published-data guide declares, and identified with the
+thick-wall form (``--model thickwall --search model``) on the rest-length run and one other held
+length, for every such pair: theta0 and one rubber scale alone (the rest length the table's),
+and with the rest length fitted (``L0``). Each fit predicts every held length of the map; the
+score is the threshold study's (``bench_threshold_models.py``): the largest error as % of the
+muscle's largest force, a slack entry charged for the pull predicted there. Also recorded: the
+fitted rest length against Festo's nominal one, the threshold the identified muscle has at the
+table's longest length against the measured bracket (the table's last slack entry and its first
+force) and the line through its two lowest forces, chi2/nu of the fit, and its wall time.
+"""
+
+from __future__ import annotations
+
+import argparse
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+from bench_threshold_models import NOMINAL_LENGTH_MM, read_maps
+
+from mkm.bench.exchange import import_table, parse_accuracy
+from mkm.core.records import provenance, write_json_atomic
+from mkm.identify import identify
+from mkm.identify.fitting import ModelStatic, step_predictions
+from mkm.identify.page import threshold_row
+from mkm.identify.runs import load_runs
+from mkm.paths import published_table
+
+TABLE = published_table("martens_boblan_2017_forcemaps.csv")
+#: as docs/published.md imports them (the id, the maker's diameter, a third party's wall)
+MUSCLES = {"Festo DMSP-10-250": ("dmsp-10", "force=0.5N+1%,pressure=0.01bar"),
+           "Festo DMSP-20-300": ("dmsp-20", "force=1N+1%,pressure=0.01bar")}
+MODEL = "thickwall"
+FITS = {"theta0, rubber": "theta0,rubber", "theta0, rubber, L0": "theta0,rubber,L0"}
+
+
+def imported(force_map, out: Path) -> list:
+    """The map's runs as ``mkm import`` writes them (as identify reads them), by eps."""
+    run_id, accuracy = MUSCLES[force_map.muscle]
+    runs = import_table(TABLE, out, {"id": run_id, "D0_mm": force_map.D0_mm,
+                                     "t0_mm": force_map.t0_mm, "L0_mm": None, "eps": None},
+                        select=force_map.muscle, accuracy=parse_accuracy(accuracy))
+    return sorted(load_runs([run.path for run in runs]), key=lambda run: run.eps)
+
+
+def score(data, result, force_map) -> dict:
+    """Each held length's largest error as % of the muscle's largest force (a slack step's
+    measured 0 N: charged for the pull predicted there)."""
+    values = result.fit.values
+    predicted = step_predictions(ModelStatic(MODEL, cache_dir=None), data, values)
+    top = force_map.largest_force_N
+    errors = {round(r.eps, 4): float(np.max(np.abs(p - r.steps["force_N_mean"].to_numpy())))
+              / top * 100.0 for r, p in zip(data, predicted, strict=True)}
+    threshold = threshold_row(data[0], ModelStatic(MODEL, cache_dir=None), values)
+    return {"errors": errors, "threshold_bar": threshold["fitted threshold [bar]"]}
+
+
+def study(out: Path) -> list[dict]:
+    rows = []
+    for force_map in read_maps():
+        runs = imported(force_map, out / force_map.muscle.replace(" ", "_"))
+        measured = force_map.measured_threshold_bar()
+        for other in runs[1:]:
+            pair = [runs[0], other]
+            for label, params in FITS.items():
+                started = time.perf_counter()
+                result = identify([r.path for r in pair], params=params, model=MODEL,
+                                  search="model", cache_dir=None)
+                seconds = time.perf_counter() - started
+                scored = score(runs, result, force_map)
+                trained = {round(r.eps, 4) for r in pair}
+                held = {e: v for e, v in scored["errors"].items() if e not in trained}
+                fitted_L0 = result.fit.values.get("L0_mm", force_map.table_L0_mm)
+                rows.append({
+                    "muscle": force_map.muscle, "fitted": label,
+                    "trained on eps": f"0, {other.eps:g}",
+                    "L0 mm": round(fitted_L0, 2),
+                    "nominal L0 mm": NOMINAL_LENGTH_MM[force_map.muscle],
+                    "theta0 deg": round(result.fit.values["theta0_deg"], 3),
+                    "rubber x Silastic S": round(result.fit.values["rubber_scale"], 3),
+                    "chi2/nu": round(result.goodness.reduced, 2),
+                    "rest curve max err %": round(scored["errors"][0.0], 2),
+                    "other trained max err %": round(scored["errors"][max(trained)], 2),
+                    "held-out lengths max err %": round(max(held.values()), 2),
+                    "worst held-out eps": max(held, key=held.get),
+                    "P* at eps 0 bar": round(scored["threshold_bar"], 3),
+                    "measured P* bar": round(measured["estimate_bar"], 3),
+                    "measured bracket bar": f"{measured['low_bar']:g}-{measured['high_bar']:g}",
+                    "seconds": round(seconds, 2)})
+                print(rows[-1], flush=True)
+    return rows
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default="identify_rest_length.json")
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as folder:
+        rows = study(Path(folder))
+    write_json_atomic(Path(args.out), {**provenance(), "table": TABLE.name, "rows": rows})
+    print(f"wrote {args.out}")
+
+
+if __name__ == "__main__":
+    main()
