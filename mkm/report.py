@@ -591,8 +591,9 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
     identified = {f"{k} identified (the models')": v for k, v in
                   _identified_geometry(r.calibration, muscle).items()}
     tables = [mapping_table(muscle.record() | {"eps [%]": r.eps_pct} | identified, "Muscle",
-                            source + (" The models predict with the wall or diameter the "
-                                      "calibration identified." if identified else "")),
+                            source + (" The models predict with the wall, diameter or rest "
+                                      "length the calibration identified (eps at it: the held "
+                                      "length kept)." if identified else "")),
               mapping_table(hardware, "Hardware", source),
               mapping_table(meta.get("calibration") or {}, "Calibration", source),
               mapping_table(meta.get("tare") or {}, "Tare at 0 bar", source)]
