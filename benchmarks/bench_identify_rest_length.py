@@ -31,7 +31,7 @@ from mkm.bench.exchange import import_table, parse_accuracy
 from mkm.core.records import provenance, write_json_atomic
 from mkm.identify import identify
 from mkm.identify.fitting import ModelStatic, step_predictions
-from mkm.identify.page import threshold_row
+from mkm.identify.goodness import threshold_row
 from mkm.identify.runs import load_runs
 from mkm.paths import published_table
 

@@ -40,6 +40,9 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy import stats
 
+from mkm.fem.calibration import THRESHOLD_FLOOR_FRACTION, line_above_threshold
+from mkm.fem.thickwall import klute_hannaford_threshold_pressure
+from mkm.identify import fitting
 from mkm.identify.runs import step_slopes
 
 #: a misfit: all steps' chi-square this improbable under their noise alone (a branch's: this
@@ -280,3 +283,33 @@ def widen(boot: dict, fit, goodness: Goodness) -> dict:
                           min(value + factor * (high - value), hi_b))
         goodness.widened[name] = round(factor, 4)
     return {**boot, "interval": interval, "unwidened_interval": boot["interval"]}
+
+
+def threshold_row(run, static, values: dict) -> dict:
+    """The identified threshold pressure [bar] at the run's eps against the measured one.
+
+    Fitted: the ``threshold_pressure_bar`` of the identified static model where it reports one
+    (the thick-wall form, the FE, both with the gap), else the thick-wall form's
+    (:func:`mkm.fem.thickwall.klute_hannaford_threshold_pressure`) at the identified angle,
+    rubber and gap. Measured: the zero of the least-squares line through the settled steps,
+    rising and falling (friction and creep scale the force, so they leave the zero where it is),
+    whose force is above the noise floor: the larger of 2 % of the run's largest step force
+    (:data:`mkm.fem.calibration.THRESHOLD_FLOOR_FRACTION`, the calibration's floor for the same
+    line) and three standard errors of the run's zero (its tare), below which a step may be a
+    muscle not yet pulling.
+    """
+    D0_mm, t0_mm, eps = fitting.geometry(run, values)
+    gap_mm = values.get("gap_mm", 0.0)
+    model = static.model(values, float(run.muscle["L0_mm"]))
+    if model.has_threshold:
+        fitted = float(model.predict(0.0, D0_mm, t0_mm, eps).extras["threshold_pressure_bar"])
+    else:
+        rubber = model.material
+        fitted = float(klute_hannaford_threshold_pressure(
+            D0_mm, t0_mm, eps, values["theta0_deg"], rubber.C10_MPa, rubber.C01_MPa, gap_mm))
+    fitted += values.get("pressure_offset_bar", 0.0)  # as the monitor reads it
+    force = run.steps["force_N_mean"].to_numpy(dtype=float)
+    floor = max(THRESHOLD_FLOOR_FRACTION * np.max(force, initial=0.0), 3.0 * run.tare_se_N)
+    _, measured = line_above_threshold(run.steps["pressure_bar_mean"], force, floor)
+    return {"run": run.name, "eps": eps, "fitted threshold [bar]": fitted,
+            "measured threshold [bar]": measured, "fitted - measured [bar]": fitted - measured}

@@ -5,9 +5,10 @@ the parameters with their intervals and what the runs could not tell; for each r
 the measured rising and falling steps with both branches the identified muscle predicts, the
 hysteresis width per step, and the residuals before (the nominal model: the shipped calibration,
 Silastic S, no friction or creep) and after identification; the identified muscle's threshold
-pressure at each run's eps against the measured one (:func:`threshold_row`). The held-out
-check of the identification's own runs comes first: the honest predictive error. Without an
-identified muscle in the calibration, the section is empty.
+pressure at each run's eps against the measured one
+(:func:`mkm.identify.goodness.threshold_row`). The held-out check of the identification's own
+runs comes first: the honest predictive error. Without an identified muscle in the
+calibration, the section is empty.
 """
 
 from __future__ import annotations
@@ -17,13 +18,13 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.fem.calibration import THRESHOLD_FLOOR_FRACTION, Calibration, line_above_threshold
+from mkm.fem.calibration import Calibration
 from mkm.fem.friction import DEFAULTS
 from mkm.fem.materials import SILASTIC_S
-from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.html import esc, figure_html, save_figure, table_html
 from mkm.identify import fitting
 from mkm.identify.band import identified_entry
+from mkm.identify.goodness import threshold_row
 from mkm.identify.runs import load_run_data
 
 
@@ -109,36 +110,6 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
                             "least-squares line through the run's settled steps above its "
                             "noise floor.", digits=3))
     return "".join(parts)
-
-
-def threshold_row(run, static, values: dict) -> dict:
-    """The identified threshold pressure [bar] at the run's eps against the measured one.
-
-    Fitted: the ``threshold_pressure_bar`` of the identified static model where it reports one
-    (the thick-wall form, the FE, both with the gap), else the thick-wall form's
-    (:func:`mkm.fem.thickwall.klute_hannaford_threshold_pressure`) at the identified angle,
-    rubber and gap. Measured: the zero of the least-squares line through the settled steps,
-    rising and falling (friction and creep scale the force, so they leave the zero where it is),
-    whose force is above the noise floor: the larger of 2 % of the run's largest step force
-    (:data:`mkm.fem.calibration.THRESHOLD_FLOOR_FRACTION`, the calibration's floor for the same
-    line) and three standard errors of the run's zero (its tare), below which a step may be a
-    muscle not yet pulling.
-    """
-    D0_mm, t0_mm, eps = fitting.geometry(run, values)
-    gap_mm = values.get("gap_mm", 0.0)
-    model = static.model(values, float(run.muscle["L0_mm"]))
-    if model.has_threshold:
-        fitted = float(model.predict(0.0, D0_mm, t0_mm, eps).extras["threshold_pressure_bar"])
-    else:
-        rubber = model.material
-        fitted = float(klute_hannaford_threshold_pressure(
-            D0_mm, t0_mm, eps, values["theta0_deg"], rubber.C10_MPa, rubber.C01_MPa, gap_mm))
-    fitted += values.get("pressure_offset_bar", 0.0)  # as the monitor reads it
-    force = run.steps["force_N_mean"].to_numpy(dtype=float)
-    floor = max(THRESHOLD_FLOOR_FRACTION * np.max(force, initial=0.0), 3.0 * run.tare_se_N)
-    _, measured = line_above_threshold(run.steps["pressure_bar_mean"], force, floor)
-    return {"run": run.name, "eps": eps, "fitted threshold [bar]": fitted,
-            "measured threshold [bar]": measured, "fitted - measured [bar]": fitted - measured}
 
 
 def _figure(run, before, after, k: int):

@@ -64,6 +64,9 @@ RATIO_LIKELIHOOD = float(chi2.ppf(0.95, 1))
 PRECISION = {"theta0_deg": 0.3, "rubber_scale": 0.10, "c01_fraction": 0.1, "t0_mm": 0.1,
              "D0_mm": 0.1, "L0_mm": 1.0, "gap_mm": 0.1, "hysteresis_fraction": 0.01,
              "creep_fraction": 0.01, "log_tau": 0.5}
+#: a run declared at its rest length whose measured threshold lies this far above the fitted
+#: model's is named with what can make it (:func:`_rest_length_hint`) [bar]
+THRESHOLD_HINT_BAR = 0.1
 #: where the fitted terms start (a term at its zero bound has no gradient to leave it by)
 TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01, "gap_mm": 0.2}
 
@@ -304,6 +307,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         terms = model_form_terms(source, fe, runs, best, braid)
     boot = extend(boot, best, terms)
     notes += [line for line in (fitness.line(),) if line]
+    notes += _rest_length_hint(runs, fe, best, fitness, groups)
     notes += _identifiability(runs, best, boot)
     if boot.get("stretched"):
         notes.append(f"{', '.join(boot['stretched'])}: the bootstrap's 95 % range left the "
@@ -339,6 +343,30 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         confirmation=confirmation, checks=checks, notes=notes, model=fe.name,
         searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started,
         goodness=fitness, rubber=rubber, model_form=terms)
+
+
+def _rest_length_hint(runs, fe, best, fitness, groups) -> list[str]:
+    """Where the fit misses (or is not judged) and a run declared at its rest length pulls only
+    above a threshold the fitted model does not have (:data:`THRESHOLD_HINT_BAR` above it):
+    what does that, and the ``--params`` that fit it."""
+    if (fitness.judged and not fitness.misfit) or {"L0_mm", "gap_mm"} & set(best.names):
+        return []
+    notes = []
+    for run in runs:
+        if run.eps > 0:
+            continue
+        row = goodness.threshold_row(run, fe, best.values)
+        fitted, measured = row["fitted threshold [bar]"], row["measured threshold [bar]"]
+        if measured - fitted > THRESHOLD_HINT_BAR:
+            given = ",".join(groups)
+            notes.append(f"run {run.name}, declared at its rest length, pulls only above "
+                         f"{measured:.2f} bar (the line through its steps), the fitted model "
+                         f"from {fitted:.2f} bar: its length may be shorter than the muscle's "
+                         "rest length (a table that starts already shortened, a length "
+                         "measured under load), or the tube may stand off the braid; fit the "
+                         f"rest length (--params {given},L0) or a gap (--params {given},gap, "
+                         "with --model thickwall or axisym)")
+    return notes
 
 
 def _rms(r) -> float:

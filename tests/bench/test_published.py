@@ -140,7 +140,7 @@ def test_the_dmsp_20_rest_length_is_identified_from_its_table(tmp_path, mkm_cli)
                               "force=1N+1%,pressure=0.01bar", "--out", str(tmp_path / "runs")])
     assert code == 0, err
     paths = out.split()
-    fitted = {}
+    fitted, said = {}, {}
     for params in ("theta0,rubber", "theta0,rubber,L0"):
         code, out, err = mkm_cli(["identify", paths[0], paths[1], "--params", params, "--model",
                                   "thickwall", "--search", "model", "--no-progress", "--out",
@@ -148,7 +148,12 @@ def test_the_dmsp_20_rest_length_is_identified_from_its_table(tmp_path, mkm_cli)
         assert code == 0, err
         record = json.loads((tmp_path / params / "identification.json").read_text(
             encoding="utf-8"))
-        fitted[params] = record
+        fitted[params], said[params] = record, out
+    # without it, the misfit comes with what can make it and the --params that fit it
+    hint = "declared at its rest length, pulls only above 0.4"
+    assert hint in said["theta0,rubber"] and "--params theta0,rubber,L0)" in said[
+        "theta0,rubber"]
+    assert hint not in said["theta0,rubber,L0"]
     chi2 = {k: r["goodness_of_fit"]["chi2_per_nu"] for k, r in fitted.items()}
     assert chi2["theta0,rubber"] > 100 and chi2["theta0,rubber,L0"] < 2, chi2
     row = next(p for p in fitted["theta0,rubber,L0"]["parameters"] if p["parameter"] == "L0_mm")
