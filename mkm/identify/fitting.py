@@ -418,13 +418,19 @@ def weights(runs) -> list[np.ndarray]:
 
 
 def fit(source: StaticSource, runs, names, start: dict[str, float],
-        max_nfev: int = 400) -> Fit:
-    """Fit ``names`` (of :data:`ORDER`) from ``start`` (every value), the rest held fixed.
+        max_nfev: int = 400, given: dict[str, tuple[float, float]] | None = None) -> Fit:
+    """Fit ``names`` (of :data:`ORDER`) from ``start`` (every value), the rest held fixed,
+    each within :func:`bounds_of` unless ``given`` names its bounds.
 
-    Raises ``RuntimeError`` when the optimiser fails or the residuals are not finite.
+    Raises ``RuntimeError`` when a parameter has no room to move, the optimiser fails or the
+    residuals are not finite.
     """
     names = tuple(n for n in ORDER if n in names)
-    bounds = {n: bounds_of(n, source, runs, start) for n in names}
+    given = given or {}
+    bounds = {n: given[n] if n in given else bounds_of(n, source, runs, start) for n in names}
+    empty = [f"{n} in [{b[0]:.6g}, {b[1]:.6g}]" for n, b in bounds.items() if not b[0] < b[1]]
+    if empty:
+        raise RuntimeError(f"the fit on {source.name} has nothing to search: {empty[0]}")
     x0 = np.array([min(max(start[n], bounds[n][0]), bounds[n][1]) for n in names])
     holds = [run.hold >= 0 for run in runs]
     w = np.concatenate(weights(runs))

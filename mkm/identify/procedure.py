@@ -535,6 +535,10 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     (:func:`model_form_terms`): the ratio's interval holds their shifts too, so that a braid
     the model does not have, which can look like another ratio, does not separate them."""
     names = (*best.names, "c01_fraction")
+    low, high = fitting.bounds_of("c01_fraction", source, runs, best.values)
+    if not low < high:
+        return best, None, {"separated": False, "why": "C01's share has no room in the search "
+                            f"box ({source.name}'s) at this rubber scale"}, None
     try:
         free = fitting.fit(source, runs, names,
                            {**best.values, "c01_fraction": fitting.SILASTIC_C01_FRACTION})
@@ -542,9 +546,8 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
         return best, None, {"separated": False, "why": f"the fit with the ratio free failed: "
                             f"{exc}"}, None
     share_box = tuple(free.bounds["c01_fraction"])
-    if share_box != fitting.TERM_BOUNDS["c01_fraction"] and (
-            share_box[0] == share_box[1] or fitting.at_edge(free.values["c01_fraction"],
-                                                            share_box)):
+    if share_box != fitting.TERM_BOUNDS["c01_fraction"] and fitting.at_edge(
+            free.values["c01_fraction"], share_box):
         return best, None, {"separated": False, "why": "C01's share reached the search box "
                             f"({source.name}'s) before the runs fixed it"}, None
     boot = bootstrap(free, seed=seed, **instrument_terms(runs),
@@ -560,10 +563,13 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     condition = (float(np.linalg.cond((J / norms).T @ (J / norms))) if np.all(norms > 0)
                  else float("inf"))
     assumed = SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa
-    narrow = ratio > 0 and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio
-    # the bootstrap is linearised at the optimum: where C01's share trades against the other
-    # parameters along a flat valley it can exclude a ratio the fit barely prefers, so a
-    # rejection must also be the fits' (the likelihood ratio of one parameter more)
+    # the bootstrap is linearised at the optimum: at the search box's edge its replicates
+    # collapse onto the edge (an interval of nothing, not a measurement), and where C01's share
+    # trades against the other parameters along a flat valley it can exclude a ratio the fit
+    # barely prefers, so a rejection must also be the fits' (the likelihood ratio of one
+    # parameter more)
+    narrow = (ratio > 0 and not fitting.at_edge(share, share_box)
+              and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio)
     improvement = (best.rss - free.rss) / (free.rss / max(free.n - len(free.names), 1))
     rejected = not low <= assumed <= high and improvement > RATIO_LIKELIHOOD
     # a braid the model may not have bends the curve as another ratio would (measured on the
@@ -693,9 +699,12 @@ def _checks(runs, fe, source, best, nominal) -> list[dict]:
             for k in sorted(members, reverse=True):
                 kept = kept.without(k)
         prefix = "heldout" if kind == "run" else "length_heldout"
+        # the rest length no shorter than any run's held length, the held-out one's too
+        given = {n: fitting.bounds_of(n, source, runs, best.values) for n in ("L0_mm",)
+                 if n in best.names}
         try:
             held = fitting.fit(kept, others, best.names, best.values,
-                               max_nfev=CANDIDATE_EVALUATIONS)
+                               max_nfev=CANDIDATE_EVALUATIONS, given=given)
         except RuntimeError as exc:  # the other runs do not fix the parameters: said, no error
             for k in members:
                 nan = np.full(len(runs[k].steps), np.nan)

@@ -238,6 +238,10 @@ def test_a_rest_length_longer_than_declared_is_found_blind(tmp_path):
     low, high = result.bootstrap["interval"]["L0_mm"]
     assert L0 == pytest.approx(282.0, abs=1.0) and low <= 282.0 <= high, (L0, low, high)
     assert result.fit.values["theta0_deg"] == pytest.approx(32.0, abs=0.3)
+    # each run predicted from the other: the rest length never shorter than a held length,
+    # the held-out run's included (a model takes no negative eps)
+    for check in result.checks:
+        assert check["heldout_values"]["L0_mm"] >= held_mm, check["run"]
     table = result.parameters().set_index("parameter")
     assert table.loc["L0_mm", "status"] == "fitted" and "declared 278 mm" in table.loc[
         "L0_mm", "source"]
@@ -284,3 +288,16 @@ def test_an_interval_always_holds_its_estimate_and_says_when_stretched():
     assert boot["stretched"] == ["theta0_deg"]
     centred = one_parameter_fit(x, np.random.default_rng(0).standard_normal(20), 2.0 * x)
     assert bootstrap(centred, sensitivity_tolerance=0.0)["stretched"] == []
+
+
+def test_a_parameter_without_room_to_move_is_a_failed_fit_not_a_crash():
+    # a search box of one point (C01's share where a surrogate's box leaves the rubber no room)
+    # is what least_squares refuses with a ValueError; the fit says it as the failure callers
+    # handle (a candidate given up, the ratio not tested)
+    from mkm.identify.fitting import fit
+
+    source = SimpleNamespace(name="a model", box={"theta0_deg": (20.0, 40.0)})
+    with pytest.raises(RuntimeError, match=r"nothing to search: c01_fraction in \[0.4, 0.4\]"):
+        fit(source, [], ("theta0_deg", "c01_fraction"), {"theta0_deg": 30.0,
+                                                         "c01_fraction": 0.4},
+            given={"c01_fraction": (0.4, 0.4)})
