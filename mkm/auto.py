@@ -362,6 +362,8 @@ class AutoModel(ForceModel):
         out = self.choose(P, D0, t0, eps)
         valid = np.isfinite(out["force_N"])
         converged = valid.copy()
+        # the physical limit the fallback FE names where it finds no state (mkm.fem.outcomes)
+        limit = np.full(valid.shape, "", dtype=object)
         fallback = np.flatnonzero(out["model_used"] == FALLBACK)
         if fallback.size:
             args = (np.ravel(a)[fallback] for a in (P, D0, t0, eps))
@@ -369,8 +371,10 @@ class AutoModel(ForceModel):
             out["force_N"][fallback] = pred.force_N
             valid[fallback] = pred.valid
             converged[fallback] = pred.converged
+            limit[fallback] = np.ravel(np.broadcast_to(pred.extras.get("limit", ""),
+                                                       pred.force_N.shape))
         return {key: value.reshape(P.shape) for key, value in
-                {**out, "valid": valid, "converged": converged}.items()}
+                {**out, "valid": valid, "converged": converged, "limit": limit}.items()}
 
 
 def spec_of(predictor: str, table: Path | str | None = None) -> str:
