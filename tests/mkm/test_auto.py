@@ -19,6 +19,7 @@ from mkm.auto import (
     MESH_SAFETY,
     RANGE_PREDICTOR,
     RANGE_SPEC,
+    RANGE_STD_FACTOR,
     STD_FACTOR,
     AutoModel,
     explain,
@@ -164,9 +165,13 @@ def test_outside_the_default_box_the_range_surrogate_answers_and_never_inside(ta
                          ).predict(P, D0, 2.5, 0.05)
 
     ref = make_model("axisym", mesh="coarse").predict(P, 55.0, 2.5, 0.05).force_N
-    bound = 100 * STD_FACTOR * RANGE_STD_N / ref.max()
+    # the range surrogate's std counts RANGE_STD_FACTOR times in the bounds where it is the
+    # reference, its own and a closed form's: 3 of it were exceeded in 4 % of fresh calls of
+    # the range, by up to 5.2 of it (benchmarks/bench_auto.py --range practical)
+    assert RANGE_STD_FACTOR == 6.0 and STD_FACTOR == 3.0
+    bound = 100 * RANGE_STD_FACTOR * RANGE_STD_N / ref.max()
     thick = 100 * (np.abs(make_model("thickwall").predict(P, 55.0, 2.5, 0.05).force_N - ref)
-                   + STD_FACTOR * RANGE_STD_N) / ref.max()
+                   + RANGE_STD_FACTOR * RANGE_STD_N) / ref.max()
     assert bound < thick.max()  # a tolerance between them leaves the surrogate the cheapest
     pred = run(55.0, 1.01 * bound / 100)
     assert set(pred.extras["model_used"]) == {RANGE_PREDICTOR}
