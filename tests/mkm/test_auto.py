@@ -429,3 +429,21 @@ def test_a_surrogate_about_to_train_is_announced_first(monkeypatch):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         _announce_first_training(kinds.RANGE)
+
+
+def test_past_the_braid_lock_auto_says_the_braid_locks_as_its_fallback_does(table_path):
+    # eps 0.35 is past the lock at 32 deg (eps_max 0.319): no candidate is valid, the fallback
+    # FE finds no state and names the physical limit, which auto passes on, so its points are
+    # classified as the braid locking (mkm.fem.outcomes), not as a solve that failed
+    from mkm.auto import FALLBACK_SPEC
+    from mkm.fem.outcomes import BRAID_LOCKS, classify
+
+    def build(spec, **muscle):  # the coarse mesh stands in for the fine one: fast
+        return fake_build("axisym:mesh=coarse" if spec == FALLBACK_SPEC else spec, **muscle)
+
+    pred = AutoModel(table=table_path, build=build, tolerance=0.02, theta0_deg=32.0,
+                     mesh_errors=str(Path(table_path).with_name("none.csv"))
+                     ).predict(P, 30.0, 2.0, 0.35)
+    assert set(pred.extras["model_used"]) == {"axisym-fine"}
+    assert not pred.converged.any() and np.isnan(pred.force_N).all()
+    assert classify(pred).tolist() == [BRAID_LOCKS] * P.size
