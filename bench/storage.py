@@ -107,7 +107,12 @@ class StepRecord(NamedTuple):
 
 
 class CommandRecord(NamedTuple):
-    """One row of ``commands.csv``: a regulator command and whether the write succeeded."""
+    """One row of ``commands.csv``: a regulator command and whether the write succeeded.
+
+    ``sample`` and ``time_s`` say when it was issued, by the device's sample clock just after
+    the write (the samples acquired by then, read or waiting in the buffer): the command acts
+    from that sample on. Only where the device could not say (lost) is it the samples read.
+    """
 
     time_s: float
     sample: int

@@ -29,7 +29,7 @@ import math
 import time
 from contextlib import nullcontext
 
-from mkm.bench.backend import Backend, BufferOverflow, ReadTimeout
+from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.recorder import Recorder
@@ -82,6 +82,10 @@ class Acquisition:
         self.electronic = config.regulator.electronic
         self.tare_offset_V = config.loadcell.offset_V
         self.command_bar = 0.0
+        # the commands written, by the device's sample clock when each was issued (index, bar),
+        # and the command before the oldest kept: the command each sample was acquired under
+        self._issued: list[tuple[int, float]] = []
+        self._issued_before_bar = 0.0
         self.manometer_bar = math.nan
         self.measured_bar = math.nan  # the last plausible pressure read (see held_bar)
         self.next_index = 0
@@ -185,8 +189,29 @@ class Acquisition:
                 flags.append("interlock")
                 trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
         return Sample(index, index / self.rate_hz, step, phase, set_bar,
-                      self.command_bar if self.electronic else math.nan, pressure, cell_V,
-                      monitor_V, force, "|".join(flags))
+                      self._commanded_at(index) if self.electronic else math.nan, pressure,
+                      cell_V, monitor_V, force, "|".join(flags))
+
+    def _commanded_at(self, index: int) -> float:
+        """The command [bar] sample ``index`` was acquired under: the last one issued at or
+        before it by the device's clock (samples read late, after a stall or at a stop, were
+        acquired before a command the reader wrote meanwhile)."""
+        bar = self._issued_before_bar
+        for at, value in self._issued:
+            if at > index:
+                break
+            bar = value
+        return bar
+
+    def _clock_index(self) -> int:
+        """The device's sample clock now, as a sample index: the samples acquired, read or
+        waiting in its buffer (a command written now acts from this sample on). Where the
+        device cannot say (lost, not started), the samples read: the reader's position, a
+        lower bound."""
+        try:
+            return self.next_index + max(int(self.backend.available()), 0)
+        except BenchError:
+            return self.next_index
 
     def _interlock(self, t_s, force, pressure, cell_V, monitor_V, flags) -> str | None:
         """The interlock this sample trips (its message), or None."""
@@ -262,11 +287,15 @@ class Acquisition:
             self.read_block("operator", -1, pressure_bar)
 
     def command(self, pressure_bar: float, purpose: str) -> None:
-        """Write the clamped pressure command and log it (also when the write fails)."""
+        """Write the clamped pressure command and log it (also when the write fails).
+
+        The write comes first; the log row after it carries the time the command was issued:
+        the device's sample clock just after the write (:meth:`_clock_index`), not the reader's
+        position, which lags it by the samples waiting in the buffer (a stalled reader, a stop
+        that cut a block)."""
         reg = self.config.regulator
         clamped = min(max(pressure_bar, 0.0), reg.max_pressure_bar)
         volts = reg.command_volts(clamped)
-        t_s = self.next_index / self.rate_hz
         ok = False
         if self.lease is not None and clamped > 0:
             # before the write: a kill between the write and any record still finds it; a
@@ -289,6 +318,12 @@ class Acquisition:
                 meta.stop_to_vent_s = time.monotonic() - stopped_at
                 meta.vented_at_unix_s = time.time()
         finally:
+            issued = self._clock_index()
+            if ok:
+                self._issued.append((issued, clamped))
+                # a command every sample still to be read was acquired after is the oldest needed
+                while len(self._issued) > 1 and self._issued[1][0] <= self.next_index:
+                    self._issued_before_bar = self._issued.pop(0)[1]
             self.recorder.meta.last_command_bar = self.command_bar
             if ok and self.lease is not None and clamped == 0.0:
                 try:
@@ -297,8 +332,8 @@ class Acquisition:
                 except OSError as exc:  # the vent went through; the state folder did not
                     self.marker_problem = (f"the bench marker {self.lease.path} could not be "
                                            f"updated ({exc.strerror or exc})")
-            self.recorder.command(CommandRecord(t_s, self.next_index, clamped, volts, ok,
-                                                purpose))
+            self.recorder.command(CommandRecord(issued / self.rate_hz, issued, clamped, volts,
+                                                ok, purpose))
 
     def acquire_for(self, duration_s: float, phase: str, step: int, set_bar: float,
                     cell_volts: list | None = None) -> None:

@@ -16,10 +16,12 @@ predicts each muscle's isometric sweep over the range's pressures
 (0 to its top in 0.5 bar steps) and, for a model with a threshold P*, three pressures just above
 it (P* + 0.0005, 0.002 and 0.008 bar: the band where the held cap inherits the threshold
 state's corner compression). A sweep's outcome is the first non-``ok`` status of its points by
-the study's classification (:func:`mkm.study.classify`: not converged, invalid by the model's
-own limit, negative force, force falling with pressure by more than
-:data:`mkm.study.FORCE_NOISE_N`), with the reason the model gave and its numbers stripped; a
-model that refuses the muscle outright is ``refused`` with its message.
+the one classification every consumer uses (:func:`mkm.fem.outcomes.classify`: a physical
+limit the model names, ``braid locks`` where the braid reaches its locking angle before the
+held shortening; not converged, a failure of the solver; invalid by the model's own limit,
+negative force, force falling with pressure by more than
+:data:`mkm.fem.outcomes.FORCE_NOISE_N`), with the reason the model gave and its numbers
+stripped; a model that refuses the muscle outright is ``refused`` with its message.
 
 Writes ``--out``, a JSON (provenance, the draw's seed and box, the range stated, and under
 ``rows`` the counts per model, outcome and reason: the table the docs show), and beside it a
@@ -42,9 +44,9 @@ import pandas as pd
 from mkm.core.records import provenance, source_version, write_json_atomic
 from mkm.fem import ladder
 from mkm.fem.limits import PRACTICAL_RANGE, lock_eps, range_text
+from mkm.fem.outcomes import classify
 from mkm.fem.sampling import draw_muscles
 from mkm.registry import parse_spec
-from mkm.study import classify
 
 
 def default_models() -> str:

@@ -16,6 +16,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
+from mkm.fem.outcomes import BRAID_LOCKS
 from mkm.registry import colour as entry_colour
 
 MEASURED = {"color": "black", "capsize": 3, "zorder": 5}
@@ -472,9 +473,11 @@ def speed_accuracy_figure(summary: pd.DataFrame, machine: str) -> Figure:
     return fig
 
 
+#: A colour per outcome of :func:`mkm.fem.outcomes.classify` (every one of its ``OUTCOMES``).
 STABILITY_CLASSES = {
     "ok": "#d9f0d3",
     "invalid (model's own limit)": "#fdb863",
+    BRAID_LOCKS: "#b35806",
     "not converged": "#d7191c",
     "out of training domain": "#abd9e9",
     "negative force": "#7b3294",

@@ -36,6 +36,7 @@ from mkm.core.records import provenance, write_atomic, write_json_atomic
 from mkm.fem import ladder
 from mkm.fem.interface import ForceModel, Prediction
 from mkm.fem.limits import PRACTICAL_RANGE
+from mkm.fem.outcomes import PHYSICAL_LIMITS, classify
 from mkm.fem.paper import equation7_err_pct
 from mkm.figures import speed_accuracy_figure, stability_figure
 from mkm.html import esc, figure_html, html_page, provenance_details, save_figure, table_html
@@ -71,7 +72,6 @@ STABILITY_PRESSURES = tuple(np.round(np.arange(0.0, PRACTICAL_RANGE.pressure_bar
 STABILITY_EPS = tuple(np.round(np.arange(0.0, 0.3501, 0.05), 3))
 # whether run_study shows progress, seen by the predictor factories it calls
 _SHOW_PROGRESS: ContextVar[bool] = ContextVar("mkm_study_progress", default=False)
-FORCE_NOISE_N = 0.1  # a tenth of a newton: below what the bench resolves, so not physics
 
 
 @dataclass
@@ -345,24 +345,6 @@ def stability_cells(p: Predictor, model: ForceModel, config: StudyConfig,
     return pd.concat(frames, ignore_index=True)
 
 
-def classify(pred: Prediction) -> np.ndarray:
-    """Per point of one pressure sweep: the first failure that applies, or "ok"."""
-    force = np.ravel(pred.force_N)
-    order = np.argsort(np.ravel(pred.pressure_bar), kind="stable")
-    falls = np.zeros(force.size, dtype=bool)
-    sorted_force = force[order]
-    drop = np.diff(sorted_force) < -FORCE_NOISE_N
-    falls[order[1:]] = drop
-    status = np.full(force.size, "ok", dtype=object)
-    status[falls] = "force falls with pressure"
-    status[force < -FORCE_NOISE_N] = "negative force"
-    in_domain = np.ravel(pred.extras.get("in_domain", np.ones(force.size, dtype=bool)))
-    status[~np.ravel(pred.valid)] = "invalid (model's own limit)"
-    status[~in_domain] = "out of training domain"
-    status[~np.ravel(pred.converged)] = "not converged"
-    return status
-
-
 def write_model_errors(errors: pd.DataFrame, timings: pd.DataFrame, path: Path,
                        info: dict) -> Path:
     """The table ``auto`` reads: one row per predictor usable by auto, muscle and pressure.
@@ -519,8 +501,8 @@ def stability_table(cells: pd.DataFrame) -> pd.DataFrame:
         row = {"method": method, "muscle": muscle, "points": len(g)}
         row.update({status: int(n) for status, n in counts.items()})
         row["first failing eps [%]"] = (100 * failed["eps"].min()) if len(failed) else np.nan
-        row["cut-backs (converged points)"] = int(g.loc[g["status"] != "not converged",
-                                                        "cutbacks"].sum())
+        solved = ~g["status"].isin(("not converged", *PHYSICAL_LIMITS))
+        row["cut-backs (converged points)"] = int(g.loc[solved, "cutbacks"].sum())
         reasons = failed["message"].fillna("").astype(str)
         row["failure reasons"] = "; ".join(sorted(set(reasons[reasons != ""]))) or ""
         rows.append(row)

@@ -58,6 +58,7 @@ from mkm.fem.interface import ForceModel
 from mkm.fem.limits import check_value
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
 from mkm.fem.options import BRAIDS, MESH_LEVELS
+from mkm.fem.outcomes import BRAID_LOCKS
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_kinematics
 
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
@@ -74,6 +75,14 @@ FREE_PATH_CUTBACKS = 12
 #: point solved alone agree to 1e-9 (at 1e-8 they differed by up to 4e-7), at two or three
 #: residuals more per step
 FORCE_RTOL = 1e-10
+#: A free path that stalls is said to stop at the braid lock (a physical limit) only where its
+#: widest section's braid angle is within this of the locking angle [deg]: the rate of the last
+#: two converged steps is extrapolated over a short way only. Stalls at the lock, coarse and
+#: medium meshes, bonded braid (short wide muscles, L0 = 2-3 D0, theta0 30-43 deg): 0.16-1.71
+#: deg short of it; stalls of the solver (the sliding braid at a low angle at rest) were 3.5-39
+#: deg short, one at 26 deg with a rate, from steps cut back 12 times, that reached the lock by
+#: eps 0.148 where the closed form's lock is at 0.40.
+LOCK_NEAR_DEG = 2.5
 
 
 class HalfMuscle:
@@ -484,8 +493,10 @@ class HalfMuscle:
                 report.reason = (f"the braid passes its locking angle before eps={-U_mm / self.H:g}"
                                  f" (the thick-wall mid-section locks first; the path "
                                  f"stopped with: {report.reason})")
+                report.limit = BRAID_LOCKS
             elif lock := self._locks_before(report.reached, U_mm):
                 report.reason = f"{lock} (the path stopped with: {report.reason})"
+                report.limit = BRAID_LOCKS
             return None, np.nan, report
         return np.append(x[:-1], U_mm), float(x[-1]), report
 
@@ -524,11 +535,16 @@ class HalfMuscle:
         two converged states (``reached``: cap displacement, unknowns) give the rate at which
         ``cos theta`` of the widest section falls with the shortening; it locks before the
         target when that line reaches ``1 / sqrt(3)`` by ``U_mm`` (the rate only grows towards
-        the lock, as the middle takes a growing share of the shortening).
+        the lock, as the middle takes a growing share of the shortening) and the path stalled
+        within :data:`LOCK_NEAR_DEG` of the locking angle (further short of it, the stall is
+        the solver's, whatever the rate of its cut-back steps says).
         """
         if len(reached) < 2 or self.braid is None:
             return ""
         (U0, x0), (U1, x1) = reached
+        angle = self.braid_angle_deg(np.append(x1[:-1], U1))
+        if angle < LOCKING_ANGLE_DEG - LOCK_NEAR_DEG:  # stalled short of it: the solver's
+            return ""
         c0, c1 = (np.cos(np.deg2rad(self.braid_angle_deg(np.append(x[:-1], U))))
                   for U, x in reached)
         e0, e1, target = -U0 / self.H, -U1 / self.H, -U_mm / self.H
@@ -537,7 +553,6 @@ class HalfMuscle:
         predicted = c1 + (c1 - c0) / (e1 - e0) * (target - e1)
         if predicted > 1.0 / np.sqrt(3.0):
             return ""
-        angle = self.braid_angle_deg(np.append(x1[:-1], U1))
         return (f"the braid locks before eps={target:g}: its angle, {angle:.2f} deg at "
                 f"eps={e1:.4g} and rising, reaches the locking angle {LOCKING_ANGLE_DEG:.2f} deg "
                 f"by eps={e1 + (c1 - 1.0 / np.sqrt(3.0)) / (c0 - c1) * (e1 - e0):.4g}")
@@ -673,7 +688,9 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
         Per pressure (in the order given): ``force_N`` (NaN where not converged),
         ``converged``, ``iterations``, ``cutbacks``, ``residual`` (last Newton residual relative
         to the step's first), ``min_tension_N_per_mm`` (braid), ``failure`` (empty when
-        converged); per sweep: ``threshold_pressure_bar`` (P*, force zero up to it) and ``dofs``.
+        converged), ``limit`` (:data:`mkm.fem.outcomes.BRAID_LOCKS` where the braid locks before
+        ``eps``: a physical limit, no state of the muscle there, not a solver failure; empty
+        elsewhere); per sweep: ``threshold_pressure_bar`` (P*, force zero up to it) and ``dofs``.
     """
     check_parameters(theta0_deg, L0_mm, mesh, braid, gap_mm)
     P_bar = np.atleast_1d(np.asarray(pressure_bar, dtype=float))
@@ -684,6 +701,7 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
                                               "min_tension_N_per_mm")}
     out["converged"] = np.zeros(levels.size, dtype=bool)
     out["failure"] = np.full(levels.size, "", dtype=object)
+    out["limit"] = np.full(levels.size, "", dtype=object)
 
     # phase 1: free shortening to U* = -eps L0/2 gives the threshold pressure P* (with a gap
     # also at eps = 0: the braid carries nothing until the tube reaches it)
@@ -691,12 +709,15 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
     if eps > 0 or half.gap_mm:
         y, threshold_MPa, report = half.free_path(-eps * half.H)
         failure = report.reason
+        limit = report.limit
         if threshold_MPa < 0:
             failure = (f"the braid passes its locking angle before eps={eps:g}: the free "
                        f"muscle would need {threshold_MPa / BAR_TO_MPA:.3g} bar to shorten so far")
+            limit = BRAID_LOCKS
         if failure:
             out["force_N"][:] = np.nan
             out["failure"][:] = f"threshold search failed: {failure}"
+            out["limit"][:] = limit
             out["iterations"][:], out["cutbacks"][:] = report.iterations, report.cutbacks
             out["residual"][:] = report.residual
             return _per_point(out, levels, P_bar, np.nan, half.n)

@@ -30,6 +30,9 @@ class NewtonReport:
     reason: str = ""
     # a load path that failed: its last (up to two) converged (load, state), newest last
     reached: tuple = ()
+    # a path that stopped at a physical limit (no state beyond it), not a failure of the solver:
+    # its name (one of mkm.fem.outcomes.PHYSICAL_LIMITS), "" otherwise
+    limit: str = ""
 
 
 class OrderedLU:

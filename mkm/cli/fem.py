@@ -186,11 +186,14 @@ def _solve(args) -> int:
 
 
 def _invalid_reasons(prediction) -> str:
-    """Why the sweep's points are ``valid=False``, as far as the prediction tells: past the
-    braid lock of its angle (with eps_max), not converged, outside the model's domain."""
+    """Why the sweep's points are ``valid=False``, by their outcome
+    (:func:`mkm.fem.outcomes.classify`): past the braid lock of its angle (with eps_max), the
+    braid locking before eps in the model's muscle (a physical limit), not converged, outside
+    the model's domain."""
     import numpy as np
 
     from mkm.fem.limits import lock_eps
+    from mkm.fem.outcomes import BRAID_LOCKS, classify
 
     bad = ~np.asarray(prediction.valid, dtype=bool)
     theta0 = prediction.params.get("theta0_deg")
@@ -201,11 +204,16 @@ def _invalid_reasons(prediction) -> str:
             reasons.append(f"{int(locked.sum())} past the braid lock: eps >= eps_max "
                            f"{lock_eps(float(theta0)):.4g} at theta0 {float(theta0):g} deg")
             bad = bad & ~locked
-    unconverged = bad & ~np.asarray(prediction.converged, dtype=bool)
-    if unconverged.any():
-        reasons.append(f"{int(unconverged.sum())} not converged")
-    if (bad & ~unconverged).any():
-        reasons.append(f"{int((bad & ~unconverged).sum())} outside the model's domain")
+    status = np.reshape(classify(prediction), bad.shape)
+    for outcome, said in ((BRAID_LOCKS, "where the braid locks before eps (short of eps_max: "
+                                        "a physical limit of the muscle)"),
+                          ("not converged", "not converged")):
+        these = bad & (status == outcome)
+        if these.any():
+            reasons.append(f"{int(these.sum())} {said}")
+            bad = bad & ~these
+    if bad.any():
+        reasons.append(f"{int(bad.sum())} outside the model's domain")
     return "; ".join(reasons)
 
 

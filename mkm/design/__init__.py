@@ -15,9 +15,10 @@ The reference work's purpose is choosing a muscle's geometry "according to the r
    at the converged mesh over a pressure sweep at each requirement's eps. A design meets the
    requirements only when the FE says so; every margin reported is the FE's.
 3. **Flags.** ``near_lock`` (eps at or past :data:`NEAR_LOCK_FRACTION` of Equation 2's
-   ``eps_max``, or the FE failed at the braid's locking angle), ``threshold_above_pressure``
-   (the FE threshold pressure of that eps is at or above the requirement's pressure: the muscle
-   does not pull there), ``fe_not_converged``.
+   ``eps_max``, or the FE's braid locks before eps: a physical limit,
+   :data:`mkm.fem.outcomes.BRAID_LOCKS`), ``threshold_above_pressure`` (the FE threshold
+   pressure of that eps is at or above the requirement's pressure: the muscle does not pull
+   there), ``fe_not_converged`` (a solve that failed where the muscle has a state).
 
 :func:`design` is the Python API (a DataFrame of the verified designs); :func:`run_design` also
 writes ``designs.csv``, ``designs.json`` (provenance), ``design.html`` and its figures

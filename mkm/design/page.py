@@ -126,7 +126,8 @@ COLUMN_DOCS = {
 }
 
 FLAG_TEXT = {"near_lock": f"near the braid lock (eps >= {NEAR_LOCK_FRACTION:g} eps_max of "
-                          "Equation 2, or the FE failed at the locking angle)",
+                          "Equation 2, or the FE's braid locks before eps: a physical "
+                          "limit, its reason under fe_failure)",
              "threshold_above_pressure": "the threshold pressure is at or above the "
                                          "requirement's pressure: the muscle does not pull",
              "fe_not_converged": "the FE did not converge",

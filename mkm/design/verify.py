@@ -11,6 +11,7 @@ from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.calibration import Calibration
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
+from mkm.fem.outcomes import BRAID_LOCKS
 from mkm.registry import parse_spec
 
 CURVE_STEP_BAR = 0.25  # FE force-pressure curves of the verified designs
@@ -102,12 +103,16 @@ def _judge(row, requirements, results) -> dict:
         out[f"r{k}_threshold_bar"] = threshold
         out[f"r{k}_meets"] = bool(np.isfinite(force) and force >= req.force_N)
         margins.append(out[f"r{k}_fe_margin_pct"])
-        if req.eps >= NEAR_LOCK_FRACTION * eps_max or "locking angle" in failure:
+        # the outcome by the one classification (mkm.fem.outcomes): the braid locking before
+        # eps is the muscle's physical limit, not a solve that failed
+        locks = point.get("limit", "") == BRAID_LOCKS
+        if req.eps >= NEAR_LOCK_FRACTION * eps_max or locks:
             flags.append(f"r{k}:near_lock")
         if np.isfinite(threshold) and threshold >= req.pressure_bar:
             flags.append(f"r{k}:threshold_above_pressure")
         if not point["converged"] or not np.isfinite(force):
-            flags.append(f"r{k}:fe_not_converged")
+            if not locks:
+                flags.append(f"r{k}:fe_not_converged")
             failures.append(f"r{k}: {failure or 'no valid force'}")
     out["meets_all"] = all(out[f"r{k}_meets"] for k in range(1, len(requirements) + 1))
     out["min_fe_margin_pct"] = float(np.min(margins)) if not np.isnan(margins).any() else np.nan

@@ -120,7 +120,8 @@ def test_failed_final_vent_asks_for_a_vent_by_hand(config, tmp_path):
 def test_stall_shorter_than_the_buffer_delays_but_loses_nothing(config, tmp_path):
     # A 5 s stall with a 10 s buffer at 1.0 s: the samples wait in the buffer, none is lost, and
     # the hardware is at 6.0 s when the reader resumes at 1.0 s; the 0.5 bar command, written
-    # when the reader reaches 2.0 s (the virtual reader catches up instantly), lands at 6.0 s.
+    # when the reader reaches 2.0 s (the virtual reader catches up instantly), lands at 6.0 s,
+    # and commands.csv says so; the samples acquired before it were acquired at 0 bar
     from mkm.bench.run import BenchRun
     from mkm.bench.sim import SimBackend
 
@@ -131,9 +132,11 @@ def test_stall_shorter_than_the_buffer_delays_but_loses_nothing(config, tmp_path
     run = load_run(result.path)
     assert result.status == "complete" and run.meta.lost_samples == 0
     np.testing.assert_array_equal(run.samples["sample"], np.arange(len(run.samples)))
-    written = run.commands[run.commands.purpose == "step"]["sample"].iloc[0]
+    written = run.commands[run.commands.purpose == "step"].iloc[0]
     applied = [k for k, volts in backend.commands if volts > 0][0]
-    assert (written, applied) == (20, 60)
+    assert (written["sample"], applied) == (60, 60) and written["time_s"] == 6.0
+    s = run.samples
+    assert set(s["command_bar"].iloc[:60]) == {0.0} and s["command_bar"].iloc[60] == 0.5
 
 
 def test_stall_longer_than_the_buffer_loses_the_samples(config, tmp_path):
@@ -154,9 +157,39 @@ def test_samples_waiting_in_the_buffer_at_a_stop_are_recorded(config, tmp_path):
     assert run.meta.counters["samples"] == 80 and run.meta.lost_samples == 0
     assert list(s["flags"].iloc[29:]) == ["", "nonfinite|interlock"] + ["nonfinite"] * 49
     assert set(s["phase"].iloc[30:]) == {"step"} and set(s["step"].iloc[30:]) == {0}
-    assert set(s["command_bar"].iloc[31:]) == {0.0}  # the vent, dated at the reader's sample 31
-    assert run.commands["sample"].iloc[-1] == 31
+    # acquired under the 0.5 bar command: the vent was issued when the hardware was at 8.0 s
+    assert set(s["command_bar"].iloc[20:]) == {0.5}
+    vent = run.commands[run.commands["purpose"] == "interlock vent"].iloc[0]
+    assert vent["sample"] == 80 and vent["time_s"] == 8.0
     assert_vented_last(run)
+
+
+@pytest.mark.parametrize("faults", [
+    {"nan_force_at_s": 5.0},  # the reader keeps up: the vent at the sample that tripped it
+    {"stall_at_s": 3.0, "stall_s": 5.0, "nan_force_at_s": 3.0},  # 49 samples waiting
+])
+def test_the_vent_is_recorded_at_the_time_it_was_issued(config, tmp_path, faults):
+    # A safety log says when the vent was commanded: commands.csv's time of the interlock's
+    # vent is the simulated device's sample clock at its write (the sample from which the
+    # regulator has it), to the clock's resolution (one sample, 0.1 s at 10 Hz), however far
+    # behind the reader is
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    c = config.replace(sim={"faults": faults})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None
+                      ).execute()
+    run = load_run(result.path)
+    assert result.status == "aborted" and "force interlock" in result.reason
+    vent = run.commands[run.commands["purpose"] == "interlock vent"].iloc[0]
+    pressurised = [k for k, volts in backend.commands if volts > 0][-1]
+    issued = [k for k, volts in backend.commands if k > pressurised and volts == 0][0]
+    assert vent["sample"] == issued
+    assert vent["time_s"] == pytest.approx(issued / 10.0, abs=0.1)
+    # after every sample acquired before it: the regulator vented at or after the trip
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]["time_s"].iloc[0]
+    assert vent["time_s"] >= tripped
 
 
 def test_a_cell_noisier_than_the_settle_limit_is_said_at_the_tare(config, tmp_path):

@@ -19,6 +19,7 @@ from mkm.auto import (
     MESH_SAFETY,
     RANGE_PREDICTOR,
     RANGE_SPEC,
+    RANGE_STD_FACTOR,
     STD_FACTOR,
     AutoModel,
     explain,
@@ -164,9 +165,13 @@ def test_outside_the_default_box_the_range_surrogate_answers_and_never_inside(ta
                          ).predict(P, D0, 2.5, 0.05)
 
     ref = make_model("axisym", mesh="coarse").predict(P, 55.0, 2.5, 0.05).force_N
-    bound = 100 * STD_FACTOR * RANGE_STD_N / ref.max()
+    # the range surrogate's std counts RANGE_STD_FACTOR times in the bounds where it is the
+    # reference, its own and a closed form's: 3 of it were exceeded in 4 % of fresh calls of
+    # the range, by up to 5.2 of it (benchmarks/bench_auto.py --range practical)
+    assert RANGE_STD_FACTOR == 6.0 and STD_FACTOR == 3.0
+    bound = 100 * RANGE_STD_FACTOR * RANGE_STD_N / ref.max()
     thick = 100 * (np.abs(make_model("thickwall").predict(P, 55.0, 2.5, 0.05).force_N - ref)
-                   + STD_FACTOR * RANGE_STD_N) / ref.max()
+                   + RANGE_STD_FACTOR * RANGE_STD_N) / ref.max()
     assert bound < thick.max()  # a tolerance between them leaves the surrogate the cheapest
     pred = run(55.0, 1.01 * bound / 100)
     assert set(pred.extras["model_used"]) == {RANGE_PREDICTOR}
@@ -424,3 +429,21 @@ def test_a_surrogate_about_to_train_is_announced_first(monkeypatch):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         _announce_first_training(kinds.RANGE)
+
+
+def test_past_the_braid_lock_auto_says_the_braid_locks_as_its_fallback_does(table_path):
+    # eps 0.35 is past the lock at 32 deg (eps_max 0.319): no candidate is valid, the fallback
+    # FE finds no state and names the physical limit, which auto passes on, so its points are
+    # classified as the braid locking (mkm.fem.outcomes), not as a solve that failed
+    from mkm.auto import FALLBACK_SPEC
+    from mkm.fem.outcomes import BRAID_LOCKS, classify
+
+    def build(spec, **muscle):  # the coarse mesh stands in for the fine one: fast
+        return fake_build("axisym:mesh=coarse" if spec == FALLBACK_SPEC else spec, **muscle)
+
+    pred = AutoModel(table=table_path, build=build, tolerance=0.02, theta0_deg=32.0,
+                     mesh_errors=str(Path(table_path).with_name("none.csv"))
+                     ).predict(P, 30.0, 2.0, 0.35)
+    assert set(pred.extras["model_used"]) == {"axisym-fine"}
+    assert not pred.converged.any() and np.isnan(pred.force_N).all()
+    assert classify(pred).tolist() == [BRAID_LOCKS] * P.size

@@ -706,3 +706,19 @@ def test_the_invalid_points_warning_names_each_reason():
     assert _invalid_reasons(prediction) == (f"1 past the braid lock: eps >= eps_max "
                                             f"{eps_max:.4g} at theta0 30 deg; 1 not converged; "
                                             "1 outside the model's domain")
+
+
+def test_the_invalid_points_warning_names_a_braid_that_locks_before_eps_maximum():
+    # the FE's muscle locks short of eps_max (its ends held narrow): a physical limit it names
+    # (extra "limit"), counted as such by the one classification, apart from a stalled solve
+    from mkm.cli.fem import _invalid_reasons
+    from mkm.fem.interface import Prediction
+    from mkm.fem.outcomes import BRAID_LOCKS
+
+    prediction = Prediction("axisym", {"theta0_deg": 30.0}, np.ones(3), np.full(3, 30.0),
+                            np.full(3, 3.0), np.array([0.2, 0.2, 0.1]), np.full(3, np.nan),
+                            np.zeros(3, bool), np.zeros(3, bool), 0.0,
+                            extras={"limit": np.array([BRAID_LOCKS, BRAID_LOCKS, ""], object)})
+    assert _invalid_reasons(prediction) == ("2 where the braid locks before eps (short of "
+                                            "eps_max: a physical limit of the muscle); "
+                                            "1 not converged")

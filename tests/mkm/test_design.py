@@ -271,7 +271,9 @@ def test_verification_flags_from_the_fe():
     assert row["r1_threshold_bar"] > 0.5 and row["r1_fe_N"] == 0.0 and not row["r1_meets"]
     assert "r1:threshold_above_pressure" in flags
     assert "r2:near_lock" in flags and "r1:near_lock" not in flags
-    assert {"r3:near_lock", "r3:fe_not_converged"} <= flags
+    # past the lock the braid locks: a physical limit, flagged near the lock, not as a solve
+    # that failed (mkm.fem.outcomes), its reason kept
+    assert "r3:near_lock" in flags and "r3:fe_not_converged" not in flags
     assert "locking angle" in row["fe_failure"] and np.isnan(row["r3_fe_N"])
     assert not row["meets_all"]
     # the curve at eps 0.2 is zero up to the threshold pressure, which it contains

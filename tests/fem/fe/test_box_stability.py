@@ -11,10 +11,11 @@ import re
 import numpy as np
 import pytest
 
-from mkm.fem.eq2 import BAR_TO_MPA
-from mkm.fem.fe.model import HalfMuscle, isometric_sweep
+from mkm.fem.eq2 import BAR_TO_MPA, LOCKING_ANGLE_DEG
+from mkm.fem.fe.model import LOCK_NEAR_DEG, HalfMuscle, isometric_sweep
 from mkm.fem.fe.newton import OrderedLU
 from mkm.fem.materials import SILASTIC_S, MooneyRivlin
+from mkm.fem.outcomes import BRAID_LOCKS
 
 #: the calibrated angle when the map was made (`mkm fem solve --model axisym` used it)
 THETA0_MAP = 32.992
@@ -125,7 +126,7 @@ def test_a_short_wide_muscle_that_stalls_at_the_lock_says_so():
     # ends, held narrow by the caps, make the middle shorten k_P ~ 1 / (1 - 0.38 D_braid / L0)
     # times eps (surrogate.muscle_gp): the lock at about eps_max / k_P (0.164 here; the middle's
     # share grows towards the lock, measured 0.176).
-    from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
+    from mkm.fem.eq2 import chou_hannaford_eps_max
 
     D0, t0, eps, theta0, L0 = 56.3016, 4.78701, 0.178513, 42.9768, 112.799
     out = isometric_sweep([0.0, 1.0], D0, t0, eps, theta0, L0, mesh="medium")
@@ -139,3 +140,21 @@ def test_a_short_wide_muscle_that_stalls_at_the_lock_says_so():
     assert theta0 < angle < LOCKING_ANGLE_DEG and reached < lock < eps
     k_P = 1.0 / (1.0 - 0.38 * (D0 + 2.0 * t0) / L0)
     assert lock == pytest.approx(chou_hannaford_eps_max(theta0) / k_P, rel=0.1)
+    assert (out["limit"] == BRAID_LOCKS).all()  # a physical limit (mkm.fem.outcomes)
+
+
+def test_a_stall_far_short_of_the_locking_angle_is_the_solvers_not_a_lock():
+    # Muscle 150 of the stability map (seed 2857834494527622234, its CSV's rounded numbers),
+    # sliding braid: the free path stalls at eps 0.0795 with the widest section at 28.75 deg,
+    # 26 deg short of the locking angle, in a long muscle whose closed-form lock is eps 0.40
+    # (L0 = 20 D0: its ends barely bring it closer). The rate of the last two steps, cut back
+    # 12 times, extrapolated to a lock by eps 0.148: not a lock but the sliding braid's stall
+    # at a low angle at rest (docs/guide/fe-model.md), so "not converged", with no limit named
+    rubber = MooneyRivlin(0.265464, 0.000616, source="muscle 150 of the stability map")
+    out = isometric_sweep([0.0, 1.0], 21.0759, 0.740377, 0.303659, 15.9583, 430.102,
+                          mesh="medium", material=rubber, braid="sliding")
+    assert not out["converged"].any() and np.isnan(out["force_N"]).all()
+    assert (out["limit"] == "").all()
+    assert out["failure"][0].startswith("threshold search failed: Newton did not converge")
+    assert "locks" not in out["failure"][0]
+    assert LOCKING_ANGLE_DEG - LOCK_NEAR_DEG > 28.75

@@ -132,13 +132,22 @@ def test_mesh_convergence_coarse_to_medium():
     assert F[0] == pytest.approx(F[1], rel=5e-3)
 
 
-def test_beyond_the_braid_lock_is_reported_not_converged():
-    # eps = 35 % is past the shortening where the braid reaches its locking angle: the free
-    # muscle cannot get there with a positive pressure
+def test_beyond_the_braid_lock_the_braid_locks_a_physical_limit_not_a_solver_failure():
+    # eps = 35 % is past the shortening where the braid reaches its locking angle (eps_max
+    # 0.319 at 32 deg): the free muscle cannot get there with a positive pressure. No state is
+    # found (converged False, force NaN), and the model names the limit: its outcome is the
+    # braid locking, not "not converged"
+    from mkm.fem.outcomes import BRAID_LOCKS, classify
+
     out = isometric_sweep([0.0, 1.0], 30.0, 2.0, 0.35, THETA0, mesh="coarse")
     assert not out["converged"].any()
     assert np.isnan(out["force_N"]).all()
     assert "braid passes its locking angle" in out["failure"][0]
+    assert out["limit"].tolist() == [BRAID_LOCKS, BRAID_LOCKS]
+    pred = Axisym(theta0_deg=THETA0, mesh="coarse").predict([0.0, 1.0], 30.0, 2.0, 0.35)
+    assert classify(pred).tolist() == [BRAID_LOCKS, BRAID_LOCKS]
+    # short of the lock nothing is named
+    assert isometric_sweep([1.0], 30.0, 2.0, 0.1, THETA0, mesh="coarse")["limit"][0] == ""
 
 
 def test_model_groups_points_and_reports_extras():
