@@ -9,8 +9,9 @@ after commanding the vent:
   (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
 - pressure (electronic regulator): a non-finite measured pressure; a monitor reading no
   working regulator gives (a live-zero output at 0 V: unpowered, wire off); a pressure more
-  than the tolerance away from the command for longer than ``safety.pressure_follow_s`` (a
-  regulator that does not follow);
+  than the tolerance away from the command it was acquired under for longer than
+  ``safety.pressure_follow_s`` from the sample that command acts at (a regulator that does not
+  follow; samples read late after a stall are judged against their own command);
 - over-pressure, on the measured pressure (the monitor's, or the manometer reading the operator
   typed with a manual regulator) whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
@@ -94,6 +95,7 @@ class Acquisition:
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
         self._off_since_s: float | None = None  # pressure away from the command since then
+        self._followed_bar = 0.0  # the command the previous sample was acquired under
         self._over_since_s: float | None = None  # pressure above the limit's margin since then
 
     # one block -------------------------------------------------------------------------------
@@ -184,7 +186,7 @@ class Acquisition:
             # the measured pressure is the monitor's, or the operator's manometer reading: a
             # hand regulator turned past the limit is as over-pressured as an electronic one
             over = self._overpressure(t_s, pressure)
-            trip = over or self._interlock(t_s, force, pressure, cell_V, monitor_V, flags)
+            trip = over or self._interlock(index, force, pressure, cell_V, monitor_V, flags)
             if trip:
                 flags.append("interlock")
                 trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
@@ -213,8 +215,12 @@ class Acquisition:
         except BenchError:
             return self.next_index
 
-    def _interlock(self, t_s, force, pressure, cell_V, monitor_V, flags) -> str | None:
-        """The interlock this sample trips (its message), or None."""
+    def _interlock(self, index, force, pressure, cell_V, monitor_V, flags) -> str | None:
+        """The interlock sample ``index`` trips (its message), or None. The regulator is
+        judged against the command the sample was acquired under, and gets
+        ``pressure_follow_s`` from the sample a new command acts at: samples read late (after
+        a stall) were acquired before a command the reader wrote meanwhile."""
+        t_s = index / self.rate_hz
         limit = self.config.force_limit_N
         safety = self.config.safety
         if "nonfinite" in flags:
@@ -230,13 +236,16 @@ class Acquisition:
         fault = self.config.regulator.monitor_fault(monitor_V)
         if fault:
             return f"pressure interlock: {fault} at {t_s:g} s"
-        if abs(pressure - self.command_bar) <= safety.pressure_tolerance_bar:
+        commanded = self._commanded_at(index)
+        if commanded != self._followed_bar:
+            self._followed_bar, self._off_since_s = commanded, None
+        if abs(pressure - commanded) <= safety.pressure_tolerance_bar:
             self._off_since_s = None
         elif self._off_since_s is None:
             self._off_since_s = t_s
         elif t_s - self._off_since_s > safety.pressure_follow_s:
             return (f"pressure interlock: the regulator does not follow: {pressure:.3f} bar "
-                    f"measured against {self.command_bar:g} bar commanded for more than "
+                    f"measured against {commanded:g} bar commanded for more than "
                     f"{safety.pressure_follow_s:g} s (tolerance "
                     f"{safety.pressure_tolerance_bar:g} bar)")
         return None
@@ -311,7 +320,6 @@ class Acquisition:
             ok = True
             self.command_bar = clamped
             self.vented = clamped == 0.0
-            self._off_since_s = None  # the regulator gets pressure_follow_s for the new command
             meta = self.recorder.meta
             stopped_at = self.stop_time()
             if clamped == 0.0 and stopped_at is not None and meta.stop_to_vent_s is None:

@@ -208,3 +208,28 @@ def test_a_cell_noisier_than_the_settle_limit_is_said_at_the_tare(config, tmp_pa
     quiet = []
     acquire(config, out_root=tmp_path, notify=quiet.append)  # the default cell settles
     assert not any("settle.max_force_std_N" in m for m in quiet)
+
+
+def test_samples_read_late_are_judged_against_the_command_they_were_acquired_under(config,
+                                                                                   tmp_path):
+    # A 6 s stall at 1.0 s: the 0.5 bar command, written when the reader reaches 2.0 s, acts
+    # at 7.0 s; the samples 2.0-6.9 s, read after it, were acquired at 0 bar under the vent.
+    # Judged against the newest command they were "0.5 bar off for more than 5 s" and tripped
+    # the follow interlock on a regulator that followed every command
+    c = config.replace(sim={"buffer_s": 10.0})
+    result, run = record(c, tmp_path, stall_at_s=1.0, stall_s=6.0)
+    assert result.status == "complete", result.reason
+    s = run.samples
+    assert not s["flags"].str.contains("interlock").any()
+    late = s[s["command_bar"] < s["set_pressure_bar"]]  # acquired before their step's command
+    assert len(late) > 0 and (abs(late["pressure_bar"] - late["command_bar"]) < 0.15).all()
+
+
+def test_a_regulator_that_stops_following_after_a_stall_still_trips(config, tmp_path):
+    # the same stall, with the regulator stuck from 4 s: judged against the commands the
+    # samples were acquired under, it trips 5 s after the first command it did not follow
+    c = config.replace(sim={"buffer_s": 10.0})
+    result, run = record(c, tmp_path, stall_at_s=1.0, stall_s=6.0, regulator_stuck_at_s=1.0)
+    assert result.status == "aborted", result.reason
+    assert "pressure interlock: the regulator does not follow" in result.reason
+    assert_vented_last(run)
