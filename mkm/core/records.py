@@ -387,15 +387,21 @@ def sidecar_path(path: str | os.PathLike) -> Path:
 
 
 def _holds_provenance(path: Path) -> bool:
-    """Whether ``path`` is JSON written by mkm: an object holding :func:`provenance` (at its
-    top, or as its ``software``)."""
+    """Whether ``path`` is JSON written by mkm: an object holding :func:`provenance` at its
+    top or up to two objects down (a dataset's ``software``, designs.json's
+    ``provenance.software``)."""
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return False
     keys = {"date_utc", "command"}
-    return isinstance(data, dict) and any(
-        isinstance(d, dict) and keys <= d.keys() for d in (data, data.get("software")))
+    level = [data]
+    for _ in range(3):
+        level = [d for d in level if isinstance(d, dict)]
+        if any(keys <= d.keys() for d in level):
+            return True
+        level = [v for d in level for v in d.values()]
+    return False
 
 
 def check_csv_with_sidecar(path: str | os.PathLike) -> Path:

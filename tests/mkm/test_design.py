@@ -419,6 +419,13 @@ def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):
     assert f"mkm design: {line}\n" in err and "searched the box" not in err
     page = (tmp_path / "design.html").read_text(encoding="utf-8")
     assert f'<p class="note">{esc(line)}</p>' in page
+    # the same command again replaces its own files (it was refused: designs.json taken for
+    # a user's file)
+    code, out, err = mkm_run(["design", "--require", "120N@2bar,eps=0.1", "--top", "1",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 0, err
+    record = json.loads((tmp_path / "designs.json").read_text(encoding="utf-8"))
+    assert record["requirements"][0]["force_N"] == 120
 
 
 def test_the_calibrated_rubber_is_the_identified_one(tmp_path):

@@ -166,6 +166,20 @@ def test_a_sidecar_never_replaces_a_json_of_the_users(tmp_path):
     assert '"run": "2"' in (tmp_path / "s.json").read_text(encoding="utf-8")
 
 
+def test_a_sidecar_whose_provenance_is_nested_is_an_earlier_output(tmp_path):
+    # designs.json keeps provenance() under provenance.software: a second `mkm design` into
+    # the same (default) folder was refused as if designs.json were the user's
+    for value in ("1", "2"):
+        records.write_csv_with_sidecar(
+            tmp_path / "designs.csv", f"a\n{value}\n",
+            {"objective": value, "provenance": {"software": records.provenance()}})
+    assert (tmp_path / "designs.csv").read_text(encoding="utf-8") == "a\n2\n"
+    # a user's JSON with no provenance anywhere in it is still kept
+    (tmp_path / "lab.json").write_text('{"a": {"b": {"date_utc": 1}}}', encoding="utf-8")
+    with pytest.raises(ValueError, match=r"lab\.json is not the metadata"):
+        records.write_csv_with_sidecar(tmp_path / "lab.csv", "a\n1\n", records.provenance())
+
+
 def test_a_staged_folder_replaces_all_its_files_or_none(tmp_path, monkeypatch):
     # Windows cannot move a file another program holds open (a summary shown in Excel): the
     # old files already moved aside come back, none of the new ones stays, the error names it
