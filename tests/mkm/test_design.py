@@ -428,6 +428,28 @@ def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):
     assert record["requirements"][0]["force_N"] == 120
 
 
+def test_a_design_outside_the_practical_range_is_said_an_extrapolation(tmp_path, mkm_run):
+    # L0 25 mm is a length LIMITS accept but below the practical range's 50 mm and 3 D0 = 30
+    # mm: mkm fem solve warns of the same muscle, so the design must too
+    code, out, err = mkm_run(["design", "--require", "20N@2bar,eps=0.1", "--D0", "10", "--t0",
+                              "1", "--L0", "25", "--top", "1", "--mesh", MESH, "--no-progress",
+                              "--out", str(tmp_path)])
+    assert code == 0, err
+    line = ("the chosen design lies outside the practical range every model is validated over "
+            "(L0_mm=25 outside [50, 1000]; L0_mm=25 below 3 D0_mm = 30): its FE verification "
+            "is an extrapolation (`mkm models` states the range)")
+    assert f"mkm design: {line}\n" in err
+    assert f'<p class="note">{esc(line)}</p>' in (tmp_path / "design.html").read_text(
+        encoding="utf-8")
+    assert line in json.loads((tmp_path / "designs.json").read_text(encoding="utf-8"))["notes"]
+    # inside the range, no such line
+    code, out, err = mkm_run(["design", "--require", "20N@2bar,eps=0.1", "--D0", "10", "--t0",
+                              "1", "--L0", "60", "--top", "1", "--mesh", MESH, "--no-progress",
+                              "--out", str(tmp_path)])
+    assert code == 0, err
+    assert "practical range every model" not in err
+
+
 def test_the_calibrated_rubber_is_the_identified_one(tmp_path):
     """The default rubber of a design is the calibration's: Silastic S as shipped, the
     identified rubber under an identified calibration (``mkm identify --out``)."""
