@@ -209,7 +209,7 @@ def load_spec(path) -> dict:
     """
     path = Path(path)
     try:
-        table = tomllib.loads(path.read_text(encoding="utf-8"))
+        table = tomllib.loads(path.read_text(encoding="utf-8-sig"))  # a BOM: a Windows editor
     except FileNotFoundError:
         raise ValueError(f"--spec {path}: no such file") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:

@@ -17,6 +17,7 @@ from mkm.design import (
     Requirement,
     design,
     design_record,
+    load_spec,
     parse_requirement,
     run_design,
     search,
@@ -251,6 +252,17 @@ def test_a_spec_file_shaped_wrong_is_one_line(text, message, tmp_path, mkm_run):
     spec.write_text(text, encoding="utf-8")
     code, out, err = mkm_run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")])
     assert code == 2 and out == "" and err.count("\n") == 1 and message in err, err
+
+
+def test_a_spec_file_saved_by_a_windows_editor_is_read(tmp_path):
+    # Notepad's "UTF-8 with BOM": was 'not valid TOML (UTF-8): Invalid statement'
+    spec = tmp_path / "spec.toml"
+    spec.write_bytes(b"\xef\xbb\xbftop = 2\n[[requirement]]\nforce_N = 300\n"
+                     b"pressure_bar = 2.5\neps = 0.1\n")
+    loaded = load_spec(spec)
+    assert loaded["top"] == 2
+    assert [(r.force_N, r.pressure_bar, r.eps) for r in loaded["requirements"]] == [
+        (300.0, 2.5, 0.1)]
 
 
 def test_verification_flags_from_the_fe():
