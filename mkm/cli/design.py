@@ -72,7 +72,9 @@ def register(subparsers) -> None:
                             ("--L0", "L0_mm", shared_help("--L0", "default 282")),
                             ("--theta0", "theta0_deg", shared_help("--theta0", "default: the "
                                                                    "calibration"))):
-        p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag), metavar="V|LO:HI",
+        unit = key.rsplit("_", 1)[1]  # 3.5cm or 30deg converted, as in a spec file
+        p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag, unit),
+                       metavar="V|LO:HI",
                        help=f"{what}: a value or a range low:high")
     p.add_argument("--rubber", help="wall material(s), comma list: calibrated (default: the "
                    "rubber of the --calibration file, an identified one, else Silastic S) "

@@ -692,3 +692,15 @@ def test_the_invalid_points_warning_names_each_reason():
     assert _invalid_reasons(prediction) == (f"1 past the braid lock: eps >= eps_max "
                                             f"{eps_max:.4g} at theta0 30 deg; 1 not converged; "
                                             "1 outside the model's domain")
+
+
+def test_design_box_options_typed_with_units_are_converted():
+    # --max-outer-diameter 6.4cm and a spec file's D0_mm = "3.5cm" were converted, while
+    # --D0 3.5cm was refused as 'not a number'
+    from mkm.cli import build_parser
+
+    args = build_parser().parse_args(["design", "--require", "300N@2.5bar,eps=0.1",
+                                      "--D0", "8mm:0.55in", "--t0", "0.2cm", "--L0", "28.2cm",
+                                      "--theta0", "30deg"])
+    assert args.D0_mm == (8.0, 13.97) and args.t0_mm == (2.0, 2.0)
+    assert args.L0_mm == (282.0, 282.0) and args.theta0_deg == (30.0, 30.0)
