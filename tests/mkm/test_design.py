@@ -462,6 +462,22 @@ def test_a_design_outside_the_practical_range_is_said_an_extrapolation(tmp_path,
     assert "practical range every model" not in err
 
 
+def test_many_verified_designs_draw_the_best_curves_and_keep_every_one(tmp_path, mkm_run):
+    # --top 300 drew 289 curves and their legend: matplotlib collapsed the axes and said so
+    from mkm.design.page import MAX_CURVES
+
+    code, out, err = mkm_run(["design", "--require", "300N@2.5bar,eps=0.1", "--top",
+                              str(MAX_CURVES + 2), "--mesh", MESH, "--no-progress", "--out",
+                              str(tmp_path)])
+    assert code == 0, err
+    assert "constrained_layout" not in err
+    page = (tmp_path / "design.html").read_text(encoding="utf-8")
+    assert (f"FE force against pressure of the {MAX_CURVES} best of the {MAX_CURVES + 2} "
+            "verified designs (every one in fe_curves.csv)") in page
+    curves = pd.read_csv(tmp_path / "fe_curves.csv")
+    assert sorted(curves["design"].unique()) == list(range(1, MAX_CURVES + 3))
+
+
 def test_the_calibrated_rubber_is_the_identified_one(tmp_path):
     """The default rubber of a design is the calibration's: Silastic S as shipped, the
     identified rubber under an identified calibration (``mkm identify --out``)."""
