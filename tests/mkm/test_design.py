@@ -244,8 +244,8 @@ def test_spec_file_unknown_key(tmp_path, mkm_run):
     # a requirement's value is named in the file, not as an option never typed (--eps)
     ('[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = "10"\n',
      "requirement 1 eps 10: a fraction is expected; did you mean 10%?"),
-    ('[[requirement]]\nforce_N = "300N"\npressure_bar = 2.5\neps = 0.1\n',
-     "requirement 1 force_N='300N' is not a number"),
+    ('[[requirement]]\nforce_N = "300kg"\npressure_bar = 2.5\neps = 0.1\n',
+     "requirement 1 force_N='300kg': 'kg' is not a unit of the same kind as N"),
 ])
 def test_a_spec_file_shaped_wrong_is_one_line(text, message, tmp_path, mkm_run):
     spec = tmp_path / "spec.toml"
@@ -263,6 +263,16 @@ def test_a_spec_file_saved_by_a_windows_editor_is_read(tmp_path):
     assert loaded["top"] == 2
     assert [(r.force_N, r.pressure_bar, r.eps) for r in loaded["requirements"]] == [
         (300.0, 2.5, 0.1)]
+
+
+def test_a_spec_files_requirements_typed_with_units_are_converted(tmp_path):
+    # as --require 0.3kN@250kPa,eps=10% and the spec's own [constraints] D0_mm = "3.5cm" are
+    # (was: pressure_bar='250kPa' is not a number)
+    spec = tmp_path / "spec.toml"
+    spec.write_text('[[requirement]]\nforce_N = "0.3kN"\npressure_bar = "250kPa"\n'
+                    'eps = "10%"\n', encoding="utf-8")
+    (req,) = load_spec(spec)["requirements"]
+    assert (req.force_N, req.pressure_bar, req.eps) == (300.0, 2.5, 0.1)
 
 
 def test_verification_flags_from_the_fe():
