@@ -704,3 +704,15 @@ def test_design_box_options_typed_with_units_are_converted():
                                       "--theta0", "30deg"])
     assert args.D0_mm == (8.0, 13.97) and args.t0_mm == (2.0, 2.0)
     assert args.L0_mm == (282.0, 282.0) and args.theta0_deg == (30.0, 30.0)
+
+
+@pytest.mark.parametrize("argv", [["models", "axisym"], ["design", "--foo"],
+                                  ["fem", "solve", "--D0", "35", "--t0", "2", "--eps", "0",
+                                   "extra"]])
+def test_an_unknown_argument_is_named_by_its_command(argv, mkm_run):
+    # was 'mkm: error: unrecognized arguments: ...', the command it was given to unnamed
+    code, out, err = mkm_run(argv)
+    name = "mkm " + " ".join(a for a in argv[:2] if a in ("models", "design", "fem", "solve"))
+    assert code == 2 and out == ""
+    assert err == (f"{name}: error: unrecognized arguments: {argv[-1]}: expected the arguments "
+                   f"of `{name} --help`\n")
