@@ -1,5 +1,6 @@
 """Tests of mkm/core/records.py: atomic writes, source versions, package files, provenance."""
 
+import json
 import os
 import shutil
 import time
@@ -174,8 +175,10 @@ def test_a_sidecar_whose_provenance_is_nested_is_an_earlier_output(tmp_path):
             tmp_path / "designs.csv", f"a\n{value}\n",
             {"objective": value, "provenance": {"software": records.provenance()}})
     assert (tmp_path / "designs.csv").read_text(encoding="utf-8") == "a\n2\n"
-    # a user's JSON with no provenance anywhere in it is still kept
-    (tmp_path / "lab.json").write_text('{"a": {"b": {"date_utc": 1}}}', encoding="utf-8")
+    # a calibration file's entries each hold provenance: it is the user's file all the same
+    (tmp_path / "lab.json").write_text(json.dumps({"axisym": {"theta0_deg": 31.0,
+                                                              **records.provenance()}}),
+                                       encoding="utf-8")
     with pytest.raises(ValueError, match=r"lab\.json is not the metadata"):
         records.write_csv_with_sidecar(tmp_path / "lab.csv", "a\n1\n", records.provenance())
 
