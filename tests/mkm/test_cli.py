@@ -716,3 +716,13 @@ def test_an_unknown_argument_is_named_by_its_command(argv, mkm_run):
     assert code == 2 and out == ""
     assert err == (f"{name}: error: unrecognized arguments: {argv[-1]}: expected the arguments "
                    f"of `{name} --help`\n")
+
+
+def test_design_probability_takes_a_percentage():
+    # the range check says '(0.95 for 95 %)', but --probability 95% was 'not a number'
+    from mkm.cli import build_parser
+
+    parse = build_parser().parse_args
+    base = ["design", "--require", "300N@2.5bar,eps=0.1", "--tolerance", "D0=0.3"]
+    assert parse([*base, "--probability", "95%"]).probability == pytest.approx(0.95, rel=1e-12)
+    assert parse([*base, "--probability", "0.9"]).probability == 0.9
