@@ -97,6 +97,11 @@ def typed_section(cls, table: Any, where: str):
     return obj
 
 
+#: a TOML value's type as a lab engineer reads it (not Python's name: "a int")
+_KINDS = {int: "a whole number", float: "a number", str: "a text in quotes",
+          bool: "true or false"}
+
+
 def _short(value, n: int = 60) -> str:
     text = repr(value)
     return text if len(text) <= n else text[:n] + "..."
@@ -118,7 +123,8 @@ def _convert(value, annotation, key: str):
         except OverflowError:
             raise ValueError(f"{key}={_short(value)} is not a finite number") from None
     if not isinstance(value, annotation) or (annotation is int and isinstance(value, bool)):
-        raise ValueError(f"{key}={_short(value)} is invalid: expected a {annotation.__name__}")
+        raise ValueError(f"{key}={_short(value)} is invalid: expected "
+                         f"{_KINDS.get(annotation, annotation.__name__)}")
     if annotation is float and not math.isfinite(value):
         raise ValueError(f"{key}={value!r} is not a finite number")
     return value

@@ -433,6 +433,10 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         if header not in headers:
             raise ValueError(f"--columns {role}={header!r}: {table.name} has no such column: "
                              f"it has {_listed(headers)}")
+        if headers.count(header) > 1:  # the first would be taken, the others dropped unsaid
+            raise ValueError(f"--columns {role}={header!r}: {table.name} has "
+                             f"{_same_name(headers, header)}: expected one column of that "
+                             "name; rename the others in the file")
         found[role] = Column(role, headers.index(header), header, parse_header(header)[1], True)
     taken = {c.index for c in found.values()}
     for index, header in enumerate(headers):
@@ -442,6 +446,9 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         role = next((r for r, spec in ROLES.items() if name in spec.names), None)
         if role is None or role in columns:
             continue
+        if role in found and header == found[role].header:
+            raise ValueError(f"{table.name}: {_same_name(headers, header)}, each a {role} "
+                             "column: expected one; rename the others in the file")
         if role in found:
             raise ValueError(f"{table.name}: two {role} columns, {found[role].header!r} and "
                              f"{header!r}: choose one with --columns {role}=COLUMN")
@@ -473,6 +480,12 @@ def _check_unit(table: RawTable, column: Column) -> None:
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
                          f"unit of {column.role} (expected one like "
                          f"{role.unit or 'percent'}){hint}")
+
+
+def _same_name(headers, header: str) -> str:
+    """``2 columns named 'F (N)' (B, C)``."""
+    letters = [_column_letters(i) for i, h in enumerate(headers) if h == header]
+    return f"{len(letters)} columns named {header!r} ({', '.join(letters)})"
 
 
 def _listed(headers) -> str:

@@ -115,7 +115,8 @@ class Calibration:
 @cache
 def _read(path: Path, mtime_ns: int) -> dict:
     try:
-        entries = json.loads(path.read_text(encoding="utf-8"))
+        # utf-8-sig: a file edited and saved by a Windows editor starts with a BOM
+        entries = json.loads(path.read_text(encoding="utf-8-sig"))
     except OSError as exc:
         raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:

@@ -95,7 +95,11 @@ def main(argv: list[str] | None = None) -> int:
     if not (sys.argv[1:] if argv is None else argv):  # `mkm` alone: the help, not an error
         parser.print_help()
         return 0
-    args = parser.parse_args(argv)
+    args, rest = parser.parse_known_args(argv)
+    if rest:  # named by the command they were given to, not by mkm alone
+        name = command_name(args)
+        parser.exit(2, error_line(name, f"unrecognized arguments: {' '.join(rest)}: expected "
+                                  f"the arguments of `{name} --help`") + "\n")
     try:
         with warnings.catch_warnings():
             warnings.showwarning = _notes(args)

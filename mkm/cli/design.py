@@ -13,10 +13,16 @@ from mkm.cli.common import (
     shared_help,
     with_calibration,
 )
-from mkm.core.ranges import parse_number
+from mkm.core.ranges import parse_fraction, parse_number
 
 EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
            "--t0 2:3 --out mkm-out/design; robust: add --tolerance D0=0.3,t0=0.1,theta0=1")
+
+
+def _probability(text: str, name: str) -> float:
+    """0.95 or 95%: the form the range check's own message gives (0.95 for 95 %)."""
+    return (parse_fraction(text, name) if text.strip().endswith("%")
+            else parse_number(text, name))
 
 
 def _spec(name: str):
@@ -72,7 +78,9 @@ def register(subparsers) -> None:
                             ("--L0", "L0_mm", shared_help("--L0", "default 282")),
                             ("--theta0", "theta0_deg", shared_help("--theta0", "default: the "
                                                                    "calibration"))):
-        p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag), metavar="V|LO:HI",
+        unit = key.rsplit("_", 1)[1]  # 3.5cm or 30deg converted, as in a spec file
+        p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag, unit),
+                       metavar="V|LO:HI",
                        help=f"{what}: a value or a range low:high")
     p.add_argument("--rubber", help="wall material(s), comma list: calibrated (default: the "
                    "rubber of the --calibration file, an identified one, else Silastic S) "
@@ -93,7 +101,7 @@ def register(subparsers) -> None:
                    "eps, theta0 [deg], rubber [%% of C10 and C01]), e.g. "
                    "D0=0.3,t0=0.1,theta0=1,rubber=10%%; every requirement is then met with "
                    "--probability and designs.csv gets probability_r<k> columns")
-    p.add_argument("--probability", type=argtype(parse_number, "--probability"),
+    p.add_argument("--probability", type=argtype(_probability, "--probability"),
                    help="with --tolerance: the probability each design meets every "
                    "requirement (default: 0.95)")
     p.add_argument("--objective", type=_objective, metavar="OBJECTIVE",

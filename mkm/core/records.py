@@ -387,15 +387,20 @@ def sidecar_path(path: str | os.PathLike) -> Path:
 
 
 def _holds_provenance(path: Path) -> bool:
-    """Whether ``path`` is JSON written by mkm: an object holding :func:`provenance` (at its
-    top, or as its ``software``)."""
+    """Whether ``path`` is a CSV's metadata written by mkm: an object holding
+    :func:`provenance` at its top, as its ``software`` (a dataset's) or as its
+    ``provenance.software`` (designs.json). Nowhere else: a calibration file's entries each
+    hold one, and it is the user's file, never a sidecar."""
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return False
-    keys = {"date_utc", "command"}
-    return isinstance(data, dict) and any(
-        isinstance(d, dict) and keys <= d.keys() for d in (data, data.get("software")))
+    if not isinstance(data, dict):
+        return False
+    nested = data.get("provenance")
+    places = (data, data.get("software"),
+              nested.get("software") if isinstance(nested, dict) else None)
+    return any(isinstance(d, dict) and {"date_utc", "command"} <= d.keys() for d in places)
 
 
 def check_csv_with_sidecar(path: str | os.PathLike) -> Path:

@@ -93,7 +93,10 @@ def write_design(result: DesignResult, out: Path) -> Path:
                             "the chosen design."))
     fig = curves_figure(result)
     figures.append((save_figure(fig, out / "fe_curves.png"),
-                    "FE force against pressure of the verified designs (axisym, "
+                    "FE force against pressure of the "
+                    + (f"{MAX_CURVES} best of the {len(result.designs)} verified designs (every "
+                       "one in fe_curves.csv)" if len(result.designs) > MAX_CURVES
+                       else "verified designs") + " (axisym, "
                     f"{esc(result.mesh)} mesh) at each requirement's eps; triangles: the "
                     "requirements (the force must reach them); crosses: FE points that did "
                     "not converge."))
@@ -298,15 +301,20 @@ def contour_figure(result: DesignResult, index: int, best, data: dict) -> Figure
     return fig
 
 
+#: Curves drawn in fe_curves.png, the best-ranked: more (--top 300) fill the figure with their
+#: legend; every verified design's curve is in fe_curves.csv
+MAX_CURVES = 10
+
+
 def curves_figure(result: DesignResult) -> Figure:
-    """FE force against pressure of every verified design, one panel per eps, requirements as
-    triangles."""
+    """FE force against pressure of the :data:`MAX_CURVES` best verified designs, one panel
+    per eps, requirements as triangles."""
     eps_levels = sorted({r.eps for r in result.search.requirements})
     fig = Figure(figsize=(5.0 * len(eps_levels) + 1.0, 4.4), layout="constrained")
     axes = fig.subplots(1, len(eps_levels), squeeze=False)[0]
     curves = result.curves
     for ax, eps in zip(axes, eps_levels, strict=True):
-        for j, (_, row) in enumerate(result.designs.iterrows()):
+        for j, (_, row) in enumerate(result.designs.head(MAX_CURVES).iterrows()):
             rows = curves[(curves["design"] == row["rank"]) & np.isclose(curves["eps"], eps)]
             rows = rows.sort_values("pressure_bar")
             style = "-" if row["meets_all"] else ":"

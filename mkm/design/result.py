@@ -32,6 +32,7 @@ from mkm.design.spec import (
 )
 from mkm.design.verify import verify
 from mkm.fem.calibration import Calibration
+from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.muscle import Muscle
 
 # --- the API ------------------------------------------------------------------------------------
@@ -86,8 +87,8 @@ class DesignResult:
         the surrogate's (:meth:`Search.box_note`), the chosen design on an end of a
         searched range (:func:`~mkm.design.search.box_edges`), where a larger box might hold
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
-        required force (the design then is larger than the requirement needs). Empty when
-        none."""
+        required force (the design then is larger than the requirement needs), and a chosen
+        design outside the practical range. Empty when none."""
         s = self.search
         notes = [s.box_note()] if s.box_note() else []
         best = self.chosen
@@ -99,6 +100,10 @@ class DesignResult:
                              f"% of a required force ({s.uncertainty}): the chosen design pulls "
                              "about that much more than required (its FE margin); a surrogate "
                              "with a predictive std (the default) searches closer")
+        if best is not None and (outside := _outside_practical_range(best, s.requirements)):
+            notes.append(f"the chosen design lies outside the practical range every model is "
+                         f"validated over ({'; '.join(outside)}): its FE verification is an "
+                         "extrapolation (`mkm models` states the range)")
         if best is not None and (edges := box_edges(best, s.constraints)):
             ranges = {k: v for k, v in s.constraints.items()
                       if k in BOX_NAMES and v[1] > v[0]}
@@ -116,6 +121,17 @@ class DesignResult:
                                       "min_fe_margin_pct": "FE_margin_%",
                                       "meets_all": "meets"})
         return shown.to_string(index=False, float_format=lambda v: f"{v:.4g}")
+
+
+def _outside_practical_range(best, requirements) -> list[str]:
+    """What of the design ``best`` (a row) and the requirements it is held to lies outside
+    :data:`~mkm.fem.limits.PRACTICAL_RANGE`, one phrase each; empty inside."""
+    geometry = {k: float(best[k]) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg")}
+    found = PRACTICAL_RANGE.violations(**geometry)
+    for req in requirements:
+        found += PRACTICAL_RANGE.violations(pressure_bar=req.pressure_bar, eps=req.eps,
+                                            theta0_deg=geometry["theta0_deg"])
+    return list(dict.fromkeys(found))
 
 
 #: A searching margin above this share of a required force is said (:meth:`DesignResult.notes`)

@@ -209,7 +209,7 @@ def load_spec(path) -> dict:
     """
     path = Path(path)
     try:
-        table = tomllib.loads(path.read_text(encoding="utf-8"))
+        table = tomllib.loads(path.read_text(encoding="utf-8-sig"))  # a BOM: a Windows editor
     except FileNotFoundError:
         raise ValueError(f"--spec {path}: no such file") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
@@ -237,9 +237,10 @@ def load_spec(path) -> dict:
         eps = item["eps"]
         eps = (parse_fraction(eps, f"{where} eps") if isinstance(eps, str)
                else parse_number(eps, f"{where} eps"))
-        requirements.append(Requirement(parse_number(item["force_N"], f"{where} force_N"),
+        # "0.3kN", "250kPa" converted, as --require's and the constraints' are
+        requirements.append(Requirement(parse_number(item["force_N"], f"{where} force_N", "N"),
                                         parse_number(item["pressure_bar"],
-                                                     f"{where} pressure_bar"), eps))
+                                                     f"{where} pressure_bar", "bar"), eps))
     out["requirements"] = requirements
     constraints = table.get("constraints", {})
     fields = set(Constraints.__dataclass_fields__)

@@ -135,7 +135,9 @@ def test_minimal_config_takes_defaults():
     ("[settle]\ntimeout_s = 1", r"settle\.timeout_s=1 is below min_dwell_s"),
     ("[safety]\nforce_limit_fraction = 1.5", r"force_limit_fraction=1\.5 is invalid"),
     ("[sim]\nmodel = 'nope'", r"sim\.model='nope' is unknown"),
-    ("[sim]\nseed = 1.5", r"sim\.seed=1\.5 is invalid: expected a int"),
+    ("[sim]\nseed = 1.5", r"sim\.seed=1\.5 is invalid: expected a whole number$"),
+    ("[sequence]\npressures_bar = [1]\ndown_sweep = 'yes'",
+     r"sequence\.down_sweep='yes' is invalid: expected true or false$"),
     ("[sim.faults]\nread_timeouts = 0", r"sim\.faults\.read_timeouts=0 is invalid"),
     ("[extra]\na = 1", r"\[extra\] is not a section"),
 ])

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -87,6 +89,22 @@ def test_units_converted_by_their_definitions(tmp_path):
     np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5, 2.5], rtol=1e-12)
     np.testing.assert_allclose(column_values(table, found["force"]), [3 * LBF_N, 6 * LBF_N],
                                rtol=1e-12)
+
+
+def test_two_columns_of_one_name_are_refused_not_the_first_taken(tmp_path):
+    # a logger that repeats a header: --columns force='Force (N)' took column B and dropped
+    # column C without a word, after the error had said to choose one that way
+    path = tmp_path / "dup.csv"
+    path.write_text("P (bar),Force (N),Force (N)\n0,0,0\n1,100,101\n", encoding="utf-8")
+    (table,) = read_tables(path)
+    with pytest.raises(ValueError, match=re.escape(
+            "--columns force='Force (N)': dup.csv has 2 columns named 'Force (N)' (B, C): "
+            "expected one column of that name; rename the others in the file")):
+        recognise(table, {"force": "Force (N)"})
+    with pytest.raises(ValueError, match=re.escape(
+            "dup.csv: 2 columns named 'Force (N)' (B, C), each a force column: expected one; "
+            "rename the others in the file")):
+        recognise(table)
 
 
 def test_unit_spellings_pint_reads_otherwise(tmp_path):

@@ -176,6 +176,15 @@ def test_bad_calibration_file_is_named_at_once(tmp_path, text, message):
         Calibration.load(path)
 
 
+def test_a_calibration_saved_by_a_windows_editor_is_read_and_stored_to(tmp_path):
+    # Notepad's "UTF-8 with BOM": was 'not valid JSON: Unexpected UTF-8 BOM'
+    path = tmp_path / "lab.json"
+    path.write_bytes(b"\xef\xbb\xbf" + json.dumps({"thickwall": {"theta0_deg": 28.5}}).encode())
+    assert make_model("thickwall", Calibration.load(path)).params()["theta0_deg"] == 28.5
+    store_calibration(path, "eq2-inner", {"theta0_deg": 30.0})
+    assert set(json.loads(path.read_text(encoding="utf-8"))) == {"thickwall", "eq2-inner"}
+
+
 def test_store_replaces_one_entry_and_keeps_the_others(tmp_path):
     path = tmp_path / "cal.json"
     store_calibration(path, "thickwall", {"theta0_deg": 30.0})

@@ -722,3 +722,37 @@ def test_the_invalid_points_warning_names_a_braid_that_locks_before_eps_maximum(
     assert _invalid_reasons(prediction) == ("2 where the braid locks before eps (short of "
                                             "eps_max: a physical limit of the muscle); "
                                             "1 not converged")
+
+
+def test_design_box_options_typed_with_units_are_converted():
+    # --max-outer-diameter 6.4cm and a spec file's D0_mm = "3.5cm" were converted, while
+    # --D0 3.5cm was refused as 'not a number'
+    from mkm.cli import build_parser
+
+    args = build_parser().parse_args(["design", "--require", "300N@2.5bar,eps=0.1",
+                                      "--D0", "8mm:0.55in", "--t0", "0.2cm", "--L0", "28.2cm",
+                                      "--theta0", "30deg"])
+    assert args.D0_mm == (8.0, 13.97) and args.t0_mm == (2.0, 2.0)
+    assert args.L0_mm == (282.0, 282.0) and args.theta0_deg == (30.0, 30.0)
+
+
+@pytest.mark.parametrize("argv", [["models", "axisym"], ["design", "--foo"],
+                                  ["fem", "solve", "--D0", "35", "--t0", "2", "--eps", "0",
+                                   "extra"]])
+def test_an_unknown_argument_is_named_by_its_command(argv, mkm_run):
+    # was 'mkm: error: unrecognized arguments: ...', the command it was given to unnamed
+    code, out, err = mkm_run(argv)
+    name = "mkm " + " ".join(a for a in argv[:2] if a in ("models", "design", "fem", "solve"))
+    assert code == 2 and out == ""
+    assert err == (f"{name}: error: unrecognized arguments: {argv[-1]}: expected the arguments "
+                   f"of `{name} --help`\n")
+
+
+def test_design_probability_takes_a_percentage():
+    # the range check says '(0.95 for 95 %)', but --probability 95% was 'not a number'
+    from mkm.cli import build_parser
+
+    parse = build_parser().parse_args
+    base = ["design", "--require", "300N@2.5bar,eps=0.1", "--tolerance", "D0=0.3"]
+    assert parse([*base, "--probability", "95%"]).probability == pytest.approx(0.95, rel=1e-12)
+    assert parse([*base, "--probability", "0.9"]).probability == 0.9

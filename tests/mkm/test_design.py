@@ -17,6 +17,7 @@ from mkm.design import (
     Requirement,
     design,
     design_record,
+    load_spec,
     parse_requirement,
     run_design,
     search,
@@ -243,14 +244,35 @@ def test_spec_file_unknown_key(tmp_path, mkm_run):
     # a requirement's value is named in the file, not as an option never typed (--eps)
     ('[[requirement]]\nforce_N = 300\npressure_bar = 2.5\neps = "10"\n',
      "requirement 1 eps 10: a fraction is expected; did you mean 10%?"),
-    ('[[requirement]]\nforce_N = "300N"\npressure_bar = 2.5\neps = 0.1\n',
-     "requirement 1 force_N='300N' is not a number"),
+    ('[[requirement]]\nforce_N = "300kg"\npressure_bar = 2.5\neps = 0.1\n',
+     "requirement 1 force_N='300kg': 'kg' is not a unit of the same kind as N"),
 ])
 def test_a_spec_file_shaped_wrong_is_one_line(text, message, tmp_path, mkm_run):
     spec = tmp_path / "spec.toml"
     spec.write_text(text, encoding="utf-8")
     code, out, err = mkm_run(["design", "--spec", str(spec), "--out", str(tmp_path / "d")])
     assert code == 2 and out == "" and err.count("\n") == 1 and message in err, err
+
+
+def test_a_spec_file_saved_by_a_windows_editor_is_read(tmp_path):
+    # Notepad's "UTF-8 with BOM": was 'not valid TOML (UTF-8): Invalid statement'
+    spec = tmp_path / "spec.toml"
+    spec.write_bytes(b"\xef\xbb\xbftop = 2\n[[requirement]]\nforce_N = 300\n"
+                     b"pressure_bar = 2.5\neps = 0.1\n")
+    loaded = load_spec(spec)
+    assert loaded["top"] == 2
+    assert [(r.force_N, r.pressure_bar, r.eps) for r in loaded["requirements"]] == [
+        (300.0, 2.5, 0.1)]
+
+
+def test_a_spec_files_requirements_typed_with_units_are_converted(tmp_path):
+    # as --require 0.3kN@250kPa,eps=10% and the spec's own [constraints] D0_mm = "3.5cm" are
+    # (was: pressure_bar='250kPa' is not a number)
+    spec = tmp_path / "spec.toml"
+    spec.write_text('[[requirement]]\nforce_N = "0.3kN"\npressure_bar = "250kPa"\n'
+                    'eps = "10%"\n', encoding="utf-8")
+    (req,) = load_spec(spec)["requirements"]
+    assert (req.force_N, req.pressure_bar, req.eps) == (300.0, 2.5, 0.1)
 
 
 def test_verification_flags_from_the_fe():
@@ -421,6 +443,51 @@ def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):
     assert f"mkm design: {line}\n" in err and "searched the box" not in err
     page = (tmp_path / "design.html").read_text(encoding="utf-8")
     assert f'<p class="note">{esc(line)}</p>' in page
+    # the same command again replaces its own files (it was refused: designs.json taken for
+    # a user's file)
+    code, out, err = mkm_run(["design", "--require", "120N@2bar,eps=0.1", "--top", "1",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 0, err
+    record = json.loads((tmp_path / "designs.json").read_text(encoding="utf-8"))
+    assert record["requirements"][0]["force_N"] == 120
+
+
+def test_a_design_outside_the_practical_range_is_said_an_extrapolation(tmp_path, mkm_run):
+    # L0 25 mm is a length LIMITS accept but below the practical range's 50 mm and 3 D0 = 30
+    # mm: mkm fem solve warns of the same muscle, so the design must too
+    code, out, err = mkm_run(["design", "--require", "20N@2bar,eps=0.1", "--D0", "10", "--t0",
+                              "1", "--L0", "25", "--top", "1", "--mesh", MESH, "--no-progress",
+                              "--out", str(tmp_path)])
+    assert code == 0, err
+    line = ("the chosen design lies outside the practical range every model is validated over "
+            "(L0_mm=25 outside [50, 1000]; L0_mm=25 below 3 D0_mm = 30): its FE verification "
+            "is an extrapolation (`mkm models` states the range)")
+    assert f"mkm design: {line}\n" in err
+    assert f'<p class="note">{esc(line)}</p>' in (tmp_path / "design.html").read_text(
+        encoding="utf-8")
+    assert line in json.loads((tmp_path / "designs.json").read_text(encoding="utf-8"))["notes"]
+    # inside the range, no such line
+    code, out, err = mkm_run(["design", "--require", "20N@2bar,eps=0.1", "--D0", "10", "--t0",
+                              "1", "--L0", "60", "--top", "1", "--mesh", MESH, "--no-progress",
+                              "--out", str(tmp_path)])
+    assert code == 0, err
+    assert "practical range every model" not in err
+
+
+def test_many_verified_designs_draw_the_best_curves_and_keep_every_one(tmp_path, mkm_run):
+    # --top 300 drew 289 curves and their legend: matplotlib collapsed the axes and said so
+    from mkm.design.page import MAX_CURVES
+
+    code, out, err = mkm_run(["design", "--require", "300N@2.5bar,eps=0.1", "--top",
+                              str(MAX_CURVES + 2), "--mesh", MESH, "--no-progress", "--out",
+                              str(tmp_path)])
+    assert code == 0, err
+    assert "constrained_layout" not in err
+    page = (tmp_path / "design.html").read_text(encoding="utf-8")
+    assert (f"FE force against pressure of the {MAX_CURVES} best of the {MAX_CURVES + 2} "
+            "verified designs (every one in fe_curves.csv)") in page
+    curves = pd.read_csv(tmp_path / "fe_curves.csv")
+    assert sorted(curves["design"].unique()) == list(range(1, MAX_CURVES + 3))
 
 
 def test_the_calibrated_rubber_is_the_identified_one(tmp_path):

@@ -1,5 +1,6 @@
 """Tests of mkm/core/records.py: atomic writes, source versions, package files, provenance."""
 
+import json
 import os
 import shutil
 import time
@@ -164,6 +165,22 @@ def test_a_sidecar_never_replaces_a_json_of_the_users(tmp_path):
                                        {**records.provenance(), "run": value})
     assert (tmp_path / "s.csv").read_text(encoding="utf-8") == "a\n2\n"
     assert '"run": "2"' in (tmp_path / "s.json").read_text(encoding="utf-8")
+
+
+def test_a_sidecar_whose_provenance_is_nested_is_an_earlier_output(tmp_path):
+    # designs.json keeps provenance() under provenance.software: a second `mkm design` into
+    # the same (default) folder was refused as if designs.json were the user's
+    for value in ("1", "2"):
+        records.write_csv_with_sidecar(
+            tmp_path / "designs.csv", f"a\n{value}\n",
+            {"objective": value, "provenance": {"software": records.provenance()}})
+    assert (tmp_path / "designs.csv").read_text(encoding="utf-8") == "a\n2\n"
+    # a calibration file's entries each hold provenance: it is the user's file all the same
+    (tmp_path / "lab.json").write_text(json.dumps({"axisym": {"theta0_deg": 31.0,
+                                                              **records.provenance()}}),
+                                       encoding="utf-8")
+    with pytest.raises(ValueError, match=r"lab\.json is not the metadata"):
+        records.write_csv_with_sidecar(tmp_path / "lab.csv", "a\n1\n", records.provenance())
 
 
 def test_a_staged_folder_replaces_all_its_files_or_none(tmp_path, monkeypatch):
