@@ -132,11 +132,6 @@ def _optional(values: dict) -> dict:
             if k in values}
 
 
-def rest_length(run, values: dict) -> float:
-    """``run``'s rest length [mm]: the fitted one where ``values`` has it, else its declared."""
-    return float(values.get("L0_mm", run.muscle["L0_mm"]))
-
-
 def geometry(run, values: dict) -> tuple[float, float, float]:
     """``(D0_mm, t0_mm, eps)`` of ``run``, the tube's fitted wall or diameter in place of the
     declared one where ``values`` has it, and the shortening of its held length
