@@ -70,7 +70,8 @@ class DesignResult:
         cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
         ok = int(self.designs["meets_all"].sum())
         text = "".join(f"{why}; " for why in (s.fe_search, s.searcher_note) if why) + (
-                f"{len(s.candidates)} candidates searched in {s.seconds:.2f} s, "
+                f"{len(s.candidates)} candidate{'' if len(s.candidates) == 1 else 's'} "
+                f"searched in {s.seconds:.2f} s, "
                 f"{int(s.candidates['feasible'].sum())} feasible by the "
                 f"{'FE search' if s.fe_search else s.searcher}; "
                 f"{len(self.designs)} verified by the FE (axisym, {self.mesh} mesh) in "
