@@ -286,6 +286,13 @@ def _check(args) -> int:
     print(text)
     for warning in warnings:  # once, on stderr only
         say(args, "warning", warning)
+    # the last line a newcomer reads: what was checked and what to do next
+    what = ("the simulated device answered (no hardware driven)" if config.simulated
+            else "the device answered")
+    then = (f"read the {len(warnings)} warning(s) above, then `mkm acquire` with the same "
+            "options" if warnings else "`mkm acquire` with the same options runs the steps "
+            "above")
+    say(args, "ready", f"{what} and the configuration holds; {then}")
     return 0
 
 

@@ -102,8 +102,8 @@ def test_a_staircase_that_reads_as_a_decimal_comma_says_which_steps_it_is(capsys
     assert main(["check", "--pressures", "1,2"]) == 0
     captured = capsys.readouterr()
     assert "up: 1, 2 bar" in captured.out
-    assert captured.err.strip() == ("mkm check: note: --pressures '1,2' is two steps, 1 and 2 "
-                                     "bar; for one step at 1.2 bar write 1.2")
+    assert captured.err.splitlines()[0] == ("mkm check: note: --pressures '1,2' is two steps, "
+                                            "1 and 2 bar; for one step at 1.2 bar write 1.2")
     assert main(["check", "--pressures", "0.5,1"]) == 0
     assert "note" not in capsys.readouterr().err
     assert main(["check", "--pressures", "1,x"]) == 2
@@ -168,6 +168,18 @@ def test_check_warns_past_the_braid_lock(capsys):
     err = capsys.readouterr().err
     assert "mkm check: warning: eps 0.4 is past the braid lock" in err
     assert "locking angle 54.7" in err
+    assert err.splitlines()[-1] == ("mkm check: ready: the simulated device answered (no "
+                                    "hardware driven) and the configuration holds; read the 1 "
+                                    "warning(s) above, then `mkm acquire` with the same options")
+
+
+def test_check_ends_with_a_verdict(capsys):
+    # the budget table was the last thing printed: nothing said the check had passed
+    assert main(["check"]) == 0
+    captured = capsys.readouterr()
+    assert captured.err.splitlines() == ["mkm check: ready: the simulated device answered (no "
+                                         "hardware driven) and the configuration holds; `mkm "
+                                         "acquire` with the same options runs the steps above"]
 
 
 @pytest.mark.parametrize("argv, message", [
