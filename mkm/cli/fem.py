@@ -20,7 +20,7 @@ from mkm.cli.common import (
     spec_from_args,
     with_calibration,
 )
-from mkm.core.ranges import parse_fraction, parse_number
+from mkm.core.ranges import parse_fraction, parse_number, parse_tolerance
 from mkm.fem.ladder import static_names
 from mkm.paths import default_cache, default_out
 
@@ -42,7 +42,7 @@ def register(subparsers) -> None:
     add_model_arguments(solve)
     add_geometry_arguments(solve)
     solve.add_argument("--out", help="write the CSV here instead of stdout")
-    solve.add_argument("--tolerance", type=argtype(parse_fraction, "--tolerance"),
+    solve.add_argument("--tolerance", type=argtype(parse_tolerance, "--tolerance"),
                        help="auto only: largest acceptable error against the finest FE, "
                        "e.g. 2%% (default 2%%)")
     add_calibration_argument(solve)

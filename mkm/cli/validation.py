@@ -13,7 +13,7 @@ from mkm.cli.common import (
     argtype,
     with_calibration,
 )
-from mkm.core.ranges import parse_fraction, parse_seed
+from mkm.core.ranges import parse_seed, parse_tolerance
 
 
 def register(subparsers) -> None:
@@ -98,7 +98,7 @@ def _kinds(text):
 
 def _fraction(text):
     try:
-        return parse_fraction(text, "--tolerance")
+        return parse_tolerance(text, "--tolerance")
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
 

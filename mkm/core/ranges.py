@@ -156,6 +156,20 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
     return values
 
 
+def parse_tolerance(text: str, name: str = "--tolerance") -> float:
+    """A relative tolerance in (0, 1): a fraction (``0.02``) or a percentage (``2%``). A number
+    from 1 to 100 without its sign is told it may be a percentage (:func:`parse_fraction`)."""
+    expected = (f"{name} {text.strip()}: expected a fraction in (0, 1) or a percentage in "
+                "(0, 100), for example 0.02 or 2%")
+    if text.strip().endswith("%"):
+        value = parse_number(text.strip()[:-1], name) / 100.0
+    else:
+        value = parse_fraction(text, name)
+    if not 0.0 < value < 1.0:
+        raise ValueError(expected)
+    return value
+
+
 def parse_fraction(text: str, name: str = "--eps") -> float:
     """A fraction (``0.05``) or a percentage (``5%``, ``12,2%``); both mean 0.05.
 

@@ -9,6 +9,7 @@ from mkm.core.ranges import (
     parse_number,
     parse_pressures,
     parse_range,
+    parse_tolerance,
 )
 
 
@@ -29,6 +30,23 @@ def test_fraction_or_percentage_mean_the_same():
     # a decimal comma, as a European keyboard types it
     assert parse_fraction("12,2%") == parse_fraction("0,122") == pytest.approx(0.122)
     assert parse_number("35,5", "--D0") == 35.5
+
+
+@pytest.mark.parametrize("text", ["0", "0%", "200%", "-1%", "100%"])
+def test_a_tolerance_outside_zero_to_one_is_named_with_one_range(text):
+    # '--tolerance 0%' was read as 0 and refused as '--tolerance 0: expected a fraction in
+    # (0, 1)', while '200%' was told 'a percentage in [0, 100)': two ranges, neither the one
+    with pytest.raises(ValueError) as info:
+        parse_tolerance(text)
+    assert str(info.value) == (f"--tolerance {text}: expected a fraction in (0, 1) or a "
+                               "percentage in (0, 100), for example 0.02 or 2%")
+
+
+def test_a_tolerance_is_a_fraction_or_a_percentage():
+    assert parse_tolerance("2%") == parse_tolerance("0.02") == pytest.approx(0.02, rel=1e-15)
+    with pytest.raises(ValueError, match=r"--tolerance 2: a fraction is expected; did you "
+                                         r"mean 2%\?"):
+        parse_tolerance("2")
 
 
 def test_a_number_typed_with_a_unit_is_converted_into_the_options():
