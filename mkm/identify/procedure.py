@@ -692,6 +692,9 @@ def _checks(runs, fe, source, best, nominal) -> list[dict]:
             "nominal_err": _branch_errors(run, before[k]),
             "identified_err": _branch_errors(run, after[k])}
            for k, run in enumerate(runs)]
+    # the rest length no shorter than any run's held length, the held-out ones' too
+    given = {n: fitting.bounds_of(n, source, runs, best.values) for n in ("L0_mm",)
+             if n in best.names}
     for kind, members in held_out_groups(runs):
         others = [r for j, r in enumerate(runs) if j not in members]
         kept = source
@@ -699,9 +702,6 @@ def _checks(runs, fe, source, best, nominal) -> list[dict]:
             for k in sorted(members, reverse=True):
                 kept = kept.without(k)
         prefix = "heldout" if kind == "run" else "length_heldout"
-        # the rest length no shorter than any run's held length, the held-out one's too
-        given = {n: fitting.bounds_of(n, source, runs, best.values) for n in ("L0_mm",)
-                 if n in best.names}
         try:
             held = fitting.fit(kept, others, best.names, best.values,
                                max_nfev=CANDIDATE_EVALUATIONS, given=given)
