@@ -8,6 +8,9 @@
   the gap; forward differences of a tenth of a standard deviation) through their bootstrap
   covariance, which already holds the pressure monitor's offset and the load cell's tolerance
   as the runs could not see them;
+- each model-form term's and each assumed rubber ratio's end (``terms``: the parameters a refit
+  moves to), as the force at the moved parameters less the force: a one-sided term a uniform
+  between the two (variance over 3), a symmetric one a standard deviation;
 - the load cell's sensitivity tolerance again, on the predicted force itself (uniform within
   the declared +- tolerance: every force the runs measured, so every force the calibration
   predicts, carries the cell's unknown gain);
@@ -55,20 +58,29 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps)
     band = entry["identified"]["band"]
     names, covariance = band["parameters"], np.asarray(band["covariance"], dtype=float)
     values = {**fitting.nominal_values(entry["theta0_deg"]),
+              "c01_fraction": fitting.SILASTIC_C01_FRACTION,
               **dict(zip(names, band["values"], strict=True))}
     inputs = {"D0_mm": D0_mm, "t0_mm": t0_mm}
+
+    def force_at(shift: dict) -> np.ndarray:
+        moved = {**values, **{n: values[n] + d for n, d in shift.items()}}
+        geometry = {g: (moved[g] if g in shift or g in names else inputs[g])
+                    for g in fitting.GEOMETRY}
+        return _force(spec, calibration, moved, pressure_bar, geometry["D0_mm"],
+                      geometry["t0_mm"], eps)
+
     # the force at the band's own (unrounded) values: the differences are taken from it
-    base = _force(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps)
-    gradient = []
-    for k, name in enumerate(names):
-        step = STEP_SD * np.sqrt(max(covariance[k, k], 0.0)) or 1e-6
-        moved = {**values, name: values[name] + step}
-        geometry = {g: (moved[g] if g in names else inputs[g]) for g in fitting.GEOMETRY}
-        force = _force(spec, calibration, moved, pressure_bar, geometry["D0_mm"],
-                       geometry["t0_mm"], eps)
-        gradient.append((force - base) / step)
+    base = force_at({})
+    gradient = [(force_at({name: step}) - base) / step for name, step in (
+        (name, STEP_SD * np.sqrt(max(covariance[k, k], 0.0)) or 1e-6)
+        for k, name in enumerate(names))]
     G = np.array(gradient).reshape(len(names), -1)
     variance = np.einsum("in,ij,jn->n", G, covariance, G) if names else np.zeros(base.size)
+    # a term is evaluated where it moves the parameters, not linearised: it may start the
+    # force at a step the identified muscle is slack at (a threshold moved)
+    for term in band.get("terms", ()):
+        moved = force_at(term["shift"]) - base
+        variance = variance + moved**2 / (3.0 if term["kind"] == "one-sided" else 1.0)
     tolerance = float(band.get("sensitivity_tolerance", 0.0))
     variance = variance + (tolerance / np.sqrt(3.0) * np.ravel(force_N)) ** 2
     variance = variance + float(band.get("misfit_rms_N", 0.0)) ** 2

@@ -224,20 +224,20 @@ class Identification:
         """What a prediction band needs (:func:`mkm.identify.band.prediction_band`): the static
         parameters' values and covariance (the bootstrap's, as its intervals see it:
         :func:`mkm.identify.intervals.robust_covariance`; the monitor's offset and the load
-        cell's tolerance inside; plus each model-form term's shift ``d``: ``d d'``, over 3 for a
-        one-sided one, the other braid's estimate as a uniform between the two), the load
-        cell's tolerance itself, and on a misfit the residual the steps' noise does not explain
-        (``misfit_rms_N``)."""
+        cell's tolerance inside), the shift of each model-form term and each end of an assumed
+        rubber ratio (``terms``: ``kind`` and ``shift``, evaluated by the band at the moved
+        parameters), the load cell's tolerance itself, and on a misfit the residual the steps'
+        noise does not explain (``misfit_rms_N``)."""
         names = [n for n in STATIC_NAMES if n in self.fit.names]
         index = [self.fit.names.index(n) for n in names]
-        covariance = self.bootstrap["covariance"][np.ix_(index, index)].copy()
-        for term in self.model_form.values():  # a shift d: variance d d' (uniform 0..d: /3)
-            if "shift" in term:
-                d = np.array([term["shift"].get(n, 0.0) for n in names])
-                covariance += np.outer(d, d) / (3.0 if term["kind"] == "one-sided" else 1.0)
+        covariance = self.bootstrap["covariance"][np.ix_(index, index)]
+        terms = [{"what": term["what"], "kind": term["kind"], "shift": term["shift"]}
+                 for term in (*self.model_form.values(),
+                              *self.rubber.get("assumed_ratio_terms", {}).values())
+                 if "shift" in term]
         misfit = self.goodness.discrepancy_rms_N if self.goodness else 0.0
         return {"parameters": names, "values": [self.fit.values[n] for n in names],
-                "covariance": covariance.tolist(),
+                "covariance": covariance.tolist(), "terms": terms,
                 "sensitivity_tolerance": self.sensitivity_tolerance,
                 **({"misfit_rms_N": round(misfit, 4)} if misfit > 0 else {})}
 
