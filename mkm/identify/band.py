@@ -63,7 +63,9 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps)
     inputs = {"D0_mm": D0_mm, "t0_mm": t0_mm}
 
     def force_at(shift: dict) -> np.ndarray:
-        moved = {**values, **{n: values[n] + d for n, d in shift.items()}}
+        # a term's shift names every fitted parameter; the static force takes the static ones
+        moved = {**values, **{n: values[n] + d for n, d in shift.items()
+                              if n in fitting.STATIC_NAMES}}
         geometry = {g: (moved[g] if g in shift or g in names else inputs[g])
                     for g in fitting.GEOMETRY}
         return _force(spec, calibration, moved, pressure_bar, geometry["D0_mm"],

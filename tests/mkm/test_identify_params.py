@@ -157,7 +157,9 @@ def test_a_term_is_evaluated_where_it_moves_the_parameters_a_slack_step_included
     data = json.loads(SHIPPED.read_text(encoding="utf-8"))
     data["thickwall"] = {**data["thickwall"], "theta0_deg": theta0, "identified": {"band": {
         "parameters": ["theta0_deg"], "values": [theta0], "covariance": [[0.0]],
-        "terms": [{"what": "a refit", "kind": "one-sided", "shift": {"theta0_deg": shift}}],
+        # a refit moves the friction and the monitor's offset too: not the static force's
+        "terms": [{"what": "a refit", "kind": "one-sided", "shift": {
+            "theta0_deg": shift, "pressure_offset_bar": 0.01, "hysteresis_fraction": 0.01}}],
         "sensitivity_tolerance": tol}}}
     path = tmp_path / "calibration.json"
     path.write_text(json.dumps(data), encoding="utf-8")
