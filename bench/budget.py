@@ -115,12 +115,14 @@ def coverage_factor(terms, probability: float = COVERAGE_PROBABILITY) -> float:
     h = x[1] - x[0]
     density = np.zeros_like(x)
     density[_GRID // 2] = 1.0 / h
-    for a in halves:  # each rectangular term: a box of half-width a, unit area
-        box = (np.abs(x) <= a).astype(float)
-        density = _convolve_same(density, box / box.sum())
+    kernels = [(np.abs(x) <= a).astype(float) for a in halves]  # boxes of half-width a
     if sigma > 0:
-        gauss = np.exp(-0.5 * (x / sigma) ** 2)
-        density = _convolve_same(density, gauss / gauss.sum())
+        kernels.append(np.exp(-0.5 * (x / sigma) ** 2))
+    for kernel in kernels:
+        # a term narrower than the grid's step is a point there (an empty box or Gaussian
+        # would divide by 0): nothing to spread
+        if np.count_nonzero(kernel) > 1:
+            density = _convolve_same(density, kernel / kernel.sum())
     cdf = np.cumsum(np.clip(density, 0.0, None)) * h
     cdf /= cdf[-1]
     half = x[_GRID // 2:]

@@ -320,6 +320,11 @@ def test_coverage_factors_are_the_quantiles_of_known_distributions():
     k = coverage_factor([bound(1.0), normal])
     assert np.mean(np.abs(draws) <= k * math.sqrt(2)) == pytest.approx(COVERAGE_PROBABILITY,
                                                                        abs=0.002)
+    # a bound far narrower than the grid's step beside a normal term is the normal term's
+    # (a bound of 1.4e-20 beside u 1.9e-3 gave NaN: no grid point inside the box)
+    tiny = Term("resolution", "force", 1.3985004312108452e-20, "B", "", "rectangular")
+    wide = Term("noise", "force", 0.001914979014822696, "A", "")
+    assert coverage_factor([wide, tiny]) == pytest.approx(2.0, abs=1e-5)
 
 
 
