@@ -10,8 +10,16 @@ import pytest
 from mkm.core.records import sidecar_path
 from mkm.fem.limits import lock_eps
 from mkm.fem.sampling import LOCK_FRACTION, draw_muscles
-from mkm.mesh_errors import (MESH_ERRORS_FILE, MIN_SCALE_N, NEAR_LOCK_RANGE, PRESSURES_BAR,
-                             SAFETY, mesh_model, near_lock_seed, point_bound_pct)
+from mkm.mesh_errors import (
+    MESH_ERRORS_FILE,
+    MIN_SCALE_N,
+    NEAR_LOCK_RANGE,
+    PRESSURES_BAR,
+    SAFETY,
+    mesh_model,
+    near_lock_seed,
+    point_bound_pct,
+)
 from mkm.registry import build_spec
 
 A_N_PER_BAR, P_STAR_BAR = 100.0, 0.4
