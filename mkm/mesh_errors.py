@@ -2,8 +2,9 @@
 mesh at a single point as well as over a sweep.
 
 A coarser mesh's force differs from the fine mesh's in two ways: its threshold ``P*`` is
-shifted (by 0.01-1 % of it) and the bend just above it differs, and its slope differs by a small
-fraction. So at a point of force ``F`` (the mesh's) and slope ``A = F / (P - P*)``::
+shifted (by 0.01-2 % of it) and the bend just above it differs, and its slope differs by a small
+fraction (up to 7 %: the coarse mesh on a slender tube near the lock). So at a point of force
+``F`` (the mesh's) and slope ``A = F / (P - P*)``::
 
     |F - F_fine| <= a P* A + b F
 
@@ -13,11 +14,12 @@ measured on fresh random muscles of the practical range, a share of them near th
 (:func:`measure`, seeds recorded; ``mkm study --mesh-muscles N``). Near the lock the threshold
 climbs steeply with the shortening, so there a mesh shifts it most (thin long walls most of
 all), and a draw of the whole range puts about one muscle in ten there, half of which pull
-nothing up to 8 bar: :data:`NEAR_LOCK_SHARE` of the muscles are drawn there. Relative to the
-largest force
-of the call (Equation 7's scale) the bound is small over a sweep and large just above ``P*``,
-where a shift of the threshold is a large part of a small force: the single-point call
-``auto`` answered from the coarse mesh with a sweep-scale bound of 0.08 % was 0.77 % off.
+nothing up to 8 bar: :data:`NEAR_LOCK_SHARE` of the muscles are drawn there.
+
+Relative to the largest force of the call (Equation 7's scale) the bound is small over a sweep
+and large just above ``P*``, where a shift of the threshold is a large part of a small force:
+the single-point call ``auto`` answered from the coarse mesh with a sweep-scale bound of 0.08 %
+was 0.77 % off.
 
 The table (``mkm/data/mesh_errors.csv`` + JSON sidecar) holds one row per muscle and mesh;
 :func:`mesh_model` reads ``a`` and ``b`` per mesh (the largest over the muscles, times
