@@ -21,7 +21,8 @@ muscle's sweep) a posteriori, at those very points:
   of force ``F`` and slope ``A`` (the mesh's own), relative to the largest force of the call
   (:func:`mkm.mesh_errors.point_bound_pct`), with ``a`` the largest threshold shift (over
   ``P*``) and ``b`` the largest relative error measured on fresh random muscles of the practical
-  range (``mkm/data/mesh_errors.csv``, :mod:`mkm.mesh_errors`). Over a sweep it is small; at a
+  range, half of them near the braid lock (``mkm/data/mesh_errors.csv``,
+  :mod:`mkm.mesh_errors`). Over a sweep it is small; at a
   single point just above the threshold ``P*`` it is large, as the error is (a coarse mesh's
   threshold shifted by 0.003 bar is 0.8 % of the force 0.4 bar above it). Without that table,
   the largest |Err%| in the study's convergence table times :data:`MESH_SAFETY`. The fine mesh

@@ -2,18 +2,24 @@
 mesh at a single point as well as over a sweep.
 
 A coarser mesh's force differs from the fine mesh's in two ways: its threshold ``P*`` is
-shifted (by 0.01-1 % of it) and the bend just above it differs, and its slope differs by a small
-fraction. So at a point of force ``F`` (the mesh's) and slope ``A = F / (P - P*)``::
+shifted (by 0.01-2 % of it) and the bend just above it differs, and its slope differs by a small
+fraction (up to 7 %: the coarse mesh on a slender tube near the lock). So at a point of force
+``F`` (the mesh's) and slope ``A = F / (P - P*)``::
 
     |F - F_fine| <= a P* A + b F
 
 with ``b`` the largest relative error from ``2 P*`` up (the slope's) and ``a`` the largest
 error ``b`` leaves, in bar over ``P*`` (the threshold's shift, the bend), both
-measured on fresh random muscles of the practical range
-(:func:`measure`, seeds recorded; ``mkm study --mesh-muscles N``). Relative to the largest force
-of the call (Equation 7's scale) the bound is small over a sweep and large just above ``P*``,
-where a shift of the threshold is a large part of a small force: the single-point call
-``auto`` answered from the coarse mesh with a sweep-scale bound of 0.08 % was 0.77 % off.
+measured on fresh random muscles of the practical range, a share of them near the braid lock
+(:func:`measure`, seeds recorded; ``mkm study --mesh-muscles N``). Near the lock the threshold
+climbs steeply with the shortening, so there a mesh shifts it most (thin long walls most of
+all), and a draw of the whole range puts about one muscle in ten there, half of which pull
+nothing up to 8 bar: :data:`NEAR_LOCK_SHARE` of the muscles are drawn there.
+
+Relative to the largest force of the call (Equation 7's scale) the bound is small over a sweep
+and large just above ``P*``, where a shift of the threshold is a large part of a small force:
+the single-point call ``auto`` answered from the coarse mesh with a sweep-scale bound of 0.08 %
+was 0.77 % off.
 
 The table (``mkm/data/mesh_errors.csv`` + JSON sidecar) holds one row per muscle and mesh;
 :func:`mesh_model` reads ``a`` and ``b`` per mesh (the largest over the muscles, times
@@ -22,12 +28,14 @@ The table (``mkm/data/mesh_errors.csv`` + JSON sidecar) holds one row per muscle
 
 from __future__ import annotations
 
+import dataclasses
 from functools import cache
 from pathlib import Path
 
 import numpy as np
 
 from mkm.core.records import package_file, provenance, write_csv_with_sidecar
+from mkm.fem.limits import PRACTICAL_RANGE
 
 MESH_ERRORS_FILE = package_file("mkm", "data", "mesh_errors.csv")
 #: The meshes measured against the fine one.
@@ -37,6 +45,12 @@ PRESSURES_BAR = tuple(float(p) for p in np.round(np.arange(0.0, 8.001, 0.5), 2))
 #: The largest shift and error over the measured muscles; another muscle may do a little worse.
 SAFETY = 1.5
 MIN_SCALE_N = 1.0  # a call that never pulls (all below threshold) is scored in newtons
+#: The practical range near the braid lock: eps from 85 % of the lock up (to the draw's top,
+#: :data:`mkm.fem.sampling.LOCK_FRACTION`), about the top tenth of the eps a draw of the range
+#: spans.
+NEAR_LOCK_RANGE = dataclasses.replace(PRACTICAL_RANGE, eps_per_lock=(0.85, 1.0))
+#: The share of :func:`measure`'s muscles drawn from :data:`NEAR_LOCK_RANGE`.
+NEAR_LOCK_SHARE = 0.5
 
 
 def _muscle_rows(mesh: str, sweep, fine) -> dict:
@@ -63,33 +77,48 @@ def _muscle_rows(mesh: str, sweep, fine) -> dict:
     return {**row, "relative_error": relative, "shift_per_threshold": shift}
 
 
+def near_lock_seed(seed: int) -> int:
+    """The seed of :func:`measure`'s near-lock draw, spawned from ``seed``: the two draws share
+    no uniforms, nor does the near-lock draw with a practical draw of a nearby seed."""
+    return int(np.random.SeedSequence(int(seed)).spawn(1)[0].generate_state(1)[0])
+
+
 def measure(n_muscles: int, seed: int, out=MESH_ERRORS_FILE, workers: int | None = None,
-            scheduler: str | None = None, cache_dir=None, progress: bool = True):
-    """Solve ``n_muscles`` fresh random muscles of the practical range
-    (:func:`mkm.fem.sampling.draw_muscles`, ``seed``) at every mesh of :data:`MESHES` and the
-    fine one (:data:`PRESSURES_BAR`; the batch runner: local workers or the Dask cluster at
-    ``scheduler``) and write one row per muscle and mesh to ``out`` with its sidecar. A muscle
-    whose fine sweep fails anywhere is recorded with ``fe_failed`` and not scored."""
+            scheduler: str | None = None, cache_dir=None, progress: bool = True,
+            near_lock_share: float = NEAR_LOCK_SHARE):
+    """Solve ``n_muscles`` fresh random muscles at every mesh of :data:`MESHES` and the fine
+    one (:data:`PRESSURES_BAR`; the batch runner: local workers or the Dask cluster at
+    ``scheduler``) and write one row per muscle and mesh to ``out`` with its sidecar (both
+    draws, their seeds). ``near_lock_share`` of them (rounded) come from :data:`NEAR_LOCK_RANGE`
+    (:func:`mkm.fem.sampling.draw_muscles`, seed :func:`near_lock_seed`), the others from the
+    practical range (``seed``); column ``draw`` says which. A muscle whose fine sweep fails
+    anywhere is recorded with ``fe_failed`` and not scored."""
     import pandas as pd
 
     from mkm.fem.batch import Job, Runner
     from mkm.fem.sampling import draw_muscles
 
-    drawn = draw_muscles(int(n_muscles), seed)
+    if not 0.0 <= near_lock_share <= 1.0:
+        raise ValueError(f"near_lock_share={near_lock_share!r} is invalid: expected in [0, 1]")
+    n_near = round(near_lock_share * int(n_muscles))
+    drawn = draw_muscles(int(n_muscles) - n_near, seed)
+    near = draw_muscles(n_near, near_lock_seed(seed), box=NEAR_LOCK_RANGE)
+    muscles = (*drawn.muscles, *near.muscles)
+    origin = ["practical"] * len(drawn.muscles) + ["near lock"] * len(near.muscles)
     frames = {}
     with Runner(workers, scheduler) as runner:
         for mesh in (*MESHES, "fine"):
             jobs = [Job(model="axisym", mesh=mesh, D0_mm=m.D0_mm, t0_mm=m.t0_mm, eps=m.eps,
                         L0_mm=m.L0_mm, theta0_deg=m.theta0_deg, pressure_bar=PRESSURES_BAR,
-                        C10_MPa=m.C10_MPa, C01_MPa=m.C01_MPa) for m in drawn.muscles]
+                        C10_MPa=m.C10_MPa, C01_MPa=m.C01_MPa) for m in muscles]
             frame, done = runner.run(jobs, cache_dir=cache_dir, progress=progress,
                                      desc=f"FE {mesh} mesh, {n_muscles} muscles")
             frame.insert(0, "muscle", np.repeat(np.arange(len(jobs)), len(PRESSURES_BAR)))
             frames[mesh] = frame
     rows = []
-    for k, muscle in enumerate(drawn.muscles):
+    for k, muscle in enumerate(muscles):
         fine = frames["fine"][frames["fine"]["muscle"] == k]
-        base = {"muscle": k, **{name: getattr(muscle, name) for name in
+        base = {"muscle": k, "draw": origin[k], **{name: getattr(muscle, name) for name in
                                 ("D0_mm", "t0_mm", "eps", "L0_mm", "theta0_deg", "C10_MPa",
                                  "C01_MPa")}}
         for mesh in MESHES:
@@ -100,7 +129,8 @@ def measure(n_muscles: int, seed: int, out=MESH_ERRORS_FILE, workers: int | None
             rows.append({**base, **_muscle_rows(mesh, sweep, fine), "fe_failed": False})
     table = pd.DataFrame(rows)
     info = {**provenance(), "what": "FE mesh errors against the fine mesh (mkm.mesh_errors)",
-            "draw": drawn.record(), "pressure_bar": list(PRESSURES_BAR),
+            "draw": drawn.record(), "near_lock_draw": near.record(),
+            "near_lock_share": float(near_lock_share), "pressure_bar": list(PRESSURES_BAR),
             "meshes": list(MESHES), "model_version": done["model_version"],
             "fe_failed_muscles": int(table.groupby("muscle")["fe_failed"].any().sum())}
     write_csv_with_sidecar(out, table.to_csv(index=False, lineterminator="\n"), info)

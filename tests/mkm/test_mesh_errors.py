@@ -1,11 +1,26 @@
 """The FE meshes' bound at the scale of a call (:mod:`mkm.mesh_errors`), by hand on a
-threshold-linear force."""
+threshold-linear force, and the shipped table near the braid lock."""
+
+import json
 
 import numpy as np
 import pandas as pd
 import pytest
 
-from mkm.mesh_errors import SAFETY, mesh_model, point_bound_pct
+from mkm.core.records import sidecar_path
+from mkm.fem.limits import lock_eps
+from mkm.fem.sampling import LOCK_FRACTION, draw_muscles
+from mkm.mesh_errors import (
+    MESH_ERRORS_FILE,
+    MIN_SCALE_N,
+    NEAR_LOCK_RANGE,
+    PRESSURES_BAR,
+    SAFETY,
+    mesh_model,
+    near_lock_seed,
+    point_bound_pct,
+)
+from mkm.registry import build_spec
 
 A_N_PER_BAR, P_STAR_BAR = 100.0, 0.4
 GEOMETRY = (35.0, 2.5, 0.1)
@@ -58,3 +73,45 @@ def test_mesh_model_is_the_largest_over_the_muscles_times_the_safety(tmp_path):
     assert model["coarse"] == pytest.approx((SAFETY * 0.004, SAFETY * 0.001))
     assert model["medium"] == pytest.approx((SAFETY * 0.001, SAFETY * 0.0002))
     assert mesh_model(str(tmp_path / "absent.csv")) == {}
+
+
+def test_the_shipped_table_measured_near_the_braid_lock():
+    # A mesh shifts the threshold most near the braid lock, where a draw of the whole range
+    # puts few muscles: the shipped a and b come from a table with its recorded share drawn
+    # there, eps at 85-95 % of each muscle's lock. Half of such muscles pull below 8 bar (30 of
+    # a draw of 60): at least a quarter must be scored, or the share measured little.
+    table = pd.read_csv(MESH_ERRORS_FILE)
+    info = json.loads(sidecar_path(MESH_ERRORS_FILE).read_text())
+    muscles = table.drop_duplicates("muscle")
+    near = muscles[muscles["draw"] == "near lock"]
+    assert info["near_lock_draw"]["seed"] == near_lock_seed(info["draw"]["seed"])
+    assert len(near) == info["near_lock_draw"]["muscles"] == round(
+        info["near_lock_share"] * len(muscles)) > 0
+    eps_per_lock = near["eps"] / lock_eps(near["theta0_deg"])
+    low, high = NEAR_LOCK_RANGE.eps_per_lock
+    assert eps_per_lock.between(low, high * LOCK_FRACTION).all()
+    pulling = table[(table["draw"] == "near lock") & ~table["fe_failed"].astype(bool)
+                    & (table["threshold_bar"] < PRESSURES_BAR[-1])]
+    assert pulling["muscle"].nunique() >= len(near) // 4
+
+
+@pytest.mark.slow  # the fine mesh
+def test_a_muscle_near_the_lock_within_the_shipped_bound():
+    # Call 36 of benchmarks/bench_auto.py --range practical --calls 80 --seed 20261206: eps at
+    # 0.89 of the lock, a 0.51 mm wall 932 mm long, the fine threshold at 6.374 bar. The medium
+    # mesh puts it at 6.394 (0.31 % off) and the coarse at 6.430 (0.89 %), so the sweep's error
+    # (1.22 % and 3.46 % of its largest force) is mostly the threshold's shift: each must be
+    # within the bound auto states from the shipped table.
+    muscle = draw_muscles(80, 20261206).muscles[36]
+    assert muscle.eps / lock_eps(muscle.theta0_deg) > NEAR_LOCK_RANGE.eps_per_lock[0]
+    P = np.array(PRESSURES_BAR[1:])  # the benchmark's sweep, 0.5-8 bar
+    rubber = {k: getattr(muscle, k) for k in ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")}
+    geometry = (muscle.D0_mm, muscle.t0_mm, muscle.eps)
+    fine = np.ravel(build_spec("axisym:mesh=fine", **rubber).predict(P, *geometry).force_N)
+    for mesh, (a, b) in mesh_model().items():
+        pred = build_spec(f"axisym:mesh={mesh}", **rubber).predict(P, *geometry)
+        force = np.ravel(pred.force_N)
+        error_pct = 100 * np.max(np.abs(force - fine)) / max(np.max(fine), MIN_SCALE_N)
+        bound = point_bound_pct(force, P, np.ravel(pred.extras["threshold_pressure_bar"]),
+                                np.tile(geometry, (len(P), 1)), a, b)
+        assert error_pct <= bound.max(), mesh
