@@ -68,6 +68,17 @@ def _notes(args):
     return show
 
 
+def _check_out_names(out) -> None:
+    """``ValueError`` for an ``--out`` (or ``$MKM_OUT``, where defaults go) naming a file or
+    folder Windows cannot make: said on every system, before any work."""
+    from mkm.paths import OUT_ENV, check_path_name
+
+    if os.environ.get(OUT_ENV):
+        check_path_name(os.environ[OUT_ENV], OUT_ENV)
+    if out is not None:
+        check_path_name(out)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="mkm", description="McKibben muscle bench toolkit: acquire forces, "
                      "predict them with physics and surrogate models, validate.")
@@ -101,6 +112,8 @@ def main(argv: list[str] | None = None) -> int:
         parser.exit(2, error_line(name, f"unrecognized arguments: {' '.join(rest)}: expected "
                                   f"the arguments of `{name} --help`") + "\n")
     try:
+        if hasattr(args, "out"):  # every command that writes: one check of the names it makes
+            _check_out_names(args.out)
         with warnings.catch_warnings():
             warnings.showwarning = _notes(args)
             return int(args.func(args) or 0)

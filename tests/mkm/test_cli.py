@@ -634,6 +634,43 @@ def test_an_out_path_the_command_cannot_use_is_one_line(argv, said, tmp_path, mk
     assert taken.read_text() == "a lab's file\n"
 
 
+@pytest.mark.parametrize("argv", [
+    ["acquire", "--backend", "sim"], ["design", "--require", "300N@2.5bar,eps=0.1"],
+    ["report", str(RUN_DIR), "--models", "eq2", "--no-cache"], ["export", str(RUN_DIR)],
+    ["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05"],
+])
+@pytest.mark.parametrize("out, said", [
+    ("runs/a:b", "(':' in 'a:b')"),  # an NTFS alternate data stream of "runs/a"
+    ("x/CON", "('CON' is a device name)"), ("lpt1.csv", "('lpt1.csv' is a device name)"),
+    ("runs.", "('runs.' ends in '.')"), ("runs ", "('runs ' ends in ' ')"),
+    ("a|b", "('|' in 'a|b')"), ("a\x01b", r"('\x01' in 'a\x01b')"),
+])
+def test_an_out_windows_cannot_make_is_refused_on_every_system(argv, out, said, tmp_path,
+                                                                  monkeypatch, mkm_run):
+    monkeypatch.chdir(tmp_path)
+    code, stdout, err = mkm_run([*argv, "--out", out])
+    assert code == 2 and stdout == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert f"--out {out!r} is not a path Windows can make {said}: expected folder and file " \
+        "names without" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("out", ["C:\\Users\\lab\\mkm-out", "\\\\server\\share\\runs",
+                                 "../mkm-out/./runs", "Łódź lab/runs"])
+def test_paths_windows_makes_pass_the_name_check(out):
+    from mkm.paths import check_path_name
+
+    assert check_path_name(out) == out
+
+
+def test_a_bad_mkm_out_is_named(tmp_path, monkeypatch, mkm_run):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("MKM_OUT", "lab?runs")
+    code, _, err = mkm_run(["design", "--require", "300N@2.5bar,eps=0.1"])
+    assert code == 2 and "MKM_OUT 'lab?runs' is not a path Windows can make ('?' in" in err
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_a_path_the_console_code_page_cannot_encode_is_escaped_not_an_error(tmp_path,
                                                                             monkeypatch):
     """stdout redirected on Windows is in the ANSI code page (cp1252): a path with a letter
