@@ -492,6 +492,30 @@ def test_an_infeasible_design_outside_the_practical_range_says_so(tmp_path, mkm_
     assert code == 2 and re.search(r"short by \d+ N \(predicted \d+ N\)\n$", err), err
 
 
+def test_every_design_figure_carries_its_provenance(tmp_path, mkm_run):
+    # a PNG copied into a lab report away from designs.json still says what made it
+    import datetime
+
+    from PIL import Image
+
+    from mkm import __version__
+
+    code, out, err = mkm_run(["design", "--require", "300N@2bar,eps=0.1", "--top", "1",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 0, err
+    software = json.loads((tmp_path / "designs.json").read_text())["provenance"]["software"]
+    pngs = sorted(p.name for p in tmp_path.glob("*.png"))
+    assert pngs == ["fe_curves.png", "requirement1_contours.png"]
+    for name in pngs:
+        text = Image.open(tmp_path / name).text
+        assert text["Software"] == f"mkm-bench {__version__}"
+        assert text["Command"] == software["command"]
+        made = datetime.datetime.fromisoformat(text["Creation Time"])
+        assert abs(made - datetime.datetime.fromisoformat(software["date_utc"])) < \
+            datetime.timedelta(minutes=1)
+        assert json.loads(text["Provenance"])["versions"] == software["versions"]
+
+
 def test_many_verified_designs_draw_the_best_curves_and_keep_every_one(tmp_path, mkm_run):
     # --top 300 drew 289 curves and their legend: matplotlib collapsed the axes and said so
     from mkm.design.page import MAX_CURVES
