@@ -67,6 +67,11 @@ def test_a_number_typed_with_a_unit_is_converted_into_the_options():
 
 @pytest.mark.parametrize(("call", "message"), [
     (lambda: parse_number("abc", "--D0"), "^--D0='abc' is not a number$"),
+    # an option with a unit says what it takes (was: "--D0='abc' is not a number" alone)
+    (lambda: parse_number("abc", "--D0", "mm"), r"^--D0='abc' is not a number: expected a "
+     r"number in mm, or one with a unit such as 282mm or 1\.5in$"),
+    (lambda: parse_number("2..5", "--pressure", "bar"), r"^--pressure='2\.\.5' is not a number: "
+     r"expected a number in bar, or one with a unit such as 2\.5bar or 250kPa$"),
     (lambda: parse_number("inf", "--D0"), "^--D0='inf' is not a finite number$"),
     (lambda: parse_range("0:2.5", "p"), "malformed: expected start:stop:step"),
     (lambda: parse_range("0:1:0", "p"), "step 0 must be > 0"),
