@@ -309,7 +309,9 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
 
 # --- recognising ------------------------------------------------------------------------------
 
-_BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}]*)[)\]}]\s*$")
+# the unit may hold one parenthesis of its own: "Pressure [bar(g)]"
+_BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}(]*(?:\([^)]*\))?[^)\]}]*)"
+                        r"[)\]}]\s*$")
 _WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
 
 
@@ -337,10 +339,17 @@ LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", 
              "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
 
 
+#: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü)
+_GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi)\s*(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))",
+                    re.IGNORECASE)
+
+
 def parse_unit(text: str):
     """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
     case as written, then any case)."""
     text = text.strip()
+    if gauge := _GAUGE.fullmatch(text):  # the toolkit's pressures are gauge pressures
+        text = gauge.group("unit")
     if text.lower() in LAB_UNITS:
         return registry().Unit(LAB_UNITS[text.lower()])
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):

@@ -125,6 +125,18 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.5], rtol=1e-12)
 
 
+@pytest.mark.parametrize("header, bar_per_unit", [
+    ("Pressure [bar(g)]", 1.0), ("Pressure (bar g)", 1.0), ("Druck [bar(ü)]", 1.0),
+    ("Pressure (kPa (g))", 0.01), ("p [psi gauge]", PSI_BAR), ("p_psig", PSI_BAR),
+])
+def test_a_pressure_marked_gauge_is_read_in_its_unit(header, bar_per_unit, tmp_path):
+    # bar(g) was "no pressure column among 'Pressure [bar(g)]'", bar g "not a unit of pressure"
+    table, found = _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
+    assert found["pressure"].header == header
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
                         "Kontraktion (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
