@@ -145,6 +145,9 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
         raise ValueError(f"{path} cannot be read ({exc.strerror or exc})") from None
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text" is UTF-16
         text = data.decode("utf-16", errors="replace")
+    elif b"\x00" in data[:2]:  # UTF-16 without its byte order mark (a logger's, a script's)
+        text = data.decode("utf-16-le" if data[1:2] == b"\x00" else "utf-16-be",
+                           errors="replace")
     else:
         try:
             text = data.decode("utf-8-sig")

@@ -193,6 +193,17 @@ def test_excels_unicode_text_is_utf16(tmp_path):
     np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5])
 
 
+@pytest.mark.parametrize("encoding", ["utf-16-le", "utf-16-be"])
+def test_utf16_without_a_byte_order_mark_is_read(encoding, tmp_path):
+    # was: "export.txt has no row of numbers" (read as Latin-1, a NUL between every letter)
+    path = tmp_path / "export.txt"
+    path.write_bytes("Druck [bar]\tKraft [N]\r\n0\t0\r\n1,5\t150,5\r\n".encode(encoding))
+    (table,) = read_tables(path)
+    found = recognise(table)
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5])
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
