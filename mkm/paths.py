@@ -138,11 +138,16 @@ def windows_name_problem(name: str) -> str | None:
     return None
 
 
+#: whether this system is Windows (where a backslash separates folders)
+WINDOWS = os.name == "nt"
+
+
 def check_path_name(path: str | os.PathLike, flag: str = "--out") -> str:
     """``path`` if every folder and file name in it is one Windows can make, else ``ValueError``
     naming the value and the rule: checked on every system, so a command line or run folder
     that works here works on a lab's Windows PC too. An absolute Windows path (``C:\\...``, a
-    ``\\\\server\\share``) keeps its anchor; ``a:b`` is a name with a colon, not a drive."""
+    ``\\\\server\\share``) keeps its anchor; ``a:b`` is a name with a colon, not a drive. Elsewhere
+    a Windows path (a drive letter, a backslash) is refused too: it would name one file here."""
     text = os.fspath(path)
     windows = PureWindowsPath(text)
     names = windows.parts[1:] if windows.root else re.split(r"[\\/]", text)
@@ -152,6 +157,11 @@ def check_path_name(path: str | os.PathLike, flag: str = "--out") -> str:
                          'folder and file names without < > : " | ? * or control characters, '
                          "not ending in a dot or space, and not CON, PRN, AUX, NUL, COM1-9 or "
                          "LPT1-9 (with or without an extension)")
+    if not WINDOWS and (re.match(r"[A-Za-z]:", text) or "\\" in text):
+        # here a backslash is part of a name: "C:\\Users\\lab\\out" would be one file in the
+        # working folder
+        raise ValueError(f"{flag} {text!r} is a Windows path: expected a path of this system, "
+                         "folders separated by / (such as mkm-out/runs or /home/lab/mkm-out)")
     return text
 
 

@@ -656,11 +656,35 @@ def test_an_out_windows_cannot_make_is_refused_on_every_system(argv, out, said, 
 
 
 @pytest.mark.parametrize("out", ["C:\\Users\\lab\\mkm-out", "\\\\server\\share\\runs",
-                                 "../mkm-out/./runs", "Łódź lab/runs"])
-def test_paths_windows_makes_pass_the_name_check(out):
-    from mkm.paths import check_path_name
+                                 "C:/Users/lab/mkm-out", "../mkm-out/./runs", "Łódź lab/runs"])
+def test_paths_windows_makes_pass_the_name_check(out, monkeypatch):
+    from mkm import paths
 
-    assert check_path_name(out) == out
+    monkeypatch.setattr(paths, "WINDOWS", True)
+    assert paths.check_path_name(out) == out
+
+
+@pytest.mark.parametrize("out", ["/home/lab/mkm-out/runs", "//server/share/runs", "../a b/runs"])
+def test_posix_paths_pass_the_name_check(out, monkeypatch):
+    from mkm import paths
+
+    monkeypatch.setattr(paths, "WINDOWS", False)
+    assert paths.check_path_name(out) == out
+
+
+@pytest.mark.parametrize("out", ["C:\\Users\\lab\\out", "runs\\eps12", "C:/Users/lab/out"])
+def test_a_windows_path_elsewhere_is_refused(out, tmp_path, monkeypatch, mkm_run):
+    # was: one file named "C:\Users\lab\out" written in the working folder
+    from mkm import paths
+
+    monkeypatch.setattr(paths, "WINDOWS", False)
+    monkeypatch.chdir(tmp_path)
+    code, stdout, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
+                                 "--eps", "0.05", "--out", out])
+    assert code == 2 and stdout == "" and err == (
+        f"mkm fem solve: error: --out {out!r} is a Windows path: expected a path of this "
+        "system, folders separated by / (such as mkm-out/runs or /home/lab/mkm-out)\n")
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_a_bad_mkm_out_is_named(tmp_path, monkeypatch, mkm_run):
