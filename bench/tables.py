@@ -283,6 +283,24 @@ def _units_row(cells: list[str]) -> bool:
                                for u in units)
 
 
+def _refuse_a_labelled_row(where, numbers, rows, first_data) -> None:
+    """``ValueError`` when the row taken for the header holds a number under a row of names
+    alone ("Pressure (bar);Force (N)" over "tare;1,5"): a row of the lab's own between the
+    header and the numbers, which would be read as the header, the real one as a title."""
+    def shown(cells) -> str:
+        return ", ".join(repr(str(c).strip()) for c in cells if str(c).strip())
+
+    names = next((k for k in range(first_data - 1, -1, -1)
+                  if not any(_is_number(c) for c in rows[k])), None)
+    if names is None:
+        return
+    k = names + 1
+    raise ValueError(f"{where}, row {numbers[k]} ({shown(rows[k])}) lies between the header "
+                     f"(row {numbers[names]}: {shown(rows[names])}) and the rows of numbers: "
+                     "expected every row under the header to hold a number per column; delete "
+                     "that row (a force read at 0 bar is a row '0;FORCE', or --tare FORCE)")
+
+
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     """The header is the row above the first row with two numbers; rows above it are titles."""
     first_data = next((k for k, cells in enumerate(rows)
@@ -295,6 +313,8 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
         raise ValueError(f"{where} has no header row: expected column names above the numbers "
                          "(pressure, force, ...)")
     header_index = first_data - 1
+    if any(_is_number(c) for c in rows[header_index]):
+        _refuse_a_labelled_row(where, numbers, rows, first_data)
     width = max(len(r) for r in rows[first_data:])
     header = [str(c).strip() for c in rows[header_index]] + [""] * width
     if header_index > 0 and _units_row(header):

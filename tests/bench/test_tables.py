@@ -204,6 +204,22 @@ def test_utf16_without_a_byte_order_mark_is_read(encoding, tmp_path):
     np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5])
 
 
+@pytest.mark.parametrize("text, row", [
+    ("Pressure (bar);Force (N)\ntare;1,5\n0;1,5\n1;100\n", "row 2 ('tare', '1,5')"),
+    ("Run 7\n\nP (bar);F (N)\nZero;0,8\n0,5;40\n1;95\n", "row 4 ('Zero', '0,8')"),
+])
+def test_a_labelled_row_under_the_header_is_named(text, row, tmp_path):
+    # was: that row read as the header, "no pressure or force column among 'tare', '1,5'"
+    path = tmp_path / "lab.csv"
+    path.write_text(text)
+    header = "'Pressure (bar)', 'Force (N)'" if "Pressure" in text else "'P (bar)', 'F (N)'"
+    with pytest.raises(ValueError) as info:
+        read_tables(path)
+    assert str(info.value).startswith(f"lab.csv, {row} lies between the header (row "
+                                      f"{1 if 'Pressure' in text else 3}: {header}) and the "
+                                      "rows of numbers: expected every row under the header")
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
