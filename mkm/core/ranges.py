@@ -179,12 +179,13 @@ def parse_fraction(text: str, name: str = "--eps") -> float:
     message says so (``--eps 12.2: a fraction is expected; did you mean 12.2%?``).
     """
     text = text.strip()
+    forms = "a fraction (0.05) or a percentage (5%)"
     if text.endswith("%"):
-        value = parse_number(text[:-1], name) / 100.0
+        value = parse_number(text[:-1], name, expected=forms) / 100.0
         if not 0.0 <= value < 1.0:
             raise ValueError(f"{name} {text}: a percentage in [0, 100) is expected")
         return value
-    value = parse_number(text, name)
+    value = parse_number(text, name, expected=forms)
     if 1.0 <= value < 100.0:
         raise ValueError(f"{name} {text}: a fraction is expected; did you mean {text}%?")
     if not 0.0 <= value < 1.0:

@@ -89,7 +89,10 @@ def test_a_number_typed_with_a_unit_is_converted_into_the_options():
      r"start:stop:step \(for example 0:8:0\.5\) or a comma list \(0,1,2\.5\), in bar$"),
     (lambda: parse_pressures("0,1,,2"), r"^--pressures '0,1,,2': entry='' is not a number: "
      "expected start:stop:step"),
-    (lambda: parse_fraction("five%"), "--eps='five' is not a number"),
+    (lambda: parse_fraction("five%"), r"^--eps='five' is not a number: expected a fraction "
+     r"\(0\.05\) or a percentage \(5%\)$"),
+    (lambda: parse_fraction("0.1,L0=200", "--require: eps"), r"^--require: eps='0\.1,L0=200' "
+     r"is not a number: expected a fraction \(0\.05\) or a percentage \(5%\)$"),
     # a unit typed after the number: said, not only refused
     (lambda: parse_number("282mm", "--L0"), "--L0='282mm' is not a number: expected the "
                                            "number alone, without 'mm'"),
