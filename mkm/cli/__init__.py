@@ -68,15 +68,22 @@ def _notes(args):
     return show
 
 
-def _check_out_names(out) -> None:
-    """``ValueError`` for an ``--out`` (or ``$MKM_OUT``, where defaults go) naming a file or
-    folder Windows cannot make: said on every system, before any work."""
+#: the arguments naming a file or folder a command writes (by dest), as their messages name them
+WRITTEN = {"out": "--out", "example": "--example", "to": "TO"}
+
+
+def _check_written_names(args) -> None:
+    """``ValueError`` for a path a command writes (``--out``, ``$MKM_OUT`` where its default
+    goes, ``mkm check --example FILE``, ``mkm data copy NAME TO``) that names a file or folder
+    Windows cannot make: said on every system, before any work."""
     from mkm.paths import OUT_ENV, check_path_name
 
-    if os.environ.get(OUT_ENV):
+    if hasattr(args, "out") and os.environ.get(OUT_ENV):
         check_path_name(os.environ[OUT_ENV], OUT_ENV)
-    if out is not None:
-        check_path_name(out)
+    for dest, flag in WRITTEN.items():
+        value = getattr(args, dest, None)
+        if isinstance(value, str) and value != "-":  # "-": stdout
+            check_path_name(value, flag)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -112,8 +119,7 @@ def main(argv: list[str] | None = None) -> int:
         parser.exit(2, error_line(name, f"unrecognized arguments: {' '.join(rest)}: expected "
                                   f"the arguments of `{name} --help`") + "\n")
     try:
-        if hasattr(args, "out"):  # every command that writes: one check of the names it makes
-            _check_out_names(args.out)
+        _check_written_names(args)  # every command that writes: one check of the names
         with warnings.catch_warnings():
             warnings.showwarning = _notes(args)
             return int(args.func(args) or 0)

@@ -687,6 +687,21 @@ def test_a_windows_path_elsewhere_is_refused(out, tmp_path, monkeypatch, mkm_run
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("argv, shown", [
+    (["check", "--example", "CON.toml"], "--example 'CON.toml'"),
+    (["check", "--example", "cfg/a:b.toml"], "--example 'cfg/a:b.toml'"),
+    (["data", "copy", "martens_boblan_2017_forcemaps.csv", "maps?.csv"], "TO 'maps?.csv'"),
+])
+def test_every_path_a_command_writes_is_checked_as_out_is(argv, shown, tmp_path, monkeypatch,
+                                                          mkm_run):
+    # was: CON.toml, a:b.toml and maps?.csv written here, none of them a file on Windows
+    monkeypatch.chdir(tmp_path)
+    code, stdout, err = mkm_run(argv)
+    assert code == 2 and stdout == "" and err.count("\n") == 1, err
+    assert f"error: {shown} is not a path Windows can make (" in err
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_a_bad_mkm_out_is_named(tmp_path, monkeypatch, mkm_run):
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("MKM_OUT", "lab?runs")
