@@ -53,6 +53,7 @@ from mkm.bench.tables import (
     sheet_names,
     without_blank_rows,
 )
+from mkm.core.ranges import parse_number
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
 from mkm.fem.limits import PRACTICAL_RANGE, check_value
 
@@ -81,18 +82,17 @@ ZERO_LIMITS = {"--tare": (-MAX_CAPACITY_N, MAX_CAPACITY_N,
                             "a pressure sensor's offset below zero, the practical range above")}
 
 
+#: what a given zero may look like typed with its unit (for the messages)
+ZERO_EXAMPLES = {"N": "1.5N or 0.2kgf", "bar": "0.02bar or 1013mbar"}
+
+
 def parse_zero(text: str | float | None, option: str, unit: str) -> str | float:
-    """``auto``, ``none`` or a number (``--tare 3.2``, ``--vented 0.6``) within
-    :data:`ZERO_LIMITS`."""
+    """``auto``, ``none`` or a number within :data:`ZERO_LIMITS`, typed as the other options'
+    (``--tare 3.2``, ``1,5``, ``0.2kgf``; ``--vented 0.6``, ``1013mbar``)."""
     if text is None or text in ZERO_CHOICES:
         return text or "auto"
-    try:
-        value = float(text)
-    except (TypeError, ValueError):
-        raise ValueError(f"{option} {text!r} is invalid: expected auto, none or a number "
-                         f"[{unit}]") from None
-    if not math.isfinite(value):
-        raise ValueError(f"{option} {text!r} is invalid: expected a finite number [{unit}]")
+    value = parse_number(str(text), option, unit, f"auto, none or a number in {unit}, or one "
+                         f"with a unit such as {ZERO_EXAMPLES[unit]}")
     low, high, why = ZERO_LIMITS.get(option, (-math.inf, math.inf, ""))
     if not low <= value <= high:
         raise ValueError(f"{option} {text!r} is invalid: expected a number in [{low:g}, "

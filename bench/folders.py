@@ -8,6 +8,7 @@ shell expands it), so every command that takes run folders passes its arguments 
 from __future__ import annotations
 
 import glob
+import os
 import re
 from pathlib import Path
 
@@ -38,6 +39,14 @@ def _children(folder: Path) -> list[Path]:
                   key=run_order)
 
 
+def _separator_hint(argument: str) -> str:
+    """What a Windows path typed on another system needs ("runs\\R": one name here)."""
+    if os.sep != "/" or "\\" not in argument:
+        return ""
+    posix = argument.replace("\\", "/")
+    return f"; on this system folders are separated by /: {posix!r}?"
+
+
 def run_folders(arguments) -> list[Path]:
     """The run folders ``arguments`` name, in order, each once.
 
@@ -64,7 +73,7 @@ def run_folders(arguments) -> list[Path]:
             if not found:
                 raise ValueError(f"{argument} matches no run folder ({len(matches)} match(es) "
                                  f"without {RUN_RECORD}): expected run folders of mkm acquire "
-                                 "or mkm import")
+                                 f"or mkm import{_separator_hint(argument)}")
             out += found
             continue
         path = Path(argument)
@@ -74,6 +83,8 @@ def run_folders(arguments) -> list[Path]:
                 raise ValueError(f"{path} is not a run folder ({RUN_RECORD} is missing) and "
                                  "holds none: expected a run folder or a folder of them")
             out += inside
+        elif not path.exists() and _separator_hint(argument):
+            raise ValueError(f"{argument}: no such folder{_separator_hint(argument)}")
         elif path.is_file() and path.name == RUN_RECORD:
             out.append(path.parent)  # a run's record stands for its folder
         elif path.is_file():

@@ -145,6 +145,9 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
         raise ValueError(f"{path} cannot be read ({exc.strerror or exc})") from None
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text" is UTF-16
         text = data.decode("utf-16", errors="replace")
+    elif b"\x00" in data[:2]:  # UTF-16 without its byte order mark (a logger's, a script's)
+        text = data.decode("utf-16-le" if data[1:2] == b"\x00" else "utf-16-be",
+                           errors="replace")
     else:
         try:
             text = data.decode("utf-8-sig")
@@ -280,6 +283,24 @@ def _units_row(cells: list[str]) -> bool:
                                for u in units)
 
 
+def _refuse_a_labelled_row(where, numbers, rows, first_data) -> None:
+    """``ValueError`` when the row taken for the header holds a number under a row of names
+    alone ("Pressure (bar);Force (N)" over "tare;1,5"): a row of the lab's own between the
+    header and the numbers, which would be read as the header, the real one as a title."""
+    def shown(cells) -> str:
+        return ", ".join(repr(str(c).strip()) for c in cells if str(c).strip())
+
+    names = next((k for k in range(first_data - 1, -1, -1)
+                  if not any(_is_number(c) for c in rows[k])), None)
+    if names is None:
+        return
+    k = names + 1
+    raise ValueError(f"{where}, row {numbers[k]} ({shown(rows[k])}) lies between the header "
+                     f"(row {numbers[names]}: {shown(rows[names])}) and the rows of numbers: "
+                     "expected every row under the header to hold a number per column; delete "
+                     "that row (a force read at 0 bar is a row '0;FORCE', or --tare FORCE)")
+
+
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     """The header is the row above the first row with two numbers; rows above it are titles."""
     first_data = next((k for k, cells in enumerate(rows)
@@ -292,6 +313,8 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
         raise ValueError(f"{where} has no header row: expected column names above the numbers "
                          "(pressure, force, ...)")
     header_index = first_data - 1
+    if any(_is_number(c) for c in rows[header_index]):
+        _refuse_a_labelled_row(where, numbers, rows, first_data)
     width = max(len(r) for r in rows[first_data:])
     header = [str(c).strip() for c in rows[header_index]] + [""] * width
     if header_index > 0 and _units_row(header):
@@ -309,7 +332,9 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
 
 # --- recognising ------------------------------------------------------------------------------
 
-_BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}]*)[)\]}]\s*$")
+# the unit may hold one parenthesis of its own: "Pressure [bar(g)]"
+_BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}(]*(?:\([^)]*\))?[^)\]}]*)"
+                        r"[)\]}]\s*$")
 _WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
 
 
@@ -337,10 +362,17 @@ LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", 
              "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
 
 
+#: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü)
+_GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi)\s*(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))",
+                    re.IGNORECASE)
+
+
 def parse_unit(text: str):
     """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
     case as written, then any case)."""
     text = text.strip()
+    if gauge := _GAUGE.fullmatch(text):  # the toolkit's pressures are gauge pressures
+        text = gauge.group("unit")
     if text.lower() in LAB_UNITS:
         return registry().Unit(LAB_UNITS[text.lower()])
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):

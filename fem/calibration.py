@@ -112,13 +112,18 @@ class Calibration:
         return self.entries[key]
 
 
+#: what a calibration file that cannot be read was expected to be
+WANTED = (": expected the calibration.json mkm identify writes or the file of mkm fem calibrate "
+          "--out FILE")
+
+
 @cache
 def _read(path: Path, mtime_ns: int) -> dict:
     try:
         # utf-8-sig: a file edited and saved by a Windows editor starts with a BOM
         entries = json.loads(path.read_text(encoding="utf-8-sig"))
     except OSError as exc:
-        raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}") from None
+        raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}{WANTED}") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise ValueError(f"calibration {path}: not valid JSON: {exc}") from None
     except RecursionError:
@@ -159,7 +164,7 @@ def _load(path: Path) -> dict:
     try:
         mtime = path.stat().st_mtime_ns
     except OSError as exc:
-        raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}") from None
+        raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}{WANTED}") from None
     return _read(path, mtime)
 
 

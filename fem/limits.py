@@ -36,8 +36,8 @@ LIMITS: dict[str, tuple[float, float, str, str]] = {
 #: the upper bound of these is excluded (eps = 1 is a muscle of zero length)
 OPEN_ABOVE = frozenset({"eps"})
 # A muscle id names the run folder and labels figures and reports: no path separators, no
-# markup, no spreadsheet formula, no mathtext.
-MUSCLE_ID_PATTERN = r"[A-Za-z0-9][A-Za-z0-9._+-]{0,63}"
+# markup, no spreadsheet formula, no mathtext; no trailing dot, which Windows drops from a name.
+MUSCLE_ID_PATTERN = r"[A-Za-z0-9](?:[A-Za-z0-9._+-]{0,62}[A-Za-z0-9_+-])?"
 
 
 def limit_text(name: str) -> str:
@@ -81,8 +81,8 @@ def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
         text = value if isinstance(value, str) else repr(value)
         shown = repr(text if len(text) <= 40 else text[:40] + "...")
         raise ValueError(f"{where}={shown} ({len(text)} characters) is invalid: expected 1 to "
-                         "64 letters, digits or . _ + - (it names the run folder and labels "
-                         "figures)")
+                         "64 letters, digits or . _ + -, not ending in '.' (it names the run "
+                         "folder and labels figures)")
     return value
 
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import os
 import re
-from pathlib import Path
+from pathlib import Path, PureWindowsPath
 
 from mkm.core.home import user_cache
 
@@ -116,6 +116,53 @@ def command_argument(path: str | os.PathLike) -> str:
     treats specially (``C:\\Users\\Lab PC\\mkm-out\\runs\\R``), else as it is."""
     text = str(path)
     return f'"{text}"' if not text or _SHELL_SPECIAL.search(text) else text
+
+
+# what Windows refuses in a file or folder name: these characters (":" opens an NTFS alternate
+# data stream), a trailing dot or space (silently dropped), a device name with any extension
+_WINDOWS_FORBIDDEN = re.compile(r'[<>:"|?*\x00-\x1f]')
+_WINDOWS_DEVICE = re.compile(r"(CON|PRN|AUX|NUL|COM[1-9]|LPT[1-9])(\..*)?", re.IGNORECASE)
+
+
+def windows_name_problem(name: str) -> str | None:
+    """Why Windows cannot make a file or folder named ``name`` (one path component), or None."""
+    if name in (".", ".."):
+        return None
+    bad = _WINDOWS_FORBIDDEN.search(name)
+    if bad:
+        return f"{bad.group()!r} in {name!r}"
+    if name.endswith((".", " ")):
+        return f"{name!r} ends in {name[-1]!r}"
+    if _WINDOWS_DEVICE.fullmatch(name.rstrip(" ")):
+        return f"{name!r} is a device name"
+    return None
+
+
+#: whether this system is Windows (where a backslash separates folders)
+WINDOWS = os.name == "nt"
+
+
+def check_path_name(path: str | os.PathLike, flag: str = "--out") -> str:
+    """``path`` if every folder and file name in it is one Windows can make, else ``ValueError``
+    naming the value and the rule: checked on every system, so a command line or run folder
+    that works here works on a lab's Windows PC too. An absolute Windows path (``C:\\...``, a
+    ``\\\\server\\share``) keeps its anchor; ``a:b`` is a name with a colon, not a drive. Elsewhere
+    a Windows path (a drive letter, a backslash) is refused too: it would name one file here."""
+    text = os.fspath(path)
+    windows = PureWindowsPath(text)
+    names = windows.parts[1:] if windows.root else re.split(r"[\\/]", text)
+    problem = next(filter(None, map(windows_name_problem, names)), None)
+    if problem:
+        raise ValueError(f"{flag} {text!r} is not a path Windows can make ({problem}): expected "
+                         'folder and file names without < > : " | ? * or control characters, '
+                         "not ending in a dot or space, and not CON, PRN, AUX, NUL, COM1-9 or "
+                         "LPT1-9 (with or without an extension)")
+    if not WINDOWS and (re.match(r"[A-Za-z]:", text) or "\\" in text):
+        # here a backslash is part of a name: "C:\\Users\\lab\\out" would be one file in the
+        # working folder
+        raise ValueError(f"{flag} {text!r} is a Windows path: expected a path of this system, "
+                         "folders separated by / (such as mkm-out/runs or /home/lab/mkm-out)")
+    return text
 
 
 def check_writable(out: str | os.PathLike, folder: bool = False) -> Path:

@@ -68,6 +68,24 @@ def _notes(args):
     return show
 
 
+#: the arguments naming a file or folder a command writes (by dest), as their messages name them
+WRITTEN = {"out": "--out", "example": "--example", "to": "TO"}
+
+
+def _check_written_names(args) -> None:
+    """``ValueError`` for a path a command writes (``--out``, ``$MKM_OUT`` where its default
+    goes, ``mkm check --example FILE``, ``mkm data copy NAME TO``) that names a file or folder
+    Windows cannot make: said on every system, before any work."""
+    from mkm.paths import OUT_ENV, check_path_name
+
+    if hasattr(args, "out") and os.environ.get(OUT_ENV):
+        check_path_name(os.environ[OUT_ENV], OUT_ENV)
+    for dest, flag in WRITTEN.items():
+        value = getattr(args, dest, None)
+        if isinstance(value, str) and value != "-":  # "-": stdout
+            check_path_name(value, flag)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="mkm", description="McKibben muscle bench toolkit: acquire forces, "
                      "predict them with physics and surrogate models, validate.")
@@ -101,6 +119,7 @@ def main(argv: list[str] | None = None) -> int:
         parser.exit(2, error_line(name, f"unrecognized arguments: {' '.join(rest)}: expected "
                                   f"the arguments of `{name} --help`") + "\n")
     try:
+        _check_written_names(args)  # every command that writes: one check of the names
         with warnings.catch_warnings():
             warnings.showwarning = _notes(args)
             return int(args.func(args) or 0)

@@ -34,6 +34,9 @@ def _masses(text: str) -> list[float]:
     values = [parse_number(t, "--masses", "kg") for t in text.split(",")]
     if any(v < 0 for v in values):
         raise ValueError(f"--masses {text!r} has a negative mass: expected kg >= 0")
+    if len(set(values)) < 2:  # said before the operator hangs the first mass
+        raise ValueError(f"--masses {text!r} holds one mass: expected at least two different "
+                         "masses for a sensitivity (0,5,10,20)")
     return values
 
 

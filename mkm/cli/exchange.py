@@ -50,10 +50,12 @@ def register(subparsers) -> None:
                      help="the muscle to import where the table's muscle column holds several")
     imp.add_argument("--tare", default="auto", metavar="auto|none|N",
                      help="the force's zero: the force at the lowest pressure of the rising "
-                     "branch (auto; only when that pressure is 0 bar), none, or a value [N]")
+                     "branch (auto; only when that pressure is 0 bar), none, or a value [N] "
+                     "(or with its unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series: "
-                     "detected at its start (auto), none, or a value [bar]")
+                     "detected at its start (auto), none, or a value [bar] (or with its unit: "
+                     "1013mbar)")
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "
                      "and the sensor's data sheet, or the table's stated accuracy): a value "

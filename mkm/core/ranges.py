@@ -24,14 +24,19 @@ MAX_RANGE_VALUES = 10_000
 ASCII_DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
 
 
-def parse_number(text: str, name: str, unit: str | None = None) -> float:
+def parse_number(text: str, name: str, unit: str | None = None,
+                 expected: str | None = None) -> float:
     """``text`` as a finite float, in ASCII decimal notation only (:data:`ASCII_DECIMAL`); a
     decimal comma (``12,2``, as a European keyboard types it) is read as a decimal point.
 
     ``unit``: the unit of the option (``"mm"``, ``"bar"``, ``"deg"``); a number typed with a
     unit (``282mm``, ``1.5in``, ``250kPa``, ``30deg``) is converted into it by pint, and a
     unit of another kind is refused naming both. Without ``unit`` a unit typed is refused with
-    a hint."""
+    a hint. ``expected``: what the message of a text that is no number says is expected
+    (default: a number in ``unit``)."""
+    expected = expected or (f"a number in {unit}, or one with a unit such as "
+                            f"{UNIT_EXAMPLES.get(unit, unit)}" if unit is not None else "")
+    wanted = f": expected {expected}" if expected else ""
     cleaned = str(text).strip()
     if cleaned.count(",") == 1 and "." not in cleaned:
         cleaned = cleaned.replace(",", ".")
@@ -44,10 +49,10 @@ def parse_number(text: str, name: str, unit: str | None = None) -> float:
         value = float(cleaned)
     except (TypeError, ValueError):
         hint = (f": expected the number alone, without {with_unit.group(2)!r} (in the unit "
-                "the name or --help gives)" if with_unit else "")
+                "the name or --help gives)" if with_unit else wanted)
         raise ValueError(f"{name}={text!r} is not a number{hint}") from None
     if not math.isfinite(value):
-        raise ValueError(f"{name}={text!r} is not a finite number")
+        raise ValueError(f"{name}={text!r} is not a finite number{wanted}")
     if not ASCII_DECIMAL.fullmatch(cleaned.strip(" \t\r\n")):
         raise ValueError(f"{name}={text!r} is not a number in ASCII decimal notation: "
                          "expected digits 0-9, one point, an optional exponent (2.5e-1)")
@@ -144,12 +149,9 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
             raise ValueError(f"{name} is empty: expected start:stop:step or a comma list")
         parts = text.split(",")
         label = f"{name} {text!r}: entry" if len(parts) > 1 else name
-        try:
-            values = np.array([parse_number(p, label, "bar") for p in parts])
-        except ValueError as exc:  # '0-8', '0,1,,2': the whole text and the forms it may take
-            raise ValueError(str(exc) if "expected" in str(exc) else
-                             f"{exc}: expected start:stop:step (for example 0:8:0.5) or a comma "
-                             "list (0,1,2.5), in bar") from None
+        # '0-8', '0,1,,2': the whole text and the forms it may take
+        forms = "start:stop:step (for example 0:8:0.5) or a comma list (0,1,2.5), in bar"
+        values = np.array([parse_number(p, label, "bar", forms) for p in parts])
     if (values < 0).any():
         raise ValueError(f"{name} {text!r} has a negative pressure "
                          f"{values[values < 0][0]:g} bar: expected gauge pressures >= 0")
@@ -177,12 +179,13 @@ def parse_fraction(text: str, name: str = "--eps") -> float:
     message says so (``--eps 12.2: a fraction is expected; did you mean 12.2%?``).
     """
     text = text.strip()
+    forms = "a fraction (0.05) or a percentage (5%)"
     if text.endswith("%"):
-        value = parse_number(text[:-1], name) / 100.0
+        value = parse_number(text[:-1], name, expected=forms) / 100.0
         if not 0.0 <= value < 1.0:
             raise ValueError(f"{name} {text}: a percentage in [0, 100) is expected")
         return value
-    value = parse_number(text, name)
+    value = parse_number(text, name, expected=forms)
     if 1.0 <= value < 100.0:
         raise ValueError(f"{name} {text}: a fraction is expected; did you mean {text}%?")
     if not 0.0 <= value < 1.0:

@@ -19,6 +19,7 @@ from mkm.design.search import (
     box_edges,
     box_text,
     geometry_text,
+    outside_practical_range,
     pick,
     search,
 )
@@ -32,7 +33,6 @@ from mkm.design.spec import (
 )
 from mkm.design.verify import verify
 from mkm.fem.calibration import Calibration
-from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.muscle import Muscle
 
 # --- the API ------------------------------------------------------------------------------------
@@ -101,7 +101,7 @@ class DesignResult:
                              f"% of a required force ({s.uncertainty}): the chosen design pulls "
                              "about that much more than required (its FE margin); a surrogate "
                              "with a predictive std (the default) searches closer")
-        if best is not None and (outside := _outside_practical_range(best, s.requirements)):
+        if best is not None and (outside := outside_practical_range(best, s.requirements)):
             notes.append(f"the chosen design lies outside the practical range every model is "
                          f"validated over ({'; '.join(outside)}): its FE verification is an "
                          "extrapolation (`mkm models` states the range)")
@@ -122,17 +122,6 @@ class DesignResult:
                                       "min_fe_margin_pct": "FE_margin_%",
                                       "meets_all": "meets"})
         return shown.to_string(index=False, float_format=lambda v: f"{v:.4g}")
-
-
-def _outside_practical_range(best, requirements) -> list[str]:
-    """What of the design ``best`` (a row) and the requirements it is held to lies outside
-    :data:`~mkm.fem.limits.PRACTICAL_RANGE`, one phrase each; empty inside."""
-    geometry = {k: float(best[k]) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg")}
-    found = PRACTICAL_RANGE.violations(**geometry)
-    for req in requirements:
-        found += PRACTICAL_RANGE.violations(pressure_bar=req.pressure_bar, eps=req.eps,
-                                            theta0_deg=geometry["theta0_deg"])
-    return list(dict.fromkeys(found))
 
 
 #: A searching margin above this share of a required force is said (:meth:`DesignResult.notes`)

@@ -10,7 +10,7 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 
-from mkm.auto import RANGE_SPEC, REFERENCE_SPEC
+from mkm.auto import RANGE_SPEC, RANGE_STD_FACTOR, REFERENCE_SPEC, STD_FACTOR
 from mkm.design.robust import describe, requirement_margin
 from mkm.design.spec import (
     DEFAULT_RUBBER,
@@ -27,6 +27,7 @@ from mkm.fem.limits import PRACTICAL_RANGE, limit_text, outside
 from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import outer_diameter_mm
 from mkm.registry import parse_spec
+from mkm.surrogate import kinds
 
 #: Search resolution: a coarse grid of 0.5 mm in D0 and 0.1 mm in t0 (the paper's box, 20 x
 #: 2 mm: 41 x 21 = 861 candidates per family), refined to 0.05 mm and 0.01 mm over the coarse
@@ -35,10 +36,10 @@ from mkm.registry import parse_spec
 COARSE_STEPS, D0_STEP_MM, T0_STEP_MM, SEEDS, AXIS_VALUES = (0.5, 0.1), 0.05, 0.01, 8, 5
 #: Verified designs differ by at least 5 % of the box span in some searched parameter.
 MIN_SEPARATION = 0.05
-#: Surrogate uncertainty: 3 predictive standard deviations when the surrogate gives them (the
-#: default surrogate records 95 % of held-out muscles' points within 2: within_2std), else
-#: twice the largest held-out error recorded at training, else 5 % of the required force.
-STD_FACTOR, RECORDED_ERROR_FACTOR, FALLBACK_RELATIVE_MARGIN = 3.0, 2.0, 0.05
+#: Surrogate uncertainty: the predictive standard deviation times auto's factor of the kind
+#: (:func:`std_factor`), else twice the largest held-out error recorded at training, else 5 %
+#: of the required force.
+RECORDED_ERROR_FACTOR, FALLBACK_RELATIVE_MARGIN = 2.0, 0.05
 
 
 #: Where the surrogate was not trained (a requirement above its pressures or outside its eps,
@@ -69,12 +70,19 @@ def rubber_volume_cm3(D0_mm, t0_mm, L0_mm):
     return np.pi * np.asarray(t0_mm) * (np.asarray(D0_mm) + np.asarray(t0_mm)) * L0_mm / 1e3
 
 
+def std_factor(model: ForceModel) -> float:
+    """How many of ``model``'s predictive standard deviations bound its error: the factor
+    :mod:`mkm.auto` bounds the same surrogate with, :data:`mkm.auto.RANGE_STD_FACTOR` for the
+    practical range's (its std is heavy-tailed per call), else :data:`mkm.auto.STD_FACTOR`."""
+    return RANGE_STD_FACTOR if getattr(model, "kind", None) == kinds.RANGE else STD_FACTOR
+
+
 def surrogate_uncertainty(model: ForceModel, prediction, force_N: float) -> tuple[np.ndarray,
                                                                                    str]:
     """Margin [N] the surrogate's force must clear a requirement by, and how it was obtained.
 
-    ``STD_FACTOR`` predictive standard deviations (``force_std_N``) when the surrogate gives
-    them; else ``RECORDED_ERROR_FACTOR`` times the largest held-out error recorded when it was
+    :func:`std_factor` predictive standard deviations (``force_std_N``) when the surrogate
+    gives them; else ``RECORDED_ERROR_FACTOR`` times the largest held-out error recorded when it was
     trained (``metadata["metrics"]``: 80/20 splits and the off-grid test muscles); else
     ``FALLBACK_RELATIVE_MARGIN`` of the required force.
     """
@@ -84,8 +92,9 @@ def surrogate_uncertainty(model: ForceModel, prediction, force_N: float) -> tupl
         covered = margin.within_2std if margin is not None else None
         told = (f"; held-out muscles within 2 std: {100 * covered:.0f} %"
                 if covered is not None else "")
-        return (STD_FACTOR * np.asarray(prediction.extras["force_std_N"], dtype=float),
-                f"{STD_FACTOR:g} x the surrogate's predictive standard deviation{told}")
+        factor = std_factor(model)
+        return (factor * np.asarray(prediction.extras["force_std_N"], dtype=float),
+                f"{factor:g} x the surrogate's predictive standard deviation{told}")
     if margin is not None and margin.worst_abs_error_N is not None:
         worst = margin.worst_abs_error_N
         return (np.full(shape, RECORDED_ERROR_FACTOR * worst),
@@ -539,6 +548,26 @@ def geometry_text(row) -> str:
     return text + f", L0 = {row['L0_mm']:.4g} mm, theta0 = {row['theta0_deg']:.4g} deg"
 
 
+def outside_practical_range(best, requirements) -> list[str]:
+    """What of the design ``best`` (a row) and the requirements it is held to lies outside
+    :data:`~mkm.fem.limits.PRACTICAL_RANGE`, one phrase each; empty inside."""
+    geometry = {k: float(best[k]) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg")}
+    found = PRACTICAL_RANGE.violations(**geometry)
+    for req in requirements:
+        found += PRACTICAL_RANGE.violations(pressure_bar=req.pressure_bar, eps=req.eps,
+                                            theta0_deg=geometry["theta0_deg"])
+    return list(dict.fromkeys(found))
+
+
+def _beyond_practical_range(row, requirements) -> str:
+    """The clause an infeasible search's message ends with when ``row`` lies outside the
+    practical range (where no model's force is validated), else empty."""
+    outside = outside_practical_range(row, requirements)
+    return (f"; it lies outside the practical range the models are validated over "
+            f"({'; '.join(outside)}): its forces are an extrapolation (`mkm models` states "
+            "the range)" if outside else "")
+
+
 def _infeasible_message(result: Search, constraints: Constraints) -> str:
     cand = result.candidates
     if cand["meets_forces"].any():  # only the housing is in the way
@@ -546,7 +575,8 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         return (f"infeasible: no design meets every requirement within max_outer_diameter_mm="
                 f"{constraints.max_outer_diameter_mm:g}: the narrowest that does, "
                 f"{geometry_text(best)}, is {best['outer_diameter_mm']:.1f} mm wide at "
-                f"{result.working_pressure_bar:g} bar")
+                f"{result.working_pressure_bar:g} bar"
+                + _beyond_practical_range(best, result.requirements))
     pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
     closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]
     parts = []
@@ -558,7 +588,7 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force"))
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
-            + "; ".join(parts))
+            + "; ".join(parts) + _beyond_practical_range(closest, result.requirements))
 
 
 def pick(feasible: pd.DataFrame, top: int, box: dict) -> pd.DataFrame:

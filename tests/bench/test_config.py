@@ -208,8 +208,9 @@ def test_rse_allows_every_input():
     assert c.ai_channels == ["ai0", "ai7"]
 
 
+# "m1." names a folder "..._m1." that Windows makes as "..._m1"
 @pytest.mark.parametrize("muscle_id", ["x" * 300, "a\nb", "a\tb", "a b", "$F_{max}$", "../up",
-                                       ""])
+                                       "", "m1."])
 def test_muscle_ids_that_cannot_name_a_folder_or_a_label(muscle_id):
     text = BASE.replace('id = "m1"', f"id = {muscle_id!r}".replace("'", '"')
                         .replace("\n", "\\n").replace("\t", "\\t"))

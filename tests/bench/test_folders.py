@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import os
+from pathlib import Path
+
 import pytest
 
 from mkm.bench.folders import one_run_folder, run_folders
@@ -76,3 +79,16 @@ def test_runs_of_one_second_come_in_the_order_they_were_made(tmp_path):
     by_id = run_folders([str(tmp_path / "runs" / "*lab-7*")])
     assert by_id == [runs[4], runs[5]]
     assert run_folders([tmp_path / "runs"])[-1] == runs[-1]  # the next second after them
+
+
+@pytest.mark.skipif(os.sep != "/", reason="a backslash separates folders on Windows")
+@pytest.mark.parametrize("argument", ["runs\\*", "runs\\20260101T000000Z_m"])
+def test_a_windows_path_elsewhere_says_the_separator(argument, tmp_path, monkeypatch):
+    # was: "runs\* matches no run folder" and "runs\R: no such folder", the run right there
+    _runs(tmp_path / "runs", "20260101T000000Z_m")
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(ValueError) as info:
+        run_folders([argument])
+    posix = argument.replace("\\", "/")
+    assert str(info.value).endswith(f"; on this system folders are separated by /: {posix!r}?")
+    assert run_folders([posix]) == [Path("runs/20260101T000000Z_m")]

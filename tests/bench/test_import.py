@@ -561,6 +561,34 @@ def test_a_given_zero_no_lab_could_mean_is_refused(argv, message, tmp_path, mkm_
     assert not (tmp_path / "runs").exists()
 
 
+@pytest.mark.parametrize("argv, tare_N, vented_bar", [
+    # the record reads 0.03 bar vented (found by --vented auto)
+    (["--tare", "1,5"], 1.5, 0.03), (["--tare", "0.2kgf"], 1.96133, 0.03),
+    (["--tare", "-2 N", "--vented", "20mbar"], -2.0, 0.02), (["--vented", "0,01"], 12.0, 0.01),
+])
+def test_a_given_zero_is_typed_as_the_other_options(argv, tare_N, vented_bar, tmp_path,
+                                                     mkm_cli):
+    # a decimal comma or a unit, which --D0 and --eps take, was refused: "--tare '1,5' is
+    # invalid: expected auto, none or a number [N]"
+    t = np.arange(0.0, 20.0, 0.1)
+    p = np.interp(t, [0, 5, 10, 15, 20], [0.0, 0.0, 2.5, 0.0, 0.0]) + 0.03
+    path = tmp_path / "record.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p, "F (N)": 400.0 * p}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", *argv)
+    handling = run.meta.imported_from
+    assert handling["tare_N"] == pytest.approx(tare_N, rel=1e-6)
+    assert handling["vented_reading_bar"] == pytest.approx(vented_bar, rel=1e-6)
+
+
+def test_a_given_zero_that_is_no_number_says_what_is_taken(tmp_path, mkm_cli):
+    path = tmp_path / "record.csv"
+    path.write_text("P (bar),F (N)\n0,0\n1,100\n")
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0.1", "--tare", "zero"])
+    assert code == 2 and err == ("mkm import: error: --tare='zero' is not a number: expected "
+                                 "auto, none or a number in N, or one with a unit such as 1.5N "
+                                 "or 0.2kgf\n")
+
+
 @pytest.mark.parametrize("text, expected", [
     ("force=0.5N+1%", {"force": (0.5, 0.01)}),
     ("force=0.1 kgf,pressure=10kPa", {"force": (0.980665, 0.0), "pressure": (0.1, 0.0)}),

@@ -125,6 +125,18 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.5], rtol=1e-12)
 
 
+@pytest.mark.parametrize("header, bar_per_unit", [
+    ("Pressure [bar(g)]", 1.0), ("Pressure (bar g)", 1.0), ("Druck [bar(ü)]", 1.0),
+    ("Pressure (kPa (g))", 0.01), ("p [psi gauge]", PSI_BAR), ("p_psig", PSI_BAR),
+])
+def test_a_pressure_marked_gauge_is_read_in_its_unit(header, bar_per_unit, tmp_path):
+    # bar(g) was "no pressure column among 'Pressure [bar(g)]'", bar g "not a unit of pressure"
+    table, found = _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
+    assert found["pressure"].header == header
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
                         "Kontraktion (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
@@ -179,6 +191,33 @@ def test_excels_unicode_text_is_utf16(tmp_path):
     assert (table.separator, table.decimal) == ("\t", ",")
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
     np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5])
+
+
+@pytest.mark.parametrize("encoding", ["utf-16-le", "utf-16-be"])
+def test_utf16_without_a_byte_order_mark_is_read(encoding, tmp_path):
+    # was: "export.txt has no row of numbers" (read as Latin-1, a NUL between every letter)
+    path = tmp_path / "export.txt"
+    path.write_bytes("Druck [bar]\tKraft [N]\r\n0\t0\r\n1,5\t150,5\r\n".encode(encoding))
+    (table,) = read_tables(path)
+    found = recognise(table)
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 150.5])
+
+
+@pytest.mark.parametrize("text, row", [
+    ("Pressure (bar);Force (N)\ntare;1,5\n0;1,5\n1;100\n", "row 2 ('tare', '1,5')"),
+    ("Run 7\n\nP (bar);F (N)\nZero;0,8\n0,5;40\n1;95\n", "row 4 ('Zero', '0,8')"),
+])
+def test_a_labelled_row_under_the_header_is_named(text, row, tmp_path):
+    # was: that row read as the header, "no pressure or force column among 'tare', '1,5'"
+    path = tmp_path / "lab.csv"
+    path.write_text(text)
+    header = "'Pressure (bar)', 'Force (N)'" if "Pressure" in text else "'P (bar)', 'F (N)'"
+    with pytest.raises(ValueError) as info:
+        read_tables(path)
+    assert str(info.value).startswith(f"lab.csv, {row} lies between the header (row "
+                                      f"{1 if 'Pressure' in text else 3}: {header}) and the "
+                                      "rows of numbers: expected every row under the header")
 
 
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):

@@ -160,7 +160,9 @@ def test_a_calibration_is_a_value_given_to_the_models_that_take_it(tmp_path):
 
 
 @pytest.mark.parametrize(("text", "message"), [
-    (None, "cannot read it"), ("{", "not valid JSON"),
+    # the system's words for a missing file, then what was expected (was: the words alone)
+    (None, "cannot read it: .+: expected the calibration.json mkm identify writes or the file "
+     "of mkm fem calibrate --out FILE$"), ("{", "not valid JSON"),
     ('{"axisym": {"rmse_N": 1}}', "entry 'axisym' has no theta0_deg"),
     ('{"eq2-inner": {"theta0_deg": null}}', "entry 'eq2-inner' has theta0_deg='None': expected "
      "a finite number"),

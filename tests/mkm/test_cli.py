@@ -634,6 +634,82 @@ def test_an_out_path_the_command_cannot_use_is_one_line(argv, said, tmp_path, mk
     assert taken.read_text() == "a lab's file\n"
 
 
+@pytest.mark.parametrize("argv", [
+    ["acquire", "--backend", "sim"], ["design", "--require", "300N@2.5bar,eps=0.1"],
+    ["report", str(RUN_DIR), "--models", "eq2", "--no-cache"], ["export", str(RUN_DIR)],
+    ["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05"],
+])
+@pytest.mark.parametrize("out, said", [
+    ("runs/a:b", "(':' in 'a:b')"),  # an NTFS alternate data stream of "runs/a"
+    ("x/CON", "('CON' is a device name)"), ("lpt1.csv", "('lpt1.csv' is a device name)"),
+    ("runs.", "('runs.' ends in '.')"), ("runs ", "('runs ' ends in ' ')"),
+    ("a|b", "('|' in 'a|b')"), ("a\x01b", r"('\x01' in 'a\x01b')"),
+])
+def test_an_out_windows_cannot_make_is_refused_on_every_system(argv, out, said, tmp_path,
+                                                                  monkeypatch, mkm_run):
+    monkeypatch.chdir(tmp_path)
+    code, stdout, err = mkm_run([*argv, "--out", out])
+    assert code == 2 and stdout == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert f"--out {out!r} is not a path Windows can make {said}: expected folder and file " \
+        "names without" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("out", ["C:\\Users\\lab\\mkm-out", "\\\\server\\share\\runs",
+                                 "C:/Users/lab/mkm-out", "../mkm-out/./runs", "Łódź lab/runs"])
+def test_paths_windows_makes_pass_the_name_check(out, monkeypatch):
+    from mkm import paths
+
+    monkeypatch.setattr(paths, "WINDOWS", True)
+    assert paths.check_path_name(out) == out
+
+
+@pytest.mark.parametrize("out", ["/home/lab/mkm-out/runs", "//server/share/runs", "../a b/runs"])
+def test_posix_paths_pass_the_name_check(out, monkeypatch):
+    from mkm import paths
+
+    monkeypatch.setattr(paths, "WINDOWS", False)
+    assert paths.check_path_name(out) == out
+
+
+@pytest.mark.parametrize("out", ["C:\\Users\\lab\\out", "runs\\eps12", "C:/Users/lab/out"])
+def test_a_windows_path_elsewhere_is_refused(out, tmp_path, monkeypatch, mkm_run):
+    # was: one file named "C:\Users\lab\out" written in the working folder
+    from mkm import paths
+
+    monkeypatch.setattr(paths, "WINDOWS", False)
+    monkeypatch.chdir(tmp_path)
+    code, stdout, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
+                                 "--eps", "0.05", "--out", out])
+    assert code == 2 and stdout == "" and err == (
+        f"mkm fem solve: error: --out {out!r} is a Windows path: expected a path of this "
+        "system, folders separated by / (such as mkm-out/runs or /home/lab/mkm-out)\n")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("argv, shown", [
+    (["check", "--example", "CON.toml"], "--example 'CON.toml'"),
+    (["check", "--example", "cfg/a:b.toml"], "--example 'cfg/a:b.toml'"),
+    (["data", "copy", "martens_boblan_2017_forcemaps.csv", "maps?.csv"], "TO 'maps?.csv'"),
+])
+def test_every_path_a_command_writes_is_checked_as_out_is(argv, shown, tmp_path, monkeypatch,
+                                                          mkm_run):
+    # was: CON.toml, a:b.toml and maps?.csv written here, none of them a file on Windows
+    monkeypatch.chdir(tmp_path)
+    code, stdout, err = mkm_run(argv)
+    assert code == 2 and stdout == "" and err.count("\n") == 1, err
+    assert f"error: {shown} is not a path Windows can make (" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_bad_mkm_out_is_named(tmp_path, monkeypatch, mkm_run):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("MKM_OUT", "lab?runs")
+    code, _, err = mkm_run(["design", "--require", "300N@2.5bar,eps=0.1"])
+    assert code == 2 and "MKM_OUT 'lab?runs' is not a path Windows can make ('?' in" in err
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_a_path_the_console_code_page_cannot_encode_is_escaped_not_an_error(tmp_path,
                                                                             monkeypatch):
     """stdout redirected on Windows is in the ANSI code page (cp1252): a path with a letter

@@ -40,6 +40,10 @@ def test_bad_values_are_one_line(argv, message, capsys):
 
 @pytest.mark.parametrize("argv, message", [
     (["calibrate-loadcell", "--masses", "0,-1"], "negative mass"),
+    # was: the device opened, the mass hung and read, then "need at least two different masses"
+    (["calibrate-loadcell", "--masses", "5"], "mkm calibrate-loadcell: error: --masses '5' holds "
+     "one mass: expected at least two different masses for a sensitivity (0,5,10,20)\n"),
+    (["calibrate-loadcell", "--masses", "5,5kg"], "--masses '5,5kg' holds one mass"),
     (["tare", "--seconds", "0"], "expected a duration > 0 s"),
     # the flag named as typed, the fix suggested; a decimal comma is a decimal point
     (["acquire", "--eps", "12.2"], "mkm acquire: error: --eps 12.2: a fraction is expected; "

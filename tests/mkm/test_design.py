@@ -474,6 +474,48 @@ def test_a_design_outside_the_practical_range_is_said_an_extrapolation(tmp_path,
     assert "practical range every model" not in err
 
 
+def test_an_infeasible_design_outside_the_practical_range_says_so(tmp_path, mkm_run):
+    # theta0 50 deg is a braid angle LIMITS accept but beyond the practical range's 15-40 deg:
+    # "infeasible" alone hid that no model is validated there
+    code, out, err = mkm_run(["design", "--require", "5000N@2bar,eps=0.05", "--D0", "10",
+                              "--t0", "1", "--theta0", "50", "--mesh", MESH, "--no-progress",
+                              "--out", str(tmp_path)])
+    assert code == 2 and err.count("\n") == 1, err
+    assert "closest: D0 = 10.00 mm, t0 = 1.00 mm, L0 = 282 mm, theta0 = 50 deg" in err
+    assert err.endswith("; it lies outside the practical range the models are validated over "
+                        "(theta0_deg=50 outside [15, 40]): its forces are an extrapolation "
+                        "(`mkm models` states the range)\n")
+    # inside the range, the message stops at the shortfall
+    code, out, err = mkm_run(["design", "--require", "5000N@2bar,eps=0.05", "--D0", "10",
+                              "--t0", "1", "--theta0", "30", "--mesh", MESH, "--no-progress",
+                              "--out", str(tmp_path)])
+    assert code == 2 and re.search(r"short by \d+ N \(predicted \d+ N\)\n$", err), err
+
+
+def test_every_design_figure_carries_its_provenance(tmp_path, mkm_run):
+    # a PNG copied into a lab report away from designs.json still says what made it
+    import datetime
+
+    from PIL import Image
+
+    from mkm import __version__
+
+    code, out, err = mkm_run(["design", "--require", "300N@2bar,eps=0.1", "--top", "1",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 0, err
+    software = json.loads((tmp_path / "designs.json").read_text())["provenance"]["software"]
+    pngs = sorted(p.name for p in tmp_path.glob("*.png"))
+    assert pngs == ["fe_curves.png", "requirement1_contours.png"]
+    for name in pngs:
+        text = Image.open(tmp_path / name).text
+        assert text["Software"] == f"mkm-bench {__version__}"
+        assert text["Command"] == software["command"]
+        made = datetime.datetime.fromisoformat(text["Creation Time"])
+        assert abs(made - datetime.datetime.fromisoformat(software["date_utc"])) < \
+            datetime.timedelta(minutes=1)
+        assert json.loads(text["Provenance"])["versions"] == software["versions"]
+
+
 def test_many_verified_designs_draw_the_best_curves_and_keep_every_one(tmp_path, mkm_run):
     # --top 300 drew 289 curves and their legend: matplotlib collapsed the axes and said so
     from mkm.design.page import MAX_CURVES

@@ -48,7 +48,8 @@ def test_comma_lists_keep_parameters_with_their_model():
                       "C10_MPa, C01_MPa, braid"),
     ("", "unknown model ''"),
     ("thickwall:gap_mm=0.5kPa", "gap_mm='0.5kPa': 'kPa' is not a unit of the same kind as mm"),
-    ("thickwall:gap_mm=abc", r"gap_mm='abc' is not a number \(radial gap"),
+    ("thickwall:gap_mm=abc", r"gap_mm='abc' is not a number: expected a number in mm, or one "
+     r"with a unit such as 282mm or 1\.5in \(radial gap"),
 ])
 def test_bad_specs_name_the_bad_part(text, message):
     with pytest.raises(ValueError, match=message):

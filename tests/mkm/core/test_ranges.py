@@ -67,6 +67,11 @@ def test_a_number_typed_with_a_unit_is_converted_into_the_options():
 
 @pytest.mark.parametrize(("call", "message"), [
     (lambda: parse_number("abc", "--D0"), "^--D0='abc' is not a number$"),
+    # an option with a unit says what it takes (was: "--D0='abc' is not a number" alone)
+    (lambda: parse_number("abc", "--D0", "mm"), r"^--D0='abc' is not a number: expected a "
+     r"number in mm, or one with a unit such as 282mm or 1\.5in$"),
+    (lambda: parse_number("2..5", "--pressure", "bar"), r"^--pressure='2\.\.5' is not a number: "
+     r"expected a number in bar, or one with a unit such as 2\.5bar or 250kPa$"),
     (lambda: parse_number("inf", "--D0"), "^--D0='inf' is not a finite number$"),
     (lambda: parse_range("0:2.5", "p"), "malformed: expected start:stop:step"),
     (lambda: parse_range("0:1:0", "p"), "step 0 must be > 0"),
@@ -84,7 +89,10 @@ def test_a_number_typed_with_a_unit_is_converted_into_the_options():
      r"start:stop:step \(for example 0:8:0\.5\) or a comma list \(0,1,2\.5\), in bar$"),
     (lambda: parse_pressures("0,1,,2"), r"^--pressures '0,1,,2': entry='' is not a number: "
      "expected start:stop:step"),
-    (lambda: parse_fraction("five%"), "--eps='five' is not a number"),
+    (lambda: parse_fraction("five%"), r"^--eps='five' is not a number: expected a fraction "
+     r"\(0\.05\) or a percentage \(5%\)$"),
+    (lambda: parse_fraction("0.1,L0=200", "--require: eps"), r"^--require: eps='0\.1,L0=200' "
+     r"is not a number: expected a fraction \(0\.05\) or a percentage \(5%\)$"),
     # a unit typed after the number: said, not only refused
     (lambda: parse_number("282mm", "--L0"), "--L0='282mm' is not a number: expected the "
                                            "number alone, without 'mm'"),
