@@ -133,15 +133,30 @@ def add_progress_argument(parser) -> None:
                         help=shared_help("--no-progress"))
 
 
+def parse_workers(text: str) -> int:
+    """``--workers N``, checked as the command line is read (:func:`mkm.fem.batch.check_where`),
+    not at the command's first FE batch (``mkm study`` works a minute before its first)."""
+    from mkm.fem.batch import check_where
+
+    try:
+        value = int(text)
+        check_where(value, None)
+    except ValueError as exc:
+        expected = str(exc).partition("is invalid: ")[2] or "expected a whole number, at least 1"
+        raise ValueError(f"--workers {text}: {expected}") from None
+    return value
+
+
 def add_batch_arguments(parser) -> None:
     """``--workers N`` / ``--scheduler ADDRESS``: where the command's FE batch runs
     (:class:`mkm.fem.batch.Runner`)."""
-    parser.add_argument("--workers", type=int, metavar="N",
-                        help="local worker processes for the FE solves; 1 runs in-process "
-                        "(default: the CPU count)")
-    parser.add_argument("--scheduler", metavar="ADDRESS",
-                        help="run the FE solves on the Dask cluster at this scheduler, e.g. "
-                        "tcp://HOST:8786 (workers need the same mkm-bench installed)")
+    where = parser.add_mutually_exclusive_group()  # a cluster has its own workers
+    where.add_argument("--workers", type=argtype(parse_workers), metavar="N",
+                       help="local worker processes for the FE solves; 1 runs in-process "
+                       "(default: the CPU count)")
+    where.add_argument("--scheduler", metavar="ADDRESS",
+                       help="run the FE solves on the Dask cluster at this scheduler, e.g. "
+                       "tcp://HOST:8786 (workers need the same mkm-bench installed)")
 
 
 def choices(model: str, parameter: str) -> tuple[str, ...]:

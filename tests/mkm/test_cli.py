@@ -756,3 +756,21 @@ def test_design_probability_takes_a_percentage():
     base = ["design", "--require", "300N@2.5bar,eps=0.1", "--tolerance", "D0=0.3"]
     assert parse([*base, "--probability", "95%"]).probability == pytest.approx(0.95, rel=1e-12)
     assert parse([*base, "--probability", "0.9"]).probability == 0.9
+
+
+@pytest.mark.parametrize("command", [["study"], ["fem", "dataset"], ["surrogate", "design"],
+                                     ["surrogate", "evaluate"], ["design"], ["identify"]])
+@pytest.mark.parametrize("args, message", [
+    (["--workers", "0"], "--workers 0: expected at least 1"),
+    (["--workers", "1.5"], "--workers 1.5: expected a whole number, at least 1"),
+    (["--workers", "2", "--scheduler", "tcp://host:8786"],
+     "argument --scheduler: not allowed with argument --workers"),
+])
+def test_workers_are_refused_as_the_command_line_is_read(command, args, message, capsys):
+    # not at the first FE batch: `mkm study --workers 0` worked 73 s before its error
+    from mkm.cli import build_parser
+
+    with pytest.raises(SystemExit) as exit_:
+        build_parser().parse_known_args([*command, *args])
+    assert exit_.value.code == 2
+    assert capsys.readouterr().err == f"mkm {' '.join(command)}: error: {message}\n"
