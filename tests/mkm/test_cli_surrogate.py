@@ -127,6 +127,17 @@ def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
     assert len(pd.read_csv(tmp_path / "eval" / "offgrid_points.csv")) == 2 * 11
 
 
+@pytest.mark.parametrize("splits", ["-1", "-10"])
+def test_negative_splits_are_a_one_line_error(splits, thickwall_dataset, tmp_path, mkm_run):
+    # was an IndexError traceback from the empty list of split scores
+    code, out, err = mkm_run(["surrogate", "train", "--dataset", str(thickwall_dataset),
+                              "--kind", "physics", "--splits", splits, "--out",
+                              str(tmp_path / "model")])
+    assert code == 2 and out == "" and not (tmp_path / "model").exists()
+    assert err == (f"mkm surrogate train: error: --splits {splits}: expected a whole number of "
+                   "muscle-held-out splits >= 0 (0: none)\n")
+
+
 def test_design_budget_must_be_positive(capsys):
     assert main(["surrogate", "design", "--muscles", "0"]) == 2
     assert "--muscles 0 is invalid" in capsys.readouterr().err
