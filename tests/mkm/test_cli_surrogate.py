@@ -138,6 +138,17 @@ def test_negative_splits_are_a_one_line_error(splits, thickwall_dataset, tmp_pat
                    "muscle-held-out splits >= 0 (0: none)\n")
 
 
+def test_negative_adaptive_muscles_are_refused_before_any_fe(tmp_path, mkm_run):
+    # was accepted: "2 + -1 adaptive muscles", and "adaptive": -1 in the design's sidecar
+    out = tmp_path / "design.csv"
+    code, _, err = mkm_run(["surrogate", "design", "--muscles", "2", "--adaptive", "-1",
+                            "--mesh", "coarse", "--workers", "1", "--no-progress",
+                            "--cache", str(tmp_path / "cache"), "--out", str(out)])
+    assert code == 2 and not out.exists() and not (tmp_path / "cache").exists()
+    assert err == ("mkm surrogate design: error: --adaptive -1 is invalid: expected a number "
+                   "of muscles >= 0\n")
+
+
 def test_design_budget_must_be_positive(capsys):
     assert main(["surrogate", "design", "--muscles", "0"]) == 2
     assert "--muscles 0 is invalid" in capsys.readouterr().err
