@@ -72,6 +72,29 @@ def test_missing_dataset_is_a_one_line_error(tmp_path, capsys):
     assert "does not exist" in capsys.readouterr().err
 
 
+EXPECTED_DATASET = ("expected a CSV built by `mkm surrogate design` or `mkm fem dataset` "
+                    "(columns pressure_bar,D0_mm,t0_mm,eps,force_N,...)")
+
+
+@pytest.mark.parametrize("text, problem", [
+    # pandas' two lines ("Error tokenizing data...\n"), naming no file, were the whole message
+    ("a\nb\nc,d,e,f\n", "is no CSV table (Error tokenizing data. C error: Expected 1 "
+                        "fields in line 3, saw 4)"),
+    ("", "is no CSV table (No columns to parse from file)"),
+    # was "could not convert string to float: 'abc'"
+    ("pressure_bar,D0_mm,t0_mm,eps,force_N\n1,35,2.5,0.05,abc\n",
+     "has a column force_N that is not all numbers"),
+])
+def test_a_dataset_that_is_no_table_is_named_in_one_line(text, problem, tmp_path, mkm_run):
+    dataset = tmp_path / "sweeps.csv"
+    dataset.write_text(text)
+    code, out, err = mkm_run(["surrogate", "train", "--dataset", str(dataset), "--kind",
+                              "physics", "--splits", "0", "--out", str(tmp_path / "model")])
+    assert code == 2 and out == ""
+    assert err == f"mkm surrogate train: error: dataset {str(dataset)!r} {problem}: " \
+                  f"{EXPECTED_DATASET}\n"
+
+
 @pytest.mark.slow  # trains a surrogate
 def test_predict_at_an_untrained_length_is_refused(thickwall_dataset, tmp_path, capsys):
     # The fixture holds one length (282 mm): L0 = 150 mm is refused with the reason, both on
