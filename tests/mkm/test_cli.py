@@ -724,6 +724,22 @@ def test_the_invalid_points_warning_names_a_braid_that_locks_before_eps_maximum(
                                             "1 not converged")
 
 
+def test_auto_states_no_eps_maximum_it_did_not_compare_with():
+    # auto at the calibrated theta0 states none (its candidates each have their own): eps 0.4,
+    # past every calibrated eps_max (0.308-0.328), was said to lock "short of eps_max"
+    # (`mkm fem solve --model auto --D0 35 --t0 2.5 --eps 0.4 --pressures 1`)
+    from mkm.cli.fem import _invalid_reasons
+    from mkm.fem.interface import Prediction
+    from mkm.fem.outcomes import BRAID_LOCKS
+
+    prediction = Prediction("auto", {"tolerance": 0.02}, np.ones(1), np.full(1, 35.0),
+                            np.full(1, 2.5), np.full(1, 0.4), np.full(1, np.nan),
+                            np.zeros(1, bool), np.zeros(1, bool), 0.0,
+                            extras={"limit": np.array([BRAID_LOCKS], object)})
+    assert _invalid_reasons(prediction) == ("1 where the braid locks before eps (a physical "
+                                            "limit of the muscle)")
+
+
 def test_design_box_options_typed_with_units_are_converted():
     # --max-outer-diameter 6.4cm and a spec file's D0_mm = "3.5cm" were converted, while
     # --D0 3.5cm was refused as 'not a number'
