@@ -57,7 +57,8 @@ FLAGS = {"D0_mm": ("--D0", "D0"), "t0_mm": ("--t0", "t0"), "L0_mm": ("--L0", "L0
          # mkm design's constraints
          "max_pressure_bar": ("--max-pressure", "max_pressure_bar"),
          "max_outer_diameter_mm": ("--max-outer-diameter", "max_outer_diameter_mm"),
-         "gap_mm": ("--gap", "gap_mm"), "splits": ("--splits", "splits")}
+         "gap_mm": ("--gap", "gap_mm"), "splits": ("--splits", "splits"),
+         "seeds": ("--seeds", "seeds"), "jobs": ("--jobs", "jobs")}
 
 
 def name_the_flag(args, message) -> str:

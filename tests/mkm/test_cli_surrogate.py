@@ -172,6 +172,18 @@ def test_negative_adaptive_muscles_are_refused_before_any_fe(tmp_path, mkm_run):
                    "of muscles >= 0\n")
 
 
+@pytest.mark.parametrize("args, message", [
+    (["--jobs", "0"], "--jobs 0: expected at least 1 parallel worker"),  # was joblib's words
+    (["--jobs", "-2"], "--jobs -2: expected at least 1 parallel worker"),
+    (["--seeds", "0"], "--seeds 0: expected at least 1 split"),  # was "seeds=0 is invalid"
+])
+def test_grid_counts_are_refused_naming_their_option(args, message, tmp_path, mkm_run):
+    code, out, err = mkm_run(["surrogate", "grid", "--nets", "1", "--out", str(tmp_path / "g"),
+                              *args])
+    assert code == 2 and out == "" and not (tmp_path / "g").exists()
+    assert err == f"mkm surrogate grid: error: {message}\n"
+
+
 def test_design_budget_must_be_positive(capsys):
     assert main(["surrogate", "design", "--muscles", "0"]) == 2
     assert "--muscles 0 is invalid" in capsys.readouterr().err
