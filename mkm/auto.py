@@ -198,6 +198,12 @@ class AutoModel(ForceModel):
                  mesh_errors: str | None = None, *, build: Callable[..., ForceModel]):
         self.tolerance = tolerance
         self.table = table
+        # the shipped table may be absent (then the study's recorded errors bound the meshes);
+        # one named is meant to be read
+        if mesh_errors is not None and not Path(mesh_errors).is_file():
+            raise ValueError(f"mesh_errors={str(mesh_errors)!r} is invalid: no such file; "
+                             "expected a mesh error table written by `mkm study --mesh-muscles "
+                             "N` (mesh_errors.csv)")
         self.mesh_errors = mesh_errors
         self.per_point = bool(per_point)
         self.L0_mm, self.theta0_deg = L0_mm, theta0_deg

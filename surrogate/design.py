@@ -248,8 +248,9 @@ def build_design(n_muscles: int, out, seed: int = 0, mesh: str = "fine",
     whose sweep failed (kept in the CSV with ``converged=False``; the loader leaves them out)
     and the FE provenance.
     """
-    if int(refine) != refine or refine < 0:
-        raise ValueError(f"--refine {refine!r} is invalid: expected a number of muscles >= 0")
+    for flag, count in (("--refine", refine), ("--adaptive", adaptive)):
+        if int(count) != count or count < 0:
+            raise ValueError(f"{flag} {count!r} is invalid: expected a number of muscles >= 0")
     if refine and not refine_box:
         raise ValueError(f"--refine {refine} needs --refine-box: expected the sub-box of the "
                          "refinement muscles (NAME=LO:HI,...)")

@@ -63,6 +63,8 @@ def run_paper_grid(dataset=PAPER_DATASET, seeds: int = 10, jobs: int = 2,
                          f"{', '.join(VARIANTS)}")
     if seeds < 1:
         raise ValueError(f"seeds={seeds} is invalid: expected at least 1 split")
+    if jobs < 1:  # joblib's own words for 0 name no option ("n_jobs == 0 in Parallel ...")
+        raise ValueError(f"jobs={jobs} is invalid: expected at least 1 parallel worker")
     data = load_training_data(dataset)
     tasks = [(cfg, variant, seed) for seed in range(seeds) for variant in variants
              for cfg in configs]

@@ -64,7 +64,10 @@ def std_sets(kind: str, dataset) -> tuple[Path, Path]:
 def kind_splits(kind: str, splits: int | None) -> int:
     """``splits``, or when None the kind's own number of muscle-held-out refits."""
     if splits is not None:
-        return splits
+        if isinstance(splits, bool) or int(splits) != splits or splits < 0:
+            raise ValueError(f"splits={splits!r} is invalid: expected a whole number of "
+                             "muscle-held-out splits >= 0 (0: none)")
+        return int(splits)
     own = entry(kind).splits
     return MUSCLE_SPLITS if own is None else own
 

@@ -57,7 +57,8 @@ FLAGS = {"D0_mm": ("--D0", "D0"), "t0_mm": ("--t0", "t0"), "L0_mm": ("--L0", "L0
          # mkm design's constraints
          "max_pressure_bar": ("--max-pressure", "max_pressure_bar"),
          "max_outer_diameter_mm": ("--max-outer-diameter", "max_outer_diameter_mm"),
-         "gap_mm": ("--gap", "gap_mm")}
+         "gap_mm": ("--gap", "gap_mm"), "splits": ("--splits", "splits"),
+         "seeds": ("--seeds", "seeds"), "jobs": ("--jobs", "jobs")}
 
 
 def name_the_flag(args, message) -> str:
@@ -133,15 +134,30 @@ def add_progress_argument(parser) -> None:
                         help=shared_help("--no-progress"))
 
 
+def parse_workers(text: str) -> int:
+    """``--workers N``, checked as the command line is read (:func:`mkm.fem.batch.check_where`),
+    not at the command's first FE batch (``mkm study`` works a minute before its first)."""
+    from mkm.fem.batch import check_where
+
+    try:
+        value = int(text)
+        check_where(value, None)
+    except ValueError as exc:
+        expected = str(exc).partition("is invalid: ")[2] or "expected a whole number, at least 1"
+        raise ValueError(f"--workers {text}: {expected}") from None
+    return value
+
+
 def add_batch_arguments(parser) -> None:
     """``--workers N`` / ``--scheduler ADDRESS``: where the command's FE batch runs
     (:class:`mkm.fem.batch.Runner`)."""
-    parser.add_argument("--workers", type=int, metavar="N",
-                        help="local worker processes for the FE solves; 1 runs in-process "
-                        "(default: the CPU count)")
-    parser.add_argument("--scheduler", metavar="ADDRESS",
-                        help="run the FE solves on the Dask cluster at this scheduler, e.g. "
-                        "tcp://HOST:8786 (workers need the same mkm-bench installed)")
+    where = parser.add_mutually_exclusive_group()  # a cluster has its own workers
+    where.add_argument("--workers", type=argtype(parse_workers), metavar="N",
+                       help="local worker processes for the FE solves; 1 runs in-process "
+                       "(default: the CPU count)")
+    where.add_argument("--scheduler", metavar="ADDRESS",
+                       help="run the FE solves on the Dask cluster at this scheduler, e.g. "
+                       "tcp://HOST:8786 (workers need the same mkm-bench installed)")
 
 
 def choices(model: str, parameter: str) -> tuple[str, ...]:

@@ -205,8 +205,11 @@ def _invalid_reasons(prediction) -> str:
                            f"{lock_eps(float(theta0)):.4g} at theta0 {float(theta0):g} deg")
             bad = bad & ~locked
     status = np.reshape(classify(prediction), bad.shape)
-    for outcome, said in ((BRAID_LOCKS, "where the braid locks before eps (short of eps_max: "
-                                        "a physical limit of the muscle)"),
+    # short of eps_max only where the points past it were told apart above (auto's candidates
+    # each have their own calibrated theta0: it states none)
+    short = "short of eps_max: " if isinstance(theta0, int | float) else ""
+    for outcome, said in ((BRAID_LOCKS, f"where the braid locks before eps ({short}a physical "
+                                        "limit of the muscle)"),
                           ("not converged", "not converged")):
         these = bad & (status == outcome)
         if these.any():

@@ -81,10 +81,18 @@ def table_path(tmp_path_factory):
     return str(path)
 
 
+def no_mesh_errors(table) -> str:
+    """A mesh error table of no muscles beside ``table``: the FE meshes at the study table's
+    recorded errors."""
+    path = Path(table).with_name("no_mesh_errors.csv")
+    path.write_text("muscle,mesh,shift_per_threshold,relative_error,fe_failed\n")
+    return str(path)
+
+
 def auto(table, **params) -> AutoModel:
     """Auto on the hand-made study table; the FE meshes at its recorded errors (no mesh error
     table), unless ``mesh_errors`` is given."""
-    params.setdefault("mesh_errors", str(Path(table).with_name("no_mesh_errors.csv")))
+    params.setdefault("mesh_errors", no_mesh_errors(table))
     return AutoModel(table=table, build=fake_build, **params)
 
 
@@ -161,7 +169,7 @@ def test_outside_the_default_box_the_range_surrogate_answers_and_never_inside(ta
 
     def run(D0, tolerance):
         return AutoModel(table=table_path, build=build, tolerance=tolerance,
-                         mesh_errors=str(Path(table_path).with_name("none.csv"))
+                         mesh_errors=no_mesh_errors(table_path)
                          ).predict(P, D0, 2.5, 0.05)
 
     ref = make_model("axisym", mesh="coarse").predict(P, 55.0, 2.5, 0.05).force_N
@@ -261,6 +269,14 @@ def test_bad_tolerance_and_missing_table_are_clear_errors(table_path, tmp_path):
         auto(table_path, tolerance=1.5).predict(1.0, 35.0, 2.5, 0.05)
     with pytest.raises(ValueError, match="run `mkm study`"):
         auto(str(tmp_path / "none.csv")).predict(1.0, 35.0, 2.5, 0.05)
+    # a mesh error table named and absent: was ignored, the meshes bound by the study table's
+    # recorded errors instead, and no word of it
+    missing = tmp_path / "mesh_errors.csv"
+    with pytest.raises(ValueError) as refused:
+        auto(table_path, mesh_errors=str(missing))
+    assert str(refused.value) == (f"mesh_errors={str(missing)!r} is invalid: no such file; "
+                                  "expected a mesh error table written by `mkm study "
+                                  "--mesh-muscles N` (mesh_errors.csv)")
 
 
 @pytest.fixture(scope="module")
@@ -445,7 +461,7 @@ def test_past_the_braid_lock_auto_says_the_braid_locks_as_its_fallback_does(tabl
         return fake_build("axisym:mesh=coarse" if spec == FALLBACK_SPEC else spec, **muscle)
 
     pred = AutoModel(table=table_path, build=build, tolerance=0.02, theta0_deg=32.0,
-                     mesh_errors=str(Path(table_path).with_name("none.csv"))
+                     mesh_errors=no_mesh_errors(table_path)
                      ).predict(P, 30.0, 2.0, 0.35)
     assert set(pred.extras["model_used"]) == {"axisym-fine"}
     assert not pred.converged.any() and np.isnan(pred.force_N).all()

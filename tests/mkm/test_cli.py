@@ -800,6 +800,22 @@ def test_the_invalid_points_warning_names_a_braid_that_locks_before_eps_maximum(
                                             "1 not converged")
 
 
+def test_auto_states_no_eps_maximum_it_did_not_compare_with():
+    # auto at the calibrated theta0 states none (its candidates each have their own): eps 0.4,
+    # past every calibrated eps_max (0.308-0.328), was said to lock "short of eps_max"
+    # (`mkm fem solve --model auto --D0 35 --t0 2.5 --eps 0.4 --pressures 1`)
+    from mkm.cli.fem import _invalid_reasons
+    from mkm.fem.interface import Prediction
+    from mkm.fem.outcomes import BRAID_LOCKS
+
+    prediction = Prediction("auto", {"tolerance": 0.02}, np.ones(1), np.full(1, 35.0),
+                            np.full(1, 2.5), np.full(1, 0.4), np.full(1, np.nan),
+                            np.zeros(1, bool), np.zeros(1, bool), 0.0,
+                            extras={"limit": np.array([BRAID_LOCKS], object)})
+    assert _invalid_reasons(prediction) == ("1 where the braid locks before eps (a physical "
+                                            "limit of the muscle)")
+
+
 def test_design_box_options_typed_with_units_are_converted():
     # --max-outer-diameter 6.4cm and a spec file's D0_mm = "3.5cm" were converted, while
     # --D0 3.5cm was refused as 'not a number'
@@ -832,3 +848,21 @@ def test_design_probability_takes_a_percentage():
     base = ["design", "--require", "300N@2.5bar,eps=0.1", "--tolerance", "D0=0.3"]
     assert parse([*base, "--probability", "95%"]).probability == pytest.approx(0.95, rel=1e-12)
     assert parse([*base, "--probability", "0.9"]).probability == 0.9
+
+
+@pytest.mark.parametrize("command", [["study"], ["fem", "dataset"], ["surrogate", "design"],
+                                     ["surrogate", "evaluate"], ["design"], ["identify"]])
+@pytest.mark.parametrize("args, message", [
+    (["--workers", "0"], "--workers 0: expected at least 1"),
+    (["--workers", "1.5"], "--workers 1.5: expected a whole number, at least 1"),
+    (["--workers", "2", "--scheduler", "tcp://host:8786"],
+     "argument --scheduler: not allowed with argument --workers"),
+])
+def test_workers_are_refused_as_the_command_line_is_read(command, args, message, capsys):
+    # not at the first FE batch: `mkm study --workers 0` worked 73 s before its error
+    from mkm.cli import build_parser
+
+    with pytest.raises(SystemExit) as exit_:
+        build_parser().parse_known_args([*command, *args])
+    assert exit_.value.code == 2
+    assert capsys.readouterr().err == f"mkm {' '.join(command)}: error: {message}\n"

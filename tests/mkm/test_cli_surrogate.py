@@ -72,6 +72,29 @@ def test_missing_dataset_is_a_one_line_error(tmp_path, capsys):
     assert "does not exist" in capsys.readouterr().err
 
 
+EXPECTED_DATASET = ("expected a CSV built by `mkm surrogate design` or `mkm fem dataset` "
+                    "(columns pressure_bar,D0_mm,t0_mm,eps,force_N,...)")
+
+
+@pytest.mark.parametrize("text, problem", [
+    # pandas' two lines ("Error tokenizing data...\n"), naming no file, were the whole message
+    ("a\nb\nc,d,e,f\n", "is no CSV table (Error tokenizing data. C error: Expected 1 "
+                        "fields in line 3, saw 4)"),
+    ("", "is no CSV table (No columns to parse from file)"),
+    # was "could not convert string to float: 'abc'"
+    ("pressure_bar,D0_mm,t0_mm,eps,force_N\n1,35,2.5,0.05,abc\n",
+     "has a column force_N that is not all numbers"),
+])
+def test_a_dataset_that_is_no_table_is_named_in_one_line(text, problem, tmp_path, mkm_run):
+    dataset = tmp_path / "sweeps.csv"
+    dataset.write_text(text)
+    code, out, err = mkm_run(["surrogate", "train", "--dataset", str(dataset), "--kind",
+                              "physics", "--splits", "0", "--out", str(tmp_path / "model")])
+    assert code == 2 and out == ""
+    assert err == f"mkm surrogate train: error: dataset {str(dataset)!r} {problem}: " \
+                  f"{EXPECTED_DATASET}\n"
+
+
 @pytest.mark.slow  # trains a surrogate
 def test_predict_at_an_untrained_length_is_refused(thickwall_dataset, tmp_path, capsys):
     # The fixture holds one length (282 mm): L0 = 150 mm is refused with the reason, both on
@@ -125,6 +148,40 @@ def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
     assert summary["seed"] == 5 and summary["fe_budget_muscles"] == 2
     assert summary["outside_box"]["flagged"] == summary["outside_box"]["points"]
     assert len(pd.read_csv(tmp_path / "eval" / "offgrid_points.csv")) == 2 * 11
+
+
+@pytest.mark.parametrize("splits", ["-1", "-10"])
+def test_negative_splits_are_a_one_line_error(splits, thickwall_dataset, tmp_path, mkm_run):
+    # was an IndexError traceback from the empty list of split scores
+    code, out, err = mkm_run(["surrogate", "train", "--dataset", str(thickwall_dataset),
+                              "--kind", "physics", "--splits", splits, "--out",
+                              str(tmp_path / "model")])
+    assert code == 2 and out == "" and not (tmp_path / "model").exists()
+    assert err == (f"mkm surrogate train: error: --splits {splits}: expected a whole number of "
+                   "muscle-held-out splits >= 0 (0: none)\n")
+
+
+def test_negative_adaptive_muscles_are_refused_before_any_fe(tmp_path, mkm_run):
+    # was accepted: "2 + -1 adaptive muscles", and "adaptive": -1 in the design's sidecar
+    out = tmp_path / "design.csv"
+    code, _, err = mkm_run(["surrogate", "design", "--muscles", "2", "--adaptive", "-1",
+                            "--mesh", "coarse", "--workers", "1", "--no-progress",
+                            "--cache", str(tmp_path / "cache"), "--out", str(out)])
+    assert code == 2 and not out.exists() and not (tmp_path / "cache").exists()
+    assert err == ("mkm surrogate design: error: --adaptive -1 is invalid: expected a number "
+                   "of muscles >= 0\n")
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--jobs", "0"], "--jobs 0: expected at least 1 parallel worker"),  # was joblib's words
+    (["--jobs", "-2"], "--jobs -2: expected at least 1 parallel worker"),
+    (["--seeds", "0"], "--seeds 0: expected at least 1 split"),  # was "seeds=0 is invalid"
+])
+def test_grid_counts_are_refused_naming_their_option(args, message, tmp_path, mkm_run):
+    code, out, err = mkm_run(["surrogate", "grid", "--nets", "1", "--out", str(tmp_path / "g"),
+                              *args])
+    assert code == 2 and out == "" and not (tmp_path / "g").exists()
+    assert err == f"mkm surrogate grid: error: {message}\n"
 
 
 def test_design_budget_must_be_positive(capsys):
