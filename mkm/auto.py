@@ -249,6 +249,18 @@ class AutoModel(ForceModel):
                 "mesh_errors": meshes.name,
                 "mesh_errors_sha256": file_sha256(meshes)[:12] if meshes.exists() else None}
 
+    @property
+    def calibration_key(self) -> str:
+        """The fine FE mesh's entry: auto predicts the muscle its reference, the fine mesh,
+        predicts (each candidate at its own calibrated angle, bounded against it), so whatever
+        asks auto's nominal braid angle (a report's tolerance band) gets the reference's."""
+        return self._candidate(FALLBACK_SPEC).calibration_key
+
+    @property
+    def calibration(self):
+        """The calibration auto's candidates are built with (the reference's)."""
+        return getattr(self._candidate(FALLBACK_SPEC), "calibration", None)
+
     def _candidate(self, spec: str, gap: bool = True) -> ForceModel:
         """Candidate ``spec`` at the muscle; if it takes a gap, with the muscle's if ``gap``
         (given, else its calibration's), else with none."""

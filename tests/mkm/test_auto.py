@@ -466,3 +466,30 @@ def test_past_the_braid_lock_auto_says_the_braid_locks_as_its_fallback_does(tabl
     assert set(pred.extras["model_used"]) == {"axisym-fine"}
     assert not pred.converged.any() and np.isnan(pred.force_N).all()
     assert classify(pred).tolist() == [BRAID_LOCKS] * P.size
+
+
+def test_autos_nominal_angle_is_its_references(tmp_path):
+    # a report's tolerance band asks every model its nominal muscle; auto's candidates each
+    # take their own calibrated angle, bounded against the fine FE mesh, so auto's is the
+    # reference's (it had none: `mkm report RUN --models auto` failed on every run)
+    from mkm.uncertainty import nominal_parameters
+
+    shipped = Calibration.shipped()
+    assert nominal_parameters(build_spec("auto"), 30.0, 3.0, 0.1)["theta0_deg"] == \
+        shipped.entry("axisym")["theta0_deg"]
+    lab = Calibration(tmp_path / "calibration.json",
+                      {**shipped.entries, "axisym": {**shipped.entry("axisym"),
+                                                     "theta0_deg": 31.25}})
+    assert nominal_parameters(build_spec("auto", lab), 30.0, 3.0, 0.1)["theta0_deg"] == 31.25
+
+
+@pytest.mark.slow
+def test_a_report_of_auto_runs(tmp_path):
+    from mkm.cli import main
+
+    run = Path(__file__).resolve().parents[2] / "data" / "experimental" / \
+        "20261123T084037Z_paper-prototype"
+    assert main(["report", str(run), "--models", "auto", "--no-cache", "--no-progress",
+                 "--out", str(tmp_path / "report")]) == 0
+    summary = pd.read_csv(tmp_path / "report" / "summary.csv")
+    assert list(summary["model"]) == ["auto"] and summary["band_pct"].notna().all()
