@@ -57,7 +57,7 @@ import numpy as np
 import pandas as pd
 
 from mkm import mesh_errors
-from mkm.core.records import file_sha256, package_file
+from mkm.core.records import file_sha256, package_file, read_csv_checked
 from mkm.fem.interface import ForceModel
 from mkm.fem.ladder import MODELS
 from mkm.surrogate import kinds
@@ -91,17 +91,11 @@ PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 @cache
 def read_model_errors(path: Path | str = MODEL_ERRORS_FILE) -> pd.DataFrame:
     """The study table written by ``mkm study``: one row per predictor, muscle and pressure."""
-    path = Path(path)
-    if not path.exists():
-        raise ValueError(f"no study table at {path}: run `mkm study` to measure model errors")
-    table = pd.read_csv(path)
-    needed = {"predictor", "spec", "family", "muscle", "pressure_bar", "err_pct",
-              "seconds_per_point"}
-    missing = needed - set(table.columns)
-    if missing:
-        raise ValueError(f"study table {path} lacks columns {sorted(missing)}: "
-                         "re-run `mkm study`")
-    return table
+    return read_csv_checked(path, "study table", "expected the table `mkm study` writes "
+                            "(model_errors.csv; run `mkm study` to measure the models' errors)", ("predictor", "spec", "family", "muscle",
+                                                   "pressure_bar", "err_pct",
+                                                   "seconds_per_point"),
+                            numeric=("pressure_bar", "err_pct", "seconds_per_point"))
 
 
 def candidates(table: pd.DataFrame) -> pd.DataFrame:

@@ -34,7 +34,7 @@ from pathlib import Path
 
 import numpy as np
 
-from mkm.core.records import package_file, provenance, write_csv_with_sidecar
+from mkm.core.records import package_file, provenance, read_csv_checked, write_csv_with_sidecar
 from mkm.fem.limits import PRACTICAL_RANGE
 
 MESH_ERRORS_FILE = package_file("mkm", "data", "mesh_errors.csv")
@@ -142,12 +142,12 @@ def mesh_model(path: Path | str = MESH_ERRORS_FILE) -> dict[str, tuple[float, fl
     """Per mesh ``(a, b)``: the largest threshold error (over ``P*``) and relative error over
     the measured muscles (:func:`_muscle_rows`), times :data:`SAFETY`; empty without a
     table."""
-    import pandas as pd
-
     path = Path(path)
     if not path.is_file():
         return {}
-    table = pd.read_csv(path)
+    table = read_csv_checked(path, "mesh error table", "expected the table `mkm study "
+                             "--mesh-muscles N` writes (mesh_errors.csv)",
+                             ("mesh", "fe_failed", "shift_per_threshold", "relative_error"))
     scored = table[~table["fe_failed"].astype(bool)]
     return {mesh: (SAFETY * float(rows["shift_per_threshold"].max()),
                    SAFETY * float(rows["relative_error"].max()))

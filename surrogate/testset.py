@@ -17,6 +17,7 @@ from mkm.core.records import (
     file_sha256,
     package_file,
     provenance,
+    read_csv_checked,
     read_prediction_header,
     source_version,
     write_csv_with_sidecar,
@@ -76,15 +77,9 @@ def read_fe_reference(path=FE_REFERENCE) -> pd.DataFrame:
     where the FE wrote them (a table of published forces has none); ``ValueError`` naming a
     missing column or a point the FE did not solve."""
     path = Path(path)
-    if not path.is_file():
-        raise ValueError(f"FE reference {str(path)!r} does not exist: build it with "
-                         "`mkm surrogate reference --model axisym`")
-    table = pd.read_csv(path, comment="#")
-    missing = [c for c in REFERENCE_COLUMNS if c not in table.columns]
-    if missing:
-        raise ValueError(f"FE reference {str(path)!r} lacks column(s) {', '.join(missing)}: "
-                         f"expected a CSV with columns {','.join(REFERENCE_COLUMNS)} (as "
-                         "`mkm surrogate reference` writes it)")
+    table = read_csv_checked(path, "FE reference", f"expected a CSV with columns "
+                             f"{','.join(REFERENCE_COLUMNS)} (as `mkm surrogate reference` "
+                             "writes it)", REFERENCE_COLUMNS, comment="#")
     table.attrs["params"] = read_prediction_header(path).get("params", {})
     solved = np.ones(len(table), dtype=bool)
     for flag in ("converged", "valid"):

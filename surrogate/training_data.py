@@ -19,7 +19,12 @@ from pathlib import Path
 
 import numpy as np
 
-from mkm.core.records import file_sha256, package_file, read_prediction_header
+from mkm.core.records import (
+    file_sha256,
+    package_file,
+    read_csv_checked,
+    read_prediction_header,
+)
 from mkm.fem.interface import INPUTS, Domain
 
 #: Parameters of a muscle that are not arguments of ``ForceModel.predict``: a surrogate takes
@@ -80,25 +85,10 @@ class TrainingData:
 def load_training_data(path=DEFAULT_DATASET) -> TrainingData:
     """Read an FE dataset CSV; ``ValueError`` if it is missing, lacks columns or has no rows."""
     path = Path(path)
-    expected = ("expected a CSV built by `mkm surrogate design` or `mkm fem dataset` (columns "
-                "pressure_bar,D0_mm,t0_mm,eps,force_N,...)")
-    if not path.is_file():
-        raise ValueError(f"dataset {str(path)!r} does not exist: {expected}")
-    import pandas as pd  # here: a saved model predicts without it
-
-    try:
-        frame = pd.read_csv(path, comment="#")
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
-        first = (str(exc).strip().splitlines() or [type(exc).__name__])[0]  # pandas: 2 lines
-        raise ValueError(f"dataset {str(path)!r} is no CSV table ({first}): {expected}") from None
-    missing = [c for c in (*INPUTS, "force_N") if c not in frame.columns]
-    if missing:
-        raise ValueError(f"dataset {str(path)!r} lacks column(s) {', '.join(missing)}: expected "
-                         f"{', '.join((*INPUTS, 'force_N'))}")
-    text = [c for c in (*INPUTS, "force_N") if not pd.api.types.is_numeric_dtype(frame[c])]
-    if text:
-        raise ValueError(f"dataset {str(path)!r} has a column {text[0]} that is not all numbers: "
-                         f"{expected}")
+    columns = (*INPUTS, "force_N")
+    frame = read_csv_checked(path, "dataset", "expected a CSV built by `mkm surrogate design` or "
+                             f"`mkm fem dataset` (columns {','.join(columns)},...)", columns,
+                             numeric=columns, comment="#")
     provenance = read_prediction_header(path)
     keep = np.isfinite(frame["force_N"].to_numpy(dtype=float))
     for flag in ("converged", "valid"):

@@ -424,6 +424,33 @@ def check_csv_with_sidecar(path: str | os.PathLike) -> Path:
     return path
 
 
+def read_csv_checked(path: str | os.PathLike, what: str, expected: str, columns=(),
+                     numeric=(), comment: str | None = None):
+    """The CSV table at ``path`` as a pandas DataFrame, with ``columns``, those of ``numeric``
+    all numbers; ``ValueError`` in one line naming the file (``what``: its kind, as a message
+    names it) and ``expected`` when it does not exist, is no CSV table, lacks a column or holds
+    text where numbers belong (pandas' own messages run over two lines and name no file)."""
+    import pandas as pd
+
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"{what} {str(path)!r} does not exist: {expected}")
+    try:
+        frame = pd.read_csv(path, comment=comment)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
+        first = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
+        raise ValueError(f"{what} {str(path)!r} is no CSV table ({first}): {expected}") from None
+    missing = [c for c in columns if c not in frame.columns]
+    if missing:
+        raise ValueError(f"{what} {str(path)!r} lacks column(s) {', '.join(missing)}: "
+                         f"{expected}")
+    text = [c for c in numeric if not pd.api.types.is_numeric_dtype(frame[c])]
+    if text:
+        raise ValueError(f"{what} {str(path)!r} has a column {text[0]} that is not all numbers: "
+                         f"{expected}")
+    return frame
+
+
 def write_csv_with_sidecar(path: str | os.PathLike, csv_text: str, metadata: dict) -> Path:
     """A plain CSV (no comment lines: spreadsheets read those as data) at ``path`` and its
     metadata as JSON beside it (:func:`sidecar_path`), both written atomically; ``ValueError``

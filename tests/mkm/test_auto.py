@@ -8,6 +8,7 @@ the real default surrogate and check the promise against the FE itself.
 from __future__ import annotations
 
 import json
+import re
 import warnings
 from pathlib import Path
 
@@ -277,6 +278,22 @@ def test_bad_tolerance_and_missing_table_are_clear_errors(table_path, tmp_path):
     assert str(refused.value) == (f"mesh_errors={str(missing)!r} is invalid: no such file; "
                                   "expected a mesh error table written by `mkm study "
                                   "--mesh-muscles N` (mesh_errors.csv)")
+    # tables that are not the study's: one line naming the file (were a KeyError traceback
+    # and pandas' two lines)
+    other = tmp_path / "other.csv"
+    other.write_text("a,b\n1,2\n", encoding="utf-8")
+    with pytest.raises(ValueError, match=re.escape(
+            f"mesh error table {str(other)!r} lacks column(s) mesh, fe_failed, "
+            "shift_per_threshold, relative_error: expected the table `mkm study --mesh-muscles "
+            "N` writes (mesh_errors.csv)")):
+        auto(table_path, mesh_errors=str(other), tolerance=0.005).predict(
+            1.0, 35.0, 2.5, 0.05)
+    ragged = tmp_path / "ragged.csv"
+    ragged.write_text("a\nb\nc,d,e,f\n", encoding="utf-8")
+    for text, said in ((ragged, "is no CSV table (Error tokenizing data."),
+                       (other, "lacks column(s) predictor, spec")):
+        with pytest.raises(ValueError, match=re.escape(f"study table {str(text)!r} {said}")):
+            auto(str(text)).predict(1.0, 35.0, 2.5, 0.05)
 
 
 @pytest.fixture(scope="module")
