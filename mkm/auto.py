@@ -91,11 +91,10 @@ PARAMETERS = ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")
 @cache
 def read_model_errors(path: Path | str = MODEL_ERRORS_FILE) -> pd.DataFrame:
     """The study table written by ``mkm study``: one row per predictor, muscle and pressure."""
+    numeric = ("pressure_bar", "err_pct", "seconds_per_point")
     return read_csv_checked(path, "study table", "expected the table `mkm study` writes "
-                            "(model_errors.csv; run `mkm study` to measure the models' errors)", ("predictor", "spec", "family", "muscle",
-                                                   "pressure_bar", "err_pct",
-                                                   "seconds_per_point"),
-                            numeric=("pressure_bar", "err_pct", "seconds_per_point"))
+                            "(model_errors.csv; run `mkm study` to measure the models' errors)",
+                            ("predictor", "spec", "family", "muscle", *numeric), numeric=numeric)
 
 
 def candidates(table: pd.DataFrame) -> pd.DataFrame:
