@@ -202,8 +202,8 @@ def study_tables() -> None:
     """The study's summary, Pareto chart and the surrogates' per-muscle errors, from the shipped
     table that ``mkm study --update-shipped`` writes (the same numbers ``auto`` reads)."""
     from mkm.auto import MODEL_ERRORS_FILE
+    from mkm.core.records import save_figure
     from mkm.figures import speed_accuracy_figure
-    from mkm.html import save_figure
     from mkm.study import readable_summary, summarise
 
     errors = pd.read_csv(MODEL_ERRORS_FILE)

@@ -88,26 +88,6 @@ def html_page(title: str, body: str) -> str:
             f"<body><h1>{esc(title)}</h1>{body}</body></html>\n")
 
 
-def png_metadata() -> dict[str, str]:
-    """The provenance a PNG carries in its text chunks (any image viewer's properties list
-    them), since a figure is often copied away from the folder whose JSON records it: the
-    code's version, the command, the UTC date and the whole :func:`~mkm.core.records.provenance`
-    as JSON."""
-    from mkm.core.home import DISTRIBUTION
-    from mkm.core.records import provenance
-
-    record = provenance()
-    return {"Software": f"{DISTRIBUTION} {record['versions'][DISTRIBUTION]}",
-            "Command": record["command"], "Creation Time": record["date_utc"],
-            "Provenance": json.dumps(record, default=str)}
-
-
-def save_figure(fig, path: Path) -> Path:
-    """``fig`` as a PNG at ``path``, its provenance inside (:func:`png_metadata`)."""
-    fig.savefig(path, dpi=110, metadata=png_metadata())
-    return path
-
-
 def mapping_table(mapping: dict, title: str, caption: str = "",
                   columns=("quantity", "value")) -> str:
     """A two-column table of nested metadata (``loadcell.capacity_N | 1961``) titled

@@ -43,6 +43,7 @@ from mkm.auto import RANGE_SPEC, REFERENCE_SPEC
 from mkm.core.records import (
     provenance,
     read_prediction_header,
+    save_figure,
     spreadsheet_safe,
     staged_folder,
     write_json_atomic,
@@ -66,7 +67,6 @@ from mkm.html import (
     mapping_table,
     provenance_details,
     provenance_links,
-    save_figure,
     table_html,
 )
 from mkm.identify.page import report_section

@@ -32,14 +32,14 @@ import numpy as np
 import pandas as pd
 
 from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
-from mkm.core.records import provenance, write_atomic, write_json_atomic
+from mkm.core.records import provenance, save_figure, write_atomic, write_json_atomic
 from mkm.fem import ladder
 from mkm.fem.interface import ForceModel, Prediction
 from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.outcomes import PHYSICAL_LIMITS, classify
 from mkm.fem.paper import equation7_err_pct
 from mkm.figures import speed_accuracy_figure, stability_figure
-from mkm.html import esc, figure_html, html_page, provenance_details, save_figure, table_html
+from mkm.html import esc, figure_html, html_page, provenance_details, table_html
 from mkm.paths import default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version, predict_many
 from mkm.progress import progress_bar

@@ -18,7 +18,7 @@ from pathlib import Path
 import pandas as pd
 from joblib import Parallel, delayed
 
-from mkm.core.records import provenance, source_version, write_csv_with_sidecar
+from mkm.core.records import provenance, save_figure, source_version, write_csv_with_sidecar
 from mkm.fem.paper import TABLE2_CSV
 from mkm.surrogate.paper_nets import PAPER_NETS, paper_net
 from mkm.surrogate.training_data import PAPER_DATASET, load_training_data
@@ -148,7 +148,7 @@ def plot_grid(table: pd.DataFrame, path) -> None:
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save_figure(fig, path)
     plt.close(fig)
 
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from mkm.core.records import provenance, source_version, write_csv_with_sidecar
+from mkm.core.records import provenance, save_figure, source_version, write_csv_with_sidecar
 from mkm.fem.calibration import Calibration
 from mkm.fem.fe.model import Axisym
 from mkm.fem.interface import validate_inputs
@@ -90,5 +90,5 @@ def convergence_study(out_dir="reports/fem-convergence", **kwargs) -> tuple[pd.D
                            {"inputs": frame.attrs, **provenance(),
                             "code_version": source_version(__name__, "mkm.fem.fe.model")})
     png = out / "mesh_convergence.png"
-    plot_mesh_convergence(frame).savefig(png, dpi=120)
+    save_figure(plot_mesh_convergence(frame), png)
     return frame, png

@@ -336,9 +336,8 @@ def _figure6(out: Path, reference) -> None:
     """The paper's Figure 6 from run_test's points: the one Figure-6 plot of the project."""
     import pandas as pd
 
-    from mkm.core.records import read_prediction_header
+    from mkm.core.records import read_prediction_header, save_figure
     from mkm.figures import surrogate_fe_figure
-    from mkm.html import save_figure
 
     points = pd.read_csv(out / "test_muscles_points.csv")
     fe_model = read_prediction_header(reference).get("model", "FE")

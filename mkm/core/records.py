@@ -424,6 +424,23 @@ def check_csv_with_sidecar(path: str | os.PathLike) -> Path:
     return path
 
 
+def png_metadata() -> dict[str, str]:
+    """The provenance a PNG carries in its text chunks (any image viewer's properties list
+    them), since a figure is often copied away from the folder whose JSON records it: the
+    code's version, the command, the UTC date and the whole :func:`~mkm.core.records.provenance`
+    as JSON."""
+    record = provenance()
+    return {"Software": f"{DISTRIBUTION} {record['versions'][DISTRIBUTION]}",
+            "Command": record["command"], "Creation Time": record["date_utc"],
+            "Provenance": json.dumps(record, default=str)}
+
+
+def save_figure(fig, path: Path) -> Path:
+    """``fig`` as a PNG at ``path``, its provenance inside (:func:`png_metadata`)."""
+    fig.savefig(path, dpi=110, metadata=png_metadata())
+    return path
+
+
 def read_csv_checked(path: str | os.PathLike, what: str, expected: str, columns=(),
                      numeric=(), comment: str | None = None):
     """The CSV table at ``path`` as a pandas DataFrame, with ``columns``, those of ``numeric``

@@ -21,6 +21,7 @@ from matplotlib.patches import Patch, Rectangle
 
 from mkm.core.records import (
     provenance,
+    save_figure,
     sidecar_path,
     source_version,
     write_atomic,
@@ -43,7 +44,6 @@ from mkm.html import (
     html_page,
     kv_html,
     provenance_details,
-    save_figure,
     table_html,
 )
 from mkm.registry import parse_spec

@@ -18,10 +18,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from mkm.core.records import save_figure
 from mkm.fem.calibration import Calibration
 from mkm.fem.friction import DEFAULTS
 from mkm.fem.materials import SILASTIC_S
-from mkm.html import esc, figure_html, save_figure, table_html
+from mkm.html import esc, figure_html, table_html
 from mkm.identify import fitting
 from mkm.identify.band import identified_entry
 from mkm.identify.goodness import threshold_row

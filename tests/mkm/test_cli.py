@@ -302,6 +302,12 @@ def test_convergence_below_the_threshold_says_why_there_is_no_force_change(mkm_r
     sidecar = json.loads((tmp_path / "mesh_convergence.json").read_text(encoding="utf-8"))
     assert sidecar["code_version"] == source_version("mkm.fem.fe.convergence",
                                                      "mkm.fem.fe.model")
+    # and its chart carries the same provenance, as every figure the toolkit writes
+    from PIL import Image
+
+    text = Image.open(tmp_path / "mesh_convergence.png").text
+    assert text["Command"] == sidecar["command"]
+    assert json.loads(text["Provenance"])["versions"] == sidecar["versions"]
 
 
 @pytest.mark.parametrize("pressure", ["100", "-1", "8.5"])

@@ -25,6 +25,10 @@ def test_grid_small_run(thickwall_dataset, tmp_path, capsys):
         assert info["seeds"] == [0] and info["nets"] == [10]
         assert info["code_version"] == source_version("mkm.surrogate.paper_grid")
         assert {"command", "date_utc", "versions"} <= set(info)
+    from PIL import Image  # the chart carries its provenance, as every figure the toolkit writes
+
+    chart = json.loads(Image.open(out / "paper_grid.png").text["Provenance"])
+    assert (chart["command"], chart["versions"]) == (info["command"], info["versions"])
     # The paper's failure and its fix: tanh with the response in N predicts about the mean
     # (forces spread over ~500 N, RMSE of the mean ~500 N); standardising the response fixes
     # it (measured: ~300 N against ~10 N; the 5x factor leaves room for other seeds).
