@@ -365,6 +365,9 @@ LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", 
 #: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü)
 _GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi)\s*(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))",
                     re.IGNORECASE)
+#: the same marked absolute (bar a, bar(a), psia, bar abs): refused, with why
+_ABSOLUTE = re.compile(r"(?:m?bar|[km]?pa|psi)\s*"
+                       r"(?:\(\s*(?:a|abs|absolute)\s*\)|(?:a|abs|absolute))", re.IGNORECASE)
 
 
 def parse_unit(text: str):
@@ -502,6 +505,10 @@ def _check_unit(table: RawTable, column: Column) -> None:
     if role.unit is None:
         raise ValueError(f"{table.name}: column {column.header!r} ({column.role}) takes no "
                          f"unit, got {column.unit!r}")
+    if column.role == "pressure" and _ABSOLUTE.fullmatch(column.unit.strip()):
+        raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is an "
+                         "absolute pressure: expected a gauge pressure, above the atmosphere as "
+                         "the regulator sets it (bar, bar(g), kPa, psi)")
     unit = parse_unit(column.unit)
     if not _fits(unit, role):
         # a load cell's display in kg or lb shows a mass for the force it weighs

@@ -137,6 +137,19 @@ def test_a_pressure_marked_gauge_is_read_in_its_unit(header, bar_per_unit, tmp_p
                                [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
 
 
+@pytest.mark.parametrize("header, unit", [
+    ("Druck [bar(a)]", "bar(a)"), ("p [psia]", "psia"), ("Pressure (bar abs)", "bar abs"),
+    ("P [kPa (absolute)]", "kPa (absolute)"),
+])
+def test_a_pressure_marked_absolute_is_refused_saying_why(header, unit, tmp_path):
+    # was "'bar(a)' is not a unit of pressure (expected one like bar)": a lab's gauge reads
+    # absolute pressure 1 bar above what the muscle feels
+    with pytest.raises(ValueError, match=re.escape(
+            f"column {header!r}: {unit!r} is an absolute pressure: expected a gauge pressure, "
+            "above the atmosphere as the regulator sets it (bar, bar(g), kPa, psi)")):
+        _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
                         "Kontraktion (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
