@@ -795,9 +795,10 @@ def read_meta(path: str | Path) -> RunMeta:
         raise ValueError(f"{str(path)[:200]} cannot be read as a run folder "
                          f"({exc.strerror or exc})") from None
     if not is_file:
+        expected = "expected a run folder of mkm acquire or mkm import (it holds run.json)"
         if not path.exists():
-            raise ValueError(f"{path}: no such folder")
-        raise ValueError(f"{path} is not a run folder: run.json is missing")
+            raise ValueError(f"{path}: no such folder: {expected}")
+        raise ValueError(f"{path} is not a run folder: run.json is missing: {expected}")
     regular_file(meta_path, "run folder file ")
     if meta_path.stat().st_size > MAX_RUN_JSON_BYTES:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "

@@ -66,7 +66,10 @@ def test_reused_pid_does_not_look_alive(run_path):
 def test_not_a_run_folder(tmp_path):
     with pytest.raises(ValueError, match="is not a run folder: run.json is missing"):
         load_run(tmp_path)
-    with pytest.raises(ValueError, match="nope: no such folder$"):
+    # the missing folder's message said no more than that (a typed path's mistake is the
+    # user's to find: what it should name helps)
+    with pytest.raises(ValueError, match=r"nope: no such folder: expected a run folder of mkm "
+                                         r"acquire or mkm import \(it holds run.json\)$"):
         load_run(tmp_path / "nope")
 
 
