@@ -91,7 +91,7 @@ def test_a_run_folder_that_does_not_exist_is_named_so(config, tmp_path, capsys):
     toml.write_text(config.text)
     assert main(["reprocess", str(tmp_path / "nothere"), "--config", str(toml)]) == 2
     assert capsys.readouterr().err == f"mkm reprocess: error: {tmp_path / 'nothere'}: no such " \
-        "folder\n"
+        "folder: expected a run folder of mkm acquire or mkm import (it holds run.json)\n"
 
 
 @pytest.mark.parametrize("damage, message", [
