@@ -73,9 +73,9 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps)
 
     # the force at the band's own (unrounded) values: the differences are taken from it
     base = force_at({})
-    gradient = [(force_at({name: step}) - base) / step for name, step in (
-        (name, STEP_SD * np.sqrt(max(covariance[k, k], 0.0)) or 1e-6)
-        for k, name in enumerate(names))]
+    steps = [STEP_SD * np.sqrt(max(covariance[k, k], 0.0)) or 1e-6 for k in range(len(names))]
+    gradient = [(force_at({name: step}) - base) / step
+                for name, step in zip(names, steps, strict=True)]
     G = np.array(gradient).reshape(len(names), -1)
     variance = np.einsum("in,ij,jn->n", G, covariance, G) if names else np.zeros(base.size)
     # a term is evaluated where it moves the parameters, not linearised: it may start the
