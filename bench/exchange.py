@@ -7,7 +7,7 @@
   muscle id. A step table (one row per held pressure) gives the steps as they are; a time series
   (a ``time`` column) is stored as samples and its steps derived (:mod:`mkm.bench.series`: a
   staircase's plateaus as the bench judges them, or a ramp's quasi-static bins per branch), its
-  force zeroed at the lowest pressure of the rising branch and a vented pressure reading above
+  force zeroed at its mean before the pressure rises and a vented pressure reading above
   zero taken as the record's zero. ``imported_from`` in run.json records the source file's name
   and SHA-256, the sheet, the columns and units recognised, the shape, the tare and the vented
   reading. ``mkm report``, ``mkm fem calibrate --reference``, ``mkm identify`` and
@@ -188,8 +188,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     sheet : str, optional
         The workbook's sheet to read (default: every sheet holding pressure and force).
     tare : "auto", "none" or float
-        The force's zero [N]: the force at the lowest pressure of the rising branch (``auto``;
-        only when that pressure is 0 bar), none, or this value.
+        The force's zero [N]: a step table's force at the lowest pressure of its rising
+        branch, a time series' mean force before its pressure rises (``auto``; only when that
+        pressure is 0 bar), none, or this value.
     vented : "auto", "none" or float
         The pressure read vented [bar], subtracted from a time series' pressures: detected
         (``auto``), none, or this value.
@@ -541,7 +542,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
     if timed:
-        zero, zero_at = series.tare(pressure, force)
+        rest = series.tare(time_s, pressure, force)
+        zero, zero_at = rest.force_N, rest.pressure_bar
         handling["tare_at_bar"] = zero_at
     else:
         order = (np.array(directions(table, found["direction"]))[group.rows]
@@ -558,6 +560,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         zero, handling["tare"] = 0.0, (f"none: the record has no 0 bar reading (its rising "
                                        f"branch starts at {zero_at:g} bar)")
         notes.append(f"no tare: {handling['tare'][6:]}; --tare N gives one")
+    elif tare == "auto" and timed:
+        n = rest.rest.stop
+        handling["tare"] = (f"mean force of the {n} sample(s) before the pressure rises "
+                            f"(at {time_s[n] - time_s[0]:.4g} s)")
+        handling["tare_std_N"] = rest.std_N
+        if n < series.SHORT_REST_SAMPLES:
+            notes.append(f"tare from only {n} sample(s): the pressure rises "
+                         f"{time_s[n] - time_s[0]:.3g} s into the record; a vented rest of "
+                         "a second or more before it, or --tare N, gives a surer zero")
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:
@@ -586,8 +597,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if not steps:
             raise ValueError(f"{table.name} ({group.state}): no step found in the time series "
                              f"(pressure {pressure.min():g}-{pressure.max():g} bar)")
-        tare_rows = (np.arange(pressure.size) < series.rising_end(pressure)) & (
-            pressure <= handling["tare_at_bar"] + series.PLATEAU_TOLERANCE_BAR)
+        tare_rows = np.arange(pressure.size) < rest.rest.stop
         samples = [Sample(k, float(t), int(s), "tare" if tare_rows[k] else "step", math.nan,
                           math.nan, float(p), math.nan, math.nan, float(f), "")
                    for k, (t, s, p, f) in enumerate(zip(time_s, step_of, pressure, force,

@@ -5,8 +5,10 @@ A lab's record is pressure and force sampled in time. Before any step is taken f
 - :func:`vented_offset`: the pressure the record reads while the muscle is vented (its first
   samples, before the pressure starts to rise); a gauge that reads 0.5-1 bar at rest is
   detected, and by default that reading is the record's zero;
-- :func:`tare`: the force at the lowest pressure of the rising branch is the force's zero
-  (a load cell is rarely at 0 N when the muscle is slack).
+- :func:`tare`: the force's zero (a load cell is rarely at 0 N when the muscle is slack) is
+  the mean force of the rest before the pressure rises, that rest ended where a fit in time
+  puts the rise's start (:func:`rise_start`): the pressure's level there, not a band of
+  pressure, tells it, since on a ramp the first 0.03 bar already pull.
 
 Then :func:`shape` tells a staircase (the pressure held on plateaus most of the time) from a
 ramp, and the steps are taken:
@@ -42,6 +44,10 @@ VENTED_THRESHOLD_BAR = 0.02
 #: quasi-static bins of a ramp: this many over its pressure range, at least this wide [bar]
 RAMP_BINS = 20
 RAMP_MIN_BIN_BAR = 0.02
+#: the fit of the rise's start looks this far above the rest [bar]
+RISE_WINDOW_BAR = 0.05
+#: a tare from fewer samples than this is said to be short
+SHORT_REST_SAMPLES = 10
 #: a ramp turns (up to down, or back) where the pressure comes back this share of its range
 TURN_SHARE = 0.1
 
@@ -114,13 +120,56 @@ def vented_offset(time_s: np.ndarray, pressure_bar: np.ndarray) -> float:
     return level if level >= VENTED_THRESHOLD_BAR else 0.0
 
 
-def tare(pressure_bar: np.ndarray, force_N: np.ndarray) -> tuple[float, float]:
-    """The force's zero [N]: the mean force of the rising branch's samples within
-    :data:`PLATEAU_TOLERANCE_BAR` of its lowest pressure; and that pressure [bar]."""
-    rising = slice(0, rising_end(pressure_bar))
-    p, f = pressure_bar[rising], force_N[rising]
-    low = float(p.min())
-    return float(f[p <= low + PLATEAU_TOLERANCE_BAR].mean()), low
+@dataclass
+class Tare:
+    """The force's zero of a record: ``force_N`` the mean force of the samples ``rest``
+    (``std_N`` its standard error, NaN from one sample) at the pressure ``pressure_bar``."""
+
+    force_N: float
+    std_N: float
+    pressure_bar: float
+    rest: slice
+
+
+def rise_start(time_s: np.ndarray, pressure_bar: np.ndarray) -> int:
+    """Index of the first sample after the rest that starts the record: the kink of a level
+    followed by a line in time, fitted by least squares to the samples up to the first that
+    stands :data:`RISE_WINDOW_BAR` (or 10 noise widths) above the rising branch's lowest
+    pressure; the kink's own sample counts as rising. 1 or more: a record that starts rising
+    keeps its first sample as its rest."""
+    p = pressure_bar[:rising_end(pressure_bar)]
+    if p.size < 4:
+        return 1
+    step = np.diff(p)
+    # the noise from successive differences: a ramp's slope only shifts their median
+    noise = 1.4826 * float(np.median(np.abs(step - np.median(step)))) / math.sqrt(2.0)
+    above = np.flatnonzero(p > p.min() + max(10.0 * noise, RISE_WINDOW_BAR))
+    w = int(above[0]) + 1 if above.size else p.size
+    if w < 4:
+        return 1
+    t, p = time_s[:w] - time_s[0], p[:w]
+    m = np.arange(w, 0, -1)  # samples from j on
+
+    def tail(x):
+        return np.cumsum(x[::-1])[::-1]
+
+    s1, s2, sp, stp = tail(t), tail(t * t), tail(p), tail(t * p)
+    # the ramp's regressor x_i = max(t_i - t_j, 0) for a kink at sample j
+    sx = s1 - m * t
+    sxx = s2 - 2.0 * t * s1 + m * t * t - sx * sx / w
+    sxp = stp - t * sp - sx * sp[0] / w
+    with np.errstate(divide="ignore", invalid="ignore"):
+        explained = np.where((sxx > 0) & (sxp > 0), sxp * sxp / sxx, -np.inf)
+    explained[0] = explained[-2:] = -np.inf  # a rest of one sample at least, a line of two
+    return max(int(np.argmax(explained)), 1)
+
+
+def tare(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) -> Tare:
+    """The force's zero (module docstring): the samples before :func:`rise_start`."""
+    rest = slice(0, rise_start(time_s, pressure_bar))
+    f = force_N[rest]
+    std = float(f.std(ddof=1)) / math.sqrt(f.size) if f.size > 1 else math.nan
+    return Tare(float(f.mean()), std, float(np.median(pressure_bar[rest])), rest)
 
 
 def shape(time_s: np.ndarray, pressure_bar: np.ndarray) -> str:

@@ -49,9 +49,10 @@ def register(subparsers) -> None:
     imp.add_argument("--muscle", default=None, metavar="NAME",
                      help="the muscle to import where the table's muscle column holds several")
     imp.add_argument("--tare", default="auto", metavar="auto|none|N",
-                     help="the force's zero: the force at the lowest pressure of the rising "
-                     "branch (auto; only when that pressure is 0 bar), none, or a value [N] "
-                     "(or with its unit: 0.2kgf)")
+                     help="the force's zero: a time series' mean force before its pressure "
+                     "rises, a step table's force at the lowest pressure of its rising branch "
+                     "(auto; only when that pressure is 0 bar), none, or a value [N] (or with "
+                     "its unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series: "
                      "detected at its start (auto), none, or a value [bar] (or with its unit: "

@@ -165,6 +165,34 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     assert 2.0 < summary["max_abs_err_pct"].iloc[0] < 8.0
 
 
+@pytest.mark.parametrize("rest_s", [2.0, 0.5, 0.0])
+def test_the_tare_is_the_rest_before_the_ramp_not_its_first_pull(rest_s, tmp_path, mkm_cli):
+    # at eps 0 the muscle pulls from 0 bar on: a band of low pressure holds the ramp's first
+    # pull too (7.91, 8.79 and 12.96 N for these three records, true 7.5 N)
+    rng = np.random.default_rng(5)
+    t = np.arange(0.0, rest_s + 20.0, 0.01)
+    p = np.interp(t, [0.0, rest_s, rest_s + 10.0, rest_s + 20.0], [0.0, 0.0, 2.5, 0.0])
+    truth = thickwall_N(p, 0.0)
+    path = tmp_path / "ramp.csv"
+    pd.DataFrame({"t (s)": t, "p (bar)": p + rng.normal(0, 0.005, t.size),
+                  "Force (N)": truth + 7.5 + rng.normal(0, 0.3, t.size)}).to_csv(path,
+                                                                               index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    n = int((run.samples["phase"] == "tare").sum())
+    # the rest's samples, give or take the one the pressure noise (0.005 bar, 0.02 s of the
+    # ramp) blurs at its end
+    assert abs(n - round(100 * rest_s)) <= 2
+    # off by the noise's mean over n samples (4 standard errors) and at most the pull of the
+    # samples the rest took from the ramp
+    bound = 4 * 0.3 / np.sqrt(n) + truth[n]
+    assert recorded["tare_N"] == pytest.approx(7.5, abs=bound)
+    # one sample has no standard error: null in run.json
+    assert recorded["tare_std_N"] == (pytest.approx(0.3 / np.sqrt(n), rel=0.5) if n > 1
+                                      else None)
+    assert ("tare from only" in err) == (n < 10)
+
+
 def _clock_text(seconds: float, start_s: float) -> str:
     hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
     minutes, secs = divmod(rest, 60.0)
