@@ -7,8 +7,8 @@
 - :func:`parse_header`: a header such as ``Pressure (bar)``, ``pressure [kPa]``, ``p_psi``,
   ``F [kgf]``, ``load_lbf``, ``t (s)`` or ``contraction (%)`` as a name and a unit.
 - :func:`recognise`: which column holds each :data:`ROLES` entry (the name matched against the
-  role's spellings, the unit checked to have the role's dimension), ``--columns`` and
-  ``--units`` overriding.
+  role's spellings, or a German compound's ending, the unit checked to have the role's
+  dimension), ``--columns`` and ``--units`` overriding.
 - :func:`column_values`: a recognised column's cells as numbers in the toolkit's unit
   (bar, N, s, mm, fraction), converted by pint; a time column of clock readings
   (``hh:mm:ss.fff``) or date-times as seconds from its first row.
@@ -44,21 +44,29 @@ class Role:
 
     names: tuple[str, ...]
     unit: str | None = None  # the toolkit's unit; "" is a dimensionless fraction
+    #: endings of one-word compounds that name it too (German: Zugkraft, Luftdruck)
+    endings: tuple[str, ...] = ()
+
+    def matches(self, name: str) -> bool:
+        return name in self.names or (bool(self.endings) and " " not in name
+                                      and name.endswith(self.endings))
 
 
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
 #: space) and the toolkit's unit
 ROLES = {
-    "pressure": Role(("p", "pressure", "pres", "druck"), "bar"),
-    "force": Role(("f", "force", "load", "kraft", "tension"), "N"),
+    "pressure": Role(("p", "pressure", "pres", "druck", "pression"), "bar", ("druck",)),
+    "force": Role(("f", "force", "load", "kraft", "tension", "effort"), "N", ("kraft",)),
     "time": Role(("t", "time", "zeit", "elapsed", "elapsed time", "timestamp", "time stamp",
                   "datetime", "date time", "uhrzeit", "zeitstempel"), "s"),
     "direction": Role(("direction", "dir", "branch", "sweep")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
-                 "shortening ratio", "contraction ratio"), ""),
+                 "shortening ratio", "contraction ratio", "kontraktion", "verkürzung",
+                 "verkuerzung"), ""),
     "length": Role(("l", "length", "held length", "laenge", "länge"), "mm"),
-    "L0": Role(("l0", "rest length", "initial length", "length at rest"), "mm"),
+    "L0": Role(("l0", "rest length", "initial length", "length at rest", "ruhelänge",
+                "ruhelaenge", "ausgangslänge", "ausgangslaenge"), "mm"),
     "run": Role(("run", "run id", "test", "trial", "series")),
     "muscle": Role(("muscle", "muscle id", "actuator", "specimen")),
     "slack": Role(("zero entry", "slack")),
@@ -478,7 +486,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         if index in taken or not header:
             continue
         name, unit = parse_header(header)
-        role = next((r for r, spec in ROLES.items() if name in spec.names), None)
+        role = next((r for r, spec in ROLES.items() if spec.matches(name)), None)
         if role is None or role in columns:
             continue
         if role in found and header == found[role].header:

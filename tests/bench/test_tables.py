@@ -152,13 +152,30 @@ def test_a_pressure_marked_absolute_is_refused_saying_why(header, unit, tmp_path
 
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
-                        "Kontraktion (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
+                        "Kürzung (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
     assert (table.separator, table.decimal, table.title_rows, table.header_row) == (";", ",", 1, 3)
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.0])
     np.testing.assert_allclose(column_values(table, found["force"]), [12.25, 40.5])
-    assert "eps" not in found  # "Kontraktion" is not a spelling the reader knows: --columns
-    found = recognise(table, {"eps": "Kontraktion (%)"})
+    assert "eps" not in found  # "Kürzung" is not a spelling the reader knows: --columns
+    found = recognise(table, {"eps": "Kürzung (%)"})
     np.testing.assert_allclose(column_values(table, found["eps"]), [0.122, 0.122])
+
+
+@pytest.mark.parametrize("header, role", [
+    ("Zugkraft [N]", "force"), ("Messkraft (kN)", "force"), ("Druckkraft [N]", "force"),
+    ("Luftdruck [bar]", "pressure"), ("Betriebsdruck (kPa)", "pressure"),
+    ("Pression (bar)", "pressure"), ("Effort [N]", "force"), ("Kontraktion (%)", "eps"),
+    ("Verkürzung [%]", "eps"), ("Ruhelänge [mm]", "L0"), ("Länge [mm]", "length"),
+])
+def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
+    # 'Zugkraft' was left unread: a German table names its force by its kind of pull
+    other = "Zeit [s]" if role != "time" else "Kraft [N]"
+    table, found = _one(tmp_path, f"{header};{other}\n1;2\n")
+    assert found[role].header == header
+    # the unit read from the header, converted as any other: 1 kN is 1000 N, 1 kPa 0.01 bar
+    scale = {"Messkraft (kN)": 1000.0, "Betriebsdruck (kPa)": 0.01, "Kontraktion (%)": 0.01,
+             "Verkürzung [%]": 0.01}.get(header, 1.0)
+    np.testing.assert_allclose(column_values(table, found[role]), [scale])
 
 
 def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
