@@ -133,7 +133,10 @@ def force_parts(P, A, s_A, Pstar, s_P, linearity_bar, bend_bar=0.0):
     with np.errstate(over="ignore", invalid="ignore"):
         var = A**2 * (np.exp(2 * rel**2) * e2 - np.exp(rel**2) * e1**2)
     var = np.where(np.isfinite(var), np.maximum(var, 0.0), np.inf)
-    return force, var, A * linearity_floor_bar(P - Pstar, linearity_bar, bend_bar)
+    floor = A * linearity_floor_bar(P - Pstar, linearity_bar, bend_bar)
+    # no pressure, no pull: at 0 bar every muscle's force is 0 N exactly, whatever its threshold
+    pressurised = np.asarray(P) > 0
+    return force, np.where(pressurised, var, 0.0), np.where(pressurised, floor, 0.0)
 
 
 @dataclass(frozen=True)

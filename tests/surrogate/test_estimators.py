@@ -157,6 +157,18 @@ def test_muscle_gp_non_negative_and_monotone_in_pressure(muscle_gp, D0, t0, eps,
     assert np.all(np.diff(force) >= -1e-9 * np.max(np.abs(force), initial=1.0))
 
 
+def test_muscle_gp_std_is_zero_at_zero_pressure_only(muscle_gp):
+    # No pressure, no pull: at 0 bar the force is 0 N for any muscle, known exactly; it had a
+    # std (0.13 N for the default surrogate at D0 40, t0 3, eps 0), from the linearity floor
+    # of the threshold it sits on
+    for eps in (0.0, 0.1):
+        P = np.array([0.0, 0.01, 0.5, 1.0])
+        X = np.column_stack([P, *(np.full_like(P, v) for v in (40.0, 3.0, eps, 250.0))])
+        force, std = muscle_gp.predict(X, return_std=True)
+        assert force[0] == 0.0 and std[0] == 0.0
+        assert np.all(std[2:] > 0)  # pulling, it keeps its spread
+
+
 def test_muscle_gp_posterior_is_scikit_learns(muscle_gp):
     # The fast posterior skips scikit-learn's checks: the same numbers to round-off.
     Z = np.random.default_rng(2).normal(size=(7, muscle_gp.slope_gp_.X_train_.shape[1]))
