@@ -500,6 +500,24 @@ def _look_alike(group: _Group, key: str) -> str:
     return ""
 
 
+def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
+    """The note (if any) of a record that ends vented at another zero than it started: the
+    drift recorded as ``zero_drift_N`` (end less start), said when it is beyond 4 standard
+    errors of the two rests' means."""
+    end = series.end_rest(time_s, pressure, force)
+    if (end.rest.start <= rest.rest.stop or end.pressure_bar > series.VENTED_THRESHOLD_BAR
+            or not (math.isfinite(end.std_N) and math.isfinite(rest.std_N))):
+        return []
+    drift = end.force_N - rest.force_N
+    handling["zero_drift_N"] = drift
+    noise = 4.0 * math.hypot(end.std_N, rest.std_N)
+    if abs(drift) <= noise:
+        return []
+    return [f"the force vented at the end reads {drift:+.3g} N from the zero at the start "
+            f"(beyond the rests' noise, {noise:.2g} N): a load cell that drifted, or a muscle "
+            "that did not come back; every step keeps the start's zero"]
+
+
 def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
            override=None):
     """The run record, steps, samples, notes and shape of one muscle state (``override``: what
@@ -551,6 +569,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         up = order == "up"
         zero_at = float(pressure[up].min()) if up.any() else math.nan
         zero = float(np.mean(force[up & (pressure == zero_at)])) if up.any() else 0.0
+    drift: list[str] = []
     if tare == "none":
         zero, handling["tare"] = 0.0, "none"
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
@@ -562,13 +581,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         notes.append(f"no tare: {handling['tare'][6:]}; --tare N gives one")
     elif tare == "auto" and timed:
         n = rest.rest.stop
+        rises_s = time_s[min(n, time_s.size - 1)] - time_s[0]
         handling["tare"] = (f"mean force of the {n} sample(s) before the pressure rises "
-                            f"(at {time_s[n] - time_s[0]:.4g} s)")
+                            f"(at {rises_s:.4g} s)")
         handling["tare_std_N"] = rest.std_N
         if n < series.SHORT_REST_SAMPLES:
-            notes.append(f"tare from only {n} sample(s): the pressure rises "
-                         f"{time_s[n] - time_s[0]:.3g} s into the record; a vented rest of "
-                         "a second or more before it, or --tare N, gives a surer zero")
+            notes.append(f"tare from only {n} sample(s): the pressure rises {rises_s:.3g} s "
+                         "into the record; a vented rest of a second or more before it, or "
+                         "--tare N, gives a surer zero")
+        drift = _zero_drift(time_s, pressure, force, rest, handling)
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:
@@ -581,6 +602,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     if zero:
         force = force - zero
         notes.append(f"tare {zero:.4g} N subtracted ({handling['tare']})")
+    notes.extend(drift)
     samples: list[Sample] = []
     if timed:
         shape = series.shape(time_s, pressure)

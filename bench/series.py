@@ -8,7 +8,8 @@ A lab's record is pressure and force sampled in time. Before any step is taken f
 - :func:`tare`: the force's zero (a load cell is rarely at 0 N when the muscle is slack) is
   the mean force of the rest before the pressure rises, that rest ended where a fit in time
   puts the rise's start (:func:`rise_start`): the pressure's level there, not a band of
-  pressure, tells it, since on a ramp the first 0.03 bar already pull.
+  pressure, tells it, since on a ramp the first 0.03 bar already pull; :func:`end_rest` finds
+  the record's closing rest the same way, whose force tells a drifted zero.
 
 Then :func:`shape` tells a staircase (the pressure held on plateaus most of the time) from a
 ramp, and the steps are taken:
@@ -170,6 +171,15 @@ def tare(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) -> T
     f = force_N[rest]
     std = float(f.std(ddof=1)) / math.sqrt(f.size) if f.size > 1 else math.nan
     return Tare(float(f.mean()), std, float(np.median(pressure_bar[rest])), rest)
+
+
+def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) -> Tare:
+    """The rest that ends the record, found as :func:`tare` finds the one that starts it, on
+    the record read backwards: its mean force is the zero read after the run (a load cell that
+    drifted, or a muscle that did not come back, reads another)."""
+    n = pressure_bar.size
+    back = tare(time_s[-1] - time_s[::-1], pressure_bar[::-1], force_N[::-1])
+    return Tare(back.force_N, back.std_N, back.pressure_bar, slice(n - back.rest.stop, n))
 
 
 def shape(time_s: np.ndarray, pressure_bar: np.ndarray) -> str:

@@ -193,6 +193,23 @@ def test_the_tare_is_the_rest_before_the_ramp_not_its_first_pull(rest_s, tmp_pat
     assert ("tare from only" in err) == (n < 10)
 
 
+@pytest.mark.parametrize("drift_N", [0.0, 1.5])
+def test_a_zero_that_drifted_by_the_end_of_the_record_is_said(drift_N, tmp_path, mkm_cli):
+    # _ramp: 2 s vented, up and down, 1 s vented; the load cell drifts linearly in time
+    frame, _, _ = _ramp()
+    t = frame["t (s)"].to_numpy()
+    frame["Force (N)"] += drift_N * t / t[-1]
+    path = tmp_path / "ramp.csv"
+    frame.to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    recorded = run.meta.imported_from
+    # the rests' means: 0.3 N noise over 200 and 100 samples, 0.037 N of standard error; the
+    # drift is the rests' mid-times apart: 1 s into the record and 0.5 s before its end
+    expected = drift_N * (t[-1] - 0.5 - 1.0) / t[-1]
+    assert recorded["zero_drift_N"] == pytest.approx(expected, abs=4 * 0.037)
+    assert ("the force vented at the end reads" in err) == (drift_N > 0)
+
+
 def _clock_text(seconds: float, start_s: float) -> str:
     hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
     minutes, secs = divmod(rest, 60.0)
