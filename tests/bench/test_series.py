@@ -1,0 +1,49 @@
+"""Steps from a lab's time series (:mod:`mkm.bench.series`): the pieces on their own."""
+
+import numpy as np
+
+from mkm.bench import series
+
+
+def _staircase(rate_hz: float, seed: int = 0):
+    """Vented 5 s, then 1 and 2 bar held 20 s each, reached by 0.1 bar/s ramps; noise
+    0.005 bar."""
+    t = np.arange(0.0, 85.0, 1.0 / rate_hz)
+    p = np.interp(t, [0, 5, 15, 35, 45, 65, 85], [0, 0, 1, 1, 2, 2, 2])
+    return t, p + np.random.default_rng(seed).normal(0, 0.005, t.size)
+
+
+def test_plateaus_scan_each_sample_once(monkeypatch):
+    # a start that could not hold min_s went on one sample at a time, each rescanning its band
+    # with a running median: a 1 kHz record's ramps took minutes (a 60 s ramp at 1 kHz: 8 min)
+    t, p = _staircase(1000.0)
+    # a running median every 16 samples of a plateau: about n / 16 (sample by sample over the
+    # 20 s of ramp, 20000 starts of about 300 samples each: some 400000)
+    limit, calls, median = t.size // 8, [], np.median
+
+    def counted(a, *args, **kwargs):
+        calls.append(1)
+        assert len(calls) <= limit, "np.median called more than n / 8 times"
+        return median(a, *args, **kwargs)
+
+    monkeypatch.setattr(series.np, "median", counted)
+    found = series.plateaus(t, p)
+    # the vented rest and the two holds, each found whole: it starts where the ramp comes
+    # within the 0.03 bar band of its level (0.3 s of a 0.1 bar/s ramp) and ends where the
+    # next ramp leaves it
+    assert [round(q.level_bar, 2) for q in found] == [0.0, 1.0, 2.0]
+    for q, (start_s, stop_s) in zip(found, [(0, 5), (15, 35), (45, 85)], strict=True):
+        assert t[q.start] == np.clip(t[q.start], start_s - 0.35, start_s + 0.05)
+        assert t[q.stop - 1] == np.clip(t[q.stop - 1], stop_s - 0.05, stop_s + 0.35)
+
+
+def test_plateaus_are_those_of_the_record_at_any_rate():
+    # the same staircase at 10 Hz and at 1 kHz: the same plateaus, to the 0.3 s a 0.1 bar/s
+    # ramp takes through the 0.03 bar band and a sample at 10 Hz
+    low, high = (series.plateaus(*_staircase(rate)) for rate in (10.0, 1000.0))
+    t_low, t_high = _staircase(10.0)[0], _staircase(1000.0)[0]
+    assert len(low) == len(high) == 3
+    for a, b in zip(low, high, strict=True):
+        assert abs(t_low[a.start] - t_high[b.start]) <= 0.4
+        assert abs(t_low[a.stop - 1] - t_high[b.stop - 1]) <= 0.4
+        assert abs(a.level_bar - b.level_bar) < 0.005
