@@ -55,7 +55,7 @@ from mkm.bench.tables import (
 )
 from mkm.core.ranges import parse_number
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
-from mkm.fem.limits import PRACTICAL_RANGE, check_value
+from mkm.fem.limits import PRACTICAL_RANGE, check_value, outside
 
 if TYPE_CHECKING:
     from mkm.bench.budget import Declared
@@ -553,7 +553,9 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                      f"{found['pressure'].header!r} names no unit: above the "
                      f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; if they "
                      "are kPa or psi, import again with --units pressure=kPa (or psi)")
-    for k, p in enumerate(pressure):
+    # the first bad cell named (a record's every sample checked at once)
+    for k in np.flatnonzero(outside("pressure_bar", pressure))[:1]:
+        p = pressure[k]
         if p < 0:
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "

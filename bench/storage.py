@@ -26,6 +26,7 @@ import dataclasses
 import datetime
 import enum
 import errno
+import functools
 import io
 import json
 import math
@@ -455,6 +456,9 @@ def run_folder_name(muscle_id: str, when: datetime.datetime | None = None, k: in
 
 
 def _cell(value, column: str) -> str:
+    if type(value) is float:  # most cells: checked first (a record's samples are millions)
+        return "" if value != value else (f"{value:.10g}" if column in TIME_COLUMNS
+                                          else f"{value:.6g}")
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
     if isinstance(value, bool | np.bool_):
@@ -462,8 +466,12 @@ def _cell(value, column: str) -> str:
     if isinstance(value, float | np.floating):
         return f"{value:.10g}" if column in TIME_COLUMNS else f"{value:.6g}"
     if isinstance(value, str):
-        return spreadsheet_safe_text(value)
+        return _safe_text(value)
     return str(value)
+
+
+# a sample's phase and a step's direction repeat: each judged once
+_safe_text = functools.lru_cache(maxsize=256)(spreadsheet_safe_text)
 
 
 class RunWriter:
