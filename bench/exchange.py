@@ -699,6 +699,12 @@ def _check_export_target(out: Path, fmt: str) -> None:
         if out.exists() and not out.is_dir():
             raise ValueError(f"--out {out} is a file: expected a folder for steps.csv, "
                              "samples.csv and metadata.csv (--format csv)")
+        held = [f"{name}.csv" for name in EXPORT_SHEETS if (out / f"{name}.csv").exists()]
+        if held and not _an_export_folder(out):
+            what = ("is a run folder" if (out / "run.json").exists() else
+                    f"holds {', '.join(held)} that mkm export did not write")
+            raise ValueError(f"--out {out} {what}: expected a new folder, or one mkm export "
+                             "wrote (nothing is overwritten)")
         return
     if out.suffix.lower() != ".xlsx":
         raise ValueError(f"--out {out}: expected a workbook name ending in .xlsx (or --format "
@@ -708,6 +714,19 @@ def _check_export_target(out: Path, fmt: str) -> None:
     if out.exists() and set(sheet_names(out)) != set(EXPORT_SHEETS):
         raise ValueError(f"--out {out} exists and is not a workbook mkm export wrote: expected "
                          "a new name (nothing is overwritten)")
+
+
+def _an_export_folder(folder: Path) -> bool:
+    """Whether ``folder`` holds a CSV export of mkm export's own (its metadata.csv of keys and
+    values beside the steps), not a run folder nor a lab's own tables of those names."""
+    if (folder / "run.json").exists() or not (folder / "metadata.csv").is_file():
+        return False
+    try:
+        with open(folder / "metadata.csv", encoding="utf-8", newline="") as f:
+            first = f.readline().strip()
+    except (OSError, UnicodeDecodeError):
+        return False
+    return first == "key,value"
 
 
 def _flatten(data, prefix: str = "") -> list[tuple[str, str]]:

@@ -158,6 +158,36 @@ def test_export_never_overwrites_a_lab_file_and_names_a_bad_target(tmp_path, cap
         assert code == 0, err
 
 
+def test_a_csv_export_never_overwrites_a_lab_folder_nor_a_run_folder(tmp_path, capsys):
+    """`mkm export RUN --format csv --out DIR` wrote its steps.csv and samples.csv over a lab's
+    own files of those names in DIR, and over a run folder's own (a run folder named as DIR);
+    now refused in one line, nothing written, and an earlier export is still replaced."""
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    run = _import(table, tmp_path, capsys).path
+    lab = tmp_path / "lab"
+    lab.mkdir()
+    (lab / "steps.csv").write_text("P;F\n0;1\n1;50\n")
+    before = {p.name: p.read_bytes() for p in run.iterdir()}
+    for out, message in [
+            (lab, f"--out {lab} holds steps.csv that mkm export did not write: expected a new "
+                  "folder, or one mkm export wrote (nothing is overwritten)"),
+            (run, f"--out {run} is a run folder: expected a new folder")]:
+        code, out_text, err = _run(["export", str(run), "--format", "csv", "--out", str(out)],
+                                   capsys)
+        assert code == 2 and out_text == "" and err.count("\n") == 1, err
+        assert message in err
+    assert (lab / "steps.csv").read_text() == "P;F\n0;1\n1;50\n"
+    assert sorted(p.name for p in lab.iterdir()) == ["steps.csv"]
+    assert {p.name: p.read_bytes() for p in run.iterdir()} == before
+    again = tmp_path / "csv"
+    for _ in range(2):
+        code, _, err = _run(["export", str(run), "--format", "csv", "--out", str(again)],
+                            capsys)
+        assert code == 0, err
+    assert len(pd.read_csv(again / "steps.csv")) == len(PRESSURES)
+
+
 def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys):
     # a bench run's vented step as the monitor read it: -0.000146 bar
     table = tmp_path / "steps.csv"
