@@ -498,10 +498,24 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     return found
 
 
+#: what a time column's header may name in place of a unit: the format of its clock readings
+#: or date-times (``Time (hh:mm:ss)``, ``Zeit [hh:mm:ss.fff]``, ``dd.mm.yyyy hh:mm:ss``)
+_CLOCK_FORMAT = re.compile(r"^(?:[dmy]{1,4}[./-][dmy]{1,4}[./-][dmy]{1,4}[ t])?h{1,2}:m{1,2}"
+                           r":s{1,2}(?:[.,][fsz0]{1,6})?$", re.IGNORECASE)
+
+
+def clock_format(unit: str | None) -> bool:
+    """Whether a time column's unit as written is the format of clock readings
+    (``hh:mm:ss``), not a unit: its cells are read as clock readings or date-times."""
+    return unit is not None and bool(_CLOCK_FORMAT.match(unit.strip()))
+
+
 def _check_unit(table: RawTable, column: Column) -> None:
     role = ROLES[column.role]
     if column.unit is None:
         return
+    if column.role == "time" and clock_format(column.unit):
+        return  # its cells are clock readings: column_values reads them as seconds
     if role.unit is None:
         raise ValueError(f"{table.name}: column {column.header!r} ({column.role}) takes no "
                          f"unit, got {column.unit!r}")
@@ -539,6 +553,12 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     role = ROLES[column.role]
     raw = [row[column.index] for row in table.rows]
     if column.role == "time":
+        if clock_format(column.unit) and raw and _clock(raw[0]) is None:
+            raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
+                             f"{column.header!r}): {_shown(raw[0])} is not a clock reading "
+                             f"as the header's {column.unit!r} says: expected times such as "
+                             "09:05:00.250, or a header naming the unit of its numbers "
+                             "(Time [s])")
         elapsed = _elapsed_s(table, column, raw)
         if elapsed is not None:
             return elapsed
