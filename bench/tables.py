@@ -336,6 +336,10 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}(]*(?:\([^)]*\))?[^)\]}]*)"
                         r"[)\]}]\s*$")
 _WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
+#: a header's name ending in a pressure unit, and the mark that may follow it in brackets
+_MARKED_UNIT = re.compile(r"^(?P<name>.*?\S)[\s_,]+(?P<unit>m?bar|[km]?pa|psi)\s*$",
+                          re.IGNORECASE)
+_PRESSURE_MARK = re.compile(r"g|gauge|ü|a|abs|absolute", re.IGNORECASE)
 
 
 @cache
@@ -403,7 +407,14 @@ def parse_header(text: str) -> tuple[str, str | None]:
     text = str(text).strip()
     match = _BRACKETED.match(text)
     if match and match.group("name").strip():
-        return _name(_WORDS.split(match.group("name"))), match.group("unit").strip() or None
+        name, unit = match.group("name"), match.group("unit").strip()
+        # a pressure unit written after the name with its gauge or absolute mark in brackets
+        # ("P bar(g)", "Druck bar(ü)", "p kPa (a)"): the unit is the two together
+        marked = _MARKED_UNIT.match(name)
+        if marked and _PRESSURE_MARK.fullmatch(unit):
+            return (_name(_WORDS.split(marked.group("name"))),
+                    f"{marked.group('unit')}({unit})")
+        return _name(_WORDS.split(name)), unit or None
     words = [w for w in _WORDS.split(text) if w]
     for k, word in enumerate(words[1:], start=1):
         unit = parse_unit(word)
