@@ -52,6 +52,7 @@ from mkm.bench.tables import (
     recognise,
     sheet_names,
     without_blank_rows,
+    without_summary_rows,
 )
 from mkm.core.ranges import parse_number
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
@@ -232,8 +233,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                              f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "
                              f"name it with --columns {missing[0]}=COLUMN (and --units "
                              f"{missing[0]}=UNIT)")
-        table = without_blank_rows(table, [found[r] for r in (*REQUIRED_ROLES, "time")
-                                           if r in found])
+        table = without_blank_rows(without_summary_rows(table),
+                                   [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in {c.index for c in found.values()}])
         notify(f"{table.name}: {recognition.line()}"

@@ -84,6 +84,8 @@ class RawTable:
     decimal: str = "."
     #: the first blank cell of each row :func:`without_blank_rows` left out (``B7``)
     blanks_skipped: list[str] = field(default_factory=list)
+    #: the cell naming the statistic of each row :func:`without_summary_rows` left out
+    summaries_skipped: list[str] = field(default_factory=list)
 
     @property
     def name(self) -> str:
@@ -98,7 +100,8 @@ class RawTable:
         return {"sheet": self.sheet, "header_row": self.header_row,
                 "title_rows": self.title_rows, "separator": self.separator,
                 "decimal": self.decimal, "rows": len(self.rows),
-                "rows_skipped_for_a_blank_cell": self.blanks_skipped}
+                "rows_skipped_for_a_blank_cell": self.blanks_skipped,
+                "summary_rows_skipped": self.summaries_skipped}
 
 
 def _column_letters(index: int) -> str:
@@ -670,6 +673,33 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
+#: what a spreadsheet's summary row under the measurements is called (mean, sum, extremes,
+#: spread), in English, German and French: such a row is no step
+SUMMARY_WORDS = {"mean", "average", "avg", "sum", "total", "min", "max", "minimum", "maximum",
+                 "std", "stdev", "std dev", "standard deviation", "median", "mittelwert",
+                 "mittel", "durchschnitt", "summe", "gesamt", "standardabweichung", "stabw",
+                 "moyenne", "somme", "écart-type", "ecart-type", "écart type", "médiane"}
+
+
+def without_summary_rows(table: RawTable) -> RawTable:
+    """``table`` without its summary rows (a cell reading ``Mean``, ``Mittelwert``, ``Summe``,
+    ``Max``, ... alone: :data:`SUMMARY_WORDS`), which a spreadsheet puts under the measurements
+    and which are no measurement; the cell naming each in ``summaries_skipped``."""
+    named = {}
+    for k, row in enumerate(table.rows):
+        for column, cell in enumerate(row):
+            if isinstance(cell, str) and cell.strip().rstrip(":").strip().lower() in \
+                    SUMMARY_WORDS:
+                named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
+                break
+    if not named:
+        return table
+    keep = [k for k in range(len(table.rows)) if k not in named]
+    return replace(table, rows=[table.rows[k] for k in keep],
+                   row_numbers=[table.row_numbers[k] for k in keep],
+                   summaries_skipped=list(named.values()))
+
+
 def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
     """``table`` without the rows whose cell in one of ``columns`` is blank (a lab sheet's
     stray empty cell: that row's reading is not known, and no value is made up for it), the
@@ -828,6 +858,9 @@ class Recognition:
             extras.append("decimal comma")
         if self.table.title_rows:
             extras.append(f"{self.table.title_rows} title row(s) skipped")
+        if summaries := self.table.summaries_skipped:
+            extras.append(f"{len(summaries)} summary row(s) skipped: "
+                          + ", ".join(summaries[:3]) + (", ..." if len(summaries) > 3 else ""))
         if skipped := self.table.blanks_skipped:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))

@@ -684,3 +684,17 @@ def test_without_a_declared_accuracy_the_report_says_how_to_score_e_n(tmp_path, 
     assert ("no E_n: the table was imported without its instruments' accuracy (mkm import "
             "--accuracy force=...,pressure=... gives its steps one)") in text
     assert "import its table again with the instruments' accuracy" in text
+
+
+def test_a_spreadsheets_summary_rows_under_the_steps_are_no_steps(tmp_path, mkm_cli):
+    # was: 'Mittelwert' and 'Max' rows under a lab's steps imported as two more rising steps
+    # (1.25 bar, 178 N; 2.5 bar, 401 N), silently, into every score of the run
+    path = tmp_path / "lab.csv"
+    path.write_text("Nr.;Druck [bar];Kraft [N]\n1;0;5\n2;1,25;185\n3;2,5;410\n4;1,25;190\n"
+                    "5;0;6\n\nMittelwert;1,0;159,2\nMax:;2,5;410\n", encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0, 1.25, 2.5, 1.25, 0.0]
+    assert run.steps["direction"].tolist() == ["up", "up", "up", "down", "down"]
+    assert "2 summary row(s) skipped: A8 ('Mittelwert'), A9 ('Max:')" in err
+    assert run.meta.imported_from["summary_rows_skipped"] == ["A8 ('Mittelwert')",
+                                                              "A9 ('Max:')"]
