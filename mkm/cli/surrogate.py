@@ -77,7 +77,7 @@ def register(subparsers) -> None:
     add_geometry_arguments(predict)
     _parameter_arguments(predict)
     predict.add_argument("--out", help="write the CSV here instead of stdout")
-    predict.set_defaults(func=_predict)
+    predict.set_defaults(func=_predict, written_files={"out": ".csv"})
 
     test = sub.add_parser(
         "test", help="test muscles I-V against our FE: Table 3, Figure 6",
@@ -113,7 +113,7 @@ def register(subparsers) -> None:
     ref.add_argument("--update-shipped", action="store_true",
                      help="write the shipped reference surrogate/data/fe_test_muscles.csv "
                      "instead (what the report and `surrogate test` read by default)")
-    ref.set_defaults(func=_reference)
+    ref.set_defaults(func=_reference, written_files={"out": ".csv"})
     design = sub.add_parser(
         "design", help="build the space-filling FE design the default surrogate learns from",
         description="Place --muscles muscles over the box (pressure 0-2.5 bar, D0 30-50 mm, t0 "
@@ -158,7 +158,7 @@ def register(subparsers) -> None:
     design.add_argument("--range", choices=("box", "practical"), default="box",
                         help="practical: --muscles fresh random muscles of the practical range "
                         "(seed --seed; sweeps 0-8 bar) instead of the box's design")
-    design.set_defaults(func=_design)
+    design.set_defaults(func=_design, written_files={"out": ".csv"})
 
     evaluate = sub.add_parser(
         "evaluate", help="score a surrogate on fresh random muscles the FE computes now",

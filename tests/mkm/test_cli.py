@@ -619,7 +619,8 @@ RUN_DIR = Path(__file__).resolve().parents[2] / "data" / "experimental" / \
 
 @pytest.mark.parametrize("argv, said", [
     (["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05", "--out",
-      "{dir}"], "expected a path this command can use"),
+      "{dir}"], "is a folder: this command writes one file: expected a file name ending in "
+     ".csv"),
     # the commands that write a folder say so before any work (was: design searched, then
     # failed at the write)
     (["design", "--require", "300N@2.5bar,eps=0.1", "--out", "{file}"],
@@ -706,6 +707,40 @@ def test_every_path_a_command_writes_is_checked_as_out_is(argv, shown, tmp_path,
     assert code == 2 and stdout == "" and err.count("\n") == 1, err
     assert f"error: {shown} is not a path Windows can make (" in err
     assert list(tmp_path.iterdir()) == []
+
+
+SOLVE = ["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05"]
+
+
+@pytest.mark.parametrize("argv, shown, why, example", [
+    ([*SOLVE, "--out", "results/"], "--out 'results/'", "ends in a folder separator",
+     ".csv, such as results/result.csv"),
+    ([*SOLVE, "--out", "results"], "--out 'results'", "has no file suffix",
+     ".csv, such as results.csv"),
+    ([*SOLVE, "--out", "runs"], "--out 'runs'", "is a folder", ".csv, such as runs/result.csv"),
+    (["surrogate", "predict", "--D0", "40", "--t0", "3", "--eps", "0.1", "--out", "pred/"],
+     "--out 'pred/'", "ends in a folder separator", ".csv, such as pred/result.csv"),
+    (["fem", "dataset", "--grid", "paper", "--model", "eq2", "--out", "ds/"], "--out 'ds/'",
+     "ends in a folder separator", ".csv, such as ds/result.csv"),
+    (["fem", "calibrate", "--model", "eq2", "--out", "lab"], "--out 'lab'",
+     "has no file suffix", ".json, such as lab.json"),
+    (["check", "--example", "bench/"], "--example 'bench/'", "ends in a folder separator",
+     ".toml, such as bench/result.toml"),
+])
+def test_a_folder_where_a_command_writes_one_file_is_refused(argv, shown, why, example,
+                                                             tmp_path, monkeypatch, mkm_run):
+    # was: a file named 'results' (the slash dropped) and 'results.json' beside it, a file
+    # 'pred', a dataset 'ds', a calibration 'lab', a config 'bench': none a folder, none with
+    # the suffix a spreadsheet or an editor opens it by
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "runs").mkdir()
+    code, stdout, err = mkm_run(argv)
+    assert code == 2 and stdout == "", err
+    assert err == (f"mkm {' '.join(argv[:2]) if argv[0] != 'check' else 'check'}: error: "
+                   f"{shown} {why}: this command writes one file: expected a file name ending "
+                   f"in {example}\n")
+    assert [p.name for p in tmp_path.iterdir()] == ["runs"]
+    assert list((tmp_path / "runs").iterdir()) == []
 
 
 def test_a_bad_mkm_out_is_named(tmp_path, monkeypatch, mkm_run):
