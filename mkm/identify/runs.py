@@ -276,4 +276,12 @@ def load_runs(paths) -> list[RunData]:
                 raise ValueError(f"runs {first.name} and {run.name} are of different muscles "
                                  f"({key}={a:g} and {b:g}): expected the runs of one tube (the "
                                  "length may differ)")
+    if not any(np.nanmax(r.steps["force_N_mean"].to_numpy(float), initial=0.0) > 0
+               for r in runs):
+        # a slack muscle (a published map at its shortest length): every model that predicts
+        # slack fits it exactly, and nothing of the muscle can be told from it
+        names = ", ".join(r.name for r in runs)
+        raise ValueError(f"run{'s' if len(runs) > 1 else ''} {names}: every settled force is "
+                         "0 N or less (a slack muscle): nothing to identify the muscle from; "
+                         "expected a run whose force rises with the pressure")
     return runs
