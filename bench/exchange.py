@@ -676,8 +676,10 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
                          f"most {EXCEL_MAX_ROWS}; use --format csv")
     # the loader's status and problems: a dead run's record still says "running", a copy cut
     # short still says every sample is there
+    # and the export's own record: a workbook travels without its run folder
+    exported = {"source": str(run.path), **provenance()}
     metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status),
-                                      "problems": run.problems}),
+                                      "problems": run.problems, "exported": exported}),
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}

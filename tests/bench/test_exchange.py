@@ -10,6 +10,7 @@ import pytest
 
 from mkm.bench.storage import load_run
 from mkm.cli import main
+from mkm.core.records import command_line, spreadsheet_safe_text
 from mkm.fem.ladder import make_model
 from mkm.fem.paper import equation7_err_pct
 from mkm.registry import parse_specs
@@ -131,6 +132,32 @@ def test_export_as_workbook_and_csv(tmp_path, capsys):
                         capsys)
     assert code == 0 and sorted(p.name for p in (tmp_path / "csv").iterdir()) == [
         "metadata.csv", "samples.csv", "steps.csv"]
+
+
+def test_an_export_records_its_own_provenance(tmp_path, capsys):
+    # was: the metadata sheet held the run's record only, not which command, code and source
+    # folder made the workbook (it travels without its run folder)
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    run = _import(table, tmp_path, capsys).path
+    for fmt, out in (("xlsx", tmp_path / "run.xlsx"), ("csv", tmp_path / "csv")):
+        code, _, err = _run(["export", str(run), "--format", fmt, "--out", str(out)], capsys)
+        assert code == 0, err
+        frame = (pd.read_excel(out, sheet_name="metadata") if fmt == "xlsx" else
+                 pd.read_csv(out / "metadata.csv"))
+        meta = dict(zip(frame["key"], frame["value"], strict=True))
+        assert meta["exported.source"] == str(run)
+        # this process's, as every record (made spreadsheet-safe: "-c" under pytest-xdist)
+        assert meta["exported.command"] == spreadsheet_safe_text(command_line())
+        assert meta["exported.versions.mkm-bench"] == "0.1.0"
+        assert meta["exported.date_utc"][:2] == "20"
+        assert meta["provenance.date_utc"] <= meta["exported.date_utc"]  # the run's own, kept
+    # the workbook still imports back to the run it was
+    code, out, err = _run(["import", str(tmp_path / "run.xlsx"), "--out",
+                           str(tmp_path / "back")], capsys)
+    assert code == 0, err
+    back = load_run(out.strip())
+    np.testing.assert_allclose(back.steps["force_N_mean"], load_run(run).steps["force_N_mean"])
 
 
 def test_export_never_overwrites_a_lab_file_and_names_a_bad_target(tmp_path, capsys):
