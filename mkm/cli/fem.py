@@ -54,7 +54,7 @@ def register(subparsers) -> None:
         "(default), a CSV, or a bench run folder (its settled steps; where a pressure was "
         "measured rising and falling, the mean of both branches is fitted). Prints the fit; "
         "--out FILE writes it to a calibration file that --calibration FILE selects in other "
-        "commands; only --update-shipped rewrites the shipped fem/calibration.json.",
+        "commands; only --update-shipped rewrites the shipped mkm/fem/calibration.json.",
         epilog="example: mkm fem calibrate --model axisym --reference RUN_DIR --out lab.json; "
         "then mkm fem solve --model axisym --calibration lab.json --D0 40 --t0 3 --eps 0.1")
     add_model_arguments(cal, theta0=False)
@@ -70,7 +70,7 @@ def register(subparsers) -> None:
     cal.add_argument("--out", metavar="FILE",
                      help="write the fit into this calibration file (other entries kept)")
     cal.add_argument("--update-shipped", action="store_true",
-                     help="write the fit into the shipped fem/calibration.json, the default of "
+                     help="write the fit into the shipped mkm/fem/calibration.json, the default of "
                      "every command")
     cal.add_argument("--dry-run", action="store_true",
                      help="print the fit, write nothing (also the default without --out or "

@@ -1,5 +1,6 @@
 """The `mkm` command line: parsing of pressures and eps, one-line errors with exit status 2."""
 
+import argparse
 import io
 import json
 import re
@@ -907,3 +908,34 @@ def test_workers_are_refused_as_the_command_line_is_read(command, args, message,
         build_parser().parse_known_args([*command, *args])
     assert exit_.value.code == 2
     assert capsys.readouterr().err == f"mkm {' '.join(command)}: error: {message}\n"
+
+
+def _parsers(parser):
+    """``parser`` and every subcommand's parser under it."""
+    yield parser
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in dict.fromkeys(action.choices.values()):
+                yield from _parsers(sub)
+
+
+def test_every_shipped_file_a_help_names_is_where_the_package_has_it():
+    # was: "the shipped fem/calibration.json", "surrogate/data/mkm_design.csv", paths of the
+    # source tree that an installed wheel has as mkm/fem/..., mkm/surrogate/data/...
+    import mkm
+    from mkm.cli import build_parser
+
+    root = Path(mkm.__file__).parent.parent  # the installed tree (not resolved to the source)
+    named = set()
+    for parser in _parsers(build_parser()):
+        texts = [parser.description, parser.epilog,
+                 *(a.help for a in parser._actions if isinstance(a.help, str))]
+        for text in filter(None, texts):
+            named |= set(re.findall(r"(?<![\w./-])((?:mkm|fem|surrogate|bench)/[\w./]+"
+                                    r"\.(?:json|csv|toml))", text))
+    assert {"mkm/fem/calibration.json", "mkm/surrogate/data/mkm_design.csv",
+            "mkm/data/model_errors.csv"} <= named
+    assert [p for p in sorted(named) if not (root / p).is_file()] == []
+    calibration = next(a.help for a in build_parser()._subparsers._group_actions[0]
+                       .choices["report"]._actions if a.dest == "calibration")
+    assert "the calibration.json of `mkm identify`" in calibration
