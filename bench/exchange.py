@@ -244,6 +244,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     if not prepared:
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
                          f"{', '.join(map(repr, names))})")
+    untimed = [r.table.name for r in prepared if "time" not in r.columns]
+    if untimed and not isinstance(vented, str):  # a value given: it would be ignored unsaid
+        raise ValueError(f"--vented {vented:g} bar: {untimed[0]} has no time column: expected "
+                         "--vented with a time series only (its first samples read vented); a "
+                         "step table's pressures are imported as they are")
     groups = []
     for recognition in prepared:
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
@@ -539,7 +544,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if p < 0:
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
-                             "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
+                             "gauge pressure >= 0" + (" (--vented sets a vented reading to "
+                                                      "subtract)" if timed else ""))
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
     if timed:
         zero, zero_at = series.tare(pressure, force)

@@ -230,6 +230,25 @@ def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys
     assert code == 2 and "cell A4 (column 'P'): -0.05 bar is below 0" in err
 
 
+def test_vented_given_for_a_step_table_is_refused_not_ignored(tmp_path, capsys):
+    # was: --vented 50mbar accepted and ignored (a step table's pressures are imported as they
+    # are), and a pressure below 0 in a step table advised "--vented sets a vented reading to
+    # subtract", which does nothing there
+    table = tmp_path / "steps.csv"
+    table.write_text("P [bar],F [N]\n0.05,0\n1,100\n2,200\n", encoding="utf-8")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--vented", "50mbar", "--out",
+                           str(tmp_path / "runs")], capsys)
+    assert code == 2 and out == ""
+    assert err == ("mkm import: error: --vented 0.05 bar: steps.csv has no time column: "
+                   "expected --vented with a time series only (its first samples read vented); "
+                   "a step table's pressures are imported as they are\n")
+    assert not (tmp_path / "runs").exists()
+    table.write_text("P [bar],F [N]\n0,0\n1,100\n-0.05,0\n", encoding="utf-8")
+    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "runs")],
+                        capsys)
+    assert code == 2 and err.endswith("-0.05 bar is below 0: expected a gauge pressure >= 0\n")
+
+
 def test_a_force_that_falls_as_the_pressure_rises_is_questioned(tmp_path, capsys):
     table = tmp_path / "compression.csv"
     table.write_text("P [bar],F [N]\n0,0\n1,-100\n2,-200\n3,-300\n")
