@@ -52,6 +52,7 @@ from mkm.bench.tables import (
     recognise,
     sheet_names,
     without_blank_rows,
+    without_summary_rows,
 )
 from mkm.core.ranges import parse_number
 from mkm.core.records import file_sha256, provenance, spreadsheet_safe
@@ -233,8 +234,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                              f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "
                              f"name it with --columns {missing[0]}=COLUMN (and --units "
                              f"{missing[0]}=UNIT)")
-        table = without_blank_rows(table, [found[r] for r in (*REQUIRED_ROLES, "time")
-                                           if r in found])
+        table = without_blank_rows(without_summary_rows(table),
+                                   [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in {c.index for c in found.values()}])
         notify(f"{table.name}: {recognition.line()}"
@@ -244,6 +245,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     if not prepared:
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
                          f"{', '.join(map(repr, names))})")
+    untimed = [r.table.name for r in prepared if "time" not in r.columns]
+    if untimed and not isinstance(vented, str):  # a value given: it would be ignored unsaid
+        raise ValueError(f"--vented {vented:g} bar: {untimed[0]} has no time column: expected "
+                         "--vented with a time series only (its first samples read vented); a "
+                         "step table's pressures are imported as they are")
     groups = []
     for recognition in prepared:
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
@@ -559,7 +565,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if p < 0:
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
-                             "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
+                             "gauge pressure >= 0" + (" (--vented sets a vented reading to "
+                                                      "subtract)" if timed else ""))
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
     if timed:
         rest = series.tare(time_s, pressure, force)
@@ -709,8 +716,10 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
                          f"most {EXCEL_MAX_ROWS}; use --format csv")
     # the loader's status and problems: a dead run's record still says "running", a copy cut
     # short still says every sample is there
+    # and the export's own record: a workbook travels without its run folder
+    exported = {"source": str(run.path), **provenance()}
     metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status),
-                                      "problems": run.problems}),
+                                      "problems": run.problems, "exported": exported}),
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}
@@ -733,6 +742,12 @@ def _check_export_target(out: Path, fmt: str) -> None:
         if out.exists() and not out.is_dir():
             raise ValueError(f"--out {out} is a file: expected a folder for steps.csv, "
                              "samples.csv and metadata.csv (--format csv)")
+        held = [f"{name}.csv" for name in EXPORT_SHEETS if (out / f"{name}.csv").exists()]
+        if held and not _an_export_folder(out):
+            what = ("is a run folder" if (out / "run.json").exists() else
+                    f"holds {', '.join(held)} that mkm export did not write")
+            raise ValueError(f"--out {out} {what}: expected a new folder, or one mkm export "
+                             "wrote (nothing is overwritten)")
         return
     if out.suffix.lower() != ".xlsx":
         raise ValueError(f"--out {out}: expected a workbook name ending in .xlsx (or --format "
@@ -742,6 +757,19 @@ def _check_export_target(out: Path, fmt: str) -> None:
     if out.exists() and set(sheet_names(out)) != set(EXPORT_SHEETS):
         raise ValueError(f"--out {out} exists and is not a workbook mkm export wrote: expected "
                          "a new name (nothing is overwritten)")
+
+
+def _an_export_folder(folder: Path) -> bool:
+    """Whether ``folder`` holds a CSV export of mkm export's own (its metadata.csv of keys and
+    values beside the steps), not a run folder nor a lab's own tables of those names."""
+    if (folder / "run.json").exists() or not (folder / "metadata.csv").is_file():
+        return False
+    try:
+        with open(folder / "metadata.csv", encoding="utf-8", newline="") as f:
+            first = f.readline().strip()
+    except (OSError, UnicodeDecodeError):
+        return False
+    return first == "key,value"
 
 
 def _flatten(data, prefix: str = "") -> list[tuple[str, str]]:

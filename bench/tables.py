@@ -92,6 +92,8 @@ class RawTable:
     decimal: str = "."
     #: the first blank cell of each row :func:`without_blank_rows` left out (``B7``)
     blanks_skipped: list[str] = field(default_factory=list)
+    #: the cell naming the statistic of each row :func:`without_summary_rows` left out
+    summaries_skipped: list[str] = field(default_factory=list)
 
     @property
     def name(self) -> str:
@@ -106,7 +108,8 @@ class RawTable:
         return {"sheet": self.sheet, "header_row": self.header_row,
                 "title_rows": self.title_rows, "separator": self.separator,
                 "decimal": self.decimal, "rows": len(self.rows),
-                "rows_skipped_for_a_blank_cell": self.blanks_skipped}
+                "rows_skipped_for_a_blank_cell": self.blanks_skipped,
+                "summary_rows_skipped": self.summaries_skipped}
 
 
 def _column_letters(index: int) -> str:
@@ -344,6 +347,10 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}(]*(?:\([^)]*\))?[^)\]}]*)"
                         r"[)\]}]\s*$")
 _WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
+#: a header's name ending in a pressure unit, and the mark that may follow it in brackets
+_MARKED_UNIT = re.compile(r"^(?P<name>.*?\S)[\s_,]+(?P<unit>m?bar|[km]?pa|psi)\s*$",
+                          re.IGNORECASE)
+_PRESSURE_MARK = re.compile(r"g|gauge|ü|a|abs|absolute", re.IGNORECASE)
 
 
 @cache
@@ -411,7 +418,14 @@ def parse_header(text: str) -> tuple[str, str | None]:
     text = str(text).strip()
     match = _BRACKETED.match(text)
     if match and match.group("name").strip():
-        return _name(_WORDS.split(match.group("name"))), match.group("unit").strip() or None
+        name, unit = match.group("name"), match.group("unit").strip()
+        # a pressure unit written after the name with its gauge or absolute mark in brackets
+        # ("P bar(g)", "Druck bar(ü)", "p kPa (a)"): the unit is the two together
+        marked = _MARKED_UNIT.match(name)
+        if marked and _PRESSURE_MARK.fullmatch(unit):
+            return (_name(_WORDS.split(marked.group("name"))),
+                    f"{marked.group('unit')}({unit})")
+        return _name(_WORDS.split(name)), unit or None
     words = [w for w in _WORDS.split(text) if w]
     for k, word in enumerate(words[1:], start=1):
         unit = parse_unit(word)
@@ -506,10 +520,24 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     return found
 
 
+#: what a time column's header may name in place of a unit: the format of its clock readings
+#: or date-times (``Time (hh:mm:ss)``, ``Zeit [hh:mm:ss.fff]``, ``dd.mm.yyyy hh:mm:ss``)
+_CLOCK_FORMAT = re.compile(r"^(?:[dmy]{1,4}[./-][dmy]{1,4}[./-][dmy]{1,4}[ t])?h{1,2}:m{1,2}"
+                           r":s{1,2}(?:[.,][fsz0]{1,6})?$", re.IGNORECASE)
+
+
+def clock_format(unit: str | None) -> bool:
+    """Whether a time column's unit as written is the format of clock readings
+    (``hh:mm:ss``), not a unit: its cells are read as clock readings or date-times."""
+    return unit is not None and bool(_CLOCK_FORMAT.match(unit.strip()))
+
+
 def _check_unit(table: RawTable, column: Column) -> None:
     role = ROLES[column.role]
     if column.unit is None:
         return
+    if column.role == "time" and clock_format(column.unit):
+        return  # its cells are clock readings: column_values reads them as seconds
     if role.unit is None:
         raise ValueError(f"{table.name}: column {column.header!r} ({column.role}) takes no "
                          f"unit, got {column.unit!r}")
@@ -547,6 +575,12 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     role = ROLES[column.role]
     raw = [row[column.index] for row in table.rows]
     if column.role == "time":
+        if clock_format(column.unit) and raw and _clock(raw[0]) is None:
+            raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
+                             f"{column.header!r}): {_shown(raw[0])} is not a clock reading "
+                             f"as the header's {column.unit!r} says: expected times such as "
+                             "09:05:00.250, or a header naming the unit of its numbers "
+                             "(Time [s])")
         elapsed = _elapsed_s(table, column, raw)
         if elapsed is not None:
             return elapsed
@@ -665,6 +699,33 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
         # a time of day restarts at midnight: a step back of more than half a day is the next day
         values += _DAY_S * np.cumsum(np.r_[0.0, np.diff(values) < -_DAY_S / 2])
     return values - values[0]
+
+
+#: what a spreadsheet's summary row under the measurements is called (mean, sum, extremes,
+#: spread), in English, German and French: such a row is no step
+SUMMARY_WORDS = {"mean", "average", "avg", "sum", "total", "min", "max", "minimum", "maximum",
+                 "std", "stdev", "std dev", "standard deviation", "median", "mittelwert",
+                 "mittel", "durchschnitt", "summe", "gesamt", "standardabweichung", "stabw",
+                 "moyenne", "somme", "écart-type", "ecart-type", "écart type", "médiane"}
+
+
+def without_summary_rows(table: RawTable) -> RawTable:
+    """``table`` without its summary rows (a cell reading ``Mean``, ``Mittelwert``, ``Summe``,
+    ``Max``, ... alone: :data:`SUMMARY_WORDS`), which a spreadsheet puts under the measurements
+    and which are no measurement; the cell naming each in ``summaries_skipped``."""
+    named = {}
+    for k, row in enumerate(table.rows):
+        for column, cell in enumerate(row):
+            if isinstance(cell, str) and cell.strip().rstrip(":").strip().lower() in \
+                    SUMMARY_WORDS:
+                named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
+                break
+    if not named:
+        return table
+    keep = [k for k in range(len(table.rows)) if k not in named]
+    return replace(table, rows=[table.rows[k] for k in keep],
+                   row_numbers=[table.row_numbers[k] for k in keep],
+                   summaries_skipped=list(named.values()))
 
 
 def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
@@ -825,6 +886,9 @@ class Recognition:
             extras.append("decimal comma")
         if self.table.title_rows:
             extras.append(f"{self.table.title_rows} title row(s) skipped")
+        if summaries := self.table.summaries_skipped:
+            extras.append(f"{len(summaries)} summary row(s) skipped: "
+                          + ", ".join(summaries[:3]) + (", ..." if len(summaries) > 3 else ""))
         if skipped := self.table.blanks_skipped:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))

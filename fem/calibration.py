@@ -125,9 +125,11 @@ def _read(path: Path, mtime_ns: int) -> dict:
     except OSError as exc:
         raise ValueError(f"calibration {path}: cannot read it: {exc.strerror}{WANTED}") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-        raise ValueError(f"calibration {path}: not valid JSON: {exc}") from None
+        # a parameters.csv or steps.csv beside calibration.json, handed by mistake
+        raise ValueError(f"calibration {path}: not valid JSON ({exc}){WANTED}") from None
     except RecursionError:
-        raise ValueError(f"calibration {path}: not valid JSON: nested too deep") from None
+        raise ValueError(f"calibration {path}: not valid JSON (nested too deep){WANTED}") \
+            from None
     bad = [k for k, v in entries.items() if not isinstance(v, dict) or "theta0_deg" not in v] \
         if isinstance(entries, dict) else ["(the file)"]
     if bad:

@@ -26,12 +26,15 @@ DEMO_EPS = (0.0, 0.122)  # the paper's two tests of the prototype
 def run_demo(out_dir: str | Path | None = None, progress: bool = True,
              cache_dir=None, **report_options) -> Path:
     """Acquire the two simulated runs under ``out_dir/runs`` and report them in
-    ``out_dir/report``; returns the path of ``report.html``.
+    ``out_dir/report``; returns the path of ``report.html``. Raises
+    :class:`mkm.bench.backend.BenchError` when the simulated bench is held by another process
+    (another ``mkm acquire --backend sim``, another demo) or a run does not complete.
 
     ``out_dir`` defaults to ``mkm-out/demo`` (:func:`mkm.paths.default_out`); ``cache_dir``
     (default: the user's prediction cache) and ``report_options`` go to
     :func:`mkm.report.build_report`.
     """
+    from mkm.bench.backend import BenchError
     from mkm.bench.config import load_config
     from mkm.bench.run import acquire
     from mkm.prediction_cache import DEFAULT_CACHE_DIR
@@ -44,8 +47,8 @@ def run_demo(out_dir: str | Path | None = None, progress: bool = True,
         result = acquire(load_config(eps=eps), backend="sim", clock="virtual",
                          out_root=out / "runs", progress=progress and sys.stderr.isatty())
         if result.path is None or result.status != "complete":
-            raise RuntimeError(f"simulated run at eps = {eps:g} ended {result.status}: "
-                               f"{result.reason}")
+            raise BenchError(f"simulated run at eps = {eps:g} ended {result.status}: "
+                             f"{result.reason}")
         runs.append(result.path)
     write_json_atomic(out / RECORD, {"runs": [Path(r).name for r in runs]})
     return build_report(runs, out_dir=out / "report", progress=progress,

@@ -98,6 +98,14 @@ def copy_published_table(name: str, to: str | os.PathLike | None = None) -> Path
     target = Path(name) if to is None else Path(to)
     if target.is_dir():
         target = target / name
+    elif str(to).endswith(("/", os.sep)):  # "sub/": a folder meant, which Path would drop
+        raise ValueError(f"TO {str(to)!r}: no such folder: expected an existing folder (make "
+                         f"it first) or a file name ending in {source.suffix}")
+    elif target.suffix.lower() != source.suffix.lower():
+        # mkm import reads a table by its suffix: a copy named "maps" or "newdir" is no table
+        raise ValueError(f"TO {str(to)!r} is neither an existing folder nor a file name ending "
+                         f"in {source.suffix}: expected one of them (mkm import reads the table "
+                         "by its suffix)")
     if target.exists():
         raise ValueError(f"{target} exists: kept as it is; name a new file for {name}")
     if not target.parent.is_dir():

@@ -146,6 +146,11 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     the run has no E_n, if it has none.
     """
     row, within = recommend(summary, tolerance)
+    if not any(r.get("points", 0) > 0 for r in summary):
+        # a run stopped before its first step was recorded (Ctrl-C, SIGTERM, an interlock): no
+        # model failed, there was nothing to score
+        return (f"{run_label}: no step was kept, so no model can be scored: the run ended "
+                "before its first step was recorded (its status and signals below say why).")
     if row is None and any(r["valid_points"] > 0 for r in summary):
         # valid forces without an error: Equation 7 divides by the largest measured force
         return (f"{run_label}: no model can be scored: the run's largest measured force is "

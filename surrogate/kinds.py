@@ -149,12 +149,26 @@ def _find(name: str) -> tuple[Kind, dict]:
     name = named(name)
     if name in KINDS and KINDS.entry(name).members is None:
         return KINDS.entry(name), {}
+    near = ""
     for kind in KINDS.entries():
         if kind.members is not None:
             members = _resolve(kind.members)()
             if name in members:
                 return kind, dict(members[name])
-    raise ValueError(f"unknown surrogate kind {name!r}: expected {describe()}")
+            if name.startswith(kind.name.partition("<")[0]):  # a family's pattern, other values
+                near = f" ({kind.label}: {_member_values(members)}; e.g. {next(iter(members))})"
+    raise ValueError(f"unknown surrogate kind {name!r}{near}: expected {describe()}")
+
+
+def _member_values(members: dict[str, dict]) -> str:
+    """The values a family's members take, per argument: ``layers 1, 2 or 3, size 25, 50 or
+    100, ...`` (a pattern such as ``net-<layers>x<size>`` does not say which)."""
+    parts = []
+    for key in next(iter(members.values())):
+        values = list(dict.fromkeys(str(m[key]).lower() for m in members.values()))
+        parts.append(f"{key} " + (", ".join(values[:-1]) + " or " + values[-1]
+                                  if len(values) > 1 else values[0]))
+    return ", ".join(parts)
 
 
 def entry(name: str) -> Kind:

@@ -55,6 +55,11 @@ def make_jobs(grid: Grid, model: str, mesh: str | None = None,
     Resolving theta0 here makes the cache key change when the calibration does, and sends
     workers the angle itself rather than a lookup in their own ``fem/calibration.json``.
     """
+    if ":" in model:  # a predictor spec of the other commands: its parameters have no place
+        name = model.partition(":")[0]
+        raise ValueError(f"--model {model!r}: a dataset takes a model's name alone: expected one "
+                         f"of {', '.join(static_names())} (--model {name}), the mesh given by "
+                         "--mesh, theta0_deg and L0_mm by the grid")
     if entry(model).family in NOT_PHYSICS:
         raise ValueError(f"--model {model!r} is no physics model a dataset is built of: "
                          f"expected one of {', '.join(static_names())}")

@@ -84,6 +84,28 @@ def _check_written_names(args) -> None:
         value = getattr(args, dest, None)
         if isinstance(value, str) and value != "-":  # "-": stdout
             check_path_name(value, flag)
+            suffix = getattr(args, "written_files", {}).get(dest)
+            if suffix:
+                _check_file_name(value, flag, suffix)
+
+
+def _check_file_name(value: str, flag: str, suffix: str) -> None:
+    """``ValueError`` for a path where a command writes one file (``--out`` of ``fem solve``,
+    ``mkm check --example FILE``...) that names a folder: ``results/`` (the slash would be
+    dropped and a file ``results`` written), an existing folder, or a name without a suffix
+    (``results``: the other commands' ``--out`` is a folder; this one would be a file that no
+    spreadsheet or editor opens by its name)."""
+    from pathlib import Path
+
+    path = Path(value)
+    folder = value.endswith(("/", os.sep)) or path.is_dir()
+    if not folder and path.suffix:
+        return
+    why = ("is a folder" if path.is_dir() else "ends in a folder separator" if folder
+           else "has no file suffix")
+    example = path / f"result{suffix}" if folder else path.with_suffix(suffix)
+    raise ValueError(f"{flag} {value!r} {why}: this command writes one file: expected a file "
+                     f"name ending in {suffix}, such as {example}")
 
 
 def build_parser() -> argparse.ArgumentParser:

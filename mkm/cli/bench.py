@@ -128,7 +128,7 @@ def register(subparsers) -> None:
                        help=shared_help("--eps", "default: the config's"))
     check.add_argument("--pressures",
                        help=shared_help("--pressures", "default: the config's"))
-    check.set_defaults(func=_check)
+    check.set_defaults(func=_check, written_files={"example": ".toml"})
 
     vent = subparsers.add_parser(
         "vent", help="command 0 bar now and wait until the monitor reads it",

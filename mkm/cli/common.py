@@ -188,11 +188,12 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
 
 def add_calibration_argument(parser) -> None:
     """``--calibration FILE``: the theta0 calibration file for this command (read by
-    :func:`with_calibration`); the shipped ``fem/calibration.json`` is left as it is."""
+    :func:`with_calibration`); the shipped ``mkm/fem/calibration.json`` is left as it is."""
     parser.add_argument("--calibration", metavar="FILE",
-                        help="calibration file written by `mkm fem calibrate --out FILE`: the "
-                        "default theta0 of every physics model in this command (default: the "
-                        "shipped fem/calibration.json)")
+                        help="calibration file, the calibration.json of `mkm identify` or the "
+                        "file of `mkm fem calibrate --out FILE`: the default theta0 (and rubber) "
+                        "of every physics model in this command (default: the one shipped in "
+                        "the package, mkm/fem/calibration.json)")
 
 
 def with_calibration(func):

@@ -33,7 +33,8 @@ def register(subparsers) -> None:
                           epilog=EXAMPLE)
     copy.add_argument("name", help="the table's file name (mkm data list)")
     copy.add_argument("to", nargs="?", default=None,
-                      help="file or existing folder to write (default: the working folder)")
+                      help="a file name ending as the table's (.csv) or an existing folder to "
+                      "write it into (default: the working folder)")
     copy.set_defaults(func=_copy)
 
 

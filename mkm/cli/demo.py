@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import time
 
-from mkm.cli.common import add_progress_argument
+from mkm.cli.common import add_progress_argument, say
 
 
 def register(subparsers) -> None:
@@ -23,11 +23,17 @@ def register(subparsers) -> None:
 
 
 def _demo(args) -> int:
+    from mkm.bench.backend import BenchError  # here: the bench loads pandas
+    from mkm.cli.bench import EXIT_FAILED
     from mkm.demo import run_demo
     from mkm.progress import summary_line
 
     start = time.perf_counter()
-    path = run_demo(args.out, progress=not args.no_progress)
+    try:
+        path = run_demo(args.out, progress=not args.no_progress)
+    except BenchError as exc:  # the simulated bench held by another process, a run cut short
+        say(args, "error", exc)
+        return EXIT_FAILED
     summary_line("demo", f"2 simulated runs (eps 0 and 12.2 %) and their report in "
                  f"{time.perf_counter() - start:.0f} s")
     print(path)

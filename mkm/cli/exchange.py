@@ -77,7 +77,8 @@ def register(subparsers) -> None:
     exp.add_argument("run", help="the run folder")
     exp.add_argument("--format", default="xlsx", choices=("xlsx", "csv"))
     exp.add_argument("--out", default=None,
-                     help="the workbook (xlsx) or folder (csv); default: mkm-out/export/<run>")
+                     help="the workbook (xlsx) or folder (csv), new or one mkm export wrote "
+                     "(nothing else is overwritten); default: mkm-out/export/<run>")
     exp.set_defaults(func=_export)
 
 

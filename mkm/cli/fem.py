@@ -46,7 +46,7 @@ def register(subparsers) -> None:
                        help="auto only: largest acceptable error against the finest FE, "
                        "e.g. 2%% (default 2%%)")
     add_calibration_argument(solve)
-    solve.set_defaults(func=with_calibration(_solve))
+    solve.set_defaults(func=with_calibration(_solve), written_files={"out": ".csv"})
 
     cal = fem_sub.add_parser(
         "calibrate", help="fit theta0 of a model to a reference sweep (CSV or bench run)",
@@ -54,7 +54,7 @@ def register(subparsers) -> None:
         "(default), a CSV, or a bench run folder (its settled steps; where a pressure was "
         "measured rising and falling, the mean of both branches is fitted). Prints the fit; "
         "--out FILE writes it to a calibration file that --calibration FILE selects in other "
-        "commands; only --update-shipped rewrites the shipped fem/calibration.json.",
+        "commands; only --update-shipped rewrites the shipped mkm/fem/calibration.json.",
         epilog="example: mkm fem calibrate --model axisym --reference RUN_DIR --out lab.json; "
         "then mkm fem solve --model axisym --calibration lab.json --D0 40 --t0 3 --eps 0.1")
     add_model_arguments(cal, theta0=False)
@@ -70,12 +70,12 @@ def register(subparsers) -> None:
     cal.add_argument("--out", metavar="FILE",
                      help="write the fit into this calibration file (other entries kept)")
     cal.add_argument("--update-shipped", action="store_true",
-                     help="write the fit into the shipped fem/calibration.json, the default of "
+                     help="write the fit into the shipped mkm/fem/calibration.json, the default of "
                      "every command")
     cal.add_argument("--dry-run", action="store_true",
                      help="print the fit, write nothing (also the default without --out or "
                      "--update-shipped)")
-    cal.set_defaults(func=_calibrate)
+    cal.set_defaults(func=_calibrate, written_files={"out": ".json"})
 
     data = fem_sub.add_parser(
         "dataset", help="forces of a model over a grid of muscles (CSV), resumable, on local "
@@ -100,7 +100,7 @@ def register(subparsers) -> None:
                       "(default: %(default)s)")
     add_calibration_argument(data)
     add_progress_argument(data)
-    data.set_defaults(func=with_calibration(_dataset))
+    data.set_defaults(func=with_calibration(_dataset), written_files={"out": ".csv"})
 
     conv = fem_sub.add_parser(
         "convergence", help="axisym mesh study: force, dofs and seconds per mesh level, with a "

@@ -42,7 +42,7 @@ def register(subparsers) -> None:
         "Long: minutes per net and seed on two cores (start with --nets and --seeds).",
         epilog="example: mkm surrogate grid --nets 1,14 --seeds 2 --out mkm-out/surrogate-grid")
     grid.add_argument("--dataset", help="FE dataset CSV (default: the shipped paper grid, "
-                      "surrogate/data/mkm_dataset.csv)")
+                      "mkm/surrogate/data/mkm_dataset.csv)")
     grid.add_argument("--seeds", type=int, default=10, help="number of splits (default 10)")
     grid.add_argument("--out", default=str(default_out("surrogate-grid")),
                       help="folder (default %(default)s)")
@@ -77,7 +77,7 @@ def register(subparsers) -> None:
     add_geometry_arguments(predict)
     _parameter_arguments(predict)
     predict.add_argument("--out", help="write the CSV here instead of stdout")
-    predict.set_defaults(func=_predict)
+    predict.set_defaults(func=_predict, written_files={"out": ".csv"})
 
     test = sub.add_parser(
         "test", help="test muscles I-V against our FE: Table 3, Figure 6",
@@ -92,7 +92,7 @@ def register(subparsers) -> None:
     _dataset_argument(test)
     _accept_argument(test)
     test.add_argument("--reference", help="FE reference CSV (default: the shipped one, "
-                      "surrogate/data/fe_test_muscles.csv, from `mkm surrogate reference "
+                      "mkm/surrogate/data/fe_test_muscles.csv, from `mkm surrogate reference "
                       "--update-shipped`)")
     test.add_argument("--out", default=str(default_out("surrogate-test")),
                       help="folder (default %(default)s)")
@@ -111,9 +111,9 @@ def register(subparsers) -> None:
                                                       "fe_test_muscles.csv")),
                      help="CSV to write (default %(default)s)")
     ref.add_argument("--update-shipped", action="store_true",
-                     help="write the shipped reference surrogate/data/fe_test_muscles.csv "
+                     help="write the shipped reference mkm/surrogate/data/fe_test_muscles.csv "
                      "instead (what the report and `surrogate test` read by default)")
-    ref.set_defaults(func=_reference)
+    ref.set_defaults(func=_reference, written_files={"out": ".csv"})
     design = sub.add_parser(
         "design", help="build the space-filling FE design the default surrogate learns from",
         description="Place --muscles muscles over the box (pressure 0-2.5 bar, D0 30-50 mm, t0 "
@@ -148,17 +148,17 @@ def register(subparsers) -> None:
                         help="comma list of seeds: --muscles random muscles per seed instead "
                         "of the space-filling design (the std calibration set)")
     design.add_argument("--update-shipped", action="store_true",
-                        help="write the shipped file instead: surrogate/data/mkm_design.csv "
+                        help="write the shipped file instead: mkm/surrogate/data/mkm_design.csv "
                         "(what the default surrogate trains on), or with --random-seeds "
-                        "surrogate/data/mkm_std_calibration.csv (what scales its std), or "
-                        "with --random-seeds --held-out surrogate/data/mkm_std_holdout.csv "
+                        "mkm/surrogate/data/mkm_std_calibration.csv (what scales its std), or "
+                        "with --random-seeds --held-out mkm/surrogate/data/mkm_std_holdout.csv "
                         "(what rescales its std to 68/95/99.7 %% within 1/2/3 std)")
     design.add_argument("--held-out", action="store_true",
                         help="with --random-seeds --update-shipped: write the held-out set")
     design.add_argument("--range", choices=("box", "practical"), default="box",
                         help="practical: --muscles fresh random muscles of the practical range "
                         "(seed --seed; sweeps 0-8 bar) instead of the box's design")
-    design.set_defaults(func=_design)
+    design.set_defaults(func=_design, written_files={"out": ".csv"})
 
     evaluate = sub.add_parser(
         "evaluate", help="score a surrogate on fresh random muscles the FE computes now",
@@ -217,7 +217,7 @@ def _accept_argument(parser) -> None:
 
 def _dataset_argument(parser) -> None:
     parser.add_argument("--dataset", help="FE dataset CSV (default: the shipped design, "
-                        "surrogate/data/mkm_design.csv)")
+                        "mkm/surrogate/data/mkm_design.csv)")
 
 
 def _dataset(args):

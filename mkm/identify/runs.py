@@ -276,4 +276,21 @@ def load_runs(paths) -> list[RunData]:
                 raise ValueError(f"runs {first.name} and {run.name} are of different muscles "
                                  f"({key}={a:g} and {b:g}): expected the runs of one tube (the "
                                  "length may differ)")
+    seen: dict[str, RunData] = {}
+    for run in runs:
+        # the same table imported twice (two folders, one measurement), or a copied run folder:
+        # counted twice, it would halve the intervals and predict each run from its twin
+        twin = seen.setdefault(run.sha256.get("steps.csv", run.name), run)
+        if twin is not run:
+            raise ValueError(f"runs {twin.name} and {run.name} hold the same measurement (their "
+                             "steps.csv are identical: one table imported twice, or a copied "
+                             "run folder): expected each run once; leave one of them out")
+    if not any(np.nanmax(r.steps["force_N_mean"].to_numpy(float), initial=0.0) > 0
+               for r in runs):
+        # a slack muscle (a published map at its shortest length): every model that predicts
+        # slack fits it exactly, and nothing of the muscle can be told from it
+        names = ", ".join(r.name for r in runs)
+        raise ValueError(f"run{'s' if len(runs) > 1 else ''} {names}: every settled force is "
+                         "0 N or less (a slack muscle): nothing to identify the muscle from; "
+                         "expected a run whose force rises with the pressure")
     return runs

@@ -10,6 +10,7 @@ import pytest
 
 from mkm.bench.storage import load_run
 from mkm.cli import main
+from mkm.core.records import command_line, spreadsheet_safe_text
 from mkm.fem.ladder import make_model
 from mkm.fem.paper import equation7_err_pct
 from mkm.registry import parse_specs
@@ -133,6 +134,32 @@ def test_export_as_workbook_and_csv(tmp_path, capsys):
         "metadata.csv", "samples.csv", "steps.csv"]
 
 
+def test_an_export_records_its_own_provenance(tmp_path, capsys):
+    # was: the metadata sheet held the run's record only, not which command, code and source
+    # folder made the workbook (it travels without its run folder)
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    run = _import(table, tmp_path, capsys).path
+    for fmt, out in (("xlsx", tmp_path / "run.xlsx"), ("csv", tmp_path / "csv")):
+        code, _, err = _run(["export", str(run), "--format", fmt, "--out", str(out)], capsys)
+        assert code == 0, err
+        frame = (pd.read_excel(out, sheet_name="metadata") if fmt == "xlsx" else
+                 pd.read_csv(out / "metadata.csv"))
+        meta = dict(zip(frame["key"], frame["value"], strict=True))
+        assert meta["exported.source"] == str(run)
+        # this process's, as every record (made spreadsheet-safe: "-c" under pytest-xdist)
+        assert meta["exported.command"] == spreadsheet_safe_text(command_line())
+        assert meta["exported.versions.mkm-bench"] == "0.1.0"
+        assert meta["exported.date_utc"][:2] == "20"
+        assert meta["provenance.date_utc"] <= meta["exported.date_utc"]  # the run's own, kept
+    # the workbook still imports back to the run it was
+    code, out, err = _run(["import", str(tmp_path / "run.xlsx"), "--out",
+                           str(tmp_path / "back")], capsys)
+    assert code == 0, err
+    back = load_run(out.strip())
+    np.testing.assert_allclose(back.steps["force_N_mean"], load_run(run).steps["force_N_mean"])
+
+
 def test_export_never_overwrites_a_lab_file_and_names_a_bad_target(tmp_path, capsys):
     table = tmp_path / "lab.csv"
     _table().to_csv(table, index=False)
@@ -158,6 +185,36 @@ def test_export_never_overwrites_a_lab_file_and_names_a_bad_target(tmp_path, cap
         assert code == 0, err
 
 
+def test_a_csv_export_never_overwrites_a_lab_folder_nor_a_run_folder(tmp_path, capsys):
+    """`mkm export RUN --format csv --out DIR` wrote its steps.csv and samples.csv over a lab's
+    own files of those names in DIR, and over a run folder's own (a run folder named as DIR);
+    now refused in one line, nothing written, and an earlier export is still replaced."""
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    run = _import(table, tmp_path, capsys).path
+    lab = tmp_path / "lab"
+    lab.mkdir()
+    (lab / "steps.csv").write_text("P;F\n0;1\n1;50\n")
+    before = {p.name: p.read_bytes() for p in run.iterdir()}
+    for out, message in [
+            (lab, f"--out {lab} holds steps.csv that mkm export did not write: expected a new "
+                  "folder, or one mkm export wrote (nothing is overwritten)"),
+            (run, f"--out {run} is a run folder: expected a new folder")]:
+        code, out_text, err = _run(["export", str(run), "--format", "csv", "--out", str(out)],
+                                   capsys)
+        assert code == 2 and out_text == "" and err.count("\n") == 1, err
+        assert message in err
+    assert (lab / "steps.csv").read_text() == "P;F\n0;1\n1;50\n"
+    assert sorted(p.name for p in lab.iterdir()) == ["steps.csv"]
+    assert {p.name: p.read_bytes() for p in run.iterdir()} == before
+    again = tmp_path / "csv"
+    for _ in range(2):
+        code, _, err = _run(["export", str(run), "--format", "csv", "--out", str(again)],
+                            capsys)
+        assert code == 0, err
+    assert len(pd.read_csv(again / "steps.csv")) == len(PRESSURES)
+
+
 def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys):
     # a bench run's vented step as the monitor read it: -0.000146 bar
     table = tmp_path / "steps.csv"
@@ -171,6 +228,25 @@ def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys
     table.write_text("P,F\n0,0\n1,100\n-0.05,0\n")  # more than noise: a vacuum, refused
     code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
     assert code == 2 and "cell A4 (column 'P'): -0.05 bar is below 0" in err
+
+
+def test_vented_given_for_a_step_table_is_refused_not_ignored(tmp_path, capsys):
+    # was: --vented 50mbar accepted and ignored (a step table's pressures are imported as they
+    # are), and a pressure below 0 in a step table advised "--vented sets a vented reading to
+    # subtract", which does nothing there
+    table = tmp_path / "steps.csv"
+    table.write_text("P [bar],F [N]\n0.05,0\n1,100\n2,200\n", encoding="utf-8")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--vented", "50mbar", "--out",
+                           str(tmp_path / "runs")], capsys)
+    assert code == 2 and out == ""
+    assert err == ("mkm import: error: --vented 0.05 bar: steps.csv has no time column: "
+                   "expected --vented with a time series only (its first samples read vented); "
+                   "a step table's pressures are imported as they are\n")
+    assert not (tmp_path / "runs").exists()
+    table.write_text("P [bar],F [N]\n0,0\n1,100\n-0.05,0\n", encoding="utf-8")
+    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "runs")],
+                        capsys)
+    assert code == 2 and err.endswith("-0.05 bar is below 0: expected a gauge pressure >= 0\n")
 
 
 def test_a_force_that_falls_as_the_pressure_rises_is_questioned(tmp_path, capsys):

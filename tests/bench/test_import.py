@@ -259,6 +259,31 @@ def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli
     assert run.samples["time_s"].tolist() == t.tolist()
 
 
+@pytest.mark.parametrize("header", ["Time (hh:mm:ss)", "Zeit [HH:MM:SS.fff]",
+                                    "Time [dd.mm.yyyy hh:mm:ss]"])
+def test_a_time_header_naming_its_clock_format_reads_the_clock(header, tmp_path, mkm_cli):
+    # was: "column 'Time (hh:mm:ss)': 'hh:mm:ss' is not a unit of time (expected one like s)",
+    # refusing the clock readings the reader takes under a header without that format
+    t = np.arange(0.0, 23.0, 1.0)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    start = datetime.datetime(2026, 3, 1, 23, 59, 50)
+    cells = [(start + datetime.timedelta(seconds=s)).strftime(
+        "%d.%m.%Y %H:%M:%S" if "yyyy" in header else "%H:%M:%S.%f")[:23] for s in t]
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({header: cells, "P": p, "F": 150.0 * p}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0.1")
+    unit = header[header.index(next(c for c in "([" if c in header)) + 1:-1]
+    assert f"{header!r} -> time [{unit} -> s]" in err
+    assert run.samples["time_s"].tolist() == t.tolist()  # past midnight too
+    # numbers under a header that says clock readings: named, not read as seconds
+    pd.DataFrame({header: t, "P": p, "F": 150.0 * p}).to_csv(path, index=False)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0.1", "--out",
+                            str(tmp_path / "other")])
+    assert code == 2 and err.count("\n") == 1, err
+    assert (f"lab.csv, cell A2 (column {header!r}): '0.0' is not a clock reading as the "
+            f"header's {unit!r} says: expected times such as 09:05:00.250") in err
+
+
 def test_a_time_column_mixing_clock_readings_and_numbers_names_the_cell(tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
     path.write_text("Zeit,P,F\n10:00:00,0,1\n10:00:01,1,2\n2,2,3\n")
@@ -704,3 +729,17 @@ def test_without_a_declared_accuracy_the_report_says_how_to_score_e_n(tmp_path, 
     assert ("no E_n: the table was imported without its instruments' accuracy (mkm import "
             "--accuracy force=...,pressure=... gives its steps one)") in text
     assert "import its table again with the instruments' accuracy" in text
+
+
+def test_a_spreadsheets_summary_rows_under_the_steps_are_no_steps(tmp_path, mkm_cli):
+    # was: 'Mittelwert' and 'Max' rows under a lab's steps imported as two more rising steps
+    # (1.25 bar, 178 N; 2.5 bar, 401 N), silently, into every score of the run
+    path = tmp_path / "lab.csv"
+    path.write_text("Nr.;Druck [bar];Kraft [N]\n1;0;5\n2;1,25;185\n3;2,5;410\n4;1,25;190\n"
+                    "5;0;6\n\nMittelwert;1,0;159,2\nMax:;2,5;410\n", encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0, 1.25, 2.5, 1.25, 0.0]
+    assert run.steps["direction"].tolist() == ["up", "up", "up", "down", "down"]
+    assert "2 summary row(s) skipped: A8 ('Mittelwert'), A9 ('Max:')" in err
+    assert run.meta.imported_from["summary_rows_skipped"] == ["A8 ('Mittelwert')",
+                                                              "A9 ('Max:')"]

@@ -129,6 +129,9 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
 @pytest.mark.parametrize("header, bar_per_unit", [
     ("Pressure [bar(g)]", 1.0), ("Pressure (bar g)", 1.0), ("Druck [bar(ü)]", 1.0),
     ("Pressure (kPa (g))", 0.01), ("p [psi gauge]", PSI_BAR), ("p_psig", PSI_BAR),
+    # the unit after the name, its mark alone in brackets: was "no pressure column among
+    # 'P bar(g)'" (the name read as 'p bar', the unit as 'g')
+    ("P bar(g)", 1.0), ("Druck bar (ü)", 1.0), ("p kPa (g)", 0.01), ("Pressure psi(g)", PSI_BAR),
 ])
 def test_a_pressure_marked_gauge_is_read_in_its_unit(header, bar_per_unit, tmp_path):
     # bar(g) was "no pressure column among 'Pressure [bar(g)]'", bar g "not a unit of pressure"
@@ -140,7 +143,7 @@ def test_a_pressure_marked_gauge_is_read_in_its_unit(header, bar_per_unit, tmp_p
 
 @pytest.mark.parametrize("header, unit", [
     ("Druck [bar(a)]", "bar(a)"), ("p [psia]", "psia"), ("Pressure (bar abs)", "bar abs"),
-    ("P [kPa (absolute)]", "kPa (absolute)"),
+    ("P [kPa (absolute)]", "kPa (absolute)"), ("P bar(a)", "bar(a)"), ("p psi (abs)", "psi(abs)"),
 ])
 def test_a_pressure_marked_absolute_is_refused_saying_why(header, unit, tmp_path):
     # was "'bar(a)' is not a unit of pressure (expected one like bar)": a lab's gauge reads

@@ -162,13 +162,20 @@ def test_a_calibration_is_a_value_given_to_the_models_that_take_it(tmp_path):
 @pytest.mark.parametrize(("text", "message"), [
     # the system's words for a missing file, then what was expected (was: the words alone)
     (None, "cannot read it: .+: expected the calibration.json mkm identify writes or the file "
-     "of mkm fem calibrate --out FILE$"), ("{", "not valid JSON"),
+     "of mkm fem calibrate --out FILE$"),
+    # identify's parameters.csv beside its calibration.json: was "not valid JSON: Expecting
+    # value: line 1 column 1 (char 0)", what was expected unsaid
+    ("parameter,value,ci_low\ntheta0_deg,27.76,27.41\n", r"not valid JSON \(Expecting value: "
+     r"line 1 column 1 \(char 0\)\): expected the calibration.json mkm identify writes or the "
+     "file of mkm fem calibrate --out FILE$"),
+    ("{", "not valid JSON"),
     ('{"axisym": {"rmse_N": 1}}', "entry 'axisym' has no theta0_deg"),
     ('{"eq2-inner": {"theta0_deg": null}}', "entry 'eq2-inner' has theta0_deg='None': expected "
      "a finite number"),
     ('{"thickwall": {"theta0_deg": 30, "C10_MPa": []}}', r"entry 'thickwall' has "
      r"C10_MPa='\[\]'"),
-    ("[" * 100_000 + "]" * 100_000, "not valid JSON: nested too deep"),
+    ("[" * 100_000 + "]" * 100_000, r"not valid JSON \(nested too deep\): expected the "
+     "calibration.json"),
 ])
 def test_bad_calibration_file_is_named_at_once(tmp_path, text, message):
     path = tmp_path / "cal.json"

@@ -1,5 +1,6 @@
 """The `mkm` command line: parsing of pressures and eps, one-line errors with exit status 2."""
 
+import argparse
 import io
 import json
 import re
@@ -619,7 +620,8 @@ RUN_DIR = Path(__file__).resolve().parents[2] / "data" / "experimental" / \
 
 @pytest.mark.parametrize("argv, said", [
     (["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05", "--out",
-      "{dir}"], "expected a path this command can use"),
+      "{dir}"], "is a folder: this command writes one file: expected a file name ending in "
+     ".csv"),
     # the commands that write a folder say so before any work (was: design searched, then
     # failed at the write)
     (["design", "--require", "300N@2.5bar,eps=0.1", "--out", "{file}"],
@@ -706,6 +708,40 @@ def test_every_path_a_command_writes_is_checked_as_out_is(argv, shown, tmp_path,
     assert code == 2 and stdout == "" and err.count("\n") == 1, err
     assert f"error: {shown} is not a path Windows can make (" in err
     assert list(tmp_path.iterdir()) == []
+
+
+SOLVE = ["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3", "--eps", "0.05"]
+
+
+@pytest.mark.parametrize("argv, shown, why, example", [
+    ([*SOLVE, "--out", "results/"], "--out 'results/'", "ends in a folder separator",
+     ".csv, such as results/result.csv"),
+    ([*SOLVE, "--out", "results"], "--out 'results'", "has no file suffix",
+     ".csv, such as results.csv"),
+    ([*SOLVE, "--out", "runs"], "--out 'runs'", "is a folder", ".csv, such as runs/result.csv"),
+    (["surrogate", "predict", "--D0", "40", "--t0", "3", "--eps", "0.1", "--out", "pred/"],
+     "--out 'pred/'", "ends in a folder separator", ".csv, such as pred/result.csv"),
+    (["fem", "dataset", "--grid", "paper", "--model", "eq2", "--out", "ds/"], "--out 'ds/'",
+     "ends in a folder separator", ".csv, such as ds/result.csv"),
+    (["fem", "calibrate", "--model", "eq2", "--out", "lab"], "--out 'lab'",
+     "has no file suffix", ".json, such as lab.json"),
+    (["check", "--example", "bench/"], "--example 'bench/'", "ends in a folder separator",
+     ".toml, such as bench/result.toml"),
+])
+def test_a_folder_where_a_command_writes_one_file_is_refused(argv, shown, why, example,
+                                                             tmp_path, monkeypatch, mkm_run):
+    # was: a file named 'results' (the slash dropped) and 'results.json' beside it, a file
+    # 'pred', a dataset 'ds', a calibration 'lab', a config 'bench': none a folder, none with
+    # the suffix a spreadsheet or an editor opens it by
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "runs").mkdir()
+    code, stdout, err = mkm_run(argv)
+    assert code == 2 and stdout == "", err
+    assert err == (f"mkm {' '.join(argv[:2]) if argv[0] != 'check' else 'check'}: error: "
+                   f"{shown} {why}: this command writes one file: expected a file name ending "
+                   f"in {example}\n")
+    assert [p.name for p in tmp_path.iterdir()] == ["runs"]
+    assert list((tmp_path / "runs").iterdir()) == []
 
 
 def test_a_bad_mkm_out_is_named(tmp_path, monkeypatch, mkm_run):
@@ -872,3 +908,34 @@ def test_workers_are_refused_as_the_command_line_is_read(command, args, message,
         build_parser().parse_known_args([*command, *args])
     assert exit_.value.code == 2
     assert capsys.readouterr().err == f"mkm {' '.join(command)}: error: {message}\n"
+
+
+def _parsers(parser):
+    """``parser`` and every subcommand's parser under it."""
+    yield parser
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in dict.fromkeys(action.choices.values()):
+                yield from _parsers(sub)
+
+
+def test_every_shipped_file_a_help_names_is_where_the_package_has_it():
+    # was: "the shipped fem/calibration.json", "surrogate/data/mkm_design.csv", paths of the
+    # source tree that an installed wheel has as mkm/fem/..., mkm/surrogate/data/...
+    import mkm
+    from mkm.cli import build_parser
+
+    root = Path(mkm.__file__).parent.parent  # the installed tree (not resolved to the source)
+    named = set()
+    for parser in _parsers(build_parser()):
+        texts = [parser.description, parser.epilog,
+                 *(a.help for a in parser._actions if isinstance(a.help, str))]
+        for text in filter(None, texts):
+            named |= set(re.findall(r"(?<![\w./-])((?:mkm|fem|surrogate|bench)/[\w./]+"
+                                    r"\.(?:json|csv|toml))", text))
+    assert {"mkm/fem/calibration.json", "mkm/surrogate/data/mkm_design.csv",
+            "mkm/data/model_errors.csv"} <= named
+    assert [p for p in sorted(named) if not (root / p).is_file()] == []
+    calibration = next(a.help for a in build_parser()._subparsers._group_actions[0]
+                       .choices["report"]._actions if a.dest == "calibration")
+    assert "the calibration.json of `mkm identify`" in calibration

@@ -272,3 +272,21 @@ def test_report_says_a_run_vented_a_dead_one_first(tmp_path):
                         tolerance=None, surrogate_section=False).read_text(encoding="utf-8")
     assert ("the bench was found left pressurised by run old/run (started "
             "2026-12-01T10:00:00+00:00, last commanded 2.5 bar): this run vented it first") in html
+
+
+def test_demo_on_a_held_simulated_bench_is_one_line(tmp_path, capsys):
+    """`mkm demo` while another command holds the simulated bench (another `mkm acquire
+    --backend sim`, another demo) said so in a BenchBusy traceback; now one line, exit 1, and
+    no run folder written."""
+    import os
+
+    from mkm.bench.ownership import BenchOwner
+
+    with BenchOwner("sim-Dev1", "acquire"):
+        rc = main(["demo", "--out", str(tmp_path / "demo"), "--no-progress"])
+    err = capsys.readouterr().err
+    assert rc == 1
+    assert err.startswith("mkm demo: error: bench sim-Dev1 is in use by pid "
+                          f"{os.getpid()} (`mkm acquire`, started 20")
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert not list((tmp_path / "demo").glob("runs/*"))

@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import re
 import shutil
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -433,3 +434,50 @@ def test_the_written_json_is_strict_json(one_run, tmp_path, mkm_run):
     json.loads((out / "calibration.json").read_text(), parse_constant=refuse)
     assumed = [p for p in record["parameters"] if p["status"] == "assumed"]
     assert assumed and all(p["ci_low"] is None and p["ci_high"] is None for p in assumed)
+
+
+def test_runs_of_a_slack_muscle_are_refused_saying_why(tmp_path, mkm_run):
+    # the published DMSP-20 at its shortest length (every force 0 N): was "mkm identify:
+    # error: math domain error" (the fit's residual 0, its BIC the log of 0)
+    table = tmp_path / "slack.csv"
+    table.write_text("P [bar],F [N]\n0.35,0\n1,0\n2,0\n3,0\n", encoding="utf-8")
+    code, out, err = mkm_run(["import", str(table), "--id", "slack", "--D0", "20", "--t0",
+                              "1.8", "--L0", "296", "--eps", "0.25", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 0, err
+    run = out.strip()
+    code, out, err = mkm_run(["identify", run, "--params", "theta0", "--model", "thickwall",
+                              "--search", "model", "--out", str(tmp_path / "id")])
+    assert code == 2 and out == ""
+    assert err.endswith(f"mkm identify: error: run {Path(run).name}: every settled force is 0 N "
+                        "or less (a slack muscle): nothing to identify the muscle from; "
+                        "expected a run whose force rises with the pressure\n"), err
+    assert not (tmp_path / "id").exists()
+
+
+def test_one_table_imported_twice_is_refused_not_counted_twice(tmp_path, mkm_run):
+    # was: the published map imported twice gave 4 runs of 2 measurements, identified with
+    # intervals as if independent and each run "predicted from the others" by its own twin
+    table = tmp_path / "lab.csv"
+    force = make_model("thickwall").predict([0.5, 1.0, 1.5, 2.0, 2.5], 30.0, 3.0, 0.0).force_N
+    table.write_text("P [bar],F [N]\n" + "".join(f"{p},{f:.3f}\n" for p, f in
+                                                  zip([0.5, 1.0, 1.5, 2.0, 2.5], force,
+                                                      strict=True)), encoding="utf-8")
+    runs = []
+    for _ in range(2):
+        code, out, err = mkm_run(["import", str(table), "--id", "lab", "--D0", "30", "--t0",
+                                  "3", "--L0", "282", "--eps", "0", "--out",
+                                  str(tmp_path / "runs")])
+        assert code == 0, err
+        runs.append(Path(out.strip()))
+    assert runs[0] != runs[1]
+    code, out, err = mkm_run(["identify", str(tmp_path / "runs"), "--params", "theta0",
+                              "--model", "thickwall", "--search", "model", "--out",
+                              str(tmp_path / "id")])
+    assert code == 2 and out == ""
+    first, second = (r.name for r in runs)  # in the order they were recorded
+    assert err.endswith(f"mkm identify: error: runs {first} and {second} hold the same "
+                        "measurement (their steps.csv are identical: one table imported twice, "
+                        "or a copied run folder): expected each run once; leave one of them "
+                        "out\n"), err
+    assert not (tmp_path / "id").exists()

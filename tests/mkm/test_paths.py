@@ -161,7 +161,21 @@ def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch,
     assert "exists: kept as it is" in capsys.readouterr().err
     assert main(["data", "copy", name, "sub/maps.csv"]) == 2  # no such folder
     assert "no such folder" in capsys.readouterr().err
+    # was: a file named 'sub' (the slash dropped) and one named 'maps', neither a table that
+    # mkm import reads ("unknown table format ''")
+    assert main(["data", "copy", name, "sub/"]) == 2
+    assert capsys.readouterr().err == ("mkm data copy: error: TO 'sub/': no such folder: "
+                                       "expected an existing folder (make it first) or a file "
+                                       "name ending in .csv\n")
+    assert main(["data", "copy", name, "maps"]) == 2
+    assert capsys.readouterr().err == ("mkm data copy: error: TO 'maps' is neither an existing "
+                                       "folder nor a file name ending in .csv: expected one of "
+                                       "them (mkm import reads the table by its suffix)\n")
+    assert sorted(p.name for p in work.iterdir()) == [name]
     (work / "sub").mkdir()
+    assert main(["data", "copy", name, "sub/"]) == 0
+    assert capsys.readouterr().out.strip() == str(Path("sub") / name)
+    (work / "sub" / name).unlink()
     assert main(["data", "copy", name, "sub"]) == 0
     assert capsys.readouterr().out.strip() == str(Path("sub") / name)
     assert main(["data", "path", name]) == 0

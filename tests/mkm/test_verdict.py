@@ -127,3 +127,14 @@ def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
     invalid = [_row("eq2", math.nan, 1e-6, valid=0)]
     assert verdict("Run 1", invalid, NAMES, 0.02) == (
         "Run 1: no model gives a valid force at any kept step: nothing to use.")
+
+
+def test_a_run_without_a_kept_step_is_said_so_not_that_no_model_is_valid():
+    # a run stopped by SIGTERM during its first step: its report's first line said "no model
+    # gives a valid force at any kept step: nothing to use", as if every model had failed
+    empty = [{**_row("eq2", math.nan, 0.0, valid=0), "points": 0},
+             {**_row("thickwall", math.nan, 0.0, valid=0), "points": 0}]
+    for summary in (empty, []):  # the report scores no model on a run without steps
+        assert verdict("Run 1 (eps 5.0 %, simulated)", summary, NAMES, 0.02) == (
+            "Run 1 (eps 5.0 %, simulated): no step was kept, so no model can be scored: the "
+            "run ended before its first step was recorded (its status and signals below say why).")

@@ -299,3 +299,15 @@ def test_coverage_fit_weighs_misses_by_the_tolerances():
     assert beta == 0.0
     assert np.mean(error <= c) == pytest.approx(0.712, abs=0.01)
     assert np.mean(error <= 2 * c) == pytest.approx(0.928, abs=0.004)
+
+
+@pytest.mark.parametrize("kind", ["net-2x10-relu", "net-4x50-tanh"])
+def test_a_net_outside_table_2_names_the_values_the_family_takes(kind):
+    # was "unknown surrogate kind 'net-2x10-relu': expected ... or
+    # net-<layers>x<size>-<relu|tanh|sigmoid>[-standardised]", a pattern it matches
+    with pytest.raises(ValueError) as caught:
+        make_estimator(kind)
+    assert str(caught.value).startswith(
+        f"unknown surrogate kind {kind!r} (paper net: layers 1, 2 or 3, size 25, 50 or 100, "
+        "activation relu, tanh or sigmoid, standardise_response false or true; e.g. "
+        "net-1x25-relu): expected best (muscle-gp), ")

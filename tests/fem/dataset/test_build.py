@@ -256,6 +256,19 @@ def test_a_dataset_is_built_of_a_physics_model_only(model, tmp_path):
     assert not (tmp_path / "d.csv").exists()
 
 
+@pytest.mark.parametrize("model", ["axisym:mesh=coarse", "eq2:diameter=braid"])
+def test_a_predictor_spec_is_refused_saying_the_dataset_takes_a_name(model, tmp_path):
+    # was "unknown model 'axisym:mesh=coarse': expected one of eq2, thickwall, axisym, friction,
+    # surrogate, auto": axisym named unknown and listed, with three models no dataset takes
+    with pytest.raises(ValueError) as caught:
+        tiny(model, out=tmp_path / "d.csv", workers=1, cache_dir=tmp_path)
+    name = model.partition(":")[0]
+    assert str(caught.value) == (f"--model {model!r}: a dataset takes a model's name alone: "
+                                 f"expected one of eq2, thickwall, axisym (--model {name}), the "
+                                 "mesh given by --mesh, theta0_deg and L0_mm by the grid")
+    assert not (tmp_path / "d.csv").exists()
+
+
 def test_the_command_takes_no_progress(tmp_path, monkeypatch, capsys):
     # its help promised a progress bar, and every long command's --no-progress was refused here
     import mkm.fem.dataset
