@@ -66,7 +66,7 @@ def plateaus(time_s: np.ndarray, pressure_bar: np.ndarray,
              tolerance_bar: float = PLATEAU_TOLERANCE_BAR,
              min_s: float = PLATEAU_MIN_S) -> list[Plateau]:
     """Runs of consecutive samples within ``tolerance_bar`` of their running median, lasting at
-    least ``min_s`` s."""
+    least ``min_s`` s, settled (:func:`_settled`)."""
     out, start = [], 0
     n = pressure_bar.size
     while start < n:
@@ -76,13 +76,36 @@ def plateaus(time_s: np.ndarray, pressure_bar: np.ndarray,
             stop += 1
             if (stop - start) % 16 == 0:  # a running median: noise does not drag the level
                 level = float(np.median(pressure_bar[start:stop]))
-        if time_s[stop - 1] - time_s[start] >= min_s:
-            out.append(Plateau(start, stop, float(np.median(pressure_bar[start:stop]))))
+        held = stop
+        if not _settled(time_s[start:stop], pressure_bar[start:stop], tolerance_bar):
+            # a rest and the slow ramp after it: the rest is the part before the kink
+            held = start + _kink(time_s[start:stop], pressure_bar[start:stop])
+            held = held if _settled(time_s[start:held], pressure_bar[start:held],
+                                    tolerance_bar) else start + 1
+        if time_s[held - 1] - time_s[start] >= min_s:
+            out.append(Plateau(start, held, float(np.median(pressure_bar[start:held]))))
+            stop = held
         # a run too short: the next starts where it left its band (a start inside it would
         # leave the band there too, or, on a ramp, find the plateau at most a band later),
         # so that each sample is scanned once: a 1 kHz ramp took minutes sample by sample
         start = stop
     return out
+
+
+def _settled(t: np.ndarray, p: np.ndarray, tolerance_bar: float) -> bool:
+    """Whether a run held in its band is a plateau, not a slow ramp: the trend of its middle
+    half (a plateau has settled by then and leaves its band only at the end; a ramp keeps its
+    rate) is within 4 standard errors of none, or carried over the whole run stays within half
+    ``tolerance_bar``. A ramp of 0.002-0.02 bar/s stays 2-15 s in a 0.03 bar band that moves
+    with its running median."""
+    middle = slice(t.size // 4, 3 * t.size // 4)
+    tt, pp = t[middle] - t[middle][0] if t[middle].size else t[middle], p[middle]
+    if tt.size < 4 or np.ptp(tt) <= 0:
+        return True
+    (slope, offset), residual = np.polyfit(tt, pp, 1, full=True)[:2]
+    spread = float(np.sum((tt - tt.mean()) ** 2))
+    se = math.sqrt(float(residual[0]) / (tt.size - 2) / spread) if residual.size else 0.0
+    return abs(slope) <= 4.0 * se or abs(slope) * (t[-1] - t[0]) <= 0.5 * tolerance_bar
 
 
 def branches(pressure_bar: np.ndarray) -> list[tuple[int, int, str]]:
@@ -147,23 +170,32 @@ def rise_start(time_s: np.ndarray, pressure_bar: np.ndarray) -> int:
     noise = 1.4826 * float(np.median(np.abs(step - np.median(step)))) / math.sqrt(2.0)
     above = np.flatnonzero(p > p.min() + max(10.0 * noise, RISE_WINDOW_BAR))
     w = int(above[0]) + 1 if above.size else p.size
+    return max(_kink(time_s[:w], p[:w], rising=True), 1)
+
+
+def _kink(t: np.ndarray, p: np.ndarray, rising: bool = False) -> int:
+    """Index of the kink of the level followed by a line (rising, if ``rising``) that fits
+    ``p(t)`` best by least squares: 1 to n - 3 (a level of one sample at least, a line of
+    three), 0 when none fits (fewer than 4 samples)."""
+    w = t.size
     if w < 4:
-        return 1
-    t, p = time_s[:w] - time_s[0], p[:w]
+        return 0
+    t = t - t[0]
     m = np.arange(w, 0, -1)  # samples from j on
 
     def tail(x):
         return np.cumsum(x[::-1])[::-1]
 
     s1, s2, sp, stp = tail(t), tail(t * t), tail(p), tail(t * p)
-    # the ramp's regressor x_i = max(t_i - t_j, 0) for a kink at sample j
+    # the line's regressor x_i = max(t_i - t_j, 0) for a kink at sample j
     sx = s1 - m * t
     sxx = s2 - 2.0 * t * s1 + m * t * t - sx * sx / w
     sxp = stp - t * sp - sx * sp[0] / w
     with np.errstate(divide="ignore", invalid="ignore"):
-        explained = np.where((sxx > 0) & (sxp > 0), sxp * sxp / sxx, -np.inf)
-    explained[0] = explained[-2:] = -np.inf  # a rest of one sample at least, a line of two
-    return max(int(np.argmax(explained)), 1)
+        explained = np.where((sxx > 0) & ((sxp > 0) if rising else True), sxp * sxp / sxx,
+                             -np.inf)
+    explained[0] = explained[-2:] = -np.inf
+    return int(np.argmax(explained))
 
 
 def tare(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) -> Tare:
@@ -185,8 +217,8 @@ def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) 
 
 def shape(time_s: np.ndarray, pressure_bar: np.ndarray) -> str:
     """``"staircase"`` when plateaus above the vented level hold at least
-    :data:`STAIRCASE_SHARE` of the pressurised time and there are two or more, else
-    ``"ramp"``."""
+    :data:`STAIRCASE_SHARE` of the pressurised time, there are two or more, and they step by
+    more than twice :data:`PLATEAU_TOLERANCE_BAR` (the median step), else ``"ramp"``."""
     low = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
     pressurised = pressure_bar > low
     if not pressurised.any():
@@ -194,8 +226,11 @@ def shape(time_s: np.ndarray, pressure_bar: np.ndarray) -> str:
     held = [q for q in plateaus(time_s, pressure_bar) if q.level_bar > low]
     dt = np.diff(time_s, append=time_s[-1])
     held_s = sum(float(dt[q.start:q.stop].sum()) for q in held)
+    # a staircase steps from level to level; a slow ramp's stretches that passed for plateaus
+    # follow each other a band apart
+    steps_bar = np.abs(np.diff([q.level_bar for q in held]))
     return "staircase" if len(held) >= 2 and held_s >= STAIRCASE_SHARE * float(
-        dt[pressurised].sum()) else "ramp"
+        dt[pressurised].sum()) and np.median(steps_bar) > 2 * PLATEAU_TOLERANCE_BAR else "ramp"
 
 
 def staircase_steps(time_s, pressure_bar, force_N, settle_config) -> tuple[list[StepRecord],

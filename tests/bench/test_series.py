@@ -47,3 +47,21 @@ def test_plateaus_are_those_of_the_record_at_any_rate():
         assert abs(t_low[a.start] - t_high[b.start]) <= 0.4
         assert abs(t_low[a.stop - 1] - t_high[b.stop - 1]) <= 0.4
         assert abs(a.level_bar - b.level_bar) < 0.005
+
+
+def test_a_slow_ramp_is_a_ramp_and_a_staircase_a_staircase():
+    # a quasi-static ramp of 0.017 bar/s stays 2-6 s in the 0.03 bar band that moves with its
+    # running median: it was read as a staircase of 94 plateaus, 84 of them unsettled, and
+    # identify found no usable step
+    rng = np.random.default_rng(4)
+    for rate_hz in (10.0, 100.0):
+        for bar_per_s in (0.005, 0.017, 0.1):
+            top_s = 2.5 / bar_per_s
+            t = np.arange(0.0, 2 * top_s + 10.0, 1.0 / rate_hz)
+            p = np.interp(t, [0, 5, 5 + top_s, 5 + 2 * top_s, 10 + 2 * top_s],
+                          [0, 0, 2.5, 0, 0]) + rng.normal(0, 0.005, t.size)
+            assert series.shape(t, p) == "ramp", (rate_hz, bar_per_s)
+            # the vented rest before it is still a plateau: a gauge's vented reading is found
+            assert abs(series.vented_offset(t, p + 0.6) - 0.6) < 0.006
+        t, p = _staircase(rate_hz)
+        assert series.shape(t, p) == "staircase"
