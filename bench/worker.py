@@ -3,7 +3,9 @@ regulator, and trips the interlocks (pymeasure's worker, beside the procedure in
 :mod:`mkm.bench.sequence` and the recorder in :mod:`mkm.bench.recorder`).
 
 Interlocks, checked on every sample; each stops the run (:class:`Stop`, status ``aborted``)
-after commanding the vent:
+after commanding the vent, which goes out as soon as the block holding the tripping sample is
+read: before that block is written to samples.csv, shown or plotted (a slow or full disk
+cannot delay it, nor take the interlock's reason from the run):
 
 - force: ``|force| >= safety.force_limit_fraction x capacity``, a reading within 2 LSB of a rail
   (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
@@ -106,14 +108,17 @@ class Acquisition:
         self._reading = (phase, step, set_bar)
         timeouts = 0
         trips: list[tuple[str, RunStatus]] = []
+        tripped: Stop | None = None
         while True:
             try:
                 with self.guard():
                     block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
                     rows = [self._sample(block.first_index + k, volts, phase, step, set_bar,
                                          trips) for k, volts in enumerate(block.volts)]
-                    self.recorder.samples(rows)
                     self.next_index = block.first_index + len(block.volts)
+                    if trips:  # acts first, keeps books after: the vent before the rows
+                        tripped = self._vent_for(*trips[0])
+                    self._record(rows, tripped)
                 break
             except ReadTimeout as exc:
                 timeouts += 1
@@ -130,12 +135,24 @@ class Acquisition:
                 self._overflowed(exc)
         for observer in self.observers:
             observer.block(rows)
-        if trips:
-            self._trip(*trips[0])
+        if tripped is not None:
+            raise tripped
         stop = self.stop_requested()
         if stop is not None:
             raise stop
         return rows
+
+    def _record(self, rows: list[Sample], tripped: Stop | None) -> None:
+        """Record a block's rows; after an interlock's vent (``tripped``) a disk that fails
+        them is added to the interlock's reason, which stays the run's."""
+        try:
+            self.recorder.samples(rows)
+        except OSError as exc:
+            if tripped is None:
+                raise
+            raise Stop(tripped.status, f"{tripped.reason}; the samples of the block that "
+                       f"tripped it could not be recorded ({type(exc).__name__}: {exc})") \
+                from exc
 
     def _overflowed(self, exc: BufferOverflow) -> None:
         """Restart after a buffer overflow and record the gap of the samples lost."""
@@ -269,12 +286,19 @@ class Acquisition:
         return None
 
     def _trip(self, message: str, status: RunStatus = RunStatus.ABORTED) -> None:
+        raise self._vent_for(message, status)
+
+    def _vent_for(self, message: str, status: RunStatus) -> Stop:
+        """Command the interlock's vent now; the :class:`Stop` that says so, to raise once the
+        tripping block is recorded."""
         try:
             self.command(0.0, "interlock vent")
         except Exception as exc:
-            raise Stop(status, f"{message}; the interlock's vent command failed "
-                       f"({type(exc).__name__}: {exc}): VENT BY HAND") from exc
-        raise Stop(status, f"{message}; vented")
+            stop = Stop(status, f"{message}; the interlock's vent command failed "
+                        f"({type(exc).__name__}: {exc}): VENT BY HAND")
+            stop.__cause__ = exc
+            return stop
+        return Stop(status, f"{message}; vented")
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its
