@@ -392,7 +392,7 @@ class BenchRun:
             else:
                 self.backend.write_command(0.0)
         except BaseException as exc:  # the device may be gone; closing must still happen
-            if acq is not None and acq.vented:  # written; only its record failed
+            if acq is not None and acq.written:  # written; only its record failed
                 problems.append(f"recording the vent failed ({type(exc).__name__}: {exc})")
             elif isinstance(exc, DaqDisconnected) and revive:
                 back, said = self._revive(f"vent command failed ({type(exc).__name__}: {exc})")

@@ -93,6 +93,7 @@ class Acquisition:
         self.measured_bar = math.nan  # the last plausible pressure read (see held_bar)
         self.next_index = 0
         self.vented = False  # the last command written was a successful vent
+        self.written = False  # the last command asked for reached the device
         self.marker_problem = ""  # the bench marker could not be updated after a vent
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
@@ -294,8 +295,12 @@ class Acquisition:
         try:
             self.command(0.0, "interlock vent")
         except Exception as exc:
-            stop = Stop(status, f"{message}; the interlock's vent command failed "
-                        f"({type(exc).__name__}: {exc}): VENT BY HAND")
+            if self.written:  # the vent went out; only its record (or marker) failed
+                stop = Stop(status, f"{message}; vented, but recording the interlock's vent "
+                            f"failed ({type(exc).__name__}: {exc})")
+            else:
+                stop = Stop(status, f"{message}; the interlock's vent command failed "
+                            f"({type(exc).__name__}: {exc}): VENT BY HAND")
             stop.__cause__ = exc
             return stop
         return Stop(status, f"{message}; vented")
@@ -329,7 +334,7 @@ class Acquisition:
         reg = self.config.regulator
         clamped = min(max(pressure_bar, 0.0), reg.max_pressure_bar)
         volts = reg.command_volts(clamped)
-        ok = False
+        ok = self.written = False
         if self.lease is not None and clamped > 0:
             # before the write: a kill between the write and any record still finds it; a
             # pressure the marker cannot record is not commanded
@@ -341,7 +346,7 @@ class Acquisition:
                                         f"{clamped:g} bar not commanded") from None
         try:
             self.backend.write_command(volts)
-            ok = True
+            ok = self.written = True
             self.command_bar = clamped
             self.vented = clamped == 0.0
             meta = self.recorder.meta

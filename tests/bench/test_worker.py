@@ -297,3 +297,51 @@ def test_a_disk_that_fails_the_tripping_block_keeps_the_interlocks_reason(config
     assert ("AO", 0.0) in events
     assert run.meta.counters["samples"] == len(run.samples) == 50  # samples 0-49 kept
     assert run.commands["purpose"].iloc[-2:].tolist() == ["interlock vent", "vent"]
+
+
+def test_an_interlock_vent_whose_record_fails_is_not_called_a_failed_vent(config, tmp_path,
+                                                                          monkeypatch):
+    # the vent went out, only its row of commands.csv met a full disk: the run must not say
+    # that the vent command failed and ask for a vent by hand while the regulator is vented
+    from mkm.bench.storage import RunWriter
+
+    events = _order_of_writes(monkeypatch)
+    append = RunWriter.append_command
+
+    def full_for_the_interlock(self, row):
+        if row.purpose == "interlock vent":
+            raise OSError(errno.ENOSPC, "No space left on device")
+        append(self, row)
+
+    monkeypatch.setattr(RunWriter, "append_command", full_for_the_interlock)
+    result, run = record(config, tmp_path, nan_force_at_s=5.0)
+    assert result.status == "aborted" and result.exit_code == 1
+    assert "vent command failed" not in result.reason and "VENT BY HAND" not in result.reason
+    assert "; vented, but recording the interlock's vent failed (OSError: [Errno 28] No space " \
+           "left on device)" in result.reason
+    assert not result.manual_vent_required and run.meta.vent_check["verified"]
+    assert events[events.index(("samples", 50)) - 1] == ("AO", 0.0)
+
+
+def test_a_shutdown_vent_that_fails_after_an_interlock_vent_is_called_failed(config, tmp_path,
+                                                                            monkeypatch):
+    # the interlock vented; the shutdown's own vent write then fails: that is a failed write,
+    # not "recording the vent failed" (which an earlier successful vent used to make it)
+    from mkm.bench.backend import AOWriteFailed
+    from mkm.bench.sim import SimBackend
+
+    write, zeros = SimBackend.write_command, []
+
+    def second_vent_fails(self, volts):
+        if volts == 0.0 and self._started_at is not None:
+            zeros.append(volts)
+            if len(zeros) == 3:  # the tare's, the interlock's went out; the shutdown's fails
+                raise AOWriteFailed("simulated AO write failure")
+        write(self, volts)
+
+    monkeypatch.setattr(SimBackend, "write_command", second_vent_fails)
+    result, run = record(config, tmp_path, nan_force_at_s=5.0)
+    assert "recording the vent failed" not in result.reason
+    assert "; vent command failed (AOWriteFailed: simulated AO write failure)" in result.reason
+    assert run.commands["purpose"].iloc[-2:].tolist() == ["interlock vent", "vent"]
+    assert run.commands["ok"].iloc[-2:].tolist() == [True, False]
