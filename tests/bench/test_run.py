@@ -288,3 +288,44 @@ def test_manual_without_operator_is_refused(config, tmp_path):
     with pytest.raises(ValueError, match="needs an operator"):
         BenchRun(c, SimBackend(c), tmp_path)
 
+
+
+def test_a_console_that_takes_no_output_does_not_stop_the_interlocks(config, tmp_path,
+                                                                     monkeypatch):
+    # a terminal paused with Ctrl-S, a Windows console with text selected (QuickEdit): its
+    # writes block. The progress bar and the notices were written by the acquisition loop, so
+    # the loop, and every interlock with it, stopped at the first write while the regulator held
+    # its pressure; now they are queued for a thread of their own and the run goes on
+    import io
+    import sys
+    import threading
+
+    release = threading.Event()
+
+    class Paused(io.StringIO):
+        def isatty(self):
+            return True
+
+        def write(self, text):
+            release.wait()
+            return super().write(text)
+
+    monkeypatch.setattr(sys, "stderr", Paused())
+    c = config.replace(sim={"faults": {"nan_force_at_s": 5.0}})
+    out = {}
+    worker = threading.Thread(target=lambda: out.update(result=acquire(
+        c, out_root=tmp_path, progress=True)), daemon=True)
+    try:
+        worker.start()
+        worker.join(60.0)  # about a second with the fix; without it, never
+        assert not worker.is_alive(), "the run stopped at its first write to the console"
+    finally:
+        release.set()
+        worker.join(60.0)
+    result = out["result"]
+    assert result.status == "aborted" and "force interlock: the force reading is not a " \
+        "number" in result.reason
+    run = load_run(result.path)
+    assert run.meta.counters["samples"] == len(run.samples) == 51  # samples 0-50, 50 tripped
+    vent = run.commands[run.commands["purpose"] == "interlock vent"]
+    assert vent["sample"].tolist() == [51]
