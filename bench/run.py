@@ -336,7 +336,12 @@ class BenchRun:
         manual_vent = self.vent_check is not None and not self.vent_check.verified
         if manual_vent:
             exit_code = EXIT_VENT
-        if error is not None:
+        if error is not None:  # a bug: its traceback follows, so say first where the run is
+            if self.recorder is not None:
+                vent = ("VENT THE MUSCLE BY HAND NOW: the vent was not verified" if manual_vent
+                        else "vented")
+                self.notify(f"the run stopped on an error of mkm ({reason}): {vent}; its "
+                            f"samples are recorded, status {status}, in {self.recorder.path}")
             raise error
         return RunResult(self.recorder.path if self.recorder else None, status, reason,
                          exit_code, manual_vent, self.unvented)
