@@ -10,6 +10,7 @@ vent: it returns what went wrong.
 from __future__ import annotations
 
 import dataclasses
+import time
 from pathlib import Path
 
 from mkm.bench.backend import DeviceInfo
@@ -26,6 +27,11 @@ from mkm.bench.storage import (
 )
 from mkm.core.records import provenance
 
+# On Windows a file another program holds open cannot be replaced (PermissionError): a virus
+# scanner, the search indexer or a cloud-sync client opens a file just written for a moment,
+# and run.json is rewritten at the end of a run seconds after its last write. The final record
+# tries again for this long before it says so.
+LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
 
 class Recorder:
     """Creates the run folder under ``out_root`` and records into it."""
@@ -92,10 +98,20 @@ class Recorder:
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
         problems = []
-        try:
-            self.save()
-        except OSError as exc:
-            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
+        for attempt in range(LOCKED_RETRIES + 1):
+            try:
+                self.save()
+                break
+            except PermissionError as exc:  # held open by another program, mostly briefly
+                if attempt == LOCKED_RETRIES:
+                    problems.append(f"run.json could not be written ({type(exc).__name__}: "
+                                    f"{exc}; tried {LOCKED_RETRIES + 1} times over "
+                                    f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
+                else:
+                    time.sleep(LOCKED_RETRY_S)
+            except OSError as exc:
+                problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
+                break
         try:
             self.writer.close()
         except OSError as exc:
