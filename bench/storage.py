@@ -502,7 +502,8 @@ class RunWriter:
                 self._files[name] = (f, columns)
                 f.write(",".join(columns) + "\n")
                 f.flush()
-        except OSError:
+        except BaseException:  # a full disk, or a stop signal while the folder is made: no
+            # half-made folder is left to pass for a run that died while it recorded
             for f, _ in self._files.values():
                 try:
                     f.close()
