@@ -57,6 +57,7 @@ class Recorder:
             process=process, unvented_before=list(unvented_before or []),
             simulated=bool(info.simulated))
         self.writer = RunWriter(out_root, self.meta, config.effective_text())  # run.json first
+        self._refused = False  # an append of samples failed (the disk)
 
     @property
     def path(self) -> Path:
@@ -66,7 +67,11 @@ class Recorder:
         self.writer.write_meta(self.meta)
 
     def samples(self, rows: list[Sample]) -> None:
-        self.writer.append_samples(rows)
+        try:
+            self.writer.append_samples(rows)
+        except OSError:
+            self._refused = True  # buffered rows may still reach the disk at close
+            raise
         self.meta.counters["samples"] += len(rows)
 
     def step(self, record: StepRecord) -> None:
@@ -98,6 +103,15 @@ class Recorder:
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
         problems = []
+        self.writer.release_reserve()  # a disk that filled mid-run: the room for this record
+        try:  # the rows first: run.json's outcome is written once they are on disk
+            self.writer.close()
+        except OSError as exc:
+            problems.append(f"the run's files could not all be synced ({exc})")
+        else:
+            if self._refused:  # rows a full disk refused went out at close: count the disk's
+                self.meta.counters["samples"] = self.writer.samples_on_disk(
+                    self.meta.counters["samples"])
         for attempt in range(LOCKED_RETRIES + 1):
             try:
                 self.save()
@@ -112,8 +126,4 @@ class Recorder:
             except OSError as exc:
                 problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
                 break
-        try:
-            self.writer.close()
-        except OSError as exc:
-            problems.append(f"the run's files could not all be synced ({exc})")
         return problems
