@@ -10,6 +10,7 @@ vent: it returns what went wrong.
 from __future__ import annotations
 
 import dataclasses
+import time
 from pathlib import Path
 
 from mkm.bench.backend import DeviceInfo
@@ -26,6 +27,11 @@ from mkm.bench.storage import (
 )
 from mkm.core.records import provenance
 
+# On Windows a file another program holds open cannot be replaced (PermissionError): a virus
+# scanner, the search indexer or a cloud-sync client opens a file just written for a moment,
+# and run.json is rewritten at the end of a run seconds after its last write. The final record
+# tries again for this long before it says so.
+LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
 
 class Recorder:
     """Creates the run folder under ``out_root`` and records into it."""
@@ -51,6 +57,7 @@ class Recorder:
             process=process, unvented_before=list(unvented_before or []),
             simulated=bool(info.simulated))
         self.writer = RunWriter(out_root, self.meta, config.effective_text())  # run.json first
+        self._refused = False  # an append of samples failed (the disk)
 
     @property
     def path(self) -> Path:
@@ -60,7 +67,11 @@ class Recorder:
         self.writer.write_meta(self.meta)
 
     def samples(self, rows: list[Sample]) -> None:
-        self.writer.append_samples(rows)
+        try:
+            self.writer.append_samples(rows)
+        except OSError:
+            self._refused = True  # buffered rows may still reach the disk at close
+            raise
         self.meta.counters["samples"] += len(rows)
 
     def step(self, record: StepRecord) -> None:
@@ -92,12 +103,27 @@ class Recorder:
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
         problems = []
-        try:
-            self.save()
-        except OSError as exc:
-            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
-        try:
+        self.writer.release_reserve()  # a disk that filled mid-run: the room for this record
+        try:  # the rows first: run.json's outcome is written once they are on disk
             self.writer.close()
         except OSError as exc:
             problems.append(f"the run's files could not all be synced ({exc})")
+        else:
+            if self._refused:  # rows a full disk refused went out at close: count the disk's
+                self.meta.counters["samples"] = self.writer.samples_on_disk(
+                    self.meta.counters["samples"])
+        for attempt in range(LOCKED_RETRIES + 1):
+            try:
+                self.save()
+                break
+            except PermissionError as exc:  # held open by another program, mostly briefly
+                if attempt == LOCKED_RETRIES:
+                    problems.append(f"run.json could not be written ({type(exc).__name__}: "
+                                    f"{exc}; tried {LOCKED_RETRIES + 1} times over "
+                                    f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
+                else:
+                    time.sleep(LOCKED_RETRY_S)
+            except OSError as exc:
+                problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
+                break
         return problems

@@ -36,7 +36,9 @@ vent could not be verified (vent by hand; it wins over every other), 1 otherwise
 
 from __future__ import annotations
 
+import queue
 import sys
+import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -63,6 +65,60 @@ STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
 def notify_stderr(message: str) -> None:
     """One line for the operator on stderr (the default ``notify`` of runs and procedures)."""
     print(f"mkm: {message}", file=sys.stderr, flush=True)
+
+
+class _Console:
+    """What a run writes to the console (progress, notices) without ever waiting for it.
+
+    A console that does not take its output blocks the writer: a terminal paused with Ctrl-S,
+    a Windows console with text selected in QuickEdit mode, a pipe nobody reads. Written by the
+    acquisition loop, that would stop the loop, and with it every interlock, while the
+    regulator holds its pressure. So the loop only queues text (dropped when the queue is
+    full, counted in ``dropped``) and a thread of its own writes it to ``stream``; its write
+    errors (a closed terminal, a broken pipe) are the console's, not the run's.
+    """
+
+    def __init__(self, stream, maxsize: int = 1024):
+        self.stream = stream
+        self.dropped = 0
+        self._queue: queue.Queue = queue.Queue(maxsize)
+        self._thread = threading.Thread(target=self._write, name="mkm-console", daemon=True)
+        self._thread.start()
+
+    def write(self, text: str) -> int:
+        try:
+            self._queue.put_nowait(text)
+        except queue.Full:
+            self.dropped += 1
+        return len(text)
+
+    def flush(self) -> None:
+        pass  # the thread flushes after every write
+
+    def isatty(self) -> bool:
+        try:
+            return bool(self.stream.isatty())
+        except (AttributeError, ValueError, OSError):
+            return False
+
+    def __getattr__(self, name):  # encoding, fileno (tqdm's terminal width): the stream's
+        return getattr(self.stream, name)
+
+    def _write(self) -> None:
+        while (text := self._queue.get()) is not None:
+            try:
+                self.stream.write(text)
+                self.stream.flush()
+            except (OSError, ValueError):
+                pass
+
+    def close(self, wait_s: float = 2.0) -> None:
+        """Let the queued text out, waiting at most ``wait_s`` for a console that is stuck."""
+        try:
+            self._queue.put(None, timeout=wait_s)
+        except queue.Full:
+            return
+        self._thread.join(wait_s)
 
 
 @dataclass
@@ -173,7 +229,9 @@ class BenchRun:
         self.operator = operator
         self.progress = progress
         self.plot = plot
-        self.notify = notify
+        # the default notices go through the run's console (:class:`_Console`) while it runs
+        self.notify = self._say if notify is notify_stderr else notify
+        self._console: _Console | None = None
         self.handle_signals = handle_signals
         self.signals = StopSignals(on_first_interrupt=lambda: self.notify(
             "stopping at the next safe point (Ctrl-C again to vent now)"))
@@ -226,10 +284,23 @@ class BenchRun:
         with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
                 awake():  # Windows must not sleep with the muscle pressurised
             self.owner = owner
-            if self.handle_signals:
-                with self.signals:
-                    return self._execute()
-            return self._execute()
+            self._console = _Console(sys.stderr)
+            try:
+                if self.handle_signals:
+                    with self.signals:
+                        return self._execute()
+                return self._execute()
+            finally:
+                console, self._console = self._console, None
+                console.close()
+
+    def _say(self, message: str) -> None:
+        """The default notice: through the run's console while it runs, else on stderr."""
+        console = self._console
+        if console is None:
+            notify_stderr(message)
+        else:
+            console.write(f"mkm: {message}\n")
 
     def _execute(self) -> RunResult:
         status, reason, error, exit_code = RunStatus.FAILED, "", None, EXIT_FAILED
@@ -265,7 +336,12 @@ class BenchRun:
         manual_vent = self.vent_check is not None and not self.vent_check.verified
         if manual_vent:
             exit_code = EXIT_VENT
-        if error is not None:
+        if error is not None:  # a bug: its traceback follows, so say first where the run is
+            if self.recorder is not None:
+                vent = ("VENT THE MUSCLE BY HAND NOW: the vent was not verified" if manual_vent
+                        else "vented")
+                self.notify(f"the run stopped on an error of mkm ({reason}): {vent}; its "
+                            f"samples are recorded, status {status}, in {self.recorder.path}")
             raise error
         return RunResult(self.recorder.path if self.recorder else None, status, reason,
                          exit_code, manual_vent, self.unvented)
@@ -297,7 +373,7 @@ class BenchRun:
             self.notify(f"SIMULATED bench ({self.config.daq.backend}): no hardware is driven; "
                         f"recording into {self.recorder.path}")
         if self.progress:
-            self._observers.append(_Progress(self.config, len(self.steps)))
+            self._observers.append(_Progress(self.config, len(self.steps), self._console))
         if self.plot:
             self._observers.append(_Plot(self.config.muscle.id))
         self.acquisition = Acquisition(
@@ -392,7 +468,7 @@ class BenchRun:
             else:
                 self.backend.write_command(0.0)
         except BaseException as exc:  # the device may be gone; closing must still happen
-            if acq is not None and acq.vented:  # written; only its record failed
+            if acq is not None and acq.written:  # written; only its record failed
                 problems.append(f"recording the vent failed ({type(exc).__name__}: {exc})")
             elif isinstance(exc, DaqDisconnected) and revive:
                 back, said = self._revive(f"vent command failed ({type(exc).__name__}: {exc})")

@@ -40,6 +40,8 @@ def read_toml_file(path: str | Path, what: str = "") -> tuple[str, dict[str, Any
     path = Path(path)
     shown = str(path) if len(str(path)) <= 200 else str(path)[:200] + "..."
     try:
+        if path.is_dir():
+            raise ValueError(f"{what}{shown} is a folder: expected a TOML file")
         if not path.is_file():
             raise ValueError(f"{what}{shown} does not exist: expected a TOML file")
         if path.stat().st_size > MAX_TEXT_CHARS * 4:

@@ -45,6 +45,10 @@ from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
 SCHEMA_VERSION = 2
+# Room kept on the run folder's disk while a run records, given back for its final record: a
+# disk that fills mid-run would otherwise leave run.json 'running' (its final write refused)
+# and the last row of samples.csv cut in half (its buffered tail refused at close).
+RESERVE_NAME, RESERVE_BYTES = ".space-reserve", 256 * 1024
 class RunStatus(enum.StrEnum):
     """Status of a run in ``run.json`` (a ``str``: ``RunStatus.COMPLETE == "complete"``)."""
 
@@ -510,7 +514,12 @@ class RunWriter:
                 self._files[name] = (f, columns)
                 f.write(",".join(columns) + "\n")
                 f.flush()
-        except OSError:
+            with open(path / RESERVE_NAME, "wb") as f:  # the final record's room
+                f.write(os.urandom(RESERVE_BYTES))  # not zeros: a compressing disk keeps them
+                f.flush()
+                os.fsync(f.fileno())
+        except BaseException:  # a full disk, or a stop signal while the folder is made: no
+            # half-made folder is left to pass for a run that died while it recorded
             for f, _ in self._files.values():
                 try:
                     f.close()
@@ -521,6 +530,26 @@ class RunWriter:
 
     def write_meta(self, meta: RunMeta) -> None:
         write_json_atomic(self.path / "run.json", meta.as_dict())
+
+    def samples_on_disk(self, otherwise: int) -> int:
+        """The whole rows of samples.csv on disk (``otherwise`` where it is gone)."""
+        path = self.path / "samples.csv"
+        try:
+            size = _whole_rows_bytes(path)
+            with open(path, "rb") as f:
+                rows = -1  # the header
+                while size > 0:
+                    chunk = f.read(min(size, 1 << 20))
+                    if not chunk:
+                        break
+                    rows, size = rows + chunk.count(b"\n"), size - len(chunk)
+        except OSError:
+            return otherwise
+        return max(rows, 0)
+
+    def release_reserve(self) -> None:
+        """Give back the room kept for the final record (:data:`RESERVE_BYTES`)."""
+        release_reserve(self.path)
 
     def _append(self, name: str, rows) -> None:
         f, columns = self._files[name]
@@ -571,8 +600,17 @@ class RunWriter:
                     f.close()
                 except OSError as exc:  # the buffered tail could not be written (disk full)
                     errors.append(exc)
+        self.release_reserve()
         if errors:
             raise errors[0]
+
+
+def release_reserve(path: Path) -> None:
+    """Delete the room a run kept in its folder ``path`` for its final record, if there."""
+    try:
+        (Path(path) / RESERVE_NAME).unlink(missing_ok=True)
+    except OSError:
+        pass
 
 
 # --- reading ----------------------------------------------------------------------------------

@@ -134,7 +134,7 @@ def mend_run(marker: Marker) -> str:
     """Make the run folder of a dead run tell the truth, once its bench is vented: a run.json
     still ``running`` becomes ``killed``, with the sample count of the rows on disk and the time
     of death as far as known (samples.csv's last write). Returns what was done, in words."""
-    from mkm.bench.storage import RunStatus, load_run, read_meta
+    from mkm.bench.storage import RunStatus, load_run, read_meta, release_reserve
     from mkm.core.records import provenance
 
     path = Path(marker.run_path)
@@ -159,6 +159,7 @@ def mend_run(marker: Marker) -> str:
                    f"record (killed or power lost), at about {died or 'an unknown time'}; its "
                    f"last commanded pressure was {marker.last_command_bar:g} bar; vented by the "
                    f"next command at {provenance()['date_utc']}")
+    release_reserve(path)  # the room it kept for its final record: this one
     try:
         write_json_atomic(path / "run.json", meta.as_dict())
     except OSError as exc:

@@ -3,7 +3,9 @@ regulator, and trips the interlocks (pymeasure's worker, beside the procedure in
 :mod:`mkm.bench.sequence` and the recorder in :mod:`mkm.bench.recorder`).
 
 Interlocks, checked on every sample; each stops the run (:class:`Stop`, status ``aborted``)
-after commanding the vent:
+after commanding the vent, which goes out as soon as the block holding the tripping sample is
+read: before that block is written to samples.csv, shown or plotted (a slow or full disk
+cannot delay it, nor take the interlock's reason from the run):
 
 - force: ``|force| >= safety.force_limit_fraction x capacity``, a reading within 2 LSB of a rail
   (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
@@ -91,6 +93,7 @@ class Acquisition:
         self.measured_bar = math.nan  # the last plausible pressure read (see held_bar)
         self.next_index = 0
         self.vented = False  # the last command written was a successful vent
+        self.written = False  # the last command asked for reached the device
         self.marker_problem = ""  # the bench marker could not be updated after a vent
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
@@ -106,14 +109,17 @@ class Acquisition:
         self._reading = (phase, step, set_bar)
         timeouts = 0
         trips: list[tuple[str, RunStatus]] = []
+        tripped: Stop | None = None
         while True:
             try:
                 with self.guard():
                     block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
                     rows = [self._sample(block.first_index + k, volts, phase, step, set_bar,
                                          trips) for k, volts in enumerate(block.volts)]
-                    self.recorder.samples(rows)
                     self.next_index = block.first_index + len(block.volts)
+                    if trips:  # acts first, keeps books after: the vent before the rows
+                        tripped = self._vent_for(*trips[0])
+                    self._record(rows, tripped)
                 break
             except ReadTimeout as exc:
                 timeouts += 1
@@ -130,12 +136,24 @@ class Acquisition:
                 self._overflowed(exc)
         for observer in self.observers:
             observer.block(rows)
-        if trips:
-            self._trip(*trips[0])
+        if tripped is not None:
+            raise tripped
         stop = self.stop_requested()
         if stop is not None:
             raise stop
         return rows
+
+    def _record(self, rows: list[Sample], tripped: Stop | None) -> None:
+        """Record a block's rows; after an interlock's vent (``tripped``) a disk that fails
+        them is added to the interlock's reason, which stays the run's."""
+        try:
+            self.recorder.samples(rows)
+        except OSError as exc:
+            if tripped is None:
+                raise
+            raise Stop(tripped.status, f"{tripped.reason}; the samples of the block that "
+                       f"tripped it could not be recorded ({type(exc).__name__}: {exc})") \
+                from exc
 
     def _overflowed(self, exc: BufferOverflow) -> None:
         """Restart after a buffer overflow and record the gap of the samples lost."""
@@ -269,12 +287,23 @@ class Acquisition:
         return None
 
     def _trip(self, message: str, status: RunStatus = RunStatus.ABORTED) -> None:
+        raise self._vent_for(message, status)
+
+    def _vent_for(self, message: str, status: RunStatus) -> Stop:
+        """Command the interlock's vent now; the :class:`Stop` that says so, to raise once the
+        tripping block is recorded."""
         try:
             self.command(0.0, "interlock vent")
         except Exception as exc:
-            raise Stop(status, f"{message}; the interlock's vent command failed "
-                       f"({type(exc).__name__}: {exc}): VENT BY HAND") from exc
-        raise Stop(status, f"{message}; vented")
+            if self.written:  # the vent went out; only its record (or marker) failed
+                stop = Stop(status, f"{message}; vented, but recording the interlock's vent "
+                            f"failed ({type(exc).__name__}: {exc})")
+            else:
+                stop = Stop(status, f"{message}; the interlock's vent command failed "
+                            f"({type(exc).__name__}: {exc}): VENT BY HAND")
+            stop.__cause__ = exc
+            return stop
+        return Stop(status, f"{message}; vented")
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its
@@ -305,7 +334,7 @@ class Acquisition:
         reg = self.config.regulator
         clamped = min(max(pressure_bar, 0.0), reg.max_pressure_bar)
         volts = reg.command_volts(clamped)
-        ok = False
+        ok = self.written = False
         if self.lease is not None and clamped > 0:
             # before the write: a kill between the write and any record still finds it; a
             # pressure the marker cannot record is not commanded
@@ -317,7 +346,7 @@ class Acquisition:
                                         f"{clamped:g} bar not commanded") from None
         try:
             self.backend.write_command(volts)
-            ok = True
+            ok = self.written = True
             self.command_bar = clamped
             self.vented = clamped == 0.0
             meta = self.recorder.meta

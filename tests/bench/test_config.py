@@ -152,6 +152,14 @@ def test_load_cell_that_clips_before_capacity_is_refused():
         parse_config(text)
 
 
+def test_a_config_that_is_a_folder_is_named_so(tmp_path, mkm_cli):
+    # `--config mkm-out` (a folder, where a file was meant) said it did not exist
+    code, out, err = mkm_cli(["acquire", "--config", str(tmp_path), "--out", str(tmp_path / "r")])
+    assert code == 2 and out == "" and not (tmp_path / "r").exists()
+    assert err.strip().splitlines() == [f"mkm acquire: error: config {tmp_path} is a folder: "
+                                        "expected a TOML file"]
+
+
 def test_missing_section_and_file_and_bad_toml():
     with pytest.raises(ValueError, match=r"section \[loadcell\] is missing"):
         parse_config(BASE.split("[loadcell]")[0])

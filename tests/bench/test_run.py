@@ -275,12 +275,42 @@ def test_a_signal_while_a_block_is_read_keeps_the_block(config, tmp_path):
 def test_unexpected_error_is_recorded_and_raised(config, tmp_path):
     backend = SimBackend(config)
     backend.read = lambda n, timeout: (_ for _ in ()).throw(ZeroDivisionError("bug"))
+    said = []
     with pytest.raises(ZeroDivisionError):
-        BenchRun(config, backend, tmp_path, handle_signals=False).execute()
+        BenchRun(config, backend, tmp_path, handle_signals=False, notify=said.append).execute()
     (folder,) = tmp_path.glob("*_paper-prototype-SIMULATED")
     run = load_run(folder)
     assert run.status == "failed" and "ZeroDivisionError: bug" in run.reason
     assert backend.commands[-1][1] == 0.0
+    # no read answers, so the vent is not verified: the line before the traceback says so
+    assert said[-1].startswith("the run stopped on an error of mkm (ZeroDivisionError: bug")
+    assert said[-1].endswith("VENT THE MUSCLE BY HAND NOW: the vent was not verified; its "
+                             f"samples are recorded, status failed, in {folder}")
+
+
+def test_a_bug_mid_run_names_the_run_folder_before_its_traceback(config, tmp_path, monkeypatch):
+    # the traceback that follows names no folder, and on the real bench nothing else does: the
+    # run says where it is recorded and that it vented
+    from mkm.bench import sequence
+
+    settle, calls = sequence.settle_reached, []
+
+    def bug_at_the_third_check(*args):
+        calls.append(1)
+        if len(calls) == 3:
+            raise ZeroDivisionError("bug")
+        return settle(*args)
+
+    monkeypatch.setattr(sequence, "settle_reached", bug_at_the_third_check)
+    said = []
+    with pytest.raises(ZeroDivisionError):
+        acquire(config, out_root=tmp_path, notify=said.append)
+    (folder,) = tmp_path.glob("*_paper-prototype-SIMULATED")
+    assert said[-1] == (f"the run stopped on an error of mkm (ZeroDivisionError: bug): vented; "
+                        f"its samples are recorded, status failed, in {folder}")
+    run = load_run(folder)
+    assert run.status == "failed" and run.meta.vent_check["verified"]
+    assert run.meta.counters["samples"] == len(run.samples) > 20  # past the tare, all kept
 
 
 def test_manual_without_operator_is_refused(config, tmp_path):
@@ -288,3 +318,44 @@ def test_manual_without_operator_is_refused(config, tmp_path):
     with pytest.raises(ValueError, match="needs an operator"):
         BenchRun(c, SimBackend(c), tmp_path)
 
+
+
+def test_a_console_that_takes_no_output_does_not_stop_the_interlocks(config, tmp_path,
+                                                                     monkeypatch):
+    # a terminal paused with Ctrl-S, a Windows console with text selected (QuickEdit): its
+    # writes block. The progress bar and the notices were written by the acquisition loop, so
+    # the loop, and every interlock with it, stopped at the first write while the regulator held
+    # its pressure; now they are queued for a thread of their own and the run goes on
+    import io
+    import sys
+    import threading
+
+    release = threading.Event()
+
+    class Paused(io.StringIO):
+        def isatty(self):
+            return True
+
+        def write(self, text):
+            release.wait()
+            return super().write(text)
+
+    monkeypatch.setattr(sys, "stderr", Paused())
+    c = config.replace(sim={"faults": {"nan_force_at_s": 5.0}})
+    out = {}
+    worker = threading.Thread(target=lambda: out.update(result=acquire(
+        c, out_root=tmp_path, progress=True)), daemon=True)
+    try:
+        worker.start()
+        worker.join(60.0)  # about a second with the fix; without it, never
+        assert not worker.is_alive(), "the run stopped at its first write to the console"
+    finally:
+        release.set()
+        worker.join(60.0)
+    result = out["result"]
+    assert result.status == "aborted" and "force interlock: the force reading is not a " \
+        "number" in result.reason
+    run = load_run(result.path)
+    assert run.meta.counters["samples"] == len(run.samples) == 51  # samples 0-50, 50 tripped
+    vent = run.commands[run.commands["purpose"] == "interlock vent"]
+    assert vent["sample"].tolist() == [51]

@@ -265,3 +265,28 @@ def test_console_close_vents_then_records_within_the_grace_time(config, tmp_path
     last = load_run(result.path).commands.iloc[-1]
     assert last["purpose"] == "vent" and last["ok"] and last["command_bar"] == 0.0
     assert result.manual_vent_required and list((tmp_path / "mkm-state").rglob("*.json"))
+
+
+def test_a_signal_while_the_run_folder_is_made_leaves_no_half_made_folder(config, tmp_path,
+                                                                        monkeypatch):
+    # SIGTERM between run.json and the CSV files of a new folder: the run vented and said so,
+    # but left a folder with run.json 'running' and no samples.csv, which every later reader
+    # took for a run that died while it recorded
+    from mkm.bench.run import acquire
+    from mkm.bench.signals import StopSignal
+    from mkm.bench.storage import RunWriter
+
+    write_meta, written = RunWriter.write_meta, []
+
+    def sigterm_after_the_first_run_json(self, meta):
+        write_meta(self, meta)
+        if not written:
+            written.append(meta.status)
+            raise StopSignal(signal.SIGTERM)
+
+    monkeypatch.setattr(RunWriter, "write_meta", sigterm_after_the_first_run_json)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert written == ["running"]
+    assert result.path is None and result.exit_code == 128 + signal.SIGTERM
+    assert result.status == "aborted" and result.reason == "stopped by SIGTERM: vented at once"
+    assert list((tmp_path / "runs").iterdir()) == []

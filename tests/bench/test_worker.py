@@ -4,6 +4,7 @@ Every run here is on the virtual-clock simulated bench with faults injected at s
 short staircase tares for 2 s (samples 0-19) and commands 0.5 bar at 2.0 s.
 """
 
+import errno
 import math
 import re
 
@@ -233,3 +234,114 @@ def test_a_regulator_that_stops_following_after_a_stall_still_trips(config, tmp_
     assert result.status == "aborted", result.reason
     assert "pressure interlock: the regulator does not follow" in result.reason
     assert_vented_last(run)
+
+
+def _order_of_writes(monkeypatch):
+    """Every AO write (volts) and every samples.csv append (last sample index), in order."""
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.storage import RunWriter
+
+    events: list[tuple[str, float]] = []
+    write, append = SimBackend.write_command, RunWriter.append_samples
+
+    def spy_write(self, volts):
+        write(self, volts)
+        events.append(("AO", float(volts)))
+
+    def spy_append(self, rows):
+        append(self, rows)
+        events.append(("samples", rows[-1].sample))
+
+    monkeypatch.setattr(SimBackend, "write_command", spy_write)
+    monkeypatch.setattr(RunWriter, "append_samples", spy_append)
+    return events
+
+
+@pytest.mark.parametrize("block", [1, 5])
+def test_an_interlock_vents_before_its_block_is_written(config, tmp_path, monkeypatch, block):
+    # acts first, keeps books after: the NaN force at 5.0 s (sample 50) trips the interlock;
+    # its vent went out only after that block had been written to samples.csv
+    events = _order_of_writes(monkeypatch)
+    c = config.replace(daq={"read_block_samples": block})
+    result, run = record(c, tmp_path, nan_force_at_s=5.0)
+    assert "force interlock: the force reading is not a number" in result.reason
+    tripped = next(i for i, e in enumerate(events) if e[0] == "samples" and e[1] >= 50)
+    assert events[tripped] == ("samples", 50 + block - 1)  # the block holding sample 50
+    assert events[tripped - 1] == ("AO", 0.0)  # the interlock's vent, then the rows
+    assert events[tripped - 2] == ("samples", 50 - 1)  # the block before: no vent before it
+    assert run.meta.counters["samples"] == len(run.samples) == events[tripped][1] + 1
+    vent = run.commands[run.commands["purpose"] == "interlock vent"].iloc[0]
+    assert vent["sample"] == events[tripped][1] + 1  # issued just after the block's last sample
+
+
+def test_a_disk_that_fails_the_tripping_block_keeps_the_interlocks_reason(config, tmp_path,
+                                                                            monkeypatch):
+    # the NaN sample's block cannot be written (disk full): the run still vents first and says
+    # the interlock, then the disk, not a bare "recording failed"
+    from mkm.bench.storage import RunWriter
+
+    events = _order_of_writes(monkeypatch)
+    append = RunWriter.append_samples
+
+    def full_at_50(self, rows):
+        if rows[-1].sample >= 50:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        append(self, rows)
+
+    monkeypatch.setattr(RunWriter, "append_samples", full_at_50)
+    result, run = record(config, tmp_path, nan_force_at_s=5.0)
+    assert result.status == "aborted" and result.exit_code == 1
+    assert result.reason.startswith("force interlock: the force reading is not a number")
+    assert "; vented; the samples of the block that tripped it could not be recorded " \
+           "(OSError: [Errno 28] No space left on device)" in result.reason
+    assert ("AO", 0.0) in events
+    assert run.meta.counters["samples"] == len(run.samples) == 50  # samples 0-49 kept
+    assert run.commands["purpose"].iloc[-2:].tolist() == ["interlock vent", "vent"]
+
+
+def test_an_interlock_vent_whose_record_fails_is_not_called_a_failed_vent(config, tmp_path,
+                                                                          monkeypatch):
+    # the vent went out, only its row of commands.csv met a full disk: the run must not say
+    # that the vent command failed and ask for a vent by hand while the regulator is vented
+    from mkm.bench.storage import RunWriter
+
+    events = _order_of_writes(monkeypatch)
+    append = RunWriter.append_command
+
+    def full_for_the_interlock(self, row):
+        if row.purpose == "interlock vent":
+            raise OSError(errno.ENOSPC, "No space left on device")
+        append(self, row)
+
+    monkeypatch.setattr(RunWriter, "append_command", full_for_the_interlock)
+    result, run = record(config, tmp_path, nan_force_at_s=5.0)
+    assert result.status == "aborted" and result.exit_code == 1
+    assert "vent command failed" not in result.reason and "VENT BY HAND" not in result.reason
+    assert "; vented, but recording the interlock's vent failed (OSError: [Errno 28] No space " \
+           "left on device)" in result.reason
+    assert not result.manual_vent_required and run.meta.vent_check["verified"]
+    assert events[events.index(("samples", 50)) - 1] == ("AO", 0.0)
+
+
+def test_a_shutdown_vent_that_fails_after_an_interlock_vent_is_called_failed(config, tmp_path,
+                                                                            monkeypatch):
+    # the interlock vented; the shutdown's own vent write then fails: that is a failed write,
+    # not "recording the vent failed" (which an earlier successful vent used to make it)
+    from mkm.bench.backend import AOWriteFailed
+    from mkm.bench.sim import SimBackend
+
+    write, zeros = SimBackend.write_command, []
+
+    def second_vent_fails(self, volts):
+        if volts == 0.0 and self._started_at is not None:
+            zeros.append(volts)
+            if len(zeros) == 3:  # the tare's, the interlock's went out; the shutdown's fails
+                raise AOWriteFailed("simulated AO write failure")
+        write(self, volts)
+
+    monkeypatch.setattr(SimBackend, "write_command", second_vent_fails)
+    result, run = record(config, tmp_path, nan_force_at_s=5.0)
+    assert "recording the vent failed" not in result.reason
+    assert "; vent command failed (AOWriteFailed: simulated AO write failure)" in result.reason
+    assert run.commands["purpose"].iloc[-2:].tolist() == ["interlock vent", "vent"]
+    assert run.commands["ok"].iloc[-2:].tolist() == [True, False]
