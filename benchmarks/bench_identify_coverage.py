@@ -24,8 +24,10 @@ with a misfit line is warned; a miss without one is silent. Target: no silent mi
 
 A third run of the same muscle and departure, at eps 6 % or 18 % (:data:`HELDOUT_EPS`, draw by
 draw), is predicted with the calibration identify wrote and judged against its band
-(:func:`mkm.identify.band.check_heldout`: a step inside when within the band and its own noise,
-a run when every settled step is). Target: held-out runs inside in >= 90 % of the draws.
+(:func:`mkm.identify.band.check_heldout`: a step inside when within the band and 1.96 times its
+own noise, a run when every settled step is within the band and the run's joint noise factor,
+3.00 for 19 steps, :func:`mkm.identify.band.run_noise_z`). Target: held-out runs inside in
+>= 90 % of the draws.
 
 With ``--tables ACCURACY`` every run reaches identify as a lab's step table would: its settled
 steps' means and directions only, written to a CSV and read by ``mkm import --accuracy
