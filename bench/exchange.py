@@ -547,6 +547,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         pressure = pressure - offset
         if offset:
             notes.append(f"vented reading {offset:.3g} bar {handling['vented']}: subtracted")
+    step_times = None
+    if timed and series.one_reading_per_step(time_s):
+        step_times, timed = time_s, False
+        apart = float(np.median(np.diff(time_s)))
+        handling["steps_from"] = f"one row per step, its readings {apart:.3g} s apart (median)"
+        notes.append(f"one reading every {apart:.3g} s: each row a step at its time (a time "
+                     "series has several readings per hold)")
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
     # -0.0001 bar too)
     noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
@@ -640,11 +647,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             np.full(pressure.size, math.nan)
         repeats: dict[tuple[str, float], int] = {}
         steps = []
+        at = step_times if step_times is not None else np.full(pressure.size, math.nan)
         for k, (p, f, s, d) in enumerate(zip(pressure, force, std, order, strict=True)):
             key = (d, round(float(p), 3))
             repeats[key] = repeats.get(key, -1) + 1
             steps.append(StepRecord(k, d, repeats[key], float(p), float(p), float(f), float(s),
-                                    1, True, math.nan, math.nan, math.nan))
+                                    1, True, math.nan, float(at[k]), float(at[k])))
     if accuracy:
         steps = _with_budget(steps, accuracy, shape)
         handling["declared_accuracy"] = {q: b.record() for q, b in accuracy.items()}

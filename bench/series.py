@@ -108,6 +108,13 @@ def _settled(t: np.ndarray, p: np.ndarray, tolerance_bar: float) -> bool:
     return abs(slope) <= 4.0 * se or abs(slope) * (t[-1] - t[0]) <= 0.5 * tolerance_bar
 
 
+def one_reading_per_step(time_s: np.ndarray) -> bool:
+    """Whether a record with times is a step table: its readings :data:`PLATEAU_MIN_S` or more
+    apart (the median), too sparse for any hold to be a plateau (a logger writing each hold's
+    mean, with its time)."""
+    return time_s.size >= 2 and float(np.median(np.diff(time_s))) >= PLATEAU_MIN_S
+
+
 def branches(pressure_bar: np.ndarray) -> list[tuple[int, int, str]]:
     """The record as monotone branches ``(start, stop, direction)``, stop exclusive: it turns
     where the pressure comes back :data:`TURN_SHARE` of its range from the branch's extreme

@@ -210,6 +210,23 @@ def test_a_zero_that_drifted_by_the_end_of_the_record_is_said(drift_N, tmp_path,
     assert ("the force vented at the end reads" in err) == (drift_N > 0)
 
 
+def test_a_step_table_with_a_time_per_row_is_a_step_table(tmp_path, mkm_cli):
+    # a logger that writes each hold's mean with its time, 30 s apart: 'no step found in the
+    # time series', since no hold had the samples of a plateau
+    path = tmp_path / "holds.csv"
+    path.write_text("Zeit [s];Druck [bar];Kraft [N]\n0;0;0,2\n30;0,5;40,1\n60;1,0;95,3\n"
+                    "90;1,5;150,2\n120;1,0;100,5\n150;0,5;45,0\n", encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "10%")
+    assert "one reading every 30 s: each row a step at its time" in err
+    steps = run.steps
+    assert run.meta.imported_from["shape"] == "steps" and len(run.samples) == 0
+    assert list(steps["direction"]) == ["up"] * 4 + ["down"] * 2
+    np.testing.assert_allclose(steps["start_s"], [0, 30, 60, 90, 120, 150])
+    # tared at the 0 bar row, as any step table
+    np.testing.assert_allclose(steps["force_N_mean"], [0.0, 39.9, 95.1, 150.0, 100.3, 44.8],
+                               atol=1e-9)
+
+
 def _clock_text(seconds: float, start_s: float) -> str:
     hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
     minutes, secs = divmod(rest, 60.0)
