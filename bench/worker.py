@@ -11,9 +11,12 @@ cannot delay it, nor take the interlock's reason from the run):
   (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
 - pressure (electronic regulator): a non-finite measured pressure; a monitor reading no
   working regulator gives (a live-zero output at 0 V: unpowered, wire off); a pressure more
-  than the tolerance away from the command it was acquired under for longer than
-  ``safety.pressure_follow_s`` from the sample that command acts at (a regulator that does not
-  follow; samples read late after a stall are judged against their own command);
+  than the tolerance away from the command it was acquired under, without moving more than
+  the tolerance towards it, for longer than ``safety.pressure_follow_s`` (a regulator that
+  does not follow). The window is the measured pressure's: a new command does not restart it
+  (a stuck regulator trips ``pressure_follow_s`` after it stops following, whatever is
+  commanded meanwhile), a working regulator's step response restarts it as it moves; samples
+  read late after a stall are judged against their own command;
 - over-pressure, on the measured pressure (the monitor's, or the manometer reading the operator
   typed with a manual regulator) whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
@@ -97,8 +100,10 @@ class Acquisition:
         self.marker_problem = ""  # the bench marker could not be updated after a vent
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
-        self._off_since_s: float | None = None  # pressure away from the command since then
-        self._followed_bar = 0.0  # the command the previous sample was acquired under
+        # the measured pressure has been off its command, and not moved towards it by more than
+        # the tolerance, since then; the pressure it had then
+        self._off_since_s: float | None = None
+        self._off_from_bar = 0.0
         self._over_since_s: float | None = None  # pressure above the limit's margin since then
 
     # one block -------------------------------------------------------------------------------
@@ -235,9 +240,10 @@ class Acquisition:
 
     def _interlock(self, index, force, pressure, cell_V, monitor_V, flags) -> str | None:
         """The interlock sample ``index`` trips (its message), or None. The regulator is
-        judged against the command the sample was acquired under, and gets
-        ``pressure_follow_s`` from the sample a new command acts at: samples read late (after
-        a stall) were acquired before a command the reader wrote meanwhile."""
+        judged against the command the sample was acquired under (samples read late, after a
+        stall, were acquired before a command the reader wrote meanwhile), and gets
+        ``pressure_follow_s`` from the last sample at which its pressure was on the command or
+        had moved more than the tolerance towards it."""
         t_s = index / self.rate_hz
         limit = self.config.force_limit_N
         safety = self.config.safety
@@ -255,17 +261,23 @@ class Acquisition:
         if fault:
             return f"pressure interlock: {fault} at {t_s:g} s"
         commanded = self._commanded_at(index)
-        if commanded != self._followed_bar:
-            self._followed_bar, self._off_since_s = commanded, None
-        if abs(pressure - commanded) <= safety.pressure_tolerance_bar:
+        tolerance = safety.pressure_tolerance_bar
+        if abs(pressure - commanded) <= tolerance:
             self._off_since_s = None
-        elif self._off_since_s is None:
-            self._off_since_s = t_s
+        elif self._off_since_s is None or (
+                (pressure - self._off_from_bar) * math.copysign(1.0, commanded
+                                                                - self._off_from_bar)
+                > tolerance):
+            # off the command, first or after moving more than the tolerance towards it (a
+            # working regulator's step response or a ramp it lags): the window starts here. A
+            # new command does not restart it: a stuck regulator's pressure does not move
+            self._off_since_s, self._off_from_bar = t_s, pressure
         elif t_s - self._off_since_s > safety.pressure_follow_s:
             return (f"pressure interlock: the regulator does not follow: {pressure:.3f} bar "
                     f"measured against {commanded:g} bar commanded for more than "
-                    f"{safety.pressure_follow_s:g} s (tolerance "
-                    f"{safety.pressure_tolerance_bar:g} bar)")
+                    f"{safety.pressure_follow_s:g} s (tolerance {tolerance:g} bar; the "
+                    f"pressure has not moved towards the command since "
+                    f"{self._off_since_s:g} s)")
         return None
 
     def _overpressure(self, t_s: float, pressure: float) -> str | None:

@@ -345,3 +345,38 @@ def test_a_shutdown_vent_that_fails_after_an_interlock_vent_is_called_failed(con
     assert "; vent command failed (AOWriteFailed: simulated AO write failure)" in result.reason
     assert run.commands["purpose"].iloc[-2:].tolist() == ["interlock vent", "vent"]
     assert run.commands["ok"].iloc[-2:].tolist() == [True, False]
+
+
+@pytest.mark.parametrize("stuck_s", [6.0, 8.0, 10.5, 16.0])
+def test_a_stuck_regulator_trips_within_the_follow_time_whatever_is_commanded(tmp_path, stuck_s):
+    # The paper's sequence: pre-conditioning to 2.5 bar at 5 s and back to 0 at 10 s, held 5 s
+    # each (pressure_follow_s), then the staircase from 15 s. The window used to restart at each
+    # new command: stuck from 6 s (rising towards 2.5 bar), it tripped only at 20.1 s, and
+    # pre-conditioning could never trip it. Now it trips pressure_follow_s (and a block) after
+    # the first sample, from the moment it sticks, at which its pressure is off the command
+    from mkm.bench.config import load_config
+
+    c = load_config()
+    result, run = record(c, tmp_path, regulator_stuck_at_s=stuck_s)
+    assert result.status in ("aborted", "failed"), result.reason
+    assert "pressure interlock: the regulator does not follow" in result.reason
+    s = run.samples
+    tol, follow = c.safety.pressure_tolerance_bar, c.safety.pressure_follow_s
+    block_s = c.daq.read_block_samples / c.daq.sample_rate_hz
+    failing = s[(s["time_s"] >= stuck_s - 1e-9)
+                & ((s["pressure_bar"] - s["command_bar"]).abs() > tol)]
+    tripped = s[s["flags"].str.contains("interlock")]["time_s"].iloc[0]
+    assert tripped - failing["time_s"].iloc[0] <= follow + 1 / c.daq.sample_rate_hz + block_s
+    assert "interlock vent" in set(run.commands["purpose"])
+
+
+def test_a_healthy_regulator_never_trips_the_follow_interlock_on_the_papers_sequence(tmp_path):
+    # every step response of the simulator's regulator (0.4 s lag, 2 bar/s slew), the 2.5 bar
+    # pre-conditioning steps included, and a sensor with the truth's hysteresis and bow
+    from mkm.bench.config import load_config
+
+    for truth in ({}, {"monitor_hysteresis_bar": 0.05, "monitor_bow_bar": 0.03}):
+        c = load_config().replace(sim={"truth": truth})
+        result, run = record(c, tmp_path)
+        assert result.status == "complete", result.reason
+        assert not run.samples["flags"].str.contains("interlock").any()
