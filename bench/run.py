@@ -245,6 +245,7 @@ class BenchRun:
         self._stop_by: str | None = None
         self._started = False
         self.vent_check: VentCheck | None = None
+        self._vent_rows_problems: list[str] = []  # the vent check's rows not recorded
         self.storage_failed = False
 
     def request_stop(self, by: str | None = None) -> None:
@@ -447,9 +448,17 @@ class BenchRun:
         if gone:
             return VentCheck(False, float("nan"), below, 0.0, "monitor", "the device is gone",
                              device_lost=True)
+        acq, problems = self.acquisition, self._vent_rows_problems
+
+        def record(block) -> None:  # the decay after the vent, on disk (phase "vent")
+            problem = acq.record_vent_check(block) if acq is not None and \
+                self.recorder is not None else ""
+            if problem and problem not in problems:
+                problems.append(problem)
+
         try:
             return verify_vent(self.backend, self.config, self.operator, started=self._started,
-                               deadline=self.signals.grace_deadline)
+                               deadline=self.signals.grace_deadline, record=record)
         except BaseException as exc:
             return VentCheck(False, float("nan"), below, 0.0, "monitor",
                              f"{type(exc).__name__}: {exc}")
@@ -482,6 +491,7 @@ class BenchRun:
             problems.extend(self._drain(acq))
         if self.signals.grace_deadline() is not None:
             self._keep_books(status, reason, problems, signal_name, signal_number)
+        self._vent_rows_problems = problems  # the vent check's rows that failed to record
         self.vent_check = self._verify(gone)
         if self.vent_check.device_lost and revive:
             # the vent was written, but the device was lost before the monitor confirmed it

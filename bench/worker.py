@@ -187,6 +187,27 @@ class Acquisition:
                                for k, volts in enumerate(block.volts)])
         self.next_index = block.first_index + len(block.volts)
 
+    def record_vent_check(self, block) -> str:
+        """Record a block the vent check read (phase ``vent``, step -1, set 0 bar): the
+        pressure's decay after the vent. Samples skipped since the last read (an overflow the
+        check recovered from) are a gap. No interlock is judged (the vent is commanded). The
+        problem met, or "" (never raises: the check goes on)."""
+        try:
+            if block.first_index > self.next_index:
+                lost = block.first_index - self.next_index
+                self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
+                                      block.first_index / self.rate_hz,
+                                      "samples lost during the vent check"))
+                self._pending_flags.append("gap")
+            rows = [self._sample(block.first_index + k, volts, "vent", -1, 0.0)
+                    for k, volts in enumerate(block.volts)]
+            self.next_index = block.first_index + len(block.volts)
+            self.recorder.samples(rows)
+        except Exception as exc:
+            return (f"the samples of the vent check could not be recorded "
+                    f"({type(exc).__name__}: {exc})")
+        return ""
+
     def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
                 trips: list[tuple[str, RunStatus]] | None = None) -> Sample:
         """The sample of ``volts``; its interlocks are judged (their trips added to ``trips``)
