@@ -532,6 +532,11 @@ class BenchRun:
                 self.lease.release()
             except OSError as exc:
                 reason = f"{reason}; the bench marker could not be removed ({exc.strerror})"
+        elif self.lease is not None:  # kept: the next command vents first and says why
+            try:
+                self.lease.unverified(self.vent_check.describe())
+            except OSError:
+                pass  # the marker still names the run and its last command
         return status, reason
 
 
