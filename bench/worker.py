@@ -39,6 +39,7 @@ from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.recorder import Recorder
+from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
 
 RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
@@ -59,6 +60,15 @@ class Stop(Exception):
         super().__init__(reason)
         self.status, self.reason = status, reason
         self.signal_name, self.signal_number = signal_name, signal_number
+
+
+def _with_signal(tripped: Stop, sig: StopSignal) -> Stop:
+    """The interlock's stop ``tripped`` with the signal that arrived during its vent: its
+    reason stays the run's, the signal sets the exit status."""
+    stop = Stop(tripped.status, f"{tripped.reason}; {sig} received meanwhile", sig.name,
+                sig.signum)
+    stop.__cause__ = tripped.__cause__
+    return stop
 
 
 class Acquisition:
@@ -126,14 +136,30 @@ class Acquisition:
                         tripped = self._vent_for(*trips[0])
                     self._record(rows, tripped)
                 break
+            except StopSignal as sig:  # held through the block; the interlock's reason stays
+                if tripped is None:
+                    raise
+                stop = _with_signal(tripped, sig)
+                raise stop from stop.__cause__
             except ReadTimeout as exc:
                 timeouts += 1
                 self.recorder.meta.counters["read_timeouts"] += 1
                 if self.electronic and self.command_bar > 0:
-                    # pressurised and blind: no interlock can act until a reading comes
-                    self._trip(f"read interlock: no reading within {daq.read_timeout_s:g} s "
-                               f"with {self.command_bar:g} bar commanded at "
-                               f"{self.next_index / self.rate_hz:g} s ({exc})", RunStatus.FAILED)
+                    # pressurised and blind: no interlock can act until a reading comes; a
+                    # signal during its vent is held until the vent is out, and added to it
+                    try:
+                        with self.guard():
+                            tripped = self._vent_for(
+                                f"read interlock: no reading within {daq.read_timeout_s:g} s "
+                                f"with {self.command_bar:g} bar commanded at "
+                                f"{self.next_index / self.rate_hz:g} s ({exc})",
+                                RunStatus.FAILED)
+                    except StopSignal as sig:
+                        if tripped is None:
+                            raise
+                        stop = _with_signal(tripped, sig)
+                        raise stop from stop.__cause__
+                    raise tripped from tripped.__cause__
                 if timeouts > daq.read_retries:
                     raise
                 self._pending_flags.append("timeout")
@@ -318,9 +344,6 @@ class Acquisition:
                     f"max_pressure_bar {limit:g} + {soft:.3g} bar for more than "
                     f"{OVERPRESSURE_HOLD_S:g} s (regulator overshoot)")
         return None
-
-    def _trip(self, message: str, status: RunStatus = RunStatus.ABORTED) -> None:
-        raise self._vent_for(message, status)
 
     def _vent_for(self, message: str, status: RunStatus) -> Stop:
         """Command the interlock's vent now; the :class:`Stop` that says so, to raise once the

@@ -363,3 +363,30 @@ def test_a_console_that_takes_no_output_does_not_stop_the_interlocks(config, tmp
     assert (run.samples["phase"] != "vent").sum() == 51  # samples 0-50, 50 tripped
     vent = run.commands[run.commands["purpose"] == "interlock vent"]
     assert vent["sample"].tolist() == [51]
+
+
+def test_a_signal_during_the_read_interlocks_vent_keeps_the_interlocks_reason(config, tmp_path):
+    # a read timeout at 3.0 s with 0.5 bar commanded trips the read interlock; SIGTERM arrives
+    # as its vent is written: it replaced the interlock's reason with its own ("stopped by
+    # SIGTERM"). Now the vent goes out, the reason stays the interlock's, the signal is added
+    c = config.replace(sim={"faults": {"read_timeout_at_s": 3.0, "read_timeouts": 1}})
+    backend = SimBackend(c)
+    original = backend.write_command
+
+    def write_command(volts):
+        if volts == 0.0 and backend._timeouts_left == 0 and not backend.signalled:
+            backend.signalled = True
+            signal.raise_signal(signal.SIGTERM)  # its handler runs before the write
+        original(volts)
+
+    backend.signalled = False
+    backend.write_command = write_command
+    result = BenchRun(c, backend, tmp_path, handle_signals=True).execute()
+    run = load_run(result.path)
+    assert backend.signalled
+    assert result.status == "failed", result.reason
+    assert result.reason.startswith("read interlock: no reading within 2 s with 0.5 bar "
+                                    "commanded at 3 s"), result.reason
+    assert "vented; SIGTERM received meanwhile" in result.reason
+    assert result.exit_code == 128 + signal.SIGTERM and run.meta.stop_signal == "SIGTERM"
+    assert list(run.commands["purpose"])[-2:] == ["interlock vent", "vent"]
