@@ -306,29 +306,47 @@ class BenchRun:
     def _execute(self) -> RunResult:
         status, reason, error, exit_code = RunStatus.FAILED, "", None, EXIT_FAILED
         signal_name = signal_number = None
+        outcome: BaseException | None = None  # what ended the run early
+        late: BaseException | None = None  # a signal that came before they were held
         try:
-            self.startup()
-            Staircase(self.config, self.acquisition, self.operator, self._on_step,
-                      self.notify).run()
-            status, reason, exit_code = self._finished()
-        except Stop as stop:
-            status, reason = stop.status, stop.reason
-            signal_name, signal_number = stop.signal_name, stop.signal_number
-        except StopSignal as sig:
-            status, signal_name, signal_number = RunStatus.ABORTED, sig.name, sig.signum
-            reason = f"stopped by {sig}: vented at once"
-        except KeyboardInterrupt:  # the handlers were not installed (not the main thread)
+            try:
+                self.startup()
+                Staircase(self.config, self.acquisition, self.operator, self._on_step,
+                          self.notify).run()
+                status, reason, exit_code = self._finished()
+            except BaseException as exc:
+                outcome = exc
+            self.signals.hold()  # a further signal must not cut the vent or the record
+        except BaseException as exc:  # a signal while the outcome was taken, before the hold
+            self.signals.hold()
+            late = exc
+        # judged with the signals held: a signal can no longer escape as a traceback
+        if outcome is None:
+            outcome, late = late, None
+        if isinstance(outcome, Stop):
+            status, reason = outcome.status, outcome.reason
+            signal_name, signal_number = outcome.signal_name, outcome.signal_number
+        elif isinstance(outcome, StopSignal):
+            status, signal_name, signal_number = RunStatus.ABORTED, outcome.name, outcome.signum
+            reason = f"stopped by {outcome}: vented at once"
+        elif isinstance(outcome, KeyboardInterrupt):  # no handlers (not the main thread)
             status, signal_name, signal_number = RunStatus.ABORTED, "SIGINT", 2
             reason = "stopped by a second Ctrl-C (SIGINT): vented at once"
-        except BenchError as exc:
-            reason = f"{type(exc).__name__}: {exc}"
-        except OSError as exc:  # the run folder's disk: full, gone, read-only
-            reason, exit_code = f"recording failed ({type(exc).__name__}: {exc})", EXIT_STORAGE
-        except BaseException as exc:
-            reason, error = f"{type(exc).__name__}: {exc}", exc
-        finally:
-            self.signals.hold()  # a further signal must not cut the vent or the record
+        elif isinstance(outcome, BenchError):
+            status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
+        elif isinstance(outcome, OSError):  # the run folder's disk: full, gone, read-only
+            status, exit_code = RunStatus.FAILED, EXIT_STORAGE
+            reason = f"recording failed ({type(outcome).__name__}: {outcome})"
+        elif outcome is not None:
+            status, reason, error = (RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}",
+                                     outcome)
+        if isinstance(late, StopSignal | KeyboardInterrupt) and signal_number is None:
+            name = late.name if isinstance(late, StopSignal) else "SIGINT"
+            signal_name, signal_number = name, getattr(late, "signum", 2)
+            reason = f"{reason}; {name} received meanwhile"
+        try:
             status, reason = self.shutdown(status, reason, signal_name, signal_number)
+        finally:
             self.signals.done()
         if signal_number is not None:
             exit_code = 128 + signal_number

@@ -390,3 +390,51 @@ def test_a_signal_during_the_read_interlocks_vent_keeps_the_interlocks_reason(co
     assert "vented; SIGTERM received meanwhile" in result.reason
     assert result.exit_code == 128 + signal.SIGTERM and run.meta.stop_signal == "SIGTERM"
     assert list(run.commands["purpose"])[-2:] == ["interlock vent", "vent"]
+
+
+def test_a_signal_while_the_runs_outcome_is_taken_is_no_traceback(config, tmp_path):
+    # SIGTERM arriving inside _execute's except handler (here: as the device error's message
+    # is read for the reason), before the signals were held, escaped the recorded run as a
+    # traceback (exit 1). Now the outcome is taken with the signals held
+    from mkm.bench.backend import BenchError
+
+    class Sneaky(BenchError):
+        said = False
+
+        def __str__(self):
+            if not Sneaky.said:
+                Sneaky.said = True
+                signal.raise_signal(signal.SIGTERM)
+            return "the device failed"
+
+    backend = SimBackend(config)
+    original = backend.read
+
+    def read(n, timeout):
+        if backend._index >= 30:
+            raise Sneaky()
+        return original(n, timeout)
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True).execute()
+    run = load_run(result.path)
+    assert Sneaky.said
+    assert result.status == "failed" and result.reason.startswith("Sneaky: the device failed")
+    assert run.meta.status == "failed" and run.commands["purpose"].iloc[-1] == "vent"
+
+
+def test_a_signal_just_before_the_signals_are_held_is_the_runs_stop(config, tmp_path):
+    # SIGTERM in the instant between the run's end and the hold of the signals
+    run = BenchRun(config, SimBackend(config), tmp_path, handle_signals=True)
+    hold = run.signals.hold
+
+    def hold_late():
+        run.signals.hold = hold
+        signal.raise_signal(signal.SIGTERM)  # the handler raises before the hold
+        hold()
+
+    run.signals.hold = hold_late
+    result = run.execute()
+    assert result.status == "aborted" and result.reason.startswith("stopped by SIGTERM")
+    assert result.exit_code == 128 + signal.SIGTERM
+    assert load_run(result.path).commands["purpose"].iloc[-1] == "vent"
