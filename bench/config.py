@@ -455,6 +455,17 @@ class BenchConfig:
         if reg.command_channel not in caps.ao:
             raise ValueError(f"regulator.command_channel={reg.command_channel[:40]!r} is "
                              f"invalid: the {caps.product} has outputs {', '.join(caps.ao)}")
+        if reg.electronic and not backends.entry(self.daq.backend).simulated \
+                and reg.monitor_fault(0.0) is None:
+            # a monitor without a live zero: its lost wire (0 V) reads a plausible pressure
+            least = (MONITOR_MARGIN_FRACTION / (1 + MONITOR_MARGIN_FRACTION)
+                     * reg.monitor_V_at_full_scale)
+            raise ValueError(
+                f"regulator.monitor_V_at_zero={reg.monitor_V_at_zero:g} is invalid on a real "
+                f"bench: a lost monitor (unpowered, wire off) reads 0 V, which this output "
+                f"gives at {float(reg.monitor_bar(0.0)):.3g} bar and would pass for a vent; "
+                f"expected a live-zero output (1-5 V: monitor_V_at_zero above "
+                f"{least:.3g} V, so that 0 V is a monitor fault)")
         for name in ("monitor_V_at_zero", "monitor_V_at_full_scale"):
             if abs(getattr(reg, name)) > caps.ai_range_V:
                 raise ValueError(f"regulator.{name}={getattr(reg, name):g} is invalid: the "

@@ -245,6 +245,7 @@ class BenchRun:
         self._stop_by: str | None = None
         self._started = False
         self.vent_check: VentCheck | None = None
+        self._vent_rows_problems: list[str] = []  # the vent check's rows not recorded
         self.storage_failed = False
 
     def request_stop(self, by: str | None = None) -> None:
@@ -305,29 +306,47 @@ class BenchRun:
     def _execute(self) -> RunResult:
         status, reason, error, exit_code = RunStatus.FAILED, "", None, EXIT_FAILED
         signal_name = signal_number = None
+        outcome: BaseException | None = None  # what ended the run early
+        late: BaseException | None = None  # a signal that came before they were held
         try:
-            self.startup()
-            Staircase(self.config, self.acquisition, self.operator, self._on_step,
-                      self.notify).run()
-            status, reason, exit_code = self._finished()
-        except Stop as stop:
-            status, reason = stop.status, stop.reason
-            signal_name, signal_number = stop.signal_name, stop.signal_number
-        except StopSignal as sig:
-            status, signal_name, signal_number = RunStatus.ABORTED, sig.name, sig.signum
-            reason = f"stopped by {sig}: vented at once"
-        except KeyboardInterrupt:  # the handlers were not installed (not the main thread)
+            try:
+                self.startup()
+                Staircase(self.config, self.acquisition, self.operator, self._on_step,
+                          self.notify).run()
+                status, reason, exit_code = self._finished()
+            except BaseException as exc:
+                outcome = exc
+            self.signals.hold()  # a further signal must not cut the vent or the record
+        except BaseException as exc:  # a signal while the outcome was taken, before the hold
+            self.signals.hold()
+            late = exc
+        # judged with the signals held: a signal can no longer escape as a traceback
+        if outcome is None:
+            outcome, late = late, None
+        if isinstance(outcome, Stop):
+            status, reason = outcome.status, outcome.reason
+            signal_name, signal_number = outcome.signal_name, outcome.signal_number
+        elif isinstance(outcome, StopSignal):
+            status, signal_name, signal_number = RunStatus.ABORTED, outcome.name, outcome.signum
+            reason = f"stopped by {outcome}: vented at once"
+        elif isinstance(outcome, KeyboardInterrupt):  # no handlers (not the main thread)
             status, signal_name, signal_number = RunStatus.ABORTED, "SIGINT", 2
             reason = "stopped by a second Ctrl-C (SIGINT): vented at once"
-        except BenchError as exc:
-            reason = f"{type(exc).__name__}: {exc}"
-        except OSError as exc:  # the run folder's disk: full, gone, read-only
-            reason, exit_code = f"recording failed ({type(exc).__name__}: {exc})", EXIT_STORAGE
-        except BaseException as exc:
-            reason, error = f"{type(exc).__name__}: {exc}", exc
-        finally:
-            self.signals.hold()  # a further signal must not cut the vent or the record
+        elif isinstance(outcome, BenchError):
+            status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
+        elif isinstance(outcome, OSError):  # the run folder's disk: full, gone, read-only
+            status, exit_code = RunStatus.FAILED, EXIT_STORAGE
+            reason = f"recording failed ({type(outcome).__name__}: {outcome})"
+        elif outcome is not None:
+            status, reason, error = (RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}",
+                                     outcome)
+        if isinstance(late, StopSignal | KeyboardInterrupt) and signal_number is None:
+            name = late.name if isinstance(late, StopSignal) else "SIGINT"
+            signal_name, signal_number = name, getattr(late, "signum", 2)
+            reason = f"{reason}; {name} received meanwhile"
+        try:
             status, reason = self.shutdown(status, reason, signal_name, signal_number)
+        finally:
             self.signals.done()
         if signal_number is not None:
             exit_code = 128 + signal_number
@@ -447,9 +466,17 @@ class BenchRun:
         if gone:
             return VentCheck(False, float("nan"), below, 0.0, "monitor", "the device is gone",
                              device_lost=True)
+        acq, problems = self.acquisition, self._vent_rows_problems
+
+        def record(block) -> None:  # the decay after the vent, on disk (phase "vent")
+            problem = acq.record_vent_check(block) if acq is not None and \
+                self.recorder is not None else ""
+            if problem and problem not in problems:
+                problems.append(problem)
+
         try:
             return verify_vent(self.backend, self.config, self.operator, started=self._started,
-                               deadline=self.signals.grace_deadline)
+                               deadline=self.signals.grace_deadline, record=record)
         except BaseException as exc:
             return VentCheck(False, float("nan"), below, 0.0, "monitor",
                              f"{type(exc).__name__}: {exc}")
@@ -482,6 +509,7 @@ class BenchRun:
             problems.extend(self._drain(acq))
         if self.signals.grace_deadline() is not None:
             self._keep_books(status, reason, problems, signal_name, signal_number)
+        self._vent_rows_problems = problems  # the vent check's rows that failed to record
         self.vent_check = self._verify(gone)
         if self.vent_check.device_lost and revive:
             # the vent was written, but the device was lost before the monitor confirmed it
@@ -522,6 +550,11 @@ class BenchRun:
                 self.lease.release()
             except OSError as exc:
                 reason = f"{reason}; the bench marker could not be removed ({exc.strerror})"
+        elif self.lease is not None:  # kept: the next command vents first and says why
+            try:
+                self.lease.unverified(self.vent_check.describe())
+            except OSError:
+                pass  # the marker still names the run and its last command
         return status, reason
 
 

@@ -67,7 +67,7 @@ class RunStatus(enum.StrEnum):
 
 
 WRITTEN_STATUSES = tuple(s for s in RunStatus if s is not RunStatus.INCOMPLETE)
-PHASES = ("tare", "precondition", "step", "operator")
+PHASES = ("tare", "precondition", "step", "operator", "vent")  # vent: its check's reads
 DIRECTIONS = ("up", "down")
 FLAGS = ("gap", "timeout", "clipped", "interlock", "nonfinite")
 

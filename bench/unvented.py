@@ -18,7 +18,7 @@ from __future__ import annotations
 import datetime
 import json
 import re
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 
 from mkm.bench.storage import ProcessIdentity
@@ -53,12 +53,23 @@ class Marker:
     process: dict
     last_command_bar: float = 0.0
     last_command_utc: str = ""
+    # the run ended with its vent commanded but not verified: what the check found
+    vent_unverified: str = ""
     mended: str = ""  # what the finder did to the run folder (not written in the marker)
 
     def describe(self) -> str:
-        return (f"run {self.run_path} (started {self.started_utc}, pid {self.process['pid']}) "
-                f"ended without venting; its last commanded pressure was "
-                f"{self.last_command_bar:g} bar at {self.last_command_utc or self.started_utc}")
+        run = f"run {self.run_path} (started {self.started_utc}, pid {self.process['pid']})"
+        at = self.last_command_utc or self.started_utc
+        if self.last_command_bar > 0:
+            return (f"{run} ended without venting; its last commanded pressure was "
+                    f"{self.last_command_bar:g} bar at {at}")
+        if self.vent_unverified:
+            return (f"{run} vented (0 bar commanded at {at}) but its vent was not verified: "
+                    f"{self.vent_unverified}")
+        if self.last_command_utc:
+            return (f"{run} ended after its vent (0 bar commanded at {at}) before the vent "
+                    "was verified")
+        return f"{run} ended before any pressure was commanded"
 
     def vented_now(self) -> str:
         """What the command that found the marker says once it vented (and mended the run)."""
@@ -94,6 +105,12 @@ class BenchLease:
             timespec="seconds")
         self._write()
 
+    def unverified(self, what: str) -> None:
+        """The run ends with its vent not verified (``what`` the check found): the marker
+        stays, and says so to the command that finds it."""
+        self.marker.vent_unverified = what
+        self._write()
+
     def release(self) -> None:
         self.path.unlink(missing_ok=True)
 
@@ -104,9 +121,11 @@ def find_unvented(bench_key: str) -> list[tuple[Path, Marker]]:
     found = []
     for path in sorted(folder.glob("*.json")) if folder.is_dir() else []:
         try:
-            marker = Marker(**json.loads(path.read_text(encoding="utf-8")))
+            data = json.loads(path.read_text(encoding="utf-8"))
+            known = {f.name for f in fields(Marker)} - {"mended"}
+            marker = Marker(**{k: v for k, v in data.items() if k in known})  # a later version's
             alive = ProcessIdentity(**marker.process).alive()
-        except (OSError, ValueError, TypeError, KeyError):
+        except (OSError, ValueError, TypeError, KeyError, AttributeError):
             continue  # unreadable: not ours to judge (written by another version?)
         if not alive:
             found.append((path, marker))

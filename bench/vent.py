@@ -47,7 +47,7 @@ class VentCheck:
 
 
 def verify_vent(backend, config, operator=None, started: bool = True,
-                deadline=lambda: None) -> VentCheck:
+                deadline=lambda: None, record=lambda block: None) -> VentCheck:
     """Confirm that the muscle is vented (the vent command already written).
 
     Parameters
@@ -61,6 +61,9 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     deadline : callable, optional
         Returns the ``time.monotonic()`` [s] at which the check gives up unverified, or None
         (asked before every read: a console closed during the check bounds it too).
+    record : callable, optional
+        Gets every :class:`mkm.bench.backend.Block` the check reads (the run records them:
+        the pressure's decay after the vent is on disk); must not raise.
     """
     safety = config.safety
     below, timeout_s = safety.vent_below_bar, safety.vent_timeout_s
@@ -82,7 +85,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     try:  # samples acquired before the vent write say nothing about the vent
         stale = backend.available()
         if stale > 0:
-            backend.read(stale, config.daq.read_timeout_s)
+            record(backend.read(stale, config.daq.read_timeout_s))
     except BufferOverflow:
         backend.recover()
     except BenchError as exc:
@@ -98,14 +101,15 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                                  "ended (console closed)")
             read_s = min(read_s, max(cut - now, 2 * n / rate))  # a block's time at least
         try:
-            volts = backend.read(n, read_s).volts
+            block = backend.read(n, read_s)
         except BufferOverflow:
             backend.recover()
             continue
         except BenchError as exc:
             return VentCheck(False, pressure, below, time.monotonic() - start, "monitor",
                              f"{type(exc).__name__}: {exc}", isinstance(exc, DaqDisconnected))
-        monitor_V = float(volts[-1, 1])
+        record(block)
+        monitor_V = float(block.volts[-1, 1])
         sample_time_s += n / rate
         waited = max(time.monotonic() - start, sample_time_s)
         fault = config.regulator.monitor_fault(monitor_V) if math.isfinite(monitor_V) else None

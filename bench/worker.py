@@ -11,9 +11,12 @@ cannot delay it, nor take the interlock's reason from the run):
   (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
 - pressure (electronic regulator): a non-finite measured pressure; a monitor reading no
   working regulator gives (a live-zero output at 0 V: unpowered, wire off); a pressure more
-  than the tolerance away from the command it was acquired under for longer than
-  ``safety.pressure_follow_s`` from the sample that command acts at (a regulator that does not
-  follow; samples read late after a stall are judged against their own command);
+  than the tolerance away from the command it was acquired under, without moving more than
+  the tolerance towards it, for longer than ``safety.pressure_follow_s`` (a regulator that
+  does not follow). The window is the measured pressure's: a new command does not restart it
+  (a stuck regulator trips ``pressure_follow_s`` after it stops following, whatever is
+  commanded meanwhile), a working regulator's step response restarts it as it moves; samples
+  read late after a stall are judged against their own command;
 - over-pressure, on the measured pressure (the monitor's, or the manometer reading the operator
   typed with a manual regulator) whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
@@ -36,6 +39,7 @@ from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.recorder import Recorder
+from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
 
 RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
@@ -56,6 +60,15 @@ class Stop(Exception):
         super().__init__(reason)
         self.status, self.reason = status, reason
         self.signal_name, self.signal_number = signal_name, signal_number
+
+
+def _with_signal(tripped: Stop, sig: StopSignal) -> Stop:
+    """The interlock's stop ``tripped`` with the signal that arrived during its vent: its
+    reason stays the run's, the signal sets the exit status."""
+    stop = Stop(tripped.status, f"{tripped.reason}; {sig} received meanwhile", sig.name,
+                sig.signum)
+    stop.__cause__ = tripped.__cause__
+    return stop
 
 
 class Acquisition:
@@ -97,8 +110,10 @@ class Acquisition:
         self.marker_problem = ""  # the bench marker could not be updated after a vent
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
-        self._off_since_s: float | None = None  # pressure away from the command since then
-        self._followed_bar = 0.0  # the command the previous sample was acquired under
+        # the measured pressure has been off its command, and not moved towards it by more than
+        # the tolerance, since then; the pressure it had then
+        self._off_since_s: float | None = None
+        self._off_from_bar = 0.0
         self._over_since_s: float | None = None  # pressure above the limit's margin since then
 
     # one block -------------------------------------------------------------------------------
@@ -121,14 +136,30 @@ class Acquisition:
                         tripped = self._vent_for(*trips[0])
                     self._record(rows, tripped)
                 break
+            except StopSignal as sig:  # held through the block; the interlock's reason stays
+                if tripped is None:
+                    raise
+                stop = _with_signal(tripped, sig)
+                raise stop from stop.__cause__
             except ReadTimeout as exc:
                 timeouts += 1
                 self.recorder.meta.counters["read_timeouts"] += 1
                 if self.electronic and self.command_bar > 0:
-                    # pressurised and blind: no interlock can act until a reading comes
-                    self._trip(f"read interlock: no reading within {daq.read_timeout_s:g} s "
-                               f"with {self.command_bar:g} bar commanded at "
-                               f"{self.next_index / self.rate_hz:g} s ({exc})", RunStatus.FAILED)
+                    # pressurised and blind: no interlock can act until a reading comes; a
+                    # signal during its vent is held until the vent is out, and added to it
+                    try:
+                        with self.guard():
+                            tripped = self._vent_for(
+                                f"read interlock: no reading within {daq.read_timeout_s:g} s "
+                                f"with {self.command_bar:g} bar commanded at "
+                                f"{self.next_index / self.rate_hz:g} s ({exc})",
+                                RunStatus.FAILED)
+                    except StopSignal as sig:
+                        if tripped is None:
+                            raise
+                        stop = _with_signal(tripped, sig)
+                        raise stop from stop.__cause__
+                    raise tripped from tripped.__cause__
                 if timeouts > daq.read_retries:
                     raise
                 self._pending_flags.append("timeout")
@@ -181,6 +212,27 @@ class Acquisition:
         self.recorder.samples([self._sample(block.first_index + k, volts, phase, step, set_bar)
                                for k, volts in enumerate(block.volts)])
         self.next_index = block.first_index + len(block.volts)
+
+    def record_vent_check(self, block) -> str:
+        """Record a block the vent check read (phase ``vent``, step -1, set 0 bar): the
+        pressure's decay after the vent. Samples skipped since the last read (an overflow the
+        check recovered from) are a gap. No interlock is judged (the vent is commanded). The
+        problem met, or "" (never raises: the check goes on)."""
+        try:
+            if block.first_index > self.next_index:
+                lost = block.first_index - self.next_index
+                self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
+                                      block.first_index / self.rate_hz,
+                                      "samples lost during the vent check"))
+                self._pending_flags.append("gap")
+            rows = [self._sample(block.first_index + k, volts, "vent", -1, 0.0)
+                    for k, volts in enumerate(block.volts)]
+            self.next_index = block.first_index + len(block.volts)
+            self.recorder.samples(rows)
+        except Exception as exc:
+            return (f"the samples of the vent check could not be recorded "
+                    f"({type(exc).__name__}: {exc})")
+        return ""
 
     def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
                 trips: list[tuple[str, RunStatus]] | None = None) -> Sample:
@@ -235,9 +287,10 @@ class Acquisition:
 
     def _interlock(self, index, force, pressure, cell_V, monitor_V, flags) -> str | None:
         """The interlock sample ``index`` trips (its message), or None. The regulator is
-        judged against the command the sample was acquired under, and gets
-        ``pressure_follow_s`` from the sample a new command acts at: samples read late (after
-        a stall) were acquired before a command the reader wrote meanwhile."""
+        judged against the command the sample was acquired under (samples read late, after a
+        stall, were acquired before a command the reader wrote meanwhile), and gets
+        ``pressure_follow_s`` from the last sample at which its pressure was on the command or
+        had moved more than the tolerance towards it."""
         t_s = index / self.rate_hz
         limit = self.config.force_limit_N
         safety = self.config.safety
@@ -255,17 +308,23 @@ class Acquisition:
         if fault:
             return f"pressure interlock: {fault} at {t_s:g} s"
         commanded = self._commanded_at(index)
-        if commanded != self._followed_bar:
-            self._followed_bar, self._off_since_s = commanded, None
-        if abs(pressure - commanded) <= safety.pressure_tolerance_bar:
+        tolerance = safety.pressure_tolerance_bar
+        if abs(pressure - commanded) <= tolerance:
             self._off_since_s = None
-        elif self._off_since_s is None:
-            self._off_since_s = t_s
+        elif self._off_since_s is None or (
+                (pressure - self._off_from_bar) * math.copysign(1.0, commanded
+                                                                - self._off_from_bar)
+                > tolerance):
+            # off the command, first or after moving more than the tolerance towards it (a
+            # working regulator's step response or a ramp it lags): the window starts here. A
+            # new command does not restart it: a stuck regulator's pressure does not move
+            self._off_since_s, self._off_from_bar = t_s, pressure
         elif t_s - self._off_since_s > safety.pressure_follow_s:
             return (f"pressure interlock: the regulator does not follow: {pressure:.3f} bar "
                     f"measured against {commanded:g} bar commanded for more than "
-                    f"{safety.pressure_follow_s:g} s (tolerance "
-                    f"{safety.pressure_tolerance_bar:g} bar)")
+                    f"{safety.pressure_follow_s:g} s (tolerance {tolerance:g} bar; the "
+                    f"pressure has not moved towards the command since "
+                    f"{self._off_since_s:g} s)")
         return None
 
     def _overpressure(self, t_s: float, pressure: float) -> str | None:
@@ -285,9 +344,6 @@ class Acquisition:
                     f"max_pressure_bar {limit:g} + {soft:.3g} bar for more than "
                     f"{OVERPRESSURE_HOLD_S:g} s (regulator overshoot)")
         return None
-
-    def _trip(self, message: str, status: RunStatus = RunStatus.ABORTED) -> None:
-        raise self._vent_for(message, status)
 
     def _vent_for(self, message: str, status: RunStatus) -> Stop:
         """Command the interlock's vent now; the :class:`Stop` that says so, to raise once the

@@ -258,3 +258,26 @@ def test_settle_timeout_and_tare_are_bounded():
     with pytest.raises(ValueError, match=r"read_block_samples=1 is 10 s of samples at 0.1 Hz"):
         load_config().replace(daq={"sample_rate_hz": 0.1, "read_timeout_s": 30.0,
                                    "buffer_s": 6000.0})
+
+
+def test_a_monitor_without_a_live_zero_is_refused_on_a_real_bench(tmp_path, mkm_cli):
+    # 0-10 V over 0-4 bar: a lost monitor (wire off, 0 V) read 0 bar, a verified vent
+    text = load_config().text
+    zero10 = (text.replace("monitor_V_at_zero = 1.0", "monitor_V_at_zero = 0.0")
+              .replace("monitor_V_at_full_scale = 5.0", "monitor_V_at_full_scale = 10.0"))
+    assert zero10 != text
+    path = tmp_path / "zero10.toml"
+    path.write_text(zero10)
+    sim = load_config(path)  # the simulator may model such a sensor
+    with pytest.raises(ValueError, match=r"^regulator\.monitor_V_at_zero=0 is invalid on a "
+                       r"real bench: a lost monitor .* would pass for a vent"):
+        sim.replace(daq={"backend": "ni"})
+    for command in ("check", "acquire"):
+        code, out, err = mkm_cli([command, "--config", str(path), "--backend", "ni",
+                                  "--out", str(tmp_path / "r")] if command == "acquire" else
+                                 [command, "--config", str(path), "--backend", "ni"])
+        assert code == 2 and not (tmp_path / "r").exists()
+        (line,) = err.strip().splitlines()
+        assert line.startswith(f"mkm {command}: error: regulator.monitor_V_at_zero=0 is invalid")
+    live = load_config().replace(daq={"backend": "ni"})  # 1-5 V: accepted
+    assert live.regulator.monitor_V_at_zero == 1.0

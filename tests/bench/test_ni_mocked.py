@@ -110,11 +110,12 @@ def test_whole_run_writes_commands_and_vents_before_clearing(config, fake_driver
     assert len(clears) == 2 and last_write < min(clears)
     reads = calls(fake_driver, "read_analog_f64")
     assert all(c.args[1] == 1 and c.args[2] == 2.0 for c in reads)  # 1-sample blocks, 2 s
-    # every read is a recorded sample, except the vent check's after the final vent: one
-    # sample each until the monitor read below 0.05 bar (0.1 s of sample time per read)
+    # every read is a recorded sample, the vent check's after the final vent included (phase
+    # vent): one sample each until the monitor read below 0.05 bar (0.1 s of sample time each)
     vent_check = run.meta.vent_check
     assert vent_check["verified"] and vent_check["pressure_bar"] < 0.05
-    assert len(reads) - len(run.samples) == round(vent_check["waited_s"] / 0.1)
+    assert len(reads) == len(run.samples)
+    assert (run.samples["phase"] == "vent").sum() == round(vent_check["waited_s"] / 0.1)
     assert [c.args for c in calls(fake_driver, "start_task")] == [(AO,), (AI,)]
 
 

@@ -40,7 +40,7 @@ def test_complete_run_files(config, tmp_path):
     assert tuple(s.columns) == SAMPLE_COLUMNS
     np.testing.assert_array_equal(s["sample"], np.arange(len(s)))
     np.testing.assert_allclose(s["time_s"], s["sample"] / 10.0)
-    assert set(s["phase"]) == {"tare", "step"}
+    assert set(s["phase"]) == {"tare", "step", "vent"}  # vent: the vent check's reads
     assert (s.loc[s.phase == "tare", "step"] == -1).all()
     # raw volts are stored and the force is their conversion with the tare offset (during the
     # tare itself, with the config's offset); 1e-5 relative is the CSV's 6 significant digits
@@ -149,7 +149,8 @@ def test_interlock_with_the_papers_tca10(config, tmp_path):
     limit = 0.9 * 98.0665
     tripped = run.samples[run.samples["flags"].str.contains("interlock")]
     assert len(tripped) == 1 and tripped["force_N"].iloc[0] >= limit
-    assert (run.samples["force_N"].iloc[:-1] < limit).all()  # stopped at the first sample over
+    acquired = run.samples[run.samples["phase"] != "vent"]  # before the vent check's reads
+    assert (acquired["force_N"].iloc[:-1] < limit).all()  # stopped at the first sample over
     assert run.steps.empty  # the first step never finished
     assert run.commands["purpose"].iloc[-1] == "vent"
     assert "interlock vent" in set(run.commands["purpose"])
@@ -226,7 +227,7 @@ def test_second_ctrl_c_vents_at_once(config, tmp_path):
     result = BenchRun(config, _Interrupting(config, 45), tmp_path, handle_signals=False).execute()
     run = load_run(result.path)
     assert result.status == "aborted" and "second Ctrl-C" in result.reason
-    assert len(run.samples) == 45
+    assert len(run.samples[run.samples["phase"] != "vent"]) == 45
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
 
 
@@ -245,7 +246,8 @@ def test_first_ctrl_c_stops_at_the_next_block(config, tmp_path):
     result = run.execute()
     loaded = load_run(result.path)
     assert result.status == "aborted" and "Ctrl-C" in result.reason
-    assert loaded.samples["sample"].iloc[-1] == 30  # the block in hand is kept, no more
+    acquired = loaded.samples[loaded.samples["phase"] != "vent"]  # before the vent check
+    assert acquired["sample"].iloc[-1] == 30  # the block in hand is kept, no more
     assert loaded.commands["purpose"].iloc[-1] == "vent"
     assert backend.commands[-1][1] == 0.0  # the device's last command is the vent
     assert loaded.meta["stop_to_vent_s"] < 0.05  # no waiting in between on the virtual clock
@@ -267,8 +269,9 @@ def test_a_signal_while_a_block_is_read_keeps_the_block(config, tmp_path):
     result = BenchRun(config, backend, tmp_path, handle_signals=True).execute()
     loaded = load_run(result.path)
     assert result.status == "aborted" and "SIGTERM" in result.reason
-    assert loaded.samples["sample"].iloc[-1] == 30  # the block in hand, nothing after
-    assert list(loaded.samples["sample"]) == list(range(31))
+    acquired = loaded.samples[loaded.samples["phase"] != "vent"]  # before the vent check
+    assert acquired["sample"].iloc[-1] == 30  # the block in hand, nothing after
+    assert list(acquired["sample"]) == list(range(31))
     assert loaded.commands["purpose"].iloc[-1] == "vent" and backend.commands[-1][1] == 0.0
 
 
@@ -356,6 +359,82 @@ def test_a_console_that_takes_no_output_does_not_stop_the_interlocks(config, tmp
     assert result.status == "aborted" and "force interlock: the force reading is not a " \
         "number" in result.reason
     run = load_run(result.path)
-    assert run.meta.counters["samples"] == len(run.samples) == 51  # samples 0-50, 50 tripped
+    assert run.meta.counters["samples"] == len(run.samples)
+    assert (run.samples["phase"] != "vent").sum() == 51  # samples 0-50, 50 tripped
     vent = run.commands[run.commands["purpose"] == "interlock vent"]
     assert vent["sample"].tolist() == [51]
+
+
+def test_a_signal_during_the_read_interlocks_vent_keeps_the_interlocks_reason(config, tmp_path):
+    # a read timeout at 3.0 s with 0.5 bar commanded trips the read interlock; SIGTERM arrives
+    # as its vent is written: it replaced the interlock's reason with its own ("stopped by
+    # SIGTERM"). Now the vent goes out, the reason stays the interlock's, the signal is added
+    c = config.replace(sim={"faults": {"read_timeout_at_s": 3.0, "read_timeouts": 1}})
+    backend = SimBackend(c)
+    original = backend.write_command
+
+    def write_command(volts):
+        if volts == 0.0 and backend._timeouts_left == 0 and not backend.signalled:
+            backend.signalled = True
+            signal.raise_signal(signal.SIGTERM)  # its handler runs before the write
+        original(volts)
+
+    backend.signalled = False
+    backend.write_command = write_command
+    result = BenchRun(c, backend, tmp_path, handle_signals=True).execute()
+    run = load_run(result.path)
+    assert backend.signalled
+    assert result.status == "failed", result.reason
+    assert result.reason.startswith("read interlock: no reading within 2 s with 0.5 bar "
+                                    "commanded at 3 s"), result.reason
+    assert "vented; SIGTERM received meanwhile" in result.reason
+    assert result.exit_code == 128 + signal.SIGTERM and run.meta.stop_signal == "SIGTERM"
+    assert list(run.commands["purpose"])[-2:] == ["interlock vent", "vent"]
+
+
+def test_a_signal_while_the_runs_outcome_is_taken_is_no_traceback(config, tmp_path):
+    # SIGTERM arriving inside _execute's except handler (here: as the device error's message
+    # is read for the reason), before the signals were held, escaped the recorded run as a
+    # traceback (exit 1). Now the outcome is taken with the signals held
+    from mkm.bench.backend import BenchError
+
+    class Sneaky(BenchError):
+        said = False
+
+        def __str__(self):
+            if not Sneaky.said:
+                Sneaky.said = True
+                signal.raise_signal(signal.SIGTERM)
+            return "the device failed"
+
+    backend = SimBackend(config)
+    original = backend.read
+
+    def read(n, timeout):
+        if backend._index >= 30:
+            raise Sneaky()
+        return original(n, timeout)
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True).execute()
+    run = load_run(result.path)
+    assert Sneaky.said
+    assert result.status == "failed" and result.reason.startswith("Sneaky: the device failed")
+    assert run.meta.status == "failed" and run.commands["purpose"].iloc[-1] == "vent"
+
+
+def test_a_signal_just_before_the_signals_are_held_is_the_runs_stop(config, tmp_path):
+    # SIGTERM in the instant between the run's end and the hold of the signals
+    run = BenchRun(config, SimBackend(config), tmp_path, handle_signals=True)
+    hold = run.signals.hold
+
+    def hold_late():
+        run.signals.hold = hold
+        signal.raise_signal(signal.SIGTERM)  # the handler raises before the hold
+        hold()
+
+    run.signals.hold = hold_late
+    result = run.execute()
+    assert result.status == "aborted" and result.reason.startswith("stopped by SIGTERM")
+    assert result.exit_code == 128 + signal.SIGTERM
+    assert load_run(result.path).commands["purpose"].iloc[-1] == "vent"

@@ -33,3 +33,29 @@ def test_process_identity_of_this_process_is_alive():
     assert me.alive()
     assert not ProcessIdentity(me.pid, me.host, me.started_unix_s + 5.0, me.boot_unix_s).alive()
     assert not ProcessIdentity(me.pid, "another-host", me.started_unix_s).alive()
+
+
+def test_a_run_whose_vent_was_not_verified_is_said_so_not_unvented(config, tmp_path):
+    # stuck at 0.5 bar from 4 s: the follow interlock vents, the monitor still reads 0.5 bar;
+    # the marker stays, last commanded 0 bar, and said "ended without venting ... last
+    # commanded pressure was 0 bar": a contradiction of what happened
+    from mkm.bench.run import acquire
+
+    c = config.replace(sim={"faults": {"regulator_stuck_at_s": 4.0}})
+    result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert result.manual_vent_required
+    (path,) = _folder("sim-Dev1").glob("*.json")
+    data = json.loads(path.read_text())
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    path.write_text(json.dumps(data))
+    ((_, marker),) = find_unvented("sim-Dev1")
+    said = marker.describe()
+    assert "ended without venting" not in said and "last commanded pressure was 0" not in said
+    assert f"run {result.path.resolve()}" in said
+    assert "vented (0 bar commanded at " in said and "but its vent was not verified: the " \
+        "monitor still reads 0.49" in said
+    # a run killed between its vent and the check, and one killed before any command
+    marker.vent_unverified = ""
+    assert "ended after its vent (0 bar commanded at" in marker.describe()
+    marker.last_command_utc = ""
+    assert marker.describe().endswith("ended before any pressure was commanded")

@@ -32,7 +32,7 @@ def test_nan_force_trips_the_interlock(config, tmp_path):
     result, run = record(config, tmp_path, nan_force_at_s=5.0)
     assert result.status == "aborted" and result.exit_code == 1
     assert "force interlock: the force reading is not a number" in result.reason
-    s = run.samples
+    s = run.samples[run.samples["phase"] != "vent"]  # before the vent check's reads
     assert s["force_N"].iloc[-1] != s["force_N"].iloc[-1]  # the NaN sample is recorded
     assert s["time_s"].iloc[-1] == pytest.approx(5.0) and s["flags"].iloc[-1] == \
         "nonfinite|interlock"
@@ -83,7 +83,8 @@ def test_regulator_overshoot_trips_the_pressure_interlock(config, tmp_path):
     assert result.status == "failed" and "(regulator overshoot)" in result.reason
     tripped = run.samples[run.samples["flags"].str.contains("interlock")]
     assert tripped["pressure_bar"].iloc[0] > 2.75
-    assert (run.samples["pressure_bar"].iloc[:-1] <= 2.75).all()  # the first sample over
+    acquired = run.samples[run.samples["phase"] != "vent"]  # before the vent check's reads
+    assert (acquired["pressure_bar"].iloc[:-1] <= 2.75).all()  # the first sample over
     assert_vented_last(run)
 
 
@@ -153,9 +154,9 @@ def test_samples_waiting_in_the_buffer_at_a_stop_are_recorded(config, tmp_path):
     # are recorded (before the fix the vent check read and dropped them), no interlock judged.
     result, run = record(config, tmp_path, stall_at_s=3.0, stall_s=5.0, nan_force_at_s=3.0)
     assert result.status == "aborted" and "force interlock" in result.reason
-    s = run.samples
+    assert run.meta.counters["samples"] == len(run.samples) and run.meta.lost_samples == 0
+    s = run.samples[run.samples["phase"] != "vent"]  # then the vent check's reads
     np.testing.assert_array_equal(s["sample"], np.arange(80))
-    assert run.meta.counters["samples"] == 80 and run.meta.lost_samples == 0
     assert list(s["flags"].iloc[29:]) == ["", "nonfinite|interlock"] + ["nonfinite"] * 49
     assert set(s["phase"].iloc[30:]) == {"step"} and set(s["step"].iloc[30:]) == {0}
     # acquired under the 0.5 bar command: the vent was issued when the hardware was at 8.0 s
@@ -269,7 +270,8 @@ def test_an_interlock_vents_before_its_block_is_written(config, tmp_path, monkey
     assert events[tripped] == ("samples", 50 + block - 1)  # the block holding sample 50
     assert events[tripped - 1] == ("AO", 0.0)  # the interlock's vent, then the rows
     assert events[tripped - 2] == ("samples", 50 - 1)  # the block before: no vent before it
-    assert run.meta.counters["samples"] == len(run.samples) == events[tripped][1] + 1
+    assert run.meta.counters["samples"] == len(run.samples)
+    assert (run.samples["phase"] != "vent").sum() == events[tripped][1] + 1
     vent = run.commands[run.commands["purpose"] == "interlock vent"].iloc[0]
     assert vent["sample"] == events[tripped][1] + 1  # issued just after the block's last sample
 
@@ -345,3 +347,58 @@ def test_a_shutdown_vent_that_fails_after_an_interlock_vent_is_called_failed(con
     assert "; vent command failed (AOWriteFailed: simulated AO write failure)" in result.reason
     assert run.commands["purpose"].iloc[-2:].tolist() == ["interlock vent", "vent"]
     assert run.commands["ok"].iloc[-2:].tolist() == [True, False]
+
+
+@pytest.mark.parametrize("stuck_s", [6.0, 8.0, 10.5, 16.0])
+def test_a_stuck_regulator_trips_within_the_follow_time_whatever_is_commanded(tmp_path, stuck_s):
+    # The paper's sequence: pre-conditioning to 2.5 bar at 5 s and back to 0 at 10 s, held 5 s
+    # each (pressure_follow_s), then the staircase from 15 s. The window used to restart at each
+    # new command: stuck from 6 s (rising towards 2.5 bar), it tripped only at 20.1 s, and
+    # pre-conditioning could never trip it. Now it trips pressure_follow_s (and a block) after
+    # the first sample, from the moment it sticks, at which its pressure is off the command
+    from mkm.bench.config import load_config
+
+    c = load_config()
+    result, run = record(c, tmp_path, regulator_stuck_at_s=stuck_s)
+    assert result.status in ("aborted", "failed"), result.reason
+    assert "pressure interlock: the regulator does not follow" in result.reason
+    s = run.samples
+    tol, follow = c.safety.pressure_tolerance_bar, c.safety.pressure_follow_s
+    block_s = c.daq.read_block_samples / c.daq.sample_rate_hz
+    failing = s[(s["time_s"] >= stuck_s - 1e-9)
+                & ((s["pressure_bar"] - s["command_bar"]).abs() > tol)]
+    tripped = s[s["flags"].str.contains("interlock")]["time_s"].iloc[0]
+    assert tripped - failing["time_s"].iloc[0] <= follow + 1 / c.daq.sample_rate_hz + block_s
+    assert "interlock vent" in set(run.commands["purpose"])
+
+
+def test_a_healthy_regulator_never_trips_the_follow_interlock_on_the_papers_sequence(tmp_path):
+    # every step response of the simulator's regulator (0.4 s lag, 2 bar/s slew), the 2.5 bar
+    # pre-conditioning steps included, and a sensor with the truth's hysteresis and bow
+    from mkm.bench.config import load_config
+
+    for truth in ({}, {"monitor_hysteresis_bar": 0.05, "monitor_bow_bar": 0.03}):
+        c = load_config().replace(sim={"truth": truth})
+        result, run = record(c, tmp_path)
+        assert result.status == "complete", result.reason
+        assert not run.samples["flags"].str.contains("interlock").any()
+
+
+@pytest.mark.parametrize("faults", [{}, {"regulator_stuck_at_s": 4.0}])
+def test_the_vent_checks_own_samples_are_recorded(config, tmp_path, faults):
+    # the samples read after the vent, while the monitor was watched for it, were dropped: the
+    # pressure's decay (or a stuck regulator's pressure that did not decay) was not on disk
+    result, run = record(config, tmp_path, **faults)
+    s, check = run.samples, run.meta.vent_check
+    vent = s[s["phase"] == "vent"]
+    assert len(vent) > 0 and (vent["step"] == -1).all() and (vent["command_bar"] == 0.0).all()
+    assert vent["sample"].iloc[0] >= run.commands["sample"].iloc[-1]  # after the final vent
+    assert vent["pressure_bar"].iloc[-1] == pytest.approx(check["pressure_bar"], abs=1e-6)
+    assert vent["time_s"].iloc[-1] - vent["time_s"].iloc[0] == pytest.approx(
+        check["waited_s"] - 0.1, abs=0.051)
+    assert list(s["sample"]) == list(range(len(s)))  # no sample missing, none twice
+    assert run.meta.counters["samples"] == len(s)
+    if faults:  # the stuck regulator's pressure, held for the whole check, is on disk
+        assert not check["verified"] and (vent["pressure_bar"] > 0.15).all()
+    else:
+        assert check["verified"] and vent["pressure_bar"].is_monotonic_decreasing
