@@ -424,6 +424,40 @@ def test_identify_help_names_every_parameter_group_it_fits():
     assert [g.strip() for g in listed.split(",")] == list(GROUPS)
 
 
+def _option_help(command: tuple[str, ...], option: str) -> str:
+    from mkm.cli import build_parser
+
+    sub = dict((name, parser) for name, parser in _subcommands(build_parser()))[command]
+    return next(a for a in sub._actions if option in a.option_strings).help
+
+
+@pytest.mark.parametrize("command, option, module, registry, pattern", [
+    (("design",), "--objective", "mkm.design.spec", "OBJECTIVES",
+     r"ranking of the designs: (.+?) \(default\)(.*)"),
+    (("identify",), "--params", "mkm.identify.fitting", "GROUPS",
+     r"a comma list of ([\w, ]+?) \(")])
+def test_choice_help_is_derived_from_its_registry(command, option, module, registry, pattern,
+                                                  monkeypatch):
+    """``mkm design --objective`` and ``mkm identify --params`` list their registry's entries,
+    every one and nothing else, and an entry added to the registry appears in the help."""
+    import importlib
+    import re
+
+    def listed() -> list[str]:
+        text = _option_help(command, option)
+        found = re.search(pattern, text)
+        assert found, text
+        return [n.strip() for n in re.split(r",|\s+or\s+", "".join(found.groups())) if n.strip()]
+
+    where = importlib.import_module(module)
+    names = list(getattr(where, registry))
+    assert listed() == names
+    added = ("min-cost",) if registry == "OBJECTIVES" else {"c01": ("c01_fraction",)}
+    grown = (*names, *added) if registry == "OBJECTIVES" else {**where.GROUPS, **added}
+    monkeypatch.setattr(where, registry, grown)
+    assert listed() == list(grown)
+
+
 def test_every_readme_example_parses():
     """Every `mkm ...` line in the README's code blocks is a command line mkm accepts (lines
     with placeholders such as RUN_DIR, <RUN> or [optional] parts are templates, not commands)."""
