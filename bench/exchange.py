@@ -437,7 +437,8 @@ def _muscle(given: dict, group: _Group):
     """The muscle of one state: the table's L0 and eps (or length) over the ones given, but
     ``--L0`` over the table's L0 where its held lengths give eps anew; and what was
     overridden (a note, or None)."""
-    where = f"{group.table.source.name} ({group.state}): "
+    where = (f"{group.table.source.name}: " if group.state == group.table.source.name
+             else f"{group.table.source.name} ({group.state}): ")  # the file named once
     values = dict(given)
     override = None
     if "L0" in group.columns:

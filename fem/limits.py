@@ -81,8 +81,9 @@ def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
         text = value if isinstance(value, str) else repr(value)
         shown = repr(text if len(text) <= 40 else text[:40] + "...")
         raise ValueError(f"{where}={shown} ({len(text)} characters) is invalid: expected 1 to "
-                         "64 letters, digits or . _ + -, not ending in '.' (it names the run "
-                         "folder and labels figures)")
+                         "64 ASCII letters (no accents), digits or . _ + -, starting with a letter "
+                         "or digit and not ending in '.' (it names the run folder and labels "
+                         "figures)")
     return value
 
 

@@ -497,6 +497,17 @@ def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     assert not (tmp_path / "runs").exists()  # nothing written
 
 
+def test_a_table_of_one_muscle_state_is_named_once(tmp_path, mkm_cli):
+    """A table that is not split into states (no eps, length, L0 or run column) is its file:
+    the message names the file once, not ``lab.csv (lab.csv)``."""
+    path = tmp_path / "lab.csv"
+    path.write_text("P,F\n1,2\n2,5\n")
+    code, out, err = mkm_cli(["import", str(path), "--D0", "30", "--t0", "3", "--L0", "282",
+                              "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == ""
+    assert err == "mkm import: error: lab.csv: no id: give --id (the table has no id column)\n"
+
+
 def test_a_size_under_another_name_is_pointed_at(tmp_path, mkm_cli):
     # a catalogue's nominal diameter is not silently taken for the tube's: named, to be given
     path = tmp_path / "lab.csv"
