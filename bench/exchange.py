@@ -55,7 +55,7 @@ from mkm.bench.tables import (
     without_summary_rows,
 )
 from mkm.core.ranges import parse_number
-from mkm.core.records import file_sha256, provenance, spreadsheet_safe
+from mkm.core.records import SPREADSHEET_CSV_ENCODING, file_sha256, provenance, spreadsheet_safe
 from mkm.fem.limits import PRACTICAL_RANGE, check_value, outside
 
 if TYPE_CHECKING:
@@ -732,7 +732,8 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
         return out
     out.mkdir(parents=True, exist_ok=True)
     for name, frame in sheets.items():
-        frame.to_csv(out / f"{name}.csv", index=False, float_format="%.10g")
+        frame.to_csv(out / f"{name}.csv", index=False, float_format="%.10g",
+                     encoding=SPREADSHEET_CSV_ENCODING)
     return out
 
 
@@ -766,7 +767,7 @@ def _an_export_folder(folder: Path) -> bool:
     if (folder / "run.json").exists() or not (folder / "metadata.csv").is_file():
         return False
     try:
-        with open(folder / "metadata.csv", encoding="utf-8", newline="") as f:
+        with open(folder / "metadata.csv", encoding="utf-8-sig", newline="") as f:
             first = f.readline().strip()
     except (OSError, UnicodeDecodeError):
         return False

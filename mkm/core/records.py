@@ -441,6 +441,16 @@ def save_figure(fig, path: Path) -> Path:
     return path
 
 
+#: The encoding of the CSV files written for people to open in a spreadsheet (those made
+#: :func:`spreadsheet_safe`: an export's steps, samples and metadata, a report's summary and
+#: per-run errors, an identification's parameters and steps): UTF-8 with a byte-order mark,
+#: without which Excel on Windows reads UTF-8 as its ANSI code page and shows 'Müller' as
+#: 'MÃ¼ller' and 'µm' as 'Âµm'. Every reader of the toolkit reads UTF-8 with or without the
+#: mark (pandas and :func:`read_csv_checked` skip it, text is opened as ``utf-8-sig``). A run
+#: folder's own files, appended to while the bench records, stay plain UTF-8.
+SPREADSHEET_CSV_ENCODING = "utf-8-sig"
+
+
 def read_csv_checked(path: str | os.PathLike, what: str, expected: str, columns=(),
                      numeric=(), comment: str | None = None):
     """The CSV table at ``path`` as a pandas DataFrame, with ``columns``, those of ``numeric``
@@ -453,7 +463,7 @@ def read_csv_checked(path: str | os.PathLike, what: str, expected: str, columns=
     if not path.is_file():
         raise ValueError(f"{what} {str(path)!r} does not exist: {expected}")
     try:
-        frame = pd.read_csv(path, comment=comment)
+        frame = pd.read_csv(path, comment=comment, encoding="utf-8-sig")  # BOM or none
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
         first = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
         raise ValueError(f"{what} {str(path)!r} is no CSV table ({first}): {expected}") from None

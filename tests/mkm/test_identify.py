@@ -400,6 +400,14 @@ def test_a_slack_run_leaves_the_closed_forms_slope_fits_to_the_others(tmp_path):
     assert 15.0 < entries["thickwall"]["theta0_deg"] < 40.0
     # the force target of Equation 2 fits every force, 0 N included
     assert entries["eq2-inner"]["reference"] == f"{rising.name}, {slack.name}"
+    # its tables are for a spreadsheet: UTF-8 with a BOM (Excel on Windows), read back as ever
+    from mkm.core.records import read_csv_checked
+
+    for name, first in (("parameters.csv", "parameter"), ("steps.csv", "run")):
+        path = tmp_path / "id" / name
+        assert path.read_bytes().startswith(b"\xef\xbb\xbf# mkm identify: ")
+        frame = read_csv_checked(path, name, "", comment="#")
+        assert frame.columns[0] == first
 
 
 def test_a_run_without_a_falling_step_says_so_instead_of_nan(one_run, tmp_path, mkm_run):
