@@ -174,6 +174,19 @@ class PracticalRange:
                           self.C01_per_C10[1] * self.C10_MPa[1])
         return out
 
+    def length_note(self, D0_mm: float, L0_mm: float) -> str | None:
+        """A muscle shorter than ``L0_per_D0_min`` diameters, said with the rule and what the
+        models do there (None for a longer one): a note, not an error, for a lab may have
+        such a muscle."""
+        if not L0_mm < self.L0_per_D0_min * D0_mm:
+            return None
+        k = self.L0_per_D0_min
+        return (f"L0 {L0_mm:g} mm is below {k:g} D0 = {k * D0_mm:g} mm, outside the practical "
+                f"range every model is validated over (L0 >= {k:g} D0, `mkm models`): the "
+                "clamped ends, which Equation 2 and the thick-wall form leave out (they take "
+                "a cylinder), are much of a muscle this short; every model still computes it, "
+                "as an extrapolation")
+
     def violations(self, **values) -> list[str]:
         """What of one muscle (``D0_mm=..., t0_mm=..., eps=..., C01_MPa=...``: any of the
         quantities, by their muscle names) lies outside the range, one phrase each; empty
