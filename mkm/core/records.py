@@ -183,14 +183,24 @@ def _swap_in(stage: Path, out: Path, names: list[str]) -> None:
         raise
 
 
+class HeldOpen(PermissionError):
+    """A file Windows would not replace: mostly one another program holds open (a summary.csv
+    shown in Excel), else a read-only one. ``strerror`` is the system's words; the message
+    says both causes in one line (a command adds that its files are as they were)."""
+
+    def __str__(self) -> str:
+        return (f"{self.filename} cannot be replaced ({self.strerror}): expected it closed in "
+                "every other program (Excel holds a file it shows open) and writable by this "
+                "user")
+
+
 def _move(source: Path, target: Path, named: Path) -> None:
     try:
         os.replace(source, target)
     except OSError as exc:  # named by the user's file; on Windows mostly one held open
-        detail = exc.strerror or str(exc)
-        if sys.platform == "win32" and isinstance(exc, PermissionError):
-            detail += " (open in another program? close it there)"
-        raise type(exc)(exc.errno, detail, str(named)) from None
+        kind = HeldOpen if sys.platform == "win32" and isinstance(exc, PermissionError) else \
+            type(exc)
+        raise kind(exc.errno, exc.strerror or str(exc), str(named)) from None
 
 
 def write_json_atomic(path: str | os.PathLike, data: Any) -> Path:

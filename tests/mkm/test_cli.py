@@ -973,3 +973,29 @@ def test_every_shipped_file_a_help_names_is_where_the_package_has_it():
     calibration = next(a.help for a in build_parser()._subparsers._group_actions[0]
                        .choices["report"]._actions if a.dest == "calibration")
     assert "the calibration.json of `mkm identify`" in calibration
+
+
+def test_a_file_windows_holds_open_is_one_coherent_line(tmp_path, monkeypatch, mkm_run):
+    """On Windows a sweep.csv shown in Excel cannot be replaced: the error said "expected a
+    folder this user can write to (not read-only)" with "(open in another program? close it
+    there)" inside, two causes contradicting each other; now one line names both."""
+    import os
+
+    from mkm.core import records
+
+    target = tmp_path / "sweep.csv"
+
+    def held_open(source, destination):
+        raise PermissionError(13, "Permission denied", os.fspath(source), None,
+                              os.fspath(destination))
+
+    monkeypatch.setattr(records.os, "replace", held_open)
+    monkeypatch.setattr(records.sys, "platform", "win32")
+    code, stdout, err = mkm_run(["fem", "solve", "--model", "eq2", *MUSCLE, "--out",
+                                 str(target)])
+    assert code == 2
+    assert err == (f"mkm fem solve: error: {target} cannot be replaced (Permission denied): "
+                   "expected it closed in every other program (Excel holds a file it shows "
+                   "open) and writable by this user; the command's files there are as they "
+                   "were\n")
+    assert not target.exists()
