@@ -131,7 +131,7 @@ def shared_help(option: str, extra: str = "") -> str:
 def derived_help(build):
     """An argparse store action whose help is ``build()``, called only when the help is shown:
     a choice list derived from a registry that lives with the library code (``OBJECTIVES`` of
-    :mod:`mkm.design.spec`, ``GROUPS`` of :mod:`mkm.identify.fitting`) without loading that
+    :mod:`mkm.design.spec`, whose package loads pandas and matplotlib) without loading that
     code for every command line, ``mkm --help`` included."""
 
     class DerivedHelp(argparse._StoreAction):

@@ -10,7 +10,6 @@ from mkm.cli.common import (
     add_progress_argument,
     argtype,
     command_name,
-    derived_help,
     say,
     with_calibration,
 )
@@ -20,7 +19,7 @@ from mkm.paths import check_writable, default_out
 
 
 def _params_help() -> str:
-    from mkm.identify.fitting import DEFAULT_GROUPS, GROUPS
+    from mkm.identify.groups import DEFAULT_GROUPS, GROUPS
 
     return (f"what to fit, a comma list of {', '.join(GROUPS)} (default "
             f"{','.join(DEFAULT_GROUPS)}: the runs' declared wall, diameter and rest length "
@@ -47,7 +46,7 @@ def register(subparsers) -> None:
     parser.add_argument("runs", nargs="+", metavar="RUN_DIR",
                         help="run folders of one muscle; a pattern (runs/*, expanded by mkm in "
                         "any shell) or a folder holding run folders")
-    parser.add_argument("--params", default=None, action=derived_help(_params_help))
+    parser.add_argument("--params", default=None, help=_params_help())
     parser.add_argument("--model", default="axisym",
                         help="static model spec that confirms the fit (and searches where the "
                         "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "

@@ -434,7 +434,7 @@ def _option_help(command: tuple[str, ...], option: str) -> str:
 @pytest.mark.parametrize("command, option, module, registry, pattern", [
     (("design",), "--objective", "mkm.design.spec", "OBJECTIVES",
      r"ranking of the designs: (.+?) \(default\)(.*)"),
-    (("identify",), "--params", "mkm.identify.fitting", "GROUPS",
+    (("identify",), "--params", "mkm.identify.groups", "GROUPS",
      r"a comma list of ([\w, ]+?) \(")])
 def test_choice_help_is_derived_from_its_registry(command, option, module, registry, pattern,
                                                   monkeypatch):
