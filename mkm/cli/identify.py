@@ -15,6 +15,7 @@ from mkm.cli.common import (
 )
 from mkm.core.ranges import parse_seed
 from mkm.fem.options import BRAIDS
+from mkm.identify.groups import SEARCHES
 from mkm.paths import check_writable, default_out
 
 
@@ -51,7 +52,7 @@ def register(subparsers) -> None:
                         help="static model spec that confirms the fit (and searches where the "
                         "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "
                         "default %(default)s")
-    parser.add_argument("--search", choices=("surrogate", "model"), default="surrogate",
+    parser.add_argument("--search", choices=SEARCHES, default=SEARCHES[0],
                         help="search with the surrogate (default) or with --model itself")
     parser.add_argument("--braid", choices=BRAIDS, default=None,
                         help="the muscle's braid when known (a --model with a braid option): "

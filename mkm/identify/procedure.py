@@ -41,12 +41,12 @@ from mkm.fem.options import BRAIDS
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
+from mkm.identify.groups import SEARCHES
 from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
 from mkm.identify.result import Identification
 from mkm.identify.runs import load_runs
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
-SEARCHES = ("surrogate", "model")
 #: a reduced candidate (friction or creep dropped), or a fit to the runs but one, that has not
 #: converged after this many evaluations from the full optimum is given up
 CANDIDATE_EVALUATIONS = 150

@@ -999,3 +999,15 @@ def test_a_file_windows_holds_open_is_one_coherent_line(tmp_path, monkeypatch, m
                    "open) and writable by this user; the command's files there are as they "
                    "were\n")
     assert not target.exists()
+
+
+def test_identify_search_choices_are_the_procedures_own():
+    """``mkm identify --search`` offers the procedure's SEARCHES, declared once (the parser
+    had its own tuple of the same names)."""
+    from mkm.cli import build_parser
+    from mkm.identify import procedure
+
+    sub = dict((name, parser) for name, parser in _subcommands(build_parser()))[("identify",)]
+    action = next(a for a in sub._actions if "--search" in a.option_strings)
+    assert action.choices is procedure.SEARCHES
+    assert action.default == procedure.SEARCHES[0] == "surrogate"
