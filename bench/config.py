@@ -121,8 +121,9 @@ class Daq:
         if not re.fullmatch(DEVICE_PATTERN, self.device):
             shown = self.device if len(self.device) <= 40 else self.device[:40] + "..."
             raise ValueError(f"daq.device={shown!r} ({len(self.device)} characters) is invalid: "
-                             "expected a device name of 1 to 64 letters, digits, spaces or "
-                             "_ . - (as NI MAX shows it: Dev1)")
+                             "expected a device name of 1 to 64 ASCII letters (no accents), "
+                             "digits, spaces or _ . -, starting with a letter, digit or _ (as NI "
+                             "MAX shows it: Dev1)")
         for name in ("sample_rate_hz", "read_block_samples", "read_timeout_s"):
             positive(f"daq.{name}", getattr(self, name))
         if not 600.0 <= self.buffer_s <= MAX_BUFFER_S:

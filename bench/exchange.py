@@ -55,7 +55,7 @@ from mkm.bench.tables import (
     without_summary_rows,
 )
 from mkm.core.ranges import parse_number
-from mkm.core.records import file_sha256, provenance, spreadsheet_safe
+from mkm.core.records import SPREADSHEET_CSV_ENCODING, file_sha256, provenance, spreadsheet_safe
 from mkm.fem.limits import PRACTICAL_RANGE, check_value, outside
 
 if TYPE_CHECKING:
@@ -437,7 +437,8 @@ def _muscle(given: dict, group: _Group):
     """The muscle of one state: the table's L0 and eps (or length) over the ones given, but
     ``--L0`` over the table's L0 where its held lengths give eps anew; and what was
     overridden (a note, or None)."""
-    where = f"{group.table.source.name} ({group.state}): "
+    where = (f"{group.table.source.name}: " if group.state == group.table.source.name
+             else f"{group.table.source.name} ({group.state}): ")  # the file named once
     values = dict(given)
     override = None
     if "L0" in group.columns:
@@ -531,6 +532,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), group.values("force")
     notes, handling = ([override], {"L0": override}) if override else ([], {})
+    notes += filter(None, [PRACTICAL_RANGE.length_note(muscle.D0_mm, muscle.L0_mm)])
     timed = "time" in found
     if timed:
         time_s = group.values("time")
@@ -739,7 +741,8 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
         return out
     out.mkdir(parents=True, exist_ok=True)
     for name, frame in sheets.items():
-        frame.to_csv(out / f"{name}.csv", index=False, float_format="%.10g")
+        frame.to_csv(out / f"{name}.csv", index=False, float_format="%.10g",
+                     encoding=SPREADSHEET_CSV_ENCODING)
     return out
 
 
@@ -773,7 +776,7 @@ def _an_export_folder(folder: Path) -> bool:
     if (folder / "run.json").exists() or not (folder / "metadata.csv").is_file():
         return False
     try:
-        with open(folder / "metadata.csv", encoding="utf-8", newline="") as f:
+        with open(folder / "metadata.csv", encoding="utf-8-sig", newline="") as f:
             first = f.readline().strip()
     except (OSError, UnicodeDecodeError):
         return False

@@ -81,8 +81,9 @@ def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
         text = value if isinstance(value, str) else repr(value)
         shown = repr(text if len(text) <= 40 else text[:40] + "...")
         raise ValueError(f"{where}={shown} ({len(text)} characters) is invalid: expected 1 to "
-                         "64 letters, digits or . _ + -, not ending in '.' (it names the run "
-                         "folder and labels figures)")
+                         "64 ASCII letters (no accents), digits or . _ + -, starting with a letter "
+                         "or digit and not ending in '.' (it names the run folder and labels "
+                         "figures)")
     return value
 
 
@@ -172,6 +173,19 @@ class PracticalRange:
         out["C01_MPa"] = (self.C01_per_C10[0] * self.C10_MPa[0],
                           self.C01_per_C10[1] * self.C10_MPa[1])
         return out
+
+    def length_note(self, D0_mm: float, L0_mm: float) -> str | None:
+        """A muscle shorter than ``L0_per_D0_min`` diameters, said with the rule and what the
+        models do there (None for a longer one): a note, not an error, for a lab may have
+        such a muscle."""
+        if not L0_mm < self.L0_per_D0_min * D0_mm:
+            return None
+        k = self.L0_per_D0_min
+        return (f"L0 {L0_mm:g} mm is below {k:g} D0 = {k * D0_mm:g} mm, outside the practical "
+                f"range every model is validated over (L0 >= {k:g} D0, `mkm models`): the "
+                "clamped ends, which Equation 2 and the thick-wall form leave out (they take "
+                "a cylinder), are much of a muscle this short; every model still computes it, "
+                "as an extrapolation")
 
     def violations(self, **values) -> list[str]:
         """What of one muscle (``D0_mm=..., t0_mm=..., eps=..., C01_MPa=...``: any of the

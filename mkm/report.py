@@ -41,6 +41,7 @@ import pandas as pd
 
 from mkm.auto import RANGE_SPEC, REFERENCE_SPEC
 from mkm.core.records import (
+    SPREADSHEET_CSV_ENCODING,
     provenance,
     read_prediction_header,
     save_figure,
@@ -236,7 +237,8 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
     if other:
         warnings.warn(other, stacklevel=2)
     summary = pd.DataFrame([{"run": r.name, **row} for r in runs for row in r.summary])
-    spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g")
+    spreadsheet_safe(summary).to_csv(out / "summary.csv", index=False, float_format="%.6g",
+                                     encoding=SPREADSHEET_CSV_ENCODING)
 
     sections = [_summary_section(runs, summary, names, tolerance),
                 _overlay_section(runs, out, names, colours),
@@ -618,7 +620,8 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
                                  + _signals(r, out) + setup)
 
     stem = f"run{r.k}"
-    spreadsheet_safe(r.scored).to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g")
+    spreadsheet_safe(r.scored).to_csv(out / f"{stem}_errors.csv", index=False, float_format="%.6g",
+                                      encoding=SPREADSHEET_CSV_ENCODING)
     title = f"run {r.k}: {_plain(muscle.id)}, eps = {r.eps_pct:.1f} %"
     fig_path = save_figure(run_figure(steps, r.scored, title, names, colours),
                            out / f"{stem}_force_error.png")

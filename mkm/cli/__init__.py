@@ -28,6 +28,7 @@ from mkm.cli import (
     validation,
 )
 from mkm.cli.common import command_name, error_line, remember_command, say
+from mkm.core.records import HeldOpen
 
 
 class _Version(argparse.Action):
@@ -153,7 +154,9 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     except OSError as exc:  # a path the command cannot use (--out naming a folder, a file...)
         path = exc.filename2 or exc.filename  # an atomic write's target, not its temporary
-        if path and exc.errno in (errno.EACCES, errno.EPERM, errno.EROFS):
+        if isinstance(exc, HeldOpen):  # on Windows: one line, both causes, not "read-only"
+            say(args, "error", f"{exc}; the command's files there are as they were")
+        elif path and exc.errno in (errno.EACCES, errno.EPERM, errno.EROFS):
             say(args, "error", f"{path} cannot be written ({exc.strerror}): expected a folder "
                 "this user can write to (not read-only); the command's files there are as "
                 "they were")

@@ -128,6 +128,18 @@ def shared_help(option: str, extra: str = "") -> str:
     return SHARED_HELP[option] + (f" ({extra})" if extra else "")
 
 
+def derived_help(build):
+    """An argparse store action whose help is ``build()``, called only when the help is shown:
+    a choice list derived from a registry that lives with the library code (``OBJECTIVES`` of
+    :mod:`mkm.design.spec`, whose package loads pandas and matplotlib) without loading that
+    code for every command line, ``mkm --help`` included."""
+
+    class DerivedHelp(argparse._StoreAction):
+        help = property(lambda self: build(), lambda self, value: None)
+
+    return DerivedHelp
+
+
 def add_progress_argument(parser) -> None:
     """``--no-progress``, described once for every command."""
     parser.add_argument("--no-progress", action="store_true",

@@ -10,6 +10,7 @@ from mkm.cli.common import (
     add_progress_argument,
     argtype,
     choices,
+    derived_help,
     shared_help,
     with_calibration,
 )
@@ -46,6 +47,14 @@ def _objective(text: str) -> str:
         raise argparse.ArgumentTypeError(f"{text!r} is invalid: expected one of "
                                          f"{', '.join(OBJECTIVES)}")
     return text
+
+
+def _objective_help() -> str:
+    from mkm.design.spec import OBJECTIVES
+
+    *others, last = OBJECTIVES
+    return (f"ranking of the designs: {OBJECTIVES[0]} (default)"
+            + "".join(f", {name}" for name in others[1:]) + f" or {last}")
 
 
 def _tolerances(text: str):
@@ -105,8 +114,7 @@ def register(subparsers) -> None:
                    help="with --tolerance: the probability each design meets every "
                    "requirement (default: 0.95)")
     p.add_argument("--objective", type=_objective, metavar="OBJECTIVE",
-                   help="ranking of the designs: min-outer-diameter (default), "
-                   "min-rubber-volume or max-margin")
+                   action=derived_help(_objective_help))
     p.add_argument("--top", type=int, metavar="N",
                    help="designs verified with the FE model (default 5)")
     p.add_argument("--mesh", choices=choices("axisym", "mesh"), default="medium",

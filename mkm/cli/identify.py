@@ -15,7 +15,19 @@ from mkm.cli.common import (
 )
 from mkm.core.ranges import parse_seed
 from mkm.fem.options import BRAIDS
+from mkm.identify.groups import SEARCHES
 from mkm.paths import check_writable, default_out
+
+
+def _params_help() -> str:
+    from mkm.identify.groups import DEFAULT_GROUPS, GROUPS
+
+    return (f"what to fit, a comma list of {', '.join(GROUPS)} (default "
+            f"{','.join(DEFAULT_GROUPS)}: the runs' declared wall, diameter and rest length "
+            "taken as given; t0 and D0 for a muscle whose wall is unknown; offset is the "
+            "pressure monitor's, within its declared accuracy; gap needs --model thickwall or "
+            "axisym; L0, the rest length, for runs of one length whose table may start already "
+            "shortened: each run's eps follows from its held length)")
 
 
 def register(subparsers) -> None:
@@ -35,20 +47,12 @@ def register(subparsers) -> None:
     parser.add_argument("runs", nargs="+", metavar="RUN_DIR",
                         help="run folders of one muscle; a pattern (runs/*, expanded by mkm in "
                         "any shell) or a folder holding run folders")
-    parser.add_argument("--params", default=None,
-                        help="what to fit, a comma list of theta0, rubber, t0, D0, friction, "
-                        "creep, gap, offset, L0 (default theta0,rubber,friction,creep,offset: "
-                        "the runs' declared wall, diameter and rest length taken as given; t0 "
-                        "and D0 for a muscle whose wall is unknown; offset is the pressure "
-                        "monitor's, within its declared accuracy; gap needs --model thickwall "
-                        "or axisym; L0, the rest length, for runs of one length whose table "
-                        "may start already shortened: each run's eps follows from its held "
-                        "length)")
+    parser.add_argument("--params", default=None, help=_params_help())
     parser.add_argument("--model", default="axisym",
                         help="static model spec that confirms the fit (and searches where the "
                         "surrogate's box ends): axisym, axisym:mesh=coarse or thickwall; "
                         "default %(default)s")
-    parser.add_argument("--search", choices=("surrogate", "model"), default="surrogate",
+    parser.add_argument("--search", choices=SEARCHES, default=SEARCHES[0],
                         help="search with the surrogate (default) or with --model itself")
     parser.add_argument("--braid", choices=BRAIDS, default=None,
                         help="the muscle's braid when known (a --model with a braid option): "

@@ -183,14 +183,24 @@ def _swap_in(stage: Path, out: Path, names: list[str]) -> None:
         raise
 
 
+class HeldOpen(PermissionError):
+    """A file Windows would not replace: mostly one another program holds open (a summary.csv
+    shown in Excel), else a read-only one. ``strerror`` is the system's words; the message
+    says both causes in one line (a command adds that its files are as they were)."""
+
+    def __str__(self) -> str:
+        return (f"{self.filename} cannot be replaced ({self.strerror}): expected it closed in "
+                "every other program (Excel holds a file it shows open) and writable by this "
+                "user")
+
+
 def _move(source: Path, target: Path, named: Path) -> None:
     try:
         os.replace(source, target)
     except OSError as exc:  # named by the user's file; on Windows mostly one held open
-        detail = exc.strerror or str(exc)
-        if sys.platform == "win32" and isinstance(exc, PermissionError):
-            detail += " (open in another program? close it there)"
-        raise type(exc)(exc.errno, detail, str(named)) from None
+        kind = HeldOpen if sys.platform == "win32" and isinstance(exc, PermissionError) else \
+            type(exc)
+        raise kind(exc.errno, exc.strerror or str(exc), str(named)) from None
 
 
 def write_json_atomic(path: str | os.PathLike, data: Any) -> Path:
@@ -441,6 +451,16 @@ def save_figure(fig, path: Path) -> Path:
     return path
 
 
+#: The encoding of the CSV files written for people to open in a spreadsheet (those made
+#: :func:`spreadsheet_safe`: an export's steps, samples and metadata, a report's summary and
+#: per-run errors, an identification's parameters and steps): UTF-8 with a byte-order mark,
+#: without which Excel on Windows reads UTF-8 as its ANSI code page and shows 'Müller' as
+#: 'MÃ¼ller' and 'µm' as 'Âµm'. Every reader of the toolkit reads UTF-8 with or without the
+#: mark (pandas and :func:`read_csv_checked` skip it, text is opened as ``utf-8-sig``). A run
+#: folder's own files, appended to while the bench records, stay plain UTF-8.
+SPREADSHEET_CSV_ENCODING = "utf-8-sig"
+
+
 def read_csv_checked(path: str | os.PathLike, what: str, expected: str, columns=(),
                      numeric=(), comment: str | None = None):
     """The CSV table at ``path`` as a pandas DataFrame, with ``columns``, those of ``numeric``
@@ -453,7 +473,7 @@ def read_csv_checked(path: str | os.PathLike, what: str, expected: str, columns=
     if not path.is_file():
         raise ValueError(f"{what} {str(path)!r} does not exist: {expected}")
     try:
-        frame = pd.read_csv(path, comment=comment)
+        frame = pd.read_csv(path, comment=comment, encoding="utf-8-sig")  # BOM or none
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
         first = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
         raise ValueError(f"{what} {str(path)!r} is no CSV table ({first}): {expected}") from None

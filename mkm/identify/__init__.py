@@ -5,7 +5,19 @@ calibration file every command takes (:mod:`mkm.identify.result`), and
 :func:`mkm.identify.page.report_section` shows the identified muscle in the report.
 """
 
-from mkm.identify.procedure import identify
-from mkm.identify.result import Identification
-
 __all__ = ["Identification", "identify"]
+
+
+def __getattr__(name: str):
+    """:func:`identify` and :class:`Identification` loaded when first asked for: the package's
+    light registry (:mod:`mkm.identify.groups`) is read by ``mkm identify --help`` without
+    numpy and scipy."""
+    if name == "identify":
+        from mkm.identify.procedure import identify
+
+        return identify
+    if name == "Identification":
+        from mkm.identify.result import Identification
+
+        return Identification
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -40,15 +40,9 @@ from mkm.fem.friction import force_history
 from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.muscle import eps_at_rest_length
+from mkm.identify.groups import DEFAULT_GROUPS, GROUPS
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
-#: ``--params`` groups and the fitted parameters each holds (internal names)
-GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",), "t0": ("t0_mm",),
-          "D0": ("D0_mm",), "friction": ("hysteresis_fraction",),
-          "creep": ("creep_fraction", "log_tau"), "gap": ("gap_mm",),
-          "offset": ("pressure_offset_bar",), "L0": ("L0_mm",)}
-#: what ``--params`` fits when not given: the wall, the diameter and a gap only when asked
-DEFAULT_GROUPS = ("theta0", "rubber", "friction", "creep", "offset")
 ORDER = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm", "gap_mm",
          "pressure_offset_bar", "hysteresis_fraction", "creep_fraction", "log_tau")
 #: the parameters of the static force (the rest are friction, creep and the monitor)

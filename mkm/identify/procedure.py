@@ -41,12 +41,12 @@ from mkm.fem.options import BRAIDS
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
+from mkm.identify.groups import SEARCHES
 from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
 from mkm.identify.result import Identification
 from mkm.identify.runs import load_runs
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
-SEARCHES = ("surrogate", "model")
 #: a reduced candidate (friction or creep dropped), or a fit to the runs but one, that has not
 #: converged after this many evaluations from the full optimum is given up
 CANDIDATE_EVALUATIONS = 150
@@ -302,7 +302,11 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                          "not two measured constants)")
     if "rubber_scale" in best.names and not rubber["separated"]:
         notify("the assumed rubber ratio: refits at the ends of what the runs allow")
-        rubber["assumed_ratio_terms"] = _assumed_ratio_terms(source, runs, best, rubber)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            rubber["assumed_ratio_terms"] = _assumed_ratio_terms(source, runs, best, rubber)
+        notes += _outside_box(caught, "the refits at the ends of the assumed rubber ratio",
+                              "the prediction band's rubber-ratio term is extrapolated there")
     fitness = goodness.assess(runs, best)
     boot = goodness.widen(boot, best, fitness)
     notify("model-form terms: the FE model at the optimum (and the other braid)")
@@ -517,9 +521,11 @@ def _shift(source, runs, best, differences) -> dict[str, float]:
     return {n: float(v) for n, v in zip(best.names, step, strict=True)}
 
 
-def _outside_box(caught) -> list[str]:
-    """Warnings of the fit with the rubber's ratio free passed on, except the surrogate's
-    out-of-domain ones, which that fit repeats once per evaluation: one note says it instead."""
+def _outside_box(caught, what: str = "the fit with C01's share free",
+                 consequence: str = "the test of C10 and C01 is extrapolated there") -> list[str]:
+    """Warnings of a refit (``what``: the fit with the rubber's ratio free, the refits at an
+    assumed ratio) passed on, except the surrogate's out-of-domain ones, which a fit repeats
+    once per evaluation: one note says it instead, with what was outside and ``consequence``."""
     outside = [w for w in caught if w.category.__name__ == "OutOfDomainWarning"]
     for w in caught:
         if w not in outside:
@@ -527,9 +533,8 @@ def _outside_box(caught) -> list[str]:
     if not outside:
         return []
     first = str(outside[0].message).partition("(")[2].partition(")")[0]
-    return [f"the fit with C01's share free left the surrogate's training box in "
-            f"{len(outside)} evaluations (first: {first}): the test of C10 and C01 is "
-            "extrapolated there"]
+    return [f"{what} left the surrogate's training box in {len(outside)} evaluations "
+            f"(first: {first}): {consequence}"]
 
 
 def _rubber_ratio(source, fe, runs, best, seed, braid):

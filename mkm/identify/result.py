@@ -30,6 +30,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.records import (
+    SPREADSHEET_CSV_ENCODING,
     finite_or_null,
     provenance,
     source_version,
@@ -402,7 +403,7 @@ class Identification:
         header = (f"# mkm identify: {info['command']} ({info['date_utc']}); runs "
                   f"{', '.join(r.name for r in self.runs)}\n")
         for key, frame in (("parameters", self.parameters()), ("steps", self.steps_frame())):
-            with open(files[key], "w", encoding="utf-8", newline="") as f:
+            with open(files[key], "w", encoding=SPREADSHEET_CSV_ENCODING, newline="") as f:
                 f.write(header)
                 spreadsheet_safe(frame).to_csv(f, index=False, float_format="%.6g")
         write_json_atomic(files["identification"], record)

@@ -222,8 +222,30 @@ def test_rse_allows_every_input():
 def test_muscle_ids_that_cannot_name_a_folder_or_a_label(muscle_id):
     text = BASE.replace('id = "m1"', f"id = {muscle_id!r}".replace("'", '"')
                         .replace("\n", "\\n").replace("\t", "\\t"))
-    with pytest.raises(ValueError, match=r"muscle\.id=.* is invalid: expected 1 to 64 letters"):
+    with pytest.raises(ValueError, match=r"muscle\.id=.* is invalid: expected 1 to 64 ASCII "
+                       r"letters"):
         parse_config(text)
+
+
+@pytest.mark.parametrize("muscle_id", ["Müller-Muskel", "_m1", "µm-tube"])
+def test_a_refused_muscle_id_is_told_what_the_pattern_allows(muscle_id):
+    """The message names the rule of ``MUSCLE_ID_PATTERN``: ASCII letters (an umlaut is refused
+    though it is a letter) and a first character that is a letter or digit."""
+    from mkm.fem.limits import check_muscle_id
+
+    with pytest.raises(ValueError) as info:
+        check_muscle_id(muscle_id)
+    assert str(info.value) == (
+        f"muscle.id={muscle_id!r} ({len(muscle_id)} characters) is invalid: expected 1 to 64 "
+        "ASCII letters (no accents), digits or . _ + -, starting with a letter or digit and not "
+        "ending in '.' (it names the run folder and labels figures)")
+
+
+def test_a_refused_device_name_says_ascii():
+    with pytest.raises(ValueError, match=r"daq\.device='Gerät1' \(6 characters\) is invalid: "
+                       r"expected a device name of 1 to 64 ASCII letters \(no accents\), "
+                       r"digits, spaces or _ \. -, starting with a letter, digit or _"):
+        parse_config(with_settings('[daq]\ndevice = "Gerät1"'))
 
 
 @pytest.mark.parametrize("name, value, message", [

@@ -215,6 +215,33 @@ def test_a_csv_export_never_overwrites_a_lab_folder_nor_a_run_folder(tmp_path, c
     assert len(pd.read_csv(again / "steps.csv")) == len(PRESSURES)
 
 
+def test_a_csv_export_opens_in_excel_with_its_non_ascii_text(tmp_path, capsys):
+    """A CSV export is for a spreadsheet: UTF-8 with a BOM, without which Excel on Windows
+    reads 'Müller' as 'MÃ¼ller'. The toolkit reads it back: its header intact, a run folder's
+    non-ASCII path kept, the folder re-exported into, its steps imported as a table."""
+    from mkm.core.records import read_csv_checked
+
+    lab = tmp_path / "Müller-Prüfstand µm"
+    lab.mkdir()
+    table = lab / "lab.csv"
+    _table().to_csv(table, index=False)
+    run = _import(table, lab, capsys).path
+    out = lab / "export °C"
+    for _ in range(2):  # the second time into the folder the first wrote
+        code, _, err = _run(["export", str(run), "--format", "csv", "--out", str(out)], capsys)
+        assert code == 0, err
+    for name, first in (("metadata", "key"), ("steps", "step"), ("samples", "sample")):
+        data = (out / f"{name}.csv").read_bytes()
+        assert data.startswith(b"\xef\xbb\xbf" + first.encode()), data[:20]
+        assert read_csv_checked(out / f"{name}.csv", name, "").columns[0] == first
+    meta = read_csv_checked(out / "metadata.csv", "metadata", "").set_index("key")["value"]
+    assert meta["exported.source"] == str(run)
+    assert "Müller-Prüfstand µm" in meta["exported.source"]
+    code, _, err = _run(["import", str(out / "steps.csv"), *MUSCLE[:-2], "--eps", "0.122",
+                         "--out", str(tmp_path / "again")], capsys)
+    assert code == 0, err
+
+
 def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys):
     # a bench run's vented step as the monitor read it: -0.000146 bar
     table = tmp_path / "steps.csv"

@@ -514,6 +514,36 @@ def test_bad_tables_are_one_line(content, argv, message, tmp_path, mkm_cli):
     assert not (tmp_path / "runs").exists()  # nothing written
 
 
+def test_a_table_of_one_muscle_state_is_named_once(tmp_path, mkm_cli):
+    """A table that is not split into states (no eps, length, L0 or run column) is its file:
+    the message names the file once, not ``lab.csv (lab.csv)``."""
+    path = tmp_path / "lab.csv"
+    path.write_text("P,F\n1,2\n2,5\n")
+    code, out, err = mkm_cli(["import", str(path), "--D0", "30", "--t0", "3", "--L0", "282",
+                              "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == ""
+    assert err == "mkm import: error: lab.csv: no id: give --id (the table has no id column)\n"
+
+
+@pytest.mark.parametrize("L0, noted", [("50", True), ("90", False), ("282", False)])
+def test_a_muscle_shorter_than_three_diameters_is_imported_with_a_note(L0, noted, tmp_path,
+                                                                       mkm_cli):
+    """--L0 50 --D0 30 was accepted without a word, though it breaks the practical range's
+    L0 >= 3 D0: a note (not an error: a lab may have such a muscle) names the rule and what
+    the models do there."""
+    path = tmp_path / "lab.csv"
+    path.write_text("P,F\n0.5,10\n1,30\n1.5,60\n")
+    code, out, err = mkm_cli(["import", str(path), "--id", "short", "--D0", "30", "--t0", "3",
+                              "--L0", L0, "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 0 and out.strip(), err
+    note = ("L0 50 mm is below 3 D0 = 90 mm, outside the practical range every model is "
+            "validated over (L0 >= 3 D0, `mkm models`): the clamped ends, which Equation 2 and "
+            "the thick-wall form leave out (they take a cylinder), are much of a muscle this "
+            "short; every model still computes it, as an extrapolation")
+    assert (note in err) == noted, err
+    assert ("below 3 D0" in err) == noted, err
+
+
 def test_a_size_under_another_name_is_pointed_at(tmp_path, mkm_cli):
     # a catalogue's nominal diameter is not silently taken for the tube's: named, to be given
     path = tmp_path / "lab.csv"

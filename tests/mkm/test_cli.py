@@ -424,6 +424,40 @@ def test_identify_help_names_every_parameter_group_it_fits():
     assert [g.strip() for g in listed.split(",")] == list(GROUPS)
 
 
+def _option_help(command: tuple[str, ...], option: str) -> str:
+    from mkm.cli import build_parser
+
+    sub = dict((name, parser) for name, parser in _subcommands(build_parser()))[command]
+    return next(a for a in sub._actions if option in a.option_strings).help
+
+
+@pytest.mark.parametrize("command, option, module, registry, pattern", [
+    (("design",), "--objective", "mkm.design.spec", "OBJECTIVES",
+     r"ranking of the designs: (.+?) \(default\)(.*)"),
+    (("identify",), "--params", "mkm.identify.groups", "GROUPS",
+     r"a comma list of ([\w, ]+?) \(")])
+def test_choice_help_is_derived_from_its_registry(command, option, module, registry, pattern,
+                                                  monkeypatch):
+    """``mkm design --objective`` and ``mkm identify --params`` list their registry's entries,
+    every one and nothing else, and an entry added to the registry appears in the help."""
+    import importlib
+    import re
+
+    def listed() -> list[str]:
+        text = _option_help(command, option)
+        found = re.search(pattern, text)
+        assert found, text
+        return [n.strip() for n in re.split(r",|\s+or\s+", "".join(found.groups())) if n.strip()]
+
+    where = importlib.import_module(module)
+    names = list(getattr(where, registry))
+    assert listed() == names
+    added = ("min-cost",) if registry == "OBJECTIVES" else {"c01": ("c01_fraction",)}
+    grown = (*names, *added) if registry == "OBJECTIVES" else {**where.GROUPS, **added}
+    monkeypatch.setattr(where, registry, grown)
+    assert listed() == list(grown)
+
+
 def test_every_readme_example_parses():
     """Every `mkm ...` line in the README's code blocks is a command line mkm accepts (lines
     with placeholders such as RUN_DIR, <RUN> or [optional] parts are templates, not commands)."""
@@ -939,3 +973,41 @@ def test_every_shipped_file_a_help_names_is_where_the_package_has_it():
     calibration = next(a.help for a in build_parser()._subparsers._group_actions[0]
                        .choices["report"]._actions if a.dest == "calibration")
     assert "the calibration.json of `mkm identify`" in calibration
+
+
+def test_a_file_windows_holds_open_is_one_coherent_line(tmp_path, monkeypatch, mkm_run):
+    """On Windows a sweep.csv shown in Excel cannot be replaced: the error said "expected a
+    folder this user can write to (not read-only)" with "(open in another program? close it
+    there)" inside, two causes contradicting each other; now one line names both."""
+    import os
+
+    from mkm.core import records
+
+    target = tmp_path / "sweep.csv"
+
+    def held_open(source, destination):
+        raise PermissionError(13, "Permission denied", os.fspath(source), None,
+                              os.fspath(destination))
+
+    monkeypatch.setattr(records.os, "replace", held_open)
+    monkeypatch.setattr(records.sys, "platform", "win32")
+    code, stdout, err = mkm_run(["fem", "solve", "--model", "eq2", *MUSCLE, "--out",
+                                 str(target)])
+    assert code == 2
+    assert err == (f"mkm fem solve: error: {target} cannot be replaced (Permission denied): "
+                   "expected it closed in every other program (Excel holds a file it shows "
+                   "open) and writable by this user; the command's files there are as they "
+                   "were\n")
+    assert not target.exists()
+
+
+def test_identify_search_choices_are_the_procedures_own():
+    """``mkm identify --search`` offers the procedure's SEARCHES, declared once (the parser
+    had its own tuple of the same names)."""
+    from mkm.cli import build_parser
+    from mkm.identify import procedure
+
+    sub = dict((name, parser) for name, parser in _subcommands(build_parser()))[("identify",)]
+    action = next(a for a in sub._actions if "--search" in a.option_strings)
+    assert action.choices is procedure.SEARCHES
+    assert action.default == procedure.SEARCHES[0] == "surrogate"

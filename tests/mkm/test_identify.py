@@ -400,6 +400,14 @@ def test_a_slack_run_leaves_the_closed_forms_slope_fits_to_the_others(tmp_path):
     assert 15.0 < entries["thickwall"]["theta0_deg"] < 40.0
     # the force target of Equation 2 fits every force, 0 N included
     assert entries["eq2-inner"]["reference"] == f"{rising.name}, {slack.name}"
+    # its tables are for a spreadsheet: UTF-8 with a BOM (Excel on Windows), read back as ever
+    from mkm.core.records import read_csv_checked
+
+    for name, first in (("parameters.csv", "parameter"), ("steps.csv", "run")):
+        path = tmp_path / "id" / name
+        assert path.read_bytes().startswith(b"\xef\xbb\xbf# mkm identify: ")
+        frame = read_csv_checked(path, name, "", comment="#")
+        assert frame.columns[0] == first
 
 
 def test_a_run_without_a_falling_step_says_so_instead_of_nan(one_run, tmp_path, mkm_run):
@@ -481,3 +489,30 @@ def test_one_table_imported_twice_is_refused_not_counted_twice(tmp_path, mkm_run
                         "or a copied run folder): expected each run once; leave one of them "
                         "out\n"), err
     assert not (tmp_path / "id").exists()
+
+
+def test_the_assumed_ratio_refits_leaving_the_surrogate_box_are_one_note(one_run, monkeypatch):
+    """`mkm identify` on the demo's runs printed the surrogate's out-of-domain warning 7 times,
+    once per refit at the assumed rubber ratio's ends (C01_MPa a hair apart each time): now one
+    note counts them and names what was outside; other warnings still pass on."""
+    import warnings
+
+    from mkm.identify import procedure
+    from mkm.surrogate.model import OutOfDomainWarning
+
+    def refits(source, runs, best, rubber):
+        for c01 in (0.0304583, 0.0304584, 0.030625):
+            warnings.warn(f"102 of 102 points lie outside the training domain (C01_MPa={c01} "
+                          "not in [0.0314, 0.0942]): flagged valid=False, in_domain=False",
+                          OutOfDomainWarning, stacklevel=1)
+        return {}
+
+    monkeypatch.setattr(procedure, "_assumed_ratio_terms", refits)
+    with warnings.catch_warnings(record=True) as passed:
+        warnings.simplefilter("always")
+        result = identify([one_run], params="theta0,rubber", model="thickwall", search="model")
+    assert not [w for w in passed if issubclass(w.category, OutOfDomainWarning)]
+    assert [n for n in result.notes if "training box" in n] == [
+        "the refits at the ends of the assumed rubber ratio left the surrogate's training box "
+        "in 3 evaluations (first: C01_MPa=0.0304583 not in [0.0314, 0.0942]): the prediction "
+        "band's rubber-ratio term is extrapolated there"]

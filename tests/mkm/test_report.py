@@ -19,6 +19,7 @@ import pytest
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.storage import reason_shown
+from mkm.core.records import read_csv_checked
 from mkm.fem.calibration import calibrated
 from mkm.fem.interface import Domain
 from mkm.fem.ladder import make_model
@@ -101,6 +102,11 @@ def test_err_pct_and_summary_match_hand_computation(runs, report):
     np.testing.assert_allclose(eq2["err_pct"], err, rtol=1e-5, atol=1e-4)
     summary = pd.read_csv(path.parent / "summary.csv")
     row = summary[(summary["run"] == runs[0].name) & (summary["model"] == "eq2")].iloc[0]
+    # tables for a spreadsheet: UTF-8 with a BOM, without which Excel on Windows garbles
+    # non-ASCII text; the toolkit's reader takes them with their first header intact
+    for name in ("summary.csv", "run1_errors.csv"):
+        assert (path.parent / name).read_bytes().startswith(b"\xef\xbb\xbf")
+        assert read_csv_checked(path.parent / name, name, "").columns[0] in ("run", "model")
     # summary.csv keeps 6 significant digits too
     assert row["max_abs_err_pct"] == pytest.approx(np.abs(err).max(), rel=1e-5)
     assert row["rmse_N"] == pytest.approx(np.sqrt(np.mean((F_meas - F) ** 2)), rel=1e-5)

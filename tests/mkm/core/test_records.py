@@ -228,5 +228,8 @@ def test_a_file_windows_holds_open_is_named_with_what_to_do(tmp_path, monkeypatc
     with pytest.raises(PermissionError) as raised:
         records.write_atomic(target, "new")
     assert raised.value.filename == str(target)
-    assert raised.value.strerror == "Permission denied (open in another program? close it there)"
+    assert raised.value.strerror == "Permission denied"
+    assert str(raised.value) == (
+        f"{target} cannot be replaced (Permission denied): expected it closed in every other "
+        "program (Excel holds a file it shows open) and writable by this user")
     assert target.read_text() == "old" and [p.name for p in tmp_path.iterdir()] == ["summary.csv"]
