@@ -373,6 +373,13 @@ class _Group:
     def cell(self, k: int, role: str) -> str:
         return self.table.cell(int(self.rows[k]), self.columns[role].index)
 
+    @property
+    def named(self) -> str:
+        """``lab.csv`` for a file of one state, else ``lab.csv (eps 0.1)``: the file named
+        once."""
+        name = self.table.source.name
+        return name if self.state == name else f"{name} ({self.state})"
+
 
 def _groups(recognition: Recognition, select: str | None, several_sheets: bool) -> list[_Group]:
     """The table's rows split into muscle states (see :data:`SPLIT_ROLES`)."""
@@ -437,8 +444,7 @@ def _muscle(given: dict, group: _Group):
     """The muscle of one state: the table's L0 and eps (or length) over the ones given, but
     ``--L0`` over the table's L0 where its held lengths give eps anew; and what was
     overridden (a note, or None)."""
-    where = (f"{group.table.source.name}: " if group.state == group.table.source.name
-             else f"{group.table.source.name} ({group.state}): ")  # the file named once
+    where = f"{group.named}: "
     values = dict(given)
     override = None
     if "L0" in group.columns:
@@ -635,7 +641,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             handling["steps_from"] = (f"quasi-static bins of {width:.3g} bar, rising and "
                                       "falling branches apart")
         if not steps:
-            raise ValueError(f"{table.name} ({group.state}): no step found in the time series "
+            raise ValueError(f"{group.named}: no step found in the time series "
                              f"(pressure {pressure.min():g}-{pressure.max():g} bar)")
         tare_rows = np.arange(pressure.size) < rest.rest.stop
         samples = [Sample(k, float(t), int(s), "tare" if tare_rows[k] else "step", math.nan,
@@ -681,7 +687,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                 **group.recognition.describe(), **handling}
     meta = RunMeta(
         muscle=muscle, status=RunStatus.IMPORTED,
-        reason=f"imported from {path.name} ({group.state}): measured elsewhere, "
+        reason=f"imported from {group.named}: measured elsewhere, "
         + ("samples and steps derived from them" if timed else "one row per step, no samples"),
         hardware={"backend": "import"}, sequence={"n_steps": len(steps)},
         steps_done=len(steps), command=prov["command"], provenance=prov, started_utc=now,
