@@ -79,7 +79,7 @@ def plateaus(time_s: np.ndarray, pressure_bar: np.ndarray,
         held = stop
         if not _settled(time_s[start:stop], pressure_bar[start:stop], tolerance_bar):
             # a rest and the slow ramp after it: the rest is the part before the kink
-            held = start + _kink(time_s[start:stop], pressure_bar[start:stop])
+            held = start + max(_kink(time_s[start:stop], pressure_bar[start:stop]), 1)
             held = held if _settled(time_s[start:held], pressure_bar[start:held],
                                     tolerance_bar) else start + 1
         if time_s[held - 1] - time_s[start] >= min_s:
@@ -102,7 +102,7 @@ def _settled(t: np.ndarray, p: np.ndarray, tolerance_bar: float) -> bool:
     tt, pp = t[middle] - t[middle][0] if t[middle].size else t[middle], p[middle]
     if tt.size < 4 or np.ptp(tt) <= 0:
         return True
-    (slope, offset), residual = np.polyfit(tt, pp, 1, full=True)[:2]
+    (slope, _), residual = np.polyfit(tt, pp, 1, full=True)[:2]
     spread = float(np.sum((tt - tt.mean()) ** 2))
     se = math.sqrt(float(residual[0]) / (tt.size - 2) / spread) if residual.size else 0.0
     return abs(slope) <= 4.0 * se or abs(slope) * (t[-1] - t[0]) <= 0.5 * tolerance_bar
