@@ -333,8 +333,9 @@ class Safety:
 
     The force interlock trips at ``force_limit_fraction`` of the load-cell capacity (or at any
     non-finite force or pressure). The pressure interlock (electronic regulator) trips when the
-    measured pressure stays more than ``pressure_tolerance_bar`` from the command for longer
-    than ``pressure_follow_s`` (a regulator that does not follow), or exceeds
+    measured pressure stays more than ``pressure_tolerance_bar`` from its command, without
+    moving more than that towards it, for longer than ``pressure_follow_s`` (a regulator that
+    does not follow; a new command does not restart the window), or exceeds
     ``regulator.max_pressure_bar`` by more than the tolerance (overshoot). The tare needs at
     least ``tare_min_samples`` finite samples, a spread below ``tare_max_std_N`` and an offset
     within ``tare_max_shift_N`` of the configured ``loadcell.offset_V``. A vent is verified: the
