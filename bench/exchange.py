@@ -629,11 +629,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     notes.extend(drift)
     samples: list[Sample] = []
     if timed:
-        shape = series.shape(time_s, pressure)
+        held = series.held_plateaus(time_s, pressure)
+        shape = series.shape(time_s, pressure, held)
         if shape == "staircase":
             from mkm.bench.config import load_config
 
-            steps, step_of = series.staircase_steps(time_s, pressure, force, load_config())
+            steps, step_of = series.staircase_steps(time_s, pressure, force, load_config(),
+                                                    held)
             handling["steps_from"] = ("plateaus judged by the bench's settle test "
                                       "(packaged [settle] criteria), averaged by HoldStats")
         else:

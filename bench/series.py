@@ -99,9 +99,10 @@ def _settled(t: np.ndarray, p: np.ndarray, tolerance_bar: float) -> bool:
     ``tolerance_bar``. A ramp of 0.002-0.02 bar/s stays 2-15 s in a 0.03 bar band that moves
     with its running median."""
     middle = slice(t.size // 4, 3 * t.size // 4)
-    tt, pp = t[middle] - t[middle][0] if t[middle].size else t[middle], p[middle]
+    tt, pp = t[middle], p[middle]
     if tt.size < 4 or np.ptp(tt) <= 0:
         return True
+    tt = tt - tt[0]
     (slope, _), residual = np.polyfit(tt, pp, 1, full=True)[:2]
     spread = float(np.sum((tt - tt.mean()) ** 2))
     se = math.sqrt(float(residual[0]) / (tt.size - 2) / spread) if residual.size else 0.0
@@ -222,15 +223,22 @@ def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) 
     return Tare(back.force_N, back.std_N, back.pressure_bar, slice(n - back.rest.stop, n))
 
 
-def shape(time_s: np.ndarray, pressure_bar: np.ndarray) -> str:
-    """``"staircase"`` when plateaus above the vented level hold at least
-    :data:`STAIRCASE_SHARE` of the pressurised time, there are two or more, and they step by
-    more than twice :data:`PLATEAU_TOLERANCE_BAR` (the median step), else ``"ramp"``."""
+def held_plateaus(time_s: np.ndarray, pressure_bar: np.ndarray) -> list[Plateau]:
+    """The plateaus above the vented level: the holds of a staircase."""
     low = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
-    pressurised = pressure_bar > low
+    return [q for q in plateaus(time_s, pressure_bar) if q.level_bar > low]
+
+
+def shape(time_s: np.ndarray, pressure_bar: np.ndarray,
+          held: list[Plateau] | None = None) -> str:
+    """``"staircase"`` when plateaus above the vented level (``held``, else
+    :func:`held_plateaus`) hold at least :data:`STAIRCASE_SHARE` of the pressurised time, there
+    are two or more, and they step by more than twice :data:`PLATEAU_TOLERANCE_BAR` (the median
+    step), else ``"ramp"``."""
+    pressurised = pressure_bar > float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
     if not pressurised.any():
         return "ramp"
-    held = [q for q in plateaus(time_s, pressure_bar) if q.level_bar > low]
+    held = held_plateaus(time_s, pressure_bar) if held is None else held
     dt = np.diff(time_s, append=time_s[-1])
     held_s = sum(float(dt[q.start:q.stop].sum()) for q in held)
     # a staircase steps from level to level; a slow ramp's stretches that passed for plateaus
@@ -240,13 +248,12 @@ def shape(time_s: np.ndarray, pressure_bar: np.ndarray) -> str:
         dt[pressurised].sum()) and np.median(steps_bar) > 2 * PLATEAU_TOLERANCE_BAR else "ramp"
 
 
-def staircase_steps(time_s, pressure_bar, force_N, settle_config) -> tuple[list[StepRecord],
-                                                                            np.ndarray]:
+def staircase_steps(time_s, pressure_bar, force_N, settle_config,
+                    held: list[Plateau] | None = None) -> tuple[list[StepRecord], np.ndarray]:
     """The steps of a staircase (module docstring) and each sample's step (-1: between
     steps). ``settle_config``: a :class:`mkm.bench.config.BenchConfig` whose ``[settle]``
-    judges the plateaus."""
-    low = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
-    held = [q for q in plateaus(time_s, pressure_bar) if q.level_bar > low]
+    judges the plateaus; ``held``: its :func:`held_plateaus`, if found already."""
+    held = held_plateaus(time_s, pressure_bar) if held is None else held
     step_of = np.full(time_s.size, -1)
     records, previous = [], 0.0
     repeats: dict[tuple[str, float], int] = {}
