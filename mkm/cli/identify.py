@@ -72,11 +72,14 @@ def _identify(args) -> int:
     from pathlib import Path
 
     from mkm.bench.folders import run_folders
+    from mkm.core.records import check_output_folder
     from mkm.identify import identify
+    from mkm.identify.result import OUTPUT_FILES
 
     args.runs = run_folders(args.runs)
     out = check_writable(Path(args.out) if args.out else
                          default_out("identify", Path(args.runs[0]).name), folder=True)
+    check_output_folder(out, OUTPUT_FILES.values(), OUTPUT_FILES["identification"])
     try:
         result = identify(args.runs, params=args.params, model=args.model, search=args.search,
                           braid=args.braid,

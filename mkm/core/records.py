@@ -396,11 +396,11 @@ def sidecar_path(path: str | os.PathLike) -> Path:
     return Path(path).with_suffix(".json")
 
 
-def _holds_provenance(path: Path) -> bool:
-    """Whether ``path`` is a CSV's metadata written by mkm: an object holding
-    :func:`provenance` at its top, as its ``software`` (a dataset's) or as its
+def holds_provenance(path: Path) -> bool:
+    """Whether ``path`` is a record written by mkm: an object holding :func:`provenance` at its
+    top, as its ``software`` (a dataset's), its ``provenance`` (identification.json) or its
     ``provenance.software`` (designs.json). Nowhere else: a calibration file's entries each
-    hold one, and it is the user's file, never a sidecar."""
+    hold one, and it is the user's file, never a record of an output."""
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
@@ -408,7 +408,7 @@ def _holds_provenance(path: Path) -> bool:
     if not isinstance(data, dict):
         return False
     nested = data.get("provenance")
-    places = (data, data.get("software"),
+    places = (data, data.get("software"), nested,
               nested.get("software") if isinstance(nested, dict) else None)
     return any(isinstance(d, dict) and {"date_utc", "command"} <= d.keys() for d in places)
 
@@ -424,7 +424,7 @@ def check_csv_with_sidecar(path: str | os.PathLike) -> Path:
     if sidecar == path:
         raise ValueError(f"{path}: its metadata goes to {sidecar.name}, the same file: expected "
                          "a .csv name")
-    if sidecar.exists() and not _holds_provenance(sidecar):
+    if sidecar.exists() and not holds_provenance(sidecar):
         raise ValueError(f"{sidecar} is not the metadata of an earlier {path.name} (no mkm "
                          f"provenance in it), and {path.name}'s would replace it: kept as it is; "
                          "expected another name for the CSV")
@@ -432,6 +432,22 @@ def check_csv_with_sidecar(path: str | os.PathLike) -> Path:
         raise ValueError(f"{path} exists and was not written by mkm (no {sidecar.name} beside "
                          "it): kept as it is; expected a new name for the CSV")
     return path
+
+
+def check_output_folder(out: str | os.PathLike, names, record: str) -> Path:
+    """``out`` if a command may write the files ``names`` into it: each is new there, or ``out``
+    is a folder the command wrote before (its ``record``, one of ``names``, a JSON file holding
+    mkm's provenance: :func:`holds_provenance`); else ``ValueError`` naming the file in the way.
+    A run folder or a lab's own folder holds ``steps.csv`` and ``calibration.json`` too."""
+    out = Path(out)
+    if holds_provenance(out / record):
+        return out
+    for name in names:
+        if (out / name).exists():
+            raise ValueError(f"{out / name} exists and {out} is not a folder this command wrote "
+                             f"(no {record} of mkm's in it): kept as it is; expected --out to "
+                             "name a new folder or an earlier output of the same command")
+    return out
 
 
 def png_metadata() -> dict[str, str]:
@@ -459,6 +475,10 @@ def save_figure(fig, path: Path) -> Path:
 #: mark (pandas and :func:`read_csv_checked` skip it, text is opened as ``utf-8-sig``). A run
 #: folder's own files, appended to while the bench records, stay plain UTF-8.
 SPREADSHEET_CSV_ENCODING = "utf-8-sig"
+
+#: The forms ``mkm export`` writes a run in: each name and what it makes at ``--out``.
+EXPORT_FORMATS = {"xlsx": "one .xlsx workbook of three sheets",
+                  "csv": "a folder of steps.csv, samples.csv and metadata.csv"}
 
 
 def read_csv_checked(path: str | os.PathLike, what: str, expected: str, columns=(),

@@ -31,6 +31,7 @@ import pandas as pd
 
 from mkm.core.records import (
     SPREADSHEET_CSV_ENCODING,
+    check_output_folder,
     finite_or_null,
     provenance,
     source_version,
@@ -57,6 +58,9 @@ UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm"
          "rubber_scale": "x Silastic S", "C01_over_C10": "ratio",
          "loadcell_sensitivity_tolerance": "fraction",
          "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
+#: what :meth:`Identification.write` writes into its folder, identification.json its record
+OUTPUT_FILES = {"calibration": "calibration.json", "parameters": "parameters.csv",
+                "steps": "steps.csv", "identification": "identification.json"}
 TERMS = ("hysteresis_fraction", "creep_fraction", "creep_tau_s")
 
 
@@ -392,20 +396,18 @@ class Identification:
         """Write the four files into ``out_dir`` (created); return their paths."""
         from mkm.registry import parse_spec
 
-        out = Path(out_dir)
+        out = check_output_folder(out_dir, OUTPUT_FILES.values(), OUTPUT_FILES["identification"])
         out.mkdir(parents=True, exist_ok=True)
         info = provenance()
         # an assumed parameter's interval, a branch without steps: null, not NaN (no JSON)
         record = finite_or_null({**self.record(), "provenance": {
             **info, "code_version": source_version("mkm.identify.procedure", data=False)}})
-        files = {"calibration": out / "calibration.json", "parameters": out / "parameters.csv",
-                 "steps": out / "steps.csv", "identification": out / "identification.json"}
-        header = (f"# mkm identify: {info['command']} ({info['date_utc']}); runs "
-                  f"{', '.join(r.name for r in self.runs)}\n")
+        files = {key: out / name for key, name in OUTPUT_FILES.items()}
+        # plain tables for a spreadsheet (a comment line reads as a row there): their
+        # provenance is identification.json's
         for key, frame in (("parameters", self.parameters()), ("steps", self.steps_frame())):
-            with open(files[key], "w", encoding=SPREADSHEET_CSV_ENCODING, newline="") as f:
-                f.write(header)
-                spreadsheet_safe(frame).to_csv(f, index=False, float_format="%.6g")
+            spreadsheet_safe(frame).to_csv(files[key], index=False, float_format="%.6g",
+                                           encoding=SPREADSHEET_CSV_ENCODING)
         write_json_atomic(files["identification"], record)
         files["calibration"].unlink(missing_ok=True)  # one identification per file
         values = self.values

@@ -215,6 +215,24 @@ def test_no_progress_leaves_the_result_alone(one_run, tmp_path, mkm_run):
     assert code == 0 and "mkm identify: fitting theta0 on " in err
 
 
+@pytest.mark.parametrize("holds", ["steps.csv", "calibration.json"])
+def test_a_folder_holding_a_users_files_is_not_written_into(one_run, tmp_path, mkm_run, holds):
+    # --out naming a run folder replaced its steps.csv with identify's own (the run's
+    # measurement lost); a lab folder's calibration.json was deleted
+    run = _copy(one_run, tmp_path, "run")
+    (run / "calibration.json").write_text('{"thickwall": {}}', encoding="utf-8")
+    (run / "steps.csv" if holds == "calibration.json" else run / "calibration.json").unlink()
+    before = {p.name: p.read_bytes() for p in run.iterdir()}
+    code, stdout, err = mkm_run(["identify", str(one_run), "--params", "theta0", "--model",
+                                 "thickwall", "--search", "model", "--out", str(run)])
+    assert code == 2 and stdout == ""
+    assert err == (f"mkm identify: error: {run / holds} exists and {run} is not a folder this "
+                   "command wrote (no identification.json of mkm's in it): kept as it is; "
+                   "expected --out to name a new folder or an earlier output of the same "
+                   "command\n")
+    assert {p.name: p.read_bytes() for p in run.iterdir()} == before
+
+
 @pytest.mark.parametrize("model, family", [("auto", "auto"), ("auto:tolerance=0.05", "auto"),
                                            ("friction", "friction"), ("surrogate", "surrogate")])
 def test_a_model_that_is_no_static_physics_is_refused(one_run, tmp_path, mkm_run, model, family):
@@ -405,8 +423,9 @@ def test_a_slack_run_leaves_the_closed_forms_slope_fits_to_the_others(tmp_path):
 
     for name, first in (("parameters.csv", "parameter"), ("steps.csv", "run")):
         path = tmp_path / "id" / name
-        assert path.read_bytes().startswith(b"\xef\xbb\xbf# mkm identify: ")
-        frame = read_csv_checked(path, name, "", comment="#")
+        # and plain: a comment line would be a row in a spreadsheet
+        assert path.read_bytes().startswith(b"\xef\xbb\xbf" + first.encode())
+        frame = read_csv_checked(path, name, "")
         assert frame.columns[0] == first
 
 
