@@ -55,7 +55,13 @@ from mkm.bench.tables import (
     without_summary_rows,
 )
 from mkm.core.ranges import parse_number
-from mkm.core.records import SPREADSHEET_CSV_ENCODING, file_sha256, provenance, spreadsheet_safe
+from mkm.core.records import (
+    EXPORT_FORMATS,
+    SPREADSHEET_CSV_ENCODING,
+    file_sha256,
+    provenance,
+    spreadsheet_safe,
+)
 from mkm.fem.limits import PRACTICAL_RANGE, check_value, outside
 
 if TYPE_CHECKING:
@@ -722,8 +728,8 @@ def _inferred(pressure: np.ndarray) -> np.ndarray:
 def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     """The run ``run_dir`` as ``out`` (a ``.xlsx`` workbook) or, with ``fmt="csv"``, as the
     folder ``out`` holding ``steps.csv``, ``samples.csv`` and ``metadata.csv``."""
-    if fmt not in ("xlsx", "csv"):
-        raise ValueError(f"--format {fmt!r} is invalid: expected xlsx or csv")
+    if fmt not in EXPORT_FORMATS:
+        raise ValueError(f"--format {fmt!r} is invalid: expected {' or '.join(EXPORT_FORMATS)}")
     out = Path(out)
     _check_export_target(out, fmt)
     run = load_run(run_dir)

@@ -71,6 +71,10 @@ def _auto(calibration: Calibration | None = None, **params) -> ForceModel:
     return AutoModel(build=partial(build_spec, calibration=calibration), **params)
 
 
+#: the models ``mkm report`` predicts with unless told: one of each rung, the FE at its medium
+#: mesh, and the default surrogate (auto's reference)
+REPORT_MODELS = ("eq2", "thickwall", "axisym", "surrogate")
+
 register(Entry(
     "surrogate", _surrogate, "Surrogate",
     "scikit-learn surrogate trained on the FE design (or another FE dataset); refuses "
@@ -94,8 +98,8 @@ register(Entry(
      "gap_mm": GAP},
     colour="tab:purple", contract_spec="auto:tolerance=0.05"))
 
-__all__ = ["MODELS", "Spec", "build_spec", "colour", "describe", "entries", "entry",
-           "parse_spec", "parse_specs", "register", "unregister"]
+__all__ = ["MODELS", "REPORT_MODELS", "Spec", "build_spec", "colour",
+           "describe", "entries", "entry", "parse_spec", "parse_specs", "register", "unregister"]
 
 
 def entries() -> dict[str, Entry]:

@@ -74,7 +74,7 @@ from mkm.identify.page import report_section
 from mkm.paths import check_writable, default_out
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
 from mkm.progress import phase, progress_bar
-from mkm.registry import Spec, entries, parse_spec
+from mkm.registry import REPORT_MODELS, Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
 from mkm.uncertainty import force_band, with_band
 from mkm.verdict import (
@@ -87,8 +87,6 @@ from mkm.verdict import (
     recommend,
     verdict,
 )
-
-DEFAULT_MODELS = ("eq2", "thickwall", "axisym", REFERENCE_SPEC)
 
 
 @dataclass
@@ -140,10 +138,10 @@ class _Run:
 
 
 def default_models(calibration: Calibration | None = None) -> list[Spec]:
-    """:data:`DEFAULT_MODELS` less those that cannot take their defaults from ``calibration``
+    """:data:`REPORT_MODELS` less those that cannot take their defaults from ``calibration``
     (a muscle identified with the thick-wall form has no FE entry, which the FE model and the
     surrogate read); each left out is said in a warning naming the reason."""
-    specs = [parse_spec(text) for text in DEFAULT_MODELS]
+    specs = [parse_spec(text) for text in REPORT_MODELS]
     if calibration is None:
         return specs
     kept = []
@@ -182,7 +180,7 @@ def build_report(run_dirs, models=None, out_dir=None,
     models : iterable of str or Spec, optional
         Predictor specs (``eq2``, ``thickwall``, ``axisym:mesh=coarse``, ``surrogate``,
         ``surrogate:path=DIR``), drawn in this order; default :func:`default_models` (those
-        of :data:`DEFAULT_MODELS` the calibration serves).
+        of :data:`REPORT_MODELS` the calibration serves).
     out_dir : path, optional
         Output folder (default ``mkm-out/report/<first run folder name>``).
     cache_dir : path or None

@@ -50,10 +50,10 @@ def _objective(text: str) -> str:
 
 
 def _objective_help() -> str:
-    from mkm.design.spec import OBJECTIVES
+    from mkm.design.spec import DEFAULT_OBJECTIVE, OBJECTIVES
 
     *others, last = OBJECTIVES
-    return (f"ranking of the designs: {OBJECTIVES[0]} (default)"
+    return (f"ranking of the designs: {DEFAULT_OBJECTIVE} (default)"
             + "".join(f", {name}" for name in others[1:]) + f" or {last}")
 
 

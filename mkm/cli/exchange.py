@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from mkm.cli.common import argtype, shared_help
 from mkm.core.ranges import parse_fraction, parse_number
+from mkm.core.records import EXPORT_FORMATS
 
 IMPORT_EXAMPLE = ("examples: mkm import lab.csv --id lab-muscle-7 --D0 30 --t0 3 --L0 282 "
                   "--eps 12.2%   (header 'Pressure (kPa);Force (N)' read and converted); "
@@ -75,7 +76,9 @@ def register(subparsers) -> None:
         "metadata.csv in a folder; text cells are spreadsheet-safe. mkm import reads the "
         "workbook back.", epilog=EXPORT_EXAMPLE)
     exp.add_argument("run", help="the run folder")
-    exp.add_argument("--format", default="xlsx", choices=("xlsx", "csv"))
+    exp.add_argument("--format", default="xlsx", choices=tuple(EXPORT_FORMATS),
+                     help="; ".join(f"{name}: {what}" for name, what in EXPORT_FORMATS.items())
+                     + " (default: xlsx)")
     exp.add_argument("--out", default=None,
                      help="the workbook (xlsx) or folder (csv), new or one mkm export wrote "
                      "(nothing else is overwritten); default: mkm-out/export/<run>")

@@ -11,6 +11,7 @@ from mkm.cli.common import (
     add_calibration_argument,
     add_progress_argument,
     argtype,
+    derived_help,
     with_calibration,
 )
 from mkm.core.ranges import parse_seed, parse_tolerance
@@ -29,11 +30,7 @@ def register(subparsers) -> None:
     report.add_argument("runs", nargs="+", metavar="RUN_DIR",
                         help="run folder(s) of mkm acquire or mkm import; a pattern (runs/*, "
                         "expanded by mkm in any shell) or a folder holding run folders")
-    report.add_argument("--models",
-                        help="comma list of predictor specs (see `mkm models`): eq2, thickwall, "
-                        "axisym:mesh=coarse, surrogate, surrogate:kind=gp, surrogate:path=DIR "
-                        "(default: eq2,thickwall,axisym,surrogate, less those --calibration "
-                        "has no entry for, said in a note)")
+    report.add_argument("--models", action=derived_help(_models_help))
     report.add_argument("--out", help="output folder (default: mkm-out/report/<first run name>)")
     report.add_argument("--tolerance", default=0.02, type=_fraction,
                         help="largest |Err%%| a model may have: the verdict names the cheapest "
@@ -75,6 +72,15 @@ def register(subparsers) -> None:
     add_progress_argument(study)
     add_batch_arguments(study)
     study.set_defaults(func=_study)
+
+
+def _models_help() -> str:
+    from mkm.registry import REPORT_MODELS
+
+    return ("comma list of predictor specs (see `mkm models`): eq2, thickwall, "
+            "axisym:mesh=coarse, surrogate, surrogate:kind=gp, surrogate:path=DIR (default: "
+            f"{','.join(REPORT_MODELS)}, less those --calibration has no entry for, said in a "
+            "note)")
 
 
 def _cache_arguments(parser) -> None:

@@ -25,19 +25,27 @@ writes ``designs.csv``, ``designs.json`` (provenance), ``design.html`` and its f
 (:mod:`mkm.design.page`).
 """
 
-from mkm.design.page import write_design
-from mkm.design.result import DesignResult, design, design_record, run_design
-from mkm.design.search import Search, pick, search
-from mkm.design.spec import (
-    OBJECTIVES,
-    Constraints,
-    Requirement,
-    load_spec,
-    parse_bounds,
-    parse_requirement,
-)
-from mkm.design.verify import verify
+import importlib
+from typing import Any
 
-__all__ = ["OBJECTIVES", "Constraints", "DesignResult", "Requirement", "Search", "design",
-           "design_record", "load_spec", "parse_bounds",
-           "parse_requirement", "pick", "run_design", "search", "verify", "write_design"]
+# each public name and the module it lives in, loaded when first used: reading the objectives
+# for `mkm design --help` (mkm.design.spec) need not load the FE, matplotlib and scipy.stats
+_EXPORTS = {
+    "write_design": "page",
+    **dict.fromkeys(("DesignResult", "design", "design_record", "run_design"), "result"),
+    **dict.fromkeys(("Search", "pick", "search"), "search"),
+    **dict.fromkeys(("OBJECTIVES", "Constraints", "Requirement", "load_spec", "parse_bounds",
+                     "parse_requirement"), "spec"),
+    "verify": "verify",
+}
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _EXPORTS:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(importlib.import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+
+
+def __dir__() -> list[str]:
+    return __all__

@@ -24,6 +24,7 @@ from mkm.design.search import (
     search,
 )
 from mkm.design.spec import (
+    DEFAULT_OBJECTIVE,
     DEFAULT_RUBBER,
     NEAR_LOCK_FRACTION,
     Constraints,
@@ -157,7 +158,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
                        if v is not None and not (k == "rubber" and v == (DEFAULT_RUBBER,))})
     else:
         merged.update({k: v for k, v in (constraints or {}).items() if v is not None})
-    objective = objective or base.get("objective", "min-outer-diameter")
+    objective = objective or base.get("objective", DEFAULT_OBJECTIVE)
     top = top if top is not None else base.get("top", 5)
     if isinstance(top, bool) or not isinstance(top, int) or top < 1:
         raise ValueError(f"top={top!r} is invalid: expected a whole number of designs >= 1")
@@ -193,7 +194,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
 
 
-def design(requirements, constraints=None, objective: str = "min-outer-diameter", *,
+def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *,
            top: int = 5, mesh: str = "medium", surrogate: str = "surrogate",
            progress: bool = False, cache_dir=None,
            calibration: Calibration | None = None) -> pd.DataFrame:

@@ -13,6 +13,7 @@ import pandas as pd
 from mkm.auto import RANGE_SPEC, RANGE_STD_FACTOR, REFERENCE_SPEC, STD_FACTOR
 from mkm.design.robust import describe, requirement_margin
 from mkm.design.spec import (
+    DEFAULT_OBJECTIVE,
     DEFAULT_RUBBER,
     OBJECTIVES,
     Constraints,
@@ -221,7 +222,7 @@ def _build(text: str, calibration: Calibration | None) -> ForceModel:
 
 
 def search(requirements, constraints: Constraints | dict | None = None,
-           objective: str = "min-outer-diameter", surrogate: str = "surrogate",
+           objective: str = DEFAULT_OBJECTIVE, surrogate: str = "surrogate",
            tolerances=None, probability: float = 0.95,
            calibration: Calibration | None = None) -> Search:
     """Predict the candidates of the design box with the surrogate and rank the feasible ones.
@@ -535,11 +536,10 @@ def _describe_constraints(constraints: Constraints, box: dict) -> dict:
 
 
 def _rank(cand: pd.DataFrame, objective: str) -> pd.DataFrame:
-    """Sort by the objective (ties: the larger margin first)."""
-    keys = {"min-outer-diameter": (["outer_diameter_mm", "min_margin_pct"], [True, False]),
-            "min-rubber-volume": (["rubber_volume_cm3", "min_margin_pct"], [True, False]),
-            "max-margin": (["min_margin_pct", "outer_diameter_mm"], [False, True])}[objective]
-    return cand.sort_values(keys[0], ascending=keys[1], kind="stable", ignore_index=True)
+    """Sorted by the objective's columns (:data:`~mkm.design.spec.OBJECTIVES`)."""
+    keys = OBJECTIVES[objective]
+    return cand.sort_values([column for column, _ in keys], ascending=[up for _, up in keys],
+                            kind="stable", ignore_index=True)
 
 
 def geometry_text(row) -> str:

@@ -13,7 +13,14 @@ from mkm.fem.limits import check_value
 from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin
 from mkm.fem.muscle import Muscle
 
-OBJECTIVES = ("min-outer-diameter", "min-rubber-volume", "max-margin")
+#: each objective (the first is the default) and how it ranks the designs' table: the columns
+#: sorted by, each ascending or not (ties on the first: the larger margin or the narrower muscle)
+OBJECTIVES: dict[str, tuple[tuple[str, bool], ...]] = {
+    "min-outer-diameter": (("outer_diameter_mm", True), ("min_margin_pct", False)),
+    "min-rubber-volume": (("rubber_volume_cm3", True), ("min_margin_pct", False)),
+    "max-margin": (("min_margin_pct", False), ("outer_diameter_mm", True)),
+}
+DEFAULT_OBJECTIVE = next(iter(OBJECTIVES))
 #: the rubber of the calibration (a muscle ``mkm identify`` learnt), else Silastic S
 CALIBRATED_RUBBER = "calibrated"
 DEFAULT_RUBBER = CALIBRATED_RUBBER

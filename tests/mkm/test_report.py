@@ -426,7 +426,8 @@ def test_default_models_leave_out_what_an_identified_calibration_cannot_serve(tm
     only: the FE model and the surrogate, which read the FE entry, are left out with a note;
     the shipped calibration serves all four."""
     from mkm.fem.calibration import Calibration
-    from mkm.report import DEFAULT_MODELS, default_models
+    from mkm.registry import REPORT_MODELS
+    from mkm.report import default_models
 
     lab = tmp_path / "calibration.json"
     lab.write_text(json.dumps({"thickwall": {"theta0_deg": 31.0, "gap_mm": 0.8},
@@ -437,7 +438,7 @@ def test_default_models_leave_out_what_an_identified_calibration_cannot_serve(tm
     assert [str(n.message).split(" left out")[0] for n in notes] == ["axisym", "surrogate"]
     assert "no calibrated theta0 for model 'axisym'" in str(notes[0].message)
     assert make_model("thickwall", Calibration.load(lab)).params()["gap_mm"] == 0.8
-    assert [s.text for s in default_models(None)] == list(DEFAULT_MODELS)
+    assert [s.text for s in default_models(None)] == list(REPORT_MODELS)
 
 
 def test_a_calibration_identified_on_another_muscle_is_said(tmp_path):
