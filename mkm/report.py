@@ -203,7 +203,7 @@ def build_report(run_dirs, models=None, out_dir=None,
              else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
     out = check_writable(report_folder(out_dir, run_dirs), folder=True)
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
-        with staged_folder(out, last="report.html") as stage:
+        with staged_folder(out, last="report.html", record="provenance.json") as stage:
             _write_report(run_dirs, specs, stage, cache_dir, tolerance, surrogate_section,
                           progress, start, calibration)
     except OSError as exc:

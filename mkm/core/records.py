@@ -126,7 +126,8 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
 
 
 @contextmanager
-def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[Path]:
+def staged_folder(out: str | os.PathLike, last: str | None = None,
+                  record: str | None = None) -> Iterator[Path]:
     """Write a folder's files whole or not at all: yields a temporary folder beside ``out``
     (same file system); when the block ends normally each file is moved into ``out`` (made if
     needed; ``last`` moved last, so its presence means the rest is there), and the temporary
@@ -137,7 +138,12 @@ def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[P
     The files it replaces are moved aside first, all of them before any new one comes in: on
     Windows a file another program holds open (a summary.csv shown in Excel) cannot be moved,
     and the old ones already moved go back, so ``out`` never mixes this run's files with the
-    last one's."""
+    last one's.
+
+    With ``record`` (the name of the JSON file among them that holds mkm's provenance), a file
+    of ``out`` is replaced only when ``out`` is a folder the command wrote before: else
+    ``ValueError`` names the first file in the way and ``out`` is left as it was
+    (:func:`check_output_folder`)."""
     import shutil
     import tempfile
 
@@ -149,8 +155,10 @@ def staged_folder(out: str | os.PathLike, last: str | None = None) -> Iterator[P
         raise type(exc)(exc.errno, exc.strerror, str(out)) from None
     try:
         yield stage
-        out.mkdir(exist_ok=True)
         names = sorted(p.name for p in stage.iterdir())
+        if record is not None:
+            check_output_folder(out, names, record)
+        out.mkdir(exist_ok=True)
         if last in names:
             names.remove(last)
             names.append(last)

@@ -170,6 +170,26 @@ def test_a_reason_of_any_length_is_shown_bounded(runs, tmp_path):
     assert json.loads((run / "run.json").read_text(encoding="utf-8"))["reason"] == meta["reason"]
 
 
+def test_a_folder_holding_a_labs_summary_is_not_written_over(runs, tmp_path):
+    # --out naming a lab's folder replaced its own summary.csv; a report's own folder is
+    # replaced as before
+    lab = tmp_path / "lab"
+    lab.mkdir()
+    (lab / "summary.csv").write_text("muscle,force_N\nA,100\n", encoding="utf-8")
+    with pytest.raises(ValueError, match=re.escape(
+            f"{lab / 'summary.csv'} exists and {lab} is not a folder this command wrote (no "
+            "provenance.json of mkm's in it): kept as it is")):
+        build_report(runs[:1], parse_models("eq2"), out_dir=lab, cache_dir=None,
+                     tolerance=None, surrogate_section=False)
+    assert [p.name for p in lab.iterdir()] == ["summary.csv"]
+    assert (lab / "summary.csv").read_text(encoding="utf-8") == "muscle,force_N\nA,100\n"
+    mine = tmp_path / "mine"
+    for _ in range(2):
+        build_report(runs[:1], parse_models("eq2"), out_dir=mine, cache_dir=None,
+                     tolerance=None, surrogate_section=False)
+    assert pd.read_csv(mine / "summary.csv")["model"].tolist() == ["eq2"]
+
+
 def test_every_table_and_figure_names_its_provenance(report):
     _, html = report
     captions = re.findall(r'<(?:figcaption|p class="caption")>(.*?)</', html, flags=re.S)
