@@ -22,7 +22,9 @@ muscle's sweep) a posteriori, at those very points:
   (:func:`mkm.mesh_errors.point_bound_pct`), with ``a`` the largest threshold shift (over
   ``P*``) and ``b`` the largest relative error measured on fresh random muscles of the practical
   range, half of them near the braid lock (``mkm/data/mesh_errors.csv``,
-  :mod:`mkm.mesh_errors`). Over a sweep it is small; at a
+  :mod:`mkm.mesh_errors`), over the muscles whose clamped end the mesh resolves (its element
+  at the cap at most :data:`~mkm.mesh_errors.MAX_END_RESOLUTION` bending lengths of the wall);
+  a mesh does not answer for a muscle beyond that. Over a sweep it is small; at a
   single point just above the threshold ``P*`` it is large, as the error is (a coarse mesh's
   threshold shifted by 0.003 bar is 0.8 % of the force 0.4 bar above it). Without that table,
   the largest |Err%| in the study's convergence table times :data:`MESH_SAFETY`. The fine mesh
@@ -371,17 +373,25 @@ class AutoModel(ForceModel):
                     f"mesh error: {MESH_SAFETY:g} x its largest |Err%| against the fine mesh "
                     "in the study's convergence table")
         a, b = model[mesh]
+        candidate = self._candidate(row.spec)
+        resolved = mesh_errors.end_resolution(D0, t0, candidate.params()["L0_mm"], mesh) \
+            <= mesh_errors.MAX_END_RESOLUTION
+        if not np.any(resolved):  # its bound is not measured there: not solved at all
+            return (None, np.full(P.shape, np.inf), f"{mesh} mesh: its element at the clamp "
+                    f"spans more than {mesh_errors.MAX_END_RESOLUTION:g} bending lengths of "
+                    "the wall, where its error is not bounded")
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            pred = self._candidate(row.spec).predict(P, D0, t0, eps)
+            pred = candidate.predict(P, D0, t0, eps)
         force = np.ravel(pred.force_N)
         threshold = np.ravel(pred.extras.get("threshold_pressure_bar", np.full(P.shape, np.nan)))
         bound = mesh_errors.point_bound_pct(force, P, threshold, np.stack([D0, t0, eps], axis=1),
                                             a, b)
-        bound[~np.ravel(pred.valid) | ~np.isfinite(bound)] = np.inf
+        bound[~np.ravel(pred.valid) | ~np.isfinite(bound) | ~np.ravel(resolved)] = np.inf
         return pred, bound, (f"mesh error at this call's scale: {100 * a:.3f} % of P* x the "
                              f"slope + {100 * b:.3f} % of the force, the largest over fresh "
-                             f"random muscles x {mesh_errors.SAFETY:g}")
+                             f"random muscles whose clamped end it resolves x "
+                             f"{mesh_errors.SAFETY:g}")
 
     def _forces(self, P, D0, t0, eps):
         out = self.choose(P, D0, t0, eps)

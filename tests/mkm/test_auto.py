@@ -16,6 +16,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from mkm import mesh_errors
 from mkm.auto import (
     MESH_SAFETY,
     RANGE_PREDICTOR,
@@ -86,7 +87,8 @@ def no_mesh_errors(table) -> str:
     """A mesh error table of no muscles beside ``table``: the FE meshes at the study table's
     recorded errors."""
     path = Path(table).with_name("no_mesh_errors.csv")
-    path.write_text("muscle,mesh,shift_per_threshold,relative_error,fe_failed\n")
+    path.write_text("muscle,mesh,shift_per_threshold,relative_error,fe_failed,D0_mm,t0_mm,"
+                    "L0_mm\n")
     return str(path)
 
 
@@ -214,7 +216,8 @@ def mesh_table(tmp_path_factory):
     the force beyond it (times SAFETY 1.5 in the bound)."""
     path = tmp_path_factory.mktemp("auto") / "mesh_errors.csv"
     path.write_text(pd.DataFrame([{"muscle": 0, "mesh": "coarse", "shift_per_threshold": 0.002,
-                                   "relative_error": 0.001, "fe_failed": False}]).to_csv(
+                                   "relative_error": 0.001, "fe_failed": False,
+                                   "D0_mm": 35.0, "t0_mm": 2.5, "L0_mm": 282.0}]).to_csv(
         index=False))
     return str(path)
 
@@ -248,6 +251,26 @@ def test_a_mesh_bound_is_on_the_scale_of_the_call(table_path, mesh_table):
                        mesh_errors=mesh_table).choose(P_star + step, 55.0, 2.5, 0.05)
     assert chosen["model_used"][0] == "axisym-coarse"
     assert chosen["error_bound_pct"][0] == pytest.approx(single_bound, rel=1e-3)
+
+
+def no_surrogate_build(spec: str, **muscle) -> ForceModel:
+    """:func:`fake_build` with no muscle in the fake surrogate's box: only the FE answers."""
+    if spec == "surrogate":
+        return fake_build(spec, **muscle).__class__(D0_max_mm=0.0, **muscle)
+    return fake_build(spec, **muscle)
+
+
+@pytest.mark.parametrize("L0_mm, resolved", [(282.0, True), (1000.0, False)])
+def test_a_mesh_answers_only_where_its_end_zone_bound_was_measured(table_path, mesh_table,
+                                                                    L0_mm, resolved):
+    # A thin tube (D0 6, t0 0.5 mm) 1 m long: the coarse mesh's element at the clamp spans 7.1
+    # bending lengths sqrt(R t0), beyond the 4 its bound was measured to (the shipped table's
+    # tube at 5.8 was 7.2 % off); 282 mm long, 2.0
+    assert bool(mesh_errors.end_resolution(6.0, 0.5, L0_mm, "coarse")
+                <= mesh_errors.MAX_END_RESOLUTION) is resolved
+    chosen = AutoModel(table=table_path, build=no_surrogate_build, tolerance=0.99,
+                       L0_mm=L0_mm, mesh_errors=mesh_table).choose(P, 6.0, 0.5, 0.05)
+    assert set(chosen["model_used"]) == {"axisym-coarse" if resolved else "axisym-fine"}
 
 
 @pytest.mark.slow  # the default surrogate (GP training) and the fine mesh
@@ -284,8 +307,8 @@ def test_bad_tolerance_and_missing_table_are_clear_errors(table_path, tmp_path):
     other.write_text("a,b\n1,2\n", encoding="utf-8")
     with pytest.raises(ValueError, match=re.escape(
             f"mesh error table {str(other)!r} lacks column(s) mesh, fe_failed, "
-            "shift_per_threshold, relative_error: expected the table `mkm study --mesh-muscles "
-            "N` writes (mesh_errors.csv)")):
+            "shift_per_threshold, relative_error, D0_mm, t0_mm, L0_mm: expected the table `mkm "
+            "study --mesh-muscles N` writes (mesh_errors.csv)")):
         auto(table_path, mesh_errors=str(other), tolerance=0.005).predict(
             1.0, 35.0, 2.5, 0.05)
     ragged = tmp_path / "ragged.csv"

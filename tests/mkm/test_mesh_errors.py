@@ -11,11 +11,13 @@ from mkm.core.records import sidecar_path
 from mkm.fem.limits import lock_eps
 from mkm.fem.sampling import LOCK_FRACTION, draw_muscles
 from mkm.mesh_errors import (
+    MAX_END_RESOLUTION,
     MESH_ERRORS_FILE,
     MIN_SCALE_N,
     NEAR_LOCK_RANGE,
     PRESSURES_BAR,
     SAFETY,
+    end_resolution,
     mesh_model,
     near_lock_seed,
     point_bound_pct,
@@ -59,19 +61,19 @@ def test_zero_force_points_far_below_or_near_the_threshold():
 
 
 def test_mesh_model_is_the_largest_over_the_muscles_times_the_safety(tmp_path):
+    # the last coarse row: the shipped table's slender thin tube (5.8 bending lengths at the
+    # clamp on the coarse mesh, 2.9 on the medium), beyond the end zone the bound is claimed for
     path = tmp_path / "mesh_errors.csv"
-    pd.DataFrame([
-        {"mesh": "coarse", "shift_per_threshold": 0.002, "relative_error": 0.001,
-         "fe_failed": False},
-        {"mesh": "coarse", "shift_per_threshold": 0.004, "relative_error": 0.0005,
-         "fe_failed": False},
-        {"mesh": "coarse", "shift_per_threshold": np.nan, "relative_error": np.nan,
-         "fe_failed": True},
-        {"mesh": "medium", "shift_per_threshold": 0.001, "relative_error": 0.0002,
-         "fe_failed": False}]).to_csv(path, index=False)
+    stout, slender = (35.0, 2.5, 282.0), (5.361, 0.5815, 839.3)
+    pd.DataFrame([dict(zip(("D0_mm", "t0_mm", "L0_mm", "mesh", "shift_per_threshold",
+                            "relative_error", "fe_failed"), row, strict=True)) for row in (
+        (*stout, "coarse", 0.002, 0.001, False), (*stout, "coarse", 0.004, 0.0005, False),
+        (*stout, "coarse", np.nan, np.nan, True), (*stout, "medium", 0.001, 0.0002, False),
+        (*slender, "coarse", 0.017, 0.072, False), (*slender, "medium", 0.0022, 0.0032, False))
+    ]).to_csv(path, index=False)
     model = mesh_model(str(path))
     assert model["coarse"] == pytest.approx((SAFETY * 0.004, SAFETY * 0.001))
-    assert model["medium"] == pytest.approx((SAFETY * 0.001, SAFETY * 0.0002))
+    assert model["medium"] == pytest.approx((SAFETY * 0.0022, SAFETY * 0.0032))
     assert mesh_model(str(tmp_path / "absent.csv")) == {}
 
 
@@ -109,6 +111,8 @@ def test_a_muscle_near_the_lock_within_the_shipped_bound():
     geometry = (muscle.D0_mm, muscle.t0_mm, muscle.eps)
     fine = np.ravel(build_spec("axisym:mesh=fine", **rubber).predict(P, *geometry).force_N)
     for mesh, (a, b) in mesh_model().items():
+        if end_resolution(muscle.D0_mm, muscle.t0_mm, muscle.L0_mm, mesh) > MAX_END_RESOLUTION:
+            continue  # the coarse mesh here (4.03): no bound claimed, auto does not use it
         pred = build_spec(f"axisym:mesh={mesh}", **rubber).predict(P, *geometry)
         force = np.ravel(pred.force_N)
         error_pct = 100 * np.max(np.abs(force - fine)) / max(np.max(fine), MIN_SCALE_N)
