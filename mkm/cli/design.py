@@ -132,7 +132,9 @@ def register(subparsers) -> None:
 
 
 def _design(args) -> int:
+    from mkm.core.records import check_output_folder
     from mkm.design import run_design, write_design
+    from mkm.design.page import output_files
     from mkm.paths import check_writable, default_out
     from mkm.prediction_cache import DEFAULT_CACHE_DIR
     from mkm.progress import summary_line
@@ -152,6 +154,8 @@ def _design(args) -> int:
                          "D0=0.3,t0=0.1,theta0=1")
     robust = {} if args.probability is None else {"probability": args.probability}
     out = check_writable(args.out or default_out("design"), folder=True)
+    # before the FE verification; the requirements' contour figures are checked as written
+    check_output_folder(out, output_files(0), "designs.json")
     result = run_design(args.require, constraints, args.objective, args.top, spec=args.spec,
                         mesh=args.mesh, surrogate=args.surrogate,
                         progress=not args.no_progress,

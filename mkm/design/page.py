@@ -20,6 +20,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
 from mkm.core.records import (
+    check_output_folder,
     provenance,
     save_figure,
     sidecar_path,
@@ -49,10 +50,18 @@ from mkm.html import (
 from mkm.registry import parse_spec
 
 
+def output_files(n_requirements: int) -> list[str]:
+    """The files :func:`write_design` writes for ``n_requirements`` requirements."""
+    return ["designs.csv", "designs.json", "fe_curves.csv", "fe_curves.png", "design.html",
+            *(f"requirement{k}_contours.png" for k in range(1, n_requirements + 1))]
+
+
 def write_design(result: DesignResult, out: Path) -> Path:
-    """``designs.csv``, ``designs.json``, ``design.html`` and the figures into ``out``."""
-    out.mkdir(parents=True, exist_ok=True)
+    """``designs.csv``, ``designs.json``, ``design.html`` and the figures into ``out``: a new
+    folder or one ``mkm design`` wrote (``ValueError`` naming a file of another in the way)."""
     s = result.search
+    check_output_folder(out, output_files(len(s.requirements)), "designs.json")
+    out.mkdir(parents=True, exist_ok=True)
     record = design_record(result)
     surrogate = next(iter(s.models.values()))
     fe = next(iter(result.fe_models.values()), None)

@@ -195,6 +195,19 @@ def test_cli_errors_are_one_line(argv, message, mkm_run, tmp_path):
     assert not (tmp_path / "d").exists()
 
 
+def test_a_folder_holding_a_users_files_is_not_written_into(tmp_path, mkm_run):
+    # --out naming a lab's folder replaced its own fe_curves.csv and design.html
+    lab = tmp_path / "lab"
+    lab.mkdir()
+    (lab / "fe_curves.csv").write_text("P,F\n1,2\n", encoding="utf-8")
+    code, out, err = mkm_run(["design", "--require", "300N@2.5bar,eps=0.1", "--out", str(lab)])
+    assert code == 2 and out == ""
+    assert err == (f"mkm design: error: {lab / 'fe_curves.csv'} exists and {lab} is not a folder "
+                   "this command wrote (no designs.json of mkm's in it): kept as it is; expected "
+                   "--out to name a new folder or an earlier output of the same command\n")
+    assert [p.name for p in lab.iterdir()] == ["fe_curves.csv"]
+
+
 def test_cli_spec_file_writes_csv_json_and_html(tmp_path, mkm_run):
     spec = tmp_path / "spec.toml"
     spec.write_text('objective = "min-rubber-volume"\ntop = 1\n'
