@@ -163,6 +163,25 @@ def test_the_monitor_reads_truth_times_gain_plus_offset_plus_bow(config, truth, 
         assert read(bench.pressure_bar) == pytest.approx(pressure, abs=1e-9)
 
 
+@pytest.mark.parametrize("truth", [{"monitor_offset_bar": -0.03}, {"monitor_gain": 0.99},
+                                   {"monitor_hysteresis_bar": 0.06}])
+def test_a_sensor_reading_low_at_full_scale_pushes_the_muscle_above_it(config, truth):
+    # commanded to the regulator's full scale, a sensor that reads low has the regulator deliver
+    # more: the muscle pulls with the force of the pressure it really has, not full scale's
+    c = quiet(config.replace(regulator={"max_pressure_bar": 4.0}), model="thickwall",
+              truth=truth)
+    volts, bench = settled(c, 4.0)
+    m = c.muscle
+    reads = {"monitor_offset_bar": lambda p: p - 0.03, "monitor_gain": lambda p: 0.99 * p,
+             "monitor_hysteresis_bar": lambda p: p - 0.03}[next(iter(truth))]
+    assert reads(bench.pressure_bar) == pytest.approx(4.0, abs=1e-9)  # 4.03 or 4.04 bar
+    expected = float(make_model("thickwall", L0_mm=m.L0_mm).predict(
+        bench.pressure_bar, m.D0_mm, m.t0_mm, m.eps).force_N)
+    # table interpolation (< 0.1 N) plus one ADC step of 0.24 N; full scale's force is 9-12 N
+    # less (about 300 N/bar)
+    assert volts[0] * c.loadcell.sensitivity_N_per_V == pytest.approx(expected, abs=0.35)
+
+
 def test_the_monitors_hysteresis_splits_its_rising_and_falling_readings(config):
     c = quiet(config, model="thickwall", truth={"monitor_hysteresis_bar": 0.02})
     bench = SimMuscleBench(c)
