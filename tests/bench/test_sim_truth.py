@@ -2,6 +2,7 @@
 only."""
 
 import json
+import re
 
 import numpy as np
 import pytest
@@ -255,6 +256,45 @@ def test_a_bad_departure_is_one_line_and_exit_2_from_mkm_check(config, tmp_path,
     assert main(["check", "--config", str(path)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "sim.truth.loadcell_gain=1.5 is invalid" in err[0]
+
+
+def test_a_vent_limit_within_the_monitors_zero_error_is_refused(config, tmp_path, capsys):
+    # a 10 bar regulator whose monitor is declared within 1 % of full scale may read 0.1 bar
+    # on a vented muscle: the packaged vent limit of 0.05 bar would call a vented bench
+    # unvented (VENT BY HAND); refused before anything is pressurised
+    from mkm.cli import main
+
+    ten_bar = {"full_scale_bar": 10.0, "max_pressure_bar": 6.0, "monitor_accuracy_bar": 0.1}
+    path = tmp_path / "ten_bar.toml"
+    text = config.text
+    for key, value in ten_bar.items():
+        text = re.sub(rf"(?m)^{key} = [^\n]*", f"{key} = {value}", text, count=1)
+    path.write_text(text, encoding="utf-8")
+    assert main(["check", "--config", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and ("safety.vent_below_bar=0.05 is invalid: a vented muscle's "
+                              "monitor may read up to 0.1 bar") in err[0], err
+    # the components a data sheet itemises: the zero and half the hysteresis are read at 0 bar
+    with pytest.raises(ValueError, match=r"vent_below_bar=0.05 is invalid: .* up to 0.06 bar"):
+        config.replace(regulator={"monitor_zero_bar": 0.05, "monitor_hysteresis_bar": 0.02})
+    # above it, a monitor 0.077 bar high (within the declared 0.1; numpy seed 2026120572's
+    # draw) verifies the vent of a run of that bench
+    c = config.replace(regulator=ten_bar, safety={"vent_below_bar": 0.15},
+                       sequence={"pressures_bar": (1.0, 2.0), "preconditioning_cycles": 0},
+                       sim={"model": "thickwall", "seed": 2026120572,
+                            "truth": {"monitor_offset_bar": 0.0771}})
+    result = acquire(c, out_root=tmp_path, notify=lambda message: None)
+    assert result.status == "complete", result.reason
+    meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
+    assert meta["vent_check"]["verified"] and meta["vent_check"]["below_bar"] == 0.15
+    # vented, that monitor settles at its offset: above the packaged 0.05 bar for good
+    volts, bench = settled(c, 2.0)
+    bench.set_command_volts(0.0)
+    for _ in range(300):  # 30 s: the regulator has exhausted the muscle
+        volts = bench.step()
+    assert bench.pressure_bar == pytest.approx(0.0, abs=1e-6)
+    lsb_bar = float(c.regulator.monitor_bar(c.regulator.monitor_V_at_zero + LSB_V))
+    assert float(c.regulator.monitor_bar(volts[1])) == pytest.approx(0.0771, abs=lsb_bar)
 
 
 def test_the_departures_are_stripped_with_the_simulator_settings(config, tmp_path):
