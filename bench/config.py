@@ -436,6 +436,20 @@ class BenchConfig:
         within("settle.pressure_tolerance_bar", self.settle.pressure_tolerance_bar, 0.0,
                MAX_TOLERANCE_FRACTION * reg.full_scale_bar, "bar",
                f"a tenth of regulator.full_scale_bar={reg.full_scale_bar:g}")
+        if reg.electronic:
+            # a vent is verified by the monitor, which may read its zero error at 0 bar: a
+            # limit within it fails the check of a vented muscle (VENT BY HAND, a false alarm)
+            parts = reg.monitor_components
+            zero, declared = ((reg.monitor_accuracy_bar, "regulator.monitor_accuracy_bar")
+                              if not parts else
+                              (parts.get("monitor_zero_bar", 0.0)
+                               + parts.get("monitor_hysteresis_bar", 0.0) / 2,
+                               "regulator.monitor_zero_bar + monitor_hysteresis_bar / 2"))
+            if s.vent_below_bar <= zero:
+                raise ValueError(f"safety.vent_below_bar={s.vent_below_bar:g} is invalid: a "
+                                 f"vented muscle's monitor may read up to {zero:g} bar ({declared})"
+                                 f", so the vent check could fail on a vented bench: expected "
+                                 f"more than {zero:g} bar (at most {MAX_VENT_BELOW_BAR:g})")
 
     def _check_device(self):
         """Against the capabilities of the configured backend's device."""

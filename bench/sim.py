@@ -82,18 +82,45 @@ def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
     """Pressures [bar] over the regulator's range and the model's static force [N] at them.
 
     Computed once per muscle and model in a process (an FE sweep takes about a second); a
-    sample then costs one linear interpolation (0.05 bar spacing: the FE force is smooth).
+    sample then costs one linear interpolation (``n`` points over full scale, 0.05 bar on a
+    4 bar regulator: the FE force is smooth). The table reaches the highest pressure the
+    regulator can deliver: a sensor reading low (offset, gain, bow, hysteresis) or an overshoot
+    puts the muscle above full scale, and an interpolation clamped at full scale would hold its
+    force there.
     """
-    m, s = config.muscle, config.sim
+    m, s, fs = config.muscle, config.sim, config.regulator.full_scale_bar
     mesh = s.fe_mesh if s.model == "axisym" else None
+    top = max(fs, highest_pressure_bar(config))
     return _table(s.model, mesh, m.L0_mm, tuple(sorted(s.truth.model_params().items())),
-                  *s.truth.geometry(m), m.eps, config.regulator.full_scale_bar, n)
+                  *s.truth.geometry(m), m.eps, top, math.ceil((n - 1) * top / fs) + 1)
+
+
+def highest_pressure_bar(config) -> float:
+    """The true pressure [bar] at the regulator's full-scale command on a rising branch: what
+    its sensor reads as full scale, plus the overshoot fault."""
+    t, fs = config.sim.truth, config.regulator.full_scale_bar
+    return (sensor_inverse_bar(t, fs, fs + t.instrument("monitor_hysteresis_bar") / 2)
+            + config.sim.faults.overshoot_bar)
+
+
+def sensor_inverse_bar(truth, full_scale_bar: float, reading_bar: float) -> float:
+    """The pressure [bar] that the regulator's sensor (``truth``'s gain, offset and bow, without
+    its hysteresis) reads as ``reading_bar``: the root of the quadratic ``(g + b) P - b P^2 / FS
+    = reading - offset`` (``b = 4 bow / FS``) next to the linear sensor's, in the form that
+    stays exact as the bow goes to zero."""
+    gain = truth.instrument("monitor_gain")
+    b = 4.0 * truth.instrument("monitor_bow_bar") / full_scale_bar
+    c = reading_bar - truth.instrument("monitor_offset_bar")
+    if b == 0:
+        return c / gain
+    slope = gain + b
+    return 2.0 * c / (slope + math.sqrt(max(slope**2 - 4.0 * b * c / full_scale_bar, 0.0)))
 
 
 @functools.lru_cache(maxsize=32)
-def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, full_scale_bar, n):
+def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, top_bar, n):
     model = _model(model_name, mesh, L0_mm, dict(truth))
-    pressure_bar = np.linspace(0.0, full_scale_bar, n)
+    pressure_bar = np.linspace(0.0, top_bar, n)
     prediction = model.predict(pressure_bar, D0_mm, t0_mm, eps)
     force = np.where(prediction.valid, prediction.force_N, 0.0)
     pressure_bar.flags.writeable = False
@@ -193,16 +220,9 @@ class SimMuscleBench:
                 + self.monitor_bow_bar * 4.0 * x * (1.0 - x))
 
     def sensor_inverse_bar(self, reading_bar: float) -> float:
-        """The pressure whose :meth:`sensor_bar` is ``reading_bar``: the root of the quadratic
-        ``(g + b) P - b P^2 / FS = reading - offset`` (``b = 4 bow / FS``) next to the linear
-        sensor's, in the form that stays exact as the bow goes to zero."""
-        fs = self.config.regulator.full_scale_bar
-        b = 4.0 * self.monitor_bow_bar / fs
-        c = reading_bar - self.monitor_offset_bar
-        if b == 0:
-            return c / self.monitor_gain
-        slope = self.monitor_gain + b
-        return 2.0 * c / (slope + math.sqrt(max(slope**2 - 4.0 * b * c / fs, 0.0)))
+        """The pressure whose :meth:`sensor_bar` is ``reading_bar``."""
+        return sensor_inverse_bar(self.config.sim.truth, self.config.regulator.full_scale_bar,
+                                  reading_bar)
 
     def _normal(self) -> float:
         if self._next_noise >= self._noise.size:

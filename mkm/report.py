@@ -861,7 +861,8 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
                    fe[0] if fe else None, muscle_advice(
                        str(r.run.path), _identified_runs(r.calibration),
                        r.calibration.path.name if r.calibration else "",
-                       [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)]),
+                       [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)],
+                       _identified_record(r.calibration)),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET)
 
 
@@ -871,13 +872,20 @@ def _same_muscle(a: Muscle, b: Muscle) -> bool:
     return (a.id, a.D0_mm, a.t0_mm) == (b.id, b.D0_mm, b.t0_mm)
 
 
-def _identified_runs(calibration: Calibration | None) -> list[dict]:
-    """The runs a calibration was identified on (``mkm identify`` records them in the entry of
-    the model it identified with); empty for the shipped one or one written by hand."""
+def _identified_record(calibration: Calibration | None) -> dict | None:
+    """What ``mkm identify`` recorded of the identification in ``calibration`` (its misfit and
+    parameters among it); None for the shipped one or one written by hand."""
     from mkm.identify.band import identified_entry
 
     found = identified_entry(calibration) if calibration is not None else None
-    runs = found[1]["identified"].get("runs") if found else None
+    return found[1]["identified"] if found else None
+
+
+def _identified_runs(calibration: Calibration | None) -> list[dict]:
+    """The runs a calibration was identified on (``mkm identify`` records them in the entry of
+    the model it identified with); empty for the shipped one or one written by hand."""
+    record = _identified_record(calibration)
+    runs = record.get("runs") if record else None
     return [r for r in runs if isinstance(r, dict)] if isinstance(runs, list) else []
 
 

@@ -101,13 +101,16 @@ def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET) -> 
 
 
 def muscle_advice(run_path: str, identified: list[dict] | None = None,
-                  calibration_name: str = "", muscle_runs=()) -> str:
+                  calibration_name: str = "", muscle_runs=(), fit: dict | None = None) -> str:
     """What the FE model's distance from a run, beyond auto's bound, tells a reader: identify
     the muscle, from ``muscle_runs`` (its runs at hand, this one among them); or, where the
     report's calibration was identified (``identified``: its runs as :mod:`mkm.identify`
     records them, ``run``, ``path`` and ``muscle``), that it does not carry over to a run it did
     not see (identify with the run among the others), or, for one of its own runs, that the
-    model does not fit it (no calibration would)."""
+    model does not fit it (no calibration would). ``fit``: the identification's record
+    (calibration.json's ``identified``, its ``misfit`` and ``parameters``): an identification
+    that fitted its runs within their noise did so with braid friction and creep, which the
+    report's static models lack, and that is what the distance is then."""
     if not identified:
         runs = list(dict.fromkeys([*muscle_runs, run_path]))
         whose = "it" if len(runs) == 1 else f"it from its {len(runs)} runs here"
@@ -115,6 +118,19 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
                 f"{whose} (`{identify_command(*runs)}`)")
     name = f" ({calibration_name})" if calibration_name else ""
     if any(r.get("run") == Path(run_path).name for r in identified):
+        misfit = (fit or {}).get("misfit") or {}
+        if misfit.get("judged") and not misfit.get("misfit_branches"):
+            found = {p.get("parameter"): p.get("value") for p in fit.get("parameters", [])
+                     if p.get("status") == "fitted"}
+            terms = [f"{what} {100 * float(found[key]):.1f} %" for key, what in
+                     (("hysteresis_fraction", "braid friction"), ("creep_fraction", "creep"))
+                     if found.get(key)]
+            lacks = (f"the {' and '.join(terms)} identified with it, which these static models "
+                     "lack, are that distance" if terms else "these static models lack the "
+                     "identified model's friction and creep")
+            return (f"although the calibration{name} was identified on this run with the others "
+                    f"and fits them within their noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
+                    f"{lacks} (identify's steps.csv has the steps predicted with them)")
         return (f"although the calibration{name} was identified on this run with the others: "
                 "the model does not fit them all with one muscle (the identification's misfit "
                 "notes say where)")

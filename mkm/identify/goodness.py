@@ -92,6 +92,7 @@ class Goodness:
     why_not: str = ""
     left_out: list[str] = field(default_factory=list)  # runs whose steps show no noise
     widened: dict = field(default_factory=dict)  # parameter: factor applied
+    fitted: tuple[str, ...] = ()  # the fit's parameters: a misfit names what it did not fit
 
     @property
     def reduced(self) -> float:
@@ -143,10 +144,14 @@ class Goodness:
             + (f" structured (runs test p={b.runs_p:.2g})" if b.runs_p < STRUCTURE_P else "")
             for b in bad[:4])
         more = f"; and {len(bad) - 4} more" if len(bad) > 4 else ""
+        # a rest length or a gap the runs do not declare misfits as an instrument does, and
+        # identify can fit both
+        unfitted = [what for name, what in UNDECLARED.items() if name not in self.fitted]
+        fit_them = f"; or fit {' or '.join(unfitted)}" if unfitted else ""
         return (f"misfit: {shown}{more}: the model does not follow these steps within their "
                 f"noise, intervals widened by x{self.birge_ratio:.3g} (the estimates may be "
                 "biased too: check the monitor's zero, the load cell's calibration, the muscle's "
-                "wall and braid)")
+                f"wall and braid{fit_them})")
 
     def record(self) -> dict:
         return {"method": "chi-square of the settled steps' mean residuals against their own "
@@ -241,7 +246,12 @@ def assess(runs, fit) -> Goodness:
         return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE, left_out=left_out)
     chi2 = sum(b.chi2 for b in branches)
     nu = sum(b.nu for b in branches)
-    return Goodness(branches, chi2, nu, left_out=left_out)
+    return Goodness(branches, chi2, nu, left_out=left_out, fitted=tuple(fit.names))
+
+
+#: what a muscle may have that its runs do not declare, and the ``--params`` group fitting it
+UNDECLARED = {"L0_mm": "its rest length (--params ...,L0: a first length already shortened)",
+              "gap_mm": "a gap between tube and braid (--params ...,gap)"}
 
 
 #: why a run's steps show no noise, and what gives them one

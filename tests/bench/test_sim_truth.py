@@ -2,6 +2,7 @@
 only."""
 
 import json
+import re
 
 import numpy as np
 import pytest
@@ -163,6 +164,25 @@ def test_the_monitor_reads_truth_times_gain_plus_offset_plus_bow(config, truth, 
         assert read(bench.pressure_bar) == pytest.approx(pressure, abs=1e-9)
 
 
+@pytest.mark.parametrize("truth", [{"monitor_offset_bar": -0.03}, {"monitor_gain": 0.99},
+                                   {"monitor_hysteresis_bar": 0.06}])
+def test_a_sensor_reading_low_at_full_scale_pushes_the_muscle_above_it(config, truth):
+    # commanded to the regulator's full scale, a sensor that reads low has the regulator deliver
+    # more: the muscle pulls with the force of the pressure it really has, not full scale's
+    c = quiet(config.replace(regulator={"max_pressure_bar": 4.0}), model="thickwall",
+              truth=truth)
+    volts, bench = settled(c, 4.0)
+    m = c.muscle
+    reads = {"monitor_offset_bar": lambda p: p - 0.03, "monitor_gain": lambda p: 0.99 * p,
+             "monitor_hysteresis_bar": lambda p: p - 0.03}[next(iter(truth))]
+    assert reads(bench.pressure_bar) == pytest.approx(4.0, abs=1e-9)  # 4.03 or 4.04 bar
+    expected = float(make_model("thickwall", L0_mm=m.L0_mm).predict(
+        bench.pressure_bar, m.D0_mm, m.t0_mm, m.eps).force_N)
+    # table interpolation (< 0.1 N) plus one ADC step of 0.24 N; full scale's force is 9-12 N
+    # less (about 300 N/bar)
+    assert volts[0] * c.loadcell.sensitivity_N_per_V == pytest.approx(expected, abs=0.35)
+
+
 def test_the_monitors_hysteresis_splits_its_rising_and_falling_readings(config):
     c = quiet(config, model="thickwall", truth={"monitor_hysteresis_bar": 0.02})
     bench = SimMuscleBench(c)
@@ -236,6 +256,45 @@ def test_a_bad_departure_is_one_line_and_exit_2_from_mkm_check(config, tmp_path,
     assert main(["check", "--config", str(path)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "sim.truth.loadcell_gain=1.5 is invalid" in err[0]
+
+
+def test_a_vent_limit_within_the_monitors_zero_error_is_refused(config, tmp_path, capsys):
+    # a 10 bar regulator whose monitor is declared within 1 % of full scale may read 0.1 bar
+    # on a vented muscle: the packaged vent limit of 0.05 bar would call a vented bench
+    # unvented (VENT BY HAND); refused before anything is pressurised
+    from mkm.cli import main
+
+    ten_bar = {"full_scale_bar": 10.0, "max_pressure_bar": 6.0, "monitor_accuracy_bar": 0.1}
+    path = tmp_path / "ten_bar.toml"
+    text = config.text
+    for key, value in ten_bar.items():
+        text = re.sub(rf"(?m)^{key} = [^\n]*", f"{key} = {value}", text, count=1)
+    path.write_text(text, encoding="utf-8")
+    assert main(["check", "--config", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and ("safety.vent_below_bar=0.05 is invalid: a vented muscle's "
+                              "monitor may read up to 0.1 bar") in err[0], err
+    # the components a data sheet itemises: the zero and half the hysteresis are read at 0 bar
+    with pytest.raises(ValueError, match=r"vent_below_bar=0.05 is invalid: .* up to 0.06 bar"):
+        config.replace(regulator={"monitor_zero_bar": 0.05, "monitor_hysteresis_bar": 0.02})
+    # above it, a monitor 0.077 bar high (within the declared 0.1; numpy seed 2026120572's
+    # draw) verifies the vent of a run of that bench
+    c = config.replace(regulator=ten_bar, safety={"vent_below_bar": 0.15},
+                       sequence={"pressures_bar": (1.0, 2.0), "preconditioning_cycles": 0},
+                       sim={"model": "thickwall", "seed": 2026120572,
+                            "truth": {"monitor_offset_bar": 0.0771}})
+    result = acquire(c, out_root=tmp_path, notify=lambda message: None)
+    assert result.status == "complete", result.reason
+    meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
+    assert meta["vent_check"]["verified"] and meta["vent_check"]["below_bar"] == 0.15
+    # vented, that monitor settles at its offset: above the packaged 0.05 bar for good
+    volts, bench = settled(c, 2.0)
+    bench.set_command_volts(0.0)
+    for _ in range(300):  # 30 s: the regulator has exhausted the muscle
+        volts = bench.step()
+    assert bench.pressure_bar == pytest.approx(0.0, abs=1e-6)
+    lsb_bar = float(c.regulator.monitor_bar(c.regulator.monitor_V_at_zero + LSB_V))
+    assert float(c.regulator.monitor_bar(volts[1])) == pytest.approx(0.0771, abs=lsb_bar)
 
 
 def test_the_departures_are_stripped_with_the_simulator_settings(config, tmp_path):

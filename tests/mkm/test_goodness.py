@@ -7,6 +7,7 @@ The runs are simulated with the thick-wall closed form and fitted with it (as th
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -79,6 +80,38 @@ def test_a_monitor_offset_is_a_misfit_named_in_one_line(offset):
     assert line.startswith("misfit: run ") and "\n" not in line
     assert f"intervals widened by x{math.sqrt(good.reduced):.3g}" in line
     assert good.birge_ratio == pytest.approx(math.sqrt(good.reduced))
+
+
+def test_a_misfit_names_the_rest_length_and_gap_it_did_not_fit(tmp_path):
+    # a lab's rest length 1.5 % short of the muscle's (its first length already shortened):
+    # every run's declared eps 1.5 points low, a misfit like an instrument's, that identify
+    # can fit. Fresh seeds, not those the message was written on.
+    L0_true, L0_declared = 282.0, 282.0 * 0.985
+    paths = []
+    for k, eps in enumerate((0.015, 0.137)):
+        config = load_config(eps=eps).replace(
+            sequence={"pressures_bar": (0.5, 1.0, 1.5, 2.0, 2.5), "preconditioning_cycles": 0},
+            sim={"model": "thickwall", "seed": 2026120581 + k})
+        result = acquire(config, out_root=tmp_path, notify=lambda message: None)
+        remove_simulator_settings(result.path)
+        meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
+        meta["muscle"].update(L0_mm=L0_declared, eps=1 - L0_true * (1 - eps) / L0_declared)
+        (result.path / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+        paths.append(result.path)
+    runs = load_runs(paths)
+    source = ModelStatic("thickwall", L0_declared, cache_dir=None)
+    start = {**fitting.nominal_values(33.0), "hysteresis_fraction": 0.02,
+             "creep_fraction": 0.01}
+    good = goodness.assess(runs, fitting.fit(source, runs, NAMES, start))
+    line = good.line()
+    assert good.reduced > 10 and line, good.record()
+    assert "or fit its rest length (--params ...,L0" in line and "--params ...,gap" in line
+    # fitted, the rest length leaves the noise (the line names nothing if it still misfits)
+    fit = fitting.fit(source, runs, (*NAMES, "L0_mm"), {**start, "L0_mm": L0_declared})
+    assert fit.values["L0_mm"] == pytest.approx(L0_true, abs=1.0)
+    good = goodness.assess(runs, fit)
+    assert good.reduced < 3, good.record()
+    assert "--params ...,L0" not in (good.line() or "")
 
 
 def test_a_misfit_widens_every_interval_by_the_birge_ratio(offset):
