@@ -35,6 +35,8 @@ from mkm.core.guards import table_file
 #: the largest table read (rows below the header, over all sheets)
 MAX_ROWS = 2_000_000
 SEPARATORS = (",", ";", "\t")
+#: text tables read; ``.lvm`` is LabVIEW's measurement file (tab separated under a header block)
+TEXT_SUFFIXES = (".csv", ".tsv", ".txt", ".lvm")
 STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual"}
 
 
@@ -145,9 +147,9 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     suffix = path.suffix.lower()
     if suffix in (".xlsx", ".xlsm"):
         return _read_workbook(path, sheet)
-    if suffix not in (".csv", ".tsv", ".txt"):
-        raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv, .tsv, .txt "
-                         "or .xlsx")
+    if suffix not in TEXT_SUFFIXES:
+        raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv, .tsv, .txt, "
+                         ".lvm or .xlsx")
     if sheet is not None:
         raise ValueError(f"--sheet {sheet!r}: {path.name} is a text table, it has no sheets")
     try:
@@ -312,10 +314,26 @@ def _refuse_a_labelled_row(where, numbers, rows, first_data) -> None:
                      "that row (a force read at 0 bar is a row '0;FORCE', or --tare FORCE)")
 
 
+def _preamble_row(rows: list[list], k: int) -> bool:
+    """Whether row ``k``, holding two numbers, is a line of a logger's header block, not data:
+    text labels it (LabVIEW's ``Samples 2610 2610``, ``Messbereich [bar];0;10``), a row without
+    any number (the block's end, the column names) comes within the next two rows, and rows of
+    numbers follow further on."""
+    first = next((c for c in rows[k] if str(c).strip()), "")
+    if _is_number(first):
+        return False
+    ends = [j for j in range(k + 1, min(k + 3, len(rows)))
+            if not any(_is_number(c) for c in rows[j])]
+    return bool(ends) and any(sum(_is_number(c) for c in cells) >= 2
+                              for cells in rows[ends[0] + 1:])
+
+
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
-    """The header is the row above the first row with two numbers; rows above it are titles."""
+    """The header is the row above the first row with two numbers that is not a line of a
+    header block (:func:`_preamble_row`); rows above it are titles."""
     first_data = next((k for k, cells in enumerate(rows)
-                       if sum(_is_number(c) for c in cells) >= 2), None)
+                       if sum(_is_number(c) for c in cells) >= 2
+                       and not _preamble_row(rows, k)), None)
     where = f"{path.name}, sheet {sheet!r}" if sheet else path.name
     if first_data is None:
         raise ValueError(f"{where} has no row of numbers: expected a header row and one row "

@@ -274,6 +274,36 @@ def test_a_labelled_row_under_the_header_is_named(text, row, tmp_path):
                                       "rows of numbers: expected every row under the header")
 
 
+LABVIEW_LVM = (
+    "LabVIEW Measurement\t\nWriter_Version\t2\nSeparator\tTab\nDecimal_Separator\t.\n"
+    "***End_of_Header***\t\n\t\nChannels\t2\t\nSamples\t3\t3\t\n"
+    "Date\t2026/12/05\t2026/12/05\t\nY_Unit_Label\tkPa\tkN\t\nX_Dimension\tTime\tTime\t\n"
+    "X0\t0.0000000000000000E+0\t0.0000000000000000E+0\t\nDelta_X\t0.100000\t0.100000\t\n"
+    "***End_of_Header***\t\nX_Value\tDruck\tKraft\tComment\n"
+    "0.000000\t0.000000\t0.035000\t\n0.100000\t250.000000\t2.730000\t\n"
+    "0.200000\t800.000000\t8.660000\t\n")
+
+
+@pytest.mark.parametrize("name, text, header, title_rows, force", [
+    # a logger's header block with a measuring range: two numbers in a labelled row
+    ("logger.csv", "Gerät;HBM QuantumX\r\nMessbereich [bar];0;10\r\nAbtastrate [Hz];10\r\n"
+     "\r\nZeit [s];Druck [bar];Kraft [N]\r\n0,0;0,0;3,0\r\n0,1;2,5;253,0\r\n0,2;8;803\r\n",
+     ["Zeit [s]", "Druck [bar]", "Kraft [N]"], 3, [3.0, 253.0, 803.0]),
+    # LabVIEW's measurement file: 'Samples', 'X0', 'Delta_X' hold two numbers each
+    ("run 7.lvm", LABVIEW_LVM, ["X_Value", "Druck", "Kraft", "Comment"], 13,
+     [0.035, 2.73, 8.66]),
+])
+def test_a_header_block_with_rows_of_numbers_is_skipped(name, text, header, title_rows, force,
+                                                         tmp_path):
+    # was: the row above 'Messbereich [bar];0;10' read as the header ("no pressure or force
+    # column among 'Gerät', 'HBM QuantumX'"), 'Samples 3 3' under 'Channels 2' refused as a
+    # labelled row, and '.lvm' an unknown table format
+    table, found = _one(tmp_path, text, name)
+    assert table.header == header and table.title_rows == title_rows
+    assert len(table.rows) == 3
+    np.testing.assert_allclose(column_values(table, found["force"]), force)
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
