@@ -91,6 +91,11 @@ def write_design(result: DesignResult, out: Path) -> Path:
                             "constraints (the search's feasible set is the hatched region inside "
                             "it); markers: the verified designs (white: the FE confirms), star: "
                             "the chosen design."))
+    # a design of more requirements written here before left its contours of the others
+    drawn = {path.name for path, _ in figures}
+    for stale in out.glob("requirement*_contours.png"):
+        if re.fullmatch(r"requirement\d+_contours\.png", stale.name) and stale.name not in drawn:
+            stale.unlink(missing_ok=True)
     fig = curves_figure(result)
     figures.append((save_figure(fig, out / "fe_curves.png"),
                     "FE force against pressure of the "
