@@ -116,10 +116,7 @@ def parse_accuracy(text: str | None) -> dict[str, Declared]:
     from mkm.bench.tables import parse_assignments, parse_unit, registry
 
     out = {}
-    for quantity, given in parse_assignments(text, "--accuracy").items():
-        if quantity not in DECLARED_QUANTITIES:
-            raise ValueError(f"--accuracy {quantity}={given} is invalid: expected a bound of "
-                             f"{' or '.join(DECLARED_QUANTITIES)}")
+    for quantity, given in parse_assignments(text, "--accuracy", DECLARED_QUANTITIES).items():
         unit, (largest, why) = DECLARED_QUANTITIES[quantity], ACCURACY_LIMITS[quantity]
         expected = (f"expected a +- bound such as {quantity}=0.5{unit}, {quantity}=1% (of each "
                     f"value) or their sum {quantity}=0.5{unit}+1%")

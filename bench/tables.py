@@ -474,9 +474,10 @@ class Column:
                                                              else None)}
 
 
-def parse_assignments(text: str | None, option: str) -> dict[str, str]:
+def parse_assignments(text: str | None, option: str, roles=ROLES) -> dict[str, str]:
     """``pressure=P [bar],force=F`` (``--columns``, ``--units``) -> ``{"pressure": "P [bar]",
-    "force": "F"}``; ``ValueError`` naming a bad item or a role given twice."""
+    "force": "F"}``; ``ValueError`` naming a bad item or a role given twice. ``roles``: the
+    names the option takes (default the columns' :data:`ROLES`)."""
     out = {}
     # an item ends at a comma before the next NAME=, so a header may hold commas itself
     # ("force=Kraft, gemessen,pressure=Druck")
@@ -484,9 +485,9 @@ def parse_assignments(text: str | None, option: str) -> dict[str, str]:
     for item in filter(None, (i.strip() for i in items)):
         role, sep, value = item.partition("=")
         role = role.strip()
-        if not sep or role not in ROLES or not value.strip():
+        if not sep or role not in roles or not value.strip():
             raise ValueError(f"{option} item {item!r} is invalid: expected ROLE=VALUE with ROLE "
-                             f"one of {', '.join(ROLES)}")
+                             f"one of {', '.join(roles)}")
         if role in out:
             raise ValueError(f"{option} gives {role} twice ({role}={out[role]}, {item}): "
                              "expected one value per role")
