@@ -352,11 +352,28 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
         header = [f"{n} [{u.strip('[]()')}]" if n and u else n or u
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
+    header = _labview_header(header, rows[:header_index])
     data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:]]
     if len(data) > MAX_ROWS:
         raise ValueError(f"{where} has {len(data)} rows: expected at most {MAX_ROWS}")
     return RawTable(path, sheet, header[:width], numbers[header_index], data,
                     numbers[first_data:], header_index, separator, decimal)
+
+
+def _labview_header(header: list[str], titles: list[list]) -> list[str]:
+    """A LabVIEW measurement file's column names with what its channel header says: each
+    channel's unit (``Y_Unit_Label``) after its name, and its one x column (``X_Value``) named
+    ``Time [s]`` where the channels' ``X_Dimension`` is time; any other header as it is."""
+    block = {str(row[0]).strip(): [str(c).strip() for c in row[1:]] for row in titles if row}
+    if "Y_Unit_Label" not in block or not header or header[0] != "X_Value":
+        return header
+    out = list(header)
+    if {d.lower() for d in block.get("X_Dimension", []) if d} == {"time"}:
+        out[0] = "Time [s]"
+    for k, unit in enumerate(block["Y_Unit_Label"], start=1):
+        if k < len(out) and out[k] and unit and parse_header(out[k])[1] is None:
+            out[k] = f"{out[k]} [{unit}]"
+    return out
 
 
 # --- recognising ------------------------------------------------------------------------------

@@ -290,8 +290,8 @@ LABVIEW_LVM = (
      "\r\nZeit [s];Druck [bar];Kraft [N]\r\n0,0;0,0;3,0\r\n0,1;2,5;253,0\r\n0,2;8;803\r\n",
      ["Zeit [s]", "Druck [bar]", "Kraft [N]"], 3, [3.0, 253.0, 803.0]),
     # LabVIEW's measurement file: 'Samples', 'X0', 'Delta_X' hold two numbers each
-    ("run 7.lvm", LABVIEW_LVM, ["X_Value", "Druck", "Kraft", "Comment"], 13,
-     [0.035, 2.73, 8.66]),
+    ("run 7.lvm", LABVIEW_LVM, ["Time [s]", "Druck [kPa]", "Kraft [kN]", "Comment"], 13,
+     [35.0, 2730.0, 8660.0]),
 ])
 def test_a_header_block_with_rows_of_numbers_is_skipped(name, text, header, title_rows, force,
                                                          tmp_path):
@@ -302,6 +302,17 @@ def test_a_header_block_with_rows_of_numbers_is_skipped(name, text, header, titl
     assert table.header == header and table.title_rows == title_rows
     assert len(table.rows) == 3
     np.testing.assert_allclose(column_values(table, found["force"]), force)
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1, 0.2])
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+
+
+def test_a_labview_x_column_of_another_dimension_and_a_named_unit_are_as_written(tmp_path):
+    # the .lvm above: X_Value is the time and Druck, Kraft take Y_Unit_Label's kPa and kN (was:
+    # read in s-less bar and N, one step per sample, 250 'bar' refused); not so here
+    table, found = _one(tmp_path, LABVIEW_LVM.replace("X_Dimension\tTime\tTime",
+                                                      "X_Dimension\tPoints\tPoints")
+                        .replace("Druck\t", "Druck [bar]\t"), "b.lvm")
+    assert table.header[:2] == ["X_Value", "Druck [bar]"] and "time" not in found
 
 
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
