@@ -706,12 +706,17 @@ def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],
 
 def _inferred(pressure: np.ndarray) -> np.ndarray:
     """Each row's direction from the pressure's change since the row before: up where it
-    rose, down where it fell, a repeated pressure as the row before; the first row up. A
+    rose, down where it fell, a repeated pressure as the row before, unless the pressure turns
+    after it (0, 1, 0, 0, 1: the second 0 starts the next cycle's rise); the first row up. A
     table of several cycles has a rising branch in each, not only in the first."""
     out, direction = [], "up"
     for k in range(pressure.size):
         if k and pressure[k] != pressure[k - 1]:
             direction = "up" if pressure[k] > pressure[k - 1] else "down"
+        elif k:
+            after = pressure[k:][pressure[k:] != pressure[k]]
+            if after.size:
+                direction = "up" if after[0] > pressure[k] else "down"
         out.append(direction)
     return np.array(out)
 

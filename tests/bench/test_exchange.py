@@ -99,6 +99,20 @@ def test_directions_of_repeated_cycles_are_inferred_per_cycle(tmp_path, capsys):
     assert steps["repeat"].tolist() == [0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1]
 
 
+def test_a_pressure_repeated_where_the_table_turns_starts_the_next_branch(tmp_path, capsys):
+    # each cycle written whole, 0 -> 2 -> 0 bar, one after the other: was the second cycle's
+    # first 0 bar a falling step (down, repeat 1), its rise starting at 1 bar
+    table = tmp_path / "cycles.csv"
+    pressures = [0, 1, 2, 1, 0, 0, 1, 2, 2, 1, 0]
+    pd.DataFrame({"pressure_bar": pressures, "force_N": np.arange(11.0)}).to_csv(table,
+                                                                                 index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    steps = load_run(out.strip()).steps
+    assert steps["direction"].tolist() == ["up"] * 3 + ["down"] * 2 + ["up"] * 3 + ["down"] * 3
+    assert steps["repeat"].tolist() == [0, 0, 0, 0, 0, 1, 1, 1, 0, 1, 1]
+
+
 def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, capsys):
     table = tmp_path / "kpa.csv"
     pd.DataFrame({"P": [0, 100, 250], "F": [0.0, 100.0, 250.0]}).to_csv(table, index=False)
