@@ -11,7 +11,7 @@
   dimension), ``--columns`` and ``--units`` overriding.
 - :func:`column_values`: a recognised column's cells as numbers in the toolkit's unit
   (bar, N, s, mm, fraction), converted by pint; a time column of clock readings
-  (``hh:mm:ss.fff``) or date-times as seconds from its first row.
+  (``hh:mm:ss.fff``, ``2:05:00 PM``) or date-times as seconds from its first row.
 
 Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
 workbook's cached values; a formula's text is read only to name it where no value was saved).
@@ -620,6 +620,12 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         elapsed = _elapsed_s(table, column, raw)
         if elapsed is not None:
             return elapsed
+        if raw and str(raw[0]).strip() and _number(raw[0], table.decimal)[0] is None:
+            raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
+                             f"{column.header!r}): {_shown(raw[0])} is not a time: expected "
+                             "seconds (or the unit in the header: Time [ms]), a time of day "
+                             "(14:05:00.250, 2:05:00 PM) or a date-time (2026-12-05 14:05:00, "
+                             "05.12.2026 14:05:00, 12/5/2026 2:05:00 PM)")
     plain = _plain_numbers(raw, table.decimal)
     values = plain if plain is not None else np.empty(len(raw))
     inline: dict[str, int] = {}
@@ -681,10 +687,58 @@ _CLOCK = re.compile(r"^(?P<h>\d{1,3}):(?P<m>\d{2}):(?P<s>\d{2}(?:[.,]\d*)?)$")
 _DAY_S = 86400.0
 
 
-def _clock(cell) -> tuple[str, float] | None:
-    """A cell holding a time of day (``hh:mm:ss[.fff]``, a workbook's time), a duration (a
-    workbook's time delta) or a date-time (ISO or ``dd.mm.yyyy hh:mm:ss``), as its kind and
-    seconds; ``None`` for any other cell."""
+#: a time of day on a 12-hour clock, as an English-language Excel writes it (2:05:00 PM)
+_CLOCK_12H = re.compile(r"^(?P<h>\d{1,2}):(?P<m>\d{2})(?::(?P<s>\d{2}(?:[.,]\d*)?))?\s*"
+                        r"(?P<half>[AaPp])\.?[Mm]\.?$")
+#: a date written with slashes, day and month in either order (12/5/2026 or 5/12/2026), and a
+#: time of day after it (24-hour, or 12-hour with AM/PM)
+_SLASHED = re.compile(r"^(?P<a>\d{1,2})/(?P<b>\d{1,2})/(?P<y>\d{4})\s+(?P<clock>\S.*)$")
+
+
+def _time_of_day_s(text: str) -> float | None:
+    """``hh:mm:ss[.fff]`` or ``h:mm[:ss[.fff]] AM/PM`` as seconds from midnight, else None."""
+    match = _CLOCK.match(text)
+    if match:
+        return (int(match["h"]) * 3600.0 + int(match["m"]) * 60.0
+                + float(match["s"].replace(",", ".")))
+    match = _CLOCK_12H.match(text)
+    if match and 1 <= int(match["h"]) <= 12:
+        hour = int(match["h"]) % 12 + (12 if match["half"] in "Pp" else 0)
+        return (hour * 3600.0 + int(match["m"]) * 60.0
+                + float((match["s"] or "0").replace(",", ".")))
+    return None
+
+
+def _slashed_s(text: str, day_first: bool) -> float | None:
+    """A slashed date-time (month first, or day first) as seconds since 1970, else None."""
+    match = _SLASHED.match(text)
+    if not match:
+        return None
+    month, day = (int(match["b"]), int(match["a"])) if day_first else (int(match["a"]),
+                                                                        int(match["b"]))
+    if ":" not in match["clock"]:
+        return None
+    clock = _time_of_day_s(match["clock"].strip())
+    clock = clock if clock is not None else (
+        _time_of_day_s(match["clock"].strip() + ":00") if match["clock"].count(":") == 1
+        else None)  # Excel's 'm/d/yyyy h:mm'
+    try:
+        date = datetime.datetime(int(match["y"]), month, day)
+    except ValueError:
+        return None
+    return None if clock is None else _epoch_s(date) + clock
+
+
+def _day_first(raw: list) -> bool:
+    """Whether a column's slashed dates put the day first: one of them starts above 12."""
+    return any(int(m["a"]) > 12 for m in (_SLASHED.match(str(c).strip()) for c in raw) if m)
+
+
+def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
+    """A cell holding a time of day (``hh:mm:ss[.fff]``, ``2:05:00 PM``, a workbook's time), a
+    duration (a workbook's time delta) or a date-time (ISO, ``dd.mm.yyyy hh:mm:ss``, or
+    slashed ``m/d/yyyy h:mm:ss AM``, ``d/m/yyyy`` with ``day_first``), as its kind and seconds;
+    ``None`` for any other cell."""
     if isinstance(cell, datetime.datetime):
         return "date-time", _epoch_s(cell)
     if isinstance(cell, datetime.time):
@@ -695,10 +749,12 @@ def _clock(cell) -> tuple[str, float] | None:
     text = str(cell).strip()
     if ":" not in text:
         return None
-    match = _CLOCK.match(text)
-    if match:
-        return "clock", (int(match["h"]) * 3600.0 + int(match["m"]) * 60.0
-                         + float(match["s"].replace(",", ".")))
+    of_day = _time_of_day_s(text)
+    if of_day is not None:
+        return "clock", of_day
+    slashed = _slashed_s(text, day_first)
+    if slashed is not None:
+        return "date-time", slashed
     for parse in (datetime.datetime.fromisoformat,
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S"),
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f")):
@@ -720,9 +776,10 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     """A time column of clock readings or date-times as seconds from its first row (``None``:
     the column holds numbers); ``ValueError`` naming a cell that is neither, or of a kind
     other than the first's."""
-    if not raw or _clock(raw[0]) is None:
+    day_first = _day_first(raw)
+    if not raw or _clock(raw[0], day_first) is None:
         return None
-    kinds = [_clock(cell) for cell in raw]
+    kinds = [_clock(cell, day_first) for cell in raw]
     values = np.empty(len(raw))
     for k, (cell, reading) in enumerate(zip(raw, kinds, strict=True)):
         if reading is None or reading[0] != kinds[0][0]:

@@ -427,3 +427,28 @@ def test_numbers_in_scientific_notation(tmp_path):
                                [50.0, 100.0, 150.0, 200.0, 250.0])
     table, found = _one(tmp_path, "P,F\n1,2.5E-1 kN\n2,5e-1 kN\n")
     np.testing.assert_allclose(column_values(table, found["force"]), [250.0, 500.0])
+
+
+@pytest.mark.parametrize("cells, seconds", [
+    # an English-language Excel's times of day: 12-hour clock, past noon and past midnight
+    (["11:59:59.5 AM", "12:00:00.5 PM", "12:00:01 PM"], [0.0, 1.0, 1.5]),
+    (["11:59:59 PM", "12:00:00 AM", "12:00:01 a.m."], [0.0, 1.0, 2.0]),
+    # its date-times, month first (Excel's m/d/yyyy h:mm too), and day first where a day > 12
+    (["12/5/2026 11:59:59.750 PM", "12/6/2026 12:00:00.250 AM"], [0.0, 0.5]),
+    (["12/5/2026 23:59", "12/6/2026 0:01"], [0.0, 120.0]),
+    (["31/1/2026 23:59:59", "1/2/2026 00:00:01"], [0.0, 2.0]),
+])
+def test_times_of_day_and_date_times_as_english_excel_writes_them(cells, seconds, tmp_path):
+    # was: "cell A2 (column 'Time'): '11:59:59.5 AM' is not a number"
+    rows = "".join(f"{c};{k};{k}\n" for k, c in enumerate(cells))
+    table, found = _one(tmp_path, f"Time;P [bar];F [N]\n{rows}")
+    np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
+
+
+def test_a_time_cell_that_is_no_time_is_named_as_such(tmp_path):
+    # was: "'13:61 PM' is not a number", for a column of times
+    table, found = _one(tmp_path, "Time;P [bar];F [N]\n13:61 PM;0;1\n")
+    with pytest.raises(ValueError) as info:
+        column_values(table, found["time"])
+    assert str(info.value).startswith("lab.csv, cell A2 (column 'Time'): '13:61 PM' is not a "
+                                      "time: expected seconds")
