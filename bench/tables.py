@@ -37,7 +37,10 @@ MAX_ROWS = 2_000_000
 SEPARATORS = (",", ";", "\t")
 #: text tables read; ``.lvm`` is LabVIEW's measurement file (tab separated under a header block)
 TEXT_SUFFIXES = (".csv", ".tsv", ".txt", ".lvm")
-STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual"}
+#: words of a header that say which reading of a quantity it is (German Ist: the actual
+#: value, beside the Soll, the set one), dropped from its name
+STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual", "ist", "istwert",
+              "gemessen", "mittelwert"}
 
 
 @dataclass(frozen=True)

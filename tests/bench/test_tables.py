@@ -182,6 +182,16 @@ def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
     np.testing.assert_allclose(column_values(table, found[role]), [scale])
 
 
+def test_a_german_benchs_actual_reading_beside_its_set_point(tmp_path):
+    # was: "no pressure column among 'Druck_Soll [bar]', 'Druck_Ist [bar]', ...": Ist (the
+    # actual value) is the reading, Soll (the set point) is left out
+    table, found = _one(tmp_path, "Druck_Soll [bar];Druck_Ist [bar];Kraft Istwert [N]\n"
+                        "1;0,98;100\n2;2,01;201\n")
+    assert found["pressure"].header == "Druck_Ist [bar]"
+    assert found["force"].header == "Kraft Istwert [N]"
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.98, 2.01])
+
+
 def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
     # a lab's export with ',' between fields keeps its decimal commas quoted
     table, found = _one(tmp_path, 'Pressure [bar],Force [N]\n"0,0","0"\n"0,5","12,25"\n'
