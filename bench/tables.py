@@ -99,6 +99,8 @@ class RawTable:
     blanks_skipped: list[str] = field(default_factory=list)
     #: the cell naming the statistic of each row :func:`without_summary_rows` left out
     summaries_skipped: list[str] = field(default_factory=list)
+    #: the first cell of each row of the notes under the table, after a blank row (no data)
+    footer_skipped: list[str] = field(default_factory=list)
 
     @property
     def name(self) -> str:
@@ -114,7 +116,8 @@ class RawTable:
                 "title_rows": self.title_rows, "separator": self.separator,
                 "decimal": self.decimal, "rows": len(self.rows),
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
-                "summary_rows_skipped": self.summaries_skipped}
+                "summary_rows_skipped": self.summaries_skipped,
+                "footer_rows_skipped": self.footer_skipped}
 
 
 def _column_letters(index: int) -> str:
@@ -356,11 +359,27 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
     header = _labview_header(header, rows[:header_index])
-    data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:]]
+    end = _footer_start(numbers, rows, first_data)
+    data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:end]]
     if len(data) > MAX_ROWS:
         raise ValueError(f"{where} has {len(data)} rows: expected at most {MAX_ROWS}")
     return RawTable(path, sheet, header[:width], numbers[header_index], data,
-                    numbers[first_data:], header_index, separator, decimal)
+                    numbers[first_data:end], header_index, separator, decimal,
+                    footer_skipped=[f"A{numbers[k]} ({str(rows[k][0]).strip()[:40]!r})"
+                                    for k in range(end, len(rows))])
+
+
+def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
+    """Where the notes under a table begin (``len(rows)``: none): the rows after the last blank
+    row that each hold fewer than two numbers, labelled by text (``Anzahl Werte;2610``,
+    ``Messung beendet;14:05:00``), as a logger writes a closing block; a row of numbers, or
+    none blank above them, keeps them in the table, where a bad cell is named."""
+    end = len(rows)
+    while end > first_data + 1 and sum(_is_number(c) for c in rows[end - 1]) < 2 \
+            and not _is_number(next((c for c in rows[end - 1] if str(c).strip()), "")):
+        end -= 1
+    # the block stands apart: a blank row (left out on reading) lies just above it
+    return end if end < len(rows) and numbers[end] - numbers[end - 1] > 1 else len(rows)
 
 
 def _labview_header(header: list[str], titles: list[list]) -> list[str]:
@@ -982,6 +1001,9 @@ class Recognition:
             extras.append("decimal comma")
         if self.table.title_rows:
             extras.append(f"{self.table.title_rows} title row(s) skipped")
+        if footer := self.table.footer_skipped:
+            extras.append(f"{len(footer)} row(s) of notes under the table skipped: "
+                          + ", ".join(footer[:3]) + (", ..." if len(footer) > 3 else ""))
         if summaries := self.table.summaries_skipped:
             extras.append(f"{len(summaries)} summary row(s) skipped: "
                           + ", ".join(summaries[:3]) + (", ..." if len(summaries) > 3 else ""))

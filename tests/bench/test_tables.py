@@ -9,6 +9,7 @@ import pandas as pd
 import pytest
 
 from mkm.bench.tables import (
+    Recognition,
     column_values,
     parse_assignments,
     parse_header,
@@ -462,3 +463,20 @@ def test_a_time_cell_that_is_no_time_is_named_as_such(tmp_path):
         column_values(table, found["time"])
     assert str(info.value).startswith("lab.csv, cell A2 (column 'Time'): '13:61 PM' is not a "
                                       "time: expected seconds")
+
+
+def test_a_loggers_closing_notes_under_a_blank_row_are_no_data(tmp_path):
+    # was: "cell A8 (column 'Druck [bar]'): 'Anzahl Werte' is not a number"
+    notes = "\nAnzahl Werte;3\nMessdauer [s];120,5\nMessung beendet;14:05:00\nPrüfer;Müller\n"
+    table, found = _one(tmp_path, f"Druck [bar];Kraft [N]\n0;2\n1;102\n2;203\n{notes}")
+    np.testing.assert_allclose(column_values(table, found["force"]), [2.0, 102.0, 203.0])
+    assert table.footer_skipped == ["A6 ('Anzahl Werte')", "A7 ('Messdauer [s]')",
+                                    "A8 ('Messung beendet')", "A9 ('Prüfer')"]
+    assert Recognition(table, found).line().endswith(
+        "4 row(s) of notes under the table skipped: A6 ('Anzahl Werte'), A7 ('Messdauer [s]'), "
+        "A8 ('Messung beendet'), ...")
+    # with no blank row above it, such a row is read with the data, and named there
+    table, found = _one(tmp_path, "Druck [bar];Kraft [N]\n0;2\n1;102\nAnzahl Werte;2\n", "b.csv")
+    with pytest.raises(ValueError, match=r"cell A4 \(column 'Druck \[bar\]'\): 'Anzahl Werte' "
+                                         "is not a number"):
+        column_values(table, found["pressure"])
