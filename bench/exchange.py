@@ -705,20 +705,15 @@ def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],
 
 
 def _inferred(pressure: np.ndarray) -> np.ndarray:
-    """Each row's direction from the pressure's change since the row before: up where it
-    rose, down where it fell, a repeated pressure as the row before, unless the pressure turns
-    after it (0, 1, 0, 0, 1: the second 0 starts the next cycle's rise); the first row up. A
-    table of several cycles has a rising branch in each, not only in the first."""
-    out, direction = [], "up"
-    for k in range(pressure.size):
-        if k and pressure[k] != pressure[k - 1]:
-            direction = "up" if pressure[k] > pressure[k - 1] else "down"
-        elif k:
-            after = pressure[k:][pressure[k:] != pressure[k]]
-            if after.size:
-                direction = "up" if after[0] > pressure[k] else "down"
-        out.append(direction)
-    return np.array(out)
+    """Each row's direction: the branch it lies on (:func:`mkm.bench.series.branches`: the
+    sweep turns where the pressure comes back a tenth of its range from the branch's extreme),
+    the first up. A table of several cycles has a rising branch in each, not only in the
+    first; a pressure written twice where the sweep turns (``1, 0, 0, 1``) ends one branch and
+    starts the next; a reading's noise (a record sampled without its time) turns none."""
+    out = np.empty(pressure.size, dtype=object)
+    for start, stop, direction in series.branches(pressure):
+        out[start:stop] = direction
+    return out.astype(str)
 
 
 def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:

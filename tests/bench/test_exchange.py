@@ -113,6 +113,23 @@ def test_a_pressure_repeated_where_the_table_turns_starts_the_next_branch(tmp_pa
     assert steps["repeat"].tolist() == [0, 0, 0, 0, 0, 1, 1, 1, 0, 1, 1]
 
 
+def test_a_record_sampled_without_its_time_has_one_rising_and_one_falling_branch(tmp_path,
+                                                                                 capsys):
+    # was: the direction taken from each row's change, so the gauge's noise (0.01 bar) turned
+    # it up and down from sample to sample: 154 falling steps on the rise
+    rng = np.random.default_rng(0)
+    pressure = np.r_[np.zeros(50), np.linspace(0.0, 2.5, 150), np.linspace(2.5, 0.0, 150)]
+    noisy = np.abs(pressure + rng.normal(0.0, 0.01, pressure.size))
+    table = tmp_path / "sampled.csv"
+    pd.DataFrame({"pressure_bar": noisy.round(4), "force_N": 150.0 * pressure}).to_csv(
+        table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    direction = load_run(out.strip()).steps["direction"].tolist()
+    top = int(np.argmax(noisy)) + 1  # the rise ends at its highest reading
+    assert direction == ["up"] * top + ["down"] * (pressure.size - top)
+
+
 def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, capsys):
     table = tmp_path / "kpa.csv"
     pd.DataFrame({"P": [0, 100, 250], "F": [0.0, 100.0, 250.0]}).to_csv(table, index=False)
