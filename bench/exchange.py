@@ -122,10 +122,7 @@ def parse_accuracy(text: str | None) -> dict[str, Declared]:
     from mkm.bench.tables import parse_assignments, parse_unit, registry
 
     out = {}
-    for quantity, given in parse_assignments(text, "--accuracy").items():
-        if quantity not in DECLARED_QUANTITIES:
-            raise ValueError(f"--accuracy {quantity}={given} is invalid: expected a bound of "
-                             f"{' or '.join(DECLARED_QUANTITIES)}")
+    for quantity, given in parse_assignments(text, "--accuracy", DECLARED_QUANTITIES).items():
         unit, (largest, why) = DECLARED_QUANTITIES[quantity], ACCURACY_LIMITS[quantity]
         expected = (f"expected a +- bound such as {quantity}=0.5{unit}, {quantity}=1% (of each "
                     f"value) or their sum {quantity}=0.5{unit}+1%")
@@ -714,15 +711,15 @@ def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],
 
 
 def _inferred(pressure: np.ndarray) -> np.ndarray:
-    """Each row's direction from the pressure's change since the row before: up where it
-    rose, down where it fell, a repeated pressure as the row before; the first row up. A
-    table of several cycles has a rising branch in each, not only in the first."""
-    out, direction = [], "up"
-    for k in range(pressure.size):
-        if k and pressure[k] != pressure[k - 1]:
-            direction = "up" if pressure[k] > pressure[k - 1] else "down"
-        out.append(direction)
-    return np.array(out)
+    """Each row's direction: the branch it lies on (:func:`mkm.bench.series.branches`: the
+    sweep turns where the pressure comes back a tenth of its range from the branch's extreme),
+    the first up. A table of several cycles has a rising branch in each, not only in the
+    first; a pressure written twice where the sweep turns (``1, 0, 0, 1``) ends one branch and
+    starts the next; a reading's noise (a record sampled without its time) turns none."""
+    out = np.empty(pressure.size, dtype=object)
+    for start, stop, direction in series.branches(pressure):
+        out[start:stop] = direction
+    return out.astype(str)
 
 
 def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:

@@ -11,7 +11,7 @@
   dimension), ``--columns`` and ``--units`` overriding.
 - :func:`column_values`: a recognised column's cells as numbers in the toolkit's unit
   (bar, N, s, mm, fraction), converted by pint; a time column of clock readings
-  (``hh:mm:ss.fff``) or date-times as seconds from its first row.
+  (``hh:mm:ss.fff``, ``2:05:00 PM``) or date-times as seconds from its first row.
 
 Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
 workbook's cached values; a formula's text is read only to name it where no value was saved).
@@ -35,7 +35,12 @@ from mkm.core.guards import table_file
 #: the largest table read (rows below the header, over all sheets)
 MAX_ROWS = 2_000_000
 SEPARATORS = (",", ";", "\t")
-STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual"}
+#: text tables read; ``.lvm`` is LabVIEW's measurement file (tab separated under a header block)
+TEXT_SUFFIXES = (".csv", ".tsv", ".txt", ".lvm")
+#: words of a header that say which reading of a quantity it is (German Ist: the actual
+#: value, beside the Soll, the set one), dropped from its name
+STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual", "ist", "istwert",
+              "gemessen", "mittelwert"}
 
 
 @dataclass(frozen=True)
@@ -94,6 +99,8 @@ class RawTable:
     blanks_skipped: list[str] = field(default_factory=list)
     #: the cell naming the statistic of each row :func:`without_summary_rows` left out
     summaries_skipped: list[str] = field(default_factory=list)
+    #: the first cell of each row of the notes under the table, after a blank row (no data)
+    footer_skipped: list[str] = field(default_factory=list)
 
     @property
     def name(self) -> str:
@@ -109,7 +116,8 @@ class RawTable:
                 "title_rows": self.title_rows, "separator": self.separator,
                 "decimal": self.decimal, "rows": len(self.rows),
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
-                "summary_rows_skipped": self.summaries_skipped}
+                "summary_rows_skipped": self.summaries_skipped,
+                "footer_rows_skipped": self.footer_skipped}
 
 
 def _column_letters(index: int) -> str:
@@ -145,9 +153,9 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     suffix = path.suffix.lower()
     if suffix in (".xlsx", ".xlsm"):
         return _read_workbook(path, sheet)
-    if suffix not in (".csv", ".tsv", ".txt"):
-        raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv, .tsv, .txt "
-                         "or .xlsx")
+    if suffix not in TEXT_SUFFIXES:
+        raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv, .tsv, .txt, "
+                         ".lvm or .xlsx")
     if sheet is not None:
         raise ValueError(f"--sheet {sheet!r}: {path.name} is a text table, it has no sheets")
     try:
@@ -312,10 +320,26 @@ def _refuse_a_labelled_row(where, numbers, rows, first_data) -> None:
                      "that row (a force read at 0 bar is a row '0;FORCE', or --tare FORCE)")
 
 
+def _preamble_row(rows: list[list], k: int) -> bool:
+    """Whether row ``k``, holding two numbers, is a line of a logger's header block, not data:
+    text labels it (LabVIEW's ``Samples 2610 2610``, ``Messbereich [bar];0;10``), a row without
+    any number (the block's end, the column names) comes within the next two rows, and rows of
+    numbers follow further on."""
+    first = next((c for c in rows[k] if str(c).strip()), "")
+    if _is_number(first):
+        return False
+    ends = [j for j in range(k + 1, min(k + 3, len(rows)))
+            if not any(_is_number(c) for c in rows[j])]
+    return bool(ends) and any(sum(_is_number(c) for c in cells) >= 2
+                              for cells in rows[ends[0] + 1:])
+
+
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
-    """The header is the row above the first row with two numbers; rows above it are titles."""
+    """The header is the row above the first row with two numbers that is not a line of a
+    header block (:func:`_preamble_row`); rows above it are titles."""
     first_data = next((k for k, cells in enumerate(rows)
-                       if sum(_is_number(c) for c in cells) >= 2), None)
+                       if sum(_is_number(c) for c in cells) >= 2
+                       and not _preamble_row(rows, k)), None)
     where = f"{path.name}, sheet {sheet!r}" if sheet else path.name
     if first_data is None:
         raise ValueError(f"{where} has no row of numbers: expected a header row and one row "
@@ -334,11 +358,44 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
         header = [f"{n} [{u.strip('[]()')}]" if n and u else n or u
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
-    data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:]]
+    header = _labview_header(header, rows[:header_index])
+    end = _footer_start(numbers, rows, first_data)
+    data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:end]]
     if len(data) > MAX_ROWS:
         raise ValueError(f"{where} has {len(data)} rows: expected at most {MAX_ROWS}")
     return RawTable(path, sheet, header[:width], numbers[header_index], data,
-                    numbers[first_data:], header_index, separator, decimal)
+                    numbers[first_data:end], header_index, separator, decimal,
+                    footer_skipped=[f"A{numbers[k]} ({str(rows[k][0]).strip()[:40]!r})"
+                                    for k in range(end, len(rows))])
+
+
+def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
+    """Where the notes under a table begin (``len(rows)``: none): the rows after the last blank
+    row that each hold fewer than two numbers, labelled by text (``Anzahl Werte;2610``,
+    ``Messung beendet;14:05:00``), as a logger writes a closing block; a row of numbers, or
+    none blank above them, keeps them in the table, where a bad cell is named."""
+    end = len(rows)
+    while end > first_data + 1 and sum(_is_number(c) for c in rows[end - 1]) < 2 \
+            and not _is_number(next((c for c in rows[end - 1] if str(c).strip()), "")):
+        end -= 1
+    # the block stands apart: a blank row (left out on reading) lies just above it
+    return end if end < len(rows) and numbers[end] - numbers[end - 1] > 1 else len(rows)
+
+
+def _labview_header(header: list[str], titles: list[list]) -> list[str]:
+    """A LabVIEW measurement file's column names with what its channel header says: each
+    channel's unit (``Y_Unit_Label``) after its name, and its one x column (``X_Value``) named
+    ``Time [s]`` where the channels' ``X_Dimension`` is time; any other header as it is."""
+    block = {str(row[0]).strip(): [str(c).strip() for c in row[1:]] for row in titles if row}
+    if "Y_Unit_Label" not in block or not header or header[0] != "X_Value":
+        return header
+    out = list(header)
+    if {d.lower() for d in block.get("X_Dimension", []) if d} == {"time"}:
+        out[0] = "Time [s]"
+    for k, unit in enumerate(block["Y_Unit_Label"], start=1):
+        if k < len(out) and out[k] and unit and parse_header(out[k])[1] is None:
+            out[k] = f"{out[k]} [{unit}]"
+    return out
 
 
 # --- recognising ------------------------------------------------------------------------------
@@ -456,9 +513,10 @@ class Column:
                                                              else None)}
 
 
-def parse_assignments(text: str | None, option: str) -> dict[str, str]:
+def parse_assignments(text: str | None, option: str, roles=ROLES) -> dict[str, str]:
     """``pressure=P [bar],force=F`` (``--columns``, ``--units``) -> ``{"pressure": "P [bar]",
-    "force": "F"}``; ``ValueError`` naming a bad item or a role given twice."""
+    "force": "F"}``; ``ValueError`` naming a bad item or a role given twice. ``roles``: the
+    names the option takes (default the columns' :data:`ROLES`)."""
     out = {}
     # an item ends at a comma before the next NAME=, so a header may hold commas itself
     # ("force=Kraft, gemessen,pressure=Druck")
@@ -466,9 +524,9 @@ def parse_assignments(text: str | None, option: str) -> dict[str, str]:
     for item in filter(None, (i.strip() for i in items)):
         role, sep, value = item.partition("=")
         role = role.strip()
-        if not sep or role not in ROLES or not value.strip():
+        if not sep or role not in roles or not value.strip():
             raise ValueError(f"{option} item {item!r} is invalid: expected ROLE=VALUE with ROLE "
-                             f"one of {', '.join(ROLES)}")
+                             f"one of {', '.join(roles)}")
         if role in out:
             raise ValueError(f"{option} gives {role} twice ({role}={out[role]}, {item}): "
                              "expected one value per role")
@@ -584,6 +642,12 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         elapsed = _elapsed_s(table, column, raw)
         if elapsed is not None:
             return elapsed
+        if raw and str(raw[0]).strip() and _number(raw[0], table.decimal)[0] is None:
+            raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
+                             f"{column.header!r}): {_shown(raw[0])} is not a time: expected "
+                             "seconds (or the unit in the header: Time [ms]), a time of day "
+                             "(14:05:00.250, 2:05:00 PM) or a date-time (2026-12-05 14:05:00, "
+                             "05.12.2026 14:05:00, 12/5/2026 2:05:00 PM)")
     plain = _plain_numbers(raw, table.decimal)
     values = plain if plain is not None else np.empty(len(raw))
     inline: dict[str, int] = {}
@@ -645,10 +709,58 @@ _CLOCK = re.compile(r"^(?P<h>\d{1,3}):(?P<m>\d{2}):(?P<s>\d{2}(?:[.,]\d*)?)$")
 _DAY_S = 86400.0
 
 
-def _clock(cell) -> tuple[str, float] | None:
-    """A cell holding a time of day (``hh:mm:ss[.fff]``, a workbook's time), a duration (a
-    workbook's time delta) or a date-time (ISO or ``dd.mm.yyyy hh:mm:ss``), as its kind and
-    seconds; ``None`` for any other cell."""
+#: a time of day on a 12-hour clock, as an English-language Excel writes it (2:05:00 PM)
+_CLOCK_12H = re.compile(r"^(?P<h>\d{1,2}):(?P<m>\d{2})(?::(?P<s>\d{2}(?:[.,]\d*)?))?\s*"
+                        r"(?P<half>[AaPp])\.?[Mm]\.?$")
+#: a date written with slashes, day and month in either order (12/5/2026 or 5/12/2026), and a
+#: time of day after it (24-hour, or 12-hour with AM/PM)
+_SLASHED = re.compile(r"^(?P<a>\d{1,2})/(?P<b>\d{1,2})/(?P<y>\d{4})\s+(?P<clock>\S.*)$")
+
+
+def _time_of_day_s(text: str) -> float | None:
+    """``hh:mm:ss[.fff]`` or ``h:mm[:ss[.fff]] AM/PM`` as seconds from midnight, else None."""
+    match = _CLOCK.match(text)
+    if match:
+        return (int(match["h"]) * 3600.0 + int(match["m"]) * 60.0
+                + float(match["s"].replace(",", ".")))
+    match = _CLOCK_12H.match(text)
+    if match and 1 <= int(match["h"]) <= 12:
+        hour = int(match["h"]) % 12 + (12 if match["half"] in "Pp" else 0)
+        return (hour * 3600.0 + int(match["m"]) * 60.0
+                + float((match["s"] or "0").replace(",", ".")))
+    return None
+
+
+def _slashed_s(text: str, day_first: bool) -> float | None:
+    """A slashed date-time (month first, or day first) as seconds since 1970, else None."""
+    match = _SLASHED.match(text)
+    if not match:
+        return None
+    month, day = (int(match["b"]), int(match["a"])) if day_first else (int(match["a"]),
+                                                                        int(match["b"]))
+    if ":" not in match["clock"]:
+        return None
+    clock = _time_of_day_s(match["clock"].strip())
+    clock = clock if clock is not None else (
+        _time_of_day_s(match["clock"].strip() + ":00") if match["clock"].count(":") == 1
+        else None)  # Excel's 'm/d/yyyy h:mm'
+    try:
+        date = datetime.datetime(int(match["y"]), month, day)
+    except ValueError:
+        return None
+    return None if clock is None else _epoch_s(date) + clock
+
+
+def _day_first(raw: list) -> bool:
+    """Whether a column's slashed dates put the day first: one of them starts above 12."""
+    return any(int(m["a"]) > 12 for m in (_SLASHED.match(str(c).strip()) for c in raw) if m)
+
+
+def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
+    """A cell holding a time of day (``hh:mm:ss[.fff]``, ``2:05:00 PM``, a workbook's time), a
+    duration (a workbook's time delta) or a date-time (ISO, ``dd.mm.yyyy hh:mm:ss``, or
+    slashed ``m/d/yyyy h:mm:ss AM``, ``d/m/yyyy`` with ``day_first``), as its kind and seconds;
+    ``None`` for any other cell."""
     if isinstance(cell, datetime.datetime):
         return "date-time", _epoch_s(cell)
     if isinstance(cell, datetime.time):
@@ -659,10 +771,12 @@ def _clock(cell) -> tuple[str, float] | None:
     text = str(cell).strip()
     if ":" not in text:
         return None
-    match = _CLOCK.match(text)
-    if match:
-        return "clock", (int(match["h"]) * 3600.0 + int(match["m"]) * 60.0
-                         + float(match["s"].replace(",", ".")))
+    of_day = _time_of_day_s(text)
+    if of_day is not None:
+        return "clock", of_day
+    slashed = _slashed_s(text, day_first)
+    if slashed is not None:
+        return "date-time", slashed
     for parse in (datetime.datetime.fromisoformat,
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S"),
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f")):
@@ -684,9 +798,10 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     """A time column of clock readings or date-times as seconds from its first row (``None``:
     the column holds numbers); ``ValueError`` naming a cell that is neither, or of a kind
     other than the first's."""
-    if not raw or _clock(raw[0]) is None:
+    day_first = _day_first(raw)
+    if not raw or _clock(raw[0], day_first) is None:
         return None
-    kinds = [_clock(cell) for cell in raw]
+    kinds = [_clock(cell, day_first) for cell in raw]
     values = np.empty(len(raw))
     for k, (cell, reading) in enumerate(zip(raw, kinds, strict=True)):
         if reading is None or reading[0] != kinds[0][0]:
@@ -886,6 +1001,9 @@ class Recognition:
             extras.append("decimal comma")
         if self.table.title_rows:
             extras.append(f"{self.table.title_rows} title row(s) skipped")
+        if footer := self.table.footer_skipped:
+            extras.append(f"{len(footer)} row(s) of notes under the table skipped: "
+                          + ", ".join(footer[:3]) + (", ..." if len(footer) > 3 else ""))
         if summaries := self.table.summaries_skipped:
             extras.append(f"{len(summaries)} summary row(s) skipped: "
                           + ", ".join(summaries[:3]) + (", ..." if len(summaries) > 3 else ""))

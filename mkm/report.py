@@ -203,7 +203,8 @@ def build_report(run_dirs, models=None, out_dir=None,
              else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
     out = check_writable(report_folder(out_dir, run_dirs), folder=True)
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
-        with staged_folder(out, last="report.html", record="provenance.json") as stage:
+        with staged_folder(out, last="report.html", record="provenance.json",
+                           replaces=_files_written(out)) as stage:
             _write_report(run_dirs, specs, stage, cache_dir, tolerance, surrogate_section,
                           progress, start, calibration)
     except OSError as exc:
@@ -211,6 +212,16 @@ def build_report(run_dirs, models=None, out_dir=None,
         raise ValueError(f"the report was not written ({exc.strerror or type(exc).__name__}"
                          f"{f': {where}' if where else ''}); {out} is as it was") from None
     return out / "report.html"
+
+
+def _files_written(out: Path) -> list[str]:
+    """The files the report in ``out`` wrote there (its provenance.json's ``output``), to go
+    where this one does not write them again; none when there is no report or it is unread."""
+    try:
+        files = json.loads((out / "provenance.json").read_text(encoding="utf-8"))["output"]["files"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return []
+    return [f for f in files if isinstance(f, str)] if isinstance(files, list) else []
 
 
 def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_section,
@@ -249,6 +260,8 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
         sections.append(_surrogate_section(out, prov))
         bar.update(1)
     bar.close()
+    prov["output"] = {"files": sorted([p.name for p in out.iterdir()]
+                                      + ["provenance.json", "report.html"])}
     write_json_atomic(out / "provenance.json", prov)
     elapsed = time.perf_counter() - start
     intro = (f"<p>Generated {esc(prov['software']['date_utc'])} by "

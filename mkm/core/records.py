@@ -27,7 +27,7 @@ import os
 import platform
 import sys
 import time
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from contextlib import contextmanager
 from functools import cache
 from importlib.util import resolve_name
@@ -127,13 +127,15 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
 
 @contextmanager
 def staged_folder(out: str | os.PathLike, last: str | None = None,
-                  record: str | None = None) -> Iterator[Path]:
+                  record: str | None = None, replaces: Iterable[str] = ()) -> Iterator[Path]:
     """Write a folder's files whole or not at all: yields a temporary folder beside ``out``
     (same file system); when the block ends normally each file is moved into ``out`` (made if
     needed; ``last`` moved last, so its presence means the rest is there), and the temporary
     folder removed. On any error or interrupt the temporary folder is removed and ``out`` is left
-    as it was: a full disk or a Ctrl-C leaves no partial output. Files of ``out`` that the block
-    did not write are left alone.
+    as it was: a full disk or a Ctrl-C leaves no partial output. ``replaces`` names the files
+    the previous output wrote there: those the block did not write again go too (a report of
+    six runs replaced by one of two leaves no run3_errors.csv behind); other files of ``out``
+    (a user's) are left alone.
 
     The files it replaces are moved aside first, all of them before any new one comes in: on
     Windows a file another program holds open (a summary.csv shown in Excel) cannot be moved,
@@ -162,21 +164,24 @@ def staged_folder(out: str | os.PathLike, last: str | None = None,
         if last in names:
             names.remove(last)
             names.append(last)
-        _swap_in(stage, out, names)
+        # a plain name only: a manifest read from out must not reach outside it
+        stale = sorted({n for n in replaces if Path(n).name == n and n not in ("", ".", "..")
+                        and n not in names and (out / n).is_file()})
+        _swap_in(stage, out, names, stale)
     finally:
         shutil.rmtree(stage, ignore_errors=True)
 
 
-def _swap_in(stage: Path, out: Path, names: list[str]) -> None:
-    """Move ``names`` from ``stage`` into ``out``, the files they replace moved aside into
-    ``stage``'s ``.old`` first; an error restores ``out`` as it was and is raised naming the
-    file in ``out``."""
+def _swap_in(stage: Path, out: Path, names: list[str], stale: Sequence[str] = ()) -> None:
+    """Move ``names`` from ``stage`` into ``out``, the files they replace and the ``stale``
+    ones moved aside into ``stage``'s ``.old`` first; an error restores ``out`` as it was and is
+    raised naming the file in ``out``."""
     aside = stage / ".old"
     aside.mkdir()
     moved_aside: list[str] = []
     moved_in: list[str] = []
     try:
-        for name in names:
+        for name in [*names, *stale]:
             if (out / name).exists() or (out / name).is_symlink():
                 _move(out / name, aside / name, out / name)
                 moved_aside.append(name)

@@ -21,6 +21,7 @@ from matplotlib.patches import Patch, Rectangle
 
 from mkm.core.records import (
     check_output_folder,
+    holds_provenance,
     provenance,
     save_figure,
     sidecar_path,
@@ -61,6 +62,7 @@ def write_design(result: DesignResult, out: Path) -> Path:
     folder or one ``mkm design`` wrote (``ValueError`` naming a file of another in the way)."""
     s = result.search
     check_output_folder(out, output_files(len(s.requirements)), "designs.json")
+    earlier = holds_provenance(out / "designs.json")
     out.mkdir(parents=True, exist_ok=True)
     record = design_record(result)
     surrogate = next(iter(s.models.values()))
@@ -100,6 +102,12 @@ def write_design(result: DesignResult, out: Path) -> Path:
                             "constraints (the search's feasible set is the hatched region inside "
                             "it); markers: the verified designs (white: the FE confirms), star: "
                             "the chosen design."))
+    # a design of more requirements written here before left its contours of the others (a
+    # folder that held no design keeps its files)
+    drawn = {path.name for path, _ in figures}
+    for stale in out.glob("requirement*_contours.png") if earlier else ():
+        if re.fullmatch(r"requirement\d+_contours\.png", stale.name) and stale.name not in drawn:
+            stale.unlink(missing_ok=True)
     fig = curves_figure(result)
     figures.append((save_figure(fig, out / "fe_curves.png"),
                     "FE force against pressure of the "

@@ -99,6 +99,37 @@ def test_directions_of_repeated_cycles_are_inferred_per_cycle(tmp_path, capsys):
     assert steps["repeat"].tolist() == [0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1]
 
 
+def test_a_pressure_repeated_where_the_table_turns_starts_the_next_branch(tmp_path, capsys):
+    # each cycle written whole, 0 -> 2 -> 0 bar, one after the other: was the second cycle's
+    # first 0 bar a falling step (down, repeat 1), its rise starting at 1 bar
+    table = tmp_path / "cycles.csv"
+    pressures = [0, 1, 2, 1, 0, 0, 1, 2, 2, 1, 0]
+    pd.DataFrame({"pressure_bar": pressures, "force_N": np.arange(11.0)}).to_csv(table,
+                                                                                 index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    steps = load_run(out.strip()).steps
+    assert steps["direction"].tolist() == ["up"] * 3 + ["down"] * 2 + ["up"] * 3 + ["down"] * 3
+    assert steps["repeat"].tolist() == [0, 0, 0, 0, 0, 1, 1, 1, 0, 1, 1]
+
+
+def test_a_record_sampled_without_its_time_has_one_rising_and_one_falling_branch(tmp_path,
+                                                                                 capsys):
+    # was: the direction taken from each row's change, so the gauge's noise (0.01 bar) turned
+    # it up and down from sample to sample: 154 falling steps on the rise
+    rng = np.random.default_rng(0)
+    pressure = np.r_[np.zeros(50), np.linspace(0.0, 2.5, 150), np.linspace(2.5, 0.0, 150)]
+    noisy = np.abs(pressure + rng.normal(0.0, 0.01, pressure.size))
+    table = tmp_path / "sampled.csv"
+    pd.DataFrame({"pressure_bar": noisy.round(4), "force_N": 150.0 * pressure}).to_csv(
+        table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    direction = load_run(out.strip()).steps["direction"].tolist()
+    top = int(np.argmax(noisy)) + 1  # the rise ends at its highest reading
+    assert direction == ["up"] * top + ["down"] * (pressure.size - top)
+
+
 def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, capsys):
     table = tmp_path / "kpa.csv"
     pd.DataFrame({"P": [0, 100, 250], "F": [0.0, 100.0, 250.0]}).to_csv(table, index=False)

@@ -723,8 +723,9 @@ def test_a_declared_accuracy_is_read_in_the_toolkit_units(text, expected):
 @pytest.mark.parametrize("text, message", [
     ("force=0.1%FS", "a share of full scale is a bound in N"),
     ("force=0.02bar", "'bar' is not a unit of force"),
-    ("torque=1N", "expected ROLE=VALUE"),
-    ("eps=1%", "expected a bound of force or pressure"),
+    # was: "ROLE one of pressure, force, time, direction, ..., slack", the columns' roles
+    ("torque=1N", "'torque=1N' is invalid: expected ROLE=VALUE with ROLE one of force, pressure"),
+    ("eps=1%", "'eps=1%' is invalid: expected ROLE=VALUE with ROLE one of force, pressure"),
     ("force=0N", "a bound of 0 claims exact values"),
     ("force=150%", "expected less than 100 % and at most"),
     ("force=lots", "expected a +- bound such as force=0.5N"),

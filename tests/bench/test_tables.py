@@ -9,6 +9,7 @@ import pandas as pd
 import pytest
 
 from mkm.bench.tables import (
+    Recognition,
     column_values,
     parse_assignments,
     parse_header,
@@ -182,6 +183,16 @@ def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
     np.testing.assert_allclose(column_values(table, found[role]), [scale])
 
 
+def test_a_german_benchs_actual_reading_beside_its_set_point(tmp_path):
+    # was: "no pressure column among 'Druck_Soll [bar]', 'Druck_Ist [bar]', ...": Ist (the
+    # actual value) is the reading, Soll (the set point) is left out
+    table, found = _one(tmp_path, "Druck_Soll [bar];Druck_Ist [bar];Kraft Istwert [N]\n"
+                        "1;0,98;100\n2;2,01;201\n")
+    assert found["pressure"].header == "Druck_Ist [bar]"
+    assert found["force"].header == "Kraft Istwert [N]"
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.98, 2.01])
+
+
 def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
     # a lab's export with ',' between fields keeps its decimal commas quoted
     table, found = _one(tmp_path, 'Pressure [bar],Force [N]\n"0,0","0"\n"0,5","12,25"\n'
@@ -272,6 +283,47 @@ def test_a_labelled_row_under_the_header_is_named(text, row, tmp_path):
     assert str(info.value).startswith(f"lab.csv, {row} lies between the header (row "
                                       f"{1 if 'Pressure' in text else 3}: {header}) and the "
                                       "rows of numbers: expected every row under the header")
+
+
+LABVIEW_LVM = (
+    "LabVIEW Measurement\t\nWriter_Version\t2\nSeparator\tTab\nDecimal_Separator\t.\n"
+    "***End_of_Header***\t\n\t\nChannels\t2\t\nSamples\t3\t3\t\n"
+    "Date\t2026/12/05\t2026/12/05\t\nY_Unit_Label\tkPa\tkN\t\nX_Dimension\tTime\tTime\t\n"
+    "X0\t0.0000000000000000E+0\t0.0000000000000000E+0\t\nDelta_X\t0.100000\t0.100000\t\n"
+    "***End_of_Header***\t\nX_Value\tDruck\tKraft\tComment\n"
+    "0.000000\t0.000000\t0.035000\t\n0.100000\t250.000000\t2.730000\t\n"
+    "0.200000\t800.000000\t8.660000\t\n")
+
+
+@pytest.mark.parametrize("name, text, header, title_rows, force", [
+    # a logger's header block with a measuring range: two numbers in a labelled row
+    ("logger.csv", "Gerät;HBM QuantumX\r\nMessbereich [bar];0;10\r\nAbtastrate [Hz];10\r\n"
+     "\r\nZeit [s];Druck [bar];Kraft [N]\r\n0,0;0,0;3,0\r\n0,1;2,5;253,0\r\n0,2;8;803\r\n",
+     ["Zeit [s]", "Druck [bar]", "Kraft [N]"], 3, [3.0, 253.0, 803.0]),
+    # LabVIEW's measurement file: 'Samples', 'X0', 'Delta_X' hold two numbers each
+    ("run 7.lvm", LABVIEW_LVM, ["Time [s]", "Druck [kPa]", "Kraft [kN]", "Comment"], 13,
+     [35.0, 2730.0, 8660.0]),
+])
+def test_a_header_block_with_rows_of_numbers_is_skipped(name, text, header, title_rows, force,
+                                                         tmp_path):
+    # was: the row above 'Messbereich [bar];0;10' read as the header ("no pressure or force
+    # column among 'Gerät', 'HBM QuantumX'"), 'Samples 3 3' under 'Channels 2' refused as a
+    # labelled row, and '.lvm' an unknown table format
+    table, found = _one(tmp_path, text, name)
+    assert table.header == header and table.title_rows == title_rows
+    assert len(table.rows) == 3
+    np.testing.assert_allclose(column_values(table, found["force"]), force)
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1, 0.2])
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+
+
+def test_a_labview_x_column_of_another_dimension_and_a_named_unit_are_as_written(tmp_path):
+    # the .lvm above: X_Value is the time and Druck, Kraft take Y_Unit_Label's kPa and kN (was:
+    # read in s-less bar and N, one step per sample, 250 'bar' refused); not so here
+    table, found = _one(tmp_path, LABVIEW_LVM.replace("X_Dimension\tTime\tTime",
+                                                      "X_Dimension\tPoints\tPoints")
+                        .replace("Druck\t", "Druck [bar]\t"), "b.lvm")
+    assert table.header[:2] == ["X_Value", "Druck [bar]"] and "time" not in found
 
 
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
@@ -386,3 +438,45 @@ def test_numbers_in_scientific_notation(tmp_path):
                                [50.0, 100.0, 150.0, 200.0, 250.0])
     table, found = _one(tmp_path, "P,F\n1,2.5E-1 kN\n2,5e-1 kN\n")
     np.testing.assert_allclose(column_values(table, found["force"]), [250.0, 500.0])
+
+
+@pytest.mark.parametrize("cells, seconds", [
+    # an English-language Excel's times of day: 12-hour clock, past noon and past midnight
+    (["11:59:59.5 AM", "12:00:00.5 PM", "12:00:01 PM"], [0.0, 1.0, 1.5]),
+    (["11:59:59 PM", "12:00:00 AM", "12:00:01 a.m."], [0.0, 1.0, 2.0]),
+    # its date-times, month first (Excel's m/d/yyyy h:mm too), and day first where a day > 12
+    (["12/5/2026 11:59:59.750 PM", "12/6/2026 12:00:00.250 AM"], [0.0, 0.5]),
+    (["12/5/2026 23:59", "12/6/2026 0:01"], [0.0, 120.0]),
+    (["31/1/2026 23:59:59", "1/2/2026 00:00:01"], [0.0, 2.0]),
+])
+def test_times_of_day_and_date_times_as_english_excel_writes_them(cells, seconds, tmp_path):
+    # was: "cell A2 (column 'Time'): '11:59:59.5 AM' is not a number"
+    rows = "".join(f"{c};{k};{k}\n" for k, c in enumerate(cells))
+    table, found = _one(tmp_path, f"Time;P [bar];F [N]\n{rows}")
+    np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
+
+
+def test_a_time_cell_that_is_no_time_is_named_as_such(tmp_path):
+    # was: "'13:61 PM' is not a number", for a column of times
+    table, found = _one(tmp_path, "Time;P [bar];F [N]\n13:61 PM;0;1\n")
+    with pytest.raises(ValueError) as info:
+        column_values(table, found["time"])
+    assert str(info.value).startswith("lab.csv, cell A2 (column 'Time'): '13:61 PM' is not a "
+                                      "time: expected seconds")
+
+
+def test_a_loggers_closing_notes_under_a_blank_row_are_no_data(tmp_path):
+    # was: "cell A8 (column 'Druck [bar]'): 'Anzahl Werte' is not a number"
+    notes = "\nAnzahl Werte;3\nMessdauer [s];120,5\nMessung beendet;14:05:00\nPrüfer;Müller\n"
+    table, found = _one(tmp_path, f"Druck [bar];Kraft [N]\n0;2\n1;102\n2;203\n{notes}")
+    np.testing.assert_allclose(column_values(table, found["force"]), [2.0, 102.0, 203.0])
+    assert table.footer_skipped == ["A6 ('Anzahl Werte')", "A7 ('Messdauer [s]')",
+                                    "A8 ('Messung beendet')", "A9 ('Prüfer')"]
+    assert Recognition(table, found).line().endswith(
+        "4 row(s) of notes under the table skipped: A6 ('Anzahl Werte'), A7 ('Messdauer [s]'), "
+        "A8 ('Messung beendet'), ...")
+    # with no blank row above it, such a row is read with the data, and named there
+    table, found = _one(tmp_path, "Druck [bar];Kraft [N]\n0;2\n1;102\nAnzahl Werte;2\n", "b.csv")
+    with pytest.raises(ValueError, match=r"cell A4 \(column 'Druck \[bar\]'\): 'Anzahl Werte' "
+                                         "is not a number"):
+        column_values(table, found["pressure"])

@@ -529,6 +529,22 @@ def test_every_design_figure_carries_its_provenance(tmp_path, mkm_run):
         assert json.loads(text["Provenance"])["versions"] == software["versions"]
 
 
+def test_a_design_of_fewer_requirements_leaves_no_contours_of_the_earlier(tmp_path, mkm_run):
+    # was: requirement2_contours.png of a two-requirement design written to this folder before
+    # stayed beside a one-requirement design, drawn for a requirement it does not have
+    code, out, err = mkm_run(["design", "--require", "300N@2.5bar,eps=0.1",
+                              "--require", "250N@2.5bar,eps=0.2", "--top", "1", "--mesh", MESH,
+                              "--no-progress", "--out", str(tmp_path)])
+    assert code == 0, err
+    assert (tmp_path / "requirement2_contours.png").is_file()
+    (tmp_path / "requirement_notes.png").write_bytes(b"the lab's own")
+    code, out, err = mkm_run(["design", "--require", "300N@2bar,eps=0.1", "--top", "1",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 0, err
+    assert sorted(p.name for p in tmp_path.glob("*.png")) == [
+        "fe_curves.png", "requirement1_contours.png", "requirement_notes.png"]
+
+
 def test_many_verified_designs_draw_the_best_curves_and_keep_every_one(tmp_path, mkm_run):
     # --top 300 drew 289 curves and their legend: matplotlib collapsed the axes and said so
     from mkm.design.page import MAX_CURVES

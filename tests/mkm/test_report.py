@@ -573,3 +573,22 @@ def test_a_calibration_that_identified_the_wall_predicts_its_muscle_with_it(tmp_
     html = (tmp_path / "report" / "report.html").read_text(encoding="utf-8")
     shown = re.search(r"t0_mm identified \(the models(?:&#x27;|')\)</td>\s*<td>([\d.]+)<", html)
     assert float(shown[1]) == pytest.approx(result.fit.values["t0_mm"], rel=1e-5)
+
+
+def test_a_report_replaced_by_one_of_fewer_runs_leaves_none_of_its_files(runs, tmp_path):
+    # was: run2_errors.csv and run2_force_error.png of the first report stayed beside the
+    # second, which has one run: files of a report that is no longer there, read as this one's
+    out = tmp_path / "report"
+    out.mkdir()
+    (out / "notes.txt").write_text("the lab's own file")
+    build_report(list(runs), parse_models("eq2"), out_dir=out, cache_dir=None, tolerance=None,
+                 surrogate_section=False)
+    assert (out / "run2_errors.csv").is_file()
+    first = set(json.loads((out / "provenance.json").read_text())["output"]["files"])
+    assert first == {p.name for p in out.iterdir()} - {"notes.txt"}
+    build_report(runs[:1], parse_models("eq2"), out_dir=out, cache_dir=None, tolerance=None,
+                 surrogate_section=False)
+    written = set(json.loads((out / "provenance.json").read_text())["output"]["files"])
+    assert {p.name for p in out.iterdir()} == written | {"notes.txt"}
+    assert not any(name.startswith("run2") for name in written)
+    assert (out / "notes.txt").read_text() == "the lab's own file"

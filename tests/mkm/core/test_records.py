@@ -233,3 +233,17 @@ def test_a_file_windows_holds_open_is_named_with_what_to_do(tmp_path, monkeypatc
         f"{target} cannot be replaced (Permission denied): expected it closed in every other "
         "program (Excel holds a file it shows open) and writable by this user")
     assert target.read_text() == "old" and [p.name for p in tmp_path.iterdir()] == ["summary.csv"]
+
+
+def test_a_staged_folder_removes_the_files_it_replaces_only_inside_out(tmp_path):
+    out = tmp_path / "report"
+    out.mkdir()
+    for name in ("run1.csv", "run2.csv", "mine.txt"):
+        (out / name).write_text(f"old {name}")
+    (tmp_path / "outside.txt").write_text("kept")
+    with records.staged_folder(out, replaces=["run1.csv", "run2.csv", "../outside.txt",
+                                              str(tmp_path / "outside.txt"), ".."]) as stage:
+        (stage / "run1.csv").write_text("new run1.csv")
+    assert {p.name: p.read_text() for p in out.iterdir()} == {
+        "run1.csv": "new run1.csv", "mine.txt": "old mine.txt"}
+    assert (tmp_path / "outside.txt").read_text() == "kept"
