@@ -37,6 +37,14 @@ MAX_ROWS = 2_000_000
 SEPARATORS = (",", ";", "\t")
 #: text tables read; ``.lvm`` is LabVIEW's measurement file (tab separated under a header block)
 TEXT_SUFFIXES = (".csv", ".tsv", ".txt", ".lvm")
+#: workbooks read, every sheet a table
+WORKBOOK_SUFFIXES = (".xlsx", ".xlsm")
+
+
+def table_suffixes_text() -> str:
+    """The files :func:`read_tables` reads, in words: ``.csv, .tsv, ... or .xlsm``."""
+    *first, last = (*TEXT_SUFFIXES, *WORKBOOK_SUFFIXES)
+    return f"{', '.join(first)} or {last}"
 #: words of a header that say which reading of a quantity it is (German Ist: the actual
 #: value, beside the Soll, the set one), dropped from its name
 STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual", "ist", "istwert",
@@ -148,14 +156,14 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     named ``sheet``); ``ValueError`` naming the file when it cannot be read."""
     path = Path(path)
     if not path.exists():
-        raise ValueError(f"{path}: no such file: expected a CSV, TSV or .xlsx table")
+        raise ValueError(f"{path}: no such file: expected a table ({table_suffixes_text()})")
     path = table_file(path)  # before any parser: links, empty files, bombs, DTDs refused
     suffix = path.suffix.lower()
-    if suffix in (".xlsx", ".xlsm"):
+    if suffix in WORKBOOK_SUFFIXES:
         return _read_workbook(path, sheet)
     if suffix not in TEXT_SUFFIXES:
-        raise ValueError(f"{path}: unknown table format {suffix!r}: expected .csv, .tsv, .txt, "
-                         ".lvm or .xlsx")
+        raise ValueError(f"{path}: unknown table format {suffix!r}: expected "
+                         f"{table_suffixes_text()}")
     if sheet is not None:
         raise ValueError(f"--sheet {sheet!r}: {path.name} is a text table, it has no sheets")
     try:
@@ -225,7 +233,7 @@ def sheet_names(path: str | Path) -> list[str]:
     import openpyxl
 
     path = Path(path)
-    if path.suffix.lower() not in (".xlsx", ".xlsm"):
+    if path.suffix.lower() not in WORKBOOK_SUFFIXES:
         return []
     try:
         book = openpyxl.load_workbook(path, read_only=True)

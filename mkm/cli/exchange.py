@@ -5,7 +5,7 @@ Argument parsing only: :mod:`mkm.bench.exchange` does the work.
 
 from __future__ import annotations
 
-from mkm.cli.common import argtype, shared_help
+from mkm.cli.common import argtype, derived_help, shared_help
 from mkm.core.ranges import parse_fraction, parse_number
 from mkm.core.records import EXPORT_FORMATS
 
@@ -30,7 +30,7 @@ def register(subparsers) -> None:
         "row) is a time series: stored as samples, its steps the plateaus of a staircase or "
         "quasi-static bins of a ramp (rising and falling apart).",
         epilog=IMPORT_EXAMPLE)
-    imp.add_argument("table", help="the CSV, TSV or .xlsx file")
+    imp.add_argument("table", action=derived_help(_table_help))
     imp.add_argument("--id", help="the muscle's id (names the run folders; default: the one "
                      "in a workbook written by mkm export)")
     imp.add_argument("--D0", type=argtype(parse_number, "--D0", "mm"), help=shared_help("--D0"))
@@ -83,6 +83,12 @@ def register(subparsers) -> None:
                      help="the workbook (xlsx) or folder (csv), new or one mkm export wrote "
                      "(nothing else is overwritten); default: mkm-out/export/<run>")
     exp.set_defaults(func=_export)
+
+
+def _table_help() -> str:
+    from mkm.bench.tables import table_suffixes_text
+
+    return f"the table file: {table_suffixes_text()} (LabVIEW's .lvm read as text)"
 
 
 def _import(args) -> int:
