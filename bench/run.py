@@ -13,7 +13,8 @@ Safety, in every exit path:
 - a bench left pressurised by a run that died without venting is vented first, and said
   (:mod:`mkm.bench.unvented`);
 - the pressure command is clamped to ``regulator.max_pressure_bar``; the force and pressure
-  interlocks stop the run (:mod:`mkm.bench.worker`);
+  interlocks stop the run (:mod:`mkm.bench.worker`), whose loop never waits for the disk
+  (:mod:`mkm.bench.recorder` writes behind it; a disk not taking the record stops the run);
 - the first Ctrl-C stops at the next block boundary (0.1 s at the default one-sample blocks);
   a second Ctrl-C, SIGTERM, SIGHUP, SIGBREAK or a closed Windows console stop at once
   (:mod:`mkm.bench.signals`); either way, and on any error, ``shutdown`` commands the vent, closes
@@ -60,6 +61,7 @@ from mkm.bench.worker import Acquisition, Stop
 
 EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
 STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
+DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before saying it waits
 
 
 def notify_stderr(message: str) -> None:
@@ -440,10 +442,9 @@ class BenchRun:
         meta.manual_vent_required = True
         pending = ("the vent was commanded; its check had not ended when Windows was about to "
                    "end the process: VENT BY HAND or verify it with `mkm vent`")
-        try:
-            self.recorder.mark(status, "; ".join(filter(None, [reason, *problems, pending])))
-        except OSError:
-            pass  # the disk: the final record meets it again and says so
+        # a disk that hangs gets until the grace deadline; the final record says what it did
+        self.recorder.mark(status, "; ".join(filter(None, [reason, *problems, pending])),
+                           max(self.signals.grace_deadline() - time.monotonic(), 0.0))
 
     @staticmethod
     def _drain(acq: Acquisition) -> list[str]:
@@ -527,6 +528,14 @@ class BenchRun:
             problems.append(f"closing the device failed ({type(exc).__name__}: {exc})")
         for observer in self._observers:
             observer.close()
+        if self.recorder is not None:  # everything held reaches the disk before the outcome
+            if not self.recorder.wait_written(DISK_NOTICE_S):
+                self.notify(f"vented; the disk of {self.recorder.path} is not taking the record: "
+                            f"{self.recorder.held_rows} samples are held in memory until it "
+                            "does (ending mkm now loses them)")
+                self.recorder.wait_written()
+            problems.extend(self.recorder.refusals())
+            self.storage_failed = bool(self.recorder.stuck_reason)
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
             status = RunStatus.FAILED

@@ -11,9 +11,11 @@ One folder per run, named ``<UTC time>_<muscle id>``:
 - ``commands.csv``: one :class:`CommandRecord` per regulator command, with whether the write
   succeeded.
 
-Rows are flushed to the operating system after every block, so a run killed at any moment keeps
-every sample read before its last block. ``fsync`` (which costs milliseconds) runs for run.json
-and at close: it guards against power loss, not against a dying process.
+Rows are flushed to the operating system as they are appended (a run's by the thread of
+:class:`mkm.bench.recorder.Recorder`, a few blocks behind its loop at most while the disk takes
+them), so a run killed at any moment keeps every sample appended. ``fsync`` (which costs
+milliseconds) runs for run.json and at close: it guards against power loss, not against a dying
+process.
 
 :func:`load_run` reads a folder back (samples loaded on first use); :func:`aggregate_samples`
 streams ``samples.csv`` into time bins with bounded memory, for long runs (a 24 h run at 10 Hz
