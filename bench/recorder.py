@@ -123,7 +123,7 @@ class Recorder:
             except OSError as exc:
                 with self._cond:
                     self._failures.append((self._what(kind, payload), exc))
-            except Exception as exc:  # noqa: BLE001 (a bug: said in the reason, not lost)
+            except Exception as exc:  # a bug: said in the reason, not lost
                 with self._cond:
                     self._failures.append((self._what(kind, payload), OSError(
                         f"{type(exc).__name__}: {exc}")))

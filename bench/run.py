@@ -455,7 +455,7 @@ class BenchRun:
             acq.drain()
         except BenchError:
             return []
-        except Exception as exc:  # the disk, or a device half closed by a failed revive
+        except BaseException as exc:  # a device half closed by a failed revive, a Ctrl-C
             return [f"the samples acquired before the stop could not be recorded "
                     f"({type(exc).__name__}: {exc})"]
         return []
@@ -482,6 +482,17 @@ class BenchRun:
             return VentCheck(False, float("nan"), below, 0.0, "monitor",
                              f"{type(exc).__name__}: {exc}")
 
+    def _write_vent(self, acq: Acquisition | None) -> BaseException | None:
+        """Command the vent; what stopped it, or None."""
+        try:
+            if acq is not None:
+                acq.command(0.0, "vent")
+            else:
+                self.backend.write_command(0.0)
+        except BaseException as exc:  # judged by the shutdown
+            return exc
+        return None
+
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
                  signal_number=None) -> tuple[RunStatus, str]:
         """Vent, verify the vent, close the device, record the outcome. Never raises; returns
@@ -490,12 +501,14 @@ class BenchRun:
         acq = self.acquisition
         revive = hasattr(self.backend, "revive")  # a device loss is tried once, then said
         gone = False  # lost, and the reset did not bring it back: nothing can be read
-        try:
-            if acq is not None:
-                acq.command(0.0, "vent")
-            else:
-                self.backend.write_command(0.0)
-        except BaseException as exc:  # the device may be gone; closing must still happen
+        failure = self._write_vent(acq)
+        if isinstance(failure, KeyboardInterrupt | StopSignal) and not (
+                acq is not None and acq.written):  # cut before the device, not failed there
+            problems.append(f"the vent command was interrupted ({type(failure).__name__}) and "
+                            "written again")
+            failure = self._write_vent(acq)
+        if failure is not None:  # the device may be gone; closing must still happen
+            exc = failure
             if acq is not None and acq.written:  # written; only its record failed
                 problems.append(f"recording the vent failed ({type(exc).__name__}: {exc})")
             elif isinstance(exc, DaqDisconnected) and revive:
@@ -527,7 +540,13 @@ class BenchRun:
         except BaseException as exc:
             problems.append(f"closing the device failed ({type(exc).__name__}: {exc})")
         for observer in self._observers:
-            observer.close()
+            try:
+                observer.close()
+            except BaseException:  # a plot window gone: nothing to record
+                pass
+        if self.signals.noted:  # signals during the stop: said, never obeyed mid-vent
+            problems.append(f"{', '.join(dict.fromkeys(self.signals.noted))} received while "
+                            "stopping: noted, the vent and the record went first")
         if self.recorder is not None:  # everything held reaches the disk before the outcome
             if not self.recorder.wait_written(DISK_NOTICE_S):
                 self.notify(f"vented; the disk of {self.recorder.path} is not taking the record: "
