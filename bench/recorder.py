@@ -9,7 +9,8 @@ disk has not taken yet is held in memory, in order; the loop asks :meth:`Recorde
 every block, and more than :data:`DISK_STUCK_S` of samples (or :data:`HELD_ROWS_MAX` rows)
 held stops the run: vent first, reason "disk not taking the record".
 A write the disk refused is said to the loop at its next block (:meth:`Recorder.raise_failure`)
-and in the final reason. :meth:`Recorder.finish` waits for the disk to take everything held,
+and in the final reason; the samples it refused are kept and written again, none lost or
+written twice. :meth:`Recorder.finish` waits for the disk to take everything held,
 then writes the outcome and syncs every file; it never raises, so a full disk cannot hide the
 outcome of the vent: it returns what went wrong.
 """
@@ -74,6 +75,11 @@ class Recorder:
             simulated=bool(info.simulated))
         self.writer = RunWriter(out_root, self.meta, config.effective_text())  # run.json first
         self._refused = False  # an append of samples failed (the disk)
+        # rows taken from the queue and not on disk yet: a block being written, or rows the disk
+        # refused, written again first with the next block (samples.csv cut back to its whole
+        # rows before, _reopen), and once more at the end (refusals)
+        self._unwritten: list[Sample] = []
+        self._reopen = False
         self._cond = threading.Condition()
         self._ops: collections.deque = collections.deque()  # (kind, payload), in order
         self._busy = False  # the thread is writing what it took from _ops
@@ -113,6 +119,10 @@ class Recorder:
                     self._cond.wait()
                 kind, payload = self._ops.popleft()
                 self._busy = True
+                if kind == "samples":  # from the queue to the rows being written
+                    self._held.popleft()
+                    self._held_rows -= len(payload)
+                    self._unwritten.extend(payload)
             if kind == "stop":
                 with self._cond:
                     self._busy = False
@@ -129,20 +139,12 @@ class Recorder:
                         f"{type(exc).__name__}: {exc}")))
             finally:
                 with self._cond:
-                    if kind == "samples":
-                        self._held.popleft()
-                        self._held_rows -= len(payload)
                     self._busy = False
                     self._cond.notify_all()
 
     def _write(self, kind: str, payload) -> None:
-        if kind == "samples":
-            try:
-                self.writer.append_samples(payload)
-            except OSError:
-                self._refused = True  # buffered rows may still reach the disk at close
-                raise
-            self.meta.counters["samples"] += len(payload)
+        if kind == "samples":  # the payload is in _unwritten already
+            self._write_unwritten()
         elif kind == "step":
             self.writer.append_step(payload)
         elif kind == "command":
@@ -155,6 +157,23 @@ class Recorder:
                 self.writer.sync()
             finally:
                 payload.set()
+
+    def _write_unwritten(self) -> None:
+        """Append the rows held; those the disk refused before go first, after what of them
+        reached it (samples.csv cut back to its whole rows: none is lost, none written twice).
+        An ``OSError`` keeps them all for the next attempt."""
+        try:
+            if self._reopen:
+                on_disk = self.writer.reopen_samples()
+                self._unwritten = [r for r in self._unwritten if r.sample > on_disk]
+                self._reopen = False
+            if self._unwritten:
+                self.writer.append_samples(self._unwritten)
+        except OSError:
+            self._refused = self._reopen = True
+            raise
+        self.meta.counters["samples"] += len(self._unwritten)
+        self._unwritten = []
 
     @staticmethod
     def _what(kind: str, payload) -> str:
@@ -192,26 +211,28 @@ class Recorder:
         with self._cond:
             if self._told >= len(self._failures):
                 return
+            exc = self._failures[self._told][1]  # the first: the later ones follow from it
             self._told = len(self._failures)
-            exc = self._failures[self._told - 1][1]
         raise exc
 
     def stuck(self) -> str:
         """Why the disk is not taking the record ("" while it is): more than
         :data:`DISK_STUCK_S` of samples held, or more than :data:`HELD_ROWS_MAX` rows."""
         with self._cond:
-            held_s = self._held_rows / self.rate_hz
-            if held_s <= DISK_STUCK_S and self._held_rows <= HELD_ROWS_MAX:
+            held = self.held_rows
+            held_s = held / self.rate_hz
+            if held_s <= DISK_STUCK_S and held <= HELD_ROWS_MAX:
                 return ""
-            self.stuck_reason = (f"disk not taking the record: {self._held_rows} samples "
-                                 f"({held_s:g} s, the oldest from {self._held[0]:g} s) held "
-                                 "in memory")
+            unwritten = self._unwritten  # replaced, never emptied in place, by the thread
+            oldest_s = unwritten[0].time_s if unwritten else self._held[0]
+            self.stuck_reason = (f"disk not taking the record: {held} samples ({held_s:g} s, "
+                                 f"the oldest from {oldest_s:g} s) held in memory")
             return self.stuck_reason
 
     @property
     def held_rows(self) -> int:
-        """Samples queued that the disk has not taken yet."""
-        return self._held_rows
+        """Samples queued or refused that the disk has not taken yet."""
+        return self._held_rows + len(self._unwritten)
 
     def wait_written(self, timeout_s: float | None = None) -> bool:
         """Wait until the disk has taken everything queued (at most ``timeout_s``); whether it
@@ -264,7 +285,17 @@ class Recorder:
         return problems
 
     def refusals(self) -> list[str]:
-        """The writes the disk refused that the loop was not told of, in one phrase (once)."""
+        """Once everything queued is written: the samples the disk refused tried once more,
+        with the room kept for the final record given back; then the writes it refused that
+        the loop was not told of, in one phrase (once), and whether their samples reached it
+        after all."""
+        self.wait_written()
+        if self._unwritten or self._reopen:
+            self.writer.release_reserve()
+            try:
+                self._write_unwritten()
+            except OSError:
+                pass  # said below
         with self._cond:
             untold = self._failures[self._told:]
             self._told = len(self._failures)
@@ -272,4 +303,8 @@ class Recorder:
             return []
         what, exc = untold[0]
         more = f", and {len(untold) - 1} later write(s)" if len(untold) > 1 else ""
+        if any(w.startswith("samples") for w, _ in untold):
+            kept = ("written again" if not self._unwritten else
+                    f"{len(self._unwritten)} samples could not be written")
+            return [f"the disk refused {what} ({type(exc).__name__}: {exc}){more}; {kept}"]
         return [f"recording failed for {what} ({type(exc).__name__}: {exc}){more}"]

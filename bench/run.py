@@ -554,7 +554,8 @@ class BenchRun:
                             "does (ending mkm now loses them)")
                 self.recorder.wait_written()
             problems.extend(self.recorder.refusals())
-            self.storage_failed = bool(self.recorder.stuck_reason)
+            if self.recorder.stuck_reason:
+                self.storage_failed = True
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
             status = RunStatus.FAILED

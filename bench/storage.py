@@ -549,6 +549,27 @@ class RunWriter:
             return otherwise
         return max(rows, 0)
 
+    def reopen_samples(self) -> int:
+        """After an append of samples the disk refused: samples.csv closed (what its buffer
+        still held is dropped), cut back to its last whole row, opened again; the index of the
+        last sample it holds (-1 for none), after which the refused rows are written again."""
+        f, columns = self._files["samples"]
+        try:
+            f.close()
+        except OSError:
+            pass  # the buffer the disk refused: dropped, the rows are written again
+        path = self.path / "samples.csv"
+        whole = _whole_rows_bytes(path)
+        with open(path, "r+b") as raw:
+            raw.truncate(whole)
+            raw.seek(max(0, whole - 4096))
+            lines = raw.read().splitlines()
+        self._files["samples"] = (open(path, "a", encoding="utf-8", newline=""), columns)
+        try:
+            return int(lines[-1].split(b",")[0]) if len(lines) > 1 or whole > 4096 else -1
+        except (IndexError, ValueError):  # the header alone
+            return -1
+
     def release_reserve(self) -> None:
         """Give back the room kept for the final record (:data:`RESERVE_BYTES`)."""
         release_reserve(self.path)

@@ -295,7 +295,7 @@ def test_a_disk_that_fails_the_tripping_block_keeps_the_interlocks_reason(config
     result, run = record(config, tmp_path, nan_force_at_s=5.0)
     assert result.status == "aborted" and result.exit_code == 1
     assert result.reason.startswith("force interlock: the force reading is not a number")
-    assert "; vented; recording failed for samples 50 (OSError: [Errno 28] No space left on " \
+    assert "; vented; the disk refused samples 50 (OSError: [Errno 28] No space left on " \
            "device), and " in result.reason
     assert ("AO", 0.0) in events
     assert run.meta.counters["samples"] == len(run.samples) == 50  # samples 0-49 kept
@@ -403,3 +403,52 @@ def test_the_vent_checks_own_samples_are_recorded(config, tmp_path, faults):
         assert not check["verified"] and (vent["pressure_bar"] > 0.15).all()
     else:
         assert check["verified"] and vent["pressure_bar"].is_monotonic_decreasing
+
+
+def test_an_interlock_whose_block_the_disk_refuses_once_keeps_its_samples_and_reason(
+        config, tmp_path, monkeypatch):
+    # the NaN force at 5.0 s (sample 50) trips the interlock; SIGTERM arrives while that block
+    # is read (held to the block's end), and the disk refuses the block once (EIO): the block,
+    # its interlock flag with it, was lost, and the reason did not say so. Now the block is
+    # written again after it, and the reason keeps the interlock, the disk and the signal
+    import signal
+
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.storage import RunWriter
+
+    append, refused = RunWriter.append_samples, []
+
+    def refuses_once(self, rows):
+        if any(r.sample == 50 for r in rows) and not refused:
+            refused.append(rows[0].sample)
+            raise OSError(errno.EIO, "Input/output error")
+        append(self, rows)
+
+    monkeypatch.setattr(RunWriter, "append_samples", refuses_once)
+    c = config.replace(sim={"faults": {"nan_force_at_s": 5.0}})
+    backend = SimBackend(c)
+    read = backend.read
+
+    def signalled_at_50(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 50:
+            signal.raise_signal(signal.SIGTERM)  # its handler runs before read returns
+        return block
+
+    backend.read = signalled_at_50
+    result = BenchRun(c, backend, tmp_path, handle_signals=True, notify=lambda m: None).execute()
+    run = load_run(result.path)
+    assert refused == [50]
+    assert result.status == "aborted" and result.exit_code == 128 + signal.SIGTERM
+    assert result.reason.startswith("force interlock: the force reading is not a number")
+    assert "; vented; SIGTERM received meanwhile" in result.reason
+    assert "the disk refused samples 50 (OSError: [Errno 5] Input/output error); written " \
+           "again" in result.reason
+    assert run.meta.reason == result.reason and run.meta.stop_signal == "SIGTERM"
+    s = run.samples
+    assert list(s["sample"]) == list(range(len(s)))  # none lost, none twice
+    assert s.loc[s["sample"] == 50, "flags"].tolist() == ["nonfinite|interlock"]
+    assert run.meta.counters["samples"] == len(s)
+    assert_vented_last(run)
+    assert run.meta.vent_check["verified"]
