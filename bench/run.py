@@ -61,6 +61,7 @@ from mkm.bench.worker import Acquisition, Stop
 
 EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
 STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
+VENT_WRITES = 3  # a vent write cut or refused is written again at once, this many in all
 DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before saying it waits
 
 
@@ -502,10 +503,17 @@ class BenchRun:
         revive = hasattr(self.backend, "revive")  # a device loss is tried once, then said
         gone = False  # lost, and the reset did not bring it back: nothing can be read
         failure = self._write_vent(acq)
-        if isinstance(failure, KeyboardInterrupt | StopSignal) and not (
-                acq is not None and acq.written):  # cut before the device, not failed there
-            problems.append(f"the vent command was interrupted ({type(failure).__name__}) and "
-                            "written again")
+        for _ in range(VENT_WRITES - 1):
+            if failure is None or (acq is not None and acq.written) or (
+                    isinstance(failure, DaqDisconnected) and revive):
+                break  # vented, or only its record failed, or a lost device: revived below
+            # cut before the device, or refused by it once: the muscle is still pressurised
+            if isinstance(failure, KeyboardInterrupt | StopSignal):
+                problems.append(f"the vent command was interrupted ({type(failure).__name__}) "
+                                "and written again")
+            else:
+                problems.append(f"vent command failed ({type(failure).__name__}: {failure}), "
+                                "tried again")
             failure = self._write_vent(acq)
         if failure is not None:  # the device may be gone; closing must still happen
             exc = failure

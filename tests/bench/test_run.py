@@ -502,3 +502,39 @@ def test_an_interrupt_during_the_vent_does_not_leave_the_muscle_pressurised(conf
     assert run.meta.vent_check["verified"] and run.meta.status == "aborted"
     assert run.commands["purpose"].tolist()[-2:] == ["vent", "vent"]
     assert run.commands["ok"].tolist()[-2:] == [False, True]
+
+
+def test_a_vent_write_that_fails_once_is_written_again_before_the_check(config, tmp_path):
+    # a Ctrl-C at 4.5 s (0.5 bar commanded); the stop's vent write fails once (an AO write
+    # error the device recovers from): the vent was not written again, the regulator held
+    # 0.5 bar through the whole vent check and the run asked for a vent by hand. Now it is
+    # written again at once and verified
+    from mkm.bench.backend import AOWriteFailed
+
+    backend = SimBackend(config)
+    write, read, failed = backend.write_command, backend.read, []
+
+    def fails_once_at_the_stop(volts):
+        if volts == 0.0 and backend._index >= 45 and not failed:
+            failed.append(volts)
+            raise AOWriteFailed("simulated AO write failure")
+        write(volts)
+
+    def ctrl_c_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()  # what the first SIGINT does
+        return block
+
+    backend.write_command, backend.read = fails_once_at_the_stop, ctrl_c_at_45
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    loaded = load_run(result.path)
+    assert failed and result.status == "aborted" and not result.manual_vent_required
+    assert "; vent command failed (AOWriteFailed: simulated AO write failure), tried again" \
+        in result.reason
+    assert loaded.meta.vent_check["verified"] and loaded.meta.vent_check["waited_s"] < 3.0
+    assert loaded.commands["purpose"].tolist()[-2:] == ["vent", "vent"]
+    assert loaded.commands["ok"].tolist()[-2:] == [False, True]
+    vent = loaded.samples[loaded.samples["phase"] == "vent"]
+    assert vent["sample"].iloc[0] == loaded.commands["sample"].iloc[-1]  # checked after it
