@@ -39,8 +39,9 @@ from mkm.core.records import provenance
 
 # On Windows a file another program holds open cannot be replaced (PermissionError): a virus
 # scanner, the search indexer or a cloud-sync client opens a file just written for a moment,
-# and run.json is rewritten at the end of a run seconds after its last write. The final record
-# tries again for this long before it says so.
+# and run.json is rewritten after the tare and at the end of a run, seconds after its last
+# write. Each rewrite tries again for this long before it says so (the tare's on the recorder's
+# thread: the loop does not wait for it).
 LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
 # This much sample time held for the disk (counted in samples, so a gap of lost samples is not
 # taken for a stuck disk): it is not taking the record, the run stops. A network share that
@@ -150,10 +151,10 @@ class Recorder:
         elif kind == "command":
             self.writer.append_command(payload)
         elif kind == "save":
-            self.save()
+            self._save_retrying()
         elif kind == "sync":
             try:
-                self.save()
+                self._save_retrying()
                 self.writer.sync()
             finally:
                 payload.set()
@@ -268,21 +269,26 @@ class Recorder:
             if self._refused:  # rows a full disk refused went out at close: count the disk's
                 self.meta.counters["samples"] = self.writer.samples_on_disk(
                     self.meta.counters["samples"])
+        try:
+            self._save_retrying()
+        except PermissionError as exc:
+            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc}; "
+                            f"tried {LOCKED_RETRIES + 1} times over "
+                            f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
+        except OSError as exc:
+            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
+        return problems
+
+    def _save_retrying(self) -> None:
+        """:meth:`save`, tried again while another program holds run.json open."""
         for attempt in range(LOCKED_RETRIES + 1):
             try:
                 self.save()
-                break
-            except PermissionError as exc:  # held open by another program, mostly briefly
+                return
+            except PermissionError:  # held open by another program, mostly briefly
                 if attempt == LOCKED_RETRIES:
-                    problems.append(f"run.json could not be written ({type(exc).__name__}: "
-                                    f"{exc}; tried {LOCKED_RETRIES + 1} times over "
-                                    f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
-                else:
-                    time.sleep(LOCKED_RETRY_S)
-            except OSError as exc:
-                problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
-                break
-        return problems
+                    raise
+                time.sleep(LOCKED_RETRY_S)
 
     def refusals(self) -> list[str]:
         """Once everything queued is written: the samples the disk refused tried once more,
