@@ -559,7 +559,8 @@ class BenchRun:
             if not self.recorder.wait_written(DISK_NOTICE_S):
                 self.notify(f"vented; the disk of {self.recorder.path} is not taking the record: "
                             f"{self.recorder.held_rows} samples are held in memory until it "
-                            "does (ending mkm now loses them)")
+                            "does; mkm waits (signals are noted, not obeyed: killing it, kill -9 "
+                            "or the Task Manager, loses them)")
                 self.recorder.wait_written()
             problems.extend(self.recorder.refusals())
             if self.recorder.stuck_reason:
