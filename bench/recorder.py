@@ -51,6 +51,7 @@ LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
 DISK_STUCK_S = 30.0
 HELD_ROWS_MAX = 300_000
 
+
 class Recorder:
     """Creates the run folder under ``out_root`` and records into it."""
 
@@ -113,7 +114,7 @@ class Recorder:
 
     def _write_queued(self) -> None:
         """The recorder's thread: write what is queued, in order; a write the disk refuses is
-        kept in ``_failures`` (its rows may still go out with the file's next flush)."""
+        kept in ``_failures`` (its samples are kept and written again)."""
         while True:
             with self._cond:
                 while not self._ops:
