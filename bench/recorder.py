@@ -6,8 +6,9 @@ samples, steps and commands are appended as they happen, by a thread of the reco
 acquisition loop only queues them, so a disk that hangs (a network share, a dying drive) cannot
 stop the loop, and with it every interlock, while the regulator holds its pressure. What the
 disk has not taken yet is held in memory, in order; the loop asks :meth:`Recorder.stuck` after
-every block, and more than :data:`DISK_STUCK_S` of samples (or :data:`HELD_ROWS_MAX` rows)
-held stops the run: vent first, reason "disk not taking the record".
+every block, and more than :data:`DISK_STUCK_S` of samples held with no write done for
+:data:`DISK_QUIET_S` (or more than :data:`HELD_ROWS_MAX` rows) stops the run: vent first,
+reason "disk not taking the record".
 A write the disk refused is said to the loop at its next block (:meth:`Recorder.raise_failure`)
 and in the final reason; the samples it refused are kept and written again, none lost or
 written twice. :meth:`Recorder.finish` waits for the disk to take everything held,
@@ -50,6 +51,9 @@ LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
 # fastest 10 kHz on two inputs; 300 rows, 90 kB, at the usual 10 Hz).
 DISK_STUCK_S = 30.0
 HELD_ROWS_MAX = 300_000
+# ... and with no write done for this long (wall time): a disk that writes, behind the loop in a
+# burst (the virtual clock runs hundreds of times faster than real time), is not stuck
+DISK_QUIET_S = 1.0
 
 
 class Recorder:
@@ -91,6 +95,7 @@ class Recorder:
         self._failures: list[tuple[str, OSError]] = []  # what the disk refused, in order
         self._told = 0  # failures raised to the loop (raise_failure)
         self.stuck_reason = ""  # set once the disk is found not taking the record
+        self._done_at = time.monotonic()  # when the thread last finished a write
         self._thread = threading.Thread(target=self._write_queued, name="mkm-recorder",
                                         daemon=True)
         self._thread.start()
@@ -142,6 +147,7 @@ class Recorder:
             finally:
                 with self._cond:
                     self._busy = False
+                    self._done_at = time.monotonic()
                     self._cond.notify_all()
 
     def _write(self, kind: str, payload) -> None:
@@ -219,11 +225,13 @@ class Recorder:
 
     def stuck(self) -> str:
         """Why the disk is not taking the record ("" while it is): more than
-        :data:`DISK_STUCK_S` of samples held, or more than :data:`HELD_ROWS_MAX` rows."""
+        :data:`DISK_STUCK_S` of samples held with no write done for :data:`DISK_QUIET_S`, or
+        more than :data:`HELD_ROWS_MAX` rows."""
         with self._cond:
             held = self.held_rows
             held_s = held / self.rate_hz
-            if held_s <= DISK_STUCK_S and held <= HELD_ROWS_MAX:
+            quiet = not self._busy or time.monotonic() - self._done_at >= DISK_QUIET_S
+            if held <= HELD_ROWS_MAX and not (held_s > DISK_STUCK_S and quiet):
                 return ""
             unwritten = self._unwritten  # replaced, never emptied in place, by the thread
             oldest_s = unwritten[0].time_s if unwritten else self._held[0]

@@ -124,6 +124,7 @@ def test_a_disk_that_hangs_too_long_stops_the_run_vented(config, tmp_path, monke
     from mkm.bench import recorder
 
     monkeypatch.setattr(recorder, "DISK_STUCK_S", 5.0)
+    monkeypatch.setattr(recorder, "DISK_QUIET_S", 0.0)  # counted in samples alone
     release, hung = _hung_disk(monkeypatch, 0)
     worker, vented, at, out = _run_in_thread(config, tmp_path, monkeypatch)
     try:
