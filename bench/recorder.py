@@ -95,7 +95,8 @@ class Recorder:
         self._failures: list[tuple[str, OSError]] = []  # what the disk refused, in order
         self._told = 0  # failures raised to the loop (raise_failure)
         self.stuck_reason = ""  # set once the disk is found not taking the record
-        self._done_at = time.monotonic()  # when the thread last finished a write
+        # when the thread last finished a write, or was given one while it had none
+        self._done_at = time.monotonic()
         self._thread = threading.Thread(target=self._write_queued, name="mkm-recorder",
                                         daemon=True)
         self._thread.start()
@@ -111,6 +112,8 @@ class Recorder:
 
     def _put(self, kind: str, payload=None) -> None:
         with self._cond:
+            if not self._ops and not self._busy:  # the disk is waited for from now
+                self._done_at = time.monotonic()
             if kind == "samples":
                 self._held.append(payload[0].time_s)
                 self._held_rows += len(payload)
@@ -230,7 +233,7 @@ class Recorder:
         with self._cond:
             held = self.held_rows
             held_s = held / self.rate_hz
-            quiet = not self._busy or time.monotonic() - self._done_at >= DISK_QUIET_S
+            quiet = time.monotonic() - self._done_at >= DISK_QUIET_S
             if held <= HELD_ROWS_MAX and not (held_s > DISK_STUCK_S and quiet):
                 return ""
             unwritten = self._unwritten  # replaced, never emptied in place, by the thread
