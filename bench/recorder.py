@@ -2,14 +2,25 @@
 true while the run goes (pymeasure's recorder, beside the worker and the procedure).
 
 run.json is written first when the folder is made, rewritten after the tare and at the end;
-samples, steps and commands are appended as they happen. :meth:`Recorder.finish` writes the
-outcome and syncs every file; it never raises, so a full disk cannot hide the outcome of the
-vent: it returns what went wrong.
+samples, steps and commands are appended as they happen, by a thread of the recorder's own: the
+acquisition loop only queues them, so a disk that hangs (a network share, a dying drive) cannot
+stop the loop, and with it every interlock, while the regulator holds its pressure. What the
+disk has not taken yet is held in memory, in order; the loop asks :meth:`Recorder.stuck` after
+every block, and more than :data:`DISK_STUCK_S` of samples held with no write done for
+:data:`DISK_QUIET_S` (or more than :data:`HELD_ROWS_MAX` rows) stops the run: vent first,
+reason "disk not taking the record".
+A write the disk refused is said to the loop at its next block (:meth:`Recorder.raise_failure`)
+and in the final reason; the samples it refused are kept and written again, none lost or
+written twice. :meth:`Recorder.finish` waits for the disk to take everything held,
+then writes the outcome and syncs every file; it never raises, so a full disk cannot hide the
+outcome of the vent: it returns what went wrong.
 """
 
 from __future__ import annotations
 
+import collections
 import dataclasses
+import threading
 import time
 from pathlib import Path
 
@@ -29,9 +40,21 @@ from mkm.core.records import provenance
 
 # On Windows a file another program holds open cannot be replaced (PermissionError): a virus
 # scanner, the search indexer or a cloud-sync client opens a file just written for a moment,
-# and run.json is rewritten at the end of a run seconds after its last write. The final record
-# tries again for this long before it says so.
+# and run.json is rewritten after the tare and at the end of a run, seconds after its last
+# write. Each rewrite tries again for this long before it says so (the tare's on the recorder's
+# thread: the loop does not wait for it).
 LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
+# This much sample time held for the disk (counted in samples, so a gap of lost samples is not
+# taken for a stuck disk): it is not taking the record, the run stops. A network share that
+# stalls for seconds is ridden through; what is held meanwhile is in memory, never more than
+# HELD_ROWS_MAX rows (a row is 296 bytes in memory, measured: 90 MB, 30 s at the USB-6001's
+# fastest 10 kHz on two inputs; 300 rows, 90 kB, at the usual 10 Hz).
+DISK_STUCK_S = 30.0
+HELD_ROWS_MAX = 300_000
+# ... and with no write done for this long (wall time): a disk that writes, behind the loop in a
+# burst (the virtual clock runs hundreds of times faster than real time), is not stuck
+DISK_QUIET_S = 1.0
+
 
 class Recorder:
     """Creates the run folder under ``out_root`` and records into it."""
@@ -58,6 +81,25 @@ class Recorder:
             simulated=bool(info.simulated))
         self.writer = RunWriter(out_root, self.meta, config.effective_text())  # run.json first
         self._refused = False  # an append of samples failed (the disk)
+        # rows taken from the queue and not on disk yet: a block being written, or rows the disk
+        # refused, written again first with the next block (samples.csv cut back to its whole
+        # rows before, _reopen), and once more at the end (refusals)
+        self._unwritten: list[Sample] = []
+        self._reopen = False
+        self._cond = threading.Condition()
+        self._ops: collections.deque = collections.deque()  # (kind, payload), in order
+        self._busy = False  # the thread is writing what it took from _ops
+        self._held: collections.deque = collections.deque()  # first time_s of each held block
+        self._held_rows = 0
+        self.rate_hz = config.daq.sample_rate_hz
+        self._failures: list[tuple[str, OSError]] = []  # what the disk refused, in order
+        self._told = 0  # failures raised to the loop (raise_failure)
+        self.stuck_reason = ""  # set once the disk is found not taking the record
+        # when the thread last finished a write, or was given one while it had none
+        self._done_at = time.monotonic()
+        self._thread = threading.Thread(target=self._write_queued, name="mkm-recorder",
+                                        daemon=True)
+        self._thread.start()
 
     @property
     def path(self) -> Path:
@@ -66,20 +108,106 @@ class Recorder:
     def save(self) -> None:
         self.writer.write_meta(self.meta)
 
-    def samples(self, rows: list[Sample]) -> None:
+    # the queue: the loop puts, the thread writes ---------------------------------------------
+
+    def _put(self, kind: str, payload=None) -> None:
+        with self._cond:
+            if not self._ops and not self._busy:  # the disk is waited for from now
+                self._done_at = time.monotonic()
+            if kind == "samples":
+                self._held.append(payload[0].time_s)
+                self._held_rows += len(payload)
+            self._ops.append((kind, payload))
+            self._cond.notify_all()
+
+    def _write_queued(self) -> None:
+        """The recorder's thread: write what is queued, in order; a write the disk refuses is
+        kept in ``_failures`` (its samples are kept and written again)."""
+        while True:
+            with self._cond:
+                while not self._ops:
+                    self._cond.wait()
+                kind, payload = self._ops.popleft()
+                self._busy = True
+                if kind == "samples":  # from the queue to the rows being written
+                    self._held.popleft()
+                    self._held_rows -= len(payload)
+                    self._unwritten.extend(payload)
+            if kind == "stop":
+                with self._cond:
+                    self._busy = False
+                    self._cond.notify_all()
+                return
+            try:
+                self._write(kind, payload)
+            except OSError as exc:
+                with self._cond:
+                    self._failures.append((self._what(kind, payload), exc))
+            except Exception as exc:  # a bug: said in the reason, not lost
+                with self._cond:
+                    self._failures.append((self._what(kind, payload), OSError(
+                        f"{type(exc).__name__}: {exc}")))
+            finally:
+                with self._cond:
+                    self._busy = False
+                    self._done_at = time.monotonic()
+                    self._cond.notify_all()
+
+    def _write(self, kind: str, payload) -> None:
+        if kind == "samples":  # the payload is in _unwritten already
+            self._write_unwritten()
+        elif kind == "step":
+            self.writer.append_step(payload)
+        elif kind == "command":
+            self.writer.append_command(payload)
+        elif kind == "save":
+            self._save_retrying()
+        elif kind == "sync":
+            try:
+                self._save_retrying()
+                self.writer.sync()
+            finally:
+                payload.set()
+
+    def _write_unwritten(self) -> None:
+        """Append the rows held; those the disk refused before go first, after what of them
+        reached it (samples.csv cut back to its whole rows: none is lost, none written twice).
+        An ``OSError`` keeps them all for the next attempt."""
         try:
-            self.writer.append_samples(rows)
+            if self._reopen:
+                on_disk = self.writer.reopen_samples()
+                self._unwritten = [r for r in self._unwritten if r.sample > on_disk]
+                self._reopen = False
+            if self._unwritten:
+                self.writer.append_samples(self._unwritten)
         except OSError:
-            self._refused = True  # buffered rows may still reach the disk at close
+            self._refused = self._reopen = True
             raise
-        self.meta.counters["samples"] += len(rows)
+        self.meta.counters["samples"] += len(self._unwritten)
+        self._unwritten = []
+
+    @staticmethod
+    def _what(kind: str, payload) -> str:
+        if kind == "samples":
+            first, last = payload[0].sample, payload[-1].sample
+            return f"samples {first}" if first == last else f"samples {first}-{last}"
+        if kind == "step":
+            return f"step {payload.step}"
+        if kind == "command":
+            return f"the {payload.purpose} command of {payload.command_bar:g} bar"
+        return "run.json"
+
+    def samples(self, rows: list[Sample]) -> None:
+        """Queue ``rows`` for samples.csv (never waits for the disk)."""
+        if rows:
+            self._put("samples", list(rows))
 
     def step(self, record: StepRecord) -> None:
-        self.writer.append_step(record)
+        self._put("step", record)
         self.meta.steps_done += 1
 
     def command(self, record: CommandRecord) -> None:
-        self.writer.append_command(record)
+        self._put("command", record)
 
     def gap(self, gap: Gap) -> None:
         self.meta.gaps.append(gap)
@@ -87,19 +215,60 @@ class Recorder:
 
     def tare(self, tare: dict) -> None:
         self.meta.tare = tare
-        self.save()
+        self._put("save")
 
-    def mark(self, status: RunStatus, reason: str) -> None:
+    def raise_failure(self) -> None:
+        """Raise the first write the disk refused that the loop has not been told of."""
+        with self._cond:
+            if self._told >= len(self._failures):
+                return
+            exc = self._failures[self._told][1]  # the first: the later ones follow from it
+            self._told = len(self._failures)
+        raise exc
+
+    def stuck(self) -> str:
+        """Why the disk is not taking the record ("" while it is): more than
+        :data:`DISK_STUCK_S` of samples held with no write done for :data:`DISK_QUIET_S`, or
+        more than :data:`HELD_ROWS_MAX` rows."""
+        with self._cond:
+            held = self.held_rows
+            held_s = held / self.rate_hz
+            quiet = time.monotonic() - self._done_at >= DISK_QUIET_S
+            if held <= HELD_ROWS_MAX and not (held_s > DISK_STUCK_S and quiet):
+                return ""
+            unwritten = self._unwritten  # replaced, never emptied in place, by the thread
+            oldest_s = unwritten[0].time_s if unwritten else self._held[0]
+            self.stuck_reason = (f"disk not taking the record: {held} samples ({held_s:g} s, "
+                                 f"the oldest from {oldest_s:g} s) held in memory")
+            return self.stuck_reason
+
+    @property
+    def held_rows(self) -> int:
+        """Samples queued or refused that the disk has not taken yet."""
+        return self._held_rows + len(self._unwritten)
+
+    def wait_written(self, timeout_s: float | None = None) -> bool:
+        """Wait until the disk has taken everything queued (at most ``timeout_s``); whether it
+        has."""
+        with self._cond:
+            return self._cond.wait_for(lambda: not self._ops and not self._busy, timeout_s)
+
+    def mark(self, status: RunStatus, reason: str, timeout_s: float | None = None) -> None:
         """Write the outcome known so far into run.json and sync the rows: the books kept before
-        a step that the process may not outlive (a closed Windows console's vent check)."""
+        a step that the process may not outlive (a closed Windows console's vent check); waits
+        at most ``timeout_s`` for the disk."""
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
-        self.save()
-        self.writer.sync()
+        done = threading.Event()
+        self._put("sync", done)
+        done.wait(timeout_s)
 
     def finish(self, status: RunStatus, reason: str) -> list[str]:
         """Record the outcome, sync and close every file; return the problems met (never
         raises: the caller must still be able to say where the run is)."""
+        self.wait_written()  # everything held, once the disk takes it
+        self._put("stop")
+        self._thread.join()
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
         problems = []
@@ -112,18 +281,48 @@ class Recorder:
             if self._refused:  # rows a full disk refused went out at close: count the disk's
                 self.meta.counters["samples"] = self.writer.samples_on_disk(
                     self.meta.counters["samples"])
+        try:
+            self._save_retrying()
+        except PermissionError as exc:
+            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc}; "
+                            f"tried {LOCKED_RETRIES + 1} times over "
+                            f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
+        except OSError as exc:
+            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
+        return problems
+
+    def _save_retrying(self) -> None:
+        """:meth:`save`, tried again while another program holds run.json open."""
         for attempt in range(LOCKED_RETRIES + 1):
             try:
                 self.save()
-                break
-            except PermissionError as exc:  # held open by another program, mostly briefly
+                return
+            except PermissionError:  # held open by another program, mostly briefly
                 if attempt == LOCKED_RETRIES:
-                    problems.append(f"run.json could not be written ({type(exc).__name__}: "
-                                    f"{exc}; tried {LOCKED_RETRIES + 1} times over "
-                                    f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
-                else:
-                    time.sleep(LOCKED_RETRY_S)
-            except OSError as exc:
-                problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
-                break
-        return problems
+                    raise
+                time.sleep(LOCKED_RETRY_S)
+
+    def refusals(self) -> list[str]:
+        """Once everything queued is written: the samples the disk refused tried once more,
+        with the room kept for the final record given back; then the writes it refused that
+        the loop was not told of, in one phrase (once), and whether their samples reached it
+        after all."""
+        self.wait_written()
+        if self._unwritten or self._reopen:
+            self.writer.release_reserve()
+            try:
+                self._write_unwritten()
+            except OSError:
+                pass  # said below
+        with self._cond:
+            untold = self._failures[self._told:]
+            self._told = len(self._failures)
+        if not untold:
+            return []
+        what, exc = untold[0]
+        more = f", and {len(untold) - 1} later write(s)" if len(untold) > 1 else ""
+        if any(w.startswith("samples") for w, _ in untold):
+            kept = ("written again" if not self._unwritten else
+                    f"{len(self._unwritten)} samples could not be written")
+            return [f"the disk refused {what} ({type(exc).__name__}: {exc}){more}; {kept}"]
+        return [f"recording failed for {what} ({type(exc).__name__}: {exc}){more}"]

@@ -13,7 +13,8 @@ Safety, in every exit path:
 - a bench left pressurised by a run that died without venting is vented first, and said
   (:mod:`mkm.bench.unvented`);
 - the pressure command is clamped to ``regulator.max_pressure_bar``; the force and pressure
-  interlocks stop the run (:mod:`mkm.bench.worker`);
+  interlocks stop the run (:mod:`mkm.bench.worker`), whose loop never waits for the disk
+  (:mod:`mkm.bench.recorder` writes behind it; a disk not taking the record stops the run);
 - the first Ctrl-C stops at the next block boundary (0.1 s at the default one-sample blocks);
   a second Ctrl-C, SIGTERM, SIGHUP, SIGBREAK or a closed Windows console stop at once
   (:mod:`mkm.bench.signals`); either way, and on any error, ``shutdown`` commands the vent, closes
@@ -60,6 +61,8 @@ from mkm.bench.worker import Acquisition, Stop
 
 EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
 STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
+VENT_WRITES = 3  # a vent write cut or refused is written again at once, this many in all
+DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before saying it waits
 
 
 def notify_stderr(message: str) -> None:
@@ -440,10 +443,9 @@ class BenchRun:
         meta.manual_vent_required = True
         pending = ("the vent was commanded; its check had not ended when Windows was about to "
                    "end the process: VENT BY HAND or verify it with `mkm vent`")
-        try:
-            self.recorder.mark(status, "; ".join(filter(None, [reason, *problems, pending])))
-        except OSError:
-            pass  # the disk: the final record meets it again and says so
+        # a disk that hangs gets until the grace deadline; the final record says what it did
+        self.recorder.mark(status, "; ".join(filter(None, [reason, *problems, pending])),
+                           max(self.signals.grace_deadline() - time.monotonic(), 0.0))
 
     @staticmethod
     def _drain(acq: Acquisition) -> list[str]:
@@ -454,7 +456,7 @@ class BenchRun:
             acq.drain()
         except BenchError:
             return []
-        except Exception as exc:  # the disk, or a device half closed by a failed revive
+        except BaseException as exc:  # a device half closed by a failed revive, a Ctrl-C
             return [f"the samples acquired before the stop could not be recorded "
                     f"({type(exc).__name__}: {exc})"]
         return []
@@ -481,6 +483,17 @@ class BenchRun:
             return VentCheck(False, float("nan"), below, 0.0, "monitor",
                              f"{type(exc).__name__}: {exc}")
 
+    def _write_vent(self, acq: Acquisition | None) -> BaseException | None:
+        """Command the vent; what stopped it, or None."""
+        try:
+            if acq is not None:
+                acq.command(0.0, "vent")
+            else:
+                self.backend.write_command(0.0)
+        except BaseException as exc:  # judged by the shutdown
+            return exc
+        return None
+
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
                  signal_number=None) -> tuple[RunStatus, str]:
         """Vent, verify the vent, close the device, record the outcome. Never raises; returns
@@ -489,12 +502,21 @@ class BenchRun:
         acq = self.acquisition
         revive = hasattr(self.backend, "revive")  # a device loss is tried once, then said
         gone = False  # lost, and the reset did not bring it back: nothing can be read
-        try:
-            if acq is not None:
-                acq.command(0.0, "vent")
+        failure = self._write_vent(acq)
+        for _ in range(VENT_WRITES - 1):
+            if failure is None or (acq is not None and acq.written) or (
+                    isinstance(failure, DaqDisconnected) and revive):
+                break  # vented, or only its record failed, or a lost device: revived below
+            # cut before the device, or refused by it once: the muscle is still pressurised
+            if isinstance(failure, KeyboardInterrupt | StopSignal):
+                problems.append(f"the vent command was interrupted ({type(failure).__name__}) "
+                                "and written again")
             else:
-                self.backend.write_command(0.0)
-        except BaseException as exc:  # the device may be gone; closing must still happen
+                problems.append(f"vent command failed ({type(failure).__name__}: {failure}), "
+                                "tried again")
+            failure = self._write_vent(acq)
+        if failure is not None:  # the device may be gone; closing must still happen
+            exc = failure
             if acq is not None and acq.written:  # written; only its record failed
                 problems.append(f"recording the vent failed ({type(exc).__name__}: {exc})")
             elif isinstance(exc, DaqDisconnected) and revive:
@@ -526,7 +548,23 @@ class BenchRun:
         except BaseException as exc:
             problems.append(f"closing the device failed ({type(exc).__name__}: {exc})")
         for observer in self._observers:
-            observer.close()
+            try:
+                observer.close()
+            except BaseException:  # a plot window gone: nothing to record
+                pass
+        if self.signals.noted:  # signals during the stop: said, never obeyed mid-vent
+            problems.append(f"{', '.join(dict.fromkeys(self.signals.noted))} received while "
+                            "stopping: noted, the vent and the record went first")
+        if self.recorder is not None:  # everything held reaches the disk before the outcome
+            if not self.recorder.wait_written(DISK_NOTICE_S):
+                self.notify(f"vented; the disk of {self.recorder.path} is not taking the record: "
+                            f"{self.recorder.held_rows} samples are held in memory until it "
+                            "does; mkm waits (signals are noted, not obeyed: killing it, kill -9 "
+                            "or the Task Manager, loses them)")
+                self.recorder.wait_written()
+            problems.extend(self.recorder.refusals())
+            if self.recorder.stuck_reason:
+                self.storage_failed = True
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
             status = RunStatus.FAILED

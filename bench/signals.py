@@ -7,7 +7,9 @@ goes, :class:`StopSignals` handles:
 - the first ``SIGINT`` (Ctrl-C): stop at the next block boundary (a safe point);
 - a second ``SIGINT``, ``SIGTERM`` (kill, service stop), ``SIGHUP`` (terminal or SSH session
   closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows): raise :class:`StopSignal` at once, which
-  unwinds to the run's shutdown: vent, close the device, record. The exit status is 128 + N;
+  unwinds to the run's shutdown: vent, close the device, record. The exit status is 128 + N.
+  Once it is raised, a further signal is only noted (the run's reason names it): nothing cuts
+  the vent or the record;
 - on Windows, closing the console window arrives as a console control event
   (``CTRL_CLOSE_EVENT``, ``SetConsoleCtrlHandler``), not as a signal, on a thread Windows makes
   for it: the handler turns it into ``SIGBREAK`` in the main thread and holds the process until
@@ -69,8 +71,10 @@ class StopSignals:
     """Install the stop handlers for the duration of a ``with`` block (main thread only).
 
     ``stop_requested_at`` is the ``time.monotonic()`` of the first Ctrl-C (None before), and
-    ``signal_at`` that of the last stop signal received. :meth:`hold` ignores further signals
-    while the shutdown vents and records; :meth:`done` releases a held Windows console handler.
+    ``signal_at`` that of the stop signal raised. Once a stop signal has been raised (or held
+    for the end of a block), and after :meth:`hold`, a further signal is only noted in
+    ``noted``: nothing interrupts the vent and the record; :meth:`done` releases a held Windows
+    console handler.
     ``linger`` (default :data:`LINGER`): the stop signals stay ignored after the block.
     """
 
@@ -90,6 +94,10 @@ class StopSignals:
         self.active = False
         self._deferring = False
         self._deferred: StopSignal | None = None
+        # set as the first stop signal is raised (or held for a block's end), and by hold():
+        # the stop has begun, and every later signal is noted here, never raised
+        self.stopping = False
+        self.noted: list[str] = []
 
     def __enter__(self) -> StopSignals:
         if threading.current_thread() is not threading.main_thread():
@@ -114,6 +122,9 @@ class StopSignals:
         self.active = False
 
     def _handle(self, signum, frame) -> None:
+        if self.stopping:  # a stop is under way: this one cannot cut its vent or its record
+            self.noted.append(signal.Signals(signum).name)
+            return
         now = time.monotonic()
         if signum == signal.SIGINT and self.stop_requested_at is None:
             self.stop_requested_at = now
@@ -122,8 +133,9 @@ class StopSignals:
             return
         self.signal_at = now
         detail = "second Ctrl-C" if signum == signal.SIGINT else (self.console_event or "")
+        self.stopping = True  # from here on, a further signal is only noted
         if self._deferring:
-            self._deferred = self._deferred or StopSignal(signum, detail)
+            self._deferred = StopSignal(signum, detail)
             return
         raise StopSignal(signum, detail)
 
@@ -145,9 +157,8 @@ class StopSignals:
                 raise stop
 
     def hold(self) -> None:
-        """Ignore every stop signal from now on (the shutdown must not be cut)."""
-        for signum in self._previous:
-            signal.signal(signum, signal.SIG_IGN)
+        """From now on a stop signal is only noted (the shutdown must not be cut)."""
+        self.stopping = True
 
     def done(self) -> None:
         self._finished.set()

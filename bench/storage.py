@@ -11,9 +11,11 @@ One folder per run, named ``<UTC time>_<muscle id>``:
 - ``commands.csv``: one :class:`CommandRecord` per regulator command, with whether the write
   succeeded.
 
-Rows are flushed to the operating system after every block, so a run killed at any moment keeps
-every sample read before its last block. ``fsync`` (which costs milliseconds) runs for run.json
-and at close: it guards against power loss, not against a dying process.
+Rows are flushed to the operating system as they are appended (a run's by the thread of
+:class:`mkm.bench.recorder.Recorder`, a few blocks behind its loop at most while the disk takes
+them), so a run killed at any moment keeps every sample appended. ``fsync`` (which costs
+milliseconds) runs for run.json and at close: it guards against power loss, not against a dying
+process.
 
 :func:`load_run` reads a folder back (samples loaded on first use); :func:`aggregate_samples`
 streams ``samples.csv`` into time bins with bounded memory, for long runs (a 24 h run at 10 Hz
@@ -546,6 +548,27 @@ class RunWriter:
         except OSError:
             return otherwise
         return max(rows, 0)
+
+    def reopen_samples(self) -> int:
+        """After an append of samples the disk refused: samples.csv closed (what its buffer
+        still held is dropped), cut back to its last whole row, opened again; the index of the
+        last sample it holds (-1 for none), after which the refused rows are written again."""
+        f, columns = self._files["samples"]
+        try:
+            f.close()
+        except OSError:
+            pass  # the buffer the disk refused: dropped, the rows are written again
+        path = self.path / "samples.csv"
+        whole = _whole_rows_bytes(path)
+        with open(path, "r+b") as raw:
+            raw.truncate(whole)
+            raw.seek(max(0, whole - 4096))
+            lines = raw.read().splitlines()
+        self._files["samples"] = (open(path, "a", encoding="utf-8", newline=""), columns)
+        try:
+            return int(lines[-1].split(b",")[0]) if len(lines) > 1 or whole > 4096 else -1
+        except (IndexError, ValueError):  # the header alone
+            return -1
 
     def release_reserve(self) -> None:
         """Give back the room kept for the final record (:data:`RESERVE_BYTES`)."""

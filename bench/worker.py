@@ -5,7 +5,8 @@ regulator, and trips the interlocks (pymeasure's worker, beside the procedure in
 Interlocks, checked on every sample; each stops the run (:class:`Stop`, status ``aborted``)
 after commanding the vent, which goes out as soon as the block holding the tripping sample is
 read: before that block is written to samples.csv, shown or plotted (a slow or full disk
-cannot delay it, nor take the interlock's reason from the run):
+cannot delay it, nor take the interlock's reason from the run; the loop never waits for the
+disk, :mod:`mkm.bench.recorder` writes behind it):
 
 - force: ``|force| >= safety.force_limit_fraction x capacity``, a reading within 2 LSB of a rail
   (clipped), or a non-finite force (``abs(nan) >= limit`` is False, so NaN is tested apart);
@@ -22,6 +23,9 @@ cannot delay it, nor take the interlock's reason from the run):
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
   of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
+
+- disk: the run folder's disk not taking the record for ``recorder.DISK_STUCK_S`` of sample
+  time (the samples held in memory are written when it returns); the run is ``failed``.
 
 - reading: a read that times out while a pressure is commanded (at 0 bar, ``daq.read_retries``
   timeouts in a row are retried); the run is ``failed``.
@@ -134,7 +138,13 @@ class Acquisition:
                     self.next_index = block.first_index + len(block.volts)
                     if trips:  # acts first, keeps books after: the vent before the rows
                         tripped = self._vent_for(*trips[0])
-                    self._record(rows, tripped)
+                    self.recorder.samples(rows)  # queued: the disk is never waited for here
+                    if tripped is None:
+                        stuck = self.recorder.stuck()
+                        if stuck:  # the samples held in memory are kept; the run stops
+                            tripped = self._vent_for(stuck, RunStatus.FAILED)
+                        else:
+                            self.recorder.raise_failure()
                 break
             except StopSignal as sig:  # held through the block; the interlock's reason stays
                 if tripped is None:
@@ -173,18 +183,6 @@ class Acquisition:
         if stop is not None:
             raise stop
         return rows
-
-    def _record(self, rows: list[Sample], tripped: Stop | None) -> None:
-        """Record a block's rows; after an interlock's vent (``tripped``) a disk that fails
-        them is added to the interlock's reason, which stays the run's."""
-        try:
-            self.recorder.samples(rows)
-        except OSError as exc:
-            if tripped is None:
-                raise
-            raise Stop(tripped.status, f"{tripped.reason}; the samples of the block that "
-                       f"tripped it could not be recorded ({type(exc).__name__}: {exc})") \
-                from exc
 
     def _overflowed(self, exc: BufferOverflow) -> None:
         """Restart after a buffer overflow and record the gap of the samples lost."""

@@ -48,8 +48,8 @@ def one_trial(regulator: str, event_at_s: float, out: Path) -> dict:
     marks: list[float] = []
     mark = Recorder.mark
 
-    def timed_mark(self, status, reason):
-        mark(self, status, reason)
+    def timed_mark(self, status, reason, *wait):
+        mark(self, status, reason, *wait)
         marks.append(time.monotonic())
 
     seen: dict = {}

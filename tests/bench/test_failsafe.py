@@ -6,6 +6,7 @@ per finding; each failed before the fix.
 import errno
 import json
 import os
+import re
 import sys
 from pathlib import Path
 
@@ -414,14 +415,15 @@ def test_a_run_folder_deleted_mid_run_stops_the_run(config, tmp_path, monkeypatc
 
     def tare_then_delete(self, values):
         tare(self, values)
+        self.wait_written()  # recorded, then deleted
         shutil.rmtree(self.path)
 
     monkeypatch.setattr(Recorder, "tare", tare_then_delete)
     written = _commands_of_vents(monkeypatch)
     result = acquire(config, out_root=tmp_path, **QUIET)
     assert result.status == "failed" and result.exit_code == 2
-    assert "commands.csv was deleted while recording (its rows went with it): the run folder " \
-           "was removed" in result.reason
+    assert re.search(r"(samples|commands)\.csv was deleted while recording \(its rows went "
+                     r"with it\): the run folder was removed", result.reason)
     assert written[-2:] == [0.0, 0.0]  # the step's command went out, then the vent, then close
     meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
     assert meta["status"] == "failed" and meta["vent_check"]["verified"]

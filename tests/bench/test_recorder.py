@@ -34,3 +34,144 @@ def test_disk_full_during_a_run_vents_syncs_and_prints_the_run(tmp_path, capsys,
     assert run.status == "failed" and len(run.samples) == 30  # every sample written is kept
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
     assert calls["closed"] == 1  # synced and closed
+
+
+# a disk that hangs: the loop never waits for it ----------------------------------------------
+
+def _hung_disk(monkeypatch, from_sample):
+    """samples.csv's appends block (a network share that hangs) from the block holding
+    ``from_sample`` until ``release`` is set; ``hung`` says the disk is hanging."""
+    import threading
+
+    release, hung = threading.Event(), threading.Event()
+    append = RunWriter.append_samples
+
+    def blocking(self, rows):
+        if rows[-1].sample >= from_sample and not release.is_set():
+            hung.set()
+            release.wait(120)  # a net under a broken fix, never reached when it works
+        append(self, rows)
+
+    monkeypatch.setattr(RunWriter, "append_samples", blocking)
+    return release, hung
+
+
+def _run_in_thread(config, tmp_path, monkeypatch):
+    """``acquire`` in a thread of its own; the first vent after a pressure is reported through
+    ``vented``, with the device's sample clock at it and the rows samples.csv held then."""
+    import threading
+
+    from mkm.bench.run import acquire
+    from mkm.bench.sim import SimBackend
+
+    vented, at, out = threading.Event(), {}, {}
+    write = SimBackend.write_command
+
+    def spy(self, volts):
+        write(self, volts)
+        if volts > 0:
+            at["pressurised"] = True
+        elif at.get("pressurised") and not vented.is_set():
+            at["sample"] = self._head
+            (csv,) = Path(tmp_path).glob("*/samples.csv")
+            at["rows_on_disk"] = len(csv.read_text(encoding="utf-8").splitlines()) - 1
+            vented.set()
+
+    monkeypatch.setattr(SimBackend, "write_command", spy)
+    worker = threading.Thread(target=lambda: out.update(result=acquire(
+        config, out_root=tmp_path, notify=lambda m: None)), daemon=True)
+    worker.start()
+    return worker, vented, at, out
+
+
+def test_an_over_pressure_while_the_disk_hangs_is_vented_at_once(config, tmp_path, monkeypatch):
+    # the run folder's disk hangs from the first sample; the regulator overshoots 0.14 bar over
+    # its 2.5 bar command (max_pressure_bar 2.5): above 2.55 bar for more than 1 s is an
+    # over-pressure. The loop used to block in the write, so nothing was watched or vented
+    # until the disk came back; now the vent goes out at the sample it does with a good disk
+    from mkm.bench.run import acquire
+
+    c = config.replace(sequence={"pressures_bar": (2.5,)},
+                       sim={"faults": {"overshoot_bar": 0.14}})
+    reference = load_run(acquire(c, out_root=tmp_path / "reference",
+                                 notify=lambda m: None).path)
+    normal = reference.commands[reference.commands["purpose"] == "interlock vent"]
+    assert reference.status == "failed" and len(normal) == 1
+    release, hung = _hung_disk(monkeypatch, 0)
+    worker, vented, at, out = _run_in_thread(c, tmp_path / "runs", monkeypatch)
+    try:
+        assert vented.wait(60), "the loop waited for the hung disk: nothing was vented"
+        assert at["rows_on_disk"] == 0 and not release.is_set()  # vented, the disk hung
+        assert at["sample"] == normal["sample"].iloc[0]  # the same sample as with a good disk
+    finally:
+        release.set()
+        worker.join(120)
+    result = out["result"]
+    run = load_run(result.path)
+    assert result.status == "failed" and result.reason.startswith("over-pressure interlock")
+    assert run.meta.reason == result.reason
+    s = run.samples
+    assert list(s["sample"]) == list(range(len(s)))  # every sample held reached the disk
+    assert run.meta.counters["samples"] == len(s) > normal["sample"].iloc[0]
+    tripped = s[s["flags"].str.contains("interlock")]
+    assert tripped["sample"].tolist() == [normal["sample"].iloc[0] - 1]
+
+
+def test_a_disk_that_hangs_too_long_stops_the_run_vented(config, tmp_path, monkeypatch):
+    # the disk hangs from the first sample and does not come back within DISK_STUCK_S (5 s
+    # here) of sample time: the run vents and stops with the reason; once the disk returns,
+    # every sample held in memory is written and run.json says why
+    from mkm.bench import recorder
+
+    monkeypatch.setattr(recorder, "DISK_STUCK_S", 5.0)
+    monkeypatch.setattr(recorder, "DISK_QUIET_S", 0.0)  # counted in samples alone
+    release, hung = _hung_disk(monkeypatch, 0)
+    worker, vented, at, out = _run_in_thread(config, tmp_path, monkeypatch)
+    try:
+        assert vented.wait(60), "the loop waited for the hung disk: nothing was vented"
+        assert at["rows_on_disk"] == 0 and not release.is_set()
+        # held from sample 0: stuck once more than 5 s of samples are held, at sample 50
+        # (51 samples); the vent is written after that block, at sample 51 by the device's clock
+        assert at["sample"] == 51
+    finally:
+        release.set()
+        worker.join(120)
+    result = out["result"]
+    run = load_run(result.path)
+    assert result.status == "failed" and result.exit_code == 2
+    assert result.reason.startswith("disk not taking the record: 51 samples (5.1 s, the oldest "
+                                    "from 0 s) held in memory; vented")
+    assert run.meta.reason == result.reason and run.meta.vent_check["verified"]
+    s = run.samples
+    assert list(s["sample"]) == list(range(len(s))) and s["sample"].iloc[-1] > 51
+    assert run.meta.counters["samples"] == len(s)
+    assert run.commands["purpose"].tolist()[-2:] == ["interlock vent", "vent"]
+
+
+def test_run_json_held_open_at_the_tare_is_tried_again(config, tmp_path, monkeypatch):
+    # Windows: a virus scanner or the indexer holding run.json as the tare rewrites it: the
+    # final record tried again, the tare's rewrite did not, and the run failed (exit 2) with
+    # the muscle never pressurised. Now it is tried again as well (by the recorder's thread:
+    # the loop does not wait for it)
+    import os
+
+    from mkm.bench import recorder
+    from mkm.bench.run import acquire
+
+    monkeypatch.setattr(recorder, "LOCKED_RETRY_S", 0.0)
+    replace, written, refused = os.replace, [], []
+
+    def held_open(source, target):
+        if str(target).endswith("run.json"):
+            written.append(target)
+        if str(target).endswith("run.json") and len(written) in (2, 3):  # the tare's
+            refused.append(target)
+            raise PermissionError(13, "The process cannot access the file because it is "
+                                  "being used by another process", str(target))
+        return replace(source, target)
+
+    monkeypatch.setattr(os, "replace", held_open)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert len(refused) == 2  # the tare's rewrite, twice
+    assert load_run(result.path).meta.tare["n"] > 0

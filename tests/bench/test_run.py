@@ -438,3 +438,103 @@ def test_a_signal_just_before_the_signals_are_held_is_the_runs_stop(config, tmp_
     assert result.status == "aborted" and result.reason.startswith("stopped by SIGTERM")
     assert result.exit_code == 128 + signal.SIGTERM
     assert load_run(result.path).commands["purpose"].iloc[-1] == "vent"
+
+
+def test_a_second_signal_while_the_first_is_taken_cannot_skip_the_vent(config, tmp_path):
+    # SIGTERM arrives just before the signals are held (the run's stop), then SIGHUP while that
+    # first signal is taken, before the hold: the second escaped the run as a traceback, with
+    # no vent and run.json left 'running'. Now stopping has begun at the first: the second is
+    # noted, the vent and the record go first
+    run = BenchRun(config, SimBackend(config), tmp_path, handle_signals=True)
+    hold, sent = run.signals.hold, []
+
+    def hold_late():
+        if len(sent) < 2:  # a signal each time the hold is reached, twice
+            sent.append(signal.SIGTERM if not sent else signal.SIGHUP)
+            signal.raise_signal(sent[-1])  # the handler runs before the hold
+        hold()
+
+    run.signals.hold = hold_late
+    result = run.execute()
+    loaded = load_run(result.path)
+    assert sent == [signal.SIGTERM, signal.SIGHUP]
+    assert result.status == "aborted" and result.reason.startswith("stopped by SIGTERM")
+    assert "; SIGHUP received while stopping: noted, the vent and the record went first" \
+        in result.reason
+    assert result.exit_code == 128 + signal.SIGTERM
+    assert loaded.meta.status == "aborted" and loaded.meta.reason == result.reason
+    assert loaded.commands["purpose"].iloc[-1] == "vent" and loaded.commands["ok"].iloc[-1]
+    assert loaded.meta.vent_check["verified"]
+
+
+def test_an_interrupt_during_the_vent_does_not_leave_the_muscle_pressurised(config, tmp_path):
+    # a Ctrl-C (KeyboardInterrupt, no handlers installed) interrupting the shutdown's vent write:
+    # the vent was called failed and never written again, so the muscle stayed at its step's
+    # pressure and the run asked for a vent by hand. Now the vent is written again, and the
+    # interruption is noted
+    backend = SimBackend(config)
+    original, cut = backend.write_command, []
+
+    def write_command(volts):
+        if volts == 0.0 and backend._index >= 45 and not cut:
+            cut.append(volts)
+            raise KeyboardInterrupt  # before the write reached the device
+        original(volts)
+
+    backend.write_command = write_command
+    stop_at = backend.read
+
+    def read(n, timeout):
+        if backend._index >= 45 and not backend.interrupted:
+            backend.interrupted = True
+            raise KeyboardInterrupt  # a Ctrl-C without handlers: stop at once
+        return stop_at(n, timeout)
+
+    backend.interrupted = False
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=False).execute()
+    run = load_run(result.path)
+    assert cut and backend.commands[-1][1] == 0.0
+    assert result.status == "aborted" and not result.manual_vent_required, result.reason
+    assert "the vent command was interrupted (KeyboardInterrupt) and written again" \
+        in result.reason
+    assert run.meta.vent_check["verified"] and run.meta.status == "aborted"
+    assert run.commands["purpose"].tolist()[-2:] == ["vent", "vent"]
+    assert run.commands["ok"].tolist()[-2:] == [False, True]
+
+
+def test_a_vent_write_that_fails_once_is_written_again_before_the_check(config, tmp_path):
+    # a Ctrl-C at 4.5 s (0.5 bar commanded); the stop's vent write fails once (an AO write
+    # error the device recovers from): the vent was not written again, the regulator held
+    # 0.5 bar through the whole vent check and the run asked for a vent by hand. Now it is
+    # written again at once and verified
+    from mkm.bench.backend import AOWriteFailed
+
+    backend = SimBackend(config)
+    write, read, failed = backend.write_command, backend.read, []
+
+    def fails_once_at_the_stop(volts):
+        if volts == 0.0 and backend._index >= 45 and not failed:
+            failed.append(volts)
+            raise AOWriteFailed("simulated AO write failure")
+        write(volts)
+
+    def ctrl_c_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()  # what the first SIGINT does
+        return block
+
+    backend.write_command, backend.read = fails_once_at_the_stop, ctrl_c_at_45
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    loaded = load_run(result.path)
+    assert failed and result.status == "aborted" and not result.manual_vent_required
+    assert "; vent command failed (AOWriteFailed: simulated AO write failure), tried again" \
+        in result.reason
+    assert loaded.meta.vent_check["verified"] and loaded.meta.vent_check["waited_s"] < 3.0
+    assert loaded.commands["purpose"].tolist()[-2:] == ["vent", "vent"]
+    assert loaded.commands["ok"].tolist()[-2:] == [False, True]
+    vent = loaded.samples[loaded.samples["phase"] == "vent"]
+    assert vent["sample"].iloc[0] == loaded.commands["sample"].iloc[-1]  # checked after it

@@ -261,15 +261,16 @@ def _order_of_writes(monkeypatch):
 @pytest.mark.parametrize("block", [1, 5])
 def test_an_interlock_vents_before_its_block_is_written(config, tmp_path, monkeypatch, block):
     # acts first, keeps books after: the NaN force at 5.0 s (sample 50) trips the interlock;
-    # its vent went out only after that block had been written to samples.csv
+    # its vent goes out before that block is written to samples.csv (by the recorder's thread,
+    # which may still be writing the blocks before it)
     events = _order_of_writes(monkeypatch)
     c = config.replace(daq={"read_block_samples": block})
     result, run = record(c, tmp_path, nan_force_at_s=5.0)
     assert "force interlock: the force reading is not a number" in result.reason
     tripped = next(i for i, e in enumerate(events) if e[0] == "samples" and e[1] >= 50)
     assert events[tripped] == ("samples", 50 + block - 1)  # the block holding sample 50
-    assert events[tripped - 1] == ("AO", 0.0)  # the interlock's vent, then the rows
-    assert events[tripped - 2] == ("samples", 50 - 1)  # the block before: no vent before it
+    vent = events.index(("AO", 0.0), events.index(("AO", 1.25)))  # the first after 0.5 bar
+    assert vent < tripped  # the interlock's vent, then the rows
     assert run.meta.counters["samples"] == len(run.samples)
     assert (run.samples["phase"] != "vent").sum() == events[tripped][1] + 1
     vent = run.commands[run.commands["purpose"] == "interlock vent"].iloc[0]
@@ -294,8 +295,8 @@ def test_a_disk_that_fails_the_tripping_block_keeps_the_interlocks_reason(config
     result, run = record(config, tmp_path, nan_force_at_s=5.0)
     assert result.status == "aborted" and result.exit_code == 1
     assert result.reason.startswith("force interlock: the force reading is not a number")
-    assert "; vented; the samples of the block that tripped it could not be recorded " \
-           "(OSError: [Errno 28] No space left on device)" in result.reason
+    assert "; vented; the disk refused samples 50 (OSError: [Errno 28] No space left on " \
+           "device), and " in result.reason
     assert ("AO", 0.0) in events
     assert run.meta.counters["samples"] == len(run.samples) == 50  # samples 0-49 kept
     assert run.commands["purpose"].iloc[-2:].tolist() == ["interlock vent", "vent"]
@@ -319,8 +320,8 @@ def test_an_interlock_vent_whose_record_fails_is_not_called_a_failed_vent(config
     result, run = record(config, tmp_path, nan_force_at_s=5.0)
     assert result.status == "aborted" and result.exit_code == 1
     assert "vent command failed" not in result.reason and "VENT BY HAND" not in result.reason
-    assert "; vented, but recording the interlock's vent failed (OSError: [Errno 28] No space " \
-           "left on device)" in result.reason
+    assert "; vented; recording failed for the interlock vent command of 0 bar (OSError: " \
+           "[Errno 28] No space left on device)" in result.reason
     assert not result.manual_vent_required and run.meta.vent_check["verified"]
     assert events[events.index(("samples", 50)) - 1] == ("AO", 0.0)
 
@@ -344,9 +345,10 @@ def test_a_shutdown_vent_that_fails_after_an_interlock_vent_is_called_failed(con
     monkeypatch.setattr(SimBackend, "write_command", second_vent_fails)
     result, run = record(config, tmp_path, nan_force_at_s=5.0)
     assert "recording the vent failed" not in result.reason
-    assert "; vent command failed (AOWriteFailed: simulated AO write failure)" in result.reason
-    assert run.commands["purpose"].iloc[-2:].tolist() == ["interlock vent", "vent"]
-    assert run.commands["ok"].iloc[-2:].tolist() == [True, False]
+    assert "; vent command failed (AOWriteFailed: simulated AO write failure), tried " \
+           "again" in result.reason
+    assert run.commands["purpose"].iloc[-3:].tolist() == ["interlock vent", "vent", "vent"]
+    assert run.commands["ok"].iloc[-3:].tolist() == [True, False, True]
 
 
 @pytest.mark.parametrize("stuck_s", [6.0, 8.0, 10.5, 16.0])
@@ -402,3 +404,52 @@ def test_the_vent_checks_own_samples_are_recorded(config, tmp_path, faults):
         assert not check["verified"] and (vent["pressure_bar"] > 0.15).all()
     else:
         assert check["verified"] and vent["pressure_bar"].is_monotonic_decreasing
+
+
+def test_an_interlock_whose_block_the_disk_refuses_once_keeps_its_samples_and_reason(
+        config, tmp_path, monkeypatch):
+    # the NaN force at 5.0 s (sample 50) trips the interlock; SIGTERM arrives while that block
+    # is read (held to the block's end), and the disk refuses the block once (EIO): the block,
+    # its interlock flag with it, was lost, and the reason did not say so. Now the block is
+    # written again after it, and the reason keeps the interlock, the disk and the signal
+    import signal
+
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.storage import RunWriter
+
+    append, refused = RunWriter.append_samples, []
+
+    def refuses_once(self, rows):
+        if any(r.sample == 50 for r in rows) and not refused:
+            refused.append(rows[0].sample)
+            raise OSError(errno.EIO, "Input/output error")
+        append(self, rows)
+
+    monkeypatch.setattr(RunWriter, "append_samples", refuses_once)
+    c = config.replace(sim={"faults": {"nan_force_at_s": 5.0}})
+    backend = SimBackend(c)
+    read = backend.read
+
+    def signalled_at_50(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 50:
+            signal.raise_signal(signal.SIGTERM)  # its handler runs before read returns
+        return block
+
+    backend.read = signalled_at_50
+    result = BenchRun(c, backend, tmp_path, handle_signals=True, notify=lambda m: None).execute()
+    run = load_run(result.path)
+    assert refused == [50]
+    assert result.status == "aborted" and result.exit_code == 128 + signal.SIGTERM
+    assert result.reason.startswith("force interlock: the force reading is not a number")
+    assert "; vented; SIGTERM received meanwhile" in result.reason
+    assert "the disk refused samples 50 (OSError: [Errno 5] Input/output error); written " \
+           "again" in result.reason
+    assert run.meta.reason == result.reason and run.meta.stop_signal == "SIGTERM"
+    s = run.samples
+    assert list(s["sample"]) == list(range(len(s)))  # none lost, none twice
+    assert s.loc[s["sample"] == 50, "flags"].tolist() == ["nonfinite|interlock"]
+    assert run.meta.counters["samples"] == len(s)
+    assert_vented_last(run)
+    assert run.meta.vent_check["verified"]
