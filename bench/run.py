@@ -543,6 +543,11 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
+        if acq is not None and acq.interlock_vent_failed:  # said before: what came of it
+            if self.vent_check is None:
+                problems.append("nothing verified a vent since: VENT BY HAND")
+            elif self.vent_check.verified:
+                problems.append(f"the shutdown's vent went through ({self.vent_check.describe()})")
         try:
             self.backend.close()
         except BaseException as exc:

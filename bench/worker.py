@@ -112,6 +112,7 @@ class Acquisition:
         self.vented = False  # the last command written was a successful vent
         self.written = False  # the last command asked for reached the device
         self.marker_problem = ""  # the bench marker could not be updated after a vent
+        self.interlock_vent_failed = False  # the shutdown says what became of the muscle
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
         # the measured pressure has been off its command, and not moved towards it by more than
@@ -352,9 +353,10 @@ class Acquisition:
             if self.written:  # the vent went out; only its record (or marker) failed
                 stop = Stop(status, f"{message}; vented, but recording the interlock's vent "
                             f"failed ({type(exc).__name__}: {exc})")
-            else:
+            else:  # the shutdown vents again and says whether that was verified
+                self.interlock_vent_failed = True
                 stop = Stop(status, f"{message}; the interlock's vent command failed "
-                            f"({type(exc).__name__}: {exc}): VENT BY HAND")
+                            f"({type(exc).__name__}: {exc})")
             stop.__cause__ = exc
             return stop
         return Stop(status, f"{message}; vented")
