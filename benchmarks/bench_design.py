@@ -5,11 +5,11 @@ Run outside the test suite:
     .venv/bin/python benchmarks/bench_design.py [--repeats 20] [--fe-repeats 3]
         [--surrogate surrogate] [--out FILE.json]
 
-- the surrogate search (:func:`mkm.design.search`) of the whole training box at the search
+- the surrogate search (:func:`mkm.design.box_search`) of the whole training box at the search
   resolution (0.05 mm x 0.01 mm: 80,601 candidates), one requirement and the two-point
   force-stroke spec; the surrogate is loaded once before timing (as within one command); the
   issue's goal is <= 1 s;
-- the FE verification (:func:`mkm.design.verify`) of the best 5 designs at the converged
+- the FE verification (:func:`mkm.design.fe_verification`) of the best 5 designs at the converged
   ``medium`` mesh, one requirement (5 FE sweeps) and the two-point spec (10 sweeps, one per
   design and eps); the issue's goal is <= 3 s for 5 designs on this 2-core machine.
 

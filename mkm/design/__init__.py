@@ -33,10 +33,10 @@ from typing import Any
 _EXPORTS = {
     "write_design": "page",
     **dict.fromkeys(("DesignResult", "design", "design_record", "run_design"), "result"),
-    **dict.fromkeys(("Search", "pick", "search"), "search"),
+    **dict.fromkeys(("Search", "pick", "search"), "box_search"),
     **dict.fromkeys(("OBJECTIVES", "Constraints", "Requirement", "load_spec", "parse_bounds",
                      "parse_requirement"), "spec"),
-    "verify": "verify",
+    "verify": "fe_verification",
 }
 __all__ = sorted(_EXPORTS)
 

@@ -29,14 +29,14 @@ from mkm.core.records import (
     write_atomic,
     write_csv_with_sidecar,
 )
-from mkm.design.result import DesignResult, design_record
-from mkm.design.search import (
+from mkm.design.box_search import (
     FE_SEARCH_MESH,
     box_text,
     geometry_text,
     span_text,
     surrogate_uncertainty,
 )
+from mkm.design.result import DesignResult, design_record
 from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.calibration import calibration_provenance
 from mkm.fem.thickwall import outer_diameter_mm

@@ -7,8 +7,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 import pandas as pd
 
-from mkm.design.robust import DEFAULT_PROBABILITY, check_designs, check_probability
-from mkm.design.search import (
+from mkm.design.box_search import (
     AXIS_VALUES,
     BOX_NAMES,
     COARSE_STEPS,
@@ -23,6 +22,8 @@ from mkm.design.search import (
     pick,
     search,
 )
+from mkm.design.fe_verification import verify
+from mkm.design.robust import DEFAULT_PROBABILITY, check_designs, check_probability
 from mkm.design.spec import (
     DEFAULT_OBJECTIVE,
     DEFAULT_RUBBER,
@@ -32,7 +33,6 @@ from mkm.design.spec import (
     load_spec,
     parse_requirement,
 )
-from mkm.design.verify import verify
 from mkm.fem.calibration import Calibration
 from mkm.fem.muscle import Muscle
 
@@ -87,7 +87,7 @@ class DesignResult:
     def notes(self) -> list[str]:
         """What a user must know of the box searched, one line each: the box when it is not
         the surrogate's (:meth:`Search.box_note`), the chosen design on an end of a
-        searched range (:func:`~mkm.design.search.box_edges`), where a larger box might hold
+        searched range (:func:`~mkm.design.box_search.box_edges`), where a larger box might hold
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
         required force (the design then is larger than the requirement needs), and a chosen
         design outside the practical range. Empty when none."""
@@ -146,8 +146,8 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     ``spec``: a TOML file (:func:`load_spec`); ``requirements`` are added to its requirements,
     ``constraints`` (a dict) override its constraints, ``objective``/``top`` its own.
     ``cache_dir``: FE prediction cache (None: solve every sweep). ``workers``/``scheduler``:
-    where the FE sweeps run (:func:`mkm.design.verify.verify`). ``calibration``: the default
-    braid angle's and the ``calibrated`` rubber's (None: the shipped one).
+    where the FE sweeps run (:func:`mkm.design.fe_verification.verify`). ``calibration``: the
+    default braid angle's and the ``calibrated`` rubber's (None: the shipped one).
     """
     base = load_spec(spec) if spec else {"requirements": [], "constraints": {}}
     requirements = list(base["requirements"]) + [

@@ -7,6 +7,8 @@ below. The default of the command is the medium mesh.
 
 import json
 import re
+import subprocess
+import sys
 from dataclasses import replace
 
 import numpy as np
@@ -22,7 +24,7 @@ from mkm.design import (
     run_design,
     search,
 )
-from mkm.design.search import box_edges
+from mkm.design.box_search import box_edges
 from mkm.design.spec import design_muscle
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
@@ -635,3 +637,15 @@ def test_constraints_typed_with_units_are_converted():
                               max_pressure_bar="600kPa")
     assert constraints.D0_mm == (8.0, 13.97)
     assert constraints.max_outer_diameter_mm == 63.5 and constraints.max_pressure_bar == 6.0
+
+
+def test_every_public_name_of_the_package_is_itself_after_its_modules_load():
+    # with the package loaded lazily, a module named like a function it exports (search.py's
+    # search) took the function's place once loaded: "'module' object is not callable"
+    code = ("import inspect, pkgutil, importlib, mkm.design as d\n"
+            "for m in pkgutil.iter_modules(d.__path__):\n"
+            "    importlib.import_module(f'mkm.design.{m.name}')\n"
+            "print(sorted(n for n in d.__all__ if inspect.ismodule(getattr(d, n))))\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          check=True)
+    assert done.stdout.strip() == "[]"

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from mkm.auto import RANGE_STD_FACTOR, STD_FACTOR
-from mkm.design.search import std_factor, surrogate_uncertainty
+from mkm.design.box_search import std_factor, surrogate_uncertainty
 from mkm.surrogate import kinds
 
 STD_N = np.array([2.0, 10.0, 40.0])

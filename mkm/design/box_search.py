@@ -290,7 +290,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     families = [(float(L0), float(theta0), rubber) for L0 in _axis(box["L0_mm"])
                 for theta0 in _axis(box["theta0_deg"]) for rubber in constraints.rubber]
     if outside or unmodelled:
-        from mkm.design.verify import fe_model
+        from mkm.design.fe_verification import fe_model
 
         models = {f: fe_model(FE_SEARCH_MESH, *f, calibration, gap) for f in families}
         steps, refine = FE_SEARCH_STEPS, False
