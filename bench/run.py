@@ -9,7 +9,8 @@ its interlocks) and the recorder (:class:`mkm.bench.recorder.Recorder`: the run 
 Safety, in every exit path:
 
 - the run owns its bench for its whole length: a second command on it refuses, ``mkm vent``
-  asks it to stop (:mod:`mkm.bench.ownership`);
+  asks it to stop (:mod:`mkm.bench.ownership`); the loop never waits for the bench state
+  folder (the marker and the stop request are written and read by threads of their own);
 - a bench left pressurised by a run that died without venting is vented first, and said
   (:mod:`mkm.bench.unvented`);
 - the pressure command is clamped to ``regulator.max_pressure_bar``; the force and pressure
@@ -63,6 +64,7 @@ EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
 STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
 VENT_WRITES = 3  # a vent write cut or refused is written again at once, this many in all
 DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before saying it waits
+STATE_WAIT_S = 2.0  # the shutdown waits this long for the bench state folder, then goes on
 
 
 def notify_stderr(message: str) -> None:
@@ -525,8 +527,6 @@ class BenchRun:
                 revive, gone = False, not back
             else:
                 problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
-        if acq is not None and acq.marker_problem:
-            problems.append(acq.marker_problem)
         if acq is not None and self._started and not gone:
             problems.extend(self._drain(acq))
         if self.signals.grace_deadline() is not None:
@@ -560,6 +560,9 @@ class BenchRun:
         if self.signals.noted:  # signals during the stop: said, never obeyed mid-vent
             problems.append(f"{', '.join(dict.fromkeys(self.signals.noted))} received while "
                             "stopping: noted, the vent and the record went first")
+        marker_problem = self._marker_books(acq)
+        if marker_problem:
+            problems.append(marker_problem)
         if self.recorder is not None:  # everything held reaches the disk before the outcome
             if not self.recorder.wait_written(DISK_NOTICE_S):
                 self.notify(f"vented; the disk of {self.recorder.path} is not taking the record: "
@@ -588,17 +591,40 @@ class BenchRun:
             for problem in self.recorder.finish(status, reason):
                 self.storage_failed = True
                 reason = f"{reason}; {problem}"
-        if self.lease is not None and not unverified:
-            try:
-                self.lease.release()
-            except OSError as exc:
-                reason = f"{reason}; the bench marker could not be removed ({exc.strerror})"
-        elif self.lease is not None:  # kept: the next command vents first and says why
-            try:
-                self.lease.unverified(self.vent_check.describe())
-            except OSError:
-                pass  # the marker still names the run and its last command
+        lease = self.lease
+        hung = lease is not None and lease.lagging()  # said above: not waited for again
+        if lease is not None and not unverified:
+            done = lease.wait(lease.post(lease.release), 0.0 if hung else STATE_WAIT_S)
+            if not done and not hung:
+                reason = (f"{reason}; the bench marker {lease.path} is not removed yet (the bench "
+                          "state folder does not answer)")
+            elif done and lease.error is not None:
+                reason = (f"{reason}; the bench marker could not be removed "
+                          f"({lease.error.strerror or lease.error})")
+        elif lease is not None:  # kept: the next command vents first and says why
+            what = self.vent_check.describe()
+            # a failure leaves the marker naming the run and its last command
+            lease.wait(lease.post(lambda: lease.unverified(what)), 0.0 if hung else STATE_WAIT_S)
         return status, reason
+
+    def _marker_books(self, acq: Acquisition | None) -> str:
+        """After the vent: whether the bench marker caught up with the run's commands (the
+        lease writes it on a thread of its own, :class:`mkm.bench.unvented.BenchLease`),
+        waiting at most :data:`STATE_WAIT_S` for a state folder that hangs; the problem, or
+        ""."""
+        lease = self.lease
+        if lease is None:
+            return ""
+        if not lease.wait(lease.posted, STATE_WAIT_S):
+            return (f"the bench state folder did not take the bench marker {lease.path} within "
+                    f"{STATE_WAIT_S:g} s (it hangs): the vent went out without it")
+        if lease.error is not None:  # the vent went through; the state folder did not
+            return (f"the bench marker {lease.path} could not be updated "
+                    f"({lease.error.strerror or lease.error})")
+        if acq is not None and acq.marker_lagged:
+            return ("the bench state folder was slow: pressures were commanded before the bench "
+                    "marker recorded them")
+        return ""
 
 
 def make_backend(config: BenchConfig, clock: str = "virtual") -> Backend:
