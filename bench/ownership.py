@@ -83,6 +83,7 @@ class BenchOwner:
         self._polling = threading.Condition()
         self._poll_thread: threading.Thread | None = None
         self._stop_by: str | None = None  # who asked, as the last read of the stop file found
+        self._read_wanted = False  # the loop asked for a read since the last one began
 
     def __enter__(self) -> BenchOwner:
         try:
@@ -137,15 +138,17 @@ class BenchOwner:
                 self._poll_thread = threading.Thread(target=self._poll, name="mkm-stop-poll",
                                                      daemon=True)
                 self._poll_thread.start()
+            self._read_wanted = True
             self._polling.notify()
             return self._stop_by
 
     def _poll(self) -> None:
         while True:
             with self._polling:
-                self._polling.wait()
+                self._polling.wait_for(lambda: self._read_wanted or self.lock is None)
                 if self.lock is None:  # the bench is let go: nobody polls any more
                     return
+                self._read_wanted = False
             try:
                 by = self.stop_path.read_text(encoding="utf-8").strip() or "a stop request"
             except OSError:

@@ -218,7 +218,7 @@ def test_an_over_pressure_while_the_bench_marker_hangs_is_vented_at_once(config,
     worker, vented, at, out = _run_in_thread(c, tmp_path / "runs", monkeypatch)
     try:
         assert vented.wait(60), "the loop waited for the hung state folder: nothing was vented"
-        assert hung.is_set() and not release.is_set()  # vented, the state folder hung
+        assert hung.wait(60) and not release.is_set()  # vented, the state folder hung
         assert at["sample"] == vent_sample  # the same sample as with a working state folder
         worker.join(60)  # the shutdown waits STATE_WAIT_S for the state folder, then goes on
         assert not worker.is_alive(), "the shutdown waited for the hung state folder"
@@ -240,6 +240,8 @@ def test_an_over_pressure_while_the_stop_request_read_hangs_is_vented_at_once(co
     # state folder
     import threading
 
+    from mkm.bench.sim import SimBackend
+
     c, vent_sample = _over_pressure_reference(config, tmp_path)
     release, hung = threading.Event(), threading.Event()
     read_text = Path.read_text
@@ -251,6 +253,14 @@ def test_an_over_pressure_while_the_stop_request_read_hangs_is_vented_at_once(co
         return read_text(self, *args, **kwargs)
 
     monkeypatch.setattr(Path, "read_text", hanging)
+    write = SimBackend.write_command
+
+    def once_hung(self, volts):  # the pressure goes out once the read hangs, whenever that is
+        if volts > 0:
+            assert hung.wait(60), "the stop request was never read"
+        write(self, volts)
+
+    monkeypatch.setattr(SimBackend, "write_command", once_hung)
     worker, vented, at, out = _run_in_thread(c, tmp_path / "runs", monkeypatch)
     try:
         assert vented.wait(60), "the loop waited for the hung stop request: nothing was vented"
