@@ -275,9 +275,10 @@ class BenchRun:
         if self.signals.stop_requested_at is None:
             return None
         if self._stop_by:
-            return Stop(RunStatus.ABORTED, f"stopped by {self._stop_by} at a safe point; vented")
-        return Stop(RunStatus.ABORTED, "stopped by Ctrl-C (SIGINT) at a safe point; vented",
-                    "SIGINT", 2)
+            return Stop(RunStatus.ABORTED, f"stopped by {self._stop_by} at a safe point",
+                        say_vent=True)
+        return Stop(RunStatus.ABORTED, "stopped by Ctrl-C (SIGINT) at a safe point", "SIGINT", 2,
+                    say_vent=True)
 
     # lifecycle -------------------------------------------------------------------------------
 
@@ -313,6 +314,7 @@ class BenchRun:
         signal_name = signal_number = None
         outcome: BaseException | None = None  # what ended the run early
         late: BaseException | None = None  # a signal that came before they were held
+        say_vent = False  # the shutdown says whether its vent went out (the reason does not yet)
         try:
             try:
                 self.startup()
@@ -331,12 +333,13 @@ class BenchRun:
         if isinstance(outcome, Stop):
             status, reason = outcome.status, outcome.reason
             signal_name, signal_number = outcome.signal_name, outcome.signal_number
+            say_vent = outcome.say_vent
         elif isinstance(outcome, StopSignal):
             status, signal_name, signal_number = RunStatus.ABORTED, outcome.name, outcome.signum
-            reason = f"stopped by {outcome}: vented at once"
+            reason, say_vent = f"stopped by {outcome} at once", True
         elif isinstance(outcome, KeyboardInterrupt):  # no handlers (not the main thread)
             status, signal_name, signal_number = RunStatus.ABORTED, "SIGINT", 2
-            reason = "stopped by a second Ctrl-C (SIGINT): vented at once"
+            reason, say_vent = "stopped by a second Ctrl-C (SIGINT) at once", True
         elif isinstance(outcome, BenchError):
             status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
         elif isinstance(outcome, OSError):  # the run folder's disk: full, gone, read-only
@@ -350,7 +353,8 @@ class BenchRun:
             signal_name, signal_number = name, getattr(late, "signum", 2)
             reason = f"{reason}; {name} received meanwhile"
         try:
-            status, reason = self.shutdown(status, reason, signal_name, signal_number)
+            status, reason = self.shutdown(status, reason, signal_name, signal_number,
+                                           say_vent)
         finally:
             self.signals.done()
         if signal_number is not None:
@@ -497,9 +501,11 @@ class BenchRun:
         return None
 
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
-                 signal_number=None) -> tuple[RunStatus, str]:
+                 signal_number=None, say_vent: bool = False) -> tuple[RunStatus, str]:
         """Vent, verify the vent, close the device, record the outcome. Never raises; returns
-        the final status and reason (``failed`` when the vent could not be verified)."""
+        the final status and reason (``failed`` when the vent could not be verified).
+        ``say_vent``: ``reason`` (a stop) is followed by ``vented`` once the vent command
+        reached the device, and only then: a failed one is said instead."""
         problems = []
         acq = self.acquisition
         revive = hasattr(self.backend, "revive")  # a device loss is tried once, then said
@@ -517,6 +523,15 @@ class BenchRun:
                 problems.append(f"vent command failed ({type(failure).__name__}: {failure}), "
                                 "tried again")
             failure = self._write_vent(acq)
+        # where the reason says "vented": after the failed tries, before what came after
+        vented_at = len(problems) if say_vent and (
+            failure is None or (acq is not None and acq.written)) else None
+
+        def told(problems: list[str]) -> list[str]:
+            if vented_at is None:
+                return problems
+            return [*problems[:vented_at], "vented", *problems[vented_at:]]
+
         if failure is not None:  # the device may be gone; closing must still happen
             exc = failure
             if acq is not None and acq.written:  # written; only its record failed
@@ -530,7 +545,7 @@ class BenchRun:
         if acq is not None and self._started and not gone:
             problems.extend(self._drain(acq))
         if self.signals.grace_deadline() is not None:
-            self._keep_books(status, reason, problems, signal_name, signal_number)
+            self._keep_books(status, reason, told(problems), signal_name, signal_number)
         self._vent_rows_problems = problems  # the vent check's rows that failed to record
         self.vent_check = self._verify(gone)
         if self.vent_check.device_lost and revive:
@@ -581,6 +596,7 @@ class BenchRun:
                 held = acq.held_bar() if acq is not None else 0.0
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
                             f"still hold {held:.3g} bar)")
+        problems = told(problems)
         if problems:
             reason = "; ".join([reason, *problems]) if reason else "; ".join(problems)
         if self.recorder is not None:

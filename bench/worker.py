@@ -60,13 +60,15 @@ MARKER_WAIT_S = 0.5
 
 
 class Stop(Exception):
-    """Leave the sequence at a safe point with this status and reason."""
+    """Leave the sequence at a safe point with this status and reason; ``say_vent``: the
+    shutdown adds whether its vent went out (an interlock's reason says its own)."""
 
     def __init__(self, status: RunStatus, reason: str, signal_name: str | None = None,
-                 signal_number: int | None = None):
+                 signal_number: int | None = None, say_vent: bool = False):
         super().__init__(reason)
         self.status, self.reason = status, reason
         self.signal_name, self.signal_number = signal_name, signal_number
+        self.say_vent = say_vent
 
 
 def _with_signal(tripped: Stop, sig: StopSignal) -> Stop:
