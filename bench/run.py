@@ -633,7 +633,8 @@ class BenchRun:
             return ""
         if not lease.wait(lease.posted, STATE_WAIT_S):
             return (f"the bench state folder did not take the bench marker {lease.path} within "
-                    f"{STATE_WAIT_S:g} s (it hangs): the vent went out without it")
+                    f"{STATE_WAIT_S:g} s (it hangs): the marker left names this run, and the "
+                    "next command on this bench vents first")
         if lease.error is not None:  # the vent went through; the state folder did not
             return (f"the bench marker {lease.path} could not be updated "
                     f"({lease.error.strerror or lease.error})")

@@ -274,3 +274,50 @@ def test_an_over_pressure_while_the_stop_request_read_hangs_is_vented_at_once(co
     result = out["result"]
     assert result.status == "failed" and result.reason.startswith("over-pressure interlock")
     assert load_run(result.path).meta.vent_check["verified"]
+
+
+def test_a_failed_vent_with_the_state_folder_hung_is_not_said_to_have_gone_out(
+        config, tmp_path, monkeypatch):
+    # the state folder hangs from the 0.5 bar marker on; a Ctrl-C at sample 45; every vent
+    # write after it fails. The marker's problem used to end "the vent went out without it"
+    # while no vent had gone out
+    import threading
+
+    from mkm.bench.backend import AOWriteFailed
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.unvented import BenchLease
+
+    release = threading.Event()
+    command = BenchLease.command
+
+    def hanging(self, pressure_bar):
+        if pressure_bar > 0 and not release.is_set():
+            release.wait(120)  # released at the end of the test
+        command(self, pressure_bar)
+
+    backend = SimBackend(config)
+    write, read = backend.write_command, backend.read
+
+    def vent_fails(volts):
+        if volts == 0.0 and backend._index >= 45:
+            raise AOWriteFailed("simulated AO write failure")
+        write(volts)
+
+    def ctrl_c_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()  # what the first SIGINT does
+        return block
+
+    backend.write_command, backend.read = vent_fails, ctrl_c_at_45
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    monkeypatch.setattr(BenchLease, "command", hanging)
+    try:
+        result = run.execute()
+    finally:
+        release.set()
+    assert result.status == "failed" and result.manual_vent_required
+    assert "the bench state folder did not take the bench marker" in result.reason
+    assert "went out" not in result.reason and "vented" not in result.reason
+    assert "VENT BY HAND" in result.reason
