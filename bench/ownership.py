@@ -5,7 +5,8 @@ Two processes driving one regulator is the most dangerous state a bench can be i
 command on a held bench refuses at once, naming the holder's pid, command and start time
 (:class:`BenchBusy`). ``mkm vent`` on a held bench does not fight the holder for the device: it
 asks the holder to stop (:func:`request_stop`; the run polls :meth:`BenchOwner.stop_request` at
-every block and stops at that safe point, venting), waits for the lock, then vents and verifies
+every block, which reads the request on a thread of its own, and stops at that safe point,
+venting), waits for the lock, then vents and verifies
 itself. The operating system releases the lock when its process dies (``kill -9``), so a dead
 holder never blocks the bench: the next command takes the lock and vents first
 (:mod:`mkm.bench.unvented`).
@@ -20,6 +21,7 @@ from __future__ import annotations
 
 import json
 import os
+import threading
 import time
 from pathlib import Path
 
@@ -78,6 +80,10 @@ class BenchOwner:
         self.bench_key, self.command = bench_key, command
         self.lock_path, self.owner_path, self.stop_path = _paths(bench_key)
         self.lock: filelock.BaseFileLock | None = None
+        self._polling = threading.Condition()
+        self._poll_thread: threading.Thread | None = None
+        self._stop_by: str | None = None  # who asked, as the last read of the stop file found
+        self._read_wanted = False  # the loop asked for a read since the last one began
 
     def __enter__(self) -> BenchOwner:
         try:
@@ -117,14 +123,38 @@ class BenchOwner:
             except OSError:
                 pass  # the lock's release below is what matters
         self.lock.release()
-        self.lock = None
+        with self._polling:
+            self.lock = None
+            self._polling.notify()
 
     def stop_request(self) -> str | None:
-        """Who asked this holder to stop (``mkm vent``, pid N), or None."""
-        try:
-            return self.stop_path.read_text(encoding="utf-8").strip() or "a stop request"
-        except OSError:
-            return None
+        """Who asked this holder to stop (``mkm vent``, pid N), or None; never waits.
+
+        Polled by the acquisition loop at every block, so the file is read by a thread of its
+        own: a state folder that hangs (a network share) holds that thread, never the loop's
+        interlocks. The answer is the last read done; a new read starts when it is."""
+        with self._polling:
+            if self._poll_thread is None:
+                self._poll_thread = threading.Thread(target=self._poll, name="mkm-stop-poll",
+                                                     daemon=True)
+                self._poll_thread.start()
+            self._read_wanted = True
+            self._polling.notify()
+            return self._stop_by
+
+    def _poll(self) -> None:
+        while True:
+            with self._polling:
+                self._polling.wait_for(lambda: self._read_wanted or self.lock is None)
+                if self.lock is None:  # the bench is let go: nobody polls any more
+                    return
+                self._read_wanted = False
+            try:
+                by = self.stop_path.read_text(encoding="utf-8").strip() or "a stop request"
+            except OSError:
+                by = None
+            with self._polling:
+                self._stop_by = self._stop_by or by
 
 
 def request_stop(bench_key: str, by: str, wait_s: float = 30.0) -> dict | None:

@@ -9,7 +9,8 @@ its interlocks) and the recorder (:class:`mkm.bench.recorder.Recorder`: the run 
 Safety, in every exit path:
 
 - the run owns its bench for its whole length: a second command on it refuses, ``mkm vent``
-  asks it to stop (:mod:`mkm.bench.ownership`);
+  asks it to stop (:mod:`mkm.bench.ownership`); the loop never waits for the bench state
+  folder (the marker and the stop request are written and read by threads of their own);
 - a bench left pressurised by a run that died without venting is vented first, and said
   (:mod:`mkm.bench.unvented`);
 - the pressure command is clamped to ``regulator.max_pressure_bar``; the force and pressure
@@ -63,6 +64,7 @@ EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
 STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
 VENT_WRITES = 3  # a vent write cut or refused is written again at once, this many in all
 DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before saying it waits
+STATE_WAIT_S = 2.0  # the shutdown waits this long for the bench state folder, then goes on
 
 
 def notify_stderr(message: str) -> None:
@@ -273,9 +275,10 @@ class BenchRun:
         if self.signals.stop_requested_at is None:
             return None
         if self._stop_by:
-            return Stop(RunStatus.ABORTED, f"stopped by {self._stop_by} at a safe point; vented")
-        return Stop(RunStatus.ABORTED, "stopped by Ctrl-C (SIGINT) at a safe point; vented",
-                    "SIGINT", 2)
+            return Stop(RunStatus.ABORTED, f"stopped by {self._stop_by} at a safe point",
+                        say_vent=True)
+        return Stop(RunStatus.ABORTED, "stopped by Ctrl-C (SIGINT) at a safe point", "SIGINT", 2,
+                    say_vent=True)
 
     # lifecycle -------------------------------------------------------------------------------
 
@@ -311,6 +314,7 @@ class BenchRun:
         signal_name = signal_number = None
         outcome: BaseException | None = None  # what ended the run early
         late: BaseException | None = None  # a signal that came before they were held
+        say_vent = False  # the shutdown says whether its vent went out (the reason does not yet)
         try:
             try:
                 self.startup()
@@ -329,12 +333,13 @@ class BenchRun:
         if isinstance(outcome, Stop):
             status, reason = outcome.status, outcome.reason
             signal_name, signal_number = outcome.signal_name, outcome.signal_number
+            say_vent = outcome.say_vent
         elif isinstance(outcome, StopSignal):
             status, signal_name, signal_number = RunStatus.ABORTED, outcome.name, outcome.signum
-            reason = f"stopped by {outcome}: vented at once"
+            reason, say_vent = f"stopped by {outcome} at once", True
         elif isinstance(outcome, KeyboardInterrupt):  # no handlers (not the main thread)
             status, signal_name, signal_number = RunStatus.ABORTED, "SIGINT", 2
-            reason = "stopped by a second Ctrl-C (SIGINT): vented at once"
+            reason, say_vent = "stopped by a second Ctrl-C (SIGINT) at once", True
         elif isinstance(outcome, BenchError):
             status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
         elif isinstance(outcome, OSError):  # the run folder's disk: full, gone, read-only
@@ -348,7 +353,8 @@ class BenchRun:
             signal_name, signal_number = name, getattr(late, "signum", 2)
             reason = f"{reason}; {name} received meanwhile"
         try:
-            status, reason = self.shutdown(status, reason, signal_name, signal_number)
+            status, reason = self.shutdown(status, reason, signal_name, signal_number,
+                                           say_vent)
         finally:
             self.signals.done()
         if signal_number is not None:
@@ -495,9 +501,11 @@ class BenchRun:
         return None
 
     def shutdown(self, status: RunStatus, reason: str, signal_name=None,
-                 signal_number=None) -> tuple[RunStatus, str]:
+                 signal_number=None, say_vent: bool = False) -> tuple[RunStatus, str]:
         """Vent, verify the vent, close the device, record the outcome. Never raises; returns
-        the final status and reason (``failed`` when the vent could not be verified)."""
+        the final status and reason (``failed`` when the vent could not be verified).
+        ``say_vent``: ``reason`` (a stop) is followed by ``vented`` once the vent command
+        reached the device, and only then: a failed one is said instead."""
         problems = []
         acq = self.acquisition
         revive = hasattr(self.backend, "revive")  # a device loss is tried once, then said
@@ -515,6 +523,15 @@ class BenchRun:
                 problems.append(f"vent command failed ({type(failure).__name__}: {failure}), "
                                 "tried again")
             failure = self._write_vent(acq)
+        # where the reason says "vented": after the failed tries, before what came after
+        vented_at = len(problems) if say_vent and (
+            failure is None or (acq is not None and acq.written)) else None
+
+        def told(problems: list[str]) -> list[str]:
+            if vented_at is None:
+                return problems
+            return [*problems[:vented_at], "vented", *problems[vented_at:]]
+
         if failure is not None:  # the device may be gone; closing must still happen
             exc = failure
             if acq is not None and acq.written:  # written; only its record failed
@@ -525,12 +542,10 @@ class BenchRun:
                 revive, gone = False, not back
             else:
                 problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
-        if acq is not None and acq.marker_problem:
-            problems.append(acq.marker_problem)
         if acq is not None and self._started and not gone:
             problems.extend(self._drain(acq))
         if self.signals.grace_deadline() is not None:
-            self._keep_books(status, reason, problems, signal_name, signal_number)
+            self._keep_books(status, reason, told(problems), signal_name, signal_number)
         self._vent_rows_problems = problems  # the vent check's rows that failed to record
         self.vent_check = self._verify(gone)
         if self.vent_check.device_lost and revive:
@@ -560,6 +575,9 @@ class BenchRun:
         if self.signals.noted:  # signals during the stop: said, never obeyed mid-vent
             problems.append(f"{', '.join(dict.fromkeys(self.signals.noted))} received while "
                             "stopping: noted, the vent and the record went first")
+        marker_problem = self._marker_books(acq)
+        if marker_problem:
+            problems.append(marker_problem)
         if self.recorder is not None:  # everything held reaches the disk before the outcome
             if not self.recorder.wait_written(DISK_NOTICE_S):
                 self.notify(f"vented; the disk of {self.recorder.path} is not taking the record: "
@@ -578,6 +596,7 @@ class BenchRun:
                 held = acq.held_bar() if acq is not None else 0.0
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
                             f"still hold {held:.3g} bar)")
+        problems = told(problems)
         if problems:
             reason = "; ".join([reason, *problems]) if reason else "; ".join(problems)
         if self.recorder is not None:
@@ -588,17 +607,41 @@ class BenchRun:
             for problem in self.recorder.finish(status, reason):
                 self.storage_failed = True
                 reason = f"{reason}; {problem}"
-        if self.lease is not None and not unverified:
-            try:
-                self.lease.release()
-            except OSError as exc:
-                reason = f"{reason}; the bench marker could not be removed ({exc.strerror})"
-        elif self.lease is not None:  # kept: the next command vents first and says why
-            try:
-                self.lease.unverified(self.vent_check.describe())
-            except OSError:
-                pass  # the marker still names the run and its last command
+        lease = self.lease
+        hung = lease is not None and lease.lagging()  # said above: not waited for again
+        if lease is not None and not unverified:
+            done = lease.wait(lease.post(lease.release), 0.0 if hung else STATE_WAIT_S)
+            if not done and not hung:
+                reason = (f"{reason}; the bench marker {lease.path} is not removed yet (the bench "
+                          "state folder does not answer)")
+            elif done and lease.error is not None:
+                reason = (f"{reason}; the bench marker could not be removed "
+                          f"({lease.error.strerror or lease.error})")
+        elif lease is not None:  # kept: the next command vents first and says why
+            what = self.vent_check.describe()
+            # a failure leaves the marker naming the run and its last command
+            lease.wait(lease.post(lambda: lease.unverified(what)), 0.0 if hung else STATE_WAIT_S)
         return status, reason
+
+    def _marker_books(self, acq: Acquisition | None) -> str:
+        """After the vent: whether the bench marker caught up with the run's commands (the
+        lease writes it on a thread of its own, :class:`mkm.bench.unvented.BenchLease`),
+        waiting at most :data:`STATE_WAIT_S` for a state folder that hangs; the problem, or
+        ""."""
+        lease = self.lease
+        if lease is None:
+            return ""
+        if not lease.wait(lease.posted, STATE_WAIT_S):
+            return (f"the bench state folder did not take the bench marker {lease.path} within "
+                    f"{STATE_WAIT_S:g} s (it hangs): the marker left names this run, and the "
+                    "next command on this bench vents first")
+        if lease.error is not None:  # the vent went through; the state folder did not
+            return (f"the bench marker {lease.path} could not be updated "
+                    f"({lease.error.strerror or lease.error})")
+        if acq is not None and acq.marker_lagged:
+            return ("the bench state folder was slow: pressures were commanded before the bench "
+                    "marker recorded them")
+        return ""
 
 
 def make_backend(config: BenchConfig, clock: str = "virtual") -> Backend:

@@ -5,8 +5,11 @@ name) in the user's state folder (``MKM_STATE_DIR``, else
 ``platformdirs.user_state_dir("mkm-bench")``: ``~/.local/state/mkm-bench`` on Linux,
 ``%LOCALAPPDATA%\\mkm-bench`` on Windows): the run folder, the recording process
 (:class:`mkm.bench.storage.ProcessIdentity`: pid, start time, boot time), and the last commanded
-pressure, rewritten at every command (before the pressure is written to the device, so a kill
-between the two still finds it). A clean shutdown that vented removes it. Every command that
+pressure, rewritten at every command by a thread of the run (:class:`BenchLease`: a state folder
+that hangs never holds the acquisition loop) before the pressure is written to the device, so a
+kill between the two still finds it (unless the state folder takes longer than
+:data:`mkm.bench.worker.MARKER_WAIT_S`: the pressure then goes out ahead of its marker). A clean
+shutdown that vented removes it. Every command that
 opens a bench (``acquire``, ``check``, ``tare``, ``calibrate-loadcell``, ``vent``) first looks for
 markers of that bench whose process is dead: it vents (opening the device writes the vent command)
 and says which run it was, when it started, and what pressure it left commanded. One file per
@@ -17,7 +20,10 @@ from __future__ import annotations
 
 import datetime
 import json
+import queue
 import re
+import threading
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 
@@ -83,7 +89,15 @@ class Marker:
 
 
 class BenchLease:
-    """The marker of one running run; :meth:`command` records each commanded pressure."""
+    """The marker of one running run; :meth:`command` records each commanded pressure.
+
+    The acquisition loop never writes it itself: it posts each update (:meth:`post`) to a thread
+    of the lease, which writes them in order (:meth:`command`, :meth:`unverified`,
+    :meth:`release`). A state folder that hangs (a roaming profile on a network share) then
+    blocks that thread, never the loop's interlocks and vents; :meth:`wait` tells the loop
+    whether an update is on disk yet. Only the first write, before anything is pressurised, is
+    made by the caller.
+    """
 
     def __init__(self, bench_key: str, run_path: Path, started_utc: str):
         me = ProcessIdentity.current()
@@ -93,6 +107,49 @@ class BenchLease:
         folder.mkdir(parents=True, exist_ok=True)
         self.path = folder / f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}.json"
         self._write()
+        self._updates: queue.Queue = queue.Queue()
+        self._done = threading.Condition()
+        self._posted = self._written = 0  # updates posted, updates done (written or failed)
+        self.error: OSError | None = None  # the last update's failure (None once one succeeds)
+        self._thread: threading.Thread | None = None
+
+    def post(self, update: Callable[[], None]) -> int:
+        """Queue ``update`` (a method of this lease) for the lease's thread; its ticket."""
+        if self._thread is None:
+            self._thread = threading.Thread(target=self._run, name="mkm-bench-marker",
+                                            daemon=True)
+            self._thread.start()
+        self._posted += 1
+        self._updates.put(update)
+        return self._posted
+
+    def wait(self, ticket: int, timeout_s: float | None) -> bool:
+        """Whether the update ``ticket`` (and every one before it) is done within
+        ``timeout_s``; :attr:`error` says if it failed."""
+        with self._done:
+            return self._done.wait_for(lambda: self._written >= ticket, timeout_s)
+
+    @property
+    def posted(self) -> int:
+        """The ticket of the last update posted (0 before any)."""
+        return self._posted
+
+    def lagging(self) -> bool:
+        """An update posted is not done yet: the state folder is slow or hangs."""
+        return self._written < self._posted
+
+    def _run(self) -> None:
+        while True:
+            update = self._updates.get()
+            try:
+                update()
+                error = None
+            except OSError as exc:
+                error = exc
+            with self._done:
+                self._written += 1
+                self.error = error
+                self._done.notify_all()
 
     def _write(self) -> None:
         write_json_atomic(self.path, self.marker.record())

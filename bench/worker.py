@@ -54,16 +54,21 @@ RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the rea
 OVERPRESSURE_MARGIN_FRACTION = 0.02
 OVERPRESSURE_HOLD_S = 1.0  # a step's transient settles within the regulator's time constant
 OVERPRESSURE_HARD_FRACTION = 0.10
+# The bench marker takes milliseconds on a local disk; a state folder slower than this hangs
+# (a network share), and the loop goes on without it rather than leave the interlocks unwatched.
+MARKER_WAIT_S = 0.5
 
 
 class Stop(Exception):
-    """Leave the sequence at a safe point with this status and reason."""
+    """Leave the sequence at a safe point with this status and reason; ``say_vent``: the
+    shutdown adds whether its vent went out (an interlock's reason says its own)."""
 
     def __init__(self, status: RunStatus, reason: str, signal_name: str | None = None,
-                 signal_number: int | None = None):
+                 signal_number: int | None = None, say_vent: bool = False):
         super().__init__(reason)
         self.status, self.reason = status, reason
         self.signal_name, self.signal_number = signal_name, signal_number
+        self.say_vent = say_vent
 
 
 def _with_signal(tripped: Stop, sig: StopSignal) -> Stop:
@@ -111,7 +116,7 @@ class Acquisition:
         self.next_index = 0
         self.vented = False  # the last command written was a successful vent
         self.written = False  # the last command asked for reached the device
-        self.marker_problem = ""  # the bench marker could not be updated after a vent
+        self.marker_lagged = False  # a pressure went out before its bench marker was written
         self.interlock_vent_failed = False  # the shutdown says what became of the muscle
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
@@ -392,14 +397,7 @@ class Acquisition:
         volts = reg.command_volts(clamped)
         ok = self.written = False
         if self.lease is not None and clamped > 0:
-            # before the write: a kill between the write and any record still finds it; a
-            # pressure the marker cannot record is not commanded
-            try:
-                self.lease.command(clamped)
-            except OSError as exc:
-                raise StateFolderBroken(f"the bench marker {self.lease.path} in the bench state "
-                                        f"folder could not be written ({exc.strerror or exc}): "
-                                        f"{clamped:g} bar not commanded") from None
+            self._mark(clamped)
         try:
             self.backend.write_command(volts)
             ok = self.written = True
@@ -419,14 +417,28 @@ class Acquisition:
                     self._issued_before_bar = self._issued.pop(0)[1]
             self.recorder.meta.last_command_bar = self.command_bar
             if ok and self.lease is not None and clamped == 0.0:
-                try:
-                    self.lease.command(0.0)
-                    self.marker_problem = ""
-                except OSError as exc:  # the vent went through; the state folder did not
-                    self.marker_problem = (f"the bench marker {self.lease.path} could not be "
-                                           f"updated ({exc.strerror or exc})")
+                lease = self.lease  # after the vent, never waited for: the shutdown checks it
+                lease.post(lambda: lease.command(0.0))
             self.recorder.command(CommandRecord(issued / self.rate_hz, issued, clamped, volts,
                                                 ok, purpose))
+
+    def _mark(self, pressure_bar: float) -> None:
+        """The bench marker learns ``pressure_bar`` before it is written to the device, so a
+        kill between the two still finds it; a pressure the marker cannot record is not
+        commanded. The marker is written by the lease's thread: a state folder that takes more
+        than :data:`MARKER_WAIT_S` (it hangs) is not waited for again until it catches up, and
+        the pressure goes out ahead of its marker (the marker written at the run's start
+        already makes the next command vent a run killed meanwhile); said at the end."""
+        lease = self.lease
+        lagging = lease.lagging()
+        ticket = lease.post(lambda: lease.command(pressure_bar))
+        if lagging or not lease.wait(ticket, MARKER_WAIT_S):
+            self.marker_lagged = True
+            return
+        if lease.error is not None:
+            raise StateFolderBroken(f"the bench marker {lease.path} in the bench state folder "
+                                    f"could not be written ({lease.error.strerror or lease.error})"
+                                    f": {pressure_bar:g} bar not commanded")
 
     def acquire_for(self, duration_s: float, phase: str, step: int, set_bar: float,
                     cell_volts: list | None = None) -> None:

@@ -175,3 +175,149 @@ def test_run_json_held_open_at_the_tare_is_tried_again(config, tmp_path, monkeyp
     assert result.status == "complete" and result.exit_code == 0, result.reason
     assert len(refused) == 2  # the tare's rewrite, twice
     assert load_run(result.path).meta.tare["n"] > 0
+
+
+# a state folder that hangs: the loop never waits for it either --------------------------------
+
+def _over_pressure_reference(config, tmp_path):
+    """The 2.5 bar step with a regulator 0.14 bar over it (max_pressure_bar 2.5): above 2.55 bar
+    for more than 1 s is an over-pressure. The run with a working state folder, and the device's
+    sample clock at its interlock vent."""
+    from mkm.bench.run import acquire
+
+    c = config.replace(sequence={"pressures_bar": (2.5,)},
+                       sim={"faults": {"overshoot_bar": 0.14}})
+    reference = load_run(acquire(c, out_root=tmp_path / "reference", notify=lambda m: None).path)
+    normal = reference.commands[reference.commands["purpose"] == "interlock vent"]
+    assert reference.status == "failed" and len(normal) == 1
+    return c, int(normal["sample"].iloc[0])
+
+
+def test_an_over_pressure_while_the_bench_marker_hangs_is_vented_at_once(config, tmp_path,
+                                                                        monkeypatch):
+    # the bench state folder (a roaming profile on a network share) hangs from the first
+    # pressure's marker write on: the loop used to wait in it before writing the pressure, with
+    # no interlock watched. Now the marker is written by the lease's thread: the pressure goes
+    # out after MARKER_WAIT_S, and the over-pressure is vented at the sample it is with a
+    # working state folder, the marker still hung
+    import threading
+
+    from mkm.bench.unvented import BenchLease
+
+    c, vent_sample = _over_pressure_reference(config, tmp_path)
+    release, hung = threading.Event(), threading.Event()
+    command = BenchLease.command
+
+    def hanging(self, pressure_bar):
+        if pressure_bar > 0 and not release.is_set():
+            hung.set()
+            release.wait(120)  # a net under a broken fix, never reached when it works
+        command(self, pressure_bar)
+
+    monkeypatch.setattr(BenchLease, "command", hanging)
+    worker, vented, at, out = _run_in_thread(c, tmp_path / "runs", monkeypatch)
+    try:
+        assert vented.wait(60), "the loop waited for the hung state folder: nothing was vented"
+        assert hung.wait(60) and not release.is_set()  # vented, the state folder hung
+        assert at["sample"] == vent_sample  # the same sample as with a working state folder
+        worker.join(60)  # the shutdown waits STATE_WAIT_S for the state folder, then goes on
+        assert not worker.is_alive(), "the shutdown waited for the hung state folder"
+    finally:
+        release.set()
+        worker.join(120)
+    result = out["result"]
+    assert result.status == "failed" and result.reason.startswith("over-pressure interlock")
+    assert "the bench state folder did not take the bench marker" in result.reason
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"] and run.meta.reason == result.reason
+
+
+def test_an_over_pressure_while_the_stop_request_read_hangs_is_vented_at_once(config, tmp_path,
+                                                                              monkeypatch):
+    # reading the stop request (`mkm vent` asking) from the state folder hangs from the first
+    # block: the loop used to wait in it at every block, with no interlock watched. Now the
+    # read is a thread's: the over-pressure is vented at the same sample as with a working
+    # state folder
+    import threading
+
+    from mkm.bench.sim import SimBackend
+
+    c, vent_sample = _over_pressure_reference(config, tmp_path)
+    release, hung = threading.Event(), threading.Event()
+    read_text = Path.read_text
+
+    def hanging(self, *args, **kwargs):
+        if self.suffix == ".stop" and not release.is_set():
+            hung.set()
+            release.wait(120)  # a net under a broken fix, never reached when it works
+        return read_text(self, *args, **kwargs)
+
+    monkeypatch.setattr(Path, "read_text", hanging)
+    write = SimBackend.write_command
+
+    def once_hung(self, volts):  # the pressure goes out once the read hangs, whenever that is
+        if volts > 0:
+            assert hung.wait(60), "the stop request was never read"
+        write(self, volts)
+
+    monkeypatch.setattr(SimBackend, "write_command", once_hung)
+    worker, vented, at, out = _run_in_thread(c, tmp_path / "runs", monkeypatch)
+    try:
+        assert vented.wait(60), "the loop waited for the hung stop request: nothing was vented"
+        assert hung.is_set() and not release.is_set()
+        assert at["sample"] == vent_sample
+        worker.join(60)
+        assert not worker.is_alive(), "the run waited for the hung stop request"
+    finally:
+        release.set()
+        worker.join(120)
+    result = out["result"]
+    assert result.status == "failed" and result.reason.startswith("over-pressure interlock")
+    assert load_run(result.path).meta.vent_check["verified"]
+
+
+def test_a_failed_vent_with_the_state_folder_hung_is_not_said_to_have_gone_out(
+        config, tmp_path, monkeypatch):
+    # the state folder hangs from the 0.5 bar marker on; a Ctrl-C at sample 45; every vent
+    # write after it fails. The marker's problem used to end "the vent went out without it"
+    # while no vent had gone out
+    import threading
+
+    from mkm.bench.backend import AOWriteFailed
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.unvented import BenchLease
+
+    release = threading.Event()
+    command = BenchLease.command
+
+    def hanging(self, pressure_bar):
+        if pressure_bar > 0 and not release.is_set():
+            release.wait(120)  # released at the end of the test
+        command(self, pressure_bar)
+
+    backend = SimBackend(config)
+    write, read = backend.write_command, backend.read
+
+    def vent_fails(volts):
+        if volts == 0.0 and backend._index >= 45:
+            raise AOWriteFailed("simulated AO write failure")
+        write(volts)
+
+    def ctrl_c_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()  # what the first SIGINT does
+        return block
+
+    backend.write_command, backend.read = vent_fails, ctrl_c_at_45
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    monkeypatch.setattr(BenchLease, "command", hanging)
+    try:
+        result = run.execute()
+    finally:
+        release.set()
+    assert result.status == "failed" and result.manual_vent_required
+    assert "the bench state folder did not take the bench marker" in result.reason
+    assert "went out" not in result.reason and "vented" not in result.reason
+    assert "VENT BY HAND" in result.reason

@@ -504,6 +504,44 @@ def test_an_interrupt_during_the_vent_does_not_leave_the_muscle_pressurised(conf
     assert run.commands["ok"].tolist()[-2:] == [False, True]
 
 
+@pytest.mark.parametrize("fails", [1, 3])
+def test_a_ctrl_c_stop_says_vented_only_once_the_vent_went_out(config, tmp_path, fails):
+    # a Ctrl-C at 4.5 s (0.5 bar commanded); the stop's vent write fails once (written again,
+    # then out), or all three times (never out). The reason used to say "at a safe point;
+    # vented" before the vent was tried: "...; vented; vent command failed ... VENT BY HAND"
+    from mkm.bench.backend import AOWriteFailed
+
+    backend = SimBackend(config)
+    write, read, failed = backend.write_command, backend.read, []
+
+    def fails_at_the_stop(volts):
+        if volts == 0.0 and backend._index >= 45 and len(failed) < fails:
+            failed.append(volts)
+            raise AOWriteFailed("simulated AO write failure")
+        write(volts)
+
+    def ctrl_c_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()  # what the first SIGINT does
+        return block
+
+    backend.write_command, backend.read = fails_at_the_stop, ctrl_c_at_45
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    failure = "vent command failed (AOWriteFailed: simulated AO write failure)"
+    assert len(failed) == fails
+    if fails == 1:  # vented: said after the failed write, once it went out
+        assert result.status == "aborted" and not result.manual_vent_required
+        assert result.reason == (f"stopped by Ctrl-C (SIGINT) at a safe point; {failure}, "
+                                 "tried again; vented")
+    else:  # never out: no "vented" anywhere, a vent by hand asked for
+        assert result.status == "failed" and result.manual_vent_required
+        assert result.reason.startswith(f"stopped by Ctrl-C (SIGINT) at a safe point; {failure}"
+                                        f", tried again; {failure}, tried again; {failure}; ")
+        assert "vented" not in result.reason and "VENT BY HAND" in result.reason
+
+
 def test_a_vent_write_that_fails_once_is_written_again_before_the_check(config, tmp_path):
     # a Ctrl-C at 4.5 s (0.5 bar commanded); the stop's vent write fails once (an AO write
     # error the device recovers from): the vent was not written again, the regulator held

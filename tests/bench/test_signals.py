@@ -92,9 +92,9 @@ def test_stop_signal_vents_within_0_2_s_and_records(tmp_path, name, times):
     assert run.status == "aborted" and run.meta.stop_signal == name
     assert run.meta.stop_signal_number == signum
     if name == "SIGINT" and times == 1:
-        assert "at a safe point" in run.reason
+        assert "at a safe point; vented" in run.reason
     else:
-        assert name in run.reason and "vented at once" in run.reason
+        assert name in run.reason and "at once; vented" in run.reason
     assert_every_flushed_sample(run, flushed)
     last = run.commands.iloc[-1]
     assert last["purpose"] == "vent" and last["ok"] and last["command_bar"] == 0.0
@@ -288,5 +288,5 @@ def test_a_signal_while_the_run_folder_is_made_leaves_no_half_made_folder(config
     result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
     assert written == ["running"]
     assert result.path is None and result.exit_code == 128 + signal.SIGTERM
-    assert result.status == "aborted" and result.reason == "stopped by SIGTERM: vented at once"
+    assert result.status == "aborted" and result.reason == "stopped by SIGTERM at once; vented"
     assert list((tmp_path / "runs").iterdir()) == []
