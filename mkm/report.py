@@ -30,6 +30,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+import re
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -918,9 +919,12 @@ def _advice_lines(runs: list[_Run], commands: dict[int, str]) -> str:
         concerned = [r for r in runs if commands.get(r.k) == command]
         muscle = concerned[0].muscle.id
         which = ", ".join(str(r.k) for r in concerned)
+        # each argument unbroken: a path wrapped at its hyphen reads as two (mkm- out/runs)
+        arguments = " ".join(f'<span class="arg">{esc(a)}</span>'
+                             for a in re.findall(r'"[^"]*"|\S+', command))
         lines.append(f'<p class="verdict">Runs {which}: identify {esc(muscle)} from its '
                      "runs here, then give mkm report --calibration the "
-                     f"calibration.json it writes: <code>{esc(command)}</code></p>")
+                     f"calibration.json it writes: <code>{arguments}</code></p>")
     return "".join(lines)
 
 
