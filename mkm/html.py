@@ -23,6 +23,7 @@ figcaption,.caption{font-size:.85em;color:#444}
 .status-complete{background:#d9f0d3}.status-other{background:#fdd;border:1px solid #c00}
 .note{background:#fff8e1;border-left:4px solid #f0b400;padding:.4em .8em}
 .verdict{font-size:1.05em;background:#eef5ff;border-left:4px solid #2a6fdb;padding:.5em .8em}
+.arg{white-space:nowrap}
 pre{background:#f6f6f6;padding:.6em;overflow-x:auto;font-size:.8em;white-space:pre-wrap}
 dl.kv{display:grid;grid-template-columns:max-content auto;gap:.1em 1em}dl.kv dt{font-weight:600}
 dl.kv dd{margin:0}

@@ -30,6 +30,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+import re
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -81,7 +82,9 @@ from mkm.verdict import (
     NO_BUDGET,
     NO_BUDGET_IMPORTED,
     AutoPick,
+    advice_command,
     format_seconds,
+    gives_advice,
     model_label,
     muscle_advice,
     recommend,
@@ -410,8 +413,10 @@ def _summary_section(runs: list[_Run], summary: pd.DataFrame, names: dict,
     every model's largest |Err%|, RMSE and time per force for every run in one table, the
     model ``auto`` picks for each run, then each run's status."""
     banners = _banners(runs)
-    verdicts = "".join(f'<p class="verdict">{esc(_verdict(r, names, tolerance, runs))}</p>'
-                       for r in runs)
+    shared = _shared_commands(runs, names, tolerance)
+    verdicts = "".join(
+        f'<p class="verdict">{esc(_verdict(r, names, tolerance, runs, r.k in shared))}</p>'
+        for r in runs) + _advice_lines(runs, shared)
     head = ("<tr><th>run</th><th>model</th><th>largest |Err%|</th><th>RMSE [N]</th>"
             "<th>time per force</th><th>valid steps</th>"
             + (f"<th>auto at {100 * tolerance:g} %</th>" if tolerance else "") + "</tr>")
@@ -858,25 +863,69 @@ def _same_model(a: str, b: str) -> bool:
     return ma.params() == mb.params()
 
 
-def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = ()) -> str:
+def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (),
+             command_below: bool = False) -> str:
     """The run's verdict sentence (:func:`mkm.verdict.verdict`) with auto's pick and the
     measurement's distance from the report's FE model, if it has one; the identify command it
     suggests takes every run of ``runs`` of the same muscle (one eps alone confounds the braid
-    angle and the rubber)."""
+    angle and the rubber); ``command_below``: it refers to that command, said once below the
+    verdicts (:func:`_advice_lines`)."""
     label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
-    choice = _named_choice(r, names, tolerance) if tolerance and r.summary else None
-    best, _ = recommend(r.summary, tolerance)
-    same = bool(choice and best and _same_model(choice.spec,
-                                                r.in_place.get(best["model"], best["model"])))
+    choice, same = _auto_pick(r, names, tolerance)
     fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
           if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
+    path, identified, muscle_runs = _advice_arguments(r, runs)
     return verdict(label, r.summary, names, tolerance, choice, same,
                    fe[0] if fe else None, muscle_advice(
-                       str(r.run.path), _identified_runs(r.calibration),
-                       r.calibration.path.name if r.calibration else "",
-                       [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)],
-                       _identified_record(r.calibration)),
+                       path, identified, r.calibration.path.name if r.calibration else "",
+                       muscle_runs, _identified_record(r.calibration), command_below),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET)
+
+
+def _auto_pick(r: _Run, names: dict, tolerance: float | None) -> tuple[AutoPick | None, bool]:
+    """auto's pick for the run at ``tolerance`` and whether it is the verdict's model."""
+    choice = _named_choice(r, names, tolerance) if tolerance and r.summary else None
+    best, _ = recommend(r.summary, tolerance)
+    return choice, bool(choice and best and _same_model(
+        choice.spec, r.in_place.get(best["model"], best["model"])))
+
+
+def _advice_arguments(r: _Run, runs: list[_Run]) -> tuple[str, list[dict], list[str]]:
+    """The run, the calibration's runs and the muscle's runs at hand, as
+    :func:`mkm.verdict.muscle_advice` and :func:`mkm.verdict.advice_command` take them."""
+    return (str(r.run.path), _identified_runs(r.calibration),
+            [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)])
+
+
+def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> dict[int, str]:
+    """The identify command each run's verdict suggests (run number -> command) where several
+    verdicts suggest the same one: said once (:func:`_advice_lines`), it keeps the first screen
+    for the verdicts rather than the same run paths again and again."""
+    commands = {}
+    for r in runs:
+        command = advice_command(*_advice_arguments(r, runs))
+        if command and gives_advice(r.summary, names, tolerance,
+                                    *_auto_pick(r, names, tolerance)):
+            commands[r.k] = command
+    said = list(commands.values())
+    return {k: c for k, c in commands.items() if said.count(c) > 1}
+
+
+def _advice_lines(runs: list[_Run], commands: dict[int, str]) -> str:
+    """Each identify command of :func:`_shared_commands`, said once, with the runs it
+    concerns."""
+    lines = []
+    for command in dict.fromkeys(commands.values()):
+        concerned = [r for r in runs if commands.get(r.k) == command]
+        muscle = concerned[0].muscle.id
+        which = ", ".join(str(r.k) for r in concerned)
+        # each argument unbroken: a path wrapped at its hyphen reads as two (mkm- out/runs)
+        arguments = " ".join(f'<span class="arg">{esc(a)}</span>'
+                             for a in re.findall(r'"[^"]*"|\S+', command))
+        lines.append(f'<p class="verdict">Runs {which}: identify {esc(muscle)} from its '
+                     "runs here, then give mkm report --calibration the "
+                     f"calibration.json it writes: <code>{arguments}</code></p>")
+    return "".join(lines)
 
 
 def _same_muscle(a: Muscle, b: Muscle) -> bool:

@@ -101,7 +101,8 @@ def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET) -> 
 
 
 def muscle_advice(run_path: str, identified: list[dict] | None = None,
-                  calibration_name: str = "", muscle_runs=(), fit: dict | None = None) -> str:
+                  calibration_name: str = "", muscle_runs=(), fit: dict | None = None,
+                  command_below: bool = False) -> str:
     """What the FE model's distance from a run, beyond auto's bound, tells a reader: identify
     the muscle, from ``muscle_runs`` (its runs at hand, this one among them); or, where the
     report's calibration was identified (``identified``: its runs as :mod:`mkm.identify`
@@ -110,14 +111,17 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
     model does not fit it (no calibration would). ``fit``: the identification's record
     (calibration.json's ``identified``, its ``misfit`` and ``parameters``): an identification
     that fitted its runs within their noise did so with braid friction and creep, which the
-    report's static models lack, and that is what the distance is then."""
+    report's static models lack, and that is what the distance is then. ``command_below``:
+    the identify command (:func:`advice_command`) is said once below the verdicts of the runs
+    it concerns, so this one refers to it rather than repeating every run's path."""
+    command = advice_command(run_path, identified, muscle_runs)
+    shown = "the mkm identify command below" if command_below else f"`{command}`"
     if not identified:
         runs = list(dict.fromkeys([*muscle_runs, run_path]))
         whose = "it" if len(runs) == 1 else f"it from its {len(runs)} runs here"
-        return ("which points to the muscle, not the model: identify "
-                f"{whose} (`{identify_command(*runs)}`)")
+        return f"which points to the muscle, not the model: identify {whose} ({shown})"
     name = f" ({calibration_name})" if calibration_name else ""
-    if any(r.get("run") == Path(run_path).name for r in identified):
+    if command is None:
         misfit = (fit or {}).get("misfit") or {}
         if misfit.get("judged") and not misfit.get("misfit_branches"):
             found = {p.get("parameter"): p.get("value") for p in fit.get("parameters", [])
@@ -135,16 +139,46 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
                 "the model does not fit them all with one muscle (the identification's misfit "
                 "notes say where)")
     at = ", ".join(f"{r['muscle']['eps']:g}" for r in identified if "muscle" in r)
-    paths = [r["path"] for r in identified if "path" in r]
     return (f"which points to the muscle, not the model: the calibration{name}, identified on "
             f"the runs at eps {at}, does not carry over to this run; identify with it among "
-            f"them (`{identify_command(*paths, run_path)}`)")
+            f"them ({shown})")
+
+
+def advice_command(run_path: str, identified: list[dict] | None = None,
+                   muscle_runs=()) -> str | None:
+    """The ``mkm identify`` line :func:`muscle_advice` suggests for a run (same arguments):
+    the muscle's runs at hand, or the calibration's runs and this one; ``None`` for a run the
+    calibration was identified on (identifying it again would not help)."""
+    if not identified:
+        return identify_command(*dict.fromkeys([*muscle_runs, run_path]))
+    if any(r.get("run") == Path(run_path).name for r in identified):
+        return None
+    return identify_command(*[r["path"] for r in identified if "path" in r], run_path)
 
 
 def identify_command(*run_paths) -> str:
     """The ``mkm identify`` line a verdict suggests, each run path one argument even with a
     space in it (a Windows user folder)."""
     return " ".join(["mkm identify", *(command_argument(p) for p in run_paths)])
+
+
+def _auto_err(row: dict, summary: list[dict], names: dict[str, str], auto: AutoPick,
+              auto_same: bool) -> float:
+    """The largest |Err%| against the measurement of auto's pick (NaN: not in the report)."""
+    measured = row if auto_same else next(
+        (r for r in summary if names.get(r["model"]) == auto.name), None)
+    return _err(measured) if measured is not None else math.nan
+
+
+def gives_advice(summary: list[dict], names: dict[str, str], tolerance: float | None,
+                 auto: AutoPick | None = None, auto_same: bool = False) -> bool:
+    """Whether :func:`verdict` (same arguments) says the muscle advice: auto's pick is further
+    from the measurement than the tolerance."""
+    row = recommend(summary, tolerance)[0]
+    if row is None or auto is None or tolerance is None:
+        return False
+    auto_err = _auto_err(row, summary, names, auto, auto_same)
+    return math.isfinite(auto_err) and auto_err > 100 * tolerance
 
 
 def verdict(run_label: str, summary: list[dict], names: dict[str, str],
@@ -189,13 +223,11 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     text = f"{run_label}: {head}, {_consistency(row, summary, no_budget)}."
     if auto is None or tol is None:
         return text
-    measured = row if auto_same else next(
-        (r for r in summary if names.get(r["model"]) == auto.name), None)
-    auto_err = _err(measured) if measured is not None else math.nan
+    auto_err = _auto_err(row, summary, names, auto, auto_same)
     which = "it too" if auto_same else f"{auto.name} instead"
     why = (f" auto at {tol} picks {which}, bounding its error against the FE model "
            f"({auto.bound_pct:.2f} %), not against this measurement")
-    if math.isfinite(auto_err) and auto_err > 100 * tolerance:
+    if gives_advice(summary, names, tolerance, auto, auto_same):
         gap = (f"{fe_err[1]:.2f} %" if fe_err is not None
                else f"at least {max(auto_err - auto.bound_pct, 0.0):.2f} %")
         off = "" if auto_same else f", from which it is {auto_err:.2f} % off"

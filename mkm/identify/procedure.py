@@ -44,7 +44,7 @@ from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, S
 from mkm.identify.groups import SEARCHES
 from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
 from mkm.identify.result import Identification
-from mkm.identify.runs import load_runs
+from mkm.identify.runs import load_runs, offset_bound_said
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
 #: a reduced candidate (friction or creep dropped), or a fit to the runs but one, that has not
@@ -326,10 +326,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     offset = best.values.get("pressure_offset_bar")
     if "pressure_offset_bar" in best.names and fitting.at_edge(
             offset, best.bounds["pressure_offset_bar"]):
-        notes.append(f"the pressure monitor's offset is at its declared bound "
-                     f"({offset:+.3g} bar): the runs' threshold "
-                     "wants more than the monitor may be off; check the monitor's zero, or the "
-                     "model does not fit these runs near the threshold")
+        notes.append(f"the pressure monitor's offset ({offset:+.3g} bar) is at "
+                     f"{offset_bound_said(runs)}: the runs' threshold wants more than the "
+                     "monitor may be off; check the monitor's zero, or the model does not fit "
+                     "these runs near the threshold")
 
     notify("leave-one-run-out and the nominal model")
     checks = _checks(runs, fe, source, best, nominal)

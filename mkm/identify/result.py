@@ -52,6 +52,7 @@ from mkm.fem.materials import SILASTIC_S
 from mkm.identify.fitting import GEOMETRY, STATIC_NAMES, Fit, full_parameters, geometry, rubber
 from mkm.identify.goodness import Goodness
 from mkm.identify.intervals import robust_covariance
+from mkm.identify.runs import offset_bound_said
 
 UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
          "t0_mm": "mm", "D0_mm": "mm", "L0_mm": "mm", "pressure_offset_bar": "bar",
@@ -170,8 +171,7 @@ class Identification:
                 add("creep_tau_s", math.exp(value), *np.exp(interval[name]))
             elif name == "pressure_offset_bar":
                 add(name, value, *interval[name], source="nuisance: the monitor's offset within "
-                    f"its declared bound +-{min(r.monitor_offset_bound_bar for r in self.runs):g}"
-                    " bar (moves the threshold)")
+                    f"{offset_bound_said(self.runs)} (moves the threshold)")
             elif name in GEOMETRY:
                 add(name, value, *interval[name], source=f"the runs (declared "
                     f"{float(self.runs[0].muscle[name]):g} mm)")

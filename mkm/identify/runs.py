@@ -65,6 +65,9 @@ class RunData:
     monitor_gain_bound: float = 0.016
     sensitivity_tolerance: float = 0.001
     instrument_declared: bool = True  # False: the run recorded no bounds, defaults taken
+    #: False: the run declared no pressure accuracy, its offset bound is the default
+    offset_bound_declared: bool = True
+    imported: bool = False  # a table or ramp of ``mkm import``: --accuracy declares its bounds
     #: the tube's declared +- tolerances [mm] (``D0_mm``, ``t0_mm``: run.json's
     #: ``calibration.muscle_tolerances``, :class:`mkm.fem.tolerances.Tolerances` where none)
     geometry_tolerance_mm: dict = field(default_factory=lambda: _tube_tolerances(None))
@@ -216,6 +219,9 @@ def _instrument(run) -> dict:
            "instrument_declared": ("monitor_accuracy_bar" in recorded["regulator"]
                                    and "max_pressure_bar" in recorded["regulator"]
                                    and "sensitivity_tolerance_fraction" in recorded["loadcell"]),
+           "offset_bound_declared": any(key in recorded["regulator"] for key in (
+               "monitor_accuracy_bar", "monitor_components")),
+           "imported": bool(run.meta.imported_from),
            "geometry_tolerance_mm": _tube_tolerances(getattr(run.meta.muscle, "tolerances",
                                                              None))}
     return {**out, **_declared_instrument(run)}
@@ -243,7 +249,23 @@ def _declared_instrument(run) -> dict:
         top = float(run.steps["pressure_bar_mean"].max()) if len(run.steps) else 0.0
         out["monitor_offset_bound_bar"] = bound.absolute or bound.fraction * top
         out["monitor_gain_bound"] = bound.fraction
+        out["offset_bound_declared"] = True
     return out
+
+
+def offset_bound_said(runs) -> str:
+    """The pressure monitor's offset bound the fit keeps to (the smallest of the runs') as the
+    notes say it: declared, or the configuration's default where the run that sets it declared
+    none (an imported table without ``--accuracy``, a run whose run.json records no monitor
+    accuracy), with how to declare it."""
+    bound = min(r.monitor_offset_bound_bar for r in runs)
+    setting = [r for r in runs if r.monitor_offset_bound_bar == bound]
+    if any(r.offset_bound_declared for r in setting):
+        return f"its declared bound +-{bound:g} bar"
+    why = ("the table declared no pressure accuracy: mkm import ... --accuracy pressure=... "
+           "declares it" if any(r.imported for r in setting) else
+           "the run's run.json declares no pressure monitor accuracy")
+    return f"the default bound +-{bound:g} bar ({why})"
 
 
 def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:

@@ -396,6 +396,34 @@ def test_a_run_without_force_has_no_equation7_error_in_the_checks():
     assert out["rising"] == pytest.approx(5.0) and out["falling"] == pytest.approx(10.0)
 
 
+@pytest.mark.parametrize(("accuracy", "bound"), [
+    (None, "the default bound +-0.04 bar (the table declared no pressure accuracy: mkm import "
+           "... --accuracy pressure=... declares it)"),
+    ("force=0.5N+1%", "the default bound +-0.04 bar (the table declared no pressure accuracy: "
+                      "mkm import ... --accuracy pressure=... declares it)"),
+    ("force=0.5N+1%,pressure=0.01bar", "its declared bound +-0.01 bar")])
+def test_the_offset_at_its_bound_says_whether_the_bound_was_declared(tmp_path, accuracy, bound):
+    """The published DMSP-10 at eps 0 pulls only above 0.37 bar (the line through its steps):
+    the monitor's offset the fit wants is beyond any bound, so it rests on the smallest. A table
+    imported without the pressure's accuracy gets the configuration's 0.04 bar (1 % of an ITV's
+    4 bar), which its lab never declared (was: "at its declared bound")."""
+    from mkm.bench.exchange import import_table, parse_accuracy
+    from mkm.paths import published_table
+
+    runs = import_table(published_table("martens_boblan_2017_forcemaps.csv"), tmp_path / "runs",
+                        {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5, "L0_mm": None,
+                         "eps": None}, select="Festo DMSP-10-250",
+                        accuracy=parse_accuracy(accuracy) if accuracy else None)
+    result = identify([runs[0].path, runs[2].path], params="theta0,rubber,offset",
+                      model="thickwall", search="model")  # eps 0 and 0.124
+    offset = bound.split("+-")[1].split(" ")[0]
+    said = (f"the pressure monitor's offset (+{offset} bar) is at {bound}: the runs' threshold "
+            "wants more than the monitor may be off")
+    assert [n for n in result.notes if "offset (" in n][0].startswith(said)
+    source = result.parameters().set_index("parameter").loc["pressure_offset_bar", "source"]
+    assert source == f"nuisance: the monitor's offset within {bound} (moves the threshold)"
+
+
 def test_a_slack_run_leaves_the_closed_forms_slope_fits_to_the_others(tmp_path):
     """The published DMSP-10 (mkm data): its shortest length is slack at every pressure.
     Writing the identification refits each closed form's angle to the runs' slopes; the slack

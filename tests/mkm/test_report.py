@@ -10,6 +10,7 @@ import shutil
 import struct
 import subprocess
 from dataclasses import replace
+from html import unescape
 from pathlib import Path
 
 import numpy as np
@@ -520,6 +521,43 @@ def test_the_verdict_knows_the_runs_an_identified_calibration_saw(tmp_path):
     assert _identified_runs(Calibration(tmp_path / "calibration.json", entries)) == runs
     assert _identified_runs(Calibration.shipped()) == []  # the paper's fit: no runs of a lab
     assert _identified_runs(None) == []
+
+
+def test_the_identify_advice_of_several_runs_is_said_once_on_the_first_screen(tmp_path):
+    """The published DMSP-10's five lengths: every scored run is tens of % from every model
+    (the shipped calibration is not this muscle's), so four verdicts advise the same identify
+    of all five runs. Said in each verdict, its paths filled the first screen (was: 4 times);
+    said once below the verdicts, each verdict refers to it. The slack length (0 N at every
+    step) is not scored, so gets no advice."""
+    import shlex
+
+    from mkm.bench.exchange import import_table
+    from mkm.paths import published_table
+
+    imported = import_table(published_table("martens_boblan_2017_forcemaps.csv"),
+                            tmp_path / "runs", {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5,
+                                                "L0_mm": None, "eps": None},
+                            select="Festo DMSP-10-250")
+    paths = [str(r.path) for r in imported]
+    path = build_report(paths, parse_models("eq2,thickwall,surrogate:kind=muscle-gp-range"),
+                        out_dir=tmp_path / "r", cache_dir=None, tolerance=0.02,
+                        surrogate_section=False)
+    html = path.read_text(encoding="utf-8")
+    start = html.index('<h2 id="summary">')
+    first = html[start:html.index("<table", start)]
+    assert first.count(paths[0]) == 1  # the command and its paths: once
+    verdicts = re.findall(r'<p class="verdict">(Run \d.*?)</p>', first)
+    assert len(verdicts) == 5
+    advised = [k for k, v in enumerate(verdicts, 1) if v.endswith(
+        "identify it from its 5 runs here (the mkm identify command below).")]
+    assert advised == [1, 2, 3, 4] and "slack" in verdicts[4]
+    line = re.search(r'<p class="verdict">Runs 1, 2, 3, 4: identify dmsp-10 .*?<code>(.*?)'
+                     r"</code></p>", first)
+    assert shlex.split(unescape(re.sub("<[^>]+>", "", line.group(1)))) == [
+        "mkm", "identify", *paths]
+    # each path one unbreakable piece: wrapped at a hyphen, it read as two (mkm- out/runs/...)
+    assert all(f'<span class="arg">{p}</span>' in line.group(1) for p in paths)
+    assert ".arg{white-space:nowrap}" in html
 
 
 def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument():

@@ -7,7 +7,15 @@ import math
 
 import pytest
 
-from mkm.verdict import AutoPick, format_seconds, muscle_advice, recommend, verdict
+from mkm.verdict import (
+    AutoPick,
+    advice_command,
+    format_seconds,
+    gives_advice,
+    muscle_advice,
+    recommend,
+    verdict,
+)
 
 
 def _row(model, err, seconds, consistent=True, valid=5, band=0.5):
@@ -143,6 +151,28 @@ def test_the_identify_it_suggests_takes_every_run_of_the_muscle_at_hand():
         "(`mkm identify runs/r1 runs/r2`)")
     assert muscle_advice("runs/r1", muscle_runs=["runs/r1"]).endswith(
         "identify it (`mkm identify runs/r1`)")
+
+
+def test_a_verdict_can_refer_to_the_identify_command_said_once_for_several_runs():
+    """Several runs of one muscle advise the same identify: the report says it once and each
+    verdict refers to it; whether a verdict gives the advice at all is the sentence's own test
+    (auto's pick further from the measurement than the tolerance)."""
+    runs = ["runs/r1", "runs/r2", "runs/r3"]
+    assert muscle_advice("runs/r2", muscle_runs=runs, command_below=True) == (
+        "which points to the muscle, not the model: identify it from its 3 runs here "
+        "(the mkm identify command below)")
+    assert advice_command("runs/r2", muscle_runs=runs) == "mkm identify runs/r1 runs/r2 runs/r3"
+    identified = [{"run": "r1", "path": "runs/r1", "muscle": {"eps": 0.0}}]
+    assert advice_command("runs/r1", identified) is None  # its own run: no identify helps
+    assert advice_command("runs/r2", identified) == "mkm identify runs/r1 runs/r2"
+    # the surrogate, auto's pick, is 5.95 % off: beyond 2 %, within 10 %
+    pick = AutoPick("surrogate", "Surrogate", 0.8, "")
+    assert gives_advice(ROWS, NAMES, 0.02, pick, False)
+    assert "the mkm identify command below" in verdict(
+        "Run 1", ROWS, NAMES, 0.02, pick, False, None,
+        muscle_advice("runs/r1", muscle_runs=runs, command_below=True))
+    assert not gives_advice(ROWS, NAMES, 0.10, pick, False)
+    assert not gives_advice(ROWS, NAMES, 0.02, None, False)
 
 
 def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
