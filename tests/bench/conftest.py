@@ -136,6 +136,39 @@ def fake_driver(config, _interpreter):
 
 
 @pytest.fixture
+def ctrl_c_run(config, tmp_path):
+    """``ctrl_c_run(vent_failures) -> (BenchRun, failed)``: a simulated run that Ctrl-C stops at
+    sample 45 (0.5 bar commanded), whose vent writes from there fail ``vent_failures`` times
+    (None: every one; an AO write error; ``failed`` lists them); not yet executed."""
+    from mkm.bench.backend import AOWriteFailed
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    def make(vent_failures: int | None):
+        backend = SimBackend(config)
+        write, read, failed = backend.write_command, backend.read, []
+
+        def vent_fails(volts):
+            if volts == 0.0 and backend._index >= 45 and (
+                    vent_failures is None or len(failed) < vent_failures):
+                failed.append(volts)
+                raise AOWriteFailed("simulated AO write failure")
+            write(volts)
+
+        def ctrl_c_at_45(n, timeout):
+            block = read(n, timeout)
+            if block.first_index == 45:
+                run.request_stop()  # what the first SIGINT does
+            return block
+
+        backend.write_command, backend.read = vent_fails, ctrl_c_at_45
+        run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+        return run, failed
+
+    return make
+
+
+@pytest.fixture
 def mkm_cli(capsys):
     """``mkm_cli(argv) -> (exit status, stdout, stderr)`` of ``mkm argv`` run in-process."""
     from mkm.cli import main

@@ -277,15 +277,12 @@ def test_an_over_pressure_while_the_stop_request_read_hangs_is_vented_at_once(co
 
 
 def test_a_failed_vent_with_the_state_folder_hung_is_not_said_to_have_gone_out(
-        config, tmp_path, monkeypatch):
+        ctrl_c_run, monkeypatch):
     # the state folder hangs from the 0.5 bar marker on; a Ctrl-C at sample 45; every vent
     # write after it fails. The marker's problem used to end "the vent went out without it"
     # while no vent had gone out
     import threading
 
-    from mkm.bench.backend import AOWriteFailed
-    from mkm.bench.run import BenchRun
-    from mkm.bench.sim import SimBackend
     from mkm.bench.unvented import BenchLease
 
     release = threading.Event()
@@ -296,22 +293,7 @@ def test_a_failed_vent_with_the_state_folder_hung_is_not_said_to_have_gone_out(
             release.wait(120)  # released at the end of the test
         command(self, pressure_bar)
 
-    backend = SimBackend(config)
-    write, read = backend.write_command, backend.read
-
-    def vent_fails(volts):
-        if volts == 0.0 and backend._index >= 45:
-            raise AOWriteFailed("simulated AO write failure")
-        write(volts)
-
-    def ctrl_c_at_45(n, timeout):
-        block = read(n, timeout)
-        if block.first_index == 45:
-            run.request_stop()  # what the first SIGINT does
-        return block
-
-    backend.write_command, backend.read = vent_fails, ctrl_c_at_45
-    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    run, _ = ctrl_c_run(None)  # every vent write fails
     monkeypatch.setattr(BenchLease, "command", hanging)
     try:
         result = run.execute()

@@ -505,29 +505,11 @@ def test_an_interrupt_during_the_vent_does_not_leave_the_muscle_pressurised(conf
 
 
 @pytest.mark.parametrize("fails", [1, 3])
-def test_a_ctrl_c_stop_says_vented_only_once_the_vent_went_out(config, tmp_path, fails):
+def test_a_ctrl_c_stop_says_vented_only_once_the_vent_went_out(ctrl_c_run, fails):
     # a Ctrl-C at 4.5 s (0.5 bar commanded); the stop's vent write fails once (written again,
     # then out), or all three times (never out). The reason used to say "at a safe point;
     # vented" before the vent was tried: "...; vented; vent command failed ... VENT BY HAND"
-    from mkm.bench.backend import AOWriteFailed
-
-    backend = SimBackend(config)
-    write, read, failed = backend.write_command, backend.read, []
-
-    def fails_at_the_stop(volts):
-        if volts == 0.0 and backend._index >= 45 and len(failed) < fails:
-            failed.append(volts)
-            raise AOWriteFailed("simulated AO write failure")
-        write(volts)
-
-    def ctrl_c_at_45(n, timeout):
-        block = read(n, timeout)
-        if block.first_index == 45:
-            run.request_stop()  # what the first SIGINT does
-        return block
-
-    backend.write_command, backend.read = fails_at_the_stop, ctrl_c_at_45
-    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    run, failed = ctrl_c_run(fails)
     result = run.execute()
     failure = "vent command failed (AOWriteFailed: simulated AO write failure)"
     assert len(failed) == fails
@@ -542,30 +524,12 @@ def test_a_ctrl_c_stop_says_vented_only_once_the_vent_went_out(config, tmp_path,
         assert "vented" not in result.reason and "VENT BY HAND" in result.reason
 
 
-def test_a_vent_write_that_fails_once_is_written_again_before_the_check(config, tmp_path):
+def test_a_vent_write_that_fails_once_is_written_again_before_the_check(ctrl_c_run):
     # a Ctrl-C at 4.5 s (0.5 bar commanded); the stop's vent write fails once (an AO write
     # error the device recovers from): the vent was not written again, the regulator held
     # 0.5 bar through the whole vent check and the run asked for a vent by hand. Now it is
     # written again at once and verified
-    from mkm.bench.backend import AOWriteFailed
-
-    backend = SimBackend(config)
-    write, read, failed = backend.write_command, backend.read, []
-
-    def fails_once_at_the_stop(volts):
-        if volts == 0.0 and backend._index >= 45 and not failed:
-            failed.append(volts)
-            raise AOWriteFailed("simulated AO write failure")
-        write(volts)
-
-    def ctrl_c_at_45(n, timeout):
-        block = read(n, timeout)
-        if block.first_index == 45:
-            run.request_stop()  # what the first SIGINT does
-        return block
-
-    backend.write_command, backend.read = fails_once_at_the_stop, ctrl_c_at_45
-    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    run, failed = ctrl_c_run(1)
     result = run.execute()
     loaded = load_run(result.path)
     assert failed and result.status == "aborted" and not result.manual_vent_required
