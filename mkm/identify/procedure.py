@@ -326,10 +326,14 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     offset = best.values.get("pressure_offset_bar")
     if "pressure_offset_bar" in best.names and fitting.at_edge(
             offset, best.bounds["pressure_offset_bar"]):
+        # a table's user has no monitor to check, only the zero the table's pressures hold
+        check = ("check the table's pressure zero (a gauge that read above 0 bar vented: mkm "
+                 "import --vented)" if all(r.imported for r in runs) else
+                 "check the monitor's zero")
         notes.append(f"the pressure monitor's offset ({offset:+.3g} bar) is at "
                      f"{offset_bound_said(runs)}: the runs' threshold wants more than the "
-                     "monitor may be off; check the monitor's zero, or the model does not fit "
-                     "these runs near the threshold")
+                     f"monitor may be off; {check}, or the model does not fit these runs near "
+                     "the threshold")
 
     notify("leave-one-run-out and the nominal model")
     checks = _checks(runs, fe, source, best, nominal)
