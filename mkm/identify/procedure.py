@@ -327,9 +327,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if "pressure_offset_bar" in best.names and fitting.at_edge(
             offset, best.bounds["pressure_offset_bar"]):
         # a table's user has no monitor to check, only the zero the table's pressures hold
-        check = ("check the table's pressure zero (a gauge that read above 0 bar vented: mkm "
-                 "import --vented)" if all(r.imported for r in runs) else
-                 "check the monitor's zero")
+        check = ("check the zero of the table's pressures" if all(r.imported for r in runs)
+                 else "check the monitor's zero")
         notes.append(f"the pressure monitor's offset ({offset:+.3g} bar) is at "
                      f"{offset_bound_said(runs)}: the runs' threshold wants more than the "
                      f"monitor may be off; {check}, or the model does not fit these runs near "

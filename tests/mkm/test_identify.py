@@ -421,9 +421,9 @@ def test_the_offset_at_its_bound_says_whether_the_bound_was_declared(tmp_path, a
             "wants more than the monitor may be off")
     note = [n for n in result.notes if "offset (" in n][0]
     assert note.startswith(said)
-    # a table has no monitor to check: its pressures' zero
-    assert "check the table's pressure zero (a gauge that read above 0 bar vented: mkm import " \
-        "--vented)" in note and "monitor's zero" not in note
+    # a table has no monitor to check: its pressures' zero (a step table: --vented refused)
+    assert "; check the zero of the table's pressures, or the model" in note
+    assert "monitor's zero" not in note
     source = result.parameters().set_index("parameter").loc["pressure_offset_bar", "source"]
     assert source == f"nuisance: the monitor's offset within {bound} (moves the threshold)"
 
