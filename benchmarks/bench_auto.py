@@ -37,6 +37,7 @@ from mkm.auto import MIN_SCALE_N
 from mkm.core.records import jsonable, provenance
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict
 from mkm.registry import build_spec
+from mkm.surrogate import kinds
 from mkm.surrogate.design import BOX
 
 SWEEP_BAR = np.round(np.arange(0.25, 2.501, 0.25), 2)
@@ -151,7 +152,7 @@ def main() -> None:
     parser.add_argument("--calls", type=int, default=200)
     parser.add_argument("--seed", type=int, default=None)
     parser.add_argument("--tolerances", default="0.005,0.01,0.02,0.05")
-    parser.add_argument("--range", choices=("box", "practical"), default="box",
+    parser.add_argument("--range", choices=tuple(kinds.RANGES), default="box",
                         help="practical: muscles of the practical range (draw_muscles, the "
                         "seed), sweeps 0.5-8 bar: outside the surrogate's box the FE meshes "
                         "answer at their bound on the scale of the call")
@@ -207,10 +208,10 @@ def main() -> None:
                         "bound_by_model": bound_check(rows),
                         "used": dict(used), "auto_s_median": float(np.median(seconds)),
                         "fine_fe_s_median": float(np.median([c[5] for c in todo]))}
-        kinds = "; ".join(f"{k} {100 * v['within']:.1f} % of {v['calls']} (worst "
+        per_kind = "; ".join(f"{k} {100 * v['within']:.1f} % of {v['calls']} (worst "
                           f"{v['worst_err_pct']:.3f} %)" for k, v in by_kind.items())
         print(f"tolerance {100 * tol:g} %: {100 * within:.1f} % of {len(errors)} calls within "
-              f"(target >= 99 %), worst {errors.max():.3f} %: {kinds}; used {dict(used)}; auto "
+              f"(target >= 99 %), worst {errors.max():.3f} %: {per_kind}; used {dict(used)}; auto "
               f"{np.median(seconds):.3g} s per call (median)")
         for model, check in results[tol]["bound_by_model"].items():
             print(f"  {model}: {check['exceeded']} of {check['calls']} calls above the bound "

@@ -47,6 +47,12 @@ FITS = (("thickwall", "theta0,rubber"), ("thickwall", "theta0,rubber,L0"),
         ("axisym:mesh=coarse", "theta0,rubber,L0"))
 
 
+def fits_arg(text: str) -> tuple:
+    """``MODEL:PARAMS`` pairs separated by ``;`` (a model spec may hold ``:``: the last one
+    splits)."""
+    return tuple(tuple(fit.rsplit(":", 1)) for fit in text.split(";"))
+
+
 def imported(force_map, out: Path) -> list:
     """The map's runs as ``mkm import`` writes them (as identify reads them), by eps."""
     run_id, accuracy = MUSCLES[force_map.muscle]
@@ -68,7 +74,7 @@ def score(data, result, force_map, model: str) -> dict:
     return {"errors": errors, "threshold_bar": threshold["fitted threshold [bar]"]}
 
 
-def study(out: Path) -> list[dict]:
+def study(out: Path, fits=FITS) -> list[dict]:
     rows = []
     for force_map in read_maps():
         runs = imported(force_map, out / force_map.muscle.replace(" ", "_"))
@@ -78,7 +84,7 @@ def study(out: Path) -> list[dict]:
         loaded = [r for r in runs[1:] if r.steps["force_N_mean"].max() > 0]
         for other in loaded:
             pair = [runs[0], other]
-            for model, params in FITS:
+            for model, params in fits:
                 started = time.perf_counter()
                 result = identify([r.path for r in pair], params=params, model=model,
                                   search="model", cache_dir=None)
@@ -92,6 +98,8 @@ def study(out: Path) -> list[dict]:
                     "fitted": params.replace(",", ", "),
                     "trained on eps": f"0, {other.eps:g}",
                     "L0 mm": round(fitted_L0, 2),
+                    **({"t0 mm": round(result.fit.values["t0_mm"], 3)}
+                       if "t0_mm" in result.fit.values else {}),
                     "nominal L0 mm": NOMINAL_LENGTH_MM[force_map.muscle],
                     "theta0 deg": round(result.fit.values["theta0_deg"], 3),
                     "rubber x Silastic S": round(result.fit.values["rubber_scale"], 3),
@@ -112,9 +120,12 @@ def study(out: Path) -> list[dict]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default="identify_rest_length.json")
+    parser.add_argument("--fits", type=fits_arg, default=FITS, metavar="MODEL:PARAMS;...",
+                        help="the fits, e.g. 'thickwall:theta0,rubber,L0,t0' (default: the "
+                             "three above)")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
-        rows = study(Path(folder))
+        rows = study(Path(folder), args.fits)
     write_json_atomic(Path(args.out), {**provenance(), "table": TABLE.name, "rows": rows})
     print(f"wrote {args.out}")
 

@@ -301,6 +301,8 @@ BENCHMARKS = {
     "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
     "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 1 --seed 0 --out {out}",
     "identify_rest_length.json": "benchmarks/bench_identify_rest_length.py --out {out}",
+    "identify_rest_length_wall.json": "benchmarks/bench_identify_rest_length.py --fits "
+                                      "thickwall:theta0,rubber,L0,t0 --out {out}",
     "identify_coverage.json": "benchmarks/bench_identify_coverage.py --draws 27 --out {out}",
     "identify_coverage_infamily.json": "benchmarks/bench_identify_coverage.py --draws 30 "
                                        "--seed 7 --departures in-family --out {out}",

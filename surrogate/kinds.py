@@ -29,6 +29,8 @@ from mkm.core.registry import Registry
 BEST = "muscle-gp"
 #: The kind auto takes as the reference where :data:`BEST`'s box does not cover a call.
 RANGE = "muscle-gp-range"
+#: The muscle ranges a design or a benchmark draws from, by name, and the kind each trains.
+RANGES = {"box": BEST, "practical": RANGE}
 CALL_INPUTS = ("pressure_bar", "D0_mm", "t0_mm", "eps")
 #: Arguments every factory may take; the others are the kind's parameters.
 COMMON_ARGUMENTS = ("inputs", "fixed", "random_state")

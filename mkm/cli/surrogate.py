@@ -155,7 +155,7 @@ def register(subparsers) -> None:
                         "(what rescales its std to 68/95/99.7 %% within 1/2/3 std)")
     design.add_argument("--held-out", action="store_true",
                         help="with --random-seeds --update-shipped: write the held-out set")
-    design.add_argument("--range", choices=("box", "practical"), default="box",
+    design.add_argument("--range", choices=tuple(kinds.RANGES), default="box",
                         help="practical: --muscles fresh random muscles of the practical range "
                         "(seed --seed; sweeps 0-8 bar) instead of the box's design")
     design.set_defaults(func=_design, written_files={"out": ".csv"})
