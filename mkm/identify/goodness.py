@@ -43,7 +43,8 @@ from scipy import stats
 from mkm.fem.calibration import THRESHOLD_FLOOR_FRACTION, line_above_threshold
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.identify import fitting
-from mkm.identify.runs import step_slopes
+from mkm.identify.groups import GROUPS
+from mkm.identify.runs import shown_effects, step_slopes
 
 #: a misfit: all steps' chi-square this improbable under their noise alone (a branch's: this
 #: over the number of branches)
@@ -93,6 +94,7 @@ class Goodness:
     left_out: list[str] = field(default_factory=list)  # runs whose steps show no noise
     widened: dict = field(default_factory=dict)  # parameter: factor applied
     fitted: tuple[str, ...] = ()  # the fit's parameters: a misfit names what it did not fit
+    shown: tuple[str, ...] = ()  # the --params groups of what the runs show (SHOWN)
 
     @property
     def reduced(self) -> float:
@@ -149,9 +151,20 @@ class Goodness:
         unfitted = [what for name, what in UNDECLARED.items() if name not in self.fitted]
         fit_them = f"; or fit {' or '.join(unfitted)}" if unfitted else ""
         return (f"misfit: {shown}{more}: the model does not follow these steps within their "
-                f"noise, intervals widened by x{self.birge_ratio:.3g} (the estimates may be "
-                "biased too: check the monitor's zero, the load cell's calibration, the muscle's "
-                f"wall and braid{fit_them})")
+                f"noise, intervals widened by x{self.birge_ratio:.3g} ({self._left_out()}the "
+                "estimates may be biased too: check the monitor's zero, the load cell's "
+                f"calibration, the muscle's wall and braid{fit_them})")
+
+    def _left_out(self) -> str:
+        """What the runs show and the fit left out, with the ``--params`` that fits it too
+        (first: the likeliest misfit), or ''."""
+        missing = [g for g in self.shown if not set(GROUPS[g]) <= set(self.fitted)]
+        if not missing:
+            return ""
+        fitted = [g for g, names in GROUPS.items() if names and set(names) <= set(self.fitted)]
+        return (f"{' and '.join(missing)} not fitted, though the runs "
+                f"{' and '.join(SHOWN[g] for g in missing)}: --params "
+                f"{','.join(fitted + missing)} fits {'them' if len(missing) > 1 else 'it'} too; ")
 
     def record(self) -> dict:
         return {"method": "chi-square of the settled steps' mean residuals against their own "
@@ -246,9 +259,12 @@ def assess(runs, fit) -> Goodness:
         return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE, left_out=left_out)
     chi2 = sum(b.chi2 for b in branches)
     nu = sum(b.nu for b in branches)
-    return Goodness(branches, chi2, nu, left_out=left_out, fitted=tuple(fit.names))
+    return Goodness(branches, chi2, nu, left_out=left_out, fitted=tuple(fit.names),
+                    shown=shown_effects(runs))
 
 
+#: what runs show that a fit may leave out, by the ``--params`` group that fits it
+SHOWN = {"friction": "rise and fall", "creep": "hold their steps"}
 #: what a muscle may have that its runs do not declare, and the ``--params`` group fitting it
 UNDECLARED = {"L0_mm": "its rest length (--params ...,L0: a first length already shortened)",
               "gap_mm": "a gap between tube and braid (--params ...,gap)"}

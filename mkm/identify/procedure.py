@@ -44,7 +44,7 @@ from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, S
 from mkm.identify.groups import SEARCHES
 from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
 from mkm.identify.result import Identification
-from mkm.identify.runs import load_runs, offset_bound_said
+from mkm.identify.runs import load_runs, offset_bound_said, shown_effects
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
 #: a reduced candidate (friction or creep dropped), or a fit to the runs but one, that has not
@@ -150,11 +150,11 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
 def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
     """The groups the runs can tell, and a note for each left out: friction needs a rising and
     a falling branch, creep holds of known duration (:attr:`RunData.timed`)."""
-    kept, notes = list(groups), []
-    if "friction" in kept and not any({"up", "down"} <= set(r.steps["direction"]) for r in runs):
+    kept, notes, shown = list(groups), [], shown_effects(runs)
+    if "friction" in kept and "friction" not in shown:
         kept.remove("friction")
         notes.append("friction not fitted: no run has both a rising and a falling branch")
-    if "creep" in kept and not any(r.timed for r in runs):
+    if "creep" in kept and "creep" not in shown:
         kept.remove("creep")
         notes.append("creep not fitted: no run has timed holds (a step table or a ramp)")
     if "offset" in kept and not min(r.monitor_offset_bound_bar for r in runs) > 0:

@@ -108,6 +108,14 @@ class RunData:
         return sums / np.maximum(counts, 1)
 
 
+def shown_effects(runs) -> tuple[str, ...]:
+    """The ``--params`` groups of what ``runs`` show beyond the muscle: friction in a run with a
+    rising and a falling branch, creep in one whose holds have a known duration
+    (:attr:`RunData.timed`)."""
+    return ((("friction",) if any({"up", "down"} <= set(r.steps["direction"]) for r in runs)
+             else ()) + (("creep",) if any(r.timed for r in runs) else ()))
+
+
 def step_slopes(steps: pd.DataFrame) -> np.ndarray:
     """dF/dP [N/bar] at each step, from the run's own step means (both branches' means at each
     distinct pressure)."""

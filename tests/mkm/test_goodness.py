@@ -82,6 +82,24 @@ def test_a_monitor_offset_is_a_misfit_named_in_one_line(offset):
     assert good.birge_ratio == pytest.approx(math.sqrt(good.reduced))
 
 
+def test_a_misfit_names_the_friction_and_creep_the_runs_show_and_the_fit_left_out(in_family):
+    # the simulator's friction (3 % of the force between the branches) and creep are far
+    # beyond the steps' noise (0.1 N): a fit of theta0 and the rubber alone misfits, and the
+    # line says what to add, with the --params to type
+    runs, _ = in_family
+    source = ModelStatic("thickwall", float(runs[0].muscle["L0_mm"]), cache_dir=None)
+    bare = fitting.fit(source, runs, NAMES[:2], fitting.nominal_values(33.0))
+    good = goodness.assess(runs, bare)
+    assert good.misfit and good.shown == ("friction", "creep")
+    assert ("(friction and creep not fitted, though the runs rise and fall and hold their "
+            "steps: --params theta0,rubber,friction,creep fits them too; ") in good.line()
+    with_friction = fitting.fit(source, runs, NAMES[:3], {**fitting.nominal_values(33.0),
+                                                          "hysteresis_fraction": 0.02})
+    line = goodness.assess(runs, with_friction).line()
+    assert ("(creep not fitted, though the runs hold their steps: --params "
+            "theta0,rubber,friction,creep fits it too; ") in line
+
+
 def test_a_misfit_names_the_rest_length_and_gap_it_did_not_fit(tmp_path):
     # a lab's rest length 1.5 % short of the muscle's (its first length already shortened):
     # every run's declared eps 1.5 points low, a misfit like an instrument's, that identify
