@@ -903,7 +903,8 @@ def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> 
     for the verdicts rather than the same run paths again and again."""
     commands = {}
     for r in runs:
-        command = advice_command(*_advice_arguments(r, runs))
+        command = advice_command(*_advice_arguments(r, runs),
+                                 (_identified_record(r.calibration) or {}).get("options", ()))
         if command and gives_advice(r.summary, names, tolerance,
                                     *_auto_pick(r, names, tolerance)):
             commands[r.k] = command

@@ -114,7 +114,7 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
     report's static models lack, and that is what the distance is then. ``command_below``:
     the identify command (:func:`advice_command`) is said once below the verdicts of the runs
     it concerns, so this one refers to it rather than repeating every run's path."""
-    command = advice_command(run_path, identified, muscle_runs)
+    command = advice_command(run_path, identified, muscle_runs, (fit or {}).get("options", ()))
     shown = "the mkm identify command below" if command_below else f"`{command}`"
     if not identified:
         runs = list(dict.fromkeys([*muscle_runs, run_path]))
@@ -145,21 +145,25 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
 
 
 def advice_command(run_path: str, identified: list[dict] | None = None,
-                   muscle_runs=()) -> str | None:
+                   muscle_runs=(), options=()) -> str | None:
     """The ``mkm identify`` line :func:`muscle_advice` suggests for a run (same arguments):
-    the muscle's runs at hand, or the calibration's runs and this one; ``None`` for a run the
-    calibration was identified on (identifying it again would not help)."""
+    the muscle's runs at hand, or the calibration's runs and this one with the options that
+    identification was asked with (``options``, its record's: a rest length or a gap it
+    fitted is fitted again); ``None`` for a run the calibration was identified on (identifying
+    it again would not help)."""
     if not identified:
         return identify_command(*dict.fromkeys([*muscle_runs, run_path]))
     if any(r.get("run") == Path(run_path).name for r in identified):
         return None
-    return identify_command(*[r["path"] for r in identified if "path" in r], run_path)
+    return identify_command(*[r["path"] for r in identified if "path" in r], run_path,
+                            options=options)
 
 
-def identify_command(*run_paths) -> str:
+def identify_command(*run_paths, options=()) -> str:
     """The ``mkm identify`` line a verdict suggests, each run path one argument even with a
-    space in it (a Windows user folder)."""
-    return " ".join(["mkm identify", *(command_argument(p) for p in run_paths)])
+    space in it (a Windows user folder), then ``options``."""
+    return " ".join(["mkm identify", *(command_argument(str(p)) for p in
+                                        (*run_paths, *options))])
 
 
 def _auto_err(row: dict, summary: list[dict], names: dict[str, str], auto: AutoPick,

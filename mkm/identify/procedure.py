@@ -116,7 +116,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         the intervals carry the other braid's shift.
     """
     started = time.perf_counter()
-    groups = fitting.parse_groups(params)
+    asked, asked_model = fitting.parse_groups(params), model
+    groups = asked
     if search not in SEARCHES:
         raise ValueError(f"search={search!r} is invalid: expected one of {', '.join(SEARCHES)}")
     runs = load_runs(run_dirs)
@@ -144,7 +145,20 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         result = _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                            calibration, braid)
         result.fe_workers = runner.describe()
+    result.options = command_options(asked, asked_model, search, braid)
     return result
+
+
+def command_options(groups, model: str, search: str, braid: str | None) -> list[str]:
+    """The ``mkm identify`` options that fit as asked again (another run among the runs): the
+    groups asked for (friction or creep left out for these runs may be told by another), and
+    the model, search and braid where not the defaults."""
+    options = ["--params", ",".join(groups)]
+    for flag, value, default in (("--model", model, "axisym"), ("--search", search, SEARCHES[0]),
+                                 ("--braid", braid, None)):
+        if value != default:
+            options += [flag, value]
+    return options
 
 
 def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:

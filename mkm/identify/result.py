@@ -93,6 +93,8 @@ class Identification:
     goodness: Goodness | None = None  # the misfit record (mkm.identify.goodness)
     #: the model-form terms in the intervals (mkm.identify.procedure.model_form_terms)
     model_form: dict = field(default_factory=dict)
+    #: the command-line options that fit as asked again (mkm.identify.procedure.command_options)
+    options: list[str] = field(default_factory=list)
 
     @property
     def values(self) -> dict[str, float]:
@@ -295,7 +297,7 @@ class Identification:
         return {
             "runs": [{"run": r.name, "path": str(r.path), "muscle": r.muscle,
                       "settled_steps": len(r.steps), "sha256": r.sha256} for r in self.runs],
-            "groups": list(self.groups), "dropped": self.dropped,
+            "groups": list(self.groups), "dropped": self.dropped, "options": self.options,
             **self.identified(),
             "parameters": params.to_dict(orient="records"),
             "rubber": self.rubber,
@@ -421,7 +423,7 @@ class Identification:
                       "interval_method": record["interval_method"], "dropped": self.dropped,
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"],
                       "misfit": record["goodness_of_fit"], "band": record["band"],
-                      "model_form": record["model_form"]}
+                      "model_form": record["model_form"], "options": record["options"]}
         reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}

@@ -120,6 +120,10 @@ def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mk
     assert entry["theta0_deg"] == pytest.approx(values["theta0_deg"], abs=1e-4)
     assert [r["run"] for r in entry["identified"]["runs"]] == [p.name for p in runs]
     assert all(len(r["sha256"]["steps.csv"]) == 64 for r in entry["identified"]["runs"])
+    # what it was asked, for the report's advice to identify again with another run
+    assert entry["identified"]["options"] == [
+        "--params", "theta0,rubber,friction,creep,offset", "--model", "thickwall", "--search",
+        "model"]
     assert {"eq2-inner", "eq2-braid"} <= set(calibration)
     # the misfit record: an in-family fit is within its noise (chi2/nu of ~50 steps has sd 0.2;
     # the truth is fresh each session, so the 2 % false alarm is not asserted away)

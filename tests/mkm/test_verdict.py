@@ -165,6 +165,14 @@ def test_a_verdict_can_refer_to_the_identify_command_said_once_for_several_runs(
     identified = [{"run": "r1", "path": "runs/r1", "muscle": {"eps": 0.0}}]
     assert advice_command("runs/r1", identified) is None  # its own run: no identify helps
     assert advice_command("runs/r2", identified) == "mkm identify runs/r1 runs/r2"
+    # a calibration identified with its rest length fitted: the advice fits it again (the
+    # comma list quoted: PowerShell reads a bare one as an array)
+    options = ["--params", "theta0,rubber,L0", "--model", "axisym:mesh=coarse"]
+    assert advice_command("runs/r2", identified, options=options) == (
+        'mkm identify runs/r1 runs/r2 --params "theta0,rubber,L0" --model axisym:mesh=coarse')
+    assert muscle_advice("runs/r2", identified, fit={"options": options}).endswith(
+        '(`mkm identify runs/r1 runs/r2 --params "theta0,rubber,L0" --model '
+        'axisym:mesh=coarse`)')
     # the surrogate, auto's pick, is 5.95 % off: beyond 2 %, within 10 %
     pick = AutoPick("surrogate", "Surrogate", 0.8, "")
     assert gives_advice(ROWS, NAMES, 0.02, pick, False)
