@@ -35,14 +35,19 @@ def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[De
     """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
     run left pressurised, and close (vent again) on exit."""
-    with BenchOwner(getattr(backend, "bench_key", "unknown"), command):
-        info = backend.open()
-        try:
-            for marker in vent_unvented(backend):
-                notify(marker.vented_now())
-            yield info
-        finally:
-            backend.close()
+    owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
+    try:
+        with owner:
+            info = backend.open()
+            try:
+                for marker in vent_unvented(backend):
+                    notify(marker.vented_now())
+                yield info
+            finally:
+                backend.close()
+    finally:  # vented and closed: a state folder that hangs is not waited for
+        if owner.problem:
+            notify(owner.problem)
 
 
 def _seconds(seconds: float) -> float:
@@ -119,6 +124,8 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             device.close()
         finally:
             owner.__exit__()
+            if owner.problem:
+                bookkeeping.append(owner.problem)
     if not config.regulator.electronic:
         return {"pressure_bar": float("nan"), "vented": False, "waited_s": 0.0,
                 "manual": True, "stopped": stopped, "bookkeeping": bookkeeping}

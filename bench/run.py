@@ -55,7 +55,7 @@ from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
-from mkm.bench.unvented import BenchLease, Marker, vent_unvented
+from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
 from mkm.bench.vent import VentCheck, verify_vent
 from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
@@ -64,7 +64,6 @@ EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
 STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
 VENT_WRITES = 3  # a vent write cut or refused is written again at once, this many in all
 DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before saying it waits
-STATE_WAIT_S = 2.0  # the shutdown waits this long for the bench state folder, then goes on
 
 
 def notify_stderr(message: str) -> None:
@@ -288,18 +287,22 @@ class BenchRun:
         Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
         holds the bench.
         """
-        with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
-                awake():  # Windows must not sleep with the muscle pressurised
-            self.owner = owner
-            self._console = _Console(sys.stderr)
-            try:
-                if self.handle_signals:
-                    with self.signals:
-                        return self._execute()
-                return self._execute()
-            finally:
-                console, self._console = self._console, None
-                console.close()
+        try:
+            with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
+                    awake():  # Windows must not sleep with the muscle pressurised
+                self.owner = owner
+                self._console = _Console(sys.stderr)
+                try:
+                    if self.handle_signals:
+                        with self.signals:
+                            return self._execute()
+                    return self._execute()
+                finally:
+                    console, self._console = self._console, None
+                    console.close()
+        finally:  # the run is vented and recorded: a state folder that hangs is not waited for
+            if self.owner is not None and self.owner.problem:
+                self.notify(self.owner.problem)
 
     def _say(self, message: str) -> None:
         """The default notice: through the run's console while it runs, else on stderr."""

@@ -303,3 +303,75 @@ def test_a_failed_vent_with_the_state_folder_hung_is_not_said_to_have_gone_out(
     assert "the bench state folder did not take the bench marker" in result.reason
     assert "went out" not in result.reason and "vented" not in result.reason
     assert "VENT BY HAND" in result.reason
+
+
+def test_a_state_folder_that_hangs_as_the_bench_is_let_go_does_not_hold_the_run(
+        config, tmp_path, monkeypatch):
+    # the run is vented and recorded; then the bench's owner file is removed and its lock let go
+    # in the state folder, which hangs from then on (a roaming profile on a network share):
+    # `mkm acquire` never returned. Now it waits STATE_WAIT_S, says so, and returns
+    import threading
+
+    from mkm.bench.run import acquire
+
+    release, hung = threading.Event(), threading.Event()
+    unlink = Path.unlink
+
+    def hanging(self, *args, **kwargs):
+        if self.suffix == ".owner" and not release.is_set():
+            hung.set()
+            release.wait(120)  # a net under a broken fix, never reached when it works
+        return unlink(self, *args, **kwargs)
+
+    monkeypatch.setattr(Path, "unlink", hanging)
+    notes, out = [], {}
+    worker = threading.Thread(target=lambda: out.update(result=acquire(
+        config, out_root=tmp_path, notify=notes.append)), daemon=True)
+    worker.start()
+    try:
+        assert hung.wait(60), "the owner file was never removed"
+        worker.join(60)  # STATE_WAIT_S, then the run returns
+        assert not worker.is_alive(), "the run waited for the hung state folder"
+    finally:
+        release.set()
+        worker.join(120)
+    result = out["result"]
+    assert result.status == "complete" and result.exit_code == 0
+    run = load_run(result.path)
+    assert run.status == "complete" and run.meta.vent_check["verified"]
+    assert run.meta.counters["samples"] == len(run.samples) > 0
+    assert notes[-1].startswith("the bench state folder ") and "(it hangs)" in notes[-1]
+
+
+def test_a_state_folder_that_hangs_at_the_start_refuses_the_run_untouched(
+        tmp_path, monkeypatch, mkm_cli):
+    # the state folder hangs as the bench's lock is taken, before the device is opened:
+    # `mkm acquire` never returned. Now it refuses in one line once STATE_START_S has passed
+    # (0 here: the hang is certain), the device never opened, and lets the lock go once the
+    # folder answers
+    import threading
+
+    import filelock
+
+    from mkm.bench import ownership
+    from mkm.bench.sim import SimBackend
+
+    monkeypatch.setattr(ownership, "STATE_START_S", 0.0)
+    release, opened = threading.Event(), []
+    acquire_lock = filelock.FileLock.acquire
+
+    def hanging(self, *args, **kwargs):
+        release.wait(120)  # released below
+        return acquire_lock(self, *args, **kwargs)
+
+    monkeypatch.setattr(filelock.FileLock, "acquire", hanging)
+    monkeypatch.setattr(SimBackend, "open", lambda self: opened.append(self))
+    try:
+        code, out, err = mkm_cli(["acquire", "--out", str(tmp_path / "runs"),
+                                  "--no-progress"])
+    finally:
+        release.set()
+    assert code == 1 and out == "" and not opened
+    assert err.startswith("mkm acquire: error: the bench state folder ") and err.count("\n") == 1
+    assert err.rstrip().endswith("did not answer within 0 s (it hangs): nothing was touched")
+    assert not list((tmp_path / "runs").glob("*"))
