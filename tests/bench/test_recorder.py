@@ -375,3 +375,51 @@ def test_a_state_folder_that_hangs_at_the_start_refuses_the_run_untouched(
     assert err.startswith("mkm acquire: error: the bench state folder ") and err.count("\n") == 1
     assert err.rstrip().endswith("did not answer within 0 s (it hangs): nothing was touched")
     assert not list((tmp_path / "runs").glob("*"))
+
+
+def test_rows_are_synced_to_the_disk_every_second_while_the_run_goes(config, tmp_path,
+                                                                      monkeypatch):
+    # rows were flushed to the operating system at every block but synced to the disk only at
+    # the end: a crash of the operating system or a power cut lost every sample its cache held
+    # (Linux writes it back after up to 30 s). Now the recorder's thread syncs them at the
+    # first write SYNC_EVERY_S after the last sync. The recorder's wall clock is the device's
+    # sample clock here, as on a real bench, and the loop waits for each block to be written,
+    # so the syncs fall where they would in real time: one every 10 rows at 10 Hz
+    import os
+    import types
+
+    from mkm.bench import recorder
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    now = {"s": 0.0}
+    monkeypatch.setattr(recorder, "time", types.SimpleNamespace(
+        monotonic=lambda: now["s"], sleep=lambda s: None))
+    backend = SimBackend(config)
+    read, synced = backend.read, []
+
+    def in_step(n, timeout):
+        block = read(n, timeout)
+        run.recorder.wait_written()  # the blocks before it are on disk (and synced if due)
+        now["s"] = (block.first_index + len(block.volts)) / config.daq.sample_rate_hz
+        return block
+
+    fsync = os.fsync
+
+    def spy(fd):
+        f = run.recorder.writer._files.get("samples", (None,))[0] if run.recorder else None
+        if f is not None and not f.closed and fd == f.fileno():
+            synced.append(run.recorder.meta.counters["samples"])
+        fsync(fd)
+
+    backend.read = in_step
+    monkeypatch.setattr(os, "fsync", spy)
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    assert result.status == "complete", result.reason
+    rows = load_run(result.path).meta.counters["samples"]
+    assert synced[-1] == rows > 200  # the close's
+    assert len(synced) > rows / 11
+    gaps = [b - a for a, b in zip([0, *synced], synced, strict=False)]
+    # 1 s of samples, and the block written when it was due (one-sample blocks)
+    assert max(gaps[:-1]) <= config.daq.sample_rate_hz * recorder.SYNC_EVERY_S + 1, gaps
