@@ -21,7 +21,7 @@ from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
-from mkm.bench.sequence import settle_warning, validate_tare
+from mkm.bench.sequence import rest_warning, settle_warning, validate_tare
 from mkm.bench.sim import STANDARD_GRAVITY
 from mkm.bench.unvented import vent_unvented
 from mkm.bench.vent import verify_vent
@@ -76,7 +76,8 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
         cell_V = mean_volts(device, config, seconds)[:, 0]
     out = validate_tare(cell_V, config)
     return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict(),
-            "settle_warning": settle_warning(out["std_N"], config)}
+            "settle_warning": settle_warning(out["std_N"], config),
+            "rest_warning": rest_warning(out, config)}
 
 
 def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
