@@ -393,10 +393,15 @@ class BenchRun:
         self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
                                  estimate_duration_s(self.config),
                                  [vars(m) for m in self.unvented])
+        # the lease is kept from here on: a stop while its first write is waited for still
+        # removes the marker at the shutdown
+        lease = self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
+                                        self.recorder.path, self.recorder.meta.started_utc)
         try:
-            self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
-                                    self.recorder.path, self.recorder.meta.started_utc)
+            lease.started()
         except OSError as exc:  # the state folder, not the run folder: said as such
+            lease.post(lease.release)  # whenever it answers: no marker is left
+            self.lease = None
             raise StateFolderBroken(f"the bench marker cannot be written in the bench state "
                                     f"folder ({exc.strerror or exc}): nothing was "
                                     "pressurised") from None

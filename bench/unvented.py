@@ -157,8 +157,8 @@ class BenchLease(StateFolderThread):
     The acquisition loop never writes it itself: it posts each update (:meth:`post`) to the
     lease's thread, which writes them in order (:meth:`command`, :meth:`unverified`,
     :meth:`release`); :meth:`wait` tells the loop whether an update is on disk yet. The first
-    write, before anything is pressurised, is waited for at most :data:`STATE_START_S`
-    (``TimeoutError`` after it).
+    write is posted as the lease is made; :meth:`started` waits for it, before anything is
+    pressurised.
     """
 
     def __init__(self, bench_key: str, run_path: Path, started_utc: str):
@@ -173,7 +173,12 @@ class BenchLease(StateFolderThread):
             folder.mkdir(parents=True, exist_ok=True)
             self._write()
 
-        if not self.wait(self.post(first), STATE_START_S):
+        self.post(first)
+
+    def started(self) -> None:
+        """Wait for the first write, at most :data:`STATE_START_S`: ``TimeoutError`` after
+        it, its ``OSError`` if it failed."""
+        if not self.wait(1, STATE_START_S):
             raise TimeoutError(f"no answer within {STATE_START_S:g} s: it hangs")
         if self.error is not None:
             raise self.error
