@@ -390,9 +390,12 @@ class BenchRun:
         self.unvented = vent_unvented(self.backend)
         for marker in self.unvented:
             self.notify(marker.vented_now())
-        self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
-                                 estimate_duration_s(self.config),
-                                 [vars(m) for m in self.unvented])
+        # a stop signal while the folder is made waits until the run holds its recorder: the
+        # shutdown then records why it stopped (a folder whose making it cuts is removed)
+        with self.signals.deferred():
+            self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
+                                     estimate_duration_s(self.config),
+                                     [vars(m) for m in self.unvented])
         # the lease is kept from here on: a stop while its first write is waited for still
         # removes the marker at the shutdown
         lease = self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
