@@ -238,6 +238,11 @@ class Recorder:
             self._told = len(self._failures)
         raise exc
 
+    def refused(self, exc: BaseException) -> bool:
+        """Whether ``exc`` is a write the disk refused (raised by :meth:`raise_failure`)."""
+        with self._cond:
+            return any(exc is failure for _, failure in self._failures)
+
     def stuck(self) -> str:
         """Why the disk is not taking the record ("" while it is): more than
         :data:`DISK_STUCK_S` of samples held with no write done for :data:`DISK_QUIET_S`, or

@@ -251,6 +251,7 @@ class BenchRun:
         self.vent_check: VentCheck | None = None
         self._vent_rows_problems: list[str] = []  # the vent check's rows not recorded
         self.storage_failed = False
+        self._folder_error: OSError | None = None  # the run folder could not be made
 
     def request_stop(self, by: str | None = None) -> None:
         """What the first Ctrl-C does: stop at the next safe point (``by`` says who else asked)."""
@@ -343,11 +344,14 @@ class BenchRun:
         elif isinstance(outcome, KeyboardInterrupt):  # no handlers (not the main thread)
             status, signal_name, signal_number = RunStatus.ABORTED, "SIGINT", 2
             reason, say_vent = "stopped by a second Ctrl-C (SIGINT) at once", True
-        elif isinstance(outcome, BenchError):
-            status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
-        elif isinstance(outcome, OSError):  # the run folder's disk: full, gone, read-only
+        elif isinstance(outcome, OSError) and (
+                outcome is self._folder_error or
+                (self.recorder is not None and self.recorder.refused(outcome))):
+            # the run folder's disk: full, gone, read-only
             status, exit_code = RunStatus.FAILED, EXIT_STORAGE
             reason = f"recording failed ({type(outcome).__name__}: {outcome})"
+        elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
+            status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
         elif outcome is not None:
             status, reason, error = (RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}",
                                      outcome)
@@ -393,9 +397,13 @@ class BenchRun:
         # a stop signal while the folder is made waits until the run holds its recorder: the
         # shutdown then records why it stopped (a folder whose making it cuts is removed)
         with self.signals.deferred():
-            self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
-                                     estimate_duration_s(self.config),
-                                     [vars(m) for m in self.unvented])
+            try:
+                self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
+                                         estimate_duration_s(self.config),
+                                         [vars(m) for m in self.unvented])
+            except OSError as exc:
+                self._folder_error = exc
+                raise
         # the lease is kept from here on: a stop while its first write is waited for still
         # removes the marker at the shutdown
         lease = self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),

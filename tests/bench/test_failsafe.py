@@ -634,3 +634,33 @@ def test_a_state_folder_problem_is_named_not_called_a_recording_failure(config, 
     assert "recording failed" not in result.reason and "0.5 bar not commanded" in result.reason
     assert load_run(result.path).meta.vent_check is None or \
         load_run(result.path).meta.vent_check["verified"]
+
+
+def test_an_os_error_of_the_device_is_not_called_a_recording_failure(config, tmp_path,
+                                                                      monkeypatch):
+    # the driver raises an OSError mid-run (ctypes says "OSError: exception: access violation"
+    # for a crash inside a DLL; a USB stack an I/O error): the run vented and kept its samples
+    # but said "recording failed", exit 2, sending the user to a disk that was fine. Now it is
+    # the device's failure, exit 1; the disk's refusals stay "recording failed", exit 2
+    import errno
+
+    from mkm.bench.run import acquire
+    from mkm.bench.sim import SimBackend
+
+    read, failed = SimBackend.read, []
+
+    def failing(self, n, timeout):  # once: the vent check's reads work
+        if self._head >= 45 and not failed:
+            failed.append(self._head)
+            raise OSError(errno.EIO, "Input/output error")
+        return read(self, n, timeout)
+
+    monkeypatch.setattr(SimBackend, "read", failing)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 1
+    assert result.reason == "OSError: [Errno 5] Input/output error"
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"]
+    s = run.samples  # every sample read before the failure, and the vent check's after it
+    assert list(s["sample"]) == list(range(len(s))) and run.meta.counters["samples"] == len(s)
+    assert (s["phase"] != "vent").sum() == 45
