@@ -377,6 +377,8 @@ class BenchRun:
                         else "vented")
                 self.notify(f"the run stopped on an error of mkm ({reason}): {vent}; its "
                             f"samples are recorded, status {status}, in {self.recorder.path}")
+            if isinstance(error, ValueError):  # taken for bad input: one line, no traceback
+                raise RuntimeError(f"an error of mkm stopped the run: {reason}") from error
             raise error
         return RunResult(self.recorder.path if self.recorder else None, status, reason,
                          exit_code, manual_vent, self.unvented)
