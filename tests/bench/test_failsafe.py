@@ -664,3 +664,30 @@ def test_an_os_error_of_the_device_is_not_called_a_recording_failure(config, tmp
     s = run.samples  # every sample read before the failure, and the vent check's after it
     assert list(s["sample"]) == list(range(len(s))) and run.meta.counters["samples"] == len(s)
     assert (s["phase"] != "vent").sum() == 45
+
+
+def test_a_monitor_reading_nan_after_the_vent_is_said_so(config, tmp_path, monkeypatch):
+    # the monitor input reads NaN from sample 45 (0.5 bar commanded): the pressure interlock
+    # vents; the vent check cannot verify it, and said "the monitor still reads nan bar 0.1 s
+    # after the vent, above 0.05 bar". Now it names the reading that is no number
+    import numpy as np
+
+    from mkm.bench.run import acquire
+    from mkm.bench.sim import SimBackend
+
+    read = SimBackend.read
+
+    def nan_monitor(self, n, timeout):
+        block = read(self, n, timeout)
+        index = block.first_index + np.arange(len(block.volts))
+        block.volts[index >= 45, 1] = np.nan
+        return block
+
+    monkeypatch.setattr(SimBackend, "read", nan_monitor)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert result.reason.startswith("pressure interlock: the pressure reading is not a number")
+    assert result.reason.endswith("; vented; the vent could not be verified (the monitor reads "
+                                  "nan V, not a number): VENT BY HAND (the regulator may still "
+                                  "hold 0.5 bar)")
+    assert "above" not in result.reason
