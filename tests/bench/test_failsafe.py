@@ -82,6 +82,40 @@ def test_vent_with_a_full_state_folder_vents_then_says_so(mkm_cli, monkeypatch):
     assert code == 1 and "not writable (No space left on device)" in err
 
 
+def test_vent_with_a_state_folder_that_hangs_vents_then_says_so(monkeypatch):
+    # the state folder (a roaming profile on a network share) hangs as `mkm vent` looks for a
+    # run holding the bench: the vent never went out. Now it goes out once the state folder has
+    # not answered within the wait (none here: the hang is certain), and the line says why the
+    # bookkeeping was left
+    import threading
+
+    import filelock
+
+    from mkm.bench import procedures
+    from mkm.bench.config import load_config
+
+    monkeypatch.setattr(procedures, "STATE_START_S", 0.0)
+    _lock_path("sim-Dev1").parent.mkdir(parents=True)
+    release, acquire = threading.Event(), filelock.FileLock.acquire
+
+    def hanging(self, *args, **kwargs):
+        release.wait(120)  # released below
+        return acquire(self, *args, **kwargs)
+
+    monkeypatch.setattr(filelock.FileLock, "acquire", hanging)
+    written = _commands_of_vents(monkeypatch)
+    try:
+        out = procedures.vent(load_config(), backend="sim", notify=lambda m: None,
+                              stop_wait_s=0.0)
+    finally:
+        release.set()
+    assert out["vented"] and out["pressure_bar"] < 0.05 and written and set(written) == {0.0}
+    (problem,) = out["bookkeeping"]  # `mkm vent` says it on one line, exit 1
+    assert problem.endswith("did not answer within 0 s (it hangs): no run holding the bench "
+                            "was asked to stop, the bench was vented without its lock and the "
+                            "markers of dead runs were not looked for")
+
+
 def test_a_run_is_refused_not_started_when_the_lock_is_a_folder(config, tmp_path):
     from mkm.bench.backend import BenchError
 
