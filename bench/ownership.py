@@ -29,7 +29,13 @@ import filelock
 
 from mkm.bench.backend import BenchError
 from mkm.bench.storage import ProcessIdentity
-from mkm.bench.unvented import bench_folder_name, state_dir
+from mkm.bench.unvented import (
+    STATE_START_S,
+    STATE_WAIT_S,
+    StateFolderThread,
+    bench_folder_name,
+    state_dir,
+)
 from mkm.core.records import provenance, write_atomic
 
 
@@ -84,23 +90,45 @@ class BenchOwner:
         self._poll_thread: threading.Thread | None = None
         self._stop_by: str | None = None  # who asked, as the last read of the stop file found
         self._read_wanted = False  # the loop asked for a read since the last one began
+        # the lock is taken and let go by a thread of its own (filelock's are per thread): a
+        # state folder that hangs holds it, never the command
+        self._state = StateFolderThread("mkm-bench-owner")
+        self.problem = ""  # the state folder did not let the bench go in time
 
     def __enter__(self) -> BenchOwner:
+        """Take the bench; the state folder is waited for at most :data:`STATE_START_S`
+        (:class:`StateFolderBroken` after it: nothing was touched)."""
+        taken: list[BaseException | None] = []
+        ticket = self._state.post(lambda: taken.append(self._take()))
+        if not self._state.wait(ticket, STATE_START_S):
+            self._state.post(self._let_go)  # once it answers: the lock taken meanwhile goes
+            raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} did not "
+                                    f"answer within {STATE_START_S:g} s (it hangs): nothing was "
+                                    "touched")
+        if taken[0] is not None:
+            raise taken[0]
+        return self
+
+    def _take(self) -> BaseException | None:
+        """Take the lock and say who holds it (on the state folder's thread); the error."""
         try:
             self.lock_path.parent.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
-            raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} cannot be "
-                                    f"made ({exc.strerror or exc})") from None
-        _usable_lock(self.lock_path)
+            return StateFolderBroken(f"the bench state folder {self.lock_path.parent} cannot be "
+                                     f"made ({exc.strerror or exc})")
+        try:
+            _usable_lock(self.lock_path)
+        except StateFolderBroken as exc:
+            return exc
         lock = filelock.FileLock(self.lock_path, timeout=0)
         try:
             lock.acquire()
         except filelock.Timeout:
-            raise BenchBusy(describe_holder(self.bench_key) + ": one command per bench at a "
-                            "time (`mkm vent` asks a run to stop)") from None
+            return BenchBusy(describe_holder(self.bench_key) + ": one command per bench at a "
+                             "time (`mkm vent` asks a run to stop)")
         except OSError as exc:
-            raise StateFolderBroken(f"the bench lock {self.lock_path} cannot be taken "
-                                    f"({exc.strerror or exc})") from None
+            return StateFolderBroken(f"the bench lock {self.lock_path} cannot be taken "
+                                     f"({exc.strerror or exc})")
         self.lock = lock
         try:
             self.stop_path.unlink(missing_ok=True)  # a request to an earlier holder
@@ -109,23 +137,35 @@ class BenchOwner:
                 {"pid": me.pid, "host": me.host, "command": self.command,
                  "started_utc": provenance()["date_utc"]}))
         except OSError as exc:
-            self.__exit__()
-            raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} is not "
-                                    f"writable ({exc.strerror or exc})") from None
-        return self
+            self._let_go()
+            return StateFolderBroken(f"the bench state folder {self.lock_path.parent} is not "
+                                     f"writable ({exc.strerror or exc})")
+        return None
 
     def __exit__(self, *exc) -> None:
+        """Let the bench go, waiting at most :data:`STATE_WAIT_S` for the state folder: past
+        it, :attr:`problem` says so and the lock goes with this process."""
         if self.lock is None:
+            return
+        if not self._state.wait(self._state.post(self._let_go), STATE_WAIT_S):
+            self.problem = (f"the bench state folder {self.lock_path.parent} did not let the "
+                            f"bench go within {STATE_WAIT_S:g} s (it hangs): not waited for; "
+                            "its lock is released as this process ends")
+
+    def _let_go(self) -> None:
+        """Remove the owner file and the stop request, release the lock (on the state folder's
+        thread)."""
+        with self._polling:
+            lock, self.lock = self.lock, None
+            self._polling.notify()  # the stop request's reader ends
+        if lock is None:
             return
         for path in (self.owner_path, self.stop_path):
             try:
                 path.unlink(missing_ok=True)
             except OSError:
                 pass  # the lock's release below is what matters
-        self.lock.release()
-        with self._polling:
-            self.lock = None
-            self._polling.notify()
+        lock.release()
 
     def stop_request(self) -> str | None:
         """Who asked this holder to stop (``mkm vent``, pid N), or None; never waits.

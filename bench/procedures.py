@@ -21,9 +21,9 @@ from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
-from mkm.bench.sequence import settle_warning, validate_tare
+from mkm.bench.sequence import rest_warning, settle_warning, validate_tare
 from mkm.bench.sim import STANDARD_GRAVITY
-from mkm.bench.unvented import vent_unvented
+from mkm.bench.unvented import STATE_START_S, StateFolderThread, state_dir, vent_unvented
 from mkm.bench.vent import verify_vent
 
 MAX_SECONDS = 600.0  # a tare or a calibration mass is averaged for at most this long
@@ -35,14 +35,19 @@ def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[De
     """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
     run left pressurised, and close (vent again) on exit."""
-    with BenchOwner(getattr(backend, "bench_key", "unknown"), command):
-        info = backend.open()
-        try:
-            for marker in vent_unvented(backend):
-                notify(marker.vented_now())
-            yield info
-        finally:
-            backend.close()
+    owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
+    try:
+        with owner:
+            info = backend.open()
+            try:
+                for marker in vent_unvented(backend):
+                    notify(marker.vented_now())
+                yield info
+            finally:
+                backend.close()
+    finally:  # vented and closed: a state folder that hangs is not waited for
+        if owner.problem:
+            notify(owner.problem)
 
 
 def _seconds(seconds: float) -> float:
@@ -71,7 +76,8 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
         cell_V = mean_volts(device, config, seconds)[:, 0]
     out = validate_tare(cell_V, config)
     return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict(),
-            "settle_warning": settle_warning(out["std_N"], config)}
+            "settle_warning": settle_warning(out["std_N"], config),
+            "rest_warning": rest_warning(out, config)}
 
 
 def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
@@ -96,29 +102,29 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     device = make_backend(config, clock)
     key = getattr(device, "bench_key", "unknown")
     bookkeeping: list[str] = []
-    stopped = None
-    try:
-        stopped = request_stop(key, "`mkm vent`", stop_wait_s)
-    except StateFolderBroken as exc:
-        bookkeeping.append(str(exc))
+    stopped, answered = _ask_to_stop(key, stop_wait_s, bookkeeping)
     if stopped:
         notify(f"asked the run holding the bench (pid {stopped.get('pid')}, `mkm "
                f"{stopped.get('command')}`, started {stopped.get('started_utc')}) to stop; it "
                "stopped")
     owner = BenchOwner(key, "vent")
     try:
-        owner.__enter__()
+        if answered:  # a state folder that hangs is not waited for again: the vent goes first
+            owner.__enter__()
     except StateFolderBroken as exc:  # vent without the lock: venting twice is harmless
         bookkeeping.append(str(exc))
     try:
         device.open()  # writes the vent command (a lost device is reset first)
         check = _vent_and_verify(device, config)
-        bookkeeping.extend(_mend_dead_runs(device, notify))
+        if answered:
+            bookkeeping.extend(_mend_dead_runs(device, notify))
     finally:
         try:
             device.close()
         finally:
             owner.__exit__()
+            if owner.problem:
+                bookkeeping.append(owner.problem)
     if not config.regulator.electronic:
         return {"pressure_bar": float("nan"), "vented": False, "waited_s": 0.0,
                 "manual": True, "stopped": stopped, "bookkeeping": bookkeeping}
@@ -127,6 +133,35 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
                          + "".join(f"; {p}" for p in bookkeeping))
     return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
             "manual": False, "stopped": stopped, "bookkeeping": bookkeeping}
+
+
+def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
+                 ) -> tuple[dict | None, bool]:
+    """Ask a live holder of the bench to stop (:func:`mkm.bench.ownership.request_stop`), on a
+    thread of its own: a state folder that hangs does not keep the vent from going out. The
+    holder that stopped (or None), and whether the state folder answered within
+    ``stop_wait_s`` + :data:`mkm.bench.unvented.STATE_START_S` (a problem in ``bookkeeping``
+    when not); :class:`mkm.bench.ownership.BenchBusy` when a holder did not let go."""
+    asking, answer = StateFolderThread("mkm-vent-ask"), []
+
+    def ask() -> None:
+        try:
+            answer.append(request_stop(key, "`mkm vent`", stop_wait_s))
+        except (BenchError, OSError) as exc:  # said or raised by the caller
+            answer.append(exc)
+
+    if not asking.wait(asking.post(ask), stop_wait_s + STATE_START_S):
+        bookkeeping.append(f"the bench state folder {state_dir()} did not answer within "
+                           f"{stop_wait_s + STATE_START_S:g} s (it hangs): no run holding the "
+                           "bench was asked to stop, the bench was vented without its lock "
+                           "and the markers of dead runs were not looked for")
+        return None, False
+    if isinstance(answer[0], StateFolderBroken | OSError):
+        bookkeeping.append(str(answer[0]))
+        return None, True
+    if isinstance(answer[0], BaseException):
+        raise answer[0]
+    return answer[0], True
 
 
 def _vent_and_verify(device: Backend, config: BenchConfig):

@@ -4,7 +4,8 @@ true while the run goes (pymeasure's recorder, beside the worker and the procedu
 run.json is written first when the folder is made, rewritten after the tare and at the end;
 samples, steps and commands are appended as they happen, by a thread of the recorder's own: the
 acquisition loop only queues them, so a disk that hangs (a network share, a dying drive) cannot
-stop the loop, and with it every interlock, while the regulator holds its pressure. What the
+stop the loop, and with it every interlock, while the regulator holds its pressure. The thread
+syncs them to the disk at least every :data:`SYNC_EVERY_S` while rows come. What the
 disk has not taken yet is held in memory, in order; the loop asks :meth:`Recorder.stuck` after
 every block, and more than :data:`DISK_STUCK_S` of samples held with no write done for
 :data:`DISK_QUIET_S` (or more than :data:`HELD_ROWS_MAX` rows) stops the run: vent first,
@@ -54,6 +55,12 @@ HELD_ROWS_MAX = 300_000
 # ... and with no write done for this long (wall time): a disk that writes, behind the loop in a
 # burst (the virtual clock runs hundreds of times faster than real time), is not stuck
 DISK_QUIET_S = 1.0
+# The rows written are synced to the disk (fsync) by the recorder's thread at the first write
+# this long (wall time) after the last sync: a crash of the operating system or a power cut
+# loses about this much of the record, not everything since the start (the kernel writes its
+# cache back when it likes: up to 30 s on Linux). At most once this often: a sync costs
+# milliseconds, and the virtual clock writes hundreds of samples a second.
+SYNC_EVERY_S = 1.0
 
 
 class Recorder:
@@ -97,6 +104,7 @@ class Recorder:
         self.stuck_reason = ""  # set once the disk is found not taking the record
         # when the thread last finished a write, or was given one while it had none
         self._done_at = time.monotonic()
+        self._synced_at = self._done_at  # when the rows were last synced to the disk
         self._thread = threading.Thread(target=self._write_queued, name="mkm-recorder",
                                         daemon=True)
         self._thread.start()
@@ -138,15 +146,19 @@ class Recorder:
                     self._busy = False
                     self._cond.notify_all()
                 return
+            what = self._what(kind, payload)
             try:
                 self._write(kind, payload)
+                if time.monotonic() - self._synced_at >= SYNC_EVERY_S:
+                    what = "the rows' sync to the disk"
+                    self.writer.sync()
+                    self._synced_at = time.monotonic()
             except OSError as exc:
                 with self._cond:
-                    self._failures.append((self._what(kind, payload), exc))
+                    self._failures.append((what, exc))
             except Exception as exc:  # a bug: said in the reason, not lost
                 with self._cond:
-                    self._failures.append((self._what(kind, payload), OSError(
-                        f"{type(exc).__name__}: {exc}")))
+                    self._failures.append((what, OSError(f"{type(exc).__name__}: {exc}")))
             finally:
                 with self._cond:
                     self._busy = False
@@ -225,6 +237,11 @@ class Recorder:
             exc = self._failures[self._told][1]  # the first: the later ones follow from it
             self._told = len(self._failures)
         raise exc
+
+    def refused(self, exc: BaseException) -> bool:
+        """Whether ``exc`` is a write the disk refused (raised by :meth:`raise_failure`)."""
+        with self._cond:
+            return any(exc is failure for _, failure in self._failures)
 
     def stuck(self) -> str:
         """Why the disk is not taking the record ("" while it is): more than

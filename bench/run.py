@@ -55,7 +55,7 @@ from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
-from mkm.bench.unvented import BenchLease, Marker, vent_unvented
+from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
 from mkm.bench.vent import VentCheck, verify_vent
 from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
@@ -64,7 +64,6 @@ EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
 STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
 VENT_WRITES = 3  # a vent write cut or refused is written again at once, this many in all
 DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before saying it waits
-STATE_WAIT_S = 2.0  # the shutdown waits this long for the bench state folder, then goes on
 
 
 def notify_stderr(message: str) -> None:
@@ -252,6 +251,7 @@ class BenchRun:
         self.vent_check: VentCheck | None = None
         self._vent_rows_problems: list[str] = []  # the vent check's rows not recorded
         self.storage_failed = False
+        self._folder_error: OSError | None = None  # the run folder could not be made
 
     def request_stop(self, by: str | None = None) -> None:
         """What the first Ctrl-C does: stop at the next safe point (``by`` says who else asked)."""
@@ -288,18 +288,22 @@ class BenchRun:
         Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
         holds the bench.
         """
-        with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
-                awake():  # Windows must not sleep with the muscle pressurised
-            self.owner = owner
-            self._console = _Console(sys.stderr)
-            try:
-                if self.handle_signals:
-                    with self.signals:
-                        return self._execute()
-                return self._execute()
-            finally:
-                console, self._console = self._console, None
-                console.close()
+        try:
+            with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
+                    awake():  # Windows must not sleep with the muscle pressurised
+                self.owner = owner
+                self._console = _Console(sys.stderr)
+                try:
+                    if self.handle_signals:
+                        with self.signals:
+                            return self._execute()
+                    return self._execute()
+                finally:
+                    console, self._console = self._console, None
+                    console.close()
+        finally:  # the run is vented and recorded: a state folder that hangs is not waited for
+            if self.owner is not None and self.owner.problem:
+                self.notify(self.owner.problem)
 
     def _say(self, message: str) -> None:
         """The default notice: through the run's console while it runs, else on stderr."""
@@ -340,11 +344,14 @@ class BenchRun:
         elif isinstance(outcome, KeyboardInterrupt):  # no handlers (not the main thread)
             status, signal_name, signal_number = RunStatus.ABORTED, "SIGINT", 2
             reason, say_vent = "stopped by a second Ctrl-C (SIGINT) at once", True
-        elif isinstance(outcome, BenchError):
-            status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
-        elif isinstance(outcome, OSError):  # the run folder's disk: full, gone, read-only
+        elif isinstance(outcome, OSError) and (
+                outcome is self._folder_error or
+                (self.recorder is not None and self.recorder.refused(outcome))):
+            # the run folder's disk: full, gone, read-only
             status, exit_code = RunStatus.FAILED, EXIT_STORAGE
             reason = f"recording failed ({type(outcome).__name__}: {outcome})"
+        elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
+            status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
         elif outcome is not None:
             status, reason, error = (RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}",
                                      outcome)
@@ -370,6 +377,8 @@ class BenchRun:
                         else "vented")
                 self.notify(f"the run stopped on an error of mkm ({reason}): {vent}; its "
                             f"samples are recorded, status {status}, in {self.recorder.path}")
+            if isinstance(error, ValueError):  # taken for bad input: one line, no traceback
+                raise RuntimeError(f"an error of mkm stopped the run: {reason}") from error
             raise error
         return RunResult(self.recorder.path if self.recorder else None, status, reason,
                          exit_code, manual_vent, self.unvented)
@@ -387,13 +396,25 @@ class BenchRun:
         self.unvented = vent_unvented(self.backend)
         for marker in self.unvented:
             self.notify(marker.vented_now())
-        self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
-                                 estimate_duration_s(self.config),
-                                 [vars(m) for m in self.unvented])
+        # a stop signal while the folder is made waits until the run holds its recorder: the
+        # shutdown then records why it stopped (a folder whose making it cuts is removed)
+        with self.signals.deferred():
+            try:
+                self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
+                                         estimate_duration_s(self.config),
+                                         [vars(m) for m in self.unvented])
+            except OSError as exc:
+                self._folder_error = exc
+                raise
+        # the lease is kept from here on: a stop while its first write is waited for still
+        # removes the marker at the shutdown
+        lease = self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
+                                        self.recorder.path, self.recorder.meta.started_utc)
         try:
-            self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
-                                    self.recorder.path, self.recorder.meta.started_utc)
+            lease.started()
         except OSError as exc:  # the state folder, not the run folder: said as such
+            lease.post(lease.release)  # whenever it answers: no marker is left
+            self.lease = None
             raise StateFolderBroken(f"the bench marker cannot be written in the bench state "
                                     f"folder ({exc.strerror or exc}): nothing was "
                                     "pressurised") from None

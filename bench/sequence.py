@@ -65,8 +65,9 @@ class TareInvalid(BenchError):
 def validate_tare(cell_V, config: BenchConfig) -> dict:
     """The tare of load-cell volts ``cell_V`` read at 0 bar, or :class:`TareInvalid` saying why.
 
-    Returns ``offset_V`` (mean), ``std_V``, ``n``, ``std_N`` and ``shift_N`` (offset minus the
-    configured ``loadcell.offset_V``, in newtons).
+    Returns ``offset_V`` (mean), ``std_V``, ``n``, ``std_N``, ``shift_N`` (offset minus the
+    configured ``loadcell.offset_V``, in newtons), ``drift_N`` (the forces' straight-line trend,
+    first to last sample) and ``at_rest`` (:func:`rest_warning` says what its absence means).
     """
     cell, safety = config.loadcell, config.safety
     v = np.asarray(cell_V, dtype=float)
@@ -88,8 +89,43 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
                           f"={cell.offset_V:g} V, beyond safety.tare_max_shift_N="
                           f"{safety.tare_max_shift_N:g} (a load on the cell, or the wrong "
                           "calibration)")
+    drift_N, at_rest = _tare_drift(v * cell.sensitivity_N_per_V, config)
     return {"offset_V": offset, "std_V": std, "n": int(v.size), "std_N": std_N,
-            "shift_N": shift_N, "config_offset_V": cell.offset_V}
+            "shift_N": shift_N, "config_offset_V": cell.offset_V, "drift_N": drift_N,
+            "at_rest": at_rest}
+
+
+def _tare_drift(force_N: np.ndarray, config: BenchConfig) -> tuple[float, bool]:
+    """The straight-line trend of the tare's forces, first to last sample [N], and whether the
+    load cell was at rest: a trend within 4 standard errors of none (a resting cell's noise
+    goes beyond it in one tare of 20 samples in 1,200, by Student's t with 18 degrees of
+    freedom; of 50, in 4,600), or within the zero drift the uncertainty budget allows over a run
+    (``loadcell.zero_drift_fraction_fs`` of the capacity). A muscle still relaxing, or touched,
+    moves its zero while the tare averages it."""
+    cell = config.loadcell
+    n = force_N.size
+    t = np.arange(n) / config.daq.sample_rate_hz
+    (slope, _), residual = np.polyfit(t, force_N, 1, full=True)[:2]
+    spread = float(np.sum((t - t.mean()) ** 2))
+    se = math.sqrt(float(residual[0]) / (n - 2) / spread) if residual.size and n > 2 else 0.0
+    drift_N = float(slope * t[-1])
+    bound_N = cell.zero_drift_fraction_fs * cell.capacity_N
+    return drift_N, bool(abs(slope) <= 4.0 * se or abs(drift_N) <= bound_N)
+
+
+def rest_warning(tare: dict, config: BenchConfig) -> str:
+    """What a tare that did not see the load cell at rest means (its zero moved while it was
+    averaged), or ""."""
+    if tare.get("at_rest", True):
+        return ""
+    cell = config.loadcell
+    drift_N, n = tare["drift_N"], tare["n"]
+    return (f"the tare did not see the load cell at rest: its force moved {drift_N:+.2f} N "
+            f"over the {n / config.daq.sample_rate_hz:g} s of the tare, beyond noise and the "
+            f"zero drift of {cell.zero_drift_fraction_fs * cell.capacity_N:.2g} N the "
+            f"uncertainty budget allows (loadcell.zero_drift_fraction_fs): the zero it "
+            f"measured, and every force from it, may be off by about {abs(drift_N) / 2:.2g} N; "
+            "let the muscle rest vented and tare again (or lengthen sequence.tare_s)")
 
 
 class HoldStats:
@@ -181,9 +217,10 @@ class Staircase:
         tare = validate_tare(volts, self.config)
         self.acq.tare_offset_V = tare["offset_V"]
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
-        warning = settle_warning(tare["std_N"], self.config)
-        if warning:
-            self.notify(f"warning: {warning}")
+        for warning in (rest_warning(tare, self.config),
+                        settle_warning(tare["std_N"], self.config)):
+            if warning:
+                self.notify(f"warning: {warning}")
 
     def run_step(self, step: Step) -> None:
         acq, st = self.acq, self.config.settle

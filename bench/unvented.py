@@ -88,25 +88,23 @@ class Marker:
         return data
 
 
-class BenchLease:
-    """The marker of one running run; :meth:`command` records each commanded pressure.
+# The end of a command waits this long for the bench state folder, then goes on without it (the
+# vent and the record are done by then); its start, with nothing pressurised yet, waits
+# STATE_START_S, then refuses: a state folder that takes longer hangs (a network share).
+STATE_WAIT_S = 2.0
+STATE_START_S = 10.0
 
-    The acquisition loop never writes it itself: it posts each update (:meth:`post`) to a thread
-    of the lease, which writes them in order (:meth:`command`, :meth:`unverified`,
-    :meth:`release`). A state folder that hangs (a roaming profile on a network share) then
-    blocks that thread, never the loop's interlocks and vents; :meth:`wait` tells the loop
-    whether an update is on disk yet. Only the first write, before anything is pressurised, is
-    made by the caller.
+
+class StateFolderThread:
+    """Updates of the bench state folder, made in order by a thread of their own.
+
+    A state folder that hangs (a roaming profile on a network share) then holds that thread,
+    never its caller: the acquisition loop, its interlocks and its vents, or the end of a
+    command, which waits for an update (:meth:`wait`) only as long as it chooses.
     """
 
-    def __init__(self, bench_key: str, run_path: Path, started_utc: str):
-        me = ProcessIdentity.current()
-        # absolute: the next command may run from another folder
-        self.marker = Marker(bench_key, str(Path(run_path).resolve()), started_utc, asdict(me))
-        folder = _folder(bench_key)
-        folder.mkdir(parents=True, exist_ok=True)
-        self.path = folder / f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}.json"
-        self._write()
+    def __init__(self, name: str):
+        self._name = name
         self._updates: queue.Queue = queue.Queue()
         self._done = threading.Condition()
         self._posted = self._written = 0  # updates posted, updates done (written or failed)
@@ -114,10 +112,9 @@ class BenchLease:
         self._thread: threading.Thread | None = None
 
     def post(self, update: Callable[[], None]) -> int:
-        """Queue ``update`` (a method of this lease) for the lease's thread; its ticket."""
+        """Queue ``update`` for the thread; its ticket."""
         if self._thread is None:
-            self._thread = threading.Thread(target=self._run, name="mkm-bench-marker",
-                                            daemon=True)
+            self._thread = threading.Thread(target=self._run, name=self._name, daemon=True)
             self._thread.start()
         self._posted += 1
         self._updates.put(update)
@@ -146,10 +143,45 @@ class BenchLease:
                 error = None
             except OSError as exc:
                 error = exc
+            except Exception as exc:  # a bug: said as the update's failure, the thread goes on
+                error = OSError(f"{type(exc).__name__}: {exc}")
             with self._done:
                 self._written += 1
                 self.error = error
                 self._done.notify_all()
+
+
+class BenchLease(StateFolderThread):
+    """The marker of one running run; :meth:`command` records each commanded pressure.
+
+    The acquisition loop never writes it itself: it posts each update (:meth:`post`) to the
+    lease's thread, which writes them in order (:meth:`command`, :meth:`unverified`,
+    :meth:`release`); :meth:`wait` tells the loop whether an update is on disk yet. The first
+    write is posted as the lease is made; :meth:`started` waits for it, before anything is
+    pressurised.
+    """
+
+    def __init__(self, bench_key: str, run_path: Path, started_utc: str):
+        super().__init__("mkm-bench-marker")
+        me = ProcessIdentity.current()
+        # absolute: the next command may run from another folder
+        self.marker = Marker(bench_key, str(Path(run_path).resolve()), started_utc, asdict(me))
+        folder = _folder(bench_key)
+        self.path = folder / f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}.json"
+
+        def first() -> None:
+            folder.mkdir(parents=True, exist_ok=True)
+            self._write()
+
+        self.post(first)
+
+    def started(self) -> None:
+        """Wait for the first write, at most :data:`STATE_START_S`: ``TimeoutError`` after
+        it, its ``OSError`` if it failed."""
+        if not self.wait(1, STATE_START_S):
+            raise TimeoutError(f"no answer within {STATE_START_S:g} s: it hangs")
+        if self.error is not None:
+            raise self.error
 
     def _write(self) -> None:
         write_json_atomic(self.path, self.marker.record())

@@ -119,5 +119,8 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         pressure = float(config.regulator.monitor_bar(monitor_V))
         if pressure < below:
             return VentCheck(True, pressure, below, waited, "monitor")
-        if waited > timeout_s or not math.isfinite(pressure):
+        if not math.isfinite(pressure):  # a broken input: it verifies nothing
+            return VentCheck(False, pressure, below, waited, "monitor",
+                             f"the monitor reads {monitor_V!r} V, not a number")
+        if waited > timeout_s:
             return VentCheck(False, pressure, below, waited, "monitor")

@@ -430,9 +430,11 @@ class Acquisition:
         the pressure goes out ahead of its marker (the marker written at the run's start
         already makes the next command vent a run killed meanwhile); said at the end."""
         lease = self.lease
-        lagging = lease.lagging()
+        behind = self.marker_lagged and lease.lagging()  # found slow, not caught up since
         ticket = lease.post(lambda: lease.command(pressure_bar))
-        if lagging or not lease.wait(ticket, MARKER_WAIT_S):
+        # an update queued before it (a vent's, never waited for) is waited for with it: a
+        # state folder that takes milliseconds is not slow, however soon the pressure follows
+        if behind or not lease.wait(ticket, MARKER_WAIT_S):
             self.marker_lagged = True
             return
         if lease.error is not None:

@@ -234,8 +234,8 @@ def _tare(args) -> int:
     print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
           f"{out['std_N']:.2f} N, n = {out['n']}); {out['shift_from_config_N']:+.2f} N from the "
           "config's offset_V")
-    if out["settle_warning"]:
-        print(f"mkm tare: warning: {out['settle_warning']}", file=sys.stderr)
+    for warning in filter(None, (out["rest_warning"], out["settle_warning"])):
+        print(f"mkm tare: warning: {warning}", file=sys.stderr)
     return 0
 
 

@@ -82,6 +82,40 @@ def test_vent_with_a_full_state_folder_vents_then_says_so(mkm_cli, monkeypatch):
     assert code == 1 and "not writable (No space left on device)" in err
 
 
+def test_vent_with_a_state_folder_that_hangs_vents_then_says_so(monkeypatch):
+    # the state folder (a roaming profile on a network share) hangs as `mkm vent` looks for a
+    # run holding the bench: the vent never went out. Now it goes out once the state folder has
+    # not answered within the wait (none here: the hang is certain), and the line says why the
+    # bookkeeping was left
+    import threading
+
+    import filelock
+
+    from mkm.bench import procedures
+    from mkm.bench.config import load_config
+
+    monkeypatch.setattr(procedures, "STATE_START_S", 0.0)
+    _lock_path("sim-Dev1").parent.mkdir(parents=True)
+    release, acquire = threading.Event(), filelock.FileLock.acquire
+
+    def hanging(self, *args, **kwargs):
+        release.wait(120)  # released below
+        return acquire(self, *args, **kwargs)
+
+    monkeypatch.setattr(filelock.FileLock, "acquire", hanging)
+    written = _commands_of_vents(monkeypatch)
+    try:
+        out = procedures.vent(load_config(), backend="sim", notify=lambda m: None,
+                              stop_wait_s=0.0)
+    finally:
+        release.set()
+    assert out["vented"] and out["pressure_bar"] < 0.05 and written and set(written) == {0.0}
+    (problem,) = out["bookkeeping"]  # `mkm vent` says it on one line, exit 1
+    assert problem.endswith("did not answer within 0 s (it hangs): no run holding the bench "
+                            "was asked to stop, the bench was vented without its lock and the "
+                            "markers of dead runs were not looked for")
+
+
 def test_a_run_is_refused_not_started_when_the_lock_is_a_folder(config, tmp_path):
     from mkm.bench.backend import BenchError
 
@@ -634,3 +668,60 @@ def test_a_state_folder_problem_is_named_not_called_a_recording_failure(config, 
     assert "recording failed" not in result.reason and "0.5 bar not commanded" in result.reason
     assert load_run(result.path).meta.vent_check is None or \
         load_run(result.path).meta.vent_check["verified"]
+
+
+def test_an_os_error_of_the_device_is_not_called_a_recording_failure(config, tmp_path,
+                                                                      monkeypatch):
+    # the driver raises an OSError mid-run (ctypes says "OSError: exception: access violation"
+    # for a crash inside a DLL; a USB stack an I/O error): the run vented and kept its samples
+    # but said "recording failed", exit 2, sending the user to a disk that was fine. Now it is
+    # the device's failure, exit 1; the disk's refusals stay "recording failed", exit 2
+    import errno
+
+    from mkm.bench.run import acquire
+    from mkm.bench.sim import SimBackend
+
+    read, failed = SimBackend.read, []
+
+    def failing(self, n, timeout):  # once: the vent check's reads work
+        if self._head >= 45 and not failed:
+            failed.append(self._head)
+            raise OSError(errno.EIO, "Input/output error")
+        return read(self, n, timeout)
+
+    monkeypatch.setattr(SimBackend, "read", failing)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 1
+    assert result.reason == "OSError: [Errno 5] Input/output error"
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"]
+    s = run.samples  # every sample read before the failure, and the vent check's after it
+    assert list(s["sample"]) == list(range(len(s))) and run.meta.counters["samples"] == len(s)
+    assert (s["phase"] != "vent").sum() == 45
+
+
+def test_a_monitor_reading_nan_after_the_vent_is_said_so(config, tmp_path, monkeypatch):
+    # the monitor input reads NaN from sample 45 (0.5 bar commanded): the pressure interlock
+    # vents; the vent check cannot verify it, and said "the monitor still reads nan bar 0.1 s
+    # after the vent, above 0.05 bar". Now it names the reading that is no number
+    import numpy as np
+
+    from mkm.bench.run import acquire
+    from mkm.bench.sim import SimBackend
+
+    read = SimBackend.read
+
+    def nan_monitor(self, n, timeout):
+        block = read(self, n, timeout)
+        index = block.first_index + np.arange(len(block.volts))
+        block.volts[index >= 45, 1] = np.nan
+        return block
+
+    monkeypatch.setattr(SimBackend, "read", nan_monitor)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert result.reason.startswith("pressure interlock: the pressure reading is not a number")
+    assert result.reason.endswith("; vented; the vent could not be verified (the monitor reads "
+                                  "nan V, not a number): VENT BY HAND (the regulator may still "
+                                  "hold 0.5 bar)")
+    assert "above" not in result.reason

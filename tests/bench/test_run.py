@@ -540,3 +540,27 @@ def test_a_vent_write_that_fails_once_is_written_again_before_the_check(ctrl_c_r
     assert loaded.commands["ok"].tolist()[-2:] == [False, True]
     vent = loaded.samples[loaded.samples["phase"] == "vent"]
     assert vent["sample"].iloc[0] == loaded.commands["sample"].iloc[-1]  # checked after it
+
+
+def test_a_value_error_of_mkm_mid_run_is_a_bug_not_bad_input(config, tmp_path, monkeypatch,
+                                                              mkm_cli):
+    # numpy's LinAlgError (a ValueError) from the settle fit at its first check: the command
+    # line took it for bad input, "mkm acquire: error: SVD did not converge", exit 2, with no
+    # traceback and the run folder not printed. Now its traceback follows the line that says
+    # where the run is, as for any other error of mkm
+    import numpy as np
+
+    from mkm.bench import sequence
+
+    def bug_at_the_first_check(*args):
+        raise np.linalg.LinAlgError("SVD did not converge")
+
+    monkeypatch.setattr(sequence, "settle_reached", bug_at_the_first_check)
+    with pytest.raises(RuntimeError) as raised:
+        mkm_cli(["acquire", "--pressures", "0.5", "--out", str(tmp_path / "runs"),
+                 "--no-progress"])
+    assert isinstance(raised.value.__cause__, np.linalg.LinAlgError)
+    (folder,) = (tmp_path / "runs").glob("*_paper-prototype-SIMULATED")
+    run = load_run(folder)
+    assert run.status == "failed" and run.reason.startswith("LinAlgError: SVD did not converge")
+    assert run.meta.vent_check["verified"]

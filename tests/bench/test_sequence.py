@@ -87,3 +87,57 @@ def test_validate_tare_limits(config):
         validate_tare(0.1 * rng.standard_normal(50), config)
     with pytest.raises(TareInvalid, match=r"offset is \+196.\d N from loadcell.offset_V"):
         validate_tare(good - 0.015 + 1.0, config)
+
+
+def test_a_tare_that_does_not_see_rest_says_so(config):
+    # a muscle still relaxing at 0 bar: its force falls 0.6 N/s through the 4.9 s of a
+    # 50-sample tare, under the sim's 0.39 N rms amplifier noise. Its spread (0.95 N rms) is
+    # within every limit, so the tare was taken as it came, said nowhere; its zero is the
+    # mean, 1.5 N off either end
+    from mkm.bench.sequence import rest_warning
+
+    rng = np.random.default_rng(0)
+    k = config.loadcell.sensitivity_N_per_V
+    t = np.arange(50) / config.daq.sample_rate_hz
+    resting = 0.015 + 0.002 * rng.standard_normal(50)
+    relaxing = resting - 0.6 * t / k
+    out = validate_tare(relaxing, config)
+    assert out["std_N"] < config.settle.max_force_std_N < config.safety.tare_max_std_N
+    # the trend's standard error: 0.39 N / sqrt(sum (t - mean t)^2 = 104 s^2) x 4.9 s = 0.19 N
+    assert not out["at_rest"] and out["drift_N"] == pytest.approx(-0.6 * 4.9, abs=4 * 0.19)
+    assert rest_warning(out, config).startswith(
+        f"the tare did not see the load cell at rest: its force moved {out['drift_N']:+.2f} N "
+        "over the 5 s of the tare")
+    out = validate_tare(resting, config)
+    assert out["at_rest"] and rest_warning(out, config) == ""
+    # a trend beyond the noise, but within the 0.39 N (0.02 % of 1961 N) of zero drift the
+    # uncertainty budget allows over a run, is rest
+    out = validate_tare(np.full(50, 0.015) + 0.07 * t / k, config)
+    assert out["at_rest"] and out["drift_N"] == pytest.approx(0.07 * 4.9)
+
+
+def test_a_run_whose_tare_does_not_see_rest_says_so_in_run_json_and_on_screen(config,
+                                                                             tmp_path):
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    backend = SimBackend(config)
+    read, k = backend.read, config.loadcell.sensitivity_N_per_V
+
+    def relaxing(n, timeout):  # 1.5 N/s down to rest at 3 s: through the 2 s tare
+        block = read(n, timeout)
+        t = (block.first_index + np.arange(len(block.volts))) / config.daq.sample_rate_hz
+        block.volts[:, 0] += np.maximum(1.5 * (3.0 - t), 0.0) / k
+        return block
+
+    backend.read, notes = relaxing, []
+    result = BenchRun(config, backend, tmp_path, handle_signals=False,
+                      notify=notes.append).execute()
+    assert result.status == "complete"
+    tare = load_run(result.path).meta.tare
+    assert tare["std_N"] < config.settle.max_force_std_N  # no other warning would say it
+    # 20 samples: the trend's standard error 0.39 N / sqrt(6.65 s^2) x 1.9 s = 0.29 N
+    assert not tare["at_rest"] and tare["drift_N"] == pytest.approx(-1.5 * 1.9, abs=4 * 0.29)
+    (warning,) = [n for n in notes if n.startswith("warning: ")]
+    assert warning.startswith("warning: the tare did not see the load cell at rest: its force "
+                              f"moved {tare['drift_N']:+.2f} N over the 2 s of the tare")

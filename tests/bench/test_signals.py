@@ -290,3 +290,32 @@ def test_a_signal_while_the_run_folder_is_made_leaves_no_half_made_folder(config
     assert result.path is None and result.exit_code == 128 + signal.SIGTERM
     assert result.status == "aborted" and result.reason == "stopped by SIGTERM at once; vented"
     assert list((tmp_path / "runs").iterdir()) == []
+
+
+def test_a_signal_just_after_the_run_folder_is_made_is_recorded_in_it(config, tmp_path,
+                                                                      monkeypatch):
+    # SIGTERM once the run folder is whole but before the run held its recorder: the run
+    # vented and said "stopped by SIGTERM" with no folder, and left the folder with run.json
+    # 'running', which every later reader took for a run that died while it recorded. Now
+    # the signal waits for the recorder, and the folder says why the run stopped
+    from mkm.bench import recorder
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    init = recorder.Recorder.__init__
+
+    def signalled_once_made(self, *args, **kwargs):
+        init(self, *args, **kwargs)
+        run.signals._handle(signal.SIGTERM, None)  # what the handler does as it arrives
+
+    monkeypatch.setattr(recorder.Recorder, "__init__", signalled_once_made)
+    run = BenchRun(config, SimBackend(config), tmp_path / "runs", handle_signals=False,
+                   notify=lambda m: None)
+    result = run.execute()
+    assert result.status == "aborted" and result.exit_code == 128 + signal.SIGTERM
+    assert result.reason == "stopped by SIGTERM at once; vented"
+    (folder,) = (tmp_path / "runs").iterdir()
+    assert result.path == folder
+    recorded = load_run(folder)
+    assert recorded.status == "aborted" and recorded.meta.reason == result.reason
+    assert recorded.meta.stop_signal == "SIGTERM"

@@ -8,6 +8,7 @@ from mkm.bench.unvented import BenchLease, _folder, find_unvented
 
 def test_a_live_lease_is_not_unvented_and_release_removes_it(tmp_path):
     lease = BenchLease("sim-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
+    lease.started()
     lease.command(1.5)
     marker = json.loads(lease.path.read_text())
     assert marker["last_command_bar"] == 1.5 and marker["run_path"] == str(tmp_path / "run")
@@ -18,6 +19,7 @@ def test_a_live_lease_is_not_unvented_and_release_removes_it(tmp_path):
 
 def test_a_dead_or_reused_pid_is_unvented(tmp_path):
     lease = BenchLease("ni-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
+    lease.started()
     lease.command(2.5)
     # the same pid started at another time: another process now holds it
     data = json.loads(lease.path.read_text())
@@ -59,3 +61,33 @@ def test_a_run_whose_vent_was_not_verified_is_said_so_not_unvented(config, tmp_p
     assert "ended after its vent (0 bar commanded at" in marker.describe()
     marker.last_command_utc = ""
     assert marker.describe().endswith("ended before any pressure was commanded")
+
+
+def test_a_stop_while_the_first_marker_is_written_leaves_no_marker(config, tmp_path,
+                                                                   monkeypatch):
+    # a stop signal (here a second Ctrl-C) arrives while the run's first bench marker is being
+    # written, before any pressure: the run ended aborted, vented, but its marker stayed, and
+    # the next command on the bench vented "a run that ended before any pressure was
+    # commanded" and named it. Now the shutdown removes it as after any other stop
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.unvented import StateFolderThread
+
+    wait, interrupted = StateFolderThread.wait, []
+
+    def signal_once_written(self, ticket, timeout_s):
+        done = wait(self, ticket, timeout_s)
+        if isinstance(self, BenchLease) and not interrupted:
+            interrupted.append(ticket)
+            raise KeyboardInterrupt  # what the second Ctrl-C raises without the handlers
+        return done
+
+    monkeypatch.setattr(StateFolderThread, "wait", signal_once_written)
+    run = BenchRun(config, SimBackend(config), tmp_path, handle_signals=False,
+                   notify=lambda m: None)
+    result = run.execute()
+    assert interrupted == [1]  # the first write's
+    assert result.status == "aborted" and result.exit_code == 130
+    assert result.reason == "stopped by a second Ctrl-C (SIGINT) at once; vented"
+    assert not list(_folder("sim-Dev1").glob("*.json"))
+    assert find_unvented("sim-Dev1") == []
