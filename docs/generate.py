@@ -299,7 +299,8 @@ BENCHMARKS = {
     "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
     "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
-    "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 1 --seed 0 --out {out}",
+    "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 8 --seed 20261206 "
+                         "--out {out}",
     "identify_rest_length.json": "benchmarks/bench_identify_rest_length.py --out {out}",
     "identify_rest_length_wall.json": "benchmarks/bench_identify_rest_length.py --fits "
                                       "thickwall:theta0,rubber,L0,t0 --out {out}",
