@@ -11,7 +11,7 @@ EDITABLE := --config-settings editable_mode=strict -e
 # (with a trailing slash: `bench` is also a target)
 PACKAGE_DIRS := $(shell find mkm bench fem surrogate -type d -not -name __pycache__ -printf '%p/ ')
 
-.PHONY: demo test test-fast bench docs bench-docs clean
+.PHONY: demo test test-fast test-lowest bench docs bench-docs clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -50,6 +50,25 @@ test-fast: $(VENV)/.installed-test
 	$(BIN)/python tools/check_static_imports.py
 	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/python -m pytest -q -m "not slow" -n 2
 
+# The fast tier against the lowest versions pyproject.toml allows, on the lowest Python, in
+# .venv-lowest: tools/lowest-requirements.txt pins each runtime dependency at its lower bound
+# (tests/test_layout.py checks they agree), the test extras at the newest that fit. Not part of
+# `make test` (minutes on one core); run it after raising or adding a dependency.
+PYTHON_LOWEST ?= python3.11
+VENV_LOWEST := .venv-lowest
+PIP_INSTALL_LOWEST := PYTHONWARNINGS=ignore::UserWarning $(VENV_LOWEST)/bin/python -m pip install --quiet
+
+$(VENV_LOWEST)/bin/python:
+	$(PYTHON_LOWEST) -m venv $(VENV_LOWEST)
+	$(VENV_LOWEST)/bin/python -m pip install --quiet --upgrade pip
+
+$(VENV_LOWEST)/.installed: pyproject.toml tools/lowest-requirements.txt $(PACKAGE_DIRS) | $(VENV_LOWEST)/bin/python
+	$(PIP_INSTALL_LOWEST) -r tools/lowest-requirements.txt $(EDITABLE) ".[test]"
+	touch $@
+
+test-lowest: $(VENV_LOWEST)/.installed
+	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(VENV_LOWEST)/bin/python -m pytest -q -m "not slow"
+
 bench: $(VENV)/.installed-test
 	$(PIP_INSTALL) -e ".[bench]"
 	for f in benchmarks/bench_*.py; do $(BIN)/python $$f || exit 1; done
@@ -66,4 +85,4 @@ bench-docs: $(VENV)/.installed-test
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python docs/generate.py --run-benchmarks
 
 clean:
-	rm -rf $(VENV) build *.egg-info docs/_build docs/_generated
+	rm -rf $(VENV) $(VENV_LOWEST) build *.egg-info docs/_build docs/_generated

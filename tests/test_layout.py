@@ -1,10 +1,15 @@
 """The layout the wheel and the architecture check rely on: one import root, every package folder
-installed, every module of the application in a layer of the import contract."""
+installed, every module of the application in a layer of the import contract; and the lowest
+versions ``make test-lowest`` tests are the lower bounds the project declares."""
 
 from __future__ import annotations
 
 import tomllib
 from pathlib import Path
+
+from packaging.requirements import Requirement
+from packaging.utils import canonicalize_name
+from packaging.version import Version
 
 ROOT = Path(__file__).resolve().parent.parent
 CONFIG = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
@@ -58,8 +63,30 @@ def test_build_outputs_are_ignored_and_installs_are_quiet():
     if shutil.which("make") is None:
         return
     lines = subprocess.run(["make", "-n", "-B", ".venv/.installed-docs", ".venv/.installed",
-                            ".venv/.installed-test"], cwd=ROOT, capture_output=True, text=True,
-                           check=True, timeout=60).stdout.splitlines()
+                            ".venv/.installed-test", ".venv-lowest/.installed"], cwd=ROOT,
+                           capture_output=True, text=True, check=True, timeout=60
+                           ).stdout.splitlines()
     installs = [line for line in lines if "pip install" in line and " -e " in line]
-    assert len(installs) == 3
+    assert len(installs) == 4
     assert all(line.startswith("PYTHONWARNINGS=ignore::UserWarning ") for line in installs)
+
+
+def _versions(lines, operator):
+    """``{(name, extras): version}`` of the requirements' ``operator`` clauses (one each)."""
+    found = {}
+    for line in lines:
+        requirement = Requirement(line)
+        (version,) = [s.version for s in requirement.specifier if s.operator == operator]
+        found[canonicalize_name(requirement.name), frozenset(requirement.extras)] = \
+            Version(version)  # 1.15 is 1.15.0
+    return found
+
+
+def test_the_lowest_tested_versions_are_the_lower_bounds():
+    """``make test-lowest`` installs tools/lowest-requirements.txt: each runtime dependency at
+    its lower bound, so a bound raised or added is what that venv tests."""
+    text = (ROOT / "tools" / "lowest-requirements.txt").read_text(encoding="utf-8")
+    pins = _versions([line for line in text.splitlines()
+                      if line.strip() and not line.startswith("#")], "==")
+    bounds = _versions(CONFIG["project"]["dependencies"], ">=")
+    assert pins == bounds
