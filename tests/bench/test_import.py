@@ -261,7 +261,8 @@ def test_a_time_column_of_clock_readings_or_date_times_is_seconds_from_the_first
                                    atol=1e-6)
 
 
-@pytest.mark.parametrize("header", ["Timestamp", "Date/Time", "Uhrzeit"])
+@pytest.mark.parametrize("header", ["Timestamp", "Date/Time", "Uhrzeit", "Datum/Zeit",
+                                    "Datum Uhrzeit"])
 def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli):
     # was: the column not recognised, the 1-per-second record read as 23 steps of one row each
     t = np.arange(0.0, 23.0, 1.0)
