@@ -73,6 +73,7 @@ def _run_steps(path: Path) -> tuple[pd.DataFrame, str]:
     steps = run.steps[run.steps["settled"]]
     muscle = run.meta.muscle
     frame = pd.DataFrame({"pressure_bar": steps["pressure_bar_mean"],
+                          "set_pressure_bar": steps["set_pressure_bar"],
                           "force_N": steps["force_N_mean"], "direction": steps["direction"],
                           "D0_mm": muscle.D0_mm, "t0_mm": muscle.t0_mm, "eps": muscle.eps,
                           "L0_mm": muscle.L0_mm})

@@ -243,19 +243,27 @@ def read_reference(path) -> pd.DataFrame:
 def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFrame:
     """``frame`` with its columns checked, one row per pressure and muscle (branches averaged).
 
-    Rows of the same muscle, direction and pressure (rounded to 1 mbar) are averaged (repeats);
-    with ``up`` and ``down`` rows, only pressures measured in both directions are kept and the
-    two directions averaged (their mean is what a frictionless model predicts). Raises
-    ``ValueError`` naming a missing column or too few rows.
+    Rows of the same muscle, direction and level are averaged (repeats); the level is the
+    optional ``set_pressure_bar`` (a run's steps: a gauge's noise reads the two branches' holds
+    of one set pressure a few mbar apart), else the pressure rounded to 1 mbar. With ``up`` and
+    ``down`` rows, only levels measured in both directions are kept and the two directions
+    averaged (their mean is what a frictionless model predicts). Raises ``ValueError`` naming
+    a missing column or too few rows.
     """
+    import pandas as pd
+
     missing = [c for c in REFERENCE_COLUMNS if c not in frame.columns]
     if missing:
         raise ValueError(f"{name} lacks columns {missing}: expected "
-                         f"{', '.join(REFERENCE_COLUMNS)} (optional L0_mm, direction)")
+                         f"{', '.join(REFERENCE_COLUMNS)} (optional L0_mm, direction, "
+                         "set_pressure_bar)")
     frame = _numeric(frame, name).dropna(subset=list(REFERENCE_COLUMNS))
     keys = ["D0_mm", "t0_mm", "eps"] + (["L0_mm"] if "L0_mm" in frame else [])
     values = ["pressure_bar", "force_N"]
-    frame = frame.assign(level=frame["pressure_bar"].round(3))
+    level = frame["pressure_bar"]
+    if "set_pressure_bar" in frame:
+        level = pd.to_numeric(frame["set_pressure_bar"], errors="coerce").fillna(level)
+    frame = frame.assign(level=level.round(3))
     if "direction" in frame:
         frame = frame.groupby(keys + ["level", "direction"], as_index=False)[values].mean()
         if frame["direction"].nunique() > 1:

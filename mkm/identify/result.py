@@ -468,8 +468,9 @@ class Identification:
                   .rename(columns={"pressure_bar_mean": "pressure_bar",
                                    "force_N_mean": "force_N"}) for run in runs or self.runs]
         table = pd.concat(frames, ignore_index=True)
-        return check_reference(table[["pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm",
-                                      "force_N", "direction"]], "the runs' settled steps")
+        return check_reference(table[["pressure_bar", "set_pressure_bar", "D0_mm", "t0_mm",
+                                      "eps", "L0_mm", "force_N", "direction"]],
+                               "the runs' settled steps")
 
 
 def _entry(theta0_deg: float, model, module: str, reference: pd.DataFrame) -> dict:

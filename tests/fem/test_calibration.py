@@ -97,6 +97,20 @@ def test_up_and_down_branches_are_averaged():
     np.testing.assert_allclose(table.pressure_bar, [(1.0002 + 1.0) / 2, 2.0])
 
 
+def test_branches_are_matched_by_their_set_pressure():
+    # a gauge's noise reads the two holds of each set pressure a few mbar apart: matched by
+    # the measured pressure alone, no level is measured both ways and nothing is left to fit
+    rows = pd.DataFrame({
+        "set_pressure_bar": [1.0, 2.0, 3.0, 2.0, 1.0],
+        "pressure_bar": [1.003, 2.004, 3.001, 1.998, 0.996],
+        "direction": ["up", "up", "up", "down", "down"],
+        "force_N": [90.0, 190.0, 300.0, 210.0, 110.0],
+        "D0_mm": 30.0, "t0_mm": 3.0, "eps": 0.1})
+    table = check_reference(rows)
+    np.testing.assert_allclose(table.force_N, [100.0, 200.0])
+    np.testing.assert_allclose(table.pressure_bar, [(1.003 + 0.996) / 2, (2.004 + 1.998) / 2])
+
+
 @pytest.mark.parametrize(("frame", "message"), [
     (pd.DataFrame({"pressure_bar": [1.0], "force_N": [1.0]}), "lacks columns"),
     (pd.DataFrame({"pressure_bar": [1.0], "force_N": [1.0], "D0_mm": 30.0, "t0_mm": 2.0,
