@@ -571,10 +571,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     pressure = np.where(noise, 0.0, pressure)
     handling["readings_below_zero_set_to_0"] = int(noise.sum())
     top_bar = float(pressure.max())
-    if found["pressure"].unit is None and top_bar > PRACTICAL_RANGE.pressure_bar[1]:
-        # a header without a unit is read as bar: kPa or psi would pass as a bar 10-100 times
-        notes.append(f"pressures up to {top_bar:g} bar, read as bar since "
-                     f"{found['pressure'].header!r} names no unit: above the "
+    if top_bar > PRACTICAL_RANGE.pressure_bar[1]:
+        # kPa or psi read as bar pass as a bar 10-100 times: under a header without a unit,
+        # or one whose unit is wrong (a logger's channel set up in bar that records kPa)
+        column = found["pressure"]
+        read = (f"read as bar since {column.header!r} names no unit" if column.unit is None
+                else f"read in {column.unit} as {column.header!r} says")
+        notes.append(f"pressures up to {top_bar:g} bar, {read}: above the "
                      f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; if they "
                      "are kPa or psi, import again with --units pressure=kPa (or psi)")
     # the first bad cell named (a record's every sample checked at once)

@@ -146,6 +146,19 @@ def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, 
     assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 2.5
 
 
+def test_pressures_far_above_any_muscle_in_the_headers_unit_are_questioned(tmp_path, capsys):
+    # was: a header's "[bar]" over a logger's kPa readings imported at 250 bar without a word
+    table = tmp_path / "kpa.csv"
+    pd.DataFrame({"Druck [bar]": [0, 100, 250], "F": [0.0, 100.0, 250.0]}).to_csv(
+        table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 250.0  # as the file says
+    assert ("pressures up to 250 bar, read in bar as 'Druck [bar]' says: above the 8 bar of "
+            "any braided muscle; if they are kPa or psi, import again with --units "
+            "pressure=kPa") in err
+
+
 def test_export_as_workbook_and_csv(tmp_path, capsys):
     table = tmp_path / "lab.csv"
     _table().rename(columns={"P [bar]": "pressure_bar", "Kraft N": "force_N",
