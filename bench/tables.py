@@ -555,8 +555,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     headers = table.header
     for role, header in columns.items():
         if header not in headers:
-            raise ValueError(f"--columns {role}={header!r}: {table.name} has no such column: "
-                             f"it has {_listed(headers)}")
+            header = _header_named(table, role, header)
         if headers.count(header) > 1:  # the first would be taken, the others dropped unsaid
             raise ValueError(f"--columns {role}={header!r}: {table.name} has "
                              f"{_same_name(headers, header)}: expected one column of that "
@@ -585,6 +584,22 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     for column in found.values():
         _check_unit(table, column)
     return found
+
+
+def _header_named(table: RawTable, role: str, given: str) -> str:
+    """The header ``--columns ROLE=given`` names where no header is ``given`` itself: the one
+    whose name without its unit is ``given`` (``Kanal 1`` for ``Kanal 1 [bar]``)."""
+    name = given.strip().casefold()
+    named = [h for h in table.header if h and name and (
+        (match := _BRACKETED.match(str(h).strip())) and match.group("name").strip().casefold()
+        == name)]
+    if len(named) > 1:
+        raise ValueError(f"--columns {role}={given!r}: {table.name} has {len(named)} columns "
+                         f"of that name, {_listed(named)}: expected one; name it with its unit")
+    if not named:
+        raise ValueError(f"--columns {role}={given!r}: {table.name} has no such column: "
+                         f"it has {_listed(table.header)}")
+    return named[0]
 
 
 #: what a time column's header may name in place of a unit: the format of its clock readings

@@ -93,6 +93,19 @@ def test_units_converted_by_their_definitions(tmp_path):
                                rtol=1e-12)
 
 
+def test_a_column_named_without_its_unit_is_found(tmp_path):
+    # was: "--columns pressure='Kanal 1': lab.csv has no such column: it has 'Kanal 1 [bar]'"
+    table, _ = _one(tmp_path, "Kanal 1 [bar];Kanal 2 (kN);Kanal 2 [V]\n0;0,5;1\n2;1,5;2\n")
+    found = recognise(table, {"pressure": "Kanal 1", "force": "Kanal 2 (kN)"})
+    assert (found["pressure"].header, found["pressure"].unit) == ("Kanal 1 [bar]", "bar")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.0])
+    # two headers of that name (with two units): which one is not guessed
+    with pytest.raises(ValueError, match=re.escape(
+            "--columns force='Kanal 2': lab.csv has 2 columns of that name, 'Kanal 2 (kN)', "
+            "'Kanal 2 [V]': expected one; name it with its unit")):
+        recognise(table, {"pressure": "Kanal 1", "force": "Kanal 2"})
+
+
 def test_two_columns_of_one_name_are_refused_not_the_first_taken(tmp_path):
     # a logger that repeats a header: --columns force='Force (N)' took column B and dropped
     # column C without a word, after the error had said to choose one that way
