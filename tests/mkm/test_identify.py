@@ -204,6 +204,36 @@ def _copy(run, tmp_path, name):
     return target
 
 
+def test_the_search_again_outside_the_surrogate_box_is_announced(muscle, monkeypatch):
+    # was: the FE search after a surrogate optimum on its box edge ran without a word (six
+    # minutes on a 2000-row table), after the line of the surrogate's search
+    from mkm.identify import procedure
+    from mkm.identify.fitting import ModelStatic
+
+    _, runs = muscle
+    searched = []
+    select = procedure._select
+
+    def select_first_at_edge(source, *args):
+        best, candidates = select(source, *args)
+        searched.append(source.name)
+        if len(searched) == 1:
+            best.at_edge = ["theta0_deg"]
+        return best, candidates
+
+    stand_in = ModelStatic("thickwall:gap_mm=0", None, None)  # a fast "surrogate"
+    monkeypatch.setattr(procedure, "_covering_surrogate", lambda *a: (stand_in, None))
+    monkeypatch.setattr(procedure, "_select", select_first_at_edge)
+    said = []
+    result = identify(runs[:2], model="thickwall", params="theta0,rubber", notify=said.append)
+    assert searched == ["thickwall:gap_mm=0", "thickwall"]
+    line = next(k for k, m in enumerate(said) if m.startswith("fitting theta0, rubber"))
+    assert said[line + 1] == ("the optimum lies on the surrogate's box edge (theta0_deg): "
+                              "searching again with thickwall (one sweep per run and "
+                              "evaluation)")
+    assert result.searched_with == "thickwall"
+
+
 def test_no_progress_leaves_the_result_alone(one_run, tmp_path, mkm_run):
     # every long command takes --no-progress (getting started); identify refused it
     argv = ["identify", str(one_run), "--params", "theta0", "--model", "thickwall", "--search",
