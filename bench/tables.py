@@ -11,7 +11,8 @@
   dimension), ``--columns`` and ``--units`` overriding.
 - :func:`column_values`: a recognised column's cells as numbers in the toolkit's unit
   (bar, N, s, mm, fraction), converted by pint; a time column of clock readings
-  (``hh:mm:ss.fff``, ``2:05:00 PM``) or date-times as seconds from its first row.
+  (``hh:mm:ss.fff``, ``2:05:00 PM``), stopwatch readings (``mm:ss.f``) or date-times as
+  seconds from its first row.
 
 Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
 workbook's cached values; a formula's text is read only to name it where no value was saved).
@@ -604,8 +605,9 @@ def _header_named(table: RawTable, role: str, given: str) -> str:
 
 #: what a time column's header may name in place of a unit: the format of its clock readings
 #: or date-times (``Time (hh:mm:ss)``, ``Zeit [hh:mm:ss.fff]``, ``dd.mm.yyyy hh:mm:ss``)
-_CLOCK_FORMAT = re.compile(r"^(?:[dmy]{1,4}[./-][dmy]{1,4}[./-][dmy]{1,4}[ t])?h{1,2}:m{1,2}"
-                           r":s{1,2}(?:[.,][fsz0]{1,6})?$", re.IGNORECASE)
+_CLOCK_FORMAT = re.compile(r"^(?:(?:[dmy]{1,4}[./-][dmy]{1,4}[./-][dmy]{1,4}[ t])?h{1,2}:m{1,2}"
+                           r":s{1,2}(?:[.,][fsz0]{1,6})?|m{1,2}:s{1,2}[.,][fsz0]{1,6})$",
+                           re.IGNORECASE)
 
 
 def clock_format(unit: str | None) -> bool:
@@ -669,9 +671,10 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         if raw and str(raw[0]).strip() and _number(raw[0], table.decimal)[0] is None:
             raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
                              f"{column.header!r}): {_shown(raw[0])} is not a time: expected "
-                             "seconds (or the unit in the header: Time [ms]), a time of day "
-                             "(14:05:00.250, 2:05:00 PM) or a date-time (2026-12-05 14:05:00, "
-                             "05.12.2026 14:05:00, 12/5/2026 2:05:00 PM)")
+                             "seconds (or the unit in the header: Time [ms]), minutes and "
+                             "seconds (05:03.2), a time of day (14:05:00.250, 2:05:00 PM) or a "
+                             "date-time (2026-12-05 14:05:00, 05.12.2026 14:05:00, 12/5/2026 "
+                             "2:05:00 PM)")
     plain = _plain_numbers(raw, table.decimal)
     values = plain if plain is not None else np.empty(len(raw))
     inline: dict[str, int] = {}
@@ -731,6 +734,10 @@ def _plain_numbers(raw: list, decimal: str) -> np.ndarray | None:
 
 _CLOCK = re.compile(r"^(?P<h>\d{1,3}):(?P<m>\d{2}):(?P<s>\d{2}(?:[.,]\d*)?)$")
 _DAY_S = 86400.0
+#: a stopwatch's minutes and seconds, as a spreadsheet's ``mm:ss.0`` shows an elapsed time
+#: (05:03.2); the seconds' fraction tells it from a clock's ``hh:mm``
+_STOPWATCH = re.compile(r"^(?P<m>\d{1,4}):(?P<s>[0-5]\d[.,]\d+)$")
+_HOUR_S = 3600.0
 
 
 #: a time of day on a 12-hour clock, as an English-language Excel writes it (2:05:00 PM)
@@ -782,9 +789,9 @@ def _day_first(raw: list) -> bool:
 
 def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     """A cell holding a time of day (``hh:mm:ss[.fff]``, ``2:05:00 PM``, a workbook's time), a
-    duration (a workbook's time delta) or a date-time (ISO, ``dd.mm.yyyy hh:mm:ss``, or
-    slashed ``m/d/yyyy h:mm:ss AM``, ``d/m/yyyy`` with ``day_first``), as its kind and seconds;
-    ``None`` for any other cell."""
+    duration (a workbook's time delta), a stopwatch reading (``mm:ss.f``) or a date-time (ISO,
+    ``dd.mm.yyyy hh:mm:ss``, or slashed ``m/d/yyyy h:mm:ss AM``, ``d/m/yyyy`` with
+    ``day_first``), as its kind and seconds; ``None`` for any other cell."""
     if isinstance(cell, datetime.datetime):
         return "date-time", _epoch_s(cell)
     if isinstance(cell, datetime.time):
@@ -798,6 +805,10 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     of_day = _time_of_day_s(text)
     if of_day is not None:
         return "clock", of_day
+    stopwatch = _STOPWATCH.match(text)
+    if stopwatch:
+        return "stopwatch reading", int(stopwatch["m"]) * 60.0 + float(
+            stopwatch["s"].replace(",", "."))
     slashed = _slashed_s(text, day_first)
     if slashed is not None:
         return "date-time", slashed
@@ -837,6 +848,10 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     if kinds[0][0] == "clock":
         # a time of day restarts at midnight: a step back of more than half a day is the next day
         values += _DAY_S * np.cumsum(np.r_[0.0, np.diff(values) < -_DAY_S / 2])
+    elif kinds[0][0] == "stopwatch reading":
+        # mm:ss.0 shows the minutes of the hour: a step back of more than half an hour is the
+        # next hour
+        values += _HOUR_S * np.cumsum(np.r_[0.0, np.diff(values) < -_HOUR_S / 2])
     return values - values[0]
 
 
