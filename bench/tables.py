@@ -37,7 +37,13 @@ from mkm.core.guards import table_file
 MAX_ROWS = 2_000_000
 SEPARATORS = (",", ";", "\t")
 #: text tables read; ``.lvm`` is LabVIEW's measurement file (tab separated under a header block)
-TEXT_SUFFIXES = (".csv", ".tsv", ".txt", ".lvm")
+#: and ``.xls`` the tab-separated text LabVIEW's Write To Spreadsheet File and loggers name so
+#: (an Excel 97-2003 workbook is refused, naming what to save it as)
+TEXT_SUFFIXES = (".csv", ".tsv", ".txt", ".lvm", ".xls")
+#: how a binary file that is no text table starts: an Excel 97-2003 workbook (OLE2), and a
+#: zip archive (an .xlsx saved or renamed under a text table's name)
+_OLE2_MAGIC = b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1"
+_ZIP_MAGIC = b"PK\x03\x04"
 #: workbooks read, every sheet a table
 WORKBOOK_SUFFIXES = (".xlsx", ".xlsm")
 
@@ -172,6 +178,13 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
         data = path.read_bytes()
     except OSError as exc:
         raise ValueError(f"{path} cannot be read ({exc.strerror or exc})") from None
+    if data.startswith(_OLE2_MAGIC):
+        raise ValueError(f"{path.name} is an Excel 97-2003 workbook: expected an .xlsx "
+                         "workbook or a CSV table; open it in Excel and save it as .xlsx")
+    if data.startswith(_ZIP_MAGIC):
+        raise ValueError(f"{path.name} is a zip archive (an .xlsx workbook?) under a "
+                         f"{suffix} name: expected a text table; if it is a workbook, rename "
+                         "it to .xlsx")
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text" is UTF-16
         text = data.decode("utf-16", errors="replace")
     elif b"\x00" in data[:2]:  # UTF-16 without its byte order mark (a logger's, a script's)

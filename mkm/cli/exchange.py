@@ -88,7 +88,8 @@ def register(subparsers) -> None:
 def _table_help() -> str:
     from mkm.bench.tables import table_suffixes_text
 
-    return f"the table file: {table_suffixes_text()} (LabVIEW's .lvm read as text)"
+    return (f"the table file: {table_suffixes_text()} (LabVIEW's .lvm and a logger's .xls "
+            "read as text)")
 
 
 def _import(args) -> int:

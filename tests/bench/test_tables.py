@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+import zipfile
 
 import numpy as np
 import pandas as pd
@@ -328,6 +329,27 @@ def test_a_header_block_with_rows_of_numbers_is_skipped(name, text, header, titl
     np.testing.assert_allclose(column_values(table, found["force"]), force)
     np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1, 0.2])
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+
+
+def test_a_text_xls_is_read_and_a_binary_workbook_under_another_name_is_named(tmp_path):
+    # was: "unknown table format '.xls'" for the tab-separated text LabVIEW's Write To
+    # Spreadsheet File saves as .xls, and "has no row of numbers" for an .xlsx renamed .csv
+    table, found = _one(tmp_path, "Zeit [s]\tDruck [bar]\tKraft [N]\r\n0\t0\t3\r\n"
+                        "0.1\t2.5\t253\r\n", "run 7.xls")
+    np.testing.assert_allclose(column_values(table, found["force"]), [3.0, 253.0])
+    old = tmp_path / "old.xls"
+    old.write_bytes(b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1" + bytes(504))
+    with pytest.raises(ValueError, match=re.escape(
+            "old.xls is an Excel 97-2003 workbook: expected an .xlsx workbook or a CSV table; "
+            "open it in Excel and save it as .xlsx")):
+        read_tables(old)
+    renamed = tmp_path / "book.csv"
+    with zipfile.ZipFile(renamed, "w") as archive:
+        archive.writestr("xl/workbook.xml", "<workbook/>")
+    with pytest.raises(ValueError, match=re.escape(
+            "book.csv is a zip archive (an .xlsx workbook?) under a .csv name: expected a text "
+            "table; if it is a workbook, rename it to .xlsx")):
+        read_tables(renamed)
 
 
 def test_a_labview_x_column_of_another_dimension_and_a_named_unit_are_as_written(tmp_path):
