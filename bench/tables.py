@@ -54,8 +54,11 @@ def table_suffixes_text() -> str:
     return f"{', '.join(first)} or {last}"
 #: words of a header that say which reading of a quantity it is (German Ist: the actual
 #: value, beside the Soll, the set one), dropped from its name
-STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual", "ist", "istwert",
-              "gemessen", "mittelwert"}
+STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual", "act", "ist",
+              "istwert", "gemessen", "mittelwert"}
+#: how a German one-word compound naming a set point starts (Solldruck, Sollkraft): no reading,
+#: left out as Druck_Soll is
+SET_POINT_PREFIX = "soll"
 
 
 @dataclass(frozen=True)
@@ -69,7 +72,8 @@ class Role:
 
     def matches(self, name: str) -> bool:
         return name in self.names or (bool(self.endings) and " " not in name
-                                      and name.endswith(self.endings))
+                                      and name.endswith(self.endings)
+                                      and not name.startswith(SET_POINT_PREFIX))
 
 
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one

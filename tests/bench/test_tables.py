@@ -207,6 +207,18 @@ def test_a_german_benchs_actual_reading_beside_its_set_point(tmp_path):
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.98, 2.01])
 
 
+@pytest.mark.parametrize("header", ["Solldruck [bar];Istdruck [bar];Sollkraft [N];Kraft [N]",
+                                    "p_set [bar];p_act [bar];F_set [N];F_act [N]"])
+def test_a_set_point_compound_or_abbreviation_is_left_out(header, tmp_path):
+    # was: "two pressure columns, 'Solldruck [bar]' and 'Istdruck [bar]'" (a regulator's set
+    # point and its reading, one word each), and "no pressure column" for p_set and p_act
+    table, found = _one(tmp_path, f"{header}\n1;0,98;100;99\n2;2,01;200;201\n")
+    headers = header.split(";")
+    assert (found["pressure"].header, found["force"].header) == (headers[1], headers[3])
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.98, 2.01])
+    np.testing.assert_allclose(column_values(table, found["force"]), [99.0, 201.0])
+
+
 def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
     # a lab's export with ',' between fields keeps its decimal commas quoted
     table, found = _one(tmp_path, 'Pressure [bar],Force [N]\n"0,0","0"\n"0,5","12,25"\n'
