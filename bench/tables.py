@@ -84,7 +84,7 @@ ROLES = {
     "time": Role(("t", "time", "zeit", "elapsed", "elapsed time", "timestamp", "time stamp",
                   "datetime", "date time", "date and time", "uhrzeit", "zeitstempel",
                   "datum zeit", "datum uhrzeit", "datum und uhrzeit", "datum und zeit"), "s"),
-    "direction": Role(("direction", "dir", "branch", "sweep")),
+    "direction": Role(("direction", "dir", "branch", "sweep", "richtung")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
                  "shortening ratio", "contraction ratio", "kontraktion", "verkürzung",
@@ -96,9 +96,11 @@ ROLES = {
     "muscle": Role(("muscle", "muscle id", "actuator", "specimen")),
     "slack": Role(("zero entry", "slack")),
 }
-#: the direction words a table may use -> the run folder's ``up``/``down``
+#: the direction words a table may use (English, German) -> the run folder's ``up``/``down``
 DIRECTION_WORDS = {"up": "up", "rising": "up", "increasing": "up", "loading": "up",
-                   "down": "down", "falling": "down", "decreasing": "down", "unloading": "down"}
+                   "down": "down", "falling": "down", "decreasing": "down", "unloading": "down",
+                   "auf": "up", "steigend": "up", "belastung": "up",
+                   "ab": "down", "fallend": "down", "entlastung": "down"}
 
 
 @dataclass

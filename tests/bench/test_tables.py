@@ -12,6 +12,7 @@ import pytest
 from mkm.bench.tables import (
     Recognition,
     column_values,
+    directions,
     parse_assignments,
     parse_header,
     parse_unit,
@@ -217,6 +218,14 @@ def test_a_set_point_compound_or_abbreviation_is_left_out(header, tmp_path):
     assert (found["pressure"].header, found["force"].header) == (headers[1], headers[3])
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.98, 2.01])
     np.testing.assert_allclose(column_values(table, found["force"]), [99.0, 201.0])
+
+
+def test_a_german_direction_column(tmp_path):
+    # was: 'Richtung' not recognised, its auf/ab left out unsaid
+    table, found = _one(tmp_path, "Druck [bar];Kraft [N];Richtung\n0;0;auf\n2;200;Auf\n"
+                        "2;210;ab\n0;0;Entlastung\n")
+    assert found["direction"].header == "Richtung"
+    assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
 
 
 def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
