@@ -270,11 +270,28 @@ def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFram
             # the turning point of a staircase is measured on one branch only, where friction
             # biases it by the whole half-loop: fit only the levels measured both ways
             both = frame.groupby(keys + ["level"])["direction"].transform("nunique") > 1
-            frame = frame[both]
+            frame = pd.concat([_branches_met(sweep, both.loc[sweep.index])
+                               for _, sweep in frame.groupby(keys)])
     frame = frame.groupby(keys + ["level"], as_index=False)[values].mean()
     if len(frame) < 2:
         raise ValueError(f"{name} has {len(frame)} usable pressures: expected at least 2")
     return frame[keys + values]
+
+
+def _branches_met(sweep: pd.DataFrame, both: pd.Series) -> pd.DataFrame:
+    """The rows of one sweep whose level was measured both ways (``both``); where its falling
+    branch was held at other pressures than its rising one (a lab's table: up 0, 1, 2, 3, 4,
+    down 3.5, 2.5, ...), the rising steps within the falling branch's range, each with the
+    falling branch's force interpolated there beside its own (a force smooth in pressure)."""
+    import pandas as pd
+
+    if sweep["direction"].nunique() < 2 or sweep.loc[both, "level"].nunique() >= 2:
+        return sweep[both]
+    up = sweep[sweep["direction"] == "up"]
+    down = sweep[sweep["direction"] == "down"].sort_values("pressure_bar")
+    up = up[up["pressure_bar"].between(down["pressure_bar"].min(), down["pressure_bar"].max())]
+    falling_N = np.interp(up["pressure_bar"], down["pressure_bar"], down["force_N"])
+    return pd.concat([up, up.assign(direction="down", force_N=falling_N)])
 
 
 def _numeric(frame: pd.DataFrame, name: str) -> pd.DataFrame:
