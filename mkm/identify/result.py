@@ -397,6 +397,8 @@ class Identification:
         from mkm.registry import parse_spec
 
         out = check_output_folder(out_dir, OUTPUT_FILES.values(), OUTPUT_FILES["identification"])
+        # the calibration's reference first: runs it refuses leave no file half written
+        reference = self._reference()
         out.mkdir(parents=True, exist_ok=True)
         info = provenance()
         # an assumed parameter's interval, a branch without steps: null, not NaN (no JSON)
@@ -422,7 +424,6 @@ class Identification:
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"],
                       "misfit": record["goodness_of_fit"], "band": record["band"],
                       "model_form": record["model_form"]}
-        reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}
         store_calibration(files["calibration"], model.calibration_key, entry)

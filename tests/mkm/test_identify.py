@@ -234,6 +234,23 @@ def test_the_search_again_outside_the_surrogate_box_is_announced(muscle, monkeyp
     assert result.searched_with == "thickwall"
 
 
+def test_runs_the_calibration_cannot_take_leave_no_file(tmp_path, mkm_run):
+    # was: identification.json, parameters.csv and steps.csv written, then "the runs' settled
+    # steps has 1 usable pressures" (exit 2) and no calibration.json beside them
+    table = tmp_path / "lab.csv"
+    table.write_text("P [bar];F [N]\n0;0\n1;20\n2;45\n3;70\n4;95\n1,5;35\n0,5;10\n",
+                     encoding="utf-8")
+    code, out, err = mkm_run(["import", str(table), "--id", "m", "--D0", "30", "--t0", "3",
+                              "--L0", "282", "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 0, err
+    out_dir = tmp_path / "identified"
+    code, _, err = mkm_run(["identify", out.strip(), "--model", "thickwall", "--search", "model",
+                            "--params", "theta0", "--out", str(out_dir), "--no-progress"])
+    assert code == 2 and err.count("\n") == 1, err
+    assert "has 1 usable pressures: expected at least 2" in err
+    assert not out_dir.exists() or not any(out_dir.iterdir())
+
+
 def test_no_progress_leaves_the_result_alone(one_run, tmp_path, mkm_run):
     # every long command takes --no-progress (getting started); identify refused it
     argv = ["identify", str(one_run), "--params", "theta0", "--model", "thickwall", "--search",
