@@ -277,6 +277,21 @@ def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli
     assert run.samples["time_s"].tolist() == t.tolist()
 
 
+@pytest.mark.parametrize("header", ["Messzeit [s]", "Zeit seit Start [s]", "Relative Time [s]",
+                                    "Runtime (s)", "Laufzeit [s]"])
+def test_an_elapsed_time_column_by_its_lab_name_makes_a_time_series(header, tmp_path,
+                                                                     mkm_cli):
+    # was: not recognised, the 1-per-second record read as 23 steps of one row each
+    t = np.arange(0.0, 23.0, 1.0)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({header: t, "P": p, "F": 150.0 * p}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0.1")
+    assert f"{header!r} -> time [s]" in err
+    assert run.meta.imported_from["shape"] == "ramp"
+    assert run.samples["time_s"].tolist() == t.tolist()
+
+
 @pytest.mark.parametrize("header", ["Zeit", "Zeit [mm:ss.0]"])
 def test_a_stopwatch_column_of_minutes_and_seconds_makes_a_time_series(header, tmp_path,
                                                                        mkm_cli):
