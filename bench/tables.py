@@ -497,6 +497,15 @@ def _fits(unit, role: Role) -> bool:
             and unit.dimensionality == registry().Unit(role.unit or "dimensionless").dimensionality)
 
 
+def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
+    """The headers of ``table`` that no role took and whose unit is one of time (``Zeit seit
+    Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration."""
+    taken = {c.index for c in found.values()}
+    return [header for index, header in enumerate(table.header) if header and index not in taken
+            and (unit := parse_header(header)[1]) is not None
+            and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"]))]
+
+
 def parse_header(text: str) -> tuple[str, str | None]:
     """A column header as its name (lower case, words joined by one space, statistics words
     such as ``mean`` dropped) and its unit as written (``None`` when it names none).
