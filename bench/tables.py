@@ -598,6 +598,13 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         if index in taken or not header:
             continue
         name, unit = parse_header(header)
+        absolute = _absolute_name(name)
+        if "pressure" not in columns and absolute is not None and \
+                ROLES["pressure"].matches(absolute):
+            # its name says what a unit's mark says ('kPa abs'): read as gauge, 1 bar too high
+            raise ValueError(f"{table.name}: column {header!r} is an absolute pressure (its "
+                             "name says so): expected a gauge pressure, above the atmosphere "
+                             "as the regulator sets it (bar, bar(g), kPa, psi)")
         role = next((r for r, spec in ROLES.items() if spec.matches(name)), None)
         if role is None or role in columns:
             continue
@@ -632,6 +639,21 @@ def _header_named(table: RawTable, role: str, given: str) -> str:
         raise ValueError(f"--columns {role}={given!r}: {table.name} has no such column: "
                          f"it has {_listed(table.header)}")
     return named[0]
+
+
+#: the words of a header's name that mark an absolute pressure, and a German compound's start
+_ABSOLUTE_WORDS, _ABSOLUTE_PREFIX = {"abs", "absolute", "absolut"}, "absolut"
+
+
+def _absolute_name(name: str) -> str | None:
+    """``name`` (as :func:`parse_header` gives it) without the mark of an absolute pressure
+    (``druck abs``, ``p abs``, ``absolutdruck``), or None where it has none."""
+    words = name.split()
+    if any(w in _ABSOLUTE_WORDS for w in words):
+        return " ".join(w for w in words if w not in _ABSOLUTE_WORDS)
+    if len(words) == 1 and name.startswith(_ABSOLUTE_PREFIX) and name != _ABSOLUTE_PREFIX:
+        return name[len(_ABSOLUTE_PREFIX):]
+    return None
 
 
 #: what a time column's header may name in place of a unit: the format of its clock readings

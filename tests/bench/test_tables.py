@@ -170,6 +170,18 @@ def test_a_pressure_marked_absolute_is_refused_saying_why(header, unit, tmp_path
         _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
 
 
+@pytest.mark.parametrize("header", ["Absolutdruck [bar]", "p_abs [bar]", "Druck abs. [kPa]",
+                                    "Pressure absolute (psi)"])
+def test_a_pressure_named_absolute_is_refused_saying_why(header, tmp_path):
+    # was: 'Absolutdruck [bar]' read as a gauge pressure, every step 1 bar too high, and the
+    # others "no pressure column" (then named with --columns, read the same)
+    with pytest.raises(ValueError, match=re.escape(
+            f"lab.csv: column {header!r} is an absolute pressure (its name says so): expected "
+            "a gauge pressure, above the atmosphere as the regulator sets it (bar, bar(g), kPa, "
+            "psi)")):
+        _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
                         "Kürzung (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
