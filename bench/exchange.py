@@ -51,6 +51,7 @@ from mkm.bench.tables import (
     read_tables,
     recognise,
     sheet_names,
+    unread_time_columns,
     without_blank_rows,
     without_summary_rows,
 )
@@ -241,9 +242,16 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in {c.index for c in found.values()}])
+        # without a time column every row is a step: a clock by a name the reader does not
+        # know turns a record into thousands of one-row steps (an export's steps have times)
+        unread = [] if exported or "time" in found else unread_time_columns(table, found)
         notify(f"{table.name}: {recognition.line()}"
                + (f"; sheets without pressure and force skipped: {', '.join(skipped)}"
-                  if skipped else ""))
+                  if skipped else "")
+               + "".join(f"; column {header!r} holds times but is not read as the time "
+                         "column: every row is a step; if it is the record's clock, --columns "
+                         f"time={header!r} reads the table as a time series"
+                         for header in unread[:1]))
         prepared.append(recognition)
     if not prepared:
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
@@ -571,10 +579,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     pressure = np.where(noise, 0.0, pressure)
     handling["readings_below_zero_set_to_0"] = int(noise.sum())
     top_bar = float(pressure.max())
-    if found["pressure"].unit is None and top_bar > PRACTICAL_RANGE.pressure_bar[1]:
-        # a header without a unit is read as bar: kPa or psi would pass as a bar 10-100 times
-        notes.append(f"pressures up to {top_bar:g} bar, read as bar since "
-                     f"{found['pressure'].header!r} names no unit: above the "
+    if top_bar > PRACTICAL_RANGE.pressure_bar[1]:
+        # kPa or psi read as bar pass as a bar 10-100 times: under a header without a unit,
+        # or one whose unit is wrong (a logger's channel set up in bar that records kPa)
+        column = found["pressure"]
+        read = (f"read as bar since {column.header!r} names no unit" if column.unit is None
+                else f"read in {column.unit} as {column.header!r} says")
+        notes.append(f"pressures up to {top_bar:g} bar, {read}: above the "
                      f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; if they "
                      "are kPa or psi, import again with --units pressure=kPa (or psi)")
     # the first bad cell named (a record's every sample checked at once)

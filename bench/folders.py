@@ -12,6 +12,9 @@ import os
 import re
 from pathlib import Path
 
+from mkm.bench.tables import TEXT_SUFFIXES, WORKBOOK_SUFFIXES
+
+TABLE_SUFFIXES = (*TEXT_SUFFIXES, *WORKBOOK_SUFFIXES)
 RUN_RECORD = "run.json"
 PATTERN_CHARACTERS = ("*", "?")
 
@@ -87,6 +90,11 @@ def run_folders(arguments) -> list[Path]:
             raise ValueError(f"{argument}: no such folder{_separator_hint(argument)}")
         elif path.is_file() and path.name == RUN_RECORD:
             out.append(path.parent)  # a run's record stands for its folder
+        elif path.is_file() and path.suffix.lower() in TABLE_SUFFIXES:
+            # a lab's table given where its run is expected: it becomes one by mkm import
+            raise ValueError(f"{path} is a table, not a run folder: expected run folders; "
+                             f"import it first (mkm import \"{path}\" --id ... --D0 ... "
+                             "--t0 ...) and pass the run folder that prints")
         elif path.is_file():
             # a shell's * passes every file beside the run folders (a README): say how to
             # let mkm expand the pattern instead

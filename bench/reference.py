@@ -18,7 +18,7 @@ from mkm.bench.folders import PATTERN_CHARACTERS, is_run_folder, run_folders
 from mkm.bench.storage import load_run
 from mkm.bench.tables import plain_number, read_tables
 from mkm.core.records import file_sha256
-from mkm.fem.calibration import check_reference
+from mkm.fem.calibration import REFERENCE_COLUMNS, check_reference
 
 
 def calibration_reference(path) -> tuple[pd.DataFrame, str, str | None]:
@@ -43,7 +43,15 @@ def calibration_reference(path) -> tuple[pd.DataFrame, str, str | None]:
         path = runs[0]
     if not path.is_dir():
         sha = file_sha256(path) if path.is_file() else None
-        return check_reference(_table(path), str(path)), path.name, sha
+        frame = _table(path)
+        missing = [c for c in REFERENCE_COLUMNS if c not in frame.columns]
+        if missing:
+            # a lab's own table of pressure and force: its run folder is the reference
+            raise ValueError(f"{path} lacks columns {missing}: expected a reference table with "
+                             f"{', '.join(REFERENCE_COLUMNS)} (optional L0_mm, direction), or "
+                             "a run folder; a lab's table of pressures and forces becomes one "
+                             f"with mkm import \"{path}\" --id ... --D0 ... --t0 ...")
+        return check_reference(frame, str(path)), path.name, sha
     frame, sha = _run_steps(path)
     reference = check_reference(frame, f"run {path} (settled steps of steps.csv)")
     return reference, f"run {path.name}", sha
@@ -73,6 +81,7 @@ def _run_steps(path: Path) -> tuple[pd.DataFrame, str]:
     steps = run.steps[run.steps["settled"]]
     muscle = run.meta.muscle
     frame = pd.DataFrame({"pressure_bar": steps["pressure_bar_mean"],
+                          "set_pressure_bar": steps["set_pressure_bar"],
                           "force_N": steps["force_N_mean"], "direction": steps["direction"],
                           "D0_mm": muscle.D0_mm, "t0_mm": muscle.t0_mm, "eps": muscle.eps,
                           "L0_mm": muscle.L0_mm})

@@ -11,7 +11,8 @@
   dimension), ``--columns`` and ``--units`` overriding.
 - :func:`column_values`: a recognised column's cells as numbers in the toolkit's unit
   (bar, N, s, mm, fraction), converted by pint; a time column of clock readings
-  (``hh:mm:ss.fff``, ``2:05:00 PM``) or date-times as seconds from its first row.
+  (``hh:mm:ss.fff``, ``2:05:00 PM``), stopwatch readings (``mm:ss.f``) or date-times as
+  seconds from its first row.
 
 Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
 workbook's cached values; a formula's text is read only to name it where no value was saved).
@@ -36,7 +37,13 @@ from mkm.core.guards import table_file
 MAX_ROWS = 2_000_000
 SEPARATORS = (",", ";", "\t")
 #: text tables read; ``.lvm`` is LabVIEW's measurement file (tab separated under a header block)
-TEXT_SUFFIXES = (".csv", ".tsv", ".txt", ".lvm")
+#: and ``.xls`` the tab-separated text LabVIEW's Write To Spreadsheet File and loggers name so
+#: (an Excel 97-2003 workbook is refused, naming what to save it as)
+TEXT_SUFFIXES = (".csv", ".tsv", ".txt", ".lvm", ".xls")
+#: how a binary file that is no text table starts: an Excel 97-2003 workbook (OLE2), and a
+#: zip archive (an .xlsx saved or renamed under a text table's name)
+_OLE2_MAGIC = b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1"
+_ZIP_MAGIC = b"PK\x03\x04"
 #: workbooks read, every sheet a table
 WORKBOOK_SUFFIXES = (".xlsx", ".xlsm")
 
@@ -47,8 +54,11 @@ def table_suffixes_text() -> str:
     return f"{', '.join(first)} or {last}"
 #: words of a header that say which reading of a quantity it is (German Ist: the actual
 #: value, beside the Soll, the set one), dropped from its name
-STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual", "ist", "istwert",
-              "gemessen", "mittelwert"}
+STAT_WORDS = {"mean", "avg", "average", "measured", "meas", "value", "actual", "act", "ist",
+              "istwert", "gemessen", "mittelwert"}
+#: how a German one-word compound naming a set point starts (Solldruck, Sollkraft): no reading,
+#: left out as Druck_Soll is
+SET_POINT_PREFIX = "soll"
 
 
 @dataclass(frozen=True)
@@ -62,7 +72,8 @@ class Role:
 
     def matches(self, name: str) -> bool:
         return name in self.names or (bool(self.endings) and " " not in name
-                                      and name.endswith(self.endings))
+                                      and name.endswith(self.endings)
+                                      and not name.startswith(SET_POINT_PREFIX))
 
 
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
@@ -71,8 +82,12 @@ ROLES = {
     "pressure": Role(("p", "pressure", "pres", "druck", "pression"), "bar", ("druck",)),
     "force": Role(("f", "force", "load", "kraft", "tension", "effort"), "N", ("kraft",)),
     "time": Role(("t", "time", "zeit", "elapsed", "elapsed time", "timestamp", "time stamp",
-                  "datetime", "date time", "uhrzeit", "zeitstempel"), "s"),
-    "direction": Role(("direction", "dir", "branch", "sweep")),
+                  "datetime", "date time", "date and time", "uhrzeit", "zeitstempel",
+                  "datum zeit", "datum uhrzeit", "datum und uhrzeit", "datum und zeit",
+                  "relative time", "time since start", "runtime", "run time", "test time",
+                  "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
+                  "relative zeit", "zeit seit start"), "s"),
+    "direction": Role(("direction", "dir", "branch", "sweep", "richtung")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
                  "shortening ratio", "contraction ratio", "kontraktion", "verkürzung",
@@ -84,9 +99,11 @@ ROLES = {
     "muscle": Role(("muscle", "muscle id", "actuator", "specimen")),
     "slack": Role(("zero entry", "slack")),
 }
-#: the direction words a table may use -> the run folder's ``up``/``down``
+#: the direction words a table may use (English, German) -> the run folder's ``up``/``down``
 DIRECTION_WORDS = {"up": "up", "rising": "up", "increasing": "up", "loading": "up",
-                   "down": "down", "falling": "down", "decreasing": "down", "unloading": "down"}
+                   "down": "down", "falling": "down", "decreasing": "down", "unloading": "down",
+                   "auf": "up", "steigend": "up", "belastung": "up",
+                   "ab": "down", "fallend": "down", "entlastung": "down"}
 
 
 @dataclass
@@ -170,6 +187,13 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
         data = path.read_bytes()
     except OSError as exc:
         raise ValueError(f"{path} cannot be read ({exc.strerror or exc})") from None
+    if data.startswith(_OLE2_MAGIC):
+        raise ValueError(f"{path.name} is an Excel 97-2003 workbook: expected an .xlsx "
+                         "workbook or a CSV table; open it in Excel and save it as .xlsx")
+    if data.startswith(_ZIP_MAGIC):
+        raise ValueError(f"{path.name} is a zip archive (an .xlsx workbook?) under a "
+                         f"{suffix} name: expected a text table; if it is a workbook, rename "
+                         "it to .xlsx")
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text" is UTF-16
         text = data.decode("utf-16", errors="replace")
     elif b"\x00" in data[:2]:  # UTF-16 without its byte order mark (a logger's, a script's)
@@ -473,6 +497,15 @@ def _fits(unit, role: Role) -> bool:
             and unit.dimensionality == registry().Unit(role.unit or "dimensionless").dimensionality)
 
 
+def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
+    """The headers of ``table`` that no role took and whose unit is one of time (``Zeit seit
+    Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration."""
+    taken = {c.index for c in found.values()}
+    return [header for index, header in enumerate(table.header) if header and index not in taken
+            and (unit := parse_header(header)[1]) is not None
+            and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"]))]
+
+
 def parse_header(text: str) -> tuple[str, str | None]:
     """A column header as its name (lower case, words joined by one space, statistics words
     such as ``mean`` dropped) and its unit as written (``None`` when it names none).
@@ -554,8 +587,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     headers = table.header
     for role, header in columns.items():
         if header not in headers:
-            raise ValueError(f"--columns {role}={header!r}: {table.name} has no such column: "
-                             f"it has {_listed(headers)}")
+            header = _header_named(table, role, header)
         if headers.count(header) > 1:  # the first would be taken, the others dropped unsaid
             raise ValueError(f"--columns {role}={header!r}: {table.name} has "
                              f"{_same_name(headers, header)}: expected one column of that "
@@ -566,6 +598,13 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         if index in taken or not header:
             continue
         name, unit = parse_header(header)
+        absolute = _absolute_name(name)
+        if "pressure" not in columns and absolute is not None and \
+                ROLES["pressure"].matches(absolute):
+            # its name says what a unit's mark says ('kPa abs'): read as gauge, 1 bar too high
+            raise ValueError(f"{table.name}: column {header!r} is an absolute pressure (its "
+                             "name says so): expected a gauge pressure, above the atmosphere "
+                             "as the regulator sets it (bar, bar(g), kPa, psi)")
         role = next((r for r, spec in ROLES.items() if spec.matches(name)), None)
         if role is None or role in columns:
             continue
@@ -586,10 +625,42 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     return found
 
 
+def _header_named(table: RawTable, role: str, given: str) -> str:
+    """The header ``--columns ROLE=given`` names where no header is ``given`` itself: the one
+    whose name without its unit is ``given`` (``Kanal 1`` for ``Kanal 1 [bar]``)."""
+    name = given.strip().casefold()
+    named = [h for h in table.header if h and name and (
+        (match := _BRACKETED.match(str(h).strip())) and match.group("name").strip().casefold()
+        == name)]
+    if len(named) > 1:
+        raise ValueError(f"--columns {role}={given!r}: {table.name} has {len(named)} columns "
+                         f"of that name, {_listed(named)}: expected one; name it with its unit")
+    if not named:
+        raise ValueError(f"--columns {role}={given!r}: {table.name} has no such column: "
+                         f"it has {_listed(table.header)}")
+    return named[0]
+
+
+#: the words of a header's name that mark an absolute pressure, and a German compound's start
+_ABSOLUTE_WORDS, _ABSOLUTE_PREFIX = {"abs", "absolute", "absolut"}, "absolut"
+
+
+def _absolute_name(name: str) -> str | None:
+    """``name`` (as :func:`parse_header` gives it) without the mark of an absolute pressure
+    (``druck abs``, ``p abs``, ``absolutdruck``), or None where it has none."""
+    words = name.split()
+    if any(w in _ABSOLUTE_WORDS for w in words):
+        return " ".join(w for w in words if w not in _ABSOLUTE_WORDS)
+    if len(words) == 1 and name.startswith(_ABSOLUTE_PREFIX) and name != _ABSOLUTE_PREFIX:
+        return name[len(_ABSOLUTE_PREFIX):]
+    return None
+
+
 #: what a time column's header may name in place of a unit: the format of its clock readings
 #: or date-times (``Time (hh:mm:ss)``, ``Zeit [hh:mm:ss.fff]``, ``dd.mm.yyyy hh:mm:ss``)
-_CLOCK_FORMAT = re.compile(r"^(?:[dmy]{1,4}[./-][dmy]{1,4}[./-][dmy]{1,4}[ t])?h{1,2}:m{1,2}"
-                           r":s{1,2}(?:[.,][fsz0]{1,6})?$", re.IGNORECASE)
+_CLOCK_FORMAT = re.compile(r"^(?:(?:[dmy]{1,4}[./-][dmy]{1,4}[./-][dmy]{1,4}[ t])?h{1,2}:m{1,2}"
+                           r":s{1,2}(?:[.,][fsz0]{1,6})?|m{1,2}:s{1,2}[.,][fsz0]{1,6})$",
+                           re.IGNORECASE)
 
 
 def clock_format(unit: str | None) -> bool:
@@ -653,9 +724,10 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         if raw and str(raw[0]).strip() and _number(raw[0], table.decimal)[0] is None:
             raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
                              f"{column.header!r}): {_shown(raw[0])} is not a time: expected "
-                             "seconds (or the unit in the header: Time [ms]), a time of day "
-                             "(14:05:00.250, 2:05:00 PM) or a date-time (2026-12-05 14:05:00, "
-                             "05.12.2026 14:05:00, 12/5/2026 2:05:00 PM)")
+                             "seconds (or the unit in the header: Time [ms]), minutes and "
+                             "seconds (05:03.2), a time of day (14:05:00.250, 2:05:00 PM) or a "
+                             "date-time (2026-12-05 14:05:00, 05.12.2026 14:05:00, 12/5/2026 "
+                             "2:05:00 PM)")
     plain = _plain_numbers(raw, table.decimal)
     values = plain if plain is not None else np.empty(len(raw))
     inline: dict[str, int] = {}
@@ -715,6 +787,10 @@ def _plain_numbers(raw: list, decimal: str) -> np.ndarray | None:
 
 _CLOCK = re.compile(r"^(?P<h>\d{1,3}):(?P<m>\d{2}):(?P<s>\d{2}(?:[.,]\d*)?)$")
 _DAY_S = 86400.0
+#: a stopwatch's minutes and seconds, as a spreadsheet's ``mm:ss.0`` shows an elapsed time
+#: (05:03.2); the seconds' fraction tells it from a clock's ``hh:mm``
+_STOPWATCH = re.compile(r"^(?P<m>\d{1,4}):(?P<s>[0-5]\d[.,]\d+)$")
+_HOUR_S = 3600.0
 
 
 #: a time of day on a 12-hour clock, as an English-language Excel writes it (2:05:00 PM)
@@ -766,9 +842,9 @@ def _day_first(raw: list) -> bool:
 
 def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     """A cell holding a time of day (``hh:mm:ss[.fff]``, ``2:05:00 PM``, a workbook's time), a
-    duration (a workbook's time delta) or a date-time (ISO, ``dd.mm.yyyy hh:mm:ss``, or
-    slashed ``m/d/yyyy h:mm:ss AM``, ``d/m/yyyy`` with ``day_first``), as its kind and seconds;
-    ``None`` for any other cell."""
+    duration (a workbook's time delta), a stopwatch reading (``mm:ss.f``) or a date-time (ISO,
+    ``dd.mm.yyyy hh:mm:ss``, or slashed ``m/d/yyyy h:mm:ss AM``, ``d/m/yyyy`` with
+    ``day_first``), as its kind and seconds; ``None`` for any other cell."""
     if isinstance(cell, datetime.datetime):
         return "date-time", _epoch_s(cell)
     if isinstance(cell, datetime.time):
@@ -782,6 +858,10 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     of_day = _time_of_day_s(text)
     if of_day is not None:
         return "clock", of_day
+    stopwatch = _STOPWATCH.match(text)
+    if stopwatch:
+        return "stopwatch reading", int(stopwatch["m"]) * 60.0 + float(
+            stopwatch["s"].replace(",", "."))
     slashed = _slashed_s(text, day_first)
     if slashed is not None:
         return "date-time", slashed
@@ -821,6 +901,10 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     if kinds[0][0] == "clock":
         # a time of day restarts at midnight: a step back of more than half a day is the next day
         values += _DAY_S * np.cumsum(np.r_[0.0, np.diff(values) < -_DAY_S / 2])
+    elif kinds[0][0] == "stopwatch reading":
+        # mm:ss.0 shows the minutes of the hour: a step back of more than half an hour is the
+        # next hour
+        values += _HOUR_S * np.cumsum(np.r_[0.0, np.diff(values) < -_HOUR_S / 2])
     return values - values[0]
 
 

@@ -243,30 +243,55 @@ def read_reference(path) -> pd.DataFrame:
 def check_reference(frame: pd.DataFrame, name: str = "reference") -> pd.DataFrame:
     """``frame`` with its columns checked, one row per pressure and muscle (branches averaged).
 
-    Rows of the same muscle, direction and pressure (rounded to 1 mbar) are averaged (repeats);
-    with ``up`` and ``down`` rows, only pressures measured in both directions are kept and the
-    two directions averaged (their mean is what a frictionless model predicts). Raises
-    ``ValueError`` naming a missing column or too few rows.
+    Rows of the same muscle, direction and level are averaged (repeats); the level is the
+    optional ``set_pressure_bar`` (a run's steps: a gauge's noise reads the two branches' holds
+    of one set pressure a few mbar apart), else the pressure rounded to 1 mbar. With ``up`` and
+    ``down`` rows, only levels measured in both directions are kept and the two directions
+    averaged (their mean is what a frictionless model predicts). Raises ``ValueError`` naming
+    a missing column or too few rows.
     """
+    import pandas as pd
+
     missing = [c for c in REFERENCE_COLUMNS if c not in frame.columns]
     if missing:
         raise ValueError(f"{name} lacks columns {missing}: expected "
-                         f"{', '.join(REFERENCE_COLUMNS)} (optional L0_mm, direction)")
+                         f"{', '.join(REFERENCE_COLUMNS)} (optional L0_mm, direction, "
+                         "set_pressure_bar)")
     frame = _numeric(frame, name).dropna(subset=list(REFERENCE_COLUMNS))
     keys = ["D0_mm", "t0_mm", "eps"] + (["L0_mm"] if "L0_mm" in frame else [])
     values = ["pressure_bar", "force_N"]
-    frame = frame.assign(level=frame["pressure_bar"].round(3))
+    level = frame["pressure_bar"]
+    if "set_pressure_bar" in frame:
+        level = pd.to_numeric(frame["set_pressure_bar"], errors="coerce").fillna(level)
+    frame = frame.assign(level=level.round(3))
     if "direction" in frame:
         frame = frame.groupby(keys + ["level", "direction"], as_index=False)[values].mean()
         if frame["direction"].nunique() > 1:
             # the turning point of a staircase is measured on one branch only, where friction
             # biases it by the whole half-loop: fit only the levels measured both ways
             both = frame.groupby(keys + ["level"])["direction"].transform("nunique") > 1
-            frame = frame[both]
+            frame = pd.concat([_branches_met(sweep, both.loc[sweep.index])
+                               for _, sweep in frame.groupby(keys)])
     frame = frame.groupby(keys + ["level"], as_index=False)[values].mean()
     if len(frame) < 2:
         raise ValueError(f"{name} has {len(frame)} usable pressures: expected at least 2")
     return frame[keys + values]
+
+
+def _branches_met(sweep: pd.DataFrame, both: pd.Series) -> pd.DataFrame:
+    """The rows of one sweep whose level was measured both ways (``both``); where its falling
+    branch was held at other pressures than its rising one (a lab's table: up 0, 1, 2, 3, 4,
+    down 3.5, 2.5, ...), the rising steps within the falling branch's range, each with the
+    falling branch's force interpolated there beside its own (a force smooth in pressure)."""
+    import pandas as pd
+
+    if sweep["direction"].nunique() < 2 or sweep.loc[both, "level"].nunique() >= 2:
+        return sweep[both]
+    up = sweep[sweep["direction"] == "up"]
+    down = sweep[sweep["direction"] == "down"].sort_values("pressure_bar")
+    up = up[up["pressure_bar"].between(down["pressure_bar"].min(), down["pressure_bar"].max())]
+    falling_N = np.interp(up["pressure_bar"], down["pressure_bar"], down["force_N"])
+    return pd.concat([up, up.assign(direction="down", force_N=falling_N)])
 
 
 def _numeric(frame: pd.DataFrame, name: str) -> pd.DataFrame:

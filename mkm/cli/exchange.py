@@ -26,9 +26,9 @@ def register(subparsers) -> None:
         "Columns are recognised by name and unit (P, Pressure (bar), pressure [kPa], p_psi, "
         "Force (N), F [kgf], load_lbf, t (s), direction, eps, contraction (%), length (mm)) "
         "and converted with pint; what was recognised is printed and recorded in run.json. A "
-        "table with a time column (seconds, hh:mm:ss.fff or date-times, counted from its first "
-        "row) is a time series: stored as samples, its steps the plateaus of a staircase or "
-        "quasi-static bins of a ramp (rising and falling apart).",
+        "table with a time column (seconds, hh:mm:ss.fff, mm:ss.f or date-times, counted from "
+        "its first row) is a time series: stored as samples, its steps the plateaus of a "
+        "staircase or quasi-static bins of a ramp (rising and falling apart).",
         epilog=IMPORT_EXAMPLE)
     imp.add_argument("table", action=derived_help(_table_help))
     imp.add_argument("--id", help="the muscle's id (names the run folders; default: the one "
@@ -88,7 +88,8 @@ def register(subparsers) -> None:
 def _table_help() -> str:
     from mkm.bench.tables import table_suffixes_text
 
-    return f"the table file: {table_suffixes_text()} (LabVIEW's .lvm read as text)"
+    return (f"the table file: {table_suffixes_text()} (LabVIEW's .lvm and a logger's .xls "
+            "read as text)")
 
 
 def _import(args) -> int:

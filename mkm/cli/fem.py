@@ -60,8 +60,9 @@ def register(subparsers) -> None:
     add_model_arguments(cal, theta0=False)
     cal.add_argument("--reference", metavar="CSV|RUN_DIR",
                      help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (optional L0_mm, "
-                     "direction), a run folder of mkm acquire or mkm import, or a folder of "
-                     "them (one sweep each) (default: the paper's muscle I)")
+                     "direction), a run folder of mkm acquire or mkm import (a lab's own table "
+                     "becomes one), or a folder of them (one sweep each) (default: the paper's "
+                     "muscle I)")
     cal.add_argument("--target", type=_target, metavar="TARGET",
                      help="slope: dF/dP above the threshold (default for models with a "
                      "threshold pressure); force: least squares on every force (default for "

@@ -164,12 +164,21 @@ def parse_tolerance(text: str, name: str = "--tolerance") -> float:
     expected = (f"{name} {text.strip()}: expected a fraction in (0, 1) or a percentage in "
                 "(0, 100), for example 0.02 or 2%")
     if text.strip().endswith("%"):
-        value = parse_number(text.strip()[:-1], name) / 100.0
+        value = _percentage(text.strip(), name, "a percentage in (0, 100), for example 2%")
     else:
         value = parse_fraction(text, name)
     if not 0.0 < value < 1.0:
         raise ValueError(expected)
     return value
+
+
+def _percentage(text: str, name: str, forms: str) -> float:
+    """``text`` (ending in ``%``) as a fraction; ``ValueError`` naming the whole text."""
+    try:
+        return parse_number(text[:-1], name, expected=forms) / 100.0
+    except ValueError:
+        raise ValueError(f"{name}={text!r} is not a number followed by %: expected "
+                         f"{forms}") from None
 
 
 def parse_fraction(text: str, name: str = "--eps") -> float:
@@ -181,7 +190,7 @@ def parse_fraction(text: str, name: str = "--eps") -> float:
     text = text.strip()
     forms = "a fraction (0.05) or a percentage (5%)"
     if text.endswith("%"):
-        value = parse_number(text[:-1], name, expected=forms) / 100.0
+        value = _percentage(text, name, forms)
         if not 0.0 <= value < 1.0:
             raise ValueError(f"{name} {text}: a percentage in [0, 100) is expected")
         return value

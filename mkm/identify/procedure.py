@@ -248,6 +248,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if source is not fe and best.at_edge:
         notes.append(f"the optimum lies on the surrogate's box edge ({', '.join(best.at_edge)}):"
                      " searched again with the FE model, outside the box")
+        # said before it starts: one sweep of every run per evaluation, where the surrogate
+        # took none (minutes on a table of many steps)
+        notify(f"the optimum lies on the surrogate's box edge ({', '.join(best.at_edge)}): "
+               f"searching again with {fe.name} (one sweep per run and evaluation)")
         source = fe
         best, candidates = _select(source, runs, names, best.values, nominal)
     searched_with = source.name

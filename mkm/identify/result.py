@@ -399,6 +399,8 @@ class Identification:
         from mkm.registry import parse_spec
 
         out = check_output_folder(out_dir, OUTPUT_FILES.values(), OUTPUT_FILES["identification"])
+        # the calibration's reference first: runs it refuses leave no file half written
+        reference = self._reference()
         out.mkdir(parents=True, exist_ok=True)
         info = provenance()
         # an assumed parameter's interval, a branch without steps: null, not NaN (no JSON)
@@ -424,7 +426,6 @@ class Identification:
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"],
                       "misfit": record["goodness_of_fit"], "band": record["band"],
                       "model_form": record["model_form"], "options": record["options"]}
-        reference = self._reference()
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}
         store_calibration(files["calibration"], model.calibration_key, entry)
@@ -470,8 +471,9 @@ class Identification:
                   .rename(columns={"pressure_bar_mean": "pressure_bar",
                                    "force_N_mean": "force_N"}) for run in runs or self.runs]
         table = pd.concat(frames, ignore_index=True)
-        return check_reference(table[["pressure_bar", "D0_mm", "t0_mm", "eps", "L0_mm",
-                                      "force_N", "direction"]], "the runs' settled steps")
+        return check_reference(table[["pressure_bar", "set_pressure_bar", "D0_mm", "t0_mm",
+                                      "eps", "L0_mm", "force_N", "direction"]],
+                               "the runs' settled steps")
 
 
 def _entry(theta0_deg: float, model, module: str, reference: pd.DataFrame) -> dict:

@@ -146,6 +146,38 @@ def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, 
     assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 2.5
 
 
+def test_pressures_far_above_any_muscle_in_the_headers_unit_are_questioned(tmp_path, capsys):
+    # was: a header's "[bar]" over a logger's kPa readings imported at 250 bar without a word
+    table = tmp_path / "kpa.csv"
+    pd.DataFrame({"Druck [bar]": [0, 100, 250], "F": [0.0, 100.0, 250.0]}).to_csv(
+        table, index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 250.0  # as the file says
+    assert ("pressures up to 250 bar, read in bar as 'Druck [bar]' says: above the 8 bar of "
+            "any braided muscle; if they are kPa or psi, import again with --units "
+            "pressure=kPa") in err
+
+
+def test_a_time_column_by_an_unknown_name_is_pointed_out(tmp_path, capsys):
+    # was: 'Zeit seit Beginn [s]' left out unsaid, the record imported as one step per row
+    table = tmp_path / "record.csv"
+    t = np.arange(0.0, 23.0, 1.0)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    pd.DataFrame({"Zeit seit Beginn [s]": t, "P": p, "F": 150.0 * p}).to_csv(table,
+                                                                             index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert ("column 'Zeit seit Beginn [s]' holds times but is not read as the time column: "
+            "every row is a step; if it is the record's clock, --columns time='Zeit seit "
+            "Beginn [s]' reads the table as a time series") in err
+    code, out, err = _run(["import", str(table), *MUSCLE, "--columns",
+                           "time=Zeit seit Beginn [s]", "--out", str(tmp_path / "timed")],
+                          capsys)
+    assert code == 0 and "holds times" not in err, err
+    assert len(load_run(out.strip()).samples) == t.size
+
+
 def test_export_as_workbook_and_csv(tmp_path, capsys):
     table = tmp_path / "lab.csv"
     _table().rename(columns={"P [bar]": "pressure_bar", "Kraft N": "force_N",
@@ -187,6 +219,7 @@ def test_an_export_records_its_own_provenance(tmp_path, capsys):
     code, out, err = _run(["import", str(tmp_path / "run.xlsx"), "--out",
                            str(tmp_path / "back")], capsys)
     assert code == 0, err
+    assert "holds times" not in err  # its steps' start_s, end_s and settle_s are no clock
     back = load_run(out.strip())
     np.testing.assert_allclose(back.steps["force_N_mean"], load_run(run).steps["force_N_mean"])
 

@@ -51,6 +51,16 @@ def test_a_file_beside_the_runs_says_how_to_pass_them_and_a_run_json_is_its_run(
     assert run_folders([a / "run.json", b]) == [a, b]
 
 
+@pytest.mark.parametrize("name", ["lab.csv", "Messung 1.XLSX"])
+def test_a_table_given_as_a_run_says_to_import_it(name, tmp_path, mkm_cli):
+    table = tmp_path / name
+    table.write_text("P;F\n1;100\n")
+    code, _, err = mkm_cli(["report", str(table), "--models", "eq2"])
+    assert code == 2 and err.count("\n") == 1, err
+    assert f"{table} is a table, not a run folder" in err
+    assert f'import it first (mkm import "{table}" --id' in err
+
+
 def test_report_takes_a_quoted_pattern(tmp_path, mkm_cli):
     # what cmd passes: the pattern itself
     code, out, err = mkm_cli(["report", str(tmp_path / "runs" / "*"), "--models", "eq2"])

@@ -261,7 +261,8 @@ def test_a_time_column_of_clock_readings_or_date_times_is_seconds_from_the_first
                                    atol=1e-6)
 
 
-@pytest.mark.parametrize("header", ["Timestamp", "Date/Time", "Uhrzeit"])
+@pytest.mark.parametrize("header", ["Timestamp", "Date/Time", "Uhrzeit", "Datum/Zeit",
+                                    "Datum Uhrzeit"])
 def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli):
     # was: the column not recognised, the 1-per-second record read as 23 steps of one row each
     t = np.arange(0.0, 23.0, 1.0)
@@ -274,6 +275,42 @@ def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli
     assert f"{header!r} -> time" in err
     assert run.meta.imported_from["shape"] == "ramp"
     assert run.samples["time_s"].tolist() == t.tolist()
+
+
+@pytest.mark.parametrize("header", ["Messzeit [s]", "Zeit seit Start [s]", "Relative Time [s]",
+                                    "Runtime (s)", "Laufzeit [s]"])
+def test_an_elapsed_time_column_by_its_lab_name_makes_a_time_series(header, tmp_path,
+                                                                     mkm_cli):
+    # was: not recognised, the 1-per-second record read as 23 steps of one row each
+    t = np.arange(0.0, 23.0, 1.0)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({header: t, "P": p, "F": 150.0 * p}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0.1")
+    assert f"{header!r} -> time [s]" in err
+    assert run.meta.imported_from["shape"] == "ramp"
+    assert run.samples["time_s"].tolist() == t.tolist()
+
+
+@pytest.mark.parametrize("header", ["Zeit", "Zeit [mm:ss.0]"])
+def test_a_stopwatch_column_of_minutes_and_seconds_makes_a_time_series(header, tmp_path,
+                                                                       mkm_cli):
+    # was: "'00:00,0' is not a time": a spreadsheet's mm:ss.0 cells, which show the minutes of
+    # the hour (59:59,5 is followed by 00:00,0), saved with decimal commas
+    t = np.arange(0.0, 23.0, 1.0)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    start_s = 3590.0  # 59:50,0: the record passes the hour
+    cells = [f"{int((start_s + s) % 3600 // 60):02d}:{(start_s + s) % 60:04.1f}".replace(".", ",")
+             for s in t]
+    assert cells[9:11] == ["59:59,0", "00:00,0"]
+    path = tmp_path / "lab.csv"
+    path.write_text(f"{header};P;F\n" + "".join(
+        f"{c};{str(pb).replace('.', ',')};{150.0 * pb:.3f}".replace(".", ",") + "\n"
+        for c, pb in zip(cells, p, strict=True)), encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0.1")
+    assert f"{header!r} -> time" in err
+    assert run.meta.imported_from["shape"] == "ramp"
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-9)
 
 
 @pytest.mark.parametrize("header", ["Time (hh:mm:ss)", "Zeit [HH:MM:SS.fff]",

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+import zipfile
 
 import numpy as np
 import pandas as pd
@@ -11,6 +12,7 @@ import pytest
 from mkm.bench.tables import (
     Recognition,
     column_values,
+    directions,
     parse_assignments,
     parse_header,
     parse_unit,
@@ -93,6 +95,19 @@ def test_units_converted_by_their_definitions(tmp_path):
                                rtol=1e-12)
 
 
+def test_a_column_named_without_its_unit_is_found(tmp_path):
+    # was: "--columns pressure='Kanal 1': lab.csv has no such column: it has 'Kanal 1 [bar]'"
+    table, _ = _one(tmp_path, "Kanal 1 [bar];Kanal 2 (kN);Kanal 2 [V]\n0;0,5;1\n2;1,5;2\n")
+    found = recognise(table, {"pressure": "Kanal 1", "force": "Kanal 2 (kN)"})
+    assert (found["pressure"].header, found["pressure"].unit) == ("Kanal 1 [bar]", "bar")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.0])
+    # two headers of that name (with two units): which one is not guessed
+    with pytest.raises(ValueError, match=re.escape(
+            "--columns force='Kanal 2': lab.csv has 2 columns of that name, 'Kanal 2 (kN)', "
+            "'Kanal 2 [V]': expected one; name it with its unit")):
+        recognise(table, {"pressure": "Kanal 1", "force": "Kanal 2"})
+
+
 def test_two_columns_of_one_name_are_refused_not_the_first_taken(tmp_path):
     # a logger that repeats a header: --columns force='Force (N)' took column B and dropped
     # column C without a word, after the error had said to choose one that way
@@ -155,6 +170,18 @@ def test_a_pressure_marked_absolute_is_refused_saying_why(header, unit, tmp_path
         _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
 
 
+@pytest.mark.parametrize("header", ["Absolutdruck [bar]", "p_abs [bar]", "Druck abs. [kPa]",
+                                    "Pressure absolute (psi)"])
+def test_a_pressure_named_absolute_is_refused_saying_why(header, tmp_path):
+    # was: 'Absolutdruck [bar]' read as a gauge pressure, every step 1 bar too high, and the
+    # others "no pressure column" (then named with --columns, read the same)
+    with pytest.raises(ValueError, match=re.escape(
+            f"lab.csv: column {header!r} is an absolute pressure (its name says so): expected "
+            "a gauge pressure, above the atmosphere as the regulator sets it (bar, bar(g), kPa, "
+            "psi)")):
+        _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     table, found = _one(tmp_path, "Messung Muskel 7; 02.11.2026\n\nDruck (bar);Kraft (N);"
                         "Kürzung (%)\n0,5;12,25;12,2\n1,0;40,5;12,2\n")
@@ -191,6 +218,26 @@ def test_a_german_benchs_actual_reading_beside_its_set_point(tmp_path):
     assert found["pressure"].header == "Druck_Ist [bar]"
     assert found["force"].header == "Kraft Istwert [N]"
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.98, 2.01])
+
+
+@pytest.mark.parametrize("header", ["Solldruck [bar];Istdruck [bar];Sollkraft [N];Kraft [N]",
+                                    "p_set [bar];p_act [bar];F_set [N];F_act [N]"])
+def test_a_set_point_compound_or_abbreviation_is_left_out(header, tmp_path):
+    # was: "two pressure columns, 'Solldruck [bar]' and 'Istdruck [bar]'" (a regulator's set
+    # point and its reading, one word each), and "no pressure column" for p_set and p_act
+    table, found = _one(tmp_path, f"{header}\n1;0,98;100;99\n2;2,01;200;201\n")
+    headers = header.split(";")
+    assert (found["pressure"].header, found["force"].header) == (headers[1], headers[3])
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.98, 2.01])
+    np.testing.assert_allclose(column_values(table, found["force"]), [99.0, 201.0])
+
+
+def test_a_german_direction_column(tmp_path):
+    # was: 'Richtung' not recognised, its auf/ab left out unsaid
+    table, found = _one(tmp_path, "Druck [bar];Kraft [N];Richtung\n0;0;auf\n2;200;Auf\n"
+                        "2;210;ab\n0;0;Entlastung\n")
+    assert found["direction"].header == "Richtung"
+    assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
 
 
 def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
@@ -315,6 +362,27 @@ def test_a_header_block_with_rows_of_numbers_is_skipped(name, text, header, titl
     np.testing.assert_allclose(column_values(table, found["force"]), force)
     np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1, 0.2])
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+
+
+def test_a_text_xls_is_read_and_a_binary_workbook_under_another_name_is_named(tmp_path):
+    # was: "unknown table format '.xls'" for the tab-separated text LabVIEW's Write To
+    # Spreadsheet File saves as .xls, and "has no row of numbers" for an .xlsx renamed .csv
+    table, found = _one(tmp_path, "Zeit [s]\tDruck [bar]\tKraft [N]\r\n0\t0\t3\r\n"
+                        "0.1\t2.5\t253\r\n", "run 7.xls")
+    np.testing.assert_allclose(column_values(table, found["force"]), [3.0, 253.0])
+    old = tmp_path / "old.xls"
+    old.write_bytes(b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1" + bytes(504))
+    with pytest.raises(ValueError, match=re.escape(
+            "old.xls is an Excel 97-2003 workbook: expected an .xlsx workbook or a CSV table; "
+            "open it in Excel and save it as .xlsx")):
+        read_tables(old)
+    renamed = tmp_path / "book.csv"
+    with zipfile.ZipFile(renamed, "w") as archive:
+        archive.writestr("xl/workbook.xml", "<workbook/>")
+    with pytest.raises(ValueError, match=re.escape(
+            "book.csv is a zip archive (an .xlsx workbook?) under a .csv name: expected a text "
+            "table; if it is a workbook, rename it to .xlsx")):
+        read_tables(renamed)
 
 
 def test_a_labview_x_column_of_another_dimension_and_a_named_unit_are_as_written(tmp_path):

@@ -97,6 +97,36 @@ def test_up_and_down_branches_are_averaged():
     np.testing.assert_allclose(table.pressure_bar, [(1.0002 + 1.0) / 2, 2.0])
 
 
+def test_branches_are_matched_by_their_set_pressure():
+    # a gauge's noise reads the two holds of each set pressure a few mbar apart: matched by
+    # the measured pressure alone, no level is measured both ways and nothing is left to fit
+    rows = pd.DataFrame({
+        "set_pressure_bar": [1.0, 2.0, 3.0, 2.0, 1.0],
+        "pressure_bar": [1.003, 2.004, 3.001, 1.998, 0.996],
+        "direction": ["up", "up", "up", "down", "down"],
+        "force_N": [90.0, 190.0, 300.0, 210.0, 110.0],
+        "D0_mm": 30.0, "t0_mm": 3.0, "eps": 0.1})
+    table = check_reference(rows)
+    np.testing.assert_allclose(table.force_N, [100.0, 200.0])
+    np.testing.assert_allclose(table.pressure_bar, [(1.003 + 0.996) / 2, (2.004 + 1.998) / 2])
+
+
+def test_a_falling_branch_held_at_other_pressures_is_interpolated():
+    # was: "has 0 usable pressures" (no level measured both ways), after identify's whole fit
+    rising = [0.0, 1.0, 2.0, 3.0, 4.0]
+    falling = [3.5, 2.5, 1.5, 0.5]
+    rows = pd.DataFrame({
+        "pressure_bar": rising + falling,
+        "direction": ["up"] * 5 + ["down"] * 4,
+        # friction: the rising branch 5 N below the static force 25 N/bar, the falling above
+        "force_N": [25.0 * p - 5.0 for p in rising] + [25.0 * p + 5.0 for p in falling],
+        "D0_mm": 30.0, "t0_mm": 3.0, "eps": 0.1})
+    table = check_reference(rows)
+    # the rising steps within the falling branch's range, at the mean of both (linear: exact)
+    np.testing.assert_allclose(table.pressure_bar, [1.0, 2.0, 3.0])
+    np.testing.assert_allclose(table.force_N, [25.0, 50.0, 75.0], rtol=1e-12)
+
+
 @pytest.mark.parametrize(("frame", "message"), [
     (pd.DataFrame({"pressure_bar": [1.0], "force_N": [1.0]}), "lacks columns"),
     (pd.DataFrame({"pressure_bar": [1.0], "force_N": [1.0], "D0_mm": 30.0, "t0_mm": 2.0,

@@ -208,6 +208,53 @@ def _copy(run, tmp_path, name):
     return target
 
 
+def test_the_search_again_outside_the_surrogate_box_is_announced(muscle, monkeypatch):
+    # was: the FE search after a surrogate optimum on its box edge ran without a word (six
+    # minutes on a 2000-row table), after the line of the surrogate's search
+    from mkm.identify import procedure
+    from mkm.identify.fitting import ModelStatic
+
+    _, runs = muscle
+    searched = []
+    select = procedure._select
+
+    def select_first_at_edge(source, *args):
+        best, candidates = select(source, *args)
+        searched.append(source.name)
+        if len(searched) == 1:
+            best.at_edge = ["theta0_deg"]
+        return best, candidates
+
+    stand_in = ModelStatic("thickwall:gap_mm=0", None, None)  # a fast "surrogate"
+    monkeypatch.setattr(procedure, "_covering_surrogate", lambda *a: (stand_in, None))
+    monkeypatch.setattr(procedure, "_select", select_first_at_edge)
+    said = []
+    result = identify(runs[:2], model="thickwall", params="theta0,rubber", notify=said.append)
+    assert searched == ["thickwall:gap_mm=0", "thickwall"]
+    line = next(k for k, m in enumerate(said) if m.startswith("fitting theta0, rubber"))
+    assert said[line + 1] == ("the optimum lies on the surrogate's box edge (theta0_deg): "
+                              "searching again with thickwall (one sweep per run and "
+                              "evaluation)")
+    assert result.searched_with == "thickwall"
+
+
+def test_runs_the_calibration_cannot_take_leave_no_file(tmp_path, mkm_run):
+    # was: identification.json, parameters.csv and steps.csv written, then "the runs' settled
+    # steps has 1 usable pressures" (exit 2) and no calibration.json beside them
+    table = tmp_path / "lab.csv"
+    table.write_text("P [bar];F [N]\n0;0\n1;20\n2;45\n3;70\n4;95\n1,5;35\n0,5;10\n",
+                     encoding="utf-8")
+    code, out, err = mkm_run(["import", str(table), "--id", "m", "--D0", "30", "--t0", "3",
+                              "--L0", "282", "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 0, err
+    out_dir = tmp_path / "identified"
+    code, _, err = mkm_run(["identify", out.strip(), "--model", "thickwall", "--search", "model",
+                            "--params", "theta0", "--out", str(out_dir), "--no-progress"])
+    assert code == 2 and err.count("\n") == 1, err
+    assert "has 1 usable pressures: expected at least 2" in err
+    assert not out_dir.exists() or not any(out_dir.iterdir())
+
+
 def test_no_progress_leaves_the_result_alone(one_run, tmp_path, mkm_run):
     # every long command takes --no-progress (getting started); identify refused it
     argv = ["identify", str(one_run), "--params", "theta0", "--model", "thickwall", "--search",

@@ -32,6 +32,20 @@ def test_fraction_or_percentage_mean_the_same():
     assert parse_number("35,5", "--D0") == 35.5
 
 
+@pytest.mark.parametrize(("parse", "text", "expected"), [
+    (parse_fraction, "%", "a fraction (0.05) or a percentage (5%)"),
+    (parse_fraction, "abc%", "a fraction (0.05) or a percentage (5%)"),
+    (parse_tolerance, " 2 %% ", "a percentage in (0, 100), for example 2%"),
+])
+def test_a_percentage_that_is_no_number_is_named_whole(parse, text, expected):
+    # was: "--eps='' is not a number": the value shown without its '%'
+    name = "--eps" if parse is parse_fraction else "--tolerance"
+    with pytest.raises(ValueError) as info:
+        parse(text)
+    assert str(info.value) == (f"{name}={text.strip()!r} is not a number followed by %: "
+                               f"expected {expected}")
+
+
 @pytest.mark.parametrize("text", ["0", "0%", "200%", "-1%", "100%"])
 def test_a_tolerance_outside_zero_to_one_is_named_with_one_range(text):
     # '--tolerance 0%' was read as 0 and refused as '--tolerance 0: expected a fraction in
@@ -89,8 +103,8 @@ def test_a_number_typed_with_a_unit_is_converted_into_the_options():
      r"start:stop:step \(for example 0:8:0\.5\) or a comma list \(0,1,2\.5\), in bar$"),
     (lambda: parse_pressures("0,1,,2"), r"^--pressures '0,1,,2': entry='' is not a number: "
      "expected start:stop:step"),
-    (lambda: parse_fraction("five%"), r"^--eps='five' is not a number: expected a fraction "
-     r"\(0\.05\) or a percentage \(5%\)$"),
+    (lambda: parse_fraction("five%"), r"^--eps='five%' is not a number followed by %: "
+     r"expected a fraction \(0\.05\) or a percentage \(5%\)$"),
     (lambda: parse_fraction("0.1,L0=200", "--require: eps"), r"^--require: eps='0\.1,L0=200' "
      r"is not a number: expected a fraction \(0\.05\) or a percentage \(5%\)$"),
     # a unit typed after the number: said, not only refused
