@@ -39,9 +39,10 @@ def test_a_fresh_refit_of_a_split_gives_the_shipped_scores(shipped):
     assert row.keys() == stored.keys()
     for name, value in row.items():
         if name != "fit_seconds":  # the machine's wall time
-            # the same code and libraries on one BLAS thread: equal up to the rounding of
-            # another CPU's BLAS kernels
-            assert value == pytest.approx(stored[name], rel=1e-6, abs=1e-9), name
+            # the same code and libraries on one BLAS thread: equal up to another CPU's BLAS
+            # kernels, whose rounding moves the optimiser's stop within its tolerance (5e-5
+            # relative between two machines of one pool; the tolerance 20 times that)
+            assert value == pytest.approx(stored[name], rel=1e-3, abs=1e-9), name
 
 
 def test_training_reports_the_shipped_refits_with_their_source(shipped):
