@@ -246,6 +246,7 @@ class BenchRun:
         self.acquisition: Acquisition | None = None
         self.lease: BenchLease | None = None
         self.unvented: list[Marker] = []
+        self._dead_runs: list = []  # their markers, found as the bench was taken
         self._observers: list = []
         self.owner: BenchOwner | None = None
         self._stop_by: str | None = None
@@ -288,12 +289,15 @@ class BenchRun:
         """Run the whole sequence; the run folder holds the truth whatever happens.
 
         Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
-        holds the bench.
+        holds the bench, :class:`mkm.bench.ownership.StateFolderBroken` (nothing touched) when
+        the bench state folder does not answer as the bench is taken or its dead runs looked
+        for.
         """
         try:
             with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
                     awake():  # Windows must not sleep with the muscle pressurised
                 self.owner = owner
+                self._dead_runs = owner.dead_runs()  # before the device is opened
                 self._console = _Console(sys.stderr)
                 try:
                     if self.handle_signals:
@@ -395,7 +399,7 @@ class BenchRun:
 
     def startup(self) -> None:
         info = self.backend.open()  # writes the vent command first
-        self.unvented = vent_unvented(self.backend)
+        self.unvented = vent_unvented(self.backend, self._dead_runs)
         for marker in self.unvented:
             self.notify(marker.vented_now())
         # a stop signal while the folder is made waits until the run holds its recorder: the
