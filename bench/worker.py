@@ -119,7 +119,7 @@ class Acquisition:
         self.marker_lagged = False  # a pressure went out before its bench marker was written
         self.interlock_vent_failed = False  # the shutdown says what became of the muscle
         # (measured, commanded) [bar] when the follow interlock tripped with the pressure below
-        # its command: the vent check weighs the monitor's readings by it
+        # a pressure commanded: the vent check weighs the monitor's readings by it
         self.below_command: tuple[float, float] | None = None
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
@@ -327,7 +327,7 @@ class Acquisition:
             # new command does not restart it: a stuck regulator's pressure does not move
             self._off_since_s, self._off_from_bar = t_s, pressure
         elif t_s - self._off_since_s > safety.pressure_follow_s:
-            if pressure < commanded and self.below_command is None:
+            if 0 < commanded and pressure < commanded and self.below_command is None:
                 self.below_command = (pressure, commanded)
             return (f"pressure interlock: the regulator does not follow: {pressure:.3f} bar "
                     f"measured against {commanded:g} bar commanded for more than "

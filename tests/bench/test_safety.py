@@ -147,6 +147,18 @@ def test_a_monitor_that_read_pressure_before_the_vent_verifies_it(config, tmp_pa
     assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
 
 
+def test_a_monitor_reading_below_a_zero_command_is_judged_by_its_reading(config, tmp_path):
+    # a sensor 0.08 bar low trips a 0.05 bar tolerance during the tare, 0 bar commanded: no
+    # pressure was asked for, so its reading after the vent verifies it as always (it used to
+    # be called a monitor that read nothing of a pressure, "may still hold 0 bar")
+    c = config.replace(sequence={"tare_s": 8.0}, safety={"pressure_tolerance_bar": 0.05},
+                       sim={"truth": {"monitor_offset_bar": -0.08}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert "against 0 bar commanded for more than 5 s" in result.reason
+    assert result.status == "aborted" and result.exit_code == 1, result.reason
+    assert load_run(result.path).meta.vent_check["verified"]
+
+
 def test_below_command_weighs_a_verified_check_by_what_the_monitor_read_before_it():
     from mkm.bench.vent import VentCheck, below_command
 
