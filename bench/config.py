@@ -418,6 +418,10 @@ class BenchConfig:
             within("sim.truth.monitor_bow_bar", self.sim.truth.monitor_bow_bar,
                    -MAX_TOLERANCE_FRACTION * fs, MAX_TOLERANCE_FRACTION * fs, "bar",
                    f"a tenth of regulator.full_scale_bar={fs:g}")
+        if self.sim.truth.monitor_stuck_bar is not None:  # a reading the monitor can give
+            fs = self.regulator.full_scale_bar
+            within("sim.truth.monitor_stuck_bar", self.sim.truth.monitor_stuck_bar, 0.0, fs,
+                   "bar", f"regulator.full_scale_bar={fs:g}")
         self._check_device()
         self._check_duration()
 

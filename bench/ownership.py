@@ -32,8 +32,10 @@ from mkm.bench.storage import ProcessIdentity
 from mkm.bench.unvented import (
     STATE_START_S,
     STATE_WAIT_S,
+    Marker,
     StateFolderThread,
     bench_folder_name,
+    find_unvented,
     state_dir,
 )
 from mkm.core.records import provenance, write_atomic
@@ -94,6 +96,7 @@ class BenchOwner:
         # state folder that hangs holds it, never the command
         self._state = StateFolderThread("mkm-bench-owner")
         self.problem = ""  # the state folder did not let the bench go in time
+        self._hung = False  # the state folder hung, said when found: not waited for again
 
     def __enter__(self) -> BenchOwner:
         """Take the bench; the state folder is waited for at most :data:`STATE_START_S`
@@ -142,10 +145,39 @@ class BenchOwner:
                                      f"writable ({exc.strerror or exc})")
         return None
 
+    def dead_runs(self, then: str = "nothing was touched") -> list[tuple[Path, Marker]]:
+        """The markers of the runs that died on this bench
+        (:func:`mkm.bench.unvented.find_unvented`), read on the state folder's thread and
+        waited for at most :data:`STATE_START_S` (not at all when the folder already hangs):
+        :class:`StateFolderBroken` after it, its message ending with ``then`` (what the caller
+        did); the bench is then let go once the folder answers, or with this process."""
+        found: list = []
+
+        def look() -> None:
+            try:
+                found.append(find_unvented(self.bench_key))
+            except OSError as exc:  # raised below, as an unbounded search raised it
+                found.append(exc)
+
+        hung = self._state.lagging()  # an earlier update never came back
+        if not self._state.wait(self._state.post(look), 0.0 if hung else STATE_START_S):
+            self._hung = True
+            within = "" if hung else f" within {STATE_START_S:g} s"
+            raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} did not "
+                                    f"answer{within} as the runs that died on this bench were "
+                                    f"looked for (it hangs): {then}; the bench is let go once it "
+                                    "answers, or as this process ends")
+        if isinstance(found[0], OSError):
+            raise found[0]
+        return found[0]
+
     def __exit__(self, *exc) -> None:
         """Let the bench go, waiting at most :data:`STATE_WAIT_S` for the state folder: past
         it, :attr:`problem` says so and the lock goes with this process."""
         if self.lock is None:
+            return
+        if self._hung:  # said as it was found; the lock goes once it answers
+            self._state.post(self._let_go)
             return
         if not self._state.wait(self._state.post(self._let_go), STATE_WAIT_S):
             self.problem = (f"the bench state folder {self.lock_path.parent} did not let the "

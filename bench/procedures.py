@@ -38,9 +38,10 @@ def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[De
     owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
     try:
         with owner:
+            dead_runs = owner.dead_runs()  # before the device is opened
             info = backend.open()
             try:
-                for marker in vent_unvented(backend):
+                for marker in vent_unvented(backend, dead_runs):
                     notify(marker.vented_now())
                 yield info
             finally:
@@ -117,7 +118,7 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
         device.open()  # writes the vent command (a lost device is reset first)
         check = _vent_and_verify(device, config)
         if answered:
-            bookkeeping.extend(_mend_dead_runs(device, notify))
+            bookkeeping.extend(_mend_dead_runs(device, owner, notify))
     finally:
         try:
             device.close()
@@ -188,12 +189,15 @@ def _vent_and_verify(device: Backend, config: BenchConfig):
     return check
 
 
-def _mend_dead_runs(device: Backend, notify) -> list[str]:
+def _mend_dead_runs(device: Backend, owner: BenchOwner, notify) -> list[str]:
     """After the vent: name the runs that died without venting on this bench and mend their
-    folders; the problems met (a state folder that cannot be read or written)."""
+    folders; the problems met (a state folder that cannot be read or written, or hangs)."""
     try:
-        for marker in vent_unvented(device):
+        for marker in vent_unvented(device, owner.dead_runs("the bench was vented, the runs "
+                                                            "that died on it were not named")):
             notify(marker.vented_now())
+    except StateFolderBroken as exc:
+        return [str(exc)]
     except OSError as exc:
         return [f"the markers of dead runs in the bench state folder could not be handled "
                 f"({exc.strerror or exc})"]

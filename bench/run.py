@@ -24,8 +24,10 @@ Safety, in every exit path:
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
-  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``; if not,
-  the run is ``failed``, asks for a VENT BY HAND and its bench marker stays;
+  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``, and a
+  monitor the pressure interlock found below its command must have read more than that before
+  the vent (one stuck at zero reads 0 bar whatever the muscle holds); if not, the run is
+  ``failed``, asks for a VENT BY HAND and its bench marker stays;
 - a closed Windows console leaves seconds before the process is ended: the run vents, writes
   run.json with why it stopped and syncs its rows before the vent check, which stops at the
   grace deadline (:meth:`mkm.bench.signals.StopSignals.grace_deadline`) so the final record
@@ -56,7 +58,7 @@ from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
-from mkm.bench.vent import VentCheck, verify_vent
+from mkm.bench.vent import VentCheck, below_command, verify_vent
 from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
 
@@ -244,6 +246,7 @@ class BenchRun:
         self.acquisition: Acquisition | None = None
         self.lease: BenchLease | None = None
         self.unvented: list[Marker] = []
+        self._dead_runs: list = []  # their markers, found as the bench was taken
         self._observers: list = []
         self.owner: BenchOwner | None = None
         self._stop_by: str | None = None
@@ -286,12 +289,15 @@ class BenchRun:
         """Run the whole sequence; the run folder holds the truth whatever happens.
 
         Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
-        holds the bench.
+        holds the bench, :class:`mkm.bench.ownership.StateFolderBroken` (nothing touched) when
+        the bench state folder does not answer as the bench is taken or its dead runs looked
+        for.
         """
         try:
             with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
                     awake():  # Windows must not sleep with the muscle pressurised
                 self.owner = owner
+                self._dead_runs = owner.dead_runs()  # before the device is opened
                 self._console = _Console(sys.stderr)
                 try:
                     if self.handle_signals:
@@ -393,7 +399,7 @@ class BenchRun:
 
     def startup(self) -> None:
         info = self.backend.open()  # writes the vent command first
-        self.unvented = vent_unvented(self.backend)
+        self.unvented = vent_unvented(self.backend, self._dead_runs)
         for marker in self.unvented:
             self.notify(marker.vented_now())
         # a stop signal while the folder is made waits until the run holds its recorder: the
@@ -579,6 +585,9 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
+        if self.vent_check is not None and acq is not None and acq.below_command is not None:
+            # a monitor that read nothing before the vent proves nothing by reading it after
+            self.vent_check = below_command(self.vent_check, *acq.below_command)
         if acq is not None and acq.interlock_vent_failed:  # said before: what came of it
             if self.vent_check is None:
                 problems.append("nothing verified a vent since: VENT BY HAND")
@@ -613,7 +622,9 @@ class BenchRun:
         if unverified:
             status = RunStatus.FAILED
             held = self.vent_check.pressure_bar
-            if not held == held:  # nothing plausible read by the check
+            if self.vent_check.unfollowed_bar is not None:  # the reading proves nothing
+                held = self.vent_check.unfollowed_bar
+            elif not held == held:  # nothing plausible read by the check
                 held = acq.held_bar() if acq is not None else 0.0
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
                             f"still hold {held:.3g} bar)")

@@ -28,7 +28,9 @@ output per newton is ``loadcell_gain`` times the configured one, a regulator sen
 ``monitor_gain * P + monitor_offset_bar`` plus a bow ``monitor_bow_bar * 4 x (1 - x)`` (``x`` the
 pressure over the sensor's full scale) and a hysteresis ``monitor_hysteresis_bar`` between its
 rising and falling readings (the regulator holds that reading at the command, so the monitor
-reads the command while the true pressure is off by the sensor's error).
+reads the command while the true pressure is off by the sensor's error), or a monitor output
+frozen at ``monitor_stuck_bar`` whatever the pressure (the regulator still regulating on its own
+sensor).
 
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
@@ -182,6 +184,7 @@ class SimMuscleBench:
         self.monitor_offset_bar = s.truth.instrument("monitor_offset_bar")
         self.monitor_bow_bar = s.truth.instrument("monitor_bow_bar")
         self.monitor_hysteresis_bar = s.truth.instrument("monitor_hysteresis_bar")
+        self.monitor_stuck_bar = s.truth.instrument("monitor_stuck_bar")  # None: it reads
         # the sensor's play operator: its output stays within half the hysteresis of the
         # pressure, so a rising pressure reads that much low and a falling one high
         self.monitor_played_bar = 0.0
@@ -252,6 +255,8 @@ class SimMuscleBench:
                                       self.pressure_bar + half)
         sensed_bar = self.sensor_bar(self.pressure_bar) + self.monitor_played_bar \
             - self.pressure_bar
+        if self.monitor_stuck_bar is not None:  # its output no longer follows its sensor
+            sensed_bar = self.monitor_stuck_bar
         monitor_V = (r.monitor_V_at_zero + sensed_bar / r.full_scale_bar * span
                      + s.monitor_noise_V * self._normal())
         if self.monitor_lost:

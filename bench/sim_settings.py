@@ -63,6 +63,9 @@ class Truth:
     mid-scale), less half ``monitor_hysteresis_bar`` on a rising pressure and plus half on a
     falling one (a play operator: the two branches ``monitor_hysteresis_bar`` apart); the
     regulator holds that reading at the command, as an ITV does with its own sensor.
+    ``monitor_stuck_bar``: the monitor output is frozen at this reading whatever the pressure
+    (its output stage, wire or input stuck), while the regulator still holds its own sensor at
+    the command.
 
     Unset (None): the nominal value (the calibrated angle, Silastic S, no gap, a bonded braid,
     the declared geometry, exact instruments). With ``[sim]``'s ``hysteresis_fraction``,
@@ -83,6 +86,7 @@ class Truth:
     monitor_offset_bar: float | None = None
     monitor_bow_bar: float | None = None
     monitor_hysteresis_bar: float | None = None
+    monitor_stuck_bar: float | None = None
 
     def check(self):
         from mkm.fem.limits import check_value
@@ -90,7 +94,7 @@ class Truth:
         for name in MODEL_FIELDS + GEOMETRY_FIELDS:
             if name != "braid" and getattr(self, name) is not None:
                 check_value(name, getattr(self, name), prefix="sim.truth.")
-        for name, (low, high, unit) in INSTRUMENT_BOUNDS.items():
+        for name, (low, high, unit, _) in INSTRUMENT_BOUNDS.items():
             if getattr(self, name) is not None:
                 within(f"sim.truth.{name}", getattr(self, name), low, high, unit)
 
@@ -104,20 +108,25 @@ class Truth:
         return (float(self.D0_mm if self.D0_mm is not None else muscle.D0_mm),
                 float(self.t0_mm if self.t0_mm is not None else muscle.t0_mm))
 
-    def instrument(self, name: str) -> float:
-        """An instrument's truth, its exact value (gain 1, offset 0) when unset."""
+    def instrument(self, name: str) -> float | None:
+        """An instrument's truth, the exact instrument's when unset (gain 1, offset 0, a
+        monitor not stuck: None)."""
         value = getattr(self, name)
-        return float(value) if value is not None else (0.0 if name.endswith("_bar") else 1.0)
+        return float(value) if value is not None else INSTRUMENT_BOUNDS[name][3]
 
 
-#: the truths the force model takes; the true geometry; the instruments' truths and bounds
+#: the truths the force model takes; the true geometry; the instruments' truths: their bounds
+#: and unit, and the exact instrument's value
 MODEL_FIELDS = ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "braid")
 GEOMETRY_FIELDS = ("D0_mm", "t0_mm")
-INSTRUMENT_BOUNDS = {"loadcell_gain": (0.9, 1.1, "(a cell 10 % off its calibration is broken)"),
-                     "monitor_gain": (0.9, 1.1, "(a sensor 10 % off is broken)"),
-                     "monitor_offset_bar": (-0.5, 0.5, "bar"),
-                     "monitor_bow_bar": (-0.5, 0.5, "bar"),  # and a tenth of full scale
-                     "monitor_hysteresis_bar": (0.0, 0.5, "bar")}
+INSTRUMENT_BOUNDS = {
+    "loadcell_gain": (0.9, 1.1, "(a cell 10 % off its calibration is broken)", 1.0),
+    "monitor_gain": (0.9, 1.1, "(a sensor 10 % off is broken)", 1.0),
+    "monitor_offset_bar": (-0.5, 0.5, "bar", 0.0),
+    "monitor_bow_bar": (-0.5, 0.5, "bar", 0.0),  # and a tenth of full scale
+    "monitor_hysteresis_bar": (0.0, 0.5, "bar", 0.0),
+    "monitor_stuck_bar": (0.0, 10.0, "bar", None),  # and within full scale
+}
 @dataclass(frozen=True)
 class Sim:
     """The simulated bench (:mod:`mkm.bench.sim`): the muscle's static force from ``model`` (a

@@ -197,8 +197,9 @@ class RunMeta:
     planned); ``steps_done`` counts the steps finished. ``stop_signal`` names the signal that
     stopped the run (``SIGTERM``...), ``stop_signal_number`` its number (exit status 128 + N).
     ``manual_vent_required`` is True when the final vent could not be verified (the command
-    failed, or the monitor did not fall below the threshold: ``vent_check`` says what was read):
-    the operator must vent by hand. ``simulated`` is True for a run on a simulated bench (its
+    failed, the monitor did not fall below the threshold, or it read below it already when the
+    pressure interlock found it below its command: ``vent_check`` says what was read): the
+    operator must vent by hand. ``simulated`` is True for a run on a simulated bench (its
     folder name ends in ``-SIMULATED``). ``unvented_before`` lists earlier runs on this bench
     found ended without venting (and vented) when this run started. ``lost_samples`` totals
     the ``gaps``.

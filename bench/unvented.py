@@ -11,9 +11,11 @@ kill between the two still finds it (unless the state folder takes longer than
 :data:`mkm.bench.worker.MARKER_WAIT_S`: the pressure then goes out ahead of its marker). A clean
 shutdown that vented removes it. Every command that
 opens a bench (``acquire``, ``check``, ``tare``, ``calibrate-loadcell``, ``vent``) first looks for
-markers of that bench whose process is dead: it vents (opening the device writes the vent command)
-and says which run it was, when it started, and what pressure it left commanded. One file per
-process, so concurrent runs never lock or overwrite each other's marker.
+markers of that bench whose process is dead (on the bench owner's thread, at most
+:data:`STATE_START_S`: :meth:`mkm.bench.ownership.BenchOwner.dead_runs`): it vents (opening the
+device writes the vent command) and says which run it was, when it started, and what pressure it
+left commanded. One file per process, so concurrent runs never lock or overwrite each other's
+marker.
 """
 
 from __future__ import annotations
@@ -221,14 +223,16 @@ def find_unvented(bench_key: str) -> list[tuple[Path, Marker]]:
     return found
 
 
-def vent_unvented(backend) -> list[Marker]:
+def vent_unvented(backend, found: list[tuple[Path, Marker]]) -> list[Marker]:
     """Vent a bench left pressurised by a dead run, before anything else happens on it.
 
-    Call it right after ``backend.open()`` (which already wrote the vent): the vent is written
-    again here, explicitly, and only once it succeeded are the dead runs' markers removed.
-    Returns those markers for the caller to report.
+    ``found``: the dead runs' markers, looked for by the bench's owner before the device was
+    opened (:meth:`mkm.bench.ownership.BenchOwner.dead_runs`, bounded: a state folder that
+    hangs refuses the command untouched). Call it right after ``backend.open()`` (which
+    already wrote the vent): the vent is written again here, explicitly, and only once it
+    succeeded are the dead runs' markers removed. Returns those markers for the caller to
+    report.
     """
-    found = find_unvented(getattr(backend, "bench_key", "unknown"))
     if not found:
         return []
     backend.write_command(0.0)

@@ -9,11 +9,14 @@ plausible ones (a live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: 
 never a vent, :meth:`mkm.bench.config.Regulator.monitor_fault`); with a manual regulator the
 operator vents by hand and types the manometer reading, which must be below the same threshold.
 A check with a ``deadline`` (Windows ends a closed console's process within 5 s) stops at it,
-unverified, so the run can still be recorded.
+unverified, so the run can still be recorded. A monitor that already read below the threshold
+when the pressure interlock found it below its command (:func:`below_command`) verifies nothing:
+a monitor stuck at zero reads so whatever the muscle holds.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from dataclasses import asdict, dataclass
@@ -32,6 +35,9 @@ class VentCheck:
     how: str  # "monitor" | "operator"
     problem: str = ""
     device_lost: bool = False  # the monitor's reads failed with the device gone
+    # the command [bar] the monitor did not follow before the vent, reading below the
+    # threshold already: its readings prove nothing, the muscle may still hold it
+    unfollowed_bar: float | None = None
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -44,6 +50,27 @@ class VentCheck:
             return f"the vent could not be verified ({self.problem})"
         return (f"the {self.how} still reads {self.pressure_bar:.3f} bar {self.waited_s:.1f} s "
                 f"after the vent, above {self.below_bar:g} bar")
+
+
+def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -> VentCheck:
+    """``check`` after the pressure interlock tripped with the monitor reading ``measured_bar``
+    below ``commanded_bar``.
+
+    A monitor that read below the vent threshold then, and reads below it after the vent, has
+    shown no fall: a monitor stuck at zero reads so whatever the muscle holds, so the check is
+    not verified (a regulator without supply pressure, or a leaking hose, reads so too: a vent
+    by hand is asked for all the same). A monitor that read more and then fell below the
+    threshold did read the vent: ``check`` stands.
+    """
+    if not check.verified or check.how != "monitor" or not measured_bar < check.below_bar:
+        return check
+    return dataclasses.replace(
+        check, verified=False, unfollowed_bar=commanded_bar,
+        problem=(f"the monitor read {measured_bar:.3f} bar against {commanded_bar:g} bar "
+                 "commanded before the vent, so its reading after it proves nothing: stuck near "
+                 "zero, a monitor reads so whatever the muscle holds; a regulator without "
+                 "supply pressure or a hose that leaks reads the same; check the monitor and "
+                 "the supply"))
 
 
 def verify_vent(backend, config, operator=None, started: bool = True,

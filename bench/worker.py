@@ -118,6 +118,9 @@ class Acquisition:
         self.written = False  # the last command asked for reached the device
         self.marker_lagged = False  # a pressure went out before its bench marker was written
         self.interlock_vent_failed = False  # the shutdown says what became of the muscle
+        # (measured, commanded) [bar] when the follow interlock tripped with the pressure below
+        # a pressure commanded: the vent check weighs the monitor's readings by it
+        self.below_command: tuple[float, float] | None = None
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
         # the measured pressure has been off its command, and not moved towards it by more than
@@ -324,6 +327,8 @@ class Acquisition:
             # new command does not restart it: a stuck regulator's pressure does not move
             self._off_since_s, self._off_from_bar = t_s, pressure
         elif t_s - self._off_since_s > safety.pressure_follow_s:
+            if 0 < commanded and pressure < commanded and self.below_command is None:
+                self.below_command = (pressure, commanded)
             return (f"pressure interlock: the regulator does not follow: {pressure:.3f} bar "
                     f"measured against {commanded:g} bar commanded for more than "
                     f"{safety.pressure_follow_s:g} s (tolerance {tolerance:g} bar; the "

@@ -4,6 +4,8 @@ finding; each failed before the fix.
 
 import errno
 import json
+import math
+import re
 import threading
 import time
 from pathlib import Path
@@ -63,6 +65,113 @@ def test_a_manual_vent_is_confirmed_by_the_operators_reading(config, tmp_path):
                       handle_signals=False, **QUIET).execute()
     assert result.status == "failed" and result.exit_code == 4
     assert "operator still reads 0.300 bar" in result.reason
+
+
+def _frozen_at(backend, at_sample: int, reading_bar: float = 0.0):
+    """From sample ``at_sample`` on, ``backend``'s monitor reads ``reading_bar`` whatever the
+    pressure (a monitor that followed, then froze)."""
+    read = backend.read
+
+    def freezing(n, timeout):
+        if backend._index >= at_sample:
+            backend.bench.monitor_stuck_bar = reading_bar
+        return read(n, timeout)
+
+    backend.read = freezing
+    return backend
+
+
+@pytest.mark.parametrize("frozen", ["from the start", "at 4 s, having followed 0.5 bar"])
+def test_a_monitor_frozen_at_zero_does_not_verify_the_vent(config, tmp_path, frozen):
+    # The monitor reads 0 bar whatever the pressure while the regulator delivers the command:
+    # the follow interlock trips 0.000 bar against 0.5 bar and vents, and the vent check used to
+    # read the same stuck 0 bar and call the vent verified (exit 1, marker removed) while the
+    # muscle still held the 0.5 bar falling by one sample of the regulator's exhaust
+    if frozen == "from the start":
+        c = config.replace(sim={"truth": {"monitor_stuck_bar": 0.0}})
+        backend = SimBackend(c)
+    else:
+        c = config
+        backend = _frozen_at(SimBackend(c), 40)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    run = load_run(result.path)
+    assert "pressure interlock: the regulator does not follow" in result.reason
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "against 0.5 bar commanded before the vent, so its reading after it proves nothing" \
+        in result.reason
+    assert result.reason.endswith("check the monitor and the supply): VENT BY HAND (the "
+                                  "regulator may still hold 0.5 bar)")
+    check = run.meta.vent_check
+    assert not check["verified"] and check["pressure_bar"] < c.safety.vent_below_bar
+    assert check["unfollowed_bar"] == 0.5 and run.meta.manual_vent_required
+    # the truth: one 0.1 s sample after the vent, exhausting with tau 0.4 s from 0.5 bar, the
+    # muscle still held 0.5 exp(-0.1/0.4) = 0.39 bar while the monitor read 0
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-0.25), abs=1e-3)
+    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked
+    assert "proves nothing" in json.loads(marker.read_text())["vent_unverified"]
+
+
+class _Supply(SimBackend):
+    """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
+    pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
+
+    def __init__(self, config, ceiling_bar=10.0, floor_bar=0.0):
+        super().__init__(config)
+        set_command = self.bench.set_command_volts
+
+        def limited(volts):
+            set_command(volts)
+            if self.bench.target_bar > 0:
+                self.bench.target_bar = min(max(self.bench.target_bar, floor_bar), ceiling_bar)
+
+        self.bench.set_command_volts = limited
+
+
+@pytest.mark.parametrize("supply, read_bar", [({"ceiling_bar": 0.3}, 0.3),
+                                              ({"floor_bar": 0.8}, 0.8)])
+def test_a_monitor_that_read_pressure_before_the_vent_verifies_it(config, tmp_path, supply,
+                                                                  read_bar):
+    # the interlock tripped on a pressure off its command that the monitor did read: below it
+    # (a supply of 0.3 bar for 0.5 bar commanded) or above it (a regulator that holds at least
+    # 0.8 bar while pressurised); the monitor's fall after the vent verifies the vent
+    backend = _Supply(config, **supply)
+    result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert "pressure interlock: the regulator does not follow" in result.reason
+    assert result.status == "aborted" and result.exit_code == 1, result.reason
+    assert not result.manual_vent_required and "VENT BY HAND" not in result.reason
+    check = load_run(result.path).meta.vent_check
+    assert check["verified"] and check["unfollowed_bar"] is None
+    # the pressure the regulator delivered, within the monitor's 1 mV noise and 1.2 mV steps
+    measured = re.search(r"([0-9.]+) bar measured against 0\.5 bar commanded", result.reason)
+    assert float(measured.group(1)) == pytest.approx(read_bar, abs=0.005)
+    assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_monitor_reading_below_a_zero_command_is_judged_by_its_reading(config, tmp_path):
+    # a sensor 0.08 bar low trips a 0.05 bar tolerance during the tare, 0 bar commanded: no
+    # pressure was asked for, so its reading after the vent verifies it as always (it used to
+    # be called a monitor that read nothing of a pressure, "may still hold 0 bar")
+    c = config.replace(sequence={"tare_s": 8.0}, safety={"pressure_tolerance_bar": 0.05},
+                       sim={"truth": {"monitor_offset_bar": -0.08}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert "against 0 bar commanded for more than 5 s" in result.reason
+    assert result.status == "aborted" and result.exit_code == 1, result.reason
+    assert load_run(result.path).meta.vent_check["verified"]
+
+
+def test_below_command_weighs_a_verified_check_by_what_the_monitor_read_before_it():
+    from mkm.bench.vent import VentCheck, below_command
+
+    verified = VentCheck(True, 0.01, 0.05, 0.3, "monitor")
+    assert below_command(verified, 0.3, 0.5) is verified  # it read pressure, then fell
+    judged = below_command(verified, 0.0, 0.5)
+    assert not judged.verified and judged.unfollowed_bar == 0.5
+    assert judged.pressure_bar == 0.01  # the reading is kept as read
+    assert "proves nothing" in judged.describe()
+    unverified = VentCheck(False, 0.4, 0.05, 10.1, "monitor")
+    assert below_command(unverified, 0.0, 0.5) is unverified  # said as it is
+    operator = VentCheck(True, 0.0, 0.05, 0.0, "operator")
+    assert below_command(operator, 0.0, 0.5) is operator  # a manometer read by the operator
 
 
 # 2. one owner per bench --------------------------------------------------------------------

@@ -80,7 +80,8 @@ def test_the_truth_is_recorded_in_the_simulator_settings(config, tmp_path):
                             "gap_mm": None, "braid": None, "D0_mm": None, "t0_mm": None,
                             "loadcell_gain": None, "monitor_gain": None,
                             "monitor_offset_bar": None, "monitor_bow_bar": None,
-                            "monitor_hysteresis_bar": None}
+                            "monitor_hysteresis_bar": None, "monitor_stuck_bar": None}
+    assert sim["physics"]["instruments"]["monitor_stuck_bar"] is None  # a monitor that reads
     assert sim["physics"]["force_model_params"]["theta0_deg"] == 31.5
     assert "[sim.truth]\ntheta0_deg = 31.5" in (result.path / "config.toml").read_text("utf-8")
 
@@ -199,6 +200,18 @@ def test_the_monitors_hysteresis_splits_its_rising_and_falling_readings(config):
     assert true_bar["falling"] == pytest.approx(1.99, abs=1e-9)
 
 
+@pytest.mark.parametrize("stuck_bar", [0.0, 0.7])
+def test_a_stuck_monitor_reads_its_reading_whatever_the_pressure(config, stuck_bar):
+    # its output is frozen; the regulator still holds its own sensor at the command
+    c = quiet(config, model="thickwall", truth={"monitor_stuck_bar": stuck_bar})
+    lsb_bar = float(c.regulator.monitor_bar(c.regulator.monitor_V_at_zero + LSB_V))
+    for pressure in (0.5, 2.0):
+        volts, bench = settled(c, pressure)
+        assert float(c.regulator.monitor_bar(volts[1])) == pytest.approx(stuck_bar,
+                                                                          abs=lsb_bar / 2)
+        assert bench.pressure_bar == pytest.approx(pressure, abs=1e-9)
+
+
 def test_a_bow_beyond_a_tenth_of_full_scale_is_refused(config):
     with pytest.raises(ValueError, match=r"sim\.truth\.monitor_bow_bar=0\.45 is invalid: "
                                          r"expected -0\.4 to 0\.4 bar"):
@@ -242,6 +255,10 @@ def test_a_sliding_braid_truth_is_the_fe_models_sliding_sleeve(config):
                                    "to 0.5 bar"),
     ({"t0_mm": 16.0}, "sim.truth.t0_mm=16 is too thick for D0_mm=30"),
     ({"D0_mm": 0.1}, "sim.truth.D0_mm=0.1 is invalid"),
+    ({"monitor_stuck_bar": -0.1}, "sim.truth.monitor_stuck_bar=-0.1 is invalid: expected 0 to "
+                                  "10 bar"),
+    ({"monitor_stuck_bar": 5.0}, r"sim.truth.monitor_stuck_bar=5 is invalid: expected 0 to 4 "
+                                 r"bar \(regulator.full_scale_bar=4\)"),
 ])
 def test_an_out_of_bounds_departure_is_named(config, truth, message):
     with pytest.raises(ValueError, match=message):

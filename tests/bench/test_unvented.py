@@ -1,6 +1,11 @@
 """bench.unvented: the marker a pressurising run holds, and what counts as dead."""
 
 import json
+import re
+import threading
+from pathlib import Path
+
+import pytest
 
 from mkm.bench.storage import ProcessIdentity
 from mkm.bench.unvented import BenchLease, _folder, find_unvented
@@ -91,3 +96,84 @@ def test_a_stop_while_the_first_marker_is_written_leaves_no_marker(config, tmp_p
     assert result.reason == "stopped by a second Ctrl-C (SIGINT) at once; vented"
     assert not list(_folder("sim-Dev1").glob("*.json"))
     assert find_unvented("sim-Dev1") == []
+
+
+@pytest.fixture
+def dead_runs_hang(monkeypatch):
+    """The bench state folder hangs right after the bench's lock was taken, as the markers of
+    dead runs are looked for (the lock's wait is the usual one; the search's, 0 s: the hang is
+    certain); ``release`` lets it answer. Yields the event."""
+    from mkm.bench import ownership
+    from mkm.bench.ownership import BenchOwner
+
+    release, is_dir, enter = threading.Event(), Path.is_dir, BenchOwner.__enter__
+    benches = _folder("sim-Dev1")
+
+    def hanging(self, *args, **kwargs):
+        if self == benches:
+            release.wait(30)  # released by the test
+        return is_dir(self, *args, **kwargs)
+
+    def taken(self):
+        owner = enter(self)
+        monkeypatch.setattr(ownership, "STATE_START_S", 0.0)
+        return owner
+
+    monkeypatch.setattr(Path, "is_dir", hanging)
+    monkeypatch.setattr(BenchOwner, "__enter__", taken)
+    try:
+        yield release
+    finally:
+        release.set()
+
+
+HANGS = ("did not answer within 0 s as the runs that died on this bench were looked for (it "
+         "hangs): ")
+
+
+@pytest.mark.parametrize("argv", [["acquire", "--no-progress"], ["tare", "--backend", "sim"]])
+def test_a_state_folder_that_hangs_as_dead_runs_are_looked_for_refuses_untouched(
+        argv, tmp_path, monkeypatch, mkm_cli, dead_runs_hang):
+    # the state folder answers as the lock is taken, then hangs as the markers of dead runs
+    # are looked for: the command never returned. Now it refuses in one line once
+    # STATE_START_S has passed, the device never opened
+    from mkm.bench.sim import SimBackend
+
+    opened = []
+    monkeypatch.setattr(SimBackend, "open", lambda self: opened.append(self))
+    code, out, err = mkm_cli([*argv, "--out", str(tmp_path / "runs")] if argv[0] == "acquire"
+                             else argv)
+    assert code == 1 and out == "" and not opened
+    assert not list((tmp_path / "runs").glob("*"))  # --out is checked, no run folder made
+    *simulated, error = err.splitlines()  # tare says SIMULATED first
+    assert simulated == ([] if argv[0] == "acquire" else
+                         ["mkm: SIMULATED bench (sim): no hardware is driven"])
+    assert error.startswith(f"mkm {argv[0]}: error: the bench state folder ")
+    assert error.endswith(HANGS + "nothing was touched; the bench is let go once it answers, or "
+                          "as this process ends")
+
+
+def test_a_run_refused_so_lets_the_bench_go_once_the_folder_answers(config, tmp_path,
+                                                                   dead_runs_hang):
+    from mkm.bench.ownership import StateFolderBroken
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    backend = SimBackend(config)
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    with pytest.raises(StateFolderBroken, match=re.escape(HANGS + "nothing was touched")):
+        run.execute()
+    assert backend.commands == [] and run.owner.lock is not None  # never opened, still held
+    dead_runs_hang.set()
+    state = run.owner._state
+    assert state.wait(state.posted, 30) and run.owner.lock is None  # let go once it answered
+
+
+def test_mkm_vent_vents_when_the_folder_hangs_as_dead_runs_are_looked_for(dead_runs_hang):
+    from mkm.bench import procedures
+    from mkm.bench.config import load_config
+
+    out = procedures.vent(load_config(), backend="sim", notify=lambda m: None, stop_wait_s=0.0)
+    assert out["vented"] and out["pressure_bar"] < 0.05
+    (problem,) = out["bookkeeping"]  # `mkm vent` says it on one line, exit 1
+    assert (HANGS + "the bench was vented, the runs that died on it were not named") in problem

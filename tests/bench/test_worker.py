@@ -65,11 +65,13 @@ def test_shifted_tare_refuses_to_start(config, tmp_path):
 
 def test_regulator_that_does_not_follow_trips_the_pressure_interlock(config, tmp_path):
     # stuck at 0 bar from 1 s: the 0.5 bar command at 2.0 s is never followed; 0.5 bar is
-    # beyond the 0.15 bar tolerance at once, the interlock trips after 5 s of it
+    # beyond the 0.15 bar tolerance at once, the interlock trips after 5 s of it. Its monitor
+    # reads 0 bar before the vent as a monitor stuck at zero would: the vent is not verified
     result, run = record(config, tmp_path, regulator_stuck_at_s=1.0)
-    assert result.status == "aborted"
+    assert result.status == "failed" and result.exit_code == 4
     assert "pressure interlock: the regulator does not follow" in result.reason
     assert "0.5 bar commanded for more than 5 s" in result.reason
+    assert "so its reading after it proves nothing" in result.reason
     tripped = run.samples[run.samples["flags"].str.contains("interlock")]
     assert tripped["time_s"].iloc[0] == pytest.approx(2.0 + 5.1, abs=0.051)
     assert_vented_last(run)
@@ -234,7 +236,7 @@ def test_a_regulator_that_stops_following_after_a_stall_still_trips(config, tmp_
     # samples were acquired under, it trips 5 s after the first command it did not follow
     c = config.replace(sim={"buffer_s": 10.0})
     result, run = record(c, tmp_path, stall_at_s=1.0, stall_s=6.0, regulator_stuck_at_s=1.0)
-    assert result.status == "aborted", result.reason
+    assert result.status == "failed" and result.manual_vent_required, result.reason  # at 0 bar
     assert "pressure interlock: the regulator does not follow" in result.reason
     assert_vented_last(run)
 
