@@ -56,6 +56,24 @@ def _hung_disk(monkeypatch, from_sample):
     return release, hung
 
 
+def _hung_path(monkeypatch, method: str, suffix: str):
+    """``Path.<method>`` blocks on files ending ``suffix`` (a bench state folder on a share that
+    hangs) until ``release`` is set; ``hung`` says it is hanging."""
+    import threading
+
+    release, hung = threading.Event(), threading.Event()
+    original = getattr(Path, method)
+
+    def hanging(self, *args, **kwargs):
+        if self.suffix == suffix and not release.is_set():
+            hung.set()
+            release.wait(120)  # a net under a broken fix, never reached when it works
+        return original(self, *args, **kwargs)
+
+    monkeypatch.setattr(Path, method, hanging)
+    return release, hung
+
+
 def _run_in_thread(config, tmp_path, monkeypatch):
     """``acquire`` in a thread of its own; the first vent after a pressure is reported through
     ``vented``, with the device's sample clock at it and the rows samples.csv held then."""
@@ -238,21 +256,10 @@ def test_an_over_pressure_while_the_stop_request_read_hangs_is_vented_at_once(co
     # block: the loop used to wait in it at every block, with no interlock watched. Now the
     # read is a thread's: the over-pressure is vented at the same sample as with a working
     # state folder
-    import threading
-
     from mkm.bench.sim import SimBackend
 
     c, vent_sample = _over_pressure_reference(config, tmp_path)
-    release, hung = threading.Event(), threading.Event()
-    read_text = Path.read_text
-
-    def hanging(self, *args, **kwargs):
-        if self.suffix == ".stop" and not release.is_set():
-            hung.set()
-            release.wait(120)  # a net under a broken fix, never reached when it works
-        return read_text(self, *args, **kwargs)
-
-    monkeypatch.setattr(Path, "read_text", hanging)
+    release, hung = _hung_path(monkeypatch, "read_text", ".stop")
     write = SimBackend.write_command
 
     def once_hung(self, volts):  # the pressure goes out once the read hangs, whenever that is
@@ -314,16 +321,7 @@ def test_a_state_folder_that_hangs_as_the_bench_is_let_go_does_not_hold_the_run(
 
     from mkm.bench.run import acquire
 
-    release, hung = threading.Event(), threading.Event()
-    unlink = Path.unlink
-
-    def hanging(self, *args, **kwargs):
-        if self.suffix == ".owner" and not release.is_set():
-            hung.set()
-            release.wait(120)  # a net under a broken fix, never reached when it works
-        return unlink(self, *args, **kwargs)
-
-    monkeypatch.setattr(Path, "unlink", hanging)
+    release, hung = _hung_path(monkeypatch, "unlink", ".owner")
     notes, out = [], {}
     worker = threading.Thread(target=lambda: out.update(result=acquire(
         config, out_root=tmp_path, notify=notes.append)), daemon=True)
