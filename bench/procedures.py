@@ -24,7 +24,7 @@ from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backe
 from mkm.bench.sequence import rest_warning, settle_warning, validate_tare
 from mkm.bench.sim import STANDARD_GRAVITY
 from mkm.bench.unvented import STATE_START_S, StateFolderThread, state_dir, vent_unvented
-from mkm.bench.vent import verify_vent
+from mkm.bench.vent import reading_bar, verify_vent
 
 MAX_SECONDS = 600.0  # a tare or a calibration mass is averaged for at most this long
 STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
@@ -117,8 +117,11 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     try:
         device.open()  # writes the vent command (a lost device is reset first)
         check = _vent_and_verify(device, config)
+        unproven = []
         if answered:
-            bookkeeping.extend(_mend_dead_runs(device, owner, notify))
+            problems, dead = _mend_dead_runs(device, owner, notify)
+            bookkeeping.extend(problems)
+            unproven = [m for m in dead if m.unfollowed_bar is not None]
     finally:
         try:
             device.close()
@@ -132,6 +135,12 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     if not check.verified:
         raise BenchError(f"{check.describe()}: VENT BY HAND and check the regulator"
                          + "".join(f"; {p}" for p in bookkeeping))
+    if unproven:  # the monitor that did not follow then: its low reading now proves nothing
+        raise BenchError(
+            f"the vent went out, but the monitor's {reading_bar(check.pressure_bar)} bar does not "
+            f"verify it: in run {unproven[0].run_path} the same monitor read below the "
+            f"{unproven[0].unfollowed_bar:g} bar commanded (stuck, or no supply); check the "
+            "muscle and the monitor" + "".join(f"; {p}" for p in bookkeeping))
     return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
             "manual": False, "stopped": stopped, "bookkeeping": bookkeeping}
 
@@ -189,19 +198,22 @@ def _vent_and_verify(device: Backend, config: BenchConfig):
     return check
 
 
-def _mend_dead_runs(device: Backend, owner: BenchOwner, notify) -> list[str]:
+def _mend_dead_runs(device: Backend, owner: BenchOwner, notify
+                    ) -> tuple[list[str], list]:
     """After the vent: name the runs that died without venting on this bench and mend their
-    folders; the problems met (a state folder that cannot be read or written, or hangs)."""
+    folders; the problems met (a state folder that cannot be read or written, or hangs) and
+    the dead runs' markers."""
     try:
-        for marker in vent_unvented(device, owner.dead_runs("the bench was vented, the runs "
-                                                            "that died on it were not named")):
-            notify(marker.vented_now())
+        markers = vent_unvented(device, owner.dead_runs("the bench was vented, the runs that "
+                                                        "died on it were not named"))
     except StateFolderBroken as exc:
-        return [str(exc)]
+        return [str(exc)], []
     except OSError as exc:
         return [f"the markers of dead runs in the bench state folder could not be handled "
-                f"({exc.strerror or exc})"]
-    return []
+                f"({exc.strerror or exc})"], []
+    for marker in markers:
+        notify(marker.vented_now())
+    return [], markers
 
 
 def loadcell_table(fit: dict, config: BenchConfig | None = None) -> str:

@@ -650,9 +650,10 @@ class BenchRun:
                 reason = (f"{reason}; the bench marker could not be removed "
                           f"({lease.error.strerror or lease.error})")
         elif lease is not None:  # kept: the next command vents first and says why
-            what = self.vent_check.describe()
+            what, unfollowed = self.vent_check.describe(), self.vent_check.unfollowed_bar
             # a failure leaves the marker naming the run and its last command
-            lease.wait(lease.post(lambda: lease.unverified(what)), 0.0 if hung else STATE_WAIT_S)
+            lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
+                       0.0 if hung else STATE_WAIT_S)
         return status, reason
 
     def _marker_books(self, acq: Acquisition | None) -> str:

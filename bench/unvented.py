@@ -63,6 +63,9 @@ class Marker:
     last_command_utc: str = ""
     # the run ended with its vent commanded but not verified: what the check found
     vent_unverified: str = ""
+    # the pressure its monitor did not follow before the vent: that monitor's readings prove no
+    # vent (None: it followed, or no such interlock)
+    unfollowed_bar: float | None = None
     mended: str = ""  # what the finder did to the run folder (not written in the marker)
 
     def describe(self) -> str:
@@ -196,10 +199,12 @@ class BenchLease(StateFolderThread):
             timespec="seconds")
         self._write()
 
-    def unverified(self, what: str) -> None:
-        """The run ends with its vent not verified (``what`` the check found): the marker
-        stays, and says so to the command that finds it."""
+    def unverified(self, what: str, unfollowed_bar: float | None = None) -> None:
+        """The run ends with its vent not verified (``what`` the check found; the pressure its
+        monitor did not follow, when that is why): the marker stays, and says so to the
+        command that finds it."""
         self.marker.vent_unverified = what
+        self.marker.unfollowed_bar = unfollowed_bar
         self._write()
 
     def release(self) -> None:

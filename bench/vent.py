@@ -24,6 +24,11 @@ from dataclasses import asdict, dataclass
 from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected
 
 
+def reading_bar(value: float) -> str:
+    """A monitor's reading [bar] as said: three decimals, its noise about 0 said as 0.000."""
+    return f"{value:.3f}".replace("-0.000", "0.000")
+
+
 @dataclass
 class VentCheck:
     """What the monitor (or the operator) read after the vent."""

@@ -302,6 +302,7 @@ def _check(args) -> int:
 def _vent(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import vent
+    from mkm.bench.vent import reading_bar
 
     config = _hardware_config(args, "vent")
     try:
@@ -313,8 +314,8 @@ def _vent(args) -> int:
         print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "
               "and check the manometer", flush=True)
         return _bookkeeping(out["bookkeeping"])
-    shown = f"{out['pressure_bar']:.3f}".replace("-0.000", "0.000")  # sensor noise around 0
-    print(f"vented: {shown} bar after {out['waited_s']:.1f} s", flush=True)
+    print(f"vented: {reading_bar(out['pressure_bar'])} bar after {out['waited_s']:.1f} s",
+          flush=True)
     return _bookkeeping(out["bookkeeping"])
 
 

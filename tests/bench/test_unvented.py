@@ -177,3 +177,35 @@ def test_mkm_vent_vents_when_the_folder_hangs_as_dead_runs_are_looked_for(dead_r
     assert out["vented"] and out["pressure_bar"] < 0.05
     (problem,) = out["bookkeeping"]  # `mkm vent` says it on one line, exit 1
     assert (HANGS + "the bench was vented, the runs that died on it were not named") in problem
+
+
+def test_mkm_vent_after_a_monitor_that_did_not_follow_does_not_call_the_vent_verified(
+        config, tmp_path):
+    # the monitor reads 0 bar whatever the pressure: the run's follow interlock vents and asks
+    # for a vent by hand (its 0 bar proves nothing). `mkm vent` then read the same stuck 0 bar,
+    # said "vented: 0.000 bar" and removed the marker; now it vents, names the run and says the
+    # reading does not verify the vent
+    from mkm.bench.backend import BenchError
+    from mkm.bench.procedures import vent
+    from mkm.bench.run import acquire
+
+    c = config.replace(sim={"truth": {"monitor_stuck_bar": 0.0}})
+    result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert result.manual_vent_required and result.exit_code == 4
+    (path,) = _folder("sim-Dev1").glob("*.json")
+    data = json.loads(path.read_text())
+    assert data["unfollowed_bar"] == 0.5
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    path.write_text(json.dumps(data))
+    notes = []
+    with pytest.raises(BenchError) as caught:
+        vent(c, notify=notes.append)
+    assert str(caught.value).startswith(
+        "the vent went out, but the monitor's 0.000 bar does not verify it: in run "
+        f"{result.path.resolve()} the same monitor read below the 0.5 bar commanded (stuck, or "
+        "no supply); check the muscle and the monitor")
+    assert any("proves nothing" in n and n.endswith("vented now") for n in notes)
+    # a monitor that followed: the marker of a run killed mid-step is vented and verified
+    data.update(vent_unverified="", unfollowed_bar=None, last_command_bar=1.0)
+    path.write_text(json.dumps(data))
+    assert vent(config, notify=notes.append)["vented"]
