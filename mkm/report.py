@@ -879,7 +879,14 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
                    fe[0] if fe else None, muscle_advice(
                        path, identified, r.calibration.path.name if r.calibration else "",
                        muscle_runs, _identified_record(r.calibration), command_below),
-                   NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET)
+                   NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
+                   _shows_dynamics(r))
+
+
+def _shows_dynamics(r: _Run) -> bool:
+    """Whether the run can show braid friction or creep: a bench run holds its steps, an
+    imported table shows friction only with a rising and a falling branch."""
+    return not r.meta.get("imported_from") or (r.run.steps["direction"] == "down").any()
 
 
 def _auto_pick(r: _Run, names: dict, tolerance: float | None) -> tuple[AutoPick | None, bool]:

@@ -87,7 +87,8 @@ NO_BUDGET_IMPORTED = ("the table was imported without its instruments' accuracy 
                       "--accuracy force=...,pressure=... gives its steps one)")
 
 
-def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET) -> str:
+def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET,
+                 dynamics: bool = True) -> str:
     verdicts = [r.get("consistent") for r in summary]
     agree = sum(v is True for v in verdicts)
     judged = sum(v is not None for v in verdicts)
@@ -96,8 +97,10 @@ def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET) -> 
     others = f"{agree} of {judged} models {'is' if agree == 1 else 'are'}"
     if row["consistent"]:
         return f"consistent with the measurement (|E_n| ≤ 1 at every step; {others})"
+    # friction and creep explain a miss only where the run can show them
+    lacking = "; the models have no braid friction or creep" if dynamics else ""
     return (f"not consistent with the measurement (E_n = {row['worst_E_n']:+.1f} at step "
-            f"{row['worst_step']}; {others}; the models have no braid friction or creep)")
+            f"{row['worst_step']}; {others}{lacking})")
 
 
 def muscle_advice(run_path: str, identified: list[dict] | None = None,
@@ -188,7 +191,8 @@ def gives_advice(summary: list[dict], names: dict[str, str], tolerance: float | 
 def verdict(run_label: str, summary: list[dict], names: dict[str, str],
             tolerance: float | None, auto: AutoPick | None = None,
             auto_same: bool = False, fe_err: tuple[str, float] | None = None,
-            advice: str | None = None, no_budget: str = NO_BUDGET) -> str:
+            advice: str | None = None, no_budget: str = NO_BUDGET,
+            dynamics: bool = True) -> str:
     """The verdict sentence of one run (plain text).
 
     ``summary``: one :func:`mkm.scoring.summarise_run` row per model (``model`` is the spec
@@ -197,7 +201,9 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     ``auto_same``: whether it is the recommended model. ``fe_err``: ``(name, largest |Err%|)``
     of an FE model of the report, the measurement's distance from the FE model; ``advice``:
     what that distance, beyond auto's bound, tells (:func:`muscle_advice`); ``no_budget``: why
-    the run has no E_n, if it has none.
+    the run has no E_n, if it has none; ``dynamics``: whether the run can show braid friction or
+    creep (a bench run's holds, a table's rising and falling branches), which the static models
+    lack.
     """
     row, within = recommend(summary, tolerance)
     if not any(r.get("points", 0) > 0 for r in summary):
@@ -224,7 +230,7 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
         head = f"no model is within {tol} of the measurement; the closest is {name}, {how_far}"
     else:
         head = f"the closest model is {name}, {how_far}"
-    text = f"{run_label}: {head}, {_consistency(row, summary, no_budget)}."
+    text = f"{run_label}: {head}, {_consistency(row, summary, no_budget, dynamics)}."
     if auto is None or tol is None:
         return text
     auto_err = _auto_err(row, summary, names, auto, auto_same)

@@ -61,7 +61,11 @@ def test_the_sentence_names_model_distance_band_speed_and_consistency():
     assert "no model is within 1 % of the measurement; the closest is Thick-wall" in none
     bad = verdict("Run 1", ROWS, NAMES, 0.10)  # Equation 2: the cheapest within 10 %
     assert "use Equation 2 (Chou-Hannaford)" in bad
-    assert "not consistent with the measurement (E_n = +2.4 at step 4; 1 of 4 models is;" in bad
+    assert "not consistent with the measurement (E_n = +2.4 at step 4; 1 of 4 models is; " \
+        "the models have no braid friction or creep)" in bad
+    # an imported table of one branch shows no friction or creep: they explain nothing there
+    table = verdict("Run 1", ROWS, NAMES, 0.10, dynamics=False)
+    assert "(E_n = +2.4 at step 4; 1 of 4 models is)." in table and "friction" not in table
 
 
 def test_when_auto_picks_another_model_the_sentence_says_why_and_points_to_the_muscle():
