@@ -285,13 +285,20 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                                                                 braid)
         notes += _outside_box(caught)
         if rubber["separated"]:
+            one_scale = best
             best, boot, terms = free, free_boot, free_terms
             ratio, (_, top) = rubber["ratio_C01_over_C10"], PRACTICAL_RANGE.C01_per_C10
-            if fitting.at_edge(free.values["c01_fraction"], free.bounds["c01_fraction"]):
-                # a Festo membrane pushes it to 9: fits best there, but the box set the number
+            share, (low, _) = free.values["c01_fraction"], free.bounds["c01_fraction"]
+            if fitting.at_edge(share, free.bounds["c01_fraction"]):
+                # a Festo membrane pushes it to 9, a bench error the model absorbs so to 0:
+                # fits best there, but the edge set the number, and the bootstrap collapsed on
+                # it: the intervals hold the fit at Silastic S's ratio too
+                terms = {**terms, "ratio_edge": ratio_edge_term(one_scale, free)}
+                want = ("no C01 (a neo-Hookean rubber, or an error the model takes for one)"
+                        if share <= low else "more of C01 than the box allows")
                 notes.append(f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs "
-                             "want more of C01 than the box allows, so the ratio "
-                             "is the box's, not measured, and its interval is cut there")
+                             f"want {want}, so the ratio is the edge's, not measured: the "
+                             "intervals hold the fit at Silastic S's ratio too")
             if ratio > top:
                 notes.append(f"the identified rubber's C01/C10 {ratio:.3g} is above the "
                              f"practical range's {top:g} (`mkm models`): every model "
@@ -556,6 +563,17 @@ def _outside_box(caught, what: str = "the fit with C01's share free",
     first = str(outside[0].message).partition("(")[2].partition(")")[0]
     return [f"{what} left the surrogate's training box in {len(outside)} evaluations "
             f"(first: {first}): {consequence}"]
+
+
+def ratio_edge_term(one_scale, free) -> dict:
+    """The model-form term of a rubber ratio at the edge of its search: the fit at Silastic S's
+    ratio (``one_scale``) minus the fit with C01's share free (``free``), one-sided."""
+    shift = {name: one_scale.values[name] - free.values[name] for name in free.names
+             if name in one_scale.values}
+    shift["c01_fraction"] = fitting.SILASTIC_C01_FRACTION - free.values["c01_fraction"]
+    return {"kind": "one-sided", "shift": shift,
+            "what": "the fit at Silastic S's C01/C10 minus the fit with the ratio at the edge "
+                    "of its search"}
 
 
 def _rubber_ratio(source, fe, runs, best, seed, braid):

@@ -140,7 +140,13 @@ class Identification:
                 for shift in ([d] if term["kind"] == "one-sided" else
                               [d, {n: -v for n, v in d.items()}]):
                     moved = interval(shift) - base
-                    low, high = min(low, low + moved[0]), max(high, high + moved[1])
+                    # and the estimate the term moves to: replicates past a bound (a ratio at
+                    # the edge of its search) shift from beyond it
+                    there = float(function({**self.fit.values, **{
+                        n: float(np.clip(self.fit.values[n] + v, *self.fit.bounds[n]))
+                        for n, v in shift.items() if n in self.fit.bounds}}))
+                    low, high = (min(low, low + moved[0], there),
+                                 max(high, high + moved[1], there))
             return float(low), float(high)
 
         values = self.values

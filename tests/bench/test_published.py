@@ -118,8 +118,23 @@ def test_the_dmsp_20_read_at_its_nominal_length(tmp_path, mkm_cli):
                               "--search", "model", "--out", str(tmp_path / "id"),
                               "--no-progress"])
     assert code == 0, err
-    assert "C01/C10 9 is at the edge of its search box" in out
+    assert "C01/C10 9 is at the edge of its search box: the runs want more of C01 than the " \
+        "box allows, so the ratio is the edge's, not measured: the intervals hold the fit at " \
+        "Silastic S's ratio too" in out
     assert "is above the practical range's 1.5" in out
+    # the ratio at the edge is no measurement (the bootstrap collapsed on it): C10 and C01's
+    # intervals hold the fit at Silastic S's ratio, a model-form term
+    from mkm.identify.fitting import rubber
+
+    record = json.loads((tmp_path / "id" / "identification.json").read_text(encoding="utf-8"))
+    edge = record["model_form"]["ratio_edge"]["shift"]
+    fitted = {p["parameter"]: p for p in record["parameters"]}
+    C10, C01 = fitted["C10_MPa"]["value"], fitted["C01_MPa"]["value"]
+    one = rubber({"rubber_scale": (C10 + C01) / sum(rubber({"rubber_scale": 1.0}))
+                  + edge["rubber_scale"], "c01_fraction": C01 / (C10 + C01)
+                  + edge["c01_fraction"]})
+    for k, name in enumerate(("C10_MPa", "C01_MPa")):
+        assert fitted[name]["ci_low"] <= one[k] <= fitted[name]["ci_high"], (name, one, fitted)
     model = make_model("thickwall", Calibration.load(tmp_path / "id" / "calibration.json"),
                        runs[0].meta.muscle)
     pred, _ = predict_steps(model, runs[0].steps, runs[0].meta.muscle, cache_dir=None)
