@@ -549,7 +549,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), group.values("force")
     notes, handling = ([override], {"L0": override}) if override else ([], {})
-    notes += filter(None, [PRACTICAL_RANGE.length_note(muscle.D0_mm, muscle.L0_mm)])
+    notes += filter(None, [PRACTICAL_RANGE.length_note(muscle.D0_mm, muscle.L0_mm),
+                           PRACTICAL_RANGE.lock_note(muscle.eps)])
     timed = "time" in found
     if timed:
         time_s = group.values("time")

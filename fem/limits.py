@@ -187,6 +187,19 @@ class PracticalRange:
                 "a cylinder), are much of a muscle this short; every model still computes it, "
                 "as an extrapolation")
 
+    def lock_note(self, eps: float) -> str | None:
+        """A shortening past the braid lock at the range's lowest angle, the largest lock of any
+        braid in it (None below): held so short a muscle never pulls. A note, not an error (a
+        slack length is a length), that names a percentage typed as a fraction."""
+        theta0 = self.theta0_deg[0]
+        lock = float(lock_eps(theta0))
+        if not eps > lock:
+            return None
+        return (f"eps {eps:g} is past the braid lock of every muscle of the practical range "
+                f"({lock:.3g} at {theta0:g} deg, its lowest braid angle): held so short, a "
+                f"muscle never pulls (check the eps: {eps:g} is {100 * eps:g} %; for {eps:g} % "
+                f"give --eps {eps:g}%)")
+
     def violations(self, **values) -> list[str]:
         """What of one muscle (``D0_mm=..., t0_mm=..., eps=..., C01_MPa=...``: any of the
         quantities, by their muscle names) lies outside the range, one phrase each; empty

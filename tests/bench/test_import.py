@@ -581,6 +581,23 @@ def test_a_muscle_shorter_than_three_diameters_is_imported_with_a_note(L0, noted
     assert ("below 3 D0" in err) == noted, err
 
 
+@pytest.mark.parametrize("eps, noted", [("0.99", True), ("0.41", True), ("0.4", False),
+                                        ("0.99%", False)])
+def test_an_eps_past_every_braids_lock_is_imported_with_a_note(eps, noted, tmp_path, mkm_cli):
+    """--eps 0.99 (0.99 % meant) was accepted without a word: past the braid lock at 15 deg
+    (1 - 1/(sqrt 3 cos 15 deg) = 0.402), the largest of the practical range, no muscle pulls.
+    A note (a slack length is a length) names the lock and the percentage it may have been."""
+    path = tmp_path / "lab.csv"
+    path.write_text("P,F\n0.5,0\n1,0\n1.5,0\n")
+    code, out, err = mkm_cli(["import", str(path), "--id", "m", "--D0", "10", "--t0", "1",
+                              "--L0", "250", "--eps", eps, "--out", str(tmp_path / "runs")])
+    assert code == 0 and out.strip(), err
+    assert ("past the braid lock of every muscle of the practical range (0.402 at 15 deg, its "
+            "lowest braid angle): held so short, a muscle never pulls" in err) == noted, err
+    if eps == "0.99":
+        assert "(check the eps: 0.99 is 99 %; for 0.99 % give --eps 0.99%)" in err
+
+
 def test_a_size_under_another_name_is_pointed_at(tmp_path, mkm_cli):
     # a catalogue's nominal diameter is not silently taken for the tube's: named, to be given
     path = tmp_path / "lab.csv"
