@@ -156,8 +156,10 @@ class Identification:
                 for k, key in enumerate(("C10_MPa", "C01_MPa")):
                     low, high = replicated(lambda v, k=k: rubber(v)[k])
                     # a search bound cuts the replicates (said in a note): the interval
-                    # still holds the estimate
-                    add(key, values[key], min(low, values[key]), max(high, values[key]),
+                    # still holds the estimate; widened by a misfit, it stops at 0 (no rubber
+                    # constant is negative)
+                    add(key, values[key], max(min(low, values[key]), 0.0),
+                        max(high, values[key]),
                         source=f"the runs (correlation C10-C01 "
                                f"{self.rubber_correlation():+.2f})")
             elif name == "rubber_scale":

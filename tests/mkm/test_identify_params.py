@@ -323,6 +323,23 @@ def test_a_rubber_unlike_silastic_is_reported_as_two_constants(tmp_path):
     assert [n for n in result.notes if "above the practical range's 1.5" in n], result.notes
 
 
+@pytest.mark.slow
+def test_a_rubber_constants_interval_widened_by_a_misfit_stops_at_zero(tmp_path, monkeypatch):
+    # a thick-wall fit with chi2/nu in the thousands (runs the FE simulated with a gap) widened
+    # C10's interval about its estimate to -2.6-0.31 MPa: a rubber constant is not negative
+    total = SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa
+    runs = [record(tmp_path, eps, k, c01_MPa=2 * total / 3, scale=total / 3 / SILASTIC_S.C10_MPa)
+            for k, eps in enumerate((0.0, 0.07, 0.122))]
+    result = identify(runs, params="theta0,rubber,friction,creep", model="thickwall",
+                      search="model")
+    assert result.rubber["separated"], result.rubber
+    monkeypatch.setattr(type(result.goodness), "birge_ratio", property(lambda self: 1e4))
+    table = result.parameters().set_index("parameter")
+    for name in ("C10_MPa", "C01_MPa"):
+        assert table.loc[name, "ci_low"] == 0.0 < table.loc[name, "value"], table
+        assert table.loc[name, "ci_high"] > 10 * table.loc[name, "value"], table
+
+
 def test_an_interval_always_holds_its_estimate_and_says_when_stretched():
     # residuals that still push the parameter one way (as at a bound a neighbour rests on):
     # every replicate steps the same way, so their 95 % range leaves the estimate out
