@@ -367,8 +367,12 @@ def test_the_whole_path_on_the_fe_bench(tmp_path, mkm_run):
     assert values["C10_MPa"] / SILASTIC_S.C10_MPa == pytest.approx(truth["rubber_scale"],
                                                                     rel=0.1), why
     record_ = json.loads((out / "identification.json").read_text(encoding="utf-8"))
-    assert record_["searched_with"] == "surrogate"
-    assert record_["fe_confirmation"]["largest_fe_minus_surrogate_N"] < 5.0
+    if record_["searched_with"] == "surrogate":
+        assert record_["fe_confirmation"]["largest_fe_minus_surrogate_N"] < 5.0
+    else:  # a fresh truth whose optimum the surrogate put on its box edge: the FE searched
+        assert record_["searched_with"] == "axisym:mesh=coarse" and any(
+            "the optimum lies on the surrogate's box edge" in n for n in record_["notes"]), (
+            why, record_["notes"])
     code, _, err = mkm_run(["report", *map(str, runs), "--models", "axisym:mesh=coarse",
                             "--out", str(tmp_path / "report"), "--no-progress",
                             "--calibration", str(out / "calibration.json")])
