@@ -101,15 +101,14 @@ class BenchOwner:
     def __enter__(self) -> BenchOwner:
         """Take the bench; the state folder is waited for at most :data:`STATE_START_S`
         (:class:`StateFolderBroken` after it: nothing was touched)."""
-        taken: list[BaseException | None] = []
-        ticket = self._state.post(lambda: taken.append(self._take()))
-        if not self._state.wait(ticket, STATE_START_S):
+        done, taken = self._state.call(self._take, STATE_START_S)
+        if not done:
             self._state.post(self._let_go)  # once it answers: the lock taken meanwhile goes
             raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} did not "
                                     f"answer within {STATE_START_S:g} s (it hangs): nothing was "
                                     "touched")
-        if taken[0] is not None:
-            raise taken[0]
+        if isinstance(taken, BaseException):
+            raise taken
         return self
 
     def _take(self) -> BaseException | None:
@@ -151,25 +150,19 @@ class BenchOwner:
         waited for at most :data:`STATE_START_S` (not at all when the folder already hangs):
         :class:`StateFolderBroken` after it, its message ending with ``then`` (what the caller
         did); the bench is then let go once the folder answers, or with this process."""
-        found: list = []
-
-        def look() -> None:
-            try:
-                found.append(find_unvented(self.bench_key))
-            except OSError as exc:  # raised below, as an unbounded search raised it
-                found.append(exc)
-
         hung = self._state.lagging()  # an earlier update never came back
-        if not self._state.wait(self._state.post(look), 0.0 if hung else STATE_START_S):
+        done, found = self._state.call(lambda: find_unvented(self.bench_key),
+                                       0.0 if hung else STATE_START_S)
+        if not done:
             self._hung = True
             within = "" if hung else f" within {STATE_START_S:g} s"
             raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} did not "
                                     f"answer{within} as the runs that died on this bench were "
                                     f"looked for (it hangs): {then}; the bench is let go once it "
                                     "answers, or as this process ends")
-        if isinstance(found[0], OSError):
-            raise found[0]
-        return found[0]
+        if isinstance(found, BaseException):  # raised here, as an unbounded search raised it
+            raise found
+        return found
 
     def __exit__(self, *exc) -> None:
         """Let the bench go, waiting at most :data:`STATE_WAIT_S` for the state folder: past

@@ -152,26 +152,20 @@ def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
     holder that stopped (or None), and whether the state folder answered within
     ``stop_wait_s`` + :data:`mkm.bench.unvented.STATE_START_S` (a problem in ``bookkeeping``
     when not); :class:`mkm.bench.ownership.BenchBusy` when a holder did not let go."""
-    asking, answer = StateFolderThread("mkm-vent-ask"), []
-
-    def ask() -> None:
-        try:
-            answer.append(request_stop(key, "`mkm vent`", stop_wait_s))
-        except (BenchError, OSError) as exc:  # said or raised by the caller
-            answer.append(exc)
-
-    if not asking.wait(asking.post(ask), stop_wait_s + STATE_START_S):
+    done, answer = StateFolderThread("mkm-vent-ask").call(
+        lambda: request_stop(key, "`mkm vent`", stop_wait_s), stop_wait_s + STATE_START_S)
+    if not done:
         bookkeeping.append(f"the bench state folder {state_dir()} did not answer within "
                            f"{stop_wait_s + STATE_START_S:g} s (it hangs): no run holding the "
                            "bench was asked to stop, the bench was vented without its lock "
                            "and the markers of dead runs were not looked for")
         return None, False
-    if isinstance(answer[0], StateFolderBroken | OSError):
-        bookkeeping.append(str(answer[0]))
+    if isinstance(answer, StateFolderBroken | OSError):
+        bookkeeping.append(str(answer))
         return None, True
-    if isinstance(answer[0], BaseException):
-        raise answer[0]
-    return answer[0], True
+    if isinstance(answer, BaseException):
+        raise answer
+    return answer, True
 
 
 def _vent_and_verify(device: Backend, config: BenchConfig):

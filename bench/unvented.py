@@ -131,6 +131,23 @@ class StateFolderThread:
         with self._done:
             return self._done.wait_for(lambda: self._written >= ticket, timeout_s)
 
+    def call(self, function: Callable[[], object], timeout_s: float | None
+             ) -> tuple[bool, object]:
+        """``function()`` on the thread, waited for at most ``timeout_s``: ``(True, what it
+        returned or the exception it raised)``, or ``(False, None)`` when it did not come back
+        in time (it still runs, in order, once the folder answers)."""
+        out: list = []
+
+        def run() -> None:
+            try:
+                out.append(function())
+            except Exception as exc:  # the caller's to raise or to say
+                out.append(exc)
+
+        if not self.wait(self.post(run), timeout_s):
+            return False, None
+        return True, out[0]
+
     @property
     def posted(self) -> int:
         """The ticket of the last update posted (0 before any)."""

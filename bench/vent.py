@@ -71,7 +71,7 @@ def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -
         return check
     return dataclasses.replace(
         check, verified=False, unfollowed_bar=commanded_bar,
-        problem=(f"the monitor read {measured_bar:.3f} bar against {commanded_bar:g} bar "
+        problem=(f"the monitor read {reading_bar(measured_bar)} bar against {commanded_bar:g} bar "
                  "commanded before the vent, so its reading after it proves nothing: stuck near "
                  "zero, a monitor reads so whatever the muscle holds; a regulator without "
                  "supply pressure or a hose that leaks reads the same; check the monitor and "
