@@ -181,12 +181,13 @@ HELD_OUT_FILE = package_file("mkm.surrogate", "data", "muscle_held_out.json")
 KERNELS_PATH = kernels_path()
 
 
-def held_out_key(kind: str, dataset, splits: int) -> str:
+def held_out_key(kind: str, dataset, splits: int, versions: dict | None = None) -> str:
     """What the held-out refits of ``kind`` on ``dataset`` depend on: the surrogate's cache key
-    (data, kind, splits, libraries, model code, std sets) and the training code."""
+    (data, kind, splits, libraries, model code, std sets) and the training code. ``versions``:
+    the libraries' (None: those installed)."""
     from mkm.core.records import source_version
 
-    parts = {"cache_key": cache_key(Path(dataset), kind, splits),
+    parts = {"cache_key": cache_key(Path(dataset), kind, splits, versions),
              "training_code": source_version("mkm.surrogate.train")}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
@@ -253,14 +254,16 @@ def _test_muscle_metrics(model: SurrogateForceModel):
     return summary.drop(columns=["model"]).to_dict(orient="records")
 
 
-def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SPLITS) -> str:
+def cache_key(dataset=DEFAULT_DATASET, kind: str = BEST, splits: int = MUSCLE_SPLITS,
+              versions: dict | None = None) -> str:
     """Hash of what a trained surrogate depends on: the data, the kind, the splits, the source
-    of the surrogate and of every physics module it calls (calibration included), libraries,
-    and the random muscles that scale its std."""
+    of the surrogate and of every physics module it calls (calibration included), libraries
+    (``versions``; None: those installed), and the random muscles that scale its std."""
     from mkm.surrogate.io import code_version
 
     parts = {"dataset": file_sha256(dataset), "kind": kind, "splits": splits,
-             "versions": provenance()["versions"], "code": code_version(kind),
+             "versions": provenance()["versions"] if versions is None else versions,
+             "code": code_version(kind),
              "gp_kernels": file_sha256(KERNELS_PATH) if KERNELS_PATH.is_file() else None,
              "std_sets": [file_sha256(p) for p in std_sets(named(kind),
                                                            dataset) if p.is_file()]}
