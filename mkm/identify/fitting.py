@@ -41,6 +41,7 @@ from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.muscle import eps_at_rest_length
 from mkm.identify.groups import DEFAULT_GROUPS, GROUPS
+from mkm.identify.runs import offset_search_bar
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
 ORDER = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm", "gap_mm",
@@ -317,12 +318,12 @@ def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float
     """Where ``name`` is searched: the source's box, the terms' bounds, the declared wall and
     diameter within :data:`GEOMETRY_FACTORS` and the rest length from the longest held length
     to :data:`REST_LENGTH_FACTOR` of the declared one (inside the source's box), the monitor's
-    offset within its declared bound (the smallest of the runs')."""
+    offset within its declared bound (the smallest of the runs') or about its vented reading
+    (:func:`mkm.identify.runs.offset_search_bar`)."""
     if name == "c01_fraction":
         return source.share_bounds(start["rubber_scale"])
     if name == "pressure_offset_bar":
-        bound = min(run.monitor_offset_bound_bar for run in runs)
-        return (-bound, bound)
+        return offset_search_bar(runs)
     if name in GEOMETRY_FACTORS or name == "L0_mm":
         declared = float(runs[0].muscle[name])
         if name == "L0_mm":

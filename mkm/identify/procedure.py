@@ -44,7 +44,13 @@ from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, S
 from mkm.identify.groups import SEARCHES
 from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
 from mkm.identify.result import Identification
-from mkm.identify.runs import load_runs, offset_bound_said, shown_effects
+from mkm.identify.runs import (
+    load_runs,
+    offset_bound_said,
+    offset_search_bar,
+    shown_effects,
+    vented_beyond_bound,
+)
 from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
 #: a reduced candidate (friction or creep dropped), or a fit to the runs but one, that has not
@@ -358,6 +364,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      f"{offset_bound_said(runs)}: the runs' threshold wants more than the "
                      f"monitor may be off; {check}, or the model does not fit these runs near "
                      "the threshold")
+    notes += [line for line in (vented_beyond_bound(runs),) if line]
 
     notify("leave-one-run-out and the nominal model")
     checks = _checks(runs, fe, source, best, nominal)
@@ -443,14 +450,15 @@ def _select(source, runs, names, start, nominal):
 def instrument_terms(runs) -> dict:
     """What the bootstrap draws of the instrument (:func:`mkm.identify.intervals.bootstrap`):
     the load cell's sensitivity tolerance (one cell for every run: the largest declared), the
-    monitor offset's prior, uniform within the smallest declared offset bound
-    (:meth:`mkm.bench.config.Regulator.reading_bounds`; its standard deviation, the bound over
-    root 3), and each imported step's declared noise
-    (:meth:`~mkm.identify.runs.RunData.declared_noise_N`: its residual cannot show it)."""
-    bound = min(r.monitor_offset_bound_bar for r in runs)
+    monitor offset's prior, uniform over where it is searched
+    (:func:`mkm.identify.runs.offset_search_bar`: the smallest declared offset bound, or about
+    the vented reading; its standard deviation, the half-width over root 3), and each imported
+    step's declared noise (:meth:`~mkm.identify.runs.RunData.declared_noise_N`: its residual
+    cannot show it)."""
+    low, high = offset_search_bar(runs)
     declared = [r.declared_noise_N() for r in runs]
     return {"sensitivity_tolerance": max(r.sensitivity_tolerance for r in runs),
-            "prior_sd": {"pressure_offset_bar": bound / np.sqrt(3.0)},
+            "prior_sd": {"pressure_offset_bar": (high - low) / 2 / np.sqrt(3.0)},
             "step_u_N": (np.concatenate([np.zeros(len(r.steps)) if d is None else d
                                          for r, d in zip(runs, declared, strict=True)])
                          if any(d is not None for d in declared) else None)}

@@ -26,6 +26,8 @@ from mkm.core.records import file_sha256
 #: ``L0_mm`` may differ: the same tube and braid cut to several lengths)
 SAME_MUSCLE = ("D0_mm", "t0_mm")
 SAME_MUSCLE_RTOL = 1e-6
+#: a vented mean reading of the monitor is its zero within this many standard errors
+VENTED_SE_FACTOR = 3.0
 
 
 @dataclass
@@ -68,6 +70,12 @@ class RunData:
     #: False: the run declared no pressure accuracy, its offset bound is the default
     offset_bound_declared: bool = True
     imported: bool = False  # a table or ramp of ``mkm import``: --accuracy declares its bounds
+    #: the monitor's declared zero error [bar] where its data sheet is itemised (``[regulator]
+    #: monitor_zero_bar``; None: one accuracy, whose share at zero nobody declared)
+    monitor_zero_bound_bar: float | None = None
+    #: the monitor's readings while the run was vented to tare the load cell: their mean and
+    #: its standard error [bar] (None: no such readings, an imported run or a typed manometer)
+    vented_bar: tuple[float, float] | None = None
     #: the tube's declared +- tolerances [mm] (``D0_mm``, ``t0_mm``: run.json's
     #: ``calibration.muscle_tolerances``, :class:`mkm.fem.tolerances.Tolerances` where none)
     geometry_tolerance_mm: dict = field(default_factory=lambda: _tube_tolerances(None))
@@ -187,12 +195,31 @@ def load_run_data(path) -> RunData:
     muscle = _muscle(run)
     tare = samples.loc[samples["phase"] == "tare", "force_N"].to_numpy(dtype=float)
     tare_se = float(np.std(tare, ddof=1) / np.sqrt(tare.size)) if tare.size > 1 else 0.0
+    instrument = _instrument(run)
     sha = {name: file_sha256(path / name) for name in ("steps.csv", "samples.csv")
            if (path / name).is_file()}
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
-                   timed=imported.get("shape") != "ramp", **_instrument(run))
+                   timed=imported.get("shape") != "ramp",
+                   vented_bar=_vented(samples, run) if not imported else None, **instrument)
+
+
+def _vented(samples: pd.DataFrame, run) -> tuple[float, float] | None:
+    """The mean of the monitor's readings during the tare, when the regulator is commanded to
+    0 bar and the muscle open to the air, and its standard error [bar]: the monitor's zero as
+    measured. None for a manual regulator (its readings are typed, not read) or fewer than two
+    readings."""
+    regulator = run.meta.calibration.get("regulator") or {}
+    if regulator.get("kind", "electronic") != "electronic":
+        return None
+    vented = samples["phase"] == "tare"
+    if "command_bar" in samples:
+        vented &= samples["command_bar"] == 0
+    reading = samples.loc[vented, "pressure_bar"].to_numpy(dtype=float)
+    if reading.size < 2:
+        return None
+    return float(reading.mean()), float(reading.std(ddof=1) / np.sqrt(reading.size))
 
 
 def _columns(steps: pd.DataFrame, *extra: str) -> pd.DataFrame:
@@ -222,6 +249,7 @@ def _instrument(run) -> dict:
     regulator = from_record(Regulator, recorded["regulator"])
     offset, gain = regulator.reading_bounds()
     out = {"monitor_offset_bound_bar": offset, "monitor_gain_bound": gain,
+           "monitor_zero_bound_bar": regulator.monitor_components.get("monitor_zero_bar"),
            "sensitivity_tolerance": recorded["loadcell"].get(
                "sensitivity_tolerance_fraction", LoadCell.sensitivity_tolerance_fraction),
            "instrument_declared": ("monitor_accuracy_bar" in recorded["regulator"]
@@ -261,11 +289,56 @@ def _declared_instrument(run) -> dict:
     return out
 
 
+def vented_zero(runs) -> tuple[float, float] | None:
+    """The monitor's offset as the runs' vented readings measure it: ``(centre, half)`` [bar],
+    the mean of the runs' vented means and how far the offset may lie from it: what a reading at
+    zero cannot show (the declared non-linearity and half the hysteresis: the declared offset
+    bound less its zero error), half the runs' spread (the zero drifts between runs) and
+    :data:`VENTED_SE_FACTOR` standard errors of the mean. None unless every run read its monitor
+    vented and declares its zero error apart (``[regulator] monitor_zero_bar``): with one
+    accuracy bound, which share of it the zero holds nobody said."""
+    if not runs or any(r.vented_bar is None or r.monitor_zero_bound_bar is None for r in runs):
+        return None
+    means = np.array([r.vented_bar[0] for r in runs])
+    se = np.sqrt(sum(r.vented_bar[1] ** 2 for r in runs)) / len(runs)
+    unseen = min(r.monitor_offset_bound_bar - r.monitor_zero_bound_bar for r in runs)
+    half = max(unseen, 0.0) + np.ptp(means) / 2 + VENTED_SE_FACTOR * se
+    return float(means.mean()), float(half)
+
+
+def offset_search_bar(runs) -> tuple[float, float]:
+    """Where the fit looks for the monitor's offset [bar]: about its vented reading where the
+    runs measured it (:func:`vented_zero`), else within the smallest declared bound."""
+    zero = vented_zero(runs)
+    if zero is not None:
+        return zero[0] - zero[1], zero[0] + zero[1]
+    bound = min(r.monitor_offset_bound_bar for r in runs)
+    return -bound, bound
+
+
+def vented_beyond_bound(runs) -> str | None:
+    """A note when a run's monitor read vented further from 0 than the offset bound it declares
+    (beyond :data:`VENTED_SE_FACTOR` standard errors): the declaration or the monitor is wrong."""
+    for run in runs:
+        if run.vented_bar is None:
+            continue
+        mean, se = run.vented_bar
+        if abs(mean) > run.monitor_offset_bound_bar + VENTED_SE_FACTOR * se:
+            return (f"run {run.name}: the pressure monitor read {mean:+.4f} bar vented (the "
+                    f"tare), beyond its declared bound +-{run.monitor_offset_bound_bar:g} bar: "
+                    "check the monitor's zero and the regulator's accuracy in the configuration")
+    return None
+
+
 def offset_bound_said(runs) -> str:
     """The pressure monitor's offset bound the fit keeps to (the smallest of the runs') as the
     notes say it: declared, or the configuration's default where the run that sets it declared
     none (an imported table without ``--accuracy``, a run whose run.json records no monitor
-    accuracy), with how to declare it."""
+    accuracy), with how to declare it; or the window about the runs' vented reading."""
+    zero = vented_zero(runs)
+    if zero is not None:
+        return (f"{zero[1]:.2g} bar of its vented reading {zero[0]:+.4f} bar (the runs' tares; "
+                "what a reading at zero cannot show, as declared)")
     bound = min(r.monitor_offset_bound_bar for r in runs)
     setting = [r for r in runs if r.monitor_offset_bound_bar == bound]
     if any(r.offset_bound_declared for r in setting):
