@@ -368,10 +368,12 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
 
     notify("leave-one-run-out and the nominal model")
     checks = _checks(runs, fe, source, best, nominal)
-    failed = [c["run"] for c in checks if "heldout_failed" in c or "length_heldout_failed" in c]
+    failed = [(c["run"], c.get("heldout_failed") or c["length_heldout_failed"]) for c in checks
+              if "heldout_failed" in c or "length_heldout_failed" in c]
     if failed:
-        notes.append(f"held out, {', '.join(failed)} could not be predicted: the fit to the other "
-                     f"runs did not converge (they do not fix {', '.join(best.names)} together)")
+        notes.append(f"held out, {', '.join(run for run, _ in failed)} could not be predicted "
+                     f"from the other runs (they do not fix {', '.join(best.names)} together): "
+                     f"{failed[0][1]}")
     single = [c["run"] for c in checks if "heldout" in c and len(
         {round(r.eps, 4) for r in runs if r.name != c["run"]}) == 1]
     if single and {"theta0_deg", "rubber_scale"} <= set(best.names):
@@ -791,14 +793,16 @@ def _checks(runs, fe, source, best, nominal) -> list[dict]:
         try:
             held = fitting.fit(kept, others, best.names, best.values,
                                max_nfev=CANDIDATE_EVALUATIONS, given=given)
-        except RuntimeError as exc:  # the other runs do not fix the parameters: said, no error
+            predicted = fitting.step_predictions(fe, [runs[k] for k in members], held.values)
+        except RuntimeError as exc:
+            # the other runs do not fix the parameters, or they took the model where it has no
+            # force for the held-out run (a gap at its bound, an angle past the lock): said
             for k in members:
                 nan = np.full(len(runs[k].steps), np.nan)
                 out[k].update({prefix: nan, f"{prefix}_failed": str(exc),
                                f"{prefix}_err": {"rising": np.nan, "falling": np.nan,
                                                  "err_pct": nan}})
             continue
-        predicted = fitting.step_predictions(fe, [runs[k] for k in members], held.values)
         for k, p in zip(members, predicted, strict=True):
             out[k].update({prefix: p, f"{prefix}_err": _branch_errors(runs[k], p),
                            f"{prefix}_values": fitting.full_parameters(held.values)})
