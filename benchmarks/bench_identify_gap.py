@@ -4,7 +4,7 @@ simulated, blind.
 Run outside the test suite:
 
     .venv/bin/python benchmarks/bench_identify_gap.py [--draws 1] [--seed 0] [--params P]
-        [--out FILE.json]
+        [--wrong-bench [--itemised]] [--out FILE.json]
 
 Each draw is a muscle with a radial gap between tube and braid: theta0 28-36 deg, rubber
 x0.8-1.5 (Silastic S's constants scaled), gap 0.4-1.2 mm, set as the simulated bench's truth
@@ -19,6 +19,12 @@ the 95 % intervals of the gap, the angle and the rubber hold the truth, chi2/nu 
 whether identify said it misfits (the warning that its intervals may miss), and the wall
 and CPU seconds of the identification (in one process: on a shared machine the CPU time is
 the closer to what an idle core takes).
+
+``--wrong-bench`` simulates each draw on a bench wrong within what it declares
+(:func:`wrong_bench`); with ``--itemised`` the bench declares its monitor's error as a data
+sheet itemises it (:data:`ITEMISED`), the monitor is as wrong as that allows (the same offset and
+gain as without, a bow and a hysteresis within their bounds), and identify takes the offset from
+the monitor's vented reading in the runs' tares (:func:`mkm.identify.runs.vented_zero`).
 """
 
 from __future__ import annotations
@@ -45,6 +51,18 @@ MODELS = ("axisym:mesh=coarse", "thickwall")
 PARAMS = "theta0,rubber,gap,friction,creep"
 
 
+#: the monitor's error itemised, the whole accuracy bound as the zero error (so that the offsets
+#: drawn are those of the one-bound bench), its span error, non-linearity and hysteresis
+ITEMISED = {"monitor_zero_bar": 0.04, "monitor_span_fraction": 0.005,
+            "monitor_nonlinearity_bar": 0.004, "monitor_hysteresis_bar": 0.004}
+
+
+def itemised_monitor(rng) -> dict:
+    """A monitor's bow and hysteresis within :data:`ITEMISED` (the truth's)."""
+    return {"monitor_bow_bar": rng.uniform(-1, 1) * ITEMISED["monitor_nonlinearity_bar"],
+            "monitor_hysteresis_bar": rng.uniform(0, 1) * ITEMISED["monitor_hysteresis_bar"]}
+
+
 def wrong_bench(rng) -> dict:
     """A bench wrong the way real ones are, within what it declares: the muscle's diameter and
     wall anywhere in their tolerances, the monitor's offset within three quarters of its
@@ -62,15 +80,17 @@ def wrong_bench(rng) -> dict:
             "loadcell_gain": 1.0 + rng.uniform(-1, 1) * cell, "fe_mesh": "medium"}
 
 
-def simulate(truth: dict, out: Path, seed: int, bench: dict | None = None) -> list[Path]:
+def simulate(truth: dict, out: Path, seed: int, bench: dict | None = None,
+             regulator: dict | None = None) -> list[Path]:
     """The two blind runs of the FE muscle ``truth`` (on the bench ``bench``: exact, coarse
-    mesh, when None)."""
+    mesh, when None; ``regulator``: what the configuration declares of it besides the
+    defaults)."""
     runs = []
     scale = truth["rubber_scale"]
     bench = dict(bench or {})
     mesh = bench.pop("fe_mesh", "coarse")
     for k, eps in enumerate(EPS):
-        config = load_config(eps=eps).replace(sim={
+        config = load_config(eps=eps).replace(regulator=regulator or {}, sim={
             "model": "axisym", "fe_mesh": mesh, "seed": seed + k,
             "truth": {"theta0_deg": truth["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
                       "C01_MPa": scale * SILASTIC_S.C01_MPa, "gap_mm": truth["gap_mm"],
@@ -100,17 +120,26 @@ def main() -> None:
     parser.add_argument("--wrong-bench", action="store_true",
                         help="simulate each draw on a bench wrong within its declared "
                         "tolerances (wrong_bench; drawn from the seed's own stream)")
+    parser.add_argument("--itemised", action="store_true",
+                        help="with --wrong-bench: the monitor's error declared itemised "
+                        "(ITEMISED), so that identify bounds the offset by its vented reading")
     parser.add_argument("--out", type=Path, help="write the rows and provenance as JSON here")
     args = parser.parse_args()
+    if args.itemised and not args.wrong_bench:
+        parser.error("--itemised needs --wrong-bench")
     rng = np.random.default_rng(args.seed)
     bench_rng = np.random.default_rng([args.seed, 1])  # the muscles as without --wrong-bench
+    monitor_rng = np.random.default_rng([args.seed, 2])  # the benches as without --itemised
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for draw in range(args.draws):
             truth = {"theta0_deg": rng.uniform(28.0, 36.0), "rubber_scale": rng.uniform(0.8, 1.5),
                      "gap_mm": rng.uniform(0.4, 1.2)}
             bench = wrong_bench(bench_rng) if args.wrong_bench else None
-            runs = simulate(truth, Path(tmp) / f"draw{draw}", seed=10 * draw, bench=bench)
+            if args.itemised:
+                bench.update(itemised_monitor(monitor_rng))
+            runs = simulate(truth, Path(tmp) / f"draw{draw}", seed=10 * draw, bench=bench,
+                            regulator=ITEMISED if args.itemised else None)
             for model in MODELS:
                 wall, cpu = time.perf_counter(), time.process_time()
                 # in this process (no local cluster), so that its CPU time is all of it
@@ -145,7 +174,9 @@ def main() -> None:
                 print(pd.DataFrame(rows[-1:]).to_string(index=False), flush=True)
     if args.out:
         write_json_atomic(args.out, {**provenance(), "seed": args.seed, "params": args.params,
-                                     "wrong_bench": args.wrong_bench, "rows": rows})
+                                     "wrong_bench": args.wrong_bench,
+                                     "itemised": ITEMISED if args.itemised else None,
+                                     "rows": rows})
 
 
 if __name__ == "__main__":
