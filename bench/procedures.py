@@ -21,7 +21,13 @@ from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
-from mkm.bench.sequence import rest_warning, settle_warning, validate_tare
+from mkm.bench.sequence import (
+    monitor_zero_warning,
+    rest_warning,
+    settle_warning,
+    validate_tare,
+    vented_monitor,
+)
 from mkm.bench.sim import STANDARD_GRAVITY
 from mkm.bench.unvented import STATE_START_S, StateFolderThread, state_dir, vent_unvented
 from mkm.bench.vent import reading_bar, verify_vent
@@ -74,11 +80,14 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     device = make_backend(config, clock)
     with session(device, "tare") as info:
         device.start()
-        cell_V = mean_volts(device, config, seconds)[:, 0]
-    out = validate_tare(cell_V, config)
+        volts = mean_volts(device, config, seconds)
+    out = validate_tare(volts[:, 0], config)
+    if config.regulator.electronic:
+        out.update(vented_monitor(config.regulator.monitor_bar(volts[:, 1])))
     return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict(),
             "settle_warning": settle_warning(out["std_N"], config),
-            "rest_warning": rest_warning(out, config)}
+            "rest_warning": rest_warning(out, config),
+            "monitor_warning": monitor_zero_warning(out, config)}
 
 
 def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual",

@@ -58,6 +58,44 @@ def settle_warning(tare_std_N: float, config: BenchConfig) -> str:
             "at a safe point, vented)")
 
 
+#: the halves of a vented reading differ by more than this many standard errors: still falling
+VENTED_HALVES_SE = 4.0
+
+
+def vented_monitor(monitor_bar) -> dict:
+    """The pressure monitor's zero as the tare reads it, vented: ``monitor_vented_bar``, the mean
+    of the tare's second half (the first lets a muscle still deflating empty), its standard
+    error ``monitor_vented_se_bar``, and ``monitor_vented_settled``, False when the halves
+    differ by more than :data:`VENTED_HALVES_SE` standard errors (the pressure still falling:
+    no zero). Empty with fewer than 4 finite readings."""
+    p = np.asarray(monitor_bar, dtype=float)
+    p = p[np.isfinite(p)]
+    if p.size < 4:
+        return {}
+    first, second = p[: p.size // 2], p[p.size // 2:]
+    se = float(second.std(ddof=1) / np.sqrt(second.size))
+    apart = math.hypot(first.std(ddof=1) / np.sqrt(first.size), se)
+    settled = bool(abs(first.mean() - second.mean()) <= VENTED_HALVES_SE * max(apart, 1e-12))
+    return {"monitor_vented_bar": float(second.mean()), "monitor_vented_se_bar": se,
+            "monitor_vented_settled": settled}
+
+
+def monitor_zero_warning(tare: dict, config: BenchConfig) -> str:
+    """What a monitor reading vented further from 0 than its declared offset bound
+    (:meth:`mkm.bench.config.Regulator.reading_bounds`, beyond 3 standard errors) means, or
+    ""."""
+    if not tare.get("monitor_vented_settled"):
+        return ""
+    mean, se = tare["monitor_vented_bar"], tare["monitor_vented_se_bar"]
+    bound = config.regulator.reading_bounds()[0]
+    if abs(mean) <= bound + 3.0 * se:
+        return ""
+    return (f"the pressure monitor reads {mean:+.4f} bar vented, beyond the +-{bound:g} bar its "
+            "configuration declares ([regulator] monitor_accuracy_bar or its components): its "
+            "zero is off, or the muscle is not open to the air; every pressure of this run is "
+            "read from that zero")
+
+
 class TareInvalid(BenchError):
     """The tare at 0 bar is not usable: the run must not start."""
 
@@ -213,12 +251,16 @@ class Staircase:
     def tare(self) -> None:
         self.acq.set_pressure(0.0, "vent", self.operator)
         volts: list[float] = []
-        self.acq.acquire_for(self.config.sequence.tare_s, "tare", -1, 0.0, volts)
+        monitor: list[float] = []
+        self.acq.acquire_for(self.config.sequence.tare_s, "tare", -1, 0.0, volts, monitor)
         tare = validate_tare(volts, self.config)
+        if self.config.regulator.electronic:  # a manual regulator's readings are typed
+            tare.update(vented_monitor(monitor))
         self.acq.tare_offset_V = tare["offset_V"]
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
         for warning in (rest_warning(tare, self.config),
-                        settle_warning(tare["std_N"], self.config)):
+                        settle_warning(tare["std_N"], self.config),
+                        monitor_zero_warning(tare, self.config)):
             if warning:
                 self.notify(f"warning: {warning}")
 

@@ -448,10 +448,13 @@ class Acquisition:
                                     f": {pressure_bar:g} bar not commanded")
 
     def acquire_for(self, duration_s: float, phase: str, step: int, set_bar: float,
-                    cell_volts: list | None = None) -> None:
-        """Read for ``duration_s`` of sample time; collect the load-cell volts if asked."""
+                    cell_volts: list | None = None, monitor_bar: list | None = None) -> None:
+        """Read for ``duration_s`` of sample time; collect the load-cell volts and the monitor's
+        readings if asked."""
         end_index = self.next_index + int(round(duration_s * self.rate_hz))
         while self.next_index < end_index:
             for row in self.read_block(phase, step, set_bar):
                 if cell_volts is not None:
                     cell_volts.append(row.loadcell_V)
+                if monitor_bar is not None:
+                    monitor_bar.append(row.pressure_bar)

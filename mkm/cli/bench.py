@@ -234,7 +234,11 @@ def _tare(args) -> int:
     print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
           f"{out['std_N']:.2f} N, n = {out['n']}); {out['shift_from_config_N']:+.2f} N from the "
           "config's offset_V")
-    for warning in filter(None, (out["rest_warning"], out["settle_warning"])):
+    if out.get("monitor_vented_settled"):
+        print(f"pressure monitor {out['monitor_vented_bar']:+.4f} bar vented "
+              f"(+-{out['monitor_vented_se_bar']:.1g} bar standard error)")
+    for warning in filter(None, (out["rest_warning"], out["settle_warning"],
+                                 out["monitor_warning"])):
         print(f"mkm tare: warning: {warning}", file=sys.stderr)
     return 0
 

@@ -195,31 +195,23 @@ def load_run_data(path) -> RunData:
     muscle = _muscle(run)
     tare = samples.loc[samples["phase"] == "tare", "force_N"].to_numpy(dtype=float)
     tare_se = float(np.std(tare, ddof=1) / np.sqrt(tare.size)) if tare.size > 1 else 0.0
-    instrument = _instrument(run)
     sha = {name: file_sha256(path / name) for name in ("steps.csv", "samples.csv")
            if (path / name).is_file()}
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
                    timed=imported.get("shape") != "ramp",
-                   vented_bar=_vented(samples, run) if not imported else None, **instrument)
+                   vented_bar=_vented(run), **_instrument(run))
 
 
-def _vented(samples: pd.DataFrame, run) -> tuple[float, float] | None:
-    """The mean of the monitor's readings during the tare, when the regulator is commanded to
-    0 bar and the muscle open to the air, and its standard error [bar]: the monitor's zero as
-    measured. None for a manual regulator (its readings are typed, not read) or fewer than two
-    readings."""
-    regulator = run.meta.calibration.get("regulator") or {}
-    if regulator.get("kind", "electronic") != "electronic":
+def _vented(run) -> tuple[float, float] | None:
+    """The monitor's zero as the run's tare read it vented, and its standard error [bar]
+    (:func:`mkm.bench.sequence.vented_monitor`); None where the tare recorded none (a manual
+    regulator, an imported table) or the pressure was still falling."""
+    tare = run.meta.tare or {}
+    if not tare.get("monitor_vented_settled"):
         return None
-    vented = samples["phase"] == "tare"
-    if "command_bar" in samples:
-        vented &= samples["command_bar"] == 0
-    reading = samples.loc[vented, "pressure_bar"].to_numpy(dtype=float)
-    if reading.size < 2:
-        return None
-    return float(reading.mean()), float(reading.std(ddof=1) / np.sqrt(reading.size))
+    return float(tare["monitor_vented_bar"]), float(tare["monitor_vented_se_bar"])
 
 
 def _columns(steps: pd.DataFrame, *extra: str) -> pd.DataFrame:

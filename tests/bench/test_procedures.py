@@ -54,6 +54,12 @@ def test_tare_on_the_sim(config):
     assert out["settle_warning"] == ""  # 0.4 N rms: steps settle under the 1.5 N limit
     noisy = tare(config.replace(sim={"noise_V": 0.02}), seconds=10.0)  # inside the tare limit
     assert noisy["settle_warning"].startswith(f"the load cell spreads {noisy['std_N']:.2f} N rms")
+    # vented, the monitor reads its zero (the sim's: 0, 1 mbar noise over root 50 readings)
+    assert out["monitor_vented_settled"] and abs(out["monitor_vented_bar"]) < 0.002
+    assert out["monitor_warning"] == ""
+    off = tare(config.replace(sim={"truth": {"monitor_offset_bar": 0.046}}), seconds=10.0)
+    assert off["monitor_vented_bar"] == pytest.approx(0.046, abs=0.002)
+    assert "vented, beyond the +-0.04 bar" in off["monitor_warning"]
 
 
 def test_check_lists_device_steps_and_duration(config):

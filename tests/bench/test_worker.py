@@ -216,6 +216,41 @@ def test_a_cell_noisier_than_the_settle_limit_is_said_at_the_tare(config, tmp_pa
     assert not any("settle.max_force_std_N" in m for m in quiet)
 
 
+def test_the_tare_reads_the_monitors_zero_and_says_one_beyond_its_bound(config, tmp_path):
+    # vented, the true pressure is 0: the monitor reads its offset, within its 1 mV (1 mbar)
+    # noise over root 25 readings of the tare's second half
+    small = config.replace(sequence={"pressures_bar": (0.5,), "down_sweep": False,
+                                     "preconditioning_cycles": 0})
+    said = []
+    run = load_run(acquire(small.replace(sim={"truth": {"monitor_offset_bar": 0.046}}),
+                           out_root=tmp_path, notify=said.append).path)
+    tare = run.meta.tare
+    assert tare["monitor_vented_settled"]
+    assert 0.0001 < tare["monitor_vented_se_bar"] < 0.0004
+    # the simulated monitor's default hysteresis: half of it below on a falling branch
+    assert tare["monitor_vented_bar"] == pytest.approx(0.046, abs=0.002)
+    warning = [m for m in said if "vented, beyond the +-0.04 bar" in m]
+    assert len(warning) == 1 and re.search(r"reads \+0\.04[4-8]\d* bar", warning[0])
+    quiet = []
+    run = load_run(acquire(small, out_root=tmp_path, notify=quiet.append).path)
+    assert abs(run.meta.tare["monitor_vented_bar"]) < 0.003
+    assert not any("vented, beyond" in m for m in quiet)
+
+
+def test_a_pressure_still_falling_at_the_tare_gives_no_zero():
+    from mkm.bench.sequence import vented_monitor
+
+    rng = np.random.default_rng(0)
+    noise = rng.normal(0.0, 0.001, 50)
+    at_rest = vented_monitor(0.01 + noise)
+    assert at_rest["monitor_vented_settled"]
+    assert at_rest["monitor_vented_bar"] == pytest.approx(0.01, abs=0.001)
+    # a muscle emptying through the vent (time constant 2 s, 10 Hz) during the tare
+    falling = vented_monitor(0.01 + 0.3 * np.exp(-np.arange(50) / 20.0) + noise)
+    assert not falling["monitor_vented_settled"]
+    assert vented_monitor([0.0, np.nan, 0.0]) == {}
+
+
 def test_samples_read_late_are_judged_against_the_command_they_were_acquired_under(config,
                                                                                    tmp_path):
     # A 6 s stall at 1.0 s: the 0.5 bar command, written when the reader reaches 2.0 s, acts
