@@ -45,7 +45,8 @@ from mkm.identify.runs import offset_search_bar
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
 ORDER = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm", "gap_mm",
-         "pressure_offset_bar", "hysteresis_fraction", "creep_fraction", "log_tau")
+         "pressure_offset_bar", "pressure_hysteresis_bar", "hysteresis_fraction",
+         "creep_fraction", "log_tau")
 #: the parameters of the static force (the rest are friction, creep and the monitor)
 STATIC_NAMES = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm",
                 "gap_mm")
@@ -122,9 +123,9 @@ def internal_values(values: dict[str, float]) -> dict[str, float]:
 
 def _optional(values: dict) -> dict:
     """The values fitted only when asked (a gap, the wall, the diameter, the rest length, the
-    monitor offset)."""
-    return {k: values[k] for k in ("gap_mm", *GEOMETRY, "L0_mm", "pressure_offset_bar")
-            if k in values}
+    monitor's offset and hysteresis)."""
+    return {k: values[k] for k in ("gap_mm", *GEOMETRY, "L0_mm", "pressure_offset_bar",
+                                   "pressure_hysteresis_bar") if k in values}
 
 
 def geometry(run, values: dict) -> tuple[float, float, float]:
@@ -162,9 +163,10 @@ class StaticSource:
 
 class ModelStatic(StaticSource):
     """A registry spec (``axisym``, ``axisym:mesh=coarse``, ``thickwall``) solved at each run's
-    set pressures and length: the runs' sweeps of one call together on the FE batch runner
-    ``runner`` (:func:`mkm.prediction_cache.predict_many`: local workers or a Dask cluster),
-    through the prediction cache ``cache_dir`` (a repeated identification solves nothing
+    holds' true pressures (:meth:`mkm.identify.runs.RunData.table_pressures`) and length: the
+    runs' sweeps of one call together on the FE batch runner ``runner``
+    (:func:`mkm.prediction_cache.predict_many`: local workers or a Dask cluster), through the
+    prediction cache ``cache_dir`` (a repeated identification solves nothing
     again; None: no cache)."""
 
     def __init__(self, spec: str, runner=None, cache_dir=DEFAULT_CACHE_DIR):
@@ -196,7 +198,7 @@ class ModelStatic(StaticSource):
 
     def tables(self, runs, values):
         models = {L0: self.model(values, L0) for L0 in by_length(runs)}
-        grids = [run.table_pressures() for run in runs]
+        grids = [run.table_pressures(values) for run in runs]
         solved = predict_many([(models[float(run.muscle["L0_mm"])], grid,
                                 *geometry(run, values))
                                for grid, run in zip(grids, runs, strict=True)], self.cache_dir,
@@ -212,7 +214,8 @@ class ModelStatic(StaticSource):
 
 
 class SurrogateStatic(StaticSource):
-    """The surrogate, tabulated every :data:`TABLE_STEP_BAR` over each run's pressures."""
+    """The surrogate, tabulated every :data:`TABLE_STEP_BAR` over each run's pressures and at
+    its holds' true pressures."""
 
     def __init__(self, surrogate):
         from mkm.surrogate.kinds import BEST
@@ -258,8 +261,11 @@ class SurrogateStatic(StaticSource):
             model = self.surrogate.with_parameters(
                 L0_mm=values.get("L0_mm", L0_mm), theta0_deg=float(values["theta0_deg"]),
                 C10_MPa=C10, C01_MPa=C01)
-            grids = [np.arange(0.0, min(top, runs[k].pressure_bar.max()) + TABLE_STEP_BAR,
-                               TABLE_STEP_BAR).clip(max=top) for k in members]
+            # and at the holds' own pressures: exact there, near a threshold too
+            grids = [np.unique(np.r_[np.arange(0.0, min(top, runs[k].pressure_bar.max())
+                                               + TABLE_STEP_BAR, TABLE_STEP_BAR),
+                                     runs[k].table_pressures(values)].clip(max=top))
+                     for k in members]
             P = np.concatenate(grids)
             columns = zip(*(geometry(runs[k], values) for k in members), strict=True)
             geom = [np.concatenate([np.full(g.size, v) for g, v in
@@ -301,14 +307,10 @@ def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tup
 
 
 def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
-    """The model's force trace [N] at every sample of each run (the static force at the true
-    pressure: the reading less the monitor's offset, over its gain ``pressure_gain``, 1 unless
-    a sensitivity is taken)."""
+    """The model's force trace [N] at every sample of each run: the static force at the true
+    pressure (:meth:`mkm.identify.runs.RunData.true_pressure_bar`), with friction and creep."""
     tables = source.tables(runs, values)
-    offset = values.get("pressure_offset_bar", 0.0)
-    gain = values.get("pressure_gain", 1.0)
-    return [force_history(run.time_s, np.interp((run.pressure_bar - offset) / gain,
-                                                *tables[k]),
+    return [force_history(run.time_s, np.interp(run.true_pressure_bar(values), *tables[k]),
                           values["hysteresis_fraction"], values["creep_fraction"],
                           math.exp(values["log_tau"]))
             for k, run in enumerate(runs)]
@@ -319,11 +321,14 @@ def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float
     diameter within :data:`GEOMETRY_FACTORS` and the rest length from the longest held length
     to :data:`REST_LENGTH_FACTOR` of the declared one (inside the source's box), the monitor's
     offset within its declared bound (the smallest of the runs') or about its vented reading
-    (:func:`mkm.identify.runs.offset_search_bar`)."""
+    (:func:`mkm.identify.runs.offset_search_bar`), how far each branch's reading is off
+    within half the monitor's declared hysteresis."""
     if name == "c01_fraction":
         return source.share_bounds(start["rubber_scale"])
     if name == "pressure_offset_bar":
         return offset_search_bar(runs)
+    if name == "pressure_hysteresis_bar":
+        return (0.0, min(run.monitor_hysteresis_bar for run in runs) / 2)
     if name in GEOMETRY_FACTORS or name == "L0_mm":
         declared = float(runs[0].muscle[name])
         if name == "L0_mm":

@@ -7,7 +7,7 @@ fitting library."""
 GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",), "t0": ("t0_mm",),
           "D0": ("D0_mm",), "friction": ("hysteresis_fraction",),
           "creep": ("creep_fraction", "log_tau"), "gap": ("gap_mm",),
-          "offset": ("pressure_offset_bar",), "L0": ("L0_mm",)}
+          "offset": ("pressure_offset_bar", "pressure_hysteresis_bar"), "L0": ("L0_mm",)}
 #: what ``--params`` fits when not given: the wall, the diameter and a gap only when asked
 DEFAULT_GROUPS = ("theta0", "rubber", "friction", "creep", "offset")
 #: what searches the optimum: the surrogate (the FE model where its box ends) or --model itself

@@ -235,7 +235,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     L0_mm = float(runs[0].muscle["L0_mm"])
     nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
                                      .params()["theta0_deg"])
-    names = [n for g in groups for n in GROUPS[g]]
+    # a monitor's hysteresis where it is declared (its bound is half of that)
+    names = [n for g in groups for n in GROUPS[g] if n != "pressure_hysteresis_bar"
+             or min(r.monitor_hysteresis_bar for r in runs) > 0]
     notes = list(notes)
     source = fe
     if search == "surrogate" and "gap_mm" in names:
@@ -473,11 +475,15 @@ def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
     and diameter where not fitted (their declared tolerances, the largest of the runs'), and
     the pressure monitor's gain (its declared span error, or its one accuracy reached at the
     regulator's top pressure: the offset is fitted, a reading error growing with the pressure
-    is not). The data see
-    these only through the other parameters: the intervals carry them."""
+    is not) and, where not fitted, its declared hysteresis (each branch's reading off by half of
+    it, in opposite directions). The data see these only through the other parameters: the
+    intervals carry them."""
     bounds = {n: (max(r.geometry_tolerance_mm.get(n, 0.0) for r in runs),
                   float(runs[0].muscle[n])) for n in fitting.GEOMETRY if n not in best.names}
     bounds["pressure_gain"] = (min(r.monitor_gain_bound for r in runs), 1.0)
+    if "pressure_hysteresis_bar" not in best.names:
+        bounds["pressure_hysteresis_bar"] = (max(r.monitor_hysteresis_bar for r in runs) / 2,
+                                             0.0)
     holds = [run.hold >= 0 for run in runs]
     out, base = {}, None
     for name, (half, at) in bounds.items():

@@ -73,6 +73,9 @@ class RunData:
     #: the monitor's declared zero error [bar] where its data sheet is itemised (``[regulator]
     #: monitor_zero_bar``; None: one accuracy, whose share at zero nobody declared)
     monitor_zero_bound_bar: float | None = None
+    #: the monitor's declared hysteresis [bar] (``[regulator] monitor_hysteresis_bar``: the
+    #: largest gap between its rising and falling readings; 0 where not declared)
+    monitor_hysteresis_bar: float = 0.0
     #: the monitor's readings while the run was vented to tare the load cell: their mean and
     #: its standard error [bar] (None: no such readings, an imported run or a typed manometer)
     vented_bar: tuple[float, float] | None = None
@@ -93,9 +96,21 @@ class RunData:
         """``(D0_mm, t0_mm, eps)``: what a force model's predict takes besides the pressure."""
         return float(self.muscle["D0_mm"]), float(self.muscle["t0_mm"]), self.eps
 
-    def table_pressures(self) -> np.ndarray:
-        """0 bar and the settled steps' set pressures: where the FE model is solved."""
-        return np.unique(np.r_[0.0, self.steps["set_pressure_bar"].to_numpy(dtype=float)])
+    def true_pressure_bar(self, values: dict) -> np.ndarray:
+        """The true pressure [bar] at every sample as the monitor's reading gives it at the
+        internal ``values``: less its offset ``pressure_offset_bar``, plus
+        ``pressure_hysteresis_bar`` in a rising hold (where it reads low) and less it in a
+        falling one, over its gain ``pressure_gain`` (1 unless a sensitivity is taken)."""
+        return ((self.pressure_bar - values.get("pressure_offset_bar", 0.0)
+                 + values.get("pressure_hysteresis_bar", 0.0) * self.branch_sign())
+                / values.get("pressure_gain", 1.0))
+
+    def table_pressures(self, values: dict) -> np.ndarray:
+        """0 bar and the settled holds' true pressures at ``values`` (:meth:`true_pressure_bar`):
+        where a model is solved, so that a hold's force is the model's there, not an
+        interpolation across a threshold between two set pressures."""
+        held = self.true_pressure_bar(values)[self.hold >= 0]
+        return np.unique(np.r_[0.0, np.maximum(held, 0.0)])
 
     def declared_noise_N(self) -> np.ndarray | None:
         """Each step's noise [N] from the bounds its lab declared (an imported table or ramp,
@@ -107,6 +122,13 @@ class RunData:
             return None
         pressure_u = np.nan_to_num(self.steps["pressure_u_bar"].to_numpy(dtype=float))
         return np.sqrt(force_u**2 + (step_slopes(self.steps) * pressure_u) ** 2)
+
+    def branch_sign(self) -> np.ndarray:
+        """Per sample: +1 in the hold of a rising step, -1 of a falling one, 0 elsewhere (the
+        side of a monitor's hysteresis its reading is on)."""
+        rising = (self.steps["direction"] == "up").to_numpy()
+        sign = np.where(rising, 1.0, -1.0)[np.maximum(self.hold, 0)]
+        return np.where(self.hold >= 0, sign, 0.0)
 
     def step_means(self, force_N: np.ndarray) -> np.ndarray:
         """The mean of a force trace over each settled step's hold [N]."""
@@ -242,6 +264,8 @@ def _instrument(run) -> dict:
     offset, gain = regulator.reading_bounds()
     out = {"monitor_offset_bound_bar": offset, "monitor_gain_bound": gain,
            "monitor_zero_bound_bar": regulator.monitor_components.get("monitor_zero_bar"),
+           "monitor_hysteresis_bar": regulator.monitor_components.get("monitor_hysteresis_bar",
+                                                                      0.0),
            "sensitivity_tolerance": recorded["loadcell"].get(
                "sensitivity_tolerance_fraction", LoadCell.sensitivity_tolerance_fraction),
            "instrument_declared": ("monitor_accuracy_bar" in recorded["regulator"]

@@ -82,6 +82,22 @@ def test_a_monitor_offset_is_a_misfit_named_in_one_line(offset):
     assert good.birge_ratio == pytest.approx(math.sqrt(good.reduced))
 
 
+def test_a_fitted_monitor_offset_leaves_only_the_noise(offset):
+    # the same runs with the offset fitted: the model is the simulator's again. Each hold is
+    # read 0.03 bar above the truth, so its true pressure lies between two set pressures; at
+    # eps 0.122 the 0.5 bar hold is just above the threshold (about 0.44 bar), where a force
+    # interpolated between the set pressures would miss by newtons
+    runs, _ = offset
+    source = ModelStatic("thickwall", float(runs[0].muscle["L0_mm"]), cache_dir=None)
+    start = {**fitting.nominal_values(33.0), "hysteresis_fraction": 0.02,
+             "creep_fraction": 0.01, "pressure_offset_bar": 0.0}
+    fit = fitting.fit(source, runs, (*NAMES, "pressure_offset_bar"), start)
+    good = goodness.assess(runs, fit)
+    assert 0.3 < good.reduced < 2.0, good.record()
+    # the offset within the noise of the threshold's steps (0.1 N at ~200 N/bar: 0.5 mbar)
+    assert fit.values["pressure_offset_bar"] == pytest.approx(0.03, abs=0.002)
+
+
 def test_a_misfit_names_the_friction_and_creep_the_runs_show_and_the_fit_left_out(in_family):
     # the simulator's friction (3 % of the force between the branches) and creep are far
     # beyond the steps' noise (0.1 N): a fit of theta0 and the rubber alone misfits, and the

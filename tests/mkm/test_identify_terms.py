@@ -6,15 +6,17 @@ linear in its parameter."""
 
 from __future__ import annotations
 
-from types import SimpleNamespace
+from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 
 from mkm.identify import fitting
 from mkm.identify.fitting import Fit, StaticSource
 from mkm.identify.intervals import bootstrap, extend
 from mkm.identify.procedure import _shift, _with_braid
+from mkm.identify.runs import RunData
 
 
 def linear_fit(x, a=2.0, name="theta0_deg") -> Fit:
@@ -73,8 +75,9 @@ def test_the_refit_shift_of_a_static_force_change_is_the_gauss_newton_step():
     # a by -d (exact: linear model);
     # the shift is -(J'J)^-1 J' dr with dr the change at the hold samples
     P = np.linspace(0.2, 2.4, 12)
-    run = SimpleNamespace(time_s=np.arange(P.size, dtype=float), pressure_bar=P,
-                          hold=np.arange(P.size))
+    run = RunData(path=Path("line"), muscle={}, time_s=np.arange(P.size, dtype=float),
+                  pressure_bar=P, force_N=np.zeros(P.size), hold=np.arange(P.size),
+                  steps=pd.DataFrame({"direction": ["up"] * 6 + ["down"] * 6}), sha256={})
     values = {**fitting.nominal_values(2.0), "hysteresis_fraction": 0.0, "creep_fraction": 0.0}
     fit = linear_fit(P, a=2.0)
     fit.values.update(values)
@@ -85,6 +88,9 @@ def test_the_refit_shift_of_a_static_force_change_is_the_gauss_newton_step():
     traced = fitting.traces(Line(), [run], {**fit.values, "pressure_gain": 1.01,
                                             "pressure_offset_bar": 0.02})[0]
     assert traced == pytest.approx(2.0 * (P - 0.02) / 1.01)
+    # its hysteresis: the reading low by it on the rising steps, high on the falling ones
+    traced = fitting.traces(Line(), [run], {**fit.values, "pressure_hysteresis_bar": 0.01})[0]
+    assert traced == pytest.approx(2.0 * (P + 0.01 * np.r_[np.ones(6), -np.ones(6)]))
 
 
 def test_a_known_braid_needs_a_model_with_the_option():

@@ -32,7 +32,7 @@ ITEMISED = {"monitor_zero_bar": 0.03, "monitor_span_fraction": 0.004,
             "monitor_nonlinearity_bar": 0.002, "monitor_hysteresis_bar": 0.002}
 
 
-def simulated(tmp_path_factory, regulator: dict, offset_bar: float) -> list:
+def simulated(tmp_path_factory, regulator: dict, offset_bar: float, **truth) -> list:
     out = tmp_path_factory.mktemp("vented")
     paths = []
     for k, eps in enumerate((0.0, 0.122)):
@@ -41,7 +41,7 @@ def simulated(tmp_path_factory, regulator: dict, offset_bar: float) -> list:
             sequence={"pressures_bar": (0.25, 0.5, 1.0, 1.5, 2.0, 2.5),
                       "preconditioning_cycles": 0},
             sim={"model": "thickwall", "seed": 31 + k,
-                 "truth": {"monitor_offset_bar": offset_bar}})
+                 "truth": {"monitor_offset_bar": offset_bar, **truth}})
         result = acquire(config, out_root=out, notify=lambda message: None)
         assert result.status == "complete"
         remove_simulator_settings(result.path)
@@ -94,3 +94,22 @@ def test_a_vented_reading_beyond_the_declared_bound_is_said(tmp_path_factory):
     note = vented_beyond_bound(runs)
     assert note is not None and "+-0.04 bar" in note
     assert re.search(r"read \+0\.04[5-7]\d* bar vented", note), note
+
+
+def test_a_declared_monitor_hysteresis_is_fitted_within_half_of_it(tmp_path_factory):
+    # the monitor reads 2 mbar low on a rising step and 2 mbar high on a falling one (0.004 bar
+    # between its branches, as declared): at ~400 N/bar that is 0.8 N, ten times a step's
+    # noise, which the braid's friction (a share of the force) cannot take up
+    runs = simulated(tmp_path_factory, {**ITEMISED, "monitor_hysteresis_bar": 0.004},
+                     OFFSET_BAR, monitor_hysteresis_bar=0.004)
+    found = identify(runs, model="thickwall", search="model", cache_dir=None, workers=1)
+    assert not found.goodness.misfit and found.goodness.reduced < 2.0
+    table = found.parameters().set_index("parameter")
+    value, low, high = table.loc["pressure_hysteresis_bar", ["value", "ci_low", "ci_high"]]
+    assert low <= 0.002 <= high and value == pytest.approx(0.002, abs=0.0005)
+    low, high = table.loc["pressure_offset_bar", ["ci_low", "ci_high"]]
+    assert low <= OFFSET_BAR <= high
+    # where no hysteresis is declared, none is fitted
+    assert "pressure_hysteresis_bar" not in identify(
+        simulated(tmp_path_factory, {}, OFFSET_BAR), model="thickwall", search="model",
+        cache_dir=None, workers=1).fit.names
