@@ -85,7 +85,8 @@ def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
 
     Computed once per muscle and model in a process (an FE sweep takes about a second); a
     sample then costs one linear interpolation (``n`` points over full scale, 0.05 bar on a
-    4 bar regulator: the FE force is smooth). The table reaches the highest pressure the
+    4 bar regulator: the FE force is smooth above its threshold, which is a knot of its own).
+    The table reaches the highest pressure the
     regulator can deliver: a sensor reading low (offset, gain, bow, hysteresis) or an overshoot
     puts the muscle above full scale, and an interpolation clamped at full scale would hold its
     force there.
@@ -125,6 +126,14 @@ def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, top_bar, n):
     pressure_bar = np.linspace(0.0, top_bar, n)
     prediction = model.predict(pressure_bar, D0_mm, t0_mm, eps)
     force = np.where(prediction.valid, prediction.force_N, 0.0)
+    # the force starts at the threshold with a kink: a knot there, or a hold just above it
+    # would read a force interpolated across the kink
+    threshold = np.asarray(prediction.extras.get("threshold_pressure_bar", np.nan), dtype=float)
+    threshold = threshold[np.isfinite(threshold)]
+    if threshold.size and 0.0 < threshold[0] < top_bar and threshold[0] not in pressure_bar:
+        at = np.searchsorted(pressure_bar, threshold[0])
+        pressure_bar = np.insert(pressure_bar, at, threshold[0])
+        force = np.insert(force, at, 0.0)
     pressure_bar.flags.writeable = False
     force = np.maximum(force, 0.0)
     force.flags.writeable = False

@@ -103,6 +103,24 @@ def test_a_gap_truth_is_the_thick_wall_muscle_with_that_gap(config):
         config.replace(sim={"model": "eq2", "truth": {"gap_mm": 0.8}})
 
 
+def test_a_hold_just_above_the_threshold_reads_the_models_force(config):
+    # at eps 0.122 the thick-wall threshold lies between two of the table's 0.05 bar points:
+    # a knot there keeps the kink, so the force just above it is the model's, not a line
+    # drawn from the grid point below it
+    short = quiet(config.replace(muscle={"eps": 0.122}), model="thickwall")
+    m = short.muscle
+    model = make_model("thickwall", L0_mm=m.L0_mm)
+    threshold = float(model.predict(1.0, m.D0_mm, m.t0_mm, m.eps)
+                      .extras["threshold_pressure_bar"])
+    assert 0.3 < threshold < 0.6 and not np.isclose(threshold % 0.05, 0.0)
+    pressure, force = static_force_table(short)
+    assert threshold in pressure and force[pressure <= threshold].max() == 0.0
+    P = threshold + np.array([0.005, 0.01, 0.02, 0.04])
+    exact = model.predict(P, m.D0_mm, m.t0_mm, m.eps).force_N
+    # the thick-wall force is close to linear above its threshold: within 1 % of it there
+    np.testing.assert_allclose(np.interp(P, pressure, force), exact, rtol=0.01)
+
+
 def settled(config, pressure_bar: float = 2.0):
     """The bench after 10 s at ``pressure_bar``: (load-cell V, monitor V) and the bench."""
     bench = SimMuscleBench(config)
