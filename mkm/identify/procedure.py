@@ -9,7 +9,8 @@
    the difference the FE shows there and the fit repeated on the corrected force.
 4. 95 % intervals and correlation by a bootstrap over steps (:mod:`mkm.identify.intervals`),
    with what every step shares inside: the load cell's declared tolerance, the monitor
-   offset's prior and its gain, the declared wall and diameter within their tolerances
+   offset's prior, its gain and its declared hysteresis where not fitted, the declared wall
+   and diameter within their tolerances
    (:func:`shared_terms`); what the runs cannot separate (a note only where it makes an
    interval wide: :data:`PRECISION`); the goodness of fit (:mod:`mkm.identify.goodness`): a
    misfit beyond the steps' noise is named in one line and widens the intervals; the
