@@ -25,7 +25,8 @@ Safety, in every exit path:
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``, and a
-  monitor the pressure interlock found below its command must have read more than that before
+  monitor found below its command before the vent (by the pressure interlock, or in its last
+  reading before a stop, another interlock or a fault) must have read more than that before
   the vent (one stuck at zero reads 0 bar whatever the muscle holds); if not, the run is
   ``failed``, asks for a VENT BY HAND and its bench marker stays;
 - a closed Windows console leaves seconds before the process is ended: the run vents, writes
@@ -585,9 +586,10 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
-        if self.vent_check is not None and acq is not None and acq.below_command is not None:
+        unproven = acq.unproven() if acq is not None else None
+        if self.vent_check is not None and unproven is not None:
             # a monitor that read nothing before the vent proves nothing by reading it after
-            self.vent_check = below_command(self.vent_check, *acq.below_command)
+            self.vent_check = below_command(self.vent_check, *unproven)
         if acq is not None and acq.interlock_vent_failed:  # said before: what came of it
             if self.vent_check is None:
                 problems.append("nothing verified a vent since: VENT BY HAND")

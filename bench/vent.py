@@ -10,8 +10,9 @@ never a vent, :meth:`mkm.bench.config.Regulator.monitor_fault`); with a manual r
 operator vents by hand and types the manometer reading, which must be below the same threshold.
 A check with a ``deadline`` (Windows ends a closed console's process within 5 s) stops at it,
 unverified, so the run can still be recorded. A monitor that already read below the threshold
-when the pressure interlock found it below its command (:func:`below_command`) verifies nothing:
-a monitor stuck at zero reads so whatever the muscle holds.
+when it was found below its command before the vent (:func:`below_command`; by the pressure
+interlock, or in its last reading before a stop) verifies nothing: a monitor stuck at zero reads
+so whatever the muscle holds.
 """
 
 from __future__ import annotations
@@ -58,8 +59,8 @@ class VentCheck:
 
 
 def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -> VentCheck:
-    """``check`` after the pressure interlock tripped with the monitor reading ``measured_bar``
-    below ``commanded_bar``.
+    """``check`` after the monitor read ``measured_bar`` below ``commanded_bar`` before the
+    vent (:meth:`mkm.bench.worker.Acquisition.unproven`).
 
     A monitor that read below the vent threshold then, and reads below it after the vent, has
     shown no fall: a monitor stuck at zero reads so whatever the muscle holds, so the check is

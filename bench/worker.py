@@ -121,6 +121,9 @@ class Acquisition:
         # (measured, commanded) [bar] when the follow interlock tripped with the pressure below
         # a pressure commanded: the vent check weighs the monitor's readings by it
         self.below_command: tuple[float, float] | None = None
+        # (measured, commanded) [bar] of the last plausible sample acquired under a pressure
+        # commanded (see :meth:`unproven`)
+        self._pressurised: tuple[float, float] | None = None
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
         # the measured pressure has been off its command, and not moved towards it by more than
@@ -250,8 +253,11 @@ class Acquisition:
         monitor_V = float(volts[1]) if self.electronic else math.nan
         pressure = float(reg.monitor_bar(monitor_V)) if self.electronic else self.manometer_bar
         force = (cell_V - self.tare_offset_V) * self.cell.sensitivity_N_per_V
+        commanded = self._commanded_at(index) if self.electronic else math.nan
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
             self.measured_bar = pressure
+            if commanded > 0 and phase != "vent":  # the vent check's come after the vent
+                self._pressurised = (pressure, commanded)
         flags, self._pending_flags = self._pending_flags, []
         if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
             flags.append("nonfinite")
@@ -267,8 +273,7 @@ class Acquisition:
             if trip:
                 flags.append("interlock")
                 trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
-        return Sample(index, index / self.rate_hz, step, phase, set_bar,
-                      self._commanded_at(index) if self.electronic else math.nan, pressure,
+        return Sample(index, index / self.rate_hz, step, phase, set_bar, commanded, pressure,
                       cell_V, monitor_V, force, "|".join(flags))
 
     def _commanded_at(self, index: int) -> float:
@@ -370,6 +375,22 @@ class Acquisition:
             stop.__cause__ = exc
             return stop
         return Stop(status, f"{message}; vented")
+
+    def unproven(self) -> tuple[float, float] | None:
+        """(measured, commanded) [bar] by which the vent check weighs the monitor's readings
+        (:func:`mkm.bench.vent.below_command`): the follow interlock's, or, when a stop, another
+        interlock or a fault ended the run first, the last plausible reading acquired under a
+        pressure commanded if it was below that command by more than the tolerance (a monitor
+        frozen near zero reads so from the first sample; the run may end before the follow
+        interlock trips). None: the monitor followed its command."""
+        if self.below_command is not None:
+            return self.below_command
+        if self._pressurised is None:
+            return None
+        measured, commanded = self._pressurised
+        if commanded - measured > self.config.safety.pressure_tolerance_bar:
+            return measured, commanded
+        return None
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its

@@ -111,6 +111,57 @@ def test_a_monitor_frozen_at_zero_does_not_verify_the_vent(config, tmp_path, fro
     assert "proves nothing" in json.loads(marker.read_text())["vent_unverified"]
 
 
+@pytest.mark.parametrize("stop", ["Ctrl-C", "mkm vent asking"])
+def test_a_stop_before_the_follow_interlock_trips_does_not_verify_with_a_frozen_monitor(
+        config, tmp_path, stop):
+    # the monitor reads 0 bar whatever the pressure; the run is stopped at 4.5 s, 2.5 s into
+    # the 0.5 bar step, before the follow interlock's 5 s: the vent check read the same 0 bar
+    # and called the vent verified (exit 130, marker removed) while the muscle held 0.39 bar
+    c = config.replace(sim={"truth": {"monitor_stuck_bar": 0.0}})
+    backend = SimBackend(c)
+    read = backend.read
+
+    def stopped_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop(None if stop == "Ctrl-C" else "mkm vent (pid 1)")
+        return block
+
+    backend.read = stopped_at_45
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert "pressure interlock" not in result.reason  # the stop came first
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "0.5 bar commanded before the vent, so its reading after it proves nothing" \
+        in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
+    check = load_run(result.path).meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] == 0.5
+    # the truth: one 0.1 s sample of exhaust (tau 0.4 s) after the vent from 0.5 bar
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-0.25), abs=1e-3)
+    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked, unproven
+    assert json.loads(marker.read_text())["unfollowed_bar"] == 0.5
+
+
+def test_a_stop_with_a_following_monitor_verifies_the_vent(config, tmp_path):
+    # the same stop with a monitor that reads the 0.5 bar: its fall after the vent verifies it
+    backend = SimBackend(config)
+    read = backend.read
+
+    def stopped_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()
+        return block
+
+    backend.read = stopped_at_45
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert result.status == "aborted" and result.exit_code == 130, result.reason
+    check = load_run(result.path).meta.vent_check
+    assert check["verified"] and check["unfollowed_bar"] is None
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
