@@ -400,7 +400,8 @@ class BenchRun:
 
     def startup(self) -> None:
         info = self.backend.open()  # writes the vent command first
-        self.unvented = vent_unvented(self.backend, self._dead_runs)
+        self.unvented = vent_unvented(self.backend, self._dead_runs,
+                                      self.owner.on_state_folder)
         for marker in self.unvented:
             self.notify(marker.vented_now())
         # a stop signal while the folder is made waits until the run holds its recorder: the

@@ -14,8 +14,8 @@ opens a bench (``acquire``, ``check``, ``tare``, ``calibrate-loadcell``, ``vent`
 markers of that bench whose process is dead (on the bench owner's thread, at most
 :data:`STATE_START_S`: :meth:`mkm.bench.ownership.BenchOwner.dead_runs`): it vents (opening the
 device writes the vent command) and says which run it was, when it started, and what pressure it
-left commanded. One file per process, so concurrent runs never lock or overwrite each other's
-marker.
+left commanded, then mends its folder and removes its marker within the same bound. One file
+per process, so concurrent runs never lock or overwrite each other's marker.
 """
 
 from __future__ import annotations
@@ -245,22 +245,40 @@ def find_unvented(bench_key: str) -> list[tuple[Path, Marker]]:
     return found
 
 
-def vent_unvented(backend, found: list[tuple[Path, Marker]]) -> list[Marker]:
+def vent_unvented(backend, found: list[tuple[Path, Marker]], on_state_folder
+                  ) -> list[Marker]:
     """Vent a bench left pressurised by a dead run, before anything else happens on it.
 
     ``found``: the dead runs' markers, looked for by the bench's owner before the device was
     opened (:meth:`mkm.bench.ownership.BenchOwner.dead_runs`, bounded: a state folder that
     hangs refuses the command untouched). Call it right after ``backend.open()`` (which
     already wrote the vent): the vent is written again here, explicitly, and only once it
-    succeeded are the dead runs' markers removed. Returns those markers for the caller to
-    report.
+    succeeded are the dead runs' folders mended and their markers removed, by
+    ``on_state_folder`` (:meth:`mkm.bench.ownership.BenchOwner.on_state_folder`: a thread
+    waited for within a bound, so a state folder or a run folder that hangs holds that thread,
+    never the command; each marker's ``mended`` then says what is left to do). Returns those
+    markers for the caller to report; an ``OSError`` of the state folder is raised.
     """
     if not found:
         return []
     backend.write_command(0.0)
-    for path, marker in found:
-        marker.mended = mend_run(marker)
-        path.unlink(missing_ok=True)
+
+    def forget() -> list[str]:
+        mended = []
+        for path, marker in found:
+            mended.append(mend_run(marker))
+            path.unlink(missing_ok=True)
+        return mended
+
+    done, mended = on_state_folder(forget, "the dead runs' folders were mended and their "
+                                   "markers removed")
+    if isinstance(mended, BaseException):
+        raise mended
+    if not done:
+        mended = [f"{mended}: not yet done, done once it answers (the bench is let go after "
+                  "it, or as this process ends)"] * len(found)
+    for (_, marker), said in zip(found, mended, strict=True):
+        marker.mended = said
     return [marker for _, marker in found]
 
 
