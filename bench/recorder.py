@@ -103,6 +103,7 @@ class Recorder:
         self._failures: list[tuple[str, OSError]] = []  # what the disk refused, in order
         self._told = 0  # failures raised to the loop (raise_failure)
         self.stuck_reason = ""  # set once the disk is found not taking the record
+        self.outcome_refused = False  # the final run.json could not be written: it says running
         # when the thread last finished a write, or was given one while it had none
         self._done_at = time.monotonic()
         self._synced_at = self._done_at  # when the rows were last synced to the disk
@@ -322,10 +323,12 @@ class Recorder:
         try:
             self._save_retrying()
         except PermissionError as exc:
+            self.outcome_refused = True
             problems.append(f"run.json could not be written ({type(exc).__name__}: {exc}; "
                             f"tried {LOCKED_RETRIES + 1} times over "
                             f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
         except OSError as exc:
+            self.outcome_refused = True
             problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
         return problems
 

@@ -644,7 +644,10 @@ class BenchRun:
                 reason = f"{reason}; {problem}"
         lease = self.lease
         hung = lease is not None and lease.lagging()  # said above: not waited for again
-        if lease is not None and not unverified:
+        refused = self.recorder is not None and self.recorder.outcome_refused
+        if refused:  # run.json still says running: the marker keeps the outcome
+            reason = f"{reason}; {self._keep_outcome(status, reason, unverified, hung)}"
+        if lease is not None and not unverified and not refused:
             done = lease.wait(lease.post(lease.release), 0.0 if hung else STATE_WAIT_S)
             if not done and not hung:
                 reason = (f"{reason}; the bench marker {lease.path} is not removed yet (the bench "
@@ -652,12 +655,33 @@ class BenchRun:
             elif done and lease.error is not None:
                 reason = (f"{reason}; the bench marker could not be removed "
                           f"({lease.error.strerror or lease.error})")
-        elif lease is not None:  # kept: the next command vents first and says why
+        elif lease is not None and unverified:  # kept: the next command vents first, says why
             what, unfollowed = self.vent_check.describe(), self.vent_check.unfollowed_bar
             # a failure leaves the marker naming the run and its last command
             lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
                        0.0 if hung else STATE_WAIT_S)
         return status, reason
+
+    def _keep_outcome(self, status: RunStatus, reason: str, unverified: bool,
+                      hung: bool) -> str:
+        """The final run.json was refused (a full disk, no permission): the bench marker keeps
+        the outcome, and the next command on the bench writes it into run.json
+        (:func:`mkm.bench.unvented.mend_run`); what became of it, in words."""
+        lease, meta = self.lease, self.recorder.meta
+        left = "run.json still says running"
+        if lease is None:
+            return f"{left}: no bench marker could keep the outcome"
+        outcome = {"status": str(status), "reason": reason, "ended_utc": meta.ended_utc,
+                   "manual_vent_required": unverified}
+        done = lease.wait(lease.post(lambda: lease.ended(outcome)),
+                          0.0 if hung else STATE_WAIT_S)
+        if done and lease.error is None:
+            return (f"{left}: the outcome is kept in the bench marker {lease.path}, and the "
+                    "next command on this bench writes it there")
+        why = (f"could not be written ({lease.error.strerror or lease.error})" if done
+               else "is not written yet (the bench state folder does not answer)")
+        return (f"{left}: the bench marker {lease.path} that keeps the outcome {why}; the "
+                "next command on this bench marks the run killed")
 
     def _marker_books(self, acq: Acquisition | None) -> str:
         """After the vent: whether the bench marker caught up with the run's commands (the

@@ -29,7 +29,7 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 
-from mkm.bench.storage import ProcessIdentity
+from mkm.bench.storage import ProcessIdentity, RunStatus
 from mkm.core.home import user_state
 from mkm.core.records import write_json_atomic
 
@@ -66,11 +66,17 @@ class Marker:
     # the pressure its monitor did not follow before the vent: that monitor's readings prove no
     # vent (None: it followed, or no such interlock)
     unfollowed_bar: float | None = None
+    # the run's outcome (status, reason, ended_utc, manual_vent_required) when its run.json
+    # refused it (a full disk, no permission): the finder writes it there
+    outcome: dict | None = None
     mended: str = ""  # what the finder did to the run folder (not written in the marker)
 
     def describe(self) -> str:
         run = f"run {self.run_path} (started {self.started_utc}, pid {self.process['pid']})"
         at = self.last_command_utc or self.started_utc
+        if self.outcome:
+            return (f"{run} ended {self.outcome['status']} at {self.outcome['ended_utc']}, but "
+                    f"its run.json refused that record: {self.outcome['reason']}")
         if self.last_command_bar > 0:
             return (f"{run} ended without venting; its last commanded pressure was "
                     f"{self.last_command_bar:g} bar at {at}")
@@ -224,6 +230,12 @@ class BenchLease(StateFolderThread):
         self.marker.unfollowed_bar = unfollowed_bar
         self._write()
 
+    def ended(self, outcome: dict) -> None:
+        """The run's run.json refused its outcome: the marker stays and keeps it, for the next
+        command on the bench to write (:func:`mend_run`)."""
+        self.marker.outcome = outcome
+        self._write()
+
     def release(self) -> None:
         self.path.unlink(missing_ok=True)
 
@@ -241,8 +253,24 @@ def find_unvented(bench_key: str) -> list[tuple[Path, Marker]]:
         except (OSError, ValueError, TypeError, KeyError, AttributeError):
             continue  # unreadable: not ours to judge (written by another version?)
         if not alive:
+            marker.outcome = _outcome(marker.outcome)
             found.append((path, marker))
     return found
+
+
+def _outcome(kept) -> dict | None:
+    """The outcome a marker kept (:meth:`BenchLease.ended`), or None when it holds none that a
+    run ends with (the run is then mended as killed)."""
+    try:
+        status = RunStatus(kept["status"])
+        reason, ended = kept["reason"], kept.get("ended_utc")
+    except (KeyError, TypeError, ValueError, AttributeError):
+        return None
+    written = (RunStatus.RUNNING, RunStatus.INCOMPLETE, RunStatus.KILLED, RunStatus.IMPORTED)
+    if status in written or not isinstance(reason, str) or not isinstance(ended, str | None):
+        return None
+    return {"status": status.value, "reason": reason, "ended_utc": ended,
+            "manual_vent_required": kept.get("manual_vent_required") is True}
 
 
 def vent_unvented(backend, found: list[tuple[Path, Marker]], on_state_folder
@@ -285,8 +313,9 @@ def vent_unvented(backend, found: list[tuple[Path, Marker]], on_state_folder
 def mend_run(marker: Marker) -> str:
     """Make the run folder of a dead run tell the truth, once its bench is vented: a run.json
     still ``running`` becomes ``killed``, with the sample count of the rows on disk and the time
-    of death as far as known (samples.csv's last write). Returns what was done, in words."""
-    from mkm.bench.storage import RunStatus, load_run, read_meta, release_reserve
+    of death as far as known (samples.csv's last write), or takes the outcome the marker kept
+    when the run's own final write was refused. Returns what was done, in words."""
+    from mkm.bench.storage import load_run, read_meta, release_reserve
     from mkm.core.records import provenance
 
     path = Path(marker.run_path)
@@ -304,16 +333,26 @@ def mend_run(marker: Marker) -> str:
     csv = path / "samples.csv"
     died = (datetime.datetime.fromtimestamp(csv.stat().st_mtime, datetime.UTC)
             .isoformat(timespec="seconds") if csv.is_file() else marker.last_command_utc)
-    meta.status = RunStatus.KILLED
     meta.counters["samples"] = samples
-    meta.ended_utc = died or None
-    meta.reason = (f"its process (pid {marker.process.get('pid')}) died without closing the "
-                   f"record (killed or power lost), at about {died or 'an unknown time'}; its "
-                   f"last commanded pressure was {marker.last_command_bar:g} bar; vented by the "
-                   f"next command at {provenance()['date_utc']}")
+    outcome = marker.outcome
+    if outcome:
+        meta.status = RunStatus(outcome["status"])
+        meta.ended_utc = outcome["ended_utc"] or died or None
+        meta.manual_vent_required = outcome["manual_vent_required"]
+        meta.reason = (f"{outcome['reason']}; this outcome was refused by run.json as the "
+                       f"run ended, kept in its bench marker and written by the next command "
+                       f"at {provenance()['date_utc']}")
+    else:
+        meta.status = RunStatus.KILLED
+        meta.ended_utc = died or None
+        meta.reason = (f"its process (pid {marker.process.get('pid')}) died without closing "
+                       f"the record (killed or power lost), at about "
+                       f"{died or 'an unknown time'}; its last commanded pressure was "
+                       f"{marker.last_command_bar:g} bar; vented by the next command at "
+                       f"{provenance()['date_utc']}")
     release_reserve(path)  # the room it kept for its final record: this one
     try:
         write_json_atomic(path / "run.json", meta.as_dict())
     except OSError as exc:
         return f"its run.json could not be rewritten ({exc.strerror or exc}): not mended"
-    return f"run.json mended: status killed, {samples} samples on disk"
+    return f"run.json mended: status {meta.status}, {samples} samples on disk"

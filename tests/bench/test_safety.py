@@ -351,6 +351,56 @@ def test_a_full_disk_at_the_final_write_is_exit_2_and_said(tmp_path, mkm_cli, mo
     assert load_run(Path(out.strip())).status == "running"  # this process: still alive
 
 
+@pytest.mark.parametrize("refusal", [OSError(errno.ENOSPC, "No space left on device"),
+                                     PermissionError(errno.EACCES, "Permission denied")])
+def test_a_final_record_refused_for_good_is_kept_in_the_marker_and_written_next(
+        config, tmp_path, monkeypatch, refusal):
+    # the disk refuses run.json's final write for good (full, or no permission): the run
+    # vented and said so on stderr, but run.json said `running` for ever and its marker was
+    # removed, so nothing ever wrote the outcome. Now the bench marker keeps it, and the next
+    # command on the bench writes it into run.json once the run's process has ended
+    from mkm.bench import procedures, recorder
+
+    monkeypatch.setattr(recorder, "LOCKED_RETRY_S", 0.0)
+    write, refusing = RunWriter.write_meta, [True]
+
+    def refused_at_the_end(self, meta):
+        if meta.status != "running" and refusing:
+            raise refusal
+        write(self, meta)
+
+    monkeypatch.setattr(RunWriter, "write_meta", refused_at_the_end)
+    result = acquire(config, out_root=tmp_path, **QUIET)
+    assert result.status == "complete" and result.exit_code == 2
+    assert f"run.json could not be written ({type(refusal).__name__}: " in result.reason
+    assert result.reason.endswith("run.json still says running: the outcome is kept in the "
+                                  f"bench marker {next(_folder('sim-Dev1').glob('*.json'))}, "
+                                  "and the next command on this bench writes it there")
+    assert load_run(result.path).status == "running"  # this process: still alive
+    (path,) = _folder("sim-Dev1").glob("*.json")
+    marker = json.loads(path.read_text())
+    assert marker["outcome"]["status"] == "complete"
+    assert marker["outcome"]["reason"].startswith("all 3 steps done; run.json could not be")
+    for written in (path, result.path / "run.json"):  # as if its process had ended
+        data = json.loads(written.read_text())
+        data["process"]["started_unix_s"] -= 100.0
+        written.write_text(json.dumps(data))
+    refusing.clear()  # the disk takes writes again
+    notes = []
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    (said,) = notes
+    assert f"run {result.path.resolve()} (started " in said
+    assert ", but its run.json refused that record: all 3 steps done; " in said
+    assert said.endswith("vented now; run.json mended: status complete, 213 samples on disk")
+    run = load_run(result.path)
+    assert run.status == "complete" and not run.meta.manual_vent_required
+    assert run.reason.startswith(marker["outcome"]["reason"])
+    assert "; this outcome was refused by run.json as the run ended, kept in its bench marker " \
+        "and written by the next command at " in run.reason
+    assert run.meta.counters["samples"] == len(run.samples) == 213  # the run's 203, the check's 10
+    assert not list(_folder("sim-Dev1").glob("*.json"))
+
+
 def test_a_full_disk_at_the_start_leaves_no_folder_and_says_so(tmp_path, mkm_cli, monkeypatch):
     def full(self, meta):
         raise OSError(errno.ENOSPC, "No space left on device")

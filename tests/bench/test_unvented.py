@@ -286,3 +286,22 @@ def test_a_state_folder_that_hangs_as_a_dead_runs_marker_is_removed_does_not_hol
             break
         threading.Event().wait(0.1)
     assert not marker.exists()
+
+
+@pytest.mark.parametrize("kept", [{"status": "running", "reason": "r", "ended_utc": None},
+                                  {"status": "done", "reason": "r", "ended_utc": None},
+                                  {"status": "failed", "reason": 3, "ended_utc": None},
+                                  {"status": "failed"}, ["failed"], "failed"])
+def test_a_kept_outcome_that_is_none_a_run_ends_with_is_ignored(tmp_path, kept):
+    # a marker edited by hand or by another version: the dead run is still named and vented,
+    # and mended as killed, never with a status a run does not end with
+    lease = BenchLease("sim-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
+    lease.started()
+    lease.command(1.0)
+    lease.ended(kept)
+    data = json.loads(lease.path.read_text())
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    lease.path.write_text(json.dumps(data))
+    ((_, marker),) = find_unvented("sim-Dev1")
+    assert marker.outcome is None
+    assert "ended without venting; its last commanded pressure was 1 bar" in marker.describe()
