@@ -459,6 +459,7 @@ class BenchRun:
         done = f"{lost}: the device was reset and vented on a fresh task"
         if self.acquisition is not None:
             try:
+                self.acquisition.restarted()
                 self.acquisition.command(0.0, "vent")
             except BaseException as exc:  # 0 V was written by revive(); its record failed
                 return True, (f"{done}, but recording that vent failed "

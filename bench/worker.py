@@ -114,6 +114,10 @@ class Acquisition:
         self.manometer_bar = math.nan
         self.measured_bar = math.nan  # the last plausible pressure read (see held_bar)
         self.next_index = 0
+        # added to the device's sample indices: its clock restarts at 0 on a fresh task after a
+        # loss (:meth:`restarted`), the run's indices go on
+        self._offset = 0
+        self._read_at = time.monotonic()  # when a block was last read
         self.vented = False  # the last command written was a successful vent
         self.written = False  # the last command asked for reached the device
         self.marker_lagged = False  # a pressure went out before its bench marker was written
@@ -145,9 +149,10 @@ class Acquisition:
             try:
                 with self.guard():
                     block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
-                    rows = [self._sample(block.first_index + k, volts, phase, step, set_bar,
-                                         trips) for k, volts in enumerate(block.volts)]
-                    self.next_index = block.first_index + len(block.volts)
+                    first = self._first(block)
+                    rows = [self._sample(first + k, volts, phase, step, set_bar, trips)
+                            for k, volts in enumerate(block.volts)]
+                    self.next_index = first + len(block.volts)
                     if trips:  # acts first, keeps books after: the vent before the rows
                         tripped = self._vent_for(*trips[0])
                     self.recorder.samples(rows)  # queued: the disk is never waited for here
@@ -198,7 +203,7 @@ class Acquisition:
 
     def _overflowed(self, exc: BufferOverflow) -> None:
         """Restart after a buffer overflow and record the gap of the samples lost."""
-        resumed = self.backend.recover()
+        resumed = self.backend.recover() + self._offset
         lost = resumed - self.next_index
         self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
                               resumed / self.rate_hz, str(exc)))
@@ -218,10 +223,10 @@ class Acquisition:
         except BufferOverflow as exc:
             self._overflowed(exc)
             return
-        phase, step, set_bar = self._reading
-        self.recorder.samples([self._sample(block.first_index + k, volts, phase, step, set_bar)
+        phase, step, set_bar, first = *self._reading, self._first(block)
+        self.recorder.samples([self._sample(first + k, volts, phase, step, set_bar)
                                for k, volts in enumerate(block.volts)])
-        self.next_index = block.first_index + len(block.volts)
+        self.next_index = first + len(block.volts)
 
     def record_vent_check(self, block) -> str:
         """Record a block the vent check read (phase ``vent``, step -1, set 0 bar): the
@@ -229,20 +234,42 @@ class Acquisition:
         check recovered from) are a gap. No interlock is judged (the vent is commanded). The
         problem met, or "" (never raises: the check goes on)."""
         try:
-            if block.first_index > self.next_index:
-                lost = block.first_index - self.next_index
+            first = self._first(block)
+            if first > self.next_index:
+                lost = first - self.next_index
                 self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
-                                      block.first_index / self.rate_hz,
-                                      "samples lost during the vent check"))
+                                      first / self.rate_hz, "samples lost during the vent check"))
                 self._pending_flags.append("gap")
-            rows = [self._sample(block.first_index + k, volts, "vent", -1, 0.0)
+            rows = [self._sample(first + k, volts, "vent", -1, 0.0)
                     for k, volts in enumerate(block.volts)]
-            self.next_index = block.first_index + len(block.volts)
+            self.next_index = first + len(block.volts)
             self.recorder.samples(rows)
         except Exception as exc:
             return (f"the samples of the vent check could not be recorded "
                     f"({type(exc).__name__}: {exc})")
         return ""
+
+    def _first(self, block) -> int:
+        """The run's index of ``block``'s first sample (the device's, after a restart offset);
+        the block is noted as read now."""
+        self._read_at = time.monotonic()
+        return block.first_index + self._offset
+
+    def restarted(self) -> None:
+        """The device was lost, reset and given a fresh AI task (``revive``): its sample clock
+        restarts at 0. The samples acquired since the last read are lost with it (a gap, of
+        the time since that read: a lower bound), the device's indices from now on follow the
+        run's, and what the fresh task reads was acquired after the revive's vent."""
+        lost = int((time.monotonic() - self._read_at) * self.rate_hz)
+        if lost > 0:
+            self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
+                                  (self.next_index + lost) / self.rate_hz,
+                                  "the device was lost and reset: the samples acquired "
+                                  "meanwhile went with it"))
+            self._pending_flags.append("gap")
+            self.next_index += lost
+        self._offset = self.next_index
+        self._reading = ("vent", -1, 0.0)
 
     def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
                 trips: list[tuple[str, RunStatus]] | None = None) -> Sample:
