@@ -15,7 +15,8 @@ markers of that bench whose process is dead (on the bench owner's thread, at mos
 :data:`STATE_START_S`: :meth:`mkm.bench.ownership.BenchOwner.dead_runs`): it vents (opening the
 device writes the vent command) and says which run it was, when it started, and what pressure it
 left commanded, then mends its folder and removes its marker within the same bound. One file
-per process, so concurrent runs never lock or overwrite each other's marker.
+per run, so concurrent runs never lock or overwrite each other's marker, nor does a later run of
+the same process.
 """
 
 from __future__ import annotations
@@ -195,7 +196,10 @@ class BenchLease(StateFolderThread):
         # absolute: the next command may run from another folder
         self.marker = Marker(bench_key, str(Path(run_path).resolve()), started_utc, asdict(me))
         folder = _folder(bench_key)
-        self.path = folder / f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}.json"
+        # one per run: a marker a run leaves (its vent not verified, its record refused) stays
+        # beside those of the later runs of the same process until that process has ended
+        self.path = folder / (f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}-"
+                              f"{bench_folder_name(Path(run_path).name)}.json")
 
         def first() -> None:
             folder.mkdir(parents=True, exist_ok=True)

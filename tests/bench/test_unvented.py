@@ -288,6 +288,28 @@ def test_a_state_folder_that_hangs_as_a_dead_runs_marker_is_removed_does_not_hol
     assert not marker.exists()
 
 
+def test_a_marker_left_by_a_run_is_kept_through_the_next_run_of_the_same_process(config,
+                                                                                 tmp_path):
+    # a run whose vent is not verified keeps its marker for the next command; a second run in
+    # the same process (the Python API, `mkm demo`) wrote its own marker in the same file and
+    # removed it as it ended, so nothing named the first run once the process had ended. Now
+    # each run has a marker of its own
+    from mkm.bench.run import acquire
+
+    stuck = acquire(config.replace(sim={"faults": {"regulator_stuck_at_s": 4.0}}),
+                    out_root=tmp_path / "runs", notify=lambda m: None)
+    assert stuck.manual_vent_required
+    after = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert after.status == "complete", after.reason
+    (path,) = _folder("sim-Dev1").glob("*.json")
+    data = json.loads(path.read_text())
+    assert data["run_path"] == str(stuck.path.resolve()) and data["vent_unverified"]
+    data["process"]["started_unix_s"] -= 100.0  # as if the process had ended
+    path.write_text(json.dumps(data))
+    ((_, marker),) = find_unvented("sim-Dev1")
+    assert "but its vent was not verified: the monitor still reads 0.49" in marker.describe()
+
+
 @pytest.mark.parametrize("kept", [{"status": "running", "reason": "r", "ended_utc": None},
                                   {"status": "done", "reason": "r", "ended_utc": None},
                                   {"status": "failed", "reason": 3, "ended_utc": None},
