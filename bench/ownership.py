@@ -150,19 +150,29 @@ class BenchOwner:
         waited for at most :data:`STATE_START_S` (not at all when the folder already hangs):
         :class:`StateFolderBroken` after it, its message ending with ``then`` (what the caller
         did); the bench is then let go once the folder answers, or with this process."""
-        hung = self._state.lagging()  # an earlier update never came back
-        done, found = self._state.call(lambda: find_unvented(self.bench_key),
-                                       0.0 if hung else STATE_START_S)
+        done, found = self.on_state_folder(lambda: find_unvented(self.bench_key),
+                                           "the runs that died on this bench were looked for")
         if not done:
-            self._hung = True
-            within = "" if hung else f" within {STATE_START_S:g} s"
-            raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} did not "
-                                    f"answer{within} as the runs that died on this bench were "
-                                    f"looked for (it hangs): {then}; the bench is let go once it "
-                                    "answers, or as this process ends")
+            raise StateFolderBroken(f"{found}: {then}; the bench is let go once it answers, or "
+                                    "as this process ends")
         if isinstance(found, BaseException):  # raised here, as an unbounded search raised it
             raise found
         return found
+
+    def on_state_folder(self, function, what: str) -> tuple[bool, object]:
+        """``function()`` (doing ``what``, said in the past tense) on the state folder's
+        thread, after the updates posted before it, waited for at most :data:`STATE_START_S`
+        (not at all when the folder already hangs): ``(True, what it returned or raised)``, or
+        ``(False, what happened, in words)`` when it did not come back in time (it still runs
+        once the folder answers; the bench is let go after it, not waited for again)."""
+        hung = self._state.lagging()  # an earlier update never came back
+        done, out = self._state.call(function, 0.0 if hung else STATE_START_S)
+        if done:
+            return True, out
+        self._hung = True
+        within = "" if hung else f" within {STATE_START_S:g} s"
+        return False, (f"the bench state folder {self.lock_path.parent} did not answer{within} "
+                       f"as {what} (it hangs)")
 
     def __exit__(self, *exc) -> None:
         """Let the bench go, waiting at most :data:`STATE_WAIT_S` for the state folder: past

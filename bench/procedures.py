@@ -47,7 +47,7 @@ def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[De
             dead_runs = owner.dead_runs()  # before the device is opened
             info = backend.open()
             try:
-                for marker in vent_unvented(backend, dead_runs):
+                for marker in vent_unvented(backend, dead_runs, owner.on_state_folder):
                     notify(marker.vented_now())
                 yield info
             finally:
@@ -208,7 +208,8 @@ def _mend_dead_runs(device: Backend, owner: BenchOwner, notify
     the dead runs' markers."""
     try:
         markers = vent_unvented(device, owner.dead_runs("the bench was vented, the runs that "
-                                                        "died on it were not named"))
+                                                        "died on it were not named"),
+                                owner.on_state_folder)
     except StateFolderBroken as exc:
         return [str(exc)], []
     except OSError as exc:

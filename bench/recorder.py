@@ -5,11 +5,11 @@ run.json is written first when the folder is made, rewritten after the tare and 
 samples, steps and commands are appended as they happen, by a thread of the recorder's own: the
 acquisition loop only queues them, so a disk that hangs (a network share, a dying drive) cannot
 stop the loop, and with it every interlock, while the regulator holds its pressure. The thread
-syncs them to the disk at least every :data:`SYNC_EVERY_S` while rows come. What the
-disk has not taken yet is held in memory, in order; the loop asks :meth:`Recorder.stuck` after
-every block, and more than :data:`DISK_STUCK_S` of samples held with no write done for
-:data:`DISK_QUIET_S` (or more than :data:`HELD_ROWS_MAX` rows) stops the run: vent first,
-reason "disk not taking the record".
+syncs them to the disk :data:`SYNC_EVERY_S` after the last sync, whether more rows come or not.
+What the disk has not taken yet is held in memory, in order; the loop asks
+:meth:`Recorder.stuck` after every block, and more than :data:`DISK_STUCK_S` of samples held
+with no write done for :data:`DISK_QUIET_S` (or more than :data:`HELD_ROWS_MAX` rows) stops the
+run: vent first, reason "disk not taking the record".
 A write the disk refused is said to the loop at its next block (:meth:`Recorder.raise_failure`)
 and in the final reason; the samples it refused are kept and written again, none lost or
 written twice. :meth:`Recorder.finish` waits for the disk to take everything held,
@@ -55,11 +55,12 @@ HELD_ROWS_MAX = 300_000
 # ... and with no write done for this long (wall time): a disk that writes, behind the loop in a
 # burst (the virtual clock runs hundreds of times faster than real time), is not stuck
 DISK_QUIET_S = 1.0
-# The rows written are synced to the disk (fsync) by the recorder's thread at the first write
-# this long (wall time) after the last sync: a crash of the operating system or a power cut
-# loses about this much of the record, not everything since the start (the kernel writes its
-# cache back when it likes: up to 30 s on Linux). At most once this often: a sync costs
-# milliseconds, and the virtual clock writes hundreds of samples a second.
+# The rows written are synced to the disk (fsync) by the recorder's thread this long (wall
+# time) after the last sync, at a write or without one (an acquisition that stalls): a crash
+# of the operating system or a power cut loses about this much of the record, not everything
+# since the start (the kernel writes its cache back when it likes: up to 30 s on Linux). At
+# most once this often: a sync costs milliseconds, and the virtual clock writes hundreds of
+# samples a second.
 SYNC_EVERY_S = 1.0
 
 
@@ -102,6 +103,7 @@ class Recorder:
         self._failures: list[tuple[str, OSError]] = []  # what the disk refused, in order
         self._told = 0  # failures raised to the loop (raise_failure)
         self.stuck_reason = ""  # set once the disk is found not taking the record
+        self.outcome_refused = False  # the final run.json could not be written: it says running
         # when the thread last finished a write, or was given one while it had none
         self._done_at = time.monotonic()
         self._synced_at = self._done_at  # when the rows were last synced to the disk
@@ -130,12 +132,21 @@ class Recorder:
 
     def _write_queued(self) -> None:
         """The recorder's thread: write what is queued, in order; a write the disk refuses is
-        kept in ``_failures`` (its samples are kept and written again)."""
+        kept in ``_failures`` (its samples are kept and written again). Rows written and not
+        synced are synced :data:`SYNC_EVERY_S` after the last sync even when nothing more comes
+        (an acquisition that stalls: a DAQ that hangs, a loop waiting for a device)."""
+        unsynced = False  # rows written since the last sync
         while True:
             with self._cond:
                 while not self._ops:
-                    self._cond.wait()
-                kind, payload = self._ops.popleft()
+                    due_s = self._synced_at + SYNC_EVERY_S - time.monotonic()
+                    if unsynced and due_s <= 0:
+                        break
+                    self._cond.wait(due_s if unsynced else None)
+                if self._ops:
+                    kind, payload = self._ops.popleft()
+                else:
+                    kind, payload = "sync due", None
                 self._busy = True
                 if kind == "samples":  # from the queue to the rows being written
                     self._held.popleft()
@@ -149,10 +160,13 @@ class Recorder:
             what = self._what(kind, payload)
             try:
                 self._write(kind, payload)
-                if time.monotonic() - self._synced_at >= SYNC_EVERY_S:
+                unsynced = unsynced or kind in ("samples", "step", "command")
+                if kind == "sync" or (
+                        unsynced and time.monotonic() - self._synced_at >= SYNC_EVERY_S):
                     what = "the rows' sync to the disk"
-                    self.writer.sync()
-                    self._synced_at = time.monotonic()
+                    if kind != "sync":
+                        self.writer.sync()
+                    self._synced_at, unsynced = time.monotonic(), False
             except OSError as exc:
                 with self._cond:
                     self._failures.append((what, exc))
@@ -174,7 +188,13 @@ class Recorder:
             self.writer.append_command(payload)
         elif kind == "save":
             self._save_retrying()
-        elif kind == "sync":
+        elif kind == "last try":  # the refused rows, with the final record's room given back
+            self.writer.release_reserve()
+            try:
+                self._write_unwritten()
+            except OSError:
+                pass  # said by refusals()
+        elif kind == "sync":  # the run's books before a step it may not outlive
             try:
                 self._save_retrying()
                 self.writer.sync()
@@ -207,6 +227,8 @@ class Recorder:
             return f"step {payload.step}"
         if kind == "command":
             return f"the {payload.purpose} command of {payload.command_bar:g} bar"
+        if kind == "sync due":
+            return "the rows' sync to the disk"
         return "run.json"
 
     def samples(self, rows: list[Sample]) -> None:
@@ -301,10 +323,12 @@ class Recorder:
         try:
             self._save_retrying()
         except PermissionError as exc:
+            self.outcome_refused = True
             problems.append(f"run.json could not be written ({type(exc).__name__}: {exc}; "
                             f"tried {LOCKED_RETRIES + 1} times over "
                             f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
         except OSError as exc:
+            self.outcome_refused = True
             problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
         return problems
 
@@ -325,12 +349,9 @@ class Recorder:
         the loop was not told of, in one phrase (once), and whether their samples reached it
         after all."""
         self.wait_written()
-        if self._unwritten or self._reopen:
-            self.writer.release_reserve()
-            try:
-                self._write_unwritten()
-            except OSError:
-                pass  # said below
+        if self._unwritten or self._reopen:  # on the thread: it may be syncing the files
+            self._put("last try")
+            self.wait_written()
         with self._cond:
             untold = self._failures[self._told:]
             self._told = len(self._failures)

@@ -25,7 +25,8 @@ Safety, in every exit path:
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``, and a
-  monitor the pressure interlock found below its command must have read more than that before
+  monitor found below its command before the vent (by the pressure interlock, or in its last
+  reading before a stop, another interlock or a fault) must have read more than that before
   the vent (one stuck at zero reads 0 bar whatever the muscle holds); if not, the run is
   ``failed``, asks for a VENT BY HAND and its bench marker stays;
 - a closed Windows console leaves seconds before the process is ended: the run vents, writes
@@ -399,7 +400,8 @@ class BenchRun:
 
     def startup(self) -> None:
         info = self.backend.open()  # writes the vent command first
-        self.unvented = vent_unvented(self.backend, self._dead_runs)
+        self.unvented = vent_unvented(self.backend, self._dead_runs,
+                                      self.owner.on_state_folder)
         for marker in self.unvented:
             self.notify(marker.vented_now())
         # a stop signal while the folder is made waits until the run holds its recorder: the
@@ -457,6 +459,7 @@ class BenchRun:
         done = f"{lost}: the device was reset and vented on a fresh task"
         if self.acquisition is not None:
             try:
+                self.acquisition.restarted()
                 self.acquisition.command(0.0, "vent")
             except BaseException as exc:  # 0 V was written by revive(); its record failed
                 return True, (f"{done}, but recording that vent failed "
@@ -585,9 +588,10 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
-        if self.vent_check is not None and acq is not None and acq.below_command is not None:
+        unproven = acq.unproven() if acq is not None else None
+        if self.vent_check is not None and unproven is not None:
             # a monitor that read nothing before the vent proves nothing by reading it after
-            self.vent_check = below_command(self.vent_check, *acq.below_command)
+            self.vent_check = below_command(self.vent_check, *unproven)
         if acq is not None and acq.interlock_vent_failed:  # said before: what came of it
             if self.vent_check is None:
                 problems.append("nothing verified a vent since: VENT BY HAND")
@@ -641,7 +645,10 @@ class BenchRun:
                 reason = f"{reason}; {problem}"
         lease = self.lease
         hung = lease is not None and lease.lagging()  # said above: not waited for again
-        if lease is not None and not unverified:
+        refused = self.recorder is not None and self.recorder.outcome_refused
+        if refused:  # run.json still says running: the marker keeps the outcome
+            reason = f"{reason}; {self._keep_outcome(status, reason, unverified, hung)}"
+        if lease is not None and not unverified and not refused:
             done = lease.wait(lease.post(lease.release), 0.0 if hung else STATE_WAIT_S)
             if not done and not hung:
                 reason = (f"{reason}; the bench marker {lease.path} is not removed yet (the bench "
@@ -649,12 +656,33 @@ class BenchRun:
             elif done and lease.error is not None:
                 reason = (f"{reason}; the bench marker could not be removed "
                           f"({lease.error.strerror or lease.error})")
-        elif lease is not None:  # kept: the next command vents first and says why
+        elif lease is not None and unverified:  # kept: the next command vents first, says why
             what, unfollowed = self.vent_check.describe(), self.vent_check.unfollowed_bar
             # a failure leaves the marker naming the run and its last command
             lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
                        0.0 if hung else STATE_WAIT_S)
         return status, reason
+
+    def _keep_outcome(self, status: RunStatus, reason: str, unverified: bool,
+                      hung: bool) -> str:
+        """The final run.json was refused (a full disk, no permission): the bench marker keeps
+        the outcome, and the next command on the bench writes it into run.json
+        (:func:`mkm.bench.unvented.mend_run`); what became of it, in words."""
+        lease, meta = self.lease, self.recorder.meta
+        left = "run.json still says running"
+        if lease is None:
+            return f"{left}: no bench marker could keep the outcome"
+        outcome = {"status": str(status), "reason": reason, "ended_utc": meta.ended_utc,
+                   "manual_vent_required": unverified}
+        done = lease.wait(lease.post(lambda: lease.ended(outcome)),
+                          0.0 if hung else STATE_WAIT_S)
+        if done and lease.error is None:
+            return (f"{left}: the outcome is kept in the bench marker {lease.path}, and the "
+                    "next command on this bench writes it there")
+        why = (f"could not be written ({lease.error.strerror or lease.error})" if done
+               else "is not written yet (the bench state folder does not answer)")
+        return (f"{left}: the bench marker {lease.path} that keeps the outcome {why}; the "
+                "next command on this bench marks the run killed")
 
     def _marker_books(self, acq: Acquisition | None) -> str:
         """After the vent: whether the bench marker caught up with the run's commands (the

@@ -14,9 +14,9 @@ One folder per run, named ``<UTC time>_<muscle id>``:
 Rows are flushed to the operating system as they are appended (a run's by the thread of
 :class:`mkm.bench.recorder.Recorder`, a few blocks behind its loop at most while the disk takes
 them), so a run killed at any moment keeps every sample appended. ``fsync`` (which costs
-milliseconds) runs for run.json, for the rows at least every second of a run
-(:data:`mkm.bench.recorder.SYNC_EVERY_S`) and at close: it guards against a crash of the
-operating system or a power cut, not against a dying process.
+milliseconds) runs for run.json, for the rows a second after the last sync whether more come
+or not (:data:`mkm.bench.recorder.SYNC_EVERY_S`), and at close: it guards against a crash of
+the operating system or a power cut, not against a dying process.
 
 :func:`load_run` reads a folder back (samples loaded on first use); :func:`aggregate_samples`
 streams ``samples.csv`` into time bins with bounded memory, for long runs (a 24 h run at 10 Hz

@@ -14,8 +14,9 @@ opens a bench (``acquire``, ``check``, ``tare``, ``calibrate-loadcell``, ``vent`
 markers of that bench whose process is dead (on the bench owner's thread, at most
 :data:`STATE_START_S`: :meth:`mkm.bench.ownership.BenchOwner.dead_runs`): it vents (opening the
 device writes the vent command) and says which run it was, when it started, and what pressure it
-left commanded. One file per process, so concurrent runs never lock or overwrite each other's
-marker.
+left commanded, then mends its folder and removes its marker within the same bound. One file
+per run, so concurrent runs never lock or overwrite each other's marker, nor does a later run of
+the same process.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 
-from mkm.bench.storage import ProcessIdentity
+from mkm.bench.storage import ProcessIdentity, RunStatus
 from mkm.core.home import user_state
 from mkm.core.records import write_json_atomic
 
@@ -66,11 +67,17 @@ class Marker:
     # the pressure its monitor did not follow before the vent: that monitor's readings prove no
     # vent (None: it followed, or no such interlock)
     unfollowed_bar: float | None = None
+    # the run's outcome (status, reason, ended_utc, manual_vent_required) when its run.json
+    # refused it (a full disk, no permission): the finder writes it there
+    outcome: dict | None = None
     mended: str = ""  # what the finder did to the run folder (not written in the marker)
 
     def describe(self) -> str:
         run = f"run {self.run_path} (started {self.started_utc}, pid {self.process['pid']})"
         at = self.last_command_utc or self.started_utc
+        if self.outcome:
+            return (f"{run} ended {self.outcome['status']} at {self.outcome['ended_utc']}, but "
+                    f"its run.json refused that record: {self.outcome['reason']}")
         if self.last_command_bar > 0:
             return (f"{run} ended without venting; its last commanded pressure was "
                     f"{self.last_command_bar:g} bar at {at}")
@@ -189,7 +196,10 @@ class BenchLease(StateFolderThread):
         # absolute: the next command may run from another folder
         self.marker = Marker(bench_key, str(Path(run_path).resolve()), started_utc, asdict(me))
         folder = _folder(bench_key)
-        self.path = folder / f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}.json"
+        # one per run: a marker a run leaves (its vent not verified, its record refused) stays
+        # beside those of the later runs of the same process until that process has ended
+        self.path = folder / (f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}-"
+                              f"{bench_folder_name(Path(run_path).name)}.json")
 
         def first() -> None:
             folder.mkdir(parents=True, exist_ok=True)
@@ -224,6 +234,12 @@ class BenchLease(StateFolderThread):
         self.marker.unfollowed_bar = unfollowed_bar
         self._write()
 
+    def ended(self, outcome: dict) -> None:
+        """The run's run.json refused its outcome: the marker stays and keeps it, for the next
+        command on the bench to write (:func:`mend_run`)."""
+        self.marker.outcome = outcome
+        self._write()
+
     def release(self) -> None:
         self.path.unlink(missing_ok=True)
 
@@ -241,34 +257,69 @@ def find_unvented(bench_key: str) -> list[tuple[Path, Marker]]:
         except (OSError, ValueError, TypeError, KeyError, AttributeError):
             continue  # unreadable: not ours to judge (written by another version?)
         if not alive:
+            marker.outcome = _outcome(marker.outcome)
             found.append((path, marker))
     return found
 
 
-def vent_unvented(backend, found: list[tuple[Path, Marker]]) -> list[Marker]:
+def _outcome(kept) -> dict | None:
+    """The outcome a marker kept (:meth:`BenchLease.ended`), or None when it holds none that a
+    run ends with (the run is then mended as killed)."""
+    try:
+        status = RunStatus(kept["status"])
+        reason, ended = kept["reason"], kept.get("ended_utc")
+    except (KeyError, TypeError, ValueError, AttributeError):
+        return None
+    written = (RunStatus.RUNNING, RunStatus.INCOMPLETE, RunStatus.KILLED, RunStatus.IMPORTED)
+    if status in written or not isinstance(reason, str) or not isinstance(ended, str | None):
+        return None
+    return {"status": status.value, "reason": reason, "ended_utc": ended,
+            "manual_vent_required": kept.get("manual_vent_required") is True}
+
+
+def vent_unvented(backend, found: list[tuple[Path, Marker]], on_state_folder
+                  ) -> list[Marker]:
     """Vent a bench left pressurised by a dead run, before anything else happens on it.
 
     ``found``: the dead runs' markers, looked for by the bench's owner before the device was
     opened (:meth:`mkm.bench.ownership.BenchOwner.dead_runs`, bounded: a state folder that
     hangs refuses the command untouched). Call it right after ``backend.open()`` (which
     already wrote the vent): the vent is written again here, explicitly, and only once it
-    succeeded are the dead runs' markers removed. Returns those markers for the caller to
-    report.
+    succeeded are the dead runs' folders mended and their markers removed, by
+    ``on_state_folder`` (:meth:`mkm.bench.ownership.BenchOwner.on_state_folder`: a thread
+    waited for within a bound, so a state folder or a run folder that hangs holds that thread,
+    never the command; each marker's ``mended`` then says what is left to do). Returns those
+    markers for the caller to report; an ``OSError`` of the state folder is raised.
     """
     if not found:
         return []
     backend.write_command(0.0)
-    for path, marker in found:
-        marker.mended = mend_run(marker)
-        path.unlink(missing_ok=True)
+
+    def forget() -> list[str]:
+        mended = []
+        for path, marker in found:
+            mended.append(mend_run(marker))
+            path.unlink(missing_ok=True)
+        return mended
+
+    done, mended = on_state_folder(forget, "the dead runs' folders were mended and their "
+                                   "markers removed")
+    if isinstance(mended, BaseException):
+        raise mended
+    if not done:
+        mended = [f"{mended}: not yet done, done once it answers (the bench is let go after "
+                  "it, or as this process ends)"] * len(found)
+    for (_, marker), said in zip(found, mended, strict=True):
+        marker.mended = said
     return [marker for _, marker in found]
 
 
 def mend_run(marker: Marker) -> str:
     """Make the run folder of a dead run tell the truth, once its bench is vented: a run.json
     still ``running`` becomes ``killed``, with the sample count of the rows on disk and the time
-    of death as far as known (samples.csv's last write). Returns what was done, in words."""
-    from mkm.bench.storage import RunStatus, load_run, read_meta, release_reserve
+    of death as far as known (samples.csv's last write), or takes the outcome the marker kept
+    when the run's own final write was refused. Returns what was done, in words."""
+    from mkm.bench.storage import load_run, read_meta, release_reserve
     from mkm.core.records import provenance
 
     path = Path(marker.run_path)
@@ -286,16 +337,26 @@ def mend_run(marker: Marker) -> str:
     csv = path / "samples.csv"
     died = (datetime.datetime.fromtimestamp(csv.stat().st_mtime, datetime.UTC)
             .isoformat(timespec="seconds") if csv.is_file() else marker.last_command_utc)
-    meta.status = RunStatus.KILLED
     meta.counters["samples"] = samples
-    meta.ended_utc = died or None
-    meta.reason = (f"its process (pid {marker.process.get('pid')}) died without closing the "
-                   f"record (killed or power lost), at about {died or 'an unknown time'}; its "
-                   f"last commanded pressure was {marker.last_command_bar:g} bar; vented by the "
-                   f"next command at {provenance()['date_utc']}")
+    outcome = marker.outcome
+    if outcome:
+        meta.status = RunStatus(outcome["status"])
+        meta.ended_utc = outcome["ended_utc"] or died or None
+        meta.manual_vent_required = outcome["manual_vent_required"]
+        meta.reason = (f"{outcome['reason']}; this outcome was refused by run.json as the "
+                       f"run ended, kept in its bench marker and written by the next command "
+                       f"at {provenance()['date_utc']}")
+    else:
+        meta.status = RunStatus.KILLED
+        meta.ended_utc = died or None
+        meta.reason = (f"its process (pid {marker.process.get('pid')}) died without closing "
+                       f"the record (killed or power lost), at about "
+                       f"{died or 'an unknown time'}; its last commanded pressure was "
+                       f"{marker.last_command_bar:g} bar; vented by the next command at "
+                       f"{provenance()['date_utc']}")
     release_reserve(path)  # the room it kept for its final record: this one
     try:
         write_json_atomic(path / "run.json", meta.as_dict())
     except OSError as exc:
         return f"its run.json could not be rewritten ({exc.strerror or exc}): not mended"
-    return f"run.json mended: status killed, {samples} samples on disk"
+    return f"run.json mended: status {meta.status}, {samples} samples on disk"

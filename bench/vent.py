@@ -4,14 +4,16 @@ is vented.
 A vent is only a command until the monitor confirms it: a regulator that sticks keeps its
 pressure whatever it is told. :func:`verify_vent` reads the pressure monitor (electronic
 regulator) until it is below ``safety.vent_below_bar``, for at most ``safety.vent_timeout_s``
-of sample time and wall time, judging only samples acquired after the vent write and only
-plausible ones (a live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: a monitor fault,
-never a vent, :meth:`mkm.bench.config.Regulator.monitor_fault`); with a manual regulator the
+of sample time and wall time (``daq.read_retries`` read timeouts in a row retried, as at 0 bar
+in a run), judging only samples acquired after the vent write and only plausible ones (a
+live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: a monitor fault, never a vent,
+:meth:`mkm.bench.config.Regulator.monitor_fault`); with a manual regulator the
 operator vents by hand and types the manometer reading, which must be below the same threshold.
 A check with a ``deadline`` (Windows ends a closed console's process within 5 s) stops at it,
 unverified, so the run can still be recorded. A monitor that already read below the threshold
-when the pressure interlock found it below its command (:func:`below_command`) verifies nothing:
-a monitor stuck at zero reads so whatever the muscle holds.
+when it was found below its command before the vent (:func:`below_command`; by the pressure
+interlock, or in its last reading before a stop) verifies nothing: a monitor stuck at zero reads
+so whatever the muscle holds.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ import math
 import time
 from dataclasses import asdict, dataclass
 
-from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected
+from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected, ReadTimeout
 
 
 def reading_bar(value: float) -> str:
@@ -58,8 +60,8 @@ class VentCheck:
 
 
 def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -> VentCheck:
-    """``check`` after the pressure interlock tripped with the monitor reading ``measured_bar``
-    below ``commanded_bar``.
+    """``check`` after the monitor read ``measured_bar`` below ``commanded_bar`` before the
+    vent (:meth:`mkm.bench.worker.Acquisition.unproven`).
 
     A monitor that read below the vent threshold then, and reads below it after the vent, has
     shown no fall: a monitor stuck at zero reads so whatever the muscle holds, so the check is
@@ -114,6 +116,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     rate = config.daq.sample_rate_hz
     n = max(1, int(round(0.1 * rate)))
     start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
+    timeouts, blind_s = 0, 0.0  # read timeouts in a row; the time they waited, in all
     try:  # samples acquired before the vent write say nothing about the vent
         stale = backend.available()
         if stale > 0:
@@ -127,7 +130,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         cut, now, read_s = deadline(), time.monotonic(), config.daq.read_timeout_s
         if cut is not None:
             if now >= cut:
-                waited = max(now - start, sample_time_s)
+                waited = max(now - start, sample_time_s + blind_s)
                 return VentCheck(False, pressure, below, waited, "monitor",
                                  f"cut short after {waited:.1f} s: the process is about to be "
                                  "ended (console closed)")
@@ -137,13 +140,21 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         except BufferOverflow:
             backend.recover()
             continue
+        except ReadTimeout as exc:  # at 0 bar, as in the run: daq.read_retries in a row
+            timeouts, blind_s = timeouts + 1, blind_s + read_s
+            waited = max(time.monotonic() - start, sample_time_s + blind_s)
+            if timeouts > config.daq.read_retries or waited > timeout_s:
+                return VentCheck(False, pressure, below, waited, "monitor",
+                                 f"{type(exc).__name__}: {exc}")
+            continue
         except BenchError as exc:
             return VentCheck(False, pressure, below, time.monotonic() - start, "monitor",
                              f"{type(exc).__name__}: {exc}", isinstance(exc, DaqDisconnected))
         record(block)
+        timeouts = 0
         monitor_V = float(block.volts[-1, 1])
         sample_time_s += n / rate
-        waited = max(time.monotonic() - start, sample_time_s)
+        waited = max(time.monotonic() - start, sample_time_s + blind_s)
         fault = config.regulator.monitor_fault(monitor_V) if math.isfinite(monitor_V) else None
         if fault:  # no reading of a working regulator: nothing is verified by it, and its
             # conversion (0 V: -1 bar) is no pressure: the last plausible reading is kept

@@ -114,6 +114,10 @@ class Acquisition:
         self.manometer_bar = math.nan
         self.measured_bar = math.nan  # the last plausible pressure read (see held_bar)
         self.next_index = 0
+        # added to the device's sample indices: its clock restarts at 0 on a fresh task after a
+        # loss (:meth:`restarted`), the run's indices go on
+        self._offset = 0
+        self._read_at = time.monotonic()  # when a block was last read
         self.vented = False  # the last command written was a successful vent
         self.written = False  # the last command asked for reached the device
         self.marker_lagged = False  # a pressure went out before its bench marker was written
@@ -121,6 +125,9 @@ class Acquisition:
         # (measured, commanded) [bar] when the follow interlock tripped with the pressure below
         # a pressure commanded: the vent check weighs the monitor's readings by it
         self.below_command: tuple[float, float] | None = None
+        # (measured, commanded) [bar] of the last plausible sample acquired under a pressure
+        # commanded (see :meth:`unproven`)
+        self._pressurised: tuple[float, float] | None = None
         self._pending_flags: list[str] = []
         self._reading = ("tare", -1, 0.0)  # phase, step and set pressure of the last block asked
         # the measured pressure has been off its command, and not moved towards it by more than
@@ -142,9 +149,10 @@ class Acquisition:
             try:
                 with self.guard():
                     block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
-                    rows = [self._sample(block.first_index + k, volts, phase, step, set_bar,
-                                         trips) for k, volts in enumerate(block.volts)]
-                    self.next_index = block.first_index + len(block.volts)
+                    first = self._first(block)
+                    rows = [self._sample(first + k, volts, phase, step, set_bar, trips)
+                            for k, volts in enumerate(block.volts)]
+                    self.next_index = first + len(block.volts)
                     if trips:  # acts first, keeps books after: the vent before the rows
                         tripped = self._vent_for(*trips[0])
                     self.recorder.samples(rows)  # queued: the disk is never waited for here
@@ -195,7 +203,7 @@ class Acquisition:
 
     def _overflowed(self, exc: BufferOverflow) -> None:
         """Restart after a buffer overflow and record the gap of the samples lost."""
-        resumed = self.backend.recover()
+        resumed = self.backend.recover() + self._offset
         lost = resumed - self.next_index
         self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
                               resumed / self.rate_hz, str(exc)))
@@ -215,10 +223,10 @@ class Acquisition:
         except BufferOverflow as exc:
             self._overflowed(exc)
             return
-        phase, step, set_bar = self._reading
-        self.recorder.samples([self._sample(block.first_index + k, volts, phase, step, set_bar)
+        phase, step, set_bar, first = *self._reading, self._first(block)
+        self.recorder.samples([self._sample(first + k, volts, phase, step, set_bar)
                                for k, volts in enumerate(block.volts)])
-        self.next_index = block.first_index + len(block.volts)
+        self.next_index = first + len(block.volts)
 
     def record_vent_check(self, block) -> str:
         """Record a block the vent check read (phase ``vent``, step -1, set 0 bar): the
@@ -226,20 +234,42 @@ class Acquisition:
         check recovered from) are a gap. No interlock is judged (the vent is commanded). The
         problem met, or "" (never raises: the check goes on)."""
         try:
-            if block.first_index > self.next_index:
-                lost = block.first_index - self.next_index
+            first = self._first(block)
+            if first > self.next_index:
+                lost = first - self.next_index
                 self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
-                                      block.first_index / self.rate_hz,
-                                      "samples lost during the vent check"))
+                                      first / self.rate_hz, "samples lost during the vent check"))
                 self._pending_flags.append("gap")
-            rows = [self._sample(block.first_index + k, volts, "vent", -1, 0.0)
+            rows = [self._sample(first + k, volts, "vent", -1, 0.0)
                     for k, volts in enumerate(block.volts)]
-            self.next_index = block.first_index + len(block.volts)
+            self.next_index = first + len(block.volts)
             self.recorder.samples(rows)
         except Exception as exc:
             return (f"the samples of the vent check could not be recorded "
                     f"({type(exc).__name__}: {exc})")
         return ""
+
+    def _first(self, block) -> int:
+        """The run's index of ``block``'s first sample (the device's, after a restart offset);
+        the block is noted as read now."""
+        self._read_at = time.monotonic()
+        return block.first_index + self._offset
+
+    def restarted(self) -> None:
+        """The device was lost, reset and given a fresh AI task (``revive``): its sample clock
+        restarts at 0. The samples acquired since the last read are lost with it (a gap, of
+        the time since that read: a lower bound), the device's indices from now on follow the
+        run's, and what the fresh task reads was acquired after the revive's vent."""
+        lost = int((time.monotonic() - self._read_at) * self.rate_hz)
+        if lost > 0:
+            self.recorder.gap(Gap(self.next_index - 1, lost, self.next_index / self.rate_hz,
+                                  (self.next_index + lost) / self.rate_hz,
+                                  "the device was lost and reset: the samples acquired "
+                                  "meanwhile went with it"))
+            self._pending_flags.append("gap")
+            self.next_index += lost
+        self._offset = self.next_index
+        self._reading = ("vent", -1, 0.0)
 
     def _sample(self, index: int, volts, phase: str, step: int, set_bar: float,
                 trips: list[tuple[str, RunStatus]] | None = None) -> Sample:
@@ -250,8 +280,11 @@ class Acquisition:
         monitor_V = float(volts[1]) if self.electronic else math.nan
         pressure = float(reg.monitor_bar(monitor_V)) if self.electronic else self.manometer_bar
         force = (cell_V - self.tare_offset_V) * self.cell.sensitivity_N_per_V
+        commanded = self._commanded_at(index) if self.electronic else math.nan
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
             self.measured_bar = pressure
+            if commanded > 0 and phase != "vent":  # the vent check's come after the vent
+                self._pressurised = (pressure, commanded)
         flags, self._pending_flags = self._pending_flags, []
         if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
             flags.append("nonfinite")
@@ -267,8 +300,7 @@ class Acquisition:
             if trip:
                 flags.append("interlock")
                 trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
-        return Sample(index, index / self.rate_hz, step, phase, set_bar,
-                      self._commanded_at(index) if self.electronic else math.nan, pressure,
+        return Sample(index, index / self.rate_hz, step, phase, set_bar, commanded, pressure,
                       cell_V, monitor_V, force, "|".join(flags))
 
     def _commanded_at(self, index: int) -> float:
@@ -370,6 +402,22 @@ class Acquisition:
             stop.__cause__ = exc
             return stop
         return Stop(status, f"{message}; vented")
+
+    def unproven(self) -> tuple[float, float] | None:
+        """(measured, commanded) [bar] by which the vent check weighs the monitor's readings
+        (:func:`mkm.bench.vent.below_command`): the follow interlock's, or, when a stop, another
+        interlock or a fault ended the run first, the last plausible reading acquired under a
+        pressure commanded if it was below that command by more than the tolerance (a monitor
+        frozen near zero reads so from the first sample; the run may end before the follow
+        interlock trips). None: the monitor followed its command."""
+        if self.below_command is not None:
+            return self.below_command
+        if self._pressurised is None:
+            return None
+        measured, commanded = self._pressurised
+        if commanded - measured > self.config.safety.pressure_tolerance_bar:
+            return measured, commanded
+        return None
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its

@@ -548,6 +548,28 @@ def test_a_read_timeout_while_pressurised_vents_at_once(config, tmp_path):
     assert run.commands["purpose"].iloc[-1] == "vent" and run.meta.vent_check["verified"]
 
 
+@pytest.mark.parametrize("timeouts", [3, 4])
+def test_read_timeouts_in_the_vent_check_are_retried_as_at_0_bar(config, tmp_path, timeouts):
+    # the reads time out 3 times in a row from 5 s, as the 0.5 bar step is commanded: the first
+    # trips the read interlock, which vents; the vent check gave up at its first timeout and
+    # asked for a vent by hand (exit 4) while the regulator exhausted the muscle. Now it
+    # retries daq.read_retries (2) timeouts in a row, as the run does at 0 bar, and verifies
+    # the vent; a third in a row still gives up
+    c = config.replace(sim={"faults": {"read_timeout_at_s": 5.0, "read_timeouts": timeouts}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    run = load_run(result.path)
+    assert result.status == "failed" and "read interlock: no reading within 2 s" in result.reason
+    check = run.meta.vent_check
+    if timeouts - 1 <= c.daq.read_retries:
+        assert result.exit_code == 1 and not result.manual_vent_required, result.reason
+        assert check["verified"] and check["pressure_bar"] < c.safety.vent_below_bar
+    else:
+        assert result.exit_code == 4 and result.manual_vent_required
+        assert "the vent could not be verified (ReadTimeout: simulated read timeout" \
+            in result.reason
+        assert not check["verified"]
+
+
 # 8. hardware commands say what they drive ---------------------------------------------------
 
 @pytest.mark.parametrize("argv", [["vent"], ["tare"], ["calibrate-loadcell", "--masses", "0,1"]])

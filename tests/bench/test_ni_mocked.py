@@ -281,6 +281,25 @@ def test_a_device_back_after_a_reset_is_vented_and_verified(config, fake_driver,
     assert fake_driver.bench.target_bar == 0.0
 
 
+def test_the_samples_after_a_reset_follow_the_runs_on_its_clock(config, fake_driver, tmp_path):
+    # the fresh AI task after a reset counts its samples from 0 again: the vent check's rows
+    # were recorded as samples 0-8 after sample 29, at 0-0.8 s, under the 0.5 bar command of
+    # the samples those indices had named, so samples.csv ran backwards. Now they follow the
+    # run's samples (after a gap for the time the device was gone, when it took a sample's)
+    _lost_after(fake_driver, 30)
+    fake_driver.interpreter.reset_device.side_effect = fake_driver.reconnect
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"], result.reason
+    samples = run.samples
+    assert (samples["sample"].diff().dropna() > 0).all()
+    assert (samples["time_s"].diff().dropna() > 0).all()
+    vent = samples[samples["phase"] == "vent"]
+    assert len(vent) > 0 and vent["sample"].min() >= 30
+    assert (vent["command_bar"] == 0.0).all()
+    assert run.meta.counters["samples"] == len(samples)
+
+
 def test_a_device_that_stays_lost_asks_for_a_vent_by_hand_within_the_bound(
         config, fake_driver, tmp_path, instant_clock):
     _lost_after(fake_driver, 30)  # and every reset finds the device absent (-200324)

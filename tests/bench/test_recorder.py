@@ -423,6 +423,69 @@ def test_rows_are_synced_to_the_disk_every_second_while_the_run_goes(config, tmp
     assert max(gaps[:-1]) <= config.daq.sample_rate_hz * recorder.SYNC_EVERY_S + 1, gaps
 
 
+def test_rows_are_synced_to_the_disk_when_the_acquisition_stalls(config, tmp_path,
+                                                                 monkeypatch):
+    # the rows were synced only at a write a second after the last sync: a DAQ read that hangs
+    # (no new rows) left the last ones in the operating system's cache, lost to a power cut
+    # for as long as it hung. Now the recorder's thread syncs them SYNC_EVERY_S after the last
+    # sync whatever comes. Here the read of sample 45 hangs until the rows before it are synced
+    # (the test's net: 60 s)
+    import os
+    import threading
+
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    backend = SimBackend(config)
+    read, synced, hung = backend.read, threading.Event(), {}
+
+    def hanging(n, timeout):
+        if backend._index == 45 and not hung:
+            hung["rows"] = 45
+            hung["synced"] = synced.wait(60)
+        return read(n, timeout)
+
+    fsync = os.fsync
+
+    def spy(fd):
+        fsync(fd)
+        f = run.recorder.writer._files.get("samples", (None,))[0] if run.recorder else None
+        if hung and f is not None and not f.closed and fd == f.fileno() and \
+                run.recorder.meta.counters["samples"] == hung["rows"]:
+            synced.set()
+
+    backend.read = hanging
+    monkeypatch.setattr(os, "fsync", spy)
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    assert result.status == "complete", result.reason
+    assert hung["synced"], "the rows written before the read hung were not synced"
+
+
+def test_every_write_of_the_rows_is_the_recorders_threads(config, tmp_path, monkeypatch):
+    # the recorder's thread syncs the rows on its own once a second has passed; the last try
+    # of the rows a full disk refused was made by the run's thread, which could then write
+    # samples.csv while the recorder's thread synced or reopened it
+    import errno
+    import threading
+
+    from mkm.bench.run import acquire
+
+    appended, append = [], RunWriter.append_samples
+
+    def full_from_40(self, rows):
+        appended.append(threading.current_thread().name)
+        if rows[-1].sample >= 40:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        append(self, rows)
+
+    monkeypatch.setattr(RunWriter, "append_samples", full_from_40)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 2
+    assert "samples could not be written" in result.reason  # the last try was made
+    assert set(appended) == {"mkm-recorder"}
+
+
 def test_a_marker_update_queued_behind_a_vent_is_not_a_slow_state_folder(config, tmp_path,
                                                                          monkeypatch):
     # the vent's marker update (never waited for) is still queued when the next pressure is

@@ -111,6 +111,57 @@ def test_a_monitor_frozen_at_zero_does_not_verify_the_vent(config, tmp_path, fro
     assert "proves nothing" in json.loads(marker.read_text())["vent_unverified"]
 
 
+@pytest.mark.parametrize("stop", ["Ctrl-C", "mkm vent asking"])
+def test_a_stop_before_the_follow_interlock_trips_does_not_verify_with_a_frozen_monitor(
+        config, tmp_path, stop):
+    # the monitor reads 0 bar whatever the pressure; the run is stopped at 4.5 s, 2.5 s into
+    # the 0.5 bar step, before the follow interlock's 5 s: the vent check read the same 0 bar
+    # and called the vent verified (exit 130, marker removed) while the muscle held 0.39 bar
+    c = config.replace(sim={"truth": {"monitor_stuck_bar": 0.0}})
+    backend = SimBackend(c)
+    read = backend.read
+
+    def stopped_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop(None if stop == "Ctrl-C" else "mkm vent (pid 1)")
+        return block
+
+    backend.read = stopped_at_45
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert "pressure interlock" not in result.reason  # the stop came first
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "0.5 bar commanded before the vent, so its reading after it proves nothing" \
+        in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
+    check = load_run(result.path).meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] == 0.5
+    # the truth: one 0.1 s sample of exhaust (tau 0.4 s) after the vent from 0.5 bar
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-0.25), abs=1e-3)
+    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked, unproven
+    assert json.loads(marker.read_text())["unfollowed_bar"] == 0.5
+
+
+def test_a_stop_with_a_following_monitor_verifies_the_vent(config, tmp_path):
+    # the same stop with a monitor that reads the 0.5 bar: its fall after the vent verifies it
+    backend = SimBackend(config)
+    read = backend.read
+
+    def stopped_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()
+        return block
+
+    backend.read = stopped_at_45
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert result.status == "aborted" and result.exit_code == 130, result.reason
+    check = load_run(result.path).meta.vent_check
+    assert check["verified"] and check["unfollowed_bar"] is None
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
@@ -298,6 +349,56 @@ def test_a_full_disk_at_the_final_write_is_exit_2_and_said(tmp_path, mkm_cli, mo
     assert code == 2
     assert "run.json could not be written (OSError: [Errno 28] No space left on device)" in err
     assert load_run(Path(out.strip())).status == "running"  # this process: still alive
+
+
+@pytest.mark.parametrize("refusal", [OSError(errno.ENOSPC, "No space left on device"),
+                                     PermissionError(errno.EACCES, "Permission denied")])
+def test_a_final_record_refused_for_good_is_kept_in_the_marker_and_written_next(
+        config, tmp_path, monkeypatch, refusal):
+    # the disk refuses run.json's final write for good (full, or no permission): the run
+    # vented and said so on stderr, but run.json said `running` for ever and its marker was
+    # removed, so nothing ever wrote the outcome. Now the bench marker keeps it, and the next
+    # command on the bench writes it into run.json once the run's process has ended
+    from mkm.bench import procedures, recorder
+
+    monkeypatch.setattr(recorder, "LOCKED_RETRY_S", 0.0)
+    write, refusing = RunWriter.write_meta, [True]
+
+    def refused_at_the_end(self, meta):
+        if meta.status != "running" and refusing:
+            raise refusal
+        write(self, meta)
+
+    monkeypatch.setattr(RunWriter, "write_meta", refused_at_the_end)
+    result = acquire(config, out_root=tmp_path, **QUIET)
+    assert result.status == "complete" and result.exit_code == 2
+    assert f"run.json could not be written ({type(refusal).__name__}: " in result.reason
+    assert result.reason.endswith("run.json still says running: the outcome is kept in the "
+                                  f"bench marker {next(_folder('sim-Dev1').glob('*.json'))}, "
+                                  "and the next command on this bench writes it there")
+    assert load_run(result.path).status == "running"  # this process: still alive
+    (path,) = _folder("sim-Dev1").glob("*.json")
+    marker = json.loads(path.read_text())
+    assert marker["outcome"]["status"] == "complete"
+    assert marker["outcome"]["reason"].startswith("all 3 steps done; run.json could not be")
+    for written in (path, result.path / "run.json"):  # as if its process had ended
+        data = json.loads(written.read_text())
+        data["process"]["started_unix_s"] -= 100.0
+        written.write_text(json.dumps(data))
+    refusing.clear()  # the disk takes writes again
+    notes = []
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    (said,) = notes
+    assert f"run {result.path.resolve()} (started " in said
+    assert ", but its run.json refused that record: all 3 steps done; " in said
+    assert said.endswith("vented now; run.json mended: status complete, 213 samples on disk")
+    run = load_run(result.path)
+    assert run.status == "complete" and not run.meta.manual_vent_required
+    assert run.reason.startswith(marker["outcome"]["reason"])
+    assert "; this outcome was refused by run.json as the run ended, kept in its bench marker " \
+        "and written by the next command at " in run.reason
+    assert run.meta.counters["samples"] == len(run.samples) == 213  # the run's 203, the check's 10
+    assert not list(_folder("sim-Dev1").glob("*.json"))
 
 
 def test_a_full_disk_at_the_start_leaves_no_folder_and_says_so(tmp_path, mkm_cli, monkeypatch):

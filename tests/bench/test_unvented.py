@@ -209,3 +209,121 @@ def test_mkm_vent_after_a_monitor_that_did_not_follow_does_not_call_the_vent_ver
     data.update(vent_unverified="", unfollowed_bar=None, last_command_bar=1.0)
     path.write_text(json.dumps(data))
     assert vent(config, notify=notes.append)["vented"]
+
+
+@pytest.fixture
+def dead_marker_hangs(tmp_path, monkeypatch):
+    """A marker of a run that died with 1 bar commanded; the state folder hangs as it is
+    removed, until the yielded event is set (the searches before it answer as usual; the wait
+    for the removal is 0 s: the hang is certain)."""
+    from mkm.bench import ownership
+    from mkm.bench.ownership import BenchOwner
+
+    lease = BenchLease("sim-Dev1", tmp_path / "dead-run", "2026-12-01T10:00:00+00:00")
+    lease.started()
+    lease.command(1.0)
+    data = json.loads(lease.path.read_text())
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    lease.path.write_text(json.dumps(data))
+    release, unlink, dead_runs = threading.Event(), Path.unlink, BenchOwner.dead_runs
+
+    def hanging(self, *args, **kwargs):
+        if self == lease.path:
+            release.wait(120)  # released by the test
+        return unlink(self, *args, **kwargs)
+
+    def found(self, *args, **kwargs):
+        markers = dead_runs(self, *args, **kwargs)
+        monkeypatch.setattr(ownership, "STATE_START_S", 0.0)
+        return markers
+
+    monkeypatch.setattr(Path, "unlink", hanging)
+    monkeypatch.setattr(BenchOwner, "dead_runs", found)
+    try:
+        yield release, lease.path
+    finally:
+        release.set()
+
+
+NOT_REMOVED = ("did not answer within 0 s as the dead runs' folders were mended and their "
+               "markers removed (it hangs): not yet done, done once it answers (the bench is let "
+               "go after it, or as this process ends)")
+
+
+@pytest.mark.parametrize("command", ["acquire", "vent"])
+def test_a_state_folder_that_hangs_as_a_dead_runs_marker_is_removed_does_not_hold_the_command(
+        command, config, tmp_path, dead_marker_hangs):
+    # the next command found the dead run, vented, and removed its marker in the state folder,
+    # which hangs from then on (a roaming profile on a network share): the command never
+    # returned. Now the removal is waited for within a bound, the run is named with what is
+    # left to do, and the command goes on; the marker goes once the folder answers
+    from mkm.bench import procedures
+    from mkm.bench.run import acquire
+
+    release, marker = dead_marker_hangs
+    notes, out = [], {}
+    worker = threading.Thread(target=lambda: out.update(result=acquire(
+        config, out_root=tmp_path / "runs", notify=notes.append) if command == "acquire" else
+        procedures.vent(config, notify=notes.append, stop_wait_s=0.0)), daemon=True)
+    worker.start()
+    worker.join(60)
+    hung = worker.is_alive()
+    release.set()
+    worker.join(120)
+    assert not hung, "the command waited for the hung state folder"
+    said = [n for n in notes if "dead-run" in n]
+    assert len(said) == 1 and "ended without venting; its last commanded pressure was 1 bar" \
+        in said[0]
+    assert ": vented now; the bench state folder " in said[0] and said[0].endswith(NOT_REMOVED)
+    result = out["result"]
+    if command == "acquire":
+        assert result.status == "complete" and result.exit_code == 0, result.reason
+        assert [m.run_path for m in result.unvented_before] == [str(tmp_path / "dead-run")]
+    else:
+        assert result["vented"] and result["pressure_bar"] < config.safety.vent_below_bar
+    for _ in range(600):  # the marker goes once the folder answers (the test's own bound)
+        if not marker.exists():
+            break
+        threading.Event().wait(0.1)
+    assert not marker.exists()
+
+
+def test_a_marker_left_by_a_run_is_kept_through_the_next_run_of_the_same_process(config,
+                                                                                 tmp_path):
+    # a run whose vent is not verified keeps its marker for the next command; a second run in
+    # the same process (the Python API, `mkm demo`) wrote its own marker in the same file and
+    # removed it as it ended, so nothing named the first run once the process had ended. Now
+    # each run has a marker of its own
+    from mkm.bench.run import acquire
+
+    stuck = acquire(config.replace(sim={"faults": {"regulator_stuck_at_s": 4.0}}),
+                    out_root=tmp_path / "runs", notify=lambda m: None)
+    assert stuck.manual_vent_required
+    after = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert after.status == "complete", after.reason
+    (path,) = _folder("sim-Dev1").glob("*.json")
+    data = json.loads(path.read_text())
+    assert data["run_path"] == str(stuck.path.resolve()) and data["vent_unverified"]
+    data["process"]["started_unix_s"] -= 100.0  # as if the process had ended
+    path.write_text(json.dumps(data))
+    ((_, marker),) = find_unvented("sim-Dev1")
+    assert "but its vent was not verified: the monitor still reads 0.49" in marker.describe()
+
+
+@pytest.mark.parametrize("kept", [{"status": "running", "reason": "r", "ended_utc": None},
+                                  {"status": "done", "reason": "r", "ended_utc": None},
+                                  {"status": "failed", "reason": 3, "ended_utc": None},
+                                  {"status": "failed"}, ["failed"], "failed"])
+def test_a_kept_outcome_that_is_none_a_run_ends_with_is_ignored(tmp_path, kept):
+    # a marker edited by hand or by another version: the dead run is still named and vented,
+    # and mended as killed, never with a status a run does not end with
+    lease = BenchLease("sim-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
+    lease.started()
+    lease.command(1.0)
+    lease.ended(kept)
+    data = json.loads(lease.path.read_text())
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    lease.path.write_text(json.dumps(data))
+    ((_, marker),) = find_unvented("sim-Dev1")
+    assert marker.outcome is None
+    assert "ended without venting; its last commanded pressure was 1 bar" in marker.describe()
