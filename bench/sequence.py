@@ -100,6 +100,20 @@ class TareInvalid(BenchError):
     """The tare at 0 bar is not usable: the run must not start."""
 
 
+def check_vented_monitor(tare: dict, config: BenchConfig) -> None:
+    """:class:`TareInvalid` when the monitor reads, vented, further from 0 than
+    ``safety.vent_below_bar``: no vent of the run could be verified by it (reading high, every
+    vent check would fail with the muscle empty; reading low, it would pass with the muscle
+    holding that much)."""
+    mean = tare.get("monitor_vented_bar")
+    below = config.safety.vent_below_bar
+    if mean is not None and abs(mean) > below:
+        raise TareInvalid(f"tare invalid: the pressure monitor reads {mean:+.3f} bar with the "
+                          f"regulator vented, beyond safety.vent_below_bar={below:g}: it cannot "
+                          "verify a vent (its zero is off, its wiring or scaling is wrong, or the "
+                          "muscle is not open to the air); nothing was pressurised")
+
+
 def validate_tare(cell_V, config: BenchConfig) -> dict:
     """The tare of load-cell volts ``cell_V`` read at 0 bar, or :class:`TareInvalid` saying why.
 
@@ -256,6 +270,7 @@ class Staircase:
         tare = validate_tare(volts, self.config)
         if self.config.regulator.electronic:  # a manual regulator's readings are typed
             tare.update(vented_monitor(monitor))
+            check_vented_monitor(tare, self.config)
         self.acq.tare_offset_V = tare["offset_V"]
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
         for warning in (rest_warning(tare, self.config),

@@ -237,6 +237,20 @@ def test_the_tare_reads_the_monitors_zero_and_says_one_beyond_its_bound(config, 
     assert not any("vented, beyond" in m for m in quiet)
 
 
+def test_a_monitor_that_cannot_verify_a_vent_stops_the_run_at_the_tare(config, tmp_path):
+    # 0.2 bar high vented: every vent check of the run would fail with the muscle empty (and
+    # 0.08 bar low, pass with it holding 0.08 bar; lower, the 1-5 V output is a fault below
+    # 0.9 V): refused before any pressure
+    for offset in (0.2, -0.08):
+        bad = config.replace(sim={"truth": {"monitor_offset_bar": offset}})
+        result = acquire(bad, out_root=tmp_path, notify=lambda message: None)
+        run = load_run(result.path)
+        assert result.status == "failed" and "tare invalid: the pressure monitor reads" in \
+            result.reason and "beyond safety.vent_below_bar=0.05" in result.reason
+        assert (run.commands["command_bar"] == 0).all()  # never pressurised
+        assert (run.samples["phase"] == "tare").any()  # the tare's samples are kept
+
+
 def test_a_pressure_still_falling_at_the_tare_gives_no_zero():
     from mkm.bench.sequence import vented_monitor
 
