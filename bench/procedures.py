@@ -22,6 +22,7 @@ from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
 from mkm.bench.sequence import (
+    check_vented_monitor,
     monitor_zero_warning,
     rest_warning,
     settle_warning,
@@ -84,6 +85,7 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     out = validate_tare(volts[:, 0], config)
     if config.regulator.electronic:
         out.update(vented_monitor(config.regulator.monitor_bar(volts[:, 1])))
+        check_vented_monitor(out, config)  # as a run's tare: it would stop the run
     return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict(),
             "settle_warning": settle_warning(out["std_N"], config),
             "rest_warning": rest_warning(out, config),

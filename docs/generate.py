@@ -304,6 +304,9 @@ BENCHMARKS = {
     "identify_gap_wrong_bench.json": "benchmarks/bench_identify_gap.py --draws 8 --seed "
                                      "20261207 --wrong-bench --params "
                                      "theta0,rubber,gap,friction,creep,offset --out {out}",
+    "identify_gap_itemised.json": "benchmarks/bench_identify_gap.py --draws 8 --seed "
+                                  "20261207 --wrong-bench --itemised --params "
+                                  "theta0,rubber,gap,friction,creep,offset --out {out}",
     "identify_rest_length.json": "benchmarks/bench_identify_rest_length.py --out {out}",
     "identify_rest_length_wall.json": "benchmarks/bench_identify_rest_length.py --fits "
                                       "thickwall:theta0,rubber,L0,t0 --out {out}",

@@ -47,6 +47,8 @@ def test_calibrate_loadcell_refuses_a_mass_beyond_the_cells_capacity(config):
 
 
 def test_tare_on_the_sim(config):
+    from mkm.bench.sequence import TareInvalid
+
     out = tare(config, seconds=10.0)
     assert out["n"] == 100
     assert out["offset_V"] == pytest.approx(config.sim.loadcell_offset_V, abs=1e-3)  # 5 sigma
@@ -60,6 +62,9 @@ def test_tare_on_the_sim(config):
     off = tare(config.replace(sim={"truth": {"monitor_offset_bar": 0.046}}), seconds=10.0)
     assert off["monitor_vented_bar"] == pytest.approx(0.046, abs=0.002)
     assert "vented, beyond the +-0.04 bar" in off["monitor_warning"]
+    with pytest.raises(TareInvalid, match=r"monitor reads \+0\.2\d\d bar with the regulator "
+                                          r"vented, beyond safety.vent_below_bar=0.05"):
+        tare(config.replace(sim={"truth": {"monitor_offset_bar": 0.2}}), seconds=10.0)
 
 
 def test_check_lists_device_steps_and_duration(config):
