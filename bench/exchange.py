@@ -8,10 +8,11 @@
   (a ``time`` column) is stored as samples and its steps derived (:mod:`mkm.bench.series`: a
   staircase's plateaus as the bench judges them, or a ramp's quasi-static bins per branch), its
   force zeroed at its mean before the pressure rises and a vented pressure reading above
-  zero taken as the record's zero. ``imported_from`` in run.json records the source file's name
-  and SHA-256, the sheet, the columns and units recognised, the shape, the tare and the vented
-  reading. ``mkm report``, ``mkm fem calibrate --reference``, ``mkm identify`` and
-  ``mkm export`` read these runs like any other.
+  zero, up to a sensor's zero error (:data:`VENTED_AUTO_MAX_BAR`), taken as the record's
+  zero. ``imported_from`` in run.json records the source file's name and SHA-256, the sheet,
+  the columns and units recognised, the shape, the tare and the vented reading. ``mkm
+  report``, ``mkm fem calibrate --reference``, ``mkm identify`` and ``mkm export`` read these
+  runs like any other.
 - :func:`export_run`: a run folder as one Excel workbook (sheets ``steps``, ``samples``,
   ``metadata``) or as three CSV files, every text cell spreadsheet-safe. The workbook imports
   back to the run it was: steps, samples, calibration and tare.
@@ -88,6 +89,14 @@ ZERO_LIMITS = {"--tare": (-MAX_CAPACITY_N, MAX_CAPACITY_N,
                "--vented": (-INSTRUMENT_BOUNDS["monitor_offset_bar"][1],
                             PRACTICAL_RANGE.pressure_bar[1],
                             "a pressure sensor's offset below zero, the practical range above")}
+
+
+#: the largest vented reading ``--vented auto`` subtracts [bar]: a gauge's zero error, at most
+#: the offset a pressure sensor may have (as :data:`ZERO_LIMITS`). A record held higher at its
+#: start was pressurised when the logging began, or its sensor reads absolute pressure (the
+#: ambient 0.5-1.05 bar): the data cannot tell these apart, and a pressure column is a gauge
+#: pressure, so its readings are kept and the option that says otherwise is named
+VENTED_AUTO_MAX_BAR = INSTRUMENT_BOUNDS["monitor_offset_bar"][1]
 
 
 #: what a given zero may look like typed with its unit (for the messages)
@@ -561,6 +570,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              "expected samples in time order")
         offset = series.vented_offset(time_s, pressure) if vented == "auto" else (
             0.0 if vented == "none" else float(vented))
+        if vented == "auto" and offset > VENTED_AUTO_MAX_BAR:
+            handling["held_at_start_bar"], offset = offset, 0.0
+            notes.append(f"the record starts held at {handling['held_at_start_bar']:.3g} bar, "
+                         f"more than a gauge's zero error ({VENTED_AUTO_MAX_BAR:g} bar): kept as "
+                         "the gauge pressure its column holds (the muscle pressurised when the "
+                         "logging began); if the sensor reads absolute pressure, import again "
+                         f"with --vented {handling['held_at_start_bar']:.3g}bar")
         handling["vented_reading_bar"] = offset
         handling["vented"] = ("detected" if vented == "auto" else
                               "none" if vented == "none" else "given")

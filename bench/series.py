@@ -3,8 +3,9 @@
 A lab's record is pressure and force sampled in time. Before any step is taken from it:
 
 - :func:`vented_offset`: the pressure the record reads while the muscle is vented (its first
-  samples, before the pressure starts to rise); a gauge that reads 0.5-1 bar at rest is
-  detected, and by default that reading is the record's zero;
+  samples, before the pressure starts to rise); a gauge that reads above zero at rest is
+  detected (:mod:`mkm.bench.exchange` takes it as the record's zero up to a sensor's zero
+  error);
 - :func:`tare`: the force's zero (a load cell is rarely at 0 N when the muscle is slack) is
   the mean force of the rest before the pressure rises, that rest ended where a fit in time
   puts the rise's start (:func:`rise_start`): the pressure's level there, not a band of

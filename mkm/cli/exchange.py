@@ -56,7 +56,8 @@ def register(subparsers) -> None:
                      "its unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series: "
-                     "detected at its start (auto), none, or a value [bar] (or with its unit: "
+                     "detected at its start (auto: up to a sensor's zero error; a record held "
+                     "higher is kept, pressurised), none, or a value [bar] (or with its unit: "
                      "1013mbar)")
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "

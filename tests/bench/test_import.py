@@ -119,7 +119,7 @@ def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
     assert one.meta.muscle.eps == pytest.approx(0.122)
 
 
-def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.6):
+def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
     """A lab's 100 Hz record: 2 s vented, 10 s up to 2.5 bar, 10 s down, 1 s vented; the gauge
     reads ``vented_bar`` at rest, the load cell ``tare_N``; noise 0.005 bar and 0.3 N."""
     rng = np.random.default_rng(seed)
@@ -140,7 +140,7 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     recorded = run.meta.imported_from
     assert recorded["shape"] == "ramp" and "quasi-static bins of a ramp" in err
     # the gauge's noise is 0.005 bar: its median over 2 s is within 0.002 of what it read
-    assert recorded["vented_reading_bar"] == pytest.approx(0.6, abs=0.002)
+    assert recorded["vented_reading_bar"] == pytest.approx(0.4, abs=0.002)
     # 200 vented samples of 0.3 N noise: the zero is within 0.1 N of the load cell's offset
     assert recorded["tare_N"] == pytest.approx(7.5, abs=0.1)
     samples = run.samples
@@ -389,6 +389,34 @@ def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm
         inside = (run.samples["step"] == step.step).to_numpy()
         assert step.force_N_mean == pytest.approx(thickwall_N(p[inside], 0.122).mean(),
                                                   rel=1e-5)  # 6 digits kept
+
+
+@pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
+def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
+                                                                         mkm_cli):
+    # the regulator not vented when the logging began: 5 s held at 1 bar, then up to 6 bar.
+    # Its first plateau was taken for a vented reading: 1 bar taken from every pressure, and
+    # the muscle's pull at 1 bar taken for the load cell's zero
+    rng = np.random.default_rng(3)
+    t = np.arange(0.0, 65.0, 0.1)
+    p = np.interp(t, [0, 5, 65], [1.0, 1.0, 6.0])
+    path = tmp_path / "pressurised.csv"
+    pd.DataFrame({"t (s)": t, header: p + rng.normal(0, 0.003, t.size),
+                  "F (N)": thickwall_N(p, 0.0)}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    assert recorded["vented_reading_bar"] == 0.0 and recorded["tare_N"] == 0.0
+    # the plateau's median over 50 samples of 0.003 bar noise
+    assert recorded["held_at_start_bar"] == pytest.approx(1.0, abs=0.002)
+    assert "the record starts held at 1 bar" in err and "--vented 1bar" in err
+    assert run.samples["pressure_bar"].max() == pytest.approx(6.0, abs=0.015)  # 5 noise widths
+    for step in run.steps.itertuples():  # each point the force of its own pressures
+        inside = (run.samples["step"] == step.step).to_numpy()
+        assert step.force_N_mean == pytest.approx(thickwall_N(p[inside], 0.0).mean(),
+                                                  rel=1e-5)
+    # a sensor that reads absolute pressure: the option the note names gives the gauge's
+    (absolute,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--vented", "1bar")
+    assert absolute.samples["pressure_bar"].max() == pytest.approx(5.0, abs=0.015)
 
 
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
