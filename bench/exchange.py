@@ -77,6 +77,9 @@ EXCEL_MAX_ROWS = 1_048_575  # below the header row
 EXPORT_SHEETS = ("steps", "samples", "metadata")
 #: ``--tare`` and ``--vented``: found in the data (auto), none, or a value given
 ZERO_CHOICES = ("auto", "none")
+#: ``--force-sign``: the table's forces as read (a muscle's pull positive), or negated (a load
+#: cell wired to read tension negative)
+FORCE_SIGNS = (1, -1)
 
 
 #: What a given zero may be [its unit], and why. A vented pressure sensor reads its offset: at
@@ -187,7 +190,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  columns: dict[str, str] | None = None, units: dict[str, str] | None = None,
                  sheet: str | None = None, tare: str | float = "auto",
                  vented: str | float = "auto", select: str | None = None,
-                 accuracy: dict[str, Declared] | None = None,
+                 accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
                  notify=lambda line: None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -215,6 +218,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         forces and pressures (:func:`parse_accuracy`). Each step then carries its uncertainty
         budget (:func:`mkm.bench.budget.declared_budget`), so ``mkm report`` scores E_n and
         ``mkm identify`` judges its fit; without it neither can.
+    force_sign : 1 or -1
+        -1: the table's forces negated (a load cell that reads the muscle's pull negative); a
+        ``tare`` given is as the table reads it.
     notify : callable
         Receives the line of what was recognised in each table.
 
@@ -222,6 +228,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     written then.
     """
     path = Path(path)
+    if force_sign not in FORCE_SIGNS:
+        raise ValueError(f"--force-sign {force_sign!r} is invalid: expected one of "
+                         f"{', '.join(map(str, FORCE_SIGNS))}")
     muscle = dict(muscle)
     tare, vented = parse_zero(tare, "--tare", "N"), parse_zero(vented, "--vented", "bar")
     exported = sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path))
@@ -275,7 +284,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
     sha = file_sha256(path)
-    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override)
+    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override, force_sign)
              for g, (m, override) in zip(groups, muscles, strict=True)]
     if exported and len(built) == 1 and not accuracy:
         built = [_restored(path, known, *built[0])]
@@ -552,12 +561,15 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
 
 
 def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
-           override=None):
+           override=None, force_sign=1):
     """The run record, steps, samples, notes and shape of one muscle state (``override``: what
     an option replaced of the table, said first)."""
     table, found = group.table, group.columns
-    pressure, force = group.values("pressure"), group.values("force")
+    pressure, force = group.values("pressure"), force_sign * group.values("force")
     notes, handling = ([override], {"L0": override}) if override else ([], {})
+    handling["force_sign"] = force_sign
+    if force_sign < 0:
+        notes.append("forces negated (--force-sign -1)")
     notes += filter(None, [PRACTICAL_RANGE.length_note(muscle.D0_mm, muscle.L0_mm),
                            PRACTICAL_RANGE.lock_note(muscle.eps)])
     timed = "time" in found
@@ -648,10 +660,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:
-        zero, handling["tare"] = float(tare), "given"
+        zero, handling["tare"] = force_sign * float(tare), "given"
         if zero >= float(np.nanmax(force)):  # every force <= 0: a muscle that never pulled
-            raise ValueError(f"{table.name}: --tare {zero:g} N is not below the largest force "
-                             f"of the table, {float(np.nanmax(force)):g} N: expected the force "
+            pull = ("largest", "below") if force_sign > 0 else ("smallest", "above")
+            raise ValueError(f"{table.name}: --tare {float(tare):g} N is not {pull[1]} the "
+                             f"{pull[0]} force of the table, "
+                             f"{force_sign * float(np.nanmax(force)):g} N: expected the force "
                              "read at 0 bar")
     handling["tare_N"] = zero
     if zero:
@@ -712,7 +726,10 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         low, high = int(np.argmin(pressure)), int(np.argmax(pressure))
         notes.append(f"the force falls as the pressure rises ({force[low]:.4g} N at "
                      f"{pressure[low]:g} bar, {force[high]:.4g} N at {pressure[high]:g} bar): "
-                     "a muscle pulls harder with pressure; is the load cell's sign reversed?")
+                     "a muscle pulls harder with pressure; "
+                     + ("--force-sign -1 negated them: import again without it" if force_sign < 0
+                        else "if the load cell reads the pull negative, import again with "
+                        "--force-sign -1"))
     now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
     prov = provenance()
     imported = {"file": path.name, "sha256": sha, "shape": shape, "state": group.state,

@@ -347,10 +347,33 @@ def test_a_force_that_falls_as_the_pressure_rises_is_questioned(tmp_path, capsys
     assert code == 0, err
     assert load_run(out.strip()).steps["force_N_mean"].tolist() == [0, -100, -200, -300]
     assert ("the force falls as the pressure rises (0 N at 0 bar, -300 N at 3 bar): a muscle "
-            "pulls harder with pressure; is the load cell's sign reversed?") in err
+            "pulls harder with pressure; if the load cell reads the pull negative, import "
+            "again with --force-sign -1") in err
     table.write_text("P [bar],F [N]\n0,0\n1,100\n2,200\n1,110\n0,3\n")
     code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
     assert code == 0 and "sign" not in err
+
+
+@pytest.mark.parametrize("tare", [[], ["--tare", "-2"]])
+def test_force_sign_minus_one_reads_a_cell_wired_for_tension_negative(tare, tmp_path, capsys):
+    # a load cell reading the muscle's pull negative, 2 N off at rest: every force was imported
+    # negative, and no option turned them
+    table = tmp_path / "tension-negative.csv"
+    table.write_text("P [bar],F [N]\n0,-2\n1,-102\n2,-202\n3,-302\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--force-sign", "-1", *tare,
+                           "--out", str(tmp_path / "runs")], capsys)
+    assert code == 0, err
+    run = load_run(out.strip())
+    # the table's -2 N at 0 bar, as read (or given as read), is the zero of the negated forces
+    assert run.steps["force_N_mean"].tolist() == [0, 100, 200, 300]
+    assert run.meta.imported_from["force_sign"] == -1
+    assert run.meta.imported_from["tare_N"] == 2.0
+    assert "forces negated (--force-sign -1)" in err and "falls as the pressure" not in err
+    code, _, err = _run(["import", str(table), *MUSCLE, "--force-sign", "2", "--out",
+                         str(tmp_path / "other")], capsys)
+    assert code == 2 and err == ("mkm import: error: --force-sign 2 is invalid: expected one "
+                                 "of 1, -1\n")
+    assert not (tmp_path / "other").exists()
 
 
 
