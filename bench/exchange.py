@@ -4,7 +4,9 @@
   ``.xlsx`` workbook, every sheet or one; columns found by name and unit by
   :mod:`mkm.bench.tables`, converted by pint) becomes run folders with status ``imported``:
   one per muscle state (a sheet, or a value of an eps, length, L0 or run-id column), all of one
-  muscle id. A step table (one row per held pressure) gives the steps as they are; a time series
+  muscle id. A step table (one row per held pressure) gives the steps as they are (a record
+  whose time column was left out is binned as a ramp, the table kept whole in its run folder:
+  :func:`mkm.bench.series.sampled_without_time`); a time series
   (a ``time`` column) is stored as samples and its steps derived (:mod:`mkm.bench.series`: a
   staircase's plateaus as the bench judges them, or a ramp's quasi-static bins per branch), its
   force zeroed at its mean before the pressure rises and a vented pressure reading above
@@ -24,6 +26,7 @@ import datetime
 import json
 import math
 import re
+import shutil
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -77,6 +80,9 @@ EXCEL_MAX_ROWS = 1_048_575  # below the header row
 EXPORT_SHEETS = ("steps", "samples", "metadata")
 #: ``--tare`` and ``--vented``: found in the data (auto), none, or a value given
 ZERO_CHOICES = ("auto", "none")
+#: the name (and the table's suffix) of the copy of a table kept in the run folder where its
+#: rows are no run folder's samples (a record without time, binned)
+TABLE_COPY = "imported_table"
 #: ``--force-sign``: the table's forces as read (a muscle's pull positive), or negated (a load
 #: cell wired to read tension negative)
 FORCE_SIGNS = (1, -1)
@@ -300,6 +306,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         for step in steps:
             writer.append_step(step)
         writer.close()
+        if copy := meta.imported_from.get("table_copy"):
+            shutil.copyfile(path, writer.path / copy)
         out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
     return out
 
@@ -696,6 +704,21 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                    for k, (t, s, p, f) in enumerate(zip(time_s, step_of, pressure, force,
                                                         strict=True))]
         notes.insert(0, f"{len(samples)} samples")
+    elif step_times is None and series.sampled_without_time(pressure):
+        # a record whose clock the table left out: its rows binned as a ramp's (by pressure,
+        # each branch apart), every row kept in the run folder as the table it came in
+        shape = "ramp"
+        steps, _, width = series.ramp_steps(np.arange(pressure.size, dtype=float), pressure,
+                                            force)
+        steps = [s._replace(start_s=math.nan, end_s=math.nan) for s in steps]
+        apart = float(np.median(np.abs(np.diff(pressure))))
+        handling["steps_from"] = (f"a record without time ({pressure.size} rows, successive "
+                                  f"readings {apart:.2g} bar apart, the median): quasi-static "
+                                  f"bins of {width:.3g} bar, rising and falling branches apart")
+        handling["table_copy"] = TABLE_COPY + path.suffix.lower()
+        notes.insert(0, f"{pressure.size} rows of a record without time (successive readings "
+                     f"{apart:.2g} bar apart): binned by {width:.3g} bar on each branch, every "
+                     f"row kept in {handling['table_copy']}")
     else:
         shape = "steps"
         std = group.values("force_std", optional=True) if "force_std" in found else \

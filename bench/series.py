@@ -52,6 +52,9 @@ RISE_WINDOW_BAR = 0.05
 SHORT_REST_SAMPLES = 10
 #: a ramp turns (up to down, or back) where the pressure comes back this share of its range
 TURN_SHARE = 0.1
+#: a table without time of more rows than this, its successive readings within a plateau's
+#: band, is a record sampled in time: binned as a ramp (a step table steps from row to row)
+RECORD_MIN_ROWS = 4 * RAMP_BINS
 
 
 @dataclass
@@ -115,6 +118,16 @@ def one_reading_per_step(time_s: np.ndarray) -> bool:
     apart (the median), too sparse for any hold to be a plateau (a logger writing each hold's
     mean, with its time)."""
     return time_s.size >= 2 and float(np.median(np.diff(time_s))) >= PLATEAU_MIN_S
+
+
+def sampled_without_time(pressure_bar: np.ndarray) -> bool:
+    """Whether a table without a time column is a record sampled in time, not one row per held
+    pressure: more than :data:`RECORD_MIN_ROWS` rows whose successive readings lie (the median)
+    within :data:`PLATEAU_TOLERANCE_BAR` of each other. A step table steps from row to row by
+    its pressure step; a 10 Hz record of a slow ramp moves a few thousandths of a bar, and its
+    rows as steps would be thousands of one-row steps for identify to fit."""
+    return pressure_bar.size > RECORD_MIN_ROWS and float(
+        np.median(np.abs(np.diff(pressure_bar)))) <= PLATEAU_TOLERANCE_BAR
 
 
 def branches(pressure_bar: np.ndarray) -> list[tuple[int, int, str]]:

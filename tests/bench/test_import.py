@@ -419,6 +419,41 @@ def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header
     assert absolute.samples["pressure_bar"].max() == pytest.approx(5.0, abs=0.015)
 
 
+def test_a_record_without_its_time_is_binned_not_a_step_per_row(tmp_path, mkm_cli):
+    # a 10 Hz record of a slow ramp, 0 -> 2.5 -> 0 bar in 200 s, saved without its time
+    # column: each of its 2000 rows was a step, and identify fitted them for 8 minutes
+    rng = np.random.default_rng(7)
+    n = 2000
+    p = np.interp(np.arange(n), [0, 50, 1000, 1950, n - 1], [0, 0, 2.5, 0, 0])
+    truth = thickwall_N(p, 0.0)
+    path = tmp_path / "untimed.csv"
+    pd.DataFrame({"Pressure (bar)": np.clip(p + rng.normal(0, 0.003, n), 0, None),
+                  "Force (N)": truth + 4.0 + rng.normal(0, 0.3, n)}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    steps = run.steps
+    # 20 bins of 0.125 bar over the range, on each branch
+    assert recorded["shape"] == "ramp" and len(steps) <= 2 * 20
+    assert set(steps["direction"]) == {"up", "down"} and steps["n"].sum() >= n - 2 * 20
+    assert "2000 rows of a record without time" in err and "imported_table.csv" in err
+    assert (run.path / "imported_table.csv").read_bytes() == path.read_bytes()
+    # the zero: the rising branch's rows at 0 bar (the vented rest's noise below 0 set to 0)
+    assert recorded["tare_N"] == pytest.approx(4.0, abs=0.2)
+    # each bin's mean within 0.125 bar of its mean pressure: thick-wall's force is near linear
+    # in pressure there (its curvature over a bin < 1 N), plus the tare's error and the noise
+    for step in steps.itertuples():
+        assert step.force_N_mean == pytest.approx(
+            thickwall_N([step.pressure_bar_mean], 0.0)[0], abs=1.0 + 0.2 + 4 * 0.3 /
+            np.sqrt(step.n)), step
+    # a step table of 0.05 bar steps is still a step per row
+    fine = np.r_[np.arange(0.0, 2.5, 0.05), np.arange(2.5, -0.01, -0.05)]
+    steps_path = tmp_path / "fine.csv"
+    pd.DataFrame({"P (bar)": fine, "F (N)": thickwall_N(fine, 0.0)}).to_csv(steps_path,
+                                                                             index=False)
+    (table,), _ = _import(mkm_cli, steps_path, *MUSCLE, "--eps", "0")
+    assert len(table.steps) == fine.size and table.meta.imported_from["shape"] == "steps"
+
+
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     frame, _, _ = _ramp()
     frame.to_csv(tmp_path / "ramp.csv", index=False)
