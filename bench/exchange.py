@@ -634,8 +634,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              "gauge pressure >= 0" + (" (--vented sets a vented reading to "
                                                       "subtract)" if timed else ""))
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
+    # a record whose time column was left out: binned as a ramp, its zero the rest before the
+    # rise as a timed record's (its rows evenly spaced in time), not one noisy row at 0 bar
+    record = step_times is None and not timed and series.sampled_without_time(pressure)
     if timed:
         rest = series.tare(time_s, pressure, force)
+        zero, zero_at = rest.force_N, rest.pressure_bar
+        handling["tare_at_bar"] = zero_at
+    elif record:
+        rest = series.tare(np.arange(pressure.size, dtype=float), pressure, force)
         zero, zero_at = rest.force_N, rest.pressure_bar
         handling["tare_at_bar"] = zero_at
     else:
@@ -665,6 +672,9 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                          "into the record; a vented rest of a second or more before it, or "
                          "--tare N, gives a surer zero")
         drift = _zero_drift(time_s, pressure, force, rest, handling)
+    elif tare == "auto" and record:
+        handling["tare"] = f"mean force of the {rest.rest.stop} row(s) before the pressure rises"
+        handling["tare_std_N"] = rest.std_N
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:
@@ -704,7 +714,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                    for k, (t, s, p, f) in enumerate(zip(time_s, step_of, pressure, force,
                                                         strict=True))]
         notes.insert(0, f"{len(samples)} samples")
-    elif step_times is None and series.sampled_without_time(pressure):
+    elif record:
         # a record whose clock the table left out: its rows binned as a ramp's (by pressure,
         # each branch apart), every row kept in the run folder as the table it came in
         shape = "ramp"
