@@ -596,7 +596,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                          f"more than a gauge's zero error ({VENTED_AUTO_MAX_BAR:g} bar): kept as "
                          "the gauge pressure its column holds (the muscle pressurised when the "
                          "logging began); if the sensor reads absolute pressure, import again "
-                         f"with --vented {handling['held_at_start_bar']:.3g}bar")
+                         f"with --vented {handling['held_at_start_bar']:.3f}bar")
         handling["vented_reading_bar"] = offset
         handling["vented"] = ("detected" if vented == "auto" else
                               "none" if vented == "none" else "given")
