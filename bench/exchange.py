@@ -52,6 +52,7 @@ from mkm.bench.tables import (
     directions,
     flags,
     key_values,
+    marked_gauge,
     read_tables,
     recognise,
     sheet_names,
@@ -591,12 +592,17 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         offset = series.vented_offset(time_s, pressure) if vented == "auto" else (
             0.0 if vented == "none" else float(vented))
         if vented == "auto" and offset > VENTED_AUTO_MAX_BAR:
-            handling["held_at_start_bar"], offset = offset, 0.0
-            notes.append(f"the record starts held at {handling['held_at_start_bar']:.3g} bar, "
-                         f"more than a gauge's zero error ({VENTED_AUTO_MAX_BAR:g} bar): kept as "
-                         "the gauge pressure its column holds (the muscle pressurised when the "
-                         "logging began); if the sensor reads absolute pressure, import again "
-                         f"with --vented {handling['held_at_start_bar']:.3f}bar")
+            held = handling["held_at_start_bar"] = offset
+            offset = 0.0
+            unit = found["pressure"].unit
+            notes.append(f"the record starts held at {held:.3g} bar, more than a gauge's zero "
+                         f"error ({VENTED_AUTO_MAX_BAR:g} bar): kept as the gauge pressure "
+                         + (f"its unit {unit!r} says (the muscle pressurised when the logging "
+                            f"began; --vented {held:.3f}bar would take it as the zero)"
+                            if marked_gauge(unit) else
+                            "its column holds (the muscle pressurised when the logging began); "
+                            "if the sensor reads absolute pressure, import again with --vented "
+                            f"{held:.3f}bar"))
         handling["vented_reading_bar"] = offset
         handling["vented"] = ("detected" if vented == "auto" else
                               "none" if vented == "none" else "given")
