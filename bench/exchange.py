@@ -721,20 +721,30 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                                                         strict=True))]
         notes.insert(0, f"{len(samples)} samples")
     elif record:
-        # a record whose clock the table left out: its rows binned as a ramp's (by pressure,
-        # each branch apart), every row kept in the run folder as the table it came in
-        shape = "ramp"
-        steps, _, width = series.ramp_steps(np.arange(pressure.size, dtype=float), pressure,
-                                            force)
-        steps = [s._replace(start_s=math.nan, end_s=math.nan) for s in steps]
+        # a record whose clock the table left out, its rows the clock: a staircase's plateaus,
+        # or a ramp's rows binned (by pressure, each branch apart); every row kept in the run
+        # folder as the table it came in
+        rows = np.arange(pressure.size, dtype=float)
+        held = series.held_plateaus(rows, pressure, min_s=series.RECORD_PLATEAU_ROWS)
+        shape = series.shape(rows, pressure, held)
         apart = float(np.median(np.abs(np.diff(pressure))))
-        handling["steps_from"] = (f"a record without time ({pressure.size} rows, successive "
-                                  f"readings {apart:.2g} bar apart, the median): quasi-static "
-                                  f"bins of {width:.3g} bar, rising and falling branches apart")
+        what = (f"a record without time ({pressure.size} rows, successive readings "
+                f"{apart:.2g} bar apart, the median)")
+        if shape == "staircase":
+            steps, _ = series.untimed_staircase_steps(pressure, force, held)
+            handling["steps_from"] = (f"{what}: plateaus of {series.RECORD_PLATEAU_ROWS} rows "
+                                      "or more, each averaged over its second half")
+            done = f"its {len(steps)} plateaus averaged over their second halves"
+        else:
+            steps, _, width = series.ramp_steps(rows, pressure, force)
+            steps = [s._replace(start_s=math.nan, end_s=math.nan) for s in steps]
+            handling["steps_from"] = (f"{what}: quasi-static bins of {width:.3g} bar, rising "
+                                      "and falling branches apart")
+            done = f"binned by {width:.3g} bar on each branch"
         handling["table_copy"] = TABLE_COPY + path.suffix.lower()
         notes.insert(0, f"{pressure.size} rows of a record without time (successive readings "
-                     f"{apart:.2g} bar apart): binned by {width:.3g} bar on each branch, every "
-                     f"row kept in {handling['table_copy']}")
+                     f"{apart:.2g} bar apart): {done}, every row kept in "
+                     f"{handling['table_copy']}")
     else:
         shape = "steps"
         std = group.values("force_std", optional=True) if "force_std" in found else \

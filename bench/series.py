@@ -19,6 +19,8 @@ ramp, and the steps are taken:
   (:func:`mkm.bench.sequence.settle_reached`, with the packaged configuration's ``[settle]``
   criteria) and its hold averaged by the bench's :class:`mkm.bench.sequence.HoldStats`; a
   plateau that never settles is averaged over its second half and recorded ``settled = false``;
+- :func:`untimed_staircase_steps`: the plateaus of a staircase recorded without its time (its
+  rows the clock), each averaged over its second half;
 - :func:`ramp_steps`: quasi-static points, the samples binned by pressure on each branch apart
   (:func:`branches`: rising and falling, each cycle of a repeated ramp its own), each bin a
   step with its samples' mean; a branch's bins follow each other in time, as the holds of a
@@ -55,6 +57,8 @@ TURN_SHARE = 0.1
 #: a table without time of more rows than this, its successive readings within a plateau's
 #: band, is a record sampled in time: binned as a ramp (a step table steps from row to row)
 RECORD_MIN_ROWS = 4 * RAMP_BINS
+#: a plateau of such a record holds at least this many rows (its time unknown: a second at 10 Hz)
+RECORD_PLATEAU_ROWS = 10
 
 
 @dataclass
@@ -237,10 +241,11 @@ def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) 
     return Tare(back.force_N, back.std_N, back.pressure_bar, slice(n - back.rest.stop, n))
 
 
-def held_plateaus(time_s: np.ndarray, pressure_bar: np.ndarray) -> list[Plateau]:
+def held_plateaus(time_s: np.ndarray, pressure_bar: np.ndarray,
+                  min_s: float = PLATEAU_MIN_S) -> list[Plateau]:
     """The plateaus above the vented level: the holds of a staircase."""
     low = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
-    return [q for q in plateaus(time_s, pressure_bar) if q.level_bar > low]
+    return [q for q in plateaus(time_s, pressure_bar, min_s=min_s) if q.level_bar > low]
 
 
 def shape(time_s: np.ndarray, pressure_bar: np.ndarray,
@@ -286,6 +291,30 @@ def staircase_steps(time_s, pressure_bar, force_N, settle_config,
             k, direction, repeats[key], round(q.level_bar, 4), hold.pressure_mean, hold.mean,
             hold.std, hold.n, settled, float(t[settle_at] - t[0]), float(t[0]), float(t[-1]),
             hold.drift_N))
+    return records, step_of
+
+
+def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]
+                            ) -> tuple[list[StepRecord], np.ndarray]:
+    """The steps of a staircase recorded without its time (its rows the clock: ``held`` found
+    with :data:`RECORD_PLATEAU_ROWS`), and each row's step (-1: between steps). Without time
+    the bench's settle test cannot judge a plateau: each is averaged over its second half, as
+    a plateau that never settles is, its start and end times unknown (NaN)."""
+    step_of = np.full(pressure_bar.size, -1)
+    records, previous = [], 0.0
+    repeats: dict[tuple[str, float], int] = {}
+    for k, q in enumerate(held):
+        direction = "up" if q.level_bar >= previous else "down"
+        previous = q.level_bar
+        hold = HoldStats()
+        for j in range((q.start + q.stop) // 2, q.stop):
+            hold.add(float(j), float(force_N[j]), float(pressure_bar[j]))
+        key = (direction, round(q.level_bar, 2))
+        repeats[key] = repeats.get(key, -1) + 1
+        step_of[q.start:q.stop] = k
+        records.append(StepRecord(
+            k, direction, repeats[key], round(q.level_bar, 4), hold.pressure_mean, hold.mean,
+            hold.std, hold.n, True, math.nan, math.nan, math.nan, hold.drift_N))
     return records, step_of
 
 

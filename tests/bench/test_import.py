@@ -469,6 +469,30 @@ def test_a_record_without_its_time_is_binned_not_a_step_per_row(tmp_path, mkm_cl
     assert len(table.steps) == fine.size and table.meta.imported_from["shape"] == "steps"
 
 
+def test_a_staircase_recorded_without_its_time_gives_its_plateaus(tmp_path, mkm_cli):
+    # 10 Hz, 0 -> 3 -> 0 bar in 0.5 bar holds of 10 s joined by 1 s ramps, saved without its
+    # time: binned by pressure, each 1 s ramp between two holds made steps of 2-4 rows
+    rng = np.random.default_rng(11)
+    levels = [0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 2.5, 2.0, 1.5, 1.0, 0.5, 0]
+    knots = [(11 * k + dt, level) for k, level in enumerate(levels) for dt in (0, 10)]
+    p = np.interp(np.arange(0, 11 * len(levels), 0.1), *zip(*knots, strict=True))
+    path = tmp_path / "staircase.csv"
+    pd.DataFrame({"P (bar)": np.abs(p + rng.normal(0, 0.004, p.size)),
+                  "F (N)": thickwall_N(p, 0.0) + rng.normal(0, 0.4, p.size)}).to_csv(
+        path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    steps = run.steps
+    assert run.meta.imported_from["shape"] == "staircase"
+    assert "its 11 plateaus averaged over their second halves" in err
+    np.testing.assert_allclose(steps["set_pressure_bar"], levels[1:-1], atol=0.002)
+    assert steps["direction"].tolist() == ["up"] * 6 + ["down"] * 5
+    # each the mean of its hold's second half, less the tare: 50 and about 100 rows of 0.4 N
+    # noise, 4 standard errors of the difference
+    np.testing.assert_allclose(steps["force_N_mean"], thickwall_N(levels[1:-1], 0.0),
+                               atol=4 * 0.4 * np.sqrt(1 / 50 + 1 / 100))
+    assert (run.path / "imported_table.csv").read_bytes() == path.read_bytes()
+
+
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     frame, _, _ = _ramp()
     frame.to_csv(tmp_path / "ramp.csv", index=False)
