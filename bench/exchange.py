@@ -769,9 +769,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             notes.append(f"{slack} slack row(s) ({found['slack'].header}): kept at their force")
     if not np.any(force != 0):
         notes.append("every force is 0 N: no model error can be scored against this run")
-    elif np.ptp(pressure) > 0 and np.polyfit(pressure, force, 1)[0] < 0:
-        # a muscle pulls harder the higher its pressure: a falling force is a load cell read
-        # with the opposite sign (compression positive), which every model would score as wrong
+    elif np.ptp(pressure) > 0 and np.ptp(force) > 0 and (
+            -np.polyfit(pressure, force, 1)[0] * np.ptp(pressure) > 0.5 * np.ptp(force)):
+        # a muscle pulls harder the higher its pressure: a force that falls with it (the line
+        # through it falls by more than half the forces' spread: a slack muscle's forces, all
+        # alike, fall by round-off) is a load cell read with the opposite sign (compression
+        # positive), which every model would score as wrong
         low, high = int(np.argmin(pressure)), int(np.argmax(pressure))
         notes.append(f"the force falls as the pressure rises ({force[low]:.4g} N at "
                      f"{pressure[low]:g} bar, {force[high]:.4g} N at {pressure[high]:g} bar): "
