@@ -662,6 +662,9 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         zero, handling["tare"] = 0.0, "none"
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
         zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
+        # a load cell's offset would stay in every force unsaid: the table's own zero is unknown
+        notes.append(f"no tare: the table has no 0 bar row (its rising branch starts at "
+                     f"{zero_at:g} bar): its forces as given; --tare N gives one")
     elif tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR:
         # the force of a record that starts pressurised is the muscle's pull, not the zero
         zero, handling["tare"] = 0.0, (f"none: the record has no 0 bar reading (its rising "

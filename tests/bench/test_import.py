@@ -64,6 +64,9 @@ def test_kpa_and_lbf_headers(tmp_path, mkm_cli):
                                             "converted_to": "N"}
     assert recorded["file"] == "lab.csv" and len(recorded["sha256"]) == 64
     assert recorded["tare"] == "none: the table has no 0 bar row"
+    # said: a load cell's offset would stay in every force (the table's zero is not known)
+    assert ("no tare: the table has no 0 bar row (its rising branch starts at 0.5 bar): its "
+            "forces as given; --tare N gives one") in err
     assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
 
 
