@@ -2,19 +2,19 @@
 
 - :func:`import_table`: the table a lab has (CSV, TSV, semicolon CSV with decimal commas, or an
   ``.xlsx`` workbook, every sheet or one; columns found by name and unit by
-  :mod:`mkm.bench.tables`, converted by pint) becomes run folders with status ``imported``:
-  one per muscle state (a sheet, or a value of an eps, length, L0 or run-id column), all of one
+  :mod:`mkm.bench.tables`, converted by pint) becomes run folders with status ``imported``: one
+  per muscle state (a sheet, or a value of an eps, length, L0 or run-id column), all of one
   muscle id. A step table (one row per held pressure) gives the steps as they are (a record
-  whose time column was left out is binned as a ramp, the table kept whole in its run folder:
-  :func:`mkm.bench.series.sampled_without_time`); a time series
-  (a ``time`` column) is stored as samples and its steps derived (:mod:`mkm.bench.series`: a
-  staircase's plateaus as the bench judges them, or a ramp's quasi-static bins per branch), its
-  force zeroed at its mean before the pressure rises and a vented pressure reading above
-  zero, up to a sensor's zero error (:data:`VENTED_AUTO_MAX_BAR`), taken as the record's
-  zero. ``imported_from`` in run.json records the source file's name and SHA-256, the sheet,
-  the columns and units recognised, the shape, the tare and the vented reading. ``mkm
-  report``, ``mkm fem calibrate --reference``, ``mkm identify`` and ``mkm export`` read these
-  runs like any other.
+  whose time column was left out, :func:`mkm.bench.series.sampled_without_time`, is read as a
+  time series with its rows for its clock, the table kept whole in its run folder); a time
+  series (a ``time`` column) is stored as samples and its steps derived
+  (:mod:`mkm.bench.series`: a staircase's plateaus as the bench judges them, or a ramp's
+  quasi-static bins per branch), its force zeroed at its mean before the pressure rises and a
+  vented pressure reading above zero, up to a sensor's zero error (:data:`VENTED_AUTO_MAX_BAR`),
+  taken as the record's zero. ``imported_from`` in run.json records the source file's name and
+  SHA-256, the sheet, the columns and units recognised, the shape, the tare and the vented
+  reading. ``mkm report``, ``mkm fem calibrate --reference``, ``mkm identify`` and
+  ``mkm export`` read these runs like any other.
 - :func:`export_run`: a run folder as one Excel workbook (sheets ``steps``, ``samples``,
   ``metadata``) or as three CSV files, every text cell spreadsheet-safe. The workbook imports
   back to the run it was: steps, samples, calibration and tare.
@@ -640,8 +640,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              "gauge pressure >= 0" + (" (--vented sets a vented reading to "
                                                       "subtract)" if timed else ""))
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
-    # a record whose time column was left out: binned as a ramp, its zero the rest before the
-    # rise as a timed record's (its rows evenly spaced in time), not one noisy row at 0 bar
+    # a record whose time column was left out (its rows evenly spaced in time): zeroed at the
+    # rest before its rise as a timed record is, not at one noisy row at 0 bar
     record = step_times is None and not timed and series.sampled_without_time(pressure)
     if timed:
         rest = series.tare(time_s, pressure, force)
