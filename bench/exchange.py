@@ -281,7 +281,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     if not prepared:
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
                          f"{', '.join(map(repr, names))})")
-    untimed = [r.table.name for r in prepared if "time" not in r.columns]
+    untimed = [r.table.name for r in prepared if "time" not in r.columns
+               and not series.sampled_without_time(r.values("pressure"))]
     if untimed and not isinstance(vented, str):  # a value given: it would be ignored unsaid
         raise ValueError(f"--vented {vented:g} bar: {untimed[0]} has no time column: expected "
                          "--vented with a time series only (its first samples read vented); a "
@@ -589,8 +590,16 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             raise ValueError(f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')} "
                              f"(column {found['time'].header!r}): the time goes backwards: "
                              "expected samples in time order")
-        offset = series.vented_offset(time_s, pressure) if vented == "auto" else (
-            0.0 if vented == "none" else float(vented))
+    # a record whose time column was left out (its rows evenly spaced in time) is read as a
+    # time series is, its rows the clock
+    record = not timed and series.sampled_without_time(pressure)
+    if timed or record:
+        if vented == "auto":
+            offset = (series.vented_offset(time_s, pressure) if timed else
+                      series.vented_offset(np.arange(pressure.size, dtype=float), pressure,
+                                           min_s=series.RECORD_PLATEAU_ROWS))
+        else:
+            offset = 0.0 if vented == "none" else float(vented)
         if vented == "auto" and offset > VENTED_AUTO_MAX_BAR:
             held = handling["held_at_start_bar"] = offset
             offset = 0.0
@@ -638,16 +647,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
                              "gauge pressure >= 0" + (" (--vented sets a vented reading to "
-                                                      "subtract)" if timed else ""))
+                                                      "subtract)" if timed or record else ""))
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
-    # a record whose time column was left out (its rows evenly spaced in time): zeroed at the
-    # rest before its rise as a timed record is, not at one noisy row at 0 bar
-    record = step_times is None and not timed and series.sampled_without_time(pressure)
     if timed:
         rest = series.tare(time_s, pressure, force)
         zero, zero_at = rest.force_N, rest.pressure_bar
         handling["tare_at_bar"] = zero_at
-    elif record:
+    elif record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
         rest = series.tare(np.arange(pressure.size, dtype=float), pressure, force)
         zero, zero_at = rest.force_N, rest.pressure_bar
         handling["tare_at_bar"] = zero_at

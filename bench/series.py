@@ -159,10 +159,11 @@ def rising_end(pressure_bar: np.ndarray) -> int:
     return branches(pressure_bar)[0][1]
 
 
-def vented_offset(time_s: np.ndarray, pressure_bar: np.ndarray) -> float:
-    """The pressure the record reads vented [bar]: the median of its first plateau when that
-    plateau starts the record and is its lowest level, else 0 (the record starts pressurised)."""
-    found = plateaus(time_s, pressure_bar, min_s=min(PLATEAU_MIN_S, 0.5))
+def vented_offset(time_s: np.ndarray, pressure_bar: np.ndarray, min_s: float = 0.5) -> float:
+    """The pressure the record reads vented [bar]: the median of its first plateau (``min_s``
+    or longer) when that plateau starts the record and is its lowest level, else 0 (the record
+    starts pressurised)."""
+    found = plateaus(time_s, pressure_bar, min_s=min_s)
     if not found or found[0].start != 0:
         return 0.0
     level = found[0].level_bar

@@ -55,7 +55,8 @@ def register(subparsers) -> None:
                      "(auto; only when that pressure is 0 bar), none, or a value [N] (or with "
                      "its unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
-                     help="what the pressure reads vented, subtracted from a time series: "
+                     help="what the pressure reads vented, subtracted from a time series (or a "
+                     "record without its time): "
                      "detected at its start (auto: up to a sensor's zero error; a record held "
                      "higher is kept, pressurised), none, or a value [bar] (or with its unit: "
                      "1013mbar)")

@@ -496,6 +496,33 @@ def test_a_staircase_recorded_without_its_time_gives_its_plateaus(tmp_path, mkm_
     assert (run.path / "imported_table.csv").read_bytes() == path.read_bytes()
 
 
+def test_a_record_without_time_from_an_absolute_sensor_takes_vented(tmp_path, mkm_cli):
+    # a 10 Hz record saved without its time, its sensor reading 1.013 bar vented: --vented
+    # was refused ("has no time column"), so its pressures kept the ambient's 1.013 bar and
+    # its forces the load cell's 4 N
+    rng = np.random.default_rng(12)
+    p = np.interp(np.arange(1500), [0, 100, 800, 1500], [0, 0, 2.5, 0])
+    path = tmp_path / "absolute.csv"
+    pd.DataFrame({"p (bar)": p + 1.013 + rng.normal(0, 0.003, p.size),
+                  "F (N)": thickwall_N(p, 0.0) + 4.0 + rng.normal(0, 0.3, p.size)}).to_csv(
+        path, index=False)
+    (held,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    # its 100 vented rows found as a timed record's rest is (and the ramp's first rows within
+    # the plateau's 0.03 bar band): its median within 2 mbar
+    level = held.meta.imported_from["held_at_start_bar"]
+    assert level == pytest.approx(1.013, abs=0.002)
+    assert ("if the sensor reads absolute pressure, import again with --vented "
+            f"{level:.3f}bar") in err
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--vented", "1.013bar")
+    recorded = run.meta.imported_from
+    assert recorded["vented_reading_bar"] == 1.013 and recorded["vented"] == "given"
+    # the rest's 100 rows of 0.3 N noise, 4 standard errors
+    assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(100))
+    top = run.steps.loc[run.steps["pressure_bar_mean"].idxmax()]
+    assert top["force_N_mean"] == pytest.approx(thickwall_N([top["pressure_bar_mean"]], 0.0)[0],
+                                                abs=1.0 + 0.12 + 4 * 0.3 / np.sqrt(top["n"]))
+
+
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     frame, _, _ = _ramp()
     frame.to_csv(tmp_path / "ramp.csv", index=False)
