@@ -668,9 +668,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         zero, handling["tare"] = 0.0, "none"
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
         zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
-        # a load cell's offset would stay in every force unsaid: the table's own zero is unknown
-        notes.append(f"no tare: the table has no 0 bar row (its rising branch starts at "
-                     f"{zero_at:g} bar): its forces as given; --tare N gives one")
+        # a load cell's offset would stay in every force unsaid, unless the table marks where
+        # the muscle is slack (its zero: a published map's 0 N entries)
+        if not ("slack" in found and flags(table, found["slack"])[group.rows].any()):
+            notes.append(f"no tare: the table has no 0 bar row (its rising branch starts at "
+                         f"{zero_at:g} bar): its forces as given; --tare N gives one")
     elif tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR:
         # the force of a record that starts pressurised is the muscle's pull, not the zero
         zero, handling["tare"] = 0.0, (f"none: the record has no 0 bar reading (its rising "
