@@ -267,14 +267,18 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in {c.index for c in found.values()}])
-        # without a time column every row is a step: a clock by a name the reader does not
-        # know turns a record into thousands of one-row steps (an export's steps have times)
+        # without a time column every row is a step, or a record's rows are taken as evenly
+        # spaced: a clock by a name the reader does not know is left out (an export's steps
+        # have times)
         unread = [] if exported or "time" in found else unread_time_columns(table, found)
+        read_as = ("its rows are taken as evenly spaced in time" if unread and
+                   series.sampled_without_time(recognition.values("pressure"))
+                   else "every row is a step")
         notify(f"{table.name}: {recognition.line()}"
                + (f"; sheets without pressure and force skipped: {', '.join(skipped)}"
                   if skipped else "")
                + "".join(f"; column {header!r} holds times but is not read as the time "
-                         "column: every row is a step; if it is the record's clock, --columns "
+                         f"column: {read_as}; if it is the record's clock, --columns "
                          f"time={header!r} reads the table as a time series"
                          for header in unread[:1]))
         prepared.append(recognition)

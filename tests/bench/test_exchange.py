@@ -182,6 +182,17 @@ def test_a_time_column_by_an_unknown_name_is_pointed_out(tmp_path, capsys):
                           capsys)
     assert code == 0 and "holds times" not in err, err
     assert len(load_run(out.strip()).samples) == t.size
+    # the same at 10 Hz is a record read with its rows for its clock, not a step per row: said
+    # so (was: "every row is a step" beside "rows of a record without time ... binned")
+    t = np.arange(0.0, 23.0, 0.1)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    pd.DataFrame({"Zeit seit Beginn [s]": t, "P": p, "F": 150.0 * p}).to_csv(table,
+                                                                             index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "10hz")],
+                          capsys)
+    assert code == 0 and "every row is a step" not in err, err
+    assert ("column 'Zeit seit Beginn [s]' holds times but is not read as the time column: its "
+            "rows are taken as evenly spaced in time; if it is the record's clock") in err
 
 
 def test_export_as_workbook_and_csv(tmp_path, capsys):
