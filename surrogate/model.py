@@ -239,7 +239,9 @@ class SurrogateForceModel(ForceModel):
         reason = np.full(prediction.force_N.shape, "", dtype=object)
         inputs = {name: np.broadcast_to(getattr(prediction, name), reason.shape)
                   for name in INPUTS}
-        for index in zip(*np.nonzero(unanswered), strict=True):
+        for index in np.ndindex(reason.shape):  # a scalar prediction's index is ()
+            if not unanswered[index]:
+                continue
             parts = []
             for name, values in inputs.items():
                 lo, hi = self.box[name]

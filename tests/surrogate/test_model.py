@@ -188,3 +188,12 @@ def test_predict_writes_no_force_where_the_surrogate_has_no_answer(design_model,
     row = capsys.readouterr().out.splitlines()[1]
     assert row == ('1,40,3,0.25,,False,True,False,,"outside the training domain: eps=0.25 not '
                    'in [0, 0.2]"')
+
+
+def test_answered_takes_a_scalar_prediction(design_model):
+    # one point, as ForceModel.predict broadcasts scalars: its index is ()
+    with pytest.warns(OutOfDomainWarning):
+        prediction = design_model.predict(1.0, 40.0, 3.0, 0.25)
+    answered = design_model.answered(prediction)
+    assert np.isnan(answered.force_N) and not answered.valid
+    assert answered.extras["reason"] == "outside the training domain: eps=0.25 not in [0, 0.2]"
