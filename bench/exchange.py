@@ -746,7 +746,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         what = (f"a record without time ({pressure.size} rows, successive readings "
                 f"{apart:.2g} bar apart, the median)")
         if shape == "staircase":
-            steps, _ = series.untimed_staircase_steps(pressure, force, held)
+            steps = series.untimed_staircase_steps(pressure, force, held)
             handling["steps_from"] = (f"{what}: plateaus of {series.RECORD_PLATEAU_ROWS} rows "
                                       "or more, each averaged over its second half")
             done = f"its {len(steps)} plateaus averaged over their second halves"

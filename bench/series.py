@@ -55,7 +55,8 @@ SHORT_REST_SAMPLES = 10
 #: a ramp turns (up to down, or back) where the pressure comes back this share of its range
 TURN_SHARE = 0.1
 #: a table without time of more rows than this, its successive readings within a plateau's
-#: band, is a record sampled in time: binned as a ramp (a step table steps from row to row)
+#: band, is a record sampled in time, read with its rows for its clock (a step table steps from
+#: row to row)
 RECORD_MIN_ROWS = 4 * RAMP_BINS
 #: a plateau of such a record holds at least this many rows (its time unknown: a second at 10 Hz)
 RECORD_PLATEAU_ROWS = 10
@@ -295,13 +296,11 @@ def staircase_steps(time_s, pressure_bar, force_N, settle_config,
     return records, step_of
 
 
-def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]
-                            ) -> tuple[list[StepRecord], np.ndarray]:
+def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]) -> list[StepRecord]:
     """The steps of a staircase recorded without its time (its rows the clock: ``held`` found
-    with :data:`RECORD_PLATEAU_ROWS`), and each row's step (-1: between steps). Without time
-    the bench's settle test cannot judge a plateau: each is averaged over its second half, as
-    a plateau that never settles is, its start and end times unknown (NaN)."""
-    step_of = np.full(pressure_bar.size, -1)
+    with :data:`RECORD_PLATEAU_ROWS`). Without time the bench's settle test cannot judge a
+    plateau: each is averaged over its second half, as a plateau that never settles is, its
+    start and end times unknown (NaN)."""
     records, previous = [], 0.0
     repeats: dict[tuple[str, float], int] = {}
     for k, q in enumerate(held):
@@ -312,11 +311,10 @@ def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]
             hold.add(float(j), float(force_N[j]), float(pressure_bar[j]))
         key = (direction, round(q.level_bar, 2))
         repeats[key] = repeats.get(key, -1) + 1
-        step_of[q.start:q.stop] = k
         records.append(StepRecord(
             k, direction, repeats[key], round(q.level_bar, 4), hold.pressure_mean, hold.mean,
             hold.std, hold.n, True, math.nan, math.nan, math.nan, hold.drift_N))
-    return records, step_of
+    return records
 
 
 def _settle_index(t, f, p, level_bar, config) -> tuple[int, bool]:
