@@ -2,14 +2,17 @@
 
 - :func:`import_table`: the table a lab has (CSV, TSV, semicolon CSV with decimal commas, or an
   ``.xlsx`` workbook, every sheet or one; columns found by name and unit by
-  :mod:`mkm.bench.tables`, converted by pint) becomes run folders with status ``imported``:
-  one per muscle state (a sheet, or a value of an eps, length, L0 or run-id column), all of one
-  muscle id. A step table (one row per held pressure) gives the steps as they are; a time series
-  (a ``time`` column) is stored as samples and its steps derived (:mod:`mkm.bench.series`: a
-  staircase's plateaus as the bench judges them, or a ramp's quasi-static bins per branch), its
-  force zeroed at its mean before the pressure rises and a vented pressure reading above
-  zero taken as the record's zero. ``imported_from`` in run.json records the source file's name
-  and SHA-256, the sheet, the columns and units recognised, the shape, the tare and the vented
+  :mod:`mkm.bench.tables`, converted by pint) becomes run folders with status ``imported``: one
+  per muscle state (a sheet, or a value of an eps, length, L0 or run-id column), all of one
+  muscle id. A step table (one row per held pressure) gives the steps as they are (a record
+  whose time column was left out, :func:`mkm.bench.series.sampled_without_time`, is read as a
+  time series with its rows for its clock, the table kept whole in its run folder); a time
+  series (a ``time`` column) is stored as samples and its steps derived
+  (:mod:`mkm.bench.series`: a staircase's plateaus as the bench judges them, or a ramp's
+  quasi-static bins per branch), its force zeroed at its mean before the pressure rises and a
+  vented pressure reading above zero, up to a sensor's zero error (:data:`VENTED_AUTO_MAX_BAR`),
+  taken as the record's zero. ``imported_from`` in run.json records the source file's name and
+  SHA-256, the sheet, the columns and units recognised, the shape, the tare and the vented
   reading. ``mkm report``, ``mkm fem calibrate --reference``, ``mkm identify`` and
   ``mkm export`` read these runs like any other.
 - :func:`export_run`: a run folder as one Excel workbook (sheets ``steps``, ``samples``,
@@ -23,6 +26,7 @@ import datetime
 import json
 import math
 import re
+import shutil
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -48,6 +52,7 @@ from mkm.bench.tables import (
     directions,
     flags,
     key_values,
+    marked_gauge,
     read_tables,
     recognise,
     sheet_names,
@@ -76,6 +81,12 @@ EXCEL_MAX_ROWS = 1_048_575  # below the header row
 EXPORT_SHEETS = ("steps", "samples", "metadata")
 #: ``--tare`` and ``--vented``: found in the data (auto), none, or a value given
 ZERO_CHOICES = ("auto", "none")
+#: the name (and the table's suffix) of the copy of a table kept in the run folder where its
+#: rows are no run folder's samples (a record without time, binned)
+TABLE_COPY = "imported_table"
+#: ``--force-sign``: the table's forces as read (a muscle's pull positive), or negated (a load
+#: cell wired to read tension negative)
+FORCE_SIGNS = (1, -1)
 
 
 #: What a given zero may be [its unit], and why. A vented pressure sensor reads its offset: at
@@ -88,6 +99,14 @@ ZERO_LIMITS = {"--tare": (-MAX_CAPACITY_N, MAX_CAPACITY_N,
                "--vented": (-INSTRUMENT_BOUNDS["monitor_offset_bar"][1],
                             PRACTICAL_RANGE.pressure_bar[1],
                             "a pressure sensor's offset below zero, the practical range above")}
+
+
+#: the largest vented reading ``--vented auto`` subtracts [bar]: a gauge's zero error, at most
+#: the offset a pressure sensor may have (as :data:`ZERO_LIMITS`). A record held higher at its
+#: start was pressurised when the logging began, or its sensor reads absolute pressure (the
+#: ambient 0.5-1.05 bar): the data cannot tell these apart, and a pressure column is a gauge
+#: pressure, so its readings are kept and the option that says otherwise is named
+VENTED_AUTO_MAX_BAR = INSTRUMENT_BOUNDS["monitor_offset_bar"][1]
 
 
 #: what a given zero may look like typed with its unit (for the messages)
@@ -178,7 +197,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  columns: dict[str, str] | None = None, units: dict[str, str] | None = None,
                  sheet: str | None = None, tare: str | float = "auto",
                  vented: str | float = "auto", select: str | None = None,
-                 accuracy: dict[str, Declared] | None = None,
+                 accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
                  notify=lambda line: None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -206,6 +225,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         forces and pressures (:func:`parse_accuracy`). Each step then carries its uncertainty
         budget (:func:`mkm.bench.budget.declared_budget`), so ``mkm report`` scores E_n and
         ``mkm identify`` judges its fit; without it neither can.
+    force_sign : 1 or -1
+        -1: the table's forces negated (a load cell that reads the muscle's pull negative); a
+        ``tare`` given is as the table reads it.
     notify : callable
         Receives the line of what was recognised in each table.
 
@@ -213,6 +235,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     written then.
     """
     path = Path(path)
+    if force_sign not in FORCE_SIGNS:
+        raise ValueError(f"--force-sign {force_sign!r} is invalid: expected one of "
+                         f"{', '.join(map(str, FORCE_SIGNS))}")
     muscle = dict(muscle)
     tare, vented = parse_zero(tare, "--tare", "N"), parse_zero(vented, "--vented", "bar")
     exported = sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path))
@@ -242,21 +267,26 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in {c.index for c in found.values()}])
-        # without a time column every row is a step: a clock by a name the reader does not
-        # know turns a record into thousands of one-row steps (an export's steps have times)
+        # without a time column every row is a step, or a record's rows are taken as evenly
+        # spaced: a clock by a name the reader does not know is left out (an export's steps
+        # have times)
         unread = [] if exported or "time" in found else unread_time_columns(table, found)
+        read_as = ("its rows are taken as evenly spaced in time" if unread and
+                   series.sampled_without_time(recognition.values("pressure"))
+                   else "every row is a step")
         notify(f"{table.name}: {recognition.line()}"
                + (f"; sheets without pressure and force skipped: {', '.join(skipped)}"
                   if skipped else "")
                + "".join(f"; column {header!r} holds times but is not read as the time "
-                         "column: every row is a step; if it is the record's clock, --columns "
+                         f"column: {read_as}; if it is the record's clock, --columns "
                          f"time={header!r} reads the table as a time series"
                          for header in unread[:1]))
         prepared.append(recognition)
     if not prepared:
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
                          f"{', '.join(map(repr, names))})")
-    untimed = [r.table.name for r in prepared if "time" not in r.columns]
+    untimed = [r.table.name for r in prepared if "time" not in r.columns
+               and not series.sampled_without_time(r.values("pressure"))]
     if untimed and not isinstance(vented, str):  # a value given: it would be ignored unsaid
         raise ValueError(f"--vented {vented:g} bar: {untimed[0]} has no time column: expected "
                          "--vented with a time series only (its first samples read vented); a "
@@ -266,7 +296,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
     sha = file_sha256(path)
-    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override)
+    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override, force_sign)
              for g, (m, override) in zip(groups, muscles, strict=True)]
     if exported and len(built) == 1 and not accuracy:
         built = [_restored(path, known, *built[0])]
@@ -282,6 +312,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         for step in steps:
             writer.append_step(step)
         writer.close()
+        if copy := meta.imported_from.get("table_copy"):
+            shutil.copyfile(path, writer.path / copy)
         out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
     return out
 
@@ -543,12 +575,15 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
 
 
 def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
-           override=None):
+           override=None, force_sign=1):
     """The run record, steps, samples, notes and shape of one muscle state (``override``: what
     an option replaced of the table, said first)."""
     table, found = group.table, group.columns
-    pressure, force = group.values("pressure"), group.values("force")
+    pressure, force = group.values("pressure"), force_sign * group.values("force")
     notes, handling = ([override], {"L0": override}) if override else ([], {})
+    handling["force_sign"] = force_sign
+    if force_sign < 0:
+        notes.append("forces negated (--force-sign -1)")
     notes += filter(None, [PRACTICAL_RANGE.length_note(muscle.D0_mm, muscle.L0_mm),
                            PRACTICAL_RANGE.lock_note(muscle.eps)])
     timed = "time" in found
@@ -559,8 +594,28 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             raise ValueError(f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')} "
                              f"(column {found['time'].header!r}): the time goes backwards: "
                              "expected samples in time order")
-        offset = series.vented_offset(time_s, pressure) if vented == "auto" else (
-            0.0 if vented == "none" else float(vented))
+    # a record whose time column was left out (its rows evenly spaced in time) is read as a
+    # time series is, its rows the clock
+    record = not timed and series.sampled_without_time(pressure)
+    if timed or record:
+        if vented == "auto":
+            offset = (series.vented_offset(time_s, pressure) if timed else
+                      series.vented_offset(np.arange(pressure.size, dtype=float), pressure,
+                                           min_s=series.RECORD_PLATEAU_ROWS))
+        else:
+            offset = 0.0 if vented == "none" else float(vented)
+        if vented == "auto" and offset > VENTED_AUTO_MAX_BAR:
+            held = handling["held_at_start_bar"] = offset
+            offset = 0.0
+            unit = found["pressure"].unit
+            notes.append(f"the record starts held at {held:.3g} bar, more than a gauge's zero "
+                         f"error ({VENTED_AUTO_MAX_BAR:g} bar): kept as the gauge pressure "
+                         + (f"its unit {unit!r} says (the muscle pressurised when the logging "
+                            f"began; --vented {held:.3f}bar would take it as the zero)"
+                            if marked_gauge(unit) else
+                            "its column holds (the muscle pressurised when the logging began); "
+                            "if the sensor reads absolute pressure, import again with --vented "
+                            f"{held:.3f}bar"))
         handling["vented_reading_bar"] = offset
         handling["vented"] = ("detected" if vented == "auto" else
                               "none" if vented == "none" else "given")
@@ -596,10 +651,14 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
                              "gauge pressure >= 0" + (" (--vented sets a vented reading to "
-                                                      "subtract)" if timed else ""))
+                                                      "subtract)" if timed or record else ""))
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
     if timed:
         rest = series.tare(time_s, pressure, force)
+        zero, zero_at = rest.force_N, rest.pressure_bar
+        handling["tare_at_bar"] = zero_at
+    elif record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
+        rest = series.tare(np.arange(pressure.size, dtype=float), pressure, force)
         zero, zero_at = rest.force_N, rest.pressure_bar
         handling["tare_at_bar"] = zero_at
     else:
@@ -613,6 +672,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         zero, handling["tare"] = 0.0, "none"
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
         zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
+        # a load cell's offset would stay in every force unsaid, unless the table marks where
+        # the muscle is slack (its zero: a published map's 0 N entries)
+        if not ("slack" in found and flags(table, found["slack"])[group.rows].any()):
+            notes.append(f"no tare: the table has no 0 bar row (its rising branch starts at "
+                         f"{zero_at:g} bar): its forces as given; --tare N gives one")
     elif tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR:
         # the force of a record that starts pressurised is the muscle's pull, not the zero
         zero, handling["tare"] = 0.0, (f"none: the record has no 0 bar reading (its rising "
@@ -629,13 +693,18 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                          "into the record; a vented rest of a second or more before it, or "
                          "--tare N, gives a surer zero")
         drift = _zero_drift(time_s, pressure, force, rest, handling)
+    elif tare == "auto" and record:
+        handling["tare"] = f"mean force of the {rest.rest.stop} row(s) before the pressure rises"
+        handling["tare_std_N"] = rest.std_N
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
     else:
-        zero, handling["tare"] = float(tare), "given"
+        zero, handling["tare"] = force_sign * float(tare), "given"
         if zero >= float(np.nanmax(force)):  # every force <= 0: a muscle that never pulled
-            raise ValueError(f"{table.name}: --tare {zero:g} N is not below the largest force "
-                             f"of the table, {float(np.nanmax(force)):g} N: expected the force "
+            pull = ("largest", "below") if force_sign > 0 else ("smallest", "above")
+            raise ValueError(f"{table.name}: --tare {float(tare):g} N is not {pull[1]} the "
+                             f"{pull[0]} force of the table, "
+                             f"{force_sign * float(np.nanmax(force)):g} N: expected the force "
                              "read at 0 bar")
     handling["tare_N"] = zero
     if zero:
@@ -666,6 +735,31 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                    for k, (t, s, p, f) in enumerate(zip(time_s, step_of, pressure, force,
                                                         strict=True))]
         notes.insert(0, f"{len(samples)} samples")
+    elif record:
+        # a record whose clock the table left out, its rows the clock: a staircase's plateaus,
+        # or a ramp's rows binned (by pressure, each branch apart); every row kept in the run
+        # folder as the table it came in
+        rows = np.arange(pressure.size, dtype=float)
+        held = series.held_plateaus(rows, pressure, min_s=series.RECORD_PLATEAU_ROWS)
+        shape = series.shape(rows, pressure, held)
+        apart = float(np.median(np.abs(np.diff(pressure))))
+        what = (f"a record without time ({pressure.size} rows, successive readings "
+                f"{apart:.2g} bar apart, the median)")
+        if shape == "staircase":
+            steps = series.untimed_staircase_steps(pressure, force, held)
+            handling["steps_from"] = (f"{what}: plateaus of {series.RECORD_PLATEAU_ROWS} rows "
+                                      "or more, each averaged over its second half")
+            done = f"its {len(steps)} plateaus averaged over their second halves"
+        else:
+            steps, _, width = series.ramp_steps(rows, pressure, force)
+            steps = [s._replace(start_s=math.nan, end_s=math.nan) for s in steps]
+            handling["steps_from"] = (f"{what}: quasi-static bins of {width:.3g} bar, rising "
+                                      "and falling branches apart")
+            done = f"binned by {width:.3g} bar on each branch"
+        handling["table_copy"] = TABLE_COPY + path.suffix.lower()
+        notes.insert(0, f"{pressure.size} rows of a record without time (successive readings "
+                     f"{apart:.2g} bar apart): {done}, every row kept in "
+                     f"{handling['table_copy']}")
     else:
         shape = "steps"
         std = group.values("force_std", optional=True) if "force_std" in found else \
@@ -690,13 +784,19 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             notes.append(f"{slack} slack row(s) ({found['slack'].header}): kept at their force")
     if not np.any(force != 0):
         notes.append("every force is 0 N: no model error can be scored against this run")
-    elif np.ptp(pressure) > 0 and np.polyfit(pressure, force, 1)[0] < 0:
-        # a muscle pulls harder the higher its pressure: a falling force is a load cell read
-        # with the opposite sign (compression positive), which every model would score as wrong
+    elif np.ptp(pressure) > 0 and np.ptp(force) > 0 and (
+            -np.polyfit(pressure, force, 1)[0] * np.ptp(pressure) > 0.5 * np.ptp(force)):
+        # a muscle pulls harder the higher its pressure: a force that falls with it (the line
+        # through it falls by more than half the forces' spread: a slack muscle's forces, all
+        # alike, fall by round-off) is a load cell read with the opposite sign (compression
+        # positive), which every model would score as wrong
         low, high = int(np.argmin(pressure)), int(np.argmax(pressure))
         notes.append(f"the force falls as the pressure rises ({force[low]:.4g} N at "
                      f"{pressure[low]:g} bar, {force[high]:.4g} N at {pressure[high]:g} bar): "
-                     "a muscle pulls harder with pressure; is the load cell's sign reversed?")
+                     "a muscle pulls harder with pressure; "
+                     + ("--force-sign -1 negated them: import again without it" if force_sign < 0
+                        else "if the load cell reads the pull negative, import again with "
+                        "--force-sign -1"))
     now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
     prov = provenance()
     imported = {"file": path.name, "sha256": sha, "shape": shape, "state": group.state,

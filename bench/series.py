@@ -3,8 +3,9 @@
 A lab's record is pressure and force sampled in time. Before any step is taken from it:
 
 - :func:`vented_offset`: the pressure the record reads while the muscle is vented (its first
-  samples, before the pressure starts to rise); a gauge that reads 0.5-1 bar at rest is
-  detected, and by default that reading is the record's zero;
+  samples, before the pressure starts to rise); a gauge that reads above zero at rest is
+  detected (:mod:`mkm.bench.exchange` takes it as the record's zero up to a sensor's zero
+  error);
 - :func:`tare`: the force's zero (a load cell is rarely at 0 N when the muscle is slack) is
   the mean force of the rest before the pressure rises, that rest ended where a fit in time
   puts the rise's start (:func:`rise_start`): the pressure's level there, not a band of
@@ -18,6 +19,8 @@ ramp, and the steps are taken:
   (:func:`mkm.bench.sequence.settle_reached`, with the packaged configuration's ``[settle]``
   criteria) and its hold averaged by the bench's :class:`mkm.bench.sequence.HoldStats`; a
   plateau that never settles is averaged over its second half and recorded ``settled = false``;
+- :func:`untimed_staircase_steps`: the plateaus of a staircase recorded without its time (its
+  rows the clock), each averaged over its second half;
 - :func:`ramp_steps`: quasi-static points, the samples binned by pressure on each branch apart
   (:func:`branches`: rising and falling, each cycle of a repeated ramp its own), each bin a
   step with its samples' mean; a branch's bins follow each other in time, as the holds of a
@@ -51,6 +54,12 @@ RISE_WINDOW_BAR = 0.05
 SHORT_REST_SAMPLES = 10
 #: a ramp turns (up to down, or back) where the pressure comes back this share of its range
 TURN_SHARE = 0.1
+#: a table without time of more rows than this, its successive readings within a plateau's
+#: band, is a record sampled in time, read with its rows for its clock (a step table steps from
+#: row to row)
+RECORD_MIN_ROWS = 4 * RAMP_BINS
+#: a plateau of such a record holds at least this many rows (its time unknown: a second at 10 Hz)
+RECORD_PLATEAU_ROWS = 10
 
 
 @dataclass
@@ -116,6 +125,16 @@ def one_reading_per_step(time_s: np.ndarray) -> bool:
     return time_s.size >= 2 and float(np.median(np.diff(time_s))) >= PLATEAU_MIN_S
 
 
+def sampled_without_time(pressure_bar: np.ndarray) -> bool:
+    """Whether a table without a time column is a record sampled in time, not one row per held
+    pressure: more than :data:`RECORD_MIN_ROWS` rows whose successive readings lie (the median)
+    within :data:`PLATEAU_TOLERANCE_BAR` of each other. A step table steps from row to row by
+    its pressure step; a 10 Hz record of a slow ramp moves a few thousandths of a bar, and its
+    rows as steps would be thousands of one-row steps for identify to fit."""
+    return pressure_bar.size > RECORD_MIN_ROWS and float(
+        np.median(np.abs(np.diff(pressure_bar)))) <= PLATEAU_TOLERANCE_BAR
+
+
 def branches(pressure_bar: np.ndarray) -> list[tuple[int, int, str]]:
     """The record as monotone branches ``(start, stop, direction)``, stop exclusive: it turns
     where the pressure comes back :data:`TURN_SHARE` of its range from the branch's extreme
@@ -141,10 +160,11 @@ def rising_end(pressure_bar: np.ndarray) -> int:
     return branches(pressure_bar)[0][1]
 
 
-def vented_offset(time_s: np.ndarray, pressure_bar: np.ndarray) -> float:
-    """The pressure the record reads vented [bar]: the median of its first plateau when that
-    plateau starts the record and is its lowest level, else 0 (the record starts pressurised)."""
-    found = plateaus(time_s, pressure_bar, min_s=min(PLATEAU_MIN_S, 0.5))
+def vented_offset(time_s: np.ndarray, pressure_bar: np.ndarray, min_s: float = 0.5) -> float:
+    """The pressure the record reads vented [bar]: the median of its first plateau (``min_s``
+    or longer) when that plateau starts the record and is its lowest level, else 0 (the record
+    starts pressurised)."""
+    found = plateaus(time_s, pressure_bar, min_s=min_s)
     if not found or found[0].start != 0:
         return 0.0
     level = found[0].level_bar
@@ -223,10 +243,11 @@ def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) 
     return Tare(back.force_N, back.std_N, back.pressure_bar, slice(n - back.rest.stop, n))
 
 
-def held_plateaus(time_s: np.ndarray, pressure_bar: np.ndarray) -> list[Plateau]:
+def held_plateaus(time_s: np.ndarray, pressure_bar: np.ndarray,
+                  min_s: float = PLATEAU_MIN_S) -> list[Plateau]:
     """The plateaus above the vented level: the holds of a staircase."""
     low = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
-    return [q for q in plateaus(time_s, pressure_bar) if q.level_bar > low]
+    return [q for q in plateaus(time_s, pressure_bar, min_s=min_s) if q.level_bar > low]
 
 
 def shape(time_s: np.ndarray, pressure_bar: np.ndarray,
@@ -273,6 +294,27 @@ def staircase_steps(time_s, pressure_bar, force_N, settle_config,
             hold.std, hold.n, settled, float(t[settle_at] - t[0]), float(t[0]), float(t[-1]),
             hold.drift_N))
     return records, step_of
+
+
+def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]) -> list[StepRecord]:
+    """The steps of a staircase recorded without its time (its rows the clock: ``held`` found
+    with :data:`RECORD_PLATEAU_ROWS`). Without time the bench's settle test cannot judge a
+    plateau: each is averaged over its second half, as a plateau that never settles is, its
+    start and end times unknown (NaN)."""
+    records, previous = [], 0.0
+    repeats: dict[tuple[str, float], int] = {}
+    for k, q in enumerate(held):
+        direction = "up" if q.level_bar >= previous else "down"
+        previous = q.level_bar
+        hold = HoldStats()
+        for j in range((q.start + q.stop) // 2, q.stop):
+            hold.add(float(j), float(force_N[j]), float(pressure_bar[j]))
+        key = (direction, round(q.level_bar, 2))
+        repeats[key] = repeats.get(key, -1) + 1
+        records.append(StepRecord(
+            k, direction, repeats[key], round(q.level_bar, 4), hold.pressure_mean, hold.mean,
+            hold.std, hold.n, True, math.nan, math.nan, math.nan, hold.drift_N))
+    return records
 
 
 def _settle_index(t, f, p, level_bar, config) -> tuple[int, bool]:

@@ -474,6 +474,12 @@ _ABSOLUTE = re.compile(r"(?:m?bar|[km]?pa|psi)\s*"
                        r"(?:\(\s*(?:a|abs|absolute)\s*\)|(?:a|abs|absolute))", re.IGNORECASE)
 
 
+def marked_gauge(unit: str | None) -> bool:
+    """Whether a pressure unit as written is marked gauge (``barg``, ``bar(g)``, ``psi gauge``):
+    the lab says its sensor reads gauge pressure."""
+    return bool(_GAUGE.fullmatch((unit or "").strip()))
+
+
 def parse_unit(text: str):
     """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
     case as written, then any case)."""

@@ -10,14 +10,14 @@ held: asking for another value is refused with a ``ValueError`` naming both, nev
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cache
 from typing import TYPE_CHECKING
 
 import numpy as np
 from threadpoolctl import ThreadpoolController
 
-from mkm.fem.interface import INPUTS, Domain, ForceModel
+from mkm.fem.interface import INPUTS, Domain, ForceModel, Prediction
 from mkm.fem.limits import PRACTICAL_RANGE, check_value
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import L0_MM
@@ -227,6 +227,33 @@ class SurrogateForceModel(ForceModel):
 
         final = self.estimator[-1] if isinstance(self.estimator, Pipeline) else self.estimator
         return isinstance(final, GaussianProcessRegressor | muscle_gp.MuscleThresholdGP)
+
+    def answered(self, prediction: Prediction) -> Prediction:
+        """``prediction`` with no number where it has no answer: a point outside the training
+        box keeps ``valid=False`` and gets NaN for ``force_N`` (an empty cell in a CSV) and
+        ``force_std_N``, and the extra ``reason`` names what lies outside (``eps=0.25 not in
+        [0, 0.2]``; empty where the point is answered). The estimator's number there is an
+        extrapolation that a table or a script would take for a prediction."""
+        unanswered = ~np.asarray(prediction.valid, dtype=bool)
+        outside = self.parameters_outside()
+        reason = np.full(prediction.force_N.shape, "", dtype=object)
+        inputs = {name: np.broadcast_to(getattr(prediction, name), reason.shape)
+                  for name in INPUTS}
+        for index in np.ndindex(reason.shape):  # a scalar prediction's index is ()
+            if not unanswered[index]:
+                continue
+            parts = []
+            for name, values in inputs.items():
+                lo, hi = self.box[name]
+                slack = 1e-9 * max(abs(lo), abs(hi), 1.0)  # as Domain.contains allows
+                if not lo - slack <= float(values[index]) <= hi + slack:
+                    parts.append(f"{name}={float(values[index]):g} not in [{lo:g}, {hi:g}]")
+            reason[index] = "outside the training domain: " + "; ".join(parts + outside)
+        extras = {**prediction.extras, "reason": reason}
+        if "force_std_N" in extras:
+            extras["force_std_N"] = np.where(unanswered, np.nan, extras["force_std_N"])
+        return replace(prediction, force_N=np.where(unanswered, np.nan, prediction.force_N),
+                       extras=extras)
 
     def parameters_outside(self, parameters=None) -> list[str]:
         """The muscle parameters outside the training box, as ``name=value not in [lo, hi]``."""

@@ -55,9 +55,13 @@ def register(subparsers) -> None:
                      "(auto; only when that pressure is 0 bar), none, or a value [N] (or with "
                      "its unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
-                     help="what the pressure reads vented, subtracted from a time series: "
-                     "detected at its start (auto), none, or a value [bar] (or with its unit: "
+                     help="what the pressure reads vented, subtracted from a time series (or a "
+                     "record without its time): "
+                     "detected at its start (auto: up to a sensor's zero error; a record held "
+                     "higher is kept, pressurised), none, or a value [bar] (or with its unit: "
                      "1013mbar)")
+    imp.add_argument("--force-sign", type=int, default=1, metavar="SIGN",
+                     action=derived_help(_force_sign_help))
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "
                      "and the sensor's data sheet, or the table's stated accuracy): a value "
@@ -85,6 +89,14 @@ def register(subparsers) -> None:
     exp.set_defaults(func=_export)
 
 
+def _force_sign_help() -> str:
+    from mkm.bench.exchange import FORCE_SIGNS
+
+    return (f"{' or '.join(map(str, FORCE_SIGNS))}: -1 negates the table's forces, for a load "
+            "cell that reads the muscle's pull negative (a --tare given is as the table reads "
+            "it; default: 1, as read)")
+
+
 def _table_help() -> str:
     from mkm.bench.tables import table_suffixes_text
 
@@ -107,7 +119,8 @@ def _import(args) -> int:
         units=parse_assignments(args.units, "--units"), sheet=args.sheet,
         tare=parse_zero(args.tare, "--tare", "N"), vented=parse_zero(args.vented, "--vented",
                                                                        "bar"),
-        select=args.muscle, accuracy=parse_accuracy(args.accuracy), notify=lines.append)
+        select=args.muscle, accuracy=parse_accuracy(args.accuracy),
+        force_sign=args.force_sign, notify=lines.append)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

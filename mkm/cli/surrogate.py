@@ -304,10 +304,14 @@ def _predict(args) -> int:
         prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     for w in caught:
         say(args, "warning", w.message)
-    emit_prediction(prediction, args.out, model)
+    # an extrapolation is no answer: written as an empty force with its reason, the sweep's
+    # answered points kept
+    emit_prediction(model.answered(prediction), args.out, model)
+    unanswered = int((~prediction.valid).sum())
     summary_line("surrogate predict", f"{prediction.force_N.size} points of {model.name} in "
-                 f"{1e3 * prediction.seconds:.2f} ms, {int((~prediction.valid).sum())} flagged "
-                 "outside the training domain")
+                 f"{1e3 * prediction.seconds:.2f} ms"
+                 + (f", {unanswered} outside the training domain: no force written (valid=False, "
+                    "their reason in the reason column)" if unanswered else ""))
     return 0
 
 

@@ -125,9 +125,15 @@ def test_a_record_sampled_without_its_time_has_one_rising_and_one_falling_branch
         table, index=False)
     code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
     assert code == 0, err
-    direction = load_run(out.strip()).steps["direction"].tolist()
+    steps = load_run(out.strip()).steps
+    direction = steps["direction"].tolist()
     top = int(np.argmax(noisy)) + 1  # the rise ends at its highest reading
-    assert direction == ["up"] * top + ["down"] * (pressure.size - top)
+    # binned on each branch (a record, not a step per row): the rising bins first, holding the
+    # rows up to the top (a bin of one row left out), then the falling ones
+    ups = direction.count("up")
+    assert 0 < ups < len(direction) <= 40
+    assert direction == ["up"] * ups + ["down"] * (len(direction) - ups)
+    assert top - 20 <= steps["n"][:ups].sum() <= top
 
 
 def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, capsys):
@@ -176,6 +182,17 @@ def test_a_time_column_by_an_unknown_name_is_pointed_out(tmp_path, capsys):
                           capsys)
     assert code == 0 and "holds times" not in err, err
     assert len(load_run(out.strip()).samples) == t.size
+    # the same at 10 Hz is a record read with its rows for its clock, not a step per row: said
+    # so (was: "every row is a step" beside "rows of a record without time ... binned")
+    t = np.arange(0.0, 23.0, 0.1)
+    p = np.interp(t, [0, 2, 12, 22, 23], [0, 0, 2.5, 0, 0])
+    pd.DataFrame({"Zeit seit Beginn [s]": t, "P": p, "F": 150.0 * p}).to_csv(table,
+                                                                             index=False)
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "10hz")],
+                          capsys)
+    assert code == 0 and "every row is a step" not in err, err
+    assert ("column 'Zeit seit Beginn [s]' holds times but is not read as the time column: its "
+            "rows are taken as evenly spaced in time; if it is the record's clock") in err
 
 
 def test_export_as_workbook_and_csv(tmp_path, capsys):
@@ -347,10 +364,41 @@ def test_a_force_that_falls_as_the_pressure_rises_is_questioned(tmp_path, capsys
     assert code == 0, err
     assert load_run(out.strip()).steps["force_N_mean"].tolist() == [0, -100, -200, -300]
     assert ("the force falls as the pressure rises (0 N at 0 bar, -300 N at 3 bar): a muscle "
-            "pulls harder with pressure; is the load cell's sign reversed?") in err
+            "pulls harder with pressure; if the load cell reads the pull negative, import "
+            "again with --force-sign -1") in err
     table.write_text("P [bar],F [N]\n0,0\n1,100\n2,200\n1,110\n0,3\n")
     code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
     assert code == 0 and "sign" not in err
+    # a slack muscle read at the load cell's offset (Martens & Boblan's DMSP-20 at 222 mm),
+    # no 0 bar row to tare it: its forces are alike, and their line's round-off slope
+    # (-1.6e-17 N/bar) was taken for a falling force
+    table.write_text("P [bar],F [N]\n" + "".join(f"{p:g},0.3\n" for p in (
+        0.35, 0.65, 0.85, 1.1, 1.35, 1.4625, 1.575, 1.6875, 1.8, 1.975, 2.15, 2.325, 2.5,
+        2.8125, 3.125, 3.4375, 3.75, 4.5, 5.25, 6.0, 6.75)))
+    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0 and "sign" not in err
+
+
+@pytest.mark.parametrize("tare", [[], ["--tare", "-2"]])
+def test_force_sign_minus_one_reads_a_cell_wired_for_tension_negative(tare, tmp_path, capsys):
+    # a load cell reading the muscle's pull negative, 2 N off at rest: every force was imported
+    # negative, and no option turned them
+    table = tmp_path / "tension-negative.csv"
+    table.write_text("P [bar],F [N]\n0,-2\n1,-102\n2,-202\n3,-302\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--force-sign", "-1", *tare,
+                           "--out", str(tmp_path / "runs")], capsys)
+    assert code == 0, err
+    run = load_run(out.strip())
+    # the table's -2 N at 0 bar, as read (or given as read), is the zero of the negated forces
+    assert run.steps["force_N_mean"].tolist() == [0, 100, 200, 300]
+    assert run.meta.imported_from["force_sign"] == -1
+    assert run.meta.imported_from["tare_N"] == 2.0
+    assert "forces negated (--force-sign -1)" in err and "falls as the pressure" not in err
+    code, _, err = _run(["import", str(table), *MUSCLE, "--force-sign", "2", "--out",
+                         str(tmp_path / "other")], capsys)
+    assert code == 2 and err == ("mkm import: error: --force-sign 2 is invalid: expected one "
+                                 "of 1, -1\n")
+    assert not (tmp_path / "other").exists()
 
 
 

@@ -64,6 +64,9 @@ def test_kpa_and_lbf_headers(tmp_path, mkm_cli):
                                             "converted_to": "N"}
     assert recorded["file"] == "lab.csv" and len(recorded["sha256"]) == 64
     assert recorded["tare"] == "none: the table has no 0 bar row"
+    # said: a load cell's offset would stay in every force (the table's zero is not known)
+    assert ("no tare: the table has no 0 bar row (its rising branch starts at 0.5 bar): its "
+            "forces as given; --tare N gives one") in err
     assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
 
 
@@ -119,7 +122,7 @@ def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
     assert one.meta.muscle.eps == pytest.approx(0.122)
 
 
-def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.6):
+def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
     """A lab's 100 Hz record: 2 s vented, 10 s up to 2.5 bar, 10 s down, 1 s vented; the gauge
     reads ``vented_bar`` at rest, the load cell ``tare_N``; noise 0.005 bar and 0.3 N."""
     rng = np.random.default_rng(seed)
@@ -140,7 +143,7 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     recorded = run.meta.imported_from
     assert recorded["shape"] == "ramp" and "quasi-static bins of a ramp" in err
     # the gauge's noise is 0.005 bar: its median over 2 s is within 0.002 of what it read
-    assert recorded["vented_reading_bar"] == pytest.approx(0.6, abs=0.002)
+    assert recorded["vented_reading_bar"] == pytest.approx(0.4, abs=0.002)
     # 200 vented samples of 0.3 N noise: the zero is within 0.1 N of the load cell's offset
     assert recorded["tare_N"] == pytest.approx(7.5, abs=0.1)
     samples = run.samples
@@ -389,6 +392,135 @@ def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm
         inside = (run.samples["step"] == step.step).to_numpy()
         assert step.force_N_mean == pytest.approx(thickwall_N(p[inside], 0.122).mean(),
                                                   rel=1e-5)  # 6 digits kept
+
+
+@pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
+def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
+                                                                         mkm_cli):
+    # the regulator not vented when the logging began: 5 s held at 1 bar, then up to 6 bar.
+    # Its first plateau was taken for a vented reading: 1 bar taken from every pressure, and
+    # the muscle's pull at 1 bar taken for the load cell's zero
+    rng = np.random.default_rng(3)
+    t = np.arange(0.0, 65.0, 0.1)
+    p = np.interp(t, [0, 5, 65], [1.0, 1.0, 6.0])
+    path = tmp_path / "pressurised.csv"
+    pd.DataFrame({"t (s)": t, header: p + rng.normal(0, 0.003, t.size),
+                  "F (N)": thickwall_N(p, 0.0)}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    assert recorded["vented_reading_bar"] == 0.0 and recorded["tare_N"] == 0.0
+    # the plateau's median over 50 samples of 0.003 bar noise
+    assert recorded["held_at_start_bar"] == pytest.approx(1.0, abs=0.002)
+    assert "the record starts held at 1 bar" in err
+    # the reading to type to the millibar (a sensor's resolution): 1.01bar was 4 mbar off an
+    # absolute sensor's 1.0138 bar
+    assert f"--vented {recorded['held_at_start_bar']:.3f}bar" in err
+    # a unit marked gauge is the lab's word: no absolute sensor is suggested against it
+    assert ("if the sensor reads absolute pressure" in err) == (header == "P (bar)")
+    assert ("kept as the gauge pressure its unit 'barg' says" in err) == (header == "P (barg)")
+    assert run.samples["pressure_bar"].max() == pytest.approx(6.0, abs=0.015)  # 5 noise widths
+    for step in run.steps.itertuples():  # each point the force of its own pressures
+        inside = (run.samples["step"] == step.step).to_numpy()
+        assert step.force_N_mean == pytest.approx(thickwall_N(p[inside], 0.0).mean(),
+                                                  rel=1e-5)
+    # a sensor that reads absolute pressure: the option the note names gives the gauge's
+    (absolute,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--vented", "1bar")
+    assert absolute.samples["pressure_bar"].max() == pytest.approx(5.0, abs=0.015)
+    pd.DataFrame({"t (s)": t, header: p + 0.0138, "F (N)": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False)
+    _, err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "--vented 1.014bar" in err
+
+
+def test_a_record_without_its_time_is_binned_not_a_step_per_row(tmp_path, mkm_cli):
+    # a 10 Hz record of a slow ramp, 0 -> 2.5 -> 0 bar in 200 s, saved without its time
+    # column: each of its 2000 rows was a step, and identify fitted them for 8 minutes
+    rng = np.random.default_rng(7)
+    n = 2000
+    p = np.interp(np.arange(n), [0, 50, 1000, 1950, n - 1], [0, 0, 2.5, 0, 0])
+    truth = thickwall_N(p, 0.0)
+    path = tmp_path / "untimed.csv"
+    pd.DataFrame({"Pressure (bar)": np.abs(p + rng.normal(0, 0.003, n)),  # a gauge's noise
+                  "Force (N)": truth + 4.0 + rng.normal(0, 0.3, n)}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    steps = run.steps
+    # 20 bins of 0.125 bar over the range, on each branch
+    assert recorded["shape"] == "ramp" and len(steps) <= 2 * 20
+    assert set(steps["direction"]) == {"up", "down"} and steps["n"].sum() >= n - 2 * 20
+    assert "2000 rows of a record without time" in err and "imported_table.csv" in err
+    assert (run.path / "imported_table.csv").read_bytes() == path.read_bytes()
+    # the zero: the mean of the vented rest's 50 rows (was the force of the one row at the
+    # rising branch's lowest pressure), give or take the row the gauge's noise blurs at its end;
+    # 4 standard errors of 0.3 N noise over them, and the pull of that row (0 at eps 0, 0 bar)
+    rows = int(recorded["tare"].removeprefix("mean force of the ").split(" row(s) ")[0])
+    assert abs(rows - 50) <= 2 and recorded["tare"].endswith(" before the pressure rises")
+    assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(rows) + thickwall_N(
+        [p[rows]], 0.0)[0])
+    # each bin's mean within 0.125 bar of its mean pressure: thick-wall's force is near linear
+    # in pressure there (its curvature over a bin < 1 N), plus the tare's error and the noise
+    for step in steps.itertuples():
+        assert step.force_N_mean == pytest.approx(
+            thickwall_N([step.pressure_bar_mean], 0.0)[0], abs=1.0 + 0.2 + 4 * 0.3 /
+            np.sqrt(step.n)), step
+    # a step table of 0.05 bar steps is still a step per row
+    fine = np.r_[np.arange(0.0, 2.5, 0.05), np.arange(2.5, -0.01, -0.05)]
+    steps_path = tmp_path / "fine.csv"
+    pd.DataFrame({"P (bar)": fine, "F (N)": thickwall_N(fine, 0.0)}).to_csv(steps_path,
+                                                                             index=False)
+    (table,), _ = _import(mkm_cli, steps_path, *MUSCLE, "--eps", "0")
+    assert len(table.steps) == fine.size and table.meta.imported_from["shape"] == "steps"
+
+
+def test_a_staircase_recorded_without_its_time_gives_its_plateaus(tmp_path, mkm_cli):
+    # 10 Hz, 0 -> 3 -> 0 bar in 0.5 bar holds of 10 s joined by 1 s ramps, saved without its
+    # time: binned by pressure, each 1 s ramp between two holds made steps of 2-4 rows
+    rng = np.random.default_rng(11)
+    levels = [0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 2.5, 2.0, 1.5, 1.0, 0.5, 0]
+    knots = [(11 * k + dt, level) for k, level in enumerate(levels) for dt in (0, 10)]
+    p = np.interp(np.arange(0, 11 * len(levels), 0.1), *zip(*knots, strict=True))
+    path = tmp_path / "staircase.csv"
+    pd.DataFrame({"P (bar)": np.abs(p + rng.normal(0, 0.004, p.size)),
+                  "F (N)": thickwall_N(p, 0.0) + rng.normal(0, 0.4, p.size)}).to_csv(
+        path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    steps = run.steps
+    assert run.meta.imported_from["shape"] == "staircase"
+    assert "its 11 plateaus averaged over their second halves" in err
+    np.testing.assert_allclose(steps["set_pressure_bar"], levels[1:-1], atol=0.002)
+    assert steps["direction"].tolist() == ["up"] * 6 + ["down"] * 5
+    # each the mean of its hold's second half, less the tare: 50 and about 100 rows of 0.4 N
+    # noise, 4 standard errors of the difference
+    np.testing.assert_allclose(steps["force_N_mean"], thickwall_N(levels[1:-1], 0.0),
+                               atol=4 * 0.4 * np.sqrt(1 / 50 + 1 / 100))
+    assert (run.path / "imported_table.csv").read_bytes() == path.read_bytes()
+
+
+def test_a_record_without_time_from_an_absolute_sensor_takes_vented(tmp_path, mkm_cli):
+    # a 10 Hz record saved without its time, its sensor reading 1.013 bar vented: --vented
+    # was refused ("has no time column"), so its pressures kept the ambient's 1.013 bar and
+    # its forces the load cell's 4 N
+    rng = np.random.default_rng(12)
+    p = np.interp(np.arange(1500), [0, 100, 800, 1500], [0, 0, 2.5, 0])
+    path = tmp_path / "absolute.csv"
+    pd.DataFrame({"p (bar)": p + 1.013 + rng.normal(0, 0.003, p.size),
+                  "F (N)": thickwall_N(p, 0.0) + 4.0 + rng.normal(0, 0.3, p.size)}).to_csv(
+        path, index=False)
+    (held,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    # its 100 vented rows found as a timed record's rest is (and the ramp's first rows within
+    # the plateau's 0.03 bar band): its median within 2 mbar
+    level = held.meta.imported_from["held_at_start_bar"]
+    assert level == pytest.approx(1.013, abs=0.002)
+    assert ("if the sensor reads absolute pressure, import again with --vented "
+            f"{level:.3f}bar") in err
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--vented", "1.013bar")
+    recorded = run.meta.imported_from
+    assert recorded["vented_reading_bar"] == 1.013 and recorded["vented"] == "given"
+    # the rest's 100 rows of 0.3 N noise, 4 standard errors
+    assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(100))
+    top = run.steps.loc[run.steps["pressure_bar_mean"].idxmax()]
+    assert top["force_N_mean"] == pytest.approx(thickwall_N([top["pressure_bar_mean"]], 0.0)[0],
+                                                abs=1.0 + 0.12 + 4 * 0.3 / np.sqrt(top["n"]))
 
 
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):

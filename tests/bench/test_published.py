@@ -37,6 +37,9 @@ def test_martens_boblan_import_identify_report(tmp_path, mkm_cli):
     assert float(steps.loc[np.isclose(steps["pressure_bar_mean"], 6.75), "force_N_mean"].iloc[0]
                  ) == 1164.3
     assert runs[0].meta.imported_from["slack_rows"] == 1
+    # no 0 bar row, but its slack entries mark its zero (0 N): no "no tare" said six times
+    assert runs[0].meta.imported_from["tare"] == "none: the table has no 0 bar row"
+    assert "no tare" not in err
 
     # identified on the rest length and eps 9.8 % with the thick-wall model (a closed form:
     # the surrogate's box ends at 2.5 bar, the table reaches 6.75)

@@ -47,8 +47,9 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
                  "--eps", "5%", "--pressures", "0:3:0.5"]) == 0
     captured = capsys.readouterr()
     lines = captured.out.splitlines()
-    assert lines[0] == "pressure_bar,D0_mm,t0_mm,eps,force_N,valid,converged,in_domain"
-    assert lines[-1].startswith("3,35,2.5,0.05,") and lines[-1].endswith(",False,True,False")
+    assert lines[0] == "pressure_bar,D0_mm,t0_mm,eps,force_N,valid,converged,in_domain,reason"
+    assert lines[-1] == ('3,35,2.5,0.05,,False,True,False,"outside the training domain: '
+                         'pressure_bar=3 not in [0, 2.5]"')  # no force: no answer there
     assert captured.err.startswith("mkm surrogate predict: warning: 1 of 7 points lie outside "
                                    "the training")
 

@@ -1,6 +1,7 @@
 import warnings
 
 import numpy as np
+import pandas
 import pytest
 
 from mkm.fem.calibration import calibrated
@@ -161,3 +162,38 @@ def test_a_parameter_outside_the_limits_is_refused(physics, parameter, value):
     physics models refuse it: outside LIMITS a value is a typo, not a muscle."""
     with pytest.raises(ValueError, match=rf"^{parameter}=\S+ is invalid: expected"):
         physics.with_parameters(**{parameter: value})
+
+
+def test_predict_writes_no_force_where_the_surrogate_has_no_answer(design_model, tmp_path,
+                                                                   capsys):
+    # 3 bar lies above the default surrogate's 2.5 bar box and eps 25 % beyond its 20 %: those
+    # points were written with the estimator's extrapolation (0 N at eps 25 %, a number a
+    # script reads as a force), flagged only by valid=False
+    from mkm.cli import main
+
+    out = tmp_path / "sweep.csv"
+    assert main(["surrogate", "predict", "--D0", "40", "--t0", "3", "--eps", "5%",
+                 "--pressures", "0:3:1", "--out", str(out)]) == 0
+    table = pandas.read_csv(out, keep_default_na=False)
+    assert table["valid"].tolist() == [True, True, True, False]
+    # the answered points are the model's own numbers, as written (6 significant digits)
+    expected = design_model.predict([0.0, 1.0, 2.0], 40.0, 3.0, 0.05).force_N
+    assert table["force_N"][:3].astype(float).to_numpy() == pytest.approx(expected, rel=1e-5)
+    assert table["force_N"][3] == "" and table["force_std_N"][3] == ""
+    assert table["reason"].tolist() == ["", "", "", "outside the training domain: "
+                                        "pressure_bar=3 not in [0, 2.5]"]
+    assert "1 outside the training domain: no force written" in capsys.readouterr().err
+    assert main(["surrogate", "predict", "--D0", "40", "--t0", "3", "--eps", "25%",
+                 "--pressures", "1"]) == 0
+    row = capsys.readouterr().out.splitlines()[1]
+    assert row == ('1,40,3,0.25,,False,True,False,,"outside the training domain: eps=0.25 not '
+                   'in [0, 0.2]"')
+
+
+def test_answered_takes_a_scalar_prediction(design_model):
+    # one point, as ForceModel.predict broadcasts scalars: its index is ()
+    with pytest.warns(OutOfDomainWarning):
+        prediction = design_model.predict(1.0, 40.0, 3.0, 0.25)
+    answered = design_model.answered(prediction)
+    assert np.isnan(answered.force_N) and not answered.valid
+    assert answered.extras["reason"] == "outside the training domain: eps=0.25 not in [0, 0.2]"
