@@ -306,11 +306,27 @@ def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
     tables = source.tables(runs, values)
     offset = values.get("pressure_offset_bar", 0.0)
     gain = values.get("pressure_gain", 1.0)
-    return [force_history(run.time_s, np.interp((run.pressure_bar - offset) / gain,
-                                                *tables[k]),
+    return [force_history(run.time_s, static_force((run.pressure_bar - offset) / gain,
+                                                   *tables[k]),
                           values["hysteresis_fraction"], values["creep_fraction"],
                           math.exp(values["log_tau"]))
             for k, run in enumerate(runs)]
+
+
+def static_force(pressure_bar, grid, force_N) -> np.ndarray:
+    """The tabulated static force [N] at ``pressure_bar``, continued along the table's last
+    slope above its top: a monitor reading low puts the top step's true pressure above the
+    highest set pressure (the FE's table) or the surrogate's box, where a force held at the top
+    value would misfit the step by the slope times the offset."""
+    grid, force_N = np.asarray(grid, dtype=float), np.asarray(force_N, dtype=float)
+    out = np.interp(pressure_bar, grid, force_N)
+    below_top = np.flatnonzero(grid < grid[-1])  # the surrogate's grid may end on the top twice
+    above = np.asarray(pressure_bar) > grid[-1]
+    if below_top.size and above.any():
+        k = below_top[-1]
+        slope = (force_N[-1] - force_N[k]) / (grid[-1] - grid[k])
+        out[above] = force_N[-1] + slope * (np.asarray(pressure_bar)[above] - grid[-1])
+    return out
 
 
 def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float, float]:
