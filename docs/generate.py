@@ -318,6 +318,10 @@ BENCHMARKS = {
     "budget_coverage.json": "benchmarks/bench_uncertainty.py --runs 100 --eps 0 0.122 "
                             "--no-bands --out {out}",
     "identify_t0.json": "benchmarks/bench_identify_t0.py --draws 6 --seed 0 --out {out}",
+    "identify_wrong_bench.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 --seed "
+                                 "20261240 --out {out}",
+    "identify_wrong_bench_fresh.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 "
+                                       "--seed 20261300 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
     "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --out {out}",
