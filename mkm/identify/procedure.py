@@ -340,7 +340,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if terms is None:
         terms = model_form_terms(source, fe, runs, best, braid)
     boot = extend(boot, best, terms)
-    notes += [line for line in (fitness.line(),) if line]
+    notes += [line for line in (fitness.line(), fitness.zero_line()) if line]
     notes += _rest_length_hint(runs, fe, best, fitness, groups)
     notes += _identifiability(runs, best, boot)
     if boot.get("stretched"):

@@ -100,6 +100,50 @@ def test_a_misfit_names_the_friction_and_creep_the_runs_show_and_the_fit_left_ou
             "theta0,rubber,friction,creep fits it too; ") in line
 
 
+def test_a_misfit_names_a_load_cell_zero_the_slack_steps_read(tmp_path):
+    # a table whose forces carry the cell's zero (its tare left out: -5 N on every force): the
+    # steps at 0.25 and 0.5 bar of eps 12.2 %, where the muscle is slack, read -5 N, which no
+    # muscle pulls; the fit misfits by hundreds of the noise and said only to check the load
+    # cell (seed 20261241 of bench_identify_wrong_bench.py: -9.56 N, chi2/nu 1195)
+    import pandas as pd
+
+    paths = []
+    for k, eps in enumerate((0.0, 0.122)):
+        config = load_config(eps=eps).replace(
+            sequence={"pressures_bar": (0.25, 0.5, 1.0, 1.5, 2.0, 2.5),
+                      "preconditioning_cycles": 0},
+            sim={"model": "thickwall", "seed": 2026124100 + k})
+        result = acquire(config, out_root=tmp_path, notify=lambda message: None)
+        remove_simulator_settings(result.path)
+        for name, column in (("samples.csv", "force_N"), ("steps.csv", "force_N_mean")):
+            table = pd.read_csv(result.path / name)
+            table[column] -= 5.0
+            table.to_csv(result.path / name, index=False)
+        paths.append(result.path)
+    runs = load_runs(paths)
+    source = ModelStatic("thickwall", float(runs[0].muscle["L0_mm"]), cache_dir=None)
+    start = {**fitting.nominal_values(33.0), "hysteresis_fraction": 0.02,
+             "creep_fraction": 0.01}
+    good = goodness.assess(runs, fitting.fit(source, runs, NAMES, start))
+    assert good.misfit, good.record()
+    line = good.zero_line()
+    prefix = f"the steps where the identified muscle is slack read a force (run {runs[1].name} "
+    assert line and line.startswith(prefix), line
+    # the slack steps' mean, within three of its standard errors (0.07 N: the hold's noise
+    # over root 50 and the tare's)
+    assert float(line[len(prefix):].split()[0]) == pytest.approx(-5.0, abs=0.2), line
+    # the same runs' forces as the bench measured them: their slack steps read nothing
+    # beyond their noise
+    for path in paths:
+        for name, column in (("samples.csv", "force_N"), ("steps.csv", "force_N_mean")):
+            table = pd.read_csv(path / name)
+            table[column] += 5.0
+            table.to_csv(path / name, index=False)
+    runs = load_runs(paths)
+    good = goodness.assess(runs, fitting.fit(source, runs, NAMES, start))
+    assert good.slack and good.zero_line() is None, good.slack
+
+
 def test_a_misfit_names_the_rest_length_and_gap_it_did_not_fit(tmp_path):
     # a lab's rest length 1.5 % short of the muscle's (its first length already shortened):
     # every run's declared eps 1.5 points low, a misfit like an instrument's, that identify
