@@ -16,9 +16,11 @@ an amplifier offset of 0.01-0.05 V, 2-10 N, added to every recorded force), the 
 0.02-0.04 bar off (within its declared 0.04 bar) or its gain 1 % off (either sign), a rubber whose
 C01/C10 is not Silastic S's (0-0.3 or 1.8-2.5, the same small-strain stiffness), a braid angle
 within 0.4 deg of the surrogate box's edge (28 or 38 deg, either side), a radial gap of 0.3-1 mm
-between tube and braid, and strong braid friction (8-12 %) with strong creep (4-6 %). Two runs
-(eps 0 and 12.2 %) are acquired, stripped of the truth and identified by ``identify(runs)``:
-the default parameters, the surrogate search, the FE confirmation.
+between tube and braid, strong braid friction (8-12 %) with strong creep (4-6 %), and creep of
+2-4 % with another time constant than the simulator's default 30 s (5-10 s or 90-300 s, the
+holds lasting about 10 s). Two runs (eps 0 and 12.2 %) are acquired, stripped of the truth and
+identified by ``identify(runs)``: the default parameters, the surrogate search, the FE
+confirmation.
 
 Every parameter reported with an interval is judged against the truth as
 ``bench_identify_coverage.judge`` does (the rubber, where one scale, against the truth's
@@ -53,7 +55,7 @@ from mkm.surrogate.design import BOX
 
 FIT_EPS = (0.0, 0.122)
 DEPARTURES = ("loadcell gain", "loadcell offset", "monitor offset", "monitor gain",
-              "rubber ratio", "theta0 at box edge", "gap", "friction and creep")
+              "rubber ratio", "theta0 at box edge", "gap", "friction and creep", "creep time")
 FIRST_SEED = 20261240
 
 
@@ -89,6 +91,10 @@ def draw(seed: int, departure: str, config) -> dict:
     elif departure == "friction and creep":
         muscle.update(hysteresis_fraction=float(rng.uniform(0.08, 0.12)),
                       creep_fraction=float(rng.uniform(0.04, 0.06)))
+    elif departure == "creep time":
+        muscle.update(creep_fraction=float(rng.uniform(0.02, 0.04)),
+                      creep_tau_s=float(rng.uniform(5.0, 10.0) if sign < 0
+                                        else rng.uniform(90.0, 300.0)))
     return muscle
 
 
@@ -104,7 +110,8 @@ def leave_zero_in(run: Path, offset_N: float) -> None:
 def acquire_blind(muscle: dict, eps: float, out: Path) -> Path:
     config = load_config(eps=eps).replace(sim={
         "hysteresis_fraction": muscle["hysteresis_fraction"],
-        "creep_fraction": muscle["creep_fraction"], "seed": muscle["seed"] + int(1000 * eps),
+        "creep_fraction": muscle["creep_fraction"],
+        "creep_tau_s": muscle.get("creep_tau_s", 30.0), "seed": muscle["seed"] + int(1000 * eps),
         "truth": muscle["truth"]})
     result = acquire(config, out_root=out, notify=lambda message: None)
     if result.status != "complete":
@@ -122,6 +129,8 @@ def departure_value(muscle: dict) -> str:
         return f"{muscle['loadcell_offset_N']:+.2f} N"
     if d == "rubber ratio":
         return f"C01/C10 {t['C01_MPa'] / t['C10_MPa']:.3g}"
+    if d == "creep time":
+        return f"creep {muscle['creep_fraction']:.3f}, tau {muscle['creep_tau_s']:.3g} s"
     if d == "friction and creep":
         return f"friction {muscle['hysteresis_fraction']:.3f}, creep {muscle['creep_fraction']:.3f}"
     key = {"loadcell gain": "loadcell_gain", "monitor offset": "monitor_offset_bar",
@@ -139,17 +148,20 @@ def one(muscle: dict, out: Path, config) -> dict:
     missed = [p["parameter"] for p in parameters if not p["covered"]]
     far = [p["parameter"] for p in parameters if p["far"]]
     misfit = result.goodness.line() if result.goodness else None
+    zero = result.goodness.zero_line() if result.goodness else None
     verdict = "covered" if not missed else "warned" if misfit else "SILENT"
     return {"departure": muscle["departure"], "seed": muscle["seed"],
             "value": departure_value(muscle), "verdict": verdict,
             "chi2_per_nu": result.goodness.reduced if result.goodness else None,
-            "missed": missed, "far": far, "misfit_line": misfit, "notes": result.notes,
+            "missed": missed, "far": far, "misfit_line": misfit, "zero_line": zero,
+            "notes": result.notes,
             "parameters": parameters, "muscle": muscle, "seconds": round(seconds, 1)}
 
 
 def grid(rows: list[dict], departures) -> list[dict]:
     """Draws x departures: per departure how many draws were covered, missed with a misfit
-    line, missed silently, and how many printed a misfit line; each cell the verdict (``+m``:
+    line, missed silently, and how many printed a misfit line and the load cell's zero line
+    (:meth:`mkm.identify.goodness.Goodness.zero_line`); each cell the verdict (``+m``:
     covered, and a misfit line printed), the departure's value, chi2/nu and what missed."""
     table = []
     for d in departures:
@@ -163,7 +175,8 @@ def grid(rows: list[dict], departures) -> list[dict]:
         table.append({"departure": d, "covered": sum(r["verdict"] == "covered" for r in mine),
                       "warned": sum(r["verdict"] == "warned" for r in mine),
                       "silent": sum(r["verdict"] == "SILENT" for r in mine),
-                      "misfit_line": sum(r["misfit_line"] is not None for r in mine), **cells})
+                      "misfit_line": sum(r["misfit_line"] is not None for r in mine),
+                      "zero_line": sum(r["zero_line"] is not None for r in mine), **cells})
     return table
 
 
@@ -198,8 +211,8 @@ def main(argv=None) -> int:
                       f"{'|'.join(row['far']) or '-'},{row['seconds']}", flush=True)
                 k += 1
     table = grid(rows, departures)
-    print(pd.DataFrame(table)[["departure", "covered", "warned", "silent",
-                               "misfit_line"]].to_string(index=False))
+    print(pd.DataFrame(table)[["departure", "covered", "warned", "silent", "misfit_line",
+                               "zero_line"]].to_string(index=False))
     if args.out:
         Path(args.out).write_text(json.dumps(
             {**provenance(), "seed": args.seed, "rows": table, "draws": rows,

@@ -319,7 +319,9 @@ BENCHMARKS = {
                             "--no-bands --out {out}",
     "identify_t0.json": "benchmarks/bench_identify_t0.py --draws 6 --seed 0 --out {out}",
     "identify_wrong_bench.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 --seed "
-                                 "20261240 --out {out}",
+                                 "20261240 --departures 'loadcell gain,loadcell offset,monitor "
+                                 "offset,monitor gain,rubber ratio,theta0 at box edge,gap,"
+                                 "friction and creep' --out {out}",
     "identify_wrong_bench_fresh.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 "
                                        "--seed 20261300 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
