@@ -195,7 +195,8 @@ class ModelStatic(StaticSource):
 
     def tables(self, runs, values):
         models = {L0: self.model(values, L0) for L0 in by_length(runs)}
-        grids = [run.table_pressures() for run in runs]
+        grids = [run.table_pressures(values.get("pressure_offset_bar", 0.0),
+                                     values.get("pressure_gain", 1.0)) for run in runs]
         solved = predict_many([(models[float(run.muscle["L0_mm"])], grid,
                                 *geometry(run, values))
                                for grid, run in zip(grids, runs, strict=True)], self.cache_dir,
@@ -295,7 +296,7 @@ def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tup
     """Per run: the FE model's pressures and FE minus ``base`` there, at ``values``."""
     fe_tables = fe.tables(runs, values)
     base_tables = base.tables(runs, values)
-    return [(grid, F - np.interp(grid, *base_tables[k]))
+    return [(grid, F - static_force(grid, *base_tables[k]))
             for k, (grid, F) in enumerate(fe_tables)]
 
 

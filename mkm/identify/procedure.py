@@ -531,7 +531,7 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
 
 def _minus(tables, others) -> list[tuple]:
     """Per run: ``tables``' pressures and their force less ``others``' there."""
-    return [(grid, F - np.interp(grid, *other))
+    return [(grid, F - fitting.static_force(grid, *other))
             for (grid, F), other in zip(tables, others, strict=True)]
 
 

@@ -85,9 +85,12 @@ class RunData:
         """``(D0_mm, t0_mm, eps)``: what a force model's predict takes besides the pressure."""
         return float(self.muscle["D0_mm"]), float(self.muscle["t0_mm"]), self.eps
 
-    def table_pressures(self) -> np.ndarray:
-        """0 bar and the settled steps' set pressures: where the FE model is solved."""
-        return np.unique(np.r_[0.0, self.steps["set_pressure_bar"].to_numpy(dtype=float)])
+    def table_pressures(self, offset_bar: float = 0.0, gain: float = 1.0) -> np.ndarray:
+        """0 bar and the true pressures of the settled steps' holds, their set pressures less
+        the monitor's ``offset_bar`` over its ``gain``: where the FE model is solved (between
+        its pressures the force is interpolated, which a threshold between them bends)."""
+        held = (self.steps["set_pressure_bar"].to_numpy(dtype=float) - offset_bar) / gain
+        return np.unique(np.r_[0.0, held[held > 0]])
 
     def declared_noise_N(self) -> np.ndarray | None:
         """Each step's noise [N] from the bounds its lab declared (an imported table or ramp,
