@@ -147,7 +147,8 @@ def truths(muscle: dict, config) -> dict[str, float]:
     out = {"theta0_deg": t["theta0_deg"], "C10_MPa": t["C10_MPa"], "C01_MPa": t["C01_MPa"],
            "rubber_scale": scale,
            "hysteresis_fraction": muscle["hysteresis_fraction"],
-           "creep_fraction": muscle["creep_fraction"], "creep_tau_s": 30.0}
+           "creep_fraction": muscle["creep_fraction"],
+           "creep_tau_s": muscle.get("creep_tau_s", 30.0)}
     if "monitor_gain" not in t:
         out["pressure_offset_bar"] = t.get("monitor_offset_bar", 0.0)
     return out

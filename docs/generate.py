@@ -321,6 +321,12 @@ BENCHMARKS = {
     "budget_coverage.json": "benchmarks/bench_uncertainty.py --runs 100 --eps 0 0.122 "
                             "--no-bands --out {out}",
     "identify_t0.json": "benchmarks/bench_identify_t0.py --draws 6 --seed 0 --out {out}",
+    "identify_wrong_bench.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 --seed "
+                                 "20261240 --departures 'loadcell gain,loadcell offset,monitor "
+                                 "offset,monitor gain,rubber ratio,theta0 at box edge,gap,"
+                                 "friction and creep' --out {out}",
+    "identify_wrong_bench_fresh.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 "
+                                       "--seed 20261300 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
     "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --out {out}",

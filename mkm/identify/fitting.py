@@ -302,7 +302,7 @@ def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tup
     """Per run: the FE model's pressures and FE minus ``base`` there, at ``values``."""
     fe_tables = fe.tables(runs, values)
     base_tables = base.tables(runs, values)
-    return [(grid, F - np.interp(grid, *base_tables[k]))
+    return [(grid, F - static_force(grid, *base_tables[k]))
             for k, (grid, F) in enumerate(fe_tables)]
 
 
@@ -310,10 +310,26 @@ def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
     """The model's force trace [N] at every sample of each run: the static force at the true
     pressure (:meth:`mkm.identify.runs.RunData.true_pressure_bar`), with friction and creep."""
     tables = source.tables(runs, values)
-    return [force_history(run.time_s, np.interp(run.true_pressure_bar(values), *tables[k]),
+    return [force_history(run.time_s, static_force(run.true_pressure_bar(values), *tables[k]),
                           values["hysteresis_fraction"], values["creep_fraction"],
                           math.exp(values["log_tau"]))
             for k, run in enumerate(runs)]
+
+
+def static_force(pressure_bar, grid, force_N) -> np.ndarray:
+    """The tabulated static force [N] at ``pressure_bar``, continued along the table's last
+    slope above its top: a monitor reading low puts the top step's true pressure above the
+    highest set pressure (the FE's table) or the surrogate's box, where a force held at the top
+    value would misfit the step by the slope times the offset."""
+    grid, force_N = np.asarray(grid, dtype=float), np.asarray(force_N, dtype=float)
+    out = np.interp(pressure_bar, grid, force_N)
+    below_top = np.flatnonzero(grid < grid[-1])  # the surrogate's grid may end on the top twice
+    above = np.asarray(pressure_bar) > grid[-1]
+    if below_top.size and above.any():
+        k = below_top[-1]
+        slope = (force_N[-1] - force_N[k]) / (grid[-1] - grid[k])
+        out[above] = force_N[-1] + slope * (np.asarray(pressure_bar)[above] - grid[-1])
+    return out
 
 
 def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float, float]:

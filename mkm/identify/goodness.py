@@ -49,6 +49,11 @@ from mkm.identify.runs import shown_effects, step_slopes
 #: a misfit: all steps' chi-square this improbable under their noise alone (a branch's: this
 #: over the number of branches)
 MISFIT_P = 1e-3
+#: a slack step's mean force called a zero error beyond this many standard errors and this
+#: force [N] (the packaged cell's ADC step is 0.24 N)
+ZERO_SIGMAS, ZERO_FLOOR_N = 5.0, 0.5
+#: a step whose fitted force is below this [N] is slack
+SLACK_N = 1e-6
 #: runs-test probability below which the residuals are said to have structure
 STRUCTURE_P = 0.01
 BRANCHES = {"up": "loading", "down": "unloading"}
@@ -95,6 +100,9 @@ class Goodness:
     widened: dict = field(default_factory=dict)  # parameter: factor applied
     fitted: tuple[str, ...] = ()  # the fit's parameters: a misfit names what it did not fit
     shown: tuple[str, ...] = ()  # the --params groups of what the runs show (SHOWN)
+    #: per run, the settled steps where the fitted muscle is slack: (run, steps, their mean
+    #: measured force [N], its standard error [N])
+    slack: list[tuple[str, int, float, float]] = field(default_factory=list)
 
     @property
     def reduced(self) -> float:
@@ -166,6 +174,25 @@ class Goodness:
                 f"{' and '.join(SHOWN[g] for g in missing)}: --params "
                 f"{','.join(fitted + missing)} fits {'them' if len(missing) > 1 else 'it'} too; ")
 
+    def zero_line(self) -> str | None:
+        """One line when the fit misfits and a run's steps where the fitted muscle is slack
+        read a force beyond :data:`ZERO_SIGMAS` standard errors and :data:`ZERO_FLOOR_N`: a
+        slack muscle pulls nothing, so what they read is the load cell's zero (a tare left
+        out, a drift) or a preload the model does not have."""
+        if not self.misfit:
+            return None
+        off = [(run, n, F) for run, n, F, se in self.slack
+               if abs(F) > max(ZERO_SIGMAS * se, ZERO_FLOOR_N)]
+        if not off:
+            return None
+        shown = "; ".join(f"run {run} {F:+.3g} N over {n} step{'s' if n > 1 else ''}"
+                          for run, n, F in off)
+        return (f"the steps where the identified muscle is slack read a force ({shown}): a "
+                "slack muscle pulls nothing, so the load cell's zero is off by that (a tare "
+                "left out, a drift) or the muscle is mounted with a preload: for an imported "
+                "table, import it again with --tare at that force; for a bench run, check the "
+                "cell's zero (mkm tare) and the mounting, and record again")
+
     def record(self) -> dict:
         return {"method": "chi-square of the settled steps' mean residuals against their own "
                           f"noise (hold scatter, monitor noise x slope, tare), per run and "
@@ -231,7 +258,8 @@ def assess(runs, fit) -> Goodness:
     squares = np.bincount(fit.cluster, (fit.residual_N - mean[fit.cluster]) ** 2,
                           minlength=n_steps)
     scatter2 = squares / np.maximum(counts - 1, 1) / np.maximum(counts, 1)
-    branches, offset, left_out = [], 0, []
+    measured = np.bincount(fit.cluster, fit.measured_N, minlength=n_steps) / np.maximum(counts, 1)
+    branches, offset, left_out, slack = [], 0, [], []
     for k, run in enumerate(runs):
         steps = run.steps.reset_index(drop=True)
         here = slice(offset, offset + len(steps))
@@ -241,6 +269,11 @@ def assess(runs, fit) -> Goodness:
             left_out.append(run.name)
             continue
         tare = float(fit.tare_se_N[k]) if fit.tare_se_N.size else 0.0
+        # the model's step mean is the measured one plus the residual (model minus measured)
+        idle = usable & (np.abs(measured[here] + mean[here]) < SLACK_N)
+        if idle.any():
+            se = math.sqrt(float(np.sum(noise[idle] ** 2)) / idle.sum() ** 2 + tare**2)
+            slack.append((run.name, int(idle.sum()), float(np.mean(measured[here][idle])), se))
         for direction, branch in BRANCHES.items():
             pick = (steps["direction"].to_numpy() == direction) & usable
             if not pick.any():
@@ -260,7 +293,7 @@ def assess(runs, fit) -> Goodness:
     chi2 = sum(b.chi2 for b in branches)
     nu = sum(b.nu for b in branches)
     return Goodness(branches, chi2, nu, left_out=left_out, fitted=tuple(fit.names),
-                    shown=shown_effects(runs))
+                    shown=shown_effects(runs), slack=slack)
 
 
 #: what runs show that a fit may leave out, by the ``--params`` group that fits it

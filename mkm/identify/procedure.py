@@ -319,9 +319,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         elif rubber.get("rejects_silastic_ratio") and rubber.get("braid_in_doubt"):
             low, high = rubber["ratio_ci"]
             notes.append(f"the runs reject Silastic S's C01/C10 (95 % interval {low:.3g}-"
-                         f"{high:.3g}), but a braid other than {fe.name}'s bends the curve the "
-                         "same way: one rubber scale kept at Silastic S's ratio, its interval "
-                         "holding the other braid's; give --braid if the braid is known, and "
+                         f"{high:.3g}{_box_cut(rubber)}), but a braid other than {fe.name}'s "
+                         "bends the curve the same way: one rubber scale kept at Silastic S's "
+                         "ratio, its interval holding the other braid's; give --braid if the "
+                         "braid is known, and "
                          "C10 and C01 are reported apart")
         elif "ratio_ci" in rubber:
             low, high = rubber["ratio_ci"]
@@ -330,7 +331,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                     f", yet freeing it lowers chi2 by only {rubber['chi2_improvement']:.2g}, "
                     f"under {RATIO_LIKELIHOOD:.2f}: the fits do not reject Silastic S's")
             notes.append(f"C10 and C01 not separated by these runs (C01/C10 95 % interval "
-                         f"{low:.3g}-{high:.3g}{flat}): one rubber scale at Silastic S's ratio "
+                         f"{low:.3g}-{high:.3g}{flat}{_box_cut(rubber)}): one rubber scale at "
+                         "Silastic S's ratio "
                          f"{SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa:.3g} assumed; the C10 and "
                          "C01 written are that assumption's (the stiffness the runs fix, "
                          "not two measured constants)")
@@ -347,7 +349,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if terms is None:
         terms = model_form_terms(source, fe, runs, best, braid)
     boot = extend(boot, best, terms)
-    notes += [line for line in (fitness.line(),) if line]
+    notes += [line for line in (fitness.line(), fitness.zero_line()) if line]
     notes += _rest_length_hint(runs, fe, best, fitness, groups)
     notes += _identifiability(runs, best, boot)
     if boot.get("stretched"):
@@ -546,7 +548,7 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
 
 def _minus(tables, others) -> list[tuple]:
     """Per run: ``tables``' pressures and their force less ``others``' there."""
-    return [(grid, F - np.interp(grid, *other))
+    return [(grid, F - fitting.static_force(grid, *other))
             for (grid, F), other in zip(tables, others, strict=True)]
 
 
@@ -619,8 +621,17 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     terms = model_form_terms(source, fe, runs, free, braid)
     share = free.values["c01_fraction"]
     ratio = share / (1.0 - share)
-    low, high = (min(v, 0.999) / (1.0 - min(v, 0.999))
-                 for v in extend(boot, free, terms)["interval"]["c01_fraction"])
+    # the interval is clipped to the box searched: an end on a surrogate's box is the box's,
+    # not the runs', which were not tested beyond it: open to the search's own bound
+    shares = list(extend(boot, free, terms)["interval"]["c01_fraction"])
+    widest = fitting.TERM_BOUNDS["c01_fraction"]
+    margin = fitting.EDGE_FRACTION * (share_box[1] - share_box[0])
+    cut = []
+    if share_box[0] > widest[0] and shares[0] <= share_box[0] + margin:
+        cut, shares[0] = [share_box[0]], widest[0]
+    if share_box[1] < widest[1] and shares[1] >= share_box[1] - margin:
+        cut, shares[1] = [*cut, share_box[1]], widest[1]
+    low, high = (min(v, 0.999) / (1.0 - min(v, 0.999)) for v in shares)
     static = [free.names.index(n) for n in STATIC_NAMES if n in free.names]
     J = free.weighted_jacobian[:, static]
     norms = np.sqrt(np.sum(J**2, axis=0))
@@ -645,6 +656,8 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                      and condition < RATIO_CONDITION)
     return free, boot, {"separated": separated, "ratio_C01_over_C10": ratio,
                         "ratio_ci": [low, high], "condition": condition,
+                        "ratio_box_cut": [v / (1.0 - v) for v in cut],
+                        "searched_with": getattr(source, "base", source).name,
                         "rejects_silastic_ratio": rejected, "braid_in_doubt": braid_doubt,
                         "chi2_improvement": float(improvement),
                         "rule": f"C10 and C01 reported apart when the condition number of the "
@@ -656,6 +669,17 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                                 f"by more than {RATIO_LIKELIHOOD:.2f} (the residuals' variance "
                                 f"its own); excluding it is not enough while the braid "
                                 f"is in doubt"}, terms
+
+
+def _box_cut(rubber: dict) -> str:
+    """Where the box searched stopped the ratio's interval (the runs not tested beyond), or
+    ''."""
+    cut = rubber.get("ratio_box_cut")
+    if not cut:
+        return ""
+    return (f"; the {rubber['searched_with']}'s box stops the search at C01/C10 "
+            f"{' and '.join(f'{r:.3g}' for r in cut)}: the runs were not tested beyond, so "
+            "the interval is open there")
 
 
 def _assumed_ratio_terms(source, runs, best, rubber) -> dict:

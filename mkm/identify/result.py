@@ -170,8 +170,8 @@ class Identification:
                 why = ("Silastic S's ratio: the runs do not separate C10 and C01"
                        + (f" (C01/C10 95 % interval {self.rubber['ratio_ci'][0]:.3g}-"
                           f"{self.rubber['ratio_ci'][1]:.3g}, condition number "
-                          f"{self.rubber['condition']:.2g})" if "ratio_ci" in self.rubber
-                          else ""))
+                          f"{self.rubber['condition']:.2g}" + _box_cut(self.rubber) + ")"
+                          if "ratio_ci" in self.rubber else ""))
                 add("C01_over_C10", ratio, status="assumed", source=why)
                 for key in ("C10_MPa", "C01_MPa"):
                     add(key, values[key], status="derived",
@@ -509,3 +509,10 @@ def _branches(rising_pct: float, falling_pct: float) -> str:
     shown = [f"{v:.2f}" if np.isfinite(v) else f"none ({name} step)"
              for v, name in ((rising_pct, "no rising"), (falling_pct, "no falling"))]
     return "/".join(shown)
+
+
+def _box_cut(rubber: dict) -> str:
+    """Where the box searched stopped the ratio's interval (open there), or ''."""
+    cut = rubber.get("ratio_box_cut")
+    return (f"; open where the {rubber['searched_with']}'s box stopped the search, at C01/C10 "
+            + " and ".join(f"{r:.3g}" for r in cut) if cut else "")
