@@ -26,6 +26,11 @@ from mkm.core.records import file_sha256
 #: ``L0_mm`` may differ: the same tube and braid cut to several lengths)
 SAME_MUSCLE = ("D0_mm", "t0_mm")
 SAME_MUSCLE_RTOL = 1e-6
+#: holds' true pressures closer than this [bar] share one sweep point, their mean: the rising
+#: and the falling hold of one set pressure, whose means differ by the monitor's noise (up to
+#: 0.5 mbar for 1 mbar over 50 samples); a hold that far from a threshold between it and the
+#: point is off by its slope times that at most
+TABLE_KNOT_BAR = 1e-3
 #: a vented mean reading of the monitor is its zero within this many standard errors
 VENTED_SE_FACTOR = 3.0
 
@@ -106,11 +111,14 @@ class RunData:
                 / values.get("pressure_gain", 1.0))
 
     def table_pressures(self, values: dict) -> np.ndarray:
-        """0 bar and the settled holds' true pressures at ``values`` (:meth:`true_pressure_bar`):
-        where a model is solved, so that a hold's force is the model's there, not an
-        interpolation across a threshold between two set pressures."""
-        held = self.true_pressure_bar(values)[self.hold >= 0]
-        return np.unique(np.r_[0.0, np.maximum(held, 0.0)])
+        """0 bar and the settled holds' true pressures at ``values`` (:meth:`true_pressure_bar`),
+        those within :data:`TABLE_KNOT_BAR` of the next taken as their mean: where a model is
+        solved, so that a hold's force is the model's there, not an interpolation across a
+        threshold between two set pressures."""
+        held = np.unique(np.maximum(self.true_pressure_bar(values)[self.hold >= 0], 0.0))
+        group = np.r_[0, np.cumsum(np.diff(held) > TABLE_KNOT_BAR)]
+        knots = np.bincount(group, held) / np.bincount(group)
+        return np.unique(np.r_[0.0, knots])
 
     def declared_noise_N(self) -> np.ndarray | None:
         """Each step's noise [N] from the bounds its lab declared (an imported table or ramp,

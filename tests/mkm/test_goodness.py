@@ -98,6 +98,27 @@ def test_a_fitted_monitor_offset_leaves_only_the_noise(offset):
     assert fit.values["pressure_offset_bar"] == pytest.approx(0.03, abs=0.002)
 
 
+def test_a_finite_difference_step_of_the_offset_solves_no_sweep_again(offset):
+    # the rising and the falling hold of one set pressure share a sweep point (their means
+    # differ by the monitor's noise), and a finite-difference step of the offset reads the
+    # table just solved: the FE search's Jacobian costs no sweep for it
+    runs, fit = offset
+    source = ModelStatic("thickwall", float(runs[0].muscle["L0_mm"]), cache_dir=None)
+    values = {**fit.values, "pressure_offset_bar": 0.03}
+    grids = [run.table_pressures(values) for run in runs]
+    assert [g.size for g in grids] == [len(set(run.steps["set_pressure_bar"])) + 1
+                                       for run in runs]
+    solved = source.tables(runs, values)
+    calls = source.calls
+    moved = source.tables(runs, {**values, "pressure_offset_bar": 0.03 + 1.5e-8})
+    assert source.calls == calls
+    exact = ModelStatic("thickwall", float(runs[0].muscle["L0_mm"]), cache_dir=None).tables(
+        runs, {**values, "pressure_offset_bar": 0.03 + 1.5e-8})
+    for (g, F), (_, F2), (g0, _) in zip(moved, exact, solved, strict=True):
+        np.testing.assert_allclose(F, F2, rtol=1e-6, atol=1e-6)
+        np.testing.assert_allclose(g[1:], g0[1:] - 1.5e-8, rtol=0, atol=1e-12)  # moved
+
+
 def test_a_misfit_names_the_friction_and_creep_the_runs_show_and_the_fit_left_out(in_family):
     # the simulator's friction (3 % of the force between the branches) and creep are far
     # beyond the steps' noise (0.1 N): a fit of theta0 and the rubber alone misfits, and the
