@@ -173,24 +173,57 @@ def _solve(args) -> int:
         from mkm.verdict import model_label
 
         print(explain(prediction, label=model_label), file=sys.stderr)
-    emit_prediction(prediction, args.out, model)
+    emit_prediction(_answered(prediction, model), args.out, model)
     outside = _outside_practical_range(prediction, args.D0, args.t0)
     if outside:  # computed all the same (inside LIMITS it is a muscle), but never validated
         say(args, "warning", f"outside the practical range every model is validated over "
             f"({'; '.join(outside)}): computed all the same, an extrapolation (`mkm models` "
             "states the range)")
     invalid = int((~prediction.valid).sum())
-    if invalid:  # the CSV's force_N of such a point is a number, not a force: said once
+    if invalid:
         say(args, "warning", f"{invalid} of {prediction.valid.size} points valid=False "
-            f"({_invalid_reasons(prediction)}): their force_N is not a force of the muscle")
+            f"({_invalid_reasons(prediction)}): no force written for them (their reason in the "
+            "reason column)")
     return 0
 
 
+def _answered(prediction, model):
+    """``prediction`` with no number where it has no answer, as `mkm surrogate predict` writes
+    it: a ``valid=False`` point keeps its row, with NaN for ``force_N`` and the extras that are
+    forces (an empty CSV cell), and the extra ``reason`` says why (empty where answered). The
+    model's number there (Equation 2's negative force past the braid lock, a surrogate's
+    extrapolation) would be taken for a force of the muscle by a table or a script."""
+    import dataclasses
+
+    import numpy as np
+
+    unanswered = ~np.asarray(prediction.valid, dtype=bool)
+    reason = np.full(unanswered.shape, "", dtype=object)
+    for said, these in _reasons(prediction):
+        reason[these] = said
+    answered = getattr(model, "answered", None)
+    if answered is not None:  # a surrogate names the inputs outside its box
+        prediction = answered(prediction)
+        own = np.asarray(prediction.extras["reason"], dtype=object)
+        reason = np.where(own != "", own, reason)
+    extras = {**prediction.extras, "reason": reason}
+    for name in ("force_std_N", "band95_N"):
+        if name in extras:
+            extras[name] = np.where(unanswered, np.nan, extras[name])
+    return dataclasses.replace(prediction, extras=extras,
+                               force_N=np.where(unanswered, np.nan, prediction.force_N))
+
+
 def _invalid_reasons(prediction) -> str:
-    """Why the sweep's points are ``valid=False``, by their outcome
-    (:func:`mkm.fem.outcomes.classify`): past the braid lock of its angle (with eps_max), the
-    braid locking before eps in the model's muscle (a physical limit), not converged, outside
-    the model's domain."""
+    """Why the sweep's points are ``valid=False``, counted by reason (:func:`_reasons`)."""
+    return "; ".join(f"{int(these.sum())} {said}" for said, these in _reasons(prediction))
+
+
+def _reasons(prediction) -> list:
+    """Why the sweep's points are ``valid=False``: (reason, which points) by their outcome
+    (:func:`mkm.fem.outcomes.classify`), each point under the first that applies: past the braid
+    lock of its angle (with eps_max), the braid locking before eps in the model's muscle (a
+    physical limit), not converged, outside the model's domain."""
     import numpy as np
 
     from mkm.fem.limits import lock_eps
@@ -202,8 +235,9 @@ def _invalid_reasons(prediction) -> str:
     if isinstance(theta0, int | float):
         locked = bad & (np.asarray(prediction.eps, dtype=float) >= lock_eps(float(theta0)))
         if locked.any():
-            reasons.append(f"{int(locked.sum())} past the braid lock: eps >= eps_max "
-                           f"{lock_eps(float(theta0)):.4g} at theta0 {float(theta0):g} deg")
+            reasons.append((f"past the braid lock: eps >= eps_max "
+                            f"{lock_eps(float(theta0)):.4g} at theta0 {float(theta0):g} deg",
+                            locked))
             bad = bad & ~locked
     status = np.reshape(classify(prediction), bad.shape)
     # short of eps_max only where the points past it were told apart above (auto's candidates
@@ -214,11 +248,11 @@ def _invalid_reasons(prediction) -> str:
                           ("not converged", "not converged")):
         these = bad & (status == outcome)
         if these.any():
-            reasons.append(f"{int(these.sum())} {said}")
+            reasons.append((said, these))
             bad = bad & ~these
     if bad.any():
-        reasons.append(f"{int(bad.sum())} outside the model's domain")
-    return "; ".join(reasons)
+        reasons.append(("outside the model's domain", bad))
+    return reasons
 
 
 def _outside_practical_range(prediction, D0_mm: float, t0_mm: float) -> list[str]:

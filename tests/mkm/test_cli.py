@@ -47,18 +47,38 @@ def test_pressures_range_and_list(text, expected, mkm_run):
     np.testing.assert_allclose(frame.pressure_bar, expected, rtol=0, atol=1e-12)
 
 
-def test_a_point_past_the_braid_lock_is_flagged_on_stderr_too(mkm_run):
+def test_a_point_past_the_braid_lock_gets_no_force_but_its_reason(mkm_run):
+    # Equation 2's -120 N at 1 bar was written as force_N, with only a warning on stderr
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
                               "--eps", "0.5", "--pressures", "0,1"])
-    assert code == 0 and out.splitlines()[2].endswith(",False,True")  # Equation 2's -120 N
     # the shipped calibration's Equation 2 angle, 30.778 deg: 1 - 1 / (sqrt 3 cos theta0)
     eps_max = 1 - 1 / (np.sqrt(3) * np.cos(np.deg2rad(30.778)))
-    assert err == ("mkm fem solve: warning: 2 of 2 points valid=False (2 past the braid lock: "
-                   f"eps >= eps_max {eps_max:.4g} at theta0 30.778 deg): their force_N is not a "
-                   "force of the muscle\n")
+    why = f"past the braid lock: eps >= eps_max {eps_max:.4g} at theta0 30.778 deg"
+    assert code == 0 and out.splitlines() == ["pressure_bar,D0_mm,t0_mm,eps,force_N,valid,"
+                                              "converged,reason",
+                                              f"0,30,3,0.5,,False,True,{why}",
+                                              f"1,30,3,0.5,,False,True,{why}"]
+    assert err == (f"mkm fem solve: warning: 2 of 2 points valid=False (2 {why}): no force "
+                   "written for them (their reason in the reason column)\n")
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
                               "--eps", "0.05", "--pressures", "0,1"])
     assert code == 0 and err == ""
+
+
+def test_a_surrogate_sweep_past_its_box_keeps_the_answered_points_only(mkm_run):
+    # as `mkm surrogate predict`: 3 bar, past the default surrogate's 2.5 bar, got its
+    # extrapolated number written as force_N
+    code, out, err = mkm_run(["fem", "solve", "--model", "surrogate", "--D0", "35", "--t0", "2.5",
+                              "--eps", "0.1", "--pressures", "0:3:1"])
+    frame = pd.read_csv(io.StringIO(out))
+    assert code == 0 and list(frame.valid) == [True, True, True, False]
+    assert frame.force_N.iloc[:3].notna().all() and frame.force_N.iloc[3:].isna().all()
+    assert frame.force_std_N.iloc[3:].isna().all()
+    assert list(frame.reason.fillna("")) == [""] * 3 + [
+        "outside the training domain: pressure_bar=3 not in [0, 2.5]"]
+    assert err.endswith("mkm fem solve: warning: 1 of 4 points valid=False (1 outside the "
+                        "model's domain): no force written for them (their reason in the reason "
+                        "column)\n")
 
 
 def test_solve_out_keeps_the_users_files_beside_it(tmp_path, mkm_run):
@@ -132,7 +152,8 @@ def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     assert {"theta0_deg", "L0_mm", "C10_MPa", "C01_MPa"} <= set(header["params"])
     frame = pd.read_csv(out, comment="#")
     assert list(frame.columns) == ["pressure_bar", "D0_mm", "t0_mm", "eps", "force_N", "valid",
-                                   "converged", "threshold_pressure_bar"]
+                                   "converged", "threshold_pressure_bar", "reason"]
+    assert frame.reason.isna().all()  # every point answered: empty
     expected = make_model("thickwall").predict(frame.pressure_bar, 40, 3, 0.15).force_N
     np.testing.assert_allclose(frame.force_N, expected, rtol=1e-5)  # CSV keeps 6 digits
 
