@@ -68,13 +68,6 @@ SILASTIC_C01_FRACTION = SILASTIC_S.C01_MPa / (SILASTIC_S.C10_MPa + SILASTIC_S.C0
 FE_BOX = {"theta0_deg": (15.0, 50.0),
           "rubber_scale": (0.2, PRACTICAL_RANGE.C10_MPa[1] / SILASTIC_S.C10_MPa),
           "gap_mm": (0.0, 5.0)}
-#: a model's table asked again for the same muscle with every pressure moved by at most this
-#: [bar] (a finite-difference step of the monitor's offset or hysteresis: 1e-8 bar) is read
-#: along the table last solved
-TABLE_REUSE_BAR = 1e-4
-#: tables kept for that: a finite-difference Jacobian moves one parameter at a time from its
-#: point, the monitor's after every static one
-SOLVED_KEPT = 16
 #: grid of the surrogate's static table [bar] (the simulated bench tabulates at 0.05 bar too)
 TABLE_STEP_BAR = 0.05
 #: one residual scale for every parameter (least_squares' x_scale)
@@ -193,7 +186,6 @@ class ModelStatic(StaticSource):
         self.name = self.spec.text
         self.runner, self.cache_dir = runner, cache_dir
         self.calls = 0
-        self._solved: dict = {}  # the tables last solved, by muscle and runs (oldest first)
 
     def model(self, values: dict, L0_mm: float):
         """The static model of length ``L0_mm`` (the fitted rest length where ``values`` has
@@ -206,15 +198,6 @@ class ModelStatic(StaticSource):
 
     def tables(self, runs, values):
         grids = [run.table_pressures(values) for run in runs]
-        muscle = (tuple(values.get(n) for n in STATIC_NAMES), tuple(r.path for r in runs))
-        solved_before = self._solved.get(muscle)
-        if solved_before is not None and all(
-                g.shape == old.shape and np.abs(g - old).max() <= TABLE_REUSE_BAR
-                for g, (old, _) in zip(grids, solved_before, strict=True)):
-            # the same muscle, its holds moved by a finite-difference step of the monitor's
-            # offset or hysteresis: along the solved table, not another sweep per run
-            return [(g, static_force(g, *table))
-                    for g, table in zip(grids, solved_before, strict=True)]
         models = {L0: self.model(values, L0) for L0 in by_length(runs)}
         solved = predict_many([(models[float(run.muscle["L0_mm"])], grid,
                                 *geometry(run, values))
@@ -227,9 +210,6 @@ class ModelStatic(StaticSource):
                 raise RuntimeError(f"{self.name} gives no valid force for run {run.name} at "
                                    + ", ".join(f"{k}={v:.4g}" for k, v in values.items()))
             out.append((grid, np.maximum(pred.force_N, 0.0)))
-        self._solved[muscle] = out
-        while len(self._solved) > SOLVED_KEPT:
-            self._solved.pop(next(iter(self._solved)))
         return out
 
 

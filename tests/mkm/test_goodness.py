@@ -98,25 +98,16 @@ def test_a_fitted_monitor_offset_leaves_only_the_noise(offset):
     assert fit.values["pressure_offset_bar"] == pytest.approx(0.03, abs=0.002)
 
 
-def test_a_finite_difference_step_of_the_offset_solves_no_sweep_again(offset):
-    # the rising and the falling hold of one set pressure share a sweep point (their means
-    # differ by the monitor's noise), and a finite-difference step of the offset reads the
-    # table just solved: the FE search's Jacobian costs no sweep for it
+def test_the_rising_and_falling_holds_of_a_set_pressure_share_one_sweep_point(offset):
+    # their means differ by the monitor's noise (up to 0.5 mbar): one point each, at their
+    # mean, so solving at the holds' true pressures costs no more points than the set ones
     runs, fit = offset
-    source = ModelStatic("thickwall", float(runs[0].muscle["L0_mm"]), cache_dir=None)
     values = {**fit.values, "pressure_offset_bar": 0.03}
-    grids = [run.table_pressures(values) for run in runs]
-    assert [g.size for g in grids] == [len(set(run.steps["set_pressure_bar"])) + 1
-                                       for run in runs]
-    solved = source.tables(runs, values)
-    calls = source.calls
-    moved = source.tables(runs, {**values, "pressure_offset_bar": 0.03 + 1.5e-8})
-    assert source.calls == calls
-    exact = ModelStatic("thickwall", float(runs[0].muscle["L0_mm"]), cache_dir=None).tables(
-        runs, {**values, "pressure_offset_bar": 0.03 + 1.5e-8})
-    for (g, F), (_, F2), (g0, _) in zip(moved, exact, solved, strict=True):
-        np.testing.assert_allclose(F, F2, rtol=1e-6, atol=1e-6)
-        np.testing.assert_allclose(g[1:], g0[1:] - 1.5e-8, rtol=0, atol=1e-12)  # moved
+    for run in runs:
+        knots = run.table_pressures(values)
+        assert knots.size == len(set(run.steps["set_pressure_bar"])) + 1
+        true = run.true_pressure_bar(values)[run.hold >= 0]
+        assert np.abs(true[:, None] - knots[None, :]).min(axis=1).max() < 0.001
 
 
 def test_a_misfit_names_the_friction_and_creep_the_runs_show_and_the_fit_left_out(in_family):
