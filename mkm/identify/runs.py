@@ -106,9 +106,11 @@ class RunData:
         internal ``values``: less its offset ``pressure_offset_bar``, plus
         ``pressure_hysteresis_bar`` in a rising hold (where it reads low) and less it in a
         falling one, over its gain ``pressure_gain`` (1 unless a sensitivity is taken)."""
-        return ((self.pressure_bar - values.get("pressure_offset_bar", 0.0)
-                 + values.get("pressure_hysteresis_bar", 0.0) * self.branch_sign())
-                / values.get("pressure_gain", 1.0))
+        reading = self.pressure_bar - values.get("pressure_offset_bar", 0.0)
+        hysteresis = values.get("pressure_hysteresis_bar", 0.0)
+        if hysteresis:  # fitted only where declared: most fits have none
+            reading = reading + hysteresis * self.branch_sign()
+        return reading / values.get("pressure_gain", 1.0)
 
     def table_pressures(self, values: dict) -> np.ndarray:
         """0 bar and the settled holds' true pressures at ``values`` (:meth:`true_pressure_bar`),
