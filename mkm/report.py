@@ -172,7 +172,8 @@ def report_folder(out_dir, run_dirs) -> Path:
 def build_report(run_dirs, models=None, out_dir=None,
                  cache_dir: Path | str | None = DEFAULT_CACHE_DIR,
                  tolerance: float | None = 0.02, surrogate_section: bool = True,
-                 progress: bool = False, calibration: Calibration | None = None) -> Path:
+                 progress: bool = False, calibration: Calibration | None = None,
+                 notify=None) -> Path:
     """Write ``report.html`` (plus PNGs, CSVs and ``provenance.json``) for bench runs into
     ``out_dir``; return its path.
 
@@ -197,6 +198,9 @@ def build_report(run_dirs, models=None, out_dir=None,
     calibration : Calibration, optional
         The models' default braid angles and rubber, and the identified muscle shown (None:
         the shipped ``fem/calibration.json``).
+    notify : callable, optional
+        Called with each line of the first screen's verdict in plain text once the report is
+        written (:func:`verdict_lines`): what a terminal shows before the report's path.
     """
     start = time.perf_counter()
     run_dirs = [Path(p) for p in run_dirs]
@@ -208,12 +212,14 @@ def build_report(run_dirs, models=None, out_dir=None,
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
         with staged_folder(out, last="report.html", record="provenance.json",
                            replaces=_files_written(out)) as stage:
-            _write_report(run_dirs, specs, stage, cache_dir, tolerance, surrogate_section,
-                          progress, start, calibration)
+            lines = _write_report(run_dirs, specs, stage, cache_dir, tolerance,
+                                  surrogate_section, progress, start, calibration)
     except OSError as exc:
         where = exc.filename2 or exc.filename  # the file asked for, not its temporary
         raise ValueError(f"the report was not written ({exc.strerror or type(exc).__name__}"
                          f"{f': {where}' if where else ''}); {out} is as it was") from None
+    for line in lines if notify else ():
+        notify(line)
     return out / "report.html"
 
 
@@ -228,7 +234,8 @@ def _files_written(out: Path) -> list[str]:
 
 
 def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_section,
-                  progress, start, calibration: Calibration | None) -> None:
+                  progress, start, calibration: Calibration | None) -> list[str]:
+    """Write the report into ``out``; return its verdict in plain text (:func:`verdict_lines`)."""
     from mkm.bench.storage import load_run
 
     names = {s.text: s.display_name for s in specs}
@@ -277,6 +284,31 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
     body = intro + "".join(sections) + provenance_details(prov, "provenance.json")
     (out / "report.html").write_text(html_page("McKibben muscle validation report", body),
                                      encoding="utf-8")
+    return verdict_lines(runs, names, tolerance)
+
+
+def verdict_lines(runs: list[_Run], names: dict, tolerance: float | None) -> list[str]:
+    """The first screen's verdict in plain text: each run's verdict sentence without auto's
+    pick (:func:`mkm.verdict.verdict`), then each identify command the verdicts suggest, once,
+    with the runs it concerns."""
+    lines = [verdict(f"run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})",
+                     r.summary, names, tolerance,
+                     no_budget=NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
+                     dynamics=_shows_dynamics(r))
+             for r in runs]
+    commands: dict[str, list[int]] = {}
+    for r in runs:
+        command = advice_command(*_advice_arguments(r, runs),
+                                 (_identified_record(r.calibration) or {}).get("options", ()))
+        if command and gives_advice(r.summary, names, tolerance,
+                                    *_auto_pick(r, names, tolerance)):
+            commands.setdefault(command, []).append(r.k)
+    for command, which in commands.items():
+        lines.append(f"run{'s' if len(which) > 1 else ''} {', '.join(map(str, which))}: the FE "
+                     f"model itself is off by more than auto's bound, which points to the "
+                     f"muscle: identify it from its runs, then give mkm report --calibration "
+                     f"the calibration.json it writes: {command}")
+    return lines
 
 
 def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:

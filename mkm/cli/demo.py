@@ -30,7 +30,8 @@ def _demo(args) -> int:
 
     start = time.perf_counter()
     try:
-        path = run_demo(args.out, progress=not args.no_progress)
+        path = run_demo(args.out, progress=not args.no_progress,
+                        notify=lambda line: summary_line("demo", line))
     except BenchError as exc:  # the simulated bench held by another process, a run cut short
         say(args, "error", exc)
         return EXIT_FAILED

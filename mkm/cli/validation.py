@@ -128,7 +128,8 @@ def _report(args) -> int:
     earlier = _earlier_report(args.out, args.runs)
     path = build_report(args.runs, specs, out_dir=args.out, cache_dir=_cache(args),
                         tolerance=args.tolerance, progress=not args.no_progress,
-                        calibration=args.calibration)
+                        calibration=args.calibration,
+                        notify=lambda line: summary_line("report", line))
     summary_line("report", f"{len(args.runs)} run(s) x {len(specs)} model(s) in "
                  f"{time.perf_counter() - start:.1f} s; summary.csv beside the report"
                  + (f"; replaced the report of {earlier} there (--out names another folder "

@@ -539,9 +539,10 @@ def test_the_identify_advice_of_several_runs_is_said_once_on_the_first_screen(tm
                                                 "L0_mm": None, "eps": None},
                             select="Festo DMSP-10-250")
     paths = [str(r.path) for r in imported]
+    said = []
     path = build_report(paths, parse_models("eq2,thickwall,surrogate:kind=muscle-gp-range"),
                         out_dir=tmp_path / "r", cache_dir=None, tolerance=0.02,
-                        surrogate_section=False)
+                        surrogate_section=False, notify=said.append)
     html = path.read_text(encoding="utf-8")
     start = html.index('<h2 id="summary">')
     first = html[start:html.index("<table", start)]
@@ -558,6 +559,16 @@ def test_the_identify_advice_of_several_runs_is_said_once_on_the_first_screen(tm
     # each path one unbreakable piece: wrapped at a hyphen, it read as two (mkm- out/runs/...)
     assert all(f'<span class="arg">{p}</span>' in line.group(1) for p in paths)
     assert ".arg{white-space:nowrap}" in html
+    # the terminal's first screen: each verdict up to auto's pick, then the command once (was:
+    # only the report's path)
+    assert len(said) == 6
+    for k, (text, shown) in enumerate(zip(said[:5], verdicts, strict=True), 1):
+        assert text.startswith(f"run {k} (eps ") and text.endswith(".")
+        assert unescape(shown).startswith("R" + text[1:]), (text, shown)
+    head = "runs 1, 2, 3, 4: the FE model itself is off by more than auto's bound"
+    assert said[5].startswith(head)
+    assert shlex.split(said[5].split("calibration.json it writes: ")[1]) == [
+        "mkm", "identify", *paths]
 
 
 def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument():
