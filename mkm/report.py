@@ -297,12 +297,8 @@ def verdict_lines(runs: list[_Run], names: dict, tolerance: float | None) -> lis
                      dynamics=_shows_dynamics(r))
              for r in runs]
     commands: dict[str, list[int]] = {}
-    for r in runs:
-        command = advice_command(*_advice_arguments(r, runs),
-                                 (_identified_record(r.calibration) or {}).get("options", ()))
-        if command and gives_advice(r.summary, names, tolerance,
-                                    *_auto_pick(r, names, tolerance)):
-            commands.setdefault(command, []).append(r.k)
+    for k, command in _advised_commands(runs, names, tolerance).items():
+        commands.setdefault(command, []).append(k)
     for command, which in commands.items():
         lines.append(f"run{'s' if len(which) > 1 else ''} {', '.join(map(str, which))}: the FE "
                      f"model itself is off by more than auto's bound, which points to the "
@@ -940,6 +936,14 @@ def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> 
     """The identify command each run's verdict suggests (run number -> command) where several
     verdicts suggest the same one: said once (:func:`_advice_lines`), it keeps the first screen
     for the verdicts rather than the same run paths again and again."""
+    commands = _advised_commands(runs, names, tolerance)
+    said = list(commands.values())
+    return {k: c for k, c in commands.items() if said.count(c) > 1}
+
+
+def _advised_commands(runs: list[_Run], names: dict, tolerance: float | None) -> dict[int, str]:
+    """The identify command each run's verdict advises (run number -> command), where it
+    advises one."""
     commands = {}
     for r in runs:
         command = advice_command(*_advice_arguments(r, runs),
@@ -947,8 +951,7 @@ def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> 
         if command and gives_advice(r.summary, names, tolerance,
                                     *_auto_pick(r, names, tolerance)):
             commands[r.k] = command
-    said = list(commands.values())
-    return {k: c for k, c in commands.items() if said.count(c) > 1}
+    return commands
 
 
 def _advice_lines(runs: list[_Run], commands: dict[int, str]) -> str:
