@@ -198,6 +198,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  sheet: str | None = None, tare: str | float = "auto",
                  vented: str | float = "auto", select: str | None = None,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
+                 one_step_per_row: bool = False,
                  notify=lambda line: None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -228,6 +229,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     force_sign : 1 or -1
         -1: the table's forces negated (a load cell that reads the muscle's pull negative); a
         ``tare`` given is as the table reads it.
+    one_step_per_row : bool
+        Every row a step, at its time where the table has one: a fine step table of more
+        than :data:`mkm.bench.series.RECORD_MIN_ROWS` rows is otherwise read as a record
+        without its time (:func:`mkm.bench.series.sampled_without_time`), and a time column as
+        a time series.
     notify : callable
         Receives the line of what was recognised in each table.
 
@@ -272,6 +278,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         # have times)
         unread = [] if exported or "time" in found else unread_time_columns(table, found)
         read_as = ("its rows are taken as evenly spaced in time" if unread and
+                   not one_step_per_row and
                    series.sampled_without_time(recognition.values("pressure"))
                    else "every row is a step")
         notify(f"{table.name}: {recognition.line()}"
@@ -287,16 +294,20 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                          f"{', '.join(map(repr, names))})")
     untimed = [r.table.name for r in prepared if "time" not in r.columns
                and not series.sampled_without_time(r.values("pressure"))]
-    if untimed and not isinstance(vented, str):  # a value given: it would be ignored unsaid
-        raise ValueError(f"--vented {vented:g} bar: {untimed[0]} has no time column: expected "
-                         "--vented with a time series only (its first samples read vented); a "
-                         "step table's pressures are imported as they are")
+    if (untimed or one_step_per_row) and not isinstance(vented, str):
+        # a value given: it would be ignored unsaid
+        why = ("--one-step-per-row reads a step table" if one_step_per_row else
+               f"{untimed[0]} has no time column")
+        raise ValueError(f"--vented {vented:g} bar: {why}: expected --vented with a time "
+                         "series only (its first samples read vented); a step table's "
+                         "pressures are imported as they are")
     groups = []
     for recognition in prepared:
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
     sha = file_sha256(path)
-    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override, force_sign)
+    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override, force_sign,
+                    one_step_per_row)
              for g, (m, override) in zip(groups, muscles, strict=True)]
     if exported and len(built) == 1 and not accuracy:
         built = [_restored(path, known, *built[0])]
@@ -575,13 +586,14 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
 
 
 def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
-           override=None, force_sign=1):
+           override=None, force_sign=1, one_step_per_row=False):
     """The run record, steps, samples, notes and shape of one muscle state (``override``: what
     an option replaced of the table, said first)."""
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), force_sign * group.values("force")
     notes, handling = ([override], {"L0": override}) if override else ([], {})
     handling["force_sign"] = force_sign
+    handling["one_step_per_row"] = one_step_per_row
     if force_sign < 0:
         notes.append("forces negated (--force-sign -1)")
     notes += filter(None, [PRACTICAL_RANGE.length_note(muscle.D0_mm, muscle.L0_mm),
@@ -596,7 +608,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              "expected samples in time order")
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
-    record = not timed and series.sampled_without_time(pressure)
+    record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)
+    step_times = None
+    if timed and one_step_per_row:  # a step table, its pressures as written
+        step_times, timed = time_s, False
+        handling["steps_from"] = "one row per step (--one-step-per-row), at its time"
     if timed or record:
         if vented == "auto":
             offset = (series.vented_offset(time_s, pressure) if timed else
@@ -622,7 +638,6 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         pressure = pressure - offset
         if offset:
             notes.append(f"vented reading {offset:.3g} bar {handling['vented']}: subtracted")
-    step_times = None
     if timed and series.one_reading_per_step(time_s):
         step_times, timed = time_s, False
         apart = float(np.median(np.diff(time_s)))
@@ -759,7 +774,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         handling["table_copy"] = TABLE_COPY + path.suffix.lower()
         notes.insert(0, f"{pressure.size} rows of a record without time (successive readings "
                      f"{apart:.2g} bar apart): {done}, every row kept in "
-                     f"{handling['table_copy']}")
+                     f"{handling['table_copy']}; if each row is a held pressure, import again "
+                     "with --one-step-per-row")
     else:
         shape = "steps"
         std = group.values("force_std", optional=True) if "force_std" in found else \

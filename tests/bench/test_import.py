@@ -472,6 +472,42 @@ def test_a_record_without_its_time_is_binned_not_a_step_per_row(tmp_path, mkm_cl
     assert len(table.steps) == fine.size and table.meta.imported_from["shape"] == "steps"
 
 
+def test_a_fine_step_table_of_many_rows_keeps_one_step_per_row_when_told(tmp_path, mkm_cli):
+    # a real step table: 0 -> 3 -> 0 bar in 0.025 bar steps (241 rows, each a hold's mean), as
+    # a fine sweep of a 5 mm muscle is written; more than 80 rows 0.03 bar apart read as a
+    # record without its time and binned, with no way to keep one step per row
+    fine = np.r_[np.arange(0.0, 3.0, 0.025), np.arange(3.0, -0.0125, -0.025)]
+    force = thickwall_N(fine, 0.0)
+    path = tmp_path / "fine.csv"
+    pd.DataFrame({"P (bar)": fine, "F (N)": force}).to_csv(path, index=False)
+    (binned,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    # the automatic choice says what it did and the option that makes each row a step
+    assert binned.meta.imported_from["shape"] == "ramp" and len(binned.steps) < fine.size
+    assert "if each row is a held pressure, import again with --one-step-per-row" in err
+    (table,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--one-step-per-row")
+    assert table.meta.imported_from["shape"] == "steps" and "record" not in err
+    assert table.meta.imported_from["one_step_per_row"] is True
+    assert table.steps["direction"].tolist() == ["up"] * 121 + ["down"] * 120
+    # each row its own step, at the force written (6 significant digits in steps.csv)
+    np.testing.assert_allclose(table.steps["pressure_bar_mean"], fine, atol=1e-9)
+    np.testing.assert_allclose(table.steps["force_N_mean"], force, rtol=1e-5, atol=1e-6)
+    assert not (table.path / "imported_table.csv").exists()
+    # a time per row, 0.5 s apart (a time series otherwise): each row a step at its time
+    timed = tmp_path / "timed" / "fine.csv"
+    timed.parent.mkdir()
+    pd.DataFrame({"t (s)": 0.5 * np.arange(fine.size), "P (bar)": fine, "F (N)": force}).to_csv(
+        timed, index=False)
+    (table,), _ = _import(mkm_cli, timed, *MUSCLE, "--eps", "0", "--one-step-per-row")
+    assert table.meta.imported_from["shape"] == "steps" and len(table.steps) == fine.size
+    np.testing.assert_allclose(table.steps["start_s"], 0.5 * np.arange(fine.size))
+    # a vented reading given would be ignored: refused
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--one-step-per-row",
+                            "--vented", "0.1", "--out", str(tmp_path / "refused")])
+    assert code == 2 and err.count("\n") == 1 and "--vented 0.1 bar: --one-step-per-row" in err
+    code, out, _ = mkm_cli(["import", "--help"])
+    assert code == 0 and "--one-step-per-row" in out
+
+
 def test_a_staircase_recorded_without_its_time_gives_its_plateaus(tmp_path, mkm_cli):
     # 10 Hz, 0 -> 3 -> 0 bar in 0.5 bar holds of 10 s joined by 1 s ramps, saved without its
     # time: binned by pressure, each 1 s ramp between two holds made steps of 2-4 rows
