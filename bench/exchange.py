@@ -17,7 +17,9 @@
   ``mkm export`` read these runs like any other.
 - :func:`export_run`: a run folder as one Excel workbook (sheets ``steps``, ``samples``,
   ``metadata``) or as three CSV files, every text cell spreadsheet-safe. The workbook imports
-  back to the run it was: steps, samples, calibration and tare.
+  back to the run it was: steps, samples, calibration and tare. A run that keeps the table it
+  was imported from (:data:`TABLE_COPY`) takes it along: the file as given beside the CSV
+  files, the table as read in a sheet of its own, which ``mkm import --sheet`` reads again.
 """
 
 from __future__ import annotations
@@ -53,6 +55,7 @@ from mkm.bench.tables import (
     flags,
     key_values,
     marked_gauge,
+    numbers_as_read,
     read_tables,
     recognise,
     sheet_names,
@@ -852,7 +855,10 @@ def _inferred(pressure: np.ndarray) -> np.ndarray:
 
 def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     """The run ``run_dir`` as ``out`` (a ``.xlsx`` workbook) or, with ``fmt="csv"``, as the
-    folder ``out`` holding ``steps.csv``, ``samples.csv`` and ``metadata.csv``."""
+    folder ``out`` holding ``steps.csv``, ``samples.csv`` and ``metadata.csv``; with the table
+    the run was imported from where it keeps one (:data:`TABLE_COPY`): the file as it came,
+    beside the CSV files, or the table as ``mkm import`` read it, the workbook's sheet
+    ``imported_table``."""
     if fmt not in EXPORT_FORMATS:
         raise ValueError(f"--format {fmt!r} is invalid: expected {' or '.join(EXPORT_FORMATS)}")
     out = Path(out)
@@ -867,10 +873,24 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     # short still says every sample is there
     # and the export's own record: a workbook travels without its run folder
     exported = {"source": str(run.path), **provenance()}
+    copy = (run.meta.imported_from or {}).get("table_copy")
+    if copy and not (run.path / copy).is_file():
+        raise ValueError(f"{run.path.name}: the table it was imported from, {copy}, is missing "
+                         "from the run folder: expected the copy mkm import keeps there (import "
+                         "the table again)")
+    if copy:
+        exported["imported_table"] = (copy if fmt == "csv" else
+                                      f"sheet {TABLE_COPY!r}: the table as mkm import read it")
     metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status),
                                       "problems": run.problems, "exported": exported}),
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
+    if copy and fmt == "xlsx":
+        (table,) = read_tables(run.path / copy, run.meta.imported_from.get("sheet"))
+        if len(table.rows) > EXCEL_MAX_ROWS:
+            raise ValueError(f"{run.path.name}: its imported table has {len(table.rows)} rows: "
+                             f"a worksheet holds at most {EXCEL_MAX_ROWS}; use --format csv")
+        sheets[TABLE_COPY] = pd.DataFrame(numbers_as_read(table), columns=table.header)
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}
     if fmt == "xlsx":
         out.parent.mkdir(parents=True, exist_ok=True)
@@ -882,6 +902,10 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     for name, frame in sheets.items():
         frame.to_csv(out / f"{name}.csv", index=False, float_format="%.10g",
                      encoding=SPREADSHEET_CSV_ENCODING)
+    for stale in out.glob(f"{TABLE_COPY}.*"):  # an earlier export's: not this run's table
+        stale.unlink()
+    if copy:
+        shutil.copyfile(run.path / copy, out / copy)
     return out
 
 
@@ -904,7 +928,7 @@ def _check_export_target(out: Path, fmt: str) -> None:
                          "csv and a folder)")
     if out.is_dir():
         raise ValueError(f"--out {out} is a folder: expected a workbook name ending in .xlsx")
-    if out.exists() and set(sheet_names(out)) != set(EXPORT_SHEETS):
+    if out.exists() and set(sheet_names(out)) - {TABLE_COPY} != set(EXPORT_SHEETS):
         raise ValueError(f"--out {out} exists and is not a workbook mkm export wrote: expected "
                          "a new name (nothing is overwritten)")
 

@@ -321,6 +321,19 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
     return tables
 
 
+def numbers_as_read(table: RawTable) -> list[list]:
+    """``table``'s rows, each cell that is a plain number (``'1,5'`` in a table of decimal
+    commas) as that number and the others as written: a sheet that reads as the table did."""
+    out = []
+    for row in table.rows:
+        cells = []
+        for cell in row:
+            value, unit = _number(cell, table.decimal) if isinstance(cell, str) else (None, None)
+            cells.append(value if value is not None and unit is None else cell)
+        out.append(cells)
+    return out
+
+
 def _is_number(cell) -> bool:
     """A number, possibly with a decimal comma or a unit after it."""
     return _number(cell, ",")[0] is not None

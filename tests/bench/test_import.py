@@ -614,6 +614,46 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
         assert again.steps[column].tolist() == run.steps[column].tolist()
 
 
+def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_path, mkm_cli):
+    # a 10 Hz ramp saved without its time by a German Excel (';', decimal commas): its run
+    # folder keeps the table (imported_table.csv), its steps are bins; mkm export left the
+    # table out, so the export could not show nor reproduce the import
+    rng = np.random.default_rng(8)
+    n = 600
+    p = np.interp(np.arange(n), [0, 40, 320, n - 1], [0, 0, 2.0, 0])
+    path = tmp_path / "ramp.csv"
+    pd.DataFrame({"Druck [bar]": np.abs(p + rng.normal(0, 0.003, n)),
+                  "Kraft [N]": thickwall_N(p, 0.0) + 2.0 + rng.normal(0, 0.3, n)}).to_csv(
+        path, index=False, sep=";", decimal=",")
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["shape"] == "ramp"
+    # the CSV export: the table as the user gave it, byte for byte
+    code, _, err = mkm_cli(["export", str(run.path), "--format", "csv", "--out",
+                            str(tmp_path / "csv")])
+    assert code == 0, err
+    assert (tmp_path / "csv" / "imported_table.csv").read_bytes() == path.read_bytes()
+    # the workbook: the table as mkm import read it, a sheet of its own, which imports again
+    # to the same steps (the same cells in, the same bins out)
+    book = tmp_path / "run.xlsx"
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    sheet = pd.read_excel(book, sheet_name="imported_table")
+    assert sheet.columns.tolist() == ["Druck [bar]", "Kraft [N]"] and len(sheet) == n
+    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
+    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
+        assert again.steps[column].tolist() == run.steps[column].tolist()
+    # the workbook still imports back to the run it was, and takes a new export of its name
+    (restored,), _ = _import(mkm_cli, book)
+    assert restored.steps["force_N_mean"].tolist() == run.steps["force_N_mean"].tolist()
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    # a run folder that lost the table cannot be exported whole: said, nothing written
+    (run.path / "imported_table.csv").unlink()
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "lost.xlsx")])
+    assert code == 2 and err.count("\n") == 1 and "imported_table.csv, is missing" in err
+    assert not (tmp_path / "lost.xlsx").exists()
+
+
 def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, mkm_cli):
     """A colleague's exported bench run imports back with its own steps (set pressures, holds,
     uncertainty budgets), samples, calibration and tare, so the report scores E_n and identify
