@@ -404,6 +404,7 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
     header = _labview_header(header, rows[:header_index])
+    header = _block_units(where, header, rows[:header_index], numbers)
     end = _footer_start(numbers, rows, first_data)
     data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:end]]
     if len(data) > MAX_ROWS:
@@ -441,6 +442,42 @@ def _labview_header(header: list[str], titles: list[list]) -> list[str]:
         if k < len(out) and out[k] and unit and parse_header(out[k])[1] is None:
             out[k] = f"{out[k]} [{unit}]"
     return out
+
+
+#: the first cell of a header block's row of units, one per column (a TDMS file exported with
+#: its channel properties, ``unit_string``; a logger's ``Unit`` or ``Einheit``)
+UNIT_ROW_LABELS = ("unit", "units", "unit string", "unit_string", "einheit", "einheiten",
+                   "unité", "unités")
+
+
+def _block_units(where: str, header: list[str], titles: list[list],
+                 numbers: list[int]) -> list[str]:
+    """The column names with the units a header block's row of units gives them (a row
+    labelled as :data:`UNIT_ROW_LABELS` whose other cells are units), in the columns' order;
+    a name that holds its unit keeps it. ``ValueError`` where the units are not one per
+    column: which is whose cannot be told, and a unit left out would be read as bar or N."""
+    for k, row in enumerate(titles):
+        cells = [str(c).strip() for c in row]
+        units = cells[1:]
+        while units and not units[-1]:
+            units.pop()
+        if (not cells or cells[0].lower().rstrip(":") not in UNIT_ROW_LABELS or not units
+                or not all(parse_unit(u) is not None for u in units if u)):
+            continue
+        named = [j for j, name in enumerate(header) if name]
+        if len(units) != len(named):
+            shown = ", ".join(repr(c) for c in cells if c)
+            raise ValueError(f"{where}, row {numbers[k]} ({shown}) gives {len(units)} units for "
+                             f"the {len(named)} columns "
+                             f"{', '.join(repr(header[j]) for j in named)}: expected one per "
+                             "column, in their order; or put each unit in its column's name "
+                             "('Pressure [bar]')")
+        out = list(header)
+        for j, unit in zip(named, units, strict=True):
+            if unit and parse_header(out[j])[1] is None:
+                out[j] = f"{out[j]} [{unit}]"
+        return out
+    return header
 
 
 # --- recognising ------------------------------------------------------------------------------

@@ -394,6 +394,33 @@ def test_a_labview_x_column_of_another_dimension_and_a_named_unit_are_as_written
     assert table.header[:2] == ["X_Value", "Druck [bar]"] and "time" not in found
 
 
+TDMS_CSV = ("Root Name,bench 3\nRoot Author,jdoe\nGroup Name,Untitled\n"
+            "Channel Name,Time,Pressure,Load\nunit_string,s,MPa,kN\nwf_increment,0.1,0.1,0.1\n"
+            "Time,Pressure,Load\n0.0,0.0,0.012\n0.1,0.25,0.45\n0.2,0.6,1.2\n")
+
+
+@pytest.mark.parametrize("label", ["unit_string", "Unit String", "Units", "Einheit"])
+def test_a_header_blocks_row_of_units_gives_the_columns_their_units(label, tmp_path):
+    # a TDMS file exported to CSV with its channel properties above the names: the units row
+    # was skipped as a title, so 0.6 MPa was read as 0.6 bar and 1.2 kN as 1.2 N, unsaid
+    table, found = _one(tmp_path, TDMS_CSV.replace("unit_string", label), "export.csv")
+    assert table.header == ["Time [s]", "Pressure [MPa]", "Load [kN]"]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 6.0])
+    np.testing.assert_allclose(column_values(table, found["force"]), [12.0, 450.0, 1200.0])
+
+
+def test_a_header_blocks_units_that_fit_no_column_are_refused(tmp_path):
+    # two units for three columns: which is whose cannot be told
+    path = tmp_path / "export.csv"
+    path.write_text(TDMS_CSV.replace("unit_string,s,MPa,kN", "Unit,MPa,kN"))
+    with pytest.raises(ValueError) as info:
+        read_tables(path)
+    assert str(info.value) == (
+        "export.csv, row 5 ('Unit', 'MPa', 'kN') gives 2 units for the 3 columns 'Time', "
+        "'Pressure', 'Load': expected one per column, in their order; or put each unit in its "
+        "column's name ('Pressure [bar]')")
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
