@@ -647,6 +647,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         handling["steps_from"] = f"one row per step, its readings {apart:.3g} s apart (median)"
         notes.append(f"one reading every {apart:.3g} s: each row a step at its time (a time "
                      "series has several readings per hold)")
+        if series.sampled_without_time(pressure):  # a logger's milliseconds read as seconds?
+            notes[-1] += (f"; {pressure.size} rows whose successive pressures lie within "
+                          f"{series.PLATEAU_TOLERANCE_BAR:g} bar, as a record's samples do: if "
+                          f"{found['time'].header!r} is in milliseconds, import again with "
+                          "--units time=ms")
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
     # -0.0001 bar too)
     noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)

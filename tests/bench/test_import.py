@@ -230,6 +230,26 @@ def test_a_step_table_with_a_time_per_row_is_a_step_table(tmp_path, mkm_cli):
                                atol=1e-9)
 
 
+def test_a_record_timed_in_milliseconds_under_a_header_without_unit_names_the_unit(tmp_path,
+                                                                                   mkm_cli):
+    # a 50 Hz logger's 'Time' in ms, no unit in the header: read as seconds, its 1500 samples
+    # were 1500 steps 20 s apart, said only as 'one reading every 20 s'
+    rng = np.random.default_rng(13)
+    t = np.arange(0.0, 30.0, 0.02)
+    p = np.interp(t, [0, 3, 4, 14, 15, 25, 26, 30], [0, 0, 1, 1, 2, 2, 0, 0])
+    path = tmp_path / "logger.csv"
+    pd.DataFrame({"Time": np.round(t * 1000), "Pressure": p + rng.normal(0, 0.003, t.size),
+                  "Force": thickwall_N(p, 0.0) + rng.normal(0, 0.3, t.size)}).to_csv(
+        path, index=False)
+    (rows,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert len(rows.steps) == t.size  # the reading stays a choice, said with the way out
+    assert ("1500 rows whose successive pressures lie within 0.03 bar, as a record's samples "
+            "do: if 'Time' is in milliseconds, import again with --units time=ms") in err
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--units", "time=ms")
+    assert run.meta.imported_from["shape"] == "staircase"
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0], atol=0.01)
+
+
 def _clock_text(seconds: float, start_s: float) -> str:
     hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
     minutes, secs = divmod(rest, 60.0)
