@@ -665,8 +665,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         read = (f"read as bar since {column.header!r} names no unit" if column.unit is None
                 else f"read in {column.unit} as {column.header!r} says")
         notes.append(f"pressures up to {top_bar:g} bar, {read}: above the "
-                     f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; if they "
-                     "are kPa or psi, import again with --units pressure=kPa (or psi)")
+                     f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; "
+                     + _other_pressure_units(top_bar, column.unit))
     # the first bad cell named (a record's every sample checked at once)
     for k in np.flatnonzero(outside("pressure_bar", pressure))[:1]:
         p = pressure[k]
@@ -835,6 +835,30 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         ended_utc=now, imported_from=imported, counters={
             "samples": len(samples), "read_timeouts": 0, "clipped_samples": 0})
     return meta, steps, samples, notes, shape
+
+
+#: the units a lab's pressures are written in that read as bar pass as a bar 10-100 times
+MISREAD_PRESSURE_UNITS = ("kPa", "psi")
+
+
+def _other_pressure_units(top_bar: float, unit: str | None) -> str:
+    """What the note on pressures above the practical range suggests: each unit of
+    :data:`MISREAD_PRESSURE_UNITS` other than the column's (``None``: bar) in which its
+    largest reading lies within the range (a psi column is not told it may be psi)."""
+    from mkm.bench.tables import parse_unit, registry
+
+    def in_bar(name: str | None) -> float:
+        found = parse_unit(name) if name else None
+        return float(registry().Quantity(1.0, found or registry().Unit("bar")).to(
+            "bar").magnitude)
+
+    written = top_bar / in_bar(unit)  # the largest reading as the table writes it
+    fits = [u for u in MISREAD_PRESSURE_UNITS if not math.isclose(in_bar(u), in_bar(unit))
+            and written * in_bar(u) <= PRACTICAL_RANGE.pressure_bar[1]]
+    if not fits:
+        return "check the column's unit (--units pressure=UNIT)"
+    return (f"if they are {' or '.join(fits)}, import again with --units pressure={fits[0]}"
+            + "".join(f" (or {u})" for u in fits[1:]))
 
 
 def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],
