@@ -563,14 +563,21 @@ def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
             and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"]))]
 
 
+#: a TDMS channel's path, as npTDMS names a data frame's columns: ``/'Group'/'Channel'``
+_TDMS_PATH = re.compile(r"/'[^']*'/'(?P<channel>[^']+)'")
+
+
 def parse_header(text: str) -> tuple[str, str | None]:
     """A column header as its name (lower case, words joined by one space, statistics words
     such as ``mean`` dropped) and its unit as written (``None`` when it names none).
 
     ``Pressure (bar)`` -> ``("pressure", "bar")``; ``p_psi`` -> ``("p", "psi")``;
-    ``force_N_mean`` -> ``("force", "N")``; ``eps`` -> ``("eps", None)``.
+    ``force_N_mean`` -> ``("force", "N")``; ``eps`` -> ``("eps", None)``;
+    ``/'Untitled'/'Pressure [kPa]'`` (a TDMS channel's path) -> ``("pressure", "kPa")``.
     """
     text = str(text).strip()
+    if channel := _TDMS_PATH.fullmatch(text):  # npTDMS's "/'Group'/'Channel'": the channel
+        text = channel.group("channel").strip()
     match = _BRACKETED.match(text)
     if match and match.group("name").strip():
         name, unit = match.group("name"), match.group("unit").strip()

@@ -421,6 +421,18 @@ def test_a_header_blocks_units_that_fit_no_column_are_refused(tmp_path):
         "column's name ('Pressure [bar]')")
 
 
+def test_a_tdms_channel_path_names_its_column(tmp_path):
+    # npTDMS's as_dataframe().to_csv(): each column the channel's path in the file, after the
+    # frame's index; was "no pressure or force column among "/'Untitled'/'Time'", ..."
+    table, found = _one(tmp_path, ",/'Untitled'/'Time',/'Untitled'/'Pressure [kPa]',"
+                        "/'Untitled'/'Force'\n0,0.0,0.0,1.5\n1,0.1,150.0,12.25\n", "tdms.csv")
+    assert {role: column.header for role, column in found.items()} == {
+        "time": "/'Untitled'/'Time'", "pressure": "/'Untitled'/'Pressure [kPa]'",
+        "force": "/'Untitled'/'Force'"}
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
