@@ -977,7 +977,14 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
 SUMMARY_WORDS = {"mean", "average", "avg", "sum", "total", "min", "max", "minimum", "maximum",
                  "std", "stdev", "std dev", "standard deviation", "median", "mittelwert",
                  "mittel", "durchschnitt", "summe", "gesamt", "standardabweichung", "stabw",
-                 "moyenne", "somme", "écart-type", "ecart-type", "écart type", "médiane"}
+                 "moyenne", "somme", "écart-type", "ecart-type", "écart type", "médiane",
+                 "std abw", "stdabw", "mw", "ø", "moy", "anzahl", "count"}
+
+
+def _summary_word(cell: str) -> str:
+    """A cell as :data:`SUMMARY_WORDS` spells it: lower case, its abbreviating dots and a
+    trailing colon dropped (``Std.Abw.``, ``Std. Dev.``, ``Max:``)."""
+    return re.sub(r"[\s.]+", " ", cell.strip().rstrip(":").lower()).strip()
 
 
 def without_summary_rows(table: RawTable) -> RawTable:
@@ -987,8 +994,7 @@ def without_summary_rows(table: RawTable) -> RawTable:
     named = {}
     for k, row in enumerate(table.rows):
         for column, cell in enumerate(row):
-            if isinstance(cell, str) and cell.strip().rstrip(":").strip().lower() in \
-                    SUMMARY_WORDS:
+            if isinstance(cell, str) and _summary_word(cell) in SUMMARY_WORDS:
                 named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
                 break
     if not named:

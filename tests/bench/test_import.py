@@ -1074,3 +1074,14 @@ def test_a_spreadsheets_summary_rows_under_the_steps_are_no_steps(tmp_path, mkm_
     assert "2 summary row(s) skipped: A8 ('Mittelwert'), A9 ('Max:')" in err
     assert run.meta.imported_from["summary_rows_skipped"] == ["A8 ('Mittelwert')",
                                                               "A9 ('Max:')"]
+
+
+@pytest.mark.parametrize("label", ["Std.Abw.", "Std. Dev.", "Ø", "Moy.", "Anzahl"])
+def test_a_summary_row_by_an_abbreviated_statistic_is_no_step(label, tmp_path, mkm_cli):
+    # was: "cell A7 (column 'Druck [bar]'): 'Std.Abw.' is not a number", the import refused
+    path = tmp_path / "lab.csv"
+    path.write_text("Druck [bar];Kraft [N]\n0;5\n1,25;185\n2,5;410\n1,25;190\n0;6\n"
+                    f"{label};1,0;159,2\n", encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0, 1.25, 2.5, 1.25, 0.0]
+    assert f"1 summary row(s) skipped: A7 ({label!r})" in err
