@@ -10,7 +10,7 @@
   series (a ``time`` column) is stored as samples and its steps derived
   (:mod:`mkm.bench.series`: a staircase's plateaus as the bench judges them, or a ramp's
   quasi-static bins per branch), its force zeroed at its mean before the pressure rises and a
-  vented pressure reading above zero, up to a sensor's zero error (:data:`VENTED_AUTO_MAX_BAR`),
+  vented pressure reading off zero, up to a sensor's zero error (:data:`VENTED_AUTO_MAX_BAR`),
   taken as the record's zero. ``imported_from`` in run.json records the source file's name and
   SHA-256, the sheet, the columns and units recognised, the shape, the tare and the vented
   reading. ``mkm report``, ``mkm fem calibrate --reference``, ``mkm identify`` and
@@ -623,6 +623,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                                            min_s=series.RECORD_PLATEAU_ROWS))
         else:
             offset = 0.0 if vented == "none" else float(vented)
+        if vented == "auto" and offset < -VENTED_AUTO_MAX_BAR:
+            offset = 0.0  # below a sensor's zero error: refused below as a reading < 0 bar
         if vented == "auto" and offset > VENTED_AUTO_MAX_BAR:
             held = handling["held_at_start_bar"] = offset
             offset = 0.0

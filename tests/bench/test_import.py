@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import datetime
 import json
+import re
 
 import numpy as np
 import pandas as pd
@@ -166,6 +167,23 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     assert summary["valid_points"].iloc[0] == len(steps)
     # thick-wall has no friction: it sits between the branches, off by about h = 5 %
     assert 2.0 < summary["max_abs_err_pct"].iloc[0] < 8.0
+
+
+def test_a_gauge_that_reads_below_zero_vented_is_zeroed_as_one_above(tmp_path, mkm_cli):
+    # a sensor whose zero reads -0.06 bar at the record's vented start: was refused ("-0.06
+    # bar is below 0"), though a zero error above zero is found and subtracted
+    rng = np.random.default_rng(21)
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    path = tmp_path / "below.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p - 0.06 + rng.normal(0, 0.003, t.size),
+                  "F (N)": thickwall_N(p, 0.0) + rng.normal(0, 0.3, t.size)}).to_csv(
+        path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    # the median of 50 vented samples of 3 mbar noise: within 2 mbar
+    assert run.meta.imported_from["vented_reading_bar"] == pytest.approx(-0.06, abs=0.002)
+    assert re.search(r"vented reading -0\.0[56]\d* bar detected: subtracted", err)
+    assert run.samples["pressure_bar"].max() == pytest.approx(2.5, abs=0.015)
 
 
 @pytest.mark.parametrize("rest_s", [2.0, 0.5, 0.0])
