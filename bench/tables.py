@@ -610,10 +610,13 @@ class Column:
     header: str
     unit: str | None = None  # as the table (or --units) says; None: the toolkit's own
     given: bool = False  # named by --columns
+    #: a time column of spreadsheet date-times saved as numbers (:func:`_excel_serial_days`)
+    excel_days: bool = False
 
     def describe(self) -> dict:
         role_unit = ROLES[self.role].unit
-        return {"column": self.header, "unit": self.unit if self.unit is not None else role_unit,
+        unit = EXCEL_DAYS if self.excel_days else self.unit
+        return {"column": self.header, "unit": unit if unit is not None else role_unit,
                 "converted_to": role_unit if role_unit else ("fraction" if role_unit == ""
                                                              else None)}
 
@@ -686,7 +689,30 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         found[role].unit = unit
     for column in found.values():
         _check_unit(table, column)
+    if "time" in found and found["time"].unit is None:
+        found["time"].excel_days = _excel_serial_days(table, found["time"])
     return found
+
+
+#: how a time column of spreadsheet serial dates is said (the line, run.json)
+EXCEL_DAYS = "Excel serial days"
+#: the serial dates (days since 30 Dec 1899) a time column without a unit is taken to hold:
+#: 1954-10-03 to Excel's last day, 9999-12-31
+EXCEL_SERIAL_DAYS = (20_000.0, 2_958_465.0)
+
+
+def _excel_serial_days(table: RawTable, column: Column) -> bool:
+    """Whether the numbers of a time column without a unit are a spreadsheet's date-times
+    saved as numbers (46361.5868 is 5 Dec 2026 14:05): each within :data:`EXCEL_SERIAL_DAYS`
+    and all within a day of the first. As seconds they would be a record of less than a second
+    taken hours into a clock's count, which no muscle's hold is."""
+    raw = [row[column.index] for row in table.rows]
+    if len(raw) < 3 or _clock(raw[0]) is not None:
+        return False
+    values = _plain_numbers(raw, table.decimal)
+    low, high = EXCEL_SERIAL_DAYS
+    return bool(values is not None and values.min() >= low and values.max() <= high
+                and np.ptp(values) < 1.0)
 
 
 def _header_named(table: RawTable, role: str, given: str) -> str:
@@ -785,6 +811,9 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         elapsed = _elapsed_s(table, column, raw)
         if elapsed is not None:
             return elapsed
+        if column.excel_days:  # counted from the first row, as a clock is
+            days = _plain_numbers(raw, table.decimal)
+            return (days - days[0]) * _DAY_S
         if raw and str(raw[0]).strip() and _number(raw[0], table.decimal)[0] is None:
             raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
                              f"{column.header!r}): {_shown(raw[0])} is not a time: expected "

@@ -268,6 +268,29 @@ def test_a_record_timed_in_milliseconds_under_a_header_without_unit_names_the_un
     np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0], atol=0.01)
 
 
+@pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
+def test_a_time_column_of_excel_serial_dates_is_read_as_days(suffix, tmp_path, mkm_cli):
+    # Excel's date-times saved as numbers (46361.586805... for 5 Dec 2026 14:05) under 'Zeit':
+    # were read as seconds, the 60 s record 0.0007 s long, unsaid
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    start_days = (datetime.datetime(2026, 12, 5, 14, 5) - datetime.datetime(1899, 12, 30)) \
+        / datetime.timedelta(days=1)
+    frame = pd.DataFrame({"Zeit": start_days + t / 86400.0, "Druck [bar]": p,
+                          "Kraft [N]": thickwall_N(p, 0.0)})
+    path = tmp_path / f"serial{suffix}"
+    frame.to_csv(path, index=False, float_format="%.10f") if suffix == ".csv" else \
+        frame.to_excel(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "'Zeit' -> time [Excel serial days -> s]" in err
+    # 10 digits of a day: 1e-10 day is 9 us
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-4)
+    # --units says otherwise
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--units", "time=s",
+                            "--out", str(tmp_path / "as_s")])
+    assert "'Zeit' -> time [s]" in err
+
+
 def _clock_text(seconds: float, start_s: float) -> str:
     hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
     minutes, secs = divmod(rest, 60.0)
