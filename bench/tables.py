@@ -219,9 +219,47 @@ def _text_table(path: Path, text: str) -> RawTable:
     parsed = [(n, cells) for n, (cells,) in
               ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)
               if any(c.strip() for c in cells)]
+    if path.suffix.lower() == ".lvm":
+        parsed = _without_later_lvm_headers(path, parsed)
     decimal = _decimal(path, separator, [c.strip() for _, cells in parsed[1:200] for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
+
+
+def _without_later_lvm_headers(path: Path, parsed: list[tuple[int, list[str]]]):
+    """LabVIEW's measurement file written with one header per segment, each segment's rows
+    under its own channel header (``Channels`` ... ``***End_of_Header***``, then the heading):
+    the headers after the first segment's rows left out, so the segments are one table;
+    ``ValueError`` where a segment's channel units differ from the first's."""
+    def label(cells):
+        return cells[0].strip() if cells else ""
+
+    def units(cells):
+        return [c.strip() for c in cells[1:] if c.strip()]
+
+    heading = next((k for k, (_, cells) in enumerate(parsed)
+                    if label(cells) == "X_Value" or (k and label(parsed[k - 1][1])
+                                                     == "***End_of_Header***"
+                                                     and label(cells) != "Channels")), None)
+    first_units = next((units(cells) for _, cells in parsed[:heading or 0]
+                        if label(cells) == "Y_Unit_Label"), None)
+    if heading is None:
+        return parsed
+    out, inside = parsed[:heading + 1], False
+    for n, cells in parsed[heading + 1:]:
+        if label(cells) == "Channels":
+            inside = True
+        if not inside:
+            out.append((n, cells))
+            continue
+        if label(cells) == "Y_Unit_Label" and units(cells) != first_units:
+            raise ValueError(f"{path.name}, row {n}: a segment's channel units "
+                             f"({', '.join(map(repr, units(cells)))}) differ from the first "
+                             f"segment's ({', '.join(map(repr, first_units or []))}): expected "
+                             "one unit per channel; save the segments as files of their own")
+        # the block ends at the segment's heading, the first segment's own
+        inside = [c.strip() for c in cells] != [c.strip() for c in parsed[heading][1]]
+    return out
 
 
 def _decimal(path: Path, separator: str, cells: list[str]) -> str:

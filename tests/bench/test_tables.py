@@ -433,6 +433,40 @@ def test_a_tdms_channel_path_names_its_column(tmp_path):
     np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
 
 
+def _lvm_segment(x0: float, rows: str, units: str = "kPa\tkN") -> str:
+    """One segment of LabVIEW's measurement file: its channel header, heading and rows."""
+    return (f"Channels\t2\t\nSamples\t2\t2\t\nDate\t2026/12/05\t2026/12/05\t\n"
+            f"Y_Unit_Label\t{units}\t\nX_Dimension\tTime\tTime\t\nX0\t{x0:.16E}\t{x0:.16E}\t\n"
+            "Delta_X\t0.100000\t0.100000\t\n***End_of_Header***\t\nX_Value\tDruck\tKraft\t"
+            f"Comment\n{rows}")
+
+
+LVM_FILE_HEADER = ("LabVIEW Measurement\t\nWriter_Version\t2\nSeparator\tTab\n"
+                   "Decimal_Separator\t.\n***End_of_Header***\t\n\t\n")
+
+
+def test_a_labview_file_of_several_segments_is_one_table(tmp_path):
+    # Write To Measurement File's one header per segment: the second segment's channel header
+    # was read as rows ("cell B14 ...: '2026/12/05' is not a number"), the import refused
+    text = (LVM_FILE_HEADER + _lvm_segment(0.0, "0.0\t0.0\t0.035\n0.1\t250.0\t2.73\n") + "\n"
+            + _lvm_segment(0.2, "0.2\t800.0\t8.66\n0.3\t500.0\t5.5\n"))
+    table, found = _one(tmp_path, text, "segments.lvm")
+    assert table.header[:3] == ["Time [s]", "Druck [kPa]", "Kraft [kN]"]
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1, 0.2, 0.3])
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0, 5.0])
+    assert table.row_numbers == [16, 17, 28, 29]  # each row's line in the file, as written
+    # a segment whose channels changed units cannot be one column
+    path = tmp_path / "changed.lvm"
+    path.write_text(text.replace("Y_Unit_Label\tkPa\tkN\t\nX_Dimension\tTime\tTime\t\n"
+                                 "X0\t2.0", "Y_Unit_Label\tbar\tkN\t\nX_Dimension\tTime\tTime"
+                                 "\t\nX0\t2.0"), encoding="utf-8")
+    with pytest.raises(ValueError) as info:
+        read_tables(path)
+    assert str(info.value) == ("changed.lvm, row 22: a segment's channel units ('bar', 'kN') "
+                               "differ from the first segment's ('kPa', 'kN'): expected one "
+                               "unit per channel; save the segments as files of their own")
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
