@@ -85,7 +85,8 @@ EXPORT_SHEETS = ("steps", "samples", "metadata")
 #: ``--tare`` and ``--vented``: found in the data (auto), none, or a value given
 ZERO_CHOICES = ("auto", "none")
 #: the name (and the table's suffix) of the copy of a table kept in the run folder where its
-#: rows are no run folder's samples (a record without time, binned)
+#: rows are no run folder's samples (a record without time, binned), or of mkm export's
+#: workbook that carried that table in its sheet of this name
 TABLE_COPY = "imported_table"
 #: ``--force-sign``: the table's forces as read (a muscle's pull positive), or negated (a load
 #: cell wired to read tension negative)
@@ -365,6 +366,9 @@ def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
     meta.imported_from = {**meta.imported_from, "shape": shape,
                           "restored": "steps, samples, calibration and tare of mkm export",
                           "recorded_status": status, "recorded_reason": reason}
+    if TABLE_COPY in sheet_names(path):  # the table the exported run came from, carried on
+        meta.imported_from.update(table_copy=TABLE_COPY + path.suffix.lower(),
+                                  table_copy_sheet=TABLE_COPY)
     meta.counters["samples"] = len(samples)
     return meta, steps, samples, notes, shape
 
@@ -917,7 +921,8 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
     if copy and fmt == "xlsx":
-        (table,) = read_tables(run.path / copy, run.meta.imported_from.get("sheet"))
+        (table,) = read_tables(run.path / copy, run.meta.imported_from.get(
+            "table_copy_sheet", run.meta.imported_from.get("sheet")))
         if len(table.rows) > EXCEL_MAX_ROWS:
             raise ValueError(f"{run.path.name}: its imported table has {len(table.rows)} rows: "
                              f"a worksheet holds at most {EXCEL_MAX_ROWS}; use --format csv")

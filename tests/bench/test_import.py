@@ -707,6 +707,11 @@ def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_p
     # the workbook still imports back to the run it was, and takes a new export of its name
     (restored,), _ = _import(mkm_cli, book)
     assert restored.steps["force_N_mean"].tolist() == run.steps["force_N_mean"].tolist()
+    # ... with the table it came from, which its own export carries on
+    again_book = tmp_path / "again.xlsx"
+    code, _, err = mkm_cli(["export", str(restored.path), "--out", str(again_book)])
+    assert code == 0, err
+    pd.testing.assert_frame_equal(pd.read_excel(again_book, sheet_name="imported_table"), sheet)
     code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
     assert code == 0, err
     # a run folder that lost the table cannot be exported whole: said, nothing written
