@@ -88,7 +88,7 @@ ROLES = {
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
                   "temps ecoule", "horodatage"), "s"),
-    "direction": Role(("direction", "dir", "branch", "sweep", "richtung")),
+    "direction": Role(("direction", "dir", "branch", "sweep", "richtung", "sens")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
                  "shortening ratio", "contraction ratio", "kontraktion", "verkürzung",
@@ -100,11 +100,13 @@ ROLES = {
     "muscle": Role(("muscle", "muscle id", "actuator", "specimen")),
     "slack": Role(("zero entry", "slack")),
 }
-#: the direction words a table may use (English, German) -> the run folder's ``up``/``down``
+#: the direction words a table may use (English, German, French) -> the run folder's ``up``/``down``
 DIRECTION_WORDS = {"up": "up", "rising": "up", "increasing": "up", "loading": "up",
                    "down": "down", "falling": "down", "decreasing": "down", "unloading": "down",
                    "auf": "up", "steigend": "up", "belastung": "up",
-                   "ab": "down", "fallend": "down", "entlastung": "down"}
+                   "ab": "down", "fallend": "down", "entlastung": "down",
+                   "montée": "up", "montee": "up", "charge": "up",
+                   "descente": "down", "décharge": "down", "decharge": "down"}
 
 
 @dataclass

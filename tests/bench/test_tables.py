@@ -240,6 +240,15 @@ def test_a_german_direction_column(tmp_path):
     assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
 
 
+
+def test_a_french_direction_column(tmp_path):
+    # was: 'Sens' not recognised, its montée/descente left out unsaid
+    table, found = _one(tmp_path, "Pression (bar);Effort (N);Sens\n0;0;montée\n2;200;Montée\n"
+                        "2;210;descente\n0;0;Décharge\n")
+    assert found["direction"].header == "Sens"
+    assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
+
+
 def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
     # a lab's export with ',' between fields keeps its decimal commas quoted
     table, found = _one(tmp_path, 'Pressure [bar],Force [N]\n"0,0","0"\n"0,5","12,25"\n'
