@@ -1074,22 +1074,38 @@ def without_summary_rows(table: RawTable) -> RawTable:
                    summaries_skipped=list(named.values()))
 
 
+#: what a cell reads where a logger or a spreadsheet has no reading: LabVIEW's NaN for a
+#: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none
+NO_READING = ("nan", "#n/a", "#nv")
+
+
+def _no_reading(cell) -> bool:
+    text = str(cell).strip()
+    return text == "" or text.lower() in NO_READING
+
+
 def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
-    """``table`` without the rows whose cell in one of ``columns`` is blank (a lab sheet's
-    stray empty cell: that row's reading is not known, and no value is made up for it), the
-    first blank cell of each in ``blanks_skipped``. A workbook cell read empty that holds a
-    formula stays, for :func:`column_values` to name."""
-    blank = {k: next(c.index for c in columns if str(row[c.index]).strip() == "")
+    """``table`` without the rows whose cell in one of ``columns`` is blank or reads as
+    :data:`NO_READING` (a lab sheet's stray empty cell, a logger's lost sample: that row's
+    reading is not known, and no value is made up for it), the first such cell of each in
+    ``blanks_skipped`` (with what it reads, where it is not empty). A workbook cell read empty
+    that holds a formula stays, for :func:`column_values` to name."""
+    blank = {k: next(c.index for c in columns if _no_reading(row[c.index]))
              for k, row in enumerate(table.rows)
-             if any(str(row[c.index]).strip() == "" for c in columns)}
+             if any(_no_reading(row[c.index]) for c in columns)}
     formulas = _formulas(table, [(k, c.index) for k in blank for c in columns])
     skipped = [k for k in blank if not any((k, c.index) in formulas for c in columns)]
     if not skipped:
         return table
     keep = [k for k in range(len(table.rows)) if k not in set(skipped)]
+
+    def named(k: int) -> str:
+        text = str(table.rows[k][blank[k]]).strip()
+        return table.cell(k, blank[k]) + (f" ({text!r})" if text else "")
+
     return replace(table, rows=[table.rows[k] for k in keep],
                    row_numbers=[table.row_numbers[k] for k in keep],
-                   blanks_skipped=[table.cell(k, blank[k]) for k in skipped])
+                   blanks_skipped=[named(k) for k in skipped])
 
 
 def _formula(table: RawTable, k: int, column: int) -> str | None:

@@ -87,6 +87,23 @@ def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_p
     assert run.meta.imported_from["rows_skipped_for_a_blank_cell"] == ["B5", "A7"]
 
 
+
+@pytest.mark.parametrize("missing", ["NaN", "#N/A"])
+def test_a_logged_sample_without_a_reading_is_skipped_and_named(missing, tmp_path, mkm_cli):
+    # LabVIEW writes NaN for a sample its read lost, Excel #N/A for a lookup that found none:
+    # was "cell C12 ...: 'NaN' is not a finite number", the whole record refused
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    force = [f"{f:.4f}" for f in thickwall_N(p, 0.0)]
+    force[10] = missing
+    path = tmp_path / "record.txt"
+    path.write_text("Time [s]\tPressure [bar]\tForce [N]\n" + "".join(
+        f"{a:.1f}\t{b:.5f}\t{c}\n" for a, b, c in zip(t, p, force, strict=True)))
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert f"1 row(s) with a blank cell skipped: C12 ({missing!r})" in err
+    assert len(run.samples) == t.size - 1 and 1.0 not in run.samples["time_s"].round(6).tolist()
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES[:5], 0.0)
     rows = "\n".join(f"{p:.2f};{f:.3f}".replace(".", ",") for p, f in zip(PRESSURES[:5], force,
