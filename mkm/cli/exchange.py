@@ -82,7 +82,11 @@ def register(subparsers) -> None:
         description="Write a run's steps, samples and metadata (run.json flattened to key, "
         "value) as one .xlsx workbook with three sheets, or as steps.csv, samples.csv and "
         "metadata.csv in a folder; text cells are spreadsheet-safe. mkm import reads the "
-        "workbook back.", epilog=EXPORT_EXAMPLE)
+        "workbook back. A run imported from a record without time carries the table it came "
+        "from: the file as given beside the CSV files (imported_table.csv, its own suffix), "
+        "or the workbook's sheet "
+        "imported_table as read (mkm import --sheet imported_table reads it again).",
+        epilog=EXPORT_EXAMPLE)
     exp.add_argument("run", help="the run folder")
     exp.add_argument("--format", default="xlsx", choices=tuple(EXPORT_FORMATS),
                      help="; ".join(f"{name}: {what}" for name, what in EXPORT_FORMATS.items())
