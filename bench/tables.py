@@ -76,6 +76,8 @@ class Role:
                                       and not name.startswith(SET_POINT_PREFIX))
 
 
+#: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
+CLOCK_NAMES = {"millis": "ms", "micros": "us"}
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
 #: space) and the toolkit's unit
 ROLES = {
@@ -87,7 +89,7 @@ ROLES = {
                   "relative time", "time since start", "runtime", "run time", "test time",
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
-                  "temps ecoule", "horodatage"), "s"),
+                  "temps ecoule", "horodatage", *CLOCK_NAMES), "s"),
     "direction": Role(("direction", "dir", "branch", "sweep", "richtung", "sens")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
@@ -629,6 +631,8 @@ def parse_header(text: str) -> tuple[str, str | None]:
                     f"{marked.group('unit')}({unit})")
         return _name(_WORDS.split(name)), unit or None
     words = [w for w in _WORDS.split(text) if w]
+    if len(words) == 1 and words[0].lower() in CLOCK_NAMES:
+        return words[0].lower(), CLOCK_NAMES[words[0].lower()]
     for k, word in enumerate(words[1:], start=1):
         unit = parse_unit(word)
         if unit is not None and any(_fits(unit, r) for r in ROLES.values()):

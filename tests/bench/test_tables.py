@@ -476,6 +476,17 @@ def test_a_labview_file_of_several_segments_is_one_table(tmp_path):
                                "unit per channel; save the segments as files of their own")
 
 
+@pytest.mark.parametrize("header, scale", [("millis", 1e-3), ("micros", 1e-6)])
+def test_an_arduino_clock_column_is_the_time_in_its_unit(header, scale, tmp_path):
+    # an Arduino logger's millis() (or micros()) beside its readings: was left out unsaid, the
+    # record's rows taken as evenly spaced
+    table, found = _one(tmp_path, f"{header},pressure_bar,force_N\n123456,0,0\n123556,1,100\n"
+                        "123756,2,210\n")
+    assert found["time"].header == header
+    np.testing.assert_allclose(column_values(table, found["time"]),
+                               np.array([123456, 123556, 123756]) * scale)
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
