@@ -76,6 +76,14 @@ class Role:
                                       and not name.startswith(SET_POINT_PREFIX))
 
 
+#: the roles a column may take by its unit alone, where no column's name says it
+BY_UNIT_ROLES = ("pressure", "force")
+#: the words of a column's name that make it a set point, no reading (p_set, Druck_Soll)
+SET_POINT_WORDS = {"soll", "sollwert", "set", "setpoint", "target", "command", "cmd"}
+
+
+def _set_point(name: str) -> bool:
+    return name.startswith(SET_POINT_PREFIX) or bool(SET_POINT_WORDS & set(name.split()))
 #: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
 CLOCK_NAMES = {"millis": "ms", "micros": "us"}
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
@@ -727,6 +735,18 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
             raise ValueError(f"{table.name}: two {role} columns, {found[role].header!r} and "
                              f"{header!r}: choose one with --columns {role}=COLUMN")
         found[role] = Column(role, index, header, unit)
+    for role in BY_UNIT_ROLES:
+        # a DAQ's channel by its number ('AI 1 [bar]'): the one column whose unit is of the
+        # role's quantity (two, a set point beside a reading, are for --columns to tell)
+        taken = {c.index for c in found.values()}
+        by_unit = [index for index, header in enumerate(headers)
+                   if header and index not in taken and role not in found
+                   and not _set_point(parse_header(header)[0])
+                   and (unit := parse_header(header)[1]) is not None
+                   and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
+        if len(by_unit) == 1:
+            index = by_unit[0]
+            found[role] = Column(role, index, headers[index], parse_header(headers[index])[1])
     for role, unit in units.items():
         if role not in found:
             raise ValueError(f"--units {role}={unit}: {table.name} has no {role} column "

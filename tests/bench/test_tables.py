@@ -487,6 +487,23 @@ def test_an_arduino_clock_column_is_the_time_in_its_unit(header, scale, tmp_path
                                np.array([123456, 123556, 123756]) * scale)
 
 
+def test_channels_named_by_number_are_recognised_by_their_units(tmp_path):
+    # a DAQ's channels as it names them ('AI 1 [bar]', 'AI 2 [N]'): was "no pressure or force
+    # column among ..."; one column per unit's quantity is unambiguous
+    table, found = _one(tmp_path, "Time [s];AI 1 [bar];AI 2 [kN]\n0;0;0\n0,1;1,5;0,25\n")
+    assert (found["pressure"].header, found["force"].header) == ("AI 1 [bar]", "AI 2 [kN]")
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 250.0])
+    # two pressure channels: which is the muscle's is not known, so none is taken
+    path = tmp_path / "two.csv"
+    path.write_text("AI 1 [bar];AI 2 [bar];AI 3 [N]\n0;0;0\n1;6;100\n")
+    (table,) = read_tables(path)
+    assert "pressure" not in recognise(table) and recognise(table)["force"].header == "AI 3 [N]"
+    # nor a set point, which is no reading
+    path.write_text("p_set [bar];AI 3 [N]\n0;0\n1;100\n")
+    (table,) = read_tables(path)
+    assert "pressure" not in recognise(table)
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
