@@ -470,14 +470,28 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
 def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
     """Where the notes under a table begin (``len(rows)``: none): the rows after the last blank
     row that each hold fewer than two numbers, labelled by text (``Anzahl Werte;2610``,
-    ``Messung beendet;14:05:00``), as a logger writes a closing block; a row of numbers, or
-    none blank above them, keeps them in the table, where a bad cell is named."""
+    ``Messung beendet;14:05:00``), as a logger writes a closing block, or that follow a title
+    row of text alone, each labelled by text (a sheet's results); a row of numbers, or none
+    blank above them, keeps them in the table, where a bad cell is named."""
+    def labelled(row) -> bool:
+        return not _is_number(next((c for c in row if str(c).strip()), ""))
+
     end = len(rows)
     while end > first_data + 1 and sum(_is_number(c) for c in rows[end - 1]) < 2 \
-            and not _is_number(next((c for c in rows[end - 1] if str(c).strip()), "")):
+            and labelled(rows[end - 1]):
         end -= 1
     # the block stands apart: a blank row (left out on reading) lies just above it
-    return end if end < len(rows) and numbers[end] - numbers[end - 1] > 1 else len(rows)
+    if end < len(rows) and numbers[end] - numbers[end - 1] > 1:
+        return end
+    # or a block of results under its own title ('Auswertung', then 'Peak;2;549,4'): after the
+    # last blank row, a row of text alone, then rows each labelled by text, whatever numbers
+    # they hold (a table's own rows under a blank row hold numbers from their first row on)
+    title = next((k for k in range(len(rows) - 1, first_data, -1)
+                  if numbers[k] - numbers[k - 1] > 1), None)
+    if title is not None and not any(_is_number(c) for c in rows[title]) \
+            and all(labelled(row) for row in rows[title:]):
+        return title
+    return len(rows)
 
 
 def _labview_header(header: list[str], titles: list[list]) -> list[str]:

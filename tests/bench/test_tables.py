@@ -643,6 +643,19 @@ def test_a_time_cell_that_is_no_time_is_named_as_such(tmp_path):
                                       "time: expected seconds")
 
 
+def test_an_evaluation_block_under_its_own_title_is_no_data(tmp_path):
+    # a lab sheet's results under the measurements, a title row above them: 'Peak;2;549,4'
+    # holds two numbers, so the block was read as steps ("'Peak' is not a number")
+    table, found = _one(tmp_path, "Druck [bar];Kraft [N]\n0;0\n1;214,5\n2;549,4\n\nAuswertung\n"
+                        "Peak;2;549,4\nHysterese [N];5,5\n")
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 214.5, 549.4])
+    assert table.footer_skipped == ["A6 ('Auswertung')", "A7 ('Peak')", "A8 ('Hysterese [N]')"]
+    # a table's rows labelled by text under a blank row, with no title, stay its rows
+    table, found = _one(tmp_path, "Richtung;Druck [bar];Kraft [N]\nauf;0;0\nauf;2;549,4\n\n"
+                        "ab;1;220\nab;0;0,5\n", "branches.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 549.4, 220.0, 0.5])
+
+
 def test_a_loggers_closing_notes_under_a_blank_row_are_no_data(tmp_path):
     # was: "cell A8 (column 'Druck [bar]'): 'Anzahl Werte' is not a number"
     notes = "\nAnzahl Werte;3\nMessdauer [s];120,5\nMessung beendet;14:05:00\nPrüfer;Müller\n"
