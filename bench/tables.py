@@ -856,11 +856,19 @@ def _check_unit(table: RawTable, column: Column) -> None:
         # a load cell's display in kg or lb shows a mass for the force it weighs
         weighed = (column.role == "force" and unit is not None
                    and unit.dimensionality == registry().Unit("kg").dimensionality)
-        hint = ("; if the load cell shows the weight it holds, give --units force=kgf (lb: "
-                "lbf)" if weighed else "")
+        hint = (f"; if the load cell shows the weight it holds, give --units force="
+                f"{_weight_unit(unit)}" if weighed else "")
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
                          f"unit of {column.role} (expected one like "
                          f"{role.unit or 'percent'}){hint}")
+
+
+def _weight_unit(mass) -> str:
+    """The force unit of the weight of ``mass``, a pint unit of mass: ``kgf`` for kg, ``gf``
+    for g, ``lbf`` for lb (or lbs)."""
+    name = f"{mass:~}" + "f"
+    force = parse_unit(name)
+    return name if force is not None and _fits(force, ROLES["force"]) else "kgf (g: gf, lb: lbf)"
 
 
 def _same_name(headers, header: str) -> str:

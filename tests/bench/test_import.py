@@ -819,7 +819,12 @@ def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
     ("P,F\n1,2\n", ["--columns", "force=G"], "--columns force='G': lab.csv has no such column"),
     ("P,F\n1,2\n", ["--units", "force=bar"], "'bar' is not a unit of force"),
     ("P,F [kg]\n1,2\n", [], "column 'F [kg]': 'kg' is not a unit of force (expected one like "
-     "N); if the load cell shows the weight it holds, give --units force=kgf (lb: lbf)"),
+     "N); if the load cell shows the weight it holds, give --units force=kgf"),
+    # a display in grams or pounds is told its own force unit (was told kgf, 1000 times off)
+    ("P,F [g]\n1,2\n", [], "'g' is not a unit of force (expected one like N); if the load "
+     "cell shows the weight it holds, give --units force=gf"),
+    ("P,Load (lbs)\n1,2\n", [], "if the load cell shows the weight it holds, give --units "
+     "force=lbf"),
     ("P,F\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
     ("P,F,muscle\n1,2,A\n1,2,B\n", [], "column 'muscle' holds 2 muscles ('A', 'B'): choose one "
      "with --muscle NAME"),
