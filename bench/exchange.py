@@ -756,8 +756,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             handling["steps_from"] = (f"quasi-static bins of {width:.3g} bar, rising and "
                                       "falling branches apart")
         if not steps:
-            raise ValueError(f"{group.named}: no step found in the time series "
-                             f"(pressure {pressure.min():g}-{pressure.max():g} bar)")
+            apart = float(np.median(np.diff(time_s))) if time_s.size > 1 else math.nan
+            raise ValueError(f"{group.named}: no step found in the time series (pressure "
+                             f"{pressure.min():g}-{pressure.max():g} bar, {time_s.size} samples "
+                             f"{apart:.3g} s apart): expected plateaus held "
+                             f"{series.PLATEAU_MIN_S:g} s or more, or a ramp; if each row is a "
+                             "held pressure, import again with --one-step-per-row")
         tare_rows = np.arange(pressure.size) < rest.rest.stop
         samples = [Sample(k, float(t), int(s), "tare" if tare_rows[k] else "step", math.nan,
                           math.nan, float(p), math.nan, math.nan, float(f), "")

@@ -308,6 +308,24 @@ def test_a_time_column_of_excel_serial_dates_is_read_as_days(suffix, tmp_path, m
     assert "'Zeit' -> time [s]" in err
 
 
+
+def test_a_time_series_without_a_step_names_the_option_that_makes_each_row_one(tmp_path,
+                                                                                 mkm_cli):
+    # a logger's holds written 1 s apart, too few samples for a plateau or a ramp's bins: was
+    # "no step found in the time series (pressure 0-2 bar)", with no way on
+    path = tmp_path / "holds.csv"
+    path.write_text("Zeit [s];Druck [bar];Kraft [N]\n0;0;0\n1;1;100\n2;2;210\n",
+                    encoding="utf-8")
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.endswith("holds.csv: no step found in the time series (pressure 0-2 bar, 3 "
+                        "samples 1 s apart): expected plateaus held 2 s or more, or a ramp; if "
+                        "each row is a held pressure, import again with --one-step-per-row\n")
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--one-step-per-row")
+    assert run.steps["force_N_mean"].tolist() == [0.0, 100.0, 210.0]
+
+
 def _clock_text(seconds: float, start_s: float) -> str:
     hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
     minutes, secs = divmod(rest, 60.0)
