@@ -10,14 +10,16 @@
   series (a ``time`` column) is stored as samples and its steps derived
   (:mod:`mkm.bench.series`: a staircase's plateaus as the bench judges them, or a ramp's
   quasi-static bins per branch), its force zeroed at its mean before the pressure rises and a
-  vented pressure reading above zero, up to a sensor's zero error (:data:`VENTED_AUTO_MAX_BAR`),
+  vented pressure reading off zero, up to a sensor's zero error (:data:`VENTED_AUTO_MAX_BAR`),
   taken as the record's zero. ``imported_from`` in run.json records the source file's name and
   SHA-256, the sheet, the columns and units recognised, the shape, the tare and the vented
   reading. ``mkm report``, ``mkm fem calibrate --reference``, ``mkm identify`` and
   ``mkm export`` read these runs like any other.
 - :func:`export_run`: a run folder as one Excel workbook (sheets ``steps``, ``samples``,
   ``metadata``) or as three CSV files, every text cell spreadsheet-safe. The workbook imports
-  back to the run it was: steps, samples, calibration and tare.
+  back to the run it was: steps, samples, calibration and tare. A run that keeps the table it
+  was imported from (:data:`TABLE_COPY`) takes it along: the file as given beside the CSV
+  files, the table as read in a sheet of its own, which ``mkm import --sheet`` reads again.
 """
 
 from __future__ import annotations
@@ -53,6 +55,7 @@ from mkm.bench.tables import (
     flags,
     key_values,
     marked_gauge,
+    numbers_as_read,
     read_tables,
     recognise,
     sheet_names,
@@ -82,7 +85,8 @@ EXPORT_SHEETS = ("steps", "samples", "metadata")
 #: ``--tare`` and ``--vented``: found in the data (auto), none, or a value given
 ZERO_CHOICES = ("auto", "none")
 #: the name (and the table's suffix) of the copy of a table kept in the run folder where its
-#: rows are no run folder's samples (a record without time, binned)
+#: rows are no run folder's samples (a record without time, binned), or of mkm export's
+#: workbook that carried that table in its sheet of this name
 TABLE_COPY = "imported_table"
 #: ``--force-sign``: the table's forces as read (a muscle's pull positive), or negated (a load
 #: cell wired to read tension negative)
@@ -198,6 +202,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  sheet: str | None = None, tare: str | float = "auto",
                  vented: str | float = "auto", select: str | None = None,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
+                 one_step_per_row: bool = False,
                  notify=lambda line: None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -228,6 +233,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     force_sign : 1 or -1
         -1: the table's forces negated (a load cell that reads the muscle's pull negative); a
         ``tare`` given is as the table reads it.
+    one_step_per_row : bool
+        Every row a step, at its time where the table has one: a fine step table of more
+        than :data:`mkm.bench.series.RECORD_MIN_ROWS` rows is otherwise read as a record
+        without its time (:func:`mkm.bench.series.sampled_without_time`), and a time column as
+        a time series.
     notify : callable
         Receives the line of what was recognised in each table.
 
@@ -272,6 +282,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         # have times)
         unread = [] if exported or "time" in found else unread_time_columns(table, found)
         read_as = ("its rows are taken as evenly spaced in time" if unread and
+                   not one_step_per_row and
                    series.sampled_without_time(recognition.values("pressure"))
                    else "every row is a step")
         notify(f"{table.name}: {recognition.line()}"
@@ -287,16 +298,20 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                          f"{', '.join(map(repr, names))})")
     untimed = [r.table.name for r in prepared if "time" not in r.columns
                and not series.sampled_without_time(r.values("pressure"))]
-    if untimed and not isinstance(vented, str):  # a value given: it would be ignored unsaid
-        raise ValueError(f"--vented {vented:g} bar: {untimed[0]} has no time column: expected "
-                         "--vented with a time series only (its first samples read vented); a "
-                         "step table's pressures are imported as they are")
+    if (untimed or one_step_per_row) and not isinstance(vented, str):
+        # a value given: it would be ignored unsaid
+        why = ("--one-step-per-row reads a step table" if one_step_per_row else
+               f"{untimed[0]} has no time column")
+        raise ValueError(f"--vented {vented:g} bar: {why}: expected --vented with a time "
+                         "series only (its first samples read vented); a step table's "
+                         "pressures are imported as they are")
     groups = []
     for recognition in prepared:
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
     sha = file_sha256(path)
-    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override, force_sign)
+    built = [_build(path, sha, g, m, tare, vented, accuracy or {}, override, force_sign,
+                    one_step_per_row)
              for g, (m, override) in zip(groups, muscles, strict=True)]
     if exported and len(built) == 1 and not accuracy:
         built = [_restored(path, known, *built[0])]
@@ -351,6 +366,9 @@ def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
     meta.imported_from = {**meta.imported_from, "shape": shape,
                           "restored": "steps, samples, calibration and tare of mkm export",
                           "recorded_status": status, "recorded_reason": reason}
+    if TABLE_COPY in sheet_names(path):  # the table the exported run came from, carried on
+        meta.imported_from.update(table_copy=TABLE_COPY + path.suffix.lower(),
+                                  table_copy_sheet=TABLE_COPY)
     meta.counters["samples"] = len(samples)
     return meta, steps, samples, notes, shape
 
@@ -575,13 +593,14 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
 
 
 def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
-           override=None, force_sign=1):
+           override=None, force_sign=1, one_step_per_row=False):
     """The run record, steps, samples, notes and shape of one muscle state (``override``: what
     an option replaced of the table, said first)."""
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), force_sign * group.values("force")
     notes, handling = ([override], {"L0": override}) if override else ([], {})
     handling["force_sign"] = force_sign
+    handling["one_step_per_row"] = one_step_per_row
     if force_sign < 0:
         notes.append("forces negated (--force-sign -1)")
     notes += filter(None, [PRACTICAL_RANGE.length_note(muscle.D0_mm, muscle.L0_mm),
@@ -596,7 +615,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              "expected samples in time order")
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
-    record = not timed and series.sampled_without_time(pressure)
+    record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)
+    step_times = None
+    if timed and one_step_per_row:  # a step table, its pressures as written
+        step_times, timed = time_s, False
+        handling["steps_from"] = "one row per step (--one-step-per-row), at its time"
     if timed or record:
         if vented == "auto":
             offset = (series.vented_offset(time_s, pressure) if timed else
@@ -604,6 +627,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                                            min_s=series.RECORD_PLATEAU_ROWS))
         else:
             offset = 0.0 if vented == "none" else float(vented)
+        if vented == "auto" and offset < -VENTED_AUTO_MAX_BAR:
+            offset = 0.0  # below a sensor's zero error: refused below as a reading < 0 bar
         if vented == "auto" and offset > VENTED_AUTO_MAX_BAR:
             held = handling["held_at_start_bar"] = offset
             offset = 0.0
@@ -622,13 +647,17 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         pressure = pressure - offset
         if offset:
             notes.append(f"vented reading {offset:.3g} bar {handling['vented']}: subtracted")
-    step_times = None
     if timed and series.one_reading_per_step(time_s):
         step_times, timed = time_s, False
         apart = float(np.median(np.diff(time_s)))
         handling["steps_from"] = f"one row per step, its readings {apart:.3g} s apart (median)"
         notes.append(f"one reading every {apart:.3g} s: each row a step at its time (a time "
                      "series has several readings per hold)")
+        if series.sampled_without_time(pressure):  # a logger's milliseconds read as seconds?
+            notes[-1] += (f"; {pressure.size} rows whose successive pressures lie within "
+                          f"{series.PLATEAU_TOLERANCE_BAR:g} bar, as a record's samples do: if "
+                          f"{found['time'].header!r} is in milliseconds, import again with "
+                          "--units time=ms")
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
     # -0.0001 bar too)
     noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
@@ -642,8 +671,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         read = (f"read as bar since {column.header!r} names no unit" if column.unit is None
                 else f"read in {column.unit} as {column.header!r} says")
         notes.append(f"pressures up to {top_bar:g} bar, {read}: above the "
-                     f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; if they "
-                     "are kPa or psi, import again with --units pressure=kPa (or psi)")
+                     f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; "
+                     + _other_pressure_units(top_bar, column.unit))
     # the first bad cell named (a record's every sample checked at once)
     for k in np.flatnonzero(outside("pressure_bar", pressure))[:1]:
         p = pressure[k]
@@ -727,8 +756,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             handling["steps_from"] = (f"quasi-static bins of {width:.3g} bar, rising and "
                                       "falling branches apart")
         if not steps:
-            raise ValueError(f"{group.named}: no step found in the time series "
-                             f"(pressure {pressure.min():g}-{pressure.max():g} bar)")
+            apart = float(np.median(np.diff(time_s))) if time_s.size > 1 else math.nan
+            raise ValueError(f"{group.named}: no step found in the time series (pressure "
+                             f"{pressure.min():g}-{pressure.max():g} bar, {time_s.size} samples "
+                             f"{apart:.3g} s apart): expected plateaus held "
+                             f"{series.PLATEAU_MIN_S:g} s or more, or a ramp; if each row is a "
+                             "held pressure, import again with --one-step-per-row")
         tare_rows = np.arange(pressure.size) < rest.rest.stop
         samples = [Sample(k, float(t), int(s), "tare" if tare_rows[k] else "step", math.nan,
                           math.nan, float(p), math.nan, math.nan, float(f), "")
@@ -759,7 +792,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         handling["table_copy"] = TABLE_COPY + path.suffix.lower()
         notes.insert(0, f"{pressure.size} rows of a record without time (successive readings "
                      f"{apart:.2g} bar apart): {done}, every row kept in "
-                     f"{handling['table_copy']}")
+                     f"{handling['table_copy']}; if each row is a held pressure, import again "
+                     "with --one-step-per-row")
     else:
         shape = "steps"
         std = group.values("force_std", optional=True) if "force_std" in found else \
@@ -813,6 +847,30 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     return meta, steps, samples, notes, shape
 
 
+#: the units a lab's pressures are written in that read as bar pass as a bar 10-100 times
+MISREAD_PRESSURE_UNITS = ("kPa", "psi")
+
+
+def _other_pressure_units(top_bar: float, unit: str | None) -> str:
+    """What the note on pressures above the practical range suggests: each unit of
+    :data:`MISREAD_PRESSURE_UNITS` other than the column's (``None``: bar) in which its
+    largest reading lies within the range (a psi column is not told it may be psi)."""
+    from mkm.bench.tables import parse_unit, registry
+
+    def in_bar(name: str | None) -> float:
+        found = parse_unit(name) if name else None
+        return float(registry().Quantity(1.0, found or registry().Unit("bar")).to(
+            "bar").magnitude)
+
+    written = top_bar / in_bar(unit)  # the largest reading as the table writes it
+    fits = [u for u in MISREAD_PRESSURE_UNITS if not math.isclose(in_bar(u), in_bar(unit))
+            and written * in_bar(u) <= PRACTICAL_RANGE.pressure_bar[1]]
+    if not fits:
+        return "check the column's unit (--units pressure=UNIT)"
+    return (f"if they are {' or '.join(fits)}, import again with --units pressure={fits[0]}"
+            + "".join(f" (or {u})" for u in fits[1:]))
+
+
 def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],
                  shape: str) -> list[StepRecord]:
     """``steps`` with the budget of the bounds the lab declared."""
@@ -836,7 +894,10 @@ def _inferred(pressure: np.ndarray) -> np.ndarray:
 
 def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     """The run ``run_dir`` as ``out`` (a ``.xlsx`` workbook) or, with ``fmt="csv"``, as the
-    folder ``out`` holding ``steps.csv``, ``samples.csv`` and ``metadata.csv``."""
+    folder ``out`` holding ``steps.csv``, ``samples.csv`` and ``metadata.csv``; with the table
+    the run was imported from where it keeps one (:data:`TABLE_COPY`): the file as it came,
+    beside the CSV files, or the table as ``mkm import`` read it, the workbook's sheet
+    ``imported_table``."""
     if fmt not in EXPORT_FORMATS:
         raise ValueError(f"--format {fmt!r} is invalid: expected {' or '.join(EXPORT_FORMATS)}")
     out = Path(out)
@@ -851,10 +912,25 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     # short still says every sample is there
     # and the export's own record: a workbook travels without its run folder
     exported = {"source": str(run.path), **provenance()}
+    copy = (run.meta.imported_from or {}).get("table_copy")
+    if copy and not (run.path / copy).is_file():
+        raise ValueError(f"{run.path.name}: the table it was imported from, {copy}, is missing "
+                         "from the run folder: expected the copy mkm import keeps there (import "
+                         "the table again)")
+    if copy:
+        exported["imported_table"] = (copy if fmt == "csv" else
+                                      f"sheet {TABLE_COPY!r}: the table as mkm import read it")
     metadata = pd.DataFrame(_flatten({**run.meta.as_dict(), "status": str(run.status),
                                       "problems": run.problems, "exported": exported}),
                             columns=["key", "value"])
     sheets = {"steps": run.steps, "samples": samples, "metadata": metadata}
+    if copy and fmt == "xlsx":
+        (table,) = read_tables(run.path / copy, run.meta.imported_from.get(
+            "table_copy_sheet", run.meta.imported_from.get("sheet")))
+        if len(table.rows) > EXCEL_MAX_ROWS:
+            raise ValueError(f"{run.path.name}: its imported table has {len(table.rows)} rows: "
+                             f"a worksheet holds at most {EXCEL_MAX_ROWS}; use --format csv")
+        sheets[TABLE_COPY] = pd.DataFrame(numbers_as_read(table), columns=table.header)
     sheets = {name: spreadsheet_safe(frame) for name, frame in sheets.items()}
     if fmt == "xlsx":
         out.parent.mkdir(parents=True, exist_ok=True)
@@ -866,6 +942,10 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     for name, frame in sheets.items():
         frame.to_csv(out / f"{name}.csv", index=False, float_format="%.10g",
                      encoding=SPREADSHEET_CSV_ENCODING)
+    for stale in out.glob(f"{TABLE_COPY}.*"):  # an earlier export's: not this run's table
+        stale.unlink()
+    if copy:
+        shutil.copyfile(run.path / copy, out / copy)
     return out
 
 
@@ -888,7 +968,7 @@ def _check_export_target(out: Path, fmt: str) -> None:
                          "csv and a folder)")
     if out.is_dir():
         raise ValueError(f"--out {out} is a folder: expected a workbook name ending in .xlsx")
-    if out.exists() and set(sheet_names(out)) != set(EXPORT_SHEETS):
+    if out.exists() and set(sheet_names(out)) - {TABLE_COPY} != set(EXPORT_SHEETS):
         raise ValueError(f"--out {out} exists and is not a workbook mkm export wrote: expected "
                          "a new name (nothing is overwritten)")
 

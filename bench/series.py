@@ -163,14 +163,14 @@ def rising_end(pressure_bar: np.ndarray) -> int:
 def vented_offset(time_s: np.ndarray, pressure_bar: np.ndarray, min_s: float = 0.5) -> float:
     """The pressure the record reads vented [bar]: the median of its first plateau (``min_s``
     or longer) when that plateau starts the record and is its lowest level, else 0 (the record
-    starts pressurised)."""
+    starts pressurised); a sensor's zero error either side of zero, so below it too."""
     found = plateaus(time_s, pressure_bar, min_s=min_s)
     if not found or found[0].start != 0:
         return 0.0
     level = found[0].level_bar
     if level > np.percentile(pressure_bar, 5) + PLATEAU_TOLERANCE_BAR:
         return 0.0
-    return level if level >= VENTED_THRESHOLD_BAR else 0.0
+    return level if abs(level) >= VENTED_THRESHOLD_BAR else 0.0
 
 
 @dataclass

@@ -76,6 +76,16 @@ class Role:
                                       and not name.startswith(SET_POINT_PREFIX))
 
 
+#: the roles a column may take by its unit alone, where no column's name says it
+BY_UNIT_ROLES = ("pressure", "force")
+#: the words of a column's name that make it a set point, no reading (p_set, Druck_Soll)
+SET_POINT_WORDS = {"soll", "sollwert", "set", "setpoint", "target", "command", "cmd"}
+
+
+def _set_point(name: str) -> bool:
+    return name.startswith(SET_POINT_PREFIX) or bool(SET_POINT_WORDS & set(name.split()))
+#: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
+CLOCK_NAMES = {"millis": "ms", "micros": "us"}
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
 #: space) and the toolkit's unit
 ROLES = {
@@ -86,8 +96,10 @@ ROLES = {
                   "datum zeit", "datum uhrzeit", "datum und uhrzeit", "datum und zeit",
                   "relative time", "time since start", "runtime", "run time", "test time",
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
-                  "relative zeit", "zeit seit start"), "s"),
-    "direction": Role(("direction", "dir", "branch", "sweep", "richtung")),
+                  "relative zeit", "zeit seit start", "temps", "temps écoulé",
+                  "temps ecoule", "horodatage", "time 1 default sample rate",
+                  *CLOCK_NAMES), "s"),
+    "direction": Role(("direction", "dir", "branch", "sweep", "richtung", "sens")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
                  "shortening ratio", "contraction ratio", "kontraktion", "verkürzung",
@@ -99,11 +111,13 @@ ROLES = {
     "muscle": Role(("muscle", "muscle id", "actuator", "specimen")),
     "slack": Role(("zero entry", "slack")),
 }
-#: the direction words a table may use (English, German) -> the run folder's ``up``/``down``
+#: the direction words a table may use (English, German, French) -> the run folder's ``up``/``down``
 DIRECTION_WORDS = {"up": "up", "rising": "up", "increasing": "up", "loading": "up",
                    "down": "down", "falling": "down", "decreasing": "down", "unloading": "down",
                    "auf": "up", "steigend": "up", "belastung": "up",
-                   "ab": "down", "fallend": "down", "entlastung": "down"}
+                   "ab": "down", "fallend": "down", "entlastung": "down",
+                   "montée": "up", "montee": "up", "charge": "up",
+                   "descente": "down", "décharge": "down", "decharge": "down"}
 
 
 @dataclass
@@ -218,9 +232,47 @@ def _text_table(path: Path, text: str) -> RawTable:
     parsed = [(n, cells) for n, (cells,) in
               ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)
               if any(c.strip() for c in cells)]
+    if path.suffix.lower() == ".lvm":
+        parsed = _without_later_lvm_headers(path, parsed)
     decimal = _decimal(path, separator, [c.strip() for _, cells in parsed[1:200] for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
+
+
+def _without_later_lvm_headers(path: Path, parsed: list[tuple[int, list[str]]]):
+    """LabVIEW's measurement file written with one header per segment, each segment's rows
+    under its own channel header (``Channels`` ... ``***End_of_Header***``, then the heading):
+    the headers after the first segment's rows left out, so the segments are one table;
+    ``ValueError`` where a segment's channel units differ from the first's."""
+    def label(cells):
+        return cells[0].strip() if cells else ""
+
+    def units(cells):
+        return [c.strip() for c in cells[1:] if c.strip()]
+
+    heading = next((k for k, (_, cells) in enumerate(parsed)
+                    if label(cells) == "X_Value" or (k and label(parsed[k - 1][1])
+                                                     == "***End_of_Header***"
+                                                     and label(cells) != "Channels")), None)
+    first_units = next((units(cells) for _, cells in parsed[:heading or 0]
+                        if label(cells) == "Y_Unit_Label"), None)
+    if heading is None:
+        return parsed
+    out, inside = parsed[:heading + 1], False
+    for n, cells in parsed[heading + 1:]:
+        if label(cells) == "Channels":
+            inside = True
+        if not inside:
+            out.append((n, cells))
+            continue
+        if label(cells) == "Y_Unit_Label" and units(cells) != first_units:
+            raise ValueError(f"{path.name}, row {n}: a segment's channel units "
+                             f"({', '.join(map(repr, units(cells)))}) differ from the first "
+                             f"segment's ({', '.join(map(repr, first_units or []))}): expected "
+                             "one unit per channel; save the segments as files of their own")
+        # the block ends at the segment's heading, the first segment's own
+        inside = [c.strip() for c in cells] != [c.strip() for c in parsed[heading][1]]
+    return out
 
 
 def _decimal(path: Path, separator: str, cells: list[str]) -> str:
@@ -321,6 +373,19 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
     return tables
 
 
+def numbers_as_read(table: RawTable) -> list[list]:
+    """``table``'s rows, each cell that is a plain number (``'1,5'`` in a table of decimal
+    commas) as that number and the others as written: a sheet that reads as the table did."""
+    out = []
+    for row in table.rows:
+        cells = []
+        for cell in row:
+            value, unit = _number(cell, table.decimal) if isinstance(cell, str) else (None, None)
+            cells.append(value if value is not None and unit is None else cell)
+        out.append(cells)
+    return out
+
+
 def _is_number(cell) -> bool:
     """A number, possibly with a decimal comma or a unit after it."""
     return _number(cell, ",")[0] is not None
@@ -391,6 +456,7 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
     header = _labview_header(header, rows[:header_index])
+    header = _block_units(where, header, rows[:header_index], numbers)
     end = _footer_start(numbers, rows, first_data)
     data = [list(r) + [""] * (width - len(r)) for r in rows[first_data:end]]
     if len(data) > MAX_ROWS:
@@ -404,14 +470,28 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
 def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
     """Where the notes under a table begin (``len(rows)``: none): the rows after the last blank
     row that each hold fewer than two numbers, labelled by text (``Anzahl Werte;2610``,
-    ``Messung beendet;14:05:00``), as a logger writes a closing block; a row of numbers, or
-    none blank above them, keeps them in the table, where a bad cell is named."""
+    ``Messung beendet;14:05:00``), as a logger writes a closing block, or that follow a title
+    row of text alone, each labelled by text (a sheet's results); a row of numbers, or none
+    blank above them, keeps them in the table, where a bad cell is named."""
+    def labelled(row) -> bool:
+        return not _is_number(next((c for c in row if str(c).strip()), ""))
+
     end = len(rows)
     while end > first_data + 1 and sum(_is_number(c) for c in rows[end - 1]) < 2 \
-            and not _is_number(next((c for c in rows[end - 1] if str(c).strip()), "")):
+            and labelled(rows[end - 1]):
         end -= 1
     # the block stands apart: a blank row (left out on reading) lies just above it
-    return end if end < len(rows) and numbers[end] - numbers[end - 1] > 1 else len(rows)
+    if end < len(rows) and numbers[end] - numbers[end - 1] > 1:
+        return end
+    # or a block of results under its own title ('Auswertung', then 'Peak;2;549,4'): after the
+    # last blank row, a row of text alone, then rows each labelled by text, whatever numbers
+    # they hold (a table's own rows under a blank row hold numbers from their first row on)
+    title = next((k for k in range(len(rows) - 1, first_data, -1)
+                  if numbers[k] - numbers[k - 1] > 1), None)
+    if title is not None and not any(_is_number(c) for c in rows[title]) \
+            and all(labelled(row) for row in rows[title:]):
+        return title
+    return len(rows)
 
 
 def _labview_header(header: list[str], titles: list[list]) -> list[str]:
@@ -428,6 +508,42 @@ def _labview_header(header: list[str], titles: list[list]) -> list[str]:
         if k < len(out) and out[k] and unit and parse_header(out[k])[1] is None:
             out[k] = f"{out[k]} [{unit}]"
     return out
+
+
+#: the first cell of a header block's row of units, one per column (a TDMS file exported with
+#: its channel properties, ``unit_string``; a logger's ``Unit`` or ``Einheit``)
+UNIT_ROW_LABELS = ("unit", "units", "unit string", "unit_string", "einheit", "einheiten",
+                   "unité", "unités")
+
+
+def _block_units(where: str, header: list[str], titles: list[list],
+                 numbers: list[int]) -> list[str]:
+    """The column names with the units a header block's row of units gives them (a row
+    labelled as :data:`UNIT_ROW_LABELS` whose other cells are units), in the columns' order;
+    a name that holds its unit keeps it. ``ValueError`` where the units are not one per
+    column: which is whose cannot be told, and a unit left out would be read as bar or N."""
+    for k, row in enumerate(titles):
+        cells = [str(c).strip() for c in row]
+        units = cells[1:]
+        while units and not units[-1]:
+            units.pop()
+        if (not cells or cells[0].lower().rstrip(":") not in UNIT_ROW_LABELS or not units
+                or not all(parse_unit(u) is not None for u in units if u)):
+            continue
+        named = [j for j, name in enumerate(header) if name]
+        if len(units) != len(named):
+            shown = ", ".join(repr(c) for c in cells if c)
+            raise ValueError(f"{where}, row {numbers[k]} ({shown}) gives {len(units)} units for "
+                             f"the {len(named)} columns "
+                             f"{', '.join(repr(header[j]) for j in named)}: expected one per "
+                             "column, in their order; or put each unit in its column's name "
+                             "('Pressure [bar]')")
+        out = list(header)
+        for j, unit in zip(named, units, strict=True):
+            if unit and parse_header(out[j])[1] is None:
+                out[j] = f"{out[j]} [{unit}]"
+        return out
+    return header
 
 
 # --- recognising ------------------------------------------------------------------------------
@@ -512,14 +628,21 @@ def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
             and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"]))]
 
 
+#: a TDMS channel's path, as npTDMS names a data frame's columns: ``/'Group'/'Channel'``
+_TDMS_PATH = re.compile(r"/'[^']*'/'(?P<channel>[^']+)'")
+
+
 def parse_header(text: str) -> tuple[str, str | None]:
     """A column header as its name (lower case, words joined by one space, statistics words
     such as ``mean`` dropped) and its unit as written (``None`` when it names none).
 
     ``Pressure (bar)`` -> ``("pressure", "bar")``; ``p_psi`` -> ``("p", "psi")``;
-    ``force_N_mean`` -> ``("force", "N")``; ``eps`` -> ``("eps", None)``.
+    ``force_N_mean`` -> ``("force", "N")``; ``eps`` -> ``("eps", None)``;
+    ``/'Untitled'/'Pressure [kPa]'`` (a TDMS channel's path) -> ``("pressure", "kPa")``.
     """
     text = str(text).strip()
+    if channel := _TDMS_PATH.fullmatch(text):  # npTDMS's "/'Group'/'Channel'": the channel
+        text = channel.group("channel").strip()
     match = _BRACKETED.match(text)
     if match and match.group("name").strip():
         name, unit = match.group("name"), match.group("unit").strip()
@@ -531,6 +654,8 @@ def parse_header(text: str) -> tuple[str, str | None]:
                     f"{marked.group('unit')}({unit})")
         return _name(_WORDS.split(name)), unit or None
     words = [w for w in _WORDS.split(text) if w]
+    if len(words) == 1 and words[0].lower() in CLOCK_NAMES:
+        return words[0].lower(), CLOCK_NAMES[words[0].lower()]
     for k, word in enumerate(words[1:], start=1):
         unit = parse_unit(word)
         if unit is not None and any(_fits(unit, r) for r in ROLES.values()):
@@ -552,10 +677,13 @@ class Column:
     header: str
     unit: str | None = None  # as the table (or --units) says; None: the toolkit's own
     given: bool = False  # named by --columns
+    #: a time column of spreadsheet date-times saved as numbers (:func:`_excel_serial_days`)
+    excel_days: bool = False
 
     def describe(self) -> dict:
         role_unit = ROLES[self.role].unit
-        return {"column": self.header, "unit": self.unit if self.unit is not None else role_unit,
+        unit = EXCEL_DAYS if self.excel_days else self.unit
+        return {"column": self.header, "unit": unit if unit is not None else role_unit,
                 "converted_to": role_unit if role_unit else ("fraction" if role_unit == ""
                                                              else None)}
 
@@ -621,6 +749,18 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
             raise ValueError(f"{table.name}: two {role} columns, {found[role].header!r} and "
                              f"{header!r}: choose one with --columns {role}=COLUMN")
         found[role] = Column(role, index, header, unit)
+    for role in BY_UNIT_ROLES:
+        # a DAQ's channel by its number ('AI 1 [bar]'): the one column whose unit is of the
+        # role's quantity (two, a set point beside a reading, are for --columns to tell)
+        taken = {c.index for c in found.values()}
+        by_unit = [index for index, header in enumerate(headers)
+                   if header and index not in taken and role not in found
+                   and not _set_point(parse_header(header)[0])
+                   and (unit := parse_header(header)[1]) is not None
+                   and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
+        if len(by_unit) == 1:
+            index = by_unit[0]
+            found[role] = Column(role, index, headers[index], parse_header(headers[index])[1])
     for role, unit in units.items():
         if role not in found:
             raise ValueError(f"--units {role}={unit}: {table.name} has no {role} column "
@@ -628,7 +768,30 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         found[role].unit = unit
     for column in found.values():
         _check_unit(table, column)
+    if "time" in found and found["time"].unit is None:
+        found["time"].excel_days = _excel_serial_days(table, found["time"])
     return found
+
+
+#: how a time column of spreadsheet serial dates is said (the line, run.json)
+EXCEL_DAYS = "Excel serial days"
+#: the serial dates (days since 30 Dec 1899) a time column without a unit is taken to hold:
+#: 1954-10-03 to Excel's last day, 9999-12-31
+EXCEL_SERIAL_DAYS = (20_000.0, 2_958_465.0)
+
+
+def _excel_serial_days(table: RawTable, column: Column) -> bool:
+    """Whether the numbers of a time column without a unit are a spreadsheet's date-times
+    saved as numbers (46361.5868 is 5 Dec 2026 14:05): each within :data:`EXCEL_SERIAL_DAYS`
+    and all within a day of the first. As seconds they would be a record of less than a second
+    taken hours into a clock's count, which no muscle's hold is."""
+    raw = [row[column.index] for row in table.rows]
+    if len(raw) < 3 or _clock(raw[0]) is not None:
+        return False
+    values = _plain_numbers(raw, table.decimal)
+    low, high = EXCEL_SERIAL_DAYS
+    return bool(values is not None and values.min() >= low and values.max() <= high
+                and np.ptp(values) < 1.0)
 
 
 def _header_named(table: RawTable, role: str, given: str) -> str:
@@ -693,11 +856,19 @@ def _check_unit(table: RawTable, column: Column) -> None:
         # a load cell's display in kg or lb shows a mass for the force it weighs
         weighed = (column.role == "force" and unit is not None
                    and unit.dimensionality == registry().Unit("kg").dimensionality)
-        hint = ("; if the load cell shows the weight it holds, give --units force=kgf (lb: "
-                "lbf)" if weighed else "")
+        hint = (f"; if the load cell shows the weight it holds, give --units force="
+                f"{_weight_unit(unit)}" if weighed else "")
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
                          f"unit of {column.role} (expected one like "
                          f"{role.unit or 'percent'}){hint}")
+
+
+def _weight_unit(mass) -> str:
+    """The force unit of the weight of ``mass``, a pint unit of mass: ``kgf`` for kg, ``gf``
+    for g, ``lbf`` for lb (or lbs)."""
+    name = f"{mass:~}" + "f"
+    force = parse_unit(name)
+    return name if force is not None and _fits(force, ROLES["force"]) else "kgf (g: gf, lb: lbf)"
 
 
 def _same_name(headers, header: str) -> str:
@@ -727,6 +898,9 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         elapsed = _elapsed_s(table, column, raw)
         if elapsed is not None:
             return elapsed
+        if column.excel_days:  # counted from the first row, as a clock is
+            days = _plain_numbers(raw, table.decimal)
+            return (days - days[0]) * _DAY_S
         if raw and str(raw[0]).strip() and _number(raw[0], table.decimal)[0] is None:
             raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
                              f"{column.header!r}): {_shown(raw[0])} is not a time: expected "
@@ -919,7 +1093,14 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
 SUMMARY_WORDS = {"mean", "average", "avg", "sum", "total", "min", "max", "minimum", "maximum",
                  "std", "stdev", "std dev", "standard deviation", "median", "mittelwert",
                  "mittel", "durchschnitt", "summe", "gesamt", "standardabweichung", "stabw",
-                 "moyenne", "somme", "écart-type", "ecart-type", "écart type", "médiane"}
+                 "moyenne", "somme", "écart-type", "ecart-type", "écart type", "médiane",
+                 "std abw", "stdabw", "mw", "ø", "moy", "anzahl", "count"}
+
+
+def _summary_word(cell: str) -> str:
+    """A cell as :data:`SUMMARY_WORDS` spells it: lower case, its abbreviating dots and a
+    trailing colon dropped (``Std.Abw.``, ``Std. Dev.``, ``Max:``)."""
+    return re.sub(r"[\s.]+", " ", cell.strip().rstrip(":").lower()).strip()
 
 
 def without_summary_rows(table: RawTable) -> RawTable:
@@ -929,8 +1110,7 @@ def without_summary_rows(table: RawTable) -> RawTable:
     named = {}
     for k, row in enumerate(table.rows):
         for column, cell in enumerate(row):
-            if isinstance(cell, str) and cell.strip().rstrip(":").strip().lower() in \
-                    SUMMARY_WORDS:
+            if isinstance(cell, str) and _summary_word(cell) in SUMMARY_WORDS:
                 named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
                 break
     if not named:
@@ -941,22 +1121,38 @@ def without_summary_rows(table: RawTable) -> RawTable:
                    summaries_skipped=list(named.values()))
 
 
+#: what a cell reads where a logger or a spreadsheet has no reading: LabVIEW's NaN for a
+#: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none
+NO_READING = ("nan", "#n/a", "#nv")
+
+
+def _no_reading(cell) -> bool:
+    text = str(cell).strip()
+    return text == "" or text.lower() in NO_READING
+
+
 def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
-    """``table`` without the rows whose cell in one of ``columns`` is blank (a lab sheet's
-    stray empty cell: that row's reading is not known, and no value is made up for it), the
-    first blank cell of each in ``blanks_skipped``. A workbook cell read empty that holds a
-    formula stays, for :func:`column_values` to name."""
-    blank = {k: next(c.index for c in columns if str(row[c.index]).strip() == "")
+    """``table`` without the rows whose cell in one of ``columns`` is blank or reads as
+    :data:`NO_READING` (a lab sheet's stray empty cell, a logger's lost sample: that row's
+    reading is not known, and no value is made up for it), the first such cell of each in
+    ``blanks_skipped`` (with what it reads, where it is not empty). A workbook cell read empty
+    that holds a formula stays, for :func:`column_values` to name."""
+    blank = {k: next(c.index for c in columns if _no_reading(row[c.index]))
              for k, row in enumerate(table.rows)
-             if any(str(row[c.index]).strip() == "" for c in columns)}
+             if any(_no_reading(row[c.index]) for c in columns)}
     formulas = _formulas(table, [(k, c.index) for k in blank for c in columns])
     skipped = [k for k in blank if not any((k, c.index) in formulas for c in columns)]
     if not skipped:
         return table
     keep = [k for k in range(len(table.rows)) if k not in set(skipped)]
+
+    def named(k: int) -> str:
+        text = str(table.rows[k][blank[k]]).strip()
+        return table.cell(k, blank[k]) + (f" ({text!r})" if text else "")
+
     return replace(table, rows=[table.rows[k] for k in keep],
                    row_numbers=[table.row_numbers[k] for k in keep],
-                   blanks_skipped=[table.cell(k, blank[k]) for k in skipped])
+                   blanks_skipped=[named(k) for k in skipped])
 
 
 def _formula(table: RawTable, k: int, column: int) -> str | None:

@@ -128,13 +128,14 @@ def shared_help(option: str, extra: str = "") -> str:
     return SHARED_HELP[option] + (f" ({extra})" if extra else "")
 
 
-def derived_help(build):
-    """An argparse store action whose help is ``build()``, called only when the help is shown:
-    a choice list derived from a registry that lives with the library code (``OBJECTIVES`` of
-    :mod:`mkm.design.spec`, whose package loads pandas and matplotlib) without loading that
-    code for every command line, ``mkm --help`` included."""
+def derived_help(build, action=argparse._StoreAction):
+    """An argparse store action (or ``action``: a flag's ``argparse._StoreTrueAction``) whose
+    help is ``build()``, called only when the help is shown: a choice list derived from a
+    registry that lives with the library code (``OBJECTIVES`` of :mod:`mkm.design.spec`, whose
+    package loads pandas and matplotlib) without loading that code for every command line,
+    ``mkm --help`` included."""
 
-    class DerivedHelp(argparse._StoreAction):
+    class DerivedHelp(action):
         help = property(lambda self: build(), lambda self, value: None)
 
     return DerivedHelp

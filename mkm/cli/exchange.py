@@ -5,6 +5,8 @@ Argument parsing only: :mod:`mkm.bench.exchange` does the work.
 
 from __future__ import annotations
 
+import argparse
+
 from mkm.cli.common import argtype, derived_help, shared_help
 from mkm.core.ranges import parse_fraction, parse_number
 from mkm.core.records import EXPORT_FORMATS
@@ -62,6 +64,8 @@ def register(subparsers) -> None:
                      "1013mbar)")
     imp.add_argument("--force-sign", type=int, default=1, metavar="SIGN",
                      action=derived_help(_force_sign_help))
+    imp.add_argument("--one-step-per-row", action=derived_help(_one_step_per_row_help,
+                                                               argparse._StoreTrueAction))
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "
                      "and the sensor's data sheet, or the table's stated accuracy): a value "
@@ -78,7 +82,11 @@ def register(subparsers) -> None:
         description="Write a run's steps, samples and metadata (run.json flattened to key, "
         "value) as one .xlsx workbook with three sheets, or as steps.csv, samples.csv and "
         "metadata.csv in a folder; text cells are spreadsheet-safe. mkm import reads the "
-        "workbook back.", epilog=EXPORT_EXAMPLE)
+        "workbook back. A run imported from a record without time carries the table it came "
+        "from: the file as given beside the CSV files (imported_table.csv, its own suffix), "
+        "or the workbook's sheet "
+        "imported_table as read (mkm import --sheet imported_table reads it again).",
+        epilog=EXPORT_EXAMPLE)
     exp.add_argument("run", help="the run folder")
     exp.add_argument("--format", default="xlsx", choices=tuple(EXPORT_FORMATS),
                      help="; ".join(f"{name}: {what}" for name, what in EXPORT_FORMATS.items())
@@ -95,6 +103,16 @@ def _force_sign_help() -> str:
     return (f"{' or '.join(map(str, FORCE_SIGNS))}: -1 negates the table's forces, for a load "
             "cell that reads the muscle's pull negative (a --tare given is as the table reads "
             "it; default: 1, as read)")
+
+
+def _one_step_per_row_help() -> str:
+    from mkm.bench.series import PLATEAU_TOLERANCE_BAR, RECORD_MIN_ROWS
+
+    return ("every row of the table a held pressure, one step each (at its time where there "
+            f"is a time column): without it, more than {RECORD_MIN_ROWS} rows whose successive "
+            f"pressures lie within {PLATEAU_TOLERANCE_BAR:g} bar are read as a record without "
+            "its time (a staircase's plateaus or a ramp's bins), and a time column with "
+            "several readings per hold as a time series")
 
 
 def _table_help() -> str:
@@ -120,7 +138,8 @@ def _import(args) -> int:
         tare=parse_zero(args.tare, "--tare", "N"), vented=parse_zero(args.vented, "--vented",
                                                                        "bar"),
         select=args.muscle, accuracy=parse_accuracy(args.accuracy),
-        force_sign=args.force_sign, notify=lines.append)
+        force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
+        notify=lines.append)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

@@ -143,7 +143,7 @@ def test_pressures_without_a_unit_far_above_any_muscle_are_questioned(tmp_path, 
     assert code == 0, err
     assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 250.0  # as the file says
     assert ("pressures up to 250 bar, read as bar since 'P' names no unit: above the 8 bar of "
-            "any braided muscle; if they are kPa or psi, import again with --units "
+            "any braided muscle; if they are kPa, import again with --units "
             "pressure=kPa") in err
     # a unit given, by the header or --units, is not questioned
     code, out, err = _run(["import", str(table), *MUSCLE, "--units", "pressure=kPa", "--out",
@@ -161,8 +161,24 @@ def test_pressures_far_above_any_muscle_in_the_headers_unit_are_questioned(tmp_p
     assert code == 0, err
     assert load_run(out.strip()).steps["pressure_bar_mean"].max() == 250.0  # as the file says
     assert ("pressures up to 250 bar, read in bar as 'Druck [bar]' says: above the 8 bar of "
-            "any braided muscle; if they are kPa or psi, import again with --units "
+            "any braided muscle; if they are kPa, import again with --units "
             "pressure=kPa") in err
+
+
+@pytest.mark.parametrize("header, top, expected", [
+    # 130 psi is 8.96 bar: was told "if they are kPa or psi", psi being what it said
+    ("P (psi)", 130.0, "if they are kPa, import again with --units pressure=kPa"),
+    ("P (kPa)", 900.0, "check the column's unit (--units pressure=UNIT)"),
+    ("P", 100.0, "if they are kPa or psi, import again with --units pressure=kPa (or psi)"),
+])
+def test_pressures_above_any_muscle_name_the_units_that_would_fit(header, top, expected,
+                                                                  tmp_path, capsys):
+    table = tmp_path / "lab.csv"
+    pd.DataFrame({header: [0.0, top / 2, top], "F": [0.0, 100.0, 250.0]}).to_csv(table,
+                                                                                index=False)
+    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    assert f"above the 8 bar of any braided muscle; {expected}" in err
 
 
 def test_a_time_column_by_an_unknown_name_is_pointed_out(tmp_path, capsys):

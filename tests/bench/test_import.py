@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import datetime
 import json
+import re
 
 import numpy as np
 import pandas as pd
@@ -84,6 +85,23 @@ def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_p
     np.testing.assert_allclose(run.steps["pressure_bar_mean"], PRESSURES[kept], rtol=1e-6)
     np.testing.assert_allclose(run.steps["force_N_mean"], force[kept], rtol=1e-5)
     assert run.meta.imported_from["rows_skipped_for_a_blank_cell"] == ["B5", "A7"]
+
+
+
+@pytest.mark.parametrize("missing", ["NaN", "#N/A"])
+def test_a_logged_sample_without_a_reading_is_skipped_and_named(missing, tmp_path, mkm_cli):
+    # LabVIEW writes NaN for a sample its read lost, Excel #N/A for a lookup that found none:
+    # was "cell C12 ...: 'NaN' is not a finite number", the whole record refused
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    force = [f"{f:.4f}" for f in thickwall_N(p, 0.0)]
+    force[10] = missing
+    path = tmp_path / "record.txt"
+    path.write_text("Time [s]\tPressure [bar]\tForce [N]\n" + "".join(
+        f"{a:.1f}\t{b:.5f}\t{c}\n" for a, b, c in zip(t, p, force, strict=True)))
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert f"1 row(s) with a blank cell skipped: C12 ({missing!r})" in err
+    assert len(run.samples) == t.size - 1 and 1.0 not in run.samples["time_s"].round(6).tolist()
 
 
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path, mkm_cli):
@@ -168,6 +186,23 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     assert 2.0 < summary["max_abs_err_pct"].iloc[0] < 8.0
 
 
+def test_a_gauge_that_reads_below_zero_vented_is_zeroed_as_one_above(tmp_path, mkm_cli):
+    # a sensor whose zero reads -0.06 bar at the record's vented start: was refused ("-0.06
+    # bar is below 0"), though a zero error above zero is found and subtracted
+    rng = np.random.default_rng(21)
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    path = tmp_path / "below.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p - 0.06 + rng.normal(0, 0.003, t.size),
+                  "F (N)": thickwall_N(p, 0.0) + rng.normal(0, 0.3, t.size)}).to_csv(
+        path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    # the median of 50 vented samples of 3 mbar noise: within 2 mbar
+    assert run.meta.imported_from["vented_reading_bar"] == pytest.approx(-0.06, abs=0.002)
+    assert re.search(r"vented reading -0\.0[56]\d* bar detected: subtracted", err)
+    assert run.samples["pressure_bar"].max() == pytest.approx(2.5, abs=0.015)
+
+
 @pytest.mark.parametrize("rest_s", [2.0, 0.5, 0.0])
 def test_the_tare_is_the_rest_before_the_ramp_not_its_first_pull(rest_s, tmp_path, mkm_cli):
     # at eps 0 the muscle pulls from 0 bar on: a band of low pressure holds the ramp's first
@@ -230,6 +265,67 @@ def test_a_step_table_with_a_time_per_row_is_a_step_table(tmp_path, mkm_cli):
                                atol=1e-9)
 
 
+def test_a_record_timed_in_milliseconds_under_a_header_without_unit_names_the_unit(tmp_path,
+                                                                                   mkm_cli):
+    # a 50 Hz logger's 'Time' in ms, no unit in the header: read as seconds, its 1500 samples
+    # were 1500 steps 20 s apart, said only as 'one reading every 20 s'
+    rng = np.random.default_rng(13)
+    t = np.arange(0.0, 30.0, 0.02)
+    p = np.interp(t, [0, 3, 4, 14, 15, 25, 26, 30], [0, 0, 1, 1, 2, 2, 0, 0])
+    path = tmp_path / "logger.csv"
+    pd.DataFrame({"Time": np.round(t * 1000), "Pressure": p + rng.normal(0, 0.003, t.size),
+                  "Force": thickwall_N(p, 0.0) + rng.normal(0, 0.3, t.size)}).to_csv(
+        path, index=False)
+    (rows,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert len(rows.steps) == t.size  # the reading stays a choice, said with the way out
+    assert ("1500 rows whose successive pressures lie within 0.03 bar, as a record's samples "
+            "do: if 'Time' is in milliseconds, import again with --units time=ms") in err
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--units", "time=ms")
+    assert run.meta.imported_from["shape"] == "staircase"
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0], atol=0.01)
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
+def test_a_time_column_of_excel_serial_dates_is_read_as_days(suffix, tmp_path, mkm_cli):
+    # Excel's date-times saved as numbers (46361.586805... for 5 Dec 2026 14:05) under 'Zeit':
+    # were read as seconds, the 60 s record 0.0007 s long, unsaid
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    start_days = (datetime.datetime(2026, 12, 5, 14, 5) - datetime.datetime(1899, 12, 30)) \
+        / datetime.timedelta(days=1)
+    frame = pd.DataFrame({"Zeit": start_days + t / 86400.0, "Druck [bar]": p,
+                          "Kraft [N]": thickwall_N(p, 0.0)})
+    path = tmp_path / f"serial{suffix}"
+    frame.to_csv(path, index=False, float_format="%.10f") if suffix == ".csv" else \
+        frame.to_excel(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "'Zeit' -> time [Excel serial days -> s]" in err
+    # 10 digits of a day: 1e-10 day is 9 us
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-4)
+    # --units says otherwise
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--units", "time=s",
+                            "--out", str(tmp_path / "as_s")])
+    assert "'Zeit' -> time [s]" in err
+
+
+
+def test_a_time_series_without_a_step_names_the_option_that_makes_each_row_one(tmp_path,
+                                                                                 mkm_cli):
+    # a logger's holds written 1 s apart, too few samples for a plateau or a ramp's bins: was
+    # "no step found in the time series (pressure 0-2 bar)", with no way on
+    path = tmp_path / "holds.csv"
+    path.write_text("Zeit [s];Druck [bar];Kraft [N]\n0;0;0\n1;1;100\n2;2;210\n",
+                    encoding="utf-8")
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.endswith("holds.csv: no step found in the time series (pressure 0-2 bar, 3 "
+                        "samples 1 s apart): expected plateaus held 2 s or more, or a ramp; if "
+                        "each row is a held pressure, import again with --one-step-per-row\n")
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--one-step-per-row")
+    assert run.steps["force_N_mean"].tolist() == [0.0, 100.0, 210.0]
+
+
 def _clock_text(seconds: float, start_s: float) -> str:
     hours, rest = divmod((start_s + seconds) % 86400.0, 3600.0)
     minutes, secs = divmod(rest, 60.0)
@@ -281,7 +377,8 @@ def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli
 
 
 @pytest.mark.parametrize("header", ["Messzeit [s]", "Zeit seit Start [s]", "Relative Time [s]",
-                                    "Runtime (s)", "Laufzeit [s]"])
+                                    "Runtime (s)", "Laufzeit [s]", "Temps (s)",
+                                    "Temps écoulé (s)", "Time  1 - default sample rate [s]"])
 def test_an_elapsed_time_column_by_its_lab_name_makes_a_time_series(header, tmp_path,
                                                                      mkm_cli):
     # was: not recognised, the 1-per-second record read as 23 steps of one row each
@@ -472,6 +569,42 @@ def test_a_record_without_its_time_is_binned_not_a_step_per_row(tmp_path, mkm_cl
     assert len(table.steps) == fine.size and table.meta.imported_from["shape"] == "steps"
 
 
+def test_a_fine_step_table_of_many_rows_keeps_one_step_per_row_when_told(tmp_path, mkm_cli):
+    # a real step table: 0 -> 3 -> 0 bar in 0.025 bar steps (241 rows, each a hold's mean), as
+    # a fine sweep of a 5 mm muscle is written; more than 80 rows 0.03 bar apart read as a
+    # record without its time and binned, with no way to keep one step per row
+    fine = np.r_[np.arange(0.0, 3.0, 0.025), np.arange(3.0, -0.0125, -0.025)]
+    force = thickwall_N(fine, 0.0)
+    path = tmp_path / "fine.csv"
+    pd.DataFrame({"P (bar)": fine, "F (N)": force}).to_csv(path, index=False)
+    (binned,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    # the automatic choice says what it did and the option that makes each row a step
+    assert binned.meta.imported_from["shape"] == "ramp" and len(binned.steps) < fine.size
+    assert "if each row is a held pressure, import again with --one-step-per-row" in err
+    (table,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--one-step-per-row")
+    assert table.meta.imported_from["shape"] == "steps" and "record" not in err
+    assert table.meta.imported_from["one_step_per_row"] is True
+    assert table.steps["direction"].tolist() == ["up"] * 121 + ["down"] * 120
+    # each row its own step, at the force written (6 significant digits in steps.csv)
+    np.testing.assert_allclose(table.steps["pressure_bar_mean"], fine, atol=1e-9)
+    np.testing.assert_allclose(table.steps["force_N_mean"], force, rtol=1e-5, atol=1e-6)
+    assert not (table.path / "imported_table.csv").exists()
+    # a time per row, 0.5 s apart (a time series otherwise): each row a step at its time
+    timed = tmp_path / "timed" / "fine.csv"
+    timed.parent.mkdir()
+    pd.DataFrame({"t (s)": 0.5 * np.arange(fine.size), "P (bar)": fine, "F (N)": force}).to_csv(
+        timed, index=False)
+    (table,), _ = _import(mkm_cli, timed, *MUSCLE, "--eps", "0", "--one-step-per-row")
+    assert table.meta.imported_from["shape"] == "steps" and len(table.steps) == fine.size
+    np.testing.assert_allclose(table.steps["start_s"], 0.5 * np.arange(fine.size))
+    # a vented reading given would be ignored: refused
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--one-step-per-row",
+                            "--vented", "0.1", "--out", str(tmp_path / "refused")])
+    assert code == 2 and err.count("\n") == 1 and "--vented 0.1 bar: --one-step-per-row" in err
+    code, out, _ = mkm_cli(["import", "--help"])
+    assert code == 0 and "--one-step-per-row" in out
+
+
 def test_a_staircase_recorded_without_its_time_gives_its_plateaus(tmp_path, mkm_cli):
     # 10 Hz, 0 -> 3 -> 0 bar in 0.5 bar holds of 10 s joined by 1 s ramps, saved without its
     # time: binned by pressure, each 1 s ramp between two holds made steps of 2-4 rows
@@ -578,6 +711,51 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
         assert again.steps[column].tolist() == run.steps[column].tolist()
 
 
+def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_path, mkm_cli):
+    # a 10 Hz ramp saved without its time by a German Excel (';', decimal commas): its run
+    # folder keeps the table (imported_table.csv), its steps are bins; mkm export left the
+    # table out, so the export could not show nor reproduce the import
+    rng = np.random.default_rng(8)
+    n = 600
+    p = np.interp(np.arange(n), [0, 40, 320, n - 1], [0, 0, 2.0, 0])
+    path = tmp_path / "ramp.csv"
+    pd.DataFrame({"Druck [bar]": np.abs(p + rng.normal(0, 0.003, n)),
+                  "Kraft [N]": thickwall_N(p, 0.0) + 2.0 + rng.normal(0, 0.3, n)}).to_csv(
+        path, index=False, sep=";", decimal=",")
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["shape"] == "ramp"
+    # the CSV export: the table as the user gave it, byte for byte
+    code, _, err = mkm_cli(["export", str(run.path), "--format", "csv", "--out",
+                            str(tmp_path / "csv")])
+    assert code == 0, err
+    assert (tmp_path / "csv" / "imported_table.csv").read_bytes() == path.read_bytes()
+    # the workbook: the table as mkm import read it, a sheet of its own, which imports again
+    # to the same steps (the same cells in, the same bins out)
+    book = tmp_path / "run.xlsx"
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    sheet = pd.read_excel(book, sheet_name="imported_table")
+    assert sheet.columns.tolist() == ["Druck [bar]", "Kraft [N]"] and len(sheet) == n
+    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
+    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
+        assert again.steps[column].tolist() == run.steps[column].tolist()
+    # the workbook still imports back to the run it was, and takes a new export of its name
+    (restored,), _ = _import(mkm_cli, book)
+    assert restored.steps["force_N_mean"].tolist() == run.steps["force_N_mean"].tolist()
+    # ... with the table it came from, which its own export carries on
+    again_book = tmp_path / "again.xlsx"
+    code, _, err = mkm_cli(["export", str(restored.path), "--out", str(again_book)])
+    assert code == 0, err
+    pd.testing.assert_frame_equal(pd.read_excel(again_book, sheet_name="imported_table"), sheet)
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    # a run folder that lost the table cannot be exported whole: said, nothing written
+    (run.path / "imported_table.csv").unlink()
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "lost.xlsx")])
+    assert code == 2 and err.count("\n") == 1 and "imported_table.csv, is missing" in err
+    assert not (tmp_path / "lost.xlsx").exists()
+
+
 def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, mkm_cli):
     """A colleague's exported bench run imports back with its own steps (set pressures, holds,
     uncertainty budgets), samples, calibration and tare, so the report scores E_n and identify
@@ -659,7 +837,12 @@ def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
     ("P,F\n1,2\n", ["--columns", "force=G"], "--columns force='G': lab.csv has no such column"),
     ("P,F\n1,2\n", ["--units", "force=bar"], "'bar' is not a unit of force"),
     ("P,F [kg]\n1,2\n", [], "column 'F [kg]': 'kg' is not a unit of force (expected one like "
-     "N); if the load cell shows the weight it holds, give --units force=kgf (lb: lbf)"),
+     "N); if the load cell shows the weight it holds, give --units force=kgf"),
+    # a display in grams or pounds is told its own force unit (was told kgf, 1000 times off)
+    ("P,F [g]\n1,2\n", [], "'g' is not a unit of force (expected one like N); if the load "
+     "cell shows the weight it holds, give --units force=gf"),
+    ("P,Load (lbs)\n1,2\n", [], "if the load cell shows the weight it holds, give --units "
+     "force=lbf"),
     ("P,F\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
     ("P,F,muscle\n1,2,A\n1,2,B\n", [], "column 'muscle' holds 2 muscles ('A', 'B'): choose one "
      "with --muscle NAME"),
@@ -977,3 +1160,14 @@ def test_a_spreadsheets_summary_rows_under_the_steps_are_no_steps(tmp_path, mkm_
     assert "2 summary row(s) skipped: A8 ('Mittelwert'), A9 ('Max:')" in err
     assert run.meta.imported_from["summary_rows_skipped"] == ["A8 ('Mittelwert')",
                                                               "A9 ('Max:')"]
+
+
+@pytest.mark.parametrize("label", ["Std.Abw.", "Std. Dev.", "Ø", "Moy.", "Anzahl"])
+def test_a_summary_row_by_an_abbreviated_statistic_is_no_step(label, tmp_path, mkm_cli):
+    # was: "cell A7 (column 'Druck [bar]'): 'Std.Abw.' is not a number", the import refused
+    path = tmp_path / "lab.csv"
+    path.write_text("Druck [bar];Kraft [N]\n0;5\n1,25;185\n2,5;410\n1,25;190\n0;6\n"
+                    f"{label};1,0;159,2\n", encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0, 1.25, 2.5, 1.25, 0.0]
+    assert f"1 summary row(s) skipped: A7 ({label!r})" in err

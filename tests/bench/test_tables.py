@@ -240,6 +240,15 @@ def test_a_german_direction_column(tmp_path):
     assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
 
 
+
+def test_a_french_direction_column(tmp_path):
+    # was: 'Sens' not recognised, its montée/descente left out unsaid
+    table, found = _one(tmp_path, "Pression (bar);Effort (N);Sens\n0;0;montée\n2;200;Montée\n"
+                        "2;210;descente\n0;0;Décharge\n")
+    assert found["direction"].header == "Sens"
+    assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
+
+
 def test_quoted_decimal_commas_in_a_comma_separated_file(tmp_path):
     # a lab's export with ',' between fields keeps its decimal commas quoted
     table, found = _one(tmp_path, 'Pressure [bar],Force [N]\n"0,0","0"\n"0,5","12,25"\n'
@@ -394,6 +403,107 @@ def test_a_labview_x_column_of_another_dimension_and_a_named_unit_are_as_written
     assert table.header[:2] == ["X_Value", "Druck [bar]"] and "time" not in found
 
 
+TDMS_CSV = ("Root Name,bench 3\nRoot Author,jdoe\nGroup Name,Untitled\n"
+            "Channel Name,Time,Pressure,Load\nunit_string,s,MPa,kN\nwf_increment,0.1,0.1,0.1\n"
+            "Time,Pressure,Load\n0.0,0.0,0.012\n0.1,0.25,0.45\n0.2,0.6,1.2\n")
+
+
+@pytest.mark.parametrize("label", ["unit_string", "Unit String", "Units", "Einheit"])
+def test_a_header_blocks_row_of_units_gives_the_columns_their_units(label, tmp_path):
+    # a TDMS file exported to CSV with its channel properties above the names: the units row
+    # was skipped as a title, so 0.6 MPa was read as 0.6 bar and 1.2 kN as 1.2 N, unsaid
+    table, found = _one(tmp_path, TDMS_CSV.replace("unit_string", label), "export.csv")
+    assert table.header == ["Time [s]", "Pressure [MPa]", "Load [kN]"]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 6.0])
+    np.testing.assert_allclose(column_values(table, found["force"]), [12.0, 450.0, 1200.0])
+
+
+def test_a_header_blocks_units_that_fit_no_column_are_refused(tmp_path):
+    # two units for three columns: which is whose cannot be told
+    path = tmp_path / "export.csv"
+    path.write_text(TDMS_CSV.replace("unit_string,s,MPa,kN", "Unit,MPa,kN"))
+    with pytest.raises(ValueError) as info:
+        read_tables(path)
+    assert str(info.value) == (
+        "export.csv, row 5 ('Unit', 'MPa', 'kN') gives 2 units for the 3 columns 'Time', "
+        "'Pressure', 'Load': expected one per column, in their order; or put each unit in its "
+        "column's name ('Pressure [bar]')")
+
+
+def test_a_tdms_channel_path_names_its_column(tmp_path):
+    # npTDMS's as_dataframe().to_csv(): each column the channel's path in the file, after the
+    # frame's index; was "no pressure or force column among "/'Untitled'/'Time'", ..."
+    table, found = _one(tmp_path, ",/'Untitled'/'Time',/'Untitled'/'Pressure [kPa]',"
+                        "/'Untitled'/'Force'\n0,0.0,0.0,1.5\n1,0.1,150.0,12.25\n", "tdms.csv")
+    assert {role: column.header for role, column in found.items()} == {
+        "time": "/'Untitled'/'Time'", "pressure": "/'Untitled'/'Pressure [kPa]'",
+        "force": "/'Untitled'/'Force'"}
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+
+
+def _lvm_segment(x0: float, rows: str, units: str = "kPa\tkN") -> str:
+    """One segment of LabVIEW's measurement file: its channel header, heading and rows."""
+    return (f"Channels\t2\t\nSamples\t2\t2\t\nDate\t2026/12/05\t2026/12/05\t\n"
+            f"Y_Unit_Label\t{units}\t\nX_Dimension\tTime\tTime\t\nX0\t{x0:.16E}\t{x0:.16E}\t\n"
+            "Delta_X\t0.100000\t0.100000\t\n***End_of_Header***\t\nX_Value\tDruck\tKraft\t"
+            f"Comment\n{rows}")
+
+
+LVM_FILE_HEADER = ("LabVIEW Measurement\t\nWriter_Version\t2\nSeparator\tTab\n"
+                   "Decimal_Separator\t.\n***End_of_Header***\t\n\t\n")
+
+
+def test_a_labview_file_of_several_segments_is_one_table(tmp_path):
+    # Write To Measurement File's one header per segment: the second segment's channel header
+    # was read as rows ("cell B14 ...: '2026/12/05' is not a number"), the import refused
+    text = (LVM_FILE_HEADER + _lvm_segment(0.0, "0.0\t0.0\t0.035\n0.1\t250.0\t2.73\n") + "\n"
+            + _lvm_segment(0.2, "0.2\t800.0\t8.66\n0.3\t500.0\t5.5\n"))
+    table, found = _one(tmp_path, text, "segments.lvm")
+    assert table.header[:3] == ["Time [s]", "Druck [kPa]", "Kraft [kN]"]
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1, 0.2, 0.3])
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0, 5.0])
+    assert table.row_numbers == [16, 17, 28, 29]  # each row's line in the file, as written
+    # a segment whose channels changed units cannot be one column
+    path = tmp_path / "changed.lvm"
+    path.write_text(text.replace("Y_Unit_Label\tkPa\tkN\t\nX_Dimension\tTime\tTime\t\n"
+                                 "X0\t2.0", "Y_Unit_Label\tbar\tkN\t\nX_Dimension\tTime\tTime"
+                                 "\t\nX0\t2.0"), encoding="utf-8")
+    with pytest.raises(ValueError) as info:
+        read_tables(path)
+    assert str(info.value) == ("changed.lvm, row 22: a segment's channel units ('bar', 'kN') "
+                               "differ from the first segment's ('kPa', 'kN'): expected one "
+                               "unit per channel; save the segments as files of their own")
+
+
+@pytest.mark.parametrize("header, scale", [("millis", 1e-3), ("micros", 1e-6)])
+def test_an_arduino_clock_column_is_the_time_in_its_unit(header, scale, tmp_path):
+    # an Arduino logger's millis() (or micros()) beside its readings: was left out unsaid, the
+    # record's rows taken as evenly spaced
+    table, found = _one(tmp_path, f"{header},pressure_bar,force_N\n123456,0,0\n123556,1,100\n"
+                        "123756,2,210\n")
+    assert found["time"].header == header
+    np.testing.assert_allclose(column_values(table, found["time"]),
+                               np.array([123456, 123556, 123756]) * scale)
+
+
+def test_channels_named_by_number_are_recognised_by_their_units(tmp_path):
+    # a DAQ's channels as it names them ('AI 1 [bar]', 'AI 2 [N]'): was "no pressure or force
+    # column among ..."; one column per unit's quantity is unambiguous
+    table, found = _one(tmp_path, "Time [s];AI 1 [bar];AI 2 [kN]\n0;0;0\n0,1;1,5;0,25\n")
+    assert (found["pressure"].header, found["force"].header) == ("AI 1 [bar]", "AI 2 [kN]")
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 250.0])
+    # two pressure channels: which is the muscle's is not known, so none is taken
+    path = tmp_path / "two.csv"
+    path.write_text("AI 1 [bar];AI 2 [bar];AI 3 [N]\n0;0;0\n1;6;100\n")
+    (table,) = read_tables(path)
+    assert "pressure" not in recognise(table) and recognise(table)["force"].header == "AI 3 [N]"
+    # nor a set point, which is no reading
+    path.write_text("p_set [bar];AI 3 [N]\n0;0\n1;100\n")
+    (table,) = read_tables(path)
+    assert "pressure" not in recognise(table)
+
+
 def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     path = tmp_path / "lab.csv"
     path.write_bytes("Länge [mm];Druck [bar];Kraft [N]\r\n250;1,5;150,5\r\n".encode("cp1252"))
@@ -531,6 +641,19 @@ def test_a_time_cell_that_is_no_time_is_named_as_such(tmp_path):
         column_values(table, found["time"])
     assert str(info.value).startswith("lab.csv, cell A2 (column 'Time'): '13:61 PM' is not a "
                                       "time: expected seconds")
+
+
+def test_an_evaluation_block_under_its_own_title_is_no_data(tmp_path):
+    # a lab sheet's results under the measurements, a title row above them: 'Peak;2;549,4'
+    # holds two numbers, so the block was read as steps ("'Peak' is not a number")
+    table, found = _one(tmp_path, "Druck [bar];Kraft [N]\n0;0\n1;214,5\n2;549,4\n\nAuswertung\n"
+                        "Peak;2;549,4\nHysterese [N];5,5\n")
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 214.5, 549.4])
+    assert table.footer_skipped == ["A6 ('Auswertung')", "A7 ('Peak')", "A8 ('Hysterese [N]')"]
+    # a table's rows labelled by text under a blank row, with no title, stay its rows
+    table, found = _one(tmp_path, "Richtung;Druck [bar];Kraft [N]\nauf;0;0\nauf;2;549,4\n\n"
+                        "ab;1;220\nab;0;0,5\n", "branches.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 549.4, 220.0, 0.5])
 
 
 def test_a_loggers_closing_notes_under_a_blank_row_are_no_data(tmp_path):
