@@ -162,6 +162,55 @@ def test_a_stop_with_a_following_monitor_verifies_the_vent(config, tmp_path):
     assert check["verified"] and check["unfollowed_bar"] is None
 
 
+@pytest.mark.parametrize("stop", [None, "Ctrl-C"])
+def test_a_monitor_frozen_within_the_tolerance_of_its_step_verifies_no_vent(config, tmp_path,
+                                                                            stop):
+    # The monitor reads 0 bar whatever the pressure; the one step, 0.12 bar, is within the
+    # follow interlock's 0.15 bar of it, so nothing tripped: the run ended complete (exit 0),
+    # or stopped by Ctrl-C 2.5 s into the step (exit 130), its vent "verified" by the frozen
+    # 0 bar while the muscle held 0.12 bar. A working monitor moves with its command: this one
+    # never moves, is a monitor fault after pressure_follow_s, and verifies no vent.
+    c = config.replace(sequence={"pressures_bar": (0.12,), "down_sweep": False},
+                       sim={"truth": {"monitor_stuck_bar": 0.0}})
+    backend = SimBackend(c)
+    read = backend.read
+
+    def stopped_at_45(n, timeout):
+        block = read(n, timeout)
+        if stop and block.first_index == 45:
+            run.request_stop()
+        return block
+
+    backend.read = stopped_at_45
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert ("pressure interlock: the monitor does not move with the command" in result.reason) \
+        == (stop is None)
+    assert "0.12 bar commanded before the vent, so its reading after it proves nothing" \
+        in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.12 bar)")
+    check = load_run(result.path).meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] == 0.12
+    # the truth: at 0.12 bar (2.5 s or more at tau 0.4 s), one 0.1 s sample of exhaust after
+    # the vent leaves 0.12 exp(-0.25) = 0.093 bar, above the 0.05 bar a verified vent claims
+    assert backend.bench.pressure_bar == pytest.approx(0.12 * math.exp(-0.25), abs=1e-3)
+    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked
+    assert json.loads(marker.read_text())["unfollowed_bar"] == 0.12
+
+
+@pytest.mark.parametrize("truth", [{}, {"monitor_gain": 0.9, "monitor_offset_bar": -0.04,
+                                        "monitor_hysteresis_bar": 0.1}])
+def test_a_monitor_that_moves_with_small_steps_is_no_monitor_fault(config, tmp_path, truth):
+    # steps 0.06 bar apart, just above the 0.05 bar vent threshold the move is judged from,
+    # read by a good sensor and by one 10 % low, 0.04 bar low, with 0.1 bar of hysteresis
+    c = config.replace(sequence={"pressures_bar": (0.06, 0.12, 0.18)},
+                       sim={"truth": truth})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert load_run(result.path).meta.vent_check["verified"]
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
