@@ -59,7 +59,7 @@ from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
-from mkm.bench.vent import VentCheck, below_command, verify_vent
+from mkm.bench.vent import VentCheck, VentedZero, below_command, verify_vent
 from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
 
@@ -513,8 +513,11 @@ class BenchRun:
                 problems.append(problem)
 
         try:
+            zero = VentedZero.from_tare(self.recorder.meta.tare, self.config) \
+                if self.recorder is not None else None
             return verify_vent(self.backend, self.config, self.operator, started=self._started,
-                               deadline=self.signals.grace_deadline, record=record)
+                               deadline=self.signals.grace_deadline, record=record,
+                               vented_zero=zero)
         except BaseException as exc:
             return VentCheck(False, float("nan"), below, 0.0, "monitor",
                              f"{type(exc).__name__}: {exc}")
@@ -628,7 +631,7 @@ class BenchRun:
             held = self.vent_check.pressure_bar
             if self.vent_check.unfollowed_bar is not None:  # the reading proves nothing
                 held = self.vent_check.unfollowed_bar
-            elif not held == held:  # nothing plausible read by the check
+            elif not held >= 0:  # nothing plausible read by the check, or no pressure
                 held = acq.held_bar() if acq is not None else 0.0
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
                             f"still hold {held:.3g} bar)")

@@ -80,8 +80,40 @@ def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -
                  "the supply"))
 
 
+#: sample time [s] over which the monitor's reading must stay within its noise to count as
+#: settled: a muscle exhausting through an ITV-class regulator (tau about 0.4 s) still falls by
+#: more than its noise over it until it is within that noise of its vented reading
+SETTLED_S = 0.5
+#: readings of a vented monitor stay within this many of its standard deviations at the tare
+#: (plus two ADC steps, for a reading quieter than its quantisation) of its vented zero
+ZERO_NOISE_SIGMAS = 5.0
+
+
+@dataclass(frozen=True)
+class VentedZero:
+    """What the tare read on the monitor vented: its zero ``zero_bar`` and how far a vented
+    reading strays from it, ``noise_bar`` (:meth:`from_tare`)."""
+
+    zero_bar: float
+    noise_bar: float
+
+    @classmethod
+    def from_tare(cls, tare: dict | None, config) -> VentedZero | None:
+        """The zero of a tare of this run (run.json ``tare``), or None when the tare read none."""
+        from mkm.bench import backends
+
+        if not tare or not tare.get("monitor_vented_settled"):
+            return None
+        reg = config.regulator
+        lsb_bar = (backends.entry(config.daq.backend).capabilities.ai_lsb_V * reg.full_scale_bar
+                   / (reg.monitor_V_at_full_scale - reg.monitor_V_at_zero))
+        noise = ZERO_NOISE_SIGMAS * float(tare.get("monitor_vented_std_bar", 0.0)) + 2 * lsb_bar
+        return cls(float(tare["monitor_vented_bar"]), noise)
+
+
 def verify_vent(backend, config, operator=None, started: bool = True,
-                deadline=lambda: None, record=lambda block: None) -> VentCheck:
+                deadline=lambda: None, record=lambda block: None,
+                vented_zero: VentedZero | None = None) -> VentCheck:
     """Confirm that the muscle is vented (the vent command already written).
 
     Parameters
@@ -98,6 +130,12 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     record : callable, optional
         Gets every :class:`mkm.bench.backend.Block` the check reads (the run records them:
         the pressure's decay after the vent is on disk); must not raise.
+    vented_zero : VentedZero, optional
+        The monitor's zero read by the run's tare. The reading is then taken from that zero
+        when it is below 0 bar, and judged only once it has settled (within the zero's noise
+        over :data:`SETTLED_S`): a monitor whose zero drifted low reads below the threshold
+        while the muscle still holds pressure, and shows it only once its reading stops
+        falling, below the tare's zero. Such a reading verifies nothing.
     """
     safety = config.safety
     below, timeout_s = safety.vent_below_bar, safety.vent_timeout_s
@@ -115,6 +153,9 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                          "started, so the monitor could not be read")
     rate = config.daq.sample_rate_hz
     n = max(1, int(round(0.1 * rate)))
+    if vented_zero is not None:  # read from the tare's zero, where it lies below 0 bar
+        below = below + min(vented_zero.zero_bar, 0.0)
+    recent: list[tuple[float, float]] = []  # (sample time [s], reading [bar]) over SETTLED_S
     start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
     timeouts, blind_s = 0, 0.0  # read timeouts in a row; the time they waited, in all
     try:  # samples acquired before the vent write say nothing about the vent
@@ -160,10 +201,30 @@ def verify_vent(backend, config, operator=None, started: bool = True,
             # conversion (0 V: -1 bar) is no pressure: the last plausible reading is kept
             return VentCheck(False, pressure, below, waited, "monitor", fault)
         pressure = float(config.regulator.monitor_bar(monitor_V))
-        if pressure < below:
+        if vented_zero is None and pressure < below:
             return VentCheck(True, pressure, below, waited, "monitor")
         if not math.isfinite(pressure):  # a broken input: it verifies nothing
             return VentCheck(False, pressure, below, waited, "monitor",
                              f"the monitor reads {monitor_V!r} V, not a number")
+        if vented_zero is not None:
+            recent = [(t, p) for t, p in recent if t > sample_time_s - SETTLED_S - 1e-9]
+            recent.append((sample_time_s, pressure))
+            readings = [p for _, p in recent]
+            settled = (sample_time_s - recent[0][0] >= SETTLED_S - 1e-9
+                       and max(readings) - min(readings) <= vented_zero.noise_bar)
+            if settled and pressure < below:
+                low = vented_zero.zero_bar - vented_zero.noise_bar
+                if sum(readings) / len(readings) < low:
+                    return VentCheck(False, pressure, below, waited, "monitor", (
+                        f"the monitor settled at {reading_bar(pressure)} bar, below the "
+                        f"{reading_bar(vented_zero.zero_bar)} bar it read vented at the tare by "
+                        f"more than its noise ({vented_zero.noise_bar:.3f} bar): its zero has "
+                        "drifted low, so its reading no longer tells what the muscle holds; "
+                        "check the monitor"))
+                return VentCheck(True, pressure, below, waited, "monitor")
         if waited > timeout_s:
+            if pressure < below:  # below the threshold, never settled: a drift is not excluded
+                return VentCheck(False, pressure, below, waited, "monitor", (
+                    f"the monitor read {reading_bar(pressure)} bar but did not settle within "
+                    f"{timeout_s:g} s, so a drift of its zero cannot be excluded"))
             return VentCheck(False, pressure, below, waited, "monitor")

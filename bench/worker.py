@@ -110,6 +110,7 @@ class Acquisition:
         self.electronic = config.regulator.electronic
         self.tare_offset_V = config.loadcell.offset_V
         self.command_bar = 0.0
+        self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
         # the commands written, by the device's sample clock when each was issued (index, bar),
         # and the command before the oldest kept: the command each sample was acquired under
         self._issued: list[tuple[int, float]] = []
@@ -469,11 +470,14 @@ class Acquisition:
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its
-        command while the vent was not written, else the last plausible pressure measured (a
-        lost monitor's 0 V converts to -1 bar, which is no pressure at all)."""
-        if self.vented and math.isfinite(self.measured_bar):
+        command while the vent was not written, else the last plausible pressure measured, or,
+        read below 0 bar (a zero drifted low), the last pressure commanded (a lost monitor's
+        0 V converts to -1 bar, which is no pressure at all)."""
+        if not self.vented:
+            return self.command_bar
+        if self.measured_bar >= 0:
             return self.measured_bar
-        return self.command_bar
+        return self.pressure_commanded_bar
 
     # commands --------------------------------------------------------------------------------
 
@@ -503,6 +507,8 @@ class Acquisition:
             self.backend.write_command(volts)
             ok = self.written = True
             self.command_bar = clamped
+            if clamped > 0:
+                self.pressure_commanded_bar = clamped
             self.vented = clamped == 0.0
             meta = self.recorder.meta
             stopped_at = self.stop_time()
