@@ -220,6 +220,46 @@ def test_a_monitor_that_moves_with_small_steps_is_no_monitor_fault(config, tmp_p
     assert load_run(result.path).meta.vent_check["verified"]
 
 
+@pytest.mark.parametrize("preconditioned", [True, False])
+def test_a_stop_as_a_step_from_0_bar_begins_is_judged_by_whether_the_monitor_moved(
+        config, tmp_path, preconditioned):
+    # A slow regulator (tau 1.5 s): Ctrl-C at the first sample of a 0.5 bar step from a vented
+    # muscle, which the monitor reads 0.5 (1 - exp(-0.1/1.5)) = 0.032 bar, below 0.05 bar and
+    # 0.47 bar below the command. After a pre-conditioning cycle the monitor has moved with a
+    # command (to 1 bar and back), and now rose above its reading at 0 bar by more than its
+    # noise: it is moving with the step, and its fall after the vent verifies it (it used to
+    # say VENT BY HAND, exit 4). As the run's first pressure no command has shown it works: a
+    # reading that rose a little then fell is all a monitor whose output lost its gain gives
+    # too, so a vent by hand is still asked for.
+    cycles = {"preconditioning_cycles": 1, "preconditioning_hold_s": 10.0} if preconditioned \
+        else {}
+    c = config.replace(sequence=cycles, sim={"regulator_tau_s": 1.5})
+    first = 20 + (200 if preconditioned else 0)  # after the tare's 2 s and the cycle's 20 s
+    backend = SimBackend(c)
+    read = backend.read
+
+    def stopped_at_first(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == first:
+            run.request_stop()
+        return block
+
+    backend.read = stopped_at_first
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    samples = load_run(result.path).samples
+    (at_stop,) = samples.pressure_bar[samples["sample"] == first]
+    assert at_stop == pytest.approx(0.5 * (1 - math.exp(-0.1 / 1.5)), abs=0.005)
+    check = load_run(result.path).meta.vent_check
+    if preconditioned:
+        assert result.status == "aborted" and result.exit_code == 130, result.reason
+        assert check["verified"] and check["unfollowed_bar"] is None
+    else:
+        assert result.status == "failed" and result.exit_code == 4
+        assert not check["verified"] and check["unfollowed_bar"] == 0.5
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
