@@ -59,7 +59,7 @@ from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
-from mkm.bench.vent import VentCheck, VentedZero, below_command, verify_vent
+from mkm.bench.vent import VentCheck, VentedZero, below_command, verify_vent, without_fall
 from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
 
@@ -522,6 +522,27 @@ class BenchRun:
             return VentCheck(False, float("nan"), below, 0.0, "monitor",
                              f"{type(exc).__name__}: {exc}")
 
+    def _weighed(self, acq: Acquisition, check: VentCheck) -> VentCheck:
+        """The vent check weighed by what the monitor read before the vent: one that read
+        nothing of a pressure commanded proves nothing by reading nothing after it
+        (:func:`mkm.bench.vent.below_command`), unless, shown working earlier in the run, it
+        fell after the vent (a stop as a step from 0 bar begins: the regulator not yet there);
+        with a pressure above the vent threshold commanded, a monitor that shows no fall after
+        the vent proves nothing either (:func:`mkm.bench.vent.without_fall`)."""
+        zero = VentedZero.from_tare(self.recorder.meta.tare, self.config) \
+            if self.recorder is not None else None
+        before = acq.before_vent()
+        fell = check
+        if zero is not None and before is not None and \
+                before[1] > self.config.safety.vent_below_bar:
+            fell = without_fall(check, *before, zero.noise_bar)
+        unproven = acq.unproven()
+        if unproven is not None and not (acq.shown_moving and fell.verified
+                                         and check.first_above_bar is not None):
+            judged = below_command(check, *unproven)
+            return fell if judged.verified else judged
+        return fell
+
     def _write_vent(self, acq: Acquisition | None) -> BaseException | None:
         """Command the vent; what stopped it, or None."""
         try:
@@ -591,10 +612,8 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
-        unproven = acq.unproven() if acq is not None else None
-        if self.vent_check is not None and unproven is not None:
-            # a monitor that read nothing before the vent proves nothing by reading it after
-            self.vent_check = below_command(self.vent_check, *unproven)
+        if self.vent_check is not None and acq is not None:
+            self.vent_check = self._weighed(acq, self.vent_check)
         if acq is not None and acq.interlock_vent_failed:  # said before: what came of it
             if self.vent_check is None:
                 problems.append("nothing verified a vent since: VENT BY HAND")

@@ -13,13 +13,15 @@ A check with a ``deadline`` (Windows ends a closed console's process within 5 s)
 unverified, so the run can still be recorded. A monitor that already read below the threshold
 when it was found below its command before the vent (:func:`below_command`; by the pressure
 interlock, or in its last reading before a stop) verifies nothing: a monitor stuck at zero reads
-so whatever the muscle holds.
+so whatever the muscle holds; nor, with a pressure commanded as the run stopped, does one that
+shows no fall after the vent (:func:`without_fall`).
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
+import statistics
 import time
 from dataclasses import asdict, dataclass
 
@@ -45,6 +47,9 @@ class VentCheck:
     # the command [bar] the monitor did not follow before the vent, reading below the
     # threshold already: its readings prove nothing, the muscle may still hold it
     unfollowed_bar: float | None = None
+    # how far [bar] the monitor's first readings after the vent lay above the reading it
+    # settled at (the median of the first FIRST_READINGS); None when not judged so
+    first_above_bar: float | None = None
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -84,6 +89,9 @@ def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -
 #: settled: a muscle exhausting through an ITV-class regulator (tau about 0.4 s) still falls by
 #: more than its noise over it until it is within that noise of its vented reading
 SETTLED_S = 0.5
+#: the first readings after the vent whose median is the monitor's start of the fall (one
+#: noise spike among them moves no median)
+FIRST_READINGS = 3
 #: readings of a vented monitor stay within this many of its standard deviations at the tare
 #: (plus two ADC steps, for a reading quieter than its quantisation) of its vented zero
 ZERO_NOISE_SIGMAS = 5.0
@@ -109,6 +117,34 @@ class VentedZero:
                    / (reg.monitor_V_at_full_scale - reg.monitor_V_at_zero))
         noise = ZERO_NOISE_SIGMAS * float(tare.get("monitor_vented_std_bar", 0.0)) + 2 * lsb_bar
         return cls(float(tare["monitor_vented_bar"]), noise)
+
+
+def without_fall(check: VentCheck, before_bar: float, commanded_bar: float,
+                 noise_bar: float) -> VentCheck:
+    """``check`` after a run ended with ``commanded_bar`` (above the vent threshold) commanded
+    and the monitor reading ``before_bar`` (the median of its last readings, one noise spike
+    moves no median), weighed by the fall it showed after the vent.
+
+    A monitor that reads the pressure falls after the vent: its last readings before it, or
+    its first after it (a regulator that exhausts in less than a sample), lie above the reading
+    it settles at by more than its noise ``noise_bar``. One frozen near zero shows no fall
+    (a noise spike as the run stopped made its last reading look like a pressure), so its
+    settled reading verifies nothing.
+    """
+    if not check.verified or check.how != "monitor" or check.first_above_bar is None:
+        return check
+    # the check's last reading is within the noise of the one it settled at
+    fall = max(before_bar - check.pressure_bar, check.first_above_bar)
+    if fall > noise_bar:
+        return check
+    return dataclasses.replace(
+        check, verified=False, unfollowed_bar=commanded_bar,
+        problem=(f"the monitor read {reading_bar(before_bar)} bar with {commanded_bar:g} bar "
+                 f"commanded before the vent and did not fall after it by more than its noise "
+                 f"({noise_bar:.3f} bar), so its reading proves nothing: stuck near zero, a "
+                 "monitor reads so whatever the muscle holds; a regulator without supply "
+                 "pressure or a hose that leaks reads the same; check the monitor and the "
+                 "supply"))
 
 
 def verify_vent(backend, config, operator=None, started: bool = True,
@@ -156,6 +192,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     if vented_zero is not None:  # read from the tare's zero, where it lies below 0 bar
         below = below + min(vented_zero.zero_bar, 0.0)
     recent: list[tuple[float, float]] = []  # (sample time [s], reading [bar]) over SETTLED_S
+    first: list[float] = []  # the first FIRST_READINGS readings after the vent
     start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
     timeouts, blind_s = 0, 0.0  # read timeouts in a row; the time they waited, in all
     try:  # samples acquired before the vent write say nothing about the vent
@@ -209,6 +246,8 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         if vented_zero is not None:
             recent = [(t, p) for t, p in recent if t > sample_time_s - SETTLED_S - 1e-9]
             recent.append((sample_time_s, pressure))
+            if len(first) < FIRST_READINGS:
+                first.append(pressure)
             readings = [p for _, p in recent]
             settled = (sample_time_s - recent[0][0] >= SETTLED_S - 1e-9
                        and max(readings) - min(readings) <= vented_zero.noise_bar)
@@ -221,7 +260,8 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                         f"more than its noise ({vented_zero.noise_bar:.3f} bar): its zero has "
                         "drifted low, so its reading no longer tells what the muscle holds; "
                         "check the monitor"))
-                return VentCheck(True, pressure, below, waited, "monitor")
+                return VentCheck(True, pressure, below, waited, "monitor", first_above_bar=(
+                    statistics.median(first) - sum(readings) / len(readings)))
         if waited > timeout_s:
             if pressure < below:  # below the threshold, never settled: a drift is not excluded
                 return VentCheck(False, pressure, below, waited, "monitor", (

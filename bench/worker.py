@@ -39,7 +39,9 @@ If the interlock's own vent write fails, the reason says so and asks for a vent 
 from __future__ import annotations
 
 import math
+import statistics
 import time
+from collections import deque
 from contextlib import nullcontext
 
 from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
@@ -48,7 +50,7 @@ from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.recorder import Recorder
 from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
-from mkm.bench.vent import VentedZero
+from mkm.bench.vent import SETTLED_S
 
 RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
 # The muscle's limit is max_pressure_bar. A regulator at its command reads within its accuracy
@@ -144,7 +146,12 @@ class Acquisition:
         # the command has been too far from that one for a frozen monitor to pass (see _unmoved)
         self._moved: tuple[float, float] | None = None
         self._unmoved_since_s: float | None = None
-        self._shown_moving = False  # the monitor moved with a command this run (see _unmoved)
+        # the monitor moved with a command this run (more than half a change larger than the
+        # vent threshold, see _unmoved): a rise of a few noise widths is then no lost gain
+        self.shown_moving = False
+        # the last plausible readings of the run's blocks [bar], and the last one's command
+        self._recent_bar: deque = deque(maxlen=int(round(SETTLED_S * self.rate_hz)) + 1)
+        self._recent_command_bar = 0.0
 
     # one block -------------------------------------------------------------------------------
 
@@ -293,8 +300,11 @@ class Acquisition:
         commanded = self._commanded_at(index) if self.electronic else math.nan
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
             self.measured_bar = pressure
-            if commanded > 0 and phase != "vent":  # the vent check's come after the vent
-                self._pressurised = (pressure, commanded)
+            if phase != "vent":  # the vent check's come after the vent
+                self._recent_bar.append(pressure)
+                self._recent_command_bar = commanded
+                if commanded > 0:
+                    self._pressurised = (pressure, commanded)
         flags, self._pending_flags = self._pending_flags, []
         if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
             flags.append("nonfinite")
@@ -402,7 +412,7 @@ class Acquisition:
             return None
         if (pressure - moved_bar) * math.copysign(1.0, change) > abs(change) / 2:
             self._moved, self._unmoved_since_s = (commanded, pressure), None
-            self._shown_moving = True
+            self.shown_moving = True
             return None
         if self._unmoved_since_s is None:
             self._unmoved_since_s = t_s
@@ -468,24 +478,16 @@ class Acquisition:
         measured, commanded = self._pressurised
         if commanded - measured > self.config.safety.pressure_tolerance_bar or (
                 self._unmoved_since_s is not None and measured < commanded):
-            return None if self._rising(measured, commanded) else (measured, commanded)
+            return measured, commanded
         return None
 
-    def _rising(self, measured: float, commanded: float) -> bool:
-        """Whether a monitor found below ``commanded`` at a stop was on its way up: it has
-        moved with a command of this run before (more than half a change larger than the vent
-        threshold, see :meth:`_unmoved`), and its reading ``measured`` was above the one it had
-        under the command before by more than its noise at the tare
-        (:class:`mkm.bench.vent.VentedZero`). A stop as a step from 0 bar begins finds the
-        regulator not yet there; a frozen monitor does not rise. Before any command has shown
-        the monitor working, a small rise proves nothing: a monitor whose output lost most of
-        its gain rises a little too."""
-        if not self._shown_moving or self._moved is None:
-            return False
-        zero = VentedZero.from_tare(self.recorder.meta.tare, self.config)
-        before_command, before_bar = self._moved
-        return (zero is not None and before_command < commanded
-                and measured - before_bar > zero.noise_bar)
+    def before_vent(self) -> tuple[float, float] | None:
+        """(reading, command) [bar] as the run stopped: the median of the monitor's last
+        plausible readings (over :data:`mkm.bench.vent.SETTLED_S`; one noise spike moves no
+        median) and the command the last was acquired under; None before any."""
+        if not self._recent_bar:
+            return None
+        return statistics.median(self._recent_bar), self._recent_command_bar
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its

@@ -260,6 +260,42 @@ def test_a_stop_as_a_step_from_0_bar_begins_is_judged_by_whether_the_monitor_mov
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
 
 
+@pytest.mark.parametrize("spike_V", [0.3, 0.06])
+def test_a_noise_spike_as_a_frozen_monitor_stops_verifies_no_vent(config, tmp_path, spike_V):
+    # The monitor reads 0 bar whatever the pressure; one sample of noise (+0.3 V, or +0.06 V,
+    # 0.06 bar: just above the 0.05 bar threshold) comes as Ctrl-C stops the run 2.5 s into the
+    # 0.5 bar step. Its last reading was above the threshold, which passed for a monitor that
+    # read the pressure, and the frozen 0 bar after the vent verified the vent (exit 130) with
+    # 0.11 bar in the muscle. A monitor that reads the pressure falls after the vent; this one
+    # shows no fall.
+    c = config.replace(sim={"truth": {"monitor_stuck_bar": 0.0}})
+    backend = SimBackend(c)
+    read = backend.read
+
+    def spike_and_stop_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()
+            volts = block.volts.copy()
+            volts[:, 1] += spike_V  # 1 V per bar: 1-5 V over 4 bar
+            block = dataclasses.replace(block, volts=volts)
+        return block
+
+    backend.read = spike_and_stop_at_45
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "with 0.5 bar commanded before the vent and did not fall after it" in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
+    run_ = load_run(result.path)
+    (spiked,) = run_.samples.pressure_bar[run_.samples["sample"] == 45]
+    assert spiked == pytest.approx(spike_V, abs=0.003)  # the reading the stop came with
+    check = run_.meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] == 0.5
+    # the truth: six 0.1 s samples of exhaust (tau 0.4 s) from 0.5 bar as the check settled
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
