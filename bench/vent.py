@@ -3,7 +3,8 @@ is vented.
 
 A vent is only a command until the monitor confirms it: a regulator that sticks keeps its
 pressure whatever it is told. :func:`verify_vent` reads the pressure monitor (electronic
-regulator) until it is below ``safety.vent_below_bar``, for at most ``safety.vent_timeout_s``
+regulator) until it is below ``safety.vent_below_bar`` (:data:`BELOW_READINGS` readings in a
+row, or settled from the tare's zero: :class:`VentedZero`), for at most ``safety.vent_timeout_s``
 of sample time and wall time (``daq.read_retries`` read timeouts in a row retried, as at 0 bar
 in a run), judging only samples acquired after the vent write and only plausible ones (a
 live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: a monitor fault, never a vent,
@@ -25,6 +26,7 @@ import statistics
 import time
 from dataclasses import asdict, dataclass
 
+from mkm.bench import backends
 from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected, ReadTimeout
 
 
@@ -92,6 +94,9 @@ SETTLED_S = 0.5
 #: the first readings after the vent whose median is the monitor's start of the fall (one
 #: noise spike among them moves no median)
 FIRST_READINGS = 3
+#: readings in a row below the threshold that verify a vent where no settled reading can be
+#: judged (no tare read the monitor's zero): one noise spike verifies nothing
+BELOW_READINGS = 3
 #: readings of a vented monitor stay within this many of its standard deviations at the tare
 #: (plus two ADC steps, for a reading quieter than its quantisation) of its vented zero
 ZERO_NOISE_SIGMAS = 5.0
@@ -108,8 +113,6 @@ class VentedZero:
     @classmethod
     def from_tare(cls, tare: dict | None, config) -> VentedZero | None:
         """The zero of a tare of this run (run.json ``tare``), or None when the tare read none."""
-        from mkm.bench import backends
-
         if not tare or not tare.get("monitor_vented_settled"):
             return None
         reg = config.regulator
@@ -193,6 +196,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         below = below + min(vented_zero.zero_bar, 0.0)
     recent: list[tuple[float, float]] = []  # (sample time [s], reading [bar]) over SETTLED_S
     first: list[float] = []  # the first FIRST_READINGS readings after the vent
+    below_in_row = 0  # readings in a row below the threshold
     start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
     timeouts, blind_s = 0, 0.0  # read timeouts in a row; the time they waited, in all
     try:  # samples acquired before the vent write say nothing about the vent
@@ -238,7 +242,8 @@ def verify_vent(backend, config, operator=None, started: bool = True,
             # conversion (0 V: -1 bar) is no pressure: the last plausible reading is kept
             return VentCheck(False, pressure, below, waited, "monitor", fault)
         pressure = float(config.regulator.monitor_bar(monitor_V))
-        if vented_zero is None and pressure < below:
+        below_in_row = below_in_row + 1 if pressure < below else 0
+        if vented_zero is None and below_in_row >= BELOW_READINGS:
             return VentCheck(True, pressure, below, waited, "monitor")
         if not math.isfinite(pressure):  # a broken input: it verifies nothing
             return VentCheck(False, pressure, below, waited, "monitor",
@@ -263,8 +268,12 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                 return VentCheck(True, pressure, below, waited, "monitor", first_above_bar=(
                     statistics.median(first) - sum(readings) / len(readings)))
         if waited > timeout_s:
-            if pressure < below:  # below the threshold, never settled: a drift is not excluded
+            if pressure < below and vented_zero is not None:  # never settled: a drift may hide
                 return VentCheck(False, pressure, below, waited, "monitor", (
                     f"the monitor read {reading_bar(pressure)} bar but did not settle within "
                     f"{timeout_s:g} s, so a drift of its zero cannot be excluded"))
+            if pressure < below:  # below now and then, never in BELOW_READINGS in a row
+                return VentCheck(False, pressure, below, waited, "monitor", (
+                    f"the monitor read {reading_bar(pressure)} bar, but below {below:g} bar in "
+                    f"fewer than {BELOW_READINGS} readings in a row within {timeout_s:g} s"))
             return VentCheck(False, pressure, below, waited, "monitor")

@@ -147,7 +147,8 @@ class Acquisition:
         self._moved: tuple[float, float] | None = None
         self._unmoved_since_s: float | None = None
         # the monitor moved with a command this run (more than half a change larger than the
-        # vent threshold, see _unmoved): a rise of a few noise widths is then no lost gain
+        # vent threshold, see _unmoved): its fall after a vent as a step begins is then no
+        # output that lost its gain
         self.shown_moving = False
         # the last plausible readings of the run's blocks [bar], and the last one's command
         self._recent_bar: deque = deque(maxlen=int(round(SETTLED_S * self.rate_hz)) + 1)
