@@ -24,11 +24,13 @@ Safety, in every exit path:
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
-  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s``, and a
-  monitor found below its command before the vent (by the pressure interlock, or in its last
-  reading before a stop, another interlock or a fault) must have read more than that before
-  the vent (one stuck at zero reads 0 bar whatever the muscle holds); if not, the run is
-  ``failed``, asks for a VENT BY HAND and its bench marker stays;
+  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` and stay
+  there, read from the zero the tare measured (a zero that drifted low shows as a reading
+  settled below it), a monitor found below its command before the vent (by the pressure
+  interlock, or in its last reading before a stop, another interlock or a fault) must have
+  read more than that before the vent (one stuck at zero reads 0 bar whatever the muscle
+  holds), and with a pressure commanded the monitor must fall after the vent; if not, the run
+  is ``failed``, asks for a VENT BY HAND and its bench marker stays;
 - a closed Windows console leaves seconds before the process is ended: the run vents, writes
   run.json with why it stopped and syncs its rows before the vent check, which stops at the
   grace deadline (:meth:`mkm.bench.signals.StopSignals.grace_deadline`) so the final record
@@ -59,7 +61,7 @@ from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
-from mkm.bench.vent import VentCheck, below_command, verify_vent
+from mkm.bench.vent import VentCheck, VentedZero, below_command, verify_vent, without_fall
 from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
 
@@ -513,11 +515,35 @@ class BenchRun:
                 problems.append(problem)
 
         try:
+            zero = VentedZero.from_tare(self.recorder.meta.tare, self.config) \
+                if self.recorder is not None else None
             return verify_vent(self.backend, self.config, self.operator, started=self._started,
-                               deadline=self.signals.grace_deadline, record=record)
+                               deadline=self.signals.grace_deadline, record=record,
+                               vented_zero=zero)
         except BaseException as exc:
             return VentCheck(False, float("nan"), below, 0.0, "monitor",
                              f"{type(exc).__name__}: {exc}")
+
+    def _weighed(self, acq: Acquisition, check: VentCheck) -> VentCheck:
+        """The vent check weighed by what the monitor read before the vent: one that read
+        nothing of a pressure commanded proves nothing by reading nothing after it
+        (:func:`mkm.bench.vent.below_command`), unless, shown working earlier in the run, it
+        fell after the vent (a stop as a step from 0 bar begins: the regulator not yet there);
+        with a pressure above the vent threshold commanded, a monitor that shows no fall after
+        the vent proves nothing either (:func:`mkm.bench.vent.without_fall`)."""
+        zero = VentedZero.from_tare(self.recorder.meta.tare, self.config) \
+            if self.recorder is not None else None
+        before = acq.before_vent()
+        fell = check
+        if zero is not None and before is not None and \
+                before[1] > self.config.safety.vent_below_bar:
+            fell = without_fall(check, *before, zero.noise_bar)
+        unproven = acq.unproven()
+        if unproven is not None and not (acq.shown_moving and fell.verified
+                                         and check.first_above_bar is not None):
+            judged = below_command(check, *unproven)
+            return fell if judged.verified else judged
+        return fell
 
     def _write_vent(self, acq: Acquisition | None) -> BaseException | None:
         """Command the vent; what stopped it, or None."""
@@ -588,10 +614,8 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
-        unproven = acq.unproven() if acq is not None else None
-        if self.vent_check is not None and unproven is not None:
-            # a monitor that read nothing before the vent proves nothing by reading it after
-            self.vent_check = below_command(self.vent_check, *unproven)
+        if self.vent_check is not None and acq is not None:
+            self.vent_check = self._weighed(acq, self.vent_check)
         if acq is not None and acq.interlock_vent_failed:  # said before: what came of it
             if self.vent_check is None:
                 problems.append("nothing verified a vent since: VENT BY HAND")
@@ -628,7 +652,7 @@ class BenchRun:
             held = self.vent_check.pressure_bar
             if self.vent_check.unfollowed_bar is not None:  # the reading proves nothing
                 held = self.vent_check.unfollowed_bar
-            elif not held == held:  # nothing plausible read by the check
+            elif not held >= 0:  # nothing plausible read by the check, or no pressure
                 held = acq.held_bar() if acq is not None else 0.0
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
                             f"still hold {held:.3g} bar)")

@@ -65,7 +65,9 @@ VENTED_HALVES_SE = 4.0
 def vented_monitor(monitor_bar) -> dict:
     """The pressure monitor's zero as the tare reads it, vented: ``monitor_vented_bar``, the mean
     of the tare's second half (the first lets a muscle still deflating empty), its standard
-    error ``monitor_vented_se_bar``, and ``monitor_vented_settled``, False when the halves
+    error ``monitor_vented_se_bar`` and standard deviation ``monitor_vented_std_bar`` (a single
+    reading's spread: the vent check's, :class:`mkm.bench.vent.VentedZero`), and
+    ``monitor_vented_settled``, False when the halves
     differ by more than :data:`VENTED_HALVES_SE` standard errors (the pressure still falling:
     no zero). Empty with fewer than 4 finite readings."""
     p = np.asarray(monitor_bar, dtype=float)
@@ -77,6 +79,7 @@ def vented_monitor(monitor_bar) -> dict:
     apart = math.hypot(first.std(ddof=1) / np.sqrt(first.size), se)
     settled = bool(abs(first.mean() - second.mean()) <= VENTED_HALVES_SE * max(apart, 1e-12))
     return {"monitor_vented_bar": float(second.mean()), "monitor_vented_se_bar": se,
+            "monitor_vented_std_bar": float(second.std(ddof=1)),
             "monitor_vented_settled": settled}
 
 

@@ -3,7 +3,8 @@ is vented.
 
 A vent is only a command until the monitor confirms it: a regulator that sticks keeps its
 pressure whatever it is told. :func:`verify_vent` reads the pressure monitor (electronic
-regulator) until it is below ``safety.vent_below_bar``, for at most ``safety.vent_timeout_s``
+regulator) until it is below ``safety.vent_below_bar`` (:data:`BELOW_READINGS` readings in a
+row, or settled from the tare's zero: :class:`VentedZero`), for at most ``safety.vent_timeout_s``
 of sample time and wall time (``daq.read_retries`` read timeouts in a row retried, as at 0 bar
 in a run), judging only samples acquired after the vent write and only plausible ones (a
 live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: a monitor fault, never a vent,
@@ -13,16 +14,19 @@ A check with a ``deadline`` (Windows ends a closed console's process within 5 s)
 unverified, so the run can still be recorded. A monitor that already read below the threshold
 when it was found below its command before the vent (:func:`below_command`; by the pressure
 interlock, or in its last reading before a stop) verifies nothing: a monitor stuck at zero reads
-so whatever the muscle holds.
+so whatever the muscle holds; nor, with a pressure commanded as the run stopped, does one that
+shows no fall after the vent (:func:`without_fall`).
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
+import statistics
 import time
 from dataclasses import asdict, dataclass
 
+from mkm.bench import backends
 from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected, ReadTimeout
 
 
@@ -45,6 +49,9 @@ class VentCheck:
     # the command [bar] the monitor did not follow before the vent, reading below the
     # threshold already: its readings prove nothing, the muscle may still hold it
     unfollowed_bar: float | None = None
+    # how far [bar] the monitor's first readings after the vent lay above the reading it
+    # settled at (the median of the first FIRST_READINGS); None when not judged so
+    first_above_bar: float | None = None
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -80,8 +87,72 @@ def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -
                  "the supply"))
 
 
+#: sample time [s] over which the monitor's reading must stay within its noise to count as
+#: settled: a muscle exhausting through an ITV-class regulator (tau about 0.4 s) still falls by
+#: more than its noise over it until it is within that noise of its vented reading
+SETTLED_S = 0.5
+#: the first readings after the vent whose median is the monitor's start of the fall (one
+#: noise spike among them moves no median)
+FIRST_READINGS = 3
+#: readings in a row below the threshold that verify a vent where no settled reading can be
+#: judged (no tare read the monitor's zero): one noise spike verifies nothing
+BELOW_READINGS = 3
+#: readings of a vented monitor stay within this many of its standard deviations at the tare
+#: (plus two ADC steps, for a reading quieter than its quantisation) of its vented zero
+ZERO_NOISE_SIGMAS = 5.0
+
+
+@dataclass(frozen=True)
+class VentedZero:
+    """What the tare read on the monitor vented: its zero ``zero_bar`` and how far a vented
+    reading strays from it, ``noise_bar`` (:meth:`from_tare`)."""
+
+    zero_bar: float
+    noise_bar: float
+
+    @classmethod
+    def from_tare(cls, tare: dict | None, config) -> VentedZero | None:
+        """The zero of a tare of this run (run.json ``tare``), or None when the tare read none."""
+        if not tare or not tare.get("monitor_vented_settled"):
+            return None
+        reg = config.regulator
+        lsb_bar = (backends.entry(config.daq.backend).capabilities.ai_lsb_V * reg.full_scale_bar
+                   / (reg.monitor_V_at_full_scale - reg.monitor_V_at_zero))
+        noise = ZERO_NOISE_SIGMAS * float(tare.get("monitor_vented_std_bar", 0.0)) + 2 * lsb_bar
+        return cls(float(tare["monitor_vented_bar"]), noise)
+
+
+def without_fall(check: VentCheck, before_bar: float, commanded_bar: float,
+                 noise_bar: float) -> VentCheck:
+    """``check`` after a run ended with ``commanded_bar`` (above the vent threshold) commanded
+    and the monitor reading ``before_bar`` (the median of its last readings, one noise spike
+    moves no median), weighed by the fall it showed after the vent.
+
+    A monitor that reads the pressure falls after the vent: its last readings before it, or
+    its first after it (a regulator that exhausts in less than a sample), lie above the reading
+    it settles at by more than its noise ``noise_bar``. One frozen near zero shows no fall
+    (a noise spike as the run stopped made its last reading look like a pressure), so its
+    settled reading verifies nothing.
+    """
+    if not check.verified or check.how != "monitor" or check.first_above_bar is None:
+        return check
+    # the check's last reading is within the noise of the one it settled at
+    fall = max(before_bar - check.pressure_bar, check.first_above_bar)
+    if fall > noise_bar:
+        return check
+    return dataclasses.replace(
+        check, verified=False, unfollowed_bar=commanded_bar,
+        problem=(f"the monitor read {reading_bar(before_bar)} bar with {commanded_bar:g} bar "
+                 f"commanded before the vent and did not fall after it by more than its noise "
+                 f"({noise_bar:.3f} bar), so its reading proves nothing: stuck near zero, a "
+                 "monitor reads so whatever the muscle holds; a regulator without supply "
+                 "pressure or a hose that leaks reads the same; check the monitor and the "
+                 "supply"))
+
+
 def verify_vent(backend, config, operator=None, started: bool = True,
-                deadline=lambda: None, record=lambda block: None) -> VentCheck:
+                deadline=lambda: None, record=lambda block: None,
+                vented_zero: VentedZero | None = None) -> VentCheck:
     """Confirm that the muscle is vented (the vent command already written).
 
     Parameters
@@ -98,6 +169,12 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     record : callable, optional
         Gets every :class:`mkm.bench.backend.Block` the check reads (the run records them:
         the pressure's decay after the vent is on disk); must not raise.
+    vented_zero : VentedZero, optional
+        The monitor's zero read by the run's tare. The reading is then taken from that zero
+        when it is below 0 bar, and judged only once it has settled (within the zero's noise
+        over :data:`SETTLED_S`): a monitor whose zero drifted low reads below the threshold
+        while the muscle still holds pressure, and shows it only once its reading stops
+        falling, below the tare's zero. Such a reading verifies nothing.
     """
     safety = config.safety
     below, timeout_s = safety.vent_below_bar, safety.vent_timeout_s
@@ -115,6 +192,11 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                          "started, so the monitor could not be read")
     rate = config.daq.sample_rate_hz
     n = max(1, int(round(0.1 * rate)))
+    if vented_zero is not None:  # read from the tare's zero, where it lies below 0 bar
+        below = below + min(vented_zero.zero_bar, 0.0)
+    recent: list[tuple[float, float]] = []  # (sample time [s], reading [bar]) over SETTLED_S
+    first: list[float] = []  # the first FIRST_READINGS readings after the vent
+    below_in_row = 0  # readings in a row below the threshold
     start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
     timeouts, blind_s = 0, 0.0  # read timeouts in a row; the time they waited, in all
     try:  # samples acquired before the vent write say nothing about the vent
@@ -160,10 +242,38 @@ def verify_vent(backend, config, operator=None, started: bool = True,
             # conversion (0 V: -1 bar) is no pressure: the last plausible reading is kept
             return VentCheck(False, pressure, below, waited, "monitor", fault)
         pressure = float(config.regulator.monitor_bar(monitor_V))
-        if pressure < below:
+        below_in_row = below_in_row + 1 if pressure < below else 0
+        if vented_zero is None and below_in_row >= BELOW_READINGS:
             return VentCheck(True, pressure, below, waited, "monitor")
         if not math.isfinite(pressure):  # a broken input: it verifies nothing
             return VentCheck(False, pressure, below, waited, "monitor",
                              f"the monitor reads {monitor_V!r} V, not a number")
+        if vented_zero is not None:
+            recent = [(t, p) for t, p in recent if t > sample_time_s - SETTLED_S - 1e-9]
+            recent.append((sample_time_s, pressure))
+            if len(first) < FIRST_READINGS:
+                first.append(pressure)
+            readings = [p for _, p in recent]
+            settled = (sample_time_s - recent[0][0] >= SETTLED_S - 1e-9
+                       and max(readings) - min(readings) <= vented_zero.noise_bar)
+            if settled and pressure < below:
+                low = vented_zero.zero_bar - vented_zero.noise_bar
+                if sum(readings) / len(readings) < low:
+                    return VentCheck(False, pressure, below, waited, "monitor", (
+                        f"the monitor settled at {reading_bar(pressure)} bar, below the "
+                        f"{reading_bar(vented_zero.zero_bar)} bar it read vented at the tare by "
+                        f"more than its noise ({vented_zero.noise_bar:.3f} bar): its zero has "
+                        "drifted low, so its reading no longer tells what the muscle holds; "
+                        "check the monitor"))
+                return VentCheck(True, pressure, below, waited, "monitor", first_above_bar=(
+                    statistics.median(first) - sum(readings) / len(readings)))
         if waited > timeout_s:
+            if pressure < below and vented_zero is not None:  # never settled: a drift may hide
+                return VentCheck(False, pressure, below, waited, "monitor", (
+                    f"the monitor read {reading_bar(pressure)} bar but did not settle within "
+                    f"{timeout_s:g} s, so a drift of its zero cannot be excluded"))
+            if pressure < below:  # below now and then, never in BELOW_READINGS in a row
+                return VentCheck(False, pressure, below, waited, "monitor", (
+                    f"the monitor read {reading_bar(pressure)} bar, but below {below:g} bar in "
+                    f"fewer than {BELOW_READINGS} readings in a row within {timeout_s:g} s"))
             return VentCheck(False, pressure, below, waited, "monitor")

@@ -17,7 +17,10 @@ disk, :mod:`mkm.bench.recorder` writes behind it):
   does not follow). The window is the measured pressure's: a new command does not restart it
   (a stuck regulator trips ``pressure_follow_s`` after it stops following, whatever is
   commanded meanwhile), a working regulator's step response restarts it as it moves; samples
-  read late after a stall are judged against their own command;
+  read late after a stall are judged against their own command; a monitor that does not move
+  with its command (frozen within the tolerance of it): once the command is more than
+  ``safety.vent_below_bar`` from the one it last moved with, the reading must move more than
+  half that change towards it within ``safety.pressure_follow_s``;
 - over-pressure, on the measured pressure (the monitor's, or the manometer reading the operator
   typed with a manual regulator) whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
@@ -36,7 +39,9 @@ If the interlock's own vent write fails, the reason says so and asks for a vent 
 from __future__ import annotations
 
 import math
+import statistics
 import time
+from collections import deque
 from contextlib import nullcontext
 
 from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
@@ -45,6 +50,7 @@ from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.recorder import Recorder
 from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
+from mkm.bench.vent import SETTLED_S
 
 RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
 # The muscle's limit is max_pressure_bar. A regulator at its command reads within its accuracy
@@ -107,6 +113,7 @@ class Acquisition:
         self.electronic = config.regulator.electronic
         self.tare_offset_V = config.loadcell.offset_V
         self.command_bar = 0.0
+        self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
         # the commands written, by the device's sample clock when each was issued (index, bar),
         # and the command before the oldest kept: the command each sample was acquired under
         self._issued: list[tuple[int, float]] = []
@@ -135,6 +142,17 @@ class Acquisition:
         self._off_since_s: float | None = None
         self._off_from_bar = 0.0
         self._over_since_s: float | None = None  # pressure above the limit's margin since then
+        # (command, reading) [bar] when the monitor last moved with its command, and since when
+        # the command has been too far from that one for a frozen monitor to pass (see _unmoved)
+        self._moved: tuple[float, float] | None = None
+        self._unmoved_since_s: float | None = None
+        # the monitor moved with a command this run (more than half a change larger than the
+        # vent threshold, see _unmoved): its fall after a vent as a step begins is then no
+        # output that lost its gain
+        self.shown_moving = False
+        # the last plausible readings of the run's blocks [bar], and the last one's command
+        self._recent_bar: deque = deque(maxlen=int(round(SETTLED_S * self.rate_hz)) + 1)
+        self._recent_command_bar = 0.0
 
     # one block -------------------------------------------------------------------------------
 
@@ -283,8 +301,11 @@ class Acquisition:
         commanded = self._commanded_at(index) if self.electronic else math.nan
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
             self.measured_bar = pressure
-            if commanded > 0 and phase != "vent":  # the vent check's come after the vent
-                self._pressurised = (pressure, commanded)
+            if phase != "vent":  # the vent check's come after the vent
+                self._recent_bar.append(pressure)
+                self._recent_command_bar = commanded
+                if commanded > 0:
+                    self._pressurised = (pressure, commanded)
         flags, self._pending_flags = self._pending_flags, []
         if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
             flags.append("nonfinite")
@@ -366,6 +387,46 @@ class Acquisition:
                     f"{safety.pressure_follow_s:g} s (tolerance {tolerance:g} bar; the "
                     f"pressure has not moved towards the command since "
                     f"{self._off_since_s:g} s)")
+        return self._unmoved(t_s, pressure, commanded)
+
+    def _unmoved(self, t_s: float, pressure: float, commanded: float) -> str | None:
+        """The stuck-monitor interlock's message for this sample, or None.
+
+        A monitor frozen within the follow tolerance of its commands (near 0 bar at a step of
+        0.1 bar, a tolerance of 0.15 bar) never trips the follow interlock, and its frozen
+        reading would verify the vent. A working regulator's monitor reads the pressure the
+        regulator holds at its command, so it moves with the command: once the command is more
+        than ``safety.vent_below_bar`` from the one under which the monitor last moved with it
+        (a smaller change leaves the muscle below the vent threshold), the reading must move
+        more than half that change towards it within ``safety.pressure_follow_s``. A reading
+        off the command by more than the tolerance is the follow interlock's."""
+        safety = self.config.safety
+        if self._moved is None:
+            self._moved = (commanded, pressure)
+            return None
+        moved_command, moved_bar = self._moved
+        change = commanded - moved_command
+        if abs(change) <= safety.vent_below_bar:
+            self._unmoved_since_s = None
+            if commanded == moved_command:  # the reading the next change is judged from
+                self._moved = (commanded, pressure)
+            return None
+        if (pressure - moved_bar) * math.copysign(1.0, change) > abs(change) / 2:
+            self._moved, self._unmoved_since_s = (commanded, pressure), None
+            self.shown_moving = True
+            return None
+        if self._unmoved_since_s is None:
+            self._unmoved_since_s = t_s
+        elif (t_s - self._unmoved_since_s > safety.pressure_follow_s
+              and abs(pressure - commanded) <= safety.pressure_tolerance_bar):
+            if 0 < commanded and pressure < commanded and self.below_command is None:
+                self.below_command = (pressure, commanded)
+            return (f"pressure interlock: the monitor does not move with the command: "
+                    f"{pressure:.3f} bar measured against {commanded:g} bar commanded since "
+                    f"{self._unmoved_since_s:g} s, after {moved_bar:.3f} bar under "
+                    f"{moved_command:g} bar (a working regulator's monitor moves more than half "
+                    f"the change within {safety.pressure_follow_s:g} s): a monitor fault "
+                    "(stuck), or a regulator without supply")
         return None
 
     def _overpressure(self, t_s: float, pressure: float) -> str | None:
@@ -407,25 +468,38 @@ class Acquisition:
         """(measured, commanded) [bar] by which the vent check weighs the monitor's readings
         (:func:`mkm.bench.vent.below_command`): the follow interlock's, or, when a stop, another
         interlock or a fault ended the run first, the last plausible reading acquired under a
-        pressure commanded if it was below that command by more than the tolerance (a monitor
-        frozen near zero reads so from the first sample; the run may end before the follow
-        interlock trips). None: the monitor followed its command."""
+        pressure commanded if it was below that command by more than the tolerance, or below it
+        without having moved with it yet (a monitor frozen near zero reads so from the first
+        sample; the run may end before the follow or stuck-monitor interlock trips). None: the
+        monitor followed its command."""
         if self.below_command is not None:
             return self.below_command
         if self._pressurised is None:
             return None
         measured, commanded = self._pressurised
-        if commanded - measured > self.config.safety.pressure_tolerance_bar:
+        if commanded - measured > self.config.safety.pressure_tolerance_bar or (
+                self._unmoved_since_s is not None and measured < commanded):
             return measured, commanded
         return None
 
+    def before_vent(self) -> tuple[float, float] | None:
+        """(reading, command) [bar] as the run stopped: the median of the monitor's last
+        plausible readings (over :data:`mkm.bench.vent.SETTLED_S`; one noise spike moves no
+        median) and the command the last was acquired under; None before any."""
+        if not self._recent_bar:
+            return None
+        return statistics.median(self._recent_bar), self._recent_command_bar
+
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its
-        command while the vent was not written, else the last plausible pressure measured (a
-        lost monitor's 0 V converts to -1 bar, which is no pressure at all)."""
-        if self.vented and math.isfinite(self.measured_bar):
+        command while the vent was not written, else the last plausible pressure measured, or,
+        read below 0 bar (a zero drifted low), the last pressure commanded (a lost monitor's
+        0 V converts to -1 bar, which is no pressure at all)."""
+        if not self.vented:
+            return self.command_bar
+        if self.measured_bar >= 0:
             return self.measured_bar
-        return self.command_bar
+        return self.pressure_commanded_bar
 
     # commands --------------------------------------------------------------------------------
 
@@ -455,6 +529,8 @@ class Acquisition:
             self.backend.write_command(volts)
             ok = self.written = True
             self.command_bar = clamped
+            if clamped > 0:
+                self.pressure_commanded_bar = clamped
             self.vented = clamped == 0.0
             meta = self.recorder.meta
             stopped_at = self.stop_time()

@@ -109,6 +109,37 @@ def test_vent_that_does_not_bring_the_pressure_down_says_so(config, monkeypatch)
         procedures.vent(config.replace(safety={"vent_timeout_s": 2.0}))
 
 
+def test_vent_is_not_verified_by_one_noise_spike(config, monkeypatch):
+    # a regulator stuck at 1 bar; the monitor's third reading after the vent comes 0.98 V low
+    # (one sample of noise, 0.02 bar): that one reading below 0.05 bar verified the vent
+    import dataclasses
+
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+    from mkm.bench.sim import SimBackend
+
+    class StuckAndSpiked(SimBackend):
+        def start(self):
+            super().start()
+            self.bench.pressure_bar = 1.0
+            self.bench.regulator_stuck = True
+            self.reads = 0
+
+        def read(self, n_samples, timeout_s):
+            block = super().read(n_samples, timeout_s)
+            self.reads += 1
+            if self.reads == 3:
+                volts = block.volts.copy()
+                volts[:, 1] -= 0.98  # 1 V per bar: 1-5 V over 4 bar
+                block = dataclasses.replace(block, volts=volts)
+            return block
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: StuckAndSpiked(c))
+    with pytest.raises(BenchError, match=r"monitor still reads 1\.00\d bar 2\.\d s after the "
+                                         r"vent, above 0\.05 bar: VENT BY HAND"):
+        procedures.vent(config.replace(safety={"vent_timeout_s": 2.0}))
+
+
 def test_tare_refuses_a_noisy_cell(config):
     from mkm.bench.sequence import TareInvalid
 

@@ -2,6 +2,7 @@
 finding; each failed before the fix.
 """
 
+import dataclasses
 import errno
 import json
 import math
@@ -104,9 +105,10 @@ def test_a_monitor_frozen_at_zero_does_not_verify_the_vent(config, tmp_path, fro
     check = run.meta.vent_check
     assert not check["verified"] and check["pressure_bar"] < c.safety.vent_below_bar
     assert check["unfollowed_bar"] == 0.5 and run.meta.manual_vent_required
-    # the truth: one 0.1 s sample after the vent, exhausting with tau 0.4 s from 0.5 bar, the
-    # muscle still held 0.5 exp(-0.1/0.4) = 0.39 bar while the monitor read 0
-    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-0.25), abs=1e-3)
+    # the truth: six 0.1 s samples after the vent (the check waits for a reading steady over
+    # vent.SETTLED_S), exhausting with tau 0.4 s from 0.5 bar, the muscle still held
+    # 0.5 exp(-0.6/0.4) = 0.11 bar while the monitor read 0
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
     (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert "proves nothing" in json.loads(marker.read_text())["vent_unverified"]
 
@@ -137,8 +139,9 @@ def test_a_stop_before_the_follow_interlock_trips_does_not_verify_with_a_frozen_
     assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
     check = load_run(result.path).meta.vent_check
     assert not check["verified"] and check["unfollowed_bar"] == 0.5
-    # the truth: one 0.1 s sample of exhaust (tau 0.4 s) after the vent from 0.5 bar
-    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-0.25), abs=1e-3)
+    # the truth: six 0.1 s samples of exhaust (tau 0.4 s) after the vent from 0.5 bar, the
+    # check waiting for a reading steady over vent.SETTLED_S
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
     (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked, unproven
     assert json.loads(marker.read_text())["unfollowed_bar"] == 0.5
 
@@ -160,6 +163,137 @@ def test_a_stop_with_a_following_monitor_verifies_the_vent(config, tmp_path):
     assert result.status == "aborted" and result.exit_code == 130, result.reason
     check = load_run(result.path).meta.vent_check
     assert check["verified"] and check["unfollowed_bar"] is None
+
+
+@pytest.mark.parametrize("stop", [None, "Ctrl-C"])
+def test_a_monitor_frozen_within_the_tolerance_of_its_step_verifies_no_vent(config, tmp_path,
+                                                                            stop):
+    # The monitor reads 0 bar whatever the pressure; the one step, 0.12 bar, is within the
+    # follow interlock's 0.15 bar of it, so nothing tripped: the run ended complete (exit 0),
+    # or stopped by Ctrl-C 2.5 s into the step (exit 130), its vent "verified" by the frozen
+    # 0 bar while the muscle held 0.12 bar. A working monitor moves with its command: this one
+    # never moves, is a monitor fault after pressure_follow_s, and verifies no vent.
+    c = config.replace(sequence={"pressures_bar": (0.12,), "down_sweep": False},
+                       sim={"truth": {"monitor_stuck_bar": 0.0}})
+    backend = SimBackend(c)
+    read, write, at_vent = backend.read, backend.write_command, []
+
+    def stopped_at_45(n, timeout):
+        block = read(n, timeout)
+        if stop and block.first_index == 45:
+            run.request_stop()
+        return block
+
+    def vent_noted(volts):
+        if volts == 0.0 and backend._index > 20:
+            at_vent.append(backend.bench.pressure_bar)
+        write(volts)
+
+    backend.read, backend.write_command = stopped_at_45, vent_noted
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert ("pressure interlock: the monitor does not move with the command" in result.reason) \
+        == (stop is None)
+    assert "0.12 bar commanded before the vent, so its reading after it proves nothing" \
+        in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.12 bar)")
+    check = load_run(result.path).meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] == 0.12
+    # the truth: the muscle held 0.12 bar as the vent went out (2.5 s or more at tau 0.4 s);
+    # the frozen 0 bar verified it after one 0.1 s sample, with 0.12 exp(-0.25) = 0.093 bar
+    # left, above the 0.05 bar a verified vent claims
+    assert at_vent[0] == pytest.approx(0.12, abs=1e-3)
+    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked
+    assert json.loads(marker.read_text())["unfollowed_bar"] == 0.12
+
+
+@pytest.mark.parametrize("truth", [{}, {"monitor_gain": 0.9, "monitor_offset_bar": -0.04,
+                                        "monitor_hysteresis_bar": 0.1}])
+def test_a_monitor_that_moves_with_small_steps_is_no_monitor_fault(config, tmp_path, truth):
+    # steps 0.06 bar apart, just above the 0.05 bar vent threshold the move is judged from,
+    # read by a good sensor and by one 10 % low, 0.04 bar low, with 0.1 bar of hysteresis
+    c = config.replace(sequence={"pressures_bar": (0.06, 0.12, 0.18)},
+                       sim={"truth": truth})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert load_run(result.path).meta.vent_check["verified"]
+
+
+@pytest.mark.parametrize("preconditioned", [True, False])
+def test_a_stop_as_a_step_from_0_bar_begins_is_judged_by_whether_the_monitor_moved(
+        config, tmp_path, preconditioned):
+    # A slow regulator (tau 1.5 s): Ctrl-C at the first sample of a 0.5 bar step from a vented
+    # muscle, which the monitor reads 0.5 (1 - exp(-0.1/1.5)) = 0.032 bar, below 0.05 bar and
+    # 0.47 bar below the command. After a pre-conditioning cycle the monitor has moved with a
+    # command (to 1 bar and back), and now rose above its reading at 0 bar by more than its
+    # noise: it is moving with the step, and its fall after the vent verifies it (it used to
+    # say VENT BY HAND, exit 4). As the run's first pressure no command has shown it works: a
+    # reading that rose a little then fell is all a monitor whose output lost its gain gives
+    # too, so a vent by hand is still asked for.
+    cycles = {"preconditioning_cycles": 1, "preconditioning_hold_s": 10.0} if preconditioned \
+        else {}
+    c = config.replace(sequence=cycles, sim={"regulator_tau_s": 1.5})
+    first = 20 + (200 if preconditioned else 0)  # after the tare's 2 s and the cycle's 20 s
+    backend = SimBackend(c)
+    read = backend.read
+
+    def stopped_at_first(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == first:
+            run.request_stop()
+        return block
+
+    backend.read = stopped_at_first
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    samples = load_run(result.path).samples
+    (at_stop,) = samples.pressure_bar[samples["sample"] == first]
+    assert at_stop == pytest.approx(0.5 * (1 - math.exp(-0.1 / 1.5)), abs=0.005)
+    check = load_run(result.path).meta.vent_check
+    if preconditioned:
+        assert result.status == "aborted" and result.exit_code == 130, result.reason
+        assert check["verified"] and check["unfollowed_bar"] is None
+    else:
+        assert result.status == "failed" and result.exit_code == 4
+        assert not check["verified"] and check["unfollowed_bar"] == 0.5
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+@pytest.mark.parametrize("spike_V", [0.3, 0.06])
+def test_a_noise_spike_as_a_frozen_monitor_stops_verifies_no_vent(config, tmp_path, spike_V):
+    # The monitor reads 0 bar whatever the pressure; one sample of noise (+0.3 V, or +0.06 V,
+    # 0.06 bar: just above the 0.05 bar threshold) comes as Ctrl-C stops the run 2.5 s into the
+    # 0.5 bar step. Its last reading was above the threshold, which passed for a monitor that
+    # read the pressure, and the frozen 0 bar after the vent verified the vent (exit 130) with
+    # 0.11 bar in the muscle. A monitor that reads the pressure falls after the vent; this one
+    # shows no fall.
+    c = config.replace(sim={"truth": {"monitor_stuck_bar": 0.0}})
+    backend = SimBackend(c)
+    read = backend.read
+
+    def spike_and_stop_at_45(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()
+            volts = block.volts.copy()
+            volts[:, 1] += spike_V  # 1 V per bar: 1-5 V over 4 bar
+            block = dataclasses.replace(block, volts=volts)
+        return block
+
+    backend.read = spike_and_stop_at_45
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "with 0.5 bar commanded before the vent and did not fall after it" in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
+    run_ = load_run(result.path)
+    (spiked,) = run_.samples.pressure_bar[run_.samples["sample"] == 45]
+    assert spiked == pytest.approx(spike_V, abs=0.003)  # the reading the stop came with
+    check = run_.meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] == 0.5
+    # the truth: six 0.1 s samples of exhaust (tau 0.4 s) from 0.5 bar as the check settled
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
 
 
 class _Supply(SimBackend):
@@ -208,6 +342,72 @@ def test_a_monitor_reading_below_a_zero_command_is_judged_by_its_reading(config,
     assert "against 0 bar commanded for more than 5 s" in result.reason
     assert result.status == "aborted" and result.exit_code == 1, result.reason
     assert load_run(result.path).meta.vent_check["verified"]
+
+
+def test_a_monitor_whose_zero_drifted_low_after_the_tare_verifies_no_vent(config, tmp_path):
+    # The tare reads the monitor's zero at 0.000 bar; then its input's ground shifts by
+    # -0.09 V (-0.09 bar), within the follow interlock's 0.15 bar of every command. The vent
+    # check took its first reading below 0.05 bar (0.022 bar) as a verified vent, exit 0, while
+    # the muscle held 0.11 bar; the reading then settles at -0.09 bar, below the tare's zero:
+    # a drifted zero, so the reading tells nothing of the muscle
+    backend = SimBackend(config)
+    read = backend.read
+
+    def ground_shifted(n, timeout):
+        block = read(n, timeout)
+        if block.first_index < 20:  # the tare's 2 s read the true zero
+            return block
+        volts = block.volts.copy()
+        volts[:, 1] -= 0.09  # 1 V per bar: 1-5 V over 4 bar
+        return dataclasses.replace(block, volts=volts)
+
+    backend.read = ground_shifted
+    result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    run = load_run(result.path)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert abs(run.meta.tare["monitor_vented_bar"]) < 0.002
+    assert "below the 0.000 bar it read vented at the tare by more than its noise" in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
+    check = run.meta.vent_check
+    # it settles at the shifted zero, within the monitor's 1 mV noise and 1.2 mV steps
+    assert not check["verified"] and check["pressure_bar"] == pytest.approx(-0.09, abs=0.005)
+    # the truth when the first reading fell below 0.05 bar: 0.05 + 0.09 = 0.14 bar or less,
+    # more than 0.05 bar (the reading at a sample is the pressure it read plus the shift)
+    vent_rows = [r for r in run.samples.itertuples() if r.phase == "vent"]
+    first = next(k for k, r in enumerate(vent_rows) if r.pressure_bar < 0.05)
+    held = 0.5 * math.exp(-(first + 1) * 0.1 / 0.4)  # from the 0.5 bar step, tau 0.4 s
+    assert vent_rows[first].pressure_bar == pytest.approx(held - 0.09, abs=0.005)
+    assert held > 0.1
+
+
+def test_the_vent_check_reads_from_a_zero_below_0_bar(config, tmp_path):
+    # the monitor's input reads 0.04 bar low from the start (the tare's zero: -0.04 bar), and
+    # the regulator's exhaust leaves 0.08 bar in the muscle once it was pressurised: the monitor
+    # reads 0.04 bar, below 0.05 bar, which verified the vent; from its zero that is 0.08 bar
+    backend = SimBackend(config)
+    read, set_command = backend.read, backend.bench.set_command_volts
+
+    def shifted(n, timeout):
+        block = read(n, timeout)
+        volts = block.volts.copy()
+        volts[:, 1] -= 0.04  # 1 V per bar: 1-5 V over 4 bar
+        return dataclasses.replace(block, volts=volts)
+
+    def exhaust_left_open(volts):
+        set_command(volts)
+        if backend._index >= 20:  # after the tare's 2 s
+            backend.bench.target_bar = max(backend.bench.target_bar, 0.08)
+
+    backend.read, backend.bench.set_command_volts = shifted, exhaust_left_open
+    result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    run = load_run(result.path)
+    assert run.meta.tare["monitor_vented_bar"] == pytest.approx(-0.04, abs=0.003)
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    check = run.meta.vent_check
+    # 0.05 bar from the -0.04 bar zero; the reading 0.08 - 0.04 bar, within noise and a step
+    assert not check["verified"] and check["below_bar"] == pytest.approx(0.01, abs=0.003)
+    assert check["pressure_bar"] == pytest.approx(0.04, abs=0.005)
+    assert backend.bench.pressure_bar == pytest.approx(0.08, abs=1e-3)  # the truth
 
 
 def test_below_command_weighs_a_verified_check_by_what_the_monitor_read_before_it():
@@ -391,13 +591,15 @@ def test_a_final_record_refused_for_good_is_kept_in_the_marker_and_written_next(
     (said,) = notes
     assert f"run {result.path.resolve()} (started " in said
     assert ", but its run.json refused that record: all 3 steps done; " in said
-    assert said.endswith("vented now; run.json mended: status complete, 213 samples on disk")
+    assert said.endswith("vented now; run.json mended: status complete, 225 samples on disk")
     run = load_run(result.path)
     assert run.status == "complete" and not run.meta.manual_vent_required
     assert run.reason.startswith(marker["outcome"]["reason"])
     assert "; this outcome was refused by run.json as the run ended, kept in its bench marker " \
         "and written by the next command at " in run.reason
-    assert run.meta.counters["samples"] == len(run.samples) == 213  # the run's 203, the check's 10
+    # the run's 203, the check's 22: 0.5 bar exhausting with tau 0.4 s falls by less than the
+    # monitor's noise over vent.SETTLED_S from 2.2 s on
+    assert run.meta.counters["samples"] == len(run.samples) == 225
     assert not list(_folder("sim-Dev1").glob("*.json"))
 
 
@@ -520,8 +722,9 @@ def test_run_json_held_open_at_the_end_is_tried_again(config, tmp_path, monkeypa
         assert "run.json could not be written (PermissionError: [Errno 13] The process " \
                "cannot access the file" in result.reason and "tried 11 times over 0 s" \
                in result.reason
-        # the rows on disk: the run's 203 and the vent check's 10
-        assert rows == 213 and meta["counters"]["samples"] == 20  # run.json: the tare's
+        # the rows on disk: the run's 203 and the vent check's 22 (a reading steady over
+        # vent.SETTLED_S)
+        assert rows == 225 and meta["counters"]["samples"] == 20  # run.json: the tare's
     assert len(refused) == held
 
 
