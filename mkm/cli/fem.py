@@ -205,7 +205,10 @@ def _answered(prediction, model):
     if answered is not None:  # a surrogate names the inputs outside its box
         prediction = answered(prediction)
         own = np.asarray(prediction.extras["reason"], dtype=object)
-        reason = np.where(own != "", own, reason)
+        # after a reason of its own (past the braid lock), which the warning counts the point
+        # under, or in place of the bare "outside the model's domain"
+        general = (reason == "") | (reason == _OUTSIDE_DOMAIN)
+        reason = np.where(own == "", reason, np.where(general, own, reason + "; " + own))
     extras = {**prediction.extras, "reason": reason}
     for name in ("force_std_N", "band95_N"):
         if name in extras:
@@ -251,8 +254,11 @@ def _reasons(prediction) -> list:
             reasons.append((said, these))
             bad = bad & ~these
     if bad.any():
-        reasons.append(("outside the model's domain", bad))
+        reasons.append((_OUTSIDE_DOMAIN, bad))
     return reasons
+
+
+_OUTSIDE_DOMAIN = "outside the model's domain"
 
 
 def _outside_practical_range(prediction, D0_mm: float, t0_mm: float) -> list[str]:

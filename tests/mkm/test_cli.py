@@ -81,6 +81,18 @@ def test_a_surrogate_sweep_past_its_box_keeps_the_answered_points_only(mkm_run):
                         "column)\n")
 
 
+def test_a_surrogate_point_past_the_braid_lock_says_so_in_its_reason_column(mkm_run):
+    # the warning counted it "past the braid lock" while its reason column said only "outside
+    # the training domain": the one the warning points to had another reason
+    code, out, err = mkm_run(["fem", "solve", "--model", "surrogate", "--D0", "35", "--t0", "2.5",
+                              "--theta0", "40", "--eps", "0.3", "--pressures", "1"])
+    eps_max = 1 - 1 / (np.sqrt(3) * np.cos(np.deg2rad(40.0)))  # 0.2463 < 0.3
+    why = f"past the braid lock: eps >= eps_max {eps_max:.4g} at theta0 40 deg"
+    (reason,) = pd.read_csv(io.StringIO(out)).reason
+    assert code == 0 and reason.startswith(f"{why}; outside the training domain: eps=0.3 not in")
+    assert f"(1 {why})" in err
+
+
 def test_solve_out_keeps_the_users_files_beside_it(tmp_path, mkm_run):
     # the README's lab.json (mkm fem calibrate --out) read by --calibration while --out lab.csv
     # names the sweep: its metadata went to lab.json, replacing the calibration it had just read
