@@ -262,7 +262,9 @@ def search(requirements, constraints: Constraints | dict | None = None,
     parameter_box = getattr(base, "box", {})
     outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration)
     searcher_note = ""
-    if outside and spec.text == REFERENCE_SPEC:
+    gap = constraints.gap_mm or 0.0
+    # with a gap the FE model searches wherever the request lies: no surrogate models one
+    if outside and spec.text == REFERENCE_SPEC and not gap:
         # the practical range's surrogate searches where it covers what the default's box does not
         wider = parse_spec(RANGE_SPEC)
         wide = _build(wider.text, calibration)
@@ -274,7 +276,6 @@ def search(requirements, constraints: Constraints | dict | None = None,
     at = _predicts_at(base, calibration)
     # the FE model's, as verified
     theta0_default = float(calibrated("axisym", calibration)["theta0_deg"])
-    gap = constraints.gap_mm or 0.0
     # the surrogate has no gap: the FE model, which takes it, searches (in the surrogate's box)
     unmodelled = [f"gap_mm={gap:g}, which the surrogate does not model"] if gap else []
     surrogate_box = {"D0_mm": list(domain.D0_mm), "t0_mm": list(domain.t0_mm)}

@@ -609,6 +609,23 @@ def test_a_gap_makes_the_fe_search_and_verify_with_it():
                    tolerances=Tolerances.parse("D0=0.3"))
 
 
+def test_a_gap_beyond_the_default_box_says_the_fe_searched_not_a_surrogate():
+    # D0 25 mm is beyond the default surrogate's 30:50 mm: the summary said "the practical
+    # range's surrogate searched" beside "the FE model (coarse mesh) searched instead", and the
+    # box line measured the box against that surrogate's, which searched nothing
+    result = run_design(["300N@2.5bar,eps=0.1"], {"D0_mm": "25:27", "t0_mm": "2:2.5",
+                                                  "gap_mm": 0.5}, top=1, mesh=MESH)
+    summary = result.summary()
+    assert "surrogate searched" not in summary and result.search.searcher_note == ""
+    assert summary.startswith("outside the surrogate's training box (D0_mm=25:27 beyond "
+                              "30:50); gap_mm=0.5, which the surrogate does not model: the FE "
+                              "model (coarse mesh) searched instead")
+    assert result.search.box_note() == ("searched the box D0 25:27 mm x t0 2:2.5 mm (as "
+                                        "constrained), beyond the surrogate's D0 30:50 mm x "
+                                        "t0 2:4 mm")
+    assert result.chosen["meets_all"]
+
+
 def test_a_searching_margin_larger_than_the_requirement_is_said():
     # the physics kind has no predictive std: it clears each requirement by twice its largest
     # recorded held-out error (2 x 269 N = 538 N, 1.8 x a 300 N requirement), and its chosen
