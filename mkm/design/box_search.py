@@ -587,9 +587,14 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force"))
+    edge = ""
+    if edges := box_edges(closest, result.constraints):  # the box, not the physics, may be short
+        ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
+        edge = (f"; it sits on the edge of the search box {box_text(ranges)}: "
+                f"{', '.join(edges)}; a larger box might hold a design that meets them")
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
-            + "; ".join(parts) + _beyond_practical_range(closest, result.requirements))
+            + "; ".join(parts) + edge + _beyond_practical_range(closest, result.requirements))
 
 
 def pick(feasible: pd.DataFrame, top: int, box: dict) -> pd.DataFrame:

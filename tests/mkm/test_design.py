@@ -147,6 +147,19 @@ def test_infeasible_names_the_closest_design_and_its_shortfall():
     assert float(match[3]) == pytest.approx(5000.0 - strongest["r1_surrogate_N"], abs=1.0)
 
 
+def test_an_infeasible_design_on_the_edge_of_the_box_says_a_larger_box_might_do(mkm_run,
+                                                                               tmp_path):
+    # 500 N at 1 bar from a 50 mm tube: the default surrogate's box stops at t0 2 mm, where the
+    # closest design sat, and the message named neither the box nor that edge (the practical
+    # range's thinner walls were never tried)
+    code, out, err = mkm_run(["design", "--require", "500N@1bar,eps=0.10", "--D0", "50",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 2 and err.count("\n") == 1, err
+    assert "closest: D0 = 50.00 mm, t0 = 2.00 mm" in err
+    assert err.endswith("; it sits on the edge of the search box t0 2:4 mm: t0 = 2 mm (the "
+                        "lower end of 2:4); a larger box might hold a design that meets them\n")
+
+
 def test_conflicting_constraints_are_named():
     with pytest.raises(ValueError, match=r"max_outer_diameter_mm=40 conflicts with D0_mm >= 45"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": (45, 50), "max_outer_diameter_mm": 40})
