@@ -320,8 +320,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
 
 def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
     """mkm export's workbook as the run it was: its steps as recorded (set pressures, holds,
-    uncertainty budgets), its samples, its calibration and tare (from ``known``, its metadata
-    sheet), each sheet checked as a run folder's files are
+    uncertainty budgets), its samples, its calibration, tare, hardware, sequence (the settling
+    tolerance the report scores with) and whether it was simulated (from ``known``, its
+    metadata sheet), each sheet checked as a run folder's files are
     (:func:`mkm.bench.storage.checked_rows`)."""
     from mkm.bench.storage import SAMPLE_COLUMNS, STEP_COLUMNS, checked_rows
 
@@ -341,15 +342,18 @@ def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
             index=False)]
         notes.insert(0, f"{len(samples)} samples")
         shape = "export"
-    for part in ("calibration", "tare"):
+    for part in ("calibration", "tare", "hardware", "sequence"):
         restored = _unflattened(known, part)
         if restored:
             setattr(meta, part, restored)
+    # a simulated run stays one: read back as a measurement, its report would not say it
+    meta.simulated = _cell_value(known.get("simulated")) is True
     status, reason = known.get("status"), known.get("reason")
     if status and status != "complete":  # a run cut short stays marked with why
         meta.reason += f"; recorded as {status}: {reason or 'no reason recorded'}"
     meta.imported_from = {**meta.imported_from, "shape": shape,
-                          "restored": "steps, samples, calibration and tare of mkm export",
+                          "restored": "steps, samples, calibration, tare, hardware and sequence of "
+                          "mkm export",
                           "recorded_status": status, "recorded_reason": reason}
     meta.counters["samples"] = len(samples)
     return meta, steps, samples, notes, shape

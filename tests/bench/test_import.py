@@ -581,8 +581,8 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
 
 def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, mkm_cli):
     """A colleague's exported bench run imports back with its own steps (set pressures, holds,
-    uncertainty budgets), samples, calibration and tare, so the report scores E_n and identify
-    sees timed holds as they were."""
+    uncertainty budgets), samples, calibration, tare, hardware and sequence, so the report
+    scores E_n and identify sees timed holds as they were."""
     from mkm.bench.run import acquire
 
     run = load_run(acquire(config, out_root=tmp_path / "bench",
@@ -596,6 +596,13 @@ def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, m
     assert (again.meta.calibration, again.meta.tare) == (run.meta.calibration, run.meta.tare)
     assert again.steps["force_U_N"].notna().all()
     assert again.meta.imported_from["recorded_status"] == "complete"
+    # a simulated run stays one (was: read back as a measurement, its report without the
+    # SIMULATED warning) and keeps its sequence, whose settling tolerance moves a top step of
+    # 2.50005 bar onto a 2.5 bar surrogate's edge as in the original's report (was: refused)
+    assert run.meta.simulated and again.meta.simulated
+    assert again.path.name.endswith("-imported-SIMULATED")
+    assert again.meta.hardware == run.meta.hardware
+    assert again.meta.sequence == run.meta.sequence
 
 
 def test_an_exported_run_that_was_cut_short_stays_marked_with_why(config, tmp_path, mkm_cli):
