@@ -206,15 +206,26 @@ def _answered(prediction, model):
         prediction = answered(prediction)
         own = np.asarray(prediction.extras["reason"], dtype=object)
         # after a reason of its own (past the braid lock), which the warning counts the point
-        # under, or in place of the bare "outside the model's domain"
-        general = (reason == "") | (reason == _OUTSIDE_DOMAIN)
-        reason = np.where(own == "", reason, np.where(general, own, reason + "; " + own))
+        # under, unless the surrogate's says it first; in place of the bare "outside the
+        # model's domain"
+        reason = np.reshape([_merged(r, o) for r, o in zip(reason.ravel(), own.ravel(),
+                                                           strict=True)],
+                            reason.shape).astype(object)
     extras = {**prediction.extras, "reason": reason}
     for name in ("force_std_N", "band95_N"):
         if name in extras:
             extras[name] = np.where(unanswered, np.nan, extras[name])
     return dataclasses.replace(prediction, extras=extras,
                                force_N=np.where(unanswered, np.nan, prediction.force_N))
+
+
+def _merged(reason: str, own: str) -> str:
+    """A point's reason of the sweep (:func:`_reasons`) and a surrogate's own, said once."""
+    if not own:
+        return reason
+    if not reason or reason == _OUTSIDE_DOMAIN or own.startswith(reason):
+        return own
+    return f"{reason}; {own}"
 
 
 def _invalid_reasons(prediction) -> str:
@@ -229,7 +240,7 @@ def _reasons(prediction) -> list:
     physical limit), not converged, outside the model's domain."""
     import numpy as np
 
-    from mkm.fem.limits import lock_eps
+    from mkm.fem.limits import lock_eps, past_lock_text
     from mkm.fem.outcomes import BRAID_LOCKS, classify
 
     bad = ~np.asarray(prediction.valid, dtype=bool)
@@ -238,9 +249,7 @@ def _reasons(prediction) -> list:
     if isinstance(theta0, int | float):
         locked = bad & (np.asarray(prediction.eps, dtype=float) >= lock_eps(float(theta0)))
         if locked.any():
-            reasons.append((f"past the braid lock: eps >= eps_max "
-                            f"{lock_eps(float(theta0)):.4g} at theta0 {float(theta0):g} deg",
-                            locked))
+            reasons.append((past_lock_text(float(theta0)), locked))
             bad = bad & ~locked
     status = np.reshape(classify(prediction), bad.shape)
     # short of eps_max only where the points past it were told apart above (auto's candidates
