@@ -299,8 +299,12 @@ def _calibrate(args) -> int:
 
     args.reference = args.reference or str(CASE_I_CSV)
     reference, name, sha256 = calibration_reference(args.reference)
-    fitted = calibrate(lambda **params: model_from_args(args, **params), reference,
-                       args.target, getattr(args, "L0", None))
+    try:
+        fitted = calibrate(lambda **params: model_from_args(args, **params), reference,
+                           args.target, getattr(args, "L0", None))
+    except RuntimeError as exc:  # a fit that failed: said, nothing written
+        say(args, "error", f"{exc} at every point of {name}; nothing written")
+        return 1
     model = fitted.model
     # stored before anything is printed: `| head` closing stdout must not lose the fit
     paths = [] if args.dry_run else [p for p in (args.out, args.update_shipped and

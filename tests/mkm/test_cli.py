@@ -374,6 +374,23 @@ def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(mkm_run):
     assert lines[1] == "pressure_bar,reference_N,model_N" and len(lines) == 2 + 11
 
 
+def test_calibrate_on_a_reference_past_the_braid_lock_is_one_line(tmp_path, mkm_run):
+    # held at eps 0.35, past the lock of every angle above 27.4 deg (cos theta0 = 1 / (sqrt 3
+    # x 0.65)): no angle the search tried gave valid forces, and the command ended in a
+    # RuntimeError's traceback
+    reference = tmp_path / "locked.csv"
+    reference.write_text("pressure_bar,D0_mm,t0_mm,eps,force_N\n" + "".join(
+        f"{p:g},30,3,0.35,{f:g}\n" for p, f in ((0.5, 0), (1, 0.5), (1.5, 1), (2, 1.5),
+                                                  (2.5, 2))), encoding="utf-8")
+    out = tmp_path / "lab.json"
+    code, stdout, err = mkm_run(["fem", "calibrate", "--model", "eq2", "--reference",
+                                 str(reference), "--out", str(out)])
+    assert code == 1 and stdout == "" and not out.exists()
+    assert err == ("mkm fem calibrate: error: calibration failed: the search over theta0 in "
+                   "[15, 50] deg found no angle giving valid forces at every point of "
+                   f"{reference.name}; nothing written\n")
+
+
 @pytest.mark.slow  # a fresh process
 def test_installed_console_script_runs():
     mkm = Path(sys.executable).with_name("mkm")
