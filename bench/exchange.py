@@ -503,8 +503,7 @@ def _muscle(given: dict, group: _Group):
             # are measured, their eps follows from the rest length
             values["L0_mm"] = float(given["L0_mm"])
             override = (f"L0 {values['L0_mm']:g} mm from --L0 over the table's "
-                        f"{table_L0:g} mm (column {group.columns['L0'].header!r}): eps "
-                        f"from the held lengths (column {group.columns['length'].header!r})")
+                        f"{table_L0:g} mm (column {group.columns['L0'].header!r})")
     if "eps" in group.columns and override is None:
         values["eps"] = _single(group, "eps")
         column = group.columns["eps"]
@@ -521,6 +520,9 @@ def _muscle(given: dict, group: _Group):
         if values["eps"] < 0:
             raise ValueError(f"{where}length {length:g} mm is above L0 = {values['L0_mm']:g} "
                              "mm: expected a held length at most the length at rest")
+        if override is not None:  # the eps the run gets, not the state's (the table's) eps
+            override += (f": eps {values['eps']:.4g} from the held length {length:g} mm "
+                         f"(column {group.columns['length'].header!r})")
     # an option the table's own column would silently override is a conflict, said
     for key, option, roles in (("L0_mm", "--L0", ("L0",)), ("eps", "--eps", ("eps", "length"))):
         column = next((group.columns[r] for r in roles if r in group.columns), None)

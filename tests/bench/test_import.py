@@ -762,9 +762,13 @@ def test_l0_given_replaces_the_tables_and_the_held_lengths_give_eps(tmp_path, mk
     runs, err = _import(mkm_cli, path, "--id", "m", "--D0", "30", "--t0", "3", "--L0", "282")
     assert sorted(r.meta.muscle.eps for r in runs) == pytest.approx([32 / 282, 42 / 282])
     assert {r.meta.muscle.L0_mm for r in runs} == {282.0}
-    note = ("L0 282 mm from --L0 over the table's 250 mm (column 'L0_mm'): eps from the held "
-            "lengths (column 'length')")
-    assert err.count(note) == 2 and all(r.meta.imported_from["L0"] == note for r in runs)
+    # each line names the eps its run gets (was: "eps 0, ... L0 250 mm" with no eps of its own,
+    # for a run written at eps 0.1135, L0 282 mm)
+    notes = {f"L0 282 mm from --L0 over the table's 250 mm (column 'L0_mm'): eps {eps} from "
+             f"the held length {length} mm (column 'length')" for eps, length in
+             (("0.1135", 250), ("0.1489", 240))}  # (282 - 250) / 282, (282 - 240) / 282
+    assert all(err.count(note) == 1 for note in notes), err
+    assert {r.meta.imported_from["L0"] for r in runs} == notes
 
 
 def test_calibrate_reads_an_imported_run(tmp_path, mkm_cli):
