@@ -507,7 +507,8 @@ def box_text(box: dict) -> str:
 def box_edges(row, box: dict) -> list[str]:
     """The searched ranges of ``box`` (D0, t0, L0, theta0; a fixed value is no range) whose
     end a design ``row`` sits on, as ``D0 = 30 mm (the lower end of 30:50)``: there a larger
-    box might hold a better design."""
+    box might hold a better design. An end at the practical range's limit is none: the search
+    refuses a box beyond it."""
     edges = []
     for key, name in BOX_NAMES.items():
         low, high = box.get(key, (0.0, 0.0))
@@ -515,8 +516,10 @@ def box_edges(row, box: dict) -> list[str]:
             continue
         at = float(row[key])
         unit = "deg" if key.endswith("deg") else "mm"
-        for end, bound in (("lower", low), ("upper", high)):
-            if abs(at - bound) <= 1e-6 * (high - low):  # the grids hold both ends exactly
+        limits = getattr(PRACTICAL_RANGE, key)
+        for end, bound, limit in (("lower", low, limits[0]), ("upper", high, limits[1])):
+            tol = 1e-6 * (high - low)  # the grids hold both ends exactly
+            if abs(at - bound) <= tol and abs(bound - limit) > tol:
                 edges.append(f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})")
     return edges
 

@@ -158,6 +158,12 @@ def test_an_infeasible_design_on_the_edge_of_the_box_says_a_larger_box_might_do(
     assert "closest: D0 = 50.00 mm, t0 = 2.00 mm" in err
     assert err.endswith("; it sits on the edge of the search box t0 2:4 mm: t0 = 2 mm (the "
                         "lower end of 2:4); a larger box might hold a design that meets them\n")
+    # at the practical range's thinnest wall no larger box can be searched: no such advice
+    code, out, err = mkm_run(["design", "--require", "500N@1bar,eps=0.10", "--D0", "50",
+                              "--t0", "0.5:4", "--mesh", MESH, "--no-progress", "--out",
+                              str(tmp_path)])
+    assert code == 2 and "closest: D0 = 50.00 mm, t0 = 0.50 mm" in err
+    assert "edge" not in err and re.search(r"short by \d+ N \(predicted \d+ N\)\n$", err), err
 
 
 def test_conflicting_constraints_are_named():
