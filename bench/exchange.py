@@ -335,8 +335,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
 
 def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
     """mkm export's workbook as the run it was: its steps as recorded (set pressures, holds,
-    uncertainty budgets), its samples, its calibration and tare (from ``known``, its metadata
-    sheet), each sheet checked as a run folder's files are
+    uncertainty budgets), its samples, its calibration, tare, hardware, sequence (the settling
+    tolerance the report scores with) and whether it was simulated (from ``known``, its
+    metadata sheet), each sheet checked as a run folder's files are
     (:func:`mkm.bench.storage.checked_rows`)."""
     from mkm.bench.storage import SAMPLE_COLUMNS, STEP_COLUMNS, checked_rows
 
@@ -356,15 +357,18 @@ def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
             index=False)]
         notes.insert(0, f"{len(samples)} samples")
         shape = "export"
-    for part in ("calibration", "tare"):
+    for part in ("calibration", "tare", "hardware", "sequence"):
         restored = _unflattened(known, part)
         if restored:
             setattr(meta, part, restored)
+    # a simulated run stays one: read back as a measurement, its report would not say it
+    meta.simulated = _cell_value(known.get("simulated")) is True
     status, reason = known.get("status"), known.get("reason")
     if status and status != "complete":  # a run cut short stays marked with why
         meta.reason += f"; recorded as {status}: {reason or 'no reason recorded'}"
     meta.imported_from = {**meta.imported_from, "shape": shape,
-                          "restored": "steps, samples, calibration and tare of mkm export",
+                          "restored": "steps, samples, calibration, tare, hardware and sequence of "
+                          "mkm export",
                           "recorded_status": status, "recorded_reason": reason}
     if TABLE_COPY in sheet_names(path):  # the table the exported run came from, carried on
         meta.imported_from.update(table_copy=TABLE_COPY + path.suffix.lower(),
@@ -517,8 +521,7 @@ def _muscle(given: dict, group: _Group):
             # are measured, their eps follows from the rest length
             values["L0_mm"] = float(given["L0_mm"])
             override = (f"L0 {values['L0_mm']:g} mm from --L0 over the table's "
-                        f"{table_L0:g} mm (column {group.columns['L0'].header!r}): eps "
-                        f"from the held lengths (column {group.columns['length'].header!r})")
+                        f"{table_L0:g} mm (column {group.columns['L0'].header!r})")
     if "eps" in group.columns and override is None:
         values["eps"] = _single(group, "eps")
         column = group.columns["eps"]
@@ -535,6 +538,9 @@ def _muscle(given: dict, group: _Group):
         if values["eps"] < 0:
             raise ValueError(f"{where}length {length:g} mm is above L0 = {values['L0_mm']:g} "
                              "mm: expected a held length at most the length at rest")
+        if override is not None:  # the eps the run gets, not the state's (the table's) eps
+            override += (f": eps {values['eps']:.4g} from the held length {length:g} mm "
+                         f"(column {group.columns['length'].header!r})")
     # an option the table's own column would silently override is a conflict, said
     for key, option, roles in (("L0_mm", "--L0", ("L0",)), ("eps", "--eps", ("eps", "length"))):
         column = next((group.columns[r] for r in roles if r in group.columns), None)

@@ -421,7 +421,8 @@ def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
     theta0 = round(float(res.x), 3)
     pred = predict(theta0)
     if not pred.valid.all():
-        raise RuntimeError(f"calibration failed: no theta0 in {bounds} deg gives valid forces")
+        raise RuntimeError(f"calibration failed: the search over theta0 in [{bounds[0]:g}, "
+                           f"{bounds[1]:g}] deg found no angle giving valid forces")
     lines = model_lines(pred)
     residual = pred.force_N - measured
     slope_res = [(s - ref[1]) / ref[1] for (s, _), ref in zip(lines, ref_lines, strict=True)]

@@ -105,6 +105,14 @@ def lock_eps(theta0_deg):
     return 1.0 - 1.0 / (math.sqrt(3.0) * cos)
 
 
+def past_lock_text(theta0_deg: float) -> str:
+    """Why a point at or past the braid lock of ``theta0_deg`` [deg] has no force, as every
+    table's reason column says it: ``past the braid lock: eps >= eps_max 0.2463 at theta0 40
+    deg``."""
+    return (f"past the braid lock: eps >= eps_max {lock_eps(float(theta0_deg)):.4g} at theta0 "
+            f"{float(theta0_deg):g} deg")
+
+
 @dataclass(frozen=True)
 class PracticalRange:
     """A box of muscles: ``(low, high)`` per named quantity (both included) and the coupled

@@ -109,7 +109,8 @@ def copy_published_table(name: str, to: str | os.PathLike | None = None) -> Path
     if target.exists():
         raise ValueError(f"{target} exists: kept as it is; name a new file for {name}")
     if not target.parent.is_dir():
-        raise ValueError(f"{target.parent}: no such folder")
+        raise ValueError(f"TO {str(to)!r}: no such folder {str(target.parent)!r}: expected the "
+                         "file in an existing folder (make it first)")
     shutil.copyfile(source, target)
     return target
 

@@ -501,11 +501,21 @@ def _simulated_badge(r: _Run) -> str:
     return ' <span class="bad">SIMULATED</span>' if _simulated(r) else ""
 
 
+def _past_braid_lock(r: _Run):
+    """The braid lock (:func:`mkm.fem.eq2.braid_lock`) a run is held at or past, else None
+    (None too where the calibration has no FE angle: no lock known)."""
+    from mkm.fem.eq2 import braid_lock
+
+    try:
+        lock = braid_lock(r.muscle.theta0_deg, r.calibration)
+    except ValueError:
+        return None
+    return lock if r.muscle.eps >= lock.eps_max else None
+
+
 def _banners(runs: list[_Run]) -> str:
     """One line per fact the reader must know before any number: simulated runs, runs held past
     the braid lock (where no model is valid)."""
-    from mkm.fem.eq2 import braid_lock
-
     out = []
     simulated = [r for r in runs if _simulated(r)]
     if simulated:
@@ -513,11 +523,7 @@ def _banners(runs: list[_Run]) -> str:
         out.append(f"SIMULATED: {which} came from the simulated bench (a model with noise), "
                    "not from a measurement.")
     for r in runs:
-        try:
-            lock = braid_lock(r.muscle.theta0_deg, r.calibration)
-        except ValueError:  # a calibration file without the FE model's angle: no lock known
-            continue
-        if r.muscle.eps >= lock.eps_max:
+        if lock := _past_braid_lock(r):
             out.append(f"Run {r.k} is held at eps {r.eps_pct:.1f} %, past the braid lock: "
                        f"{lock}. No model is valid there: the braid cannot shorten so far, so "
                        "the muscle pulls little or nothing and every model's number is flagged "
@@ -844,7 +850,8 @@ def _auto_choice(r: _Run, tolerance: float) -> AutoPick | None:
 
     if tolerance not in r.auto_choices:
         choice = None
-        if not r.run.steps.empty and MODEL_ERRORS_FILE.exists():
+        # past the braid lock no model answers: auto's pick would be named for no force
+        if not r.run.steps.empty and MODEL_ERRORS_FILE.exists() and not _past_braid_lock(r):
             m = r.predicted
             auto = AutoModel(tolerance=tolerance,
                              build=partial(build_spec, calibration=r.calibration),

@@ -18,7 +18,7 @@ import numpy as np
 from threadpoolctl import ThreadpoolController
 
 from mkm.fem.interface import INPUTS, Domain, ForceModel, Prediction
-from mkm.fem.limits import PRACTICAL_RANGE, check_value
+from mkm.fem.limits import PRACTICAL_RANGE, check_value, lock_eps, past_lock_text
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.paper import L0_MM
 from mkm.surrogate.kinds import RANGE
@@ -239,6 +239,7 @@ class SurrogateForceModel(ForceModel):
         reason = np.full(prediction.force_N.shape, "", dtype=object)
         inputs = {name: np.broadcast_to(getattr(prediction, name), reason.shape)
                   for name in INPUTS}
+        locked = np.broadcast_to(self._past_lock(inputs["eps"], self.parameters), reason.shape)
         for index in np.ndindex(reason.shape):  # a scalar prediction's index is ()
             if not unanswered[index]:
                 continue
@@ -248,7 +249,10 @@ class SurrogateForceModel(ForceModel):
                 slack = 1e-9 * max(abs(lo), abs(hi), 1.0)  # as Domain.contains allows
                 if not lo - slack <= float(values[index]) <= hi + slack:
                     parts.append(f"{name}={float(values[index]):g} not in [{lo:g}, {hi:g}]")
-            reason[index] = "outside the training domain: " + "; ".join(parts + outside)
+            said = [past_lock_text(self.parameters["theta0_deg"])] if locked[index] else []
+            if parts + outside or not said:
+                said.append("outside the training domain: " + "; ".join(parts + outside))
+            reason[index] = "; ".join(said)
         extras = {**prediction.extras, "reason": reason}
         if "force_std_N" in extras:
             extras["force_std_N"] = np.where(unanswered, np.nan, extras["force_std_N"])
@@ -266,6 +270,15 @@ class SurrogateForceModel(ForceModel):
             if not lo - slack <= value <= hi + slack:
                 out.append(f"{name}={value:g} not in [{lo:g}, {hi:g}]")
         return out
+
+    def _past_lock(self, eps, parameters) -> np.ndarray:
+        """Where ``eps`` is at or past the braid lock of the muscle's angle: no muscle was
+        trained there (the practical range's eps box reaches the lock of its lowest angle, far
+        past that of a steeper one, where the estimator would extrapolate a number)."""
+        theta0 = parameters.get("theta0_deg")
+        if theta0 is None:
+            return np.zeros(np.shape(eps), dtype=bool)
+        return np.asarray(eps, dtype=float) >= lock_eps(float(theta0))
 
     def _range_hint(self, P, D0, t0, eps, parameters) -> str:
         """Where every point lies in the practical range and this is not the range's kind: the
@@ -285,13 +298,17 @@ class SurrogateForceModel(ForceModel):
 
     def _forces(self, P, D0, t0, eps):
         parameters = self.parameters  # refuses a recorded parameter at another value
-        inside = self.domain.contains(P, D0, t0, eps)
+        in_box = self.domain.contains(P, D0, t0, eps)
+        locked = self._past_lock(eps, parameters)
+        inside = in_box & ~locked
         outside = self.parameters_outside(parameters)
         if outside:
             inside = np.zeros(P.shape, dtype=bool)
         if not inside.all():
             n_out = int((~inside).sum())
-            why = "; ".join(outside) if outside else _describe(self.domain)
+            why = "; ".join(outside) if outside else "; ".join(
+                ([_describe(self.domain)] if not in_box.all() else [])
+                + ([past_lock_text(parameters["theta0_deg"])] if locked.any() else []))
             warnings.warn(f"{n_out} of {inside.size} points lie outside the training domain "
                           f"({why}): flagged valid=False, in_domain=False"
                           + self._range_hint(P, D0, t0, eps, parameters),

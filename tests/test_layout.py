@@ -90,3 +90,39 @@ def test_the_lowest_tested_versions_are_the_lower_bounds():
                       if line.strip() and not line.startswith("#")], "==")
     bounds = _versions(CONFIG["project"]["dependencies"], ">=")
     assert pins == bounds
+
+
+def _text_io_without_encoding(path: Path) -> list[str]:
+    """The calls in ``path`` that open a file as text without naming its encoding: ``open``
+    (``Path.open`` with a text mode), ``read_text``, ``write_text`` with neither ``encoding=``
+    nor a positional one (``Path.read_text``'s first argument) nor a binary mode."""
+    import ast
+
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if not isinstance(node, ast.Call):
+            continue
+        func = node.func
+        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", None)
+        if name not in ("open", "read_text", "write_text"):
+            continue
+        if any(k.arg == "encoding" for k in node.keywords):
+            continue
+        texts = [a.value for a in node.args if isinstance(a, ast.Constant)
+                 and isinstance(a.value, str)]
+        if name == "read_text" and node.args or name == "write_text" and len(node.args) > 1:
+            continue  # the encoding given positionally
+        if name == "open" and (any("b" in t for t in texts) or isinstance(func, ast.Attribute)
+                               and not texts):
+            continue  # a binary file; a device's, an archive member's or a descriptor's open()
+        found.append(f"{path.relative_to(ROOT)}:{node.lineno}")
+    return found
+
+
+def test_every_shipped_text_file_is_opened_with_its_encoding():
+    """Windows opens text in its ANSI code page (cp1252 in Western Europe) unless told: a
+    ``µs`` or a ``ü`` would be read or written differently there than on Linux."""
+    found = [hit for folder in set(_package_dir().values())
+             for path in sorted((ROOT / folder).rglob("*.py"))
+             for hit in _text_io_without_encoding(path)]
+    assert found == []

@@ -205,13 +205,27 @@ def _answered(prediction, model):
     if answered is not None:  # a surrogate names the inputs outside its box
         prediction = answered(prediction)
         own = np.asarray(prediction.extras["reason"], dtype=object)
-        reason = np.where(own != "", own, reason)
+        # after a reason of its own (past the braid lock), which the warning counts the point
+        # under, unless the surrogate's says it first; in place of the bare "outside the
+        # model's domain"
+        reason = np.reshape([_merged(r, o) for r, o in zip(reason.ravel(), own.ravel(),
+                                                           strict=True)],
+                            reason.shape).astype(object)
     extras = {**prediction.extras, "reason": reason}
     for name in ("force_std_N", "band95_N"):
         if name in extras:
             extras[name] = np.where(unanswered, np.nan, extras[name])
     return dataclasses.replace(prediction, extras=extras,
                                force_N=np.where(unanswered, np.nan, prediction.force_N))
+
+
+def _merged(reason: str, own: str) -> str:
+    """A point's reason of the sweep (:func:`_reasons`) and a surrogate's own, said once."""
+    if not own:
+        return reason
+    if not reason or reason == _OUTSIDE_DOMAIN or own.startswith(reason):
+        return own
+    return f"{reason}; {own}"
 
 
 def _invalid_reasons(prediction) -> str:
@@ -226,7 +240,7 @@ def _reasons(prediction) -> list:
     physical limit), not converged, outside the model's domain."""
     import numpy as np
 
-    from mkm.fem.limits import lock_eps
+    from mkm.fem.limits import lock_eps, past_lock_text
     from mkm.fem.outcomes import BRAID_LOCKS, classify
 
     bad = ~np.asarray(prediction.valid, dtype=bool)
@@ -235,9 +249,7 @@ def _reasons(prediction) -> list:
     if isinstance(theta0, int | float):
         locked = bad & (np.asarray(prediction.eps, dtype=float) >= lock_eps(float(theta0)))
         if locked.any():
-            reasons.append((f"past the braid lock: eps >= eps_max "
-                            f"{lock_eps(float(theta0)):.4g} at theta0 {float(theta0):g} deg",
-                            locked))
+            reasons.append((past_lock_text(float(theta0)), locked))
             bad = bad & ~locked
     status = np.reshape(classify(prediction), bad.shape)
     # short of eps_max only where the points past it were told apart above (auto's candidates
@@ -251,8 +263,11 @@ def _reasons(prediction) -> list:
             reasons.append((said, these))
             bad = bad & ~these
     if bad.any():
-        reasons.append(("outside the model's domain", bad))
+        reasons.append((_OUTSIDE_DOMAIN, bad))
     return reasons
+
+
+_OUTSIDE_DOMAIN = "outside the model's domain"
 
 
 def _outside_practical_range(prediction, D0_mm: float, t0_mm: float) -> list[str]:
@@ -284,8 +299,12 @@ def _calibrate(args) -> int:
 
     args.reference = args.reference or str(CASE_I_CSV)
     reference, name, sha256 = calibration_reference(args.reference)
-    fitted = calibrate(lambda **params: model_from_args(args, **params), reference,
-                       args.target, getattr(args, "L0", None))
+    try:
+        fitted = calibrate(lambda **params: model_from_args(args, **params), reference,
+                           args.target, getattr(args, "L0", None))
+    except RuntimeError as exc:  # a fit that failed: said, nothing written
+        say(args, "error", f"{exc} at every point of {name}; nothing written")
+        return 1
     model = fitted.model
     # stored before anything is printed: `| head` closing stdout must not lose the fit
     paths = [] if args.dry_run else [p for p in (args.out, args.update_shipped and

@@ -236,8 +236,8 @@ def _grid(args) -> int:
     table = paper_grid_study(args.out, args.dataset or PAPER_DATASET, args.seeds, args.jobs,
                              variants, nets, progress=not args.no_progress)
     summary_line("surrogate grid", f"{len(table)} configurations x {args.seeds} splits in "
-                 f"{time.perf_counter() - start:.0f} s; wrote {args.out}/paper_grid.csv, .md, "
-                 ".png")
+                 f"{time.perf_counter() - start:.0f} s; wrote "
+                 f"{Path(args.out) / 'paper_grid.csv'}, .md, .png")
     return 0
 
 
@@ -331,7 +331,8 @@ def _test(args) -> int:
     _figure6(Path(args.out), reference)
     print(summary.to_string(index=False, float_format=lambda v: f"{v:.3g}"))
     summary_line("surrogate test", f"{len(models)} model(s), worst |Err%| "
-                 f"{summary['max_abs_err_pct'].max():.2f} %; wrote {args.out}/test_muscles.csv, "
+                 f"{summary['max_abs_err_pct'].max():.2f} %; wrote "
+                 f"{Path(args.out) / 'test_muscles.csv'}, "
                  "test_muscles.md, test_muscles.png")
     return 0
 
@@ -433,5 +434,5 @@ def _evaluate(args) -> int:
                  f"{summary['worst_max_abs_err_pct']:.3f} %, pooled RMSE "
                  f"{summary['pooled_rmse_N']:.3f} N{cover}; {box['flagged']} of {box['points']} "
                  f"points outside the box flagged; {time.perf_counter() - start:.0f} s; wrote "
-                 f"{out}/offgrid_points.csv, offgrid_summary.json")
+                 f"{out / 'offgrid_points.csv'}, offgrid_summary.json")
     return 0

@@ -79,7 +79,8 @@ def convert_unit(value: float, typed: str, unit: str, what: str) -> float:
 
 #: what a unit typed may look like, per unit of an option (for the messages)
 UNIT_EXAMPLES = {"mm": "282mm or 1.5in", "bar": "2.5bar or 250kPa", "deg": "30deg",
-                 "s": "90s or 2min", "kg": "5kg or 500g", "V": "2V or 500mV"}
+                 "s": "90s or 2min", "kg": "5kg or 500g", "V": "2V or 500mV",
+                 "N": "300N or 0.3kN", "MPa": "0.07MPa or 70kPa"}
 
 
 @cache

@@ -262,7 +262,9 @@ def search(requirements, constraints: Constraints | dict | None = None,
     parameter_box = getattr(base, "box", {})
     outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration)
     searcher_note = ""
-    if outside and spec.text == REFERENCE_SPEC:
+    gap = constraints.gap_mm or 0.0
+    # with a gap the FE model searches wherever the request lies: no surrogate models one
+    if outside and spec.text == REFERENCE_SPEC and not gap:
         # the practical range's surrogate searches where it covers what the default's box does not
         wider = parse_spec(RANGE_SPEC)
         wide = _build(wider.text, calibration)
@@ -274,7 +276,6 @@ def search(requirements, constraints: Constraints | dict | None = None,
     at = _predicts_at(base, calibration)
     # the FE model's, as verified
     theta0_default = float(calibrated("axisym", calibration)["theta0_deg"])
-    gap = constraints.gap_mm or 0.0
     # the surrogate has no gap: the FE model, which takes it, searches (in the surrogate's box)
     unmodelled = [f"gap_mm={gap:g}, which the surrogate does not model"] if gap else []
     surrogate_box = {"D0_mm": list(domain.D0_mm), "t0_mm": list(domain.t0_mm)}
@@ -506,7 +507,8 @@ def box_text(box: dict) -> str:
 def box_edges(row, box: dict) -> list[str]:
     """The searched ranges of ``box`` (D0, t0, L0, theta0; a fixed value is no range) whose
     end a design ``row`` sits on, as ``D0 = 30 mm (the lower end of 30:50)``: there a larger
-    box might hold a better design."""
+    box might hold a better design. An end at the practical range's limit is none: the search
+    refuses a box beyond it."""
     edges = []
     for key, name in BOX_NAMES.items():
         low, high = box.get(key, (0.0, 0.0))
@@ -514,8 +516,10 @@ def box_edges(row, box: dict) -> list[str]:
             continue
         at = float(row[key])
         unit = "deg" if key.endswith("deg") else "mm"
-        for end, bound in (("lower", low), ("upper", high)):
-            if abs(at - bound) <= 1e-6 * (high - low):  # the grids hold both ends exactly
+        limits = getattr(PRACTICAL_RANGE, key)
+        for end, bound, limit in (("lower", low, limits[0]), ("upper", high, limits[1])):
+            tol = 1e-6 * (high - low)  # the grids hold both ends exactly
+            if abs(at - bound) <= tol and abs(bound - limit) > tol:
                 edges.append(f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})")
     return edges
 
@@ -586,9 +590,14 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force"))
+    edge = ""
+    if edges := box_edges(closest, result.constraints):  # the box, not the physics, may be short
+        ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
+        edge = (f"; it sits on the edge of the search box {box_text(ranges)}: "
+                f"{', '.join(edges)}; a larger box might hold a design that meets them")
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
-            + "; ".join(parts) + _beyond_practical_range(closest, result.requirements))
+            + "; ".join(parts) + edge + _beyond_practical_range(closest, result.requirements))
 
 
 def pick(feasible: pd.DataFrame, top: int, box: dict) -> pd.DataFrame:

@@ -169,6 +169,10 @@ def step_slopes(steps: pd.DataFrame) -> np.ndarray:
     return np.gradient(mean_F, mean_P)[inverse]
 
 
+#: :attr:`RunData.sha256`'s key of the raw samples a reprocessed run was computed from
+REPROCESSED_FROM = "reprocessed from samples.csv"
+
+
 def load_run_data(path) -> RunData:
     """A run folder for identification; ``ValueError`` names a run that cannot serve.
 
@@ -229,6 +233,8 @@ def load_run_data(path) -> RunData:
     tare_se = float(np.std(tare, ddof=1) / np.sqrt(tare.size)) if tare.size > 1 else 0.0
     sha = {name: file_sha256(path / name) for name in ("steps.csv", "samples.csv")
            if (path / name).is_file()}
+    if source := (run.meta.reprocessed_from or {}).get("samples_sha256"):
+        sha[REPROCESSED_FROM] = source  # its raw samples are those of the run it came from
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
@@ -407,13 +413,19 @@ def load_runs(paths) -> list[RunData]:
                                  "length may differ)")
     seen: dict[str, RunData] = {}
     for run in runs:
-        # the same table imported twice (two folders, one measurement), or a copied run folder:
-        # counted twice, it would halve the intervals and predict each run from its twin
-        twin = seen.setdefault(run.sha256.get("steps.csv", run.name), run)
-        if twin is not run:
+        # the same table imported twice (two folders, one measurement), a copied run folder, or
+        # a run and its reprocessing (the same raw samples): counted twice, it would halve the
+        # intervals and predict each run from its twin
+        keys = {run.sha256.get("steps.csv", run.name)} | {
+            run.sha256[k] for k in ("samples.csv", REPROCESSED_FROM) if k in run.sha256}
+        twin = next((seen[k] for k in keys if k in seen), None)
+        if twin is not None:
             raise ValueError(f"runs {twin.name} and {run.name} hold the same measurement (their "
-                             "steps.csv are identical: one table imported twice, or a copied "
-                             "run folder): expected each run once; leave one of them out")
+                             "steps.csv are identical, or one reprocesses the other's samples: "
+                             "one table imported twice, a copied run folder, or a run and mkm "
+                             "reprocess's folder of it): expected each run once; leave one of "
+                             "them out")
+        seen.update(dict.fromkeys(keys, run))
     if not any(np.nanmax(r.steps["force_N_mean"].to_numpy(float), initial=0.0) > 0
                for r in runs):
         # a slack muscle (a published map at its shortest length): every model that predicts

@@ -81,6 +81,18 @@ def test_a_surrogate_sweep_past_its_box_keeps_the_answered_points_only(mkm_run):
                         "column)\n")
 
 
+def test_a_surrogate_point_past_the_braid_lock_says_so_in_its_reason_column(mkm_run):
+    # the warning counted it "past the braid lock" while its reason column said only "outside
+    # the training domain": the one the warning points to had another reason
+    code, out, err = mkm_run(["fem", "solve", "--model", "surrogate", "--D0", "35", "--t0", "2.5",
+                              "--theta0", "40", "--eps", "0.3", "--pressures", "1"])
+    eps_max = 1 - 1 / (np.sqrt(3) * np.cos(np.deg2rad(40.0)))  # 0.2463 < 0.3
+    why = f"past the braid lock: eps >= eps_max {eps_max:.4g} at theta0 40 deg"
+    (reason,) = pd.read_csv(io.StringIO(out)).reason
+    assert code == 0 and reason.startswith(f"{why}; outside the training domain: eps=0.3 not in")
+    assert f"(1 {why})" in err
+
+
 def test_solve_out_keeps_the_users_files_beside_it(tmp_path, mkm_run):
     # the README's lab.json (mkm fem calibrate --out) read by --calibration while --out lab.csv
     # names the sweep: its metadata went to lab.json, replacing the calibration it had just read
@@ -360,6 +372,23 @@ def test_calibrate_dry_run_prints_the_fit_and_stores_nothing(mkm_run):
     lines = out.splitlines()
     assert lines[0].startswith("model thickwall: theta0 = ") and "RMSE" in lines[0]
     assert lines[1] == "pressure_bar,reference_N,model_N" and len(lines) == 2 + 11
+
+
+def test_calibrate_on_a_reference_past_the_braid_lock_is_one_line(tmp_path, mkm_run):
+    # held at eps 0.35, past the lock of every angle above 27.4 deg (cos theta0 = 1 / (sqrt 3
+    # x 0.65)): no angle the search tried gave valid forces, and the command ended in a
+    # RuntimeError's traceback
+    reference = tmp_path / "locked.csv"
+    reference.write_text("pressure_bar,D0_mm,t0_mm,eps,force_N\n" + "".join(
+        f"{p:g},30,3,0.35,{f:g}\n" for p, f in ((0.5, 0), (1, 0.5), (1.5, 1), (2, 1.5),
+                                                  (2.5, 2))), encoding="utf-8")
+    out = tmp_path / "lab.json"
+    code, stdout, err = mkm_run(["fem", "calibrate", "--model", "eq2", "--reference",
+                                 str(reference), "--out", str(out)])
+    assert code == 1 and stdout == "" and not out.exists()
+    assert err == ("mkm fem calibrate: error: calibration failed: the search over theta0 in "
+                   "[15, 50] deg found no angle giving valid forces at every point of "
+                   f"{reference.name}; nothing written\n")
 
 
 @pytest.mark.slow  # a fresh process

@@ -67,6 +67,19 @@ def test_ni_without_driver_is_one_clear_line(tmp_path, capsys):
     assert [p.name for p in tmp_path.iterdir()] == ["mkm-state"]  # nothing was recorded
 
 
+def test_check_without_the_device_exits_as_getting_started_says(capsys):
+    # getting started said exit 2 for a device check cannot take; a device it cannot reach or
+    # use is a hardware failure, exit 1, as every bench command (a bad configuration: exit 2)
+    rc = main(["check", "--backend", "ni"])
+    err = capsys.readouterr().err
+    assert rc == 1 and err.startswith("mkm check: error: NI-DAQmx driver not found")
+    text = " ".join((Path(__file__).parents[2] / "docs" / "getting-started.md")
+                    .read_text(encoding="utf-8").split())
+    assert ("a configuration it cannot take is one `mkm check: error:` line and exit 2, a "
+            "device it cannot reach or use (no NI-DAQmx, no such device, another product) one "
+            "such line and exit 1") in text
+
+
 def test_calibrate_loadcell_prints_the_toml_block(capsys):
     assert main(["calibrate-loadcell", "--masses", "0,10", "--volts", "0.01,0.51"]) == 0
     captured = capsys.readouterr()

@@ -1,4 +1,5 @@
 import json
+import os
 
 import pandas as pd
 import pytest
@@ -57,8 +58,11 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
     theta0 = str(calibrated("axisym")["theta0_deg"])  # the angle the fixture was built at
     assert main(["surrogate", "reference", "--model", "thickwall", "--theta0", theta0, "--out",
                  str(reference)]) == 0
+    # a folder given as one (a trailing separator) was said as "test//test_muscles.csv", and
+    # on Windows every folder as "mkm-out\surrogate-test/test_muscles.csv", which cmd misreads
     assert main(["surrogate", "test", "--model", str(model), "--reference", str(reference),
-                 "--out", str(tmp_path / "test")]) == 0
+                 "--out", str(tmp_path / "test") + os.sep]) == 0
+    assert f"wrote {tmp_path / 'test' / 'test_muscles.csv'}, " in capsys.readouterr().err
     summary = pd.read_csv(tmp_path / "test" / "test_muscles.csv")
     assert len(summary) == 5 and summary["max_abs_err_pct"].max() < 1e-3
     assert (tmp_path / "test" / "test_muscles.png").stat().st_size > 0  # mkm.figures' Figure 6

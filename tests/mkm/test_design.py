@@ -147,6 +147,25 @@ def test_infeasible_names_the_closest_design_and_its_shortfall():
     assert float(match[3]) == pytest.approx(5000.0 - strongest["r1_surrogate_N"], abs=1.0)
 
 
+def test_an_infeasible_design_on_the_edge_of_the_box_says_a_larger_box_might_do(mkm_run,
+                                                                               tmp_path):
+    # 500 N at 1 bar from a 50 mm tube: the default surrogate's box stops at t0 2 mm, where the
+    # closest design sat, and the message named neither the box nor that edge (the practical
+    # range's thinner walls were never tried)
+    code, out, err = mkm_run(["design", "--require", "500N@1bar,eps=0.10", "--D0", "50",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 2 and err.count("\n") == 1, err
+    assert "closest: D0 = 50.00 mm, t0 = 2.00 mm" in err
+    assert err.endswith("; it sits on the edge of the search box t0 2:4 mm: t0 = 2 mm (the "
+                        "lower end of 2:4); a larger box might hold a design that meets them\n")
+    # at the practical range's thinnest wall no larger box can be searched: no such advice
+    code, out, err = mkm_run(["design", "--require", "500N@1bar,eps=0.10", "--D0", "50",
+                              "--t0", "0.5:4", "--mesh", MESH, "--no-progress", "--out",
+                              str(tmp_path)])
+    assert code == 2 and "closest: D0 = 50.00 mm, t0 = 0.50 mm" in err
+    assert "edge" not in err and re.search(r"short by \d+ N \(predicted \d+ N\)\n$", err), err
+
+
 def test_conflicting_constraints_are_named():
     with pytest.raises(ValueError, match=r"max_outer_diameter_mm=40 conflicts with D0_mm >= 45"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": (45, 50), "max_outer_diameter_mm": 40})
@@ -607,6 +626,23 @@ def test_a_gap_makes_the_fe_search_and_verify_with_it():
 
         run_design(["300N@2.5bar,eps=0.1"], {"gap_mm": 0.5}, top=1, mesh=MESH,
                    tolerances=Tolerances.parse("D0=0.3"))
+
+
+def test_a_gap_beyond_the_default_box_says_the_fe_searched_not_a_surrogate():
+    # D0 25 mm is beyond the default surrogate's 30:50 mm: the summary said "the practical
+    # range's surrogate searched" beside "the FE model (coarse mesh) searched instead", and the
+    # box line measured the box against that surrogate's, which searched nothing
+    result = run_design(["300N@2.5bar,eps=0.1"], {"D0_mm": "25:27", "t0_mm": "2:2.5",
+                                                  "gap_mm": 0.5}, top=1, mesh=MESH)
+    summary = result.summary()
+    assert "surrogate searched" not in summary and result.search.searcher_note == ""
+    assert summary.startswith("outside the surrogate's training box (D0_mm=25:27 beyond "
+                              "30:50); gap_mm=0.5, which the surrogate does not model: the FE "
+                              "model (coarse mesh) searched instead")
+    assert result.search.box_note() == ("searched the box D0 25:27 mm x t0 2:2.5 mm (as "
+                                        "constrained), beyond the surrogate's D0 30:50 mm x "
+                                        "t0 2:4 mm")
+    assert result.chosen["meets_all"]
 
 
 def test_a_searching_margin_larger_than_the_requirement_is_said():

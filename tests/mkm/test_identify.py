@@ -614,10 +614,28 @@ def test_one_table_imported_twice_is_refused_not_counted_twice(tmp_path, mkm_run
     assert code == 2 and out == ""
     first, second = (r.name for r in runs)  # in the order they were recorded
     assert err.endswith(f"mkm identify: error: runs {first} and {second} hold the same "
-                        "measurement (their steps.csv are identical: one table imported twice, "
-                        "or a copied run folder): expected each run once; leave one of them "
-                        "out\n"), err
+                        "measurement (their steps.csv are identical, or one reprocesses the "
+                        "other's samples: one table imported twice, a copied run folder, or a "
+                        "run and mkm reprocess's folder of it): expected each run once; leave "
+                        "one of them out\n"), err
     assert not (tmp_path / "id").exists()
+
+
+def test_a_run_and_its_reprocessing_are_refused_not_counted_twice(one_run, tmp_path, mkm_run):
+    # was: identified as 3 runs (the demo's two and one reprocessed with a new load cell), the
+    # reprocessed one "predicted from the others" by its own source, 0.03 % off
+    config = tmp_path / "cell.toml"
+    config.write_text("[loadcell]\nsensitivity_N_per_V = 200.0\ncapacity_N = 1961.33\n",
+                      encoding="utf-8")
+    code, out, err = mkm_run(["reprocess", str(one_run), "--config", str(config), "--out",
+                              str(tmp_path / "runs")])
+    assert code == 0, err
+    again = Path(out.strip().splitlines()[-1])
+    code, out, err = mkm_run(["identify", str(one_run), str(again), "--params", "theta0",
+                              "--model", "thickwall", "--search", "model", "--out",
+                              str(tmp_path / "id")])
+    assert code == 2 and out == "" and not (tmp_path / "id").exists()
+    assert f"error: runs {one_run.name} and {again.name} hold the same measurement" in err
 
 
 def test_the_assumed_ratio_refits_leaving_the_surrogate_box_are_one_note(one_run, monkeypatch):

@@ -159,8 +159,11 @@ def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch,
     assert f"SHA-256 `{digest}`" in readme
     assert main(["data", "copy", name]) == 2  # kept, said in one line
     assert "exists: kept as it is" in capsys.readouterr().err
-    assert main(["data", "copy", name, "sub/maps.csv"]) == 2  # no such folder
-    assert "no such folder" in capsys.readouterr().err
+    # was "sub: no such folder", naming neither the argument nor what was expected
+    assert main(["data", "copy", name, "sub/maps.csv"]) == 2
+    assert capsys.readouterr().err == ("mkm data copy: error: TO 'sub/maps.csv': no such folder "
+                                       "'sub': expected the file in an existing folder (make it "
+                                       "first)\n")
     # was: a file named 'sub' (the slash dropped) and one named 'maps', neither a table that
     # mkm import reads ("unknown table format ''")
     assert main(["data", "copy", name, "sub/"]) == 2

@@ -420,6 +420,11 @@ def test_a_run_past_the_braid_lock_gets_one_banner(tmp_path):
     html = path.read_text(encoding="utf-8")
     assert html.count("past the braid lock") == 1
     assert f"eps_max {lock.eps_max:.3f}" in html and "No model is valid there" in html
+    # auto names no pick there (was: "FE model (axisymmetric), mesh=fine", as invalid as the rest)
+    path = build_report([run.path], parse_models("eq2,thickwall"), out_dir=tmp_path / "auto",
+                        cache_dir=None, tolerance=0.02, surrogate_section=False)
+    html = path.read_text(encoding="utf-8")
+    assert "auto at 2 %" in html and "mesh=fine" not in html and "auto at 2 % picks" not in html
 
 
 @pytest.mark.slow  # trains a surrogate (the physics kind, with its held-out refits)

@@ -99,3 +99,21 @@ def test_it_is_fitted_at_the_shipped_kernels(range_model):
     # seconds instead of a minute on first use: stale after a change of its dataset or of its
     # processes' inputs (regenerate with tools/record_gp_kernels.py)
     assert range_model.metadata["gp_kernels_from"]["processes"] == 2
+
+
+@pytest.mark.slow
+def test_it_gives_no_force_past_the_braid_lock_of_the_muscles_angle(range_model):
+    # its eps box reaches the lock of the range's lowest angle (0.402 at 15 deg): at the
+    # calibrated 33 deg the braid locks at 0.312, and eps 0.35 got 0 N, valid, with a std of
+    # 1e8 N, which a report scored as the closest model, "consistent" with a locked muscle
+    from mkm.fem.limits import lock_eps
+    from mkm.surrogate.model import OutOfDomainWarning
+
+    theta0 = range_model.parameters["theta0_deg"]
+    eps_max = float(lock_eps(theta0))  # 1 - 1 / (sqrt 3 cos theta0)
+    with pytest.warns(OutOfDomainWarning, match="past the braid lock"):
+        pred = range_model.predict([1.0, 2.0], 30.0, 3.0, eps_max + 0.04)
+    assert not pred.valid.any() and not pred.extras["in_domain"].any()
+    assert list(range_model.answered(pred).extras["reason"]) == [
+        f"past the braid lock: eps >= eps_max {eps_max:.4g} at theta0 {theta0:g} deg"] * 2
+    assert range_model.predict(2.0, 30.0, 3.0, eps_max - 0.04).valid.all()  # short of it

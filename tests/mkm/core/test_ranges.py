@@ -86,6 +86,10 @@ def test_a_number_typed_with_a_unit_is_converted_into_the_options():
      r"number in mm, or one with a unit such as 282mm or 1\.5in$"),
     (lambda: parse_number("2..5", "--pressure", "bar"), r"^--pressure='2\.\.5' is not a number: "
      r"expected a number in bar, or one with a unit such as 2\.5bar or 250kPa$"),
+    # a design spec's force said "such as N", the unit for its own example
+    (lambda: parse_number("abc", "force_N", "N"), r"^force_N='abc' is not a number: expected a "
+     r"number in N, or one with a unit such as 300N or 0\.3kN$"),
+    (lambda: parse_number("abc", "--C10", "MPa"), r"such as 0\.07MPa or 70kPa$"),
     (lambda: parse_number("inf", "--D0"), "^--D0='inf' is not a finite number$"),
     (lambda: parse_range("0:2.5", "p"), "malformed: expected start:stop:step"),
     (lambda: parse_range("0:1:0", "p"), "step 0 must be > 0"),
