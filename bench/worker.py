@@ -129,8 +129,9 @@ class Acquisition:
         self.written = False  # the last command asked for reached the device
         self.marker_lagged = False  # a pressure went out before its bench marker was written
         self.interlock_vent_failed = False  # the shutdown says what became of the muscle
-        # (measured, commanded) [bar] when the follow interlock tripped with the pressure below
-        # a pressure commanded: the vent check weighs the monitor's readings by it
+        # (measured, commanded) [bar] when the follow or stuck-monitor interlock tripped with
+        # the pressure below a pressure commanded: the vent check weighs the monitor's readings
+        # by it
         self.below_command: tuple[float, float] | None = None
         # (measured, commanded) [bar] of the last plausible sample acquired under a pressure
         # commanded (see :meth:`unproven`)
@@ -380,14 +381,19 @@ class Acquisition:
             # new command does not restart it: a stuck regulator's pressure does not move
             self._off_since_s, self._off_from_bar = t_s, pressure
         elif t_s - self._off_since_s > safety.pressure_follow_s:
-            if 0 < commanded and pressure < commanded and self.below_command is None:
-                self.below_command = (pressure, commanded)
+            self._tripped_below(pressure, commanded)
             return (f"pressure interlock: the regulator does not follow: {pressure:.3f} bar "
                     f"measured against {commanded:g} bar commanded for more than "
                     f"{safety.pressure_follow_s:g} s (tolerance {tolerance:g} bar; the "
                     f"pressure has not moved towards the command since "
                     f"{self._off_since_s:g} s)")
         return self._unmoved(t_s, pressure, commanded)
+
+    def _tripped_below(self, pressure: float, commanded: float) -> None:
+        """Keep :attr:`below_command` for an interlock tripping at ``pressure`` below the
+        positive pressure ``commanded`` (the first such trip only)."""
+        if 0 < commanded and pressure < commanded and self.below_command is None:
+            self.below_command = (pressure, commanded)
 
     def _unmoved(self, t_s: float, pressure: float, commanded: float) -> str | None:
         """The stuck-monitor interlock's message for this sample, or None.
@@ -419,8 +425,7 @@ class Acquisition:
             self._unmoved_since_s = t_s
         elif (t_s - self._unmoved_since_s > safety.pressure_follow_s
               and abs(pressure - commanded) <= safety.pressure_tolerance_bar):
-            if 0 < commanded and pressure < commanded and self.below_command is None:
-                self.below_command = (pressure, commanded)
+            self._tripped_below(pressure, commanded)
             return (f"pressure interlock: the monitor does not move with the command: "
                     f"{pressure:.3f} bar measured against {commanded:g} bar commanded since "
                     f"{self._unmoved_since_s:g} s, after {moved_bar:.3f} bar under "
