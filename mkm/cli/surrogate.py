@@ -306,12 +306,18 @@ def _predict(args) -> int:
         say(args, "warning", w.message)
     # an extrapolation is no answer: written as an empty force with its reason, the sweep's
     # answered points kept
-    emit_prediction(model.answered(prediction), args.out, model)
-    unanswered = int((~prediction.valid).sum())
+    answered = model.answered(prediction)
+    emit_prediction(answered, args.out, model)
+    reasons = [str(r) for r, ok in zip(answered.extras["reason"].ravel(),
+                                       prediction.valid.ravel(), strict=True) if not ok]
+    locked = sum(r.startswith("past the braid lock") for r in reasons)
+    counted = [f"{n} {why}" for n, why in ((locked, "past the braid lock"),
+                                           (len(reasons) - locked, "outside the training domain"))
+               if n]
     summary_line("surrogate predict", f"{prediction.force_N.size} points of {model.name} in "
                  f"{1e3 * prediction.seconds:.2f} ms"
-                 + (f", {unanswered} outside the training domain: no force written (valid=False, "
-                    "their reason in the reason column)" if unanswered else ""))
+                 + (f", {' and '.join(counted)}: no force written (valid=False, their reason in "
+                    "the reason column)" if counted else ""))
     return 0
 
 

@@ -183,6 +183,13 @@ def test_predict_writes_no_force_where_the_surrogate_has_no_answer(design_model,
     assert table["reason"].tolist() == ["", "", "", "outside the training domain: "
                                         "pressure_bar=3 not in [0, 2.5]"]
     assert "1 outside the training domain: no force written" in capsys.readouterr().err
+    # a point past the braid lock is counted as such, as its reason says (was: "outside the
+    # training domain", its reason column naming the lock)
+    assert main(["surrogate", "predict", "--D0", "40", "--t0", "3", "--theta0", "38",
+                 "--eps", "30%", "--pressures", "1,2", "--out", str(out)]) == 0
+    assert ("2 past the braid lock: no force written (valid=False, their reason in the reason "
+            "column)") in capsys.readouterr().err
+    assert pandas.read_csv(out)["reason"].str.startswith("past the braid lock").all()
     assert main(["surrogate", "predict", "--D0", "40", "--t0", "3", "--eps", "25%",
                  "--pressures", "1"]) == 0
     row = capsys.readouterr().out.splitlines()[1]
