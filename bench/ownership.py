@@ -57,15 +57,15 @@ def _usable_lock(lock_path: Path) -> None:
         raise StateFolderBroken(f"the bench lock {lock_path} is not a file: remove it")
 
 
-def _paths(bench_key: str) -> tuple[Path, Path, Path]:
-    base = state_dir() / "benches" / bench_folder_name(bench_key)
+def _paths(bench_key: str, state: Path) -> tuple[Path, Path, Path]:
+    base = state / "benches" / bench_folder_name(bench_key)
     return (base.with_name(base.name + ".lock"), base.with_name(base.name + ".owner"),
             base.with_name(base.name + ".stop"))
 
 
-def holder(bench_key: str) -> dict | None:
-    """What the holder of ``bench_key`` recorded (pid, command, start), if readable."""
-    owner = _paths(bench_key)[1]
+def holder(owner: Path) -> dict | None:
+    """What the holder of a bench recorded in its ``owner`` file (pid, command, start), if
+    readable."""
     try:
         data = json.loads(owner.read_text(encoding="utf-8"))
     except (OSError, ValueError):
@@ -73,8 +73,8 @@ def holder(bench_key: str) -> dict | None:
     return data if isinstance(data, dict) else None
 
 
-def describe_holder(bench_key: str) -> str:
-    info = holder(bench_key)
+def describe_holder(bench_key: str, owner: Path) -> str:
+    info = holder(owner)
     if not info:
         return f"bench {bench_key} is held by another process (it left no details)"
     return (f"bench {bench_key} is in use by pid {info.get('pid')} (`mkm {info.get('command')}`"
@@ -86,7 +86,9 @@ class BenchOwner:
 
     def __init__(self, bench_key: str, command: str):
         self.bench_key, self.command = bench_key, command
-        self.lock_path, self.owner_path, self.stop_path = _paths(bench_key)
+        # resolved now: the state folder's thread may run late, after MKM_STATE_DIR moved
+        self.state = state_dir()
+        self.lock_path, self.owner_path, self.stop_path = _paths(bench_key, self.state)
         self.lock: filelock.BaseFileLock | None = None
         self._polling = threading.Condition()
         self._poll_thread: threading.Thread | None = None
@@ -126,8 +128,8 @@ class BenchOwner:
         try:
             lock.acquire()
         except filelock.Timeout:
-            return BenchBusy(describe_holder(self.bench_key) + ": one command per bench at a "
-                             "time (`mkm vent` asks a run to stop)")
+            return BenchBusy(describe_holder(self.bench_key, self.owner_path) + ": one command "
+                             "per bench at a time (`mkm vent` asks a run to stop)")
         except OSError as exc:
             return StateFolderBroken(f"the bench lock {self.lock_path} cannot be taken "
                                      f"({exc.strerror or exc})")
@@ -150,7 +152,7 @@ class BenchOwner:
         waited for at most :data:`STATE_START_S` (not at all when the folder already hangs):
         :class:`StateFolderBroken` after it, its message ending with ``then`` (what the caller
         did); the bench is then let go once the folder answers, or with this process."""
-        done, found = self.on_state_folder(lambda: find_unvented(self.bench_key),
+        done, found = self.on_state_folder(lambda: find_unvented(self.bench_key, self.state),
                                            "the runs that died on this bench were looked for")
         if not done:
             raise StateFolderBroken(f"{found}: {then}; the bench is let go once it answers, or "
@@ -232,14 +234,15 @@ class BenchOwner:
                 self._stop_by = self._stop_by or by
 
 
-def request_stop(bench_key: str, by: str, wait_s: float = 30.0) -> dict | None:
-    """Ask the live holder of ``bench_key`` to stop and wait (``wait_s``) until it has let go.
+def request_stop(bench_key: str, by: str, state: Path, wait_s: float = 30.0) -> dict | None:
+    """Ask the live holder of ``bench_key`` (its lock in the bench state folder ``state``) to
+    stop and wait (``wait_s``) until it has let go.
 
     Returns the holder's record when there was one (None when the bench was free); raises
     :class:`BenchBusy` when it did not let go in time, :class:`StateFolderBroken` when the
     state folder cannot be used (nobody can be asked: the caller vents all the same).
     """
-    lock_path, _, stop_path = _paths(bench_key)
+    lock_path, owner_path, stop_path = _paths(bench_key, state)
     if not lock_path.parent.is_dir():
         return None
     _usable_lock(lock_path)
@@ -254,7 +257,7 @@ def request_stop(bench_key: str, by: str, wait_s: float = 30.0) -> dict | None:
     else:
         probe.release()
         return None
-    info = holder(bench_key) or {}
+    info = holder(owner_path) or {}
     try:
         write_atomic(stop_path, f"{by} (pid {os.getpid()})")
     except OSError as exc:
@@ -270,5 +273,5 @@ def request_stop(bench_key: str, by: str, wait_s: float = 30.0) -> dict | None:
             continue
         probe.release()
         return info
-    raise BenchBusy(f"{describe_holder(bench_key)} and did not stop within {wait_s:g} s of the "
-                    "request: VENT BY HAND")
+    raise BenchBusy(f"{describe_holder(bench_key, owner_path)} and did not stop within "
+                    f"{wait_s:g} s of the request: VENT BY HAND")

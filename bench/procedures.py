@@ -163,10 +163,11 @@ def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
     holder that stopped (or None), and whether the state folder answered within
     ``stop_wait_s`` + :data:`mkm.bench.unvented.STATE_START_S` (a problem in ``bookkeeping``
     when not); :class:`mkm.bench.ownership.BenchBusy` when a holder did not let go."""
+    state = state_dir()  # resolved now: the thread may run late, after MKM_STATE_DIR moved
     done, answer = StateFolderThread("mkm-vent-ask").call(
-        lambda: request_stop(key, "`mkm vent`", stop_wait_s), stop_wait_s + STATE_START_S)
+        lambda: request_stop(key, "`mkm vent`", state, stop_wait_s), stop_wait_s + STATE_START_S)
     if not done:
-        bookkeeping.append(f"the bench state folder {state_dir()} did not answer within "
+        bookkeeping.append(f"the bench state folder {state} did not answer within "
                            f"{stop_wait_s + STATE_START_S:g} s (it hangs): no run holding the "
                            "bench was asked to stop, the bench was vented without its lock "
                            "and the markers of dead runs were not looked for")

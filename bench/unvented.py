@@ -48,8 +48,8 @@ def bench_folder_name(bench_key: str) -> str:
     return re.sub(r"[^a-z0-9._-]", "_", bench_key.strip().casefold())
 
 
-def _folder(bench_key: str) -> Path:
-    return state_dir() / "benches" / bench_folder_name(bench_key)
+def _folder(bench_key: str, state: Path | None = None) -> Path:
+    return (state_dir() if state is None else state) / "benches" / bench_folder_name(bench_key)
 
 
 @dataclass
@@ -244,9 +244,10 @@ class BenchLease(StateFolderThread):
         self.path.unlink(missing_ok=True)
 
 
-def find_unvented(bench_key: str) -> list[tuple[Path, Marker]]:
-    """Markers of ``bench_key`` left by processes that are gone."""
-    folder = _folder(bench_key)
+def find_unvented(bench_key: str, state: Path | None = None) -> list[tuple[Path, Marker]]:
+    """Markers of ``bench_key`` left by processes that are gone, in the bench state folder
+    ``state`` (None: :func:`state_dir` now)."""
+    folder = _folder(bench_key, state)
     found = []
     for path in sorted(folder.glob("*.json")) if folder.is_dir() else []:
         try:

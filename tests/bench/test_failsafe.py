@@ -97,23 +97,68 @@ def test_vent_with_a_state_folder_that_hangs_vents_then_says_so(monkeypatch):
     monkeypatch.setattr(procedures, "STATE_START_S", 0.0)
     _lock_path("sim-Dev1").parent.mkdir(parents=True)
     release, acquire = threading.Event(), filelock.FileLock.acquire
+    asked, request_stop = threading.Event(), procedures.request_stop
 
     def hanging(self, *args, **kwargs):
         release.wait(120)  # released below
         return acquire(self, *args, **kwargs)
 
+    def ends(*args, **kwargs):  # the request to stop, let go at the end: waited for below
+        try:
+            return request_stop(*args, **kwargs)
+        finally:
+            asked.set()
+
     monkeypatch.setattr(filelock.FileLock, "acquire", hanging)
+    monkeypatch.setattr(procedures, "request_stop", ends)
     written = _commands_of_vents(monkeypatch)
     try:
         out = procedures.vent(load_config(), backend="sim", notify=lambda m: None,
                               stop_wait_s=0.0)
     finally:
         release.set()
+    assert asked.wait(120)  # its thread is done with this test's state folder and lock
     assert out["vented"] and out["pressure_bar"] < 0.05 and written and set(written) == {0.0}
     (problem,) = out["bookkeeping"]  # `mkm vent` says it on one line, exit 1
     assert problem.endswith("did not answer within 0 s (it hangs): no run holding the bench "
                             "was asked to stop, the bench was vented without its lock and the "
                             "markers of dead runs were not looked for")
+
+
+def test_vent_asks_in_the_state_folder_it_was_called_with_however_late(monkeypatch, tmp_path):
+    # the thread that asks a holder to stop ran after `vent` had returned (a busy machine),
+    # and only then read MKM_STATE_DIR: in a process that had moved it since (the test after,
+    # the Python API), it took the lock of another state folder's bench. Now the folder is
+    # resolved as `vent` is called
+    import threading
+
+    from mkm.bench import procedures
+    from mkm.bench.config import load_config
+
+    called_with, later = _lock_path("sim-Dev1"), tmp_path / "later-state"
+    called_with.parent.mkdir(parents=True)
+    (later / "benches").mkdir(parents=True)
+    go, asked, request_stop = threading.Event(), threading.Event(), procedures.request_stop
+
+    def late(*args, **kwargs):
+        go.wait(120)  # set below, once `vent` has returned and the folder moved
+        try:
+            return request_stop(*args, **kwargs)
+        finally:
+            asked.set()
+
+    monkeypatch.setattr(procedures, "STATE_START_S", 0.0)
+    monkeypatch.setattr(procedures, "request_stop", late)
+    try:
+        out = procedures.vent(load_config(), backend="sim", notify=lambda m: None,
+                              stop_wait_s=0.0)
+        monkeypatch.setenv("MKM_STATE_DIR", str(later))
+    finally:
+        go.set()
+    assert asked.wait(120)
+    assert out["vented"] and str(called_with.parent.parent.parent) in out["bookkeeping"][0]
+    assert called_with.is_file()  # the free bench was probed there: its lock file
+    assert list((later / "benches").iterdir()) == []
 
 
 def test_a_run_is_refused_not_started_when_the_lock_is_a_folder(config, tmp_path):
