@@ -397,8 +397,10 @@ class AutoModel(ForceModel):
         out = self.choose(P, D0, t0, eps)
         valid = np.isfinite(out["force_N"])
         converged = valid.copy()
-        # the physical limit the fallback FE names where it finds no state (mkm.fem.outcomes)
+        # the physical limit the fallback FE names where it finds no state (mkm.fem.outcomes),
+        # and why its solve failed where it did (a column `not converged` alone does not say)
         limit = np.full(valid.shape, "", dtype=object)
+        failure = np.full(valid.shape, "", dtype=object)
         fallback = np.flatnonzero(out["model_used"] == FALLBACK)
         if fallback.size:
             args = (np.ravel(a)[fallback] for a in (P, D0, t0, eps))
@@ -406,10 +408,12 @@ class AutoModel(ForceModel):
             out["force_N"][fallback] = pred.force_N
             valid[fallback] = pred.valid
             converged[fallback] = pred.converged
-            limit[fallback] = np.ravel(np.broadcast_to(pred.extras.get("limit", ""),
-                                                       pred.force_N.shape))
+            for name, column in (("limit", limit), ("failure", failure)):
+                column[fallback] = np.ravel(np.broadcast_to(pred.extras.get(name, ""),
+                                                            pred.force_N.shape))
         return {key: value.reshape(P.shape) for key, value in
-                {**out, "valid": valid, "converged": converged, "limit": limit}.items()}
+                {**out, "valid": valid, "converged": converged, "limit": limit,
+                 "failure": failure}.items()}
 
 
 def spec_of(predictor: str, table: Path | str | None = None) -> str:

@@ -306,8 +306,8 @@ class SurrogateForceModel(ForceModel):
             inside = np.zeros(P.shape, dtype=bool)
         if not inside.all():
             n_out = int((~inside).sum())
-            why = "; ".join(outside) if outside else "; ".join(
-                ([_describe(self.domain)] if not in_box.all() else [])
+            why = "; ".join(
+                _inputs_outside(self.domain, (P, D0, t0, eps)) + outside
                 + ([past_lock_text(parameters["theta0_deg"])] if locked.any() else []))
             warnings.warn(f"{n_out} of {inside.size} points lie outside the training domain "
                           f"({why}): flagged valid=False, in_domain=False"
@@ -374,5 +374,18 @@ def _number(value) -> float | None:
     return None
 
 
-def _describe(domain: Domain) -> str:
-    return ", ".join(f"{name} in [{lo:g}, {hi:g}]" for name, (lo, hi) in domain.as_dict().items())
+def _inputs_outside(domain: Domain, values) -> list[str]:
+    """The inputs outside ``domain``, each as ``name=value not in [lo, hi]`` (``name=a-b``: the
+    span of its values outside), with the slack :meth:`Domain.contains` allows. The inputs are
+    validated non-negative, so the hyphen reads as a span."""
+    out = []
+    for name, value in zip(INPUTS, values, strict=True):
+        lo, hi = getattr(domain, name)
+        value = np.asarray(value, dtype=float).ravel()
+        slack = 1e-9 * max(abs(lo), abs(hi) if np.isfinite(hi) else 0.0, 1.0)
+        beyond = value[(value < lo - slack) | (value > hi + slack)]
+        if beyond.size:
+            low, high = float(beyond.min()), float(beyond.max())
+            shown = f"{low:g}" if low == high else f"{low:g}-{high:g}"
+            out.append(f"{name}={shown} not in [{lo:g}, {hi:g}]")
+    return out

@@ -513,6 +513,24 @@ def test_past_the_braid_lock_auto_says_the_braid_locks_as_its_fallback_does(tabl
     assert classify(pred).tolist() == [BRAID_LOCKS] * P.size
 
 
+def test_a_fallback_that_does_not_converge_names_why(table_path):
+    # a thick, stiff tube at 15 deg near the lock (a corner of the practical range): the FE's
+    # threshold search inverts elements; auto answered `not converged` without the solver's
+    # reason, which the FE model itself gives in its `failure` column
+    from mkm.auto import FALLBACK_SPEC
+
+    def build(spec, **muscle):  # the coarse mesh stands in for the fine one: fast
+        return fake_build("axisym:mesh=coarse" if spec == FALLBACK_SPEC else spec, **muscle)
+
+    pred = AutoModel(table=table_path, build=build, tolerance=0.02, theta0_deg=15.0,
+                     L0_mm=180.0, C10_MPa=0.6, C01_MPa=0.55,
+                     mesh_errors=no_mesh_errors(table_path)).predict(P, 60.0, 6.0, 0.3683)
+    assert set(pred.extras["model_used"]) == {"axisym-fine"}
+    assert not pred.converged.any() and np.isnan(pred.force_N).all()
+    assert all("threshold search failed: element inversion" in f
+               for f in np.ravel(pred.extras["failure"]))
+
+
 def test_autos_nominal_angle_is_its_references(tmp_path):
     # a report's tolerance band asks every model its nominal muscle; auto's candidates each
     # take their own calibrated angle, bounded against the fine FE mesh, so auto's is the

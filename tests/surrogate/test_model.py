@@ -40,15 +40,25 @@ def test_inside_the_domain_no_warning(physics):
     assert prediction.valid.all() and prediction.extras["in_domain"].all()
 
 
-@pytest.mark.parametrize("point", [(2.6, 40, 3, 0.1), (1.0, 29.0, 3, 0.1), (1.0, 40, 4.5, 0.1),
-                                   (1.0, 40, 3, 0.25)])
-def test_outside_the_domain_flagged_and_warned(physics, point):
-    with pytest.warns(OutOfDomainWarning, match="1 of 2 points lie outside"):
+@pytest.mark.parametrize("point, named", [
+    ((2.6, 40, 3, 0.1), r"pressure_bar=2\.6 not in \[0, 2\.5\]"),
+    ((1.0, 29.0, 3, 0.1), r"D0_mm=29 not in \[30, 50\]"),
+    ((1.0, 40, 4.5, 0.1), r"t0_mm=4\.5 not in \[2, 4\]"),
+    ((1.0, 40, 3, 0.25), r"eps=0\.25 not in \[0, 0\.2\]")])
+def test_outside_the_domain_flagged_and_warned(physics, point, named):
+    # the warning names the input outside, as the reason column of `mkm surrogate predict` does
+    with pytest.warns(OutOfDomainWarning, match=rf"1 of 2 points lie outside .*\({named}\)"):
         prediction = physics.predict([1.0, point[0]], [40, point[1]], [3, point[2]],
                                      [0.1, point[3]])
     np.testing.assert_array_equal(prediction.valid, [True, False])
     np.testing.assert_array_equal(prediction.extras["in_domain"], [True, False])
     assert np.isfinite(prediction.force_N).all()  # the number is kept, the flag says it is not
+
+
+def test_outside_the_domain_names_the_span_of_an_input_outside(physics):
+    with pytest.warns(OutOfDomainWarning, match=r"2 of 3 points lie outside .*\(pressure_bar="
+                                                r"2\.75-3 not in \[0, 2\.5\]; D0_mm=29 not in"):
+        physics.predict([1.0, 2.75, 3.0], [40, 40, 29.0], 3, 0.1)
 
 
 @pytest.mark.parametrize("parameter, value", [("L0_mm", 150.0), ("theta0_deg", 30.0),
