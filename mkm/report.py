@@ -288,23 +288,11 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
 
 
 def verdict_lines(runs: list[_Run], names: dict, tolerance: float | None) -> list[str]:
-    """The first screen's verdict in plain text: each run's verdict sentence without auto's
-    pick (:func:`mkm.verdict.verdict`), then each identify command the verdicts suggest, once,
-    with the runs it concerns."""
-    lines = [verdict(f"run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})",
-                     r.summary, names, tolerance,
-                     no_budget=NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
-                     dynamics=_shows_dynamics(r))
-             for r in runs]
-    commands: dict[str, list[int]] = {}
-    for k, command in _advised_commands(runs, names, tolerance).items():
-        commands.setdefault(command, []).append(k)
-    for command, which in commands.items():
-        lines.append(f"run{'s' if len(which) > 1 else ''} {', '.join(map(str, which))}: the FE "
-                     f"model itself is off by more than auto's bound, which points to the "
-                     f"muscle: identify it from its runs, then give mkm report --calibration "
-                     f"the calibration.json it writes: {command}")
-    return lines
+    """The first screen's verdicts in plain text, as the page says them: each run's sentence,
+    then each identify command several of them advise, once, with the runs it concerns."""
+    shared = _shared_commands(runs, names, tolerance)
+    return ([_verdict(r, names, tolerance, runs, r.k in shared) for r in runs]
+            + [said + command for said, command in _advice(runs, shared)])
 
 
 def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
@@ -943,14 +931,6 @@ def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> 
     """The identify command each run's verdict suggests (run number -> command) where several
     verdicts suggest the same one: said once (:func:`_advice_lines`), it keeps the first screen
     for the verdicts rather than the same run paths again and again."""
-    commands = _advised_commands(runs, names, tolerance)
-    said = list(commands.values())
-    return {k: c for k, c in commands.items() if said.count(c) > 1}
-
-
-def _advised_commands(runs: list[_Run], names: dict, tolerance: float | None) -> dict[int, str]:
-    """The identify command each run's verdict advises (run number -> command), where it
-    advises one."""
     commands = {}
     for r in runs:
         command = advice_command(*_advice_arguments(r, runs),
@@ -958,24 +938,30 @@ def _advised_commands(runs: list[_Run], names: dict, tolerance: float | None) ->
         if command and gives_advice(r.summary, names, tolerance,
                                     *_auto_pick(r, names, tolerance)):
             commands[r.k] = command
-    return commands
+    said = list(commands.values())
+    return {k: c for k, c in commands.items() if said.count(c) > 1}
 
 
 def _advice_lines(runs: list[_Run], commands: dict[int, str]) -> str:
     """Each identify command of :func:`_shared_commands`, said once, with the runs it
-    concerns."""
-    lines = []
+    concerns (:func:`_advice`)."""
+    # each argument unbroken: a path wrapped at its hyphen reads as two (mkm- out/runs)
+    return "".join(f'<p class="verdict">{esc(said)}<code>'
+                   + " ".join(f'<span class="arg">{esc(a)}</span>'
+                              for a in re.findall(r'"[^"]*"|\S+', command))
+                   + "</code></p>" for said, command in _advice(runs, commands))
+
+
+def _advice(runs: list[_Run], commands: dict[int, str]) -> list[tuple[str, str]]:
+    """For each identify command of ``commands`` (run number -> command), once: the sentence
+    that names the runs it concerns, and the command."""
+    out = []
     for command in dict.fromkeys(commands.values()):
         concerned = [r for r in runs if commands.get(r.k) == command]
-        muscle = concerned[0].muscle.id
-        which = ", ".join(str(r.k) for r in concerned)
-        # each argument unbroken: a path wrapped at its hyphen reads as two (mkm- out/runs)
-        arguments = " ".join(f'<span class="arg">{esc(a)}</span>'
-                             for a in re.findall(r'"[^"]*"|\S+', command))
-        lines.append(f'<p class="verdict">Runs {which}: identify {esc(muscle)} from its '
-                     "runs here, then give mkm report --calibration the "
-                     f"calibration.json it writes: <code>{arguments}</code></p>")
-    return "".join(lines)
+        out.append((f"Runs {', '.join(str(r.k) for r in concerned)}: identify "
+                    f"{concerned[0].muscle.id} from its runs here, then give mkm report "
+                    "--calibration the calibration.json it writes: ", command))
+    return out
 
 
 def _same_muscle(a: Muscle, b: Muscle) -> bool:

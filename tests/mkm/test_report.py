@@ -564,14 +564,12 @@ def test_the_identify_advice_of_several_runs_is_said_once_on_the_first_screen(tm
     # each path one unbreakable piece: wrapped at a hyphen, it read as two (mkm- out/runs/...)
     assert all(f'<span class="arg">{p}</span>' in line.group(1) for p in paths)
     assert ".arg{white-space:nowrap}" in html
-    # the terminal's first screen: each verdict up to auto's pick, then the command once (was:
+    # the terminal's first screen: the page's verdicts, the command said once after them (was:
     # only the report's path)
-    assert len(said) == 6
-    for k, (text, shown) in enumerate(zip(said[:5], verdicts, strict=True), 1):
-        assert text.startswith(f"run {k} (eps ") and text.endswith(".")
-        assert unescape(shown).startswith("R" + text[1:]), (text, shown)
-    head = "runs 1, 2, 3, 4: the FE model itself is off by more than auto's bound"
-    assert said[5].startswith(head)
+    shown = [unescape(re.sub("<[^>]+>", "", v))
+             for v in re.findall(r'<p class="verdict">(.*?)</p>', first)]
+    assert said == shown and len(said) == 6
+    assert said[5].startswith("Runs 1, 2, 3, 4: identify dmsp-10 from its runs here")
     assert shlex.split(said[5].split("calibration.json it writes: ")[1]) == [
         "mkm", "identify", *paths]
 
