@@ -18,7 +18,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from mkm.bench.signals import CTRL_C_EVENT, CTRL_CLOSE_EVENT, StopSignal, StopSignals
+from mkm.bench.signals import (
+    CONSOLE_HOLD_S,
+    CTRL_C_EVENT,
+    CTRL_CLOSE_EVENT,
+    StopSignal,
+    StopSignals,
+)
 from mkm.bench.storage import load_run
 from mkm.cli import main
 
@@ -161,7 +167,9 @@ def test_console_close_is_a_stop_that_waits_for_the_vent():
     threading.Timer(0.2, guard.done).start()
     start = time.monotonic()
     assert guard.on_console_event(CTRL_CLOSE_EVENT) is True
-    assert 0.15 < time.monotonic() - start < 2.0  # released by done(), not by the 4.5 s limit
+    # released by done() at 0.2 s, not by the hold's limit (a loaded machine's timer may be
+    # late, never by seconds)
+    assert 0.15 < time.monotonic() - start < CONSOLE_HOLD_S - 0.5
     assert interrupted == [getattr(signal, "SIGBREAK", signal.SIGTERM)]
     assert guard.console_event == "console closed"
 
