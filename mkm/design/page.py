@@ -141,7 +141,8 @@ COLUMN_DOCS = {
     "r<k>_meets": "the FE force meets requirement k",
     "meets_all": "the FE force meets every requirement (the verdict)",
     "min_fe_margin_pct": "smallest FE margin over the requirements [%]",
-    "flags": "r<k>:near_lock, r<k>:threshold_above_pressure, r<k>:fe_not_converged",
+    "flags": "r<k>:near_lock, r<k>:threshold_above_pressure, r<k>:fe_not_converged, "
+             "r<k>:margin_within_mesh_error",
     "fe_failure": "the FE's own failure message per requirement",
 }
 
@@ -151,6 +152,10 @@ FLAG_TEXT = {"near_lock": f"near the braid lock (eps >= {NEAR_LOCK_FRACTION:g} e
              "threshold_above_pressure": "the threshold pressure is at or above the "
                                          "requirement's pressure: the muscle does not pull",
              "fe_not_converged": "the FE did not converge",
+             "margin_within_mesh_error": "met by less than the mesh's force may lie from the "
+                                         "fine mesh's (mkm.mesh_errors; or the mesh's bound is "
+                                         "not measured for this muscle's end zone): verify "
+                                         "with --mesh fine",
              "worst_corner_short": "the FE force at the worst corner of the tolerances is "
                                    "short of the requirement (a corner is rarer than the "
                                    "probability's complement)",

@@ -89,8 +89,9 @@ class DesignResult:
         the surrogate's (:meth:`Search.box_note`), the chosen design on an end of a
         searched range (:func:`~mkm.design.box_search.box_edges`), where a larger box might hold
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
-        required force (the design then is larger than the requirement needs), and a chosen
-        design outside the practical range. Empty when none."""
+        required force (the design then is larger than the requirement needs), a chosen
+        design outside the practical range, and one that meets a requirement by less than the
+        mesh's error (``margin_within_mesh_error``). Empty when none."""
         s = self.search
         notes = [s.box_note()] if s.box_note() else []
         best = self.chosen
@@ -112,6 +113,13 @@ class DesignResult:
             notes.append(f"the chosen design sits on the edge of the search box "
                          f"{box_text(ranges)}: {', '.join(edges)}; a larger box might hold a "
                          "better design")
+        thin = [flag.split(":")[0] for flag in str(best["flags"] if best is not None else "")
+                .split(";") if flag.endswith(":margin_within_mesh_error")]
+        if thin:
+            notes.append(f"the chosen design meets {', '.join(thin)} by less than the "
+                         f"{self.mesh} mesh's force may lie from the fine mesh's "
+                         f"(its bound from mkm.mesh_errors): run again with --mesh fine "
+                         "before building it")
         return notes
 
     def table_text(self) -> str:
