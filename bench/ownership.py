@@ -34,7 +34,7 @@ from mkm.bench.unvented import (
     STATE_WAIT_S,
     Marker,
     StateFolderThread,
-    bench_folder_name,
+    bench_folder,
     find_unvented,
     state_dir,
 )
@@ -58,7 +58,7 @@ def _usable_lock(lock_path: Path) -> None:
 
 
 def _paths(bench_key: str, state: Path) -> tuple[Path, Path, Path]:
-    base = state / "benches" / bench_folder_name(bench_key)
+    base = bench_folder(bench_key, state)
     return (base.with_name(base.name + ".lock"), base.with_name(base.name + ".owner"),
             base.with_name(base.name + ".stop"))
 

@@ -48,7 +48,9 @@ def bench_folder_name(bench_key: str) -> str:
     return re.sub(r"[^a-z0-9._-]", "_", bench_key.strip().casefold())
 
 
-def _folder(bench_key: str, state: Path | None = None) -> Path:
+def bench_folder(bench_key: str, state: Path | None = None) -> Path:
+    """Where ``bench_key``'s markers lie, beside its lock, owner and stop files: in the bench
+    state folder ``state`` (None: :func:`state_dir` now)."""
     return (state_dir() if state is None else state) / "benches" / bench_folder_name(bench_key)
 
 
@@ -195,7 +197,7 @@ class BenchLease(StateFolderThread):
         me = ProcessIdentity.current()
         # absolute: the next command may run from another folder
         self.marker = Marker(bench_key, str(Path(run_path).resolve()), started_utc, asdict(me))
-        folder = _folder(bench_key)
+        folder = bench_folder(bench_key)
         # one per run: a marker a run leaves (its vent not verified, its record refused) stays
         # beside those of the later runs of the same process until that process has ended
         self.path = folder / (f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}-"
@@ -247,7 +249,7 @@ class BenchLease(StateFolderThread):
 def find_unvented(bench_key: str, state: Path | None = None) -> list[tuple[Path, Marker]]:
     """Markers of ``bench_key`` left by processes that are gone, in the bench state folder
     ``state`` (None: :func:`state_dir` now)."""
-    folder = _folder(bench_key, state)
+    folder = bench_folder(bench_key, state)
     found = []
     for path in sorted(folder.glob("*.json")) if folder.is_dir() else []:
         try:

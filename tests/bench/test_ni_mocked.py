@@ -468,13 +468,13 @@ def test_mkm_vent_finds_the_lock_and_marker_of_the_run_that_lost_the_device(
 
     from mkm.bench.procedures import vent
     from mkm.bench.storage import ProcessIdentity
-    from mkm.bench.unvented import Marker, _folder
+    from mkm.bench.unvented import Marker, bench_folder
     from mkm.core.records import write_json_atomic
 
     dead = ProcessIdentity(2**22 + 9, "bench-pc", 1.0, None)  # pid above pid_max
     marker = Marker("ni-serial-1F2E3D4", str(tmp_path / "lost-run"), "2026-12-02T10:00:00+00:00",
                     vars(dead), 2.5, "2026-12-02T10:05:00+00:00")
-    folder = _folder("ni-serial-1F2E3D4")
+    folder = bench_folder("ni-serial-1F2E3D4")
     folder.mkdir(parents=True)
     write_json_atomic(folder / "dead.json", vars(marker))
     _lost_until_reset(fake_driver)

@@ -18,7 +18,7 @@ from mkm.bench.ownership import BenchBusy, BenchOwner
 from mkm.bench.run import BenchRun, acquire
 from mkm.bench.sim import SimBackend
 from mkm.bench.storage import RunWriter, load_run
-from mkm.bench.unvented import BenchLease, _folder
+from mkm.bench.unvented import BenchLease, bench_folder
 
 QUIET = {"notify": lambda m: None}
 
@@ -37,7 +37,7 @@ def test_a_stuck_regulator_fails_the_run_and_asks_for_a_vent_by_hand(config, tmp
     assert not check["verified"] and check["pressure_bar"] == pytest.approx(0.5, abs=0.02)
     assert check["waited_s"] > c.safety.vent_timeout_s
     assert run.meta.manual_vent_required
-    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert json.loads(marker.read_text())["run_path"] == str(run.path)
 
 
@@ -109,7 +109,7 @@ def test_a_monitor_frozen_at_zero_does_not_verify_the_vent(config, tmp_path, fro
     # vent.SETTLED_S), exhausting with tau 0.4 s from 0.5 bar, the muscle still held
     # 0.5 exp(-0.6/0.4) = 0.11 bar while the monitor read 0
     assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
-    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert "proves nothing" in json.loads(marker.read_text())["vent_unverified"]
 
 
@@ -142,7 +142,7 @@ def test_a_stop_before_the_follow_interlock_trips_does_not_verify_with_a_frozen_
     # the truth: six 0.1 s samples of exhaust (tau 0.4 s) after the vent from 0.5 bar, the
     # check waiting for a reading steady over vent.SETTLED_S
     assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
-    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked, unproven
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked, unproven
     assert json.loads(marker.read_text())["unfollowed_bar"] == 0.5
 
 
@@ -204,7 +204,7 @@ def test_a_monitor_frozen_within_the_tolerance_of_its_step_verifies_no_vent(conf
     # the frozen 0 bar verified it after one 0.1 s sample, with 0.12 exp(-0.25) = 0.093 bar
     # left, above the 0.05 bar a verified vent claims
     assert at_vent[0] == pytest.approx(0.12, abs=1e-3)
-    (marker,) = _folder("sim-Dev1").glob("*.json")  # the bench stays marked
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert json.loads(marker.read_text())["unfollowed_bar"] == 0.12
 
 
@@ -574,10 +574,10 @@ def test_a_final_record_refused_for_good_is_kept_in_the_marker_and_written_next(
     assert result.status == "complete" and result.exit_code == 2
     assert f"run.json could not be written ({type(refusal).__name__}: " in result.reason
     assert result.reason.endswith("run.json still says running: the outcome is kept in the "
-                                  f"bench marker {next(_folder('sim-Dev1').glob('*.json'))}, "
+                                  f"bench marker {next(bench_folder('sim-Dev1').glob('*.json'))}, "
                                   "and the next command on this bench writes it there")
     assert load_run(result.path).status == "running"  # this process: still alive
-    (path,) = _folder("sim-Dev1").glob("*.json")
+    (path,) = bench_folder("sim-Dev1").glob("*.json")
     marker = json.loads(path.read_text())
     assert marker["outcome"]["status"] == "complete"
     assert marker["outcome"]["reason"].startswith("all 3 steps done; run.json could not be")
@@ -600,7 +600,7 @@ def test_a_final_record_refused_for_good_is_kept_in_the_marker_and_written_next(
     # the run's 203, the check's 22: 0.5 bar exhausting with tau 0.4 s falls by less than the
     # monitor's noise over vent.SETTLED_S from 2.2 s on
     assert run.meta.counters["samples"] == len(run.samples) == 225
-    assert not list(_folder("sim-Dev1").glob("*.json"))
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))
 
 
 def test_a_full_disk_at_the_start_leaves_no_folder_and_says_so(tmp_path, mkm_cli, monkeypatch):

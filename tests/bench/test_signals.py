@@ -137,13 +137,13 @@ def test_sigkill_is_noticed_and_vented_by_the_next_command(tmp_path, capsys):
                                      ["acquire", "--pressures", "0.5", "--no-progress"]])
 def test_every_bench_command_vents_a_dead_run_first(tmp_path, capsys, command):
     from mkm.bench.storage import ProcessIdentity
-    from mkm.bench.unvented import Marker, _folder
+    from mkm.bench.unvented import Marker, bench_folder
     from mkm.core.records import write_json_atomic
 
     dead = ProcessIdentity(2**22 + 7, socket.gethostname(), 1.0, None)  # pid above pid_max
     marker = Marker("sim-Dev1", str(tmp_path / "old-run"), "2026-12-01T10:00:00+00:00",
                     vars(dead), 2.5, "2026-12-01T10:05:00+00:00")
-    folder = _folder("sim-Dev1")
+    folder = bench_folder("sim-Dev1")
     folder.mkdir(parents=True)
     write_json_atomic(folder / "dead.json", vars(marker))
     extra = ["--out", str(tmp_path / "runs")] if command[0] == "acquire" else []

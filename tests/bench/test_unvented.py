@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from mkm.bench.storage import ProcessIdentity
-from mkm.bench.unvented import BenchLease, _folder, find_unvented
+from mkm.bench.unvented import BenchLease, bench_folder, find_unvented
 
 
 def test_a_live_lease_is_not_unvented_and_release_removes_it(tmp_path):
@@ -19,7 +19,7 @@ def test_a_live_lease_is_not_unvented_and_release_removes_it(tmp_path):
     assert marker["last_command_bar"] == 1.5 and marker["run_path"] == str(tmp_path / "run")
     assert find_unvented("sim-Dev1") == []  # this process is alive
     lease.release()
-    assert not list(_folder("sim-Dev1").glob("*.json"))
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))
 
 
 def test_a_dead_or_reused_pid_is_unvented(tmp_path):
@@ -51,7 +51,7 @@ def test_a_run_whose_vent_was_not_verified_is_said_so_not_unvented(config, tmp_p
     c = config.replace(sim={"faults": {"regulator_stuck_at_s": 4.0}})
     result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
     assert result.manual_vent_required
-    (path,) = _folder("sim-Dev1").glob("*.json")
+    (path,) = bench_folder("sim-Dev1").glob("*.json")
     data = json.loads(path.read_text())
     data["process"]["started_unix_s"] -= 100.0  # as if its process had died
     path.write_text(json.dumps(data))
@@ -94,7 +94,7 @@ def test_a_stop_while_the_first_marker_is_written_leaves_no_marker(config, tmp_p
     assert interrupted == [1]  # the first write's
     assert result.status == "aborted" and result.exit_code == 130
     assert result.reason == "stopped by a second Ctrl-C (SIGINT) at once; vented"
-    assert not list(_folder("sim-Dev1").glob("*.json"))
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))
     assert find_unvented("sim-Dev1") == []
 
 
@@ -107,7 +107,7 @@ def dead_runs_hang(monkeypatch):
     from mkm.bench.ownership import BenchOwner
 
     release, is_dir, enter = threading.Event(), Path.is_dir, BenchOwner.__enter__
-    benches = _folder("sim-Dev1")
+    benches = bench_folder("sim-Dev1")
 
     def hanging(self, *args, **kwargs):
         if self == benches:
@@ -192,7 +192,7 @@ def test_mkm_vent_after_a_monitor_that_did_not_follow_does_not_call_the_vent_ver
     c = config.replace(sim={"truth": {"monitor_stuck_bar": 0.0}})
     result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
     assert result.manual_vent_required and result.exit_code == 4
-    (path,) = _folder("sim-Dev1").glob("*.json")
+    (path,) = bench_folder("sim-Dev1").glob("*.json")
     data = json.loads(path.read_text())
     assert data["unfollowed_bar"] == 0.5
     data["process"]["started_unix_s"] -= 100.0  # as if its process had died
@@ -301,7 +301,7 @@ def test_a_marker_left_by_a_run_is_kept_through_the_next_run_of_the_same_process
     assert stuck.manual_vent_required
     after = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
     assert after.status == "complete", after.reason
-    (path,) = _folder("sim-Dev1").glob("*.json")
+    (path,) = bench_folder("sim-Dev1").glob("*.json")
     data = json.loads(path.read_text())
     assert data["run_path"] == str(stuck.path.resolve()) and data["vent_unverified"]
     data["process"]["started_unix_s"] -= 100.0  # as if the process had ended

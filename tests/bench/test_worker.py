@@ -117,9 +117,9 @@ def test_failed_final_vent_asks_for_a_vent_by_hand(config, tmp_path):
     # the bench stays marked: the next command on it vents first and says why
     import json
 
-    from mkm.bench.unvented import _folder
+    from mkm.bench.unvented import bench_folder
 
-    (marker,) = [json.loads(p.read_text()) for p in _folder("sim-Dev1").glob("*.json")]
+    (marker,) = [json.loads(p.read_text()) for p in bench_folder("sim-Dev1").glob("*.json")]
     assert marker["run_path"] == str(run.path) and marker["last_command_bar"] == 0.5
 
 

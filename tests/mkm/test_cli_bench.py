@@ -271,14 +271,14 @@ def test_report_says_a_run_vented_a_dead_one_first(tmp_path):
 
     from mkm.bench.run import acquire
     from mkm.bench.storage import ProcessIdentity
-    from mkm.bench.unvented import Marker, _folder
+    from mkm.bench.unvented import Marker, bench_folder
     from mkm.core.records import write_json_atomic
     from mkm.report import build_report
 
     dead = ProcessIdentity(2**22 + 7, socket.gethostname(), 1.0, None)
     marker = Marker("sim-Dev1", "old/run", "2026-12-01T10:00:00+00:00", vars(dead), 2.5)
-    _folder("sim-Dev1").mkdir(parents=True)
-    write_json_atomic(_folder("sim-Dev1") / "dead.json", vars(marker))
+    bench_folder("sim-Dev1").mkdir(parents=True)
+    write_json_atomic(bench_folder("sim-Dev1") / "dead.json", vars(marker))
     config = load_config(pressures_bar=[0.5]).replace(sequence={"preconditioning_cycles": 0})
     path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
     html = build_report([path], ["eq2"], out_dir=tmp_path / "r", cache_dir=None,
