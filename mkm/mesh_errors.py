@@ -202,10 +202,33 @@ def point_bound_pct(force_N, pressure_bar, threshold_bar, geometry, a: float,
         slope = np.where(above, f / np.maximum(p - star, 1e-12), np.nan)
         muscle_slope = np.nanmax(slope) if above.any() else np.nan
         slope = np.where(above, slope, np.where(p > star * (1 - a), muscle_slope, 0.0))
-        error_N = a * star * slope + b * f
+        error_N = _error_N(f, slope, star, a, b)
         scale = max(np.max(f - error_N, initial=0.0), MIN_SCALE_N)
         bound[here] = np.where(np.isfinite(error_N), 100.0 * error_N / scale, np.inf)
     return bound
+
+
+def _error_N(force_N, slope_N_per_bar, threshold_bar, a: float, b: float):
+    """``a P* A + b F`` [N]: how far a mesh's force ``F`` of slope ``A`` above its threshold
+    ``P*`` may lie from the fine mesh's."""
+    return a * threshold_bar * slope_N_per_bar + b * force_N
+
+
+def point_error_N(mesh: str, force_N: float, pressure_bar: float, threshold_bar: float,
+                  D0_mm: float, t0_mm: float, L0_mm: float) -> float:
+    """How far the force of ``mesh`` may lie from the fine mesh's [N] at one point of force
+    ``force_N`` above the threshold (``A = F / (P - P*)``); 0 for the fine mesh itself, inf
+    where no bound is measured (no table for the mesh, or an end zone it does not resolve:
+    :data:`MAX_END_RESOLUTION`)."""
+    if mesh == "fine":
+        return 0.0
+    model = mesh_model()
+    if (mesh not in model or not np.isfinite(force_N)
+            or end_resolution(D0_mm, t0_mm, L0_mm, mesh) > MAX_END_RESOLUTION):
+        return np.inf
+    star = threshold_bar if np.isfinite(threshold_bar) else 0.0
+    slope = force_N / max(pressure_bar - star, 1e-12) if force_N > 0 else 0.0
+    return float(_error_N(force_N, slope, star, *model[mesh]))
 
 
 def summary_line(path: Path | str = MESH_ERRORS_FILE) -> str:

@@ -20,7 +20,7 @@ The reference work's purpose is choosing a muscle's geometry "according to the r
    pressure of that eps is at or above the requirement's pressure: the muscle does not pull
    there), ``fe_not_converged`` (a solve that failed where the muscle has a state),
    ``margin_within_mesh_error`` (met by less than the mesh's force may lie from the fine
-   mesh's: :func:`mkm.design.fe_verification.mesh_error_N`).
+   mesh's: :func:`mkm.mesh_errors.point_error_N`).
 
 :func:`design` is the Python API (a DataFrame of the verified designs); :func:`run_design` also
 writes ``designs.csv``, ``designs.json`` (provenance), ``design.html`` and its figures

@@ -12,6 +12,7 @@ from mkm.fem.calibration import Calibration
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
 from mkm.fem.outcomes import BRAID_LOCKS
+from mkm.mesh_errors import point_error_N
 from mkm.registry import parse_spec
 
 CURVE_STEP_BAR = 0.25  # FE force-pressure curves of the verified designs
@@ -88,26 +89,6 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
     return designs, curves, time.perf_counter() - start, models, hits
 
 
-def mesh_error_N(mesh: str, force_N: float, pressure_bar: float, threshold_bar: float,
-                 D0_mm: float, t0_mm: float, L0_mm: float) -> float:
-    """How far the force of ``mesh`` may lie from the fine mesh's [N] at one point: ``a P* A +
-    b F`` (:mod:`mkm.mesh_errors`, ``A = F / (P - P*)``); 0 for the fine mesh itself, inf
-    where no bound is measured (no table, or an end zone the mesh does not resolve)."""
-    from mkm import mesh_errors
-
-    if mesh == "fine":
-        return 0.0
-    bounds = mesh_errors.mesh_model()
-    if (mesh not in bounds or not np.isfinite(force_N)
-            or mesh_errors.end_resolution(D0_mm, t0_mm, L0_mm, mesh)
-            > mesh_errors.MAX_END_RESOLUTION):
-        return np.inf
-    a, b = bounds[mesh]
-    star = threshold_bar if np.isfinite(threshold_bar) else 0.0
-    slope = force_N / max(pressure_bar - star, 1e-12) if force_N > 0 else 0.0
-    return a * star * slope + b * force_N
-
-
 def _judge(row, requirements, results, mesh: str = "medium") -> dict:
     out, flags, failures, margins = {}, [], [], []
     eps_max = float(chou_hannaford_eps_max(row["theta0_deg"]))
@@ -130,7 +111,7 @@ def _judge(row, requirements, results, mesh: str = "medium") -> dict:
             flags.append(f"r{k}:near_lock")
         if np.isfinite(threshold) and threshold >= req.pressure_bar:
             flags.append(f"r{k}:threshold_above_pressure")
-        if out[f"r{k}_meets"] and force - req.force_N <= mesh_error_N(
+        if out[f"r{k}_meets"] and force - req.force_N <= point_error_N(
                 mesh, force, req.pressure_bar, threshold, row["D0_mm"], row["t0_mm"],
                 row["L0_mm"]):
             # met by less than the mesh may be off: the fine mesh may say otherwise

@@ -694,7 +694,7 @@ def test_a_requirement_met_by_less_than_the_mesh_error_is_flagged(mesh, margin_N
     # the fine mesh's, was reported as meeting it without a word (fresh designs all held on the
     # fine mesh, but the medium mesh's verdict does not prove it)
     from mkm import mesh_errors
-    from mkm.design.fe_verification import _judge, mesh_error_N
+    from mkm.design.fe_verification import _judge
     from mkm.design.spec import Requirement
 
     row = {"theta0_deg": 30.0, "D0_mm": 35.0, "t0_mm": 2.5, "L0_mm": 282.0}
@@ -708,8 +708,8 @@ def test_a_requirement_met_by_less_than_the_mesh_error_is_flagged(mesh, margin_N
     assert ("r1:margin_within_mesh_error" in judged["flags"]) is flagged
     if mesh != "fine":  # a P* A + b F, with the shipped table's a and b
         a, b = mesh_errors.mesh_model()[mesh]
-        assert mesh_error_N(mesh, force, 2.0, 0.5, 35.0, 2.5, 282.0) == pytest.approx(
+        assert mesh_errors.point_error_N(mesh, force, 2.0, 0.5, 35.0, 2.5, 282.0) == pytest.approx(
             a * 0.5 * force / 1.5 + b * force)
     # a tube whose end zone the mesh does not resolve (the coarse mesh on a thin, slender 5 mm
     # tube) has no bound: never cleared
-    assert mesh_error_N("coarse", force, 2.0, 0.5, 5.0, 0.5, 1000.0) == np.inf
+    assert mesh_errors.point_error_N("coarse", force, 2.0, 0.5, 5.0, 0.5, 1000.0) == np.inf
