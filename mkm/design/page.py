@@ -114,7 +114,8 @@ def write_design(result: DesignResult, out: Path) -> Path:
                     + (f"{MAX_CURVES} best of the {len(result.designs)} verified designs (every "
                        "one in fe_curves.csv)" if len(result.designs) > MAX_CURVES
                        else "verified designs") + " (axisym, "
-                    f"{esc(result.mesh)} mesh) at each requirement's eps; triangles: the "
+                    f"{esc(result.mesh)} mesh, the chosen design's fe_mesh) at each "
+                    "requirement's eps; triangles: the "
                     "requirements (the force must reach them); crosses: FE points that did "
                     "not converge."))
     html = out / "design.html"
@@ -141,6 +142,9 @@ COLUMN_DOCS = {
     "r<k>_meets": "the FE force meets requirement k",
     "meets_all": "the FE force meets every requirement (the verdict)",
     "min_fe_margin_pct": "smallest FE margin over the requirements [%]",
+    "fe_mesh": "FE mesh of the forces: the one asked for, or for the chosen design a finer "
+               "one where that mesh met a requirement by less than its force may lie from the "
+               "fine mesh's (mkm.mesh_errors)",
     "flags": "r<k>:near_lock, r<k>:threshold_above_pressure, r<k>:fe_not_converged, "
              "r<k>:margin_within_mesh_error",
     "fe_failure": "the FE's own failure message per requirement",
@@ -154,8 +158,9 @@ FLAG_TEXT = {"near_lock": f"near the braid lock (eps >= {NEAR_LOCK_FRACTION:g} e
              "fe_not_converged": "the FE did not converge",
              "margin_within_mesh_error": "met by less than the mesh's force may lie from the "
                                          "fine mesh's (mkm.mesh_errors; or the mesh's bound is "
-                                         "not measured for this muscle's end zone): verify "
-                                         "with --mesh fine",
+                                         "not measured for this muscle's end zone): only the "
+                                         "chosen design is verified again on a finer mesh; "
+                                         "--mesh fine verifies every one there",
              "worst_corner_short": "the FE force at the worst corner of the tolerances is "
                                    "short of the requirement (a corner is rarer than the "
                                    "probability's complement)",
@@ -208,7 +213,9 @@ def _html_body(result: DesignResult, record: dict, figures) -> str:
         f"Objective: <b>{esc(s.objective)}</b>. The "
         f"{'FE model (' + FE_SEARCH_MESH + ' mesh)' if s.fe_search else esc(s.searcher)} searched "
         f"the box {esc(box_text(s.box))}; the FE model "
-        "(axisym, " + esc(result.mesh) + " mesh) verified the best designs: a design meets "
+        "(axisym, " + esc(result.mesh) + " mesh) verified the best designs, the chosen one "
+        "again on a finer mesh where it met a requirement by less than that mesh's error (its "
+        "fe_mesh): a design meets "
         "the requirements only when the FE says so, and every margin below is the FE's.</p>",
         status,
         *(f'<p class="note">{esc(note)}</p>' for note in result.notes()),

@@ -35,6 +35,7 @@ from mkm.design.spec import (
 )
 from mkm.fem.calibration import Calibration
 from mkm.fem.muscle import Muscle
+from mkm.fem.options import MESH_LEVELS
 
 # --- the API ------------------------------------------------------------------------------------
 
@@ -70,12 +71,16 @@ class DesignResult:
         s = self.search
         cached = f" ({self.fe_cached} sweeps from the cache)" if self.fe_cached else ""
         ok = int(self.designs["meets_all"].sum())
+        finer = self.designs["fe_mesh"] != self.mesh
+        again = (f"; the best met a requirement by less than its error, verified again on "
+                 f"the {' and '.join(_in_mesh_order(self.designs['fe_mesh'][finer]))} mesh"
+                 if finer.any() else "")
         text = "".join(f"{why}; " for why in (s.fe_search, s.searcher_note) if why) + (
                 f"{len(s.candidates)} candidate{'' if len(s.candidates) == 1 else 's'} "
                 f"searched in {s.seconds:.2f} s, "
                 f"{int(s.candidates['feasible'].sum())} feasible by the "
                 f"{'FE search' if s.fe_search else s.searcher}; "
-                f"{len(self.designs)} verified by the FE (axisym, {self.mesh} mesh) in "
+                f"{len(self.designs)} verified by the FE (axisym, {self.mesh} mesh{again}) in "
                 f"{self.fe_seconds:.1f} s{cached}, {ok} meet{'s' if ok == 1 else ''} every "
                 "requirement")
         best = self.chosen
@@ -91,7 +96,7 @@ class DesignResult:
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
         required force (the design then is larger than the requirement needs), a chosen
         design outside the practical range, and one that meets a requirement by less than the
-        mesh's error (``margin_within_mesh_error``). Empty when none."""
+        mesh's error and was verified again on a finer one. Empty when none."""
         s = self.search
         notes = [s.box_note()] if s.box_note() else []
         best = self.chosen
@@ -113,20 +118,19 @@ class DesignResult:
             notes.append(f"the chosen design sits on the edge of the search box "
                          f"{box_text(ranges)}: {', '.join(edges)}; a larger box might hold a "
                          "better design")
-        thin = [flag.split(":")[0] for flag in str(best["flags"] if best is not None else "")
-                .split(";") if flag.endswith(":margin_within_mesh_error")]
-        if thin:
-            notes.append(f"the chosen design meets {', '.join(thin)} by less than the "
-                         f"{self.mesh} mesh's force may lie from the fine mesh's "
-                         f"(its bound from mkm.mesh_errors): run again with --mesh fine "
-                         "before building it")
+        if best is not None and best["fe_mesh"] != self.mesh:
+            notes.append(f"the {self.mesh} mesh's margin of the chosen design was within that "
+                         f"mesh's error (mkm.mesh_errors): verified again on the "
+                         f"{best['fe_mesh']} mesh, where it meets every requirement by "
+                         f"{best['min_fe_margin_pct']:.2g} % or more")
         return notes
 
     def table_text(self) -> str:
         """The verified designs, best first, as a plain text table for the terminal."""
         robust = ["probability_all"] if "probability_all" in self.designs else []
         shown = self.designs[["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
-                              "outer_diameter_mm", "min_fe_margin_pct", *robust, "meets_all"]]
+                              "outer_diameter_mm", "min_fe_margin_pct", "fe_mesh", *robust,
+                              "meets_all"]]
         shown = shown.rename(columns={"outer_diameter_mm": "outer_mm",
                                       "min_fe_margin_pct": "FE_margin_%",
                                       "meets_all": "meets"})
@@ -182,7 +186,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
     designs, curves, seconds, fe_models, hits = verify(
         chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir,
-        workers, scheduler, calibration, found.gap_mm)
+        workers, scheduler, calibration, found.gap_mm, order=lambda d: _ordered(d, objective))
     robust: list[str] = []
     if tolerances is not None:
         designs = check_designs(designs, found.requirements, found.models, tolerances,
@@ -190,15 +194,12 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         robust = [c for k in range(1, len(found.requirements) + 1) for c in (
             f"probability_r{k}", f"probability_r{k}_search", f"r{k}_tolerance_u_N",
             f"r{k}_fe_worst_corner_N")] + ["probability_all"]
-    order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
-    designs = designs.sort_values(["meets_all", *order], ascending=[False] + [
-        objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",
-        ignore_index=True)
+    designs = _ordered(designs, objective)
     n = len(found.requirements)
     columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
         f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + robust + [
-        "meets_all", "min_fe_margin_pct", "flags", "fe_failure"]
+        "meets_all", "min_fe_margin_pct", "fe_mesh", "flags", "fe_failure"]
     return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
 
 
@@ -247,6 +248,20 @@ def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *
     return frame
 
 
+def _ordered(designs: pd.DataFrame, objective: str) -> pd.DataFrame:
+    """The designs best first: those the FE confirms, by rank (the objective's order in the
+    search), or by FE margin for ``max-margin``."""
+    order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
+    return designs.sort_values(["meets_all", *order], ascending=[False] + [
+        objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",
+        ignore_index=True)
+
+
+def _in_mesh_order(meshes) -> list[str]:
+    """The distinct ``meshes``, coarsest first."""
+    return sorted(set(meshes), key=list(MESH_LEVELS).index)
+
+
 def design_record(result: DesignResult) -> dict:
     """What ``designs.json`` records besides provenance (also the ``attrs`` of :func:`design`)."""
     s = result.search
@@ -267,7 +282,9 @@ def design_record(result: DesignResult) -> dict:
                                       "coarse_t0_mm": COARSE_STEPS[1], "D0_mm": D0_STEP_MM,
                                       "t0_mm": T0_STEP_MM, "refined_seeds": SEEDS,
                                       "L0_mm and theta0_deg values per range": AXIS_VALUES}},
+            # the mesh asked for; a design met within its error has the finer one's forces
             "verification": {"model": "axisym", "mesh": result.mesh,
+                             "meshes": _in_mesh_order(result.designs["fe_mesh"]),
                              "seconds": result.fe_seconds,
                              "sweeps_from_cache": result.fe_cached,
                              "near_lock_fraction_of_eps_max": NEAR_LOCK_FRACTION},

@@ -111,7 +111,8 @@ def check_designs(designs: pd.DataFrame, requirements, models: dict,
             out[f"probability_r{k}"] = float(met.mean())
             met_all = met if met_all is None else met_all & met
             out[f"r{k}_fe_worst_corner_N"] = _worst_corner_force(
-                model, mesh, nominal, req, tolerances, cache_dir, cached_predict)
+                model, d.get("fe_mesh", mesh), nominal, req, tolerances, cache_dir,
+                cached_predict)
             if out[f"r{k}_fe_worst_corner_N"] < req.force_N:
                 flags.append(f"r{k}:worst_corner_short")
         out["probability_all"] = float(met_all.mean()) if met_all is not None else np.nan

@@ -40,8 +40,8 @@ MESH = "coarse"
 pytestmark = pytest.mark.slow
 
 
-def fe_force(D0, t0, pressure_bar, eps, theta0_deg, L0_mm=L0_MM):
-    return float(Axisym(theta0_deg=theta0_deg, L0_mm=L0_mm, mesh=MESH).predict(
+def fe_force(D0, t0, pressure_bar, eps, theta0_deg, L0_mm=L0_MM, mesh=MESH):
+    return float(Axisym(theta0_deg=theta0_deg, L0_mm=L0_mm, mesh=mesh).predict(
         pressure_bar, D0, t0, eps).force_N)
 
 
@@ -243,7 +243,7 @@ def test_cli_spec_file_writes_csv_json_and_html(tmp_path, mkm_run):
     assert lines[-1] == str(out / "design.html")  # the path last
     # the ranked designs on the terminal, as in designs.csv
     assert lines[0].split() == ["rank", "D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber",
-                                "outer_mm", "FE_margin_%", "meets"]
+                                "outer_mm", "FE_margin_%", "fe_mesh", "meets"]
     assert len(lines) == 3 and lines[1].split()[0] == "1" and lines[1].split()[-1] == "True"
     assert err.startswith("mkm design: ") and "1 meets every requirement" in err
     table = pd.read_csv(out / "designs.csv")
@@ -358,8 +358,9 @@ def test_braid_angle_range_searched_and_verified_at_the_chosen_angle():
     best = table.iloc[0]
     assert best["meets_all"] and 28.0 <= best["theta0_deg"] <= 38.0
     assert best["L0_mm"] == 250.0
-    # the FE verdict is the FE at the design's own angle and length, solved again here
-    fe = Axisym(theta0_deg=best["theta0_deg"], L0_mm=250.0, mesh=MESH)
+    # the FE verdict is the FE at the design's own angle and length and at the mesh that gave
+    # it (a finer one where MESH met a requirement within its error), solved again here
+    fe = Axisym(theta0_deg=best["theta0_deg"], L0_mm=250.0, mesh=best["fe_mesh"])
     assert best["r2_fe_N"] == pytest.approx(float(
         fe.predict(2.5, best["D0_mm"], best["t0_mm"], 0.20).force_N), rel=1e-9)
     # and the surrogate predicted that muscle, not the default one: within its margin + 5 N
@@ -412,8 +413,8 @@ def test_a_festo_class_requirement_is_searched_with_the_practical_range_surrogat
     assert record["search"]["searcher"] == "surrogate:kind=muscle-gp-range"
     best = pd.read_csv(tmp_path / "designs.csv").iloc[0]
     assert best["meets_all"] and best["r1_fe_N"] >= 300.0  # the FE's verdict, at 6 bar
-    assert fe_force(best["D0_mm"], best["t0_mm"], 6.0, 0.1, 25.0, L0_mm=250.0) == \
-        pytest.approx(best["r1_fe_N"], rel=1e-5)  # the CSV's 6 significant digits
+    assert fe_force(best["D0_mm"], best["t0_mm"], 6.0, 0.1, 25.0, L0_mm=250.0,
+                    mesh=best["fe_mesh"]) == pytest.approx(best["r1_fe_N"], rel=1e-5)  # 6 digits
 
 
 def test_the_search_box_is_named_where_it_is_not_the_surrogates():
@@ -713,3 +714,42 @@ def test_a_requirement_met_by_less_than_the_mesh_error_is_flagged(mesh, margin_N
     # a tube whose end zone the mesh does not resolve (the coarse mesh on a thin, slender 5 mm
     # tube) has no bound: never cleared
     assert mesh_errors.point_error_N("coarse", force, 2.0, 0.5, 5.0, 0.5, 1000.0) == np.inf
+
+
+@pytest.mark.parametrize("thin_rank", [1, 2])
+def test_the_chosen_design_met_within_the_mesh_error_is_verified_again_on_a_finer_mesh(
+        thin_rank):
+    # a chosen design met by less than the verifying mesh's error was only flagged, its verdict
+    # left to the user ("run again with --mesh fine"); the cheapest mesh whose verdict holds now
+    # gives it, for the design chosen (rank 1 when it meets), not for the others
+    from mkm import mesh_errors
+    from mkm.design import verify
+
+    sizes = {thin_rank: 36.0, 3 - thin_rank: 44.0}
+    designs = pd.DataFrame([{"rank": rank, "D0_mm": sizes[rank], "t0_mm": 2.5, "L0_mm": 282.0,
+                             "theta0_deg": 30.0, "rubber": "silastic_s"} for rank in (1, 2)])
+    force = {mesh: fe_force(36.0, 2.5, 2.0, 0.1, 30.0, 282.0, mesh)
+             for mesh in ("coarse", "medium", "fine")}
+    req = Requirement(force["coarse"] - 0.05, 2.0, 0.1)  # met by 0.05 N on the coarse mesh
+    table, curves, _, models, _ = verify(designs, [req], mesh="coarse")
+    thin = table.set_index("rank").loc[thin_rank]
+    wide = table.set_index("rank").loc[3 - thin_rank]
+    assert wide["fe_mesh"] == "coarse" and wide["r1_fe_margin_pct"] > 40
+    if thin_rank == 2:  # not the chosen design: its coarse verdict kept, flagged
+        assert thin["fe_mesh"] == "coarse" and thin["r1_fe_N"] == pytest.approx(force["coarse"])
+        assert "r1:margin_within_mesh_error" in thin["flags"]
+        assert set(curves["mesh"]) == {"coarse"} and {key[0] for key in models} == {"coarse"}
+        return
+    assert list(table["rank"]) == ([1, 2] if thin["r1_meets"] else [2, 1])  # best first
+    assert thin["fe_mesh"] in ("medium", "fine")
+    assert thin["r1_fe_N"] == pytest.approx(force[thin["fe_mesh"]], rel=1e-9)
+    margin_medium = force["medium"] - req.force_N
+    error_medium = mesh_errors.point_error_N("medium", force["medium"], 2.0,
+                                             thin["r1_threshold_bar"], 36.0, 2.5, 282.0)
+    # medium suffices exactly when its margin clears its own error, or it fails there
+    assert (thin["fe_mesh"] == "medium") is bool(margin_medium < 0 or
+                                                 margin_medium > error_medium)
+    assert "margin_within_mesh_error" not in thin["flags"]
+    assert set(curves.loc[curves["design"] == thin_rank, "mesh"]) == {thin["fe_mesh"]}
+    assert set(curves.loc[curves["design"] == 3 - thin_rank, "mesh"]) == {"coarse"}
+    assert {"coarse", thin["fe_mesh"]} <= {key[0] for key in models}  # every mesh it used
