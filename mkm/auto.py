@@ -146,6 +146,20 @@ def _in_practical_range(P, D0, t0, eps) -> bool:
                                    ("eps", eps)))
 
 
+def _measured_points(muscle: dict, P, D0, t0, eps) -> np.ndarray:
+    """Per point, whether it and the muscle ``muscle`` (a model's params) lie in the practical
+    range, where the meshes' errors are measured (:mod:`mkm.mesh_errors`)."""
+    from mkm.fem.limits import PRACTICAL_RANGE
+
+    fixed = {k: muscle.get(k) for k in ("L0_mm", "theta0_deg", "C10_MPa", "C01_MPa")}
+    if PRACTICAL_RANGE.violations(**fixed):
+        return np.zeros(np.shape(P), dtype=bool)
+    return np.array([not PRACTICAL_RANGE.violations(pressure_bar=p, D0_mm=d, t0_mm=t, eps=e,
+                                                    L0_mm=fixed["L0_mm"],
+                                                    theta0_deg=fixed["theta0_deg"])
+                     for p, d, t, e in zip(P, D0, t0, eps, strict=True)], dtype=bool)
+
+
 def _announce_first_training(kind: str) -> None:
     """Say before a surrogate trains on first use (seconds at its shipped kernels, a minute for
     the practical range's without them), so that a command does not wait without a word."""
@@ -374,6 +388,11 @@ class AutoModel(ForceModel):
                     "in the study's convergence table")
         a, b = model[mesh]
         candidate = self._candidate(row.spec)
+        # the bound is measured on muscles of the practical range: beyond it, none is claimed
+        measured = _measured_points(candidate.params(), P, D0, t0, eps)
+        if not np.any(measured):
+            return (None, np.full(P.shape, np.inf), f"{mesh} mesh: its error is measured over "
+                    "the practical range (`mkm models`), which the call leaves")
         resolved = mesh_errors.end_resolution(D0, t0, candidate.params()["L0_mm"], mesh) \
             <= mesh_errors.MAX_END_RESOLUTION
         if not np.any(resolved):  # its bound is not measured there: not solved at all
@@ -387,7 +406,8 @@ class AutoModel(ForceModel):
         threshold = np.ravel(pred.extras.get("threshold_pressure_bar", np.full(P.shape, np.nan)))
         bound = mesh_errors.point_bound_pct(force, P, threshold, np.stack([D0, t0, eps], axis=1),
                                             a, b)
-        bound[~np.ravel(pred.valid) | ~np.isfinite(bound) | ~np.ravel(resolved)] = np.inf
+        bound[~np.ravel(pred.valid) | ~np.isfinite(bound) | ~np.ravel(resolved)
+              | ~measured] = np.inf
         return pred, bound, (f"mesh error at this call's scale: {100 * a:.3f} % of P* x the "
                              f"slope + {100 * b:.3f} % of the force, the largest over fresh "
                              f"random muscles whose clamped end it resolves x "

@@ -273,6 +273,24 @@ def test_a_mesh_answers_only_where_its_end_zone_bound_was_measured(table_path, m
     assert set(chosen["model_used"]) == {"axisym-coarse" if resolved else "axisym-fine"}
 
 
+@pytest.mark.parametrize("D0_mm, L0_mm, theta0_deg, measured", [
+    (55.0, 282.0, 30.0, True), (62.0, 282.0, 30.0, False), (55.0, 1100.0, 30.0, False),
+    (55.0, 282.0, 42.0, False)])
+def test_a_mesh_answers_only_inside_the_range_its_bound_was_measured_over(
+        table_path, mesh_table, D0_mm, L0_mm, theta0_deg, measured):
+    # a tube of 62 mm (the practical range ends at 60) was answered by the coarse mesh with the
+    # bound measured inside the range: a promise made where it was never tested
+    chosen = AutoModel(table=table_path, build=no_surrogate_build, tolerance=0.99,
+                       L0_mm=L0_mm, theta0_deg=theta0_deg, mesh_errors=mesh_table).choose(
+        P, D0_mm, 2.5, 0.05)
+    assert set(chosen["model_used"]) == {"axisym-coarse" if measured else "axisym-fine"}
+    # per point: the points inside answered by the mesh, those beyond the range by the fine one
+    mixed = AutoModel(table=table_path, build=no_surrogate_build, tolerance=0.99,
+                      mesh_errors=mesh_table, per_point=True).choose(
+        np.array([1.0, 1.0]), np.array([55.0, 62.0]), 2.5, 0.05)
+    assert list(mixed["model_used"]) == ["axisym-coarse", "axisym-fine"]
+
+
 @pytest.mark.slow  # the default surrogate (GP training) and the fine mesh
 def test_a_single_point_just_above_the_threshold_meets_the_tolerance():
     # Issue 34: at 0.5 % auto answered this single point (0.41 bar, just above P*) from the
