@@ -8,7 +8,7 @@ import os
 import re
 import sys
 
-from mkm.core.ranges import parse_fraction, parse_number, parse_pressures
+from mkm.core.ranges import parse_fraction, parse_number, parse_pressures, parse_shortenings
 from mkm.core.records import (
     prediction_metadata,
     sidecar_path,
@@ -225,8 +225,9 @@ def with_calibration(func):
     return run
 
 
-def add_muscle_arguments(parser, length: bool = False) -> None:
-    """``--D0``, ``--t0``, ``--eps`` (and ``--L0`` with ``length``), all required."""
+def add_muscle_arguments(parser, length: bool = False, sweep: bool = False) -> None:
+    """``--D0``, ``--t0``, ``--eps`` (and ``--L0`` with ``length``), all required; with
+    ``sweep`` ``--eps`` takes several shortenings too (:func:`sweep_grid`)."""
     parser.add_argument("--D0", required=True, type=argtype(parse_number, "--D0", "mm"),
                         help=shared_help("--D0"))
     parser.add_argument("--t0", required=True, type=argtype(parse_number, "--t0", "mm"),
@@ -234,14 +235,30 @@ def add_muscle_arguments(parser, length: bool = False) -> None:
     if length:
         parser.add_argument("--L0", required=True, type=argtype(parse_within, "--L0", "L0_mm"),
                             help=shared_help("--L0"))
-    parser.add_argument("--eps", required=True, type=argtype(parse_fraction),
-                        help=shared_help("--eps"))
+    parser.add_argument("--eps", required=True,
+                        type=argtype(parse_shortenings if sweep else parse_fraction),
+                        help=shared_help("--eps") + (
+                            "; several as start:stop:step or a comma list (0:20%%:5%%): "
+                            "every pressure at each, a force-length curve at one pressure"
+                            if sweep else ""))
 
 
 def add_geometry_arguments(parser) -> None:
-    add_muscle_arguments(parser)
+    """``--D0``, ``--t0``, ``--eps`` (one or several: :func:`sweep_grid`) and ``--pressures``."""
+    add_muscle_arguments(parser, sweep=True)
     parser.add_argument("--pressures", default="0:2.5:0.25", type=argtype(parse_pressures),
                         help=shared_help("--pressures", "default 0:2.5:0.25"))
+
+
+def sweep_grid(pressures, eps):
+    """The points of ``--pressures`` x ``--eps``: one shortening gives the pressures and it as
+    they are; several, every pressure at each (eps the slower), as two flat arrays."""
+    import numpy as np
+
+    if np.ndim(eps) == 0:
+        return pressures, eps
+    pressures, eps = np.asarray(pressures, dtype=float), np.asarray(eps, dtype=float)
+    return np.tile(pressures, eps.size), np.repeat(eps, pressures.size)
 
 
 def model_from_args(args, **overrides):

@@ -18,6 +18,7 @@ from mkm.cli.common import (
     say,
     shared_help,
     spec_from_args,
+    sweep_grid,
     with_calibration,
 )
 from mkm.core.ranges import parse_fraction, parse_number, parse_tolerance
@@ -156,6 +157,7 @@ def _target(text: str) -> str:
 
 
 def _solve(args) -> int:
+    args.pressures, args.eps = sweep_grid(args.pressures, args.eps)
     model = model_from_args(args)
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     if args.calibration is not None:  # an identified muscle's: its 95 % band beside the force

@@ -17,6 +17,7 @@ from mkm.cli.common import (
     parse_within,
     say,
     shared_help,
+    sweep_grid,
     with_calibration,
 )
 from mkm.core.ranges import parse_number, parse_seed
@@ -296,6 +297,7 @@ def _label(path: str) -> str:
 
 
 def _predict(args) -> int:
+    args.pressures, args.eps = sweep_grid(args.pressures, args.eps)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         model = _load(args.model, args.calibration, args.accept_mismatch, not args.no_progress,

@@ -159,6 +159,46 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
     return values
 
 
+def parse_shortenings(text: str, name: str = "--eps") -> float | np.ndarray:
+    """One shortening ratio (:func:`parse_fraction`: ``0.05``, ``5%``), or several:
+    ``start:stop:step`` (stop included) or a comma list, each a fraction or a percentage
+    (``0:0.2:0.05``, ``0%:20%:5%``, ``0.05,0.1``); a float for one, an array for several. A text
+    that reads both as one value with a decimal comma and as a list is refused."""
+    import numpy as np
+
+    text = text.strip()
+    if ":" in text:
+        parts = text.split(":")
+        if len(parts) != 3:
+            raise ValueError(f"{name} {text!r} is malformed: expected start:stop:step (for "
+                             "example 0:0.2:0.05 or 0%:20%:5%)")
+        start, stop, step = (parse_fraction(part, name) for part in parts)
+        if step <= 0:
+            raise ValueError(f"{name} {text!r}: step {step:g} must be > 0")
+        if stop < start:
+            raise ValueError(f"{name} {text!r}: stop {stop:g} is below start {start:g}")
+        count = int(np.floor((stop - start) / step + 1e-9)) + 1
+        if count > MAX_RANGE_VALUES:
+            raise ValueError(f"{name} {text!r} expands to {count} values: expected at most "
+                             f"{MAX_RANGE_VALUES}")
+        return np.round(start + step * np.arange(count), 12)
+    if "," not in text:
+        return parse_fraction(text, name)
+    readings = []
+    for parse in (lambda: parse_fraction(text, name),
+                  lambda: np.array([parse_fraction(part, name) for part in text.split(",")])):
+        try:
+            readings.append(parse())
+        except ValueError as exc:
+            error = exc
+    if len(readings) == 2:
+        raise ValueError(f"{name} {text!r} reads as one value with a decimal comma and as a "
+                         "list: expected a decimal point (0.1) or a list of points (0,0.1)")
+    if not readings:
+        raise error
+    return readings[0]
+
+
 def parse_tolerance(text: str, name: str = "--tolerance") -> float:
     """A relative tolerance in (0, 1): a fraction (``0.02``) or a percentage (``2%``). A number
     from 1 to 100 without its sign is told it may be a percentage (:func:`parse_fraction`)."""

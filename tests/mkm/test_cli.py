@@ -170,6 +170,26 @@ def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     np.testing.assert_allclose(frame.force_N, expected, rtol=1e-5)  # CSV keeps 6 digits
 
 
+@pytest.mark.parametrize("command", [["fem", "solve", "--model", "thickwall"],
+                                     ["surrogate", "predict"]])
+def test_solve_and_predict_take_several_shortenings_every_pressure_at_each(command, mkm_run):
+    # a force-length curve at one pressure (the muscle's static characteristic) needed one call
+    # per eps: --eps took one value
+    code, stdout, err = mkm_run([*command, "--D0", "35", "--t0", "2.5", "--pressures", "1,2",
+                                 "--eps", "0:15%:5%"])
+    assert code == 0, err
+    frame = pd.read_csv(io.StringIO(stdout))
+    assert list(frame.pressure_bar) == [1, 2] * 4
+    np.testing.assert_allclose(frame.eps, np.repeat([0, 0.05, 0.1, 0.15], 2))
+    model = make_model("thickwall") if command[0] == "fem" else make_model("surrogate")
+    for eps, rows in frame.groupby("eps"):  # each eps as its own sweep gives
+        np.testing.assert_allclose(rows.force_N, model.predict(
+            rows.pressure_bar.to_numpy(), 35, 2.5, eps).force_N, rtol=1e-5)
+    # held at one pressure, a muscle pulls less the more it is shortened
+    at_2bar = frame[frame.pressure_bar == 2].force_N.to_numpy()
+    assert (np.diff(at_2bar) < 0).all()
+
+
 def test_solve_sidecar_names_the_code_and_the_calibration_behind_the_forces(tmp_path, mkm_run):
     # provenance: the code version (as `mkm fem dataset` records it) and which calibration
     # gave theta0; was only the parameters' values

@@ -9,6 +9,7 @@ from mkm.core.ranges import (
     parse_number,
     parse_pressures,
     parse_range,
+    parse_shortenings,
     parse_tolerance,
 )
 
@@ -124,3 +125,25 @@ def test_bad_text_gives_one_line_naming_it(call, message):
     with pytest.raises(ValueError, match=message) as info:
         call()
     assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("5%", 0.05), ("0.05", 0.05), ("0,05", 0.05), ("12,5%", 0.125),  # one, as parse_fraction
+    ("0:0.2:0.05", [0.0, 0.05, 0.1, 0.15, 0.2]), ("0%:20%:10%", [0.0, 0.1, 0.2]),
+    ("0.05,0.1", [0.05, 0.1]), ("5%,10%", [0.05, 0.1]), ("0,0.1", [0.0, 0.1])])
+def test_several_shortenings_are_a_range_or_a_list(text, expected):
+    got = parse_shortenings(text)
+    assert np.ndim(got) == np.ndim(expected)
+    np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("text, message", [
+    ("0,5%", "reads as one value with a decimal comma and as a list"),  # 0.005 or 0 and 5 %
+    ("0.2:0.1:0.05", "stop 0.1 is below start 0.2"),
+    ("0:0.2", "expected start:stop:step"),
+    ("0.05,12", "did you mean 12%?"),
+    ("0:50:10", "did you mean 50%?")])
+def test_shortenings_that_do_not_read_are_named(text, message):
+    with pytest.raises(ValueError, match="--eps") as info:
+        parse_shortenings(text)
+    assert message in str(info.value)
