@@ -113,6 +113,30 @@ ZERO_LIMITS = {"--tare": (-MAX_CAPACITY_N, MAX_CAPACITY_N,
 VENTED_AUTO_MAX_BAR = INSTRUMENT_BOUNDS["monitor_offset_bar"][1]
 
 
+#: a pressure sensor's zero error where a table declares no pressure accuracy, as a fraction of
+#: the span: 1 % of full scale, the class of a proportional regulator's readback (Festo VPPM,
+#: SMC ITV), of a sensor spanning the practical range
+GAUGE_ZERO_ERROR_OF_SPAN = 0.01
+
+
+def _below_zero_bound(pressure: np.ndarray, declared: Declared | None):
+    """How far below 0 bar each reading of a step table may lie and still be a vented row
+    [bar], and that bound in words: the declared pressure accuracy at the reading, else a
+    gauge's zero error (:data:`GAUGE_ZERO_ERROR_OF_SPAN` of the practical range)."""
+    if declared is not None:
+        at = " at that reading" if declared.fraction else ""
+        noise = series.PLATEAU_TOLERANCE_BAR  # a reading's noise, whatever its accuracy
+        return (np.maximum(declared.absolute + declared.fraction * np.abs(pressure), noise),
+                lambda bound: (f"the declared pressure accuracy, +-{bound:.3g} bar{at}"
+                               if bound > noise else f"a reading's noise, +-{noise:g} bar")
+                + f" (--accuracy pressure={declared.text})")
+    top = PRACTICAL_RANGE.pressure_bar[1]
+    return (np.full(pressure.shape, GAUGE_ZERO_ERROR_OF_SPAN * top),
+            lambda bound: f"a gauge's zero error, +-{bound:g} bar where no pressure accuracy "
+            f"is declared ({100 * GAUGE_ZERO_ERROR_OF_SPAN:g} % of the practical range's "
+            f"{top:g} bar)")
+
+
 #: what a given zero may look like typed with its unit (for the messages)
 ZERO_EXAMPLES = {"N": "1.5N or 0.2kgf", "bar": "0.02bar or 1013mbar"}
 
@@ -665,8 +689,22 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                           f"{found['time'].header!r} is in milliseconds, import again with "
                           "--units time=ms")
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
-    # -0.0001 bar too)
-    noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
+    # -0.0001 bar too); a step table's pressures are as written, no vented reading subtracted,
+    # so its vented rows read the gauge's zero error, taken as 0 bar up to its bound
+    step_table = not (timed or record)
+    below = _below_zero_bound(pressure, accuracy.get("pressure")) if step_table else None
+    noise = (pressure < 0) & (pressure >= -(below[0] if below else
+                                            series.PLATEAU_TOLERANCE_BAR))
+    if below and np.any(noise & (pressure < -series.PLATEAU_TOLERANCE_BAR)):
+        rows = np.flatnonzero(noise)
+        lowest = int(rows[np.argmin(pressure[rows])])
+        cells = [group.cell(int(k), "pressure") for k in rows]
+        handling["below_zero_bound_bar"] = float(below[0][lowest])
+        notes.append(f"{rows.size} row(s) reading down to {pressure[lowest]:g} bar "
+                     f"({', '.join(cells[:5])}{', ...' if len(cells) > 5 else ''}) taken as "
+                     f"vented, 0 bar: within {below[1](below[0][lowest])}"
+                     + ("" if "pressure" in accuracy else
+                        "; --accuracy pressure=... declares the sensor's"))
     pressure = np.where(noise, 0.0, pressure)
     handling["readings_below_zero_set_to_0"] = int(noise.sum())
     top_bar = float(pressure.max())
@@ -682,11 +720,16 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     # the first bad cell named (a record's every sample checked at once)
     for k in np.flatnonzero(outside("pressure_bar", pressure))[:1]:
         p = pressure[k]
+        if p < 0 and below:
+            raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
+                             f"{found['pressure'].header!r}): {p:g} bar is below 0 by more "
+                             f"than {below[1](below[0][k])}: expected a gauge pressure >= "
+                             f"{-below[0][k]:.3g} bar; if the sensor's accuracy is wider, "
+                             f"declare it: --accuracy pressure={-p:g}bar")
         if p < 0:
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
-                             "gauge pressure >= 0" + (" (--vented sets a vented reading to "
-                                                      "subtract)" if timed or record else ""))
+                             "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
     if timed:
         rest = series.tare(time_s, pressure, force)
