@@ -572,21 +572,25 @@ def registry(case_sensitive: bool = True):
 NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
 
 
-#: unit spellings of lab headers that pint reads otherwise (any case) -> what a lab means:
-#: ``[-]`` dimensionless, ``MPA``/``mpa`` not millipascal, ``KN`` not knot, ``kp`` the kilopond
-#: not the kilopoise, ``MBAR`` not megabar, ``MM``/``S``/``MS`` not megamolar or siemens, and
+#: unit spellings of lab headers that pint reads otherwise (any case, spaces as one) -> what a
+#: lab means: ``[-]`` dimensionless, ``MPA``/``mpa`` not millipascal, ``KN`` not knot, ``kp``
+#: the kilopond not the kilopoise, ``MBAR`` not megabar, ``MM``/``S``/``MS`` not megamolar or
+#: siemens, ``at`` the technical atmosphere (a word where a header's name holds it, see
+#: :data:`NOT_UNITS`), ``in Hg`` an inch of mercury (not an inch times mercury's density), and
 #: the gauge suffixes (the toolkit's pressures are gauge pressures)
 LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", "pa": "Pa",
-             "kpa": "kPa", "mpa": "MPa", "psi": "psi", "psig": "psi", "n": "N", "kn": "kN",
-             "dan": "daN", "kp": "kgf", "kilopond": "kgf", "kgf": "kgf", "lbf": "lbf",
-             "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
+             "kpa": "kPa", "mpa": "MPa", "psi": "psi", "psig": "psi", "at": "technical_atmosphere",
+             "in hg": "inch_Hg", "in. hg": "inch_Hg", "inch hg": "inch_Hg", "mm hg": "mmHg",
+             "n": "N", "kn": "kN", "dan": "daN", "kp": "kgf", "kilopond": "kgf", "kgf": "kgf",
+             "lbf": "lbf", "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
 
 
-#: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü)
-_GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi)\s*(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))",
-                    re.IGNORECASE)
-#: the same marked absolute (bar a, bar(a), psia, bar abs): refused, with why
-_ABSOLUTE = re.compile(r"(?:m?bar|[km]?pa|psi)\s*"
+#: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü),
+#: atü (German technical atmospheres above the atmosphere)
+_GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi|at)\s*"
+                    r"(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))", re.IGNORECASE)
+#: the same marked absolute (bar a, bar(a), psia, bar abs, ata): refused, with why
+_ABSOLUTE = re.compile(r"(?:m?bar|[km]?pa|psi|at)\s*"
                        r"(?:\(\s*(?:a|abs|absolute)\s*\)|(?:a|abs|absolute))", re.IGNORECASE)
 
 
@@ -602,8 +606,8 @@ def parse_unit(text: str):
     text = text.strip()
     if gauge := _GAUGE.fullmatch(text):  # the toolkit's pressures are gauge pressures
         text = gauge.group("unit")
-    if text.lower() in LAB_UNITS:
-        return registry().Unit(LAB_UNITS[text.lower()])
+    if (spelled := " ".join(text.lower().split())) in LAB_UNITS:
+        return registry().Unit(LAB_UNITS[spelled])
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
         return None
     for case_sensitive in (True, False):
@@ -657,7 +661,7 @@ def parse_header(text: str) -> tuple[str, str | None]:
     if len(words) == 1 and words[0].lower() in CLOCK_NAMES:
         return words[0].lower(), CLOCK_NAMES[words[0].lower()]
     for k, word in enumerate(words[1:], start=1):
-        unit = parse_unit(word)
+        unit = None if word.lower() in NOT_UNITS else parse_unit(word)
         if unit is not None and any(_fits(unit, r) for r in ROLES.values()):
             return _name(words[:k] + words[k + 1:]), word
     return _name(words), None
