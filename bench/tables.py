@@ -181,6 +181,22 @@ _THOUSANDS = re.compile(r"^[+-]?\d{1,3}(,\d{3})+$")
 _GROUPED = {",": re.compile(r"^(?P<number>[+-]?\d{1,3}(\.\d{3})+,\d+)(?P<rest>.*)$"),
             ".": re.compile(r"^(?P<number>[+-]?\d{1,3}(,\d{3})+\.\d+)(?P<rest>.*)$")}
 
+#: marks that group a number's thousands and are no decimal mark anywhere: an apostrophe (Swiss
+#: 1'234.5, typeset 1’234.5) and a thin, narrow no-break or no-break space (French 1 234,5)
+_GROUP_MARKS = "'\u2019\u2009\u202f\u00a0"
+_MARK_GROUPED = re.compile(rf"^(?P<sign>[+-]?)(?P<digits>\d{{1,3}}(?:[{_GROUP_MARKS}]\d{{3}})+)"
+                           rf"(?![\d{_GROUP_MARKS}])")
+
+
+def _ungrouped(text: str) -> str:
+    """``text`` with the marks of :data:`_GROUP_MARKS` dropped from a leading number grouped
+    by threes (``1'234.5`` -> ``1234.5``); any other text as it is."""
+    match = _MARK_GROUPED.match(text)
+    if not match:
+        return text
+    return (match["sign"] + re.sub(f"[{_GROUP_MARKS}]", "", match["digits"])
+            + text[match.end():])
+
 
 def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     """The tables in ``path``: one for a text file, one per sheet of a workbook (or the sheet
@@ -234,7 +250,8 @@ def _text_table(path: Path, text: str) -> RawTable:
               if any(c.strip() for c in cells)]
     if path.suffix.lower() == ".lvm":
         parsed = _without_later_lvm_headers(path, parsed)
-    decimal = _decimal(path, separator, [c.strip() for _, cells in parsed[1:200] for c in cells])
+    decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
+                                         for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
 
@@ -357,7 +374,7 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                 if len(rows) > MAX_ROWS:
                     raise ValueError(f"{path}, sheet {name!r} has more than {MAX_ROWS} rows")
             # numbers a German Excel stored as text ("1,5") have a decimal comma
-            decimal = "," if any(isinstance(c, str) and _COMMA_DECIMAL.match(c.strip())
+            decimal = "," if any(isinstance(c, str) and _COMMA_DECIMAL.match(_ungrouped(c.strip()))
                                  for cells in rows[:50] for c in cells) else "."
             try:
                 tables.append(_with_header(path, name, numbers, rows, None, decimal))
@@ -1198,7 +1215,7 @@ def _number(cell, decimal: str) -> tuple[float | None, str | None]:
         return None, None
     if isinstance(cell, int | float):
         return float(cell), None
-    text = str(cell).strip()
+    text = _ungrouped(str(cell).strip())
     if text.lower().lstrip("+-") in ("nan", "inf", "infinity"):
         return float(text), None
     grouped = _GROUPED[decimal].match(text)

@@ -323,6 +323,24 @@ def test_thousands_grouped_beside_a_decimal_mark(tmp_path):
     np.testing.assert_allclose(column_values(table, found["force"]), [250.5, 1234.5])
 
 
+@pytest.mark.parametrize("mark", ["'", "\u2019", "\u2009", "\u202f", "\u00a0"])
+def test_thousands_grouped_by_an_apostrophe_or_a_space(mark, tmp_path):
+    # a Swiss spreadsheet's 1'234.5, a French one's 1 234,5 (a thin or no-break space): were
+    # "'1'234.5' is not a number"
+    table, found = _one(tmp_path, f"P [bar];F [N]\n1.5;250.5\n2.5;1{mark}234.5\n"
+                        f"3;12{mark}634{mark}000.25 N\n", "ch.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]),
+                               [250.5, 1234.5, 12634000.25], rtol=1e-15)
+    table, found = _one(tmp_path, f"P [bar];F [N]\n1;250,5\n2;1{mark}234,5\n", "fr.csv")
+    assert table.decimal == ","
+    np.testing.assert_allclose(column_values(table, found["force"]), [250.5, 1234.5],
+                               rtol=1e-15)
+    # a mark that groups no three digits is no grouping: the cell is named
+    with pytest.raises(ValueError, match=re.escape(f"{'1' + mark + '23.5'!r} is not a number")):
+        table, found = _one(tmp_path, f"P [bar];F [N]\n1.5;250.5\n2;1{mark}23.5\n", "bad.csv")
+        column_values(table, found["force"])
+
+
 def test_rows_of_separators_only_are_blank(tmp_path):
     # a spreadsheet's export: empty rows as ";;", between the data and after it
     table, found = _one(tmp_path, "Druck (bar);Kraft (N);Notiz\n0,5;12,25;\n;;\n1,0;40,5;ok\n"
