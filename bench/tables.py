@@ -297,6 +297,7 @@ def _decimal(path: Path, separator: str, cells: list[str]) -> str:
     holding a comma was quoted (``"1,5"``): a decimal comma, unless other cells have decimal
     points (then the commas group thousands) or every such cell could be either
     (``"1,500"``: refused, naming it)."""
+    cells = [_number_part(c) for c in cells]
     commas = [c for c in cells if _COMMA_DECIMAL.match(c) or _GROUPED[","].match(c)]
     if separator != ",":
         return "," if commas else "."
@@ -307,6 +308,15 @@ def _decimal(path: Path, separator: str, cells: list[str]) -> str:
                          "could be decimal commas or thousands: expected the file saved with "
                          "';' as separator, or its numbers without thousands separators")
     return ","
+
+
+def _number_part(text: str) -> str:
+    """A cell's number where a unit follows it (``'1,25 bar'`` -> ``'1,25'``), so that its
+    decimal mark is seen as a bare number's; any other cell as it is."""
+    match = _NUMBER_AND_UNIT[0].match(text)
+    if match and match["unit"] and parse_unit(match["unit"]) is not None:
+        return match["number"]
+    return text
 
 
 def _separator(lines: list[str]) -> str:
@@ -373,9 +383,10 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                     rows.append(cells)
                 if len(rows) > MAX_ROWS:
                     raise ValueError(f"{path}, sheet {name!r} has more than {MAX_ROWS} rows")
-            # numbers a German Excel stored as text ("1,5") have a decimal comma
-            decimal = "," if any(isinstance(c, str) and _COMMA_DECIMAL.match(_ungrouped(c.strip()))
-                                 for cells in rows[:50] for c in cells) else "."
+            # numbers a German Excel stored as text ("1,5", "1,25 bar") have a decimal comma
+            decimal = "," if any(
+                isinstance(c, str) and _COMMA_DECIMAL.match(_number_part(_ungrouped(c.strip())))
+                for cells in rows[:50] for c in cells) else "."
             try:
                 tables.append(_with_header(path, name, numbers, rows, None, decimal))
             except ValueError as exc:  # a sheet of notes: skipped unless it was asked for

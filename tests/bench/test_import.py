@@ -757,6 +757,38 @@ def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_p
     assert not (tmp_path / "lost.xlsx").exists()
 
 
+def test_decimal_commas_with_a_unit_in_every_cell_read_and_read_back(tmp_path, mkm_cli):
+    # a logger writing '1,25 bar' and '120,5 N' in every cell: the file was refused ("'0,001
+    # bar' is not a number": the decimal comma not seen behind a unit), and so was the
+    # exported workbook's sheet imported_table, which keeps such cells as written
+    rng = np.random.default_rng(9)
+    n = 600
+    p = np.abs(np.interp(np.arange(n), [0, 40, 320, n - 1], [0, 0, 2.0, 0])
+               + rng.normal(0, 0.003, n))
+    f = thickwall_N(p, 0.0) + 2.0 + rng.normal(0, 0.3, n)
+    path = tmp_path / "units.csv"
+    path.write_text("Druck;Kraft\n" + "".join(f"{a:.3f} bar;{b:.2f} N\n".replace(".", ",")
+                                              for a, b in zip(p, f, strict=True)),
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "decimal comma" in err and run.meta.imported_from["shape"] == "ramp"
+    # the steps are the bins of the cells as written: the same as a table without the units
+    plain = tmp_path / "plain" / "plain.csv"
+    plain.parent.mkdir()
+    plain.write_text(path.read_text(encoding="utf-8").replace(" bar", "").replace(" N", ""),
+                     encoding="utf-8")
+    (bare,), _ = _import(mkm_cli, plain, *MUSCLE, "--eps", "0")
+    assert run.steps["force_N_mean"].tolist() == bare.steps["force_N_mean"].tolist()
+    book = tmp_path / "run.xlsx"
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
+    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
+        assert again.steps[column].tolist() == run.steps[column].tolist()
+    (restored,), _ = _import(mkm_cli, book)
+    assert restored.steps["force_N_mean"].tolist() == run.steps["force_N_mean"].tolist()
+
+
 def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, mkm_cli):
     """A colleague's exported bench run imports back with its own steps (set pressures, holds,
     uncertainty budgets), samples, calibration, tare, hardware and sequence, so the report
