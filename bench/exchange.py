@@ -604,6 +604,21 @@ def _look_alike(group: _Group, key: str) -> str:
     return ""
 
 
+def _closing_rest(clock, pressure, force, rest) -> series.Tare | None:
+    """The vented rest that ends a record where it is a surer zero than ``rest``, the one
+    before its rise: that one of fewer than :data:`mkm.bench.series.SHORT_REST_SAMPLES`
+    samples (the logging began as the pressure rose: they already pull) or held pressurised,
+    this one vented and of that many samples or more; else None."""
+    if rest.rest.stop >= series.SHORT_REST_SAMPLES and \
+            rest.pressure_bar <= series.VENTED_THRESHOLD_BAR:
+        return None
+    end = series.end_rest(clock, pressure, force)
+    if (end.rest.start <= rest.rest.stop or end.pressure_bar > series.VENTED_THRESHOLD_BAR
+            or end.rest.stop - end.rest.start < series.SHORT_REST_SAMPLES):
+        return None
+    return end
+
+
 def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
     """The note (if any) of a record that ends vented at another zero than it started: the
     drift recorded as ``zero_drift_N`` (end less start), said when it is beyond 4 standard
@@ -731,14 +746,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
                              "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
-    if timed:
-        rest = series.tare(time_s, pressure, force)
+    closing = None
+    if timed or record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
+        clock = time_s if timed else np.arange(pressure.size, dtype=float)
+        rest = series.tare(clock, pressure, force)
         zero, zero_at = rest.force_N, rest.pressure_bar
         handling["tare_at_bar"] = zero_at
-    elif record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
-        rest = series.tare(np.arange(pressure.size, dtype=float), pressure, force)
-        zero, zero_at = rest.force_N, rest.pressure_bar
-        handling["tare_at_bar"] = zero_at
+        zero_rows = rest.rest
+        if tare == "auto":
+            closing = _closing_rest(clock, pressure, force, rest)
     else:
         order = (np.array(directions(table, found["direction"]))[group.rows]
                  if "direction" in found else _inferred(pressure))
@@ -748,6 +764,16 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     drift: list[str] = []
     if tare == "none":
         zero, handling["tare"] = 0.0, "none"
+    elif closing is not None:
+        zero, zero_rows = closing.force_N, closing.rest
+        handling["tare_at_bar"], handling["tare_std_N"] = closing.pressure_bar, closing.std_N
+        what = "sample" if timed else "row"
+        handling["tare"] = (
+            f"mean force of the {closing.rest.stop - closing.rest.start} {what}(s) of the "
+            "vented rest that ends the record"
+            + (f" (from {time_s[closing.rest.start]:.4g} s)" if timed else "") + ": "
+            + (f"it starts held at {zero_at:.3g} bar" if zero_at > series.VENTED_THRESHOLD_BAR
+               else f"only {rest.rest.stop} {what}(s) before the pressure rises"))
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
         zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
         # a load cell's offset would stay in every force unsaid, unless the table marks where
@@ -811,7 +837,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              f"{apart:.3g} s apart): expected plateaus held "
                              f"{series.PLATEAU_MIN_S:g} s or more, or a ramp; if each row is a "
                              "held pressure, import again with --one-step-per-row")
-        tare_rows = np.arange(pressure.size) < rest.rest.stop
+        tare_rows = np.zeros(pressure.size, dtype=bool)
+        tare_rows[zero_rows] = True
         samples = [Sample(k, float(t), int(s), "tare" if tare_rows[k] else "step", math.nan,
                           math.nan, float(p), math.nan, math.nan, float(f), "")
                    for k, (t, s, p, f) in enumerate(zip(time_s, step_of, pressure, force,

@@ -492,6 +492,38 @@ def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm
                                                   rel=1e-5)  # 6 digits kept
 
 
+@pytest.mark.parametrize("start_bar", [0.0, 1.0])
+def test_a_record_whose_vented_rest_is_at_its_end_is_zeroed_there(start_bar, tmp_path,
+                                                                   mkm_cli):
+    # the logging began as the regulator rose (one sample at 0 bar), or held at 1 bar, and
+    # ended on a 10 s vented rest: the zero was the one sample's force (the muscle already
+    # pulling, 0.3 N off a 4 N zero) or none at all (every force 4 N high), the rest at the end
+    # left unused
+    rng = np.random.default_rng(12)
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 2, 10, 12, 20, 22, 30, 32, 40, 42, 48, 49, 60],
+                  [start_bar, 1.0, 1.0, 1.5, 1.5, 2.0, 2.0, 2.5, 2.5, 1.0, 1.0, 0.0, 0.0])
+    f = thickwall_N(p, 0.0) + 4.0 + rng.normal(0, 0.3, t.size)
+    path = tmp_path / "tare_at_end.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p + rng.normal(0, 0.003, t.size),
+                  "F (N)": f}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    # the rest's mean over about 110 samples of 0.3 N noise: 4 standard errors
+    assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(100))
+    assert "of the vented rest that ends the record (from 49" in recorded["tare"]
+    assert "tare 4" in err and "vented rest that ends the record" in err
+    tared = run.samples["phase"] == "tare"
+    assert run.samples.loc[tared, "time_s"].min() >= 48.9 and tared.sum() > 100
+    # each hold's force that of its level (1, 1.5, 2, 2.5, 1 bar), within 4 standard errors of
+    # its mean and of the zero's, and the 0.2 N a hold's edge takes in of the next ramp (as a
+    # staircase's steps above)
+    for step in run.steps.itertuples():
+        assert step.force_N_mean == pytest.approx(
+            thickwall_N(round(step.pressure_bar_mean * 2) / 2, 0.0),
+            abs=0.2 + 4 * 0.3 * np.hypot(1 / np.sqrt(step.n), 1 / np.sqrt(100)))
+
+
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
 def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
                                                                          mkm_cli):
