@@ -50,6 +50,7 @@ from mkm.bench.storage import (
 )
 from mkm.bench.tables import (
     Recognition,
+    by_unit_columns,
     column_text,
     directions,
     flags,
@@ -77,6 +78,10 @@ if TYPE_CHECKING:
     from mkm.bench.budget import Declared
 
 REQUIRED_ROLES = ("pressure", "force")
+#: what to know choosing among columns that each hold a role by their unit
+SEVERAL_BY_UNIT = {"force": "cells in series read the same force; cells in parallel share it: "
+                   "add them in a column of the table",
+                   "pressure": "the sensor at the muscle, not one upstream of the regulator"}
 #: columns whose values split one table into runs (one muscle state each)
 SPLIT_ROLES = ("run", "eps", "length", "L0")
 EXCEL_MAX_ROWS = 1_048_575  # below the header row
@@ -292,6 +297,14 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         if missing and len(tables) > 1 and "pressure" not in found and "force" not in found:
             skipped.append(table.sheet)
             continue
+        for role in missing:
+            if len(by_unit := by_unit_columns(table, role, found)) > 1:
+                shown = [repr(table.header[k]) for k in by_unit]
+                raise ValueError(f"{table.name}: no column is named a {role}, and "
+                                 f"{len(shown)} hold one by their unit, "
+                                 f"{', '.join(shown[:-1])} and {shown[-1]}: which is the "
+                                 f"muscle's is not guessed: expected one, chosen with --columns "
+                                 f"{role}=COLUMN ({SEVERAL_BY_UNIT[role]})")
         if missing:
             raise ValueError(f"{table.name}: no {' or '.join(missing)} column among "
                              f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "

@@ -784,12 +784,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     for role in BY_UNIT_ROLES:
         # a DAQ's channel by its number ('AI 1 [bar]'): the one column whose unit is of the
         # role's quantity (two, a set point beside a reading, are for --columns to tell)
-        taken = {c.index for c in found.values()}
-        by_unit = [index for index, header in enumerate(headers)
-                   if header and index not in taken and role not in found
-                   and not _set_point(parse_header(header)[0])
-                   and (unit := parse_header(header)[1]) is not None
-                   and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
+        by_unit = [] if role in found else by_unit_columns(table, role, found)
         if len(by_unit) == 1:
             index = by_unit[0]
             found[role] = Column(role, index, headers[index], parse_header(headers[index])[1])
@@ -803,6 +798,16 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
     return found
+
+
+def by_unit_columns(table: RawTable, role: str, found: dict[str, Column]) -> list[int]:
+    """The columns no role took whose unit is of ``role``'s quantity, set points left out: the
+    ones that may hold it where no column's name says it."""
+    taken = {c.index for c in found.values()}
+    return [index for index, header in enumerate(table.header)
+            if header and index not in taken and not _set_point(parse_header(header)[0])
+            and (unit := parse_header(header)[1]) is not None
+            and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
 
 
 #: how a time column of spreadsheet serial dates is said (the line, run.json)

@@ -490,3 +490,22 @@ def test_export_of_a_run_that_lost_rows_says_so(config, tmp_path, capsys):
     assert json.loads(meta["problems"]) == [
         f"samples.csv holds 60 samples, run.json counted {counted}: {counted - 60} lost"]
     assert len(pd.read_csv(tmp_path / "csv" / "samples.csv")) == 60
+
+
+def test_two_load_cells_are_named_and_one_is_chosen(tmp_path, capsys):
+    # a bench with a second load cell (a check cell in series): was "no force column among
+    # 'Time [s]', ..., 'Load cell 1 [N]', 'Load cell 2 [N]'", as though none held a force
+    table = tmp_path / "two.csv"
+    table.write_text("P [bar],Load cell 1 [N],Load cell 2 [kN]\n0,2,0.003\n1,102,0.1031\n"
+                     "2,202,0.2029\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "a")], capsys)
+    assert code == 2 and out == ""
+    assert err == ("mkm import: error: two.csv: no column is named a force, and 2 hold one by "
+                   "their unit, 'Load cell 1 [N]' and 'Load cell 2 [kN]': which is the muscle's "
+                   "is not guessed: expected one, chosen with --columns force=COLUMN (cells in "
+                   "series read the same force; cells in parallel share it: add them in a "
+                   "column of the table)\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--columns",
+                           "force=Load cell 2 [kN]", "--out", str(tmp_path / "b")], capsys)
+    assert code == 0, err
+    np.testing.assert_allclose(load_run(out.strip()).steps["force_N_mean"], [0, 100.1, 199.9])
