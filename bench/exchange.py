@@ -54,6 +54,7 @@ from mkm.bench.tables import (
     column_text,
     directions,
     flags,
+    join_by_time,
     key_values,
     marked_gauge,
     numbers_as_read,
@@ -231,7 +232,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  sheet: str | None = None, tare: str | float = "auto",
                  vented: str | float = "auto", select: str | None = None,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
-                 one_step_per_row: bool = False,
+                 one_step_per_row: bool = False, join: str | Path | None = None,
                  notify=lambda line: None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -267,6 +268,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         than :data:`mkm.bench.series.RECORD_MIN_ROWS` rows is otherwise read as a record
         without its time (:func:`mkm.bench.series.sampled_without_time`), and a time column as
         a time series.
+    join : path, optional
+        Another table of the same record holding what ``path``'s tables lack (the force, or
+        the pressure, with its time), joined to each by time
+        (:func:`mkm.bench.tables.join_by_time`).
     notify : callable
         Receives the line of what was recognised in each table.
 
@@ -290,10 +295,19 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             tare = "none"
     tables = read_tables(path, sheet)
     names = [t.sheet for t in tables]
+    other = _join_table(join) if join is not None else None
     prepared, skipped = [], []
     for table in tables:
         found = recognise(table, columns, units)
         missing = [r for r in REQUIRED_ROLES if r not in found]
+        if other is not None:
+            if not missing:
+                raise ValueError(f"--join-by-time {Path(join).name}: {table.name} holds a "
+                                 "pressure and a force column itself: expected the other table "
+                                 "to give the one it lacks")
+            table, found = join_by_time(table, found, *other, missing)
+            table.joined["sha256"] = file_sha256(join)
+            missing = []
         if missing and len(tables) > 1 and "pressure" not in found and "force" not in found:
             skipped.append(table.sheet)
             continue
@@ -368,6 +382,18 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             shutil.copyfile(path, writer.path / copy)
         out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
     return out
+
+
+def _join_table(path: str | Path):
+    """The table of ``--join-by-time`` and its columns: a text table, or the one sheet of a
+    workbook holding a time column."""
+    tables = read_tables(path)
+    timed = [(t, found) for t in tables if "time" in (found := recognise(t))]
+    if len(tables) > 1 and len(timed) != 1:
+        raise ValueError(f"--join-by-time {Path(path).name}: {len(timed)} of its sheets hold a "
+                         f"time column: expected one (sheets "
+                         f"{', '.join(repr(t.sheet) for t in tables)}); save it alone")
+    return timed[0] if timed else (tables[0], recognise(tables[0]))
 
 
 def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):

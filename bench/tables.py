@@ -140,6 +140,8 @@ class RawTable:
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
     footer_skipped: list[str] = field(default_factory=list)
+    #: what :func:`join_by_time` joined to it: the other table, its columns, the times' origin
+    joined: dict = field(default_factory=dict)
 
     @property
     def name(self) -> str:
@@ -156,7 +158,8 @@ class RawTable:
                 "decimal": self.decimal, "rows": len(self.rows),
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
                 "summary_rows_skipped": self.summaries_skipped,
-                "footer_rows_skipped": self.footer_skipped}
+                "footer_rows_skipped": self.footer_skipped,
+                **({"joined_by_time": self.joined} if self.joined else {})}
 
 
 def _column_letters(index: int) -> str:
@@ -460,10 +463,11 @@ def _preamble_row(rows: list[list], k: int) -> bool:
 
 
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
-    """The header is the row above the first row with two numbers that is not a line of a
-    header block (:func:`_preamble_row`); rows above it are titles."""
+    """The header is the row above the first row with two numbers (a date-time or a clock
+    reading counts as one: a logger's record of one channel and its time) that is not a line
+    of a header block (:func:`_preamble_row`); rows above it are titles."""
     first_data = next((k for k, cells in enumerate(rows)
-                       if sum(_is_number(c) for c in cells) >= 2
+                       if sum(_is_number(c) or _clock(c) is not None for c in cells) >= 2
                        and not _preamble_row(rows, k)), None)
     where = f"{path.name}, sheet {sheet!r}" if sheet else path.name
     if first_data is None:
@@ -1125,6 +1129,80 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
+def _time_origin(table: RawTable, column: Column) -> tuple[str, float] | None:
+    """The kind and moment [s] of a time column's first row where its cells are clock readings
+    or date-times (``("date-time", seconds since 1970)``); None for a column of numbers
+    counted from any start."""
+    raw = [row[column.index] for row in table.rows]
+    if not raw:
+        return None
+    if column.excel_days:
+        return "date-time", float(_plain_numbers(raw[:1], table.decimal)[0]) * _DAY_S
+    reading = _clock(raw[0], _day_first(raw))
+    return reading if reading is not None and reading[0] in ("date-time", "clock") else None
+
+
+def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
+                 other_found: dict[str, Column],
+                 roles: list[str]) -> tuple[RawTable, dict[str, Column]]:
+    """``table`` with the columns of ``roles`` from ``other``, another table of the same
+    record, each interpolated linearly at ``table``'s times (in the toolkit's unit), and
+    ``found`` with them: the times compared as moments where both are date-times or clock
+    readings of one kind, else as read (seconds; clock readings from their first row).
+    ``table``'s rows outside ``other``'s times are left out (nothing extrapolated);
+    ``ValueError`` naming what is missing, a time that goes backwards, or tables whose times
+    do not overlap."""
+    for where, columns, what in ((table, found, ("time",)), (other, other_found,
+                                                               ("time", *roles))):
+        absent = [r for r in what if r not in columns]
+        if absent:
+            named = ", ".join(repr(h) for h in where.header if h) or "no header"
+            raise ValueError(f"--join-by-time {other.source.name}: {where.name} has no "
+                             f"{' or '.join(absent)} "
+                             f"column among {named}: expected a time column in both tables and "
+                             f"the {' and '.join(roles)} in {other.name}")
+    times = column_values(table, found["time"])
+    other_times = column_values(other, other_found["time"])
+    back = np.flatnonzero(np.diff(other_times) < 0)
+    if back.size:
+        column = other_found["time"]
+        raise ValueError(f"{other.name}, cell {other.cell(int(back[0]) + 1, column.index)} "
+                         f"(column {column.header!r}): the time goes backwards: expected "
+                         "samples in time order")
+    origins = (_time_origin(table, found["time"]), _time_origin(other, other_found["time"]))
+    if None not in origins and origins[0][0] == origins[1][0]:
+        shift = origins[1][1] - origins[0][1]  # the other's first row, on this table's clock
+        how = f"as {origins[0][0]}s, {other.name} starting {shift:+.4g} s from {table.name}"
+    else:  # seconds as written, clock readings from their first row
+        shift = 0.0
+        how = "their times as read, in seconds"
+    other_times = other_times + shift
+    inside = (times >= other_times[0]) & (times <= other_times[-1])
+    if not inside.any():
+        raise ValueError(f"--join-by-time {other.source.name}: {table.name}'s times "
+                         f"({times[0]:.4g}-{times[-1]:.4g} s) and {other.name}'s "
+                         f"({other_times[0]:.4g}-{other_times[-1]:.4g} s, {how}) do not "
+                         "overlap: expected two tables of one record")
+    kept = np.flatnonzero(inside)
+    header, rows = list(table.header), [list(table.rows[k]) for k in kept]
+    found = dict(found)
+    joined = {}
+    for role in roles:
+        column = other_found[role]
+        values = np.interp(times[kept], other_times, column_values(other, column))
+        name = f"{column.header} ({other.source.name})"
+        found[role] = Column(role, len(header), name, ROLES[role].unit, given=True)
+        header.append(name)
+        for row, value in zip(rows, values, strict=True):
+            row.append(float(value))
+        joined[role] = column.header
+    how += f", linearly; {kept.size} of {times.size} rows within its times"
+    return replace(table, header=header, rows=rows,
+                   row_numbers=[table.row_numbers[k] for k in kept],
+                   joined={"file": other.source.name, "columns": joined, "how": how,
+                           "shift_s": shift, "rows_outside": int(times.size - kept.size)}), found
+
+
 #: what a spreadsheet's summary row under the measurements is called (mean, sum, extremes,
 #: spread), in English, German and French: such a row is no step
 SUMMARY_WORDS = {"mean", "average", "avg", "sum", "total", "min", "max", "minimum", "maximum",
@@ -1338,6 +1416,9 @@ class Recognition:
         if summaries := self.table.summaries_skipped:
             extras.append(f"{len(summaries)} summary row(s) skipped: "
                           + ", ".join(summaries[:3]) + (", ..." if len(summaries) > 3 else ""))
+        if joined := self.table.joined:
+            extras.append(f"{', '.join(map(repr, joined['columns'].values()))} of "
+                          f"{joined['file']} joined by time ({joined['how']})")
         if skipped := self.table.blanks_skipped:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))

@@ -66,6 +66,12 @@ def register(subparsers) -> None:
                      action=derived_help(_force_sign_help))
     imp.add_argument("--one-step-per-row", action=derived_help(_one_step_per_row_help,
                                                                argparse._StoreTrueAction))
+    imp.add_argument("--join-by-time", default=None, metavar="FILE",
+                     help="another table of the same record holding what the table lacks (the "
+                     "force, or the pressure), with its own time column: its values "
+                     "interpolated linearly at the table's times, compared as moments where "
+                     "both times are date-times or clock readings, else as read (seconds); "
+                     "the table's rows outside its times are left out")
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "
                      "and the sensor's data sheet, or the table's stated accuracy): a value "
@@ -139,7 +145,7 @@ def _import(args) -> int:
                                                                        "bar"),
         select=args.muscle, accuracy=parse_accuracy(args.accuracy),
         force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
-        notify=lines.append)
+        join=args.join_by_time, notify=lines.append)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

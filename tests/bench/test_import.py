@@ -524,6 +524,59 @@ def test_a_record_whose_vented_rest_is_at_its_end_is_zeroed_there(start_bar, tmp
             abs=0.2 + 4 * 0.3 * np.hypot(1 / np.sqrt(step.n), 1 / np.sqrt(100)))
 
 
+def test_pressure_and_force_logged_in_two_files_are_joined_by_time(tmp_path, mkm_cli):
+    # the regulator's readback logged by one program at 10 Hz, the load cell by another at
+    # 20 Hz started 2.5 s later (ISO date-times, each its own clock): was "no force column
+    # among 'Timestamp', 'Pressure [bar]'", and no option joined them
+    import datetime
+
+    rng = np.random.default_rng(13)
+    knots = ([0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+             [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    start = datetime.datetime(2026, 12, 6, 9, 0, 0, tzinfo=datetime.UTC)
+
+    def stamps(t):
+        return [(start + datetime.timedelta(seconds=float(s))).isoformat(timespec="milliseconds")
+                for s in t]
+
+    tp = np.arange(0.0, 60.0, 0.1)
+    pressure = tmp_path / "regulator.csv"
+    pd.DataFrame({"Timestamp": stamps(tp), "Pressure [bar]": np.interp(tp, *knots)
+                  + rng.normal(0, 0.003, tp.size)}).to_csv(pressure, index=False)
+    tf = np.arange(2.5, 62.5, 0.05)
+    force = tmp_path / "loadcell.csv"
+    pd.DataFrame({"Timestamp": stamps(tf), "Kraft [kN]": (thickwall_N(np.interp(
+        tf, *knots), 0.0) + 4.0 + rng.normal(0, 0.3, tf.size)) / 1000}).to_csv(force,
+                                                                             index=False)
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and "no force column among 'Timestamp', 'Pressure [bar]'" in err
+    (run,), err = _import(mkm_cli, pressure, *MUSCLE, "--eps", "0", "--join-by-time", str(force))
+    assert ("'Kraft [kN]' of loadcell.csv joined by time (as date-times, loadcell.csv starting "
+            "+2.5 s from regulator.csv, linearly; 575 of 600 rows within its times)") in err
+    joined = run.meta.imported_from["joined_by_time"]
+    assert joined["shift_s"] == pytest.approx(2.5) and joined["rows_outside"] == 25
+    assert len(joined["sha256"]) == 64
+    # the tare from the rest the two share (2.5-5 s), each hold's force its level's: within 4
+    # standard errors of the hold's mean and the zero's, and the 0.2 N a hold's edge takes in
+    assert run.meta.imported_from["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(25))
+    assert [round(s, 1) for s in run.steps["pressure_bar_mean"]] == [1.0, 2.0, 2.5]
+    for step in run.steps.itertuples():
+        assert step.force_N_mean == pytest.approx(
+            thickwall_N(round(step.pressure_bar_mean * 2) / 2, 0.0),
+            abs=0.2 + 4 * 0.3 * np.hypot(1 / np.sqrt(step.n), 1 / np.sqrt(25)))
+    # a table with both, or times that do not meet: one line each
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--join-by-time",
+                            str(pressure), "--out", str(tmp_path / "bad")])
+    assert code == 2 and "--join-by-time regulator.csv: regulator.csv has no force column" in err
+    late = tmp_path / "late.csv"
+    pd.DataFrame({"Timestamp": stamps(tf + 3600), "F [N]": 1.0}).to_csv(late, index=False)
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--join-by-time",
+                            str(late), "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "do not overlap" in err
+    assert not (tmp_path / "bad").exists()
+
+
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
 def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
                                                                          mkm_cli):
