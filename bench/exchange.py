@@ -249,7 +249,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     tare : "auto", "none" or float
         The force's zero [N]: a step table's force at the lowest pressure of its rising
         branch, a time series' mean force before its pressure rises (``auto``; only when that
-        pressure is 0 bar), none, or this value.
+        pressure is 0 bar, else the 0 bar rows or the vented rest that end the table), none,
+        or this value.
     vented : "auto", "none" or float
         The pressure read vented [bar], subtracted from a time series' pressures: detected
         (``auto``), none, or this value.
@@ -785,7 +786,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
                              "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
-    closing = None
+    closing = closing_rows = None
     if timed or record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
         clock = time_s if timed else np.arange(pressure.size, dtype=float)
         rest = series.tare(clock, pressure, force)
@@ -800,9 +801,18 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         up = order == "up"
         zero_at = float(pressure[up].min()) if up.any() else math.nan
         zero = float(np.mean(force[up & (pressure == zero_at)])) if up.any() else 0.0
+        # a sweep that starts pressurised and ends vented reads the zero where it ends
+        vented_rows = ~up & (pressure <= series.VENTED_THRESHOLD_BAR)
+        if tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR and vented_rows.any():
+            closing_rows = vented_rows
     drift: list[str] = []
     if tare == "none":
         zero, handling["tare"] = 0.0, "none"
+    elif closing_rows is not None:
+        zero = float(np.mean(force[closing_rows]))
+        handling["tare"] = (f"mean force of the {int(closing_rows.sum())} row(s) at 0 bar where "
+                            f"the falling branch ends: the rising branch starts at {zero_at:g} "
+                            "bar")
     elif closing is not None:
         zero, zero_rows = closing.force_N, closing.rest
         handling["tare_at_bar"], handling["tare_std_N"] = closing.pressure_bar, closing.std_N

@@ -509,3 +509,17 @@ def test_two_load_cells_are_named_and_one_is_chosen(tmp_path, capsys):
                            "force=Load cell 2 [kN]", "--out", str(tmp_path / "b")], capsys)
     assert code == 0, err
     np.testing.assert_allclose(load_run(out.strip()).steps["force_N_mean"], [0, 100.1, 199.9])
+
+
+def test_a_step_tables_0_bar_row_at_the_end_is_its_zero(tmp_path, capsys):
+    # a sweep 0.5 -> 2.5 -> 0 bar, the load cell's zero (5 N) read where it ends: was "no
+    # tare: the table has no 0 bar row", every force 5 N high
+    table = tmp_path / "steps.csv"
+    table.write_text("P [bar];F [N]\n0,5;105\n1,5;305\n2,5;505\n1,5;310\n0,5;108\n0;5\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "a")], capsys)
+    assert code == 0, err
+    run = load_run(out.strip())
+    np.testing.assert_allclose(run.steps["force_N_mean"], [100, 300, 500, 305, 103, 0])
+    assert ("tare 5 N subtracted (mean force of the 1 row(s) at 0 bar where the falling branch "
+            "ends: the rising branch starts at 0.5 bar)") in err
+    assert run.meta.imported_from["tare_N"] == 5.0
