@@ -98,6 +98,8 @@ ROLES = {
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
+                  # seconds since 1970 as a logger names them
+                  "unix time", "unix timestamp", "epoch", "epoch time", "posix time",
                   *CLOCK_NAMES), "s"),
     "direction": Role(("direction", "dir", "branch", "sweep", "richtung", "sens")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),

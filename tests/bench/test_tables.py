@@ -341,6 +341,17 @@ def test_thousands_grouped_by_an_apostrophe_or_a_space(mark, tmp_path):
         column_values(table, found["force"])
 
 
+@pytest.mark.parametrize("header", ["unix_time", "Unix timestamp", "epoch", "Epoch time [s]",
+                                    "POSIX time"])
+def test_a_unix_time_column_is_the_time(header, tmp_path):
+    # a logger's seconds since 1970 under its own name: was left unread, its record taken as
+    # rows evenly spaced in time
+    table, found = _one(tmp_path, f"{header},P [bar],F [N]\n1765011600.0,0,1\n"
+                        "1765011600.1,0.5,2\n")
+    assert found["time"].header == header
+    np.testing.assert_allclose(np.diff(column_values(table, found["time"])), [0.1], rtol=1e-6)
+
+
 def test_rows_of_separators_only_are_blank(tmp_path):
     # a spreadsheet's export: empty rows as ";;", between the data and after it
     table, found = _one(tmp_path, "Druck (bar);Kraft (N);Notiz\n0,5;12,25;\n;;\n1,0;40,5;ok\n"
