@@ -1223,11 +1223,25 @@ def _summary_word(cell: str) -> str:
 def without_summary_rows(table: RawTable) -> RawTable:
     """``table`` without its summary rows (a cell reading ``Mean``, ``Mittelwert``, ``Summe``,
     ``Max``, ... alone: :data:`SUMMARY_WORDS`), which a spreadsheet puts under the measurements
-    and which are no measurement; the cell naming each in ``summaries_skipped``."""
+    and which are no measurement; the cell naming each in ``summaries_skipped``. Such a label
+    stands where the steps hold numbers (an index, a pressure): in a column of text, a lab's
+    comments, the word is a comment on its row ('Max' beside the top step)."""
+    def word(cell) -> bool:
+        return isinstance(cell, str) and _summary_word(cell) in SUMMARY_WORDS
+
+    labelled = {k for k, row in enumerate(table.rows) if any(map(word, row))}
+    numbered: dict[int, bool] = {}  # a column holding a number in a row of no such word
+
+    def steps_number(column: int) -> bool:
+        if column not in numbered:
+            numbered[column] = any(_is_number(row[column]) for k, row in enumerate(table.rows)
+                                   if k not in labelled and column < len(row))
+        return numbered[column]
+
     named = {}
-    for k, row in enumerate(table.rows):
-        for column, cell in enumerate(row):
-            if isinstance(cell, str) and _summary_word(cell) in SUMMARY_WORDS:
+    for k in sorted(labelled):
+        for column, cell in enumerate(table.rows[k]):
+            if word(cell) and steps_number(column):
                 named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
                 break
     if not named:

@@ -1291,6 +1291,19 @@ def test_a_spreadsheets_summary_rows_under_the_steps_are_no_steps(tmp_path, mkm_
                                                               "A9 ('Max:')"]
 
 
+def test_a_statistic_word_in_a_comment_column_is_a_comment(tmp_path, mkm_cli):
+    # 'Max' written beside the top step in the lab's comment column: the step was skipped as a
+    # spreadsheet's summary row ("1 summary row(s) skipped: C5 ('Max')"), the sweep's top lost
+    path = tmp_path / "lab.csv"
+    path.write_text("P [bar];F [N];Kommentar\n0;3;genullt\n0,5;213;\n1;423;\n1,5;633;Max\n"
+                    "1;425;\n0,5;215;\n0;3,5;Ende\n\nMittelwert;0,64;273,6;\n",
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0, 0.5, 1.0, 1.5, 1.0, 0.5, 0.0]
+    # a label where the steps hold numbers is still a summary row's
+    assert "1 summary row(s) skipped: A10 ('Mittelwert')" in err
+
+
 @pytest.mark.parametrize("label", ["Std.Abw.", "Std. Dev.", "Ø", "Moy.", "Anzahl"])
 def test_a_summary_row_by_an_abbreviated_statistic_is_no_step(label, tmp_path, mkm_cli):
     # was: "cell A7 (column 'Druck [bar]'): 'Std.Abw.' is not a number", the import refused
