@@ -176,8 +176,10 @@ def _column_letters(index: int) -> str:
 # --- reading ----------------------------------------------------------------------------------
 
 _NUMBER = re.compile(r"^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$")
+# a unit of two words is one pint or LAB_UNITS reads as one ('in Hg', 'in. Hg', 'bar g')
 _NUMBER_AND_UNIT = tuple(re.compile(rf"^(?P<number>[-+.,\deE]+{lazy})\s*"
-                                    r"(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$") for lazy in ("", "?"))
+                                    r"(?P<unit>[A-Za-z%°µ][\w%°µ/^]*(?:\.?\s+[A-Za-z]\w*)?)?$")
+                         for lazy in ("", "?"))
 _COMMA_DECIMAL = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
 _POINT_DECIMAL = re.compile(r"^[+-]?\d*\.\d+([eE][+-]?\d+)?$")
 _THOUSANDS = re.compile(r"^[+-]?\d{1,3}(,\d{3})+$")

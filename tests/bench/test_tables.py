@@ -152,6 +152,8 @@ INHG_BAR = 0.0254 * 13595.1 * 9.80665 / 1e5
     ("Druck [at]", ("1,5", "2,5"), AT_BAR), ("Druck (atü)", ("1,5", "2,5"), AT_BAR),
     ("Druck", ("1.5 at", "2.5 at"), AT_BAR), ("Pressure [inHg]", ("1,5", "2,5"), INHG_BAR),
     ("Pressure (in Hg)", ("1,5", "2,5"), INHG_BAR), ("p [in. Hg]", ("1,5", "2,5"), INHG_BAR),
+    ("Pressure", ("1,5 in Hg", "2,5 in Hg"), INHG_BAR),
+    ("P", ("1,5 in. Hg", "2,5 in. Hg"), INHG_BAR),
 ])
 def test_technical_atmospheres_and_inches_of_mercury(header, cells, bar_per_unit, tmp_path):
     # were refused: 'at' read as the English word ("'at' is not a unit of pressure"), 'in Hg'
