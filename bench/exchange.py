@@ -50,9 +50,11 @@ from mkm.bench.storage import (
 )
 from mkm.bench.tables import (
     Recognition,
+    by_unit_columns,
     column_text,
     directions,
     flags,
+    join_by_time,
     key_values,
     marked_gauge,
     numbers_as_read,
@@ -77,6 +79,10 @@ if TYPE_CHECKING:
     from mkm.bench.budget import Declared
 
 REQUIRED_ROLES = ("pressure", "force")
+#: what to know choosing among columns that each hold a role by their unit
+SEVERAL_BY_UNIT = {"force": "cells in series read the same force; cells in parallel share it: "
+                   "add them in a column of the table",
+                   "pressure": "the sensor at the muscle, not one upstream of the regulator"}
 #: columns whose values split one table into runs (one muscle state each)
 SPLIT_ROLES = ("run", "eps", "length", "L0")
 EXCEL_MAX_ROWS = 1_048_575  # below the header row
@@ -111,6 +117,30 @@ ZERO_LIMITS = {"--tare": (-MAX_CAPACITY_N, MAX_CAPACITY_N,
 #: ambient 0.5-1.05 bar): the data cannot tell these apart, and a pressure column is a gauge
 #: pressure, so its readings are kept and the option that says otherwise is named
 VENTED_AUTO_MAX_BAR = INSTRUMENT_BOUNDS["monitor_offset_bar"][1]
+
+
+#: a pressure sensor's zero error where a table declares no pressure accuracy, as a fraction of
+#: the span: 1 % of full scale, the class of a proportional regulator's readback (Festo VPPM,
+#: SMC ITV), of a sensor spanning the practical range
+GAUGE_ZERO_ERROR_OF_SPAN = 0.01
+
+
+def _below_zero_bound(pressure: np.ndarray, declared: Declared | None):
+    """How far below 0 bar each reading of a step table may lie and still be a vented row
+    [bar], and that bound in words: the declared pressure accuracy at the reading, else a
+    gauge's zero error (:data:`GAUGE_ZERO_ERROR_OF_SPAN` of the practical range)."""
+    if declared is not None:
+        at = " at that reading" if declared.fraction else ""
+        noise = series.PLATEAU_TOLERANCE_BAR  # a reading's noise, whatever its accuracy
+        return (np.maximum(declared.absolute + declared.fraction * np.abs(pressure), noise),
+                lambda bound: (f"the declared pressure accuracy, +-{bound:.3g} bar{at}"
+                               if bound > noise else f"a reading's noise, +-{noise:g} bar")
+                + f" (--accuracy pressure={declared.text})")
+    top = PRACTICAL_RANGE.pressure_bar[1]
+    return (np.full(pressure.shape, GAUGE_ZERO_ERROR_OF_SPAN * top),
+            lambda bound: f"a gauge's zero error, +-{bound:g} bar where no pressure accuracy "
+            f"is declared ({100 * GAUGE_ZERO_ERROR_OF_SPAN:g} % of the practical range's "
+            f"{top:g} bar)")
 
 
 #: what a given zero may look like typed with its unit (for the messages)
@@ -202,7 +232,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  sheet: str | None = None, tare: str | float = "auto",
                  vented: str | float = "auto", select: str | None = None,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
-                 one_step_per_row: bool = False,
+                 one_step_per_row: bool = False, join: str | Path | None = None,
                  notify=lambda line: None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -219,7 +249,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     tare : "auto", "none" or float
         The force's zero [N]: a step table's force at the lowest pressure of its rising
         branch, a time series' mean force before its pressure rises (``auto``; only when that
-        pressure is 0 bar), none, or this value.
+        pressure is 0 bar, else the 0 bar rows or the vented rest that end the table), none,
+        or this value.
     vented : "auto", "none" or float
         The pressure read vented [bar], subtracted from a time series' pressures: detected
         (``auto``), none, or this value.
@@ -238,6 +269,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         than :data:`mkm.bench.series.RECORD_MIN_ROWS` rows is otherwise read as a record
         without its time (:func:`mkm.bench.series.sampled_without_time`), and a time column as
         a time series.
+    join : path, optional
+        Another table of the same record holding what ``path``'s tables lack (the force, or
+        the pressure, with its time), joined to each by time
+        (:func:`mkm.bench.tables.join_by_time`).
     notify : callable
         Receives the line of what was recognised in each table.
 
@@ -261,13 +296,30 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             tare = "none"
     tables = read_tables(path, sheet)
     names = [t.sheet for t in tables]
+    other = _join_table(join) if join is not None else None
     prepared, skipped = [], []
     for table in tables:
         found = recognise(table, columns, units)
         missing = [r for r in REQUIRED_ROLES if r not in found]
+        if other is not None:
+            if not missing:
+                raise ValueError(f"--join-by-time {Path(join).name}: {table.name} holds a "
+                                 "pressure and a force column itself: expected the other table "
+                                 "to give the one it lacks")
+            table, found = join_by_time(table, found, *other, missing)
+            table.joined["sha256"] = file_sha256(join)
+            missing = []
         if missing and len(tables) > 1 and "pressure" not in found and "force" not in found:
             skipped.append(table.sheet)
             continue
+        for role in missing:
+            if len(by_unit := by_unit_columns(table, role, found)) > 1:
+                shown = [repr(table.header[k]) for k in by_unit]
+                raise ValueError(f"{table.name}: no column is named a {role}, and "
+                                 f"{len(shown)} hold one by their unit, "
+                                 f"{', '.join(shown[:-1])} and {shown[-1]}: which is the "
+                                 f"muscle's is not guessed: expected one, chosen with --columns "
+                                 f"{role}=COLUMN ({SEVERAL_BY_UNIT[role]})")
         if missing:
             raise ValueError(f"{table.name}: no {' or '.join(missing)} column among "
                              f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "
@@ -331,6 +383,18 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             shutil.copyfile(path, writer.path / copy)
         out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
     return out
+
+
+def _join_table(path: str | Path):
+    """The table of ``--join-by-time`` and its columns: a text table, or the one sheet of a
+    workbook holding a time column."""
+    tables = read_tables(path)
+    timed = [(t, found) for t in tables if "time" in (found := recognise(t))]
+    if len(tables) > 1 and len(timed) != 1:
+        raise ValueError(f"--join-by-time {Path(path).name}: {len(timed)} of its sheets hold a "
+                         f"time column: expected one (sheets "
+                         f"{', '.join(repr(t.sheet) for t in tables)}); save it alone")
+    return timed[0] if timed else (tables[0], recognise(tables[0]))
 
 
 def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
@@ -580,6 +644,21 @@ def _look_alike(group: _Group, key: str) -> str:
     return ""
 
 
+def _closing_rest(clock, pressure, force, rest) -> series.Tare | None:
+    """The vented rest that ends a record where it is a surer zero than ``rest``, the one
+    before its rise: that one of fewer than :data:`mkm.bench.series.SHORT_REST_SAMPLES`
+    samples (the logging began as the pressure rose: they already pull) or held pressurised,
+    this one vented and of that many samples or more; else None."""
+    if rest.rest.stop >= series.SHORT_REST_SAMPLES and \
+            rest.pressure_bar <= series.VENTED_THRESHOLD_BAR:
+        return None
+    end = series.end_rest(clock, pressure, force)
+    if (end.rest.start <= rest.rest.stop or end.pressure_bar > series.VENTED_THRESHOLD_BAR
+            or end.rest.stop - end.rest.start < series.SHORT_REST_SAMPLES):
+        return None
+    return end
+
+
 def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
     """The note (if any) of a record that ends vented at another zero than it started: the
     drift recorded as ``zero_drift_N`` (end less start), said when it is beyond 4 standard
@@ -665,8 +744,22 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                           f"{found['time'].header!r} is in milliseconds, import again with "
                           "--units time=ms")
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
-    # -0.0001 bar too)
-    noise = (pressure < 0) & (pressure >= -series.PLATEAU_TOLERANCE_BAR)
+    # -0.0001 bar too); a step table's pressures are as written, no vented reading subtracted,
+    # so its vented rows read the gauge's zero error, taken as 0 bar up to its bound
+    step_table = not (timed or record)
+    below = _below_zero_bound(pressure, accuracy.get("pressure")) if step_table else None
+    noise = (pressure < 0) & (pressure >= -(below[0] if below else
+                                            series.PLATEAU_TOLERANCE_BAR))
+    if below and np.any(noise & (pressure < -series.PLATEAU_TOLERANCE_BAR)):
+        rows = np.flatnonzero(noise)
+        lowest = int(rows[np.argmin(pressure[rows])])
+        cells = [group.cell(int(k), "pressure") for k in rows]
+        handling["below_zero_bound_bar"] = float(below[0][lowest])
+        notes.append(f"{rows.size} row(s) reading down to {pressure[lowest]:g} bar "
+                     f"({', '.join(cells[:5])}{', ...' if len(cells) > 5 else ''}) taken as "
+                     f"vented, 0 bar: within {below[1](below[0][lowest])}"
+                     + ("" if "pressure" in accuracy else
+                        "; --accuracy pressure=... declares the sensor's"))
     pressure = np.where(noise, 0.0, pressure)
     handling["readings_below_zero_set_to_0"] = int(noise.sum())
     top_bar = float(pressure.max())
@@ -682,29 +775,54 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     # the first bad cell named (a record's every sample checked at once)
     for k in np.flatnonzero(outside("pressure_bar", pressure))[:1]:
         p = pressure[k]
+        if p < 0 and below:
+            raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
+                             f"{found['pressure'].header!r}): {p:g} bar is below 0 by more "
+                             f"than {below[1](below[0][k])}: expected a gauge pressure >= "
+                             f"{-below[0][k]:.3g} bar; if the sensor's accuracy is wider, "
+                             f"declare it: --accuracy pressure={-p:g}bar")
         if p < 0:
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
-                             "gauge pressure >= 0" + (" (--vented sets a vented reading to "
-                                                      "subtract)" if timed or record else ""))
+                             "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
         check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
-    if timed:
-        rest = series.tare(time_s, pressure, force)
+    closing = closing_rows = None
+    if timed or record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
+        clock = time_s if timed else np.arange(pressure.size, dtype=float)
+        rest = series.tare(clock, pressure, force)
         zero, zero_at = rest.force_N, rest.pressure_bar
         handling["tare_at_bar"] = zero_at
-    elif record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
-        rest = series.tare(np.arange(pressure.size, dtype=float), pressure, force)
-        zero, zero_at = rest.force_N, rest.pressure_bar
-        handling["tare_at_bar"] = zero_at
+        zero_rows = rest.rest
+        if tare == "auto":
+            closing = _closing_rest(clock, pressure, force, rest)
     else:
         order = (np.array(directions(table, found["direction"]))[group.rows]
                  if "direction" in found else _inferred(pressure))
         up = order == "up"
         zero_at = float(pressure[up].min()) if up.any() else math.nan
         zero = float(np.mean(force[up & (pressure == zero_at)])) if up.any() else 0.0
+        # a sweep that starts pressurised and ends vented reads the zero where it ends
+        vented_rows = ~up & (pressure <= series.VENTED_THRESHOLD_BAR)
+        if tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR and vented_rows.any():
+            closing_rows = vented_rows
     drift: list[str] = []
     if tare == "none":
         zero, handling["tare"] = 0.0, "none"
+    elif closing_rows is not None:
+        zero = float(np.mean(force[closing_rows]))
+        handling["tare"] = (f"mean force of the {int(closing_rows.sum())} row(s) at 0 bar where "
+                            f"the falling branch ends: the rising branch starts at {zero_at:g} "
+                            "bar")
+    elif closing is not None:
+        zero, zero_rows = closing.force_N, closing.rest
+        handling["tare_at_bar"], handling["tare_std_N"] = closing.pressure_bar, closing.std_N
+        what = "sample" if timed else "row"
+        handling["tare"] = (
+            f"mean force of the {closing.rest.stop - closing.rest.start} {what}(s) of the "
+            "vented rest that ends the record"
+            + (f" (from {time_s[closing.rest.start]:.4g} s)" if timed else "") + ": "
+            + (f"it starts held at {zero_at:.3g} bar" if zero_at > series.VENTED_THRESHOLD_BAR
+               else f"only {rest.rest.stop} {what}(s) before the pressure rises"))
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
         zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
         # a load cell's offset would stay in every force unsaid, unless the table marks where
@@ -768,7 +886,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              f"{apart:.3g} s apart): expected plateaus held "
                              f"{series.PLATEAU_MIN_S:g} s or more, or a ramp; if each row is a "
                              "held pressure, import again with --one-step-per-row")
-        tare_rows = np.arange(pressure.size) < rest.rest.stop
+        tare_rows = np.zeros(pressure.size, dtype=bool)
+        tare_rows[zero_rows] = True
         samples = [Sample(k, float(t), int(s), "tare" if tare_rows[k] else "step", math.nan,
                           math.nan, float(p), math.nan, math.nan, float(f), "")
                    for k, (t, s, p, f) in enumerate(zip(time_s, step_of, pressure, force,

@@ -98,6 +98,8 @@ ROLES = {
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
+                  # seconds since 1970 as a logger names them
+                  "unix time", "unix timestamp", "epoch", "epoch time", "posix time",
                   *CLOCK_NAMES), "s"),
     "direction": Role(("direction", "dir", "branch", "sweep", "richtung", "sens")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
@@ -140,6 +142,8 @@ class RawTable:
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
     footer_skipped: list[str] = field(default_factory=list)
+    #: what :func:`join_by_time` joined to it: the other table, its columns, the times' origin
+    joined: dict = field(default_factory=dict)
 
     @property
     def name(self) -> str:
@@ -156,7 +160,8 @@ class RawTable:
                 "decimal": self.decimal, "rows": len(self.rows),
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
                 "summary_rows_skipped": self.summaries_skipped,
-                "footer_rows_skipped": self.footer_skipped}
+                "footer_rows_skipped": self.footer_skipped,
+                **({"joined_by_time": self.joined} if self.joined else {})}
 
 
 def _column_letters(index: int) -> str:
@@ -171,8 +176,10 @@ def _column_letters(index: int) -> str:
 # --- reading ----------------------------------------------------------------------------------
 
 _NUMBER = re.compile(r"^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$")
+# a unit of two words is one pint or LAB_UNITS reads as one ('in Hg', 'in. Hg', 'bar g')
 _NUMBER_AND_UNIT = tuple(re.compile(rf"^(?P<number>[-+.,\deE]+{lazy})\s*"
-                                    r"(?P<unit>[A-Za-z%°µ][\w%°µ/^]*)?$") for lazy in ("", "?"))
+                                    r"(?P<unit>[A-Za-z%°µ][\w%°µ/^]*(?:\.?\s+[A-Za-z]\w*)?)?$")
+                         for lazy in ("", "?"))
 _COMMA_DECIMAL = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
 _POINT_DECIMAL = re.compile(r"^[+-]?\d*\.\d+([eE][+-]?\d+)?$")
 _THOUSANDS = re.compile(r"^[+-]?\d{1,3}(,\d{3})+$")
@@ -180,6 +187,22 @@ _THOUSANDS = re.compile(r"^[+-]?\d{1,3}(,\d{3})+$")
 #: the table's decimal mark is known (a grouped number without one is not: '1.234')
 _GROUPED = {",": re.compile(r"^(?P<number>[+-]?\d{1,3}(\.\d{3})+,\d+)(?P<rest>.*)$"),
             ".": re.compile(r"^(?P<number>[+-]?\d{1,3}(,\d{3})+\.\d+)(?P<rest>.*)$")}
+
+#: marks that group a number's thousands and are no decimal mark anywhere: an apostrophe (Swiss
+#: 1'234.5, typeset 1’234.5) and a thin, narrow no-break or no-break space (French 1 234,5)
+_GROUP_MARKS = "'\u2019\u2009\u202f\u00a0"
+_MARK_GROUPED = re.compile(rf"^(?P<sign>[+-]?)(?P<digits>\d{{1,3}}(?:[{_GROUP_MARKS}]\d{{3}})+)"
+                           rf"(?![\d{_GROUP_MARKS}])")
+
+
+def _ungrouped(text: str) -> str:
+    """``text`` with the marks of :data:`_GROUP_MARKS` dropped from a leading number grouped
+    by threes (``1'234.5`` -> ``1234.5``); any other text as it is."""
+    match = _MARK_GROUPED.match(text)
+    if not match:
+        return text
+    return (match["sign"] + re.sub(f"[{_GROUP_MARKS}]", "", match["digits"])
+            + text[match.end():])
 
 
 def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
@@ -234,7 +257,8 @@ def _text_table(path: Path, text: str) -> RawTable:
               if any(c.strip() for c in cells)]
     if path.suffix.lower() == ".lvm":
         parsed = _without_later_lvm_headers(path, parsed)
-    decimal = _decimal(path, separator, [c.strip() for _, cells in parsed[1:200] for c in cells])
+    decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
+                                         for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
 
@@ -280,6 +304,7 @@ def _decimal(path: Path, separator: str, cells: list[str]) -> str:
     holding a comma was quoted (``"1,5"``): a decimal comma, unless other cells have decimal
     points (then the commas group thousands) or every such cell could be either
     (``"1,500"``: refused, naming it)."""
+    cells = [_number_part(c) for c in cells]
     commas = [c for c in cells if _COMMA_DECIMAL.match(c) or _GROUPED[","].match(c)]
     if separator != ",":
         return "," if commas else "."
@@ -290,6 +315,15 @@ def _decimal(path: Path, separator: str, cells: list[str]) -> str:
                          "could be decimal commas or thousands: expected the file saved with "
                          "';' as separator, or its numbers without thousands separators")
     return ","
+
+
+def _number_part(text: str) -> str:
+    """A cell's number where a unit follows it (``'1,25 bar'`` -> ``'1,25'``), so that its
+    decimal mark is seen as a bare number's; any other cell as it is."""
+    match = _NUMBER_AND_UNIT[0].match(text)
+    if match and match["unit"] and parse_unit(match["unit"]) is not None:
+        return match["number"]
+    return text
 
 
 def _separator(lines: list[str]) -> str:
@@ -356,9 +390,10 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                     rows.append(cells)
                 if len(rows) > MAX_ROWS:
                     raise ValueError(f"{path}, sheet {name!r} has more than {MAX_ROWS} rows")
-            # numbers a German Excel stored as text ("1,5") have a decimal comma
-            decimal = "," if any(isinstance(c, str) and _COMMA_DECIMAL.match(c.strip())
-                                 for cells in rows[:50] for c in cells) else "."
+            # numbers a German Excel stored as text ("1,5", "1,25 bar") have a decimal comma
+            decimal = "," if any(
+                isinstance(c, str) and _COMMA_DECIMAL.match(_number_part(_ungrouped(c.strip())))
+                for cells in rows[:50] for c in cells) else "."
             try:
                 tables.append(_with_header(path, name, numbers, rows, None, decimal))
             except ValueError as exc:  # a sheet of notes: skipped unless it was asked for
@@ -432,10 +467,11 @@ def _preamble_row(rows: list[list], k: int) -> bool:
 
 
 def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
-    """The header is the row above the first row with two numbers that is not a line of a
-    header block (:func:`_preamble_row`); rows above it are titles."""
+    """The header is the row above the first row with two numbers (a date-time or a clock
+    reading counts as one: a logger's record of one channel and its time) that is not a line
+    of a header block (:func:`_preamble_row`); rows above it are titles."""
     first_data = next((k for k, cells in enumerate(rows)
-                       if sum(_is_number(c) for c in cells) >= 2
+                       if sum(_is_number(c) or _clock(c) is not None for c in cells) >= 2
                        and not _preamble_row(rows, k)), None)
     where = f"{path.name}, sheet {sheet!r}" if sheet else path.name
     if first_data is None:
@@ -572,21 +608,25 @@ def registry(case_sensitive: bool = True):
 NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
 
 
-#: unit spellings of lab headers that pint reads otherwise (any case) -> what a lab means:
-#: ``[-]`` dimensionless, ``MPA``/``mpa`` not millipascal, ``KN`` not knot, ``kp`` the kilopond
-#: not the kilopoise, ``MBAR`` not megabar, ``MM``/``S``/``MS`` not megamolar or siemens, and
+#: unit spellings of lab headers that pint reads otherwise (any case, spaces as one) -> what a
+#: lab means: ``[-]`` dimensionless, ``MPA``/``mpa`` not millipascal, ``KN`` not knot, ``kp``
+#: the kilopond not the kilopoise, ``MBAR`` not megabar, ``MM``/``S``/``MS`` not megamolar or
+#: siemens, ``at`` the technical atmosphere (a word where a header's name holds it, see
+#: :data:`NOT_UNITS`), ``in Hg`` an inch of mercury (not an inch times mercury's density), and
 #: the gauge suffixes (the toolkit's pressures are gauge pressures)
 LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", "pa": "Pa",
-             "kpa": "kPa", "mpa": "MPa", "psi": "psi", "psig": "psi", "n": "N", "kn": "kN",
-             "dan": "daN", "kp": "kgf", "kilopond": "kgf", "kgf": "kgf", "lbf": "lbf",
-             "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
+             "kpa": "kPa", "mpa": "MPa", "psi": "psi", "psig": "psi", "at": "technical_atmosphere",
+             "in hg": "inch_Hg", "in. hg": "inch_Hg", "inch hg": "inch_Hg", "mm hg": "mmHg",
+             "n": "N", "kn": "kN", "dan": "daN", "kp": "kgf", "kilopond": "kgf", "kgf": "kgf",
+             "lbf": "lbf", "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
 
 
-#: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü)
-_GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi)\s*(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))",
-                    re.IGNORECASE)
-#: the same marked absolute (bar a, bar(a), psia, bar abs): refused, with why
-_ABSOLUTE = re.compile(r"(?:m?bar|[km]?pa|psi)\s*"
+#: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü),
+#: atü (German technical atmospheres above the atmosphere)
+_GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi|at)\s*"
+                    r"(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))", re.IGNORECASE)
+#: the same marked absolute (bar a, bar(a), psia, bar abs, ata): refused, with why
+_ABSOLUTE = re.compile(r"(?:m?bar|[km]?pa|psi|at)\s*"
                        r"(?:\(\s*(?:a|abs|absolute)\s*\)|(?:a|abs|absolute))", re.IGNORECASE)
 
 
@@ -602,8 +642,8 @@ def parse_unit(text: str):
     text = text.strip()
     if gauge := _GAUGE.fullmatch(text):  # the toolkit's pressures are gauge pressures
         text = gauge.group("unit")
-    if text.lower() in LAB_UNITS:
-        return registry().Unit(LAB_UNITS[text.lower()])
+    if (spelled := " ".join(text.lower().split())) in LAB_UNITS:
+        return registry().Unit(LAB_UNITS[spelled])
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
         return None
     for case_sensitive in (True, False):
@@ -657,7 +697,7 @@ def parse_header(text: str) -> tuple[str, str | None]:
     if len(words) == 1 and words[0].lower() in CLOCK_NAMES:
         return words[0].lower(), CLOCK_NAMES[words[0].lower()]
     for k, word in enumerate(words[1:], start=1):
-        unit = parse_unit(word)
+        unit = None if word.lower() in NOT_UNITS else parse_unit(word)
         if unit is not None and any(_fits(unit, r) for r in ROLES.values()):
             return _name(words[:k] + words[k + 1:]), word
     return _name(words), None
@@ -752,12 +792,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     for role in BY_UNIT_ROLES:
         # a DAQ's channel by its number ('AI 1 [bar]'): the one column whose unit is of the
         # role's quantity (two, a set point beside a reading, are for --columns to tell)
-        taken = {c.index for c in found.values()}
-        by_unit = [index for index, header in enumerate(headers)
-                   if header and index not in taken and role not in found
-                   and not _set_point(parse_header(header)[0])
-                   and (unit := parse_header(header)[1]) is not None
-                   and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
+        by_unit = [] if role in found else by_unit_columns(table, role, found)
         if len(by_unit) == 1:
             index = by_unit[0]
             found[role] = Column(role, index, headers[index], parse_header(headers[index])[1])
@@ -771,6 +806,16 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
     return found
+
+
+def by_unit_columns(table: RawTable, role: str, found: dict[str, Column]) -> list[int]:
+    """The columns no role took whose unit is of ``role``'s quantity, set points left out: the
+    ones that may hold it where no column's name says it."""
+    taken = {c.index for c in found.values()}
+    return [index for index, header in enumerate(table.header)
+            if header and index not in taken and not _set_point(parse_header(header)[0])
+            and (unit := parse_header(header)[1]) is not None
+            and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
 
 
 #: how a time column of spreadsheet serial dates is said (the line, run.json)
@@ -1088,6 +1133,80 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
+def _time_origin(table: RawTable, column: Column) -> tuple[str, float] | None:
+    """The kind and moment [s] of a time column's first row where its cells are clock readings
+    or date-times (``("date-time", seconds since 1970)``); None for a column of numbers
+    counted from any start."""
+    raw = [row[column.index] for row in table.rows]
+    if not raw:
+        return None
+    if column.excel_days:
+        return "date-time", float(_plain_numbers(raw[:1], table.decimal)[0]) * _DAY_S
+    reading = _clock(raw[0], _day_first(raw))
+    return reading if reading is not None and reading[0] in ("date-time", "clock") else None
+
+
+def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
+                 other_found: dict[str, Column],
+                 roles: list[str]) -> tuple[RawTable, dict[str, Column]]:
+    """``table`` with the columns of ``roles`` from ``other``, another table of the same
+    record, each interpolated linearly at ``table``'s times (in the toolkit's unit), and
+    ``found`` with them: the times compared as moments where both are date-times or clock
+    readings of one kind, else as read (seconds; clock readings from their first row).
+    ``table``'s rows outside ``other``'s times are left out (nothing extrapolated);
+    ``ValueError`` naming what is missing, a time that goes backwards, or tables whose times
+    do not overlap."""
+    for where, columns, what in ((table, found, ("time",)), (other, other_found,
+                                                               ("time", *roles))):
+        absent = [r for r in what if r not in columns]
+        if absent:
+            named = ", ".join(repr(h) for h in where.header if h) or "no header"
+            raise ValueError(f"--join-by-time {other.source.name}: {where.name} has no "
+                             f"{' or '.join(absent)} "
+                             f"column among {named}: expected a time column in both tables and "
+                             f"the {' and '.join(roles)} in {other.name}")
+    times = column_values(table, found["time"])
+    other_times = column_values(other, other_found["time"])
+    back = np.flatnonzero(np.diff(other_times) < 0)
+    if back.size:
+        column = other_found["time"]
+        raise ValueError(f"{other.name}, cell {other.cell(int(back[0]) + 1, column.index)} "
+                         f"(column {column.header!r}): the time goes backwards: expected "
+                         "samples in time order")
+    origins = (_time_origin(table, found["time"]), _time_origin(other, other_found["time"]))
+    if None not in origins and origins[0][0] == origins[1][0]:
+        shift = origins[1][1] - origins[0][1]  # the other's first row, on this table's clock
+        how = f"as {origins[0][0]}s, {other.name} starting {shift:+.4g} s from {table.name}"
+    else:  # seconds as written, clock readings from their first row
+        shift = 0.0
+        how = "their times as read, in seconds"
+    other_times = other_times + shift
+    inside = (times >= other_times[0]) & (times <= other_times[-1])
+    if not inside.any():
+        raise ValueError(f"--join-by-time {other.source.name}: {table.name}'s times "
+                         f"({times[0]:.4g}-{times[-1]:.4g} s) and {other.name}'s "
+                         f"({other_times[0]:.4g}-{other_times[-1]:.4g} s, {how}) do not "
+                         "overlap: expected two tables of one record")
+    kept = np.flatnonzero(inside)
+    header, rows = list(table.header), [list(table.rows[k]) for k in kept]
+    found = dict(found)
+    joined = {}
+    for role in roles:
+        column = other_found[role]
+        values = np.interp(times[kept], other_times, column_values(other, column))
+        name = f"{column.header} ({other.source.name})"
+        found[role] = Column(role, len(header), name, ROLES[role].unit, given=True)
+        header.append(name)
+        for row, value in zip(rows, values, strict=True):
+            row.append(float(value))
+        joined[role] = column.header
+    how += f", linearly; {kept.size} of {times.size} rows within its times"
+    return replace(table, header=header, rows=rows,
+                   row_numbers=[table.row_numbers[k] for k in kept],
+                   joined={"file": other.source.name, "columns": joined, "how": how,
+                           "shift_s": shift, "rows_outside": int(times.size - kept.size)}), found
+
+
 #: what a spreadsheet's summary row under the measurements is called (mean, sum, extremes,
 #: spread), in English, German and French: such a row is no step
 SUMMARY_WORDS = {"mean", "average", "avg", "sum", "total", "min", "max", "minimum", "maximum",
@@ -1106,11 +1225,25 @@ def _summary_word(cell: str) -> str:
 def without_summary_rows(table: RawTable) -> RawTable:
     """``table`` without its summary rows (a cell reading ``Mean``, ``Mittelwert``, ``Summe``,
     ``Max``, ... alone: :data:`SUMMARY_WORDS`), which a spreadsheet puts under the measurements
-    and which are no measurement; the cell naming each in ``summaries_skipped``."""
+    and which are no measurement; the cell naming each in ``summaries_skipped``. Such a label
+    stands where the steps hold numbers (an index, a pressure): in a column of text, a lab's
+    comments, the word is a comment on its row ('Max' beside the top step)."""
+    def word(cell) -> bool:
+        return isinstance(cell, str) and _summary_word(cell) in SUMMARY_WORDS
+
+    labelled = {k for k, row in enumerate(table.rows) if any(map(word, row))}
+    numbered: dict[int, bool] = {}  # a column holding a number in a row of no such word
+
+    def steps_number(column: int) -> bool:
+        if column not in numbered:
+            numbered[column] = any(_is_number(row[column]) for k, row in enumerate(table.rows)
+                                   if k not in labelled and column < len(row))
+        return numbered[column]
+
     named = {}
-    for k, row in enumerate(table.rows):
-        for column, cell in enumerate(row):
-            if isinstance(cell, str) and _summary_word(cell) in SUMMARY_WORDS:
+    for k in sorted(labelled):
+        for column, cell in enumerate(table.rows[k]):
+            if word(cell) and steps_number(column):
                 named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
                 break
     if not named:
@@ -1194,7 +1327,7 @@ def _number(cell, decimal: str) -> tuple[float | None, str | None]:
         return None, None
     if isinstance(cell, int | float):
         return float(cell), None
-    text = str(cell).strip()
+    text = _ungrouped(str(cell).strip())
     if text.lower().lstrip("+-") in ("nan", "inf", "infinity"):
         return float(text), None
     grouped = _GROUPED[decimal].match(text)
@@ -1301,6 +1434,9 @@ class Recognition:
         if summaries := self.table.summaries_skipped:
             extras.append(f"{len(summaries)} summary row(s) skipped: "
                           + ", ".join(summaries[:3]) + (", ..." if len(summaries) > 3 else ""))
+        if joined := self.table.joined:
+            extras.append(f"{', '.join(map(repr, joined['columns'].values()))} of "
+                          f"{joined['file']} joined by time ({joined['how']})")
         if skipped := self.table.blanks_skipped:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))

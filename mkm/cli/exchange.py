@@ -53,9 +53,10 @@ def register(subparsers) -> None:
                      help="the muscle to import where the table's muscle column holds several")
     imp.add_argument("--tare", default="auto", metavar="auto|none|N",
                      help="the force's zero: a time series' mean force before its pressure "
-                     "rises, a step table's force at the lowest pressure of its rising branch "
-                     "(auto; only when that pressure is 0 bar), none, or a value [N] (or with "
-                     "its unit: 0.2kgf)")
+                     "rises (or over the vented rest that ends it, where the logging began as "
+                     "the pressure rose), a step table's force at the lowest pressure of its "
+                     "rising branch (auto; only when that pressure is 0 bar, else at the 0 bar "
+                     "rows that end a sweep), none, or a value [N] (or with its unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series (or a "
                      "record without its time): "
@@ -66,6 +67,12 @@ def register(subparsers) -> None:
                      action=derived_help(_force_sign_help))
     imp.add_argument("--one-step-per-row", action=derived_help(_one_step_per_row_help,
                                                                argparse._StoreTrueAction))
+    imp.add_argument("--join-by-time", default=None, metavar="FILE",
+                     help="another table of the same record holding what the table lacks (the "
+                     "force, or the pressure), with its own time column: its values "
+                     "interpolated linearly at the table's times, compared as moments where "
+                     "both times are date-times or clock readings, else as read (seconds); "
+                     "the table's rows outside its times are left out")
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "
                      "and the sensor's data sheet, or the table's stated accuracy): a value "
@@ -139,7 +146,7 @@ def _import(args) -> int:
                                                                        "bar"),
         select=args.muscle, accuracy=parse_accuracy(args.accuracy),
         force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
-        notify=lines.append)
+        join=args.join_by_time, notify=lines.append)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

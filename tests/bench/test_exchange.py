@@ -349,9 +349,55 @@ def test_a_step_tables_vented_reading_a_hair_below_zero_is_zero(tmp_path, capsys
     run = load_run(out.strip())
     assert run.steps["pressure_bar_mean"].tolist() == [0.0002, 1.0, 0.0]
     assert run.meta.imported_from["readings_below_zero_set_to_0"] == 1
-    table.write_text("P,F\n0,0\n1,100\n-0.05,0\n")  # more than noise: a vacuum, refused
-    code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
-    assert code == 2 and "cell A4 (column 'P'): -0.05 bar is below 0" in err
+
+
+def test_a_step_tables_row_within_a_gauges_zero_error_below_zero_is_vented(tmp_path, capsys):
+    # a regulator's readback of the 0 bar rows: -0.05 bar, a gauge's zero a little negative
+    # (1 % of a 10 bar readback's span is 0.1 bar): was refused ("-0.05 bar is below 0") with
+    # no option to take it
+    table = tmp_path / "steps.csv"
+    table.write_text("P [bar],F [N]\n-0.05,2\n1,102\n2,202\n-0.04,2.5\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "a")], capsys)
+    assert code == 0, err
+    run = load_run(out.strip())
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0, 1.0, 2.0, 0.0]
+    # the tare is the (now) 0 bar row's force, 2 N
+    np.testing.assert_allclose(run.steps["force_N_mean"], [0.0, 100.0, 200.0, 0.5])
+    assert ("2 row(s) reading down to -0.05 bar (A2, A5) taken as vented, 0 bar: within a "
+            "gauge's zero error, +-0.08 bar where no pressure accuracy is declared (1 % of the "
+            "practical range's 8 bar); --accuracy pressure=... declares the sensor's") in err
+    assert run.meta.imported_from["readings_below_zero_set_to_0"] == 2
+    assert run.meta.imported_from["below_zero_bound_bar"] == 0.08
+    # beyond it: the value, the bound and the option that declares a wider one
+    table.write_text("P [bar],F [N]\n-0.2,2\n1,102\n2,202\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "b")], capsys)
+    assert code == 2 and out == "" and not (tmp_path / "b").exists()
+    assert err == ("mkm import: error: steps.csv, cell A2 (column 'P [bar]'): -0.2 bar is below "
+                   "0 by more than a gauge's zero error, +-0.08 bar where no pressure accuracy "
+                   "is declared (1 % of the practical range's 8 bar): expected a gauge pressure "
+                   ">= -0.08 bar; if the sensor's accuracy is wider, declare it: --accuracy "
+                   "pressure=0.2bar\n")
+    # the sensor's declared accuracy is the bound, wider or narrower than the default
+    code, out, err = _run(["import", str(table), *MUSCLE, "--accuracy", "pressure=0.25bar",
+                           "--out", str(tmp_path / "c")], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].tolist() == [0.0, 1.0, 2.0]
+    assert ("1 row(s) reading down to -0.2 bar (A2) taken as vented, 0 bar: within the "
+            "declared pressure accuracy, +-0.25 bar") in err
+    table.write_text("P [bar],F [N]\n-0.05,2\n1,102\n2,202\n")
+    code, _, err = _run(["import", str(table), *MUSCLE, "--accuracy", "pressure=0.04bar+1%",
+                         "--out", str(tmp_path / "d")], capsys)
+    assert code == 2
+    assert err.endswith("-0.05 bar is below 0 by more than the declared pressure accuracy, "
+                        "+-0.0405 bar at that reading (--accuracy pressure=0.04bar+1%): "
+                        "expected a gauge pressure >= -0.0405 bar; if the sensor's accuracy is "
+                        "wider, declare it: --accuracy pressure=0.05bar\n")
+    # a reading's noise about its zero is taken whatever the accuracy declared
+    table.write_text("P [bar],F [N]\n-0.02,2\n1,102\n2,202\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--accuracy", "pressure=0.01bar",
+                           "--out", str(tmp_path / "e")], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].tolist() == [0.0, 1.0, 2.0]
 
 
 def test_vented_given_for_a_step_table_is_refused_not_ignored(tmp_path, capsys):
@@ -367,10 +413,11 @@ def test_vented_given_for_a_step_table_is_refused_not_ignored(tmp_path, capsys):
                    "expected --vented with a time series only (its first samples read vented); "
                    "a step table's pressures are imported as they are\n")
     assert not (tmp_path / "runs").exists()
-    table.write_text("P [bar],F [N]\n0,0\n1,100\n-0.05,0\n", encoding="utf-8")
+    table.write_text("P [bar],F [N]\n0,0\n1,100\n-0.5,0\n", encoding="utf-8")
     code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "runs")],
                         capsys)
-    assert code == 2 and err.endswith("-0.05 bar is below 0: expected a gauge pressure >= 0\n")
+    assert code == 2 and err.endswith("declare it: --accuracy pressure=0.5bar\n")
+    assert "--vented" not in err
 
 
 def test_a_force_that_falls_as_the_pressure_rises_is_questioned(tmp_path, capsys):
@@ -443,3 +490,36 @@ def test_export_of_a_run_that_lost_rows_says_so(config, tmp_path, capsys):
     assert json.loads(meta["problems"]) == [
         f"samples.csv holds 60 samples, run.json counted {counted}: {counted - 60} lost"]
     assert len(pd.read_csv(tmp_path / "csv" / "samples.csv")) == 60
+
+
+def test_two_load_cells_are_named_and_one_is_chosen(tmp_path, capsys):
+    # a bench with a second load cell (a check cell in series): was "no force column among
+    # 'Time [s]', ..., 'Load cell 1 [N]', 'Load cell 2 [N]'", as though none held a force
+    table = tmp_path / "two.csv"
+    table.write_text("P [bar],Load cell 1 [N],Load cell 2 [kN]\n0,2,0.003\n1,102,0.1031\n"
+                     "2,202,0.2029\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "a")], capsys)
+    assert code == 2 and out == ""
+    assert err == ("mkm import: error: two.csv: no column is named a force, and 2 hold one by "
+                   "their unit, 'Load cell 1 [N]' and 'Load cell 2 [kN]': which is the muscle's "
+                   "is not guessed: expected one, chosen with --columns force=COLUMN (cells in "
+                   "series read the same force; cells in parallel share it: add them in a "
+                   "column of the table)\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--columns",
+                           "force=Load cell 2 [kN]", "--out", str(tmp_path / "b")], capsys)
+    assert code == 0, err
+    np.testing.assert_allclose(load_run(out.strip()).steps["force_N_mean"], [0, 100.1, 199.9])
+
+
+def test_a_step_tables_0_bar_row_at_the_end_is_its_zero(tmp_path, capsys):
+    # a sweep 0.5 -> 2.5 -> 0 bar, the load cell's zero (5 N) read where it ends: was "no
+    # tare: the table has no 0 bar row", every force 5 N high
+    table = tmp_path / "steps.csv"
+    table.write_text("P [bar];F [N]\n0,5;105\n1,5;305\n2,5;505\n1,5;310\n0,5;108\n0;5\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "a")], capsys)
+    assert code == 0, err
+    run = load_run(out.strip())
+    np.testing.assert_allclose(run.steps["force_N_mean"], [100, 300, 500, 305, 103, 0])
+    assert ("tare 5 N subtracted (mean force of the 1 row(s) at 0 bar where the falling branch "
+            "ends: the rising branch starts at 0.5 bar)") in err
+    assert run.meta.imported_from["tare_N"] == 5.0

@@ -492,6 +492,91 @@ def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm
                                                   rel=1e-5)  # 6 digits kept
 
 
+@pytest.mark.parametrize("start_bar", [0.0, 1.0])
+def test_a_record_whose_vented_rest_is_at_its_end_is_zeroed_there(start_bar, tmp_path,
+                                                                   mkm_cli):
+    # the logging began as the regulator rose (one sample at 0 bar), or held at 1 bar, and
+    # ended on a 10 s vented rest: the zero was the one sample's force (the muscle already
+    # pulling, 0.3 N off a 4 N zero) or none at all (every force 4 N high), the rest at the end
+    # left unused
+    rng = np.random.default_rng(12)
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 2, 10, 12, 20, 22, 30, 32, 40, 42, 48, 49, 60],
+                  [start_bar, 1.0, 1.0, 1.5, 1.5, 2.0, 2.0, 2.5, 2.5, 1.0, 1.0, 0.0, 0.0])
+    f = thickwall_N(p, 0.0) + 4.0 + rng.normal(0, 0.3, t.size)
+    path = tmp_path / "tare_at_end.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p + rng.normal(0, 0.003, t.size),
+                  "F (N)": f}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    # the rest's mean over about 110 samples of 0.3 N noise: 4 standard errors
+    assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(100))
+    assert "of the vented rest that ends the record (from 49" in recorded["tare"]
+    assert "tare 4" in err and "vented rest that ends the record" in err
+    tared = run.samples["phase"] == "tare"
+    assert run.samples.loc[tared, "time_s"].min() >= 48.9 and tared.sum() > 100
+    # each hold's force that of its level (1, 1.5, 2, 2.5, 1 bar), within 4 standard errors of
+    # its mean and of the zero's, and the 0.2 N a hold's edge takes in of the next ramp (as a
+    # staircase's steps above)
+    for step in run.steps.itertuples():
+        assert step.force_N_mean == pytest.approx(
+            thickwall_N(round(step.pressure_bar_mean * 2) / 2, 0.0),
+            abs=0.2 + 4 * 0.3 * np.hypot(1 / np.sqrt(step.n), 1 / np.sqrt(100)))
+
+
+def test_pressure_and_force_logged_in_two_files_are_joined_by_time(tmp_path, mkm_cli):
+    # the regulator's readback logged by one program at 10 Hz, the load cell by another at
+    # 20 Hz started 2.5 s later (ISO date-times, each its own clock): was "no force column
+    # among 'Timestamp', 'Pressure [bar]'", and no option joined them
+    import datetime
+
+    rng = np.random.default_rng(13)
+    knots = ([0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+             [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    start = datetime.datetime(2026, 12, 6, 9, 0, 0, tzinfo=datetime.UTC)
+
+    def stamps(t):
+        return [(start + datetime.timedelta(seconds=float(s))).isoformat(timespec="milliseconds")
+                for s in t]
+
+    tp = np.arange(0.0, 60.0, 0.1)
+    pressure = tmp_path / "regulator.csv"
+    pd.DataFrame({"Timestamp": stamps(tp), "Pressure [bar]": np.interp(tp, *knots)
+                  + rng.normal(0, 0.003, tp.size)}).to_csv(pressure, index=False)
+    tf = np.arange(2.5, 62.5, 0.05)
+    force = tmp_path / "loadcell.csv"
+    pd.DataFrame({"Timestamp": stamps(tf), "Kraft [kN]": (thickwall_N(np.interp(
+        tf, *knots), 0.0) + 4.0 + rng.normal(0, 0.3, tf.size)) / 1000}).to_csv(force,
+                                                                             index=False)
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and "no force column among 'Timestamp', 'Pressure [bar]'" in err
+    (run,), err = _import(mkm_cli, pressure, *MUSCLE, "--eps", "0", "--join-by-time", str(force))
+    assert ("'Kraft [kN]' of loadcell.csv joined by time (as date-times, loadcell.csv starting "
+            "+2.5 s from regulator.csv, linearly; 575 of 600 rows within its times)") in err
+    joined = run.meta.imported_from["joined_by_time"]
+    assert joined["shift_s"] == pytest.approx(2.5) and joined["rows_outside"] == 25
+    assert len(joined["sha256"]) == 64
+    # the tare from the rest the two share (2.5-5 s), each hold's force its level's: within 4
+    # standard errors of the hold's mean and the zero's, and the 0.2 N a hold's edge takes in
+    assert run.meta.imported_from["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(25))
+    assert [round(s, 1) for s in run.steps["pressure_bar_mean"]] == [1.0, 2.0, 2.5]
+    for step in run.steps.itertuples():
+        assert step.force_N_mean == pytest.approx(
+            thickwall_N(round(step.pressure_bar_mean * 2) / 2, 0.0),
+            abs=0.2 + 4 * 0.3 * np.hypot(1 / np.sqrt(step.n), 1 / np.sqrt(25)))
+    # a table with both, or times that do not meet: one line each
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--join-by-time",
+                            str(pressure), "--out", str(tmp_path / "bad")])
+    assert code == 2 and "--join-by-time regulator.csv: regulator.csv has no force column" in err
+    late = tmp_path / "late.csv"
+    pd.DataFrame({"Timestamp": stamps(tf + 3600), "F [N]": 1.0}).to_csv(late, index=False)
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--join-by-time",
+                            str(late), "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "do not overlap" in err
+    assert not (tmp_path / "bad").exists()
+
+
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
 def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
                                                                          mkm_cli):
@@ -755,6 +840,38 @@ def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_p
     code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "lost.xlsx")])
     assert code == 2 and err.count("\n") == 1 and "imported_table.csv, is missing" in err
     assert not (tmp_path / "lost.xlsx").exists()
+
+
+def test_decimal_commas_with_a_unit_in_every_cell_read_and_read_back(tmp_path, mkm_cli):
+    # a logger writing '1,25 bar' and '120,5 N' in every cell: the file was refused ("'0,001
+    # bar' is not a number": the decimal comma not seen behind a unit), and so was the
+    # exported workbook's sheet imported_table, which keeps such cells as written
+    rng = np.random.default_rng(9)
+    n = 600
+    p = np.abs(np.interp(np.arange(n), [0, 40, 320, n - 1], [0, 0, 2.0, 0])
+               + rng.normal(0, 0.003, n))
+    f = thickwall_N(p, 0.0) + 2.0 + rng.normal(0, 0.3, n)
+    path = tmp_path / "units.csv"
+    path.write_text("Druck;Kraft\n" + "".join(f"{a:.3f} bar;{b:.2f} N\n".replace(".", ",")
+                                              for a, b in zip(p, f, strict=True)),
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "decimal comma" in err and run.meta.imported_from["shape"] == "ramp"
+    # the steps are the bins of the cells as written: the same as a table without the units
+    plain = tmp_path / "plain" / "plain.csv"
+    plain.parent.mkdir()
+    plain.write_text(path.read_text(encoding="utf-8").replace(" bar", "").replace(" N", ""),
+                     encoding="utf-8")
+    (bare,), _ = _import(mkm_cli, plain, *MUSCLE, "--eps", "0")
+    assert run.steps["force_N_mean"].tolist() == bare.steps["force_N_mean"].tolist()
+    book = tmp_path / "run.xlsx"
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
+    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
+        assert again.steps[column].tolist() == run.steps[column].tolist()
+    (restored,), _ = _import(mkm_cli, book)
+    assert restored.steps["force_N_mean"].tolist() == run.steps["force_N_mean"].tolist()
 
 
 def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, mkm_cli):
@@ -1172,6 +1289,19 @@ def test_a_spreadsheets_summary_rows_under_the_steps_are_no_steps(tmp_path, mkm_
     assert "2 summary row(s) skipped: A8 ('Mittelwert'), A9 ('Max:')" in err
     assert run.meta.imported_from["summary_rows_skipped"] == ["A8 ('Mittelwert')",
                                                               "A9 ('Max:')"]
+
+
+def test_a_statistic_word_in_a_comment_column_is_a_comment(tmp_path, mkm_cli):
+    # 'Max' written beside the top step in the lab's comment column: the step was skipped as a
+    # spreadsheet's summary row ("1 summary row(s) skipped: C5 ('Max')"), the sweep's top lost
+    path = tmp_path / "lab.csv"
+    path.write_text("P [bar];F [N];Kommentar\n0;3;genullt\n0,5;213;\n1;423;\n1,5;633;Max\n"
+                    "1;425;\n0,5;215;\n0;3,5;Ende\n\nMittelwert;0,64;273,6;\n",
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0, 0.5, 1.0, 1.5, 1.0, 0.5, 0.0]
+    # a label where the steps hold numbers is still a summary row's
+    assert "1 summary row(s) skipped: A10 ('Mittelwert')" in err
 
 
 @pytest.mark.parametrize("label", ["Std.Abw.", "Std. Dev.", "Ø", "Moy.", "Anzahl"])

@@ -142,6 +142,35 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.5], rtol=1e-12)
 
 
+# the technical atmosphere is 1 kgf/cm^2; the conventional inch of mercury the pressure of an
+# inch of mercury of 13595.1 kg/m^3 under standard gravity (3386.389 Pa)
+AT_BAR = KGF_N / 0.01**2 / 1e5
+INHG_BAR = 0.0254 * 13595.1 * 9.80665 / 1e5
+
+
+@pytest.mark.parametrize("header, cells, bar_per_unit", [
+    ("Druck [at]", ("1,5", "2,5"), AT_BAR), ("Druck (atü)", ("1,5", "2,5"), AT_BAR),
+    ("Druck", ("1.5 at", "2.5 at"), AT_BAR), ("Pressure [inHg]", ("1,5", "2,5"), INHG_BAR),
+    ("Pressure (in Hg)", ("1,5", "2,5"), INHG_BAR), ("p [in. Hg]", ("1,5", "2,5"), INHG_BAR),
+    ("Pressure", ("1,5 in Hg", "2,5 in Hg"), INHG_BAR),
+    ("P", ("1,5 in. Hg", "2,5 in. Hg"), INHG_BAR),
+])
+def test_technical_atmospheres_and_inches_of_mercury(header, cells, bar_per_unit, tmp_path):
+    # were refused: 'at' read as the English word ("'at' is not a unit of pressure"), 'in Hg'
+    # as an inch times mercury's density
+    assert AT_BAR == pytest.approx(0.980665, rel=1e-15)
+    assert INHG_BAR * 1e5 == pytest.approx(3386.389, abs=5e-4)
+    table, found = _one(tmp_path, f"{header};F (N)\n{cells[0]};2\n{cells[1]};4\n")
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
+
+
+def test_at_as_a_word_of_a_header_is_no_unit():
+    # 'at' is a unit in brackets or a cell, a word in a header's name
+    assert parse_header("Force at peak") == ("force peak", None)
+    assert parse_header("P at") == ("p", None)
+
+
 @pytest.mark.parametrize("header, bar_per_unit", [
     ("Pressure [bar(g)]", 1.0), ("Pressure (bar g)", 1.0), ("Druck [bar(ü)]", 1.0),
     ("Pressure (kPa (g))", 0.01), ("p [psi gauge]", PSI_BAR), ("p_psig", PSI_BAR),
@@ -160,6 +189,7 @@ def test_a_pressure_marked_gauge_is_read_in_its_unit(header, bar_per_unit, tmp_p
 @pytest.mark.parametrize("header, unit", [
     ("Druck [bar(a)]", "bar(a)"), ("p [psia]", "psia"), ("Pressure (bar abs)", "bar abs"),
     ("P [kPa (absolute)]", "kPa (absolute)"), ("P bar(a)", "bar(a)"), ("p psi (abs)", "psi(abs)"),
+    ("Druck [ata]", "ata"),
 ])
 def test_a_pressure_marked_absolute_is_refused_saying_why(header, unit, tmp_path):
     # was "'bar(a)' is not a unit of pressure (expected one like bar)": a lab's gauge reads
@@ -293,6 +323,35 @@ def test_thousands_grouped_beside_a_decimal_mark(tmp_path):
     np.testing.assert_allclose(column_values(table, found["force"]), [1234.5, 12634.25])
     table, found = _one(tmp_path, 'P [bar],F [N]\n0.5,250.5\n1,"1,234.5"\n', "en.csv")
     np.testing.assert_allclose(column_values(table, found["force"]), [250.5, 1234.5])
+
+
+@pytest.mark.parametrize("mark", ["'", "\u2019", "\u2009", "\u202f", "\u00a0"])
+def test_thousands_grouped_by_an_apostrophe_or_a_space(mark, tmp_path):
+    # a Swiss spreadsheet's 1'234.5, a French one's 1 234,5 (a thin or no-break space): were
+    # "'1'234.5' is not a number"
+    table, found = _one(tmp_path, f"P [bar];F [N]\n1.5;250.5\n2.5;1{mark}234.5\n"
+                        f"3;12{mark}634{mark}000.25 N\n", "ch.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]),
+                               [250.5, 1234.5, 12634000.25], rtol=1e-15)
+    table, found = _one(tmp_path, f"P [bar];F [N]\n1;250,5\n2;1{mark}234,5\n", "fr.csv")
+    assert table.decimal == ","
+    np.testing.assert_allclose(column_values(table, found["force"]), [250.5, 1234.5],
+                               rtol=1e-15)
+    # a mark that groups no three digits is no grouping: the cell is named
+    with pytest.raises(ValueError, match=re.escape(f"{'1' + mark + '23.5'!r} is not a number")):
+        table, found = _one(tmp_path, f"P [bar];F [N]\n1.5;250.5\n2;1{mark}23.5\n", "bad.csv")
+        column_values(table, found["force"])
+
+
+@pytest.mark.parametrize("header", ["unix_time", "Unix timestamp", "epoch", "Epoch time [s]",
+                                    "POSIX time"])
+def test_a_unix_time_column_is_the_time(header, tmp_path):
+    # a logger's seconds since 1970 under its own name: was left unread, its record taken as
+    # rows evenly spaced in time
+    table, found = _one(tmp_path, f"{header},P [bar],F [N]\n1765011600.0,0,1\n"
+                        "1765011600.1,0.5,2\n")
+    assert found["time"].header == header
+    np.testing.assert_allclose(np.diff(column_values(table, found["time"])), [0.1], rtol=1e-6)
 
 
 def test_rows_of_separators_only_are_blank(tmp_path):
