@@ -424,6 +424,7 @@ class BenchRun:
             lease.started()
         except OSError as exc:  # the state folder, not the run folder: said as such
             lease.post(lease.release)  # whenever it answers: no marker is left
+            lease.end()
             self.lease = None
             raise StateFolderBroken(f"the bench marker cannot be written in the bench state "
                                     f"folder ({exc.strerror or exc}): nothing was "
@@ -685,6 +686,8 @@ class BenchRun:
             # a failure leaves the marker naming the run and its last command
             lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
                        0.0 if hung else STATE_WAIT_S)
+        if lease is not None:  # its thread ends after the last update (one that hangs: later)
+            lease.end()
         return status, reason
 
     def _keep_outcome(self, status: RunStatus, reason: str, unverified: bool,
