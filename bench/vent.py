@@ -122,22 +122,27 @@ class VentedZero:
         return cls(float(tare["monitor_vented_bar"]), noise)
 
 
-def without_fall(check: VentCheck, before_bar: float, commanded_bar: float,
+def without_fall(check: VentCheck, before_bar: float, commanded_bar: float, last_bar: float,
                  noise_bar: float) -> VentCheck:
     """``check`` after a run ended with ``commanded_bar`` (above the vent threshold) commanded
     and the monitor reading ``before_bar`` (the median of its last readings, one noise spike
-    moves no median), weighed by the fall it showed after the vent.
+    moves no median), ``last_bar`` the last of them, weighed by the fall it showed after the
+    vent.
 
     A monitor that reads the pressure falls after the vent: its last readings before it, or
-    its first after it (a regulator that exhausts in less than a sample), lie above the reading
-    it settles at by more than its noise ``noise_bar``. One frozen near zero shows no fall
-    (a noise spike as the run stopped made its last reading look like a pressure), so its
-    settled reading verifies nothing.
+    its first after it (a stop as a step begins, the pressure still low before the vent), lie
+    above the reading it settles at by more than its noise ``noise_bar``. One frozen near zero
+    shows no fall (a noise spike as the run stopped made its last reading look like a
+    pressure), so its settled reading verifies nothing. Nor do its first readings after the
+    vent lying above its last reading before it: an exhausting muscle does not rise, so that is
+    noise (two spikes in a row move the median of the first readings), and the fall they show
+    counts only down from ``last_bar`` (plus its noise).
     """
     if not check.verified or check.how != "monitor" or check.first_above_bar is None:
         return check
     # the check's last reading is within the noise of the one it settled at
-    fall = max(before_bar - check.pressure_bar, check.first_above_bar)
+    first_fall = min(check.first_above_bar, last_bar + noise_bar - check.pressure_bar)
+    fall = max(before_bar - check.pressure_bar, first_fall)
     if fall > noise_bar:
         return check
     return dataclasses.replace(

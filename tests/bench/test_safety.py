@@ -296,6 +296,47 @@ def test_a_noise_spike_as_a_frozen_monitor_stops_verifies_no_vent(config, tmp_pa
     assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
 
 
+def test_two_noise_spikes_as_the_vent_check_begins_are_no_fall(config, tmp_path):
+    # The monitor moved with the pre-conditioning cycle (to 1 bar and back), then froze at
+    # 0 bar as the 0.5 bar step began (sample 120); Ctrl-C 2.5 s into the step, before the
+    # follow interlock's 5 s. The vent check's first two readings are noise spikes (+0.3 V,
+    # 0.3 bar): their median with the third was taken for the monitor's fall after the vent,
+    # and the frozen 0 bar verified it (exit 130) with 0.11 bar in the muscle. Readings after
+    # a vent cannot start above the monitor's last reading before it: this one read 0 bar.
+    c = config.replace(sequence={"preconditioning_cycles": 1, "preconditioning_hold_s": 5.0})
+    backend = _frozen_at(SimBackend(c), 120)
+    read, after_stop = backend.read, []
+
+    def stop_then_spikes(n, timeout):
+        block = read(n, timeout)
+        if after_stop:
+            after_stop.append(block.first_index)
+            if len(after_stop) <= 3:  # the stop's block, then the vent check's first two
+                volts = block.volts.copy()
+                volts[:, 1] += 0.3  # 1 V per bar: 1-5 V over 4 bar
+                block = dataclasses.replace(block, volts=volts)
+        elif block.first_index == 145:
+            run.request_stop()
+            after_stop.append(block.first_index)
+        return block
+
+    backend.read = stop_then_spikes
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "against 0.5 bar commanded before the vent, so its reading after it proves " \
+        "nothing" in result.reason
+    run_ = load_run(result.path)
+    vent_rows = run_.samples[run_.samples.phase == "vent"]
+    assert list(vent_rows.pressure_bar[:2]) == pytest.approx([0.3, 0.3], abs=0.003)
+    check = run_.meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] == 0.5
+    # the truth: 2.5 s into the step (tau 0.4 s) the muscle held 0.5 bar; eight 0.1 s samples
+    # of exhaust as the check read the two spikes, then six steady readings (vent.SETTLED_S),
+    # leave 0.5 exp(-2) = 0.068 bar, above the 0.05 bar a verified vent claims
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-2.0), abs=2e-3)
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
