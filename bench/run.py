@@ -532,13 +532,11 @@ class BenchRun:
         fell after the vent (a stop as a step from 0 bar begins: the regulator not yet there);
         with a pressure above the vent threshold commanded, a monitor that shows no fall after
         the vent proves nothing either (:func:`mkm.bench.vent.without_fall`)."""
-        zero = VentedZero.from_tare(self.recorder.meta.tare, self.config) \
-            if self.recorder is not None else None
         before = acq.before_vent()
         fell = check
-        if zero is not None and before is not None and \
+        if check.noise_bar is not None and before is not None and \
                 before[1] > self.config.safety.vent_below_bar:
-            fell = without_fall(check, *before, zero.noise_bar)
+            fell = without_fall(check, *before, check.noise_bar)
         unproven = acq.unproven()
         if unproven is not None and not (acq.shown_moving and fell.verified
                                          and check.first_above_bar is not None):

@@ -374,15 +374,21 @@ def test_a_monitor_that_read_pressure_before_the_vent_verifies_it(config, tmp_pa
 
 
 def test_a_monitor_reading_below_a_zero_command_is_judged_by_its_reading(config, tmp_path):
-    # a sensor 0.08 bar low trips a 0.05 bar tolerance during the tare, 0 bar commanded: no
-    # pressure was asked for, so its reading after the vent verifies it as always (it used to
-    # be called a monitor that read nothing of a pressure, "may still hold 0 bar")
+    # a sensor 0.08 bar low trips a 0.05 bar tolerance during the tare, 0 bar commanded: it
+    # is judged by its reading, not as a monitor that read nothing of a pressure ("may still
+    # hold 0 bar"); with no tare done, that reading is 0.08 bar below the zero its
+    # configuration declares, beyond the declared 0.04 bar: the tare would have refused it
+    # (beyond vent_below_bar), and a vent it reads proves nothing (0.04 bar read with 0.12 bar
+    # held)
     c = config.replace(sequence={"tare_s": 8.0}, safety={"pressure_tolerance_bar": 0.05},
                        sim={"truth": {"monitor_offset_bar": -0.08}})
     result = acquire(c, out_root=tmp_path, **QUIET)
     assert "against 0 bar commanded for more than 5 s" in result.reason
-    assert result.status == "aborted" and result.exit_code == 1, result.reason
-    assert load_run(result.path).meta.vent_check["verified"]
+    assert "below 0 bar by more than the zero error its configuration declares" in result.reason
+    assert "read nothing" not in result.reason and "proves nothing" not in result.reason
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    check = load_run(result.path).meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] is None
 
 
 def test_a_monitor_whose_zero_drifted_low_after_the_tare_verifies_no_vent(config, tmp_path):
@@ -419,6 +425,73 @@ def test_a_monitor_whose_zero_drifted_low_after_the_tare_verifies_no_vent(config
     held = 0.5 * math.exp(-(first + 1) * 0.1 / 0.4)  # from the 0.5 bar step, tau 0.4 s
     assert vent_rows[first].pressure_bar == pytest.approx(held - 0.09, abs=0.005)
     assert held > 0.1
+
+
+def test_mkm_vent_does_not_verify_with_a_monitor_read_low(config, monkeypatch):
+    # `mkm vent` has no tare: the check took three readings in a row below 0.05 bar as a
+    # verified vent. The muscle holds 0.5 bar and the monitor's input reads 0.09 bar low (its
+    # ground shifted): it read below 0.05 bar from 0.14 bar in the muscle, and the third
+    # reading verified the vent with 0.5 exp(-0.7/0.4) = 0.087 bar held. Without a tare its
+    # reading must settle too, and not below the zero its configuration declares by more than
+    # the declared zero error (0.04 bar) and its noise.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    class HeldAndShifted(SimBackend):
+        def start(self):
+            super().start()
+            self.bench.pressure_bar = 0.5  # left by a run: the vent exhausts it
+
+        def read(self, n_samples, timeout_s):
+            block = super().read(n_samples, timeout_s)
+            volts = block.volts.copy()
+            volts[:, 1] -= 0.09  # 1 V per bar: 1-5 V over 4 bar
+            return dataclasses.replace(block, volts=volts)
+
+    backends = []
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(HeldAndShifted(c)) or backends[0])
+    with pytest.raises(BenchError, match=r"the monitor settled at -0\.0[89]\d bar, below 0 bar "
+                                         r"by more than the zero error its configuration "
+                                         r"declares \(0\.04 bar, regulator\.monitor_accuracy_bar"
+                                         r"\) .*its zero is off low.*VENT BY HAND"):
+        procedures.vent(config)
+    # the truth: vented by now (the reading settled), but nothing read could tell it
+    assert backends[0].bench.pressure_bar < config.safety.vent_below_bar
+
+
+def test_a_run_whose_tare_read_no_zero_still_asks_for_a_fall_after_the_vent(config, tmp_path):
+    # The tare reads the monitor still falling (0.005 bar a sample: no settled zero), then the
+    # monitor freezes at 0 bar whatever the pressure; one sample of noise (+0.06 V, 0.06 bar,
+    # just above the 0.05 bar threshold) comes as Ctrl-C stops the run 2.5 s into the 0.5 bar
+    # step. Without the tare's zero no fall was asked for: the frozen 0 bar verified the vent
+    # (exit 130) with 0.11 bar in the muscle. The readings' own noise judges the fall instead.
+    backend = SimBackend(config)
+    read = backend.read
+
+    def falling_tare_frozen_then_spike(n, timeout):
+        block = read(n, timeout)
+        volts = block.volts.copy()
+        if block.first_index < 20:  # the tare's 2 s: 0.1 bar falling to 0
+            volts[:, 1] += 0.1 - 0.005 * block.first_index  # 1 V per bar: 1-5 V over 4 bar
+        else:
+            volts[:, 1] = 1.0  # frozen at 0 bar
+        if block.first_index == 45:
+            run.request_stop()
+            volts[:, 1] += 0.06
+        return dataclasses.replace(block, volts=volts)
+
+    backend.read = falling_tare_frozen_then_spike
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    run_ = load_run(result.path)
+    assert run_.meta.tare["monitor_vented_settled"] is False
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "with 0.5 bar commanded before the vent and did not fall after it" in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
+    assert not run_.meta.vent_check["verified"]
+    # the truth: six 0.1 s samples of exhaust (tau 0.4 s) from 0.5 bar as the check settled
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
 
 
 def test_the_vent_check_reads_from_a_zero_below_0_bar(config, tmp_path):
