@@ -348,7 +348,8 @@ class Safety:
     ``regulator.max_pressure_bar`` by more than the tolerance (overshoot). The tare needs at
     least ``tare_min_samples`` finite samples, a spread below ``tare_max_std_N`` and an offset
     within ``tare_max_shift_N`` of the configured ``loadcell.offset_V``. A vent is verified: the
-    monitor must read below ``vent_below_bar`` within ``vent_timeout_s``.
+    monitor must read below ``vent_below_bar`` within ``vent_timeout_s`` (read on while it is
+    still falling then: :data:`mkm.bench.vent.FALLING_MAX_S`).
 
     Every limit is bounded by what it guards (checked with the other sections by
     :meth:`BenchConfig.check`): the tolerance by a tenth of the regulator's full scale, the

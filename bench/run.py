@@ -24,8 +24,9 @@ Safety, in every exit path:
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
-  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` and stay
-  there, read from the zero the tare measured (a zero that drifted low shows as a reading
+  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` (read on
+  while still falling, at most :data:`mkm.bench.vent.FALLING_MAX_S`) and stay there, read from
+  the zero the tare measured (a zero that drifted low shows as a reading
   settled below it), a monitor found below its command before the vent (by the pressure
   interlock, or in its last reading before a stop, another interlock or a fault) must have
   read more than that before the vent (one stuck at zero reads 0 bar whatever the muscle

@@ -54,6 +54,8 @@ class VentCheck:
     first_above_bar: float | None = None
     # the noise [bar] a settled reading was judged by: the tare's, or the readings' own
     noise_bar: float | None = None
+    # why the check read on past safety.vent_timeout_s ("" when it did not)
+    waited_why: str = ""
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -62,10 +64,11 @@ class VentCheck:
         if self.verified:
             return (f"vent verified: {self.how} read {self.pressure_bar:.3f} bar after "
                     f"{self.waited_s:.1f} s")
+        why = f"; {self.waited_why}" if self.waited_why else ""
         if self.problem:
-            return f"the vent could not be verified ({self.problem})"
+            return f"the vent could not be verified ({self.problem}{why})"
         return (f"the {self.how} still reads {self.pressure_bar:.3f} bar {self.waited_s:.1f} s "
-                f"after the vent, above {self.below_bar:g} bar")
+                f"after the vent, above {self.below_bar:g} bar{f' ({why[2:]})' if why else ''}")
 
 
 def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -> VentCheck:
@@ -93,6 +96,14 @@ def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -
 #: settled: a muscle exhausting through an ITV-class regulator (tau about 0.4 s) still falls by
 #: more than its noise over it until it is within that noise of its vented reading
 SETTLED_S = 0.5
+#: a monitor still falling at ``safety.vent_timeout_s`` (a regulator slower than its setting
+#: foresaw, exhausting the muscle all the same) is read on while it falls, until this long after
+#: the vent at most: from 2.5 bar, a regulator of time constant up to about 14 s (below 0.05 bar
+#: after 4 time constants); twice the longest ``vent_timeout_s`` a configuration may set
+FALLING_MAX_S = 60.0
+#: the monitor is still falling when the median of its readings over the last
+#: :data:`SETTLED_S` lies below that of its readings this much earlier by more than its noise
+FALL_SPAN_S = 2.0
 #: the first readings after the vent whose median is the monitor's start of the fall (one
 #: noise spike among them moves no median)
 FIRST_READINGS = 3
@@ -108,6 +119,18 @@ def lsb_bar(config) -> float:
     reg = config.regulator
     return (backends.entry(config.daq.backend).capabilities.ai_lsb_V * reg.full_scale_bar
             / (reg.monitor_V_at_full_scale - reg.monitor_V_at_zero))
+
+
+def fall_bar(history: list[tuple[float, float]]) -> float:
+    """How far [bar] the median reading of ``history`` ((sample time [s], reading [bar]) over
+    up to :data:`FALL_SPAN_S` + :data:`SETTLED_S`) fell from its first :data:`SETTLED_S` to its
+    last (a noise spike moves neither median); 0 over less than twice :data:`SETTLED_S`."""
+    first_s, last_s = history[0][0], history[-1][0]
+    if last_s - first_s < 2 * SETTLED_S - 1e-9:
+        return 0.0
+    earlier = [p for t, p in history if t <= first_s + SETTLED_S + 1e-9]
+    later = [p for t, p in history if t > last_s - SETTLED_S - 1e-9]
+    return statistics.median(earlier) - statistics.median(later)
 
 
 def own_noise_bar(readings: list[float], step_bar: float) -> float:
@@ -187,7 +210,9 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     backend : mkm.bench.backend.Backend
         The open backend; read only if ``started`` (its sample clock runs).
     config : mkm.bench.config.BenchConfig
-        ``safety.vent_below_bar`` [bar] and ``safety.vent_timeout_s`` [s] bound the check.
+        ``safety.vent_below_bar`` [bar] and ``safety.vent_timeout_s`` [s] bound the check; a
+        monitor still falling at ``vent_timeout_s`` is read on while it falls, at most
+        :data:`FALLING_MAX_S` after the vent (said in :attr:`VentCheck.waited_why`).
     operator : mkm.bench.operator.Operator, optional
         With a manual regulator: vents by hand and reads the manometer.
     deadline : callable, optional
@@ -229,7 +254,9 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         zero_error_bar, declared = config.regulator.vented_reading_bar()
         zero_bar = 0.0
     step_bar = lsb_bar(config)
-    recent: list[tuple[float, float]] = []  # (sample time [s], reading [bar]) over 2 SETTLED_S
+    # (sample time [s], reading [bar]) over FALL_SPAN_S + SETTLED_S
+    recent: list[tuple[float, float]] = []
+    waited_why = ""  # why the check reads on past timeout_s
     first: list[float] = []  # the first FIRST_READINGS readings after the vent
     start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
     timeouts, blind_s = 0, 0.0  # read timeouts in a row; the time they waited, in all
@@ -279,17 +306,18 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         if not math.isfinite(pressure):  # a broken input: it verifies nothing
             return VentCheck(False, pressure, below, waited, "monitor",
                              f"the monitor reads {monitor_V!r} V, not a number")
-        recent = [(t, p) for t, p in recent if t > sample_time_s - 2 * SETTLED_S - 1e-9]
+        recent = [(t, p) for t, p in recent
+                  if t > sample_time_s - FALL_SPAN_S - SETTLED_S - 1e-9]
         recent.append((sample_time_s, pressure))
         if len(first) < FIRST_READINGS:
             first.append(pressure)
-        noise_bar = (vented_zero.noise_bar if vented_zero is not None
-                     else own_noise_bar([p for _, p in recent], step_bar))
+        noise_bar = (vented_zero.noise_bar if vented_zero is not None else own_noise_bar(
+            [p for t, p in recent if t > sample_time_s - 2 * SETTLED_S - 1e-9], step_bar))
         window = [(t, p) for t, p in recent if t > sample_time_s - SETTLED_S - 1e-9]
         readings = [p for _, p in window]
         settled = (sample_time_s - window[0][0] >= SETTLED_S - 1e-9
                    and max(readings) - min(readings) <= noise_bar)
-        if settled and pressure < below:
+        if settled and max(readings) < below:  # the whole steady window: no noise dip
             settled_bar = sum(readings) / len(readings)
             if settled_bar < zero_bar - zero_error_bar - noise_bar:
                 return VentCheck(False, pressure, below, waited, "monitor", (
@@ -302,13 +330,24 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                     f"than the zero error its configuration declares ({zero_error_bar:g} bar, "
                     f"{declared}) and its noise ({noise_bar:.3f} bar): its zero is off low, and "
                     "no tare read it vented, so its reading does not tell what the muscle "
-                    "holds; check the monitor"), noise_bar=noise_bar)
+                    "holds; check the monitor"), noise_bar=noise_bar, waited_why=waited_why)
             return VentCheck(True, pressure, below, waited, "monitor",
                              first_above_bar=statistics.median(first) - settled_bar,
-                             noise_bar=noise_bar)
+                             noise_bar=noise_bar, waited_why=waited_why)
         if waited > timeout_s:
+            fell = fall_bar(recent)
+            if fell > noise_bar and waited < FALLING_MAX_S:  # exhausting still: read on
+                if not waited_why:
+                    waited_why = (
+                        f"the monitor was still falling at safety.vent_timeout_s="
+                        f"{timeout_s:g} s ({reading_bar(fell)} bar over the last "
+                        f"{recent[-1][0] - recent[0][0]:.1f} s, more than its noise "
+                        f"{noise_bar:.3f} bar): read on while it fell, at most "
+                        f"{FALLING_MAX_S:g} s after the vent")
+                continue
             if pressure < below:  # never settled: a drift may hide
                 return VentCheck(False, pressure, below, waited, "monitor", (
                     f"the monitor read {reading_bar(pressure)} bar but did not settle within "
-                    f"{timeout_s:g} s, so a drift of its zero cannot be excluded"))
-            return VentCheck(False, pressure, below, waited, "monitor")
+                    f"{waited:.1f} s, so a drift of its zero cannot be excluded"),
+                    waited_why=waited_why)
+            return VentCheck(False, pressure, below, waited, "monitor", waited_why=waited_why)

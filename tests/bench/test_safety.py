@@ -41,6 +41,64 @@ def test_a_stuck_regulator_fails_the_run_and_asks_for_a_vent_by_hand(config, tmp
     assert json.loads(marker.read_text())["run_path"] == str(run.path)
 
 
+def _stopped_at(config, tmp_path, sample: int):
+    """A run of ``config`` on the simulator that Ctrl-C stops at ``sample``; its result and
+    backend."""
+    backend = SimBackend(config)
+    read = backend.read
+
+    def stopped(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == sample:
+            run.request_stop()
+        return block
+
+    backend.read = stopped
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET)
+    return run.execute(), backend
+
+
+def test_a_regulator_slower_than_the_vent_timeout_is_read_on_while_it_falls(config, tmp_path):
+    # A regulator of time constant 2.5 s, stopped at 2.5 bar (15 s into the step): it exhausts
+    # the muscle below 0.05 bar 2.5 ln(2.5 / 0.05) = 9.8 s after the vent, but its reading was
+    # not yet steady at safety.vent_timeout_s = 10 s: VENT BY HAND (exit 4) on a bench that
+    # vented. Still falling at the timeout, the monitor is read on while it falls.
+    c = config.replace(sequence={"pressures_bar": (2.5,)}, sim={"regulator_tau_s": 2.5})
+    result, backend = _stopped_at(c, tmp_path, 170)
+    assert result.status == "aborted" and result.exit_code == 130, result.reason
+    check = load_run(result.path).meta.vent_check
+    held = 2.5 * (1 - math.exp(-15.1 / 2.5))  # the pressure the vent found
+    assert check["verified"]
+    # steady once its fall over vent.SETTLED_S (0.5 s) is within its noise (noise_bar): at
+    # 2.5 ln(held (1 - exp(-0.5 / 2.5)) / noise) = 10.7 s, within a 0.1 s read and the noise
+    steady_s = 2.5 * math.log(held * (1 - math.exp(-0.5 / 2.5)) / check["noise_bar"])
+    assert check["waited_s"] == pytest.approx(steady_s, abs=0.3)
+    assert check["waited_s"] > c.safety.vent_timeout_s
+    assert "still falling at safety.vent_timeout_s=10 s" in check["waited_why"]
+    assert "at most 60 s after the vent" in check["waited_why"]
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_regulator_still_falling_at_the_hard_maximum_asks_for_a_vent_by_hand(config,
+                                                                              tmp_path):
+    # time constant 20 s: the 2.5 bar step ends unsettled at 22 s, near 2.5 (1 - exp(-1.1)) =
+    # 1.7 bar, and 60 s after the vent the monitor still falls (by 10 % in 2 s, more than its
+    # noise) at 1.7 exp(-3) = 0.08 bar, above 0.05 bar: the check reads on no longer
+    c = config.replace(sequence={"pressures_bar": (2.5,)}, sim={"regulator_tau_s": 20.0})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "still falling at safety.vent_timeout_s=10 s" in result.reason
+    assert "at most 60 s after the vent" in result.reason and "VENT BY HAND" in result.reason
+    run = load_run(result.path)
+    check = run.meta.vent_check
+    assert not check["verified"] and check["waited_s"] == pytest.approx(60.0, abs=0.15)
+    before = run.samples.pressure_bar[run.samples.phase != "vent"].iloc[-1]
+    # the exhaust from the reading the vent found, within the monitor's noise and ADC steps
+    assert check["pressure_bar"] == pytest.approx(before * math.exp(-check["waited_s"] / 20),
+                                                  abs=0.005)
+
+
+
 def test_the_cli_says_vent_by_hand_with_its_own_exit_status(tmp_path, mkm_cli):
     text = load_config().text.replace("monitor_noise_V = 0.001",
                                       "monitor_noise_V = 0.001\n[sim.faults]\n"
