@@ -644,7 +644,7 @@ class BenchRun:
                             "or the Task Manager, loses them)")
                 self.recorder.wait_written()
             problems.extend(self.recorder.refusals())
-            if self.recorder.stuck_reason:
+            if self.recorder.stuck_reason or self.recorder.crashed:
                 self.storage_failed = True
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
