@@ -240,6 +240,15 @@ class Regulator:
                   + parts.get("monitor_hysteresis_bar", 0.0) / 2)
         return offset, parts.get("monitor_span_fraction", 0.0)
 
+    def vented_reading_bar(self) -> tuple[float, str]:
+        """How far from 0 bar [bar] the monitor may read on a vented muscle, as declared (its
+        zero error), and the settings that declare it."""
+        parts = self.monitor_components
+        if not parts:
+            return self.monitor_accuracy_bar, "regulator.monitor_accuracy_bar"
+        return (parts.get("monitor_zero_bar", 0.0) + parts.get("monitor_hysteresis_bar", 0.0) / 2,
+                "regulator.monitor_zero_bar + monitor_hysteresis_bar / 2")
+
     def command_volts(self, pressure_bar: float) -> float:
         """AO command [V, 0-10] for ``pressure_bar``, clamped to ``[0, max_pressure_bar]``."""
         clamped = min(max(float(pressure_bar), 0.0), self.max_pressure_bar)
@@ -339,7 +348,8 @@ class Safety:
     ``regulator.max_pressure_bar`` by more than the tolerance (overshoot). The tare needs at
     least ``tare_min_samples`` finite samples, a spread below ``tare_max_std_N`` and an offset
     within ``tare_max_shift_N`` of the configured ``loadcell.offset_V``. A vent is verified: the
-    monitor must read below ``vent_below_bar`` within ``vent_timeout_s``.
+    monitor must read below ``vent_below_bar`` within ``vent_timeout_s`` (read on while it is
+    still falling then: :data:`mkm.bench.vent.FALLING_MAX_S`).
 
     Every limit is bounded by what it guards (checked with the other sections by
     :meth:`BenchConfig.check`): the tolerance by a tenth of the regulator's full scale, the
@@ -443,12 +453,7 @@ class BenchConfig:
         if reg.electronic:
             # a vent is verified by the monitor, which may read its zero error at 0 bar: a
             # limit within it fails the check of a vented muscle (VENT BY HAND, a false alarm)
-            parts = reg.monitor_components
-            zero, declared = ((reg.monitor_accuracy_bar, "regulator.monitor_accuracy_bar")
-                              if not parts else
-                              (parts.get("monitor_zero_bar", 0.0)
-                               + parts.get("monitor_hysteresis_bar", 0.0) / 2,
-                               "regulator.monitor_zero_bar + monitor_hysteresis_bar / 2"))
+            zero, declared = reg.vented_reading_bar()
             if s.vent_below_bar <= zero:
                 raise ValueError(f"safety.vent_below_bar={s.vent_below_bar:g} is invalid: a "
                                  f"vented muscle's monitor may read up to {zero:g} bar ({declared})"

@@ -106,10 +106,12 @@ class BenchOwner:
         done, taken = self._state.call(self._take, STATE_START_S)
         if not done:
             self._state.post(self._let_go)  # once it answers: the lock taken meanwhile goes
+            self._state.end()
             raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} did not "
                                     f"answer within {STATE_START_S:g} s (it hangs): nothing was "
                                     "touched")
-        if isinstance(taken, BaseException):
+        if isinstance(taken, BaseException):  # not taken: nothing for the thread to keep
+            self._state.end()
             raise taken
         return self
 
@@ -178,13 +180,18 @@ class BenchOwner:
 
     def __exit__(self, *exc) -> None:
         """Let the bench go, waiting at most :data:`STATE_WAIT_S` for the state folder: past
-        it, :attr:`problem` says so and the lock goes with this process."""
+        it, :attr:`problem` says so and the lock goes with this process. The state folder's
+        thread ends once the lock is let go, on it."""
         if self.lock is None:
+            self._state.end()
             return
         if self._hung:  # said as it was found; the lock goes once it answers
             self._state.post(self._let_go)
+            self._state.end()
             return
-        if not self._state.wait(self._state.post(self._let_go), STATE_WAIT_S):
+        ticket = self._state.post(self._let_go)
+        self._state.end()
+        if not self._state.wait(ticket, STATE_WAIT_S):
             self.problem = (f"the bench state folder {self.lock_path.parent} did not let the "
                             f"bench go within {STATE_WAIT_S:g} s (it hangs): not waited for; "
                             "its lock is released as this process ends")

@@ -164,8 +164,10 @@ def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
     ``stop_wait_s`` + :data:`mkm.bench.unvented.STATE_START_S` (a problem in ``bookkeeping``
     when not); :class:`mkm.bench.ownership.BenchBusy` when a holder did not let go."""
     state = state_dir()  # resolved now: the thread may run late, after MKM_STATE_DIR moved
-    done, answer = StateFolderThread("mkm-vent-ask").call(
-        lambda: request_stop(key, "`mkm vent`", state, stop_wait_s), stop_wait_s + STATE_START_S)
+    asking = StateFolderThread("mkm-vent-ask")
+    done, answer = asking.call(lambda: request_stop(key, "`mkm vent`", state, stop_wait_s),
+                               stop_wait_s + STATE_START_S)
+    asking.end()  # once the state folder has answered
     if not done:
         bookkeeping.append(f"the bench state folder {state} did not answer within "
                            f"{stop_wait_s + STATE_START_S:g} s (it hangs): no run holding the "

@@ -97,6 +97,8 @@ class Recorder:
         self._cond = threading.Condition()
         self._ops: collections.deque = collections.deque()  # (kind, payload), in order
         self._busy = False  # the thread is writing what it took from _ops
+        self._unsynced = False  # rows written since the last sync
+        self.crashed = ""  # why the recorder's thread failed ("" while it works)
         self._held: collections.deque = collections.deque()  # first time_s of each held block
         self._held_rows = 0
         self.rate_hz = config.daq.sample_rate_hz
@@ -134,50 +136,70 @@ class Recorder:
         """The recorder's thread: write what is queued, in order; a write the disk refuses is
         kept in ``_failures`` (its samples are kept and written again). Rows written and not
         synced are synced :data:`SYNC_EVERY_S` after the last sync even when nothing more comes
-        (an acquisition that stalls: a DAQ that hangs, a loop waiting for a device)."""
-        unsynced = False  # rows written since the last sync
-        while True:
+        (an acquisition that stalls: a DAQ that hangs, a loop waiting for a device).
+
+        Should the thread itself fail (memory exhausted, a bug outside a write), :attr:`crashed`
+        says why: the loop stops the run at its next block (:meth:`stuck`), nobody waits for
+        the thread any more, and :meth:`finish` writes what it held on the caller's thread."""
+        try:
+            while (op := self._next_op()) is not None:
+                self._do(*op)
+        except BaseException as exc:
             with self._cond:
-                while not self._ops:
-                    due_s = self._synced_at + SYNC_EVERY_S - time.monotonic()
-                    if unsynced and due_s <= 0:
-                        break
-                    self._cond.wait(due_s if unsynced else None)
-                if self._ops:
-                    kind, payload = self._ops.popleft()
-                else:
-                    kind, payload = "sync due", None
-                self._busy = True
-                if kind == "samples":  # from the queue to the rows being written
-                    self._held.popleft()
-                    self._held_rows -= len(payload)
-                    self._unwritten.extend(payload)
+                self.crashed = f"{type(exc).__name__}: {exc}"
+                self._busy = False
+                self._cond.notify_all()
+
+    def _next_op(self, wait: bool = True) -> tuple[str, object] | None:
+        """The next write, taken from the queue (its samples to the rows being written), or a
+        sync due; None at ``stop`` (or, without ``wait``, when nothing is queued)."""
+        with self._cond:
+            while not self._ops:
+                due_s = self._synced_at + SYNC_EVERY_S - time.monotonic()
+                if self._unsynced and due_s <= 0:
+                    break
+                if not wait:
+                    return None
+                self._cond.wait(due_s if self._unsynced else None)
+            if self._ops:
+                kind, payload = self._ops.popleft()
+            else:
+                kind, payload = "sync due", None
             if kind == "stop":
-                with self._cond:
-                    self._busy = False
-                    self._cond.notify_all()
-                return
+                self._cond.notify_all()
+                return None
+            self._busy = True
+            if kind == "samples":  # from the queue to the rows being written
+                self._held.popleft()
+                self._held_rows -= len(payload)
+                self._unwritten.extend(payload)
+            return kind, payload
+
+    def _do(self, kind: str, payload) -> None:
+        """One write taken by :meth:`_next_op`; what the disk refuses is kept in
+        ``_failures``."""
+        try:
             what = self._what(kind, payload)
             try:
                 self._write(kind, payload)
-                unsynced = unsynced or kind in ("samples", "step", "command")
-                if kind == "sync" or (
-                        unsynced and time.monotonic() - self._synced_at >= SYNC_EVERY_S):
+                self._unsynced = self._unsynced or kind in ("samples", "step", "command")
+                if kind == "sync" or (self._unsynced and
+                                      time.monotonic() - self._synced_at >= SYNC_EVERY_S):
                     what = "the rows' sync to the disk"
                     if kind != "sync":
                         self.writer.sync()
-                    self._synced_at, unsynced = time.monotonic(), False
+                    self._synced_at, self._unsynced = time.monotonic(), False
             except OSError as exc:
                 with self._cond:
                     self._failures.append((what, exc))
             except Exception as exc:  # a bug: said in the reason, not lost
                 with self._cond:
                     self._failures.append((what, OSError(f"{type(exc).__name__}: {exc}")))
-            finally:
-                with self._cond:
-                    self._busy = False
-                    self._done_at = time.monotonic()
-                    self._cond.notify_all()
+        finally:
+            with self._cond:
+                self._busy = False
+                self._done_at = time.monotonic()
+                self._cond.notify_all()
 
     def _write(self, kind: str, payload) -> None:
         if kind == "samples":  # the payload is in _unwritten already
@@ -272,6 +294,10 @@ class Recorder:
         with self._cond:
             held = self.held_rows
             held_s = held / self.rate_hz
+            if self.crashed:  # nothing writes them until the end: the run stops now
+                self.stuck_reason = (f"the recorder's thread failed ({self.crashed}): {held} "
+                                     "samples held in memory, written as the run ends")
+                return self.stuck_reason
             quiet = time.monotonic() - self._done_at >= DISK_QUIET_S
             if held <= HELD_ROWS_MAX and not (held_s > DISK_STUCK_S and quiet):
                 return ""
@@ -289,8 +315,9 @@ class Recorder:
     def wait_written(self, timeout_s: float | None = None) -> bool:
         """Wait until the disk has taken everything queued (at most ``timeout_s``); whether it
         has."""
-        with self._cond:
-            return self._cond.wait_for(lambda: not self._ops and not self._busy, timeout_s)
+        with self._cond:  # a thread that failed writes nothing more: not waited for
+            return self._cond.wait_for(
+                lambda: self.crashed or (not self._ops and not self._busy), timeout_s)
 
     def mark(self, status: RunStatus, reason: str, timeout_s: float | None = None) -> None:
         """Write the outcome known so far into run.json and sync the rows: the books kept before
@@ -308,9 +335,11 @@ class Recorder:
         self.wait_written()  # everything held, once the disk takes it
         self._put("stop")
         self._thread.join()
+        problems = []
+        if self.crashed:  # what it held, written here
+            problems.append(self._write_rest())
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
-        problems = []
         self.writer.release_reserve()  # a disk that filled mid-run: the room for this record
         try:  # the rows first: run.json's outcome is written once they are on disk
             self.writer.close()
@@ -331,6 +360,22 @@ class Recorder:
             self.outcome_refused = True
             problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
         return problems
+
+    def _write_rest(self) -> str:
+        """After the recorder's thread failed: write what it left queued, in order, on this
+        thread; what became of it, in words."""
+        held = self.held_rows
+        try:
+            while (op := self._next_op(wait=False)) is not None:
+                self._do(*op)
+            if self._unwritten or self._reopen:
+                self._do("last try", None)
+        except BaseException as exc:  # never raises: the outcome must still be recorded
+            return (f"the recorder's thread failed ({self.crashed}), and so did writing the "
+                    f"{self.held_rows} samples it held ({type(exc).__name__}: {exc})")
+        left = f", {len(self._unwritten)} of them could not be" if self._unwritten else ""
+        return (f"the recorder's thread failed ({self.crashed}): the {held} samples it held "
+                f"were written as the run ended{left}")
 
     def _save_retrying(self) -> None:
         """:meth:`save`, tried again while another program holds run.json open."""

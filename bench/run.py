@@ -24,8 +24,9 @@ Safety, in every exit path:
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
-  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` and stay
-  there, read from the zero the tare measured (a zero that drifted low shows as a reading
+  reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` (read on
+  while still falling, at most :data:`mkm.bench.vent.FALLING_MAX_S`) and stay there, read from
+  the zero the tare measured (a zero that drifted low shows as a reading
   settled below it), a monitor found below its command before the vent (by the pressure
   interlock, or in its last reading before a stop, another interlock or a fault) must have
   read more than that before the vent (one stuck at zero reads 0 bar whatever the muscle
@@ -424,6 +425,7 @@ class BenchRun:
             lease.started()
         except OSError as exc:  # the state folder, not the run folder: said as such
             lease.post(lease.release)  # whenever it answers: no marker is left
+            lease.end()
             self.lease = None
             raise StateFolderBroken(f"the bench marker cannot be written in the bench state "
                                     f"folder ({exc.strerror or exc}): nothing was "
@@ -531,13 +533,11 @@ class BenchRun:
         fell after the vent (a stop as a step from 0 bar begins: the regulator not yet there);
         with a pressure above the vent threshold commanded, a monitor that shows no fall after
         the vent proves nothing either (:func:`mkm.bench.vent.without_fall`)."""
-        zero = VentedZero.from_tare(self.recorder.meta.tare, self.config) \
-            if self.recorder is not None else None
         before = acq.before_vent()
         fell = check
-        if zero is not None and before is not None and \
+        if check.noise_bar is not None and before is not None and \
                 before[1] > self.config.safety.vent_below_bar:
-            fell = without_fall(check, *before, zero.noise_bar)
+            fell = without_fall(check, *before, check.noise_bar)
         unproven = acq.unproven()
         if unproven is not None and not (acq.shown_moving and fell.verified
                                          and check.first_above_bar is not None):
@@ -644,7 +644,7 @@ class BenchRun:
                             "or the Task Manager, loses them)")
                 self.recorder.wait_written()
             problems.extend(self.recorder.refusals())
-            if self.recorder.stuck_reason:
+            if self.recorder.stuck_reason or self.recorder.crashed:
                 self.storage_failed = True
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
@@ -685,6 +685,8 @@ class BenchRun:
             # a failure leaves the marker naming the run and its last command
             lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
                        0.0 if hung else STATE_WAIT_S)
+        if lease is not None:  # its thread ends after the last update (one that hangs: later)
+            lease.end()
         return status, reason
 
     def _keep_outcome(self, status: RunStatus, reason: str, unverified: bool,

@@ -109,12 +109,20 @@ STATE_WAIT_S = 2.0
 STATE_START_S = 10.0
 
 
+_END = object()  # queued by StateFolderThread.end: the thread ends there
+
+
 class StateFolderThread:
     """Updates of the bench state folder, made in order by a thread of their own.
 
     A state folder that hangs (a roaming profile on a network share) then holds that thread,
     never its caller: the acquisition loop, its interlocks and its vents, or the end of a
     command, which waits for an update (:meth:`wait`) only as long as it chooses.
+
+    The thread ends where its owner says it is done (:meth:`end`, after its last update), never
+    when idle: a bench's lock is held on it for a whole run, and filelock's locks belong to the
+    thread that took them, so the update that releases the lock runs on that thread, before it
+    ends. An update posted after the end keeps the thread (or starts another).
     """
 
     def __init__(self, name: str):
@@ -127,12 +135,21 @@ class StateFolderThread:
 
     def post(self, update: Callable[[], None]) -> int:
         """Queue ``update`` for the thread; its ticket."""
-        if self._thread is None:
-            self._thread = threading.Thread(target=self._run, name=self._name, daemon=True)
-            self._thread.start()
-        self._posted += 1
-        self._updates.put(update)
-        return self._posted
+        with self._done:  # the thread cannot end between this check and the queueing
+            if self._thread is None:
+                self._thread = threading.Thread(target=self._run, name=self._name,
+                                                daemon=True)
+                self._thread.start()
+            self._posted += 1
+            self._updates.put(update)
+            return self._posted
+
+    def end(self) -> None:
+        """The owner is done: the thread ends once the updates posted before are (a state
+        folder that hangs keeps it until it answers). Never waits."""
+        with self._done:
+            if self._thread is not None:
+                self._updates.put(_END)
 
     def wait(self, ticket: int, timeout_s: float | None) -> bool:
         """Whether the update ``ticket`` (and every one before it) is done within
@@ -169,6 +186,12 @@ class StateFolderThread:
     def _run(self) -> None:
         while True:
             update = self._updates.get()
+            if update is _END:
+                with self._done:
+                    if self._updates.empty():  # nothing posted since the end: done
+                        self._thread = None
+                        return
+                continue
             try:
                 update()
                 error = None

@@ -3,12 +3,12 @@ is vented.
 
 A vent is only a command until the monitor confirms it: a regulator that sticks keeps its
 pressure whatever it is told. :func:`verify_vent` reads the pressure monitor (electronic
-regulator) until it is below ``safety.vent_below_bar`` (:data:`BELOW_READINGS` readings in a
-row, or settled from the tare's zero: :class:`VentedZero`), for at most ``safety.vent_timeout_s``
-of sample time and wall time (``daq.read_retries`` read timeouts in a row retried, as at 0 bar
-in a run), judging only samples acquired after the vent write and only plausible ones (a
-live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: a monitor fault, never a vent,
-:meth:`mkm.bench.config.Regulator.monitor_fault`); with a manual regulator the
+regulator) until it has settled below ``safety.vent_below_bar`` (from the tare's zero,
+:class:`VentedZero`, else from the zero the configuration declares), for at most
+``safety.vent_timeout_s`` of sample time and wall time (``daq.read_retries`` read timeouts in a
+row retried, as at 0 bar in a run), judging only samples acquired after the vent write and only
+plausible ones (a live-zero monitor at 0 V, unpowered or unwired, reads -1 bar: a monitor fault,
+never a vent, :meth:`mkm.bench.config.Regulator.monitor_fault`); with a manual regulator the
 operator vents by hand and types the manometer reading, which must be below the same threshold.
 A check with a ``deadline`` (Windows ends a closed console's process within 5 s) stops at it,
 unverified, so the run can still be recorded. A monitor that already read below the threshold
@@ -52,6 +52,10 @@ class VentCheck:
     # how far [bar] the monitor's first readings after the vent lay above the reading it
     # settled at (the median of the first FIRST_READINGS); None when not judged so
     first_above_bar: float | None = None
+    # the noise [bar] a settled reading was judged by: the tare's, or the readings' own
+    noise_bar: float | None = None
+    # why the check read on past safety.vent_timeout_s ("" when it did not)
+    waited_why: str = ""
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -60,10 +64,11 @@ class VentCheck:
         if self.verified:
             return (f"vent verified: {self.how} read {self.pressure_bar:.3f} bar after "
                     f"{self.waited_s:.1f} s")
+        why = f"; {self.waited_why}" if self.waited_why else ""
         if self.problem:
-            return f"the vent could not be verified ({self.problem})"
+            return f"the vent could not be verified ({self.problem}{why})"
         return (f"the {self.how} still reads {self.pressure_bar:.3f} bar {self.waited_s:.1f} s "
-                f"after the vent, above {self.below_bar:g} bar")
+                f"after the vent, above {self.below_bar:g} bar{f' ({why[2:]})' if why else ''}")
 
 
 def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -> VentCheck:
@@ -91,15 +96,57 @@ def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -
 #: settled: a muscle exhausting through an ITV-class regulator (tau about 0.4 s) still falls by
 #: more than its noise over it until it is within that noise of its vented reading
 SETTLED_S = 0.5
+#: a monitor still falling at ``safety.vent_timeout_s`` (a regulator slower than its setting
+#: foresaw, exhausting the muscle all the same) is read on while it falls, until this long after
+#: the vent at most: from 2.5 bar, a regulator of time constant up to about 14 s (below 0.05 bar
+#: after 4 time constants); twice the longest ``vent_timeout_s`` a configuration may set
+FALLING_MAX_S = 60.0
+#: the monitor is still falling when the median of its readings over the last
+#: :data:`SETTLED_S` lies below that of its readings this much earlier by more than its noise
+FALL_SPAN_S = 2.0
 #: the first readings after the vent whose median is the monitor's start of the fall (one
 #: noise spike among them moves no median)
 FIRST_READINGS = 3
-#: readings in a row below the threshold that verify a vent where no settled reading can be
-#: judged (no tare read the monitor's zero): one noise spike verifies nothing
-BELOW_READINGS = 3
 #: readings of a vented monitor stay within this many of its standard deviations at the tare
 #: (plus two ADC steps, for a reading quieter than its quantisation) of its vented zero
 ZERO_NOISE_SIGMAS = 5.0
+#: 1.4826 median absolute deviations are one standard deviation of a normal variable
+MAD_SIGMAS = 1.4826
+
+
+def lsb_bar(config) -> float:
+    """One ADC step of the monitor's input [bar]."""
+    reg = config.regulator
+    return (backends.entry(config.daq.backend).capabilities.ai_lsb_V * reg.full_scale_bar
+            / (reg.monitor_V_at_full_scale - reg.monitor_V_at_zero))
+
+
+def fall_bar(history: list[tuple[float, float]]) -> float:
+    """How far [bar] the median reading of ``history`` ((sample time [s], reading [bar]) over
+    up to :data:`FALL_SPAN_S` + :data:`SETTLED_S`) fell from its first :data:`SETTLED_S` to its
+    last (a noise spike moves neither median); 0 over less than twice :data:`SETTLED_S`."""
+    first_s, last_s = history[0][0], history[-1][0]
+    if last_s - first_s < 2 * SETTLED_S - 1e-9:
+        return 0.0
+    earlier = [p for t, p in history if t <= first_s + SETTLED_S + 1e-9]
+    later = [p for t, p in history if t > last_s - SETTLED_S - 1e-9]
+    return statistics.median(earlier) - statistics.median(later)
+
+
+def own_noise_bar(readings: list[float], step_bar: float) -> float:
+    """How far [bar] a steady reading strays, from the readings themselves (no tare read the
+    monitor vented): :data:`ZERO_NOISE_SIGMAS` of their spread plus two ADC steps ``step_bar``.
+    The spread comes from the second differences of successive readings, whose standard
+    deviation is sqrt(6) times the readings' for white noise: a fall at a steady or slowly
+    changing rate (an exhausting muscle) adds almost nothing to them, and their median absolute
+    deviation is not moved by a noise spike (three second differences of many)."""
+    second = [a - 2 * b + c for a, b, c in zip(readings, readings[1:], readings[2:],
+                                              strict=False)]
+    if len(second) < 3:
+        return 2 * step_bar
+    centre = statistics.median(second)
+    mad = statistics.median(abs(d - centre) for d in second)
+    return ZERO_NOISE_SIGMAS * MAD_SIGMAS * mad / math.sqrt(6.0) + 2 * step_bar
 
 
 @dataclass(frozen=True)
@@ -115,29 +162,32 @@ class VentedZero:
         """The zero of a tare of this run (run.json ``tare``), or None when the tare read none."""
         if not tare or not tare.get("monitor_vented_settled"):
             return None
-        reg = config.regulator
-        lsb_bar = (backends.entry(config.daq.backend).capabilities.ai_lsb_V * reg.full_scale_bar
-                   / (reg.monitor_V_at_full_scale - reg.monitor_V_at_zero))
-        noise = ZERO_NOISE_SIGMAS * float(tare.get("monitor_vented_std_bar", 0.0)) + 2 * lsb_bar
+        noise = (ZERO_NOISE_SIGMAS * float(tare.get("monitor_vented_std_bar", 0.0))
+                 + 2 * lsb_bar(config))
         return cls(float(tare["monitor_vented_bar"]), noise)
 
 
-def without_fall(check: VentCheck, before_bar: float, commanded_bar: float,
+def without_fall(check: VentCheck, before_bar: float, commanded_bar: float, last_bar: float,
                  noise_bar: float) -> VentCheck:
     """``check`` after a run ended with ``commanded_bar`` (above the vent threshold) commanded
     and the monitor reading ``before_bar`` (the median of its last readings, one noise spike
-    moves no median), weighed by the fall it showed after the vent.
+    moves no median), ``last_bar`` the last of them, weighed by the fall it showed after the
+    vent.
 
     A monitor that reads the pressure falls after the vent: its last readings before it, or
-    its first after it (a regulator that exhausts in less than a sample), lie above the reading
-    it settles at by more than its noise ``noise_bar``. One frozen near zero shows no fall
-    (a noise spike as the run stopped made its last reading look like a pressure), so its
-    settled reading verifies nothing.
+    its first after it (a stop as a step begins, the pressure still low before the vent), lie
+    above the reading it settles at by more than its noise ``noise_bar``. One frozen near zero
+    shows no fall (a noise spike as the run stopped made its last reading look like a
+    pressure), so its settled reading verifies nothing. Nor do its first readings after the
+    vent lying above its last reading before it: an exhausting muscle does not rise, so that is
+    noise (two spikes in a row move the median of the first readings), and the fall they show
+    counts only down from ``last_bar`` (plus its noise).
     """
     if not check.verified or check.how != "monitor" or check.first_above_bar is None:
         return check
     # the check's last reading is within the noise of the one it settled at
-    fall = max(before_bar - check.pressure_bar, check.first_above_bar)
+    first_fall = min(check.first_above_bar, last_bar + noise_bar - check.pressure_bar)
+    fall = max(before_bar - check.pressure_bar, first_fall)
     if fall > noise_bar:
         return check
     return dataclasses.replace(
@@ -160,7 +210,9 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     backend : mkm.bench.backend.Backend
         The open backend; read only if ``started`` (its sample clock runs).
     config : mkm.bench.config.BenchConfig
-        ``safety.vent_below_bar`` [bar] and ``safety.vent_timeout_s`` [s] bound the check.
+        ``safety.vent_below_bar`` [bar] and ``safety.vent_timeout_s`` [s] bound the check; a
+        monitor still falling at ``vent_timeout_s`` is read on while it falls, at most
+        :data:`FALLING_MAX_S` after the vent (said in :attr:`VentCheck.waited_why`).
     operator : mkm.bench.operator.Operator, optional
         With a manual regulator: vents by hand and reads the manometer.
     deadline : callable, optional
@@ -171,10 +223,13 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         the pressure's decay after the vent is on disk); must not raise.
     vented_zero : VentedZero, optional
         The monitor's zero read by the run's tare. The reading is then taken from that zero
-        when it is below 0 bar, and judged only once it has settled (within the zero's noise
-        over :data:`SETTLED_S`): a monitor whose zero drifted low reads below the threshold
+        when it is below 0 bar. A reading is judged only once it has settled (within the
+        monitor's noise over :data:`SETTLED_S`: the zero's, else the readings' own,
+        :func:`own_noise_bar`): a monitor whose zero drifted low reads below the threshold
         while the muscle still holds pressure, and shows it only once its reading stops
-        falling, below the tare's zero. Such a reading verifies nothing.
+        falling, below the tare's zero (without one, below 0 bar by more than the zero error
+        its configuration declares, :meth:`mkm.bench.config.Regulator.vented_reading_bar`).
+        Such a reading verifies nothing.
     """
     safety = config.safety
     below, timeout_s = safety.vent_below_bar, safety.vent_timeout_s
@@ -194,9 +249,15 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     n = max(1, int(round(0.1 * rate)))
     if vented_zero is not None:  # read from the tare's zero, where it lies below 0 bar
         below = below + min(vented_zero.zero_bar, 0.0)
-    recent: list[tuple[float, float]] = []  # (sample time [s], reading [bar]) over SETTLED_S
+        zero_bar, zero_error_bar, declared = vented_zero.zero_bar, 0.0, ""
+    else:  # no tare read it: 0 bar, within the zero error its configuration declares
+        zero_error_bar, declared = config.regulator.vented_reading_bar()
+        zero_bar = 0.0
+    step_bar = lsb_bar(config)
+    # (sample time [s], reading [bar]) over FALL_SPAN_S + SETTLED_S
+    recent: list[tuple[float, float]] = []
+    waited_why = ""  # why the check reads on past timeout_s
     first: list[float] = []  # the first FIRST_READINGS readings after the vent
-    below_in_row = 0  # readings in a row below the threshold
     start, sample_time_s, pressure = time.monotonic(), 0.0, math.nan
     timeouts, blind_s = 0, 0.0  # read timeouts in a row; the time they waited, in all
     try:  # samples acquired before the vent write say nothing about the vent
@@ -242,38 +303,51 @@ def verify_vent(backend, config, operator=None, started: bool = True,
             # conversion (0 V: -1 bar) is no pressure: the last plausible reading is kept
             return VentCheck(False, pressure, below, waited, "monitor", fault)
         pressure = float(config.regulator.monitor_bar(monitor_V))
-        below_in_row = below_in_row + 1 if pressure < below else 0
-        if vented_zero is None and below_in_row >= BELOW_READINGS:
-            return VentCheck(True, pressure, below, waited, "monitor")
         if not math.isfinite(pressure):  # a broken input: it verifies nothing
             return VentCheck(False, pressure, below, waited, "monitor",
                              f"the monitor reads {monitor_V!r} V, not a number")
-        if vented_zero is not None:
-            recent = [(t, p) for t, p in recent if t > sample_time_s - SETTLED_S - 1e-9]
-            recent.append((sample_time_s, pressure))
-            if len(first) < FIRST_READINGS:
-                first.append(pressure)
-            readings = [p for _, p in recent]
-            settled = (sample_time_s - recent[0][0] >= SETTLED_S - 1e-9
-                       and max(readings) - min(readings) <= vented_zero.noise_bar)
-            if settled and pressure < below:
-                low = vented_zero.zero_bar - vented_zero.noise_bar
-                if sum(readings) / len(readings) < low:
-                    return VentCheck(False, pressure, below, waited, "monitor", (
-                        f"the monitor settled at {reading_bar(pressure)} bar, below the "
-                        f"{reading_bar(vented_zero.zero_bar)} bar it read vented at the tare by "
-                        f"more than its noise ({vented_zero.noise_bar:.3f} bar): its zero has "
-                        "drifted low, so its reading no longer tells what the muscle holds; "
-                        "check the monitor"))
-                return VentCheck(True, pressure, below, waited, "monitor", first_above_bar=(
-                    statistics.median(first) - sum(readings) / len(readings)))
+        recent = [(t, p) for t, p in recent
+                  if t > sample_time_s - FALL_SPAN_S - SETTLED_S - 1e-9]
+        recent.append((sample_time_s, pressure))
+        if len(first) < FIRST_READINGS:
+            first.append(pressure)
+        noise_bar = (vented_zero.noise_bar if vented_zero is not None else own_noise_bar(
+            [p for t, p in recent if t > sample_time_s - 2 * SETTLED_S - 1e-9], step_bar))
+        window = [(t, p) for t, p in recent if t > sample_time_s - SETTLED_S - 1e-9]
+        readings = [p for _, p in window]
+        settled = (sample_time_s - window[0][0] >= SETTLED_S - 1e-9
+                   and max(readings) - min(readings) <= noise_bar)
+        if settled and max(readings) < below:  # the whole steady window: no noise dip
+            settled_bar = sum(readings) / len(readings)
+            if settled_bar < zero_bar - zero_error_bar - noise_bar:
+                return VentCheck(False, pressure, below, waited, "monitor", (
+                    f"the monitor settled at {reading_bar(pressure)} bar, below the "
+                    f"{reading_bar(zero_bar)} bar it read vented at the tare by more than its "
+                    f"noise ({noise_bar:.3f} bar): its zero has drifted low, so its reading no "
+                    "longer tells what the muscle holds; check the monitor"
+                    if vented_zero is not None else
+                    f"the monitor settled at {reading_bar(pressure)} bar, below 0 bar by more "
+                    f"than the zero error its configuration declares ({zero_error_bar:g} bar, "
+                    f"{declared}) and its noise ({noise_bar:.3f} bar): its zero is off low, and "
+                    "no tare read it vented, so its reading does not tell what the muscle "
+                    "holds; check the monitor"), noise_bar=noise_bar, waited_why=waited_why)
+            return VentCheck(True, pressure, below, waited, "monitor",
+                             first_above_bar=statistics.median(first) - settled_bar,
+                             noise_bar=noise_bar, waited_why=waited_why)
         if waited > timeout_s:
-            if pressure < below and vented_zero is not None:  # never settled: a drift may hide
+            fell = fall_bar(recent)
+            if fell > noise_bar and waited < FALLING_MAX_S:  # exhausting still: read on
+                if not waited_why:
+                    waited_why = (
+                        f"the monitor was still falling at safety.vent_timeout_s="
+                        f"{timeout_s:g} s ({reading_bar(fell)} bar over the last "
+                        f"{recent[-1][0] - recent[0][0]:.1f} s, more than its noise "
+                        f"{noise_bar:.3f} bar): read on while it fell, at most "
+                        f"{FALLING_MAX_S:g} s after the vent")
+                continue
+            if pressure < below:  # never settled: a drift may hide
                 return VentCheck(False, pressure, below, waited, "monitor", (
                     f"the monitor read {reading_bar(pressure)} bar but did not settle within "
-                    f"{timeout_s:g} s, so a drift of its zero cannot be excluded"))
-            if pressure < below:  # below now and then, never in BELOW_READINGS in a row
-                return VentCheck(False, pressure, below, waited, "monitor", (
-                    f"the monitor read {reading_bar(pressure)} bar, but below {below:g} bar in "
-                    f"fewer than {BELOW_READINGS} readings in a row within {timeout_s:g} s"))
-            return VentCheck(False, pressure, below, waited, "monitor")
+                    f"{waited:.1f} s, so a drift of its zero cannot be excluded"),
+                    waited_why=waited_why)
+            return VentCheck(False, pressure, below, waited, "monitor", waited_why=waited_why)

@@ -487,13 +487,15 @@ class Acquisition:
             return measured, commanded
         return None
 
-    def before_vent(self) -> tuple[float, float] | None:
-        """(reading, command) [bar] as the run stopped: the median of the monitor's last
-        plausible readings (over :data:`mkm.bench.vent.SETTLED_S`; one noise spike moves no
-        median) and the command the last was acquired under; None before any."""
+    def before_vent(self) -> tuple[float, float, float] | None:
+        """(reading, command, last reading) [bar] as the run stopped: the median of the
+        monitor's last plausible readings (over :data:`mkm.bench.vent.SETTLED_S`; one noise
+        spike moves no median), the command the last was acquired under, and that last
+        reading; None before any."""
         if not self._recent_bar:
             return None
-        return statistics.median(self._recent_bar), self._recent_command_bar
+        return (statistics.median(self._recent_bar), self._recent_command_bar,
+                self._recent_bar[-1])
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its

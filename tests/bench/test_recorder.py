@@ -521,3 +521,43 @@ def test_a_marker_update_queued_behind_a_vent_is_not_a_slow_state_folder(config,
     result = acquire(config.replace(sequence={"pressures_bar": (0.5,)}), out_root=tmp_path,
                      notify=lambda m: None)
     assert result.status == "complete" and result.reason == "all 1 steps done"
+
+
+def test_a_recorder_thread_that_fails_stops_the_run_vented_and_loses_no_sample(config,
+                                                                              tmp_path,
+                                                                              monkeypatch):
+    # The recorder's thread fails outside a write (memory exhausted as it takes samples 60
+    # from the queue): the run went on without a writer, its vent went out, and its shutdown
+    # waited for the dead thread for ever ("the disk is not taking the record"), run.json
+    # running, the samples held lost to the kill that ended it. The loop now stops the run at
+    # its next block, and the shutdown writes what the thread held.
+    import threading
+
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    what = Recorder._what
+
+    def failing(kind, payload):
+        if kind == "samples" and payload[0].sample == 60:
+            raise MemoryError("injected")
+        return what(kind, payload)
+
+    monkeypatch.setattr(Recorder, "_what", staticmethod(failing))
+    backend = SimBackend(config)
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    out = []
+    runner = threading.Thread(target=lambda: out.append(run.execute()), daemon=True)
+    runner.start()
+    runner.join(60)  # a net under a broken fix: it used to wait for ever
+    assert not runner.is_alive() and out
+    (result,) = out
+    assert result.status == "failed" and result.exit_code == 2, result.reason
+    assert result.reason.startswith("the recorder's thread failed (MemoryError: injected)")
+    assert "were written as the run ended" in result.reason
+    recorded = load_run(result.path)
+    assert list(recorded.samples["sample"]) == list(range(len(recorded.samples)))  # none lost
+    assert recorded.meta.counters["samples"] == len(recorded.samples) > 61
+    assert recorded.commands["purpose"].iloc[-1] == "vent" and recorded.meta.vent_check["verified"]
+    assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented

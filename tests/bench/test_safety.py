@@ -41,6 +41,64 @@ def test_a_stuck_regulator_fails_the_run_and_asks_for_a_vent_by_hand(config, tmp
     assert json.loads(marker.read_text())["run_path"] == str(run.path)
 
 
+def _stopped_at(config, tmp_path, sample: int):
+    """A run of ``config`` on the simulator that Ctrl-C stops at ``sample``; its result and
+    backend."""
+    backend = SimBackend(config)
+    read = backend.read
+
+    def stopped(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == sample:
+            run.request_stop()
+        return block
+
+    backend.read = stopped
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET)
+    return run.execute(), backend
+
+
+def test_a_regulator_slower_than_the_vent_timeout_is_read_on_while_it_falls(config, tmp_path):
+    # A regulator of time constant 2.5 s, stopped at 2.5 bar (15 s into the step): it exhausts
+    # the muscle below 0.05 bar 2.5 ln(2.5 / 0.05) = 9.8 s after the vent, but its reading was
+    # not yet steady at safety.vent_timeout_s = 10 s: VENT BY HAND (exit 4) on a bench that
+    # vented. Still falling at the timeout, the monitor is read on while it falls.
+    c = config.replace(sequence={"pressures_bar": (2.5,)}, sim={"regulator_tau_s": 2.5})
+    result, backend = _stopped_at(c, tmp_path, 170)
+    assert result.status == "aborted" and result.exit_code == 130, result.reason
+    check = load_run(result.path).meta.vent_check
+    held = 2.5 * (1 - math.exp(-15.1 / 2.5))  # the pressure the vent found
+    assert check["verified"]
+    # steady once its fall over vent.SETTLED_S (0.5 s) is within its noise (noise_bar): at
+    # 2.5 ln(held (1 - exp(-0.5 / 2.5)) / noise) = 10.7 s, within a 0.1 s read and the noise
+    steady_s = 2.5 * math.log(held * (1 - math.exp(-0.5 / 2.5)) / check["noise_bar"])
+    assert check["waited_s"] == pytest.approx(steady_s, abs=0.3)
+    assert check["waited_s"] > c.safety.vent_timeout_s
+    assert "still falling at safety.vent_timeout_s=10 s" in check["waited_why"]
+    assert "at most 60 s after the vent" in check["waited_why"]
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_regulator_still_falling_at_the_hard_maximum_asks_for_a_vent_by_hand(config,
+                                                                              tmp_path):
+    # time constant 20 s: the 2.5 bar step ends unsettled at 22 s, near 2.5 (1 - exp(-1.1)) =
+    # 1.7 bar, and 60 s after the vent the monitor still falls (by 10 % in 2 s, more than its
+    # noise) at 1.7 exp(-3) = 0.08 bar, above 0.05 bar: the check reads on no longer
+    c = config.replace(sequence={"pressures_bar": (2.5,)}, sim={"regulator_tau_s": 20.0})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "still falling at safety.vent_timeout_s=10 s" in result.reason
+    assert "at most 60 s after the vent" in result.reason and "VENT BY HAND" in result.reason
+    run = load_run(result.path)
+    check = run.meta.vent_check
+    assert not check["verified"] and check["waited_s"] == pytest.approx(60.0, abs=0.15)
+    before = run.samples.pressure_bar[run.samples.phase != "vent"].iloc[-1]
+    # the exhaust from the reading the vent found, within the monitor's noise and ADC steps
+    assert check["pressure_bar"] == pytest.approx(before * math.exp(-check["waited_s"] / 20),
+                                                  abs=0.005)
+
+
+
 def test_the_cli_says_vent_by_hand_with_its_own_exit_status(tmp_path, mkm_cli):
     text = load_config().text.replace("monitor_noise_V = 0.001",
                                       "monitor_noise_V = 0.001\n[sim.faults]\n"
@@ -296,6 +354,47 @@ def test_a_noise_spike_as_a_frozen_monitor_stops_verifies_no_vent(config, tmp_pa
     assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
 
 
+def test_two_noise_spikes_as_the_vent_check_begins_are_no_fall(config, tmp_path):
+    # The monitor moved with the pre-conditioning cycle (to 1 bar and back), then froze at
+    # 0 bar as the 0.5 bar step began (sample 120); Ctrl-C 2.5 s into the step, before the
+    # follow interlock's 5 s. The vent check's first two readings are noise spikes (+0.3 V,
+    # 0.3 bar): their median with the third was taken for the monitor's fall after the vent,
+    # and the frozen 0 bar verified it (exit 130) with 0.11 bar in the muscle. Readings after
+    # a vent cannot start above the monitor's last reading before it: this one read 0 bar.
+    c = config.replace(sequence={"preconditioning_cycles": 1, "preconditioning_hold_s": 5.0})
+    backend = _frozen_at(SimBackend(c), 120)
+    read, after_stop = backend.read, []
+
+    def stop_then_spikes(n, timeout):
+        block = read(n, timeout)
+        if after_stop:
+            after_stop.append(block.first_index)
+            if len(after_stop) <= 3:  # the stop's block, then the vent check's first two
+                volts = block.volts.copy()
+                volts[:, 1] += 0.3  # 1 V per bar: 1-5 V over 4 bar
+                block = dataclasses.replace(block, volts=volts)
+        elif block.first_index == 145:
+            run.request_stop()
+            after_stop.append(block.first_index)
+        return block
+
+    backend.read = stop_then_spikes
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "against 0.5 bar commanded before the vent, so its reading after it proves " \
+        "nothing" in result.reason
+    run_ = load_run(result.path)
+    vent_rows = run_.samples[run_.samples.phase == "vent"]
+    assert list(vent_rows.pressure_bar[:2]) == pytest.approx([0.3, 0.3], abs=0.003)
+    check = run_.meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] == 0.5
+    # the truth: 2.5 s into the step (tau 0.4 s) the muscle held 0.5 bar; eight 0.1 s samples
+    # of exhaust as the check read the two spikes, then six steady readings (vent.SETTLED_S),
+    # leave 0.5 exp(-2) = 0.068 bar, above the 0.05 bar a verified vent claims
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-2.0), abs=2e-3)
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
@@ -333,15 +432,21 @@ def test_a_monitor_that_read_pressure_before_the_vent_verifies_it(config, tmp_pa
 
 
 def test_a_monitor_reading_below_a_zero_command_is_judged_by_its_reading(config, tmp_path):
-    # a sensor 0.08 bar low trips a 0.05 bar tolerance during the tare, 0 bar commanded: no
-    # pressure was asked for, so its reading after the vent verifies it as always (it used to
-    # be called a monitor that read nothing of a pressure, "may still hold 0 bar")
+    # a sensor 0.08 bar low trips a 0.05 bar tolerance during the tare, 0 bar commanded: it
+    # is judged by its reading, not as a monitor that read nothing of a pressure ("may still
+    # hold 0 bar"); with no tare done, that reading is 0.08 bar below the zero its
+    # configuration declares, beyond the declared 0.04 bar: the tare would have refused it
+    # (beyond vent_below_bar), and a vent it reads proves nothing (0.04 bar read with 0.12 bar
+    # held)
     c = config.replace(sequence={"tare_s": 8.0}, safety={"pressure_tolerance_bar": 0.05},
                        sim={"truth": {"monitor_offset_bar": -0.08}})
     result = acquire(c, out_root=tmp_path, **QUIET)
     assert "against 0 bar commanded for more than 5 s" in result.reason
-    assert result.status == "aborted" and result.exit_code == 1, result.reason
-    assert load_run(result.path).meta.vent_check["verified"]
+    assert "below 0 bar by more than the zero error its configuration declares" in result.reason
+    assert "read nothing" not in result.reason and "proves nothing" not in result.reason
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    check = load_run(result.path).meta.vent_check
+    assert not check["verified"] and check["unfollowed_bar"] is None
 
 
 def test_a_monitor_whose_zero_drifted_low_after_the_tare_verifies_no_vent(config, tmp_path):
@@ -378,6 +483,73 @@ def test_a_monitor_whose_zero_drifted_low_after_the_tare_verifies_no_vent(config
     held = 0.5 * math.exp(-(first + 1) * 0.1 / 0.4)  # from the 0.5 bar step, tau 0.4 s
     assert vent_rows[first].pressure_bar == pytest.approx(held - 0.09, abs=0.005)
     assert held > 0.1
+
+
+def test_mkm_vent_does_not_verify_with_a_monitor_read_low(config, monkeypatch):
+    # `mkm vent` has no tare: the check took three readings in a row below 0.05 bar as a
+    # verified vent. The muscle holds 0.5 bar and the monitor's input reads 0.09 bar low (its
+    # ground shifted): it read below 0.05 bar from 0.14 bar in the muscle, and the third
+    # reading verified the vent with 0.5 exp(-0.7/0.4) = 0.087 bar held. Without a tare its
+    # reading must settle too, and not below the zero its configuration declares by more than
+    # the declared zero error (0.04 bar) and its noise.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    class HeldAndShifted(SimBackend):
+        def start(self):
+            super().start()
+            self.bench.pressure_bar = 0.5  # left by a run: the vent exhausts it
+
+        def read(self, n_samples, timeout_s):
+            block = super().read(n_samples, timeout_s)
+            volts = block.volts.copy()
+            volts[:, 1] -= 0.09  # 1 V per bar: 1-5 V over 4 bar
+            return dataclasses.replace(block, volts=volts)
+
+    backends = []
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(HeldAndShifted(c)) or backends[0])
+    with pytest.raises(BenchError, match=r"the monitor settled at -0\.0[89]\d bar, below 0 bar "
+                                         r"by more than the zero error its configuration "
+                                         r"declares \(0\.04 bar, regulator\.monitor_accuracy_bar"
+                                         r"\) .*its zero is off low.*VENT BY HAND"):
+        procedures.vent(config)
+    # the truth: vented by now (the reading settled), but nothing read could tell it
+    assert backends[0].bench.pressure_bar < config.safety.vent_below_bar
+
+
+def test_a_run_whose_tare_read_no_zero_still_asks_for_a_fall_after_the_vent(config, tmp_path):
+    # The tare reads the monitor still falling (0.005 bar a sample: no settled zero), then the
+    # monitor freezes at 0 bar whatever the pressure; one sample of noise (+0.06 V, 0.06 bar,
+    # just above the 0.05 bar threshold) comes as Ctrl-C stops the run 2.5 s into the 0.5 bar
+    # step. Without the tare's zero no fall was asked for: the frozen 0 bar verified the vent
+    # (exit 130) with 0.11 bar in the muscle. The readings' own noise judges the fall instead.
+    backend = SimBackend(config)
+    read = backend.read
+
+    def falling_tare_frozen_then_spike(n, timeout):
+        block = read(n, timeout)
+        volts = block.volts.copy()
+        if block.first_index < 20:  # the tare's 2 s: 0.1 bar falling to 0
+            volts[:, 1] += 0.1 - 0.005 * block.first_index  # 1 V per bar: 1-5 V over 4 bar
+        else:
+            volts[:, 1] = 1.0  # frozen at 0 bar
+        if block.first_index == 45:
+            run.request_stop()
+            volts[:, 1] += 0.06
+        return dataclasses.replace(block, volts=volts)
+
+    backend.read = falling_tare_frozen_then_spike
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET)
+    result = run.execute()
+    run_ = load_run(result.path)
+    assert run_.meta.tare["monitor_vented_settled"] is False
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "with 0.5 bar commanded before the vent and did not fall after it" in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
+    assert not run_.meta.vent_check["verified"]
+    # the truth: six 0.1 s samples of exhaust (tau 0.4 s) from 0.5 bar as the check settled
+    assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-1.5), abs=1e-3)
 
 
 def test_the_vent_check_reads_from_a_zero_below_0_bar(config, tmp_path):

@@ -3,6 +3,7 @@
 import json
 import re
 import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -327,3 +328,45 @@ def test_a_kept_outcome_that_is_none_a_run_ends_with_is_ignored(tmp_path, kept):
     ((_, marker),) = find_unvented("sim-Dev1")
     assert marker.outcome is None
     assert "ended without venting; its last commanded pressure was 1 bar" in marker.describe()
+
+
+def test_the_state_folder_threads_end_with_their_owners_and_the_locks_still_exclude(
+        config, tmp_path):
+    # every BenchOwner, BenchLease and `mkm vent` asking a holder to stop started a thread that
+    # never ended (114 after two test modules); each now ends once its owner let go, the lock
+    # released on the thread that took it (filelock's locks are per thread)
+    from mkm.bench import procedures
+    from mkm.bench.ownership import BenchBusy, BenchOwner
+
+    before = set(threading.enumerate())
+    for cycle in range(50):
+        with BenchOwner("sim-Dev1", "acquire") as owner:
+            owner.stop_request()  # the run's loop polls it: a reader thread of its own
+            with pytest.raises(BenchBusy):  # held: a second owner is refused
+                BenchOwner("sim-Dev1", "tare").__enter__()
+            lease = BenchLease("sim-Dev1", tmp_path / f"run-{cycle}", "2026-12-01T10:00:00+00:00")
+            lease.started()
+            lease.command(0.5)
+            assert lease.wait(lease.post(lease.release), 5.0) and lease.error is None
+            lease.end()
+        with BenchOwner("sim-Dev1", "tare"):  # let go: taken again at once
+            pass
+    procedures.vent(config, notify=lambda m: None)  # asks a holder to stop: none
+    started, waited = set(threading.enumerate()) - before, time.monotonic() + 5.0
+    for thread in started:  # each ends once its last update is done
+        thread.join(max(waited - time.monotonic(), 0.0))
+    assert not [t.name for t in started if t.is_alive()]
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))
+
+
+def test_a_run_leaves_no_thread_behind(config, tmp_path):
+    # its bench's owner, its stop request's reader, its marker's lease and its console
+    from mkm.bench.run import acquire
+
+    before = set(threading.enumerate())
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "complete", result.reason
+    started, waited = set(threading.enumerate()) - before, time.monotonic() + 5.0
+    for thread in started:
+        thread.join(max(waited - time.monotonic(), 0.0))
+    assert not [t.name for t in started if t.is_alive()]
