@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import argparse
 
-from mkm.cli.common import argtype, derived_help, shared_help
+from mkm.cli.common import add_progress_argument, argtype, derived_help, shared_help
 from mkm.core.ranges import parse_fraction, parse_number
 from mkm.core.records import EXPORT_FORMATS
 
@@ -75,6 +75,7 @@ def register(subparsers) -> None:
                      "(default: none declared, neither can)")
     imp.add_argument("--out", default=None,
                      help="folder to put the run folders in (default: mkm-out/runs)")
+    add_progress_argument(imp)
     imp.set_defaults(func=_import)
 
     exp = subparsers.add_parser(
@@ -126,20 +127,21 @@ def _import(args) -> int:
     from mkm.bench.exchange import import_table, parse_accuracy, parse_zero
     from mkm.bench.tables import parse_assignments
     from mkm.paths import default_out
-    from mkm.progress import summary_line
+    from mkm.progress import progress_bar, summary_line
 
     lines: list[str] = []
-    runs = import_table(
-        args.table, args.out or default_out("runs"),
-        {"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0, "L0_mm": args.L0,
-         "eps": args.eps},
-        columns=parse_assignments(args.columns, "--columns"),
-        units=parse_assignments(args.units, "--units"), sheet=args.sheet,
-        tare=parse_zero(args.tare, "--tare", "N"), vented=parse_zero(args.vented, "--vented",
-                                                                       "bar"),
-        select=args.muscle, accuracy=parse_accuracy(args.accuracy),
-        force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
-        notify=lines.append)
+    with progress_bar(1, "import", not args.no_progress, unit="stage") as bar:
+        runs = import_table(
+            args.table, args.out or default_out("runs"),
+            {"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0, "L0_mm": args.L0,
+             "eps": args.eps},
+            columns=parse_assignments(args.columns, "--columns"),
+            units=parse_assignments(args.units, "--units"), sheet=args.sheet,
+            tare=parse_zero(args.tare, "--tare", "N"),
+            vented=parse_zero(args.vented, "--vented", "bar"),
+            select=args.muscle, accuracy=parse_accuracy(args.accuracy),
+            force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
+            notify=lines.append, bar=bar)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:
