@@ -169,7 +169,8 @@ def _study(args) -> int:
     config = StudyConfig.with_surrogates(args.surrogates) if args.surrogates else StudyConfig()
     path = run_study(args.out, config, cache_dir=_cache(args),
                      update_shipped=args.update_shipped, progress=not args.no_progress,
-                     workers=args.workers, scheduler=args.scheduler)
+                     workers=args.workers, scheduler=args.scheduler,
+                     notify=lambda line: summary_line("study", line))
     shipped = "; replaced mkm/data/model_errors.csv" if args.update_shipped else ""
     summary_line("study", f"done in {time.perf_counter() - start:.0f} s{shipped}")
     print(path)
