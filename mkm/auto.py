@@ -411,6 +411,8 @@ class AutoModel(ForceModel):
             pred = self._candidate(FALLBACK_SPEC).predict(*args)
             out["force_N"][fallback] = pred.force_N
             valid[fallback] = pred.valid
+            # a point the reference finds no force at has no error to bound
+            out["error_bound_pct"][fallback[~np.ravel(pred.valid)]] = np.nan
             converged[fallback] = pred.converged
             for name, column in (("limit", limit), ("failure", failure)):
                 column[fallback] = np.ravel(np.broadcast_to(pred.extras.get(name, ""),
