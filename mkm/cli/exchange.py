@@ -54,14 +54,14 @@ def register(subparsers) -> None:
     imp.add_argument("--tare", default="auto", metavar="auto|none|N",
                      help="the force's zero: a time series' mean force before its pressure "
                      "rises, a step table's force at the lowest pressure of its rising branch "
-                     "(auto; only when that pressure is 0 bar), none, or a value [N] (or with "
-                     "its unit: 0.2kgf)")
+                     "(auto, the default; only when that pressure is 0 bar), none, or a value "
+                     "[N] (or with its unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series (or a "
                      "record without its time): "
-                     "detected at its start (auto: up to a sensor's zero error; a record held "
-                     "higher is kept, pressurised), none, or a value [bar] (or with its unit: "
-                     "1013mbar)")
+                     "detected at its start (auto, the default: up to a sensor's zero error; a "
+                     "record held higher is kept, pressurised), none, or a value [bar] (or "
+                     "with its unit: 1013mbar)")
     imp.add_argument("--force-sign", type=int, default=1, metavar="SIGN",
                      action=derived_help(_force_sign_help))
     imp.add_argument("--one-step-per-row", action=derived_help(_one_step_per_row_help,

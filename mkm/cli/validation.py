@@ -63,7 +63,8 @@ def register(subparsers) -> None:
                        help="also measure the FE meshes' errors against the fine mesh on N "
                        "fresh random muscles of the practical range (mesh_errors.csv: the "
                        "bound `auto` gives a mesh at the scale of each call; --update-shipped "
-                       "replaces mkm/data/mesh_errors.csv); ~3 FE sweeps per muscle")
+                       "replaces mkm/data/mesh_errors.csv); ~3 FE sweeps per muscle (default 0: "
+                       "none)")
     study.add_argument("--mesh-seed", type=argtype(parse_seed, "--mesh-seed"),
                        help="seed of --mesh-muscles' draw (default: fresh, recorded)")
     study.add_argument("--mesh-only", action="store_true",
