@@ -127,9 +127,10 @@ def surrogate_kinds(text: str) -> tuple[str, ...]:
     kinds = tuple(k.strip() for k in text.split(",") if k.strip())
     unknown = [k for k in kinds if k not in known]
     if unknown or not kinds:
+        every = [k.name for k in kind_registry.registered()]  # a family by its pattern
         raise ValueError(f"--surrogates {text!r}: unknown kind {', '.join(unknown) or '(none)'};"
-                         f" expected all or a comma list of {', '.join(known[:4])}, "
-                         "net-LxN-activation[-standardised] (see `mkm models`)")
+                         f" expected all or a comma list of {', '.join(every)} (see `mkm "
+                         "models`)")
     return kinds
 
 

@@ -150,6 +150,15 @@ def test_surrogate_kinds_default_all_and_typos():
     assert surrogate_kinds(" physics, net-1x25-relu ") == ("physics", "net-1x25-relu")
     with pytest.raises(ValueError, match="unknown kind physcs"):
         surrogate_kinds("muscle-gp,physcs")
+    # every kind the study takes is named, from the registry: the first four were, and
+    # mlp-paper, one the study scores by default, was not
+    from mkm.surrogate.kinds import registered
+
+    with pytest.raises(ValueError) as refused:
+        surrogate_kinds("gpp")
+    for kind in registered():
+        assert kind.name in str(refused.value)
+    assert "mlp-paper" in str(refused.value)
 
 
 def test_study_cli_refuses_an_unknown_surrogate_kind(mkm_run):
