@@ -172,6 +172,10 @@ def _announce_first_training(kind: str) -> None:
                       "it", stacklevel=3)
 
 
+#: auto's tolerance when none is given: the largest |Err%| against the finest FE, a fraction
+DEFAULT_TOLERANCE = 0.02
+
+
 class AutoModel(ForceModel):
     """The cheapest model meeting ``tolerance`` at the query (``--model auto --tolerance 2%``).
 
@@ -200,7 +204,7 @@ class AutoModel(ForceModel):
 
     name = "auto"
 
-    def __init__(self, tolerance: float = 0.02, table: str | None = None,
+    def __init__(self, tolerance: float = DEFAULT_TOLERANCE, table: str | None = None,
                  per_point: bool = False, L0_mm: float | None = None,
                  theta0_deg: float | None = None, C10_MPa: float | None = None,
                  C01_MPa: float | None = None, gap_mm: float | None = None,
@@ -427,6 +431,8 @@ class AutoModel(ForceModel):
             pred = self._candidate(FALLBACK_SPEC).predict(*args)
             out["force_N"][fallback] = pred.force_N
             valid[fallback] = pred.valid
+            # a point the reference finds no force at has no error to bound
+            out["error_bound_pct"][fallback[~np.ravel(pred.valid)]] = np.nan
             converged[fallback] = pred.converged
             for name, column in (("limit", limit), ("failure", failure)):
                 column[fallback] = np.ravel(np.broadcast_to(pred.extras.get(name, ""),

@@ -107,6 +107,8 @@ class _Run:
     auto_choices: dict = field(default_factory=dict)  # tolerance -> AutoPick or None
     #: spec text -> the spec whose model answered in its place (:func:`_score`)
     in_place: dict = field(default_factory=dict)
+    #: the identify options its advice gives (:func:`_advice_options`), once read
+    advice_options: list[str] | None = None
 
     @property
     def name(self) -> str:
@@ -898,10 +900,12 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
           if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
     path, identified, muscle_runs = _advice_arguments(r, runs)
+    record = _identified_record(r.calibration)
+    fit = {**record, "options": _advice_options(r)} if record else None
     return verdict(label, r.summary, names, tolerance, choice, same,
                    fe[0] if fe else None, muscle_advice(
                        path, identified, r.calibration.path.name if r.calibration else "",
-                       muscle_runs, _identified_record(r.calibration), command_below),
+                       muscle_runs, fit, command_below),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
                    _shows_dynamics(r))
 
@@ -927,14 +931,27 @@ def _advice_arguments(r: _Run, runs: list[_Run]) -> tuple[str, list[dict], list[
             [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)])
 
 
+def _advice_options(r: _Run) -> list[str]:
+    """The options the calibration's identification was asked with, for identifying it again
+    with ``r`` among its runs: a group none of those runs can show (friction and creep of
+    tables with one branch and no times) is not advised, as identify would not fit it."""
+    if r.advice_options is None:
+        from mkm.identify.procedure import options_for_runs
+
+        options = (_identified_record(r.calibration) or {}).get("options") or []
+        paths = [x["path"] for x in _identified_runs(r.calibration) if "path" in x]
+        r.advice_options = (options_for_runs(options, list(dict.fromkeys(
+            [*paths, str(r.run.path)]))) if options and paths else list(options))
+    return r.advice_options
+
+
 def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> dict[int, str]:
     """The identify command each run's verdict suggests (run number -> command) where several
     verdicts suggest the same one: said once (:func:`_advice_lines`), it keeps the first screen
     for the verdicts rather than the same run paths again and again."""
     commands = {}
     for r in runs:
-        command = advice_command(*_advice_arguments(r, runs),
-                                 (_identified_record(r.calibration) or {}).get("options", ()))
+        command = advice_command(*_advice_arguments(r, runs), _advice_options(r))
         if command and gives_advice(r.summary, names, tolerance,
                                     *_auto_pick(r, names, tolerance)):
             commands[r.k] = command

@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
+from mkm.auto import DEFAULT_TOLERANCE, MODEL_ERRORS_FILE, read_model_errors
 from mkm.core.records import provenance, save_figure, write_atomic, write_json_atomic
 from mkm.fem import ladder
 from mkm.fem.interface import ForceModel, Prediction
@@ -127,9 +127,10 @@ def surrogate_kinds(text: str) -> tuple[str, ...]:
     kinds = tuple(k.strip() for k in text.split(",") if k.strip())
     unknown = [k for k in kinds if k not in known]
     if unknown or not kinds:
+        every = [k.name for k in kind_registry.registered()]  # a family by its pattern
         raise ValueError(f"--surrogates {text!r}: unknown kind {', '.join(unknown) or '(none)'};"
-                         f" expected all or a comma list of {', '.join(known[:4])}, "
-                         "net-LxN-activation[-standardised] (see `mkm models`)")
+                         f" expected all or a comma list of {', '.join(every)} (see `mkm "
+                         "models`)")
     return kinds
 
 
@@ -388,13 +389,14 @@ def solve_fe_sweeps(config: StudyConfig, predictors: list[Predictor],
 def run_study(out_dir=None, config: StudyConfig | None = None,
               cache_dir: Path | str | None = DEFAULT_CACHE_DIR, update_shipped: bool = False,
               progress: bool = False, workers: int | None = None,
-              scheduler: str | None = None) -> Path:
+              scheduler: str | None = None, notify=lambda line: None) -> Path:
     """Run the study; write figures, CSVs, ``study.html`` and the error table for ``auto``
     (``model_errors.csv`` with its ``.json`` sidecar) into ``out_dir`` (default
     ``mkm-out/study``) and nowhere else, unless ``update_shipped`` also replaces the shipped
     table :data:`mkm.auto.MODEL_ERRORS_FILE`. Returns the HTML path. The FE sweeps run on
     ``workers`` local processes or the Dask cluster at ``scheduler`` (:func:`solve_fe_sweeps`;
-    with a cache only: without one, each is solved where it is used)."""
+    with a cache only: without one, each is solved where it is used). ``notify`` receives the
+    study's verdict, the page's first lines (:func:`verdict_lines`)."""
     start = time.perf_counter()
     config = config or StudyConfig()
     out = Path(out_dir) if out_dir is not None else default_out("study")
@@ -465,7 +467,23 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
     path = out / "study.html"
     path.write_text(html_page("Speed against accuracy, and where methods fail", body),
                     encoding="utf-8")
+    for line in verdict_lines(summary, config.reference):
+        notify(line)
     return path
+
+
+def verdict_lines(summary: pd.DataFrame, reference: str,
+                  tolerance: float = DEFAULT_TOLERANCE) -> list[str]:
+    """What the study tells a user first: the fastest predictor within ``tolerance`` (auto's
+    default) of the reference on every study muscle, valid at every point, and the Pareto
+    front."""
+    within = summary[(summary["valid_share"] >= 1.0)
+                     & (summary["max_abs_err_pct"] <= 100 * tolerance)]
+    best = within.sort_values("seconds_per_point").iloc[0]
+    return [f"the fastest predictor within {100 * tolerance:g} % of {reference} on every study "
+            f"muscle: {best['predictor']} ({best['seconds_per_point']:.2g} s per force, "
+            f"largest |Err%| {best['max_abs_err_pct']:.3g} %)",
+            f"Pareto front (fastest first): {pareto_text(summary)}"]
 
 
 def pareto_text(summary: pd.DataFrame) -> str:

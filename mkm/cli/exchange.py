@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import argparse
 
-from mkm.cli.common import argtype, derived_help, shared_help
+from mkm.cli.common import add_progress_argument, argtype, derived_help, shared_help
 from mkm.core.ranges import parse_fraction, parse_number
 from mkm.core.records import EXPORT_FORMATS
 
@@ -60,9 +60,9 @@ def register(subparsers) -> None:
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series (or a "
                      "record without its time): "
-                     "detected at its start (auto: up to a sensor's zero error; a record held "
-                     "higher is kept, pressurised), none, or a value [bar] (or with its unit: "
-                     "1013mbar)")
+                     "detected at its start (auto, the default: up to a sensor's zero error; a "
+                     "record held higher is kept, pressurised), none, or a value [bar] (or "
+                     "with its unit: 1013mbar)")
     imp.add_argument("--force-sign", type=int, default=1, metavar="SIGN",
                      action=derived_help(_force_sign_help))
     imp.add_argument("--one-step-per-row", action=derived_help(_one_step_per_row_help,
@@ -82,6 +82,7 @@ def register(subparsers) -> None:
                      "(default: none declared, neither can)")
     imp.add_argument("--out", default=None,
                      help="folder to put the run folders in (default: mkm-out/runs)")
+    add_progress_argument(imp)
     imp.set_defaults(func=_import)
 
     exp = subparsers.add_parser(
@@ -133,20 +134,21 @@ def _import(args) -> int:
     from mkm.bench.exchange import import_table, parse_accuracy, parse_zero
     from mkm.bench.tables import parse_assignments
     from mkm.paths import default_out
-    from mkm.progress import summary_line
+    from mkm.progress import progress_bar, summary_line
 
     lines: list[str] = []
-    runs = import_table(
-        args.table, args.out or default_out("runs"),
-        {"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0, "L0_mm": args.L0,
-         "eps": args.eps},
-        columns=parse_assignments(args.columns, "--columns"),
-        units=parse_assignments(args.units, "--units"), sheet=args.sheet,
-        tare=parse_zero(args.tare, "--tare", "N"), vented=parse_zero(args.vented, "--vented",
-                                                                       "bar"),
-        select=args.muscle, accuracy=parse_accuracy(args.accuracy),
-        force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
-        join=args.join_by_time, notify=lines.append)
+    with progress_bar(1, "import", not args.no_progress, unit="stage") as bar:
+        runs = import_table(
+            args.table, args.out or default_out("runs"),
+            {"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0, "L0_mm": args.L0,
+             "eps": args.eps},
+            columns=parse_assignments(args.columns, "--columns"),
+            units=parse_assignments(args.units, "--units"), sheet=args.sheet,
+            tare=parse_zero(args.tare, "--tare", "N"),
+            vented=parse_zero(args.vented, "--vented", "bar"),
+            select=args.muscle, accuracy=parse_accuracy(args.accuracy),
+            force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
+            join=args.join_by_time, notify=lines.append, bar=bar)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

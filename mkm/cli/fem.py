@@ -89,7 +89,8 @@ def register(subparsers) -> None:
         epilog="example: mkm fem dataset --grid paper --model thickwall --out "
         "mkm-out/dataset/thickwall.csv")
     data.add_argument("--grid", default="paper",
-                      help="'paper' (Table 1 of the paper, 162 points) or a grid TOML file")
+                      help="'paper' (Table 1 of the paper, 162 points) or a grid TOML file "
+                      "(default: %(default)s)")
     data.add_argument("--model", default="axisym", help=f"one of {', '.join(static_names())} "
                       "(default: %(default)s)")
     data.add_argument("--mesh", help="mesh level of FE models (default: the model's)")

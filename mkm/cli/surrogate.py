@@ -49,7 +49,8 @@ def register(subparsers) -> None:
                       help="folder (default %(default)s)")
     grid.add_argument("--jobs", type=int, default=2, help="parallel workers (default 2)")
     grid.add_argument("--variants", default="paper,standardised",
-                      help="comma list of paper (response in N, as fitrnet) and standardised")
+                      help="comma list of paper (response in N, as fitrnet) and standardised "
+                      "(default: both)")
     grid.add_argument("--nets", help="comma list of Table 2 numbers 1-27 (default: all 27)")
     grid.set_defaults(func=_grid)
 
@@ -61,7 +62,8 @@ def register(subparsers) -> None:
         "kinds: " + "; ".join(kinds.describe_each()) + ".",
         epilog="example: mkm surrogate train --kind gp --out mkm-out/models/gp")
     _dataset_argument(train)
-    train.add_argument("--kind", default="best", help=kinds.describe())
+    train.add_argument("--kind", default="best",
+                       help=f"{kinds.describe()} (default: %(default)s)")
     train.add_argument("--splits", type=int, default=10,
                        help="muscle-held-out splits for the metrics (default 10; 0: none)")
     train.add_argument("--out", help="model folder (default mkm-out/models/<kind>)")
@@ -157,8 +159,9 @@ def register(subparsers) -> None:
     design.add_argument("--held-out", action="store_true",
                         help="with --random-seeds --update-shipped: write the held-out set")
     design.add_argument("--range", choices=tuple(kinds.RANGES), default="box",
-                        help="practical: --muscles fresh random muscles of the practical range "
-                        "(seed --seed; sweeps 0-8 bar) instead of the box's design")
+                        help="box: the space-filling design over the box (default); practical: "
+                        "--muscles fresh random muscles of the practical range (seed --seed; "
+                        "sweeps 0-8 bar) instead")
     design.set_defaults(func=_design, written_files={"out": ".csv"})
 
     evaluate = sub.add_parser(

@@ -63,7 +63,8 @@ def register(subparsers) -> None:
                        help="also measure the FE meshes' errors against the fine mesh on N "
                        "fresh random muscles of the practical range (mesh_errors.csv: the "
                        "bound `auto` gives a mesh at the scale of each call; --update-shipped "
-                       "replaces mkm/data/mesh_errors.csv); ~3 FE sweeps per muscle")
+                       "replaces mkm/data/mesh_errors.csv); ~3 FE sweeps per muscle (default 0: "
+                       "none)")
     study.add_argument("--mesh-seed", type=argtype(parse_seed, "--mesh-seed"),
                        help="seed of --mesh-muscles' draw (default: fresh, recorded)")
     study.add_argument("--mesh-only", action="store_true",
@@ -169,7 +170,8 @@ def _study(args) -> int:
     config = StudyConfig.with_surrogates(args.surrogates) if args.surrogates else StudyConfig()
     path = run_study(args.out, config, cache_dir=_cache(args),
                      update_shipped=args.update_shipped, progress=not args.no_progress,
-                     workers=args.workers, scheduler=args.scheduler)
+                     workers=args.workers, scheduler=args.scheduler,
+                     notify=lambda line: summary_line("study", line))
     shipped = "; replaced mkm/data/model_errors.csv" if args.update_shipped else ""
     summary_line("study", f"done in {time.perf_counter() - start:.0f} s{shipped}")
     print(path)

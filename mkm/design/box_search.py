@@ -135,6 +135,9 @@ class Search:
     box_origin: dict = field(default_factory=dict)
     #: the radial gap between tube and braid of the muscles as built [mm] (0: none)
     gap_mm: float = 0.0
+    #: the pressures the searching model answers for [bar]: the surrogate's training box, or
+    #: the FE search's
+    pressure_span_bar: tuple = (0.0, FE_SEARCH_MAX_PRESSURE_BAR)
 
     @property
     def feasible(self) -> pd.DataFrame:
@@ -144,6 +147,19 @@ class Search:
     def box(self) -> dict:
         """The searched ranges of :data:`BOX_KEYS`, ``{key: [low, high]}``."""
         return {k: list(self.constraints[k]) for k in BOX_KEYS}
+
+    def edges(self, row) -> list[str]:
+        """What of a design ``row`` and its requirements sits on an end of what was searched:
+        the box and the rubbers (:func:`box_edges`), and a requirement's pressure at the top
+        of the searching model's (not the practical range's, past which none searches)."""
+        low, high = self.pressure_span_bar
+        tol = 1e-6 * (high - low)
+        return box_edges(row, self.constraints, self.calibration) + [
+            f"P = {req.pressure_bar:g} bar (requirement {k}; the upper end of the "
+            f"{self.searcher}'s {span_text(low, high)} bar)"
+            for k, req in enumerate(self.requirements, start=1)
+            if abs(req.pressure_bar - high) <= tol
+            and abs(high - PRACTICAL_RANGE.pressure_bar[1]) > tol]
 
     def box_note(self) -> str:
         """The searched D0 x t0 box where it is not the surrogate's training box (and
@@ -329,7 +345,8 @@ def search(requirements, constraints: Constraints | dict | None = None,
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
                     fe_search, spec.text, searcher_note, calibration, surrogate_box, box_origin,
-                    gap)
+                    gap, (0.0, FE_SEARCH_MAX_PRESSURE_BAR) if fe_search else
+                    tuple(float(v) for v in domain.pressure_bar))
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
@@ -504,11 +521,12 @@ def box_text(box: dict) -> str:
                       for k, v in box.items())
 
 
-def box_edges(row, box: dict) -> list[str]:
+def box_edges(row, box: dict, calibration: Calibration | None = None) -> list[str]:
     """The searched ranges of ``box`` (D0, t0, L0, theta0; a fixed value is no range) whose
-    end a design ``row`` sits on, as ``D0 = 30 mm (the lower end of 30:50)``: there a larger
-    box might hold a better design. An end at the practical range's limit is none: the search
-    refuses a box beyond it."""
+    end a design ``row`` sits on, as ``D0 = 30 mm (the lower end of 30:50)``, and its rubber
+    where several were searched and it is the softest or the stiffest of them (by C10; the
+    ``calibrated`` one is ``calibration``'s): there a larger box might hold a better design.
+    An end at the practical range's limit is none: the search refuses a box beyond it."""
     edges = []
     for key, name in BOX_NAMES.items():
         low, high = box.get(key, (0.0, 0.0))
@@ -521,6 +539,16 @@ def box_edges(row, box: dict) -> list[str]:
             tol = 1e-6 * (high - low)  # the grids hold both ends exactly
             if abs(at - bound) <= tol and abs(bound - limit) > tol:
                 edges.append(f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})")
+    rubbers = list(box.get("rubber", []))
+    C10 = {r: rubber_of(r, calibration).C10_MPa for r in rubbers}
+    if len(set(C10.values())) > 1 and "rubber" in row:
+        at = C10[str(row["rubber"])]
+        end = ("softest" if at == min(C10.values()) else
+               "stiffest" if at == max(C10.values()) else "")
+        if end:
+            searched = ", ".join(f"{r} {C10[r]:.4g}" for r in rubbers)
+            edges.append(f"rubber = {row['rubber']} (C10 {at:.4g} MPa, the {end} of those "
+                         f"searched: {searched} MPa)")
     return edges
 
 
@@ -591,7 +619,7 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force"))
     edge = ""
-    if edges := box_edges(closest, result.constraints):  # the box, not the physics, may be short
+    if edges := result.edges(closest):  # the box, not the physics, may be short
         ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
         edge = (f"; it sits on the edge of the search box {box_text(ranges)}: "
                 f"{', '.join(edges)}; a larger box might hold a design that meets them")

@@ -15,7 +15,6 @@ from mkm.design.box_search import (
     SEEDS,
     T0_STEP_MM,
     Search,
-    box_edges,
     box_text,
     geometry_text,
     outside_practical_range,
@@ -92,7 +91,7 @@ class DesignResult:
     def notes(self) -> list[str]:
         """What a user must know of the box searched, one line each: the box when it is not
         the surrogate's (:meth:`Search.box_note`), the chosen design on an end of a
-        searched range (:func:`~mkm.design.box_search.box_edges`), where a larger box might hold
+        searched range (:meth:`~mkm.design.box_search.Search.edges`), where a larger box might hold
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
         required force (the design then is larger than the requirement needs), a chosen
         design outside the practical range, and one that meets a requirement by less than the
@@ -112,7 +111,7 @@ class DesignResult:
             notes.append(f"the chosen design lies outside the practical range every model is "
                          f"validated over ({'; '.join(outside)}): its FE verification is an "
                          "extrapolation (`mkm models` states the range)")
-        if best is not None and (edges := box_edges(best, s.constraints)):
+        if best is not None and (edges := s.edges(best)):
             ranges = {k: v for k, v in s.constraints.items()
                       if k in BOX_NAMES and v[1] > v[0]}
             notes.append(f"the chosen design sits on the edge of the search box "
@@ -291,7 +290,7 @@ def design_record(result: DesignResult) -> dict:
             # the searched ranges the chosen design sits on an end of (a larger box might
             # hold a better one); empty when none or nothing is confirmed
             "chosen_on_box_edge": ([] if result.chosen is None
-                                   else box_edges(result.chosen, s.constraints)),
+                                   else s.edges(result.chosen)),
             # the lines the command prints besides its summary (the box, the edge)
             "notes": result.notes(),
             # the chosen design as the muscle every other command reads (null: none confirmed)

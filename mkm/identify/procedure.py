@@ -168,6 +168,22 @@ def command_options(groups, model: str, search: str, braid: str | None) -> list[
     return options
 
 
+def options_for_runs(options, run_dirs) -> list[str]:
+    """``options`` (:func:`command_options`) for an identification of ``run_dirs``: its
+    ``--params`` narrowed to the groups these runs can tell (:func:`supported_groups`), so a
+    command advised with them fits what it names. Unchanged where the runs cannot be read or
+    tell nothing asked: identify then says why itself."""
+    options = list(options)
+    if "--params" not in options:
+        return options
+    at = options.index("--params") + 1
+    try:
+        groups, _ = supported_groups(fitting.parse_groups(options[at]), load_runs(run_dirs))
+    except (OSError, ValueError):
+        return options
+    return [*options[:at], ",".join(groups), *options[at + 1:]]
+
+
 def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
     """The groups the runs can tell, and a note for each left out: friction needs a rising and
     a falling branch, creep holds of known duration (:attr:`RunData.timed`)."""

@@ -55,6 +55,39 @@ def test_a_hand_made_table_is_imported(suffix, tmp_path, capsys):
     assert run.steps["direction"].tolist() == frame["sweep"].tolist()
 
 
+def test_an_import_shows_its_stages_on_a_bar(tmp_path, monkeypatch):
+    """A record of 600,000 rows takes half a minute to import, which showed nothing: on a
+    terminal a bar over its stages, each named as it starts, as the other long commands show
+    one; --no-progress none; the run folders' paths alone on stdout."""
+    import io
+    import sys
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    table = tmp_path / "lab.csv"
+    _table().to_csv(table, index=False)
+    argv = ["import", str(table), *MUSCLE, "--columns",
+            "pressure=P [bar],force=Kraft N,direction=sweep"]
+    for off, out in ((False, "runs"), (True, "quiet")):
+        stderr, stdout = Terminal(), io.StringIO()
+        monkeypatch.setattr(sys, "stderr", stderr)
+        monkeypatch.setattr(sys, "stdout", stdout)
+        assert main([*argv, "--out", str(tmp_path / out)] + ["--no-progress"] * off) == 0
+        frames = stderr.getvalue()
+        shown = [stage for stage in ("reading lab.csv", "recognising lab.csv",
+                                     "finding the steps of lab.csv",
+                                     "writing the run folder of lab.csv") if stage in frames]
+        assert shown == ([] if off else ["reading lab.csv", "recognising lab.csv",
+                                         "finding the steps of lab.csv",
+                                         "writing the run folder of lab.csv"])
+        # the total grown as the stages become known: the file, its table, a run's steps and
+        # its folder
+        assert ("/4 [" in frames) != off
+        assert stdout.getvalue().strip() == str(next((tmp_path / out).iterdir()))
+
+
 def test_an_imported_table_reaches_the_report(tmp_path, capsys):
     table = tmp_path / "lab.csv"
     frame = _table()

@@ -529,6 +529,8 @@ def test_past_the_braid_lock_auto_says_the_braid_locks_as_its_fallback_does(tabl
     assert set(pred.extras["model_used"]) == {"axisym-fine"}
     assert not pred.converged.any() and np.isnan(pred.force_N).all()
     assert classify(pred).tolist() == [BRAID_LOCKS] * P.size
+    # no force, no bound: it read 0 %, as if the reference had answered exactly
+    assert np.isnan(pred.extras["error_bound_pct"]).all()
 
 
 def test_a_fallback_that_does_not_converge_names_why(table_path):

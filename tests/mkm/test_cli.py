@@ -480,6 +480,30 @@ def test_every_help_example_parses():
         assert callable(args.func)
 
 
+def test_every_option_with_a_default_says_it_in_its_help():
+    """mkm surrogate train --kind, fem dataset --grid, import --tare and five more took a
+    default their help did not state: a newcomer reading --help could not tell what happens
+    without them. An option that appends (--require) starts empty, a flag is off."""
+    import argparse
+
+    from mkm.cli import build_parser
+
+    silent = []
+
+    def walk(parser, name):
+        for action in parser._actions:
+            if isinstance(action, argparse._SubParsersAction):
+                for sub, subparser in action.choices.items():
+                    walk(subparser, f"{name} {sub}")
+            elif (action.option_strings and action.default not in (None, argparse.SUPPRESS)
+                  and action.nargs != 0 and not isinstance(action, argparse._AppendAction)
+                  and "default" not in parser._get_formatter()._expand_help(action)):
+                silent.append(f"{name} {action.option_strings[0]}")
+
+    walk(build_parser(), "mkm")
+    assert silent == []
+
+
 def test_identify_help_names_every_parameter_group_it_fits():
     """``--params``' help lists each group of the fit's registry (``fitting.GROUPS``), so a
     group added there cannot be missing from the help (the CLI does not import the fit)."""

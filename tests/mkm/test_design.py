@@ -455,6 +455,39 @@ def test_a_design_on_the_edge_of_the_search_box_is_named():
     assert box_edges({"D0_mm": 30.05, "t0_mm": 3.99, "L0_mm": 282.0}, box) == []
 
 
+def test_a_pressure_or_rubber_at_an_end_of_what_was_searched_is_named(tmp_path):
+    """The edge note named D0, t0, L0 and theta0 only: a requirement at 2.5 bar, the top of
+    the default surrogate's pressures, and the softest of the rubbers searched are ends of what
+    was searched too, each named with its bound."""
+    from mkm.fem.calibration import Calibration
+    from mkm.fem.materials import SILASTIC_S
+
+    found = search([Requirement(100.0, 2.5, 0.10)])
+    best = found.feasible.iloc[0]
+    assert found.edges(best)[-1] == ("P = 2.5 bar (requirement 1; the upper end of the "
+                                     "surrogate's 0:2.5 bar)")
+    # 2 bar is inside the surrogate's pressures; 8 bar, the practical range's top, is past
+    # any box (as for the geometry)
+    assert not any(e.startswith("P =") for e in search(
+        [Requirement(100.0, 2.0, 0.10)]).edges(best))
+    at_top = replace(found, requirements=[Requirement(100.0, 8.0, 0.10)],
+                     pressure_span_bar=(0.0, 8.0))
+    assert not any(e.startswith("P =") for e in at_top.edges(best))
+    # a rubber three times as stiff as Silastic S identified: Silastic S is the softer end
+    stiff = Calibration(tmp_path / "calibration.json", {"axisym": {
+        "theta0_deg": 33.0, "C10_MPa": 3 * SILASTIC_S.C10_MPa,
+        "C01_MPa": 3 * SILASTIC_S.C01_MPa}})
+    box = {"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0], "rubber": ["calibrated", "silastic_s"]}
+    row = {"D0_mm": 40.0, "t0_mm": 3.0, "rubber": "silastic_s"}
+    assert box_edges(row, box, stiff) == [
+        "rubber = silastic_s (C10 0.0694 MPa, the softest of those searched: calibrated "
+        "0.2082, silastic_s 0.0694 MPa)"]
+    assert box_edges({**row, "rubber": "calibrated"}, box, stiff)[0].startswith(
+        "rubber = calibrated (C10 0.2082 MPa, the stiffest of those searched")
+    # one rubber searched is no range
+    assert box_edges(row, {**box, "rubber": ["silastic_s"]}, stiff) == []
+
+
 def test_the_chosen_muscle_has_an_id_a_bench_config_takes():
     """designs.json's chosen_muscle is read as a config's [muscle]: its id names the design's
     geometry (an empty id is refused there, and names no run folder)."""

@@ -574,6 +574,45 @@ def test_the_identify_advice_of_several_runs_is_said_once_on_the_first_screen(tm
         "mkm", "identify", *paths]
 
 
+def test_the_identify_advice_for_tables_names_only_what_tables_can_identify(tmp_path):
+    """The published DMSP-20 identified on its eps 0 and 0.098 lengths with --params
+    theta0,rubber,friction,creep: tables of one rising value per pressure and no times show
+    neither friction nor creep, and identify fits neither. The advice to identify again with
+    another length repeated them (was: --params "theta0,rubber,friction,creep", which identify
+    then drops with two notes); it names what identify fits from those runs."""
+    import shlex
+
+    from mkm.bench.exchange import import_table
+    from mkm.fem.calibration import Calibration
+    from mkm.identify.procedure import identify, load_runs, supported_groups
+    from mkm.paths import published_table
+
+    imported = import_table(published_table("martens_boblan_2017_forcemaps.csv"),
+                            tmp_path / "runs", {"id": "dmsp-20", "D0_mm": 20.0, "t0_mm": 1.8,
+                                                "L0_mm": None, "eps": None},
+                            select="Festo DMSP-20-300")
+    fitted, other = [imported[0].path, imported[2].path], imported[3].path  # eps 0, 0.098; 0.155
+    result = identify(fitted, params="theta0,rubber,friction,creep", model="thickwall",
+                      search="model", cache_dir=None)
+    # as if the FE model had confirmed it: the report's FE distance then carries the advice
+    result.model = "axisym:mesh=coarse"
+    result.options = ["--params", "theta0,rubber,friction,creep", "--model",
+                      "axisym:mesh=coarse"]
+    result.write(tmp_path / "id")
+    said = []
+    build_report([other], parse_models("eq2,axisym:mesh=coarse,surrogate:kind=muscle-gp-range"),
+                 out_dir=tmp_path / "r", cache_dir=None, tolerance=0.02, surrogate_section=False,
+                 calibration=Calibration.load(tmp_path / "id" / "calibration.json"),
+                 notify=said.append)
+    (advice,) = [line for line in said if "`mkm identify" in line]
+    command = shlex.split(advice.split("`")[1])
+    assert command == ["mkm", "identify", *map(str, fitted), str(other), "--params",
+                       "theta0,rubber", "--model", "axisym:mesh=coarse"]
+    # what identify itself fits from those runs, without a note of a group left out
+    assert supported_groups(("theta0", "rubber"), load_runs(command[2:5])) == (
+        ("theta0", "rubber"), [])
+
+
 def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument():
     """The ``mkm identify RUN`` a verdict suggests can be copied into cmd, PowerShell or bash
     (was: ``mkm identify C:\\Users\\Lab PC\\...``, two arguments)."""

@@ -37,9 +37,29 @@ TINY = StudyConfig(
 def study(tmp_path_factory):
     out = tmp_path_factory.mktemp("study")
     shipped = MODEL_ERRORS_FILE.read_bytes()
-    html = run_study(out / "report", TINY, cache_dir=out / "cache")
+    said = []
+    html = run_study(out / "report", TINY, cache_dir=out / "cache", notify=said.append)
     assert MODEL_ERRORS_FILE.read_bytes() == shipped  # no --update-shipped: left alone
+    (out / "said.txt").write_text("\n".join(said), encoding="utf-8")
     return out, html
+
+
+def test_the_study_says_first_which_predictor_to_use(study):
+    """mkm study said only 'done in 88 s' and the page's path: its verdict, the fastest
+    predictor within auto's default 2 % of the reference at every study muscle and point, and
+    the Pareto front, is now its first screen too (the command prints what ``notify`` gets)."""
+    out, _ = study
+    said = (out / "said.txt").read_text(encoding="utf-8").splitlines()
+    summary = pd.read_csv(out / "report" / "speed_accuracy.csv")
+    within = summary[(summary["valid_share"] >= 1) & (summary["max_abs_err_pct"] <= 2.0)]
+    best = within.sort_values("seconds_per_point").iloc[0]
+    assert said[0] == (f"the fastest predictor within 2 % of axisym-coarse on every study "
+                       f"muscle: {best['predictor']} ({best['seconds_per_point']:.2g} s per "
+                       f"force, largest |Err%| {best['max_abs_err_pct']:.3g} %)")
+    # thick-wall and Equation 2 are tens of % off the FE at muscle I: the reference alone is
+    # within
+    assert best["predictor"] == "axisym-coarse"
+    assert said[1].startswith("Pareto front (fastest first): ") and len(said) == 2
 
 
 def test_study_writes_its_figures_tables_and_page(study):
@@ -130,6 +150,15 @@ def test_surrogate_kinds_default_all_and_typos():
     assert surrogate_kinds(" physics, net-1x25-relu ") == ("physics", "net-1x25-relu")
     with pytest.raises(ValueError, match="unknown kind physcs"):
         surrogate_kinds("muscle-gp,physcs")
+    # every kind the study takes is named, from the registry: the first four were, and
+    # mlp-paper, one the study scores by default, was not
+    from mkm.surrogate.kinds import registered
+
+    with pytest.raises(ValueError) as refused:
+        surrogate_kinds("gpp")
+    for kind in registered():
+        assert kind.name in str(refused.value)
+    assert "mlp-paper" in str(refused.value)
 
 
 def test_study_cli_refuses_an_unknown_surrogate_kind(mkm_run):
