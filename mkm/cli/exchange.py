@@ -55,8 +55,9 @@ def register(subparsers) -> None:
                      help="the force's zero: a time series' mean force before its pressure "
                      "rises (or over the vented rest that ends it, where the logging began as "
                      "the pressure rose), a step table's force at the lowest pressure of its "
-                     "rising branch (auto; only when that pressure is 0 bar, else at the 0 bar "
-                     "rows that end a sweep), none, or a value [N] (or with its unit: 0.2kgf)")
+                     "rising branch (auto, the default; only when that pressure is 0 bar, else "
+                     "at the 0 bar rows that end a sweep), none, or a value [N] (or with its "
+                     "unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series (or a "
                      "record without its time): "
