@@ -293,18 +293,7 @@ def test_a_stop_as_a_step_from_0_bar_begins_is_judged_by_whether_the_monitor_mov
         else {}
     c = config.replace(sequence=cycles, sim={"regulator_tau_s": 1.5})
     first = 20 + (200 if preconditioned else 0)  # after the tare's 2 s and the cycle's 20 s
-    backend = SimBackend(c)
-    read = backend.read
-
-    def stopped_at_first(n, timeout):
-        block = read(n, timeout)
-        if block.first_index == first:
-            run.request_stop()
-        return block
-
-    backend.read = stopped_at_first
-    run = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET)
-    result = run.execute()
+    result, backend = _stopped_at(c, tmp_path, first)
     samples = load_run(result.path).samples
     (at_stop,) = samples.pressure_bar[samples["sample"] == first]
     assert at_stop == pytest.approx(0.5 * (1 - math.exp(-0.1 / 1.5)), abs=0.005)
