@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import cache
@@ -107,9 +108,28 @@ class Calibration:
         """Entry ``key`` (for example ``"eq2-inner"``); ``ValueError`` naming the command that
         writes it if there is none."""
         if key not in self.entries:
-            raise ValueError(f"no calibrated theta0 for model {key!r} in {self.path}: pass "
-                             f"--theta0 or run `{calibrate_command(key, self.path)}`")
+            raise ValueError(f"no calibrated theta0 for model {key!r} in {self.path}: "
+                             + self.how_to_add(key))
         return self.entries[key]
+
+    def how_to_add(self, key: str, angle: bool = True) -> str:
+        """What writes entry ``key``: for a muscle ``mkm identify`` identified with another
+        model, that identification with this one (fem calibrate would fit the paper's muscle
+        into the lab's file); with ``angle``, or the angle given as --theta0."""
+        identified = next(((k, e) for k, e in self.entries.items() if "identified" in e), None)
+        if identified is None:
+            return (f"pass --theta0 or run `{calibrate_command(key, self.path)}`" if angle
+                    else f"run `{calibrate_command(key, self.path)}`")
+        other, entry = identified
+        rung = key.partition("-")[0]
+        command = str(entry.get("command", ""))
+        again = re.sub(r"--model \S+", f"--model {rung}", command) if "--model " in command \
+            else f"{command} --model {rung}"
+        again = re.sub(r"--out (\S+)", lambda m: f"--out {m[1]}-{rung}", again)
+        return (f"it holds the muscle identified with {other} (theta0 {entry['theta0_deg']:g} "
+                f"deg): identify it with {rung} too (`{again}`) and give that calibration"
+                + (f", or pass --theta0 {entry['theta0_deg']:g} (the {other} fit's angle; the "
+                   "rubber then is not the identified one)" if angle else ""))
 
 
 #: what a calibration file that cannot be read was expected to be

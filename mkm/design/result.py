@@ -179,6 +179,11 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
             raise ValueError(f"gap_mm={merged['gap_mm']} with --tolerance: a robust design "
                              "with a gap between tube and braid is not modelled (its Monte "
                              "Carlo runs on the surrogate, which has no gap)")
+    if calibration is not None and "axisym" not in calibration.entries:
+        # the search's defaults and the verification read the FE model's entry: refused before
+        raise ValueError(f"--calibration {calibration.path} has no entry of the FE model "
+                         "(axisym), whose angle and rubber mkm design searches and verifies "
+                         f"with: {calibration.how_to_add('axisym', angle=False)}")
     found = search(requirements, merged, objective, surrogate, tolerances, probability,
                    calibration)
     chosen = pick(found.feasible, top, found.constraints)

@@ -189,6 +189,27 @@ def test_a_calibration_is_a_value_given_to_the_models_that_take_it(tmp_path):
     assert model.params()["theta0_deg"] == 28.5
 
 
+def test_a_muscle_identified_with_another_model_names_its_identification_not_fem_calibrate(
+        tmp_path):
+    # an identify calibration of the thick-wall form lacks the FE's entry: the advice was `mkm
+    # fem calibrate --model axisym --out FILE`, which fits the paper's muscle I into the lab's
+    # file, not the lab's muscle
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {
+        "theta0_deg": 27.7613, "C10_MPa": 0.39, "C01_MPa": 0.35, "identified": {},
+        "command": "mkm identify r1 r2 --params theta0,rubber,L0 --model thickwall --out id20"}}))
+    calibration = Calibration.load(lab)
+    with pytest.raises(ValueError) as info:
+        make_model("axisym", calibration).params()
+    assert str(info.value) == (
+        f"no calibrated theta0 for model 'axisym' in {lab}: it holds the muscle identified with "
+        "thickwall (theta0 27.7613 deg): identify it with axisym too (`mkm identify r1 r2 "
+        "--params theta0,rubber,L0 --model axisym --out id20-axisym`) and give that "
+        "calibration, or pass --theta0 27.7613 (the thickwall fit's angle; the rubber then is "
+        "not the identified one)")
+    assert "fem calibrate" not in calibration.how_to_add("eq2-inner", angle=False)
+
+
 @pytest.mark.parametrize(("text", "message"), [
     # the system's words for a missing file, then what was expected (was: the words alone)
     (None, "cannot read it: .+: expected the calibration.json mkm identify writes or the file "

@@ -786,3 +786,23 @@ def test_the_chosen_design_met_within_the_mesh_error_is_verified_again_on_a_fine
     assert set(curves.loc[curves["design"] == thin_rank, "mesh"]) == {thin["fe_mesh"]}
     assert set(curves.loc[curves["design"] == 3 - thin_rank, "mesh"]) == {"coarse"}
     assert {"coarse", thin["fe_mesh"]} <= {key[0] for key in models}  # every mesh it used
+
+
+def test_a_calibration_without_the_fe_entry_is_refused_before_the_search(tmp_path):
+    # a muscle identified with the thick-wall form: design searched for 47 s (its defaults and
+    # the FE verification read the FE's entry) and then refused
+    from mkm.design.result import run_design
+    from mkm.fem.calibration import Calibration
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {
+        "theta0_deg": 27.7613, "C10_MPa": 0.39, "C01_MPa": 0.35, "identified": {},
+        "command": "mkm identify r1 r2 --model thickwall --out id20"}}))
+    with pytest.raises(ValueError) as info:
+        run_design(["500N@6bar,eps=0.1"], {"theta0_deg": 27.7613},
+                   calibration=Calibration.load(lab), surrogate="no-such-surrogate")
+    assert str(info.value) == (
+        f"--calibration {lab} has no entry of the FE model (axisym), whose angle and rubber mkm "
+        "design searches and verifies with: it holds the muscle identified with thickwall "
+        "(theta0 27.7613 deg): identify it with axisym too (`mkm identify r1 r2 --model axisym "
+        "--out id20-axisym`) and give that calibration")
