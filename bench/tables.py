@@ -250,17 +250,52 @@ def _text_table(path: Path, text: str) -> RawTable:
     if not lines:
         raise ValueError(f"{path} is empty: expected a header row and one row per step or "
                          "sample")
+    lines = _with_quoted_line_breaks(lines)
     separator = _separator([line for _, line in lines])
     # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
-    parsed = [(n, cells) for n, (cells,) in
-              ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)
-              if any(c.strip() for c in cells)]
+    parsed = [(n + j, cells) for n, line in lines
+              for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
     if path.suffix.lower() == ".lvm":
         parsed = _without_later_lvm_headers(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
                                          for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
+
+
+#: the most lines a quoted cell spans (a comment of a few lines): a quote that does not close
+#: within them is a stray one, and each line stays a row
+QUOTED_LINES_MAX = 10
+#: a quoted cell left open at the line's end: its quote opens the cell (5" in a comment is no
+#: quoting)
+_OPEN_QUOTE = re.compile(r'(?:^|[,;\t])\s*"[^"]*$')
+
+
+def _with_quoted_line_breaks(lines: list[tuple[int, str]]) -> list[tuple[int, str]]:
+    """``lines`` (file row, text) with a line whose quotes do not pair up joined to the next
+    ones until they do: a quoted cell holding a line break (a comment written with Alt+Enter,
+    which Excel writes over two lines), numbered by its first line."""
+    out, k = [], 0
+    while k < len(lines):
+        number, line = lines[k]
+        end = k
+        if line.count('"') % 2 and _OPEN_QUOTE.search(line):
+            end = next((j for j in range(k + 1, min(k + QUOTED_LINES_MAX, len(lines)))
+                        if sum(text.count('"') for _, text in lines[k:j + 1]) % 2 == 0), k)
+        out.append((number, "\n".join(text for _, text in lines[k:end + 1])))
+        k = end + 1
+    return out
+
+
+def _cells(line: str, separator: str) -> list[list[str]]:
+    """A line's cells (one row), or the rows of its lines, one after the other, where it
+    joined lines whose quote, with this separator, opens no cell."""
+    try:
+        (cells,) = csv.reader(io.StringIO(line, newline=""), delimiter=separator)
+        return [cells]
+    except (csv.Error, ValueError):  # a line break outside quotes, or two records
+        return [next(csv.reader([part], delimiter=separator), [])
+                for part in line.split("\n")]
 
 
 def _without_later_lvm_headers(path: Path, parsed: list[tuple[int, list[str]]]):
@@ -330,7 +365,9 @@ def _separator(lines: list[str]) -> str:
     """The separator that splits the most lines into the same number (>= 2) of fields."""
     best, score = ",", -1
     for sep in SEPARATORS:
-        counts = [len(next(csv.reader([line], delimiter=sep))) for line in lines[:200]]
+        # a quoted cell's line break is no row's end: a space serves as well for counting
+        counts = [len(next(csv.reader([line.replace("\n", " ")], delimiter=sep)))
+                  for line in lines[:200]]
         common = max(set(counts), key=counts.count)
         agree = counts.count(common) if common >= 2 else 0
         if agree > score:

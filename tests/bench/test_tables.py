@@ -354,6 +354,22 @@ def test_a_unix_time_column_is_the_time(header, tmp_path):
     np.testing.assert_allclose(np.diff(column_values(table, found["time"])), [0.1], rtol=1e-6)
 
 
+def test_a_quoted_comment_over_two_lines_is_one_cell(tmp_path):
+    # Excel writes a cell holding a line break (Alt+Enter in a comment) quoted over two lines:
+    # was "cell A4 (column 'P [bar]'): 'Anschluss' is not a number"
+    table, found = _one(tmp_path, 'P [bar];F [N];Kommentar\r\n0;3;genullt\r\n'
+                        '0,5;213;"Leck am\nAnschluss; nachgezogen"\r\n1;423;\r\n1;4;"5"" hose"\r\n')
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0, 0.5, 1, 1])
+    assert table.rows[1][2] == "Leck am\nAnschluss; nachgezogen"
+    assert table.row_numbers == [2, 3, 5, 6]
+    # a quote that never closes, or that opens no cell, is no line break: each line a row
+    table, found = _one(tmp_path, 'P [bar];F [N];Kommentar\n0;3;"offen\n1;423;\n', "open.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [3, 423])
+    table, found = _one(tmp_path, 'P [bar],F [N],note\n0,3,5" hose\n1,423,6" hose\n',
+                        "inch.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [3, 423])
+
+
 def test_rows_of_separators_only_are_blank(tmp_path):
     # a spreadsheet's export: empty rows as ";;", between the data and after it
     table, found = _one(tmp_path, "Druck (bar);Kraft (N);Notiz\n0,5;12,25;\n;;\n1,0;40,5;ok\n"
