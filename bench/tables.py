@@ -673,6 +673,10 @@ def marked_gauge(unit: str | None) -> bool:
     return bool(_GAUGE.fullmatch((unit or "").strip()))
 
 
+#: a length squared or cubed written with its exponent as a digit (cm2, mm2, in2)
+_AREA_DIGIT = re.compile(r"(?<![A-Za-z])(mm|cm|m|in|ft)([23])(?![\w])")
+
+
 def parse_unit(text: str):
     """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
     case as written, then any case)."""
@@ -683,6 +687,7 @@ def parse_unit(text: str):
         return registry().Unit(LAB_UNITS[spelled])
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
         return None
+    text = _AREA_DIGIT.sub(r"\1**\2", text)  # kgf/cm2: pint reads no 'cm2'
     for case_sensitive in (True, False):
         try:
             return registry(case_sensitive).Unit(text)
@@ -940,6 +945,14 @@ def _check_unit(table: RawTable, column: Column) -> None:
                    and unit.dimensionality == registry().Unit("kg").dimensionality)
         hint = (f"; if the load cell shows the weight it holds, give --units force="
                 f"{_weight_unit(unit)}" if weighed else "")
+        # a gauge's dial in kg/cm² shows kilograms of weight per area, as at and kgf/cm² do
+        if (column.role == "pressure" and unit is not None
+                and unit.dimensionality == registry().Unit("kg/cm**2").dimensionality):
+            per_area = re.sub(r"^\s*kg\b", "kgf", column.unit.strip())
+            if not _fits(parse_unit(per_area), role):
+                per_area = "kgf/cm²"
+            hint = ("; if the gauge shows kilograms of weight per area, give --units "
+                    f"pressure={per_area}")
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
                          f"unit of {column.role} (expected one like "
                          f"{role.unit or 'percent'}){hint}")

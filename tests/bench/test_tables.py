@@ -165,6 +165,25 @@ def test_technical_atmospheres_and_inches_of_mercury(header, cells, bar_per_unit
                                [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
 
 
+@pytest.mark.parametrize("header, bar_per_unit", [
+    ("Druck [kgf/cm2]", AT_BAR), ("p (N/mm2)", 10.0), ("Pressure [lbf/in2]", PSI_BAR),
+    ("Druck [kgf/cm²]", AT_BAR), ("p [N/mm^2]", 10.0),
+])
+def test_an_area_written_with_its_exponent_as_a_digit(header, bar_per_unit, tmp_path):
+    # a gauge's kgf/cm2: was "'kgf/cm2' is not a unit of pressure" (pint reads cm2 as no unit)
+    table, found = _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
+
+
+def test_a_gauge_in_kilograms_per_area_is_told_its_force_unit(tmp_path):
+    # a gauge's dial in kg/cm² means kilogram-force: said, as a load cell's kg is
+    with pytest.raises(ValueError, match=re.escape(
+            "'kg/cm²' is not a unit of pressure (expected one like bar); if the gauge shows "
+            "kilograms of weight per area, give --units pressure=kgf/cm²")):
+        _one(tmp_path, "Druck [kg/cm²];F (N)\n1,5;2\n2,5;4\n")
+
+
 def test_at_as_a_word_of_a_header_is_no_unit():
     # 'at' is a unit in brackets or a cell, a word in a header's name
     assert parse_header("Force at peak") == ("force peak", None)
