@@ -703,11 +703,29 @@ def _fits(unit, role: Role) -> bool:
 
 def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
     """The headers of ``table`` that no role took and whose unit is one of time (``Zeit seit
-    Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration."""
+    Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration;
+    or that are a channel's own time (:func:`_channel_times`)."""
     taken = {c.index for c in found.values()}
+    channels = set(_channel_times(table, taken))
     return [header for index, header in enumerate(table.header) if header and index not in taken
-            and (unit := parse_header(header)[1]) is not None
-            and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"]))]
+            and (index in channels or (unit := parse_header(header)[1]) is not None
+                 and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"])))]
+
+
+#: the first word of a channel's own time column's name (``Time - Pressure``, as
+#: SignalExpress exports each channel beside its time)
+CHANNEL_TIME_WORDS = ("time", "zeit", "temps")
+
+
+def _channel_times(table: RawTable, taken: set[int]) -> list[int]:
+    """The columns no role took named as a channel's own time (:data:`CHANNEL_TIME_WORDS`, then
+    the channel's name)."""
+    out = []
+    for index, header in enumerate(table.header):
+        words = parse_header(header)[0].split() if header else []
+        if index not in taken and len(words) > 1 and words[0] in CHANNEL_TIME_WORDS:
+            out.append(index)
+    return out
 
 
 #: a TDMS channel's path, as npTDMS names a data frame's columns: ``/'Group'/'Channel'``
@@ -838,6 +856,14 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         if len(by_unit) == 1:
             index = by_unit[0]
             found[role] = Column(role, index, headers[index], parse_header(headers[index])[1])
+    if "time" not in found:
+        # each channel beside its own time: one clock where they read alike row by row (one
+        # such column alone may be a hold's duration, 'Time held (s)': named, not taken)
+        channels = _channel_times(table, {c.index for c in found.values()})
+        if len(channels) > 1 and all(row[k] == row[channels[0]] for row in table.rows
+                                     for k in channels):
+            header = headers[channels[0]]
+            found["time"] = Column("time", channels[0], header, parse_header(header)[1])
     for role, unit in units.items():
         if role not in found:
             raise ValueError(f"--units {role}={unit}: {table.name} has no {role} column "

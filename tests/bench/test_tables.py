@@ -19,6 +19,7 @@ from mkm.bench.tables import (
     plain_number,
     read_tables,
     recognise,
+    unread_time_columns,
 )
 
 # Units by their definitions (not by the code under test): the international pound is
@@ -387,6 +388,20 @@ def test_a_quoted_comment_over_two_lines_is_one_cell(tmp_path):
     table, found = _one(tmp_path, 'P [bar],F [N],note\n0,3,5" hose\n1,423,6" hose\n',
                         "inch.csv")
     np.testing.assert_allclose(column_values(table, found["force"]), [3, 423])
+
+
+def test_a_channels_own_time_column_is_the_time(tmp_path):
+    # SignalExpress's text export: each channel beside its own time, 'Time - Pressure': were
+    # left unread, the record taken as rows evenly spaced, its holds' times lost
+    text = ("Time - Pressure\tPressure (bar)\tTime - Force\tForce (N)\n"
+            "0.0\t0\t0.0\t1\n0.1\t0.5\t0.1\t2\n0.2\t1\t0.2\t3\n")
+    table, found = _one(tmp_path, text, "sigex.txt")
+    assert found["time"].header == "Time - Pressure"
+    np.testing.assert_allclose(column_values(table, found["time"]), [0, 0.1, 0.2])
+    # channels on clocks of their own are not one time: named, for --columns to choose
+    table, found = _one(tmp_path, text.replace("0.1\t2", "0.15\t2"), "apart.txt")
+    assert "time" not in found
+    assert unread_time_columns(table, found) == ["Time - Pressure", "Time - Force"]
 
 
 def test_rows_of_separators_only_are_blank(tmp_path):
