@@ -48,6 +48,17 @@ _ZIP_MAGIC = b"PK\x03\x04"
 WORKBOOK_SUFFIXES = (".xlsx", ".xlsm")
 
 
+#: loggers' own binary files, and how each becomes a table mkm reads
+LOGGER_FILES = {
+    ".tdms": "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or open "
+             "it in Excel with NI's TDM importer and save it as .xlsx",
+    ".tdm": "NI's TDM file: open it in Excel with NI's TDM importer and save it as .xlsx",
+    ".dxd": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
+    ".d7d": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
+    ".mf4": "an ASAM MDF file: export it as CSV from the logger's software (or asammdf)",
+}
+
+
 def table_suffixes_text() -> str:
     """The files :func:`read_tables` reads, in words: ``.csv, .tsv, ... or .xlsm``."""
     *first, last = (*TEXT_SUFFIXES, *WORKBOOK_SUFFIXES)
@@ -215,6 +226,9 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     suffix = path.suffix.lower()
     if suffix in WORKBOOK_SUFFIXES:
         return _read_workbook(path, sheet)
+    if suffix in LOGGER_FILES:
+        raise ValueError(f"{path.name} is {LOGGER_FILES[suffix]}: mkm reads "
+                         f"{table_suffixes_text()}")
     if suffix not in TEXT_SUFFIXES:
         raise ValueError(f"{path}: unknown table format {suffix!r}: expected "
                          f"{table_suffixes_text()}")

@@ -404,6 +404,20 @@ def test_a_channels_own_time_column_is_the_time(tmp_path):
     assert unread_time_columns(table, found) == ["Time - Pressure", "Time - Force"]
 
 
+@pytest.mark.parametrize("suffix, how", [
+    (".tdms", "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or "
+     "open it in Excel with NI's TDM importer and save it as .xlsx"),
+    (".dxd", "DEWESoft's data file: export it from DEWESoft as CSV or Excel"),
+])
+def test_a_loggers_binary_file_names_how_to_export_it(suffix, how, tmp_path):
+    # was "unknown table format '.tdms': expected .csv, ...", not saying how to get one
+    path = tmp_path / f"log{suffix}"
+    path.write_bytes(b"TDSm\x00binary")
+    with pytest.raises(ValueError, match=re.escape(
+            f"log{suffix} is {how}: mkm reads .csv, .tsv, .txt, .lvm, .xls, .xlsx or .xlsm")):
+        read_tables(path)
+
+
 def test_rows_of_separators_only_are_blank(tmp_path):
     # a spreadsheet's export: empty rows as ";;", between the data and after it
     table, found = _one(tmp_path, "Druck (bar);Kraft (N);Notiz\n0,5;12,25;\n;;\n1,0;40,5;ok\n"
