@@ -1168,7 +1168,7 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     if isinstance(cell, datetime.timedelta):
         return "duration", cell.total_seconds()
     text = str(cell).strip()
-    if ":" not in text:
+    if ":" not in text and not _ISO_BASIC.match(text):
         return None
     of_day = _time_of_day_s(text)
     if of_day is not None:
@@ -1180,7 +1180,9 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     slashed = _slashed_s(text, day_first)
     if slashed is not None:
         return "date-time", slashed
-    for parse in (datetime.datetime.fromisoformat,
+    iso = _ISO_ZONE.sub(lambda m: "+00:00" if m["zone"].upper() in ("UTC", "GMT")
+                        else m["zone"], text)
+    for parse in (lambda t: datetime.datetime.fromisoformat(iso.replace(",", ".")),
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S"),
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f")):
         try:
@@ -1188,6 +1190,13 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
         except ValueError:
             continue
     return None
+
+
+#: ISO 8601's basic format, without separators (20261206T090000.250Z)
+_ISO_BASIC = re.compile(r"^\d{8}T\d{6}")
+#: a date-time's zone written after a space, or named (' +01:00', ' Z', ' UTC'): ISO 8601
+#: writes it joined
+_ISO_ZONE = re.compile(r"(?<=\d)\s+(?P<zone>[+-]\d{2}:?\d{2}|Z|UTC|GMT)$", re.IGNORECASE)
 
 
 def _epoch_s(moment: datetime.datetime) -> float:

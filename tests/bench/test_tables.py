@@ -757,6 +757,19 @@ def test_times_of_day_and_date_times_as_english_excel_writes_them(cells, seconds
     np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
 
 
+@pytest.mark.parametrize("cells, seconds", [
+    # ISO 8601's basic format, and its zone after a space or named UTC, as loggers write them
+    (["20261206T090000.000Z", "20261206T090001.250Z"], [0.0, 1.25]),
+    (["2026-12-06 09:00:00.000 +01:00", "2026-12-06 08:00:01.500 Z"], [0.0, 1.5]),
+    (["2026-12-06 09:00:00 UTC", "2026-12-06 10:00:02 +0100"], [0.0, 2.0]),
+])
+def test_iso_date_times_in_basic_format_or_with_a_spaced_zone(cells, seconds, tmp_path):
+    # were "'20261206T090000.000Z' is not a time"
+    rows = "".join(f"{c};{k};{k}\n" for k, c in enumerate(cells))
+    table, found = _one(tmp_path, f"Time;P [bar];F [N]\n{rows}")
+    np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
+
+
 def test_a_time_cell_that_is_no_time_is_named_as_such(tmp_path):
     # was: "'13:61 PM' is not a number", for a column of times
     table, found = _one(tmp_path, "Time;P [bar];F [N]\n13:61 PM;0;1\n")
