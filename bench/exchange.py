@@ -785,7 +785,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
                              "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
-        check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
+        try:
+            check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
+        except ValueError as exc:  # beyond any gauge: a unit read as bar, as the note says
+            raise ValueError(f"{exc}; {_other_pressure_units(top_bar, found['pressure'].unit)}"
+                             ) from None
     closing = closing_rows = None
     if timed or record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
         clock = time_s if timed else np.arange(pressure.size, dtype=float)
@@ -974,6 +978,9 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
 
 #: the units a lab's pressures are written in that read as bar pass as a bar 10-100 times
 MISREAD_PRESSURE_UNITS = ("kPa", "psi")
+#: a logger's millibar read as bar, a thousand times: named where none of those brings the
+#: readings within the range
+MISREAD_PRESSURE_UNITS_THEN = ("mbar",)
 
 
 def _other_pressure_units(top_bar: float, unit: str | None) -> str:
@@ -988,8 +995,13 @@ def _other_pressure_units(top_bar: float, unit: str | None) -> str:
             "bar").magnitude)
 
     written = top_bar / in_bar(unit)  # the largest reading as the table writes it
-    fits = [u for u in MISREAD_PRESSURE_UNITS if not math.isclose(in_bar(u), in_bar(unit))
-            and written * in_bar(u) <= PRACTICAL_RANGE.pressure_bar[1]]
+
+    def fitting(units) -> list[str]:
+        return [u for u in units if not math.isclose(in_bar(u), in_bar(unit))
+                and written * in_bar(u) <= PRACTICAL_RANGE.pressure_bar[1]]
+
+    fits = fitting(MISREAD_PRESSURE_UNITS) or (
+        fitting(MISREAD_PRESSURE_UNITS_THEN) if math.isclose(in_bar(unit), 1.0) else [])
     if not fits:
         return "check the column's unit (--units pressure=UNIT)"
     return (f"if they are {' or '.join(fits)}, import again with --units pressure={fits[0]}"
