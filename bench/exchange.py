@@ -947,6 +947,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             notes.append(f"{slack} slack row(s) ({found['slack'].header}): kept at their force")
     if not np.any(force != 0):
         notes.append("every force is 0 N: no model error can be scored against this run")
+    elif weak := _far_below_a_pull(pressure, force, muscle, found["force"]):
+        notes.append(weak)
     elif np.ptp(pressure) > 0 and np.ptp(force) > 0 and (
             -np.polyfit(pressure, force, 1)[0] * np.ptp(pressure) > 0.5 * np.ptp(force)):
         # a muscle pulls harder the higher its pressure: a force that falls with it (the line
@@ -1006,6 +1008,30 @@ def _other_pressure_units(top_bar: float, unit: str | None) -> str:
         return "check the column's unit (--units pressure=UNIT)"
     return (f"if they are {' or '.join(fits)}, import again with --units pressure={fits[0]}"
             + "".join(f" (or {u})" for u in fits[1:]))
+
+
+#: how far below Equation 2's force at the top pressure a table's largest force must lie to be
+#: questioned: a muscle's friction, a softer rubber or a braid angle off take tens of per cent,
+#: a load cell's kN read as N a thousandth
+FAR_BELOW_A_PULL = 0.01
+
+
+def _far_below_a_pull(pressure, force, muscle, column) -> str:
+    """The note (or "") on forces under :data:`FAR_BELOW_A_PULL` of the force Equation 2 gives
+    the muscle at the table's top pressure: a load cell's kN read as N."""
+    from mkm.fem.ladder import make_model
+
+    top = int(np.argmax(pressure))
+    ideal = make_model("eq2").predict(float(pressure[top]), muscle.D0_mm, muscle.t0_mm,
+                                      muscle.eps)
+    largest = float(np.max(np.abs(force)))
+    if not (bool(np.all(ideal.valid)) and largest < FAR_BELOW_A_PULL * float(ideal.force_N)):
+        return ""
+    read = (f"read as N since {column.header!r} names no unit" if column.unit is None
+            else f"read in {column.unit} as {column.header!r} says")
+    return (f"forces up to {largest:.3g} N at {pressure[top]:g} bar, {read}: under "
+            f"{100 * FAR_BELOW_A_PULL:g} % of the {float(ideal.force_N):.3g} N Equation 2 gives "
+            "this muscle there; if they are kN, import again with --units force=kN")
 
 
 def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],
