@@ -825,7 +825,11 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
                              "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
-        check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
+        try:
+            check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
+        except ValueError as exc:  # beyond any gauge: a unit read as bar, as the note says
+            raise ValueError(f"{exc}; {_other_pressure_units(top_bar, found['pressure'].unit)}"
+                             ) from None
     closing = closing_rows = None
     if timed or record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
         clock = time_s if timed else np.arange(pressure.size, dtype=float)
@@ -983,6 +987,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             notes.append(f"{slack} slack row(s) ({found['slack'].header}): kept at their force")
     if not np.any(force != 0):
         notes.append("every force is 0 N: no model error can be scored against this run")
+    elif weak := _far_below_a_pull(pressure, force, muscle, found["force"]):
+        notes.append(weak)
     elif np.ptp(pressure) > 0 and np.ptp(force) > 0 and (
             -np.polyfit(pressure, force, 1)[0] * np.ptp(pressure) > 0.5 * np.ptp(force)):
         # a muscle pulls harder the higher its pressure: a force that falls with it (the line
@@ -1014,6 +1020,9 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
 
 #: the units a lab's pressures are written in that read as bar pass as a bar 10-100 times
 MISREAD_PRESSURE_UNITS = ("kPa", "psi")
+#: a logger's millibar read as bar, a thousand times: named where none of those brings the
+#: readings within the range
+MISREAD_PRESSURE_UNITS_THEN = ("mbar",)
 
 
 def _other_pressure_units(top_bar: float, unit: str | None) -> str:
@@ -1028,12 +1037,41 @@ def _other_pressure_units(top_bar: float, unit: str | None) -> str:
             "bar").magnitude)
 
     written = top_bar / in_bar(unit)  # the largest reading as the table writes it
-    fits = [u for u in MISREAD_PRESSURE_UNITS if not math.isclose(in_bar(u), in_bar(unit))
-            and written * in_bar(u) <= PRACTICAL_RANGE.pressure_bar[1]]
+
+    def fitting(units) -> list[str]:
+        return [u for u in units if not math.isclose(in_bar(u), in_bar(unit))
+                and written * in_bar(u) <= PRACTICAL_RANGE.pressure_bar[1]]
+
+    fits = fitting(MISREAD_PRESSURE_UNITS) or (
+        fitting(MISREAD_PRESSURE_UNITS_THEN) if math.isclose(in_bar(unit), 1.0) else [])
     if not fits:
         return "check the column's unit (--units pressure=UNIT)"
     return (f"if they are {' or '.join(fits)}, import again with --units pressure={fits[0]}"
             + "".join(f" (or {u})" for u in fits[1:]))
+
+
+#: how far below Equation 2's force at the top pressure a table's largest force must lie to be
+#: questioned: a muscle's friction, a softer rubber or a braid angle off take tens of per cent,
+#: a load cell's kN read as N a thousandth
+FAR_BELOW_A_PULL = 0.01
+
+
+def _far_below_a_pull(pressure, force, muscle, column) -> str:
+    """The note (or "") on forces under :data:`FAR_BELOW_A_PULL` of the force Equation 2 gives
+    the muscle at the table's top pressure: a load cell's kN read as N."""
+    from mkm.fem.ladder import make_model
+
+    top = int(np.argmax(pressure))
+    ideal = make_model("eq2").predict(float(pressure[top]), muscle.D0_mm, muscle.t0_mm,
+                                      muscle.eps)
+    largest = float(np.max(np.abs(force)))
+    if not (bool(np.all(ideal.valid)) and largest < FAR_BELOW_A_PULL * float(ideal.force_N)):
+        return ""
+    read = (f"read as N since {column.header!r} names no unit" if column.unit is None
+            else f"read in {column.unit} as {column.header!r} says")
+    return (f"forces up to {largest:.3g} N at {pressure[top]:g} bar, {read}: under "
+            f"{100 * FAR_BELOW_A_PULL:g} % of the {float(ideal.force_N):.3g} N Equation 2 gives "
+            "this muscle there; if they are kN, import again with --units force=kN")
 
 
 def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],

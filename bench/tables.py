@@ -48,6 +48,17 @@ _ZIP_MAGIC = b"PK\x03\x04"
 WORKBOOK_SUFFIXES = (".xlsx", ".xlsm")
 
 
+#: loggers' own binary files, and how each becomes a table mkm reads
+LOGGER_FILES = {
+    ".tdms": "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or open "
+             "it in Excel with NI's TDM importer and save it as .xlsx",
+    ".tdm": "NI's TDM file: open it in Excel with NI's TDM importer and save it as .xlsx",
+    ".dxd": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
+    ".d7d": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
+    ".mf4": "an ASAM MDF file: export it as CSV from the logger's software (or asammdf)",
+}
+
+
 def table_suffixes_text() -> str:
     """The files :func:`read_tables` reads, in words: ``.csv, .tsv, ... or .xlsm``."""
     *first, last = (*TEXT_SUFFIXES, *WORKBOOK_SUFFIXES)
@@ -215,6 +226,9 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     suffix = path.suffix.lower()
     if suffix in WORKBOOK_SUFFIXES:
         return _read_workbook(path, sheet)
+    if suffix in LOGGER_FILES:
+        raise ValueError(f"{path.name} is {LOGGER_FILES[suffix]}: mkm reads "
+                         f"{table_suffixes_text()}")
     if suffix not in TEXT_SUFFIXES:
         raise ValueError(f"{path}: unknown table format {suffix!r}: expected "
                          f"{table_suffixes_text()}")
@@ -250,17 +264,52 @@ def _text_table(path: Path, text: str) -> RawTable:
     if not lines:
         raise ValueError(f"{path} is empty: expected a header row and one row per step or "
                          "sample")
+    lines = _with_quoted_line_breaks(lines)
     separator = _separator([line for _, line in lines])
     # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
-    parsed = [(n, cells) for n, (cells,) in
-              ((n, list(csv.reader(io.StringIO(line), delimiter=separator))) for n, line in lines)
-              if any(c.strip() for c in cells)]
+    parsed = [(n + j, cells) for n, line in lines
+              for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
     if path.suffix.lower() == ".lvm":
         parsed = _without_later_lvm_headers(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
                                          for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
+
+
+#: the most lines a quoted cell spans (a comment of a few lines): a quote that does not close
+#: within them is a stray one, and each line stays a row
+QUOTED_LINES_MAX = 10
+#: a quoted cell left open at the line's end: its quote opens the cell (5" in a comment is no
+#: quoting)
+_OPEN_QUOTE = re.compile(r'(?:^|[,;\t])\s*"[^"]*$')
+
+
+def _with_quoted_line_breaks(lines: list[tuple[int, str]]) -> list[tuple[int, str]]:
+    """``lines`` (file row, text) with a line whose quotes do not pair up joined to the next
+    ones until they do: a quoted cell holding a line break (a comment written with Alt+Enter,
+    which Excel writes over two lines), numbered by its first line."""
+    out, k = [], 0
+    while k < len(lines):
+        number, line = lines[k]
+        end = k
+        if line.count('"') % 2 and _OPEN_QUOTE.search(line):
+            end = next((j for j in range(k + 1, min(k + QUOTED_LINES_MAX, len(lines)))
+                        if sum(text.count('"') for _, text in lines[k:j + 1]) % 2 == 0), k)
+        out.append((number, "\n".join(text for _, text in lines[k:end + 1])))
+        k = end + 1
+    return out
+
+
+def _cells(line: str, separator: str) -> list[list[str]]:
+    """A line's cells (one row), or the rows of its lines, one after the other, where it
+    joined lines whose quote, with this separator, opens no cell."""
+    try:
+        (cells,) = csv.reader(io.StringIO(line, newline=""), delimiter=separator)
+        return [cells]
+    except (csv.Error, ValueError):  # a line break outside quotes, or two records
+        return [next(csv.reader([part], delimiter=separator), [])
+                for part in line.split("\n")]
 
 
 def _without_later_lvm_headers(path: Path, parsed: list[tuple[int, list[str]]]):
@@ -330,7 +379,9 @@ def _separator(lines: list[str]) -> str:
     """The separator that splits the most lines into the same number (>= 2) of fields."""
     best, score = ",", -1
     for sep in SEPARATORS:
-        counts = [len(next(csv.reader([line], delimiter=sep))) for line in lines[:200]]
+        # a quoted cell's line break is no row's end: a space serves as well for counting
+        counts = [len(next(csv.reader([line.replace("\n", " ")], delimiter=sep)))
+                  for line in lines[:200]]
         common = max(set(counts), key=counts.count)
         agree = counts.count(common) if common >= 2 else 0
         if agree > score:
@@ -636,6 +687,10 @@ def marked_gauge(unit: str | None) -> bool:
     return bool(_GAUGE.fullmatch((unit or "").strip()))
 
 
+#: a length squared or cubed written with its exponent as a digit (cm2, mm2, in2)
+_AREA_DIGIT = re.compile(r"(?<![A-Za-z])(mm|cm|m|in|ft)([23])(?![\w])")
+
+
 def parse_unit(text: str):
     """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
     case as written, then any case)."""
@@ -646,6 +701,7 @@ def parse_unit(text: str):
         return registry().Unit(LAB_UNITS[spelled])
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
         return None
+    text = _AREA_DIGIT.sub(r"\1**\2", text)  # kgf/cm2: pint reads no 'cm2'
     for case_sensitive in (True, False):
         try:
             return registry(case_sensitive).Unit(text)
@@ -661,11 +717,29 @@ def _fits(unit, role: Role) -> bool:
 
 def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
     """The headers of ``table`` that no role took and whose unit is one of time (``Zeit seit
-    Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration."""
+    Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration;
+    or that are a channel's own time (:func:`_channel_times`)."""
     taken = {c.index for c in found.values()}
+    channels = set(_channel_times(table, taken))
     return [header for index, header in enumerate(table.header) if header and index not in taken
-            and (unit := parse_header(header)[1]) is not None
-            and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"]))]
+            and (index in channels or (unit := parse_header(header)[1]) is not None
+                 and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"])))]
+
+
+#: the first word of a channel's own time column's name (``Time - Pressure``, as
+#: SignalExpress exports each channel beside its time)
+CHANNEL_TIME_WORDS = ("time", "zeit", "temps")
+
+
+def _channel_times(table: RawTable, taken: set[int]) -> list[int]:
+    """The columns no role took named as a channel's own time (:data:`CHANNEL_TIME_WORDS`, then
+    the channel's name)."""
+    out = []
+    for index, header in enumerate(table.header):
+        words = parse_header(header)[0].split() if header else []
+        if index not in taken and len(words) > 1 and words[0] in CHANNEL_TIME_WORDS:
+            out.append(index)
+    return out
 
 
 #: a TDMS channel's path, as npTDMS names a data frame's columns: ``/'Group'/'Channel'``
@@ -796,6 +870,14 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         if len(by_unit) == 1:
             index = by_unit[0]
             found[role] = Column(role, index, headers[index], parse_header(headers[index])[1])
+    if "time" not in found:
+        # each channel beside its own time: one clock where they read alike row by row (one
+        # such column alone may be a hold's duration, 'Time held (s)': named, not taken)
+        channels = _channel_times(table, {c.index for c in found.values()})
+        if len(channels) > 1 and all(row[k] == row[channels[0]] for row in table.rows
+                                     for k in channels):
+            header = headers[channels[0]]
+            found["time"] = Column("time", channels[0], header, parse_header(header)[1])
     for role, unit in units.items():
         if role not in found:
             raise ValueError(f"--units {role}={unit}: {table.name} has no {role} column "
@@ -903,6 +985,14 @@ def _check_unit(table: RawTable, column: Column) -> None:
                    and unit.dimensionality == registry().Unit("kg").dimensionality)
         hint = (f"; if the load cell shows the weight it holds, give --units force="
                 f"{_weight_unit(unit)}" if weighed else "")
+        # a gauge's dial in kg/cm² shows kilograms of weight per area, as at and kgf/cm² do
+        if (column.role == "pressure" and unit is not None
+                and unit.dimensionality == registry().Unit("kg/cm**2").dimensionality):
+            per_area = re.sub(r"^\s*kg\b", "kgf", column.unit.strip())
+            if not _fits(parse_unit(per_area), role):
+                per_area = "kgf/cm²"
+            hint = ("; if the gauge shows kilograms of weight per area, give --units "
+                    f"pressure={per_area}")
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
                          f"unit of {column.role} (expected one like "
                          f"{role.unit or 'percent'}){hint}")
@@ -1078,7 +1168,7 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     if isinstance(cell, datetime.timedelta):
         return "duration", cell.total_seconds()
     text = str(cell).strip()
-    if ":" not in text:
+    if ":" not in text and not _ISO_BASIC.match(text):
         return None
     of_day = _time_of_day_s(text)
     if of_day is not None:
@@ -1090,7 +1180,9 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     slashed = _slashed_s(text, day_first)
     if slashed is not None:
         return "date-time", slashed
-    for parse in (datetime.datetime.fromisoformat,
+    iso = _ISO_ZONE.sub(lambda m: "+00:00" if m["zone"].upper() in ("UTC", "GMT")
+                        else m["zone"], text)
+    for parse in (lambda t: datetime.datetime.fromisoformat(iso.replace(",", ".")),
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S"),
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f")):
         try:
@@ -1098,6 +1190,13 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
         except ValueError:
             continue
     return None
+
+
+#: ISO 8601's basic format, without separators (20261206T090000.250Z)
+_ISO_BASIC = re.compile(r"^\d{8}T\d{6}")
+#: a date-time's zone written after a space, or named (' +01:00', ' Z', ' UTC'): ISO 8601
+#: writes it joined
+_ISO_ZONE = re.compile(r"(?<=\d)\s+(?P<zone>[+-]\d{2}:?\d{2}|Z|UTC|GMT)$", re.IGNORECASE)
 
 
 def _epoch_s(moment: datetime.datetime) -> float:

@@ -203,6 +203,8 @@ def test_pressures_far_above_any_muscle_in_the_headers_unit_are_questioned(tmp_p
     ("P (psi)", 130.0, "if they are kPa, import again with --units pressure=kPa"),
     ("P (kPa)", 900.0, "check the column's unit (--units pressure=UNIT)"),
     ("P", 100.0, "if they are kPa or psi, import again with --units pressure=kPa (or psi)"),
+    # a logger's millibar, which neither kPa nor psi would bring within the range
+    ("P", 900.0, "if they are mbar, import again with --units pressure=mbar"),
 ])
 def test_pressures_above_any_muscle_name_the_units_that_would_fit(header, top, expected,
                                                                   tmp_path, capsys):
@@ -212,6 +214,43 @@ def test_pressures_above_any_muscle_name_the_units_that_would_fit(header, top, e
     code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path)], capsys)
     assert code == 0, err
     assert f"above the 8 bar of any braided muscle; {expected}" in err
+
+
+def test_millibar_read_as_bar_beyond_any_gauge_name_their_unit(tmp_path, capsys):
+    # a logger's millibar under a header without a unit: was "cell A4: pressure_bar=1500 is
+    # invalid: expected a gauge pressure in [0, 1000] bar", not saying which unit would do
+    table = tmp_path / "mbar.csv"
+    table.write_text("P;F\n0;3\n1000;423\n1500;633\n2500;1053\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "a")], capsys)
+    assert code == 2 and out == ""
+    assert err == ("mkm import: error: mbar.csv, cell A4: pressure_bar=1500 is invalid: expected "
+                   "a gauge pressure in [0, 1000] bar; if they are mbar, import again with "
+                   "--units pressure=mbar\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--units", "pressure=mbar", "--out",
+                           str(tmp_path / "b")], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["pressure_bar_mean"].tolist() == [0.0, 1.0, 1.5, 2.5]
+
+
+@pytest.mark.parametrize("header", ["F", "F [N]"])
+def test_forces_far_below_any_muscles_pull_are_questioned(header, tmp_path, capsys):
+    # a load cell's kN read as N: 1.05 N at 2.5 bar for a 30 mm muscle, imported without a
+    # word, every model then "off" by a factor of a thousand
+    table = tmp_path / "kn.csv"
+    table.write_text(f"P;{header}\n0;0,003\n0,5;0,213\n1;0,423\n1,5;0,633\n2,5;1,053\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "a")], capsys)
+    assert code == 0, err
+    assert load_run(out.strip()).steps["force_N_mean"].max() == pytest.approx(1.05)
+    # Equation 2 at 2.5 bar for this muscle (30 mm, 3 mm, eps 12.2 %): its force there
+    expected = make_model("eq2").predict(2.5, 30.0, 3.0, 0.122).force_N
+    read = ("read as N since 'F' names no unit" if header == "F"
+            else "read in N as 'F [N]' says")
+    assert (f"forces up to 1.05 N at 2.5 bar, {read}: under 1 % of the "
+            f"{expected:.3g} N Equation 2 gives this muscle there; if they are kN, import "
+            "again with --units force=kN") in err
+    code, out, err = _run(["import", str(table), *MUSCLE, "--units", "force=kN", "--out",
+                           str(tmp_path / "b")], capsys)
+    assert code == 0 and "Equation 2" not in err
 
 
 def test_a_time_column_by_an_unknown_name_is_pointed_out(tmp_path, capsys):

@@ -19,6 +19,7 @@ from mkm.bench.tables import (
     plain_number,
     read_tables,
     recognise,
+    unread_time_columns,
 )
 
 # Units by their definitions (not by the code under test): the international pound is
@@ -163,6 +164,25 @@ def test_technical_atmospheres_and_inches_of_mercury(header, cells, bar_per_unit
     table, found = _one(tmp_path, f"{header};F (N)\n{cells[0]};2\n{cells[1]};4\n")
     np.testing.assert_allclose(column_values(table, found["pressure"]),
                                [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
+
+
+@pytest.mark.parametrize("header, bar_per_unit", [
+    ("Druck [kgf/cm2]", AT_BAR), ("p (N/mm2)", 10.0), ("Pressure [lbf/in2]", PSI_BAR),
+    ("Druck [kgf/cm²]", AT_BAR), ("p [N/mm^2]", 10.0),
+])
+def test_an_area_written_with_its_exponent_as_a_digit(header, bar_per_unit, tmp_path):
+    # a gauge's kgf/cm2: was "'kgf/cm2' is not a unit of pressure" (pint reads cm2 as no unit)
+    table, found = _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
+
+
+def test_a_gauge_in_kilograms_per_area_is_told_its_force_unit(tmp_path):
+    # a gauge's dial in kg/cm² means kilogram-force: said, as a load cell's kg is
+    with pytest.raises(ValueError, match=re.escape(
+            "'kg/cm²' is not a unit of pressure (expected one like bar); if the gauge shows "
+            "kilograms of weight per area, give --units pressure=kgf/cm²")):
+        _one(tmp_path, "Druck [kg/cm²];F (N)\n1,5;2\n2,5;4\n")
 
 
 def test_at_as_a_word_of_a_header_is_no_unit():
@@ -352,6 +372,50 @@ def test_a_unix_time_column_is_the_time(header, tmp_path):
                         "1765011600.1,0.5,2\n")
     assert found["time"].header == header
     np.testing.assert_allclose(np.diff(column_values(table, found["time"])), [0.1], rtol=1e-6)
+
+
+def test_a_quoted_comment_over_two_lines_is_one_cell(tmp_path):
+    # Excel writes a cell holding a line break (Alt+Enter in a comment) quoted over two lines:
+    # was "cell A4 (column 'P [bar]'): 'Anschluss' is not a number"
+    table, found = _one(tmp_path, 'P [bar];F [N];Kommentar\r\n0;3;genullt\r\n'
+                        '0,5;213;"Leck am\nAnschluss; nachgezogen"\r\n1;423;\r\n1;4;"5"" hose"\r\n')
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0, 0.5, 1, 1])
+    assert table.rows[1][2] == "Leck am\nAnschluss; nachgezogen"
+    assert table.row_numbers == [2, 3, 5, 6]
+    # a quote that never closes, or that opens no cell, is no line break: each line a row
+    table, found = _one(tmp_path, 'P [bar];F [N];Kommentar\n0;3;"offen\n1;423;\n', "open.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [3, 423])
+    table, found = _one(tmp_path, 'P [bar],F [N],note\n0,3,5" hose\n1,423,6" hose\n',
+                        "inch.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [3, 423])
+
+
+def test_a_channels_own_time_column_is_the_time(tmp_path):
+    # SignalExpress's text export: each channel beside its own time, 'Time - Pressure': were
+    # left unread, the record taken as rows evenly spaced, its holds' times lost
+    text = ("Time - Pressure\tPressure (bar)\tTime - Force\tForce (N)\n"
+            "0.0\t0\t0.0\t1\n0.1\t0.5\t0.1\t2\n0.2\t1\t0.2\t3\n")
+    table, found = _one(tmp_path, text, "sigex.txt")
+    assert found["time"].header == "Time - Pressure"
+    np.testing.assert_allclose(column_values(table, found["time"]), [0, 0.1, 0.2])
+    # channels on clocks of their own are not one time: named, for --columns to choose
+    table, found = _one(tmp_path, text.replace("0.1\t2", "0.15\t2"), "apart.txt")
+    assert "time" not in found
+    assert unread_time_columns(table, found) == ["Time - Pressure", "Time - Force"]
+
+
+@pytest.mark.parametrize("suffix, how", [
+    (".tdms", "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or "
+     "open it in Excel with NI's TDM importer and save it as .xlsx"),
+    (".dxd", "DEWESoft's data file: export it from DEWESoft as CSV or Excel"),
+])
+def test_a_loggers_binary_file_names_how_to_export_it(suffix, how, tmp_path):
+    # was "unknown table format '.tdms': expected .csv, ...", not saying how to get one
+    path = tmp_path / f"log{suffix}"
+    path.write_bytes(b"TDSm\x00binary")
+    with pytest.raises(ValueError, match=re.escape(
+            f"log{suffix} is {how}: mkm reads .csv, .tsv, .txt, .lvm, .xls, .xlsx or .xlsm")):
+        read_tables(path)
 
 
 def test_rows_of_separators_only_are_blank(tmp_path):
@@ -688,6 +752,19 @@ def test_numbers_in_scientific_notation(tmp_path):
 ])
 def test_times_of_day_and_date_times_as_english_excel_writes_them(cells, seconds, tmp_path):
     # was: "cell A2 (column 'Time'): '11:59:59.5 AM' is not a number"
+    rows = "".join(f"{c};{k};{k}\n" for k, c in enumerate(cells))
+    table, found = _one(tmp_path, f"Time;P [bar];F [N]\n{rows}")
+    np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
+
+
+@pytest.mark.parametrize("cells, seconds", [
+    # ISO 8601's basic format, and its zone after a space or named UTC, as loggers write them
+    (["20261206T090000.000Z", "20261206T090001.250Z"], [0.0, 1.25]),
+    (["2026-12-06 09:00:00.000 +01:00", "2026-12-06 08:00:01.500 Z"], [0.0, 1.5]),
+    (["2026-12-06 09:00:00 UTC", "2026-12-06 10:00:02 +0100"], [0.0, 2.0]),
+])
+def test_iso_date_times_in_basic_format_or_with_a_spaced_zone(cells, seconds, tmp_path):
+    # were "'20261206T090000.000Z' is not a time"
     rows = "".join(f"{c};{k};{k}\n" for k, c in enumerate(cells))
     table, found = _one(tmp_path, f"Time;P [bar];F [N]\n{rows}")
     np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
