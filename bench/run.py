@@ -62,7 +62,15 @@ from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
 from mkm.bench.storage import RunStatus
 from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
-from mkm.bench.vent import VentCheck, VentedZero, below_command, verify_vent, without_fall
+from mkm.bench.vent import (
+    ZERO_NOISE_SIGMAS,
+    VentCheck,
+    VentedZero,
+    below_command,
+    still_pulling,
+    verify_vent,
+    without_fall,
+)
 from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
 
@@ -542,7 +550,15 @@ class BenchRun:
         if unproven is not None and not (acq.shown_moving and fell.verified
                                          and check.first_above_bar is not None):
             judged = below_command(check, *unproven)
-            return fell if judged.verified else judged
+            fell = fell if judged.verified else judged
+        forces, tare = acq.forces_around_vent(), self.recorder.meta.tare \
+            if self.recorder is not None else None
+        if forces is not None and tare and before is not None:
+            cell = self.config.loadcell
+            step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
+                * cell.sensitivity_N_per_V
+            noise_N = ZERO_NOISE_SIGMAS * float(tare["std_N"]) + 2 * step_N
+            fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar))
         return fell
 
     def _write_vent(self, acq: Acquisition | None) -> BaseException | None:

@@ -154,6 +154,9 @@ class Acquisition:
         # the last plausible readings of the run's blocks [bar], and the last one's command
         self._recent_bar: deque = deque(maxlen=int(round(SETTLED_S * self.rate_hz)) + 1)
         self._recent_command_bar = 0.0
+        # the last finite forces [N] before the vent, and of the vent check's samples
+        self._recent_N: deque = deque(maxlen=self._recent_bar.maxlen)
+        self._vent_N: deque = deque(maxlen=self._recent_bar.maxlen)
 
     # one block -------------------------------------------------------------------------------
 
@@ -307,6 +310,8 @@ class Acquisition:
                 self._recent_command_bar = commanded
                 if commanded > 0:
                     self._pressurised = (pressure, commanded)
+        if math.isfinite(force):
+            (self._vent_N if phase == "vent" else self._recent_N).append(force)
         flags, self._pending_flags = self._pending_flags, []
         if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
             flags.append("nonfinite")
@@ -496,6 +501,14 @@ class Acquisition:
             return None
         return (statistics.median(self._recent_bar), self._recent_command_bar,
                 self._recent_bar[-1])
+
+    def forces_around_vent(self) -> tuple[float, float] | None:
+        """(before, after) [N]: the median force over the last
+        :data:`mkm.bench.vent.SETTLED_S` before the vent, and over the vent check's last
+        samples (its settled window, once it verified); None before either."""
+        if not self._recent_N or not self._vent_N:
+            return None
+        return statistics.median(self._recent_N), statistics.median(self._vent_N)
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its
