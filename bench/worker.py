@@ -125,6 +125,10 @@ class Acquisition:
         # loss (:meth:`restarted`), the run's indices go on
         self._offset = 0
         self._read_at = time.monotonic()  # when a block was last read
+        # when the loop's read under way began (None between reads): the run's watchdog vents a
+        # read that hangs past its timeout with a pressure commanded, and says why here
+        self.reading_since: float | None = None
+        self.hung: str = ""
         self.vented = False  # the last command written was a successful vent
         self.written = False  # the last command asked for reached the device
         self.marker_lagged = False  # a pressure went out before its bench marker was written
@@ -170,13 +174,19 @@ class Acquisition:
         while True:
             try:
                 with self.guard():
-                    block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
+                    self.reading_since = time.monotonic()
+                    try:
+                        block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
+                    finally:
+                        self.reading_since = None
                     first = self._first(block)
                     rows = [self._sample(first + k, volts, phase, step, set_bar, trips)
                             for k, volts in enumerate(block.volts)]
                     self.next_index = first + len(block.volts)
                     if trips:  # acts first, keeps books after: the vent before the rows
                         tripped = self._vent_for(*trips[0])
+                    elif self.hung:  # vented by the watchdog as the read hung: the run stops
+                        tripped = Stop(RunStatus.FAILED, self.hung)
                     self.recorder.samples(rows)  # queued: the disk is never waited for here
                     if tripped is None:
                         stuck = self.recorder.stuck()
@@ -199,6 +209,7 @@ class Acquisition:
                     try:
                         with self.guard():
                             tripped = self._vent_for(
+                                self.hung or
                                 f"read interlock: no reading within {daq.read_timeout_s:g} s "
                                 f"with {self.command_bar:g} bar commanded at "
                                 f"{self.next_index / self.rate_hz:g} s ({exc})",
