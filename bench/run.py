@@ -270,17 +270,20 @@ class _ReadWatchdog:
             hung_s = time.monotonic() - since
             if hung_s < self.limit_s:
                 continue
+            t_s = acq.next_index / acq.rate_hz
+            # the loop stops at its next block from now on, whatever the write below does
+            acq.hung = (f"read interlock: the read of the device did not return within "
+                        f"{hung_s:.1f} s (its timeout {run.config.daq.read_timeout_s:g} s) with "
+                        f"{held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
             try:  # acts first
                 run.backend.write_command(run.config.regulator.command_volts(0.0))
                 ok, vent = True, "vented by the watchdog"
             except BaseException as exc:
                 ok, vent = False, (f"the watchdog's vent command failed ({type(exc).__name__}: "
                                    f"{exc}): VENT BY HAND")
-            t_s = acq.next_index / acq.rate_hz
-            acq.hung = (f"read interlock: the read of the device did not return within "
-                        f"{hung_s:.1f} s (its timeout {run.config.daq.read_timeout_s:g} s) with "
-                        f"{held_bar:g} bar commanded after {t_s:g} s: the driver hangs; {vent}")
-            self._books(ok, t_s)
+            acq.hung_vent = vent
+            if not self._stop.is_set():  # else the shutdown, under way, keeps the books
+                self._books(ok, t_s)
             return
 
     def _books(self, ok: bool, t_s: float) -> None:
@@ -293,9 +296,10 @@ class _ReadWatchdog:
                 lease = run.lease
                 lease.post(lambda: lease.command(0.0))
             run.recorder.meta.manual_vent_required = True
-            run.recorder.mark(RunStatus.FAILED, f"{acq.hung}; the vent is not verified until "
-                              "the read returns", 0.0)
-            run.notify(f"{acq.hung}; {run.recorder.path} records it")
+            said = acq.hung_said()
+            run.recorder.mark(RunStatus.FAILED, f"{said}; the vent is not verified until the "
+                              "read returns", 0.0)
+            run.notify(f"{said}; {run.recorder.path} records it")
         except BaseException:  # the vent went out; the shutdown records the run
             pass
 
@@ -658,8 +662,9 @@ class BenchRun:
         acq = self.acquisition
         if self._watchdog is not None:  # the shutdown vents now and reads on its own
             self._watchdog.stop()
-            if acq.hung and acq.hung not in reason:  # the read came back with an error
-                problems.append(acq.hung)
+            # the read came back with an error, or as the watchdog wrote its vent
+            problems.extend(part for part in (acq.hung, acq.hung_vent)
+                            if part and part not in reason)
         revive = hasattr(self.backend, "revive")  # a device loss is tried once, then said
         gone = False  # lost, and the reset did not bring it back: nothing can be read
         failure = self._write_vent(acq)

@@ -128,7 +128,8 @@ class Acquisition:
         # when the loop's read under way began (None between reads): the run's watchdog vents a
         # read that hangs past its timeout with a pressure commanded, and says why here
         self.reading_since: float | None = None
-        self.hung: str = ""
+        self.hung = ""  # why the read hung ("" while none did)
+        self.hung_vent = ""  # what the watchdog's vent did, once written
         self.vented = False  # the last command written was a successful vent
         self.written = False  # the last command asked for reached the device
         self.marker_lagged = False  # a pressure went out before its bench marker was written
@@ -186,7 +187,7 @@ class Acquisition:
                     if trips:  # acts first, keeps books after: the vent before the rows
                         tripped = self._vent_for(*trips[0])
                     elif self.hung:  # vented by the watchdog as the read hung: the run stops
-                        tripped = Stop(RunStatus.FAILED, self.hung)
+                        tripped = Stop(RunStatus.FAILED, self.hung_said())
                     self.recorder.samples(rows)  # queued: the disk is never waited for here
                     if tripped is None:
                         stuck = self.recorder.stuck()
@@ -209,7 +210,7 @@ class Acquisition:
                     try:
                         with self.guard():
                             tripped = self._vent_for(
-                                self.hung or
+                                self.hung_said() or
                                 f"read interlock: no reading within {daq.read_timeout_s:g} s "
                                 f"with {self.command_bar:g} bar commanded at "
                                 f"{self.next_index / self.rate_hz:g} s ({exc})",
@@ -512,6 +513,10 @@ class Acquisition:
             return None
         return (statistics.median(self._recent_bar), self._recent_command_bar,
                 self._recent_bar[-1])
+
+    def hung_said(self) -> str:
+        """Why the read hung and what the watchdog's vent did, or ""."""
+        return "; ".join(filter(None, [self.hung, self.hung_vent]))
 
     def forces_around_vent(self) -> tuple[float, float] | None:
         """(before, after) [N]: the median force over the last

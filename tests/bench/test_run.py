@@ -617,3 +617,38 @@ def test_a_read_that_hangs_with_a_pressure_commanded_is_vented_by_the_watchdog(c
     hung_s = float(re.search(r"did not return within ([0-9.]+) s", result.reason).group(1))
     assert hung_s >= 0.5 + 0.1 + READ_HANG_MARGIN_S  # its timeout, a block, the margin
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_read_that_returns_as_the_watchdog_vents_stops_the_run_there(config, tmp_path):
+    # the hung read of sample 45 returns while the watchdog's vent write is still under way
+    # (the driver slow for it too): the loop went on with the run, its next step's pressure
+    # written after the watchdog's vent, as nothing said yet that the read had hung
+    import threading
+
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, write = backend.read, backend.write_command
+    writing, release, hung = threading.Event(), threading.Event(), []
+
+    def slow_for_the_watchdog(volts):
+        if threading.current_thread().name == "mkm-read-watchdog":
+            writing.set()
+            release.wait(60)  # the test's net; released once the run has ended
+        write(volts)
+
+    def hanging(n, timeout):
+        if backend._index == 45 and not hung:
+            hung.append(writing.wait(60))  # returns as the watchdog writes its vent
+        return read(n, timeout)
+
+    backend.read, backend.write_command = hanging, slow_for_the_watchdog
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    try:
+        result = run.execute()
+    finally:
+        release.set()
+    assert hung == [True]
+    assert result.status == "failed" and result.reason.startswith(
+        "read interlock: the read of the device did not return within"), result.reason
+    commands = load_run(result.path).commands
+    assert not (commands["command_bar"][commands["sample"] > 45] > 0).any()  # no pressure since
