@@ -227,7 +227,8 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
                  f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "
                  f"than {FORCE_KEPT_FRACTION:.0%} of it): the muscle still pulls, so the "
                  "monitor's reading proves nothing: a monitor that reports its command or is "
-                 "stuck, with an exhaust that did not open; check the regulator"))
+                 "stuck, with an exhaust that did not open (or a load cell stuck); check the "
+                 "regulator and the load cell"))
 
 
 def verify_vent(backend, config, operator=None, started: bool = True,
