@@ -60,9 +60,17 @@ from mkm.bench.preflight import braid_lock, loadcell_warning
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
-from mkm.bench.storage import RunStatus
+from mkm.bench.storage import CommandRecord, RunStatus
 from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
-from mkm.bench.vent import VentCheck, VentedZero, below_command, verify_vent, without_fall
+from mkm.bench.vent import (
+    ZERO_NOISE_SIGMAS,
+    VentCheck,
+    VentedZero,
+    below_command,
+    still_pulling,
+    verify_vent,
+    without_fall,
+)
 from mkm.bench.wakelock import awake
 from mkm.bench.worker import Acquisition, Stop
 
@@ -70,6 +78,11 @@ EXIT_OK, EXIT_FAILED, EXIT_STORAGE, EXIT_GAPS, EXIT_VENT = 0, 1, 2, 3, 4
 STATUS_EVERY_S = 10.0  # without a terminal: one status line this often
 VENT_WRITES = 3  # a vent write cut or refused is written again at once, this many in all
 DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before saying it waits
+#: a read of the device still under way this long [s] past its timeout and its block's time
+#: hangs (a driver that does not keep its timeout): with a pressure commanded, the watchdog vents
+READ_HANG_MARGIN_S = 1.0
+#: the watchdog looks at the loop's read this often [s]
+WATCH_EVERY_S = 0.1
 
 
 def notify_stderr(message: str) -> None:
@@ -219,6 +232,78 @@ class _Plot:
         self.plot.close()
 
 
+class _ReadWatchdog:
+    """Vents a run whose read of the device hangs with a pressure commanded.
+
+    A read returns within its timeout and its block's time, or raises (the read interlock then
+    vents); a driver that does not keep its timeout holds the acquisition loop, every interlock
+    with it, while the regulator holds its pressure. A thread of its own looks at the loop's
+    read (:attr:`mkm.bench.worker.Acquisition.reading_since`) every :data:`WATCH_EVERY_S`:
+    past ``daq.read_timeout_s`` + the block's time + :data:`READ_HANG_MARGIN_S` with a pressure
+    commanded it writes the vent (acts first), then keeps the books: the command's row, the
+    bench marker, run.json ``failed`` with why and the vent not verified (a process that never
+    comes back is so recorded), a notice; the loop stops the run once the read returns.
+    """
+
+    def __init__(self, run: BenchRun):
+        self.run = run
+        daq = run.config.daq
+        self.limit_s = (daq.read_timeout_s + daq.read_block_samples / daq.sample_rate_hz
+                        + READ_HANG_MARGIN_S)
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._watch, name="mkm-read-watchdog",
+                                        daemon=True)
+        self._thread.start()
+
+    def stop(self) -> None:
+        """No vent from here on (the shutdown vents); never waits: a write the hung driver
+        holds would hold the shutdown too, and a vent written twice is harmless."""
+        self._stop.set()
+
+    def _watch(self) -> None:
+        run = self.run
+        acq = run.acquisition
+        while not self._stop.wait(WATCH_EVERY_S):
+            since, held_bar = acq.reading_since, acq.command_bar
+            if since is None or not held_bar > 0:
+                continue
+            hung_s = time.monotonic() - since
+            if hung_s < self.limit_s:
+                continue
+            t_s = acq.next_index / acq.rate_hz
+            # the loop stops at its next block from now on, whatever the write below does
+            acq.hung = (f"read interlock: the read of the device did not return within "
+                        f"{hung_s:.1f} s (its timeout {run.config.daq.read_timeout_s:g} s) with "
+                        f"{held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
+            try:  # acts first
+                run.backend.write_command(run.config.regulator.command_volts(0.0))
+                ok, vent = True, "vented by the watchdog"
+            except BaseException as exc:
+                ok, vent = False, (f"the watchdog's vent command failed ({type(exc).__name__}: "
+                                   f"{exc}): VENT BY HAND")
+            acq.hung_vent = vent
+            if not self._stop.is_set():  # else the shutdown, under way, keeps the books
+                self._books(ok, t_s)
+            return
+
+    def _books(self, ok: bool, t_s: float) -> None:
+        """After the watchdog's vent: its row, the marker, run.json, a notice (never raises)."""
+        run, acq = self.run, self.run.acquisition
+        try:
+            run.recorder.command(CommandRecord(t_s, acq.next_index, 0.0, 0.0, ok,
+                                               "watchdog vent"))
+            if ok and run.lease is not None:
+                lease = run.lease
+                lease.post(lambda: lease.command(0.0))
+            run.recorder.meta.manual_vent_required = True
+            said = acq.hung_said()
+            run.recorder.mark(RunStatus.FAILED, f"{said}; the vent is not verified until the "
+                              "read returns", 0.0)
+            run.notify(f"{said}; {run.recorder.path} records it")
+        except BaseException:  # the vent went out; the shutdown records the run
+            pass
+
+
 class BenchRun:
     """One run on ``backend`` with ``config``, recorded under ``out_root``.
 
@@ -255,6 +340,7 @@ class BenchRun:
         self.owner: BenchOwner | None = None
         self._stop_by: str | None = None
         self._started = False
+        self._watchdog: _ReadWatchdog | None = None
         self.vent_check: VentCheck | None = None
         self._vent_rows_problems: list[str] = []  # the vent check's rows not recorded
         self.storage_failed = False
@@ -444,6 +530,8 @@ class BenchRun:
         self.acquisition.command(0.0, "vent")
         self.backend.start()
         self._started = True
+        if self.config.regulator.electronic:
+            self._watchdog = _ReadWatchdog(self)
 
     def _on_step(self, step) -> None:
         for observer in self._observers:
@@ -542,7 +630,15 @@ class BenchRun:
         if unproven is not None and not (acq.shown_moving and fell.verified
                                          and check.first_above_bar is not None):
             judged = below_command(check, *unproven)
-            return fell if judged.verified else judged
+            fell = fell if judged.verified else judged
+        forces, tare = acq.forces_around_vent(), self.recorder.meta.tare \
+            if self.recorder is not None else None
+        if forces is not None and tare and before is not None:
+            cell = self.config.loadcell
+            step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
+                * cell.sensitivity_N_per_V
+            noise_N = ZERO_NOISE_SIGMAS * float(tare["std_N"]) + 2 * step_N
+            fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar))
         return fell
 
     def _write_vent(self, acq: Acquisition | None) -> BaseException | None:
@@ -564,6 +660,11 @@ class BenchRun:
         reached the device, and only then: a failed one is said instead."""
         problems = []
         acq = self.acquisition
+        if self._watchdog is not None:  # the shutdown vents now and reads on its own
+            self._watchdog.stop()
+            # the read came back with an error, or as the watchdog wrote its vent
+            problems.extend(part for part in (acq.hung, acq.hung_vent)
+                            if part and part not in reason)
         revive = hasattr(self.backend, "revive")  # a device loss is tried once, then said
         gone = False  # lost, and the reset did not bring it back: nothing can be read
         failure = self._write_vent(acq)

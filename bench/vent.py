@@ -200,6 +200,37 @@ def without_fall(check: VentCheck, before_bar: float, commanded_bar: float, last
                  "supply"))
 
 
+#: a muscle that vents lets go of its force: a force after the vent above this fraction of the
+#: one before it (and above the load cell's noise) is a muscle that still pulls
+FORCE_KEPT_FRACTION = 0.5
+
+
+def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: float,
+                  commanded_bar: float) -> VentCheck:
+    """``check`` weighed by the load cell: the muscle's force (from the tare) ``before_N``
+    before the vent and ``after_N`` over the check's settled window.
+
+    A vented muscle is slack: its force falls with its pressure (to a tenth of it or less once
+    the monitor has settled below the threshold). One that still pulls more than
+    :data:`FORCE_KEPT_FRACTION` of its force before the vent, above the load cell's noise
+    ``noise_N``, is still pressurised whatever the monitor reads: a regulator whose monitor
+    reports its command (or is stuck) and whose exhaust did not open. A force before the vent
+    within the noise tells nothing.
+    """
+    if not check.verified or check.how != "monitor" or not before_N > noise_N:
+        return check
+    if not after_N > max(noise_N, FORCE_KEPT_FRACTION * before_N):
+        return check
+    return dataclasses.replace(
+        check, verified=False, unfollowed_bar=commanded_bar,
+        problem=(f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell "
+                 f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "
+                 f"than {FORCE_KEPT_FRACTION:.0%} of it): the muscle still pulls, so the "
+                 "monitor's reading proves nothing: a monitor that reports its command or is "
+                 "stuck, with an exhaust that did not open (or a load cell stuck); check the "
+                 "regulator and the load cell"))
+
+
 def verify_vent(backend, config, operator=None, started: bool = True,
                 deadline=lambda: None, record=lambda block: None,
                 vented_zero: VentedZero | None = None) -> VentCheck:

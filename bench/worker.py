@@ -125,6 +125,11 @@ class Acquisition:
         # loss (:meth:`restarted`), the run's indices go on
         self._offset = 0
         self._read_at = time.monotonic()  # when a block was last read
+        # when the loop's read under way began (None between reads): the run's watchdog vents a
+        # read that hangs past its timeout with a pressure commanded, and says why here
+        self.reading_since: float | None = None
+        self.hung = ""  # why the read hung ("" while none did)
+        self.hung_vent = ""  # what the watchdog's vent did, once written
         self.vented = False  # the last command written was a successful vent
         self.written = False  # the last command asked for reached the device
         self.marker_lagged = False  # a pressure went out before its bench marker was written
@@ -154,6 +159,9 @@ class Acquisition:
         # the last plausible readings of the run's blocks [bar], and the last one's command
         self._recent_bar: deque = deque(maxlen=int(round(SETTLED_S * self.rate_hz)) + 1)
         self._recent_command_bar = 0.0
+        # the last finite forces [N] before the vent, and of the vent check's samples
+        self._recent_N: deque = deque(maxlen=self._recent_bar.maxlen)
+        self._vent_N: deque = deque(maxlen=self._recent_bar.maxlen)
 
     # one block -------------------------------------------------------------------------------
 
@@ -167,13 +175,19 @@ class Acquisition:
         while True:
             try:
                 with self.guard():
-                    block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
+                    self.reading_since = time.monotonic()
+                    try:
+                        block = self.backend.read(daq.read_block_samples, daq.read_timeout_s)
+                    finally:
+                        self.reading_since = None
                     first = self._first(block)
                     rows = [self._sample(first + k, volts, phase, step, set_bar, trips)
                             for k, volts in enumerate(block.volts)]
                     self.next_index = first + len(block.volts)
                     if trips:  # acts first, keeps books after: the vent before the rows
                         tripped = self._vent_for(*trips[0])
+                    elif self.hung:  # vented by the watchdog as the read hung: the run stops
+                        tripped = Stop(RunStatus.FAILED, self.hung_said())
                     self.recorder.samples(rows)  # queued: the disk is never waited for here
                     if tripped is None:
                         stuck = self.recorder.stuck()
@@ -196,6 +210,7 @@ class Acquisition:
                     try:
                         with self.guard():
                             tripped = self._vent_for(
+                                self.hung_said() or
                                 f"read interlock: no reading within {daq.read_timeout_s:g} s "
                                 f"with {self.command_bar:g} bar commanded at "
                                 f"{self.next_index / self.rate_hz:g} s ({exc})",
@@ -307,6 +322,8 @@ class Acquisition:
                 self._recent_command_bar = commanded
                 if commanded > 0:
                     self._pressurised = (pressure, commanded)
+        if math.isfinite(force):
+            (self._vent_N if phase == "vent" else self._recent_N).append(force)
         flags, self._pending_flags = self._pending_flags, []
         if not math.isfinite(force) or (self.electronic and not math.isfinite(pressure)):
             flags.append("nonfinite")
@@ -496,6 +513,18 @@ class Acquisition:
             return None
         return (statistics.median(self._recent_bar), self._recent_command_bar,
                 self._recent_bar[-1])
+
+    def hung_said(self) -> str:
+        """Why the read hung and what the watchdog's vent did, or ""."""
+        return "; ".join(filter(None, [self.hung, self.hung_vent]))
+
+    def forces_around_vent(self) -> tuple[float, float] | None:
+        """(before, after) [N]: the median force over the last
+        :data:`mkm.bench.vent.SETTLED_S` before the vent, and over the vent check's last
+        samples (its settled window, once it verified); None before either."""
+        if not self._recent_N or not self._vent_N:
+            return None
+        return statistics.median(self._recent_N), statistics.median(self._vent_N)
 
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its

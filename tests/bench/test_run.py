@@ -1,7 +1,9 @@
 """bench.run on the simulated bench (virtual clock): sequence, settle logic, files, faults."""
 
 import json
+import re
 import signal
+import time
 
 import numpy as np
 import pandas as pd
@@ -565,3 +567,88 @@ def test_a_value_error_of_mkm_mid_run_is_a_bug_not_bad_input(config, tmp_path, m
     run = load_run(folder)
     assert run.status == "failed" and run.reason.startswith("LinAlgError: SVD did not converge")
     assert run.meta.vent_check["verified"]
+
+
+def test_a_read_that_hangs_with_a_pressure_commanded_is_vented_by_the_watchdog(config,
+                                                                               tmp_path):
+    # The driver's read of sample 45 (0.5 bar commanded) does not keep its 0.5 s timeout: it
+    # neither returns nor raises. The loop, every interlock with it, waited in it for as long
+    # as it hung, the regulator holding 0.5 bar. The run's watchdog vents 1 s past the
+    # timeout and the block's time, and records why; the run stops once the read returns.
+    import threading
+
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, seen = backend.read, {}
+
+    def hanging(n, timeout):
+        if backend._index == 45 and not seen:
+            seen["command_bar"] = backend.bench.command_bar
+            released = threading.Event()
+            # hangs until the watchdog vented and recorded it (the test's net: 60 s)
+            deadline = time.monotonic() + 60
+            while time.monotonic() < deadline and not released.is_set():
+                meta = json.loads((run.recorder.path / "run.json").read_text())
+                if backend.bench.command_bar == 0.0 and meta["status"] == "failed":
+                    seen["meta"], seen["hung_s"] = meta, time.monotonic() - start
+                    released.set()
+                time.sleep(0.01)
+        return read(n, timeout)
+
+    backend.read = hanging
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    start = time.monotonic()
+    result = run.execute()
+    assert seen["command_bar"] == 0.5  # pressurised when the read hung
+    # while it hung: vented, and run.json says so, the vent not yet verified
+    assert seen["meta"]["manual_vent_required"] and "vented by the watchdog" in \
+        seen["meta"]["reason"]
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert result.reason.startswith("read interlock: the read of the device did not return "
+                                    "within")
+    assert "(its timeout 0.5 s) with 0.5 bar commanded after 4.5 s: the driver hangs; vented " \
+        "by the watchdog" in result.reason
+    run_ = load_run(result.path)
+    assert run_.meta.vent_check["verified"] and not run_.meta.manual_vent_required
+    assert "watchdog vent" in set(run_.commands["purpose"])
+    np.testing.assert_array_equal(run_.samples["sample"], np.arange(len(run_.samples)))
+    from mkm.bench.run import READ_HANG_MARGIN_S
+
+    hung_s = float(re.search(r"did not return within ([0-9.]+) s", result.reason).group(1))
+    assert hung_s >= 0.5 + 0.1 + READ_HANG_MARGIN_S  # its timeout, a block, the margin
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_read_that_returns_as_the_watchdog_vents_stops_the_run_there(config, tmp_path):
+    # the hung read of sample 45 returns while the watchdog's vent write is still under way
+    # (the driver slow for it too): the loop went on with the run, its next step's pressure
+    # written after the watchdog's vent, as nothing said yet that the read had hung
+    import threading
+
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, write = backend.read, backend.write_command
+    writing, release, hung = threading.Event(), threading.Event(), []
+
+    def slow_for_the_watchdog(volts):
+        if threading.current_thread().name == "mkm-read-watchdog":
+            writing.set()
+            release.wait(60)  # the test's net; released once the run has ended
+        write(volts)
+
+    def hanging(n, timeout):
+        if backend._index == 45 and not hung:
+            hung.append(writing.wait(60))  # returns as the watchdog writes its vent
+        return read(n, timeout)
+
+    backend.read, backend.write_command = hanging, slow_for_the_watchdog
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    try:
+        result = run.execute()
+    finally:
+        release.set()
+    assert hung == [True]
+    assert result.status == "failed" and result.reason.startswith(
+        "read interlock: the read of the device did not return within"), result.reason
+    commands = load_run(result.path).commands
+    assert not (commands["command_bar"][commands["sample"] > 45] > 0).any()  # no pressure since

@@ -384,6 +384,44 @@ def test_two_noise_spikes_as_the_vent_check_begins_are_no_fall(config, tmp_path)
     assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-2.0), abs=2e-3)
 
 
+def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denies(config,
+                                                                                   tmp_path):
+    # The regulator's monitor output reports its setpoint, not the pressure (it reads "OK"
+    # whatever the valve does), and from 15 s its valve no longer moves: at the end of the run
+    # the vent is commanded, the monitor reads 0.000 bar at once, and the vent was verified
+    # (exit 0, marker removed) with the muscle at 0.55 bar pulling 215 N. A vented muscle lets
+    # go of its force: the load cell still reading it verifies no vent.
+    backend = SimBackend(config)
+    bench, reg = backend.bench, config.regulator
+    step, read = bench.step, backend.read
+    span_V = reg.monitor_V_at_full_scale - reg.monitor_V_at_zero
+
+    def reporting_its_command():
+        cell_V, _ = step()
+        return cell_V, reg.monitor_V_at_zero + bench.command_bar / reg.full_scale_bar * span_V
+
+    def valve_stuck_from_15_s(n, timeout):
+        if backend._index >= 150:
+            bench.regulator_stuck = True
+        return read(n, timeout)
+
+    bench.step, backend.read = reporting_its_command, valve_stuck_from_15_s
+    result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "but the load cell still reads" in result.reason
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
+    run = load_run(result.path)
+    check = run.meta.vent_check
+    assert not check["verified"] and check["pressure_bar"] == 0.0 and check["unfollowed_bar"] == 0.5
+    forces = re.search(r"still reads ([0-9.]+) N against ([0-9.]+) N before", result.reason)
+    after_N, before_N = float(forces.group(1)), float(forces.group(2))
+    assert after_N == pytest.approx(before_N, rel=0.02)  # nothing let go: creep alone
+    # the truth: the pressure the valve stuck at, above the 0.5 bar step (falling from 1 bar)
+    assert bench.pressure_bar > 0.5 and bench.force_N == pytest.approx(after_N, abs=2.0)
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
+    assert json.loads(marker.read_text())["unfollowed_bar"] == 0.5
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""

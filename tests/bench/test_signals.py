@@ -77,7 +77,7 @@ def assert_every_flushed_sample(run, flushed):
     np.testing.assert_array_equal(run.samples["sample"], np.arange(len(run.samples)))
 
 
-STOPS = [("SIGINT", 1), ("SIGINT", 2), ("SIGTERM", 1)]
+STOPS = [("SIGINT", 1), ("SIGINT", 2), ("SIGTERM", 1), ("SIGTERM", 2)]
 if hasattr(signal, "SIGHUP"):
     STOPS.append(("SIGHUP", 1))
 
@@ -101,6 +101,8 @@ def test_stop_signal_vents_within_0_2_s_and_records(tmp_path, name, times):
         assert "at a safe point; vented" in run.reason
     else:
         assert name in run.reason and "at once; vented" in run.reason
+    if name != "SIGINT" and times == 2:  # the second is noted, the first one's stop goes on
+        assert f"{name} received" in run.reason, run.reason
     assert_every_flushed_sample(run, flushed)
     last = run.commands.iloc[-1]
     assert last["purpose"] == "vent" and last["ok"] and last["command_bar"] == 0.0

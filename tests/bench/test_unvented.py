@@ -15,6 +15,7 @@ from mkm.bench.unvented import BenchLease, bench_folder, find_unvented
 def test_a_live_lease_is_not_unvented_and_release_removes_it(tmp_path):
     lease = BenchLease("sim-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
     lease.started()
+    lease.end()  # the test writes the marker itself from here on
     lease.command(1.5)
     marker = json.loads(lease.path.read_text())
     assert marker["last_command_bar"] == 1.5 and marker["run_path"] == str(tmp_path / "run")
@@ -26,6 +27,7 @@ def test_a_live_lease_is_not_unvented_and_release_removes_it(tmp_path):
 def test_a_dead_or_reused_pid_is_unvented(tmp_path):
     lease = BenchLease("ni-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
     lease.started()
+    lease.end()  # the test writes the marker itself from here on
     lease.command(2.5)
     # the same pid started at another time: another process now holds it
     data = json.loads(lease.path.read_text())
@@ -222,6 +224,7 @@ def dead_marker_hangs(tmp_path, monkeypatch):
 
     lease = BenchLease("sim-Dev1", tmp_path / "dead-run", "2026-12-01T10:00:00+00:00")
     lease.started()
+    lease.end()  # the test writes the marker itself from here on
     lease.command(1.0)
     data = json.loads(lease.path.read_text())
     data["process"]["started_unix_s"] -= 100.0  # as if its process had died
@@ -320,6 +323,7 @@ def test_a_kept_outcome_that_is_none_a_run_ends_with_is_ignored(tmp_path, kept):
     # and mended as killed, never with a status a run does not end with
     lease = BenchLease("sim-Dev1", tmp_path / "run", "2026-12-01T10:00:00+00:00")
     lease.started()
+    lease.end()  # the test writes the marker itself from here on
     lease.command(1.0)
     lease.ended(kept)
     data = json.loads(lease.path.read_text())
