@@ -154,12 +154,15 @@ class Search:
         of the searching model's (not the practical range's, past which none searches)."""
         low, high = self.pressure_span_bar
         tol = 1e-6 * (high - low)
+        at_top = [str(k) for k, req in enumerate(self.requirements, start=1)
+                  if abs(req.pressure_bar - high) <= tol]
+        if not at_top or abs(high - PRACTICAL_RANGE.pressure_bar[1]) <= tol:
+            return box_edges(row, self.constraints, self.calibration)
+        which = (f"requirement {at_top[0]}" if len(at_top) == 1
+                 else f"requirements {', '.join(at_top)}")
         return box_edges(row, self.constraints, self.calibration) + [
-            f"P = {req.pressure_bar:g} bar (requirement {k}; the upper end of the "
-            f"{self.searcher}'s {span_text(low, high)} bar)"
-            for k, req in enumerate(self.requirements, start=1)
-            if abs(req.pressure_bar - high) <= tol
-            and abs(high - PRACTICAL_RANGE.pressure_bar[1]) > tol]
+            f"P = {high:g} bar ({which}; the upper end of the {self.searcher}'s "
+            f"{span_text(low, high)} bar)"]
 
     def box_note(self) -> str:
         """The searched D0 x t0 box where it is not the surrogate's training box (and

@@ -472,6 +472,11 @@ def test_a_pressure_or_rubber_at_an_end_of_what_was_searched_is_named(tmp_path):
     at_top = replace(found, requirements=[Requirement(100.0, 8.0, 0.10)],
                      pressure_span_bar=(0.0, 8.0))
     assert not any(e.startswith("P =") for e in at_top.edges(best))
+    # two requirements at that pressure: the pressure named once, with both
+    two = replace(found, requirements=[Requirement(100.0, 2.5, 0.10),
+                                       Requirement(80.0, 2.5, 0.20)])
+    assert [e for e in two.edges(best) if e.startswith("P =")] == [
+        "P = 2.5 bar (requirements 1, 2; the upper end of the surrogate's 0:2.5 bar)"]
     # a rubber three times as stiff as Silastic S identified: Silastic S is the softer end
     stiff = Calibration(tmp_path / "calibration.json", {"axisym": {
         "theta0_deg": 33.0, "C10_MPa": 3 * SILASTIC_S.C10_MPa,
