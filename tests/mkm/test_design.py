@@ -492,6 +492,29 @@ def test_a_pressure_or_rubber_at_an_end_of_what_was_searched_is_named(tmp_path):
     assert box_edges(row, {**box, "rubber": ["silastic_s"]}, stiff) == []
 
 
+def test_two_names_of_one_rubber_are_searched_once():
+    """--rubber calibrated,silastic_s with the shipped calibration, whose rubber is Silastic
+    S: every design came twice (rank 1 and 2 the same muscle), half the FE verifications
+    spent on copies; the summary now says the two names are one rubber here."""
+    found = search([Requirement(300.0, 2.0, 0.10)], {"rubber": ("calibrated", "silastic_s")})
+    assert found.constraints["rubber"] == ["calibrated"]
+    assert set(found.candidates["rubber"]) == {"calibrated"}
+    assert found.searcher_note == ("rubber silastic_s is calibrated here (the same C10 and "
+                                   "C01): searched once")
+    # two rubbers that differ are both searched, without a note
+    from mkm.fem.calibration import Calibration
+    from mkm.fem.materials import SILASTIC_S
+
+    stiff = Calibration(Calibration.shipped().path, {
+        **Calibration.shipped().entries,
+        "axisym": {**Calibration.shipped().entries["axisym"],
+                   "C10_MPa": 1.2 * SILASTIC_S.C10_MPa, "C01_MPa": 1.2 * SILASTIC_S.C01_MPa}})
+    both = search([Requirement(300.0, 2.0, 0.10)], {"rubber": ("calibrated", "silastic_s")},
+                  calibration=stiff)
+    assert both.constraints["rubber"] == ["calibrated", "silastic_s"]
+    assert "searched once" not in both.searcher_note
+
+
 def test_the_chosen_muscle_has_an_id_a_bench_config_takes():
     """designs.json's chosen_muscle is read as a config's [muscle]: its id names the design's
     geometry (an empty id is refused there, and names no run folder)."""
