@@ -242,6 +242,21 @@ def loadcell_table(fit: dict, config: BenchConfig | None = None) -> str:
     return tomlkit.dumps(document).rstrip("\n")
 
 
+def refused_fit(fit: dict, config: BenchConfig) -> str | None:
+    """Why ``config`` with the fitted sensitivity and offset (:func:`loadcell_table`'s block
+    pasted in) is refused, or None if it is taken: a cell whose ``+-10 V`` rail the fitted
+    sensitivity puts below its capacity clips before it."""
+    from dataclasses import replace
+
+    cell = replace(config.loadcell, sensitivity_N_per_V=float(f"{fit['sensitivity_N_per_V']:.6g}"),
+                   offset_V=float(f"{fit['offset_V']:.6g}"))
+    try:
+        replace(config, loadcell=cell).check()
+    except ValueError as exc:
+        return str(exc)
+    return None
+
+
 def fit_loadcell(mass_kg, volts) -> dict:
     """Least-squares load-cell calibration from known masses and the mean volts under each.
 

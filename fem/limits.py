@@ -220,16 +220,19 @@ class PracticalRange:
                 if not low <= float(values[name]) <= high:
                     out.append(f"{name}={float(values[name]):g} outside [{low:g}, {high:g}]")
         D0, t0, L0 = (values.get(k) for k in ("D0_mm", "t0_mm", "L0_mm"))
-        if D0 is not None and t0 is not None and t0 > self.t0_per_D0_max * D0:
+        # a bound that is a product is itself rounded (1.5 x 0.6 = 0.8999999999999999): a value
+        # typed at it is on it
+        slack = 1.0 + 1e-12
+        if D0 is not None and t0 is not None and t0 > self.t0_per_D0_max * D0 * slack:
             out.append(f"t0_mm={t0:g} above {self.t0_per_D0_max:g} D0_mm = "
                        f"{self.t0_per_D0_max * D0:g}")
-        if D0 is not None and L0 is not None and L0 < self.L0_per_D0_min * D0:
+        if D0 is not None and L0 is not None and L0 * slack < self.L0_per_D0_min * D0:
             out.append(f"L0_mm={L0:g} below {self.L0_per_D0_min:g} D0_mm = "
                        f"{self.L0_per_D0_min * D0:g}")
         C10, C01 = values.get("C10_MPa"), values.get("C01_MPa")
         if C10 is not None and C01 is not None:
             low, high = self.C01_per_C10
-            if not low * C10 <= C01 <= high * C10:
+            if not low * C10 <= C01 * slack or C01 > high * C10 * slack:
                 out.append(f"C01_MPa={C01:g} outside [{low:g}, {high:g}] x C10_MPa")
         theta0, eps = values.get("theta0_deg"), values.get("eps")
         if theta0 is not None and eps is not None:

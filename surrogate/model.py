@@ -31,6 +31,16 @@ if TYPE_CHECKING:
 SAME_VALUE_RTOL = 1e-9
 
 
+#: why a point whose predictive std exceeds any force the muscle can develop has no answer
+UNINFORMED = "no answer: its std exceeds any force the muscle can develop there"
+
+
+def uninformed_text(std_N: float, ceiling_N: float) -> str:
+    """The reason column of such a point: :data:`UNINFORMED`, with both forces."""
+    return (f"{UNINFORMED} (std {std_N:.3g} N, Equation 2 on the braid at rest {ceiling_N:.4g} "
+            "N)")
+
+
 class OutOfDomainWarning(UserWarning):
     """A surrogate was asked for points outside the box it was trained on."""
 
@@ -240,8 +250,15 @@ class SurrogateForceModel(ForceModel):
         inputs = {name: np.broadcast_to(getattr(prediction, name), reason.shape)
                   for name in INPUTS}
         locked = np.broadcast_to(self._past_lock(inputs["eps"], self.parameters), reason.shape)
+        std = prediction.extras.get("force_std_N")
+        in_domain = np.broadcast_to(prediction.extras.get("in_domain", False), reason.shape)
+        ceiling = self._ceiling_N(inputs["pressure_bar"], inputs["D0_mm"], inputs["t0_mm"])
         for index in np.ndindex(reason.shape):  # a scalar prediction's index is ()
             if not unanswered[index]:
+                continue
+            if (std is not None and in_domain[index]
+                    and float(std[index]) > ceiling[index] > 0):
+                reason[index] = uninformed_text(float(std[index]), float(ceiling[index]))
                 continue
             parts = []
             for name, values in inputs.items():
@@ -270,6 +287,16 @@ class SurrogateForceModel(ForceModel):
             if not lo - slack <= value <= hi + slack:
                 out.append(f"{name}={value:g} not in [{lo:g}, {hi:g}]")
         return out
+
+    def _ceiling_N(self, P, D0, t0) -> np.ndarray:
+        """More than any force the muscle can develop at ``P`` [N]: Equation 2 on the braid's
+        diameter at rest (no rubber, no shortening); infinite without a braid angle."""
+        theta0 = self.parameters.get("theta0_deg")
+        if theta0 is None:
+            return np.full(np.shape(P), np.inf)
+        from mkm.fem.eq2 import chou_hannaford
+
+        return chou_hannaford(P, np.asarray(D0) + 2 * np.asarray(t0), 0.0, float(theta0))
 
     def _past_lock(self, eps, parameters) -> np.ndarray:
         """Where ``eps`` is at or past the braid lock of the muscle's angle: no muscle was
@@ -331,6 +358,16 @@ class SurrogateForceModel(ForceModel):
         out["force_N"] = np.asarray(force).reshape(P.shape)
         if std is not None:
             out["force_std_N"] = np.asarray(std).reshape(P.shape)
+            # a std beyond any force the muscle can pull: the estimator knows nothing there
+            # (no FE muscle of its training reached that state: a thick wall locks its braid
+            # short of Equation 2's eps_max), whatever its mean
+            ceiling = self._ceiling_N(P, D0, t0)
+            uninformed = inside & (ceiling > 0) & (out["force_std_N"] > ceiling)
+            if uninformed.any():
+                warnings.warn(f"{int(uninformed.sum())} of {inside.size} points: "
+                              f"{UNINFORMED}: flagged valid=False", OutOfDomainWarning,
+                              stacklevel=3)
+                out["valid"] = inside & ~uninformed
         return out
 
 

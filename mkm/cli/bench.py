@@ -250,6 +250,7 @@ def _calibrate_loadcell(args) -> int:
         check_masses,
         fit_loadcell,
         loadcell_table,
+        refused_fit,
     )
 
     if args.volts is not None:  # volts measured elsewhere: nothing is driven
@@ -268,6 +269,10 @@ def _calibrate_loadcell(args) -> int:
           f"{out['offset_V']:.5f} (R^2 {out['r_squared']:.6f}, largest residual "
           f"{out['max_abs_residual_N']:.3f} N over {out['n_points']} masses)", file=sys.stderr)
     print(loadcell_table(out, config))
+    if refused := refused_fit(out, config):
+        say(args, "warning", f"this [loadcell] pasted into {args.config or 'the config'} is "
+            f"refused: {refused}; lower capacity_N to what the cell reads before its rail, or "
+            "raise the amplifier's gain, and calibrate again")
     return 0
 
 

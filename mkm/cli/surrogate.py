@@ -300,6 +300,8 @@ def _label(path: str) -> str:
 
 
 def _predict(args) -> int:
+    from mkm.surrogate.model import UNINFORMED
+
     args.pressures, args.eps = sweep_grid(args.pressures, args.eps)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -316,9 +318,10 @@ def _predict(args) -> int:
     reasons = [str(r) for r, ok in zip(answered.extras["reason"].ravel(),
                                        prediction.valid.ravel(), strict=True) if not ok]
     locked = sum(r.startswith("past the braid lock") for r in reasons)
-    counted = [f"{n} {why}" for n, why in ((locked, "past the braid lock"),
-                                           (len(reasons) - locked, "outside the training domain"))
-               if n]
+    unknown = sum(r.startswith(UNINFORMED) for r in reasons)
+    counted = [f"{n} {why}" for n, why in (
+        (locked, "past the braid lock"), (unknown, "without an answer (a std beyond any force)"),
+        (len(reasons) - locked - unknown, "outside the training domain")) if n]
     summary_line("surrogate predict", f"{prediction.force_N.size} points of {model.name} in "
                  f"{1e3 * prediction.seconds:.2f} ms"
                  + (f", {' and '.join(counted)}: no force written (valid=False, their reason in "

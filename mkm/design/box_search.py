@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import time
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 import numpy as np
@@ -154,12 +154,15 @@ class Search:
         of the searching model's (not the practical range's, past which none searches)."""
         low, high = self.pressure_span_bar
         tol = 1e-6 * (high - low)
+        at_top = [str(k) for k, req in enumerate(self.requirements, start=1)
+                  if abs(req.pressure_bar - high) <= tol]
+        if not at_top or abs(high - PRACTICAL_RANGE.pressure_bar[1]) <= tol:
+            return box_edges(row, self.constraints, self.calibration)
+        which = (f"requirement {at_top[0]}" if len(at_top) == 1
+                 else f"requirements {', '.join(at_top)}")
         return box_edges(row, self.constraints, self.calibration) + [
-            f"P = {req.pressure_bar:g} bar (requirement {k}; the upper end of the "
-            f"{self.searcher}'s {span_text(low, high)} bar)"
-            for k, req in enumerate(self.requirements, start=1)
-            if abs(req.pressure_bar - high) <= tol
-            and abs(high - PRACTICAL_RANGE.pressure_bar[1]) > tol]
+            f"P = {high:g} bar ({which}; the upper end of the {self.searcher}'s "
+            f"{span_text(low, high)} bar)"]
 
     def box_note(self) -> str:
         """The searched D0 x t0 box where it is not the surrogate's training box (and
@@ -269,6 +272,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
                          f"{', '.join(OBJECTIVES)}")
     if not isinstance(constraints, Constraints):
         constraints = Constraints(**(constraints or {}))
+    constraints, rubber_note = _distinct_rubbers(constraints, calibration)
     spec = parse_spec(surrogate)
     if spec.name != "surrogate":
         raise ValueError(f"--surrogate {surrogate!r}: expected a surrogate spec "
@@ -344,12 +348,30 @@ def search(requirements, constraints: Constraints | dict | None = None,
     cand = _rank(cand, objective)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
-                    fe_search, spec.text, searcher_note, calibration, surrogate_box, box_origin,
+                    fe_search, spec.text, "; ".join(n for n in (searcher_note, rubber_note) if n),
+                    calibration, surrogate_box, box_origin,
                     gap, (0.0, FE_SEARCH_MAX_PRESSURE_BAR) if fe_search else
                     tuple(float(v) for v in domain.pressure_bar))
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
+
+
+def _distinct_rubbers(constraints: Constraints, calibration: Calibration | None
+                      ) -> tuple[Constraints, str]:
+    """``constraints`` with each rubber once (two names of the same constants, ``calibrated``
+    being Silastic S in the shipped calibration, made every design twice and took half the FE
+    verifications), and the note that says which name was searched for which; "" if none."""
+    first: dict[tuple[float, float], str] = {}
+    for name in constraints.rubber:
+        first.setdefault(_constants(name, calibration), name)
+    kept = tuple(first.values())
+    if kept == constraints.rubber:
+        return constraints, ""
+    same = [f"{name} is {first[_constants(name, calibration)]}"
+            for name in constraints.rubber if name not in kept]
+    return (replace(constraints, rubber=kept),
+            f"rubber {', '.join(same)} here (the same C10 and C01): searched once")
 
 
 def _walls(D0: np.ndarray, t0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -55,6 +55,16 @@ def test_violations_name_each_constraint():
         "L0_mm=29 outside [50, 1000]", "L0_mm=29 below 3 D0_mm = 30"]
     assert PRACTICAL_RANGE.violations(**{**inside, "C01_MPa": 0.46}) == [
         "C01_MPa=0.46 outside [0, 1.5] x C10_MPa"]
+    # a value typed at a bound that is a product lies on it: C01/C10 1.5 at the stiffest
+    # rubber (1.5 x 0.6 MPa is 0.8999999999999999 in floating point, so C01 0.9 was "outside"),
+    # the thickest wall of a 6 mm tube (0.3 x 6 = 1.7999999999999998), the shortest 17.1 mm
+    # one (3 x 17.1 = 51.300000000000004)
+    at_bounds = dict(C10_MPa=0.6, C01_MPa=0.9, D0_mm=6.0, t0_mm=1.8, L0_mm=60.0)
+    assert 1.5 * 0.6 < 0.9 and 0.3 * 6.0 < 1.8 and 3 * 17.1 > 51.3
+    assert PRACTICAL_RANGE.violations(**at_bounds) == []
+    assert PRACTICAL_RANGE.violations(D0_mm=17.1, L0_mm=51.3) == []
+    assert PRACTICAL_RANGE.violations(**{**at_bounds, "C01_MPa": 0.9001}) == [
+        "C01_MPa=0.9001 outside [0, 1.5] x C10_MPa"]
     # past the lock at 30 deg (1/3)
     (eps,) = PRACTICAL_RANGE.violations(**{**inside, "eps": 0.34})
     assert eps.startswith("eps=0.34 outside [0, 0.3333]")

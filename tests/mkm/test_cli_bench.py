@@ -99,6 +99,24 @@ def test_calibrate_loadcell_prints_the_toml_block(capsys):
     assert config.loadcell.sensitivity_N_per_V == pytest.approx(196.133, rel=1e-6)
 
 
+def test_calibrate_loadcell_says_when_its_block_would_be_refused(capsys):
+    """The packaged example's cell reads its capacity, 1961.33 N, at the +-10 V rail: a fit 1 %
+    less sensitive (10 kg over 0.505 V: 194.19 N/V, the rail at 1941.9 N; the simulated bench's
+    1 kg calibration gives such a fit) printed a block that `mkm check` then refused, unsaid."""
+    assert main(["calibrate-loadcell", "--masses", "0,10", "--volts", "0.01,0.515"]) == 0
+    captured = capsys.readouterr()
+    block = tomllib.loads(captured.out)["loadcell"]  # stdout stays the block alone
+    assert block["sensitivity_N_per_V"] == pytest.approx(98.0665 / 0.505, rel=1e-6)
+    (warning,) = [line for line in captured.err.splitlines() if "warning" in line]
+    assert warning.startswith("mkm calibrate-loadcell: warning: this [loadcell] pasted into the "
+                              "config is refused: loadcell.sensitivity_N_per_V=194.191 puts the "
+                              "+-10 V rail at 1941.91 N, below capacity_N=1961.33")
+    text = load_config().text
+    head, _, rest = text.partition("[loadcell]")
+    with pytest.raises(ValueError, match="below capacity_N=1961.33"):
+        parse_config(head + captured.out + "\n" + rest[rest.index("[regulator]"):])
+
+
 def test_calibrate_loadcell_volts_of_a_mass_beyond_capacity_are_refused(capsys):
     assert main(["calibrate-loadcell", "--masses", "0,10,300", "--volts", "0.01,0.51,10"]) == 2
     err = capsys.readouterr().err

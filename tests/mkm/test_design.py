@@ -473,6 +473,11 @@ def test_a_pressure_or_rubber_at_an_end_of_what_was_searched_is_named(tmp_path):
     at_top = replace(found, requirements=[Requirement(100.0, 8.0, 0.10)],
                      pressure_span_bar=(0.0, 8.0))
     assert not any(e.startswith("P =") for e in at_top.edges(best))
+    # two requirements at that pressure: the pressure named once, with both
+    two = replace(found, requirements=[Requirement(100.0, 2.5, 0.10),
+                                       Requirement(80.0, 2.5, 0.20)])
+    assert [e for e in two.edges(best) if e.startswith("P =")] == [
+        "P = 2.5 bar (requirements 1, 2; the upper end of the surrogate's 0:2.5 bar)"]
     # a rubber three times as stiff as Silastic S identified: Silastic S is the softer end
     stiff = Calibration(tmp_path / "calibration.json", {"axisym": {
         "theta0_deg": 33.0, "C10_MPa": 3 * SILASTIC_S.C10_MPa,
@@ -486,6 +491,29 @@ def test_a_pressure_or_rubber_at_an_end_of_what_was_searched_is_named(tmp_path):
         "rubber = calibrated (C10 0.2082 MPa, the stiffest of those searched")
     # one rubber searched is no range
     assert box_edges(row, {**box, "rubber": ["silastic_s"]}, stiff) == []
+
+
+def test_two_names_of_one_rubber_are_searched_once():
+    """--rubber calibrated,silastic_s with the shipped calibration, whose rubber is Silastic
+    S: every design came twice (rank 1 and 2 the same muscle), half the FE verifications
+    spent on copies; the summary now says the two names are one rubber here."""
+    found = search([Requirement(300.0, 2.0, 0.10)], {"rubber": ("calibrated", "silastic_s")})
+    assert found.constraints["rubber"] == ["calibrated"]
+    assert set(found.candidates["rubber"]) == {"calibrated"}
+    assert found.searcher_note == ("rubber silastic_s is calibrated here (the same C10 and "
+                                   "C01): searched once")
+    # two rubbers that differ are both searched, without a note
+    from mkm.fem.calibration import Calibration
+    from mkm.fem.materials import SILASTIC_S
+
+    stiff = Calibration(Calibration.shipped().path, {
+        **Calibration.shipped().entries,
+        "axisym": {**Calibration.shipped().entries["axisym"],
+                   "C10_MPa": 1.2 * SILASTIC_S.C10_MPa, "C01_MPa": 1.2 * SILASTIC_S.C01_MPa}})
+    both = search([Requirement(300.0, 2.0, 0.10)], {"rubber": ("calibrated", "silastic_s")},
+                  calibration=stiff)
+    assert both.constraints["rubber"] == ["calibrated", "silastic_s"]
+    assert "searched once" not in both.searcher_note
 
 
 def test_the_chosen_muscle_has_an_id_a_bench_config_takes():

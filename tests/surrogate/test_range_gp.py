@@ -117,3 +117,30 @@ def test_it_gives_no_force_past_the_braid_lock_of_the_muscles_angle(range_model)
     assert list(range_model.answered(pred).extras["reason"]) == [
         f"past the braid lock: eps >= eps_max {eps_max:.4g} at theta0 {theta0:g} deg"] * 2
     assert range_model.predict(2.0, 30.0, 3.0, eps_max - 0.04).valid.all()  # short of it
+
+
+@pytest.mark.slow
+def test_a_std_beyond_any_force_of_the_muscle_is_no_answer(range_model):
+    """A 60 mm tube with a 6 mm wall at 40 deg: its braid locks at eps 0.224 in the FE (the
+    thick wall locks it short of Equation 2's 0.246), so no muscle of the training reached eps
+    0.24. It answered 0 N, valid, with a std of 5e6 N at 4 and 8 bar; Equation 2 on the braid
+    at rest (72 mm, no rubber) is more than any force the muscle can develop there: 3.0 kN at
+    4 bar, 6.0 kN at 8."""
+    from mkm.fem.eq2 import chou_hannaford
+    from mkm.surrogate.model import UNINFORMED, OutOfDomainWarning
+
+    steep = range_model.with_parameters(theta0_deg=40.0)
+    with pytest.warns(OutOfDomainWarning, match=UNINFORMED):
+        pred = steep.predict([0.0, 4.0, 8.0], 60.0, 6.0, 0.24)
+    assert pred.valid.tolist() == [True, False, False]  # 0 bar: no force, and none known
+    assert pred.extras["in_domain"].all()  # inside its box: the std, not the box, refuses
+    ceiling = chou_hannaford(np.array([4.0, 8.0]), 72.0, 0.0, 40.0)
+    assert ceiling == pytest.approx([2998, 5995], abs=1)
+    assert (pred.extras["force_std_N"][1:] > ceiling).all()
+    reasons = range_model.answered(pred).extras["reason"]
+    assert reasons[0] == "" and all(r.startswith(UNINFORMED) for r in reasons[1:])
+    # short of the FE's lock (eps 0.22) it knows the tube pulls nothing below 8 bar (its
+    # threshold 33 bar in the FE): answered, with a std of micronewtons
+    near = steep.predict([4.0, 8.0], 60.0, 6.0, 0.22)
+    assert near.valid.all() and (near.force_N == 0).all()
+    assert (near.extras["force_std_N"] < 1e-3).all()
