@@ -292,3 +292,27 @@ def test_the_shipped_published_maps_validation_is_what_identify_and_report_give_
                         name, new["muscle"], new["eps"], key)
                 else:
                     assert new[key] == value, (name, new["muscle"], new["eps"], key)
+
+
+@pytest.mark.slow
+def test_the_shipped_wall_identification_is_what_identify_gives_now(tmp_path, monkeypatch):
+    """``docs/measured/identify_t0.json`` (the wall identified on the FE bench, *Calibration*)
+    is what its recorded command gives now: its first draw again (the same seed, so the same
+    muscle and noise) to six digits. The interval of the shipped file's last draw ended at
+    3.1858 mm where identify gives 3.1849 mm, drawn in the table as 3.19 and 3.18."""
+    import json
+
+    bench = _benchmark("bench_identify_t0")
+    shipped = json.loads((DOCS / "measured" / "identify_t0.json").read_text(encoding="utf-8"))
+    assert shipped["command"].endswith(f"--seed {shipped['seed']} --out "
+                                       "docs/measured/identify_t0.json")
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "state"))  # the benchmark sets its own
+    out = tmp_path / "t0.json"
+    assert bench.main(["--draws", "1", "--seed", str(shipped["seed"]), "--out", str(out)]) == 0
+    now = json.loads(out.read_text(encoding="utf-8"))["rows"][0]
+    then = shipped["rows"][0]
+    for key, value in then.items():
+        if isinstance(value, bool | int):
+            assert now[key] == value, key
+        elif key != "seconds":
+            assert now[key] == pytest.approx(value, rel=5e-6), key
