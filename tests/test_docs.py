@@ -244,6 +244,29 @@ def test_recorded_commands_hold_paths_relative_to_the_repository():
     assert "{out}" in generate.BENCHMARKS["batch.json"]  # the writer fills in relative paths
 
 
+def test_make_bench_docs_measures_each_file_again_with_the_command_it_records():
+    """``make bench-docs`` runs :data:`BENCHMARKS`; each file the docs quote records the
+    command that measured it, and that is what must run again: the stability map's entry left
+    out the recorded seed, so a refresh would have drawn other muscles under a guide that names
+    the seed of the table it shows."""
+    import json
+    import shlex
+
+    generate = _generate()
+    checked = 0
+    for name, command in generate.BENCHMARKS.items():
+        record = (DOCS / "measured" / name).with_suffix(".json")
+        if not record.exists():  # a CSV with its conditions in its first line
+            continue
+        recorded = json.loads(record.read_text(encoding="utf-8")).get("command")
+        expected = command.format(out=f"docs/measured/{name}", dir="docs/measured")
+        if expected.startswith("-m "):  # python -m mkm records itself as mkm
+            expected = expected[len("-m "):]
+        assert shlex.split(recorded) == shlex.split(expected), name
+        checked += 1
+    assert checked >= 20
+
+
 def test_the_shipped_mesh_study_is_what_the_fe_model_computes_now():
     """``docs/measured/mesh_convergence.csv`` (the FE model page's table for muscle I) is the
     current model's: re-measured with its recorded command when the FE changes. Its coarse row
