@@ -34,15 +34,17 @@ hysteresis, which only the difference between the branches shows, cannot be fitt
 Data: the Martens and Boblan force maps of two Festo muscles (``mkm/data/published/``; D0 the
 nominal diameter, t0 1.8 mm as the third party assumed). Each candidate is fitted
 (``scipy.optimize.least_squares``, bounds, several starts; a fit that does not converge is reported
-as such) on two held lengths other than the rest length, and scored on the rest-length curve and the
-other held lengths: the largest error as % of the muscle's largest measured force (100 % at a point
-where the fitted law has no wall state), the threshold pressure at eps 0 against the measured one,
-and AIC/BIC of the training fit. The table's ``zero_entry`` rows (0 N where the muscle is slack) are
-kept as one-sided constraints: the model's isometric force there (zero below its threshold) is the
-residual, so a model is charged only for predicting a pull where the muscle was slack. Every pair of
-held lengths is tried; the default pair is the two longest below the rest length. Pairs that include
-the rest length are tried too and summarised apart: they say whether a model can hold the whole map
-when the rest-length curve is known, not whether it predicts it.
+as such) on two held lengths other than the rest length, and scored on the rest-length curve and
+the other held lengths (where starts tie on the training cost with other parameters, the worst of
+those equal fits, counted in ``equal fits``: :func:`scored`): the largest error as % of the
+muscle's largest measured force (100 % at a point where the fitted law has no wall state), the
+threshold pressure at eps 0 against the measured one, and AIC/BIC of the training fit. The table's
+``zero_entry`` rows (0 N where the muscle is slack) are kept as one-sided constraints: the model's
+isometric force there (zero below its threshold) is the residual, so a model is charged only for
+predicting a pull where the muscle was slack. Every pair of held lengths is tried; the default pair
+is the two longest below the rest length. Pairs that include the rest length are tried too and
+summarised apart: they say whether a model can hold the whole map when the rest-length curve is
+known, not whether it predicts it.
 
 Each map is read with the table's longest length as the rest length (the data file's reading)
 and, where it differs, with Festo's nominal length (:data:`NOMINAL_LENGTH_MM`): the DMSP-20-300's
@@ -66,7 +68,7 @@ import argparse
 import io
 import itertools
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -99,6 +101,10 @@ EXTRAS = {
     "rest_offset": (0.005, -0.05, 0.05, "shortening of the table's longest length [fraction]"),
 }
 BASE = {"theta0_deg": ((24.0, 28.0, 32.0), 15.0, 45.0), "rubber_scale": ((1.0, 5.0), 0.1, 50.0)}
+#: starts whose training cost is within this fraction of the best fit the data equally; their
+#: parameters differ when they differ by more than SAME_PARAMS_RELATIVE (the fit's own xtol is
+#: 1e-10, so one optimum reached from two starts agrees far closer)
+TIE_RELATIVE_COST, SAME_PARAMS_RELATIVE = 1e-8, 1e-4
 
 
 @dataclass(frozen=True)
@@ -330,6 +336,8 @@ class Fit:
     rss_N2: float
     n_train: int
     message: str
+    #: every distinct parameter set whose training cost ties the best (``params`` among them)
+    tied: tuple[dict, ...] = ()
 
     def criteria(self) -> tuple[float, float]:
         """AIC and BIC of the training fit (Gaussian residuals of unknown variance)."""
@@ -359,7 +367,7 @@ def fit_candidate(candidate: Candidate, force_map: ForceMap, train: pd.DataFrame
         r = _residuals(force_map, train, dict(zip(names, x, strict=True)), physics) / scale
         return np.nan_to_num(r, nan=1.0)  # no wall state (Gent limit): a whole largest force off
 
-    best, messages = None, set()
+    best, messages, done = None, set(), []
     if starts is None:
         starts = [[theta0, rubber] + [EXTRAS[e][0] for e in candidate.extras]
                   for theta0, rubber in itertools.product(
@@ -371,13 +379,21 @@ def fit_candidate(candidate: Candidate, force_map: ForceMap, train: pd.DataFrame
         finite = np.all(np.isfinite(_residuals(force_map, train,
                                                dict(zip(names, result.x, strict=True)),
                                                physics)))
-        if result.status > 0 and finite and (best is None or result.cost < best.cost):
-            best = result
+        if result.status > 0 and finite:
+            done.append(result)
+            if best is None or result.cost < best.cost:
+                best = result
     if best is None:
         return Fit(candidate, False, {}, float("nan"), len(train), "; ".join(sorted(messages)))
     params = dict(zip(names, (float(v) for v in best.x), strict=True))
     rss = float(np.sum(_residuals(force_map, train, params, physics) ** 2))
-    return Fit(candidate, True, params, rss, len(train), best.message)
+    tied: list[np.ndarray] = []
+    for result in done:
+        if result.cost <= best.cost * (1 + TIE_RELATIVE_COST) and not any(
+                np.allclose(result.x, x, rtol=SAME_PARAMS_RELATIVE, atol=1e-6) for x in tied):
+            tied.append(result.x)
+    return Fit(candidate, True, params, rss, len(train), best.message,
+               tuple(dict(zip(names, (float(v) for v in x), strict=True)) for x in tied))
 
 
 def score(fit: Fit, force_map: ForceMap, train_eps, physics: Physics = CLOSED_FORM) -> dict:
@@ -411,19 +427,32 @@ def score(fit: Fit, force_map: ForceMap, train_eps, physics: Physics = CLOSED_FO
             "aic": float(aic), "bic": float(bic)}
 
 
+def scored(candidate: Candidate, force_map: ForceMap, train: pd.DataFrame, train_eps) -> dict:
+    """The candidate fitted on ``train`` and scored (:func:`score`). Where starts reach the
+    same training cost with other parameters (two lengths do not fix a candidate acting twice on
+    the offsets), the data cannot choose between those fits, and which start wins is decided by
+    rounding: the worst of them on the lengths held out is scored, and ``equal_fits`` counts
+    them."""
+    fit = fit_candidate(candidate, force_map, train)
+    if not fit.converged:
+        return score(fit, force_map, train_eps)
+    scores = [score(replace(fit, params=p), force_map, train_eps) for p in fit.tied]
+    worst = max(scores, key=lambda s: s["held_out_max_err_pct"])
+    return {**worst, "equal_fits": len(scores)}
+
+
 def study_map(force_map: ForceMap) -> pd.DataFrame:
     """Every candidate on every pair of held lengths: one row per (pair, candidate)."""
     records = []
     for pair in itertools.combinations([0.0, *force_map.held], 2):
         train = force_map.rows[np.isin(force_map.rows["eps"], pair)]
         for candidate in CANDIDATES:
-            fit = fit_candidate(candidate, force_map, train)
             records.append({"muscle": force_map.muscle, "rest length": force_map.reading,
                             "train_eps": list(pair),
                             "default_pair": list(pair) == force_map.held[:2],
                             "rest_fitted": 0.0 in pair,
                             "model": candidate.name, "n_params": candidate.n_params,
-                            **score(fit, force_map, pair)})
+                            **scored(candidate, force_map, train, pair)})
     frame = pd.DataFrame(records)
     # information criteria are comparable only on the same training rows
     for column in ("aic", "bic"):
@@ -450,6 +479,7 @@ def selection_table(study: pd.DataFrame) -> pd.DataFrame:
             "slack pull %": default.get("slack_pull_pct"),
             "P* at the longest length bar": default.get("threshold_eps0_bar"),
             "dAIC": default.get("daic"), "dBIC": default.get("dbic"),
+            "equal fits": default.get("equal_fits"),
             "held-out max err % (median over pairs)": float(done["held_out_max_err_pct"].median()),
             "held-out max err % (worst pair)": float(done["held_out_max_err_pct"].max()),
             "dBIC (median over pairs)": float(done["dbic"].median()),
@@ -561,7 +591,7 @@ def simulated_study(study: pd.DataFrame, like: ForceMap, seed: int) -> pd.DataFr
         pair = like.held[:2]
         train = simulated.rows[np.isin(simulated.rows["eps"], pair)]
         for candidate in CANDIDATES:
-            s = score(fit_candidate(candidate, simulated, train), simulated, pair)
+            s = scored(candidate, simulated, train, pair)
             rows.append({"truth": truth, **{f"truth {n}": v for n, v in
                                                  truth_params.items()},
                          "model": candidate.name, **s})

@@ -298,7 +298,8 @@ BENCHMARKS = {
     "startup.json": "benchmarks/bench_startup.py --json {out}",
     "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
-    "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out}",
+    "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out} --muscles "
+                         "DMSP-10-250,DMSP-20-300",
     "identify_gap.json": "benchmarks/bench_identify_gap.py --draws 8 --seed 20261206 "
                          "--out {out}",
     "identify_gap_wrong_bench.json": "benchmarks/bench_identify_gap.py --draws 8 --seed "
@@ -329,7 +330,9 @@ BENCHMARKS = {
                                        "--seed 20261300 --out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
-    "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --out {out}",
+    # the guide quotes this draw's muscles: its seed, not a fresh one
+    "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --seed "
+                          "2857834494527622234 --out {out}",
 }
 
 

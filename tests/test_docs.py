@@ -12,6 +12,7 @@ import sys
 from html.parser import HTMLParser
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -186,6 +187,48 @@ def _items(entries):
             yield name, tuple(item)
 
 
+def _benchmark(name: str):
+    """A module of ``benchmarks/`` (not a package: imported from its folder)."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    try:
+        return importlib.import_module(name)
+    finally:
+        sys.path.remove(str(ROOT / "benchmarks"))
+
+
+def test_a_candidate_the_two_lengths_do_not_fix_is_scored_by_its_worst_equal_fit():
+    """The threshold study's figures reproduce: the DMSP-10-250's gap + Yeoh reaches the same
+    training cost (to 1e-9) from all six starts with other parameters, its rest-curve error
+    5.3-12.0 % and its threshold 0.65-1.11 bar by start, so the start that came out best by a
+    rounding error set the figure. The table scores the worst of the equal fits, whichever start
+    rounding favours, and says how many there were."""
+    bench = _benchmark("bench_threshold_models")
+    force_map = next(m for m in bench.read_maps() if "DMSP-10-250" in m.muscle)
+    pair = force_map.held[:2]
+    train = force_map.rows[np.isin(force_map.rows["eps"], pair)]
+    candidate = next(c for c in bench.CANDIDATES if c.name == "gap + Yeoh")
+    single = [bench.fit_candidate(candidate, force_map, train, starts=[x0])
+              for x0 in _starts(bench, candidate)]
+    best = min(fit.rss_N2 for fit in single)
+    tied = [bench.score(fit, force_map, pair)["held_out_max_err_pct"] for fit in single
+            if fit.rss_N2 <= best * (1 + 1e-8)]
+    assert len(tied) == 6 and max(tied) - min(tied) > 5.0  # the data cannot choose
+    scored = bench.scored(candidate, force_map, train, pair)
+    assert scored["equal_fits"] == 6
+    assert scored["held_out_max_err_pct"] == pytest.approx(max(tied), rel=1e-6)
+    # a candidate the lengths do fix has one fit, whatever the start
+    baseline = bench.scored(bench.CANDIDATES[0], force_map, train, pair)
+    assert baseline["equal_fits"] == 1
+
+
+def _starts(bench, candidate):
+    import itertools
+
+    return [[theta0, rubber] + [bench.EXTRAS[e][0] for e in candidate.extras]
+            for theta0, rubber in itertools.product(
+                *(bench.BASE[n][0] for n in ("theta0_deg", "rubber_scale")))]
+
+
 def test_recorded_commands_hold_paths_relative_to_the_repository():
     """The measured results the docs show name the command that measured them as anyone types
     it in a checkout: no absolute path of the machine that ran it."""
@@ -199,3 +242,100 @@ def test_recorded_commands_hold_paths_relative_to_the_repository():
         assert not absolute, f"{path.name}: {command}"
     generate = _generate()
     assert "{out}" in generate.BENCHMARKS["batch.json"]  # the writer fills in relative paths
+
+
+def test_make_bench_docs_measures_each_file_again_with_the_command_it_records():
+    """``make bench-docs`` runs :data:`BENCHMARKS`; each file the docs quote records the
+    command that measured it, and that is what must run again: the stability map's entry left
+    out the recorded seed, so a refresh would have drawn other muscles under a guide that names
+    the seed of the table it shows."""
+    import json
+    import shlex
+
+    generate = _generate()
+    checked = 0
+    for name, command in generate.BENCHMARKS.items():
+        record = (DOCS / "measured" / name).with_suffix(".json")
+        if not record.exists():  # a CSV with its conditions in its first line
+            continue
+        recorded = json.loads(record.read_text(encoding="utf-8")).get("command")
+        expected = command.format(out=f"docs/measured/{name}", dir="docs/measured")
+        if expected.startswith("-m "):  # python -m mkm records itself as mkm
+            expected = expected[len("-m "):]
+        assert shlex.split(recorded) == shlex.split(expected), name
+        checked += 1
+    assert checked >= 20
+
+
+def test_the_shipped_mesh_study_is_what_the_fe_model_computes_now():
+    """``docs/measured/mesh_convergence.csv`` (the FE model page's table for muscle I) is the
+    current model's: re-measured with its recorded command when the FE changes. Its coarse row
+    (a twentieth of a second) must match a solve now to the file's eight digits; the threshold
+    search had moved P* from 0.14523 to 0.14506 bar while the file stayed."""
+    import json
+
+    import pandas as pd
+
+    from mkm.fem.fe.convergence import mesh_convergence
+
+    shipped = pd.read_csv(DOCS / "measured" / "mesh_convergence.csv").set_index("mesh")
+    inputs = json.loads((DOCS / "measured" / "mesh_convergence.json").read_text(
+        encoding="utf-8"))["inputs"]
+    now = mesh_convergence(levels=("coarse",)).set_index("mesh")
+    assert dict(now.attrs) == inputs
+    for column in ("force_N", "threshold_pressure_bar"):
+        assert now.loc["coarse", column] == pytest.approx(shipped.loc["coarse", column],
+                                                          rel=1e-7), column
+
+
+@pytest.mark.slow
+def test_the_shipped_published_maps_validation_is_what_identify_and_report_give_now(tmp_path):
+    """``docs/measured/published.json`` (the tables of *Validation against published
+    measurements*) is what its benchmark's import, identify and report give now, to the
+    file's digits (the timing left out): the shipped file had DMSP-20's leave-one-length-out
+    wall interval start at its estimate, 1.93 mm, where identify now gives 1.09 mm."""
+    import json
+    import math
+
+    bench = _benchmark("bench_published")
+    shipped = json.loads((DOCS / "measured" / "published.json").read_text(encoding="utf-8"))
+    rows, rows_loo, _ = bench.measure(shipped["model"], tmp_path)
+    for name, now, then in (("rows", rows, shipped["rows"]),
+                            ("leave one length out", rows_loo,
+                             shipped["leave_one_length_out"]["rows"])):
+        assert len(now) == len(then), name
+        for new, old in zip(now, then, strict=True):
+            assert new.keys() == old.keys(), name
+            for key, value in old.items():
+                if value is None:  # a slack length has no Err% (NaN, written as null)
+                    assert new[key] is None or math.isnan(new[key]), (name, key)
+                elif isinstance(value, float):
+                    # the file keeps six significant digits of the scores
+                    assert new[key] == pytest.approx(value, rel=2e-6, nan_ok=True), (
+                        name, new["muscle"], new["eps"], key)
+                else:
+                    assert new[key] == value, (name, new["muscle"], new["eps"], key)
+
+
+@pytest.mark.slow
+def test_the_shipped_wall_identification_is_what_identify_gives_now(tmp_path, monkeypatch):
+    """``docs/measured/identify_t0.json`` (the wall identified on the FE bench, *Calibration*)
+    is what its recorded command gives now: its first draw again (the same seed, so the same
+    muscle and noise) to six digits. The interval of the shipped file's last draw ended at
+    3.1858 mm where identify gives 3.1849 mm, drawn in the table as 3.19 and 3.18."""
+    import json
+
+    bench = _benchmark("bench_identify_t0")
+    shipped = json.loads((DOCS / "measured" / "identify_t0.json").read_text(encoding="utf-8"))
+    assert shipped["command"].endswith(f"--seed {shipped['seed']} --out "
+                                       "docs/measured/identify_t0.json")
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "state"))  # the benchmark sets its own
+    out = tmp_path / "t0.json"
+    assert bench.main(["--draws", "1", "--seed", str(shipped["seed"]), "--out", str(out)]) == 0
+    now = json.loads(out.read_text(encoding="utf-8"))["rows"][0]
+    then = shipped["rows"][0]
+    for key, value in then.items():
+        if isinstance(value, bool | int):
+            assert now[key] == value, key
+        elif key != "seconds":
+            assert now[key] == pytest.approx(value, rel=5e-6), key
