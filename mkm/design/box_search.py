@@ -574,6 +574,24 @@ def box_edges(row, box: dict, calibration: Calibration | None = None) -> list[st
     return edges
 
 
+def range_limits(row, box: dict) -> list[str]:
+    """The searched ranges of ``box`` whose end a design ``row`` sits on where that end is the
+    practical range's limit (which :func:`box_edges` leaves out: no search goes beyond it), as
+    ``t0 = 0.5 mm, its lower limit``."""
+    limits = []
+    for key, name in BOX_NAMES.items():
+        low, high = box.get(key, (0.0, 0.0))
+        if not high > low:
+            continue
+        at, unit = float(row[key]), "deg" if key.endswith("deg") else "mm"
+        tol = 1e-6 * (high - low)
+        for end, bound, limit in zip(("lower", "upper"), (low, high),
+                                     getattr(PRACTICAL_RANGE, key), strict=True):
+            if abs(at - bound) <= tol and abs(bound - limit) <= tol:
+                limits.append(f"{name} = {at:.4g} {unit}, its {end} limit")
+    return limits
+
+
 def span_text(low: float, high: float) -> str:
     """``37`` for a fixed value, ``30:50`` for a range."""
     return f"{low:g}" if low == high else f"{low:g}:{high:g}"

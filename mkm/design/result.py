@@ -19,6 +19,7 @@ from mkm.design.box_search import (
     geometry_text,
     outside_practical_range,
     pick,
+    range_limits,
     search,
 )
 from mkm.design.fe_verification import verify
@@ -94,8 +95,9 @@ class DesignResult:
         searched range (:meth:`~mkm.design.box_search.Search.edges`), where a larger box might hold
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
         required force (the design then is larger than the requirement needs), a chosen
-        design outside the practical range, and one that meets a requirement by less than the
-        mesh's error and was verified again on a finer one. Empty when none."""
+        design outside the practical range or on its limit (:func:`~mkm.design.box_search.
+        range_limits`), and one that meets a requirement by less than the mesh's error and was
+        verified again on a finer one. Empty when none."""
         s = self.search
         notes = [s.box_note()] if s.box_note() else []
         best = self.chosen
@@ -117,6 +119,10 @@ class DesignResult:
             notes.append(f"the chosen design sits on the edge of the search box "
                          f"{box_text(ranges)}: {', '.join(edges)}; a larger box might hold a "
                          "better design")
+        if best is not None and (limits := range_limits(best, s.constraints)):
+            notes.append(f"the chosen design sits on the practical range's limit: "
+                         f"{'; '.join(limits)}; a design beyond it might do better, but no "
+                         "model is validated there (`mkm models` states the range)")
         if best is not None and best["fe_mesh"] != self.mesh:
             notes.append(f"the {self.mesh} mesh's margin of the chosen design was within that "
                          f"mesh's error (mkm.mesh_errors): verified again on the "
