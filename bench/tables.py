@@ -793,6 +793,8 @@ class Column:
     given: bool = False  # named by --columns
     #: a time column of spreadsheet date-times saved as numbers (:func:`_excel_serial_days`)
     excel_days: bool = False
+    #: ``unit`` is the one its cells are written with ('0,5 at'), its header naming none
+    in_cells: bool = False
 
     def describe(self) -> dict:
         role_unit = ROLES[self.role].unit
@@ -884,6 +886,14 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                              f"(found {_listed(c.header for c in found.values())})")
         found[role].unit = unit
     for column in found.values():
+        if column.unit is None and ROLES[column.role].unit is not None:
+            # the unit the first cell is written with ('0,5 at'), as the line and run.json
+            # say it; column_values reads every cell's and refuses mixed ones
+            first = next((row[column.index] for row in table.rows
+                          if str(row[column.index]).strip()), None)
+            written = _number(first, table.decimal)[1] if isinstance(first, str) else None
+            if written is not None:
+                column.unit, column.in_cells = written, True
         _check_unit(table, column)
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
