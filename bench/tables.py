@@ -1335,8 +1335,9 @@ def without_summary_rows(table: RawTable) -> RawTable:
     """``table`` without its summary rows (a cell reading ``Mean``, ``Mittelwert``, ``Summe``,
     ``Max``, ... alone: :data:`SUMMARY_WORDS`), which a spreadsheet puts under the measurements
     and which are no measurement; the cell naming each in ``summaries_skipped``. Such a label
-    stands where the steps hold numbers (an index, a pressure): in a column of text, a lab's
-    comments, the word is a comment on its row ('Max' beside the top step)."""
+    leads its row, or stands where the steps hold numbers (an index, a pressure): after the
+    numbers in a column of text, a lab's comments, the word is a comment on its row ('Max'
+    beside the top step)."""
     def word(cell) -> bool:
         return isinstance(cell, str) and _summary_word(cell) in SUMMARY_WORDS
 
@@ -1351,8 +1352,9 @@ def without_summary_rows(table: RawTable) -> RawTable:
 
     named = {}
     for k in sorted(labelled):
+        lead = next((j for j, cell in enumerate(table.rows[k]) if str(cell).strip()), None)
         for column, cell in enumerate(table.rows[k]):
-            if word(cell) and steps_number(column):
+            if word(cell) and (column == lead or steps_number(column)):
                 named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
                 break
     if not named:
