@@ -1033,7 +1033,8 @@ def _far_below_a_pull(pressure, force, muscle, column) -> str:
             else f"read in {column.unit} as {column.header!r} says")
     return (f"forces up to {largest:.3g} N at {pressure[top]:g} bar, {read}: under "
             f"{100 * FAR_BELOW_A_PULL:g} % of the {float(ideal.force_N):.3g} N Equation 2 gives "
-            "this muscle there; if they are kN, import again with --units force=kN")
+            "this muscle there; if they are kN, import again with --units force=kN (else check "
+            "the muscle's --D0, --t0 and --eps)")
 
 
 def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],

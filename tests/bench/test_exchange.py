@@ -214,7 +214,7 @@ def test_forces_far_below_any_muscles_pull_are_questioned(header, tmp_path, caps
             else "read in N as 'F [N]' says")
     assert (f"forces up to 1.05 N at 2.5 bar, {read}: under 1 % of the "
             f"{expected:.3g} N Equation 2 gives this muscle there; if they are kN, import "
-            "again with --units force=kN") in err
+            "again with --units force=kN (else check the muscle's --D0, --t0 and --eps)") in err
     code, out, err = _run(["import", str(table), *MUSCLE, "--units", "force=kN", "--out",
                            str(tmp_path / "b")], capsys)
     assert code == 0 and "Equation 2" not in err
