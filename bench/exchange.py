@@ -808,6 +808,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         # or one whose unit is wrong (a logger's channel set up in bar that records kPa)
         column = found["pressure"]
         read = (f"read as bar since {column.header!r} names no unit" if column.unit is None
+                else f"read in {column.unit} as its cells say" if column.in_cells
                 else f"read in {column.unit} as {column.header!r} says")
         notes.append(f"pressures up to {top_bar:g} bar, {read}: above the "
                      f"{PRACTICAL_RANGE.pressure_bar[1]:g} bar of any braided muscle; "
@@ -1068,10 +1069,12 @@ def _far_below_a_pull(pressure, force, muscle, column) -> str:
     if not (bool(np.all(ideal.valid)) and largest < FAR_BELOW_A_PULL * float(ideal.force_N)):
         return ""
     read = (f"read as N since {column.header!r} names no unit" if column.unit is None
+            else f"read in {column.unit} as its cells say" if column.in_cells
             else f"read in {column.unit} as {column.header!r} says")
     return (f"forces up to {largest:.3g} N at {pressure[top]:g} bar, {read}: under "
             f"{100 * FAR_BELOW_A_PULL:g} % of the {float(ideal.force_N):.3g} N Equation 2 gives "
-            "this muscle there; if they are kN, import again with --units force=kN")
+            "this muscle there; if they are kN, import again with --units force=kN (else check "
+            "the muscle's --D0, --t0 and --eps)")
 
 
 def _with_budget(steps: list[StepRecord], accuracy: dict[str, Declared],

@@ -793,6 +793,8 @@ class Column:
     given: bool = False  # named by --columns
     #: a time column of spreadsheet date-times saved as numbers (:func:`_excel_serial_days`)
     excel_days: bool = False
+    #: ``unit`` is the one its cells are written with ('0,5 at'), its header naming none
+    in_cells: bool = False
 
     def describe(self) -> dict:
         role_unit = ROLES[self.role].unit
@@ -884,6 +886,14 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                              f"(found {_listed(c.header for c in found.values())})")
         found[role].unit = unit
     for column in found.values():
+        if column.unit is None and ROLES[column.role].unit is not None:
+            # the unit the first cell is written with ('0,5 at'), as the line and run.json
+            # say it; column_values reads every cell's and refuses mixed ones
+            first = next((row[column.index] for row in table.rows
+                          if str(row[column.index]).strip()), None)
+            written = _number(first, table.decimal)[1] if isinstance(first, str) else None
+            if written is not None:
+                column.unit, column.in_cells = written, True
         _check_unit(table, column)
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
@@ -1325,8 +1335,9 @@ def without_summary_rows(table: RawTable) -> RawTable:
     """``table`` without its summary rows (a cell reading ``Mean``, ``Mittelwert``, ``Summe``,
     ``Max``, ... alone: :data:`SUMMARY_WORDS`), which a spreadsheet puts under the measurements
     and which are no measurement; the cell naming each in ``summaries_skipped``. Such a label
-    stands where the steps hold numbers (an index, a pressure): in a column of text, a lab's
-    comments, the word is a comment on its row ('Max' beside the top step)."""
+    leads its row, or stands where the steps hold numbers (an index, a pressure): after the
+    numbers in a column of text, a lab's comments, the word is a comment on its row ('Max'
+    beside the top step)."""
     def word(cell) -> bool:
         return isinstance(cell, str) and _summary_word(cell) in SUMMARY_WORDS
 
@@ -1341,8 +1352,9 @@ def without_summary_rows(table: RawTable) -> RawTable:
 
     named = {}
     for k in sorted(labelled):
+        lead = next((j for j, cell in enumerate(table.rows[k]) if str(cell).strip()), None)
         for column, cell in enumerate(table.rows[k]):
-            if word(cell) and steps_number(column):
+            if word(cell) and (column == lead or steps_number(column)):
                 named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
                 break
     if not named:

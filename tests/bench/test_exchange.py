@@ -247,7 +247,7 @@ def test_forces_far_below_any_muscles_pull_are_questioned(header, tmp_path, caps
             else "read in N as 'F [N]' says")
     assert (f"forces up to 1.05 N at 2.5 bar, {read}: under 1 % of the "
             f"{expected:.3g} N Equation 2 gives this muscle there; if they are kN, import "
-            "again with --units force=kN") in err
+            "again with --units force=kN (else check the muscle's --D0, --t0 and --eps)") in err
     code, out, err = _run(["import", str(table), *MUSCLE, "--units", "force=kN", "--out",
                            str(tmp_path / "b")], capsys)
     assert code == 0 and "Equation 2" not in err
@@ -595,3 +595,18 @@ def test_a_step_tables_0_bar_row_at_the_end_is_its_zero(tmp_path, capsys):
     assert ("tare 5 N subtracted (mean force of the 1 row(s) at 0 bar where the falling branch "
             "ends: the rising branch starts at 0.5 bar)") in err
     assert run.meta.imported_from["tare_N"] == 5.0
+
+
+def test_a_unit_written_in_the_cells_is_the_one_said_and_recorded(tmp_path, capsys):
+    # '0,5 at' in every cell, converted from at, was said and recorded as read in bar
+    # ("'Druck' -> pressure [bar]", imported_from.columns.pressure.unit "bar")
+    table = tmp_path / "at.csv"
+    table.write_text("Druck;Kraft\n0 at;0,002 kN\n0,5 at;0,2 kN\n1,5 at;0,6 kN\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "a")], capsys)
+    assert code == 0, err
+    assert "'Druck' -> pressure [at -> bar], 'Kraft' -> force [kN -> N]" in err
+    run = load_run(out.strip())
+    assert run.meta.imported_from["columns"]["pressure"]["unit"] == "at"
+    # 0.980665 bar an at; steps.csv keeps 6 digits
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], [0, 0.4903325, 1.4709975],
+                               rtol=1e-5)

@@ -1302,6 +1302,12 @@ def test_a_statistic_word_in_a_comment_column_is_a_comment(tmp_path, mkm_cli):
     assert run.steps["pressure_bar_mean"].tolist() == [0.0, 0.5, 1.0, 1.5, 1.0, 0.5, 0.0]
     # a label where the steps hold numbers is still a summary row's
     assert "1 summary row(s) skipped: A10 ('Mittelwert')" in err
+    # and one leading its row, where the steps are named ('Stufe 1')
+    path.write_text("Stufe;P [bar];F [N]\nStufe 1;0;3\nStufe 2;1;423\nStufe 3;0;4\n"
+                    "Mittelwert;0,33;143\n", encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.steps["pressure_bar_mean"].tolist() == [0.0, 1.0, 0.0]
+    assert "1 summary row(s) skipped: A5 ('Mittelwert')" in err
 
 
 @pytest.mark.parametrize("label", ["Std.Abw.", "Std. Dev.", "Ø", "Moy.", "Anzahl"])
