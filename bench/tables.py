@@ -1242,6 +1242,10 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
+#: a date-time's time zone at its end: ``Z``, ``+01:00``, ``-0500`` or ``UTC``
+_ZONE = re.compile(r"(?:\dZ|[+-]\d\d:?\d\d|\bUTC)$", re.IGNORECASE)
+
+
 def _time_origin(table: RawTable, column: Column) -> tuple[str, float] | None:
     """The kind and moment [s] of a time column's first row where its cells are clock readings
     or date-times (``("date-time", seconds since 1970)``); None for a column of numbers
@@ -1283,6 +1287,17 @@ def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
                          f"(column {column.header!r}): the time goes backwards: expected "
                          "samples in time order")
     origins = (_time_origin(table, found["time"]), _time_origin(other, other_found["time"]))
+    if None not in origins and origins[0][0] == origins[1][0] == "date-time":
+        firsts = [str(t.rows[0][f["time"].index]).strip() if t.rows else ""
+                  for t, f in ((table, found), (other, other_found))]
+        zoned = [bool(_ZONE.search(first)) for first in firsts]
+        if zoned[0] != zoned[1]:  # one read as UTC, the other in its zone: hours apart
+            (with_zone, plain) = (0, 1) if zoned[0] else (1, 0)
+            names = (table.name, other.name)
+            raise ValueError(f"--join-by-time {other.source.name}: {names[with_zone]}'s "
+                             f"date-times carry a time zone ({firsts[with_zone]!r}) and "
+                             f"{names[plain]}'s none ({firsts[plain]!r}), which is read as "
+                             "UTC: expected both with their zone or both without")
     if None not in origins and origins[0][0] == origins[1][0]:
         shift = origins[1][1] - origins[0][1]  # the other's first row, on this table's clock
         how = f"as {origins[0][0]}s, {other.name} starting {shift:+.4g} s from {table.name}"

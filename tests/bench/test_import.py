@@ -574,6 +574,17 @@ def test_pressure_and_force_logged_in_two_files_are_joined_by_time(tmp_path, mkm
     code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--join-by-time",
                             str(late), "--out", str(tmp_path / "bad")])
     assert code == 2 and err.count("\n") == 1 and "do not overlap" in err
+    # local times without their zone, logged an hour apart in UTC, were read as UTC: joined an
+    # hour off, or refused as not overlapping, without a word of the zones
+    local = tmp_path / "local.csv"
+    pd.DataFrame({"Timestamp": [t[:-6] for t in stamps(tf + 3600)],
+                  "F [N]": 1.0}).to_csv(local, index=False)
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--join-by-time",
+                            str(local), "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("regulator.csv's date-times carry a time zone ('2026-12-06T09:00:00.000+00:00') and "
+            "local.csv's none ('2026-12-06T10:00:02.500'), which is read as UTC: expected both "
+            "with their zone or both without") in err
     assert not (tmp_path / "bad").exists()
 
 
