@@ -242,7 +242,10 @@ class _ReadWatchdog:
     past ``daq.read_timeout_s`` + the block's time + :data:`READ_HANG_MARGIN_S` with a pressure
     commanded it writes the vent (acts first), then keeps the books: the command's row, the
     bench marker, run.json ``failed`` with why and the vent not verified (a process that never
-    comes back is so recorded), a notice; the loop stops the run once the read returns.
+    comes back is so recorded), a notice; the loop stops the run once the read returns. Once
+    the shutdown has written its vent (:meth:`vented`) it vents no more and watches the reads
+    of the shutdown (the samples left, the vent check), keeping only the books of one that
+    hangs, until :meth:`stop`.
     """
 
     def __init__(self, run: BenchRun):
@@ -250,14 +253,20 @@ class _ReadWatchdog:
         daq = run.config.daq
         self.limit_s = (daq.read_timeout_s + daq.read_block_samples / daq.sample_rate_hz
                         + READ_HANG_MARGIN_S)
-        self._stop = threading.Event()
+        self._stop, self._vented = threading.Event(), threading.Event()
         self._thread = threading.Thread(target=self._watch, name="mkm-read-watchdog",
                                         daemon=True)
         self._thread.start()
 
+    def vented(self) -> None:
+        """The shutdown's vent is written: no vent from here on, and no books of the loop's
+        hang (the shutdown keeps them); never waits: a write the hung driver holds would hold
+        the shutdown too, and a vent written twice is harmless."""
+        self._vented.set()
+
     def stop(self) -> None:
-        """No vent from here on (the shutdown vents); never waits: a write the hung driver
-        holds would hold the shutdown too, and a vent written twice is harmless."""
+        """The shutdown's reads are done: the thread ends."""
+        self._vented.set()
         self._stop.set()
 
     def _watch(self) -> None:
@@ -265,11 +274,14 @@ class _ReadWatchdog:
         acq = run.acquisition
         while not self._stop.wait(WATCH_EVERY_S):
             since, held_bar = acq.reading_since, acq.command_bar
-            if since is None or not held_bar > 0:
+            if since is None or not (held_bar > 0 or self._vented.is_set()):
                 continue
             hung_s = time.monotonic() - since
             if hung_s < self.limit_s:
                 continue
+            if self._vented.is_set():  # the shutdown's read, its vent written: books only
+                self._after_vent(hung_s)
+                return
             t_s = acq.next_index / acq.rate_hz
             # the loop stops at its next block from now on, whatever the write below does
             acq.hung = (f"read interlock: the read of the device did not return within "
@@ -282,9 +294,27 @@ class _ReadWatchdog:
                 ok, vent = False, (f"the watchdog's vent command failed ({type(exc).__name__}: "
                                    f"{exc}): VENT BY HAND")
             acq.hung_vent = vent
-            if not self._stop.is_set():  # else the shutdown, under way, keeps the books
+            if not self._vented.is_set():  # else the shutdown, under way, keeps the books
                 self._books(ok, t_s)
             return
+
+    def _after_vent(self, hung_s: float) -> None:
+        """A read of the shutdown hangs after its vent: run.json says so, the vent not
+        verified (a process that never comes back is so recorded), and a notice (never
+        raises)."""
+        run, acq = self.run, self.run.acquisition
+        acq.hung_after_vent = (
+            f"a read of the device did not return within {hung_s:.1f} s (its timeout "
+            f"{run.config.daq.read_timeout_s:g} s) after the shutdown's vent: the driver hangs")
+        try:
+            run.recorder.meta.manual_vent_required = True
+            run.recorder.mark(RunStatus.FAILED, f"{acq.hung_after_vent}; the vent was "
+                              "commanded, its check cannot read the monitor: VENT BY HAND or "
+                              "verify it with `mkm vent`", 0.0)
+            run.notify(f"{acq.hung_after_vent}: VENT BY HAND or verify it with `mkm vent`; "
+                       f"{run.recorder.path} records it")
+        except BaseException:  # the shutdown records the run if the read returns
+            pass
 
     def _books(self, ok: bool, t_s: float) -> None:
         """After the watchdog's vent: its row, the marker, run.json, a notice (never raises)."""
@@ -302,6 +332,24 @@ class _ReadWatchdog:
             run.notify(f"{said}; {run.recorder.path} records it")
         except BaseException:  # the vent went out; the shutdown records the run
             pass
+
+
+class _Watched:
+    """``backend`` whose reads the run's watchdog watches (the vent check's:
+    :attr:`mkm.bench.worker.Acquisition.reading_since` set while one is under way)."""
+
+    def __init__(self, backend: Backend, acquisition: Acquisition):
+        self._backend, self._acquisition = backend, acquisition
+
+    def read(self, n_samples: int, timeout_s: float):
+        self._acquisition.reading_since = time.monotonic()
+        try:
+            return self._backend.read(n_samples, timeout_s)
+        finally:
+            self._acquisition.reading_since = None
+
+    def __getattr__(self, name):
+        return getattr(self._backend, name)
 
 
 class BenchRun:
@@ -607,7 +655,8 @@ class BenchRun:
         try:
             zero = VentedZero.from_tare(self.recorder.meta.tare, self.config) \
                 if self.recorder is not None else None
-            return verify_vent(self.backend, self.config, self.operator, started=self._started,
+            backend = _Watched(self.backend, acq) if acq is not None else self.backend
+            return verify_vent(backend, self.config, self.operator, started=self._started,
                                deadline=self.signals.grace_deadline, record=record,
                                vented_zero=zero)
         except BaseException as exc:
@@ -660,8 +709,7 @@ class BenchRun:
         reached the device, and only then: a failed one is said instead."""
         problems = []
         acq = self.acquisition
-        if self._watchdog is not None:  # the shutdown vents now and reads on its own
-            self._watchdog.stop()
+        if self._watchdog is not None:
             # the read came back with an error, or as the watchdog wrote its vent
             problems.extend(part for part in (acq.hung, acq.hung_vent)
                             if part and part not in reason)
@@ -680,6 +728,8 @@ class BenchRun:
                 problems.append(f"vent command failed ({type(failure).__name__}: {failure}), "
                                 "tried again")
             failure = self._write_vent(acq)
+        if self._watchdog is not None:  # no vent of its own from here on: reads watched
+            self._watchdog.vented()
         # where the reason says "vented": after the failed tries, before what came after
         vented_at = len(problems) if say_vent and (
             failure is None or (acq is not None and acq.written)) else None
@@ -711,6 +761,10 @@ class BenchRun:
                                       f"({self.vent_check.problem})")
             problems.append(said)
             self.vent_check = self._verify(not back)
+        if self._watchdog is not None:  # the shutdown's reads are done
+            self._watchdog.stop()
+            if acq.hung_after_vent:  # and came back
+                problems.append(f"{acq.hung_after_vent}, then returned")
         if not self._started and self.config.regulator.electronic and \
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify

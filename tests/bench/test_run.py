@@ -652,3 +652,45 @@ def test_a_read_that_returns_as_the_watchdog_vents_stops_the_run_there(config, t
         "read interlock: the read of the device did not return within"), result.reason
     commands = load_run(result.path).commands
     assert not (commands["command_bar"][commands["sample"] > 45] > 0).any()  # no pressure since
+
+
+def test_a_read_of_the_vent_check_that_hangs_is_recorded_as_it_hangs(config, tmp_path):
+    # Ctrl-C at sample 45, the vent written; the vent check's third read hangs (the driver
+    # does not keep its 0.5 s timeout). The process sat in it with run.json still `running`:
+    # killed then, the run was mended as killed, nothing saying its vent check hung. Now
+    # run.json says so as it hangs, the vent not verified; the read returning, the check goes
+    # on and the run says the read hung.
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, after_stop, seen = backend.read, [], {}
+
+    def hanging_in_the_check(n, timeout):
+        if after_stop:
+            after_stop.append(n)
+            if len(after_stop) == 4:  # the stop's block, then the check's third read
+                deadline = time.monotonic() + 60  # the test's net
+                while time.monotonic() < deadline:
+                    meta = json.loads((run.recorder.path / "run.json").read_text())
+                    if meta["status"] == "failed":
+                        seen["meta"] = meta
+                        break
+                    time.sleep(0.01)
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()
+            after_stop.append(n)
+        return block
+
+    backend.read = hanging_in_the_check
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    meta = seen["meta"]  # as it hung
+    assert meta["manual_vent_required"]
+    assert "after the shutdown's vent: the driver hangs; the vent was commanded, its check " \
+        "cannot read the monitor: VENT BY HAND" in meta["reason"]
+    assert result.status == "aborted" and result.exit_code == 130, result.reason
+    assert "after the shutdown's vent: the driver hangs, then returned" in result.reason
+    recorded = load_run(result.path)
+    assert recorded.meta.vent_check["verified"] and not recorded.meta.manual_vent_required
+    np.testing.assert_array_equal(recorded.samples["sample"], np.arange(len(recorded.samples)))
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
