@@ -83,6 +83,9 @@ DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before sayi
 READ_HANG_MARGIN_S = 1.0
 #: the watchdog looks at the loop's read this often [s]
 WATCH_EVERY_S = 0.1
+#: the watchdog waits this long [s] for its vent write (the AO write's own timeout) before it
+#: records the write as hung too
+WATCHDOG_WRITE_S = 1.0
 
 
 def notify_stderr(message: str) -> None:
@@ -287,16 +290,36 @@ class _ReadWatchdog:
             acq.hung = (f"read interlock: the read of the device did not return within "
                         f"{hung_s:.1f} s (its timeout {run.config.daq.read_timeout_s:g} s) with "
                         f"{held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
-            try:  # acts first
-                run.backend.write_command(run.config.regulator.command_volts(0.0))
-                ok, vent = True, "vented by the watchdog"
-            except BaseException as exc:
-                ok, vent = False, (f"the watchdog's vent command failed ({type(exc).__name__}: "
-                                   f"{exc}): VENT BY HAND")
+            ok, vent = self._vent()  # acts first
             acq.hung_vent = vent
             if not self._vented.is_set():  # else the shutdown, under way, keeps the books
                 self._books(ok, t_s)
             return
+
+    def _vent(self) -> tuple[bool, str]:
+        """Write the vent on a thread of its own, waited for :data:`WATCHDOG_WRITE_S`: a driver
+        that hangs may hold its writes too, and the books must still be kept. Whether it went
+        out, and what came of it in words."""
+        done, failed = threading.Event(), []
+        volts = self.run.config.regulator.command_volts(0.0)
+
+        def write() -> None:
+            try:
+                self.run.backend.write_command(volts)
+            except BaseException as exc:
+                failed.append(exc)
+            finally:
+                done.set()
+
+        threading.Thread(target=write, name="mkm-watchdog-vent", daemon=True).start()
+        if not done.wait(WATCHDOG_WRITE_S):
+            return False, (f"the watchdog's vent command did not return within "
+                           f"{WATCHDOG_WRITE_S:g} s (the driver hangs for it too): VENT BY HAND")
+        if failed:
+            exc = failed[0]
+            return False, (f"the watchdog's vent command failed ({type(exc).__name__}: {exc}): "
+                           "VENT BY HAND")
+        return True, "vented by the watchdog"
 
     def _after_vent(self, hung_s: float) -> None:
         """A read of the shutdown hangs after its vent: run.json says so, the vent not
