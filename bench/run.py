@@ -23,6 +23,9 @@ Safety, in every exit path:
   device, then records the truth in run.json;
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
+- a read of the device that hangs past its timeout with a pressure commanded is vented by a
+  watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a read of the
+  shutdown that hangs after its vent;
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` (read on
   while still falling, at most :data:`mkm.bench.vent.FALLING_MAX_S`) and stay there, read from
