@@ -864,8 +864,13 @@ class BenchRun:
         elif lease is not None and unverified:  # kept: the next command vents first, says why
             what, unfollowed = self.vent_check.describe(), self.vent_check.unfollowed_bar
             # a failure leaves the marker naming the run and its last command
-            lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
-                       0.0 if hung else STATE_WAIT_S)
+            done = lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
+                              0.0 if hung else STATE_WAIT_S)
+            if done and lease.error is not None:
+                reason = (f"{reason}; the bench marker {lease.path} could not record the vent "
+                          f"not verified ({lease.error.strerror or lease.error}): it names the "
+                          "run and its last command, and the next command on this bench vents "
+                          "first")
         if lease is not None:  # its thread ends after the last update (one that hangs: later)
             lease.end()
         return status, reason
