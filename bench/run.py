@@ -23,6 +23,9 @@ Safety, in every exit path:
   device, then records the truth in run.json;
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
+- a read of the device that hangs past its timeout with a pressure commanded is vented by a
+  watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a read of the
+  shutdown that hangs after its vent;
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` (read on
   while still falling, at most :data:`mkm.bench.vent.FALLING_MAX_S`) and stay there, read from
@@ -83,6 +86,9 @@ DISK_NOTICE_S = 2.0  # the final record waits this long for the disk before sayi
 READ_HANG_MARGIN_S = 1.0
 #: the watchdog looks at the loop's read this often [s]
 WATCH_EVERY_S = 0.1
+#: the watchdog waits this long [s] for its vent write (the AO write's own timeout) before it
+#: records the write as hung too
+WATCHDOG_WRITE_S = 1.0
 
 
 def notify_stderr(message: str) -> None:
@@ -242,7 +248,10 @@ class _ReadWatchdog:
     past ``daq.read_timeout_s`` + the block's time + :data:`READ_HANG_MARGIN_S` with a pressure
     commanded it writes the vent (acts first), then keeps the books: the command's row, the
     bench marker, run.json ``failed`` with why and the vent not verified (a process that never
-    comes back is so recorded), a notice; the loop stops the run once the read returns.
+    comes back is so recorded), a notice; the loop stops the run once the read returns. Once
+    the shutdown has written its vent (:meth:`vented`) it vents no more and watches the reads
+    of the shutdown (the samples left, the vent check), keeping only the books of one that
+    hangs, until :meth:`stop`.
     """
 
     def __init__(self, run: BenchRun):
@@ -250,14 +259,20 @@ class _ReadWatchdog:
         daq = run.config.daq
         self.limit_s = (daq.read_timeout_s + daq.read_block_samples / daq.sample_rate_hz
                         + READ_HANG_MARGIN_S)
-        self._stop = threading.Event()
+        self._stop, self._vented = threading.Event(), threading.Event()
         self._thread = threading.Thread(target=self._watch, name="mkm-read-watchdog",
                                         daemon=True)
         self._thread.start()
 
+    def vented(self) -> None:
+        """The shutdown's vent is written: no vent from here on, and no books of the loop's
+        hang (the shutdown keeps them); never waits: a write the hung driver holds would hold
+        the shutdown too, and a vent written twice is harmless."""
+        self._vented.set()
+
     def stop(self) -> None:
-        """No vent from here on (the shutdown vents); never waits: a write the hung driver
-        holds would hold the shutdown too, and a vent written twice is harmless."""
+        """The shutdown's reads are done: the thread ends."""
+        self._vented.set()
         self._stop.set()
 
     def _watch(self) -> None:
@@ -265,26 +280,67 @@ class _ReadWatchdog:
         acq = run.acquisition
         while not self._stop.wait(WATCH_EVERY_S):
             since, held_bar = acq.reading_since, acq.command_bar
-            if since is None or not held_bar > 0:
+            if since is None or not (held_bar > 0 or self._vented.is_set()):
                 continue
             hung_s = time.monotonic() - since
             if hung_s < self.limit_s:
                 continue
+            if self._vented.is_set():  # the shutdown's read, its vent written: books only
+                self._after_vent(hung_s)
+                return
             t_s = acq.next_index / acq.rate_hz
             # the loop stops at its next block from now on, whatever the write below does
             acq.hung = (f"read interlock: the read of the device did not return within "
                         f"{hung_s:.1f} s (its timeout {run.config.daq.read_timeout_s:g} s) with "
                         f"{held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
-            try:  # acts first
-                run.backend.write_command(run.config.regulator.command_volts(0.0))
-                ok, vent = True, "vented by the watchdog"
-            except BaseException as exc:
-                ok, vent = False, (f"the watchdog's vent command failed ({type(exc).__name__}: "
-                                   f"{exc}): VENT BY HAND")
+            ok, vent = self._vent()  # acts first
             acq.hung_vent = vent
-            if not self._stop.is_set():  # else the shutdown, under way, keeps the books
+            if not self._vented.is_set():  # else the shutdown, under way, keeps the books
                 self._books(ok, t_s)
             return
+
+    def _vent(self) -> tuple[bool, str]:
+        """Write the vent on a thread of its own, waited for :data:`WATCHDOG_WRITE_S`: a driver
+        that hangs may hold its writes too, and the books must still be kept. Whether it went
+        out, and what came of it in words."""
+        done, failed = threading.Event(), []
+        volts = self.run.config.regulator.command_volts(0.0)
+
+        def write() -> None:
+            try:
+                self.run.backend.write_command(volts)
+            except BaseException as exc:
+                failed.append(exc)
+            finally:
+                done.set()
+
+        threading.Thread(target=write, name="mkm-watchdog-vent", daemon=True).start()
+        if not done.wait(WATCHDOG_WRITE_S):
+            return False, (f"the watchdog's vent command did not return within "
+                           f"{WATCHDOG_WRITE_S:g} s (the driver hangs for it too): VENT BY HAND")
+        if failed:
+            exc = failed[0]
+            return False, (f"the watchdog's vent command failed ({type(exc).__name__}: {exc}): "
+                           "VENT BY HAND")
+        return True, "vented by the watchdog"
+
+    def _after_vent(self, hung_s: float) -> None:
+        """A read of the shutdown hangs after its vent: run.json says so, the vent not
+        verified (a process that never comes back is so recorded), and a notice (never
+        raises)."""
+        run, acq = self.run, self.run.acquisition
+        acq.hung_after_vent = (
+            f"a read of the device did not return within {hung_s:.1f} s (its timeout "
+            f"{run.config.daq.read_timeout_s:g} s) after the shutdown's vent: the driver hangs")
+        try:
+            run.recorder.meta.manual_vent_required = True
+            run.recorder.mark(RunStatus.FAILED, f"{acq.hung_after_vent}; the vent was "
+                              "commanded, its check cannot read the monitor: VENT BY HAND or "
+                              "verify it with `mkm vent`", 0.0)
+            run.notify(f"{acq.hung_after_vent}: VENT BY HAND or verify it with `mkm vent`; "
+                       f"{run.recorder.path} records it")
+        except BaseException:  # the shutdown records the run if the read returns
+            pass
 
     def _books(self, ok: bool, t_s: float) -> None:
         """After the watchdog's vent: its row, the marker, run.json, a notice (never raises)."""
@@ -302,6 +358,24 @@ class _ReadWatchdog:
             run.notify(f"{said}; {run.recorder.path} records it")
         except BaseException:  # the vent went out; the shutdown records the run
             pass
+
+
+class _Watched:
+    """``backend`` whose reads the run's watchdog watches (the vent check's:
+    :attr:`mkm.bench.worker.Acquisition.reading_since` set while one is under way)."""
+
+    def __init__(self, backend: Backend, acquisition: Acquisition):
+        self._backend, self._acquisition = backend, acquisition
+
+    def read(self, n_samples: int, timeout_s: float):
+        self._acquisition.reading_since = time.monotonic()
+        try:
+            return self._backend.read(n_samples, timeout_s)
+        finally:
+            self._acquisition.reading_since = None
+
+    def __getattr__(self, name):
+        return getattr(self._backend, name)
 
 
 class BenchRun:
@@ -607,7 +681,8 @@ class BenchRun:
         try:
             zero = VentedZero.from_tare(self.recorder.meta.tare, self.config) \
                 if self.recorder is not None else None
-            return verify_vent(self.backend, self.config, self.operator, started=self._started,
+            backend = _Watched(self.backend, acq) if acq is not None else self.backend
+            return verify_vent(backend, self.config, self.operator, started=self._started,
                                deadline=self.signals.grace_deadline, record=record,
                                vented_zero=zero)
         except BaseException as exc:
@@ -660,8 +735,7 @@ class BenchRun:
         reached the device, and only then: a failed one is said instead."""
         problems = []
         acq = self.acquisition
-        if self._watchdog is not None:  # the shutdown vents now and reads on its own
-            self._watchdog.stop()
+        if self._watchdog is not None:
             # the read came back with an error, or as the watchdog wrote its vent
             problems.extend(part for part in (acq.hung, acq.hung_vent)
                             if part and part not in reason)
@@ -680,6 +754,8 @@ class BenchRun:
                 problems.append(f"vent command failed ({type(failure).__name__}: {failure}), "
                                 "tried again")
             failure = self._write_vent(acq)
+        if self._watchdog is not None:  # no vent of its own from here on: reads watched
+            self._watchdog.vented()
         # where the reason says "vented": after the failed tries, before what came after
         vented_at = len(problems) if say_vent and (
             failure is None or (acq is not None and acq.written)) else None
@@ -711,6 +787,10 @@ class BenchRun:
                                       f"({self.vent_check.problem})")
             problems.append(said)
             self.vent_check = self._verify(not back)
+        if self._watchdog is not None:  # the shutdown's reads are done
+            self._watchdog.stop()
+            if acq.hung_after_vent:  # and came back
+                problems.append(f"{acq.hung_after_vent}, then returned")
         if not self._started and self.config.regulator.electronic and \
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
@@ -784,8 +864,13 @@ class BenchRun:
         elif lease is not None and unverified:  # kept: the next command vents first, says why
             what, unfollowed = self.vent_check.describe(), self.vent_check.unfollowed_bar
             # a failure leaves the marker naming the run and its last command
-            lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
-                       0.0 if hung else STATE_WAIT_S)
+            done = lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
+                              0.0 if hung else STATE_WAIT_S)
+            if done and lease.error is not None:
+                reason = (f"{reason}; the bench marker {lease.path} could not record the vent "
+                          f"not verified ({lease.error.strerror or lease.error}): it names the "
+                          "run and its last command, and the next command on this bench vents "
+                          "first")
         if lease is not None:  # its thread ends after the last update (one that hangs: later)
             lease.end()
         return status, reason

@@ -317,7 +317,9 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         except ReadTimeout as exc:  # at 0 bar, as in the run: daq.read_retries in a row
             timeouts, blind_s = timeouts + 1, blind_s + read_s
             waited = max(time.monotonic() - start, sample_time_s + blind_s)
-            if timeouts > config.daq.read_retries or waited > timeout_s:
+            # read on past the timeout while the monitor was falling: its timeouts as well
+            if timeouts > config.daq.read_retries or waited > (
+                    FALLING_MAX_S if waited_why else timeout_s):
                 return VentCheck(False, pressure, below, waited, "monitor",
                                  f"{type(exc).__name__}: {exc}")
             continue

@@ -129,6 +129,7 @@ class Acquisition:
         # read that hangs past its timeout with a pressure commanded, and says why here
         self.reading_since: float | None = None
         self.hung = ""  # why the read hung ("" while none did)
+        self.hung_after_vent = ""  # why a read of the shutdown, after its vent, hung
         self.hung_vent = ""  # what the watchdog's vent did, once written
         self.vented = False  # the last command written was a successful vent
         self.written = False  # the last command asked for reached the device
@@ -252,11 +253,14 @@ class Acquisition:
         waiting = self.backend.available()
         if waiting <= 0:
             return
+        self.reading_since = time.monotonic()  # watched as the loop's reads are
         try:
             block = self.backend.read(waiting, self.config.daq.read_timeout_s)
         except BufferOverflow as exc:
             self._overflowed(exc)
             return
+        finally:
+            self.reading_since = None
         phase, step, set_bar, first = *self._reading, self._first(block)
         self.recorder.samples([self._sample(first + k, volts, phase, step, set_bar)
                                for k, volts in enumerate(block.volts)])

@@ -792,3 +792,24 @@ def test_a_monitor_reading_nan_after_the_vent_is_said_so(config, tmp_path, monke
                                   "nan V, not a number): VENT BY HAND (the regulator may still "
                                   "hold 0.5 bar)")
     assert "above" not in result.reason
+
+
+def test_a_full_state_folder_as_an_unverified_vent_is_marked_is_said(config, tmp_path,
+                                                                     monkeypatch):
+    # the regulator sticks at 0.5 bar: the vent is not verified, and the bench marker, which
+    # must say so to the next command, cannot be written (the state folder's disk is full):
+    # nothing said it; the marker left names the run and its last command all the same
+    from mkm.bench.unvented import BenchLease, bench_folder
+
+    def full(self, what, unfollowed_bar=None):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(BenchLease, "unverified", full)
+    c = config.replace(sim={"faults": {"regulator_stuck_at_s": 4.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    assert "could not record the vent not verified (No space left on device): it names the " \
+        "run and its last command, and the next command on this bench vents first" \
+        in result.reason
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # still there, naming the run
+    assert json.loads(marker.read_text())["run_path"] == str(result.path.resolve())

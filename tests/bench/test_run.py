@@ -631,7 +631,7 @@ def test_a_read_that_returns_as_the_watchdog_vents_stops_the_run_there(config, t
     writing, release, hung = threading.Event(), threading.Event(), []
 
     def slow_for_the_watchdog(volts):
-        if threading.current_thread().name == "mkm-read-watchdog":
+        if threading.current_thread().name == "mkm-watchdog-vent":
             writing.set()
             release.wait(60)  # the test's net; released once the run has ended
         write(volts)
@@ -652,3 +652,89 @@ def test_a_read_that_returns_as_the_watchdog_vents_stops_the_run_there(config, t
         "read interlock: the read of the device did not return within"), result.reason
     commands = load_run(result.path).commands
     assert not (commands["command_bar"][commands["sample"] > 45] > 0).any()  # no pressure since
+
+
+def test_a_read_of_the_vent_check_that_hangs_is_recorded_as_it_hangs(config, tmp_path):
+    # Ctrl-C at sample 45, the vent written; the vent check's third read hangs (the driver
+    # does not keep its 0.5 s timeout). The process sat in it with run.json still `running`:
+    # killed then, the run was mended as killed, nothing saying its vent check hung. Now
+    # run.json says so as it hangs, the vent not verified; the read returning, the check goes
+    # on and the run says the read hung.
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, after_stop, seen = backend.read, [], {}
+
+    def hanging_in_the_check(n, timeout):
+        if after_stop:
+            after_stop.append(n)
+            if len(after_stop) == 4:  # the stop's block, then the check's third read
+                deadline = time.monotonic() + 60  # the test's net
+                while time.monotonic() < deadline:
+                    meta = json.loads((run.recorder.path / "run.json").read_text())
+                    if meta["status"] == "failed":
+                        seen["meta"] = meta
+                        break
+                    time.sleep(0.01)
+        block = read(n, timeout)
+        if block.first_index == 45:
+            run.request_stop()
+            after_stop.append(n)
+        return block
+
+    backend.read = hanging_in_the_check
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    meta = seen["meta"]  # as it hung
+    assert meta["manual_vent_required"]
+    assert "after the shutdown's vent: the driver hangs; the vent was commanded, its check " \
+        "cannot read the monitor: VENT BY HAND" in meta["reason"]
+    assert result.status == "aborted" and result.exit_code == 130, result.reason
+    assert "after the shutdown's vent: the driver hangs, then returned" in result.reason
+    recorded = load_run(result.path)
+    assert recorded.meta.vent_check["verified"] and not recorded.meta.manual_vent_required
+    np.testing.assert_array_equal(recorded.samples["sample"], np.arange(len(recorded.samples)))
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_driver_that_hangs_the_watchdogs_vent_too_is_recorded_as_it_hangs(config, tmp_path):
+    # the read of sample 45 hangs, and so does the watchdog's vent write: the watchdog waited
+    # in the write, and nothing was recorded of either while they hung. Its write is waited
+    # for 1 s (the AO write's own timeout); then run.json says both hang: VENT BY HAND.
+    import threading
+
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, write = backend.read, backend.write_command
+    release, seen = threading.Event(), {}
+
+    def hung_for_the_watchdog(volts):
+        if threading.current_thread() is not threading.main_thread():  # the watchdog's
+            release.wait(60)  # the test's net
+        write(volts)
+
+    def hanging(n, timeout):
+        if backend._index == 45 and not seen:
+            deadline = time.monotonic() + 60  # the test's net
+            while time.monotonic() < deadline:
+                meta = json.loads((run.recorder.path / "run.json").read_text())
+                if meta["status"] == "failed":
+                    seen["meta"], seen["command_bar"] = meta, backend.bench.command_bar
+                    break
+                time.sleep(0.01)
+            release.set()
+        return read(n, timeout)
+
+    backend.read, backend.write_command = hanging, hung_for_the_watchdog
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    try:
+        result = run.execute()
+    finally:
+        release.set()
+    meta = seen["meta"]
+    assert meta["manual_vent_required"] and seen["command_bar"] == 0.5  # not vented meanwhile
+    assert "the driver hangs; the watchdog's vent command did not return within 1 s (the " \
+        "driver hangs for it too): VENT BY HAND" in meta["reason"]
+    # the read and the write back: the run stops, vents and verifies as any other
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert load_run(result.path).meta.vent_check["verified"]
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented

@@ -79,6 +79,18 @@ def test_a_regulator_slower_than_the_vent_timeout_is_read_on_while_it_falls(conf
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
 
 
+def test_a_read_timeout_while_the_check_reads_on_is_retried_as_before_it(config, tmp_path):
+    # the same slow regulator; one read times out 10.3 s after the vent, as the check reads on
+    # past safety.vent_timeout_s: it ended the check (VENT BY HAND) where a timeout before the
+    # 10 s was retried (daq.read_retries)
+    c = config.replace(sequence={"pressures_bar": (2.5,)}, sim={
+        "regulator_tau_s": 2.5, "faults": {"read_timeout_at_s": 17.1 + 10.3}})
+    result, backend = _stopped_at(c, tmp_path, 170)
+    assert result.status == "aborted" and result.exit_code == 130, result.reason
+    check = load_run(result.path).meta.vent_check
+    assert check["verified"] and "still falling" in check["waited_why"]
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
 def test_a_regulator_still_falling_at_the_hard_maximum_asks_for_a_vent_by_hand(config,
                                                                               tmp_path):
     # time constant 20 s: the 2.5 bar step ends unsettled at 22 s, near 2.5 (1 - exp(-1.1)) =
