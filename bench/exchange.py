@@ -50,6 +50,7 @@ from mkm.bench.storage import (
 )
 from mkm.bench.tables import (
     Recognition,
+    backwards_message,
     by_unit_columns,
     column_text,
     directions,
@@ -735,9 +736,9 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         time_s = group.values("time")
         back = np.flatnonzero(np.diff(time_s) < 0)
         if back.size:
-            raise ValueError(f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')} "
-                             f"(column {found['time'].header!r}): the time goes backwards: "
-                             "expected samples in time order")
+            raise ValueError(backwards_message(
+                f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')}",
+                found["time"].header, time_s[back[0]] - time_s[back[0] + 1]))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
     record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)

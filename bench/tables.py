@@ -1242,6 +1242,15 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
+def backwards_message(where: str, header: str, jump_s: float) -> str:
+    """The one line of a time column that goes back by ``jump_s`` [s] at ``where`` (a table
+    and its cell); an hour back is named as a clock put back (summer time's end)."""
+    dst = (" by an hour: a local clock put back at the end of summer time? give the times with "
+           "their zone (+02:00, +01:00)" if abs(jump_s - 3600.0) <= 60.0 else "")
+    return (f"{where} (column {header!r}): the time goes backwards{dst}: expected samples in "
+            "time order")
+
+
 #: a date-time's time zone at its end: ``Z``, ``+01:00``, ``-0500`` or ``UTC``
 _ZONE = re.compile(r"(?:\dZ|[+-]\d\d:?\d\d|\bUTC)$", re.IGNORECASE)
 
@@ -1283,9 +1292,9 @@ def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
     back = np.flatnonzero(np.diff(other_times) < 0)
     if back.size:
         column = other_found["time"]
-        raise ValueError(f"{other.name}, cell {other.cell(int(back[0]) + 1, column.index)} "
-                         f"(column {column.header!r}): the time goes backwards: expected "
-                         "samples in time order")
+        raise ValueError(backwards_message(
+            f"{other.name}, cell {other.cell(int(back[0]) + 1, column.index)}", column.header,
+            other_times[back[0]] - other_times[back[0] + 1]))
     origins = (_time_origin(table, found["time"]), _time_origin(other, other_found["time"]))
     if None not in origins and origins[0][0] == origins[1][0] == "date-time":
         firsts = [str(t.rows[0][f["time"].index]).strip() if t.rows else ""

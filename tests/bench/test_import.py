@@ -1375,3 +1375,21 @@ def test_the_published_dmsp_10_with_an_accuracy_gives_what_its_page_says(tmp_pat
     measured = [fe.max_abs_err_pct[eps] for eps in (0.064, 0.124, 0.184)] + [
         fe.max_abs_err_pct[0.0], fe.worst_E_n[0.0]]
     assert [said(v, t) for v, t in zip(measured, scores, strict=True)] == list(scores)
+
+
+@pytest.mark.parametrize("jump_s, said", [(3600.0, True), (5.0, False)])
+def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said, tmp_path,
+                                                                     mkm_cli):
+    # local times logged across the end of summer time (02:59:59 -> 02:00:00) were refused as
+    # "the time goes backwards" without a word of why
+    t = np.arange(0.0, 20.0, 0.5)
+    t[20:] -= jump_s
+    table = tmp_path / "record.csv"
+    pd.DataFrame({"t [s]": 7000.0 + t, "P [bar]": np.where(t > 5, 1.0, 0.0),
+                  "F [N]": 0.0}).to_csv(table, index=False)
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert "(column 't [s]'): the time goes backwards" in err
+    assert ("by an hour: a local clock put back at the end of summer time? give the times with "
+            "their zone" in err) is said
