@@ -343,8 +343,9 @@ class Recorder:
         self.writer.release_reserve()  # a disk that filled mid-run: the room for this record
         try:  # the rows first: run.json's outcome is written once they are on disk
             self.writer.close()
-        except OSError as exc:
-            problems.append(f"the run's files could not all be synced ({exc})")
+        except Exception as exc:  # noqa: BLE001 - any failure of the close: the outcome still
+            problems.append(f"the run's files could not all be synced ({type(exc).__name__}: "
+                            f"{exc})")
         else:
             if self._refused:  # rows a full disk refused went out at close: count the disk's
                 self.meta.counters["samples"] = self.writer.samples_on_disk(

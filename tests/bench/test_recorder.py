@@ -561,3 +561,24 @@ def test_a_recorder_thread_that_fails_stops_the_run_vented_and_loses_no_sample(c
     assert recorded.meta.counters["samples"] == len(recorded.samples) > 61
     assert recorded.commands["purpose"].iloc[-1] == "vent" and recorded.meta.vent_check["verified"]
     assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_close_that_fails_otherwise_than_the_disk_still_records_the_outcome(tmp_path, capsys,
+                                                                               monkeypatch):
+    # a writer's close raising other than OSError (a library's bug, a codec) escaped the
+    # shutdown: no run.json outcome, a traceback where the run's path belongs
+    close = RunWriter.close
+
+    def broken_close(self):
+        close(self)
+        raise RuntimeError("codec gave up")
+
+    monkeypatch.setattr(RunWriter, "close", broken_close)
+    rc = main(["acquire", "--pressures", "0.5", "--out", str(tmp_path / "runs"),
+               "--no-progress"])
+    captured = capsys.readouterr()
+    assert "Traceback" not in captured.err
+    assert "could not all be synced (RuntimeError: codec gave up)" in captured.err
+    run = load_run(Path(captured.out.strip().splitlines()[-1]))  # the path is still printed
+    assert run.status == "complete" and rc != 0  # the outcome kept, the problem said
+    assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
