@@ -339,3 +339,33 @@ def test_the_shipped_wall_identification_is_what_identify_gives_now(tmp_path, mo
             assert now[key] == value, key
         elif key != "seconds":
             assert now[key] == pytest.approx(value, rel=5e-6), key
+
+
+@pytest.mark.slow
+def test_the_shipped_wrong_bench_identification_is_what_identify_gives_now(tmp_path,
+                                                                           monkeypatch):
+    """``docs/measured/identify_wrong_bench_fresh.json`` (*How sure*: identify on a bench wrong
+    beyond what it declares) is what its recorded command gives now: its first draw again (its
+    seed and departure: the same muscle, bench and noise) to five digits. The shipped file's
+    chi2/nu had moved from 6.7828 to 6.7836 there, and its table's cells in the third digit."""
+    import json
+
+    bench = _benchmark("bench_identify_wrong_bench")
+    shipped = json.loads((DOCS / "measured" / "identify_wrong_bench_fresh.json").read_text(
+        encoding="utf-8"))
+    then = shipped["draws"][0]
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "state"))  # the benchmark sets its own
+    out = tmp_path / "wrong.json"
+    assert bench.main(["--draws", "1", "--seed", str(then["seed"]), "--departures",
+                       then["departure"], "--out", str(out)]) == 0
+    now = json.loads(out.read_text(encoding="utf-8"))["draws"][0]
+    assert (now["verdict"], now["missed"]) == (then["verdict"], then["missed"])
+    assert now["chi2_per_nu"] == pytest.approx(then["chi2_per_nu"], rel=2e-5)
+    for new, old in zip(now["parameters"], then["parameters"], strict=True):
+        assert new["parameter"] == old["parameter"]
+        for key in ("value", "ci_low", "ci_high"):
+            if old[key] is None:  # no interval
+                assert new[key] is None, (old["parameter"], key)
+            else:
+                assert new[key] == pytest.approx(old[key], rel=2e-5, abs=1e-9), (
+                    old["parameter"], key)
