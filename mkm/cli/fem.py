@@ -57,7 +57,7 @@ def register(subparsers) -> None:
         "commands; only --update-shipped rewrites the shipped mkm/fem/calibration.json.",
         epilog="example: mkm fem calibrate --model axisym --reference RUN_DIR --out lab.json; "
         "then mkm fem solve --model axisym --calibration lab.json --D0 40 --t0 3 --eps 0.1")
-    add_model_arguments(cal, theta0=False)
+    add_model_arguments(cal, theta0=False, models=static_names())
     cal.add_argument("--reference", metavar="CSV|RUN_DIR",
                      help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (optional L0_mm, "
                      "direction), a run folder of mkm acquire or mkm import (a lab's own table "

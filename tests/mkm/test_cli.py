@@ -484,6 +484,21 @@ def test_every_option_with_a_default_says_it_in_its_help():
     assert silent == []
 
 
+def test_fem_calibrate_help_names_only_the_models_it_calibrates(capsys):
+    """Its --model help listed every predictor (friction, surrogate, auto), and --per-point
+    (auto only), which it then refused: only the static physics rungs have a theta0 to fit."""
+    from mkm.cli import main
+    from mkm.fem.ladder import static_names
+
+    with pytest.raises(SystemExit):
+        main(["fem", "calibrate", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert f"predictor spec: one of {', '.join(static_names())}, with" in text
+    assert "--per-point" not in text and "surrogate" not in text
+    assert main(["fem", "calibrate", "--model", "auto"]) == 2
+    assert f"only the physics models {', '.join(static_names())}" in capsys.readouterr().err
+
+
 def test_identify_help_names_every_parameter_group_it_fits():
     """``--params``' help lists each group of the fit's registry (``fitting.GROUPS``), so a
     group added there cannot be missing from the help (the CLI does not import the fit)."""
