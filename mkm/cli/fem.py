@@ -238,7 +238,8 @@ def _reasons(prediction) -> list:
     """Why the sweep's points are ``valid=False``: (reason, which points) by their outcome
     (:func:`mkm.fem.outcomes.classify`), each point under the first that applies: past the braid
     lock of its angle (with eps_max), the braid locking before eps in the model's muscle (a
-    physical limit), not converged, outside the model's domain."""
+    physical limit), not converged, a surrogate's point without an answer in its own box
+    (:data:`mkm.surrogate.model.UNINFORMED`), outside the model's domain."""
     import numpy as np
 
     from mkm.fem.limits import lock_eps, past_lock_text
@@ -262,6 +263,15 @@ def _reasons(prediction) -> list:
         these = bad & (status == outcome)
         if these.any():
             reasons.append((said, these))
+            bad = bad & ~these
+    in_domain = prediction.extras.get("in_domain")
+    if in_domain is not None and bad.any():  # a surrogate's: no answer inside its own box
+        from mkm.surrogate.model import UNINFORMED
+
+        these = (bad & np.reshape(np.asarray(in_domain, dtype=bool), bad.shape)
+                 & (status == "invalid (model's own limit)"))
+        if these.any():
+            reasons.append((UNINFORMED, these))
             bad = bad & ~these
     if bad.any():
         reasons.append((_OUTSIDE_DOMAIN, bad))

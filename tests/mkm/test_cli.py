@@ -950,6 +950,21 @@ def test_the_invalid_points_warning_names_each_reason():
                                             "1 outside the model's domain")
 
 
+def test_the_invalid_points_warning_names_a_surrogate_point_without_an_answer():
+    """A surrogate's point inside its box whose std exceeds any force of the muscle (the
+    practical range's surrogate short of Equation 2's eps_max, past a thick wall's braid lock)
+    was counted 'outside the model's domain', which it is not; one outside its box still is."""
+    from mkm.cli.fem import _invalid_reasons
+    from mkm.fem.interface import Prediction
+    from mkm.surrogate.model import UNINFORMED
+
+    prediction = Prediction("surrogate-muscle-gp-range", {"theta0_deg": 40.0}, np.array(
+        [0.0, 4.0, 9.0]), np.full(3, 60.0), np.full(3, 6.0), np.full(3, 0.24),
+        np.array([0.0, np.nan, np.nan]), np.array([True, False, False]), np.ones(3, dtype=bool),
+        0.0, extras={"in_domain": np.array([True, True, False])})
+    assert _invalid_reasons(prediction) == (f"1 {UNINFORMED}; 1 outside the model's domain")
+
+
 def test_the_invalid_points_warning_names_a_braid_that_locks_before_eps_maximum():
     # the FE's muscle locks short of eps_max (its ends held narrow): a physical limit it names
     # (extra "limit"), counted as such by the one classification, apart from a stalled solve
