@@ -32,7 +32,7 @@ SAME_VALUE_RTOL = 1e-9
 
 
 #: why a point whose predictive std exceeds any force the muscle can develop has no answer
-UNINFORMED = "no answer: its std exceeds any force the muscle can develop there"
+UNINFORMED = "without an answer: its std exceeds any force the muscle can develop there"
 
 
 def uninformed_text(std_N: float, ceiling_N: float) -> str:

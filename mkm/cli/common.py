@@ -178,9 +178,13 @@ def choices(model: str, parameter: str) -> tuple[str, ...]:
     return entry(model).parameters[parameter].options()
 
 
-def add_model_arguments(parser, theta0: bool = True) -> None:
+def add_model_arguments(parser, theta0: bool = True, models: tuple[str, ...] | None = None
+                        ) -> None:
+    """``--model`` and the options that set its parameters; ``models``: the registered names
+    the command takes (default: every one)."""
+    names = models or tuple(entries())
     parser.add_argument("--model", default="eq2", help=f"predictor spec: one of "
-                        f"{', '.join(entries())}, with :key=value parameters (see `mkm models`); "
+                        f"{', '.join(names)}, with :key=value parameters (see `mkm models`); "
                         "default %(default)s")
     if theta0:
         parser.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
@@ -194,9 +198,11 @@ def add_model_arguments(parser, theta0: bool = True) -> None:
     parser.add_argument("--braid", choices=choices("axisym", "braid"),
                         help="axisym only: fibres bonded to the rubber (default) or a "
                         "frictionless sliding sleeve")
-    parser.add_argument("--per-point", action="store_true",
-                        help="auto only: choose the model per point (default: one model for "
-                        "the whole sweep, the cheapest that meets the tolerance over all of it)")
+    if "auto" in names:
+        parser.add_argument("--per-point", action="store_true",
+                            help="auto only: choose the model per point (default: one model "
+                            "for the whole sweep, the cheapest that meets the tolerance over "
+                            "all of it)")
 
 
 def add_calibration_argument(parser) -> None:

@@ -58,7 +58,7 @@ def register(subparsers) -> None:
         "commands; only --update-shipped rewrites the shipped mkm/fem/calibration.json.",
         epilog="example: mkm fem calibrate --model axisym --reference RUN_DIR --out lab.json; "
         "then mkm fem solve --model axisym --calibration lab.json --D0 40 --t0 3 --eps 0.1")
-    add_model_arguments(cal, theta0=False)
+    add_model_arguments(cal, theta0=False, models=static_names())
     cal.add_argument("--reference", metavar="CSV|RUN_DIR",
                      help="CSV with pressure_bar,D0_mm,t0_mm,eps,force_N (optional L0_mm, "
                      "direction), a run folder of mkm acquire or mkm import (a lab's own table "
@@ -240,7 +240,8 @@ def _reasons(prediction) -> list:
     """Why the sweep's points are ``valid=False``: (reason, which points) by their outcome
     (:func:`mkm.fem.outcomes.classify`), each point under the first that applies: past the braid
     lock of its angle (with eps_max), the braid locking before eps in the model's muscle (a
-    physical limit), not converged, outside the model's domain."""
+    physical limit), not converged, a surrogate's point without an answer in its own box
+    (:data:`mkm.surrogate.model.UNINFORMED`), outside the model's domain."""
     import numpy as np
 
     from mkm.fem.limits import lock_eps, past_lock_text
@@ -264,6 +265,15 @@ def _reasons(prediction) -> list:
         these = bad & (status == outcome)
         if these.any():
             reasons.append((said, these))
+            bad = bad & ~these
+    in_domain = prediction.extras.get("in_domain")
+    if in_domain is not None and bad.any():  # a surrogate's: no answer inside its own box
+        from mkm.surrogate.model import UNINFORMED
+
+        these = (bad & np.reshape(np.asarray(in_domain, dtype=bool), bad.shape)
+                 & (status == "invalid (model's own limit)"))
+        if these.any():
+            reasons.append((UNINFORMED, these))
             bad = bad & ~these
     if bad.any():
         reasons.append((_OUTSIDE_DOMAIN, bad))

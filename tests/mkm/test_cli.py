@@ -504,6 +504,21 @@ def test_every_option_with_a_default_says_it_in_its_help():
     assert silent == []
 
 
+def test_fem_calibrate_help_names_only_the_models_it_calibrates(capsys):
+    """Its --model help listed every predictor (friction, surrogate, auto), and --per-point
+    (auto only), which it then refused: only the static physics rungs have a theta0 to fit."""
+    from mkm.cli import main
+    from mkm.fem.ladder import static_names
+
+    with pytest.raises(SystemExit):
+        main(["fem", "calibrate", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert f"predictor spec: one of {', '.join(static_names())}, with" in text
+    assert "--per-point" not in text and "surrogate" not in text
+    assert main(["fem", "calibrate", "--model", "auto"]) == 2
+    assert f"only the physics models {', '.join(static_names())}" in capsys.readouterr().err
+
+
 def test_identify_help_names_every_parameter_group_it_fits():
     """``--params``' help lists each group of the fit's registry (``fitting.GROUPS``), so a
     group added there cannot be missing from the help (the CLI does not import the fit)."""
@@ -953,6 +968,21 @@ def test_the_invalid_points_warning_names_each_reason():
     assert _invalid_reasons(prediction) == (f"1 past the braid lock: eps >= eps_max "
                                             f"{eps_max:.4g} at theta0 30 deg; 1 not converged; "
                                             "1 outside the model's domain")
+
+
+def test_the_invalid_points_warning_names_a_surrogate_point_without_an_answer():
+    """A surrogate's point inside its box whose std exceeds any force of the muscle (the
+    practical range's surrogate short of Equation 2's eps_max, past a thick wall's braid lock)
+    was counted 'outside the model's domain', which it is not; one outside its box still is."""
+    from mkm.cli.fem import _invalid_reasons
+    from mkm.fem.interface import Prediction
+    from mkm.surrogate.model import UNINFORMED
+
+    prediction = Prediction("surrogate-muscle-gp-range", {"theta0_deg": 40.0}, np.array(
+        [0.0, 4.0, 9.0]), np.full(3, 60.0), np.full(3, 6.0), np.full(3, 0.24),
+        np.array([0.0, np.nan, np.nan]), np.array([True, False, False]), np.ones(3, dtype=bool),
+        0.0, extras={"in_domain": np.array([True, True, False])})
+    assert _invalid_reasons(prediction) == (f"1 {UNINFORMED}; 1 outside the model's domain")
 
 
 def test_the_invalid_points_warning_names_a_braid_that_locks_before_eps_maximum():
