@@ -135,9 +135,6 @@ class Search:
     box_origin: dict = field(default_factory=dict)
     #: the radial gap between tube and braid of the muscles as built [mm] (0: none)
     gap_mm: float = 0.0
-    #: the pressures the searching model answers for [bar]: the surrogate's training box, or
-    #: the FE search's
-    pressure_span_bar: tuple = (0.0, FE_SEARCH_MAX_PRESSURE_BAR)
 
     @property
     def feasible(self) -> pd.DataFrame:
@@ -149,20 +146,10 @@ class Search:
         return {k: list(self.constraints[k]) for k in BOX_KEYS}
 
     def edges(self, row) -> list[str]:
-        """What of a design ``row`` and its requirements sits on an end of what was searched:
-        the box and the rubbers (:func:`box_edges`), and a requirement's pressure at the top
-        of the searching model's (not the practical range's, past which none searches)."""
-        low, high = self.pressure_span_bar
-        tol = 1e-6 * (high - low)
-        at_top = [str(k) for k, req in enumerate(self.requirements, start=1)
-                  if abs(req.pressure_bar - high) <= tol]
-        if not at_top or abs(high - PRACTICAL_RANGE.pressure_bar[1]) <= tol:
-            return box_edges(row, self.constraints, self.calibration)
-        which = (f"requirement {at_top[0]}" if len(at_top) == 1
-                 else f"requirements {', '.join(at_top)}")
-        return box_edges(row, self.constraints, self.calibration) + [
-            f"P = {high:g} bar ({which}; the upper end of the {self.searcher}'s "
-            f"{span_text(low, high)} bar)"]
+        """What of a design ``row`` sits on an end of what was searched: the box and the
+        rubbers (:func:`box_edges`). A requirement's pressure is none: it is the requirement's,
+        not searched, and a design at another pressure would not meet that requirement."""
+        return box_edges(row, self.constraints, self.calibration)
 
     def box_note(self) -> str:
         """The searched D0 x t0 box where it is not the surrogate's training box (and
@@ -349,9 +336,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
                     fe_search, spec.text, "; ".join(n for n in (searcher_note, rubber_note) if n),
-                    calibration, surrogate_box, box_origin,
-                    gap, (0.0, FE_SEARCH_MAX_PRESSURE_BAR) if fe_search else
-                    tuple(float(v) for v in domain.pressure_bar))
+                    calibration, surrogate_box, box_origin, gap)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
