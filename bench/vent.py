@@ -60,6 +60,12 @@ class VentCheck:
     def as_dict(self) -> dict:
         return asdict(self)
 
+    def unproven(self, commanded_bar: float, problem: str) -> VentCheck:
+        """This check, not verified: ``problem`` says why its reading proves no vent of
+        ``commanded_bar`` (a vent by hand is asked for)."""
+        return dataclasses.replace(self, verified=False, unfollowed_bar=commanded_bar,
+                                   problem=problem)
+
     def describe(self) -> str:
         if self.verified:
             return (f"vent verified: {self.how} read {self.pressure_bar:.3f} bar after "
@@ -83,13 +89,12 @@ def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -
     """
     if not check.verified or check.how != "monitor" or not measured_bar < check.below_bar:
         return check
-    return dataclasses.replace(
-        check, verified=False, unfollowed_bar=commanded_bar,
-        problem=(f"the monitor read {reading_bar(measured_bar)} bar against {commanded_bar:g} bar "
-                 "commanded before the vent, so its reading after it proves nothing: stuck near "
-                 "zero, a monitor reads so whatever the muscle holds; a regulator without "
-                 "supply pressure or a hose that leaks reads the same; check the monitor and "
-                 "the supply"))
+    return check.unproven(commanded_bar, (
+        f"the monitor read {reading_bar(measured_bar)} bar against {commanded_bar:g} bar "
+        "commanded before the vent, so its reading after it proves nothing: stuck near "
+        "zero, a monitor reads so whatever the muscle holds; a regulator without "
+        "supply pressure or a hose that leaks reads the same; check the monitor and "
+        "the supply"))
 
 
 #: sample time [s] over which the monitor's reading must stay within its noise to count as
@@ -190,14 +195,13 @@ def without_fall(check: VentCheck, before_bar: float, commanded_bar: float, last
     fall = max(before_bar - check.pressure_bar, first_fall)
     if fall > noise_bar:
         return check
-    return dataclasses.replace(
-        check, verified=False, unfollowed_bar=commanded_bar,
-        problem=(f"the monitor read {reading_bar(before_bar)} bar with {commanded_bar:g} bar "
-                 f"commanded before the vent and did not fall after it by more than its noise "
-                 f"({noise_bar:.3f} bar), so its reading proves nothing: stuck near zero, a "
-                 "monitor reads so whatever the muscle holds; a regulator without supply "
-                 "pressure or a hose that leaks reads the same; check the monitor and the "
-                 "supply"))
+    return check.unproven(commanded_bar, (
+        f"the monitor read {reading_bar(before_bar)} bar with {commanded_bar:g} bar "
+        f"commanded before the vent and did not fall after it by more than its noise "
+        f"({noise_bar:.3f} bar), so its reading proves nothing: stuck near zero, a "
+        "monitor reads so whatever the muscle holds; a regulator without supply "
+        "pressure or a hose that leaks reads the same; check the monitor and the "
+        "supply"))
 
 
 #: a muscle that vents lets go of its force: a force after the vent above this fraction of the
@@ -221,14 +225,13 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
         return check
     if not after_N > max(noise_N, FORCE_KEPT_FRACTION * before_N):
         return check
-    return dataclasses.replace(
-        check, verified=False, unfollowed_bar=commanded_bar,
-        problem=(f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell "
-                 f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "
-                 f"than {FORCE_KEPT_FRACTION:.0%} of it): the muscle still pulls, so the "
-                 "monitor's reading proves nothing: a monitor that reports its command or is "
-                 "stuck, with an exhaust that did not open (or a load cell stuck); check the "
-                 "regulator and the load cell"))
+    return check.unproven(commanded_bar, (
+        f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell "
+        f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "
+        f"than {FORCE_KEPT_FRACTION:.0%} of it): the muscle still pulls, so the "
+        "monitor's reading proves nothing: a monitor that reports its command or is "
+        "stuck, with an exhaust that did not open (or a load cell stuck); check the "
+        "regulator and the load cell"))
 
 
 def verify_vent(backend, config, operator=None, started: bool = True,
