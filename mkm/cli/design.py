@@ -96,7 +96,8 @@ def register(subparsers) -> None:
                    "or silastic_s")
     p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
                    type=argtype(parse_number, "--max-outer-diameter", "mm"),
-                   help="largest outer diameter at the working pressure [mm] (the housing)")
+                   help="largest outer diameter at the working pressure [mm] (the housing; "
+                   "default: none, any width fits)")
     p.add_argument("--gap", dest="gap_mm", metavar="MM", type=argtype(parse_number, "--gap", "mm"),
                    help="radial gap between tube and braid at rest of the muscles as built "
                    "[mm] (default 0): the surrogate has none, so the FE model, which takes "

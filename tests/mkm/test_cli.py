@@ -504,6 +504,52 @@ def test_every_option_with_a_default_says_it_in_its_help():
     assert silent == []
 
 
+def test_every_quantity_option_says_its_default_or_that_it_is_required():
+    """mkm import --D0 and --t0 read "inner tube diameter [mm]" and nothing else, yet a table
+    without them is refused; mkm design --max-outer-diameter did not say that without it any
+    width will do. An option that is a quantity (its help opens with what it is and its unit)
+    and that argparse does not require states its default, or that it is required, and when."""
+    from mkm.cli import build_parser
+
+    silent = []
+
+    def walk(parser, name):
+        for action in parser._actions:
+            if isinstance(action, argparse._SubParsersAction):
+                for sub, subparser in action.choices.items():
+                    walk(subparser, f"{name} {sub}")
+            elif (action.option_strings and action.default is None and not action.required
+                  and action.nargs != 0 and not isinstance(action, argparse._AppendAction)):
+                text = parser._get_formatter()._expand_help(action) if action.help else ""
+                if (re.match(r"[^(:;\[]*\[[^\]]+\]", text) and "default" not in text
+                        and "required" not in text):
+                    silent.append(f"{name} {action.option_strings[0]}")
+
+    walk(build_parser(), "mkm")
+    assert silent == []
+
+
+@pytest.mark.parametrize("option, given", [("--id", ["--D0", "30", "--t0", "2"]),
+                                           ("--D0", ["--id", "m", "--t0", "2"]),
+                                           ("--t0", ["--id", "m", "--D0", "30"])])
+def test_import_says_which_options_a_plain_table_needs(option, given, tmp_path, mkm_run,
+                                                       capsys):
+    # a table other than mkm export's workbook holds no muscle: each is refused without it,
+    # and its help says so
+    from mkm.cli import main
+
+    table = tmp_path / "lab.csv"
+    table.write_text("Pressure (bar),Force (N)\n0,0\n1,50\n2,120\n", encoding="utf-8")
+    code, out, err = mkm_run(["import", str(table), "--eps", "0.1", *given, "--no-progress",
+                              "--out", str(tmp_path / "runs")])
+    assert code == 2 and f"give {option}" in err, err
+    with pytest.raises(SystemExit):
+        main(["import", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert re.search(re.escape(option) + r" \S+ [^-]*\(required unless the table is a workbook "
+                     r"written by mkm export, which holds it\)", text), text
+
+
 def test_fem_calibrate_help_names_only_the_models_it_calibrates(capsys):
     """Its --model help listed every predictor (friction, surrogate, auto), and --per-point
     (auto only), which it then refused: only the static physics rungs have a theta0 to fit."""
