@@ -42,9 +42,11 @@ def register(subparsers) -> None:
     imp.add_argument("--t0", type=argtype(parse_number, "--t0", "mm"),
                      help=shared_help("--t0", EXPORTED))
     imp.add_argument("--L0", type=argtype(parse_number, "--L0", "mm"),
-                     help=shared_help("--L0", "default: the table's L0 column"))
+                     help=shared_help("--L0", "default: the table's L0 column; without one, "
+                                      f"{EXPORTED}"))
     imp.add_argument("--eps", type=argtype(parse_fraction),
-                     help=shared_help("--eps", "default: the table's eps or length column"))
+                     help=shared_help("--eps", "default: the table's eps or length column; "
+                                      f"without either, {EXPORTED}"))
     imp.add_argument("--columns", default=None, metavar="ROLE=COLUMN,...",
                      help="which column holds what, where the names do not say: pressure=..., "
                      "force=..., time=..., direction=..., eps=..., length=..., run=...")
