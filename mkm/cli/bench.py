@@ -52,6 +52,7 @@ def _volts(text: str) -> list[float]:
 
 
 def _add_device_arguments(parser, clock: bool = True) -> None:
+    from mkm.bench import backend
     from mkm.bench.backends import BACKENDS
 
     parser.add_argument("--config", help="bench TOML file (default: the packaged example "
@@ -61,7 +62,7 @@ def _add_device_arguments(parser, clock: bool = True) -> None:
                         help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.entries())
                         + " (default: the config's [daq] backend)")
     if clock:
-        parser.add_argument("--clock", choices=("virtual", "real"), default="virtual",
+        parser.add_argument("--clock", choices=backend.CLOCKS, default=backend.CLOCKS[0],
                             help="sim only: virtual time (instant) or real time "
                                  "(default %(default)s)")
 
