@@ -57,6 +57,16 @@ def _objective_help() -> str:
             + "".join(f", {name}" for name in others[1:]) + f" or {last}")
 
 
+def _rubber_help() -> str:
+    from mkm.design.spec import CALIBRATED_RUBBER, DEFAULT_RUBBER
+    from mkm.fem.materials import MATERIALS
+
+    *others, last = (CALIBRATED_RUBBER, *MATERIALS)
+    return (f"wall material(s), comma list: {', '.join(others)} or {last} (default: "
+            f"{DEFAULT_RUBBER}; {CALIBRATED_RUBBER}: the rubber of the --calibration file, an "
+            "identified one, else Silastic S)")
+
+
 def _tolerances(text: str):
     from mkm.fem.tolerances import Tolerances  # when given: a robust design's numbers
 
@@ -91,9 +101,7 @@ def register(subparsers) -> None:
         p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag, unit),
                        metavar="V|LO:HI",
                        help=f"{what}: a value or a range low:high")
-    p.add_argument("--rubber", help="wall material(s), comma list: calibrated (default: the "
-                   "rubber of the --calibration file, an identified one, else Silastic S) "
-                   "or silastic_s")
+    p.add_argument("--rubber", action=derived_help(_rubber_help))
     p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
                    type=argtype(parse_number, "--max-outer-diameter", "mm"),
                    help="largest outer diameter at the working pressure [mm] (the housing; "

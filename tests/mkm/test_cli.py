@@ -549,6 +549,19 @@ def test_import_says_which_options_a_plain_table_needs(option, tmp_path, mkm_run
         in text, text
 
 
+def test_design_rubber_help_names_every_material(monkeypatch):
+    """``--rubber``'s help listed 'calibrated or silastic_s' as typed: a material added to
+    :data:`mkm.fem.materials.MATERIALS` (which ``--rubber`` takes) was missing from it."""
+    from mkm.cli import build_parser
+    from mkm.fem.materials import MATERIALS, SILASTIC_S
+
+    monkeypatch.setitem(MATERIALS, "toy_rubber", SILASTIC_S)
+    sub = dict(_subcommands(build_parser()))[("design",)]
+    action = next(a for a in sub._actions if "--rubber" in a.option_strings)
+    assert action.help.startswith("wall material(s), comma list: calibrated, silastic_s or "
+                                  "toy_rubber (default: calibrated"), action.help
+
+
 def test_fem_calibrate_help_names_only_the_models_it_calibrates(capsys):
     """Its --model help listed every predictor (friction, surrogate, auto), and --per-point
     (auto only), which it then refused: only the static physics rungs have a theta0 to fit."""
