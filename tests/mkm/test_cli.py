@@ -562,6 +562,23 @@ def test_design_rubber_help_names_every_material(monkeypatch):
                                   "toy_rubber (default: calibrated"), action.help
 
 
+def test_study_surrogates_help_states_the_kinds_the_study_scores_by_default():
+    """``--surrogates``' default was typed into its help: a kind registered as scored by the
+    study (``study_default``) was scored but not named there."""
+    from mkm.cli import build_parser
+    from mkm.surrogate import kinds
+
+    toy = kinds.Kind("toy-studied", "sklearn.neighbors:KNeighborsRegressor", "toy k-NN",
+                     "nearest neighbours (a test's kind)", study_default=True)
+    kinds.register(toy)
+    try:
+        sub = dict(_subcommands(build_parser()))[("study",)]
+    finally:
+        kinds.unregister(toy.name)
+    action = next(a for a in sub._actions if "--surrogates" in a.option_strings)
+    assert action.help.endswith(f"(default: {','.join((*kinds.study_default(), toy.name))})")
+
+
 def test_fem_calibrate_help_names_only_the_models_it_calibrates(capsys):
     """Its --model help listed every predictor (friction, surrogate, auto), and --per-point
     (auto only), which it then refused: only the static physics rungs have a theta0 to fit."""
