@@ -579,6 +579,19 @@ def test_study_surrogates_help_states_the_kinds_the_study_scores_by_default():
     assert action.help.endswith(f"(default: {','.join((*kinds.study_default(), toy.name))})")
 
 
+def test_every_mesh_option_offers_the_registered_mesh_levels():
+    """fem dataset's and surrogate reference's --mesh named no level ('mesh level of FE
+    models'): a newcomer learnt coarse, medium and fine from an error only."""
+    from mkm.cli import build_parser
+    from mkm.cli.common import choices
+
+    offered = {name: a.choices for name, sub in _subcommands(build_parser())
+               for a in sub._actions if "--mesh" in a.option_strings}
+    assert len(offered) >= 6
+    assert {name: tuple(c or ()) for name, c in offered.items()} == \
+        {name: choices("axisym", "mesh") for name in offered}
+
+
 def test_fem_calibrate_help_names_only_the_models_it_calibrates(capsys):
     """Its --model help listed every predictor (friction, surrogate, auto), and --per-point
     (auto only), which it then refused: only the static physics rungs have a theta0 to fit."""
