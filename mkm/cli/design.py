@@ -67,6 +67,19 @@ def _rubber_help() -> str:
             "identified one, else Silastic S)")
 
 
+def _probability_help() -> str:
+    from mkm.design.spec import DEFAULT_PROBABILITY
+
+    return ("with --tolerance: the probability each design meets every requirement (default: "
+            f"{DEFAULT_PROBABILITY:g})")
+
+
+def _top_help() -> str:
+    from mkm.design.spec import DEFAULT_TOP
+
+    return f"designs verified with the FE model (default: {DEFAULT_TOP})"
+
+
 def _tolerances(text: str):
     from mkm.fem.tolerances import Tolerances  # when given: a robust design's numbers
 
@@ -120,12 +133,10 @@ def register(subparsers) -> None:
                    "D0=0.3,t0=0.1,theta0=1,rubber=10%%; every requirement is then met with "
                    "--probability and designs.csv gets probability_r<k> columns")
     p.add_argument("--probability", type=argtype(_probability, "--probability"),
-                   help="with --tolerance: the probability each design meets every "
-                   "requirement (default: 0.95)")
+                   action=derived_help(_probability_help))
     p.add_argument("--objective", type=_objective, metavar="OBJECTIVE",
                    action=derived_help(_objective_help))
-    p.add_argument("--top", type=int, metavar="N",
-                   help="designs verified with the FE model (default 5)")
+    p.add_argument("--top", type=int, metavar="N", action=derived_help(_top_help))
     p.add_argument("--mesh", choices=choices("axisym", "mesh"), default="medium",
                    help="FE mesh of the verification (default: %(default)s, the converged one)")
     p.add_argument("--surrogate", default="surrogate", metavar="SPEC",

@@ -592,6 +592,20 @@ def test_every_mesh_option_offers_the_registered_mesh_levels():
         {name: choices("axisym", "mesh") for name in offered}
 
 
+def test_design_top_and_probability_help_state_the_librarys_defaults(monkeypatch):
+    """--top's 'default 5' and --probability's 'default: 0.95' were typed into the help, apart
+    from the defaults :func:`mkm.design.run_design` uses."""
+    from mkm.cli import build_parser
+    from mkm.design import spec
+
+    monkeypatch.setattr(spec, "DEFAULT_TOP", 7)
+    monkeypatch.setattr(spec, "DEFAULT_PROBABILITY", 0.9)
+    sub = dict(_subcommands(build_parser()))[("design",)]
+    helps = {a.option_strings[0]: a.help for a in sub._actions if a.option_strings}
+    assert helps["--top"] == "designs verified with the FE model (default: 7)"
+    assert helps["--probability"].endswith("every requirement (default: 0.9)")
+
+
 def test_fem_calibrate_help_names_only_the_models_it_calibrates(capsys):
     """Its --model help listed every predictor (friction, surrogate, auto), and --per-point
     (auto only), which it then refused: only the static physics rungs have a theta0 to fit."""
