@@ -21,6 +21,12 @@ if TYPE_CHECKING:  # annotations only: the backend registry is read by `mkm --he
     import numpy as np
 
 
+#: The clocks a backend's factory takes (``--clock``), which matter to a simulated one only:
+#: ``virtual``, sample k at k / rate s and reads returning at once; ``real``, reads waiting
+#: until their samples' times have passed, as the hardware clock does.
+CLOCKS = ("virtual", "real")
+
+
 class BenchError(RuntimeError):
     """A failure of the bench hardware (or of its simulation); the message is one line."""
 

@@ -400,6 +400,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             shutil.copyfile(path, writer.path / copy)
         out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
         bar.done()
+    bar.end()
     return out
 
 
@@ -416,16 +417,19 @@ def _join_table(path: str | Path):
 
 
 class _Stages:
-    """:func:`import_table`'s stages on a tqdm-like ``bar`` (None: none shown)."""
+    """:func:`import_table`'s stages on a tqdm-like ``bar`` (None: none shown). A stage
+    finished is counted as the next one is named: a status line, printed as the count goes up
+    (:class:`mkm.progress.StatusLine`), names the stage running, not the one just finished."""
 
     def __init__(self, bar):
-        self.bar = bar
+        self.bar, self.finished = bar, 0
         if bar is not None:
             bar.total = 1  # reading the file: the rest is known once it is read
 
     def start(self, doing: str) -> None:
         if self.bar is not None:
             self.bar.set_postfix_str(doing)
+            self._count()
 
     def more(self, stages: int) -> None:
         if self.bar is not None:
@@ -434,8 +438,18 @@ class _Stages:
     def done(self, more: int = 0) -> None:
         """One stage finished, ``more`` now known to follow."""
         self.more(more)
+        self.finished += 1
+
+    def end(self) -> None:
+        """Every stage finished: counted, none named."""
         if self.bar is not None:
-            self.bar.update()
+            self.bar.set_postfix_str("")
+            self._count()
+
+    def _count(self) -> None:
+        if self.finished:
+            self.bar.update(self.finished)
+            self.finished = 0
 
 
 def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):

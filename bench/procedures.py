@@ -20,7 +20,7 @@ from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
-from mkm.bench.run import make_backend, make_operator, notify_stderr, with_backend
+from mkm.bench.run import StderrNotice, make_backend, make_operator, with_backend
 from mkm.bench.sequence import (
     check_vented_monitor,
     monitor_zero_warning,
@@ -38,10 +38,12 @@ STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
 
 
 @contextmanager
-def session(backend: Backend, command: str, notify=notify_stderr) -> Iterator[DeviceInfo]:
+def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]:
     """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
-    run left pressurised, and close (vent again) on exit."""
+    run left pressurised, and close (vent again) on exit. ``notify`` receives the operator's
+    lines (default: stderr, ``mkm <command>: ...``)."""
+    notify = notify or StderrNotice(command)
     owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
     try:
         with owner:
@@ -93,7 +95,7 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
 
 
 def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
-         notify=notify_stderr, stop_wait_s: float = STOP_WAIT_S) -> dict:
+         notify=None, stop_wait_s: float = STOP_WAIT_S) -> dict:
     """Command 0 bar and verify it (:func:`mkm.bench.vent.verify_vent`), then do the
     bookkeeping.
 
@@ -110,6 +112,7 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live holder does not let
     go.
     """
+    notify = notify or StderrNotice("vent")
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     key = getattr(device, "bench_key", "unknown")

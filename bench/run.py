@@ -91,9 +91,18 @@ WATCH_EVERY_S = 0.1
 WATCHDOG_WRITE_S = 1.0
 
 
-def notify_stderr(message: str) -> None:
-    """One line for the operator on stderr (the default ``notify`` of runs and procedures)."""
-    print(f"mkm: {message}", file=sys.stderr, flush=True)
+class StderrNotice:
+    """One line for the operator on stderr, ``mkm <command>: <message>`` as every command's
+    lines (the default ``notify`` of runs and procedures)."""
+
+    def __init__(self, command: str):
+        self.command = command
+
+    def line(self, message: str) -> str:
+        return f"mkm {self.command}: {message}"
+
+    def __call__(self, message: str) -> None:
+        print(self.line(message), file=sys.stderr, flush=True)
 
 
 class _Console:
@@ -210,7 +219,8 @@ class _Progress:
         if self.bar is not None:
             self.bar.set_postfix_str(self._status(rows[-1]))
         else:
-            print(f"mkm: {self.label}: step {self.done}/{self.n_steps}, "
+            simulated = "SIMULATED " if self.config.simulated else ""
+            print(f"mkm acquire: {simulated}step {self.done}/{self.n_steps}, "
                   f"{self._status(rows[-1])}", file=self.stream, flush=True)
         self.shown_at = now
 
@@ -384,12 +394,13 @@ class BenchRun:
     ``operator`` is needed only for a manual regulator. ``progress`` shows a tqdm bar on stderr;
     ``plot`` a live plot in another process. ``handle_signals`` installs the stop handlers of
     :mod:`mkm.bench.signals` (only possible in the main thread). ``notify`` receives one-line
-    messages for the operator (a bench found unvented, a stop requested).
+    messages for the operator (a bench found unvented, a stop requested); by default they go
+    to stderr as ``mkm acquire: ...``, through the run's console while it runs.
     """
 
     def __init__(self, config: BenchConfig, backend: Backend, out_root: str | Path,
                  operator: Operator | None = None, progress: bool = False, plot: bool = False,
-                 handle_signals: bool = True, notify=notify_stderr):
+                 handle_signals: bool = True, notify=None):
         if not config.regulator.electronic and operator is None:
             raise ValueError("regulator.kind='manual' needs an operator to set the pressure")
         self.config = config
@@ -399,7 +410,7 @@ class BenchRun:
         self.progress = progress
         self.plot = plot
         # the default notices go through the run's console (:class:`_Console`) while it runs
-        self.notify = self._say if notify is notify_stderr else notify
+        self.notify = self._say if notify is None else notify
         self._console: _Console | None = None
         self.handle_signals = handle_signals
         self.signals = StopSignals(on_first_interrupt=lambda: self.notify(
@@ -477,11 +488,11 @@ class BenchRun:
 
     def _say(self, message: str) -> None:
         """The default notice: through the run's console while it runs, else on stderr."""
-        console = self._console
+        console, notice = self._console, StderrNotice("acquire")
         if console is None:
-            notify_stderr(message)
+            notice(message)
         else:
-            console.write(f"mkm: {message}\n")
+            console.write(notice.line(message) + "\n")
 
     def _execute(self) -> RunResult:
         status, reason, error, exit_code = RunStatus.FAILED, "", None, EXIT_FAILED
@@ -938,19 +949,20 @@ def with_backend(config: BenchConfig, backend: str | None) -> BenchConfig:
 
 def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
             out_root: str | Path = "data/experimental", progress: bool = False,
-            plot: bool = False, notify=notify_stderr, allow_past_lock: bool = False
+            plot: bool = False, notify=None, allow_past_lock: bool = False
             ) -> RunResult:
     """Record one run of ``config`` under ``out_root``.
 
     ``backend`` overrides ``config.daq.backend``. A muscle held past its braid lock is refused
     (``ValueError``) unless ``allow_past_lock``; a load cell the muscle would overload is said.
+    ``notify`` receives the operator's lines (default: stderr, ``mkm acquire: ...``).
     """
     config = with_backend(config, backend)
     lock = braid_lock(config)
     if lock and not allow_past_lock:
         raise ValueError(f"{lock}: pass --allow-past-lock to record it anyway")
     for warning in filter(None, [lock, loadcell_warning(config)]):
-        notify(f"warning: {warning}")
+        (notify or StderrNotice("acquire"))(f"warning: {warning}")
     check_out_root(out_root)  # before the device is opened
     device = make_backend(config, clock)
     operator = None if config.regulator.electronic else make_operator(config, device)

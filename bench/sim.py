@@ -54,6 +54,7 @@ from collections import deque
 import numpy as np
 
 from mkm.bench.backend import (
+    CLOCKS,
     AOWriteFailed,
     Block,
     BufferOverflow,
@@ -289,8 +290,8 @@ class SimBackend:
     """
 
     def __init__(self, config, clock: str = "virtual"):
-        if clock not in ("virtual", "real"):
-            raise ValueError(f"clock={clock!r} is invalid: expected 'virtual' or 'real'")
+        if clock not in CLOCKS:
+            raise ValueError(f"clock={clock!r} is invalid: expected one of {', '.join(CLOCKS)}")
         self.config = config
         self.clock = clock
         self.bench_key = f"sim-{config.daq.device.strip()}"  # the lock folds the case

@@ -13,7 +13,14 @@ from __future__ import annotations
 
 import sys
 
-from mkm.cli.common import add_progress_argument, argtype, has_display, say, shared_help
+from mkm.cli.common import (
+    add_progress_argument,
+    argtype,
+    command_name,
+    has_display,
+    say,
+    shared_help,
+)
 from mkm.core.ranges import decimal_comma_reading, parse_fraction, parse_number, parse_pressures
 from mkm.paths import default_out
 
@@ -45,6 +52,7 @@ def _volts(text: str) -> list[float]:
 
 
 def _add_device_arguments(parser, clock: bool = True) -> None:
+    from mkm.bench import backend
     from mkm.bench.backends import BACKENDS
 
     parser.add_argument("--config", help="bench TOML file (default: the packaged example "
@@ -54,7 +62,7 @@ def _add_device_arguments(parser, clock: bool = True) -> None:
                         help="; ".join(f"{e.name}: {e.label}" for e in BACKENDS.entries())
                         + " (default: the config's [daq] backend)")
     if clock:
-        parser.add_argument("--clock", choices=("virtual", "real"), default="virtual",
+        parser.add_argument("--clock", choices=backend.CLOCKS, default=backend.CLOCKS[0],
                             help="sim only: virtual time (instant) or real time "
                                  "(default %(default)s)")
 
@@ -190,7 +198,7 @@ def _hardware_config(args, command: str):
                          f"{'|'.join(BACKENDS)} (or a --config whose [daq] backend says which)")
     config = _config(args)
     if config.simulated:
-        print(f"mkm: SIMULATED bench ({config.daq.backend}): no hardware is driven",
+        print(f"mkm {command}: SIMULATED bench ({config.daq.backend}): no hardware is driven",
               file=sys.stderr, flush=True)
     return config
 
@@ -216,7 +224,7 @@ def _acquire(args) -> int:
     if result.path is None:
         say(args, "error", f"{simulated.strip()} {result.reason}".strip())
         return result.exit_code
-    print(f"run{simulated} {result.status}: {result.reason}", file=sys.stderr)
+    print(f"{command_name(args)}: run{simulated} {result.status}: {result.reason}", file=sys.stderr)
     if result.manual_vent_required:
         say(args, "error", "VENT THE MUSCLE BY HAND NOW: the vent was not verified")
     print(result.path, flush=True)
@@ -322,19 +330,19 @@ def _vent(args) -> int:
     if out["manual"]:
         print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "
               "and check the manometer", flush=True)
-        return _bookkeeping(out["bookkeeping"])
+        return _bookkeeping(args, out["bookkeeping"])
     print(f"vented: {reading_bar(out['pressure_bar'])} bar after {out['waited_s']:.1f} s",
           flush=True)
-    return _bookkeeping(out["bookkeeping"])
+    return _bookkeeping(args, out["bookkeeping"])
 
 
-def _bookkeeping(problems: list[str]) -> int:
+def _bookkeeping(args, problems: list[str]) -> int:
     """After a vent: the bench state folder's problems, one line (exit 1: the lock and the
     markers that keep two commands off one bench do not work until it is mended)."""
     if not problems:
         return 0
     problems = "; ".join(dict.fromkeys(problems))  # request and lock often fail alike
-    print(f"mkm: error: vented, but the bench bookkeeping failed: {problems}", file=sys.stderr)
+    say(args, "error", f"vented, but the bench bookkeeping failed: {problems}")
     return EXIT_FAILED
 
 

@@ -57,6 +57,29 @@ def _objective_help() -> str:
             + "".join(f", {name}" for name in others[1:]) + f" or {last}")
 
 
+def _rubber_help() -> str:
+    from mkm.design.spec import CALIBRATED_RUBBER, DEFAULT_RUBBER
+    from mkm.fem.materials import MATERIALS
+
+    *others, last = (CALIBRATED_RUBBER, *MATERIALS)
+    return (f"wall material(s), comma list: {', '.join(others)} or {last} (default: "
+            f"{DEFAULT_RUBBER}; {CALIBRATED_RUBBER}: the rubber of the --calibration file, an "
+            "identified one, else Silastic S)")
+
+
+def _probability_help() -> str:
+    from mkm.design.spec import DEFAULT_PROBABILITY
+
+    return ("with --tolerance: the probability each design meets every requirement (default: "
+            f"{DEFAULT_PROBABILITY:g})")
+
+
+def _top_help() -> str:
+    from mkm.design.spec import DEFAULT_TOP
+
+    return f"designs verified with the FE model (default: {DEFAULT_TOP})"
+
+
 def _tolerances(text: str):
     from mkm.fem.tolerances import Tolerances  # when given: a robust design's numbers
 
@@ -91,12 +114,11 @@ def register(subparsers) -> None:
         p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag, unit),
                        metavar="V|LO:HI",
                        help=f"{what}: a value or a range low:high")
-    p.add_argument("--rubber", help="wall material(s), comma list: calibrated (default: the "
-                   "rubber of the --calibration file, an identified one, else Silastic S) "
-                   "or silastic_s")
+    p.add_argument("--rubber", action=derived_help(_rubber_help))
     p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
                    type=argtype(parse_number, "--max-outer-diameter", "mm"),
-                   help="largest outer diameter at the working pressure [mm] (the housing)")
+                   help="largest outer diameter at the working pressure [mm] (the housing; "
+                   "default: none, any width fits)")
     p.add_argument("--gap", dest="gap_mm", metavar="MM", type=argtype(parse_number, "--gap", "mm"),
                    help="radial gap between tube and braid at rest of the muscles as built "
                    "[mm] (default 0): the surrogate has none, so the FE model, which takes "
@@ -111,12 +133,10 @@ def register(subparsers) -> None:
                    "D0=0.3,t0=0.1,theta0=1,rubber=10%%; every requirement is then met with "
                    "--probability and designs.csv gets probability_r<k> columns")
     p.add_argument("--probability", type=argtype(_probability, "--probability"),
-                   help="with --tolerance: the probability each design meets every "
-                   "requirement (default: 0.95)")
+                   action=derived_help(_probability_help))
     p.add_argument("--objective", type=_objective, metavar="OBJECTIVE",
                    action=derived_help(_objective_help))
-    p.add_argument("--top", type=int, metavar="N",
-                   help="designs verified with the FE model (default 5)")
+    p.add_argument("--top", type=int, metavar="N", action=derived_help(_top_help))
     p.add_argument("--mesh", choices=choices("axisym", "mesh"), default="medium",
                    help="FE mesh of the verification (default: %(default)s, the converged one)")
     p.add_argument("--surrogate", default="surrogate", metavar="SPEC",

@@ -17,6 +17,9 @@ IMPORT_EXAMPLE = ("examples: mkm import lab.csv --id lab-muscle-7 --D0 30 --t0 3
                   "\"Festo DMSP-20-300\"   (one run per length)")
 EXPORT_EXAMPLE = "example: mkm export mkm-out/demo/runs/<run> --format xlsx --out run.xlsx"
 
+#: when the muscle's id and size are needed: only mkm export's workbook records them
+EXPORTED = "required unless the table is a workbook written by mkm export, which holds it"
+
 
 def register(subparsers) -> None:
     imp = subparsers.add_parser(
@@ -33,14 +36,17 @@ def register(subparsers) -> None:
         "staircase or quasi-static bins of a ramp (rising and falling apart).",
         epilog=IMPORT_EXAMPLE)
     imp.add_argument("table", action=derived_help(_table_help))
-    imp.add_argument("--id", help="the muscle's id (names the run folders; default: the one "
-                     "in a workbook written by mkm export)")
-    imp.add_argument("--D0", type=argtype(parse_number, "--D0", "mm"), help=shared_help("--D0"))
-    imp.add_argument("--t0", type=argtype(parse_number, "--t0", "mm"), help=shared_help("--t0"))
+    imp.add_argument("--id", help=f"the muscle's id, naming the run folders ({EXPORTED})")
+    imp.add_argument("--D0", type=argtype(parse_number, "--D0", "mm"),
+                     help=shared_help("--D0", EXPORTED))
+    imp.add_argument("--t0", type=argtype(parse_number, "--t0", "mm"),
+                     help=shared_help("--t0", EXPORTED))
     imp.add_argument("--L0", type=argtype(parse_number, "--L0", "mm"),
-                     help=shared_help("--L0", "default: the table's L0 column"))
+                     help=shared_help("--L0", "default: the table's L0 column; without one, "
+                                      f"{EXPORTED}"))
     imp.add_argument("--eps", type=argtype(parse_fraction),
-                     help=shared_help("--eps", "default: the table's eps or length column"))
+                     help=shared_help("--eps", "default: the table's eps or length column; "
+                                      f"without either, {EXPORTED}"))
     imp.add_argument("--columns", default=None, metavar="ROLE=COLUMN,...",
                      help="which column holds what, where the names do not say: pressure=..., "
                      "force=..., time=..., direction=..., eps=..., length=..., run=...")

@@ -12,6 +12,7 @@ from mkm.cli.common import (
     add_model_arguments,
     add_progress_argument,
     argtype,
+    choices,
     emit_prediction,
     model_from_args,
     parse_within,
@@ -93,7 +94,8 @@ def register(subparsers) -> None:
                       "(default: %(default)s)")
     data.add_argument("--model", default="axisym", help=f"one of {', '.join(static_names())} "
                       "(default: %(default)s)")
-    data.add_argument("--mesh", help="mesh level of FE models (default: the model's)")
+    data.add_argument("--mesh", choices=choices("axisym", "mesh"),
+                      help="mesh level of an FE model (default: the model's)")
     data.add_argument("--out", default=str(default_out("dataset", "mkm_dataset.csv")),
                       help="CSV to write; provenance goes next to it as .json (default: "
                       "%(default)s; the shipped dataset is replaced only if named here)")

@@ -107,7 +107,8 @@ def register(subparsers) -> None:
         "and the report compare with. Writes --out; --update-shipped replaces the shipped one.",
         epilog="example: mkm surrogate reference --mesh coarse --out mkm-out/ref.csv")
     ref.add_argument("--model", default="axisym", help="FE model (default %(default)s)")
-    ref.add_argument("--mesh", help="mesh level of the FE model (default: its own)")
+    ref.add_argument("--mesh", choices=choices("axisym", "mesh"),
+                     help="mesh level of the FE model (default: its own)")
     ref.add_argument("--theta0", type=argtype(parse_number, "--theta0", "deg"),
                      help=shared_help("--theta0", "default: calibrated"))
     ref.add_argument("--out", default=str(default_out("surrogate-reference",

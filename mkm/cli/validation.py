@@ -15,6 +15,7 @@ from mkm.cli.common import (
     with_calibration,
 )
 from mkm.core.ranges import parse_seed, parse_tolerance
+from mkm.surrogate import kinds
 
 
 def register(subparsers) -> None:
@@ -58,7 +59,7 @@ def register(subparsers) -> None:
     study.add_argument("--surrogates", type=_kinds, metavar="KINDS",
                        help="surrogate kinds scored: a comma list or `all` (the generic gp and "
                        "the paper's 54 nets too; cold, about 13 more minutes of training) "
-                       "(default: muscle-gp,physics,mlp-paper)")
+                       f"(default: {','.join(kinds.study_default())})")
     study.add_argument("--mesh-muscles", type=int, default=0, metavar="N",
                        help="also measure the FE meshes' errors against the fine mesh on N "
                        "fresh random muscles of the practical range (mesh_errors.csv: the "

@@ -15,6 +15,7 @@ from mkm.design.robust import describe, requirement_margin
 from mkm.design.spec import (
     DEFAULT_OBJECTIVE,
     DEFAULT_RUBBER,
+    NEAR_LOCK_FRACTION,
     OBJECTIVES,
     Constraints,
     Requirement,
@@ -625,6 +626,19 @@ def _beyond_practical_range(row, requirements) -> str:
             "the range)" if outside else "")
 
 
+def _near_lock(req: Requirement, theta0_low_deg: float) -> str:
+    """The clause a short requirement's part of an infeasible search's message ends with when
+    its eps is near the braid lock even at the smallest braid angle searched (the largest
+    lock), where no tube delivers much force, else empty."""
+    eps_max = float(chou_hannaford_eps_max(theta0_low_deg))
+    if req.eps < NEAR_LOCK_FRACTION * eps_max:
+        return ""
+    return (f": eps {req.eps:g} is near the braid lock (eps_max {eps_max:.3g} at theta0 "
+            f"{theta0_low_deg:.4g} deg, the smallest braid angle searched), where the force "
+            "falls to zero: ask for a lower eps, or search smaller braid angles (theta0), whose "
+            "lock lies at a larger eps")
+
+
 def _infeasible_message(result: Search, constraints: Constraints) -> str:
     cand = result.candidates
     if cand["meets_forces"].any():  # only the housing is in the way
@@ -642,7 +656,8 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         short = req.force_N - force
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
-            f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force"))
+            f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force")
+            + (_near_lock(req, result.constraints["theta0_deg"][0]) if short > 0 else ""))
     edge = ""
     if edges := result.edges(closest):  # the box, not the physics, may be short
         ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}

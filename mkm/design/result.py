@@ -23,10 +23,12 @@ from mkm.design.box_search import (
     search,
 )
 from mkm.design.fe_verification import verify
-from mkm.design.robust import DEFAULT_PROBABILITY, check_designs, check_probability
+from mkm.design.robust import check_designs, check_probability
 from mkm.design.spec import (
     DEFAULT_OBJECTIVE,
+    DEFAULT_PROBABILITY,
     DEFAULT_RUBBER,
+    DEFAULT_TOP,
     NEAR_LOCK_FRACTION,
     Constraints,
     design_muscle,
@@ -176,7 +178,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     else:
         merged.update({k: v for k, v in (constraints or {}).items() if v is not None})
     objective = objective or base.get("objective", DEFAULT_OBJECTIVE)
-    top = top if top is not None else base.get("top", 5)
+    top = top if top is not None else base.get("top", DEFAULT_TOP)
     if isinstance(top, bool) or not isinstance(top, int) or top < 1:
         raise ValueError(f"top={top!r} is invalid: expected a whole number of designs >= 1")
     if tolerances is not None:
@@ -214,7 +216,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
 
 
 def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *,
-           top: int = 5, mesh: str = "medium", surrogate: str = "surrogate",
+           top: int = DEFAULT_TOP, mesh: str = "medium", surrogate: str = "surrogate",
            progress: bool = False, cache_dir=None,
            calibration: Calibration | None = None) -> pd.DataFrame:
     """Verified designs for force requirements, best first: the Python API of ``mkm design``.

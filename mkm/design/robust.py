@@ -36,7 +36,6 @@ from mkm.fem.tolerances import Tolerances, draws
 from mkm.registry import parse_spec
 from mkm.uncertainty import monte_carlo_ready, nominal_parameters, sensitivities, surrogate_draws
 
-DEFAULT_PROBABILITY = 0.95
 MC_DRAWS = 4000  # the probability to +-0.7 points (binomial sd at 95 %)
 
 

@@ -21,6 +21,10 @@ OBJECTIVES: dict[str, tuple[tuple[str, bool], ...]] = {
     "max-margin": (("min_margin_pct", False), ("outer_diameter_mm", True)),
 }
 DEFAULT_OBJECTIVE = next(iter(OBJECTIVES))
+#: the best designs of the search verified with the FE model unless a spec or ``top`` says
+DEFAULT_TOP = 5
+#: the probability each robust design (``--tolerance``) meets every requirement unless asked
+DEFAULT_PROBABILITY = 0.95
 #: the rubber of the calibration (a muscle ``mkm identify`` learnt), else Silastic S
 CALIBRATED_RUBBER = "calibrated"
 DEFAULT_RUBBER = CALIBRATED_RUBBER

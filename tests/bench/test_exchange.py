@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 import pandas as pd
@@ -610,3 +611,25 @@ def test_a_unit_written_in_the_cells_is_the_one_said_and_recorded(tmp_path, caps
     # 0.980665 bar an at; steps.csv keeps 6 digits
     np.testing.assert_allclose(run.steps["pressure_bar_mean"], [0, 0.4903325, 1.4709975],
                                rtol=1e-5)
+
+
+def test_import_status_lines_name_the_stage_running(tmp_path):
+    # without a terminal a status line is printed as the count goes up: it named the stage
+    # that had just finished ('1/2 stages (reading lab.csv)' while lab.csv was recognised)
+    import io
+
+    from mkm.bench.exchange import import_table
+    from mkm.progress import StatusLine
+
+    table = tmp_path / "lab.csv"
+    table.write_text("Pressure (bar),Force (N)\n0,0\n1,50\n2,120\n", encoding="utf-8")
+    stream = io.StringIO()
+    bar = StatusLine(1, "import", unit="stage", interval_s=0.0, stream=stream)
+    import_table(table, tmp_path / "runs", {"id": "m", "D0_mm": 30, "t0_mm": 2, "L0_mm": 282,
+                                              "eps": 0.1},
+                 bar=bar)
+    lines = [re.sub(r", \d+ s.*?(?= \(|$)", "", line) for line in stream.getvalue().splitlines()]
+    assert lines == ["mkm import: 1/2 stages (recognising lab.csv)",
+                     "mkm import: 2/4 stages (finding the steps of lab.csv)",
+                     "mkm import: 3/4 stages (writing the run folder of lab.csv)",
+                     "mkm import: 4/4 stages"]

@@ -47,7 +47,7 @@ def test_vent_with_a_lock_that_is_a_folder_vents_then_says_so(mkm_cli, monkeypat
     _lock_path("sim-Dev1").mkdir(parents=True)
     code, out, err = mkm_cli(["vent", "--backend", "sim"])
     assert out.startswith("vented: 0.000 bar") and written and set(written) == {0.0}
-    assert code == 1 and "Traceback" not in err and err.count("mkm: error") == 1
+    assert code == 1 and "Traceback" not in err and err.count("mkm vent: error") == 1
     assert "vented, but the bench bookkeeping failed" in err and "is not a file" in err
 
 

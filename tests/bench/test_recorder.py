@@ -27,7 +27,7 @@ def test_disk_full_during_a_run_vents_syncs_and_prints_the_run(tmp_path, capsys,
                "--no-progress"])
     captured = capsys.readouterr()
     assert rc == 2  # storage failed: exit 2, like bad input
-    assert captured.err.count("\n") == 2 and "mkm: SIMULATED bench (sim)" in captured.err
+    assert captured.err.count("\n") == 2 and "mkm acquire: SIMULATED bench (sim)" in captured.err
     assert "run SIMULATED failed: recording failed (OSError: [Errno 28] No space left on " \
         "device)" in captured.err
     run = load_run(Path(captured.out.strip().splitlines()[-1]))  # the path is still printed

@@ -738,3 +738,25 @@ def test_a_driver_that_hangs_the_watchdogs_vent_too_is_recorded_as_it_hangs(conf
     assert result.status == "failed" and result.exit_code == 1, result.reason
     assert load_run(result.path).meta.vent_check["verified"]
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_every_line_the_bench_writes_names_its_command(mkm_cli, tmp_path, monkeypatch):
+    # the simulated bench's notice, a warning, the status lines and the run's outcome said
+    # 'mkm: ...' (or nothing) where every other command's lines say 'mkm <command>: ...'
+    import mkm.bench.run as run
+
+    monkeypatch.setattr(run, "STATUS_EVERY_S", 0.0)  # a status line each block: stderr is no TTY
+    code, out, err = mkm_cli(["acquire", "--pressures", "0.5", "--eps", "0.5",
+                              "--allow-past-lock", "--out", str(tmp_path)])
+    lines = err.splitlines()
+    assert code == 0, err
+    assert [line for line in lines if not line.startswith("mkm acquire: ")] == []
+    assert any(line.startswith("mkm acquire: warning: ") and "braid lock" in line
+               for line in lines), err
+    assert "mkm acquire: SIMULATED bench (sim): no hardware is driven; recording into " in err
+    assert re.search(r"^mkm acquire: SIMULATED step \d+/\d+, ", err, re.M), err
+    assert "mkm acquire: run SIMULATED complete: " in err
+    for command in ("tare", "vent"):
+        code, out, err = mkm_cli([command, "--backend", "sim"])
+        assert code == 0, err
+        assert err.startswith(f"mkm {command}: SIMULATED bench (sim): no hardware is driven\n")

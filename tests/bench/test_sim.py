@@ -133,8 +133,26 @@ def test_real_clock_paces_reads(config):
 
 
 def test_unknown_clock_is_refused(config):
-    with pytest.raises(ValueError, match="clock='wall' is invalid"):
+    with pytest.raises(ValueError, match="clock='wall' is invalid: expected one of virtual, "
+                                         "real"):
         SimBackend(config, clock="wall")
+
+
+def test_the_clock_choices_of_every_bench_command_are_the_backends(monkeypatch):
+    # --clock offered a list of its own ('virtual', 'real'), apart from the clocks the
+    # simulated bench takes: a clock added to CLOCKS is offered by every bench command
+    import argparse
+
+    from mkm.bench import backend
+    from mkm.cli import build_parser
+
+    monkeypatch.setattr(backend, "CLOCKS", (*backend.CLOCKS, "toy"))
+
+    commands = [sub for action in build_parser()._actions
+                if isinstance(action, argparse._SubParsersAction)
+                for sub in action.choices.values()]
+    offered = [a.choices for sub in commands for a in sub._actions if "--clock" in a.option_strings]
+    assert len(offered) >= 3 and all(tuple(c) == backend.CLOCKS for c in offered)
 
 
 

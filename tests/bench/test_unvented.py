@@ -150,7 +150,7 @@ def test_a_state_folder_that_hangs_as_dead_runs_are_looked_for_refuses_untouched
     assert not list((tmp_path / "runs").glob("*"))  # --out is checked, no run folder made
     *simulated, error = err.splitlines()  # tare says SIMULATED first
     assert simulated == ([] if argv[0] == "acquire" else
-                         ["mkm: SIMULATED bench (sim): no hardware is driven"])
+                         [f"mkm {argv[0]}: SIMULATED bench (sim): no hardware is driven"])
     assert error.startswith(f"mkm {argv[0]}: error: the bench state folder ")
     assert error.endswith(HANGS + "nothing was touched; the bench is let go once it answers, or "
                           "as this process ends")

@@ -504,6 +504,108 @@ def test_every_option_with_a_default_says_it_in_its_help():
     assert silent == []
 
 
+def test_every_quantity_option_says_its_default_or_that_it_is_required():
+    """mkm import --D0 and --t0 read "inner tube diameter [mm]" and nothing else, yet a table
+    without them is refused; mkm design --max-outer-diameter did not say that without it any
+    width will do. An option that is a quantity (its help opens with what it is and its unit)
+    and that argparse does not require states its default, or that it is required, and when."""
+    from mkm.cli import build_parser
+
+    silent = []
+
+    def walk(parser, name):
+        for action in parser._actions:
+            if isinstance(action, argparse._SubParsersAction):
+                for sub, subparser in action.choices.items():
+                    walk(subparser, f"{name} {sub}")
+            elif (action.option_strings and action.default is None and not action.required
+                  and action.nargs != 0 and not isinstance(action, argparse._AppendAction)):
+                text = parser._get_formatter()._expand_help(action) if action.help else ""
+                if (re.match(r"[^(:;\[]*\[[^\]]+\]", text) and "default" not in text
+                        and "required" not in text):
+                    silent.append(f"{name} {action.option_strings[0]}")
+
+    walk(build_parser(), "mkm")
+    assert silent == []
+
+
+@pytest.mark.parametrize("option", ["--id", "--D0", "--t0", "--L0", "--eps"])
+def test_import_says_which_options_a_plain_table_needs(option, tmp_path, mkm_run):
+    # a table other than mkm export's workbook holds no muscle (and this one no L0, eps or
+    # length column): each option is refused when left out, and its help says when it is
+    # required (--L0 and --eps read "default: the table's L0 column" and no more)
+    from mkm.cli import build_parser
+
+    table = tmp_path / "lab.csv"
+    table.write_text("Pressure (bar),Force (N)\n0,0\n1,50\n2,120\n", encoding="utf-8")
+    muscle = {"--id": "m", "--D0": "30", "--t0": "2", "--L0": "282", "--eps": "0.1"}
+    given = [word for flag, value in muscle.items() if flag != option for word in (flag, value)]
+    code, out, err = mkm_run(["import", str(table), *given, "--no-progress",
+                              "--out", str(tmp_path / "runs")])
+    assert code == 2 and f"give {option}" in err, err
+    parser = dict(_subcommands(build_parser()))[("import",)]
+    text = next(a.help for a in parser._actions if option in a.option_strings)
+    assert "required unless the table is a workbook written by mkm export, which holds it" \
+        in text, text
+
+
+def test_design_rubber_help_names_every_material(monkeypatch):
+    """``--rubber``'s help listed 'calibrated or silastic_s' as typed: a material added to
+    :data:`mkm.fem.materials.MATERIALS` (which ``--rubber`` takes) was missing from it."""
+    from mkm.cli import build_parser
+    from mkm.fem.materials import MATERIALS, SILASTIC_S
+
+    monkeypatch.setitem(MATERIALS, "toy_rubber", SILASTIC_S)
+    sub = dict(_subcommands(build_parser()))[("design",)]
+    action = next(a for a in sub._actions if "--rubber" in a.option_strings)
+    assert action.help.startswith("wall material(s), comma list: calibrated, silastic_s or "
+                                  "toy_rubber (default: calibrated"), action.help
+
+
+def test_study_surrogates_help_states_the_kinds_the_study_scores_by_default():
+    """``--surrogates``' default was typed into its help: a kind registered as scored by the
+    study (``study_default``) was scored but not named there."""
+    from mkm.cli import build_parser
+    from mkm.surrogate import kinds
+
+    toy = kinds.Kind("toy-studied", "sklearn.neighbors:KNeighborsRegressor", "toy k-NN",
+                     "nearest neighbours (a test's kind)", study_default=True)
+    kinds.register(toy)
+    try:
+        sub = dict(_subcommands(build_parser()))[("study",)]
+    finally:
+        kinds.unregister(toy.name)
+    action = next(a for a in sub._actions if "--surrogates" in a.option_strings)
+    assert action.help.endswith(f"(default: {','.join((*kinds.study_default(), toy.name))})")
+
+
+def test_every_mesh_option_offers_the_registered_mesh_levels():
+    """fem dataset's and surrogate reference's --mesh named no level ('mesh level of FE
+    models'): a newcomer learnt coarse, medium and fine from an error only."""
+    from mkm.cli import build_parser
+    from mkm.cli.common import choices
+
+    offered = {name: a.choices for name, sub in _subcommands(build_parser())
+               for a in sub._actions if "--mesh" in a.option_strings}
+    assert len(offered) >= 6
+    assert {name: tuple(c or ()) for name, c in offered.items()} == \
+        {name: choices("axisym", "mesh") for name in offered}
+
+
+def test_design_top_and_probability_help_state_the_librarys_defaults(monkeypatch):
+    """--top's 'default 5' and --probability's 'default: 0.95' were typed into the help, apart
+    from the defaults :func:`mkm.design.run_design` uses."""
+    from mkm.cli import build_parser
+    from mkm.design import spec
+
+    monkeypatch.setattr(spec, "DEFAULT_TOP", 7)
+    monkeypatch.setattr(spec, "DEFAULT_PROBABILITY", 0.9)
+    sub = dict(_subcommands(build_parser()))[("design",)]
+    helps = {a.option_strings[0]: a.help for a in sub._actions if a.option_strings}
+    assert helps["--top"] == "designs verified with the FE model (default: 7)"
+    assert helps["--probability"].endswith("every requirement (default: 0.9)")
+
+
 def test_fem_calibrate_help_names_only_the_models_it_calibrates(capsys):
     """Its --model help listed every predictor (friction, surrogate, auto), and --per-point
     (auto only), which it then refused: only the static physics rungs have a theta0 to fit."""

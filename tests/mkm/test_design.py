@@ -166,6 +166,28 @@ def test_an_infeasible_design_on_the_edge_of_the_box_says_a_larger_box_might_do(
     assert "edge" not in err and re.search(r"short by \d+ N \(predicted \d+ N\)\n$", err), err
 
 
+def test_an_infeasible_requirement_near_the_braid_lock_says_so_and_what_to_change(mkm_run,
+                                                                                  tmp_path):
+    # eps 0.3 at the default braid angle is 96 % of the way to its lock (eps_max 0.312), where
+    # the force falls to zero: "predicted 0 N" alone did not say why, nor what to change
+    code, out, err = mkm_run(["design", "--require", "5000N@1bar,eps=0.3", "--D0", "10",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 2 and err.count("\n") == 1, err
+    match = re.search(r"requirement 1 \(5000N@1bar,eps=0.3\) short by \d+ N \(predicted \d+ "
+                      r"N\): eps 0.3 is near the braid lock \(eps_max ([\d.]+) at theta0 "
+                      r"([\d.]+) deg, "
+                      r"the smallest braid angle searched\), where the force falls to "
+                      r"zero: ask for a lower eps, or search smaller braid angles \(theta0\), "
+                      r"whose lock lies at a larger eps", err)
+    assert match, err
+    assert float(match[1]) == pytest.approx(float(chou_hannaford_eps_max(float(match[2]))),
+                                            abs=1e-3)
+    # far from the lock (eps 0.1, a third of eps_max) the shortfall is the tube's, not the lock's
+    code, out, err = mkm_run(["design", "--require", "5000N@1bar,eps=0.1", "--D0", "10",
+                              "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
+    assert code == 2 and "lock" not in err, err
+
+
 def test_conflicting_constraints_are_named():
     with pytest.raises(ValueError, match=r"max_outer_diameter_mm=40 conflicts with D0_mm >= 45"):
         search(["100N@2bar,eps=0.1"], {"D0_mm": (45, 50), "max_outer_diameter_mm": 40})
