@@ -171,6 +171,11 @@ class RunResult:
     unvented_before: list[Marker] = field(default_factory=list)
 
 
+def _all_steps(n: int) -> str:
+    """``the 1 step`` or ``all 3 steps``: what a complete run did."""
+    return "the 1 step" if n == 1 else f"all {n} steps"
+
+
 def check_out_root(out_root: str | Path) -> Path:
     """``out_root`` as a folder that exists (made if needed) and is writable, or ``ValueError``
     (checked before the device is opened)."""
@@ -567,9 +572,9 @@ class BenchRun:
     def _finished(self) -> tuple[RunStatus, str, int]:
         meta, n = self.recorder.meta, len(self.steps)
         if not meta.gaps:
-            return RunStatus.COMPLETE, f"all {n} steps done", EXIT_OK
+            return RunStatus.COMPLETE, f"{_all_steps(n)} done", EXIT_OK
         spans = ", ".join(f"{g.start_s:g}-{g.end_s:g} s" for g in meta.gaps)
-        return (RunStatus.COMPLETE_WITH_GAPS, f"all {n} steps done, but {meta.lost_samples} "
+        return (RunStatus.COMPLETE_WITH_GAPS, f"{_all_steps(n)} done, but {meta.lost_samples} "
                 f"samples were lost in {len(meta.gaps)} gap(s): {spans}", EXIT_GAPS)
 
     def startup(self) -> None:

@@ -520,7 +520,7 @@ def test_a_marker_update_queued_behind_a_vent_is_not_a_slow_state_folder(config,
     monkeypatch.setattr(BenchLease, "command", held_vent)
     result = acquire(config.replace(sequence={"pressures_bar": (0.5,)}), out_root=tmp_path,
                      notify=lambda m: None)
-    assert result.status == "complete" and result.reason == "all 1 steps done"
+    assert result.status == "complete" and result.reason == "the 1 step done"  # not "all 1 steps"
 
 
 def test_a_recorder_thread_that_fails_stops_the_run_vented_and_loses_no_sample(config,
