@@ -480,27 +480,31 @@ def test_every_help_example_parses():
         assert callable(args.func)
 
 
+def _every_option(parser=None, name="mkm"):
+    """``(command, its parser, option)`` of every option of every mkm command."""
+    from mkm.cli import build_parser
+
+    parser = parser or build_parser()
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub, subparser in action.choices.items():
+                yield from _every_option(subparser, f"{name} {sub}")
+        elif action.option_strings:
+            yield name, parser, action
+
+
+def _help(parser, action) -> str:
+    return parser._get_formatter()._expand_help(action) if action.help else ""
+
+
 def test_every_option_with_a_default_says_it_in_its_help():
     """mkm surrogate train --kind, fem dataset --grid, import --tare and five more took a
     default their help did not state: a newcomer reading --help could not tell what happens
     without them. An option that appends (--require) starts empty, a flag is off."""
-    import argparse
-
-    from mkm.cli import build_parser
-
-    silent = []
-
-    def walk(parser, name):
-        for action in parser._actions:
-            if isinstance(action, argparse._SubParsersAction):
-                for sub, subparser in action.choices.items():
-                    walk(subparser, f"{name} {sub}")
-            elif (action.option_strings and action.default not in (None, argparse.SUPPRESS)
-                  and action.nargs != 0 and not isinstance(action, argparse._AppendAction)
-                  and "default" not in parser._get_formatter()._expand_help(action)):
-                silent.append(f"{name} {action.option_strings[0]}")
-
-    walk(build_parser(), "mkm")
+    silent = [f"{name} {action.option_strings[0]}" for name, parser, action in _every_option()
+              if action.default not in (None, argparse.SUPPRESS) and action.nargs != 0
+              and not isinstance(action, argparse._AppendAction)
+              and "default" not in _help(parser, action)]
     assert silent == []
 
 
@@ -509,23 +513,11 @@ def test_every_quantity_option_says_its_default_or_that_it_is_required():
     without them is refused; mkm design --max-outer-diameter did not say that without it any
     width will do. An option that is a quantity (its help opens with what it is and its unit)
     and that argparse does not require states its default, or that it is required, and when."""
-    from mkm.cli import build_parser
-
-    silent = []
-
-    def walk(parser, name):
-        for action in parser._actions:
-            if isinstance(action, argparse._SubParsersAction):
-                for sub, subparser in action.choices.items():
-                    walk(subparser, f"{name} {sub}")
-            elif (action.option_strings and action.default is None and not action.required
-                  and action.nargs != 0 and not isinstance(action, argparse._AppendAction)):
-                text = parser._get_formatter()._expand_help(action) if action.help else ""
-                if (re.match(r"[^(:;\[]*\[[^\]]+\]", text) and "default" not in text
-                        and "required" not in text):
-                    silent.append(f"{name} {action.option_strings[0]}")
-
-    walk(build_parser(), "mkm")
+    silent = [f"{name} {action.option_strings[0]}" for name, parser, action in _every_option()
+              if action.default is None and not action.required and action.nargs != 0
+              and not isinstance(action, argparse._AppendAction)
+              and re.match(r"[^(:;\[]*\[[^\]]+\]", text := _help(parser, action))
+              and "default" not in text and "required" not in text]
     assert silent == []
 
 
