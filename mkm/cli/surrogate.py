@@ -106,7 +106,9 @@ def register(subparsers) -> None:
         description="Solve the FE model on the test muscles I-V: the reference `surrogate test` "
         "and the report compare with. Writes --out; --update-shipped replaces the shipped one.",
         epilog="example: mkm surrogate reference --mesh coarse --out mkm-out/ref.csv")
-    ref.add_argument("--model", default="axisym", help="FE model (default %(default)s)")
+    ref.add_argument("--model", default="axisym",
+                     help="predictor spec of the reference (see `mkm models`; default "
+                     "%(default)s, the FE model the surrogates are trained on)")
     ref.add_argument("--mesh", choices=choices("axisym", "mesh"),
                      help="mesh level of the FE model (default: its own)")
     ref.add_argument("--theta0", type=argtype(parse_number, "--theta0", "deg"),
