@@ -363,6 +363,23 @@ def test_the_guide_rebuilds_each_training_set_a_result_names_outside_the_reposit
     assert checked >= 2
 
 
+def test_the_practical_training_set_is_the_first_two_draws_of_the_shipped_range_set():
+    """``surrogate_range.json`` trained on a file the repository does not ship; the guide checks
+    a rebuild against muscles 0-599 of ``mkm_range_design.csv``, the same two draws: their rows,
+    those that did not converge (left out at training) and the muscles kept are the record's."""
+    import json
+
+    import pandas as pd
+
+    train = json.loads((DOCS / "measured" / "surrogate_range.json").read_text("utf-8"))["train"]
+    design = pd.read_csv(ROOT / "surrogate" / "data" / "mkm_range_design.csv", comment="#")
+    first = design[design["muscle"] < 600]
+    assert set(first["origin"]) == {"practical seed 20261220", "practical seed 20261222"}
+    kept = first[first["converged"].astype(bool)]
+    assert (len(kept), len(first) - len(kept), kept["muscle"].nunique()) == (
+        train["n_rows"], train["n_dropped"], train["n_muscles"])
+
+
 def test_make_bench_docs_measures_each_file_again_with_the_command_it_records():
     """``make bench-docs`` runs :data:`BENCHMARKS`; each file the docs quote records the
     command that measured it, and that is what must run again: the stability map's entry left
