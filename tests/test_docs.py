@@ -234,11 +234,8 @@ def _starts(bench, candidate):
 # and sha256); a command naming any other fails. The guide says how to rebuild each file.
 PATHS_NOT_RERUN = {
     # results written there and copied into docs/measured
-    "/tmp/surr/range.json": "surrogate_range.json: its output, written there and copied",
     # training sets not shipped: rebuilding them is 5-8 minutes of FE (fine mesh) and re-running
     # the benchmark another 2-5; surrogates.md gives their commands, the results their sha256
-    "/tmp/surr/practical_600.csv": "surrogate_range.json's training set: the two practical draws "
-                                   "(seeds 20261220, 20261222) joined",
     "/tmp/cov/d2/design2.csv": "surrogate_limits_box.json's training set DESIGN2.csv",
     "/tmp/cov/design2.csv": "DESIGN2.csv's own command, nested in surrogate_limits_box.json",
     # FE draws merged into the shipped sets (surrogates.md, "What it ships", and their sidecars:
@@ -328,9 +325,9 @@ def test_recorded_commands_hold_paths_relative_to_the_repository():
 
 
 def test_the_guide_rebuilds_each_training_set_a_result_names_outside_the_repository():
-    """A measured result fitted on a file the repository does not ship (under /tmp where it was
-    measured) is rebuilt from the surrogates guide: each draw its record names is there as
-    recorded, less where it was written and how many processes ran it. The practical range's
+    """A measured result fitted on a file the repository does not ship is rebuilt from the
+    surrogates guide: each command its record names for it (the draws it merged too) is there
+    as recorded, less where it was written and how many processes ran it. The practical range's
     600 muscles were named nowhere (the guide showed the draws without their mesh)."""
     import json
 
@@ -345,10 +342,18 @@ def test_the_guide_rebuilds_each_training_set_a_result_names_outside_the_reposit
                 del words[at:at + 1 + takes_value]
         return " ".join(words)
 
+    shipped = {p.name for p in (ROOT / "surrogate" / "data").glob("*.csv")}
+
+    def commands(record):  # a training set's command and those of the draws it merged
+        yield record["command"]
+        for source in record.get("sources", ()):
+            yield from commands(source)
+
     def draws(node):
         if isinstance(node, dict):
-            if "/tmp/" in str(node.get("path", "")) and "provenance" in node:
-                yield node["provenance"]["command"]
+            if "provenance" in node and "sha256" in node and \
+                    node.get("path", "").replace("\\", "/").rpartition("/")[2] not in shipped:
+                yield from commands(node["provenance"])
             for value in node.values():
                 yield from draws(value)
         elif isinstance(node, list):
