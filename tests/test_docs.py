@@ -229,17 +229,14 @@ def _starts(bench, candidate):
                 *(bench.BASE[n][0] for n in ("theta0_deg", "rubber_scale")))]
 
 
-# The machine paths recorded commands still name, each with why its record stays as it is (too
-# long to re-run, or an FE draw merged into a shipped set whose sidecar keeps the draw's seed
-# and sha256); a command naming any other fails. The guide says how to rebuild each file.
+# The machine paths recorded commands still name, each with why its record stays as it is; a
+# command naming any other fails.
 PATHS_NOT_RERUN = {
-    # results written there and copied into docs/measured
-    # training sets not shipped: rebuilding them is 5-8 minutes of FE (fine mesh) and re-running
-    # the benchmark another 2-5; surrogates.md gives their commands, the results their sha256
-    "/tmp/cov/d2/design2.csv": "surrogate_limits_box.json's training set DESIGN2.csv",
-    "/tmp/cov/design2.csv": "DESIGN2.csv's own command, nested in surrogate_limits_box.json",
-    # FE draws merged into the shipped sets (surrogates.md, "What it ships", and their sidecars:
-    # seed, muscles and sha256 of each); rebuilding a set moves every figure of its surrogate
+    # FE draws merged into the shipped sets, recorded in their sidecars with seed, muscles and
+    # sha256 and nested in the results trained on them (surrogates.md, "What it ships", rebuilds
+    # them): re-running one rewrites its shipped set, and every result nesting it (bench_range_lock,
+    # bench_surrogate_limits, bench_surrogate_range --kind muscle-gp-range: minutes to an hour
+    # each) must then be measured again
     "/tmp/surr/practical_train.csv": "a draw of mkm_range_design.csv (seed 20261220)",
     "/tmp/surr/practical_train2.csv": "a draw of mkm_range_design.csv (seed 20261222)",
     "/tmp/rangeacc/adaptive1.csv": "the adaptive draw of mkm_range_design.csv (seed 20261227)",
@@ -253,7 +250,8 @@ PATHS_NOT_RERUN = {
     **{f"/tmp/calstd/range_hold/s2026180{i}.csv":
        f"a draw of mkm_range_std_holdout.csv (seed 2026180{i})" for i in range(1, 6)},
     "/tmp/calstd/box_holdall.csv": "the 70 draws of mkm_std_holdout.csv",
-    # the study's folder: re-running it measures new seconds per force, which auto ranks by
+    # the study's folder: re-running the study measures new seconds per force on this shared
+    # machine, and auto ranks its candidates by them
     "/work/scratch-lead/study-final": "mkm/data/model_errors.json's study folder",
 }
 
