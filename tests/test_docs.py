@@ -229,19 +229,158 @@ def _starts(bench, candidate):
                 *(bench.BASE[n][0] for n in ("theta0_deg", "rubber_scale")))]
 
 
-def test_recorded_commands_hold_paths_relative_to_the_repository():
-    """The measured results the docs show name the command that measured them as anyone types
-    it in a checkout: no absolute path of the machine that ran it."""
+# The machine paths recorded commands still name, each with why its record stays as it is; a
+# command naming any other fails.
+PATHS_NOT_RERUN = {
+    # FE draws merged into the shipped sets, recorded in their sidecars with seed, muscles and
+    # sha256 and nested in the results trained on them (surrogates.md, "What it ships", rebuilds
+    # them): re-running one rewrites its shipped set, and every result nesting it (bench_range_lock,
+    # bench_surrogate_limits, bench_surrogate_range --kind muscle-gp-range: minutes to an hour
+    # each) must then be measured again
+    "/tmp/surr/practical_train.csv": "a draw of mkm_range_design.csv (seed 20261220)",
+    "/tmp/surr/practical_train2.csv": "a draw of mkm_range_design.csv (seed 20261222)",
+    "/tmp/rangeacc/adaptive1.csv": "the adaptive draw of mkm_range_design.csv (seed 20261227)",
+    "/work/wt/rangeacc/tools/merge_fe_datasets.py": "the merge that made mkm_range_design.csv: "
+                                                    "its inputs are the draws above",
+    "/work/wt/rangeacc/surrogate/data/mkm_range_design.csv": "the same merge's output",
+    "/tmp/rangesurr/practical_calib.csv": "the draw of mkm_range_std_calibration.csv",
+    "/tmp/surr/practical_eval.csv": "a draw of mkm_range_std_holdout.csv (seed 20261221)",
+    "/tmp/rangesurr/practical_hold2.csv": "a draw of mkm_range_std_holdout.csv (seed 20261226)",
+    "/tmp/calstd/range_holdout_v1.csv": "the first merge of mkm_range_std_holdout.csv",
+    **{f"/tmp/calstd/range_hold/s2026180{i}.csv":
+       f"a draw of mkm_range_std_holdout.csv (seed 2026180{i})" for i in range(1, 6)},
+    "/tmp/calstd/box_holdall.csv": "the 70 draws of mkm_std_holdout.csv",
+    # the study's folder: re-running the study measures new seconds per force on this shared
+    # machine, and auto ranks its candidates by them
+    "/work/scratch-lead/study-final": "mkm/data/model_errors.json's study folder",
+}
+
+
+def _recorded_commands():
+    """Every command string recorded anywhere in the measured results the docs show, their
+    sidecars and the shipped datasets' sidecars (the training sets' provenance nests theirs):
+    ``(file, where in it, command)``."""
     import json
 
-    records = sorted((DOCS / "measured").glob("*.json"))
-    assert records
-    for path in records:
-        command = json.loads(path.read_text(encoding="utf-8")).get("command", "")
-        absolute = [t for t in command.split() if t.startswith("/") or re.match(r"[A-Za-z]:", t)]
-        assert not absolute, f"{path.name}: {command}"
+    def walk(node, where):
+        if isinstance(node, dict):
+            for key, value in node.items():
+                if key == "command" and isinstance(value, str):
+                    yield f"{where}/command", value
+                else:
+                    yield from walk(value, f"{where}/{key}")
+        elif isinstance(node, list):
+            for i, value in enumerate(node):
+                yield from walk(value, f"{where}[{i}]")
+
+    files = [*sorted((DOCS / "measured").glob("*.json")),
+             *sorted((ROOT / "surrogate" / "data").glob("*.json")),
+             *sorted((ROOT / "mkm" / "data").rglob("*.json"))]
+    for path in files:
+        record = json.loads(path.read_text(encoding="utf-8"))
+        for where, command in walk(record, ""):
+            yield path.relative_to(ROOT).as_posix(), where, command
+
+
+def _machine_paths(command: str) -> list[str]:
+    """The arguments of ``command`` (an option's value after ``=`` too) that name a place on one
+    machine: an absolute POSIX or Windows path, a home folder, anything under /tmp. A lone ``/``
+    is a word (a row named "surrogate / FE model"), not a path."""
+    words = (w.strip("'\"") for w in re.split(r"[\s=]+", command))
+    return [w for w in words if re.match(r"(/[^/\s]|[A-Za-z]:[\\/]|\\\\|~[/\\])", w)
+            or "/tmp/" in w or w in ("/tmp", "~")]
+
+
+def test_machine_paths_are_found_in_any_form():
+    assert _machine_paths("bench.py --out /tmp/x.json") == ["/tmp/x.json"]
+    assert _machine_paths("bench.py --out=/tmp/x.json --train 'C:\\Users\\lab\\a.csv'") == [
+        "/tmp/x.json", "C:\\Users\\lab\\a.csv"]
+    assert _machine_paths("/work/wt/tools/merge.py ~/a.csv tmp/b.csv") == [
+        "/work/wt/tools/merge.py", "~/a.csv"]
+    assert _machine_paths("surrogate / FE model (medians)") == []
+    assert _machine_paths("mkm fem convergence --out docs/measured") == []
+
+
+def test_recorded_commands_hold_paths_relative_to_the_repository():
+    """Every command the measured results, their sidecars and the shipped datasets record (a
+    training set's nested in the result that used it too) is what anyone types in a checkout:
+    no absolute path and no /tmp file of the machine that ran it. The top-level command alone
+    was checked, so results written under /tmp and copied, and training sets left in /tmp,
+    went unseen."""
+    offenders, named = [], set()
+    recorded = list(_recorded_commands())
+    assert len(recorded) > 100  # the nested ones are walked
+    for name, where, command in recorded:
+        paths = set(_machine_paths(command))
+        named |= paths
+        if paths - set(PATHS_NOT_RERUN):
+            offenders.append(f"{name}{where}: {command}")
+    assert not offenders, "\n".join(offenders)
+    # a path no record names any more leaves the list: it holds only what is still there
+    assert set(PATHS_NOT_RERUN) <= named, set(PATHS_NOT_RERUN) - named
     generate = _generate()
     assert "{out}" in generate.BENCHMARKS["batch.json"]  # the writer fills in relative paths
+
+
+def test_the_guide_rebuilds_each_training_set_a_result_names_outside_the_repository():
+    """A measured result fitted on a file the repository does not ship is rebuilt from the
+    surrogates guide: each command its record names for it (the draws it merged too) is there
+    as recorded, less where it was written and how many processes ran it. The practical range's
+    600 muscles were named nowhere (the guide showed the draws without their mesh)."""
+    import json
+
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    guide = " ".join(text.replace("\\\n", " ").replace("`", " ").split())
+
+    def as_typed(command: str) -> str:
+        words = command.split()
+        for flag, takes_value in (("--out", True), ("--workers", True), ("--no-progress", False)):
+            if flag in words:
+                at = words.index(flag)
+                del words[at:at + 1 + takes_value]
+        return " ".join(words)
+
+    shipped = {p.name for p in (ROOT / "surrogate" / "data").glob("*.csv")}
+
+    def commands(record):  # a training set's command and those of the draws it merged
+        yield record["command"]
+        for source in record.get("sources", ()):
+            yield from commands(source)
+
+    def draws(node):
+        if isinstance(node, dict):
+            if "provenance" in node and "sha256" in node and \
+                    node.get("path", "").replace("\\", "/").rpartition("/")[2] not in shipped:
+                yield from commands(node["provenance"])
+            for value in node.values():
+                yield from draws(value)
+        elif isinstance(node, list):
+            for value in node:
+                yield from draws(value)
+
+    checked = 0
+    for path in sorted((DOCS / "measured").glob("*.json")):
+        for command in draws(json.loads(path.read_text(encoding="utf-8"))):
+            assert as_typed(command) in guide, f"{path.name}: {command}"
+            checked += 1
+    assert checked >= 2
+
+
+def test_the_practical_training_set_is_the_first_two_draws_of_the_shipped_range_set():
+    """``surrogate_range.json`` trained on a file the repository does not ship; the guide checks
+    a rebuild against muscles 0-599 of ``mkm_range_design.csv``, the same two draws: their rows,
+    those that did not converge (left out at training) and the muscles kept are the record's."""
+    import json
+
+    import pandas as pd
+
+    train = json.loads((DOCS / "measured" / "surrogate_range.json").read_text("utf-8"))["train"]
+    design = pd.read_csv(ROOT / "surrogate" / "data" / "mkm_range_design.csv", comment="#")
+    first = design[design["muscle"] < 600]
+    assert set(first["origin"]) == {"practical seed 20261220", "practical seed 20261222"}
+    kept = first[first["converged"].astype(bool)]
+    assert (len(kept), len(first) - len(kept), kept["muscle"].nunique()) == (
+        train["n_rows"], train["n_dropped"], train["n_muscles"])
 
 
 def test_make_bench_docs_measures_each_file_again_with_the_command_it_records():
