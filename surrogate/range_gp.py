@@ -6,8 +6,8 @@ one (:data:`mkm.fem.limits.PRACTICAL_RANGE`): standardised linearly, the small m
 end of each input and a stationary process with one length scale per input fits them with the
 large ones' scale. The processes here take ``log D0``, ``log t0``, ``log L0``, ``log C10``, the
 rubber ratio ``C01 / C10`` and ``log(D_braid / L0)`` (with ``theta0``, ``eps`` and ``sqrt(eps)``
-as the default's). Measured on 60 fresh muscles of the range, fitted on the same 768: worst
-error 1.97 % against 4.88 % with the default's linear inputs (``docs/guide/surrogates.md``).
+as the default's); the default's linear inputs fitted to the practical muscles miss a fresh
+one by several percent (``docs/guide/surrogates.md``, "Beyond the box").
 The slope, threshold and std are the default's; the std keeps the fit's leave-one-muscle-out
 calibration (:meth:`RangeThresholdGP.calibrate_std`) before the held-out rescale.
 """
