@@ -67,7 +67,10 @@ if TYPE_CHECKING:  # imported where used: every model reads a calibration, few f
 
 CALIBRATION_FILE = package_file("mkm.fem", "calibration.json")
 THETA0_BOUNDS_DEG = (15.0, 50.0)  # practical braids are 20-30 deg; 54.7 deg is the lock angle
-TARGETS = ("slope", "force", "slope+threshold")
+#: what a calibration fits, and how (``mkm fem calibrate --target``)
+TARGETS = {"slope": "dF/dP above the threshold (default for models with a threshold pressure)",
+           "force": "least squares on every force (default for eq2, where both coincide)",
+           "slope+threshold": "slope, and report the reference's threshold offset"}
 REFERENCE_COLUMNS = ("pressure_bar", "D0_mm", "t0_mm", "eps", "force_N")
 MAX_FORCE_N = 1e6  # a reference force beyond this is a typo or a corrupt cell, not a muscle
 #: Reference points at or below this share of a sweep's largest force count as "below the

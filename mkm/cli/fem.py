@@ -13,6 +13,7 @@ from mkm.cli.common import (
     add_progress_argument,
     argtype,
     choices,
+    derived_help,
     emit_prediction,
     model_from_args,
     parse_within,
@@ -66,10 +67,7 @@ def register(subparsers) -> None:
                      "becomes one), or a folder of them (one sweep each) (default: the paper's "
                      "muscle I)")
     cal.add_argument("--target", type=_target, metavar="TARGET",
-                     help="slope: dF/dP above the threshold (default for models with a "
-                     "threshold pressure); force: least squares on every force (default for "
-                     "eq2, where both coincide); slope+threshold: slope, and report the "
-                     "reference's threshold offset")
+                     action=derived_help(_targets_help))
     cal.add_argument("--out", metavar="FILE",
                      help="write the fit into this calibration file (other entries kept)")
     cal.add_argument("--update-shipped", action="store_true",
@@ -157,6 +155,12 @@ def _target(text: str) -> str:
         raise argparse.ArgumentTypeError(f"{text!r} is invalid: expected one of "
                                          f"{', '.join(TARGETS)}")
     return text
+
+
+def _targets_help() -> str:
+    from mkm.fem.calibration import TARGETS
+
+    return "; ".join(f"{name}: {what}" for name, what in TARGETS.items())
 
 
 def _solve(args) -> int:

@@ -1230,3 +1230,13 @@ def test_identify_search_choices_are_the_procedures_own():
     action = next(a for a in sub._actions if "--search" in a.option_strings)
     assert action.choices is procedure.SEARCHES
     assert action.default == procedure.SEARCHES[0] == "surrogate"
+
+
+def test_calibrate_lists_its_targets_from_their_registry(mkm_run):
+    # the targets were typed out in the help beside TARGETS, the list the calibration checks
+    from mkm.fem.calibration import TARGETS
+
+    code, out, _ = mkm_run(["fem", "calibrate", "--help"])
+    assert code == 0
+    text = " ".join(out.split())
+    assert all(f"{name}: {' '.join(what.split())}" in text for name, what in TARGETS.items())
