@@ -508,3 +508,22 @@ def test_the_shipped_wrong_bench_identification_is_what_identify_gives_now(tmp_p
             else:
                 assert new[key] == pytest.approx(old[key], rel=2e-5, abs=1e-9), (
                     old["parameter"], key)
+
+
+@pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
+def test_the_guides_auto_tables_are_their_measured_files(measured):
+    """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
+    the file it says it comes from (its figures had drifted from the file once)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / measured).read_text(encoding="utf-8"))
+    text = (DOCS / "guide" / "force-models.md").read_text(encoding="utf-8")
+    # the table that follows the file's own command in the guide
+    table = text[text.index(f"docs/measured/{measured}"):].split("\n\n", 2)[1]
+    rows = [r.strip("|").split("|") for r in table.splitlines() if re.match(r"\| \d", r)]
+    assert [r[0].strip() for r in rows] == [f"{100 * float(t):g} %" for t in record["results"]]
+    for row, result in zip(rows, record["results"].values(), strict=True):
+        kinds = result["by_kind"]
+        assert int(row[1]) == round(result["within"] * result["calls"])
+        assert [c.strip() for c in row[2:5]] == [
+            f"{kinds[k]['worst_err_pct']:.3f} %" for k in ("sweep", "point", "near threshold")]
