@@ -674,8 +674,11 @@ def _muscle(given: dict, group: _Group):
     for key, option in (("id", "--id"), ("D0_mm", "--D0"), ("t0_mm", "--t0"),
                         ("L0_mm", "--L0"), ("eps", "--eps")):
         if values.get(key) is None:
-            raise ValueError(f"{where}no {key}: give {option} (the table has no "
-                             f"{'eps or length' if key == 'eps' else key} column"
+            # the muscle's id and sizes come from mkm export's workbook only, never a column
+            source = ("a table's columns give none; mkm export's workbook carries it"
+                      if key in ("id", "D0_mm", "t0_mm") else
+                      f"the table has no {'eps or length' if key == 'eps' else key} column")
+            raise ValueError(f"{where}no {key}: give {option} ({source}"
                              f"{_look_alike(group, key)})")
     try:
         values = {k: (v if k == "id" else float(v)) for k, v in values.items()}

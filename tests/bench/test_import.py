@@ -1010,7 +1010,9 @@ def test_a_table_of_one_muscle_state_is_named_once(tmp_path, mkm_cli):
     code, out, err = mkm_cli(["import", str(path), "--D0", "30", "--t0", "3", "--L0", "282",
                               "--eps", "0", "--out", str(tmp_path / "runs")])
     assert code == 2 and out == ""
-    assert err == "mkm import: error: lab.csv: no id: give --id (the table has no id column)\n"
+    # an id column would not be read: only mkm export's workbook carries the muscle
+    assert err == ("mkm import: error: lab.csv: no id: give --id (a table's columns give none; "
+                   "mkm export's workbook carries it)\n")
 
 
 @pytest.mark.parametrize("L0, noted", [("50", True), ("90", False), ("282", False)])
@@ -1055,12 +1057,12 @@ def test_a_size_under_another_name_is_pointed_at(tmp_path, mkm_cli):
     path.write_text("P,F,D0_nominal_mm,wall thickness (mm)\n1,2,20,1.8\n2,5,20,1.8\n")
     code, out, err = mkm_cli(["import", str(path), "--id", "m", "--L0", "300", "--eps", "0"])
     assert code == 2 and err.count("\n") == 1
-    assert "no D0_mm: give --D0 (the table has no D0_mm column; its column 'D0_nominal_mm' " \
-        "holds 20)" in err
+    assert "no D0_mm: give --D0 (a table's columns give none; mkm export's workbook carries " \
+        "it; its column 'D0_nominal_mm' holds 20)" in err
     code, out, err = mkm_cli(["import", str(path), "--id", "m", "--L0", "300", "--eps", "0",
                               "--D0", "20"])
-    assert "no t0_mm: give --t0 (the table has no t0_mm column; its column 'wall thickness " \
-        "(mm)' holds 1.8)" in err
+    assert "no t0_mm: give --t0 (a table's columns give none; mkm export's workbook carries " \
+        "it; its column 'wall thickness (mm)' holds 1.8)" in err
 
 
 def test_l0_given_replaces_the_tables_and_the_held_lengths_give_eps(tmp_path, mkm_cli):
