@@ -322,6 +322,7 @@ class AutoModel(ForceModel):
         bound_used = np.zeros(P.shape)
         source = np.full(P.shape, "the fine mesh is the reference", dtype=object)
         todo = np.ones(P.shape, dtype=bool)
+        measured = None  # which points lie where the meshes' errors were measured
         ref = self.reference(P, D0, t0, eps)
         gapped = self.gapped
         if ref is not None:
@@ -337,7 +338,10 @@ class AutoModel(ForceModel):
                 continue  # no reference bounds it with the gap
             model_pred, predictor = None, row.predictor
             if row.family == "FE":
-                model_pred, bound, why = self._mesh_bound(row, P, D0, t0, eps)
+                if measured is None:  # one muscle: the same for every mesh
+                    measured = _measured_points(self._candidate(row.spec).params(), P, D0, t0,
+                                                eps)
+                model_pred, bound, why = self._mesh_bound(row, P, D0, t0, eps, measured)
             elif ref is None:
                 continue  # no estimate of the reference here: only the FE may answer
             elif row.spec == REFERENCE_SPEC:
@@ -379,10 +383,11 @@ class AutoModel(ForceModel):
         return {"force_N": force, "model_used": used.astype(str),
                 "error_bound_pct": bound_used, "bound_source": source.astype(str)}
 
-    def _mesh_bound(self, row, P, D0, t0, eps):
+    def _mesh_bound(self, row, P, D0, t0, eps, measured):
         """An FE mesh's prediction (None if not run), its bound [%] per point and how it was
         obtained: from the mesh error model at the call's scale when the model covers the mesh
-        (:func:`mkm.mesh_errors.point_bound_pct`), else the study table's largest error."""
+        (:func:`mkm.mesh_errors.point_bound_pct`), else the study table's largest error; none
+        at a point not ``measured`` (outside the practical range, :func:`_measured_points`)."""
         mesh = dict(part.split("=", 1) for part in row.spec.partition(":")[2].split(",")
                     if "=" in part).get("mesh")
         model = mesh_errors.mesh_model(self.mesh_errors or mesh_errors.MESH_ERRORS_FILE)
@@ -393,7 +398,6 @@ class AutoModel(ForceModel):
         a, b = model[mesh]
         candidate = self._candidate(row.spec)
         # the bound is measured on muscles of the practical range: beyond it, none is claimed
-        measured = _measured_points(candidate.params(), P, D0, t0, eps)
         if not np.any(measured):
             return (None, np.full(P.shape, np.inf), f"{mesh} mesh: its error is measured over "
                     "the practical range (`mkm models`), which the call leaves")

@@ -535,18 +535,8 @@ def box_edges(row, box: dict, calibration: Calibration | None = None) -> list[st
     where several were searched and it is the softest or the stiffest of them (by C10; the
     ``calibrated`` one is ``calibration``'s): there a larger box might hold a better design.
     An end at the practical range's limit is none: the search refuses a box beyond it."""
-    edges = []
-    for key, name in BOX_NAMES.items():
-        low, high = box.get(key, (0.0, 0.0))
-        if not high > low:
-            continue
-        at = float(row[key])
-        unit = "deg" if key.endswith("deg") else "mm"
-        limits = getattr(PRACTICAL_RANGE, key)
-        for end, bound, limit in (("lower", low, limits[0]), ("upper", high, limits[1])):
-            tol = 1e-6 * (high - low)  # the grids hold both ends exactly
-            if abs(at - bound) <= tol and abs(bound - limit) > tol:
-                edges.append(f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})")
+    edges = [f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})"
+             for name, at, unit, end, (low, high), at_limit in _ends(row, box) if not at_limit]
     rubbers = list(box.get("rubber", []))
     C10 = {r: rubber_of(r, calibration).C10_MPa for r in rubbers}
     if len(set(C10.values())) > 1 and "rubber" in row:
@@ -564,18 +554,24 @@ def range_limits(row, box: dict) -> list[str]:
     """The searched ranges of ``box`` whose end a design ``row`` sits on where that end is the
     practical range's limit (which :func:`box_edges` leaves out: no search goes beyond it), as
     ``t0 = 0.5 mm, its lower limit``."""
-    limits = []
+    return [f"{name} = {at:.4g} {unit}, its {end} limit"
+            for name, at, unit, end, _, at_limit in _ends(row, box) if at_limit]
+
+
+def _ends(row, box: dict):
+    """``(name, value, unit, "lower" or "upper", (low, high), on the practical range's
+    limit)`` of each searched range of ``box`` (a fixed value is no range) whose end a design
+    ``row`` sits on."""
     for key, name in BOX_NAMES.items():
         low, high = box.get(key, (0.0, 0.0))
         if not high > low:
             continue
         at, unit = float(row[key]), "deg" if key.endswith("deg") else "mm"
-        tol = 1e-6 * (high - low)
+        tol = 1e-6 * (high - low)  # the grids hold both ends exactly
         for end, bound, limit in zip(("lower", "upper"), (low, high),
                                      getattr(PRACTICAL_RANGE, key), strict=True):
-            if abs(at - bound) <= tol and abs(bound - limit) <= tol:
-                limits.append(f"{name} = {at:.4g} {unit}, its {end} limit")
-    return limits
+            if abs(at - bound) <= tol:
+                yield name, at, unit, end, (low, high), abs(bound - limit) <= tol
 
 
 def span_text(low: float, high: float) -> str:

@@ -7,7 +7,7 @@ import time
 import numpy as np
 import pandas as pd
 
-from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
+from mkm.design.spec import DEFAULT_OBJECTIVE, NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.calibration import Calibration
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
@@ -39,20 +39,23 @@ def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str,
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
            curve_to_bar: float | None = None, progress: bool = False, cache_dir=None,
            workers: int | None = None, scheduler: str | None = None,
-           calibration: Calibration | None = None, gap_mm: float = 0.0, order=None):
+           calibration: Calibration | None = None, gap_mm: float = 0.0,
+           objective: str = DEFAULT_OBJECTIVE):
     """FE forces of ``designs`` at every requirement on ``mesh`` (:func:`verify_on_mesh`), the
     chosen design's verdict made to hold: while the best design that meets every requirement
-    (the first in ``order(frame)``, a function returning the frame sorted best first; None:
-    rank order) meets one by less than its mesh's force may lie from the fine mesh's
+    (the first by :func:`ordered` for ``objective``) meets one by less than its mesh's force
+    may lie from the fine mesh's
     (:func:`mkm.mesh_errors.point_error_N`), it is verified again on the next finer mesh
     (:data:`~mkm.fem.options.MESH_LEVELS`' order), and the best is found again: the cheapest
     mesh whose verdict holds, for the one design built. The others keep their flag. Column
     ``fe_mesh`` names the mesh of each design's forces and curves. Returns what
-    :func:`verify_on_mesh` returns (sorted by ``order``), its time and cache hits summed over
-    the meshes and the models of every mesh used."""
+    :func:`verify_on_mesh` returns (best first), its time and cache hits summed over the
+    meshes and the models of every mesh used."""
     levels = list(MESH_LEVELS)
-    order = order or (lambda frame: frame.sort_values(
-        ["meets_all", "rank"], ascending=[False, True], kind="stable", ignore_index=True))
+
+    def order(frame):
+        return ordered(frame, objective)
+
     args = (curve_to_bar, progress, cache_dir, workers, scheduler, calibration, gap_mm)
     judged, curves, seconds, models, hits = verify_on_mesh(designs, requirements, mesh, *args)
     judged = order(judged.assign(fe_mesh=mesh))
@@ -71,6 +74,15 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
         seconds, hits = seconds + more_seconds, hits + more_hits
         models.update(more_models)
     return judged, curves, seconds, models, hits
+
+
+def ordered(designs: pd.DataFrame, objective: str = DEFAULT_OBJECTIVE) -> pd.DataFrame:
+    """The verified designs best first: those the FE confirms, by rank (the objective's order
+    in the search), or by FE margin for ``max-margin``."""
+    order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
+    return designs.sort_values(["meets_all", *order], ascending=[False] + [
+        objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",
+        ignore_index=True)
 
 
 def verify_on_mesh(designs: pd.DataFrame, requirements, mesh: str = "medium",

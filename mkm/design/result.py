@@ -22,7 +22,7 @@ from mkm.design.box_search import (
     range_limits,
     search,
 )
-from mkm.design.fe_verification import verify
+from mkm.design.fe_verification import ordered, verify
 from mkm.design.robust import check_designs, check_probability
 from mkm.design.spec import (
     DEFAULT_OBJECTIVE,
@@ -198,7 +198,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
     designs, curves, seconds, fe_models, hits = verify(
         chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir,
-        workers, scheduler, calibration, found.gap_mm, order=lambda d: _ordered(d, objective))
+        workers, scheduler, calibration, found.gap_mm, objective)
     robust: list[str] = []
     if tolerances is not None:
         designs = check_designs(designs, found.requirements, found.models, tolerances,
@@ -206,7 +206,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         robust = [c for k in range(1, len(found.requirements) + 1) for c in (
             f"probability_r{k}", f"probability_r{k}_search", f"r{k}_tolerance_u_N",
             f"r{k}_fe_worst_corner_N")] + ["probability_all"]
-    designs = _ordered(designs, objective)
+    designs = ordered(designs, objective)
     n = len(found.requirements)
     columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
@@ -258,15 +258,6 @@ def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *
     frame = result.designs.copy()
     frame.attrs.update(design_record(result))
     return frame
-
-
-def _ordered(designs: pd.DataFrame, objective: str) -> pd.DataFrame:
-    """The designs best first: those the FE confirms, by rank (the objective's order in the
-    search), or by FE margin for ``max-margin``."""
-    order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
-    return designs.sort_values(["meets_all", *order], ascending=[False] + [
-        objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",
-        ignore_index=True)
 
 
 def _in_mesh_order(meshes) -> list[str]:
