@@ -328,6 +328,8 @@ BENCHMARKS = {
                                  "friction and creep' --out {out}",
     "identify_wrong_bench_fresh.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 "
                                        "--seed 20261300 --out {out}",
+    "mesh_bound.json": "benchmarks/bench_mesh_bound.py --muscles 240 --seed 20264102 "
+                       "--out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
     # the guide quotes this draw's muscles: its seed, not a fresh one

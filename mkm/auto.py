@@ -23,9 +23,12 @@ muscle's sweep) a posteriori, at those very points:
   ``P*``) and ``b`` the largest relative error measured on fresh random muscles of the practical
   range, half of them near the braid lock (``mkm/data/mesh_errors.csv``,
   :mod:`mkm.mesh_errors`), over the muscles whose clamped end the mesh resolves (its element
-  at the cap at most :data:`~mkm.mesh_errors.MAX_END_RESOLUTION` bending lengths of the wall);
-  a mesh does not answer for a muscle beyond that. Over a sweep it is small; at a
-  single point just above the threshold ``P*`` it is large, as the error is (a coarse mesh's
+  at the cap at most :data:`~mkm.mesh_errors.MAX_END_RESOLUTION` bending lengths of the wall)
+  and whose wall is at most :data:`~mkm.mesh_errors.SLENDERNESS_REACH` times as slender
+  (``L0/t0``) as the call's (:meth:`mkm.mesh_errors.MeshBound.coefficients`: flat elements
+  err most); a mesh does not answer for a muscle beyond the end zone it resolves. Over a
+  sweep it is small; at a single point just above the threshold ``P*`` it is large, as the
+  error is (a coarse mesh's
   threshold shifted by 0.003 bar is 0.8 % of the force 0.4 bar above it). Without that table,
   the largest |Err%| in the study's convergence table times :data:`MESH_SAFETY`. The fine mesh
   is the reference (bound 0).
@@ -395,13 +398,14 @@ class AutoModel(ForceModel):
             return (None, np.full(P.shape, MESH_SAFETY * row.recorded_err_pct),
                     f"mesh error: {MESH_SAFETY:g} x its largest |Err%| against the fine mesh "
                     "in the study's convergence table")
-        a, b = model[mesh]
         candidate = self._candidate(row.spec)
+        L0 = candidate.params()["L0_mm"]
+        a, b = model[mesh].coefficients(L0, t0)
         # the bound is measured on muscles of the practical range: beyond it, none is claimed
         if not np.any(measured):
             return (None, np.full(P.shape, np.inf), f"{mesh} mesh: its error is measured over "
                     "the practical range (`mkm models`), which the call leaves")
-        resolved = mesh_errors.end_resolution(D0, t0, candidate.params()["L0_mm"], mesh) \
+        resolved = mesh_errors.end_resolution(D0, t0, L0, mesh) \
             <= mesh_errors.MAX_END_RESOLUTION
         if not np.any(resolved):  # its bound is not measured there: not solved at all
             return (None, np.full(P.shape, np.inf), f"{mesh} mesh: its element at the clamp "
@@ -416,9 +420,10 @@ class AutoModel(ForceModel):
                                             a, b)
         bound[~np.ravel(pred.valid) | ~np.isfinite(bound) | ~np.ravel(resolved)
               | ~measured] = np.inf
-        return pred, bound, (f"mesh error at this call's scale: {100 * a:.3f} % of P* x the "
-                             f"slope + {100 * b:.3f} % of the force, the largest over fresh "
-                             f"random muscles whose clamped end it resolves x "
+        return pred, bound, (f"mesh error at this call's scale: {100 * a.max():.3f} % of P* x "
+                             f"the slope + {100 * b.max():.3f} % of the force, the largest over "
+                             "fresh random muscles whose clamped end it resolves, up to "
+                             f"{mesh_errors.SLENDERNESS_REACH:g} x the call's L0/t0, x "
                              f"{mesh_errors.SAFETY:g}")
 
     def _forces(self, P, D0, t0, eps):

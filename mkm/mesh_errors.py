@@ -56,6 +56,15 @@ NEAR_LOCK_SHARE = 0.5
 #: slender tube's bending at the cap falls between the nodes: the coarse mesh was 7.2 % off
 #: from 2 P* up at 5.8 such lengths, within 0.73 % on every muscle up to 4.9.
 MAX_END_RESOLUTION = 4.0
+#: A mesh's elements are about ``L0 / (2 n_z)`` long and ``t0 / n_r`` thick (graded towards the
+#: caps): the longer and thinner the wall, the flatter they are and the further the mesh is from
+#: the fine one. So a muscle's ``a`` and ``b`` are the largest over the measured muscles at most
+#: this many times as slender (``L0/t0``) as it is (:meth:`MeshBound.coefficients`); a margin,
+#: as slenderness is not all that sets the error.
+SLENDERNESS_REACH = 1.5
+#: The fewest measured muscles a bound is the largest over: below it the region extends to the
+#: next more slender ones.
+MIN_REGION_MUSCLES = 30
 
 
 def end_resolution(D0_mm, t0_mm, L0_mm, mesh: str):
@@ -157,11 +166,45 @@ def measure(n_muscles: int, seed: int, out=MESH_ERRORS_FILE, workers: int | None
     return table, info
 
 
+@dataclasses.dataclass(frozen=True)
+class MeshBound:
+    """A mesh's ``a`` and ``b`` by region (:func:`coefficients`), from the muscles it was
+    measured on: their slenderness ``L0/t0`` (ascending), threshold shift over ``P*`` and
+    relative error (:func:`_muscle_rows`)."""
+
+    slenderness: np.ndarray
+    shift_per_threshold: np.ndarray
+    relative_error: np.ndarray
+
+    def region_limit(self, L0_mm, t0_mm) -> np.ndarray:
+        """The slenderness up to which measured muscles bound a muscle of ``L0_mm``,
+        ``t0_mm``: :data:`SLENDERNESS_REACH` times its own, and at least the
+        :data:`MIN_REGION_MUSCLES` least slender. Arrays broadcast."""
+        own = np.asarray(L0_mm, dtype=float) / np.asarray(t0_mm, dtype=float)
+        floor = self.slenderness[min(MIN_REGION_MUSCLES, len(self.slenderness)) - 1]
+        return np.maximum(SLENDERNESS_REACH * own, floor)
+
+    def coefficients(self, L0_mm, t0_mm) -> tuple[np.ndarray, np.ndarray]:
+        """``(a, b)`` for muscles of ``L0_mm`` and ``t0_mm`` (arrays broadcast): the largest
+        over the measured muscles up to :meth:`region_limit`, times :data:`SAFETY`."""
+        limit = self.region_limit(L0_mm, t0_mm)
+        # the largest over the first k muscles, k those within the limit
+        k = np.searchsorted(self.slenderness, limit, side="right") - 1
+        a = np.maximum.accumulate(self.shift_per_threshold)[k]
+        b = np.maximum.accumulate(self.relative_error)[k]
+        return SAFETY * a, SAFETY * b
+
+    @property
+    def largest(self) -> tuple[float, float]:
+        """``(a, b)`` over every measured muscle (the most slender region's)."""
+        return (SAFETY * float(self.shift_per_threshold.max()),
+                SAFETY * float(self.relative_error.max()))
+
+
 @cache
-def mesh_model(path: Path | str = MESH_ERRORS_FILE) -> dict[str, tuple[float, float]]:
-    """Per mesh ``(a, b)``: the largest threshold error (over ``P*``) and relative error over
-    the measured muscles (:func:`_muscle_rows`) whose end zone it resolves
-    (:data:`MAX_END_RESOLUTION`), times :data:`SAFETY`; empty without a table."""
+def mesh_model(path: Path | str = MESH_ERRORS_FILE) -> dict[str, MeshBound]:
+    """Per mesh its :class:`MeshBound`: the measured muscles (:func:`_muscle_rows`) whose end
+    zone it resolves (:data:`MAX_END_RESOLUTION`); empty without a table."""
     path = Path(path)
     if not path.is_file():
         return {}
@@ -174,13 +217,14 @@ def mesh_model(path: Path | str = MESH_ERRORS_FILE) -> dict[str, tuple[float, fl
         rows = rows[end_resolution(rows["D0_mm"], rows["t0_mm"], rows["L0_mm"], str(mesh))
                     <= MAX_END_RESOLUTION]
         if len(rows):
-            model[str(mesh)] = (SAFETY * float(rows["shift_per_threshold"].max()),
-                                SAFETY * float(rows["relative_error"].max()))
+            rows = rows.assign(slenderness=rows["L0_mm"] / rows["t0_mm"]).sort_values(
+                "slenderness", kind="stable")
+            model[str(mesh)] = MeshBound(*(rows[name].to_numpy(dtype=float) for name in (
+                "slenderness", "shift_per_threshold", "relative_error")))
     return model
 
 
-def point_bound_pct(force_N, pressure_bar, threshold_bar, geometry, a: float,
-                    b: float) -> np.ndarray:
+def point_bound_pct(force_N, pressure_bar, threshold_bar, geometry, a, b) -> np.ndarray:
     """Per point, the bound [%] of a mesh's force against the fine mesh's, ``a P* A + b F``
     relative to the largest force of its muscle in the call less its own bound (Equation 7's
     scale: a single point is its own; never below 1 N).
@@ -188,10 +232,12 @@ def point_bound_pct(force_N, pressure_bar, threshold_bar, geometry, a: float,
     ``force_N``, ``pressure_bar``, ``threshold_bar`` (the mesh's ``P*``) per point; ``geometry``
     ``(n, k)``: the points of one muscle share a row. A point at zero force within ``a P*`` of
     the threshold (the fine force may have started) takes the slope of its muscle's points
-    above the threshold; with none, it has no bound (inf).
+    above the threshold; with none, it has no bound (inf). ``a`` and ``b`` per point or one
+    for all (:meth:`MeshBound.coefficients`).
     """
     F, P, P_star = (np.ravel(np.asarray(v, dtype=float)) for v in
                     (force_N, pressure_bar, threshold_bar))
+    a, b = (np.broadcast_to(np.ravel(np.asarray(v, dtype=float)), F.shape) for v in (a, b))
     bound = np.full(F.shape, np.inf)
     _, which = np.unique(np.asarray(geometry), axis=0, return_inverse=True)
     which = which.ravel()
@@ -201,14 +247,14 @@ def point_bound_pct(force_N, pressure_bar, threshold_bar, geometry, a: float,
         above = f > 0
         slope = np.where(above, f / np.maximum(p - star, 1e-12), np.nan)
         muscle_slope = np.nanmax(slope) if above.any() else np.nan
-        slope = np.where(above, slope, np.where(p > star * (1 - a), muscle_slope, 0.0))
-        error_N = _error_N(f, slope, star, a, b)
+        slope = np.where(above, slope, np.where(p > star * (1 - a[here]), muscle_slope, 0.0))
+        error_N = _error_N(f, slope, star, a[here], b[here])
         scale = max(np.max(f - error_N, initial=0.0), MIN_SCALE_N)
         bound[here] = np.where(np.isfinite(error_N), 100.0 * error_N / scale, np.inf)
     return bound
 
 
-def _error_N(force_N, slope_N_per_bar, threshold_bar, a: float, b: float):
+def _error_N(force_N, slope_N_per_bar, threshold_bar, a, b):
     """``a P* A + b F`` [N]: how far a mesh's force ``F`` of slope ``A`` above its threshold
     ``P*`` may lie from the fine mesh's."""
     return a * threshold_bar * slope_N_per_bar + b * force_N
@@ -228,11 +274,19 @@ def point_error_N(mesh: str, force_N: float, pressure_bar: float, threshold_bar:
         return np.inf
     star = threshold_bar if np.isfinite(threshold_bar) else 0.0
     slope = force_N / max(pressure_bar - star, 1e-12) if force_N > 0 else 0.0
-    return float(_error_N(force_N, slope, star, *model[mesh]))
+    a, b = model[mesh].coefficients(L0_mm, t0_mm)
+    return float(_error_N(force_N, slope, star, a, b))
 
 
 def summary_line(path: Path | str = MESH_ERRORS_FILE) -> str:
-    """The model in words, for ``auto``'s explanation."""
-    model = mesh_model(path)
-    return "; ".join(f"{mesh}: {100 * a:.3f} % of P* x the slope + {100 * b:.3f} % of the "
-                     "force" for mesh, (a, b) in model.items())
+    """The model in words, for ``auto``'s explanation: each mesh's bound on its least slender
+    muscles and on all."""
+    def words(a, b):
+        return f"{100 * float(a):.3f} % of P* x the slope + {100 * float(b):.3f} % of the force"
+
+    parts = []
+    for mesh, bound in mesh_model(path).items():
+        stout = bound.region_limit(bound.slenderness[0], 1.0)
+        parts.append(f"{mesh}: {words(*bound.coefficients(bound.slenderness[0], 1.0))} up to "
+                     f"L0/t0 {float(stout):.0f}, {words(*bound.largest)} over every muscle")
+    return "; ".join(parts)

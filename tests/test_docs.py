@@ -527,3 +527,30 @@ def test_the_guides_auto_tables_are_their_measured_files(measured):
         assert int(row[1]) == round(result["within"] * result["calls"])
         assert [c.strip() for c in row[2:5]] == [
             f"{kinds[k]['worst_err_pct']:.3f} %" for k in ("sweep", "point", "near threshold")]
+
+
+def test_the_guides_mesh_bounds_are_the_shipped_tables():
+    """force-models.md types out the meshes' bound by slenderness and its check on fresh
+    muscles: held to :func:`mkm.mesh_errors.mesh_model` and ``mesh_bound.json``."""
+    import json
+
+    from mkm.mesh_errors import mesh_model
+
+    text = (DOCS / "guide" / "force-models.md").read_text(encoding="utf-8")
+    table = text[text.index("| `L0/t0` of the muscle"):].split("\n\n", 1)[0]
+    rows = [r.strip("|").split("|") for r in table.splitlines()[2:]]
+    model = mesh_model()
+    for row in rows:
+        slenderness = float(re.match(r"\D*([\d.]+)", row[0]).group(1))
+        for cell, mesh in zip(row[2:4], ("medium", "coarse"), strict=True):
+            a, b = model[mesh].coefficients(slenderness, 1.0)
+            assert cell.strip() == f"{100 * float(a):.3f} %, {100 * float(b):.3f} %", (row, mesh)
+    record = json.loads((DOCS / "measured" / "mesh_bound.json").read_text(encoding="utf-8"))
+    check = text[text.index("Checked on 240 fresh muscles"):].split("\n\n", 1)[0]
+    check = " ".join(check.split())
+    for mesh, result in record["results"].items():
+        assert result["over_a"] == result["over_b"] == 0, mesh
+        assert f"{mesh} {result['muscles']}" in check
+        assert f"{result['largest_ratio_a']:.2f}" in check
+        assert f"{result['largest_ratio_b']:.2f}" in check
+        assert f"{result['median_b_pct']:.3f} %" in check
