@@ -56,6 +56,8 @@ class VentCheck:
     noise_bar: float | None = None
     # why the check read on past safety.vent_timeout_s ("" when it did not)
     waited_why: str = ""
+    # a read of the check did not return (the driver hangs): the check was left there
+    hung: bool = False
 
     def as_dict(self) -> dict:
         return asdict(self)

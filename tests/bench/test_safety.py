@@ -998,3 +998,59 @@ def test_rows_a_full_disk_refused_and_that_went_out_at_close_are_counted(config,
     assert meta["status"] == "failed" and result.exit_code == 2
     assert int(rows[-1].split(",")[0]) == len(rows) - 1  # every row whole, none twice
     assert meta["counters"]["samples"] == len(rows) > 40
+
+
+# 2. `mkm vent`'s own reads are watched ------------------------------------------------------
+
+def test_a_read_that_hangs_in_mkm_vents_check_ends_unverified_and_marks_the_bench(
+        config, monkeypatch):
+    # `mkm vent` writes the vent as it opens the device; its check's third read then hangs (the
+    # driver does not keep its 0.5 s timeout). The command sat in that read for as long as it
+    # hung, nothing said. Now the read is given its timeout, its block and READ_HANG_MARGIN_S,
+    # then the vent is said not verified while the read still hangs, the bench is marked, the
+    # command exits 1, and the next command on the bench names the unverified vent.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    release, reads, backends = threading.Event(), [], []
+
+    class Hanging(SimBackend):
+        def read(self, n_samples, timeout_s):
+            reads.append(n_samples)
+            if len(reads) == 3:
+                release.wait(60)  # the test's net; released once the command returned
+            return super().read(n_samples, timeout_s)
+
+    make_backend = procedures.make_backend
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(Hanging(c)) or backends[-1])
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.vent(c, notify=lambda m: None)
+        still_hung = not release.is_set() and len(reads) == 3
+    finally:
+        release.set()
+    assert still_hung  # the command did not wait for the read
+    message = str(caught.value)
+    hung_s = float(re.search(r"did not return within ([0-9.]+) s", message).group(1))
+    assert hung_s >= 0.5 + 0.1 + 1.0  # its timeout, a block (1 sample at 10 Hz), the margin
+    assert message.startswith("the vent could not be verified (a read of the device did not "
+                              "return within")
+    assert ("(its timeout 0.5 s) during the vent check: the driver hangs; the vent was "
+            "commanded, its check cannot read the monitor): VENT BY HAND") in message
+    assert backends[0].commands[0][1] == 0.0  # the vent went out first, at open
+    (path,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
+    data = json.loads(path.read_text())
+    assert data["command"] == "vent" and data["run_path"] == ""
+    assert "did not return within" in data["vent_unverified"]
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had ended
+    path.write_text(json.dumps(data))
+    notes = []
+    monkeypatch.setattr(procedures, "make_backend", make_backend)  # a driver that answers
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    (said,) = [n for n in notes if "not verified" in n]
+    assert said.startswith(f"`mkm vent` (started {data['started_utc']}, pid "
+                           f"{data['process']['pid']}) vented (0 bar commanded at ")
+    assert "during the vent check: the driver hangs" in said and said.endswith("vented now")
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # removed once vented
