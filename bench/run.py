@@ -728,8 +728,14 @@ class BenchRun:
             cell = self.config.loadcell
             step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
                 * cell.sensitivity_N_per_V
-            noise_N = ZERO_NOISE_SIGMAS * float(tare["std_N"]) + 2 * step_N
-            fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar))
+            tare_std_N = float(tare["std_N"])
+            noise_N = ZERO_NOISE_SIGMAS * tare_std_N + 2 * step_N
+            # a cell that strayed more than an ADC step at the tare and reads one value around
+            # the vent is stuck: said as such, the vent still not verified by it
+            stuck = (before[0], tare_std_N) if tare_std_N > step_N and \
+                acq.forces_unchanged() else None
+            fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar),
+                                 stuck)
         return fell
 
     def _write_vent(self, acq: Acquisition | None) -> BaseException | None:

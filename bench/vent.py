@@ -212,7 +212,8 @@ FORCE_KEPT_FRACTION = 0.5
 
 
 def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: float,
-                  commanded_bar: float) -> VentCheck:
+                  commanded_bar: float, stuck_cell: tuple[float, float] | None = None
+                  ) -> VentCheck:
     """``check`` weighed by the load cell: the muscle's force (from the tare) ``before_N``
     before the vent and ``after_N`` over the check's settled window.
 
@@ -221,12 +222,26 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
     :data:`FORCE_KEPT_FRACTION` of its force before the vent, above the load cell's noise
     ``noise_N``, is still pressurised whatever the monitor reads: a regulator whose monitor
     reports its command (or is stuck) and whose exhaust did not open. A force before the vent
-    within the noise tells nothing.
+    within the noise tells nothing. ``stuck_cell``, the monitor's reading [bar] before the vent
+    and the load cell's spread [N] at the tare, when every force of both windows was one
+    reading although the cell strayed more than an ADC step at the tare: no muscle, slack or
+    pulling, holds a live cell's reading to one ADC code, so the cell is stuck or disconnected;
+    the vent is still not verified (the force tells nothing), and the check says so.
     """
     if not check.verified or check.how != "monitor" or not before_N > noise_N:
         return check
     if not after_N > max(noise_N, FORCE_KEPT_FRACTION * before_N):
         return check
+    if stuck_cell is not None:
+        before_bar, tare_std_N = stuck_cell
+        return check.unproven(commanded_bar, (
+            f"the monitor read {reading_bar(before_bar)} bar before the vent and "
+            f"{reading_bar(check.pressure_bar)} bar after it, but the load cell read "
+            f"{after_N:.1f} N throughout, every reading the same where it strayed "
+            f"{tare_std_N:.2f} N at the tare: a load cell that does not change while the "
+            "pressure falls is stuck or disconnected, so it tells neither a slack muscle nor "
+            "one that still pulls; check the load cell's cable, amplifier and supply, and "
+            "that the muscle hangs slack"))
     return check.unproven(commanded_bar, (
         f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell "
         f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "

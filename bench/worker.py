@@ -530,6 +530,12 @@ class Acquisition:
             return None
         return statistics.median(self._recent_N), statistics.median(self._vent_N)
 
+    def forces_unchanged(self) -> bool:
+        """Every force of :meth:`forces_around_vent`'s two windows is the same reading (a load
+        cell stuck, or a muscle steady within one ADC step)."""
+        forces = [*self._recent_N, *self._vent_N]
+        return bool(self._recent_N) and bool(self._vent_N) and min(forces) == max(forces)
+
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its
         command while the vent was not written, else the last plausible pressure measured, or,

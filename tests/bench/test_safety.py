@@ -421,6 +421,7 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
     result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
     assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
     assert "but the load cell still reads" in result.reason
+    assert "stuck or disconnected" not in result.reason  # a live cell: its noise is there
     assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
     run = load_run(result.path)
     check = run.meta.vent_check
@@ -432,6 +433,40 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
     assert bench.pressure_bar > 0.5 and bench.force_N == pytest.approx(after_N, abs=2.0)
     (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert json.loads(marker.read_text())["unfollowed_bar"] == 0.5
+
+
+def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(config,
+                                                                                tmp_path):
+    # The load cell's input holds its reading from 12 s (on the 1.0 bar step: its cable or
+    # amplifier failed so). At the end the regulator vents, the monitor falls to 0 bar, and
+    # the check called it a muscle that still pulls, with a monitor reporting its command
+    # and an exhaust that did not open: the regulator to check. Every force read one ADC code
+    # where the tare's strayed 0.35 N (2 mV rms at 196.133 N/V, 0.39 N: 1.6 ADC steps), which
+    # no live cell does: it is said to be the load cell, still VENT BY HAND (the force proves
+    # nothing).
+    c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 12.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    run = load_run(result.path)
+    forces = run.samples["force_N"][run.samples["sample"] >= 120]
+    assert forces.nunique() == 1  # the fault: one reading from 12 s on
+    reason = re.search(r"the monitor read ([0-9.]+) bar before the vent and ([0-9.]+) bar after "
+                       r"it, but the load cell read ([0-9.]+) N throughout, every reading the "
+                       r"same where it strayed ([0-9.]+) N at the tare: a load cell that does "
+                       r"not change while the pressure falls is stuck or disconnected",
+                       result.reason)
+    assert reason, result.reason
+    before_bar, after_bar, held_N, tare_std_N = map(float, reason.groups())
+    assert before_bar == pytest.approx(0.5, abs=0.02)  # the last step, 0.5 bar down
+    assert after_bar < c.safety.vent_below_bar
+    assert held_N == pytest.approx(forces.iloc[0], abs=0.05)
+    # the tare's spread is the cell's noise: 2 mV rms at 196.133 N/V, quantised
+    assert tare_std_N == pytest.approx(0.002 * 196.133, rel=0.25)
+    assert "check the load cell's cable, amplifier and supply" in result.reason
+    assert "a monitor that reports its command" not in result.reason
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+    assert not run.meta.vent_check["verified"]
 
 
 class _Supply(SimBackend):
