@@ -28,6 +28,7 @@ from dataclasses import asdict, dataclass
 
 from mkm.bench import backends
 from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected, ReadTimeout
+from mkm.bench.config import MAX_VENT_TIMEOUT_S
 
 
 def reading_bar(value: float) -> str:
@@ -58,6 +59,10 @@ class VentCheck:
     waited_why: str = ""
     # a read of the check did not return (the driver hangs): the check was left there
     hung: bool = False
+    # safety.vent_timeout_s [s] of a check that stopped with the monitor above the threshold,
+    # no longer falling by more than its noise (None otherwise): the setting a regulator that
+    # exhausts slowly needs, named in the message
+    timeout_s: float | None = None
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -75,8 +80,18 @@ class VentCheck:
         why = f"; {self.waited_why}" if self.waited_why else ""
         if self.problem:
             return f"the vent could not be verified ({self.problem}{why})"
+        notes = [self.waited_why] if self.waited_why else []
+        if self.timeout_s is not None:
+            notes.append(
+                f"it no longer fell by more than its noise ({self.noise_bar:.3f} bar) over "
+                f"{FALL_SPAN_S:g} s: a regulator that sticks, or one exhausting the muscle with a "
+                f"time constant of tens of seconds, which no reading tells apart; for such a "
+                f"regulator set safety.vent_timeout_s (now {self.timeout_s:g} s, at most "
+                f"{MAX_VENT_TIMEOUT_S:g} s) to the time it takes from the highest pressure to "
+                f"below {self.below_bar:g} bar")
         return (f"the {self.how} still reads {self.pressure_bar:.3f} bar {self.waited_s:.1f} s "
-                f"after the vent, above {self.below_bar:g} bar{f' ({why[2:]})' if why else ''}")
+                f"after the vent, above {self.below_bar:g} bar"
+                + (f" ({'; '.join(notes)})" if notes else ""))
 
 
 def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -> VentCheck:
@@ -403,4 +418,6 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                     f"the monitor read {reading_bar(pressure)} bar but did not settle within "
                     f"{waited:.1f} s, so a drift of its zero cannot be excluded"),
                     waited_why=waited_why)
-            return VentCheck(False, pressure, below, waited, "monitor", waited_why=waited_why)
+            return VentCheck(False, pressure, below, waited, "monitor", noise_bar=noise_bar,
+                             waited_why=waited_why,
+                             timeout_s=None if waited >= FALLING_MAX_S else timeout_s)

@@ -111,6 +111,43 @@ def test_a_regulator_still_falling_at_the_hard_maximum_asks_for_a_vent_by_hand(c
 
 
 
+def test_a_regulator_too_slow_to_show_its_fall_is_told_which_setting_covers_it(config,
+                                                                                monkeypatch):
+    # `mkm vent` on a muscle left at 0.2 bar, a regulator of time constant 20 s: still falling
+    # at safety.vent_timeout_s = 10 s (0.2 exp(-0.5) = 0.12 bar), read on until its fall over
+    # 2 s, 9.5 % of the reading, is within its noise (at 0.11 bar, 11.8 s), above 0.05 bar: VENT BY
+    # HAND, the message as a stuck regulator's, naming no setting. Now it names
+    # safety.vent_timeout_s and its value; set to 30 s, past 20 ln(0.2 / 0.05) = 27.7 s, it
+    # verifies the vent.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    class Held(SimBackend):
+        def start(self):
+            super().start()
+            self.bench.pressure_bar = 0.2  # left by a run: the vent exhausts it
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Held(c))
+    slow = config.replace(sim={"regulator_tau_s": 20.0})
+    with pytest.raises(BenchError) as caught:
+        procedures.vent(slow, notify=lambda m: None)
+    message = str(caught.value)
+    reading = re.search(r"the monitor still reads ([0-9.]+) bar ([0-9.]+) s after the vent, "
+                        r"above 0.05 bar", message)
+    assert reading, message
+    assert float(reading.group(1)) == pytest.approx(0.2 * math.exp(-float(reading.group(2)) / 20),
+                                                    abs=0.005)  # its noise and ADC steps
+    assert ("a regulator that sticks, or one exhausting the muscle with a time constant of tens "
+            "of seconds, which no reading tells apart; for such a regulator set "
+            "safety.vent_timeout_s (now 10 s, at most 30 s) to the time it takes from the "
+            "highest pressure to below 0.05 bar") in message
+    assert "VENT BY HAND" in message
+    out = procedures.vent(slow.replace(safety={"vent_timeout_s": 30.0}), notify=lambda m: None)
+    assert out["vented"] and out["pressure_bar"] < 0.05
+    # the exhaust takes 27.7 s, then a steady 0.5 s, within the monitor's noise
+    assert out["waited_s"] == pytest.approx(20 * math.log(0.2 / 0.05) + 0.5, abs=1.5)
+
+
 def test_the_cli_says_vent_by_hand_with_its_own_exit_status(tmp_path, mkm_cli):
     text = load_config().text.replace("monitor_noise_V = 0.001",
                                       "monitor_noise_V = 0.001\n[sim.faults]\n"
