@@ -44,8 +44,9 @@ from mkm.bench.sim import STANDARD_GRAVITY
 from mkm.bench.unvented import (
     STATE_START_S,
     StateFolderThread,
-    mark_unverified,
+    mark_vent,
     state_dir,
+    vent_marker,
     vent_unvented,
 )
 from mkm.bench.vent import VentCheck, reading_bar, verify_vent
@@ -148,15 +149,18 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     hung = False
     try:
         device.open()  # writes the vent command (a lost device is reset first)
+        if config.regulator.electronic:  # marked once the vent is out, never waited for: a
+            # process killed during the check leaves the bench marked
+            owner.post(lambda: mark_vent(key, "vent", "", owner.state))
         check = _vent_and_verify(device, config)
         hung = check is not None and check.hung
         unproven = []
-        if check is not None and not check.verified:  # marked before the bench is let go
-            bookkeeping.extend(_mark(owner, key, check))
         if answered:
             problems, dead = _mend_dead_runs(device, owner, notify)
             bookkeeping.extend(problems)
             unproven = [m for m in dead if m.unfollowed_bar is not None]
+        if check is not None:  # marked or not, before the bench is let go
+            bookkeeping.extend(_mark(owner, key, check))
     finally:
         try:
             _close(device, hung, bookkeeping)
@@ -181,17 +185,26 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
 
 
 def _mark(owner: BenchOwner, key: str, check: VentCheck) -> list[str]:
-    """Mark the bench as vented with its vent not verified
-    (:func:`mkm.bench.unvented.mark_unverified`), on the owner's state folder thread (bounded:
-    a state folder that hangs is said, not waited for); the problems met."""
-    what = check.describe()
-    done, out = owner.on_state_folder(lambda: mark_unverified(key, "vent", what, owner.state),
-                                      "the bench was marked with its vent not verified")
+    """After the check: the bench's marker removed (a verified vent) or saying what the check
+    found (:func:`mkm.bench.unvented.mark_vent`), on the owner's state folder thread (bounded:
+    a state folder that hangs is said, not waited for; one already said to hang is not said
+    again); the problems met."""
+    said = owner.hung
+    if check.verified:
+        done, out = owner.on_state_folder(
+            lambda: vent_marker(key, "vent", owner.state).unlink(missing_ok=True),
+            "the bench's marker was removed after the verified vent")
+    else:
+        what = check.describe()
+        done, out = owner.on_state_folder(lambda: mark_vent(key, "vent", what, owner.state),
+                                          "the bench was marked with its vent not verified")
     if not done:
-        return [str(out)]
+        return [] if said else [str(out)]
     if isinstance(out, OSError):
-        return [f"the bench state folder {owner.state} could not record the vent not verified "
-                f"({out.strerror or out}): the next command on this bench is not told"]
+        return [f"the bench state folder {owner.state} could not "
+                + ("remove the bench's marker" if check.verified else "record the vent not "
+                   "verified") + f" ({out.strerror or out}): the next command on this bench "
+                + ("names this vent as not verified" if check.verified else "is not told")]
     if isinstance(out, BaseException):
         raise out
     return []

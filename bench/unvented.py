@@ -17,7 +17,7 @@ device writes the vent command) and says which run it was, when it started, and 
 left commanded, then mends its folder and removes its marker within the same bound. One file
 per run, so concurrent runs never lock or overwrite each other's marker, nor does a later run of
 the same process. ``mkm vent``, which has no run folder, leaves a marker of its own when it
-cannot verify its vent (:func:`mark_unverified`).
+has not verified its vent yet (:func:`mark_vent`).
 """
 
 from __future__ import annotations
@@ -275,21 +275,26 @@ class BenchLease(StateFolderThread):
         self.path.unlink(missing_ok=True)
 
 
-def mark_unverified(bench_key: str, command: str, what: str, state: Path) -> Path:
-    """Mark ``bench_key`` in the bench state folder ``state`` as vented by ``command`` (a
-    command without a run folder: ``vent``) with its vent not verified (``what`` the check
-    found): once this process has ended, the next command on the bench vents first and says
-    so (:func:`find_unvented`). Returns the marker's path; raises the folder's ``OSError``."""
+def vent_marker(bench_key: str, command: str, state: Path) -> Path:
+    """Where ``command`` (a command without a run folder: ``vent``) of this process marks
+    ``bench_key`` in the bench state folder ``state`` (:func:`mark_vent`)."""
     me = ProcessIdentity.current()
+    return bench_folder(bench_key, state) / (f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}"
+                                             f"-{bench_folder_name(command)}.json")
+
+
+def mark_vent(bench_key: str, command: str, what: str, state: Path) -> None:
+    """Mark ``bench_key`` in the bench state folder ``state`` as vented by ``command`` (a
+    command without a run folder: ``vent``), its vent not verified: its check under way
+    (``what`` "") or what the check found. Once this process has ended, the next command on
+    the bench vents first and says so (:func:`find_unvented`); a verified vent removes the
+    marker (:func:`vent_marker`). Raises the folder's ``OSError``."""
     now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
-    marker = Marker(bench_key, "", now, asdict(me), last_command_utc=now,
+    marker = Marker(bench_key, "", now, asdict(ProcessIdentity.current()), last_command_utc=now,
                     vent_unverified=what, command=command)
-    folder = bench_folder(bench_key, state)
-    path = folder / (f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}-"
-                     f"{bench_folder_name(command)}.json")
-    folder.mkdir(parents=True, exist_ok=True)
+    path = vent_marker(bench_key, command, state)
+    path.parent.mkdir(parents=True, exist_ok=True)
     write_json_atomic(path, marker.record())
-    return path
 
 
 def find_unvented(bench_key: str, state: Path | None = None) -> list[tuple[Path, Marker]]:

@@ -1117,7 +1117,8 @@ def test_a_read_that_hangs_in_mkm_vents_check_ends_unverified_and_marks_the_benc
     assert data["command"] == "vent" and data["run_path"] == ""
     assert "did not return within" in data["vent_unverified"]
     data["process"]["started_unix_s"] -= 100.0  # as if its process had ended
-    path.write_text(json.dumps(data))
+    path.unlink()  # under another name than this process's next `mkm vent` marks
+    path.with_name("dead-vent.json").write_text(json.dumps(data))
     notes = []
     monkeypatch.setattr(procedures, "make_backend", make_backend)  # a driver that answers
     assert procedures.vent(config, notify=notes.append)["vented"]
@@ -1126,3 +1127,39 @@ def test_a_read_that_hangs_in_mkm_vents_check_ends_unverified_and_marks_the_benc
                            f"{data['process']['pid']}) vented (0 bar commanded at ")
     assert "during the vent check: the driver hangs" in said and said.endswith("vented now")
     assert not list(bench_folder("sim-Dev1").glob("*.json"))  # removed once vented
+
+
+def test_mkm_vent_killed_during_its_check_leaves_the_bench_marked(config, monkeypatch):
+    # `mkm vent` killed (kill -9, the Task Manager) while its check reads the monitor left no
+    # trace: the next command said nothing of a vent never verified. Now the bench is marked
+    # once the vent is out, the marker removed once the vent is verified; the marker as the
+    # kill would leave it is named by the next command.
+    import mkm.bench.procedures as procedures
+
+    seen, backends = {}, []
+
+    class Watched(SimBackend):
+        def read(self, n_samples, timeout_s):
+            if "marker" not in seen:  # the check's first read: the marker is posted before it
+                deadline = time.monotonic() + 60  # the test's net
+                while time.monotonic() < deadline and "marker" not in seen:
+                    for path in bench_folder("sim-Dev1").glob("*.json"):
+                        seen["marker"] = (path, path.read_text())
+            return super().read(n_samples, timeout_s)
+
+    make_backend = procedures.make_backend
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(Watched(c)) or backends[-1])
+    assert procedures.vent(config, notify=lambda m: None)["vented"]
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # verified: removed
+    path, text = seen["marker"]  # what a kill during the check leaves
+    data = json.loads(text)
+    assert data["command"] == "vent" and data["vent_unverified"] == ""
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had been killed
+    path.with_name("dead-vent.json").write_text(json.dumps(data))  # not this process's name
+    notes = []
+    monkeypatch.setattr(procedures, "make_backend", make_backend)
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    assert notes == [f"`mkm vent` (started {data['started_utc']}, pid {data['process']['pid']}) "
+                     f"ended after its vent (0 bar commanded at {data['last_command_utc']}) "
+                     "before the vent was verified: vented now"]
