@@ -47,6 +47,7 @@ vent could not be verified (vent by hand; it wins over every other), 1 otherwise
 
 from __future__ import annotations
 
+import dataclasses
 import queue
 import sys
 import threading
@@ -787,6 +788,8 @@ class BenchRun:
                 return problems
             return [*problems[:vented_at], "vented", *problems[vented_at:]]
 
+        # the vent command reached the device (a regulator that never got it is no slow one)
+        written = failure is None or (acq is not None and acq.written)
         if failure is not None:  # the device may be gone; closing must still happen
             exc = failure
             if acq is not None and acq.written:  # written; only its record failed
@@ -794,7 +797,7 @@ class BenchRun:
             elif isinstance(exc, DaqDisconnected) and revive:
                 back, said = self._revive(f"vent command failed ({type(exc).__name__}: {exc})")
                 problems.append(said)
-                revive, gone = False, not back
+                revive, gone, written = False, not back, back
             else:
                 problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
         if acq is not None and self._started and not gone:
@@ -809,6 +812,8 @@ class BenchRun:
                                       f"({self.vent_check.problem})")
             problems.append(said)
             self.vent_check = self._verify(not back)
+        if not written:  # no setting of the check helps a vent never written
+            self.vent_check = dataclasses.replace(self.vent_check, timeout_s=None)
         if self._watchdog is not None:  # the shutdown's reads are done
             self._watchdog.stop()
             if acq.hung_after_vent:  # and came back
