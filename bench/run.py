@@ -24,8 +24,8 @@ Safety, in every exit path:
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - a read of the device that hangs past its timeout with a pressure commanded is vented by a
-  watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a read of the
-  shutdown that hangs after its vent;
+  watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a command write
+  that hangs, and a read of the shutdown that hangs after its vent;
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` (read on
   while still falling, at most :data:`mkm.bench.vent.FALLING_MAX_S`) and stay there, read from
@@ -262,7 +262,9 @@ class _ReadWatchdog:
     with it, while the regulator holds its pressure. A thread of its own looks at the loop's
     read (:attr:`mkm.bench.worker.Acquisition.reading_since`) every :data:`WATCH_EVERY_S`:
     past ``daq.read_timeout_s`` + the block's time + :data:`READ_HANG_MARGIN_S` with a pressure
-    commanded it writes the vent (acts first), then keeps the books: the command's row, the
+    commanded it writes the vent (acts first), then keeps the books (so it does for the loop's
+    command write, :attr:`mkm.bench.worker.Acquisition.writing`, past the AO write's timeout
+    :data:`WATCHDOG_WRITE_S` and the margin): the command's row, the
     bench marker, run.json ``failed`` with why and the vent not verified (a process that never
     comes back is so recorded), a notice; the loop stops the run once the read returns. Once
     the shutdown has written its vent (:meth:`vented`) it vents no more and watches the reads
@@ -295,6 +297,8 @@ class _ReadWatchdog:
         run = self.run
         acq = run.acquisition
         while not self._stop.wait(WATCH_EVERY_S):
+            if self._write_hung(acq):
+                return
             since, held_bar = acq.reading_since, acq.command_bar
             if since is None or not (held_bar > 0 or self._vented.is_set()):
                 continue
@@ -314,6 +318,29 @@ class _ReadWatchdog:
             if not self._vented.is_set():  # else the shutdown, under way, keeps the books
                 self._books(ok, t_s)
             return
+
+    def _write_hung(self, acq: Acquisition) -> bool:
+        """Whether the loop's command write hangs past :data:`WATCHDOG_WRITE_S` (the AO write's
+        own timeout) and :data:`READ_HANG_MARGIN_S` with a pressure held or asked for: then
+        vented, and the books kept, as for a read (the shutdown's vent write included, until
+        it is out)."""
+        writing = acq.writing
+        if writing is None or self._vented.is_set():
+            return False
+        since, asked_bar = writing
+        hung_s, held_bar = time.monotonic() - since, acq.command_bar
+        if hung_s < WATCHDOG_WRITE_S + READ_HANG_MARGIN_S or not max(held_bar, asked_bar) > 0:
+            return False
+        t_s = acq.next_index / acq.rate_hz
+        # the loop stops at its next block (and vents a pressure that goes out late) from now
+        acq.hung = (f"write interlock: the command of {asked_bar:g} bar did not return within "
+                    f"{hung_s:.1f} s (its timeout {WATCHDOG_WRITE_S:g} s) with {held_bar:g} bar "
+                    f"commanded after {t_s:g} s: the driver hangs")
+        ok, vent = self._vent()  # acts first
+        acq.hung_vent = vent
+        if not self._vented.is_set():
+            self._books(ok, t_s)
+        return True
 
     def _vent(self) -> tuple[bool, str]:
         """Write the vent on a thread of its own, waited for :data:`WATCHDOG_WRITE_S`: a driver
