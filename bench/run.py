@@ -71,6 +71,7 @@ from mkm.bench.vent import (
     VentCheck,
     VentedZero,
     below_command,
+    monitor_unmoved,
     still_pulling,
     verify_vent,
     without_fall,
@@ -764,6 +765,7 @@ class BenchRun:
                 acq.forces_unchanged() else None
             fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar),
                                  stuck)
+            fell = monitor_unmoved(fell, before[0], *forces, noise_N)
         return fell
 
     def _write_vent(self, acq: Acquisition | None) -> BaseException | None:

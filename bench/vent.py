@@ -266,6 +266,29 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
         "regulator and the load cell"))
 
 
+def monitor_unmoved(check: VentCheck, before_bar: float, before_N: float, after_N: float,
+                    noise_N: float) -> VentCheck:
+    """``check``, not verified with the monitor still above the threshold, weighed by the load
+    cell: the monitor read ``before_bar`` before the vent and no less after it (within its
+    noise), while the force fell from ``before_N`` to ``after_N``, below
+    :data:`FORCE_KEPT_FRACTION` of it (and ``before_N`` above the cell's noise ``noise_N``).
+    The same reading with the muscle's force gone is no pressure held: the monitor no longer
+    reads the pressure (its output, wire or input stuck), and neither a regulator that holds
+    nor a slow one is the cause. Still not verified: nothing the monitor reads shows the vent.
+    """
+    noise_bar = check.noise_bar or 0.0
+    if check.verified or check.problem or check.how != "monitor" or not before_N > noise_N \
+            or not check.pressure_bar >= before_bar - noise_bar \
+            or not after_N < FORCE_KEPT_FRACTION * before_N:
+        return check
+    return dataclasses.replace(check, timeout_s=None, problem=(
+        f"the monitor still reads {reading_bar(check.pressure_bar)} bar {check.waited_s:.1f} s "
+        f"after the vent, as it read {reading_bar(before_bar)} bar before it, but the load "
+        f"cell reads {after_N:.1f} N against {before_N:.1f} N before the vent: the muscle let "
+        "go while the monitor did not move, so the monitor no longer reads the pressure (its "
+        "output, wire or input stuck); check the monitor"))
+
+
 def verify_vent(backend, config, operator=None, started: bool = True,
                 deadline=lambda: None, record=lambda block: None,
                 vented_zero: VentedZero | None = None) -> VentCheck:

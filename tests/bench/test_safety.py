@@ -506,6 +506,37 @@ def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(c
     assert not run.meta.vent_check["verified"]
 
 
+def test_a_monitor_frozen_above_the_threshold_is_named_by_the_load_cell(config, tmp_path):
+    # The monitor's output freezes at its reading from 20 s (on the last step, 0.5 bar). The
+    # vent empties the muscle, its force falls from 194 N to nothing, and the check, the
+    # monitor still at 0.5 bar, blamed the regulator: "a regulator that sticks, or one
+    # exhausting ... set safety.vent_timeout_s". The same reading with the force gone is no
+    # pressure held: the monitor is named, still VENT BY HAND, and no setting is offered.
+    backend = SimBackend(config)
+    bench, read = backend.bench, backend.read
+
+    def frozen_from_20_s(n, timeout):
+        if backend._index >= 200 and bench.monitor_stuck_bar is None:
+            bench.monitor_stuck_bar = bench.sensor_bar(bench.pressure_bar)
+        return read(n, timeout)
+
+    backend.read = frozen_from_20_s
+    result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    said = re.search(r"the monitor still reads ([0-9.]+) bar [0-9.]+ s after the vent, as it "
+                     r"read ([0-9.]+) bar before it, but the load cell reads (-?[0-9.]+) N "
+                     r"against ([0-9.]+) N before the vent: the muscle let go while the monitor "
+                     r"did not move, so the monitor no longer reads the pressure \(its output, "
+                     r"wire or input stuck\); check the monitor", result.reason)
+    assert said, result.reason
+    after_bar, before_bar, after_N, before_N = map(float, said.groups())
+    assert after_bar == pytest.approx(before_bar, abs=0.01)
+    assert before_bar == pytest.approx(0.5, abs=0.02)  # the last step's, when it froze
+    assert abs(after_N) < 1.0 < 150.0 < before_N  # slack after; 0.5 bar's force before
+    assert "safety.vent_timeout_s" not in result.reason
+    assert bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
+
+
 class _Supply(SimBackend):
     """A regulator whose pressure cannot pass ``ceiling_bar`` (its supply) and, while
     pressurised, cannot fall below ``floor_bar`` (an exhaust that only opens fully at 0)."""
