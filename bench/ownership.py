@@ -105,6 +105,7 @@ class BenchOwner:
         (:class:`StateFolderBroken` after it: nothing was touched)."""
         done, taken = self._state.call(self._take, STATE_START_S)
         if not done:
+            self._hung = True
             self._state.post(self._let_go)  # once it answers: the lock taken meanwhile goes
             self._state.end()
             raise StateFolderBroken(f"the bench state folder {self.lock_path.parent} did not "
@@ -163,13 +164,24 @@ class BenchOwner:
             raise found
         return found
 
+    @property
+    def hung(self) -> bool:
+        """The state folder did not answer in time, and was said to hang."""
+        return self._hung
+
+    def post(self, update) -> None:
+        """``update()`` on the state folder's thread, after those posted before it; never
+        waits (its failure is the next wait's to find: :meth:`on_state_folder` runs after it)."""
+        self._state.post(update)
+
     def on_state_folder(self, function, what: str) -> tuple[bool, object]:
         """``function()`` (doing ``what``, said in the past tense) on the state folder's
         thread, after the updates posted before it, waited for at most :data:`STATE_START_S`
         (not at all when the folder already hangs): ``(True, what it returned or raised)``, or
         ``(False, what happened, in words)`` when it did not come back in time (it still runs
         once the folder answers; the bench is let go after it, not waited for again)."""
-        hung = self._state.lagging()  # an earlier update never came back
+        # an earlier update never came back (one merely posted, :meth:`post`, is waited for)
+        hung = self._hung
         done, out = self._state.call(function, 0.0 if hung else STATE_START_S)
         if done:
             return True, out

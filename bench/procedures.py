@@ -9,6 +9,9 @@ asks that run to stop (it vents itself) and then vents and verifies.
 
 from __future__ import annotations
 
+import math
+import threading
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 
@@ -20,7 +23,15 @@ from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
-from mkm.bench.run import StderrNotice, make_backend, make_operator, with_backend
+from mkm.bench.run import (
+    READ_HANG_MARGIN_S,
+    WATCH_EVERY_S,
+    WATCHDOG_WRITE_S,
+    StderrNotice,
+    make_backend,
+    make_operator,
+    with_backend,
+)
 from mkm.bench.sequence import (
     check_vented_monitor,
     monitor_zero_warning,
@@ -30,8 +41,15 @@ from mkm.bench.sequence import (
     vented_monitor,
 )
 from mkm.bench.sim import STANDARD_GRAVITY
-from mkm.bench.unvented import STATE_START_S, StateFolderThread, state_dir, vent_unvented
-from mkm.bench.vent import reading_bar, verify_vent
+from mkm.bench.unvented import (
+    STATE_START_S,
+    StateFolderThread,
+    mark_vent,
+    state_dir,
+    vent_marker,
+    vent_unvented,
+)
+from mkm.bench.vent import VentCheck, reading_bar, verify_vent
 
 MAX_SECONDS = 600.0  # a tare or a calibration mass is averaged for at most this long
 STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
@@ -128,17 +146,24 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             owner.__enter__()
     except StateFolderBroken as exc:  # vent without the lock: venting twice is harmless
         bookkeeping.append(str(exc))
+    hung = False
     try:
         device.open()  # writes the vent command (a lost device is reset first)
+        if config.regulator.electronic:  # marked once the vent is out, never waited for: a
+            # process killed during the check leaves the bench marked
+            owner.post(lambda: mark_vent(key, "vent", "", owner.state))
         check = _vent_and_verify(device, config)
+        hung = check is not None and check.hung
         unproven = []
         if answered:
             problems, dead = _mend_dead_runs(device, owner, notify)
             bookkeeping.extend(problems)
             unproven = [m for m in dead if m.unfollowed_bar is not None]
+        if check is not None:  # marked or not, before the bench is let go
+            bookkeeping.extend(_mark(owner, key, check))
     finally:
         try:
-            device.close()
+            _close(device, hung, bookkeeping)
         finally:
             owner.__exit__()
             if owner.problem:
@@ -157,6 +182,54 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             "muscle and the monitor" + "".join(f"; {p}" for p in bookkeeping))
     return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
             "manual": False, "stopped": stopped, "bookkeeping": bookkeeping}
+
+
+def _mark(owner: BenchOwner, key: str, check: VentCheck) -> list[str]:
+    """After the check: the bench's marker removed (a verified vent) or saying what the check
+    found (:func:`mkm.bench.unvented.mark_vent`), on the owner's state folder thread (bounded:
+    a state folder that hangs is said, not waited for; one already said to hang is not said
+    again); the problems met."""
+    said = owner.hung
+    if check.verified:
+        done, out = owner.on_state_folder(
+            lambda: vent_marker(key, "vent", owner.state).unlink(missing_ok=True),
+            "the bench's marker was removed after the verified vent")
+    else:
+        what = check.describe()
+        done, out = owner.on_state_folder(lambda: mark_vent(key, "vent", what, owner.state),
+                                          "the bench was marked with its vent not verified")
+    if not done:
+        return [] if said else [str(out)]
+    if isinstance(out, OSError):
+        return [f"the bench state folder {owner.state} could not "
+                + ("remove the bench's marker" if check.verified else "record the vent not "
+                   "verified") + f" ({out.strerror or out}): the next command on this bench "
+                + ("names this vent as not verified" if check.verified else "is not told")]
+    if isinstance(out, BaseException):
+        raise out
+    return []
+
+
+def _close(device: Backend, hung: bool, bookkeeping: list[str]) -> None:
+    """Close ``device`` (it writes the vent again); after a read that hung, on a thread of its
+    own waited for :data:`mkm.bench.run.WATCHDOG_WRITE_S`: the driver may hang for it too."""
+    if not hung:
+        device.close()
+        return
+    done = threading.Event()
+
+    def close() -> None:
+        try:
+            device.close()
+        except BaseException:  # the hung driver's; the vent went out at open
+            pass
+        finally:
+            done.set()
+
+    threading.Thread(target=close, name="mkm-vent-close", daemon=True).start()
+    if not done.wait(WATCHDOG_WRITE_S):
+        bookkeeping.append(f"the device did not close within {WATCHDOG_WRITE_S:g} s (the "
+                           "driver hangs): it is let go as this process ends")
 
 
 def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
@@ -202,11 +275,63 @@ def _vent_and_verify(device: Backend, config: BenchConfig):
         return None
     if not started:
         device.start()
-    check = verify_vent(device, config)
+    check = _watched_check(device, config)
     if check.device_lost and revive is not None:
         revive()
-        check = verify_vent(device, config)
+        check = _watched_check(device, config)
     return check
+
+
+class _Timed:
+    """``backend`` whose read under way is known: :attr:`reading` holds when it began and
+    how long it may take (its timeout, its block's time and
+    :data:`mkm.bench.run.READ_HANG_MARGIN_S`), None between reads."""
+
+    def __init__(self, backend: Backend, rate_hz: float):
+        self._backend, self._rate_hz = backend, rate_hz
+        self.reading: tuple[float, float, float] | None = None  # began, limit [s], timeout [s]
+
+    def read(self, n_samples: int, timeout_s: float):
+        self.reading = (time.monotonic(),
+                        timeout_s + n_samples / self._rate_hz + READ_HANG_MARGIN_S, timeout_s)
+        try:
+            return self._backend.read(n_samples, timeout_s)
+        finally:
+            self.reading = None
+
+    def __getattr__(self, name):
+        return getattr(self._backend, name)
+
+
+def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
+    """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads watched as a run's
+    watchdog watches them: a read that hangs (a driver that does not keep its timeout) ends the
+    check unverified, the read left behind (:attr:`mkm.bench.vent.VentCheck.hung`)."""
+    timed, out = _Timed(device, config.daq.sample_rate_hz), []
+
+    def check() -> None:
+        try:
+            out.append(verify_vent(timed, config))
+        except BaseException as exc:  # raised by the caller
+            out.append(exc)
+
+    begun = time.monotonic()
+    thread = threading.Thread(target=check, name="mkm-vent-check", daemon=True)
+    thread.start()
+    while thread.is_alive():
+        thread.join(WATCH_EVERY_S)
+        reading = timed.reading
+        if thread.is_alive() and reading is not None:
+            hung_s = time.monotonic() - reading[0]
+            if hung_s > reading[1]:
+                return VentCheck(
+                    False, math.nan, config.safety.vent_below_bar, time.monotonic() - begun,
+                    "monitor", f"a read of the device did not return within {hung_s:.1f} s (its "
+                    f"timeout {reading[2]:g} s) during the vent check: the driver hangs; the vent "
+                    "was commanded, its check cannot read the monitor", hung=True)
+    if isinstance(out[0], BaseException):
+        raise out[0]
+    return out[0]
 
 
 def _mend_dead_runs(device: Backend, owner: BenchOwner, notify

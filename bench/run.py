@@ -24,8 +24,8 @@ Safety, in every exit path:
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - a read of the device that hangs past its timeout with a pressure commanded is vented by a
-  watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a read of the
-  shutdown that hangs after its vent;
+  watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a command write
+  that hangs, and a read of the shutdown that hangs after its vent;
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` (read on
   while still falling, at most :data:`mkm.bench.vent.FALLING_MAX_S`) and stay there, read from
@@ -47,6 +47,7 @@ vent could not be verified (vent by hand; it wins over every other), 1 otherwise
 
 from __future__ import annotations
 
+import dataclasses
 import queue
 import sys
 import threading
@@ -70,6 +71,7 @@ from mkm.bench.vent import (
     VentCheck,
     VentedZero,
     below_command,
+    monitor_unmoved,
     still_pulling,
     verify_vent,
     without_fall,
@@ -261,7 +263,9 @@ class _ReadWatchdog:
     with it, while the regulator holds its pressure. A thread of its own looks at the loop's
     read (:attr:`mkm.bench.worker.Acquisition.reading_since`) every :data:`WATCH_EVERY_S`:
     past ``daq.read_timeout_s`` + the block's time + :data:`READ_HANG_MARGIN_S` with a pressure
-    commanded it writes the vent (acts first), then keeps the books: the command's row, the
+    commanded it writes the vent (acts first), then keeps the books (so it does for the loop's
+    command write, :attr:`mkm.bench.worker.Acquisition.writing`, past the AO write's timeout
+    :data:`WATCHDOG_WRITE_S` and the margin): the command's row, the
     bench marker, run.json ``failed`` with why and the vent not verified (a process that never
     comes back is so recorded), a notice; the loop stops the run once the read returns. Once
     the shutdown has written its vent (:meth:`vented`) it vents no more and watches the reads
@@ -294,6 +298,8 @@ class _ReadWatchdog:
         run = self.run
         acq = run.acquisition
         while not self._stop.wait(WATCH_EVERY_S):
+            if self._write_hung(acq):
+                return
             since, held_bar = acq.reading_since, acq.command_bar
             if since is None or not (held_bar > 0 or self._vented.is_set()):
                 continue
@@ -313,6 +319,29 @@ class _ReadWatchdog:
             if not self._vented.is_set():  # else the shutdown, under way, keeps the books
                 self._books(ok, t_s)
             return
+
+    def _write_hung(self, acq: Acquisition) -> bool:
+        """Whether the loop's command write hangs past :data:`WATCHDOG_WRITE_S` (the AO write's
+        own timeout) and :data:`READ_HANG_MARGIN_S` with a pressure held or asked for: then
+        vented, and the books kept, as for a read (the shutdown's vent write included, until
+        it is out)."""
+        writing = acq.writing
+        if writing is None or self._vented.is_set():
+            return False
+        since, asked_bar = writing
+        hung_s, held_bar = time.monotonic() - since, acq.command_bar
+        if hung_s < WATCHDOG_WRITE_S + READ_HANG_MARGIN_S or not max(held_bar, asked_bar) > 0:
+            return False
+        t_s = acq.next_index / acq.rate_hz
+        # the loop stops at its next block (and vents a pressure that goes out late) from now
+        acq.hung = (f"write interlock: the command of {asked_bar:g} bar did not return within "
+                    f"{hung_s:.1f} s (its timeout {WATCHDOG_WRITE_S:g} s) with {held_bar:g} bar "
+                    f"commanded after {t_s:g} s: the driver hangs")
+        ok, vent = self._vent()  # acts first
+        acq.hung_vent = vent
+        if not self._vented.is_set():
+            self._books(ok, t_s)
+        return True
 
     def _vent(self) -> tuple[bool, str]:
         """Write the vent on a thread of its own, waited for :data:`WATCHDOG_WRITE_S`: a driver
@@ -728,8 +757,15 @@ class BenchRun:
             cell = self.config.loadcell
             step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
                 * cell.sensitivity_N_per_V
-            noise_N = ZERO_NOISE_SIGMAS * float(tare["std_N"]) + 2 * step_N
-            fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar))
+            tare_std_N = float(tare["std_N"])
+            noise_N = ZERO_NOISE_SIGMAS * tare_std_N + 2 * step_N
+            # a cell that strayed more than an ADC step at the tare and reads one value around
+            # the vent is stuck: said as such, the vent still not verified by it
+            stuck = (before[0], tare_std_N) if tare_std_N > step_N and \
+                acq.forces_unchanged() else None
+            fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar),
+                                 stuck)
+            fell = monitor_unmoved(fell, before[0], *forces, noise_N)
         return fell
 
     def _write_vent(self, acq: Acquisition | None) -> BaseException | None:
@@ -781,6 +817,8 @@ class BenchRun:
                 return problems
             return [*problems[:vented_at], "vented", *problems[vented_at:]]
 
+        # the vent command reached the device (a regulator that never got it is no slow one)
+        written = failure is None or (acq is not None and acq.written)
         if failure is not None:  # the device may be gone; closing must still happen
             exc = failure
             if acq is not None and acq.written:  # written; only its record failed
@@ -788,7 +826,7 @@ class BenchRun:
             elif isinstance(exc, DaqDisconnected) and revive:
                 back, said = self._revive(f"vent command failed ({type(exc).__name__}: {exc})")
                 problems.append(said)
-                revive, gone = False, not back
+                revive, gone, written = False, not back, back
             else:
                 problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
         if acq is not None and self._started and not gone:
@@ -803,6 +841,8 @@ class BenchRun:
                                       f"({self.vent_check.problem})")
             problems.append(said)
             self.vent_check = self._verify(not back)
+        if not written:  # no setting of the check helps a vent never written
+            self.vent_check = dataclasses.replace(self.vent_check, timeout_s=None)
         if self._watchdog is not None:  # the shutdown's reads are done
             self._watchdog.stop()
             if acq.hung_after_vent:  # and came back

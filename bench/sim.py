@@ -39,8 +39,9 @@ return at once, a one-hour run takes seconds) or ``real`` (reads wait for the sa
 Faults from ``[sim.faults]`` fire at sample time: disconnect, read timeouts, a reader stall (the
 clock runs on and samples pile up in the buffer: a stall shorter than the buffer delays the
 reading and every later command, a longer one overflows it and loses the samples), an AO write
-failure, a load-cell input reading NaN, a regulator that stops following, an overshoot, a
-monitor input that reads 0 V (``monitor_lost_at_s``: regulator unpowered, wire off).
+failure, a load-cell input reading NaN or holding one value (``loadcell_stuck_at_s``: its cable
+or amplifier failed), a regulator that stops following, an overshoot, a monitor input that reads
+0 V (``monitor_lost_at_s``: regulator unpowered, wire off).
 :func:`describe_physics` says what the simulated muscle is (recorded in run.json).
 """
 
@@ -210,6 +211,8 @@ class SimMuscleBench:
         self.force_N = 0.0  # true force on the cell at the last sample
         self.regulator_stuck = False  # fault: the regulator no longer follows its command
         self.loadcell_broken = False  # fault: the load-cell input reads NaN
+        self.loadcell_stuck = False  # fault: the load-cell input holds one value
+        self._stuck_cell_V: float | None = None  # the value it holds
         self.monitor_lost = False  # fault: the monitor input reads 0 V (unpowered, wire off)
 
     def set_command_volts(self, volts: float) -> None:
@@ -273,6 +276,10 @@ class SimMuscleBench:
             monitor_V = 0.0
         if self.loadcell_broken:
             return math.nan, quantize_volts(monitor_V)
+        if self.loadcell_stuck:
+            if self._stuck_cell_V is None:
+                self._stuck_cell_V = quantize_volts(cell_V)
+            return self._stuck_cell_V, quantize_volts(monitor_V)
         return quantize_volts(cell_V), quantize_volts(monitor_V)
 
 
@@ -347,6 +354,8 @@ class SimBackend:
             t_s = self._head / self.rate_hz
             if f.nan_force_at_s is not None and t_s >= f.nan_force_at_s:
                 self.bench.loadcell_broken = True
+            if f.loadcell_stuck_at_s is not None and t_s >= f.loadcell_stuck_at_s:
+                self.bench.loadcell_stuck = True
             if f.regulator_stuck_at_s is not None and t_s >= f.regulator_stuck_at_s:
                 self.bench.regulator_stuck = True
             if f.monitor_lost_at_s is not None and t_s >= f.monitor_lost_at_s:

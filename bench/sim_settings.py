@@ -32,6 +32,9 @@ class Faults:
     stall_s: float = 0.0
     ao_fail_at_s: float | None = None
     nan_force_at_s: float | None = None  # the load-cell input reads NaN from then on
+    # the load-cell input holds the value it read then, whatever the force (a cell whose cable
+    # or amplifier failed so), from then on
+    loadcell_stuck_at_s: float | None = None
     regulator_stuck_at_s: float | None = None  # the regulator stops following the command
     overshoot_bar: float = 0.0  # the regulator delivers this much above every command
     monitor_lost_at_s: float | None = None  # the monitor input reads 0 V from then on

@@ -16,7 +16,8 @@ markers of that bench whose process is dead (on the bench owner's thread, at mos
 device writes the vent command) and says which run it was, when it started, and what pressure it
 left commanded, then mends its folder and removes its marker within the same bound. One file
 per run, so concurrent runs never lock or overwrite each other's marker, nor does a later run of
-the same process.
+the same process. ``mkm vent``, which has no run folder, leaves a marker of its own when it
+has not verified its vent yet (:func:`mark_vent`).
 """
 
 from __future__ import annotations
@@ -72,10 +73,15 @@ class Marker:
     # the run's outcome (status, reason, ended_utc, manual_vent_required) when its run.json
     # refused it (a full disk, no permission): the finder writes it there
     outcome: dict | None = None
+    # the command that left it without a run folder (``vent``: its check not verified);
+    # ``run_path`` is then ""
+    command: str = ""
     mended: str = ""  # what the finder did to the run folder (not written in the marker)
 
     def describe(self) -> str:
-        run = f"run {self.run_path} (started {self.started_utc}, pid {self.process['pid']})"
+        run = (f"`mkm {self.command}`" if self.command and not self.run_path
+               else f"run {self.run_path}") + (f" (started {self.started_utc}, "
+                                              f"pid {self.process['pid']})")
         at = self.last_command_utc or self.started_utc
         if self.outcome:
             return (f"{run} ended {self.outcome['status']} at {self.outcome['ended_utc']}, but "
@@ -269,6 +275,28 @@ class BenchLease(StateFolderThread):
         self.path.unlink(missing_ok=True)
 
 
+def vent_marker(bench_key: str, command: str, state: Path) -> Path:
+    """Where ``command`` (a command without a run folder: ``vent``) of this process marks
+    ``bench_key`` in the bench state folder ``state`` (:func:`mark_vent`)."""
+    me = ProcessIdentity.current()
+    return bench_folder(bench_key, state) / (f"{me.pid}-{int((me.started_unix_s or 0.0) * 1000)}"
+                                             f"-{bench_folder_name(command)}.json")
+
+
+def mark_vent(bench_key: str, command: str, what: str, state: Path) -> None:
+    """Mark ``bench_key`` in the bench state folder ``state`` as vented by ``command`` (a
+    command without a run folder: ``vent``), its vent not verified: its check under way
+    (``what`` "") or what the check found. Once this process has ended, the next command on
+    the bench vents first and says so (:func:`find_unvented`); a verified vent removes the
+    marker (:func:`vent_marker`). Raises the folder's ``OSError``."""
+    now = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
+    marker = Marker(bench_key, "", now, asdict(ProcessIdentity.current()), last_command_utc=now,
+                    vent_unverified=what, command=command)
+    path = vent_marker(bench_key, command, state)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_json_atomic(path, marker.record())
+
+
 def find_unvented(bench_key: str, state: Path | None = None) -> list[tuple[Path, Marker]]:
     """Markers of ``bench_key`` left by processes that are gone, in the bench state folder
     ``state`` (None: :func:`state_dir` now)."""
@@ -348,6 +376,8 @@ def mend_run(marker: Marker) -> str:
     from mkm.bench.storage import load_run, read_meta, release_reserve
     from mkm.core.records import provenance
 
+    if not marker.run_path:  # left by a command without a run folder
+        return ""
     path = Path(marker.run_path)
     if not path.is_absolute():
         return f"its folder {path} is not an absolute path: not mended"

@@ -28,6 +28,7 @@ from dataclasses import asdict, dataclass
 
 from mkm.bench import backends
 from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected, ReadTimeout
+from mkm.bench.config import MAX_VENT_TIMEOUT_S
 
 
 def reading_bar(value: float) -> str:
@@ -56,6 +57,12 @@ class VentCheck:
     noise_bar: float | None = None
     # why the check read on past safety.vent_timeout_s ("" when it did not)
     waited_why: str = ""
+    # a read of the check did not return (the driver hangs): the check was left there
+    hung: bool = False
+    # safety.vent_timeout_s [s] of a check that stopped with the monitor above the threshold,
+    # no longer falling by more than its noise (None otherwise): the setting a regulator that
+    # exhausts slowly needs, named in the message
+    timeout_s: float | None = None
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -73,8 +80,18 @@ class VentCheck:
         why = f"; {self.waited_why}" if self.waited_why else ""
         if self.problem:
             return f"the vent could not be verified ({self.problem}{why})"
+        notes = [self.waited_why] if self.waited_why else []
+        if self.timeout_s is not None:
+            notes.append(
+                f"it no longer fell by more than its noise ({self.noise_bar:.3f} bar) over "
+                f"{FALL_SPAN_S:g} s: a regulator that sticks, or one exhausting the muscle with a "
+                f"time constant of tens of seconds, which no reading tells apart; for such a "
+                f"regulator set safety.vent_timeout_s (now {self.timeout_s:g} s, at most "
+                f"{MAX_VENT_TIMEOUT_S:g} s) to the time it takes from the highest pressure to "
+                f"below {self.below_bar:g} bar")
         return (f"the {self.how} still reads {self.pressure_bar:.3f} bar {self.waited_s:.1f} s "
-                f"after the vent, above {self.below_bar:g} bar{f' ({why[2:]})' if why else ''}")
+                f"after the vent, above {self.below_bar:g} bar"
+                + (f" ({'; '.join(notes)})" if notes else ""))
 
 
 def below_command(check: VentCheck, measured_bar: float, commanded_bar: float) -> VentCheck:
@@ -210,7 +227,8 @@ FORCE_KEPT_FRACTION = 0.5
 
 
 def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: float,
-                  commanded_bar: float) -> VentCheck:
+                  commanded_bar: float, stuck_cell: tuple[float, float] | None = None
+                  ) -> VentCheck:
     """``check`` weighed by the load cell: the muscle's force (from the tare) ``before_N``
     before the vent and ``after_N`` over the check's settled window.
 
@@ -219,12 +237,26 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
     :data:`FORCE_KEPT_FRACTION` of its force before the vent, above the load cell's noise
     ``noise_N``, is still pressurised whatever the monitor reads: a regulator whose monitor
     reports its command (or is stuck) and whose exhaust did not open. A force before the vent
-    within the noise tells nothing.
+    within the noise tells nothing. ``stuck_cell``, the monitor's reading [bar] before the vent
+    and the load cell's spread [N] at the tare, when every force of both windows was one
+    reading although the cell strayed more than an ADC step at the tare: no muscle, slack or
+    pulling, holds a live cell's reading to one ADC code, so the cell is stuck or disconnected;
+    the vent is still not verified (the force tells nothing), and the check says so.
     """
     if not check.verified or check.how != "monitor" or not before_N > noise_N:
         return check
     if not after_N > max(noise_N, FORCE_KEPT_FRACTION * before_N):
         return check
+    if stuck_cell is not None:
+        before_bar, tare_std_N = stuck_cell
+        return check.unproven(commanded_bar, (
+            f"the monitor read {reading_bar(before_bar)} bar before the vent and "
+            f"{reading_bar(check.pressure_bar)} bar after it, but the load cell read "
+            f"{after_N:.1f} N throughout, every reading the same where it strayed "
+            f"{tare_std_N:.2f} N at the tare: a load cell that does not change while the "
+            "pressure falls is stuck or disconnected, so it tells neither a slack muscle nor "
+            "one that still pulls; check the load cell's cable, amplifier and supply, and "
+            "that the muscle hangs slack"))
     return check.unproven(commanded_bar, (
         f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell "
         f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "
@@ -232,6 +264,29 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
         "monitor's reading proves nothing: a monitor that reports its command or is "
         "stuck, with an exhaust that did not open (or a load cell stuck); check the "
         "regulator and the load cell"))
+
+
+def monitor_unmoved(check: VentCheck, before_bar: float, before_N: float, after_N: float,
+                    noise_N: float) -> VentCheck:
+    """``check``, not verified with the monitor still above the threshold, weighed by the load
+    cell: the monitor read ``before_bar`` before the vent and no less after it (within its
+    noise), while the force fell from ``before_N`` to ``after_N``, below
+    :data:`FORCE_KEPT_FRACTION` of it (and ``before_N`` above the cell's noise ``noise_N``).
+    The same reading with the muscle's force gone is no pressure held: the monitor no longer
+    reads the pressure (its output, wire or input stuck), and neither a regulator that holds
+    nor a slow one is the cause. Still not verified: nothing the monitor reads shows the vent.
+    """
+    noise_bar = check.noise_bar or 0.0
+    if check.verified or check.problem or check.how != "monitor" or not before_N > noise_N \
+            or not check.pressure_bar >= before_bar - noise_bar \
+            or not after_N < FORCE_KEPT_FRACTION * before_N:
+        return check
+    return dataclasses.replace(check, timeout_s=None, problem=(
+        f"the monitor still reads {reading_bar(check.pressure_bar)} bar {check.waited_s:.1f} s "
+        f"after the vent, as it read {reading_bar(before_bar)} bar before it, but the load "
+        f"cell reads {after_N:.1f} N against {before_N:.1f} N before the vent: the muscle let "
+        "go while the monitor did not move, so the monitor no longer reads the pressure (its "
+        "output, wire or input stuck); check the monitor"))
 
 
 def verify_vent(backend, config, operator=None, started: bool = True,
@@ -386,4 +441,6 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                     f"the monitor read {reading_bar(pressure)} bar but did not settle within "
                     f"{waited:.1f} s, so a drift of its zero cannot be excluded"),
                     waited_why=waited_why)
-            return VentCheck(False, pressure, below, waited, "monitor", waited_why=waited_why)
+            return VentCheck(False, pressure, below, waited, "monitor", noise_bar=noise_bar,
+                             waited_why=waited_why,
+                             timeout_s=None if waited >= FALLING_MAX_S else timeout_s)

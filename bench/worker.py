@@ -128,7 +128,10 @@ class Acquisition:
         # when the loop's read under way began (None between reads): the run's watchdog vents a
         # read that hangs past its timeout with a pressure commanded, and says why here
         self.reading_since: float | None = None
-        self.hung = ""  # why the read hung ("" while none did)
+        # (when, pressure [bar]) of the loop's command write under way (None between writes):
+        # the watchdog vents one that hangs past its timeout, as it does a read
+        self.writing: tuple[float, float] | None = None
+        self.hung = ""  # why the read (or a command write) hung ("" while none did)
         self.hung_after_vent = ""  # why a read of the shutdown, after its vent, hung
         self.hung_vent = ""  # what the watchdog's vent did, once written
         self.vented = False  # the last command written was a successful vent
@@ -530,6 +533,12 @@ class Acquisition:
             return None
         return statistics.median(self._recent_N), statistics.median(self._vent_N)
 
+    def forces_unchanged(self) -> bool:
+        """Every force of :meth:`forces_around_vent`'s two windows is the same reading (a load
+        cell stuck, or a muscle steady within one ADC step)."""
+        forces = [*self._recent_N, *self._vent_N]
+        return bool(self._recent_N) and bool(self._vent_N) and min(forces) == max(forces)
+
     def held_bar(self) -> float:
         """The pressure [bar] the regulator may still hold when its vent is not verified: its
         command while the vent was not written, else the last plausible pressure measured, or,
@@ -566,7 +575,11 @@ class Acquisition:
         if self.lease is not None and clamped > 0:
             self._mark(clamped)
         try:
-            self.backend.write_command(volts)
+            self.writing = (time.monotonic(), clamped)
+            try:
+                self.backend.write_command(volts)
+            finally:
+                self.writing = None
             ok = self.written = True
             self.command_bar = clamped
             if clamped > 0:
@@ -590,6 +603,10 @@ class Acquisition:
                 lease.post(lambda: lease.command(0.0))
             self.recorder.command(CommandRecord(issued / self.rate_hz, issued, clamped, volts,
                                                 ok, purpose))
+        if ok and clamped > 0 and self.hung:
+            # a pressure that went out after the watchdog's vent (its write hung): vented again
+            # at once; the run stops at its next block
+            self.command(0.0, "vent")
 
     def _mark(self, pressure_bar: float) -> None:
         """The bench marker learns ``pressure_bar`` before it is written to the device, so a

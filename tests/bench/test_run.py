@@ -525,6 +525,8 @@ def test_a_ctrl_c_stop_says_vented_only_once_the_vent_went_out(ctrl_c_run, fails
         assert result.reason.startswith(f"stopped by Ctrl-C (SIGINT) at a safe point; {failure}"
                                         f", tried again; {failure}, tried again; {failure}; ")
         assert "vented" not in result.reason and "VENT BY HAND" in result.reason
+        # the regulator never got the vent: no setting of the check is the cure
+        assert "safety.vent_timeout_s" not in result.reason
 
 
 def test_a_vent_write_that_fails_once_is_written_again_before_the_check(ctrl_c_run):
@@ -738,6 +740,50 @@ def test_a_driver_that_hangs_the_watchdogs_vent_too_is_recorded_as_it_hangs(conf
     assert result.status == "failed" and result.exit_code == 1, result.reason
     assert load_run(result.path).meta.vent_check["verified"]
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_command_write_that_hangs_is_vented_by_the_watchdog(config, tmp_path):
+    # The driver's AO write of the 1.0 bar step (0.5 bar held) neither returns nor raises
+    # within its 1 s timeout. The loop, every interlock with it, waited in the write, watched
+    # by nothing (the watchdog watched reads only), and when the write came back the 1.0 bar
+    # went out. Now the watchdog vents 1 s past the write's timeout and records why; the
+    # pressure that goes out late is vented again at once and the run stops there.
+    import threading
+
+    backend = SimBackend(config)
+    write, seen = backend.write_command, {}
+    volts_1bar = config.regulator.command_volts(1.0)
+
+    def hanging(volts):
+        if volts == volts_1bar and not seen and \
+                threading.current_thread() is threading.main_thread():
+            deadline = time.monotonic() + 60  # the test's net
+            while time.monotonic() < deadline:
+                meta = json.loads((run.recorder.path / "run.json").read_text())
+                if meta["status"] == "failed":
+                    seen["meta"], seen["command_bar"] = meta, backend.bench.command_bar
+                    break
+                time.sleep(0.01)
+        write(volts)  # the hung write then reaches the device: 1.0 bar, after the vent
+
+    backend.write_command = hanging
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    meta = seen["meta"]  # while it hung: vented, and run.json says so
+    assert seen["command_bar"] == 0.0 and meta["manual_vent_required"]
+    assert "write interlock: the command of 1 bar did not return within" in meta["reason"]
+    assert "(its timeout 1 s) with 0.5 bar commanded after" in meta["reason"]
+    assert "the driver hangs; vented by the watchdog" in meta["reason"]
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert result.reason.startswith("write interlock: the command of 1 bar did not return")
+    run_ = load_run(result.path)
+    assert run_.meta.vent_check["verified"] and not run_.meta.manual_vent_required
+    commands = run_.commands
+    late = commands.index[commands["command_bar"] == 1.0][-1]  # the hung write, recorded
+    assert commands["purpose"][late + 1] == "vent"  # vented again at once
+    assert "watchdog vent" in set(commands["purpose"])
+    np.testing.assert_array_equal(run_.samples["sample"], np.arange(len(run_.samples)))
+    assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
 
 
 def test_every_line_the_bench_writes_names_its_command(mkm_cli, tmp_path, monkeypatch):

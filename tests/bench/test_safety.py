@@ -111,6 +111,43 @@ def test_a_regulator_still_falling_at_the_hard_maximum_asks_for_a_vent_by_hand(c
 
 
 
+def test_a_regulator_too_slow_to_show_its_fall_is_told_which_setting_covers_it(config,
+                                                                                monkeypatch):
+    # `mkm vent` on a muscle left at 0.2 bar, a regulator of time constant 20 s: still falling
+    # at safety.vent_timeout_s = 10 s (0.2 exp(-0.5) = 0.12 bar), read on until its fall over
+    # 2 s, 9.5 % of the reading, is within its noise (at 0.11 bar, 11.8 s), above 0.05 bar: VENT BY
+    # HAND, the message as a stuck regulator's, naming no setting. Now it names
+    # safety.vent_timeout_s and its value; set to 30 s, past 20 ln(0.2 / 0.05) = 27.7 s, it
+    # verifies the vent.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    class Held(SimBackend):
+        def start(self):
+            super().start()
+            self.bench.pressure_bar = 0.2  # left by a run: the vent exhausts it
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Held(c))
+    slow = config.replace(sim={"regulator_tau_s": 20.0})
+    with pytest.raises(BenchError) as caught:
+        procedures.vent(slow, notify=lambda m: None)
+    message = str(caught.value)
+    reading = re.search(r"the monitor still reads ([0-9.]+) bar ([0-9.]+) s after the vent, "
+                        r"above 0.05 bar", message)
+    assert reading, message
+    assert float(reading.group(1)) == pytest.approx(0.2 * math.exp(-float(reading.group(2)) / 20),
+                                                    abs=0.005)  # its noise and ADC steps
+    assert ("a regulator that sticks, or one exhausting the muscle with a time constant of tens "
+            "of seconds, which no reading tells apart; for such a regulator set "
+            "safety.vent_timeout_s (now 10 s, at most 30 s) to the time it takes from the "
+            "highest pressure to below 0.05 bar") in message
+    assert "VENT BY HAND" in message
+    out = procedures.vent(slow.replace(safety={"vent_timeout_s": 30.0}), notify=lambda m: None)
+    assert out["vented"] and out["pressure_bar"] < 0.05
+    # the exhaust takes 27.7 s, then a steady 0.5 s, within the monitor's noise
+    assert out["waited_s"] == pytest.approx(20 * math.log(0.2 / 0.05) + 0.5, abs=1.5)
+
+
 def test_the_cli_says_vent_by_hand_with_its_own_exit_status(tmp_path, mkm_cli):
     text = load_config().text.replace("monitor_noise_V = 0.001",
                                       "monitor_noise_V = 0.001\n[sim.faults]\n"
@@ -421,6 +458,7 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
     result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
     assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
     assert "but the load cell still reads" in result.reason
+    assert "stuck or disconnected" not in result.reason  # a live cell: its noise is there
     assert result.reason.endswith("VENT BY HAND (the regulator may still hold 0.5 bar)")
     run = load_run(result.path)
     check = run.meta.vent_check
@@ -432,6 +470,71 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
     assert bench.pressure_bar > 0.5 and bench.force_N == pytest.approx(after_N, abs=2.0)
     (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert json.loads(marker.read_text())["unfollowed_bar"] == 0.5
+
+
+def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(config,
+                                                                                tmp_path):
+    # The load cell's input holds its reading from 12 s (on the 1.0 bar step: its cable or
+    # amplifier failed so). At the end the regulator vents, the monitor falls to 0 bar, and
+    # the check called it a muscle that still pulls, with a monitor reporting its command
+    # and an exhaust that did not open: the regulator to check. Every force read one ADC code
+    # where the tare's strayed 0.35 N (2 mV rms at 196.133 N/V, 0.39 N: 1.6 ADC steps), which
+    # no live cell does: it is said to be the load cell, still VENT BY HAND (the force proves
+    # nothing).
+    c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 12.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    run = load_run(result.path)
+    forces = run.samples["force_N"][run.samples["sample"] >= 120]
+    assert forces.nunique() == 1  # the fault: one reading from 12 s on
+    reason = re.search(r"the monitor read ([0-9.]+) bar before the vent and ([0-9.]+) bar after "
+                       r"it, but the load cell read ([0-9.]+) N throughout, every reading the "
+                       r"same where it strayed ([0-9.]+) N at the tare: a load cell that does "
+                       r"not change while the pressure falls is stuck or disconnected",
+                       result.reason)
+    assert reason, result.reason
+    before_bar, after_bar, held_N, tare_std_N = map(float, reason.groups())
+    assert before_bar == pytest.approx(0.5, abs=0.02)  # the last step, 0.5 bar down
+    assert after_bar < c.safety.vent_below_bar
+    assert held_N == pytest.approx(forces.iloc[0], abs=0.05)
+    # the tare's spread is the cell's noise: 2 mV rms at 196.133 N/V, quantised
+    assert tare_std_N == pytest.approx(0.002 * 196.133, rel=0.25)
+    assert "check the load cell's cable, amplifier and supply" in result.reason
+    assert "a monitor that reports its command" not in result.reason
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+    assert not run.meta.vent_check["verified"]
+
+
+def test_a_monitor_frozen_above_the_threshold_is_named_by_the_load_cell(config, tmp_path):
+    # The monitor's output freezes at its reading from 20 s (on the last step, 0.5 bar). The
+    # vent empties the muscle, its force falls from 194 N to nothing, and the check, the
+    # monitor still at 0.5 bar, blamed the regulator: "a regulator that sticks, or one
+    # exhausting ... set safety.vent_timeout_s". The same reading with the force gone is no
+    # pressure held: the monitor is named, still VENT BY HAND, and no setting is offered.
+    backend = SimBackend(config)
+    bench, read = backend.bench, backend.read
+
+    def frozen_from_20_s(n, timeout):
+        if backend._index >= 200 and bench.monitor_stuck_bar is None:
+            bench.monitor_stuck_bar = bench.sensor_bar(bench.pressure_bar)
+        return read(n, timeout)
+
+    backend.read = frozen_from_20_s
+    result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    said = re.search(r"the monitor still reads ([0-9.]+) bar [0-9.]+ s after the vent, as it "
+                     r"read ([0-9.]+) bar before it, but the load cell reads (-?[0-9.]+) N "
+                     r"against ([0-9.]+) N before the vent: the muscle let go while the monitor "
+                     r"did not move, so the monitor no longer reads the pressure \(its output, "
+                     r"wire or input stuck\); check the monitor", result.reason)
+    assert said, result.reason
+    after_bar, before_bar, after_N, before_N = map(float, said.groups())
+    assert after_bar == pytest.approx(before_bar, abs=0.01)
+    assert before_bar == pytest.approx(0.5, abs=0.02)  # the last step's, when it froze
+    assert abs(after_N) < 1.0 < 150.0 < before_N  # slack after; 0.5 bar's force before
+    assert "safety.vent_timeout_s" not in result.reason
+    assert bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
 
 
 class _Supply(SimBackend):
@@ -998,3 +1101,96 @@ def test_rows_a_full_disk_refused_and_that_went_out_at_close_are_counted(config,
     assert meta["status"] == "failed" and result.exit_code == 2
     assert int(rows[-1].split(",")[0]) == len(rows) - 1  # every row whole, none twice
     assert meta["counters"]["samples"] == len(rows) > 40
+
+
+# 2. `mkm vent`'s own reads are watched ------------------------------------------------------
+
+def test_a_read_that_hangs_in_mkm_vents_check_ends_unverified_and_marks_the_bench(
+        config, monkeypatch):
+    # `mkm vent` writes the vent as it opens the device; its check's third read then hangs (the
+    # driver does not keep its 0.5 s timeout). The command sat in that read for as long as it
+    # hung, nothing said. Now the read is given its timeout, its block and READ_HANG_MARGIN_S,
+    # then the vent is said not verified while the read still hangs, the bench is marked, the
+    # command exits 1, and the next command on the bench names the unverified vent.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    release, reads, backends = threading.Event(), [], []
+
+    class Hanging(SimBackend):
+        def read(self, n_samples, timeout_s):
+            reads.append(n_samples)
+            if len(reads) == 3:
+                release.wait(60)  # the test's net; released once the command returned
+            return super().read(n_samples, timeout_s)
+
+    make_backend = procedures.make_backend
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(Hanging(c)) or backends[-1])
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.vent(c, notify=lambda m: None)
+        still_hung = not release.is_set() and len(reads) == 3
+    finally:
+        release.set()
+    assert still_hung  # the command did not wait for the read
+    message = str(caught.value)
+    hung_s = float(re.search(r"did not return within ([0-9.]+) s", message).group(1))
+    assert hung_s >= 0.5 + 0.1 + 1.0  # its timeout, a block (1 sample at 10 Hz), the margin
+    assert message.startswith("the vent could not be verified (a read of the device did not "
+                              "return within")
+    assert ("(its timeout 0.5 s) during the vent check: the driver hangs; the vent was "
+            "commanded, its check cannot read the monitor): VENT BY HAND") in message
+    assert backends[0].commands[0][1] == 0.0  # the vent went out first, at open
+    (path,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
+    data = json.loads(path.read_text())
+    assert data["command"] == "vent" and data["run_path"] == ""
+    assert "did not return within" in data["vent_unverified"]
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had ended
+    path.unlink()  # under another name than this process's next `mkm vent` marks
+    path.with_name("dead-vent.json").write_text(json.dumps(data))
+    notes = []
+    monkeypatch.setattr(procedures, "make_backend", make_backend)  # a driver that answers
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    (said,) = [n for n in notes if "not verified" in n]
+    assert said.startswith(f"`mkm vent` (started {data['started_utc']}, pid "
+                           f"{data['process']['pid']}) vented (0 bar commanded at ")
+    assert "during the vent check: the driver hangs" in said and said.endswith("vented now")
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # removed once vented
+
+
+def test_mkm_vent_killed_during_its_check_leaves_the_bench_marked(config, monkeypatch):
+    # `mkm vent` killed (kill -9, the Task Manager) while its check reads the monitor left no
+    # trace: the next command said nothing of a vent never verified. Now the bench is marked
+    # once the vent is out, the marker removed once the vent is verified; the marker as the
+    # kill would leave it is named by the next command.
+    import mkm.bench.procedures as procedures
+
+    seen, backends = {}, []
+
+    class Watched(SimBackend):
+        def read(self, n_samples, timeout_s):
+            if "marker" not in seen:  # the check's first read: the marker is posted before it
+                deadline = time.monotonic() + 60  # the test's net
+                while time.monotonic() < deadline and "marker" not in seen:
+                    for path in bench_folder("sim-Dev1").glob("*.json"):
+                        seen["marker"] = (path, path.read_text())
+            return super().read(n_samples, timeout_s)
+
+    make_backend = procedures.make_backend
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(Watched(c)) or backends[-1])
+    assert procedures.vent(config, notify=lambda m: None)["vented"]
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # verified: removed
+    path, text = seen["marker"]  # what a kill during the check leaves
+    data = json.loads(text)
+    assert data["command"] == "vent" and data["vent_unverified"] == ""
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had been killed
+    path.with_name("dead-vent.json").write_text(json.dumps(data))  # not this process's name
+    notes = []
+    monkeypatch.setattr(procedures, "make_backend", make_backend)
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    assert notes == [f"`mkm vent` (started {data['started_utc']}, pid {data['process']['pid']}) "
+                     f"ended after its vent (0 bar commanded at {data['last_command_utc']}) "
+                     "before the vent was verified: vented now"]
