@@ -706,13 +706,15 @@ def _closing_rest(clock, pressure, force, rest) -> series.Tare | None:
     """The vented rest that ends a record where it is a surer zero than ``rest``, the one
     before its rise: that one of fewer than :data:`mkm.bench.series.SHORT_REST_SAMPLES`
     samples (the logging began as the pressure rose: they already pull) or held pressurised,
-    this one vented and of that many samples or more; else None."""
+    this one vented and of that many samples or more where settled; else None. One whose
+    force still falls (``settled`` False) is returned, for the caller to say why it is no
+    zero."""
     if rest.rest.stop >= series.SHORT_REST_SAMPLES and \
             rest.pressure_bar <= series.VENTED_THRESHOLD_BAR:
         return None
     end = series.end_rest(clock, pressure, force)
     if (end.rest.start <= rest.rest.stop or end.pressure_bar > series.VENTED_THRESHOLD_BAR
-            or end.rest.stop - end.rest.start < series.SHORT_REST_SAMPLES):
+            or (end.settled and end.rest.stop - end.rest.start < series.SHORT_REST_SAMPLES)):
         return None
     return end
 
@@ -858,6 +860,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         zero_rows = rest.rest
         if tare == "auto":
             closing = _closing_rest(clock, pressure, force, rest)
+        if closing is not None and not closing.settled:  # a vent's tail: still pulling
+            notes.append("the vented rest that ends the record still falls (its force's trend "
+                         f"beyond {series.SETTLED_TREND_SE:g} standard errors to its end): not "
+                         "taken as the zero; a longer rest after the vent, or --tare N, gives "
+                         "one")
+            closing = None
     else:
         order = (np.array(directions(table, found["direction"]))[group.rows]
                  if "direction" in found else _inferred(pressure))
@@ -883,7 +891,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         handling["tare"] = (
             f"mean force of the {closing.rest.stop - closing.rest.start} {what}(s) of the "
             "vented rest that ends the record"
-            + (f" (from {time_s[closing.rest.start]:.4g} s)" if timed else "") + ": "
+            + (f" (from {time_s[closing.rest.start]:.4g} s, where its force has settled)"
+               if timed else " (where its force has settled)") + ": "
             + (f"it starts held at {zero_at:.3g} bar" if zero_at > series.VENTED_THRESHOLD_BAR
                else f"only {rest.rest.stop} {what}(s) before the pressure rises"))
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:

@@ -1395,3 +1395,35 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
     assert "(column 't [s]'): the time goes backwards" in err
     assert ("by an hour: a local clock put back at the end of summer time? give the times with "
             "their zone" in err) is said
+
+
+@pytest.mark.parametrize("tau_s", [0.5, 2.0])
+def test_a_closing_rest_after_an_exponential_vent_is_zeroed_where_its_force_settled(
+        tau_s, tmp_path, mkm_cli):
+    # the record begins as the pressure rises and ends venting exponentially (time constant
+    # tau_s) into a 10 s rest: the closing rest, the zero, began while the tail still pulled,
+    # 0.3 N above the 4 N zero (tau 0.5 s), and a vent that never settled (tau 2 s) gave a zero
+    # 4 N high, unsaid
+    rng = np.random.default_rng(12)
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 2, 10, 12, 20, 22, 30, 32, 40, 42, 50],
+                  [0.0, 1.0, 1.0, 1.5, 1.5, 2.0, 2.0, 2.5, 2.5, 1.0, 1.0])
+    p = np.where(t >= 50.0, np.exp(-(t - 50.0) / tau_s), p)
+    f = thickwall_N(p, 0.0) + 4.0 + rng.normal(0, 0.3, t.size)
+    path = tmp_path / "vent.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p + rng.normal(0, 0.003, t.size),
+                  "F (N)": f}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    tared = (run.samples["phase"] == "tare").to_numpy()
+    if tau_s < 1.0:
+        # the settled part's mean: within 4 of its standard errors of the known zero
+        assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(tared.sum()))
+        assert "where its force has settled" in recorded["tare"]
+        assert "still falls" not in err
+    else:
+        # still falling when the record ends: said, and the zero the first sample's (at 0
+        # bar), within 4 noise widths, not the tail's
+        assert ("the vented rest that ends the record still falls (its force's trend beyond "
+                "2.5 standard errors to its end): not taken as the zero") in err
+        assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3)
