@@ -234,7 +234,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  vented: str | float = "auto", select: str | None = None,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
                  one_step_per_row: bool = False, join: str | Path | None = None,
-                 notify=lambda line: None, bar=None) -> list[ImportedRun]:
+                 join_shift_s: float | None = None, notify=lambda line: None,
+                 bar=None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
 
@@ -274,6 +275,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         Another table of the same record holding what ``path``'s tables lack (the force, or
         the pressure, with its time), joined to each by time
         (:func:`mkm.bench.tables.join_by_time`).
+    join_shift_s : float, optional
+        The seconds ``join``'s times are moved later on the table's clock: where each counts
+        from its own start, when its logger started after the table's (required then);
+        where both are date-times or clock readings, how far its clock runs behind.
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -288,6 +293,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     """
     path = Path(path)
     bar = _Stages(bar)
+    if join_shift_s is not None and join is None:
+        raise ValueError(f"--join-shift {join_shift_s:g} s: no --join-by-time FILE: expected it "
+                         "with the file whose times it moves")
     if force_sign not in FORCE_SIGNS:
         raise ValueError(f"--force-sign {force_sign!r} is invalid: expected one of "
                          f"{', '.join(map(str, FORCE_SIGNS))}")
@@ -317,7 +325,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                 raise ValueError(f"--join-by-time {Path(join).name}: {table.name} holds a "
                                  "pressure and a force column itself: expected the other table "
                                  "to give the one it lacks")
-            table, found = join_by_time(table, found, *other, missing)
+            table, found = join_by_time(table, found, *other, missing, join_shift_s)
             table.joined["sha256"] = file_sha256(join)
             missing = []
         if missing and len(tables) > 1 and "pressure" not in found and "force" not in found:

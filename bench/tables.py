@@ -1268,16 +1268,27 @@ def _time_origin(table: RawTable, column: Column) -> tuple[str, float] | None:
     return reading if reading is not None and reading[0] in ("date-time", "clock") else None
 
 
+def _own_start(times: np.ndarray, origin) -> bool:
+    """Whether a time column counts from its own start: clock readings or date-times (read
+    from their first row), or seconds whose first reading is 0 or one sampling interval."""
+    if origin is not None:
+        return True
+    return times.size > 1 and 0.0 <= times[0] <= max(float(np.median(np.diff(times))), 0.0)
+
+
 def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
-                 other_found: dict[str, Column],
-                 roles: list[str]) -> tuple[RawTable, dict[str, Column]]:
+                 other_found: dict[str, Column], roles: list[str],
+                 shift_s: float | None = None) -> tuple[RawTable, dict[str, Column]]:
     """``table`` with the columns of ``roles`` from ``other``, another table of the same
     record, each interpolated linearly at ``table``'s times (in the toolkit's unit), and
     ``found`` with them: the times compared as moments where both are date-times or clock
     readings of one kind, else as read (seconds; clock readings from their first row).
-    ``table``'s rows outside ``other``'s times are left out (nothing extrapolated);
-    ``ValueError`` naming what is missing, a time that goes backwards, or tables whose times
-    do not overlap."""
+    ``shift_s`` [s] moves ``other``'s times later on ``table``'s clock: where two loggers each
+    count from their own start, the seconds ``other``'s started after ``table``'s (required
+    then: as read they would be joined as if started together); where both are moments, a
+    clock that runs behind the other's. ``table``'s rows outside ``other``'s times are left
+    out (nothing extrapolated); ``ValueError`` naming what is missing, a time that goes
+    backwards, or tables whose times do not overlap."""
     for where, columns, what in ((table, found, ("time",)), (other, other_found,
                                                                ("time", *roles))):
         absent = [r for r in what if r not in columns]
@@ -1307,12 +1318,25 @@ def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
                              f"date-times carry a time zone ({firsts[with_zone]!r}) and "
                              f"{names[plain]}'s none ({firsts[plain]!r}), which is read as "
                              "UTC: expected both with their zone or both without")
+    given = (f", {other.name}'s moved {shift_s:+.4g} s (--join-shift)"
+             if shift_s is not None else "")
     if None not in origins and origins[0][0] == origins[1][0]:
         shift = origins[1][1] - origins[0][1]  # the other's first row, on this table's clock
-        how = f"as {origins[0][0]}s, {other.name} starting {shift:+.4g} s from {table.name}"
+        how = (f"as {origins[0][0]}s, {other.name} starting {shift:+.4g} s from {table.name}"
+               + given)
     else:  # seconds as written, clock readings from their first row
+        if shift_s is None and _own_start(times, origins[0]) and \
+                _own_start(other_times, origins[1]):
+            raise ValueError(
+                f"--join-by-time {other.source.name}: {table.name}'s times and {other.name}'s "
+                f"each count seconds from their own start ({times[0]:.4g} s and "
+                f"{other_times[0]:.4g} s in their first rows): when one logger started after "
+                f"the other is not in the files: expected --join-shift SECONDS, the seconds "
+                f"{other.name}'s logger started after {table.name}'s (negative: before; 0: one "
+                "trigger started both)")
         shift = 0.0
-        how = "their times as read, in seconds"
+        how = "their times as read" + (given or ", in seconds")
+    shift += shift_s or 0.0
     other_times = other_times + shift
     inside = (times >= other_times[0]) & (times <= other_times[-1])
     if not inside.any():

@@ -80,6 +80,14 @@ def register(subparsers) -> None:
                      "interpolated linearly at the table's times, compared as moments where "
                      "both times are date-times or clock readings, else as read (seconds); "
                      "the table's rows outside its times are left out")
+    imp.add_argument("--join-shift", type=argtype(parse_number, "--join-shift", "s"),
+                     default=None, metavar="SECONDS",
+                     help="the seconds the --join-by-time file's times are moved later on the "
+                     "table's clock: where each logger counts seconds from its own start (no "
+                     "date-times), when the file's started after the table's (required then; "
+                     "negative: before, 0: one trigger started both); where both hold "
+                     "date-times or clock readings, how far its clock runs behind the "
+                     "table's (default: none)")
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "
                      "and the sensor's data sheet, or the table's stated accuracy): a value "
@@ -155,7 +163,8 @@ def _import(args) -> int:
             vented=parse_zero(args.vented, "--vented", "bar"),
             select=args.muscle, accuracy=parse_accuracy(args.accuracy),
             force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
-            join=args.join_by_time, notify=lines.append, bar=bar)
+            join=args.join_by_time, join_shift_s=args.join_shift, notify=lines.append,
+            bar=bar)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

@@ -588,6 +588,45 @@ def test_pressure_and_force_logged_in_two_files_are_joined_by_time(tmp_path, mkm
     assert not (tmp_path / "bad").exists()
 
 
+def test_two_loggers_counting_from_their_own_start_are_joined_by_the_shift_given(tmp_path,
+                                                                                 mkm_cli):
+    # the regulator's readback and the load cell each logged by a program counting seconds from
+    # its own start, the load cell's started 2.5 s later: joined as read, every force 2.5 s
+    # early on the pressure's clock, unsaid
+    rng = np.random.default_rng(13)
+    knots = ([0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+             [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    tp = np.arange(0.0, 60.0, 0.1)
+    pressure = tmp_path / "regulator.csv"
+    pd.DataFrame({"t (s)": tp, "Pressure [bar]": np.interp(tp, *knots)
+                  + rng.normal(0, 0.003, tp.size)}).to_csv(pressure, index=False)
+    own = np.arange(0.0, 60.0, 0.05)  # the load cell's clock: 0 s is 2.5 s on the regulator's
+    force = tmp_path / "loadcell.csv"
+    pd.DataFrame({"Zeit [s]": own, "Kraft [N]": thickwall_N(np.interp(own + 2.5, *knots), 0.0)
+                  + 4.0 + rng.normal(0, 0.3, own.size)}).to_csv(force, index=False)
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--join-by-time",
+                            str(force), "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert ("regulator.csv's times and loadcell.csv's each count seconds from their own start "
+            "(0 s and 0 s in their first rows)") in err
+    assert "expected --join-shift SECONDS" in err
+    assert not (tmp_path / "bad").exists()
+    (run,), err = _import(mkm_cli, pressure, *MUSCLE, "--eps", "0", "--join-by-time",
+                          str(force), "--join-shift", "2500ms")
+    assert ("'Kraft [N]' of loadcell.csv joined by time (their times as read, loadcell.csv's "
+            "moved +2.5 s (--join-shift), linearly; 575 of 600 rows within its times)") in err
+    joined = run.meta.imported_from["joined_by_time"]
+    assert joined["shift_s"] == 2.5 and joined["rows_outside"] == 25
+    # the zero from the rest the two share (2.5-5 s) and each hold's force its level's, as two
+    # files of date-times joined above
+    assert run.meta.imported_from["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(25))
+    assert [round(s, 1) for s in run.steps["pressure_bar_mean"]] == [1.0, 2.0, 2.5]
+    for step in run.steps.itertuples():
+        assert step.force_N_mean == pytest.approx(
+            thickwall_N(round(step.pressure_bar_mean * 2) / 2, 0.0),
+            abs=0.2 + 4 * 0.3 * np.hypot(1 / np.sqrt(step.n), 1 / np.sqrt(25)))
+
+
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
 def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
                                                                          mkm_cli):
