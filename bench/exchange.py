@@ -49,6 +49,7 @@ from mkm.bench.storage import (
     muscle_from_dict,
 )
 from mkm.bench.tables import (
+    SUMMED_ROLES,
     Recognition,
     backwards_message,
     by_unit_columns,
@@ -61,7 +62,9 @@ from mkm.bench.tables import (
     numbers_as_read,
     read_tables,
     recognise,
+    several_forces,
     sheet_names,
+    taken_columns,
     unread_time_columns,
     without_blank_rows,
     without_summary_rows,
@@ -81,9 +84,7 @@ if TYPE_CHECKING:
 
 REQUIRED_ROLES = ("pressure", "force")
 #: what to know choosing among columns that each hold a role by their unit
-SEVERAL_BY_UNIT = {"force": "cells in series read the same force; cells in parallel share it: "
-                   "add them in a column of the table",
-                   "pressure": "the sensor at the muscle, not one upstream of the regulator"}
+SEVERAL_BY_UNIT = {"pressure": "the sensor at the muscle, not one upstream of the regulator"}
 #: columns whose values split one table into runs (one muscle state each)
 SPLIT_ROLES = ("run", "eps", "length", "L0")
 EXCEL_MAX_ROWS = 1_048_575  # below the header row
@@ -334,11 +335,13 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         for role in missing:
             if len(by_unit := by_unit_columns(table, role, found)) > 1:
                 shown = [repr(table.header[k]) for k in by_unit]
+                what = (f": {several_forces([table.header[k] for k in by_unit])}"
+                        if role in SUMMED_ROLES else f", chosen with --columns {role}=COLUMN "
+                        f"({SEVERAL_BY_UNIT[role]})")
                 raise ValueError(f"{table.name}: no column is named a {role}, and "
                                  f"{len(shown)} hold one by their unit, "
                                  f"{', '.join(shown[:-1])} and {shown[-1]}: which is the "
-                                 f"muscle's is not guessed: expected one, chosen with --columns "
-                                 f"{role}=COLUMN ({SEVERAL_BY_UNIT[role]})")
+                                 f"muscle's is not guessed: expected one{what}")
         if missing:
             raise ValueError(f"{table.name}: no {' or '.join(missing)} column among "
                              f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "
@@ -347,7 +350,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
-                                                 k not in {c.index for c in found.values()}])
+                                                 k not in taken_columns(found)])
         # without a time column every row is a step, or a record's rows are taken as evenly
         # spaced: a clock by a name the reader does not know is left out (an export's steps
         # have times)

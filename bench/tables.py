@@ -719,7 +719,7 @@ def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
     """The headers of ``table`` that no role took and whose unit is one of time (``Zeit seit
     Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration;
     or that are a channel's own time (:func:`_channel_times`)."""
-    taken = {c.index for c in found.values()}
+    taken = taken_columns(found)
     channels = set(_channel_times(table, taken))
     return [header for index, header in enumerate(table.header) if header and index not in taken
             and (index in channels or (unit := parse_header(header)[1]) is not None
@@ -795,13 +795,39 @@ class Column:
     excel_days: bool = False
     #: ``unit`` is the one its cells are written with ('0,5 at'), its header naming none
     in_cells: bool = False
+    #: the columns this one adds up (``--columns force=A+B``: load cells sharing the pull),
+    #: each in its own unit; ``index`` is the first's
+    parts: tuple[Column, ...] = ()
+
+    @property
+    def indices(self) -> tuple[int, ...]:
+        """The table's columns this one reads: its own, or those it adds up."""
+        return tuple(p.index for p in self.parts) or (self.index,)
 
     def describe(self) -> dict:
         role_unit = ROLES[self.role].unit
         unit = EXCEL_DAYS if self.excel_days else self.unit
         return {"column": self.header, "unit": unit if unit is not None else role_unit,
                 "converted_to": role_unit if role_unit else ("fraction" if role_unit == ""
-                                                             else None)}
+                                                             else None),
+                **({"sum_of": [p.describe() for p in self.parts]} if self.parts else {})}
+
+
+#: the roles whose columns ``--columns ROLE=A+B`` adds up: load cells in parallel share the
+#: muscle's pull (pressures, times or lengths added make no reading)
+SUMMED_ROLES = ("force",)
+
+
+def taken_columns(found: dict[str, Column]) -> set[int]:
+    """The table's columns the recognised ``found`` read (the parts of a sum each)."""
+    return {k for c in found.values() for k in c.indices}
+
+
+def several_forces(headers: list[str]) -> str:
+    """What to do with several force columns: choose one, or add them (``A+B``)."""
+    return ("choose one with --columns force=COLUMN (load cells in series each read the whole "
+            f"force), or add them with --columns force='{'+'.join(headers)}' (cells in parallel "
+            "share it)")
 
 
 def parse_assignments(text: str | None, option: str, roles=ROLES) -> dict[str, str]:
@@ -835,15 +861,30 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     columns, units = columns or {}, units or {}
     found: dict[str, Column] = {}
     headers = table.header
-    for role, header in columns.items():
-        if header not in headers:
-            header = _header_named(table, role, header)
-        if headers.count(header) > 1:  # the first would be taken, the others dropped unsaid
-            raise ValueError(f"--columns {role}={header!r}: {table.name} has "
-                             f"{_same_name(headers, header)}: expected one column of that "
-                             "name; rename the others in the file")
-        found[role] = Column(role, headers.index(header), header, parse_header(header)[1], True)
-    taken = {c.index for c in found.values()}
+    for role, given in columns.items():
+        named = [given] if given in headers or "+" not in given else \
+            [part.strip() for part in given.split("+")]
+        if len(named) > 1 and role not in SUMMED_ROLES:
+            raise ValueError(f"--columns {role}={given!r}: only {' and '.join(SUMMED_ROLES)} "
+                             f"columns add up (load cells sharing the pull): expected one "
+                             f"{role} column")
+        parts = []
+        for header in named:
+            if header not in headers:
+                header = _header_named(table, role, header)
+            if headers.count(header) > 1:  # the first would be taken, the others dropped unsaid
+                raise ValueError(f"--columns {role}={header!r}: {table.name} has "
+                                 f"{_same_name(headers, header)}: expected one column of that "
+                                 "name; rename the others in the file")
+            parts.append(Column(role, headers.index(header), header, parse_header(header)[1],
+                                True))
+        if len({p.index for p in parts}) < len(parts):
+            raise ValueError(f"--columns {role}={given!r} names one column twice: expected "
+                             "each column added once")
+        found[role] = parts[0] if len(parts) == 1 else Column(
+            role, parts[0].index, " + ".join(p.header for p in parts), ROLES[role].unit,
+            True, parts=tuple(parts))
+    taken = taken_columns(found)
     for index, header in enumerate(headers):
         if index in taken or not header:
             continue
@@ -863,7 +904,9 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                              "column: expected one; rename the others in the file")
         if role in found:
             raise ValueError(f"{table.name}: two {role} columns, {found[role].header!r} and "
-                             f"{header!r}: choose one with --columns {role}=COLUMN")
+                             f"{header!r}: " + (several_forces([found[role].header, header])
+                                                if role in SUMMED_ROLES else
+                                                f"choose one with --columns {role}=COLUMN"))
         found[role] = Column(role, index, header, unit)
     for role in BY_UNIT_ROLES:
         # a DAQ's channel by its number ('AI 1 [bar]'): the one column whose unit is of the
@@ -875,7 +918,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     if "time" not in found:
         # each channel beside its own time: one clock where they read alike row by row (one
         # such column alone may be a hold's duration, 'Time held (s)': named, not taken)
-        channels = _channel_times(table, {c.index for c in found.values()})
+        channels = _channel_times(table, taken_columns(found))
         if len(channels) > 1 and all(row[k] == row[channels[0]] for row in table.rows
                                      for k in channels):
             header = headers[channels[0]]
@@ -884,8 +927,9 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         if role not in found:
             raise ValueError(f"--units {role}={unit}: {table.name} has no {role} column "
                              f"(found {_listed(c.header for c in found.values())})")
-        found[role].unit = unit
-    for column in found.values():
+        for column in found[role].parts or (found[role],):
+            column.unit = unit
+    for column in [p for c in found.values() for p in c.parts or (c,)]:
         if column.unit is None and ROLES[column.role].unit is not None:
             # the unit the first cell is written with ('0,5 at'), as the line and run.json
             # say it; column_values reads every cell's and refuses mixed ones
@@ -903,7 +947,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
 def by_unit_columns(table: RawTable, role: str, found: dict[str, Column]) -> list[int]:
     """The columns no role took whose unit is of ``role``'s quantity, set points left out: the
     ones that may hold it where no column's name says it."""
-    taken = {c.index for c in found.values()}
+    taken = taken_columns(found)
     return [index for index, header in enumerate(table.header)
             if header and index not in taken and not _set_point(parse_header(header)[0])
             and (unit := parse_header(header)[1]) is not None
@@ -1030,7 +1074,9 @@ def _listed(headers) -> str:
 def column_values(table: RawTable, column: Column, optional: bool = False) -> np.ndarray:
     """The cells of ``column`` as numbers in the toolkit's unit (pint converts); ``ValueError``
     naming the first cell that is text, not finite, or carries a unit other cells do not
-    (``optional``: an empty cell is NaN, a value not known)."""
+    (``optional``: an empty cell is NaN, a value not known); a sum's parts each so, added."""
+    if column.parts:
+        return sum(column_values(table, part, optional) for part in column.parts)
     role = ROLES[column.role]
     raw = [row[column.index] for row in table.rows]
     if column.role == "time":
@@ -1429,6 +1475,7 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
     reading is not known, and no value is made up for it), the first such cell of each in
     ``blanks_skipped`` (with what it reads, where it is not empty). A workbook cell read empty
     that holds a formula stays, for :func:`column_values` to name."""
+    columns = [p for c in columns for p in c.parts or (c,)]
     blank = {k: next(c.index for c in columns if _no_reading(row[c.index]))
              for k, row in enumerate(table.rows)
              if any(_no_reading(row[c.index]) for c in columns)}
@@ -1579,9 +1626,13 @@ class Recognition:
             unit, target = d["unit"], d["converted_to"]
             if unit == "":
                 unit = "fraction"
+            if column.parts:  # each part in its own unit
+                units = [p["unit"] for p in d["sum_of"]]
+                unit = " + ".join(units) if len(set(units)) > 1 else units[0]
             shown = (f" [{unit} -> {target}]" if target and unit != target
                      else f" [{unit}]" if unit else "")
-            parts.append(f"{column.header!r} -> {role}{shown}")
+            header = " + ".join(repr(p.header) for p in column.parts or (column,))
+            parts.append(f"{header} -> {role}{shown}")
         extras = []
         if self.table.decimal == ",":
             extras.append("decimal comma")

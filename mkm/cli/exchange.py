@@ -49,7 +49,9 @@ def register(subparsers) -> None:
                                       f"without either, {EXPORTED}"))
     imp.add_argument("--columns", default=None, metavar="ROLE=COLUMN,...",
                      help="which column holds what, where the names do not say: pressure=..., "
-                     "force=..., time=..., direction=..., eps=..., length=..., run=...")
+                     "force=..., time=..., direction=..., eps=..., length=..., run=...; "
+                     "force=A+B adds two load cells' columns (cells in parallel share the "
+                     "pull), each in its own unit")
     imp.add_argument("--units", default=None, metavar="ROLE=UNIT,...",
                      help="the unit of a column whose header names none or the wrong one, "
                      "e.g. pressure=kPa,force=lbf (default: bar, N, s, mm, a fraction)")

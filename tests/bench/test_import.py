@@ -72,6 +72,47 @@ def test_kpa_and_lbf_headers(tmp_path, mkm_cli):
     assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
 
 
+def test_two_load_cells_sharing_the_pull_are_summed_by_columns_a_plus_b(tmp_path, mkm_cli):
+    # two load cells in parallel, each under half the pull, each with its own offset and unit
+    # (one shows N, the other kgf): refused ("two force columns ...: choose one"), and no
+    # option added them
+    force = thickwall_N(PRESSURES, 0.122)
+    pressures = np.r_[0.0, PRESSURES, 0.0]
+    share = np.r_[0.0, force, 0.0]
+    path = tmp_path / "two_cells.csv"
+    frame = pd.DataFrame({"P (bar)": pressures, "Force left (N)": 0.4 * share + 1.5,
+                          "Force right (kgf)": (0.6 * share - 2.0) / 9.80665})
+    frame.loc[4, "Force right (kgf)"] = np.nan  # the right cell's reading lost: file row 6
+    frame.to_csv(path, index=False)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("'Force left (N)' and 'Force right (kgf)': which is the muscle's is not guessed: "
+            "expected one: choose one with --columns force=COLUMN (load cells in series each "
+            "read the whole force), or add them with --columns force='Force left (N)+Force "
+            "right (kgf)' (cells in parallel share it)") in err
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", "--columns",
+                          "force=Force left (N)+Force right (kgf)")
+    assert "'Force left (N)' + 'Force right (kgf)' -> force [N + kgf -> N]" in err
+    assert "1 row(s) with a blank cell skipped: C6" in err
+    # the sum tared at the first 0 bar row (offsets 1.5 N - 2 N); each step the whole pull
+    # (steps.csv keeps 6 significant digits)
+    assert run.meta.imported_from["tare_N"] == pytest.approx(-0.5, rel=1e-6)
+    kept = np.r_[0:4, 5:9]
+    np.testing.assert_allclose(run.steps["force_N_mean"], share[kept], rtol=1e-5, atol=1e-5)
+    column = run.meta.imported_from["columns"]["force"]
+    assert column["sum_of"] == [{"column": "Force left (N)", "unit": "N", "converted_to": "N"},
+                                {"column": "Force right (kgf)", "unit": "kgf",
+                                 "converted_to": "N"}]
+    assert run.meta.imported_from["ignored_columns"] == []
+    # a pressure is no sum: one line
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--columns",
+                            "pressure=P (bar)+Force left (N)", "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert "--columns pressure='P (bar)+Force left (N)': only force columns add up" in err
+    assert not (tmp_path / "bad").exists()
+
+
 @pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
 def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES, 0.122)
