@@ -50,7 +50,9 @@ from mkm.bench.storage import (
 )
 from mkm.bench.tables import (
     SUMMED_ROLES,
+    VOLTS_ROLES,
     Recognition,
+    Scaling,
     backwards_message,
     by_unit_columns,
     column_text,
@@ -66,6 +68,7 @@ from mkm.bench.tables import (
     sheet_names,
     taken_columns,
     unread_time_columns,
+    volts_header,
     without_blank_rows,
     without_summary_rows,
 )
@@ -235,8 +238,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  vented: str | float = "auto", select: str | None = None,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
                  one_step_per_row: bool = False, join: str | Path | None = None,
-                 join_shift_s: float | None = None, notify=lambda line: None,
-                 bar=None) -> list[ImportedRun]:
+                 join_shift_s: float | None = None, scaling: dict[str, Scaling] | None = None,
+                 notify=lambda line: None, bar=None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
 
@@ -280,6 +283,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         The seconds ``join``'s times are moved later on the table's clock: where each counts
         from its own start, when its logger started after the table's (required then);
         where both are date-times or clock readings, how far its clock runs behind.
+    scaling : dict, optional
+        Role -> :class:`mkm.bench.tables.Scaling`: how a channel logged in volts becomes a
+        pressure or a force (:func:`mkm.bench.tables.parse_scaling`), as the bench scales its
+        load cell; a channel in volts without one is refused.
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -315,11 +322,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     tables = read_tables(path, sheet)
     bar.done(len(tables))
     names = [t.sheet for t in tables]
-    other = _join_table(join) if join is not None else None
+    other = _join_table(join, scaling) if join is not None else None
     prepared, skipped = [], []
     for table in tables:
         bar.start(f"recognising {table.name}")
-        found = recognise(table, columns, units)
+        found = recognise(table, columns, units, scaling)
         missing = [r for r in REQUIRED_ROLES if r not in found]
         if other is not None:
             if not missing:
@@ -343,10 +350,14 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                  f"{', '.join(shown[:-1])} and {shown[-1]}: which is the "
                                  f"muscle's is not guessed: expected one{what}")
         if missing:
+            in_volts = [h for h in table.header if h and volts_header(h)]
             raise ValueError(f"{table.name}: no {' or '.join(missing)} column among "
                              f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "
                              f"name it with --columns {missing[0]}=COLUMN (and --units "
-                             f"{missing[0]}=UNIT)")
+                             f"{missing[0]}=UNIT"
+                             + (f"; a channel in volts, {in_volts[0]!r}, with --sensitivity "
+                                f"{missing[0]}={VOLTS_ROLES[missing[0]][0]}" if in_volts
+                                else "") + ")")
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
@@ -371,6 +382,13 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     if not prepared:
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
                          f"{', '.join(map(repr, names))})")
+    for role, scale in (scaling or {}).items():  # given for no column: it would be ignored
+        if not any(r.columns[role].scale or role in r.table.joined.get("columns", {})
+                   for r in prepared):
+            raise ValueError(f"--sensitivity {role}={scale.text}: {prepared[0].table.name}'s "
+                             f"{role} column {prepared[0].columns[role].header!r} is not "
+                             "logged in volts: expected a scaling only for a channel logged "
+                             "in V or mV")
     untimed = [r.table.name for r in prepared if "time" not in r.columns
                and not series.sampled_without_time(r.values("pressure"))]
     if (untimed or one_step_per_row) and not isinstance(vented, str):
@@ -415,16 +433,16 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     return out
 
 
-def _join_table(path: str | Path):
+def _join_table(path: str | Path, scaling=None):
     """The table of ``--join-by-time`` and its columns: a text table, or the one sheet of a
-    workbook holding a time column."""
+    workbook holding a time column (``scaling``: its channels logged in volts)."""
     tables = read_tables(path)
-    timed = [(t, found) for t in tables if "time" in (found := recognise(t))]
+    timed = [(t, found) for t in tables if "time" in (found := recognise(t, scaling=scaling))]
     if len(tables) > 1 and len(timed) != 1:
         raise ValueError(f"--join-by-time {Path(path).name}: {len(timed)} of its sheets hold a "
                          f"time column: expected one (sheets "
                          f"{', '.join(repr(t.sheet) for t in tables)}); save it alone")
-    return timed[0] if timed else (tables[0], recognise(tables[0]))
+    return timed[0] if timed else (tables[0], recognise(tables[0], scaling=scaling))
 
 
 class _Stages:

@@ -798,6 +798,8 @@ class Column:
     #: the columns this one adds up (``--columns force=A+B``: load cells sharing the pull),
     #: each in its own unit; ``index`` is the first's
     parts: tuple[Column, ...] = ()
+    #: how its volts become the role's unit (a channel logged in volts: ``--sensitivity``)
+    scale: Scaling | None = None
 
     @property
     def indices(self) -> tuple[int, ...]:
@@ -810,7 +812,85 @@ class Column:
         return {"column": self.header, "unit": unit if unit is not None else role_unit,
                 "converted_to": role_unit if role_unit else ("fraction" if role_unit == ""
                                                              else None),
-                **({"sum_of": [p.describe() for p in self.parts]} if self.parts else {})}
+                **({"sum_of": [p.describe() for p in self.parts]} if self.parts else {}),
+                **({"scaling": self.scale.describe()} if self.scale else {})}
+
+
+#: the roles a channel logged in volts may hold (a load-cell amplifier's output, a 0-10 V
+#: pressure transducer), scaled as the bench scales its load cell, ``[loadcell]``
+#: ``sensitivity_N_per_V`` and ``offset_V``: (volts - offset) * sensitivity; each with its
+#: scaling's placeholder and where its offset is read
+VOLTS_ROLES = {"pressure": ("BAR_PER_V", "at 0 bar"), "force": ("N_PER_V", "unloaded")}
+
+
+@dataclass(frozen=True)
+class Scaling:
+    """A channel logged in volts as its role's quantity: ``(volts - offset_V) *
+    sensitivity_per_V`` (in the role's unit per volt), as typed (``text``)."""
+
+    sensitivity_per_V: float
+    offset_V: float
+    text: str
+
+    def describe(self) -> dict:
+        return {"sensitivity_per_V": self.sensitivity_per_V, "offset_V": self.offset_V}
+
+
+_SCALE_PART = re.compile(r"^(?P<number>[+-]?(?:\d+[.,]?\d*|[.,]\d+)(?:[eE][+-]?\d+)?)\s*"
+                         r"(?P<unit>.*)$")
+
+
+def _volts(unit) -> bool:
+    return unit is not None and unit.dimensionality == registry().Unit("V").dimensionality
+
+
+def volts_header(header: str) -> bool:
+    """Whether a header names a unit of voltage (``AI0 [V]``, ``Kraft (mV)``)."""
+    unit = parse_header(header)[1]
+    return unit is not None and _volts(parse_unit(unit))
+
+
+def parse_scaling(sensitivity: str | None, offset: str | None) -> dict[str, Scaling]:
+    """``--sensitivity force=200N/V,pressure=2.5bar/V`` and ``--offset-volts
+    force=0.012,pressure=0.5V`` -> role -> :class:`Scaling`: a sensitivity in any unit of the
+    role per volt (a bare number: N/V, bar/V), positive; an offset in volts (default 0 V);
+    ``ValueError`` naming a bad item."""
+    given = parse_assignments(sensitivity, "--sensitivity", VOLTS_ROLES)
+    offsets = parse_assignments(offset, "--offset-volts", VOLTS_ROLES)
+    for role in offsets.keys() - given.keys():
+        raise ValueError(f"--offset-volts {role}={offsets[role]}: no --sensitivity {role}=...: "
+                         f"expected both for a channel logged in volts")
+    out = {}
+    for role, text in given.items():
+        per = f"{ROLES[role].unit}/V"
+        match = _SCALE_PART.match(text.strip())
+        unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
+            registry().Unit(per) if match else None
+        if unit is None or unit.dimensionality != registry().Unit(per).dimensionality:
+            raise ValueError(f"--sensitivity {role}={text} is invalid: expected the {role} per "
+                             f"volt, e.g. {role}=200{per}" if role == "force" else
+                             f"--sensitivity {role}={text} is invalid: expected the {role} per "
+                             f"volt, e.g. {role}=2.5{per}")
+        value = float(registry().Quantity(float(match["number"].replace(",", ".")), unit)
+                      .to(per).magnitude)
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"--sensitivity {role}={text} is invalid: expected a {role} per "
+                             "volt above 0 (--force-sign -1 reads a load cell wired to read "
+                             "the pull negative)")
+        offset_V = 0.0
+        if role in offsets:
+            written = offsets[role]
+            match = _SCALE_PART.match(written.strip())
+            unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
+                registry().Unit("V") if match else None
+            if not _volts(unit):
+                raise ValueError(f"--offset-volts {role}={written} is invalid: expected the "
+                                 f"volts the channel reads {VOLTS_ROLES[role][1]}, e.g. "
+                                 f"{role}=0.012 or {role}=12mV")
+            offset_V = float(registry().Quantity(float(match["number"].replace(",", ".")),
+                                                 unit).to("V").magnitude)
+        out[role] = Scaling(value, offset_V, text)
+    return out
 
 
 #: the roles whose columns ``--columns ROLE=A+B`` adds up: load cells in parallel share the
@@ -852,11 +932,14 @@ def parse_assignments(text: str | None, option: str, roles=ROLES) -> dict[str, s
 
 
 def recognise(table: RawTable, columns: dict[str, str] | None = None,
-              units: dict[str, str] | None = None) -> dict[str, Column]:
+              units: dict[str, str] | None = None,
+              scaling: dict[str, Scaling] | None = None) -> dict[str, Column]:
     """The column of each role found in ``table`` (see the module docstring).
 
-    ``columns`` names a role's column outright, ``units`` its unit. ``ValueError``: a
-    named column missing, two columns claiming one role, or a unit of the wrong dimension.
+    ``columns`` names a role's column outright, ``units`` its unit, ``scaling`` how a channel
+    logged in volts becomes its role's quantity. ``ValueError``: a named column missing, two
+    columns claiming one role, a unit of the wrong dimension, a channel in volts without a
+    scaling or a scaling for one not in volts.
     """
     columns, units = columns or {}, units or {}
     found: dict[str, Column] = {}
@@ -938,6 +1021,20 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
             written = _number(first, table.decimal)[1] if isinstance(first, str) else None
             if written is not None:
                 column.unit, column.in_cells = written, True
+    for role, scale in (scaling or {}).items():
+        if role in found:
+            column = found[role]
+            if not all(_volts(parse_unit(p.unit) if p.unit else None)
+                       for p in column.parts or (column,)):
+                written = (f"is in {column.unit!r}" if column.unit else
+                           f"names no unit (read in {ROLES[role].unit})")
+                raise ValueError(f"--sensitivity {role}={scale.text}: column {column.header!r} "
+                                 f"{written}, not volts: expected a scaling only for a channel "
+                                 "logged in V or mV")
+            for part in column.parts or (column,):
+                part.scale = scale
+            column.scale = scale
+    for column in [p for c in found.values() for p in c.parts or (c,)]:
         _check_unit(table, column)
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
@@ -1028,6 +1125,14 @@ def _check_unit(table: RawTable, column: Column) -> None:
     if role.unit is None:
         raise ValueError(f"{table.name}: column {column.header!r} ({column.role}) takes no "
                          f"unit, got {column.unit!r}")
+    if column.role in VOLTS_ROLES and column.scale is None and _volts(parse_unit(column.unit)):
+        placeholder, zero = VOLTS_ROLES[column.role]
+        raise ValueError(f"{table.name}: column {column.header!r} is logged in volts "
+                         f"({column.unit!r}): expected a {column.role} unit like {role.unit}, "
+                         f"or the channel's scaling: --sensitivity {column.role}={placeholder} "
+                         f"(and --offset-volts {column.role}=V, what it reads {zero})")
+    if column.scale is not None:
+        return  # its volts scaled to the role's unit
     if column.role == "pressure" and _ABSOLUTE.fullmatch(column.unit.strip()):
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is an "
                          "absolute pressure: expected a gauge pressure, above the atmosphere as "
@@ -1130,7 +1235,10 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
                              f"in {where1}, {u2!r} in cell {table.cell(k2, column.index)}: "
                              "expected one unit per column")
         unit = next(iter(inline))
-        _check_unit(table, Column(column.role, column.index, column.header, unit))
+        _check_unit(table, replace(column, unit=unit))
+    if column.scale is not None:  # volts as the bench scales its load cell's
+        volts = (values * parse_unit(unit)).to("V").magnitude
+        return (volts - column.scale.offset_V) * column.scale.sensitivity_per_V
     if unit is None or role.unit is None:
         return values
     target = role.unit or "dimensionless"
@@ -1631,6 +1739,9 @@ class Recognition:
                 unit = " + ".join(units) if len(set(units)) > 1 else units[0]
             shown = (f" [{unit} -> {target}]" if target and unit != target
                      else f" [{unit}]" if unit else "")
+            if column.scale:
+                shown = (f"{shown[:-1]}: {column.scale.sensitivity_per_V:g} {target}/V from "
+                         f"{column.scale.offset_V:g} V]")
             header = " + ".join(repr(p.header) for p in column.parts or (column,))
             parts.append(f"{header} -> {role}{shown}")
         extras = []

@@ -113,6 +113,47 @@ def test_two_load_cells_sharing_the_pull_are_summed_by_columns_a_plus_b(tmp_path
     assert not (tmp_path / "bad").exists()
 
 
+def test_channels_logged_in_volts_are_scaled_as_the_bench_scales_its_load_cell(tmp_path,
+                                                                              mkm_cli):
+    # a load-cell amplifier logged in mV (0.2 N per mV, 50 mV unloaded) and a 0.5-4.5 V
+    # transducer of 0-10 bar (2.5 bar per V from 0.5 V): refused as "'mV' is not a unit of
+    # force", and no option scaled them
+    force = thickwall_N(PRESSURES, 0.122)
+    pressures = np.r_[0.0, PRESSURES]
+    path = tmp_path / "volts.csv"
+    pd.DataFrame({"Druck [V]": 0.5 + pressures / 2.5,
+                  "Kraft [mV]": 50.0 + np.r_[0.0, force] / 0.2}).to_csv(path, index=False)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert ("column 'Druck [V]' is logged in volts ('V'): expected a pressure unit like bar, or "
+            "the channel's scaling: --sensitivity pressure=BAR_PER_V (and --offset-volts "
+            "pressure=V, what it reads at 0 bar)") in err
+    scaled = ["--sensitivity", "pressure=2.5bar/V,force=200N/V", "--offset-volts",
+              "pressure=0.5,force=50mV"]
+    # the offset subtracted as [loadcell] offset_V is: the forces exact without a tare
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", *scaled, "--tare", "none")
+    assert ("'Druck [V]' -> pressure [V -> bar: 2.5 bar/V from 0.5 V], 'Kraft [mV]' -> force "
+            "[mV -> N: 200 N/V from 0.05 V]") in err
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], pressures, rtol=1e-6,
+                               atol=1e-9)
+    np.testing.assert_allclose(run.steps["force_N_mean"], np.r_[0.0, force], rtol=1e-5,
+                               atol=1e-6)
+    assert run.meta.imported_from["columns"]["force"]["scaling"] == {
+        "sensitivity_per_V": 200.0, "offset_V": 0.05}
+    # a scaling for a column not in volts: one line
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--units",
+                            "force=N", "--sensitivity", "force=200N/V", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("--sensitivity force=200N/V: column 'Kraft [mV]' is in 'N', not volts: expected a "
+            "scaling only for a channel logged in V or mV") in err
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", *scaled[:2],
+                            "--offset-volts", "force=50N", "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "--offset-volts force=50N" in err
+    assert not (tmp_path / "bad").exists()
+
+
 @pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
 def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES, 0.122)
