@@ -149,6 +149,8 @@ class RawTable:
     decimal: str = "."
     #: the first blank cell of each row :func:`without_blank_rows` left out (``B7``)
     blanks_skipped: list[str] = field(default_factory=list)
+    #: the first overload mark of each row :func:`without_blank_rows` left out (``C7 ('OVL')``)
+    overloads_skipped: list[str] = field(default_factory=list)
     #: the cell naming the statistic of each row :func:`without_summary_rows` left out
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
@@ -170,6 +172,7 @@ class RawTable:
                 "title_rows": self.title_rows, "separator": self.separator,
                 "decimal": self.decimal, "rows": len(self.rows),
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
+                "rows_skipped_for_an_overload": self.overloads_skipped,
                 "summary_rows_skipped": self.summaries_skipped,
                 "footer_rows_skipped": self.footer_skipped,
                 **({"joined_by_time": self.joined} if self.joined else {})}
@@ -1568,23 +1571,36 @@ def without_summary_rows(table: RawTable) -> RawTable:
 
 
 #: what a cell reads where a logger or a spreadsheet has no reading: LabVIEW's NaN for a
-#: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none
-NO_READING = ("nan", "#n/a", "#nv")
+#: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none, a
+#: table's n/a or null; and a logger's dashes ('-', '---')
+NO_READING = ("nan", "#n/a", "#nv", "n/a", "null")
+_DASHES = re.compile(r"^-+$")
+#: what a logger writes where a channel read beyond its range (OVL, -OVL, OL, Over, Overload,
+#: Overrange): no reading either, and said apart, since the cell or its range was too small
+_OVERLOAD = re.compile(r"^[+-]?\s*(?:ovl|ol|over|overload|overrange|over range|overflow)$",
+                       re.IGNORECASE)
+
+
+def _overload(cell) -> bool:
+    return isinstance(cell, str) and bool(_OVERLOAD.match(cell.strip()))
 
 
 def _no_reading(cell) -> bool:
     text = str(cell).strip()
-    return text == "" or text.lower() in NO_READING
+    return (text == "" or text.lower() in NO_READING or bool(_DASHES.match(text))
+            or _overload(text))
 
 
 def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
     """``table`` without the rows whose cell in one of ``columns`` is blank or reads as
     :data:`NO_READING` (a lab sheet's stray empty cell, a logger's lost sample: that row's
     reading is not known, and no value is made up for it), the first such cell of each in
-    ``blanks_skipped`` (with what it reads, where it is not empty). A workbook cell read empty
-    that holds a formula stays, for :func:`column_values` to name."""
+    ``blanks_skipped`` (with what it reads, where it is not empty), or a logger's overload mark
+    (``OVL``: the reading beyond the channel's range), the first in ``overloads_skipped``. A
+    workbook cell read empty that holds a formula stays, for :func:`column_values` to name."""
     columns = [p for c in columns for p in c.parts or (c,)]
-    blank = {k: next(c.index for c in columns if _no_reading(row[c.index]))
+    blank = {k: next((c.index for c in columns if _overload(row[c.index])),
+                     next(c.index for c in columns if _no_reading(row[c.index])))
              for k, row in enumerate(table.rows)
              if any(_no_reading(row[c.index]) for c in columns)}
     formulas = _formulas(table, [(k, c.index) for k in blank for c in columns])
@@ -1597,9 +1613,11 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
         text = str(table.rows[k][blank[k]]).strip()
         return table.cell(k, blank[k]) + (f" ({text!r})" if text else "")
 
+    over = [k for k in skipped if _overload(table.rows[k][blank[k]])]
     return replace(table, rows=[table.rows[k] for k in keep],
                    row_numbers=[table.row_numbers[k] for k in keep],
-                   blanks_skipped=[named(k) for k in skipped])
+                   blanks_skipped=[named(k) for k in skipped if k not in set(over)],
+                   overloads_skipped=[named(k) for k in over])
 
 
 def _formula(table: RawTable, k: int, column: int) -> str | None:
@@ -1761,6 +1779,10 @@ class Recognition:
         if skipped := self.table.blanks_skipped:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))
+        if over := self.table.overloads_skipped:
+            extras.append(f"{len(over)} row(s) with an overload mark skipped: "
+                          + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")
+                          + ": the channel read beyond its range there")
         return ", ".join(parts) + (f"; {', '.join(extras)}" if extras else "")
 
     def describe(self) -> dict:

@@ -187,6 +187,30 @@ def test_a_logged_sample_without_a_reading_is_skipped_and_named(missing, tmp_pat
     assert len(run.samples) == t.size - 1 and 1.0 not in run.samples["time_s"].round(6).tolist()
 
 
+def test_a_loggers_dashes_and_overload_marks_skip_their_rows_and_are_named(tmp_path, mkm_cli):
+    # a logger writes '---' for a sample it has none of and 'OVL' (or '-OVL', 'Overload') where
+    # a channel read beyond its range: was "cell C12 ...: '---' is not a number", the whole
+    # record refused
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    force = [f"{f:.4f}" for f in thickwall_N(p, 0.0)]
+    pressure = [f"{x:.5f}" for x in p]
+    force[10], force[300], pressure[301], force[302] = "---", "OVL", "-OVL", "Overload"
+    path = tmp_path / "logger.csv"
+    path.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{a:.1f},{b},{c}\n" for a, b, c in zip(t, pressure, force, strict=True)))
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "1 row(s) with a blank cell skipped: C12 ('---')" in err
+    assert ("3 row(s) with an overload mark skipped: C302 ('OVL'), B303 ('-OVL'), C304 "
+            "('Overload'): the channel read beyond its range there") in err
+    recorded = run.meta.imported_from
+    assert recorded["rows_skipped_for_a_blank_cell"] == ["C12 ('---')"]
+    assert recorded["rows_skipped_for_an_overload"] == ["C302 ('OVL')", "B303 ('-OVL')",
+                                                        "C304 ('Overload')"]
+    assert len(run.samples) == t.size - 4
+    assert not {1.0, 30.0, 30.1, 30.2} & set(run.samples["time_s"].round(6))
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES[:5], 0.0)
     rows = "\n".join(f"{p:.2f};{f:.3f}".replace(".", ",") for p, f in zip(PRESSURES[:5], force,
