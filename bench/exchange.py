@@ -772,6 +772,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     an option replaced of the table, said first)."""
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), force_sign * group.values("force")
+    for k in np.flatnonzero(np.abs(force) > MAX_CAPACITY_N)[:1]:  # no load cell reads it
+        raise ValueError(f"{table.name}, cell {group.cell(int(k), 'force')} (column "
+                         f"{found['force'].header!r}): {force_sign * force[k]:g} N is beyond "
+                         f"the largest load cell a bench takes ({MAX_CAPACITY_N:g} N): "
+                         "expected a force reading (a logger's overload value, or a unit "
+                         "--units force=... gives)")
     notes, handling = ([override], {"L0": override}) if override else ([], {})
     handling["force_sign"] = force_sign
     handling["one_step_per_row"] = one_step_per_row

@@ -1576,13 +1576,27 @@ def without_summary_rows(table: RawTable) -> RawTable:
 NO_READING = ("nan", "#n/a", "#nv", "n/a", "null")
 _DASHES = re.compile(r"^-+$")
 #: what a logger writes where a channel read beyond its range (OVL, -OVL, OL, Over, Overload,
-#: Overrange): no reading either, and said apart, since the cell or its range was too small
+#: Overrange, or SCPI's number :data:`SCPI_OVERLOAD`): no reading either, and said apart,
+#: since the cell or its range was too small
 _OVERLOAD = re.compile(r"^[+-]?\s*(?:ovl|ol|over|overload|overrange|over range|overflow)$",
                        re.IGNORECASE)
 
 
+#: SCPI's overload value (+-9.9E37; 9.91E37 its not-a-number), which Keysight's and other
+#: instruments' loggers write as a reading over range: no force or pressure is near it
+SCPI_OVERLOAD = 9.9e37
+
+
 def _overload(cell) -> bool:
-    return isinstance(cell, str) and bool(_OVERLOAD.match(cell.strip()))
+    if isinstance(cell, str):
+        if _OVERLOAD.match(cell.strip()):
+            return True
+        try:
+            cell = float(cell.strip().replace(",", "."))
+        except ValueError:
+            return False
+    return isinstance(cell, int | float) and not isinstance(cell, bool) and \
+        abs(cell) >= SCPI_OVERLOAD
 
 
 def _no_reading(cell) -> bool:

@@ -211,6 +211,37 @@ def test_a_loggers_dashes_and_overload_marks_skip_their_rows_and_are_named(tmp_p
     assert not {1.0, 30.0, 30.1, 30.2} & set(run.samples["time_s"].round(6))
 
 
+def test_an_instruments_overload_value_is_no_force(tmp_path, mkm_cli):
+    # a Keysight logger writes SCPI's overload value, +9.9E+37, where its channel is over range:
+    # imported as a force of 9.9e37 N, the hold's mean 3e36 N, unsaid
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    force = [f"{f:.4f}" for f in thickwall_N(p, 0.0)]
+    force[300] = "+9.9E+37"
+    path = tmp_path / "keysight.csv"
+    path.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{a:.1f},{b:.5f},{c}\n" for a, b, c in zip(t, p, force, strict=True)))
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert ("1 row(s) with an overload mark skipped: C302 ('+9.9E+37'): the channel read "
+            "beyond its range there") in err
+    # the row skipped, every other force as written less the tare (samples.csv keeps 6
+    # significant digits, the file 4 decimals)
+    kept = np.delete(thickwall_N(p, 0.0), 300)
+    assert len(run.samples) == kept.size
+    np.testing.assert_allclose(run.samples["force_N"], kept - run.meta.imported_from["tare_N"],
+                               rtol=1e-5, atol=1e-4)
+    # any other force beyond the largest load cell a bench takes is no reading: refused
+    force[300] = "2.5e6"
+    path.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{a:.1f},{b:.5f},{c}\n" for a, b, c in zip(t, p, force, strict=True)))
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("keysight.csv, cell C302 (column 'Force [N]'): 2.5e+06 N is beyond the largest "
+            "load cell a bench takes (100000 N): expected a force reading") in err
+    assert not (tmp_path / "bad").exists()
+
+
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES[:5], 0.0)
     rows = "\n".join(f"{p:.2f};{f:.3f}".replace(".", ",") for p, f in zip(PRESSURES[:5], force,
