@@ -66,6 +66,7 @@ from mkm.bench.tables import (
     recognise,
     several_forces,
     sheet_names,
+    statistic_columns,
     taken_columns,
     unread_time_columns,
     volts_header,
@@ -336,8 +337,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             table, found = join_by_time(table, found, *other, missing, join_shift_s)
             table.joined["sha256"] = file_sha256(join)
             missing = []
-        if missing and len(tables) > 1 and "pressure" not in found and "force" not in found:
-            skipped.append(table.sheet)
+        if missing and len(tables) > 1 and not any(
+                len(by_unit_columns(table, r, found)) > 1 for r in missing):
+            # a sheet of notes or of the lab's results beside the measurements: named below
+            skipped.append(f"{table.sheet!r} ({_lacks(table, missing)})")
             continue
         for role in missing:
             if len(by_unit := by_unit_columns(table, role, found)) > 1:
@@ -371,8 +374,6 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                    series.sampled_without_time(recognition.values("pressure"))
                    else "every row is a step")
         notify(f"{table.name}: {recognition.line()}"
-               + (f"; sheets without pressure and force skipped: {', '.join(skipped)}"
-                  if skipped else "")
                + "".join(f"; column {header!r} holds times but is not read as the time "
                          f"column: {read_as}; if it is the record's clock, --columns "
                          f"time={header!r} reads the table as a time series"
@@ -382,6 +383,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     if not prepared:
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
                          f"{', '.join(map(repr, names))})")
+    if skipped:
+        notify(f"{path.name}: sheets without a pressure and a force column skipped: "
+               f"{', '.join(skipped)}")
     for role, scale in (scaling or {}).items():  # given for no column: it would be ignored
         if not any(r.columns[role].scale or role in r.table.joined.get("columns", {})
                    for r in prepared):
@@ -431,6 +435,16 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         bar.done()
     bar.end()
     return out
+
+
+def _lacks(table, missing: list[str]) -> str:
+    """What a sheet skipped lacks, in words: ``neither``, or ``no force column`` and the
+    columns of that unit whose names make them statistics (``'F max (N)'``)."""
+    if len(missing) > 1:
+        return "neither"
+    named = statistic_columns(table, missing[0])
+    return f"no {missing[0]} column" + "".join(f"; {h!r} is a statistic, no reading"
+                                               for h in named[:1])
 
 
 def _join_table(path: str | Path, scaling=None):

@@ -95,6 +95,18 @@ SET_POINT_WORDS = {"soll", "sollwert", "set", "setpoint", "target", "command", "
 
 def _set_point(name: str) -> bool:
     return name.startswith(SET_POINT_PREFIX) or bool(SET_POINT_WORDS & set(name.split()))
+
+
+#: the words of a column's name that make it a statistic of a quantity, no reading of it (a
+#: results sheet's 'F max (N)', 'Peak force'): not taken by its unit alone (a mean is a hold's
+#: reading, as a step table gives it)
+STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "sum", "summe",
+                   "total", "gesamt", "std", "stdev", "sd", "count", "anzahl", "range"}
+
+
+def statistic(name: str) -> bool:
+    """Whether a column's name (as :func:`parse_header` gives it) names a statistic."""
+    return bool(STATISTIC_WORDS & set(name.split()))
 #: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
 CLOCK_NAMES = {"millis": "ms", "micros": "us"}
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
@@ -1050,6 +1062,16 @@ def by_unit_columns(table: RawTable, role: str, found: dict[str, Column]) -> lis
     taken = taken_columns(found)
     return [index for index, header in enumerate(table.header)
             if header and index not in taken and not _set_point(parse_header(header)[0])
+            and not statistic(parse_header(header)[0])
+            and (unit := parse_header(header)[1]) is not None
+            and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
+
+
+def statistic_columns(table: RawTable, role: str) -> list[str]:
+    """The headers whose unit is of ``role``'s quantity but whose name makes them a statistic
+    (:data:`STATISTIC_WORDS`), which :func:`by_unit_columns` leaves out."""
+    return [header for header in table.header
+            if header and statistic(parse_header(header)[0])
             and (unit := parse_header(header)[1]) is not None
             and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
 

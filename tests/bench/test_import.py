@@ -278,6 +278,27 @@ def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
     assert one.meta.muscle.eps == pytest.approx(0.122)
 
 
+def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
+    # a workbook of the measurements, a sheet of notes and the lab's results sheet
+    # ('Auswertung': the peak force at the top pressure): the results sheet was imported as a
+    # run of one step, its 'F max (N)' taken for a force reading by its unit
+    path = tmp_path / "muscle7.xlsx"
+    force = thickwall_N(PRESSURES[:5], 0.0)
+    with pd.ExcelWriter(path) as book:
+        pd.DataFrame({"Info": ["Operator", "Muscle"], "Value": ["JS", "M7"]}).to_excel(
+            book, sheet_name="Info", index=False)
+        pd.DataFrame({"P (bar)": PRESSURES[:5], "F (N)": force}).to_excel(
+            book, sheet_name="Messung", index=False)
+        pd.DataFrame({"P (bar)": [2.5], "F max (N)": [force.max()]}).to_excel(
+            book, sheet_name="Auswertung", index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["sheet"] == "Messung"
+    # the notes hold no numbers: no table; the results are named, skipped
+    assert ("muscle7.xlsx: sheets without a pressure and a force column skipped: 'Auswertung' "
+            "(no force column; 'F max (N)' is a statistic, no reading)") in err
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)
+
+
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
     """A lab's 100 Hz record: 2 s vented, 10 s up to 2.5 bar, 10 s down, 1 s vented; the gauge
     reads ``vented_bar`` at rest, the load cell ``tare_N``; noise 0.005 bar and 0.3 N."""
