@@ -657,7 +657,8 @@ _WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
 #: a header's name ending in a pressure unit, and the mark that may follow it in brackets
 _MARKED_UNIT = re.compile(r"^(?P<name>.*?\S)[\s_,]+(?P<unit>m?bar|[km]?pa|psi)\s*$",
                           re.IGNORECASE)
-_PRESSURE_MARK = re.compile(r"g|gauge|ü|a|abs|absolute", re.IGNORECASE)
+_PRESSURE_MARK = re.compile(r"g|gauge|ü|rel\.?|relativ|relative|relatif|a|abs|absolute",
+                            re.IGNORECASE)
 
 
 @cache
@@ -688,9 +689,11 @@ LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", 
 
 
 #: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü),
-#: atü (German technical atmospheres above the atmosphere)
+#: atü (German technical atmospheres above the atmosphere), bar rel, bar relativ, bar relatif
+#: (German and French: relative to the atmosphere)
 _GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi|at)\s*"
-                    r"(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))", re.IGNORECASE)
+                    r"(?:\(\s*(?:g|gauge|ü|rel\.?|relativ|relative|relatif)\s*\)"
+                    r"|(?:g|gauge|ü|rel\.?|relativ|relative|relatif))", re.IGNORECASE)
 #: the same marked absolute (bar a, bar(a), psia, bar abs, ata): refused, with why
 _ABSOLUTE = re.compile(r"(?:m?bar|[km]?pa|psi|at)\s*"
                        r"(?:\(\s*(?:a|abs|absolute)\s*\)|(?:a|abs|absolute))", re.IGNORECASE)
