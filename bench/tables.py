@@ -1428,7 +1428,8 @@ def backwards_message(where: str, header: str, jump_s: float) -> str:
     """The one line of a time column that goes back by ``jump_s`` [s] at ``where`` (a table
     and its cell); an hour back is named as a clock put back (summer time's end)."""
     dst = (" by an hour: a local clock put back at the end of summer time? give the times with "
-           "their zone (+02:00, +01:00)" if abs(jump_s - 3600.0) <= 60.0 else "")
+           "their zone (+02:00, +01:00)" if abs(jump_s - 3600.0) <= 60.0 else
+           f" by {jump_s:.4g} s")
     return (f"{where} (column {header!r}): the time goes backwards{dst}: expected samples in "
             "time order")
 

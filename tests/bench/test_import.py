@@ -1592,6 +1592,9 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
     assert "(column 't [s]'): the time goes backwards" in err
     assert ("by an hour: a local clock put back at the end of summer time? give the times with "
             "their zone" in err) is said
+    # how far back, where it is no clock put back: was the cell alone, not what it reads
+    assert ("cell A22 (column 't [s]'): the time goes backwards by 4.5 s: expected samples in "
+            "time order" in err) is not said
 
 
 @pytest.mark.parametrize("tau_s", [0.5, 2.0])
