@@ -119,6 +119,7 @@ ROLES = {
                   "datum zeit", "datum uhrzeit", "datum und uhrzeit", "datum und zeit",
                   "relative time", "time since start", "runtime", "run time", "test time",
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
+                  "zeitpunkt", "messzeitpunkt",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
                   # seconds since 1970 as a logger names them
@@ -735,13 +736,21 @@ def _fits(unit, role: Role) -> bool:
 
 def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
     """The headers of ``table`` that no role took and whose unit is one of time (``Zeit seit
-    Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration;
-    or that are a channel's own time (:func:`_channel_times`)."""
+    Beginn [s]``) or whose first cell is a clock reading or a date-time (``Messung am``): a
+    record's clock by a name the reader does not know, or a hold's duration; or that are a
+    channel's own time (:func:`_channel_times`)."""
     taken = taken_columns(found)
     channels = set(_channel_times(table, taken))
     return [header for index, header in enumerate(table.header) if header and index not in taken
-            and (index in channels or (unit := parse_header(header)[1]) is not None
+            and (index in channels or _first_a_time(table, index)
+                 or (unit := parse_header(header)[1]) is not None
                  and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"])))]
+
+
+def _first_a_time(table: RawTable, index: int) -> bool:
+    """Whether the first filled cell of a column is a clock reading or a date-time."""
+    first = next((row[index] for row in table.rows if str(row[index]).strip()), None)
+    return first is not None and not isinstance(first, int | float) and _clock(first) is not None
 
 
 #: the first word of a channel's own time column's name (``Time - Pressure``, as

@@ -785,6 +785,29 @@ def test_two_loggers_counting_from_their_own_start_are_joined_by_the_shift_given
             abs=0.2 + 4 * 0.3 * np.hypot(1 / np.sqrt(step.n), 1 / np.sqrt(25)))
 
 
+@pytest.mark.parametrize("header", ["Zeitpunkt", "Messung am"])
+def test_a_column_of_date_times_by_a_name_unknown_is_read_or_named(header, tmp_path, mkm_cli):
+    # a German logger's 'Zeitpunkt' (point in time) column of date-times: the record was read as
+    # one without time, its rows counted for its clock, and no word said a column held times
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    start = datetime.datetime(2026, 12, 6, 14, 5, 0)
+    stamps = [(start + datetime.timedelta(seconds=float(s))).strftime("%d.%m.%Y %H:%M:%S.%f")[:-3]
+              for s in t]
+    path = tmp_path / "logger.csv"
+    pd.DataFrame({header: stamps, "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    if header == "Zeitpunkt":
+        assert f"'{header}' -> time [s]" in err and run.meta.imported_from["shape"] == "staircase"
+        assert len(run.samples) == t.size
+    else:  # a name no lab's clock goes by: said, with the option that reads it
+        assert (f"column {header!r} holds times but is not read as the time column: its rows "
+                f"are taken as evenly spaced in time; if it is the record's clock, --columns "
+                f"time={header!r} reads the table as a time series") in err
+
+
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
 def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
                                                                          mkm_cli):
