@@ -414,6 +414,14 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         built.append(_build(path, sha, g, m, tare, vented, accuracy or {}, override,
                             force_sign, one_step_per_row))
         bar.done()
+    shared = [k for k, g in enumerate(groups) if not {"eps", "length"} & set(g.columns)]
+    if len(prepared) > 1 and len(shared) > 1 and muscle.get("eps") is not None:
+        # a workbook of one sheet per state, its sheets told apart by their names alone
+        for k in shared:
+            built[k][3].append(f"eps {float(muscle['eps']):g} from --eps for each of the "
+                               f"{len(shared)} sheets without an eps or length column: if "
+                               "they hold different states, import each with --sheet NAME "
+                               "and its --eps")
     if exported and len(built) == 1 and not accuracy:
         built = [_restored(path, known, *built[0])]
     from mkm.bench.run import check_out_root

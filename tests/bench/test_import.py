@@ -278,6 +278,24 @@ def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
     assert one.meta.muscle.eps == pytest.approx(0.122)
 
 
+def test_sheets_of_a_workbook_given_one_eps_are_told_so(tmp_path, mkm_cli):
+    # one sheet per state, named by it, no eps column: --eps 0 made both runs eps 0 ('eps 10'
+    # too), unsaid, as two repeats of one state
+    path = tmp_path / "states.xlsx"
+    with pd.ExcelWriter(path) as book:
+        for sheet, eps in (("eps 0", 0.0), ("eps 10", 0.1)):
+            pd.DataFrame({"P (bar)": PRESSURES[:5],
+                          "F (N)": thickwall_N(PRESSURES[:5], eps)}).to_excel(
+                book, sheet_name=sheet, index=False)
+    runs, err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert [r.meta.muscle.eps for r in runs] == [0.0, 0.0]
+    assert err.count("eps 0 from --eps for each of the 2 sheets without an eps or length "
+                     "column: if they hold different states, import each with --sheet NAME "
+                     "and its --eps") == 2
+    (one,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "10%", "--sheet", "eps 10")
+    assert "for each of" not in err and one.meta.muscle.eps == pytest.approx(0.1)
+
+
 def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
     # a workbook of the measurements, a sheet of notes and the lab's results sheet
     # ('Auswertung': the peak force at the top pressure): the results sheet was imported as a
