@@ -49,7 +49,10 @@ from mkm.bench.storage import (
     muscle_from_dict,
 )
 from mkm.bench.tables import (
+    SUMMED_ROLES,
+    VOLTS_ROLES,
     Recognition,
+    Scaling,
     backwards_message,
     by_unit_columns,
     column_text,
@@ -61,8 +64,12 @@ from mkm.bench.tables import (
     numbers_as_read,
     read_tables,
     recognise,
+    several_forces,
     sheet_names,
+    statistic_columns,
+    taken_columns,
     unread_time_columns,
+    volts_header,
     without_blank_rows,
     without_summary_rows,
 )
@@ -81,9 +88,7 @@ if TYPE_CHECKING:
 
 REQUIRED_ROLES = ("pressure", "force")
 #: what to know choosing among columns that each hold a role by their unit
-SEVERAL_BY_UNIT = {"force": "cells in series read the same force; cells in parallel share it: "
-                   "add them in a column of the table",
-                   "pressure": "the sensor at the muscle, not one upstream of the regulator"}
+SEVERAL_BY_UNIT = {"pressure": "the sensor at the muscle, not one upstream of the regulator"}
 #: columns whose values split one table into runs (one muscle state each)
 SPLIT_ROLES = ("run", "eps", "length", "L0")
 EXCEL_MAX_ROWS = 1_048_575  # below the header row
@@ -234,6 +239,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  vented: str | float = "auto", select: str | None = None,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
                  one_step_per_row: bool = False, join: str | Path | None = None,
+                 join_shift_s: float | None = None, scaling: dict[str, Scaling] | None = None,
                  notify=lambda line: None, bar=None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -274,6 +280,14 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         Another table of the same record holding what ``path``'s tables lack (the force, or
         the pressure, with its time), joined to each by time
         (:func:`mkm.bench.tables.join_by_time`).
+    join_shift_s : float, optional
+        The seconds ``join``'s times are moved later on the table's clock: where each counts
+        from its own start, when its logger started after the table's (required then);
+        where both are date-times or clock readings, how far its clock runs behind.
+    scaling : dict, optional
+        Role -> :class:`mkm.bench.tables.Scaling`: how a channel logged in volts becomes a
+        pressure or a force (:func:`mkm.bench.tables.parse_scaling`), as the bench scales its
+        load cell; a channel in volts without one is refused.
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -288,6 +302,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     """
     path = Path(path)
     bar = _Stages(bar)
+    if join_shift_s is not None and join is None:
+        raise ValueError(f"--join-shift {join_shift_s:g} s: no --join-by-time FILE: expected it "
+                         "with the file whose times it moves")
     if force_sign not in FORCE_SIGNS:
         raise ValueError(f"--force-sign {force_sign!r} is invalid: expected one of "
                          f"{', '.join(map(str, FORCE_SIGNS))}")
@@ -306,40 +323,48 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     tables = read_tables(path, sheet)
     bar.done(len(tables))
     names = [t.sheet for t in tables]
-    other = _join_table(join) if join is not None else None
+    other = _join_table(join, scaling) if join is not None else None
     prepared, skipped = [], []
     for table in tables:
         bar.start(f"recognising {table.name}")
-        found = recognise(table, columns, units)
+        found = recognise(table, columns, units, scaling)
         missing = [r for r in REQUIRED_ROLES if r not in found]
         if other is not None:
             if not missing:
                 raise ValueError(f"--join-by-time {Path(join).name}: {table.name} holds a "
                                  "pressure and a force column itself: expected the other table "
                                  "to give the one it lacks")
-            table, found = join_by_time(table, found, *other, missing)
+            table, found = join_by_time(table, found, *other, missing, join_shift_s)
             table.joined["sha256"] = file_sha256(join)
             missing = []
-        if missing and len(tables) > 1 and "pressure" not in found and "force" not in found:
-            skipped.append(table.sheet)
+        if missing and len(tables) > 1 and not any(
+                len(by_unit_columns(table, r, found)) > 1 for r in missing):
+            # a sheet of notes or of the lab's results beside the measurements: named below
+            skipped.append(f"{table.sheet!r} ({_lacks(table, missing)})")
             continue
         for role in missing:
             if len(by_unit := by_unit_columns(table, role, found)) > 1:
                 shown = [repr(table.header[k]) for k in by_unit]
+                what = (f": {several_forces([table.header[k] for k in by_unit])}"
+                        if role in SUMMED_ROLES else f", chosen with --columns {role}=COLUMN "
+                        f"({SEVERAL_BY_UNIT[role]})")
                 raise ValueError(f"{table.name}: no column is named a {role}, and "
                                  f"{len(shown)} hold one by their unit, "
                                  f"{', '.join(shown[:-1])} and {shown[-1]}: which is the "
-                                 f"muscle's is not guessed: expected one, chosen with --columns "
-                                 f"{role}=COLUMN ({SEVERAL_BY_UNIT[role]})")
+                                 f"muscle's is not guessed: expected one{what}")
         if missing:
+            in_volts = [h for h in table.header if h and volts_header(h)]
             raise ValueError(f"{table.name}: no {' or '.join(missing)} column among "
                              f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "
                              f"name it with --columns {missing[0]}=COLUMN (and --units "
-                             f"{missing[0]}=UNIT)")
+                             f"{missing[0]}=UNIT"
+                             + (f"; a channel in volts, {in_volts[0]!r}, with --sensitivity "
+                                f"{missing[0]}={VOLTS_ROLES[missing[0]][0]}" if in_volts
+                                else "") + ")")
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
-                                                 k not in {c.index for c in found.values()}])
+                                                 k not in taken_columns(found)])
         # without a time column every row is a step, or a record's rows are taken as evenly
         # spaced: a clock by a name the reader does not know is left out (an export's steps
         # have times)
@@ -349,8 +374,6 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                    series.sampled_without_time(recognition.values("pressure"))
                    else "every row is a step")
         notify(f"{table.name}: {recognition.line()}"
-               + (f"; sheets without pressure and force skipped: {', '.join(skipped)}"
-                  if skipped else "")
                + "".join(f"; column {header!r} holds times but is not read as the time "
                          f"column: {read_as}; if it is the record's clock, --columns "
                          f"time={header!r} reads the table as a time series"
@@ -360,6 +383,16 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     if not prepared:
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
                          f"{', '.join(map(repr, names))})")
+    if skipped:
+        notify(f"{path.name}: sheets without a pressure and a force column skipped: "
+               f"{', '.join(skipped)}")
+    for role, scale in (scaling or {}).items():  # given for no column: it would be ignored
+        if not any(r.columns[role].scale or role in r.table.joined.get("columns", {})
+                   for r in prepared):
+            raise ValueError(f"--sensitivity {role}={scale.text}: {prepared[0].table.name}'s "
+                             f"{role} column {prepared[0].columns[role].header!r} is not "
+                             "logged in volts: expected a scaling only for a channel logged "
+                             "in V or mV")
     untimed = [r.table.name for r in prepared if "time" not in r.columns
                and not series.sampled_without_time(r.values("pressure"))]
     if (untimed or one_step_per_row) and not isinstance(vented, str):
@@ -381,6 +414,14 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         built.append(_build(path, sha, g, m, tare, vented, accuracy or {}, override,
                             force_sign, one_step_per_row))
         bar.done()
+    shared = [k for k, g in enumerate(groups) if not {"eps", "length"} & set(g.columns)]
+    if len(prepared) > 1 and len(shared) > 1 and muscle.get("eps") is not None:
+        # a workbook of one sheet per state, its sheets told apart by their names alone
+        for k in shared:
+            built[k][3].append(f"eps {float(muscle['eps']):g} from --eps for each of the "
+                               f"{len(shared)} sheets without an eps or length column: if "
+                               "they hold different states, import each with --sheet NAME "
+                               "and its --eps")
     if exported and len(built) == 1 and not accuracy:
         built = [_restored(path, known, *built[0])]
     from mkm.bench.run import check_out_root
@@ -404,16 +445,26 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     return out
 
 
-def _join_table(path: str | Path):
+def _lacks(table, missing: list[str]) -> str:
+    """What a sheet skipped lacks, in words: ``neither``, or ``no force column`` and the
+    columns of that unit whose names make them statistics (``'F max (N)'``)."""
+    if len(missing) > 1:
+        return "neither"
+    named = statistic_columns(table, missing[0])
+    return f"no {missing[0]} column" + "".join(f"; {h!r} is a statistic, no reading"
+                                               for h in named[:1])
+
+
+def _join_table(path: str | Path, scaling=None):
     """The table of ``--join-by-time`` and its columns: a text table, or the one sheet of a
-    workbook holding a time column."""
+    workbook holding a time column (``scaling``: its channels logged in volts)."""
     tables = read_tables(path)
-    timed = [(t, found) for t in tables if "time" in (found := recognise(t))]
+    timed = [(t, found) for t in tables if "time" in (found := recognise(t, scaling=scaling))]
     if len(tables) > 1 and len(timed) != 1:
         raise ValueError(f"--join-by-time {Path(path).name}: {len(timed)} of its sheets hold a "
                          f"time column: expected one (sheets "
                          f"{', '.join(repr(t.sheet) for t in tables)}); save it alone")
-    return timed[0] if timed else (tables[0], recognise(tables[0]))
+    return timed[0] if timed else (tables[0], recognise(tables[0], scaling=scaling))
 
 
 class _Stages:
@@ -706,13 +757,15 @@ def _closing_rest(clock, pressure, force, rest) -> series.Tare | None:
     """The vented rest that ends a record where it is a surer zero than ``rest``, the one
     before its rise: that one of fewer than :data:`mkm.bench.series.SHORT_REST_SAMPLES`
     samples (the logging began as the pressure rose: they already pull) or held pressurised,
-    this one vented and of that many samples or more; else None."""
+    this one vented and of that many samples or more where settled; else None. One whose
+    force still falls (``settled`` False) is returned, for the caller to say why it is no
+    zero."""
     if rest.rest.stop >= series.SHORT_REST_SAMPLES and \
             rest.pressure_bar <= series.VENTED_THRESHOLD_BAR:
         return None
     end = series.end_rest(clock, pressure, force)
     if (end.rest.start <= rest.rest.stop or end.pressure_bar > series.VENTED_THRESHOLD_BAR
-            or end.rest.stop - end.rest.start < series.SHORT_REST_SAMPLES):
+            or (end.settled and end.rest.stop - end.rest.start < series.SHORT_REST_SAMPLES)):
         return None
     return end
 
@@ -741,6 +794,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     an option replaced of the table, said first)."""
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), force_sign * group.values("force")
+    for k in np.flatnonzero(np.abs(force) > MAX_CAPACITY_N)[:1]:  # no load cell reads it
+        raise ValueError(f"{table.name}, cell {group.cell(int(k), 'force')} (column "
+                         f"{found['force'].header!r}): {force_sign * force[k]:g} N is beyond "
+                         f"the largest load cell a bench takes ({MAX_CAPACITY_N:g} N): "
+                         "expected a force reading (a logger's overload value, or a unit "
+                         "--units force=... gives)")
     notes, handling = ([override], {"L0": override}) if override else ([], {})
     handling["force_sign"] = force_sign
     handling["one_step_per_row"] = one_step_per_row
@@ -858,6 +917,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         zero_rows = rest.rest
         if tare == "auto":
             closing = _closing_rest(clock, pressure, force, rest)
+        if closing is not None and not closing.settled:  # a vent's tail: still pulling
+            notes.append("the vented rest that ends the record still falls (its force's trend "
+                         f"beyond {series.SETTLED_TREND_SE:g} standard errors to its end): not "
+                         "taken as the zero; a longer rest after the vent, or --tare N, gives "
+                         "one")
+            closing = None
     else:
         order = (np.array(directions(table, found["direction"]))[group.rows]
                  if "direction" in found else _inferred(pressure))
@@ -883,7 +948,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         handling["tare"] = (
             f"mean force of the {closing.rest.stop - closing.rest.start} {what}(s) of the "
             "vented rest that ends the record"
-            + (f" (from {time_s[closing.rest.start]:.4g} s)" if timed else "") + ": "
+            + (f" (from {time_s[closing.rest.start]:.4g} s, where its force has settled)"
+               if timed else " (where its force has settled)") + ": "
             + (f"it starts held at {zero_at:.3g} bar" if zero_at > series.VENTED_THRESHOLD_BAR
                else f"only {rest.rest.stop} {what}(s) before the pressure rises"))
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:

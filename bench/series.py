@@ -10,7 +10,8 @@ A lab's record is pressure and force sampled in time. Before any step is taken f
   the mean force of the rest before the pressure rises, that rest ended where a fit in time
   puts the rise's start (:func:`rise_start`): the pressure's level there, not a band of
   pressure, tells it, since on a ramp the first 0.03 bar already pull; :func:`end_rest` finds
-  the record's closing rest the same way, whose force tells a drifted zero.
+  the record's closing rest the same way, whose force tells a drifted zero: only its settled
+  part (:func:`settled_start`), since a vent's tail still pulls as the rest begins.
 
 Then :func:`shape` tells a staircase (the pressure held on plateaus most of the time) from a
 ramp, and the steps are taken:
@@ -52,6 +53,11 @@ RAMP_MIN_BIN_BAR = 0.02
 RISE_WINDOW_BAR = 0.05
 #: a tare from fewer samples than this is said to be short
 SHORT_REST_SAMPLES = 10
+#: a rest's force has settled where its least-squares trend to the rest's end lies within
+#: this many standard errors of none (a vent's tail pulls the most at the rest's start, and a
+#: test of the halves' means misses the tail a trend shows); a rest of noise alone shows such a
+#: trend by chance once in 80, and is then trimmed, not misread
+SETTLED_TREND_SE = 2.5
 #: a ramp turns (up to down, or back) where the pressure comes back this share of its range
 TURN_SHARE = 0.1
 #: a table without time of more rows than this, its successive readings within a plateau's
@@ -182,6 +188,8 @@ class Tare:
     std_N: float
     pressure_bar: float
     rest: slice
+    #: False: the force still trends to the rest's end (:func:`settled_start` found no start)
+    settled: bool = True
 
 
 def rise_start(time_s: np.ndarray, pressure_bar: np.ndarray) -> int:
@@ -236,11 +244,46 @@ def tare(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) -> T
 
 def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) -> Tare:
     """The rest that ends the record, found as :func:`tare` finds the one that starts it, on
-    the record read backwards: its mean force is the zero read after the run (a load cell that
-    drifted, or a muscle that did not come back, reads another)."""
+    the record read backwards, from where its force has settled (:func:`settled_start`; its
+    second half, ``settled`` False, where it never does): its mean force is the zero read after
+    the run (a load cell that drifted, or a muscle that did not come back, reads another)."""
     n = pressure_bar.size
     back = tare(time_s[-1] - time_s[::-1], pressure_bar[::-1], force_N[::-1])
-    return Tare(back.force_N, back.std_N, back.pressure_bar, slice(n - back.rest.stop, n))
+    first = n - back.rest.stop
+    start = settled_start(time_s[first:], force_N[first:])
+    settled = start is not None
+    first += start if settled else (n - first) // 2
+    f = force_N[first:]
+    std = float(f.std(ddof=1)) / math.sqrt(f.size) if f.size > 1 else math.nan
+    return Tare(float(f.mean()), std, float(np.median(pressure_bar[first:])), slice(first, n),
+                settled)
+
+
+def settled_start(time_s: np.ndarray, force_N: np.ndarray) -> int | None:
+    """The first sample of a rest from which its force's least-squares trend to the end lies
+    within :data:`SETTLED_TREND_SE` standard errors of none, leaving
+    :data:`SHORT_REST_SAMPLES` samples or more (a shorter rest judged whole); None where none
+    does (still moving). A rest of fewer than 3 samples shows no trend: 0."""
+    n = time_s.size
+    if n < 3:
+        return 0
+    t, f = time_s - time_s[0], force_N - force_N.mean()  # centred: sums without cancellation
+
+    def tail(x):
+        return np.cumsum(x[::-1])[::-1]
+
+    m = np.arange(n, 0, -1, dtype=float)  # samples from k on
+    st, stt, sf, sff, stf = tail(t), tail(t * t), tail(f), tail(f * f), tail(t * f)
+    sxx = stt - st * st / m
+    sxy = stf - st * sf / m
+    syy = sff - sf * sf / m
+    with np.errstate(divide="ignore", invalid="ignore"):
+        slope = sxy / sxx
+        rss = np.maximum(syy - sxy * slope, 0.0)
+        se = np.sqrt(rss / (m - 2.0) / sxx)
+        flat = np.abs(slope) <= SETTLED_TREND_SE * se
+    candidates = np.flatnonzero(flat[:min(max(n - SHORT_REST_SAMPLES, 0), n - 3) + 1])
+    return int(candidates[0]) if candidates.size else None
 
 
 def held_plateaus(time_s: np.ndarray, pressure_bar: np.ndarray,

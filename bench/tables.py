@@ -95,6 +95,18 @@ SET_POINT_WORDS = {"soll", "sollwert", "set", "setpoint", "target", "command", "
 
 def _set_point(name: str) -> bool:
     return name.startswith(SET_POINT_PREFIX) or bool(SET_POINT_WORDS & set(name.split()))
+
+
+#: the words of a column's name that make it a statistic of a quantity, no reading of it (a
+#: results sheet's 'F max (N)', 'Peak force'): not taken by its unit alone (a mean is a hold's
+#: reading, as a step table gives it)
+STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "sum", "summe",
+                   "total", "gesamt", "std", "stdev", "sd", "count", "anzahl", "range"}
+
+
+def statistic(name: str) -> bool:
+    """Whether a column's name (as :func:`parse_header` gives it) names a statistic."""
+    return bool(STATISTIC_WORDS & set(name.split()))
 #: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
 CLOCK_NAMES = {"millis": "ms", "micros": "us"}
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
@@ -107,6 +119,7 @@ ROLES = {
                   "datum zeit", "datum uhrzeit", "datum und uhrzeit", "datum und zeit",
                   "relative time", "time since start", "runtime", "run time", "test time",
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
+                  "zeitpunkt", "messzeitpunkt",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
                   # seconds since 1970 as a logger names them
@@ -149,6 +162,8 @@ class RawTable:
     decimal: str = "."
     #: the first blank cell of each row :func:`without_blank_rows` left out (``B7``)
     blanks_skipped: list[str] = field(default_factory=list)
+    #: the first overload mark of each row :func:`without_blank_rows` left out (``C7 ('OVL')``)
+    overloads_skipped: list[str] = field(default_factory=list)
     #: the cell naming the statistic of each row :func:`without_summary_rows` left out
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
@@ -170,6 +185,7 @@ class RawTable:
                 "title_rows": self.title_rows, "separator": self.separator,
                 "decimal": self.decimal, "rows": len(self.rows),
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
+                "rows_skipped_for_an_overload": self.overloads_skipped,
                 "summary_rows_skipped": self.summaries_skipped,
                 "footer_rows_skipped": self.footer_skipped,
                 **({"joined_by_time": self.joined} if self.joined else {})}
@@ -642,7 +658,8 @@ _WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
 #: a header's name ending in a pressure unit, and the mark that may follow it in brackets
 _MARKED_UNIT = re.compile(r"^(?P<name>.*?\S)[\s_,]+(?P<unit>m?bar|[km]?pa|psi)\s*$",
                           re.IGNORECASE)
-_PRESSURE_MARK = re.compile(r"g|gauge|ü|a|abs|absolute", re.IGNORECASE)
+_PRESSURE_MARK = re.compile(r"g|gauge|ü|rel\.?|relativ|relative|relatif|a|abs|absolute",
+                            re.IGNORECASE)
 
 
 @cache
@@ -673,9 +690,11 @@ LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", 
 
 
 #: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü),
-#: atü (German technical atmospheres above the atmosphere)
+#: atü (German technical atmospheres above the atmosphere), bar rel, bar relativ, bar relatif
+#: (German and French: relative to the atmosphere)
 _GAUGE = re.compile(r"(?P<unit>m?bar|[km]?pa|psi|at)\s*"
-                    r"(?:\(\s*(?:g|gauge|ü)\s*\)|(?:g|gauge|ü))", re.IGNORECASE)
+                    r"(?:\(\s*(?:g|gauge|ü|rel\.?|relativ|relative|relatif)\s*\)"
+                    r"|(?:g|gauge|ü|rel\.?|relativ|relative|relatif))", re.IGNORECASE)
 #: the same marked absolute (bar a, bar(a), psia, bar abs, ata): refused, with why
 _ABSOLUTE = re.compile(r"(?:m?bar|[km]?pa|psi|at)\s*"
                        r"(?:\(\s*(?:a|abs|absolute)\s*\)|(?:a|abs|absolute))", re.IGNORECASE)
@@ -717,13 +736,21 @@ def _fits(unit, role: Role) -> bool:
 
 def unread_time_columns(table: RawTable, found: dict[str, Column]) -> list[str]:
     """The headers of ``table`` that no role took and whose unit is one of time (``Zeit seit
-    Beginn [s]``): a record's clock by a name the reader does not know, or a hold's duration;
-    or that are a channel's own time (:func:`_channel_times`)."""
-    taken = {c.index for c in found.values()}
+    Beginn [s]``) or whose first cell is a clock reading or a date-time (``Messung am``): a
+    record's clock by a name the reader does not know, or a hold's duration; or that are a
+    channel's own time (:func:`_channel_times`)."""
+    taken = taken_columns(found)
     channels = set(_channel_times(table, taken))
     return [header for index, header in enumerate(table.header) if header and index not in taken
-            and (index in channels or (unit := parse_header(header)[1]) is not None
+            and (index in channels or _first_a_time(table, index)
+                 or (unit := parse_header(header)[1]) is not None
                  and (clock_format(unit) or _fits(parse_unit(unit), ROLES["time"])))]
+
+
+def _first_a_time(table: RawTable, index: int) -> bool:
+    """Whether the first filled cell of a column is a clock reading or a date-time."""
+    first = next((row[index] for row in table.rows if str(row[index]).strip()), None)
+    return first is not None and not isinstance(first, int | float) and _clock(first) is not None
 
 
 #: the first word of a channel's own time column's name (``Time - Pressure``, as
@@ -795,13 +822,119 @@ class Column:
     excel_days: bool = False
     #: ``unit`` is the one its cells are written with ('0,5 at'), its header naming none
     in_cells: bool = False
+    #: the columns this one adds up (``--columns force=A+B``: load cells sharing the pull),
+    #: each in its own unit; ``index`` is the first's
+    parts: tuple[Column, ...] = ()
+    #: how its volts become the role's unit (a channel logged in volts: ``--sensitivity``)
+    scale: Scaling | None = None
+
+    @property
+    def indices(self) -> tuple[int, ...]:
+        """The table's columns this one reads: its own, or those it adds up."""
+        return tuple(p.index for p in self.parts) or (self.index,)
 
     def describe(self) -> dict:
         role_unit = ROLES[self.role].unit
         unit = EXCEL_DAYS if self.excel_days else self.unit
         return {"column": self.header, "unit": unit if unit is not None else role_unit,
                 "converted_to": role_unit if role_unit else ("fraction" if role_unit == ""
-                                                             else None)}
+                                                             else None),
+                **({"sum_of": [p.describe() for p in self.parts]} if self.parts else {}),
+                **({"scaling": self.scale.describe()} if self.scale else {})}
+
+
+#: the roles a channel logged in volts may hold (a load-cell amplifier's output, a 0-10 V
+#: pressure transducer), scaled as the bench scales its load cell, ``[loadcell]``
+#: ``sensitivity_N_per_V`` and ``offset_V``: (volts - offset) * sensitivity; each with its
+#: scaling's placeholder and where its offset is read
+VOLTS_ROLES = {"pressure": ("BAR_PER_V", "at 0 bar"), "force": ("N_PER_V", "unloaded")}
+
+
+@dataclass(frozen=True)
+class Scaling:
+    """A channel logged in volts as its role's quantity: ``(volts - offset_V) *
+    sensitivity_per_V`` (in the role's unit per volt), as typed (``text``)."""
+
+    sensitivity_per_V: float
+    offset_V: float
+    text: str
+
+    def describe(self) -> dict:
+        return {"sensitivity_per_V": self.sensitivity_per_V, "offset_V": self.offset_V}
+
+
+_SCALE_PART = re.compile(r"^(?P<number>[+-]?(?:\d+[.,]?\d*|[.,]\d+)(?:[eE][+-]?\d+)?)\s*"
+                         r"(?P<unit>.*)$")
+
+
+def _volts(unit) -> bool:
+    return unit is not None and unit.dimensionality == registry().Unit("V").dimensionality
+
+
+def volts_header(header: str) -> bool:
+    """Whether a header names a unit of voltage (``AI0 [V]``, ``Kraft (mV)``)."""
+    unit = parse_header(header)[1]
+    return unit is not None and _volts(parse_unit(unit))
+
+
+def parse_scaling(sensitivity: str | None, offset: str | None) -> dict[str, Scaling]:
+    """``--sensitivity force=200N/V,pressure=2.5bar/V`` and ``--offset-volts
+    force=0.012,pressure=0.5V`` -> role -> :class:`Scaling`: a sensitivity in any unit of the
+    role per volt (a bare number: N/V, bar/V), positive; an offset in volts (default 0 V);
+    ``ValueError`` naming a bad item."""
+    given = parse_assignments(sensitivity, "--sensitivity", VOLTS_ROLES)
+    offsets = parse_assignments(offset, "--offset-volts", VOLTS_ROLES)
+    for role in offsets.keys() - given.keys():
+        raise ValueError(f"--offset-volts {role}={offsets[role]}: no --sensitivity {role}=...: "
+                         f"expected both for a channel logged in volts")
+    out = {}
+    for role, text in given.items():
+        per = f"{ROLES[role].unit}/V"
+        match = _SCALE_PART.match(text.strip())
+        unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
+            registry().Unit(per) if match else None
+        if unit is None or unit.dimensionality != registry().Unit(per).dimensionality:
+            raise ValueError(f"--sensitivity {role}={text} is invalid: expected the {role} per "
+                             f"volt, e.g. {role}=200{per}" if role == "force" else
+                             f"--sensitivity {role}={text} is invalid: expected the {role} per "
+                             f"volt, e.g. {role}=2.5{per}")
+        value = float(registry().Quantity(float(match["number"].replace(",", ".")), unit)
+                      .to(per).magnitude)
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"--sensitivity {role}={text} is invalid: expected a {role} per "
+                             "volt above 0 (--force-sign -1 reads a load cell wired to read "
+                             "the pull negative)")
+        offset_V = 0.0
+        if role in offsets:
+            written = offsets[role]
+            match = _SCALE_PART.match(written.strip())
+            unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
+                registry().Unit("V") if match else None
+            if not _volts(unit):
+                raise ValueError(f"--offset-volts {role}={written} is invalid: expected the "
+                                 f"volts the channel reads {VOLTS_ROLES[role][1]}, e.g. "
+                                 f"{role}=0.012 or {role}=12mV")
+            offset_V = float(registry().Quantity(float(match["number"].replace(",", ".")),
+                                                 unit).to("V").magnitude)
+        out[role] = Scaling(value, offset_V, text)
+    return out
+
+
+#: the roles whose columns ``--columns ROLE=A+B`` adds up: load cells in parallel share the
+#: muscle's pull (pressures, times or lengths added make no reading)
+SUMMED_ROLES = ("force",)
+
+
+def taken_columns(found: dict[str, Column]) -> set[int]:
+    """The table's columns the recognised ``found`` read (the parts of a sum each)."""
+    return {k for c in found.values() for k in c.indices}
+
+
+def several_forces(headers: list[str]) -> str:
+    """What to do with several force columns: choose one, or add them (``A+B``)."""
+    return ("choose one with --columns force=COLUMN (load cells in series each read the whole "
+            f"force), or add them with --columns force='{'+'.join(headers)}' (cells in parallel "
+            "share it)")
 
 
 def parse_assignments(text: str | None, option: str, roles=ROLES) -> dict[str, str]:
@@ -826,24 +959,42 @@ def parse_assignments(text: str | None, option: str, roles=ROLES) -> dict[str, s
 
 
 def recognise(table: RawTable, columns: dict[str, str] | None = None,
-              units: dict[str, str] | None = None) -> dict[str, Column]:
+              units: dict[str, str] | None = None,
+              scaling: dict[str, Scaling] | None = None) -> dict[str, Column]:
     """The column of each role found in ``table`` (see the module docstring).
 
-    ``columns`` names a role's column outright, ``units`` its unit. ``ValueError``: a
-    named column missing, two columns claiming one role, or a unit of the wrong dimension.
+    ``columns`` names a role's column outright, ``units`` its unit, ``scaling`` how a channel
+    logged in volts becomes its role's quantity. ``ValueError``: a named column missing, two
+    columns claiming one role, a unit of the wrong dimension, a channel in volts without a
+    scaling or a scaling for one not in volts.
     """
     columns, units = columns or {}, units or {}
     found: dict[str, Column] = {}
     headers = table.header
-    for role, header in columns.items():
-        if header not in headers:
-            header = _header_named(table, role, header)
-        if headers.count(header) > 1:  # the first would be taken, the others dropped unsaid
-            raise ValueError(f"--columns {role}={header!r}: {table.name} has "
-                             f"{_same_name(headers, header)}: expected one column of that "
-                             "name; rename the others in the file")
-        found[role] = Column(role, headers.index(header), header, parse_header(header)[1], True)
-    taken = {c.index for c in found.values()}
+    for role, given in columns.items():
+        named = [given] if given in headers or "+" not in given else \
+            [part.strip() for part in given.split("+")]
+        if len(named) > 1 and role not in SUMMED_ROLES:
+            raise ValueError(f"--columns {role}={given!r}: only {' and '.join(SUMMED_ROLES)} "
+                             f"columns add up (load cells sharing the pull): expected one "
+                             f"{role} column")
+        parts = []
+        for header in named:
+            if header not in headers:
+                header = _header_named(table, role, header)
+            if headers.count(header) > 1:  # the first would be taken, the others dropped unsaid
+                raise ValueError(f"--columns {role}={header!r}: {table.name} has "
+                                 f"{_same_name(headers, header)}: expected one column of that "
+                                 "name; rename the others in the file")
+            parts.append(Column(role, headers.index(header), header, parse_header(header)[1],
+                                True))
+        if len({p.index for p in parts}) < len(parts):
+            raise ValueError(f"--columns {role}={given!r} names one column twice: expected "
+                             "each column added once")
+        found[role] = parts[0] if len(parts) == 1 else Column(
+            role, parts[0].index, " + ".join(p.header for p in parts), ROLES[role].unit,
+            True, parts=tuple(parts))
+    taken = taken_columns(found)
     for index, header in enumerate(headers):
         if index in taken or not header:
             continue
@@ -863,7 +1014,9 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                              "column: expected one; rename the others in the file")
         if role in found:
             raise ValueError(f"{table.name}: two {role} columns, {found[role].header!r} and "
-                             f"{header!r}: choose one with --columns {role}=COLUMN")
+                             f"{header!r}: " + (several_forces([found[role].header, header])
+                                                if role in SUMMED_ROLES else
+                                                f"choose one with --columns {role}=COLUMN"))
         found[role] = Column(role, index, header, unit)
     for role in BY_UNIT_ROLES:
         # a DAQ's channel by its number ('AI 1 [bar]'): the one column whose unit is of the
@@ -875,7 +1028,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     if "time" not in found:
         # each channel beside its own time: one clock where they read alike row by row (one
         # such column alone may be a hold's duration, 'Time held (s)': named, not taken)
-        channels = _channel_times(table, {c.index for c in found.values()})
+        channels = _channel_times(table, taken_columns(found))
         if len(channels) > 1 and all(row[k] == row[channels[0]] for row in table.rows
                                      for k in channels):
             header = headers[channels[0]]
@@ -884,8 +1037,9 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
         if role not in found:
             raise ValueError(f"--units {role}={unit}: {table.name} has no {role} column "
                              f"(found {_listed(c.header for c in found.values())})")
-        found[role].unit = unit
-    for column in found.values():
+        for column in found[role].parts or (found[role],):
+            column.unit = unit
+    for column in [p for c in found.values() for p in c.parts or (c,)]:
         if column.unit is None and ROLES[column.role].unit is not None:
             # the unit the first cell is written with ('0,5 at'), as the line and run.json
             # say it; column_values reads every cell's and refuses mixed ones
@@ -894,6 +1048,20 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
             written = _number(first, table.decimal)[1] if isinstance(first, str) else None
             if written is not None:
                 column.unit, column.in_cells = written, True
+    for role, scale in (scaling or {}).items():
+        if role in found:
+            column = found[role]
+            if not all(_volts(parse_unit(p.unit) if p.unit else None)
+                       for p in column.parts or (column,)):
+                written = (f"is in {column.unit!r}" if column.unit else
+                           f"names no unit (read in {ROLES[role].unit})")
+                raise ValueError(f"--sensitivity {role}={scale.text}: column {column.header!r} "
+                                 f"{written}, not volts: expected a scaling only for a channel "
+                                 "logged in V or mV")
+            for part in column.parts or (column,):
+                part.scale = scale
+            column.scale = scale
+    for column in [p for c in found.values() for p in c.parts or (c,)]:
         _check_unit(table, column)
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
@@ -903,9 +1071,19 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
 def by_unit_columns(table: RawTable, role: str, found: dict[str, Column]) -> list[int]:
     """The columns no role took whose unit is of ``role``'s quantity, set points left out: the
     ones that may hold it where no column's name says it."""
-    taken = {c.index for c in found.values()}
+    taken = taken_columns(found)
     return [index for index, header in enumerate(table.header)
             if header and index not in taken and not _set_point(parse_header(header)[0])
+            and not statistic(parse_header(header)[0])
+            and (unit := parse_header(header)[1]) is not None
+            and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
+
+
+def statistic_columns(table: RawTable, role: str) -> list[str]:
+    """The headers whose unit is of ``role``'s quantity but whose name makes them a statistic
+    (:data:`STATISTIC_WORDS`), which :func:`by_unit_columns` leaves out."""
+    return [header for header in table.header
+            if header and statistic(parse_header(header)[0])
             and (unit := parse_header(header)[1]) is not None
             and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
 
@@ -984,6 +1162,14 @@ def _check_unit(table: RawTable, column: Column) -> None:
     if role.unit is None:
         raise ValueError(f"{table.name}: column {column.header!r} ({column.role}) takes no "
                          f"unit, got {column.unit!r}")
+    if column.role in VOLTS_ROLES and column.scale is None and _volts(parse_unit(column.unit)):
+        placeholder, zero = VOLTS_ROLES[column.role]
+        raise ValueError(f"{table.name}: column {column.header!r} is logged in volts "
+                         f"({column.unit!r}): expected a {column.role} unit like {role.unit}, "
+                         f"or the channel's scaling: --sensitivity {column.role}={placeholder} "
+                         f"(and --offset-volts {column.role}=V, what it reads {zero})")
+    if column.scale is not None:
+        return  # its volts scaled to the role's unit
     if column.role == "pressure" and _ABSOLUTE.fullmatch(column.unit.strip()):
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is an "
                          "absolute pressure: expected a gauge pressure, above the atmosphere as "
@@ -1030,7 +1216,9 @@ def _listed(headers) -> str:
 def column_values(table: RawTable, column: Column, optional: bool = False) -> np.ndarray:
     """The cells of ``column`` as numbers in the toolkit's unit (pint converts); ``ValueError``
     naming the first cell that is text, not finite, or carries a unit other cells do not
-    (``optional``: an empty cell is NaN, a value not known)."""
+    (``optional``: an empty cell is NaN, a value not known); a sum's parts each so, added."""
+    if column.parts:
+        return sum(column_values(table, part, optional) for part in column.parts)
     role = ROLES[column.role]
     raw = [row[column.index] for row in table.rows]
     if column.role == "time":
@@ -1084,7 +1272,10 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
                              f"in {where1}, {u2!r} in cell {table.cell(k2, column.index)}: "
                              "expected one unit per column")
         unit = next(iter(inline))
-        _check_unit(table, Column(column.role, column.index, column.header, unit))
+        _check_unit(table, replace(column, unit=unit))
+    if column.scale is not None:  # volts as the bench scales its load cell's
+        volts = (values * parse_unit(unit)).to("V").magnitude
+        return (volts - column.scale.offset_V) * column.scale.sensitivity_per_V
     if unit is None or role.unit is None:
         return values
     target = role.unit or "dimensionless"
@@ -1246,7 +1437,8 @@ def backwards_message(where: str, header: str, jump_s: float) -> str:
     """The one line of a time column that goes back by ``jump_s`` [s] at ``where`` (a table
     and its cell); an hour back is named as a clock put back (summer time's end)."""
     dst = (" by an hour: a local clock put back at the end of summer time? give the times with "
-           "their zone (+02:00, +01:00)" if abs(jump_s - 3600.0) <= 60.0 else "")
+           "their zone (+02:00, +01:00)" if abs(jump_s - 3600.0) <= 60.0 else
+           f" by {jump_s:.4g} s")
     return (f"{where} (column {header!r}): the time goes backwards{dst}: expected samples in "
             "time order")
 
@@ -1268,16 +1460,27 @@ def _time_origin(table: RawTable, column: Column) -> tuple[str, float] | None:
     return reading if reading is not None and reading[0] in ("date-time", "clock") else None
 
 
+def _own_start(times: np.ndarray, origin) -> bool:
+    """Whether a time column counts from its own start: clock readings or date-times (read
+    from their first row), or seconds whose first reading is 0 or one sampling interval."""
+    if origin is not None:
+        return True
+    return times.size > 1 and 0.0 <= times[0] <= max(float(np.median(np.diff(times))), 0.0)
+
+
 def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
-                 other_found: dict[str, Column],
-                 roles: list[str]) -> tuple[RawTable, dict[str, Column]]:
+                 other_found: dict[str, Column], roles: list[str],
+                 shift_s: float | None = None) -> tuple[RawTable, dict[str, Column]]:
     """``table`` with the columns of ``roles`` from ``other``, another table of the same
     record, each interpolated linearly at ``table``'s times (in the toolkit's unit), and
     ``found`` with them: the times compared as moments where both are date-times or clock
     readings of one kind, else as read (seconds; clock readings from their first row).
-    ``table``'s rows outside ``other``'s times are left out (nothing extrapolated);
-    ``ValueError`` naming what is missing, a time that goes backwards, or tables whose times
-    do not overlap."""
+    ``shift_s`` [s] moves ``other``'s times later on ``table``'s clock: where two loggers each
+    count from their own start, the seconds ``other``'s started after ``table``'s (required
+    then: as read they would be joined as if started together); where both are moments, a
+    clock that runs behind the other's. ``table``'s rows outside ``other``'s times are left
+    out (nothing extrapolated); ``ValueError`` naming what is missing, a time that goes
+    backwards, or tables whose times do not overlap."""
     for where, columns, what in ((table, found, ("time",)), (other, other_found,
                                                                ("time", *roles))):
         absent = [r for r in what if r not in columns]
@@ -1307,12 +1510,25 @@ def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
                              f"date-times carry a time zone ({firsts[with_zone]!r}) and "
                              f"{names[plain]}'s none ({firsts[plain]!r}), which is read as "
                              "UTC: expected both with their zone or both without")
+    given = (f", {other.name}'s moved {shift_s:+.4g} s (--join-shift)"
+             if shift_s is not None else "")
     if None not in origins and origins[0][0] == origins[1][0]:
         shift = origins[1][1] - origins[0][1]  # the other's first row, on this table's clock
-        how = f"as {origins[0][0]}s, {other.name} starting {shift:+.4g} s from {table.name}"
+        how = (f"as {origins[0][0]}s, {other.name} starting {shift:+.4g} s from {table.name}"
+               + given)
     else:  # seconds as written, clock readings from their first row
+        if shift_s is None and _own_start(times, origins[0]) and \
+                _own_start(other_times, origins[1]):
+            raise ValueError(
+                f"--join-by-time {other.source.name}: {table.name}'s times and {other.name}'s "
+                f"each count seconds from their own start ({times[0]:.4g} s and "
+                f"{other_times[0]:.4g} s in their first rows): when one logger started after "
+                f"the other is not in the files: expected --join-shift SECONDS, the seconds "
+                f"{other.name}'s logger started after {table.name}'s (negative: before; 0: one "
+                "trigger started both)")
         shift = 0.0
-        how = "their times as read, in seconds"
+        how = "their times as read" + (given or ", in seconds")
+    shift += shift_s or 0.0
     other_times = other_times + shift
     inside = (times >= other_times[0]) & (times <= other_times[-1])
     if not inside.any():
@@ -1390,22 +1606,50 @@ def without_summary_rows(table: RawTable) -> RawTable:
 
 
 #: what a cell reads where a logger or a spreadsheet has no reading: LabVIEW's NaN for a
-#: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none
-NO_READING = ("nan", "#n/a", "#nv")
+#: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none, a
+#: table's n/a or null; and a logger's dashes ('-', '---')
+NO_READING = ("nan", "#n/a", "#nv", "n/a", "null")
+_DASHES = re.compile(r"^-+$")
+#: what a logger writes where a channel read beyond its range (OVL, -OVL, OL, Over, Overload,
+#: Overrange, or SCPI's number :data:`SCPI_OVERLOAD`): no reading either, and said apart,
+#: since the cell or its range was too small
+_OVERLOAD = re.compile(r"^[+-]?\s*(?:ovl|ol|over|overload|overrange|over range|overflow)$",
+                       re.IGNORECASE)
+
+
+#: SCPI's overload value (+-9.9E37; 9.91E37 its not-a-number), which Keysight's and other
+#: instruments' loggers write as a reading over range: no force or pressure is near it
+SCPI_OVERLOAD = 9.9e37
+
+
+def _overload(cell) -> bool:
+    if isinstance(cell, str):
+        if _OVERLOAD.match(cell.strip()):
+            return True
+        try:
+            cell = float(cell.strip().replace(",", "."))
+        except ValueError:
+            return False
+    return isinstance(cell, int | float) and not isinstance(cell, bool) and \
+        abs(cell) >= SCPI_OVERLOAD
 
 
 def _no_reading(cell) -> bool:
     text = str(cell).strip()
-    return text == "" or text.lower() in NO_READING
+    return (text == "" or text.lower() in NO_READING or bool(_DASHES.match(text))
+            or _overload(text))
 
 
 def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
     """``table`` without the rows whose cell in one of ``columns`` is blank or reads as
     :data:`NO_READING` (a lab sheet's stray empty cell, a logger's lost sample: that row's
     reading is not known, and no value is made up for it), the first such cell of each in
-    ``blanks_skipped`` (with what it reads, where it is not empty). A workbook cell read empty
-    that holds a formula stays, for :func:`column_values` to name."""
-    blank = {k: next(c.index for c in columns if _no_reading(row[c.index]))
+    ``blanks_skipped`` (with what it reads, where it is not empty), or a logger's overload mark
+    (``OVL``: the reading beyond the channel's range), the first in ``overloads_skipped``. A
+    workbook cell read empty that holds a formula stays, for :func:`column_values` to name."""
+    columns = [p for c in columns for p in c.parts or (c,)]
+    blank = {k: next((c.index for c in columns if _overload(row[c.index])),
+                     next(c.index for c in columns if _no_reading(row[c.index])))
              for k, row in enumerate(table.rows)
              if any(_no_reading(row[c.index]) for c in columns)}
     formulas = _formulas(table, [(k, c.index) for k in blank for c in columns])
@@ -1418,9 +1662,11 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
         text = str(table.rows[k][blank[k]]).strip()
         return table.cell(k, blank[k]) + (f" ({text!r})" if text else "")
 
+    over = [k for k in skipped if _overload(table.rows[k][blank[k]])]
     return replace(table, rows=[table.rows[k] for k in keep],
                    row_numbers=[table.row_numbers[k] for k in keep],
-                   blanks_skipped=[named(k) for k in skipped])
+                   blanks_skipped=[named(k) for k in skipped if k not in set(over)],
+                   overloads_skipped=[named(k) for k in over])
 
 
 def _formula(table: RawTable, k: int, column: int) -> str | None:
@@ -1555,9 +1801,16 @@ class Recognition:
             unit, target = d["unit"], d["converted_to"]
             if unit == "":
                 unit = "fraction"
+            if column.parts:  # each part in its own unit
+                units = [p["unit"] for p in d["sum_of"]]
+                unit = " + ".join(units) if len(set(units)) > 1 else units[0]
             shown = (f" [{unit} -> {target}]" if target and unit != target
                      else f" [{unit}]" if unit else "")
-            parts.append(f"{column.header!r} -> {role}{shown}")
+            if column.scale:
+                shown = (f"{shown[:-1]}: {column.scale.sensitivity_per_V:g} {target}/V from "
+                         f"{column.scale.offset_V:g} V]")
+            header = " + ".join(repr(p.header) for p in column.parts or (column,))
+            parts.append(f"{header} -> {role}{shown}")
         extras = []
         if self.table.decimal == ",":
             extras.append("decimal comma")
@@ -1575,6 +1828,10 @@ class Recognition:
         if skipped := self.table.blanks_skipped:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))
+        if over := self.table.overloads_skipped:
+            extras.append(f"{len(over)} row(s) with an overload mark skipped: "
+                          + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")
+                          + ": the channel read beyond its range there")
         return ", ".join(parts) + (f"; {', '.join(extras)}" if extras else "")
 
     def describe(self) -> dict:

@@ -49,10 +49,22 @@ def register(subparsers) -> None:
                                       f"without either, {EXPORTED}"))
     imp.add_argument("--columns", default=None, metavar="ROLE=COLUMN,...",
                      help="which column holds what, where the names do not say: pressure=..., "
-                     "force=..., time=..., direction=..., eps=..., length=..., run=...")
+                     "force=..., time=..., direction=..., eps=..., length=..., run=...; "
+                     "force=A+B adds two load cells' columns (cells in parallel share the "
+                     "pull), each in its own unit")
     imp.add_argument("--units", default=None, metavar="ROLE=UNIT,...",
                      help="the unit of a column whose header names none or the wrong one, "
                      "e.g. pressure=kPa,force=lbf (default: bar, N, s, mm, a fraction)")
+    imp.add_argument("--sensitivity", default=None, metavar="ROLE=PER_VOLT,...",
+                     help="how a channel logged in volts (V or mV) becomes a force or a "
+                     "pressure, as the bench's [loadcell] sensitivity_N_per_V: the quantity per "
+                     "volt, e.g. force=200N/V (a load-cell amplifier), pressure=2.5bar/V (a "
+                     "0.5-4.5 V transducer of 0-10 bar); a bare number is N/V or bar/V "
+                     "(default: none; a column in volts without it is refused)")
+    imp.add_argument("--offset-volts", default=None, metavar="ROLE=VOLTS,...",
+                     help="what a channel scaled by --sensitivity reads unloaded or at 0 bar, "
+                     "subtracted before scaling, as [loadcell] offset_V: e.g. force=0.012, "
+                     "pressure=0.5V (default: 0 V)")
     imp.add_argument("--sheet", default=None, help="the workbook's sheet (default: every sheet "
                      "with a pressure and a force column, one run each)")
     imp.add_argument("--muscle", default=None, metavar="NAME",
@@ -80,6 +92,14 @@ def register(subparsers) -> None:
                      "interpolated linearly at the table's times, compared as moments where "
                      "both times are date-times or clock readings, else as read (seconds); "
                      "the table's rows outside its times are left out")
+    imp.add_argument("--join-shift", type=argtype(parse_number, "--join-shift", "s"),
+                     default=None, metavar="SECONDS",
+                     help="the seconds the --join-by-time file's times are moved later on the "
+                     "table's clock: where each logger counts seconds from its own start (no "
+                     "date-times), when the file's started after the table's (required then; "
+                     "negative: before, 0: one trigger started both); where both hold "
+                     "date-times or clock readings, how far its clock runs behind the "
+                     "table's (default: none)")
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "
                      "and the sensor's data sheet, or the table's stated accuracy): a value "
@@ -139,7 +159,7 @@ def _table_help() -> str:
 
 def _import(args) -> int:
     from mkm.bench.exchange import import_table, parse_accuracy, parse_zero
-    from mkm.bench.tables import parse_assignments
+    from mkm.bench.tables import parse_assignments, parse_scaling
     from mkm.paths import default_out
     from mkm.progress import progress_bar, summary_line
 
@@ -155,7 +175,9 @@ def _import(args) -> int:
             vented=parse_zero(args.vented, "--vented", "bar"),
             select=args.muscle, accuracy=parse_accuracy(args.accuracy),
             force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
-            join=args.join_by_time, notify=lines.append, bar=bar)
+            join=args.join_by_time, join_shift_s=args.join_shift,
+            scaling=parse_scaling(args.sensitivity, args.offset_volts), notify=lines.append,
+            bar=bar)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

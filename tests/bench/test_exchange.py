@@ -575,9 +575,9 @@ def test_two_load_cells_are_named_and_one_is_chosen(tmp_path, capsys):
     assert code == 2 and out == ""
     assert err == ("mkm import: error: two.csv: no column is named a force, and 2 hold one by "
                    "their unit, 'Load cell 1 [N]' and 'Load cell 2 [kN]': which is the muscle's "
-                   "is not guessed: expected one, chosen with --columns force=COLUMN (cells in "
-                   "series read the same force; cells in parallel share it: add them in a "
-                   "column of the table)\n")
+                   "is not guessed: expected one: choose one with --columns force=COLUMN (load "
+                   "cells in series each read the whole force), or add them with --columns "
+                   "force='Load cell 1 [N]+Load cell 2 [kN]' (cells in parallel share it)\n")
     code, out, err = _run(["import", str(table), *MUSCLE, "--columns",
                            "force=Load cell 2 [kN]", "--out", str(tmp_path / "b")], capsys)
     assert code == 0, err

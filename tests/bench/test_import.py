@@ -72,6 +72,88 @@ def test_kpa_and_lbf_headers(tmp_path, mkm_cli):
     assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
 
 
+def test_two_load_cells_sharing_the_pull_are_summed_by_columns_a_plus_b(tmp_path, mkm_cli):
+    # two load cells in parallel, each under half the pull, each with its own offset and unit
+    # (one shows N, the other kgf): refused ("two force columns ...: choose one"), and no
+    # option added them
+    force = thickwall_N(PRESSURES, 0.122)
+    pressures = np.r_[0.0, PRESSURES, 0.0]
+    share = np.r_[0.0, force, 0.0]
+    path = tmp_path / "two_cells.csv"
+    frame = pd.DataFrame({"P (bar)": pressures, "Force left (N)": 0.4 * share + 1.5,
+                          "Force right (kgf)": (0.6 * share - 2.0) / 9.80665})
+    frame.loc[4, "Force right (kgf)"] = np.nan  # the right cell's reading lost: file row 6
+    frame.to_csv(path, index=False)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("'Force left (N)' and 'Force right (kgf)': which is the muscle's is not guessed: "
+            "expected one: choose one with --columns force=COLUMN (load cells in series each "
+            "read the whole force), or add them with --columns force='Force left (N)+Force "
+            "right (kgf)' (cells in parallel share it)") in err
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", "--columns",
+                          "force=Force left (N)+Force right (kgf)")
+    assert "'Force left (N)' + 'Force right (kgf)' -> force [N + kgf -> N]" in err
+    assert "1 row(s) with a blank cell skipped: C6" in err
+    # the sum tared at the first 0 bar row (offsets 1.5 N - 2 N); each step the whole pull
+    # (steps.csv keeps 6 significant digits)
+    assert run.meta.imported_from["tare_N"] == pytest.approx(-0.5, rel=1e-6)
+    kept = np.r_[0:4, 5:9]
+    np.testing.assert_allclose(run.steps["force_N_mean"], share[kept], rtol=1e-5, atol=1e-5)
+    column = run.meta.imported_from["columns"]["force"]
+    assert column["sum_of"] == [{"column": "Force left (N)", "unit": "N", "converted_to": "N"},
+                                {"column": "Force right (kgf)", "unit": "kgf",
+                                 "converted_to": "N"}]
+    assert run.meta.imported_from["ignored_columns"] == []
+    # a pressure is no sum: one line
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--columns",
+                            "pressure=P (bar)+Force left (N)", "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert "--columns pressure='P (bar)+Force left (N)': only force columns add up" in err
+    assert not (tmp_path / "bad").exists()
+
+
+def test_channels_logged_in_volts_are_scaled_as_the_bench_scales_its_load_cell(tmp_path,
+                                                                              mkm_cli):
+    # a load-cell amplifier logged in mV (0.2 N per mV, 50 mV unloaded) and a 0.5-4.5 V
+    # transducer of 0-10 bar (2.5 bar per V from 0.5 V): refused as "'mV' is not a unit of
+    # force", and no option scaled them
+    force = thickwall_N(PRESSURES, 0.122)
+    pressures = np.r_[0.0, PRESSURES]
+    path = tmp_path / "volts.csv"
+    pd.DataFrame({"Druck [V]": 0.5 + pressures / 2.5,
+                  "Kraft [mV]": 50.0 + np.r_[0.0, force] / 0.2}).to_csv(path, index=False)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert ("column 'Druck [V]' is logged in volts ('V'): expected a pressure unit like bar, or "
+            "the channel's scaling: --sensitivity pressure=BAR_PER_V (and --offset-volts "
+            "pressure=V, what it reads at 0 bar)") in err
+    scaled = ["--sensitivity", "pressure=2.5bar/V,force=200N/V", "--offset-volts",
+              "pressure=0.5,force=50mV"]
+    # the offset subtracted as [loadcell] offset_V is: the forces exact without a tare
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", *scaled, "--tare", "none")
+    assert ("'Druck [V]' -> pressure [V -> bar: 2.5 bar/V from 0.5 V], 'Kraft [mV]' -> force "
+            "[mV -> N: 200 N/V from 0.05 V]") in err
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], pressures, rtol=1e-6,
+                               atol=1e-9)
+    np.testing.assert_allclose(run.steps["force_N_mean"], np.r_[0.0, force], rtol=1e-5,
+                               atol=1e-6)
+    assert run.meta.imported_from["columns"]["force"]["scaling"] == {
+        "sensitivity_per_V": 200.0, "offset_V": 0.05}
+    # a scaling for a column not in volts: one line
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--units",
+                            "force=N", "--sensitivity", "force=200N/V", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("--sensitivity force=200N/V: column 'Kraft [mV]' is in 'N', not volts: expected a "
+            "scaling only for a channel logged in V or mV") in err
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", *scaled[:2],
+                            "--offset-volts", "force=50N", "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "--offset-volts force=50N" in err
+    assert not (tmp_path / "bad").exists()
+
+
 @pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
 def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES, 0.122)
@@ -103,6 +185,61 @@ def test_a_logged_sample_without_a_reading_is_skipped_and_named(missing, tmp_pat
     (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
     assert f"1 row(s) with a blank cell skipped: C12 ({missing!r})" in err
     assert len(run.samples) == t.size - 1 and 1.0 not in run.samples["time_s"].round(6).tolist()
+
+
+def test_a_loggers_dashes_and_overload_marks_skip_their_rows_and_are_named(tmp_path, mkm_cli):
+    # a logger writes '---' for a sample it has none of and 'OVL' (or '-OVL', 'Overload') where
+    # a channel read beyond its range: was "cell C12 ...: '---' is not a number", the whole
+    # record refused
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    force = [f"{f:.4f}" for f in thickwall_N(p, 0.0)]
+    pressure = [f"{x:.5f}" for x in p]
+    force[10], force[300], pressure[301], force[302] = "---", "OVL", "-OVL", "Overload"
+    path = tmp_path / "logger.csv"
+    path.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{a:.1f},{b},{c}\n" for a, b, c in zip(t, pressure, force, strict=True)))
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "1 row(s) with a blank cell skipped: C12 ('---')" in err
+    assert ("3 row(s) with an overload mark skipped: C302 ('OVL'), B303 ('-OVL'), C304 "
+            "('Overload'): the channel read beyond its range there") in err
+    recorded = run.meta.imported_from
+    assert recorded["rows_skipped_for_a_blank_cell"] == ["C12 ('---')"]
+    assert recorded["rows_skipped_for_an_overload"] == ["C302 ('OVL')", "B303 ('-OVL')",
+                                                        "C304 ('Overload')"]
+    assert len(run.samples) == t.size - 4
+    assert not {1.0, 30.0, 30.1, 30.2} & set(run.samples["time_s"].round(6))
+
+
+def test_an_instruments_overload_value_is_no_force(tmp_path, mkm_cli):
+    # a Keysight logger writes SCPI's overload value, +9.9E+37, where its channel is over range:
+    # imported as a force of 9.9e37 N, the hold's mean 3e36 N, unsaid
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
+    force = [f"{f:.4f}" for f in thickwall_N(p, 0.0)]
+    force[300] = "+9.9E+37"
+    path = tmp_path / "keysight.csv"
+    path.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{a:.1f},{b:.5f},{c}\n" for a, b, c in zip(t, p, force, strict=True)))
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert ("1 row(s) with an overload mark skipped: C302 ('+9.9E+37'): the channel read "
+            "beyond its range there") in err
+    # the row skipped, every other force as written less the tare (samples.csv keeps 6
+    # significant digits, the file 4 decimals)
+    kept = np.delete(thickwall_N(p, 0.0), 300)
+    assert len(run.samples) == kept.size
+    np.testing.assert_allclose(run.samples["force_N"], kept - run.meta.imported_from["tare_N"],
+                               rtol=1e-5, atol=1e-4)
+    # any other force beyond the largest load cell a bench takes is no reading: refused
+    force[300] = "2.5e6"
+    path.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{a:.1f},{b:.5f},{c}\n" for a, b, c in zip(t, p, force, strict=True)))
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("keysight.csv, cell C302 (column 'Force [N]'): 2.5e+06 N is beyond the largest "
+            "load cell a bench takes (100000 N): expected a force reading") in err
+    assert not (tmp_path / "bad").exists()
 
 
 def test_semicolons_decimal_commas_and_a_title_row(tmp_path, mkm_cli):
@@ -139,6 +276,45 @@ def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
                                    thickwall_N(PRESSURES[:5], run.meta.muscle.eps), rtol=1e-5)
     assert (_scores(tmp_path, runs)["max_abs_err_pct"] < 0.01).all()
     assert one.meta.muscle.eps == pytest.approx(0.122)
+
+
+def test_sheets_of_a_workbook_given_one_eps_are_told_so(tmp_path, mkm_cli):
+    # one sheet per state, named by it, no eps column: --eps 0 made both runs eps 0 ('eps 10'
+    # too), unsaid, as two repeats of one state
+    path = tmp_path / "states.xlsx"
+    with pd.ExcelWriter(path) as book:
+        for sheet, eps in (("eps 0", 0.0), ("eps 10", 0.1)):
+            pd.DataFrame({"P (bar)": PRESSURES[:5],
+                          "F (N)": thickwall_N(PRESSURES[:5], eps)}).to_excel(
+                book, sheet_name=sheet, index=False)
+    runs, err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert [r.meta.muscle.eps for r in runs] == [0.0, 0.0]
+    assert err.count("eps 0 from --eps for each of the 2 sheets without an eps or length "
+                     "column: if they hold different states, import each with --sheet NAME "
+                     "and its --eps") == 2
+    (one,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "10%", "--sheet", "eps 10")
+    assert "for each of" not in err and one.meta.muscle.eps == pytest.approx(0.1)
+
+
+def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
+    # a workbook of the measurements, a sheet of notes and the lab's results sheet
+    # ('Auswertung': the peak force at the top pressure): the results sheet was imported as a
+    # run of one step, its 'F max (N)' taken for a force reading by its unit
+    path = tmp_path / "muscle7.xlsx"
+    force = thickwall_N(PRESSURES[:5], 0.0)
+    with pd.ExcelWriter(path) as book:
+        pd.DataFrame({"Info": ["Operator", "Muscle"], "Value": ["JS", "M7"]}).to_excel(
+            book, sheet_name="Info", index=False)
+        pd.DataFrame({"P (bar)": PRESSURES[:5], "F (N)": force}).to_excel(
+            book, sheet_name="Messung", index=False)
+        pd.DataFrame({"P (bar)": [2.5], "F max (N)": [force.max()]}).to_excel(
+            book, sheet_name="Auswertung", index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["sheet"] == "Messung"
+    # the notes hold no numbers: no table; the results are named, skipped
+    assert ("muscle7.xlsx: sheets without a pressure and a force column skipped: 'Auswertung' "
+            "(no force column; 'F max (N)' is a statistic, no reading)") in err
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)
 
 
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
@@ -586,6 +762,68 @@ def test_pressure_and_force_logged_in_two_files_are_joined_by_time(tmp_path, mkm
             "local.csv's none ('2026-12-06T10:00:02.500'), which is read as UTC: expected both "
             "with their zone or both without") in err
     assert not (tmp_path / "bad").exists()
+
+
+def test_two_loggers_counting_from_their_own_start_are_joined_by_the_shift_given(tmp_path,
+                                                                                 mkm_cli):
+    # the regulator's readback and the load cell each logged by a program counting seconds from
+    # its own start, the load cell's started 2.5 s later: joined as read, every force 2.5 s
+    # early on the pressure's clock, unsaid
+    rng = np.random.default_rng(13)
+    knots = ([0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+             [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    tp = np.arange(0.0, 60.0, 0.1)
+    pressure = tmp_path / "regulator.csv"
+    pd.DataFrame({"t (s)": tp, "Pressure [bar]": np.interp(tp, *knots)
+                  + rng.normal(0, 0.003, tp.size)}).to_csv(pressure, index=False)
+    own = np.arange(0.0, 60.0, 0.05)  # the load cell's clock: 0 s is 2.5 s on the regulator's
+    force = tmp_path / "loadcell.csv"
+    pd.DataFrame({"Zeit [s]": own, "Kraft [N]": thickwall_N(np.interp(own + 2.5, *knots), 0.0)
+                  + 4.0 + rng.normal(0, 0.3, own.size)}).to_csv(force, index=False)
+    code, _, err = mkm_cli(["import", str(pressure), *MUSCLE, "--eps", "0", "--join-by-time",
+                            str(force), "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert ("regulator.csv's times and loadcell.csv's each count seconds from their own start "
+            "(0 s and 0 s in their first rows)") in err
+    assert "expected --join-shift SECONDS" in err
+    assert not (tmp_path / "bad").exists()
+    (run,), err = _import(mkm_cli, pressure, *MUSCLE, "--eps", "0", "--join-by-time",
+                          str(force), "--join-shift", "2500ms")
+    assert ("'Kraft [N]' of loadcell.csv joined by time (their times as read, loadcell.csv's "
+            "moved +2.5 s (--join-shift), linearly; 575 of 600 rows within its times)") in err
+    joined = run.meta.imported_from["joined_by_time"]
+    assert joined["shift_s"] == 2.5 and joined["rows_outside"] == 25
+    # the zero from the rest the two share (2.5-5 s) and each hold's force its level's, as two
+    # files of date-times joined above
+    assert run.meta.imported_from["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(25))
+    assert [round(s, 1) for s in run.steps["pressure_bar_mean"]] == [1.0, 2.0, 2.5]
+    for step in run.steps.itertuples():
+        assert step.force_N_mean == pytest.approx(
+            thickwall_N(round(step.pressure_bar_mean * 2) / 2, 0.0),
+            abs=0.2 + 4 * 0.3 * np.hypot(1 / np.sqrt(step.n), 1 / np.sqrt(25)))
+
+
+@pytest.mark.parametrize("header", ["Zeitpunkt", "Messung am"])
+def test_a_column_of_date_times_by_a_name_unknown_is_read_or_named(header, tmp_path, mkm_cli):
+    # a German logger's 'Zeitpunkt' (point in time) column of date-times: the record was read as
+    # one without time, its rows counted for its clock, and no word said a column held times
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    start = datetime.datetime(2026, 12, 6, 14, 5, 0)
+    stamps = [(start + datetime.timedelta(seconds=float(s))).strftime("%d.%m.%Y %H:%M:%S.%f")[:-3]
+              for s in t]
+    path = tmp_path / "logger.csv"
+    pd.DataFrame({header: stamps, "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    if header == "Zeitpunkt":
+        assert f"'{header}' -> time [s]" in err and run.meta.imported_from["shape"] == "staircase"
+        assert len(run.samples) == t.size
+    else:  # a name no lab's clock goes by: said, with the option that reads it
+        assert (f"column {header!r} holds times but is not read as the time column: its rows "
+                f"are taken as evenly spaced in time; if it is the record's clock, --columns "
+                f"time={header!r} reads the table as a time series") in err
 
 
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
@@ -1395,3 +1633,38 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
     assert "(column 't [s]'): the time goes backwards" in err
     assert ("by an hour: a local clock put back at the end of summer time? give the times with "
             "their zone" in err) is said
+    # how far back, where it is no clock put back: was the cell alone, not what it reads
+    assert ("cell A22 (column 't [s]'): the time goes backwards by 4.5 s: expected samples in "
+            "time order" in err) is not said
+
+
+@pytest.mark.parametrize("tau_s", [0.5, 2.0])
+def test_a_closing_rest_after_an_exponential_vent_is_zeroed_where_its_force_settled(
+        tau_s, tmp_path, mkm_cli):
+    # the record begins as the pressure rises and ends venting exponentially (time constant
+    # tau_s) into a 10 s rest: the closing rest, the zero, began while the tail still pulled,
+    # 0.3 N above the 4 N zero (tau 0.5 s), and a vent that never settled (tau 2 s) gave a zero
+    # 4 N high, unsaid
+    rng = np.random.default_rng(12)
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 2, 10, 12, 20, 22, 30, 32, 40, 42, 50],
+                  [0.0, 1.0, 1.0, 1.5, 1.5, 2.0, 2.0, 2.5, 2.5, 1.0, 1.0])
+    p = np.where(t >= 50.0, np.exp(-(t - 50.0) / tau_s), p)
+    f = thickwall_N(p, 0.0) + 4.0 + rng.normal(0, 0.3, t.size)
+    path = tmp_path / "vent.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p + rng.normal(0, 0.003, t.size),
+                  "F (N)": f}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    recorded = run.meta.imported_from
+    tared = (run.samples["phase"] == "tare").to_numpy()
+    if tau_s < 1.0:
+        # the settled part's mean: within 4 of its standard errors of the known zero
+        assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3 / np.sqrt(tared.sum()))
+        assert "where its force has settled" in recorded["tare"]
+        assert "still falls" not in err
+    else:
+        # still falling when the record ends: said, and the zero the first sample's (at 0
+        # bar), within 4 noise widths, not the tail's
+        assert ("the vented rest that ends the record still falls (its force's trend beyond "
+                "2.5 standard errors to its end): not taken as the zero") in err
+        assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3)

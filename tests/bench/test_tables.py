@@ -197,6 +197,10 @@ def test_at_as_a_word_of_a_header_is_no_unit():
     # the unit after the name, its mark alone in brackets: was "no pressure column among
     # 'P bar(g)'" (the name read as 'p bar', the unit as 'g')
     ("P bar(g)", 1.0), ("Druck bar (ü)", 1.0), ("p kPa (g)", 0.01), ("Pressure psi(g)", PSI_BAR),
+    # German and French gauges say relative (Relativdruck, pression relative): was "'bar rel'
+    # is not a unit of pressure"
+    ("Druck [bar rel]", 1.0), ("Druck [bar(rel)]", 1.0), ("p [bar rel.]", 1.0),
+    ("Druck [kPa relativ]", 0.01), ("Pression (bar relatif)", 1.0), ("P bar(rel)", 1.0),
 ])
 def test_a_pressure_marked_gauge_is_read_in_its_unit(header, bar_per_unit, tmp_path):
     # bar(g) was "no pressure column among 'Pressure [bar(g)]'", bar g "not a unit of pressure"
