@@ -201,10 +201,11 @@ class _Progress:
     line every :data:`STATUS_EVERY_S`. Set and measured pressure, force, a lower bound of the
     time left; SIMULATED in front when no hardware is driven."""
 
-    def __init__(self, config: BenchConfig, n_steps: int, stream=None):
+    def __init__(self, config: BenchConfig, n_steps: int, stream=None, command: str = "acquire"):
         self.config, self.n_steps, self.done = config, n_steps, 0
         self.stream = stream or sys.stderr
-        self.label = "acquire SIMULATED" if config.simulated else "acquire"
+        self.command = command
+        self.label = f"{command} SIMULATED" if config.simulated else command
         self.bar = None
         if self.stream.isatty():
             from tqdm import tqdm
@@ -227,7 +228,7 @@ class _Progress:
             self.bar.set_postfix_str(self._status(rows[-1]))
         else:
             simulated = "SIMULATED " if self.config.simulated else ""
-            print(f"mkm acquire: {simulated}step {self.done}/{self.n_steps}, "
+            print(f"mkm {self.command}: {simulated}step {self.done}/{self.n_steps}, "
                   f"{self._status(rows[-1])}", file=self.stream, flush=True)
         self.shown_at = now
 
@@ -429,12 +430,14 @@ class BenchRun:
     ``plot`` a live plot in another process. ``handle_signals`` installs the stop handlers of
     :mod:`mkm.bench.signals` (only possible in the main thread). ``notify`` receives one-line
     messages for the operator (a bench found unvented, a stop requested); by default they go
-    to stderr as ``mkm acquire: ...``, through the run's console while it runs.
+    to stderr as ``mkm <command>: ...``, through the run's console while it runs. ``command``
+    is the command the user ran (``acquire``, ``demo``): it names the progress lines, the
+    notices and the bench's holder.
     """
 
     def __init__(self, config: BenchConfig, backend: Backend, out_root: str | Path,
                  operator: Operator | None = None, progress: bool = False, plot: bool = False,
-                 handle_signals: bool = True, notify=None):
+                 handle_signals: bool = True, notify=None, command: str = "acquire"):
         if not config.regulator.electronic and operator is None:
             raise ValueError("regulator.kind='manual' needs an operator to set the pressure")
         self.config = config
@@ -447,6 +450,7 @@ class BenchRun:
         self.notify = self._say if notify is None else notify
         self._console: _Console | None = None
         self.handle_signals = handle_signals
+        self.command = command
         self.signals = StopSignals(on_first_interrupt=lambda: self.notify(
             "stopping at the next safe point (Ctrl-C again to vent now)"))
         self.steps = plan_steps(config)
@@ -503,7 +507,7 @@ class BenchRun:
         for.
         """
         try:
-            with BenchOwner(getattr(self.backend, "bench_key", "unknown"), "acquire") as owner, \
+            with BenchOwner(getattr(self.backend, "bench_key", "unknown"), self.command) as owner, \
                     awake():  # Windows must not sleep with the muscle pressurised
                 self.owner = owner
                 self._dead_runs = owner.dead_runs()  # before the device is opened
@@ -522,7 +526,7 @@ class BenchRun:
 
     def _say(self, message: str) -> None:
         """The default notice: through the run's console while it runs, else on stderr."""
-        console, notice = self._console, StderrNotice("acquire")
+        console, notice = self._console, StderrNotice(self.command)
         if console is None:
             notice(message)
         else:
@@ -639,7 +643,8 @@ class BenchRun:
             self.notify(f"SIMULATED bench ({self.config.daq.backend}): no hardware is driven; "
                         f"recording into {self.recorder.path}")
         if self.progress:
-            self._observers.append(_Progress(self.config, len(self.steps), self._console))
+            self._observers.append(_Progress(self.config, len(self.steps), self._console,
+                                              self.command))
         if self.plot:
             self._observers.append(_Plot(self.config.muscle.id))
         self.acquisition = Acquisition(
@@ -994,22 +999,23 @@ def with_backend(config: BenchConfig, backend: str | None) -> BenchConfig:
 
 def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
             out_root: str | Path = "data/experimental", progress: bool = False,
-            plot: bool = False, notify=None, allow_past_lock: bool = False
-            ) -> RunResult:
+            plot: bool = False, notify=None, allow_past_lock: bool = False,
+            command: str = "acquire") -> RunResult:
     """Record one run of ``config`` under ``out_root``.
 
     ``backend`` overrides ``config.daq.backend``. A muscle held past its braid lock is refused
     (``ValueError``) unless ``allow_past_lock``; a load cell the muscle would overload is said.
-    ``notify`` receives the operator's lines (default: stderr, ``mkm acquire: ...``).
+    ``notify`` receives the operator's lines (default: stderr, ``mkm <command>: ...``, with
+    ``command`` the command the user ran).
     """
     config = with_backend(config, backend)
     lock = braid_lock(config)
     if lock and not allow_past_lock:
         raise ValueError(f"{lock}: pass --allow-past-lock to record it anyway")
     for warning in filter(None, [lock, loadcell_warning(config)]):
-        (notify or StderrNotice("acquire"))(f"warning: {warning}")
+        (notify or StderrNotice(command))(f"warning: {warning}")
     check_out_root(out_root)  # before the device is opened
     device = make_backend(config, clock)
     operator = None if config.regulator.electronic else make_operator(config, device)
     return BenchRun(config, device, out_root, operator=operator, progress=progress,
-                    plot=plot, notify=notify).execute()
+                    plot=plot, notify=notify, command=command).execute()

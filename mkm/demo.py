@@ -45,7 +45,8 @@ def run_demo(out_dir: str | Path | None = None, progress: bool = True,
     runs = []
     for eps in DEMO_EPS:
         result = acquire(load_config(eps=eps), backend="sim", clock="virtual",
-                         out_root=out / "runs", progress=progress and sys.stderr.isatty())
+                         out_root=out / "runs", progress=progress and sys.stderr.isatty(),
+                         command="demo")
         if result.path is None or result.status != "complete":
             raise BenchError(f"simulated run at eps = {eps:g} ended {result.status}: "
                              f"{result.reason}")

@@ -1056,7 +1056,8 @@ def _surrogate_section(out: Path, prov: dict) -> str:
     points["err_pct"] = points["err_pct"].where(points["valid"])
     result = summary.drop(columns=["model", "seconds_all_points"]).rename(columns={
         "max_abs_err_pct": "largest |Err%|", "rmse_N": "RMSE [N]",
-        "max_abs_error_N": "largest |error| [N]", "all_valid": "all points valid"})
+        "max_abs_error_N": "largest |error| [N]", "valid_points": "valid points",
+        "all_valid": "all points valid"})
     result["muscle"] = result["muscle"].astype(str)
     if TABLE3_CSV.exists():
         paper = pd.read_csv(TABLE3_CSV, comment="#")[["muscle", "max_abs_err_pct"]]

@@ -98,9 +98,10 @@ def compare_on_test_muscles(model: ForceModel, reference: pd.DataFrame):
 
     Returns ``(points, summary)``: ``points`` has ``force_fe_N, force_pred_N, err_pct, valid``
     per row; ``summary`` per muscle ``max_abs_err_pct`` (Equation 7), ``rmse_N``,
-    ``max_abs_error_N``, and the wall time of the whole call in ``seconds_all_points``. A
-    surrogate is asked for the muscle parameters the reference's FE used (its header's
-    ``params``: length, braid angle, rubber), or refuses with the reason.
+    ``max_abs_error_N`` over the points the model answers (``valid``; NaN where it answers
+    none), ``valid_points`` (answered of all) and the wall time of the whole call in
+    ``seconds_all_points``. A surrogate is asked for the muscle parameters the reference's FE
+    used (its header's ``params``: length, braid angle, rubber), or refuses with the reason.
     """
     params = reference.attrs.get("params", {})
     if hasattr(model, "with_parameters"):
@@ -114,14 +115,19 @@ def compare_on_test_muscles(model: ForceModel, reference: pd.DataFrame):
     points["err_pct"] = np.nan
     rows = []
     for muscle, group in points.groupby("muscle", sort=False):
-        err = equation7_err_pct(group["force_fe_N"], group["force_pred_N"])
+        # a point the model flags invalid (outside its domain) has no error: its number is an
+        # extrapolation the model disowns; Equation 7's scale stays the muscle's largest force
+        ok = group["valid"].to_numpy(dtype=bool)
+        err = np.where(ok, equation7_err_pct(group["force_fe_N"], group["force_pred_N"]), np.nan)
         points.loc[group.index, "err_pct"] = err
-        residual = group["force_fe_N"] - group["force_pred_N"]
+        residual = (group["force_fe_N"] - group["force_pred_N"]).to_numpy()[ok]
+        answered = bool(ok.any())
         rows.append({"muscle": muscle, "model": model.name,
-                     "max_abs_err_pct": float(np.max(np.abs(err))),
-                     "rmse_N": rmse(residual, 0.0),
-                     "max_abs_error_N": float(np.max(np.abs(residual))),
-                     "all_valid": bool(group["valid"].all()),
+                     "max_abs_err_pct": float(np.nanmax(np.abs(err))) if answered else np.nan,
+                     "rmse_N": rmse(residual, 0.0) if answered else np.nan,
+                     "max_abs_error_N": float(np.max(np.abs(residual))) if answered else np.nan,
+                     "valid_points": f"{int(ok.sum())}/{ok.size}",
+                     "all_valid": bool(ok.all()),
                      "seconds_all_points": prediction.seconds})
     return points, pd.DataFrame(rows)
 

@@ -57,7 +57,17 @@ class _Parser(argparse.ArgumentParser):
         return namespace, rest
 
     def error(self, message):  # one line, no usage dump
-        self.exit(2, error_line(self.prog, message) + "\n")
+        self.exit(2, error_line(self.prog, message + self._commands_expected(message)) + "\n")
+
+    def _commands_expected(self, message: str) -> str:
+        """For a group typed without its command (``mkm data``): the commands it takes, from
+        its own subparsers, and where each is described."""
+        for action in self._actions:
+            if isinstance(action, argparse._SubParsersAction) and \
+                    message.endswith(f"required: {action.metavar}"):
+                return (f": expected one of {', '.join(action.choices)} (`{self.prog} --help` "
+                        "says what each does)")
+        return ""
 
 
 def _notes(args):

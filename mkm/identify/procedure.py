@@ -587,17 +587,26 @@ def _shift(source, runs, best, differences) -> dict[str, float]:
 def _outside_box(caught, what: str = "the fit with C01's share free",
                  consequence: str = "the test of C10 and C01 is extrapolated there") -> list[str]:
     """Warnings of a refit (``what``: the fit with the rubber's ratio free, the refits at an
-    assumed ratio) passed on, except the surrogate's out-of-domain ones, which a fit repeats
-    once per evaluation: one note says it instead, with what was outside and ``consequence``."""
-    outside = [w for w in caught if w.category.__name__ == "OutOfDomainWarning"]
+    assumed ratio) passed on, except the surrogate's out-of-domain ones and those of points
+    without an answer inside its box, which a fit repeats once per evaluation: one note per
+    kind says it instead, with what was outside (or why no answer) and ``consequence``."""
+    from mkm.surrogate.model import UNINFORMED
+
+    ours = [w for w in caught if w.category.__name__ == "OutOfDomainWarning"]
     for w in caught:
-        if w not in outside:
+        if w not in ours:
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
-    if not outside:
-        return []
-    first = str(outside[0].message).partition("(")[2].partition(")")[0]
-    return [f"{what} left the surrogate's training box in {len(outside)} evaluations "
-            f"(first: {first}): {consequence}"]
+    unanswered = [w for w in ours if UNINFORMED in str(w.message)]
+    outside = [w for w in ours if w not in unanswered]
+    notes = []
+    if outside:
+        first = str(outside[0].message).partition("(")[2].partition(")")[0]
+        notes.append(f"{what} left the surrogate's training box in {len(outside)} evaluations "
+                     f"(first: {first}): {consequence}")
+    if unanswered:
+        notes.append(f"{what} met points the surrogate has no answer for in {len(unanswered)} "
+                     f"evaluations ({UNINFORMED}): {consequence}")
+    return notes
 
 
 def ratio_edge_term(one_scale, free) -> dict:

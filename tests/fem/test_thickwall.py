@@ -186,6 +186,28 @@ def test_braid_lock_flags_nan_and_invalid():
     assert pred.converged.all()  # closed form: nothing to converge, the physics ends there
 
 
+
+def test_held_past_where_its_caps_lock_the_braid_a_thick_wall_pulls_nothing():
+    """D0 10 mm, t0 3 mm, L0 100 mm at 33.425 deg: the FE's caps lock its braid by eps 0.2909,
+    short of Equation 2's eps_max 0.3082, and at eps 0.295 it finds no held state. The free
+    muscle stops short of the stop at every pressure there, so the force on the stop is 0 N:
+    the mid-section's answer at every pressure of the practical range, its own P* (22 bar, not
+    the muscle's) above it."""
+    from mkm.fem.fe.model import isometric_sweep
+    from mkm.fem.outcomes import BRAID_LOCKS
+
+    theta0, eps = 33.425, 0.295
+    fe = isometric_sweep([4.0], 10.0, 3.0, eps, theta0, 100.0, mesh="coarse")
+    assert fe["limit"].tolist() == [BRAID_LOCKS]
+    assert "reaches the locking angle 54.74 deg by eps=0.2909" in fe["failure"][0]
+    P = np.arange(0.0, 8.5, 0.5)  # the practical range
+    pred = ThickWall(theta0_deg=theta0, L0_mm=100.0).predict(P, 10.0, 3.0, eps)
+    assert pred.valid.all() and (pred.force_N == 0.0).all()
+    assert pred.extras["threshold_pressure_bar"][0] == pytest.approx(22.1, abs=0.05)
+    # the free muscle at 8 bar stops short of the FE's lock, as the mid-section's does
+    assert effective_eps_of_threshold([8.0], [10.0], [3.0], [theta0], [C10], [C01])[0] < 0.2909
+
+
 def test_inner_radius_never_collapses_before_the_braid_lock():
     # The wall fills the braid (r_i^2 <= 0) only beyond eps_max, for any angle and any wall up
     # to t0 -> D0/2; so the braid lock is the first and only failure of this rung.

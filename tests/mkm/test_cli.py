@@ -1240,3 +1240,16 @@ def test_calibrate_lists_its_targets_from_their_registry(mkm_run):
     assert code == 0
     text = " ".join(out.split())
     assert all(f"{name}: {' '.join(what.split())}" in text for name, what in TARGETS.items())
+
+
+@pytest.mark.parametrize("group, expected", [
+    ("data", "ACTION: expected one of list, path, copy (`mkm data --help` says what each does)"),
+    ("fem", "COMMAND: expected one of solve, calibrate, dataset, convergence (`mkm fem --help` "
+            "says what each does)"),
+])
+def test_a_group_typed_without_its_command_names_its_commands(group, expected, mkm_run):
+    # `mkm data` said 'the following arguments are required: ACTION', naming neither list nor
+    # copy: a newcomer had to guess that --help lists them
+    code, out, err = mkm_run([group])
+    assert code == 2 and out == ""
+    assert err == f"mkm {group}: error: the following arguments are required: {expected}\n"

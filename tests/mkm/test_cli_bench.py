@@ -1,6 +1,7 @@
 """The bench subcommands of `mkm`: output contract and one-line errors."""
 
 import json
+import re
 import tomllib
 from pathlib import Path
 
@@ -321,3 +322,25 @@ def test_demo_on_a_held_simulated_bench_is_one_line(tmp_path, capsys):
                           f"{os.getpid()} (`mkm acquire`, started 20")
     assert err.count("\n") == 1 and "Traceback" not in err
     assert not list((tmp_path / "demo").glob("runs/*"))
+
+
+def test_the_demo_s_bench_lines_name_mkm_demo(tmp_path, capsys, monkeypatch):
+    """Under `mkm demo` the simulated bench's notices and status lines said `mkm acquire: ...`,
+    a command the user never typed; they name `mkm demo` now, as its other lines do."""
+    import mkm.bench.run as run
+    from mkm.demo import run_demo
+
+    real_execute = run.BenchRun.execute
+
+    def with_status_lines(self):  # the demo shows its progress on a terminal only
+        self.progress = True
+        return real_execute(self)
+
+    monkeypatch.setattr(run, "STATUS_EVERY_S", 0.0)  # a status line each block: stderr is no TTY
+    monkeypatch.setattr(run.BenchRun, "execute", with_status_lines)
+    run_demo(tmp_path / "demo", progress=False, models=["eq2"], tolerance=None,
+             surrogate_section=False, cache_dir=None)
+    err = capsys.readouterr().err
+    assert "mkm acquire" not in err
+    assert err.count("mkm demo: SIMULATED bench (sim): no hardware is driven; recording into ") == 2
+    assert re.search(r"^mkm demo: SIMULATED step \d+/\d+, ", err, re.M), err

@@ -174,3 +174,21 @@ def test_out_of_domain_warnings_of_the_ratio_fit_become_one_note():
                      "C10 and C01 is extrapolated there"]
     assert [str(w.message) for w in passed] == ["something else"]
     assert _outside_box([]) == []
+
+
+def test_unanswered_points_of_the_ratio_fit_are_said_as_such():
+    """A refit that met points the range surrogate has no answer for inside its box (a std
+    beyond any force) was noted as leaving the training box, 'first: ' naming nothing (the
+    DMSP-20-300's six lengths of the shipped published table)."""
+    import warnings
+
+    from mkm.identify.procedure import _outside_box
+    from mkm.surrogate.model import UNINFORMED, OutOfDomainWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        warnings.warn(f"1 of 21 points: {UNINFORMED}: flagged valid=False", OutOfDomainWarning,
+                      stacklevel=1)
+    assert _outside_box(caught) == [
+        "the fit with C01's share free met points the surrogate has no answer for in 1 "
+        f"evaluations ({UNINFORMED}): the test of C10 and C01 is extrapolated there"]

@@ -79,6 +79,30 @@ def test_eq2_error_on_muscle_III_is_what_equation_7_says(thickwall_reference):
     assert got == pytest.approx(expected, rel=1e-9)
 
 
+def test_points_a_model_disowns_are_not_scored(thickwall_reference):
+    """`mkm surrogate test` of a surrogate trained on a smaller box scored the test muscles at
+    the points it flags valid=False (outside its domain), its extrapolations: 5.73 % on muscle
+    III from 11 disowned points. Only the points a model answers are scored now; a muscle it
+    answers nowhere has no error."""
+    from mkm.fem.thickwall import ThickWall
+
+    class Narrow(ThickWall):  # thickwall 100 N off, disowned, beyond D0 44 mm
+        def _forces(self, P, D0, t0, eps):
+            out = super()._forces(P, D0, t0, eps)
+            wide = D0 > 44.0
+            out["force_N"] = np.where(wide, out["force_N"] + 100.0, out["force_N"])
+            out["valid"] = out["valid"] & ~wide
+            return out
+
+    points, summary = compare_on_test_muscles(Narrow(), read_fe_reference(thickwall_reference))
+    by = summary.set_index("muscle")
+    assert np.isnan(by.loc["III", ["max_abs_err_pct", "rmse_N", "max_abs_error_N"]]).all()
+    assert by.loc["III", "valid_points"] == "0/11" and not by.loc["III", "all_valid"]
+    assert by.loc["I", "valid_points"] == "11/11" and by.loc["I", "max_abs_err_pct"] < 1e-3
+    assert points.loc[points["muscle"] == "III", "err_pct"].isna().all()
+    assert summary["max_abs_err_pct"].max() < 1e-3  # the self-reference where it answers
+
+
 def test_reference_without_its_columns_is_named(thickwall_reference, tmp_path):
     # Excel's ';' export reads as one column: `mkm surrogate test --reference` ended in a
     # KeyError traceback naming 'converged'
