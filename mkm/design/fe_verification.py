@@ -40,10 +40,11 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
            curve_to_bar: float | None = None, progress: bool = False, cache_dir=None,
            workers: int | None = None, scheduler: str | None = None,
            calibration: Calibration | None = None, gap_mm: float = 0.0,
-           objective: str = DEFAULT_OBJECTIVE):
+           objective: str = DEFAULT_OBJECTIVE, demoted: frozenset = frozenset()):
     """FE forces of ``designs`` at every requirement on ``mesh`` (:func:`verify_on_mesh`), the
     chosen design's verdict made to hold: while the best design that meets every requirement
-    (the first by :func:`ordered` for ``objective``) meets one by less than its mesh's force
+    (the first by :func:`ordered` for ``objective`` and ``demoted``) meets one by less than its
+    mesh's force
     may lie from the fine mesh's
     (:func:`mkm.mesh_errors.point_error_N`), it is verified again on the next finer mesh
     (:data:`~mkm.fem.options.MESH_LEVELS`' order), and the best is found again: the cheapest
@@ -54,7 +55,7 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
     levels = list(MESH_LEVELS)
 
     def order(frame):
-        return ordered(frame, objective)
+        return ordered(frame, objective, demoted)
 
     args = (curve_to_bar, progress, cache_dir, workers, scheduler, calibration, gap_mm)
     judged, curves, seconds, models, hits = verify_on_mesh(designs, requirements, mesh, *args)
@@ -76,13 +77,18 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
     return judged, curves, seconds, models, hits
 
 
-def ordered(designs: pd.DataFrame, objective: str = DEFAULT_OBJECTIVE) -> pd.DataFrame:
-    """The verified designs best first: those the FE confirms, by rank (the objective's order
-    in the search), or by FE margin for ``max-margin``."""
+def ordered(designs: pd.DataFrame, objective: str = DEFAULT_OBJECTIVE,
+            demoted: frozenset = frozenset()) -> pd.DataFrame:
+    """The verified designs best first: those the FE confirms, those whose ``rank`` is not in
+    ``demoted`` (a robust design below the probability asked:
+    :func:`mkm.design.robust.below_target`) before those that are, each by rank (the
+    objective's order in the search), or by FE margin for ``max-margin``."""
     order = ["min_fe_margin_pct", "rank"] if objective == "max-margin" else ["rank"]
-    return designs.sort_values(["meets_all", *order], ascending=[False] + [
-        objective != "max-margin"] + [True] * (len(order) - 1), kind="stable",
-        ignore_index=True)
+    return (designs.assign(_demoted=designs["rank"].isin(demoted))
+            .sort_values(["meets_all", "_demoted", *order],
+                         ascending=[False, True, objective != "max-margin"]
+                         + [True] * (len(order) - 1), kind="stable", ignore_index=True)
+            .drop(columns="_demoted"))
 
 
 def verify_on_mesh(designs: pd.DataFrame, requirements, mesh: str = "medium",

@@ -23,7 +23,7 @@ from mkm.design.box_search import (
     search,
 )
 from mkm.design.fe_verification import ordered, verify
-from mkm.design.robust import check_designs, check_probability
+from mkm.design.robust import below_target, check_designs, check_probability
 from mkm.design.spec import (
     DEFAULT_OBJECTIVE,
     DEFAULT_PROBABILITY,
@@ -54,6 +54,8 @@ class DesignResult:
     fe_models: dict
     fe_cached: int = 0
     files: dict = field(default_factory=dict)
+    #: the probability a robust design is asked to meet every requirement with (None: nominal)
+    probability: float | None = None
 
     @property
     def chosen(self):
@@ -98,8 +100,9 @@ class DesignResult:
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
         required force (the design then is larger than the requirement needs), a chosen
         design outside the practical range or on its limit (:func:`~mkm.design.box_search.
-        range_limits`), and one that meets a requirement by less than the mesh's error and was
-        verified again on a finer one. Empty when none."""
+        range_limits`), one that meets a requirement by less than the mesh's error and was
+        verified again on a finer one, and a robust design below the probability asked (none
+        verified holds it). Empty when none."""
         s = self.search
         notes = [s.box_note()] if s.box_note() else []
         best = self.chosen
@@ -125,6 +128,11 @@ class DesignResult:
             notes.append(f"the chosen design sits on the practical range's limit: "
                          f"{'; '.join(limits)}; a design beyond it might do better, but no "
                          "model is validated there (`mkm models` states the range)")
+        if best is not None and "all:probability_below_target" in str(best["flags"]):
+            notes.append(f"no verified design holds every requirement with the "
+                         f"{100 * self.probability:g} % asked (the chosen one: "
+                         f"{100 * best['probability_all']:.1f} % of the Monte Carlo draws): "
+                         "verify more designs (--top) or ask for a wider margin")
         if best is not None and best["fe_mesh"] != self.mesh:
             notes.append(f"the {self.mesh} mesh's margin of the chosen design was within that "
                          f"mesh's error (mkm.mesh_errors): verified again on the "
@@ -196,9 +204,13 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
                    calibration)
     chosen = pick(found.feasible, top, found.constraints)
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
+    demoted: frozenset = frozenset()
+    if tolerances is not None:  # the probability first: the chosen design's verdict must hold it
+        demoted = below_target(chosen, found.requirements, found.models, tolerances,
+                               probability)
     designs, curves, seconds, fe_models, hits = verify(
         chosen, found.requirements, mesh, found.working_pressure_bar, progress, cache_dir,
-        workers, scheduler, calibration, found.gap_mm, objective)
+        workers, scheduler, calibration, found.gap_mm, objective, demoted)
     robust: list[str] = []
     if tolerances is not None:
         designs = check_designs(designs, found.requirements, found.models, tolerances,
@@ -206,13 +218,14 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         robust = [c for k in range(1, len(found.requirements) + 1) for c in (
             f"probability_r{k}", f"probability_r{k}_search", f"r{k}_tolerance_u_N",
             f"r{k}_fe_worst_corner_N")] + ["probability_all"]
-    designs = ordered(designs, objective)
+    designs = ordered(designs, objective, demoted)
     n = len(found.requirements)
     columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
         f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + robust + [
         "meets_all", "min_fe_margin_pct", "fe_mesh", "flags", "fe_failure"]
-    return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits)
+    return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits,
+                        probability=None if tolerances is None else probability)
 
 
 def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *,

@@ -167,6 +167,38 @@ def test_robust_design_meets_the_requirement_with_the_probability_asked(tmp_path
     assert "worst_corner" not in str(nominal.designs.columns)
 
 
+@pytest.mark.slow  # the default surrogate (trained on first use) and FE sweeps
+def test_the_chosen_robust_design_holds_the_probability_asked_when_a_verified_one_does(tmp_path):
+    """At 90 % the search's normal approximation is not conservative: one uniform bound that
+    dominates reaches its 10 % point at 0.80 of its half-width, the normal at 1.28 / sqrt(3) =
+    0.74. Here the first design it ranked held every requirement in 88.7 % of the Monte Carlo
+    draws (the medium FE on 200 draws from the tolerances, seed 20264004: 88.0 %) and was
+    chosen, flagged only, while the fourth held 92.4 %: the chosen design is the best that holds
+    the probability asked."""
+    from mkm.design import run_design
+
+    tolerances = Tolerances.parse("D0=0.5,t0=0.15,theta0=1.5,rubber=15%,eps=0.01")
+    result = run_design(["200N@1.5bar,eps=0.18"], top=5, cache_dir=tmp_path,
+                        tolerances=tolerances, probability=0.9)
+    d = result.designs
+    below = d["flags"].str.contains("all:probability_below_target")
+    assert below.any() and not below.all()  # the case: some verified designs fall short
+    assert (below == (d["probability_all"] < 0.9)).all()
+    chosen = result.chosen
+    assert chosen["probability_all"] >= 0.9
+    assert "probability_below_target" not in chosen["flags"]
+    # the designs that hold it come first, each group in the search's order
+    assert not below[d["meets_all"]].iloc[:int((~below & d["meets_all"]).sum())].any()
+    assert not any("probability" in note for note in result.notes())
+    # the first design alone falls short: chosen, and said
+    alone = run_design(["200N@1.5bar,eps=0.18"], top=1, cache_dir=tmp_path,
+                       tolerances=tolerances, probability=0.9)
+    assert alone.chosen["probability_all"] < 0.9
+    assert ("no verified design holds every requirement with the 90 % asked (the chosen one: "
+            f"{100 * alone.chosen['probability_all']:.1f} % of the Monte Carlo draws)"
+            in " ".join(alone.notes()))
+
+
 def test_a_drawn_muscle_with_no_tube_is_nan_at_a_single_pressure():
     """A robust design draws walls at the tolerance: one past the tube's radius has no force
     (NaN), at one pressure as at a sweep, instead of failing the design."""
