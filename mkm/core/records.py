@@ -11,7 +11,8 @@ reports share, so they cannot drift apart:
   project module they import, read from the files (the same code gives the same version in every
   process and on every Dask worker), and of the package data files they read;
 - :func:`package_file`: a data file shipped inside a package, found through
-  ``importlib.resources`` (works from a wheel, from any working directory).
+  ``importlib.resources`` (works from a wheel, from any working directory);
+- :func:`recorded_path`: a path as a record names it, with no folder of one machine.
 
 The toolkit's own folders (the user cache, the state folder) are :mod:`mkm.core.home`'s.
 """
@@ -374,6 +375,18 @@ def _spec(name: str):
 
 def file_sha256(path: str | os.PathLike) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def recorded_path(path: str | os.PathLike) -> str:
+    """``path`` as a record others read names it, naming no folder of the machine that wrote it
+    (a user's name, a temporary folder, a checkout): relative to the working directory, parts
+    joined by ``/``, where it lies in it (as the command was typed there); else its name alone,
+    which the sha256 recorded beside it identifies."""
+    path = Path(os.path.abspath(path))
+    try:
+        return path.relative_to(os.path.abspath(os.getcwd())).as_posix()
+    except ValueError:  # elsewhere, or on another drive
+        return path.name
 
 
 #: What makes a spreadsheet read a text cell as a formula (or a DDE command): OWASP's list.

@@ -83,6 +83,16 @@ def test_package_files_exist():
     assert records.package_file("mkm", "data", "model_errors.csv").is_file()
 
 
+def test_a_recorded_path_names_no_folder_of_the_machine(tmp_path, monkeypatch):
+    # was: the shipped results named /work/main/surrogate/data/mkm_design.csv and a dataset
+    # /root/.cache/mkm-bench/dataset, folders of one machine and user
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "data").mkdir()
+    assert records.recorded_path(tmp_path / "data" / "a.csv") == "data/a.csv"
+    assert records.recorded_path(os.path.join("data", "a.csv")) == "data/a.csv"
+    assert records.recorded_path(tmp_path.parent / "elsewhere" / "b.csv") == "b.csv"
+
+
 def test_provenance_names_versions_and_command():
     info = records.provenance()
     assert {"date_utc", "command", "versions", "machine"} <= set(info)
