@@ -3,7 +3,8 @@
 One place for the plumbing that datasets, calibrations, run folders, caches, model files and
 reports share, so they cannot drift apart:
 
-- :func:`provenance`: library versions, command, machine and UTC date;
+- :func:`provenance`: library versions, the code's git revision, command, machine and UTC
+  date;
 - :func:`write_atomic` / :func:`write_json_atomic`: a reader (or a resumed job after a crash)
   sees the old file or the new one, never half of one; files get the permissions of the user's
   umask, like any file the user makes;
@@ -67,10 +68,35 @@ def one_argument(text) -> str:
 
 
 def provenance() -> dict[str, Any]:
-    """Library versions, command line, machine and UTC date, recorded with every generated file."""
+    """Library versions, the code's revision (:func:`git_revision`), command line, machine and
+    UTC date, recorded with every generated file."""
     return {"date_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
             "command": command_line(), "machine": platform.machine(),
-            "versions": dict(_library_versions())}
+            "versions": dict(_library_versions()), "git": git_revision()}
+
+
+#: The checkout the running code lies in, if it runs from one (``mkm/core/`` is two folders
+#: below it); from a wheel, the folder holding the installed package.
+CODE_ROOT = Path(__file__).resolve().parents[2]
+
+
+@cache
+def git_revision(root: Path = CODE_ROOT) -> str | None:
+    """``git describe --always --dirty`` of the checkout ``root`` (``83e6ee1a2b3c-dirty`` for
+    edited files): the code itself, where the version of a checkout (``0.1.0``) names every
+    commit alike. None when the code is no checkout's (a wheel: its installed version, in
+    ``versions``, names it) or git cannot tell (not installed, as on a bench PC)."""
+    import subprocess
+
+    if not ((root / ".git").exists() and (root / "pyproject.toml").is_file()):
+        return None
+    try:
+        done = subprocess.run(["git", "-C", str(root), "describe", "--always", "--dirty",
+                               "--abbrev=12"], capture_output=True, text=True, timeout=10,
+                              check=True)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return done.stdout.strip() or None
 
 
 @cache

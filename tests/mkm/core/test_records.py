@@ -99,6 +99,20 @@ def test_provenance_names_versions_and_command():
     assert info["versions"]["numpy"] != "not installed"
 
 
+def test_provenance_names_the_code_revision(tmp_path):
+    # was: versions alone, whose mkm-bench 0.1.0 names every commit of a checkout alike
+    root = records.CODE_ROOT
+    if shutil.which("git") is None or not (root / ".git").exists():
+        pytest.skip("not run from a git checkout")
+    import subprocess
+
+    described = subprocess.run(["git", "-C", str(root), "describe", "--always", "--dirty",
+                                "--abbrev=12"], capture_output=True, text=True, check=True)
+    assert records.provenance()["git"] == described.stdout.strip()
+    (tmp_path / "pyproject.toml").write_text("")
+    assert records.git_revision(tmp_path) is None  # no checkout there: a wheel's folder
+
+
 @pytest.mark.parametrize("model, params, muscle", [
     ("eq2", {}, (35.0, 2.5, 0.05)),
     # past the braid lock: NaN forces and failure strings in the extras
