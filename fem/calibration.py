@@ -107,6 +107,12 @@ class Calibration:
     def is_shipped(self) -> bool:
         return self.path == CALIBRATION_FILE
 
+    def record(self) -> dict:
+        """The file (``shipped fem/calibration.json`` for the shipped one) and its SHA-256: how
+        the provenance of what a model computed with it names it."""
+        return {"file": "shipped fem/calibration.json" if self.is_shipped else str(self.path),
+                "sha256": file_sha256(self.path)}
+
     def entry(self, key: str) -> dict:
         """Entry ``key`` (for example ``"eq2-inner"``); ``ValueError`` naming the command that
         writes it if there is none."""
@@ -590,7 +596,4 @@ def calibration_provenance(model) -> dict:
         return {"source": "theta0_deg given explicitly", "theta0_deg": model.theta0_deg}
     calibration = getattr(model, "calibration", None) or Calibration.shipped()
     key = model.calibration_key
-    return {"file": "shipped fem/calibration.json" if calibration.is_shipped
-            else str(calibration.path),
-            "sha256": file_sha256(calibration.path), "key": key,
-            "entry": calibration.entry(key)}
+    return {**calibration.record(), "key": key, "entry": calibration.entry(key)}

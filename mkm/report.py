@@ -242,7 +242,9 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
 
     names = {s.text: s.display_name for s in specs}
     colours = model_colours(specs)
-    prov: dict[str, dict] = {"software": provenance()}
+    # the calibration the models took their angles and rubber from, named by its content
+    prov: dict[str, dict] = {"software": provenance(),
+                             "calibration": (calibration or Calibration.shipped()).record()}
     bar = progress_bar(len(run_dirs) * (len(specs) + 1) + int(surrogate_section), "report",
                        progress, unit="task")
     runs, models = [], {}  # one model per spec and rest length for the whole report
