@@ -303,9 +303,9 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     """Predict and score every model on the run's kept steps; record provenance."""
     meta, muscle = r.meta, r.predicted
     run_key = f"run-{r.k}"
-    prov[run_key] = {"path": str(r.run.path), **{key: meta.get(key) for key in
-                                                  ("provenance", "command", "config_source",
-                                                   "config_overrides") if meta.get(key)}}
+    prov[run_key] = {"path": str(r.run.path), "sha256": r.run.sha256(),
+                     **{key: meta.get(key) for key in ("provenance", "command", "config_source",
+                                                       "config_overrides") if meta.get(key)}}
     r.keys = [run_key]
     steps = r.run.steps
     if steps.empty:

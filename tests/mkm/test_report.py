@@ -300,6 +300,15 @@ def test_provenance_is_folded_with_the_json_beside(report):
     assert html.count("<pre>") == len(prov)  # one block each, inside the fold
 
 
+def test_provenance_names_the_runs_files_by_sha256(report, runs):
+    # was: each run by its folder alone: a steps.csv edited after the report went unseen
+    path, _ = report
+    prov = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
+    for k, run in enumerate(runs, start=1):
+        assert prov[f"run-{k}"]["sha256"] == {name: file_sha256(run / name) for name in (
+            "run.json", "steps.csv", "samples.csv")}
+
+
 def test_provenance_names_the_calibration_by_sha256(runs, tmp_path):
     # was: a report made with --calibration named it in its command only: not which content
     from mkm.fem.calibration import CALIBRATION_FILE, Calibration
