@@ -76,6 +76,21 @@ def test_bad_kind_is_a_one_line_error(thickwall_dataset, capsys):
     assert err.count("\n") == 1
 
 
+@pytest.mark.parametrize("command", [["train", "--kind", "physics", "--splits", "0"],
+                                     ["design", "--muscles", "2"], ["grid", "--seeds", "1"]])
+def test_a_calibration_a_command_would_not_use_is_refused(command, tmp_path, capsys):
+    # was: taken and ignored: the model file named the shipped calibration, not lab.json
+    from mkm.fem.calibration import CALIBRATION_FILE
+
+    lab = tmp_path / "lab.json"
+    lab.write_bytes(CALIBRATION_FILE.read_bytes())
+    with pytest.raises(SystemExit) as exited:
+        main(["surrogate", *command, "--calibration", str(lab), "--out", str(tmp_path / "o")])
+    assert exited.value.code == 2
+    assert f"unrecognized arguments: --calibration {lab}" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()
+
+
 def test_missing_dataset_is_a_one_line_error(tmp_path, capsys):
     assert main(["surrogate", "train", "--dataset", str(tmp_path / "no.csv")]) == 2
     assert "does not exist" in capsys.readouterr().err
