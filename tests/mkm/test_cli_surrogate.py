@@ -5,6 +5,7 @@ import pandas as pd
 import pytest
 
 from mkm.cli import main
+from mkm.core.records import file_sha256
 from mkm.fem.calibration import calibrated
 
 
@@ -18,7 +19,7 @@ def test_grid_small_run(thickwall_dataset, tmp_path, capsys):
     assert list(table["paper_valid_N"]) == [421.37, 421.37]  # Table 2 beside ours
     assert (out / "paper_grid.md").exists() and (out / "paper_grid.png").exists()
     # provenance beside both CSVs (was none: a comment in the .md without the command)
-    from mkm.core.records import file_sha256, read_prediction_header, source_version
+    from mkm.core.records import read_prediction_header, source_version
 
     for name in ("paper_grid.csv", "paper_grid_runs.csv"):
         info = read_prediction_header(out / name)
@@ -53,6 +54,16 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
                          'pressure_bar=3 not in [0, 2.5]"')  # no force: no answer there
     assert captured.err.startswith("mkm surrogate predict: warning: 1 of 7 points lie outside "
                                    "the training")
+    # written to a file, its sidecar names the model file it came from and what trained it
+    # (was: the dataset's sha256 alone: two models of one dataset read alike)
+    assert main(["fem", "solve", "--model", f"surrogate:path={model}", "--D0", "35", "--t0",
+                 "2.5", "--eps", "5%", "--out", str(tmp_path / "sweep.csv")]) == 0
+    saved = json.loads((model / "metadata.json").read_text(encoding="utf-8"))
+    sidecar = json.loads((tmp_path / "sweep.json").read_text(encoding="utf-8"))
+    assert sidecar["surrogate"] == {"sha256": saved["sha256"], "trained": saved["trained"],
+                                    "random_state": 0, "dataset": {
+                                        "path": saved["dataset"]["path"],
+                                        "sha256": file_sha256(thickwall_dataset)}}
 
     reference = tmp_path / "ref.csv"
     theta0 = str(calibrated("axisym")["theta0_deg"])  # the angle the fixture was built at
