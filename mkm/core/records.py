@@ -602,10 +602,19 @@ def _csv_cell(value) -> str:
 
 def read_prediction_header(path) -> dict[str, Any]:
     """The metadata of a CSV: its JSON sidecar, or (files written before sidecars) its
-    ``# key: value`` comment lines (values parsed as JSON where they are JSON)."""
+    ``# key: value`` comment lines (values parsed as JSON where they are JSON). A sidecar that
+    is no JSON object (cut short, edited) is a one-line ``ValueError`` naming it."""
     sidecar = sidecar_path(path)
     if sidecar.is_file():
-        return json.loads(sidecar.read_text(encoding="utf-8"))
+        expected = f"expected the JSON object of metadata mkm writes beside {Path(path).name}"
+        try:
+            header = json.loads(sidecar.read_text(encoding="utf-8-sig"))
+        except (ValueError, RecursionError) as exc:  # UnicodeDecodeError is a ValueError
+            first = (str(exc).splitlines() or [type(exc).__name__])[0][:80]
+            raise ValueError(f"{sidecar} is not valid JSON ({first}): {expected}") from None
+        if not isinstance(header, dict):
+            raise ValueError(f"{sidecar} holds a JSON {type(header).__name__}: {expected}")
+        return header
     header = {}
     with open(path, encoding="utf-8") as f:
         for line in f:

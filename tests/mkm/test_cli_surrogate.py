@@ -1,5 +1,6 @@
 import json
 import os
+import re
 
 import pandas as pd
 import pytest
@@ -100,6 +101,25 @@ def test_a_calibration_a_command_would_not_use_is_refused(command, tmp_path, cap
     assert exited.value.code == 2
     assert f"unrecognized arguments: --calibration {lab}" in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize(("sidecar", "said"), [
+    ('{"model": "axisym", "gri', r"is not valid JSON \(Unterminated string starting at: line "
+                                 r"1 column 21 \(char 20\)\)"),
+    ("[1, 2]", "holds a JSON list")])
+def test_a_datasets_sidecar_cut_short_is_a_one_line_error(sidecar, said, thickwall_dataset,
+                                                         tmp_path, capsys):
+    # was: "error: Unterminated string starting at: ..." naming no file; a list was taken
+    dataset = tmp_path / "d.csv"
+    dataset.write_bytes(thickwall_dataset.read_bytes())
+    (tmp_path / "d.json").write_text(sidecar, encoding="utf-8")
+    assert main(["surrogate", "train", "--dataset", str(dataset), "--kind", "physics",
+                 "--splits", "0", "--out", str(tmp_path / "m")]) == 2
+    err = capsys.readouterr().err
+    assert re.fullmatch(f"mkm surrogate train: error: {re.escape(str(tmp_path / 'd.json'))} "
+                        f"{said}: expected the JSON object of metadata mkm writes beside "
+                        "d.csv\n", err), err
+    assert not (tmp_path / "m").exists()
 
 
 def test_missing_dataset_is_a_one_line_error(tmp_path, capsys):
