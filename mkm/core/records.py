@@ -137,10 +137,8 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
         fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     except OSError as exc:  # named by the file asked for, not by its temporary
         raise type(exc)(exc.errno, exc.strerror, str(path)) from None
-    umask = os.umask(0)
-    os.umask(umask)
     try:
-        os.chmod(tmp, 0o666 & ~umask)
+        follow_umask(tmp, 0o666)
         with os.fdopen(fd, "wb") as f:
             f.write(data.encode("utf-8") if isinstance(data, str) else data)
             f.flush()
@@ -150,6 +148,14 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
         Path(tmp).unlink(missing_ok=True)
         raise
     return path
+
+
+def follow_umask(path: str | os.PathLike, mode: int) -> None:
+    """Give ``path`` the permissions ``mode`` less the umask, as any file or folder the user
+    makes: ``mkstemp`` and ``mkdtemp`` make theirs private to their writer."""
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(path, mode & ~umask)
 
 
 @contextmanager
