@@ -1201,7 +1201,7 @@ def export_run(run_dir: str | Path, out: str | Path, fmt: str = "xlsx") -> Path:
     # the loader's status and problems: a dead run's record still says "running", a copy cut
     # short still says every sample is there
     # and the export's own record: a workbook travels without its run folder
-    exported = {"source": str(run.path), **provenance()}
+    exported = {"source": str(run.path), "sha256": run.sha256(), **provenance()}
     copy = (run.meta.imported_from or {}).get("table_copy")
     if copy and not (run.path / copy).is_file():
         raise ValueError(f"{run.path.name}: the table it was imported from, {copy}, is missing "

@@ -353,13 +353,29 @@ def _mend_dead_runs(device: Backend, owner: BenchOwner, notify
     return [], markers
 
 
-def loadcell_table(fit: dict, config: BenchConfig | None = None) -> str:
+def loadcell_table(fit: dict, config: BenchConfig | None = None,
+                   record: dict | None = None) -> str:
     """The ``[loadcell]`` table to paste into a bench configuration, from a fit
     (:func:`fit_loadcell`): the configured channel and capacity, the fitted sensitivity and
-    offset (6 significant digits), as TOML."""
+    offset (6 significant digits), as TOML. With ``record`` (:func:`mkm.core.records.provenance`)
+    its first lines are comments saying how it was fitted: the command, date, code, the masses
+    and volts and the fit's quality. Pasted into the configuration, they go with it into every
+    run folder's config.toml, where run.json holds the numbers alone."""
     import tomlkit
 
     table = tomlkit.table()
+    if record is not None:
+        where = (f" from volts measured on the {fit['measured_on']}" if "measured_on" in fit
+                 else " from volts measured elsewhere")
+        code = ", ".join(f"{k} {v}" for k, v in (("mkm-bench",
+                                                   record["versions"].get("mkm-bench")),
+                                                  ("git", record.get("git"))) if v)
+        for line in (f"fitted {record['date_utc']}{where} by: {record['command']} ({code})",
+                     f"masses [kg] {', '.join(f'{m:g}' for m in fit['mass_kg'])}; volts [V] "
+                     f"{', '.join(f'{v:.6g}' for v in fit['volts'])}",
+                     f"R^2 {fit['r_squared']:.6f}, largest residual "
+                     f"{fit['max_abs_residual_N']:.3f} N"):
+            table.add(tomlkit.comment(line))
     if config is not None:
         table["channel"] = config.loadcell.channel
         table["capacity_N"] = config.loadcell.capacity_N
@@ -390,7 +406,8 @@ def fit_loadcell(mass_kg, volts) -> dict:
 
     The cell is linear: ``volts = force_N / sensitivity_N_per_V + offset_V`` with
     ``force_N = mass_kg * g`` (standard gravity). Returns the sensitivity [N/V], the offset [V],
-    R^2, the standard error of the sensitivity and the largest residual in newtons.
+    the masses and volts fitted, R^2, the standard error of the sensitivity and the largest
+    residual in newtons.
     """
     m = np.asarray(mass_kg, dtype=float)
     v = np.asarray(volts, dtype=float)
@@ -407,7 +424,7 @@ def fit_loadcell(mass_kg, volts) -> dict:
     sensitivity = 1.0 / fit.slope
     residual_N = (v - (fit.intercept + fit.slope * force)) * sensitivity
     return {"sensitivity_N_per_V": float(sensitivity), "offset_V": float(fit.intercept),
-            "r_squared": float(fit.rvalue**2),
+            "mass_kg": m.tolist(), "volts": v.tolist(), "r_squared": float(fit.rvalue**2),
             "sensitivity_stderr_N_per_V": float(fit.stderr / fit.slope**2)
             if m.size > 2 else float("nan"),
             "max_abs_residual_N": float(np.abs(residual_N).max()), "n_points": int(m.size)}
@@ -440,8 +457,9 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
                 device.read(device.available(), config.daq.read_timeout_s)
             volts.append(float(mean_volts(device, config, seconds)[:, 0].mean()))
         operator.hang_mass(0.0)
-    return {**fit_loadcell(mass_kg, volts), "mass_kg": list(map(float, mass_kg)),
-            "volts": volts}
+    bench = f"{config.daq.backend} bench" + (f" (SIMULATED, seed {config.sim.seed})"
+                                               if config.simulated else "")
+    return {**fit_loadcell(mass_kg, volts), "measured_on": bench}
 
 
 def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual"

@@ -43,7 +43,12 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.guards import regular_file
-from mkm.core.records import finite_or_null, spreadsheet_safe_text, write_json_atomic
+from mkm.core.records import (
+    file_sha256,
+    finite_or_null,
+    spreadsheet_safe_text,
+    write_json_atomic,
+)
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
@@ -837,6 +842,14 @@ class Run:
     @property
     def reason(self) -> str:
         return self.meta.reason
+
+    def sha256(self) -> dict[str, str]:
+        """The SHA-256 of each file of the run there is (its record, steps, samples and an
+        imported table's copy), by name: what a file computed from the run names it by."""
+        copy = (self.meta.imported_from or {}).get("table_copy")
+        names = ("run.json", "steps.csv", "samples.csv", *([copy] if copy else []))
+        return {name: file_sha256(self.path / name) for name in names
+                if (self.path / name).is_file()}
 
     def require_content(self, what: str) -> None:
         """``ValueError`` (one line naming ``what`` would be written) unless the run holds a

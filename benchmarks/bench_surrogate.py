@@ -43,7 +43,7 @@ import warnings
 import numpy as np
 import pandas as pd
 
-from mkm.core.records import jsonable, provenance
+from mkm.core.records import jsonable, provenance, recorded_path
 from mkm.surrogate.coverage import coverage
 from mkm.surrogate.design import DESIGN_DATASET
 from mkm.surrogate.kinds import names
@@ -211,7 +211,7 @@ def main() -> None:
               f"{1e3 * r['predict_33_p90_s']:8.3f} {1e3 * r['predict_33_min_s']:8.3f} "
               f"{1e3 * r['predict_33_cpu_median_s']:8.3f} "
               f"{1e3 * r['single_point_median_s']:8.3f}")
-    result = {"dataset": str(DESIGN_DATASET), "dataset_sha256": data.sha256,
+    result = {"dataset": recorded_path(DESIGN_DATASET), "dataset_sha256": data.sha256,
               "offgrid_draws": draws, "offgrid_pooled": offgrid_pooled,
               "muscle_held_out": held_out, "fe_budget_muscles": budget,
               "kinds": rows, **provenance()}

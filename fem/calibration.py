@@ -107,6 +107,12 @@ class Calibration:
     def is_shipped(self) -> bool:
         return self.path == CALIBRATION_FILE
 
+    def record(self) -> dict:
+        """The file (``shipped fem/calibration.json`` for the shipped one) and its SHA-256: how
+        the provenance of what a model computed with it names it."""
+        return {"file": "shipped fem/calibration.json" if self.is_shipped else str(self.path),
+                "sha256": file_sha256(self.path)}
+
     def entry(self, key: str) -> dict:
         """Entry ``key`` (for example ``"eq2-inner"``); ``ValueError`` naming the command that
         writes it if there is none."""
@@ -181,6 +187,84 @@ def _check_entry(path: Path, key: str, entry: dict) -> None:
     if not isinstance(entry.get("model_params", {}), dict):
         raise ValueError(f"calibration {path}: entry {key!r} has model_params="
                          f"{str(entry['model_params'])[:40]!r}: expected a table of parameters")
+    if "identified" in entry:
+        _check_identified(path, key, entry["identified"])
+
+
+def _number(value, none: bool = False) -> bool:
+    return (value is None and none) or (isinstance(value, int | float)
+                                        and not isinstance(value, bool))
+
+
+def _text(value) -> bool:
+    return isinstance(value, str)
+
+
+def _number_or_null(value) -> bool:
+    return _number(value, none=True)
+
+
+def _muscle(value) -> bool:
+    """A run's declared muscle: its id, and numbers."""
+    return isinstance(value, dict) and all(_number(x) for k, x in value.items() if k != "id")
+
+
+def _shift(value) -> bool:
+    return isinstance(value, dict) and all(map(_number, value.values()))
+
+
+def _objects(value, shape) -> bool:
+    """Whether ``value`` is a list of objects each of whose ``shape`` keys (name -> check of
+    its value) it holds passes its check."""
+    return isinstance(value, list) and all(
+        isinstance(item, dict) and all(check(item[name]) for name, check in shape.items()
+                                       if name in item) for item in value)
+
+
+def _check_identified(path: Path, key: str, identified) -> None:
+    """``ValueError`` in one line unless ``identified`` is an object whose parts have the shape
+    ``mkm identify`` records and the report, ``fem solve``'s band and identify's page read (a
+    part left out is none: a file written by hand may hold the runs alone): an entry edited by
+    hand or otherwise was a traceback where it was read."""
+    band = identified.get("band", {}) if isinstance(identified, dict) else None
+    n = len(band.get("parameters", [])) if isinstance(band, dict) \
+        and isinstance(band.get("parameters"), list) else -1
+    checks = {
+        ".runs": (_objects(identified.get("runs", []), {"run": _text, "path": _text,
+                                                         "muscle": _muscle})
+                  and all("run" in r for r in identified.get("runs", [])),
+                  "a list of runs, each an object naming its run"),
+        ".parameters": (_objects(identified.get("parameters", []), {
+            "parameter": _text, "value": _number_or_null, "ci_low": _number_or_null,
+            "ci_high": _number_or_null, "status": _text})
+            and all({"parameter", "value"} <= p.keys() for p in identified.get("parameters", [])),
+            "a list of parameters, each an object naming it and its value"),
+        ".interval_method": (_text(identified.get("interval_method", "")), "a text"),
+        ".options, .notes, .dropped": (all(isinstance(identified.get(k, []), list)
+                                           for k in ("options", "notes", "dropped")), "lists"),
+        ".leave_one_run_out": (_objects(identified.get("leave_one_run_out", []), {}),
+                               "a list of objects"),
+        ".misfit": (isinstance(identified.get("misfit", {}), dict) and _number(
+            identified.get("misfit", {}).get("chi2_per_nu"), none=True),
+            "an object, its chi2_per_nu a number"),
+        ".band": (isinstance(band, dict) and n >= 0
+                  and all(map(_text, band["parameters"]))
+                  and isinstance(band.get("values"), list) and len(band["values"]) == n
+                  and all(_number(x) for x in band["values"])
+                  and isinstance(band.get("covariance"), list) and len(band["covariance"]) == n
+                  and all(isinstance(row, list) and len(row) == n and all(map(_number, row))
+                          for row in band["covariance"])
+                  and _objects(band.get("terms", []), {"kind": _text, "shift": _shift})
+                  and all({"kind", "shift"} <= t.keys() for t in band.get("terms", []))
+                  and all(_number(band.get(k, 0.0)) for k in ("sensitivity_tolerance",
+                                                              "misfit_rms_N"))
+                  if "band" in identified else True,
+                  "an object of parameters, their values and an n x n covariance, and terms"),
+    } if isinstance(identified, dict) else {"": (False, "an object")}
+    for where, (good, expected) in checks.items():
+        if not good:
+            raise ValueError(f"calibration {path}: entry {key!r} has identified{where} of "
+                             f"another shape: expected {expected}, as mkm identify writes it")
 
 
 def _load(path: Path) -> dict:
@@ -590,7 +674,4 @@ def calibration_provenance(model) -> dict:
         return {"source": "theta0_deg given explicitly", "theta0_deg": model.theta0_deg}
     calibration = getattr(model, "calibration", None) or Calibration.shipped()
     key = model.calibration_key
-    return {"file": "shipped fem/calibration.json" if calibration.is_shipped
-            else str(calibration.path),
-            "sha256": file_sha256(calibration.path), "key": key,
-            "entry": calibration.entry(key)}
+    return {**calibration.record(), "key": key, "entry": calibration.entry(key)}

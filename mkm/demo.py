@@ -15,7 +15,7 @@ import shutil
 import sys
 from pathlib import Path
 
-from mkm.core.records import write_json_atomic
+from mkm.core.records import provenance, write_json_atomic
 from mkm.paths import default_out
 
 RECORD = "demo.json"  # the run folders this demo wrote, replaced by the next one
@@ -51,7 +51,7 @@ def run_demo(out_dir: str | Path | None = None, progress: bool = True,
             raise BenchError(f"simulated run at eps = {eps:g} ended {result.status}: "
                              f"{result.reason}")
         runs.append(result.path)
-    write_json_atomic(out / RECORD, {"runs": [Path(r).name for r in runs]})
+    write_json_atomic(out / RECORD, {"runs": [Path(r).name for r in runs], **provenance()})
     return build_report(runs, out_dir=out / "report", progress=progress,
                         cache_dir=DEFAULT_CACHE_DIR if cache_dir is None else cache_dir,
                         **report_options)

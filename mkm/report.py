@@ -242,7 +242,9 @@ def _write_report(run_dirs, specs, out: Path, cache_dir, tolerance, surrogate_se
 
     names = {s.text: s.display_name for s in specs}
     colours = model_colours(specs)
-    prov: dict[str, dict] = {"software": provenance()}
+    # the calibration the models took their angles and rubber from, named by its content
+    prov: dict[str, dict] = {"software": provenance(),
+                             "calibration": (calibration or Calibration.shipped()).record()}
     bar = progress_bar(len(run_dirs) * (len(specs) + 1) + int(surrogate_section), "report",
                        progress, unit="task")
     runs, models = [], {}  # one model per spec and rest length for the whole report
@@ -301,9 +303,9 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     """Predict and score every model on the run's kept steps; record provenance."""
     meta, muscle = r.meta, r.predicted
     run_key = f"run-{r.k}"
-    prov[run_key] = {"path": str(r.run.path), **{key: meta.get(key) for key in
-                                                  ("provenance", "command", "config_source",
-                                                   "config_overrides") if meta.get(key)}}
+    prov[run_key] = {"path": str(r.run.path), "sha256": r.run.sha256(),
+                     **{key: meta.get(key) for key in ("provenance", "command", "config_source",
+                                                       "config_overrides") if meta.get(key)}}
     r.keys = [run_key]
     steps = r.run.steps
     if steps.empty:

@@ -34,6 +34,7 @@ import pandas as pd
 from mkm.auto import DEFAULT_TOLERANCE, MODEL_ERRORS_FILE, read_model_errors
 from mkm.core.records import provenance, save_figure, write_atomic, write_json_atomic
 from mkm.fem import ladder
+from mkm.fem.calibration import Calibration
 from mkm.fem.interface import ForceModel, Prediction
 from mkm.fem.limits import PRACTICAL_RANGE
 from mkm.fem.outcomes import PHYSICAL_LIMITS, classify
@@ -403,6 +404,8 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
     out.mkdir(parents=True, exist_ok=True)
     machine = machine_name()
     info = {**provenance(), "machine_name": machine, "reference": config.reference,
+            # the predictors' angles and rubber: its entries
+            "calibration": Calibration.shipped().record(),
             "muscles": [list(m) for m in config.muscles],
             "pressures_bar": list(config.pressures)}
     token = _SHOW_PROGRESS.set(progress)

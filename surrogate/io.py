@@ -39,7 +39,14 @@ import tempfile
 import warnings
 from pathlib import Path
 
-from mkm.core.records import file_sha256, jsonable, provenance, source_version, write_json_atomic
+from mkm.core.records import (
+    file_sha256,
+    follow_umask,
+    jsonable,
+    provenance,
+    source_version,
+    write_json_atomic,
+)
 from mkm.fem.interface import INPUTS
 from mkm.surrogate import kinds
 from mkm.surrogate.model import SurrogateForceModel
@@ -131,6 +138,7 @@ def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
     with lock if lock is not None else save_lock(directory):
         staging = Path(tempfile.mkdtemp(prefix=f".{directory.name}-", dir=directory.parent))
         try:
+            follow_umask(staging, 0o777)  # the model folder itself, once moved into place
             sio.dump(model.estimator, staging / ESTIMATOR_FILE)
             checks = {"code_version": code_version(model.kind),
                       "calibration": calibration_snapshot(),

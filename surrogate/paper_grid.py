@@ -18,7 +18,13 @@ from pathlib import Path
 import pandas as pd
 from joblib import Parallel, delayed
 
-from mkm.core.records import provenance, save_figure, source_version, write_csv_with_sidecar
+from mkm.core.records import (
+    provenance,
+    recorded_path,
+    save_figure,
+    source_version,
+    write_csv_with_sidecar,
+)
 from mkm.fem.paper import TABLE2_CSV
 from mkm.surrogate.paper_nets import PAPER_NETS, paper_net
 from mkm.surrogate.training_data import PAPER_DATASET, load_training_data
@@ -162,11 +168,11 @@ def paper_grid_study(out_dir, dataset=PAPER_DATASET, seeds: int = 10, jobs: int 
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     info = provenance()
-    header = (f"<!-- dataset {dataset} ({load_training_data(dataset).sha256[:12]}), seeds 0-"
-              f"{seeds - 1}, jobs {jobs}, {seconds:.0f} s, {info['date_utc']}, "
-              f"{info['versions']} -->\n")
+    sha256 = load_training_data(dataset).sha256
+    header = (f"<!-- dataset {recorded_path(dataset)} ({sha256[:12]}), seeds 0-{seeds - 1}, "
+              f"jobs {jobs}, {seconds:.0f} s, {info['date_utc']}, {info['versions']} -->\n")
     # provenance beside each CSV: the dataset, the splits and nets, the code, the command
-    record = {"dataset": str(dataset), "dataset_sha256": load_training_data(dataset).sha256,
+    record = {"dataset": recorded_path(dataset), "dataset_sha256": sha256,
               "seeds": list(range(seeds)), "jobs": jobs, "variants": list(variants),
               "nets": None if nets is None else list(nets), "seconds": seconds,
               "code_version": source_version("mkm.surrogate.paper_grid"), **info}

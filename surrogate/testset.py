@@ -19,6 +19,7 @@ from mkm.core.records import (
     provenance,
     read_csv_checked,
     read_prediction_header,
+    recorded_path,
     source_version,
     write_csv_with_sidecar,
 )
@@ -150,7 +151,8 @@ def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE
     points = pd.concat(all_points, ignore_index=True)
     summary = pd.concat(summaries, ignore_index=True)
     # provenance: the reference read, each model and the code behind it, the command
-    info = {"reference": str(reference_path), "reference_sha256": file_sha256(reference_path),
+    info = {"reference": recorded_path(reference_path),
+            "reference_sha256": file_sha256(reference_path),
             "reference_params": reference.attrs.get("params", {}),
             "models": {name: {"model": model.name, "params": model.params(),
                               "version": source_version(type(model).__module__)}

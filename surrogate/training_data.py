@@ -24,6 +24,7 @@ from mkm.core.records import (
     package_file,
     read_csv_checked,
     read_prediction_header,
+    recorded_path,
 )
 from mkm.fem.interface import INPUTS, Domain
 
@@ -51,7 +52,8 @@ class TrainingData:
 
     ``fixed``: the :data:`PARAMETERS` the dataset holds at one value (a surrogate trained on it
     answers at that value only); ``box``: the closed range of each input the surrogate claims
-    (the design's box when the sidecar has one, else the span of the data).
+    (the design's box when the sidecar has one, else the span of the data); ``path``: the file
+    as records name it (:func:`~mkm.core.records.recorded_path`), beside its ``sha256``.
     """
 
     X: np.ndarray
@@ -129,6 +131,6 @@ def load_training_data(path=DEFAULT_DATASET) -> TrainingData:
            else [float(X[:, i].min()), float(X[:, i].max())] for i, name in enumerate(inputs)}
     return TrainingData(X=X, y=used["force_N"].to_numpy(dtype=float), inputs=inputs,
                         fixed=fixed, box=box, groups=groups.ravel(),
-                        threshold_pressure_bar=threshold, path=str(path),
+                        threshold_pressure_bar=threshold, path=recorded_path(path),
                         sha256=file_sha256(path), provenance=provenance,
                         n_dropped=int((~keep).sum()), labels=labels)

@@ -229,8 +229,8 @@ def _starts(bench, candidate):
                 *(bench.BASE[n][0] for n in ("theta0_deg", "rubber_scale")))]
 
 
-# The machine paths recorded commands still name, each with why its record stays as it is; a
-# command naming any other fails.
+# The machine paths recorded commands and values still name, each with why its record stays as
+# it is; a record naming any other fails.
 PATHS_NOT_RERUN = {
     # FE draws merged into the shipped sets, recorded in their sidecars with seed, muscles and
     # sha256 and nested in the results trained on them (surrogates.md, "What it ships", rebuilds
@@ -253,33 +253,41 @@ PATHS_NOT_RERUN = {
     # the study's folder: re-running the study measures new seconds per force on this shared
     # machine, and auto ranks its candidates by them
     "/work/scratch-lead/study-final": "mkm/data/model_errors.json's study folder",
+    # the shipped training sets as a checkout named them (train.path, dataset) in results that
+    # take an hour or more of FE each on one core (40 to 60 muscles times 5 to 25 draws, with
+    # the sha256 of the set beside each path): recorded again when next measured
+    "/work/main/surrogate/data/mkm_design.csv": "surrogate_limits_box_adaptive*.json's set",
+    "/work/wt-provenance9/surrogate/data/mkm_design.csv": "surrogate_limits_box.json's set",
+    "/work/wt/calstd/surrogate/data/mkm_design.csv": "surrogate_std_coverage*.json's set",
+    "/work/main/surrogate/data/mkm_range_design.csv": "surrogate_limits_range*.json's set",
+    "/work/wt/calstd/surrogate/data/mkm_range_design.csv": "surrogate_range_gp*.json's set",
+    "/work/wt/lock/surrogate/data/mkm_range_design.csv": "surrogate_range_lock.json's set",
 }
 
 
-def _recorded_commands():
-    """Every command string recorded anywhere in the measured results the docs show, their
-    sidecars and the shipped datasets' sidecars (the training sets' provenance nests theirs):
-    ``(file, where in it, command)``."""
+def _recorded_strings():
+    """Every string recorded anywhere in the measured results the docs show, their sidecars and
+    the shipped datasets' sidecars (the training sets' provenance nests theirs):
+    ``(file, where in it, text)``, ``where`` ending in the key that holds it."""
     import json
 
     def walk(node, where):
         if isinstance(node, dict):
             for key, value in node.items():
-                if key == "command" and isinstance(value, str):
-                    yield f"{where}/command", value
-                else:
-                    yield from walk(value, f"{where}/{key}")
+                yield from walk(value, f"{where}/{key}")
         elif isinstance(node, list):
             for i, value in enumerate(node):
                 yield from walk(value, f"{where}[{i}]")
+        elif isinstance(node, str):
+            yield where, node
 
     files = [*sorted((DOCS / "measured").glob("*.json")),
              *sorted((ROOT / "surrogate" / "data").glob("*.json")),
              *sorted((ROOT / "mkm" / "data").rglob("*.json"))]
     for path in files:
         record = json.loads(path.read_text(encoding="utf-8"))
-        for where, command in walk(record, ""):
-            yield path.relative_to(ROOT).as_posix(), where, command
+        for where, text in walk(record, ""):
+            yield path.relative_to(ROOT).as_posix(), where, text
 
 
 def _machine_paths(command: str) -> list[str]:
@@ -287,8 +295,22 @@ def _machine_paths(command: str) -> list[str]:
     machine: an absolute POSIX or Windows path, a home folder, anything under /tmp. A lone ``/``
     is a word (a row named "surrogate / FE model"), not a path."""
     words = (w.strip("'\"") for w in re.split(r"[\s=]+", command))
-    return [w for w in words if re.match(r"(/[^/\s]|[A-Za-z]:[\\/]|\\\\|~[/\\])", w)
-            or "/tmp/" in w or w in ("/tmp", "~")]
+    return [w for w in words if _is_machine_path(w)]
+
+
+def _is_machine_path(text: str) -> bool:
+    return bool(re.match(r"(/[^/\s]|[A-Za-z]:[\\/]|\\\\|~[/\\])", text)
+                or "/tmp/" in text or text in ("/tmp", "~"))
+
+
+def _recorded_machine_paths(where: str, text: str) -> list[str]:
+    """The machine paths a recorded string names: a command's arguments; any other value that
+    is one path whole (a file, a folder), not prose that mentions one (a trial named
+    "samples.csv link to /dev/zero")."""
+    if where.endswith("/command"):
+        return _machine_paths(text)
+    text = text.strip()
+    return [text] if _is_machine_path(text) and not any(c.isspace() for c in text) else []
 
 
 def test_machine_paths_are_found_in_any_form():
@@ -299,22 +321,28 @@ def test_machine_paths_are_found_in_any_form():
         "/work/wt/tools/merge.py", "~/a.csv"]
     assert _machine_paths("surrogate / FE model (medians)") == []
     assert _machine_paths("mkm fem convergence --out docs/measured") == []
+    assert _recorded_machine_paths("/train/path", "/work/main/surrogate/data/a.csv") == [
+        "/work/main/surrogate/data/a.csv"]
+    assert _recorded_machine_paths("/cache", "C:\\Users\\lab\\cache") == [
+        "C:\\Users\\lab\\cache"]
+    assert _recorded_machine_paths("/train/path", "surrogate/data/a.csv") == []
+    assert _recorded_machine_paths("/trials[3]/name", "import link to /etc/passwd") == []
 
 
-def test_recorded_commands_hold_paths_relative_to_the_repository():
-    """Every command the measured results, their sidecars and the shipped datasets record (a
-    training set's nested in the result that used it too) is what anyone types in a checkout:
-    no absolute path and no /tmp file of the machine that ran it. The top-level command alone
-    was checked, so results written under /tmp and copied, and training sets left in /tmp,
-    went unseen."""
+def test_recorded_values_hold_no_path_of_the_machine_that_ran_them():
+    """Every path the measured results, their sidecars and the shipped datasets record (in a
+    command, a training set's nested in the result that used it too, or as a value of its own:
+    a training set's ``path``, a dataset's ``cache``) is what anyone types in a checkout: no
+    absolute path and no /tmp file of the machine that ran it. Only commands were checked, so
+    ``train.path``, ``dataset`` and ``cache`` named a checkout and a user's cache unseen."""
     offenders, named = [], set()
-    recorded = list(_recorded_commands())
-    assert len(recorded) > 100  # the nested ones are walked
-    for name, where, command in recorded:
-        paths = set(_machine_paths(command))
+    recorded = list(_recorded_strings())
+    assert sum(where.endswith("/command") for _, where, _ in recorded) > 100  # nested ones too
+    for name, where, text in recorded:
+        paths = set(_recorded_machine_paths(where, text))
         named |= paths
         if paths - set(PATHS_NOT_RERUN):
-            offenders.append(f"{name}{where}: {command}")
+            offenders.append(f"{name}{where}: {text}")
     assert not offenders, "\n".join(offenders)
     # a path no record names any more leaves the list: it holds only what is still there
     assert set(PATHS_NOT_RERUN) <= named, set(PATHS_NOT_RERUN) - named

@@ -19,7 +19,12 @@ from typing import Any
 
 import pandas as pd
 
-from mkm.core.records import check_csv_with_sidecar, provenance, write_csv_with_sidecar
+from mkm.core.records import (
+    check_csv_with_sidecar,
+    provenance,
+    recorded_path,
+    write_csv_with_sidecar,
+)
 from mkm.fem.batch import (
     COLUMNS,
     Job,
@@ -174,7 +179,8 @@ def _provenance(run: DatasetRun, grid: Grid, jobs: list[Job], done: dict,
         "wall_seconds": round(run.wall_seconds, 3),
         "workers": run.workers,
         "chunk_jobs": done["chunk_jobs"],
-        "cache": str(cache_dir),
+        "cache": ("the user cache" if Path(cache_dir) == Path(default_cache_dir())
+                  else recorded_path(cache_dir)),
         "columns": {c: COLUMNS.get(c, "reported by the model (see "
                                       f"{entry(jobs[0].model).factory})")
                     for c in run.frame.columns},

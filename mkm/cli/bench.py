@@ -260,6 +260,7 @@ def _calibrate_loadcell(args) -> int:
         loadcell_table,
         refused_fit,
     )
+    from mkm.core.records import provenance
 
     if args.volts is not None:  # volts measured elsewhere: nothing is driven
         config = _config(args)
@@ -276,7 +277,7 @@ def _calibrate_loadcell(args) -> int:
     print(f"sensitivity_N_per_V = {out['sensitivity_N_per_V']:.4f}, offset_V = "
           f"{out['offset_V']:.5f} (R^2 {out['r_squared']:.6f}, largest residual "
           f"{out['max_abs_residual_N']:.3f} N over {out['n_points']} masses)", file=sys.stderr)
-    print(loadcell_table(out, config))
+    print(loadcell_table(out, config, provenance()))
     if refused := refused_fit(out, config):
         say(args, "warning", f"this [loadcell] pasted into {args.config or 'the config'} is "
             f"refused: {refused}; lower capacity_N to what the cell reads before its rail, or "

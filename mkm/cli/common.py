@@ -294,8 +294,9 @@ def spec_from_args(args, **overrides):
 def emit_prediction(prediction, out: str | None, model=None) -> None:
     """The prediction as plain CSV to ``out`` with its metadata in a JSON sidecar (announced on
     stderr), or the CSV alone to stdout. Given the ``model`` that made it, the sidecar also
-    records its code version and, for a model with a calibrated angle, which calibration gave
-    it (:func:`mkm.fem.calibration.calibration_provenance`)."""
+    records its code version, for a model with a calibrated angle which calibration gave it
+    (:func:`mkm.fem.calibration.calibration_provenance`), and for a surrogate its model file's
+    sha256, its training's provenance, seed and dataset."""
     if out:
         buffer = io.StringIO()
         write_prediction_csv(prediction, buffer)
@@ -307,6 +308,13 @@ def emit_prediction(prediction, out: str | None, model=None) -> None:
             metadata["model_version"] = model_version(model)
             if isinstance(model, CalibratedTheta0):
                 metadata["calibration"] = calibration_provenance(model)
+            trained = getattr(model, "metadata", None) or {}
+            if "trained" in trained:  # a surrogate: its model file and what it learnt from
+                dataset = trained.get("dataset") or {}
+                metadata["surrogate"] = {
+                    "sha256": trained.get("sha256"), "trained": trained["trained"],
+                    "random_state": trained.get("random_state"),
+                    "dataset": {k: dataset.get(k) for k in ("path", "sha256")}}
         path = write_csv_with_sidecar(out, buffer.getvalue(), metadata)
         print(f"wrote {path} and {sidecar_path(path).name}", file=sys.stderr)
     else:

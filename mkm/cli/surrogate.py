@@ -191,11 +191,13 @@ def register(subparsers) -> None:
     _accept_argument(evaluate)
     evaluate.set_defaults(func=_evaluate)
 
-    for command in (grid, train, predict, test, ref, design, evaluate):
-        # the default braid angle of a surrogate, and the FE's, come from the calibration
+    for command in (predict, test, ref, evaluate):
+        # the default braid angle of a surrogate, and the FE's, come from the calibration; a
+        # training, its dataset and the paper's grid take the angle as data or the shipped one
         add_calibration_argument(command)
-        add_progress_argument(command)
         command.set_defaults(func=with_calibration(command.get_default("func")))
+    for command in (grid, train, predict, test, ref, design, evaluate):
+        add_progress_argument(command)
     _accept_argument(predict)
 
 

@@ -3,7 +3,8 @@
 One place for the plumbing that datasets, calibrations, run folders, caches, model files and
 reports share, so they cannot drift apart:
 
-- :func:`provenance`: library versions, command, machine and UTC date;
+- :func:`provenance`: library versions, the code's git revision, command, machine and UTC
+  date;
 - :func:`write_atomic` / :func:`write_json_atomic`: a reader (or a resumed job after a crash)
   sees the old file or the new one, never half of one; files get the permissions of the user's
   umask, like any file the user makes;
@@ -11,7 +12,8 @@ reports share, so they cannot drift apart:
   project module they import, read from the files (the same code gives the same version in every
   process and on every Dask worker), and of the package data files they read;
 - :func:`package_file`: a data file shipped inside a package, found through
-  ``importlib.resources`` (works from a wheel, from any working directory).
+  ``importlib.resources`` (works from a wheel, from any working directory);
+- :func:`recorded_path`: a path as a record names it, with no folder of one machine.
 
 The toolkit's own folders (the user cache, the state folder) are :mod:`mkm.core.home`'s.
 """
@@ -66,10 +68,35 @@ def one_argument(text) -> str:
 
 
 def provenance() -> dict[str, Any]:
-    """Library versions, command line, machine and UTC date, recorded with every generated file."""
+    """Library versions, the code's revision (:func:`git_revision`), command line, machine and
+    UTC date, recorded with every generated file."""
     return {"date_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
             "command": command_line(), "machine": platform.machine(),
-            "versions": dict(_library_versions())}
+            "versions": dict(_library_versions()), "git": git_revision()}
+
+
+#: The checkout the running code lies in, if it runs from one (``mkm/core/`` is two folders
+#: below it); from a wheel, the folder holding the installed package.
+CODE_ROOT = Path(__file__).resolve().parents[2]
+
+
+@cache
+def git_revision(root: Path = CODE_ROOT) -> str | None:
+    """``git describe --always --dirty`` of the checkout ``root`` (``83e6ee1a2b3c-dirty`` for
+    edited files): the code itself, where the version of a checkout (``0.1.0``) names every
+    commit alike. None when the code is no checkout's (a wheel: its installed version, in
+    ``versions``, names it) or git cannot tell (not installed, as on a bench PC)."""
+    import subprocess
+
+    if not ((root / ".git").exists() and (root / "pyproject.toml").is_file()):
+        return None
+    try:
+        done = subprocess.run(["git", "-C", str(root), "describe", "--always", "--dirty",
+                               "--abbrev=12"], capture_output=True, text=True, timeout=10,
+                              check=True)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return done.stdout.strip() or None
 
 
 @cache
@@ -110,10 +137,8 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
         fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     except OSError as exc:  # named by the file asked for, not by its temporary
         raise type(exc)(exc.errno, exc.strerror, str(path)) from None
-    umask = os.umask(0)
-    os.umask(umask)
     try:
-        os.chmod(tmp, 0o666 & ~umask)
+        follow_umask(tmp, 0o666)
         with os.fdopen(fd, "wb") as f:
             f.write(data.encode("utf-8") if isinstance(data, str) else data)
             f.flush()
@@ -123,6 +148,14 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
         Path(tmp).unlink(missing_ok=True)
         raise
     return path
+
+
+def follow_umask(path: str | os.PathLike, mode: int) -> None:
+    """Give ``path`` the permissions ``mode`` less the umask, as any file or folder the user
+    makes: ``mkstemp`` and ``mkdtemp`` make theirs private to their writer."""
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(path, mode & ~umask)
 
 
 @contextmanager
@@ -376,6 +409,18 @@ def file_sha256(path: str | os.PathLike) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
+def recorded_path(path: str | os.PathLike) -> str:
+    """``path`` as a record others read names it, naming no folder of the machine that wrote it
+    (a user's name, a temporary folder, a checkout): relative to the working directory, parts
+    joined by ``/``, where it lies in it (as the command was typed there); else its name alone,
+    which the sha256 recorded beside it identifies."""
+    path = Path(os.path.abspath(path))
+    try:
+        return path.relative_to(os.path.abspath(os.getcwd())).as_posix()
+    except ValueError:  # elsewhere, or on another drive
+        return path.name
+
+
 #: What makes a spreadsheet read a text cell as a formula (or a DDE command): OWASP's list.
 FORMULA_LEAD = ("=", "+", "-", "@", "\t", "\r")
 
@@ -563,10 +608,19 @@ def _csv_cell(value) -> str:
 
 def read_prediction_header(path) -> dict[str, Any]:
     """The metadata of a CSV: its JSON sidecar, or (files written before sidecars) its
-    ``# key: value`` comment lines (values parsed as JSON where they are JSON)."""
+    ``# key: value`` comment lines (values parsed as JSON where they are JSON). A sidecar that
+    is no JSON object (cut short, edited) is a one-line ``ValueError`` naming it."""
     sidecar = sidecar_path(path)
     if sidecar.is_file():
-        return json.loads(sidecar.read_text(encoding="utf-8"))
+        expected = f"expected the JSON object of metadata mkm writes beside {Path(path).name}"
+        try:
+            header = json.loads(sidecar.read_text(encoding="utf-8-sig"))
+        except (ValueError, RecursionError) as exc:  # UnicodeDecodeError is a ValueError
+            first = (str(exc).splitlines() or [type(exc).__name__])[0][:80]
+            raise ValueError(f"{sidecar} is not valid JSON ({first}): {expected}") from None
+        if not isinstance(header, dict):
+            raise ValueError(f"{sidecar} holds a JSON {type(header).__name__}: {expected}")
+        return header
     header = {}
     with open(path, encoding="utf-8") as f:
         for line in f:

@@ -23,7 +23,7 @@ from mkm.design.box_search import (
     search,
 )
 from mkm.design.fe_verification import ordered, verify
-from mkm.design.robust import below_target, check_designs, check_probability
+from mkm.design.robust import below_target, check_designs, check_probability, monte_carlo_record
 from mkm.design.spec import (
     DEFAULT_OBJECTIVE,
     DEFAULT_PROBABILITY,
@@ -286,6 +286,9 @@ def design_record(result: DesignResult) -> dict:
             "constraints": s.constraints, "objective": s.objective,
             "working_pressure_bar": s.working_pressure_bar,
             "surrogate_uncertainty": s.uncertainty,
+            # the robust designs' probabilities are random draws: how many, from which seed
+            "monte_carlo": (monte_carlo_record() if "probability_all" in result.designs
+                            else None),
             "search": {"candidates": len(s.candidates),
                        "feasible": int(s.candidates["feasible"].sum()),
                        "searcher": (f"FE ({s.fe_search})" if s.fe_search else s.searcher),

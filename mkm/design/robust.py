@@ -40,6 +40,9 @@ from mkm.registry import parse_spec
 from mkm.uncertainty import monte_carlo_ready, nominal_parameters, sensitivities, surrogate_draws
 
 MC_DRAWS = 4000  # the probability to +-0.7 points (binomial sd at 95 %)
+#: The Monte Carlo's seed: requirement k draws its built muscles from ``MC_SEED + k`` and the
+#: surrogate's noise from ``MC_SEED + 100 + k`` (the same designs give the same probabilities)
+MC_SEED = 0
 
 
 def check_probability(probability: float) -> float:
@@ -80,9 +83,16 @@ def describe(tolerances: Tolerances, probability: float) -> str:
             f">= {100 * probability:g} % by muscles built to {bounds} (uniform within them)")
 
 
+def monte_carlo_record(seed: int = MC_SEED) -> dict:
+    """How :func:`check_designs` drew its probabilities, for the designs' record."""
+    return {"draws": MC_DRAWS, "seed": seed,
+            "streams": "requirement k: the built muscles from seed + k, the surrogate's noise "
+                       "from seed + 100 + k (numpy default_rng)"}
+
+
 def check_designs(designs: pd.DataFrame, requirements, models: dict,
                   tolerances: Tolerances, probability: float, mesh: str, cache_dir=None,
-                  seed: int = 0) -> pd.DataFrame:
+                  seed: int = MC_SEED) -> pd.DataFrame:
     """``designs`` with the Monte Carlo probabilities (:func:`monte_carlo`) and the FE at the
     worst corner.
 
@@ -116,7 +126,7 @@ def check_designs(designs: pd.DataFrame, requirements, models: dict,
 
 
 def monte_carlo(designs: pd.DataFrame, requirements, models: dict, tolerances: Tolerances,
-                seed: int = 0) -> pd.DataFrame:
+                seed: int = MC_SEED) -> pd.DataFrame:
     """Per design (``designs``' index): ``probability_r<k>`` and ``probability_all``, the share
     of :data:`MC_DRAWS` joint draws from the tolerances, each with its own surrogate error,
     that meet requirement ``k`` and every requirement in the same muscle."""

@@ -41,9 +41,9 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
     parts = ['<h2 id="identified">Identified muscle</h2>',
              f"<p>From <code>{esc(calibration.path)}</code>, written by "
              f"<code>{esc(entry.get('command', ''))}</code> ({esc(entry.get('date_utc', ''))}) "
-             f"from {len(ident['runs'])} run(s): "
-             f"{esc(', '.join(r['run'] for r in ident['runs']))}. Intervals: "
-             f"{esc(ident['interval_method'])}.</p>"]
+             f"from {len(ident.get('runs', []))} run(s): "
+             f"{esc(', '.join(r['run'] for r in ident.get('runs', [])))}. Intervals: "
+             f"{esc(ident.get('interval_method', 'not recorded'))}.</p>"]
     held = pd.DataFrame(ident.get("leave_one_run_out", []))
     columns = [f"{what}_{branch}_pct" for what in ("heldout", "length_heldout")
                for branch in ("rising", "falling") if f"{what}_{branch}_pct" in held]
@@ -56,7 +56,7 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
     else:
         parts.append('<p class="note">Predictive error not measured: one run, nothing to '
                      "hold out.</p>")
-    table = pd.DataFrame(ident["parameters"])
+    table = pd.DataFrame(ident.get("parameters", []))
     table = table[[c for c in ("parameter", "value", "ci_low", "ci_high", "unit", "status",
                                "source") if c in table]].rename(columns={
         "ci_low": "95 % CI low", "ci_high": "95 % CI high"})
@@ -69,7 +69,7 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
 
     spec = key + (f":mesh={entry['model_params']['mesh']}"
                   if "mesh" in entry.get("model_params", {}) else "")
-    fitted = {row["parameter"]: row["value"] for row in ident["parameters"]
+    fitted = {row["parameter"]: row["value"] for row in ident.get("parameters", [])
               if row.get("status", "fitted") == "fitted"}
     identified = fitting.internal_values({
         "theta0_deg": entry["theta0_deg"], "C10_MPa": entry.get("C10_MPa", SILASTIC_S.C10_MPa),

@@ -11,7 +11,7 @@ import pytest
 
 from mkm.bench.storage import load_run
 from mkm.cli import main
-from mkm.core.records import command_line, spreadsheet_safe_text
+from mkm.core.records import command_line, file_sha256, spreadsheet_safe_text
 from mkm.fem.ladder import make_model
 from mkm.fem.paper import equation7_err_pct
 from mkm.registry import parse_specs
@@ -316,6 +316,9 @@ def test_an_export_records_its_own_provenance(tmp_path, capsys):
                  pd.read_csv(out / "metadata.csv"))
         meta = dict(zip(frame["key"], frame["value"], strict=True))
         assert meta["exported.source"] == str(run)
+        # and the source's content: a run folder changed since reads as another source
+        assert meta["exported.sha256.steps.csv"] == file_sha256(run / "steps.csv")
+        assert meta["exported.sha256.run.json"] == file_sha256(run / "run.json")
         # this process's, as every record (made spreadsheet-safe: "-c" under pytest-xdist)
         assert meta["exported.command"] == spreadsheet_safe_text(command_line())
         assert meta["exported.versions.mkm-bench"] == "0.1.0"

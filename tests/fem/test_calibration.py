@@ -236,6 +236,53 @@ def test_bad_calibration_file_is_named_at_once(tmp_path, text, message):
         Calibration.load(path)
 
 
+def _identified():
+    """The shape of what mkm identify records in its entry, each list of one item."""
+    return {"runs": [{"run": "r1", "path": "runs/r1", "muscle": {
+                "id": "lab-7", "D0_mm": 30.0, "t0_mm": 3.0, "L0_mm": 282.0, "eps": 0.0}}],
+            "parameters": [{"parameter": "theta0_deg", "value": 30.0, "ci_low": 29.0,
+                            "ci_high": 31.0, "status": "fitted"}],
+            "interval_method": "bootstrap", "options": ["--params", "theta0"], "notes": [],
+            "dropped": [], "leave_one_run_out": [], "misfit": {"chi2_per_nu": 1.0},
+            "band": {"parameters": ["theta0_deg"], "values": [30.0], "covariance": [[0.01]],
+                     "terms": [{"kind": "one-sided", "shift": {"theta0_deg": 0.1}}],
+                     "sensitivity_tolerance": 0.001}}
+
+
+@pytest.mark.parametrize(("where", "edit"), [
+    ("", lambda i: 5),
+    (".parameters", lambda i: {**i, "parameters": [{"value": 30.0}]}),
+    (".runs", lambda i: {**i, "runs": [5]}),
+    (".runs", lambda i: {**i, "runs": [{"path": "runs/r1"}]}),
+    (".runs", lambda i: {**i, "runs": [{"run": "r1", "muscle": {"D0_mm": "30"}}]}),
+    (".parameters", lambda i: {**i, "parameters": [{"parameter": "t0_mm", "value": "x"}]}),
+    (".interval_method", lambda i: {**i, "interval_method": 3}),
+    (".options, .notes, .dropped", lambda i: {**i, "options": "--params theta0"}),
+    (".leave_one_run_out", lambda i: {**i, "leave_one_run_out": [1]}),
+    (".misfit", lambda i: {**i, "misfit": {"chi2_per_nu": "1"}}),
+    (".band", lambda i: {**i, "band": {**i["band"], "covariance": [[0.01, 0.0]]}}),
+    (".band", lambda i: {**i, "band": {**i["band"], "values": []}}),
+    (".band", lambda i: {**i, "band": {**i["band"], "terms": [{"kind": "one-sided"}]}}),
+    (".band", lambda i: {**i, "band": {**i["band"], "terms": [
+        {"kind": "one-sided", "shift": {"theta0_deg": None}}]}}),
+])
+def test_an_identification_shaped_otherwise_is_refused_in_one_line(where, edit, tmp_path,
+                                                                    capsys):
+    # was: {"identified": 5} (or a block cut short) loaded, then a traceback in mkm report
+    # ('int' object has no attribute 'get') or in fem solve's band
+    good, path = tmp_path / "good.json", tmp_path / "cal.json"
+    good.write_text(json.dumps({"axisym": {"theta0_deg": 30.0, "identified": _identified()}}))
+    assert Calibration.load(good).entry("axisym")["identified"] == _identified()
+    path.write_text(json.dumps({"axisym": {"theta0_deg": 30.0,
+                                           "identified": edit(_identified())}}))
+    with pytest.raises(ValueError, match=f"^calibration {re.escape(str(path))}: entry 'axisym' "
+                                         f"has identified{re.escape(where)} of another shape: "
+                                         "expected .+, as mkm identify writes it$"):
+        Calibration.load(path)
+    _one_line_or_success(capsys, ["fem", "solve", "--calibration", str(path), "--D0", "35",
+                                  "--t0", "2.5", "--eps", "0.05"])
+
+
 def test_a_calibration_saved_by_a_windows_editor_is_read_and_stored_to(tmp_path):
     # Notepad's "UTF-8 with BOM": was 'not valid JSON: Unexpected UTF-8 BOM'
     path = tmp_path / "lab.json"

@@ -100,6 +100,27 @@ def test_calibrate_loadcell_prints_the_toml_block(capsys):
     assert config.loadcell.sensitivity_N_per_V == pytest.approx(196.133, rel=1e-6)
 
 
+def test_calibrate_loadcell_says_how_its_block_was_fitted(capsys):
+    # was: the block alone, pasted into the config and copied into every run folder with no
+    # word of when, by which command and code, from which masses and volts, nor how well
+    from mkm.core.records import command_line, provenance
+
+    assert main(["calibrate-loadcell", "--backend", "sim", "--masses", "0,5,10"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    record = provenance()
+    assert lines[1].startswith(f"# fitted {record['date_utc'][:10]}")
+    assert lines[1].endswith(f" from volts measured on the sim bench (SIMULATED, seed 0) by: "
+                             f"{command_line()} (mkm-bench {record['versions']['mkm-bench']}"
+                             + (f", git {record['git']})" if record["git"] else ")"))
+    assert lines[2].startswith("# masses [kg] 0, 5, 10; volts [V] ")
+    assert lines[3].startswith("# R^2 0.9999")  # the simulated cell: linear, with noise
+    assert main(["calibrate-loadcell", "--masses", "0,10", "--volts", "0.01,0.51"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert " from volts measured elsewhere by: " in lines[1]
+    assert lines[2:4] == ["# masses [kg] 0, 10; volts [V] 0.01, 0.51",
+                          "# R^2 1.000000, largest residual 0.000 N"]
+
+
 def test_calibrate_loadcell_says_when_its_block_would_be_refused(capsys):
     """The packaged example's cell reads its capacity, 1961.33 N, at the +-10 V rail: a fit 1 %
     less sensitive (10 kg over 0.505 V: 194.19 N/V, the rail at 1941.9 N; the simulated bench's

@@ -1,10 +1,12 @@
 import json
 import os
+import re
 
 import pandas as pd
 import pytest
 
 from mkm.cli import main
+from mkm.core.records import file_sha256
 from mkm.fem.calibration import calibrated
 
 
@@ -18,7 +20,7 @@ def test_grid_small_run(thickwall_dataset, tmp_path, capsys):
     assert list(table["paper_valid_N"]) == [421.37, 421.37]  # Table 2 beside ours
     assert (out / "paper_grid.md").exists() and (out / "paper_grid.png").exists()
     # provenance beside both CSVs (was none: a comment in the .md without the command)
-    from mkm.core.records import file_sha256, read_prediction_header, source_version
+    from mkm.core.records import read_prediction_header, source_version
 
     for name in ("paper_grid.csv", "paper_grid_runs.csv"):
         info = read_prediction_header(out / name)
@@ -53,6 +55,16 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
                          'pressure_bar=3 not in [0, 2.5]"')  # no force: no answer there
     assert captured.err.startswith("mkm surrogate predict: warning: 1 of 7 points lie outside "
                                    "the training")
+    # written to a file, its sidecar names the model file it came from and what trained it
+    # (was: the dataset's sha256 alone: two models of one dataset read alike)
+    assert main(["fem", "solve", "--model", f"surrogate:path={model}", "--D0", "35", "--t0",
+                 "2.5", "--eps", "5%", "--out", str(tmp_path / "sweep.csv")]) == 0
+    saved = json.loads((model / "metadata.json").read_text(encoding="utf-8"))
+    sidecar = json.loads((tmp_path / "sweep.json").read_text(encoding="utf-8"))
+    assert sidecar["surrogate"] == {"sha256": saved["sha256"], "trained": saved["trained"],
+                                    "random_state": 0, "dataset": {
+                                        "path": saved["dataset"]["path"],
+                                        "sha256": file_sha256(thickwall_dataset)}}
 
     reference = tmp_path / "ref.csv"
     theta0 = str(calibrated("axisym")["theta0_deg"])  # the angle the fixture was built at
@@ -74,6 +86,40 @@ def test_bad_kind_is_a_one_line_error(thickwall_dataset, capsys):
     err = capsys.readouterr().err
     assert err.startswith("mkm surrogate train: error: unknown surrogate kind 'forest'")
     assert err.count("\n") == 1
+
+
+@pytest.mark.parametrize("command", [["train", "--kind", "physics", "--splits", "0"],
+                                     ["design", "--muscles", "2"], ["grid", "--seeds", "1"]])
+def test_a_calibration_a_command_would_not_use_is_refused(command, tmp_path, capsys):
+    # was: taken and ignored: the model file named the shipped calibration, not lab.json
+    from mkm.fem.calibration import CALIBRATION_FILE
+
+    lab = tmp_path / "lab.json"
+    lab.write_bytes(CALIBRATION_FILE.read_bytes())
+    with pytest.raises(SystemExit) as exited:
+        main(["surrogate", *command, "--calibration", str(lab), "--out", str(tmp_path / "o")])
+    assert exited.value.code == 2
+    assert f"unrecognized arguments: --calibration {lab}" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize(("sidecar", "said"), [
+    ('{"model": "axisym", "gri', r"is not valid JSON \(Unterminated string starting at: line "
+                                 r"1 column 21 \(char 20\)\)"),
+    ("[1, 2]", "holds a JSON list")])
+def test_a_datasets_sidecar_cut_short_is_a_one_line_error(sidecar, said, thickwall_dataset,
+                                                         tmp_path, capsys):
+    # was: "error: Unterminated string starting at: ..." naming no file; a list was taken
+    dataset = tmp_path / "d.csv"
+    dataset.write_bytes(thickwall_dataset.read_bytes())
+    (tmp_path / "d.json").write_text(sidecar, encoding="utf-8")
+    assert main(["surrogate", "train", "--dataset", str(dataset), "--kind", "physics",
+                 "--splits", "0", "--out", str(tmp_path / "m")]) == 2
+    err = capsys.readouterr().err
+    assert re.fullmatch(f"mkm surrogate train: error: {re.escape(str(tmp_path / 'd.json'))} "
+                        f"{said}: expected the JSON object of metadata mkm writes beside "
+                        "d.csv\n", err), err
+    assert not (tmp_path / "m").exists()
 
 
 def test_missing_dataset_is_a_one_line_error(tmp_path, capsys):

@@ -274,6 +274,7 @@ def test_cli_spec_file_writes_csv_json_and_html(tmp_path, mkm_run):
     assert table["t0_mm"].between(2.0, 3.0).all()
     record = json.loads((out / "designs.json").read_text())
     assert record["objective"] == "min-rubber-volume"
+    assert record["monte_carlo"] is None  # no tolerance: no random draw
     assert [r["eps"] for r in record["requirements"]] == [0.10, 0.20]
     assert "versions" in record["provenance"]["software"]
     assert record["provenance"]["fe"]["params"]["mesh"] == MESH
@@ -282,6 +283,21 @@ def test_cli_spec_file_writes_csv_json_and_html(tmp_path, mkm_run):
     # the provenance is folded away below the designs, not the page's bulk
     assert html.index("<details>") > html.index("Verified designs")
     assert html.index("<pre>") > html.index("<details>") and "</details>" in html
+
+
+def test_a_robust_design_records_its_monte_carlos_draws_and_seed(tmp_path, mkm_run):
+    # was: probability_r1 and probability_all came from 4000 seeded draws designs.json never
+    # named, nor their seed
+    out = tmp_path / "design"
+    code, _, err = mkm_run(["design", "--require", "300N@2.5bar,eps=0.10", "--top", "1",
+                            "--tolerance", "D0=0.3", "--mesh", MESH, "--no-progress",
+                            "--out", str(out)])
+    assert code == 0, err
+    record = json.loads((out / "designs.json").read_text())
+    assert "probability_all" in pd.read_csv(out / "designs.csv")
+    assert record["monte_carlo"] == {
+        "draws": 4000, "seed": 0, "streams": "requirement k: the built muscles from seed + k, "
+        "the surrogate's noise from seed + 100 + k (numpy default_rng)"}
 
 
 def test_spec_file_unknown_key(tmp_path, mkm_run):

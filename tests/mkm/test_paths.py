@@ -7,6 +7,7 @@ import argparse
 import contextlib
 import hashlib
 import io
+import json
 import re
 import subprocess
 from pathlib import Path
@@ -115,6 +116,12 @@ def test_a_demo_replaces_the_runs_of_the_demo_before_it(first_demo):
     second = sorted(p.name for p in (demo / "runs").iterdir())
     assert len(first) == len(second) == 3 and "my-own-folder" in second
     assert all(name.endswith("-SIMULATED") for name in second if name != "my-own-folder")
+    # its record says which runs, and, as every file written, by which command, code and when
+    from mkm.core.records import holds_provenance
+
+    record = json.loads((demo / "demo.json").read_text(encoding="utf-8"))
+    assert sorted(record["runs"]) == [name for name in second if name != "my-own-folder"]
+    assert holds_provenance(demo / "demo.json") and "versions" in record and "git" in record
 
 
 # what a user runs, as the documentation shows it (the developer guide's commands are run in a

@@ -20,7 +20,7 @@ import pytest
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.storage import reason_shown
-from mkm.core.records import read_csv_checked
+from mkm.core.records import file_sha256, read_csv_checked
 from mkm.fem.calibration import calibrated
 from mkm.fem.interface import Domain
 from mkm.fem.ladder import make_model
@@ -298,6 +298,30 @@ def test_provenance_is_folded_with_the_json_beside(report):
     prov = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
     assert {"software", "run-1", "run-2", "model-eq2", "model-thickwall"} <= set(prov)
     assert html.count("<pre>") == len(prov)  # one block each, inside the fold
+
+
+def test_provenance_names_the_runs_files_by_sha256(report, runs):
+    # was: each run by its folder alone: a steps.csv edited after the report went unseen
+    path, _ = report
+    prov = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
+    for k, run in enumerate(runs, start=1):
+        assert prov[f"run-{k}"]["sha256"] == {name: file_sha256(run / name) for name in (
+            "run.json", "steps.csv", "samples.csv")}
+
+
+def test_provenance_names_the_calibration_by_sha256(runs, tmp_path):
+    # was: a report made with --calibration named it in its command only: not which content
+    from mkm.fem.calibration import CALIBRATION_FILE, Calibration
+
+    lab = tmp_path / "lab.json"
+    lab.write_bytes(CALIBRATION_FILE.read_bytes().replace(b"\n", b"\r\n"))  # another file
+    for calibration, name, source in ((Calibration.load(lab), str(lab), lab),
+                                      (None, "shipped fem/calibration.json", CALIBRATION_FILE)):
+        out = build_report(runs[:1], parse_models("eq2"), out_dir=tmp_path / source.stem,
+                           cache_dir=None, tolerance=None, surrogate_section=False,
+                           calibration=calibration).parent
+        prov = json.loads((out / "provenance.json").read_text(encoding="utf-8"))
+        assert prov["calibration"] == {"file": name, "sha256": file_sha256(source)}
 
 
 class _Bounded:

@@ -9,7 +9,8 @@ import pandas as pd
 import pytest
 
 from mkm.auto import MODEL_ERRORS_FILE, read_model_errors
-from mkm.fem.calibration import calibrated
+from mkm.core.records import file_sha256
+from mkm.fem.calibration import CALIBRATION_FILE, calibrated
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.interface import Prediction
 from mkm.study import StudyConfig, classify, pareto_front, registry_predictor, run_study
@@ -108,6 +109,9 @@ def test_model_errors_table_for_auto(study):
     assert not (out / "report" / "model_errors.csv").read_text().startswith("#")
     meta = json.loads((out / "report" / "model_errors.json").read_text())
     assert "versions" in meta and "cores" in meta["machine_name"]
+    # the calibration its predictors took their angles from, by content (was: unnamed)
+    assert meta["calibration"] == {"file": "shipped fem/calibration.json",
+                                   "sha256": file_sha256(CALIBRATION_FILE)}
 
 
 def test_stability_of_equation2_fails_beyond_eps_max(study):

@@ -102,6 +102,20 @@ def test_shipped_design_is_what_the_sidecar_says():
         f >= n for f in failed)
 
 
+@pytest.mark.skipif(not DESIGN_DATASET.is_file(), reason="no shipped design")
+def test_a_training_set_is_recorded_by_a_path_of_no_machine(tmp_path, monkeypatch):
+    # a model file and every result nesting its training set (train.path) named the checkout
+    # that trained it: /work/main/surrogate/data/mkm_design.csv
+    monkeypatch.chdir(tmp_path)
+    assert load_training_data(DESIGN_DATASET).summary()["path"] == DESIGN_DATASET.name
+    (tmp_path / "sets").mkdir()
+    for suffix in (".csv", ".json"):
+        copy = (tmp_path / "sets" / DESIGN_DATASET.name).with_suffix(suffix)
+        copy.write_bytes(DESIGN_DATASET.with_suffix(suffix).read_bytes())
+    assert load_training_data(tmp_path / "sets" / DESIGN_DATASET.name).path == \
+        f"sets/{DESIGN_DATASET.name}"
+
+
 @pytest.mark.slow  # GP fits
 def test_adaptive_muscles_go_where_the_surrogate_is_unsure():
     # Trained on the space-filling muscles only, the picks have a larger predictive std of the

@@ -1,4 +1,5 @@
 import json
+import os
 import subprocess
 import sys
 import warnings
@@ -54,6 +55,16 @@ def test_round_trip_predicts_the_same(saved):
                                   model.predict(P, 41.0, 2.7, 0.13).force_N)
     assert loaded.domain == model.domain and loaded.kind == "physics"
     assert loaded.fixed == model.fixed and loaded.inputs == model.inputs
+
+
+@pytest.mark.skipif(os.name == "nt", reason="POSIX permissions")
+def test_a_model_folder_has_the_permissions_of_the_users_umask(saved):
+    # was: drwx------, mkdtemp's, where every other output folder follows the umask: a lab's
+    # shared model folder unreadable by the others
+    _, directory, _ = saved
+    umask = os.umask(0)
+    os.umask(umask)
+    assert directory.stat().st_mode & 0o777 == 0o777 & ~umask
 
 
 def test_files_are_json_and_arrays_not_pickles(saved):

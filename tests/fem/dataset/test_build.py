@@ -105,6 +105,15 @@ def test_resume_after_interruption_computes_only_missing_jobs(tmp_path, monkeypa
     assert (again.jobs_computed, again.jobs_cached) == (0, 4)
 
 
+def test_the_sidecar_names_the_cache_by_no_folder_of_the_machine(tmp_path, monkeypatch):
+    # was: "cache": "/root/.cache/mkm-bench/dataset", a user's folder, in the shipped sidecar
+    monkeypatch.chdir(tmp_path)
+    tiny(out="d.csv", workers=1, cache_dir=tmp_path / "jobs")
+    assert json.loads((tmp_path / "d.json").read_text())["cache"] == "jobs"
+    tiny(out="d.csv", workers=1, cache_dir=dataset.default_cache_dir())
+    assert json.loads((tmp_path / "d.json").read_text())["cache"] == "the user cache"
+
+
 def test_damaged_cache_file_is_recomputed(tmp_path):
     tiny(out=None, workers=1, cache_dir=tmp_path)
     damaged = sorted(tmp_path.iterdir())[0]

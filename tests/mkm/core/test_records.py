@@ -83,10 +83,34 @@ def test_package_files_exist():
     assert records.package_file("mkm", "data", "model_errors.csv").is_file()
 
 
+def test_a_recorded_path_names_no_folder_of_the_machine(tmp_path, monkeypatch):
+    # was: the shipped results named /work/main/surrogate/data/mkm_design.csv and a dataset
+    # /root/.cache/mkm-bench/dataset, folders of one machine and user
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "data").mkdir()
+    assert records.recorded_path(tmp_path / "data" / "a.csv") == "data/a.csv"
+    assert records.recorded_path(os.path.join("data", "a.csv")) == "data/a.csv"
+    assert records.recorded_path(tmp_path.parent / "elsewhere" / "b.csv") == "b.csv"
+
+
 def test_provenance_names_versions_and_command():
     info = records.provenance()
     assert {"date_utc", "command", "versions", "machine"} <= set(info)
     assert info["versions"]["numpy"] != "not installed"
+
+
+def test_provenance_names_the_code_revision(tmp_path):
+    # was: versions alone, whose mkm-bench 0.1.0 names every commit of a checkout alike
+    root = records.CODE_ROOT
+    if shutil.which("git") is None or not (root / ".git").exists():
+        pytest.skip("not run from a git checkout")
+    import subprocess
+
+    described = subprocess.run(["git", "-C", str(root), "describe", "--always", "--dirty",
+                                "--abbrev=12"], capture_output=True, text=True, check=True)
+    assert records.provenance()["git"] == described.stdout.strip()
+    (tmp_path / "pyproject.toml").write_text("")
+    assert records.git_revision(tmp_path) is None  # no checkout there: a wheel's folder
 
 
 @pytest.mark.parametrize("model, params, muscle", [
