@@ -308,13 +308,10 @@ def emit_prediction(prediction, out: str | None, model=None) -> None:
             metadata["model_version"] = model_version(model)
             if isinstance(model, CalibratedTheta0):
                 metadata["calibration"] = calibration_provenance(model)
-            trained = getattr(model, "metadata", None) or {}
-            if "trained" in trained:  # a surrogate: its model file and what it learnt from
-                dataset = trained.get("dataset") or {}
-                metadata["surrogate"] = {
-                    "sha256": trained.get("sha256"), "trained": trained["trained"],
-                    "random_state": trained.get("random_state"),
-                    "dataset": {k: dataset.get(k) for k in ("path", "sha256")}}
+            # loaded where a surrogate was built: a closed form's sweep imports none
+            surrogates = sys.modules.get("mkm.surrogate.model")
+            if surrogates is not None and isinstance(model, surrogates.SurrogateForceModel):
+                metadata["surrogate"] = model.origin()
         path = write_csv_with_sidecar(out, buffer.getvalue(), metadata)
         print(f"wrote {path} and {sidecar_path(path).name}", file=sys.stderr)
     else:
