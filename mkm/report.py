@@ -31,6 +31,7 @@ import dataclasses
 import json
 import math
 import re
+import sys
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -336,11 +337,21 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
         key = f"model-{spec.text}"
-        prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model)}
+        prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model),
+                     **_origin(model)}
         r.keys.append(key)
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
     return r
+
+
+def _origin(model) -> dict:
+    """A surrogate's model file, training and dataset (:meth:`SurrogateForceModel.origin`), for
+    the provenance of its predictions; nothing for another model."""
+    # loaded where a surrogate was built
+    surrogates = sys.modules.get("mkm.surrogate.model")
+    return ({"surrogate": model.origin()} if surrogates is not None
+            and isinstance(model, surrogates.SurrogateForceModel) else {})
 
 
 def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):
@@ -1070,6 +1081,7 @@ def _surrogate_section(out: Path, prov: dict) -> str:
     result.to_csv(out / "surrogate_vs_fe_summary.csv", index=False, float_format="%.6g")
     seconds = float(summary["seconds_all_points"].iloc[0])
     prov["surrogate"] = {"model": model.name, "params": model.params(),
+                         "sha256": model.origin()["sha256"],
                          "trained": model.metadata.get("trained"),
                          "dataset": model.metadata.get("dataset"),
                          "seconds_per_point": seconds / max(len(points), 1)}
