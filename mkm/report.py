@@ -332,13 +332,13 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
                 if answer[0].valid.all():
                     built, model, (pred, cached) = wider, candidate, answer
                     r.in_place[spec.text] = wider.text
-        pred = _with_band(pred, model, built, r, cache_dir)
+        pred, band = _with_band(pred, model, built, r, cache_dir)
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
         key = f"model-{spec.text}"
         prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model),
-                     **_origin(model)}
+                     **_origin(model), "band": band.record()}
         r.keys.append(key)
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
@@ -367,7 +367,8 @@ def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):
 
 def _with_band(pred, model, spec: Spec, r: _Run, cache_dir):
     """``pred`` with the band of the muscle's tolerances (``force_u_N``, :mod:`mkm.uncertainty`;
-    the run's recorded tolerances, else the defaults), FE sweeps through the cache."""
+    the run's recorded tolerances, else the defaults), FE sweeps through the cache, and the
+    band (:class:`mkm.uncertainty.Band`)."""
     muscle = r.predicted
     recorded = (r.meta.get("calibration") or {}).get("muscle_tolerances") or {}
     try:
@@ -386,7 +387,7 @@ def _with_band(pred, model, spec: Spec, r: _Run, cache_dir):
                       tolerances, predict=predict,
                       rebuild=lambda **params: spec.with_params(**params).build(r.calibration,
                                                                                 muscle))
-    return with_band(pred, band)
+    return with_band(pred, band), band
 
 
 def _announce_training(spec: Spec, bar) -> bool:

@@ -324,6 +324,9 @@ def test_provenance_names_a_surrogates_model_file(runs, tmp_path):
     assert prov[key]["surrogate"]["sha256"] == saved["sha256"]
     assert prov[key]["surrogate"]["trained"] == saved["trained"]
     assert "surrogate" not in prov["model-eq2"]
+    # how each band over the muscle's tolerances was got (a Monte Carlo with its draws and seed;
+    # this muscle's draws leave the surrogate's box, D0 30 mm its edge: linearised)
+    assert prov[key]["band"] == prov["model-eq2"]["band"] == {"method": "linearised"}
 
 
 def test_provenance_names_the_calibration_by_sha256(runs, tmp_path):
