@@ -31,7 +31,6 @@ import dataclasses
 import json
 import math
 import re
-import sys
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -74,7 +73,12 @@ from mkm.html import (
 )
 from mkm.identify.page import report_section
 from mkm.paths import check_writable, default_out
-from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
+from mkm.prediction_cache import (
+    DEFAULT_CACHE_DIR,
+    cached_predict,
+    model_origin,
+    model_version,
+)
 from mkm.progress import phase, progress_bar
 from mkm.registry import REPORT_MODELS, Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
@@ -338,20 +342,11 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         r.summary.append(summarise_run(rows, pred.seconds, cached))
         key = f"model-{spec.text}"
         prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model),
-                     **_origin(model), "band": band.record()}
+                     **model_origin(model), "band": band.record()}
         r.keys.append(key)
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
     return r
-
-
-def _origin(model) -> dict:
-    """A surrogate's model file, training and dataset (:meth:`SurrogateForceModel.origin`), for
-    the provenance of its predictions; nothing for another model."""
-    # loaded where a surrogate was built
-    surrogates = sys.modules.get("mkm.surrogate.model")
-    return ({"surrogate": model.origin()} if surrogates is not None
-            and isinstance(model, surrogates.SurrogateForceModel) else {})
 
 
 def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):

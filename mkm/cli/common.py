@@ -303,15 +303,12 @@ def emit_prediction(prediction, out: str | None, model=None) -> None:
         metadata = prediction_metadata(prediction)
         if model is not None:
             from mkm.fem.calibration import CalibratedTheta0, calibration_provenance
-            from mkm.prediction_cache import model_version
+            from mkm.prediction_cache import model_origin, model_version
 
             metadata["model_version"] = model_version(model)
             if isinstance(model, CalibratedTheta0):
                 metadata["calibration"] = calibration_provenance(model)
-            # loaded where a surrogate was built: a closed form's sweep imports none
-            surrogates = sys.modules.get("mkm.surrogate.model")
-            if surrogates is not None and isinstance(model, surrogates.SurrogateForceModel):
-                metadata["surrogate"] = model.origin()
+            metadata.update(model_origin(model))
         path = write_csv_with_sidecar(out, buffer.getvalue(), metadata)
         print(f"wrote {path} and {sidecar_path(path).name}", file=sys.stderr)
     else:
