@@ -14,6 +14,7 @@ import contextlib
 import hashlib
 import io
 import json
+import sys
 import tempfile
 import zipfile
 from pathlib import Path
@@ -31,6 +32,15 @@ def model_version(model: ForceModel) -> str:
     """Version of the code and data behind ``model``: :func:`mkm.core.records.source_version` of the
     module that defines its class."""
     return source_version(type(model).__module__)
+
+
+def model_origin(model: ForceModel) -> dict:
+    """What a record of a model's predictions names it by besides its version: a surrogate's
+    model file, training and dataset (``{"surrogate": ...}``,
+    :meth:`mkm.surrogate.model.SurrogateForceModel.origin`); nothing for another model."""
+    surrogates = sys.modules.get("mkm.surrogate.model")  # loaded where a surrogate was built
+    return ({"surrogate": model.origin()} if surrogates is not None
+            and isinstance(model, surrogates.SurrogateForceModel) else {})
 
 
 def cache_key(model: ForceModel, inputs: tuple[np.ndarray, ...]) -> str:

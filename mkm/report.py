@@ -73,7 +73,12 @@ from mkm.html import (
 )
 from mkm.identify.page import report_section
 from mkm.paths import check_writable, default_out
-from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version
+from mkm.prediction_cache import (
+    DEFAULT_CACHE_DIR,
+    cached_predict,
+    model_origin,
+    model_version,
+)
 from mkm.progress import phase, progress_bar
 from mkm.registry import REPORT_MODELS, Spec, entries, parse_spec
 from mkm.scoring import evaluation_pressures, predict_steps, score_run, summarise_run
@@ -331,12 +336,13 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
                 if answer[0].valid.all():
                     built, model, (pred, cached) = wider, candidate, answer
                     r.in_place[spec.text] = wider.text
-        pred = _with_band(pred, model, built, r, cache_dir)
+        pred, band = _with_band(pred, model, built, r, cache_dir)
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
         key = f"model-{spec.text}"
-        prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model)}
+        prov[key] = {"model": model.name, "params": pred.params, "version": model_version(model),
+                     **model_origin(model), "band": band.record()}
         r.keys.append(key)
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
@@ -356,7 +362,8 @@ def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):
 
 def _with_band(pred, model, spec: Spec, r: _Run, cache_dir):
     """``pred`` with the band of the muscle's tolerances (``force_u_N``, :mod:`mkm.uncertainty`;
-    the run's recorded tolerances, else the defaults), FE sweeps through the cache."""
+    the run's recorded tolerances, else the defaults), FE sweeps through the cache, and the
+    band (:class:`mkm.uncertainty.Band`)."""
     muscle = r.predicted
     recorded = (r.meta.get("calibration") or {}).get("muscle_tolerances") or {}
     try:
@@ -375,7 +382,7 @@ def _with_band(pred, model, spec: Spec, r: _Run, cache_dir):
                       tolerances, predict=predict,
                       rebuild=lambda **params: spec.with_params(**params).build(r.calibration,
                                                                                 muscle))
-    return with_band(pred, band)
+    return with_band(pred, band), band
 
 
 def _announce_training(spec: Spec, bar) -> bool:
@@ -1071,6 +1078,7 @@ def _surrogate_section(out: Path, prov: dict) -> str:
     result.to_csv(out / "surrogate_vs_fe_summary.csv", index=False, float_format="%.6g")
     seconds = float(summary["seconds_all_points"].iloc[0])
     prov["surrogate"] = {"model": model.name, "params": model.params(),
+                         "sha256": model.origin()["sha256"],
                          "trained": model.metadata.get("trained"),
                          "dataset": model.metadata.get("dataset"),
                          "seconds_per_point": seconds / max(len(points), 1)}

@@ -42,7 +42,13 @@ from mkm.fem.paper import equation7_err_pct
 from mkm.figures import speed_accuracy_figure, stability_figure
 from mkm.html import esc, figure_html, html_page, provenance_details, table_html
 from mkm.paths import default_out
-from mkm.prediction_cache import DEFAULT_CACHE_DIR, cached_predict, model_version, predict_many
+from mkm.prediction_cache import (
+    DEFAULT_CACHE_DIR,
+    cached_predict,
+    model_origin,
+    model_version,
+    predict_many,
+)
 from mkm.progress import progress_bar
 from mkm.registry import parse_spec
 from mkm.scoring import error_summary, pareto_front
@@ -422,7 +428,8 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
     errors, timings = measure_errors(config, predictors, models, cache_dir, bar)
     summary = summarise(errors, timings, config.reference)
     info["predictors"] = {p.label: {"params": models[p.label].params(), "spec": p.spec,
-                                    "version": model_version(models[p.label])}
+                                    "version": model_version(models[p.label]),
+                                    **model_origin(models[p.label])}
                           for p in predictors}
     errors.to_csv(out / "study_errors.csv", index=False, float_format="%.6g")
     summary.to_csv(out / "speed_accuracy.csv", index=False, float_format="%.6g")

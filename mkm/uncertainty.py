@@ -36,6 +36,14 @@ class Band:
     force_N: np.ndarray
     force_u_N: np.ndarray
     method: str  # "monte-carlo" | "linearised"
+    draws: int = 0  # the Monte Carlo's draws per pressure and their seed
+    seed: int | None = None
+
+    def record(self) -> dict:
+        """How the band was got, for the provenance of what it judged: the method, and a
+        Monte Carlo's draws and seed."""
+        return {"method": self.method, **({"draws": self.draws, "seed": self.seed}
+                                          if self.method == "monte-carlo" else {})}
 
 
 def nominal_parameters(model: ForceModel, D0_mm: float, t0_mm: float, eps: float
@@ -99,7 +107,8 @@ def force_band(model: ForceModel, pressure_bar, D0_mm: float, t0_mm: float, eps:
     if method == "auto" and monte_carlo_ready(model, sample):
         spread = _surrogate_spread(model, pressure, sample)
         u = np.sqrt(spread**2 + own_std**2)
-        return Band(force, np.where(np.isfinite(force), u, np.nan), "monte-carlo")
+        return Band(force, np.where(np.isfinite(force), u, np.nan), "monte-carlo", n_draws,
+                    seed)
     contributions = sensitivities(model, pressure, nominal, tolerances, force, rebuild,
                                   predict)
     u2 = own_std**2 + sum(c**2 for c in contributions.values())
@@ -203,6 +212,7 @@ def _predict_changed(model, pressure, changed: dict, nominal: dict, rebuild, pre
 
 
 def with_band(prediction: Prediction, band: Band) -> Prediction:
-    """``prediction`` with ``force_u_N`` [N] (and the method) among its extras."""
+    """``prediction`` with ``force_u_N`` [N] among its extras (how it was got:
+    :meth:`Band.record`)."""
     prediction.extras["force_u_N"] = np.broadcast_to(band.force_u_N, prediction.force_N.shape)
     return prediction

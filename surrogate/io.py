@@ -125,7 +125,8 @@ def save_lock(directory: Path):
 
 def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
     """Write ``model`` to ``directory`` (created; a model folder there is replaced whole, any
-    other folder refused: :func:`check_replaceable`).
+    other folder refused: :func:`check_replaceable`); ``model.metadata`` becomes the metadata
+    saved (checks, sha256), so a record of what it computes names the file.
 
     ``lock``: a context manager held while writing (default: :func:`save_lock`).
     """
@@ -164,6 +165,7 @@ def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
                 shutil.rmtree(old, ignore_errors=True)
             else:
                 os.replace(staging, directory)
+            model.metadata = metadata  # saved: the model says what its file says (its sha256)
         finally:
             if staging.exists():
                 shutil.rmtree(staging, ignore_errors=True)

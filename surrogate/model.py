@@ -203,6 +203,14 @@ class SurrogateForceModel(ForceModel):
         return {"kind": self.kind, **parameters, "dataset_sha256": dataset.get("sha256"),
                 "inputs": list(self.inputs), "box": {k: list(v) for k, v in self.box.items()}}
 
+    def origin(self) -> dict:
+        """What a record of what it computed names it by: its model file's sha256 (None before
+        it is saved), its training's provenance and seed, and its dataset's path and sha256."""
+        dataset = _mapping(self.metadata.get("dataset"))
+        return {"sha256": self.metadata.get("sha256"), "trained": self.metadata.get("trained"),
+                "random_state": self.metadata.get("random_state"),
+                "dataset": {k: dataset.get(k) for k in ("path", "sha256")}}
+
     def error_margin(self) -> ErrorMargin:
         """The errors on muscles held out of training that training recorded (its metadata's
         ``metrics``: the muscle-held-out splits and the test muscles)."""

@@ -27,6 +27,7 @@ from mkm.fem import paper
 from mkm.fem.calibration import calibration_provenance
 from mkm.fem.interface import ForceModel
 from mkm.fem.paper import equation7_err_pct
+from mkm.surrogate.model import SurrogateForceModel
 from mkm.surrogate.training_data import PARAMETERS
 from mkm.surrogate.validation import rmse
 
@@ -155,7 +156,9 @@ def run_test(models: dict[str, ForceModel], out_dir, reference_path=FE_REFERENCE
             "reference_sha256": file_sha256(reference_path),
             "reference_params": reference.attrs.get("params", {}),
             "models": {name: {"model": model.name, "params": model.params(),
-                              "version": source_version(type(model).__module__)}
+                              "version": source_version(type(model).__module__),
+                              **({"surrogate": model.origin()}
+                                 if isinstance(model, SurrogateForceModel) else {})}
                        for name, model in models.items()}, **provenance()}
     info = json.loads(json.dumps(info, default=str))
     for name, frame in (("test_muscles.csv", summary), ("test_muscles_points.csv", points)):

@@ -303,18 +303,12 @@ def emit_prediction(prediction, out: str | None, model=None) -> None:
         metadata = prediction_metadata(prediction)
         if model is not None:
             from mkm.fem.calibration import CalibratedTheta0, calibration_provenance
-            from mkm.prediction_cache import model_version
+            from mkm.prediction_cache import model_origin, model_version
 
             metadata["model_version"] = model_version(model)
             if isinstance(model, CalibratedTheta0):
                 metadata["calibration"] = calibration_provenance(model)
-            trained = getattr(model, "metadata", None) or {}
-            if "trained" in trained:  # a surrogate: its model file and what it learnt from
-                dataset = trained.get("dataset") or {}
-                metadata["surrogate"] = {
-                    "sha256": trained.get("sha256"), "trained": trained["trained"],
-                    "random_state": trained.get("random_state"),
-                    "dataset": {k: dataset.get(k) for k in ("path", "sha256")}}
+            metadata.update(model_origin(model))
         path = write_csv_with_sidecar(out, buffer.getvalue(), metadata)
         print(f"wrote {path} and {sidecar_path(path).name}", file=sys.stderr)
     else:

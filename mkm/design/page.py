@@ -70,6 +70,7 @@ def write_design(result: DesignResult, out: Path) -> Path:
     record["provenance"] = {
         "software": provenance(),
         "surrogate": {"name": surrogate.name, "params": surrogate.params(),
+                      "sha256": (getattr(surrogate, "metadata", None) or {}).get("sha256"),
                       "trained": (getattr(surrogate, "metadata", None) or {}).get("trained"),
                       "dataset": (getattr(surrogate, "metadata", None) or {}).get("dataset"),
                       "families_L0_theta0_rubber": [list(key) for key in s.models]},

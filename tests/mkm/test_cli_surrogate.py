@@ -78,6 +78,9 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
     summary = pd.read_csv(tmp_path / "test" / "test_muscles.csv")
     assert len(summary) == 5 and summary["max_abs_err_pct"].max() < 1e-3
     assert (tmp_path / "test" / "test_muscles.png").stat().st_size > 0  # mkm.figures' Figure 6
+    # the test's record names the model file it scored as the sweep's does (was: its dataset)
+    (scored,) = json.loads((tmp_path / "test" / "test_muscles.json").read_text())["models"].values()
+    assert scored["surrogate"] == sidecar["surrogate"]
 
 
 def test_bad_kind_is_a_one_line_error(thickwall_dataset, capsys):

@@ -278,6 +278,8 @@ def test_cli_spec_file_writes_csv_json_and_html(tmp_path, mkm_run):
     assert [r["eps"] for r in record["requirements"]] == [0.10, 0.20]
     assert "versions" in record["provenance"]["software"]
     assert record["provenance"]["fe"]["params"]["mesh"] == MESH
+    # the surrogate searched with, by its model file's sha256 (was: its dataset's alone)
+    assert len(record["provenance"]["surrogate"]["sha256"]) == 64
     html = (out / "design.html").read_text()
     assert html.count("<img ") == 3  # one contour figure per requirement, the FE curves
     # the provenance is folded away below the designs, not the page's bulk

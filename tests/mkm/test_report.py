@@ -309,6 +309,26 @@ def test_provenance_names_the_runs_files_by_sha256(report, runs):
             "run.json", "steps.csv", "samples.csv")}
 
 
+def test_provenance_names_a_surrogates_model_file(runs, tmp_path):
+    # was: its dataset's sha256 alone: two models of one dataset read alike
+    from mkm.surrogate.io import save_model
+    from mkm.surrogate.train import train_surrogate
+
+    folder = save_model(train_surrogate("physics", splits=0, progress=False), tmp_path / "m")
+    saved = json.loads((folder / "metadata.json").read_text(encoding="utf-8"))
+    out = build_report(runs[:1], parse_models(f"eq2,surrogate:path={folder}"),
+                       out_dir=tmp_path / "r", cache_dir=None, tolerance=None,
+                       surrogate_section=False).parent
+    prov = json.loads((out / "provenance.json").read_text(encoding="utf-8"))
+    (key,) = [k for k in prov if k.startswith("model-surrogate")]
+    assert prov[key]["surrogate"]["sha256"] == saved["sha256"]
+    assert prov[key]["surrogate"]["trained"] == saved["trained"]
+    assert "surrogate" not in prov["model-eq2"]
+    # how each band over the muscle's tolerances was got (a Monte Carlo with its draws and seed;
+    # this muscle's draws leave the surrogate's box, D0 30 mm its edge: linearised)
+    assert prov[key]["band"] == prov["model-eq2"]["band"] == {"method": "linearised"}
+
+
 def test_provenance_names_the_calibration_by_sha256(runs, tmp_path):
     # was: a report made with --calibration named it in its command only: not which content
     from mkm.fem.calibration import CALIBRATION_FILE, Calibration

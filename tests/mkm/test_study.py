@@ -114,6 +114,26 @@ def test_model_errors_table_for_auto(study):
                                    "sha256": file_sha256(CALIBRATION_FILE)}
 
 
+def test_a_surrogate_scored_is_named_by_its_model_file(tmp_path):
+    # was: by its dataset's sha256 alone, as every surrogate of that dataset reads
+    from mkm.study import Predictor, trained_surrogate
+    from mkm.surrogate.training_data import DEFAULT_DATASET
+
+    def predictors(cache_dir):
+        return [registry_predictor("thickwall", "thickwall"),
+                Predictor("surrogate-physics", "surrogate",
+                          lambda: trained_surrogate("physics", DEFAULT_DATASET, cache_dir))]
+
+    config = StudyConfig(muscles=(("I", 35.0, 2.5, 0.05, "test"),), pressures=(0.0, 2.5),
+                         predictors=predictors, reference="thickwall", stability_methods=())
+    run_study(tmp_path / "study", config, cache_dir=tmp_path / "cache")
+    record = json.loads((tmp_path / "study" / "provenance.json").read_text())["predictors"]
+    model = trained_surrogate("physics", DEFAULT_DATASET, tmp_path / "cache")
+    assert record["surrogate-physics"]["surrogate"] == model.origin()
+    assert len(model.origin()["sha256"]) == 64  # the cached model file's
+    assert "surrogate" not in record["thickwall"]
+
+
 def test_stability_of_equation2_fails_beyond_eps_max(study):
     out, _ = study
     cells = pd.read_csv(out / "report" / "stability.csv")

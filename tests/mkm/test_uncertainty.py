@@ -86,9 +86,11 @@ def test_monte_carlo_over_the_surrogate_agrees_with_its_linearisation():
     tol = Tolerances(D0_mm=0.3, t0_mm=0.1, L0_mm=1.0, eps=0.004, theta0_deg=1.0)
     mc = force_band(model, P, 40.0, 3.0, 0.1, tol, n_draws=1000)
     assert mc.method == "monte-carlo"
+    # what a report records of it: random draws, so their number and seed
+    assert mc.record() == {"method": "monte-carlo", "draws": 1000, "seed": 0}
     linear = force_band(model, P, 40.0, 3.0, 0.1, tol, method="linearised",
                         rebuild=lambda **k: model.with_parameters(**k))
-    assert linear.method == "linearised"
+    assert linear.method == "linearised" and linear.record() == {"method": "linearised"}
     assert mc.force_u_N == pytest.approx(linear.force_u_N, rel=0.08)
     # at the box's edge (D0 = 30 mm, draws below it) the band is linearised by itself
     assert force_band(model, P, 30.0, 3.0, 0.1, tol).method == "linearised"

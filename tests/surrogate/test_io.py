@@ -67,6 +67,14 @@ def test_a_model_folder_has_the_permissions_of_the_users_umask(saved):
     assert directory.stat().st_mode & 0o777 == 0o777 & ~umask
 
 
+def test_a_model_saved_says_what_its_file_says(saved):
+    # was: the model just trained and saved (the cache's on first use) kept its metadata
+    # without the file's sha256: the first report or study after a training named no file
+    model, directory, _ = saved
+    assert model.metadata == json.loads((directory / METADATA_FILE).read_text())
+    assert model.origin()["sha256"] == load_model(directory).origin()["sha256"]
+
+
 def test_files_are_json_and_arrays_not_pickles(saved):
     _, directory, _ = saved
     assert sorted(f.name for f in directory.iterdir()) == [ESTIMATOR_FILE, METADATA_FILE]
