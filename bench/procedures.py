@@ -283,21 +283,32 @@ def _vent_and_verify(device: Backend, config: BenchConfig):
 
 
 class _Timed:
-    """``backend`` whose read under way is known: :attr:`reading` holds when it began and
-    how long it may take (its timeout, its block's time and
-    :data:`mkm.bench.run.READ_HANG_MARGIN_S`), None between reads."""
+    """``backend`` whose call to the driver under way is known: :attr:`calling` holds when it
+    began, how long it may take (a read: its timeout, its block's time and
+    :data:`mkm.bench.run.READ_HANG_MARGIN_S`; the count of samples waiting: the margin) and
+    what it is, in words; None between calls."""
 
     def __init__(self, backend: Backend, rate_hz: float):
         self._backend, self._rate_hz = backend, rate_hz
-        self.reading: tuple[float, float, float] | None = None  # began, limit [s], timeout [s]
+        self.calling: tuple[float, float, str] | None = None
 
     def read(self, n_samples: int, timeout_s: float):
-        self.reading = (time.monotonic(),
-                        timeout_s + n_samples / self._rate_hz + READ_HANG_MARGIN_S, timeout_s)
+        self.calling = (time.monotonic(),
+                        timeout_s + n_samples / self._rate_hz + READ_HANG_MARGIN_S,
+                        f"a read of the device did not return within {{:.1f}} s (its timeout "
+                        f"{timeout_s:g} s)")
         try:
             return self._backend.read(n_samples, timeout_s)
         finally:
-            self.reading = None
+            self.calling = None
+
+    def available(self) -> int:
+        self.calling = (time.monotonic(), READ_HANG_MARGIN_S, "the device did not say how many "
+                        "samples wait within {:.1f} s")
+        try:
+            return self._backend.available()
+        finally:
+            self.calling = None
 
     def __getattr__(self, name):
         return getattr(self._backend, name)
@@ -320,15 +331,14 @@ def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
     thread.start()
     while thread.is_alive():
         thread.join(WATCH_EVERY_S)
-        reading = timed.reading
-        if thread.is_alive() and reading is not None:
-            hung_s = time.monotonic() - reading[0]
-            if hung_s > reading[1]:
+        calling = timed.calling
+        if thread.is_alive() and calling is not None:
+            hung_s = time.monotonic() - calling[0]
+            if hung_s > calling[1]:
                 return VentCheck(
                     False, math.nan, config.safety.vent_below_bar, time.monotonic() - begun,
-                    "monitor", f"a read of the device did not return within {hung_s:.1f} s (its "
-                    f"timeout {reading[2]:g} s) during the vent check: the driver hangs; the vent "
-                    "was commanded, its check cannot read the monitor", hung=True)
+                    "monitor", f"{calling[2].format(hung_s)} during the vent check: the driver "
+                    "hangs; the vent was commanded, its check cannot read the monitor", hung=True)
     if isinstance(out[0], BaseException):
         raise out[0]
     return out[0]

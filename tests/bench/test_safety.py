@@ -1160,6 +1160,39 @@ def test_a_read_that_hangs_in_mkm_vents_check_ends_unverified_and_marks_the_benc
     assert not list(bench_folder("sim-Dev1").glob("*.json"))  # removed once vented
 
 
+def test_a_count_of_waiting_samples_that_hangs_in_mkm_vent_ends_it_unverified(config,
+                                                                              monkeypatch):
+    # the check's first call to the driver asks how many samples wait (those acquired before
+    # the vent, which prove nothing); it hangs, and was watched by nothing: the command sat in
+    # it. Now it is given READ_HANG_MARGIN_S, then the vent is said not verified.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    release = threading.Event()
+
+    class Hanging(SimBackend):
+        def available(self):
+            release.wait(60)  # the test's net; released once the command returned
+            return super().available()
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.vent(config, notify=lambda m: None)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung
+    hung_s = float(re.search(r"the device did not say how many samples wait within ([0-9.]+) s "
+                             r"during the vent check: the driver hangs; the vent was commanded, "
+                             r"its check cannot read the monitor\): VENT BY HAND",
+                             str(caught.value)).group(1))
+    assert hung_s >= 1.0  # READ_HANG_MARGIN_S
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
+    assert "did not say how many samples wait" in json.loads(marker.read_text())[
+        "vent_unverified"]
+
+
 def test_mkm_vent_killed_during_its_check_leaves_the_bench_marked(config, monkeypatch):
     # `mkm vent` killed (kill -9, the Task Manager) while its check reads the monitor left no
     # trace: the next command said nothing of a vent never verified. Now the bench is marked
