@@ -18,13 +18,14 @@ from contextlib import contextmanager
 import numpy as np
 from scipy import stats
 
-from mkm.bench.backend import Backend, BenchError, DaqDisconnected, DeviceInfo
+from mkm.bench.backend import AOWriteFailed, Backend, BenchError, DaqDisconnected, DeviceInfo
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import (
     READ_HANG_MARGIN_S,
+    VENT_WRITES,
     WATCH_EVERY_S,
     WATCHDOG_WRITE_S,
     StderrNotice,
@@ -148,11 +149,11 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
         bookkeeping.append(str(exc))
     hung = False
     try:
-        device.open()  # writes the vent command (a lost device is reset first)
+        _refused_again(device.open, notify)  # writes the vent (a lost device is reset first)
         if config.regulator.electronic:  # marked once the vent is out, never waited for: a
             # process killed during the check leaves the bench marked
             owner.post(lambda: mark_vent(key, "vent", "", owner.state))
-        check = _vent_and_verify(device, config)
+        check = _vent_and_verify(device, config, notify)
         hung = check is not None and check.hung
         unproven = []
         if answered:
@@ -182,6 +183,20 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             "muscle and the monitor" + "".join(f"; {p}" for p in bookkeeping))
     return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
             "manual": False, "stopped": stopped, "bookkeeping": bookkeeping}
+
+
+def _refused_again(write, notify) -> None:
+    """``write()`` (a vent command, or the open that writes it), written again at once when
+    the device refuses it (an AO write error), :data:`mkm.bench.run.VENT_WRITES` times in all
+    as a run's shutdown does; each refusal said. Raises the last refusal."""
+    for attempt in range(1, VENT_WRITES + 1):
+        try:
+            write()
+            return
+        except AOWriteFailed as exc:
+            if attempt == VENT_WRITES:
+                raise
+            notify(f"vent command failed ({type(exc).__name__}: {exc}), tried again")
 
 
 def _mark(owner: BenchOwner, key: str, check: VentCheck) -> list[str]:
@@ -258,13 +273,14 @@ def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
     return answer, True
 
 
-def _vent_and_verify(device: Backend, config: BenchConfig):
+def _vent_and_verify(device: Backend, config: BenchConfig, notify):
     """Write 0 bar and, with an electronic regulator, verify it; a device lost on the write or
     on the check's reads is reset and vented on fresh tasks once (``revive``, NI only), and
-    the vent checked again. The check (None with a manual regulator)."""
+    the vent checked again; a write the device refuses is written again
+    (:func:`_refused_again`, said to ``notify``). The check (None with a manual regulator)."""
     revive = getattr(device, "revive", None)
     try:
-        device.write_command(0.0)
+        _refused_again(lambda: device.write_command(0.0), notify)
         started = False
     except DaqDisconnected:
         if revive is None:

@@ -1193,6 +1193,41 @@ def test_a_count_of_waiting_samples_that_hangs_in_mkm_vent_ends_it_unverified(co
         "vent_unverified"]
 
 
+@pytest.mark.parametrize("refusals", [1, 3])
+def test_a_vent_write_mkm_vent_is_refused_is_written_again(config, monkeypatch, refusals):
+    # the device refuses `mkm vent`'s vent write (an AO write error), as it opens: the command
+    # gave up at once, VENT BY HAND, where a run's shutdown writes it again, three times in
+    # all. Now so does `mkm vent`, and says so; refused three times, VENT BY HAND.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import AOWriteFailed, BenchError
+
+    refused, backends = [], []
+
+    class Refusing(SimBackend):
+        def write_command(self, volts):
+            if len(refused) < refusals:
+                refused.append(volts)
+                raise AOWriteFailed("AO write refused")
+            super().write_command(volts)
+
+        def start(self):
+            super().start()
+            self.bench.pressure_bar = 0.5  # left by a run: the vent exhausts it
+
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(Refusing(c)) or backends[-1])
+    notes = []
+    if refusals == 3:
+        with pytest.raises(BenchError, match="AO write refused"):
+            procedures.vent(config, notify=notes.append)  # the command line: VENT BY HAND
+    else:
+        assert procedures.vent(config, notify=notes.append)["vented"]
+        assert backends[0].bench.pressure_bar < config.safety.vent_below_bar  # the truth
+    assert refused == [0.0] * refusals
+    assert notes == ["vent command failed (AOWriteFailed: AO write refused), tried again"] * (
+        min(refusals, 2))
+
+
 def test_mkm_vent_killed_during_its_check_leaves_the_bench_marked(config, monkeypatch):
     # `mkm vent` killed (kill -9, the Task Manager) while its check reads the monitor left no
     # trace: the next command said nothing of a vent never verified. Now the bench is marked
