@@ -27,8 +27,8 @@ from mkm.bench.run import (
     READ_HANG_MARGIN_S,
     VENT_WRITES,
     WATCH_EVERY_S,
-    WATCHDOG_WRITE_S,
     StderrNotice,
+    close_within,
     make_backend,
     make_operator,
     with_backend,
@@ -147,14 +147,12 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             owner.__enter__()
     except StateFolderBroken as exc:  # vent without the lock: venting twice is harmless
         bookkeeping.append(str(exc))
-    hung = False
     try:
         _refused_again(device.open, notify)  # writes the vent (a lost device is reset first)
         if config.regulator.electronic:  # marked once the vent is out, never waited for: a
             # process killed during the check leaves the bench marked
             owner.post(lambda: mark_vent(key, "vent", "", owner.state))
         check = _vent_and_verify(device, config, notify)
-        hung = check is not None and check.hung
         unproven = []
         if answered:
             problems, dead = _mend_dead_runs(device, owner, notify)
@@ -164,7 +162,9 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             bookkeeping.extend(_mark(owner, key, check))
     finally:
         try:
-            _close(device, hung, bookkeeping)
+            closing = close_within(device)  # a driver that hangs there holds nothing back
+            if closing:
+                bookkeeping.append(closing)
         finally:
             owner.__exit__()
             if owner.problem:
@@ -223,28 +223,6 @@ def _mark(owner: BenchOwner, key: str, check: VentCheck) -> list[str]:
     if isinstance(out, BaseException):
         raise out
     return []
-
-
-def _close(device: Backend, hung: bool, bookkeeping: list[str]) -> None:
-    """Close ``device`` (it writes the vent again); after a read that hung, on a thread of its
-    own waited for :data:`mkm.bench.run.WATCHDOG_WRITE_S`: the driver may hang for it too."""
-    if not hung:
-        device.close()
-        return
-    done = threading.Event()
-
-    def close() -> None:
-        try:
-            device.close()
-        except BaseException:  # the hung driver's; the vent went out at open
-            pass
-        finally:
-            done.set()
-
-    threading.Thread(target=close, name="mkm-vent-close", daemon=True).start()
-    if not done.wait(WATCHDOG_WRITE_S):
-        bookkeeping.append(f"the device did not close within {WATCHDOG_WRITE_S:g} s (the "
-                           "driver hangs): it is let go as this process ends")
 
 
 def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
@@ -333,7 +311,7 @@ class _Timed:
 def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
     """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads watched as a run's
     watchdog watches them: a read that hangs (a driver that does not keep its timeout) ends the
-    check unverified, the read left behind (:attr:`mkm.bench.vent.VentCheck.hung`)."""
+    check unverified, the read left behind."""
     timed, out = _Timed(device, config.daq.sample_rate_hz), []
 
     def check() -> None:
@@ -354,7 +332,7 @@ def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
                 return VentCheck(
                     False, math.nan, config.safety.vent_below_bar, time.monotonic() - begun,
                     "monitor", f"{calling[2].format(hung_s)} during the vent check: the driver "
-                    "hangs; the vent was commanded, its check cannot read the monitor", hung=True)
+                    "hangs; the vent was commanded, its check cannot read the monitor")
     if isinstance(out[0], BaseException):
         raise out[0]
     return out[0]
