@@ -275,6 +275,7 @@ class Staircase:
             tare.update(vented_monitor(monitor))
             check_vented_monitor(tare, self.config)
         self.acq.tare_offset_V = tare["offset_V"]
+        self.acq.tare_std_V = tare["std_V"]
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
         for warning in (rest_warning(tare, self.config),
                         settle_warning(tare["std_N"], self.config),

@@ -475,12 +475,12 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
 def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(config,
                                                                                 tmp_path):
     # The load cell's input holds its reading from 12 s (on the 1.0 bar step: its cable or
-    # amplifier failed so). At the end the regulator vents, the monitor falls to 0 bar, and
-    # the check called it a muscle that still pulls, with a monitor reporting its command
-    # and an exhaust that did not open: the regulator to check. Every force read one ADC code
-    # where the tare's strayed 0.35 N (2 mV rms at 196.133 N/V, 0.39 N: 1.6 ADC steps), which
-    # no live cell does: it is said to be the load cell, still VENT BY HAND (the force proves
-    # nothing).
+    # amplifier failed so). The regulator vents (the run stops on the stuck cell: below), the
+    # monitor falls to 0 bar, and the check called it a muscle that still pulls, with a
+    # monitor reporting its command and an exhaust that did not open: the regulator to check.
+    # Every force read one ADC code where the tare's strayed 0.35 N (2 mV rms at 196.133 N/V,
+    # 0.39 N: 1.6 ADC steps), which no live cell does: it is said to be the load cell, still
+    # VENT BY HAND (the force proves nothing).
     c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 12.0}})
     backend = SimBackend(c)
     result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
@@ -495,7 +495,7 @@ def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(c
                        result.reason)
     assert reason, result.reason
     before_bar, after_bar, held_N, tare_std_N = map(float, reason.groups())
-    assert before_bar == pytest.approx(0.5, abs=0.02)  # the last step, 0.5 bar down
+    assert before_bar == pytest.approx(1.0, abs=0.02)  # the step it stuck on
     assert after_bar < c.safety.vent_below_bar
     assert held_N == pytest.approx(forces.iloc[0], abs=0.05)
     # the tare's spread is the cell's noise: 2 mV rms at 196.133 N/V, quantised
@@ -504,6 +504,28 @@ def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(c
     assert "a monitor that reports its command" not in result.reason
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
     assert not run.meta.vent_check["verified"]
+
+
+def test_a_load_cell_stuck_mid_run_stops_the_run_within_two_seconds(config, tmp_path):
+    # The load cell's input holds its reading from 12 s: the run went on to its end, every
+    # step "settled" at once on one force (steps.csv full of it), the force interlock blind
+    # behind it, until the vent check found the cell unchanged. A live cell strays at every
+    # reading (0.35 N at the tare, 1.6 ADC steps): one code held STUCK_CELL_S (2 s, 20
+    # readings) stops the run there, vented, failed, with why.
+    from mkm.bench.worker import STUCK_CELL_S
+
+    c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 12.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    assert re.match(r"force interlock: the load cell read [0-9.]+ V \([0-9.]+ N\) unchanged for "
+                    r"2\.0 s, where it strayed 0\.[0-9]+ N at the tare: a stuck or disconnected "
+                    r"load cell, behind which the force limit is not watched; check its cable, "
+                    r"amplifier and supply; vented", result.reason), result.reason
+    run = load_run(result.path)
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    # the sample 12 s in holds the code, then 20 readings: 2 s later, to a sample
+    assert tripped["time_s"].iloc[0] == pytest.approx(12.0 + STUCK_CELL_S, abs=0.11)
+    assert run.meta.steps_done < len(c.sequence.pressures_bar) + 1  # not every step
 
 
 def test_a_monitor_frozen_above_the_threshold_is_named_by_the_load_cell(config, tmp_path):
