@@ -921,6 +921,24 @@ def test_a_final_record_refused_for_good_is_kept_in_the_marker_and_written_next(
         data = json.loads(written.read_text())
         data["process"]["started_unix_s"] -= 100.0
         written.write_text(json.dumps(data))
+    # the next command finds the disk still refusing run.json: the marker, which alone keeps
+    # the outcome, was removed all the same; now it stays for the command after
+    from mkm.bench import unvented
+
+    write_json = unvented.write_json_atomic
+
+    def still_refused(path, data):
+        if path.name == "run.json" and refusing:
+            raise refusal
+        write_json(path, data)
+
+    monkeypatch.setattr(unvented, "write_json_atomic", still_refused)
+    notes = []
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    (said,) = notes
+    assert said.endswith(f"vented now; its run.json could not be rewritten ({refusal.strerror}): "
+                         "not mended; its bench marker keeps the outcome for the next command")
+    assert path.is_file() and load_run(result.path).status == "incomplete"
     refusing.clear()  # the disk takes writes again
     notes = []
     assert procedures.vent(config, notify=notes.append)["vented"]
