@@ -603,12 +603,10 @@ class Acquisition:
         ok = self.written = False
         if self.lease is not None and clamped > 0:
             self._mark(clamped)
+        # watched until the device's clock is read after the write (a driver call too)
+        self.writing = (time.monotonic(), clamped)
         try:
-            self.writing = (time.monotonic(), clamped)
-            try:
-                self.backend.write_command(volts)
-            finally:
-                self.writing = None
+            self.backend.write_command(volts)
             ok = self.written = True
             self.command_bar = clamped
             if clamped > 0:
@@ -620,7 +618,10 @@ class Acquisition:
                 meta.stop_to_vent_s = time.monotonic() - stopped_at
                 meta.vented_at_unix_s = time.time()
         finally:
-            issued = self._clock_index()
+            try:
+                issued = self._clock_index()
+            finally:
+                self.writing = None
             if ok:
                 self._issued.append((issued, clamped))
                 # a command every sample still to be read was acquired after is the oldest needed

@@ -786,6 +786,38 @@ def test_a_command_write_that_hangs_is_vented_by_the_watchdog(config, tmp_path):
     assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
 
 
+def test_a_clock_query_that_hangs_after_a_command_is_vented_by_the_watchdog(config,
+                                                                           tmp_path):
+    # the 1.0 bar command went out; the query of the device's clock that dates it (the
+    # samples waiting) then hangs: the loop sat in it, 1.0 bar held, watched by nothing. Now
+    # the command's watch lasts until that query returns: vented 1 s past the write's timeout.
+    import threading
+
+    backend = SimBackend(config)
+    available, seen = backend.available, {}
+
+    def hanging():
+        if backend.bench.command_bar == 1.0 and not seen and \
+                threading.current_thread() is threading.main_thread():
+            deadline = time.monotonic() + 60  # the test's net
+            while time.monotonic() < deadline:
+                meta = json.loads((run.recorder.path / "run.json").read_text())
+                if meta["status"] == "failed":
+                    seen["meta"], seen["command_bar"] = meta, backend.bench.command_bar
+                    break
+                time.sleep(0.01)
+        return available()
+
+    backend.available = hanging
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    assert seen["command_bar"] == 0.0 and seen["meta"]["manual_vent_required"]
+    assert "write interlock: the command of 1 bar did not return within" in seen["meta"]["reason"]
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert load_run(result.path).meta.vent_check["verified"]
+    assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
+
+
 def test_a_close_that_hangs_does_not_keep_the_record_from_being_written(config, tmp_path):
     # the run vented and verified its vent; the driver then hangs as the device is closed
     # (its tasks cleared). The shutdown waited in the close: run.json said `running`, the
