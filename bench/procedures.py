@@ -73,7 +73,9 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
                     notify(marker.vented_now())
                 yield info
             finally:
-                backend.close()
+                closing = close_within(backend)  # a driver that hangs there holds no one
+                if closing:
+                    notify(closing)
     finally:  # vented and closed: a state folder that hangs is not waited for
         if owner.problem:
             notify(owner.problem)

@@ -67,6 +67,35 @@ def test_tare_on_the_sim(config):
         tare(config.replace(sim={"truth": {"monitor_offset_bar": 0.2}}), seconds=10.0)
 
 
+def test_a_close_that_hangs_ends_the_tare_all_the_same(config, monkeypatch, capsys):
+    # the tare read, then the driver hung as the device was closed (the vent written again,
+    # the tasks cleared): `mkm tare` never returned. Now the close is waited for CLOSE_WAIT_S
+    # and the tare returns, saying so
+    import threading
+
+    import mkm.bench.procedures as procedures
+    from mkm.bench.run import CLOSE_WAIT_S
+    from mkm.bench.sim import SimBackend
+
+    release = threading.Event()
+
+    class Hanging(SimBackend):
+        def close(self):
+            release.wait(60)  # the test's net; released once the tare returned
+            super().close()
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    try:
+        out = tare(config, seconds=2.0)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and out["n"] == 20
+    assert capsys.readouterr().err.endswith(
+        f"mkm tare: closing the device did not return within {CLOSE_WAIT_S:g} s (the driver "
+        "hangs): it is let go as this process ends\n")
+
+
 def test_check_lists_device_steps_and_duration(config):
     text, warnings = check(config)
     assert warnings == []
