@@ -36,6 +36,7 @@ from mkm.bench.run import (
 from mkm.bench.sequence import (
     check_vented_monitor,
     monitor_zero_warning,
+    one_code_warning,
     rest_warning,
     settle_warning,
     validate_tare,
@@ -111,6 +112,7 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
         check_vented_monitor(out, config)  # as a run's tare: it would stop the run
     return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict(),
             "settle_warning": settle_warning(out["std_N"], config),
+            "one_code_warning": one_code_warning(out, config),
             "rest_warning": rest_warning(out, config),
             "monitor_warning": monitor_zero_warning(out, config)}
 
