@@ -18,16 +18,17 @@ from contextlib import contextmanager
 import numpy as np
 from scipy import stats
 
-from mkm.bench.backend import Backend, BenchError, DaqDisconnected, DeviceInfo
+from mkm.bench.backend import AOWriteFailed, Backend, BenchError, DaqDisconnected, DeviceInfo
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import (
     READ_HANG_MARGIN_S,
+    VENT_WRITES,
     WATCH_EVERY_S,
-    WATCHDOG_WRITE_S,
     StderrNotice,
+    close_within,
     make_backend,
     make_operator,
     with_backend,
@@ -35,6 +36,7 @@ from mkm.bench.run import (
 from mkm.bench.sequence import (
     check_vented_monitor,
     monitor_zero_warning,
+    one_code_warning,
     rest_warning,
     settle_warning,
     validate_tare,
@@ -72,7 +74,9 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
                     notify(marker.vented_now())
                 yield info
             finally:
-                backend.close()
+                closing = close_within(backend)  # a driver that hangs there holds no one
+                if closing:
+                    notify(closing)
     finally:  # vented and closed: a state folder that hangs is not waited for
         if owner.problem:
             notify(owner.problem)
@@ -108,6 +112,7 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
         check_vented_monitor(out, config)  # as a run's tare: it would stop the run
     return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict(),
             "settle_warning": settle_warning(out["std_N"], config),
+            "one_code_warning": one_code_warning(out, config),
             "rest_warning": rest_warning(out, config),
             "monitor_warning": monitor_zero_warning(out, config)}
 
@@ -146,14 +151,12 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             owner.__enter__()
     except StateFolderBroken as exc:  # vent without the lock: venting twice is harmless
         bookkeeping.append(str(exc))
-    hung = False
     try:
-        device.open()  # writes the vent command (a lost device is reset first)
+        _refused_again(device.open, notify)  # writes the vent (a lost device is reset first)
         if config.regulator.electronic:  # marked once the vent is out, never waited for: a
             # process killed during the check leaves the bench marked
             owner.post(lambda: mark_vent(key, "vent", "", owner.state))
-        check = _vent_and_verify(device, config)
-        hung = check is not None and check.hung
+        check = _vent_and_verify(device, config, notify)
         unproven = []
         if answered:
             problems, dead = _mend_dead_runs(device, owner, notify)
@@ -163,7 +166,9 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             bookkeeping.extend(_mark(owner, key, check))
     finally:
         try:
-            _close(device, hung, bookkeeping)
+            closing = close_within(device)  # a driver that hangs there holds nothing back
+            if closing:
+                bookkeeping.append(closing)
         finally:
             owner.__exit__()
             if owner.problem:
@@ -182,6 +187,20 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             "muscle and the monitor" + "".join(f"; {p}" for p in bookkeeping))
     return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
             "manual": False, "stopped": stopped, "bookkeeping": bookkeeping}
+
+
+def _refused_again(write, notify) -> None:
+    """``write()`` (a vent command, or the open that writes it), written again at once when
+    the device refuses it (an AO write error), :data:`mkm.bench.run.VENT_WRITES` times in all
+    as a run's shutdown does; each refusal said. Raises the last refusal."""
+    for attempt in range(1, VENT_WRITES + 1):
+        try:
+            write()
+            return
+        except AOWriteFailed as exc:
+            if attempt == VENT_WRITES:
+                raise
+            notify(f"vent command failed ({type(exc).__name__}: {exc}), tried again")
 
 
 def _mark(owner: BenchOwner, key: str, check: VentCheck) -> list[str]:
@@ -210,28 +229,6 @@ def _mark(owner: BenchOwner, key: str, check: VentCheck) -> list[str]:
     return []
 
 
-def _close(device: Backend, hung: bool, bookkeeping: list[str]) -> None:
-    """Close ``device`` (it writes the vent again); after a read that hung, on a thread of its
-    own waited for :data:`mkm.bench.run.WATCHDOG_WRITE_S`: the driver may hang for it too."""
-    if not hung:
-        device.close()
-        return
-    done = threading.Event()
-
-    def close() -> None:
-        try:
-            device.close()
-        except BaseException:  # the hung driver's; the vent went out at open
-            pass
-        finally:
-            done.set()
-
-    threading.Thread(target=close, name="mkm-vent-close", daemon=True).start()
-    if not done.wait(WATCHDOG_WRITE_S):
-        bookkeeping.append(f"the device did not close within {WATCHDOG_WRITE_S:g} s (the "
-                           "driver hangs): it is let go as this process ends")
-
-
 def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
                  ) -> tuple[dict | None, bool]:
     """Ask a live holder of the bench to stop (:func:`mkm.bench.ownership.request_stop`), on a
@@ -258,13 +255,14 @@ def _ask_to_stop(key: str, stop_wait_s: float, bookkeeping: list[str]
     return answer, True
 
 
-def _vent_and_verify(device: Backend, config: BenchConfig):
+def _vent_and_verify(device: Backend, config: BenchConfig, notify):
     """Write 0 bar and, with an electronic regulator, verify it; a device lost on the write or
     on the check's reads is reset and vented on fresh tasks once (``revive``, NI only), and
-    the vent checked again. The check (None with a manual regulator)."""
+    the vent checked again; a write the device refuses is written again
+    (:func:`_refused_again`, said to ``notify``). The check (None with a manual regulator)."""
     revive = getattr(device, "revive", None)
     try:
-        device.write_command(0.0)
+        _refused_again(lambda: device.write_command(0.0), notify)
         started = False
     except DaqDisconnected:
         if revive is None:
@@ -283,21 +281,32 @@ def _vent_and_verify(device: Backend, config: BenchConfig):
 
 
 class _Timed:
-    """``backend`` whose read under way is known: :attr:`reading` holds when it began and
-    how long it may take (its timeout, its block's time and
-    :data:`mkm.bench.run.READ_HANG_MARGIN_S`), None between reads."""
+    """``backend`` whose call to the driver under way is known: :attr:`calling` holds when it
+    began, how long it may take (a read: its timeout, its block's time and
+    :data:`mkm.bench.run.READ_HANG_MARGIN_S`; the count of samples waiting: the margin) and
+    what it is, in words; None between calls."""
 
     def __init__(self, backend: Backend, rate_hz: float):
         self._backend, self._rate_hz = backend, rate_hz
-        self.reading: tuple[float, float, float] | None = None  # began, limit [s], timeout [s]
+        self.calling: tuple[float, float, str] | None = None
 
     def read(self, n_samples: int, timeout_s: float):
-        self.reading = (time.monotonic(),
-                        timeout_s + n_samples / self._rate_hz + READ_HANG_MARGIN_S, timeout_s)
+        self.calling = (time.monotonic(),
+                        timeout_s + n_samples / self._rate_hz + READ_HANG_MARGIN_S,
+                        f"a read of the device did not return within {{:.1f}} s (its timeout "
+                        f"{timeout_s:g} s)")
         try:
             return self._backend.read(n_samples, timeout_s)
         finally:
-            self.reading = None
+            self.calling = None
+
+    def available(self) -> int:
+        self.calling = (time.monotonic(), READ_HANG_MARGIN_S, "the device did not say how many "
+                        "samples wait within {:.1f} s")
+        try:
+            return self._backend.available()
+        finally:
+            self.calling = None
 
     def __getattr__(self, name):
         return getattr(self._backend, name)
@@ -306,7 +315,7 @@ class _Timed:
 def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
     """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads watched as a run's
     watchdog watches them: a read that hangs (a driver that does not keep its timeout) ends the
-    check unverified, the read left behind (:attr:`mkm.bench.vent.VentCheck.hung`)."""
+    check unverified, the read left behind."""
     timed, out = _Timed(device, config.daq.sample_rate_hz), []
 
     def check() -> None:
@@ -320,15 +329,14 @@ def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
     thread.start()
     while thread.is_alive():
         thread.join(WATCH_EVERY_S)
-        reading = timed.reading
-        if thread.is_alive() and reading is not None:
-            hung_s = time.monotonic() - reading[0]
-            if hung_s > reading[1]:
+        calling = timed.calling
+        if thread.is_alive() and calling is not None:
+            hung_s = time.monotonic() - calling[0]
+            if hung_s > calling[1]:
                 return VentCheck(
                     False, math.nan, config.safety.vent_below_bar, time.monotonic() - begun,
-                    "monitor", f"a read of the device did not return within {hung_s:.1f} s (its "
-                    f"timeout {reading[2]:g} s) during the vent check: the driver hangs; the vent "
-                    "was commanded, its check cannot read the monitor", hung=True)
+                    "monitor", f"{calling[2].format(hung_s)} during the vent check: the driver "
+                    "hangs; the vent was commanded, its check cannot read the monitor")
     if isinstance(out[0], BaseException):
         raise out[0]
     return out[0]

@@ -93,6 +93,34 @@ WATCH_EVERY_S = 0.1
 WATCHDOG_WRITE_S = 1.0
 
 
+#: the device's close (the vent written again, the tasks cleared) is waited for this long [s]:
+#: the AO write's own timeout and the margin; a driver that hangs there holds no record back
+CLOSE_WAIT_S = WATCHDOG_WRITE_S + READ_HANG_MARGIN_S
+
+
+def close_within(backend: Backend, wait_s: float = CLOSE_WAIT_S) -> str:
+    """Close ``backend`` (it writes the vent again) on a thread of its own, waited for
+    ``wait_s``: a driver that hangs there must not keep the record from being written. Says
+    so when it did not return ("" when it closed); raises what the close raised."""
+    done, failed = threading.Event(), []
+
+    def close() -> None:
+        try:
+            backend.close()
+        except BaseException as exc:
+            failed.append(exc)
+        finally:
+            done.set()
+
+    threading.Thread(target=close, name="mkm-close", daemon=True).start()
+    if not done.wait(wait_s):
+        return (f"closing the device did not return within {wait_s:g} s (the driver hangs): "
+                "it is let go as this process ends")
+    if failed:
+        raise failed[0]
+    return ""
+
+
 class StderrNotice:
     """One line for the operator on stderr, ``mkm <command>: <message>`` as every command's
     lines (the default ``notify`` of runs and procedures)."""
@@ -864,9 +892,11 @@ class BenchRun:
             elif self.vent_check.verified:
                 problems.append(f"the shutdown's vent went through ({self.vent_check.describe()})")
         try:
-            self.backend.close()
+            closing = close_within(self.backend)
         except BaseException as exc:
-            problems.append(f"closing the device failed ({type(exc).__name__}: {exc})")
+            closing = f"closing the device failed ({type(exc).__name__}: {exc})"
+        if closing:
+            problems.append(closing)
         for observer in self._observers:
             try:
                 observer.close()

@@ -17,6 +17,7 @@ from collections import deque
 
 import numpy as np
 
+from mkm.bench import backends
 from mkm.bench.backend import BenchError
 from mkm.bench.budget import Instrument, step_budget
 from mkm.bench.config import BenchConfig, Step, plan_steps
@@ -183,6 +184,21 @@ def rest_warning(tare: dict, config: BenchConfig) -> str:
             "let the muscle rest vented and tare again (or lengthen sequence.tare_s)")
 
 
+def one_code_warning(tare: dict, config: BenchConfig) -> str:
+    """What a tare whose load-cell readings all lay on one ADC code means, or "": a stuck or
+    disconnected cell reads so, and the force limit is blind behind it (the stuck-cell
+    interlock, :data:`mkm.bench.worker.STUCK_CELL_S`, needs a tare that strays); a cell quieter
+    than one step reads so too."""
+    step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
+    if tare["std_V"] > 1e-6 * step_V:  # one code's spread is the mean's rounding, ~1e-16 V
+        return ""
+    step_mV = step_V * 1e3
+    return (f"the tare read the load cell on one ADC code ({tare['offset_V']:.4f} V) all "
+            f"{tare['n']} times: a stuck or disconnected cell reads so, and hides every force "
+            f"from the force limit; a cell quieter than one step ({step_mV:.2f} mV) too: load "
+            "the cell by hand and see its reading move before any pressure")
+
+
 class HoldStats:
     """Running mean, spread and straight-line trend (Welford's updates) of a hold's samples.
 
@@ -275,8 +291,9 @@ class Staircase:
             tare.update(vented_monitor(monitor))
             check_vented_monitor(tare, self.config)
         self.acq.tare_offset_V = tare["offset_V"]
+        self.acq.tare_std_V = tare["std_V"]
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
-        for warning in (rest_warning(tare, self.config),
+        for warning in (one_code_warning(tare, self.config), rest_warning(tare, self.config),
                         settle_warning(tare["std_N"], self.config),
                         monitor_zero_warning(tare, self.config)):
             if warning:

@@ -165,22 +165,31 @@ class ProcessIdentity:
             return cls(os.getpid(), socket.gethostname())
 
     def alive(self) -> bool:
-        """Whether this process still runs (False when it runs on another host: unknowable)."""
+        """Whether this process still runs (False when it runs on another host: unknowable).
+
+        The system clock may be set while it runs (an NTP step, a hand correction, a virtual
+        machine resumed): the boot time the system gives moves with it, and so, on Linux, does
+        the start time of every process (counted from the boot), while Windows keeps the start
+        times it stamped. So the same process is the pid started at the recorded time, or, both
+        moved alike, started as long after its boot as recorded; a process of the pid started
+        another time (the pid reused, or reused after a reboot) is not it."""
         import psutil
 
         if self.host != socket.gethostname() or not psutil.pid_exists(self.pid):
             return False
-        if self.boot_unix_s is not None and abs(psutil.boot_time() - self.boot_unix_s) > 2.0:
-            return False  # rebooted since
-        if self.started_unix_s is None:
-            return True  # a version-1 record: the pid is all there is
+        boot_moved_s = None if self.boot_unix_s is None else \
+            psutil.boot_time() - self.boot_unix_s
+        if self.started_unix_s is None:  # a version-1 record: the pid is all there is
+            return boot_moved_s is None or abs(boot_moved_s) <= 2.0  # else rebooted since
         try:
             started = psutil.Process(self.pid).create_time()
         except psutil.NoSuchProcess:
             return False
         except psutil.AccessDenied:
-            return True
-        return abs(started - self.started_unix_s) < 1.0
+            return boot_moved_s is None or abs(boot_moved_s) <= 2.0
+        moved_s = started - self.started_unix_s
+        return abs(moved_s) < 1.0 or (boot_moved_s is not None
+                                      and abs(moved_s - boot_moved_s) < 1.0)
 
 
 @dataclass

@@ -352,8 +352,10 @@ def vent_unvented(backend, found: list[tuple[Path, Marker]], on_state_folder
     def forget() -> list[str]:
         mended = []
         for path, marker in found:
-            mended.append(mend_run(marker))
-            path.unlink(missing_ok=True)
+            said, done = mend_run(marker)
+            mended.append(said)
+            if done:
+                path.unlink(missing_ok=True)
         return mended
 
     done, mended = on_state_folder(forget, "the dead runs' folders were mended and their "
@@ -368,27 +370,29 @@ def vent_unvented(backend, found: list[tuple[Path, Marker]], on_state_folder
     return [marker for _, marker in found]
 
 
-def mend_run(marker: Marker) -> str:
+def mend_run(marker: Marker) -> tuple[str, bool]:
     """Make the run folder of a dead run tell the truth, once its bench is vented: a run.json
     still ``running`` becomes ``killed``, with the sample count of the rows on disk and the time
     of death as far as known (samples.csv's last write), or takes the outcome the marker kept
-    when the run's own final write was refused. Returns what was done, in words."""
+    when the run's own final write was refused. Returns what was done, in words, and whether
+    the marker is done with: one whose kept outcome run.json refuses again stays, for the next
+    command to write."""
     from mkm.bench.storage import load_run, read_meta, release_reserve
     from mkm.core.records import provenance
 
     if not marker.run_path:  # left by a command without a run folder
-        return ""
+        return "", True
     path = Path(marker.run_path)
     if not path.is_absolute():
-        return f"its folder {path} is not an absolute path: not mended"
+        return f"its folder {path} is not an absolute path: not mended", True
     try:
         meta = read_meta(path)
     except (ValueError, OSError) as exc:
-        return f"its run.json could not be read ({str(exc)[:200]}): not mended"
+        return f"its run.json could not be read ({str(exc)[:200]}): not mended", True
     if meta.status != RunStatus.RUNNING:
-        return ""  # it recorded its own end
+        return "", True  # it recorded its own end
     if not meta.process or meta.process.pid != marker.process.get("pid"):
-        return "its run.json names another process: not mended"
+        return "its run.json names another process: not mended", True
     samples = load_run(path).meta.counters["samples"]  # the loader counts the rows on disk
     csv = path / "samples.csv"
     died = (datetime.datetime.fromtimestamp(csv.stat().st_mtime, datetime.UTC)
@@ -414,5 +418,7 @@ def mend_run(marker: Marker) -> str:
     try:
         write_json_atomic(path / "run.json", meta.as_dict())
     except OSError as exc:
-        return f"its run.json could not be rewritten ({exc.strerror or exc}): not mended"
-    return f"run.json mended: status {meta.status}, {samples} samples on disk"
+        kept = "; its bench marker keeps the outcome for the next command" if outcome else ""
+        return (f"its run.json could not be rewritten ({exc.strerror or exc}): not mended{kept}",
+                not outcome)
+    return f"run.json mended: status {meta.status}, {samples} samples on disk", True

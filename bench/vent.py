@@ -57,8 +57,6 @@ class VentCheck:
     noise_bar: float | None = None
     # why the check read on past safety.vent_timeout_s ("" when it did not)
     waited_why: str = ""
-    # a read of the check did not return (the driver hangs): the check was left there
-    hung: bool = False
     # safety.vent_timeout_s [s] of a check that stopped with the monitor above the threshold,
     # no longer falling by more than its noise (None otherwise): the setting a regulator that
     # exhausts slowly needs, named in the message

@@ -44,6 +44,7 @@ import time
 from collections import deque
 from contextlib import nullcontext
 
+from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
@@ -63,6 +64,11 @@ OVERPRESSURE_HARD_FRACTION = 0.10
 # The bench marker takes milliseconds on a local disk; a state folder slower than this hangs
 # (a network share), and the loop goes on without it rather than leave the interlocks unwatched.
 MARKER_WAIT_S = 0.5
+#: a load cell whose input holds one ADC code this long [s] of sample time, where its tare
+#: strayed more than a step, is stuck or disconnected: no live cell's noise stays on one code
+#: (twenty readings at 10 Hz; one step of noise keeps two readings on one code at most a third
+#: of the time), and behind it the force limit is not watched
+STUCK_CELL_S = 2.0
 
 
 class Stop(Exception):
@@ -112,6 +118,10 @@ class Acquisition:
         self.cell = config.loadcell
         self.electronic = config.regulator.electronic
         self.tare_offset_V = config.loadcell.offset_V
+        # the load cell's spread at the tare [V] (0 before it): above one ADC step, a reading
+        # held on one code for STUCK_CELL_S is a stuck cell (_stuck_cell)
+        self.tare_std_V = 0.0
+        self._held_cell: tuple[float, float] | None = None  # (the code held [V], since [s])
         self.command_bar = 0.0
         self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
         # the commands written, by the device's sample clock when each was issued (index, bar),
@@ -342,12 +352,31 @@ class Acquisition:
             # the measured pressure is the monitor's, or the operator's manometer reading: a
             # hand regulator turned past the limit is as over-pressured as an electronic one
             over = self._overpressure(t_s, pressure)
-            trip = over or self._interlock(index, force, pressure, cell_V, monitor_V, flags)
+            fault = over or self._stuck_cell(t_s, cell_V, force)
+            trip = fault or self._interlock(index, force, pressure, cell_V, monitor_V, flags)
             if trip:
                 flags.append("interlock")
-                trips.append((trip, RunStatus.FAILED if over else RunStatus.ABORTED))
+                trips.append((trip, RunStatus.FAILED if fault else RunStatus.ABORTED))
         return Sample(index, index / self.rate_hz, step, phase, set_bar, commanded, pressure,
                       cell_V, monitor_V, force, "|".join(flags))
+
+    def _stuck_cell(self, t_s: float, cell_V: float, force: float) -> str | None:
+        """The load cell's input has held one code (``cell_V``) for :data:`STUCK_CELL_S`
+        where its tare strayed more than an ADC step: stuck or disconnected (its message), or
+        None."""
+        step_V = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V
+        if not self.tare_std_V > step_V or not math.isfinite(cell_V):
+            return None
+        if self._held_cell is None or self._held_cell[0] != cell_V:
+            self._held_cell = (cell_V, t_s)
+            return None
+        if t_s - self._held_cell[1] < STUCK_CELL_S - 1e-9:
+            return None
+        return (f"force interlock: the load cell read {cell_V:.4f} V ({force:.1f} N) unchanged "
+                f"for {t_s - self._held_cell[1]:.1f} s, where it strayed "
+                f"{self.tare_std_V * self.cell.sensitivity_N_per_V:.2f} N at the tare: a stuck "
+                "or disconnected load cell, behind which the force limit is not watched; check "
+                "its cable, amplifier and supply")
 
     def _commanded_at(self, index: int) -> float:
         """The command [bar] sample ``index`` was acquired under: the last one issued at or
@@ -574,12 +603,10 @@ class Acquisition:
         ok = self.written = False
         if self.lease is not None and clamped > 0:
             self._mark(clamped)
+        # watched until the device's clock is read after the write (a driver call too)
+        self.writing = (time.monotonic(), clamped)
         try:
-            self.writing = (time.monotonic(), clamped)
-            try:
-                self.backend.write_command(volts)
-            finally:
-                self.writing = None
+            self.backend.write_command(volts)
             ok = self.written = True
             self.command_bar = clamped
             if clamped > 0:
@@ -591,7 +618,10 @@ class Acquisition:
                 meta.stop_to_vent_s = time.monotonic() - stopped_at
                 meta.vented_at_unix_s = time.time()
         finally:
-            issued = self._clock_index()
+            try:
+                issued = self._clock_index()
+            finally:
+                self.writing = None
             if ok:
                 self._issued.append((issued, clamped))
                 # a command every sample still to be read was acquired after is the oldest needed

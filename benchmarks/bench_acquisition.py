@@ -144,6 +144,7 @@ FAULTS = [  # name, [sim] settings, [sim.faults], sequence pressures (default 0.
      None),
     ("load cell NaN at 5 s", {}, {"nan_force_at_s": 5.0}, None),
     ("load cell NaN in the tare", {}, {"nan_force_at_s": 1.0}, None),
+    ("load cell stuck from 8 s", {}, {"loadcell_stuck_at_s": 8.0}, None),
     ("regulator stuck from 1 s", {}, {"regulator_stuck_at_s": 1.0}, None),
     ("regulator overshoot 0.3 bar at 2.5 bar", {}, {"overshoot_bar": 0.3}, (2.5,)),
     ("disconnect at 7 s", {}, {"disconnect_at_s": 7.0}, None),

@@ -245,7 +245,8 @@ def _tare(args) -> int:
     if out.get("monitor_vented_settled"):
         print(f"pressure monitor {out['monitor_vented_bar']:+.4f} bar vented "
               f"(+-{out['monitor_vented_se_bar']:.1g} bar standard error)")
-    for warning in filter(None, (out["rest_warning"], out["settle_warning"],
+    for warning in filter(None, (out["one_code_warning"], out["rest_warning"],
+                                 out["settle_warning"],
                                  out["monitor_warning"])):
         print(f"mkm tare: warning: {warning}", file=sys.stderr)
     return 0

@@ -67,6 +67,56 @@ def test_tare_on_the_sim(config):
         tare(config.replace(sim={"truth": {"monitor_offset_bar": 0.2}}), seconds=10.0)
 
 
+def test_a_close_that_hangs_ends_the_tare_all_the_same(config, monkeypatch, capsys):
+    # the tare read, then the driver hung as the device was closed (the vent written again,
+    # the tasks cleared): `mkm tare` never returned. Now the close is waited for CLOSE_WAIT_S
+    # and the tare returns, saying so
+    import threading
+
+    import mkm.bench.procedures as procedures
+    from mkm.bench.run import CLOSE_WAIT_S
+    from mkm.bench.sim import SimBackend
+
+    release = threading.Event()
+
+    class Hanging(SimBackend):
+        def close(self):
+            release.wait(60)  # the test's net; released once the tare returned
+            super().close()
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    try:
+        out = tare(config, seconds=2.0)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and out["n"] == 20
+    assert capsys.readouterr().err.endswith(
+        f"mkm tare: closing the device did not return within {CLOSE_WAIT_S:g} s (the driver "
+        "hangs): it is let go as this process ends\n")
+
+
+def test_a_tare_on_one_adc_code_is_said_so(config, tmp_path):
+    # the load cell is stuck from the start: the tare read one code 20 times, its spread 0 N,
+    # and passed without a word (the stuck-cell interlock needs a tare that strays); the run
+    # then recorded one force throughout, the force limit blind. Now the tare says so.
+    from mkm.bench.run import acquire
+
+    stuck = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
+    out = tare(stuck, seconds=2.0)
+    assert out["std_N"] == pytest.approx(0.0, abs=1e-9)
+    assert out["one_code_warning"] == (
+        f"the tare read the load cell on one ADC code ({out['offset_V']:.4f} V) all 20 times: a "
+        "stuck or disconnected cell reads so, and hides every force from the force limit; a "
+        "cell quieter than one step (1.22 mV) too: load the cell by hand and see its reading "
+        "move before any pressure")
+    assert tare(config, seconds=2.0)["one_code_warning"] == ""  # 2 mV of noise: 1.6 steps
+    notes = []
+    acquire(stuck.replace(sequence={"pressures_bar": (0.5,)}), out_root=tmp_path,
+            notify=notes.append)
+    assert any(n.startswith("warning: the tare read the load cell on one ADC code") for n in notes)
+
+
 def test_check_lists_device_steps_and_duration(config):
     text, warnings = check(config)
     assert warnings == []

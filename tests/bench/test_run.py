@@ -786,6 +786,72 @@ def test_a_command_write_that_hangs_is_vented_by_the_watchdog(config, tmp_path):
     assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
 
 
+def test_a_clock_query_that_hangs_after_a_command_is_vented_by_the_watchdog(config,
+                                                                           tmp_path):
+    # the 1.0 bar command went out; the query of the device's clock that dates it (the
+    # samples waiting) then hangs: the loop sat in it, 1.0 bar held, watched by nothing. Now
+    # the command's watch lasts until that query returns: vented 1 s past the write's timeout.
+    import threading
+
+    backend = SimBackend(config)
+    available, seen = backend.available, {}
+
+    def hanging():
+        if backend.bench.command_bar == 1.0 and not seen and \
+                threading.current_thread() is threading.main_thread():
+            deadline = time.monotonic() + 60  # the test's net
+            while time.monotonic() < deadline:
+                meta = json.loads((run.recorder.path / "run.json").read_text())
+                if meta["status"] == "failed":
+                    seen["meta"], seen["command_bar"] = meta, backend.bench.command_bar
+                    break
+                time.sleep(0.01)
+        return available()
+
+    backend.available = hanging
+    run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    assert seen["command_bar"] == 0.0 and seen["meta"]["manual_vent_required"]
+    assert "write interlock: the command of 1 bar did not return within" in seen["meta"]["reason"]
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert load_run(result.path).meta.vent_check["verified"]
+    assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_close_that_hangs_does_not_keep_the_record_from_being_written(config, tmp_path):
+    # the run vented and verified its vent; the driver then hangs as the device is closed
+    # (its tasks cleared). The shutdown waited in the close: run.json said `running`, the
+    # bench marker stayed, and killed then, the run was mended as killed. Now the close is
+    # waited for CLOSE_WAIT_S, then the run is recorded and says the close hung.
+    import threading
+
+    from mkm.bench.run import CLOSE_WAIT_S
+
+    backend = SimBackend(config)
+    release, close = threading.Event(), backend.close
+
+    def hanging():
+        release.wait(60)  # the test's net; released once the run was recorded
+        close()
+
+    backend.close = hanging
+    try:
+        result = BenchRun(config, backend, tmp_path, handle_signals=False,
+                          notify=lambda m: None).execute()
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert result.reason.endswith(f"closing the device did not return within {CLOSE_WAIT_S:g} s "
+                                  "(the driver hangs): it is let go as this process ends")
+    run = load_run(result.path)
+    assert run.status == "complete" and run.meta.vent_check["verified"]
+    from mkm.bench.unvented import bench_folder
+
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # the marker removed
+
+
 def test_every_line_the_bench_writes_names_its_command(mkm_cli, tmp_path, monkeypatch):
     # the simulated bench's notice, a warning, the status lines and the run's outcome said
     # 'mkm: ...' (or nothing) where every other command's lines say 'mkm <command>: ...'

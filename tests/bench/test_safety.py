@@ -475,12 +475,12 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
 def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(config,
                                                                                 tmp_path):
     # The load cell's input holds its reading from 12 s (on the 1.0 bar step: its cable or
-    # amplifier failed so). At the end the regulator vents, the monitor falls to 0 bar, and
-    # the check called it a muscle that still pulls, with a monitor reporting its command
-    # and an exhaust that did not open: the regulator to check. Every force read one ADC code
-    # where the tare's strayed 0.35 N (2 mV rms at 196.133 N/V, 0.39 N: 1.6 ADC steps), which
-    # no live cell does: it is said to be the load cell, still VENT BY HAND (the force proves
-    # nothing).
+    # amplifier failed so). The regulator vents (the run stops on the stuck cell: below), the
+    # monitor falls to 0 bar, and the check called it a muscle that still pulls, with a
+    # monitor reporting its command and an exhaust that did not open: the regulator to check.
+    # Every force read one ADC code where the tare's strayed 0.35 N (2 mV rms at 196.133 N/V,
+    # 0.39 N: 1.6 ADC steps), which no live cell does: it is said to be the load cell, still
+    # VENT BY HAND (the force proves nothing).
     c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 12.0}})
     backend = SimBackend(c)
     result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
@@ -495,7 +495,7 @@ def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(c
                        result.reason)
     assert reason, result.reason
     before_bar, after_bar, held_N, tare_std_N = map(float, reason.groups())
-    assert before_bar == pytest.approx(0.5, abs=0.02)  # the last step, 0.5 bar down
+    assert before_bar == pytest.approx(1.0, abs=0.02)  # the step it stuck on
     assert after_bar < c.safety.vent_below_bar
     assert held_N == pytest.approx(forces.iloc[0], abs=0.05)
     # the tare's spread is the cell's noise: 2 mV rms at 196.133 N/V, quantised
@@ -504,6 +504,28 @@ def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(c
     assert "a monitor that reports its command" not in result.reason
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
     assert not run.meta.vent_check["verified"]
+
+
+def test_a_load_cell_stuck_mid_run_stops_the_run_within_two_seconds(config, tmp_path):
+    # The load cell's input holds its reading from 12 s: the run went on to its end, every
+    # step "settled" at once on one force (steps.csv full of it), the force interlock blind
+    # behind it, until the vent check found the cell unchanged. A live cell strays at every
+    # reading (0.35 N at the tare, 1.6 ADC steps): one code held STUCK_CELL_S (2 s, 20
+    # readings) stops the run there, vented, failed, with why.
+    from mkm.bench.worker import STUCK_CELL_S
+
+    c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 12.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    assert re.match(r"force interlock: the load cell read [0-9.]+ V \([0-9.]+ N\) unchanged for "
+                    r"2\.0 s, where it strayed 0\.[0-9]+ N at the tare: a stuck or disconnected "
+                    r"load cell, behind which the force limit is not watched; check its cable, "
+                    r"amplifier and supply; vented", result.reason), result.reason
+    run = load_run(result.path)
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    # the sample 12 s in holds the code, then 20 readings: 2 s later, to a sample
+    assert tripped["time_s"].iloc[0] == pytest.approx(12.0 + STUCK_CELL_S, abs=0.11)
+    assert run.meta.steps_done < len(c.sequence.pressures_bar) + 1  # not every step
 
 
 def test_a_monitor_frozen_above_the_threshold_is_named_by_the_load_cell(config, tmp_path):
@@ -899,6 +921,24 @@ def test_a_final_record_refused_for_good_is_kept_in_the_marker_and_written_next(
         data = json.loads(written.read_text())
         data["process"]["started_unix_s"] -= 100.0
         written.write_text(json.dumps(data))
+    # the next command finds the disk still refusing run.json: the marker, which alone keeps
+    # the outcome, was removed all the same; now it stays for the command after
+    from mkm.bench import unvented
+
+    write_json = unvented.write_json_atomic
+
+    def still_refused(path, data):
+        if path.name == "run.json" and refusing:
+            raise refusal
+        write_json(path, data)
+
+    monkeypatch.setattr(unvented, "write_json_atomic", still_refused)
+    notes = []
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    (said,) = notes
+    assert said.endswith(f"vented now; its run.json could not be rewritten ({refusal.strerror}): "
+                         "not mended; its bench marker keeps the outcome for the next command")
+    assert path.is_file() and load_run(result.path).status == "incomplete"
     refusing.clear()  # the disk takes writes again
     notes = []
     assert procedures.vent(config, notify=notes.append)["vented"]
@@ -1158,6 +1198,74 @@ def test_a_read_that_hangs_in_mkm_vents_check_ends_unverified_and_marks_the_benc
                            f"{data['process']['pid']}) vented (0 bar commanded at ")
     assert "during the vent check: the driver hangs" in said and said.endswith("vented now")
     assert not list(bench_folder("sim-Dev1").glob("*.json"))  # removed once vented
+
+
+def test_a_count_of_waiting_samples_that_hangs_in_mkm_vent_ends_it_unverified(config,
+                                                                              monkeypatch):
+    # the check's first call to the driver asks how many samples wait (those acquired before
+    # the vent, which prove nothing); it hangs, and was watched by nothing: the command sat in
+    # it. Now it is given READ_HANG_MARGIN_S, then the vent is said not verified.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    release = threading.Event()
+
+    class Hanging(SimBackend):
+        def available(self):
+            release.wait(60)  # the test's net; released once the command returned
+            return super().available()
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.vent(config, notify=lambda m: None)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung
+    hung_s = float(re.search(r"the device did not say how many samples wait within ([0-9.]+) s "
+                             r"during the vent check: the driver hangs; the vent was commanded, "
+                             r"its check cannot read the monitor\): VENT BY HAND",
+                             str(caught.value)).group(1))
+    assert hung_s >= 1.0  # READ_HANG_MARGIN_S
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
+    assert "did not say how many samples wait" in json.loads(marker.read_text())[
+        "vent_unverified"]
+
+
+@pytest.mark.parametrize("refusals", [1, 3])
+def test_a_vent_write_mkm_vent_is_refused_is_written_again(config, monkeypatch, refusals):
+    # the device refuses `mkm vent`'s vent write (an AO write error), as it opens: the command
+    # gave up at once, VENT BY HAND, where a run's shutdown writes it again, three times in
+    # all. Now so does `mkm vent`, and says so; refused three times, VENT BY HAND.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import AOWriteFailed, BenchError
+
+    refused, backends = [], []
+
+    class Refusing(SimBackend):
+        def write_command(self, volts):
+            if len(refused) < refusals:
+                refused.append(volts)
+                raise AOWriteFailed("AO write refused")
+            super().write_command(volts)
+
+        def start(self):
+            super().start()
+            self.bench.pressure_bar = 0.5  # left by a run: the vent exhausts it
+
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(Refusing(c)) or backends[-1])
+    notes = []
+    if refusals == 3:
+        with pytest.raises(BenchError, match="AO write refused"):
+            procedures.vent(config, notify=notes.append)  # the command line: VENT BY HAND
+    else:
+        assert procedures.vent(config, notify=notes.append)["vented"]
+        assert backends[0].bench.pressure_bar < config.safety.vent_below_bar  # the truth
+    assert refused == [0.0] * refusals
+    assert notes == ["vent command failed (AOWriteFailed: AO write refused), tried again"] * (
+        min(refusals, 2))
 
 
 def test_mkm_vent_killed_during_its_check_leaves_the_bench_marked(config, monkeypatch):

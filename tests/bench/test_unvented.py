@@ -45,6 +45,28 @@ def test_process_identity_of_this_process_is_alive():
     assert not ProcessIdentity(me.pid, "another-host", me.started_unix_s).alive()
 
 
+@pytest.mark.parametrize("boot_moved_s, start_moved_s, alive", [
+    (3600.0, 3600.0, True),  # the clock set an hour on, Linux: start times move with the boot
+    (-30.0, -30.0, True),  # set back 30 s
+    (3600.0, 0.0, True),  # Windows: the start time it stamped stays
+    (0.0, 100.0, False),  # the pid reused by a process started later
+    (86400.0, 5000.0, False),  # rebooted a day later, the pid reused at another uptime
+])
+def test_a_live_process_stays_alive_when_the_clock_is_set(monkeypatch, boot_moved_s,
+                                                          start_moved_s, alive):
+    # the system clock set while a run records (an NTP step, a virtual machine resumed): the
+    # boot time psutil gives moved, so the live run was called rebooted-since, dead: its folder
+    # loaded as `incomplete`, "stopped without closing its record (killed or crashed)"
+    import psutil
+
+    me = ProcessIdentity.current()
+    boot_time, create_time = psutil.boot_time, psutil.Process.create_time
+    monkeypatch.setattr(psutil, "boot_time", lambda: boot_time() + boot_moved_s)
+    monkeypatch.setattr(psutil.Process, "create_time",
+                        lambda self: create_time(self) + start_moved_s)
+    assert me.alive() is alive
+
+
 def test_a_run_whose_vent_was_not_verified_is_said_so_not_unvented(config, tmp_path):
     # stuck at 0.5 bar from 4 s: the follow interlock vents, the monitor still reads 0.5 bar;
     # the marker stays, last commanded 0 bar, and said "ended without venting ... last
