@@ -875,12 +875,19 @@ def _named_choice(r: _Run, names: dict, tolerance: float) -> AutoPick | None:
     """:func:`_auto_choice` under the report's name of the model it picks, where it is one of
     the report's (the practical range's surrogate answering as ``surrogate`` included)."""
     choice = _auto_choice(r, tolerance)
-    if choice is None or choice.name in {names[s.text] for s in r.specs}:
+    shown = {names[s.text] for s in r.specs}
+    if choice is None or choice.name in shown:
         return choice
     match = next((s for s in r.specs
                   if _same_model(choice.spec, r.in_place.get(s.text, s.text))), None)
-    return choice if match is None else AutoPick(choice.spec, names[match.text],
-                                                 choice.bound_pct, choice.explanation)
+    if match is not None:
+        return AutoPick(choice.spec, names[match.text], choice.bound_pct, choice.explanation)
+    if any(name.startswith(f"{choice.name}, ") for name in shown):
+        # another of its kind is the report's (`Surrogate, path=...`, a user's own): auto's
+        # is named by its spec, not taken for that one
+        return AutoPick(choice.spec, f"{choice.name} ({choice.spec})", choice.bound_pct,
+                        choice.explanation)
+    return choice
 
 
 def _same_model(a: str, b: str) -> bool:

@@ -717,3 +717,26 @@ def test_a_report_replaced_by_one_of_fewer_runs_leaves_none_of_its_files(runs, t
     assert {p.name for p in out.iterdir()} == written | {"notes.txt"}
     assert not any(name.startswith("run2") for name in written)
     assert (out / "notes.txt").read_text() == "the lab's own file"
+
+
+def test_auto_s_default_surrogate_is_not_taken_for_a_users_own(monkeypatch):
+    """A report of a user's own surrogate (`surrogate:path=DIR`, 'Surrogate, path=DIR') said
+    'auto at 2 % picks Surrogate instead ... (Surrogate is not among this report's models)',
+    though a Surrogate row stood in its table: auto's default surrogate is named by its spec
+    there now."""
+    from types import SimpleNamespace
+
+    import mkm.report as report
+    from mkm.verdict import AutoPick
+
+    monkeypatch.setattr(report, "_auto_choice", lambda r, tolerance: AutoPick(
+        "surrogate", "Surrogate", 0.23, "the cheapest model whose error bound ..."))
+    specs = [parse_spec("thickwall"), parse_spec("surrogate:path=mine")]
+    names = {"thickwall": "Thick-wall (Klute-Hannaford)",
+             "surrogate:path=mine": "Surrogate, path=mine"}
+    run = SimpleNamespace(specs=specs, in_place={})
+    assert report._named_choice(run, names, 0.02).name == "Surrogate (surrogate)"
+    # with no surrogate of its own in the report, the plain name
+    run = SimpleNamespace(specs=specs[:1], in_place={})
+    assert report._named_choice(run, {"thickwall": names["thickwall"]}, 0.02).name == \
+        "Surrogate"
