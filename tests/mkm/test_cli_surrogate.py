@@ -125,6 +125,26 @@ def test_predict_at_an_untrained_length_is_refused(thickwall_dataset, tmp_path, 
         spec.build(L0_mm=150.0)
 
 
+def test_a_braid_angle_refused_names_the_calibration_it_came_from(thickwall_dataset, tmp_path,
+                                                                    mkm_run):
+    """A surrogate trained at one braid angle, asked with --calibration of an identified muscle
+    (theta0 32.9904 deg, the fixture's 32.992), said 'theta0_deg=32.9904 (the default)
+    refused', a value the user never saw as a default: it names the calibration now."""
+    model = tmp_path / "physics"
+    code, _, err = mkm_run(["surrogate", "train", "--dataset", str(thickwall_dataset), "--kind",
+                            "physics", "--splits", "0", "--out", str(model), "--no-progress"])
+    assert code == 0, err
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"axisym": {"theta0_deg": 32.9904}}), encoding="utf-8")
+    code, out, err = mkm_run(["surrogate", "predict", "--model", str(model), "--D0", "35",
+                              "--t0", "2.5", "--eps", "5%", "--calibration", str(lab)])
+    trained = calibrated("axisym")["theta0_deg"]
+    assert code == 2 and out == ""
+    assert err.startswith(f"mkm surrogate predict: error: surrogate-physics was trained at "
+                          f"theta0_deg={trained:g} only: theta0_deg=32.9904 (the default of the "
+                          f"calibration {lab}) refused"), err
+
+
 @pytest.mark.slow  # FE sweeps of a design and trains on them
 def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
     # Two muscles of the space-filling design at the coarse mesh (FE ~0.3 s each), then the
