@@ -538,14 +538,8 @@ def _calibration_of_another_muscle(runs: list[_Run]) -> str | None:
     identified muscle was identified on, or None: its braid angle and rubber are that muscle's,
     so every calibrated model predicts these runs as that muscle's."""
     calibration = runs[0].calibration if runs else None
-    muscles = {(m["D0_mm"], m["t0_mm"]): m.get("id", "")
-               for m in (r.get("muscle") or {} for r in _identified_runs(calibration))
-               if "D0_mm" in m and "t0_mm" in m}
-    if not muscles:
-        return None
-    others = [r for r in runs if not any(
-        math.isclose(r.muscle.D0_mm, D0, rel_tol=1e-3) and
-        math.isclose(r.muscle.t0_mm, t0, rel_tol=1e-3) for D0, t0 in muscles)]
+    muscles = _identified_muscles(calibration)
+    others = [r for r in runs if not _identified_on_its_muscle(r)]
     if not others:
         return None
     which = ", ".join(f"{r.k} ({r.muscle.id or 'no id'}, D0 {r.muscle.D0_mm:g} mm, t0 "
@@ -557,6 +551,23 @@ def _calibration_of_another_muscle(runs: list[_Run]) -> str | None:
             "angle and rubber are that muscle's, so every calibrated model predicts "
             f"{'these runs' if len(others) > 1 else 'this run'} as that muscle's. Identify "
             "this muscle's own (mkm identify) or leave --calibration out.")
+
+
+def _identified_muscles(calibration) -> dict[tuple[float, float], str]:
+    """The muscles (D0, t0) -> id the calibration's identification was made on; empty for a
+    calibration without that record."""
+    return {(m["D0_mm"], m["t0_mm"]): m.get("id", "")
+            for m in (r.get("muscle") or {} for r in _identified_runs(calibration))
+            if "D0_mm" in m and "t0_mm" in m}
+
+
+def _identified_on_its_muscle(r: _Run) -> bool:
+    """Whether the run's muscle (D0, t0) is one the calibration was identified on (True where
+    the calibration records none)."""
+    muscles = _identified_muscles(r.calibration)
+    return not muscles or any(math.isclose(r.muscle.D0_mm, D0, rel_tol=1e-3) and
+                              math.isclose(r.muscle.t0_mm, t0, rel_tol=1e-3)
+                              for D0, t0 in muscles)
 
 
 def _overlay_section(runs: list[_Run], out: Path, names: dict, colours: dict) -> str:
@@ -873,12 +884,19 @@ def _named_choice(r: _Run, names: dict, tolerance: float) -> AutoPick | None:
     """:func:`_auto_choice` under the report's name of the model it picks, where it is one of
     the report's (the practical range's surrogate answering as ``surrogate`` included)."""
     choice = _auto_choice(r, tolerance)
-    if choice is None or choice.name in {names[s.text] for s in r.specs}:
+    shown = {names[s.text] for s in r.specs}
+    if choice is None or choice.name in shown:
         return choice
     match = next((s for s in r.specs
                   if _same_model(choice.spec, r.in_place.get(s.text, s.text))), None)
-    return choice if match is None else AutoPick(choice.spec, names[match.text],
-                                                 choice.bound_pct, choice.explanation)
+    if match is not None:
+        return AutoPick(choice.spec, names[match.text], choice.bound_pct, choice.explanation)
+    if any(name.startswith(f"{choice.name}, ") for name in shown):
+        # another of its kind is the report's (`Surrogate, path=...`, a user's own): auto's
+        # is named by its spec, not taken for that one
+        return AutoPick(choice.spec, f"{choice.name} ({choice.spec})", choice.bound_pct,
+                        choice.explanation)
+    return choice
 
 
 def _same_model(a: str, b: str) -> bool:
@@ -935,8 +953,11 @@ def _auto_pick(r: _Run, names: dict, tolerance: float | None) -> tuple[AutoPick 
 
 def _advice_arguments(r: _Run, runs: list[_Run]) -> tuple[str, list[dict], list[str]]:
     """The run, the calibration's runs and the muscle's runs at hand, as
-    :func:`mkm.verdict.muscle_advice` and :func:`mkm.verdict.advice_command` take them."""
-    return (str(r.run.path), _identified_runs(r.calibration),
+    :func:`mkm.verdict.muscle_advice` and :func:`mkm.verdict.advice_command` take them; no
+    calibration's runs for a run of another muscle (identify refuses two tubes at once: this
+    muscle is identified from its own runs)."""
+    identified = _identified_runs(r.calibration) if _identified_on_its_muscle(r) else []
+    return (str(r.run.path), identified,
             [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)])
 
 

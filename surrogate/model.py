@@ -172,7 +172,10 @@ class SurrogateForceModel(ForceModel):
             recorded = self.fixed.get(name)
             if recorded is not None and not np.isclose(value, recorded, rtol=SAME_VALUE_RTOL,
                                                        atol=0.0):
-                source = "" if self._given.get(name) is not None else " (the default)"
+                source = ("" if self._given.get(name) is not None else
+                          f" (the default of the calibration {self.calibration.path})"
+                          if self.calibration is not None and not self.calibration.is_shipped
+                          else " (the default)")
                 raise ValueError(f"{self.name} was trained at {name}={recorded:g} only: "
                                  f"{name}={value:g}{source} refused; give {name}={recorded:g}, "
                                  f"or use a surrogate trained on a design that varies {name} "

@@ -42,7 +42,9 @@ def evaluate_offgrid(model: SurrogateForceModel, n_muscles: int = 12, seed: int 
 
     Returns ``(points, summary)``: one row per point (inputs, ``force_fe_N``, ``force_N``,
     ``force_std_N``, ``err_pct``, ``valid``) and the summary (seed, FE budget, worst and median
-    per-muscle largest |Err%|, pooled RMSE, coverage, the out-of-box check, provenance).
+    per-muscle largest |Err%|, pooled RMSE, coverage, the out-of-box check, provenance): the
+    errors and the coverage over the points the model answers (``valid``), counted in
+    ``valid_points``.
     """
     if int(n_muscles) != n_muscles or n_muscles < 1:
         raise ValueError(f"--muscles {n_muscles!r} is invalid: expected an FE budget of at "
@@ -68,18 +70,23 @@ def evaluate_offgrid(model: SurrogateForceModel, n_muscles: int = 12, seed: int 
         points["force_N"] = prediction.force_N
         points["force_std_N"] = prediction.extras.get("force_std_N", np.full(len(sweep),
                                                                              np.nan))
-        points["valid"] = prediction.valid
+        points["valid"] = ok = np.ravel(prediction.valid)
         top = points["force_fe_N"].max()
-        points["err_pct"] = (equation7_err_pct(points["force_fe_N"], points["force_N"])
+        # a point the model flags invalid has no error: its number is one the model disowns
+        points["err_pct"] = (np.where(ok, equation7_err_pct(points["force_fe_N"],
+                                                            points["force_N"]), np.nan)
                              if top > 0 else np.nan)
         rows.append(points)
+        answered = points[ok]
         per_muscle.append({"muscle": k, "fe_failed": False,
                            "max_abs_err_pct": float(np.nanmax(np.abs(points["err_pct"])))
-                           if top > 0 else float("nan"),
-                           "max_force_N": float(top),
-                           "rmse_N": rmse(points["force_fe_N"], points["force_N"])})
+                           if top > 0 and ok.any() else float("nan"),
+                           "max_force_N": float(top), "valid_points": int(ok.sum()),
+                           "rmse_N": rmse(answered["force_fe_N"], answered["force_N"])
+                           if ok.any() else float("nan")})
     points = pd.concat(rows, ignore_index=True)
-    errors = points["force_fe_N"] - points["force_N"]
+    answered = points[points["valid"]]
+    errors = answered["force_fe_N"] - answered["force_N"]
     per = pd.DataFrame(per_muscle)
     summary = {
         "seed": seed, "fe_budget_muscles": int(n_muscles), "mesh": mesh,
@@ -87,14 +94,14 @@ def evaluate_offgrid(model: SurrogateForceModel, n_muscles: int = 12, seed: int 
         "fe_failed_muscles": int(per["fe_failed"].sum()),
         "worst_max_abs_err_pct": float(per["max_abs_err_pct"].max()),
         "median_max_abs_err_pct": float(per["max_abs_err_pct"].median()),
-        "pooled_rmse_N": rmse(points["force_fe_N"], points["force_N"]),
-        "all_valid": bool(points["valid"].all()),
+        "pooled_rmse_N": rmse(answered["force_fe_N"], answered["force_N"]),
+        "all_valid": bool(points["valid"].all()), "valid_points": len(answered),
         "per_muscle": per.to_dict(orient="records"),
         "model": model.name, "model_params": model.params(), **provenance()}
-    if points["force_std_N"].notna().all():
-        summary["within_1std"] = coverage(errors, points["force_std_N"], 1.0)
-        summary["within_2std"] = coverage(errors, points["force_std_N"], 2.0)
-        summary["within_3std"] = coverage(errors, points["force_std_N"], 3.0)
+    if answered["force_std_N"].notna().all():
+        summary["within_1std"] = coverage(errors, answered["force_std_N"], 1.0)
+        summary["within_2std"] = coverage(errors, answered["force_std_N"], 2.0)
+        summary["within_3std"] = coverage(errors, answered["force_std_N"], 3.0)
     summary["outside_box"] = outside_box_check(model, muscles.iloc[0])
     return points, summary
 

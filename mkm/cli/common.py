@@ -46,6 +46,12 @@ def error_line(prog: str, message) -> str:
     found = re.match(r"argument (\S+?)(?:/\S+)?: (.*)", message, re.DOTALL)
     if found and found.group(2).startswith(found.group(1)):
         message = found.group(2)
+    # argparse's own type check ('argument --top: invalid int value: 'x''): said as ours
+    typed = re.fullmatch(r"argument (\S+?)(?:/\S+)?: invalid (int|float) value: (.*)", message,
+                         re.DOTALL)
+    if typed:
+        expected = "a whole number" if typed.group(2) == "int" else "a number"
+        message = f"{typed.group(1)} {typed.group(3)}: expected {expected}"
     return f"{prog}: error: {message}"
 
 

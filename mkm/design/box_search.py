@@ -602,21 +602,24 @@ def geometry_text(row) -> str:
     return text + f", L0 = {row['L0_mm']:.4g} mm, theta0 = {row['theta0_deg']:.4g} deg"
 
 
-def outside_practical_range(best, requirements) -> list[str]:
-    """What of the design ``best`` (a row) and the requirements it is held to lies outside
+def outside_practical_range(best, requirements,
+                            calibration: Calibration | None = None) -> list[str]:
+    """What of the design ``best`` (a row: its rubber by name, the calibration's where it says
+    ``calibrated``) and the requirements it is held to lies outside
     :data:`~mkm.fem.limits.PRACTICAL_RANGE`, one phrase each; empty inside."""
     geometry = {k: float(best[k]) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg")}
-    found = PRACTICAL_RANGE.violations(**geometry)
+    C10, C01 = _constants(str(best["rubber"]), calibration)
+    found = PRACTICAL_RANGE.violations(**geometry, C10_MPa=C10, C01_MPa=C01)
     for req in requirements:
         found += PRACTICAL_RANGE.violations(pressure_bar=req.pressure_bar, eps=req.eps,
                                             theta0_deg=geometry["theta0_deg"])
     return list(dict.fromkeys(found))
 
 
-def _beyond_practical_range(row, requirements) -> str:
+def _beyond_practical_range(row, requirements, calibration: Calibration | None = None) -> str:
     """The clause an infeasible search's message ends with when ``row`` lies outside the
     practical range (where no model's force is validated), else empty."""
-    outside = outside_practical_range(row, requirements)
+    outside = outside_practical_range(row, requirements, calibration)
     return (f"; it lies outside the practical range the models are validated over "
             f"({'; '.join(outside)}): its forces are an extrapolation (`mkm models` states "
             "the range)" if outside else "")
@@ -643,7 +646,7 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
                 f"{constraints.max_outer_diameter_mm:g}: the narrowest that does, "
                 f"{geometry_text(best)}, is {best['outer_diameter_mm']:.1f} mm wide at "
                 f"{result.working_pressure_bar:g} bar"
-                + _beyond_practical_range(best, result.requirements))
+                + _beyond_practical_range(best, result.requirements, result.calibration))
     pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
     closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]
     parts = []
@@ -661,7 +664,8 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
                 f"{', '.join(edges)}; a larger box might hold a design that meets them")
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
-            + "; ".join(parts) + edge + _beyond_practical_range(closest, result.requirements))
+            + "; ".join(parts) + edge
+            + _beyond_practical_range(closest, result.requirements, result.calibration))
 
 
 def pick(feasible: pd.DataFrame, top: int, box: dict) -> pd.DataFrame:

@@ -114,7 +114,8 @@ class DesignResult:
                              f"% of a required force ({s.uncertainty}): the chosen design pulls "
                              "about that much more than required (its FE margin); a surrogate "
                              "with a predictive std (the default) searches closer")
-        if best is not None and (outside := outside_practical_range(best, s.requirements)):
+        if best is not None and (outside := outside_practical_range(best, s.requirements,
+                                                                       s.calibration)):
             notes.append(f"the chosen design lies outside the practical range every model is "
                          f"validated over ({'; '.join(outside)}): its FE verification is an "
                          "extrapolation (`mkm models` states the range)")

@@ -1253,3 +1253,16 @@ def test_a_group_typed_without_its_command_names_its_commands(group, expected, m
     code, out, err = mkm_run([group])
     assert code == 2 and out == ""
     assert err == f"mkm {group}: error: the following arguments are required: {expected}\n"
+
+
+@pytest.mark.parametrize("argv, said", [
+    (["design", "--require", "300N@2.5bar,eps=0.1", "--top", "x"], "--top 'x'"),
+    (["study", "--mesh-muscles", "1e3"], "--mesh-muscles '1e3'"),
+    (["surrogate", "train", "--splits", "x"], "--splits 'x'"),
+])
+def test_a_whole_number_option_given_another_value_says_what_was_expected(argv, said, mkm_run):
+    # argparse's own words were shown: "argument --top: invalid int value: 'x'"
+    code, out, err = mkm_run(argv)
+    assert code == 2 and out == ""
+    assert err == f"mkm {' '.join(argv[:2 if argv[0] == 'surrogate' else 1])}: error: {said}: " \
+                  "expected a whole number\n"

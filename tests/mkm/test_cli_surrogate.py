@@ -174,6 +174,26 @@ def test_predict_at_an_untrained_length_is_refused(thickwall_dataset, tmp_path, 
         spec.build(L0_mm=150.0)
 
 
+def test_a_braid_angle_refused_names_the_calibration_it_came_from(thickwall_dataset, tmp_path,
+                                                                    mkm_run):
+    """A surrogate trained at one braid angle, asked with --calibration of an identified muscle
+    (theta0 32.9904 deg, the fixture's 32.992), said 'theta0_deg=32.9904 (the default)
+    refused', a value the user never saw as a default: it names the calibration now."""
+    model = tmp_path / "physics"
+    code, _, err = mkm_run(["surrogate", "train", "--dataset", str(thickwall_dataset), "--kind",
+                            "physics", "--splits", "0", "--out", str(model), "--no-progress"])
+    assert code == 0, err
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"axisym": {"theta0_deg": 32.9904}}), encoding="utf-8")
+    code, out, err = mkm_run(["surrogate", "predict", "--model", str(model), "--D0", "35",
+                              "--t0", "2.5", "--eps", "5%", "--calibration", str(lab)])
+    trained = calibrated("axisym")["theta0_deg"]
+    assert code == 2 and out == ""
+    assert err.startswith(f"mkm surrogate predict: error: surrogate-physics was trained at "
+                          f"theta0_deg={trained:g} only: theta0_deg=32.9904 (the default of the "
+                          f"calibration {lab}) refused"), err
+
+
 @pytest.mark.slow  # FE sweeps of a design and trains on them
 def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
     # Two muscles of the space-filling design at the coarse mesh (FE ~0.3 s each), then the
@@ -334,3 +354,38 @@ def test_training_on_a_small_box_does_not_warn_about_the_test_muscles(thickwall_
     metrics = json.loads((out / "metadata.json").read_text(encoding="utf-8"))["metrics"]
     answered = {row["muscle"]: row["valid_points"] for row in metrics["test_muscles"]}
     assert answered["I"] == "11/11" and answered["III"] == "0/11"
+
+
+def test_the_off_grid_evaluation_scores_only_the_points_a_model_answers(thickwall_dataset,
+                                                                        tmp_path, monkeypatch):
+    """`mkm surrogate evaluate` scored every point, those the model flags valid=False (its
+    numbers there disowned) among them, as `mkm surrogate test` did: now its errors, RMSE and
+    coverage are over the answered points, counted in valid_points."""
+    import numpy as np
+
+    from mkm.surrogate.model import SurrogateForceModel
+    from mkm.surrogate.offgrid import evaluate_offgrid
+    from mkm.surrogate.train import train_surrogate
+
+    model = train_surrogate("physics", thickwall_dataset, splits=0)
+    run = dict(n_muscles=2, seed=3, mesh="coarse", workers=1, cache_dir=tmp_path,
+               progress=False)
+    _, honest = evaluate_offgrid(model, **run)
+    real_predict = SurrogateForceModel.predict
+
+    def disowning(self, *args):  # the first point of each sweep: 1000 N off, flagged invalid
+        import dataclasses
+
+        pred = real_predict(self, *args)
+        force, valid = pred.force_N.copy(), pred.valid.copy()
+        force.flat[0] += 1000.0
+        valid.flat[0] = False
+        return dataclasses.replace(pred, force_N=force, valid=valid)
+
+    monkeypatch.setattr(SurrogateForceModel, "predict", disowning)
+    points, summary = evaluate_offgrid(model, **run)
+    first = points.groupby("muscle").head(1)
+    assert first["err_pct"].isna().all() and not first["valid"].any()
+    assert summary["valid_points"] == len(points) - 2
+    assert summary["worst_max_abs_err_pct"] <= honest["worst_max_abs_err_pct"] + 1e-9
+    assert summary["pooled_rmse_N"] < 1000.0 / np.sqrt(len(points))

@@ -877,3 +877,23 @@ def test_a_design_on_the_practical_ranges_limit_says_no_model_is_validated_beyon
                                       "theta0 = 15 deg, its lower limit"]
     assert box_edges(row, box) == []  # no larger box to search
     assert range_limits({**row, "t0_mm": 0.6, "theta0_deg": 20.0}, box) == []
+
+
+def test_a_calibrated_rubber_outside_the_practical_range_is_said(tmp_path):
+    """A muscle identified as softer than any rubber of the practical range (an imported table
+    fitted to 0.2 x Silastic S, C10 0.0139 MPa) gave a design with no word that its rubber lies
+    outside the range every model is validated over, which `mkm fem solve` warns of for the
+    same calibration; the chosen design's note names it now."""
+    from mkm.design.box_search import outside_practical_range
+    from mkm.fem.calibration import Calibration
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"axisym": {"theta0_deg": 37.8, "C10_MPa": 0.01388,
+                                          "C01_MPa": 0.01256}}), encoding="utf-8")
+    row = {"D0_mm": 34.46, "t0_mm": 0.5, "L0_mm": 282.0, "theta0_deg": 37.8,
+           "rubber": "calibrated"}
+    req = [parse_requirement("300N@2.5bar,eps=0.1")]
+    assert outside_practical_range(row, req, Calibration.load(lab)) == [
+        "C10_MPa=0.01388 outside [0.03, 0.6]"]
+    assert outside_practical_range({**row, "rubber": "silastic_s"}, req,
+                                   Calibration.load(lab)) == []

@@ -538,6 +538,40 @@ def test_a_calibration_identified_on_another_muscle_is_said(tmp_path):
     assert _calibration_of_another_muscle([shipped]) is None
 
 
+def test_a_run_of_another_muscle_is_advised_its_own_identification(tmp_path):
+    """The verdict of a run whose muscle the report's calibration was not identified on (a
+    DMSP-20 table beside the prototype's calibration) advised `mkm identify` of the
+    calibration's runs with this one among them, which identify refuses ('runs ... are of
+    different muscles'); it names this muscle's own runs now, as the note above it says."""
+    from types import SimpleNamespace
+
+    from mkm.fem.calibration import Calibration
+    from mkm.fem.muscle import Muscle
+    from mkm.report import _advice_arguments
+    from mkm.verdict import advice_command
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"axisym": {"theta0_deg": 33.0, "identified": {"runs": [
+        {"run": "proto-eps0", "path": "runs/proto-eps0",
+         "muscle": {"id": "paper-prototype", "D0_mm": 30.0, "t0_mm": 3.0, "L0_mm": 282.0,
+                    "eps": 0.0}}]}}}), encoding="utf-8")
+    calibration = Calibration.load(lab)
+
+    def run(k, path, muscle):
+        return SimpleNamespace(k=k, muscle=muscle, calibration=calibration,
+                               run=SimpleNamespace(path=Path(path)))
+
+    dmsp = [run(1, "runs/dmsp-a", Muscle(20.0, 1.8, id="dmsp-20")),
+            run(2, "runs/dmsp-b", Muscle(20.0, 1.8, id="dmsp-20"))]
+    path, identified, muscle_runs = _advice_arguments(dmsp[0], dmsp)
+    assert identified == []
+    assert advice_command(path, identified, muscle_runs) == (
+        f"mkm identify {Path('runs/dmsp-a')} {Path('runs/dmsp-b')}")
+    # a run of the calibration's own muscle is still advised with the calibration's runs
+    proto = run(3, "runs/proto-eps12", Muscle(30.0, 3.0, id="paper-prototype"))
+    assert _advice_arguments(proto, [proto])[1][0]["run"] == "proto-eps0"
+
+
 @pytest.mark.slow  # the default and the practical range's surrogates
 def test_a_festo_class_muscle_gets_the_practical_range_surrogate_as_surrogate(tmp_path):
     """A 10 mm muscle at up to 6 bar lies outside the default surrogate's box: the practical
@@ -727,3 +761,26 @@ def test_a_report_replaced_by_one_of_fewer_runs_leaves_none_of_its_files(runs, t
     assert {p.name for p in out.iterdir()} == written | {"notes.txt"}
     assert not any(name.startswith("run2") for name in written)
     assert (out / "notes.txt").read_text() == "the lab's own file"
+
+
+def test_auto_s_default_surrogate_is_not_taken_for_a_users_own(monkeypatch):
+    """A report of a user's own surrogate (`surrogate:path=DIR`, 'Surrogate, path=DIR') said
+    'auto at 2 % picks Surrogate instead ... (Surrogate is not among this report's models)',
+    though a Surrogate row stood in its table: auto's default surrogate is named by its spec
+    there now."""
+    from types import SimpleNamespace
+
+    import mkm.report as report
+    from mkm.verdict import AutoPick
+
+    monkeypatch.setattr(report, "_auto_choice", lambda r, tolerance: AutoPick(
+        "surrogate", "Surrogate", 0.23, "the cheapest model whose error bound ..."))
+    specs = [parse_spec("thickwall"), parse_spec("surrogate:path=mine")]
+    names = {"thickwall": "Thick-wall (Klute-Hannaford)",
+             "surrogate:path=mine": "Surrogate, path=mine"}
+    run = SimpleNamespace(specs=specs, in_place={})
+    assert report._named_choice(run, names, 0.02).name == "Surrogate (surrogate)"
+    # with no surrogate of its own in the report, the plain name
+    run = SimpleNamespace(specs=specs[:1], in_place={})
+    assert report._named_choice(run, {"thickwall": names["thickwall"]}, 0.02).name == \
+        "Surrogate"

@@ -78,7 +78,8 @@ def test_default_angle_other_than_recorded_is_refused_at_predict(physics, tmp_pa
 
     other = tmp_path / "calibration.json"
     other.write_text('{"axisym": {"theta0_deg": 30.0}}')
-    with pytest.raises(ValueError, match=r"theta0_deg=30 \(the default\) refused"):
+    with pytest.raises(ValueError, match=r"theta0_deg=30 \(the default of the calibration "
+                                         r".*calibration\.json\) refused"):
         physics.with_parameters(Calibration.load(other)).predict(1.0, 40.0, 3.0, 0.1)
 
 
