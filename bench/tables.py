@@ -599,16 +599,19 @@ def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
 
 def _labview_header(header: list[str], titles: list[list]) -> list[str]:
     """A LabVIEW measurement file's column names with what its channel header says: each
-    channel's unit (``Y_Unit_Label``) after its name, and its one x column (``X_Value``) named
-    ``Time [s]`` where the channels' ``X_Dimension`` is time; any other header as it is."""
+    channel's unit (``Y_Unit_Label``, in the channels' order: an x column before each, as
+    ``X_Columns Multi`` writes them, takes none) after its name, and its first x column
+    (``X_Value``) named ``Time [s]`` where the channels' ``X_Dimension`` is time; any other
+    header as it is."""
     block = {str(row[0]).strip(): [str(c).strip() for c in row[1:]] for row in titles if row}
     if "Y_Unit_Label" not in block or not header or header[0] != "X_Value":
         return header
     out = list(header)
     if {d.lower() for d in block.get("X_Dimension", []) if d} == {"time"}:
         out[0] = "Time [s]"
-    for k, unit in enumerate(block["Y_Unit_Label"], start=1):
-        if k < len(out) and out[k] and unit and parse_header(out[k])[1] is None:
+    channels = [k for k in range(1, len(out)) if out[k] != "X_Value"]
+    for k, unit in zip(channels, block["Y_Unit_Label"], strict=False):
+        if out[k] and unit and parse_header(out[k])[1] is None:
             out[k] = f"{out[k]} [{unit}]"
     return out
 

@@ -530,6 +530,20 @@ def test_a_labview_x_column_of_another_dimension_and_a_named_unit_are_as_written
     assert table.header[:2] == ["X_Value", "Druck [bar]"] and "time" not in found
 
 
+def test_a_labview_file_with_an_x_column_per_channel_gives_each_channel_its_unit(tmp_path):
+    # X_Columns Multi: an X_Value before each channel. Y_Unit_Label's units went to the columns
+    # by position: the second X_Value took 'kN' and Kraft none, its kN read as N, unsaid
+    text = (LABVIEW_LVM.replace("X_Value\tDruck\tKraft\tComment",
+                                "X_Value\tDruck\tX_Value\tKraft\tComment")
+            .replace("0.000000\t0.000000\t0.035000", "0.000000\t0.000000\t0.000000\t0.035000")
+            .replace("0.100000\t250.000000\t2.730000", "0.100000\t250.000000\t0.100000\t2.730000")
+            .replace("0.200000\t800.000000\t8.660000", "0.200000\t800.000000\t0.200000\t8.660000"))
+    table, found = _one(tmp_path, text, "multi.lvm")
+    assert table.header[:4] == ["Time [s]", "Druck [kPa]", "X_Value", "Kraft [kN]"]
+    np.testing.assert_allclose(column_values(table, found["force"]), [35.0, 2730.0, 8660.0])
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+
+
 TDMS_CSV = ("Root Name,bench 3\nRoot Author,jdoe\nGroup Name,Untitled\n"
             "Channel Name,Time,Pressure,Load\nunit_string,s,MPa,kN\nwf_increment,0.1,0.1,0.1\n"
             "Time,Pressure,Load\n0.0,0.0,0.012\n0.1,0.25,0.45\n0.2,0.6,1.2\n")
