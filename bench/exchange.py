@@ -814,7 +814,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if back.size:
             raise ValueError(backwards_message(
                 f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')}",
-                found["time"].header, time_s[back[0]] - time_s[back[0] + 1]))
+                found["time"].header, time_s[back[0]] - time_s[back[0] + 1],
+                newest_first=back.size == time_s.size - 1))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
     record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)

@@ -1436,9 +1436,15 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
-def backwards_message(where: str, header: str, jump_s: float) -> str:
+def backwards_message(where: str, header: str, jump_s: float,
+                      newest_first: bool = False) -> str:
     """The one line of a time column that goes back by ``jump_s`` [s] at ``where`` (a table
-    and its cell); an hour back is named as a clock put back (summer time's end)."""
+    and its cell); an hour back is named as a clock put back (summer time's end), and a
+    column whose every row goes back (``newest_first``) as a logger's newest-first export."""
+    if newest_first:
+        return (f"{where} (column {header!r}): every row is earlier than the one above it, the "
+                "newest first, as some loggers export: expected the samples oldest first; sort "
+                "the file by its time, ascending")
     dst = (" by an hour: a local clock put back at the end of summer time? give the times with "
            "their zone (+02:00, +01:00)" if abs(jump_s - 3600.0) <= 60.0 else
            f" by {jump_s:.4g} s")
@@ -1500,7 +1506,8 @@ def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
         column = other_found["time"]
         raise ValueError(backwards_message(
             f"{other.name}, cell {other.cell(int(back[0]) + 1, column.index)}", column.header,
-            other_times[back[0]] - other_times[back[0] + 1]))
+            other_times[back[0]] - other_times[back[0] + 1],
+            newest_first=back.size == other_times.size - 1))
     origins = (_time_origin(table, found["time"]), _time_origin(other, other_found["time"]))
     if None not in origins and origins[0][0] == origins[1][0] == "date-time":
         firsts = [str(t.rows[0][f["time"].index]).strip() if t.rows else ""

@@ -1638,6 +1638,20 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
             "time order" in err) is not said
 
 
+def test_a_record_exported_newest_first_is_refused_saying_so(tmp_path, mkm_cli):
+    # a logger's export of its latest samples first: was "cell A3: the time goes backwards",
+    # as though one sample were out of place
+    t = np.arange(0.0, 20.0, 0.5)[::-1]
+    table = tmp_path / "newest_first.csv"
+    pd.DataFrame({"t [s]": t, "P [bar]": np.where(t > 5, 1.0, 0.0),
+                  "F [N]": 0.0}).to_csv(table, index=False)
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("newest_first.csv, cell A3 (column 't [s]'): every row is earlier than the one above "
+            "it, the newest first, as some loggers export: expected the samples oldest first; "
+            "sort the file by its time, ascending") in err
+
 @pytest.mark.parametrize("tau_s", [0.5, 2.0])
 def test_a_closing_rest_after_an_exponential_vent_is_zeroed_where_its_force_settled(
         tau_s, tmp_path, mkm_cli):
