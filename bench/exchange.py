@@ -909,6 +909,14 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         except ValueError as exc:  # beyond any gauge: a unit read as bar, as the note says
             raise ValueError(f"{exc}; {_other_pressure_units(top_bar, found['pressure'].unit)}"
                              ) from None
+    if (timed or record) and np.ptp(pressure) <= 2 * series.PLATEAU_TOLERANCE_BAR:
+        # a gauge's noise binned by pressure would make steps of nothing
+        what = "samples" if timed else "rows"
+        raise ValueError(f"{group.named}: the pressure never rises: its {pressure.size} {what} "
+                         f"read {pressure.min():.3g} to {pressure.max():.3g} bar, within "
+                         f"{2 * series.PLATEAU_TOLERANCE_BAR:g} bar of each other (a vented "
+                         f"gauge's noise): expected a record of the muscle pressurised; is "
+                         f"{found['pressure'].header!r} its pressure?")
     closing = closing_rows = None
     if timed or record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
         clock = time_s if timed else np.arange(pressure.size, dtype=float)

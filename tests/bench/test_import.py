@@ -1638,6 +1638,22 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
             "time order" in err) is not said
 
 
+def test_a_record_whose_pressure_never_rises_is_refused(tmp_path, mkm_cli):
+    # a minute logged vented (the test not run, or the wrong channel): its gauge's noise was
+    # binned into 132 steps of a ramp, a zero from 2 samples, unsaid
+    rng = np.random.default_rng(2)
+    t = np.arange(0.0, 60.0, 0.1)
+    table = tmp_path / "vented.csv"
+    pd.DataFrame({"Time [s]": t, "Pressure [bar]": rng.normal(0, 0.003, t.size),
+                  "Force [N]": 4.0 + rng.normal(0, 0.3, t.size)}).to_csv(table, index=False)
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("vented.csv: the pressure never rises: its 600 samples read 0 to 0.00" in err
+            and "within 0.06 bar of each other (a vented gauge's noise): expected a record of "
+            "the muscle pressurised; is 'Pressure [bar]' its pressure?" in err)
+    assert not (tmp_path / "runs").exists()
+
 def test_a_record_exported_newest_first_is_refused_saying_so(tmp_path, mkm_cli):
     # a logger's export of its latest samples first: was "cell A3: the time goes backwards",
     # as though one sample were out of place
