@@ -1254,9 +1254,13 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         number, unit = _number(cell, table.decimal)
         if number is None:
             formula = _formula(table, k, column.index) if cell == "" else None
+            again = str(cell).strip() == column.header.strip()
             why = (f"holds the formula {_shown(formula)} without a value saved: open and save "
                    "the workbook in Excel (or LibreOffice) to compute it, or export it as CSV"
-                   if formula else f"{_shown(cell)} is not a number")
+                   if formula else
+                   f"{_shown(cell)} is the header again, a second record in the file (a "
+                   "logger that appended another session): expected one header; split the "
+                   "file there and import each" if again else f"{_shown(cell)} is not a number")
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
                              f"{column.header!r}): {why}")
         if not math.isfinite(number):

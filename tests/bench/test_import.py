@@ -1654,6 +1654,21 @@ def test_a_record_whose_pressure_never_rises_is_refused(tmp_path, mkm_cli):
             "the muscle pressurised; is 'Pressure [bar]' its pressure?" in err)
     assert not (tmp_path / "runs").exists()
 
+def test_a_second_session_appended_under_its_own_header_is_named_as_such(tmp_path, mkm_cli):
+    # a logger that appends each session to one file, its header repeated: was "cell B42:
+    # 'Pressure [bar]' is not a number"
+    t = np.arange(0.0, 4.0, 0.1)
+    session = "".join(f"{a:.1f},{a / 2:.3f},{100 * a:.1f}\n" for a in t)
+    header = "Time [s],Pressure [bar],Force [N]\n"
+    table = tmp_path / "sessions.csv"
+    table.write_text(header + session + header + session)
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("sessions.csv, cell B42 (column 'Pressure [bar]'): 'Pressure [bar]' is the header "
+            "again, a second record in the file (a logger that appended another session): "
+            "expected one header; split the file there and import each") in err
+
 def test_a_record_exported_newest_first_is_refused_saying_so(tmp_path, mkm_cli):
     # a logger's export of its latest samples first: was "cell A3: the time goes backwards",
     # as though one sample were out of place
