@@ -713,6 +713,10 @@ def marked_gauge(unit: str | None) -> bool:
 _AREA_DIGIT = re.compile(r"(?<![A-Za-z])(mm|cm|m|in|ft)([23])(?![\w])")
 
 
+#: the kilopond within a unit (kp/cm²), as LAB_UNITS reads it alone
+_KILOPOND = re.compile(r"(?<![A-Za-z])kp(?![A-Za-z])", re.IGNORECASE)
+
+
 def parse_unit(text: str):
     """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
     case as written, then any case)."""
@@ -724,6 +728,7 @@ def parse_unit(text: str):
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
         return None
     text = _AREA_DIGIT.sub(r"\1**\2", text)  # kgf/cm2: pint reads no 'cm2'
+    text = _KILOPOND.sub("kgf", text)  # kp/cm²: pint's kp would be a kilopoise
     for case_sensitive in (True, False):
         try:
             return registry(case_sensitive).Unit(text)

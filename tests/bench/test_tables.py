@@ -169,9 +169,17 @@ def test_technical_atmospheres_and_inches_of_mercury(header, cells, bar_per_unit
 @pytest.mark.parametrize("header, bar_per_unit", [
     ("Druck [kgf/cm2]", AT_BAR), ("p (N/mm2)", 10.0), ("Pressure [lbf/in2]", PSI_BAR),
     ("Druck [kgf/cm²]", AT_BAR), ("p [N/mm^2]", 10.0),
+    # the kilopond per square centimetre of a German gauge: was "'kp/cm²' is not a unit of
+    # pressure" (kp alone read as kilopond, not within a unit)
+    ("Druck [kp/cm²]", AT_BAR), ("Druck [kp/cm2]", AT_BAR), ("Kraft [kp]", None),
 ])
 def test_an_area_written_with_its_exponent_as_a_digit(header, bar_per_unit, tmp_path):
     # a gauge's kgf/cm2: was "'kgf/cm2' is not a unit of pressure" (pint reads cm2 as no unit)
+    if bar_per_unit is None:  # kp alone, as before: a force
+        table, found = _one(tmp_path, f"P (bar);{header}\n1,5;2\n2,5;4\n")
+        np.testing.assert_allclose(column_values(table, found["force"]), [2 * 9.80665,
+                                                                         4 * 9.80665])
+        return
     table, found = _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
     np.testing.assert_allclose(column_values(table, found["pressure"]),
                                [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
