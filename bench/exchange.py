@@ -71,6 +71,7 @@ from mkm.bench.tables import (
     unread_time_columns,
     volts_header,
     without_blank_rows,
+    without_repeated_rows,
     without_summary_rows,
 )
 from mkm.core.ranges import parse_number
@@ -363,6 +364,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                 else "") + ")")
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
+        if "time" in found:  # a step table's rows may repeat a step; a record's are samples
+            table = without_repeated_rows(table, [found[r] for r in ("time", *REQUIRED_ROLES)])
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in taken_columns(found)])
         # without a time column every row is a step, or a record's rows are taken as evenly

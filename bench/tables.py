@@ -164,6 +164,8 @@ class RawTable:
     blanks_skipped: list[str] = field(default_factory=list)
     #: the first overload mark of each row :func:`without_blank_rows` left out (``C7 ('OVL')``)
     overloads_skipped: list[str] = field(default_factory=list)
+    #: the first cell of each row :func:`without_repeated_rows` left out (``A12``)
+    repeats_skipped: list[str] = field(default_factory=list)
     #: the cell naming the statistic of each row :func:`without_summary_rows` left out
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
@@ -186,6 +188,7 @@ class RawTable:
                 "decimal": self.decimal, "rows": len(self.rows),
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
                 "rows_skipped_for_an_overload": self.overloads_skipped,
+                "rows_skipped_as_repeats": self.repeats_skipped,
                 "summary_rows_skipped": self.summaries_skipped,
                 "footer_rows_skipped": self.footer_skipped,
                 **({"joined_by_time": self.joined} if self.joined else {})}
@@ -1688,6 +1691,24 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
                    overloads_skipped=[named(k) for k in over])
 
 
+def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
+    """``table`` without the rows that repeat the row above in every one of ``columns`` (its
+    time and readings: a logger that wrote a sample twice, or rows pasted twice), each named
+    in ``repeats_skipped`` (``A12``): counted twice, a sample would halve the standard errors
+    of its hold, not add a reading."""
+    indices = [p.index for c in columns for p in c.parts or (c,)]
+    rows = table.rows
+    skipped = [k for k in range(1, len(rows))
+               if all(str(rows[k][i]).strip() == str(rows[k - 1][i]).strip() for i in indices)]
+    if not skipped:
+        return table
+    gone = set(skipped)
+    keep = [k for k in range(len(rows)) if k not in gone]
+    return replace(table, rows=[rows[k] for k in keep],
+                   row_numbers=[table.row_numbers[k] for k in keep],
+                   repeats_skipped=[table.cell(k, indices[0]) for k in skipped])
+
+
 def _formula(table: RawTable, k: int, column: int) -> str | None:
     """The formula in a workbook cell read empty: openpyxl reads the value a spreadsheet saved
     with it, and a workbook written by a program other than a spreadsheet has none."""
@@ -1847,6 +1868,10 @@ class Recognition:
         if skipped := self.table.blanks_skipped:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))
+        if repeats := self.table.repeats_skipped:
+            extras.append(f"{len(repeats)} row(s) repeating the row above (its time and "
+                          "readings) skipped: " + ", ".join(repeats[:5])
+                          + (", ..." if len(repeats) > 5 else ""))
         if over := self.table.overloads_skipped:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")

@@ -1669,6 +1669,24 @@ def test_a_second_session_appended_under_its_own_header_is_named_as_such(tmp_pat
             "again, a second record in the file (a logger that appended another session): "
             "expected one header; split the file there and import each") in err
 
+def test_rows_written_twice_by_a_logger_are_counted_once_and_named(tmp_path, mkm_cli):
+    # a logger that wrote every sample twice: each hold counted twice its samples, its
+    # standard error a factor sqrt(2) too small, unsaid
+    rng = np.random.default_rng(5)
+    t = np.arange(0.0, 40.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 40], [0, 0, 1, 1, 2, 2, 0, 0])
+    rows = [f"{a:.1f},{b:.5f},{c:.4f}\n" for a, b, c in
+            zip(t, p, thickwall_N(p, 0.0) + rng.normal(0, 0.3, t.size), strict=True)]
+    once, twice = tmp_path / "once.csv", tmp_path / "twice.csv"
+    once.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(rows))
+    twice.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(r + r for r in rows))
+    (single,), _ = _import(mkm_cli, once, *MUSCLE, "--eps", "0")
+    (run,), err = _import(mkm_cli, twice, *MUSCLE, "--eps", "0")
+    assert ("400 row(s) repeating the row above (its time and readings) skipped: A3, A5, A7, A9, "
+            "A11, ...") in err
+    assert len(run.meta.imported_from["rows_skipped_as_repeats"]) == 400
+    pd.testing.assert_frame_equal(run.steps, single.steps)
+
 def test_a_record_exported_newest_first_is_refused_saying_so(tmp_path, mkm_cli):
     # a logger's export of its latest samples first: was "cell A3: the time goes backwards",
     # as though one sample were out of place
