@@ -1692,15 +1692,21 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
 
 
 def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
-    """``table`` without the rows that repeat the row above in every one of ``columns`` (its
-    time and readings: a logger that wrote a sample twice, or rows pasted twice), each named
-    in ``repeats_skipped`` (``A12``): counted twice, a sample would halve the standard errors
-    of its hold, not add a reading."""
+    """``table`` without the rows that repeat the row above in every one of ``columns``, the
+    time first (its time and readings: a logger that wrote a sample twice, or rows pasted
+    twice), each named in ``repeats_skipped`` (``A12``): counted twice, a sample would halve
+    the standard errors of its hold, not add a reading. Where some rows share their time with
+    the row above but not their readings (a clock coarser than the sampling, whole seconds at
+    10 Hz), alike rows may be samples of their own: none is skipped."""
     indices = [p.index for c in columns for p in c.parts or (c,)]
     rows = table.rows
-    skipped = [k for k in range(1, len(rows))
-               if all(str(rows[k][i]).strip() == str(rows[k - 1][i]).strip() for i in indices)]
-    if not skipped:
+
+    def alike(k: int, among) -> bool:
+        return all(str(rows[k][i]).strip() == str(rows[k - 1][i]).strip() for i in among)
+
+    same_time = [k for k in range(1, len(rows)) if alike(k, indices[:1])]
+    skipped = [k for k in same_time if alike(k, indices)]
+    if not skipped or len(skipped) < len(same_time):
         return table
     gone = set(skipped)
     keep = [k for k in range(len(rows)) if k not in gone]

@@ -1686,6 +1686,13 @@ def test_rows_written_twice_by_a_logger_are_counted_once_and_named(tmp_path, mkm
             "A11, ...") in err
     assert len(run.meta.imported_from["rows_skipped_as_repeats"]) == 400
     pd.testing.assert_frame_equal(run.steps, single.steps)
+    # a clock in whole seconds at 10 Hz: rows alike may be samples of their own, all kept
+    coarse = tmp_path / "coarse.csv"
+    coarse.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{int(a)},{b:.2f},{c:.0f}\n" for a, b, c in zip(t, p, thickwall_N(p, 0.0),
+                                                        strict=True)))
+    (kept,), _ = _import(mkm_cli, coarse, *MUSCLE, "--eps", "0")
+    assert kept.meta.imported_from["rows_skipped_as_repeats"] == [] and len(kept.samples) == 400
 
 def test_a_record_exported_newest_first_is_refused_saying_so(tmp_path, mkm_cli):
     # a logger's export of its latest samples first: was "cell A3: the time goes backwards",
