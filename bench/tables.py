@@ -450,8 +450,14 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
         if sheet is not None and sheet not in names:
             raise ValueError(f"--sheet {sheet!r}: {path.name} has no such sheet: it has "
                              f"{', '.join(map(repr, names))}")
+        # a chart sheet (a lab's plot of its measurements) holds no cells
+        charts = {chart.title for chart in book.chartsheets}
+        if sheet in charts:
+            raise ValueError(f"--sheet {sheet!r}: {path.name}'s sheet {sheet!r} is a chart, no "
+                             "table: expected the sheet of its measurements (sheets "
+                             f"{', '.join(repr(n) for n in names if n not in charts)})")
         tables, problems = [], []
-        for name in [sheet] if sheet is not None else names:
+        for name in [sheet] if sheet is not None else [n for n in names if n not in charts]:
             numbers, rows = [], []
             for n, row in enumerate(book[name].iter_rows(values_only=True), start=1):
                 cells = ["" if v is None else v for v in row]

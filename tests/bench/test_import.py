@@ -278,6 +278,32 @@ def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
     assert one.meta.muscle.eps == pytest.approx(0.122)
 
 
+def test_a_workbooks_chart_sheet_is_no_table(tmp_path, mkm_cli):
+    # a lab's workbook with its plot on a chart sheet of its own: was a traceback
+    # ("AttributeError: 'Chartsheet' object has no attribute 'iter_rows'")
+    import openpyxl
+    from openpyxl.chart import LineChart, Reference
+
+    force = thickwall_N(PRESSURES[:5], 0.0)
+    book = openpyxl.Workbook()
+    data = book.active
+    data.title = "Daten"
+    data.append(["P (bar)", "F (N)"])
+    for row in zip(PRESSURES[:5], force, strict=True):
+        data.append([float(v) for v in row])
+    chart = LineChart()
+    chart.add_data(Reference(data, min_col=2, min_row=1, max_row=6), titles_from_data=True)
+    book.create_chartsheet("Diagramm", 0).add_chart(chart)
+    path = tmp_path / "plotted.xlsx"
+    book.save(path)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)  # 6 digits kept
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--sheet", "Diagramm",
+                            "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert ("--sheet 'Diagramm': plotted.xlsx's sheet 'Diagramm' is a chart, no table: "
+            "expected the sheet of its measurements (sheets 'Daten')") in err
+
 def test_sheets_of_a_workbook_given_one_eps_are_told_so(tmp_path, mkm_cli):
     # one sheet per state, named by it, no eps column: --eps 0 made both runs eps 0 ('eps 10'
     # too), unsaid, as two repeats of one state
