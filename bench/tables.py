@@ -48,7 +48,8 @@ _ZIP_MAGIC = b"PK\x03\x04"
 WORKBOOK_SUFFIXES = (".xlsx", ".xlsm")
 
 
-#: loggers' own binary files, and how each becomes a table mkm reads
+#: loggers' own binary files and other programs' spreadsheets, and how each becomes a table
+#: mkm reads
 LOGGER_FILES = {
     ".tdms": "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or open "
              "it in Excel with NI's TDM importer and save it as .xlsx",
@@ -56,6 +57,9 @@ LOGGER_FILES = {
     ".dxd": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
     ".d7d": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
     ".mf4": "an ASAM MDF file: export it as CSV from the logger's software (or asammdf)",
+    ".ods": "a LibreOffice (OpenDocument) spreadsheet: save it as .xlsx (File > Save As, Excel "
+            "2007-365) or as CSV",
+    ".numbers": "an Apple Numbers spreadsheet: export it as .xlsx or CSV (File > Export To)",
 }
 
 

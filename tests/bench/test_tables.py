@@ -420,6 +420,9 @@ def test_a_channels_own_time_column_is_the_time(tmp_path):
     (".tdms", "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or "
      "open it in Excel with NI's TDM importer and save it as .xlsx"),
     (".dxd", "DEWESoft's data file: export it from DEWESoft as CSV or Excel"),
+    # a lab's LibreOffice sheet: was "unknown table format '.ods'"
+    (".ods", "a LibreOffice (OpenDocument) spreadsheet: save it as .xlsx (File > Save As, "
+     "Excel 2007-365) or as CSV"),
 ])
 def test_a_loggers_binary_file_names_how_to_export_it(suffix, how, tmp_path):
     # was "unknown table format '.tdms': expected .csv, ...", not saying how to get one
