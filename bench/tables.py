@@ -103,9 +103,9 @@ def _set_point(name: str) -> bool:
 
 #: the words of a column's name that make it a statistic of a quantity, no reading of it (a
 #: results sheet's 'F max (N)', 'Peak force'): not taken by its unit alone (a mean is a hold's
-#: reading, as a step table gives it)
-STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "sum", "summe",
-                   "total", "gesamt", "std", "stdev", "sd", "count", "anzahl", "range"}
+#: reading, as a step table gives it, and a total the sum of load cells sharing the pull)
+STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "std", "stdev", "sd",
+                   "count", "anzahl", "range"}
 
 
 def statistic(name: str) -> bool:

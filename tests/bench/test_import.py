@@ -341,6 +341,11 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
     assert ("muscle7.xlsx: sheets without a pressure and a force column skipped: 'Auswertung' "
             "(no force column; 'F max (N)' is a statistic, no reading)") in err
     np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)
+    # a total is a reading: two cells' sum the lab added up, taken by its unit
+    total = tmp_path / "total.csv"
+    pd.DataFrame({"P (bar)": PRESSURES[:5], "Total force (N)": force}).to_csv(total, index=False)
+    (summed,), err = _import(mkm_cli, total, *MUSCLE, "--eps", "0")
+    assert "'Total force (N)' -> force [N]" in err
 
 
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
