@@ -361,7 +361,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                              f"{missing[0]}=UNIT"
                              + (f"; a channel in volts, {in_volts[0]!r}, with --sensitivity "
                                 f"{missing[0]}={VOLTS_ROLES[missing[0]][0]}" if in_volts
-                                else "") + ")")
+                                else "") + ")"
+                             + "".join(f"; {h!r} names a statistic, not taken by its unit: "
+                                       f"--columns {missing[0]}={h!r} reads it"
+                                       for h in statistic_columns(table, missing[0])[:1]))
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         if "time" in found:  # a step table's rows may repeat a step; a record's are samples

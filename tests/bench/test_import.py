@@ -346,6 +346,14 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
     pd.DataFrame({"P (bar)": PRESSURES[:5], "Total force (N)": force}).to_csv(total, index=False)
     (summed,), err = _import(mkm_cli, total, *MUSCLE, "--eps", "0")
     assert "'Total force (N)' -> force [N]" in err
+    # a table of peaks alone: the statistic named, with the option that reads it
+    peaks = tmp_path / "peaks.csv"
+    pd.DataFrame({"P (bar)": PRESSURES[:5], "Peak force (N)": force}).to_csv(peaks, index=False)
+    code, _, err = mkm_cli(["import", str(peaks), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("'Peak force (N)' names a statistic, not taken by its unit: --columns "
+            "force='Peak force (N)' reads it") in err
 
 
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
