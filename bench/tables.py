@@ -1680,10 +1680,16 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
     (``OVL``: the reading beyond the channel's range), the first in ``overloads_skipped``. A
     workbook cell read empty that holds a formula stays, for :func:`column_values` to name."""
     columns = [p for c in columns for p in c.parts or (c,)]
-    blank = {k: next((c.index for c in columns if _overload(row[c.index])),
-                     next(c.index for c in columns if _no_reading(row[c.index])))
-             for k, row in enumerate(table.rows)
-             if any(_no_reading(row[c.index]) for c in columns)}
+    marked: dict[int, list[tuple[int, bool]]] = {}  # row -> (column, overload) in their order
+    for c in columns:
+        raw = [row[c.index] for row in table.rows]
+        values = _plain_numbers(raw, table.decimal)  # a column of numbers read at numpy's speed
+        rows = (np.flatnonzero(np.abs(values) >= SCPI_OVERLOAD).tolist() if values is not None
+                else [k for k, cell in enumerate(raw) if _no_reading(cell)])
+        for k in rows:
+            marked.setdefault(k, []).append((c.index, _overload(raw[k])))
+    blank = {k: next((i for i, over in marks if over), marks[0][0])
+             for k, marks in sorted(marked.items())}
     formulas = _formulas(table, [(k, c.index) for k in blank for c in columns])
     skipped = [k for k in blank if not any((k, c.index) in formulas for c in columns)]
     if not skipped:
