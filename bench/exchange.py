@@ -55,6 +55,7 @@ from mkm.bench.tables import (
     Scaling,
     backwards_message,
     by_unit_columns,
+    check_channel_times,
     column_text,
     directions,
     flags,
@@ -369,6 +370,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         if "time" in found:  # a step table's rows may repeat a step; a record's are samples
             table = without_repeated_rows(table, [found[r] for r in ("time", *REQUIRED_ROLES)])
+            check_channel_times(table, found)
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in taken_columns(found)])
         # without a time column every row is a step, or a record's rows are taken as evenly

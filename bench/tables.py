@@ -1707,6 +1707,30 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
                    overloads_skipped=[named(k) for k in over])
 
 
+def check_channel_times(table: RawTable, found: dict[str, Column]) -> None:
+    """``ValueError`` where a LabVIEW file's x column of a channel (``X_Value`` beside the
+    time column, as ``X_Columns Multi`` writes one per channel) reads another time than the
+    time column on a row: its channel was sampled at other times, and row by row its readings
+    would be paired with the wrong pressures."""
+    if "time" not in found:
+        return
+    time = found["time"].index
+    for index, header in enumerate(table.header):
+        if header != "X_Value" or index == time:
+            continue
+        for k, row in enumerate(table.rows):
+            x, t = (plain_number(row[i], table.decimal) for i in (index, time))
+            if x is not None and t is not None and not math.isclose(x, t, rel_tol=1e-9,
+                                                                    abs_tol=1e-9):
+                raise ValueError(
+                    f"{table.name}, cell {table.cell(k, index)} (column 'X_Value'): "
+                    f"{_shown(row[index])} beside {_shown(row[time])} of the time column "
+                    f"{found['time'].header!r}: its channel was sampled at other times: "
+                    "expected one time per row; save the channels with one x column "
+                    "(X_Columns One), or each to a file of its own and join them with "
+                    "--join-by-time")
+
+
 def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
     """``table`` without the rows that repeat the row above in every one of ``columns``, the
     time first (its time and readings: a logger that wrote a sample twice, or rows pasted

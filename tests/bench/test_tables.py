@@ -11,6 +11,7 @@ import pytest
 
 from mkm.bench.tables import (
     Recognition,
+    check_channel_times,
     column_values,
     directions,
     parse_assignments,
@@ -553,6 +554,20 @@ def test_a_labview_file_with_an_x_column_per_channel_gives_each_channel_its_unit
     assert table.header[:4] == ["Time [s]", "Druck [kPa]", "X_Value", "Kraft [kN]"]
     np.testing.assert_allclose(column_values(table, found["force"]), [35.0, 2730.0, 8660.0])
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+    check_channel_times(table, found)  # one time per row: nothing to say
+    # the force sampled at half the rate, its x column other times on each row: its readings
+    # were paired row by row with the pressure read at another time, unsaid
+    path = tmp_path / "rates.lvm"
+    path.write_text(text.replace("0.100000\t2.730000", "0.200000\t2.730000")
+                    .replace("0.200000\t8.660000", "0.400000\t8.660000"), encoding="utf-8")
+    table, found = _one(tmp_path, path.read_text(encoding="utf-8"), "rates.lvm")
+    with pytest.raises(ValueError) as info:
+        check_channel_times(table, found)
+    assert str(info.value) == (
+        "rates.lvm, cell C17 (column 'X_Value'): '0.200000' beside '0.100000' of the time "
+        "column 'Time [s]': its channel was sampled at other times: expected one time per "
+        "row; save the channels with one x column (X_Columns One), or each to a file of its "
+        "own and join them with --join-by-time")
 
 
 TDMS_CSV = ("Root Name,bench 3\nRoot Author,jdoe\nGroup Name,Untitled\n"
