@@ -388,9 +388,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                          for header in unread[:1]))
         prepared.append(recognition)
         bar.done()
-    if not prepared:
+    if not prepared:  # each sheet's lack named, and how to name a column the reader missed
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
-                         f"{', '.join(map(repr, names))})")
+                         f"{', '.join(skipped or map(repr, names))}): name them with --columns "
+                         "pressure=COLUMN,force=COLUMN (and --units; --sheet NAME reads one sheet)")
     if skipped:
         notify(f"{path.name}: sheets without a pressure and a force column skipped: "
                f"{', '.join(skipped)}")

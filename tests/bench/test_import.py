@@ -346,6 +346,19 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
     pd.DataFrame({"P (bar)": PRESSURES[:5], "Total force (N)": force}).to_csv(total, index=False)
     (summed,), err = _import(mkm_cli, total, *MUSCLE, "--eps", "0")
     assert "'Total force (N)' -> force [N]" in err
+    # a workbook whose every sheet lacks a force column: each sheet named with what it lacks,
+    # and the options that name the columns (was: the sheets' names alone)
+    unnamed = tmp_path / "unnamed.xlsx"
+    with pd.ExcelWriter(unnamed) as book:
+        for sheet in ("A", "B"):
+            pd.DataFrame({"P (bar)": PRESSURES[:5], "Kanal 2": force}).to_excel(
+                book, sheet_name=sheet, index=False)
+    code, _, err = mkm_cli(["import", str(unnamed), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("unnamed.xlsx: no sheet holds a pressure and a force column (sheets 'A' (no force "
+            "column), 'B' (no force column)): name them with --columns pressure=COLUMN,"
+            "force=COLUMN (and --units; --sheet NAME reads one sheet)") in err
     # a table of peaks alone: the statistic named, with the option that reads it
     peaks = tmp_path / "peaks.csv"
     pd.DataFrame({"P (bar)": PRESSURES[:5], "Peak force (N)": force}).to_csv(peaks, index=False)
