@@ -399,17 +399,25 @@ def _number_part(text: str) -> str:
 
 
 def _separator(lines: list[str]) -> str:
-    """The separator that splits the most lines into the same number (>= 2) of fields."""
-    best, score = ",", -1
-    for sep in SEPARATORS:
+    """The separator that splits the most lines into the same number (>= 2) of fields; where
+    two do so alike (a row with a comment in a column without a header, a row missing its last
+    cell), the one that splits more lines at all, then a semicolon before a tab before a comma
+    (a semicolon table's decimal commas split its numbers into as many fields by chance)."""
+    best, score = ",", (-1, -1, -1)
+    for rank, sep in enumerate(_SEPARATOR_PREFERENCE):
         # a quoted cell's line break is no row's end: a space serves as well for counting
         counts = [len(next(csv.reader([line.replace("\n", " ")], delimiter=sep)))
                   for line in lines[:200]]
         common = max(set(counts), key=counts.count)
         agree = counts.count(common) if common >= 2 else 0
-        if agree > score:
-            best, score = sep, agree
+        this = (agree, sum(c >= 2 for c in counts), -rank)
+        if this > score:
+            best, score = sep, this
     return best
+
+
+#: the separators in the order a tie between them is decided (:func:`_separator`)
+_SEPARATOR_PREFERENCE = (";", "\t", ",")
 
 
 def sheet_names(path: str | Path) -> list[str]:

@@ -851,3 +851,17 @@ def test_a_loggers_closing_notes_under_a_blank_row_are_no_data(tmp_path):
     with pytest.raises(ValueError, match=r"cell A4 \(column 'Druck \[bar\]'\): 'Anzahl Werte' "
                                          "is not a number"):
         column_values(table, found["pressure"])
+
+
+@pytest.mark.parametrize("text", [
+    # a comment typed in a column without a header, beside some rows
+    "P (bar);F (N)\r\n0;1,5;ok\r\n0,5;40,2\r\n1;80,1;Riss?\r\n",
+    # a row missing its force
+    "P (bar);F (N)\r\n0;1,5\r\n0,5\r\n1;80,1\r\n",
+])
+def test_a_semicolon_table_with_a_ragged_row_keeps_its_separator(text, tmp_path):
+    # its decimal commas split as many lines into as many fields as its semicolons: the comma
+    # was taken for the separator ("no pressure or force column among '0;1', '5;ok'")
+    table, found = _one(tmp_path, text, "ragged.csv")
+    assert table.separator == ";" and table.decimal == ","
+    assert table.header[:2] == ["P (bar)", "F (N)"] and set(found) == {"pressure", "force"}
