@@ -1003,6 +1003,9 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     for role, given in columns.items():
         named = [given] if given in headers or "+" not in given else \
             [part.strip() for part in given.split("+")]
+        if len(named) > 1 and not all(named):
+            raise ValueError(f"--columns {role}={given!r}: a sum names a column on each side "
+                             "of each '+': expected COLUMN+COLUMN")
         if len(named) > 1 and role not in SUMMED_ROLES:
             raise ValueError(f"--columns {role}={given!r}: only {' and '.join(SUMMED_ROLES)} "
                              f"columns add up (load cells sharing the pull): expected one "

@@ -110,6 +110,10 @@ def test_two_load_cells_sharing_the_pull_are_summed_by_columns_a_plus_b(tmp_path
                             "pressure=P (bar)+Force left (N)", "--out", str(tmp_path / "bad")])
     assert code == 2 and err.count("\n") == 1
     assert "--columns pressure='P (bar)+Force left (N)': only force columns add up" in err
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--columns",
+                            "force=Force left (N)+", "--out", str(tmp_path / "bad")])
+    assert code == 2 and ("--columns force='Force left (N)+': a sum names a column on each "
+                          "side of each '+': expected COLUMN+COLUMN") in err
     assert not (tmp_path / "bad").exists()
 
 
