@@ -55,6 +55,7 @@ from mkm.bench.tables import (
     Scaling,
     backwards_message,
     by_unit_columns,
+    check_channel_times,
     column_text,
     directions,
     flags,
@@ -71,6 +72,7 @@ from mkm.bench.tables import (
     unread_time_columns,
     volts_header,
     without_blank_rows,
+    without_repeated_rows,
     without_summary_rows,
 )
 from mkm.core.ranges import parse_number
@@ -360,9 +362,15 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                              f"{missing[0]}=UNIT"
                              + (f"; a channel in volts, {in_volts[0]!r}, with --sensitivity "
                                 f"{missing[0]}={VOLTS_ROLES[missing[0]][0]}" if in_volts
-                                else "") + ")")
+                                else "") + ")"
+                             + "".join(f"; {h!r} names a statistic, not taken by its unit: "
+                                       f"--columns {missing[0]}={h!r} reads it"
+                                       for h in statistic_columns(table, missing[0])[:1]))
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
+        if "time" in found:  # a step table's rows may repeat a step; a record's are samples
+            table = without_repeated_rows(table, [found[r] for r in ("time", *REQUIRED_ROLES)])
+            check_channel_times(table, found)
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in taken_columns(found)])
         # without a time column every row is a step, or a record's rows are taken as evenly
@@ -380,9 +388,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                          for header in unread[:1]))
         prepared.append(recognition)
         bar.done()
-    if not prepared:
+    if not prepared:  # each sheet's lack named, and how to name a column the reader missed
         raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
-                         f"{', '.join(map(repr, names))})")
+                         f"{', '.join(skipped or map(repr, names))}): name them with --columns "
+                         "pressure=COLUMN,force=COLUMN (and --units; --sheet NAME reads one sheet)")
     if skipped:
         notify(f"{path.name}: sheets without a pressure and a force column skipped: "
                f"{', '.join(skipped)}")
@@ -814,7 +823,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if back.size:
             raise ValueError(backwards_message(
                 f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')}",
-                found["time"].header, time_s[back[0]] - time_s[back[0] + 1]))
+                found["time"].header, time_s[back[0]] - time_s[back[0] + 1],
+                newest_first=back.size == time_s.size - 1))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
     record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)
@@ -908,6 +918,14 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         except ValueError as exc:  # beyond any gauge: a unit read as bar, as the note says
             raise ValueError(f"{exc}; {_other_pressure_units(top_bar, found['pressure'].unit)}"
                              ) from None
+    if (timed or record) and np.ptp(pressure) <= 2 * series.PLATEAU_TOLERANCE_BAR:
+        # a gauge's noise binned by pressure would make steps of nothing
+        what = "samples" if timed else "rows"
+        raise ValueError(f"{group.named}: the pressure never rises: its {pressure.size} {what} "
+                         f"read {pressure.min():.3g} to {pressure.max():.3g} bar, within "
+                         f"{2 * series.PLATEAU_TOLERANCE_BAR:g} bar of each other (a vented "
+                         f"gauge's noise): expected a record of the muscle pressurised; is "
+                         f"{found['pressure'].header!r} its pressure?")
     closing = closing_rows = None
     if timed or record:  # zeroed at the rest before its rise, not at one noisy row at 0 bar
         clock = time_s if timed else np.arange(pressure.size, dtype=float)

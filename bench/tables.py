@@ -48,7 +48,8 @@ _ZIP_MAGIC = b"PK\x03\x04"
 WORKBOOK_SUFFIXES = (".xlsx", ".xlsm")
 
 
-#: loggers' own binary files, and how each becomes a table mkm reads
+#: loggers' own binary files and other programs' spreadsheets, and how each becomes a table
+#: mkm reads
 LOGGER_FILES = {
     ".tdms": "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or open "
              "it in Excel with NI's TDM importer and save it as .xlsx",
@@ -56,6 +57,9 @@ LOGGER_FILES = {
     ".dxd": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
     ".d7d": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
     ".mf4": "an ASAM MDF file: export it as CSV from the logger's software (or asammdf)",
+    ".ods": "a LibreOffice (OpenDocument) spreadsheet: save it as .xlsx (File > Save As, Excel "
+            "2007-365) or as CSV",
+    ".numbers": "an Apple Numbers spreadsheet: export it as .xlsx or CSV (File > Export To)",
 }
 
 
@@ -99,9 +103,9 @@ def _set_point(name: str) -> bool:
 
 #: the words of a column's name that make it a statistic of a quantity, no reading of it (a
 #: results sheet's 'F max (N)', 'Peak force'): not taken by its unit alone (a mean is a hold's
-#: reading, as a step table gives it)
-STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "sum", "summe",
-                   "total", "gesamt", "std", "stdev", "sd", "count", "anzahl", "range"}
+#: reading, as a step table gives it, and a total the sum of load cells sharing the pull)
+STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "std", "stdev", "sd",
+                   "count", "anzahl", "range"}
 
 
 def statistic(name: str) -> bool:
@@ -164,6 +168,8 @@ class RawTable:
     blanks_skipped: list[str] = field(default_factory=list)
     #: the first overload mark of each row :func:`without_blank_rows` left out (``C7 ('OVL')``)
     overloads_skipped: list[str] = field(default_factory=list)
+    #: the first cell of each row :func:`without_repeated_rows` left out (``A12``)
+    repeats_skipped: list[str] = field(default_factory=list)
     #: the cell naming the statistic of each row :func:`without_summary_rows` left out
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
@@ -186,6 +192,7 @@ class RawTable:
                 "decimal": self.decimal, "rows": len(self.rows),
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
                 "rows_skipped_for_an_overload": self.overloads_skipped,
+                "rows_skipped_as_repeats": self.repeats_skipped,
                 "summary_rows_skipped": self.summaries_skipped,
                 "footer_rows_skipped": self.footer_skipped,
                 **({"joined_by_time": self.joined} if self.joined else {})}
@@ -392,17 +399,25 @@ def _number_part(text: str) -> str:
 
 
 def _separator(lines: list[str]) -> str:
-    """The separator that splits the most lines into the same number (>= 2) of fields."""
-    best, score = ",", -1
-    for sep in SEPARATORS:
+    """The separator that splits the most lines into the same number (>= 2) of fields; where
+    two do so alike (a row with a comment in a column without a header, a row missing its last
+    cell), the one that splits more lines at all, then a semicolon before a tab before a comma
+    (a semicolon table's decimal commas split its numbers into as many fields by chance)."""
+    best, score = ",", (-1, -1, -1)
+    for rank, sep in enumerate(_SEPARATOR_PREFERENCE):
         # a quoted cell's line break is no row's end: a space serves as well for counting
         counts = [len(next(csv.reader([line.replace("\n", " ")], delimiter=sep)))
                   for line in lines[:200]]
         common = max(set(counts), key=counts.count)
         agree = counts.count(common) if common >= 2 else 0
-        if agree > score:
-            best, score = sep, agree
+        this = (agree, sum(c >= 2 for c in counts), -rank)
+        if this > score:
+            best, score = sep, this
     return best
+
+
+#: the separators in the order a tie between them is decided (:func:`_separator`)
+_SEPARATOR_PREFERENCE = (";", "\t", ",")
 
 
 def sheet_names(path: str | Path) -> list[str]:
@@ -447,8 +462,14 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
         if sheet is not None and sheet not in names:
             raise ValueError(f"--sheet {sheet!r}: {path.name} has no such sheet: it has "
                              f"{', '.join(map(repr, names))}")
+        # a chart sheet (a lab's plot of its measurements) holds no cells
+        charts = {chart.title for chart in book.chartsheets}
+        if sheet in charts:
+            raise ValueError(f"--sheet {sheet!r}: {path.name}'s sheet {sheet!r} is a chart, no "
+                             "table: expected the sheet of its measurements (sheets "
+                             f"{', '.join(repr(n) for n in names if n not in charts)})")
         tables, problems = [], []
-        for name in [sheet] if sheet is not None else names:
+        for name in [sheet] if sheet is not None else [n for n in names if n not in charts]:
             numbers, rows = [], []
             for n, row in enumerate(book[name].iter_rows(values_only=True), start=1):
                 cells = ["" if v is None else v for v in row]
@@ -599,16 +620,19 @@ def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
 
 def _labview_header(header: list[str], titles: list[list]) -> list[str]:
     """A LabVIEW measurement file's column names with what its channel header says: each
-    channel's unit (``Y_Unit_Label``) after its name, and its one x column (``X_Value``) named
-    ``Time [s]`` where the channels' ``X_Dimension`` is time; any other header as it is."""
+    channel's unit (``Y_Unit_Label``, in the channels' order: an x column before each, as
+    ``X_Columns Multi`` writes them, takes none) after its name, and its first x column
+    (``X_Value``) named ``Time [s]`` where the channels' ``X_Dimension`` is time; any other
+    header as it is."""
     block = {str(row[0]).strip(): [str(c).strip() for c in row[1:]] for row in titles if row}
     if "Y_Unit_Label" not in block or not header or header[0] != "X_Value":
         return header
     out = list(header)
     if {d.lower() for d in block.get("X_Dimension", []) if d} == {"time"}:
         out[0] = "Time [s]"
-    for k, unit in enumerate(block["Y_Unit_Label"], start=1):
-        if k < len(out) and out[k] and unit and parse_header(out[k])[1] is None:
+    channels = [k for k in range(1, len(out)) if out[k] != "X_Value"]
+    for k, unit in zip(channels, block["Y_Unit_Label"], strict=False):
+        if out[k] and unit and parse_header(out[k])[1] is None:
             out[k] = f"{out[k]} [{unit}]"
     return out
 
@@ -710,6 +734,10 @@ def marked_gauge(unit: str | None) -> bool:
 _AREA_DIGIT = re.compile(r"(?<![A-Za-z])(mm|cm|m|in|ft)([23])(?![\w])")
 
 
+#: the kilopond within a unit (kp/cm²), as LAB_UNITS reads it alone
+_KILOPOND = re.compile(r"(?<![A-Za-z])kp(?![A-Za-z])", re.IGNORECASE)
+
+
 def parse_unit(text: str):
     """``text`` as a pint unit, or ``None`` if it is not one (:data:`LAB_UNITS` first, then
     case as written, then any case)."""
@@ -721,6 +749,7 @@ def parse_unit(text: str):
     if not text or text.lower() in NOT_UNITS or not re.search(r"[A-Za-z%°µ]", text):
         return None
     text = _AREA_DIGIT.sub(r"\1**\2", text)  # kgf/cm2: pint reads no 'cm2'
+    text = _KILOPOND.sub("kgf", text)  # kp/cm²: pint's kp would be a kilopoise
     for case_sensitive in (True, False):
         try:
             return registry(case_sensitive).Unit(text)
@@ -974,6 +1003,9 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     for role, given in columns.items():
         named = [given] if given in headers or "+" not in given else \
             [part.strip() for part in given.split("+")]
+        if len(named) > 1 and not all(named):
+            raise ValueError(f"--columns {role}={given!r}: a sum names a column on each side "
+                             "of each '+': expected COLUMN+COLUMN")
         if len(named) > 1 and role not in SUMMED_ROLES:
             raise ValueError(f"--columns {role}={given!r}: only {' and '.join(SUMMED_ROLES)} "
                              f"columns add up (load cells sharing the pull): expected one "
@@ -1251,9 +1283,13 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         number, unit = _number(cell, table.decimal)
         if number is None:
             formula = _formula(table, k, column.index) if cell == "" else None
+            again = str(cell).strip() == column.header.strip()
             why = (f"holds the formula {_shown(formula)} without a value saved: open and save "
                    "the workbook in Excel (or LibreOffice) to compute it, or export it as CSV"
-                   if formula else f"{_shown(cell)} is not a number")
+                   if formula else
+                   f"{_shown(cell)} is the header again, a second record in the file (a "
+                   "logger that appended another session): expected one header; split the "
+                   "file there and import each" if again else f"{_shown(cell)} is not a number")
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
                              f"{column.header!r}): {why}")
         if not math.isfinite(number):
@@ -1433,9 +1469,15 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
-def backwards_message(where: str, header: str, jump_s: float) -> str:
+def backwards_message(where: str, header: str, jump_s: float,
+                      newest_first: bool = False) -> str:
     """The one line of a time column that goes back by ``jump_s`` [s] at ``where`` (a table
-    and its cell); an hour back is named as a clock put back (summer time's end)."""
+    and its cell); an hour back is named as a clock put back (summer time's end), and a
+    column whose every row goes back (``newest_first``) as a logger's newest-first export."""
+    if newest_first:
+        return (f"{where} (column {header!r}): every row is earlier than the one above it, the "
+                "newest first, as some loggers export: expected the samples oldest first; sort "
+                "the file by its time, ascending")
     dst = (" by an hour: a local clock put back at the end of summer time? give the times with "
            "their zone (+02:00, +01:00)" if abs(jump_s - 3600.0) <= 60.0 else
            f" by {jump_s:.4g} s")
@@ -1497,7 +1539,8 @@ def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
         column = other_found["time"]
         raise ValueError(backwards_message(
             f"{other.name}, cell {other.cell(int(back[0]) + 1, column.index)}", column.header,
-            other_times[back[0]] - other_times[back[0] + 1]))
+            other_times[back[0]] - other_times[back[0] + 1],
+            newest_first=back.size == other_times.size - 1))
     origins = (_time_origin(table, found["time"]), _time_origin(other, other_found["time"]))
     if None not in origins and origins[0][0] == origins[1][0] == "date-time":
         firsts = [str(t.rows[0][f["time"].index]).strip() if t.rows else ""
@@ -1648,10 +1691,16 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
     (``OVL``: the reading beyond the channel's range), the first in ``overloads_skipped``. A
     workbook cell read empty that holds a formula stays, for :func:`column_values` to name."""
     columns = [p for c in columns for p in c.parts or (c,)]
-    blank = {k: next((c.index for c in columns if _overload(row[c.index])),
-                     next(c.index for c in columns if _no_reading(row[c.index])))
-             for k, row in enumerate(table.rows)
-             if any(_no_reading(row[c.index]) for c in columns)}
+    marked: dict[int, list[tuple[int, bool]]] = {}  # row -> (column, overload) in their order
+    for c in columns:
+        raw = [row[c.index] for row in table.rows]
+        values = _plain_numbers(raw, table.decimal)  # a column of numbers read at numpy's speed
+        rows = (np.flatnonzero(np.abs(values) >= SCPI_OVERLOAD).tolist() if values is not None
+                else [k for k, cell in enumerate(raw) if _no_reading(cell)])
+        for k in rows:
+            marked.setdefault(k, []).append((c.index, _overload(raw[k])))
+    blank = {k: next((i for i, over in marks if over), marks[0][0])
+             for k, marks in sorted(marked.items())}
     formulas = _formulas(table, [(k, c.index) for k in blank for c in columns])
     skipped = [k for k in blank if not any((k, c.index) in formulas for c in columns)]
     if not skipped:
@@ -1667,6 +1716,54 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
                    row_numbers=[table.row_numbers[k] for k in keep],
                    blanks_skipped=[named(k) for k in skipped if k not in set(over)],
                    overloads_skipped=[named(k) for k in over])
+
+
+def check_channel_times(table: RawTable, found: dict[str, Column]) -> None:
+    """``ValueError`` where a LabVIEW file's x column of a channel (``X_Value`` beside the
+    time column, as ``X_Columns Multi`` writes one per channel) reads another time than the
+    time column on a row: its channel was sampled at other times, and row by row its readings
+    would be paired with the wrong pressures."""
+    if "time" not in found:
+        return
+    time = found["time"].index
+    for index, header in enumerate(table.header):
+        if header != "X_Value" or index == time:
+            continue
+        for k, row in enumerate(table.rows):
+            x, t = (plain_number(row[i], table.decimal) for i in (index, time))
+            if x is not None and t is not None and not math.isclose(x, t, rel_tol=1e-9,
+                                                                    abs_tol=1e-9):
+                raise ValueError(
+                    f"{table.name}, cell {table.cell(k, index)} (column 'X_Value'): "
+                    f"{_shown(row[index])} beside {_shown(row[time])} of the time column "
+                    f"{found['time'].header!r}: its channel was sampled at other times: "
+                    "expected one time per row; save the channels with one x column "
+                    "(X_Columns One), or each to a file of its own and join them with "
+                    "--join-by-time")
+
+
+def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
+    """``table`` without the rows that repeat the row above in every one of ``columns``, the
+    time first (its time and readings: a logger that wrote a sample twice, or rows pasted
+    twice), each named in ``repeats_skipped`` (``A12``): counted twice, a sample would halve
+    the standard errors of its hold, not add a reading. Where some rows share their time with
+    the row above but not their readings (a clock coarser than the sampling, whole seconds at
+    10 Hz), alike rows may be samples of their own: none is skipped."""
+    indices = [p.index for c in columns for p in c.parts or (c,)]
+    rows = table.rows
+
+    def alike(k: int, among) -> bool:
+        return all(str(rows[k][i]).strip() == str(rows[k - 1][i]).strip() for i in among)
+
+    same_time = [k for k in range(1, len(rows)) if alike(k, indices[:1])]
+    skipped = [k for k in same_time if alike(k, indices)]
+    if not skipped or len(skipped) < len(same_time):
+        return table
+    gone = set(skipped)
+    keep = [k for k in range(len(rows)) if k not in gone]
+    return replace(table, rows=[rows[k] for k in keep],
+                   row_numbers=[table.row_numbers[k] for k in keep],
+                   repeats_skipped=[table.cell(k, indices[0]) for k in skipped])
 
 
 def _formula(table: RawTable, k: int, column: int) -> str | None:
@@ -1828,6 +1925,10 @@ class Recognition:
         if skipped := self.table.blanks_skipped:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))
+        if repeats := self.table.repeats_skipped:
+            extras.append(f"{len(repeats)} row(s) repeating the row above (its time and "
+                          "readings) skipped: " + ", ".join(repeats[:5])
+                          + (", ..." if len(repeats) > 5 else ""))
         if over := self.table.overloads_skipped:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")

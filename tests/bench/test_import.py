@@ -110,6 +110,10 @@ def test_two_load_cells_sharing_the_pull_are_summed_by_columns_a_plus_b(tmp_path
                             "pressure=P (bar)+Force left (N)", "--out", str(tmp_path / "bad")])
     assert code == 2 and err.count("\n") == 1
     assert "--columns pressure='P (bar)+Force left (N)': only force columns add up" in err
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--columns",
+                            "force=Force left (N)+", "--out", str(tmp_path / "bad")])
+    assert code == 2 and ("--columns force='Force left (N)+': a sum names a column on each "
+                          "side of each '+': expected COLUMN+COLUMN") in err
     assert not (tmp_path / "bad").exists()
 
 
@@ -278,6 +282,32 @@ def test_a_two_sheet_workbook_is_two_runs(tmp_path, mkm_cli):
     assert one.meta.muscle.eps == pytest.approx(0.122)
 
 
+def test_a_workbooks_chart_sheet_is_no_table(tmp_path, mkm_cli):
+    # a lab's workbook with its plot on a chart sheet of its own: was a traceback
+    # ("AttributeError: 'Chartsheet' object has no attribute 'iter_rows'")
+    import openpyxl
+    from openpyxl.chart import LineChart, Reference
+
+    force = thickwall_N(PRESSURES[:5], 0.0)
+    book = openpyxl.Workbook()
+    data = book.active
+    data.title = "Daten"
+    data.append(["P (bar)", "F (N)"])
+    for row in zip(PRESSURES[:5], force, strict=True):
+        data.append([float(v) for v in row])
+    chart = LineChart()
+    chart.add_data(Reference(data, min_col=2, min_row=1, max_row=6), titles_from_data=True)
+    book.create_chartsheet("Diagramm", 0).add_chart(chart)
+    path = tmp_path / "plotted.xlsx"
+    book.save(path)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)  # 6 digits kept
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--sheet", "Diagramm",
+                            "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert ("--sheet 'Diagramm': plotted.xlsx's sheet 'Diagramm' is a chart, no table: "
+            "expected the sheet of its measurements (sheets 'Daten')") in err
+
 def test_sheets_of_a_workbook_given_one_eps_are_told_so(tmp_path, mkm_cli):
     # one sheet per state, named by it, no eps column: --eps 0 made both runs eps 0 ('eps 10'
     # too), unsaid, as two repeats of one state
@@ -315,6 +345,32 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
     assert ("muscle7.xlsx: sheets without a pressure and a force column skipped: 'Auswertung' "
             "(no force column; 'F max (N)' is a statistic, no reading)") in err
     np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)
+    # a total is a reading: two cells' sum the lab added up, taken by its unit
+    total = tmp_path / "total.csv"
+    pd.DataFrame({"P (bar)": PRESSURES[:5], "Total force (N)": force}).to_csv(total, index=False)
+    (summed,), err = _import(mkm_cli, total, *MUSCLE, "--eps", "0")
+    assert "'Total force (N)' -> force [N]" in err
+    # a workbook whose every sheet lacks a force column: each sheet named with what it lacks,
+    # and the options that name the columns (was: the sheets' names alone)
+    unnamed = tmp_path / "unnamed.xlsx"
+    with pd.ExcelWriter(unnamed) as book:
+        for sheet in ("A", "B"):
+            pd.DataFrame({"P (bar)": PRESSURES[:5], "Kanal 2": force}).to_excel(
+                book, sheet_name=sheet, index=False)
+    code, _, err = mkm_cli(["import", str(unnamed), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("unnamed.xlsx: no sheet holds a pressure and a force column (sheets 'A' (no force "
+            "column), 'B' (no force column)): name them with --columns pressure=COLUMN,"
+            "force=COLUMN (and --units; --sheet NAME reads one sheet)") in err
+    # a table of peaks alone: the statistic named, with the option that reads it
+    peaks = tmp_path / "peaks.csv"
+    pd.DataFrame({"P (bar)": PRESSURES[:5], "Peak force (N)": force}).to_csv(peaks, index=False)
+    code, _, err = mkm_cli(["import", str(peaks), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("'Peak force (N)' names a statistic, not taken by its unit: --columns "
+            "force='Peak force (N)' reads it") in err
 
 
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
@@ -1637,6 +1693,76 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
     assert ("cell A22 (column 't [s]'): the time goes backwards by 4.5 s: expected samples in "
             "time order" in err) is not said
 
+
+def test_a_record_whose_pressure_never_rises_is_refused(tmp_path, mkm_cli):
+    # a minute logged vented (the test not run, or the wrong channel): its gauge's noise was
+    # binned into 132 steps of a ramp, a zero from 2 samples, unsaid
+    rng = np.random.default_rng(2)
+    t = np.arange(0.0, 60.0, 0.1)
+    table = tmp_path / "vented.csv"
+    pd.DataFrame({"Time [s]": t, "Pressure [bar]": rng.normal(0, 0.003, t.size),
+                  "Force [N]": 4.0 + rng.normal(0, 0.3, t.size)}).to_csv(table, index=False)
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("vented.csv: the pressure never rises: its 600 samples read 0 to 0.00" in err
+            and "within 0.06 bar of each other (a vented gauge's noise): expected a record of "
+            "the muscle pressurised; is 'Pressure [bar]' its pressure?" in err)
+    assert not (tmp_path / "runs").exists()
+
+def test_a_second_session_appended_under_its_own_header_is_named_as_such(tmp_path, mkm_cli):
+    # a logger that appends each session to one file, its header repeated: was "cell B42:
+    # 'Pressure [bar]' is not a number"
+    t = np.arange(0.0, 4.0, 0.1)
+    session = "".join(f"{a:.1f},{a / 2:.3f},{100 * a:.1f}\n" for a in t)
+    header = "Time [s],Pressure [bar],Force [N]\n"
+    table = tmp_path / "sessions.csv"
+    table.write_text(header + session + header + session)
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("sessions.csv, cell B42 (column 'Pressure [bar]'): 'Pressure [bar]' is the header "
+            "again, a second record in the file (a logger that appended another session): "
+            "expected one header; split the file there and import each") in err
+
+def test_rows_written_twice_by_a_logger_are_counted_once_and_named(tmp_path, mkm_cli):
+    # a logger that wrote every sample twice: each hold counted twice its samples, its
+    # standard error a factor sqrt(2) too small, unsaid
+    rng = np.random.default_rng(5)
+    t = np.arange(0.0, 40.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 40], [0, 0, 1, 1, 2, 2, 0, 0])
+    rows = [f"{a:.1f},{b:.5f},{c:.4f}\n" for a, b, c in
+            zip(t, p, thickwall_N(p, 0.0) + rng.normal(0, 0.3, t.size), strict=True)]
+    once, twice = tmp_path / "once.csv", tmp_path / "twice.csv"
+    once.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(rows))
+    twice.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(r + r for r in rows))
+    (single,), _ = _import(mkm_cli, once, *MUSCLE, "--eps", "0")
+    (run,), err = _import(mkm_cli, twice, *MUSCLE, "--eps", "0")
+    assert ("400 row(s) repeating the row above (its time and readings) skipped: A3, A5, A7, A9, "
+            "A11, ...") in err
+    assert len(run.meta.imported_from["rows_skipped_as_repeats"]) == 400
+    pd.testing.assert_frame_equal(run.steps, single.steps)
+    # a clock in whole seconds at 10 Hz: rows alike may be samples of their own, all kept
+    coarse = tmp_path / "coarse.csv"
+    coarse.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{int(a)},{b:.2f},{c:.0f}\n" for a, b, c in zip(t, p, thickwall_N(p, 0.0),
+                                                        strict=True)))
+    (kept,), _ = _import(mkm_cli, coarse, *MUSCLE, "--eps", "0")
+    assert kept.meta.imported_from["rows_skipped_as_repeats"] == [] and len(kept.samples) == 400
+
+def test_a_record_exported_newest_first_is_refused_saying_so(tmp_path, mkm_cli):
+    # a logger's export of its latest samples first: was "cell A3: the time goes backwards",
+    # as though one sample were out of place
+    t = np.arange(0.0, 20.0, 0.5)[::-1]
+    table = tmp_path / "newest_first.csv"
+    pd.DataFrame({"t [s]": t, "P [bar]": np.where(t > 5, 1.0, 0.0),
+                  "F [N]": 0.0}).to_csv(table, index=False)
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("newest_first.csv, cell A3 (column 't [s]'): every row is earlier than the one above "
+            "it, the newest first, as some loggers export: expected the samples oldest first; "
+            "sort the file by its time, ascending") in err
 
 @pytest.mark.parametrize("tau_s", [0.5, 2.0])
 def test_a_closing_rest_after_an_exponential_vent_is_zeroed_where_its_force_settled(

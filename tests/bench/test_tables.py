@@ -11,6 +11,7 @@ import pytest
 
 from mkm.bench.tables import (
     Recognition,
+    check_channel_times,
     column_values,
     directions,
     parse_assignments,
@@ -169,9 +170,17 @@ def test_technical_atmospheres_and_inches_of_mercury(header, cells, bar_per_unit
 @pytest.mark.parametrize("header, bar_per_unit", [
     ("Druck [kgf/cm2]", AT_BAR), ("p (N/mm2)", 10.0), ("Pressure [lbf/in2]", PSI_BAR),
     ("Druck [kgf/cm²]", AT_BAR), ("p [N/mm^2]", 10.0),
+    # the kilopond per square centimetre of a German gauge: was "'kp/cm²' is not a unit of
+    # pressure" (kp alone read as kilopond, not within a unit)
+    ("Druck [kp/cm²]", AT_BAR), ("Druck [kp/cm2]", AT_BAR), ("Kraft [kp]", None),
 ])
 def test_an_area_written_with_its_exponent_as_a_digit(header, bar_per_unit, tmp_path):
     # a gauge's kgf/cm2: was "'kgf/cm2' is not a unit of pressure" (pint reads cm2 as no unit)
+    if bar_per_unit is None:  # kp alone, as before: a force
+        table, found = _one(tmp_path, f"P (bar);{header}\n1,5;2\n2,5;4\n")
+        np.testing.assert_allclose(column_values(table, found["force"]), [2 * 9.80665,
+                                                                         4 * 9.80665])
+        return
     table, found = _one(tmp_path, f"{header};F (N)\n1,5;2\n2,5;4\n")
     np.testing.assert_allclose(column_values(table, found["pressure"]),
                                [1.5 * bar_per_unit, 2.5 * bar_per_unit], rtol=1e-12)
@@ -412,6 +421,9 @@ def test_a_channels_own_time_column_is_the_time(tmp_path):
     (".tdms", "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or "
      "open it in Excel with NI's TDM importer and save it as .xlsx"),
     (".dxd", "DEWESoft's data file: export it from DEWESoft as CSV or Excel"),
+    # a lab's LibreOffice sheet: was "unknown table format '.ods'"
+    (".ods", "a LibreOffice (OpenDocument) spreadsheet: save it as .xlsx (File > Save As, "
+     "Excel 2007-365) or as CSV"),
 ])
 def test_a_loggers_binary_file_names_how_to_export_it(suffix, how, tmp_path):
     # was "unknown table format '.tdms': expected .csv, ...", not saying how to get one
@@ -528,6 +540,34 @@ def test_a_labview_x_column_of_another_dimension_and_a_named_unit_are_as_written
                                                       "X_Dimension\tPoints\tPoints")
                         .replace("Druck\t", "Druck [bar]\t"), "b.lvm")
     assert table.header[:2] == ["X_Value", "Druck [bar]"] and "time" not in found
+
+
+def test_a_labview_file_with_an_x_column_per_channel_gives_each_channel_its_unit(tmp_path):
+    # X_Columns Multi: an X_Value before each channel. Y_Unit_Label's units went to the columns
+    # by position: the second X_Value took 'kN' and Kraft none, its kN read as N, unsaid
+    text = (LABVIEW_LVM.replace("X_Value\tDruck\tKraft\tComment",
+                                "X_Value\tDruck\tX_Value\tKraft\tComment")
+            .replace("0.000000\t0.000000\t0.035000", "0.000000\t0.000000\t0.000000\t0.035000")
+            .replace("0.100000\t250.000000\t2.730000", "0.100000\t250.000000\t0.100000\t2.730000")
+            .replace("0.200000\t800.000000\t8.660000", "0.200000\t800.000000\t0.200000\t8.660000"))
+    table, found = _one(tmp_path, text, "multi.lvm")
+    assert table.header[:4] == ["Time [s]", "Druck [kPa]", "X_Value", "Kraft [kN]"]
+    np.testing.assert_allclose(column_values(table, found["force"]), [35.0, 2730.0, 8660.0])
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+    check_channel_times(table, found)  # one time per row: nothing to say
+    # the force sampled at half the rate, its x column other times on each row: its readings
+    # were paired row by row with the pressure read at another time, unsaid
+    path = tmp_path / "rates.lvm"
+    path.write_text(text.replace("0.100000\t2.730000", "0.200000\t2.730000")
+                    .replace("0.200000\t8.660000", "0.400000\t8.660000"), encoding="utf-8")
+    table, found = _one(tmp_path, path.read_text(encoding="utf-8"), "rates.lvm")
+    with pytest.raises(ValueError) as info:
+        check_channel_times(table, found)
+    assert str(info.value) == (
+        "rates.lvm, cell C17 (column 'X_Value'): '0.200000' beside '0.100000' of the time "
+        "column 'Time [s]': its channel was sampled at other times: expected one time per "
+        "row; save the channels with one x column (X_Columns One), or each to a file of its "
+        "own and join them with --join-by-time")
 
 
 TDMS_CSV = ("Root Name,bench 3\nRoot Author,jdoe\nGroup Name,Untitled\n"
@@ -811,3 +851,17 @@ def test_a_loggers_closing_notes_under_a_blank_row_are_no_data(tmp_path):
     with pytest.raises(ValueError, match=r"cell A4 \(column 'Druck \[bar\]'\): 'Anzahl Werte' "
                                          "is not a number"):
         column_values(table, found["pressure"])
+
+
+@pytest.mark.parametrize("text", [
+    # a comment typed in a column without a header, beside some rows
+    "P (bar);F (N)\r\n0;1,5;ok\r\n0,5;40,2\r\n1;80,1;Riss?\r\n",
+    # a row missing its force
+    "P (bar);F (N)\r\n0;1,5\r\n0,5\r\n1;80,1\r\n",
+])
+def test_a_semicolon_table_with_a_ragged_row_keeps_its_separator(text, tmp_path):
+    # its decimal commas split as many lines into as many fields as its semicolons: the comma
+    # was taken for the separator ("no pressure or force column among '0;1', '5;ok'")
+    table, found = _one(tmp_path, text, "ragged.csv")
+    assert table.separator == ";" and table.decimal == ","
+    assert table.header[:2] == ["P (bar)", "F (N)"] and set(found) == {"pressure", "force"}
