@@ -590,6 +590,28 @@ def test_the_guides_range_surrogate_rows_are_their_measured_files(measured, seed
         assert cells[2] == cover(part), label
 
 
+def test_the_guides_pooled_range_surrogate_rows_are_their_measured_file():
+    """The pooled draws' rows of surrogates.md (seeds 20261701-20261705 and that seed's box)
+    hold the coverage of ``surrogate_range_gp_pooled.json`` (98.2 % within 3 std where the
+    surrogate now holds 97.7 %)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "surrogate_range_gp_pooled.json").read_text(
+        encoding="utf-8"))
+    assert "--seed 20261701 --draws 5 " in record["provenance"]["command"]
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    for part, starts in ((record["practical_range_pooled"],
+                          ("| practical range, seeds 20261701-20261705 pooled |",
+                           "| range, seeds 20261701-20261705 pooled (")),
+                         (record["paper_box"], ("| paper's box, seed 20261701 |",
+                                                "| box, seed 20261701 ("))):
+        shares = (100 * part["std_coverage"][f"within_{k}std"] for k in (1, 2, 3))
+        cover = " / ".join("100" if f"{v:.1f}" == "100.0" else f"{v:.1f}" for v in shares)
+        for start in starts:
+            row = next(r for r in text.splitlines() if r.startswith(start))
+            assert f"| {cover} % |" in row, start
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
