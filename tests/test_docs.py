@@ -582,6 +582,64 @@ def test_the_shipped_identify_coverage_is_what_identify_gives_now(measured, draw
                 assert new["heldout"][key] == value, key
 
 
+@pytest.mark.parametrize(("measured", "seed"), [("surrogate_range_gp.json", 20261225),
+                                              ("surrogate_range_gp_fresh.json", 20261228)])
+def test_the_guides_range_surrogate_rows_are_their_measured_files(measured, seed):
+    """surrogates.md quotes the range surrogate's fresh draws by hand, in two tables; nothing
+    held them to their files, whose std coverage had moved (the surrogate's std at 0 bar became
+    0, so both it and the FE saying 0 N there no longer count; seed 20261228's box held 94.2 %
+    within 1 std where the guide and the file said 94.9 %)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / measured).read_text(encoding="utf-8"))
+    assert f"--seed {seed} " in record["provenance"]["command"]
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+
+    def cover(part):
+        shares = (100 * part["std_coverage"][f"within_{k}std"] for k in (1, 2, 3))
+        return " / ".join("100" if f"{v:.1f}" == "100.0" else f"{v:.1f}" for v in shares) + " %"
+
+    def errors(part):
+        return (f"{part['worst_pct']:#.3g}", f"{part['median_pct']:.3f} %",
+                f"{part['p90_pct']:.2f} %")
+
+    for label, part in (("practical range", record["practical_range"]),
+                        ("paper's box", record["paper_box"])):
+        row = next(r for r in text.splitlines() if r.startswith(f"| {label}, seed {seed} |"))
+        cells = [c.strip() for c in row.strip("|").split("|")]
+        assert cells[1].startswith(f"{part['muscles_scored']} of {part['muscles_drawn']}")
+        assert (cells[2].removesuffix(" %"), cells[3], cells[4]) == errors(part), label
+        assert cells[6] == cover(part), label
+        short = "range" if label == "practical range" else "box"
+        row = next(r for r in text.splitlines()
+                   if r.startswith(f"| {short}, seed {seed} ({part['muscles_scored']}) |"))
+        cells = [c.strip() for c in row.strip("|").split("|")]
+        assert cells[1] == " / ".join(errors(part)).replace(" % /", " /"), label
+        assert cells[2] == cover(part), label
+
+
+def test_the_guides_pooled_range_surrogate_rows_are_their_measured_file():
+    """The pooled draws' rows of surrogates.md (seeds 20261701-20261705 and that seed's box)
+    hold the coverage of ``surrogate_range_gp_pooled.json`` (98.2 % within 3 std where the
+    surrogate now holds 97.7 %)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "surrogate_range_gp_pooled.json").read_text(
+        encoding="utf-8"))
+    assert "--seed 20261701 --draws 5 " in record["provenance"]["command"]
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    for part, starts in ((record["practical_range_pooled"],
+                          ("| practical range, seeds 20261701-20261705 pooled |",
+                           "| range, seeds 20261701-20261705 pooled (")),
+                         (record["paper_box"], ("| paper's box, seed 20261701 |",
+                                                "| box, seed 20261701 ("))):
+        shares = (100 * part["std_coverage"][f"within_{k}std"] for k in (1, 2, 3))
+        cover = " / ".join("100" if f"{v:.1f}" == "100.0" else f"{v:.1f}" for v in shares)
+        for start in starts:
+            row = next(r for r in text.splitlines() if r.startswith(start))
+            assert f"| {cover} % |" in row, start
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to

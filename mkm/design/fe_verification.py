@@ -44,9 +44,8 @@ def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
     """FE forces of ``designs`` at every requirement on ``mesh`` (:func:`verify_on_mesh`), the
     chosen design's verdict made to hold: while the best design that meets every requirement
     (the first by :func:`ordered` for ``objective`` and ``demoted``) meets one by less than its
-    mesh's force
-    may lie from the fine mesh's
-    (:func:`mkm.mesh_errors.point_error_N`), it is verified again on the next finer mesh
+    mesh's force may lie from the fine mesh's (:func:`mkm.mesh_errors.point_error_N`), it is
+    verified again on the next finer mesh
     (:data:`~mkm.fem.options.MESH_LEVELS`' order), and the best is found again: the cheapest
     mesh whose verdict holds, for the one design built. The others keep their flag. Column
     ``fe_mesh`` names the mesh of each design's forces and curves. Returns what
