@@ -15,6 +15,7 @@ configured backend (``[daq] backend``, one of :mod:`mkm.bench.backends`). A bad 
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import re
 from dataclasses import dataclass, field
 from importlib import resources
@@ -26,12 +27,13 @@ import numpy as np
 from mkm.bench import backends
 from mkm.bench.settings import positive, read_toml, read_toml_file, typed_section, within
 from mkm.bench.sim_settings import Sim
-from mkm.core.records import write_atomic
+from mkm.core.records import file_sha256, write_atomic
 from mkm.fem.limits import LIMITS, check_muscle_id, check_wall
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
 DEFAULT_CONFIG = "paper_prototype.toml"
+PACKAGED_CONFIG = f"mkm.bench/configs/{DEFAULT_CONFIG}"  # as a record names it
 DEVICE_PATTERN = r"[A-Za-z0-9_][A-Za-z0-9 _.-]{0,63}"  # NI MAX names: Dev1, cDAQ1Mod1
 MAX_STEPS = 2000  # a 2000-step staircase already takes 5 to 37 hours at the default settle
 MAX_STEP_S = 3600.0  # a settle timeout, a hold, a window: at most an hour each
@@ -395,6 +397,10 @@ class BenchConfig:
     source: str = ""
     text: str = ""
     overrides: dict[str, Any] = field(default_factory=dict)  # changes made after reading `text`
+    #: how a record names the file: a packaged example by its name in the package (its
+    #: install path names one machine's folders), a user's file by its path as given
+    recorded_source: str = ""
+    source_sha256: str | None = None  # of the file's bytes, as read
 
     @property
     def force_limit_N(self) -> float:
@@ -582,7 +588,8 @@ class BenchConfig:
     def as_dict(self) -> dict[str, Any]:
         return {f.name: dataclasses.asdict(getattr(self, f.name))
                 for f in dataclasses.fields(self)
-                if f.name not in ("source", "text", "overrides")}
+                if f.name not in ("source", "text", "overrides", "recorded_source",
+                                  "source_sha256")}
 
 
 def _set_toml(table, values: dict[str, Any]) -> None:
@@ -631,7 +638,7 @@ def config_from_tables(data: dict[str, Any], text: str, source: str) -> BenchCon
         sections = {name: (read(data[name], name) if read is read_muscle
                            else typed_section(read, data[name], name))
                     for name, read in SECTIONS.items() if name in data}
-        config = BenchConfig(**sections, source=source, text=text)
+        config = BenchConfig(**sections, source=source, recorded_source=source, text=text)
         config.check()
     except ValueError as exc:
         raise ValueError(f"config {source}: {exc}") from None
@@ -675,10 +682,14 @@ def load_config(path: str | Path | None = None, eps: float | None = None,
     """
     if path is None:
         example = example_config()
-        config = parse_config(example.read_text("utf-8"), f"the packaged example {example}")
+        config = dataclasses.replace(
+            parse_config(example.read_text("utf-8"), f"the packaged example {example}"),
+            recorded_source=PACKAGED_CONFIG,
+            source_sha256=hashlib.sha256(example.read_bytes()).hexdigest())
     else:
         text, data = read_toml_file(Path(path), "config ")
-        config = config_from_tables(data, text, str(path))
+        config = dataclasses.replace(config_from_tables(data, text, str(path)),
+                                     source_sha256=file_sha256(path))
     changes: dict[str, dict] = {}
     if eps is not None:
         changes["muscle"] = {"eps": float(eps)}

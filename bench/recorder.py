@@ -83,7 +83,8 @@ class Recorder:
             sequence={**settings["sequence"], "settle": settings["settle"],
                       "force_limit_N": config.force_limit_N, "n_steps": n_steps,
                       "estimated_duration_s": list(estimated_duration_s)},
-            config_source=config.source, config_overrides=config.overrides,
+            config_source=config.recorded_source, config_sha256=config.source_sha256,
+            config_overrides=config.overrides,
             command=prov["command"], provenance=prov, started_utc=prov["date_utc"],
             process=process, unvented_before=list(unvented_before or []),
             simulated=bool(info.simulated))

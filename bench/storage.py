@@ -208,7 +208,9 @@ class RunMeta:
     """Everything ``run.json`` holds. :meth:`as_dict` writes it, :meth:`from_dict` reads it.
 
     ``sequence`` holds the configured sequence and settle criteria plus ``n_steps`` (steps
-    planned); ``steps_done`` counts the steps finished. ``stop_signal`` names the signal that
+    planned); ``steps_done`` counts the steps finished. ``config_source`` names the
+    configuration file (the packaged example by its name in the package, a user's file by its
+    path as given) and ``config_sha256`` hashes its bytes. ``stop_signal`` names the signal that
     stopped the run (``SIGTERM``...), ``stop_signal_number`` its number (exit status 128 + N).
     ``manual_vent_required`` is True when the final vent could not be verified (the command
     failed, the monitor did not fall below the threshold, or it read below it already when the
@@ -229,6 +231,7 @@ class RunMeta:
     sequence: dict[str, Any] = field(default_factory=dict)
     steps_done: int = 0
     config_source: str = ""
+    config_sha256: str | None = None
     config_overrides: dict[str, Any] = field(default_factory=dict)
     command: str = ""
     provenance: dict[str, Any] = field(default_factory=dict)
@@ -350,6 +353,7 @@ def reason_shown(reason: str) -> str:
 _FIELD_TYPES: dict[str, tuple[type, ...]] = {
     "reason": (str,), "hardware": (dict,), "calibration": (dict,), "tare": (dict, type(None)),
     "sequence": (dict,), "steps_done": (int,), "config_source": (str,),
+    "config_sha256": (str, type(None)),
     "config_overrides": (dict,), "command": (str,), "provenance": (dict,),
     "started_utc": (str,), "ended_utc": (str, type(None)), "process": (dict, type(None)),
     "counters": (dict,), "gaps": (list,), "lost_samples": (int,),

@@ -617,9 +617,10 @@ def default_target(model) -> str:
 
 def calibration_entry(fit: dict, model, reference_name: str, reference_sha256: str | None,
                       module: str) -> dict:
-    """The record of one fit: target, reference, theta0, residuals, command, date and code
+    """The record of one fit: target, reference, theta0, residuals, command, date, code
     version (:func:`mkm.core.records.source_version` of the model's module, without its data files,
-    so that writing the calibration does not change the version it records)."""
+    so that writing the calibration does not change the version it records) and the checkout's
+    git revision (null from a wheel)."""
     info = provenance()
     entry = {
         "theta0_deg": fit["theta0_deg"],
@@ -637,6 +638,7 @@ def calibration_entry(fit: dict, model, reference_name: str, reference_sha256: s
         "command": info["command"],
         "date_utc": info["date_utc"],
         "code_version": source_version(module, data=False),
+        "git": info["git"],
         "versions": info["versions"],
     }
     if "threshold_offset_bar" in fit:

@@ -310,7 +310,8 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
     run_key = f"run-{r.k}"
     prov[run_key] = {"path": str(r.run.path), "sha256": r.run.sha256(),
                      **{key: meta.get(key) for key in ("provenance", "command", "config_source",
-                                                       "config_overrides") if meta.get(key)}}
+                                                       "config_sha256", "config_overrides")
+                        if meta.get(key)}}
     r.keys = [run_key]
     steps = r.run.steps
     if steps.empty:

@@ -43,6 +43,7 @@ from mkm.core.records import (
     file_sha256,
     follow_umask,
     jsonable,
+    package_file,
     provenance,
     source_version,
     write_json_atomic,
@@ -62,6 +63,11 @@ MAX_METADATA_BYTES = 1 << 20
 
 class LibraryVersionWarning(UserWarning):
     """A surrogate is loaded with library versions other than those it was trained with."""
+
+
+class UncheckedDataWarning(UserWarning):
+    """A surrogate is loaded where its training data cannot be found: whether that data
+    changed since training is not checked."""
 
 
 def code_version(kind: str) -> str:
@@ -267,8 +273,9 @@ def check_metadata(metadata: dict, path) -> None:
     typed("metrics", dict, "the errors measured at training", optional=True)
 
 
-def mismatches(metadata: dict) -> list[str]:
-    """What differs between a saved model's checks and this installation (empty: none)."""
+def mismatches(metadata: dict, data: tuple[Path, str] | None = None) -> list[str]:
+    """What differs between a saved model's checks and this installation (empty: none);
+    ``data``: the training data found and its sha256 (:func:`training_data_file`)."""
     checks = metadata.get("checks", {})
     out = []
     current = code_version(metadata["kind"])
@@ -277,12 +284,37 @@ def mismatches(metadata: dict) -> list[str]:
                    f"it calls) is now {current}")
     if checks.get("calibration") != calibration_snapshot():
         out.append("fem/calibration.json changed since training")
-    dataset = metadata.get("dataset", {})
-    path = dataset.get("path")
-    if path and Path(path).is_file() and file_sha256(path) != dataset.get("sha256"):
-        out.append(f"training data {path} changed since training (sha256 "
-                   f"{str(dataset.get('sha256'))[:12]} -> {file_sha256(path)[:12]})")
+    recorded = metadata.get("dataset", {}).get("sha256")
+    if data is not None and data[1] != recorded:
+        out.append(f"training data {data[0]} changed since training (sha256 "
+                   f"{str(recorded)[:12]} -> {data[1][:12]})")
     return out
+
+
+def training_data_file(dataset: dict, directory=None) -> tuple[Path, str] | None:
+    """The training data a model's ``dataset`` record names, and its sha256; None where no
+    file of that path is found. Its recorded path is relative to the folder the training ran
+    in: it is looked for from the working directory and from each folder above the model's
+    ``directory`` (a project's data beside its models), nearest first. The first file there
+    with the recorded sha256 is the data, unchanged; else the first found, changed. A packaged
+    dataset of that name (a model trained on the shipped data, recorded by its name alone) is
+    the data only when its sha256 is the recorded one: another file may have its name (``mkm
+    fem dataset`` writes ``mkm_dataset.csv`` too)."""
+    path = dataset.get("path")
+    if not path:
+        return None
+    recorded = dataset.get("sha256")
+    places = [Path()] + (list(Path(directory).resolve().parents) if directory else [])
+    packaged = package_file("mkm.surrogate", "data", Path(path).name)
+    first = None
+    for candidate in [*dict.fromkeys(place / path for place in places), packaged]:
+        if candidate.is_file():
+            digest = file_sha256(candidate)
+            if digest == recorded:
+                return candidate, digest
+            if first is None and candidate is not packaged:
+                first = candidate, digest
+    return first
 
 
 def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
@@ -291,8 +323,9 @@ def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
     Raises ``ValueError`` if the folder is not a saved surrogate, its metadata is malformed or
     edited (:func:`read_metadata`), its kind is not registered, the estimator file (or the
     predictor file) does not match its recorded sha256, or (unless ``accept_mismatch``) the
-    code, calibration or training data differ from the recorded ones; warns
-    (:class:`LibraryVersionWarning`) if the libraries differ from those that trained it. A kind
+    code, calibration or training data (:func:`training_data_file`) differ from the recorded
+    ones; warns (:class:`LibraryVersionWarning`) if the libraries differ from those that
+    trained it, and (:class:`UncheckedDataWarning`) if its training data is not found. A kind
     with a predictor (:class:`mkm.surrogate.kinds.Kind`) predicts from ``predictor.npz`` (read
     with ``allow_pickle=False``) and reads its estimator file on first use of ``.estimator``;
     the others read it now. Either way a file holding a type outside those its kind trusts is
@@ -306,7 +339,9 @@ def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
     predictor_class = kinds.predictor_class(metadata["kind"])
     if predictor_class is not None:
         _check_file(directory / PREDICTOR_FILE, checks.get("predictor_sha256"))
-    differ = mismatches(metadata)
+    dataset = metadata.get("dataset", {})
+    data = training_data_file(dataset, directory)
+    differ = mismatches(metadata, data)
     if differ and not accept_mismatch:
         raise ValueError(f"surrogate {str(directory)!r} was trained for another installation: "
                          f"{'; '.join(differ)}: retrain it with `mkm surrogate train`, or "
@@ -320,6 +355,12 @@ def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
         warnings.warn(f"surrogate {str(directory)!r} was trained with other library versions "
                       f"({'; '.join(libraries)}): its predictions may differ; retrain it with "
                       "`mkm surrogate train`", LibraryVersionWarning, stacklevel=2)
+    if dataset.get("path") and data is None:
+        warnings.warn(f"surrogate {str(directory)!r}: its training data {dataset['path']} "
+                      f"(sha256 {str(dataset.get('sha256'))[:12]}) is found neither from the "
+                      "working directory nor above the model's folder: whether it changed "
+                      "since training is not checked (run from the folder it was trained in "
+                      "to check it)", UncheckedDataWarning, stacklevel=2)
     args = (metadata["kind"], metadata["inputs"], metadata["fixed"], metadata["box"], metadata)
 
     def load_estimator():

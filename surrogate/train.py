@@ -316,7 +316,7 @@ def cached_model(kind: str = "best", dataset=None, cache_dir=None,
     """
     from filelock import FileLock
 
-    from mkm.surrogate.io import load_model, save_model
+    from mkm.surrogate.io import UncheckedDataWarning, load_model, save_model
 
     directory, dataset, splits = _cache_folder(kind, dataset, cache_dir, splits)
     if not dataset.is_file():
@@ -326,6 +326,8 @@ def cached_model(kind: str = "best", dataset=None, cache_dir=None,
         if (directory / "metadata.json").is_file():
             with warnings.catch_warnings():
                 warnings.simplefilter("error")  # a stale cache entry is retrained, never trusted
+                # its folder's name holds the data's sha256 (cache_key): checked already
+                warnings.simplefilter("ignore", UncheckedDataWarning)
                 try:
                     return load_model(directory)
                 except (Warning, ValueError):

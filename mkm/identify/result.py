@@ -500,7 +500,8 @@ def _entry(theta0_deg: float, model, module: str, reference: pd.DataFrame) -> di
             "max_abs_residual_N": round(float(np.max(np.abs(residual))), 4),
             "model_params": {k: v for k, v in model.params().items() if k != "theta0_deg"},
             "command": info["command"], "date_utc": info["date_utc"],
-            "code_version": source_version(module, data=False), "versions": info["versions"]}
+            "code_version": source_version(module, data=False), "git": info["git"],
+            "versions": info["versions"]}
 
 
 def _branches(rising_pct: float, falling_pct: float) -> str:

@@ -464,6 +464,21 @@ def test_calibrate_takes_the_references_one_length_and_refuses_two_or_a_model_wi
         calibrate(lambda **p: make_model("friction", **p), reference)
 
 
+@pytest.mark.parametrize("revision", ["0123456789ab-dirty", None])
+def test_an_entry_names_the_git_revision_of_the_code_that_fitted_it(tmp_path, monkeypatch,
+                                                                    revision):
+    # was: the source hash alone, which no checkout can be found by; None is a wheel's
+    from mkm.cli import main
+    from mkm.core import records
+
+    monkeypatch.setattr(records, "git_revision", lambda root=records.CODE_ROOT: revision)
+    lab = tmp_path / "lab.json"
+    assert main(["fem", "calibrate", "--model", "eq2", "--reference", str(CASE_I_CSV),
+                 "--out", str(lab)]) == 0
+    [entry] = json.loads(lab.read_text(encoding="utf-8")).values()
+    assert entry["git"] == revision
+
+
 def test_the_command_that_writes_an_entry_keeps_a_path_with_a_space_one_argument():
     import shlex
 

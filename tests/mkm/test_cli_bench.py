@@ -29,6 +29,28 @@ def test_acquire_prints_the_run_folder_last(tmp_path, capsys):
     assert run.meta["config_overrides"]["muscle.eps"] == pytest.approx(0.122)
 
 
+def test_run_json_names_a_packaged_config_by_its_package_name_and_a_users_by_its_path(
+        tmp_path, capsys):
+    # was: the packaged example by its install path, a folder of one machine (a site-packages
+    # under the user's folder on Windows); the file's sha256 says which text it was
+    import hashlib
+
+    from mkm.bench.config import copy_example_config, example_config
+
+    own = copy_example_config(tmp_path / "my bench.toml")
+    own.write_text(own.read_text(encoding="utf-8") + "# edited\n", encoding="utf-8")
+    recorded = []
+    for config in ([], ["--config", str(own)]):
+        assert main(["acquire", *config, "--pressures", "0.5", "--out", str(tmp_path / "runs"),
+                     "--no-progress"]) == 0
+        meta = load_run(Path(capsys.readouterr().out.strip().splitlines()[-1])).meta
+        recorded.append((meta["config_source"], meta["config_sha256"]))
+    assert recorded == [
+        ("mkm.bench/configs/paper_prototype.toml",
+         hashlib.sha256(example_config().read_bytes()).hexdigest()),
+        (str(own), hashlib.sha256(own.read_bytes()).hexdigest())]
+
+
 @pytest.mark.parametrize("argv, message", [
     (["acquire", "--pressures", "0:4:1"], "above regulator.max_pressure_bar=2.5"),
     (["acquire", "--config", "/nope.toml"], "config /nope.toml does not exist"),

@@ -53,8 +53,12 @@ def test_train_predict_test(thickwall_dataset, tmp_path, capsys):
     assert lines[0] == "pressure_bar,D0_mm,t0_mm,eps,force_N,valid,converged,in_domain,reason"
     assert lines[-1] == ('3,35,2.5,0.05,,False,True,False,"outside the training domain: '
                          'pressure_bar=3 not in [0, 2.5]"')  # no force: no answer there
-    assert captured.err.startswith("mkm surrogate predict: warning: 1 of 7 points lie outside "
-                                   "the training")
+    unchecked, *rest = captured.err.splitlines()
+    # the dataset lies in a folder of its own, above no model: it cannot be checked, and is said so
+    assert unchecked.endswith("whether it changed since training is not checked (run from the "
+                              "folder it was trained in to check it)")
+    assert rest[0].startswith("mkm surrogate predict: warning: 1 of 7 points lie outside the "
+                              "training")
     # written to a file, its sidecar names the model file it came from and what trained it
     # (was: the dataset's sha256 alone: two models of one dataset read alike)
     assert main(["fem", "solve", "--model", f"surrogate:path={model}", "--D0", "35", "--t0",
@@ -219,7 +223,9 @@ def test_design_and_evaluate(thickwall_dataset, tmp_path, capsys):
     assert main(["surrogate", "evaluate", "--model", str(model), "--muscles", "2", "--seed",
                  "5", "--mesh", "coarse", "--workers", "1", "--cache", str(tmp_path / "cache"),
                  "--out", str(tmp_path / "eval")]) == 0
-    err = capsys.readouterr().err
+    # after the note that the dataset, in a folder of its own, cannot be checked
+    unchecked, err = capsys.readouterr().err.split("\n", 1)
+    assert unchecked.startswith("mkm surrogate evaluate: note: surrogate ")
     assert err.startswith("mkm surrogate evaluate: surrogate-physics on 2 random muscles "
                           "(seed 5, FE coarse)")
     summary = json.loads((tmp_path / "eval" / "offgrid_summary.json").read_text())

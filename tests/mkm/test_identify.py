@@ -573,6 +573,25 @@ def test_the_written_json_is_strict_json(one_run, tmp_path, mkm_run):
     assert assumed and all(p["ci_low"] is None and p["ci_high"] is None for p in assumed)
 
 
+def test_every_calibration_entry_names_the_git_revision(one_run, tmp_path, mkm_run,
+                                                         monkeypatch):
+    # was: the identified model's entry and the closed forms' refits carried the source hash
+    # alone, which no checkout can be found by (identification.json had the revision)
+    from mkm.core import records
+
+    monkeypatch.setattr(records, "git_revision", lambda root=records.CODE_ROOT: "0123456789ab")
+    out = tmp_path / "out"
+    code, _, err = mkm_run(["identify", str(one_run), "--params", "theta0", "--model",
+                            "thickwall", "--search", "model", "--out", str(out), "--no-progress"])
+    assert code == 0, err
+    entries = json.loads((out / "calibration.json").read_text(encoding="utf-8"))
+    assert {"thickwall", "eq2-inner"} <= set(entries)
+    assert {key: entry["git"] for key, entry in entries.items()} == dict.fromkeys(
+        entries, "0123456789ab")
+    record = json.loads((out / "identification.json").read_text(encoding="utf-8"))
+    assert record["provenance"]["git"] == "0123456789ab"
+
+
 def test_runs_of_a_slack_muscle_are_refused_saying_why(tmp_path, mkm_run):
     # the published DMSP-20 at its shortest length (every force 0 N): was "mkm identify:
     # error: math domain error" (the fit's residual 0, its BIC the log of 0)

@@ -16,6 +16,7 @@ from mkm.surrogate.io import (
     ESTIMATOR_FILE,
     METADATA_FILE,
     LibraryVersionWarning,
+    UncheckedDataWarning,
     load_model,
     metadata_sha256,
     save_model,
@@ -129,6 +130,35 @@ def test_changed_training_data_is_refused(saved, tmp_path):
     rewrite_metadata(copy, lambda m: m["dataset"].update({"path": str(data)}))
     with pytest.raises(ValueError, match="training data .* changed since training"):
         load_model(copy)
+
+
+def test_training_data_is_checked_where_it_lies_above_the_model(saved, tmp_path, monkeypatch):
+    # was: only from the folder the training ran in (the recorded path is relative to it)
+    project = tmp_path / "project"
+    (project / "data").mkdir(parents=True)
+    data = project / "data" / "d.csv"
+    data.write_bytes(saved[2].read_bytes())
+    copy = copy_model(saved[1], project / "models")
+    rewrite_metadata(copy, lambda m: m["dataset"].update(
+        {"path": "data/d.csv", "sha256": file_sha256(data)}))
+    (tmp_path / "elsewhere").mkdir()
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # found and unchanged: nothing to say
+        load_model(copy)
+    data.write_bytes(data.read_bytes() + b"\n")
+    with pytest.raises(ValueError, match=r"training data .*d\.csv changed since training"):
+        load_model(copy)
+
+
+def test_training_data_found_nowhere_is_said_unchecked(saved, tmp_path, monkeypatch):
+    # the shipped mkm_dataset.csv is another file of that name: no false "changed"
+    copy = copy_model(saved[1], tmp_path / "model")
+    rewrite_metadata(copy, lambda m: m["dataset"].update({"path": "mkm_dataset.csv"}))
+    monkeypatch.chdir(tmp_path)
+    with pytest.warns(UncheckedDataWarning, match=r"its training data mkm_dataset\.csv \(sha256 "
+                      r"[0-9a-f]{12}\) is found neither .* not checked"):
+        assert load_model(copy).kind == "physics"
 
 
 def test_tampered_estimator_is_refused(saved, tmp_path):
