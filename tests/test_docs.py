@@ -640,6 +640,27 @@ def test_the_guides_pooled_range_surrogate_rows_are_their_measured_file():
             assert f"| {cover} % |" in row, start
 
 
+@pytest.mark.parametrize(("measured", "seed"), [("surrogate_std_coverage.json", 20261501),
+                                              ("surrogate_std_coverage_fresh.json", 20261901)])
+def test_the_guides_default_surrogate_std_rows_are_their_measured_files(measured, seed):
+    """surrogates.md types the default surrogate's std coverage on two runs of 25 fresh draws
+    by hand; each row is held to the file its command writes, and the row pooled over them
+    and the test set, which no command makes, says how and when it was made."""
+    import json
+
+    record = json.loads((DOCS / "measured" / measured).read_text(encoding="utf-8"))
+    assert f"--seed {seed} " in record["command"]
+    pooled = record["offgrid_pooled"]
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    first, last = pooled["seeds"][0], pooled["seeds"][-1]
+    assert first == seed
+    row = next(r for r in text.splitlines() if r.startswith(f"| fresh, seeds {first}-{last} |"))
+    cells = [c.strip() for c in row.strip("|").split("|")]
+    assert int(cells[1]) == pooled["muscles"]
+    assert cells[3] == " / ".join(f"{100 * pooled[f'within_{k}std']:.1f}" for k in (1, 2, 3)) + " %"
+    assert "pooled by hand" in " ".join(text[text.index("| **fresh, pooled** |"):].split())[:600]
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
