@@ -33,7 +33,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from mkm.core.records import jsonable, provenance
+from mkm.core.records import jsonable, provenance, recorded_path
 from mkm.surrogate.design import EVAL_PRESSURES, build_practical_set, fe_sweeps, random_muscles
 from mkm.surrogate.kinds import make_estimator
 from mkm.surrogate.quiet import quiet_fits
@@ -99,7 +99,9 @@ def main() -> None:
     start = time.perf_counter()
     if args.train is None:
         model = cached_model(args.kind)
-        estimator, train = model.estimator, model.metadata["dataset"]
+        estimator, train = model.estimator, dict(model.metadata["dataset"])
+        # a cached model names the file as the checkout that trained it saw it
+        train["path"] = recorded_path(train["path"])
         print(f"{args.kind} as shipped ({train['n_muscles']} muscles), loaded or trained in "
               f"{time.perf_counter() - start:.0f} s")
     else:

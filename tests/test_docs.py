@@ -260,7 +260,6 @@ PATHS_NOT_RERUN = {
     "/work/wt-provenance9/surrogate/data/mkm_design.csv": "surrogate_limits_box.json's set",
     "/work/wt/calstd/surrogate/data/mkm_design.csv": "surrogate_std_coverage*.json's set",
     "/work/main/surrogate/data/mkm_range_design.csv": "surrogate_limits_range*.json's set",
-    "/work/wt/calstd/surrogate/data/mkm_range_design.csv": "surrogate_range_gp*.json's set",
     "/work/wt/lock/surrogate/data/mkm_range_design.csv": "surrogate_range_lock.json's set",
 }
 
