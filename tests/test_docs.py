@@ -660,6 +660,43 @@ def test_the_guides_default_surrogate_std_rows_are_their_measured_files(measured
     assert "pooled by hand" in " ".join(text[text.index("| **fresh, pooled** |"):].split())[:600]
 
 
+def test_the_guides_range_surrogate_over_every_draw_and_the_check_set_is_its_measured_file():
+    """surrogates.md pooled the range surrogate's seven fresh draws and its check set by hand
+    (68.0 / 90.4 / 98.1 % on 421 muscles; the check set alone 66.3 / 91.4 / 98.6 %), which no
+    recorded command made; both are held to ``surrogate_range_gp_all.json``, whose command
+    pools them."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "surrogate_range_gp_all.json").read_text(
+        encoding="utf-8"))
+    command = record["provenance"]["command"]
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    # the guide's command is the recorded one
+    assert command.split("--kind", 1)[1] in " ".join(text.replace("\\\n", " ").split())
+    assert "--pool-with tests/surrogate/data/range_check.csv" in command
+
+    def cover(part):
+        shares = (100 * part["std_coverage"][f"within_{k}std"] for k in (1, 2, 3))
+        return " / ".join("100" if f"{v:.1f}" == "100.0" else f"{v:.1f}" for v in shares) + " %"
+
+    pooled = record["practical_range_pooled"]
+    draws = len(record["draw_seeds"])
+    row = next(r for r in text.splitlines()
+               if r.startswith(f"| practical range, the {draws} draws above and the check set "))
+    cells = [c.strip() for c in row.strip("|").split("|")]
+    assert cells[1] == f"{pooled['muscles_scored']} of {pooled['muscles_drawn']}"
+    assert (cells[2], cells[3], cells[4]) == (
+        f"{pooled['worst_pct']:#.3g}".rstrip(".") + " %", f"{pooled['median_pct']:.3f} %",
+        f"{pooled['p90_pct']:.2f} %")
+    assert cells[6] == f"**{cover(pooled)}**"
+    (check,) = record["pool_with"]
+    assert check["file"] == "range_check.csv"
+    line = " ".join(text[text.index("(The check set is"):].split(")", 1)[0].split())
+    assert f"before, {cover(check)} now;" in line
+    beyond = 100 - 100 * pooled["std_coverage"]["within_2std"]
+    assert f"The points beyond 2 std ({beyond:.1f} % of them)" in " ".join(text.split())
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
