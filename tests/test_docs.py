@@ -697,6 +697,36 @@ def test_the_guides_range_surrogate_over_every_draw_and_the_check_set_is_its_mea
     assert f"The points beyond 2 std ({beyond:.1f} % of them)" in " ".join(text.split())
 
 
+def test_the_guides_lock_variants_table_is_its_measured_file():
+    """surrogates.md types out ``surrogate_range_lock.json``'s variants by hand, and quoted the
+    shipped model on its sets as 277 muscles, worst 6.4 %, 22 above 1 % (the sets of 3 December,
+    before the held-out set grew) beside the file's 525, 17.9 % and 38: the table and the
+    sentence on the shipped sets are held to the file."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "surrogate_range_lock.json").read_text(
+        encoding="utf-8"))
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    table = text[text.index("docs/measured/surrogate_range_lock.json"):].split("\n\n", 2)[1]
+    rows = [[c.strip() for c in r.strip("|").split("|")] for r in table.splitlines()[2:]]
+
+    def cells(pooled):
+        return [f"{pooled['worst_pct']:.3g} %", f"{pooled['median_pct']:.3f} %",
+                f"{pooled['p90_pct']:.2f} %", str(pooled["above_1pct"])]
+
+    for name, variant in record["variants"].items():
+        label = "shipped: `log k`, one restart" if name == "shipped" else f"(`{name}`)"
+        (row,) = [r for r in rows if r[0] == label or r[0].endswith(label)]
+        assert row[1:] == cells(variant["pooled"]), name
+    shipped = record["variants"]["shipped"]["pooled"]
+    said = " ".join(text.split())
+    assert (f"On the {shipped['muscles']} muscles with force those sets hold now "
+            f"(`surrogate_range_lock.json`, below) the shipped model's worst is "
+            f"{shipped['worst_pct']:.3g} %, its median {shipped['median_pct']:.3f} % and "
+            f"{shipped['above_1pct']} muscles are above 1 %.") in said
+    assert "held on 3 December 2026 (none in the fit; a scratch comparison" in said
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
