@@ -727,6 +727,43 @@ def test_the_guides_lock_variants_table_is_its_measured_file():
     assert "held on 3 December 2026 (none in the fit; a scratch comparison" in said
 
 
+def test_the_threshold_pages_words_on_the_fe_fits_are_its_measured_file():
+    """threshold.md's paragraphs under the generated table of ``threshold_fe.json`` quote its
+    figures by hand: ``make bench-docs`` re-measures the table and would leave them behind."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "threshold_fe.json").read_text(encoding="utf-8"))
+    text = (DOCS / "guide" / "threshold.md").read_text(encoding="utf-8")
+    said = " ".join(text[text.index("**The FE's contact on the maps.**"):].split("\n\n", 3)[2]
+                    .split())
+
+    def row(muscle, rest, model, physics):
+        (found,) = [r for r in record["rows"] if r["muscle"] == f"Festo {muscle}"
+                    and r["rest length"].startswith(rest) and r["model"].startswith(model)
+                    and r["physics"].startswith(physics)]
+        return found
+
+    rest, other, threshold = ("rest curve max err %", "other lengths max err %",
+                              "P* at the longest length bar")
+    fe = row("DMSP-20-300", "300", "thick-wall", "FE")
+    closed = row("DMSP-20-300", "300", "thick-wall", "closed")
+    assert (f"the FE without a gap predicts the rest-length curve within {fe[rest]:.1f} % of the "
+            f"largest force and its threshold at {fe[threshold]:.2f} bar (measured "
+            f"{fe['measured P* bar']:.2f} bar), the other lengths within {fe[other]:.1f} % (the "
+            f"closed form {closed[other]:.1f} %") in said
+    fe = row("DMSP-10-250", "250", "gap", "FE")
+    closed = row("DMSP-10-250", "250", "gap", "closed")
+    assert (f"missed by {fe[rest]:.1f} % of the largest force (the closed form's "
+            f"{closed[rest]:.1f} %), the other lengths by {fe[other]:.1f} % ({closed[other]:.1f} "
+            f"%), and its threshold at the nominal length, {fe[threshold]:.2f} bar") in said
+    assert f"the closed form's {closed[threshold]:.2f} inside it" in said
+    assert f"({fe['gap mm']:.2f} mm against {closed['gap mm']:.2f} mm)" in said
+    fe = row("DMSP-10-250", "250", "thick-wall", "FE")
+    closed = row("DMSP-10-250", "250", "thick-wall", "closed")
+    assert (f"Without a gap the FE misses the rest-length curve by {fe[rest]:.1f} % (closed "
+            f"form {closed[rest]:.1f} %)") in said
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
