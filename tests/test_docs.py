@@ -764,6 +764,29 @@ def test_the_threshold_pages_words_on_the_fe_fits_are_its_measured_file():
             f"form {closed[rest]:.1f} %)") in said
 
 
+def test_the_uncertainty_pages_words_on_the_budget_coverage_are_its_measured_file():
+    """uncertainty.md's paragraph under the generated table of ``budget_coverage.json`` quotes
+    its pooled coverage by hand: ``make bench-docs`` re-measures the table and would leave the
+    words behind."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "budget_coverage.json").read_text(encoding="utf-8"))
+    text = (DOCS / "guide" / "uncertainty.md").read_text(encoding="utf-8")
+    said = " ".join(text[text.index("_generated/bench_budget_coverage.md"):].split("\n\n", 2)[1]
+                    .split())
+    packaged, components = record["all"]["accuracy"], record["all"]["components"]
+    by_bar = {float(k): v
+              for k, v in components["pressure_covered_percent_by_set_pressure_bar"].items()}
+    assert packaged["steps"] == components["steps"]
+    assert (f"Force: {packaged['force_covered_percent']:.1f} % of {packaged['steps']} steps with "
+            f"the packaged configuration, {components['force_covered_percent']:.1f} % with the "
+            f"components. Pressure with the components declared: "
+            f"{components['pressure_covered_percent']:.1f} % pooled, "
+            f"{min(v for b, v in by_bar.items() if b >= 0.75):.1f} to "
+            f"{max(v for b, v in by_bar.items() if b >= 0.75):.1f} % from 0.75 to 2.5 bar, "
+            f"{by_bar[0.5]:.1f} % at 0.5 bar and {by_bar[0.25]:.1f} % at 0.25 bar") in said
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
