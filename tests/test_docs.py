@@ -787,6 +787,37 @@ def test_the_uncertainty_pages_words_on_the_budget_coverage_are_its_measured_fil
             f"{by_bar[0.5]:.1f} % at 0.5 bar and {by_bar[0.25]:.1f} % at 0.25 bar") in said
 
 
+@pytest.mark.parametrize(("measured", "heading"), [
+    ("surrogate_limits_range.json", "Largest |Err%| per muscle (Equation 7), over the range"),
+    ("surrogate_limits_box.json", "In the paper's box (`muscle-gp`, 320 fresh muscles")])
+def test_the_guides_learning_curves_are_their_measured_files(measured, heading):
+    """surrogates.md types out ``bench_surrogate_limits.py``'s tables by hand (each repeat's
+    figure after a slash); every figure is held to its file to the digits it prints."""
+    import json
+
+    record = json.loads((DOCS / "measured" / measured).read_text(encoding="utf-8"))
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    table = text[text.index(heading):].split("\n\n", 2)[1]
+    rows = [[c.strip() for c in r.strip("|").split("|")] for r in table.splitlines()[2:]]
+    by_fraction = {}
+    for result in record["learning_curve"]:
+        by_fraction.setdefault(result["fraction"], []).append(result)
+    expected = [[record["form"]]] + [by_fraction[f] for f in sorted(by_fraction)]
+    if "other_design" in record:
+        expected.append([record["other_design"]])
+    assert len(rows) == len(expected)
+    keys = ("worst_pct", "p98_pct", "p90_pct", "median_pct", "above_target")
+    for row, results in zip(rows, expected, strict=True):
+        if results[0] is not record["form"]:
+            assert row[1] == str(results[0].get("training_muscles")), row
+        for cell, key in zip(row[2:], keys, strict=True):
+            figures = re.findall(r"[\d.]+", cell)
+            assert len(figures) == len(results), (row[0], key)
+            for figure, result in zip(figures, results, strict=True):
+                last = 10.0 ** -len(figure.partition(".")[2])  # the digit it prints
+                assert abs(float(figure) - result[key]) <= last / 2 + 1e-9, (row[0], key)
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
