@@ -842,6 +842,24 @@ def test_the_calibration_pages_silent_miss_is_its_measured_file():
     assert summary["heldout_in_band"]["runs_inside_percent"] == 100.0
 
 
+def test_the_calibration_pages_words_on_the_wall_are_its_measured_file():
+    """calibration.md quotes ``identify_t0.json``'s intervals by hand under its generated
+    table: ``make bench-docs`` re-measures the table and would leave the words behind."""
+    import json
+
+    rows = json.loads((DOCS / "measured" / "identify_t0.json").read_text(encoding="utf-8"))[
+        "rows"]
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    half = [(r["t0_ci_high_mm"] - r["t0_ci_low_mm"]) / 2 for r in rows]
+    worst = max(abs(r["t0_error_mm"]) for r in rows)
+    said = re.search(r"every draw's interval covers the true 3 mm, \+-([\d.]+)-([\d.]+) mm "
+                     r"wide, while the estimate is within ([\d.]+) mm", text)
+    assert said, "the sentence on the wall's interval"
+    assert all(r["covered"] for r in rows)
+    assert (f"{min(half):.2f}", f"{max(half):.2f}") == said.group(1, 2)
+    assert worst <= float(said.group(3)) < worst + 0.01
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
