@@ -860,6 +860,22 @@ def test_the_calibration_pages_words_on_the_wall_are_its_measured_file():
     assert worst <= float(said.group(3)) < worst + 0.01
 
 
+def test_the_design_pages_fe_verification_is_its_measured_file():
+    """design.md says the medium mesh's verdict held on both specs of ``design.json`` and quotes
+    the seconds a bound stated for every wall alike took, which no recorded file holds (the
+    file is measured with the wall's own bound): it says when and how they were measured."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "design.json").read_text(encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "design.md").read_text(encoding="utf-8").split())
+    checked = [r for r in record["rows"] if r["stage"] == "FE verification (as mkm design)"]
+    assert len(checked) == 2 and "on the two specs it measures" in text
+    assert all(r["verified_finer"] == 0 for r in checked)
+    assert "(`verified_finer` 0 in `docs/measured/design.json`)" in text
+    assert ("(medians of two; the same benchmark on 6 December 2026 with that bound, before "
+            "`design.json` was measured again with the wall's own)") in text
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
