@@ -915,6 +915,22 @@ def test_the_fe_pages_words_on_where_a_sweep_spends_its_time_are_its_measured_fi
             assert all(0.25 <= shares[p] <= 0.4 for p in parts[1:]), row
 
 
+def test_the_bench_pages_console_close_seconds_are_its_measured_file():
+    """bench.md quotes ``console_close.json``'s medians by hand: ``make bench-docs``
+    re-measures the validation page's table and would leave the words behind."""
+    import json
+
+    rows = {r["regulator"]: r for r in json.loads(
+        (DOCS / "measured" / "console_close.json").read_text(encoding="utf-8"))["rows"]}
+    text = " ".join((DOCS / "guide" / "bench.md").read_text(encoding="utf-8").split())
+    exhausts, stuck = rows["exhausts"], rows["stuck"]
+    assert all(r["bad"] == 0 for r in rows.values())
+    assert (f"the vent command {exhausts['to vent, median [s]']:.1f} s after the event, run.json "
+            f"marked at {exhausts['to run.json marked, median [s]']:.2f} s, the record final at "
+            f"{exhausts['to recorded, median [s]']:.1f} s (a regulator exhausting") in text
+    assert f"or {stuck['to recorded, median [s]']:.1f} s (a stuck one, the check cut)" in text
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
