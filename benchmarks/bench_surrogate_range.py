@@ -4,7 +4,8 @@ Run outside the test suite:
 
     .venv/bin/mkm surrogate design --range practical --muscles 600 --seed S0 --out TRAIN.csv
     .venv/bin/python benchmarks/bench_surrogate_range.py --train TRAIN.csv [--kind muscle-gp]
-        [--muscles 60] [--box-muscles 40] [--seed S] [--draws N] [--out FILE.json]
+        [--muscles 60] [--box-muscles 40] [--seed S] [--draws N] [--seeds S1 S2 ...]
+        [--pool-with FE.csv ...] [--out FILE.json]
     .venv/bin/python benchmarks/bench_surrogate_range.py --kind muscle-gp-range [...]
 
 Fits ``--kind`` on the FE sweeps of ``--train`` (one BLAS thread), or without ``--train`` takes
@@ -18,7 +19,10 @@ printed and recorded; sweeps 0-8 bar) and ``--box-muscles`` fresh muscles of the
 and left out) and, for a kind with a std, the share of points within 1, 2 and 3 std (a
 calibrated std: 68.27, 95.45, 99.73 %). ``--draws N`` draws the practical range N times (seeds
 S, S+1, ...; the box once, seed S) and adds the errors and coverage pooled over the draws (the
-points of one muscle share its errors: coverage moves several points between draws of 60).
+points of one muscle share its errors: coverage moves several points between draws of 60);
+``--seeds`` names the draws' seeds instead (the box drawn once, with the first) and
+``--pool-with`` adds FE sets of the practical range made before (a check set), each scored
+alone and pooled with the draws.
 Targets: over the range worst <= 1 %, median <= 0.2 %; in the box worst <= 0.25 %.
 """
 
@@ -32,8 +36,9 @@ from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
+import pandas as pd
 
-from mkm.core.records import jsonable, provenance
+from mkm.core.records import jsonable, provenance, recorded_path
 from mkm.surrogate.design import EVAL_PRESSURES, build_practical_set, fe_sweeps, random_muscles
 from mkm.surrogate.kinds import make_estimator
 from mkm.surrogate.quiet import quiet_fits
@@ -92,14 +97,34 @@ def main() -> None:
     parser.add_argument("--draws", type=int, default=1,
                         help="draws of --muscles over the practical range, seeds S, S+1, ... "
                         "(default 1); errors and coverage pooled over them as well")
+    parser.add_argument("--seeds", type=int, nargs="+", default=None,
+                        help="the practical range's draws by seed, instead of --seed/--draws")
+    parser.add_argument("--pool-with", nargs="+", default=[], metavar="FE_CSV",
+                        help="FE sets of the practical range (CSV with sidecar) scored alone "
+                        "and pooled with the draws")
     parser.add_argument("--out", default=None)
     args = parser.parse_args()
-    seed = args.seed if args.seed is not None else int(np.random.SeedSequence().entropy % 2**32)
+    if args.draws < 1:
+        parser.error(f"--draws {args.draws} is invalid: expected at least 1")
+    if args.seeds is not None and (args.seed is not None or args.draws != 1):
+        parser.error("--seeds names every draw: expected it without --seed and --draws")
+    pooled_sets = []
+    for path in args.pool_with:  # before the FE, so a bad file costs nothing
+        try:
+            pooled_sets.append((Path(path), load_training_data(path),
+                                int(pd.read_csv(path, usecols=["muscle"])["muscle"].nunique())))
+        except (OSError, ValueError) as error:
+            parser.error(f"--pool-with {path} is not an FE set: {error}")
+    seed = (args.seeds[0] if args.seeds else args.seed if args.seed is not None
+            else int(np.random.SeedSequence().entropy % 2**32))
+    draw_seeds = args.seeds or [seed + k for k in range(args.draws)]
     print(f"seed {seed}")
     start = time.perf_counter()
     if args.train is None:
         model = cached_model(args.kind)
-        estimator, train = model.estimator, model.metadata["dataset"]
+        estimator, train = model.estimator, dict(model.metadata["dataset"])
+        # a cached model names the file as the checkout that trained it saw it
+        train["path"] = recorded_path(train["path"])
         print(f"{args.kind} as shipped ({train['n_muscles']} muscles), loaded or trained in "
               f"{time.perf_counter() - start:.0f} s")
     else:
@@ -110,26 +135,31 @@ def main() -> None:
         train = data.summary()
         print(f"{args.kind} fitted on {data.n_muscles} muscles in "
               f"{time.perf_counter() - start:.0f} s")
-    if args.draws < 1:
-        parser.error(f"--draws {args.draws} is invalid: expected at least 1")
-    results = {"seed": seed, "kind": args.kind, "train": train,
-               "draw_seeds": [seed + k for k in range(args.draws)]}
+    results = {"seed": seed, "kind": args.kind, "train": train, "draw_seeds": draw_seeds}
     with tempfile.TemporaryDirectory() as folder:
         draws = []
-        for k in range(args.draws):
+        for k, draw_seed in enumerate(draw_seeds):
             practical = Path(folder) / f"practical_{k}.csv"
-            build_practical_set(args.muscles, seed + k, practical, progress=False)
+            build_practical_set(args.muscles, draw_seed, practical, progress=False)
             draws.append(load_training_data(practical))
+        several = len(draw_seeds) > 1
         results["practical_range"] = summary(
-            "practical range" + (f", seed {seed}" if args.draws > 1 else ""), estimator,
+            "practical range" + (f", seed {seed}" if several else ""), estimator,
             draws[0], args.muscles)
-        if args.draws > 1:
+        if several:
             results["practical_range_draws"] = [results["practical_range"]] + [
-                summary(f"practical range, seed {seed + k}", estimator, draws[k], args.muscles)
-                for k in range(1, args.draws)]
+                summary(f"practical range, seed {s}", estimator, d, args.muscles)
+                for s, d in zip(draw_seeds[1:], draws[1:], strict=True)]
+        if pooled_sets:
+            results["pool_with"] = [
+                {"file": path.name, **summary(path.name, estimator, data, drawn)}
+                for path, data, drawn in pooled_sets]
+        if several or pooled_sets:
             results["practical_range_pooled"] = summary(
-                f"practical range, {args.draws} draws pooled", estimator, draws,
-                args.muscles * args.draws)
+                f"practical range, {len(draw_seeds)} draws"
+                + "".join(f" and {path.name}" for path, _, _ in pooled_sets) + " pooled",
+                estimator, draws + [data for _, data, _ in pooled_sets],
+                args.muscles * len(draw_seeds) + sum(drawn for _, _, drawn in pooled_sets))
         box = random_muscles(args.box_muscles, seed)
         frame, _ = fe_sweeps(box, "fine", EVAL_PRESSURES, progress=False)
         path = Path(folder) / "box.csv"
