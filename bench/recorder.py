@@ -36,7 +36,9 @@ from mkm.bench.storage import (
     RunWriter,
     Sample,
     StepRecord,
+    write_samples,
 )
+from mkm.core.home import user_state
 from mkm.core.records import provenance
 
 # On Windows a file another program holds open cannot be replaced (PermissionError): a virus
@@ -88,6 +90,10 @@ class Recorder:
             process=process, unvented_before=list(unvented_before or []),
             simulated=bool(info.simulated))
         self.writer = RunWriter(out_root, self.meta, config.effective_text())  # run.json first
+        # where the samples the run folder refuses to the end are kept (the user state folder,
+        # local and kept across restarts); resolved now, as the run's other state files are
+        self.kept_path = user_state("unwritten", f"{self.writer.path.name}-samples.csv")
+        self.kept = ""  # what became of them there, in words ("" while none is left)
         self._refused = False  # an append of samples failed (the disk)
         # rows taken from the queue and not on disk yet: a block being written, or rows the disk
         # refused, written again first with the next block (samples.csv cut back to its whole
@@ -214,8 +220,8 @@ class Recorder:
             self.writer.release_reserve()
             try:
                 self._write_unwritten()
-            except OSError:
-                pass  # said by refusals()
+            except OSError:  # said by refusals()
+                self._keep_unwritten()
         elif kind == "sync":  # the run's books before a step it may not outlive
             try:
                 self._save_retrying()
@@ -239,6 +245,20 @@ class Recorder:
             raise
         self.meta.counters["samples"] += len(self._unwritten)
         self._unwritten = []
+
+    def _keep_unwritten(self) -> None:
+        """The samples the run folder refused to the end, written to :attr:`kept_path` instead:
+        a run keeps every sample it acquired; :attr:`kept` says where, or why not."""
+        rows = self._unwritten
+        span = f"{rows[0].sample}-{rows[-1].sample}" if len(rows) > 1 else f"{rows[0].sample}"
+        try:
+            write_samples(self.kept_path, rows)
+        except OSError as exc:
+            self.kept = (f"{len(rows)} samples could not be written, nor kept in "
+                         f"{self.kept_path} ({type(exc).__name__}: {exc})")
+        else:
+            self.kept = (f"{len(rows)} samples could not be written to the run folder: "
+                         f"samples {span} are kept in {self.kept_path}")
 
     @staticmethod
     def _what(kind: str, payload) -> str:
@@ -374,7 +394,7 @@ class Recorder:
         except BaseException as exc:  # never raises: the outcome must still be recorded
             return (f"the recorder's thread failed ({self.crashed}), and so did writing the "
                     f"{self.held_rows} samples it held ({type(exc).__name__}: {exc})")
-        left = f", {len(self._unwritten)} of them could not be" if self._unwritten else ""
+        left = f"; {self.kept}" if self._unwritten else ""
         return (f"the recorder's thread failed ({self.crashed}): the {held} samples it held "
                 f"were written as the run ended{left}")
 
@@ -406,7 +426,6 @@ class Recorder:
         what, exc = untold[0]
         more = f", and {len(untold) - 1} later write(s)" if len(untold) > 1 else ""
         if any(w.startswith("samples") for w, _ in untold):
-            kept = ("written again" if not self._unwritten else
-                    f"{len(self._unwritten)} samples could not be written")
+            kept = "written again" if not self._unwritten else self.kept
             return [f"the disk refused {what} ({type(exc).__name__}: {exc}){more}; {kept}"]
         return [f"recording failed for {what} ({type(exc).__name__}: {exc}){more}"]

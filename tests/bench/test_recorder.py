@@ -582,3 +582,57 @@ def test_a_close_that_fails_otherwise_than_the_disk_still_records_the_outcome(tm
     run = load_run(Path(captured.out.strip().splitlines()[-1]))  # the path is still printed
     assert run.status == "complete" and rc != 0  # the outcome kept, the problem said
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
+
+
+def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(config, tmp_path,
+                                                                             monkeypatch):
+    # a run folder that went read-only at sample 60 (a share remounted, permissions changed)
+    # lost the samples it refused from then on: "23 samples could not be written". Now they
+    # are written to the user state folder, and the reason (kept in the bench marker when
+    # run.json is refused too) names the file
+    import json
+
+    import pandas as pd
+
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.run import acquire
+
+    queued, read_only = [], {"from": None}
+    samples, append = Recorder.samples, RunWriter.append_samples
+
+    def spy(self, rows):
+        queued.extend(r.sample for r in rows)
+        samples(self, rows)
+
+    def denied(*args):
+        raise PermissionError(errno.EACCES, "Permission denied")
+
+    def read_only_from_60(self, rows):
+        if rows[-1].sample >= 60:
+            read_only["from"] = 60
+        if read_only["from"] is not None:
+            denied()
+        append(self, rows)
+
+    def guarded(method):
+        def call(self, *args):
+            if read_only["from"] is not None:
+                denied()
+            return method(self, *args)
+        return call
+
+    monkeypatch.setattr(Recorder, "samples", spy)
+    monkeypatch.setattr(RunWriter, "append_samples", read_only_from_60)
+    monkeypatch.setattr(RunWriter, "reopen_samples", guarded(RunWriter.reopen_samples))
+    monkeypatch.setattr(RunWriter, "write_meta", guarded(RunWriter.write_meta))
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 2
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    assert f"are kept in {kept}" in result.reason
+    on_disk = pd.read_csv(result.path / "samples.csv")["sample"].tolist()
+    elsewhere = pd.read_csv(kept)["sample"].tolist()
+    assert on_disk == list(range(60)) and elsewhere[0] == 60  # the folder refused from 60 on
+    assert on_disk + elsewhere == queued  # every sample acquired, once, in order
+    # run.json refused too: the marker keeps the outcome, and with it the file's name
+    marker, = (tmp_path / "mkm-state" / "benches").glob("*/*.json")
+    assert str(kept) in json.loads(marker.read_text(encoding="utf-8"))["outcome"]["reason"]
