@@ -302,10 +302,11 @@ class Recorder:
             self._told = len(self._failures)
         raise exc
 
-    def refused(self, exc: BaseException) -> bool:
-        """Whether ``exc`` is a write the disk refused (raised by :meth:`raise_failure`)."""
+    def refused(self, exc: BaseException) -> str:
+        """What the disk refused in ``exc`` (raised by :meth:`raise_failure`: ``samples 30``,
+        ``step 0``), or "" when ``exc`` is none of its refusals."""
         with self._cond:
-            return any(exc is failure for _, failure in self._failures)
+            return next((what for what, failure in self._failures if exc is failure), "")
 
     def stuck(self) -> str:
         """Why the disk is not taking the record ("" while it is): more than

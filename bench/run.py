@@ -603,9 +603,11 @@ class BenchRun:
         elif isinstance(outcome, OSError) and (
                 outcome is self._folder_error or
                 (self.recorder is not None and self.recorder.refused(outcome))):
-            # the run folder's disk: full, gone, read-only
+            # the run folder's disk: full, gone, read-only; what it refused, when a write
+            what = self.recorder.refused(outcome) if self.recorder is not None else ""
             status, exit_code = RunStatus.FAILED, EXIT_STORAGE
-            reason = f"recording failed ({type(outcome).__name__}: {outcome})"
+            reason = (f"recording failed{f' for {what}' if what else ''} "
+                      f"({type(outcome).__name__}: {outcome})")
         elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
             status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
         elif outcome is not None:

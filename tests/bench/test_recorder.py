@@ -28,8 +28,8 @@ def test_disk_full_during_a_run_vents_syncs_and_prints_the_run(tmp_path, capsys,
     captured = capsys.readouterr()
     assert rc == 2  # storage failed: exit 2, like bad input
     assert captured.err.count("\n") == 2 and "mkm acquire: SIMULATED bench (sim)" in captured.err
-    assert "run SIMULATED failed: recording failed (OSError: [Errno 28] No space left on " \
-        "device)" in captured.err
+    assert "run SIMULATED failed: recording failed for samples 30 (OSError: [Errno 28] No " \
+        "space left on device)" in captured.err
     run = load_run(Path(captured.out.strip().splitlines()[-1]))  # the path is still printed
     assert run.status == "failed" and len(run.samples) == 30  # every sample written is kept
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
@@ -636,3 +636,38 @@ def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(con
     # run.json refused too: the marker keeps the outcome, and with it the file's name
     marker, = (tmp_path / "mkm-state" / "benches").glob("*/*.json")
     assert str(kept) in json.loads(marker.read_text(encoding="utf-8"))["outcome"]["reason"]
+
+
+def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,
+                                                                                tmp_path,
+                                                                                monkeypatch):
+    # steps.csv refuses the first step's row (EIO: a dying drive) while samples.csv takes its
+    # rows: the run stops at its next block, vents and verifies the vent, fails with exit 2
+    # (storage), and keeps every sample it acquired, the vent check's included. Its reason
+    # said only "recording failed (OSError: [Errno 5] Input/output error)", as for samples
+    # refused: now it names what the disk refused
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.run import acquire
+
+    queued, samples = [], Recorder.samples
+
+    def spy(self, rows):
+        queued.extend(r.sample for r in rows)
+        samples(self, rows)
+
+    def dying(self, row):
+        raise OSError(errno.EIO, "Input/output error")
+
+    monkeypatch.setattr(Recorder, "samples", spy)
+    monkeypatch.setattr(RunWriter, "append_step", dying)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 2, result.reason
+    # the reason names what the disk refused: the row of step 0, not samples
+    assert result.reason.startswith("recording failed for step 0 (OSError: [Errno 5] "
+                                    "Input/output error)")
+    assert not result.manual_vent_required
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"] and len(run.steps) == 0
+    assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
+    assert run.samples["sample"].tolist() == queued  # every sample, once, in order
+    assert (run.samples["phase"] == "vent").any()  # the vent check's decay with them

@@ -1110,7 +1110,8 @@ def test_a_disk_that_fills_mid_run_still_gets_the_final_record(config, tmp_path,
     monkeypatch.setattr(storage, "write_json_atomic", json_on_a_full_disk)
     result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
     assert result.status == "failed" and result.exit_code == 2
-    assert result.reason.startswith("recording failed (OSError: [Errno 28] No space left")
+    assert result.reason.startswith("recording failed for samples 40 (OSError: [Errno 28] No "
+                                    "space left")
     meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
     assert meta["status"] == "failed" and meta["reason"] == result.reason
     assert meta["vent_check"]["verified"]
