@@ -38,6 +38,7 @@ from mkm.bench.storage import (
     StepRecord,
     write_samples,
 )
+from mkm.bench.unvented import STATE_WAIT_S
 from mkm.core.home import user_state
 from mkm.core.records import provenance
 
@@ -248,17 +249,32 @@ class Recorder:
 
     def _keep_unwritten(self) -> None:
         """The samples the run folder refused to the end, written to :attr:`kept_path` instead:
-        a run keeps every sample it acquired; :attr:`kept` says where, or why not."""
-        rows = self._unwritten
+        a run keeps every sample it acquired; :attr:`kept` says where, or why not. Written on a
+        thread of its own, waited for :data:`mkm.bench.unvented.STATE_WAIT_S`: a state folder
+        that hangs (a roaming profile on a share) must not hold the run's outcome."""
+        rows, done, failed = list(self._unwritten), threading.Event(), []
         span = f"{rows[0].sample}-{rows[-1].sample}" if len(rows) > 1 else f"{rows[0].sample}"
-        try:
-            write_samples(self.kept_path, rows)
-        except OSError as exc:
-            self.kept = (f"{len(rows)} samples could not be written, nor kept in "
-                         f"{self.kept_path} ({type(exc).__name__}: {exc})")
+
+        def keep() -> None:
+            try:
+                write_samples(self.kept_path, rows)
+            except BaseException as exc:  # said below
+                failed.append(exc)
+            finally:
+                done.set()
+
+        threading.Thread(target=keep, name="mkm-recorder-keep", daemon=True).start()
+        lost = f"{len(rows)} samples could not be written to the run folder"
+        if not done.wait(STATE_WAIT_S):
+            self.kept = (f"{lost}: samples {span} are being written to {self.kept_path}, which "
+                         f"did not answer within {STATE_WAIT_S:g} s (it hangs): kept once it "
+                         "answers, lost if this process ends first")
+        elif failed:
+            exc = failed[0]
+            self.kept = (f"{lost}, nor kept in {self.kept_path} ({type(exc).__name__}: "
+                         f"{exc})")
         else:
-            self.kept = (f"{len(rows)} samples could not be written to the run folder: "
-                         f"samples {span} are kept in {self.kept_path}")
+            self.kept = f"{lost}: samples {span} are kept in {self.kept_path}"
 
     @staticmethod
     def _what(kind: str, payload) -> str:

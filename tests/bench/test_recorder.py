@@ -1,7 +1,10 @@
 """bench.recorder: a disk that fills during a run loses no more than it must and hides nothing."""
 
 import errno
+import re
 from pathlib import Path
+
+import pytest
 
 from mkm.bench.storage import RunWriter, load_run
 from mkm.cli import main
@@ -584,18 +587,10 @@ def test_a_close_that_fails_otherwise_than_the_disk_still_records_the_outcome(tm
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
 
 
-def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(config, tmp_path,
-                                                                             monkeypatch):
-    # a run folder that went read-only at sample 60 (a share remounted, permissions changed)
-    # lost the samples it refused from then on: "23 samples could not be written". Now they
-    # are written to the user state folder, and the reason (kept in the bench marker when
-    # run.json is refused too) names the file
-    import json
-
-    import pandas as pd
-
+def _read_only_from_60(monkeypatch) -> list[int]:
+    """The run folder refuses every write from sample 60 on (gone read-only: samples.csv,
+    run.json); the samples the run queued, returned, in order."""
     from mkm.bench.recorder import Recorder
-    from mkm.bench.run import acquire
 
     queued, read_only = [], {"from": None}
     samples, append = Recorder.samples, RunWriter.append_samples
@@ -625,6 +620,22 @@ def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(con
     monkeypatch.setattr(RunWriter, "append_samples", read_only_from_60)
     monkeypatch.setattr(RunWriter, "reopen_samples", guarded(RunWriter.reopen_samples))
     monkeypatch.setattr(RunWriter, "write_meta", guarded(RunWriter.write_meta))
+    return queued
+
+
+def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(config, tmp_path,
+                                                                             monkeypatch):
+    # a run folder that went read-only at sample 60 (a share remounted, permissions changed)
+    # lost the samples it refused from then on: "23 samples could not be written". Now they
+    # are written to the user state folder, and the reason (kept in the bench marker when
+    # run.json is refused too) names the file
+    import json
+
+    import pandas as pd
+
+    from mkm.bench.run import acquire
+
+    queued = _read_only_from_60(monkeypatch)
     result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
     assert result.status == "failed" and result.exit_code == 2
     kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
@@ -671,3 +682,44 @@ def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
     assert run.samples["sample"].tolist() == queued  # every sample, once, in order
     assert (run.samples["phase"] == "vent").any()  # the vent check's decay with them
+
+
+@pytest.mark.parametrize("fault", ["refused", "hangs"])
+def test_samples_the_state_folder_cannot_keep_either_are_said_and_hold_nothing(
+        config, tmp_path, monkeypatch, fault):
+    # the run folder went read-only at sample 60, and the state folder that keeps the refused
+    # samples refuses them too, or hangs (a roaming profile on a share): the run still ends,
+    # vented and recorded in its marker, saying what became of them (a hang waited for
+    # STATE_WAIT_S, the write left to finish once the folder answers)
+    import threading
+
+    import mkm.bench.recorder as recorder
+    from mkm.bench.run import acquire
+
+    _read_only_from_60(monkeypatch)
+    release = threading.Event()
+
+    def keep(path, rows):
+        if fault == "hangs":
+            release.wait(60)  # the test's net; released once the run has ended
+        raise OSError(errno.EROFS, "Read-only file system")
+
+    monkeypatch.setattr(recorder, "write_samples", keep)
+    try:
+        result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+        ended_while_hung = not release.is_set()
+    finally:
+        release.set()
+    assert result.status == "failed" and result.exit_code == 2 and ended_while_hung
+    assert not result.manual_vent_required  # vented, verified
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    said = re.search(r"(\d+) samples could not be written to the run folder(.*?); run\.json",
+                     result.reason)
+    assert said is not None and int(said.group(1)) > 0, result.reason
+    if fault == "refused":
+        assert said.group(2) == f", nor kept in {kept} (OSError: [Errno 30] Read-only file " \
+            "system)"
+    else:
+        assert said.group(2).endswith(f"are being written to {kept}, which did not answer "
+                                      "within 2 s (it hangs): kept once it answers, lost if "
+                                      "this process ends first")
