@@ -852,6 +852,9 @@ class BenchRun:
             failure = self._write_vent(acq)
         if self._watchdog is not None:  # no vent of its own from here on: reads watched
             self._watchdog.vented()
+            # a vent write of the shutdown that hung, vented by the watchdog meanwhile
+            problems.extend(part for part in (acq.hung, acq.hung_vent)
+                            if part and part not in reason and part not in problems)
         # where the reason says "vented": after the failed tries, before what came after
         vented_at = len(problems) if say_vent and (
             failure is None or (acq is not None and acq.written)) else None
