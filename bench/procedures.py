@@ -27,6 +27,7 @@ from mkm.bench.run import (
     READ_HANG_MARGIN_S,
     VENT_WRITES,
     WATCH_EVERY_S,
+    WATCHDOG_WRITE_S,
     StderrNotice,
     close_within,
     make_backend,
@@ -342,15 +343,57 @@ def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
     return out[0]
 
 
+class _WriteHung(Exception):
+    """A vent write that did not return within its bound (:class:`_BoundedWrite`)."""
+
+
+class _BoundedWrite:
+    """``backend`` whose vent write is made on a thread of its own and waited for the AO
+    write's timeout (:data:`mkm.bench.run.WATCHDOG_WRITE_S`) and
+    :data:`mkm.bench.run.READ_HANG_MARGIN_S`, as a run's watchdog waits for a command write: a
+    driver that hung in the vent check may hold its writes too. :class:`_WriteHung` past it,
+    the write left behind."""
+
+    def __init__(self, backend: Backend):
+        self._backend = backend
+
+    def write_command(self, volts: float) -> None:
+        done, failed = threading.Event(), []
+
+        def write() -> None:
+            try:
+                self._backend.write_command(volts)
+            except BaseException as exc:  # raised by the caller
+                failed.append(exc)
+            finally:
+                done.set()
+
+        threading.Thread(target=write, name="mkm-vent-write", daemon=True).start()
+        if not done.wait(WATCHDOG_WRITE_S + READ_HANG_MARGIN_S):
+            raise _WriteHung(f"did not return within {WATCHDOG_WRITE_S + READ_HANG_MARGIN_S:g} "
+                             f"s (its timeout {WATCHDOG_WRITE_S:g} s): the driver hangs")
+        if failed:
+            raise failed[0]
+
+    def __getattr__(self, name):
+        return getattr(self._backend, name)
+
+
 def _mend_dead_runs(device: Backend, owner: BenchOwner, notify
                     ) -> tuple[list[str], list]:
     """After the vent: name the runs that died without venting on this bench and mend their
-    folders; the problems met (a state folder that cannot be read or written, or hangs) and
-    the dead runs' markers."""
+    folders; the problems met (a state folder that cannot be read or written, or hangs; the
+    vent written again for them, bounded by :class:`_BoundedWrite`, that hangs) and the dead
+    runs' markers."""
     try:
-        markers = vent_unvented(device, owner.dead_runs("the bench was vented, the runs that "
-                                                        "died on it were not named"),
+        markers = vent_unvented(_BoundedWrite(device),
+                                owner.dead_runs("the bench was vented, the runs that died on "
+                                                "it were not named"),
                                 owner.on_state_folder)
+    except _WriteHung as exc:  # their markers stay: the next command vents first, names them
+        return [f"the vent written again for the runs that died on this bench {exc}; they were "
+                "not named, their folders not mended, and the next command on this bench "
+                "vents first and names them"], []
     except StateFolderBroken as exc:
         return [str(exc)], []
     except OSError as exc:

@@ -36,7 +36,10 @@ from mkm.bench.storage import (
     RunWriter,
     Sample,
     StepRecord,
+    write_samples,
 )
+from mkm.bench.unvented import STATE_WAIT_S
+from mkm.core.home import user_state
 from mkm.core.records import provenance
 
 # On Windows a file another program holds open cannot be replaced (PermissionError): a virus
@@ -89,6 +92,10 @@ class Recorder:
             process=process, unvented_before=list(unvented_before or []),
             simulated=bool(info.simulated))
         self.writer = RunWriter(out_root, self.meta, config.effective_text())  # run.json first
+        # where the samples the run folder refuses to the end are kept (the user state folder,
+        # local and kept across restarts); resolved now, as the run's other state files are
+        self.kept_path = user_state("unwritten", f"{self.writer.path.name}-samples.csv")
+        self.kept = ""  # what became of them there, in words ("" while none is left)
         self._refused = False  # an append of samples failed (the disk)
         # rows taken from the queue and not on disk yet: a block being written, or rows the disk
         # refused, written again first with the next block (samples.csv cut back to its whole
@@ -215,8 +222,8 @@ class Recorder:
             self.writer.release_reserve()
             try:
                 self._write_unwritten()
-            except OSError:
-                pass  # said by refusals()
+            except OSError:  # said by refusals()
+                self._keep_unwritten()
         elif kind == "sync":  # the run's books before a step it may not outlive
             try:
                 self._save_retrying()
@@ -240,6 +247,35 @@ class Recorder:
             raise
         self.meta.counters["samples"] += len(self._unwritten)
         self._unwritten = []
+
+    def _keep_unwritten(self) -> None:
+        """The samples the run folder refused to the end, written to :attr:`kept_path` instead:
+        a run keeps every sample it acquired; :attr:`kept` says where, or why not. Written on a
+        thread of its own, waited for :data:`mkm.bench.unvented.STATE_WAIT_S`: a state folder
+        that hangs (a roaming profile on a share) must not hold the run's outcome."""
+        rows, done, failed = list(self._unwritten), threading.Event(), []
+        span = f"{rows[0].sample}-{rows[-1].sample}" if len(rows) > 1 else f"{rows[0].sample}"
+
+        def keep() -> None:
+            try:
+                write_samples(self.kept_path, rows)
+            except BaseException as exc:  # said below
+                failed.append(exc)
+            finally:
+                done.set()
+
+        threading.Thread(target=keep, name="mkm-recorder-keep", daemon=True).start()
+        lost = f"{len(rows)} samples could not be written to the run folder"
+        if not done.wait(STATE_WAIT_S):
+            self.kept = (f"{lost}: samples {span} are being written to {self.kept_path}, which "
+                         f"did not answer within {STATE_WAIT_S:g} s (it hangs): kept once it "
+                         "answers, lost if this process ends first")
+        elif failed:
+            exc = failed[0]
+            self.kept = (f"{lost}, nor kept in {self.kept_path} ({type(exc).__name__}: "
+                         f"{exc})")
+        else:
+            self.kept = f"{lost}: samples {span} are kept in {self.kept_path}"
 
     @staticmethod
     def _what(kind: str, payload) -> str:
@@ -283,10 +319,11 @@ class Recorder:
             self._told = len(self._failures)
         raise exc
 
-    def refused(self, exc: BaseException) -> bool:
-        """Whether ``exc`` is a write the disk refused (raised by :meth:`raise_failure`)."""
+    def refused(self, exc: BaseException) -> str:
+        """What the disk refused in ``exc`` (raised by :meth:`raise_failure`: ``samples 30``,
+        ``step 0``), or "" when ``exc`` is none of its refusals."""
         with self._cond:
-            return any(exc is failure for _, failure in self._failures)
+            return next((what for what, failure in self._failures if exc is failure), "")
 
     def stuck(self) -> str:
         """Why the disk is not taking the record ("" while it is): more than
@@ -375,7 +412,7 @@ class Recorder:
         except BaseException as exc:  # never raises: the outcome must still be recorded
             return (f"the recorder's thread failed ({self.crashed}), and so did writing the "
                     f"{self.held_rows} samples it held ({type(exc).__name__}: {exc})")
-        left = f", {len(self._unwritten)} of them could not be" if self._unwritten else ""
+        left = f"; {self.kept}" if self._unwritten else ""
         return (f"the recorder's thread failed ({self.crashed}): the {held} samples it held "
                 f"were written as the run ended{left}")
 
@@ -407,7 +444,6 @@ class Recorder:
         what, exc = untold[0]
         more = f", and {len(untold) - 1} later write(s)" if len(untold) > 1 else ""
         if any(w.startswith("samples") for w, _ in untold):
-            kept = ("written again" if not self._unwritten else
-                    f"{len(self._unwritten)} samples could not be written")
+            kept = "written again" if not self._unwritten else self.kept
             return [f"the disk refused {what} ({type(exc).__name__}: {exc}){more}; {kept}"]
         return [f"recording failed for {what} ({type(exc).__name__}: {exc}){more}"]

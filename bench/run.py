@@ -298,8 +298,9 @@ class _ReadWatchdog:
     bench marker, run.json ``failed`` with why and the vent not verified (a process that never
     comes back is so recorded), a notice; the loop stops the run once the read returns. Once
     the shutdown has written its vent (:meth:`vented`) it vents no more and watches the reads
-    of the shutdown (the samples left, the vent check), keeping only the books of one that
-    hangs, until :meth:`stop`.
+    of the shutdown (the samples left, the vent check), keeping only the books of each that
+    hangs. It watches until :meth:`stop`, past every hang it handled, each once: a hang of the
+    loop, then one of the shutdown, are both recorded.
     """
 
     def __init__(self, run: BenchRun):
@@ -326,18 +327,23 @@ class _ReadWatchdog:
     def _watch(self) -> None:
         run = self.run
         acq = run.acquisition
+        handled = set()  # when each call whose hang was handled began: handled once
         while not self._stop.wait(WATCH_EVERY_S):
-            if self._write_hung(acq):
-                return
+            writing = acq.writing
+            if writing is not None and writing[0] not in handled and \
+                    self._write_hung(acq, writing):
+                handled.add(writing[0])
+                continue
             since, held_bar = acq.reading_since, acq.command_bar
-            if since is None or not (held_bar > 0 or self._vented.is_set()):
+            if since is None or since in handled or not (held_bar > 0 or self._vented.is_set()):
                 continue
             hung_s = time.monotonic() - since
             if hung_s < self.limit_s:
                 continue
+            handled.add(since)
             if self._vented.is_set():  # the shutdown's read, its vent written: books only
                 self._after_vent(hung_s)
-                return
+                continue
             t_s = acq.next_index / acq.rate_hz
             # the loop stops at its next block from now on, whatever the write below does
             acq.hung = (f"read interlock: the read of the device did not return within "
@@ -347,15 +353,13 @@ class _ReadWatchdog:
             acq.hung_vent = vent
             if not self._vented.is_set():  # else the shutdown, under way, keeps the books
                 self._books(ok, t_s)
-            return
 
-    def _write_hung(self, acq: Acquisition) -> bool:
+    def _write_hung(self, acq: Acquisition, writing: tuple[float, float]) -> bool:
         """Whether the loop's command write hangs past :data:`WATCHDOG_WRITE_S` (the AO write's
         own timeout) and :data:`READ_HANG_MARGIN_S` with a pressure held or asked for: then
         vented, and the books kept, as for a read (the shutdown's vent write included, until
         it is out)."""
-        writing = acq.writing
-        if writing is None or self._vented.is_set():
+        if self._vented.is_set():
             return False
         since, asked_bar = writing
         hung_s, held_bar = time.monotonic() - since, acq.command_bar
@@ -402,14 +406,19 @@ class _ReadWatchdog:
         verified (a process that never comes back is so recorded), and a notice (never
         raises)."""
         run, acq = self.run, self.run.acquisition
-        acq.hung_after_vent = (
-            f"a read of the device did not return within {hung_s:.1f} s (its timeout "
-            f"{run.config.daq.read_timeout_s:g} s) after the shutdown's vent: the driver hangs")
+        hung = (f"a read of the device did not return within {hung_s:.1f} s (its timeout "
+                f"{run.config.daq.read_timeout_s:g} s) after the shutdown's vent: the driver "
+                "hangs")
+        # a read that hung before it returned: the reads after it are said after it
+        acq.hung_after_vent = "; ".join(filter(None, [acq.hung_after_vent and
+                                                      f"{acq.hung_after_vent}, then returned",
+                                                      hung]))
         try:
             run.recorder.meta.manual_vent_required = True
-            run.recorder.mark(RunStatus.FAILED, f"{acq.hung_after_vent}; the vent was "
-                              "commanded, its check cannot read the monitor: VENT BY HAND or "
-                              "verify it with `mkm vent`", 0.0)
+            said = "; ".join(filter(None, [acq.hung_said(), acq.hung_after_vent]))  # the loop's
+            run.recorder.mark(RunStatus.FAILED, f"{said}; the vent was commanded, its check "
+                              "cannot read the monitor: VENT BY HAND or verify it with `mkm "
+                              "vent`", 0.0)
             run.notify(f"{acq.hung_after_vent}: VENT BY HAND or verify it with `mkm vent`; "
                        f"{run.recorder.path} records it")
         except BaseException:  # the shutdown records the run if the read returns
@@ -594,9 +603,11 @@ class BenchRun:
         elif isinstance(outcome, OSError) and (
                 outcome is self._folder_error or
                 (self.recorder is not None and self.recorder.refused(outcome))):
-            # the run folder's disk: full, gone, read-only
+            # the run folder's disk: full, gone, read-only; what it refused, when a write
+            what = self.recorder.refused(outcome) if self.recorder is not None else ""
             status, exit_code = RunStatus.FAILED, EXIT_STORAGE
-            reason = f"recording failed ({type(outcome).__name__}: {outcome})"
+            reason = (f"recording failed{f' for {what}' if what else ''} "
+                      f"({type(outcome).__name__}: {outcome})")
         elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
             status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
         elif outcome is not None:
@@ -841,6 +852,9 @@ class BenchRun:
             failure = self._write_vent(acq)
         if self._watchdog is not None:  # no vent of its own from here on: reads watched
             self._watchdog.vented()
+            # a vent write of the shutdown that hung, vented by the watchdog meanwhile
+            problems.extend(part for part in (acq.hung, acq.hung_vent)
+                            if part and part not in reason and part not in problems)
         # where the reason says "vented": after the failed tries, before what came after
         vented_at = len(problems) if say_vent and (
             failure is None or (acq is not None and acq.written)) else None

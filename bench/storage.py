@@ -648,6 +648,18 @@ class RunWriter:
             raise errors[0]
 
 
+def write_samples(path: Path, rows: list[Sample]) -> None:
+    """``rows`` alone in a CSV of samples.csv's columns at ``path`` (its folder made), synced to
+    the disk: the samples a run folder refused, kept elsewhere."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", encoding="utf-8", newline="") as f:
+        f.write(",".join(SAMPLE_COLUMNS) + "\n")
+        f.write("".join(",".join(_cell(v, c) for v, c in zip(row, SAMPLE_COLUMNS, strict=True))
+                        + "\n" for row in rows))
+        f.flush()
+        os.fsync(f.fileno())
+
+
 def release_reserve(path: Path) -> None:
     """Delete the room a run kept in its folder ``path`` for its final record, if there."""
     try:

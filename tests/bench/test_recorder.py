@@ -1,7 +1,10 @@
 """bench.recorder: a disk that fills during a run loses no more than it must and hides nothing."""
 
 import errno
+import re
 from pathlib import Path
+
+import pytest
 
 from mkm.bench.storage import RunWriter, load_run
 from mkm.cli import main
@@ -28,8 +31,8 @@ def test_disk_full_during_a_run_vents_syncs_and_prints_the_run(tmp_path, capsys,
     captured = capsys.readouterr()
     assert rc == 2  # storage failed: exit 2, like bad input
     assert captured.err.count("\n") == 2 and "mkm acquire: SIMULATED bench (sim)" in captured.err
-    assert "run SIMULATED failed: recording failed (OSError: [Errno 28] No space left on " \
-        "device)" in captured.err
+    assert "run SIMULATED failed: recording failed for samples 30 (OSError: [Errno 28] No " \
+        "space left on device)" in captured.err
     run = load_run(Path(captured.out.strip().splitlines()[-1]))  # the path is still printed
     assert run.status == "failed" and len(run.samples) == 30  # every sample written is kept
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
@@ -582,3 +585,141 @@ def test_a_close_that_fails_otherwise_than_the_disk_still_records_the_outcome(tm
     run = load_run(Path(captured.out.strip().splitlines()[-1]))  # the path is still printed
     assert run.status == "complete" and rc != 0  # the outcome kept, the problem said
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
+
+
+def _read_only_from_60(monkeypatch) -> list[int]:
+    """The run folder refuses every write from sample 60 on (gone read-only: samples.csv,
+    run.json); the samples the run queued, returned, in order."""
+    from mkm.bench.recorder import Recorder
+
+    queued, read_only = [], {"from": None}
+    samples, append = Recorder.samples, RunWriter.append_samples
+
+    def spy(self, rows):
+        queued.extend(r.sample for r in rows)
+        samples(self, rows)
+
+    def denied(*args):
+        raise PermissionError(errno.EACCES, "Permission denied")
+
+    def read_only_from_60(self, rows):
+        if rows[-1].sample >= 60:
+            read_only["from"] = 60
+        if read_only["from"] is not None:
+            denied()
+        append(self, rows)
+
+    def guarded(method):
+        def call(self, *args):
+            if read_only["from"] is not None:
+                denied()
+            return method(self, *args)
+        return call
+
+    monkeypatch.setattr(Recorder, "samples", spy)
+    monkeypatch.setattr(RunWriter, "append_samples", read_only_from_60)
+    monkeypatch.setattr(RunWriter, "reopen_samples", guarded(RunWriter.reopen_samples))
+    monkeypatch.setattr(RunWriter, "write_meta", guarded(RunWriter.write_meta))
+    return queued
+
+
+def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(config, tmp_path,
+                                                                             monkeypatch):
+    # a run folder that went read-only at sample 60 (a share remounted, permissions changed)
+    # lost the samples it refused from then on: "23 samples could not be written". Now they
+    # are written to the user state folder, and the reason (kept in the bench marker when
+    # run.json is refused too) names the file
+    import json
+
+    import pandas as pd
+
+    from mkm.bench.run import acquire
+
+    queued = _read_only_from_60(monkeypatch)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 2
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    assert f"are kept in {kept}" in result.reason
+    on_disk = pd.read_csv(result.path / "samples.csv")["sample"].tolist()
+    elsewhere = pd.read_csv(kept)["sample"].tolist()
+    assert on_disk == list(range(60)) and elsewhere[0] == 60  # the folder refused from 60 on
+    assert on_disk + elsewhere == queued  # every sample acquired, once, in order
+    # run.json refused too: the marker keeps the outcome, and with it the file's name
+    marker, = (tmp_path / "mkm-state" / "benches").glob("*/*.json")
+    assert str(kept) in json.loads(marker.read_text(encoding="utf-8"))["outcome"]["reason"]
+
+
+def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,
+                                                                                tmp_path,
+                                                                                monkeypatch):
+    # steps.csv refuses the first step's row (EIO: a dying drive) while samples.csv takes its
+    # rows: the run stops at its next block, vents and verifies the vent, fails with exit 2
+    # (storage), and keeps every sample it acquired, the vent check's included. Its reason
+    # said only "recording failed (OSError: [Errno 5] Input/output error)", as for samples
+    # refused: now it names what the disk refused
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.run import acquire
+
+    queued, samples = [], Recorder.samples
+
+    def spy(self, rows):
+        queued.extend(r.sample for r in rows)
+        samples(self, rows)
+
+    def dying(self, row):
+        raise OSError(errno.EIO, "Input/output error")
+
+    monkeypatch.setattr(Recorder, "samples", spy)
+    monkeypatch.setattr(RunWriter, "append_step", dying)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "failed" and result.exit_code == 2, result.reason
+    # the reason names what the disk refused: the row of step 0, not samples
+    assert result.reason.startswith("recording failed for step 0 (OSError: [Errno 5] "
+                                    "Input/output error)")
+    assert not result.manual_vent_required
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"] and len(run.steps) == 0
+    assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
+    assert run.samples["sample"].tolist() == queued  # every sample, once, in order
+    assert (run.samples["phase"] == "vent").any()  # the vent check's decay with them
+
+
+@pytest.mark.parametrize("fault", ["refused", "hangs"])
+def test_samples_the_state_folder_cannot_keep_either_are_said_and_hold_nothing(
+        config, tmp_path, monkeypatch, fault):
+    # the run folder went read-only at sample 60, and the state folder that keeps the refused
+    # samples refuses them too, or hangs (a roaming profile on a share): the run still ends,
+    # vented and recorded in its marker, saying what became of them (a hang waited for
+    # STATE_WAIT_S, the write left to finish once the folder answers)
+    import threading
+
+    import mkm.bench.recorder as recorder
+    from mkm.bench.run import acquire
+
+    _read_only_from_60(monkeypatch)
+    release = threading.Event()
+
+    def keep(path, rows):
+        if fault == "hangs":
+            release.wait(60)  # the test's net; released once the run has ended
+        raise OSError(errno.EROFS, "Read-only file system")
+
+    monkeypatch.setattr(recorder, "write_samples", keep)
+    try:
+        result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+        ended_while_hung = not release.is_set()
+    finally:
+        release.set()
+    assert result.status == "failed" and result.exit_code == 2 and ended_while_hung
+    assert not result.manual_vent_required  # vented, verified
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    said = re.search(r"(\d+) samples could not be written to the run folder(.*?); run\.json",
+                     result.reason)
+    assert said is not None and int(said.group(1)) > 0, result.reason
+    if fault == "refused":
+        assert said.group(2) == f", nor kept in {kept} (OSError: [Errno 30] Read-only file " \
+            "system)"
+    else:
+        assert said.group(2).endswith(f"are being written to {kept}, which did not answer "
+                                      "within 2 s (it hangs): kept once it answers, lost if "
+                                      "this process ends first")

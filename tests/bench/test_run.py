@@ -698,6 +698,99 @@ def test_a_read_of_the_vent_check_that_hangs_is_recorded_as_it_hangs(config, tmp
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
 
 
+def test_a_read_of_the_shutdown_that_hangs_after_the_loops_hang_is_recorded_too(config,
+                                                                                tmp_path):
+    # the read of sample 45 hangs with 0.5 bar commanded: the watchdog vents and records it,
+    # and stopped watching. The read returns, the run stops; then a read of the shutdown, after
+    # its vent, hangs too: run.json kept saying the vent waited for the first read to return,
+    # nothing said of the second. Now the watchdog watches until the shutdown's reads are done:
+    # run.json says the second hang as it hangs, after the first, and the run says both.
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, seen = backend.read, {}
+
+    def failed_with(words: str) -> dict | None:
+        deadline = time.monotonic() + 60  # the test's net
+        while time.monotonic() < deadline:
+            meta = json.loads((run.recorder.path / "run.json").read_text())
+            if meta["status"] == "failed" and words in meta["reason"]:
+                return meta
+            time.sleep(0.01)
+        return None
+
+    def hanging_twice(n, timeout):
+        if backend._index == 45 and "loop" not in seen:
+            seen["loop"] = failed_with("vented by the watchdog")
+        elif run._watchdog is not None and run._watchdog._vented.is_set() and \
+                "shutdown" not in seen:
+            seen["shutdown"] = failed_with("after the shutdown's vent")
+        return read(n, timeout)
+
+    backend.read = hanging_twice
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    assert seen["loop"] is not None and seen["loop"]["manual_vent_required"]
+    meta = seen["shutdown"]  # as the second read hung: both said, the vent not verified
+    assert meta is not None and meta["manual_vent_required"]
+    assert meta["reason"].startswith("read interlock: the read of the device did not return")
+    assert "with 0.5 bar commanded after 4.5 s: the driver hangs; vented by the watchdog; a " \
+        "read of the device did not return within" in meta["reason"]
+    assert meta["reason"].endswith("(its timeout 0.5 s) after the shutdown's vent: the driver "
+                                   "hangs; the vent was commanded, its check cannot read the "
+                                   "monitor: VENT BY HAND or verify it with `mkm vent`")
+    # both back: the run stops, verifies its vent as any other, and says both hangs
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert "vented by the watchdog" in result.reason
+    assert "after the shutdown's vent: the driver hangs, then returned" in result.reason
+    recorded = load_run(result.path)
+    assert recorded.meta.vent_check["verified"] and not recorded.meta.manual_vent_required
+    np.testing.assert_array_equal(recorded.samples["sample"], np.arange(len(recorded.samples)))
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_vent_write_of_the_shutdown_that_hangs_after_the_loops_hang_is_in_its_reason(
+        config, tmp_path):
+    # the read of sample 45 hangs with 0.5 bar commanded (the watchdog vents, records it); the
+    # read returns, and the shutdown's own vent write then hangs: the watchdog, watching on,
+    # vented again and wrote it into run.json, but the final record dropped it, the reason
+    # saying only the first hang. Now the reason keeps both.
+    import threading
+
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, write, seen = backend.read, backend.write_command, {}
+
+    def failed_with(words: str) -> dict | None:
+        deadline = time.monotonic() + 60  # the test's net
+        while time.monotonic() < deadline:
+            meta = json.loads((run.recorder.path / "run.json").read_text())
+            if meta["status"] == "failed" and words in meta["reason"]:
+                return meta
+            time.sleep(0.01)
+        return None
+
+    def hanging(n, timeout):
+        if backend._index == 45 and "loop" not in seen:
+            seen["loop"] = failed_with("vented by the watchdog")
+        return read(n, timeout)
+
+    def hanging_for_the_shutdown(volts):
+        if "loop" in seen and "vent" not in seen and \
+                threading.current_thread() is threading.main_thread():
+            seen["vent"] = failed_with("write interlock: the command of 0 bar")
+        write(volts)
+
+    backend.read, backend.write_command = hanging, hanging_for_the_shutdown
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    assert seen["loop"] is not None and seen["vent"] is not None  # each recorded as it hung
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert result.reason.startswith("read interlock: the read of the device did not return")
+    assert "; write interlock: the command of 0 bar did not return within" in result.reason
+    assert load_run(result.path).meta.vent_check["verified"]
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
 def test_a_driver_that_hangs_the_watchdogs_vent_too_is_recorded_as_it_hangs(config, tmp_path):
     # the read of sample 45 hangs, and so does the watchdog's vent write: the watchdog waited
     # in the write, and nothing was recorded of either while they hung. Its write is waited

@@ -1110,7 +1110,8 @@ def test_a_disk_that_fills_mid_run_still_gets_the_final_record(config, tmp_path,
     monkeypatch.setattr(storage, "write_json_atomic", json_on_a_full_disk)
     result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
     assert result.status == "failed" and result.exit_code == 2
-    assert result.reason.startswith("recording failed (OSError: [Errno 28] No space left")
+    assert result.reason.startswith("recording failed for samples 40 (OSError: [Errno 28] No "
+                                    "space left")
     meta = json.loads((result.path / "run.json").read_text(encoding="utf-8"))
     assert meta["status"] == "failed" and meta["reason"] == result.reason
     assert meta["vent_check"]["verified"]
@@ -1198,6 +1199,57 @@ def test_a_read_that_hangs_in_mkm_vents_check_ends_unverified_and_marks_the_benc
                            f"{data['process']['pid']}) vented (0 bar commanded at ")
     assert "during the vent check: the driver hangs" in said and said.endswith("vented now")
     assert not list(bench_folder("sim-Dev1").glob("*.json"))  # removed once vented
+
+
+def test_the_vent_written_again_for_dead_runs_after_a_hung_check_is_bounded(config,
+                                                                            monkeypatch):
+    # a run died on the bench; `mkm vent` vents, its check's read hangs (watched, said), then it
+    # writes the vent again for the dead run, and the driver hangs for that write too: the
+    # command sat in it, nothing said. Now the write is given the AO write's timeout and the
+    # margin, then said; the dead run is left marked, for the next command to vent and name.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    lease = BenchLease("sim-Dev1", Path("/nonexistent/run"), "2026-12-01T10:00:00+00:00")
+    lease.started()
+    lease.end()
+    lease.command(1.5)
+    data = json.loads(lease.path.read_text())
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    lease.path.write_text(json.dumps(data))
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    release, reads, writes, hanging = threading.Event(), [], [], set()
+
+    class Hanging(SimBackend):
+        def read(self, n_samples, timeout_s):
+            reads.append(n_samples)
+            if len(reads) >= 3:
+                release.wait(60)  # the test's net; released once the command returned
+            return super().read(n_samples, timeout_s)
+
+        def write_command(self, volts):
+            writes.append(volts)
+            if len(reads) >= 3:  # the driver hangs for every call once the check's read hung
+                hanging.add(n := len(writes))
+                release.wait(60)
+                hanging.discard(n)
+            super().write_command(volts)
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.vent(c, notify=lambda m: None)
+        hung = set(hanging)
+    finally:
+        release.set()
+    assert 3 in hung  # the dead run's vent (at open, before the check, then it) left hanging
+    message = str(caught.value)
+    assert "during the vent check: the driver hangs" in message
+    assert ("the vent written again for the runs that died on this bench did not return "
+            "within 2 s (its timeout 1 s): the driver hangs; they were not named, their folders "
+            "not mended, and the next command on this bench vents first and names them"
+            ) in message
+    assert lease.path.exists()  # the dead run stays marked
 
 
 def test_a_count_of_waiting_samples_that_hangs_in_mkm_vent_ends_it_unverified(config,
