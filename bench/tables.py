@@ -170,6 +170,9 @@ class RawTable:
     overloads_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row :func:`without_repeated_rows` left out (``A12``)
     repeats_skipped: list[str] = field(default_factory=list)
+    #: the time cell of each row sharing the row above's time with other readings, kept as
+    #: samples of their own (a clock coarser than the sampling)
+    times_shared: list[str] = field(default_factory=list)
     #: the cell naming the statistic of each row :func:`without_summary_rows` left out
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
@@ -193,6 +196,7 @@ class RawTable:
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
                 "rows_skipped_for_an_overload": self.overloads_skipped,
                 "rows_skipped_as_repeats": self.repeats_skipped,
+                "rows_sharing_a_time_kept": self.times_shared,
                 "summary_rows_skipped": self.summaries_skipped,
                 "footer_rows_skipped": self.footer_skipped,
                 **({"joined_by_time": self.joined} if self.joined else {})}
@@ -1748,7 +1752,8 @@ def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
     twice), each named in ``repeats_skipped`` (``A12``): counted twice, a sample would halve
     the standard errors of its hold, not add a reading. Where some rows share their time with
     the row above but not their readings (a clock coarser than the sampling, whole seconds at
-    10 Hz), alike rows may be samples of their own: none is skipped."""
+    10 Hz), alike rows may be samples of their own: none is skipped, each named in
+    ``times_shared``."""
     indices = [p.index for c in columns for p in c.parts or (c,)]
     rows = table.rows
 
@@ -1757,7 +1762,9 @@ def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
 
     same_time = [k for k in range(1, len(rows)) if alike(k, indices[:1])]
     skipped = [k for k in same_time if alike(k, indices)]
-    if not skipped or len(skipped) < len(same_time):
+    if len(skipped) < len(same_time):
+        return replace(table, times_shared=[table.cell(k, indices[0]) for k in same_time])
+    if not skipped:
         return table
     gone = set(skipped)
     keep = [k for k in range(len(rows)) if k not in gone]
@@ -1929,6 +1936,10 @@ class Recognition:
             extras.append(f"{len(repeats)} row(s) repeating the row above (its time and "
                           "readings) skipped: " + ", ".join(repeats[:5])
                           + (", ..." if len(repeats) > 5 else ""))
+        if shared := self.table.times_shared:
+            extras.append(f"{len(shared)} row(s) with the time of the row above but other "
+                          "readings (a clock coarser than the sampling) kept as samples: "
+                          + ", ".join(shared[:5]) + (", ..." if len(shared) > 5 else ""))
         if over := self.table.overloads_skipped:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")

@@ -1750,6 +1750,22 @@ def test_rows_written_twice_by_a_logger_are_counted_once_and_named(tmp_path, mkm
     (kept,), _ = _import(mkm_cli, coarse, *MUSCLE, "--eps", "0")
     assert kept.meta.imported_from["rows_skipped_as_repeats"] == [] and len(kept.samples) == 400
 
+def test_rows_sharing_a_coarse_clocks_time_are_kept_and_counted(tmp_path, mkm_cli):
+    # a clock in whole seconds at 10 Hz: rows sharing a time with other readings were kept
+    # unsaid; 40 s of 10 rows a second, each second's last 9 rows share the first's time
+    t = np.arange(0.0, 40.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 40], [0, 0, 1, 1, 2, 2, 0, 0])
+    coarse = tmp_path / "coarse.csv"
+    coarse.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{int(round(a, 6))},{b:.3f},{c:.2f}\n"
+        for a, b, c in zip(t, p, thickwall_N(p, 0.0) + 0.01 * np.arange(t.size), strict=True)))
+    (run,), err = _import(mkm_cli, coarse, *MUSCLE, "--eps", "0")
+    assert ("360 row(s) with the time of the row above but other readings (a clock coarser "
+            "than the sampling) kept as samples: A3, A4, A5, A6, A7, ...") in err
+    assert len(run.meta.imported_from["rows_sharing_a_time_kept"]) == 360
+    assert len(run.samples) == 400
+
+
 def test_a_record_exported_newest_first_is_refused_saying_so(tmp_path, mkm_cli):
     # a logger's export of its latest samples first: was "cell A3: the time goes backwards",
     # as though one sample were out of place
