@@ -858,8 +858,9 @@ class Column:
     #: the columns this one adds up (``--columns force=A+B``: load cells sharing the pull),
     #: each in its own unit; ``index`` is the first's
     parts: tuple[Column, ...] = ()
-    #: how its volts become the role's unit (a channel logged in volts: ``--sensitivity``)
-    scale: Scaling | None = None
+    #: how its volts or milliamperes become the role's unit (a channel logged in volts:
+    #: ``--sensitivity``; a 4-20 mA transmitter's: ``--current-range``)
+    scale: Scaling | CurrentLoop | None = None
 
     @property
     def indices(self) -> tuple[int, ...]:
@@ -876,10 +877,10 @@ class Column:
                 **({"scaling": self.scale.describe()} if self.scale else {})}
 
 
-#: the roles a channel logged in volts may hold (a load-cell amplifier's output, a 0-10 V
-#: pressure transducer), scaled as the bench scales its load cell, ``[loadcell]``
-#: ``sensitivity_N_per_V`` and ``offset_V``: (volts - offset) * sensitivity; each with its
-#: scaling's placeholder and where its offset is read
+#: the roles a channel logged in volts or milliamperes may hold (a load-cell amplifier's
+#: output, a 0-10 V or a 4-20 mA pressure transducer), one in volts scaled as the bench
+#: scales its load cell, ``[loadcell]`` ``sensitivity_N_per_V`` and ``offset_V``: (volts -
+#: offset) * sensitivity; each with its scaling's placeholder and where its offset is read
 VOLTS_ROLES = {"pressure": ("BAR_PER_V", "at 0 bar"), "force": ("N_PER_V", "unloaded")}
 
 
@@ -891,9 +892,49 @@ class Scaling:
     sensitivity_per_V: float
     offset_V: float
     text: str
+    option = "--sensitivity"
+    reads = "V"  # the unit it scales from; what a column logged in it is said to be
+    channel = "a channel logged in V or mV"
 
     def describe(self) -> dict:
         return {"sensitivity_per_V": self.sensitivity_per_V, "offset_V": self.offset_V}
+
+    def shown(self, target: str) -> str:
+        return f"{self.sensitivity_per_V:g} {target}/V from {self.offset_V:g} V"
+
+    def values(self, volts: np.ndarray) -> np.ndarray:
+        return (volts - self.offset_V) * self.sensitivity_per_V
+
+
+#: a current loop's span: its transmitter's range from 4 mA (the low end) to 20 mA (the high)
+LOOP_MA = (4.0, 20.0)
+#: the currents a working loop reads (NAMUR NE 43): below, a broken wire or a transmitter
+#: signalling a fault; above, a fault or a short
+LOOP_WORKING_MA = (3.8, 20.5)
+
+
+@dataclass(frozen=True)
+class CurrentLoop:
+    """A 4-20 mA transmitter's channel as its role's quantity: ``low`` at 4 mA, ``high`` at
+    20 mA, linear between (in the role's unit), as typed (``text``)."""
+
+    low: float
+    high: float
+    text: str
+    option = "--current-range"
+    reads = "mA"
+    channel = "a 4-20 mA channel logged in mA or A"
+
+    def describe(self) -> dict:
+        return {"range": [self.low, self.high], "at_mA": list(LOOP_MA)}
+
+    def shown(self, target: str) -> str:
+        return (f"{LOOP_MA[0]:g} mA = {self.low:g} {target}, {LOOP_MA[1]:g} mA = "
+                f"{self.high:g} {target}")
+
+    def values(self, current_mA: np.ndarray) -> np.ndarray:
+        span = LOOP_MA[1] - LOOP_MA[0]
+        return self.low + (current_mA - LOOP_MA[0]) * (self.high - self.low) / span
 
 
 _SCALE_PART = re.compile(r"^(?P<number>[+-]?(?:\d+[.,]?\d*|[.,]\d+)(?:[eE][+-]?\d+)?)\s*"
@@ -904,19 +945,41 @@ def _volts(unit) -> bool:
     return unit is not None and unit.dimensionality == registry().Unit("V").dimensionality
 
 
+def _reads(unit, scale) -> bool:
+    """Whether a column in ``unit`` (a pint unit or None) is what ``scale`` converts."""
+    return unit is not None and unit.dimensionality == registry().Unit(scale.reads).dimensionality
+
+
+def _current(unit) -> bool:
+    return unit is not None and unit.dimensionality == registry().Unit("mA").dimensionality
+
+
+def current_header(header: str) -> bool:
+    """Whether a header names a unit of electric current (``AI2 [mA]``)."""
+    unit = parse_header(header)[1]
+    return unit is not None and _current(parse_unit(unit))
+
+
 def volts_header(header: str) -> bool:
     """Whether a header names a unit of voltage (``AI0 [V]``, ``Kraft (mV)``)."""
     unit = parse_header(header)[1]
     return unit is not None and _volts(parse_unit(unit))
 
 
-def parse_scaling(sensitivity: str | None, offset: str | None) -> dict[str, Scaling]:
+def parse_scaling(sensitivity: str | None, offset: str | None,
+                  current_range: str | None = None) -> dict[str, Scaling | CurrentLoop]:
     """``--sensitivity force=200N/V,pressure=2.5bar/V`` and ``--offset-volts
     force=0.012,pressure=0.5V`` -> role -> :class:`Scaling`: a sensitivity in any unit of the
     role per volt (a bare number: N/V, bar/V), positive; an offset in volts (default 0 V);
-    ``ValueError`` naming a bad item."""
+    ``--current-range pressure=0:10bar`` -> role -> :class:`CurrentLoop`; ``ValueError``
+    naming a bad item or a role given both."""
     given = parse_assignments(sensitivity, "--sensitivity", VOLTS_ROLES)
     offsets = parse_assignments(offset, "--offset-volts", VOLTS_ROLES)
+    loops = parse_assignments(current_range, "--current-range", VOLTS_ROLES)
+    for role in loops.keys() & given.keys():
+        raise ValueError(f"--current-range {role}={loops[role]} and --sensitivity "
+                         f"{role}={given[role]}: expected one, --current-range for a 4-20 mA "
+                         "channel, --sensitivity for one in volts")
     for role in offsets.keys() - given.keys():
         raise ValueError(f"--offset-volts {role}={offsets[role]}: no --sensitivity {role}=...: "
                          f"expected both for a channel logged in volts")
@@ -950,7 +1013,34 @@ def parse_scaling(sensitivity: str | None, offset: str | None) -> dict[str, Scal
             offset_V = float(registry().Quantity(float(match["number"].replace(",", ".")),
                                                  unit).to("V").magnitude)
         out[role] = Scaling(value, offset_V, text)
+    for role, text in loops.items():
+        out[role] = _current_loop(role, text)
     return out
+
+
+def _current_loop(role: str, text: str) -> CurrentLoop:
+    """``--current-range ROLE=LOW:HIGH[UNIT]`` (each end may carry its unit; a bare number is
+    in the role's unit) -> :class:`CurrentLoop`."""
+    unit_of = ROLES[role].unit
+    example = "pressure=0:10bar" if role == "pressure" else "force=0:500N"
+    ends = [_SCALE_PART.match(part.strip()) for part in text.split(":")]
+    units = [parse_unit(m["unit"]) if m and m["unit"].strip() else None for m in ends
+             if m is not None]
+    if (len(ends) != 2 or not all(ends) or len(units) != 2
+            or any(m["unit"].strip() and u is None for m, u in zip(ends, units, strict=True))):
+        raise ValueError(f"--current-range {role}={text} is invalid: expected the "
+                         f"transmitter's {role} at 4 mA and at 20 mA, LOW:HIGH, e.g. {example}")
+    default = next((u for u in reversed(units) if u is not None), registry().Unit(unit_of))
+    low, high = (registry().Quantity(float(m["number"].replace(",", ".")), u or default)
+                 for m, u in zip(ends, units, strict=True))
+    if not all(_fits(q.units, ROLES[role]) for q in (low, high)):
+        raise ValueError(f"--current-range {role}={text} is invalid: expected a {role} at each "
+                         f"end, e.g. {example}")
+    low, high = (float(q.to(unit_of).magnitude) for q in (low, high))
+    if not (math.isfinite(low) and math.isfinite(high) and high > low):
+        raise ValueError(f"--current-range {role}={text} is invalid: expected the {role} at "
+                         f"4 mA below the one at 20 mA, e.g. {example}")
+    return CurrentLoop(low, high, text)
 
 
 #: the roles whose columns ``--columns ROLE=A+B`` adds up: load cells in parallel share the
@@ -1087,13 +1177,15 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     for role, scale in (scaling or {}).items():
         if role in found:
             column = found[role]
-            if not all(_volts(parse_unit(p.unit) if p.unit else None)
+            if not all(_reads(parse_unit(p.unit) if p.unit else None, scale)
                        for p in column.parts or (column,)):
                 written = (f"is in {column.unit!r}" if column.unit else
                            f"names no unit (read in {ROLES[role].unit})")
-                raise ValueError(f"--sensitivity {role}={scale.text}: column {column.header!r} "
-                                 f"{written}, not volts: expected a scaling only for a channel "
-                                 "logged in V or mV")
+                kind = "volts" if scale.reads == "V" else "a current"
+                what = "a scaling" if scale.reads == "V" else "a range"
+                raise ValueError(f"{scale.option} {role}={scale.text}: column "
+                                 f"{column.header!r} {written}, not {kind}: expected {what} "
+                                 f"only for {scale.channel}")
             for part in column.parts or (column,):
                 part.scale = scale
             column.scale = scale
@@ -1204,8 +1296,14 @@ def _check_unit(table: RawTable, column: Column) -> None:
                          f"({column.unit!r}): expected a {column.role} unit like {role.unit}, "
                          f"or the channel's scaling: --sensitivity {column.role}={placeholder} "
                          f"(and --offset-volts {column.role}=V, what it reads {zero})")
+    if column.role in VOLTS_ROLES and column.scale is None and _current(parse_unit(column.unit)):
+        example = "0:10bar" if column.role == "pressure" else "0:500N"
+        raise ValueError(f"{table.name}: column {column.header!r} is a current loop's "
+                         f"({column.unit!r}): expected a {column.role} unit like {role.unit}, "
+                         f"or the transmitter's range: --current-range {column.role}={example} "
+                         f"(its {column.role} at 4 mA and at 20 mA)")
     if column.scale is not None:
-        return  # its volts scaled to the role's unit
+        return  # its volts or milliamperes scaled to the role's unit
     if column.role == "pressure" and _ABSOLUTE.fullmatch(column.unit.strip()):
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is an "
                          "absolute pressure: expected a gauge pressure, above the atmosphere as "
@@ -1313,13 +1411,32 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
                              "expected one unit per column")
         unit = next(iter(inline))
         _check_unit(table, replace(column, unit=unit))
-    if column.scale is not None:  # volts as the bench scales its load cell's
-        volts = (values * parse_unit(unit)).to("V").magnitude
-        return (volts - column.scale.offset_V) * column.scale.sensitivity_per_V
+    if column.scale is not None:  # volts as the bench scales its load cell's, or a loop's mA
+        read = (values * parse_unit(unit)).to(column.scale.reads).magnitude
+        if isinstance(column.scale, CurrentLoop):
+            _check_loop(table, column, read)
+        return column.scale.values(read)
     if unit is None or role.unit is None:
         return values
     target = role.unit or "dimensionless"
     return (values * parse_unit(unit)).to(target).magnitude
+
+
+def _check_loop(table: RawTable, column: Column, current_mA: np.ndarray) -> None:
+    """``ValueError`` naming the first cell of a 4-20 mA channel outside the currents a working
+    loop reads (:data:`LOOP_WORKING_MA`): a broken wire or a transmitter in fault reads no
+    pressure or force, and scaled it would read as one."""
+    low, high = LOOP_WORKING_MA
+    outside = np.flatnonzero((current_mA < low) | (current_mA > high))
+    if outside.size:
+        k = int(outside[0])
+        more = f" ({outside.size - 1} more row(s) too)" if outside.size > 1 else ""
+        raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+                         f"{column.header!r}): {current_mA[k]:g} mA is outside the "
+                         f"{low:g}-{high:g} mA a working 4-20 mA loop reads{more}: a broken "
+                         "wire or a transmitter signalling a fault, its reading no "
+                         f"{column.role}: expected the rows of a working loop (leave those "
+                         "rows out of the file)")
 
 
 def _plain_numbers(raw: list, decimal: str) -> np.ndarray | None:
@@ -1911,8 +2028,7 @@ class Recognition:
             shown = (f" [{unit} -> {target}]" if target and unit != target
                      else f" [{unit}]" if unit else "")
             if column.scale:
-                shown = (f"{shown[:-1]}: {column.scale.sensitivity_per_V:g} {target}/V from "
-                         f"{column.scale.offset_V:g} V]")
+                shown = f"{shown[:-1]}: {column.scale.shown(target)}]"
             header = " + ".join(repr(p.header) for p in column.parts or (column,))
             parts.append(f"{header} -> {role}{shown}")
         extras = []

@@ -158,6 +158,62 @@ def test_channels_logged_in_volts_are_scaled_as_the_bench_scales_its_load_cell(t
     assert not (tmp_path / "bad").exists()
 
 
+def test_a_4_20_ma_channel_is_its_transmitters_range_and_a_broken_loop_is_refused(tmp_path,
+                                                                                   mkm_cli):
+    # a 0-10 bar transmitter on a 4-20 mA loop: was refused as "'mA' is not a unit of
+    # pressure", and no option read it. 4 mA is 0 bar, 20 mA 10 bar: 1.6 mA per bar
+    force = thickwall_N(PRESSURES, 0.122)
+    pressures = np.r_[0.0, PRESSURES]
+    current_mA = 4.0 + 1.6 * pressures
+    path = tmp_path / "loop.csv"
+    pd.DataFrame({"Druck [mA]": current_mA, "Kraft [N]": np.r_[0.0, force]}).to_csv(
+        path, index=False)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert ("column 'Druck [mA]' is a current loop's ('mA'): expected a pressure unit like bar, "
+            "or the transmitter's range: --current-range pressure=0:10bar (its pressure at 4 mA "
+            "and at 20 mA)") in err
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", "--current-range",
+                          "pressure=0:1000kPa", "--tare", "none")
+    assert "'Druck [mA]' -> pressure [mA -> bar: 4 mA = 0 bar, 20 mA = 10 bar]" in err
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], pressures, rtol=1e-9,
+                               atol=1e-9)
+    assert run.meta.imported_from["columns"]["pressure"]["scaling"] == {
+        "range": [0.0, 10.0], "at_mA": [4.0, 20.0]}
+    # a range from 0.5 bar, bare numbers in bar: 4 mA is 0.5 bar, 20 mA 10.5 bar
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", "--current-range",
+                        "pressure=0.5:10.5", "--tare", "none")
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], pressures + 0.5, rtol=1e-9,
+                               atol=1e-9)
+    # a broken wire reads 0 mA (NAMUR NE 43: below 3.8 mA a fault): refused, naming its row
+    broken = tmp_path / "broken.csv"
+    pd.DataFrame({"Druck [mA]": np.r_[current_mA[:4], 0.0, 20.6, current_mA[6:]],
+                  "Kraft [N]": np.r_[0.0, force]}).to_csv(broken, index=False)
+    code, _, err = mkm_cli(["import", str(broken), *MUSCLE, "--eps", "12.2%", "--current-range",
+                            "pressure=0:10bar", "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("broken.csv, cell A6 (column 'Druck [mA]'): 0 mA is outside the 3.8-20.5 mA a "
+            "working 4-20 mA loop reads (1 more row(s) too)") in err
+    for bad in ("pressure=10", "pressure=10:0bar", "pressure=0:10N"):
+        code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%",
+                                "--current-range", bad, "--out", str(tmp_path / "bad")])
+        assert code == 2 and err.count("\n") == 1 and f"--current-range {bad} is invalid" in err
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--current-range",
+                            "force=0:500N", "--out", str(tmp_path / "bad")])
+    assert code == 2 and ("--current-range force=0:500N: column 'Kraft [N]' is in 'N', not a "
+                          "current") in err
+    # a DAQ's channel by its number: no name says pressure, its unit says a loop's
+    numbered = tmp_path / "numbered.csv"
+    pd.DataFrame({"AI0 [mA]": current_mA, "Kraft [N]": np.r_[0.0, force]}).to_csv(
+        numbered, index=False)
+    code, _, err = mkm_cli(["import", str(numbered), *MUSCLE, "--eps", "12.2%", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and ("a 4-20 mA channel, 'AI0 [mA]', with --current-range "
+                          "pressure=LOW:HIGH") in err
+    assert not (tmp_path / "bad").exists()
+
+
 @pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
 def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES, 0.122)
