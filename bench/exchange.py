@@ -288,9 +288,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         from its own start, when its logger started after the table's (required then);
         where both are date-times or clock readings, how far its clock runs behind.
     scaling : dict, optional
-        Role -> :class:`mkm.bench.tables.Scaling`: how a channel logged in volts becomes a
-        pressure or a force (:func:`mkm.bench.tables.parse_scaling`), as the bench scales its
-        load cell; a channel in volts without one is refused.
+        Role -> :class:`mkm.bench.tables.Scaling`, or of summed load cells
+        :class:`mkm.bench.tables.SummedScaling`, or of a 4-20 mA channel
+        :class:`mkm.bench.tables.CurrentLoop`: how a channel logged in volts or mA becomes a
+        pressure or a force (:func:`mkm.bench.tables.parse_scaling`); a channel in volts or
+        mA without one is refused.
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional

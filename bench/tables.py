@@ -860,7 +860,7 @@ class Column:
     parts: tuple[Column, ...] = ()
     #: how its volts or milliamperes become the role's unit (a channel logged in volts:
     #: ``--sensitivity``; a 4-20 mA transmitter's: ``--current-range``)
-    scale: Scaling | CurrentLoop | None = None
+    scale: Scaling | SummedScaling | CurrentLoop | None = None
 
     @property
     def indices(self) -> tuple[int, ...]:
@@ -905,6 +905,27 @@ class Scaling:
     def values(self, volts: np.ndarray) -> np.ndarray:
         return (volts - self.offset_V) * self.sensitivity_per_V
 
+
+@dataclass(frozen=True)
+class SummedScaling:
+    """The :class:`Scaling` of each load cell summed (``--columns force=A+B``), in the order
+    of the sum, as typed (``text``)."""
+
+    parts: tuple[Scaling, ...]
+    text: str
+    option, reads, channel = Scaling.option, Scaling.reads, Scaling.channel
+
+    def describe(self) -> dict:
+        return {"sensitivity_per_V": [p.sensitivity_per_V for p in self.parts],
+                "offset_V": [p.offset_V for p in self.parts]}
+
+    def shown(self, target: str) -> str:
+        return " + ".join(p.shown(target) for p in self.parts)
+
+
+#: where a summed load cells' sensitivities or offsets part (``200N/V+210N/V``), not an
+#: exponent's sign (``2e+2N/V``)
+_SUM_SPLIT = re.compile(r"(?<![eE])\+")
 
 #: a current loop's span: its transmitter's range from 4 mA (the low end) to 20 mA (the high)
 LOOP_MA = (4.0, 20.0)
@@ -967,12 +988,15 @@ def volts_header(header: str) -> bool:
 
 
 def parse_scaling(sensitivity: str | None, offset: str | None,
-                  current_range: str | None = None) -> dict[str, Scaling | CurrentLoop]:
+                  current_range: str | None = None
+                  ) -> dict[str, Scaling | SummedScaling | CurrentLoop]:
     """``--sensitivity force=200N/V,pressure=2.5bar/V`` and ``--offset-volts
     force=0.012,pressure=0.5V`` -> role -> :class:`Scaling`: a sensitivity in any unit of the
     role per volt (a bare number: N/V, bar/V), positive; an offset in volts (default 0 V);
-    ``--current-range pressure=0:10bar`` -> role -> :class:`CurrentLoop`; ``ValueError``
-    naming a bad item or a role given both."""
+    summed load cells' each (``force=200N/V+210N/V``: :class:`SummedScaling`, one per column
+    of ``--columns force=A+B`` in its order; one alone is shared); ``--current-range
+    pressure=0:10bar`` -> role -> :class:`CurrentLoop`; ``ValueError`` naming a bad item or a
+    role given both."""
     given = parse_assignments(sensitivity, "--sensitivity", VOLTS_ROLES)
     offsets = parse_assignments(offset, "--offset-volts", VOLTS_ROLES)
     loops = parse_assignments(current_range, "--current-range", VOLTS_ROLES)
@@ -983,39 +1007,56 @@ def parse_scaling(sensitivity: str | None, offset: str | None,
     for role in offsets.keys() - given.keys():
         raise ValueError(f"--offset-volts {role}={offsets[role]}: no --sensitivity {role}=...: "
                          f"expected both for a channel logged in volts")
-    out = {}
+    out: dict[str, Scaling | SummedScaling | CurrentLoop] = {}
     for role, text in given.items():
-        per = f"{ROLES[role].unit}/V"
-        match = _SCALE_PART.match(text.strip())
-        unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
-            registry().Unit(per) if match else None
-        if unit is None or unit.dimensionality != registry().Unit(per).dimensionality:
-            raise ValueError(f"--sensitivity {role}={text} is invalid: expected the {role} per "
-                             f"volt, e.g. {role}=200{per}" if role == "force" else
-                             f"--sensitivity {role}={text} is invalid: expected the {role} per "
-                             f"volt, e.g. {role}=2.5{per}")
-        value = float(registry().Quantity(float(match["number"].replace(",", ".")), unit)
-                      .to(per).magnitude)
-        if not (math.isfinite(value) and value > 0):
-            raise ValueError(f"--sensitivity {role}={text} is invalid: expected a {role} per "
-                             "volt above 0 (--force-sign -1 reads a load cell wired to read "
-                             "the pull negative)")
-        offset_V = 0.0
-        if role in offsets:
-            written = offsets[role]
-            match = _SCALE_PART.match(written.strip())
-            unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
-                registry().Unit("V") if match else None
-            if not _volts(unit):
-                raise ValueError(f"--offset-volts {role}={written} is invalid: expected the "
-                                 f"volts the channel reads {VOLTS_ROLES[role][1]}, e.g. "
-                                 f"{role}=0.012 or {role}=12mV")
-            offset_V = float(registry().Quantity(float(match["number"].replace(",", ".")),
-                                                 unit).to("V").magnitude)
-        out[role] = Scaling(value, offset_V, text)
+        # load cells summed (--columns force=A+B) may each have their own: 200N/V+210N/V
+        texts = _SUM_SPLIT.split(text) if role in SUMMED_ROLES else [text]
+        written = _SUM_SPLIT.split(offsets[role]) if role in offsets and role in SUMMED_ROLES \
+            else [offsets.get(role)]
+        if len(texts) > 1 and len(written) > 1 and len(written) != len(texts):
+            raise ValueError(f"--sensitivity {role}={text} and --offset-volts "
+                             f"{role}={offsets[role]}: {len(texts)} sensitivities and "
+                             f"{len(written)} offsets: expected one of each per column added")
+        n = max(len(texts), len(written))
+        parts = tuple(_scaling(role, texts[k % len(texts)].strip(),
+                               None if written[k % len(written)] is None
+                               else written[k % len(written)].strip()) for k in range(n))
+        out[role] = parts[0] if n == 1 else SummedScaling(parts, text)
     for role, text in loops.items():
         out[role] = _current_loop(role, text)
     return out
+
+
+def _scaling(role: str, text: str, written: str | None) -> Scaling:
+    """One channel's ``--sensitivity`` ``text`` and ``--offset-volts`` ``written`` (None:
+    0 V) -> :class:`Scaling`."""
+    per = f"{ROLES[role].unit}/V"
+    match = _SCALE_PART.match(text.strip())
+    unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
+        registry().Unit(per) if match else None
+    if unit is None or unit.dimensionality != registry().Unit(per).dimensionality:
+        raise ValueError(f"--sensitivity {role}={text} is invalid: expected the {role} per "
+                         f"volt, e.g. {role}=200{per}" if role == "force" else
+                         f"--sensitivity {role}={text} is invalid: expected the {role} per "
+                         f"volt, e.g. {role}=2.5{per}")
+    value = float(registry().Quantity(float(match["number"].replace(",", ".")), unit)
+                  .to(per).magnitude)
+    if not (math.isfinite(value) and value > 0):
+        raise ValueError(f"--sensitivity {role}={text} is invalid: expected a {role} per "
+                         "volt above 0 (--force-sign -1 reads a load cell wired to read "
+                         "the pull negative)")
+    offset_V = 0.0
+    if written is not None:
+        match = _SCALE_PART.match(written.strip())
+        unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
+            registry().Unit("V") if match else None
+        if not _volts(unit):
+            raise ValueError(f"--offset-volts {role}={written} is invalid: expected the "
+                             f"volts the channel reads {VOLTS_ROLES[role][1]}, e.g. "
+                             f"{role}=0.012 or {role}=12mV")
+        offset_V = float(registry().Quantity(float(match["number"].replace(",", ".")),
+                                             unit).to("V").magnitude)
+    return Scaling(value, offset_V, text)
 
 
 def _current_loop(role: str, text: str) -> CurrentLoop:
@@ -1186,8 +1227,15 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                 raise ValueError(f"{scale.option} {role}={scale.text}: column "
                                  f"{column.header!r} {written}, not {kind}: expected {what} "
                                  f"only for {scale.channel}")
-            for part in column.parts or (column,):
-                part.scale = scale
+            parts = column.parts or (column,)
+            each = getattr(scale, "parts", None)
+            if each is not None and len(each) != len(parts):
+                raise ValueError(f"--sensitivity {role}={scale.text}: {len(each)} "
+                                 f"sensitivities for {len(parts)} column(s), "
+                                 f"{column.header!r}: expected one per column added "
+                                 f"(--columns {role}=A+B), in its order, or one for all")
+            for k, part in enumerate(parts):
+                part.scale = each[k] if each is not None else scale
             column.scale = scale
     for column in [p for c in found.values() for p in c.parts or (c,)]:
         _check_unit(table, column)

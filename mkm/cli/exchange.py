@@ -59,12 +59,15 @@ def register(subparsers) -> None:
                      help="how a channel logged in volts (V or mV) becomes a force or a "
                      "pressure, as the bench's [loadcell] sensitivity_N_per_V: the quantity per "
                      "volt, e.g. force=200N/V (a load-cell amplifier), pressure=2.5bar/V (a "
-                     "0.5-4.5 V transducer of 0-10 bar); a bare number is N/V or bar/V "
+                     "0.5-4.5 V transducer of 0-10 bar); a bare number is N/V or bar/V; "
+                     "load cells summed (--columns force=A+B) each their own in its order, "
+                     "force=200N/V+250N/V, or one for all "
                      "(default: none; a column in volts without it is refused)")
     imp.add_argument("--offset-volts", default=None, metavar="ROLE=VOLTS,...",
                      help="what a channel scaled by --sensitivity reads unloaded or at 0 bar, "
                      "subtracted before scaling, as [loadcell] offset_V: e.g. force=0.012, "
-                     "pressure=0.5V (default: 0 V)")
+                     "pressure=0.5V; summed load cells each theirs, force=10mV+20mV "
+                     "(default: 0 V)")
     imp.add_argument("--current-range", default=None, metavar="ROLE=LOW:HIGH,...",
                      action=derived_help(_current_range_help))
     imp.add_argument("--sheet", default=None, help="the workbook's sheet (default: every sheet "

@@ -158,6 +158,41 @@ def test_channels_logged_in_volts_are_scaled_as_the_bench_scales_its_load_cell(t
     assert not (tmp_path / "bad").exists()
 
 
+def test_summed_load_cells_in_volts_each_take_their_own_sensitivity(tmp_path, mkm_cli):
+    # two amplifiers of their own gains (200 and 250 N/V, 10 and 20 mV unloaded) sharing the
+    # pull: one --sensitivity for both had to be given, one cell's forces wrong by 25 %
+    force = thickwall_N(PRESSURES, 0.122)
+    pressures = np.r_[0.0, PRESSURES]
+    share_a = np.r_[0.0, 0.4 * force]  # the cells' shares of the pull, any split
+    share_b = np.r_[0.0, force] - share_a
+    path = tmp_path / "cells.csv"
+    pd.DataFrame({"P [bar]": pressures, "A [mV]": 10.0 + share_a / 0.2,
+                  "B [mV]": 20.0 + share_b / 0.25}).to_csv(path, index=False)
+    both = ["--columns", "force=A+B", "--tare", "none"]
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", *both, "--sensitivity",
+                          "force=200N/V+250N/V", "--offset-volts", "force=10mV+0.02V")
+    assert ("'A [mV]' + 'B [mV]' -> force [mV -> N: 200 N/V from 0.01 V + 250 N/V from "
+            "0.02 V]") in err
+    # the run folder keeps 6 significant digits: within half a unit of the sixth
+    np.testing.assert_allclose(run.steps["force_N_mean"], np.r_[0.0, force], rtol=5e-6,
+                               atol=1e-6)
+    assert run.meta.imported_from["columns"]["force"]["scaling"] == {
+        "sensitivity_per_V": [200.0, 250.0], "offset_V": [0.01, 0.02]}
+    # one offset for both, its own sensitivity each: the offset shared
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", *both, "--sensitivity",
+                        "force=2e+2N/V+250", "--offset-volts", "force=0")
+    np.testing.assert_allclose(run.steps["force_N_mean"],
+                               np.r_[0.0, force] + 10e-3 * 200 + 20e-3 * 250, rtol=5e-6)
+    for sensitivity, offset, said in (
+            ("force=200N/V+250N/V+300N/V", "force=0", "3 sensitivities for 2 column(s)"),
+            ("force=200N/V+250N/V", "force=0+0+0", "2 sensitivities and 3 offsets")):
+        code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", *both,
+                                "--sensitivity", sensitivity, "--offset-volts", offset,
+                                "--out", str(tmp_path / "bad")])
+        assert code == 2 and err.count("\n") == 1 and said in err
+    assert not (tmp_path / "bad").exists()
+
+
 def test_a_4_20_ma_channel_is_its_transmitters_range_and_a_broken_loop_is_refused(tmp_path,
                                                                                    mkm_cli):
     # a 0-10 bar transmitter on a 4-20 mA loop: was refused as "'mA' is not a unit of
