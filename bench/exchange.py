@@ -57,6 +57,7 @@ from mkm.bench.tables import (
     by_unit_columns,
     check_channel_times,
     column_text,
+    current_header,
     directions,
     flags,
     join_by_time,
@@ -287,9 +288,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         from its own start, when its logger started after the table's (required then);
         where both are date-times or clock readings, how far its clock runs behind.
     scaling : dict, optional
-        Role -> :class:`mkm.bench.tables.Scaling`: how a channel logged in volts becomes a
-        pressure or a force (:func:`mkm.bench.tables.parse_scaling`), as the bench scales its
-        load cell; a channel in volts without one is refused.
+        Role -> :class:`mkm.bench.tables.Scaling`, or of summed load cells
+        :class:`mkm.bench.tables.SummedScaling`, or of a 4-20 mA channel
+        :class:`mkm.bench.tables.CurrentLoop`: how a channel logged in volts or mA becomes a
+        pressure or a force (:func:`mkm.bench.tables.parse_scaling`); a channel in volts or
+        mA without one is refused.
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -297,7 +300,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         (:func:`mkm.progress.progress_bar` on the command line): one unit per stage (reading the
         file, recognising each table, finding each run's steps, writing each run folder), its
         total growing as the stages become known, the stage named before it starts (a record
-        of 600,000 rows takes half a minute).
+        of 600,000 rows takes 15 s, more on a busy machine).
 
     Raises ``ValueError`` naming the file and the cell of what cannot be imported; nothing is
     written then.
@@ -356,13 +359,16 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                  f"muscle's is not guessed: expected one{what}")
         if missing:
             in_volts = [h for h in table.header if h and volts_header(h)]
+            in_mA = [h for h in table.header if h and current_header(h)]
             raise ValueError(f"{table.name}: no {' or '.join(missing)} column among "
                              f"{', '.join(repr(h) for h in table.header if h) or 'no header'}: "
                              f"name it with --columns {missing[0]}=COLUMN (and --units "
                              f"{missing[0]}=UNIT"
                              + (f"; a channel in volts, {in_volts[0]!r}, with --sensitivity "
                                 f"{missing[0]}={VOLTS_ROLES[missing[0]][0]}" if in_volts
-                                else "") + ")"
+                                else "")
+                             + (f"; a 4-20 mA channel, {in_mA[0]!r}, with --current-range "
+                                f"{missing[0]}=LOW:HIGH" if in_mA else "") + ")"
                              + "".join(f"; {h!r} names a statistic, not taken by its unit: "
                                        f"--columns {missing[0]}={h!r} reads it"
                                        for h in statistic_columns(table, missing[0])[:1]))
@@ -398,10 +404,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     for role, scale in (scaling or {}).items():  # given for no column: it would be ignored
         if not any(r.columns[role].scale or role in r.table.joined.get("columns", {})
                    for r in prepared):
-            raise ValueError(f"--sensitivity {role}={scale.text}: {prepared[0].table.name}'s "
-                             f"{role} column {prepared[0].columns[role].header!r} is not "
-                             "logged in volts: expected a scaling only for a channel logged "
-                             "in V or mV")
+            raise ValueError(f"{scale.option} {role}={scale.text}: "
+                             f"{prepared[0].table.name}'s {role} column "
+                             f"{prepared[0].columns[role].header!r} is not logged in "
+                             f"{scale.reads}: expected it only for {scale.channel}")
     untimed = [r.table.name for r in prepared if "time" not in r.columns
                and not series.sampled_without_time(r.values("pressure"))]
     if (untimed or one_step_per_row) and not isinstance(vented, str):

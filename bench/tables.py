@@ -170,6 +170,9 @@ class RawTable:
     overloads_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row :func:`without_repeated_rows` left out (``A12``)
     repeats_skipped: list[str] = field(default_factory=list)
+    #: the time cell of each row sharing the row above's time with other readings, kept as
+    #: samples of their own (a clock coarser than the sampling)
+    times_shared: list[str] = field(default_factory=list)
     #: the cell naming the statistic of each row :func:`without_summary_rows` left out
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
@@ -193,6 +196,7 @@ class RawTable:
                 "rows_skipped_for_a_blank_cell": self.blanks_skipped,
                 "rows_skipped_for_an_overload": self.overloads_skipped,
                 "rows_skipped_as_repeats": self.repeats_skipped,
+                "rows_sharing_a_time_kept": self.times_shared,
                 "summary_rows_skipped": self.summaries_skipped,
                 "footer_rows_skipped": self.footer_skipped,
                 **({"joined_by_time": self.joined} if self.joined else {})}
@@ -854,8 +858,9 @@ class Column:
     #: the columns this one adds up (``--columns force=A+B``: load cells sharing the pull),
     #: each in its own unit; ``index`` is the first's
     parts: tuple[Column, ...] = ()
-    #: how its volts become the role's unit (a channel logged in volts: ``--sensitivity``)
-    scale: Scaling | None = None
+    #: how its volts or milliamperes become the role's unit (a channel logged in volts:
+    #: ``--sensitivity``; a 4-20 mA transmitter's: ``--current-range``)
+    scale: Scaling | SummedScaling | CurrentLoop | None = None
 
     @property
     def indices(self) -> tuple[int, ...]:
@@ -872,10 +877,10 @@ class Column:
                 **({"scaling": self.scale.describe()} if self.scale else {})}
 
 
-#: the roles a channel logged in volts may hold (a load-cell amplifier's output, a 0-10 V
-#: pressure transducer), scaled as the bench scales its load cell, ``[loadcell]``
-#: ``sensitivity_N_per_V`` and ``offset_V``: (volts - offset) * sensitivity; each with its
-#: scaling's placeholder and where its offset is read
+#: the roles a channel logged in volts or milliamperes may hold (a load-cell amplifier's
+#: output, a 0-10 V or a 4-20 mA pressure transducer), one in volts scaled as the bench
+#: scales its load cell, ``[loadcell]`` ``sensitivity_N_per_V`` and ``offset_V``: (volts -
+#: offset) * sensitivity; each with its scaling's placeholder and where its offset is read
 VOLTS_ROLES = {"pressure": ("BAR_PER_V", "at 0 bar"), "force": ("N_PER_V", "unloaded")}
 
 
@@ -887,9 +892,70 @@ class Scaling:
     sensitivity_per_V: float
     offset_V: float
     text: str
+    option = "--sensitivity"
+    reads = "V"  # the unit it scales from; what a column logged in it is said to be
+    channel = "a channel logged in V or mV"
 
     def describe(self) -> dict:
         return {"sensitivity_per_V": self.sensitivity_per_V, "offset_V": self.offset_V}
+
+    def shown(self, target: str) -> str:
+        return f"{self.sensitivity_per_V:g} {target}/V from {self.offset_V:g} V"
+
+    def values(self, volts: np.ndarray) -> np.ndarray:
+        return (volts - self.offset_V) * self.sensitivity_per_V
+
+
+@dataclass(frozen=True)
+class SummedScaling:
+    """The :class:`Scaling` of each load cell summed (``--columns force=A+B``), in the order
+    of the sum, as typed (``text``)."""
+
+    parts: tuple[Scaling, ...]
+    text: str
+    option, reads, channel = Scaling.option, Scaling.reads, Scaling.channel
+
+    def describe(self) -> dict:
+        return {"sensitivity_per_V": [p.sensitivity_per_V for p in self.parts],
+                "offset_V": [p.offset_V for p in self.parts]}
+
+    def shown(self, target: str) -> str:
+        return " + ".join(p.shown(target) for p in self.parts)
+
+
+#: where a summed load cells' sensitivities or offsets part (``200N/V+210N/V``), not an
+#: exponent's sign (``2e+2N/V``)
+_SUM_SPLIT = re.compile(r"(?<![eE])\+")
+
+#: a current loop's span: its transmitter's range from 4 mA (the low end) to 20 mA (the high)
+LOOP_MA = (4.0, 20.0)
+#: the currents a working loop reads (NAMUR NE 43): below, a broken wire or a transmitter
+#: signalling a fault; above, a fault or a short
+LOOP_WORKING_MA = (3.8, 20.5)
+
+
+@dataclass(frozen=True)
+class CurrentLoop:
+    """A 4-20 mA transmitter's channel as its role's quantity: ``low`` at 4 mA, ``high`` at
+    20 mA, linear between (in the role's unit), as typed (``text``)."""
+
+    low: float
+    high: float
+    text: str
+    option = "--current-range"
+    reads = "mA"
+    channel = "a 4-20 mA channel logged in mA or A"
+
+    def describe(self) -> dict:
+        return {"range": [self.low, self.high], "at_mA": list(LOOP_MA)}
+
+    def shown(self, target: str) -> str:
+        return (f"{LOOP_MA[0]:g} mA = {self.low:g} {target}, {LOOP_MA[1]:g} mA = "
+                f"{self.high:g} {target}")
+
+    def values(self, current_mA: np.ndarray) -> np.ndarray:
+        span = LOOP_MA[1] - LOOP_MA[0]
+        return self.low + (current_mA - LOOP_MA[0]) * (self.high - self.low) / span
 
 
 _SCALE_PART = re.compile(r"^(?P<number>[+-]?(?:\d+[.,]?\d*|[.,]\d+)(?:[eE][+-]?\d+)?)\s*"
@@ -900,53 +966,122 @@ def _volts(unit) -> bool:
     return unit is not None and unit.dimensionality == registry().Unit("V").dimensionality
 
 
+def _reads(unit, scale) -> bool:
+    """Whether a column in ``unit`` (a pint unit or None) is what ``scale`` converts."""
+    return unit is not None and unit.dimensionality == registry().Unit(scale.reads).dimensionality
+
+
+def _current(unit) -> bool:
+    return unit is not None and unit.dimensionality == registry().Unit("mA").dimensionality
+
+
+def current_header(header: str) -> bool:
+    """Whether a header names a unit of electric current (``AI2 [mA]``)."""
+    unit = parse_header(header)[1]
+    return unit is not None and _current(parse_unit(unit))
+
+
 def volts_header(header: str) -> bool:
     """Whether a header names a unit of voltage (``AI0 [V]``, ``Kraft (mV)``)."""
     unit = parse_header(header)[1]
     return unit is not None and _volts(parse_unit(unit))
 
 
-def parse_scaling(sensitivity: str | None, offset: str | None) -> dict[str, Scaling]:
+def parse_scaling(sensitivity: str | None, offset: str | None,
+                  current_range: str | None = None
+                  ) -> dict[str, Scaling | SummedScaling | CurrentLoop]:
     """``--sensitivity force=200N/V,pressure=2.5bar/V`` and ``--offset-volts
     force=0.012,pressure=0.5V`` -> role -> :class:`Scaling`: a sensitivity in any unit of the
     role per volt (a bare number: N/V, bar/V), positive; an offset in volts (default 0 V);
-    ``ValueError`` naming a bad item."""
+    summed load cells' each (``force=200N/V+210N/V``: :class:`SummedScaling`, one per column
+    of ``--columns force=A+B`` in its order; one alone is shared); ``--current-range
+    pressure=0:10bar`` -> role -> :class:`CurrentLoop`; ``ValueError`` naming a bad item or a
+    role given both."""
     given = parse_assignments(sensitivity, "--sensitivity", VOLTS_ROLES)
     offsets = parse_assignments(offset, "--offset-volts", VOLTS_ROLES)
+    loops = parse_assignments(current_range, "--current-range", VOLTS_ROLES)
+    for role in loops.keys() & given.keys():
+        raise ValueError(f"--current-range {role}={loops[role]} and --sensitivity "
+                         f"{role}={given[role]}: expected one, --current-range for a 4-20 mA "
+                         "channel, --sensitivity for one in volts")
     for role in offsets.keys() - given.keys():
         raise ValueError(f"--offset-volts {role}={offsets[role]}: no --sensitivity {role}=...: "
                          f"expected both for a channel logged in volts")
-    out = {}
+    out: dict[str, Scaling | SummedScaling | CurrentLoop] = {}
     for role, text in given.items():
-        per = f"{ROLES[role].unit}/V"
-        match = _SCALE_PART.match(text.strip())
-        unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
-            registry().Unit(per) if match else None
-        if unit is None or unit.dimensionality != registry().Unit(per).dimensionality:
-            raise ValueError(f"--sensitivity {role}={text} is invalid: expected the {role} per "
-                             f"volt, e.g. {role}=200{per}" if role == "force" else
-                             f"--sensitivity {role}={text} is invalid: expected the {role} per "
-                             f"volt, e.g. {role}=2.5{per}")
-        value = float(registry().Quantity(float(match["number"].replace(",", ".")), unit)
-                      .to(per).magnitude)
-        if not (math.isfinite(value) and value > 0):
-            raise ValueError(f"--sensitivity {role}={text} is invalid: expected a {role} per "
-                             "volt above 0 (--force-sign -1 reads a load cell wired to read "
-                             "the pull negative)")
-        offset_V = 0.0
-        if role in offsets:
-            written = offsets[role]
-            match = _SCALE_PART.match(written.strip())
-            unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
-                registry().Unit("V") if match else None
-            if not _volts(unit):
-                raise ValueError(f"--offset-volts {role}={written} is invalid: expected the "
-                                 f"volts the channel reads {VOLTS_ROLES[role][1]}, e.g. "
-                                 f"{role}=0.012 or {role}=12mV")
-            offset_V = float(registry().Quantity(float(match["number"].replace(",", ".")),
-                                                 unit).to("V").magnitude)
-        out[role] = Scaling(value, offset_V, text)
+        # load cells summed (--columns force=A+B) may each have their own: 200N/V+210N/V
+        texts = _SUM_SPLIT.split(text) if role in SUMMED_ROLES else [text]
+        written = _SUM_SPLIT.split(offsets[role]) if role in offsets and role in SUMMED_ROLES \
+            else [offsets.get(role)]
+        if len(texts) > 1 and len(written) > 1 and len(written) != len(texts):
+            raise ValueError(f"--sensitivity {role}={text} and --offset-volts "
+                             f"{role}={offsets[role]}: {len(texts)} sensitivities and "
+                             f"{len(written)} offsets: expected one of each per column added")
+        n = max(len(texts), len(written))
+        parts = tuple(_scaling(role, texts[k % len(texts)].strip(),
+                               None if written[k % len(written)] is None
+                               else written[k % len(written)].strip()) for k in range(n))
+        out[role] = parts[0] if n == 1 else SummedScaling(parts, text)
+    for role, text in loops.items():
+        out[role] = _current_loop(role, text)
     return out
+
+
+def _scaling(role: str, text: str, written: str | None) -> Scaling:
+    """One channel's ``--sensitivity`` ``text`` and ``--offset-volts`` ``written`` (None:
+    0 V) -> :class:`Scaling`."""
+    per = f"{ROLES[role].unit}/V"
+    match = _SCALE_PART.match(text.strip())
+    unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
+        registry().Unit(per) if match else None
+    if unit is None or unit.dimensionality != registry().Unit(per).dimensionality:
+        raise ValueError(f"--sensitivity {role}={text} is invalid: expected the {role} per "
+                         f"volt, e.g. {role}=200{per}" if role == "force" else
+                         f"--sensitivity {role}={text} is invalid: expected the {role} per "
+                         f"volt, e.g. {role}=2.5{per}")
+    value = float(registry().Quantity(float(match["number"].replace(",", ".")), unit)
+                  .to(per).magnitude)
+    if not (math.isfinite(value) and value > 0):
+        raise ValueError(f"--sensitivity {role}={text} is invalid: expected a {role} per "
+                         "volt above 0 (--force-sign -1 reads a load cell wired to read "
+                         "the pull negative)")
+    offset_V = 0.0
+    if written is not None:
+        match = _SCALE_PART.match(written.strip())
+        unit = parse_unit(match["unit"]) if match and match["unit"].strip() else \
+            registry().Unit("V") if match else None
+        if not _volts(unit):
+            raise ValueError(f"--offset-volts {role}={written} is invalid: expected the "
+                             f"volts the channel reads {VOLTS_ROLES[role][1]}, e.g. "
+                             f"{role}=0.012 or {role}=12mV")
+        offset_V = float(registry().Quantity(float(match["number"].replace(",", ".")),
+                                             unit).to("V").magnitude)
+    return Scaling(value, offset_V, text)
+
+
+def _current_loop(role: str, text: str) -> CurrentLoop:
+    """``--current-range ROLE=LOW:HIGH[UNIT]`` (each end may carry its unit; a bare number is
+    in the role's unit) -> :class:`CurrentLoop`."""
+    unit_of = ROLES[role].unit
+    example = "pressure=0:10bar" if role == "pressure" else "force=0:500N"
+    ends = [_SCALE_PART.match(part.strip()) for part in text.split(":")]
+    units = [parse_unit(m["unit"]) if m and m["unit"].strip() else None for m in ends
+             if m is not None]
+    if (len(ends) != 2 or not all(ends) or len(units) != 2
+            or any(m["unit"].strip() and u is None for m, u in zip(ends, units, strict=True))):
+        raise ValueError(f"--current-range {role}={text} is invalid: expected the "
+                         f"transmitter's {role} at 4 mA and at 20 mA, LOW:HIGH, e.g. {example}")
+    default = next((u for u in reversed(units) if u is not None), registry().Unit(unit_of))
+    low, high = (registry().Quantity(float(m["number"].replace(",", ".")), u or default)
+                 for m, u in zip(ends, units, strict=True))
+    if not all(_fits(q.units, ROLES[role]) for q in (low, high)):
+        raise ValueError(f"--current-range {role}={text} is invalid: expected a {role} at each "
+                         f"end, e.g. {example}")
+    low, high = (float(q.to(unit_of).magnitude) for q in (low, high))
+    if not (math.isfinite(low) and math.isfinite(high) and high > low):
+        raise ValueError(f"--current-range {role}={text} is invalid: expected the {role} at "
+                         f"4 mA below the one at 20 mA, e.g. {example}")
+    return CurrentLoop(low, high, text)
 
 
 #: the roles whose columns ``--columns ROLE=A+B`` adds up: load cells in parallel share the
@@ -1083,15 +1218,24 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     for role, scale in (scaling or {}).items():
         if role in found:
             column = found[role]
-            if not all(_volts(parse_unit(p.unit) if p.unit else None)
+            if not all(_reads(parse_unit(p.unit) if p.unit else None, scale)
                        for p in column.parts or (column,)):
                 written = (f"is in {column.unit!r}" if column.unit else
                            f"names no unit (read in {ROLES[role].unit})")
-                raise ValueError(f"--sensitivity {role}={scale.text}: column {column.header!r} "
-                                 f"{written}, not volts: expected a scaling only for a channel "
-                                 "logged in V or mV")
-            for part in column.parts or (column,):
-                part.scale = scale
+                kind = "volts" if scale.reads == "V" else "a current"
+                what = "a scaling" if scale.reads == "V" else "a range"
+                raise ValueError(f"{scale.option} {role}={scale.text}: column "
+                                 f"{column.header!r} {written}, not {kind}: expected {what} "
+                                 f"only for {scale.channel}")
+            parts = column.parts or (column,)
+            each = getattr(scale, "parts", None)
+            if each is not None and len(each) != len(parts):
+                raise ValueError(f"--sensitivity {role}={scale.text}: {len(each)} "
+                                 f"sensitivities for {len(parts)} column(s), "
+                                 f"{column.header!r}: expected one per column added "
+                                 f"(--columns {role}=A+B), in its order, or one for all")
+            for k, part in enumerate(parts):
+                part.scale = each[k] if each is not None else scale
             column.scale = scale
     for column in [p for c in found.values() for p in c.parts or (c,)]:
         _check_unit(table, column)
@@ -1200,8 +1344,14 @@ def _check_unit(table: RawTable, column: Column) -> None:
                          f"({column.unit!r}): expected a {column.role} unit like {role.unit}, "
                          f"or the channel's scaling: --sensitivity {column.role}={placeholder} "
                          f"(and --offset-volts {column.role}=V, what it reads {zero})")
+    if column.role in VOLTS_ROLES and column.scale is None and _current(parse_unit(column.unit)):
+        example = "0:10bar" if column.role == "pressure" else "0:500N"
+        raise ValueError(f"{table.name}: column {column.header!r} is a current loop's "
+                         f"({column.unit!r}): expected a {column.role} unit like {role.unit}, "
+                         f"or the transmitter's range: --current-range {column.role}={example} "
+                         f"(its {column.role} at 4 mA and at 20 mA)")
     if column.scale is not None:
-        return  # its volts scaled to the role's unit
+        return  # its volts or milliamperes scaled to the role's unit
     if column.role == "pressure" and _ABSOLUTE.fullmatch(column.unit.strip()):
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is an "
                          "absolute pressure: expected a gauge pressure, above the atmosphere as "
@@ -1309,13 +1459,32 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
                              "expected one unit per column")
         unit = next(iter(inline))
         _check_unit(table, replace(column, unit=unit))
-    if column.scale is not None:  # volts as the bench scales its load cell's
-        volts = (values * parse_unit(unit)).to("V").magnitude
-        return (volts - column.scale.offset_V) * column.scale.sensitivity_per_V
+    if column.scale is not None:  # volts as the bench scales its load cell's, or a loop's mA
+        read = (values * parse_unit(unit)).to(column.scale.reads).magnitude
+        if isinstance(column.scale, CurrentLoop):
+            _check_loop(table, column, read)
+        return column.scale.values(read)
     if unit is None or role.unit is None:
         return values
     target = role.unit or "dimensionless"
     return (values * parse_unit(unit)).to(target).magnitude
+
+
+def _check_loop(table: RawTable, column: Column, current_mA: np.ndarray) -> None:
+    """``ValueError`` naming the first cell of a 4-20 mA channel outside the currents a working
+    loop reads (:data:`LOOP_WORKING_MA`): a broken wire or a transmitter in fault reads no
+    pressure or force, and scaled it would read as one."""
+    low, high = LOOP_WORKING_MA
+    outside = np.flatnonzero((current_mA < low) | (current_mA > high))
+    if outside.size:
+        k = int(outside[0])
+        more = f" ({outside.size - 1} more row(s) too)" if outside.size > 1 else ""
+        raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+                         f"{column.header!r}): {current_mA[k]:g} mA is outside the "
+                         f"{low:g}-{high:g} mA a working 4-20 mA loop reads{more}: a broken "
+                         "wire or a transmitter signalling a fault, its reading no "
+                         f"{column.role}: expected the rows of a working loop (leave those "
+                         "rows out of the file)")
 
 
 def _plain_numbers(raw: list, decimal: str) -> np.ndarray | None:
@@ -1748,7 +1917,8 @@ def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
     twice), each named in ``repeats_skipped`` (``A12``): counted twice, a sample would halve
     the standard errors of its hold, not add a reading. Where some rows share their time with
     the row above but not their readings (a clock coarser than the sampling, whole seconds at
-    10 Hz), alike rows may be samples of their own: none is skipped."""
+    10 Hz), alike rows may be samples of their own: none is skipped, each named in
+    ``times_shared``."""
     indices = [p.index for c in columns for p in c.parts or (c,)]
     rows = table.rows
 
@@ -1757,7 +1927,9 @@ def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
 
     same_time = [k for k in range(1, len(rows)) if alike(k, indices[:1])]
     skipped = [k for k in same_time if alike(k, indices)]
-    if not skipped or len(skipped) < len(same_time):
+    if len(skipped) < len(same_time):
+        return replace(table, times_shared=[table.cell(k, indices[0]) for k in same_time])
+    if not skipped:
         return table
     gone = set(skipped)
     keep = [k for k in range(len(rows)) if k not in gone]
@@ -1904,8 +2076,7 @@ class Recognition:
             shown = (f" [{unit} -> {target}]" if target and unit != target
                      else f" [{unit}]" if unit else "")
             if column.scale:
-                shown = (f"{shown[:-1]}: {column.scale.sensitivity_per_V:g} {target}/V from "
-                         f"{column.scale.offset_V:g} V]")
+                shown = f"{shown[:-1]}: {column.scale.shown(target)}]"
             header = " + ".join(repr(p.header) for p in column.parts or (column,))
             parts.append(f"{header} -> {role}{shown}")
         extras = []
@@ -1929,6 +2100,10 @@ class Recognition:
             extras.append(f"{len(repeats)} row(s) repeating the row above (its time and "
                           "readings) skipped: " + ", ".join(repeats[:5])
                           + (", ..." if len(repeats) > 5 else ""))
+        if shared := self.table.times_shared:
+            extras.append(f"{len(shared)} row(s) with the time of the row above but other "
+                          "readings (a clock coarser than the sampling) kept as samples: "
+                          + ", ".join(shared[:5]) + (", ..." if len(shared) > 5 else ""))
         if over := self.table.overloads_skipped:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")

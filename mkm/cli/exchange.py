@@ -59,12 +59,17 @@ def register(subparsers) -> None:
                      help="how a channel logged in volts (V or mV) becomes a force or a "
                      "pressure, as the bench's [loadcell] sensitivity_N_per_V: the quantity per "
                      "volt, e.g. force=200N/V (a load-cell amplifier), pressure=2.5bar/V (a "
-                     "0.5-4.5 V transducer of 0-10 bar); a bare number is N/V or bar/V "
+                     "0.5-4.5 V transducer of 0-10 bar); a bare number is N/V or bar/V; "
+                     "load cells summed (--columns force=A+B) each their own in its order, "
+                     "force=200N/V+250N/V, or one for all "
                      "(default: none; a column in volts without it is refused)")
     imp.add_argument("--offset-volts", default=None, metavar="ROLE=VOLTS,...",
                      help="what a channel scaled by --sensitivity reads unloaded or at 0 bar, "
                      "subtracted before scaling, as [loadcell] offset_V: e.g. force=0.012, "
-                     "pressure=0.5V (default: 0 V)")
+                     "pressure=0.5V; summed load cells each theirs, force=10mV+20mV "
+                     "(default: 0 V)")
+    imp.add_argument("--current-range", default=None, metavar="ROLE=LOW:HIGH,...",
+                     action=derived_help(_current_range_help))
     imp.add_argument("--sheet", default=None, help="the workbook's sheet (default: every sheet "
                      "with a pressure and a force column, one run each)")
     imp.add_argument("--muscle", default=None, metavar="NAME",
@@ -140,6 +145,17 @@ def _force_sign_help() -> str:
             "it; default: 1, as read)")
 
 
+def _current_range_help() -> str:
+    from mkm.bench.tables import LOOP_MA, LOOP_WORKING_MA
+
+    low, high = LOOP_MA
+    return (f"how a {low:g}-{high:g} mA current-loop channel (logged in mA) becomes a pressure "
+            f"or a force: the transmitter's range, its reading at {low:g} mA and at {high:g} "
+            "mA, linear between, e.g. pressure=0:10bar, force=0:500N; a bare number is bar or "
+            f"N; a current outside {LOOP_WORKING_MA[0]:g}-{LOOP_WORKING_MA[1]:g} mA (a broken "
+            "loop) is refused (default: none; a column in mA without it is refused)")
+
+
 def _one_step_per_row_help() -> str:
     from mkm.bench.series import PLATEAU_TOLERANCE_BAR, RECORD_MIN_ROWS
 
@@ -176,7 +192,8 @@ def _import(args) -> int:
             select=args.muscle, accuracy=parse_accuracy(args.accuracy),
             force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
             join=args.join_by_time, join_shift_s=args.join_shift,
-            scaling=parse_scaling(args.sensitivity, args.offset_volts), notify=lines.append,
+            scaling=parse_scaling(args.sensitivity, args.offset_volts, args.current_range),
+            notify=lines.append,
             bar=bar)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)

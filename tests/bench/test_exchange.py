@@ -57,7 +57,7 @@ def test_a_hand_made_table_is_imported(suffix, tmp_path, capsys):
 
 
 def test_an_import_shows_its_stages_on_a_bar(tmp_path, monkeypatch):
-    """A record of 600,000 rows takes half a minute to import, which showed nothing: on a
+    """A record of 600,000 rows takes 15 s or more to import, which showed nothing: on a
     terminal a bar over its stages, each named as it starts, as the other long commands show
     one; --no-progress none; the run folders' paths alone on stdout."""
     import io

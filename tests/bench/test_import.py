@@ -158,6 +158,97 @@ def test_channels_logged_in_volts_are_scaled_as_the_bench_scales_its_load_cell(t
     assert not (tmp_path / "bad").exists()
 
 
+def test_summed_load_cells_in_volts_each_take_their_own_sensitivity(tmp_path, mkm_cli):
+    # two amplifiers of their own gains (200 and 250 N/V, 10 and 20 mV unloaded) sharing the
+    # pull: one --sensitivity for both had to be given, one cell's forces wrong by 25 %
+    force = thickwall_N(PRESSURES, 0.122)
+    pressures = np.r_[0.0, PRESSURES]
+    share_a = np.r_[0.0, 0.4 * force]  # the cells' shares of the pull, any split
+    share_b = np.r_[0.0, force] - share_a
+    path = tmp_path / "cells.csv"
+    pd.DataFrame({"P [bar]": pressures, "A [mV]": 10.0 + share_a / 0.2,
+                  "B [mV]": 20.0 + share_b / 0.25}).to_csv(path, index=False)
+    both = ["--columns", "force=A+B", "--tare", "none"]
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", *both, "--sensitivity",
+                          "force=200N/V+250N/V", "--offset-volts", "force=10mV+0.02V")
+    assert ("'A [mV]' + 'B [mV]' -> force [mV -> N: 200 N/V from 0.01 V + 250 N/V from "
+            "0.02 V]") in err
+    # the run folder keeps 6 significant digits: within half a unit of the sixth
+    np.testing.assert_allclose(run.steps["force_N_mean"], np.r_[0.0, force], rtol=5e-6,
+                               atol=1e-6)
+    assert run.meta.imported_from["columns"]["force"]["scaling"] == {
+        "sensitivity_per_V": [200.0, 250.0], "offset_V": [0.01, 0.02]}
+    # one offset for both, its own sensitivity each: the offset shared
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", *both, "--sensitivity",
+                        "force=2e+2N/V+250", "--offset-volts", "force=0")
+    np.testing.assert_allclose(run.steps["force_N_mean"],
+                               np.r_[0.0, force] + 10e-3 * 200 + 20e-3 * 250, rtol=5e-6)
+    for sensitivity, offset, said in (
+            ("force=200N/V+250N/V+300N/V", "force=0", "3 sensitivities for 2 column(s)"),
+            ("force=200N/V+250N/V", "force=0+0+0", "2 sensitivities and 3 offsets")):
+        code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", *both,
+                                "--sensitivity", sensitivity, "--offset-volts", offset,
+                                "--out", str(tmp_path / "bad")])
+        assert code == 2 and err.count("\n") == 1 and said in err
+    assert not (tmp_path / "bad").exists()
+
+
+def test_a_4_20_ma_channel_is_its_transmitters_range_and_a_broken_loop_is_refused(tmp_path,
+                                                                                   mkm_cli):
+    # a 0-10 bar transmitter on a 4-20 mA loop: was refused as "'mA' is not a unit of
+    # pressure", and no option read it. 4 mA is 0 bar, 20 mA 10 bar: 1.6 mA per bar
+    force = thickwall_N(PRESSURES, 0.122)
+    pressures = np.r_[0.0, PRESSURES]
+    current_mA = 4.0 + 1.6 * pressures
+    path = tmp_path / "loop.csv"
+    pd.DataFrame({"Druck [mA]": current_mA, "Kraft [N]": np.r_[0.0, force]}).to_csv(
+        path, index=False)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert ("column 'Druck [mA]' is a current loop's ('mA'): expected a pressure unit like bar, "
+            "or the transmitter's range: --current-range pressure=0:10bar (its pressure at 4 mA "
+            "and at 20 mA)") in err
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", "--current-range",
+                          "pressure=0:1000kPa", "--tare", "none")
+    assert "'Druck [mA]' -> pressure [mA -> bar: 4 mA = 0 bar, 20 mA = 10 bar]" in err
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], pressures, rtol=1e-9,
+                               atol=1e-9)
+    assert run.meta.imported_from["columns"]["pressure"]["scaling"] == {
+        "range": [0.0, 10.0], "at_mA": [4.0, 20.0]}
+    # a range from 0.5 bar, bare numbers in bar: 4 mA is 0.5 bar, 20 mA 10.5 bar
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", "--current-range",
+                        "pressure=0.5:10.5", "--tare", "none")
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], pressures + 0.5, rtol=1e-9,
+                               atol=1e-9)
+    # a broken wire reads 0 mA (NAMUR NE 43: below 3.8 mA a fault): refused, naming its row
+    broken = tmp_path / "broken.csv"
+    pd.DataFrame({"Druck [mA]": np.r_[current_mA[:4], 0.0, 20.6, current_mA[6:]],
+                  "Kraft [N]": np.r_[0.0, force]}).to_csv(broken, index=False)
+    code, _, err = mkm_cli(["import", str(broken), *MUSCLE, "--eps", "12.2%", "--current-range",
+                            "pressure=0:10bar", "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("broken.csv, cell A6 (column 'Druck [mA]'): 0 mA is outside the 3.8-20.5 mA a "
+            "working 4-20 mA loop reads (1 more row(s) too)") in err
+    for bad in ("pressure=10", "pressure=10:0bar", "pressure=0:10N"):
+        code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%",
+                                "--current-range", bad, "--out", str(tmp_path / "bad")])
+        assert code == 2 and err.count("\n") == 1 and f"--current-range {bad} is invalid" in err
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "12.2%", "--current-range",
+                            "force=0:500N", "--out", str(tmp_path / "bad")])
+    assert code == 2 and ("--current-range force=0:500N: column 'Kraft [N]' is in 'N', not a "
+                          "current") in err
+    # a DAQ's channel by its number: no name says pressure, its unit says a loop's
+    numbered = tmp_path / "numbered.csv"
+    pd.DataFrame({"AI0 [mA]": current_mA, "Kraft [N]": np.r_[0.0, force]}).to_csv(
+        numbered, index=False)
+    code, _, err = mkm_cli(["import", str(numbered), *MUSCLE, "--eps", "12.2%", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and ("a 4-20 mA channel, 'AI0 [mA]', with --current-range "
+                          "pressure=LOW:HIGH") in err
+    assert not (tmp_path / "bad").exists()
+
+
 @pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
 def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_path, mkm_cli):
     force = thickwall_N(PRESSURES, 0.122)
@@ -1749,6 +1840,22 @@ def test_rows_written_twice_by_a_logger_are_counted_once_and_named(tmp_path, mkm
                                                         strict=True)))
     (kept,), _ = _import(mkm_cli, coarse, *MUSCLE, "--eps", "0")
     assert kept.meta.imported_from["rows_skipped_as_repeats"] == [] and len(kept.samples) == 400
+
+def test_rows_sharing_a_coarse_clocks_time_are_kept_and_counted(tmp_path, mkm_cli):
+    # a clock in whole seconds at 10 Hz: rows sharing a time with other readings were kept
+    # unsaid; 40 s of 10 rows a second, each second's last 9 rows share the first's time
+    t = np.arange(0.0, 40.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 40], [0, 0, 1, 1, 2, 2, 0, 0])
+    coarse = tmp_path / "coarse.csv"
+    coarse.write_text("Time [s],Pressure [bar],Force [N]\n" + "".join(
+        f"{int(round(a, 6))},{b:.3f},{c:.2f}\n"
+        for a, b, c in zip(t, p, thickwall_N(p, 0.0) + 0.01 * np.arange(t.size), strict=True)))
+    (run,), err = _import(mkm_cli, coarse, *MUSCLE, "--eps", "0")
+    assert ("360 row(s) with the time of the row above but other readings (a clock coarser "
+            "than the sampling) kept as samples: A3, A4, A5, A6, A7, ...") in err
+    assert len(run.meta.imported_from["rows_sharing_a_time_kept"]) == 360
+    assert len(run.samples) == 400
+
 
 def test_a_record_exported_newest_first_is_refused_saying_so(tmp_path, mkm_cli):
     # a logger's export of its latest samples first: was "cell A3: the time goes backwards",
