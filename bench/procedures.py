@@ -19,6 +19,7 @@ import numpy as np
 from scipy import stats
 
 from mkm.bench.backend import AOWriteFailed, Backend, BenchError, DaqDisconnected, DeviceInfo
+from mkm.bench.bounded import call_within
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
@@ -358,22 +359,13 @@ class _BoundedWrite:
         self._backend = backend
 
     def write_command(self, volts: float) -> None:
-        done, failed = threading.Event(), []
-
-        def write() -> None:
-            try:
-                self._backend.write_command(volts)
-            except BaseException as exc:  # raised by the caller
-                failed.append(exc)
-            finally:
-                done.set()
-
-        threading.Thread(target=write, name="mkm-vent-write", daemon=True).start()
-        if not done.wait(WATCHDOG_WRITE_S + READ_HANG_MARGIN_S):
+        returned, exc = call_within(lambda: self._backend.write_command(volts),
+                                    WATCHDOG_WRITE_S + READ_HANG_MARGIN_S, "mkm-vent-write")
+        if not returned:
             raise _WriteHung(f"did not return within {WATCHDOG_WRITE_S + READ_HANG_MARGIN_S:g} "
                              f"s (its timeout {WATCHDOG_WRITE_S:g} s): the driver hangs")
-        if failed:
-            raise failed[0]
+        if exc is not None:
+            raise exc
 
     def __getattr__(self, name):
         return getattr(self._backend, name)

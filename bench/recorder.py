@@ -26,6 +26,7 @@ import time
 from pathlib import Path
 
 from mkm.bench.backend import DeviceInfo
+from mkm.bench.bounded import call_within
 from mkm.bench.config import BenchConfig
 from mkm.bench.storage import (
     CommandRecord,
@@ -253,25 +254,16 @@ class Recorder:
         a run keeps every sample it acquired; :attr:`kept` says where, or why not. Written on a
         thread of its own, waited for :data:`mkm.bench.unvented.STATE_WAIT_S`: a state folder
         that hangs (a roaming profile on a share) must not hold the run's outcome."""
-        rows, done, failed = list(self._unwritten), threading.Event(), []
+        rows = list(self._unwritten)
         span = f"{rows[0].sample}-{rows[-1].sample}" if len(rows) > 1 else f"{rows[0].sample}"
-
-        def keep() -> None:
-            try:
-                write_samples(self.kept_path, rows)
-            except BaseException as exc:  # said below
-                failed.append(exc)
-            finally:
-                done.set()
-
-        threading.Thread(target=keep, name="mkm-recorder-keep", daemon=True).start()
+        returned, exc = call_within(lambda: write_samples(self.kept_path, rows), STATE_WAIT_S,
+                                    "mkm-recorder-keep")
         lost = f"{len(rows)} samples could not be written to the run folder"
-        if not done.wait(STATE_WAIT_S):
+        if not returned:
             self.kept = (f"{lost}: samples {span} are being written to {self.kept_path}, which "
                          f"did not answer within {STATE_WAIT_S:g} s (it hangs): kept once it "
                          "answers, lost if this process ends first")
-        elif failed:
-            exc = failed[0]
+        elif exc is not None:
             self.kept = (f"{lost}, nor kept in {self.kept_path} ({type(exc).__name__}: "
                          f"{exc})")
         else:

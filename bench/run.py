@@ -57,6 +57,7 @@ from pathlib import Path
 
 from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, DaqDisconnected
+from mkm.bench.bounded import call_within
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
@@ -102,22 +103,12 @@ def close_within(backend: Backend, wait_s: float = CLOSE_WAIT_S) -> str:
     """Close ``backend`` (it writes the vent again) on a thread of its own, waited for
     ``wait_s``: a driver that hangs there must not keep the record from being written. Says
     so when it did not return ("" when it closed); raises what the close raised."""
-    done, failed = threading.Event(), []
-
-    def close() -> None:
-        try:
-            backend.close()
-        except BaseException as exc:
-            failed.append(exc)
-        finally:
-            done.set()
-
-    threading.Thread(target=close, name="mkm-close", daemon=True).start()
-    if not done.wait(wait_s):
+    returned, exc = call_within(backend.close, wait_s, "mkm-close")
+    if not returned:
         return (f"closing the device did not return within {wait_s:g} s (the driver hangs): "
                 "it is let go as this process ends")
-    if failed:
-        raise failed[0]
+    if exc is not None:
+        raise exc
     return ""
 
 
@@ -380,23 +371,13 @@ class _ReadWatchdog:
         """Write the vent on a thread of its own, waited for :data:`WATCHDOG_WRITE_S`: a driver
         that hangs may hold its writes too, and the books must still be kept. Whether it went
         out, and what came of it in words."""
-        done, failed = threading.Event(), []
         volts = self.run.config.regulator.command_volts(0.0)
-
-        def write() -> None:
-            try:
-                self.run.backend.write_command(volts)
-            except BaseException as exc:
-                failed.append(exc)
-            finally:
-                done.set()
-
-        threading.Thread(target=write, name="mkm-watchdog-vent", daemon=True).start()
-        if not done.wait(WATCHDOG_WRITE_S):
+        returned, exc = call_within(lambda: self.run.backend.write_command(volts),
+                                    WATCHDOG_WRITE_S, "mkm-watchdog-vent")
+        if not returned:
             return False, (f"the watchdog's vent command did not return within "
                            f"{WATCHDOG_WRITE_S:g} s (the driver hangs for it too): VENT BY HAND")
-        if failed:
-            exc = failed[0]
+        if exc is not None:
             return False, (f"the watchdog's vent command failed ({type(exc).__name__}: {exc}): "
                            "VENT BY HAND")
         return True, "vented by the watchdog"

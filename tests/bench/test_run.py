@@ -698,6 +698,18 @@ def test_a_read_of_the_vent_check_that_hangs_is_recorded_as_it_hangs(config, tmp
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
 
 
+def failed_with(run, words: str) -> dict | None:
+    """run.json of ``run`` once it says ``failed`` with ``words`` in its reason (None after the
+    test's net of 60 s)."""
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline:
+        meta = json.loads((run.recorder.path / "run.json").read_text())
+        if meta["status"] == "failed" and words in meta["reason"]:
+            return meta
+        time.sleep(0.01)
+    return None
+
+
 def test_a_read_of_the_shutdown_that_hangs_after_the_loops_hang_is_recorded_too(config,
                                                                                 tmp_path):
     # the read of sample 45 hangs with 0.5 bar commanded: the watchdog vents and records it,
@@ -709,21 +721,12 @@ def test_a_read_of_the_shutdown_that_hangs_after_the_loops_hang_is_recorded_too(
     backend = SimBackend(c)
     read, seen = backend.read, {}
 
-    def failed_with(words: str) -> dict | None:
-        deadline = time.monotonic() + 60  # the test's net
-        while time.monotonic() < deadline:
-            meta = json.loads((run.recorder.path / "run.json").read_text())
-            if meta["status"] == "failed" and words in meta["reason"]:
-                return meta
-            time.sleep(0.01)
-        return None
-
     def hanging_twice(n, timeout):
         if backend._index == 45 and "loop" not in seen:
-            seen["loop"] = failed_with("vented by the watchdog")
+            seen["loop"] = failed_with(run, "vented by the watchdog")
         elif run._watchdog is not None and run._watchdog._vented.is_set() and \
                 "shutdown" not in seen:
-            seen["shutdown"] = failed_with("after the shutdown's vent")
+            seen["shutdown"] = failed_with(run, "after the shutdown's vent")
         return read(n, timeout)
 
     backend.read = hanging_twice
@@ -760,24 +763,15 @@ def test_a_vent_write_of_the_shutdown_that_hangs_after_the_loops_hang_is_in_its_
     backend = SimBackend(c)
     read, write, seen = backend.read, backend.write_command, {}
 
-    def failed_with(words: str) -> dict | None:
-        deadline = time.monotonic() + 60  # the test's net
-        while time.monotonic() < deadline:
-            meta = json.loads((run.recorder.path / "run.json").read_text())
-            if meta["status"] == "failed" and words in meta["reason"]:
-                return meta
-            time.sleep(0.01)
-        return None
-
     def hanging(n, timeout):
         if backend._index == 45 and "loop" not in seen:
-            seen["loop"] = failed_with("vented by the watchdog")
+            seen["loop"] = failed_with(run, "vented by the watchdog")
         return read(n, timeout)
 
     def hanging_for_the_shutdown(volts):
         if "loop" in seen and "vent" not in seen and \
                 threading.current_thread() is threading.main_thread():
-            seen["vent"] = failed_with("write interlock: the command of 0 bar")
+            seen["vent"] = failed_with(run, "write interlock: the command of 0 bar")
         write(volts)
 
     backend.read, backend.write_command = hanging, hanging_for_the_shutdown
