@@ -336,14 +336,19 @@ class _ReadWatchdog:
                 self._after_vent(hung_s)
                 continue
             t_s = acq.next_index / acq.rate_hz
-            # the loop stops at its next block from now on, whatever the write below does
-            acq.hung = (f"read interlock: the read of the device did not return within "
-                        f"{hung_s:.1f} s (its timeout {run.config.daq.read_timeout_s:g} s) with "
-                        f"{held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
-            ok, vent = self._vent()  # acts first
-            acq.hung_vent = vent
-            if not self._vented.is_set():  # else the shutdown, under way, keeps the books
-                self._books(ok, t_s)
+            self._trip(acq, t_s, f"read interlock: the read of the device did not return "
+                       f"within {hung_s:.1f} s (its timeout {run.config.daq.read_timeout_s:g} "
+                       f"s) with {held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
+
+    def _trip(self, acq: Acquisition, t_s: float, why: str) -> None:
+        """A hang with a pressure held: the loop stops at its next block from now on, whatever
+        the vent write does (``why``); the vent is written first, then the books kept, unless
+        the shutdown, under way, keeps them."""
+        acq.hung = why
+        ok, vent = self._vent()  # acts first
+        acq.hung_vent = vent
+        if not self._vented.is_set():
+            self._books(ok, t_s)
 
     def _write_hung(self, acq: Acquisition, writing: tuple[float, float]) -> bool:
         """Whether the loop's command write hangs past :data:`WATCHDOG_WRITE_S` (the AO write's
@@ -357,14 +362,10 @@ class _ReadWatchdog:
         if hung_s < WATCHDOG_WRITE_S + READ_HANG_MARGIN_S or not max(held_bar, asked_bar) > 0:
             return False
         t_s = acq.next_index / acq.rate_hz
-        # the loop stops at its next block (and vents a pressure that goes out late) from now
-        acq.hung = (f"write interlock: the command of {asked_bar:g} bar did not return within "
-                    f"{hung_s:.1f} s (its timeout {WATCHDOG_WRITE_S:g} s) with {held_bar:g} bar "
-                    f"commanded after {t_s:g} s: the driver hangs")
-        ok, vent = self._vent()  # acts first
-        acq.hung_vent = vent
-        if not self._vented.is_set():
-            self._books(ok, t_s)
+        # the loop also vents a pressure the hung write lets out late
+        self._trip(acq, t_s, f"write interlock: the command of {asked_bar:g} bar did not return "
+                   f"within {hung_s:.1f} s (its timeout {WATCHDOG_WRITE_S:g} s) with "
+                   f"{held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
         return True
 
     def _vent(self) -> tuple[bool, str]:
