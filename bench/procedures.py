@@ -64,7 +64,8 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
     """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
     run left pressurised, and close (vent again) on exit. ``notify`` receives the operator's
-    lines (default: stderr, ``mkm <command>: ...``)."""
+    lines (default: stderr, ``mkm <command>: ...``). A vent written for dead runs that hangs
+    (:class:`_BoundedWrite`) ends the command with a :class:`~mkm.bench.backend.BenchError`."""
     notify = notify or StderrNotice(command)
     owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
     try:
@@ -72,7 +73,15 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
             dead_runs = owner.dead_runs()  # before the device is opened
             info = backend.open()
             try:
-                for marker in vent_unvented(backend, dead_runs, owner.on_state_folder):
+                try:  # the driver may hang for that write: bounded, then said
+                    markers = vent_unvented(_BoundedWrite(backend), dead_runs,
+                                            owner.on_state_folder)
+                except _WriteHung as exc:  # their markers stay: the next command names them
+                    raise BenchError(f"the vent written for the runs that died on this bench "
+                                     f"{exc}: VENT BY HAND; they were not named, and the next "
+                                     "command on this bench vents first and names them"
+                                     ) from None
+                for marker in markers:
                     notify(marker.vented_now())
                 yield info
             finally:

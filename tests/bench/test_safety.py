@@ -1252,6 +1252,51 @@ def test_the_vent_written_again_for_dead_runs_after_a_hung_check_is_bounded(conf
     assert lease.path.exists()  # the dead run stays marked
 
 
+def test_the_vent_written_at_start_up_for_dead_runs_is_bounded(config, monkeypatch):
+    # a run died on the bench; `mkm tare` opens the device (which writes the vent) and writes
+    # the vent again for the dead run before anything else, and the driver hangs in that write:
+    # the command sat in it, nothing said. Now the write is given the AO write's timeout and the
+    # margin, then the command ends in one line; the dead run is left marked for the next.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    lease = BenchLease("sim-Dev1", Path("/nonexistent/run"), "2026-12-01T10:00:00+00:00")
+    lease.started()
+    lease.end()
+    lease.command(1.5)
+    data = json.loads(lease.path.read_text())
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    lease.path.write_text(json.dumps(data))
+    release, hung = threading.Event(), []
+
+    class Hanging(SimBackend):
+        opened = False
+
+        def open(self):
+            info = super().open()
+            self.opened = True
+            return info
+
+        def write_command(self, volts):
+            if self.opened and not hung:  # the first write after the open hangs
+                hung.append(volts)
+                release.wait(60)  # the test's net; released once the command returned
+            super().write_command(volts)
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.tare(config, seconds=0.5)
+    finally:
+        release.set()
+    assert hung == [0.0]
+    assert str(caught.value) == (
+        "the vent written for the runs that died on this bench did not return within 2 s (its "
+        "timeout 1 s): the driver hangs: VENT BY HAND; they were not named, and the next command "
+        "on this bench vents first and names them")
+    assert lease.path.exists()  # the dead run stays marked
+
+
 def test_a_count_of_waiting_samples_that_hangs_in_mkm_vent_ends_it_unverified(config,
                                                                               monkeypatch):
     # the check's first call to the driver asks how many samples wait (those acquired before
