@@ -1201,6 +1201,18 @@ def test_a_read_that_hangs_in_mkm_vents_check_ends_unverified_and_marks_the_benc
     assert not list(bench_folder("sim-Dev1").glob("*.json"))  # removed once vented
 
 
+def _dead_run_lease() -> BenchLease:
+    """The marker of a run that died on the simulated bench with 1.5 bar commanded."""
+    lease = BenchLease("sim-Dev1", Path("/nonexistent/run"), "2026-12-01T10:00:00+00:00")
+    lease.started()
+    lease.end()
+    lease.command(1.5)
+    data = json.loads(lease.path.read_text())
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    lease.path.write_text(json.dumps(data))
+    return lease
+
+
 def test_the_vent_written_again_for_dead_runs_after_a_hung_check_is_bounded(config,
                                                                             monkeypatch):
     # a run died on the bench; `mkm vent` vents, its check's read hangs (watched, said), then it
@@ -1210,13 +1222,7 @@ def test_the_vent_written_again_for_dead_runs_after_a_hung_check_is_bounded(conf
     import mkm.bench.procedures as procedures
     from mkm.bench.backend import BenchError
 
-    lease = BenchLease("sim-Dev1", Path("/nonexistent/run"), "2026-12-01T10:00:00+00:00")
-    lease.started()
-    lease.end()
-    lease.command(1.5)
-    data = json.loads(lease.path.read_text())
-    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
-    lease.path.write_text(json.dumps(data))
+    lease = _dead_run_lease()
     c = config.replace(daq={"read_timeout_s": 0.5})
     release, reads, writes, hanging = threading.Event(), [], [], set()
 
@@ -1260,13 +1266,7 @@ def test_the_vent_written_at_start_up_for_dead_runs_is_bounded(config, monkeypat
     import mkm.bench.procedures as procedures
     from mkm.bench.backend import BenchError
 
-    lease = BenchLease("sim-Dev1", Path("/nonexistent/run"), "2026-12-01T10:00:00+00:00")
-    lease.started()
-    lease.end()
-    lease.command(1.5)
-    data = json.loads(lease.path.read_text())
-    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
-    lease.path.write_text(json.dumps(data))
+    lease = _dead_run_lease()
     release, hung = threading.Event(), []
 
     class Hanging(SimBackend):
