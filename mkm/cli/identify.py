@@ -27,7 +27,8 @@ def _params_help() -> str:
             "taken as given; t0 and D0 for a muscle whose wall is unknown; offset is the "
             "pressure monitor's, within its declared accuracy; gap needs --model thickwall or "
             "axisym; L0, the rest length, for runs of one length whose table may start already "
-            "shortened: each run's eps follows from its held length)")
+            "shortened: each run's eps follows from its held length; zero, the load cell's zero "
+            "(a tare left out, a drift), one for every run)")
 
 
 def register(subparsers) -> None:

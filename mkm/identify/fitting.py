@@ -24,7 +24,11 @@ monitor's offset
 ``pressure_offset_bar`` (what it reads above the truth) is a nuisance parameter within the
 monitor's declared accuracy: it moves the threshold, which the runs see. The radial gap
 between tube and braid (``gap``, :func:`mkm.fem.thickwall.klute_hannaford`) is fitted only when
-asked, with a static model that takes it.
+asked, with a static model that takes it. The load cell's zero ``force_zero_N`` (what it reads
+when the muscle pulls nothing: a tare left out of a lab's table, a zero drifted since the tare)
+is fitted only when asked (``--params ...,zero``): one for every run, told from the muscle by
+the steps where it is slack, and searched within :data:`ZERO_SEARCH_FRACTION` of the largest
+force the runs read.
 """
 
 from __future__ import annotations
@@ -45,13 +49,20 @@ from mkm.identify.runs import offset_search_bar
 from mkm.prediction_cache import DEFAULT_CACHE_DIR, predict_many
 
 ORDER = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm", "gap_mm",
-         "pressure_offset_bar", "pressure_hysteresis_bar", "hysteresis_fraction",
-         "creep_fraction", "log_tau")
+         "pressure_offset_bar", "pressure_hysteresis_bar", "force_zero_N",
+         "hysteresis_fraction", "creep_fraction", "log_tau")
 #: the parameters of the static force (the rest are friction, creep and the monitor)
 STATIC_NAMES = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm",
                 "gap_mm")
 #: the tube's geometry, which a fit may take from the runs or fit (one tube for every run)
 GEOMETRY = ("D0_mm", "t0_mm")
+#: the values fitted only when asked (a gap, the wall, the diameter, the rest length, the
+#: pressure monitor's offset and hysteresis, the load cell's zero)
+OPTIONAL = ("gap_mm", *GEOMETRY, "L0_mm", "pressure_offset_bar", "pressure_hysteresis_bar",
+            "force_zero_N")
+#: the load cell's zero searched within +- this share of the largest force the runs read: a
+#: tare left out is a preload or a cell's offset, a fraction of what the muscle pulls
+ZERO_SEARCH_FRACTION = 0.1
 TERM_BOUNDS = {"hysteresis_fraction": (0.0, 0.3), "creep_fraction": (0.0, 0.3),
                "log_tau": (math.log(1.0), math.log(1000.0)), "c01_fraction": (0.0, 0.9)}
 #: a fitted wall or diameter searched within these factors of the declared one
@@ -72,7 +83,7 @@ FE_BOX = {"theta0_deg": (15.0, 50.0),
 TABLE_STEP_BAR = 0.05
 #: one residual scale for every parameter (least_squares' x_scale)
 X_SCALE = {"theta0_deg": 0.3, "rubber_scale": 0.05, "gap_mm": 0.05, "t0_mm": 0.05,
-           "D0_mm": 0.1, "L0_mm": 0.5, "c01_fraction": 0.05}
+           "D0_mm": 0.1, "L0_mm": 0.5, "c01_fraction": 0.05, "force_zero_N": 0.5}
 #: an optimum this close to a box edge (a fraction of the box) is at the edge
 EDGE_FRACTION = 1e-3
 
@@ -122,10 +133,8 @@ def internal_values(values: dict[str, float]) -> dict[str, float]:
 
 
 def _optional(values: dict) -> dict:
-    """The values fitted only when asked (a gap, the wall, the diameter, the rest length, the
-    monitor's offset and hysteresis)."""
-    return {k: values[k] for k in ("gap_mm", *GEOMETRY, "L0_mm", "pressure_offset_bar",
-                                   "pressure_hysteresis_bar") if k in values}
+    """Those of :data:`OPTIONAL` that ``values`` holds."""
+    return {k: values[k] for k in OPTIONAL if k in values}
 
 
 def geometry(run, values: dict) -> tuple[float, float, float]:
@@ -307,12 +316,15 @@ def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tup
 
 
 def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
-    """The model's force trace [N] at every sample of each run: the static force at the true
-    pressure (:meth:`mkm.identify.runs.RunData.true_pressure_bar`), with friction and creep."""
+    """The model's force trace [N] at every sample of each run as the load cell reads it: the
+    static force at the true pressure (:meth:`mkm.identify.runs.RunData.true_pressure_bar`),
+    with friction and creep, plus the cell's zero where fitted."""
     tables = source.tables(runs, values)
-    return [force_history(run.time_s, static_force(run.true_pressure_bar(values), *tables[k]),
-                          values["hysteresis_fraction"], values["creep_fraction"],
-                          math.exp(values["log_tau"]))
+    zero_N = values.get("force_zero_N", 0.0)
+    return [zero_N + force_history(run.time_s, static_force(run.true_pressure_bar(values),
+                                                            *tables[k]),
+                                   values["hysteresis_fraction"], values["creep_fraction"],
+                                   math.exp(values["log_tau"]))
             for k, run in enumerate(runs)]
 
 
@@ -338,7 +350,11 @@ def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float
     to :data:`REST_LENGTH_FACTOR` of the declared one (inside the source's box), the monitor's
     offset within its declared bound (the smallest of the runs') or about its vented reading
     (:func:`mkm.identify.runs.offset_search_bar`), how far each branch's reading is off
-    within half the monitor's declared hysteresis."""
+    within half the monitor's declared hysteresis, the load cell's zero within
+    :data:`ZERO_SEARCH_FRACTION` of the largest force the runs read."""
+    if name == "force_zero_N":
+        largest = max(float(np.max(np.abs(run.force_N), initial=0.0)) for run in runs)
+        return (-ZERO_SEARCH_FRACTION * largest, ZERO_SEARCH_FRACTION * largest)
     if name == "c01_fraction":
         return source.share_bounds(start["rubber_scale"])
     if name == "pressure_offset_bar":

@@ -187,11 +187,14 @@ class Goodness:
             return None
         shown = "; ".join(f"run {run} {F:+.3g} N over {n} step{'s' if n > 1 else ''}"
                           for run, n, F in off)
-        return (f"the steps where the identified muscle is slack read a force ({shown}): a "
+        beyond = " beyond the fitted zero" if "force_zero_N" in self.fitted else ""
+        return (f"the steps where the identified muscle is slack read a force{beyond} ({shown}): a "
                 "slack muscle pulls nothing, so the load cell's zero is off by that (a tare "
-                "left out, a drift) or the muscle is mounted with a preload: for an imported "
-                "table, import it again with --tare at that force; for a bench run, check the "
-                "cell's zero (mkm tare) and the mounting, and record again")
+                "left out, a drift) or the muscle is mounted with a preload: "
+                + ("" if "force_zero_N" in self.fitted else
+                   "fit it (--params ...,zero: one zero for every run) or, ")
+                + "for an imported table, import it again with --tare at that force; for a "
+                "bench run, check the cell's zero (mkm tare) and the mounting, and record again")
 
     def record(self) -> dict:
         return {"method": "chi-square of the settled steps' mean residuals against their own "
@@ -260,6 +263,7 @@ def assess(runs, fit) -> Goodness:
     scatter2 = squares / np.maximum(counts - 1, 1) / np.maximum(counts, 1)
     measured = np.bincount(fit.cluster, fit.measured_N, minlength=n_steps) / np.maximum(counts, 1)
     branches, offset, left_out, slack = [], 0, [], []
+    zero_N = fit.values.get("force_zero_N", 0.0)
     for k, run in enumerate(runs):
         steps = run.steps.reset_index(drop=True)
         here = slice(offset, offset + len(steps))
@@ -269,11 +273,13 @@ def assess(runs, fit) -> Goodness:
             left_out.append(run.name)
             continue
         tare = float(fit.tare_se_N[k]) if fit.tare_se_N.size else 0.0
-        # the model's step mean is the measured one plus the residual (model minus measured)
-        idle = usable & (np.abs(measured[here] + mean[here]) < SLACK_N)
+        # the model's step mean is the measured one plus the residual (model minus measured),
+        # the muscle's force that less the cell's fitted zero
+        idle = usable & (np.abs(measured[here] + mean[here] - zero_N) < SLACK_N)
         if idle.any():
             se = math.sqrt(float(np.sum(noise[idle] ** 2)) / idle.sum() ** 2 + tare**2)
-            slack.append((run.name, int(idle.sum()), float(np.mean(measured[here][idle])), se))
+            slack.append((run.name, int(idle.sum()),
+                          float(np.mean(measured[here][idle])) - zero_N, se))
         for direction, branch in BRANCHES.items():
             pick = (steps["direction"].to_numpy() == direction) & usable
             if not pick.any():
@@ -367,7 +373,7 @@ def threshold_row(run, static, values: dict) -> dict:
         fitted = float(klute_hannaford_threshold_pressure(
             D0_mm, t0_mm, eps, values["theta0_deg"], rubber.C10_MPa, rubber.C01_MPa, gap_mm))
     fitted += values.get("pressure_offset_bar", 0.0)  # as the monitor reads it
-    force = run.steps["force_N_mean"].to_numpy(dtype=float)
+    force = run.steps["force_N_mean"].to_numpy(dtype=float) - values.get("force_zero_N", 0.0)
     floor = max(THRESHOLD_FLOOR_FRACTION * np.max(force, initial=0.0), 3.0 * run.tare_se_N)
     _, measured = line_above_threshold(run.steps["pressure_bar_mean"], force, floor)
     return {"run": run.name, "eps": eps, "fitted threshold [bar]": fitted,

@@ -7,8 +7,10 @@ fitting library."""
 GROUPS = {"theta0": ("theta0_deg",), "rubber": ("rubber_scale",), "t0": ("t0_mm",),
           "D0": ("D0_mm",), "friction": ("hysteresis_fraction",),
           "creep": ("creep_fraction", "log_tau"), "gap": ("gap_mm",),
-          "offset": ("pressure_offset_bar", "pressure_hysteresis_bar"), "L0": ("L0_mm",)}
-#: what ``--params`` fits when not given: the wall, the diameter and a gap only when asked
+          "offset": ("pressure_offset_bar", "pressure_hysteresis_bar"), "L0": ("L0_mm",),
+          "zero": ("force_zero_N",)}
+#: what ``--params`` fits when not given: the wall, the diameter, a gap, the rest length and
+#: the load cell's zero only when asked
 DEFAULT_GROUPS = ("theta0", "rubber", "friction", "creep", "offset")
 #: what searches the optimum: the surrogate (the FE model where its box ends) or --model itself
 SEARCHES = ("surrogate", "model")

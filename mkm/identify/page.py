@@ -76,8 +76,7 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
         "C01_MPa": entry.get("C01_MPa", SILASTIC_S.C01_MPa),
         **{k: entry.get(k, DEFAULTS[k]) for k in DEFAULTS},
         **({"gap_mm": entry["gap_mm"]} if "gap_mm" in entry else {}),
-        **{k: fitted[k] for k in (*fitting.GEOMETRY, "L0_mm", "pressure_offset_bar",
-                                  "pressure_hysteresis_bar") if k in fitted}})
+        **{k: fitted[k] for k in fitting.OPTIONAL if k in fitted and k != "gap_mm"}})
     nominal = fitting.nominal_values(Calibration.shipped().entry(key)["theta0_deg"])
     rows, thresholds = [], []
     runs = [load_run_data(p) for p in run_dirs]

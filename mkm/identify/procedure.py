@@ -385,6 +385,14 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      f"{offset_bound_said(runs)}: the runs' threshold wants more than the "
                      f"monitor may be off; {check}, or the model does not fit these runs near "
                      "the threshold")
+    if "force_zero_N" in best.names and fitting.at_edge(best.values["force_zero_N"],
+                                                        best.bounds["force_zero_N"]):
+        low, high = best.bounds["force_zero_N"]
+        notes.append(f"the load cell's zero ({best.values['force_zero_N']:+.3g} N) is at the "
+                     f"edge of its search ({low:+.3g} to {high:+.3g} N, "
+                     f"{fitting.ZERO_SEARCH_FRACTION:.0%} of the largest force read): more "
+                     "than a tare left out; check the cell and the table's forces, or the "
+                     "model does not fit these runs")
     notes += [line for line in (vented_beyond_bound(runs),) if line]
 
     notify("leave-one-run-out and the nominal model")

@@ -56,7 +56,7 @@ from mkm.identify.runs import offset_bound_said
 
 UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm",
          "t0_mm": "mm", "D0_mm": "mm", "L0_mm": "mm", "pressure_offset_bar": "bar",
-         "pressure_hysteresis_bar": "bar",
+         "pressure_hysteresis_bar": "bar", "force_zero_N": "N",
          "rubber_scale": "x Silastic S", "C01_over_C10": "ratio",
          "loadcell_sensitivity_tolerance": "fraction",
          "hysteresis_fraction": "fraction", "creep_fraction": "fraction", "creep_tau_s": "s"}
@@ -183,6 +183,10 @@ class Identification:
             elif name == "pressure_offset_bar":
                 add(name, value, *interval[name], source="nuisance: the monitor's offset within "
                     f"{offset_bound_said(self.runs)} (moves the threshold)")
+            elif name == "force_zero_N":
+                add(name, value, *interval[name], source="nuisance: what the load cell reads "
+                    "when the muscle pulls nothing (a tare left out, a drift), one for every "
+                    "run; not part of the muscle's model")
             elif name == "pressure_hysteresis_bar":
                 add(name, value, *interval[name], source="nuisance: how far the monitor reads "
                     "low on a rising step and high on a falling one, within half its declared "

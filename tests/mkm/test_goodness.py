@@ -279,3 +279,20 @@ def test_a_table_without_a_declared_accuracy_is_left_out_of_the_judgement_and_na
     assert good.judged and [b.run for b in good.branches] == [runs[0].name]
     assert good.left_out == [runs[1].name]
     assert good.record()["runs_not_judged"] == [runs[1].name]
+
+
+def test_a_slack_muscle_reading_a_force_offers_the_fit_of_the_zero_until_it_is_fitted():
+    # a misfit whose slack steps read 2.9 N (0.05 N standard error): the note names the cell's
+    # zero and the --params that fits it; with the zero fitted, what is left beyond it
+    nu = 10.0
+    branch = goodness.Branch("r", "loading", 10, 500.0, nu, float(stats.chi2.sf(500.0, nu)), 5,
+                             0.5, 0.1, 0.1)
+
+    def note(fitted):
+        return goodness.Goodness([branch], 500.0, nu, fitted=fitted,
+                                 slack=[("r", 2, 2.9, 0.05)]).zero_line()
+
+    assert "read a force (run r +2.9 N over 2 steps)" in note(("theta0_deg",))
+    assert "fit it (--params ...,zero" in note(("theta0_deg",))
+    with_zero = note(("theta0_deg", "force_zero_N"))
+    assert "beyond the fitted zero" in with_zero and "--params" not in with_zero
