@@ -328,6 +328,9 @@ BENCHMARKS = {
                                  "friction and creep' --out {out}",
     "identify_wrong_bench_fresh.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 "
                                        "--seed 20261300 --out {out}",
+    "identify_wrong_bench_zero.json": "benchmarks/bench_identify_wrong_bench.py --departures "
+                                      "'loadcell offset' --draws 24 --seed 20264401 --params "
+                                      "theta0,rubber,friction,creep,offset,zero --out {out}",
     "mesh_bound.json": "benchmarks/bench_mesh_bound.py --muscles 240 --seed 20264102 "
                        "--out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",

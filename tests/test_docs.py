@@ -975,3 +975,32 @@ def test_the_guides_mesh_bounds_are_the_shipped_tables():
         assert f"{result['largest_ratio_a']:.2f}" in check
         assert f"{result['largest_ratio_b']:.2f}" in check
         assert f"{result['median_b_pct']:.3f} %" in check
+
+
+def test_the_guides_fitted_load_cell_zero_is_its_measured_file():
+    """uncertainty.md types out identify with the load cell's zero fitted on a bench whose
+    tare was left out: held to ``identify_wrong_bench_zero.json`` (the figures rounded up where
+    the guide says "within")."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_bench_zero.json").read_text(
+        encoding="utf-8"))
+    text = (DOCS / "guide" / "uncertainty.md").read_text(encoding="utf-8")
+    said = " ".join(text[text.index("That line offers the fit of the zero"):].split(
+        "\n\n", 2)[2].split())
+    draws = record["draws"]
+
+    def of(name):
+        return [next(p for p in d["parameters"] if p["parameter"] == name) for d in draws]
+
+    left_in = [abs(d["muscle"]["loadcell_offset_N"]) for d in draws]
+    chi2 = [d["chi2_per_nu"] for d in draws]
+    widths = [p["ci_high"] - p["ci_low"] for p in of("theta0_deg")]
+    assert record["rows"][0]["covered"] == len(draws) == 24
+    assert f"{len(draws)} fresh draws of that departure ({min(left_in):.1f}-" \
+           f"{max(left_in):.1f} N left in)" in " ".join(text.split())
+    assert f"(chi2/nu {min(chi2):.2f}-{max(chi2):.2f})" in said
+    assert max(abs(p["value"] - p["truth"]) for p in of("force_zero_N")) <= 0.15
+    assert "every fitted zero within 0.15 N" in said
+    assert max(abs(p["value"] - p["truth"]) for p in of("theta0_deg")) <= 0.008
+    assert f"an interval {min(widths):.2f}-{max(widths):.2f} deg wide" in said
