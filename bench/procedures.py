@@ -57,6 +57,11 @@ from mkm.bench.vent import VentCheck, reading_bar, verify_vent
 
 MAX_SECONDS = 600.0  # a tare or a calibration mass is averaged for at most this long
 STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
+#: `mkm vent` waits this long [s] for the device's open, which writes the vent: a USB-6001's
+#: open (two tasks, the AO started, 0 V written within its 1 s timeout) is expected within a
+#: second, one that answers as lost within about 5 (reset and opened again for
+#: REVIVE_WITHIN_S, 3 s, then the open); twice that for a slow, loaded bench PC
+OPEN_WAIT_S = 10.0
 
 
 @contextmanager
@@ -142,7 +147,8 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     ``stopped`` (the holder asked to stop, or None) and ``bookkeeping`` (problems met, after
     the vent). A device lost (at open, on the vent write or on the check's reads) is reset and
     vented on fresh tasks first (NI: ``open`` and ``revive``, within a few seconds). Raises
-    :class:`BenchError` when the device cannot be opened or stays lost, when the pressure stays
+    :class:`BenchError` when the device cannot be opened, its open does not return within
+    :data:`OPEN_WAIT_S` (the driver hangs) or the device stays lost, when the pressure stays
     above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live holder does not let
     go.
     """
@@ -162,8 +168,19 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             owner.__enter__()
     except StateFolderBroken as exc:  # vent without the lock: venting twice is harmless
         bookkeeping.append(str(exc))
+    open_hung = False
     try:
-        _refused_again(device.open, notify)  # writes the vent (a lost device is reset first)
+        # the open writes the vent (a lost device is reset first); a driver that hangs there
+        # leaves the user staring at nothing: bounded, then said
+        returned, exc = call_within(lambda: _refused_again(device.open, notify), OPEN_WAIT_S,
+                                    "mkm-vent-open")
+        if not returned:
+            open_hung = True
+            raise BenchError(f"opening the device did not return within {OPEN_WAIT_S:g} s (the "
+                             "driver hangs): the vent is NOT known to be written (the open "
+                             "writes it)")
+        if exc is not None:
+            raise exc
         if config.regulator.electronic:  # marked once the vent is out, never waited for: a
             # process killed during the check leaves the bench marked
             owner.post(lambda: mark_vent(key, "vent", "", owner.state))
@@ -177,7 +194,8 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             bookkeeping.extend(_mark(owner, key, check))
     finally:
         try:
-            closing = close_within(device)  # a driver that hangs there holds nothing back
+            # a close would wait behind an open under way in the driver
+            closing = "" if open_hung else close_within(device)
             if closing:
                 bookkeeping.append(closing)
         finally:

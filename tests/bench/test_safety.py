@@ -1399,3 +1399,35 @@ def test_mkm_vent_killed_during_its_check_leaves_the_bench_marked(config, monkey
     assert notes == [f"`mkm vent` (started {data['started_utc']}, pid {data['process']['pid']}) "
                      f"ended after its vent (0 bar commanded at {data['last_command_utc']}) "
                      "before the vent was verified: vented now"]
+
+
+def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, monkeypatch):
+    # `mkm vent` opens the device, which writes the vent; the driver hangs in the open. The
+    # command sat in it, nothing said, for as long as it hung. Now the open is waited for
+    # OPEN_WAIT_S, then one line says the vent is not known to be written: VENT BY HAND, exit 1;
+    # the device is not closed behind the open under way (a close would wait behind it).
+    import mkm.bench.procedures as procedures
+
+    release, closed = threading.Event(), []
+
+    class Hanging(SimBackend):
+        def open(self):
+            release.wait(10)  # the test's net; released once the command returned
+            return super().open()
+
+        def close(self):
+            closed.append(True)
+            super().close()
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    monkeypatch.setattr(procedures, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    try:
+        code, out, err = mkm_cli(["vent", "--backend", "sim"])
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and code == 1 and out == "" and not closed
+    assert err.splitlines()[-1] == (
+        "mkm vent: error: opening the device did not return within 0.2 s (the driver hangs): "
+        "the vent is NOT known to be written (the open writes it); VENT BY HAND")
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # no vent to name: not marked
