@@ -28,11 +28,13 @@ from mkm.bench.run import (
     READ_HANG_MARGIN_S,
     VENT_WRITES,
     WATCH_EVERY_S,
-    WATCHDOG_WRITE_S,
+    BoundedWrite,
     StderrNotice,
+    WriteHung,
     close_within,
     make_backend,
     make_operator,
+    vent_dead_runs,
     with_backend,
 )
 from mkm.bench.sequence import (
@@ -70,7 +72,7 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
     run left pressurised, and close (vent again) on exit. ``notify`` receives the operator's
     lines (default: stderr, ``mkm <command>: ...``). A vent written for dead runs that hangs
-    (:class:`_BoundedWrite`) ends the command with a :class:`~mkm.bench.backend.BenchError`."""
+    ends the command (:func:`mkm.bench.run.vent_dead_runs`)."""
     notify = notify or StderrNotice(command)
     owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
     try:
@@ -78,15 +80,7 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
             dead_runs = owner.dead_runs()  # before the device is opened
             info = backend.open()
             try:
-                try:  # the driver may hang for that write: bounded, then said
-                    markers = vent_unvented(_BoundedWrite(backend), dead_runs,
-                                            owner.on_state_folder)
-                except _WriteHung as exc:  # their markers stay: the next command names them
-                    raise BenchError(f"the vent written for the runs that died on this bench "
-                                     f"{exc}: VENT BY HAND; they were not named, and the next "
-                                     "command on this bench vents first and names them"
-                                     ) from None
-                for marker in markers:
+                for marker in vent_dead_runs(backend, dead_runs, owner.on_state_folder):
                     notify(marker.vented_now())
                 yield info
             finally:
@@ -371,45 +365,18 @@ def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
     return out[0]
 
 
-class _WriteHung(Exception):
-    """A vent write that did not return within its bound (:class:`_BoundedWrite`)."""
-
-
-class _BoundedWrite:
-    """``backend`` whose vent write is made on a thread of its own and waited for the AO
-    write's timeout (:data:`mkm.bench.run.WATCHDOG_WRITE_S`) and
-    :data:`mkm.bench.run.READ_HANG_MARGIN_S`, as a run's watchdog waits for a command write: a
-    driver that hung in the vent check may hold its writes too. :class:`_WriteHung` past it,
-    the write left behind."""
-
-    def __init__(self, backend: Backend):
-        self._backend = backend
-
-    def write_command(self, volts: float) -> None:
-        returned, exc = call_within(lambda: self._backend.write_command(volts),
-                                    WATCHDOG_WRITE_S + READ_HANG_MARGIN_S, "mkm-vent-write")
-        if not returned:
-            raise _WriteHung(f"did not return within {WATCHDOG_WRITE_S + READ_HANG_MARGIN_S:g} "
-                             f"s (its timeout {WATCHDOG_WRITE_S:g} s): the driver hangs")
-        if exc is not None:
-            raise exc
-
-    def __getattr__(self, name):
-        return getattr(self._backend, name)
-
-
 def _mend_dead_runs(device: Backend, owner: BenchOwner, notify
                     ) -> tuple[list[str], list]:
     """After the vent: name the runs that died without venting on this bench and mend their
     folders; the problems met (a state folder that cannot be read or written, or hangs; the
-    vent written again for them, bounded by :class:`_BoundedWrite`, that hangs) and the dead
-    runs' markers."""
+    vent written again for them, bounded by :class:`mkm.bench.run.BoundedWrite`, that hangs)
+    and the dead runs' markers."""
     try:
-        markers = vent_unvented(_BoundedWrite(device),
+        markers = vent_unvented(BoundedWrite(device),
                                 owner.dead_runs("the bench was vented, the runs that died on "
                                                 "it were not named"),
                                 owner.on_state_folder)
-    except _WriteHung as exc:  # their markers stay: the next command vents first, names them
+    except WriteHung as exc:  # their markers stay: the next command vents first, names them
         return [f"the vent written again for the runs that died on this bench {exc}; they were "
                 "not named, their folders not mended, and the next command on this bench "
                 "vents first and names them"], []

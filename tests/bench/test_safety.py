@@ -1268,6 +1268,29 @@ def test_the_vent_written_at_start_up_for_dead_runs_is_bounded(config, monkeypat
 
     lease = _dead_run_lease()
     release, hung = threading.Event(), []
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: _hanging_after_open(release, hung)(c))
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.tare(config, seconds=0.5)
+        still_hung = list(hung)
+    finally:
+        release.set()
+    assert still_hung == [0.0]
+    assert str(caught.value) == DEAD_RUNS_VENT_HUNG
+    assert lease.path.exists()  # the dead run stays marked
+
+
+DEAD_RUNS_VENT_HUNG = (
+    "the vent written for the runs that died on this bench did not return within 2 s (its "
+    "timeout 1 s): the driver hangs: VENT BY HAND; they were not named, and the next command on "
+    "this bench vents first and names them")
+
+
+def _hanging_after_open(release: threading.Event, hung: list) -> type:
+    """A simulated backend whose first write after its open (the vent written again for the
+    dead runs) hangs until ``release``; the volts it was asked for go into ``hung``, then
+    ``"returned"`` once it returns."""
 
     class Hanging(SimBackend):
         opened = False
@@ -1278,22 +1301,35 @@ def test_the_vent_written_at_start_up_for_dead_runs_is_bounded(config, monkeypat
             return info
 
         def write_command(self, volts):
-            if self.opened and not hung:  # the first write after the open hangs
+            if self.opened and not hung:
                 hung.append(volts)
-                release.wait(60)  # the test's net; released once the command returned
+                release.wait(10)  # the test's net; released once the command returned
+                hung.append("returned")
             super().write_command(volts)
 
-    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    return Hanging
+
+
+def test_the_vent_written_at_a_runs_start_up_for_dead_runs_is_bounded(config, tmp_path,
+                                                                       monkeypatch):
+    # as for `mkm tare`, at `mkm acquire`'s start-up: the driver hangs in the vent written
+    # again for a dead run, and the run sat in it, nothing said. Now the run is refused in one
+    # line after the same bound, before its folder is made; the dead run is left marked.
+    import mkm.bench.run as run
+
+    lease = _dead_run_lease()
+    release, hung = threading.Event(), []
+    monkeypatch.setattr(run, "make_backend",
+                        lambda c, clock: _hanging_after_open(release, hung)(c))
     try:
-        with pytest.raises(BenchError) as caught:
-            procedures.tare(config, seconds=0.5)
+        result = acquire(config, out_root=tmp_path / "runs", **QUIET)
+        still_hung = list(hung)
     finally:
         release.set()
-    assert hung == [0.0]
-    assert str(caught.value) == (
-        "the vent written for the runs that died on this bench did not return within 2 s (its "
-        "timeout 1 s): the driver hangs: VENT BY HAND; they were not named, and the next command "
-        "on this bench vents first and names them")
+    assert still_hung == [0.0]
+    assert (result.path, result.status, result.exit_code) == (None, "failed", 1)
+    assert result.reason == DEAD_RUNS_VENT_HUNG
+    assert not list((tmp_path / "runs").iterdir())  # no run folder
     assert lease.path.exists()  # the dead run stays marked
 
 
