@@ -649,6 +649,34 @@ def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(con
     assert str(kept) in json.loads(marker.read_text(encoding="utf-8"))["outcome"]["reason"]
 
 
+def test_a_run_whose_refused_samples_are_kept_elsewhere_says_so_when_read(config, tmp_path,
+                                                                          monkeypatch):
+    # the samples a read-only run folder refused are kept in the state folder, but `mkm report`
+    # and `mkm export` on that run showed it short without a word. Now the loader names the
+    # kept file, how many samples it holds and which, in the run's problems: the report's
+    # loader note and the export's metadata
+    import json
+
+    import pandas as pd
+
+    from mkm.bench.exchange import export_run
+    from mkm.bench.run import acquire
+
+    _read_only_from_60(monkeypatch)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()  # the folder takes writes again (the export writes elsewhere anyway)
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    elsewhere = pd.read_csv(kept)["sample"]
+    said = (f"samples 60-{elsewhere.iloc[-1]} ({len(elsewhere)}) are not in samples.csv: the "
+            f"run folder refused them, and they are kept in {kept} (append its rows, not its "
+            "header, to samples.csv once the folder takes writes again)")
+    assert said in load_run(result.path).problems
+    out = export_run(result.path, tmp_path / "export", "csv")
+    metadata = pd.read_csv(out / "metadata.csv").set_index("key")["value"]
+    assert said in json.loads(metadata["problems"])
+
+
 def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,
                                                                                 tmp_path,
                                                                                 monkeypatch):
