@@ -28,6 +28,7 @@ from mkm.bench.run import (
     READ_HANG_MARGIN_S,
     VENT_WRITES,
     WATCH_EVERY_S,
+    WATCHDOG_WRITE_S,
     BoundedWrite,
     StderrNotice,
     WriteHung,
@@ -294,9 +295,7 @@ def _vent_and_verify(device: Backend, config: BenchConfig, notify):
         revive, started = None, True
     if not config.regulator.electronic:
         return None
-    if not started:
-        device.start()
-    check = _watched_check(device, config)
+    check = _watched_check(device, config, start=not started)
     if check.device_lost and revive is not None:
         revive()
         check = _watched_check(device, config)
@@ -306,8 +305,9 @@ def _vent_and_verify(device: Backend, config: BenchConfig, notify):
 class _Timed:
     """``backend`` whose call to the driver under way is known: :attr:`calling` holds when it
     began, how long it may take (a read: its timeout, its block's time and
-    :data:`mkm.bench.run.READ_HANG_MARGIN_S`; the count of samples waiting: the margin) and
-    what it is, in words; None between calls."""
+    :data:`mkm.bench.run.READ_HANG_MARGIN_S`; the count of samples waiting: the margin; the
+    start of the inputs: the AO write's timeout, :data:`mkm.bench.run.WATCHDOG_WRITE_S`, and
+    the margin, as a command write) and what it is, in words; None between calls."""
 
     def __init__(self, backend: Backend, rate_hz: float):
         self._backend, self._rate_hz = backend, rate_hz
@@ -323,6 +323,14 @@ class _Timed:
         finally:
             self.calling = None
 
+    def start(self) -> None:
+        self.calling = (time.monotonic(), WATCHDOG_WRITE_S + READ_HANG_MARGIN_S,
+                        "starting the device's inputs did not return within {:.1f} s")
+        try:
+            self._backend.start()
+        finally:
+            self.calling = None
+
     def available(self) -> int:
         self.calling = (time.monotonic(), READ_HANG_MARGIN_S, "the device did not say how many "
                         "samples wait within {:.1f} s")
@@ -335,14 +343,17 @@ class _Timed:
         return getattr(self._backend, name)
 
 
-def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
-    """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads watched as a run's
-    watchdog watches them: a read that hangs (a driver that does not keep its timeout) ends the
-    check unverified, the read left behind."""
+def _watched_check(device: Backend, config: BenchConfig, start: bool = False) -> VentCheck:
+    """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads (and, with
+    ``start``, the start of the inputs before them) watched as a run's watchdog watches them: a
+    call that hangs (a driver that does not keep its timeout) ends the check unverified, the
+    call left behind."""
     timed, out = _Timed(device, config.daq.sample_rate_hz), []
 
     def check() -> None:
         try:
+            if start:
+                timed.start()
             out.append(verify_vent(timed, config))
         except BaseException as exc:  # raised by the caller
             out.append(exc)

@@ -1366,6 +1366,42 @@ def test_a_count_of_waiting_samples_that_hangs_in_mkm_vent_ends_it_unverified(co
         "vent_unverified"]
 
 
+def test_a_start_of_the_inputs_that_hangs_in_mkm_vent_ends_it_unverified(config,
+                                                                         monkeypatch):
+    # the vent went out with the open; the check then starts the inputs' task (the monitor's
+    # clock), and the driver hangs there: the command sat in it, watched by nothing, nothing
+    # said. Now the start is watched as the check's other calls, given the AO write's timeout
+    # and the margin, then the vent is said not verified and the bench stays marked.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    release, backends = threading.Event(), []
+
+    class Hanging(SimBackend):
+        def start(self):
+            release.wait(10)  # the test's net; released once the command returned
+            super().start()
+
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(Hanging(c)) or backends[-1])
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.vent(config, notify=lambda m: None)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung
+    assert backends[0].commands[0][1] == 0.0  # the vent went out first, at open
+    hung_s = float(re.search(r"starting the device's inputs did not return within ([0-9.]+) s "
+                             r"during the vent check: the driver hangs; the vent was commanded, "
+                             r"its check cannot read the monitor\): VENT BY HAND",
+                             str(caught.value)).group(1))
+    assert hung_s >= 2.0  # the AO write's timeout and READ_HANG_MARGIN_S
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
+    assert "starting the device's inputs did not return" in json.loads(marker.read_text())[
+        "vent_unverified"]
+
+
 @pytest.mark.parametrize("refusals", [1, 3])
 def test_a_vent_write_mkm_vent_is_refused_is_written_again(config, monkeypatch, refusals):
     # the device refuses `mkm vent`'s vent write (an AO write error), as it opens: the command
