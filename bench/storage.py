@@ -670,17 +670,19 @@ def kept_samples_path(run_dir: Path) -> Path:
 
 def _kept_elsewhere(path: Path) -> list[str]:
     """The samples of the run folder ``path`` kept in the state folder
-    (:func:`kept_samples_path`), in words: samples.csv is short by them until they are
-    appended to it."""
+    (:func:`kept_samples_path`) that samples.csv does not hold (past its last row: they follow
+    it), in words."""
     kept = kept_samples_path(path)
     if not kept.is_file():
         return []
     try:
         sample = _read_csv(kept, SAMPLE_COLUMNS, [])["sample"]
+        last = _last_row(path / "samples.csv")[:1]
+        sample = sample[sample > int(last[0])] if last else sample
     except (OSError, ValueError) as exc:
         return [f"samples this run's folder refused are kept in {kept}, which cannot be read "
                 f"({str(exc)[:200]})"]
-    if sample.empty:
+    if sample.empty:  # appended to samples.csv already
         return []
     span = f"{sample.iloc[0]}-{sample.iloc[-1]}" if len(sample) > 1 else f"{sample.iloc[0]}"
     return [f"samples {span} ({len(sample)}) are not in samples.csv: the run folder refused "
@@ -1112,16 +1114,20 @@ def aggregate_samples(path: str | Path, bin_s: float | None = None,
     return out
 
 
-def _last_time_s(csv: Path) -> float:
-    if not csv.is_file():  # a missing samples.csv reads as no samples (load_run names it)
-        return 0.0
+def _last_row(csv: Path) -> list[bytes]:
+    """The cells of samples.csv's last whole row; [] without one (a missing samples.csv reads
+    as no samples: load_run names it)."""
+    if not csv.is_file():
+        return []
     whole = _whole_rows_bytes(csv)
     with open(csv, "rb") as f:
         f.seek(max(0, whole - 4096))
         lines = f.read(whole - max(0, whole - 4096)).splitlines()
-    if len(lines) < 2:
-        return 0.0
+    return lines[-1].split(b",") if len(lines) >= 2 else []
+
+
+def _last_time_s(csv: Path) -> float:
     try:
-        return float(lines[-1].split(b",")[1])
+        return float(_last_row(csv)[1])
     except (IndexError, ValueError):
         return 0.0
