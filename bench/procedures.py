@@ -29,10 +29,13 @@ from mkm.bench.run import (
     VENT_WRITES,
     WATCH_EVERY_S,
     WATCHDOG_WRITE_S,
+    BoundedWrite,
     StderrNotice,
+    WriteHung,
     close_within,
     make_backend,
     make_operator,
+    vent_dead_runs,
     with_backend,
 )
 from mkm.bench.sequence import (
@@ -57,6 +60,11 @@ from mkm.bench.vent import VentCheck, reading_bar, verify_vent
 
 MAX_SECONDS = 600.0  # a tare or a calibration mass is averaged for at most this long
 STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
+#: `mkm vent` waits this long [s] for the device's open, which writes the vent: a USB-6001's
+#: open (two tasks, the AO started, 0 V written within its 1 s timeout) is expected within a
+#: second, one that answers as lost within about 5 (reset and opened again for
+#: REVIVE_WITHIN_S, 3 s, then the open); twice that for a slow, loaded bench PC
+OPEN_WAIT_S = 10.0
 
 
 @contextmanager
@@ -65,7 +73,7 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
     run left pressurised, and close (vent again) on exit. ``notify`` receives the operator's
     lines (default: stderr, ``mkm <command>: ...``). A vent written for dead runs that hangs
-    (:class:`_BoundedWrite`) ends the command with a :class:`~mkm.bench.backend.BenchError`."""
+    ends the command (:func:`mkm.bench.run.vent_dead_runs`)."""
     notify = notify or StderrNotice(command)
     owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
     try:
@@ -73,15 +81,7 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
             dead_runs = owner.dead_runs()  # before the device is opened
             info = backend.open()
             try:
-                try:  # the driver may hang for that write: bounded, then said
-                    markers = vent_unvented(_BoundedWrite(backend), dead_runs,
-                                            owner.on_state_folder)
-                except _WriteHung as exc:  # their markers stay: the next command names them
-                    raise BenchError(f"the vent written for the runs that died on this bench "
-                                     f"{exc}: VENT BY HAND; they were not named, and the next "
-                                     "command on this bench vents first and names them"
-                                     ) from None
-                for marker in markers:
+                for marker in vent_dead_runs(backend, dead_runs, owner.on_state_folder):
                     notify(marker.vented_now())
                 yield info
             finally:
@@ -142,7 +142,8 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     ``stopped`` (the holder asked to stop, or None) and ``bookkeeping`` (problems met, after
     the vent). A device lost (at open, on the vent write or on the check's reads) is reset and
     vented on fresh tasks first (NI: ``open`` and ``revive``, within a few seconds). Raises
-    :class:`BenchError` when the device cannot be opened or stays lost, when the pressure stays
+    :class:`BenchError` when the device cannot be opened, its open does not return within
+    :data:`OPEN_WAIT_S` (the driver hangs) or the device stays lost, when the pressure stays
     above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live holder does not let
     go.
     """
@@ -162,8 +163,19 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             owner.__enter__()
     except StateFolderBroken as exc:  # vent without the lock: venting twice is harmless
         bookkeeping.append(str(exc))
+    open_hung = False
     try:
-        _refused_again(device.open, notify)  # writes the vent (a lost device is reset first)
+        # the open writes the vent (a lost device is reset first); a driver that hangs there
+        # leaves the user staring at nothing: bounded, then said
+        returned, exc = call_within(lambda: _refused_again(device.open, notify), OPEN_WAIT_S,
+                                    "mkm-vent-open")
+        if not returned:
+            open_hung = True
+            raise BenchError(f"opening the device did not return within {OPEN_WAIT_S:g} s (the "
+                             "driver hangs): the vent is NOT known to be written (the open "
+                             "writes it)")
+        if exc is not None:
+            raise exc
         if config.regulator.electronic:  # marked once the vent is out, never waited for: a
             # process killed during the check leaves the bench marked
             owner.post(lambda: mark_vent(key, "vent", "", owner.state))
@@ -177,7 +189,8 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
             bookkeeping.extend(_mark(owner, key, check))
     finally:
         try:
-            closing = close_within(device)  # a driver that hangs there holds nothing back
+            # a close would wait behind an open under way in the driver
+            closing = "" if open_hung else close_within(device)
             if closing:
                 bookkeeping.append(closing)
         finally:
@@ -282,9 +295,7 @@ def _vent_and_verify(device: Backend, config: BenchConfig, notify):
         revive, started = None, True
     if not config.regulator.electronic:
         return None
-    if not started:
-        device.start()
-    check = _watched_check(device, config)
+    check = _watched_check(device, config, start=not started)
     if check.device_lost and revive is not None:
         revive()
         check = _watched_check(device, config)
@@ -294,8 +305,9 @@ def _vent_and_verify(device: Backend, config: BenchConfig, notify):
 class _Timed:
     """``backend`` whose call to the driver under way is known: :attr:`calling` holds when it
     began, how long it may take (a read: its timeout, its block's time and
-    :data:`mkm.bench.run.READ_HANG_MARGIN_S`; the count of samples waiting: the margin) and
-    what it is, in words; None between calls."""
+    :data:`mkm.bench.run.READ_HANG_MARGIN_S`; the count of samples waiting: the margin; the
+    start of the inputs: the AO write's timeout, :data:`mkm.bench.run.WATCHDOG_WRITE_S`, and
+    the margin, as a command write) and what it is, in words; None between calls."""
 
     def __init__(self, backend: Backend, rate_hz: float):
         self._backend, self._rate_hz = backend, rate_hz
@@ -311,6 +323,14 @@ class _Timed:
         finally:
             self.calling = None
 
+    def start(self) -> None:
+        self.calling = (time.monotonic(), WATCHDOG_WRITE_S + READ_HANG_MARGIN_S,
+                        "starting the device's inputs did not return within {:.1f} s")
+        try:
+            self._backend.start()
+        finally:
+            self.calling = None
+
     def available(self) -> int:
         self.calling = (time.monotonic(), READ_HANG_MARGIN_S, "the device did not say how many "
                         "samples wait within {:.1f} s")
@@ -323,14 +343,17 @@ class _Timed:
         return getattr(self._backend, name)
 
 
-def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
-    """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads watched as a run's
-    watchdog watches them: a read that hangs (a driver that does not keep its timeout) ends the
-    check unverified, the read left behind."""
+def _watched_check(device: Backend, config: BenchConfig, start: bool = False) -> VentCheck:
+    """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads (and, with
+    ``start``, the start of the inputs before them) watched as a run's watchdog watches them: a
+    call that hangs (a driver that does not keep its timeout) ends the check unverified, the
+    call left behind."""
     timed, out = _Timed(device, config.daq.sample_rate_hz), []
 
     def check() -> None:
         try:
+            if start:
+                timed.start()
             out.append(verify_vent(timed, config))
         except BaseException as exc:  # raised by the caller
             out.append(exc)
@@ -353,45 +376,18 @@ def _watched_check(device: Backend, config: BenchConfig) -> VentCheck:
     return out[0]
 
 
-class _WriteHung(Exception):
-    """A vent write that did not return within its bound (:class:`_BoundedWrite`)."""
-
-
-class _BoundedWrite:
-    """``backend`` whose vent write is made on a thread of its own and waited for the AO
-    write's timeout (:data:`mkm.bench.run.WATCHDOG_WRITE_S`) and
-    :data:`mkm.bench.run.READ_HANG_MARGIN_S`, as a run's watchdog waits for a command write: a
-    driver that hung in the vent check may hold its writes too. :class:`_WriteHung` past it,
-    the write left behind."""
-
-    def __init__(self, backend: Backend):
-        self._backend = backend
-
-    def write_command(self, volts: float) -> None:
-        returned, exc = call_within(lambda: self._backend.write_command(volts),
-                                    WATCHDOG_WRITE_S + READ_HANG_MARGIN_S, "mkm-vent-write")
-        if not returned:
-            raise _WriteHung(f"did not return within {WATCHDOG_WRITE_S + READ_HANG_MARGIN_S:g} "
-                             f"s (its timeout {WATCHDOG_WRITE_S:g} s): the driver hangs")
-        if exc is not None:
-            raise exc
-
-    def __getattr__(self, name):
-        return getattr(self._backend, name)
-
-
 def _mend_dead_runs(device: Backend, owner: BenchOwner, notify
                     ) -> tuple[list[str], list]:
     """After the vent: name the runs that died without venting on this bench and mend their
     folders; the problems met (a state folder that cannot be read or written, or hangs; the
-    vent written again for them, bounded by :class:`_BoundedWrite`, that hangs) and the dead
-    runs' markers."""
+    vent written again for them, bounded by :class:`mkm.bench.run.BoundedWrite`, that hangs)
+    and the dead runs' markers."""
     try:
-        markers = vent_unvented(_BoundedWrite(device),
+        markers = vent_unvented(BoundedWrite(device),
                                 owner.dead_runs("the bench was vented, the runs that died on "
                                                 "it were not named"),
                                 owner.on_state_folder)
-    except _WriteHung as exc:  # their markers stay: the next command vents first, names them
+    except WriteHung as exc:  # their markers stay: the next command vents first, names them
         return [f"the vent written again for the runs that died on this bench {exc}; they were "
                 "not named, their folders not mended, and the next command on this bench "
                 "vents first and names them"], []

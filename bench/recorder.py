@@ -37,10 +37,10 @@ from mkm.bench.storage import (
     RunWriter,
     Sample,
     StepRecord,
+    kept_samples_path,
     write_samples,
 )
 from mkm.bench.unvented import STATE_WAIT_S
-from mkm.core.home import user_state
 from mkm.core.records import provenance
 
 # On Windows a file another program holds open cannot be replaced (PermissionError): a virus
@@ -93,9 +93,9 @@ class Recorder:
             process=process, unvented_before=list(unvented_before or []),
             simulated=bool(info.simulated))
         self.writer = RunWriter(out_root, self.meta, config.effective_text())  # run.json first
-        # where the samples the run folder refuses to the end are kept (the user state folder,
-        # local and kept across restarts); resolved now, as the run's other state files are
-        self.kept_path = user_state("unwritten", f"{self.writer.path.name}-samples.csv")
+        # where the samples the run folder refuses to the end are kept; resolved now, as the
+        # run's other state files are
+        self.kept_path = kept_samples_path(self.writer.path)
         self.kept = ""  # what became of them there, in words ("" while none is left)
         self._refused = False  # an append of samples failed (the disk)
         # rows taken from the queue and not on disk yet: a block being written, or rows the disk

@@ -112,6 +112,49 @@ def close_within(backend: Backend, wait_s: float = CLOSE_WAIT_S) -> str:
     return ""
 
 
+class WriteHung(Exception):
+    """A vent write that did not return within its bound (:class:`BoundedWrite`)."""
+
+
+class BoundedWrite:
+    """``backend`` whose vent write is made on a thread of its own and waited for the AO
+    write's timeout (:data:`WATCHDOG_WRITE_S`) and :data:`READ_HANG_MARGIN_S`, as the watchdog
+    waits for a command write: a driver that hung in the open or a vent check may hold its
+    writes too. :class:`WriteHung` past it, the write left behind."""
+
+    def __init__(self, backend: Backend):
+        self._backend = backend
+
+    def write_command(self, volts: float) -> None:
+        returned, exc = call_within(lambda: self._backend.write_command(volts),
+                                    WATCHDOG_WRITE_S + READ_HANG_MARGIN_S, "mkm-vent-write")
+        if not returned:
+            raise WriteHung(f"did not return within {WATCHDOG_WRITE_S + READ_HANG_MARGIN_S:g} "
+                            f"s (its timeout {WATCHDOG_WRITE_S:g} s): the driver hangs")
+        if exc is not None:
+            raise exc
+
+    def __getattr__(self, name):
+        return getattr(self._backend, name)
+
+
+class DeadRunsVentHung(BenchError):
+    """The vent written again for the dead runs as a command starts hangs in the driver
+    (:func:`vent_dead_runs`): the command ends there, nothing more asked of the device."""
+
+
+def vent_dead_runs(backend: Backend, found: list, on_state_folder) -> list[Marker]:
+    """:func:`mkm.bench.unvented.vent_unvented` right after the device's open, its vent write
+    bounded (:class:`BoundedWrite`): :class:`DeadRunsVentHung` when it hangs, the dead runs'
+    markers left for the next command to vent and name."""
+    try:
+        return vent_unvented(BoundedWrite(backend), found, on_state_folder)
+    except WriteHung as exc:
+        raise DeadRunsVentHung(f"the vent written for the runs that died on this bench {exc}: "
+                               "VENT BY HAND; they were not named, and the next command on "
+                               "this bench vents first and names them") from None
+
+
 class StderrNotice:
     """One line for the operator on stderr, ``mkm <command>: <message>`` as every command's
     lines (the default ``notify`` of runs and procedures)."""
@@ -487,6 +530,7 @@ class BenchRun:
         self._vent_rows_problems: list[str] = []  # the vent check's rows not recorded
         self.storage_failed = False
         self._folder_error: OSError | None = None  # the run folder could not be made
+        self._device_hangs = False  # a write of the start-up hangs in the driver
 
     def request_stop(self, by: str | None = None) -> None:
         """What the first Ctrl-C does: stop at the next safe point (``by`` says who else asked)."""
@@ -590,6 +634,8 @@ class BenchRun:
             status, exit_code = RunStatus.FAILED, EXIT_STORAGE
             reason = (f"recording failed{f' for {what}' if what else ''} "
                       f"({type(outcome).__name__}: {outcome})")
+        elif isinstance(outcome, DeadRunsVentHung):  # said whole; the device is asked no more
+            status, reason, self._device_hangs = RunStatus.FAILED, str(outcome), True
         elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
             status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
         elif outcome is not None:
@@ -633,8 +679,7 @@ class BenchRun:
 
     def startup(self) -> None:
         info = self.backend.open()  # writes the vent command first
-        self.unvented = vent_unvented(self.backend, self._dead_runs,
-                                      self.owner.on_state_folder)
+        self.unvented = vent_dead_runs(self.backend, self._dead_runs, self.owner.on_state_folder)
         for marker in self.unvented:
             self.notify(marker.vented_now())
         # a stop signal while the folder is made waits until the run holds its recorder: the
@@ -811,6 +856,13 @@ class BenchRun:
         the final status and reason (``failed`` when the vent could not be verified).
         ``say_vent``: ``reason`` (a stop) is followed by ``vented`` once the vent command
         reached the device, and only then: a failed one is said instead."""
+        if self._device_hangs:  # before any pressure: a vent or a read would wait behind the
+            # write under way in the driver; the close is bounded
+            try:
+                closing = close_within(self.backend)
+            except BaseException as exc:
+                closing = f"closing the device failed ({type(exc).__name__}: {exc})"
+            return status, "; ".join(filter(None, [reason, closing]))
         problems = []
         acq = self.acquisition
         if self._watchdog is not None:

@@ -43,6 +43,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.guards import regular_file
+from mkm.core.home import user_state
 from mkm.core.records import (
     file_sha256,
     finite_or_null,
@@ -660,6 +661,35 @@ def write_samples(path: Path, rows: list[Sample]) -> None:
         os.fsync(f.fileno())
 
 
+def kept_samples_path(run_dir: Path) -> Path:
+    """Where the samples the run folder ``run_dir`` refused to the end are kept
+    (:func:`write_samples`): the user state folder, local and kept across restarts, under the
+    run folder's name."""
+    return user_state("unwritten", f"{Path(run_dir).name}-samples.csv")
+
+
+def _kept_elsewhere(path: Path) -> list[str]:
+    """The samples of the run folder ``path`` kept in the state folder
+    (:func:`kept_samples_path`) that samples.csv does not hold (past its last row: they follow
+    it), in words."""
+    kept = kept_samples_path(path)
+    if not kept.is_file():
+        return []
+    try:
+        sample = _read_csv(kept, SAMPLE_COLUMNS, [])["sample"]
+        last = _last_row(path / "samples.csv")[:1]
+        sample = sample[sample > int(last[0])] if last else sample
+    except (OSError, ValueError) as exc:
+        return [f"samples this run's folder refused are kept in {kept}, which cannot be read "
+                f"({str(exc)[:200]})"]
+    if sample.empty:  # appended to samples.csv already
+        return []
+    span = f"{sample.iloc[0]}-{sample.iloc[-1]}" if len(sample) > 1 else f"{sample.iloc[0]}"
+    return [f"samples {span} ({len(sample)}) are not in samples.csv: the run folder refused "
+            f"them, and they are kept in {kept} (append its rows, not its header, to "
+            "samples.csv once the folder takes writes again)"]
+
+
 def release_reserve(path: Path) -> None:
     """Delete the room a run kept in its folder ``path`` for its final record, if there."""
     try:
@@ -979,7 +1009,8 @@ def load_run(path: str | Path) -> Run:
     lost = ([] if status == RunStatus.INCOMPLETE
             else _rows_lost(Run(path, meta, steps, status), samples_csv))
     return Run(path=path, meta=meta, steps=steps, status=status, commands=commands,
-               problems=problems + lost, unvented=unvented, rows_lost=lost)
+               problems=problems + lost + _kept_elsewhere(path), unvented=unvented,
+               rows_lost=lost)
 
 
 def _rows_lost(run: Run, samples_csv: Path) -> list[str]:
@@ -1083,16 +1114,20 @@ def aggregate_samples(path: str | Path, bin_s: float | None = None,
     return out
 
 
-def _last_time_s(csv: Path) -> float:
-    if not csv.is_file():  # a missing samples.csv reads as no samples (load_run names it)
-        return 0.0
+def _last_row(csv: Path) -> list[bytes]:
+    """The cells of samples.csv's last whole row; [] without one (a missing samples.csv reads
+    as no samples: load_run names it)."""
+    if not csv.is_file():
+        return []
     whole = _whole_rows_bytes(csv)
     with open(csv, "rb") as f:
         f.seek(max(0, whole - 4096))
         lines = f.read(whole - max(0, whole - 4096)).splitlines()
-    if len(lines) < 2:
-        return 0.0
+    return lines[-1].split(b",") if len(lines) >= 2 else []
+
+
+def _last_time_s(csv: Path) -> float:
     try:
-        return float(lines[-1].split(b",")[1])
+        return float(_last_row(csv)[1])
     except (IndexError, ValueError):
         return 0.0

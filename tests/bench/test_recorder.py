@@ -649,6 +649,59 @@ def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(con
     assert str(kept) in json.loads(marker.read_text(encoding="utf-8"))["outcome"]["reason"]
 
 
+def test_a_run_whose_refused_samples_are_kept_elsewhere_says_so_when_read(config, tmp_path,
+                                                                          monkeypatch):
+    # the samples a read-only run folder refused are kept in the state folder, but `mkm report`
+    # and `mkm export` on that run showed it short without a word. Now the loader names the
+    # kept file, how many samples it holds and which, in the run's problems: the report's
+    # loader note and the export's metadata
+    import json
+
+    import pandas as pd
+
+    from mkm.bench.exchange import export_run
+    from mkm.bench.run import acquire
+
+    _read_only_from_60(monkeypatch)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()  # the folder takes writes again (the export writes elsewhere anyway)
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    elsewhere = pd.read_csv(kept)["sample"]
+    said = (f"samples 60-{elsewhere.iloc[-1]} ({len(elsewhere)}) are not in samples.csv: the "
+            f"run folder refused them, and they are kept in {kept} (append its rows, not its "
+            "header, to samples.csv once the folder takes writes again)")
+    assert said in load_run(result.path).problems
+    out = export_run(result.path, tmp_path / "export", "csv")
+    metadata = pd.read_csv(out / "metadata.csv").set_index("key")["value"]
+    assert said in json.loads(metadata["problems"])
+
+
+def test_kept_samples_appended_to_the_run_are_no_longer_said_missing(config, tmp_path,
+                                                                     monkeypatch):
+    # the engineer does as the note says: the kept rows appended to samples.csv. The note
+    # still said they were not in it. Now only the kept samples past samples.csv's last are
+    # named, and none once all are there.
+    from mkm.bench.run import acquire
+
+    _read_only_from_60(monkeypatch)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    rows = kept.read_text(encoding="utf-8").splitlines(keepends=True)[1:]
+    with open(result.path / "samples.csv", "a", encoding="utf-8", newline="") as f:
+        f.writelines(rows[:10])  # half done: ten rows appended
+    (said,) = [p for p in load_run(result.path).problems if str(kept) in p]
+    assert said.startswith(f"samples 70-{int(rows[-1].split(',')[0])} ({len(rows) - 10}) are "
+                           "not in samples.csv")
+    with open(result.path / "samples.csv", "a", encoding="utf-8", newline="") as f:
+        f.writelines(rows[10:])
+    run = load_run(result.path)
+    assert not [p for p in run.problems if str(kept) in p]
+    assert run.samples["sample"].tolist() == list(range(len(run.samples)))  # whole, once
+
+
 def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,
                                                                                 tmp_path,
                                                                                 monkeypatch):

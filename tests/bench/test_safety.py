@@ -1268,6 +1268,29 @@ def test_the_vent_written_at_start_up_for_dead_runs_is_bounded(config, monkeypat
 
     lease = _dead_run_lease()
     release, hung = threading.Event(), []
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: _hanging_after_open(release, hung)(c))
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.tare(config, seconds=0.5)
+        still_hung = list(hung)
+    finally:
+        release.set()
+    assert still_hung == [0.0]
+    assert str(caught.value) == DEAD_RUNS_VENT_HUNG
+    assert lease.path.exists()  # the dead run stays marked
+
+
+DEAD_RUNS_VENT_HUNG = (
+    "the vent written for the runs that died on this bench did not return within 2 s (its "
+    "timeout 1 s): the driver hangs: VENT BY HAND; they were not named, and the next command on "
+    "this bench vents first and names them")
+
+
+def _hanging_after_open(release: threading.Event, hung: list) -> type:
+    """A simulated backend whose first write after its open (the vent written again for the
+    dead runs) hangs until ``release``; the volts it was asked for go into ``hung``, then
+    ``"returned"`` once it returns."""
 
     class Hanging(SimBackend):
         opened = False
@@ -1278,22 +1301,35 @@ def test_the_vent_written_at_start_up_for_dead_runs_is_bounded(config, monkeypat
             return info
 
         def write_command(self, volts):
-            if self.opened and not hung:  # the first write after the open hangs
+            if self.opened and not hung:
                 hung.append(volts)
-                release.wait(60)  # the test's net; released once the command returned
+                release.wait(10)  # the test's net; released once the command returned
+                hung.append("returned")
             super().write_command(volts)
 
-    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    return Hanging
+
+
+def test_the_vent_written_at_a_runs_start_up_for_dead_runs_is_bounded(config, tmp_path,
+                                                                       monkeypatch):
+    # as for `mkm tare`, at `mkm acquire`'s start-up: the driver hangs in the vent written
+    # again for a dead run, and the run sat in it, nothing said. Now the run is refused in one
+    # line after the same bound, before its folder is made; the dead run is left marked.
+    import mkm.bench.run as run
+
+    lease = _dead_run_lease()
+    release, hung = threading.Event(), []
+    monkeypatch.setattr(run, "make_backend",
+                        lambda c, clock: _hanging_after_open(release, hung)(c))
     try:
-        with pytest.raises(BenchError) as caught:
-            procedures.tare(config, seconds=0.5)
+        result = acquire(config, out_root=tmp_path / "runs", **QUIET)
+        still_hung = list(hung)
     finally:
         release.set()
-    assert hung == [0.0]
-    assert str(caught.value) == (
-        "the vent written for the runs that died on this bench did not return within 2 s (its "
-        "timeout 1 s): the driver hangs: VENT BY HAND; they were not named, and the next command "
-        "on this bench vents first and names them")
+    assert still_hung == [0.0]
+    assert (result.path, result.status, result.exit_code) == (None, "failed", 1)
+    assert result.reason == DEAD_RUNS_VENT_HUNG
+    assert not list((tmp_path / "runs").iterdir())  # no run folder
     assert lease.path.exists()  # the dead run stays marked
 
 
@@ -1327,6 +1363,42 @@ def test_a_count_of_waiting_samples_that_hangs_in_mkm_vent_ends_it_unverified(co
     assert hung_s >= 1.0  # READ_HANG_MARGIN_S
     (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
     assert "did not say how many samples wait" in json.loads(marker.read_text())[
+        "vent_unverified"]
+
+
+def test_a_start_of_the_inputs_that_hangs_in_mkm_vent_ends_it_unverified(config,
+                                                                         monkeypatch):
+    # the vent went out with the open; the check then starts the inputs' task (the monitor's
+    # clock), and the driver hangs there: the command sat in it, watched by nothing, nothing
+    # said. Now the start is watched as the check's other calls, given the AO write's timeout
+    # and the margin, then the vent is said not verified and the bench stays marked.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    release, backends = threading.Event(), []
+
+    class Hanging(SimBackend):
+        def start(self):
+            release.wait(10)  # the test's net; released once the command returned
+            super().start()
+
+    monkeypatch.setattr(procedures, "make_backend",
+                        lambda c, clock: backends.append(Hanging(c)) or backends[-1])
+    try:
+        with pytest.raises(BenchError) as caught:
+            procedures.vent(config, notify=lambda m: None)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung
+    assert backends[0].commands[0][1] == 0.0  # the vent went out first, at open
+    hung_s = float(re.search(r"starting the device's inputs did not return within ([0-9.]+) s "
+                             r"during the vent check: the driver hangs; the vent was commanded, "
+                             r"its check cannot read the monitor\): VENT BY HAND",
+                             str(caught.value)).group(1))
+    assert hung_s >= 2.0  # the AO write's timeout and READ_HANG_MARGIN_S
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
+    assert "starting the device's inputs did not return" in json.loads(marker.read_text())[
         "vent_unverified"]
 
 
@@ -1399,3 +1471,35 @@ def test_mkm_vent_killed_during_its_check_leaves_the_bench_marked(config, monkey
     assert notes == [f"`mkm vent` (started {data['started_utc']}, pid {data['process']['pid']}) "
                      f"ended after its vent (0 bar commanded at {data['last_command_utc']}) "
                      "before the vent was verified: vented now"]
+
+
+def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, monkeypatch):
+    # `mkm vent` opens the device, which writes the vent; the driver hangs in the open. The
+    # command sat in it, nothing said, for as long as it hung. Now the open is waited for
+    # OPEN_WAIT_S, then one line says the vent is not known to be written: VENT BY HAND, exit 1;
+    # the device is not closed behind the open under way (a close would wait behind it).
+    import mkm.bench.procedures as procedures
+
+    release, closed = threading.Event(), []
+
+    class Hanging(SimBackend):
+        def open(self):
+            release.wait(10)  # the test's net; released once the command returned
+            return super().open()
+
+        def close(self):
+            closed.append(True)
+            super().close()
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    monkeypatch.setattr(procedures, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    try:
+        code, out, err = mkm_cli(["vent", "--backend", "sim"])
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and code == 1 and out == "" and not closed
+    assert err.splitlines()[-1] == (
+        "mkm vent: error: opening the device did not return within 0.2 s (the driver hangs): "
+        "the vent is NOT known to be written (the open writes it); VENT BY HAND")
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # no vent to name: not marked
