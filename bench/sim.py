@@ -24,7 +24,8 @@ the whole acquisition code runs unchanged on it. Every sample ``k`` (at ``k / ra
 
 ``[sim.truth]`` (:class:`mkm.bench.sim_settings.Truth`) makes the bench wrong the way real ones
 are, unknown to the configuration: the muscle's true geometry, braid and rubber, a load cell whose
-output per newton is ``loadcell_gain`` times the configured one, a regulator sensor reading
+output per newton is ``loadcell_gain`` times the configured one and whose zero drifts by
+``loadcell_drift_N_per_min`` from the start of acquisition, a regulator sensor reading
 ``monitor_gain * P + monitor_offset_bar`` plus a bow ``monitor_bow_bar * 4 x (1 - x)`` (``x`` the
 pressure over the sensor's full scale) and a hysteresis ``monitor_hysteresis_bar`` between its
 rising and falling readings (the regulator holds that reading at the command, so the monitor
@@ -191,6 +192,8 @@ class SimMuscleBench:
         self.relax = 1.0 - math.exp(-self.dt / s.creep_tau_s)
         self.rng = np.random.default_rng(s.seed)
         self.loadcell_gain = s.truth.instrument("loadcell_gain")
+        self.loadcell_drift_N_per_min = s.truth.instrument("loadcell_drift_N_per_min")
+        self.elapsed_s = 0.0  # since the first sample: the cell's zero drifts with it
         self.monitor_gain = s.truth.instrument("monitor_gain")
         self.monitor_offset_bar = s.truth.instrument("monitor_offset_bar")
         self.monitor_bow_bar = s.truth.instrument("monitor_bow_bar")
@@ -260,8 +263,10 @@ class SimMuscleBench:
         # a slack muscle (force relaxing below zero after a pressure drop) cannot push
         force = max(self.hysteretic_N - self.relaxed_N, 0.0) + self.external_force_N
         self.force_N = force  # the truth a measurement of this sample is judged against
-        cell_V = (self.loadcell_gain * force / cell.sensitivity_N_per_V + s.loadcell_offset_V
-                  + s.noise_V * self._normal())
+        self.elapsed_s += self.dt
+        drift_N = self.loadcell_drift_N_per_min * self.elapsed_s / 60.0
+        cell_V = ((self.loadcell_gain * force + drift_N) / cell.sensitivity_N_per_V
+                  + s.loadcell_offset_V + s.noise_V * self._normal())
         span = r.monitor_V_at_full_scale - r.monitor_V_at_zero
         half = self.monitor_hysteresis_bar / 2
         self.monitor_played_bar = min(max(self.monitor_played_bar, self.pressure_bar - half),

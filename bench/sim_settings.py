@@ -59,6 +59,8 @@ class Truth:
     ``braid``: ``axisym``) and its true geometry ``D0_mm``, ``t0_mm`` (``[muscle]`` keeps the
     declared one, which is what a fit reads). The instruments: ``loadcell_gain``, the cell's true
     output per newton over the configured one (1.02 records forces 2 % high);
+    ``loadcell_drift_N_per_min``, its zero moving steadily from the start of acquisition (a
+    strain-gauge amplifier warming up: what the tare took away comes back over the run);
     ``monitor_gain``, ``monitor_offset_bar``, ``monitor_bow_bar`` and ``monitor_hysteresis_bar``,
     the regulator's pressure sensor: the monitor reads ``monitor_gain * P + monitor_offset_bar +
     monitor_bow_bar * 4 x (1 - x)`` for a true pressure ``P`` (``x = P /
@@ -85,6 +87,7 @@ class Truth:
     D0_mm: float | None = None
     t0_mm: float | None = None
     loadcell_gain: float | None = None
+    loadcell_drift_N_per_min: float | None = None
     monitor_gain: float | None = None
     monitor_offset_bar: float | None = None
     monitor_bow_bar: float | None = None
@@ -124,6 +127,7 @@ MODEL_FIELDS = ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "braid")
 GEOMETRY_FIELDS = ("D0_mm", "t0_mm")
 INSTRUMENT_BOUNDS = {
     "loadcell_gain": (0.9, 1.1, "(a cell 10 % off its calibration is broken)", 1.0),
+    "loadcell_drift_N_per_min": (-10.0, 10.0, "N/min", 0.0),
     "monitor_gain": (0.9, 1.1, "(a sensor 10 % off is broken)", 1.0),
     "monitor_offset_bar": (-0.5, 0.5, "bar", 0.0),
     "monitor_bow_bar": (-0.5, 0.5, "bar", 0.0),  # and a tenth of full scale

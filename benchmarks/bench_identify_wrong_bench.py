@@ -13,15 +13,18 @@ Each draw is a fresh muscle (theta0 30-36 deg, rubber x0.8-1.2 on Silastic S, br
 simulator's noise) with one departure (:data:`DEPARTURES`), drawn from its own numpy seed
 (``--seed`` plus the draw's index, recorded per draw): the load cell's gain 2 % off (either
 sign; 20 times its declared tolerance), the cell's zero left in the forces (the tare left out:
-an amplifier offset of 0.01-0.05 V, 2-10 N, added to every recorded force), the pressure monitor
+an amplifier offset of 0.01-0.05 V, 2-10 N, added to every recorded force), the cell's zero
+drifting 0.5-2 N/min from the start (either sign: 2-7 N by the end of a run), the pressure monitor
 0.02-0.04 bar off (within its declared 0.04 bar) or its gain 1 % off (either sign), a rubber whose
 C01/C10 is not Silastic S's (0-0.3 or 1.8-2.5, the same small-strain stiffness), a braid angle
 within 0.4 deg of the surrogate box's edge (28 or 38 deg, either side), a radial gap of 0.3-1 mm
 between tube and braid, strong braid friction (8-12 %) with strong creep (4-6 %), and creep of
 2-4 % with another time constant than the simulator's default 30 s (5-10 s or 90-300 s, the
 holds lasting about 10 s). Two runs (eps 0 and 12.2 %) are acquired, stripped of the truth and
-identified by ``identify(runs)``: the default parameters (or ``--params``: what a user who
-read the notes would fit, the load cell's zero say), the surrogate search, the FE confirmation.
+identified by ``identify(runs)`` (a run the bench's own checks failed is kept: identify's
+refusal is then the draw's verdict, ``refused``): the default parameters (or ``--params``:
+what a user who read the notes would fit, the load cell's zero say), the surrogate search, the
+FE confirmation.
 
 Every parameter reported with an interval is judged against the truth as
 ``bench_identify_coverage.judge`` does (the rubber, where one scale, against the truth's
@@ -55,8 +58,9 @@ from mkm.identify import identify
 from mkm.surrogate.design import BOX
 
 FIT_EPS = (0.0, 0.122)
-DEPARTURES = ("loadcell gain", "loadcell offset", "monitor offset", "monitor gain",
-              "rubber ratio", "theta0 at box edge", "gap", "friction and creep", "creep time")
+DEPARTURES = ("loadcell gain", "loadcell offset", "loadcell drift", "monitor offset",
+              "monitor gain", "rubber ratio", "theta0 at box edge", "gap", "friction and creep",
+              "creep time")
 FIRST_SEED = 20261240
 
 
@@ -76,6 +80,8 @@ def draw(seed: int, departure: str, config) -> dict:
     elif departure == "loadcell offset":
         muscle["loadcell_offset_N"] = (sign * float(rng.uniform(0.01, 0.05))
                                        * config.loadcell.sensitivity_N_per_V)
+    elif departure == "loadcell drift":
+        truth["loadcell_drift_N_per_min"] = sign * float(rng.uniform(0.5, 2.0))
     elif departure == "monitor offset":
         truth["monitor_offset_bar"] = sign * float(rng.uniform(0.02, 0.04))
     elif departure == "monitor gain":
@@ -114,9 +120,8 @@ def acquire_blind(muscle: dict, eps: float, out: Path) -> Path:
         "creep_fraction": muscle["creep_fraction"],
         "creep_tau_s": muscle.get("creep_tau_s", 30.0), "seed": muscle["seed"] + int(1000 * eps),
         "truth": muscle["truth"]})
+    # a run the bench's checks fail is kept: what identify says of it is the draw's verdict
     result = acquire(config, out_root=out, notify=lambda message: None)
-    if result.status != "complete":
-        raise RuntimeError(f"simulated run at eps {eps:g} ended {result.status}")
     remove_simulator_settings(result.path)
     if muscle["loadcell_offset_N"]:
         leave_zero_in(result.path, muscle["loadcell_offset_N"])
@@ -134,7 +139,8 @@ def departure_value(muscle: dict) -> str:
         return f"creep {muscle['creep_fraction']:.3f}, tau {muscle['creep_tau_s']:.3g} s"
     if d == "friction and creep":
         return f"friction {muscle['hysteresis_fraction']:.3f}, creep {muscle['creep_fraction']:.3f}"
-    key = {"loadcell gain": "loadcell_gain", "monitor offset": "monitor_offset_bar",
+    key = {"loadcell gain": "loadcell_gain", "loadcell drift": "loadcell_drift_N_per_min",
+           "monitor offset": "monitor_offset_bar",
            "monitor gain": "monitor_gain", "theta0 at box edge": "theta0_deg",
            "gap": "gap_mm"}[d]
     return f"{key} {t[key]:.4g}"
@@ -143,7 +149,14 @@ def departure_value(muscle: dict) -> str:
 def one(muscle: dict, out: Path, config, params: str | None = None) -> dict:
     runs = [acquire_blind(muscle, eps, out) for eps in FIT_EPS]
     start = time.perf_counter()
-    result = identify(runs, params=params)
+    try:
+        result = identify(runs, params=params)
+    except ValueError as exc:  # refused in one line, as the command would
+        return {"departure": muscle["departure"], "seed": muscle["seed"],
+                "value": departure_value(muscle), "verdict": "refused", "chi2_per_nu": None,
+                "missed": [], "far": [], "misfit_line": None, "zero_line": None,
+                "refused": str(exc), "notes": [], "parameters": [], "muscle": muscle,
+                "seconds": round(time.perf_counter() - start, 1)}
     seconds = time.perf_counter() - start
     parameters = judge(result, muscle, config)
     missed = [p["parameter"] for p in parameters if not p["covered"]]
@@ -171,11 +184,13 @@ def grid(rows: list[dict], departures) -> list[dict]:
         for k, r in enumerate(mine):
             mark = "+m" if r["misfit_line"] and not r["missed"] else ""
             missed = f"; missed {', '.join(r['missed'])}" if r["missed"] else ""
-            cells[f"draw {k}"] = (f"{r['verdict']}{mark} ({r['value']}, chi2/nu "
-                                  f"{r['chi2_per_nu']:.3g}{missed})")
+            fit = ("identify refused the runs" if r["verdict"] == "refused"
+                   else f"chi2/nu {r['chi2_per_nu']:.3g}")
+            cells[f"draw {k}"] = f"{r['verdict']}{mark} ({r['value']}, {fit}{missed})"
         table.append({"departure": d, "covered": sum(r["verdict"] == "covered" for r in mine),
                       "warned": sum(r["verdict"] == "warned" for r in mine),
                       "silent": sum(r["verdict"] == "SILENT" for r in mine),
+                      "refused": sum(r["verdict"] == "refused" for r in mine),
                       "misfit_line": sum(r["misfit_line"] is not None for r in mine),
                       "zero_line": sum(r["zero_line"] is not None for r in mine), **cells})
     return table
@@ -214,8 +229,8 @@ def main(argv=None) -> int:
                       f"{'|'.join(row['far']) or '-'},{row['seconds']}", flush=True)
                 k += 1
     table = grid(rows, departures)
-    print(pd.DataFrame(table)[["departure", "covered", "warned", "silent", "misfit_line",
-                               "zero_line"]].to_string(index=False))
+    print(pd.DataFrame(table)[["departure", "covered", "warned", "silent", "refused",
+                               "misfit_line", "zero_line"]].to_string(index=False))
     if args.out:
         Path(args.out).write_text(json.dumps(
             {**provenance(), "seed": args.seed, "params": args.params, "rows": table,

@@ -78,8 +78,9 @@ def test_the_truth_is_recorded_in_the_simulator_settings(config, tmp_path):
     sim = meta["hardware"]["sim"]
     assert sim["truth"] == {"theta0_deg": 31.5, "C10_MPa": None, "C01_MPa": None,
                             "gap_mm": None, "braid": None, "D0_mm": None, "t0_mm": None,
-                            "loadcell_gain": None, "monitor_gain": None,
-                            "monitor_offset_bar": None, "monitor_bow_bar": None,
+                            "loadcell_gain": None, "loadcell_drift_N_per_min": None,
+                            "monitor_gain": None, "monitor_offset_bar": None,
+                            "monitor_bow_bar": None,
                             "monitor_hysteresis_bar": None, "monitor_stuck_bar": None}
     assert sim["physics"]["instruments"]["monitor_stuck_bar"] is None  # a monitor that reads
     assert sim["physics"]["force_model_params"]["theta0_deg"] == 31.5
@@ -140,6 +141,22 @@ def test_a_loadcell_gain_records_every_force_that_much_high(config):
     # the force itself is the muscle's, at the pressure held: the gain changes the reading only
     _, exact = settled(quiet(config, model="thickwall"))
     assert bench.force_N == pytest.approx(exact.force_N, rel=1e-12)
+
+
+def test_a_loadcell_drift_moves_the_reading_steadily_with_time(config):
+    # 3 N/min: after the 10 s of settled() the cell reads 0.5 N above the force, after 70 s
+    # 3.5 N; the force itself is the muscle's
+    c = quiet(config, model="thickwall", truth={"loadcell_drift_N_per_min": 3.0})
+    volts, bench = settled(c)
+    lsb_N = LSB_V * c.loadcell.sensitivity_N_per_V
+    recorded = volts[0] * c.loadcell.sensitivity_N_per_V
+    assert recorded - bench.force_N == pytest.approx(0.5, abs=lsb_N)
+    _, exact = settled(quiet(config, model="thickwall"))
+    assert bench.force_N == pytest.approx(exact.force_N, rel=1e-12)
+    for _ in range(600):
+        volts = bench.step()
+    assert volts[0] * c.loadcell.sensitivity_N_per_V - bench.force_N == pytest.approx(
+        3.5, abs=lsb_N)
 
 
 @pytest.mark.parametrize("truth, read", [
