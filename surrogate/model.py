@@ -12,6 +12,7 @@ from __future__ import annotations
 import warnings
 from dataclasses import dataclass, replace
 from functools import cache
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -117,19 +118,24 @@ class SurrogateForceModel(ForceModel):
         ``() -> estimator``, when ``estimator`` is None.
     calibration : Calibration, optional
         Where the default muscle parameters come from (None: the shipped one).
+    data_file : path, optional
+        Where its training data lies on this machine (the file trained on, or found unchanged
+        where it was loaded): saving records it relative to the model's folder, never as
+        given.
     """
 
     def __init__(self, estimator, kind: str, inputs, fixed: dict, box: dict,
                  metadata: dict | None = None, L0_mm: float | None = None,
                  theta0_deg: float | None = None, C10_MPa: float | None = None,
                  C01_MPa: float | None = None, *, predictor=None, load_estimator=None,
-                 calibration: Calibration | None = None):
+                 calibration: Calibration | None = None, data_file=None):
         if estimator is None and load_estimator is None:
             raise ValueError("SurrogateForceModel needs an estimator or load_estimator")
         self._estimator = estimator
         self._load_estimator = load_estimator
         self.predictor = predictor
         self.calibration = calibration
+        self.data_file = None if data_file is None else Path(data_file)
         self.kind = kind
         self.inputs = tuple(inputs)
         self.fixed = dict(fixed)
@@ -195,7 +201,8 @@ class SurrogateForceModel(ForceModel):
         return SurrogateForceModel(self._estimator, self.kind, self.inputs, self.fixed,
                                    self.box, self.metadata, **merged, predictor=self.predictor,
                                    load_estimator=self._load_estimator,
-                                   calibration=calibration or self.calibration)
+                                   calibration=calibration or self.calibration,
+                                   data_file=self.data_file)
 
     def params(self):
         dataset = self.metadata.get("dataset", {})
