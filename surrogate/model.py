@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from threadpoolctl import ThreadpoolController
 
+from mkm.core.records import recorded_path
 from mkm.fem.interface import INPUTS, Domain, ForceModel, Prediction
 from mkm.fem.limits import PRACTICAL_RANGE, check_value, lock_eps, past_lock_text
 from mkm.fem.materials import SILASTIC_S
@@ -215,11 +216,17 @@ class SurrogateForceModel(ForceModel):
 
     def origin(self) -> dict:
         """What a record of what it computed names it by: its model file's sha256 (None before
-        it is saved), its training's provenance and seed, and its dataset's path and sha256."""
+        it is saved), its training's provenance and seed, and its dataset's path and sha256.
+        The path is that of :attr:`data_file` as this process names it
+        (:func:`~mkm.core.records.recorded_path`) where it is known (the file trained on, or
+        found with the recorded sha256: a model reused from the cache was trained from another
+        folder, whose path means nothing here), else the one recorded at training."""
         dataset = _mapping(self.metadata.get("dataset"))
+        path = (recorded_path(self.data_file) if self.data_file is not None
+                else dataset.get("path"))
         return {"sha256": self.metadata.get("sha256"), "trained": self.metadata.get("trained"),
                 "random_state": self.metadata.get("random_state"),
-                "dataset": {k: dataset.get(k) for k in ("path", "sha256")}}
+                "dataset": {"path": path, "sha256": dataset.get("sha256")}}
 
     def error_margin(self) -> ErrorMargin:
         """The errors on muscles held out of training that training recorded (its metadata's

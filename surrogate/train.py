@@ -330,9 +330,12 @@ def cached_model(kind: str = "best", dataset=None, cache_dir=None,
                 # its folder's name holds the data's sha256 (cache_key): checked already
                 warnings.simplefilter("ignore", UncheckedDataWarning)
                 try:
-                    return load_model(directory)
+                    model = load_model(directory)
                 except (Warning, ValueError):
                     pass
+                else:  # the data is the one this process hashed for the key, not the trainer's
+                    model.data_file = dataset.resolve()
+                    return model
         with timed(training_task(kind, dataset)):  # the next first-use promise is this machine's
             model = train_surrogate(kind, dataset, splits=splits, progress=progress)
         # its folder's name holds the data's sha256; a path from the user's cache to the data

@@ -194,6 +194,26 @@ def test_the_cache_records_no_path_from_its_folder_to_the_data(thickwall_dataset
     assert "path_from_model" not in json.loads((folder / METADATA_FILE).read_text())["dataset"]
 
 
+def test_a_model_reused_from_the_cache_names_its_data_as_found_here(thickwall_dataset,
+                                                                    tmp_path, monkeypatch):
+    # was: reused from another folder, the cached model's records named its data by the path
+    # the process that trained it saw (data/d.csv, relative to a folder this one is not in)
+    from mkm.surrogate.train import cached_model
+
+    for folder in ("A/data", "B/sets"):
+        (tmp_path / folder).mkdir(parents=True)
+        (tmp_path / folder / "d.csv").write_bytes(thickwall_dataset.read_bytes())
+    monkeypatch.chdir(tmp_path / "A")
+    trained = cached_model("physics", "data/d.csv", cache_dir=tmp_path / "cache", splits=0)
+    assert trained.origin()["dataset"]["path"] == "data/d.csv"
+    monkeypatch.chdir(tmp_path / "B")
+    reused = cached_model("physics", "sets/d.csv", cache_dir=tmp_path / "cache", splits=0)
+    assert reused.metadata == trained.metadata  # the same model file, not trained again
+    assert reused.origin()["dataset"] == {"path": "sets/d.csv",
+                                          "sha256": file_sha256(thickwall_dataset)}
+    assert reused.with_parameters(L0_mm=282.0).origin() == reused.origin()
+
+
 def test_training_data_found_nowhere_is_said_unchecked(saved, tmp_path, monkeypatch):
     # the shipped mkm_dataset.csv is another file of that name: no false "changed"
     copy = copy_model(saved[1], tmp_path / "model")
