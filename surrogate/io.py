@@ -339,7 +339,8 @@ def training_data_file(dataset: dict, directory=None) -> tuple[Path, str] | None
     recorded = dataset.get("sha256")
     places = [Path()] + (list(Path(directory).resolve().parents) if directory else [])
     packaged = package_file("mkm.surrogate", "data", Path(path).name)
-    beside = ([Path(directory) / dataset[PATH_FROM_MODEL]]
+    # lexically from the resolved folder, as path_from_model was made
+    beside = ([Path(os.path.normpath(Path(directory).resolve() / dataset[PATH_FROM_MODEL]))]
               if directory and dataset.get(PATH_FROM_MODEL) else [])
     first = None
     for candidate in [*dict.fromkeys([*beside, *(place / path for place in places)]),
