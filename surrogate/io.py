@@ -328,11 +328,10 @@ def training_data_file(dataset: dict, directory=None) -> tuple[Path, str] | None
     ``directory`` (its ``path_from_model``, :func:`path_from_model`); then by its recorded
     path, relative to the folder the training ran in, from the working directory and from each
     folder above the model's ``directory`` (a project's data beside its models), nearest
-    first. The first file there
-    with the recorded sha256 is the data, unchanged; else the first found, changed. A packaged
-    dataset of that name (a model trained on the shipped data, recorded by its name alone) is
-    the data only when its sha256 is the recorded one: another file may have its name (``mkm
-    fem dataset`` writes ``mkm_dataset.csv`` too)."""
+    first. The first file there with the recorded sha256 is the data, unchanged; else the first
+    found, changed. A packaged dataset of that name (a model trained on the shipped data,
+    recorded by its name alone) is the data only when its sha256 is the recorded one: another
+    file may have its name (``mkm fem dataset`` writes ``mkm_dataset.csv`` too)."""
     path = dataset.get("path")
     if not path:
         return None
