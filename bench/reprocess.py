@@ -8,7 +8,9 @@ offset is the mean of the run's own tare samples again (checked by
 and every step's hold average and uncertainty budget are taken again over the same hold window
 (the samples after ``start_s + settle_s`` up to ``end_s``). The samples are streamed, so memory
 does not grow with the run. ``run.json`` gets ``reprocessed_from``: the source folder, the
-SHA-256 of its run.json and samples.csv, and the calibration it had.
+SHA-256 of its run.json and samples.csv, the calibration it had, and the configuration applied
+(``config_source``, the SHA-256 of the file given, ``config_sha256``, and ``config_overrides``,
+as ``run.json`` records its own).
 """
 
 from __future__ import annotations
@@ -49,7 +51,8 @@ def overlay_config(run_dir: str | Path, path: str | Path) -> BenchConfig:
         raise ValueError(f"config {path}: no section: expected at least [loadcell]")
     merged = {**run_data, **new_data}
     text = _swap_sections(run_text, new_text, set(new_data))
-    return config_from_tables(merged, text, f"{Path(run_dir).name}/config.toml + {path}")
+    config = config_from_tables(merged, text, f"{Path(run_dir).name}/config.toml + {path}")
+    return dataclasses.replace(config, source_sha256=file_sha256(path))
 
 
 def _swap_sections(base: str, new: str, names: set[str]) -> str:
@@ -119,7 +122,9 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
         "run_json_sha256": file_sha256(source.path / "run.json"),
         "samples_sha256": file_sha256(samples_csv),
         "calibration": source.meta.calibration, "tare": source.meta.tare,
-        "config_source": config.source, "date_utc": prov["date_utc"]}
+        # the file laid over the run's config.toml, named and hashed as run.json names its own
+        "config_source": config.source, "config_sha256": config.source_sha256,
+        "config_overrides": config.overrides, "date_utc": prov["date_utc"]}
     meta.calibration = {**meta.calibration, "loadcell": settings["loadcell"],
                         "safety": settings["safety"]}
     meta.tare = {**tare, "duration_s": source.meta.sequence.get("tare_s")} if tare else None

@@ -1102,7 +1102,10 @@ def _surrogate_section(out: Path, prov: dict) -> str:
     prov["surrogate"] = {"model": model.name, "params": model.params(),
                          "sha256": model.origin()["sha256"],
                          "trained": model.metadata.get("trained"),
-                         "dataset": model.metadata.get("dataset"),
+                         # its path as this process found it (a cached model's trainer ran
+                         # elsewhere)
+                         "dataset": {**(model.metadata.get("dataset") or {}),
+                                     **model.origin()["dataset"]},
                          "seconds_per_point": seconds / max(len(points), 1)}
     prov["fe-reference"] = {"file": FE_REFERENCE.name, "header": _reference_header()}
     keys = ["surrogate", "fe-reference"]

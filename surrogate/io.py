@@ -13,11 +13,11 @@ A saved surrogate is a folder:
   fitted arrays its predictions need, read with ``allow_pickle=False`` and without
   scikit-learn or skops, so a saved default surrogate loads in a fraction of a second;
 - ``metadata.json``: kind, inputs, recorded parameters, box, metrics, the training data's
-  sha256, and the checks: the source version of every module the estimator calls
-  (:func:`code_version`, the physics of the closed-form priors included) and the calibration
-  (``fem/calibration.json``) at training time, and the sha256 of the other files; ``sha256``, the
-  hash of everything else in it (:func:`metadata_sha256`), so an edited box, kind or check is
-  refused, never believed.
+  sha256 and where it lies seen from the folder (:func:`path_from_model`), and the checks:
+  the source version of every module the estimator calls (:func:`code_version`, the physics
+  of the closed-form priors included) and the calibration (``fem/calibration.json``) at
+  training time, and the sha256 of the other files; ``sha256``, the hash of everything else in
+  it (:func:`metadata_sha256`), so an edited box, kind or check is refused, never believed.
 
 :func:`load_model` refuses, with one line, a folder whose metadata is malformed (not an object,
 a key missing or of the wrong type, larger than :data:`MAX_METADATA_BYTES`) or does not match
@@ -59,6 +59,9 @@ METADATA_FILE = "metadata.json"
 CHECKED_LIBRARIES = ("python", "numpy", "scipy", "scikit-learn")
 #: Largest metadata file read (a trained model's is ~15 kB): a larger one is refused unread.
 MAX_METADATA_BYTES = 1 << 20
+#: The key of a model's ``dataset`` record that says where the data lay seen from the model's
+#: folder (:func:`path_from_model`)
+PATH_FROM_MODEL = "path_from_model"
 
 
 class LibraryVersionWarning(UserWarning):
@@ -129,12 +132,15 @@ def save_lock(directory: Path):
     return FileLock(str(locks / f"model-{key}.lock"))
 
 
-def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
+def save_model(model: SurrogateForceModel, directory, lock=None,
+               locate_data: bool = True) -> Path:
     """Write ``model`` to ``directory`` (created; a model folder there is replaced whole, any
     other folder refused: :func:`check_replaceable`); ``model.metadata`` becomes the metadata
     saved (checks, sha256), so a record of what it computes names the file.
 
     ``lock``: a context manager held while writing (default: :func:`save_lock`).
+    ``locate_data``: record where the training data lies seen from ``directory``
+    (:func:`path_from_model`), so that loading finds it wherever the two are moved together.
     """
     import numpy as np
     import skops.io as sio
@@ -154,9 +160,16 @@ def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
                 with open(staging / PREDICTOR_FILE, "wb") as f:
                     np.savez(f, **model.estimator.predictor().arrays())
                 checks["predictor_sha256"] = file_sha256(staging / PREDICTOR_FILE)
+            dataset = {k: v for k, v in model.metadata.get("dataset", {}).items()
+                       if k != PATH_FROM_MODEL}
+            found = path_from_model(model.data_file, directory) if locate_data else None
+            if found is not None:
+                dataset[PATH_FROM_MODEL] = found
             metadata = {**model.metadata, "kind": model.kind, "inputs": list(model.inputs),
                         "fixed": model.fixed, "box": {k: list(v) for k, v in model.box.items()},
                         "checks": checks, "saved": provenance()}
+            if dataset:
+                metadata["dataset"] = dataset
             metadata.setdefault("trained", metadata["saved"])
             metadata.pop("sha256", None)
             # hashed as it will be read back (numpy values as JSON numbers and lists)
@@ -176,6 +189,22 @@ def save_model(model: SurrogateForceModel, directory, lock=None) -> Path:
             if staging.exists():
                 shutil.rmtree(staging, ignore_errors=True)
     return directory
+
+
+def path_from_model(data_file, directory) -> str | None:
+    """Where ``data_file`` lies seen from the model folder ``directory``: a relative path, parts
+    joined by ``/`` (``../data/d.csv``), which finds it wherever the two are moved together,
+    and names no folder above them. None for no file, a dataset shipped in the package (found
+    by its name) or one on another drive."""
+    if data_file is None:
+        return None
+    data_file = Path(data_file).resolve()
+    if data_file.parent == package_file("mkm.surrogate", "data"):
+        return None
+    try:
+        return Path(os.path.relpath(data_file, Path(directory).resolve())).as_posix()
+    except ValueError:  # another drive on Windows: no relative path
+        return None
 
 
 def read_metadata(directory) -> dict:
@@ -268,6 +297,8 @@ def check_metadata(metadata: dict, path) -> None:
     typed("dataset", dict, "an object describing the training data", optional=True)
     typed("dataset.path", str, "the training data's path", optional=True)
     typed("dataset.sha256", str, "the training data's sha256", optional=True)
+    typed(f"dataset.{PATH_FROM_MODEL}", str, "the training data's path from the model's folder",
+          optional=True)
     typed("trained", dict, "the training's provenance", optional=True)
     typed("trained.versions", dict, "the library versions at training", optional=True)
     typed("metrics", dict, "the errors measured at training", optional=True)
@@ -293,21 +324,26 @@ def mismatches(metadata: dict, data: tuple[Path, str] | None = None) -> list[str
 
 def training_data_file(dataset: dict, directory=None) -> tuple[Path, str] | None:
     """The training data a model's ``dataset`` record names, and its sha256; None where no
-    file of that path is found. Its recorded path is relative to the folder the training ran
-    in: it is looked for from the working directory and from each folder above the model's
-    ``directory`` (a project's data beside its models), nearest first. The first file there
-    with the recorded sha256 is the data, unchanged; else the first found, changed. A packaged
-    dataset of that name (a model trained on the shipped data, recorded by its name alone) is
-    the data only when its sha256 is the recorded one: another file may have its name (``mkm
-    fem dataset`` writes ``mkm_dataset.csv`` too)."""
+    file of that path is found. It is looked for first where it lay seen from the model's
+    ``directory`` (its ``path_from_model``, :func:`path_from_model`); then by its recorded
+    path, relative to the folder the training ran in, from the working directory and from each
+    folder above the model's ``directory`` (a project's data beside its models), nearest
+    first. The first file there with the recorded sha256 is the data, unchanged; else the first
+    found, changed. A packaged dataset of that name (a model trained on the shipped data,
+    recorded by its name alone) is the data only when its sha256 is the recorded one: another
+    file may have its name (``mkm fem dataset`` writes ``mkm_dataset.csv`` too)."""
     path = dataset.get("path")
     if not path:
         return None
     recorded = dataset.get("sha256")
     places = [Path()] + (list(Path(directory).resolve().parents) if directory else [])
     packaged = package_file("mkm.surrogate", "data", Path(path).name)
+    # lexically from the resolved folder, as path_from_model was made
+    beside = ([Path(os.path.normpath(Path(directory).resolve() / dataset[PATH_FROM_MODEL]))]
+              if directory and dataset.get(PATH_FROM_MODEL) else [])
     first = None
-    for candidate in [*dict.fromkeys(place / path for place in places), packaged]:
+    for candidate in [*dict.fromkeys([*beside, *(place / path for place in places)]),
+                      packaged]:
         if candidate.is_file():
             digest = file_sha256(candidate)
             if digest == recorded:
@@ -356,21 +392,26 @@ def load_model(directory, accept_mismatch: bool = False) -> SurrogateForceModel:
                       f"({'; '.join(libraries)}): its predictions may differ; retrain it with "
                       "`mkm surrogate train`", LibraryVersionWarning, stacklevel=2)
     if dataset.get("path") and data is None:
+        beside = (f" nor at {dataset[PATH_FROM_MODEL]} from the model's folder"
+                  if dataset.get(PATH_FROM_MODEL) else "")
         warnings.warn(f"surrogate {str(directory)!r}: its training data {dataset['path']} "
                       f"(sha256 {str(dataset.get('sha256'))[:12]}) is found neither from the "
-                      "working directory nor above the model's folder: whether it changed "
-                      "since training is not checked (run from the folder it was trained in "
-                      "to check it)", UncheckedDataWarning, stacklevel=2)
+                      f"working directory nor above the model's folder{beside}: whether it "
+                      "changed since training is not checked (run from the folder it was "
+                      "trained in to check it)", UncheckedDataWarning, stacklevel=2)
     args = (metadata["kind"], metadata["inputs"], metadata["fixed"], metadata["box"], metadata)
+    # the data found unchanged: saved elsewhere, the copy records where it lies from there
+    data_file = data[0] if data is not None and data[1] == dataset.get("sha256") else None
 
     def load_estimator():
         return _read_estimator(directory / ESTIMATOR_FILE, checks["estimator_sha256"],
                                trusted, len(metadata["inputs"]))
 
     if predictor_class is None:
-        return SurrogateForceModel(load_estimator(), *args)
+        return SurrogateForceModel(load_estimator(), *args, data_file=data_file)
     predictor = _read_predictor(directory / PREDICTOR_FILE, predictor_class, metadata)
-    return SurrogateForceModel(None, *args, predictor=predictor, load_estimator=load_estimator)
+    return SurrogateForceModel(None, *args, predictor=predictor, load_estimator=load_estimator,
+                               data_file=data_file)
 
 
 def _check_file(path: Path, sha256) -> None:

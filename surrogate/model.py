@@ -12,11 +12,13 @@ from __future__ import annotations
 import warnings
 from dataclasses import dataclass, replace
 from functools import cache
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
 from threadpoolctl import ThreadpoolController
 
+from mkm.core.records import recorded_path
 from mkm.fem.interface import INPUTS, Domain, ForceModel, Prediction
 from mkm.fem.limits import PRACTICAL_RANGE, check_value, lock_eps, past_lock_text
 from mkm.fem.materials import SILASTIC_S
@@ -117,19 +119,24 @@ class SurrogateForceModel(ForceModel):
         ``() -> estimator``, when ``estimator`` is None.
     calibration : Calibration, optional
         Where the default muscle parameters come from (None: the shipped one).
+    data_file : path, optional
+        Where its training data lies on this machine (the file trained on, or found unchanged
+        where it was loaded): saving records it relative to the model's folder, never as
+        given.
     """
 
     def __init__(self, estimator, kind: str, inputs, fixed: dict, box: dict,
                  metadata: dict | None = None, L0_mm: float | None = None,
                  theta0_deg: float | None = None, C10_MPa: float | None = None,
                  C01_MPa: float | None = None, *, predictor=None, load_estimator=None,
-                 calibration: Calibration | None = None):
+                 calibration: Calibration | None = None, data_file=None):
         if estimator is None and load_estimator is None:
             raise ValueError("SurrogateForceModel needs an estimator or load_estimator")
         self._estimator = estimator
         self._load_estimator = load_estimator
         self.predictor = predictor
         self.calibration = calibration
+        self.data_file = None if data_file is None else Path(data_file)
         self.kind = kind
         self.inputs = tuple(inputs)
         self.fixed = dict(fixed)
@@ -195,7 +202,8 @@ class SurrogateForceModel(ForceModel):
         return SurrogateForceModel(self._estimator, self.kind, self.inputs, self.fixed,
                                    self.box, self.metadata, **merged, predictor=self.predictor,
                                    load_estimator=self._load_estimator,
-                                   calibration=calibration or self.calibration)
+                                   calibration=calibration or self.calibration,
+                                   data_file=self.data_file)
 
     def params(self):
         dataset = self.metadata.get("dataset", {})
@@ -208,11 +216,17 @@ class SurrogateForceModel(ForceModel):
 
     def origin(self) -> dict:
         """What a record of what it computed names it by: its model file's sha256 (None before
-        it is saved), its training's provenance and seed, and its dataset's path and sha256."""
+        it is saved), its training's provenance and seed, and its dataset's path and sha256.
+        The path is that of :attr:`data_file` as this process names it
+        (:func:`~mkm.core.records.recorded_path`) where it is known (the file trained on, or
+        found with the recorded sha256: a model reused from the cache was trained from another
+        folder, whose path means nothing here), else the one recorded at training."""
         dataset = _mapping(self.metadata.get("dataset"))
+        path = (recorded_path(self.data_file) if self.data_file is not None
+                else dataset.get("path"))
         return {"sha256": self.metadata.get("sha256"), "trained": self.metadata.get("trained"),
                 "random_state": self.metadata.get("random_state"),
-                "dataset": {k: dataset.get(k) for k in ("path", "sha256")}}
+                "dataset": {"path": path, "sha256": dataset.get("sha256")}}
 
     def error_margin(self) -> ErrorMargin:
         """The errors on muscles held out of training that training recorded (its metadata's

@@ -135,7 +135,8 @@ def train_surrogate(kind: str = "best", dataset=None, splits: int | None = None,
                       "third by braid angle (largest miss smallest)",
             **std_coverage(estimator, holdout.X, holdout.y)}
     model = SurrogateForceModel(estimator, resolved, data.inputs, data.fixed, data.box,
-                                metadata)
+                                metadata, data_file=Path(own_dataset if dataset is None
+                                                         else dataset).resolve())
     metrics["test_muscles"] = _test_muscle_metrics(model)
     return model
 
@@ -329,12 +330,17 @@ def cached_model(kind: str = "best", dataset=None, cache_dir=None,
                 # its folder's name holds the data's sha256 (cache_key): checked already
                 warnings.simplefilter("ignore", UncheckedDataWarning)
                 try:
-                    return load_model(directory)
+                    model = load_model(directory)
                 except (Warning, ValueError):
                     pass
+                else:  # the data is the one this process hashed for the key, not the trainer's
+                    model.data_file = dataset.resolve()
+                    return model
         with timed(training_task(kind, dataset)):  # the next first-use promise is this machine's
             model = train_surrogate(kind, dataset, splits=splits, progress=progress)
-        save_model(model, directory, lock=nullcontext())  # this lock is held already
+        # its folder's name holds the data's sha256; a path from the user's cache to the data
+        # would name the folders of this machine
+        save_model(model, directory, lock=nullcontext(), locate_data=False)  # lock held
     return model
 
 

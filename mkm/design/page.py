@@ -37,6 +37,7 @@ from mkm.design.box_search import (
     surrogate_uncertainty,
 )
 from mkm.design.result import DesignResult, design_record
+from mkm.design.robust import WORST_CORNER_UNSOLVED
 from mkm.design.spec import NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.calibration import calibration_provenance
 from mkm.fem.thickwall import outer_diameter_mm
@@ -148,7 +149,8 @@ COLUMN_DOCS = {
                "fine mesh's (mkm.mesh_errors)",
     "flags": "r<k>:near_lock, r<k>:threshold_above_pressure, r<k>:fe_not_converged, "
              "r<k>:margin_within_mesh_error",
-    "fe_failure": "the FE's own failure message per requirement",
+    "fe_failure": "the FE's own failure message per requirement (and per worst corner of "
+                  "the tolerances)",
 }
 
 FLAG_TEXT = {"near_lock": f"near the braid lock (eps >= {NEAR_LOCK_FRACTION:g} eps_max of "
@@ -165,6 +167,9 @@ FLAG_TEXT = {"near_lock": f"near the braid lock (eps >= {NEAR_LOCK_FRACTION:g} e
              "worst_corner_short": "the FE force at the worst corner of the tolerances is "
                                    "short of the requirement (a corner is rarer than the "
                                    "probability's complement)",
+             WORST_CORNER_UNSOLVED: "the FE gave no force at the worst corner of the "
+                                    "tolerances (its reason under fe_failure): whether the "
+                                    "muscle built to them meets the requirement is unknown",
              "probability_below_target": "the Monte Carlo probability of meeting every "
                                          "requirement is below the one asked for"}
 

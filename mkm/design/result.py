@@ -23,7 +23,13 @@ from mkm.design.box_search import (
     search,
 )
 from mkm.design.fe_verification import ordered, verify
-from mkm.design.robust import below_target, check_designs, check_probability, monte_carlo_record
+from mkm.design.robust import (
+    WORST_CORNER_UNSOLVED,
+    below_target,
+    check_designs,
+    check_probability,
+    monte_carlo_record,
+)
 from mkm.design.spec import (
     DEFAULT_OBJECTIVE,
     DEFAULT_PROBABILITY,
@@ -101,8 +107,9 @@ class DesignResult:
         required force (the design then is larger than the requirement needs), a chosen
         design outside the practical range or on its limit (:func:`~mkm.design.box_search.
         range_limits`), one that meets a requirement by less than the mesh's error and was
-        verified again on a finer one, and a robust design below the probability asked (none
-        verified holds it). Empty when none."""
+        verified again on a finer one, a robust design below the probability asked (none
+        verified holds it), and one whose worst corner the FE did not solve. Empty when
+        none."""
         s = self.search
         notes = [s.box_note()] if s.box_note() else []
         best = self.chosen
@@ -134,6 +141,13 @@ class DesignResult:
                          f"{100 * self.probability:g} % asked (the chosen one: "
                          f"{100 * best['probability_all']:.1f} % of the Monte Carlo draws): "
                          "verify more designs (--top) or ask for a wider margin")
+        unsolved = [] if best is None else [
+            flag.split(":")[0] for flag in str(best["flags"]).split(";")
+            if flag.endswith(f":{WORST_CORNER_UNSOLVED}")]
+        if unsolved:
+            notes.append(f"the FE gave no force at the worst corner of the tolerances of the "
+                         f"chosen design for {', '.join(unsolved)} ({best['fe_failure']}): "
+                         "whether the muscle built to them meets it there is not verified")
         if best is not None and best["fe_mesh"] != self.mesh:
             notes.append(f"the {self.mesh} mesh's margin of the chosen design was within that "
                          f"mesh's error (mkm.mesh_errors): verified again on the "

@@ -22,7 +22,9 @@ the surrogate itself by its predictive standard deviation ``s``. Three stages:
 3. **Worst corner** (:func:`check_designs`): the FE model at the corner of the tolerance box
    where the force is lowest (each input at its bound, on the side the sensitivity says lowers
    the force): ``r<k>_fe_worst_corner_N``. A corner short of the force is flagged
-   (``r<k>:worst_corner_short``), not refused: the corner is rarer than ``1 - p``.
+   (``r<k>:worst_corner_short``), not refused: the corner is rarer than ``1 - p``. A corner the
+   FE does not solve (not converged, braid locked) is flagged ``r<k>:worst_corner_unsolved``,
+   its reason in ``fe_failure``: never taken for a pass.
 
 ``benchmarks/bench_uncertainty.py --design`` checks the stated probability against the FE model
 on draws from the tolerances.
@@ -35,6 +37,7 @@ import pandas as pd
 from scipy import stats
 
 from mkm.fem.muscle import NUMBERS, Muscle
+from mkm.fem.outcomes import classify
 from mkm.fem.tolerances import Tolerances, draws
 from mkm.registry import parse_spec
 from mkm.uncertainty import monte_carlo_ready, nominal_parameters, sensitivities, surrogate_draws
@@ -43,6 +46,8 @@ MC_DRAWS = 4000  # the probability to +-0.7 points (binomial sd at 95 %)
 #: The Monte Carlo's seed: requirement k draws its built muscles from ``MC_SEED + k`` and the
 #: surrogate's noise from ``MC_SEED + 100 + k`` (the same designs give the same probabilities)
 MC_SEED = 0
+#: The flag of a requirement whose worst corner the FE did not solve (its reason in fe_failure)
+WORST_CORNER_UNSOLVED = "worst_corner_unsolved"
 
 
 def check_probability(probability: float) -> float:
@@ -97,8 +102,10 @@ def check_designs(designs: pd.DataFrame, requirements, models: dict,
     worst corner.
 
     ``models``: the search's surrogates by ``(L0, theta0, rubber)``. Adds
-    ``probability_r<k>``, ``probability_all``, ``r<k>_fe_worst_corner_N`` and the flags
-    ``r<k>:worst_corner_short`` and ``all:probability_below_target``.
+    ``probability_r<k>``, ``probability_all``, ``r<k>_fe_worst_corner_N`` (NaN where the FE
+    gives no valid force there) and the flags ``r<k>:worst_corner_short``,
+    ``r<k>:worst_corner_unsolved`` (its reason added to ``fe_failure``) and
+    ``all:probability_below_target``.
     """
     from mkm.prediction_cache import cached_predict
 
@@ -107,22 +114,28 @@ def check_designs(designs: pd.DataFrame, requirements, models: dict,
     for index, d in designs.iterrows():
         model = models[(float(d["L0_mm"]), float(d["theta0_deg"]), d["rubber"])]
         out, flags = {}, [f for f in str(d.get("flags", "") or "").split(";") if f]
+        failures = [f for f in [str(d.get("fe_failure", "") or "")] if f]
         for k, req in enumerate(requirements, start=1):
             out[f"probability_r{k}"] = chances.loc[index, f"probability_r{k}"]
             nominal = {name: float(v) for name, v in nominal_parameters(
                 model, d["D0_mm"], d["t0_mm"], req.eps).items()}
-            out[f"r{k}_fe_worst_corner_N"] = _worst_corner_force(
-                model, d.get("fe_mesh", mesh), nominal, req, tolerances, cache_dir,
-                cached_predict)
-            if out[f"r{k}_fe_worst_corner_N"] < req.force_N:
+            force, reason = _worst_corner_force(model, d.get("fe_mesh", mesh), nominal, req,
+                                                tolerances, cache_dir, cached_predict)
+            out[f"r{k}_fe_worst_corner_N"] = force
+            if np.isnan(force):  # never a pass: whether the corner holds is unknown
+                flags.append(f"r{k}:{WORST_CORNER_UNSOLVED}")
+                failures.append(f"r{k} worst corner: {reason}")
+            elif force < req.force_N:
                 flags.append(f"r{k}:worst_corner_short")
         out["probability_all"] = chances.loc[index, "probability_all"]
         if not out["probability_all"] >= probability:
             flags.append("all:probability_below_target")
         out["flags"] = ";".join(flags)
+        out["fe_failure"] = "; ".join(failures)
         rows.append(out)
     extra = pd.DataFrame(rows, index=designs.index)
-    return pd.concat([designs.drop(columns=["flags"]), extra], axis=1)
+    return pd.concat([designs.drop(columns=["flags", "fe_failure"], errors="ignore"), extra],
+                     axis=1)
 
 
 def monte_carlo(designs: pd.DataFrame, requirements, models: dict, tolerances: Tolerances,
@@ -179,8 +192,9 @@ def _linear_draws(model, req, nominal, sample, tolerances, force_N) -> np.ndarra
 
 
 def _worst_corner_force(model, mesh, nominal, req, tolerances, cache_dir,
-                        cached_predict) -> float:
-    """The FE force at the corner of the tolerance box that lowers the surrogate's force most."""
+                        cached_predict) -> tuple[float, str]:
+    """The FE force at the corner of the tolerance box that lowers the surrogate's force most,
+    and why it is NaN where the FE gave no valid force there (else "")."""
     force = float(np.ravel(model.predict(req.pressure_bar, nominal["D0_mm"], nominal["t0_mm"],
                                          req.eps).force_N)[0])
     signs = sensitivities(model, req.pressure_bar, nominal, tolerances, force,
@@ -199,4 +213,10 @@ def _worst_corner_force(model, mesh, nominal, req, tolerances, cache_dir,
     fe = parse_spec(f"axisym:mesh={mesh}").build(muscle=muscle)
     pred, _ = cached_predict(fe, req.pressure_bar, muscle.D0_mm, muscle.t0_mm, muscle.eps,
                              cache_dir=cache_dir)
-    return float(np.ravel(np.where(pred.valid, pred.force_N, np.nan))[0])
+    force = float(np.ravel(np.where(pred.valid, pred.force_N, np.nan))[0])
+    if np.isfinite(force):
+        return force, ""
+    outcome = str(classify(pred)[0])  # the one classification: braid locks, not converged...
+    outcome = "the FE gave a NaN force" if outcome == "ok" else outcome
+    failure = str(np.ravel(pred.extras.get("failure", [""]))[0])
+    return np.nan, outcome if failure in ("", "nan") else f"{outcome}: {failure}"

@@ -109,3 +109,17 @@ def test_a_source_that_lost_rows_is_refused(damage, message, config, source, tmp
     with pytest.raises(ValueError, match=message):
         reprocess(source.path, config, out_root=tmp_path / "again")
     assert not (tmp_path / "again").exists()
+
+
+def test_a_reprocessed_run_hashes_the_configuration_it_applied(config, source, tmp_path):
+    # was: reprocessed_from named the file given (config_source) without its sha256, where
+    # run.json hashes its own configuration file: an edited new.toml was not told apart
+    toml = tmp_path / "cell.toml"
+    toml.write_text("[loadcell]\nsensitivity_N_per_V = 200.0\ncapacity_N = 1961.33\n")
+    assert main(["reprocess", str(source.path), "--config", str(toml), "--out",
+                 str(tmp_path / "new")]) == 0
+    (folder,) = (tmp_path / "new").iterdir()
+    recorded = json.loads((folder / "run.json").read_text())["reprocessed_from"]
+    assert recorded["config_source"].endswith(f" + {toml}")
+    assert recorded["config_sha256"] == file_sha256(toml)
+    assert recorded["config_overrides"] == {}

@@ -897,3 +897,43 @@ def test_a_calibrated_rubber_outside_the_practical_range_is_said(tmp_path):
         "C10_MPa=0.01388 outside [0.03, 0.6]"]
     assert outside_practical_range({**row, "rubber": "silastic_s"}, req,
                                    Calibration.load(lab)) == []
+
+
+def test_an_unsolved_worst_corner_is_a_failure_with_its_reason(monkeypatch):
+    # was: the FE's NaN at the worst corner compared False with the required force: no flag,
+    # no reason, the design looked robust where nothing was verified. The FE is replaced by
+    # one that does not converge at eps 0.10 and gives 900 N at eps 0.05 (above 500 N).
+    import mkm.prediction_cache
+    from mkm.design.page import FLAG_TEXT
+    from mkm.design.robust import WORST_CORNER_UNSOLVED, check_designs
+    from mkm.design.spec import Requirement
+    from mkm.fem.interface import Prediction
+    from mkm.fem.tolerances import Tolerances
+    from mkm.uncertainty import nominal_parameters
+
+    def fe(model, pressure_bar, D0_mm, t0_mm, eps, cache_dir=None):
+        solved = eps > 0.0 and np.isclose(eps, 0.05, atol=0.02)
+        one = np.array([1.0])
+        return Prediction(model.name, {}, pressure_bar * one, D0_mm * one, t0_mm * one,
+                          eps * one, np.array([900.0 if solved else np.nan]),
+                          np.array([solved]), np.array([solved]), 0.0,
+                          {"failure": np.array(["" if solved else "Newton stalled at 2 bar"],
+                                               dtype=object)}), False
+
+    monkeypatch.setattr(mkm.prediction_cache, "cached_predict", fe)
+    model = make_model("thickwall")  # a closed form stands in for the surrogate: no training
+    nominal = nominal_parameters(model, 40.0, 3.0, 0.10)
+    theta0 = nominal["theta0_deg"]
+    designs = pd.DataFrame({"rank": [1], "D0_mm": [40.0], "t0_mm": [3.0],
+                            "L0_mm": [nominal["L0_mm"]], "theta0_deg": [theta0],
+                            "rubber": ["default"], "fe_mesh": ["coarse"], "flags": [""],
+                            "fe_failure": [""]})
+    requirements = [Requirement(500.0, 2.0, 0.10), Requirement(500.0, 2.0, 0.05)]
+    models = {(nominal["L0_mm"], theta0, "default"): model}
+    out = check_designs(designs, requirements, models, Tolerances.parse("D0=0.3,t0=0.1"),
+                        0.95, "coarse").iloc[0]
+    assert np.isnan(out["r1_fe_worst_corner_N"]) and out["r2_fe_worst_corner_N"] == 900.0
+    assert out["flags"].split(";")[0] == f"r1:{WORST_CORNER_UNSOLVED}"
+    assert "r2:worst_corner" not in out["flags"]
+    assert out["fe_failure"] == "r1 worst corner: not converged: Newton stalled at 2 bar"
+    assert WORST_CORNER_UNSOLVED in FLAG_TEXT  # the page says what the flag means

@@ -1,5 +1,6 @@
 import json
 import os
+import re
 import subprocess
 import sys
 import warnings
@@ -46,6 +47,16 @@ def rewrite_metadata(folder: Path, edit, sign: bool = True) -> None:
     if sign:
         meta["sha256"] = metadata_sha256(meta)
     (folder / METADATA_FILE).write_text(json.dumps(meta))
+
+
+def recorded_at(path: str, **dataset):
+    """An edit of a model's metadata: its training data recorded at ``path`` alone (and
+    ``dataset``'s keys), as a model saved before it recorded where the data lies from its
+    folder."""
+    def edit(meta):
+        meta["dataset"].pop("path_from_model", None)
+        meta["dataset"].update({"path": path, **dataset})
+    return edit
 
 
 def test_round_trip_predicts_the_same(saved):
@@ -127,7 +138,7 @@ def test_changed_training_data_is_refused(saved, tmp_path):
     copy = copy_model(saved[1], tmp_path / "data")
     data = tmp_path / "data.csv"
     data.write_text("pressure_bar\n0\n")
-    rewrite_metadata(copy, lambda m: m["dataset"].update({"path": str(data)}))
+    rewrite_metadata(copy, recorded_at(str(data)))
     with pytest.raises(ValueError, match="training data .* changed since training"):
         load_model(copy)
 
@@ -139,8 +150,7 @@ def test_training_data_is_checked_where_it_lies_above_the_model(saved, tmp_path,
     data = project / "data" / "d.csv"
     data.write_bytes(saved[2].read_bytes())
     copy = copy_model(saved[1], project / "models")
-    rewrite_metadata(copy, lambda m: m["dataset"].update(
-        {"path": "data/d.csv", "sha256": file_sha256(data)}))
+    rewrite_metadata(copy, recorded_at("data/d.csv", sha256=file_sha256(data)))
     (tmp_path / "elsewhere").mkdir()
     monkeypatch.chdir(tmp_path / "elsewhere")
     with warnings.catch_warnings():
@@ -151,10 +161,65 @@ def test_training_data_is_checked_where_it_lies_above_the_model(saved, tmp_path,
         load_model(copy)
 
 
+def test_training_data_outside_the_working_directory_is_checked_from_anywhere(
+        thickwall_dataset, tmp_path, monkeypatch):
+    # was: trained in folder A on data in folder B, the model recorded the data's name alone:
+    # loaded from folder C its check was said undone (UncheckedDataWarning)
+    for name in "ABC":
+        (tmp_path / name).mkdir()
+    data = tmp_path / "B" / "d.csv"
+    data.write_bytes(thickwall_dataset.read_bytes())
+    monkeypatch.chdir(tmp_path / "A")
+    directory = save_model(train_surrogate("physics", data, splits=0),
+                           tmp_path / "A" / "models" / "m")
+    recorded = json.loads((directory / METADATA_FILE).read_text())["dataset"]
+    assert recorded["path"] == "d.csv"  # relative to A it is not: its name
+    assert recorded["path_from_model"] == "../../../B/d.csv"  # no folder above tmp_path named
+    monkeypatch.chdir(tmp_path / "C")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # found and unchanged: nothing to say
+        loaded = load_model(directory)
+    assert loaded.data_file.resolve() == data.resolve()
+    data.write_bytes(data.read_bytes() + b"\n")
+    # said as the file it is, not as a path through the model's folder (m/../../../B/d.csv)
+    with pytest.raises(ValueError, match=re.escape(f"training data {data.resolve()} changed")):
+        load_model(directory)
+
+
+def test_the_cache_records_no_path_from_its_folder_to_the_data(thickwall_dataset, tmp_path):
+    # the cache's folder name holds the data's sha256; a path from the user's cache to a
+    # project's data would name the folders of the machine
+    from mkm.surrogate.train import cached_model
+
+    cached_model("physics", thickwall_dataset, cache_dir=tmp_path / "cache", splits=0)
+    (folder,) = (p for p in (tmp_path / "cache").iterdir() if p.is_dir())
+    assert "path_from_model" not in json.loads((folder / METADATA_FILE).read_text())["dataset"]
+
+
+def test_a_model_reused_from_the_cache_names_its_data_as_found_here(thickwall_dataset,
+                                                                    tmp_path, monkeypatch):
+    # was: reused from another folder, the cached model's records named its data by the path
+    # the process that trained it saw (data/d.csv, relative to a folder this one is not in)
+    from mkm.surrogate.train import cached_model
+
+    for folder in ("A/data", "B/sets"):
+        (tmp_path / folder).mkdir(parents=True)
+        (tmp_path / folder / "d.csv").write_bytes(thickwall_dataset.read_bytes())
+    monkeypatch.chdir(tmp_path / "A")
+    trained = cached_model("physics", "data/d.csv", cache_dir=tmp_path / "cache", splits=0)
+    assert trained.origin()["dataset"]["path"] == "data/d.csv"
+    monkeypatch.chdir(tmp_path / "B")
+    reused = cached_model("physics", "sets/d.csv", cache_dir=tmp_path / "cache", splits=0)
+    assert reused.metadata == trained.metadata  # the same model file, not trained again
+    assert reused.origin()["dataset"] == {"path": "sets/d.csv",
+                                          "sha256": file_sha256(thickwall_dataset)}
+    assert reused.with_parameters(L0_mm=282.0).origin() == reused.origin()
+
+
 def test_training_data_found_nowhere_is_said_unchecked(saved, tmp_path, monkeypatch):
     # the shipped mkm_dataset.csv is another file of that name: no false "changed"
     copy = copy_model(saved[1], tmp_path / "model")
-    rewrite_metadata(copy, lambda m: m["dataset"].update({"path": "mkm_dataset.csv"}))
+    rewrite_metadata(copy, recorded_at("mkm_dataset.csv"))
     monkeypatch.chdir(tmp_path)
     with pytest.warns(UncheckedDataWarning, match=r"its training data mkm_dataset\.csv \(sha256 "
                       r"[0-9a-f]{12}\) is found neither .* not checked"):
