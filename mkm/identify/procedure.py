@@ -385,6 +385,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      f"{offset_bound_said(runs)}: the runs' threshold wants more than the "
                      f"monitor may be off; {check}, or the model does not fit these runs near "
                      "the threshold")
+    notes += [line for line in (_zero_said(runs, best, boot),) if line]
     if "force_zero_N" in best.names and fitting.at_edge(best.values["force_zero_N"],
                                                         best.bounds["force_zero_N"]):
         low, high = best.bounds["force_zero_N"]
@@ -788,6 +789,22 @@ def _identifiability(runs, best, boot) -> list[str]:
     if "log_tau" in names and best.values["creep_fraction"] < 1e-3:
         notes.append("creep_fraction is near 0: creep_tau_s is not identifiable")
     return notes
+
+
+def _zero_said(runs, best, boot) -> str | None:
+    """A note when the load cell's fitted zero is not 0 within its interval: the calibration
+    is the muscle's without it, the runs' forces still hold it; how to take it out of them."""
+    if "force_zero_N" not in best.names:
+        return None
+    zero, (low, high) = best.values["force_zero_N"], boot["interval"]["force_zero_N"]
+    if low <= 0.0 <= high:
+        return None
+    again = (f"import the tables again with --tare at the tare each import took (run.json's "
+             f"imported_from.tare_N) {zero:+.3g} N" if all(r.imported for r in runs)
+             else "tare the cell (mkm tare) before the next run")
+    return (f"the load cell read {zero:+.3g} N (95 % CI {low:+.3g} to {high:+.3g}) with the "
+            "muscle slack: the calibration is the muscle's without it, but the runs' forces "
+            f"still hold it, and report and export show them as recorded; {again}")
 
 
 def _wide(name: str, value: float, interval) -> bool:

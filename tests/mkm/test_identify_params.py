@@ -474,6 +474,22 @@ def test_a_load_cell_zero_left_out_is_fitted_blind(runs, tmp_path):
         assert low <= truth <= high, table
     assert result.fit.values["theta0_deg"] == pytest.approx(32.0, abs=0.3)
     assert result.fit.values["rubber_scale"] == pytest.approx(1.1, rel=0.02)
+    assert any(n.startswith("the load cell read +2.9") and "(mkm tare)" in n
+               for n in result.notes), result.notes
+
+
+def test_a_fitted_zero_away_from_0_says_how_to_take_it_out_of_the_runs():
+    from mkm.identify.procedure import _zero_said
+
+    best = SimpleNamespace(names=("theta0_deg", "force_zero_N"), values={"force_zero_N": 2.5})
+    tables, bench = [SimpleNamespace(imported=True)], [SimpleNamespace(imported=False)]
+    away, about_0 = {"interval": {"force_zero_N": (2.1, 2.9)}}, {
+        "interval": {"force_zero_N": (-0.4, 2.9)}}
+    assert "--tare at the tare each import took (run.json's imported_from.tare_N) +2.5 N" in \
+        _zero_said(tables, best, away)
+    assert _zero_said(bench, best, away).endswith("tare the cell (mkm tare) before the next run")
+    assert _zero_said(bench, best, about_0) is None
+    assert _zero_said(bench, SimpleNamespace(names=("theta0_deg",), values={}), away) is None
 
 
 def test_the_load_cell_zero_is_searched_within_a_tenth_of_the_largest_force():
