@@ -608,7 +608,7 @@ def test_the_guides_range_surrogate_rows_are_their_measured_files(measured, seed
         cells = [c.strip() for c in row.strip("|").split("|")]
         assert cells[1].startswith(f"{part['muscles_scored']} of {part['muscles_drawn']}")
         assert (cells[2].removesuffix(" %"), cells[3], cells[4]) == errors(part), label
-        assert cells[6] == cover(part), label
+        assert cells[5] == cover(part), label
         short = "range" if label == "practical range" else "box"
         row = next(r for r in text.splitlines()
                    if r.startswith(f"| {short}, seed {seed} ({part['muscles_scored']}) |"))
@@ -688,13 +688,26 @@ def test_the_guides_range_surrogate_over_every_draw_and_the_check_set_is_its_mea
     assert (cells[2], cells[3], cells[4]) == (
         f"{pooled['worst_pct']:#.3g}".rstrip(".") + " %", f"{pooled['median_pct']:.3f} %",
         f"{pooled['p90_pct']:.2f} %")
-    assert cells[6] == f"**{cover(pooled)}**"
+    assert cells[5] == f"**{cover(pooled)}**"
     (check,) = record["pool_with"]
     assert check["file"] == "range_check.csv"
     line = " ".join(text[text.index("(The check set is"):].split(")", 1)[0].split())
-    assert f"before, {cover(check)} now;" in line
+    assert f"seed 20261224: {cover(check)} within 1 / 2 / 3 std" in line
     beyond = 100 - 100 * pooled["std_coverage"]["within_2std"]
     assert f"The points beyond 2 std ({beyond:.1f} % of them)" in " ".join(text.split())
+
+
+def test_the_guides_range_surrogate_table_has_no_column_its_files_do_not_hold():
+    """surrogates.md's table of the range surrogate's fresh draws had a "before" column (the
+    coverage of an earlier rescale) that no recorded file holds: each column now is a figure of
+    the files the tests above hold it to, or the target."""
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    header = next(r for r in text.splitlines() if r.startswith("| fresh muscles | scored |"))
+    columns = [c.strip() for c in re.split(r"(?<!\\)\|", header.strip().strip("|"))]
+    assert columns == ["fresh muscles", "scored", "worst max\\|Err%\\|", "median",
+                       "90th percentile", "within 1 / 2 / 3 std", "target"]
+    line = " ".join(text[text.index("(The check set is"):].split(")", 1)[0].split())
+    assert "before" not in line
 
 
 def test_the_guides_lock_variants_table_is_its_measured_file():
