@@ -332,6 +332,7 @@ BENCHMARKS = {
                        "--out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
+    "recorder_lag.json": "benchmarks/bench_recorder_lag.py --repeats 20 --out {out}",
     # the guide quotes this draw's muscles: its seed, not a fresh one
     "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --seed "
                           "2857834494527622234 --out {out}",

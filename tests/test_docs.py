@@ -944,6 +944,26 @@ def test_the_bench_pages_console_close_seconds_are_its_measured_file():
     assert f"or {stuck['to recorded, median [s]']:.1f} s (a stuck one, the check cut)" in text
 
 
+def test_the_bench_pages_recorder_lag_is_its_measured_file():
+    """bench.md quoted the recorder's lag on the virtual clock (43 to 101 rows held with
+    one-sample blocks, 140 to 200 with ten) from two runs no file recorded; 20 runs each held up
+    to 280 rows, 28 s of the 30 s a stop needs: the words are held to ``recorder_lag.json``."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "recorder_lag.json").read_text(encoding="utf-8"))
+    rows = {r["read block [samples]"]: r for r in record["rows"]}
+    text = " ".join((DOCS / "guide" / "bench.md").read_text(encoding="utf-8").split())
+    one, ten = rows[1], rows[10]
+    assert all(r["complete"] == r["runs"] == record["repeats"] for r in rows.values())
+    least, most, span = ("most held, least [rows]", "most held, most [rows]",
+                         "most held, most [s of samples]")
+    assert (f"at most {one[least]} to {one[most]} rows held (up to {one[span]:.1f} s of samples) "
+            f"with one-sample blocks and {ten[least]} to {ten[most]} rows (up to "
+            f"{ten[span]:.1f} s) with 10-sample blocks, over {record['repeats']} runs of each "
+            "on a loaded 2-core machine (`docs/measured/recorder_lag.json`") in text
+    assert f"near the {record['disk_stuck_s']:g} s held" in text
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to
