@@ -831,6 +831,102 @@ def test_the_guides_learning_curves_are_their_measured_files(measured, heading):
                 assert abs(float(figure) - result[key]) <= last / 2 + 1e-9, (row[0], key)
 
 
+def test_the_guides_adaptive_limits_table_is_its_measured_files():
+    """surrogates.md types out ``bench_surrogate_limits.py --adaptive``'s results by hand (the
+    box's two pools after a slash, the range's four steps as a span); nothing held them to the
+    files: every figure is held to its file to the digits it prints."""
+    import json
+
+    def load(name):
+        return json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
+
+    pools = [load("surrogate_limits_box_adaptive.json"),
+             load("surrogate_limits_box_adaptive_pool2.json")]
+    box_range = load("surrogate_limits_range_adaptive.json")
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    table = text[text.index("| | training muscles | worst | 98th pct | median | above the "
+                            "target |"):].split("\n\n", 1)[0]
+    rows = {r[0]: r[1:] for r in ([c.strip() for c in line.strip().strip("|").split("|")]
+                                  for line in table.splitlines()[2:])}
+    keys = ("worst_pct", "p98_pct", "median_pct")
+
+    def held(cells, results, draws):
+        """``cells`` (training muscles, worst, 98th, median, above, draws above) against
+        ``results``, one per figure of a cell (after a slash)."""
+        assert cells[0] == " / ".join(dict.fromkeys(str(r["training_muscles"])
+                                                    for r in results)), cells
+        for cell, key in zip(cells[1:4], keys, strict=True):
+            figures = re.findall(r"[\d.]+", cell)
+            assert len(figures) == len(results), (cell, key)
+            for figure, result in zip(figures, results, strict=True):
+                last = 10.0 ** -len(figure.partition(".")[2])  # the digit it prints
+                assert abs(float(figure) - result[key]) <= last / 2 + 1e-9, (cell, key)
+        assert cells[4] == " / ".join(str(r["above_target"]) for r in results), cells
+        assert cells[5] == " / ".join(str(r["draws_above_target"]) for r in results) + (
+            f" of {draws}"), cells
+
+    shipped = pools[0]["learning_curve"][0]
+    assert shipped == {**pools[1]["learning_curve"][0], "fit_s": shipped["fit_s"]}
+    label = next(k for k in rows if k.startswith("box, shipped"))
+    draws = len(pools[0]["seeds"])
+    assert label == (f"box, shipped ({shipped['muscles']} fresh muscles, {draws} draws of "
+                     f"{shipped['muscles'] // draws})")
+    held(rows[label], [shipped], draws)
+    assert [p["adaptive"]["pool_seed"] for p in pools] == [20261303, 20261304]
+    shown = [k for k in rows if k.startswith("box, + ")]
+    for label in shown:
+        added = int(re.match(r"box, \+ (\d+)", label).group(1))
+        held(rows[label], [next(r for r in p["adaptive"]["rows"] if r["added"] == added)
+                           for p in pools], draws)
+    assert len(shown) >= 3
+
+    shipped = box_range["learning_curve"][0]
+    draws = len(box_range["seeds"])
+    label = next(k for k in rows if k.startswith("range, shipped"))
+    assert label.startswith(f"range, shipped ({shipped['muscles']} fresh muscles with force, "
+                            f"{draws} draws of ")
+    held(rows[label], [shipped], draws)
+    label = next(k for k in rows if k.startswith("range, + "))
+    steps = box_range["adaptive"]["rows"]
+    assert label == "range, + " + " / ".join(str(r["added"]) for r in steps) + " adaptive"
+    cells = rows[label]
+
+    def span(key, digits):
+        values = [r[key] for r in steps]
+        low, high = (f"{min(values):.{digits}f}", f"{max(values):.{digits}f}")
+        return low if low == high else f"{low}-{high}"
+
+    assert cells[0] == span("training_muscles", 0)
+    assert cells[1:4] == [span("worst_pct", 1) + " %", span("p98_pct", 1) + " %",
+                          span("median_pct", 3) + " %"]
+    assert cells[4] == span("above_target", 0)
+    assert cells[5] == span("draws_above_target", 0) + f" of {draws}"
+
+
+@pytest.mark.parametrize(("measured", "said"), [
+    ("surrogate_limits_range_adaptive.json",
+     "on the {points} muscles above, as shipped {shipped} % within 1 / 2 / 3 std, at the best "
+     "factor ({factor:.3f}) {best} %, a miss of {miss:.1f} points"),
+    ("surrogate_limits_box_adaptive.json", "in the box, as shipped {shipped} % (miss "
+                                           "{shipped_miss:.1f})")])
+def test_the_guides_best_std_factor_is_its_measured_file(measured, said):
+    """surrogates.md quotes ``std_factor`` of the adaptive runs' files (the shipped std's
+    coverage on their fresh muscles and the best factor of the whole std) by hand."""
+    import json
+
+    record = json.loads((DOCS / "measured" / measured).read_text(encoding="utf-8"))
+    factor = record["std_factor"]
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+
+    def cover(shares):
+        return " / ".join(f"{100 * v:.1f}" for v in shares)
+
+    assert said.format(points=record["learning_curve"][0]["muscles"],
+                       shipped=cover(factor["shipped_within"]), factor=factor["best_factor"],
+                       best=cover(factor["best_within"]), miss=100 * factor["best_miss"],
+                       shipped_miss=100 * factor["shipped_miss"]) in text
+
+
 def test_the_calibration_pages_silent_miss_is_its_measured_file():
     """calibration.md quotes the step tables' one silent miss by hand; re-measured, its
     interval began at 34.5261 deg where the page still said 34.5262."""
