@@ -660,6 +660,28 @@ def test_the_guides_default_surrogate_std_rows_are_their_measured_files(measured
     assert "pooled by hand" in " ".join(text[text.index("| **fresh, pooled** |"):].split())[:600]
 
 
+@pytest.mark.parametrize(("label", "dataset"), [
+    ("held-out set (fitted on)", "surrogate/data/mkm_std_holdout.csv"),
+    ("calibration set (shape fitted on)", "surrogate/data/mkm_std_calibration.csv"),
+    ("test set, seeds 20261401-20261410", "tests/surrogate/data/std_test_muscles.csv")])
+def test_the_guides_default_surrogate_std_rows_on_shipped_sets_are_the_models(label, dataset):
+    """surrogates.md types the default surrogate's std coverage on its held-out, calibration
+    and test sets by hand; no file records them, the shipped model gives them (trained in
+    seconds): each row is held to it, to the digit it prints."""
+    from mkm.surrogate.train import cached_model
+    from mkm.surrogate.training_data import load_training_data
+    from mkm.surrogate.validation import std_coverage
+
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    row = next(r for r in text.splitlines() if r.startswith(f"| {label} |"))
+    cells = [c.strip() for c in row.strip().strip("|").split("|")]
+    data = load_training_data(ROOT / dataset)
+    within = std_coverage(cached_model("best").estimator, data.X, data.y)
+    assert int(cells[1]) == data.n_muscles
+    assert cells[2] == " / ".join(f"{100 * within[f'within_{k}std']:.1f}" for k in (1, 2, 3)) + (
+        " %")
+
+
 def test_the_guides_default_surrogate_std_table_has_no_column_of_an_earlier_rescale():
     """surrogates.md's table of the default surrogate's std coverage had a "before" column (a
     rescale of ``k_A eps`` alone fitted on 360 held-out muscles) that no recorded file holds
