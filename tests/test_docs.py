@@ -937,6 +937,30 @@ def test_the_guides_adaptive_limits_table_is_its_measured_files():
     assert cells[5] == span("draws_above_target", 0) + f" of {draws}"
 
 
+def test_the_guides_range_std_by_distance_from_the_threshold_is_its_measured_file():
+    """surrogates.md types out ``surrogate_limits_range.json``'s coverage per fifth of the
+    points by ``P - P*`` by hand: the bins' edges and every fraction are held to the file."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "surrogate_limits_range.json").read_text(
+        encoding="utf-8"))
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    table = text[text.index("| `P - P*` [bar] |"):].split("\n\n", 1)[0]
+    head, _, shares = ([c.strip() for c in r.strip().strip("|").split("|")][1:]
+                       for r in table.splitlines())
+    bins = record["coverage_by_pressure"]
+    assert len(head) == len(shares) == len(bins)
+    assert (f"(same {record['learning_curve'][-1]['muscles']} muscles, shipped fit, each fifth "
+            "of the points") in " ".join(text.split())
+    for k, (edges, cell, part) in enumerate(zip(head, shares, bins, strict=True)):
+        low, high = part["above_threshold_bar"]
+        if k == 0:
+            assert edges == f"below {high:.1f}"
+        else:
+            assert edges == f"{low:.1f}-{high:.1f}"
+        assert cell == " / ".join(f"{100 * part[f'within_{n}std']:.1f}" for n in (1, 2, 3))
+
+
 @pytest.mark.parametrize(("measured", "said"), [
     ("surrogate_limits_range_adaptive.json",
      "on the {points} muscles above, as shipped {shipped} % within 1 / 2 / 3 std, at the best "
