@@ -330,6 +330,11 @@ BENCHMARKS = {
                                        "--seed 20261300 --out {out}",
     "mesh_bound.json": "benchmarks/bench_mesh_bound.py --muscles 240 --seed 20264102 "
                        "--out {out}",
+    # the guide's further checks of the bound, on the draws it names
+    "mesh_bound_draw80.json": "benchmarks/bench_mesh_bound.py --muscles 80 --seed 20264101 "
+                              "--out {out}",
+    "mesh_bound_draw120.json": "benchmarks/bench_mesh_bound.py --muscles 120 --seed 20261210 "
+                               "--out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
     "recorder_lag.json": "benchmarks/bench_recorder_lag.py --repeats 20 --out {out}",
