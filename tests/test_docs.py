@@ -1250,3 +1250,61 @@ def test_the_guides_words_on_the_mesh_error_table_are_the_shipped_table():
             f"{shift['practical', 'coarse']:.2f} % (coarse), over those near the lock "
             f"{shift['near lock', 'medium']:.2f} % and {shift['near lock', 'coarse']:.1f} "
             "%") in text
+
+
+def _printed_unit(figure: str) -> float:
+    """One unit of the last digit a figure prints: 0.01 for "0.47", 1 for "110", 100 for
+    "6,600" (a figure in thousands is rounded to its last non-zero digit)."""
+    if "." in figure:
+        return 10.0 ** -len(figure.partition(".")[2])
+    if "," in figure:
+        digits = figure.replace(",", "")
+        return 10.0 ** (len(digits) - len(digits.rstrip("0")))
+    return 1.0
+
+
+def test_the_threshold_pages_words_on_identifying_a_gap_are_its_measured_file():
+    """threshold.md quotes ``identify_gap.json``'s eight draws by hand under its generated
+    table (the FE's and the thick-wall form's errors, intervals and chi2/nu): ``make
+    bench-docs`` re-measures the table and would leave the words behind. A bound the words
+    state ("within") is the file's largest rounded up; a range's ends are the file's within one
+    unit of the digit they print."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_gap.json").read_text(encoding="utf-8"))
+    fe = [r for r in record["rows"] if r["model"].startswith("axisym")]
+    closed = [r for r in record["rows"] if r["model"] == "thickwall"]
+    text = " ".join((DOCS / "guide" / "threshold.md").read_text(encoding="utf-8").split())
+
+    def within(figure, value):
+        assert value <= float(figure) < value + _printed_unit(figure), (figure, value)
+
+    def near(figure, value):
+        assert abs(float(figure.replace(",", "")) - value) <= _printed_unit(figure), (
+            figure, value)
+
+    def rubber_pct(r):
+        return 100 * abs(r["rubber scale"] / r["true rubber scale"] - 1)
+
+    said = re.search(r"On the (\w+) draws the FE finds the gap within ([\d.]+) % \(the issue's "
+                     r"target: 10 %\), the angle within ([\d.]+) deg and the rubber within "
+                     r"([\d.]+) %, and every 95 % interval \(gap, angle, rubber\) holds the "
+                     r"truth; chi2/nu ([\d.]+)-([\d.]+);", text)
+    assert said, "the sentence on the FE's gap"
+    assert said.group(1) == "eight" and len(fe) == len(closed) == 8
+    within(said.group(2), max(abs(r["gap error %"]) for r in fe))
+    within(said.group(3), max(abs(r["theta0 deg"] - r["true theta0 deg"]) for r in fe))
+    within(said.group(4), max(rubber_pct(r) for r in fe))
+    assert all(r[f"{p} CI covers"] for r in fe for p in ("gap", "theta0", "rubber"))
+    near(said.group(5), min(r["chi2/nu"] for r in fe))
+    near(said.group(6), max(r["chi2/nu"] for r in fe))
+    said = re.search(r"The thick-wall form, fitted to the same runs, misses the gap by (\d+)-(\d+) "
+                     r"% and the rubber by up to (\d+) % and says so \(chi2/nu ([\d,]+)-([\d,]+):",
+                     text)
+    assert said, "the sentence on the thick-wall form's gap"
+    near(said.group(1), min(abs(r["gap error %"]) for r in closed))
+    near(said.group(2), max(abs(r["gap error %"]) for r in closed))
+    near(said.group(3), max(rubber_pct(r) for r in closed))
+    assert all(r["misfit said"] for r in closed)
+    near(said.group(4), min(r["chi2/nu"] for r in closed))
+    near(said.group(5), max(r["chi2/nu"] for r in closed))
