@@ -1308,3 +1308,56 @@ def test_the_threshold_pages_words_on_identifying_a_gap_are_its_measured_file():
     assert all(r["misfit said"] for r in closed)
     near(said.group(4), min(r["chi2/nu"] for r in closed))
     near(said.group(5), max(r["chi2/nu"] for r in closed))
+
+
+def test_the_threshold_pages_words_on_a_gap_on_a_wrong_bench_are_its_measured_files():
+    """threshold.md quotes ``identify_gap_wrong_bench.json`` and ``identify_gap_itemised.json``
+    by hand under their generated tables (the FE's gap errors, how many within the issue's
+    10 %, their median, the intervals, chi2/nu, the CPU seconds): held to the files, each
+    range's ends within one unit of the digit they print."""
+    import json
+    import statistics
+
+    def fe_rows(name):
+        record = json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
+        rows = [r for r in record["rows"] if r["model"].startswith("axisym")]
+        assert all(r[f"{p} CI covers"] for r in rows for p in ("gap", "theta0", "rubber"))
+        return rows, [abs(r["gap error %"]) for r in rows]
+
+    def near(figure, value):
+        assert abs(float(figure) - value) <= _printed_unit(figure), (figure, value)
+
+    text = " ".join((DOCS / "guide" / "threshold.md").read_text(encoding="utf-8").split())
+    words = {4: "four", 5: "five", 8: "eight"}
+    rows, gap = fe_rows("identify_gap_wrong_bench.json")
+    said = re.search(r"The FE's gap is then ([\d.]+)-([\d.]+) % off \(within the issue's 10 % on "
+                     r"(\w+) draws of (\w+), median ([\d.]+) %\), and every 95 % interval \(gap, "
+                     r"angle, rubber\) holds the truth on all (\w+), with chi2/nu ([\d.]+)-"
+                     r"([\d.]+)\.", text)
+    assert said, "the sentence on the wrong bench"
+    near(said.group(1), min(gap))
+    near(said.group(2), max(gap))
+    assert said.group(3, 4, 6) == (words[sum(g <= 10 for g in gap)], words[len(rows)],
+                                   words[len(rows)])
+    near(said.group(5), statistics.median(gap))
+    near(said.group(7), min(r["chi2/nu"] for r in rows))
+    near(said.group(8), max(r["chi2/nu"] for r in rows))
+    seconds = re.search(r"takes more CPU than it did: (\d+)-(\d+) s per identification in the "
+                        r"table", text)
+    assert seconds, "the sentence on the FE search's CPU"
+    near(seconds.group(1), min(r["cpu s"] for r in rows))
+    near(seconds.group(2), max(r["cpu s"] for r in rows))
+
+    rows, gap = fe_rows("identify_gap_itemised.json")
+    said = re.search(r"The gap is then ([\d.]+)-([\d.]+) % off: within 10 % on all (\w+) draws, "
+                     r"median ([\d.]+) %\. Every interval holds the truth\. On (\w+) draws "
+                     r"identify says the fit misfits \(chi2/nu ([\d.]+)-([\d.]+)\)", text)
+    assert said, "the sentence on the itemised monitor"
+    near(said.group(1), min(gap))
+    near(said.group(2), max(gap))
+    assert max(gap) <= 10 and said.group(3) == words[len(rows)]
+    near(said.group(4), statistics.median(gap))
+    misfit = [r["chi2/nu"] for r in rows if r["misfit said"]]
+    assert said.group(5) == words[len(misfit)]
+    near(said.group(6), min(misfit))
+    near(said.group(7), max(misfit))
