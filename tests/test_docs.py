@@ -1263,6 +1263,16 @@ def _printed_unit(figure: str) -> float:
     return 1.0
 
 
+def _within(figure: str, value: float) -> None:
+    """A bound the words state ("within 0.47 %"): the file's value rounded up to its digit."""
+    assert value <= float(figure) < value + _printed_unit(figure), (figure, value)
+
+
+def _near(figure: str, value: float) -> None:
+    """A figure the words quote: the file's value within one unit of the digit it prints."""
+    assert abs(float(figure.replace(",", "")) - value) <= _printed_unit(figure), (figure, value)
+
+
 def test_the_threshold_pages_words_on_identifying_a_gap_are_its_measured_file():
     """threshold.md quotes ``identify_gap.json``'s eight draws by hand under its generated
     table (the FE's and the thick-wall form's errors, intervals and chi2/nu): ``make
@@ -1276,13 +1286,6 @@ def test_the_threshold_pages_words_on_identifying_a_gap_are_its_measured_file():
     closed = [r for r in record["rows"] if r["model"] == "thickwall"]
     text = " ".join((DOCS / "guide" / "threshold.md").read_text(encoding="utf-8").split())
 
-    def within(figure, value):
-        assert value <= float(figure) < value + _printed_unit(figure), (figure, value)
-
-    def near(figure, value):
-        assert abs(float(figure.replace(",", "")) - value) <= _printed_unit(figure), (
-            figure, value)
-
     def rubber_pct(r):
         return 100 * abs(r["rubber scale"] / r["true rubber scale"] - 1)
 
@@ -1292,22 +1295,22 @@ def test_the_threshold_pages_words_on_identifying_a_gap_are_its_measured_file():
                      r"truth; chi2/nu ([\d.]+)-([\d.]+);", text)
     assert said, "the sentence on the FE's gap"
     assert said.group(1) == "eight" and len(fe) == len(closed) == 8
-    within(said.group(2), max(abs(r["gap error %"]) for r in fe))
-    within(said.group(3), max(abs(r["theta0 deg"] - r["true theta0 deg"]) for r in fe))
-    within(said.group(4), max(rubber_pct(r) for r in fe))
+    _within(said.group(2), max(abs(r["gap error %"]) for r in fe))
+    _within(said.group(3), max(abs(r["theta0 deg"] - r["true theta0 deg"]) for r in fe))
+    _within(said.group(4), max(rubber_pct(r) for r in fe))
     assert all(r[f"{p} CI covers"] for r in fe for p in ("gap", "theta0", "rubber"))
-    near(said.group(5), min(r["chi2/nu"] for r in fe))
-    near(said.group(6), max(r["chi2/nu"] for r in fe))
+    _near(said.group(5), min(r["chi2/nu"] for r in fe))
+    _near(said.group(6), max(r["chi2/nu"] for r in fe))
     said = re.search(r"The thick-wall form, fitted to the same runs, misses the gap by (\d+)-(\d+) "
                      r"% and the rubber by up to (\d+) % and says so \(chi2/nu ([\d,]+)-([\d,]+):",
                      text)
     assert said, "the sentence on the thick-wall form's gap"
-    near(said.group(1), min(abs(r["gap error %"]) for r in closed))
-    near(said.group(2), max(abs(r["gap error %"]) for r in closed))
-    near(said.group(3), max(rubber_pct(r) for r in closed))
+    _near(said.group(1), min(abs(r["gap error %"]) for r in closed))
+    _near(said.group(2), max(abs(r["gap error %"]) for r in closed))
+    _near(said.group(3), max(rubber_pct(r) for r in closed))
     assert all(r["misfit said"] for r in closed)
-    near(said.group(4), min(r["chi2/nu"] for r in closed))
-    near(said.group(5), max(r["chi2/nu"] for r in closed))
+    _near(said.group(4), min(r["chi2/nu"] for r in closed))
+    _near(said.group(5), max(r["chi2/nu"] for r in closed))
 
 
 def test_the_threshold_pages_words_on_a_gap_on_a_wrong_bench_are_its_measured_files():
@@ -1324,9 +1327,6 @@ def test_the_threshold_pages_words_on_a_gap_on_a_wrong_bench_are_its_measured_fi
         assert all(r[f"{p} CI covers"] for r in rows for p in ("gap", "theta0", "rubber"))
         return rows, [abs(r["gap error %"]) for r in rows]
 
-    def near(figure, value):
-        assert abs(float(figure) - value) <= _printed_unit(figure), (figure, value)
-
     text = " ".join((DOCS / "guide" / "threshold.md").read_text(encoding="utf-8").split())
     words = {4: "four", 5: "five", 8: "eight"}
     rows, gap = fe_rows("identify_gap_wrong_bench.json")
@@ -1335,29 +1335,108 @@ def test_the_threshold_pages_words_on_a_gap_on_a_wrong_bench_are_its_measured_fi
                      r"angle, rubber\) holds the truth on all (\w+), with chi2/nu ([\d.]+)-"
                      r"([\d.]+)\.", text)
     assert said, "the sentence on the wrong bench"
-    near(said.group(1), min(gap))
-    near(said.group(2), max(gap))
+    _near(said.group(1), min(gap))
+    _near(said.group(2), max(gap))
     assert said.group(3, 4, 6) == (words[sum(g <= 10 for g in gap)], words[len(rows)],
                                    words[len(rows)])
-    near(said.group(5), statistics.median(gap))
-    near(said.group(7), min(r["chi2/nu"] for r in rows))
-    near(said.group(8), max(r["chi2/nu"] for r in rows))
+    _near(said.group(5), statistics.median(gap))
+    _near(said.group(7), min(r["chi2/nu"] for r in rows))
+    _near(said.group(8), max(r["chi2/nu"] for r in rows))
     seconds = re.search(r"takes more CPU than it did: (\d+)-(\d+) s per identification in the "
                         r"table", text)
     assert seconds, "the sentence on the FE search's CPU"
-    near(seconds.group(1), min(r["cpu s"] for r in rows))
-    near(seconds.group(2), max(r["cpu s"] for r in rows))
+    _near(seconds.group(1), min(r["cpu s"] for r in rows))
+    _near(seconds.group(2), max(r["cpu s"] for r in rows))
 
     rows, gap = fe_rows("identify_gap_itemised.json")
     said = re.search(r"The gap is then ([\d.]+)-([\d.]+) % off: within 10 % on all (\w+) draws, "
                      r"median ([\d.]+) %\. Every interval holds the truth\. On (\w+) draws "
                      r"identify says the fit misfits \(chi2/nu ([\d.]+)-([\d.]+)\)", text)
     assert said, "the sentence on the itemised monitor"
-    near(said.group(1), min(gap))
-    near(said.group(2), max(gap))
+    _near(said.group(1), min(gap))
+    _near(said.group(2), max(gap))
     assert max(gap) <= 10 and said.group(3) == words[len(rows)]
-    near(said.group(4), statistics.median(gap))
+    _near(said.group(4), statistics.median(gap))
     misfit = [r["chi2/nu"] for r in rows if r["misfit said"]]
     assert said.group(5) == words[len(misfit)]
-    near(said.group(6), min(misfit))
-    near(said.group(7), max(misfit))
+    _near(said.group(6), min(misfit))
+    _near(said.group(7), max(misfit))
+
+
+def test_the_threshold_pages_words_on_fitting_the_rest_length_are_its_measured_file():
+    """threshold.md quotes ``identify_rest_length.json`` by hand under its generated table (per
+    muscle the fitted rest lengths, chi2/nu with and without the length fitted, the errors on
+    the rest curve and the lengths not fitted, the thresholds): ``make bench-docs`` re-measures
+    the table and would leave the words behind."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_rest_length.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "threshold.md").read_text(encoding="utf-8").split())
+
+    def rows(muscle, model=None, with_length=True):
+        found = [r for r in record["rows"] if r["muscle"] == f"Festo {muscle}"
+                 and ("L0" in r["fitted"].split(", ")) == with_length
+                 and (model is None or r["model"] == model)]
+        assert found, (muscle, model, with_length)
+        return found
+
+    def span(figures, found, key):
+        low, high = figures
+        _near(low, min(r[key] for r in found))
+        _near(high, max(r[key] for r in found))
+
+    said = re.search(
+        r"Every pair finds Festo's nominal (\d+) mm within ([\d.]+) mm \(([\d.]+)-([\d.]+) mm\) "
+        r"from a table that declares (\d+) mm, and the thick-wall fit goes from a hundred times "
+        r"the declared noise \(chi2/nu ([\d.]+)-([\d.]+)\) to within a few times it \(([\d.]+)-"
+        r"([\d.]+)\)\. The rest-length curve is then predicted within ([\d.]+) % of the largest "
+        r"force with the thick-wall form, ([\d.]+) % with the FE \(([\d.]+)-([\d.]+) % "
+        r"without\), its threshold at ([\d.]+)-([\d.]+) bar against the measured ([\d.]+) "
+        r"\(within the issue's 0.1 bar\), and the lengths not fitted within ([\d.]+)-([\d.]+) % "
+        r"with the thick-wall form, ([\d.]+)-([\d.]+) % with the FE \(([\d.]+)-([\d.]+) % "
+        r"without\)", text)
+    assert said, "the paragraph on the DMSP-20-300"
+    fitted, without = rows("DMSP-20-300"), rows("DMSP-20-300", with_length=False)
+    closed, fe = (rows("DMSP-20-300", "thickwall"), rows("DMSP-20-300", "axisym:mesh=coarse"))
+    assert {r["nominal L0 mm"] for r in fitted} == {float(said.group(1))}
+    _within(said.group(2), max(abs(r["L0 mm"] - r["nominal L0 mm"]) for r in fitted))
+    span(said.group(3, 4), fitted, "L0 mm")
+    assert {r["L0 mm"] for r in without} == {float(said.group(5))}
+    span(said.group(6, 7), without, "chi2/nu")
+    span(said.group(8, 9), closed, "chi2/nu")
+    _within(said.group(10), max(r["rest curve max err %"] for r in closed))
+    _within(said.group(11), max(r["rest curve max err %"] for r in fe))
+    span(said.group(12, 13), without, "rest curve max err %")
+    span(said.group(14, 15), fitted, "P* at eps 0 bar")
+    _near(said.group(16), fitted[0]["measured P* bar"])
+    span(said.group(17, 18), closed, "held-out lengths max err %")
+    span(said.group(19, 20), fe, "held-out lengths max err %")
+    span(said.group(21, 22), without, "held-out lengths max err %")
+
+    said = re.search(
+        r"Its table starts at its nominal (\d+) mm; the fitted rest length comes out ([\d.]+)-"
+        r"([\d.]+) mm longer on every pair \(the study's [\d.-]+ mm\), the fit falls from "
+        r"chi2/nu ([\d.]+)-([\d.]+) to ([\d.]+)-([\d.]+), the rest-length curve is predicted "
+        r"within ([\d.]+) % \(([\d.]+)-([\d.]+) % without\) and its threshold at ([\d.]+)-"
+        r"([\d.]+) bar against the measured bracket ([\d.]+)-([\d.]+) bar .*? The lengths not "
+        r"fitted: the FE within ([\d.]+)-([\d.]+) % on every pair, the thick-wall form within "
+        r"([\d.]+)-([\d.]+) % \(([\d.]+)-([\d.]+) % without\)", text)
+    assert said, "the paragraph on the DMSP-10-250"
+    fitted, without = rows("DMSP-10-250"), rows("DMSP-10-250", with_length=False)
+    closed, fe = (rows("DMSP-10-250", "thickwall"), rows("DMSP-10-250", "axisym:mesh=coarse"))
+    assert {r["L0 mm"] for r in without} == {float(said.group(1))}
+    longer = [r["L0 mm"] - r["nominal L0 mm"] for r in fitted]
+    _near(said.group(2), min(longer))
+    _near(said.group(3), max(longer))
+    span(said.group(4, 5), without, "chi2/nu")
+    span(said.group(6, 7), fitted, "chi2/nu")
+    _within(said.group(8), max(r["rest curve max err %"] for r in fitted))
+    span(said.group(9, 10), without, "rest curve max err %")
+    span(said.group(11, 12), fitted, "P* at eps 0 bar")
+    bracket = fitted[0]["measured bracket bar"].split("-")
+    _near(said.group(13), float(bracket[0]))
+    _near(said.group(14), float(bracket[1]))
+    span(said.group(15, 16), fe, "held-out lengths max err %")
+    span(said.group(17, 18), closed, "held-out lengths max err %")
+    span(said.group(19, 20), without, "held-out lengths max err %")
