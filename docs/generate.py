@@ -341,6 +341,11 @@ BENCHMARKS = {
     # the guide quotes this draw's muscles: its seed, not a fresh one
     "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --seed "
                           "2857834494527622234 --out {out}",
+    # and the two fresh draws it names beside it
+    "stability_map_draw40.json": "benchmarks/bench_stability_map.py --muscles 40 --seed "
+                                 "2026120506 --out {out}",
+    "stability_map_draw100.json": "benchmarks/bench_stability_map.py --muscles 100 --seed "
+                                  "20263001 --out {out}",
 }
 
 
