@@ -1512,3 +1512,16 @@ def test_the_guides_fresh_stability_draws_are_their_measured_files(measured):
                 f"sliding braid ({words[len(others)]} more near the lock, "
                 f"{others['eps_per_lock'].min():.2f}-{others['eps_per_lock'].max():.2f} of it), "
                 f"{n} of {n} for the closed forms") in text
+
+
+@pytest.mark.parametrize("page", ["guide/force-models.md", "guide/report.md"])
+def test_the_guides_medium_mesh_bound_examples_are_the_shipped_table(page):
+    """force-models.md and report.md quote the medium mesh's ``b`` for two walls by hand: held
+    to :func:`mkm.mesh_errors.mesh_model` (the shipped table), to the digits they print."""
+    from mkm.mesh_errors import mesh_model
+
+    medium = mesh_model()["medium"]
+    text = " ".join((DOCS / page).read_text(encoding="utf-8").split())
+    (_, paper), (_, slender) = (medium.coefficients(282.0, 2.5), medium.coefficients(800.0, 0.6))
+    assert (f"the medium mesh's `b` is {100 * float(paper):.2f} % for the paper's muscles, "
+            f"{100 * float(slender):.2f} % for a 0.6 mm wall 800 mm long") in text
