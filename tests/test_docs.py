@@ -684,6 +684,7 @@ def test_the_guides_default_surrogate_std_rows_are_their_measured_files(measured
     assert "pooled by hand" in " ".join(text[text.index("| **fresh, pooled** |"):].split())[:600]
 
 
+@pytest.mark.slow  # trains the default surrogate (seconds, its shipped kernels and refits)
 @pytest.mark.parametrize(("label", "dataset"), [
     ("held-out set (fitted on)", "surrogate/data/mkm_std_holdout.csv"),
     ("calibration set (shape fitted on)", "surrogate/data/mkm_std_calibration.csv"),
@@ -1525,3 +1526,28 @@ def test_the_guides_medium_mesh_bound_examples_are_the_shipped_table(page):
     (_, paper), (_, slender) = (medium.coefficients(282.0, 2.5), medium.coefficients(800.0, 0.6))
     assert (f"the medium mesh's `b` is {100 * float(paper):.2f} % for the paper's muscles, "
             f"{100 * float(slender):.2f} % for a 0.6 mm wall 800 mm long") in text
+
+
+@pytest.mark.slow  # trains the practical range's surrogate (seconds, its shipped kernels)
+def test_the_guides_range_surrogate_rescale_is_the_shipped_models():
+    """surrogates.md types the range surrogate's std rescale by hand (its ``k``, ``p``, ``q``,
+    what they make of the std at 15 and 40 deg, and the coverage it reaches on the held-out
+    set it is fitted on): held to the shipped model's metadata and to that set."""
+    from mkm.surrogate import kinds
+    from mkm.surrogate.train import cached_model
+    from mkm.surrogate.training_data import load_training_data
+    from mkm.surrogate.validation import std_coverage
+
+    model = cached_model(kinds.RANGE)
+    rescale = model.metadata["std_rescale"]
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    k, p, q = rescale["factor"], rescale["shortening_power"], rescale["angle_power"]
+    assert (f"fitted on the {rescale['n_muscles']} held-out muscles: k {k:.2f}, p {p:.2f}, q "
+            f"{q:.1f} (the std {(15 / 30) ** q:.1f} times wider at 15 deg than at 30, "
+            f"{(40 / 30) ** q:.2f} times at 40)") in text
+    data = load_training_data(ROOT / rescale["path"])
+    within = std_coverage(model.estimator, data.X, data.y)
+    cover = " / ".join(f"{100 * within[f'within_{n}std']:.1f}" for n in (1, 2, 3))
+    assert (f"| `{Path(rescale['path']).name}` | {data.n_muscles} |" in text
+            and f"`rescale_std`: 1/2/3 std hold {cover} % there |" in text)
+    assert cover == " / ".join(f"{100 * rescale[f'within_{n}std']:.1f}" for n in (1, 2, 3))
