@@ -62,9 +62,10 @@ DRIVER_MISSING = ("NI-DAQmx driver not found: install NI-DAQmx (Windows; NI does
                   "USB-6001 on Linux) or run on the simulated bench with --backend sim")
 TERMINAL_CONFIG_NAMES = {"differential": "DIFF", "rse": "RSE"}  # what the USB-6001 has
 VENT_V = 0.0  # an ITV-class regulator exhausts at 0 V command
-# A device lost mid-run is reset and given fresh tasks for at most this long [s], every
-# REVIVE_EVERY_S, before the vent is declared impossible: the operator must hear within seconds.
-REVIVE_WITHIN_S, REVIVE_EVERY_S = 3.0, 0.5
+#: A device lost mid-run is reset and given fresh tasks for at most this long [s], every
+#: REVIVE_EVERY_S, before the vent is declared impossible: the operator must hear within seconds.
+REVIVE_WITHIN_S = 3.0
+REVIVE_EVERY_S = 0.5
 
 
 @contextmanager

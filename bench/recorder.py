@@ -49,22 +49,24 @@ from mkm.core.records import provenance
 # write. Each rewrite tries again for this long before it says so (the tare's on the recorder's
 # thread: the loop does not wait for it).
 LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
-# This much sample time held for the disk (counted in samples, so a gap of lost samples is not
-# taken for a stuck disk): it is not taking the record, the run stops. A network share that
-# stalls for seconds is ridden through; what is held meanwhile is in memory, never more than
-# HELD_ROWS_MAX rows (a row is 296 bytes in memory, measured: 90 MB, 30 s at the USB-6001's
-# fastest 10 kHz on two inputs; 300 rows, 90 kB, at the usual 10 Hz).
+#: This much sample time [s] held for the disk (counted in samples, so a gap of lost samples is
+#: not taken for a stuck disk), with no write done for :data:`DISK_QUIET_S`: it is not taking the
+#: record, the run stops. A network share that stalls for seconds is ridden through; what is held
+#: meanwhile is in memory, never more than HELD_ROWS_MAX rows (a row is 296 bytes in memory,
+#: measured: 90 MB, 30 s at the USB-6001's fastest 10 kHz on two inputs; 300 rows, 90 kB, at the
+#: usual 10 Hz).
 DISK_STUCK_S = 30.0
 HELD_ROWS_MAX = 300_000
-# ... and with no write done for this long (wall time): a disk that writes, behind the loop in a
-# burst (the virtual clock runs hundreds of times faster than real time), is not stuck
+#: Samples held past :data:`DISK_STUCK_S` stop the run only with no write done for this long [s]
+#: (wall time): a disk that writes, behind the loop in a burst (the virtual clock runs hundreds
+#: of times faster than real time), is not stuck.
 DISK_QUIET_S = 1.0
-# The rows written are synced to the disk (fsync) by the recorder's thread this long (wall
-# time) after the last sync, at a write or without one (an acquisition that stalls): a crash
-# of the operating system or a power cut loses about this much of the record, not everything
-# since the start (the kernel writes its cache back when it likes: up to 30 s on Linux). At
-# most once this often: a sync costs milliseconds, and the virtual clock writes hundreds of
-# samples a second.
+#: The rows written are synced to the disk (fsync) by the recorder's thread this long [s] (wall
+#: time) after the last sync, at a write or without one (an acquisition that stalls): a crash
+#: of the operating system or a power cut loses about this much of the record, not everything
+#: since the start (the kernel writes its cache back when it likes: up to 30 s on Linux). At
+#: most once this often: a sync costs milliseconds, and the virtual clock writes hundreds of
+#: samples a second.
 SYNC_EVERY_S = 1.0
 
 

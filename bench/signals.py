@@ -43,8 +43,8 @@ CTRL_LOGOFF_EVENT, CTRL_SHUTDOWN_EVENT = 5, 6
 CONSOLE_EVENTS = {CTRL_CLOSE_EVENT: "console closed", CTRL_LOGOFF_EVENT: "log-off",
                   CTRL_SHUTDOWN_EVENT: "system shutdown"}
 CONSOLE_HOLD_S = 4.5  # Windows kills the process 5 s after CTRL_CLOSE_EVENT
-# Of the hold, what the last steps keep back: closing the device and writing run.json with its
-# files synced take milliseconds on the bench PC; half a second leaves room for a slow disk.
+#: Of the hold, what the last steps keep back [s]: closing the device and writing run.json with
+#: its files synced take milliseconds on the bench PC; half a second leaves room for a slow disk.
 CONSOLE_RECORD_S = 0.5
 WINDOWS = sys.platform == "win32"
 #: Set by the ``mkm`` console entry point, which exits once the command returns: a run's stop

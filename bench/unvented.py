@@ -108,10 +108,11 @@ class Marker:
         return data
 
 
-# The end of a command waits this long for the bench state folder, then goes on without it (the
-# vent and the record are done by then); its start, with nothing pressurised yet, waits
-# STATE_START_S, then refuses: a state folder that takes longer hangs (a network share).
+#: The end of a command waits this long [s] for the bench state folder, then goes on without it
+#: (the vent and the record are done by then).
 STATE_WAIT_S = 2.0
+#: A command's start, with nothing pressurised yet, waits this long [s] for the bench state
+#: folder, then refuses: a state folder that takes longer hangs (a network share).
 STATE_START_S = 10.0
 
 

@@ -61,8 +61,8 @@ RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the rea
 OVERPRESSURE_MARGIN_FRACTION = 0.02
 OVERPRESSURE_HOLD_S = 1.0  # a step's transient settles within the regulator's time constant
 OVERPRESSURE_HARD_FRACTION = 0.10
-# The bench marker takes milliseconds on a local disk; a state folder slower than this hangs
-# (a network share), and the loop goes on without it rather than leave the interlocks unwatched.
+#: The bench marker takes milliseconds on a local disk; a state folder slower than this [s] hangs
+#: (a network share), and the loop goes on without it rather than leave the interlocks unwatched.
 MARKER_WAIT_S = 0.5
 #: a load cell whose input holds one ADC code this long [s] of sample time, where its tare
 #: strayed more than a step, is stuck or disconnected: no live cell's noise stays on one code

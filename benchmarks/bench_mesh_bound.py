@@ -11,7 +11,9 @@ output); per mesh and muscle whose clamped end the mesh resolves, the measured t
 over ``P*`` and relative error over the shipped table's ``a`` and ``b`` at the muscle's ``L0`` and
 ``t0`` (:meth:`mkm.mesh_errors.MeshBound.coefficients`). A ratio above 1 is a broken promise.
 Columns ``*_global``: the same against the largest over every shipped muscle, the bound a mesh
-would state for every muscle alike.
+would state for every muscle alike; ``end_lengths_largest``: the coarsest end a mesh resolved
+(in bending lengths, :func:`mkm.mesh_errors.end_resolution`). ``unresolved`` (per mesh): the
+muscles whose clamped end it does not resolve, for which no bound is claimed, with their errors.
 """
 
 from __future__ import annotations
@@ -44,8 +46,16 @@ def score(table) -> list[dict]:
     out = []
     scored = table[~table["fe_failed"].astype(bool)]
     for mesh, rows in scored.groupby("mesh"):
-        rows = rows[end_resolution(rows["D0_mm"], rows["t0_mm"], rows["L0_mm"], str(mesh))
-                    <= MAX_END_RESOLUTION]
+        lengths = end_resolution(rows["D0_mm"], rows["t0_mm"], rows["L0_mm"], str(mesh))
+        # the muscles whose clamped end the mesh does not resolve: no bound is claimed for
+        # them, and what they would have set it to is why
+        beyond = [{"D0_mm": r.D0_mm, "t0_mm": r.t0_mm, "L0_mm": r.L0_mm,
+                   "end_lengths": float(n), "relative_error_pct": 100 * r.relative_error,
+                   "largest_err_pct": r.largest_err_pct}
+                  for r, n in zip(rows.itertuples(), lengths, strict=True)
+                  if n > MAX_END_RESOLUTION]
+        rows = rows[lengths <= MAX_END_RESOLUTION]
+        lengths = lengths[lengths <= MAX_END_RESOLUTION]
         bound = model[str(mesh)]
         a, b = bound.coefficients(rows["L0_mm"].to_numpy(), rows["t0_mm"].to_numpy())
         ratio_a = rows["shift_per_threshold"].to_numpy() / a
@@ -63,7 +73,8 @@ def score(table) -> list[dict]:
             "largest_ratio_a_global": float(rows["shift_per_threshold"].max() / A),
             "largest_ratio_b_global": float(rows["relative_error"].max() / B),
             "median_a_pct": float(100 * np.median(a)), "median_b_pct": float(100 * np.median(b)),
-            "global_a_pct": 100 * A, "global_b_pct": 100 * B})
+            "global_a_pct": 100 * A, "global_b_pct": 100 * B,
+            "end_lengths_largest": float(np.max(lengths)), "unresolved": beyond})
     return out
 
 
@@ -80,6 +91,7 @@ def main(argv=None) -> int:
         table, info = measure(args.muscles, args.seed, Path(folder) / "mesh_errors.csv",
                               workers=args.workers, progress=False)
     rows = score(table)
+    unresolved = {r["mesh"]: r.pop("unresolved") for r in rows}  # a list: not a table's cell
     for r in rows:
         print(f"{r['mesh']}: {r['muscles']} fresh muscles, over the stated a {r['over_a']}, b "
               f"{r['over_b']}; largest ratio a {r['largest_ratio_a']:.2f}, b "
@@ -95,7 +107,7 @@ def main(argv=None) -> int:
               "safety": SAFETY, "slenderness_reach": SLENDERNESS_REACH,
               "min_region_muscles": MIN_REGION_MUSCLES,
               "seconds": {"FE sweeps on three meshes, scored": time.perf_counter() - start},
-              "rows": rows}
+              "rows": rows, "unresolved": unresolved}
     if args.out:
         Path(args.out).write_text(json.dumps(record, indent=2, default=jsonable) + "\n",
                                   encoding="utf-8")

@@ -333,11 +333,22 @@ BENCHMARKS = {
                                       "theta0,rubber,friction,creep,offset,zero --out {out}",
     "mesh_bound.json": "benchmarks/bench_mesh_bound.py --muscles 240 --seed 20264102 "
                        "--out {out}",
+    # the guide's further checks of the bound, on the draws it names
+    "mesh_bound_draw80.json": "benchmarks/bench_mesh_bound.py --muscles 80 --seed 20264101 "
+                              "--out {out}",
+    "mesh_bound_draw120.json": "benchmarks/bench_mesh_bound.py --muscles 120 --seed 20261210 "
+                               "--out {out}",
     "failsafe.json": "benchmarks/bench_failsafe.py --json {out}",
     "console_close.json": "benchmarks/bench_console_close.py --json {out}",
+    "recorder_lag.json": "benchmarks/bench_recorder_lag.py --repeats 20 --out {out}",
     # the guide quotes this draw's muscles: its seed, not a fresh one
     "stability_map.json": "benchmarks/bench_stability_map.py --muscles 200 --seed "
                           "2857834494527622234 --out {out}",
+    # and the two fresh draws it names beside it
+    "stability_map_draw40.json": "benchmarks/bench_stability_map.py --muscles 40 --seed "
+                                 "2026120506 --out {out}",
+    "stability_map_draw100.json": "benchmarks/bench_stability_map.py --muscles 100 --seed "
+                                  "20263001 --out {out}",
 }
 
 
