@@ -1590,3 +1590,33 @@ def test_the_guides_unshipped_range_model_says_how_and_when_it_was_measured():
     assert ("Its columns below are a scratch fit's, scored on the same fresh draws on 3 December "
             "2026, which no file records; the shipped model's are the files' above:") in text
     assert "| 1274 muscles, 3 restarts |" in text
+
+
+def test_the_published_pages_accuracy_figures_are_its_measured_file():
+    """published.md's "With the instruments' accuracy" quotes identify and report on the
+    DMSP-10-250 imported with an assumed accuracy: held to ``published.json``'s
+    ``with_accuracy`` (the last stage of ``bench_published.py``)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "published.json").read_text(encoding="utf-8"))
+    data = record["with_accuracy"]
+    text = (DOCS / "published.md").read_text(encoding="utf-8")
+    said = " ".join(text[text.index("## With the instruments' accuracy"):].split())
+    two, rest = data["identified"], data["with the rest length"]
+    assert f"--accuracy {data['accuracy']}" in said
+    theta, rubber = two["theta0_deg"], two["rubber_scale"]
+    assert (f"chi2/nu {two['chi2_per_nu']:.2f} over {two['steps']} steps; theta0 "
+            f"{theta[0]:.2f} deg [{theta[1]:.2f}, {theta[2]:.2f}], rubber {rubber[0]:.2f} x "
+            f"Silastic S [{rubber[1]:.2f}, {rubber[2]:.2f}]") in said
+    assert not two["misfit_branches"]
+    assert len(rest["misfit_branches"]) == len(rest["eps"])  # "named on every run"
+    assert rest["misfit_line"].count("structured") == 2
+    assert f"chi2/nu {rest['chi2_per_nu']:.0f}" in said
+    assert f"intervals widened {rest['birge_ratio']:.0f} times" in said
+    fe = {r["eps"]: r for r in data["report"] if r["model"] == "axisym"}
+    pulled = [e for e in sorted(fe) if e > 0 and fe[e]["max_abs_err_pct"] is not None]
+    assert all(fe[e]["consistent"] for e in fe if e > 0) and not fe[0.0]["consistent"]
+    assert "(largest |Err%| " + ", ".join(f"{fe[e]['max_abs_err_pct']:.1f}" for e in pulled) \
+        + " %" in said
+    assert f"({fe[0.0]['max_abs_err_pct']:.1f} %, worst E_n {fe[0.0]['worst_E_n']:.1f})" in said
+    assert not any(r["consistent"] for r in data["report"] if r["model"] == "eq2")
