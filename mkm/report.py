@@ -50,7 +50,7 @@ from mkm.core.records import (
     staged_folder,
     write_json_atomic,
 )
-from mkm.fem.calibration import Calibration
+from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.muscle import Muscle, eps_at_rest_length
 from mkm.fem.paper import TABLE3_CSV
 from mkm.fem.tolerances import Tolerances
@@ -157,18 +157,37 @@ def default_models(calibration: Calibration | None = None) -> list[Spec]:
     kept = []
     for spec in specs:
         try:
-            if spec.name == "surrogate":  # its defaults, without loading (or training) it
-                from mkm.surrogate.model import default_parameters
-
-                default_parameters(calibration)
-            else:
+            reason = missing_angle(spec, calibration)
+            if reason is None and spec.name != "surrogate":
                 spec.build(calibration).params()
         except ValueError as exc:
-            warnings.warn(f"{spec.text} left out of the report: {exc}; or name the models "
+            reason = str(exc)
+        if reason is not None:
+            warnings.warn(f"{spec.text} left out of the report: {reason}; or name the models "
                           "with --models", stacklevel=2)
             continue
         kept.append(spec)
     return kept
+
+
+def missing_angle(spec: Spec, calibration: Calibration | None) -> str | None:
+    """Why ``calibration`` gives ``spec`` no braid angle, with the remedy in the report's
+    terms (it has no --theta0: the angle goes into the spec); None when it gives one, the spec
+    names its own or the model takes none from it."""
+    if calibration is None or "theta0_deg" in dict(spec.params):
+        return None
+    if spec.name == "surrogate":  # the FE's entry, read without loading (or training) it
+        key = "axisym"
+    else:
+        model = spec.build(calibration)
+        model = getattr(model, "static_model", model)  # friction's angle is its static rung's
+        if not isinstance(model, CalibratedTheta0) or model.theta0_deg is not None:
+            return None
+        key = model.calibration_key
+    if key in calibration.entries:
+        return None
+    return calibration.missing(
+        key, f"--models {spec.text}{',' if spec.params else ':'}theta0_deg=")
 
 
 def report_folder(out_dir, run_dirs) -> Path:
@@ -215,6 +234,10 @@ def build_report(run_dirs, models=None, out_dir=None,
         raise ValueError("no run folder given: expected at least one RUN_DIR")
     specs = (default_models(calibration) if models is None
              else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
+    for spec in specs if models is not None else ():
+        reason = missing_angle(spec, calibration)
+        if reason is not None:  # refused before any work
+            raise ValueError(f"--models {spec.text}: {reason}")
     out = check_writable(report_folder(out_dir, run_dirs), folder=True)
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
         with staged_folder(out, last="report.html", record="provenance.json",

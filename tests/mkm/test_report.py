@@ -511,6 +511,39 @@ def test_default_models_leave_out_what_an_identified_calibration_cannot_serve(tm
     assert [s.text for s in default_models(None)] == list(REPORT_MODELS)
 
 
+def test_a_model_without_an_angle_in_the_calibration_is_told_to_give_it_in_models(tmp_path):
+    """The report has no --theta0 (the note said "or pass --theta0 29.2", which the report
+    refuses): the angle of a model the calibration has no entry for goes into its spec, which
+    is said in the default models' note and refused before any work for a model named."""
+    from mkm.fem.calibration import Calibration
+    from mkm.registry import parse_spec
+    from mkm.report import default_models, missing_angle
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {
+        "theta0_deg": 29.2, "C10_MPa": 0.35, "C01_MPa": 0.31, "identified": {},
+        "command": "mkm identify r1 r2 --model thickwall --out id20"},
+        "eq2-inner": {"theta0_deg": 27.5}, "eq2-braid": {"theta0_deg": 30.8}}))
+    calibration = Calibration.load(lab)
+    with pytest.warns(UserWarning) as notes:
+        default_models(calibration)
+    assert [str(n.message).split(" left out")[0] for n in notes] == ["axisym", "surrogate"]
+    assert all("--theta0" not in str(n.message) for n in notes)
+    assert "or pass --models axisym:theta0_deg=29.2 (the thickwall fit's angle" \
+        in str(notes[0].message)
+    assert "or pass --models surrogate:theta0_deg=29.2 " in str(notes[1].message)
+    with pytest.raises(ValueError, match=r"^--models axisym:mesh=coarse: no calibrated theta0 "
+                       r".*or pass --models axisym:mesh=coarse,theta0_deg=29\.2 \(the"):
+        build_report([tmp_path / "not-read"], ["eq2", "axisym:mesh=coarse"],
+                     out_dir=tmp_path / "report", calibration=calibration)
+    assert not (tmp_path / "report").exists()
+    for text in ("axisym:theta0_deg=29.2", "surrogate:theta0_deg=29.2",
+                 "friction:theta0_deg=29.2", "thickwall", "eq2", "auto"):
+        assert missing_angle(parse_spec(text), calibration) is None, text
+    assert missing_angle(parse_spec("friction"), calibration).startswith(
+        "no calibrated theta0 for model 'axisym'")
+
+
 def test_a_calibration_identified_on_another_muscle_is_said(tmp_path):
     """--calibration of a muscle identified elsewhere (a 10 mm Festo muscle's angle and rubber
     on the 30 mm prototype: every calibrated model 67-93 % off, without a word): the runs of
