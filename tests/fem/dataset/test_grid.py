@@ -79,3 +79,21 @@ def test_bad_grid_file_on_the_command_line(tmp_path, capsys):
                   "pressure_bar, " \
                   "D0_mm, t0_mm, eps, L0_mm, theta0_deg\n"
     assert not (tmp_path / "d.csv").exists()
+
+
+def test_a_calibration_without_the_models_angle_names_the_grid_not_theta0(tmp_path):
+    # fem dataset has no --theta0 (the error said "or pass --theta0 29.2"): the angle of a
+    # model the calibration has no entry for is the grid's theta0_deg
+    import json
+
+    from mkm.fem.calibration import Calibration
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {"theta0_deg": 29.2, "identified": {},
+                                             "command": "mkm identify r1 r2 --out id20"}}))
+    with pytest.raises(ValueError, match=r"^no calibrated theta0 for model 'axisym' in .*"
+                       r"or pass --grid FILE with theta0_deg = 29\.2 \(the thickwall fit's "):
+        make_jobs(parse_grid(GRID, "g"), "axisym", calibration=Calibration.load(lab))
+    jobs = make_jobs(parse_grid(GRID + "theta0_deg = 29.2\n", "g"), "axisym",
+                     calibration=Calibration.load(lab))
+    assert {job.theta0_deg for job in jobs} == {29.2}
