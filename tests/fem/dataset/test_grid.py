@@ -1,5 +1,7 @@
 """Dataset grids (fem/dataset/grid.py): Table 1 of the paper, TOML parsing and its errors."""
 
+import re
+
 import pytest
 
 from mkm.cli import main
@@ -97,3 +99,17 @@ def test_a_calibration_without_the_models_angle_names_the_grid_not_theta0(tmp_pa
     jobs = make_jobs(parse_grid(GRID + "theta0_deg = 29.2\n", "g"), "axisym",
                      calibration=Calibration.load(lab))
     assert {job.theta0_deg for job in jobs} == {29.2}
+
+
+def test_a_grid_saved_by_a_windows_editor_is_read_or_named(tmp_path):
+    # a BOM (Notepad's "UTF-8 with BOM") was "not valid TOML ... line 1, column 1"; a file in
+    # the ANSI code page was the decoder's words alone, neither grid nor what was expected
+    bom = tmp_path / "bom.toml"
+    bom.write_bytes(b"\xef\xbb\xbf" + GRID.encode())
+    assert load_grid(bom).D0_mm == (30.0, 40.0)
+    ansi = tmp_path / "ansi.toml"
+    ansi.write_bytes(GRID.encode() + b"# theta0 30\xb0\n")
+    with pytest.raises(ValueError, match=rf"^grid {re.escape(str(ansi))}: cannot be read as "
+                       r"UTF-8 text \(.*byte 0xb0.*\): expected 'paper' or the path of a grid "
+                       "TOML file"):
+        load_grid(ansi)
