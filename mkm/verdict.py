@@ -96,7 +96,7 @@ def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET,
         return f"no E_n: {no_budget}" if judged == 0 else "no E_n for this model"
     others = f"{agree} of {judged} models {'is' if agree == 1 else 'are'}"
     if row["consistent"]:
-        return f"consistent with the measurement (|E_n| ≤ 1 at every step; {others})"
+        return f"consistent with the measurement (|E_n| <= 1 at every step; {others})"
     # friction and creep explain a miss only where the run can show them
     lacking = "; the models have no braid friction or creep" if dynamics else ""
     return (f"not consistent with the measurement (E_n = {row['worst_E_n']:+.1f} at step "

@@ -55,8 +55,11 @@ def test_the_sentence_names_model_distance_band_speed_and_consistency():
     text = verdict("Run 1", ROWS, NAMES, 0.02)
     assert text == ("Run 1: use Thick-wall (Klute-Hannaford), the cheapest model within 2 % of "
                     "the measurement: 1.60 % off at worst (band ± 0.5 %), 58.4 µs per force, "
-                    "consistent with the measurement (|E_n| ≤ 1 at every step; 1 of 4 models "
+                    "consistent with the measurement (|E_n| <= 1 at every step; 1 of 4 models "
                     "is).")
+    # printed on a Windows console too: its code page (cp1252) has no "≤", which came out
+    # as "\u2264"
+    text.encode("cp1252")
     none = verdict("Run 1", ROWS, NAMES, 0.01)
     assert "no model is within 1 % of the measurement; the closest is Thick-wall" in none
     bad = verdict("Run 1", ROWS, NAMES, 0.10)  # Equation 2: the cheapest within 10 %
