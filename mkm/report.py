@@ -360,7 +360,7 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
                 if answer[0].valid.all():
                     built, model, (pred, cached) = wider, candidate, answer
                     r.in_place[spec.text] = wider.text
-        pred, band = _with_band(pred, model, built, r, cache_dir)
+        pred, band = _with_band(_held(pred, model, built, r), model, built, r, cache_dir)
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
@@ -371,6 +371,36 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
     return r
+
+
+def _held(pred, model, spec: Spec, r: _Run):
+    """``pred`` of a rung with friction and creep (``friction``, whose spec leaves its branch
+    and hold free) as the run held it: each settled step's mean over its hold of the force along
+    the run's pressure trace, friction and creep carried from step to step, as identify
+    predicts its steps (:meth:`mkm.fem.friction.FrictionCreep.history`); a step off that trace
+    (not settled, an imported table) on the branch it was measured on. Its rising branch
+    scored at every step missed a falling one by twice the friction."""
+    from mkm.identify.runs import load_run_data
+
+    given = dict(spec.params)
+    if not hasattr(model, "history") or {"direction", "hold_s"} & set(given):
+        return pred
+    steps = r.run.steps
+    down = (steps["direction"] == "down").to_numpy()
+    force = np.where(down, pred.extras["force_falling_N"], pred.extras["force_rising_N"])
+    try:
+        data = load_run_data(r.run.path)
+        muscle = r.predicted
+        trace = model.history(data.time_s, data.pressure_bar, muscle.D0_mm, muscle.t0_mm,
+                              muscle.eps) if data.timed else None
+    except ValueError:  # no trace to follow (no settled hold, no valid static force)
+        trace = None
+    if trace is not None:
+        held = dict(zip(data.steps["step"].astype(int), data.step_means(trace), strict=True))
+        force = np.array([held.get(int(step), f) for step, f in zip(steps["step"], force,
+                                                                     strict=True)])
+    return dataclasses.replace(pred, force_N=np.where(np.isfinite(pred.force_N), force,
+                                                      pred.force_N))
 
 
 def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):
