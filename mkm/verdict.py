@@ -137,7 +137,8 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
                      "identified model's friction and creep")
             return (f"although the calibration{name} was identified on this run with the others "
                     f"and fits them within their noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
-                    f"{lacks} (identify's steps.csv has the steps predicted with them)")
+                    f"{lacks} (add the rung that has them: --models friction,...; identify's "
+                    "steps.csv has the steps predicted with them)")
         return (f"although the calibration{name} was identified on this run with the others: "
                 "the model does not fit them all with one muscle (the identification's misfit "
                 "notes say where)")

@@ -139,8 +139,8 @@ def test_a_calibration_that_fits_its_runs_within_their_noise_is_not_called_a_mis
     assert advice == ("although the calibration (calibration.json) was identified on this run "
                       "with the others and fits them within their noise (chi2/nu 1): the braid "
                       "friction 2.6 % and creep 2.0 % identified with it, which these static "
-                      "models lack, are that distance (identify's steps.csv has the steps "
-                      "predicted with them)")
+                      "models lack, are that distance (add the rung that has them: --models "
+                      "friction,...; identify's steps.csv has the steps predicted with them)")
     # a misfit (a monitor 0.022 bar off: chi2/nu 164) is still named as one
     misfit = {**fit, "misfit": {"judged": True, "chi2_per_nu": 164.0,
                                 "misfit_branches": ["r1 loading"]}}
