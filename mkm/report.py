@@ -114,6 +114,8 @@ class _Run:
     in_place: dict = field(default_factory=dict)
     #: the identify options its advice gives (:func:`_advice_options`), once read
     advice_options: list[str] | None = None
+    #: what names its measurement (:func:`_measurement`), once read
+    measurement: frozenset[str] | None = None
 
     @property
     def name(self) -> str:
@@ -1011,8 +1013,24 @@ def _advice_arguments(r: _Run, runs: list[_Run]) -> tuple[str, list[dict], list[
     calibration's runs for a run of another muscle (identify refuses two tubes at once: this
     muscle is identified from its own runs)."""
     identified = _identified_runs(r.calibration) if _identified_on_its_muscle(r) else []
-    return (str(r.run.path), identified,
-            [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)])
+    seen, muscle_runs = _measurement(r), []
+    for other in runs:
+        if other is not r and (not _same_muscle(other.muscle, r.muscle)
+                               or _measurement(other) & seen):
+            continue  # identify refuses one measurement twice: its twin of r is left out
+        seen |= _measurement(other)
+        muscle_runs.append(str(other.run.path))
+    return str(r.run.path), identified, muscle_runs
+
+
+def _measurement(r: _Run) -> set[str]:
+    """What names the run's measurement (:func:`mkm.identify.runs.measurement_keys`), read
+    once."""
+    if r.measurement is None:
+        from mkm.identify.runs import measurement_keys, measurement_sha256
+
+        r.measurement = frozenset(measurement_keys(r.name, measurement_sha256(r.run)))
+    return set(r.measurement)
 
 
 def _advice_options(r: _Run) -> list[str]:

@@ -592,7 +592,8 @@ def test_a_run_of_another_muscle_is_advised_its_own_identification(tmp_path):
 
     def run(k, path, muscle):
         return SimpleNamespace(k=k, muscle=muscle, calibration=calibration,
-                               run=SimpleNamespace(path=Path(path)))
+                               run=SimpleNamespace(path=Path(path)),
+                               measurement=frozenset({path}))  # each its own
 
     dmsp = [run(1, "runs/dmsp-a", Muscle(20.0, 1.8, id="dmsp-20")),
             run(2, "runs/dmsp-b", Muscle(20.0, 1.8, id="dmsp-20"))]
@@ -840,3 +841,33 @@ def test_a_rung_with_friction_and_creep_is_scored_as_the_run_held_it(tmp_path):
     # a branch the spec names is the branch scored: the rising steps lie 2 x 3 % below it
     # (of the step's force: 2.5 bar's is the largest)
     assert falling.loc[falling["direction"] == "up", "err_pct"].min() < -5.0
+
+
+def test_the_identify_advice_leaves_out_a_second_copy_of_a_measurement(tmp_path):
+    """One table imported twice (two folders, one measurement) in a report: its advice named
+    both, and identify refuses that command ("hold the same measurement"). The command names
+    one of them; the imported lengths, different measurements with the same empty samples.csv,
+    are all kept."""
+    import shlex
+
+    from mkm.bench.exchange import import_table
+    from mkm.identify.runs import load_runs
+    from mkm.paths import published_table
+
+    def imported(folder):
+        runs = import_table(published_table("martens_boblan_2017_forcemaps.csv"),
+                            tmp_path / folder, {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5,
+                                                "L0_mm": None, "eps": None},
+                            select="Festo DMSP-10-250")
+        return [str(r.path) for r in runs]
+
+    first, again = imported("a"), imported("b")
+    said = []
+    build_report([first[1], again[1], first[3]], parse_models("eq2,thickwall"),
+                 out_dir=tmp_path / "r", cache_dir=None, tolerance=0.02,
+                 surrogate_section=False, notify=said.append)
+    commands = [shlex.split(line[line.index("mkm identify"):].rstrip("`).").split("`")[0])[2:]
+                for line in said if "mkm identify" in line]
+    # the 18.4 % length's verdict advises identifying the muscle from its runs here
+    assert commands == [[first[1], first[3]]]
+    load_runs(commands[0])  # identify takes it
