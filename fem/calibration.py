@@ -115,19 +115,25 @@ class Calibration:
 
     def entry(self, key: str) -> dict:
         """Entry ``key`` (for example ``"eq2-inner"``); ``ValueError`` naming the command that
-        writes it if there is none."""
+        writes it if there is none (:meth:`missing`)."""
         if key not in self.entries:
-            raise ValueError(f"no calibrated theta0 for model {key!r} in {self.path}: "
-                             + self.how_to_add(key))
+            raise ValueError(self.missing(key))
         return self.entries[key]
 
-    def how_to_add(self, key: str, angle: bool = True) -> str:
+    def missing(self, key: str, angle: str | None = "--theta0 ") -> str:
+        """Why this calibration gives no braid angle to model entry ``key``, and what adds it
+        (:meth:`how_to_add`)."""
+        return (f"no calibrated theta0 for model {key!r} in {self.path}: "
+                + self.how_to_add(key, angle))
+
+    def how_to_add(self, key: str, angle: str | None = "--theta0 ") -> str:
         """What writes entry ``key``: for a muscle ``mkm identify`` identified with another
         model, that identification with this one (fem calibrate would fit the paper's muscle
-        into the lab's file); with ``angle``, or the angle given as --theta0."""
+        into the lab's file); or the angle given as the command takes it, ``angle`` followed
+        by the value (None: the command takes none)."""
         identified = next(((k, e) for k, e in self.entries.items() if "identified" in e), None)
         if identified is None:
-            return (f"pass --theta0 or run `{calibrate_command(key, self.path)}`" if angle
+            return (f"pass {angle}DEG or run `{calibrate_command(key, self.path)}`" if angle
                     else f"run `{calibrate_command(key, self.path)}`")
         other, entry = identified
         rung = key.partition("-")[0]
@@ -137,7 +143,7 @@ class Calibration:
         again = re.sub(r"--out (\S+)", lambda m: f"--out {m[1]}-{rung}", again)
         return (f"it holds the muscle identified with {other} (theta0 {entry['theta0_deg']:g} "
                 f"deg): identify it with {rung} too (`{again}`) and give that calibration"
-                + (f", or pass --theta0 {entry['theta0_deg']:g} (the {other} fit's angle; the "
+                + (f", or pass {angle}{entry['theta0_deg']:g} (the {other} fit's angle; the "
                    "rubber then is not the identified one)" if angle else ""))
 
 

@@ -50,7 +50,7 @@ from mkm.core.records import (
     staged_folder,
     write_json_atomic,
 )
-from mkm.fem.calibration import Calibration
+from mkm.fem.calibration import CalibratedTheta0, Calibration
 from mkm.fem.muscle import Muscle, eps_at_rest_length
 from mkm.fem.paper import TABLE3_CSV
 from mkm.fem.tolerances import Tolerances
@@ -114,6 +114,8 @@ class _Run:
     in_place: dict = field(default_factory=dict)
     #: the identify options its advice gives (:func:`_advice_options`), once read
     advice_options: list[str] | None = None
+    #: what names its measurement (:func:`_measurement`), once read
+    measurement: frozenset[str] | None = None
 
     @property
     def name(self) -> str:
@@ -157,18 +159,37 @@ def default_models(calibration: Calibration | None = None) -> list[Spec]:
     kept = []
     for spec in specs:
         try:
-            if spec.name == "surrogate":  # its defaults, without loading (or training) it
-                from mkm.surrogate.model import default_parameters
-
-                default_parameters(calibration)
-            else:
+            reason = missing_angle(spec, calibration)
+            if reason is None and spec.name != "surrogate":
                 spec.build(calibration).params()
         except ValueError as exc:
-            warnings.warn(f"{spec.text} left out of the report: {exc}; or name the models "
+            reason = str(exc)
+        if reason is not None:
+            warnings.warn(f"{spec.text} left out of the report: {reason}; or name the models "
                           "with --models", stacklevel=2)
             continue
         kept.append(spec)
     return kept
+
+
+def missing_angle(spec: Spec, calibration: Calibration | None) -> str | None:
+    """Why ``calibration`` gives ``spec`` no braid angle, with the remedy in the report's
+    terms (it has no --theta0: the angle goes into the spec); None when it gives one, the spec
+    names its own or the model takes none from it."""
+    if calibration is None or "theta0_deg" in dict(spec.params):
+        return None
+    if spec.name == "surrogate":  # the FE's entry, read without loading (or training) it
+        key = "axisym"
+    else:
+        model = spec.build(calibration)
+        model = getattr(model, "static_model", model)  # friction's angle is its static rung's
+        if not isinstance(model, CalibratedTheta0) or model.theta0_deg is not None:
+            return None
+        key = model.calibration_key
+    if key in calibration.entries:
+        return None
+    return calibration.missing(
+        key, f"--models {spec.text}{',' if spec.params else ':'}theta0_deg=")
 
 
 def report_folder(out_dir, run_dirs) -> Path:
@@ -215,6 +236,10 @@ def build_report(run_dirs, models=None, out_dir=None,
         raise ValueError("no run folder given: expected at least one RUN_DIR")
     specs = (default_models(calibration) if models is None
              else [m if isinstance(m, Spec) else parse_spec(m) for m in models])
+    for spec in specs if models is not None else ():
+        reason = missing_angle(spec, calibration)
+        if reason is not None:  # refused before any work
+            raise ValueError(f"--models {spec.text}: {reason}")
     out = check_writable(report_folder(out_dir, run_dirs), folder=True)
     try:  # written beside out, moved in whole: a full disk or a Ctrl-C leaves nothing partial
         with staged_folder(out, last="report.html", record="provenance.json",
@@ -337,7 +362,7 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
                 if answer[0].valid.all():
                     built, model, (pred, cached) = wider, candidate, answer
                     r.in_place[spec.text] = wider.text
-        pred, band = _with_band(pred, model, built, r, cache_dir)
+        pred, band = _with_band(_held(pred, model, built, r), model, built, r, cache_dir)
         rows = score_run(steps, pred, spec.text)
         frames.append(rows)
         r.summary.append(summarise_run(rows, pred.seconds, cached))
@@ -348,6 +373,36 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         bar.update(1)
     r.scored = pd.concat(frames, ignore_index=True)
     return r
+
+
+def _held(pred, model, spec: Spec, r: _Run):
+    """``pred`` of a rung with friction and creep (``friction``, whose spec leaves its branch
+    and hold free) as the run held it: each settled step's mean over its hold of the force along
+    the run's pressure trace, friction and creep carried from step to step, as identify
+    predicts its steps (:meth:`mkm.fem.friction.FrictionCreep.history`); a step off that trace
+    (not settled, an imported table) on the branch it was measured on. Its rising branch
+    scored at every step missed a falling one by twice the friction."""
+    from mkm.identify.runs import load_run_data
+
+    given = dict(spec.params)
+    if not hasattr(model, "history") or {"direction", "hold_s"} & set(given):
+        return pred
+    steps = r.run.steps
+    down = (steps["direction"] == "down").to_numpy()
+    force = np.where(down, pred.extras["force_falling_N"], pred.extras["force_rising_N"])
+    try:
+        data = load_run_data(r.run.path)
+        muscle = r.predicted
+        trace = model.history(data.time_s, data.pressure_bar, muscle.D0_mm, muscle.t0_mm,
+                              muscle.eps) if data.timed else None
+    except ValueError:  # no trace to follow (no settled hold, no valid static force)
+        trace = None
+    if trace is not None:
+        held = dict(zip(data.steps["step"].astype(int), data.step_means(trace), strict=True))
+        force = np.array([held.get(int(step), f) for step, f in zip(steps["step"], force,
+                                                                     strict=True)])
+    return dataclasses.replace(pred, force_N=np.where(np.isfinite(pred.force_N), force,
+                                                      pred.force_N))
 
 
 def _model(models: dict, spec: Spec, built_for: tuple, r: _Run, bar):
@@ -958,8 +1013,24 @@ def _advice_arguments(r: _Run, runs: list[_Run]) -> tuple[str, list[dict], list[
     calibration's runs for a run of another muscle (identify refuses two tubes at once: this
     muscle is identified from its own runs)."""
     identified = _identified_runs(r.calibration) if _identified_on_its_muscle(r) else []
-    return (str(r.run.path), identified,
-            [str(o.run.path) for o in runs if _same_muscle(o.muscle, r.muscle)])
+    seen, muscle_runs = _measurement(r), []
+    for other in runs:
+        if other is not r and (not _same_muscle(other.muscle, r.muscle)
+                               or _measurement(other) & seen):
+            continue  # identify refuses one measurement twice: its twin of r is left out
+        seen |= _measurement(other)
+        muscle_runs.append(str(other.run.path))
+    return str(r.run.path), identified, muscle_runs
+
+
+def _measurement(r: _Run) -> set[str]:
+    """What names the run's measurement (:func:`mkm.identify.runs.measurement_keys`), read
+    once."""
+    if r.measurement is None:
+        from mkm.identify.runs import measurement_keys, measurement_sha256
+
+        r.measurement = frozenset(measurement_keys(r.name, measurement_sha256(r.run)))
+    return set(r.measurement)
 
 
 def _advice_options(r: _Run) -> list[str]:

@@ -96,7 +96,7 @@ def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET,
         return f"no E_n: {no_budget}" if judged == 0 else "no E_n for this model"
     others = f"{agree} of {judged} models {'is' if agree == 1 else 'are'}"
     if row["consistent"]:
-        return f"consistent with the measurement (|E_n| ≤ 1 at every step; {others})"
+        return f"consistent with the measurement (|E_n| <= 1 at every step; {others})"
     # friction and creep explain a miss only where the run can show them
     lacking = "; the models have no braid friction or creep" if dynamics else ""
     return (f"not consistent with the measurement (E_n = {row['worst_E_n']:+.1f} at step "
@@ -137,7 +137,8 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
                      "identified model's friction and creep")
             return (f"although the calibration{name} was identified on this run with the others "
                     f"and fits them within their noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
-                    f"{lacks} (identify's steps.csv has the steps predicted with them)")
+                    f"{lacks} (add the rung that has them: --models friction,...; identify's "
+                    "steps.csv has the steps predicted with them)")
         return (f"although the calibration{name} was identified on this run with the others: "
                 "the model does not fit them all with one muscle (the identification's misfit "
                 "notes say where)")

@@ -71,14 +71,22 @@ class ErrorMargin:
     measured_on: str
 
 
-def default_parameters(calibration: Calibration | None = None) -> dict[str, float]:
+def default_parameters(calibration: Calibration | None = None,
+                       theta0_deg: float | None = None) -> dict[str, float]:
     """Muscle parameters used when the caller gives none: the paper's length, the calibrated
     braid angle of the FE model in ``calibration`` (None: the shipped ``fem/calibration.json``)
-    and its rubber (an identified muscle's, else Silastic S)."""
+    and its rubber (an identified muscle's, else Silastic S). With ``theta0_deg`` given, a
+    calibration without the FE's entry gives the nominal rubber, as for the physics models."""
     from mkm.fem.calibration import calibrated
 
-    entry = calibrated("axisym", calibration)
-    return {"L0_mm": float(L0_MM), "theta0_deg": float(entry["theta0_deg"]),
+    try:
+        entry = calibrated("axisym", calibration)
+    except ValueError:
+        if theta0_deg is None:
+            raise
+        entry = {}
+    return {"L0_mm": float(L0_MM),
+            "theta0_deg": float(entry["theta0_deg"] if theta0_deg is None else theta0_deg),
             "C10_MPa": float(entry.get("C10_MPa", SILASTIC_S.C10_MPa)),
             "C01_MPa": float(entry.get("C01_MPa", SILASTIC_S.C01_MPa))}
 
@@ -167,7 +175,7 @@ class SurrogateForceModel(ForceModel):
         given = {k: v for k, v in self._given.items() if v is not None}
         missing = [k for k in PARAMETERS if k not in given]
         if missing:
-            defaults = default_parameters(self.calibration)
+            defaults = default_parameters(self.calibration, given.get("theta0_deg"))
             given.update({k: defaults[k] for k in missing})
         return self._resolve(given)
 

@@ -71,8 +71,13 @@ def make_jobs(grid: Grid, model: str, mesh: str | None = None,
     jobs = []
     for D0, t0, e, L0, theta0 in itertools.product(grid.D0_mm, grid.t0_mm, grid.eps,
                                                    grid.L0_mm, grid.theta0_deg):
-        params = make_model(model, calibration, theta0_deg=theta0, L0_mm=L0,
-                            mesh=mesh).params()
+        built = make_model(model, calibration, theta0_deg=theta0, L0_mm=L0, mesh=mesh)
+        if theta0 is None and calibration is not None \
+                and built.calibration_key not in calibration.entries:
+            # a dataset's angle is the grid's: there is no --theta0
+            raise ValueError(calibration.missing(built.calibration_key,
+                                                 "--grid FILE with theta0_deg = "))
+        params = built.params()
         jobs.append(Job(model=model, mesh=mesh_label(params.get("mesh", mesh)), D0_mm=D0,
                         t0_mm=t0, eps=e, L0_mm=params.get("L0_mm", L0),
                         theta0_deg=params.get("theta0_deg", theta0),

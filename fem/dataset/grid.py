@@ -101,8 +101,11 @@ def load_grid(spec: str | os.PathLike) -> Grid:
     """``"paper"`` (Table 1 of the paper, ``fem/dataset/grids/paper.toml``) or a grid TOML path."""
     path = TABLE1_GRID if spec == "paper" else Path(spec)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # a BOM: saved by a Windows editor
     except OSError as exc:
         raise ValueError(f"grid {spec}: cannot read {path}: {exc.strerror}: expected 'paper' "
+                         "or the path of a grid TOML file") from None
+    except UnicodeDecodeError as exc:  # saved in a Windows code page
+        raise ValueError(f"grid {spec}: cannot be read as UTF-8 text ({exc}): expected 'paper' "
                          "or the path of a grid TOML file") from None
     return parse_grid(text, str(spec))

@@ -214,7 +214,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         # the search's defaults and the verification read the FE model's entry: refused before
         raise ValueError(f"--calibration {calibration.path} has no entry of the FE model "
                          "(axisym), whose angle and rubber mkm design searches and verifies "
-                         f"with: {calibration.how_to_add('axisym', angle=False)}")
+                         f"with: {calibration.how_to_add('axisym', angle=None)}")
     found = search(requirements, merged, objective, surrogate, tolerances, probability,
                    calibration)
     chosen = pick(found.feasible, top, found.constraints)

@@ -173,6 +173,37 @@ def step_slopes(steps: pd.DataFrame) -> np.ndarray:
 REPROCESSED_FROM = "reprocessed from samples.csv"
 
 
+def _traced(run) -> pd.DataFrame:
+    """The run's samples with a finite force and pressure."""
+    samples = run.samples
+    return samples[np.isfinite(samples["force_N"]) & np.isfinite(samples["pressure_bar"])]
+
+
+def _from_table(run) -> bool:
+    """An imported step table without samples: identified from its steps alone."""
+    return str(run.status) == "imported" and _traced(run).empty
+
+
+def measurement_sha256(run) -> dict[str, str]:
+    """The SHA-256 of the measurement a run folder (:func:`mkm.bench.storage.load_run`) holds:
+    its steps.csv, its samples.csv (none for an imported table: its empty samples.csv is
+    every table's), and the raw samples a reprocessed run came from."""
+    path = Path(run.path)
+    names = ("steps.csv",) if _from_table(run) else ("steps.csv", "samples.csv")
+    sha = {name: file_sha256(path / name) for name in names if (path / name).is_file()}
+    if source := (run.meta.reprocessed_from or {}).get("samples_sha256"):
+        sha[REPROCESSED_FROM] = source  # its raw samples are those of the run it came from
+    return sha
+
+
+def measurement_keys(name: str, sha256: dict[str, str]) -> set[str]:
+    """What names the measurement of run ``name`` (its :func:`measurement_sha256`): two runs
+    that share a key hold the same one (one table imported twice, a copied run folder, a run
+    and its reprocessing)."""
+    return {sha256.get("steps.csv", name)} | {
+        sha256[k] for k in ("samples.csv", REPROCESSED_FROM) if k in sha256}
+
+
 def load_run_data(path) -> RunData:
     """A run folder for identification; ``ValueError`` names a run that cannot serve.
 
@@ -197,10 +228,9 @@ def load_run_data(path) -> RunData:
     if settled.empty:
         raise ValueError(f"run {path.name} has no settled step: expected at least one step "
                          "with settled = true in steps.csv")
-    samples = run.samples
-    samples = samples[np.isfinite(samples["force_N"]) & np.isfinite(samples["pressure_bar"])]
+    samples = _traced(run)
     imported = run.meta.imported_from or {}
-    if samples.empty and str(run.status) == "imported":
+    if _from_table(run):
         return _from_steps(path, run, settled)
     if samples.empty:
         raise ValueError(f"run {path.name} has no finite sample in samples.csv: expected the "
@@ -231,10 +261,7 @@ def load_run_data(path) -> RunData:
     muscle = _muscle(run)
     tare = samples.loc[samples["phase"] == "tare", "force_N"].to_numpy(dtype=float)
     tare_se = float(np.std(tare, ddof=1) / np.sqrt(tare.size)) if tare.size > 1 else 0.0
-    sha = {name: file_sha256(path / name) for name in ("steps.csv", "samples.csv")
-           if (path / name).is_file()}
-    if source := (run.meta.reprocessed_from or {}).get("samples_sha256"):
-        sha[REPROCESSED_FROM] = source  # its raw samples are those of the run it came from
+    sha = measurement_sha256(run)
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
@@ -391,7 +418,7 @@ def _from_steps(path: Path, run, settled: pd.DataFrame) -> RunData:
                    force_N=settled["force_N_mean"].to_numpy(dtype=float),
                    hold=np.arange(len(settled)),
                    steps=_columns(steps),
-                   sha256={"steps.csv": file_sha256(path / "steps.csv")}, timed=False,
+                   sha256=measurement_sha256(run), timed=False,
                    **_instrument(run))
 
 
@@ -416,8 +443,7 @@ def load_runs(paths) -> list[RunData]:
         # the same table imported twice (two folders, one measurement), a copied run folder, or
         # a run and its reprocessing (the same raw samples): counted twice, it would halve the
         # intervals and predict each run from its twin
-        keys = {run.sha256.get("steps.csv", run.name)} | {
-            run.sha256[k] for k in ("samples.csv", REPROCESSED_FROM) if k in run.sha256}
+        keys = measurement_keys(run.name, run.sha256)
         twin = next((seen[k] for k in keys if k in seen), None)
         if twin is not None:
             raise ValueError(f"runs {twin.name} and {run.name} hold the same measurement (their "

@@ -207,7 +207,7 @@ def test_a_muscle_identified_with_another_model_names_its_identification_not_fem
         "--params theta0,rubber,L0 --model axisym --out id20-axisym`) and give that "
         "calibration, or pass --theta0 27.7613 (the thickwall fit's angle; the rubber then is "
         "not the identified one)")
-    assert "fem calibrate" not in calibration.how_to_add("eq2-inner", angle=False)
+    assert "fem calibrate" not in calibration.how_to_add("eq2-inner", angle=None)
 
 
 @pytest.mark.parametrize(("text", "message"), [

@@ -55,8 +55,11 @@ def test_the_sentence_names_model_distance_band_speed_and_consistency():
     text = verdict("Run 1", ROWS, NAMES, 0.02)
     assert text == ("Run 1: use Thick-wall (Klute-Hannaford), the cheapest model within 2 % of "
                     "the measurement: 1.60 % off at worst (band ± 0.5 %), 58.4 µs per force, "
-                    "consistent with the measurement (|E_n| ≤ 1 at every step; 1 of 4 models "
+                    "consistent with the measurement (|E_n| <= 1 at every step; 1 of 4 models "
                     "is).")
+    # printed on a Windows console too: its code page (cp1252) has no "≤", which came out
+    # as "\u2264"
+    text.encode("cp1252")
     none = verdict("Run 1", ROWS, NAMES, 0.01)
     assert "no model is within 1 % of the measurement; the closest is Thick-wall" in none
     bad = verdict("Run 1", ROWS, NAMES, 0.10)  # Equation 2: the cheapest within 10 %
@@ -136,8 +139,8 @@ def test_a_calibration_that_fits_its_runs_within_their_noise_is_not_called_a_mis
     assert advice == ("although the calibration (calibration.json) was identified on this run "
                       "with the others and fits them within their noise (chi2/nu 1): the braid "
                       "friction 2.6 % and creep 2.0 % identified with it, which these static "
-                      "models lack, are that distance (identify's steps.csv has the steps "
-                      "predicted with them)")
+                      "models lack, are that distance (add the rung that has them: --models "
+                      "friction,...; identify's steps.csv has the steps predicted with them)")
     # a misfit (a monitor 0.022 bar off: chi2/nu 164) is still named as one
     misfit = {**fit, "misfit": {"judged": True, "chi2_per_nu": 164.0,
                                 "misfit_branches": ["r1 loading"]}}

@@ -83,6 +83,25 @@ def test_default_angle_other_than_recorded_is_refused_at_predict(physics, tmp_pa
         physics.with_parameters(Calibration.load(other)).predict(1.0, 40.0, 3.0, 0.1)
 
 
+def test_given_angle_needs_no_fe_entry_in_the_calibration(physics, tmp_path):
+    # a muscle identified with the thick-wall form has no FE entry; with the angle given, the
+    # surrogate, as the physics models, needs none (it refused, pointing at the angle already
+    # given) and takes the nominal rubber
+    from mkm.fem.calibration import Calibration
+    from mkm.fem.materials import SILASTIC_S
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text('{"thickwall": {"theta0_deg": 29.2, "C10_MPa": 0.35, "C01_MPa": 0.31}}')
+    theta0 = physics.fixed["theta0_deg"]
+    model = physics.with_parameters(Calibration.load(lab), theta0_deg=theta0)
+    assert model.parameters == {"L0_mm": 282.0, "theta0_deg": theta0,
+                                "C10_MPa": SILASTIC_S.C10_MPa, "C01_MPa": SILASTIC_S.C01_MPa}
+    np.testing.assert_array_equal(model.predict([1.0, 2.5], 40.0, 3.0, 0.1).force_N,
+                                  physics.predict([1.0, 2.5], 40.0, 3.0, 0.1).force_N)
+    with pytest.raises(ValueError, match="no calibrated theta0 for model 'axisym'"):
+        physics.with_parameters(Calibration.load(lab)).parameters  # noqa: B018
+
+
 def test_gp_gives_a_predictive_spread(gp):
     prediction = gp.predict([0.5, 1.0, 2.0], 40.0, 3.0, 0.1)
     std = prediction.extras["force_std_N"]

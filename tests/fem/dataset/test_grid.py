@@ -1,5 +1,7 @@
 """Dataset grids (fem/dataset/grid.py): Table 1 of the paper, TOML parsing and its errors."""
 
+import re
+
 import pytest
 
 from mkm.cli import main
@@ -79,3 +81,35 @@ def test_bad_grid_file_on_the_command_line(tmp_path, capsys):
                   "pressure_bar, " \
                   "D0_mm, t0_mm, eps, L0_mm, theta0_deg\n"
     assert not (tmp_path / "d.csv").exists()
+
+
+def test_a_calibration_without_the_models_angle_names_the_grid_not_theta0(tmp_path):
+    # fem dataset has no --theta0 (the error said "or pass --theta0 29.2"): the angle of a
+    # model the calibration has no entry for is the grid's theta0_deg
+    import json
+
+    from mkm.fem.calibration import Calibration
+
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps({"thickwall": {"theta0_deg": 29.2, "identified": {},
+                                             "command": "mkm identify r1 r2 --out id20"}}))
+    with pytest.raises(ValueError, match=r"^no calibrated theta0 for model 'axisym' in .*"
+                       r"or pass --grid FILE with theta0_deg = 29\.2 \(the thickwall fit's "):
+        make_jobs(parse_grid(GRID, "g"), "axisym", calibration=Calibration.load(lab))
+    jobs = make_jobs(parse_grid(GRID + "theta0_deg = 29.2\n", "g"), "axisym",
+                     calibration=Calibration.load(lab))
+    assert {job.theta0_deg for job in jobs} == {29.2}
+
+
+def test_a_grid_saved_by_a_windows_editor_is_read_or_named(tmp_path):
+    # a BOM (Notepad's "UTF-8 with BOM") was "not valid TOML ... line 1, column 1"; a file in
+    # the ANSI code page was the decoder's words alone, neither grid nor what was expected
+    bom = tmp_path / "bom.toml"
+    bom.write_bytes(b"\xef\xbb\xbf" + GRID.encode())
+    assert load_grid(bom).D0_mm == (30.0, 40.0)
+    ansi = tmp_path / "ansi.toml"
+    ansi.write_bytes(GRID.encode() + b"# theta0 30\xb0\n")
+    with pytest.raises(ValueError, match=rf"^grid {re.escape(str(ansi))}: cannot be read as "
+                       r"UTF-8 text \(.*byte 0xb0.*\): expected 'paper' or the path of a grid "
+                       "TOML file"):
+        load_grid(ansi)
