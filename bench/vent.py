@@ -224,9 +224,24 @@ def without_fall(check: VentCheck, before_bar: float, commanded_bar: float, last
 FORCE_KEPT_FRACTION = 0.5
 
 
+def force_per_bar(steps, noise_N: float) -> float | None:
+    """The muscle's force per bar [N/bar] over the run's steps (``steps.csv``'s rows, in
+    order): the median of the slopes between successive steps at different measured pressures
+    whose forces are both above the load cell's noise ``noise_N`` (the muscle pulled at both);
+    one step across the threshold, or the turn of a sweep, moves no median. None when no two
+    such steps were done."""
+    slopes = []
+    for a, b in zip(steps, steps[1:], strict=False):
+        dp = b.pressure_bar_mean - a.pressure_bar_mean
+        if math.isfinite(dp) and abs(dp) > 0 and a.force_N_mean > noise_N \
+                and b.force_N_mean > noise_N:
+            slopes.append((b.force_N_mean - a.force_N_mean) / dp)
+    return statistics.median(slopes) if slopes else None
+
+
 def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: float,
-                  commanded_bar: float, stuck_cell: tuple[float, float] | None = None
-                  ) -> VentCheck:
+                  commanded_bar: float, stuck_cell: tuple[float, float] | None = None,
+                  per_bar_N: float | None = None) -> VentCheck:
     """``check`` weighed by the load cell: the muscle's force (from the tare) ``before_N``
     before the vent and ``after_N`` over the check's settled window.
 
@@ -235,7 +250,15 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
     :data:`FORCE_KEPT_FRACTION` of its force before the vent, above the load cell's noise
     ``noise_N``, is still pressurised whatever the monitor reads: a regulator whose monitor
     reports its command (or is stuck) and whose exhaust did not open. A force before the vent
-    within the noise tells nothing. ``stuck_cell``, the monitor's reading [bar] before the vent
+    within the noise tells nothing. Nor does one that no pressure above the muscle's threshold
+    need have made: the load cell sees a pressure only by the force it makes, none below the
+    threshold (a slack muscle reads the cell's zero, which a warming amplifier moves by newtons
+    over a run), ``per_bar_N`` more per bar above it (the run's force per bar,
+    :func:`force_per_bar`). A force before the vent not above the noise plus what the vent
+    threshold's pressure makes (``per_bar_N`` x ``check.below_bar``) is that of a muscle at
+    most that pressure above its threshold, or of a slack one on a zero moved: the cell cannot
+    tell it from a vented muscle, so the check stands on the monitor, as it does below the
+    threshold. ``stuck_cell``, the monitor's reading [bar] before the vent
     and the load cell's spread [N] at the tare, when every force of both windows was one
     reading although the cell strayed more than an ADC step at the tare: no muscle, slack or
     pulling, holds a live cell's reading to one ADC code, so the cell is stuck or disconnected;
@@ -255,6 +278,8 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
             "pressure falls is stuck or disconnected, so it tells neither a slack muscle nor "
             "one that still pulls; check the load cell's cable, amplifier and supply, and "
             "that the muscle hangs slack"))
+    if per_bar_N is not None and not before_N > noise_N + per_bar_N * check.below_bar:
+        return check
     return check.unproven(commanded_bar, (
         f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell "
         f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "
