@@ -61,15 +61,19 @@ class VentCheck:
     # no longer falling by more than its noise (None otherwise): the setting a regulator that
     # exhausts slowly needs, named in the message
     timeout_s: float | None = None
+    # the instrument the check found not reading what it should ("the monitor", "the load
+    # cell", ...; "" when none): it recorded the run's steps too, so their data are in doubt
+    doubted: str = ""
 
     def as_dict(self) -> dict:
         return asdict(self)
 
-    def unproven(self, commanded_bar: float, problem: str) -> VentCheck:
+    def unproven(self, commanded_bar: float, problem: str,
+                 doubted: str = "the monitor") -> VentCheck:
         """This check, not verified: ``problem`` says why its reading proves no vent of
-        ``commanded_bar`` (a vent by hand is asked for)."""
+        ``commanded_bar`` (a vent by hand is asked for), ``doubted`` which instrument."""
         return dataclasses.replace(self, verified=False, unfollowed_bar=commanded_bar,
-                                   problem=problem)
+                                   problem=problem, doubted=doubted)
 
     def describe(self) -> str:
         if self.verified:
@@ -277,7 +281,7 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
             f"{tare_std_N:.2f} N at the tare: a load cell that does not change while the "
             "pressure falls is stuck or disconnected, so it tells neither a slack muscle nor "
             "one that still pulls; check the load cell's cable, amplifier and supply, and "
-            "that the muscle hangs slack"))
+            "that the muscle hangs slack"), "the load cell")
     if per_bar_N is not None and not before_N > noise_N + per_bar_N * check.below_bar:
         return check
     return check.unproven(commanded_bar, (
@@ -286,7 +290,7 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
         f"than {FORCE_KEPT_FRACTION:.0%} of it): the muscle still pulls, so the "
         "monitor's reading proves nothing: a monitor that reports its command or is "
         "stuck, with an exhaust that did not open (or a load cell stuck); check the "
-        "regulator and the load cell"))
+        "regulator and the load cell"), "the monitor or the load cell")
 
 
 def monitor_unmoved(check: VentCheck, before_bar: float, before_N: float, after_N: float,
@@ -304,7 +308,7 @@ def monitor_unmoved(check: VentCheck, before_bar: float, before_N: float, after_
             or not check.pressure_bar >= before_bar - noise_bar \
             or not after_N < FORCE_KEPT_FRACTION * before_N:
         return check
-    return dataclasses.replace(check, timeout_s=None, problem=(
+    return dataclasses.replace(check, timeout_s=None, doubted="the monitor", problem=(
         f"the monitor still reads {reading_bar(check.pressure_bar)} bar {check.waited_s:.1f} s "
         f"after the vent, as it read {reading_bar(before_bar)} bar before it, but the load "
         f"cell reads {after_N:.1f} N against {before_N:.1f} N before the vent: the muscle let "
@@ -415,11 +419,13 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         fault = config.regulator.monitor_fault(monitor_V) if math.isfinite(monitor_V) else None
         if fault:  # no reading of a working regulator: nothing is verified by it, and its
             # conversion (0 V: -1 bar) is no pressure: the last plausible reading is kept
-            return VentCheck(False, pressure, below, waited, "monitor", fault)
+            return VentCheck(False, pressure, below, waited, "monitor", fault,
+                             doubted="the monitor")
         pressure = float(config.regulator.monitor_bar(monitor_V))
         if not math.isfinite(pressure):  # a broken input: it verifies nothing
             return VentCheck(False, pressure, below, waited, "monitor",
-                             f"the monitor reads {monitor_V!r} V, not a number")
+                             f"the monitor reads {monitor_V!r} V, not a number",
+                             doubted="the monitor")
         recent = [(t, p) for t, p in recent
                   if t > sample_time_s - FALL_SPAN_S - SETTLED_S - 1e-9]
         recent.append((sample_time_s, pressure))
@@ -444,7 +450,8 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                     f"than the zero error its configuration declares ({zero_error_bar:g} bar, "
                     f"{declared}) and its noise ({noise_bar:.3f} bar): its zero is off low, and "
                     "no tare read it vented, so its reading does not tell what the muscle "
-                    "holds; check the monitor"), noise_bar=noise_bar, waited_why=waited_why)
+                    "holds; check the monitor"), noise_bar=noise_bar, waited_why=waited_why,
+                    doubted="the monitor")
             return VentCheck(True, pressure, below, waited, "monitor",
                              first_above_bar=statistics.median(first) - settled_bar,
                              noise_bar=noise_bar, waited_why=waited_why)
@@ -463,7 +470,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                 return VentCheck(False, pressure, below, waited, "monitor", (
                     f"the monitor read {reading_bar(pressure)} bar but did not settle within "
                     f"{waited:.1f} s, so a drift of its zero cannot be excluded"),
-                    waited_why=waited_why)
+                    waited_why=waited_why, doubted="the monitor")
             return VentCheck(False, pressure, below, waited, "monitor", noise_bar=noise_bar,
                              waited_why=waited_why,
                              timeout_s=None if waited >= FALLING_MAX_S else timeout_s)

@@ -36,6 +36,7 @@ def test_a_stuck_regulator_fails_the_run_and_asks_for_a_vent_by_hand(config, tmp
     check = run.meta.vent_check
     assert not check["verified"] and check["pressure_bar"] == pytest.approx(0.5, abs=0.02)
     assert check["waited_s"] > c.safety.vent_timeout_s
+    assert check["doubted"] == ""  # the monitor read the pressure the valve held
     assert run.meta.manual_vent_required
     (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert json.loads(marker.read_text())["run_path"] == str(run.path)
@@ -463,6 +464,7 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
     run = load_run(result.path)
     check = run.meta.vent_check
     assert not check["verified"] and check["pressure_bar"] == 0.0 and check["unfollowed_bar"] == 0.5
+    assert check["doubted"] == "the monitor or the load cell"  # they recorded the steps too
     forces = re.search(r"still reads ([0-9.]+) N against ([0-9.]+) N before", result.reason)
     after_N, before_N = float(forces.group(1)), float(forces.group(2))
     assert after_N == pytest.approx(before_N, rel=0.02)  # nothing let go: creep alone
@@ -568,6 +570,7 @@ def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(c
     assert "a monitor that reports its command" not in result.reason
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
     assert not run.meta.vent_check["verified"]
+    assert run.meta.vent_check["doubted"] == "the load cell"
 
 
 def test_a_load_cell_stuck_mid_run_stops_the_run_within_two_seconds(config, tmp_path):
@@ -620,6 +623,7 @@ def test_a_monitor_frozen_above_the_threshold_is_named_by_the_load_cell(config, 
     assert before_bar == pytest.approx(0.5, abs=0.02)  # the last step's, when it froze
     assert abs(after_N) < 1.0 < 150.0 < before_N  # slack after; 0.5 bar's force before
     assert "safety.vent_timeout_s" not in result.reason
+    assert load_run(result.path).meta.vent_check["doubted"] == "the monitor"
     assert bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
 
 
