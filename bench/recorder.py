@@ -99,6 +99,8 @@ class Recorder:
         # run's other state files are
         self.kept_path = kept_samples_path(self.writer.path)
         self.kept = ""  # what became of them there, in words ("" while none is left)
+        self.step_rows: list[StepRecord] = []  # steps.csv's rows, in order: the vent check's
+        # force per bar (mkm.bench.vent.force_per_bar)
         self._refused = False  # an append of samples failed (the disk)
         # rows taken from the queue and not on disk yet: a block being written, or rows the disk
         # refused, written again first with the next block (samples.csv cut back to its whole
@@ -291,6 +293,7 @@ class Recorder:
 
     def step(self, record: StepRecord) -> None:
         self._put("step", record)
+        self.step_rows.append(record)
         self.meta.steps_done += 1
 
     def command(self, record: CommandRecord) -> None:

@@ -72,6 +72,7 @@ from mkm.bench.vent import (
     VentCheck,
     VentedZero,
     below_command,
+    force_per_bar,
     monitor_unmoved,
     still_pulling,
     verify_vent,
@@ -835,7 +836,7 @@ class BenchRun:
             stuck = (before[0], tare_std_N) if tare_std_N > step_N and \
                 acq.forces_unchanged() else None
             fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar),
-                                 stuck)
+                                 stuck, force_per_bar(self.recorder.step_rows, noise_N))
             fell = monitor_unmoved(fell, before[0], *forces, noise_N)
         return fell
 

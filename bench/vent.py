@@ -61,15 +61,19 @@ class VentCheck:
     # no longer falling by more than its noise (None otherwise): the setting a regulator that
     # exhausts slowly needs, named in the message
     timeout_s: float | None = None
+    # the instrument the check found not reading what it should ("the monitor", "the load
+    # cell", ...; "" when none): it recorded the run's steps too, so their data are in doubt
+    doubted: str = ""
 
     def as_dict(self) -> dict:
         return asdict(self)
 
-    def unproven(self, commanded_bar: float, problem: str) -> VentCheck:
+    def unproven(self, commanded_bar: float, problem: str,
+                 doubted: str = "the monitor") -> VentCheck:
         """This check, not verified: ``problem`` says why its reading proves no vent of
-        ``commanded_bar`` (a vent by hand is asked for)."""
+        ``commanded_bar`` (a vent by hand is asked for), ``doubted`` which instrument."""
         return dataclasses.replace(self, verified=False, unfollowed_bar=commanded_bar,
-                                   problem=problem)
+                                   problem=problem, doubted=doubted)
 
     def describe(self) -> str:
         if self.verified:
@@ -224,9 +228,24 @@ def without_fall(check: VentCheck, before_bar: float, commanded_bar: float, last
 FORCE_KEPT_FRACTION = 0.5
 
 
+def force_per_bar(steps, noise_N: float) -> float | None:
+    """The muscle's force per bar [N/bar] over the run's steps (``steps.csv``'s rows, in
+    order): the median of the slopes between successive steps at different measured pressures
+    whose forces are both above the load cell's noise ``noise_N`` (the muscle pulled at both);
+    one step across the threshold, or the turn of a sweep, moves no median. None when no two
+    such steps were done."""
+    slopes = []
+    for a, b in zip(steps, steps[1:], strict=False):
+        dp = b.pressure_bar_mean - a.pressure_bar_mean
+        if math.isfinite(dp) and abs(dp) > 0 and a.force_N_mean > noise_N \
+                and b.force_N_mean > noise_N:
+            slopes.append((b.force_N_mean - a.force_N_mean) / dp)
+    return statistics.median(slopes) if slopes else None
+
+
 def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: float,
-                  commanded_bar: float, stuck_cell: tuple[float, float] | None = None
-                  ) -> VentCheck:
+                  commanded_bar: float, stuck_cell: tuple[float, float] | None = None,
+                  per_bar_N: float | None = None) -> VentCheck:
     """``check`` weighed by the load cell: the muscle's force (from the tare) ``before_N``
     before the vent and ``after_N`` over the check's settled window.
 
@@ -235,7 +254,15 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
     :data:`FORCE_KEPT_FRACTION` of its force before the vent, above the load cell's noise
     ``noise_N``, is still pressurised whatever the monitor reads: a regulator whose monitor
     reports its command (or is stuck) and whose exhaust did not open. A force before the vent
-    within the noise tells nothing. ``stuck_cell``, the monitor's reading [bar] before the vent
+    within the noise tells nothing. Nor does one that no pressure above the muscle's threshold
+    need have made: the load cell sees a pressure only by the force it makes, none below the
+    threshold (a slack muscle reads the cell's zero, which a warming amplifier moves by newtons
+    over a run), ``per_bar_N`` more per bar above it (the run's force per bar,
+    :func:`force_per_bar`). A force before the vent not above the noise plus what the vent
+    threshold's pressure makes (``per_bar_N`` x ``check.below_bar``) is that of a muscle at
+    most that pressure above its threshold, or of a slack one on a zero moved: the cell cannot
+    tell it from a vented muscle, so the check stands on the monitor, as it does below the
+    threshold. ``stuck_cell``, the monitor's reading [bar] before the vent
     and the load cell's spread [N] at the tare, when every force of both windows was one
     reading although the cell strayed more than an ADC step at the tare: no muscle, slack or
     pulling, holds a live cell's reading to one ADC code, so the cell is stuck or disconnected;
@@ -254,14 +281,16 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
             f"{tare_std_N:.2f} N at the tare: a load cell that does not change while the "
             "pressure falls is stuck or disconnected, so it tells neither a slack muscle nor "
             "one that still pulls; check the load cell's cable, amplifier and supply, and "
-            "that the muscle hangs slack"))
+            "that the muscle hangs slack"), "the load cell")
+    if per_bar_N is not None and not before_N > noise_N + per_bar_N * check.below_bar:
+        return check
     return check.unproven(commanded_bar, (
         f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell "
         f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "
         f"than {FORCE_KEPT_FRACTION:.0%} of it): the muscle still pulls, so the "
         "monitor's reading proves nothing: a monitor that reports its command or is "
         "stuck, with an exhaust that did not open (or a load cell stuck); check the "
-        "regulator and the load cell"))
+        "regulator and the load cell"), "the monitor or the load cell")
 
 
 def monitor_unmoved(check: VentCheck, before_bar: float, before_N: float, after_N: float,
@@ -279,7 +308,7 @@ def monitor_unmoved(check: VentCheck, before_bar: float, before_N: float, after_
             or not check.pressure_bar >= before_bar - noise_bar \
             or not after_N < FORCE_KEPT_FRACTION * before_N:
         return check
-    return dataclasses.replace(check, timeout_s=None, problem=(
+    return dataclasses.replace(check, timeout_s=None, doubted="the monitor", problem=(
         f"the monitor still reads {reading_bar(check.pressure_bar)} bar {check.waited_s:.1f} s "
         f"after the vent, as it read {reading_bar(before_bar)} bar before it, but the load "
         f"cell reads {after_N:.1f} N against {before_N:.1f} N before the vent: the muscle let "
@@ -390,11 +419,13 @@ def verify_vent(backend, config, operator=None, started: bool = True,
         fault = config.regulator.monitor_fault(monitor_V) if math.isfinite(monitor_V) else None
         if fault:  # no reading of a working regulator: nothing is verified by it, and its
             # conversion (0 V: -1 bar) is no pressure: the last plausible reading is kept
-            return VentCheck(False, pressure, below, waited, "monitor", fault)
+            return VentCheck(False, pressure, below, waited, "monitor", fault,
+                             doubted="the monitor")
         pressure = float(config.regulator.monitor_bar(monitor_V))
         if not math.isfinite(pressure):  # a broken input: it verifies nothing
             return VentCheck(False, pressure, below, waited, "monitor",
-                             f"the monitor reads {monitor_V!r} V, not a number")
+                             f"the monitor reads {monitor_V!r} V, not a number",
+                             doubted="the monitor")
         recent = [(t, p) for t, p in recent
                   if t > sample_time_s - FALL_SPAN_S - SETTLED_S - 1e-9]
         recent.append((sample_time_s, pressure))
@@ -419,7 +450,8 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                     f"than the zero error its configuration declares ({zero_error_bar:g} bar, "
                     f"{declared}) and its noise ({noise_bar:.3f} bar): its zero is off low, and "
                     "no tare read it vented, so its reading does not tell what the muscle "
-                    "holds; check the monitor"), noise_bar=noise_bar, waited_why=waited_why)
+                    "holds; check the monitor"), noise_bar=noise_bar, waited_why=waited_why,
+                    doubted="the monitor")
             return VentCheck(True, pressure, below, waited, "monitor",
                              first_above_bar=statistics.median(first) - settled_bar,
                              noise_bar=noise_bar, waited_why=waited_why)
@@ -438,7 +470,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
                 return VentCheck(False, pressure, below, waited, "monitor", (
                     f"the monitor read {reading_bar(pressure)} bar but did not settle within "
                     f"{waited:.1f} s, so a drift of its zero cannot be excluded"),
-                    waited_why=waited_why)
+                    waited_why=waited_why, doubted="the monitor")
             return VentCheck(False, pressure, below, waited, "monitor", noise_bar=noise_bar,
                              waited_why=waited_why,
                              timeout_s=None if waited >= FALLING_MAX_S else timeout_s)

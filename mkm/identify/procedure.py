@@ -129,6 +129,7 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         raise ValueError(f"search={search!r} is invalid: expected one of {', '.join(SEARCHES)}")
     runs = load_runs(run_dirs)
     groups, notes = supported_groups(groups, runs)
+    notes = [run.note for run in runs if run.note] + notes  # a failed run's data used: why
     if braid is not None:
         model = _with_braid(model, braid)
     with Runner(workers, scheduler) as runner:

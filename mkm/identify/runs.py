@@ -14,7 +14,7 @@ a continuous sweep rather than holds.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 import numpy as np
@@ -87,6 +87,9 @@ class RunData:
     #: the tube's declared +- tolerances [mm] (``D0_mm``, ``t0_mm``: run.json's
     #: ``calibration.muscle_tolerances``, :class:`mkm.fem.tolerances.Tolerances` where none)
     geometry_tolerance_mm: dict = field(default_factory=lambda: _tube_tolerances(None))
+    #: what identify notes of the run's record ("" when nothing): a run whose steps were all
+    #: done and whose end-of-run vent alone was not verified (:func:`unverified_vent`)
+    note: str = ""
 
     @property
     def name(self) -> str:
@@ -207,19 +210,17 @@ def measurement_keys(name: str, sha256: dict[str, str]) -> set[str]:
 def load_run_data(path) -> RunData:
     """A run folder for identification; ``ValueError`` names a run that cannot serve.
 
-    Refused: a run whose status is ``failed``, a run without a settled step, a run without its
-    samples. Within each settled hold the regulator has reached the set pressure (the settle
-    criterion), so the hold's samples take the hold's mean pressure: the monitor's noise would
-    otherwise ratchet the friction model's play operator.
+    Refused: a run whose status is ``failed`` (unless its steps were all done and only its
+    end-of-run vent was not verified, :func:`unverified_vent`), a run without a settled step,
+    a run without its samples. Within each settled hold the regulator has reached the set
+    pressure (the settle criterion), so the hold's samples take the hold's mean pressure: the
+    monitor's noise would otherwise ratchet the friction model's play operator.
     """
-    from mkm.bench.storage import load_run, reason_shown
+    from mkm.bench.storage import load_run
 
     run = load_run(path)
     path = Path(path)
-    if str(run.status) == "failed":
-        raise ValueError(f"run {path.name} has status failed "
-                         f"({reason_shown(run.reason) or 'no reason'}): expected a complete run "
-                         "to identify from")
+    note = unverified_vent(run, path.name) if str(run.status) == "failed" else ""
     if run.rows_lost:  # steps whose hold samples are gone would be fitted as forces of zero
         raise ValueError(f"run {path.name}: {run.rows_lost[0]}: expected the whole record to "
                          "identify from")
@@ -266,7 +267,44 @@ def load_run_data(path) -> RunData:
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
                    timed=imported.get("shape") != "ramp",
-                   vented_bar=_vented(run), **_instrument(run))
+                   vented_bar=_vented(run), note=note, **_instrument(run))
+
+
+def unverified_vent(run, name: str) -> str:
+    """The note under which a failed run's data are used, or ``ValueError`` saying why they are
+    refused.
+
+    A run whose steps were all done and whose vent check alone failed holds complete data: the
+    vent is a safety matter, said loudly as the run ended (VENT BY HAND), not one of its
+    readings. They are used, with a note naming the vent problem, unless the check found an
+    instrument not reading what it should (``vent_check.doubted``: the monitor reporting its
+    command or stuck, the load cell stuck): that instrument recorded the steps too. A run
+    that failed otherwise (an interlock, a fault, a stop before its last step) is refused.
+    """
+    from mkm.bench.storage import reason_shown
+    from mkm.bench.vent import VentCheck
+
+    reason = reason_shown(run.reason) or "no reason"
+    check, n = run.meta.vent_check, run.meta.n_steps
+    refused = f"run {name} has status failed ({reason})"
+    if not n or run.meta.steps_done < n or not isinstance(check, dict) or check.get("verified"):
+        raise ValueError(f"{refused}: expected a complete run to identify from")
+    doubted = check.get("doubted")
+    if doubted is None:  # recorded before the check said which instrument it doubted
+        raise ValueError(f"{refused}: all {n} steps were done, but its vent check does not "
+                         "say whether it found the monitor or the load cell not reading what "
+                         "it should: expected a complete run to identify from, or one whose "
+                         "vent check names no such instrument (acquire it again)")
+    if doubted:
+        raise ValueError(f"{refused}: all {n} steps were done, but its vent check found "
+                         f"{doubted} not reading what it should, and {doubted} recorded these "
+                         f"steps too: expected a run whose instruments read true; check "
+                         f"{doubted} and acquire the run again")
+    known = {f.name for f in fields(VentCheck)}
+    vent = VentCheck(**{k: v for k, v in check.items() if k in known}).describe()
+    return (f"run {name}: all {n} steps done, but its end-of-run vent was not verified "
+            f"({vent}); the check doubted neither the monitor nor the load cell, which recorded "
+            "the steps, so its data are used")
 
 
 def _vented(run) -> tuple[float, float] | None:

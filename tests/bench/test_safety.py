@@ -36,6 +36,7 @@ def test_a_stuck_regulator_fails_the_run_and_asks_for_a_vent_by_hand(config, tmp
     check = run.meta.vent_check
     assert not check["verified"] and check["pressure_bar"] == pytest.approx(0.5, abs=0.02)
     assert check["waited_s"] > c.safety.vent_timeout_s
+    assert check["doubted"] == ""  # the monitor read the pressure the valve held
     assert run.meta.manual_vent_required
     (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert json.loads(marker.read_text())["run_path"] == str(run.path)
@@ -463,6 +464,7 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
     run = load_run(result.path)
     check = run.meta.vent_check
     assert not check["verified"] and check["pressure_bar"] == 0.0 and check["unfollowed_bar"] == 0.5
+    assert check["doubted"] == "the monitor or the load cell"  # they recorded the steps too
     forces = re.search(r"still reads ([0-9.]+) N against ([0-9.]+) N before", result.reason)
     after_N, before_N = float(forces.group(1)), float(forces.group(2))
     assert after_N == pytest.approx(before_N, rel=0.02)  # nothing let go: creep alone
@@ -470,6 +472,70 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
     assert bench.pressure_bar > 0.5 and bench.force_N == pytest.approx(after_N, abs=2.0)
     (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench stays marked
     assert json.loads(marker.read_text())["unfollowed_bar"] == 0.5
+
+
+def _drifting(drift_N_per_min: float):
+    """eps 12.2 % (the muscle pulls from about 0.45 bar), 0.25 to 0.75 bar and back, 30 s
+    holds (a run of about 170 s), on a load cell whose zero drifts ``drift_N_per_min``."""
+    return load_config(eps=0.122).replace(
+        sequence={"pressures_bar": (0.25, 0.5, 0.75), "tare_s": 2.0,
+                  "preconditioning_cycles": 0},
+        settle={"min_dwell_s": 3.0, "hold_s": 30.0, "timeout_s": 20.0, "window_s": 2.0},
+        sim={"truth": {"loadcell_drift_N_per_min": drift_N_per_min}})
+
+
+def test_a_slack_muscle_on_a_drifting_load_cell_zero_verifies_its_vent(tmp_path):
+    # The load cell's amplifier warms up: its zero drifts 1.3 N/min from the start. The run
+    # ends on 0.25 bar, below the muscle's threshold: slack, the cell reads its zero, moved by
+    # then. The vent check read about the same force after the vent as before it and said "the
+    # muscle still pulls ... VENT BY HAND" (exit 4, run failed) of a muscle that held no
+    # pressure making any force. A force no pressure above the threshold need have made tells
+    # nothing: the vent is verified.
+    c = _drifting(1.3)
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert not result.manual_vent_required
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"]
+    last = run.steps.iloc[-1]
+    assert last.set_pressure_bar == 0.25
+    # slack: the last hold reads the zero's drift since the start, 1.3 N/min at the hold's
+    # middle time, within five times the spread of the tare's mean (0.35 N over its 20
+    # samples: 0.08 N; the hold's 300 samples add little to it)
+    middle_s = (last.start_s + last.end_s) / 2
+    assert last.force_N_mean == pytest.approx(1.3 * middle_s / 60.0, abs=0.4)
+    assert last.force_N_mean > 3.0  # above the cell's noise (5 x 0.35 N + 2 ADC steps)
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
+def test_a_muscle_held_by_a_stuck_valve_on_a_drifting_load_cell_is_still_caught(tmp_path):
+    # The same drifting cell, with a regulator whose monitor reports its command and whose
+    # valve sticks at 10 s into the 0.75 bar step: the muscle holds 0.75 bar, 0.3 bar above its
+    # threshold, to the end and after the vent, pulling about 57 N on top of the zero's 3.5 N.
+    # That is far more than the 0.05 bar above the threshold makes (about 10 N): VENT BY HAND.
+    c = _drifting(1.3)
+    backend = SimBackend(c)
+    bench, reg = backend.bench, c.regulator
+    step, read = bench.step, backend.read
+    span_V = reg.monitor_V_at_full_scale - reg.monitor_V_at_zero
+
+    def reporting_its_command():
+        cell_V, _ = step()
+        return cell_V, reg.monitor_V_at_zero + bench.command_bar / reg.full_scale_bar * span_V
+
+    def valve_stuck_from_90_s(n, timeout):
+        if backend._index >= 900:
+            bench.regulator_stuck = True
+        return read(n, timeout)
+
+    bench.step, backend.read = reporting_its_command, valve_stuck_from_90_s
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
+    forces = re.search(r"still reads ([0-9.]+) N against ([0-9.]+) N before", result.reason)
+    assert forces, result.reason
+    assert float(forces.group(2)) > 50.0, result.reason  # 0.75 bar's force, not the drift
+    assert bench.pressure_bar == pytest.approx(0.75, abs=0.01)  # the truth: still held
 
 
 def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(config,
@@ -504,6 +570,7 @@ def test_a_load_cell_stuck_at_its_reading_is_said_so_the_vent_still_unverified(c
     assert "a monitor that reports its command" not in result.reason
     assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
     assert not run.meta.vent_check["verified"]
+    assert run.meta.vent_check["doubted"] == "the load cell"
 
 
 def test_a_load_cell_stuck_mid_run_stops_the_run_within_two_seconds(config, tmp_path):
@@ -556,6 +623,7 @@ def test_a_monitor_frozen_above_the_threshold_is_named_by_the_load_cell(config, 
     assert before_bar == pytest.approx(0.5, abs=0.02)  # the last step's, when it froze
     assert abs(after_N) < 1.0 < 150.0 < before_N  # slack after; 0.5 bar's force before
     assert "safety.vent_timeout_s" not in result.reason
+    assert load_run(result.path).meta.vent_check["doubted"] == "the monitor"
     assert bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
 
 
@@ -759,6 +827,38 @@ def test_below_command_weighs_a_verified_check_by_what_the_monitor_read_before_i
     assert below_command(unverified, 0.0, 0.5) is unverified  # said as it is
     operator = VentCheck(True, 0.0, 0.05, 0.0, "operator")
     assert below_command(operator, 0.0, 0.5) is operator  # a manometer read by the operator
+
+
+def test_force_per_bar_is_the_muscles_slope_where_it_pulls():
+    from mkm.bench.storage import StepRecord
+    from mkm.bench.vent import force_per_bar
+
+    # F = 190 N/bar (p - 0.45 bar) above the threshold, the cell's zero (0 N) below it; the
+    # steps up to 1 bar and down, repeated at the top: the slopes where both steps pull are
+    # 190 N/bar, the one across the threshold (9.5 N over 0.25 bar) and none from the repeat
+    def row(k, p, force):
+        return StepRecord(k, "up", 0, p, p, force, 0.35, 50, True, 4.0, 9.0 * k, 9.0 * k + 9.0)
+
+    pressures = (0.25, 0.5, 0.75, 1.0, 1.0, 0.75, 0.5, 0.25)
+    steps = [row(k, p, 190.0 * max(p - 0.45, 0.0)) for k, p in enumerate(pressures)]
+    assert force_per_bar(steps, 2.2) == pytest.approx(190.0)
+    assert force_per_bar(steps[:2], 2.2) is None  # 9.5 N at 0.5 bar, nothing above it
+
+
+def test_a_force_kept_after_the_vent_is_judged_by_what_the_threshold_pressure_makes():
+    from mkm.bench.vent import VentCheck, still_pulling
+
+    # a load cell of noise 2.2 N on a muscle of 190 N/bar, the vent threshold 0.05 bar: 9.5 N
+    # is what 0.05 bar above the muscle's threshold makes, 11.7 N with the noise
+    verified = VentCheck(True, 0.003, 0.05, 1.8, "monitor")
+    slack = still_pulling(verified, 11.5, 11.6, 2.2, 0.25, per_bar_N=190.0)
+    assert slack is verified  # a slack muscle on a zero moved by 11.5 N, or one barely pulling
+    pulls = still_pulling(verified, 12.0, 11.9, 2.2, 0.25, per_bar_N=190.0)
+    assert not pulls.verified and "the muscle still pulls" in pulls.problem
+    # with no force per bar from the run, any force above the noise is the muscle's
+    assert not still_pulling(verified, 3.8, 4.3, 2.2, 0.25).verified
+    # a muscle that let go (the force fell below half of it) verifies, whatever the slope
+    assert still_pulling(verified, 214.6, 3.0, 2.2, 0.5, per_bar_N=190.0) is verified
 
 
 # 2. one owner per bench --------------------------------------------------------------------

@@ -197,6 +197,70 @@ def test_outside_the_surrogate_box_the_fe_model_searches_and_says_so(tmp_path):
     assert result.fit.values["hysteresis_fraction"] == pytest.approx(0.03, abs=0.002)
 
 
+def _vent_stuck_at_the_end(tmp_path):
+    """A run of the figure caption's prototype (thickwall truth, theta0 31 deg) whose regulator
+    sticks once the last step is done: every step recorded, the vent not verified (the
+    monitor reads the 0.5 bar the valve holds), the run failed."""
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    config = load_config(eps=0.0).replace(
+        sequence={"pressures_bar": (0.5, 1.0, 1.5), "tare_s": 2.0, "preconditioning_cycles": 0},
+        sim={"model": "thickwall", "hysteresis_fraction": 0.0, "creep_fraction": 0.0,
+             "truth": {"theta0_deg": 31.0}})
+    backend = SimBackend(config)
+    run, read = None, backend.read
+
+    def stuck_once_done(n, timeout):
+        if run.recorder is not None and run.recorder.meta.steps_done == 5:
+            backend.bench.regulator_stuck = True
+        return read(n, timeout)
+
+    backend.read = stuck_once_done
+    run = BenchRun(config, backend, tmp_path, handle_signals=False,
+                   notify=lambda message: None)
+    result = run.execute()
+    assert result.status == "failed" and "VENT BY HAND" in result.reason, result.reason
+    remove_simulator_settings(result.path)
+    return result.path
+
+
+def test_a_run_whose_vent_alone_failed_is_identified_with_a_note(tmp_path):
+    # Every step done, the vent at the end not verified (the regulator stuck: VENT BY HAND,
+    # said as the run ended): identify refused the whole run ("has status failed ... expected
+    # a complete run"), its data complete and read by a monitor and a load cell the vent check
+    # doubted neither of. They are used, the vent problem named in a note.
+    run = _vent_stuck_at_the_end(tmp_path)
+    result = identify([run], params="theta0", model="thickwall", search="model")
+    assert result.notes[0].startswith(
+        f"run {run.name}: all 5 steps done, but its end-of-run vent was not verified (the "
+        "monitor still reads 0.5"), result.notes
+    assert result.notes[0].endswith("the check doubted neither the monitor nor the load cell, "
+                                    "which recorded the steps, so its data are used")
+    # the data are the muscle's: the truth found within the steps' noise
+    assert result.fit.values["theta0_deg"] == pytest.approx(31.0, abs=0.05)
+
+
+def test_a_run_whose_vent_check_doubted_an_instrument_is_refused_saying_why(tmp_path):
+    from mkm.identify.runs import load_run_data
+
+    run = _vent_stuck_at_the_end(tmp_path)
+    meta = json.loads((run / "run.json").read_text(encoding="utf-8"))
+    meta["vent_check"]["doubted"] = "the monitor"  # as the check records a monitor stuck
+    (run / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    with pytest.raises(ValueError) as refused:
+        load_run_data(run)
+    assert str(refused.value).endswith(
+        "all 5 steps were done, but its vent check found the monitor not reading what it "
+        "should, and the monitor recorded these steps too: expected a run whose instruments "
+        "read true; check the monitor and acquire the run again")
+    del meta["vent_check"]["doubted"]  # a run recorded before the check said so
+    (run / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    with pytest.raises(ValueError, match="does not say whether it found the monitor or the "
+                                         "load cell not reading what it should"):
+        load_run_data(run)
+
+
 @pytest.fixture(scope="module")
 def one_run(muscle):
     return muscle[1][0]
