@@ -328,6 +328,8 @@ BENCHMARKS = {
                                  "friction and creep' --out {out}",
     "identify_wrong_bench_fresh.json": "benchmarks/bench_identify_wrong_bench.py --draws 6 "
                                        "--seed 20261300 --out {out}",
+    "identify_wrong_bench_drift.json": "benchmarks/bench_identify_wrong_bench.py --departures "
+                                       "'loadcell drift' --draws 8 --seed 20264501 --out {out}",
     "identify_wrong_bench_zero.json": "benchmarks/bench_identify_wrong_bench.py --departures "
                                       "'loadcell offset' --draws 24 --seed 20264401 --params "
                                       "theta0,rubber,friction,creep,offset,zero --out {out}",

@@ -1620,3 +1620,22 @@ def test_the_published_pages_accuracy_figures_are_its_measured_file():
         + " %" in said
     assert f"({fe[0.0]['max_abs_err_pct']:.1f} %, worst E_n {fe[0.0]['worst_E_n']:.1f})" in said
     assert not any(r["consistent"] for r in data["report"] if r["model"] == "eq2")
+
+
+def test_the_guides_drifting_load_cell_is_its_measured_file():
+    """uncertainty.md's words on identify with a drifting load-cell zero: held to
+    ``identify_wrong_bench_drift.json`` (every draw covered and warned, chi2/nu, theta0)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_bench_drift.json").read_text(
+        encoding="utf-8"))
+    text = (DOCS / "guide" / "uncertainty.md").read_text(encoding="utf-8")
+    said = " ".join(text[text.index("A zero that drifts"):].split("\n\n", 2)[2].split())
+    row, draws = record["rows"][0], record["draws"]
+    assert row["covered"] == row["misfit_line"] == row["zero_line"] == len(draws) == 8
+    chi2 = [d["chi2_per_nu"] for d in draws]
+    assert f"(chi2/nu {min(chi2):.0f}-{max(chi2):.0f})" in said
+    theta = [next(p for p in d["parameters"] if p["parameter"] == "theta0_deg") for d in draws]
+    assert max(abs(p["value"] - p["truth"]) for p in theta) <= 0.05
+    widths = [p["ci_high"] - p["ci_low"] for p in theta]
+    assert f"its interval {min(widths):.1f}-{max(widths):.0f} deg wide" in said
