@@ -385,6 +385,14 @@ class AutoModel(ForceModel):
             todo[ok] = False
         if ref is None:
             source[todo] = "outside the surrogate's box: no estimate of the reference there"
+        if todo.any():  # the reference answers: its bound 0 holds where its own error is known
+            if measured is None:
+                measured = _measured_points(self._candidate(FALLBACK_SPEC).params(), P, D0, t0,
+                                            eps)
+            beyond = todo & ~measured
+            bound_used[beyond] = np.nan
+            source[beyond] = source[beyond] + ("; outside the practical range, where the fine "
+                                               "mesh's own error is not measured: no bound")
         return {"force_N": force, "model_used": used.astype(str),
                 "error_bound_pct": bound_used, "bound_source": source.astype(str)}
 

@@ -289,6 +289,11 @@ def test_a_mesh_answers_only_inside_the_range_its_bound_was_measured_over(
                       mesh_errors=mesh_table, per_point=True).choose(
         np.array([1.0, 1.0]), np.array([55.0, 62.0]), 2.5, 0.05)
     assert list(mixed["model_used"]) == ["axisym-coarse", "axisym-fine"]
+    # the fine mesh answers beyond the range as the reference, whose own error is measured
+    # only inside it: no bound there (it said 0 %), the reason given
+    assert mixed["error_bound_pct"][0] > 0 and np.isnan(mixed["error_bound_pct"][1])
+    assert mixed["bound_source"][1].endswith("the fine mesh's own error is not measured: no "
+                                             "bound")
 
 
 @pytest.mark.slow  # the default surrogate (GP training) and the fine mesh
