@@ -91,7 +91,9 @@ def published_table(name: str) -> Path:
 def copy_published_table(name: str, to: str | os.PathLike | None = None) -> Path:
     """Copy the shipped table ``name`` byte for byte (its SHA-256 is its provenance, recorded by
     ``mkm import``) to ``to``: a file name, an existing folder (the file keeps its name there),
-    or None (the working folder). An existing file is kept: ``ValueError``."""
+    or None (the working folder). An existing file is kept: the same bytes already (a script
+    run again) is that copy, another file a ``ValueError``."""
+    import filecmp
     import shutil
 
     source = published_table(name)
@@ -106,6 +108,8 @@ def copy_published_table(name: str, to: str | os.PathLike | None = None) -> Path
         raise ValueError(f"TO {str(to)!r} is neither an existing folder nor a file name ending "
                          f"in {source.suffix}: expected one of them (mkm import reads the table "
                          "by its suffix)")
+    if target.is_file() and filecmp.cmp(source, target, shallow=False):
+        return target
     if target.exists():
         raise ValueError(f"{target} exists: kept as it is; name a new file for {name}")
     if not target.parent.is_dir():

@@ -153,8 +153,9 @@ def test_every_documented_import_reads_a_table_a_wheel_user_has():
 
 def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch, capsys):
     """``mkm data copy NAME`` writes the published table into the working folder (a path with a
-    space and a non-ASCII letter here), its SHA-256 the one its README records, and keeps an
-    existing file; ``mkm data path`` and ``list`` name the installed file."""
+    space and a non-ASCII letter here), its SHA-256 the one its README records, is that copy
+    again when run twice, and keeps an existing file of other bytes; ``mkm data path`` and
+    ``list`` name the installed file."""
     name = "martens_boblan_2017_forcemaps.csv"
     work = tmp_path / "Prüfstand 1"
     work.mkdir()
@@ -164,8 +165,15 @@ def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch,
     digest = hashlib.sha256((work / name).read_bytes()).hexdigest()
     readme = (ROOT / "mkm" / "data" / "published" / "README.md").read_text("utf-8")
     assert f"SHA-256 `{digest}`" in readme
-    assert main(["data", "copy", name]) == 2  # kept, said in one line
+    # the same copy again (a script run twice, `set -e`): that copy, not an error
+    assert main(["data", "copy", name]) == 0
+    assert capsys.readouterr().out.strip() == name
+    shipped = (work / name).read_bytes()
+    (work / name).write_bytes(shipped + b"# edited\n")
+    assert main(["data", "copy", name]) == 2  # another file: kept, said in one line
     assert "exists: kept as it is" in capsys.readouterr().err
+    assert (work / name).read_bytes() == shipped + b"# edited\n"
+    (work / name).write_bytes(shipped)
     # was "sub: no such folder", naming neither the argument nor what was expected
     assert main(["data", "copy", name, "sub/maps.csv"]) == 2
     assert capsys.readouterr().err == ("mkm data copy: error: TO 'sub/maps.csv': no such folder "
