@@ -7,7 +7,7 @@ import time
 import numpy as np
 import pandas as pd
 
-from mkm.design.spec import DEFAULT_OBJECTIVE, NEAR_LOCK_FRACTION, rubber_of
+from mkm.design.spec import CALIBRATED_RUBBER, DEFAULT_OBJECTIVE, NEAR_LOCK_FRACTION, rubber_of
 from mkm.fem.calibration import Calibration
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
@@ -34,6 +34,29 @@ def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str,
     return parse_spec(f"axisym:mesh={mesh}").build(
         L0_mm=float(L0_mm), theta0_deg=float(theta0_deg), C10_MPa=material.C10_MPa,
         C01_MPa=material.C01_MPa, gap_mm=float(gap_mm))
+
+
+def identified_band_N(row, requirements, calibration: Calibration | None,
+                      gap_mm: float = 0.0) -> list[float | None]:
+    """Per requirement, the 95 % half-width [N] of design ``row``'s FE force that the
+    identified muscle's own uncertainty gives (:func:`mkm.identify.band.prediction_band`: the
+    intervals ``mkm identify`` wrote into ``calibration``, carried through the FE model at the
+    design's geometry); None where the calibration holds no identified FE muscle, or the
+    design takes another braid angle or rubber than the identified one, or a gap."""
+    from mkm.identify.band import identified_entry, prediction_band
+
+    found = identified_entry(calibration) if calibration is not None else None
+    if (found is None or found[0] != "axisym" or gap_mm or row["rubber"] != CALIBRATED_RUBBER
+            or not np.isclose(float(row["theta0_deg"]), float(found[1]["theta0_deg"]))):
+        return [None] * len(requirements)
+    spec = parse_spec(f"axisym:mesh={row['fe_mesh']}").with_params(L0_mm=float(row["L0_mm"]))
+    out: list[float | None] = []
+    for k, r in enumerate(requirements, start=1):
+        band = prediction_band(spec, calibration, np.array([float(row[f"r{k}_fe_N"])]),
+                               np.array([r.pressure_bar]), float(row["D0_mm"]),
+                               float(row["t0_mm"]), r.eps)
+        out.append(None if band is None else float(np.ravel(band)[0]))
+    return out
 
 
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",

@@ -22,7 +22,7 @@ from mkm.design.box_search import (
     range_limits,
     search,
 )
-from mkm.design.fe_verification import ordered, verify
+from mkm.design.fe_verification import identified_band_N, ordered, verify
 from mkm.design.robust import (
     WORST_CORNER_UNSOLVED,
     below_target,
@@ -62,6 +62,12 @@ class DesignResult:
     files: dict = field(default_factory=dict)
     #: the probability a robust design is asked to meet every requirement with (None: nominal)
     probability: float | None = None
+    #: per requirement, the chosen design's FE force's 95 % half-width [N] from the identified
+    #: muscle's own uncertainty (:func:`~mkm.design.fe_verification.identified_band_N`; None
+    #: where the calibration identified none, or a robust design, which carries its own)
+    identified_band_N: list = field(default_factory=list)
+    #: the ``--tolerance`` that carries the identified muscle's 95 % intervals ("" without)
+    identified_tolerance: str = ""
 
     @property
     def chosen(self):
@@ -148,6 +154,19 @@ class DesignResult:
             notes.append(f"the FE gave no force at the worst corner of the tolerances of the "
                          f"chosen design for {', '.join(unsolved)} ({best['fe_failure']}): "
                          "whether the muscle built to them meets it there is not verified")
+        for k, band in enumerate(self.identified_band_N, start=1):
+            margin = None if best is None else float(best[f"r{k}_fe_margin_N"])
+            held = None if band is None or margin is None else held_with(margin, band)
+            if held is not None and held < DEFAULT_PROBABILITY:
+                ask = (f"--tolerance {self.identified_tolerance} --probability "
+                       f"{DEFAULT_PROBABILITY:g}" if self.identified_tolerance else "--tolerance")
+                notes.append(f"the chosen design meets r{k} ({s.requirements[k - 1].label}) by "
+                             f"{margin:.3g} N at the calibration's values; the identified "
+                             f"muscle's own uncertainty there is +-{band:.3g} N (95 %, its "
+                             "intervals carried through the FE model), so it holds with about "
+                             f"{100 * held:.0f} % probability: design for "
+                             f"{100 * DEFAULT_PROBABILITY:g} % ({ask}: the intervals as build "
+                             "tolerances) or require more force")
         if best is not None and best["fe_mesh"] != self.mesh:
             notes.append(f"the {self.mesh} mesh's margin of the chosen design was within that "
                          f"mesh's error (mkm.mesh_errors): verified again on the "
@@ -234,13 +253,18 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
             f"probability_r{k}", f"probability_r{k}_search", f"r{k}_tolerance_u_N",
             f"r{k}_fe_worst_corner_N")] + ["probability_all"]
     designs = ordered(designs, objective, demoted)
+    ok = designs[designs["meets_all"]]
+    band = ([] if tolerances is not None or ok.empty else
+            identified_band_N(ok.iloc[0], found.requirements, calibration, found.gap_mm))
     n = len(found.requirements)
     columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
         f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + robust + [
         "meets_all", "min_fe_margin_pct", "fe_mesh", "flags", "fe_failure"]
     return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits,
-                        probability=None if tolerances is None else probability)
+                        probability=None if tolerances is None else probability,
+                        identified_band_N=band,
+                        identified_tolerance=identified_tolerance(calibration))
 
 
 def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *,
@@ -288,6 +312,40 @@ def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *
     return frame
 
 
+def held_with(margin_N: float, band_N: float) -> float:
+    """The probability that a force ``margin_N`` above its requirement at the calibration's
+    values still meets it, its error normal with the 95 % half-width ``band_N``."""
+    import math
+
+    from mkm.identify.band import Z95
+
+    if band_N <= 0.0:
+        return 1.0 if margin_N >= 0.0 else 0.0
+    return 0.5 * (1.0 + math.erf(margin_N / (band_N / Z95) / math.sqrt(2.0)))
+
+
+def identified_tolerance(calibration: Calibration | None) -> str:
+    """``--tolerance`` text of the identified muscle's 95 % intervals of its braid angle and
+    rubber (1.96 standard deviations of the calibration's band: uniform tolerances of that
+    half-width are a little wider); "" without an identified muscle."""
+    from mkm.identify.band import Z95, identified_entry
+
+    found = identified_entry(calibration) if calibration is not None else None
+    band = found[1]["identified"].get("band") if found is not None else None
+    if not band:
+        return ""
+    names, values = band["parameters"], band["values"]
+    sd = np.sqrt(np.clip(np.diag(np.asarray(band["covariance"], dtype=float)), 0.0, None))
+    half = dict(zip(names, Z95 * sd, strict=True))
+    parts = []
+    if "theta0_deg" in half:
+        parts.append(f"theta0={half['theta0_deg']:.2g}")
+    if "rubber_scale" in half:
+        scale = values[names.index("rubber_scale")]
+        parts.append(f"rubber={100 * half['rubber_scale'] / scale:.2g}%")
+    return ",".join(parts)
+
+
 def _in_mesh_order(meshes) -> list[str]:
     """The distinct ``meshes``, coarsest first."""
     return sorted(set(meshes), key=list(MESH_LEVELS).index)
@@ -328,6 +386,7 @@ def design_record(result: DesignResult) -> dict:
                                    else s.edges(result.chosen)),
             # the lines the command prints besides its summary (the box, the edge)
             "notes": result.notes(),
+            "identified_band_N": result.identified_band_N,
             # the chosen design as the muscle every other command reads (null: none confirmed)
             "chosen_muscle": chosen.record() if (chosen := result.chosen_muscle(
                 s.calibration)) else None,
