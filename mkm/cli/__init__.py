@@ -71,10 +71,14 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _notes(args):
-    """Warnings as a user reads them: one line, no source path (the library's own words)."""
+    """Warnings as a user reads them: one line, no source path (the library's own words), each
+    said once (a note a model gives for every run of a report is one fact)."""
+    said: set[str] = set()
 
     def show(message, category, filename, lineno, file=None, line=None) -> None:
-        say(args, "note", message)
+        if str(message) not in said:
+            said.add(str(message))
+            say(args, "note", message)
 
     return show
 

@@ -713,6 +713,9 @@ def test_a_library_warning_reaches_the_user_as_one_note(mkm_run):
         def _forces(self, P, D0, t0, eps):
             _warnings.warn("2 of 2 points lie outside the training domain", UserWarning,
                            stacklevel=2)
+            # the same note again (a report's every run): one fact, said once
+            _warnings.warn("2 of 2 points lie outside the training domain", UserWarning,
+                           stacklevel=1)
             return {"force_N": P * 0.0}
 
     register(Entry("warns", Warns, "Warns", "a model that warns", "test"))
