@@ -17,7 +17,8 @@ Then leave one length out (:func:`leave_one_length_out`): every length of a musc
 together with the wall ``t0`` fitted, each length predicted from the others; per length its
 held-out largest |Err%|, with the fitted wall and braid angle and their 95 % intervals.
 
-Last, with the instruments' accuracy (:func:`with_accuracy`): the DMSP-10-250 imported with
+Then the DMSP-20-300 read at its nominal length (:func:`with_nominal_length`). Last, with the
+instruments' accuracy (:func:`with_accuracy`): the DMSP-10-250 imported with
 an assumed accuracy (:data:`ACCURACY`, not the paper's), identified as a user would (the
 defaults: the surrogate's search, the FE confirmation) on two lengths and on those and its rest
 length, then reported with the first calibration (the default models): chi2/nu, the intervals,
@@ -113,6 +114,10 @@ def leave_one_length_out(paths, name: str, model: str, out: Path) -> tuple[list[
 ACCURACY = "force=0.5N+1%,pressure=0.01bar"
 #: the lengths identified there, then with the rest length among them
 ACCURACY_EPS = (0.064, 0.184)
+#: the DMSP-20-300's accuracy assumed where it is read at its nominal length, and the lengths
+#: (their eps from 300 mm) identified there
+ACCURACY_20 = "force=1N+1%,pressure=0.01bar"
+NOMINAL_LENGTH_EPS = (0.06, 0.11)
 
 
 def with_accuracy(work: Path) -> dict:
@@ -154,6 +159,33 @@ def with_accuracy(work: Path) -> dict:
                       else r.max_abs_err_pct, "consistent": bool(r.consistent),
                       "worst_E_n": r.worst_E_n} for r in summary.itertuples()]
     return out
+
+
+def with_nominal_length(work: Path) -> dict:
+    """The DMSP-20-300 imported at Festo's nominal 300 mm (``--L0 300``, the type code) with
+    :data:`ACCURACY_20`, identified with the thick-wall form on the lengths at eps 0.06 and
+    0.11 and reported with it: what published.md's ``--L0 300`` paragraph quotes."""
+    from mkm.bench.storage import read_meta
+
+    name = "Festo DMSP-20-300"
+    muscle_id, D0, t0 = MUSCLES[name]
+    paths = _quiet(["import", str(TABLE), "--id", muscle_id, "--D0", str(D0), "--t0", str(t0),
+                    "--muscle", name, "--L0", "300", "--accuracy", ACCURACY_20,
+                    "--out", str(work / "nominal-length")])
+    eps = {p: read_meta(p).muscle.eps for p in paths}
+    fit = [p for p in paths if any(abs(eps[p] - e) < 1e-9 for e in NOMINAL_LENGTH_EPS)]
+    folder = work / "nominal-length-identified"
+    _quiet(["identify", *fit, "--model", "thickwall", "--search", "model", "--workers", "1",
+            "--out", str(folder)])
+    goodness = json.loads((folder / "identification.json").read_text(
+        encoding="utf-8"))["goodness_of_fit"]
+    scores = _scores(paths, work / "nominal-length-report", "thickwall",
+                     folder / "calibration.json")
+    return {"accuracy": ACCURACY_20, "L0_mm": 300.0, "identified_eps": sorted(eps[p] for p in fit),
+            "chi2_per_nu": goodness["chi2_per_nu"],
+            "rows": [{"eps": eps[p], "max_abs_err_pct": None if pd.isna(
+                scores.loc[Path(p).name, "max_abs_err_pct"]) else float(
+                scores.loc[Path(p).name, "max_abs_err_pct"])} for p in paths]}
 
 
 def measure(model: str, work: Path,
@@ -212,6 +244,9 @@ def run(argv=None) -> dict:
         start = time.perf_counter()
         accuracy = with_accuracy(Path(work))
         seconds["dmsp-10 with the instruments' accuracy"] = time.perf_counter() - start
+        start = time.perf_counter()
+        nominal = with_nominal_length(Path(work))
+        seconds["dmsp-20 at its nominal length"] = time.perf_counter() - start
     frame = pd.DataFrame(rows)
     print(frame.to_string(index=False, float_format=lambda v: f"{v:.3g}"))
     loo = pd.DataFrame(rows_loo)
@@ -229,7 +264,8 @@ def run(argv=None) -> dict:
               "rows": json.loads(frame.to_json(orient="records")),
               "leave_one_length_out": {"params": LOO_PARAMS,
                                        "rows": json.loads(loo.to_json(orient="records"))},
-              "with_accuracy": json.loads(json.dumps(accuracy, default=float))}
+              "with_accuracy": json.loads(json.dumps(accuracy, default=float)),
+              "nominal_length": nominal}
     if args.json:
         Path(args.json).write_text(json.dumps(record, indent=2) + "\n", encoding="utf-8")
     return record
