@@ -19,22 +19,24 @@ import numpy as np
 from scipy import stats
 
 from mkm.bench.backend import AOWriteFailed, Backend, BenchError, DaqDisconnected, DeviceInfo
-from mkm.bench.bounded import call_within
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import (
+    OPEN_HUNG,
     READ_HANG_MARGIN_S,
     VENT_WRITES,
     WATCH_EVERY_S,
     WATCHDOG_WRITE_S,
     BoundedWrite,
+    DriverHangs,
     StderrNotice,
     WriteHung,
     close_within,
     make_backend,
     make_operator,
+    open_within,
     vent_dead_runs,
     with_backend,
 )
@@ -60,11 +62,6 @@ from mkm.bench.vent import VentCheck, reading_bar, verify_vent
 
 MAX_SECONDS = 600.0  # a tare or a calibration mass is averaged for at most this long
 STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
-#: `mkm vent` waits this long [s] for the device's open, which writes the vent: a USB-6001's
-#: open (two tasks, the AO started, 0 V written within its 1 s timeout) is expected within a
-#: second, one that answers as lost within about 5 (reset and opened again for
-#: REVIVE_WITHIN_S, 3 s, then the open); twice that for a slow, loaded bench PC
-OPEN_WAIT_S = 10.0
 
 
 @contextmanager
@@ -72,14 +69,15 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
     """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
     run left pressurised, and close (vent again) on exit. ``notify`` receives the operator's
-    lines (default: stderr, ``mkm <command>: ...``). A vent written for dead runs that hangs
-    ends the command (:func:`mkm.bench.run.vent_dead_runs`)."""
+    lines (default: stderr, ``mkm <command>: ...``). An open that hangs
+    (:func:`mkm.bench.run.open_within`) or a vent written for dead runs that hangs
+    (:func:`mkm.bench.run.vent_dead_runs`) ends the command."""
     notify = notify or StderrNotice(command)
     owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
     try:
         with owner:
             dead_runs = owner.dead_runs()  # before the device is opened
-            info = backend.open()
+            info = open_within(backend.open, f"{OPEN_HUNG}; VENT BY HAND")  # never closed then
             try:
                 for marker in vent_dead_runs(backend, dead_runs, owner.on_state_folder):
                     notify(marker.vented_now())
@@ -143,9 +141,9 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     the vent). A device lost (at open, on the vent write or on the check's reads) is reset and
     vented on fresh tasks first (NI: ``open`` and ``revive``, within a few seconds). Raises
     :class:`BenchError` when the device cannot be opened, its open does not return within
-    :data:`OPEN_WAIT_S` (the driver hangs) or the device stays lost, when the pressure stays
-    above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live holder does not let
-    go.
+    :data:`mkm.bench.run.OPEN_WAIT_S` (the driver hangs) or the device stays lost, when the
+    pressure stays above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live
+    holder does not let go.
     """
     notify = notify or StderrNotice("vent")
     config = with_backend(config, backend)
@@ -167,15 +165,11 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     try:
         # the open writes the vent (a lost device is reset first); a driver that hangs there
         # leaves the user staring at nothing: bounded, then said
-        returned, exc = call_within(lambda: _refused_again(device.open, notify), OPEN_WAIT_S,
-                                    "mkm-vent-open")
-        if not returned:
+        try:
+            open_within(lambda: _refused_again(device.open, notify))
+        except DriverHangs:
             open_hung = True
-            raise BenchError(f"opening the device did not return within {OPEN_WAIT_S:g} s (the "
-                             "driver hangs): the vent is NOT known to be written (the open "
-                             "writes it)")
-        if exc is not None:
-            raise exc
+            raise
         if config.regulator.electronic:  # marked once the vent is out, never waited for: a
             # process killed during the check leaves the bench marked
             owner.post(lambda: mark_vent(key, "vent", "", owner.state))

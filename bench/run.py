@@ -113,6 +113,43 @@ def close_within(backend: Backend, wait_s: float = CLOSE_WAIT_S) -> str:
     return ""
 
 
+#: the device's open, which writes the vent, is waited for this long [s]: a USB-6001's open (two
+#: tasks, the AO started, 0 V written within its 1 s timeout) is expected within a second, one
+#: that answers as lost within about 5 (reset and opened again for REVIVE_WITHIN_S, 3 s, then
+#: the open); twice that for a slow, loaded bench PC
+OPEN_WAIT_S = 10.0
+
+
+class DriverHangs(BenchError):
+    """A call into the driver no watchdog watches yet (the device's open) did not return
+    within its bound (:func:`driver_call`): the command ends there, the call left behind."""
+
+
+def driver_call(call, what: str, then: str, wait_s: float | None = None):
+    """``call()`` on a thread of its own (:func:`mkm.bench.bounded.call_within`), waited for
+    ``wait_s`` [s] (default :data:`OPEN_WAIT_S`): what it returned, or raises what it raised;
+    :class:`DriverHangs` past it, saying ``what`` did not return, then ``then``."""
+    wait_s = OPEN_WAIT_S if wait_s is None else wait_s
+    out = []
+    returned, exc = call_within(lambda: out.append(call()), wait_s, "mkm-driver")
+    if not returned:
+        raise DriverHangs(f"{what} did not return within {wait_s:g} s (the driver hangs): {then}")
+    if exc is not None:
+        raise exc
+    return out[0]
+
+
+#: what a command says of an open that hangs (:func:`open_within`)
+OPEN_HUNG = "the vent is NOT known to be written (the open writes it)"
+
+
+def open_within(open_device, then: str = OPEN_HUNG):
+    """``open_device()`` (the device's open, which writes the vent) waited for
+    :data:`OPEN_WAIT_S` (:func:`driver_call`); the device is not to be closed behind an open
+    that hangs: the close would wait behind it in the driver."""
+    return driver_call(open_device, "opening the device", then)
+
+
 class WriteHung(Exception):
     """A vent write that did not return within its bound (:class:`BoundedWrite`)."""
 
@@ -531,7 +568,8 @@ class BenchRun:
         self._vent_rows_problems: list[str] = []  # the vent check's rows not recorded
         self.storage_failed = False
         self._folder_error: OSError | None = None  # the run folder could not be made
-        self._device_hangs = False  # a write of the start-up hangs in the driver
+        self._device_hangs = False  # a call of the start-up hangs in the driver
+        self._opened = False  # the device's open returned
 
     def request_stop(self, by: str | None = None) -> None:
         """What the first Ctrl-C does: stop at the next safe point (``by`` says who else asked)."""
@@ -635,7 +673,8 @@ class BenchRun:
             status, exit_code = RunStatus.FAILED, EXIT_STORAGE
             reason = (f"recording failed{f' for {what}' if what else ''} "
                       f"({type(outcome).__name__}: {outcome})")
-        elif isinstance(outcome, DeadRunsVentHung):  # said whole; the device is asked no more
+        elif isinstance(outcome, DeadRunsVentHung | DriverHangs):  # said whole; the device is
+            # asked no more
             status, reason, self._device_hangs = RunStatus.FAILED, str(outcome), True
         elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
             status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
@@ -679,7 +718,9 @@ class BenchRun:
                 f"samples were lost in {len(meta.gaps)} gap(s): {spans}", EXIT_GAPS)
 
     def startup(self) -> None:
-        info = self.backend.open()  # writes the vent command first
+        # writes the vent command first; never closed when it hangs
+        info = open_within(self.backend.open, f"{OPEN_HUNG}; VENT BY HAND")
+        self._opened = True
         self.unvented = vent_dead_runs(self.backend, self._dead_runs, self.owner.on_state_folder)
         for marker in self.unvented:
             self.notify(marker.vented_now())
@@ -858,9 +899,9 @@ class BenchRun:
         ``say_vent``: ``reason`` (a stop) is followed by ``vented`` once the vent command
         reached the device, and only then: a failed one is said instead."""
         if self._device_hangs:  # before any pressure: a vent or a read would wait behind the
-            # write under way in the driver; the close is bounded
+            # call under way in the driver; the close is bounded, and not made behind an open
             try:
-                closing = close_within(self.backend)
+                closing = close_within(self.backend) if self._opened else ""
             except BaseException as exc:
                 closing = f"closing the device failed ({type(exc).__name__}: {exc})"
             return status, "; ".join(filter(None, [reason, closing]))

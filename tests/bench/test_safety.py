@@ -1579,6 +1579,7 @@ def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, m
     # OPEN_WAIT_S, then one line says the vent is not known to be written: VENT BY HAND, exit 1;
     # the device is not closed behind the open under way (a close would wait behind it).
     import mkm.bench.procedures as procedures
+    import mkm.bench.run as run
 
     release, closed = threading.Event(), []
 
@@ -1592,7 +1593,7 @@ def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, m
             super().close()
 
     monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
-    monkeypatch.setattr(procedures, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
     try:
         code, out, err = mkm_cli(["vent", "--backend", "sim"])
         still_hung = not release.is_set()
@@ -1603,3 +1604,47 @@ def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, m
         "mkm vent: error: opening the device did not return within 0.2 s (the driver hangs): "
         "the vent is NOT known to be written (the open writes it); VENT BY HAND")
     assert not list(bench_folder("sim-Dev1").glob("*.json"))  # no vent to name: not marked
+
+
+@pytest.mark.parametrize("command", [["acquire", "--clock", "virtual"], ["tare"], ["check"],
+                                     ["calibrate-loadcell", "--masses", "0,5"]])
+def test_an_open_that_hangs_ends_every_command_in_one_line(mkm_cli, monkeypatch, tmp_path,
+                                                           command):
+    # `mkm vent` bounds its open; `mkm acquire`, `tare`, `check` and `calibrate-loadcell` sat
+    # in an open the driver hangs in, nothing said, as long as it hung. Now each waits
+    # OPEN_WAIT_S, then ends in one line, exit 1: the vent is not known to be written, VENT BY
+    # HAND; the device is not closed behind the open, no run folder is made, and a run that
+    # died on the bench stays marked for the next command.
+    import mkm.bench.procedures as procedures
+    import mkm.bench.run as run
+
+    lease = _dead_run_lease()
+    release, closed = threading.Event(), []
+
+    class Hanging(SimBackend):
+        def open(self):
+            release.wait(10)  # the test's net; released once the command returned
+            return super().open()
+
+        def close(self):
+            closed.append(True)
+            super().close()
+
+    for module in (run, procedures):
+        monkeypatch.setattr(module, "make_backend", lambda c, clock: Hanging(c))
+    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    out_root = tmp_path / "runs"
+    try:
+        code, out, err = mkm_cli([*command, "--backend", "sim", *(
+            ["--out", str(out_root)] if command[0] == "acquire" else [])])
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and code == 1 and out == "" and not closed
+    simulated = "SIMULATED " if command[0] == "acquire" else ""  # a run says it in its line
+    assert err.splitlines()[-1] == (
+        f"mkm {command[0]}: error: {simulated}opening the device did not return within 0.2 s "
+        "(the driver hangs): the vent is NOT known to be written (the open writes it); VENT BY "
+        "HAND")
+    assert not out_root.exists() or not list(out_root.iterdir())  # no run folder
+    assert lease.path.exists()  # the dead run stays marked
