@@ -33,6 +33,7 @@ from mkm.bench.run import (
     DriverHangs,
     StderrNotice,
     WriteHung,
+    bench_key_within,
     close_within,
     make_backend,
     make_operator,
@@ -69,11 +70,12 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
     """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
     run left pressurised, and close (vent again) on exit. ``notify`` receives the operator's
-    lines (default: stderr, ``mkm <command>: ...``). An open that hangs
+    lines (default: stderr, ``mkm <command>: ...``). A serial number that names the bench
+    that hangs (:func:`mkm.bench.run.bench_key_within`), an open that hangs
     (:func:`mkm.bench.run.open_within`) or a vent written for dead runs that hangs
     (:func:`mkm.bench.run.vent_dead_runs`) ends the command."""
     notify = notify or StderrNotice(command)
-    owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
+    owner = BenchOwner(bench_key_within(backend, "; VENT BY HAND"), command)
     try:
         with owner:
             dead_runs = owner.dead_runs()  # before the device is opened
@@ -141,14 +143,17 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     the vent). A device lost (at open, on the vent write or on the check's reads) is reset and
     vented on fresh tasks first (NI: ``open`` and ``revive``, within a few seconds). Raises
     :class:`BenchError` when the device cannot be opened, its open does not return within
-    :data:`mkm.bench.run.OPEN_WAIT_S` (the driver hangs) or the device stays lost, when the
+    :data:`mkm.bench.run.OPEN_WAIT_S` (the driver hangs; so for its serial number, read before
+    it, :func:`mkm.bench.run.bench_key_within`) or the device stays lost, when the
     pressure stays above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live
     holder does not let go.
     """
     notify = notify or StderrNotice("vent")
     config = with_backend(config, backend)
     device = make_backend(config, clock)
-    key = getattr(device, "bench_key", "unknown")
+    # needed before the vent: a run holding the bench is asked to stop (its tasks hold the
+    # device) and the lock is keyed by it; a driver that hangs there ends the command
+    key = bench_key_within(device)
     bookkeeping: list[str] = []
     stopped, answered = _ask_to_stop(key, stop_wait_s, bookkeeping)
     if stopped:

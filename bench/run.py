@@ -139,6 +139,16 @@ def driver_call(call, what: str, then: str, wait_s: float | None = None):
     return out[0]
 
 
+def bench_key_within(backend: Backend, then: str = "") -> str:
+    """``backend.bench_key`` waited for :data:`OPEN_WAIT_S` (:func:`driver_call`): an NI
+    device's serial number is read through the driver (a lost device reset for up to 3 s, as
+    its open) before the device is opened, since the bench's lock, a run holding it and the
+    markers of dead runs are keyed by it. ``then`` follows what a hang says."""
+    return driver_call(lambda: getattr(backend, "bench_key", "unknown"),
+                       "reading the device's serial number (it names the bench)",
+                       f"nothing was written to the device, not even the vent{then}")
+
+
 #: what a command says of an open that hangs (:func:`open_within`)
 OPEN_HUNG = "the vent is NOT known to be written (the open writes it)"
 
@@ -604,13 +614,14 @@ class BenchRun:
         """Run the whole sequence; the run folder holds the truth whatever happens.
 
         Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
-        holds the bench, :class:`mkm.bench.ownership.StateFolderBroken` (nothing touched) when
-        the bench state folder does not answer as the bench is taken or its dead runs looked
-        for.
+        holds the bench, :class:`DriverHangs` (nothing touched) when the device's serial number
+        that names the bench is not read within :data:`OPEN_WAIT_S`,
+        :class:`mkm.bench.ownership.StateFolderBroken` (nothing touched) when the bench state
+        folder does not answer as the bench is taken or its dead runs looked for.
         """
         try:
-            with BenchOwner(getattr(self.backend, "bench_key", "unknown"), self.command) as owner, \
-                    awake():  # Windows must not sleep with the muscle pressurised
+            with BenchOwner(bench_key_within(self.backend, "; VENT BY HAND"), self.command) \
+                    as owner, awake():  # Windows must not sleep with the muscle pressurised
                 self.owner = owner
                 self._dead_runs = owner.dead_runs()  # before the device is opened
                 self._console = _Console(sys.stderr)

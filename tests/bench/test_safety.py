@@ -1648,3 +1648,53 @@ def test_an_open_that_hangs_ends_every_command_in_one_line(mkm_cli, monkeypatch,
         "HAND")
     assert not out_root.exists() or not list(out_root.iterdir())  # no run folder
     assert lease.path.exists()  # the dead run stays marked
+
+
+@pytest.mark.parametrize("command", [["vent"], ["acquire", "--clock", "virtual"], ["tare"],
+                                     ["check"], ["calibrate-loadcell", "--masses", "0,5"]])
+def test_a_serial_number_that_hangs_ends_every_command_in_one_line(mkm_cli, monkeypatch,
+                                                                  tmp_path, command):
+    # every command reads the device's serial number, which names the bench (its lock, a run
+    # holding it, the markers of dead runs), before it opens the device; on NI that goes
+    # through the driver, and a driver that hangs there held the command, `mkm vent`
+    # included, nothing said. It cannot come after the vent: `mkm vent` must first ask a run
+    # holding the bench to stop (its tasks hold the device). Now it is waited for OPEN_WAIT_S,
+    # then the command ends in one line, VENT BY HAND, exit 1; the device is not opened, no run
+    # folder is made, and a run that died on the bench stays marked.
+    import mkm.bench.procedures as procedures
+    import mkm.bench.run as run
+
+    lease = _dead_run_lease()
+    release, opened = threading.Event(), []
+
+    class Hanging(SimBackend):
+        @property
+        def bench_key(self):
+            release.wait(10)  # the test's net; released once the command returned
+            return self._key
+
+        @bench_key.setter
+        def bench_key(self, key):
+            self._key = key
+
+        def open(self):
+            opened.append(True)
+            return super().open()
+
+    for module in (run, procedures):
+        monkeypatch.setattr(module, "make_backend", lambda c, clock: Hanging(c))
+    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    out_root = tmp_path / "runs"
+    try:
+        code, out, err = mkm_cli([*command, "--backend", "sim", *(
+            ["--out", str(out_root)] if command[0] == "acquire" else [])])
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and code == 1 and out == "" and not opened
+    assert err.splitlines()[-1] == (
+        f"mkm {command[0]}: error: reading the device's serial number (it names the bench) did "
+        "not return within 0.2 s (the driver hangs): nothing was written to the device, not "
+        "even the vent; VENT BY HAND")
+    assert not out_root.exists() or not list(out_root.iterdir())  # no run folder
+    assert lease.path.exists()  # the dead run stays marked
