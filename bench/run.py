@@ -25,7 +25,9 @@ Safety, in every exit path:
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - a read of the device that hangs past its timeout with a pressure commanded is vented by a
   watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a command write
-  that hangs, and a read of the shutdown that hangs after its vent;
+  that hangs, and a read of the shutdown that hangs after its vent; the calls before the
+  watchdog (the device's serial number, its open, the start of the inputs) are bounded
+  (:func:`driver_call`): one that hangs ends the run with its reason;
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` (read on
   while still falling, at most :data:`mkm.bench.vent.FALLING_MAX_S`) and stay there, read from
@@ -121,8 +123,9 @@ OPEN_WAIT_S = 10.0
 
 
 class DriverHangs(BenchError):
-    """A call into the driver no watchdog watches yet (the device's open) did not return
-    within its bound (:func:`driver_call`): the command ends there, the call left behind."""
+    """A call into the driver no watchdog watches yet (the device's serial number, its open, a
+    run's start of the inputs) did not return within its bound (:func:`driver_call`): the
+    command ends there, the call left behind."""
 
 
 def driver_call(call, what: str, then: str, wait_s: float | None = None):
@@ -771,7 +774,11 @@ class BenchRun:
             stop_time=self._stop_time, lease=self.lease, observers=self._observers,
             guard=self.signals.deferred)
         self.acquisition.command(0.0, "vent")
-        self.backend.start()
+        # no watchdog yet: bounded as `mkm vent`'s start of the inputs (the AO write's timeout
+        # and the margin, as a command write)
+        driver_call(self.backend.start, "starting the device's inputs", "the vent was written "
+                    "before it and no pressure commanded; nothing was acquired",
+                    WATCHDOG_WRITE_S + READ_HANG_MARGIN_S)
         self._started = True
         if self.config.regulator.electronic:
             self._watchdog = _ReadWatchdog(self)
@@ -915,7 +922,8 @@ class BenchRun:
                 closing = close_within(self.backend) if self._opened else ""
             except BaseException as exc:
                 closing = f"closing the device failed ({type(exc).__name__}: {exc})"
-            return status, "; ".join(filter(None, [reason, closing]))
+            return self._record(status, reason, [closing] if closing else [],
+                                lambda problems: problems, signal_name, signal_number)
         problems = []
         acq = self.acquisition
         if self._watchdog is not None:
@@ -998,6 +1006,14 @@ class BenchRun:
             closing = f"closing the device failed ({type(exc).__name__}: {exc})"
         if closing:
             problems.append(closing)
+        return self._record(status, reason, problems, told, signal_name, signal_number)
+
+    def _record(self, status: RunStatus, reason: str, problems: list[str], told,
+                signal_name, signal_number) -> tuple[RunStatus, str]:
+        """After the vent and the close: the books (observers closed, the bench marker, the
+        run folder's final record, the marker let go or kept); ``told(problems)`` places
+        ``vented`` among the problems. The final status and reason; never raises."""
+        acq = self.acquisition
         for observer in self._observers:
             try:
                 observer.close()

@@ -1698,3 +1698,47 @@ def test_a_serial_number_that_hangs_ends_every_command_in_one_line(mkm_cli, monk
         "even the vent; VENT BY HAND")
     assert not out_root.exists() or not list(out_root.iterdir())  # no run folder
     assert lease.path.exists()  # the dead run stays marked
+
+
+def test_a_start_of_the_inputs_that_hangs_ends_the_run_with_its_reason(config, tmp_path,
+                                                                       monkeypatch):
+    # a run opens the device (which vents), makes its folder, writes the vent again and starts
+    # the inputs; the watchdog comes after. The driver hung in the start: the run sat in it,
+    # nothing said, its run.json `running`. Now the start is waited for 2 s (the AO write's
+    # timeout and the margin, as `mkm vent`'s), then the run ends failed, exit 1, its reason
+    # in run.json and no sample lost (none yet); nothing else is asked of the device but its
+    # bounded close, and the bench marker is let go: no pressure was ever commanded.
+    import mkm.bench.run as run
+
+    release, calls = threading.Event(), []
+
+    class Hanging(SimBackend):
+        def start(self):
+            calls.append("start")
+            release.wait(10)  # the test's net; released once the run returned
+            super().start()
+
+        def write_command(self, volts):
+            calls.append(volts)
+            super().write_command(volts)
+
+        def read(self, n_samples, timeout_s):
+            calls.append("read")
+            return super().read(n_samples, timeout_s)
+
+    monkeypatch.setattr(run, "make_backend", lambda c, clock: Hanging(c))
+    try:
+        result = acquire(config, out_root=tmp_path / "runs", **QUIET)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    reason = ("starting the device's inputs did not return within 2 s (the driver hangs): the "
+              "vent was written before it and no pressure commanded; nothing was acquired")
+    assert still_hung and (result.status, result.exit_code) == ("failed", 1)
+    assert result.reason == reason and not result.manual_vent_required
+    assert calls[calls.index("start"):] == ["start", 0.0]  # then only the close's vent
+    saved = load_run(result.path)
+    assert (saved.meta.status, saved.meta.reason) == ("failed", reason)
+    assert saved.n_samples == 0 and saved.meta.counters["samples"] == 0 and not saved.problems
+    assert saved.commands["command_bar"].tolist() == [0.0]  # the vent before the start
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # nothing pressurised: let go
