@@ -35,6 +35,7 @@ from mkm.bench.run import (
     WriteHung,
     bench_key_within,
     close_within,
+    driver_call,
     make_backend,
     make_operator,
     open_within,
@@ -115,8 +116,9 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     with session(device, "tare") as info:
-        device.start()
-        volts = mean_volts(device, config, seconds)
+        bounded = _Bounded(device, config.daq.sample_rate_hz)
+        bounded.start()
+        volts = mean_volts(bounded, config, seconds)
     out = validate_tare(volts[:, 0], config)
     if config.regulator.electronic:
         out.update(vented_monitor(config.regulator.monitor_bar(volts[:, 1])))
@@ -342,6 +344,34 @@ class _Timed:
         return getattr(self._backend, name)
 
 
+class _Bounded:
+    """``backend`` whose start of the inputs, reads and count of samples waiting each return
+    within the bound a run's watchdog gives them (as :class:`_Timed`'s), or end the command
+    (:class:`mkm.bench.run.DriverHangs`, the call left behind): a tare or a load-cell
+    calibration, at 0 bar, has no watchdog, and a driver that hangs held it, nothing said."""
+
+    THEN = "nothing was pressurised, and nothing is measured"
+
+    def __init__(self, backend: Backend, rate_hz: float):
+        self._backend, self._rate_hz = backend, rate_hz
+
+    def start(self) -> None:
+        driver_call(self._backend.start, "starting the device's inputs", self.THEN,
+                    WATCHDOG_WRITE_S + READ_HANG_MARGIN_S)
+
+    def read(self, n_samples: int, timeout_s: float):
+        return driver_call(lambda: self._backend.read(n_samples, timeout_s),
+                           f"a read of the device (its timeout {timeout_s:g} s)", self.THEN,
+                           timeout_s + n_samples / self._rate_hz + READ_HANG_MARGIN_S)
+
+    def available(self) -> int:
+        return driver_call(self._backend.available, "the count of samples waiting",
+                           self.THEN, READ_HANG_MARGIN_S)
+
+    def __getattr__(self, name):
+        return getattr(self._backend, name)
+
+
 def _watched_check(device: Backend, config: BenchConfig, start: bool = False) -> VentCheck:
     """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads (and, with
     ``start``, the start of the inputs before them) watched as a run's watchdog watches them: a
@@ -497,12 +527,13 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
     operator = make_operator(config, device)
     volts = []
     with session(device, "calibrate-loadcell"):
-        device.start()
+        bounded = _Bounded(device, config.daq.sample_rate_hz)
+        bounded.start()
         for mass in mass_kg:
             operator.hang_mass(float(mass))
-            while device.available() > 0:  # discard what came while the mass was being hung
-                device.read(device.available(), config.daq.read_timeout_s)
-            volts.append(float(mean_volts(device, config, seconds)[:, 0].mean()))
+            while bounded.available() > 0:  # discard what came while the mass was being hung
+                bounded.read(bounded.available(), config.daq.read_timeout_s)
+            volts.append(float(mean_volts(bounded, config, seconds)[:, 0].mean()))
         operator.hang_mass(0.0)
     bench = f"{config.daq.backend} bench" + (f" (SIMULATED, seed {config.sim.seed})"
                                                if config.simulated else "")

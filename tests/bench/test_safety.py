@@ -1742,3 +1742,44 @@ def test_a_start_of_the_inputs_that_hangs_ends_the_run_with_its_reason(config, t
     assert saved.n_samples == 0 and saved.meta.counters["samples"] == 0 and not saved.problems
     assert saved.commands["command_bar"].tolist() == [0.0]  # the vent before the start
     assert not list(bench_folder("sim-Dev1").glob("*.json"))  # nothing pressurised: let go
+
+
+@pytest.mark.parametrize("command, hangs, said", [
+    ("tare", "read", "a read of the device (its timeout 1 s) did not return within 2.5 s"),
+    ("calibrate_loadcell", "start", "starting the device's inputs did not return within 2 s"),
+])
+def test_a_call_that_hangs_in_a_tare_or_a_calibration_ends_it_in_one_line(
+        config, monkeypatch, command, hangs, said):
+    # `mkm tare` and `mkm calibrate-loadcell` start the inputs and read them with no watchdog:
+    # a driver that hung there held the command, nothing said. Now each call is given the bound
+    # a run's watchdog gives it (a read: its timeout, its block's time and 1 s; the start: the
+    # AO write's timeout and 1 s), then the command ends in one line; the device is closed
+    # (bounded) and the bench let go.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    release = threading.Event()
+
+    class Hanging(SimBackend):
+        def start(self):
+            if hangs == "start":
+                release.wait(10)  # the test's net; released once the command returned
+            super().start()
+
+        def read(self, n_samples, timeout_s):
+            if hangs == "read":
+                release.wait(10)
+            return super().read(n_samples, timeout_s)
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    args = (c, [0.0, 5.0]) if command == "calibrate_loadcell" else (c,)
+    try:
+        with pytest.raises(BenchError) as caught:
+            getattr(procedures, command)(*args, seconds=0.5)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and str(caught.value) == (
+        f"{said} (the driver hangs): nothing was pressurised, and nothing is measured")
+    assert not list(bench_folder("sim-Dev1").glob("*"))  # the bench let go
