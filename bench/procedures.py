@@ -19,22 +19,26 @@ import numpy as np
 from scipy import stats
 
 from mkm.bench.backend import AOWriteFailed, Backend, BenchError, DaqDisconnected, DeviceInfo
-from mkm.bench.bounded import call_within
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
 from mkm.bench.preflight import expected_force_N, warnings
 from mkm.bench.run import (
+    OPEN_HUNG,
     READ_HANG_MARGIN_S,
     VENT_WRITES,
     WATCH_EVERY_S,
     WATCHDOG_WRITE_S,
     BoundedWrite,
+    DriverHangs,
     StderrNotice,
     WriteHung,
+    bench_key_within,
     close_within,
+    driver_call,
     make_backend,
     make_operator,
+    open_within,
     vent_dead_runs,
     with_backend,
 )
@@ -60,11 +64,6 @@ from mkm.bench.vent import VentCheck, reading_bar, verify_vent
 
 MAX_SECONDS = 600.0  # a tare or a calibration mass is averaged for at most this long
 STOP_WAIT_S = 30.0  # `mkm vent` waits this long for a run it asked to stop
-#: `mkm vent` waits this long [s] for the device's open, which writes the vent: a USB-6001's
-#: open (two tasks, the AO started, 0 V written within its 1 s timeout) is expected within a
-#: second, one that answers as lost within about 5 (reset and opened again for
-#: REVIVE_WITHIN_S, 3 s, then the open); twice that for a slow, loaded bench PC
-OPEN_WAIT_S = 10.0
 
 
 @contextmanager
@@ -72,14 +71,16 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
     """Own the bench (``command`` names what for), open ``backend`` (which writes the vent
     command; a lost NI device is reset and opened again first), vent and report a bench a dead
     run left pressurised, and close (vent again) on exit. ``notify`` receives the operator's
-    lines (default: stderr, ``mkm <command>: ...``). A vent written for dead runs that hangs
-    ends the command (:func:`mkm.bench.run.vent_dead_runs`)."""
+    lines (default: stderr, ``mkm <command>: ...``). A serial number that names the bench
+    that hangs (:func:`mkm.bench.run.bench_key_within`), an open that hangs
+    (:func:`mkm.bench.run.open_within`) or a vent written for dead runs that hangs
+    (:func:`mkm.bench.run.vent_dead_runs`) ends the command."""
     notify = notify or StderrNotice(command)
-    owner = BenchOwner(getattr(backend, "bench_key", "unknown"), command)
+    owner = BenchOwner(bench_key_within(backend, "; VENT BY HAND"), command)
     try:
         with owner:
             dead_runs = owner.dead_runs()  # before the device is opened
-            info = backend.open()
+            info = open_within(backend.open, f"{OPEN_HUNG}; VENT BY HAND")  # never closed then
             try:
                 for marker in vent_dead_runs(backend, dead_runs, owner.on_state_folder):
                     notify(marker.vented_now())
@@ -115,8 +116,9 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     with session(device, "tare") as info:
-        device.start()
-        volts = mean_volts(device, config, seconds)
+        bounded = _Bounded(device, config.daq.sample_rate_hz)
+        bounded.start()
+        volts = mean_volts(bounded, config, seconds)
     out = validate_tare(volts[:, 0], config)
     if config.regulator.electronic:
         out.update(vented_monitor(config.regulator.monitor_bar(volts[:, 1])))
@@ -143,14 +145,17 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     the vent). A device lost (at open, on the vent write or on the check's reads) is reset and
     vented on fresh tasks first (NI: ``open`` and ``revive``, within a few seconds). Raises
     :class:`BenchError` when the device cannot be opened, its open does not return within
-    :data:`OPEN_WAIT_S` (the driver hangs) or the device stays lost, when the pressure stays
-    above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live holder does not let
-    go.
+    :data:`mkm.bench.run.OPEN_WAIT_S` (the driver hangs; so for its serial number, read before
+    it, :func:`mkm.bench.run.bench_key_within`) or the device stays lost, when the
+    pressure stays above ``safety.vent_below_bar`` for ``safety.vent_timeout_s``, or a live
+    holder does not let go.
     """
     notify = notify or StderrNotice("vent")
     config = with_backend(config, backend)
     device = make_backend(config, clock)
-    key = getattr(device, "bench_key", "unknown")
+    # needed before the vent: a run holding the bench is asked to stop (its tasks hold the
+    # device) and the lock is keyed by it; a driver that hangs there ends the command
+    key = bench_key_within(device)
     bookkeeping: list[str] = []
     stopped, answered = _ask_to_stop(key, stop_wait_s, bookkeeping)
     if stopped:
@@ -167,15 +172,11 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     try:
         # the open writes the vent (a lost device is reset first); a driver that hangs there
         # leaves the user staring at nothing: bounded, then said
-        returned, exc = call_within(lambda: _refused_again(device.open, notify), OPEN_WAIT_S,
-                                    "mkm-vent-open")
-        if not returned:
+        try:
+            open_within(lambda: _refused_again(device.open, notify))
+        except DriverHangs:
             open_hung = True
-            raise BenchError(f"opening the device did not return within {OPEN_WAIT_S:g} s (the "
-                             "driver hangs): the vent is NOT known to be written (the open "
-                             "writes it)")
-        if exc is not None:
-            raise exc
+            raise
         if config.regulator.electronic:  # marked once the vent is out, never waited for: a
             # process killed during the check leaves the bench marked
             owner.post(lambda: mark_vent(key, "vent", "", owner.state))
@@ -343,6 +344,34 @@ class _Timed:
         return getattr(self._backend, name)
 
 
+class _Bounded:
+    """``backend`` whose start of the inputs, reads and count of samples waiting each return
+    within the bound a run's watchdog gives them (as :class:`_Timed`'s), or end the command
+    (:class:`mkm.bench.run.DriverHangs`, the call left behind): a tare or a load-cell
+    calibration, at 0 bar, has no watchdog, and a driver that hangs held it, nothing said."""
+
+    THEN = "nothing was pressurised, and nothing is measured"
+
+    def __init__(self, backend: Backend, rate_hz: float):
+        self._backend, self._rate_hz = backend, rate_hz
+
+    def start(self) -> None:
+        driver_call(self._backend.start, "starting the device's inputs", self.THEN,
+                    WATCHDOG_WRITE_S + READ_HANG_MARGIN_S)
+
+    def read(self, n_samples: int, timeout_s: float):
+        return driver_call(lambda: self._backend.read(n_samples, timeout_s),
+                           f"a read of the device (its timeout {timeout_s:g} s)", self.THEN,
+                           timeout_s + n_samples / self._rate_hz + READ_HANG_MARGIN_S)
+
+    def available(self) -> int:
+        return driver_call(self._backend.available, "the count of samples waiting",
+                           self.THEN, READ_HANG_MARGIN_S)
+
+    def __getattr__(self, name):
+        return getattr(self._backend, name)
+
+
 def _watched_check(device: Backend, config: BenchConfig, start: bool = False) -> VentCheck:
     """:func:`mkm.bench.vent.verify_vent` on a thread of its own, its reads (and, with
     ``start``, the start of the inputs before them) watched as a run's watchdog watches them: a
@@ -498,12 +527,13 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
     operator = make_operator(config, device)
     volts = []
     with session(device, "calibrate-loadcell"):
-        device.start()
+        bounded = _Bounded(device, config.daq.sample_rate_hz)
+        bounded.start()
         for mass in mass_kg:
             operator.hang_mass(float(mass))
-            while device.available() > 0:  # discard what came while the mass was being hung
-                device.read(device.available(), config.daq.read_timeout_s)
-            volts.append(float(mean_volts(device, config, seconds)[:, 0].mean()))
+            while bounded.available() > 0:  # discard what came while the mass was being hung
+                bounded.read(bounded.available(), config.daq.read_timeout_s)
+            volts.append(float(mean_volts(bounded, config, seconds)[:, 0].mean()))
         operator.hang_mass(0.0)
     bench = f"{config.daq.backend} bench" + (f" (SIMULATED, seed {config.sim.seed})"
                                                if config.simulated else "")

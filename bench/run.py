@@ -25,7 +25,9 @@ Safety, in every exit path:
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
 - a read of the device that hangs past its timeout with a pressure commanded is vented by a
   watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a command write
-  that hangs, and a read of the shutdown that hangs after its vent;
+  that hangs, and a read of the shutdown that hangs after its vent; the calls before the
+  watchdog (the device's serial number, its open, the start of the inputs) are bounded
+  (:func:`driver_call`): one that hangs ends the run with its reason;
 - every vent is verified (:mod:`mkm.bench.vent`): the monitor (or the operator's manometer
   reading) must fall below ``safety.vent_below_bar`` within ``safety.vent_timeout_s`` (read on
   while still falling, at most :data:`mkm.bench.vent.FALLING_MAX_S`) and stay there, read from
@@ -111,6 +113,54 @@ def close_within(backend: Backend, wait_s: float = CLOSE_WAIT_S) -> str:
     if exc is not None:
         raise exc
     return ""
+
+
+#: the device's open, which writes the vent, is waited for this long [s]: a USB-6001's open (two
+#: tasks, the AO started, 0 V written within its 1 s timeout) is expected within a second, one
+#: that answers as lost within about 5 (reset and opened again for REVIVE_WITHIN_S, 3 s, then
+#: the open); twice that for a slow, loaded bench PC
+OPEN_WAIT_S = 10.0
+
+
+class DriverHangs(BenchError):
+    """A call into the driver no watchdog watches yet (the device's serial number, its open, a
+    run's start of the inputs) did not return within its bound (:func:`driver_call`): the
+    command ends there, the call left behind."""
+
+
+def driver_call(call, what: str, then: str, wait_s: float | None = None):
+    """``call()`` on a thread of its own (:func:`mkm.bench.bounded.call_within`), waited for
+    ``wait_s`` [s] (default :data:`OPEN_WAIT_S`): what it returned, or raises what it raised;
+    :class:`DriverHangs` past it, saying ``what`` did not return, then ``then``."""
+    wait_s = OPEN_WAIT_S if wait_s is None else wait_s
+    out = []
+    returned, exc = call_within(lambda: out.append(call()), wait_s, "mkm-driver")
+    if not returned:
+        raise DriverHangs(f"{what} did not return within {wait_s:g} s (the driver hangs): {then}")
+    if exc is not None:
+        raise exc
+    return out[0]
+
+
+def bench_key_within(backend: Backend, then: str = "") -> str:
+    """``backend.bench_key`` waited for :data:`OPEN_WAIT_S` (:func:`driver_call`): an NI
+    device's serial number is read through the driver (a lost device reset for up to 3 s, as
+    its open) before the device is opened, since the bench's lock, a run holding it and the
+    markers of dead runs are keyed by it. ``then`` follows what a hang says."""
+    return driver_call(lambda: getattr(backend, "bench_key", "unknown"),
+                       "reading the device's serial number (it names the bench)",
+                       f"nothing was written to the device, not even the vent{then}")
+
+
+#: what a command says of an open that hangs (:func:`open_within`)
+OPEN_HUNG = "the vent is NOT known to be written (the open writes it)"
+
+
+def open_within(open_device, then: str = OPEN_HUNG):
+    """``open_device()`` (the device's open, which writes the vent) waited for
+    :data:`OPEN_WAIT_S` (:func:`driver_call`); the device is not to be closed behind an open
+    that hangs: the close would wait behind it in the driver."""
+    return driver_call(open_device, "opening the device", then)
 
 
 class WriteHung(Exception):
@@ -531,7 +581,8 @@ class BenchRun:
         self._vent_rows_problems: list[str] = []  # the vent check's rows not recorded
         self.storage_failed = False
         self._folder_error: OSError | None = None  # the run folder could not be made
-        self._device_hangs = False  # a write of the start-up hangs in the driver
+        self._device_hangs = False  # a call of the start-up hangs in the driver
+        self._opened = False  # the device's open returned
 
     def request_stop(self, by: str | None = None) -> None:
         """What the first Ctrl-C does: stop at the next safe point (``by`` says who else asked)."""
@@ -566,13 +617,14 @@ class BenchRun:
         """Run the whole sequence; the run folder holds the truth whatever happens.
 
         Raises :class:`mkm.bench.ownership.BenchBusy` (nothing touched) when another process
-        holds the bench, :class:`mkm.bench.ownership.StateFolderBroken` (nothing touched) when
-        the bench state folder does not answer as the bench is taken or its dead runs looked
-        for.
+        holds the bench, :class:`DriverHangs` (nothing touched) when the device's serial number
+        that names the bench is not read within :data:`OPEN_WAIT_S`,
+        :class:`mkm.bench.ownership.StateFolderBroken` (nothing touched) when the bench state
+        folder does not answer as the bench is taken or its dead runs looked for.
         """
         try:
-            with BenchOwner(getattr(self.backend, "bench_key", "unknown"), self.command) as owner, \
-                    awake():  # Windows must not sleep with the muscle pressurised
+            with BenchOwner(bench_key_within(self.backend, "; VENT BY HAND"), self.command) \
+                    as owner, awake():  # Windows must not sleep with the muscle pressurised
                 self.owner = owner
                 self._dead_runs = owner.dead_runs()  # before the device is opened
                 self._console = _Console(sys.stderr)
@@ -635,7 +687,8 @@ class BenchRun:
             status, exit_code = RunStatus.FAILED, EXIT_STORAGE
             reason = (f"recording failed{f' for {what}' if what else ''} "
                       f"({type(outcome).__name__}: {outcome})")
-        elif isinstance(outcome, DeadRunsVentHung):  # said whole; the device is asked no more
+        elif isinstance(outcome, DeadRunsVentHung | DriverHangs):  # said whole; the device is
+            # asked no more
             status, reason, self._device_hangs = RunStatus.FAILED, str(outcome), True
         elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
             status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
@@ -679,7 +732,9 @@ class BenchRun:
                 f"samples were lost in {len(meta.gaps)} gap(s): {spans}", EXIT_GAPS)
 
     def startup(self) -> None:
-        info = self.backend.open()  # writes the vent command first
+        # writes the vent command first; never closed when it hangs
+        info = open_within(self.backend.open, f"{OPEN_HUNG}; VENT BY HAND")
+        self._opened = True
         self.unvented = vent_dead_runs(self.backend, self._dead_runs, self.owner.on_state_folder)
         for marker in self.unvented:
             self.notify(marker.vented_now())
@@ -719,7 +774,11 @@ class BenchRun:
             stop_time=self._stop_time, lease=self.lease, observers=self._observers,
             guard=self.signals.deferred)
         self.acquisition.command(0.0, "vent")
-        self.backend.start()
+        # no watchdog yet: bounded as `mkm vent`'s start of the inputs (the AO write's timeout
+        # and the margin, as a command write)
+        driver_call(self.backend.start, "starting the device's inputs", "the vent was written "
+                    "before it and no pressure commanded; nothing was acquired",
+                    WATCHDOG_WRITE_S + READ_HANG_MARGIN_S)
         self._started = True
         if self.config.regulator.electronic:
             self._watchdog = _ReadWatchdog(self)
@@ -858,12 +917,13 @@ class BenchRun:
         ``say_vent``: ``reason`` (a stop) is followed by ``vented`` once the vent command
         reached the device, and only then: a failed one is said instead."""
         if self._device_hangs:  # before any pressure: a vent or a read would wait behind the
-            # write under way in the driver; the close is bounded
+            # call under way in the driver; the close is bounded, and not made behind an open
             try:
-                closing = close_within(self.backend)
+                closing = close_within(self.backend) if self._opened else ""
             except BaseException as exc:
                 closing = f"closing the device failed ({type(exc).__name__}: {exc})"
-            return status, "; ".join(filter(None, [reason, closing]))
+            return self._record(status, reason, [closing] if closing else [],
+                                lambda problems: problems, signal_name, signal_number)
         problems = []
         acq = self.acquisition
         if self._watchdog is not None:
@@ -946,6 +1006,14 @@ class BenchRun:
             closing = f"closing the device failed ({type(exc).__name__}: {exc})"
         if closing:
             problems.append(closing)
+        return self._record(status, reason, problems, told, signal_name, signal_number)
+
+    def _record(self, status: RunStatus, reason: str, problems: list[str], told,
+                signal_name, signal_number) -> tuple[RunStatus, str]:
+        """After the vent and the close: the books (observers closed, the bench marker, the
+        run folder's final record, the marker let go or kept); ``told(problems)`` places
+        ``vented`` among the problems. The final status and reason; never raises."""
+        acq = self.acquisition
         for observer in self._observers:
             try:
                 observer.close()

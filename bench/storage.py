@@ -35,6 +35,7 @@ import json
 import math
 import os
 import socket
+import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, NamedTuple
@@ -686,8 +687,80 @@ def _kept_elsewhere(path: Path) -> list[str]:
         return []
     span = f"{sample.iloc[0]}-{sample.iloc[-1]}" if len(sample) > 1 else f"{sample.iloc[0]}"
     return [f"samples {span} ({len(sample)}) are not in samples.csv: the run folder refused "
-            f"them, and they are kept in {kept} (append its rows, not its header, to "
+            f"them, and they are kept in {kept} (`mkm recover {path}` joins them to "
             "samples.csv once the folder takes writes again)"]
+
+
+def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
+    """Join the samples the run folder ``run_dir`` refused to the end, kept in the state folder
+    (:func:`kept_samples_path`), back into its samples.csv once the folder takes writes again,
+    and count them in run.json (its reason then says so; a run.json still ``running`` keeps its
+    reason for the outcome the bench marker holds). What was done, in words, and whether
+    run.json took the count.
+
+    ``ValueError`` (nothing changed) when nothing is kept, the run still records, the folder or
+    samples.csv still refuses writes, or the kept rows do not continue samples.csv's last
+    sample (after a gap recorded there). The kept rows are written as they are, after
+    samples.csv's last whole row; those it holds already are left out; the kept file stays.
+    """
+    path = Path(run_dir)
+    meta = read_meta(path)
+    kept, samples_csv = kept_samples_path(path), path / "samples.csv"
+    if not kept.is_file():
+        raise ValueError(f"{path}: no samples of this run are kept in {kept}: nothing to join")
+    if meta.status == RunStatus.RUNNING and meta.process and meta.process.alive():
+        raise ValueError(f"{path} is still being recorded (pid {meta.process.pid}): expected a "
+                         "run that has ended")
+    if not samples_csv.is_file():
+        raise ValueError(f"{samples_csv} is missing: expected the run's samples.csv to join "
+                         f"the kept samples of {kept} to")
+    header, *rows = kept.read_bytes().splitlines(keepends=True)
+    if header.rstrip(b"\r\n") != ",".join(SAMPLE_COLUMNS).encode():
+        raise ValueError(f"{kept} does not start with samples.csv's header: expected the rows "
+                         "a run kept there")
+    rows = [r if r.endswith(b"\n") else r + b"\n" for r in rows]
+    try:
+        numbers = [int(r.split(b",", 1)[0]) for r in rows]
+    except ValueError:
+        raise ValueError(f"{kept} holds a row without a sample number: expected the rows a run "
+                         "kept there") from None
+    last = _last_row(samples_csv)
+    last_sample = int(last[0]) if last else -1
+    new = [(n, r) for n, r in zip(numbers, rows, strict=True) if n > last_sample]
+    if not new:
+        raise ValueError(f"the samples kept in {kept} are all in {samples_csv} already (its "
+                         f"last sample is {last_sample}): nothing to join; the kept file may "
+                         "be deleted")
+    lost = sum(g.lost_samples for g in meta.gaps if g.after_sample == last_sample)
+    if new[0][0] != last_sample + 1 + lost:
+        raise ValueError(f"the samples kept in {kept} begin at sample {new[0][0]}, but "
+                         f"{samples_csv} ends at sample {last_sample}: expected this run's "
+                         f"kept rows, from sample {last_sample + 1 + lost}; nothing joined")
+    try:
+        with tempfile.TemporaryFile(dir=path):  # the folder, not only the file, takes writes
+            pass
+        with open(samples_csv, "r+b") as f:
+            f.truncate(_whole_rows_bytes(samples_csv))  # a half row a killed writer left
+            f.seek(0, os.SEEK_END)
+            f.write(b"".join(r for _, r in new))
+            f.flush()
+            os.fsync(f.fileno())
+    except OSError as exc:
+        raise ValueError(f"{path} still refuses writes ({exc.strerror or exc}): nothing "
+                         f"joined, the samples stay kept in {kept}; expected a run folder this "
+                         "user can write to again") from None
+    span = f"samples {new[0][0]}-{new[-1][0]} ({len(new)})"
+    done = f"{span} kept in {kept} were joined to {samples_csv}"
+    held = Run(path, meta, pd.DataFrame(), meta.status).n_samples
+    meta.counters["samples"] = held
+    if meta.status != RunStatus.RUNNING:
+        meta.reason = f"{meta.reason}; {span} kept in {kept} were joined to samples.csv"
+    try:
+        write_json_atomic(path / "run.json", meta.as_dict())
+    except OSError as exc:
+        return (f"{done}, but run.json could not count them ({exc.strerror or exc}): "
+                f"samples.csv holds {held} samples"), False
+    return f"{done}; run.json counts {held} samples", True
 
 
 def release_reserve(path: Path) -> None:

@@ -1,4 +1,4 @@
-"""``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess``: argument parsing only.
+"""``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess|recover``: argument parsing only.
 
 Hardware failures (:class:`mkm.bench.backend.BenchError`, a bench another process holds
 included) print one line ``mkm <command>: error: ...`` and exit with status 1; bad input is a
@@ -161,6 +161,18 @@ def register(subparsers) -> None:
     rep.add_argument("--out", help="folder that receives the new run folder (default: beside "
                      "RUN_DIR)")
     rep.set_defaults(func=_reprocess)
+
+    rec = subparsers.add_parser(
+        "recover", help="join the samples a read-only run folder refused back into it",
+        description="Append the samples a run folder refused to the end (gone read-only, a "
+                    "share remounted), kept in the user state folder as "
+                    "unwritten/<run folder>-samples.csv, to the run's samples.csv once the "
+                    "folder takes writes again, and count them in run.json. Refused in one "
+                    "line, nothing changed, while the folder is still read-only or when the "
+                    "kept rows do not continue samples.csv's last sample; the kept file stays.",
+        epilog="example: mkm recover mkm-out/runs/20261202T093800Z_paper-prototype")
+    rec.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
+    rec.set_defaults(func=_recover)
 
 
 def _failed(args, exc: Exception) -> int:  # a mkm.bench.backend.BenchError
@@ -356,3 +368,14 @@ def _reprocess(args) -> int:
     path = reprocess(args.run_dir, overlay_config(args.run_dir, args.config), args.out)
     print(path)
     return 0
+
+
+def _recover(args) -> int:
+    from mkm.bench.folders import one_run_folder
+    from mkm.bench.storage import join_kept_samples
+
+    args.run_dir = one_run_folder(args.run_dir)
+    done, counted = join_kept_samples(args.run_dir)
+    say(args, "note" if counted else "error", done)
+    print(args.run_dir)
+    return 0 if counted else EXIT_FAILED

@@ -669,8 +669,8 @@ def test_a_run_whose_refused_samples_are_kept_elsewhere_says_so_when_read(config
     kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
     elsewhere = pd.read_csv(kept)["sample"]
     said = (f"samples 60-{elsewhere.iloc[-1]} ({len(elsewhere)}) are not in samples.csv: the "
-            f"run folder refused them, and they are kept in {kept} (append its rows, not its "
-            "header, to samples.csv once the folder takes writes again)")
+            f"run folder refused them, and they are kept in {kept} (`mkm recover {result.path}` "
+            "joins them to samples.csv once the folder takes writes again)")
     assert said in load_run(result.path).problems
     out = export_run(result.path, tmp_path / "export", "csv")
     metadata = pd.read_csv(out / "metadata.csv").set_index("key")["value"]
@@ -700,6 +700,64 @@ def test_kept_samples_appended_to_the_run_are_no_longer_said_missing(config, tmp
     run = load_run(result.path)
     assert not [p for p in run.problems if str(kept) in p]
     assert run.samples["sample"].tolist() == list(range(len(run.samples)))  # whole, once
+
+
+def test_mkm_recover_joins_the_kept_samples_back_once_the_folder_takes_writes(
+        config, tmp_path, monkeypatch, mkm_cli):
+    # the samples a read-only run folder refused are kept in the state folder, and the note
+    # asked the engineer to append them by hand. Now `mkm recover RUN` does: refused in one line,
+    # nothing changed, while the folder is still read-only or when the kept rows do not
+    # continue samples.csv; then the rows joined, every sample once and in order, and counted
+    # in run.json; asked again, it says there is nothing left to join.
+    import json
+    import types
+
+    import mkm.bench.storage as storage
+    from mkm.bench.run import acquire
+
+    queued = _read_only_from_60(monkeypatch)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    run_json, samples_csv = result.path / "run.json", result.path / "samples.csv"
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    assert meta["status"] == "running"  # run.json refused too: the marker keeps the outcome
+    meta["process"]["started_unix_s"] -= 100.0  # its process has ended since
+    run_json.write_text(json.dumps(meta), encoding="utf-8")
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    before = (run_json.read_bytes(), samples_csv.read_bytes(), kept.read_bytes())
+
+    def denied(*args, **kwargs):
+        raise PermissionError(errno.EROFS, "Read-only file system")
+
+    with monkeypatch.context() as read_only:  # the folder still refuses writes
+        read_only.setattr(storage, "tempfile", types.SimpleNamespace(TemporaryFile=denied))
+        code, out, err = mkm_cli(["recover", str(result.path)])
+    assert (code, out) == (2, "") and err == (
+        f"mkm recover: error: {result.path} still refuses writes (Read-only file system): "
+        f"nothing joined, the samples stay kept in {kept}; expected a run folder this user can "
+        "write to again\n")
+    header, *rows = before[2].splitlines(keepends=True)
+    kept.write_bytes(header + b"".join(rows[10:]))  # rows that do not follow samples.csv's
+    code, out, err = mkm_cli(["recover", str(result.path)])
+    assert (code, out) == (2, "") and err == (
+        f"mkm recover: error: the samples kept in {kept} begin at sample 70, but {samples_csv} "
+        "ends at sample 59: expected this run's kept rows, from sample 60; nothing joined\n")
+    kept.write_bytes(before[2])
+    assert (run_json.read_bytes(), samples_csv.read_bytes(), kept.read_bytes()) == before
+
+    code, out, err = mkm_cli(["recover", str(result.path)])
+    n = len(queued)
+    assert (code, out) == (0, f"{result.path}\n") and err == (
+        f"mkm recover: note: samples 60-{queued[-1]} ({n - 60}) kept in {kept} were joined to "
+        f"{samples_csv}; run.json counts {n} samples\n")
+    run = load_run(result.path)
+    assert run.samples["sample"].tolist() == queued  # every sample acquired, once, in order
+    assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == n
+    assert not [p for p in run.problems if str(kept) in p or "samples counted" in p]
+    assert kept.read_bytes() == before[2]  # kept until the engineer deletes it
+    code, out, err = mkm_cli(["recover", str(result.path)])
+    assert code == 2 and "are all in" in err and "nothing to join" in err
 
 
 def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,

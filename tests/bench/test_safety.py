@@ -1579,6 +1579,7 @@ def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, m
     # OPEN_WAIT_S, then one line says the vent is not known to be written: VENT BY HAND, exit 1;
     # the device is not closed behind the open under way (a close would wait behind it).
     import mkm.bench.procedures as procedures
+    import mkm.bench.run as run
 
     release, closed = threading.Event(), []
 
@@ -1592,7 +1593,7 @@ def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, m
             super().close()
 
     monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
-    monkeypatch.setattr(procedures, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
     try:
         code, out, err = mkm_cli(["vent", "--backend", "sim"])
         still_hung = not release.is_set()
@@ -1603,3 +1604,182 @@ def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, m
         "mkm vent: error: opening the device did not return within 0.2 s (the driver hangs): "
         "the vent is NOT known to be written (the open writes it); VENT BY HAND")
     assert not list(bench_folder("sim-Dev1").glob("*.json"))  # no vent to name: not marked
+
+
+@pytest.mark.parametrize("command", [["acquire", "--clock", "virtual"], ["tare"], ["check"],
+                                     ["calibrate-loadcell", "--masses", "0,5"]])
+def test_an_open_that_hangs_ends_every_command_in_one_line(mkm_cli, monkeypatch, tmp_path,
+                                                           command):
+    # `mkm vent` bounds its open; `mkm acquire`, `tare`, `check` and `calibrate-loadcell` sat
+    # in an open the driver hangs in, nothing said, as long as it hung. Now each waits
+    # OPEN_WAIT_S, then ends in one line, exit 1: the vent is not known to be written, VENT BY
+    # HAND; the device is not closed behind the open, no run folder is made, and a run that
+    # died on the bench stays marked for the next command.
+    import mkm.bench.procedures as procedures
+    import mkm.bench.run as run
+
+    lease = _dead_run_lease()
+    release, closed = threading.Event(), []
+
+    class Hanging(SimBackend):
+        def open(self):
+            release.wait(10)  # the test's net; released once the command returned
+            return super().open()
+
+        def close(self):
+            closed.append(True)
+            super().close()
+
+    for module in (run, procedures):
+        monkeypatch.setattr(module, "make_backend", lambda c, clock: Hanging(c))
+    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    out_root = tmp_path / "runs"
+    try:
+        code, out, err = mkm_cli([*command, "--backend", "sim", *(
+            ["--out", str(out_root)] if command[0] == "acquire" else [])])
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and code == 1 and out == "" and not closed
+    simulated = "SIMULATED " if command[0] == "acquire" else ""  # a run says it in its line
+    assert err.splitlines()[-1] == (
+        f"mkm {command[0]}: error: {simulated}opening the device did not return within 0.2 s "
+        "(the driver hangs): the vent is NOT known to be written (the open writes it); VENT BY "
+        "HAND")
+    assert not out_root.exists() or not list(out_root.iterdir())  # no run folder
+    assert lease.path.exists()  # the dead run stays marked
+
+
+@pytest.mark.parametrize("command", [["vent"], ["acquire", "--clock", "virtual"], ["tare"],
+                                     ["check"], ["calibrate-loadcell", "--masses", "0,5"]])
+def test_a_serial_number_that_hangs_ends_every_command_in_one_line(mkm_cli, monkeypatch,
+                                                                  tmp_path, command):
+    # every command reads the device's serial number, which names the bench (its lock, a run
+    # holding it, the markers of dead runs), before it opens the device; on NI that goes
+    # through the driver, and a driver that hangs there held the command, `mkm vent`
+    # included, nothing said. It cannot come after the vent: `mkm vent` must first ask a run
+    # holding the bench to stop (its tasks hold the device). Now it is waited for OPEN_WAIT_S,
+    # then the command ends in one line, VENT BY HAND, exit 1; the device is not opened, no run
+    # folder is made, and a run that died on the bench stays marked.
+    import mkm.bench.procedures as procedures
+    import mkm.bench.run as run
+
+    lease = _dead_run_lease()
+    release, opened = threading.Event(), []
+
+    class Hanging(SimBackend):
+        @property
+        def bench_key(self):
+            release.wait(10)  # the test's net; released once the command returned
+            return self._key
+
+        @bench_key.setter
+        def bench_key(self, key):
+            self._key = key
+
+        def open(self):
+            opened.append(True)
+            return super().open()
+
+    for module in (run, procedures):
+        monkeypatch.setattr(module, "make_backend", lambda c, clock: Hanging(c))
+    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    out_root = tmp_path / "runs"
+    try:
+        code, out, err = mkm_cli([*command, "--backend", "sim", *(
+            ["--out", str(out_root)] if command[0] == "acquire" else [])])
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and code == 1 and out == "" and not opened
+    assert err.splitlines()[-1] == (
+        f"mkm {command[0]}: error: reading the device's serial number (it names the bench) did "
+        "not return within 0.2 s (the driver hangs): nothing was written to the device, not "
+        "even the vent; VENT BY HAND")
+    assert not out_root.exists() or not list(out_root.iterdir())  # no run folder
+    assert lease.path.exists()  # the dead run stays marked
+
+
+def test_a_start_of_the_inputs_that_hangs_ends_the_run_with_its_reason(config, tmp_path,
+                                                                       monkeypatch):
+    # a run opens the device (which vents), makes its folder, writes the vent again and starts
+    # the inputs; the watchdog comes after. The driver hung in the start: the run sat in it,
+    # nothing said, its run.json `running`. Now the start is waited for 2 s (the AO write's
+    # timeout and the margin, as `mkm vent`'s), then the run ends failed, exit 1, its reason
+    # in run.json and no sample lost (none yet); nothing else is asked of the device but its
+    # bounded close, and the bench marker is let go: no pressure was ever commanded.
+    import mkm.bench.run as run
+
+    release, calls = threading.Event(), []
+
+    class Hanging(SimBackend):
+        def start(self):
+            calls.append("start")
+            release.wait(10)  # the test's net; released once the run returned
+            super().start()
+
+        def write_command(self, volts):
+            calls.append(volts)
+            super().write_command(volts)
+
+        def read(self, n_samples, timeout_s):
+            calls.append("read")
+            return super().read(n_samples, timeout_s)
+
+    monkeypatch.setattr(run, "make_backend", lambda c, clock: Hanging(c))
+    try:
+        result = acquire(config, out_root=tmp_path / "runs", **QUIET)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    reason = ("starting the device's inputs did not return within 2 s (the driver hangs): the "
+              "vent was written before it and no pressure commanded; nothing was acquired")
+    assert still_hung and (result.status, result.exit_code) == ("failed", 1)
+    assert result.reason == reason and not result.manual_vent_required
+    assert calls[calls.index("start"):] == ["start", 0.0]  # then only the close's vent
+    saved = load_run(result.path)
+    assert (saved.meta.status, saved.meta.reason) == ("failed", reason)
+    assert saved.n_samples == 0 and saved.meta.counters["samples"] == 0 and not saved.problems
+    assert saved.commands["command_bar"].tolist() == [0.0]  # the vent before the start
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))  # nothing pressurised: let go
+
+
+@pytest.mark.parametrize("command, hangs, said", [
+    ("tare", "read", "a read of the device (its timeout 1 s) did not return within 2.5 s"),
+    ("calibrate_loadcell", "start", "starting the device's inputs did not return within 2 s"),
+])
+def test_a_call_that_hangs_in_a_tare_or_a_calibration_ends_it_in_one_line(
+        config, monkeypatch, command, hangs, said):
+    # `mkm tare` and `mkm calibrate-loadcell` start the inputs and read them with no watchdog:
+    # a driver that hung there held the command, nothing said. Now each call is given the bound
+    # a run's watchdog gives it (a read: its timeout, its block's time and 1 s; the start: the
+    # AO write's timeout and 1 s), then the command ends in one line; the device is closed
+    # (bounded) and the bench let go.
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    release = threading.Event()
+
+    class Hanging(SimBackend):
+        def start(self):
+            if hangs == "start":
+                release.wait(10)  # the test's net; released once the command returned
+            super().start()
+
+        def read(self, n_samples, timeout_s):
+            if hangs == "read":
+                release.wait(10)
+            return super().read(n_samples, timeout_s)
+
+    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
+    c = config.replace(daq={"read_timeout_s": 0.5})
+    args = (c, [0.0, 5.0]) if command == "calibrate_loadcell" else (c,)
+    try:
+        with pytest.raises(BenchError) as caught:
+            getattr(procedures, command)(*args, seconds=0.5)
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    assert still_hung and str(caught.value) == (
+        f"{said} (the driver hangs): nothing was pressurised, and nothing is measured")
+    assert not list(bench_folder("sim-Dev1").glob("*"))  # the bench let go
