@@ -338,8 +338,8 @@ def _vent(args) -> int:
     config = _hardware_config(args, "vent")
     try:
         out = vent(config, clock=args.clock)
-    except BenchError as exc:
-        say(args, "error", f"{exc}; VENT BY HAND")
+    except BenchError as exc:  # said once where the reason says it already
+        say(args, "error", str(exc) if "VENT BY HAND" in str(exc) else f"{exc}; VENT BY HAND")
         return EXIT_FAILED
     if out["manual"]:
         print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "

@@ -1783,3 +1783,19 @@ def test_a_call_that_hangs_in_a_tare_or_a_calibration_ends_it_in_one_line(
     assert still_hung and str(caught.value) == (
         f"{said} (the driver hangs): nothing was pressurised, and nothing is measured")
     assert not list(bench_folder("sim-Dev1").glob("*"))  # the bench let go
+
+
+def test_a_vent_refused_with_its_own_vent_by_hand_says_it_once(monkeypatch, mkm_cli):
+    # a vent check that failed ends its reason with "VENT BY HAND and check the regulator";
+    # the command added "; VENT BY HAND" again
+    import mkm.bench.procedures as procedures
+    from mkm.bench.backend import BenchError
+
+    def refused(config, **kwargs):
+        raise BenchError("the monitor still reads 0.5 bar after 10 s: VENT BY HAND and check "
+                         "the regulator")
+
+    monkeypatch.setattr(procedures, "vent", refused)
+    code, out, err = mkm_cli(["vent", "--backend", "sim"])
+    assert code == 1 and err.count("VENT BY HAND") == 1, err
+    assert err.rstrip().endswith("VENT BY HAND and check the regulator")
