@@ -1042,9 +1042,28 @@ def _advice_options(r: _Run) -> list[str]:
 
         options = (_identified_record(r.calibration) or {}).get("options") or []
         paths = [x["path"] for x in _identified_runs(r.calibration) if "path" in x]
+        if options and r.muscle.eps == 0.0 and all(
+                float(x.get("muscle", {}).get("L0_mm", -1.0)) == r.muscle.L0_mm
+                for x in _identified_runs(r.calibration)):
+            options = _with_rest_length(list(options))
         r.advice_options = (options_for_runs(options, list(dict.fromkeys(
             [*paths, str(r.run.path)]))) if options and paths else list(options))
     return r.advice_options
+
+
+def _with_rest_length(options: list[str]) -> list[str]:
+    """``options`` with the rest length among the fitted groups: a run declared at its rest
+    length that the calibration of its longer-shortened runs does not carry over to is most
+    often a table's first length already shortened (the published maps:
+    docs/guide/threshold.md), which identify then fits."""
+    from mkm.identify.groups import DEFAULT_GROUPS
+
+    if "--params" not in options:
+        return [*options, "--params", ",".join((*DEFAULT_GROUPS, "L0"))]
+    k = options.index("--params") + 1
+    groups = options[k].split(",")
+    return options if "L0" in groups else [*options[:k], ",".join([*groups, "L0"]),
+                                           *options[k + 1:]]
 
 
 def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> dict[int, str]:

@@ -725,6 +725,41 @@ def test_the_identify_advice_for_tables_names_only_what_tables_can_identify(tmp_
         ("theta0", "rubber"), [])
 
 
+def test_the_identify_advice_for_a_run_at_its_rest_length_fits_the_rest_length(tmp_path):
+    """The published DMSP-10-250 identified on its eps 0.064 and 0.184 lengths: the report's
+    advice for its rest-length run, which the calibration does not carry over to, was to
+    identify with it among them as before (chi2/nu 138, published.md); a table's first length
+    is most often already shortened, and with the rest length fitted the same runs give
+    chi2/nu 15 (the rest length 251.5 mm). Other lengths keep the options as they were."""
+    import shlex
+
+    from mkm.bench.exchange import import_table, parse_accuracy
+    from mkm.fem.calibration import Calibration
+    from mkm.identify.procedure import identify
+    from mkm.paths import published_table
+
+    imported = import_table(published_table("martens_boblan_2017_forcemaps.csv"),
+                            tmp_path / "runs", {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5,
+                                                "L0_mm": None, "eps": None},
+                            select="Festo DMSP-10-250",
+                            accuracy=parse_accuracy("force=0.5N+1%,pressure=0.01bar"))
+    rest, fitted, other = imported[0].path, [imported[1].path, imported[3].path], \
+        imported[2].path  # eps 0; 0.064, 0.184; 0.124
+    result = identify(fitted, model="thickwall", search="model", cache_dir=None)
+    result.model = "axisym:mesh=coarse"  # as if confirmed by the FE: its distance advises
+    result.options = ["--params", "theta0,rubber,offset", "--model", "axisym:mesh=coarse"]
+    result.write(tmp_path / "id")
+    said = []
+    build_report([rest, other], parse_models("eq2,thickwall,axisym:mesh=coarse,surrogate:kind="
+                                              "muscle-gp-range"), out_dir=tmp_path / "r",
+                 cache_dir=None, tolerance=0.02, surrogate_section=False,
+                 calibration=Calibration.load(tmp_path / "id" / "calibration.json"),
+                 notify=said.append)
+    commands = [shlex.split(line.split("`")[1]) for line in said if "`mkm identify" in line]
+    assert {c[4]: c[c.index("--params") + 1] for c in commands} == {
+        str(rest): "theta0,rubber,offset,L0", str(other): "theta0,rubber,offset"}, said
+
+
 def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument():
     """The ``mkm identify RUN`` a verdict suggests can be copied into cmd, PowerShell or bash
     (was: ``mkm identify C:\\Users\\Lab PC\\...``, two arguments)."""
