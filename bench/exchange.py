@@ -57,6 +57,7 @@ from mkm.bench.tables import (
     by_unit_columns,
     check_channel_times,
     column_text,
+    counts_rows,
     current_header,
     directions,
     flags,
@@ -333,6 +334,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     for table in tables:
         bar.start(f"recognising {table.name}")
         found = recognise(table, columns, units, scaling)
+        # a logger's row numbers under a clock's name: read as seconds, a 1 Hz clock the file
+        # does not say
+        counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
         missing = [r for r in REQUIRED_ROLES if r not in found]
         if other is not None:
             if not missing:
@@ -378,16 +382,19 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             table = without_repeated_rows(table, [found[r] for r in ("time", *REQUIRED_ROLES)])
             check_channel_times(table, found)
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
-                                                 k not in taken_columns(found)])
+                                                 k not in taken_columns(found)], counter)
         # without a time column every row is a step, or a record's rows are taken as evenly
         # spaced: a clock by a name the reader does not know is left out (an export's steps
         # have times)
         unread = [] if exported or "time" in found else unread_time_columns(table, found)
-        read_as = ("its rows are taken as evenly spaced in time" if unread and
+        read_as = ("its rows are taken as evenly spaced in time" if (unread or counter) and
                    not one_step_per_row and
                    series.sampled_without_time(recognition.values("pressure"))
                    else "every row is a step")
         notify(f"{table.name}: {recognition.line()}"
+               + (f"; column {counter!r} counts the rows (whole numbers stepping by 1, no "
+                  f"unit), no clock: {read_as}; if it is seconds, --units time=s reads it as a "
+                  "1 Hz clock" if counter else "")
                + "".join(f"; column {header!r} holds times but is not read as the time "
                          f"column: {read_as}; if it is the record's clock, --columns "
                          f"time={header!r} reads the table as a time series"

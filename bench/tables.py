@@ -1285,6 +1285,23 @@ def _excel_serial_days(table: RawTable, column: Column) -> bool:
                 and np.ptp(values) < 1.0)
 
 
+#: the fewest rows a time column must have to be told a row counter
+ROW_COUNTER_MIN_ROWS = 3
+
+
+def counts_rows(table: RawTable, column: Column | None) -> bool:
+    """Whether a time column is a logger's row counter, no clock: whole numbers stepping by
+    exactly 1 from 0 or 1 under a header without a unit, neither named by ``--columns`` nor
+    given one by ``--units``. Read as seconds they would be a 1 Hz clock, which the file does
+    not say (a 100 Hz record would last a hundred times as long)."""
+    if column is None or column.unit is not None or column.given or column.excel_days \
+            or column.parts or len(table.rows) < ROW_COUNTER_MIN_ROWS:
+        return False
+    values = _plain_numbers([row[column.index] for row in table.rows], table.decimal)
+    return bool(values is not None and values[0] in (0.0, 1.0)
+                and np.all(values == np.round(values)) and np.all(np.diff(values) == 1.0))
+
+
 def _header_named(table: RawTable, role: str, given: str) -> str:
     """The header ``--columns ROLE=given`` names where no header is ``given`` itself: the one
     whose name without its unit is ``given`` (``Kanal 1`` for ``Kanal 1 [bar]``)."""
@@ -2052,6 +2069,8 @@ class Recognition:
     table: RawTable
     columns: dict[str, Column]
     ignored: list[str] = field(default_factory=list)
+    #: the header of a time column read as a row counter (:func:`counts_rows`), no clock
+    row_counter: str | None = None
     _values: dict = field(default_factory=dict, repr=False)
 
     def values(self, role: str, optional: bool = False) -> np.ndarray:
@@ -2113,4 +2132,5 @@ class Recognition:
     def describe(self) -> dict:
         return {**self.table.describe(),
                 "columns": {role: c.describe() for role, c in self.columns.items()},
-                "ignored_columns": self.ignored}
+                "ignored_columns": self.ignored,
+                **({"row_counter_column": self.row_counter} if self.row_counter else {})}

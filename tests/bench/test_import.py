@@ -973,6 +973,44 @@ def test_a_column_of_date_times_by_a_name_unknown_is_read_or_named(header, tmp_p
                 f"time={header!r} reads the table as a time series") in err
 
 
+@pytest.mark.parametrize("first", [0, 1])
+def test_a_time_column_counting_the_rows_is_no_clock(first, tmp_path, mkm_cli):
+    # a logger's 'Zeitpunkt' holding row numbers (1, 2, 3, ...) of a 100 Hz staircase: read as
+    # seconds, a 1 Hz clock, its 1 s steps between holds became 100 s ramps and the record
+    # was binned as a ramp of 40 steps
+    t = np.arange(0.0, 60.0, 0.01)
+    levels = [1.0, 2.0, 2.5]
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    path = tmp_path / "logger.csv"
+    pd.DataFrame({"Zeitpunkt": np.arange(first, first + t.size), "Druck [bar]": p,
+                  "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert ("column 'Zeitpunkt' counts the rows (whole numbers stepping by 1, no unit), no "
+            "clock: its rows are taken as evenly spaced in time; if it is seconds, --units "
+            "time=s reads it as a 1 Hz clock") in err
+    recorded = run.meta.imported_from
+    assert recorded["row_counter_column"] == "Zeitpunkt" and "time" not in recorded["columns"]
+    assert recorded["shape"] == "staircase"
+    steps = run.steps
+    np.testing.assert_allclose(steps["set_pressure_bar"], levels, atol=1e-9)
+    # noiseless holds: each plateau's mean is the model's force at its pressure, but for the
+    # ramp's rows within the plateau's 0.03 bar band at its end (3 rows of the 1 bar/s ramp,
+    # each under 0.03 bar * 420 N/bar off, among the 500 of the hold's second half)
+    np.testing.assert_allclose(steps["force_N_mean"], thickwall_N(levels, 0.0),
+                               atol=3 * 0.03 * 420 / 500)
+    # the file says nothing else; the option the line names reads it as a 1 Hz clock
+    (clocked,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--units", "time=s")
+    assert "'Zeitpunkt' -> time [s]" in err and "counts the rows" not in err
+    assert clocked.samples["time_s"].iloc[-1] == first + t.size - 1  # seconds as read
+    # seconds under the same header are the record's clock, as before
+    pd.DataFrame({"Zeitpunkt": t, "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False, sep=";")
+    (timed,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "'Zeitpunkt' -> time [s]" in err and "counts the rows" not in err
+    assert timed.samples["time_s"].iloc[-1] == pytest.approx(t[-1])
+
+
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
 def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
                                                                          mkm_cli):
