@@ -88,7 +88,8 @@ class Role:
     def matches(self, name: str) -> bool:
         return name in self.names or (bool(self.endings) and " " not in name
                                       and name.endswith(self.endings)
-                                      and not name.startswith(SET_POINT_PREFIX))
+                                      and not name.startswith(SET_POINT_PREFIX)
+                                      and not _statistic_compound(name))
 
 
 #: the roles a column may take by its unit alone, where no column's name says it
@@ -105,12 +106,36 @@ def _set_point(name: str) -> bool:
 #: results sheet's 'F max (N)', 'Peak force'): not taken by its unit alone (a mean is a hold's
 #: reading, as a step table gives it, and a total the sum of load cells sharing the pull)
 STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "std", "stdev", "sd",
-                   "count", "anzahl", "range"}
+                   "count", "anzahl", "range", "maximal", "maximale", "minimal", "minimale"}
+#: how a one-word compound naming a statistic of a force or a pressure starts or ends
+#: (German Maximalkraft, Höchstkraft, Spitzendruck, Mindestdruck; English maxforce; Fmax,
+#: pmin), longest first: no reading, as 'F max' is none
+STATISTIC_PREFIXES = ("maximal", "minimal", "hoechst", "spitzen", "mindest", "höchst", "peak",
+                      "max", "min")
+STATISTIC_SUFFIXES = ("max", "min", "peak")
+
+
+def _statistic_compound(word: str) -> bool:
+    """Whether one word is a statistic's prefix or suffix joined to the name of a force or a
+    pressure (``maximalkraft``, ``höchstzugkraft``, ``fmax``): a short prefix (``max``,
+    ``min``) or a suffix to the name itself, so that ``minderdruck`` stays a pressure."""
+    def reading(rest: str, compound: bool) -> bool:
+        return any(rest in ROLES[r].names or (compound and ROLES[r].endings and rest.endswith(
+            ROLES[r].endings)) for r in BY_UNIT_ROLES)
+
+    prefix = next((p for p in STATISTIC_PREFIXES if word.startswith(p)), None)
+    suffix = next((p for p in STATISTIC_SUFFIXES if word.endswith(p)), None)
+    return bool(prefix and reading(word[len(prefix):], len(prefix) > 3)
+                or suffix and reading(word[:-len(suffix)], False))
 
 
 def statistic(name: str) -> bool:
-    """Whether a column's name (as :func:`parse_header` gives it) names a statistic."""
-    return bool(STATISTIC_WORDS & set(name.split()))
+    """Whether a column's name (as :func:`parse_header` gives it) names a statistic: a word of
+    :data:`STATISTIC_WORDS`, or one word compounding a statistic with a force or a pressure
+    (:func:`_statistic_compound`)."""
+    words = name.split()
+    return bool(STATISTIC_WORDS & set(words)) or (len(words) == 1
+                                                  and _statistic_compound(words[0]))
 #: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
 CLOCK_NAMES = {"millis": "ms", "micros": "us"}
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one

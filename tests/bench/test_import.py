@@ -464,6 +464,36 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
             "force='Peak force (N)' reads it") in err
 
 
+@pytest.mark.parametrize("header, role", [
+    ("Maximalkraft [N]", "force"), ("Höchstkraft [N]", "force"), ("Spitzenkraft [N]", "force"),
+    ("Fmax [N]", "force"), ("Kraft maximal [N]", "force"), ("Maximaldruck [bar]", "pressure"),
+    ("pmax [bar]", "pressure")])
+def test_a_statistic_compound_beside_the_reading_is_no_reading(header, role, tmp_path,
+                                                              mkm_cli):
+    # a German logger's running 'Maximalkraft' (the largest force so far) beside its 'Kraft':
+    # its name ends as a force's does, so it was a second force column and the table was
+    # refused; alone, it was read as the force
+    force = thickwall_N(PRESSURES[:5], 0.0)
+    largest = {"force": np.maximum.accumulate(force),
+               "pressure": np.maximum.accumulate(PRESSURES[:5])}[role]
+    path = tmp_path / "logger.csv"
+    pd.DataFrame({"Druck [bar]": PRESSURES[:5], "Kraft [N]": force, header: largest}).to_csv(
+        path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["ignored_columns"] == [header]
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], PRESSURES[:5], rtol=1e-6)
+    # the statistic alone is no reading: refused, named with the option that reads it
+    reading = {"force": "Kraft [N]", "pressure": "Druck [bar]"}[role]
+    pd.DataFrame({"Druck [bar]": PRESSURES[:5], "Kraft [N]": force, header: largest}).drop(
+        columns=reading).to_csv(path, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert (f"{header!r} names a statistic, not taken by its unit: --columns "
+            f"{role}={header!r} reads it") in err
+
+
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
     """A lab's 100 Hz record: 2 s vented, 10 s up to 2.5 bar, 10 s down, 1 s vented; the gauge
     reads ``vented_bar`` at rest, the load cell ``tare_N``; noise 0.005 bar and 0.3 N."""

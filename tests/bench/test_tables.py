@@ -261,6 +261,7 @@ def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     ("Luftdruck [bar]", "pressure"), ("Betriebsdruck (kPa)", "pressure"),
     ("Pression (bar)", "pressure"), ("Effort [N]", "force"), ("Kontraktion (%)", "eps"),
     ("Verkürzung [%]", "eps"), ("Ruhelänge [mm]", "L0"), ("Länge [mm]", "length"),
+    ("Minderdruck [bar]", "pressure"),
 ])
 def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
     # 'Zugkraft' was left unread: a German table names its force by its kind of pull
