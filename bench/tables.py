@@ -306,8 +306,18 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
         try:
             text = data.decode("utf-8-sig")
         except UnicodeDecodeError:
-            text = data.decode("latin-1")  # older Windows exports
+            text = _windows_text(data)
     return [_text_table(path, text)]
+
+
+def _windows_text(data: bytes) -> str:
+    """A text table that is no UTF-8: Windows' code page 1252, as Excel and loggers on a
+    Western European Windows save it (its ‰, €, – and curly quotes are no Latin-1 control
+    characters), else Latin-1, which decodes any byte."""
+    try:
+        return data.decode("cp1252")
+    except UnicodeDecodeError:  # the five bytes code page 1252 leaves undefined
+        return data.decode("latin-1")
 
 
 def _text_table(path: Path, text: str) -> RawTable:

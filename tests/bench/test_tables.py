@@ -681,6 +681,26 @@ def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     np.testing.assert_allclose(column_values(table, found["length"]), [250.0])
 
 
+def test_a_windows_1252_header_keeps_its_dashes_and_per_mille(tmp_path):
+    # Excel's CSV on a German Windows is code page 1252: its en dash (0x96) and per mille
+    # (0x89) were read as Latin-1's control characters, so the header shown and recorded was
+    # not the file's, and --columns naming it as Excel shows it found no such column
+    path = tmp_path / "lab.csv"
+    header = ("Zeit [s];Druck – Ist [bar];Kraft „gemessen“ [N];Dehnung [‰];Weg [µm];"
+              "Temperatur [°C]")
+    path.write_bytes(f"{header}\r\n0;1,5;150,5;0,5;10;22\r\n".encode("cp1252"))
+    (table,) = read_tables(path)
+    assert table.header == header.split(";")
+    found = recognise(table, columns={"pressure": "Druck – Ist [bar]",
+                                      "force": "Kraft „gemessen“ [N]"})
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [150.5])
+    # a byte code page 1252 leaves undefined (0x81) is read as Latin-1 reads it, not refused
+    path.write_bytes(b"Druck [bar];Kraft [N];Notiz\r\n1,5;150,5;\x81\r\n")
+    (table,) = read_tables(path)
+    assert table.rows == [["1,5", "150,5", "\x81"]]
+
+
 def test_a_loggers_units_row_under_the_names(tmp_path):
     table, found = _one(tmp_path, "Messung 7\nZeit;Druck;Kraft\ns;[kPa];(N)\n0;0;1,5\n"
                         "0,1;150;12,25\n")
