@@ -1209,7 +1209,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                              "name says so): expected a gauge pressure, above the atmosphere "
                              "as the regulator sets it (bar, bar(g), kPa, psi)")
         role = next((r for r, spec in ROLES.items() if spec.matches(name)), None)
-        if role is None or role in columns:
+        if role is None or role in columns or _symbol_of_another(name, unit):
             continue
         if role in found and header == found[role].header:
             raise ValueError(f"{table.name}: {_same_name(headers, header)}, each a {role} "
@@ -1277,6 +1277,21 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
     return found
+
+
+#: the quantities a one-letter name stands for beside the roles' (T a temperature, P a
+#: power, F or f a frequency), by a unit of each
+OTHER_SYMBOL_UNITS = ("K", "W", "Hz")
+
+
+def _symbol_of_another(name: str, unit: str | None) -> bool:
+    """Whether a one-letter name is the symbol of another quantity, which its unit says (``T
+    [°C]`` a temperature, not a time; ``P [W]`` a power; ``F [Hz]`` a frequency): a column
+    to leave, not a reading written in the wrong unit, which is refused naming it."""
+    parsed = parse_unit(unit) if len(name) == 1 and unit is not None else None
+    return parsed is not None and any(
+        parsed.dimensionality == registry().Unit(other).dimensionality
+        for other in OTHER_SYMBOL_UNITS)
 
 
 def by_unit_columns(table: RawTable, role: str, found: dict[str, Column]) -> list[int]:

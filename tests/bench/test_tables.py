@@ -274,6 +274,19 @@ def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
     np.testing.assert_allclose(column_values(table, found[role]), [scale])
 
 
+@pytest.mark.parametrize("other", ["T [°C]", "P [W]", "F [Hz]"])
+def test_a_symbol_of_another_quantity_is_no_reading(other, tmp_path):
+    # a temperature logged beside the record as 'T [°C]' was a second time column (the table
+    # refused), and alone was refused as a time in °C; a power 'P [W]' a second pressure
+    table, found = _one(tmp_path, f"Zeit [s];Druck [bar];Kraft [N];{other}\n0;1;100;22\n"
+                        "1;2;210;23\n")
+    assert {role: c.header for role, c in found.items()} == {
+        "time": "Zeit [s]", "pressure": "Druck [bar]", "force": "Kraft [N]"}
+    # a unit a reading may be mistaken in keeps its column, so its option is named
+    with pytest.raises(ValueError, match=r"'kg' is not a unit of force .*--units force=kgf"):
+        _one(tmp_path, "P [bar];F [kg]\n1;10\n", "kg.csv")
+
+
 def test_a_german_benchs_actual_reading_beside_its_set_point(tmp_path):
     # was: "no pressure column among 'Druck_Soll [bar]', 'Druck_Ist [bar]', ...": Ist (the
     # actual value) is the reading, Soll (the set point) is left out
