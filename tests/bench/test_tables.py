@@ -144,6 +144,17 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.5], rtol=1e-12)
 
 
+@pytest.mark.parametrize("header", ["Zeit [sek]", "Zeit [Sek.]", "Time (sec.)", "Zeit_sek"])
+def test_seconds_as_german_and_abbreviated_headers_write_them(header, tmp_path):
+    # 'Zeit [sek]' was refused: "'sek' is not a unit of time (expected one like s)"
+    table, found = _one(tmp_path, f"{header};Druck [bar];Kraft [N]\n0,5;1;10\n1,5;2;20\n")
+    assert found["time"].header == header
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.5, 1.5])
+    table, found = _one(tmp_path, "Zeit [msek];Druck [bar];Kraft [N]\n500;1;10\n1500;2;20\n",
+                        "ms.csv")
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.5, 1.5])
+
+
 # the technical atmosphere is 1 kgf/cm^2; the conventional inch of mercury the pressure of an
 # inch of mercury of 13595.1 kg/m^3 under standard gravity (3386.389 Pa)
 AT_BAR = KGF_N / 0.01**2 / 1e5
