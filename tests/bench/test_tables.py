@@ -155,6 +155,14 @@ def test_seconds_as_german_and_abbreviated_headers_write_them(header, tmp_path):
     np.testing.assert_allclose(column_values(table, found["time"]), [0.5, 1.5])
 
 
+def test_pounds_in_capitals_name_the_option_that_reads_them_as_a_force(tmp_path):
+    # 'Force (LBS)' was refused as "not a unit of force" with no word of --units force=lbf,
+    # which 'Force (lbs)' names
+    for header in ("Force (lbs)", "Force (LBS)"):
+        with pytest.raises(ValueError, match=r"is not a unit of force .*--units force=lbf"):
+            _one(tmp_path, f"Pressure (psi),{header}\n10,1\n20,2\n")
+
+
 # the technical atmosphere is 1 kgf/cm^2; the conventional inch of mercury the pressure of an
 # inch of mercury of 13595.1 kg/m^3 under standard gravity (3386.389 Pa)
 AT_BAR = KGF_N / 0.01**2 / 1e5
