@@ -554,11 +554,25 @@ def _is_number(cell) -> bool:
 
 
 def _units_row(cells: list[str]) -> bool:
-    """Whether a header row holds units of the roles only (``s``, ``[kPa]``, ``(N)``, ``%``,
-    ``-``); names such as ``P`` or ``F`` are not (pint: poise, farad)."""
-    units = [c.strip("[]() ") for c in cells if c]
-    return bool(units) and all(any(_fits(parse_unit(u), role) for role in ROLES.values())
-                               for u in units)
+    """Whether a header row holds units only (``s``, ``[kPa]``, ``(N)``, ``%``, ``-``, and a
+    logged temperature's ``°C`` or a displacement's ``in``), of the roles' quantities in all
+    its cells or in two of them at least; names such as ``P`` or ``F`` are not (pint: poise,
+    farad)."""
+    units = [_row_unit(c.strip("[]() ")) for c in cells if c]
+    roles = sum(any(_fits(u, role) for role in ROLES.values()) for u in units)
+    return bool(units) and all(u is not None for u in units) and roles >= min(2, len(units))
+
+
+def _row_unit(text: str):
+    """A cell of a units row as a unit: as :func:`parse_unit` reads it, or a word a header's
+    name holds as English that a row of units means as a unit (``in``: the inch)."""
+    found = parse_unit(text)
+    if found is None and text.lower() in NOT_UNITS:
+        try:
+            found = registry().Unit(text.lower())
+        except Exception:  # pint's parser raises many kinds ('of', 'to')
+            return None
+    return found
 
 
 def _refuse_a_labelled_row(where, numbers, rows, first_data) -> None:

@@ -745,6 +745,19 @@ def test_a_loggers_units_row_under_the_names(tmp_path):
     assert table.header == ["P", "F"] and set(found) == {"pressure", "force"}
 
 
+def test_a_units_row_with_a_temperature_and_a_displacement_is_read(tmp_path):
+    # a US logger's units row under its names, with a temperature in °F and a displacement in
+    # inches beside the readings: was no units row (°F and in are no role's units), so the
+    # units became the header and no pressure or force column was found
+    table, found = _one(tmp_path, "Time,Pressure,Force,Temperature,Displacement\n"
+                        "s,psi,lbf,°F,in\n0,14.5,10,72.5,0.01\n0.1,29,20,72.5,0.02\n")
+    assert table.header == ["Time [s]", "Pressure [psi]", "Force [lbf]", "Temperature [°F]",
+                            "Displacement [in]"]
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [14.5 * PSI_BAR, 29 * PSI_BAR])
+    np.testing.assert_allclose(column_values(table, found["force"]), [10 * LBF_N, 20 * LBF_N])
+
+
 def test_tab_separated_with_units_overridden(tmp_path):
     table, found = _one(tmp_path, "P\tF\n100\t10\n200\t20\n", "lab.tsv")
     assert table.separator == "\t"
