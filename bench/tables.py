@@ -168,9 +168,14 @@ ROLES = {
 }
 #: the direction words a table may use (English, German, French) -> the run folder's ``up``/``down``
 DIRECTION_WORDS = {"up": "up", "rising": "up", "increasing": "up", "loading": "up",
+                   "load": "up", "increase": "up", "inc": "up", "ascending": "up",
                    "down": "down", "falling": "down", "decreasing": "down", "unloading": "down",
-                   "auf": "up", "steigend": "up", "belastung": "up",
-                   "ab": "down", "fallend": "down", "entlastung": "down",
+                   "unload": "down", "decrease": "down", "dec": "down", "descending": "down",
+                   "dn": "down",
+                   "auf": "up", "steigend": "up", "belastung": "up", "belasten": "up",
+                   "aufwärts": "up", "aufwaerts": "up",
+                   "ab": "down", "fallend": "down", "entlastung": "down", "entlasten": "down",
+                   "abwärts": "down", "abwaerts": "down",
                    "montée": "up", "montee": "up", "charge": "up",
                    "descente": "down", "décharge": "down", "decharge": "down"}
 

@@ -337,6 +337,16 @@ def test_a_german_direction_column(tmp_path):
 
 
 
+@pytest.mark.parametrize("up, down", [("load", "Unload"), ("Increase", "decrease"),
+                                      ("ascending", "descending"), ("inc", "dec"), ("up", "dn"),
+                                      ("Belasten", "Entlasten"), ("aufwärts", "Abwärts")])
+def test_direction_words_as_labs_write_them(up, down, tmp_path):
+    # 'load'/'unload' was refused: "'load' is not a direction", and the file had to be edited
+    table, found = _one(tmp_path, f"Druck [bar];Kraft [N];Richtung\n0;0;{up}\n2;200;{up}\n"
+                        f"2;210;{down}\n0;0;{down}\n")
+    assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
+
+
 def test_a_french_direction_column(tmp_path):
     # was: 'Sens' not recognised, its montée/descente left out unsaid
     table, found = _one(tmp_path, "Pression (bar);Effort (N);Sens\n0;0;montée\n2;200;Montée\n"
