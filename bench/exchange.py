@@ -228,12 +228,17 @@ class ImportedRun:
     shape: str  # "steps", "staircase" or "ramp"
     n_steps: int
     notes: list[str]
+    #: the steps on the rising branches and on the falling ones
+    branches: tuple[int, int] = (0, 0)
 
     def line(self) -> str:
         made = {"steps": "one table row each", "staircase": "the plateaus of a staircase",
                 "ramp": "quasi-static bins of a ramp",
                 "export": "the exported run's own, with its samples"}[self.shape]
-        return f"{self.state}: {self.n_steps} step(s), {made}" + "".join(
+        up, down = self.branches
+        # both branches kept: said, so a loading and an unloading sweep are seen apart
+        apart = f" ({up} rising, {down} falling)" if up and down else ""
+        return f"{self.state}: {self.n_steps} step(s){apart}, {made}" + "".join(
             f"; {n}" for n in self.notes)
 
 
@@ -461,7 +466,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         writer.close()
         if copy := meta.imported_from.get("table_copy"):
             shutil.copyfile(path, writer.path / copy)
-        out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
+        rising = sum(s.direction == "up" for s in steps)
+        out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes,
+                               (rising, len(steps) - rising)))
         bar.done()
     bar.end()
     return out

@@ -514,6 +514,10 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
     recorded = run.meta.imported_from
     assert recorded["shape"] == "ramp" and "quasi-static bins of a ramp" in err
+    # the loading and the unloading branch both kept, and said apart (was: "N step(s)" alone)
+    up, down = (run.steps["direction"] == "up").sum(), (run.steps["direction"] == "down").sum()
+    assert up > 0 and down > 0
+    assert f"{up + down} step(s) ({up} rising, {down} falling), quasi-static bins" in err
     # the gauge's noise is 0.005 bar: its median over 2 s is within 0.002 of what it read
     assert recorded["vented_reading_bar"] == pytest.approx(0.4, abs=0.002)
     # 200 vented samples of 0.3 N noise: the zero is within 0.1 N of the load cell's offset
