@@ -308,6 +308,9 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
         text = data.decode("utf-16-le" if data[1:2] == b"\x00" else "utf-16-be",
                            errors="replace")
     else:
+        # a DOS program's end-of-file mark (Ctrl-Z) and a logger's file written into space
+        # filled with NULs beforehand end the text: no row
+        data = data.rstrip(b"\x00\x1a")
         try:
             text = data.decode("utf-8-sig")
         except UnicodeDecodeError:

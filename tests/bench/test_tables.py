@@ -485,6 +485,16 @@ def test_rows_of_separators_only_are_blank(tmp_path):
     assert table.row_numbers == [2, 4]  # a bad cell is still named by its row in the file
 
 
+@pytest.mark.parametrize("end", [b"\x1a", b"\x00" * 512, b"\r\n\x1a"])
+def test_an_end_of_file_mark_or_nul_padding_is_no_row(end, tmp_path):
+    # a DOS program's Ctrl-Z and a logger's preallocated NULs after the last line: read as a
+    # row skipped for a blank cell, or as a bad cell ('40,5\x1a'), that no editor shows
+    path = tmp_path / "lab.csv"
+    path.write_bytes(b"Druck [bar];Kraft [N]\r\n0,5;12,25\r\n1,0;40,5" + end)
+    (table,) = read_tables(path)
+    assert table.rows == [["0,5", "12,25"], ["1,0", "40,5"]]
+
+
 def test_excels_unicode_text_is_utf16(tmp_path):
     # Excel's "Unicode Text (*.txt)": UTF-16 with a byte-order mark, tab separated
     path = tmp_path / "export.txt"
