@@ -106,7 +106,9 @@ def _set_point(name: str) -> bool:
 #: results sheet's 'F max (N)', 'Peak force'): not taken by its unit alone (a mean is a hold's
 #: reading, as a step table gives it, and a total the sum of load cells sharing the pull)
 STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "std", "stdev", "sd",
-                   "count", "anzahl", "range", "maximal", "maximale", "minimal", "minimale"}
+                   "count", "anzahl", "range", "maximal", "maximale", "minimal", "minimale",
+                   "maxi", "mini", "spitzenwert", "höchstwert", "hoechstwert", "maximalwert",
+                   "minimalwert"}
 #: how a one-word compound naming a statistic of a force or a pressure starts or ends
 #: (German Maximalkraft, Höchstkraft, Spitzendruck, Mindestdruck; English maxforce; Fmax,
 #: pmin), longest first: no reading, as 'F max' is none
