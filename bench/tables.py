@@ -153,6 +153,7 @@ ROLES = {
                   "zeitpunkt", "messzeitpunkt",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
+                  "zeit 1 standardmessrate",
                   # seconds since 1970 as a logger names them
                   "unix time", "unix timestamp", "epoch", "epoch time", "posix time",
                   *CLOCK_NAMES), "s"),
