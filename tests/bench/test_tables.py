@@ -142,6 +142,12 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
                                rtol=1e-12)
     table, found = _one(tmp_path, "P [MBAR],F [N]\n500,1\n1500,2\n", "c.csv")
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.5], rtol=1e-12)
+    # a logger writing in capitals: MSEC was a megasecond, each 100 ms sample 1e8 s apart
+    table, found = _one(tmp_path, "TIME (MSEC),PRESSURE (PSIG),FORCE (LBF)\n0,1,1\n100,2,2\n",
+                        "d.csv")
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [PSI_BAR, 2 * PSI_BAR],
+                               rtol=1e-12)
 
 
 @pytest.mark.parametrize("header", ["Zeit [sek]", "Zeit [Sek.]", "Time (sec.)", "Zeit_sek"])
