@@ -770,16 +770,18 @@ NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
 #: siemens, ``at`` the technical atmosphere (a word where a header's name holds it, see
 #: :data:`NOT_UNITS`), ``in Hg`` an inch of mercury (not an inch times mercury's density), the
 #: gauge suffixes (the toolkit's pressures are gauge pressures), the seconds written
-#: ``sec.``, German ``sek``, ``Sek.`` and ``msek`` (pint reads none), ``MSEC`` a millisecond
-#: (pint: a megasecond), and ``LBS`` (pint reads ``lbs`` alone): a load cell's pounds, refused
-#: as a mass naming ``--units force=lbf``
+#: ``sec.``, German ``sek``, ``Sek.`` and ``msek`` (pint reads none), ``MSEC``, ``MV``, ``MA``
+#: and ``MMHG`` a millisecond, millivolt, milliampere and millimetre of mercury (pint: mega),
+#: and ``LBS`` and ``KG`` (pint reads ``lbs`` and ``kg`` alone): a load cell's pounds or
+#: kilograms, refused as a mass naming ``--units force=lbf`` or ``kgf``
 LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", "pa": "Pa",
              "kpa": "kPa", "mpa": "MPa", "psi": "psi", "psig": "psi", "at": "technical_atmosphere",
              "in hg": "inch_Hg", "in. hg": "inch_Hg", "inch hg": "inch_Hg", "mm hg": "mmHg",
              "n": "N", "kn": "kN", "dan": "daN", "kp": "kgf", "kilopond": "kgf", "kgf": "kgf",
              "lbf": "lbf", "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min",
              "sek": "s", "sek.": "s", "sec.": "s", "sekunden": "s", "msek": "ms", "lbs": "lb",
-             "msec": "ms", "usec": "us", "µsec": "us"}
+             "msec": "ms", "usec": "us", "µsec": "us", "mv": "mV", "ma": "mA", "mmhg": "mmHg",
+             "kg": "kg"}
 
 
 #: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü),

@@ -16,6 +16,7 @@ from mkm.bench.tables import (
     directions,
     parse_assignments,
     parse_header,
+    parse_scaling,
     parse_unit,
     plain_number,
     read_tables,
@@ -167,6 +168,26 @@ def test_pounds_in_capitals_name_the_option_that_reads_them_as_a_force(tmp_path)
     for header in ("Force (lbs)", "Force (LBS)"):
         with pytest.raises(ValueError, match=r"is not a unit of force .*--units force=lbf"):
             _one(tmp_path, f"Pressure (psi),{header}\n10,1\n20,2\n")
+
+
+def test_milli_units_in_capitals_are_not_mega(tmp_path):
+    # pint reads MV, MA and MMHG as a megavolt, a megaampere and a megametre of mercury: a load
+    # cell amplifier's millivolts scaled a billion times too large, a 4-20 mA loop refused
+    path = tmp_path / "lab.csv"
+    path.write_text("PRESSURE (MMHG),FORCE (MV)\n750.06,0\n1500.12,1000\n")
+    (table,) = read_tables(path)
+    found = recognise(table, scaling=parse_scaling("force=200N/V", None))
+    # the conventional millimetre of mercury: 13595.1 kg/m^3 * 9.80665 m/s^2 * 1 mm
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               np.array([750.06, 1500.12]) * 13595.1 * 9.80665e-3 / 1e5,
+                               rtol=1e-6)
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 200.0])
+    path.write_text("P (MA),F (N)\n4,0\n12,100\n")
+    (table,) = read_tables(path)
+    found = recognise(table, scaling=parse_scaling(None, None, "pressure=0:10bar"))
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 5.0])
+    with pytest.raises(ValueError, match=r"'KG' is not a unit of force .*--units force=kgf"):
+        _one(tmp_path, "P (bar),F (KG)\n1,10\n", "kg.csv")
 
 
 # the technical atmosphere is 1 kgf/cm^2; the conventional inch of mercury the pressure of an
