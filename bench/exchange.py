@@ -344,6 +344,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
         missing = [r for r in REQUIRED_ROLES if r not in found]
         if other is not None:
+            if counter:
+                raise ValueError(f"--join-by-time {Path(join).name}: {table.name}'s column "
+                                 f"{counter!r} counts the rows (whole numbers stepping by 1, no "
+                                 "unit), no clock to join by: expected a time column in both "
+                                 "tables; if it is seconds, --units time=s reads it so")
             if not missing:
                 raise ValueError(f"--join-by-time {Path(join).name}: {table.name} holds a "
                                  "pressure and a force column itself: expected the other table "

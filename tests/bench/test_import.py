@@ -1047,6 +1047,24 @@ def test_a_time_column_counting_the_rows_is_no_clock(first, tmp_path, mkm_cli):
     assert timed.samples["time_s"].iloc[-1] == pytest.approx(t[-1])
 
 
+def test_a_row_counter_is_no_clock_to_join_by(tmp_path, mkm_cli):
+    # the regulator's file counts its rows, the load cell's has seconds: refused as having no
+    # time column among 'Zeitpunkt', ... (which it shows)
+    t = np.arange(0.0, 30.0, 0.1)
+    p = np.interp(t, [0, 5, 25, 30], [0.0, 0.0, 2.5, 2.5])
+    table, other = tmp_path / "regulator.csv", tmp_path / "loadcell.csv"
+    pd.DataFrame({"Zeitpunkt": np.arange(1, t.size + 1), "Druck [bar]": p}).to_csv(
+        table, index=False, sep=";")
+    pd.DataFrame({"Zeit [s]": t, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(other, index=False,
+                                                                           sep=";")
+    code, _, err = mkm_cli(["import", str(table), "--join-by-time", str(other), "--join-shift",
+                            "0", *MUSCLE, "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("--join-by-time loadcell.csv: regulator.csv's column 'Zeitpunkt' counts the rows "
+            "(whole numbers stepping by 1, no unit), no clock to join by") in err
+    assert not (tmp_path / "runs").exists()
+
+
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
 def test_a_record_held_pressurised_at_its_start_keeps_its_gauge_pressures(header, tmp_path,
                                                                          mkm_cli):
