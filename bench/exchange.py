@@ -498,7 +498,14 @@ def _join_table(path: str | Path, scaling=None):
         raise ValueError(f"--join-by-time {Path(path).name}: {len(timed)} of its sheets hold a "
                          f"time column: expected one (sheets "
                          f"{', '.join(repr(t.sheet) for t in tables)}); save it alone")
-    return timed[0] if timed else (tables[0], recognise(tables[0], scaling=scaling))
+    table, found = timed[0] if timed else (tables[0], recognise(tables[0], scaling=scaling))
+    if counts_rows(table, found.get("time")):  # read as seconds, a 1 Hz clock it does not say
+        header = found["time"].header
+        raise ValueError(f"--join-by-time {Path(path).name}: its column {header!r} counts the "
+                         "rows (whole numbers stepping by 1, no unit), no clock to join by: "
+                         f"expected a time column in both tables; if it is seconds, name its "
+                         f"unit in the header ('{header} [s]')")
+    return table, found
 
 
 class _Stages:

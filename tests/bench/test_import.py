@@ -1063,6 +1063,17 @@ def test_a_row_counter_is_no_clock_to_join_by(tmp_path, mkm_cli):
     assert ("--join-by-time loadcell.csv: regulator.csv's column 'Zeitpunkt' counts the rows "
             "(whole numbers stepping by 1, no unit), no clock to join by") in err
     assert not (tmp_path / "runs").exists()
+    # the other way round: the load cell's rows were joined as a 1 Hz clock's
+    pd.DataFrame({"Zeit [s]": t, "Druck [bar]": p}).to_csv(table, index=False, sep=";")
+    pd.DataFrame({"Zeitpunkt": np.arange(1, t.size + 1), "Kraft [N]": thickwall_N(p, 0.0)}
+                 ).to_csv(other, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(table), "--join-by-time", str(other), "--join-shift",
+                            "0", *MUSCLE, "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("--join-by-time loadcell.csv: its column 'Zeitpunkt' counts the rows (whole numbers "
+            "stepping by 1, no unit), no clock to join by: expected a time column in both "
+            "tables; if it is seconds, name its unit in the header ('Zeitpunkt [s]')") in err
+    assert not (tmp_path / "runs").exists()
 
 
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])
