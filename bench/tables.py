@@ -569,7 +569,8 @@ def _units_row(cells: list[str]) -> bool:
     logged temperature's ``°C`` or a displacement's ``in``), of the roles' quantities in all
     its cells or in two of them at least; names such as ``P`` or ``F`` are not (pint: poise,
     farad)."""
-    units = [_row_unit(c.strip("[]() ")) for c in cells if c]
+    # an empty pair of brackets, '[]', is a column without a unit (a row counter's)
+    units = [_row_unit(c.strip("[]() ")) for c in cells if c.strip("[]() ")]
     roles = sum(any(_fits(u, role) for role in ROLES.values()) for u in units)
     return bool(units) and all(u is not None for u in units) and roles >= min(2, len(units))
 
@@ -640,7 +641,7 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     if header_index > 0 and _units_row(header):
         # a logger's two header rows, names over units ("Druck" over "kPa"): one header
         names = [str(c).strip() for c in rows[header_index - 1]] + [""] * width
-        header = [f"{n} [{u.strip('[]()')}]" if n and u else n or u
+        header = [f"{n} [{u.strip('[]() ')}]" if n and u.strip("[]() ") else n or u
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
     header = _labview_header(header, rows[:header_index])

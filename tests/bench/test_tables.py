@@ -787,6 +787,11 @@ def test_a_loggers_units_row_under_the_names(tmp_path):
     assert (table.header_row, table.title_rows) == (2, 1)
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
     np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+    # a column without a unit under empty brackets (a row counter's '[]') takes none
+    table, found = _one(tmp_path, "Nr.;Zeit;Druck;Kraft\n[];[s];[kPa];[N]\n1;0;0;1,5\n"
+                        "2;0,1;150;12,25\n", "n.csv")
+    assert table.header == ["Nr.", "Zeit [s]", "Druck [kPa]", "Kraft [N]"]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
     # one header of names that pint also reads (P: poise, F: farad) is not a units row
     table, found = _one(tmp_path, "Messung 7;x\nP;F\n1;2\n3;4\n", "b.csv")
     assert table.header == ["P", "F"] and set(found) == {"pressure", "force"}
