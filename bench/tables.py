@@ -520,9 +520,15 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                              f"{', '.join(repr(n) for n in names if n not in charts)})")
         tables, problems = [], []
         for name in [sheet] if sheet is not None else [n for n in names if n not in charts]:
-            numbers, rows = [], []
-            for n, row in enumerate(book[name].iter_rows(values_only=True), start=1):
-                cells = ["" if v is None else v for v in row]
+            numbers, rows, percent = [], [], []
+            for n, row in enumerate(book[name].iter_rows(), start=1):
+                cells = []
+                for cell in row:
+                    value = getattr(cell, "value", None)
+                    if type(value) in (int, float) and "%" in (
+                            getattr(cell, "number_format", None) or ""):
+                        percent.append((len(rows), len(cells)))
+                    cells.append("" if value is None else value)
                 if any(str(c).strip() for c in cells):
                     numbers.append(n)
                     rows.append(cells)
@@ -533,7 +539,9 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                 isinstance(c, str) and _COMMA_DECIMAL.match(_number_part(_ungrouped(c.strip())))
                 for cells in rows[:50] for c in cells) else "."
             try:
-                tables.append(_with_header(path, name, numbers, rows, None, decimal))
+                tables.append(_in_percent_as_shown(
+                    _with_header(path, name, numbers, rows, None, decimal),
+                    {(numbers[k], j) for k, j in percent}))
             except ValueError as exc:  # a sheet of notes: skipped unless it was asked for
                 if sheet is not None:
                     raise
@@ -544,6 +552,23 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
         raise ValueError(problems[0] if len(problems) == 1 else
                          f"{path.name}: no sheet holds a table ({'; '.join(problems)[:300]})")
     return tables
+
+
+def _in_percent_as_shown(table: RawTable, cells: set[tuple[int, int]]) -> RawTable:
+    """``table`` with the numbers of the cells formatted as a percentage (file row, column)
+    that lie under a header in % as the cells show them: Excel stores 12.2 % as 0.122, which
+    under ``Kontraktion [%]`` would read 0.122 %. Under any other header the number stored is
+    the value (a fraction under one without a unit or in ``[-]``)."""
+    if not cells:
+        return table
+    in_percent = {j for j, header in enumerate(table.header)
+                  if (unit := parse_header(header)[1]) is not None
+                  and str(parse_unit(unit)) == "percent"}
+    at = {n: i for i, n in enumerate(table.row_numbers)}
+    for n, j in cells:
+        if j in in_percent and n in at:
+            table.rows[at[n]][j] *= 100
+    return table
 
 
 def numbers_as_read(table: RawTable) -> list[list]:

@@ -835,6 +835,27 @@ def test_every_sheet_or_one(tmp_path):
         read_tables(path, "x")
 
 
+@pytest.mark.parametrize("header", ["Kontraktion [%]", "Kontraktion", "eps [-]"])
+@pytest.mark.parametrize("force", [150.5, "150,5"])  # a text cell of a decimal comma beside
+def test_a_workbook_cell_formatted_as_a_percentage_is_read_as_shown(header, force, tmp_path):
+    # Excel stores 12.2 % typed into a cell as 0.122, formatted '0.0%': under 'Kontraktion [%]'
+    # it was read as 0.122 %, an eps of 0.00122, unsaid
+    import openpyxl
+
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["Druck [bar]", "Kraft [N]", header])
+    for fraction in (0.0, 0.122):
+        sheet.append([2, force, fraction])
+        sheet.cell(sheet.max_row, 3).number_format = "0.0%"
+    path = tmp_path / "book.xlsx"
+    book.save(path)
+    (table,) = read_tables(path)
+    found = recognise(table)
+    np.testing.assert_allclose(column_values(table, found["eps"]), [0.0, 0.122], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["force"]), [150.5, 150.5])
+
+
 def test_a_workbooks_numbers_stored_as_text_with_decimal_commas(tmp_path):
     path = tmp_path / "book.xlsx"
     pd.DataFrame({"Druck [bar]": ["0", "1,5", "2,75"], "Kraft [N]": [0.0, 150.5, "300,25"]}
