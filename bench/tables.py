@@ -1405,9 +1405,17 @@ def counts_rows(table: RawTable, column: Column | None) -> bool:
     if column is None or column.unit is not None or column.given or column.excel_days \
             or column.parts or len(table.rows) < ROW_COUNTER_MIN_ROWS:
         return False
-    values = _plain_numbers([row[column.index] for row in table.rows], table.decimal)
-    return bool(values is not None and values[0] in (0.0, 1.0)
-                and np.all(values == np.round(values)) and np.all(np.diff(values) == 1.0))
+    raw = [row[column.index] for row in table.rows]
+    values = _plain_numbers(raw, table.decimal)
+    rows = np.arange(len(raw))
+    if values is None:  # a blank cell, a summary row's label ('Max'): the rows of numbers
+        read = [plain_number(cell, table.decimal) for cell in raw]
+        rows = np.flatnonzero([v is not None for v in read])
+        values = np.array([read[k] for k in rows], dtype=float)
+    # each number its row's: 0 or 1 on the first row, one more on each row below
+    return bool(2 * rows.size > len(raw) and rows.size >= ROW_COUNTER_MIN_ROWS
+                and values[0] - rows[0] in (0.0, 1.0)
+                and np.all(values - rows == values[0] - rows[0]))
 
 
 def _header_named(table: RawTable, role: str, given: str) -> str:

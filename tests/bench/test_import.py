@@ -1047,6 +1047,28 @@ def test_a_time_column_counting_the_rows_is_no_clock(first, tmp_path, mkm_cli):
     assert timed.samples["time_s"].iloc[-1] == pytest.approx(t[-1])
 
 
+@pytest.mark.parametrize("edit", ["summary rows", "blank cell"])
+def test_a_row_counter_with_a_summary_or_a_blank_cell_is_no_clock(edit, tmp_path, mkm_cli):
+    # the logger's 'Max' and 'Mittelwert' rows under the record, or a counter cell left
+    # blank: its numbers were no longer all whole and the counter was read as a 1 Hz clock
+    t = np.arange(0.0, 60.0, 0.01)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    frame = pd.DataFrame({"Zeitpunkt": np.arange(1, t.size + 1).astype(object),
+                          "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)})
+    if edit == "summary rows":
+        frame.loc[t.size] = ["Max", p.max(), thickwall_N([p.max()], 0.0)[0]]
+        frame.loc[t.size + 1] = ["Mittelwert", p.mean(), thickwall_N(p, 0.0).mean()]
+    else:
+        frame.loc[3000, "Zeitpunkt"] = ""
+    path = tmp_path / "logger.csv"
+    frame.to_csv(path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "column 'Zeitpunkt' counts the rows" in err
+    assert run.meta.imported_from["shape"] == "staircase"
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+
+
 def test_a_row_counter_is_no_clock_to_join_by(tmp_path, mkm_cli):
     # the regulator's file counts its rows, the load cell's has seconds: refused as having no
     # time column among 'Zeitpunkt', ... (which it shows)
