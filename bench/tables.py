@@ -1597,10 +1597,25 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         if isinstance(column.scale, CurrentLoop):
             _check_loop(table, column, read)
         return column.scale.values(read)
-    if unit is None or role.unit is None:
-        return values
-    target = role.unit or "dimensionless"
-    return (values * parse_unit(unit)).to(target).magnitude
+    if unit is not None and role.unit is not None:
+        values = (values * parse_unit(unit)).to(role.unit or "dimensionless").magnitude
+    return _past_midnight(values) if column.role == "time" else values
+
+
+def _past_midnight(seconds: np.ndarray) -> np.ndarray:
+    """A time column of seconds since midnight (a logger's time of day as a number, every
+    reading within one day) whose count restarts at midnight, the readings after it a day
+    later, as a clock reading's are: a step back that lands one sampling interval (or two) past
+    midnight. Any other step back stays one, refused where the time is read."""
+    if seconds.size < 3 or seconds.min() < 0 or seconds.max() >= _DAY_S:
+        return seconds
+    step = np.diff(seconds)
+    forward = step[step > 0]
+    if not forward.size:
+        return seconds
+    across = step + _DAY_S  # the time from the last reading of the day to the first after it
+    wrapped = (step < 0) & (across > 0) & (across <= 2 * float(np.median(forward)))
+    return seconds + _DAY_S * np.cumsum(np.r_[0.0, wrapped]) if wrapped.any() else seconds
 
 
 def _check_loop(table: RawTable, column: Column, current_mA: np.ndarray) -> None:

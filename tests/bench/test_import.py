@@ -668,6 +668,28 @@ def test_a_time_column_of_excel_serial_dates_is_read_as_days(suffix, tmp_path, m
 
 
 
+def test_milliseconds_since_midnight_go_on_past_midnight(tmp_path, mkm_cli):
+    # a logger's time of day in ms since midnight over a night's test: 86 399 900 then 0 was
+    # refused, "the time goes backwards by 8.64e+04 s"
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 20, 21, 35, 36, 50, 51, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 0.0, 0.0])
+    start_s = 86400.0 - 30.0  # 23:59:30
+    path = tmp_path / "night.csv"
+    pd.DataFrame({"Zeit [ms]": np.round((start_s + t) % 86400.0 * 1000.0),
+                  "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    np.testing.assert_allclose(run.samples["time_s"], start_s + t, atol=1e-6)
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 3.0], atol=1e-9)
+    # a count that starts again from 0 midway (another session appended) is still refused
+    pd.DataFrame({"Zeit [ms]": np.r_[t[:300], t[:300]] * 1000.0, "Druck [bar]": p,
+                  "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(path, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and "the time goes backwards by 29.9 s" in err
+
+
 def test_a_time_series_without_a_step_names_the_option_that_makes_each_row_one(tmp_path,
                                                                                  mkm_cli):
     # a logger's holds written 1 s apart, too few samples for a plateau or a ramp's bins: was
