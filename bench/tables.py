@@ -110,11 +110,11 @@ STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "std", 
                    "maxi", "mini", "spitzenwert", "höchstwert", "hoechstwert", "maximalwert",
                    "minimalwert"}
 #: how a one-word compound naming a statistic of a force or a pressure starts or ends
-#: (German Maximalkraft, Höchstkraft, Spitzendruck, Mindestdruck; English maxforce; Fmax,
-#: pmin), longest first: no reading, as 'F max' is none
+#: (German Maximalkraft, Höchstkraft, Spitzendruck, Mindestdruck, Kraftspitze,
+#: Druckmaximum; English maxforce; Fmax, pmin), longest first: no reading, as 'F max' is none
 STATISTIC_PREFIXES = ("maximal", "minimal", "hoechst", "spitzen", "mindest", "höchst", "peak",
                       "max", "min")
-STATISTIC_SUFFIXES = ("max", "min", "peak")
+STATISTIC_SUFFIXES = ("maximum", "minimum", "spitze", "max", "min", "peak")
 
 
 def _statistic_compound(word: str) -> bool:

@@ -468,7 +468,8 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
     ("Maximalkraft [N]", "force"), ("Höchstkraft [N]", "force"), ("Spitzenkraft [N]", "force"),
     ("Fmax [N]", "force"), ("Kraft maximal [N]", "force"), ("Maximaldruck [bar]", "pressure"),
     ("pmax [bar]", "pressure"), ("Kraft maxi (N)", "force"), ("Spitzenwert Kraft [N]", "force"),
-    ("Maximalwert Druck [bar]", "pressure")])
+    ("Maximalwert Druck [bar]", "pressure"), ("Kraftspitze [N]", "force"),
+    ("Druckmaximum [bar]", "pressure")])
 def test_a_statistic_compound_beside_the_reading_is_no_reading(header, role, tmp_path,
                                                               mkm_cli):
     # a German logger's running 'Maximalkraft' (the largest force so far) beside its 'Kraft':
