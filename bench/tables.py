@@ -1721,7 +1721,7 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
             + cell.microsecond / 1e6
     if isinstance(cell, datetime.timedelta):
         return "duration", cell.total_seconds()
-    text = str(cell).strip()
+    text = _COLON_MILLISECONDS.sub(r"\g<clock>.\g<ms>", str(cell).strip())
     if ":" not in text and not _ISO_BASIC.match(text):
         return None
     of_day = _time_of_day_s(text)
@@ -1746,6 +1746,9 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     return None
 
 
+#: a clock's milliseconds after a third colon, as Keysight's BenchLink Data Logger writes them
+#: (``12/6/2026 14:05:00:123``): read as after a decimal mark
+_COLON_MILLISECONDS = re.compile(r"(?P<clock>\d{1,2}:\d{2}:\d{2}):(?P<ms>\d{3})$")
 #: ISO 8601's basic format, without separators (20261206T090000.250Z)
 _ISO_BASIC = re.compile(r"^\d{8}T\d{6}")
 #: a date-time's zone written after a space, or named (' +01:00', ' Z', ' UTC'): ISO 8601

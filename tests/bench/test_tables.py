@@ -936,6 +936,9 @@ def test_numbers_in_scientific_notation(tmp_path):
     (["20261206T090000.000Z", "20261206T090001.250Z"], [0.0, 1.25]),
     (["2026-12-06 09:00:00.000 +01:00", "2026-12-06 08:00:01.500 Z"], [0.0, 1.5]),
     (["2026-12-06 09:00:00 UTC", "2026-12-06 10:00:02 +0100"], [0.0, 2.0]),
+    # BenchLink's milliseconds after a third colon, in a date-time and a time of day
+    (["12/6/2026 14:05:00:900", "12/6/2026 14:05:01:150"], [0.0, 0.25]),
+    (["23:59:59:900", "00:00:00:100"], [0.0, 0.2]),
 ])
 def test_times_of_day_and_date_times_as_excel_and_loggers_write_them(cells, seconds, tmp_path):
     # were: "cell A2 (column 'Time'): '11:59:59.5 AM' is not a number", "'20261206T090000.000Z'
