@@ -1738,7 +1738,9 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
                         else m["zone"], text)
     for parse in (lambda t: datetime.datetime.fromisoformat(iso.replace(",", ".")),
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S"),
-                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f")):
+                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f"),
+                  # German Excel's date-time as it shows it, saved to CSV so: no seconds
+                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M")):
         try:
             return "date-time", _epoch_s(parse(text.replace(",", ".")))
         except ValueError:

@@ -936,6 +936,8 @@ def test_numbers_in_scientific_notation(tmp_path):
     (["20261206T090000.000Z", "20261206T090001.250Z"], [0.0, 1.25]),
     (["2026-12-06 09:00:00.000 +01:00", "2026-12-06 08:00:01.500 Z"], [0.0, 1.5]),
     (["2026-12-06 09:00:00 UTC", "2026-12-06 10:00:02 +0100"], [0.0, 2.0]),
+    # German Excel's date-time as it shows it, saved to CSV so, without seconds
+    (["06.12.2026 23:59", "07.12.2026 00:01"], [0.0, 120.0]),
     # BenchLink's milliseconds after a third colon, in a date-time and a time of day
     (["12/6/2026 14:05:00:900", "12/6/2026 14:05:01:150"], [0.0, 0.25]),
     (["23:59:59:900", "00:00:00:100"], [0.0, 0.2]),
