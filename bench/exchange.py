@@ -57,6 +57,7 @@ from mkm.bench.tables import (
     by_unit_columns,
     check_channel_times,
     column_text,
+    counts_rows,
     current_header,
     directions,
     flags,
@@ -227,12 +228,17 @@ class ImportedRun:
     shape: str  # "steps", "staircase" or "ramp"
     n_steps: int
     notes: list[str]
+    #: the steps on the rising branches and on the falling ones
+    branches: tuple[int, int] = (0, 0)
 
     def line(self) -> str:
         made = {"steps": "one table row each", "staircase": "the plateaus of a staircase",
                 "ramp": "quasi-static bins of a ramp",
                 "export": "the exported run's own, with its samples"}[self.shape]
-        return f"{self.state}: {self.n_steps} step(s), {made}" + "".join(
+        up, down = self.branches
+        # both branches kept: said, so a loading and an unloading sweep are seen apart
+        apart = f" ({up} rising, {down} falling)" if up and down else ""
+        return f"{self.state}: {self.n_steps} step(s){apart}, {made}" + "".join(
             f"; {n}" for n in self.notes)
 
 
@@ -333,8 +339,16 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     for table in tables:
         bar.start(f"recognising {table.name}")
         found = recognise(table, columns, units, scaling)
+        # a logger's row numbers under a clock's name: read as seconds, a 1 Hz clock the file
+        # does not say
+        counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
         missing = [r for r in REQUIRED_ROLES if r not in found]
         if other is not None:
+            if counter:
+                raise ValueError(f"--join-by-time {Path(join).name}: {table.name}'s column "
+                                 f"{counter!r} counts the rows (whole numbers stepping by 1, no "
+                                 "unit), no clock to join by: expected a time column in both "
+                                 "tables; if it is seconds, --units time=s reads it so")
             if not missing:
                 raise ValueError(f"--join-by-time {Path(join).name}: {table.name} holds a "
                                  "pressure and a force column itself: expected the other table "
@@ -378,16 +392,19 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             table = without_repeated_rows(table, [found[r] for r in ("time", *REQUIRED_ROLES)])
             check_channel_times(table, found)
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
-                                                 k not in taken_columns(found)])
+                                                 k not in taken_columns(found)], counter)
         # without a time column every row is a step, or a record's rows are taken as evenly
         # spaced: a clock by a name the reader does not know is left out (an export's steps
         # have times)
         unread = [] if exported or "time" in found else unread_time_columns(table, found)
-        read_as = ("its rows are taken as evenly spaced in time" if unread and
+        read_as = ("its rows are taken as evenly spaced in time" if (unread or counter) and
                    not one_step_per_row and
                    series.sampled_without_time(recognition.values("pressure"))
                    else "every row is a step")
         notify(f"{table.name}: {recognition.line()}"
+               + (f"; column {counter!r} counts the rows (whole numbers stepping by 1, no "
+                  f"unit), no clock: {read_as}; if it is seconds, --units time=s reads it as a "
+                  "1 Hz clock" if counter else "")
                + "".join(f"; column {header!r} holds times but is not read as the time "
                          f"column: {read_as}; if it is the record's clock, --columns "
                          f"time={header!r} reads the table as a time series"
@@ -454,7 +471,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         writer.close()
         if copy := meta.imported_from.get("table_copy"):
             shutil.copyfile(path, writer.path / copy)
-        out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes))
+        rising = sum(s.direction == "up" for s in steps)
+        out.append(ImportedRun(writer.path, g.state, shape, len(steps), notes,
+                               (rising, len(steps) - rising)))
         bar.done()
     bar.end()
     return out
@@ -479,7 +498,14 @@ def _join_table(path: str | Path, scaling=None):
         raise ValueError(f"--join-by-time {Path(path).name}: {len(timed)} of its sheets hold a "
                          f"time column: expected one (sheets "
                          f"{', '.join(repr(t.sheet) for t in tables)}); save it alone")
-    return timed[0] if timed else (tables[0], recognise(tables[0], scaling=scaling))
+    table, found = timed[0] if timed else (tables[0], recognise(tables[0], scaling=scaling))
+    if counts_rows(table, found.get("time")):  # read as seconds, a 1 Hz clock it does not say
+        header = found["time"].header
+        raise ValueError(f"--join-by-time {Path(path).name}: its column {header!r} counts the "
+                         "rows (whole numbers stepping by 1, no unit), no clock to join by: "
+                         f"expected a time column in both tables; if it is seconds, name its "
+                         f"unit in the header ('{header} [s]')")
+    return table, found
 
 
 class _Stages:

@@ -88,7 +88,8 @@ class Role:
     def matches(self, name: str) -> bool:
         return name in self.names or (bool(self.endings) and " " not in name
                                       and name.endswith(self.endings)
-                                      and not name.startswith(SET_POINT_PREFIX))
+                                      and not name.startswith(SET_POINT_PREFIX)
+                                      and not _statistic_compound(name))
 
 
 #: the roles a column may take by its unit alone, where no column's name says it
@@ -105,12 +106,38 @@ def _set_point(name: str) -> bool:
 #: results sheet's 'F max (N)', 'Peak force'): not taken by its unit alone (a mean is a hold's
 #: reading, as a step table gives it, and a total the sum of load cells sharing the pull)
 STATISTIC_WORDS = {"min", "max", "minimum", "maximum", "peak", "spitze", "std", "stdev", "sd",
-                   "count", "anzahl", "range"}
+                   "count", "anzahl", "range", "maximal", "maximale", "minimal", "minimale",
+                   "maxi", "mini", "spitzenwert", "höchstwert", "hoechstwert", "maximalwert",
+                   "minimalwert"}
+#: how a one-word compound naming a statistic of a force or a pressure starts or ends
+#: (German Maximalkraft, Höchstkraft, Spitzendruck, Mindestdruck, Kraftspitze,
+#: Druckmaximum; English maxforce; Fmax, pmin), longest first: no reading, as 'F max' is none
+STATISTIC_PREFIXES = ("maximal", "minimal", "hoechst", "spitzen", "mindest", "höchst", "peak",
+                      "max", "min")
+STATISTIC_SUFFIXES = ("maximum", "minimum", "spitze", "max", "min", "peak")
+
+
+def _statistic_compound(word: str) -> bool:
+    """Whether one word is a statistic's prefix or suffix joined to the name of a force or a
+    pressure (``maximalkraft``, ``höchstzugkraft``, ``fmax``): a short prefix (``max``,
+    ``min``) or a suffix to the name itself, so that ``minderdruck`` stays a pressure."""
+    def reading(rest: str, compound: bool) -> bool:
+        return any(rest in ROLES[r].names or (compound and ROLES[r].endings and rest.endswith(
+            ROLES[r].endings)) for r in BY_UNIT_ROLES)
+
+    prefix = next((p for p in STATISTIC_PREFIXES if word.startswith(p)), None)
+    suffix = next((p for p in STATISTIC_SUFFIXES if word.endswith(p)), None)
+    return bool(prefix and reading(word[len(prefix):], len(prefix) > 3)
+                or suffix and reading(word[:-len(suffix)], False))
 
 
 def statistic(name: str) -> bool:
-    """Whether a column's name (as :func:`parse_header` gives it) names a statistic."""
-    return bool(STATISTIC_WORDS & set(name.split()))
+    """Whether a column's name (as :func:`parse_header` gives it) names a statistic: a word of
+    :data:`STATISTIC_WORDS`, or one word compounding a statistic with a force or a pressure
+    (:func:`_statistic_compound`)."""
+    words = name.split()
+    return bool(STATISTIC_WORDS & set(words)) or (len(words) == 1
+                                                  and _statistic_compound(words[0]))
 #: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
 CLOCK_NAMES = {"millis": "ms", "micros": "us"}
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
@@ -126,6 +153,7 @@ ROLES = {
                   "zeitpunkt", "messzeitpunkt",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
+                  "zeit 1 standardmessrate",
                   # seconds since 1970 as a logger names them
                   "unix time", "unix timestamp", "epoch", "epoch time", "posix time",
                   *CLOCK_NAMES), "s"),
@@ -143,9 +171,14 @@ ROLES = {
 }
 #: the direction words a table may use (English, German, French) -> the run folder's ``up``/``down``
 DIRECTION_WORDS = {"up": "up", "rising": "up", "increasing": "up", "loading": "up",
+                   "load": "up", "increase": "up", "inc": "up", "ascending": "up",
                    "down": "down", "falling": "down", "decreasing": "down", "unloading": "down",
-                   "auf": "up", "steigend": "up", "belastung": "up",
-                   "ab": "down", "fallend": "down", "entlastung": "down",
+                   "unload": "down", "decrease": "down", "dec": "down", "descending": "down",
+                   "dn": "down",
+                   "auf": "up", "steigend": "up", "belastung": "up", "belasten": "up",
+                   "aufwärts": "up", "aufwaerts": "up",
+                   "ab": "down", "fallend": "down", "entlastung": "down", "entlasten": "down",
+                   "abwärts": "down", "abwaerts": "down",
                    "montée": "up", "montee": "up", "charge": "up",
                    "descente": "down", "décharge": "down", "decharge": "down"}
 
@@ -278,11 +311,24 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
         text = data.decode("utf-16-le" if data[1:2] == b"\x00" else "utf-16-be",
                            errors="replace")
     else:
+        # a DOS program's end-of-file mark (Ctrl-Z) and a logger's file written into space
+        # filled with NULs beforehand end the text: no row
+        data = data.rstrip(b"\x00\x1a")
         try:
             text = data.decode("utf-8-sig")
         except UnicodeDecodeError:
-            text = data.decode("latin-1")  # older Windows exports
+            text = _windows_text(data)
     return [_text_table(path, text)]
+
+
+def _windows_text(data: bytes) -> str:
+    """A text table that is no UTF-8: Windows' code page 1252, as Excel and loggers on a
+    Western European Windows save it (its ‰, €, – and curly quotes are no Latin-1 control
+    characters), else Latin-1, which decodes any byte."""
+    try:
+        return data.decode("cp1252")
+    except UnicodeDecodeError:  # the five bytes code page 1252 leaves undefined
+        return data.decode("latin-1")
 
 
 def _text_table(path: Path, text: str) -> RawTable:
@@ -474,9 +520,15 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                              f"{', '.join(repr(n) for n in names if n not in charts)})")
         tables, problems = [], []
         for name in [sheet] if sheet is not None else [n for n in names if n not in charts]:
-            numbers, rows = [], []
-            for n, row in enumerate(book[name].iter_rows(values_only=True), start=1):
-                cells = ["" if v is None else v for v in row]
+            numbers, rows, percent = [], [], []
+            for n, row in enumerate(book[name].iter_rows(), start=1):
+                cells = []
+                for cell in row:
+                    value = getattr(cell, "value", None)
+                    if type(value) in (int, float) and "%" in (
+                            getattr(cell, "number_format", None) or ""):
+                        percent.append((len(rows), len(cells)))
+                    cells.append("" if value is None else value)
                 if any(str(c).strip() for c in cells):
                     numbers.append(n)
                     rows.append(cells)
@@ -487,7 +539,9 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
                 isinstance(c, str) and _COMMA_DECIMAL.match(_number_part(_ungrouped(c.strip())))
                 for cells in rows[:50] for c in cells) else "."
             try:
-                tables.append(_with_header(path, name, numbers, rows, None, decimal))
+                tables.append(_in_percent_as_shown(
+                    _with_header(path, name, numbers, rows, None, decimal),
+                    {(numbers[k], j) for k, j in percent}))
             except ValueError as exc:  # a sheet of notes: skipped unless it was asked for
                 if sheet is not None:
                     raise
@@ -498,6 +552,23 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
         raise ValueError(problems[0] if len(problems) == 1 else
                          f"{path.name}: no sheet holds a table ({'; '.join(problems)[:300]})")
     return tables
+
+
+def _in_percent_as_shown(table: RawTable, cells: set[tuple[int, int]]) -> RawTable:
+    """``table`` with the numbers of the cells formatted as a percentage (file row, column)
+    that lie under a header in % as the cells show them: Excel stores 12.2 % as 0.122, which
+    under ``Kontraktion [%]`` would read 0.122 %. Under any other header the number stored is
+    the value (a fraction under one without a unit or in ``[-]``)."""
+    if not cells:
+        return table
+    in_percent = {j for j, header in enumerate(table.header)
+                  if (unit := parse_header(header)[1]) is not None
+                  and str(parse_unit(unit)) == "percent"}
+    at = {n: i for i, n in enumerate(table.row_numbers)}
+    for n, j in cells:
+        if j in in_percent and n in at:
+            table.rows[at[n]][j] *= 100
+    return table
 
 
 def numbers_as_read(table: RawTable) -> list[list]:
@@ -519,11 +590,26 @@ def _is_number(cell) -> bool:
 
 
 def _units_row(cells: list[str]) -> bool:
-    """Whether a header row holds units of the roles only (``s``, ``[kPa]``, ``(N)``, ``%``,
-    ``-``); names such as ``P`` or ``F`` are not (pint: poise, farad)."""
-    units = [c.strip("[]() ") for c in cells if c]
-    return bool(units) and all(any(_fits(parse_unit(u), role) for role in ROLES.values())
-                               for u in units)
+    """Whether a header row holds units only (``s``, ``[kPa]``, ``(N)``, ``%``, ``-``, and a
+    logged temperature's ``°C`` or a displacement's ``in``), of the roles' quantities in all
+    its cells or in two of them at least; names such as ``P`` or ``F`` are not (pint: poise,
+    farad)."""
+    # an empty pair of brackets, '[]', is a column without a unit (a row counter's)
+    units = [_row_unit(c.strip("[]() ")) for c in cells if c.strip("[]() ")]
+    roles = sum(any(_fits(u, role) for role in ROLES.values()) for u in units)
+    return bool(units) and all(u is not None for u in units) and roles >= min(2, len(units))
+
+
+def _row_unit(text: str):
+    """A cell of a units row as a unit: as :func:`parse_unit` reads it, or a word a header's
+    name holds as English that a row of units means as a unit (``in``: the inch)."""
+    found = parse_unit(text)
+    if found is None and text.lower() in NOT_UNITS:
+        try:
+            found = registry().Unit(text.lower())
+        except Exception:  # pint's parser raises many kinds ('of', 'to')
+            return None
+    return found
 
 
 def _refuse_a_labelled_row(where, numbers, rows, first_data) -> None:
@@ -580,7 +666,7 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     if header_index > 0 and _units_row(header):
         # a logger's two header rows, names over units ("Druck" over "kPa"): one header
         names = [str(c).strip() for c in rows[header_index - 1]] + [""] * width
-        header = [f"{n} [{u.strip('[]()')}]" if n and u else n or u
+        header = [f"{n} [{u.strip('[]() ')}]" if n and u.strip("[]() ") else n or u
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
     header = _labview_header(header, rows[:header_index])
@@ -708,13 +794,20 @@ NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
 #: lab means: ``[-]`` dimensionless, ``MPA``/``mpa`` not millipascal, ``KN`` not knot, ``kp``
 #: the kilopond not the kilopoise, ``MBAR`` not megabar, ``MM``/``S``/``MS`` not megamolar or
 #: siemens, ``at`` the technical atmosphere (a word where a header's name holds it, see
-#: :data:`NOT_UNITS`), ``in Hg`` an inch of mercury (not an inch times mercury's density), and
-#: the gauge suffixes (the toolkit's pressures are gauge pressures)
+#: :data:`NOT_UNITS`), ``in Hg`` an inch of mercury (not an inch times mercury's density), the
+#: gauge suffixes (the toolkit's pressures are gauge pressures), the seconds written
+#: ``sec.``, German ``sek``, ``Sek.`` and ``msek`` (pint reads none), ``MSEC``, ``MV``, ``MA``
+#: and ``MMHG`` a millisecond, millivolt, milliampere and millimetre of mercury (pint: mega),
+#: and ``LBS`` and ``KG`` (pint reads ``lbs`` and ``kg`` alone): a load cell's pounds or
+#: kilograms, refused as a mass naming ``--units force=lbf`` or ``kgf``
 LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", "pa": "Pa",
              "kpa": "kPa", "mpa": "MPa", "psi": "psi", "psig": "psi", "at": "technical_atmosphere",
              "in hg": "inch_Hg", "in. hg": "inch_Hg", "inch hg": "inch_Hg", "mm hg": "mmHg",
              "n": "N", "kn": "kN", "dan": "daN", "kp": "kgf", "kilopond": "kgf", "kgf": "kgf",
-             "lbf": "lbf", "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min"}
+             "lbf": "lbf", "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min",
+             "sek": "s", "sek.": "s", "sec.": "s", "sekunden": "s", "msek": "ms", "lbs": "lb",
+             "msec": "ms", "usec": "us", "µsec": "us", "mv": "mV", "ma": "mA", "mmhg": "mmHg",
+             "kg": "kg"}
 
 
 #: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü),
@@ -1174,7 +1267,7 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                              "name says so): expected a gauge pressure, above the atmosphere "
                              "as the regulator sets it (bar, bar(g), kPa, psi)")
         role = next((r for r, spec in ROLES.items() if spec.matches(name)), None)
-        if role is None or role in columns:
+        if role is None or role in columns or _symbol_of_another(name, unit):
             continue
         if role in found and header == found[role].header:
             raise ValueError(f"{table.name}: {_same_name(headers, header)}, each a {role} "
@@ -1244,6 +1337,21 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
     return found
 
 
+#: the quantities a one-letter name stands for beside the roles' (T a temperature, P a
+#: power, F or f a frequency), by a unit of each
+OTHER_SYMBOL_UNITS = ("K", "W", "Hz")
+
+
+def _symbol_of_another(name: str, unit: str | None) -> bool:
+    """Whether a one-letter name is the symbol of another quantity, which its unit says (``T
+    [°C]`` a temperature, not a time; ``P [W]`` a power; ``F [Hz]`` a frequency): a column
+    to leave, not a reading written in the wrong unit, which is refused naming it."""
+    parsed = parse_unit(unit) if len(name) == 1 and unit is not None else None
+    return parsed is not None and any(
+        parsed.dimensionality == registry().Unit(other).dimensionality
+        for other in OTHER_SYMBOL_UNITS)
+
+
 def by_unit_columns(table: RawTable, role: str, found: dict[str, Column]) -> list[int]:
     """The columns no role took whose unit is of ``role``'s quantity, set points left out: the
     ones that may hold it where no column's name says it."""
@@ -1283,6 +1391,31 @@ def _excel_serial_days(table: RawTable, column: Column) -> bool:
     low, high = EXCEL_SERIAL_DAYS
     return bool(values is not None and values.min() >= low and values.max() <= high
                 and np.ptp(values) < 1.0)
+
+
+#: the fewest rows a time column must have to be told a row counter
+ROW_COUNTER_MIN_ROWS = 3
+
+
+def counts_rows(table: RawTable, column: Column | None) -> bool:
+    """Whether a time column is a logger's row counter, no clock: whole numbers stepping by
+    exactly 1 from 0 or 1 under a header without a unit, neither named by ``--columns`` nor
+    given one by ``--units``. Read as seconds they would be a 1 Hz clock, which the file does
+    not say (a 100 Hz record would last a hundred times as long)."""
+    if column is None or column.unit is not None or column.given or column.excel_days \
+            or column.parts or len(table.rows) < ROW_COUNTER_MIN_ROWS:
+        return False
+    raw = [row[column.index] for row in table.rows]
+    values = _plain_numbers(raw, table.decimal)
+    rows = np.arange(len(raw))
+    if values is None:  # a blank cell, a summary row's label ('Max'): the rows of numbers
+        read = [plain_number(cell, table.decimal) for cell in raw]
+        rows = np.flatnonzero([v is not None for v in read])
+        values = np.array([read[k] for k in rows], dtype=float)
+    # each number its row's: 0 or 1 on the first row, one more on each row below
+    return bool(2 * rows.size > len(raw) and rows.size >= ROW_COUNTER_MIN_ROWS
+                and values[0] - rows[0] in (0.0, 1.0)
+                and np.all(values - rows == values[0] - rows[0]))
 
 
 def _header_named(table: RawTable, role: str, given: str) -> str:
@@ -1464,10 +1597,25 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         if isinstance(column.scale, CurrentLoop):
             _check_loop(table, column, read)
         return column.scale.values(read)
-    if unit is None or role.unit is None:
-        return values
-    target = role.unit or "dimensionless"
-    return (values * parse_unit(unit)).to(target).magnitude
+    if unit is not None and role.unit is not None:
+        values = (values * parse_unit(unit)).to(role.unit or "dimensionless").magnitude
+    return _past_midnight(values) if column.role == "time" else values
+
+
+def _past_midnight(seconds: np.ndarray) -> np.ndarray:
+    """A time column of seconds since midnight (a logger's time of day as a number, every
+    reading within one day) whose count restarts at midnight, the readings after it a day
+    later, as a clock reading's are: a step back that lands one sampling interval (or two) past
+    midnight. Any other step back stays one, refused where the time is read."""
+    if seconds.size < 3 or seconds.min() < 0 or seconds.max() >= _DAY_S:
+        return seconds
+    step = np.diff(seconds)
+    forward = step[step > 0]
+    if not forward.size:
+        return seconds
+    across = step + _DAY_S  # the time from the last reading of the day to the first after it
+    wrapped = (step < 0) & (across > 0) & (across <= 2 * float(np.median(forward)))
+    return seconds + _DAY_S * np.cumsum(np.r_[0.0, wrapped]) if wrapped.any() else seconds
 
 
 def _check_loop(table: RawTable, column: Column, current_mA: np.ndarray) -> None:
@@ -1573,7 +1721,7 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
             + cell.microsecond / 1e6
     if isinstance(cell, datetime.timedelta):
         return "duration", cell.total_seconds()
-    text = str(cell).strip()
+    text = _COLON_MILLISECONDS.sub(r"\g<clock>.\g<ms>", str(cell).strip())
     if ":" not in text and not _ISO_BASIC.match(text):
         return None
     of_day = _time_of_day_s(text)
@@ -1590,7 +1738,9 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
                         else m["zone"], text)
     for parse in (lambda t: datetime.datetime.fromisoformat(iso.replace(",", ".")),
                   lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S"),
-                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f")):
+                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M:%S.%f"),
+                  # German Excel's date-time as it shows it, saved to CSV so: no seconds
+                  lambda t: datetime.datetime.strptime(t, "%d.%m.%Y %H:%M")):
         try:
             return "date-time", _epoch_s(parse(text.replace(",", ".")))
         except ValueError:
@@ -1598,6 +1748,9 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     return None
 
 
+#: a clock's milliseconds after a third colon, as Keysight's BenchLink Data Logger writes them
+#: (``12/6/2026 14:05:00:123``): read as after a decimal mark
+_COLON_MILLISECONDS = re.compile(r"(?P<clock>\d{1,2}:\d{2}:\d{2}):(?P<ms>\d{3})$")
 #: ISO 8601's basic format, without separators (20261206T090000.250Z)
 _ISO_BASIC = re.compile(r"^\d{8}T\d{6}")
 #: a date-time's zone written after a space, or named (' +01:00', ' Z', ' UTC'): ISO 8601
@@ -2052,6 +2205,8 @@ class Recognition:
     table: RawTable
     columns: dict[str, Column]
     ignored: list[str] = field(default_factory=list)
+    #: the header of a time column read as a row counter (:func:`counts_rows`), no clock
+    row_counter: str | None = None
     _values: dict = field(default_factory=dict, repr=False)
 
     def values(self, role: str, optional: bool = False) -> np.ndarray:
@@ -2113,4 +2268,5 @@ class Recognition:
     def describe(self) -> dict:
         return {**self.table.describe(),
                 "columns": {role: c.describe() for role, c in self.columns.items()},
-                "ignored_columns": self.ignored}
+                "ignored_columns": self.ignored,
+                **({"row_counter_column": self.row_counter} if self.row_counter else {})}

@@ -54,7 +54,9 @@ def register(subparsers) -> None:
                      "pull), each in its own unit")
     imp.add_argument("--units", default=None, metavar="ROLE=UNIT,...",
                      help="the unit of a column whose header names none or the wrong one, "
-                     "e.g. pressure=kPa,force=lbf (default: bar, N, s, mm, a fraction)")
+                     "e.g. pressure=kPa,force=lbf (default: bar, N, s, mm, a fraction; a "
+                     "time column of row numbers, 1, 2, 3, ..., without a unit is no clock "
+                     "unless time=s says it is seconds)")
     imp.add_argument("--sensitivity", default=None, metavar="ROLE=PER_VOLT,...",
                      help="how a channel logged in volts (V or mV) becomes a force or a "
                      "pressure, as the bench's [loadcell] sensitivity_N_per_V: the quantity per "

@@ -464,6 +464,38 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
             "force='Peak force (N)' reads it") in err
 
 
+@pytest.mark.parametrize("header, role", [
+    ("Maximalkraft [N]", "force"), ("Höchstkraft [N]", "force"), ("Spitzenkraft [N]", "force"),
+    ("Fmax [N]", "force"), ("Kraft maximal [N]", "force"), ("Maximaldruck [bar]", "pressure"),
+    ("pmax [bar]", "pressure"), ("Kraft maxi (N)", "force"), ("Spitzenwert Kraft [N]", "force"),
+    ("Maximalwert Druck [bar]", "pressure"), ("Kraftspitze [N]", "force"),
+    ("Druckmaximum [bar]", "pressure")])
+def test_a_statistic_compound_beside_the_reading_is_no_reading(header, role, tmp_path,
+                                                              mkm_cli):
+    # a German logger's running 'Maximalkraft' (the largest force so far) beside its 'Kraft':
+    # its name ends as a force's does, so it was a second force column and the table was
+    # refused; alone, it was read as the force
+    force = thickwall_N(PRESSURES[:5], 0.0)
+    largest = {"force": np.maximum.accumulate(force),
+               "pressure": np.maximum.accumulate(PRESSURES[:5])}[role]
+    path = tmp_path / "logger.csv"
+    pd.DataFrame({"Druck [bar]": PRESSURES[:5], "Kraft [N]": force, header: largest}).to_csv(
+        path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["ignored_columns"] == [header]
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, rtol=1e-5)
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], PRESSURES[:5], rtol=1e-6)
+    # the statistic alone is no reading: refused, named with the option that reads it
+    reading = {"force": "Kraft [N]", "pressure": "Druck [bar]"}[role]
+    pd.DataFrame({"Druck [bar]": PRESSURES[:5], "Kraft [N]": force, header: largest}).drop(
+        columns=reading).to_csv(path, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert (f"{header!r} names a statistic, not taken by its unit: --columns "
+            f"{role}={header!r} reads it") in err
+
+
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
     """A lab's 100 Hz record: 2 s vented, 10 s up to 2.5 bar, 10 s down, 1 s vented; the gauge
     reads ``vented_bar`` at rest, the load cell ``tare_N``; noise 0.005 bar and 0.3 N."""
@@ -484,6 +516,10 @@ def test_a_100_hz_ramp_with_a_tare_and_a_vented_reading(tmp_path, mkm_cli):
     (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
     recorded = run.meta.imported_from
     assert recorded["shape"] == "ramp" and "quasi-static bins of a ramp" in err
+    # the loading and the unloading branch both kept, and said apart (was: "N step(s)" alone)
+    up, down = (run.steps["direction"] == "up").sum(), (run.steps["direction"] == "down").sum()
+    assert up > 0 and down > 0
+    assert f"{up + down} step(s) ({up} rising, {down} falling), quasi-static bins" in err
     # the gauge's noise is 0.005 bar: its median over 2 s is within 0.002 of what it read
     assert recorded["vented_reading_bar"] == pytest.approx(0.4, abs=0.002)
     # 200 vented samples of 0.3 N noise: the zero is within 0.1 N of the load cell's offset
@@ -633,6 +669,28 @@ def test_a_time_column_of_excel_serial_dates_is_read_as_days(suffix, tmp_path, m
 
 
 
+def test_milliseconds_since_midnight_go_on_past_midnight(tmp_path, mkm_cli):
+    # a logger's time of day in ms since midnight over a night's test: 86 399 900 then 0 was
+    # refused, "the time goes backwards by 8.64e+04 s"
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 20, 21, 35, 36, 50, 51, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 0.0, 0.0])
+    start_s = 86400.0 - 30.0  # 23:59:30
+    path = tmp_path / "night.csv"
+    pd.DataFrame({"Zeit [ms]": np.round((start_s + t) % 86400.0 * 1000.0),
+                  "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    np.testing.assert_allclose(run.samples["time_s"], start_s + t, atol=1e-6)
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 3.0], atol=1e-9)
+    # a count that starts again from 0 midway (another session appended) is still refused
+    pd.DataFrame({"Zeit [ms]": np.r_[t[:300], t[:300]] * 1000.0, "Druck [bar]": p,
+                  "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(path, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and "the time goes backwards by 29.9 s" in err
+
+
 def test_a_time_series_without_a_step_names_the_option_that_makes_each_row_one(tmp_path,
                                                                                  mkm_cli):
     # a logger's holds written 1 s apart, too few samples for a plateau or a ramp's bins: was
@@ -702,7 +760,8 @@ def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli
 
 @pytest.mark.parametrize("header", ["Messzeit [s]", "Zeit seit Start [s]", "Relative Time [s]",
                                     "Runtime (s)", "Laufzeit [s]", "Temps (s)",
-                                    "Temps écoulé (s)", "Time  1 - default sample rate [s]"])
+                                    "Temps écoulé (s)", "Time  1 - default sample rate [s]",
+                                    "Zeit  1 - Standardmessrate [s]"])
 def test_an_elapsed_time_column_by_its_lab_name_makes_a_time_series(header, tmp_path,
                                                                      mkm_cli):
     # was: not recognised, the 1-per-second record read as 23 steps of one row each
@@ -971,6 +1030,95 @@ def test_a_column_of_date_times_by_a_name_unknown_is_read_or_named(header, tmp_p
         assert (f"column {header!r} holds times but is not read as the time column: its rows "
                 f"are taken as evenly spaced in time; if it is the record's clock, --columns "
                 f"time={header!r} reads the table as a time series") in err
+
+
+@pytest.mark.parametrize("first", [0, 1])
+def test_a_time_column_counting_the_rows_is_no_clock(first, tmp_path, mkm_cli):
+    # a logger's 'Zeitpunkt' holding row numbers (1, 2, 3, ...) of a 100 Hz staircase: read as
+    # seconds, a 1 Hz clock, its 1 s steps between holds became 100 s ramps and the record
+    # was binned as a ramp of 40 steps
+    t = np.arange(0.0, 60.0, 0.01)
+    levels = [1.0, 2.0, 2.5]
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    path = tmp_path / "logger.csv"
+    pd.DataFrame({"Zeitpunkt": np.arange(first, first + t.size), "Druck [bar]": p,
+                  "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert ("column 'Zeitpunkt' counts the rows (whole numbers stepping by 1, no unit), no "
+            "clock: its rows are taken as evenly spaced in time; if it is seconds, --units "
+            "time=s reads it as a 1 Hz clock") in err
+    recorded = run.meta.imported_from
+    assert recorded["row_counter_column"] == "Zeitpunkt" and "time" not in recorded["columns"]
+    assert recorded["shape"] == "staircase"
+    steps = run.steps
+    np.testing.assert_allclose(steps["set_pressure_bar"], levels, atol=1e-9)
+    # noiseless holds: each plateau's mean is the model's force at its pressure, but for the
+    # ramp's rows within the plateau's 0.03 bar band at its end (3 rows of the 1 bar/s ramp,
+    # each under 0.03 bar * 420 N/bar off, among the 500 of the hold's second half)
+    np.testing.assert_allclose(steps["force_N_mean"], thickwall_N(levels, 0.0),
+                               atol=3 * 0.03 * 420 / 500)
+    # the file says nothing else; the option the line names reads it as a 1 Hz clock
+    (clocked,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--units", "time=s")
+    assert "'Zeitpunkt' -> time [s]" in err and "counts the rows" not in err
+    assert clocked.samples["time_s"].iloc[-1] == first + t.size - 1  # seconds as read
+    # seconds under the same header are the record's clock, as before
+    pd.DataFrame({"Zeitpunkt": t, "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False, sep=";")
+    (timed,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "'Zeitpunkt' -> time [s]" in err and "counts the rows" not in err
+    assert timed.samples["time_s"].iloc[-1] == pytest.approx(t[-1])
+
+
+@pytest.mark.parametrize("edit", ["summary rows", "blank cell"])
+def test_a_row_counter_with_a_summary_or_a_blank_cell_is_no_clock(edit, tmp_path, mkm_cli):
+    # the logger's 'Max' and 'Mittelwert' rows under the record, or a counter cell left
+    # blank: its numbers were no longer all whole and the counter was read as a 1 Hz clock
+    t = np.arange(0.0, 60.0, 0.01)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    frame = pd.DataFrame({"Zeitpunkt": np.arange(1, t.size + 1).astype(object),
+                          "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)})
+    if edit == "summary rows":
+        frame.loc[t.size] = ["Max", p.max(), thickwall_N([p.max()], 0.0)[0]]
+        frame.loc[t.size + 1] = ["Mittelwert", p.mean(), thickwall_N(p, 0.0).mean()]
+    else:
+        frame.loc[3000, "Zeitpunkt"] = ""
+    path = tmp_path / "logger.csv"
+    frame.to_csv(path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "column 'Zeitpunkt' counts the rows" in err
+    assert run.meta.imported_from["shape"] == "staircase"
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+
+
+def test_a_row_counter_is_no_clock_to_join_by(tmp_path, mkm_cli):
+    # the regulator's file counts its rows, the load cell's has seconds: refused as having no
+    # time column among 'Zeitpunkt', ... (which it shows)
+    t = np.arange(0.0, 30.0, 0.1)
+    p = np.interp(t, [0, 5, 25, 30], [0.0, 0.0, 2.5, 2.5])
+    table, other = tmp_path / "regulator.csv", tmp_path / "loadcell.csv"
+    pd.DataFrame({"Zeitpunkt": np.arange(1, t.size + 1), "Druck [bar]": p}).to_csv(
+        table, index=False, sep=";")
+    pd.DataFrame({"Zeit [s]": t, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(other, index=False,
+                                                                           sep=";")
+    code, _, err = mkm_cli(["import", str(table), "--join-by-time", str(other), "--join-shift",
+                            "0", *MUSCLE, "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("--join-by-time loadcell.csv: regulator.csv's column 'Zeitpunkt' counts the rows "
+            "(whole numbers stepping by 1, no unit), no clock to join by") in err
+    assert not (tmp_path / "runs").exists()
+    # the other way round: the load cell's rows were joined as a 1 Hz clock's
+    pd.DataFrame({"Zeit [s]": t, "Druck [bar]": p}).to_csv(table, index=False, sep=";")
+    pd.DataFrame({"Zeitpunkt": np.arange(1, t.size + 1), "Kraft [N]": thickwall_N(p, 0.0)}
+                 ).to_csv(other, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(table), "--join-by-time", str(other), "--join-shift",
+                            "0", *MUSCLE, "--eps", "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("--join-by-time loadcell.csv: its column 'Zeitpunkt' counts the rows (whole numbers "
+            "stepping by 1, no unit), no clock to join by: expected a time column in both "
+            "tables; if it is seconds, name its unit in the header ('Zeitpunkt [s]')") in err
+    assert not (tmp_path / "runs").exists()
 
 
 @pytest.mark.parametrize("header", ["P (bar)", "P (barg)"])

@@ -16,6 +16,7 @@ from mkm.bench.tables import (
     directions,
     parse_assignments,
     parse_header,
+    parse_scaling,
     parse_unit,
     plain_number,
     read_tables,
@@ -142,6 +143,51 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
                                rtol=1e-12)
     table, found = _one(tmp_path, "P [MBAR],F [N]\n500,1\n1500,2\n", "c.csv")
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.5, 1.5], rtol=1e-12)
+    # a logger writing in capitals: MSEC was a megasecond, each 100 ms sample 1e8 s apart
+    table, found = _one(tmp_path, "TIME (MSEC),PRESSURE (PSIG),FORCE (LBF)\n0,1,1\n100,2,2\n",
+                        "d.csv")
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [PSI_BAR, 2 * PSI_BAR],
+                               rtol=1e-12)
+
+
+@pytest.mark.parametrize("header", ["Zeit [sek]", "Zeit [Sek.]", "Time (sec.)", "Zeit_sek"])
+def test_seconds_as_german_and_abbreviated_headers_write_them(header, tmp_path):
+    # 'Zeit [sek]' was refused: "'sek' is not a unit of time (expected one like s)"
+    table, found = _one(tmp_path, f"{header};Druck [bar];Kraft [N]\n0,5;1;10\n1,5;2;20\n")
+    assert found["time"].header == header
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.5, 1.5])
+    table, found = _one(tmp_path, "Zeit [msek];Druck [bar];Kraft [N]\n500;1;10\n1500;2;20\n",
+                        "ms.csv")
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.5, 1.5])
+
+
+def test_pounds_in_capitals_name_the_option_that_reads_them_as_a_force(tmp_path):
+    # 'Force (LBS)' was refused as "not a unit of force" with no word of --units force=lbf,
+    # which 'Force (lbs)' names
+    for header in ("Force (lbs)", "Force (LBS)"):
+        with pytest.raises(ValueError, match=r"is not a unit of force .*--units force=lbf"):
+            _one(tmp_path, f"Pressure (psi),{header}\n10,1\n20,2\n")
+
+
+def test_milli_units_in_capitals_are_not_mega(tmp_path):
+    # pint reads MV, MA and MMHG as a megavolt, a megaampere and a megametre of mercury: a load
+    # cell amplifier's millivolts scaled a billion times too large, a 4-20 mA loop refused
+    path = tmp_path / "lab.csv"
+    path.write_text("PRESSURE (MMHG),FORCE (MV)\n750.06,0\n1500.12,1000\n")
+    (table,) = read_tables(path)
+    found = recognise(table, scaling=parse_scaling("force=200N/V", None))
+    # the conventional millimetre of mercury: 13595.1 kg/m^3 * 9.80665 m/s^2 * 1 mm
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               np.array([750.06, 1500.12]) * 13595.1 * 9.80665e-3 / 1e5,
+                               rtol=1e-6)
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.0, 200.0])
+    path.write_text("P (MA),F (N)\n4,0\n12,100\n")
+    (table,) = read_tables(path)
+    found = recognise(table, scaling=parse_scaling(None, None, "pressure=0:10bar"))
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 5.0])
+    with pytest.raises(ValueError, match=r"'KG' is not a unit of force .*--units force=kgf"):
+        _one(tmp_path, "P (bar),F (KG)\n1,10\n", "kg.csv")
 
 
 # the technical atmosphere is 1 kgf/cm^2; the conventional inch of mercury the pressure of an
@@ -261,6 +307,7 @@ def test_semicolons_decimal_commas_and_a_title_row(tmp_path):
     ("Luftdruck [bar]", "pressure"), ("Betriebsdruck (kPa)", "pressure"),
     ("Pression (bar)", "pressure"), ("Effort [N]", "force"), ("Kontraktion (%)", "eps"),
     ("Verkürzung [%]", "eps"), ("Ruhelänge [mm]", "L0"), ("Länge [mm]", "length"),
+    ("Minderdruck [bar]", "pressure"),
 ])
 def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
     # 'Zugkraft' was left unread: a German table names its force by its kind of pull
@@ -271,6 +318,19 @@ def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
     scale = {"Messkraft (kN)": 1000.0, "Betriebsdruck (kPa)": 0.01, "Kontraktion (%)": 0.01,
              "Verkürzung [%]": 0.01}.get(header, 1.0)
     np.testing.assert_allclose(column_values(table, found[role]), [scale])
+
+
+@pytest.mark.parametrize("other", ["T [°C]", "P [W]", "F [Hz]"])
+def test_a_symbol_of_another_quantity_is_no_reading(other, tmp_path):
+    # a temperature logged beside the record as 'T [°C]' was a second time column (the table
+    # refused), and alone was refused as a time in °C; a power 'P [W]' a second pressure
+    table, found = _one(tmp_path, f"Zeit [s];Druck [bar];Kraft [N];{other}\n0;1;100;22\n"
+                        "1;2;210;23\n")
+    assert {role: c.header for role, c in found.items()} == {
+        "time": "Zeit [s]", "pressure": "Druck [bar]", "force": "Kraft [N]"}
+    # a unit a reading may be mistaken in keeps its column, so its option is named
+    with pytest.raises(ValueError, match=r"'kg' is not a unit of force .*--units force=kgf"):
+        _one(tmp_path, "P [bar];F [kg]\n1;10\n", "kg.csv")
 
 
 def test_a_german_benchs_actual_reading_beside_its_set_point(tmp_path):
@@ -302,6 +362,16 @@ def test_a_german_direction_column(tmp_path):
     assert found["direction"].header == "Richtung"
     assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
 
+
+
+@pytest.mark.parametrize("up, down", [("load", "Unload"), ("Increase", "decrease"),
+                                      ("ascending", "descending"), ("inc", "dec"), ("up", "dn"),
+                                      ("Belasten", "Entlasten"), ("aufwärts", "Abwärts")])
+def test_direction_words_as_labs_write_them(up, down, tmp_path):
+    # 'load'/'unload' was refused: "'load' is not a direction", and the file had to be edited
+    table, found = _one(tmp_path, f"Druck [bar];Kraft [N];Richtung\n0;0;{up}\n2;200;{up}\n"
+                        f"2;210;{down}\n0;0;{down}\n")
+    assert directions(table, found["direction"]) == ["up", "up", "down", "down"]
 
 
 def test_a_french_direction_column(tmp_path):
@@ -440,6 +510,16 @@ def test_rows_of_separators_only_are_blank(tmp_path):
                         ";;\n ; ; \n")
     np.testing.assert_allclose(column_values(table, found["force"]), [12.25, 40.5])
     assert table.row_numbers == [2, 4]  # a bad cell is still named by its row in the file
+
+
+@pytest.mark.parametrize("end", [b"\x1a", b"\x00" * 512, b"\r\n\x1a"])
+def test_an_end_of_file_mark_or_nul_padding_is_no_row(end, tmp_path):
+    # a DOS program's Ctrl-Z and a logger's preallocated NULs after the last line: read as a
+    # row skipped for a blank cell, or as a bad cell ('40,5\x1a'), that no editor shows
+    path = tmp_path / "lab.csv"
+    path.write_bytes(b"Druck [bar];Kraft [N]\r\n0,5;12,25\r\n1,0;40,5" + end)
+    (table,) = read_tables(path)
+    assert table.rows == [["0,5", "12,25"], ["1,0", "40,5"]]
 
 
 def test_excels_unicode_text_is_utf16(tmp_path):
@@ -680,6 +760,26 @@ def test_a_windows_1252_header_with_an_umlaut(tmp_path):
     np.testing.assert_allclose(column_values(table, found["length"]), [250.0])
 
 
+def test_a_windows_1252_header_keeps_its_dashes_and_per_mille(tmp_path):
+    # Excel's CSV on a German Windows is code page 1252: its en dash (0x96) and per mille
+    # (0x89) were read as Latin-1's control characters, so the header shown and recorded was
+    # not the file's, and --columns naming it as Excel shows it found no such column
+    path = tmp_path / "lab.csv"
+    header = ("Zeit [s];Druck – Ist [bar];Kraft „gemessen“ [N];Dehnung [‰];Weg [µm];"
+              "Temperatur [°C]")
+    path.write_bytes(f"{header}\r\n0;1,5;150,5;0,5;10;22\r\n".encode("cp1252"))
+    (table,) = read_tables(path)
+    assert table.header == header.split(";")
+    found = recognise(table, columns={"pressure": "Druck – Ist [bar]",
+                                      "force": "Kraft „gemessen“ [N]"})
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [150.5])
+    # a byte code page 1252 leaves undefined (0x81) is read as Latin-1 reads it, not refused
+    path.write_bytes(b"Druck [bar];Kraft [N];Notiz\r\n1,5;150,5;\x81\r\n")
+    (table,) = read_tables(path)
+    assert table.rows == [["1,5", "150,5", "\x81"]]
+
+
 def test_a_loggers_units_row_under_the_names(tmp_path):
     table, found = _one(tmp_path, "Messung 7\nZeit;Druck;Kraft\ns;[kPa];(N)\n0;0;1,5\n"
                         "0,1;150;12,25\n")
@@ -687,9 +787,27 @@ def test_a_loggers_units_row_under_the_names(tmp_path):
     assert (table.header_row, table.title_rows) == (2, 1)
     np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
     np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+    # a column without a unit under empty brackets (a row counter's '[]') takes none
+    table, found = _one(tmp_path, "Nr.;Zeit;Druck;Kraft\n[];[s];[kPa];[N]\n1;0;0;1,5\n"
+                        "2;0,1;150;12,25\n", "n.csv")
+    assert table.header == ["Nr.", "Zeit [s]", "Druck [kPa]", "Kraft [N]"]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
     # one header of names that pint also reads (P: poise, F: farad) is not a units row
     table, found = _one(tmp_path, "Messung 7;x\nP;F\n1;2\n3;4\n", "b.csv")
     assert table.header == ["P", "F"] and set(found) == {"pressure", "force"}
+
+
+def test_a_units_row_with_a_temperature_and_a_displacement_is_read(tmp_path):
+    # a US logger's units row under its names, with a temperature in °F and a displacement in
+    # inches beside the readings: was no units row (°F and in are no role's units), so the
+    # units became the header and no pressure or force column was found
+    table, found = _one(tmp_path, "Time,Pressure,Force,Temperature,Displacement\n"
+                        "s,psi,lbf,°F,in\n0,14.5,10,72.5,0.01\n0.1,29,20,72.5,0.02\n")
+    assert table.header == ["Time [s]", "Pressure [psi]", "Force [lbf]", "Temperature [°F]",
+                            "Displacement [in]"]
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [14.5 * PSI_BAR, 29 * PSI_BAR])
+    np.testing.assert_allclose(column_values(table, found["force"]), [10 * LBF_N, 20 * LBF_N])
 
 
 def test_tab_separated_with_units_overridden(tmp_path):
@@ -715,6 +833,27 @@ def test_every_sheet_or_one(tmp_path):
     assert column_values(table, recognise(table)["force"]).tolist() == [3.0]
     with pytest.raises(ValueError, match="--sheet 'x': book.xlsx has no such sheet"):
         read_tables(path, "x")
+
+
+@pytest.mark.parametrize("header", ["Kontraktion [%]", "Kontraktion", "eps [-]"])
+@pytest.mark.parametrize("force", [150.5, "150,5"])  # a text cell of a decimal comma beside
+def test_a_workbook_cell_formatted_as_a_percentage_is_read_as_shown(header, force, tmp_path):
+    # Excel stores 12.2 % typed into a cell as 0.122, formatted '0.0%': under 'Kontraktion [%]'
+    # it was read as 0.122 %, an eps of 0.00122, unsaid
+    import openpyxl
+
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["Druck [bar]", "Kraft [N]", header])
+    for fraction in (0.0, 0.122):
+        sheet.append([2, force, fraction])
+        sheet.cell(sheet.max_row, 3).number_format = "0.0%"
+    path = tmp_path / "book.xlsx"
+    book.save(path)
+    (table,) = read_tables(path)
+    found = recognise(table)
+    np.testing.assert_allclose(column_values(table, found["eps"]), [0.0, 0.122], rtol=1e-12)
+    np.testing.assert_allclose(column_values(table, found["force"]), [150.5, 150.5])
 
 
 def test_a_workbooks_numbers_stored_as_text_with_decimal_commas(tmp_path):
@@ -797,6 +936,11 @@ def test_numbers_in_scientific_notation(tmp_path):
     (["20261206T090000.000Z", "20261206T090001.250Z"], [0.0, 1.25]),
     (["2026-12-06 09:00:00.000 +01:00", "2026-12-06 08:00:01.500 Z"], [0.0, 1.5]),
     (["2026-12-06 09:00:00 UTC", "2026-12-06 10:00:02 +0100"], [0.0, 2.0]),
+    # German Excel's date-time as it shows it, saved to CSV so, without seconds
+    (["06.12.2026 23:59", "07.12.2026 00:01"], [0.0, 120.0]),
+    # BenchLink's milliseconds after a third colon, in a date-time and a time of day
+    (["12/6/2026 14:05:00:900", "12/6/2026 14:05:01:150"], [0.0, 0.25]),
+    (["23:59:59:900", "00:00:00:100"], [0.0, 0.2]),
 ])
 def test_times_of_day_and_date_times_as_excel_and_loggers_write_them(cells, seconds, tmp_path):
     # were: "cell A2 (column 'Time'): '11:59:59.5 AM' is not a number", "'20261206T090000.000Z'
