@@ -434,14 +434,9 @@ def test_two_noise_spikes_as_the_vent_check_begins_are_no_fall(config, tmp_path)
     assert backend.bench.pressure_bar == pytest.approx(0.5 * math.exp(-2.0), abs=2e-3)
 
 
-def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denies(config,
-                                                                                   tmp_path):
-    # The regulator's monitor output reports its setpoint, not the pressure (it reads "OK"
-    # whatever the valve does), and from 15 s its valve no longer moves: at the end of the run
-    # the vent is commanded, the monitor reads 0.000 bar at once, and the vent was verified
-    # (exit 0, marker removed) with the muscle at 0.55 bar pulling 215 N. A vented muscle lets
-    # go of its force: the load cell still reading it verifies no vent.
-    backend = SimBackend(config)
+def _monitor_reports_its_command_valve_sticks(backend, config, at_sample: int) -> None:
+    """``backend``'s regulator made one whose monitor output reports its setpoint, not the
+    pressure, and whose valve stops moving from sample ``at_sample`` on."""
     bench, reg = backend.bench, config.regulator
     step, read = bench.step, backend.read
     span_V = reg.monitor_V_at_full_scale - reg.monitor_V_at_zero
@@ -450,12 +445,24 @@ def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denie
         cell_V, _ = step()
         return cell_V, reg.monitor_V_at_zero + bench.command_bar / reg.full_scale_bar * span_V
 
-    def valve_stuck_from_15_s(n, timeout):
-        if backend._index >= 150:
+    def valve_stuck(n, timeout):
+        if backend._index >= at_sample:
             bench.regulator_stuck = True
         return read(n, timeout)
 
-    bench.step, backend.read = reporting_its_command, valve_stuck_from_15_s
+    bench.step, backend.read = reporting_its_command, valve_stuck
+
+
+def test_a_monitor_that_reports_its_command_verifies_no_vent_the_load_cell_denies(config,
+                                                                                   tmp_path):
+    # The regulator's monitor output reports its setpoint, not the pressure (it reads "OK"
+    # whatever the valve does), and from 15 s its valve no longer moves: at the end of the run
+    # the vent is commanded, the monitor reads 0.000 bar at once, and the vent was verified
+    # (exit 0, marker removed) with the muscle at 0.55 bar pulling 215 N. A vented muscle lets
+    # go of its force: the load cell still reading it verifies no vent.
+    backend = SimBackend(config)
+    bench = backend.bench
+    _monitor_reports_its_command_valve_sticks(backend, config, at_sample=150)
     result = BenchRun(config, backend, tmp_path, handle_signals=False, **QUIET).execute()
     assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
     assert "but the load cell still reads" in result.reason
@@ -516,20 +523,8 @@ def test_a_muscle_held_by_a_stuck_valve_on_a_drifting_load_cell_is_still_caught(
     # That is far more than the 0.05 bar above the threshold makes (about 10 N): VENT BY HAND.
     c = _drifting(1.3)
     backend = SimBackend(c)
-    bench, reg = backend.bench, c.regulator
-    step, read = bench.step, backend.read
-    span_V = reg.monitor_V_at_full_scale - reg.monitor_V_at_zero
-
-    def reporting_its_command():
-        cell_V, _ = step()
-        return cell_V, reg.monitor_V_at_zero + bench.command_bar / reg.full_scale_bar * span_V
-
-    def valve_stuck_from_90_s(n, timeout):
-        if backend._index >= 900:
-            bench.regulator_stuck = True
-        return read(n, timeout)
-
-    bench.step, backend.read = reporting_its_command, valve_stuck_from_90_s
+    bench = backend.bench
+    _monitor_reports_its_command_valve_sticks(backend, c, at_sample=900)
     result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
     assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
     forces = re.search(r"still reads ([0-9.]+) N against ([0-9.]+) N before", result.reason)
@@ -1433,55 +1428,30 @@ def test_the_vent_written_at_a_runs_start_up_for_dead_runs_is_bounded(config, tm
     assert lease.path.exists()  # the dead run stays marked
 
 
-def test_a_count_of_waiting_samples_that_hangs_in_mkm_vent_ends_it_unverified(config,
-                                                                              monkeypatch):
+@pytest.mark.parametrize("call, said, bound_s", [
     # the check's first call to the driver asks how many samples wait (those acquired before
-    # the vent, which prove nothing); it hangs, and was watched by nothing: the command sat in
-    # it. Now it is given READ_HANG_MARGIN_S, then the vent is said not verified.
-    import mkm.bench.procedures as procedures
-    from mkm.bench.backend import BenchError
-
-    release = threading.Event()
-
-    class Hanging(SimBackend):
-        def available(self):
-            release.wait(60)  # the test's net; released once the command returned
-            return super().available()
-
-    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
-    try:
-        with pytest.raises(BenchError) as caught:
-            procedures.vent(config, notify=lambda m: None)
-        still_hung = not release.is_set()
-    finally:
-        release.set()
-    assert still_hung
-    hung_s = float(re.search(r"the device did not say how many samples wait within ([0-9.]+) s "
-                             r"during the vent check: the driver hangs; the vent was commanded, "
-                             r"its check cannot read the monitor\): VENT BY HAND",
-                             str(caught.value)).group(1))
-    assert hung_s >= 1.0  # READ_HANG_MARGIN_S
-    (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
-    assert "did not say how many samples wait" in json.loads(marker.read_text())[
-        "vent_unverified"]
-
-
-def test_a_start_of_the_inputs_that_hangs_in_mkm_vent_ends_it_unverified(config,
-                                                                         monkeypatch):
+    # the vent, which prove nothing): READ_HANG_MARGIN_S
+    ("available", "the device did not say how many samples wait within", 1.0),
     # the vent went out with the open; the check then starts the inputs' task (the monitor's
-    # clock), and the driver hangs there: the command sat in it, watched by nothing, nothing
-    # said. Now the start is watched as the check's other calls, given the AO write's timeout
-    # and the margin, then the vent is said not verified and the bench stays marked.
+    # clock): the AO write's timeout and READ_HANG_MARGIN_S
+    ("start", "starting the device's inputs did not return within", 2.0)])
+def test_a_call_of_the_vent_check_that_hangs_in_mkm_vent_ends_it_unverified(config, monkeypatch,
+                                                                           call, said, bound_s):
+    # the driver hangs in a call of `mkm vent`'s check, watched by nothing: the command sat in
+    # it, nothing said. Now the call is watched as the check's reads are, then the vent is said
+    # not verified and the bench stays marked.
     import mkm.bench.procedures as procedures
     from mkm.bench.backend import BenchError
 
     release, backends = threading.Event(), []
 
-    class Hanging(SimBackend):
-        def start(self):
-            release.wait(10)  # the test's net; released once the command returned
-            super().start()
+    def hangs(method):
+        def hung(self, *args):
+            release.wait(60)  # the test's net; released once the command returned
+            return method(self, *args)
+        return hung
 
+    Hanging = type("Hanging", (SimBackend,), {call: hangs(getattr(SimBackend, call))})
     monkeypatch.setattr(procedures, "make_backend",
                         lambda c, clock: backends.append(Hanging(c)) or backends[-1])
     try:
@@ -1492,14 +1462,12 @@ def test_a_start_of_the_inputs_that_hangs_in_mkm_vent_ends_it_unverified(config,
         release.set()
     assert still_hung
     assert backends[0].commands[0][1] == 0.0  # the vent went out first, at open
-    hung_s = float(re.search(r"starting the device's inputs did not return within ([0-9.]+) s "
-                             r"during the vent check: the driver hangs; the vent was commanded, "
-                             r"its check cannot read the monitor\): VENT BY HAND",
-                             str(caught.value)).group(1))
-    assert hung_s >= 2.0  # the AO write's timeout and READ_HANG_MARGIN_S
+    hung_s = float(re.search(re.escape(said) + r" ([0-9.]+) s during the vent check: the driver "
+                             r"hangs; the vent was commanded, its check cannot read the "
+                             r"monitor\): VENT BY HAND", str(caught.value)).group(1))
+    assert hung_s >= bound_s
     (marker,) = bench_folder("sim-Dev1").glob("*.json")  # the bench is marked
-    assert "starting the device's inputs did not return" in json.loads(marker.read_text())[
-        "vent_unverified"]
+    assert said in json.loads(marker.read_text())["vent_unverified"]
 
 
 @pytest.mark.parametrize("refusals", [1, 3])
@@ -1573,32 +1541,31 @@ def test_mkm_vent_killed_during_its_check_leaves_the_bench_marked(config, monkey
                      "before the vent was verified: vented now"]
 
 
-def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, monkeypatch):
-    # `mkm vent` opens the device, which writes the vent; the driver hangs in the open. The
-    # command sat in it, nothing said, for as long as it hung. Now the open is waited for
-    # OPEN_WAIT_S, then one line says the vent is not known to be written: VENT BY HAND, exit 1;
-    # the device is not closed behind the open under way (a close would wait behind it).
-    import mkm.bench.procedures as procedures
-    import mkm.bench.run as run
-
-    release, closed = threading.Event(), []
+def _open_hangs(release, closed):
+    """A simulated device whose open hangs in the driver until ``release`` (the test's net:
+    10 s), each close recorded in ``closed``."""
 
     class Hanging(SimBackend):
         def open(self):
-            release.wait(10)  # the test's net; released once the command returned
+            release.wait(10)
             return super().open()
 
         def close(self):
             closed.append(True)
             super().close()
 
-    monkeypatch.setattr(procedures, "make_backend", lambda c, clock: Hanging(c))
-    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
-    try:
-        code, out, err = mkm_cli(["vent", "--backend", "sim"])
-        still_hung = not release.is_set()
-    finally:
-        release.set()
+    return Hanging
+
+
+def test_an_open_that_hangs_in_mkm_vent_says_the_vent_was_not_written(mkm_cli, monkeypatch,
+                                                                       tmp_path):
+    # `mkm vent` opens the device, which writes the vent; the driver hangs in the open. The
+    # command sat in it, nothing said, for as long as it hung. Now the open is waited for
+    # OPEN_WAIT_S, then one line says the vent is not known to be written: VENT BY HAND, exit 1;
+    # the device is not closed behind the open under way (a close would wait behind it).
+    release, closed = threading.Event(), []
+    code, out, err, still_hung, _ = _command_on(_open_hangs(release, closed), release,
+                                                ["vent"], mkm_cli, monkeypatch, tmp_path)
     assert still_hung and code == 1 and out == "" and not closed
     assert err.splitlines()[-1] == (
         "mkm vent: error: opening the device did not return within 0.2 s (the driver hangs): "
@@ -1615,31 +1582,11 @@ def test_an_open_that_hangs_ends_every_command_in_one_line(mkm_cli, monkeypatch,
     # OPEN_WAIT_S, then ends in one line, exit 1: the vent is not known to be written, VENT BY
     # HAND; the device is not closed behind the open, no run folder is made, and a run that
     # died on the bench stays marked for the next command.
-    import mkm.bench.procedures as procedures
-    import mkm.bench.run as run
 
     lease = _dead_run_lease()
     release, closed = threading.Event(), []
-
-    class Hanging(SimBackend):
-        def open(self):
-            release.wait(10)  # the test's net; released once the command returned
-            return super().open()
-
-        def close(self):
-            closed.append(True)
-            super().close()
-
-    for module in (run, procedures):
-        monkeypatch.setattr(module, "make_backend", lambda c, clock: Hanging(c))
-    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
-    out_root = tmp_path / "runs"
-    try:
-        code, out, err = mkm_cli([*command, "--backend", "sim", *(
-            ["--out", str(out_root)] if command[0] == "acquire" else [])])
-        still_hung = not release.is_set()
-    finally:
-        release.set()
+    code, out, err, still_hung, out_root = _command_on(_open_hangs(release, closed), release,
+                                                       command, mkm_cli, monkeypatch, tmp_path)
     assert still_hung and code == 1 and out == "" and not closed
     simulated = "SIMULATED " if command[0] == "acquire" else ""  # a run says it in its line
     assert err.splitlines()[-1] == (
@@ -1648,6 +1595,26 @@ def test_an_open_that_hangs_ends_every_command_in_one_line(mkm_cli, monkeypatch,
         "HAND")
     assert not out_root.exists() or not list(out_root.iterdir())  # no run folder
     assert lease.path.exists()  # the dead run stays marked
+
+
+def _command_on(backend_class, release, command, mkm_cli, monkeypatch, tmp_path):
+    """``mkm COMMAND --backend sim`` on a ``backend_class`` whose driver hangs until
+    ``release`` (set once the command returned), ``OPEN_WAIT_S`` 0.2 s: its exit status,
+    stdout, stderr, whether the driver still hung as it returned, and the folder of a run."""
+    import mkm.bench.procedures as procedures
+    import mkm.bench.run as run
+
+    for module in (run, procedures):
+        monkeypatch.setattr(module, "make_backend", lambda c, clock: backend_class(c))
+    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
+    out_root = tmp_path / "runs"
+    try:
+        code, out, err = mkm_cli([*command, "--backend", "sim", *(
+            ["--out", str(out_root)] if command[0] == "acquire" else [])])
+        still_hung = not release.is_set()
+    finally:
+        release.set()
+    return code, out, err, still_hung, out_root
 
 
 @pytest.mark.parametrize("command", [["vent"], ["acquire", "--clock", "virtual"], ["tare"],
@@ -1661,8 +1628,6 @@ def test_a_serial_number_that_hangs_ends_every_command_in_one_line(mkm_cli, monk
     # holding the bench to stop (its tasks hold the device). Now it is waited for OPEN_WAIT_S,
     # then the command ends in one line, VENT BY HAND, exit 1; the device is not opened, no run
     # folder is made, and a run that died on the bench stays marked.
-    import mkm.bench.procedures as procedures
-    import mkm.bench.run as run
 
     lease = _dead_run_lease()
     release, opened = threading.Event(), []
@@ -1681,16 +1646,8 @@ def test_a_serial_number_that_hangs_ends_every_command_in_one_line(mkm_cli, monk
             opened.append(True)
             return super().open()
 
-    for module in (run, procedures):
-        monkeypatch.setattr(module, "make_backend", lambda c, clock: Hanging(c))
-    monkeypatch.setattr(run, "OPEN_WAIT_S", 0.2)  # the bound itself: 10 s
-    out_root = tmp_path / "runs"
-    try:
-        code, out, err = mkm_cli([*command, "--backend", "sim", *(
-            ["--out", str(out_root)] if command[0] == "acquire" else [])])
-        still_hung = not release.is_set()
-    finally:
-        release.set()
+    code, out, err, still_hung, out_root = _command_on(Hanging, release, command, mkm_cli,
+                                                       monkeypatch, tmp_path)
     assert still_hung and code == 1 and out == "" and not opened
     assert err.splitlines()[-1] == (
         f"mkm {command[0]}: error: reading the device's serial number (it names the bench) did "
