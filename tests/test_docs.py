@@ -1062,3 +1062,9 @@ def test_the_guides_fitted_load_cell_zero_is_its_measured_file():
     assert "every fitted zero within 0.15 N" in said
     assert max(abs(p["value"] - p["truth"]) for p in of("theta0_deg")) <= 0.008
     assert f"an interval {min(widths):.2f}-{max(widths):.2f} deg wide" in said
+    # the zero's own interval: narrow where the bootstrap kept a slack step, wide where not
+    zero = sorted(p["ci_high"] - p["ci_low"] for p in of("force_zero_N"))
+    narrow = [w for w in zero if w < 3]
+    wide = zero[len(narrow):]
+    assert (f"{narrow[0]:.2f}-{narrow[-1]:.1f} N wide on {len(narrow)} draws of {len(zero)} and "
+            f"{wide[0]:.1f}-{wide[-1]:.0f} N on the other {len(wide)}") in said
