@@ -1062,6 +1062,13 @@ def test_the_guides_fitted_load_cell_zero_is_its_measured_file():
     assert "every fitted zero within 0.15 N" in said
     assert max(abs(p["value"] - p["truth"]) for p in of("theta0_deg")) <= 0.008
     assert f"an interval {min(widths):.2f}-{max(widths):.2f} deg wide" in said
+    # the file is what identify says now: the zero away from 0 said with what to do
+    apart = [d for d, p in zip(draws, of("force_zero_N"), strict=True)
+             if not p["ci_low"] <= 0.0 <= p["ci_high"]]
+    told = [d for d in draws if any("with the muscle slack" in n and "mkm tare" in n
+                                    for n in d["notes"])]
+    assert told == apart
+    assert f"On the {len(apart)} draws whose zero's interval leaves out 0 identify says" in said
     # the zero's own interval: narrow where the bootstrap kept a slack step, wide where not
     zero = sorted(p["ci_high"] - p["ci_low"] for p in of("force_zero_N"))
     narrow = [w for w in zero if w < 3]
