@@ -506,64 +506,6 @@ def test_the_shipped_wall_identification_is_what_identify_gives_now(tmp_path, mo
             assert now[key] == pytest.approx(value, rel=5e-6), key
 
 
-@pytest.mark.parametrize("measured", ["identify_wrong_bench.json",
-                                      "identify_wrong_bench_fresh.json",
-                                      "identify_wrong_bench_zero.json"])
-def test_the_shipped_wrong_bench_draws_are_those_their_recorded_command_makes(measured):
-    """Each ``identify_wrong_bench*.json`` holds the draws its recorded command makes now: the
-    departures it names (the benchmark's whole list where it names none), each draw's seed the
-    first plus its index. The fresh set had been made before the list gained the drifting load
-    cell: its command drew that departure, and every later draw another muscle, than the file
-    held."""
-    import json
-    import shlex
-
-    bench = _benchmark("bench_identify_wrong_bench")
-    record = json.loads((DOCS / "measured" / measured).read_text(encoding="utf-8"))
-    argv = shlex.split(record["command"])[1:]
-
-    def option(name, default):
-        return argv[argv.index(name) + 1] if name in argv else default
-
-    departures = option("--departures", ",".join(bench.DEPARTURES)).split(",")
-    draws, seed = int(option("--draws", "6")), int(option("--seed", str(bench.FIRST_SEED)))
-    made = [(seed + k * len(departures) + j, d) for k in range(draws)
-            for j, d in enumerate(departures)]
-    assert [(d["seed"], d["departure"]) for d in record["draws"]] == made
-
-
-def test_the_guides_wrong_bench_figures_are_its_measured_files():
-    """uncertainty.md's reading of the two wrong-bench tables (the first set and the fresh one,
-    pooled by departure) is held to their files: the monitor gain's misfits, the cell's zero
-    left in (the angle's error, how close the slack steps' line comes to the zero) and the
-    drifting zero's refused runs."""
-    import json
-
-    draws = [d for name in ("identify_wrong_bench.json", "identify_wrong_bench_fresh.json")
-             for d in json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))["draws"]]
-    text = " ".join((DOCS / "guide" / "uncertainty.md").read_text(encoding="utf-8").split())
-
-    def of(departure):
-        return [d for d in draws if d["departure"] == departure]
-
-    gain = of("monitor gain")
-    chi2 = [d["chi2_per_nu"] for d in gain]
-    named = sum(d["misfit_line"] is not None for d in gain)
-    assert (f"leaves chi2/nu {min(chi2):.1f}-{max(chi2):.1f}, named in {named} of "
-            f"{len(gain)} draws") in text
-    offset = of("loadcell offset")
-    theta0 = [next(p for p in d["parameters"] if p["parameter"] == "theta0_deg") for d in offset]
-    assert max(abs(p["value"] - p["truth"]) for p in theta0) <= 0.12
-    assert "theta0 within 0.12 deg" in text
-    read = sorted(abs(float(d["zero_line"].split(" N over")[0].rsplit(" ", 1)[1])
-                      - d["muscle"]["loadcell_offset_N"]) for d in offset)
-    assert read[-3] <= 0.28 < read[-2]
-    assert (f"within 0.28 N of the zero left in, {read[-2]:.2f} and {read[-1]:.2f} N in two "
-            "draws") in text
-    refused = [d for d in of("loadcell drift") if d["verdict"] == "refused"]
-    assert f"caught by the bench in {['no', 'one', 'two', 'three'][len(refused)]} draws" in text
-
-
 @pytest.mark.slow
 def test_the_shipped_wrong_bench_identification_is_what_identify_gives_now(tmp_path,
                                                                            monkeypatch):
