@@ -21,7 +21,8 @@ the surrogate itself by its predictive standard deviation ``s``. Three stages:
    reaches its 10 % point at 0.80 of its half-width, the normal at 0.74).
 3. **Worst corner** (:func:`check_designs`): the FE model at the corner of the tolerance box
    where the force is lowest (each input at its bound, on the side the sensitivity says lowers
-   the force): ``r<k>_fe_worst_corner_N``. A corner short of the force is flagged
+   the force; one without a slope there, or that the surrogate does not take, at both bounds,
+   the lowest FE force taken): ``r<k>_fe_worst_corner_N``. A corner short of the force is flagged
    (``r<k>:worst_corner_short``), not refused: the corner is rarer than ``1 - p``. A corner the
    FE does not solve (not converged, braid locked) is flagged ``r<k>:worst_corner_unsolved``,
    its reason in ``fe_failure``: never taken for a pass.
@@ -31,6 +32,8 @@ on draws from the tolerances.
 """
 
 from __future__ import annotations
+
+import itertools
 
 import numpy as np
 import pandas as pd
@@ -193,8 +196,11 @@ def _linear_draws(model, req, nominal, sample, tolerances, force_N) -> np.ndarra
 
 def _worst_corner_force(model, mesh, nominal, req, tolerances, cache_dir,
                         cached_predict) -> tuple[float, str]:
-    """The FE force at the corner of the tolerance box that lowers the surrogate's force most,
-    and why it is NaN where the FE gave no valid force there (else "")."""
+    """The FE force at the corner of the tolerance box that lowers the force most, and why it is
+    NaN where the FE gave no valid force there (else ""). Each input goes to the bound the
+    surrogate's sensitivity says lowers the force; an input it shows no slope for (the rubber
+    and the length at eps 0, where the braid holds the tube's shape) or cannot vary goes to
+    both bounds, and the FE's lowest force of those corners is the worst."""
     force = float(np.ravel(model.predict(req.pressure_bar, nominal["D0_mm"], nominal["t0_mm"],
                                          req.eps).force_N)[0])
     signs = sensitivities(model, req.pressure_bar, nominal, tolerances, force,
@@ -202,13 +208,37 @@ def _worst_corner_force(model, mesh, nominal, req, tolerances, cache_dir,
     bounds = vars(tolerances)
     corner = dict(nominal)
     for name, c in signs.items():
-        step = -np.sign(float(np.ravel(c)[0])) * bounds[name]
-        if name == "rubber_fraction":
-            corner["C10_MPa"] *= 1 + step
-            corner["C01_MPa"] *= 1 + step
-        else:
-            corner[name] = corner[name] + step
-    corner["eps"] = max(corner["eps"], 0.0)
+        corner = _moved(corner, name, -np.sign(float(np.ravel(c)[0])) * bounds[name])
+    undecided = [name for name, bound in bounds.items()
+                 if bound > 0 and not np.ravel(signs.get(name, [0.0]))[0]]
+    forces = []
+    for sides in itertools.product((-1.0, 1.0), repeat=len(undecided)):
+        muscle_at = dict(corner)
+        for name, side in zip(undecided, sides, strict=True):
+            muscle_at = _moved(muscle_at, name, side * bounds[name])
+        found, reason = _fe_force(muscle_at, mesh, req, cache_dir, cached_predict)
+        if not np.isfinite(found):  # never a pass: whether that corner holds is unknown
+            return np.nan, reason
+        forces.append(found)
+    return min(forces), ""
+
+
+def _moved(muscle: dict, name: str, step: float) -> dict:
+    """``muscle`` with the toleranced input ``name`` moved by ``step`` (the rubber: C10 and C01
+    by that fraction), eps no lower than 0."""
+    out = dict(muscle)
+    if name == "rubber_fraction":
+        out["C10_MPa"] *= 1 + step
+        out["C01_MPa"] *= 1 + step
+    else:
+        out[name] = out[name] + step
+    out["eps"] = max(out["eps"], 0.0)
+    return out
+
+
+def _fe_force(corner: dict, mesh, req, cache_dir, cached_predict) -> tuple[float, str]:
+    """The FE force of the muscle ``corner`` at the requirement's pressure, and why it is NaN
+    where the FE gave no valid force (else "")."""
     muscle = Muscle(**{k: corner.get(k) for k in NUMBERS})
     fe = parse_spec(f"axisym:mesh={mesh}").build(muscle=muscle)
     pred, _ = cached_predict(fe, req.pressure_bar, muscle.D0_mm, muscle.t0_mm, muscle.eps,

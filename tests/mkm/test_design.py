@@ -899,6 +899,45 @@ def test_a_calibrated_rubber_outside_the_practical_range_is_said(tmp_path):
                                    Calibration.load(lab)) == []
 
 
+def test_the_worst_corner_tries_both_bounds_of_an_input_without_a_slope(monkeypatch):
+    # was: an input whose sensitivity the search's model gave as zero or not at all (the
+    # rubber and the length at eps 0; here the closed form, which takes neither) stayed at
+    # its nominal value, so the worst corner was no corner: a fresh robust design's was 0.4 %
+    # above the FE's lowest corner. The FE is replaced by one whose force falls by 10 N per
+    # mm of rest length: the worst corner is 2 mm short, 20 N below the nominal length's.
+    import mkm.prediction_cache
+    from mkm.design.robust import check_designs
+    from mkm.design.spec import Requirement
+    from mkm.fem.interface import Prediction
+    from mkm.fem.tolerances import Tolerances
+    from mkm.uncertainty import nominal_parameters
+
+    model = make_model("thickwall")  # a closed form stands in for the surrogate: no training
+    nominal = nominal_parameters(model, 40.0, 3.0, 0.10)
+    lengths = []
+
+    def fe(fe_model, pressure_bar, D0_mm, t0_mm, eps, cache_dir=None):
+        L0_mm = fe_model.params()["L0_mm"]
+        lengths.append(L0_mm)
+        one = np.array([1.0])
+        return Prediction(fe_model.name, {}, pressure_bar * one, D0_mm * one, t0_mm * one,
+                          eps * one, np.array([900.0 + 10.0 * (L0_mm - nominal["L0_mm"])]),
+                          one > 0, one > 0, 0.0, {}), False
+
+    monkeypatch.setattr(mkm.prediction_cache, "cached_predict", fe)
+    theta0 = nominal["theta0_deg"]
+    designs = pd.DataFrame({"rank": [1], "D0_mm": [40.0], "t0_mm": [3.0],
+                            "L0_mm": [nominal["L0_mm"]], "theta0_deg": [theta0],
+                            "rubber": ["default"], "fe_mesh": ["coarse"], "flags": [""],
+                            "fe_failure": [""]})
+    models = {(nominal["L0_mm"], theta0, "default"): model}
+    out = check_designs(designs, [Requirement(885.0, 2.0, 0.10)], models,
+                        Tolerances.parse("D0=0.3,t0=0.1,L0=2"), 0.95, "coarse").iloc[0]
+    assert sorted(lengths) == pytest.approx([nominal["L0_mm"] - 2.0, nominal["L0_mm"] + 2.0])
+    assert out["r1_fe_worst_corner_N"] == pytest.approx(880.0)
+    assert "r1:worst_corner_short" in out["flags"]
+
+
 def test_an_unsolved_worst_corner_is_a_failure_with_its_reason(monkeypatch):
     # was: the FE's NaN at the worst corner compared False with the required force: no flag,
     # no reason, the design looked robust where nothing was verified. The FE is replaced by
