@@ -392,7 +392,24 @@ class Identification:
             lines.append(f"  {check['run']}: largest |Err%| rising/falling: nominal {nominal}, "
                          f"identified {identified}")
         lines += [f"  note: {n}" for n in self.notes]
+        lines.append(self._verdict_line())
         return "\n".join(lines)
+
+    def _verdict_line(self) -> str:
+        """The last line a reader sees: whether the identified muscle can be used."""
+        g = self.goodness
+        if g is None or not g.judged:
+            return ("verdict: not judged (the runs show no noise to judge the fit by): weigh "
+                    "the largest |Err%| above against the instruments' accuracy before using "
+                    "calibration.json")
+        if not g.misfit:
+            return (f"verdict: the model follows these runs within their noise (chi2/nu "
+                    f"{g.reduced:.3g}): calibration.json is ready for --calibration (mkm "
+                    "report, design, fem solve)")
+        return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"
+                f"{g.birge_ratio:.3g} and the estimates may be biased; the notes above name "
+                "what the runs show that the fit lacks: act on them before using "
+                "calibration.json")
 
     def _unjudged_line(self) -> str:
         """Without the steps' noise (a table: one value per step) no chi-square says whether

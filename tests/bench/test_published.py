@@ -52,6 +52,8 @@ def test_martens_boblan_import_identify_report(tmp_path, mkm_cli):
     worst = max(r["identified_rising_pct"] for r in record["leave_one_run_out"])
     assert "goodness of fit: not judged (a step table" in out
     assert f"misses its own runs by up to {worst:.2f} % of their largest force" in out
+    # the last line before the files written: the verdict a reader acts on
+    assert out.splitlines()[-2].startswith("verdict: not judged (the runs show no noise")
     held_out = [paths[k] for k in (1, 3, 4, 5)]
     code, out, err = mkm_cli(["report", *held_out, "--models", "thickwall", "--calibration",
                               str(tmp_path / "id" / "calibration.json"), "--out",

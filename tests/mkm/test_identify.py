@@ -131,6 +131,10 @@ def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mk
     assert misfit["judged"] and misfit["chi2_per_nu"] < 2.0
     assert (misfit["misfit_line"] is None) == (misfit["birge_ratio"] == 1.0)
     assert len(misfit["branches"]) == 2 * len(runs) and "goodness of fit: chi2/nu = " in stdout
+    # the last line before the files written: the verdict a reader acts on
+    assert stdout.splitlines()[-2].startswith(
+        "verdict: a misfit" if misfit["misfit_line"] else
+        "verdict: the model follows these runs within their noise")
 
     # fem solve with --calibration is the thick-wall model of the identified muscle
     argv = ["fem", "solve", "--model", "thickwall", "--D0", "30", "--t0", "3", "--eps", "0.1",
