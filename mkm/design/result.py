@@ -114,8 +114,9 @@ class DesignResult:
         design outside the practical range or on its limit (:func:`~mkm.design.box_search.
         range_limits`), one that meets a requirement by less than the mesh's error and was
         verified again on a finer one, a robust design below the probability asked (none
-        verified holds it), and one whose worst corner the FE did not solve. Empty when
-        none."""
+        verified holds it), one whose worst corner the FE did not solve, and one met by less
+        than the identified muscle's own uncertainty allows at the default probability
+        (:func:`held_with`). Empty when none."""
         s = self.search
         notes = [s.box_note()] if s.box_note() else []
         best = self.chosen
