@@ -69,8 +69,8 @@ from mkm.bench.tables import (
     recognise,
     several_forces,
     sheet_names,
-    statistic_columns,
     taken_columns,
+    unread_columns,
     unread_time_columns,
     volts_header,
     without_blank_rows,
@@ -383,9 +383,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                 else "")
                              + (f"; a 4-20 mA channel, {in_mA[0]!r}, with --current-range "
                                 f"{missing[0]}=LOW:HIGH" if in_mA else "") + ")"
-                             + "".join(f"; {h!r} names a statistic, not taken by its unit: "
+                             + "".join(f"; {h!r} names {why}, not taken by its unit: "
                                        f"--columns {missing[0]}={h!r} reads it"
-                                       for h in statistic_columns(table, missing[0])[:1]))
+                                       for h, why in unread_columns(table, missing[0])[:1]))
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         if "time" in found:  # a step table's rows may repeat a step; a record's are samples
@@ -481,12 +481,13 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
 
 def _lacks(table, missing: list[str]) -> str:
     """What a sheet skipped lacks, in words: ``neither``, or ``no force column`` and the
-    columns of that unit whose names make them statistics (``'F max (N)'``)."""
+    columns of that unit whose names make them no reading (a statistic, ``'F max (N)'``, or
+    the supply pressure)."""
     if len(missing) > 1:
         return "neither"
-    named = statistic_columns(table, missing[0])
-    return f"no {missing[0]} column" + "".join(f"; {h!r} is a statistic, no reading"
-                                               for h in named[:1])
+    named = unread_columns(table, missing[0])
+    return f"no {missing[0]} column" + "".join(f"; {h!r} is {why}, no reading"
+                                               for h, why in named[:1])
 
 
 def _join_table(path: str | Path, scaling=None):

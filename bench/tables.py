@@ -89,7 +89,8 @@ class Role:
         return name in self.names or (bool(self.endings) and " " not in name
                                       and name.endswith(self.endings)
                                       and not name.startswith(SET_POINT_PREFIX)
-                                      and not _statistic_compound(name))
+                                      and not _statistic_compound(name)
+                                      and not supply(name))
 
 
 #: the roles a column may take by its unit alone, where no column's name says it
@@ -129,6 +130,19 @@ def _statistic_compound(word: str) -> bool:
     suffix = next((p for p in STATISTIC_SUFFIXES if word.endswith(p)), None)
     return bool(prefix and reading(word[len(prefix):], len(prefix) > 3)
                 or suffix and reading(word[:-len(suffix)], False))
+
+
+#: the words of a pressure column's name that make it the supply's, upstream of the regulator
+#: (a logger's channel beside the muscle's: 'Versorgungsdruck', 'Supply pressure'), no reading
+#: of the muscle's pressure
+SUPPLY_WORDS = {"supply", "inlet", "versorgung", "versorgungsdruck", "vordruck", "eingangsdruck",
+                "netzdruck", "speisedruck", "zuluftdruck", "systemdruck"}
+
+
+def supply(name: str) -> bool:
+    """Whether a column's name (as :func:`parse_header` gives it) names the supply pressure
+    upstream of the regulator (:data:`SUPPLY_WORDS`)."""
+    return bool(SUPPLY_WORDS & set(name.split()))
 
 
 def statistic(name: str) -> bool:
@@ -1358,18 +1372,24 @@ def by_unit_columns(table: RawTable, role: str, found: dict[str, Column]) -> lis
     taken = taken_columns(found)
     return [index for index, header in enumerate(table.header)
             if header and index not in taken and not _set_point(parse_header(header)[0])
-            and not statistic(parse_header(header)[0])
+            and not statistic(parse_header(header)[0]) and not supply(parse_header(header)[0])
             and (unit := parse_header(header)[1]) is not None
             and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
 
 
-def statistic_columns(table: RawTable, role: str) -> list[str]:
-    """The headers whose unit is of ``role``'s quantity but whose name makes them a statistic
-    (:data:`STATISTIC_WORDS`), which :func:`by_unit_columns` leaves out."""
-    return [header for header in table.header
-            if header and statistic(parse_header(header)[0])
-            and (unit := parse_header(header)[1]) is not None
-            and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])]
+def unread_columns(table: RawTable, role: str) -> list[tuple[str, str]]:
+    """The headers whose unit is of ``role``'s quantity but whose name makes them no reading
+    of the muscle's, which :func:`by_unit_columns` leaves out, each with why in words: a
+    statistic (:data:`STATISTIC_WORDS`) or the supply pressure (:data:`SUPPLY_WORDS`)."""
+    out = []
+    for header in table.header:
+        name, unit = parse_header(header) if header else ("", None)
+        why = ("a statistic" if statistic(name) else
+               "the supply pressure, upstream of the regulator" if supply(name) else None)
+        if why and unit is not None and (parsed := parse_unit(unit)) is not None \
+                and _fits(parsed, ROLES[role]):
+            out.append((header, why))
+    return out
 
 
 #: how a time column of spreadsheet serial dates is said (the line, run.json)

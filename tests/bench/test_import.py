@@ -496,6 +496,30 @@ def test_a_statistic_compound_beside_the_reading_is_no_reading(header, role, tmp
             f"{role}={header!r} reads it") in err
 
 
+@pytest.mark.parametrize("header", ["Versorgungsdruck [bar]", "Supply pressure [bar]",
+                                    "p supply [bar]", "Vordruck [bar]"])
+def test_the_supply_pressure_beside_the_muscles_is_no_reading(header, tmp_path, mkm_cli):
+    # a logger's channel upstream of the regulator (6 bar throughout) beside the muscle's
+    # pressure: the table was refused as holding two pressure columns ('Versorgungsdruck'
+    # ends as a pressure's name does; 'Supply pressure' is one by its unit); alone it was
+    # taken as the muscle's, which never rose
+    force = thickwall_N(PRESSURES[:5], 0.0)
+    path = tmp_path / "logger.csv"
+    frame = pd.DataFrame({header: np.full(5, 6.0), "Druck [bar]": PRESSURES[:5],
+                          "Kraft [N]": force})
+    frame.to_csv(path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["ignored_columns"] == [header]
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], PRESSURES[:5], rtol=1e-6)
+    # alone: refused, named as the supply's with the option that reads it all the same
+    frame.drop(columns="Druck [bar]").to_csv(path, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert (f"{header!r} names the supply pressure, upstream of the regulator, not taken by its "
+            f"unit: --columns pressure={header!r} reads it") in err
+
+
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
     """A lab's 100 Hz record: 2 s vented, 10 s up to 2.5 bar, 10 s down, 1 s vented; the gauge
     reads ``vented_bar`` at rest, the load cell ``tare_N``; noise 0.005 bar and 0.3 N."""
