@@ -1038,32 +1038,20 @@ def _advice_options(r: _Run) -> list[str]:
     with ``r`` among its runs: a group none of those runs can show (friction and creep of
     tables with one branch and no times) is not advised, as identify would not fit it."""
     if r.advice_options is None:
-        from mkm.identify.procedure import options_for_runs
+        from mkm.identify.procedure import options_for_runs, with_group
 
         options = (_identified_record(r.calibration) or {}).get("options") or []
         paths = [x["path"] for x in _identified_runs(r.calibration) if "path" in x]
+        # a run declared at its rest length that the calibration of its shortened runs does
+        # not carry over to is most often a table's first length already shortened (the
+        # published maps: docs/guide/threshold.md): identify fits the rest length too
         if options and r.muscle.eps == 0.0 and all(
                 float(x.get("muscle", {}).get("L0_mm", -1.0)) == r.muscle.L0_mm
                 for x in _identified_runs(r.calibration)):
-            options = _with_rest_length(list(options))
+            options = with_group(options, "L0")
         r.advice_options = (options_for_runs(options, list(dict.fromkeys(
             [*paths, str(r.run.path)]))) if options and paths else list(options))
     return r.advice_options
-
-
-def _with_rest_length(options: list[str]) -> list[str]:
-    """``options`` with the rest length among the fitted groups: a run declared at its rest
-    length that the calibration of its longer-shortened runs does not carry over to is most
-    often a table's first length already shortened (the published maps:
-    docs/guide/threshold.md), which identify then fits."""
-    from mkm.identify.groups import DEFAULT_GROUPS
-
-    if "--params" not in options:
-        return [*options, "--params", ",".join((*DEFAULT_GROUPS, "L0"))]
-    k = options.index("--params") + 1
-    groups = options[k].split(",")
-    return options if "L0" in groups else [*options[:k], ",".join([*groups, "L0"]),
-                                           *options[k + 1:]]
 
 
 def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> dict[int, str]:

@@ -316,13 +316,13 @@ def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *
 def held_with(margin_N: float, band_N: float) -> float:
     """The probability that a force ``margin_N`` above its requirement at the calibration's
     values still meets it, its error normal with the 95 % half-width ``band_N``."""
-    import math
+    from scipy import stats
 
     from mkm.identify.band import Z95
 
     if band_N <= 0.0:
         return 1.0 if margin_N >= 0.0 else 0.0
-    return 0.5 * (1.0 + math.erf(margin_N / (band_N / Z95) / math.sqrt(2.0)))
+    return float(stats.norm.cdf(margin_N * Z95 / band_N))
 
 
 def identified_tolerance(calibration: Calibration | None) -> str:

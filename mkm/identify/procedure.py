@@ -42,7 +42,7 @@ from mkm.fem.options import BRAIDS
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
-from mkm.identify.groups import SEARCHES
+from mkm.identify.groups import DEFAULT_GROUPS, SEARCHES
 from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
 from mkm.identify.result import Identification
 from mkm.identify.runs import (
@@ -183,6 +183,21 @@ def options_for_runs(options, run_dirs) -> list[str]:
     except (OSError, ValueError):
         return options
     return [*options[:at], ",".join(groups), *options[at + 1:]]
+
+
+def with_group(options, group: str) -> list[str]:
+    """``options`` (:func:`command_options`) with ``group`` among its ``--params`` (the
+    default groups and it where none is given), in :data:`~mkm.identify.groups.GROUPS`'
+    order."""
+    options = list(options)
+    if "--params" not in options:
+        return [*options, "--params", ",".join((*DEFAULT_GROUPS, group))]
+    at = options.index("--params") + 1
+    groups = options[at].split(",")
+    if group in groups:
+        return options
+    return [*options[:at], ",".join(g for g in GROUPS if g in (*groups, group)),
+            *options[at + 1:]]
 
 
 def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
