@@ -40,18 +40,22 @@ def tabulated(creep_fraction: float, out) -> list:
 
 
 @pytest.mark.slow
-def test_a_tables_creep_pulls_the_braid_angle_up_beyond_what_its_interval_carries(tmp_path):
+def test_a_tables_creep_pulls_the_braid_angle_up_and_its_interval_holds_it(tmp_path):
     # calibration.md: a table's settled means carry the muscle's creep, which a table cannot
-    # fit (no times) and the intervals do not carry. Without creep the angle comes back within
-    # a hundredth of a degree; with 3 % creep (the coverage benchmarks' largest) 0.16-0.19 deg
-    # high over six fresh muscles, most of the interval's half-width (0.23-0.26 deg).
+    # fit (no times): it pulls the braid angle up (3 % creep, the coverage benchmarks'
+    # largest: 0.16-0.19 deg over six fresh muscles, about the interval's half-width of
+    # 0.23-0.26 deg), so the intervals hold UNTIMED_CREEP_FRACTION's refit as a one-sided
+    # term: below the estimate they reach the bias and the bootstrap's own half-width again.
     found = {}
     for creep in (0.0, 0.03):
         result = identify(tabulated(creep, tmp_path / f"creep{creep}"), model="thickwall",
                           search="model", seed=0)
         row = result.parameters().set_index("parameter").loc["theta0_deg"]
-        found[creep] = (row["value"] - THETA0_DEG, (row["ci_high"] - row["ci_low"]) / 2)
+        found[creep] = (row["value"] - THETA0_DEG, row["value"] - row["ci_low"],
+                        row["ci_high"] - row["value"], result)
     assert found[0.0][0] == pytest.approx(0.0, abs=0.01)
-    error, half = found[0.03]
+    error, below, above, result = found[0.03]
     assert 0.12 < error < 0.25
-    assert error > 0.5 * half
+    assert result.model_form["creep"]["shift"]["theta0_deg"] < -error
+    assert below > error + 0.9 * above
+    assert any("a creep of up to 3 % of the force" in note for note in result.notes)
