@@ -1214,27 +1214,37 @@ def test_the_guides_fitted_load_cell_zero_is_its_measured_file():
     left_in = [abs(d["muscle"]["loadcell_offset_N"]) for d in draws]
     chi2 = [d["chi2_per_nu"] for d in draws]
     widths = [p["ci_high"] - p["ci_low"] for p in of("theta0_deg")]
-    assert record["rows"][0]["covered"] == len(draws) == 24
+    zero = of("force_zero_N")
+    # a 95 % interval misses one draw in twenty: the one miss named, the rest covered
+    missed = [(d, p) for d, p in zip(draws, zero, strict=True) if not p["covered"]]
+    assert [d["missed"] for d, _ in missed] == [["force_zero_N"]]
+    assert record["rows"][0]["covered"] == len(draws) - 1 == 23
     assert f"{len(draws)} fresh draws of that departure ({min(left_in):.1f}-" \
            f"{max(left_in):.1f} N left in)" in " ".join(text.split())
     assert f"(chi2/nu {min(chi2):.2f}-{max(chi2):.2f})" in said
-    assert max(abs(p["value"] - p["truth"]) for p in of("force_zero_N")) <= 0.15
+    assert max(abs(p["value"] - p["truth"]) for p in zero) <= 0.15
     assert "every fitted zero within 0.15 N" in said
     assert max(abs(p["value"] - p["truth"]) for p in of("theta0_deg")) <= 0.008
     assert f"an interval {min(widths):.2f}-{max(widths):.2f} deg wide" in said
+    (draw, miss), = missed
+    sd = (miss["ci_high"] - miss["ci_low"]) / 2 / 1.959964
+    assert (f"(seed {draw['seed']}, `SILENT` in the table: nothing misfits): {miss['value']:.2f} "
+            f"N fitted, interval {miss['ci_low']:.2f} to {miss['ci_high']:.2f} N, for "
+            f"{miss['truth']:.2f} N left in, {abs(miss['value'] - miss['truth']) / sd:.2f} of its "
+            "standard deviations") in said
+    errors = [(p["value"] - p["truth"]) / ((p["ci_high"] - p["ci_low"]) / 2 / 1.959964)
+              for p in zero]
+    assert f"errors are {np.sqrt(np.mean(np.square(errors))):.2f} of those standard" in said
     # the file is what identify says now: the zero away from 0 said with what to do
-    apart = [d for d, p in zip(draws, of("force_zero_N"), strict=True)
+    apart = [d for d, p in zip(draws, zero, strict=True)
              if not p["ci_low"] <= 0.0 <= p["ci_high"]]
     told = [d for d in draws if any("with the muscle slack" in n and "mkm tare" in n
                                     for n in d["notes"])]
     assert told == apart
     assert f"On the {len(apart)} draws whose zero's interval leaves out 0 identify says" in said
-    # the zero's own interval: narrow where the bootstrap kept a slack step, wide where not
-    zero = sorted(p["ci_high"] - p["ci_low"] for p in of("force_zero_N"))
-    narrow = [w for w in zero if w < 3]
-    wide = zero[len(narrow):]
-    assert (f"{narrow[0]:.2f}-{narrow[-1]:.1f} N wide on {len(narrow)} draws of {len(zero)} and "
-            f"{wide[0]:.1f}-{wide[-1]:.0f} N on the other {len(wide)}") in said
+    # the zero's own interval: every replicate keeps the slack steps that pin it
+    width = [p["ci_high"] - p["ci_low"] for p in zero]
+    assert f"The zero's own interval is {min(width):.2f}-{max(width):.2f} N wide" in said
 
 
 def test_the_guides_further_checks_of_the_mesh_bound_are_their_measured_files():
