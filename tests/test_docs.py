@@ -1670,6 +1670,37 @@ def test_the_guides_drifting_load_cell_is_its_measured_file():
     assert f"its interval {min(widths):.1f}-{max(widths):.0f} deg wide" in said
 
 
+def test_the_guides_runs_tared_apart_are_their_measured_file():
+    """uncertainty.md's words on one load-cell zero fitted to runs tared apart: held to
+    ``identify_wrong_bench_zero_per_run.json`` (within the noise, the muscle covered, the
+    monitor's offset taking the eps 0 run's own zero on every draw)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_bench_zero_per_run.json")
+                        .read_text(encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "uncertainty.md").read_text(encoding="utf-8").split())
+    said = text[text.index("runs tared apart, each with a zero of its own"):]
+    said = said[:said.index("A gap between tube and braid")]
+    row, draws = record["rows"][0], record["draws"]
+    assert row["silent"] == row["covered"] + len(draws) == 8 and row["misfit_line"] == 0
+    assert all(d["missed"] == ["pressure_offset_bar"] for d in draws)
+
+    def of(name):
+        return [next(p for p in d["parameters"] if p["parameter"] == name) for d in draws]
+
+    left = [abs(d["muscle"]["loadcell_offset_N"]) for d in draws]
+    apart = [abs(d["muscle"]["eps0_zero_apart_N"]) for d in draws]
+    assert (f"({min(left):.1f}-{max(left):.1f} N left in, the eps 0 run's {min(apart):.2f}-"
+            f"{max(apart):.2f} N beyond the other's") in said
+    chi2 = [d["chi2_per_nu"] for d in draws]
+    assert f"(chi2/nu {min(chi2):.2f}-{max(chi2):.2f})" in said
+    assert max(abs(p["value"] - p["truth"]) for p in of("theta0_deg")) <= 0.01
+    assert max(abs(p["value"] - p["truth"]) for p in of("rubber_scale")) <= 0.017
+    assert "theta0 within 0.01 deg and the rubber within 0.017" in said
+    offset = [p["value"] for p in of("pressure_offset_bar")]
+    assert f"({min(offset):.4f} to {max(offset):+.4f} bar" in said
+
+
 def test_the_published_pages_nominal_length_figures_are_its_measured_file():
     """published.md's ``--L0 300`` paragraph (the DMSP-20-300 read at its nominal length): held
     to ``published.json``'s ``nominal_length``; it had quoted 1.65 and 1.0-1.75 % after the
