@@ -139,7 +139,8 @@ def truths(muscle: dict, config) -> dict[str, float]:
     """The true values of what identify may report (the rubber as a scale on Silastic S: the
     true one where the truth has Silastic S's ratio, else :func:`equivalent_scale`; C10 and
     C01 apart; the monitor's offset only where the truth has one: a gain has no single
-    offset; the load cell's zero left in the forces, where it does not drift)."""
+    offset; the load cell's zero left in the forces, where it does not drift and is one for
+    every run)."""
     t = muscle["truth"]
     scale = (t["C10_MPa"] + t["C01_MPa"]) / (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
     if muscle["departure"].startswith("rubber"):
@@ -151,7 +152,8 @@ def truths(muscle: dict, config) -> dict[str, float]:
            "creep_tau_s": muscle.get("creep_tau_s", 30.0)}
     if "monitor_gain" not in t:
         out["pressure_offset_bar"] = t.get("monitor_offset_bar", 0.0)
-    if "loadcell_drift_N_per_min" not in t:  # a drift has no single zero
+    # a drift has no single zero, nor have runs tared apart
+    if "loadcell_drift_N_per_min" not in t and "eps0_zero_apart_N" not in muscle:
         out["force_zero_N"] = muscle.get("loadcell_offset_N", 0.0)
     return out
 

@@ -13,7 +13,8 @@ Each draw is a fresh muscle (theta0 30-36 deg, rubber x0.8-1.2 on Silastic S, br
 simulator's noise) with one departure (:data:`DEPARTURES`), drawn from its own numpy seed
 (``--seed`` plus the draw's index, recorded per draw): the load cell's gain 2 % off (either
 sign; 20 times its declared tolerance), the cell's zero left in the forces (the tare left out:
-an amplifier offset of 0.01-0.05 V, 2-10 N, added to every recorded force), the cell's zero
+an amplifier offset of 0.01-0.05 V, 2-10 N, added to every recorded force; or each run its
+own, the eps 0 run's 0.5-3 N beyond the other's, either sign: runs tared apart), the cell's zero
 drifting 0.5-2 N/min from the start (either sign: 2-7 N by the end of a run), the pressure monitor
 0.02-0.04 bar off (within its declared 0.04 bar) or its gain 1 % off (either sign), a rubber whose
 C01/C10 is not Silastic S's (0-0.3 or 1.8-2.5, the same small-strain stiffness), a braid angle
@@ -60,10 +61,11 @@ from mkm.surrogate.design import BOX
 FIT_EPS = (0.0, 0.122)
 DEPARTURES = ("loadcell gain", "loadcell offset", "loadcell drift", "monitor offset",
               "monitor gain", "rubber ratio", "theta0 at box edge", "gap", "friction and creep",
-              "creep time")
+              "creep time", "loadcell offset per run")
 #: what ``--departures`` draws by default: the recorded results' set (a departure added to it
-#: would give every later draw another seed), the drift asked for by name
-DEFAULT_DEPARTURES = tuple(d for d in DEPARTURES if d != "loadcell drift")
+#: would give every later draw another seed), the drift and the zero per run asked for by name
+DEFAULT_DEPARTURES = tuple(d for d in DEPARTURES
+                           if d not in ("loadcell drift", "loadcell offset per run"))
 FIRST_SEED = 20261240
 
 
@@ -80,9 +82,12 @@ def draw(seed: int, departure: str, config) -> dict:
     sign = float(rng.choice((-1.0, 1.0)))
     if departure == "loadcell gain":
         truth["loadcell_gain"] = 1.0 + sign * 0.02
-    elif departure == "loadcell offset":
+    elif departure in ("loadcell offset", "loadcell offset per run"):
         muscle["loadcell_offset_N"] = (sign * float(rng.uniform(0.01, 0.05))
                                        * config.loadcell.sensitivity_N_per_V)
+        if departure == "loadcell offset per run":
+            muscle["eps0_zero_apart_N"] = (float(rng.choice((-1.0, 1.0)))
+                                           * float(rng.uniform(0.5, 3.0)))
     elif departure == "loadcell drift":
         truth["loadcell_drift_N_per_min"] = sign * float(rng.uniform(0.5, 2.0))
     elif departure == "monitor offset":
@@ -126,8 +131,10 @@ def acquire_blind(muscle: dict, eps: float, out: Path) -> Path:
     # a run the bench's checks fail is kept: what identify says of it is the draw's verdict
     result = acquire(config, out_root=out, notify=lambda message: None)
     remove_simulator_settings(result.path)
-    if muscle["loadcell_offset_N"]:
-        leave_zero_in(result.path, muscle["loadcell_offset_N"])
+    offset_N = muscle["loadcell_offset_N"] + (muscle.get("eps0_zero_apart_N", 0.0) if eps == 0
+                                               else 0.0)
+    if offset_N:
+        leave_zero_in(result.path, offset_N)
     return result.path
 
 
@@ -136,6 +143,9 @@ def departure_value(muscle: dict) -> str:
     d = muscle["departure"]
     if d == "loadcell offset":
         return f"{muscle['loadcell_offset_N']:+.2f} N"
+    if d == "loadcell offset per run":
+        return (f"{muscle['loadcell_offset_N']:+.2f} N, at eps 0 "
+                f"{muscle['eps0_zero_apart_N']:+.2f} N more")
     if d == "rubber ratio":
         return f"C01/C10 {t['C01_MPa'] / t['C10_MPa']:.3g}"
     if d == "creep time":

@@ -333,6 +333,10 @@ BENCHMARKS = {
     "identify_wrong_bench_zero.json": "benchmarks/bench_identify_wrong_bench.py --departures "
                                       "'loadcell offset' --draws 24 --seed 20264401 --params "
                                       "theta0,rubber,friction,creep,offset,zero --out {out}",
+    "identify_wrong_bench_zero_per_run.json": "benchmarks/bench_identify_wrong_bench.py "
+                                              "--departures 'loadcell offset per run' --draws 8 "
+                                              "--seed 20266001 --params theta0,rubber,friction,"
+                                              "creep,offset,zero --out {out}",
     "mesh_bound.json": "benchmarks/bench_mesh_bound.py --muscles 240 --seed 20264102 "
                        "--out {out}",
     # the guide's further checks of the bound, on the draws it names

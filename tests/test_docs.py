@@ -1218,27 +1218,37 @@ def test_the_guides_fitted_load_cell_zero_is_its_measured_file():
     left_in = [abs(d["muscle"]["loadcell_offset_N"]) for d in draws]
     chi2 = [d["chi2_per_nu"] for d in draws]
     widths = [p["ci_high"] - p["ci_low"] for p in of("theta0_deg")]
-    assert record["rows"][0]["covered"] == len(draws) == 24
+    zero = of("force_zero_N")
+    # a 95 % interval misses one draw in twenty: the one miss named, the rest covered
+    missed = [(d, p) for d, p in zip(draws, zero, strict=True) if not p["covered"]]
+    assert [d["missed"] for d, _ in missed] == [["force_zero_N"]]
+    assert record["rows"][0]["covered"] == len(draws) - 1 == 23
     assert f"{len(draws)} fresh draws of that departure ({min(left_in):.1f}-" \
            f"{max(left_in):.1f} N left in)" in " ".join(text.split())
     assert f"(chi2/nu {min(chi2):.2f}-{max(chi2):.2f})" in said
-    assert max(abs(p["value"] - p["truth"]) for p in of("force_zero_N")) <= 0.15
+    assert max(abs(p["value"] - p["truth"]) for p in zero) <= 0.15
     assert "every fitted zero within 0.15 N" in said
     assert max(abs(p["value"] - p["truth"]) for p in of("theta0_deg")) <= 0.008
     assert f"an interval {min(widths):.2f}-{max(widths):.2f} deg wide" in said
+    (draw, miss), = missed
+    sd = (miss["ci_high"] - miss["ci_low"]) / 2 / 1.959964
+    assert (f"(seed {draw['seed']}, `SILENT` in the table: nothing misfits): {miss['value']:.2f} "
+            f"N fitted, interval {miss['ci_low']:.2f} to {miss['ci_high']:.2f} N, for "
+            f"{miss['truth']:.2f} N left in, {abs(miss['value'] - miss['truth']) / sd:.2f} of its "
+            "standard deviations") in said
+    errors = [(p["value"] - p["truth"]) / ((p["ci_high"] - p["ci_low"]) / 2 / 1.959964)
+              for p in zero]
+    assert f"errors are {np.sqrt(np.mean(np.square(errors))):.2f} of those standard" in said
     # the file is what identify says now: the zero away from 0 said with what to do
-    apart = [d for d, p in zip(draws, of("force_zero_N"), strict=True)
+    apart = [d for d, p in zip(draws, zero, strict=True)
              if not p["ci_low"] <= 0.0 <= p["ci_high"]]
     told = [d for d in draws if any("with the muscle slack" in n and "mkm tare" in n
                                     for n in d["notes"])]
     assert told == apart
     assert f"On the {len(apart)} draws whose zero's interval leaves out 0 identify says" in said
-    # the zero's own interval: narrow where the bootstrap kept a slack step, wide where not
-    zero = sorted(p["ci_high"] - p["ci_low"] for p in of("force_zero_N"))
-    narrow = [w for w in zero if w < 3]
-    wide = zero[len(narrow):]
-    assert (f"{narrow[0]:.2f}-{narrow[-1]:.1f} N wide on {len(narrow)} draws of {len(zero)} and "
-            f"{wide[0]:.1f}-{wide[-1]:.0f} N on the other {len(wide)}") in said
+    # the zero's own interval: every replicate keeps the slack steps that pin it
+    width = [p["ci_high"] - p["ci_low"] for p in zero]
+    assert f"The zero's own interval is {min(width):.2f}-{max(width):.2f} N wide" in said
 
 
 def test_the_guides_further_checks_of_the_mesh_bound_are_their_measured_files():
@@ -1662,6 +1672,37 @@ def test_the_guides_drifting_load_cell_is_its_measured_file():
     assert max(abs(p["value"] - p["truth"]) for p in theta) <= 0.05
     widths = [p["ci_high"] - p["ci_low"] for p in theta]
     assert f"its interval {min(widths):.1f}-{max(widths):.0f} deg wide" in said
+
+
+def test_the_guides_runs_tared_apart_are_their_measured_file():
+    """uncertainty.md's words on one load-cell zero fitted to runs tared apart: held to
+    ``identify_wrong_bench_zero_per_run.json`` (within the noise, the muscle covered, the
+    monitor's offset taking the eps 0 run's own zero on every draw)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_bench_zero_per_run.json")
+                        .read_text(encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "uncertainty.md").read_text(encoding="utf-8").split())
+    said = text[text.index("runs tared apart, each with a zero of its own"):]
+    said = said[:said.index("A gap between tube and braid")]
+    row, draws = record["rows"][0], record["draws"]
+    assert row["silent"] == row["covered"] + len(draws) == 8 and row["misfit_line"] == 0
+    assert all(d["missed"] == ["pressure_offset_bar"] for d in draws)
+
+    def of(name):
+        return [next(p for p in d["parameters"] if p["parameter"] == name) for d in draws]
+
+    left = [abs(d["muscle"]["loadcell_offset_N"]) for d in draws]
+    apart = [abs(d["muscle"]["eps0_zero_apart_N"]) for d in draws]
+    assert (f"({min(left):.1f}-{max(left):.1f} N left in, the eps 0 run's {min(apart):.2f}-"
+            f"{max(apart):.2f} N beyond the other's") in said
+    chi2 = [d["chi2_per_nu"] for d in draws]
+    assert f"(chi2/nu {min(chi2):.2f}-{max(chi2):.2f})" in said
+    assert max(abs(p["value"] - p["truth"]) for p in of("theta0_deg")) <= 0.01
+    assert max(abs(p["value"] - p["truth"]) for p in of("rubber_scale")) <= 0.017
+    assert "theta0 within 0.01 deg and the rubber within 0.017" in said
+    offset = [p["value"] for p in of("pressure_offset_bar")]
+    assert f"({min(offset):.4f} to {max(offset):+.4f} bar" in said
 
 
 def test_the_published_pages_nominal_length_figures_are_its_measured_file():

@@ -1,7 +1,8 @@
 """95 % confidence intervals, correlation and identifiability of a fit, by a bootstrap over steps.
 
 Each bootstrap replicate draws every run's settled steps with replacement (a step's hold
-samples travel together: their noise and any model error they share stay correlated) and
+samples travel together: their noise and any model error they share stay correlated; the few
+steps that alone fix the load cell's zero are drawn among themselves, :func:`strata`) and
 refits. The refit is the Gauss-Newton step from the optimum on the resampled residuals, with
 the Jacobian of the optimum (the linearised bootstrap): exact for a model linear in its
 parameters near the optimum, as this one is over an interval's width, and thousands of
@@ -61,7 +62,7 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     if p == 0:
         return {"draws": np.zeros((replicates, 0)), "interval": {}, "correlation": np.zeros((0, 0)),
                 "covariance": np.zeros((0, 0)),
-                "identifiable": {}, "stretched": [], "seed": seed,
+                "identifiable": {}, "stretched": [], "slack_steps": 0, "seed": seed,
                 "replicates": replicates}
     column = np.sqrt(np.sum(J**2, axis=0))
     identifiable = column > 1e-9 * max(column.max(), 1e-300)
@@ -76,11 +77,11 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     np.add.at(JtF, result.cluster, J * (w * result.measured_N)[:, None])
     np.add.at(Jt1, result.cluster, J * w[:, None])
     counts = np.zeros((replicates, n_clusters))
-    for run in np.unique(result.run_of_cluster):
-        members = np.flatnonzero(result.run_of_cluster == run)
-        picks = rng.choice(members, size=(replicates, members.size), replace=True)
+    slack = slack_steps(result, J, [names[i] for i in use])
+    for members, size in strata(result, slack):
+        picks = rng.choice(members, size=(replicates, size), replace=True)
         for b in range(replicates):
-            counts[b] += np.bincount(picks[b], minlength=n_clusters)
+            counts[b] += members.size / size * np.bincount(picks[b], minlength=n_clusters)
     # a measured force F' = (1 + s) F + z moves the residual model - F' by -(s F + z)
     s = rng.uniform(-sensitivity_tolerance, sensitivity_tolerance, size=replicates)
     tare = result.tare_se_N if result.tare_se_N.size else np.zeros(n_clusters)
@@ -143,7 +144,38 @@ def bootstrap(result: Fit, replicates: int = REPLICATES, seed: int = 0,
     return {"draws": draws, "interval": interval, "correlation": np.atleast_2d(correlation),
             "covariance": covariance,
             "identifiable": dict(zip(names, map(bool, identifiable), strict=True)),
-            "stretched": stretched, "seed": seed, "replicates": replicates}
+            "stretched": stretched, "slack_steps": int(slack.sum()), "seed": seed,
+            "replicates": replicates}
+
+
+def slack_steps(result: Fit, J: np.ndarray, names) -> np.ndarray:
+    """Per step: whether only the load cell's zero moves its residuals (the fitted muscle
+    slack there), of ``J``'s columns ``names``; none where the zero is not fitted."""
+    n_clusters = result.run_of_cluster.size
+    if "force_zero_N" not in names:
+        return np.zeros(n_clusters, dtype=bool)
+    zero = np.array([n == "force_zero_N" for n in names])
+    moved = np.zeros((n_clusters, 2))
+    np.add.at(moved, result.cluster, np.c_[np.abs(J[:, zero]).sum(axis=1),
+                                           np.abs(J[:, ~zero]).sum(axis=1)])
+    return (moved[:, 0] > 0) & (moved[:, 1] == 0)
+
+
+def strata(result: Fit, slack: np.ndarray) -> list[tuple[np.ndarray, int]]:
+    """The steps each bootstrap replicate draws among, and how many it draws: each run's steps,
+    as many as it has, except the ``slack`` ones (:func:`slack_steps`), drawn among themselves
+    over every run. Those are few (the first and last step of a run whose threshold is above
+    its lowest pressure) and alone tell the zero from the muscle's force: a replicate that left
+    them all out would see the zero only through the threshold's line and land tens of newtons
+    off. Of ``n`` of them a replicate draws ``n - 1``, each counted ``n / (n - 1)`` times
+    (McCarthy and Snowden's bootstrap of a small stratum): drawn ``n`` times their spread would
+    be ``(n - 1) / n`` of theirs, half of it for two. A single one stays among its run's steps:
+    no other step shows its noise."""
+    apart = slack if slack.sum() > 1 else np.zeros_like(slack)
+    out = [np.flatnonzero((result.run_of_cluster == run) & ~apart)
+           for run in np.unique(result.run_of_cluster)]
+    return ([(m, m.size) for m in out if m.size]
+            + ([(np.flatnonzero(apart), int(apart.sum()) - 1)] if apart.any() else []))
 
 
 def robust_covariance(draws: np.ndarray) -> np.ndarray:

@@ -407,7 +407,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      f"{offset_bound_said(runs)}: the runs' threshold wants more than the "
                      f"monitor may be off; {check}, or the model does not fit these runs near "
                      "the threshold")
-    notes += [line for line in (_zero_said(runs, best, boot),) if line]
+    notes += [line for line in (_zero_said(runs, best, boot), _zero_unpinned(best, boot))
+              if line]
     if "force_zero_N" in best.names and fitting.at_edge(best.values["force_zero_N"],
                                                         best.bounds["force_zero_N"]):
         low, high = best.bounds["force_zero_N"]
@@ -841,6 +842,20 @@ def _zero_said(runs, best, boot) -> str | None:
     return (f"the load cell read {zero:+.3g} N (95 % CI {low:+.3g} to {high:+.3g}) with the "
             "muscle slack: the calibration is the muscle's without it, but the runs' forces "
             f"still hold it, and report and export show them as recorded; {again}")
+
+
+def _zero_unpinned(best, boot) -> str | None:
+    """A note when the load cell's fitted zero has fewer than two steps where the fitted muscle
+    is slack (:func:`mkm.identify.intervals.slack_steps`): only those tell it from the muscle's
+    force, and the bootstrap shows their noise only from two."""
+    slack = boot.get("slack_steps", 0)
+    if "force_zero_N" not in best.names or slack > 1:
+        return None
+    some = "no step" if slack == 0 else "one step"
+    return (f"the load cell's zero is told from the muscle's force by {some} where the fitted "
+            "muscle is slack: its interval is what the threshold's line leaves it, and may be "
+            "wide; runs that start and end below the threshold (two steps or more where the "
+            "muscle pulls nothing) pin it")
 
 
 def _wide(name: str, value: float, interval) -> bool:

@@ -311,6 +311,7 @@ class Identification:
     def record(self) -> dict:
         """Everything, as plain data (identification.json and the calibration's provenance)."""
         params = self.parameters()
+        slack = self.bootstrap.get("slack_steps", 0)
         return {
             "runs": [{"run": r.name, "path": str(r.path), "muscle": r.muscle,
                       "settled_steps": len(r.steps), "sha256": r.sha256} for r in self.runs],
@@ -318,8 +319,11 @@ class Identification:
             **self.identified(),
             "parameters": params.to_dict(orient="records"),
             "rubber": self.rubber,
-            "interval_method": (f"bootstrap over settled steps within each run, "
-                                f"{self.bootstrap['replicates']} replicates, linearised at the "
+            "interval_method": ("bootstrap over settled steps within each run"
+                                + (f" (the {slack} steps where only the load cell's zero moves "
+                                   f"the fit, the muscle slack, drawn {slack - 1} of {slack} "
+                                   "among themselves)" if slack > 1 else "")
+                                + f", {self.bootstrap['replicates']} replicates, linearised at the "
                                 f"optimum, percentile 95 %, seed {self.bootstrap['seed']}; the "
                                 f"load cell's sensitivity uniform within "
                                 f"+-{self.sensitivity_tolerance:g}"

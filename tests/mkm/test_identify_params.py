@@ -28,7 +28,7 @@ from mkm.identify import identify
 from mkm.identify.band import Z95, check_heldout, prediction_band
 from mkm.identify.fitting import Fit
 from mkm.identify.intervals import bootstrap, robust_covariance
-from mkm.identify.procedure import _identifiability
+from mkm.identify.procedure import _identifiability, _zero_unpinned
 from mkm.registry import parse_spec
 
 SHIPPED = Calibration.shipped().path
@@ -458,7 +458,9 @@ def test_a_load_cell_zero_left_out_is_fitted_blind(runs, tmp_path):
     # two steps where the muscle is slack read +2.94 N, the fit misfits (chi2/nu 116) and the
     # angle's interval is 29.4-34.7 deg; the note offers the fit of the zero. Fitted: 2.94 N
     # (at no drift the same fit gives -0.06 N: the runs' own noise), within the noise
-    # (chi2/nu 0.89), the angle and the rubber as without the drift
+    # (chi2/nu 0.89), the angle and the rubber as without the drift; its interval 2.81-3.07 N,
+    # every bootstrap replicate keeping one of the two slack steps (replicates leaving both out
+    # would stretch it to 0.5-5.8 N)
     wrong = [drifted(run, tmp_path, 3.0) for run in runs[:2]]
     params = "theta0,rubber,friction,creep,offset"
     left_out = identify(wrong, params=params, model="thickwall", search="model")
@@ -472,6 +474,8 @@ def test_a_load_cell_zero_left_out_is_fitted_blind(runs, tmp_path):
     for name, truth in (("force_zero_N", 3.0), ("theta0_deg", 32.0)):
         low, high = table.loc[name, ["ci_low", "ci_high"]]
         assert low <= truth <= high, table
+    assert result.bootstrap["slack_steps"] == 2
+    assert np.diff(table.loc["force_zero_N", ["ci_low", "ci_high"]].to_numpy(float))[0] < 0.5
     assert result.fit.values["theta0_deg"] == pytest.approx(32.0, abs=0.3)
     assert result.fit.values["rubber_scale"] == pytest.approx(1.1, rel=0.02)
     assert any(n.startswith("the load cell read +2.9") and "(mkm tare)" in n
@@ -490,6 +494,44 @@ def test_a_fitted_zero_away_from_0_says_how_to_take_it_out_of_the_runs():
     assert _zero_said(bench, best, away).endswith("tare the cell (mkm tare) before the next run")
     assert _zero_said(bench, best, about_0) is None
     assert _zero_said(bench, SimpleNamespace(names=("theta0_deg",), values={}), away) is None
+
+
+def test_every_bootstrap_replicate_keeps_the_slack_steps_that_tell_the_zero():
+    # one run of 20 steps: a muscle (theta0) and the monitor's offset (a constant and a weak
+    # curvature: the threshold's line) on 18, the load cell's zero on every one, the muscle slack
+    # on the first and the last. Only those two tell the zero from the offset: a replicate
+    # without them sees it through the curvature alone, 1.8-3.2 for a zero of 3 +- 0.05. Drawn
+    # apart, one of the two counted twice, the zero's draw is each slack step's residual +-d:
+    # the interval 3 +- d, the two steps' spread
+    rng = np.random.default_rng(1)
+    n, d = 20, 0.05
+    x = np.r_[0.0, np.linspace(1.0, 10.0, n - 2), 0.0]
+    pulling = x > 0
+    J = np.c_[x, np.where(pulling, 1.0 + 1e-3 * x**2, 0.0), np.ones(n)]
+    noise = np.where(pulling, rng.normal(0.0, 0.05, n), 0.0)
+    muscle = J[pulling][:, :2]
+    noise[pulling] -= muscle @ np.linalg.lstsq(muscle, noise[pulling], rcond=None)[0]
+    names = ("theta0_deg", "pressure_offset_bar", "force_zero_N")
+
+    def fit(residual, jacobian):
+        return Fit(names, {"theta0_deg": 2.0, "pressure_offset_bar": 0.0, "force_zero_N": 3.0},
+                   residual, 10 * x, jacobian, np.arange(n), np.zeros(n, dtype=int),
+                   {k: (-1e9, 1e9) for k in names}, "test", 1, "", [], np.zeros(1))
+
+    boot = bootstrap(fit(noise + np.r_[d, np.zeros(n - 2), -d], J), sensitivity_tolerance=0.0)
+    assert boot["slack_steps"] == 2
+    low, high = boot["interval"]["force_zero_N"]
+    assert 3.0 - low == pytest.approx(d, rel=0.05) and high - 3.0 == pytest.approx(d, rel=0.05)
+    # one slack step shows no noise of its own: it stays among its run's steps, and a note says
+    # the zero is not pinned
+    one = J.copy()
+    one[0, 2] = 0.0
+    boot = bootstrap(fit(noise + np.r_[0.0, np.zeros(n - 2), -d], one), sensitivity_tolerance=0.0)
+    assert boot["slack_steps"] == 1
+    best = SimpleNamespace(names=names)
+    assert "by one step where the fitted muscle is slack" in _zero_unpinned(best, boot)
+    assert _zero_unpinned(best, {"slack_steps": 2}) is None
+    assert _zero_unpinned(SimpleNamespace(names=names[:2]), {"slack_steps": 0}) is None
 
 
 def test_the_load_cell_zero_is_searched_within_a_tenth_of_the_largest_force():
