@@ -583,6 +583,7 @@ class BenchRun:
         self._folder_error: OSError | None = None  # the run folder could not be made
         self._device_hangs = False  # a call of the start-up hangs in the driver
         self._opened = False  # the device's open returned
+        self._open_stop = ""  # what came of the open a stop signal was held behind
 
     def request_stop(self, by: str | None = None) -> None:
         """What the first Ctrl-C does: stop at the next safe point (``by`` says who else asked)."""
@@ -676,6 +677,10 @@ class BenchRun:
         elif isinstance(outcome, StopSignal):
             status, signal_name, signal_number = RunStatus.ABORTED, outcome.name, outcome.signum
             reason, say_vent = f"stopped by {outcome} at once", True
+            if self._open_stop:  # held behind the device's open
+                reason = f"stopped by {outcome} during the device's open, {self._open_stop}"
+                if self._device_hangs:  # nothing is written behind an open that hangs
+                    status, say_vent = RunStatus.FAILED, False
         elif isinstance(outcome, KeyboardInterrupt):  # no handlers (not the main thread)
             status, signal_name, signal_number = RunStatus.ABORTED, "SIGINT", 2
             reason, say_vent = "stopped by a second Ctrl-C (SIGINT) at once", True
@@ -731,10 +736,31 @@ class BenchRun:
         return (RunStatus.COMPLETE_WITH_GAPS, f"{_all_steps(n)} done, but {meta.lost_samples} "
                 f"samples were lost in {len(meta.gaps)} gap(s): {spans}", EXIT_GAPS)
 
-    def startup(self) -> None:
-        # writes the vent command first; never closed when it hangs
-        info = open_within(self.backend.open, f"{OPEN_HUNG}; VENT BY HAND")
+    def _open(self):
+        """The device's open (it writes the vent command first), bounded (:func:`open_within`);
+        a stop signal that comes meanwhile is held until the open returns or its bound passes:
+        the shutdown's vent and close would go into the driver beside the open under way (an
+        NI device's AO task not yet made: a vent said written that was not). Never closed when
+        it hangs."""
+        hung = None
+        try:
+            with self.signals.deferred():
+                try:
+                    info = open_within(self.backend.open, f"{OPEN_HUNG}; VENT BY HAND")
+                except DriverHangs as exc:
+                    hung = exc
+                    raise
+        except StopSignal:
+            if hung is None:
+                self._opened, self._open_stop = True, "held until it returned"
+            else:
+                self._device_hangs, self._open_stop = True, f"held until its bound passed: {hung}"
+            raise
         self._opened = True
+        return info
+
+    def startup(self) -> None:
+        info = self._open()
         self.unvented = vent_dead_runs(self.backend, self._dead_runs, self.owner.on_state_folder)
         for marker in self.unvented:
             self.notify(marker.vented_now())
