@@ -1016,9 +1016,15 @@ def read_meta(path: str | Path) -> RunMeta:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
                          f"record of at most {MAX_RUN_JSON_BYTES}")
     try:
-        data = json.loads(meta_path.read_text(encoding="utf-8-sig"),  # a BOM: Windows editors
-                          object_pairs_hook=_unique_keys)
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        text = meta_path.read_text(encoding="utf-8-sig")  # a BOM: Windows editors
+    except OSError as exc:  # no permission, a file held locked: a read, not a write, failed
+        raise ValueError(f"{meta_path} cannot be read ({exc.strerror or exc}): expected a run "
+                         "record this user can read") from None
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
+    try:
+        data = json.loads(text, object_pairs_hook=_unique_keys)
+    except json.JSONDecodeError as exc:
         raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
     except RecursionError:
         raise ValueError(f"{meta_path} is corrupt (nested too deeply)") from None

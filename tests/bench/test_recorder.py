@@ -760,6 +760,79 @@ def test_mkm_recover_joins_the_kept_samples_back_once_the_folder_takes_writes(
     assert code == 2 and "are all in" in err and "nothing to join" in err
 
 
+def _kept_run(config, tmp_path, monkeypatch):
+    """A run whose folder refused every write from sample 60 on, its process since ended, the
+    folder taking writes again: its folder, run.json, samples.csv, the kept file and the
+    samples queued."""
+    import json
+
+    from mkm.bench.run import acquire
+
+    queued = _read_only_from_60(monkeypatch)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    run_json = result.path / "run.json"
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    meta["process"]["started_unix_s"] -= 100.0  # its process has ended since
+    run_json.write_text(json.dumps(meta), encoding="utf-8")
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    return result.path, run_json, result.path / "samples.csv", kept, queued
+
+
+def test_mkm_recover_joins_kept_rows_after_a_gap_recorded_at_samples_csvs_end(
+        config, tmp_path, monkeypatch, mkm_cli):
+    # a buffer overflow lost 5 samples right after samples.csv's last (59), so the kept rows
+    # begin at 65: run.json's gap says so and they are joined; without that gap, rows from 65
+    # do not continue samples.csv and nothing is joined
+    import json
+
+    import pandas as pd
+
+    path, run_json, samples_csv, kept = _kept_run(config, tmp_path, monkeypatch)[:4]
+    header, *rows = kept.read_text(encoding="utf-8").splitlines(keepends=True)
+    shifted = [f"{int(r.split(',', 1)[0]) + 5},{r.split(',', 1)[1]}" for r in rows]
+    kept.write_text(header + "".join(shifted), encoding="utf-8")
+    before = samples_csv.read_bytes()
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (2, "") and err == (
+        f"mkm recover: error: the samples kept in {kept} begin at sample 65, but {samples_csv} "
+        "ends at sample 59: expected this run's kept rows, from sample 60; nothing joined\n")
+    assert samples_csv.read_bytes() == before
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    meta["gaps"] = [{"after_sample": 59, "lost_samples": 5, "start_s": 6.0, "end_s": 6.5,
+                     "message": "buffer overflow"}]
+    meta["lost_samples"] = 5
+    run_json.write_text(json.dumps(meta), encoding="utf-8")
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (0, f"{path}\n") and "were joined" in err
+    joined = pd.read_csv(samples_csv)["sample"].tolist()
+    assert joined == list(range(60)) + [int(r.split(",", 1)[0]) for r in shifted]
+    assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == len(joined)
+
+
+def test_mkm_recover_says_a_run_json_it_cannot_read_in_one_line(config, tmp_path,
+                                                                monkeypatch, mkm_cli):
+    # run.json cannot be read (no permission): `mkm recover` said "run.json cannot be written
+    # (Permission denied): expected a folder this user can write to", a write it never tried.
+    # Now it says the file cannot be read, exit 2, nothing changed
+    path, run_json, samples_csv, kept, _ = _kept_run(config, tmp_path, monkeypatch)
+    before = (run_json.read_bytes(), samples_csv.read_bytes())
+    read_text = Path.read_text
+
+    def denied(self, *args, **kwargs):
+        if self == run_json:
+            raise PermissionError(errno.EACCES, "Permission denied", str(self))
+        return read_text(self, *args, **kwargs)
+
+    monkeypatch.setattr(Path, "read_text", denied)
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (2, "") and err == (
+        f"mkm recover: error: {run_json} cannot be read (Permission denied): expected a run "
+        "record this user can read\n")
+    assert (run_json.read_bytes(), samples_csv.read_bytes()) == before
+
+
 def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,
                                                                                 tmp_path,
                                                                                 monkeypatch):
