@@ -833,6 +833,40 @@ def test_mkm_recover_says_a_run_json_it_cannot_read_in_one_line(config, tmp_path
     assert (run_json.read_bytes(), samples_csv.read_bytes()) == before
 
 
+def test_mkm_recover_counts_rows_it_joined_once_run_json_takes_the_count(
+        config, tmp_path, monkeypatch, mkm_cli):
+    # run.json refused the count (read-only) after the kept rows were joined: exit 1, said;
+    # asked again once run.json takes writes, `mkm recover` said the rows were all in
+    # samples.csv, nothing to join, and run.json never counted them. Now it counts them then
+    import json
+
+    import mkm.bench.storage as storage
+
+    path, run_json, samples_csv, kept, queued = _kept_run(config, tmp_path, monkeypatch)
+    counted = json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"]
+
+    def denied(*args, **kwargs):
+        raise PermissionError(errno.EACCES, "Permission denied")
+
+    with monkeypatch.context() as read_only:
+        read_only.setattr(storage, "write_json_atomic", denied)
+        code, out, err = mkm_cli(["recover", str(path)])
+    n = len(queued)
+    assert (code, out) == (1, f"{path}\n") and err == (
+        f"mkm recover: error: samples 60-{queued[-1]} ({n - 60}) kept in {kept} were joined to "
+        f"{samples_csv}, but run.json could not count them (Permission denied): samples.csv "
+        f"holds {n} samples\n")
+    assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == counted
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (0, f"{path}\n") and err == (
+        f"mkm recover: note: the samples kept in {kept} are all in {samples_csv} already, "
+        f"joined before; run.json counts {n} samples\n")
+    assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == n
+    assert load_run(path).samples["sample"].tolist() == queued
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert code == 2 and "are all in" in err and "nothing to join" in err
+
+
 def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,
                                                                                 tmp_path,
                                                                                 monkeypatch):
