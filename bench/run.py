@@ -1064,13 +1064,13 @@ class BenchRun:
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
             status = RunStatus.FAILED
-            held = self.vent_check.pressure_bar
+            held, commanded = self.vent_check.pressure_bar, False  # read after the vent
             if self.vent_check.unfollowed_bar is not None:  # the reading proves nothing
-                held = self.vent_check.unfollowed_bar
+                held, commanded = self.vent_check.unfollowed_bar, True
             elif not held >= 0:  # nothing plausible read by the check, or no pressure
-                held = acq.held_bar() if acq is not None else 0.0
+                held, commanded = acq.held_bar() if acq is not None else (0.0, True)
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
-                            f"still hold {held:.3g} bar)")
+                            f"still hold {self._held_said(held, commanded)})")
         problems = told(problems)
         if problems:
             reason = "; ".join([reason, *problems]) if reason else "; ".join(problems)
@@ -1108,6 +1108,21 @@ class BenchRun:
         if lease is not None:  # its thread ends after the last update (one that hangs: later)
             lease.end()
         return status, reason
+
+    def _held_said(self, held_bar: float, commanded: bool) -> str:
+        """What the regulator may still hold [bar], in words: ``held_bar``, or, when that is a
+        command (``commanded``) the monitor read more than before the vent, beyond its declared
+        error (an overshoot, a regulator that went on rising), that reading with the command
+        beside it: a limit is watched on what is measured."""
+        before = self.acquisition.before_vent() if self.acquisition is not None else None
+        reg = self.config.regulator
+        offset_bar, gain = reg.reading_bounds()
+        error_bar = offset_bar + gain * held_bar if reg.monitor_components \
+            else reg.monitor_accuracy_bar
+        if commanded and before is not None and before[0] > held_bar + error_bar:
+            return (f"{before[0]:.3g} bar, as the monitor read before the vent, with "
+                    f"{held_bar:.3g} bar commanded")
+        return f"{held_bar:.3g} bar"
 
     def _keep_outcome(self, status: RunStatus, reason: str, unverified: bool,
                       hung: bool) -> str:
