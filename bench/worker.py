@@ -27,8 +27,8 @@ disk, :mod:`mkm.bench.recorder` writes behind it):
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
   of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
 
-- disk: the run folder's disk not taking the record for ``recorder.DISK_STUCK_S`` of sample
-  time (the samples held in memory are written when it returns); the run is ``failed``.
+- disk: the run folder's disk finishing no write for ``recorder.DISK_STUCK_S`` with samples
+  held (they are written when it returns); the run is ``failed``.
 
 - reading: a read that times out while a pressure is commanded (at 0 bar, ``daq.read_retries``
   timeouts in a row are retried); the run is ``failed``.
