@@ -8,8 +8,9 @@ stop the loop, and with it every interlock, while the regulator holds its pressu
 syncs them to the disk :data:`SYNC_EVERY_S` after the last sync, whether more rows come or not.
 What the disk has not taken yet is held in memory, in order; the loop asks
 :meth:`Recorder.stuck` after every block, and rows held while the disk finishes no write for
-:data:`DISK_STUCK_S` (or more than :data:`HELD_ROWS_MAX` rows) stop the run: vent first, reason
-"disk not taking the record".
+:data:`DISK_STUCK_S`, a disk trailing by more than that much sample time for as long, or more
+than :data:`HELD_ROWS_MAX` rows held, stop the run: vent first, reason "disk not taking the
+record".
 A write the disk refused is said to the loop at its next block (:meth:`Recorder.raise_failure`)
 and in the final reason; the samples it refused are kept and written again, none lost or
 written twice. :meth:`Recorder.finish` waits for the disk to take everything held,
@@ -56,6 +57,10 @@ LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
 #: held meanwhile is in memory, never more than HELD_ROWS_MAX rows (a row is 296 bytes in memory,
 #: measured: 90 MB, 30 s at the USB-6001's fastest 10 kHz on two inputs; 300 rows, 90 kB, at the
 #: usual 10 Hz).
+#: A disk that finishes its writes but trails by more than this much sample time for as long
+#: (wall time) takes the record slower than the run acquires it: the run stops too, before
+#: the samples held grow to HELD_ROWS_MAX (8 h at 10 Hz) with the record on disk ever further
+#: behind.
 DISK_STUCK_S = 30.0
 HELD_ROWS_MAX = 300_000
 #: The rows written are synced to the disk (fsync) by the recorder's thread this long [s] (wall
@@ -119,6 +124,7 @@ class Recorder:
         # when the thread last finished a write, or was given one while it had none
         self._done_at = time.monotonic()
         self._synced_at = self._done_at  # when the rows were last synced to the disk
+        self._caught_up_at = self._done_at  # when the rows held last spanned DISK_STUCK_S or less
         self._thread = threading.Thread(target=self._write_queued, name="mkm-recorder",
                                         daemon=True)
         self._thread.start()
@@ -321,8 +327,8 @@ class Recorder:
 
     def stuck(self) -> str:
         """Why the disk is not taking the record ("" while it is): samples held while it
-        finishes no write for :data:`DISK_STUCK_S`, or more than :data:`HELD_ROWS_MAX` rows
-        held."""
+        finishes no write for :data:`DISK_STUCK_S`, more than that much sample time held for
+        as long (a disk slower than the run), or more than :data:`HELD_ROWS_MAX` rows held."""
         with self._cond:
             held = self.held_rows
             held_s = held / self.rate_hz
@@ -330,14 +336,21 @@ class Recorder:
                 self.stuck_reason = (f"the recorder's thread failed ({self.crashed}): {held} "
                                      "samples held in memory, written as the run ends")
                 return self.stuck_reason
-            quiet_s = time.monotonic() - self._done_at
-            if held <= HELD_ROWS_MAX and not (held and quiet_s >= DISK_STUCK_S):
+            now = time.monotonic()
+            quiet_s = now - self._done_at
+            if held_s <= DISK_STUCK_S:
+                self._caught_up_at = now
+            behind = now - self._caught_up_at >= DISK_STUCK_S
+            if held <= HELD_ROWS_MAX and not (held and quiet_s >= DISK_STUCK_S) and not behind:
                 return ""
             unwritten = self._unwritten  # replaced, never emptied in place, by the thread
             oldest_s = unwritten[0].time_s if unwritten else self._held[0]
-            self.stuck_reason = (f"disk not taking the record: no write finished for "
-                                 f"{quiet_s:.0f} s, {held} samples ({held_s:g} s, the oldest "
-                                 f"from {oldest_s:g} s) held in memory")
+            what = f"{held} samples ({held_s:g} s, the oldest from {oldest_s:g} s) held in memory"
+            self.stuck_reason = (
+                f"disk not taking the record: no write finished for {quiet_s:.0f} s, {what}"
+                if quiet_s >= DISK_STUCK_S or not behind else
+                f"disk not taking the record: slower than the run, {what}, more than "
+                f"{DISK_STUCK_S:g} s of samples for {DISK_STUCK_S:g} s")
             return self.stuck_reason
 
     @property

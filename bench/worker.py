@@ -28,7 +28,8 @@ disk, :mod:`mkm.bench.recorder` writes behind it):
   of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
 
 - disk: the run folder's disk finishing no write for ``recorder.DISK_STUCK_S`` with samples
-  held (they are written when it returns); the run is ``failed``.
+  held, or trailing by more than that much sample time for as long (they are written when it
+  returns); the run is ``failed``.
 
 - reading: a read that times out while a pressure is commanded (at 0 bar, ``daq.read_retries``
   timeouts in a row are retried); the run is ``failed``.

@@ -227,6 +227,49 @@ def test_a_disk_slow_for_one_write_while_the_virtual_clock_runs_is_not_stuck(tmp
     assert run.samples["sample"].tolist() == list(range(queued[0]))
 
 
+def test_a_disk_that_writes_slower_than_the_run_acquires_stops_it_vented(tmp_path,
+                                                                          monkeypatch):
+    # each write of samples.csv takes 0.2 s (a share far away), one block of 0.1 s of samples
+    # each, the run acquiring two blocks a write: the disk finished a write every 0.2 s, so it
+    # was never stuck, while the samples held in memory grew without end (until 300 000 rows,
+    # 8 h at 10 Hz), the record on disk further and further behind and the run's end waiting
+    # for all of it. Now a disk that has trailed by more than DISK_STUCK_S of samples for
+    # DISK_STUCK_S stops the run, vented, every sample kept
+    import threading
+
+    from mkm.bench import recorder
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+
+    offset, cond, count = _recorder_clock(monkeypatch), threading.Condition(), [0, 0]
+    samples, append = recorder.Recorder.samples, RunWriter.append_samples
+
+    def two_blocks_a_write(self, rows):  # count: blocks queued, blocks written
+        with cond:  # a net under a broken fix: 60 s
+            cond.wait_for(lambda: 2 * count[1] >= count[0] - 1, 60)
+            count[0] += 1
+        samples(self, rows)
+
+    def slow(self, rows):
+        offset[0] += 0.2  # the write takes 0.2 s
+        append(self, rows)
+        with cond:
+            count[1] += 1
+            cond.notify_all()
+
+    monkeypatch.setattr(recorder.Recorder, "samples", two_blocks_a_write)
+    monkeypatch.setattr(RunWriter, "append_samples", slow)
+    result = acquire(load_config(), out_root=tmp_path, notify=lambda m: None)
+    assert (result.status, result.exit_code) == ("failed", 2), result.reason
+    assert re.match(r"disk not taking the record: slower than the run, \d+ samples \([\d.]+ "
+                    r"s, the oldest from [\d.]+ s\) held in memory, more than 30 s of samples "
+                    r"for 30 s; vented", result.reason), result.reason
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"]
+    assert run.samples["sample"].tolist() == list(range(len(run.samples)))  # every one kept
+    assert len(run.samples) == run.meta.counters["samples"] > 600  # 30 s held, 30 s on
+
+
 def test_run_json_held_open_at_the_tare_is_tried_again(config, tmp_path, monkeypatch):
     # Windows: a virus scanner or the indexer holding run.json as the tare rewrites it: the
     # final record tried again, the tare's rewrite did not, and the run failed (exit 2) with
