@@ -80,7 +80,8 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
     try:
         with owner:
             dead_runs = owner.dead_runs()  # before the device is opened
-            info = open_within(backend.open, f"{OPEN_HUNG}; VENT BY HAND")  # never closed then
+            # never closed when it hangs or is interrupted
+            info = _open_said(backend.open, notify, f"{OPEN_HUNG}; VENT BY HAND")
             try:
                 for marker in vent_dead_runs(backend, dead_runs, owner.on_state_folder):
                     notify(marker.vented_now())
@@ -92,6 +93,18 @@ def session(backend: Backend, command: str, notify=None) -> Iterator[DeviceInfo]
     finally:  # vented and closed: a state folder that hangs is not waited for
         if owner.problem:
             notify(owner.problem)
+
+
+def _open_said(open_device, notify, then: str = OPEN_HUNG):
+    """:func:`mkm.bench.run.open_within`; a Ctrl-C while the open is under way in the driver
+    (these commands take no stop signals of their own) is said to ``notify`` as it goes: the
+    vent the open writes is not known to be written, and nothing is to be written or closed
+    behind the open."""
+    try:
+        return open_within(open_device, then)
+    except KeyboardInterrupt:
+        notify(f"interrupted during the device's open: {OPEN_HUNG}; VENT BY HAND")
+        raise
 
 
 def _seconds(seconds: float) -> float:
@@ -173,8 +186,8 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
         # the open writes the vent (a lost device is reset first); a driver that hangs there
         # leaves the user staring at nothing: bounded, then said
         try:
-            open_within(lambda: _refused_again(device.open, notify))
-        except DriverHangs:
+            _open_said(lambda: _refused_again(device.open, notify), notify)
+        except (DriverHangs, KeyboardInterrupt):
             open_hung = True
             raise
         if config.regulator.electronic:  # marked once the vent is out, never waited for: a

@@ -7,9 +7,10 @@ acquisition loop only queues them, so a disk that hangs (a network share, a dyin
 stop the loop, and with it every interlock, while the regulator holds its pressure. The thread
 syncs them to the disk :data:`SYNC_EVERY_S` after the last sync, whether more rows come or not.
 What the disk has not taken yet is held in memory, in order; the loop asks
-:meth:`Recorder.stuck` after every block, and more than :data:`DISK_STUCK_S` of samples held
-with no write done for :data:`DISK_QUIET_S` (or more than :data:`HELD_ROWS_MAX` rows) stops the
-run: vent first, reason "disk not taking the record".
+:meth:`Recorder.stuck` after every block, and rows held while the disk finishes no write for
+:data:`DISK_STUCK_S`, a disk trailing by more than that much sample time for as long, or more
+than :data:`HELD_ROWS_MAX` rows held, stop the run: vent first, reason "disk not taking the
+record".
 A write the disk refused is said to the loop at its next block (:meth:`Recorder.raise_failure`)
 and in the final reason; the samples it refused are kept and written again, none lost or
 written twice. :meth:`Recorder.finish` waits for the disk to take everything held,
@@ -49,18 +50,19 @@ from mkm.core.records import provenance
 # write. Each rewrite tries again for this long before it says so (the tare's on the recorder's
 # thread: the loop does not wait for it).
 LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
-#: This much sample time [s] held for the disk (counted in samples, so a gap of lost samples is
-#: not taken for a stuck disk), with no write done for :data:`DISK_QUIET_S`: it is not taking the
-#: record, the run stops. A network share that stalls for seconds is ridden through; what is held
-#: meanwhile is in memory, never more than HELD_ROWS_MAX rows (a row is 296 bytes in memory,
+#: Rows held for the disk while it finishes no write for this long [s] (wall time, the disk's
+#: own: the samples held meanwhile say nothing of it, the virtual clock acquiring hundreds of
+#: times faster than real time and a gap of lost samples jumping their time): it is not taking
+#: the record, the run stops. A network share that stalls for seconds is ridden through; what is
+#: held meanwhile is in memory, never more than HELD_ROWS_MAX rows (a row is 296 bytes in memory,
 #: measured: 90 MB, 30 s at the USB-6001's fastest 10 kHz on two inputs; 300 rows, 90 kB, at the
 #: usual 10 Hz).
+#: A disk that finishes its writes but trails by more than this much sample time for as long
+#: (wall time) takes the record slower than the run acquires it: the run stops too, before
+#: the samples held grow to HELD_ROWS_MAX (8 h at 10 Hz) with the record on disk ever further
+#: behind.
 DISK_STUCK_S = 30.0
 HELD_ROWS_MAX = 300_000
-#: Samples held past :data:`DISK_STUCK_S` stop the run only with no write done for this long [s]
-#: (wall time): a disk that writes, behind the loop in a burst (the virtual clock runs hundreds
-#: of times faster than real time), is not stuck.
-DISK_QUIET_S = 1.0
 #: The rows written are synced to the disk (fsync) by the recorder's thread this long [s] (wall
 #: time) after the last sync, at a write or without one (an acquisition that stalls): a crash
 #: of the operating system or a power cut loses about this much of the record, not everything
@@ -122,6 +124,7 @@ class Recorder:
         # when the thread last finished a write, or was given one while it had none
         self._done_at = time.monotonic()
         self._synced_at = self._done_at  # when the rows were last synced to the disk
+        self._caught_up_at = self._done_at  # when the rows held last spanned DISK_STUCK_S or less
         self._thread = threading.Thread(target=self._write_queued, name="mkm-recorder",
                                         daemon=True)
         self._thread.start()
@@ -323,9 +326,9 @@ class Recorder:
             return next((what for what, failure in self._failures if exc is failure), "")
 
     def stuck(self) -> str:
-        """Why the disk is not taking the record ("" while it is): more than
-        :data:`DISK_STUCK_S` of samples held with no write done for :data:`DISK_QUIET_S`, or
-        more than :data:`HELD_ROWS_MAX` rows."""
+        """Why the disk is not taking the record ("" while it is): samples held while it
+        finishes no write for :data:`DISK_STUCK_S`, more than that much sample time held for
+        as long (a disk slower than the run), or more than :data:`HELD_ROWS_MAX` rows held."""
         with self._cond:
             held = self.held_rows
             held_s = held / self.rate_hz
@@ -333,13 +336,21 @@ class Recorder:
                 self.stuck_reason = (f"the recorder's thread failed ({self.crashed}): {held} "
                                      "samples held in memory, written as the run ends")
                 return self.stuck_reason
-            quiet = time.monotonic() - self._done_at >= DISK_QUIET_S
-            if held <= HELD_ROWS_MAX and not (held_s > DISK_STUCK_S and quiet):
+            now = time.monotonic()
+            quiet_s = now - self._done_at
+            if held_s <= DISK_STUCK_S:
+                self._caught_up_at = now
+            behind = now - self._caught_up_at >= DISK_STUCK_S
+            if held <= HELD_ROWS_MAX and not (held and quiet_s >= DISK_STUCK_S) and not behind:
                 return ""
             unwritten = self._unwritten  # replaced, never emptied in place, by the thread
             oldest_s = unwritten[0].time_s if unwritten else self._held[0]
-            self.stuck_reason = (f"disk not taking the record: {held} samples ({held_s:g} s, "
-                                 f"the oldest from {oldest_s:g} s) held in memory")
+            what = f"{held} samples ({held_s:g} s, the oldest from {oldest_s:g} s) held in memory"
+            self.stuck_reason = (
+                f"disk not taking the record: no write finished for {quiet_s:.0f} s, {what}"
+                if quiet_s >= DISK_STUCK_S or not behind else
+                f"disk not taking the record: slower than the run, {what}, more than "
+                f"{DISK_STUCK_S:g} s of samples for {DISK_STUCK_S:g} s")
             return self.stuck_reason
 
     @property

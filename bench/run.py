@@ -583,6 +583,7 @@ class BenchRun:
         self._folder_error: OSError | None = None  # the run folder could not be made
         self._device_hangs = False  # a call of the start-up hangs in the driver
         self._opened = False  # the device's open returned
+        self._open_stop = ""  # what came of the open a stop signal was held behind
 
     def request_stop(self, by: str | None = None) -> None:
         """What the first Ctrl-C does: stop at the next safe point (``by`` says who else asked)."""
@@ -676,6 +677,10 @@ class BenchRun:
         elif isinstance(outcome, StopSignal):
             status, signal_name, signal_number = RunStatus.ABORTED, outcome.name, outcome.signum
             reason, say_vent = f"stopped by {outcome} at once", True
+            if self._open_stop:  # held behind the device's open
+                reason = f"stopped by {outcome} during the device's open, {self._open_stop}"
+                if self._device_hangs:  # nothing is written behind an open that hangs
+                    status, say_vent = RunStatus.FAILED, False
         elif isinstance(outcome, KeyboardInterrupt):  # no handlers (not the main thread)
             status, signal_name, signal_number = RunStatus.ABORTED, "SIGINT", 2
             reason, say_vent = "stopped by a second Ctrl-C (SIGINT) at once", True
@@ -731,10 +736,31 @@ class BenchRun:
         return (RunStatus.COMPLETE_WITH_GAPS, f"{_all_steps(n)} done, but {meta.lost_samples} "
                 f"samples were lost in {len(meta.gaps)} gap(s): {spans}", EXIT_GAPS)
 
-    def startup(self) -> None:
-        # writes the vent command first; never closed when it hangs
-        info = open_within(self.backend.open, f"{OPEN_HUNG}; VENT BY HAND")
+    def _open(self):
+        """The device's open (it writes the vent command first), bounded (:func:`open_within`);
+        a stop signal that comes meanwhile is held until the open returns or its bound passes:
+        the shutdown's vent and close would go into the driver beside the open under way (an
+        NI device's AO task not yet made: a vent said written that was not). Never closed when
+        it hangs."""
+        hung = None
+        try:
+            with self.signals.deferred():
+                try:
+                    info = open_within(self.backend.open, f"{OPEN_HUNG}; VENT BY HAND")
+                except DriverHangs as exc:
+                    hung = exc
+                    raise
+        except StopSignal:
+            if hung is None:
+                self._opened, self._open_stop = True, "held until it returned"
+            else:
+                self._device_hangs, self._open_stop = True, f"held until its bound passed: {hung}"
+            raise
         self._opened = True
+        return info
+
+    def startup(self) -> None:
+        info = self._open()
         self.unvented = vent_dead_runs(self.backend, self._dead_runs, self.owner.on_state_folder)
         for marker in self.unvented:
             self.notify(marker.vented_now())
@@ -1038,13 +1064,13 @@ class BenchRun:
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
             status = RunStatus.FAILED
-            held = self.vent_check.pressure_bar
+            held, commanded = self.vent_check.pressure_bar, False  # read after the vent
             if self.vent_check.unfollowed_bar is not None:  # the reading proves nothing
-                held = self.vent_check.unfollowed_bar
+                held, commanded = self.vent_check.unfollowed_bar, True
             elif not held >= 0:  # nothing plausible read by the check, or no pressure
-                held = acq.held_bar() if acq is not None else 0.0
+                held, commanded = acq.held_bar() if acq is not None else (0.0, True)
             problems.append(f"{self.vent_check.describe()}: VENT BY HAND (the regulator may "
-                            f"still hold {held:.3g} bar)")
+                            f"still hold {self._held_said(held, commanded)})")
         problems = told(problems)
         if problems:
             reason = "; ".join([reason, *problems]) if reason else "; ".join(problems)
@@ -1082,6 +1108,21 @@ class BenchRun:
         if lease is not None:  # its thread ends after the last update (one that hangs: later)
             lease.end()
         return status, reason
+
+    def _held_said(self, held_bar: float, commanded: bool) -> str:
+        """What the regulator may still hold [bar], in words: ``held_bar``, or, when that is a
+        command (``commanded``) the monitor read more than before the vent, beyond its declared
+        error (an overshoot, a regulator that went on rising), that reading with the command
+        beside it: a limit is watched on what is measured."""
+        before = self.acquisition.before_vent() if self.acquisition is not None else None
+        reg = self.config.regulator
+        offset_bar, gain = reg.reading_bounds()
+        error_bar = offset_bar + gain * held_bar if reg.monitor_components \
+            else reg.monitor_accuracy_bar
+        if commanded and before is not None and before[0] > held_bar + error_bar:
+            return (f"{before[0]:.3g} bar, as the monitor read before the vent, with "
+                    f"{held_bar:.3g} bar commanded")
+        return f"{held_bar:.3g} bar"
 
     def _keep_outcome(self, status: RunStatus, reason: str, unverified: bool,
                       hung: bool) -> str:

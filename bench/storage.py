@@ -702,6 +702,7 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     samples.csv still refuses writes, or the kept rows do not continue samples.csv's last
     sample (after a gap recorded there). The kept rows are written as they are, after
     samples.csv's last whole row; those it holds already are left out; the kept file stays.
+    Asked again after run.json refused the count, it counts them then.
     """
     path = Path(run_dir)
     meta = read_meta(path)
@@ -727,6 +728,13 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     last = _last_row(samples_csv)
     last_sample = int(last[0]) if last else -1
     new = [(n, r) for n, r in zip(numbers, rows, strict=True) if n > last_sample]
+    if not new and numbers:  # joined before: a run.json that refused the count takes it now
+        held = Run(path, meta, pd.DataFrame(), meta.status).n_samples
+        if held != meta.counters.get("samples"):
+            return _count_joined(path, meta, held, f"the samples kept in {kept} are all in "
+                                 f"{samples_csv} already, joined before",
+                                 f"samples {numbers[0]}-{numbers[-1]} ({len(numbers)}) kept in "
+                                 f"{kept} were joined to samples.csv")
     if not new:
         raise ValueError(f"the samples kept in {kept} are all in {samples_csv} already (its "
                          f"last sample is {last_sample}): nothing to join; the kept file may "
@@ -750,11 +758,20 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
                          f"joined, the samples stay kept in {kept}; expected a run folder this "
                          "user can write to again") from None
     span = f"samples {new[0][0]}-{new[-1][0]} ({len(new)})"
-    done = f"{span} kept in {kept} were joined to {samples_csv}"
-    held = Run(path, meta, pd.DataFrame(), meta.status).n_samples
+    return _count_joined(path, meta, Run(path, meta, pd.DataFrame(), meta.status).n_samples,
+                         f"{span} kept in {kept} were joined to {samples_csv}",
+                         f"{span} kept in {kept} were joined to samples.csv")
+
+
+def _count_joined(path: Path, meta: RunMeta, held: int, done: str, said: str
+                  ) -> tuple[str, bool]:
+    """run.json of the run folder ``path`` counts the ``held`` samples of samples.csv, its
+    reason followed by ``said`` (once; a run.json still ``running`` keeps its reason for the
+    outcome the bench marker holds): :func:`join_kept_samples`' words (``done`` what was
+    done) and whether run.json took the count."""
     meta.counters["samples"] = held
-    if meta.status != RunStatus.RUNNING:
-        meta.reason = f"{meta.reason}; {span} kept in {kept} were joined to samples.csv"
+    if meta.status != RunStatus.RUNNING and said not in meta.reason:
+        meta.reason = f"{meta.reason}; {said}"
     try:
         write_json_atomic(path / "run.json", meta.as_dict())
     except OSError as exc:
@@ -1016,9 +1033,15 @@ def read_meta(path: str | Path) -> RunMeta:
         raise ValueError(f"{meta_path} is {meta_path.stat().st_size} bytes: expected a run "
                          f"record of at most {MAX_RUN_JSON_BYTES}")
     try:
-        data = json.loads(meta_path.read_text(encoding="utf-8-sig"),  # a BOM: Windows editors
-                          object_pairs_hook=_unique_keys)
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        text = meta_path.read_text(encoding="utf-8-sig")  # a BOM: Windows editors
+    except OSError as exc:  # no permission, a file held locked: a read, not a write, failed
+        raise ValueError(f"{meta_path} cannot be read ({exc.strerror or exc}): expected a run "
+                         "record this user can read") from None
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
+    try:
+        data = json.loads(text, object_pairs_hook=_unique_keys)
+    except json.JSONDecodeError as exc:
         raise ValueError(f"{meta_path} is corrupt (not valid JSON: {exc})") from None
     except RecursionError:
         raise ValueError(f"{meta_path} is corrupt (nested too deeply)") from None

@@ -27,8 +27,9 @@ disk, :mod:`mkm.bench.recorder` writes behind it):
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
   of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
 
-- disk: the run folder's disk not taking the record for ``recorder.DISK_STUCK_S`` of sample
-  time (the samples held in memory are written when it returns); the run is ``failed``.
+- disk: the run folder's disk finishing no write for ``recorder.DISK_STUCK_S`` with samples
+  held, or trailing by more than that much sample time for as long (they are written when it
+  returns); the run is ``failed``.
 
 - reading: a read that times out while a pressure is commanded (at 0 bar, ``daq.read_retries``
   timeouts in a row are retried); the run is ``failed``.
@@ -568,16 +569,17 @@ class Acquisition:
         forces = [*self._recent_N, *self._vent_N]
         return bool(self._recent_N) and bool(self._vent_N) and min(forces) == max(forces)
 
-    def held_bar(self) -> float:
-        """The pressure [bar] the regulator may still hold when its vent is not verified: its
-        command while the vent was not written, else the last plausible pressure measured, or,
-        read below 0 bar (a zero drifted low), the last pressure commanded (a lost monitor's
-        0 V converts to -1 bar, which is no pressure at all)."""
+    def held_bar(self) -> tuple[float, bool]:
+        """The pressure [bar] the regulator may still hold when its vent is not verified, and
+        whether it is a command: its command while the vent was not written, else the last
+        plausible pressure measured, or, read below 0 bar (a zero drifted low), the last
+        pressure commanded (a lost monitor's 0 V converts to -1 bar, which is no pressure at
+        all)."""
         if not self.vented:
-            return self.command_bar
+            return self.command_bar, True
         if self.measured_bar >= 0:
-            return self.measured_bar
-        return self.pressure_commanded_bar
+            return self.measured_bar, False
+        return self.pressure_commanded_bar, True
 
     # commands --------------------------------------------------------------------------------
 

@@ -9,9 +9,10 @@ Runs the paper's staircase on the simulated bench's virtual clock (hundreds of t
 than real time: the hardest case for the writer, a good disk under it) ``--repeats`` times per
 read block size, and records the most samples held for the disk at any moment (queued or being
 written), in rows and in seconds of samples; then the memory of 100 000 held rows
-(``tracemalloc``). A held span near ``DISK_STUCK_S`` (30 s) would stop a healthy run: the table
-says the margin. How far the writer trails depends on the threads' scheduling, so on the
-machine's load: the table gives the range over the repeats. Prints a Markdown table; ``--out``
+(``tracemalloc``). A run stops when the disk finishes no write for ``DISK_STUCK_S`` (30 s of
+wall time), however many samples are held: the held span says how far a healthy writer trails.
+How far it trails depends on the threads' scheduling, so on the machine's load: the table gives
+the range over the repeats. Prints a Markdown table; ``--out``
 also writes it, every run and the provenance as JSON.
 """
 

@@ -139,34 +139,135 @@ def test_an_over_pressure_while_the_disk_hangs_is_vented_at_once(config, tmp_pat
 
 
 def test_a_disk_that_hangs_too_long_stops_the_run_vented(config, tmp_path, monkeypatch):
-    # the disk hangs from the first sample and does not come back within DISK_STUCK_S (5 s
-    # here) of sample time: the run vents and stops with the reason; once the disk returns,
-    # every sample held in memory is written and run.json says why
+    # the disk hangs from the first sample and finishes no write within DISK_STUCK_S (30 s by
+    # the recorder's clock, put forward as it hangs): the run vents and stops with the reason;
+    # once the disk returns, every sample held in memory is written and run.json says why
     from mkm.bench import recorder
 
-    monkeypatch.setattr(recorder, "DISK_STUCK_S", 5.0)
-    monkeypatch.setattr(recorder, "DISK_QUIET_S", 0.0)  # counted in samples alone
+    offset = _recorder_clock(monkeypatch)
+    samples = recorder.Recorder.samples
+
+    def hanging_from_20(self, rows):  # the disk hangs 31 s once 20 samples are queued
+        samples(self, rows)
+        if rows[-1].sample >= 20:
+            offset[0] = 31.0
+
+    monkeypatch.setattr(recorder.Recorder, "samples", hanging_from_20)
     release, hung = _hung_disk(monkeypatch, 0)
     worker, vented, at, out = _run_in_thread(config, tmp_path, monkeypatch)
     try:
         assert vented.wait(60), "the loop waited for the hung disk: nothing was vented"
         assert at["rows_on_disk"] == 0 and not release.is_set()
-        # held from sample 0: stuck once more than 5 s of samples are held, at sample 50
-        # (51 samples); the vent is written after that block, at sample 51 by the device's clock
-        assert at["sample"] == 51
+        # stuck at the first block past sample 20 (21 samples, 2.1 s of them, held); the vent
+        # is written after that block, at sample 21 by the device's clock
+        assert at["sample"] == 21
     finally:
         release.set()
         worker.join(120)
     result = out["result"]
     run = load_run(result.path)
     assert result.status == "failed" and result.exit_code == 2
-    assert result.reason.startswith("disk not taking the record: 51 samples (5.1 s, the oldest "
-                                    "from 0 s) held in memory; vented")
+    assert re.match(r"disk not taking the record: no write finished for 3[01] s, 21 samples "
+                    r"\(2\.1 s, the oldest from 0 s\) held in memory; vented", result.reason)
     assert run.meta.reason == result.reason and run.meta.vent_check["verified"]
     s = run.samples
-    assert list(s["sample"]) == list(range(len(s))) and s["sample"].iloc[-1] > 51
+    assert list(s["sample"]) == list(range(len(s))) and s["sample"].iloc[-1] > 21
     assert run.meta.counters["samples"] == len(s)
     assert run.commands["purpose"].tolist()[-2:] == ["interlock vent", "vent"]
+
+
+def _recorder_clock(monkeypatch):
+    """The recorder's clock (``time.monotonic``) put forward by ``offset[0]`` seconds: a write
+    that takes that long, without a test that waits for it."""
+    import time
+    import types
+
+    from mkm.bench import recorder
+
+    offset = [0.0]
+    monkeypatch.setattr(recorder, "time", types.SimpleNamespace(
+        monotonic=lambda: time.monotonic() + offset[0], sleep=time.sleep))
+    return offset
+
+
+def test_a_disk_slow_for_one_write_while_the_virtual_clock_runs_is_not_stuck(tmp_path,
+                                                                             monkeypatch):
+    # a write of samples.csv takes 1.5 s (a loaded machine's sync), the paper's run on the
+    # virtual clock acquiring 38 s of samples meanwhile: the run stopped, "disk not taking
+    # the record", the disk working all along (more than 30 s of samples held, no write done
+    # for 1 s). Now a disk is stuck when it finishes no write for DISK_STUCK_S of its own time,
+    # whatever the samples held meanwhile: the run completes, every sample once and in order
+    import threading
+
+    from mkm.bench import recorder
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+
+    offset = _recorder_clock(monkeypatch)
+    queued, more = [0], threading.Event()
+    samples, append = recorder.Recorder.samples, RunWriter.append_samples
+
+    def counting(self, rows):
+        samples(self, rows)
+        queued[0] += len(rows)
+        if queued[0] >= 400:  # 380 samples (38 s) held behind the slow write
+            more.set()
+
+    def slow_once(self, rows):
+        if rows[-1].sample >= 20 and not offset[0]:
+            offset[0] = 1.5  # the write takes 1.5 s
+            more.wait(60)  # a net under a broken fix, never reached when it works
+        append(self, rows)
+
+    monkeypatch.setattr(recorder.Recorder, "samples", counting)
+    monkeypatch.setattr(RunWriter, "append_samples", slow_once)
+    result = acquire(load_config(), out_root=tmp_path, notify=lambda m: None)
+    assert more.is_set() and (result.status, result.exit_code) == ("complete", 0), result.reason
+    run = load_run(result.path)
+    assert run.samples["sample"].tolist() == list(range(queued[0]))
+
+
+def test_a_disk_that_writes_slower_than_the_run_acquires_stops_it_vented(tmp_path,
+                                                                          monkeypatch):
+    # each write of samples.csv takes 0.2 s (a share far away), one block of 0.1 s of samples
+    # each, the run acquiring two blocks a write: the disk finished a write every 0.2 s, so it
+    # was never stuck, while the samples held in memory grew without end (until 300 000 rows,
+    # 8 h at 10 Hz), the record on disk further and further behind and the run's end waiting
+    # for all of it. Now a disk that has trailed by more than DISK_STUCK_S of samples for
+    # DISK_STUCK_S stops the run, vented, every sample kept
+    import threading
+
+    from mkm.bench import recorder
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+
+    offset, cond, count = _recorder_clock(monkeypatch), threading.Condition(), [0, 0]
+    samples, append = recorder.Recorder.samples, RunWriter.append_samples
+
+    def two_blocks_a_write(self, rows):  # count: blocks queued, blocks written
+        with cond:  # a net under a broken fix: 60 s
+            cond.wait_for(lambda: 2 * count[1] >= count[0] - 1, 60)
+            count[0] += 1
+        samples(self, rows)
+
+    def slow(self, rows):
+        offset[0] += 0.2  # the write takes 0.2 s
+        append(self, rows)
+        with cond:
+            count[1] += 1
+            cond.notify_all()
+
+    monkeypatch.setattr(recorder.Recorder, "samples", two_blocks_a_write)
+    monkeypatch.setattr(RunWriter, "append_samples", slow)
+    result = acquire(load_config(), out_root=tmp_path, notify=lambda m: None)
+    assert (result.status, result.exit_code) == ("failed", 2), result.reason
+    assert re.match(r"disk not taking the record: slower than the run, \d+ samples \([\d.]+ "
+                    r"s, the oldest from [\d.]+ s\) held in memory, more than 30 s of samples "
+                    r"for 30 s; vented", result.reason), result.reason
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"]
+    assert run.samples["sample"].tolist() == list(range(len(run.samples)))  # every one kept
+    assert len(run.samples) == run.meta.counters["samples"] > 600  # 30 s held, 30 s on
 
 
 def test_run_json_held_open_at_the_tare_is_tried_again(config, tmp_path, monkeypatch):
@@ -757,6 +858,113 @@ def test_mkm_recover_joins_the_kept_samples_back_once_the_folder_takes_writes(
     assert not [p for p in run.problems if str(kept) in p or "samples counted" in p]
     assert kept.read_bytes() == before[2]  # kept until the engineer deletes it
     code, out, err = mkm_cli(["recover", str(result.path)])
+    assert code == 2 and "are all in" in err and "nothing to join" in err
+
+
+def _kept_run(config, tmp_path, monkeypatch):
+    """A run whose folder refused every write from sample 60 on, its process since ended, the
+    folder taking writes again: its folder, run.json, samples.csv, the kept file and the
+    samples queued."""
+    import json
+
+    from mkm.bench.run import acquire
+
+    queued = _read_only_from_60(monkeypatch)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    run_json = result.path / "run.json"
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    meta["process"]["started_unix_s"] -= 100.0  # its process has ended since
+    run_json.write_text(json.dumps(meta), encoding="utf-8")
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    return result.path, run_json, result.path / "samples.csv", kept, queued
+
+
+def test_mkm_recover_joins_kept_rows_after_a_gap_recorded_at_samples_csvs_end(
+        config, tmp_path, monkeypatch, mkm_cli):
+    # a buffer overflow lost 5 samples right after samples.csv's last (59), so the kept rows
+    # begin at 65: run.json's gap says so and they are joined; without that gap, rows from 65
+    # do not continue samples.csv and nothing is joined
+    import json
+
+    import pandas as pd
+
+    path, run_json, samples_csv, kept = _kept_run(config, tmp_path, monkeypatch)[:4]
+    header, *rows = kept.read_text(encoding="utf-8").splitlines(keepends=True)
+    shifted = [f"{int(r.split(',', 1)[0]) + 5},{r.split(',', 1)[1]}" for r in rows]
+    kept.write_text(header + "".join(shifted), encoding="utf-8")
+    before = samples_csv.read_bytes()
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (2, "") and err == (
+        f"mkm recover: error: the samples kept in {kept} begin at sample 65, but {samples_csv} "
+        "ends at sample 59: expected this run's kept rows, from sample 60; nothing joined\n")
+    assert samples_csv.read_bytes() == before
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    meta["gaps"] = [{"after_sample": 59, "lost_samples": 5, "start_s": 6.0, "end_s": 6.5,
+                     "message": "buffer overflow"}]
+    meta["lost_samples"] = 5
+    run_json.write_text(json.dumps(meta), encoding="utf-8")
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (0, f"{path}\n") and "were joined" in err
+    joined = pd.read_csv(samples_csv)["sample"].tolist()
+    assert joined == list(range(60)) + [int(r.split(",", 1)[0]) for r in shifted]
+    assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == len(joined)
+
+
+def test_mkm_recover_says_a_run_json_it_cannot_read_in_one_line(config, tmp_path,
+                                                                monkeypatch, mkm_cli):
+    # run.json cannot be read (no permission): `mkm recover` said "run.json cannot be written
+    # (Permission denied): expected a folder this user can write to", a write it never tried.
+    # Now it says the file cannot be read, exit 2, nothing changed
+    path, run_json, samples_csv, kept, _ = _kept_run(config, tmp_path, monkeypatch)
+    before = (run_json.read_bytes(), samples_csv.read_bytes())
+    read_text = Path.read_text
+
+    def denied(self, *args, **kwargs):
+        if self == run_json:
+            raise PermissionError(errno.EACCES, "Permission denied", str(self))
+        return read_text(self, *args, **kwargs)
+
+    monkeypatch.setattr(Path, "read_text", denied)
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (2, "") and err == (
+        f"mkm recover: error: {run_json} cannot be read (Permission denied): expected a run "
+        "record this user can read\n")
+    assert (run_json.read_bytes(), samples_csv.read_bytes()) == before
+
+
+def test_mkm_recover_counts_rows_it_joined_once_run_json_takes_the_count(
+        config, tmp_path, monkeypatch, mkm_cli):
+    # run.json refused the count (read-only) after the kept rows were joined: exit 1, said;
+    # asked again once run.json takes writes, `mkm recover` said the rows were all in
+    # samples.csv, nothing to join, and run.json never counted them. Now it counts them then
+    import json
+
+    import mkm.bench.storage as storage
+
+    path, run_json, samples_csv, kept, queued = _kept_run(config, tmp_path, monkeypatch)
+    counted = json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"]
+
+    def denied(*args, **kwargs):
+        raise PermissionError(errno.EACCES, "Permission denied")
+
+    with monkeypatch.context() as read_only:
+        read_only.setattr(storage, "write_json_atomic", denied)
+        code, out, err = mkm_cli(["recover", str(path)])
+    n = len(queued)
+    assert (code, out) == (1, f"{path}\n") and err == (
+        f"mkm recover: error: samples 60-{queued[-1]} ({n - 60}) kept in {kept} were joined to "
+        f"{samples_csv}, but run.json could not count them (Permission denied): samples.csv "
+        f"holds {n} samples\n")
+    assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == counted
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (0, f"{path}\n") and err == (
+        f"mkm recover: note: the samples kept in {kept} are all in {samples_csv} already, "
+        f"joined before; run.json counts {n} samples\n")
+    assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == n
+    assert load_run(path).samples["sample"].tolist() == queued
+    code, out, err = mkm_cli(["recover", str(path)])
     assert code == 2 and "are all in" in err and "nothing to join" in err
 
 

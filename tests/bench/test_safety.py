@@ -7,6 +7,7 @@ import errno
 import json
 import math
 import re
+import signal
 import threading
 import time
 from pathlib import Path
@@ -1756,3 +1757,33 @@ def test_a_vent_refused_with_its_own_vent_by_hand_says_it_once(monkeypatch, mkm_
     code, out, err = mkm_cli(["vent", "--backend", "sim"])
     assert code == 1 and err.count("VENT BY HAND") == 1, err
     assert err.rstrip().endswith("VENT BY HAND and check the regulator")
+
+
+@pytest.mark.slow  # sends a signal to this process
+@pytest.mark.skipif(not hasattr(signal, "pthread_kill"),
+                    reason="a signal to the main thread, while it waits, needs pthread_kill")
+@pytest.mark.parametrize("command", [["vent"], ["tare"]])
+def test_a_ctrl_c_during_the_devices_open_says_the_vent_is_not_known(mkm_cli, monkeypatch,
+                                                                     tmp_path, command):
+    # Ctrl-C while `mkm vent` waited for the device's open (the driver still in it): the close
+    # wrote the vent and cleared the tasks beside the open under way (on NI, no AO task yet),
+    # and the command said only "interrupted". Now nothing is written behind the open, and a
+    # line says the vent is not known to be written, VENT BY HAND, before "interrupted" (130)
+    main, release, closed = threading.main_thread().ident, threading.Event(), []
+
+    class Interrupted(SimBackend):
+        def open(self):
+            signal.pthread_kill(main, signal.SIGINT)  # to the thread waiting for the open
+            release.wait(10)  # the test's net; released once the command returned
+            return super().open()
+
+        def close(self):
+            closed.append(True)
+            super().close()
+
+    code, out, err, still_hung, _ = _command_on(Interrupted, release, command, mkm_cli,
+                                                monkeypatch, tmp_path)
+    assert still_hung and code == 130 and out == "" and not closed
+    assert err.splitlines()[-2:] == [
+        f"mkm {command[0]}: interrupted during the device's open: the vent is NOT known to be "
+        "written (the open writes it); VENT BY HAND", f"mkm {command[0]}: interrupted"]

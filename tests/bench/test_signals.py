@@ -329,3 +329,66 @@ def test_a_signal_just_after_the_run_folder_is_made_is_recorded_in_it(config, tm
     recorded = load_run(folder)
     assert recorded.status == "aborted" and recorded.meta.reason == result.reason
     assert recorded.meta.stop_signal == "SIGTERM"
+
+
+@pytest.mark.slow  # sends a signal to this process
+@pytest.mark.skipif(not hasattr(signal, "pthread_kill"),
+                    reason="a signal to the main thread, while it waits, needs pthread_kill")
+@pytest.mark.parametrize("returns", [True, False], ids=["open-returns", "open-hangs"])
+def test_a_signal_during_the_devices_open_is_held_until_the_open_ends(config, tmp_path,
+                                                                     monkeypatch, returns):
+    # SIGTERM while the driver is still in the device's open (waited for up to OPEN_WAIT_S on
+    # a thread of its own): the shutdown wrote the vent and closed the device beside the open
+    # under way (on NI the AO task not yet made: a write that does nothing), and the reason
+    # said "vented". Now the signal is held until the open returns, then the vent is written
+    # and said; or, past the open's bound, nothing is written behind the open that hangs, and
+    # the reason says the vent is not known to be written, VENT BY HAND, exit 128 + 15.
+    import mkm.bench.run as run
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    main, calls = threading.main_thread().ident, []
+    opening, wrote, release = threading.Event(), threading.Event(), threading.Event()
+
+    class SlowOpen(SimBackend):
+        def open(self):
+            calls.append("open")
+            opening.set()
+            signal.pthread_kill(main, signal.SIGTERM)  # to the thread waiting for the open
+            # the test's nets: the shutdown's vent came at once when it did not wait; an open
+            # that hangs is let go once the run returned
+            wrote.wait(1.0) if returns else release.wait(10)
+            info = super().open()
+            calls.append("opened")
+            return info
+
+        def write_command(self, volts):
+            if opening.is_set() and "opened" not in calls and \
+                    threading.current_thread().ident == main:
+                calls.append("written beside the open")
+                wrote.set()
+            super().write_command(volts)
+
+        def close(self):
+            calls.append("close")
+            super().close()
+
+    monkeypatch.setattr(run, "OPEN_WAIT_S", 10.0 if returns else 0.2)
+    bench = BenchRun(config, SlowOpen(config), tmp_path / "runs", notify=lambda m: None)
+    try:
+        result = bench.execute()
+    finally:
+        release.set()
+    assert result.exit_code == 128 + signal.SIGTERM and result.path is None
+    if returns:
+        assert calls == ["open", "opened", "close"]
+        assert (result.status, result.reason) == (
+            "aborted", "stopped by SIGTERM during the device's open, held until it returned; "
+            "vented")
+        assert not list((tmp_path / "mkm-state").rglob("*.json"))  # nothing pressurised
+    else:
+        assert calls == ["open"]  # no vent, no close behind the open that hangs
+        assert (result.status, result.reason) == (
+            "failed", "stopped by SIGTERM during the device's open, held until its bound "
+            "passed: opening the device did not return within 0.2 s (the driver hangs): the "
+            "vent is NOT known to be written (the open writes it); VENT BY HAND")
