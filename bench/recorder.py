@@ -52,9 +52,8 @@ LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
 #: This much sample time [s] held for the disk (counted in samples, so a gap of lost samples is
 #: not taken for a stuck disk), with no write done for :data:`DISK_QUIET_S`: it is not taking the
 #: record, the run stops. A network share that stalls for seconds is ridden through; what is held
-#: meanwhile is in memory, never more than HELD_ROWS_MAX rows (a row is 296 bytes in memory,
-#: measured: 90 MB, 30 s at the USB-6001's fastest 10 kHz on two inputs; 300 rows, 90 kB, at the
-#: usual 10 Hz).
+#: meanwhile is in memory, never more than HELD_ROWS_MAX rows (a row is a few hundred bytes in
+#: memory: tens of MB, 30 s at the USB-6001's fastest 10 kHz on two inputs).
 DISK_STUCK_S = 30.0
 HELD_ROWS_MAX = 300_000
 #: Samples held past :data:`DISK_STUCK_S` stop the run only with no write done for this long [s]
