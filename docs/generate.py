@@ -467,17 +467,27 @@ def pooled_std_coverage(names=STD_COVERAGE_RUNS) -> dict:
     return {"muscles": sum(run["muscles"] for run in runs), "points": points,
             "seeds": [seed for run in runs for seed in run["seeds"]],
             **{f"within_{k}std": sum(round(run[f"within_{k}std"] * run["points"])
-                                     for run in runs) / points for k in (1, 2, 3)}}
+                                     for run in runs) / points for k in (1, 2, 3)},
+            # one draw's spread: the least and the most of any draw of the runs
+            **{f"within_{k}std_draws": [min(run[f"within_{k}std_draws"][0] for run in runs),
+                                        max(run[f"within_{k}std_draws"][1] for run in runs)]
+               for k in (1, 2)}}
 
 
 def std_coverage_table() -> str:
     """The default surrogate's std coverage on each run of fresh draws and pooled over them
     (:func:`pooled_std_coverage`), as Markdown."""
+    def pct(share):
+        return "100" if share == 1 else f"{100 * share:.1f}"
+
     def row(label, part, bold=False):
-        cover = " / ".join(f"{100 * part[f'within_{k}std']:.1f}" for k in (1, 2, 3)) + " %"
+        cover = " / ".join(pct(part[f"within_{k}std"]) for k in (1, 2, 3)) + " %"
+        spread = " / ".join("-".join(map(pct, part[f"within_{k}std_draws"]))
+                            for k in (1, 2)) + " %"
         return {"set": f"**{label}**" if bold else label, "muscles": str(part["muscles"]),
                 "points": str(part["points"]),
-                "within 1 / 2 / 3 std": f"**{cover}**" if bold else cover}
+                "within 1 / 2 / 3 std": f"**{cover}**" if bold else cover,
+                "one draw, within 1 / 2 std": spread}
 
     if not all((MEASURED / name).exists() for name in STD_COVERAGE_RUNS):
         return "*Not measured in this checkout: run the commands above.*\n"

@@ -713,11 +713,23 @@ def test_the_guides_pooled_default_surrogate_std_row_is_computed_from_the_runs()
     text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
     assert "```{include} ../_generated/surrogate_std_fresh.md" in text
     assert "| **fresh, pooled** |" not in text and "pooled by hand" not in text
-    # "Issue 34's target, 68 / 95 % within 3 points, holds pooled."
-    assert "Issue 34's target, 68 / 95 % within 3 points, holds pooled." in " ".join(
-        text.split())
+    # one draw's spread: the least and the most of any draw, 12 muscles each
+    assert all(r["muscles"] == 12 * len(r["seeds"]) for r in runs)
+    spread = " / ".join(f"{100 * min(r[f'within_{k}std_draws'][0] for r in runs):.1f}-"
+                        f"{100 * max(r[f'within_{k}std_draws'][1] for r in runs):.1f}"
+                        for k in (1, 2)).replace("100.0", "100")
+    assert f"**{cover} %** | {spread} % |" in table
+    said = " ".join(text.split())
+    assert "Issue 34's target, 68 / 95 % within 3 points, holds pooled." in said
     assert abs(100 * pooled["within_1std"] - 68) <= 3
     assert abs(100 * pooled["within_2std"] - 95) <= 3
+    # "the test set of 120 muscles is further from 68 % within 1 std than the pool of 600"
+    assert (f"the test set of 120 muscles is further from 68 % within 1 std than the pool of "
+            f"{pooled['muscles']}") in said
+    test_set = next(r for r in text.splitlines() if r.startswith("| test set, seeds "))
+    cells = [c.strip() for c in test_set.strip().strip("|").split("|")]
+    assert cells[1] == "120"
+    assert abs(float(cells[2].split(" / ")[0]) - 68.27) > abs(100 * pooled["within_1std"] - 68.27)
 
 
 @pytest.mark.slow  # trains the default surrogate (seconds, its shipped kernels and refits)
