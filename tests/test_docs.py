@@ -1850,3 +1850,37 @@ def test_the_docs_quote_no_note_a_measured_result_recorded():
     words = note.split()
     assert _quoted_notes({"page.md": "identify said:\n" + " ".join(words[:8]) + "\n"
                           + " ".join(words[8:]) + "."}, {(name, note)})
+
+
+def test_the_guides_unresolved_end_figures_are_the_mesh_tables():
+    """force-models.md types by hand what a mesh does beyond the end zone it resolves (the
+    coarse mesh's error on a slender thin tube of the shipped mesh table and on a fresh draw's,
+    at so many bending lengths) and how far the practical range reaches: held to
+    ``mkm/data/mesh_errors.csv``, ``mesh_bound_draw120.json`` and
+    :func:`mkm.mesh_errors.end_resolution`, to the digits the guide prints."""
+    import json
+
+    import pandas as pd
+
+    from mkm.mesh_errors import MAX_END_RESOLUTION, end_resolution
+
+    text = " ".join((DOCS / "guide" / "force-models.md").read_text(encoding="utf-8").split())
+    table = pd.read_csv(ROOT / "mkm" / "data" / "mesh_errors.csv", comment="#")
+    coarse = table[(table["mesh"] == "coarse") & ~table["fe_failed"].astype(bool)]
+    beyond = coarse[end_resolution(coarse["D0_mm"], coarse["t0_mm"], coarse["L0_mm"],
+                                   "coarse") > MAX_END_RESOLUTION]
+    worst = beyond.loc[beyond["relative_error"].idxmax()]
+    lengths = float(end_resolution(worst["D0_mm"], worst["t0_mm"], worst["L0_mm"], "coarse"))
+    record = json.loads((DOCS / "measured" / "mesh_bound_draw120.json").read_text(
+        encoding="utf-8"))
+    fresh = max(record["unresolved"]["coarse"], key=lambda m: m["relative_error_pct"])
+    reach = {mesh: float(end_resolution(5.0, 0.5, 1000.0, mesh)) for mesh in ("coarse",
+                                                                             "medium")}
+    assert (f"the coarse mesh was {100 * worst['relative_error']:.1f} % off from 2 P* up on a "
+            f"slender thin tube at {lengths:.1f} such lengths (D0 {worst['D0_mm']:.1f} mm, t0 "
+            f"{worst['t0_mm']:.2f} mm, L0 {worst['L0_mm']:.0f} mm), and on a fresh draw "
+            f"{fresh['relative_error_pct']:.0f} % at {fresh['end_lengths']:.1f} (D0 "
+            f"{fresh['D0_mm']:.1f} mm, t0 {fresh['t0_mm']:.2f} mm, L0 {fresh['L0_mm']:.0f} mm)"
+            ) in text
+    assert (f"the practical range reaches {reach['coarse']:.1f} lengths on the coarse mesh (a 5 "
+            f"x 0.5 mm tube 1 m long) and {reach['medium']:.1f} on the medium one") in text
