@@ -1884,3 +1884,48 @@ def test_the_guides_unresolved_end_figures_are_the_mesh_tables():
             ) in text
     assert (f"the practical range reaches {reach['coarse']:.1f} lengths on the coarse mesh (a 5 "
             f"x 0.5 mm tube 1 m long) and {reach['medium']:.1f} on the medium one") in text
+
+
+def test_the_guides_default_surrogate_std_factor_figures_are_auto_json():
+    """force-models.md quoted a bench_auto run no file records for the default surrogate's 3 s
+    (1 of 71 calls beyond it, 3.04 s) and, for the range's, a miss "measured below" that nothing
+    below measured: the figures are ``auto.json``'s (the box's calls the guide tabulates)."""
+    import json
+
+    from mkm.auto import REFERENCE_SPEC, STD_FACTOR
+
+    record = json.loads((DOCS / "measured" / "auto.json").read_text(encoding="utf-8"))
+    reference = record["reference_std_factor"][REFERENCE_SPEC]
+    assert reference["std_factor"] == STD_FACTOR
+    above = round((1 - reference["within_std_factor"]) * reference["calls"])
+    assert all(result["within"] == 1.0 for result in record["results"].values())
+    text = " ".join((DOCS / "guide" / "force-models.md").read_text(encoding="utf-8").split())
+    assert (f"the default surrogate's largest error exceeded {STD_FACTOR:g} s on {above} of "
+            f"{reference['calls']} calls, by up to {reference['largest']:.2f} s, every call "
+            "within the tolerance asked") in text
+    assert "1.6 times" not in text and "2026120512" not in text
+
+
+def test_the_guides_range_surrogate_bound_check_is_auto_practical_json():
+    """force-models.md tabulated four bench_auto draws of the range's surrogate bound, three of
+    which no file records (and a 3 s column of runs made before the factor was 6): the words
+    are the recorded draw's, ``auto_practical.json``."""
+    import json
+
+    from mkm.auto import RANGE_PREDICTOR, RANGE_SPEC, RANGE_STD_FACTOR
+
+    record = json.loads((DOCS / "measured" / "auto_practical.json").read_text(
+        encoding="utf-8"))
+    reference = record["reference_std_factor"][RANGE_SPEC]
+    checks = [result["bound_by_model"] for result in record["results"].values()]
+    answered = [c[RANGE_PREDICTOR]["calls"] for c in checks]
+    ratio = max(c[RANGE_PREDICTOR]["worst_ratio"] for c in checks)
+    assert all(m["exceeded"] == 0 for c in checks for m in c.values())
+    text = " ".join((DOCS / "guide" / "force-models.md").read_text(encoding="utf-8").split())
+    assert (f"{reference['calls']} calls: {100 * reference['within_3_std']:.1f} % within 3 s and "
+            f"{100 * reference['within_std_factor']:.0f} % within {RANGE_STD_FACTOR:g} s, the "
+            f"factor needed {reference['q99']:.2f} at the 99th percentile and "
+            f"{reference['largest']:.2f} at the largest; no model answered beyond the bound it "
+            f"stated, the range's surrogate at most {ratio:.2f} of its bound over "
+            f"{min(answered)}-{max(answered)} calls per tolerance") in text
+    assert "2189796162" not in text and "--seed 20261206`" not in text
