@@ -54,9 +54,8 @@ LOCKED_RETRIES, LOCKED_RETRY_S = 10, 0.2
 #: own: the samples held meanwhile say nothing of it, the virtual clock acquiring hundreds of
 #: times faster than real time and a gap of lost samples jumping their time): it is not taking
 #: the record, the run stops. A network share that stalls for seconds is ridden through; what is
-#: held meanwhile is in memory, never more than HELD_ROWS_MAX rows (a row is 296 bytes in memory,
-#: measured: 90 MB, 30 s at the USB-6001's fastest 10 kHz on two inputs; 300 rows, 90 kB, at the
-#: usual 10 Hz).
+#: held meanwhile is in memory, never more than HELD_ROWS_MAX rows (a row is a few hundred bytes in
+#: memory: tens of MB, 30 s at the USB-6001's fastest 10 kHz on two inputs).
 #: A disk that finishes its writes but trails by more than this much sample time for as long
 #: (wall time) takes the record slower than the run acquires it: the run stops too, before
 #: the samples held grow to HELD_ROWS_MAX (8 h at 10 Hz) with the record on disk ever further

@@ -44,7 +44,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.records import jsonable, provenance, recorded_path
-from mkm.surrogate.coverage import coverage
+from mkm.surrogate.coverage import coverage, informative
 from mkm.surrogate.design import DESIGN_DATASET
 from mkm.surrogate.kinds import names
 from mkm.surrogate.offgrid import evaluate_offgrid
@@ -175,6 +175,8 @@ def main() -> None:
     pooled = pd.concat(frames, ignore_index=True)
     error = pooled["force_fe_N"] - pooled["force_N"]
     offgrid_pooled = {"muscles": args.muscles * args.draws,
+                      # the points the fractions count: files pooled by them (docs/generate.py)
+                      "points": int(informative(error, pooled["force_std_N"]).sum()),
                       "within_1std": coverage(error, pooled["force_std_N"], 1.0),
                       "within_2std": coverage(error, pooled["force_std_N"], 2.0),
                       "within_3std": coverage(error, pooled["force_std_N"], 3.0),

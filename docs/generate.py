@@ -12,6 +12,8 @@ command wrote, and each include names that command, so rerunning it refreshes th
   (``mkm fem calibrate --update-shipped``);
 - ``datasets.md``: what the shipped FE datasets are, from their JSON sidecars;
 - ``threshold_*.md``: the threshold study's before/after and simulated-truth tables;
+- ``surrogate_std_fresh.md``: the default surrogate's std coverage on fresh draws, per run and
+  pooled over their points (:data:`STD_COVERAGE_RUNS`);
 - ``bench_*.md``: the benchmark tables, from the results the benchmark scripts wrote into
   ``docs/measured/`` (``make bench-docs`` runs them: :data:`BENCHMARKS`);
 - ``examples/``: one page per script of ``examples/``.
@@ -454,6 +456,55 @@ def benchmark_tables() -> None:
         write(OUT / f"bench_{path.stem}.md", text)
 
 
+#: The default surrogate's std coverage on fresh draws, one file per run of
+#: ``benchmarks/bench_surrogate.py`` (surrogates.md gives their commands), pooled by
+#: :func:`pooled_std_coverage`.
+STD_COVERAGE_RUNS = ("surrogate_std_coverage.json", "surrogate_std_coverage_fresh.json")
+
+
+def pooled_std_coverage(names=STD_COVERAGE_RUNS) -> dict:
+    """The std coverage of the runs in ``names`` pooled over their points: each run's fraction
+    within 1, 2 and 3 std weighed by the points it counts (``offgrid_pooled.points``)."""
+    runs = [json.loads((MEASURED / name).read_text(encoding="utf-8"))["offgrid_pooled"]
+            for name in names]
+    points = sum(run["points"] for run in runs)
+    return {"muscles": sum(run["muscles"] for run in runs), "points": points,
+            "seeds": [seed for run in runs for seed in run["seeds"]],
+            **{f"within_{k}std": sum(round(run[f"within_{k}std"] * run["points"])
+                                     for run in runs) / points for k in (1, 2, 3)},
+            # one draw's spread: the least and the most of any draw of the runs
+            **{f"within_{k}std_draws": [min(run[f"within_{k}std_draws"][0] for run in runs),
+                                        max(run[f"within_{k}std_draws"][1] for run in runs)]
+               for k in (1, 2)}}
+
+
+def std_coverage_table() -> str:
+    """The default surrogate's std coverage on each run of fresh draws and pooled over them
+    (:func:`pooled_std_coverage`), as Markdown."""
+    def pct(share):
+        return "100" if share == 1 else f"{100 * share:.1f}"
+
+    def row(label, part, bold=False):
+        cover = " / ".join(pct(part[f"within_{k}std"]) for k in (1, 2, 3)) + " %"
+        spread = " / ".join("-".join(map(pct, part[f"within_{k}std_draws"]))
+                            for k in (1, 2)) + " %"
+        return {"set": f"**{label}**" if bold else label, "muscles": str(part["muscles"]),
+                "points": str(part["points"]),
+                "within 1 / 2 / 3 std": f"**{cover}**" if bold else cover,
+                "one draw, within 1 / 2 std": spread}
+
+    if not all((MEASURED / name).exists() for name in STD_COVERAGE_RUNS):
+        return "*Not measured in this checkout: run the commands above.*\n"
+    rows = []
+    for name in STD_COVERAGE_RUNS:
+        run = json.loads((MEASURED / name).read_text(encoding="utf-8"))["offgrid_pooled"]
+        rows.append(row(f"fresh, seeds {run['seeds'][0]}-{run['seeds'][-1]}", run))
+    rows.append(row("fresh, pooled", pooled_std_coverage(), bold=True))
+    files = " and ".join(f"`docs/measured/{name}`" for name in STD_COVERAGE_RUNS)
+    return (markdown_table(pd.DataFrame(rows)) + f"\n*Generated from {files}, pooled by their "
+            "points; regenerate with the commands above.*\n")
+
+
 def threshold_model_tables() -> None:
     """The threshold study's before/after, simulated-truth, fitted rest-length and measured
     line tables (its selection table is the generic ``bench_threshold_models.md``), from
@@ -516,6 +567,7 @@ def main() -> None:
     dataset_table()
     benchmark_tables()
     threshold_model_tables()
+    write(OUT / "surrogate_std_fresh.md", std_coverage_table())
     example_pages()
 
 

@@ -54,8 +54,8 @@ from mkm.core.records import provenance, source_version, write_atomic
 from mkm.fem.ladder import entry, make_model
 
 #: Target wall time of one Dask task [s]: a task costs a local worker a few milliseconds
-#: (benchmarks/bench_batch.py measures it: 5 ms here), which a second of work hides to 0.5 %,
-#: while a killed worker loses at most about that much work.
+#: (benchmarks/bench_batch.py measures it), which a second of work hides, while a killed
+#: worker loses at most about that much work.
 TASK_SECONDS = 1.0
 #: At least this many chunks per worker: the last chunks are short enough to balance the load.
 CHUNKS_PER_WORKER = 4
@@ -67,7 +67,7 @@ QUEUED_PER_WORKER = 2
 AUTO_CLUSTER_SECONDS = 20.0
 #: Dask settings of the local cluster (and advice for a lab's workers): the nanny's
 #: ``MALLOC_TRIM_THRESHOLD_`` makes glibc map and unmap every large temporary array (the FE ran
-#: 30-50 % slower per job with it); the workers' statistical profiler samples the running task
+#: slower per job with it); the workers' statistical profiler samples the running task
 #: every 10 ms, and the event loops tick every 20 ms, CPU a single-threaded solve can use.
 QUIET_WORKERS = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
                  "distributed.worker.profile.enabled": False,

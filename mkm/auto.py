@@ -12,9 +12,9 @@ muscle's sweep) a posteriori, at those very points:
   hold 68, 95 and 99.7 % of its errors: the model's metadata ``std_rescale`` records the
   factor, the muscles and what they measured). Its own bound is ``K s`` (:data:`STD_FACTOR`,
   K = 3: beyond it lies 0.3 % of the errors); where the practical range's surrogate is the
-  reference (outside the default's box) K is :data:`RANGE_STD_FACTOR`, 6: the largest error of
-  a call over its largest std, measured on fresh calls of the range, exceeded 3 in 4 % of them
-  and 6 in none;
+  reference (outside the default's box) K is :data:`RANGE_STD_FACTOR`: the largest error of
+  a call over its largest std, measured on fresh calls of the range, exceeded 3 on some and
+  that factor on none;
 - a closed form's bound is ``|F - R| + K s``: its distance from the surrogate plus the
   surrogate's own uncertainty, so it holds wherever the surrogate's does;
 - an FE mesh's bound is its mesh error at the scale of the call: ``a P* A + b F`` at each point
@@ -41,8 +41,8 @@ was not trained on) there is no estimate of the reference: only the FE meshes qu
 mesh answers if nothing else does. A gap between tube and braid (``gap_mm`` other than 0, given or
 held by the candidates' calibration: a muscle identified with a gap) is modelled by the closed form
 and the FE (their registry entries take it), not by the surrogate, so nothing estimates the
-reference with the gap and no closed form's error is bounded there (its gap-free bound is not one:
-the thick-wall form 0.58 % off the fine mesh under a gap-free 0.44 %): only the FE meshes answer,
+reference with the gap and no closed form's error is bounded there (its gap-free bound is not
+one): only the FE meshes answer,
 each by its recorded mesh error (with a gap the coarse mesh is as close to the fine one:
 ``tests/fem/fe/test_contact.py``), and the fine mesh, with the gap, if nothing else meets the
 tolerance; :func:`explain` says first which models cannot answer. Each point records
@@ -80,13 +80,11 @@ FALLBACK_SPEC = "axisym:mesh=fine"
 STD_FACTOR = 3.0
 #: The factor of the practical range's surrogate's std in the bounds where it is the reference
 #: (its own, and a closed form's distance from it). Its std is calibrated per point; the largest
-#: error of a call against the largest std of the call needed more than 3 of it in 8 of 197
-#: fresh calls of the range (``benchmarks/bench_auto.py --range practical --seed 20261205
-#: --calls 160``, ``--seed 2189796162 --calls 40``: the "reference" line), up to 5.2; 6 holds
-#: every one, and every one of 80 calls of a third draw (``--seed 20261206 --calls 80``: 2 above
-#: 3, the largest 5.7). The 99th percentile of the factor needed was 3.8-4.7: a bound for 99 %
-#: of the calls with a margin of 1.3, not for every one (the tail is heavy:
-#: docs/guide/surrogates.md).
+#: error of a call against the largest std of the call needs more than 3 of it on some fresh
+#: calls of the range, and this factor holds every one: ``reference_std_factor`` in
+#: ``docs/measured/auto_practical.json`` (``benchmarks/bench_auto.py --range practical``;
+#: ``tests/test_docs.py`` holds this to it). Not a bound for a share of the calls: the tail is
+#: heavy (docs/guide/surrogates.md).
 RANGE_STD_FACTOR = 6.0
 # A mesh's recorded error is the largest over the study's muscles; another muscle may do a
 # little worse

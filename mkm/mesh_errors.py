@@ -2,8 +2,8 @@
 mesh at a single point as well as over a sweep.
 
 A coarser mesh's force differs from the fine mesh's in two ways: its threshold ``P*`` is
-shifted (by 0.01-2 % of it) and the bend just above it differs, and its slope differs by a small
-fraction (up to 7 %: the coarse mesh on a slender tube near the lock). So at a point of force
+shifted (by a small part of it) and the bend just above it differs, and its slope differs by a
+small fraction (most for the coarse mesh on a slender tube near the lock). So at a point of force
 ``F`` (the mesh's) and slope ``A = F / (P - P*)``::
 
     |F - F_fine| <= a P* A + b F
@@ -18,8 +18,8 @@ nothing up to 8 bar: :data:`NEAR_LOCK_SHARE` of the muscles are drawn there.
 
 Relative to the largest force of the call (Equation 7's scale) the bound is small over a sweep
 and large just above ``P*``, where a shift of the threshold is a large part of a small force:
-the single-point call ``auto`` answered from the coarse mesh with a sweep-scale bound of 0.08 %
-was 0.77 % off.
+a single-point call answered from the coarse mesh is off by many times a bound taken at a
+sweep's scale.
 
 The table (``mkm/data/mesh_errors.csv`` + JSON sidecar) holds one row per muscle and mesh;
 :func:`mesh_model` reads ``a`` and ``b`` per mesh (the largest over the muscles, times
@@ -53,8 +53,8 @@ NEAR_LOCK_RANGE = dataclasses.replace(PRACTICAL_RANGE, eps_per_lock=(0.85, 1.0))
 NEAR_LOCK_SHARE = 0.5
 #: The coarsest end zone a mesh's bound is measured and claimed for: its element at the clamped
 #: cap at most this many bending lengths of the wall (:func:`end_resolution`). Beyond it a thin,
-#: slender tube's bending at the cap falls between the nodes: the coarse mesh was 7.2 % off
-#: from 2 P* up at 5.8 such lengths, within 0.73 % on every muscle up to 4.9.
+#: slender tube's bending at the cap falls between the nodes, and the coarse mesh was off by
+#: several times its error on the muscles it resolves.
 MAX_END_RESOLUTION = 4.0
 #: A mesh's elements are about ``L0 / (2 n_z)`` long and ``t0 / n_r`` thick (graded towards the
 #: caps): the longer and thinner the wall, the flatter they are and the further the mesh is from

@@ -988,7 +988,7 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     return verdict(label, r.summary, names, tolerance, choice, same,
                    fe[0] if fe else None, muscle_advice(
                        path, identified, r.calibration.path.name if r.calibration else "",
-                       muscle_runs, fit, command_below),
+                       muscle_runs, fit, command_below, _advises_rest_length(r)),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
                    _shows_dynamics(r))
 
@@ -1042,16 +1042,21 @@ def _advice_options(r: _Run) -> list[str]:
 
         options = (_identified_record(r.calibration) or {}).get("options") or []
         paths = [x["path"] for x in _identified_runs(r.calibration) if "path" in x]
-        # a run declared at its rest length that the calibration of its shortened runs does
-        # not carry over to is most often a table's first length already shortened (the
-        # published maps: docs/guide/threshold.md): identify fits the rest length too
-        if options and r.muscle.eps == 0.0 and all(
-                float(x.get("muscle", {}).get("L0_mm", -1.0)) == r.muscle.L0_mm
-                for x in _identified_runs(r.calibration)):
+        if _advises_rest_length(r):
             options = with_group(options, "L0")
         r.advice_options = (options_for_runs(options, list(dict.fromkeys(
             [*paths, str(r.run.path)]))) if options and paths else list(options))
     return r.advice_options
+
+
+def _advises_rest_length(r: _Run) -> bool:
+    """Whether the identify advice for ``r`` fits the rest length: a run declared at its rest
+    length that the calibration of its shortened runs (at that rest length) does not carry
+    over to may be a table's first length already shortened (the DMSP-20-300's published map,
+    docs/guide/threshold.md), or a threshold at rest length no model has (the DMSP-10-250's)."""
+    identified = _identified_runs(r.calibration)
+    return bool(identified) and r.muscle.eps == 0.0 and all(
+        float(x.get("muscle", {}).get("L0_mm", -1.0)) == r.muscle.L0_mm for x in identified)
 
 
 def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> dict[int, str]:

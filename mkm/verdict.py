@@ -105,7 +105,7 @@ def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET,
 
 def muscle_advice(run_path: str, identified: list[dict] | None = None,
                   calibration_name: str = "", muscle_runs=(), fit: dict | None = None,
-                  command_below: bool = False) -> str:
+                  command_below: bool = False, at_rest_length: bool = False) -> str:
     """What the FE model's distance from a run, beyond auto's bound, tells a reader: identify
     the muscle, from ``muscle_runs`` (its runs at hand, this one among them); or, where the
     report's calibration was identified (``identified``: its runs as :mod:`mkm.identify`
@@ -116,7 +116,10 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
     that fitted its runs within their noise did so with braid friction and creep, which the
     report's static models lack, and that is what the distance is then. ``command_below``:
     the identify command (:func:`advice_command`) is said once below the verdicts of the runs
-    it concerns, so this one refers to it rather than repeating every run's path."""
+    it concerns, so this one refers to it rather than repeating every run's path.
+    ``at_rest_length``: the run is declared at its rest length and the command fits that length
+    (a table's first length may be shortened already); where that fit is a misfit too (the
+    published DMSP-10-250's), the calibration of the shortened runs is the one to keep."""
     command = advice_command(run_path, identified, muscle_runs, (fit or {}).get("options", ()))
     shown = "the mkm identify command below" if command_below else f"`{command}`"
     if not identified:
@@ -143,9 +146,15 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
                 "the model does not fit them all with one muscle (the identification's misfit "
                 "notes say where)")
     at = ", ".join(f"{r['muscle']['eps']:g}" for r in identified if "muscle" in r)
-    return (f"which points to the muscle, not the model: the calibration{name}, identified on "
-            f"the runs at eps {at}, does not carry over to this run; identify with it among "
-            f"them ({shown})")
+    head = (f"which points to the muscle, not the model: the calibration{name}, identified on "
+            f"the runs at eps {at}, does not carry over to this run")
+    if at_rest_length:
+        return (f"{head} at its declared rest length; a table's first length may be shortened "
+                f"already: identify with it among them, its rest length fitted ({shown}); if "
+                "identify calls that a misfit too (as on the DMSP-10-250's published map), no "
+                "model has this run's threshold at rest length: keep the calibration for the "
+                "shortened runs")
+    return f"{head}; identify with it among them ({shown})"
 
 
 def advice_command(run_path: str, identified: list[dict] | None = None,

@@ -28,14 +28,19 @@ RESCALE_THETA_REF_DEG = 30.0
 RESCALE_ANGLE_GROUPS = 3
 
 
+def informative(error, std) -> np.ndarray:
+    """The points :func:`coverage` counts: those where the model or the FE has a force (points
+    both say are exactly zero, below the threshold, say nothing of the std)."""
+    return (np.abs(np.asarray(error)) > 0) | (np.asarray(std) > 0)
+
+
 def coverage(error, std, k: float) -> float:
-    """Fraction of points with ``|error| <= k std`` among those where the model or the FE has
-    a force (points both say are exactly zero, below the threshold, say nothing of the std)."""
+    """Fraction of points with ``|error| <= k std`` among the :func:`informative` ones."""
     error, std = np.abs(np.asarray(error)), np.asarray(std)
-    informative = (error > 0) | (std > 0)
-    if not informative.any():
+    counted = informative(error, std)
+    if not counted.any():
         return float("nan")
-    return float(np.mean(error[informative] <= k * std[informative]))
+    return float(np.mean(error[counted] <= k * std[counted]))
 
 
 def coverage_fit(error, std_of) -> tuple[float, float]:

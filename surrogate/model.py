@@ -383,7 +383,8 @@ class SurrogateForceModel(ForceModel):
             from sklearn import config_context
 
             # validate_inputs has checked the inputs; with matrices this small BLAS threads
-            # only contend (a GP's 33 points took 8 ms threaded on a busy machine, 1.2 on one)
+            # only contend (a GP's few points took several times as long threaded on a busy
+            # machine as on one thread)
             with config_context(assume_finite=True), _blas().limit(limits=1):
                 result = self.estimator.predict(X, **({"return_std": True} if self.has_std
                                                       else {}))

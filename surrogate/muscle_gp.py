@@ -31,7 +31,7 @@ from mkm.surrogate.muscle_predictor import (
 def muscle_slopes(P, y, groups, threshold=None):
     """Slope ``A`` [N/bar] and threshold ``P*`` [bar] of each muscle's sweep, and the lines' error.
 
-    The FE force of one muscle is threshold-linear in the pressure to within 0.2 %: ``A`` and
+    The FE force of one muscle is close to threshold-linear in the pressure: ``A`` and
     ``P*`` are the least-squares line through the points above the threshold (two or more; with
     one, the line through it and the FE threshold ``threshold``). Returns ``(muscles, A, P*,
     linearity)``: NaN where a sweep has too few points above its threshold (a muscle whose
@@ -89,8 +89,8 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
 
     Held at ``eps``, a muscle with clamped caps is the closed form's mid-section model at a
     larger shortening: the ends, kept narrow by the caps, shorten less, so the middle shortens
-    more (the FE design: the threshold is the thick-wall one at ``k_P eps`` with ``k_P`` within
-    0.6 % of ``1 / (1 - 0.38 D_braid / L0)``; the slope at ``k_A eps``, ``k_A`` 1.04-1.8). Fit:
+    more (the FE design: the threshold is the thick-wall one at ``k_P eps``, ``k_P`` growing with
+    ``D_braid / L0``; the slope at ``k_A eps``, ``k_A`` above 1). Fit:
     each sweep's ``A`` and ``P*`` (:func:`muscle_slopes`) give ``k_A`` and ``k_P``
     (:func:`effective_eps_of_slope`, :func:`effective_eps_of_threshold`); two Gaussian
     processes (Matern 5/2, one length scale per input, a noise term) learn ``log k_A`` and
@@ -105,10 +105,10 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
     the threshold up (``linearity_bar_`` and ``bend_bar_``, measured on the training sweeps:
     :func:`~mkm.surrogate.muscle_predictor.linearity_floor_bar`). ``log k_A``, the slope
     process's mean, is the size of the end-effect correction (largest for short, wide muscles
-    at a low braid angle): the processes' own std misses that their errors grow with it (the
-    muscles at theta0 28-30 deg and L0 150-200 mm were off by 1.9 std RMS with one scale, the
-    others by 0.5-1.0), so errors pooled over the box were heavier-tailed than normal and no
-    scale gave both 68 % within 1 std and 95 % within 2. ``c`` (``std_scale_``) and ``beta``
+    at a low braid angle): the processes' own std misses that their errors grow with it (with
+    one scale the short muscles at low braid angles were off by more std than the others), so
+    errors pooled over the box were heavier-tailed than normal and no single scale can hold
+    both 68 % within 1 std and 95 % within 2. ``c`` (``std_scale_``) and ``beta``
     (``std_power_``; ``m_ref``, ``std_reference_``, the median ``log k_A`` of the points) are
     fitted (:func:`coverage_fit`) to leave-one-muscle-out errors at fit time, then by
     :meth:`calibrate_std` to muscles the fit did not see; last, a factor of the whole std
@@ -276,11 +276,11 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
         99.73 % of their points, over all of them and in each third by braid angle
         (:func:`~mkm.surrogate.coverage.rescale_fit`). The power of the slope's effective
         shortening ``k_A eps``: with the std calibrated on ``log k_A`` alone, the errors of the
-        largest eps (0.15-0.2) fell outside 1 std twice as often as those below 0.04. The power
-        of the braid angle: over the practical range (15-40 deg) the held-out errors below
-        19 deg were 1.7 std at the 68th percentile and those above 34 deg 0.5 std (the braid's
-        slope falls fastest near its lock at low angles), so the pooled errors had heavy tails
-        made of the low angles. Returns ``self``."""
+        largest eps fell outside 1 std more often than those of the smallest. The power of the
+        braid angle: over the practical range the held-out errors at the lowest angles were the
+        largest for their std and those at the highest the smallest (the braid's slope falls
+        fastest near its lock at low angles), so the pooled errors had heavy tails made of the
+        low angles. Returns ``self``."""
         check_is_fitted(self)
         X = validate_data(self, X, reset=False)
         force, std, shortening, theta0 = self.predictor().std_parts(X)

@@ -72,8 +72,8 @@ class RangeThresholdGP(MuscleThresholdGP):
 
     def __init__(self, inputs=("pressure_bar", "D0_mm", "t0_mm", "eps"), fixed=None,
                  restarts: int = 1, random_state: int = 0):
-        # one optimiser restart: on the 990 muscles of its dataset three gave the same fresh
-        # errors (worst and median within 0.5 %) in 3.5 times the time (150 s against 43 s)
+        # one optimiser restart: on its dataset three gave the same fresh errors (worst and
+        # median) in several times the time
         super().__init__(inputs, fixed, restarts, random_state)
 
     def _muscle(self, X):

@@ -6,7 +6,7 @@ strain:
 
 * the silicone wall is a fully incompressible Mooney-Rivlin solid in a Taylor-Hood P2/P1 mixed
   displacement-pressure formulation: the pressure field enforces ``J = 1`` without a bulk
-  modulus, so the wall does not lock (P1 displacement-only locked in a prototype, +27 % in the
+  modulus, so the wall does not lock (P1 displacement-only locked in a prototype, raising the
   threshold pressure) and it is the constitutive model of the paper's ANSYS runs (C10, C01, no
   D1);
 * the braid is two inextensible fibre families at +-theta0 bonded to the outer surface,
@@ -766,7 +766,8 @@ class Axisym(CalibratedTheta0, ForceModel):
     L0_mm : float
         Length at rest [mm]; 282 as in the paper.
     mesh : {"coarse", "medium", "fine"}
-        Mesh level; ``medium`` is converged to 1 % of ``fine`` in force (see README).
+        Mesh level; how close each is to ``fine``: ``mkm fem convergence``
+        (docs/measured/mesh_convergence.csv).
     C10_MPa, C01_MPa : float, optional
         Mooney-Rivlin constants of the wall [MPa]; default Silastic S (C10 = 0.0694 MPa,
         C01 = 0.0628 MPa).

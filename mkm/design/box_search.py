@@ -34,7 +34,8 @@ from mkm.surrogate import kinds
 #: Search resolution: a coarse grid of 0.5 mm in D0 and 0.1 mm in t0 (the paper's box, 20 x
 #: 2 mm: 41 x 21 = 861 candidates per family), refined to 0.05 mm and 0.01 mm over the coarse
 #: cells around the best ``SEEDS`` coarse candidates (441 candidates each); 5 values across a
-#: range of L0 or theta0. A Gaussian-process surrogate takes ~25 us a point with its std.
+#: range of L0 or theta0. A Gaussian-process surrogate answers each point with its std in
+#: microseconds (benchmarks/bench_design.py times the search: docs/measured/design.json).
 COARSE_STEPS, D0_STEP_MM, T0_STEP_MM, SEEDS, AXIS_VALUES = (0.5, 0.1), 0.05, 0.01, 8, 5
 #: Verified designs differ by at least 5 % of the box span in some searched parameter.
 MIN_SEPARATION = 0.05

@@ -759,8 +759,8 @@ def _assumed_ratio_terms(source, runs, best, rubber) -> dict:
     (the free fit's 95 % interval where there is one) within the practical range, as one-sided
     terms (each parameter's shift and C01's share's). At the runs' own eps the refits reproduce
     them; at another eps they can part (the threshold's rise with eps bends with the ratio: a
-    C01 = 0 rubber fitted at Silastic S's ratio on eps 0 and 12.2 % starts pulling 0.01 bar late
-    at 6 %), and the band holds that. The parameters' intervals are the assumption's (the note
+    C01 = 0 rubber fitted at Silastic S's ratio on eps 0 and 12.2 % starts pulling late at
+    6 %), and the band holds that. The parameters' intervals are the assumption's (the note
     says so)."""
     low, high = PRACTICAL_RANGE.C01_per_C10
     if "ratio_ci" in rubber:

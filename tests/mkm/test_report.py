@@ -727,10 +727,11 @@ def test_the_identify_advice_for_tables_names_only_what_tables_can_identify(tmp_
 
 def test_the_identify_advice_for_a_run_at_its_rest_length_fits_the_rest_length(tmp_path):
     """The published DMSP-10-250 identified on its eps 0.064 and 0.184 lengths: the report's
-    advice for its rest-length run, which the calibration does not carry over to, was to
-    identify with it among them as before (chi2/nu 138, published.md); a table's first length
-    is most often already shortened, and with the rest length fitted the same runs give
-    chi2/nu 15 (the rest length 251.5 mm). Other lengths keep the options as they were."""
+    advice for its rest-length run, which the calibration does not carry over to, fits the
+    rest length with it among them (a table's first length is often shortened already). On
+    this map that is a misfit too (published.md: the threshold at rest length that no rung
+    has), so the advice says what then: keep the calibration of the shortened runs, which fits
+    them within their noise. Other lengths keep the options as they were."""
     import shlex
 
     from mkm.bench.exchange import import_table, parse_accuracy
@@ -755,9 +756,40 @@ def test_the_identify_advice_for_a_run_at_its_rest_length_fits_the_rest_length(t
                  cache_dir=None, tolerance=0.02, surrogate_section=False,
                  calibration=Calibration.load(tmp_path / "id" / "calibration.json"),
                  notify=said.append)
-    commands = [shlex.split(line.split("`")[1]) for line in said if "`mkm identify" in line]
-    assert {c[4]: c[c.index("--params") + 1] for c in commands} == {
+    advised = {shlex.split(line.split("`")[1])[4]: line for line in said
+               if "`mkm identify" in line}
+    commands = {run: shlex.split(line.split("`")[1]) for run, line in advised.items()}
+    assert {run: c[c.index("--params") + 1] for run, c in commands.items()} == {
         str(rest): "theta0,rubber,offset,L0", str(other): "theta0,rubber,offset"}, said
+    assert ("if identify calls that a misfit too (as on the DMSP-10-250's published map), no "
+            "model has this run's threshold at rest length: keep the calibration for the "
+            "shortened runs.") in advised[str(rest)]
+    assert "keep the calibration" not in advised[str(other)]
+
+
+@pytest.mark.slow  # identify as a user runs it: the range surrogate's search, an FE check
+def test_on_the_published_dmsp_10_the_rest_length_advice_misfits_and_the_shortened_runs_fit(
+        tmp_path):
+    """What the rest-length advice above says of the DMSP-10-250, as a user runs identify
+    (published.md's commands): its eps 0.064 and 0.184 lengths fit within their declared
+    accuracy; with its rest-length run among them and the rest length fitted, as the advice
+    gives it, the fit is a misfit, so keeping the first calibration is what works."""
+    from mkm.bench.exchange import import_table, parse_accuracy
+    from mkm.identify.procedure import identify
+    from mkm.paths import published_table
+
+    imported = import_table(published_table("martens_boblan_2017_forcemaps.csv"),
+                            tmp_path / "runs", {"id": "dmsp-10", "D0_mm": 10.0, "t0_mm": 1.5,
+                                                "L0_mm": None, "eps": None},
+                            select="Festo DMSP-10-250",
+                            accuracy=parse_accuracy("force=0.5N+1%,pressure=0.01bar"))
+    rest, fitted = imported[0].path, [imported[1].path, imported[3].path]
+    first = identify(fitted, cache_dir=None)
+    assert first.goodness.judged and not first.goodness.misfit
+    advised = identify([*fitted, rest], params="theta0,rubber,offset,L0", cache_dir=None)
+    assert advised.goodness.judged and advised.goodness.misfit
+    # published.md: "leaves a misfit on every run, the shortened ones included"
+    assert {b.run for b in advised.goodness.misfit} == {Path(p).name for p in [*fitted, rest]}
 
 
 def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument():
