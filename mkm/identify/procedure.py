@@ -213,9 +213,7 @@ def supported_groups(groups, runs) -> tuple[tuple[str, ...], list[str]]:
         notes.append("friction not fitted: no run has both a rising and a falling branch")
     if "creep" in kept and "creep" not in shown:
         kept.remove("creep")
-        notes.append("creep not fitted: no run has timed holds (a step table or a ramp); the "
-                     f"intervals hold a creep of up to {100 * UNTIMED_CREEP_FRACTION:g} % of the "
-                     "force in them (the model-form term creep)")
+        notes.append("creep not fitted: no run has timed holds (a step table or a ramp)")
     if "offset" in kept and not min(r.monitor_offset_bound_bar for r in runs) > 0:
         kept.remove("offset")
         notes.append("the pressure monitor's offset not fitted: a run declares it exact")
@@ -387,6 +385,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if terms is None:
         terms = model_form_terms(source, fe, runs, best, braid)
     boot = extend(boot, best, terms)
+    if "shift" in terms.get("creep", {}):
+        notes.append(f"the intervals hold a creep of up to {100 * UNTIMED_CREEP_FRACTION:g} % "
+                     "of the force, which runs without timed holds cannot fit and which pulls "
+                     "the braid angle up (the model-form term creep)")
     notes += [line for line in (fitness.line(), fitness.zero_line()) if line]
     notes += _rest_length_hint(runs, fe, best, fitness, groups)
     notes += _identifiability(runs, best, boot)
