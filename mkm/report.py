@@ -980,17 +980,23 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     verdicts (:func:`_advice_lines`)."""
     label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
     choice, same = _auto_pick(r, names, tolerance)
-    fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
-          if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
     path, identified, muscle_runs = _advice_arguments(r, runs)
     record = _identified_record(r.calibration)
     fit = {**record, "options": _advice_options(r)} if record else None
     return verdict(label, r.summary, names, tolerance, choice, same,
-                   fe[0] if fe else None, muscle_advice(
+                   _fe_err(r, names), muscle_advice(
                        path, identified, r.calibration.path.name if r.calibration else "",
                        muscle_runs, fit, command_below),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
                    _shows_dynamics(r))
+
+
+def _fe_err(r: _Run, names: dict) -> tuple[str, float] | None:
+    """``(name, largest |Err%|)`` of the report's first FE model on the run: the measurement's
+    distance from the FE model; None without one."""
+    return next(((names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
+                 if parse_spec(s["model"]).entry.family == "FE"
+                 and np.isfinite(s["max_abs_err_pct"])), None)
 
 
 def _shows_dynamics(r: _Run) -> bool:
@@ -1062,7 +1068,7 @@ def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> 
     for r in runs:
         command = advice_command(*_advice_arguments(r, runs), _advice_options(r))
         if command and gives_advice(r.summary, names, tolerance,
-                                    *_auto_pick(r, names, tolerance)):
+                                    *_auto_pick(r, names, tolerance), _fe_err(r, names)):
             commands[r.k] = command
     said = list(commands.values())
     return {k: c for k, c in commands.items() if said.count(c) > 1}

@@ -179,13 +179,17 @@ def _auto_err(row: dict, summary: list[dict], names: dict[str, str], auto: AutoP
 
 
 def gives_advice(summary: list[dict], names: dict[str, str], tolerance: float | None,
-                 auto: AutoPick | None = None, auto_same: bool = False) -> bool:
+                 auto: AutoPick | None = None, auto_same: bool = False,
+                 fe_err: tuple[str, float] | None = None) -> bool:
     """Whether :func:`verdict` (same arguments) says the muscle advice: auto's pick is further
-    from the measurement than the tolerance."""
+    from the measurement than the tolerance; where its pick is not among the report's models,
+    the FE model's distance ``fe_err`` less auto's bound against it is as far as it can be."""
     row = recommend(summary, tolerance)[0]
     if row is None or auto is None or tolerance is None:
         return False
     auto_err = _auto_err(row, summary, names, auto, auto_same)
+    if not math.isfinite(auto_err) and fe_err is not None:
+        auto_err = fe_err[1] - auto.bound_pct
     return math.isfinite(auto_err) and auto_err > 100 * tolerance
 
 
@@ -238,10 +242,11 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     which = "it too" if auto_same else f"{auto.name} instead"
     why = (f" auto at {tol} picks {which}, bounding its error against the FE model "
            f"({auto.bound_pct:.2f} %), not against this measurement")
-    if gives_advice(summary, names, tolerance, auto, auto_same):
+    if gives_advice(summary, names, tolerance, auto, auto_same, fe_err):
         gap = (f"{fe_err[1]:.2f} %" if fe_err is not None
                else f"at least {max(auto_err - auto.bound_pct, 0.0):.2f} %")
-        off = "" if auto_same else f", from which it is {auto_err:.2f} % off"
+        off = ("" if auto_same else f", from which it is {auto_err:.2f} % off"
+               if math.isfinite(auto_err) else f" ({auto.name} is not among this report's models)")
         return text + (f"{why}{off}: the FE model itself is {gap} off, more than that bound, "
                        f"{advice or muscle_advice('RUN_DIR')}.")
     if auto_same:
