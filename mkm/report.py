@@ -982,7 +982,7 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     choice, same = _auto_pick(r, names, tolerance)
     path, identified, muscle_runs = _advice_arguments(r, runs)
     record = _identified_record(r.calibration)
-    fit = {**record, "options": _advice_options(r)} if record else None
+    fit = {**record, "options": _advice_options(r, runs)} if record else None
     return verdict(label, r.summary, names, tolerance, choice, same,
                    _fe_err(r, names), muscle_advice(
                        path, identified, r.calibration.path.name if r.calibration else "",
@@ -1039,24 +1039,31 @@ def _measurement(r: _Run) -> set[str]:
     return set(r.measurement)
 
 
-def _advice_options(r: _Run) -> list[str]:
+def _advice_options(r: _Run, runs: list[_Run] = ()) -> list[str]:
     """The options the calibration's identification was asked with, for identifying it again
-    with ``r`` among its runs: a group none of those runs can show (friction and creep of
-    tables with one branch and no times) is not advised, as identify would not fit it."""
+    with ``r`` and the other runs of ``runs`` it did not see (:func:`mkm.verdict.advice_command`)
+    among its runs: a group none of those runs can show (friction and creep of tables with one
+    branch and no times) is not advised, as identify would not fit it."""
     if r.advice_options is None:
         from mkm.identify.procedure import options_for_runs, with_group
 
         options = (_identified_record(r.calibration) or {}).get("options") or []
-        paths = [x["path"] for x in _identified_runs(r.calibration) if "path" in x]
+        identified = _identified_runs(r.calibration)
+        paths = [x["path"] for x in identified if "path" in x]
+        seen = {x.get("run") for x in identified}
+        at_hand = {*_advice_arguments(r, runs)[2], str(r.run.path)}
+        unseen = [o for o in [*(o for o in runs if o is not r), r]
+                  if str(o.run.path) in at_hand and o.run.path.name not in seen]
         # a run declared at its rest length that the calibration of its shortened runs does
         # not carry over to is most often a table's first length already shortened (the
         # published maps: docs/guide/threshold.md): identify fits the rest length too
-        if options and r.muscle.eps == 0.0 and all(
-                float(x.get("muscle", {}).get("L0_mm", -1.0)) == r.muscle.L0_mm
-                for x in _identified_runs(r.calibration)):
+        if options and any(o.muscle.eps == 0.0 and all(
+                float(x.get("muscle", {}).get("L0_mm", -1.0)) == o.muscle.L0_mm
+                for x in identified) for o in unseen):
             options = with_group(options, "L0")
         r.advice_options = (options_for_runs(options, list(dict.fromkeys(
-            [*paths, str(r.run.path)]))) if options and paths else list(options))
+            [*paths, *(str(o.run.path) for o in unseen)]))) if options and paths
+            else list(options))
     return r.advice_options
 
 
@@ -1066,7 +1073,7 @@ def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> 
     for the verdicts rather than the same run paths again and again."""
     commands = {}
     for r in runs:
-        command = advice_command(*_advice_arguments(r, runs), _advice_options(r))
+        command = advice_command(*_advice_arguments(r, runs), _advice_options(r, runs))
         if command and gives_advice(r.summary, names, tolerance,
                                     *_auto_pick(r, names, tolerance), _fe_err(r, names)):
             commands[r.k] = command

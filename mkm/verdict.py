@@ -151,16 +151,19 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
 def advice_command(run_path: str, identified: list[dict] | None = None,
                    muscle_runs=(), options=()) -> str | None:
     """The ``mkm identify`` line :func:`muscle_advice` suggests for a run (same arguments):
-    the muscle's runs at hand, or the calibration's runs and this one with the options that
-    identification was asked with (``options``, its record's: a rest length or a gap it
-    fitted is fitted again); ``None`` for a run the calibration was identified on (identifying
-    it again would not help)."""
+    the muscle's runs at hand, or the calibration's runs and those at hand it did not see,
+    this one among them, with the options that identification was asked with (``options``,
+    its record's: a rest length or a gap it fitted is fitted again); ``None`` for a run the
+    calibration was identified on (identifying it again would not help)."""
     if not identified:
         return identify_command(*dict.fromkeys([*muscle_runs, run_path]))
-    if any(r.get("run") == Path(run_path).name for r in identified):
+    seen = {r.get("run") for r in identified}
+    if Path(run_path).name in seen:
         return None
-    return identify_command(*[r["path"] for r in identified if "path" in r], run_path,
-                            options=options)
+    # every run it did not see in one command: one per run would leave the others out
+    unseen = [p for p in muscle_runs if Path(p).name not in seen]
+    return identify_command(*[r["path"] for r in identified if "path" in r],
+                            *dict.fromkeys([*unseen, run_path]), options=options)
 
 
 def identify_command(*run_paths, options=()) -> str:

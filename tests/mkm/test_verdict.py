@@ -215,6 +215,21 @@ def test_a_verdict_can_refer_to_the_identify_command_said_once_for_several_runs(
     assert not gives_advice(ROWS, NAMES, 0.02, None, False)
 
 
+def test_the_runs_a_calibration_did_not_see_are_advised_one_identification_together():
+    """A 40 mm natural-rubber tube identified from its runs at eps 0 and 0.12, reported with
+    its runs at eps 0.05 and 0.20 too: the calibration carries over to neither, and each verdict
+    advised identify with the calibration's runs and itself alone, two commands that each left
+    the other run out; both advise the one command of all four now, said once below them."""
+    identified = [{"run": "r1", "path": "runs/r1", "muscle": {"eps": 0.0}},
+                  {"run": "r2", "path": "runs/r2", "muscle": {"eps": 0.12}}]
+    at_hand = ["elsewhere/r1", "elsewhere/r2", "runs/r3", "runs/r4"]
+    for run in ("runs/r3", "runs/r4"):
+        assert advice_command(run, identified, at_hand) == (
+            "mkm identify runs/r1 runs/r2 runs/r3 runs/r4")
+    # a run the calibration saw, under another path: identifying again would not help
+    assert advice_command("elsewhere/r2", identified, at_hand) is None
+
+
 def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
     # the published DMSP-10 at its shortest length: 0 N at every step, every model valid
     slack = [_row("eq2", math.nan, 1e-6), _row("thickwall", math.nan, 2e-5)]
