@@ -348,9 +348,10 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         built = spec
         model = _model(models, spec, built_for, r, bar)
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
-        if spec.text == REFERENCE_SPEC and not pred.valid.any():
-            # outside the default's box: the practical range's surrogate answers in its place
-            # where it covers the muscle, under the same name (as auto's reference does)
+        if spec.text == REFERENCE_SPEC and not pred.valid.all():
+            # outside the default's box at a step: the practical range's surrogate answers in
+            # its place where it covers every step, under the same name (as auto's reference
+            # does)
             wider = parse_spec(RANGE_SPEC)
             try:
                 candidate = _model(models, wider, built_for, r, bar)

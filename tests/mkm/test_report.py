@@ -628,6 +628,33 @@ def test_a_festo_class_muscle_gets_the_practical_range_surrogate_as_surrogate(tm
     assert provenance["model-surrogate"]["model"] == "surrogate-muscle-gp-range"
 
 
+@pytest.mark.slow  # the default and the practical range's surrogates
+def test_a_run_beyond_the_default_surrogates_pressures_gets_the_practical_ranges(tmp_path):
+    """A 40 mm tube in the default surrogate's box, run to 4 bar, above the box's 2.5 bar: the
+    default answered the two lower steps and flagged the top one, a surrogate scored on a part
+    of the run (its largest |Err%| leaving out the largest forces), while auto took the
+    practical range's as its reference for the run; that one answers as ``surrogate`` now."""
+    config = load_config(eps=0.1).replace(
+        muscle={"D0_mm": 40.0, "t0_mm": 2.0, "L0_mm": 300.0},
+        loadcell={"capacity_N": 4903.3, "sensitivity_N_per_V": 490.33},
+        regulator={"max_pressure_bar": 4.0, "full_scale_bar": 9.0,
+                   "monitor_accuracy_bar": 0.09},
+        safety={"vent_below_bar": 0.12},
+        sequence={"pressures_bar": (1.0, 2.0, 4.0), "preconditioning_cycles": 0,
+                  "down_sweep": False},
+        sim={"model": "thickwall"})
+    run = acquire(config, out_root=tmp_path).path
+    with pytest.warns(UserWarning, match=r"run 1: the default surrogate's box does not cover "
+                                         r"the muscle; the practical range's"):
+        path = build_report([run], parse_models("thickwall,surrogate"), out_dir=tmp_path / "r",
+                            cache_dir=None, tolerance=None, surrogate_section=False)
+    summary = pd.read_csv(path.parent / "summary.csv").set_index("model")
+    assert summary.loc["surrogate", "valid_points"] == summary.loc["thickwall", "valid_points"] \
+        == 3
+    provenance = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
+    assert provenance["model-surrogate"]["model"] == "surrogate-muscle-gp-range"
+
+
 def test_the_verdict_knows_the_runs_an_identified_calibration_saw(tmp_path):
     from mkm.fem.calibration import Calibration
     from mkm.report import _identified_runs
