@@ -95,11 +95,13 @@ class Truth:
     monitor_stuck_bar: float | None = None
 
     def check(self):
-        from mkm.fem.limits import check_value
+        from mkm.fem.limits import check_theta0, check_value
 
         for name in MODEL_FIELDS + GEOMETRY_FIELDS:
             if name != "braid" and getattr(self, name) is not None:
                 check_value(name, getattr(self, name), prefix="sim.truth.")
+        if self.theta0_deg is not None:
+            check_theta0(self.theta0_deg, prefix="sim.truth.")
         for name, (low, high, unit, _) in INSTRUMENT_BOUNDS.items():
             if getattr(self, name) is not None:
                 within(f"sim.truth.{name}", getattr(self, name), low, high, unit)

@@ -11,19 +11,9 @@ import numpy as np
 
 from mkm.fem.calibration import CalibratedTheta0, Calibration, calibrated
 from mkm.fem.interface import Domain, ForceModel
-from mkm.fem.limits import LOCKING_ANGLE_DEG, lock_eps
+from mkm.fem.limits import LOCKING_ANGLE_DEG, check_theta0, lock_eps
 
 BAR_TO_MPA = 0.1  # 1 bar = 0.1 MPa = 0.1 N/mm^2, so N/mm^2 * mm^2 = N
-
-
-def check_theta0(theta0_deg: float) -> float:
-    """``theta0_deg`` as a float, or ``ValueError`` unless 0 < theta0 < the locking angle."""
-    theta0 = float(theta0_deg)
-    if not 0.0 < theta0 < LOCKING_ANGLE_DEG:
-        raise ValueError(f"theta0_deg={theta0:g} is invalid: expected 0 < theta0 < "
-                         f"{LOCKING_ANGLE_DEG:.1f} deg (above the locking angle the muscle "
-                         "cannot pull)")
-    return theta0
 
 
 def chou_hannaford(pressure_bar, D_mm, eps, theta0_deg):

@@ -92,6 +92,17 @@ def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
 LOCKING_ANGLE_DEG = math.degrees(math.acos(1.0 / math.sqrt(3.0)))
 
 
+def check_theta0(theta0_deg: float, prefix: str = "") -> float:
+    """``theta0_deg`` as a float, or ``ValueError`` (naming it with ``prefix``) unless
+    0 < theta0 < :data:`LOCKING_ANGLE_DEG`: at or above it the muscle cannot pull."""
+    theta0 = float(theta0_deg)
+    if not 0.0 < theta0 < LOCKING_ANGLE_DEG:
+        raise ValueError(f"{prefix}theta0_deg={theta0:g} is invalid: expected 0 < theta0 < "
+                         f"{LOCKING_ANGLE_DEG:.1f} deg (above the locking angle the muscle "
+                         "cannot pull)")
+    return theta0
+
+
 def lock_eps(theta0_deg):
     """The shortening at which a braid of angle ``theta0_deg`` [deg] at rest locks [fraction]:
     ``1 - 1 / (sqrt(3) cos theta0)`` (the braid angle reaches :data:`LOCKING_ANGLE_DEG`); a

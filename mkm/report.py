@@ -348,9 +348,10 @@ def _score(r: _Run, cache_dir, prov: dict, bar, models: dict) -> _Run:
         built = spec
         model = _model(models, spec, built_for, r, bar)
         pred, cached = predict_steps(model, steps, muscle, cache_dir, _pressure_tolerance(meta))
-        if spec.text == REFERENCE_SPEC and not pred.valid.any():
-            # outside the default's box: the practical range's surrogate answers in its place
-            # where it covers the muscle, under the same name (as auto's reference does)
+        if spec.text == REFERENCE_SPEC and not pred.valid.all():
+            # outside the default's box at a step: the practical range's surrogate answers in
+            # its place where it covers every step, under the same name (as auto's reference
+            # does)
             wider = parse_spec(RANGE_SPEC)
             try:
                 candidate = _model(models, wider, built_for, r, bar)
@@ -980,17 +981,23 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     verdicts (:func:`_advice_lines`)."""
     label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
     choice, same = _auto_pick(r, names, tolerance)
-    fe = [(names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
-          if parse_spec(s["model"]).entry.family == "FE" and np.isfinite(s["max_abs_err_pct"])]
     path, identified, muscle_runs = _advice_arguments(r, runs)
     record = _identified_record(r.calibration)
-    fit = {**record, "options": _advice_options(r)} if record else None
+    fit = {**record, "options": _advice_options(r, runs)} if record else None
     return verdict(label, r.summary, names, tolerance, choice, same,
-                   fe[0] if fe else None, muscle_advice(
+                   _fe_err(r, names), muscle_advice(
                        path, identified, r.calibration.path.name if r.calibration else "",
                        muscle_runs, fit, command_below, _advises_rest_length(r)),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
                    _shows_dynamics(r))
+
+
+def _fe_err(r: _Run, names: dict) -> tuple[str, float] | None:
+    """``(name, largest |Err%|)`` of the report's first FE model on the run: the measurement's
+    distance from the FE model; None without one."""
+    return next(((names[s["model"]], s["max_abs_err_pct"]) for s in r.summary
+                 if parse_spec(s["model"]).entry.family == "FE"
+                 and np.isfinite(s["max_abs_err_pct"])), None)
 
 
 def _shows_dynamics(r: _Run) -> bool:
@@ -1033,19 +1040,26 @@ def _measurement(r: _Run) -> set[str]:
     return set(r.measurement)
 
 
-def _advice_options(r: _Run) -> list[str]:
+def _advice_options(r: _Run, runs: list[_Run] = ()) -> list[str]:
     """The options the calibration's identification was asked with, for identifying it again
-    with ``r`` among its runs: a group none of those runs can show (friction and creep of
-    tables with one branch and no times) is not advised, as identify would not fit it."""
+    with ``r`` and the other runs of ``runs`` it did not see (:func:`mkm.verdict.advice_command`)
+    among its runs: a group none of those runs can show (friction and creep of tables with one
+    branch and no times) is not advised, as identify would not fit it."""
     if r.advice_options is None:
         from mkm.identify.procedure import options_for_runs, with_group
 
         options = (_identified_record(r.calibration) or {}).get("options") or []
-        paths = [x["path"] for x in _identified_runs(r.calibration) if "path" in x]
-        if _advises_rest_length(r):
+        identified = _identified_runs(r.calibration)
+        paths = [x["path"] for x in identified if "path" in x]
+        seen = {x.get("run") for x in identified}
+        at_hand = {*_advice_arguments(r, runs)[2], str(r.run.path)}
+        unseen = [o for o in [*(o for o in runs if o is not r), r]
+                  if str(o.run.path) in at_hand and o.run.path.name not in seen]
+        if options and any(_advises_rest_length(o) for o in unseen):
             options = with_group(options, "L0")
         r.advice_options = (options_for_runs(options, list(dict.fromkeys(
-            [*paths, str(r.run.path)]))) if options and paths else list(options))
+            [*paths, *(str(o.run.path) for o in unseen)]))) if options and paths
+            else list(options))
     return r.advice_options
 
 
@@ -1065,9 +1079,9 @@ def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> 
     for the verdicts rather than the same run paths again and again."""
     commands = {}
     for r in runs:
-        command = advice_command(*_advice_arguments(r, runs), _advice_options(r))
+        command = advice_command(*_advice_arguments(r, runs), _advice_options(r, runs))
         if command and gives_advice(r.summary, names, tolerance,
-                                    *_auto_pick(r, names, tolerance)):
+                                    *_auto_pick(r, names, tolerance), _fe_err(r, names)):
             commands[r.k] = command
     said = list(commands.values())
     return {k: c for k, c in commands.items() if said.count(c) > 1}

@@ -53,6 +53,7 @@ from mkm.progress import progress_bar
 from mkm.registry import parse_spec
 from mkm.scoring import error_summary, pareto_front
 from mkm.surrogate import kinds as kind_registry
+from mkm.verdict import format_seconds
 
 STUDY_PRESSURES = tuple(np.round(np.arange(0.0, 2.5001, 0.25), 2))  # the paper's test sweep
 # name, D0 [mm], t0 [mm], eps, role. I-III: the paper's test muscles (section 3.3); H1-H8 a box
@@ -477,30 +478,36 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
     path = out / "study.html"
     path.write_text(html_page("Speed against accuracy, and where methods fail", body),
                     encoding="utf-8")
-    for line in verdict_lines(summary, config.reference):
+    for line in verdict_lines(summary, config.reference,
+                              specs={p.label: p.spec for p in predictors}):
         notify(line)
     return path
 
 
 def verdict_lines(summary: pd.DataFrame, reference: str,
-                  tolerance: float = DEFAULT_TOLERANCE) -> list[str]:
+                  tolerance: float = DEFAULT_TOLERANCE,
+                  specs: dict[str, str] | None = None) -> list[str]:
     """What the study tells a user first: the fastest predictor within ``tolerance`` (auto's
-    default) of the reference on every study muscle, valid at every point, and the Pareto
-    front."""
+    default) of the reference on every study muscle, valid at every point, with the spec that
+    asks for it (``specs``: predictor -> spec, where it has one), and the Pareto front."""
     within = summary[(summary["valid_share"] >= 1.0)
                      & (summary["max_abs_err_pct"] <= 100 * tolerance)]
     best = within.sort_values("seconds_per_point").iloc[0]
+    spec = (specs or {}).get(best["predictor"])
+    # the study's names are no spec: what --model takes is said with it
+    asked = f"--model {spec}, " if spec and spec != best["predictor"] else ""
     return [f"the fastest predictor within {100 * tolerance:g} % of {reference} on every study "
-            f"muscle: {best['predictor']} ({best['seconds_per_point']:.2g} s per force, "
-            f"largest |Err%| {best['max_abs_err_pct']:.3g} %)",
+            f"muscle: {best['predictor']} ({asked}"
+            f"{format_seconds(best['seconds_per_point'])} per force, largest |Err%| "
+            f"{best['max_abs_err_pct']:.3g} %)",
             f"Pareto front (fastest first): {pareto_text(summary)}"]
 
 
 def pareto_text(summary: pd.DataFrame) -> str:
     """The front in words: each member with its cost and largest error."""
     front = summary[summary["pareto"]].sort_values("seconds_per_point")
-    return "; ".join(f"{row.predictor} ({row.seconds_per_point:.2g} s per force, largest "
-                     f"|Err%| {row.max_abs_err_pct:.3g} %)" for row in front.itertuples())
+    return "; ".join(f"{row.predictor} ({format_seconds(row.seconds_per_point)} per force, "
+                     f"largest |Err%| {row.max_abs_err_pct:.3g} %)" for row in front.itertuples())
 
 
 def readable_summary(summary: pd.DataFrame) -> pd.DataFrame:

@@ -160,16 +160,19 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
 def advice_command(run_path: str, identified: list[dict] | None = None,
                    muscle_runs=(), options=()) -> str | None:
     """The ``mkm identify`` line :func:`muscle_advice` suggests for a run (same arguments):
-    the muscle's runs at hand, or the calibration's runs and this one with the options that
-    identification was asked with (``options``, its record's: a rest length or a gap it
-    fitted is fitted again); ``None`` for a run the calibration was identified on (identifying
-    it again would not help)."""
+    the muscle's runs at hand, or the calibration's runs and those at hand it did not see,
+    this one among them, with the options that identification was asked with (``options``,
+    its record's: a rest length or a gap it fitted is fitted again); ``None`` for a run the
+    calibration was identified on (identifying it again would not help)."""
     if not identified:
         return identify_command(*dict.fromkeys([*muscle_runs, run_path]))
-    if any(r.get("run") == Path(run_path).name for r in identified):
+    seen = {r.get("run") for r in identified}
+    if Path(run_path).name in seen:
         return None
-    return identify_command(*[r["path"] for r in identified if "path" in r], run_path,
-                            options=options)
+    # every run it did not see in one command: one per run would leave the others out
+    unseen = [p for p in muscle_runs if Path(p).name not in seen]
+    return identify_command(*[r["path"] for r in identified if "path" in r],
+                            *dict.fromkeys([*unseen, run_path]), options=options)
 
 
 def identify_command(*run_paths, options=()) -> str:
@@ -188,13 +191,17 @@ def _auto_err(row: dict, summary: list[dict], names: dict[str, str], auto: AutoP
 
 
 def gives_advice(summary: list[dict], names: dict[str, str], tolerance: float | None,
-                 auto: AutoPick | None = None, auto_same: bool = False) -> bool:
+                 auto: AutoPick | None = None, auto_same: bool = False,
+                 fe_err: tuple[str, float] | None = None) -> bool:
     """Whether :func:`verdict` (same arguments) says the muscle advice: auto's pick is further
-    from the measurement than the tolerance."""
+    from the measurement than the tolerance; where its pick is not among the report's models,
+    the FE model's distance ``fe_err`` less auto's bound against it is as far as it can be."""
     row = recommend(summary, tolerance)[0]
     if row is None or auto is None or tolerance is None:
         return False
     auto_err = _auto_err(row, summary, names, auto, auto_same)
+    if not math.isfinite(auto_err) and fe_err is not None:
+        auto_err = fe_err[1] - auto.bound_pct
     return math.isfinite(auto_err) and auto_err > 100 * tolerance
 
 
@@ -247,10 +254,11 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     which = "it too" if auto_same else f"{auto.name} instead"
     why = (f" auto at {tol} picks {which}, bounding its error against the FE model "
            f"({auto.bound_pct:.2f} %), not against this measurement")
-    if gives_advice(summary, names, tolerance, auto, auto_same):
+    if gives_advice(summary, names, tolerance, auto, auto_same, fe_err):
         gap = (f"{fe_err[1]:.2f} %" if fe_err is not None
                else f"at least {max(auto_err - auto.bound_pct, 0.0):.2f} %")
-        off = "" if auto_same else f", from which it is {auto_err:.2f} % off"
+        off = ("" if auto_same else f", from which it is {auto_err:.2f} % off"
+               if math.isfinite(auto_err) else f" ({auto.name} is not among this report's models)")
         return text + (f"{why}{off}: the FE model itself is {gap} off, more than that bound, "
                        f"{advice or muscle_advice('RUN_DIR')}.")
     if auto_same:

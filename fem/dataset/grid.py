@@ -1,6 +1,7 @@
 """Dataset grids: values per parameter, from TOML (``fem/dataset/grids/paper.toml`` is Table 1).
 
-Per parameter a number, a list of numbers or a ``"start:stop:step"`` range (stop included).
+Per parameter a number, a list of numbers or a ``"start:stop:step"`` range (stop included where
+the steps reach it, never exceeded).
 """
 
 from __future__ import annotations

@@ -120,7 +120,8 @@ SHARED_HELP = {
     "--no-progress": "no progress on stderr: neither the bar (on a terminal) nor the status "
                      "lines (in a log or a pipe); the summary line and the result's path stay",
     "--eps": "shortening ratio, a fraction (0.05) or a percentage (5%%)",
-    "--pressures": "pressures in bar: start:stop:step (stop included) or a comma list",
+    "--pressures": "pressures in bar: start:stop:step (stop included where the steps reach "
+                   "it, never exceeded: 0:8:3 is 0, 3, 6) or a comma list",
     "--D0": "inner tube diameter [mm]",
     "--t0": "wall thickness [mm]",
     "--L0": "muscle length at rest [mm]",

@@ -103,7 +103,8 @@ def parse_seed(text: str, name: str) -> int:
 
 
 def parse_range(text: str, name: str, unit: str | None = None) -> np.ndarray:
-    """``"start:stop:step"``, stop included (tolerant to round-off), as a float array; each
+    """``"start:stop:step"``, stop included where the steps reach it (tolerant to round-off),
+    never exceeded (``0:8:3`` is 0, 3, 6), as a float array; each
     number may carry a unit when ``unit`` is given (:func:`parse_number`)."""
     parts = text.strip().split(":")
     if len(parts) != 3:
@@ -161,7 +162,8 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
 
 def parse_shortenings(text: str, name: str = "--eps") -> float | np.ndarray:
     """One shortening ratio (:func:`parse_fraction`: ``0.05``, ``5%``), or several:
-    ``start:stop:step`` (stop included) or a comma list, each a fraction or a percentage
+    ``start:stop:step`` (stop included where the steps reach it) or a comma list, each a
+    fraction or a percentage
     (``0:0.2:0.05``, ``0%:20%:5%``, ``0.05,0.1``); a float for one, an array for several. A text
     that reads both as one value with a decimal comma and as a list is refused."""
     import numpy as np

@@ -81,6 +81,10 @@ def test_a_known_braid_angle_and_rubber_are_the_muscles_own():
     assert expected_force_N(c, 2.0) == pytest.approx(float(chou_hannaford(2.0, 30.0, 0.0, 25.0)))
     with pytest.raises(ValueError, match=r"muscle\.theta0_deg=95 is invalid"):
         parse_config(with_settings("[muscle]\ntheta0_deg = 95"))
+    # past the locking angle, though within the typo bounds: named where it is, as the others
+    with pytest.raises(ValueError, match=r": muscle\.theta0_deg=60 is invalid: expected 0 < "
+                                         r"theta0 < 54\.7 deg"):
+        parse_config(with_settings("[muscle]\ntheta0_deg = 60"))
     with pytest.raises(ValueError, match=r"muscle\.D0_tolerance_mm is not a field of a muscle"):
         parse_config(with_settings("[muscle]\nD0_tolerance_mm = 0.3"))
 

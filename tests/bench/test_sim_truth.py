@@ -56,6 +56,11 @@ def test_unset_truth_is_the_nominal_muscle(config):
 @pytest.mark.parametrize("truth, message", [
     ({"theta0_deg": 0.5}, "sim.truth.theta0_deg=0.5 is invalid: expected a braid angle"),
     ({"C10_MPa": -1.0}, "sim.truth.C10_MPa=-1 is invalid"),
+    # within the typo bounds but past the braid's locking angle: was refused later, by the FE
+    # model, as 'theta0_deg=60 is invalid', which left the reader to guess which of a config's
+    # three theta0_deg ([muscle], [muscle.tolerances], [sim.truth]) it was
+    ({"theta0_deg": 60.0}, r"^sim.truth.theta0_deg=60 is invalid: expected 0 < theta0 < 54.7 "
+                           r"deg \(above the locking angle the muscle cannot pull\)$"),
 ])
 def test_a_bad_truth_is_named(config, truth, message):
     with pytest.raises(ValueError, match=message):

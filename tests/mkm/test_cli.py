@@ -47,6 +47,18 @@ def test_pressures_range_and_list(text, expected, mkm_run):
     np.testing.assert_allclose(frame.pressure_bar, expected, rtol=0, atol=1e-12)
 
 
+def test_the_help_says_a_stop_off_the_steps_is_not_exceeded(mkm_run):
+    """--help said 'start:stop:step (stop included)', and 0:8:3 gave 0, 3 and 6 bar: the stop
+    is included where the steps reach it, never exceeded, as the help says now."""
+    code, out, _ = mkm_run(["fem", "solve", "--help"])
+    assert code == 0
+    said = " ".join(out.split())
+    assert ("start:stop:step (stop included where the steps reach it, never exceeded: 0:8:3 is "
+            "0, 3, 6)") in said
+    frame = solve_frame([*SOLVE, "--eps", "0.05", "--pressures", "0:8:3"], mkm_run)
+    assert frame.pressure_bar.tolist() == [0.0, 3.0, 6.0]
+
+
 def test_a_point_past_the_braid_lock_gets_no_force_but_its_reason(mkm_run):
     # Equation 2's -120 N at 1 bar was written as force_N, with only a warning on stderr
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",

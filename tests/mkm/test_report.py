@@ -628,6 +628,33 @@ def test_a_festo_class_muscle_gets_the_practical_range_surrogate_as_surrogate(tm
     assert provenance["model-surrogate"]["model"] == "surrogate-muscle-gp-range"
 
 
+@pytest.mark.slow  # the default and the practical range's surrogates
+def test_a_run_beyond_the_default_surrogates_pressures_gets_the_practical_ranges(tmp_path):
+    """A 40 mm tube in the default surrogate's box, run to 4 bar, above the box's 2.5 bar: the
+    default answered the two lower steps and flagged the top one, a surrogate scored on a part
+    of the run (its largest |Err%| leaving out the largest forces), while auto took the
+    practical range's as its reference for the run; that one answers as ``surrogate`` now."""
+    config = load_config(eps=0.1).replace(
+        muscle={"D0_mm": 40.0, "t0_mm": 2.0, "L0_mm": 300.0},
+        loadcell={"capacity_N": 4903.3, "sensitivity_N_per_V": 490.33},
+        regulator={"max_pressure_bar": 4.0, "full_scale_bar": 9.0,
+                   "monitor_accuracy_bar": 0.09},
+        safety={"vent_below_bar": 0.12},
+        sequence={"pressures_bar": (1.0, 2.0, 4.0), "preconditioning_cycles": 0,
+                  "down_sweep": False},
+        sim={"model": "thickwall"})
+    run = acquire(config, out_root=tmp_path).path
+    with pytest.warns(UserWarning, match=r"run 1: the default surrogate's box does not cover "
+                                         r"the muscle; the practical range's"):
+        path = build_report([run], parse_models("thickwall,surrogate"), out_dir=tmp_path / "r",
+                            cache_dir=None, tolerance=None, surrogate_section=False)
+    summary = pd.read_csv(path.parent / "summary.csv").set_index("model")
+    assert summary.loc["surrogate", "valid_points"] == summary.loc["thickwall", "valid_points"] \
+        == 3
+    provenance = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
+    assert provenance["model-surrogate"]["model"] == "surrogate-muscle-gp-range"
+
+
 def test_the_verdict_knows_the_runs_an_identified_calibration_saw(tmp_path):
     from mkm.fem.calibration import Calibration
     from mkm.report import _identified_runs
@@ -728,10 +755,11 @@ def test_the_identify_advice_for_tables_names_only_what_tables_can_identify(tmp_
 def test_the_identify_advice_for_a_run_at_its_rest_length_fits_the_rest_length(tmp_path):
     """The published DMSP-10-250 identified on its eps 0.064 and 0.184 lengths: the report's
     advice for its rest-length run, which the calibration does not carry over to, fits the
-    rest length with it among them (a table's first length is often shortened already). On
-    this map that is a misfit too (published.md: the threshold at rest length that no rung
-    has), so the advice says what then: keep the calibration of the shortened runs, which fits
-    them within their noise. Other lengths keep the options as they were."""
+    rest length with it among them (a table's first length is often shortened already), one
+    command for every run the calibration did not see, said once. On this map that is a misfit
+    too (published.md: the threshold at rest length that no rung has), so the rest-length run's
+    verdict says what then: keep the calibration of the shortened runs, which fits them within
+    their noise."""
     import shlex
 
     from mkm.bench.exchange import import_table, parse_accuracy
@@ -756,15 +784,18 @@ def test_the_identify_advice_for_a_run_at_its_rest_length_fits_the_rest_length(t
                  cache_dir=None, tolerance=0.02, surrogate_section=False,
                  calibration=Calibration.load(tmp_path / "id" / "calibration.json"),
                  notify=said.append)
-    advised = {shlex.split(line.split("`")[1])[4]: line for line in said
-               if "`mkm identify" in line}
-    commands = {run: shlex.split(line.split("`")[1]) for run, line in advised.items()}
-    assert {run: c[c.index("--params") + 1] for run, c in commands.items()} == {
-        str(rest): "theta0,rubber,offset,L0", str(other): "theta0,rubber,offset"}, said
-    assert ("if identify calls that a misfit too (as on the DMSP-10-250's published map), no "
-            "model has this run's threshold at rest length: keep the calibration for the "
-            "shortened runs.") in advised[str(rest)]
-    assert "keep the calibration" not in advised[str(other)]
+    # the calibration carries over to neither run: both are advised one identification with
+    # the rest length fitted, said once below their verdicts
+    commands = [shlex.split(line.split("writes: ")[1]) for line in said
+                if line.startswith("Runs 1, 2: identify")]
+    assert commands == [["mkm", "identify", *map(str, fitted), str(rest), str(other), "--params",
+                         "theta0,rubber,offset,L0", "--model", "axisym:mesh=coarse"]], said
+    verdicts = {k: next(line for line in said if line.startswith(f"Run {k} "))
+                for k in (1, 2)}
+    sentence = ("if identify calls that a misfit too (as on the DMSP-10-250's published map), no "
+                "model has this run's threshold at rest length: keep the calibration for the "
+                "shortened runs.")
+    assert [sentence in line for line in verdicts.values()].count(True) == 1, said
 
 
 @pytest.mark.slow  # identify as a user runs it: the range surrogate's search, an FE check

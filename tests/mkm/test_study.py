@@ -13,7 +13,15 @@ from mkm.core.records import file_sha256
 from mkm.fem.calibration import CALIBRATION_FILE, calibrated
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.interface import Prediction
-from mkm.study import StudyConfig, classify, pareto_front, registry_predictor, run_study
+from mkm.study import (
+    StudyConfig,
+    classify,
+    pareto_front,
+    registry_predictor,
+    run_study,
+    verdict_lines,
+)
+from mkm.verdict import format_seconds
 
 
 def _tiny_predictors(cache_dir):
@@ -54,13 +62,37 @@ def test_the_study_says_first_which_predictor_to_use(study):
     summary = pd.read_csv(out / "report" / "speed_accuracy.csv")
     within = summary[(summary["valid_share"] >= 1) & (summary["max_abs_err_pct"] <= 2.0)]
     best = within.sort_values("seconds_per_point").iloc[0]
+    # the study's name with the spec --model takes, the time as the report says it
     assert said[0] == (f"the fastest predictor within 2 % of axisym-coarse on every study "
-                       f"muscle: {best['predictor']} ({best['seconds_per_point']:.2g} s per "
-                       f"force, largest |Err%| {best['max_abs_err_pct']:.3g} %)")
+                       f"muscle: axisym-coarse (--model axisym:mesh=coarse, "
+                       f"{format_seconds(best['seconds_per_point'])} per force, largest |Err%| "
+                       f"{best['max_abs_err_pct']:.3g} %)")
     # thick-wall and Equation 2 are tens of % off the FE at muscle I: the reference alone is
     # within
     assert best["predictor"] == "axisym-coarse"
     assert said[1].startswith("Pareto front (fastest first): ") and len(said) == 2
+
+
+def test_the_studys_verdict_names_the_spec_that_asks_for_its_predictor():
+    """mkm study said 'surrogate-muscle-gp (4.4e-05 s per force, ...)': a name `--model`
+    refuses ('unknown model') and a time in scientific notation; the spec and the time as the
+    report says it now."""
+    summary = pd.DataFrame({
+        "predictor": ["eq2-inner", "surrogate-muscle-gp", "axisym-fine"],
+        "seconds_per_point": [2.0e-6, 4.4e-5, 0.096], "max_abs_err_pct": [107.0, 0.195, 0.0],
+        "valid_share": [1.0, 1.0, 1.0], "pareto": [True, True, True]})
+    specs = {"eq2-inner": "eq2:diameter=inner", "surrogate-muscle-gp": "surrogate",
+             "axisym-fine": "axisym:mesh=fine"}
+    first, front = verdict_lines(summary, "axisym-fine", specs=specs)
+    assert first == ("the fastest predictor within 2 % of axisym-fine on every study muscle: "
+                     "surrogate-muscle-gp (--model surrogate, 44.0 µs per force, largest |Err%| "
+                     "0.195 %)")
+    assert front == ("Pareto front (fastest first): eq2-inner (2.00 µs per force, largest "
+                     "|Err%| 107 %); surrogate-muscle-gp (44.0 µs per force, largest |Err%| "
+                     "0.195 %); axisym-fine (96.0 ms per force, largest |Err%| 0 %)")
+    # a study predictor no spec asks for: its name alone
+    assert verdict_lines(summary, "axisym-fine")[0].endswith(
+        "surrogate-muscle-gp (44.0 µs per force, largest |Err%| 0.195 %)")
 
 
 def test_study_writes_its_figures_tables_and_page(study):
