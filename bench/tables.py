@@ -154,6 +154,8 @@ def statistic(name: str) -> bool:
                                                   and _statistic_compound(words[0]))
 #: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
 CLOCK_NAMES = {"millis": "ms", "micros": "us"}
+#: the names of a clock of seconds since 1970, as loggers name it
+EPOCH_NAMES = ("unix time", "unix timestamp", "epoch", "epoch time", "posix time")
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
 #: space) and the toolkit's unit
 ROLES = {
@@ -168,9 +170,7 @@ ROLES = {
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
                   "zeit 1 standardmessrate",
-                  # seconds since 1970 as a logger names them
-                  "unix time", "unix timestamp", "epoch", "epoch time", "posix time",
-                  *CLOCK_NAMES), "s"),
+                  *EPOCH_NAMES, *CLOCK_NAMES), "s"),
     "direction": Role(("direction", "dir", "branch", "sweep", "richtung", "sens")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
@@ -1419,11 +1419,13 @@ ROW_COUNTER_MIN_ROWS = 3
 
 def counts_rows(table: RawTable, column: Column | None) -> bool:
     """Whether a time column is a logger's row counter, no clock: whole numbers stepping by
-    exactly 1 from 0 or 1 under a header without a unit, neither named by ``--columns`` nor
-    given one by ``--units``. Read as seconds they would be a 1 Hz clock, which the file does
-    not say (a 100 Hz record would last a hundred times as long)."""
+    exactly 1 (from 0, 1 or a count carried on, 100000) under a header without a unit that
+    names no clock of seconds since 1970, neither named by ``--columns`` nor given one by
+    ``--units``. Read as seconds they would be a 1 Hz clock, which the file does not say (a
+    100 Hz record would last a hundred times as long)."""
     if column is None or column.unit is not None or column.given or column.excel_days \
-            or column.parts or len(table.rows) < ROW_COUNTER_MIN_ROWS:
+            or column.parts or len(table.rows) < ROW_COUNTER_MIN_ROWS \
+            or parse_header(column.header)[0] in EPOCH_NAMES:
         return False
     raw = [row[column.index] for row in table.rows]
     values = _plain_numbers(raw, table.decimal)
@@ -1432,10 +1434,11 @@ def counts_rows(table: RawTable, column: Column | None) -> bool:
         read = [plain_number(cell, table.decimal) for cell in raw]
         rows = np.flatnonzero([v is not None for v in read])
         values = np.array([read[k] for k in rows], dtype=float)
-    # each number its row's: 0 or 1 on the first row, one more on each row below
-    return bool(2 * rows.size > len(raw) and rows.size >= ROW_COUNTER_MIN_ROWS
-                and values[0] - rows[0] in (0.0, 1.0)
-                and np.all(values - rows == values[0] - rows[0]))
+    # each number its row's: a whole number on the first row, one more on each row below
+    if 2 * rows.size <= len(raw) or rows.size < ROW_COUNTER_MIN_ROWS:
+        return False
+    start = values[0] - rows[0]
+    return bool(start >= 0 and start == round(start) and np.all(values - rows == start))
 
 
 def _header_named(table: RawTable, role: str, given: str) -> str:

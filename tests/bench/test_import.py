@@ -1056,11 +1056,12 @@ def test_a_column_of_date_times_by_a_name_unknown_is_read_or_named(header, tmp_p
                 f"time={header!r} reads the table as a time series") in err
 
 
-@pytest.mark.parametrize("first", [0, 1])
+@pytest.mark.parametrize("first", [0, 1, 100_000])
 def test_a_time_column_counting_the_rows_is_no_clock(first, tmp_path, mkm_cli):
     # a logger's 'Zeitpunkt' holding row numbers (1, 2, 3, ...) of a 100 Hz staircase: read as
     # seconds, a 1 Hz clock, its 1 s steps between holds became 100 s ramps and the record
-    # was binned as a ramp of 40 steps
+    # was binned as a ramp of 40 steps; so was a count carried on from an earlier record
+    # (100000, 100001, ...)
     t = np.arange(0.0, 60.0, 0.01)
     levels = [1.0, 2.0, 2.5]
     p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],

@@ -13,6 +13,7 @@ from mkm.bench.tables import (
     Recognition,
     check_channel_times,
     column_values,
+    counts_rows,
     directions,
     parse_assignments,
     parse_header,
@@ -455,6 +456,17 @@ def test_a_unix_time_column_is_the_time(header, tmp_path):
                         "1765011600.1,0.5,2\n")
     assert found["time"].header == header
     np.testing.assert_allclose(np.diff(column_values(table, found["time"])), [0.1], rtol=1e-6)
+
+
+def test_a_unix_time_column_of_whole_seconds_is_no_row_counter(tmp_path):
+    # a 1 Hz logger's seconds since 1970 step by 1 as a row counter carried on does: its name
+    # says they are seconds
+    table, found = _one(tmp_path, "unix_time,P [bar],F [N]\n1765011600,0,1\n"
+                        "1765011601,0.5,2\n1765011602,1,3\n")
+    assert not counts_rows(table, found["time"])
+    table, found = _one(tmp_path, "Zeitpunkt,P [bar],F [N]\n1765011600,0,1\n"
+                        "1765011601,0.5,2\n1765011602,1,3\n", "counter.csv")
+    assert counts_rows(table, found["time"])
 
 
 def test_a_quoted_comment_over_two_lines_is_one_cell(tmp_path):
