@@ -154,6 +154,9 @@ def statistic(name: str) -> bool:
                                                   and _statistic_compound(words[0]))
 #: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
 CLOCK_NAMES = {"millis": "ms", "micros": "us"}
+#: the count after which an Arduino's micros() and millis() start from 0 again (an unsigned
+#: 32-bit counter of microseconds or milliseconds: 4294.967296 s, about 71.6 min, and 49.7 days)
+CLOCK_WRAP = 2**32
 #: the names of a clock of seconds since 1970, as loggers name it
 EPOCH_NAMES = ("unix time", "unix timestamp", "epoch", "epoch time", "posix time")
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
@@ -1622,23 +1625,29 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         return column.scale.values(read)
     if unit is not None and role.unit is not None:
         values = (values * parse_unit(unit)).to(role.unit or "dimensionless").magnitude
-    return _past_midnight(values) if column.role == "time" else values
+    if column.role != "time":
+        return values
+    clock = CLOCK_NAMES.get(parse_header(column.header)[0])
+    if clock is not None:  # an Arduino's micros() or millis(): its 32-bit counter overflows
+        values = _carried_on(values, float((CLOCK_WRAP * parse_unit(clock)).to("s").magnitude))
+    return _carried_on(values, _DAY_S)
 
 
-def _past_midnight(seconds: np.ndarray) -> np.ndarray:
-    """A time column of seconds since midnight (a logger's time of day as a number, every
-    reading within one day) whose count restarts at midnight, the readings after it a day
-    later, as a clock reading's are: a step back that lands one sampling interval (or two) past
-    midnight. Any other step back stays one, refused where the time is read."""
-    if seconds.size < 3 or seconds.min() < 0 or seconds.max() >= _DAY_S:
+def _carried_on(seconds: np.ndarray, period_s: float) -> np.ndarray:
+    """A time column whose count restarts each ``period_s`` (seconds since midnight, a logger's
+    time of day as a number; an Arduino's micros(), every ~71.6 min), every reading within one
+    period, carried on across each restart, as a clock reading's are: a step back that lands
+    one sampling interval (or two) past the period's end. Any other step back stays one,
+    refused where the time is read."""
+    if seconds.size < 3 or seconds.min() < 0 or seconds.max() >= period_s:
         return seconds
     step = np.diff(seconds)
     forward = step[step > 0]
     if not forward.size:
         return seconds
-    across = step + _DAY_S  # the time from the last reading of the day to the first after it
+    across = step + period_s  # the time from the period's last reading to the first after it
     wrapped = (step < 0) & (across > 0) & (across <= 2 * float(np.median(forward)))
-    return seconds + _DAY_S * np.cumsum(np.r_[0.0, wrapped]) if wrapped.any() else seconds
+    return seconds + period_s * np.cumsum(np.r_[0.0, wrapped]) if wrapped.any() else seconds
 
 
 def _check_loop(table: RawTable, column: Column, current_mA: np.ndarray) -> None:

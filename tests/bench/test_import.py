@@ -715,6 +715,30 @@ def test_milliseconds_since_midnight_go_on_past_midnight(tmp_path, mkm_cli):
     assert code == 2 and "the time goes backwards by 29.9 s" in err
 
 
+def test_an_arduinos_micros_clock_goes_on_past_its_32_bit_overflow(tmp_path, mkm_cli):
+    # an Arduino logger's micros() counts microseconds in an unsigned 32-bit integer: after
+    # 2**32 us (4294.967296 s, ~71.6 min) it starts from 0 again; a long record crossing it
+    # was refused, "the time goes backwards by 4295 s"
+    t = np.arange(0.0, 60.0, 0.01)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    start_us = 2**32 - 30_000_000  # the counter overflows 30 s into the record
+    path = tmp_path / "arduino.csv"
+    pd.DataFrame({"micros": (start_us + np.round(t * 1e6).astype(np.int64)) % 2**32,
+                  "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "'micros' -> time [us -> s]" in err
+    np.testing.assert_allclose(run.samples["time_s"], start_us * 1e-6 + t, atol=1e-6)
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    # a jump back by anything else (another session appended) is still refused
+    pd.DataFrame({"micros": np.r_[t[:3000], t[:3000]] * 1e6, "Druck [bar]": p,
+                  "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(path, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and "cell A3002 (column 'micros'): the time goes backwards by 29.99 s" in err
+
+
 def test_a_time_series_without_a_step_names_the_option_that_makes_each_row_one(tmp_path,
                                                                                  mkm_cli):
     # a logger's holds written 1 s apart, too few samples for a plateau or a ramp's bins: was
