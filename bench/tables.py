@@ -1444,6 +1444,16 @@ def counts_rows(table: RawTable, column: Column | None) -> bool:
     return bool(start >= 0 and start == round(start) and np.all(values - rows == start))
 
 
+def timed_rows(table: RawTable, rate_hz: float) -> tuple[RawTable, Column]:
+    """``table`` with a time column of its own, row ``k`` at ``k / rate_hz`` seconds, and that
+    column: a logger's rows written at the rate the lab states (``--sample-rate``) without
+    their clock, or with a row counter (:func:`counts_rows`)."""
+    header = f"rows at {rate_hz:g} Hz"
+    rows = [[*row, k / rate_hz] for k, row in enumerate(table.rows)]
+    return (replace(table, header=[*table.header, header], rows=rows),
+            Column("time", len(table.header), header, "s", given=True))
+
+
 def _header_named(table: RawTable, role: str, given: str) -> str:
     """The header ``--columns ROLE=given`` names where no header is ``given`` itself: the one
     whose name without its unit is ``given`` (``Kanal 1`` for ``Kanal 1 [bar]``)."""
@@ -2239,6 +2249,8 @@ class Recognition:
     ignored: list[str] = field(default_factory=list)
     #: the header of a time column read as a row counter (:func:`counts_rows`), no clock
     row_counter: str | None = None
+    #: the rate its rows were logged at, as the lab states it (:func:`timed_rows`) [Hz]
+    sample_rate_hz: float | None = None
     _values: dict = field(default_factory=dict, repr=False)
 
     def values(self, role: str, optional: bool = False) -> np.ndarray:
@@ -2301,4 +2313,5 @@ class Recognition:
         return {**self.table.describe(),
                 "columns": {role: c.describe() for role, c in self.columns.items()},
                 "ignored_columns": self.ignored,
-                **({"row_counter_column": self.row_counter} if self.row_counter else {})}
+                **({"row_counter_column": self.row_counter} if self.row_counter else {}),
+                **({"sample_rate_hz": self.sample_rate_hz} if self.sample_rate_hz else {})}

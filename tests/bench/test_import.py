@@ -1141,6 +1141,76 @@ def test_a_row_counter_with_a_summary_or_a_blank_cell_is_no_clock(edit, tmp_path
     np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
 
 
+@pytest.mark.parametrize("counter", [False, True])
+def test_sample_rate_times_the_rows_of_a_table_without_a_clock(counter, tmp_path, mkm_cli):
+    # a logger's 100 Hz staircase saved without its clock (or with a row counter): its rows
+    # could only be taken as evenly spaced, untimed, and no option said the rate
+    t = np.arange(0.0, 60.0, 0.01)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    frame = pd.DataFrame({"Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)})
+    if counter:
+        frame.insert(0, "Zeitpunkt", np.arange(1, t.size + 1))
+    path = tmp_path / "logger.csv"
+    frame.to_csv(path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "100")
+    assert "'rows at 100 Hz' -> time [s]" in err
+    if counter:
+        assert ("column 'Zeitpunkt' counts the rows (whole numbers stepping by 1, no unit), no "
+                "clock: the rows timed at 100 Hz (--sample-rate)") in err
+    recorded = run.meta.imported_from
+    assert recorded["sample_rate_hz"] == 100.0 and recorded["shape"] == "staircase"
+    assert recorded["columns"]["time"]["column"] == "rows at 100 Hz"
+    # row k at k / 100 Hz: the file's own times, to steps.csv's 6 significant digits
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-9)
+    steps = run.steps
+    np.testing.assert_allclose(steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    # each hold timed in seconds: it starts where the ramp onto it enters its 0.03 bar band
+    # (1, 1 and 0.5 bar/s) and ends where the ramp off it leaves (1, 0.5 and 2.5 bar/s), to
+    # two samples
+    band_bar = 0.03
+    np.testing.assert_allclose(steps["start_s"], np.array([6.0, 17.0, 28.0])
+                               - band_bar / np.array([1.0, 1.0, 0.5]), atol=0.02)
+    np.testing.assert_allclose(steps["end_s"], np.array([16.0, 27.0, 38.0])
+                               + band_bar / np.array([1.0, 0.5, 2.5]), atol=0.02)
+    # a rate with its unit is converted
+    (fast,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "1kHz")
+    assert fast.meta.imported_from["sample_rate_hz"] == 1000.0
+    assert fast.samples["time_s"].iloc[-1] == pytest.approx((t.size - 1) / 1000.0)
+
+
+@pytest.mark.parametrize("rate, why", [
+    ("0", "--sample-rate 0 Hz is invalid: expected the rate the table's rows were logged at, a "
+          "finite number > 0 Hz"),
+    ("-100", "--sample-rate -100 Hz is invalid"),
+    ("inf", "--sample-rate='inf' is not a finite number: expected a number in Hz"),
+    ("5bar", "--sample-rate='5bar': 'bar' is not a unit of the same kind as Hz")])
+def test_a_sample_rate_that_is_none_is_refused(rate, why, tmp_path, mkm_cli):
+    path = tmp_path / "logger.csv"
+    path.write_text("Druck [bar];Kraft [N]\n0;0\n1;100\n2;210\n", encoding="utf-8")
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", f"--sample-rate={rate}",
+                              "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1 and why in err
+    assert not (tmp_path / "runs").exists()
+
+
+def test_a_sample_rate_for_a_table_with_a_clock_is_refused(tmp_path, mkm_cli):
+    # the file's clock and the rate given may disagree: neither is chosen unsaid
+    path = tmp_path / "logger.csv"
+    path.write_text("Zeit [s];Druck [bar];Kraft [N]\n0;0;0\n0.1;1;100\n0.2;2;210\n",
+                    encoding="utf-8")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--sample-rate", "10",
+                            "--out", str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("--sample-rate 10 Hz: logger.csv has a time column, 'Zeit [s]': expected the option "
+            "only for a table without one") in err
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--sample-rate", "10",
+                            "--join-by-time", str(path), "--out", str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert "--sample-rate 10 Hz with --join-by-time logger.csv: expected a time column" in err
+    assert not (tmp_path / "runs").exists()
+
+
 def test_a_row_counter_is_no_clock_to_join_by(tmp_path, mkm_cli):
     # the regulator's file counts its rows, the load cell's has seconds: refused as having no
     # time column among 'Zeitpunkt', ... (which it shows)
