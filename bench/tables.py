@@ -942,8 +942,15 @@ def parse_header(text: str) -> tuple[str, str | None]:
         return words[0].lower(), CLOCK_NAMES[words[0].lower()]
     for k, word in enumerate(words[1:], start=1):
         unit = None if word.lower() in NOT_UNITS else parse_unit(word)
-        if unit is not None and any(_fits(unit, r) for r in ROLES.values()):
-            return _name(words[:k] + words[k + 1:]), word
+        if unit is None or not any(_fits(unit, r) for r in ROLES.values()):
+            continue
+        rest = _name(words[:k] + words[k + 1:])
+        named = next((r for r in ROLES.values() if r.matches(rest)), None)
+        # F_min, Kraft_min: a statistic of the quantity the rest names ('min' a minute only
+        # where the rest names a time, t_min)
+        if word.lower() in STATISTIC_WORDS and named is not None and not _fits(unit, named):
+            continue
+        return rest, word
     return _name(words), None
 
 
@@ -1389,8 +1396,11 @@ def unread_columns(table: RawTable, role: str) -> list[tuple[str, str]]:
         name, unit = parse_header(header) if header else ("", None)
         why = ("a statistic" if statistic(name) else
                "the supply pressure, upstream of the regulator" if supply(name) else None)
-        if why and unit is not None and (parsed := parse_unit(unit)) is not None \
-                and _fits(parsed, ROLES[role]):
+        # without a unit, a statistic of the role's quantity by its name (F_min, p max)
+        of_role = ROLES[role].matches(" ".join(w for w in name.split()
+                                               if w not in STATISTIC_WORDS))
+        if why and (unit is None and of_role or unit is not None
+                    and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])):
             out.append((header, why))
     return out
 

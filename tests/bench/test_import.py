@@ -469,12 +469,13 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
     ("Fmax [N]", "force"), ("Kraft maximal [N]", "force"), ("Maximaldruck [bar]", "pressure"),
     ("pmax [bar]", "pressure"), ("Kraft maxi (N)", "force"), ("Spitzenwert Kraft [N]", "force"),
     ("Maximalwert Druck [bar]", "pressure"), ("Kraftspitze [N]", "force"),
-    ("Druckmaximum [bar]", "pressure")])
+    ("Druckmaximum [bar]", "pressure"), ("F_min", "force"), ("Kraft_min", "force"),
+    ("p_max", "pressure")])
 def test_a_statistic_compound_beside_the_reading_is_no_reading(header, role, tmp_path,
                                                               mkm_cli):
     # a German logger's running 'Maximalkraft' (the largest force so far) beside its 'Kraft':
     # its name ends as a force's does, so it was a second force column and the table was
-    # refused; alone, it was read as the force
+    # refused; alone, it was read as the force ('F_min' was refused as a force in minutes)
     force = thickwall_N(PRESSURES[:5], 0.0)
     largest = {"force": np.maximum.accumulate(force),
                "pressure": np.maximum.accumulate(PRESSURES[:5])}[role]

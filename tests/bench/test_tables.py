@@ -43,6 +43,10 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     ("zero_entry", "zero entry", None), ("Pressure, bar", "pressure", "bar"),
     ("eps (%", "eps (%", None),  # a bracket left open: no unit, and no traceback
     ("Force, kN", "force", "kN"),
+    # 'min' after a force's or a pressure's name is their minimum, no minute; after a time's
+    # name it is the minute
+    ("F_min", "f min", None), ("Kraft_min", "kraft min", None), ("p_min", "p min", None),
+    ("t_min", "t", "min"), ("Zeit_min", "zeit", "min"),
 ])
 def test_headers_in_common_spellings(header, name, unit):
     assert parse_header(header) == (name, unit)
