@@ -815,6 +815,7 @@ NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
 #: gauge suffixes (the toolkit's pressures are gauge pressures), the seconds written
 #: ``sec.``, German ``sek``, ``Sek.`` and ``msek`` (pint reads none), ``MSEC``, ``MV``, ``MA``
 #: and ``MMHG`` a millisecond, millivolt, milliampere and millimetre of mercury (pint: mega),
+#: ``H`` an hour (pint: the henry, which no bench logs),
 #: and ``LBS`` and ``KG`` (pint reads ``lbs`` and ``kg`` alone): a load cell's pounds or
 #: kilograms, refused as a mass naming ``--units force=lbf`` or ``kgf``
 LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", "pa": "Pa",
@@ -824,7 +825,7 @@ LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", 
              "lbf": "lbf", "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min",
              "sek": "s", "sek.": "s", "sec.": "s", "sekunden": "s", "msek": "ms", "lbs": "lb",
              "msec": "ms", "usec": "us", "µsec": "us", "mv": "mV", "ma": "mA", "mmhg": "mmHg",
-             "kg": "kg"}
+             "kg": "kg", "h": "hour"}
 
 
 #: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü),

@@ -154,6 +154,13 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
     np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1], rtol=1e-12)
     np.testing.assert_allclose(column_values(table, found["pressure"]), [PSI_BAR, 2 * PSI_BAR],
                                rtol=1e-12)
+    # ... and H an hour: was pint's henry, refused as "not a unit of time" (TIME_H: no time)
+    for header in ("TIME (H)", "TIME_H"):
+        table, found = _one(tmp_path, f"{header},PRESSURE (BAR),FORCE (N)\n0,1,1\n0.5,2,2\n",
+                            "e.csv")
+        assert found["time"].header == header
+        np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 1800.0],
+                                   rtol=1e-12)
 
 
 @pytest.mark.parametrize("header", ["Zeit [sek]", "Zeit [Sek.]", "Time (sec.)", "Zeit_sek"])
