@@ -1356,6 +1356,8 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                 part.scale = each[k] if each is not None else scale
             column.scale = scale
     for column in [p for c in found.values() for p in c.parts or (c,)]:
+        if column.role not in units and not column.in_cells:
+            _refuse_mega_or_milli(table, column)
         _check_unit(table, column)
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
@@ -1554,6 +1556,27 @@ def _check_unit(table: RawTable, column: Column) -> None:
         raise ValueError(f"{table.name}: column {column.header!r}: {column.unit!r} is not a "
                          f"unit of {column.role} (expected one like "
                          f"{role.unit or 'percent'}){hint}")
+
+
+def _refuse_mega_or_milli(table: RawTable, column: Column) -> None:
+    """``ValueError`` for a header written in capitals whose unit's ``M`` may be mega or milli
+    (``FORCE (MN)``: a meganewton as pint reads it, a millinewton as a lab writing in capitals
+    may mean it), a million apart: not guessed. A header in mixed case says its prefix
+    (``Force (MN)`` mega, ``F [mN]`` milli), and :data:`LAB_UNITS` reads the capitals labs
+    use for one of them (``MPA``, ``MBAR``, ``MSEC``)."""
+    text = (column.unit or "").strip()
+    if not text.startswith("M") or " ".join(text.lower().split()) in LAB_UNITS \
+            or column.header != column.header.upper():
+        return
+    milli_text = "m" + text[1:]
+    mega, milli = parse_unit(text), parse_unit(milli_text)
+    if mega is None or milli is None or mega == milli \
+            or mega.dimensionality != milli.dimensionality:
+        return
+    raise ValueError(f"{table.name}: column {column.header!r}: {text!r} written in capitals "
+                     f"may be {milli_text!r} ({milli}) or {text!r} ({mega}), a million apart: "
+                     f"not guessed: expected --units {column.role}={milli_text} (or "
+                     f"{column.role}={text})")
 
 
 def _weight_unit(mass) -> str:

@@ -163,6 +163,29 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
                                    rtol=1e-12)
 
 
+def test_a_mega_or_milli_prefix_in_a_header_of_capitals_is_not_guessed(tmp_path):
+    # 'FORCE (MN)' of a logger writing in capitals was read as meganewtons, a lab's
+    # millinewtons a million times too large (refused only as beyond any load cell)
+    text = "PRESSURE (BAR),FORCE (MN)\n1,500\n2,1000\n"
+    with pytest.raises(ValueError, match=re.escape(
+            "lab.csv: column 'FORCE (MN)': 'MN' written in capitals may be 'mN' (millinewton) "
+            "or 'MN' (meganewton), a million apart: not guessed: expected --units force=mN (or "
+            "force=MN)")):
+        _one(tmp_path, text)
+    path = tmp_path / "given.csv"
+    path.write_text(text, encoding="utf-8")
+    (table,) = read_tables(path)
+    found = recognise(table, units={"force": "mN"})
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.5, 1.0], rtol=1e-12)
+    # a header in mixed case says its prefix; capitals labs use for one prefix are read so
+    table, found = _one(tmp_path, "Pressure (bar),Force (MN)\n1,5e-4\n2,1e-3\n", "mega.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [500, 1000], rtol=1e-12)
+    table, found = _one(tmp_path, "P [bar],F [mN]\n1,500\n2,1000\n", "milli.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.5, 1.0], rtol=1e-12)
+    table, found = _one(tmp_path, "PRESSURE (MPA),FORCE (N)\n0.1,5\n0.2,10\n", "mpa.csv")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.0, 2.0], rtol=1e-12)
+
+
 @pytest.mark.parametrize("header", ["Zeit [sek]", "Zeit [Sek.]", "Time (sec.)", "Zeit_sek"])
 def test_seconds_as_german_and_abbreviated_headers_write_them(header, tmp_path):
     # 'Zeit [sek]' was refused: "'sek' is not a unit of time (expected one like s)"
