@@ -349,13 +349,14 @@ def _windows_text(data: bytes) -> str:
 
 
 def _text_table(path: Path, text: str) -> RawTable:
-    lines = [(k + 1, line) for k, line in enumerate(text.splitlines())
-             if line.strip() and not line.lstrip().startswith("#")]
+    numbered = [(k + 1, line) for k, line in enumerate(text.splitlines()) if line.strip()]
+    lines = [(n, line) for n, line in numbered if not _comment(line)]
     if not lines:
         raise ValueError(f"{path} is empty: expected a header row and one row per step or "
                          "sample")
     lines = _with_quoted_line_breaks(lines)
     separator = _separator([line for _, line in lines])
+    lines = _with_commented_units(numbered, lines, separator)
     # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
     parsed = [(n + j, cells) for n, line in lines
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
@@ -365,6 +366,39 @@ def _text_table(path: Path, text: str) -> RawTable:
                                          for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
+
+
+def _comment(line: str) -> bool:
+    return line.lstrip().startswith("#")
+
+
+def _with_commented_units(numbered: list[tuple[int, str]], lines: list[tuple[int, str]],
+                          separator: str) -> list[tuple[int, str]]:
+    """``lines`` with each comment line that is the units row under a row of names (``# s, bar,
+    kN``, marked so that other readers skip it) put back without its ``#``: its cells, as many
+    as the names (a first empty one, ``#,s,bar``, the mark's own), units
+    (:func:`_units_row`). Any other comment stays one."""
+    kept = dict(lines)
+    out = list(lines)
+    for (above, _), (number, line) in zip(numbered, numbered[1:], strict=False):
+        if above not in kept or not _comment(line):
+            continue
+        names = _filled(_cells(kept[above], separator)[0])
+        units = _filled(_cells(line.lstrip()[1:], separator)[0])
+        if len(units) == len(names) + 1 and not units[0]:
+            units = units[1:]
+        if len(units) == len(names) and not any(_is_number(c) for c in names) \
+                and _units_row(units):
+            out.append((number, separator.join(units)))
+    return sorted(out)
+
+
+def _filled(cells: list[str]) -> list[str]:
+    """``cells`` stripped, without the empty ones at the end (a separator ending the line)."""
+    cells = [c.strip() for c in cells]
+    while cells and not cells[-1]:
+        cells.pop()
+    return cells
 
 
 #: the most lines a quoted cell spans (a comment of a few lines): a quote that does not close

@@ -843,6 +843,25 @@ def test_a_loggers_units_row_under_the_names(tmp_path):
     assert table.header == ["P", "F"] and set(found) == {"pressure", "force"}
 
 
+@pytest.mark.parametrize("units", ["# s, kPa, kN", "#s,kPa,kN", "#,s,kPa,kN", "# [s],[kPa],[kN]"])
+def test_a_units_row_marked_as_a_comment_is_the_units_row(units, tmp_path):
+    # a logger marks its units row with '#' so that other readers skip it: it was dropped as
+    # a comment, and the kPa and kN read as bar and N
+    table, found = _one(tmp_path, f"Zeit,Druck,Kraft\n{units}\n0,0,0.0015\n0.1,150,0.01225\n")
+    assert table.header == ["Zeit [s]", "Druck [kPa]", "Kraft [kN]"]
+    assert table.header_row == 1 and table.row_numbers == [3, 4]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+
+
+@pytest.mark.parametrize("comment", ["# Messung 7, Prüfstand 2", "# s, kPa", "# 0, 0, 0"])
+def test_a_comment_under_the_names_that_is_no_units_row_stays_a_comment(comment, tmp_path):
+    # words, fewer units than names, or numbers: a comment, as before
+    table, found = _one(tmp_path, f"Zeit,Druck,Kraft\n{comment}\n0,0,1.5\n0.1,1.5,12.25\n")
+    assert table.header == ["Zeit", "Druck", "Kraft"] and table.row_numbers == [3, 4]
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+
+
 def test_a_units_row_with_a_temperature_and_a_displacement_is_read(tmp_path):
     # a US logger's units row under its names, with a temperature in °F and a displacement in
     # inches beside the readings: was no units row (°F and in are no role's units), so the
