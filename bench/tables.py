@@ -362,6 +362,7 @@ def _text_table(path: Path, text: str) -> RawTable:
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
     if path.suffix.lower() == ".lvm":
         parsed = _without_later_lvm_headers(path, parsed)
+    parsed = _labchart_header(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
                                          for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
@@ -407,6 +408,48 @@ QUOTED_LINES_MAX = 10
 #: a quoted cell left open at the line's end: its quote opens the cell (5" in a comment is no
 #: quoting)
 _OPEN_QUOTE = re.compile(r'(?:^|[,;\t])\s*"[^"]*$')
+
+
+#: the rows a LabChart text export's header block starts with, at most (``Interval=``,
+#: ``ExcelDateTime=``, ``TimeFormat=``, ``DateFormat=``, ``ChannelTitle=``, ``Range=``,
+#: ``UnitName=``, ``TopValue=``, ``BottomValue=``)
+LABCHART_BLOCK_MAX = 20
+
+
+def _labchart_header(path: Path,
+                     parsed: list[tuple[int, list[str]]]) -> list[tuple[int, list[str]]]:
+    """A LabChart (ADInstruments) text export's rows with its header block, each row a label
+    ending in ``=`` and a cell per channel, made one header: each channel's ``ChannelTitle=``
+    with its ``UnitName=`` (``Druck [bar]``), after ``Time [s]`` where the rows start with
+    their time (seconds from the block's start; ``Time`` where it is a time of day), on the
+    line of ``ChannelTitle=``. Its ``TopValue=`` and ``BottomValue=`` rows hold numbers, and
+    were otherwise the first rows of data. Any other table as it is; ``ValueError`` naming
+    the row where a second block's header begins (a record stopped and started again)."""
+    block = {}
+    for k, (_, cells) in enumerate(parsed[:LABCHART_BLOCK_MAX]):
+        label = cells[0].strip() if cells else ""
+        if not label.endswith("=") or len(label) < 2:
+            break
+        block[label.lower()] = k
+    if "channeltitle=" not in block or len(block) == len(parsed):
+        return parsed
+    number, titles = parsed[block["channeltitle="]]
+    names = _filled(titles[1:])
+    units = _filled(parsed[block["unitname="]][1][1:]) if "unitname=" in block else []
+    header = [f"{name} [{unit}]" if name and unit else name
+              for name, unit in zip(names, units + [""] * len(names), strict=False)]
+    first = _filled(parsed[len(block)][1])
+    if len(first) > len(names):  # each row's time before its channels
+        header.insert(0, "Time [s]" if _is_number(first[0]) else "Time")
+    label = parsed[0][1][0].strip()
+    again = next((n for n, cells in parsed[len(block):] if cells and cells[0].strip() == label),
+                 None)
+    if again is not None:
+        raise ValueError(f"{path.name}, row {again} ({label!r}): a second block of the LabChart "
+                         "export begins (the record stopped and started again): expected one "
+                         "block per file; export each block as a file of its own and import "
+                         "each")
+    return [(number, header), *parsed[len(block):]]
 
 
 def _with_quoted_line_breaks(lines: list[tuple[int, str]]) -> list[tuple[int, str]]:

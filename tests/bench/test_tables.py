@@ -616,6 +616,38 @@ LABVIEW_LVM = (
     "0.200000\t800.000000\t8.660000\t\n")
 
 
+#: a LabChart (ADInstruments) text export of 3 samples at 10 Hz, its time column included
+LABCHART_TXT = (
+    "Interval=\t0.1 s\nExcelDateTime=\t4.6361586805555557e+04\t05.12.2026 14:05:00,000000\n"
+    "TimeFormat=\tStartOfBlock\nDateFormat=\t\nChannelTitle=\tDruck\tKraft\n"
+    "Range=\t10.000 V\t2.000 V\nUnitName=\tkPa\tN\nTopValue=\t1000\t2000\n"
+    "BottomValue=\t0\t-2000\n0.000\t0.0\t3.0\n0.100\t250.0\t253.0\n0.200\t800.0\t803.0\n")
+
+
+@pytest.mark.parametrize("timed", [True, False])
+def test_a_labchart_text_export_is_read_by_its_channel_titles_and_units(timed, tmp_path):
+    # its header block's TopValue= and BottomValue= rows hold numbers: taken for the first
+    # rows of data, under 'UnitName=;kPa;N' as the header ("no pressure or force column")
+    text = LABCHART_TXT
+    if not timed:  # exported without its time column, decimal commas on a German PC
+        text = "\n".join(line.split("\t", 1)[1].replace(".", ",") if line[0].isdigit() else line
+                         for line in text.splitlines()) + "\n"
+    table, found = _one(tmp_path, text, "labchart.txt")
+    assert table.header == ["Time [s]"] * timed + ["Druck [kPa]", "Kraft [N]"]
+    assert table.header_row == 5 and table.row_numbers == [10, 11, 12]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+    np.testing.assert_allclose(column_values(table, found["force"]), [3.0, 253.0, 803.0])
+    if timed:
+        np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1, 0.2])
+    else:
+        assert "time" not in found and table.decimal == ","
+    # a record stopped and started again: a second block, its header block under the rows
+    block = "".join(text.splitlines(keepends=True)[:9])
+    with pytest.raises(ValueError, match=re.escape(
+            "two.txt, row 13 ('Interval='): a second block of the LabChart export begins")):
+        _one(tmp_path, text + block + text.splitlines(keepends=True)[-1], "two.txt")
+
+
 @pytest.mark.parametrize("name, text, header, title_rows, force", [
     # a logger's header block with a measuring range: two numbers in a labelled row
     ("logger.csv", "Gerät;HBM QuantumX\r\nMessbereich [bar];0;10\r\nAbtastrate [Hz];10\r\n"
