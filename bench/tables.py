@@ -1887,6 +1887,8 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     slashed = _slashed_s(text, day_first)
     if slashed is not None:
         return "date-time", slashed
+    text = _YEAR_FIRST_SLASHED.sub(lambda m: f"{m['y']}-{int(m['m']):02d}-{int(m['d']):02d}",
+                                   text)
     iso = _ISO_ZONE.sub(lambda m: "+00:00" if m["zone"].upper() in ("UTC", "GMT")
                         else m["zone"], text)
     for parse in (lambda t: datetime.datetime.fromisoformat(iso.replace(",", ".")),
@@ -1904,6 +1906,9 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
 #: a clock's milliseconds after a third colon, as Keysight's BenchLink Data Logger writes them
 #: (``12/6/2026 14:05:00:123``): read as after a decimal mark
 _COLON_MILLISECONDS = re.compile(r"(?P<clock>\d{1,2}:\d{2}:\d{2}):(?P<ms>\d{3})$")
+#: a date written year first with slashes (2026/12/05 14:05:00.1, as Japanese loggers write
+#: it): read as ISO 8601's 2026-12-05
+_YEAR_FIRST_SLASHED = re.compile(r"^(?P<y>\d{4})/(?P<m>\d{1,2})/(?P<d>\d{1,2})(?=[ T])")
 #: ISO 8601's basic format, without separators (20261206T090000.250Z)
 _ISO_BASIC = re.compile(r"^\d{8}T\d{6}")
 #: a date-time's zone written after a space, or named (' +01:00', ' Z', ' UTC'): ISO 8601

@@ -1038,6 +1038,9 @@ def test_numbers_in_scientific_notation(tmp_path):
     # BenchLink's milliseconds after a third colon, in a date-time and a time of day
     (["12/6/2026 14:05:00:900", "12/6/2026 14:05:01:150"], [0.0, 0.25]),
     (["23:59:59:900", "00:00:00:100"], [0.0, 0.2]),
+    # a Japanese logger's (Graphtec, Hioki) date year first with slashes
+    (["2026/12/05 23:59:59.75", "2026/12/06 00:00:00.25", "2026/12/6 00:00:01"],
+     [0.0, 0.5, 1.25]),
 ])
 def test_times_of_day_and_date_times_as_excel_and_loggers_write_them(cells, seconds, tmp_path):
     # were: "cell A2 (column 'Time'): '11:59:59.5 AM' is not a number", "'20261206T090000.000Z'
