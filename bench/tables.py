@@ -862,7 +862,8 @@ def _block_units(where: str, header: list[str], titles: list[list],
 # the unit may hold one parenthesis of its own: "Pressure [bar(g)]"
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}(]*(?:\([^)]*\))?[^)\]}]*)"
                         r"[)\]}]\s*$")
-_WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
+#: "Force, N": a unit after a comma; "Date&Time", as a Hioki names its clock
+_WORDS = re.compile(r"[\s_\-./:,&]+")
 #: a header's name ending in a pressure unit, and the mark that may follow it in brackets
 _MARKED_UNIT = re.compile(r"^(?P<name>.*?\S)[\s_,]+(?P<unit>m?bar|[km]?pa|psi)\s*$",
                           re.IGNORECASE)

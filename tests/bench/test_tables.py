@@ -42,7 +42,7 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     ("set_pressure_bar", "set pressure", "bar"), ("Time in s", "time", "s"),
     ("zero_entry", "zero entry", None), ("Pressure, bar", "pressure", "bar"),
     ("eps (%", "eps (%", None),  # a bracket left open: no unit, and no traceback
-    ("Force, kN", "force", "kN"),
+    ("Force, kN", "force", "kN"), ("Date&Time", "date time", None),
     # 'min' after a force's or a pressure's name is their minimum, no minute; after a time's
     # name it is the minute
     ("F_min", "f min", None), ("Kraft_min", "kraft min", None), ("p_min", "p min", None),
@@ -1048,6 +1048,14 @@ def test_times_of_day_and_date_times_as_excel_and_loggers_write_them(cells, seco
     rows = "".join(f"{c};{k};{k}\n" for k, c in enumerate(cells))
     table, found = _one(tmp_path, f"Time;P [bar];F [N]\n{rows}")
     np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
+
+
+def test_a_hioki_date_and_time_column_is_the_clock(tmp_path):
+    # 'Date&Time' was no time's name: the record was read untimed, its clock left out
+    table, found = _one(tmp_path, "Date&Time,Druck [bar],Kraft [N]\n2026/12/05 14:05:00.0,0,0\n"
+                        "2026/12/05 14:05:00.5,1,100\n")
+    assert found["time"].header == "Date&Time"
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.5], atol=1e-9)
 
 
 def test_a_time_cell_that_is_no_time_is_named_as_such(tmp_path):
