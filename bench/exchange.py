@@ -426,21 +426,26 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         # without a time column every row is a step, or a record's rows are taken as evenly
         # spaced: a clock by a name the reader does not know is left out (an export's steps
         # have times)
-        unread = [] if exported or "time" in found else unread_time_columns(table, found)
-        read_as = ("its rows are taken as evenly spaced in time" if (unread or counter) and
-                   not one_step_per_row and
-                   series.sampled_without_time(recognition.values("pressure"))
-                   else "every row is a step")
-        timed_by = (f"the rows timed at {sample_rate_hz:g} Hz (--sample-rate)"
-                    if sample_rate_hz is not None else
-                    f"{read_as}; if it is seconds, --units time=s reads it as a 1 Hz clock, "
-                    "and --sample-rate HZ times the rows at another rate")
+        # a clock by a name the reader does not know is named, the rate given or not
+        unread = [] if exported or ("time" in found and sample_rate_hz is None) else \
+            unread_time_columns(table, found)
+        if sample_rate_hz is not None:
+            read_as = timed_by = f"the rows timed at {sample_rate_hz:g} Hz (--sample-rate)"
+        else:
+            read_as = ("its rows are taken as evenly spaced in time" if (unread or counter) and
+                       not one_step_per_row and
+                       series.sampled_without_time(recognition.values("pressure"))
+                       else "every row is a step")
+            timed_by = (f"{read_as}; if it is seconds, --units time=s reads it as a 1 Hz "
+                        "clock, and --sample-rate HZ times the rows at another rate")
         notify(f"{table.name}: {recognition.line()}"
                + (f"; column {counter!r} counts the rows (whole numbers stepping by 1, no "
                   f"unit), no clock: {timed_by}" if counter else "")
                + "".join(f"; column {header!r} holds times but is not read as the time "
                          f"column: {read_as}; if it is the record's clock, --columns "
-                         f"time={header!r} reads the table as a time series"
+                         f"time={header!r}"
+                         + (" without --sample-rate" if sample_rate_hz is not None else "")
+                         + " reads the table as a time series"
                          for header in unread[:1]))
         prepared.append(recognition)
         bar.done()

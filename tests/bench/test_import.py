@@ -1210,6 +1210,15 @@ def test_a_sample_rate_for_a_table_with_a_clock_is_refused(tmp_path, mkm_cli):
     assert code == 2 and err.count("\n") == 1
     assert "--sample-rate 10 Hz with --join-by-time logger.csv: expected a time column" in err
     assert not (tmp_path / "runs").exists()
+    # a clock by a name the reader does not know: the rate times the rows, and the line names
+    # the column the file's clock may be
+    path.write_text("Messung am;Druck [bar];Kraft [N]\n05.12.2026 14:05:00;0;0\n"
+                    "05.12.2026 14:05:01;1;100\n05.12.2026 14:05:02;2;210\n", encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "10",
+                          "--one-step-per-row")
+    assert ("column 'Messung am' holds times but is not read as the time column: the rows timed "
+            "at 10 Hz (--sample-rate); if it is the record's clock, --columns time='Messung am' "
+            "without --sample-rate reads the table as a time series") in err
 
 
 def test_a_row_counter_is_no_clock_to_join_by(tmp_path, mkm_cli):
