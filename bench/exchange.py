@@ -314,7 +314,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         The rate the table's rows were logged at [Hz], for a table without a clock (or with a
         row counter, :func:`mkm.bench.tables.counts_rows`): row ``k`` at ``k / sample_rate_hz``
         seconds (:func:`mkm.bench.tables.timed_rows`), a time series; refused for a table with
-        a time column and with ``join``.
+        a time column, for ``mkm export``'s workbook and with ``join``.
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -344,6 +344,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     muscle = dict(muscle)
     tare, vented = parse_zero(tare, "--tare", "N"), parse_zero(vented, "--vented", "bar")
     exported = sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path))
+    if exported and sample_rate_hz is not None:  # its samples have their times
+        raise ValueError(f"--sample-rate {sample_rate_hz:g} Hz: {path.name} is a run mkm "
+                         "export wrote, its samples timed: expected the option only for a "
+                         "table without a clock")
     if exported:  # mkm export's own
         known = key_values(path, "metadata")
         for key in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
