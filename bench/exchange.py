@@ -428,9 +428,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                                  k not in taken_columns(found)], counter,
                                   sample_rate_hz)
         # without a time column every row is a step, or a record's rows are taken as evenly
-        # spaced: a clock by a name the reader does not know is left out (an export's steps
-        # have times)
-        # a clock by a name the reader does not know is named, the rate given or not
+        # spaced (or timed by --sample-rate): a clock by a name the reader does not know is
+        # left out, and named (an export's steps have times)
         unread = [] if exported or ("time" in found and sample_rate_hz is None) else \
             unread_time_columns(table, found)
         if sample_rate_hz is not None:
