@@ -862,7 +862,7 @@ def _block_units(where: str, header: list[str], titles: list[list],
 # the unit may hold one parenthesis of its own: "Pressure [bar(g)]"
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}(]*(?:\([^)]*\))?[^)\]}]*)"
                         r"[)\]}]\s*$")
-#: "Force, N": a unit after a comma; "Date&Time", as a Hioki names its clock
+#: "Force, N": a unit after a comma; "Date&Time", as a logger may name its clock
 _WORDS = re.compile(r"[\s_\-./:,&]+")
 #: a header's name ending in a pressure unit, and the mark that may follow it in brackets
 _MARKED_UNIT = re.compile(r"^(?P<name>.*?\S)[\s_,]+(?P<unit>m?bar|[km]?pa|psi)\s*$",
@@ -1907,7 +1907,7 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
 #: a clock's milliseconds after a third colon, as Keysight's BenchLink Data Logger writes them
 #: (``12/6/2026 14:05:00:123``): read as after a decimal mark
 _COLON_MILLISECONDS = re.compile(r"(?P<clock>\d{1,2}:\d{2}:\d{2}):(?P<ms>\d{3})$")
-#: a date written year first with slashes (2026/12/05 14:05:00.1, as Japanese loggers write
+#: a date written year first with slashes (2026/12/05 14:05:00.1, as some loggers write
 #: it): read as ISO 8601's 2026-12-05
 _YEAR_FIRST_SLASHED = re.compile(r"^(?P<y>\d{4})/(?P<m>\d{1,2})/(?P<d>\d{1,2})(?=[ T])")
 #: ISO 8601's basic format, without separators (20261206T090000.250Z)

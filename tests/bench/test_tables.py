@@ -1038,7 +1038,7 @@ def test_numbers_in_scientific_notation(tmp_path):
     # BenchLink's milliseconds after a third colon, in a date-time and a time of day
     (["12/6/2026 14:05:00:900", "12/6/2026 14:05:01:150"], [0.0, 0.25]),
     (["23:59:59:900", "00:00:00:100"], [0.0, 0.2]),
-    # a Japanese logger's (Graphtec, Hioki) date year first with slashes
+    # a logger's date year first with slashes
     (["2026/12/05 23:59:59.75", "2026/12/06 00:00:00.25", "2026/12/6 00:00:01"],
      [0.0, 0.5, 1.25]),
 ])
@@ -1050,7 +1050,7 @@ def test_times_of_day_and_date_times_as_excel_and_loggers_write_them(cells, seco
     np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
 
 
-def test_a_hioki_date_and_time_column_is_the_clock(tmp_path):
+def test_a_date_and_time_column_is_the_clock(tmp_path):
     # 'Date&Time' was no time's name: the record was read untimed, its clock left out
     table, found = _one(tmp_path, "Date&Time,Druck [bar],Kraft [N]\n2026/12/05 14:05:00.0,0,0\n"
                         "2026/12/05 14:05:00.5,1,100\n")
