@@ -162,8 +162,10 @@ EPOCH_NAMES = ("unix time", "unix timestamp", "epoch", "epoch time", "posix time
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
 #: space) and the toolkit's unit
 ROLES = {
-    "pressure": Role(("p", "pressure", "pres", "druck", "pression"), "bar", ("druck",)),
-    "force": Role(("f", "force", "load", "kraft", "tension", "effort"), "N", ("kraft",)),
+    "pressure": Role(("p", "pressure", "pres", "druck", "pression", "pressione", "presión",
+                      "presion", "pressão", "pressao", "druk"), "bar", ("druck",)),
+    "force": Role(("f", "force", "load", "kraft", "tension", "effort", "forza", "fuerza",
+                   "força", "forca", "kracht"), "N", ("kraft",)),
     "time": Role(("t", "time", "zeit", "elapsed", "elapsed time", "timestamp", "time stamp",
                   "datetime", "date time", "date and time", "uhrzeit", "zeitstempel",
                   "datum zeit", "datum uhrzeit", "datum und uhrzeit", "datum und zeit",
@@ -171,6 +173,7 @@ ROLES = {
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
                   "zeitpunkt", "messzeitpunkt",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
+                  "tempo", "tiempo", "tijd",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
                   "zeit 1 standardmessrate",
                   *EPOCH_NAMES, *CLOCK_NAMES), "s"),

@@ -810,7 +810,8 @@ def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli
 @pytest.mark.parametrize("header", ["Messzeit [s]", "Zeit seit Start [s]", "Relative Time [s]",
                                     "Runtime (s)", "Laufzeit [s]", "Temps (s)",
                                     "Temps écoulé (s)", "Time  1 - default sample rate [s]",
-                                    "Zeit  1 - Standardmessrate [s]"])
+                                    "Zeit  1 - Standardmessrate [s]", "Tempo [s]",
+                                    "Tiempo (s)", "Tijd [s]"])
 def test_an_elapsed_time_column_by_its_lab_name_makes_a_time_series(header, tmp_path,
                                                                      mkm_cli):
     # was: not recognised, the 1-per-second record read as 23 steps of one row each

@@ -355,6 +355,20 @@ def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
     np.testing.assert_allclose(column_values(table, found[role]), [scale])
 
 
+@pytest.mark.parametrize("header, role", [
+    ("Pressione", "pressure"), ("Presión", "pressure"), ("Pressão", "pressure"),
+    ("Druk", "pressure"), ("Forza", "force"), ("Fuerza", "force"), ("Força", "force"),
+    ("Kracht", "force"), ("Tempo", "time"), ("Tiempo", "time"), ("Tijd", "time")])
+def test_italian_spanish_portuguese_and_dutch_names_are_read(header, role, tmp_path):
+    # an Italian, Spanish, Portuguese or Dutch lab's columns: without a unit they were no
+    # column ("no pressure or force column"), and a time column by its unit only named, the
+    # record read untimed
+    other = {"time": "Forza", "pressure": "Tempo", "force": "Tempo"}[role]
+    table, found = _one(tmp_path, f"{header};{other}\n1;2\n")
+    assert found[role].header == header
+    np.testing.assert_allclose(column_values(table, found[role]), [1.0])
+
+
 @pytest.mark.parametrize("other", ["T [°C]", "P [W]", "F [Hz]"])
 def test_a_symbol_of_another_quantity_is_no_reading(other, tmp_path):
     # a temperature logged beside the record as 'T [°C]' was a second time column (the table
