@@ -1012,6 +1012,8 @@ def parse_header(text: str) -> tuple[str, str | None]:
     match = _BRACKETED.match(text)
     if match and match.group("name").strip():
         name, unit = match.group("name"), match.group("unit").strip()
+        if not unit and (call := name.strip().lower()) in CLOCK_NAMES:  # an Arduino's millis()
+            return call, CLOCK_NAMES[call]
         # a pressure unit written after the name with its gauge or absolute mark in brackets
         # ("P bar(g)", "Druck bar(ü)", "p kPa (a)"): the unit is the two together
         marked = _MARKED_UNIT.match(name)

@@ -47,6 +47,8 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     # name it is the minute
     ("F_min", "f min", None), ("Kraft_min", "kraft min", None), ("p_min", "p min", None),
     ("t_min", "t", "min"), ("Zeit_min", "zeit", "min"),
+    # an Arduino sketch's header naming the call it logs: was a time in seconds
+    ("millis()", "millis", "ms"), ("micros()", "micros", "us"),
 ])
 def test_headers_in_common_spellings(header, name, unit):
     assert parse_header(header) == (name, unit)
