@@ -244,9 +244,9 @@ class ImportedRun:
 
 
 def check_sample_rate(rate_hz: float) -> float:
-    """``rate_hz`` if it is a rate rows can be logged at, finite and above 0 Hz; ``ValueError``
-    naming it otherwise."""
-    if not (math.isfinite(rate_hz) and rate_hz > 0):
+    """``rate_hz`` if it is a rate rows can be logged at, finite and above 0 Hz, its period
+    ``1 / rate_hz`` a number too; ``ValueError`` naming it otherwise."""
+    if not (math.isfinite(rate_hz) and rate_hz > 0 and math.isfinite(1.0 / rate_hz)):
         raise ValueError(f"--sample-rate {rate_hz:g} Hz is invalid: expected the rate the "
                          "table's rows were logged at, a finite number > 0 Hz (100, 1kHz)")
     return rate_hz
@@ -940,10 +940,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         notes.append(f"one reading every {apart:.3g} s: each row a step at its time (a time "
                      "series has several readings per hold)")
         if series.sampled_without_time(pressure):  # a logger's milliseconds read as seconds?
+            rate_hz = group.recognition.sample_rate_hz
             notes[-1] += (f"; {pressure.size} rows whose successive pressures lie within "
-                          f"{series.PLATEAU_TOLERANCE_BAR:g} bar, as a record's samples do: if "
-                          f"{found['time'].header!r} is in milliseconds, import again with "
-                          "--units time=ms")
+                          f"{series.PLATEAU_TOLERANCE_BAR:g} bar, as a record's samples do: "
+                          + (f"if they were logged faster than {rate_hz:g} Hz, import again "
+                             "with the --sample-rate they were" if rate_hz else
+                             f"if {found['time'].header!r} is in milliseconds, import again "
+                             "with --units time=ms"))
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
     # -0.0001 bar too); a step table's pressures are as written, no vented reading subtracted,
     # so its vented rows read the gauge's zero error, taken as 0 bar up to its bound

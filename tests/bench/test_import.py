@@ -1179,6 +1179,11 @@ def test_sample_rate_times_the_rows_of_a_table_without_a_clock(counter, tmp_path
     (fast,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "1kHz")
     assert fast.meta.imported_from["sample_rate_hz"] == 1000.0
     assert fast.samples["time_s"].iloc[-1] == pytest.approx((t.size - 1) / 1000.0)
+    # a rate too low, its rows 2 s apart, makes each row a step: the line names the rate (no
+    # --units time=ms, which no column of the file takes)
+    (slow,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "0.5")
+    assert ("as a record's samples do: if they were logged faster than 0.5 Hz, import again "
+            "with the --sample-rate they were") in err and "--units time=ms" not in err
 
 
 @pytest.mark.parametrize("rate, why", [
@@ -1186,7 +1191,9 @@ def test_sample_rate_times_the_rows_of_a_table_without_a_clock(counter, tmp_path
           "finite number > 0 Hz"),
     ("-100", "--sample-rate -100 Hz is invalid"),
     ("inf", "--sample-rate='inf' is not a finite number: expected a number in Hz"),
-    ("5bar", "--sample-rate='5bar': 'bar' is not a unit of the same kind as Hz")])
+    ("5bar", "--sample-rate='5bar': 'bar' is not a unit of the same kind as Hz"),
+    # finite, but its period 1/HZ is not: every row after the first at an infinite time
+    ("1e-320", "Hz is invalid: expected the rate the table's rows were logged at")])
 def test_a_sample_rate_that_is_none_is_refused(rate, why, tmp_path, mkm_cli):
     path = tmp_path / "logger.csv"
     path.write_text("Druck [bar];Kraft [N]\n0;0\n1;100\n2;210\n", encoding="utf-8")
