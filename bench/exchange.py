@@ -70,6 +70,7 @@ from mkm.bench.tables import (
     several_forces,
     sheet_names,
     taken_columns,
+    timed_rows,
     unread_columns,
     unread_time_columns,
     volts_header,
@@ -242,6 +243,15 @@ class ImportedRun:
             f"; {n}" for n in self.notes)
 
 
+def check_sample_rate(rate_hz: float) -> float:
+    """``rate_hz`` if it is a rate rows can be logged at, finite and above 0 Hz, its period
+    ``1 / rate_hz`` a number too; ``ValueError`` naming it otherwise."""
+    if not (math.isfinite(rate_hz) and rate_hz > 0 and math.isfinite(1.0 / rate_hz)):
+        raise ValueError(f"--sample-rate {rate_hz:g} Hz is invalid: expected the rate the "
+                         "table's rows were logged at, a finite number > 0 Hz (100, 1kHz)")
+    return rate_hz
+
+
 def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  columns: dict[str, str] | None = None, units: dict[str, str] | None = None,
                  sheet: str | None = None, tare: str | float = "auto",
@@ -249,6 +259,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
                  one_step_per_row: bool = False, join: str | Path | None = None,
                  join_shift_s: float | None = None, scaling: dict[str, Scaling] | None = None,
+                 sample_rate_hz: float | None = None,
                  notify=lambda line: None, bar=None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -299,6 +310,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         :class:`mkm.bench.tables.CurrentLoop`: how a channel logged in volts or mA becomes a
         pressure or a force (:func:`mkm.bench.tables.parse_scaling`); a channel in volts or
         mA without one is refused.
+    sample_rate_hz : float, optional
+        The rate the table's rows were logged at [Hz], for a table without a clock (or with a
+        row counter, :func:`mkm.bench.tables.counts_rows`): row ``k`` at ``k / sample_rate_hz``
+        seconds (:func:`mkm.bench.tables.timed_rows`), a time series; refused for a table with
+        a time column, for ``mkm export``'s workbook and with ``join``.
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -316,12 +332,22 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     if join_shift_s is not None and join is None:
         raise ValueError(f"--join-shift {join_shift_s:g} s: no --join-by-time FILE: expected it "
                          "with the file whose times it moves")
+    if sample_rate_hz is not None:
+        check_sample_rate(sample_rate_hz)
+        if join is not None:
+            raise ValueError(f"--sample-rate {sample_rate_hz:g} Hz with --join-by-time "
+                             f"{Path(join).name}: expected a time column in both tables to "
+                             "join by, and --sample-rate only for a table without one")
     if force_sign not in FORCE_SIGNS:
         raise ValueError(f"--force-sign {force_sign!r} is invalid: expected one of "
                          f"{', '.join(map(str, FORCE_SIGNS))}")
     muscle = dict(muscle)
     tare, vented = parse_zero(tare, "--tare", "N"), parse_zero(vented, "--vented", "bar")
     exported = sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path))
+    if exported and sample_rate_hz is not None:  # its samples have their times
+        raise ValueError(f"--sample-rate {sample_rate_hz:g} Hz: {path.name} is a run mkm "
+                         "export wrote, its samples timed: expected the option only for a "
+                         "table without a clock")
     if exported:  # mkm export's own
         known = key_values(path, "metadata")
         for key in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
@@ -342,6 +368,13 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         # a logger's row numbers under a clock's name: read as seconds, a 1 Hz clock the file
         # does not say
         counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
+        if sample_rate_hz is not None:
+            if "time" in found:  # two clocks that may disagree: the file's is not overridden
+                raise ValueError(f"--sample-rate {sample_rate_hz:g} Hz: {table.name} has a "
+                                 f"time column, {found['time'].header!r}: expected the option "
+                                 "only for a table without one (its rows logged evenly at that "
+                                 "rate)")
+            table, found["time"] = timed_rows(table, sample_rate_hz)
         missing = [r for r in REQUIRED_ROLES if r not in found]
         if other is not None:
             if counter:
@@ -392,22 +425,30 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             table = without_repeated_rows(table, [found[r] for r in ("time", *REQUIRED_ROLES)])
             check_channel_times(table, found)
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
-                                                 k not in taken_columns(found)], counter)
+                                                 k not in taken_columns(found)], counter,
+                                  sample_rate_hz)
         # without a time column every row is a step, or a record's rows are taken as evenly
-        # spaced: a clock by a name the reader does not know is left out (an export's steps
-        # have times)
-        unread = [] if exported or "time" in found else unread_time_columns(table, found)
-        read_as = ("its rows are taken as evenly spaced in time" if (unread or counter) and
-                   not one_step_per_row and
-                   series.sampled_without_time(recognition.values("pressure"))
-                   else "every row is a step")
+        # spaced (or timed by --sample-rate): a clock by a name the reader does not know is
+        # left out, and named (an export's steps have times)
+        unread = [] if exported or ("time" in found and sample_rate_hz is None) else \
+            unread_time_columns(table, found)
+        if sample_rate_hz is not None:
+            read_as = timed_by = f"the rows timed at {sample_rate_hz:g} Hz (--sample-rate)"
+        else:
+            read_as = ("its rows are taken as evenly spaced in time" if (unread or counter) and
+                       not one_step_per_row and
+                       series.sampled_without_time(recognition.values("pressure"))
+                       else "every row is a step")
+            timed_by = (f"{read_as}; if it is seconds, --units time=s reads it as a 1 Hz "
+                        "clock, and --sample-rate HZ times the rows at another rate")
         notify(f"{table.name}: {recognition.line()}"
                + (f"; column {counter!r} counts the rows (whole numbers stepping by 1, no "
-                  f"unit), no clock: {read_as}; if it is seconds, --units time=s reads it as a "
-                  "1 Hz clock" if counter else "")
+                  f"unit), no clock: {timed_by}" if counter else "")
                + "".join(f"; column {header!r} holds times but is not read as the time "
                          f"column: {read_as}; if it is the record's clock, --columns "
-                         f"time={header!r} reads the table as a time series"
+                         f"time={header!r}"
+                         + (" without --sample-rate" if sample_rate_hz is not None else "")
+                         + " reads the table as a time series"
                          for header in unread[:1]))
         prepared.append(recognition)
         bar.done()
@@ -899,10 +940,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         notes.append(f"one reading every {apart:.3g} s: each row a step at its time (a time "
                      "series has several readings per hold)")
         if series.sampled_without_time(pressure):  # a logger's milliseconds read as seconds?
+            rate_hz = group.recognition.sample_rate_hz
             notes[-1] += (f"; {pressure.size} rows whose successive pressures lie within "
-                          f"{series.PLATEAU_TOLERANCE_BAR:g} bar, as a record's samples do: if "
-                          f"{found['time'].header!r} is in milliseconds, import again with "
-                          "--units time=ms")
+                          f"{series.PLATEAU_TOLERANCE_BAR:g} bar, as a record's samples do: "
+                          + (f"if they were logged faster than {rate_hz:g} Hz, import again "
+                             "with the --sample-rate they were" if rate_hz else
+                             f"if {found['time'].header!r} is in milliseconds, import again "
+                             "with --units time=ms"))
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
     # -0.0001 bar too); a step table's pressures are as written, no vented reading subtracted,
     # so its vented rows read the gauge's zero error, taken as 0 bar up to its bound
@@ -1098,7 +1142,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         notes.insert(0, f"{pressure.size} rows of a record without time (successive readings "
                      f"{apart:.2g} bar apart): {done}, every row kept in "
                      f"{handling['table_copy']}; if each row is a held pressure, import again "
-                     "with --one-step-per-row")
+                     "with --one-step-per-row; if its rows were logged at a known rate, "
+                     "--sample-rate HZ times them")
     else:
         shape = "steps"
         std = group.values("force_std", optional=True) if "force_std" in found else \

@@ -154,11 +154,18 @@ def statistic(name: str) -> bool:
                                                   and _statistic_compound(words[0]))
 #: the names of a clock whose unit the name says: an Arduino logger's millis() and micros()
 CLOCK_NAMES = {"millis": "ms", "micros": "us"}
+#: the count after which an Arduino's micros() and millis() start from 0 again (an unsigned
+#: 32-bit counter of microseconds or milliseconds: 4294.967296 s, about 71.6 min, and 49.7 days)
+CLOCK_WRAP = 2**32
+#: the names of a clock of seconds since 1970, as loggers name it
+EPOCH_NAMES = ("unix time", "unix timestamp", "epoch", "epoch time", "posix time")
 #: every column a lab's table may have -> the names it goes by (lower case, words joined by one
 #: space) and the toolkit's unit
 ROLES = {
-    "pressure": Role(("p", "pressure", "pres", "druck", "pression"), "bar", ("druck",)),
-    "force": Role(("f", "force", "load", "kraft", "tension", "effort"), "N", ("kraft",)),
+    "pressure": Role(("p", "pressure", "pres", "druck", "pression", "pressione", "presión",
+                      "presion", "pressão", "pressao", "druk"), "bar", ("druck",)),
+    "force": Role(("f", "force", "load", "kraft", "tension", "effort", "forza", "fuerza",
+                   "força", "forca", "kracht"), "N", ("kraft",)),
     "time": Role(("t", "time", "zeit", "elapsed", "elapsed time", "timestamp", "time stamp",
                   "datetime", "date time", "date and time", "uhrzeit", "zeitstempel",
                   "datum zeit", "datum uhrzeit", "datum und uhrzeit", "datum und zeit",
@@ -166,11 +173,10 @@ ROLES = {
                   "messzeit", "laufzeit", "prüfzeit", "pruefzeit", "versuchszeit",
                   "zeitpunkt", "messzeitpunkt",
                   "relative zeit", "zeit seit start", "temps", "temps écoulé",
+                  "tempo", "tiempo", "tijd",
                   "temps ecoule", "horodatage", "time 1 default sample rate",
                   "zeit 1 standardmessrate",
-                  # seconds since 1970 as a logger names them
-                  "unix time", "unix timestamp", "epoch", "epoch time", "posix time",
-                  *CLOCK_NAMES), "s"),
+                  *EPOCH_NAMES, *CLOCK_NAMES), "s"),
     "direction": Role(("direction", "dir", "branch", "sweep", "richtung", "sens")),
     "force_std": Role(("force std", "std", "force sd", "sd", "force stdev", "std force"), "N"),
     "eps": Role(("eps", "epsilon", "contraction", "shortening", "strain",
@@ -346,22 +352,57 @@ def _windows_text(data: bytes) -> str:
 
 
 def _text_table(path: Path, text: str) -> RawTable:
-    lines = [(k + 1, line) for k, line in enumerate(text.splitlines())
-             if line.strip() and not line.lstrip().startswith("#")]
+    numbered = [(k + 1, line) for k, line in enumerate(text.splitlines()) if line.strip()]
+    lines = [(n, line) for n, line in numbered if not _comment(line)]
     if not lines:
         raise ValueError(f"{path} is empty: expected a header row and one row per step or "
                          "sample")
     lines = _with_quoted_line_breaks(lines)
     separator = _separator([line for _, line in lines])
+    lines = _with_commented_units(numbered, lines, separator)
     # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
     parsed = [(n + j, cells) for n, line in lines
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
     if path.suffix.lower() == ".lvm":
         parsed = _without_later_lvm_headers(path, parsed)
+    parsed = _labchart_header(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
                                          for c in cells])
     return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                         decimal)
+
+
+def _comment(line: str) -> bool:
+    return line.lstrip().startswith("#")
+
+
+def _with_commented_units(numbered: list[tuple[int, str]], lines: list[tuple[int, str]],
+                          separator: str) -> list[tuple[int, str]]:
+    """``lines`` with each comment line that is the units row under a row of names (``# s, bar,
+    kN``, marked so that other readers skip it) put back without its ``#``: its cells, as many
+    as the names (a first empty one, ``#,s,bar``, the mark's own), units
+    (:func:`_units_row`). Any other comment stays one."""
+    kept = dict(lines)
+    out = list(lines)
+    for (above, _), (number, line) in zip(numbered, numbered[1:], strict=False):
+        if above not in kept or not _comment(line):
+            continue
+        names = _filled(_cells(kept[above], separator)[0])
+        units = _filled(_cells(line.lstrip()[1:], separator)[0])
+        if len(units) == len(names) + 1 and not units[0]:
+            units = units[1:]
+        if len(units) == len(names) and not any(_is_number(c) for c in names) \
+                and _units_row(units):
+            out.append((number, separator.join(units)))
+    return sorted(out)
+
+
+def _filled(cells: list[str]) -> list[str]:
+    """``cells`` stripped, without the empty ones at the end (a separator ending the line)."""
+    cells = [c.strip() for c in cells]
+    while cells and not cells[-1]:
+        cells.pop()
+    return cells
 
 
 #: the most lines a quoted cell spans (a comment of a few lines): a quote that does not close
@@ -370,6 +411,48 @@ QUOTED_LINES_MAX = 10
 #: a quoted cell left open at the line's end: its quote opens the cell (5" in a comment is no
 #: quoting)
 _OPEN_QUOTE = re.compile(r'(?:^|[,;\t])\s*"[^"]*$')
+
+
+#: the rows a LabChart text export's header block starts with, at most (``Interval=``,
+#: ``ExcelDateTime=``, ``TimeFormat=``, ``DateFormat=``, ``ChannelTitle=``, ``Range=``,
+#: ``UnitName=``, ``TopValue=``, ``BottomValue=``)
+LABCHART_BLOCK_MAX = 20
+
+
+def _labchart_header(path: Path,
+                     parsed: list[tuple[int, list[str]]]) -> list[tuple[int, list[str]]]:
+    """A LabChart (ADInstruments) text export's rows with its header block, each row a label
+    ending in ``=`` and a cell per channel, made one header: each channel's ``ChannelTitle=``
+    with its ``UnitName=`` (``Druck [bar]``), after ``Time [s]`` where the rows start with
+    their time (seconds from the block's start; ``Time`` where it is a time of day), on the
+    line of ``ChannelTitle=``. Its ``TopValue=`` and ``BottomValue=`` rows hold numbers, and
+    were otherwise the first rows of data. Any other table as it is; ``ValueError`` naming
+    the row where a second block's header begins (a record stopped and started again)."""
+    block = {}
+    for k, (_, cells) in enumerate(parsed[:LABCHART_BLOCK_MAX]):
+        label = cells[0].strip() if cells else ""
+        if not label.endswith("=") or len(label) < 2:
+            break
+        block[label.lower()] = k
+    if "channeltitle=" not in block or len(block) == len(parsed):
+        return parsed
+    number, titles = parsed[block["channeltitle="]]
+    names = _filled(titles[1:])
+    units = _filled(parsed[block["unitname="]][1][1:]) if "unitname=" in block else []
+    header = [f"{name} [{unit}]" if name and unit else name
+              for name, unit in zip(names, units + [""] * len(names), strict=False)]
+    first = _filled(parsed[len(block)][1])
+    if len(first) > len(names):  # each row's time before its channels
+        header.insert(0, "Time [s]" if _is_number(first[0]) else "Time")
+    label = parsed[0][1][0].strip()
+    again = next((n for n, cells in parsed[len(block):] if cells and cells[0].strip() == label),
+                 None)
+    if again is not None:
+        raise ValueError(f"{path.name}, row {again} ({label!r}): a second block of the LabChart "
+                         "export begins (the record stopped and started again): expected one "
+                         "block per file; export each block as a file of its own and import "
+                         "each")
+    return [(number, header), *parsed[len(block):]]
 
 
 def _with_quoted_line_breaks(lines: list[tuple[int, str]]) -> list[tuple[int, str]]:
@@ -782,7 +865,8 @@ def _block_units(where: str, header: list[str], titles: list[list],
 # the unit may hold one parenthesis of its own: "Pressure [bar(g)]"
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*[(\[{](?P<unit>[^)\]}(]*(?:\([^)]*\))?[^)\]}]*)"
                         r"[)\]}]\s*$")
-_WORDS = re.compile(r"[\s_\-./:,]+")  # "Force, N": a unit after a comma
+#: "Force, N": a unit after a comma; "Date&Time", as a logger may name its clock
+_WORDS = re.compile(r"[\s_\-./:,&]+")
 #: a header's name ending in a pressure unit, and the mark that may follow it in brackets
 _MARKED_UNIT = re.compile(r"^(?P<name>.*?\S)[\s_,]+(?P<unit>m?bar|[km]?pa|psi)\s*$",
                           re.IGNORECASE)
@@ -812,6 +896,7 @@ NOT_UNITS = {"in", "at", "of", "per", "to", "a"}
 #: gauge suffixes (the toolkit's pressures are gauge pressures), the seconds written
 #: ``sec.``, German ``sek``, ``Sek.`` and ``msek`` (pint reads none), ``MSEC``, ``MV``, ``MA``
 #: and ``MMHG`` a millisecond, millivolt, milliampere and millimetre of mercury (pint: mega),
+#: ``H`` an hour (pint: the henry, which no bench logs),
 #: and ``LBS`` and ``KG`` (pint reads ``lbs`` and ``kg`` alone): a load cell's pounds or
 #: kilograms, refused as a mass naming ``--units force=lbf`` or ``kgf``
 LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", "pa": "Pa",
@@ -821,7 +906,7 @@ LAB_UNITS = {"-": "dimensionless", "bar": "bar", "mbar": "mbar", "barg": "bar", 
              "lbf": "lbf", "mm": "mm", "cm": "cm", "s": "s", "ms": "ms", "min": "min",
              "sek": "s", "sek.": "s", "sec.": "s", "sekunden": "s", "msek": "ms", "lbs": "lb",
              "msec": "ms", "usec": "us", "µsec": "us", "mv": "mV", "ma": "mA", "mmhg": "mmHg",
-             "kg": "kg"}
+             "kg": "kg", "h": "hour"}
 
 
 #: a pressure unit marked gauge as labs write it: bar g, bar(g), kPa (g), psi gauge, bar(ü),
@@ -927,6 +1012,8 @@ def parse_header(text: str) -> tuple[str, str | None]:
     match = _BRACKETED.match(text)
     if match and match.group("name").strip():
         name, unit = match.group("name"), match.group("unit").strip()
+        if not unit and (call := name.strip().lower()) in CLOCK_NAMES:  # an Arduino's millis()
+            return call, CLOCK_NAMES[call]
         # a pressure unit written after the name with its gauge or absolute mark in brackets
         # ("P bar(g)", "Druck bar(ü)", "p kPa (a)"): the unit is the two together
         marked = _MARKED_UNIT.match(name)
@@ -939,8 +1026,15 @@ def parse_header(text: str) -> tuple[str, str | None]:
         return words[0].lower(), CLOCK_NAMES[words[0].lower()]
     for k, word in enumerate(words[1:], start=1):
         unit = None if word.lower() in NOT_UNITS else parse_unit(word)
-        if unit is not None and any(_fits(unit, r) for r in ROLES.values()):
-            return _name(words[:k] + words[k + 1:]), word
+        if unit is None or not any(_fits(unit, r) for r in ROLES.values()):
+            continue
+        rest = _name(words[:k] + words[k + 1:])
+        named = next((r for r in ROLES.values() if r.matches(rest)), None)
+        # F_min, Kraft_min: a statistic of the quantity the rest names ('min' a minute only
+        # where the rest names a time, t_min)
+        if word.lower() in STATISTIC_WORDS and named is not None and not _fits(unit, named):
+            continue
+        return rest, word
     return _name(words), None
 
 
@@ -1345,6 +1439,8 @@ def recognise(table: RawTable, columns: dict[str, str] | None = None,
                 part.scale = each[k] if each is not None else scale
             column.scale = scale
     for column in [p for c in found.values() for p in c.parts or (c,)]:
+        if column.role not in units and not column.in_cells:
+            _refuse_mega_or_milli(table, column)
         _check_unit(table, column)
     if "time" in found and found["time"].unit is None:
         found["time"].excel_days = _excel_serial_days(table, found["time"])
@@ -1386,8 +1482,11 @@ def unread_columns(table: RawTable, role: str) -> list[tuple[str, str]]:
         name, unit = parse_header(header) if header else ("", None)
         why = ("a statistic" if statistic(name) else
                "the supply pressure, upstream of the regulator" if supply(name) else None)
-        if why and unit is not None and (parsed := parse_unit(unit)) is not None \
-                and _fits(parsed, ROLES[role]):
+        # without a unit, a statistic of the role's quantity by its name (F_min, p max)
+        of_role = ROLES[role].matches(" ".join(w for w in name.split()
+                                               if w not in STATISTIC_WORDS))
+        if why and (unit is None and of_role or unit is not None
+                    and (parsed := parse_unit(unit)) is not None and _fits(parsed, ROLES[role])):
             out.append((header, why))
     return out
 
@@ -1419,11 +1518,13 @@ ROW_COUNTER_MIN_ROWS = 3
 
 def counts_rows(table: RawTable, column: Column | None) -> bool:
     """Whether a time column is a logger's row counter, no clock: whole numbers stepping by
-    exactly 1 from 0 or 1 under a header without a unit, neither named by ``--columns`` nor
-    given one by ``--units``. Read as seconds they would be a 1 Hz clock, which the file does
-    not say (a 100 Hz record would last a hundred times as long)."""
+    exactly 1 (from 0, 1 or a count carried on, 100000) under a header without a unit that
+    names no clock of seconds since 1970, neither named by ``--columns`` nor given one by
+    ``--units``. Read as seconds they would be a 1 Hz clock, which the file does not say (a
+    100 Hz record would last a hundred times as long)."""
     if column is None or column.unit is not None or column.given or column.excel_days \
-            or column.parts or len(table.rows) < ROW_COUNTER_MIN_ROWS:
+            or column.parts or len(table.rows) < ROW_COUNTER_MIN_ROWS \
+            or parse_header(column.header)[0] in EPOCH_NAMES:
         return False
     raw = [row[column.index] for row in table.rows]
     values = _plain_numbers(raw, table.decimal)
@@ -1432,10 +1533,21 @@ def counts_rows(table: RawTable, column: Column | None) -> bool:
         read = [plain_number(cell, table.decimal) for cell in raw]
         rows = np.flatnonzero([v is not None for v in read])
         values = np.array([read[k] for k in rows], dtype=float)
-    # each number its row's: 0 or 1 on the first row, one more on each row below
-    return bool(2 * rows.size > len(raw) and rows.size >= ROW_COUNTER_MIN_ROWS
-                and values[0] - rows[0] in (0.0, 1.0)
-                and np.all(values - rows == values[0] - rows[0]))
+    # each number its row's: a whole number on the first row, one more on each row below
+    if 2 * rows.size <= len(raw) or rows.size < ROW_COUNTER_MIN_ROWS:
+        return False
+    start = values[0] - rows[0]
+    return bool(start >= 0 and start == round(start) and np.all(values - rows == start))
+
+
+def timed_rows(table: RawTable, rate_hz: float) -> tuple[RawTable, Column]:
+    """``table`` with a time column of its own, row ``k`` at ``k / rate_hz`` seconds, and that
+    column: a logger's rows written at the rate the lab states (``--sample-rate``) without
+    their clock, or with a row counter (:func:`counts_rows`)."""
+    header = f"rows at {rate_hz:g} Hz"
+    rows = [[*row, k / rate_hz] for k, row in enumerate(table.rows)]
+    return (replace(table, header=[*table.header, header], rows=rows),
+            Column("time", len(table.header), header, "s", given=True))
 
 
 def _header_named(table: RawTable, role: str, given: str) -> str:
@@ -1529,6 +1641,27 @@ def _check_unit(table: RawTable, column: Column) -> None:
                          f"{role.unit or 'percent'}){hint}")
 
 
+def _refuse_mega_or_milli(table: RawTable, column: Column) -> None:
+    """``ValueError`` for a header written in capitals whose unit's ``M`` may be mega or milli
+    (``FORCE (MN)``: a meganewton as pint reads it, a millinewton as a lab writing in capitals
+    may mean it), a million apart: not guessed. A header in mixed case says its prefix
+    (``Force (MN)`` mega, ``F [mN]`` milli), and :data:`LAB_UNITS` reads the capitals labs
+    use for one of them (``MPA``, ``MBAR``, ``MSEC``)."""
+    text = (column.unit or "").strip()
+    if not text.startswith("M") or " ".join(text.lower().split()) in LAB_UNITS \
+            or column.header != column.header.upper():
+        return
+    milli_text = "m" + text[1:]
+    mega, milli = parse_unit(text), parse_unit(milli_text)
+    if mega is None or milli is None or mega == milli \
+            or mega.dimensionality != milli.dimensionality:
+        return
+    raise ValueError(f"{table.name}: column {column.header!r}: {text!r} written in capitals "
+                     f"may be {milli_text!r} ({milli}) or {text!r} ({mega}), a million apart: "
+                     f"not guessed: expected --units {column.role}={milli_text} (or "
+                     f"{column.role}={text})")
+
+
 def _weight_unit(mass) -> str:
     """The force unit of the weight of ``mass``, a pint unit of mass: ``kgf`` for kg, ``gf``
     for g, ``lbf`` for lb (or lbs)."""
@@ -1619,23 +1752,29 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         return column.scale.values(read)
     if unit is not None and role.unit is not None:
         values = (values * parse_unit(unit)).to(role.unit or "dimensionless").magnitude
-    return _past_midnight(values) if column.role == "time" else values
+    if column.role != "time":
+        return values
+    clock = CLOCK_NAMES.get(parse_header(column.header)[0])
+    if clock is not None:  # an Arduino's micros() or millis(): its 32-bit counter overflows
+        values = _carried_on(values, float((CLOCK_WRAP * parse_unit(clock)).to("s").magnitude))
+    return _carried_on(values, _DAY_S)
 
 
-def _past_midnight(seconds: np.ndarray) -> np.ndarray:
-    """A time column of seconds since midnight (a logger's time of day as a number, every
-    reading within one day) whose count restarts at midnight, the readings after it a day
-    later, as a clock reading's are: a step back that lands one sampling interval (or two) past
-    midnight. Any other step back stays one, refused where the time is read."""
-    if seconds.size < 3 or seconds.min() < 0 or seconds.max() >= _DAY_S:
+def _carried_on(seconds: np.ndarray, period_s: float) -> np.ndarray:
+    """A time column whose count restarts each ``period_s`` (seconds since midnight, a logger's
+    time of day as a number; an Arduino's micros(), every ~71.6 min), every reading within one
+    period, carried on across each restart, as a clock reading's are: a step back that lands
+    one sampling interval (or two) past the period's end. Any other step back stays one,
+    refused where the time is read."""
+    if seconds.size < 3 or seconds.min() < 0 or seconds.max() >= period_s:
         return seconds
     step = np.diff(seconds)
     forward = step[step > 0]
     if not forward.size:
         return seconds
-    across = step + _DAY_S  # the time from the last reading of the day to the first after it
+    across = step + period_s  # the time from the period's last reading to the first after it
     wrapped = (step < 0) & (across > 0) & (across <= 2 * float(np.median(forward)))
-    return seconds + _DAY_S * np.cumsum(np.r_[0.0, wrapped]) if wrapped.any() else seconds
+    return seconds + period_s * np.cumsum(np.r_[0.0, wrapped]) if wrapped.any() else seconds
 
 
 def _check_loop(table: RawTable, column: Column, current_mA: np.ndarray) -> None:
@@ -1754,6 +1893,8 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
     slashed = _slashed_s(text, day_first)
     if slashed is not None:
         return "date-time", slashed
+    text = _YEAR_FIRST_SLASHED.sub(lambda m: f"{m['y']}-{int(m['m']):02d}-{int(m['d']):02d}",
+                                   text)
     iso = _ISO_ZONE.sub(lambda m: "+00:00" if m["zone"].upper() in ("UTC", "GMT")
                         else m["zone"], text)
     for parse in (lambda t: datetime.datetime.fromisoformat(iso.replace(",", ".")),
@@ -1771,6 +1912,9 @@ def _clock(cell, day_first: bool = False) -> tuple[str, float] | None:
 #: a clock's milliseconds after a third colon, as Keysight's BenchLink Data Logger writes them
 #: (``12/6/2026 14:05:00:123``): read as after a decimal mark
 _COLON_MILLISECONDS = re.compile(r"(?P<clock>\d{1,2}:\d{2}:\d{2}):(?P<ms>\d{3})$")
+#: a date written year first with slashes (2026/12/05 14:05:00.1, as some loggers write
+#: it): read as ISO 8601's 2026-12-05
+_YEAR_FIRST_SLASHED = re.compile(r"^(?P<y>\d{4})/(?P<m>\d{1,2})/(?P<d>\d{1,2})(?=[ T])")
 #: ISO 8601's basic format, without separators (20261206T090000.250Z)
 _ISO_BASIC = re.compile(r"^\d{8}T\d{6}")
 #: a date-time's zone written after a space, or named (' +01:00', ' Z', ' UTC'): ISO 8601
@@ -2227,6 +2371,8 @@ class Recognition:
     ignored: list[str] = field(default_factory=list)
     #: the header of a time column read as a row counter (:func:`counts_rows`), no clock
     row_counter: str | None = None
+    #: the rate its rows were logged at, as the lab states it (:func:`timed_rows`) [Hz]
+    sample_rate_hz: float | None = None
     _values: dict = field(default_factory=dict, repr=False)
 
     def values(self, role: str, optional: bool = False) -> np.ndarray:
@@ -2289,4 +2435,5 @@ class Recognition:
         return {**self.table.describe(),
                 "columns": {role: c.describe() for role, c in self.columns.items()},
                 "ignored_columns": self.ignored,
-                **({"row_counter_column": self.row_counter} if self.row_counter else {})}
+                **({"row_counter_column": self.row_counter} if self.row_counter else {}),
+                **({"sample_rate_hz": self.sample_rate_hz} if self.sample_rate_hz else {})}

@@ -72,6 +72,12 @@ def register(subparsers) -> None:
                      "(default: 0 V)")
     imp.add_argument("--current-range", default=None, metavar="ROLE=LOW:HIGH,...",
                      action=derived_help(_current_range_help))
+    imp.add_argument("--sample-rate", type=argtype(_sample_rate), default=None, metavar="HZ",
+                     help="the rate the table's rows were logged at, for a table without a "
+                     "time column (or whose time column counts the rows, 1, 2, 3, ...): row k "
+                     "at k/HZ seconds, read as a time series, e.g. 100 or 1kHz; recorded in "
+                     "run.json (default: none; the rows of a record without time are taken as "
+                     "evenly spaced, untimed)")
     imp.add_argument("--sheet", default=None, help="the workbook's sheet (default: every sheet "
                      "with a pressure and a force column, one run each)")
     imp.add_argument("--muscle", default=None, metavar="NAME",
@@ -139,6 +145,12 @@ def register(subparsers) -> None:
     exp.set_defaults(func=_export)
 
 
+def _sample_rate(text: str) -> float:
+    from mkm.bench.exchange import check_sample_rate
+
+    return check_sample_rate(parse_number(text, "--sample-rate", "Hz"))
+
+
 def _force_sign_help() -> str:
     from mkm.bench.exchange import FORCE_SIGNS
 
@@ -195,7 +207,7 @@ def _import(args) -> int:
             force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
             join=args.join_by_time, join_shift_s=args.join_shift,
             scaling=parse_scaling(args.sensitivity, args.offset_volts, args.current_range),
-            notify=lines.append,
+            sample_rate_hz=args.sample_rate, notify=lines.append,
             bar=bar)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)

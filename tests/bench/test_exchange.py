@@ -297,6 +297,12 @@ def test_export_as_workbook_and_csv(tmp_path, capsys):
     assert len(book["steps"]) == len(PRESSURES)
     meta = dict(zip(book["metadata"]["key"], book["metadata"]["value"], strict=True))
     assert meta["status"] == "imported" and meta["muscle.id"] == "lab-muscle-7"
+    # its samples have their times: a rate given is refused (it timed the steps sheet's rows,
+    # "no step found in the time series")
+    code, _, err = _run(["import", str(tmp_path / "run.xlsx"), "--sample-rate", "10", "--out",
+                         str(tmp_path / "again")], capsys)
+    assert code == 2 and err.count("\n") == 1 and ("--sample-rate 10 Hz: run.xlsx is a run mkm "
+                                                   "export wrote, its samples timed") in err
     code, out, _ = _run(["export", run, "--format", "csv", "--out", str(tmp_path / "csv")],
                         capsys)
     assert code == 0 and sorted(p.name for p in (tmp_path / "csv").iterdir()) == [

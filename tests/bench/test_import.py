@@ -469,12 +469,13 @@ def test_a_results_sheet_beside_the_measurements_is_no_run(tmp_path, mkm_cli):
     ("Fmax [N]", "force"), ("Kraft maximal [N]", "force"), ("Maximaldruck [bar]", "pressure"),
     ("pmax [bar]", "pressure"), ("Kraft maxi (N)", "force"), ("Spitzenwert Kraft [N]", "force"),
     ("Maximalwert Druck [bar]", "pressure"), ("Kraftspitze [N]", "force"),
-    ("Druckmaximum [bar]", "pressure")])
+    ("Druckmaximum [bar]", "pressure"), ("F_min", "force"), ("Kraft_min", "force"),
+    ("p_max", "pressure")])
 def test_a_statistic_compound_beside_the_reading_is_no_reading(header, role, tmp_path,
                                                               mkm_cli):
     # a German logger's running 'Maximalkraft' (the largest force so far) beside its 'Kraft':
     # its name ends as a force's does, so it was a second force column and the table was
-    # refused; alone, it was read as the force
+    # refused; alone, it was read as the force ('F_min' was refused as a force in minutes)
     force = thickwall_N(PRESSURES[:5], 0.0)
     largest = {"force": np.maximum.accumulate(force),
                "pressure": np.maximum.accumulate(PRESSURES[:5])}[role]
@@ -715,6 +716,30 @@ def test_milliseconds_since_midnight_go_on_past_midnight(tmp_path, mkm_cli):
     assert code == 2 and "the time goes backwards by 29.9 s" in err
 
 
+def test_an_arduinos_micros_clock_goes_on_past_its_32_bit_overflow(tmp_path, mkm_cli):
+    # an Arduino logger's micros() counts microseconds in an unsigned 32-bit integer: after
+    # 2**32 us (4294.967296 s, ~71.6 min) it starts from 0 again; a long record crossing it
+    # was refused, "the time goes backwards by 4295 s"
+    t = np.arange(0.0, 60.0, 0.01)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    start_us = 2**32 - 30_000_000  # the counter overflows 30 s into the record
+    path = tmp_path / "arduino.csv"
+    pd.DataFrame({"micros": (start_us + np.round(t * 1e6).astype(np.int64)) % 2**32,
+                  "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(
+        path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert "'micros' -> time [us -> s]" in err
+    np.testing.assert_allclose(run.samples["time_s"], start_us * 1e-6 + t, atol=1e-6)
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    # a jump back by anything else (another session appended) is still refused
+    pd.DataFrame({"micros": np.r_[t[:3000], t[:3000]] * 1e6, "Druck [bar]": p,
+                  "Kraft [N]": thickwall_N(p, 0.0)}).to_csv(path, index=False, sep=";")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and "cell A3002 (column 'micros'): the time goes backwards by 29.99 s" in err
+
+
 def test_a_time_series_without_a_step_names_the_option_that_makes_each_row_one(tmp_path,
                                                                                  mkm_cli):
     # a logger's holds written 1 s apart, too few samples for a plateau or a ramp's bins: was
@@ -785,7 +810,8 @@ def test_a_logger_timestamp_column_makes_a_time_series(header, tmp_path, mkm_cli
 @pytest.mark.parametrize("header", ["Messzeit [s]", "Zeit seit Start [s]", "Relative Time [s]",
                                     "Runtime (s)", "Laufzeit [s]", "Temps (s)",
                                     "Temps écoulé (s)", "Time  1 - default sample rate [s]",
-                                    "Zeit  1 - Standardmessrate [s]"])
+                                    "Zeit  1 - Standardmessrate [s]", "Tempo [s]",
+                                    "Tiempo (s)", "Tijd [s]"])
 def test_an_elapsed_time_column_by_its_lab_name_makes_a_time_series(header, tmp_path,
                                                                      mkm_cli):
     # was: not recognised, the 1-per-second record read as 23 steps of one row each
@@ -1056,11 +1082,12 @@ def test_a_column_of_date_times_by_a_name_unknown_is_read_or_named(header, tmp_p
                 f"time={header!r} reads the table as a time series") in err
 
 
-@pytest.mark.parametrize("first", [0, 1])
+@pytest.mark.parametrize("first", [0, 1, 100_000])
 def test_a_time_column_counting_the_rows_is_no_clock(first, tmp_path, mkm_cli):
     # a logger's 'Zeitpunkt' holding row numbers (1, 2, 3, ...) of a 100 Hz staircase: read as
     # seconds, a 1 Hz clock, its 1 s steps between holds became 100 s ramps and the record
-    # was binned as a ramp of 40 steps
+    # was binned as a ramp of 40 steps; so was a count carried on from an earlier record
+    # (100000, 100001, ...)
     t = np.arange(0.0, 60.0, 0.01)
     levels = [1.0, 2.0, 2.5]
     p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
@@ -1114,6 +1141,92 @@ def test_a_row_counter_with_a_summary_or_a_blank_cell_is_no_clock(edit, tmp_path
     assert "column 'Zeitpunkt' counts the rows" in err
     assert run.meta.imported_from["shape"] == "staircase"
     np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+
+
+@pytest.mark.parametrize("counter", [False, True])
+def test_sample_rate_times_the_rows_of_a_table_without_a_clock(counter, tmp_path, mkm_cli):
+    # a logger's 100 Hz staircase saved without its clock (or with a row counter): its rows
+    # could only be taken as evenly spaced, untimed, and no option said the rate
+    t = np.arange(0.0, 60.0, 0.01)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    frame = pd.DataFrame({"Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)})
+    if counter:
+        frame.insert(0, "Zeitpunkt", np.arange(1, t.size + 1))
+    path = tmp_path / "logger.csv"
+    frame.to_csv(path, index=False, sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "100")
+    assert "'rows at 100 Hz' -> time [s]" in err
+    if counter:
+        assert ("column 'Zeitpunkt' counts the rows (whole numbers stepping by 1, no unit), no "
+                "clock: the rows timed at 100 Hz (--sample-rate)") in err
+    recorded = run.meta.imported_from
+    assert recorded["sample_rate_hz"] == 100.0 and recorded["shape"] == "staircase"
+    assert recorded["columns"]["time"]["column"] == "rows at 100 Hz"
+    # row k at k / 100 Hz: the file's own times, to steps.csv's 6 significant digits
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-9)
+    steps = run.steps
+    np.testing.assert_allclose(steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    # each hold timed in seconds: it starts where the ramp onto it enters its 0.03 bar band
+    # (1, 1 and 0.5 bar/s) and ends where the ramp off it leaves (1, 0.5 and 2.5 bar/s), to
+    # two samples
+    band_bar = 0.03
+    np.testing.assert_allclose(steps["start_s"], np.array([6.0, 17.0, 28.0])
+                               - band_bar / np.array([1.0, 1.0, 0.5]), atol=0.02)
+    np.testing.assert_allclose(steps["end_s"], np.array([16.0, 27.0, 38.0])
+                               + band_bar / np.array([1.0, 0.5, 2.5]), atol=0.02)
+    # a rate with its unit is converted
+    (fast,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "1kHz")
+    assert fast.meta.imported_from["sample_rate_hz"] == 1000.0
+    assert fast.samples["time_s"].iloc[-1] == pytest.approx((t.size - 1) / 1000.0)
+    # a rate too low, its rows 2 s apart, makes each row a step: the line names the rate (no
+    # --units time=ms, which no column of the file takes)
+    (slow,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "0.5")
+    assert ("as a record's samples do: if they were logged faster than 0.5 Hz, import again "
+            "with the --sample-rate they were") in err and "--units time=ms" not in err
+
+
+@pytest.mark.parametrize("rate, why", [
+    ("0", "--sample-rate 0 Hz is invalid: expected the rate the table's rows were logged at, a "
+          "finite number > 0 Hz"),
+    ("-100", "--sample-rate -100 Hz is invalid"),
+    ("inf", "--sample-rate='inf' is not a finite number: expected a number in Hz"),
+    ("5bar", "--sample-rate='5bar': 'bar' is not a unit of the same kind as Hz"),
+    # finite, but its period 1/HZ is not: every row after the first at an infinite time
+    ("1e-320", "Hz is invalid: expected the rate the table's rows were logged at")])
+def test_a_sample_rate_that_is_none_is_refused(rate, why, tmp_path, mkm_cli):
+    path = tmp_path / "logger.csv"
+    path.write_text("Druck [bar];Kraft [N]\n0;0\n1;100\n2;210\n", encoding="utf-8")
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", f"--sample-rate={rate}",
+                              "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1 and why in err
+    assert not (tmp_path / "runs").exists()
+
+
+def test_a_sample_rate_for_a_table_with_a_clock_is_refused(tmp_path, mkm_cli):
+    # the file's clock and the rate given may disagree: neither is chosen unsaid
+    path = tmp_path / "logger.csv"
+    path.write_text("Zeit [s];Druck [bar];Kraft [N]\n0;0;0\n0.1;1;100\n0.2;2;210\n",
+                    encoding="utf-8")
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--sample-rate", "10",
+                            "--out", str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("--sample-rate 10 Hz: logger.csv has a time column, 'Zeit [s]': expected the option "
+            "only for a table without one") in err
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--sample-rate", "10",
+                            "--join-by-time", str(path), "--out", str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert "--sample-rate 10 Hz with --join-by-time logger.csv: expected a time column" in err
+    assert not (tmp_path / "runs").exists()
+    # a clock by a name the reader does not know: the rate times the rows, and the line names
+    # the column the file's clock may be
+    path.write_text("Messung am;Druck [bar];Kraft [N]\n05.12.2026 14:05:00;0;0\n"
+                    "05.12.2026 14:05:01;1;100\n05.12.2026 14:05:02;2;210\n", encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "10",
+                          "--one-step-per-row")
+    assert ("column 'Messung am' holds times but is not read as the time column: the rows timed "
+            "at 10 Hz (--sample-rate); if it is the record's clock, --columns time='Messung am' "
+            "without --sample-rate reads the table as a time series") in err
 
 
 def test_a_row_counter_is_no_clock_to_join_by(tmp_path, mkm_cli):

@@ -13,6 +13,7 @@ from mkm.bench.tables import (
     Recognition,
     check_channel_times,
     column_values,
+    counts_rows,
     directions,
     parse_assignments,
     parse_header,
@@ -41,7 +42,13 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     ("set_pressure_bar", "set pressure", "bar"), ("Time in s", "time", "s"),
     ("zero_entry", "zero entry", None), ("Pressure, bar", "pressure", "bar"),
     ("eps (%", "eps (%", None),  # a bracket left open: no unit, and no traceback
-    ("Force, kN", "force", "kN"),
+    ("Force, kN", "force", "kN"), ("Date&Time", "date time", None),
+    # 'min' after a force's or a pressure's name is their minimum, no minute; after a time's
+    # name it is the minute
+    ("F_min", "f min", None), ("Kraft_min", "kraft min", None), ("p_min", "p min", None),
+    ("t_min", "t", "min"), ("Zeit_min", "zeit", "min"),
+    # an Arduino sketch's header naming the call it logs: was a time in seconds
+    ("millis()", "millis", "ms"), ("micros()", "micros", "us"),
 ])
 def test_headers_in_common_spellings(header, name, unit):
     assert parse_header(header) == (name, unit)
@@ -149,6 +156,36 @@ def test_unit_spellings_pint_reads_otherwise(tmp_path):
     np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1], rtol=1e-12)
     np.testing.assert_allclose(column_values(table, found["pressure"]), [PSI_BAR, 2 * PSI_BAR],
                                rtol=1e-12)
+    # ... and H an hour: was pint's henry, refused as "not a unit of time" (TIME_H: no time)
+    for header in ("TIME (H)", "TIME_H"):
+        table, found = _one(tmp_path, f"{header},PRESSURE (BAR),FORCE (N)\n0,1,1\n0.5,2,2\n",
+                            "e.csv")
+        assert found["time"].header == header
+        np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 1800.0],
+                                   rtol=1e-12)
+
+
+def test_a_mega_or_milli_prefix_in_a_header_of_capitals_is_not_guessed(tmp_path):
+    # 'FORCE (MN)' of a logger writing in capitals was read as meganewtons, a lab's
+    # millinewtons a million times too large (refused only as beyond any load cell)
+    text = "PRESSURE (BAR),FORCE (MN)\n1,500\n2,1000\n"
+    with pytest.raises(ValueError, match=re.escape(
+            "lab.csv: column 'FORCE (MN)': 'MN' written in capitals may be 'mN' (millinewton) "
+            "or 'MN' (meganewton), a million apart: not guessed: expected --units force=mN (or "
+            "force=MN)")):
+        _one(tmp_path, text)
+    path = tmp_path / "given.csv"
+    path.write_text(text, encoding="utf-8")
+    (table,) = read_tables(path)
+    found = recognise(table, units={"force": "mN"})
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.5, 1.0], rtol=1e-12)
+    # a header in mixed case says its prefix; capitals labs use for one prefix are read so
+    table, found = _one(tmp_path, "Pressure (bar),Force (MN)\n1,5e-4\n2,1e-3\n", "mega.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [500, 1000], rtol=1e-12)
+    table, found = _one(tmp_path, "P [bar],F [mN]\n1,500\n2,1000\n", "milli.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [0.5, 1.0], rtol=1e-12)
+    table, found = _one(tmp_path, "PRESSURE (MPA),FORCE (N)\n0.1,5\n0.2,10\n", "mpa.csv")
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [1.0, 2.0], rtol=1e-12)
 
 
 @pytest.mark.parametrize("header", ["Zeit [sek]", "Zeit [Sek.]", "Time (sec.)", "Zeit_sek"])
@@ -320,6 +357,20 @@ def test_a_compound_or_translated_header_names_its_role(header, role, tmp_path):
     np.testing.assert_allclose(column_values(table, found[role]), [scale])
 
 
+@pytest.mark.parametrize("header, role", [
+    ("Pressione", "pressure"), ("Presión", "pressure"), ("Pressão", "pressure"),
+    ("Druk", "pressure"), ("Forza", "force"), ("Fuerza", "force"), ("Força", "force"),
+    ("Kracht", "force"), ("Tempo", "time"), ("Tiempo", "time"), ("Tijd", "time")])
+def test_italian_spanish_portuguese_and_dutch_names_are_read(header, role, tmp_path):
+    # an Italian, Spanish, Portuguese or Dutch lab's columns: without a unit they were no
+    # column ("no pressure or force column"), and a time column by its unit only named, the
+    # record read untimed
+    other = {"time": "Forza", "pressure": "Tempo", "force": "Tempo"}[role]
+    table, found = _one(tmp_path, f"{header};{other}\n1;2\n")
+    assert found[role].header == header
+    np.testing.assert_allclose(column_values(table, found[role]), [1.0])
+
+
 @pytest.mark.parametrize("other", ["T [°C]", "P [W]", "F [Hz]"])
 def test_a_symbol_of_another_quantity_is_no_reading(other, tmp_path):
     # a temperature logged beside the record as 'T [°C]' was a second time column (the table
@@ -457,6 +508,17 @@ def test_a_unix_time_column_is_the_time(header, tmp_path):
     np.testing.assert_allclose(np.diff(column_values(table, found["time"])), [0.1], rtol=1e-6)
 
 
+def test_a_unix_time_column_of_whole_seconds_is_no_row_counter(tmp_path):
+    # a 1 Hz logger's seconds since 1970 step by 1 as a row counter carried on does: its name
+    # says they are seconds
+    table, found = _one(tmp_path, "unix_time,P [bar],F [N]\n1765011600,0,1\n"
+                        "1765011601,0.5,2\n1765011602,1,3\n")
+    assert not counts_rows(table, found["time"])
+    table, found = _one(tmp_path, "Zeitpunkt,P [bar],F [N]\n1765011600,0,1\n"
+                        "1765011601,0.5,2\n1765011602,1,3\n", "counter.csv")
+    assert counts_rows(table, found["time"])
+
+
 def test_a_quoted_comment_over_two_lines_is_one_cell(tmp_path):
     # Excel writes a cell holding a line break (Alt+Enter in a comment) quoted over two lines:
     # was "cell A4 (column 'P [bar]'): 'Anschluss' is not a number"
@@ -568,6 +630,38 @@ LABVIEW_LVM = (
     "***End_of_Header***\t\nX_Value\tDruck\tKraft\tComment\n"
     "0.000000\t0.000000\t0.035000\t\n0.100000\t250.000000\t2.730000\t\n"
     "0.200000\t800.000000\t8.660000\t\n")
+
+
+#: a LabChart (ADInstruments) text export of 3 samples at 10 Hz, its time column included
+LABCHART_TXT = (
+    "Interval=\t0.1 s\nExcelDateTime=\t4.6361586805555557e+04\t05.12.2026 14:05:00,000000\n"
+    "TimeFormat=\tStartOfBlock\nDateFormat=\t\nChannelTitle=\tDruck\tKraft\n"
+    "Range=\t10.000 V\t2.000 V\nUnitName=\tkPa\tN\nTopValue=\t1000\t2000\n"
+    "BottomValue=\t0\t-2000\n0.000\t0.0\t3.0\n0.100\t250.0\t253.0\n0.200\t800.0\t803.0\n")
+
+
+@pytest.mark.parametrize("timed", [True, False])
+def test_a_labchart_text_export_is_read_by_its_channel_titles_and_units(timed, tmp_path):
+    # its header block's TopValue= and BottomValue= rows hold numbers: taken for the first
+    # rows of data, under 'UnitName=;kPa;N' as the header ("no pressure or force column")
+    text = LABCHART_TXT
+    if not timed:  # exported without its time column, decimal commas on a German PC
+        text = "\n".join(line.split("\t", 1)[1].replace(".", ",") if line[0].isdigit() else line
+                         for line in text.splitlines()) + "\n"
+    table, found = _one(tmp_path, text, "labchart.txt")
+    assert table.header == ["Time [s]"] * timed + ["Druck [kPa]", "Kraft [N]"]
+    assert table.header_row == 5 and table.row_numbers == [10, 11, 12]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 2.5, 8.0])
+    np.testing.assert_allclose(column_values(table, found["force"]), [3.0, 253.0, 803.0])
+    if timed:
+        np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1, 0.2])
+    else:
+        assert "time" not in found and table.decimal == ","
+    # a record stopped and started again: a second block, its header block under the rows
+    block = "".join(text.splitlines(keepends=True)[:9])
+    with pytest.raises(ValueError, match=re.escape(
+            "two.txt, row 13 ('Interval='): a second block of the LabChart export begins")):
+        _one(tmp_path, text + block + text.splitlines(keepends=True)[-1], "two.txt")
 
 
 @pytest.mark.parametrize("name, text, header, title_rows, force", [
@@ -797,6 +891,25 @@ def test_a_loggers_units_row_under_the_names(tmp_path):
     assert table.header == ["P", "F"] and set(found) == {"pressure", "force"}
 
 
+@pytest.mark.parametrize("units", ["# s, kPa, kN", "#s,kPa,kN", "#,s,kPa,kN", "# [s],[kPa],[kN]"])
+def test_a_units_row_marked_as_a_comment_is_the_units_row(units, tmp_path):
+    # a logger marks its units row with '#' so that other readers skip it: it was dropped as
+    # a comment, and the kPa and kN read as bar and N
+    table, found = _one(tmp_path, f"Zeit,Druck,Kraft\n{units}\n0,0,0.0015\n0.1,150,0.01225\n")
+    assert table.header == ["Zeit [s]", "Druck [kPa]", "Kraft [kN]"]
+    assert table.header_row == 1 and table.row_numbers == [3, 4]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+
+
+@pytest.mark.parametrize("comment", ["# Messung 7, Prüfstand 2", "# s, kPa", "# 0, 0, 0"])
+def test_a_comment_under_the_names_that_is_no_units_row_stays_a_comment(comment, tmp_path):
+    # words, fewer units than names, or numbers: a comment, as before
+    table, found = _one(tmp_path, f"Zeit,Druck,Kraft\n{comment}\n0,0,1.5\n0.1,1.5,12.25\n")
+    assert table.header == ["Zeit", "Druck", "Kraft"] and table.row_numbers == [3, 4]
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.5, 12.25])
+
+
 def test_a_units_row_with_a_temperature_and_a_displacement_is_read(tmp_path):
     # a US logger's units row under its names, with a temperature in °F and a displacement in
     # inches beside the readings: was no units row (°F and in are no role's units), so the
@@ -941,6 +1054,9 @@ def test_numbers_in_scientific_notation(tmp_path):
     # BenchLink's milliseconds after a third colon, in a date-time and a time of day
     (["12/6/2026 14:05:00:900", "12/6/2026 14:05:01:150"], [0.0, 0.25]),
     (["23:59:59:900", "00:00:00:100"], [0.0, 0.2]),
+    # a logger's date year first with slashes
+    (["2026/12/05 23:59:59.75", "2026/12/06 00:00:00.25", "2026/12/6 00:00:01"],
+     [0.0, 0.5, 1.25]),
 ])
 def test_times_of_day_and_date_times_as_excel_and_loggers_write_them(cells, seconds, tmp_path):
     # were: "cell A2 (column 'Time'): '11:59:59.5 AM' is not a number", "'20261206T090000.000Z'
@@ -948,6 +1064,14 @@ def test_times_of_day_and_date_times_as_excel_and_loggers_write_them(cells, seco
     rows = "".join(f"{c};{k};{k}\n" for k, c in enumerate(cells))
     table, found = _one(tmp_path, f"Time;P [bar];F [N]\n{rows}")
     np.testing.assert_allclose(column_values(table, found["time"]), seconds, atol=1e-9)
+
+
+def test_a_date_and_time_column_is_the_clock(tmp_path):
+    # 'Date&Time' was no time's name: the record was read untimed, its clock left out
+    table, found = _one(tmp_path, "Date&Time,Druck [bar],Kraft [N]\n2026/12/05 14:05:00.0,0,0\n"
+                        "2026/12/05 14:05:00.5,1,100\n")
+    assert found["time"].header == "Date&Time"
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.5], atol=1e-9)
 
 
 def test_a_time_cell_that_is_no_time_is_named_as_such(tmp_path):
