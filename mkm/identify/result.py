@@ -49,6 +49,7 @@ from mkm.fem.calibration import (
 )
 from mkm.fem.ladder import MODELS
 from mkm.fem.materials import SILASTIC_S
+from mkm.fem.options import BRAIDS
 from mkm.identify.fitting import GEOMETRY, STATIC_NAMES, Fit, full_parameters, geometry, rubber
 from mkm.identify.goodness import Goodness
 from mkm.identify.intervals import robust_covariance
@@ -411,9 +412,9 @@ class Identification:
                     f"{g.reduced:.3g}): calibration.json is ready for --calibration (mkm "
                     "report, design, fem solve)")
         return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"
-                f"{g.birge_ratio:.3g} and the estimates may be biased; the notes above name "
-                "what the runs show that the fit lacks: act on them before using "
-                "calibration.json")
+                f"{g.birge_ratio:.3g} and the estimates may be biased; "
+                f"{braid_first(self.rubber)}the notes above name what the runs show that the "
+                "fit lacks: act on them before using calibration.json")
 
     def _unjudged_line(self) -> str:
         """Without the steps' noise (a table: one value per step) no chi-square says whether
@@ -542,3 +543,16 @@ def _box_cut(rubber: dict) -> str:
     cut = rubber.get("ratio_box_cut")
     return (f"; open where the {rubber['searched_with']}'s box stopped the search, at C01/C10 "
             + " and ".join(f"{r:.3g}" for r in cut) if cut else "")
+
+
+def braid_first(rubber: dict) -> str:
+    """What a misfit's verdict says first when the runs reject Silastic S's rubber ratio but
+    one rubber scale at it was kept because the braid is in doubt (a braid the model does not
+    have bends the curve as another ratio would): the braid given, the ratio is fitted, which
+    such runs need before anything the notes name; else ''."""
+    if rubber.get("separated") or not (rubber.get("rejects_silastic_ratio")
+                                       and rubber.get("braid_in_doubt")):
+        return ""
+    return ("first, the runs reject Silastic S's rubber ratio, kept only because the braid is "
+            f"not given: identify again with the muscle's braid ("
+            f"{' or '.join(f'--braid {b}' for b in BRAIDS)}) and the ratio is fitted; then ")
