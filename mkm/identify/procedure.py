@@ -684,7 +684,8 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     share_box = tuple(free.bounds["c01_fraction"])
     if share_box != fitting.TERM_BOUNDS["c01_fraction"] and fitting.at_edge(
             free.values["c01_fraction"], share_box):
-        return best, None, {"separated": False, "why": "C01's share reached the search box "
+        return best, None, {"separated": False, "box_stopped": True,
+                            "why": "C01's share reached the search box "
                             f"({source.name}'s) before the runs fixed it"}, None
     boot = bootstrap(free, seed=seed, **instrument_terms(runs),
                      uniform_terms=shared_terms(source, runs, free))

@@ -413,7 +413,7 @@ class Identification:
                     "report, design, fem solve)")
         return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"
                 f"{g.birge_ratio:.3g} and the estimates may be biased; "
-                f"{braid_first(self.rubber)}the notes above name what the runs show that the "
+                f"{ratio_first(self.rubber)}the notes above name what the runs show that the "
                 "fit lacks: act on them before using calibration.json")
 
     def _unjudged_line(self) -> str:
@@ -545,11 +545,16 @@ def _box_cut(rubber: dict) -> str:
             + " and ".join(f"{r:.3g}" for r in cut) if cut else "")
 
 
-def braid_first(rubber: dict) -> str:
-    """What a misfit's verdict says first when the runs reject Silastic S's rubber ratio but
-    one rubber scale at it was kept because the braid is in doubt (a braid the model does not
-    have bends the curve as another ratio would): the braid given, the ratio is fitted, which
-    such runs need before anything the notes name; else ''."""
+def ratio_first(rubber: dict) -> str:
+    """What a misfit's verdict says first when the rubber's ratio was not tested as the runs
+    can test it: C01's share stopped by the surrogate's box (the FE model's search has the
+    whole range), or the runs reject Silastic S's ratio but one rubber scale at it was kept
+    because the braid is in doubt (a braid the model does not have bends the curve as another
+    ratio would; the braid given, the ratio is fitted); else ''."""
+    if rubber.get("box_stopped"):
+        return ("first, C01's share reached the surrogate's box before the runs fixed it: "
+                "identify again with --search model (the FE model searches the ratio's whole "
+                "range; slower); then ")
     if rubber.get("separated") or not (rubber.get("rejects_silastic_ratio")
                                        and rubber.get("braid_in_doubt")):
         return ""
