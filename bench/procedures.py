@@ -496,8 +496,9 @@ def fit_loadcell(mass_kg, volts) -> dict:
 
     The cell is linear: ``volts = force_N / sensitivity_N_per_V + offset_V`` with
     ``force_N = mass_kg * g`` (standard gravity). Returns the sensitivity [N/V], the offset [V],
-    the masses and volts fitted, R^2, the standard error of the sensitivity and the largest
-    residual in newtons.
+    the masses and volts fitted, R^2, the standard error of the sensitivity, its 95 % interval's
+    half-width as a fraction of it (Student's t on n - 2 degrees of freedom; NaN with two
+    masses, which leave no residual to judge it by) and the largest residual in newtons.
     """
     m = np.asarray(mass_kg, dtype=float)
     v = np.asarray(volts, dtype=float)
@@ -513,10 +514,12 @@ def fit_loadcell(mass_kg, volts) -> dict:
                          "expected a tension load cell wired with the positive sign")
     sensitivity = 1.0 / fit.slope
     residual_N = (v - (fit.intercept + fit.slope * force)) * sensitivity
+    stderr = float(fit.stderr / fit.slope**2) if m.size > 2 else float("nan")
     return {"sensitivity_N_per_V": float(sensitivity), "offset_V": float(fit.intercept),
             "mass_kg": m.tolist(), "volts": v.tolist(), "r_squared": float(fit.rvalue**2),
-            "sensitivity_stderr_N_per_V": float(fit.stderr / fit.slope**2)
-            if m.size > 2 else float("nan"),
+            "sensitivity_stderr_N_per_V": stderr,
+            "sensitivity_U95_fraction": float(stats.t.ppf(0.975, m.size - 2) * stderr
+                                              / sensitivity) if m.size > 2 else float("nan"),
             "max_abs_residual_N": float(np.abs(residual_N).max()), "n_points": int(m.size)}
 
 

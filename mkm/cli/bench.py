@@ -11,6 +11,7 @@ backends of :mod:`mkm.bench.backends`.
 
 from __future__ import annotations
 
+import math
 import sys
 
 from mkm.cli.common import (
@@ -287,10 +288,19 @@ def _calibrate_loadcell(args) -> int:
         except BenchError as exc:
             return _failed(args, exc)
     # stdout: the block to paste into the config; stderr: the fit, for the operator
-    print(f"sensitivity_N_per_V = {out['sensitivity_N_per_V']:.4f}, offset_V = "
+    spread = out["sensitivity_U95_fraction"]
+    interval = (f"+-{100 * spread:.2g} % at 95 %" if math.isfinite(spread) else
+                "no interval from two masses: hang three or more to judge it")
+    print(f"sensitivity_N_per_V = {out['sensitivity_N_per_V']:.4f} ({interval}), offset_V = "
           f"{out['offset_V']:.5f} (R^2 {out['r_squared']:.6f}, largest residual "
           f"{out['max_abs_residual_N']:.3f} N over {out['n_points']} masses)", file=sys.stderr)
     print(loadcell_table(out, config, provenance()))
+    declared = config.loadcell.sensitivity_tolerance_fraction
+    if spread > declared:  # the budget's gain term would claim more than the fit knows
+        say(args, "warning", f"the fitted sensitivity's 95 % interval, +-{100 * spread:.2g} %, "
+            f"is wider than loadcell.sensitivity_tolerance_fraction = {declared:g} declares: "
+            f"declare at least {spread:.2g} there, or calibrate again with more masses up to "
+            "the cell's capacity")
     if refused := refused_fit(out, config):
         say(args, "warning", f"this [loadcell] pasted into {args.config or 'the config'} is "
             f"refused: {refused}; lower capacity_N to what the cell reads before its rail, or "

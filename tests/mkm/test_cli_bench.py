@@ -122,6 +122,31 @@ def test_calibrate_loadcell_prints_the_toml_block(capsys):
     assert config.loadcell.sensitivity_N_per_V == pytest.approx(196.133, rel=1e-6)
 
 
+def test_calibrate_loadcell_says_how_sure_its_sensitivity_is(capsys):
+    # was: the fit's standard error computed and never shown, so a user could not judge the
+    # sensitivity_tolerance_fraction the budget takes (0.1 %) against three masses of 0-2 kg
+    import numpy as np
+    from scipy import stats
+
+    masses, volts = [0.0, 1.0, 2.0], [0.01, 0.06, 0.1105]
+    assert main(["calibrate-loadcell", "--masses", "0,1,2", "--volts", "0.01,0.06,0.1105"]) == 0
+    err = capsys.readouterr().err
+    # the straight line's own covariance: the slope's sd from numpy, then 1/slope's
+    force = np.array(masses) * 9.80665
+    (slope, _), cov = np.polyfit(force, volts, 1, cov="unscaled")
+    residual = np.array(volts) - np.polyval([slope, _], force)
+    sd = np.sqrt(cov[0, 0] * residual @ residual / (len(masses) - 2))
+    half = stats.t.ppf(0.975, 1) * sd / slope  # the fraction of the sensitivity 1/slope
+    assert f"({f'+-{100 * half:.2g}'} % at 95 %)" in err
+    assert (f"warning: the fitted sensitivity's 95 % interval, +-{100 * half:.2g} %, is wider than "
+            "loadcell.sensitivity_tolerance_fraction = 0.001 declares: declare at least "
+            f"{half:.2g} there, or calibrate again with more masses") in err
+    assert main(["calibrate-loadcell", "--masses", "0,10", "--volts", "0.01,0.51"]) == 0
+    err = capsys.readouterr().err
+    assert "(no interval from two masses: hang three or more to judge it)" in err
+    assert "warning" not in err
+
+
 def test_calibrate_loadcell_says_how_its_block_was_fitted(capsys):
     # was: the block alone, pasted into the config and copied into every run folder with no
     # word of when, by which command and code, from which masses and volts, nor how well
