@@ -538,17 +538,44 @@ def box_edges(row, box: dict, calibration: Calibration | None = None) -> list[st
     An end at the practical range's limit is none: the search refuses a box beyond it."""
     edges = [f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})"
              for name, at, unit, end, (low, high), at_limit in _ends(row, box) if not at_limit]
-    rubbers = list(box.get("rubber", []))
-    C10 = {r: rubber_of(r, calibration).C10_MPa for r in rubbers}
-    if len(set(C10.values())) > 1 and "rubber" in row:
-        at = C10[str(row["rubber"])]
-        end = ("softest" if at == min(C10.values()) else
-               "stiffest" if at == max(C10.values()) else "")
-        if end:
-            searched = ", ".join(f"{r} {C10[r]:.4g}" for r in rubbers)
-            edges.append(f"rubber = {row['rubber']} (C10 {at:.4g} MPa, the {end} of those "
-                         f"searched: {searched} MPa)")
+    end, C10 = _rubber_end(row, box, calibration)
+    if end:
+        searched = ", ".join(f"{r} {c:.4g}" for r, c in C10.items())
+        edges.append(f"rubber = {row['rubber']} (C10 {C10[str(row['rubber'])]:.4g} MPa, the "
+                     f"{end}est of those searched: {searched} MPa)")
     return edges
+
+
+def _rubber_end(row, box: dict, calibration: Calibration | None) -> tuple[str, dict]:
+    """``("soft" or "stiff" or "", {rubber: C10_MPa})``: whether a design ``row``'s rubber is
+    the softest or the stiffest of several searched in ``box``."""
+    C10 = {r: rubber_of(r, calibration).C10_MPa for r in box.get("rubber", [])}
+    if len(set(C10.values())) < 2 or "rubber" not in row:
+        return "", C10
+    at = C10[str(row["rubber"])]
+    return ("soft" if at == min(C10.values()) else "stiff" if at == max(C10.values())
+            else ""), C10
+
+
+def larger_box(row, box: dict, calibration: Calibration | None = None,
+               what: str = "a better design") -> str:
+    """``a larger box might hold WHAT: widen it, e.g. --D0 20:50 --t0 1:4``: the options that
+    widen each searched range whose end a design ``row`` sits on (:func:`box_edges`), that end
+    moved out by half the range's span, no further than the practical range's limit (a search
+    refuses a box beyond it), and ``--rubber`` where the rubber is an end of those searched."""
+    options = []
+    for name, _, _, end, (low, high), at_limit in _ends(row, box):
+        if not at_limit:
+            key = next(k for k, n in BOX_NAMES.items() if n == name)
+            limit_low, limit_high = getattr(PRACTICAL_RANGE, key)
+            half = (high - low) / 2
+            options.append(f"--{name} " + (span_text(max(low - half, limit_low), high)
+                                           if end == "lower" else
+                                           span_text(low, min(high + half, limit_high))))
+    widen = f": widen it, e.g. {' '.join(options)}" if options else ""
+    if end := _rubber_end(row, box, calibration)[0]:
+        widen += f"{'; or' if options else ':'} add a {end}er rubber to --rubber"
+    return f"a larger box might hold {what}{widen}"
 
 
 def range_limits(row, box: dict) -> list[str]:
@@ -662,7 +689,9 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
     if edges := result.edges(closest):  # the box, not the physics, may be short
         ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
         edge = (f"; it sits on the edge of the search box {box_text(ranges)}: "
-                f"{', '.join(edges)}; a larger box might hold a design that meets them")
+                f"{', '.join(edges)}; "
+                + larger_box(closest, result.constraints, result.calibration,
+                             "a design that meets them"))
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
             + "; ".join(parts) + edge

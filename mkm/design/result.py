@@ -17,6 +17,7 @@ from mkm.design.box_search import (
     Search,
     box_text,
     geometry_text,
+    larger_box,
     outside_practical_range,
     pick,
     range_limits,
@@ -137,8 +138,8 @@ class DesignResult:
             ranges = {k: v for k, v in s.constraints.items()
                       if k in BOX_NAMES and v[1] > v[0]}
             notes.append(f"the chosen design sits on the edge of the search box "
-                         f"{box_text(ranges)}: {', '.join(edges)}; a larger box might hold a "
-                         "better design")
+                         f"{box_text(ranges)}: {', '.join(edges)}; "
+                         + larger_box(best, s.constraints, s.calibration))
         if best is not None and (limits := range_limits(best, s.constraints)):
             notes.append(f"the chosen design sits on the practical range's limit: "
                          f"{'; '.join(limits)}; a design beyond it might do better, but no "
