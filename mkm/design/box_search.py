@@ -137,6 +137,9 @@ class Search:
     box_origin: dict = field(default_factory=dict)
     #: the radial gap between tube and braid of the muscles as built [mm] (0: none)
     gap_mm: float = 0.0
+    #: where the length searched came from when no L0 was given and ``calibration`` holds an
+    #: identified muscle (:func:`identified_lengths`), else ""
+    length_note: str = ""
 
     @property
     def feasible(self) -> pd.DataFrame:
@@ -262,6 +265,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if not isinstance(constraints, Constraints):
         constraints = Constraints(**(constraints or {}))
     constraints, rubber_note = _distinct_rubbers(constraints, calibration)
+    constraints, length_note = _identified_length(constraints, calibration)
     spec = parse_spec(surrogate)
     if spec.name != "surrogate":
         raise ValueError(f"--surrogate {surrogate!r}: expected a surrogate spec "
@@ -338,7 +342,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
                     fe_search, spec.text, "; ".join(n for n in (searcher_note, rubber_note) if n),
-                    calibration, surrogate_box, box_origin, gap)
+                    calibration, surrogate_box, box_origin, gap, length_note)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
@@ -359,6 +363,41 @@ def _distinct_rubbers(constraints: Constraints, calibration: Calibration | None
             for name in constraints.rubber if name not in kept]
     return (replace(constraints, rubber=kept),
             f"rubber {', '.join(same)} here (the same C10 and C01): searched once")
+
+
+def identified_lengths(calibration: Calibration | None) -> list[float]:
+    """The rest lengths [mm] of the muscle ``calibration`` was identified on (``mkm identify``
+    records its runs): the fitted one (``--params L0``), else the runs' declared ones, each
+    once; empty for the shipped calibration or one that records none."""
+    from mkm.identify.band import identified_entry
+
+    found = identified_entry(calibration) if calibration is not None else None
+    if found is None:
+        return []
+    record = found[1]["identified"]
+    fitted = [float(p["value"]) for p in record.get("parameters", [])
+              if p.get("parameter") == "L0_mm" and p.get("status") == "fitted"
+              and p.get("value") is not None]
+    declared = [(r.get("muscle") or {}).get("L0_mm") for r in record.get("runs", [])]
+    return fitted[:1] or list(dict.fromkeys(float(v) for v in declared if v is not None))
+
+
+def _identified_length(constraints: Constraints, calibration: Calibration | None
+                       ) -> tuple[Constraints, str]:
+    """``constraints`` with L0 the identified muscle's where none was given and the
+    calibration was identified on one length (its braid angle and rubber, the search's
+    defaults, are that muscle's), and the note that says so; with several lengths, the
+    constraints as they are and the note naming them; "" where the calibration records
+    none."""
+    lengths = [] if constraints.L0_mm is not None else identified_lengths(calibration)
+    if len(lengths) == 1:
+        return (replace(constraints, L0_mm=(lengths[0],) * 2),
+                f"L0 {lengths[0]:g} mm, the identified muscle's; --L0 to design another length")
+    if lengths:
+        *others, last = (f"{v:g}" for v in lengths)
+        return constraints, (f"the identified muscles are {', '.join(others)} and {last} mm "
+                             "long: L0 is the surrogate's; --L0 to design one of those lengths")
+    return constraints, ""
 
 
 def _walls(D0: np.ndarray, t0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -1085,3 +1085,44 @@ def test_a_design_met_within_the_identified_muscles_uncertainty_says_so(tmp_path
     (note,) = [n for n in result.notes() if "the identified muscle's own uncertainty" in n]
     assert "--tolerance theta0=0.98,rubber=9.8% --probability 0.95" in note
     assert "holds with about" in note
+
+
+def test_the_default_length_is_the_identified_muscles(tmp_path, mkm_run):
+    """A calibration identified on a 300 mm muscle designed at the paper's 282 mm: the braid
+    angle and rubber searched were that muscle's, its length not. Without --L0 the length is
+    the identified muscle's now, said in one line; --L0 designs another."""
+    from mkm.design.box_search import identified_lengths
+    from mkm.fem.calibration import Calibration
+
+    lab = tmp_path / "calibration.json"
+    record = json.loads(_identified(tmp_path).path.read_text(encoding="utf-8"))
+    muscle = {"id": "lab-300", "D0_mm": 40.0, "t0_mm": 3.0, "L0_mm": 300.0}
+    record["axisym"]["identified"]["runs"] = [{"run": f"r{k}", "path": f"runs/r{k}",
+                                               "muscle": muscle} for k in (1, 2)]
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    code, out, err = mkm_run(["design", "--require", "100N@2bar,eps=0.1", "--top", "1",
+                              "--mesh", MESH, "--no-progress", "--calibration", str(lab),
+                              "--out", str(tmp_path / "d")])
+    assert code == 0, err
+    assert "mkm design: L0 300 mm, the identified muscle's; --L0 to design another length\n" \
+        in err
+    designs = json.loads((tmp_path / "d" / "designs.json").read_text(encoding="utf-8"))
+    assert designs["chosen_muscle"]["L0_mm"] == 300.0
+    # --L0 given: that length, no such line
+    found = search(["100N@2bar,eps=0.1"], {"L0_mm": 250.0}, calibration=Calibration.load(lab))
+    assert set(found.candidates["L0_mm"]) == {250.0} and found.length_note == ""
+    # a rest length identify fitted (--params L0) is the muscle's, not the declared one
+    record["axisym"]["identified"]["parameters"] = [
+        {"parameter": "L0_mm", "value": 296.5, "status": "fitted"}]
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    assert identified_lengths(Calibration.load(lab)) == [296.5]
+    # muscles of two lengths: no one of them is the muscle's; the surrogate's is searched
+    del record["axisym"]["identified"]["parameters"]
+    record["axisym"]["identified"]["runs"][1]["muscle"] = {**muscle, "L0_mm": 250.0}
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    found = search(["100N@2bar,eps=0.1"], calibration=Calibration.load(lab))
+    assert set(found.candidates["L0_mm"]) == {L0_MM}
+    assert found.length_note == ("the identified muscles are 300 and 250 mm long: L0 is the "
+                                 "surrogate's; --L0 to design one of those lengths")
+    # the shipped calibration records no identified muscle
+    assert identified_lengths(None) == [] and search(["100N@2bar,eps=0.1"]).length_note == ""
