@@ -168,13 +168,16 @@ def parse_workers(text: str) -> int:
     return value
 
 
-def add_batch_arguments(parser) -> None:
+def add_batch_arguments(parser, also: str = "", also_default: str = "") -> None:
     """``--workers N`` / ``--scheduler ADDRESS``: where the command's FE batch runs
-    (:class:`mkm.fem.batch.Runner`)."""
+    (:class:`mkm.fem.batch.Runner`); ``also``: what else the command's workers bound
+    (``the surrogates' training``), ``also_default``: its own default (``2 for the
+    training``)."""
+    what = "local worker processes for the FE solves" + (f" and {also}" if also else "")
+    default = "the CPU count" + (f", {also_default}" if also_default else "")
     where = parser.add_mutually_exclusive_group()  # a cluster has its own workers
     where.add_argument("--workers", type=argtype(parse_workers), metavar="N",
-                       help="local worker processes for the FE solves; 1 runs in-process "
-                       "(default: the CPU count)")
+                       help=f"{what}; 1 runs in-process (default: {default})")
     where.add_argument("--scheduler", metavar="ADDRESS",
                        help="run the FE solves on the Dask cluster at this scheduler, e.g. "
                        "tcp://HOST:8786 (workers need the same mkm-bench installed)")
