@@ -40,7 +40,8 @@ def remember_command(namespace, prog: str) -> None:
 
 
 def error_line(prog: str, message) -> str:
-    """``mkm <command>: error: <message>``, the one form of every error; argparse's
+    """``mkm <command>: error: <message>``, the one form of every error, on each line of a
+    message of several (a configuration's bad values, one a line); argparse's
     ``argument --eps: --eps 12.2: ...`` is said once: ``--eps 12.2: ...``."""
     message = str(message)
     found = re.match(r"argument (\S+?)(?:/\S+)?: (.*)", message, re.DOTALL)
@@ -52,7 +53,7 @@ def error_line(prog: str, message) -> str:
     if typed:
         expected = "a whole number" if typed.group(2) == "int" else "a number"
         message = f"{typed.group(1)} {typed.group(3)}: expected {expected}"
-    return f"{prog}: error: {message}"
+    return "\n".join(f"{prog}: error: {line}" for line in message.splitlines() or [""])
 
 
 #: The flag that sets a checked quantity: a library's ``D0_mm=-1 is invalid: ...`` about a
