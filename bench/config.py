@@ -35,7 +35,7 @@ from mkm.bench.settings import (
 )
 from mkm.bench.sim_settings import Sim
 from mkm.core.records import file_sha256, write_atomic
-from mkm.fem.limits import LIMITS, check_muscle_id, check_wall
+from mkm.fem.limits import LIMITS, check_gap, check_muscle_id, check_wall
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
@@ -484,8 +484,11 @@ class BenchConfig:
                                  f"{self.regulator.max_pressure_bar:g}: expected every planned "
                                  "pressure within the limit")
         self._check_interlocks(problems)
-        with problems.check():
+        with problems.check():  # the true tube, then the braid around it
             check_wall(*self.sim.truth.geometry(self.muscle), prefix="sim.truth.")
+            if self.sim.truth.gap_mm is not None:
+                check_gap(*self.sim.truth.geometry(self.muscle), self.sim.truth.gap_mm,
+                          prefix="sim.truth.")
         fs = self.regulator.full_scale_bar
         with problems.check():
             if self.sim.truth.monitor_bow_bar is not None:

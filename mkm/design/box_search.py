@@ -25,7 +25,7 @@ from mkm.design.spec import (
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
-from mkm.fem.limits import PRACTICAL_RANGE, limit_text, outside
+from mkm.fem.limits import PRACTICAL_RANGE, check_gap, limit_text, outside
 from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import outer_diameter_mm
 from mkm.registry import parse_spec
@@ -526,6 +526,11 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool,
         problems.append(f"max_pressure_bar={constraints.max_pressure_bar:g} is invalid: "
                         f"expected at most {FE_SEARCH_MAX_PRESSURE_BAR:g} bar, the top of the "
                         "practical range a design is searched in")
+    if constraints.gap_mm:
+        try:  # the narrowest tube of the box, which the search may choose
+            check_gap(box["D0_mm"][0], box["t0_mm"][0], constraints.gap_mm)
+        except ValueError as exc:
+            problems.append(f"{exc} (the narrowest tube of the box)")
     if box["t0_mm"][0] >= box["D0_mm"][1] / 2:
         problems.append(f"t0_mm from {box['t0_mm'][0]:g} mm conflicts with D0_mm up to "
                         f"{box['D0_mm'][1]:g} mm: expected t0 < D0/2")

@@ -334,3 +334,26 @@ def test_every_bad_value_is_named_at_once(tmp_path, mkm_cli):
         "config lab.toml: settle.window_s=-1.0 is invalid: expected a number > 0",
         "config lab.toml: settle.hold_s=0.0 is invalid: expected a number > 0",
         "config lab.toml: sim.seed=1.5 is invalid: expected a whole number"]
+
+
+def test_a_gap_wider_than_the_tubes_radius_is_refused():
+    """[sim.truth] gap_mm = 30 around a 40 mm tube was simulated: a braid 106 mm wide around a
+    46 mm tube. The gap is bounded by the tube's outer radius, the true tube's for the
+    simulated truth, the declared one's for the muscle."""
+    from mkm.fem.muscle import Muscle
+
+    text = with_settings("[sim.truth]\ngap_mm = 30\nD0_mm = 40")
+    with pytest.raises(ValueError) as info:
+        parse_config(text, "lab.toml")
+    # outer radius 40/2 + 3 = 23 mm
+    assert str(info.value) == (
+        "config lab.toml: sim.truth.gap_mm=30 is too wide for D0_mm=40, t0_mm=3: expected "
+        "gap_mm < D0_mm/2 + t0_mm = 23 mm (the tube's outer radius: a braid more than twice "
+        "the tube's width is no muscle's sleeve)")
+    assert parse_config(with_settings("[sim.truth]\ngap_mm = 22.9\nD0_mm = 40")
+                        ).sim.truth.gap_mm == 22.9
+    with pytest.raises(ValueError, match=r"^config lab\.toml: muscle\.gap_mm=18 is too wide "
+                                         r"for D0_mm=30, t0_mm=3: expected gap_mm < D0_mm/2 "
+                                         r"\+ t0_mm = 18 mm"):
+        parse_config(with_settings("[muscle]\ngap_mm = 18"), "lab.toml")
+    assert Muscle(30.0, 3.0, gap_mm=0.5).gap_mm == 0.5

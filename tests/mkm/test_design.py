@@ -1126,3 +1126,12 @@ def test_the_default_length_is_the_identified_muscles(tmp_path, mkm_run):
                                  "surrogate's; --L0 to design one of those lengths")
     # the shipped calibration records no identified muscle
     assert identified_lengths(None) == [] and search(["100N@2bar,eps=0.1"]).length_note == ""
+
+
+def test_a_gap_wider_than_the_narrowest_tubes_radius_is_refused_before_the_search():
+    # the chosen muscle carries the gap, which a muscle narrower than it cannot: said before
+    # the FE searches, not after (outer radius of the narrowest tube: 5/2 + 0.5 = 3 mm)
+    with pytest.raises(ValueError, match=r"^gap_mm=4 is too wide for D0_mm=5, t0_mm=0\.5: "
+                                         r"expected gap_mm < D0_mm/2 \+ t0_mm = 3 mm .* \(the "
+                                         r"narrowest tube of the box\)$"):
+        search(["10N@2bar,eps=0.1"], {"D0_mm": "5:10", "t0_mm": "0.5:1", "gap_mm": 4.0})
