@@ -25,10 +25,17 @@ from typing import Any
 import numpy as np
 
 from mkm.bench import backends
-from mkm.bench.settings import positive, read_toml, read_toml_file, typed_section, within
+from mkm.bench.settings import (
+    Problems,
+    positive,
+    read_toml,
+    read_toml_file,
+    typed_section,
+    within,
+)
 from mkm.bench.sim_settings import Sim
 from mkm.core.records import file_sha256, write_atomic
-from mkm.fem.limits import LIMITS, check_muscle_id, check_wall
+from mkm.fem.limits import LIMITS, check_gap, check_muscle_id, check_wall
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
 
@@ -119,19 +126,31 @@ class Daq:
         return int(round(self.buffer_s * self.sample_rate_hz))
 
     def check(self):
-        backends.entry(self.backend)  # one line naming the choices
-        if not re.fullmatch(DEVICE_PATTERN, self.device):
-            shown = self.device if len(self.device) <= 40 else self.device[:40] + "..."
-            raise ValueError(f"daq.device={shown!r} ({len(self.device)} characters) is invalid: "
-                             "expected a device name of 1 to 64 ASCII letters (no accents), "
-                             "digits, spaces or _ . -, starting with a letter, digit or _ (as NI "
-                             "MAX shows it: Dev1)")
-        for name in ("sample_rate_hz", "read_block_samples", "read_timeout_s"):
-            positive(f"daq.{name}", getattr(self, name))
-        if not 600.0 <= self.buffer_s <= MAX_BUFFER_S:
-            raise ValueError(f"daq.buffer_s={self.buffer_s:g} is invalid: expected 600 s (10 "
-                             "minutes of samples, so a stalled reader loses nothing) to "
-                             f"{MAX_BUFFER_S:g} s")
+        problems = Problems()
+        with problems.check():
+            backends.entry(self.backend)  # one line naming the choices
+        with problems.check():
+            if not re.fullmatch(DEVICE_PATTERN, self.device):
+                shown = self.device if len(self.device) <= 40 else self.device[:40] + "..."
+                raise ValueError(f"daq.device={shown!r} ({len(self.device)} characters) is "
+                                 "invalid: expected a device name of 1 to 64 ASCII letters (no "
+                                 "accents), digits, spaces or _ . -, starting with a letter, "
+                                 "digit or _ (as NI MAX shows it: Dev1)")
+        with problems.check():
+            if not 600.0 <= self.buffer_s <= MAX_BUFFER_S:
+                raise ValueError(f"daq.buffer_s={self.buffer_s:g} is invalid: expected 600 s (10 "
+                                 "minutes of samples, so a stalled reader loses nothing) to "
+                                 f"{MAX_BUFFER_S:g} s")
+        with problems.check():
+            within("daq.read_retries", self.read_retries, 0, MAX_READ_RETRIES)
+        with problems.check():
+            for name in ("sample_rate_hz", "read_block_samples", "read_timeout_s"):
+                positive(f"daq.{name}", getattr(self, name))
+            self._check_reads()
+        problems.raise_any()
+
+    def _check_reads(self):
+        """The blocks read, their timeout and retries, of a positive rate, block and timeout."""
         block_s = self.read_block_samples / self.sample_rate_hz
         if block_s > MAX_BLOCK_S:
             raise ValueError(f"daq.read_block_samples={self.read_block_samples} is "
@@ -143,7 +162,6 @@ class Daq:
                              f"blocks of {block_s:g} s: every read would time out; expected at "
                              f"least {max(2 * block_s, 0.1):g} s (twice the block, >= 0.1 s)")
         within("daq.read_timeout_s", self.read_timeout_s, 0.1, MAX_READ_TIMEOUT_S, "s")
-        within("daq.read_retries", self.read_retries, 0, MAX_READ_RETRIES)
         silence_s = self.read_timeout_s * (self.read_retries + 1)
         if silence_s > MAX_SILENCE_S:
             raise ValueError(f"daq.read_timeout_s={self.read_timeout_s:g} with read_retries="
@@ -167,13 +185,18 @@ class LoadCell:
     zero_drift_fraction_fs: float = 0.0002
 
     def check(self):
-        positive("loadcell.capacity_N", self.capacity_N)
-        within("loadcell.capacity_N", self.capacity_N, 0.0, MAX_CAPACITY_N, "N")
-        positive("loadcell.sensitivity_N_per_V", self.sensitivity_N_per_V)
+        problems = Problems()
+        with problems.check():
+            positive("loadcell.capacity_N", self.capacity_N)
+            within("loadcell.capacity_N", self.capacity_N, 0.0, MAX_CAPACITY_N, "N")
+        with problems.check():
+            positive("loadcell.sensitivity_N_per_V", self.sensitivity_N_per_V)
         for name in ("sensitivity_tolerance_fraction", "nonlinearity_fraction_fs",
                      "zero_drift_fraction_fs"):
-            within(f"loadcell.{name}", getattr(self, name), 0.0, MAX_DATASHEET_FRACTION,
-                   "(a fraction)", "a data-sheet bound beyond 5 % is not a load cell")
+            with problems.check():
+                within(f"loadcell.{name}", getattr(self, name), 0.0, MAX_DATASHEET_FRACTION,
+                       "(a fraction)", "a data-sheet bound beyond 5 % is not a load cell")
+        problems.raise_any()
 
     def force_N(self, volts):
         """Force [N] from load-cell volts with this calibration."""
@@ -201,26 +224,36 @@ class Regulator:
         return self.kind == "electronic"
 
     def check(self):
-        if self.kind not in ("electronic", "manual"):
-            raise ValueError(f"regulator.kind={self.kind[:40]!r} is invalid: expected "
-                             "'electronic' or 'manual'")
-        positive("regulator.full_scale_bar", self.full_scale_bar)
-        within("regulator.full_scale_bar", self.full_scale_bar, 0.0, LIMITS["pressure_bar"][1],
-               "bar")
-        if not 0 < self.max_pressure_bar <= self.full_scale_bar:
-            raise ValueError(f"regulator.max_pressure_bar={self.max_pressure_bar:g} is invalid: "
-                             f"expected 0 < max <= full_scale_bar={self.full_scale_bar:g}")
+        problems = Problems()
+        with problems.check():
+            if self.kind not in ("electronic", "manual"):
+                raise ValueError(f"regulator.kind={self.kind[:40]!r} is invalid: expected "
+                                 "'electronic' or 'manual'")
+        with problems.check():
+            if not self.monitor_V_at_full_scale > self.monitor_V_at_zero:
+                raise ValueError("regulator.monitor_V_at_full_scale must exceed "
+                                 "monitor_V_at_zero")
+        with problems.check():  # the bounds below are fractions of the full scale
+            positive("regulator.full_scale_bar", self.full_scale_bar)
+            within("regulator.full_scale_bar", self.full_scale_bar, 0.0,
+                   LIMITS["pressure_bar"][1], "bar")
+        problems.raise_any()
+        with problems.check():
+            if not 0 < self.max_pressure_bar <= self.full_scale_bar:
+                raise ValueError(f"regulator.max_pressure_bar={self.max_pressure_bar:g} is "
+                                 f"invalid: expected 0 < max <= full_scale_bar="
+                                 f"{self.full_scale_bar:g}")
         for name, (unit, _) in MONITOR_COMPONENTS.items():
             value = getattr(self, name)
             if name == "monitor_accuracy_bar" or value is not None:
                 high = (MAX_DATASHEET_FRACTION if unit == "fraction"
                         else MAX_TOLERANCE_FRACTION * self.full_scale_bar)
-                within(f"regulator.{name}", value, 0.0, high,
-                       "(a fraction of the reading)" if unit == "fraction" else "bar",
-                       "a sensor 5 % off is broken" if unit == "fraction" else
-                       f"a tenth of regulator.full_scale_bar={self.full_scale_bar:g}")
-        if not self.monitor_V_at_full_scale > self.monitor_V_at_zero:
-            raise ValueError("regulator.monitor_V_at_full_scale must exceed monitor_V_at_zero")
+                with problems.check():
+                    within(f"regulator.{name}", value, 0.0, high,
+                           "(a fraction of the reading)" if unit == "fraction" else "bar",
+                           "a sensor 5 % off is broken" if unit == "fraction" else
+                           f"a tenth of regulator.full_scale_bar={self.full_scale_bar:g}")
+        problems.raise_any()
 
     @property
     def monitor_components(self) -> dict[str, float]:
@@ -292,27 +325,32 @@ class Sequence:
     max_duration_h: float = 4.0  # a run planned longer than this is refused
 
     def check(self):
-        if len(self.pressures_bar) == 0:
-            raise ValueError("sequence.pressures_bar is empty: expected at least one pressure")
-        pressures = self.pressures_bar
-        # the steps are labelled up in the order given and down in reverse: a falling list
-        # would record its falling branch as the rising one
-        for low, high in zip(pressures[:-1], pressures[1:], strict=True):
-            if not high > low:
-                raise ValueError(f"sequence.pressures_bar goes from {low:g} to {high:g} bar: "
-                                 "expected the rising staircase, each pressure above the one "
-                                 "before (down_sweep adds the falling branch, repeats the "
-                                 "cycles)")
-        within("sequence.repeats", self.repeats, 1, MAX_STEPS)
-        within("sequence.preconditioning_cycles", self.preconditioning_cycles, 0,
-               MAX_PRECONDITIONING_CYCLES)
-        positive("sequence.tare_s", self.tare_s)
-        within("sequence.tare_s", self.tare_s, 0.0, MAX_TARE_S, "s")
-        positive("sequence.preconditioning_hold_s", self.preconditioning_hold_s)
-        within("sequence.preconditioning_hold_s", self.preconditioning_hold_s, 0.0, MAX_STEP_S,
-               "s")
-        positive("sequence.max_duration_h", self.max_duration_h)
-        within("sequence.max_duration_h", self.max_duration_h, 0.0, MAX_DURATION_H, "h")
+        problems = Problems()
+        with problems.check():
+            if len(self.pressures_bar) == 0:
+                raise ValueError("sequence.pressures_bar is empty: expected at least one "
+                                 "pressure")
+            pressures = self.pressures_bar
+            # the steps are labelled up in the order given and down in reverse: a falling list
+            # would record its falling branch as the rising one
+            for low, high in zip(pressures[:-1], pressures[1:], strict=True):
+                if not high > low:
+                    raise ValueError(f"sequence.pressures_bar goes from {low:g} to {high:g} "
+                                     "bar: expected the rising staircase, each pressure above "
+                                     "the one before (down_sweep adds the falling branch, "
+                                     "repeats the cycles)")
+        with problems.check():
+            within("sequence.repeats", self.repeats, 1, MAX_STEPS)
+        with problems.check():
+            within("sequence.preconditioning_cycles", self.preconditioning_cycles, 0,
+                   MAX_PRECONDITIONING_CYCLES)
+        for name, high, unit in (("tare_s", MAX_TARE_S, "s"),
+                                 ("preconditioning_hold_s", MAX_STEP_S, "s"),
+                                 ("max_duration_h", MAX_DURATION_H, "h")):
+            with problems.check():
+                positive(f"sequence.{name}", getattr(self, name))
+                within(f"sequence.{name}", getattr(self, name), 0.0, high, unit)
+        problems.raise_any()
 
 
 @dataclass(frozen=True)
@@ -326,16 +364,23 @@ class Settle:
     hold_s: float = 5.0
 
     def check(self):
+        problems = Problems()
         for f in dataclasses.fields(self):
-            positive(f"settle.{f.name}", getattr(self, f.name))
-        if self.timeout_s > MAX_STEP_S:
-            raise ValueError(f"settle.timeout_s={self.timeout_s:g} is invalid: expected at most "
-                             f"{MAX_STEP_S:g} s per step")
-        if self.timeout_s < self.min_dwell_s:
-            raise ValueError(f"settle.timeout_s={self.timeout_s:g} is below min_dwell_s="
-                             f"{self.min_dwell_s:g}: expected timeout_s >= min_dwell_s")
-        within("settle.window_s", self.window_s, 0.0, MAX_STEP_S, "s")
-        within("settle.hold_s", self.hold_s, 0.0, MAX_STEP_S, "s")
+            with problems.check():
+                positive(f"settle.{f.name}", getattr(self, f.name))
+        problems.raise_any()  # the bounds below compare positive times
+        with problems.check():
+            if self.timeout_s > MAX_STEP_S:
+                raise ValueError(f"settle.timeout_s={self.timeout_s:g} is invalid: expected at "
+                                 f"most {MAX_STEP_S:g} s per step")
+            if self.timeout_s < self.min_dwell_s:
+                raise ValueError(f"settle.timeout_s={self.timeout_s:g} is below min_dwell_s="
+                                 f"{self.min_dwell_s:g}: expected timeout_s >= min_dwell_s")
+        with problems.check():
+            within("settle.window_s", self.window_s, 0.0, MAX_STEP_S, "s")
+        with problems.check():
+            within("settle.hold_s", self.hold_s, 0.0, MAX_STEP_S, "s")
+        problems.raise_any()
 
 
 @dataclass(frozen=True)
@@ -368,20 +413,27 @@ class Safety:
     vent_timeout_s: float = 10.0
 
     def check(self):
-        within("safety.force_limit_fraction", self.force_limit_fraction,
-               MIN_FORCE_LIMIT_FRACTION, 1.0, "(a fraction of the load-cell capacity)",
-               "below a tenth of its capacity the load cell is the wrong size")
+        problems = Problems()
+        with problems.check():
+            within("safety.force_limit_fraction", self.force_limit_fraction,
+                   MIN_FORCE_LIMIT_FRACTION, 1.0, "(a fraction of the load-cell capacity)",
+                   "below a tenth of its capacity the load cell is the wrong size")
+        bounds = {"pressure_follow_s": (MIN_FOLLOW_S, MAX_FOLLOW_S, "s", "a regulator needs "
+                                        "about a second to follow; one that has not followed "
+                                        f"by {MAX_FOLLOW_S:g} s is stuck"),
+                  "vent_below_bar": (0.0, MAX_VENT_BELOW_BAR, "bar", ""),
+                  "vent_timeout_s": (MIN_VENT_TIMEOUT_S, MAX_VENT_TIMEOUT_S, "s",
+                                     "a regulator needs seconds to exhaust the muscle")}
         for name in ("pressure_tolerance_bar", "pressure_follow_s", "tare_max_std_N",
                      "tare_max_shift_N", "vent_below_bar", "vent_timeout_s"):
-            positive(f"safety.{name}", getattr(self, name))
-        within("safety.pressure_follow_s", self.pressure_follow_s, MIN_FOLLOW_S, MAX_FOLLOW_S,
-               "s", "a regulator needs about a second to follow; one that has not followed by "
-               f"{MAX_FOLLOW_S:g} s is stuck")
-        within("safety.tare_min_samples", self.tare_min_samples, 2, 100_000,
-               why="a spread needs two samples")
-        within("safety.vent_below_bar", self.vent_below_bar, 0.0, MAX_VENT_BELOW_BAR, "bar")
-        within("safety.vent_timeout_s", self.vent_timeout_s, MIN_VENT_TIMEOUT_S,
-               MAX_VENT_TIMEOUT_S, "s", "a regulator needs seconds to exhaust the muscle")
+            with problems.check():
+                positive(f"safety.{name}", getattr(self, name))
+                if name in bounds:
+                    within(f"safety.{name}", getattr(self, name), *bounds[name])
+        with problems.check():
+            within("safety.tare_min_samples", self.tare_min_samples, 2, 100_000,
+                   why="a spread needs two samples")
+        problems.raise_any()
 
 
 @dataclass(frozen=True)
@@ -420,124 +472,154 @@ class BenchConfig:
         return ai
 
     def check(self):
-        too_high = [p for p in self.sequence.pressures_bar if p > self.regulator.max_pressure_bar]
-        if too_high:
-            raise ValueError(f"sequence.pressures_bar has {too_high[0]:g} bar, above "
-                             f"regulator.max_pressure_bar={self.regulator.max_pressure_bar:g}: "
-                             "expected every planned pressure within the limit")
-        self._check_interlocks()
-        check_wall(*self.sim.truth.geometry(self.muscle), prefix="sim.truth.")
-        if self.sim.truth.monitor_bow_bar is not None:
-            # within a tenth of full scale the bowed sensor still reads a higher pressure
-            # higher: its slope is at least gain - 4 bow / full scale >= 0.9 - 0.4
-            fs = self.regulator.full_scale_bar
-            within("sim.truth.monitor_bow_bar", self.sim.truth.monitor_bow_bar,
-                   -MAX_TOLERANCE_FRACTION * fs, MAX_TOLERANCE_FRACTION * fs, "bar",
-                   f"a tenth of regulator.full_scale_bar={fs:g}")
-        if self.sim.truth.monitor_stuck_bar is not None:  # a reading the monitor can give
-            fs = self.regulator.full_scale_bar
-            within("sim.truth.monitor_stuck_bar", self.sim.truth.monitor_stuck_bar, 0.0, fs,
-                   "bar", f"regulator.full_scale_bar={fs:g}")
-        self._check_device()
-        self._check_duration()
+        """Every setting checked against the others (the sections checked themselves): one
+        ``ValueError`` naming each bad value on a line of its own."""
+        problems = Problems()
+        with problems.check():
+            too_high = [p for p in self.sequence.pressures_bar
+                        if p > self.regulator.max_pressure_bar]
+            if too_high:
+                raise ValueError(f"sequence.pressures_bar has {too_high[0]:g} bar, above "
+                                 "regulator.max_pressure_bar="
+                                 f"{self.regulator.max_pressure_bar:g}: expected every planned "
+                                 "pressure within the limit")
+        self._check_interlocks(problems)
+        with problems.check():  # the true tube, then the braid around it
+            check_wall(*self.sim.truth.geometry(self.muscle), prefix="sim.truth.")
+            if self.sim.truth.gap_mm is not None:
+                check_gap(*self.sim.truth.geometry(self.muscle), self.sim.truth.gap_mm,
+                          prefix="sim.truth.")
+        fs = self.regulator.full_scale_bar
+        with problems.check():
+            if self.sim.truth.monitor_bow_bar is not None:
+                # within a tenth of full scale the bowed sensor still reads a higher pressure
+                # higher: its slope is at least gain - 4 bow / full scale >= 0.9 - 0.4
+                within("sim.truth.monitor_bow_bar", self.sim.truth.monitor_bow_bar,
+                       -MAX_TOLERANCE_FRACTION * fs, MAX_TOLERANCE_FRACTION * fs, "bar",
+                       f"a tenth of regulator.full_scale_bar={fs:g}")
+        with problems.check():
+            if self.sim.truth.monitor_stuck_bar is not None:  # a reading the monitor can give
+                within("sim.truth.monitor_stuck_bar", self.sim.truth.monitor_stuck_bar, 0.0,
+                       fs, "bar", f"regulator.full_scale_bar={fs:g}")
+        self._check_device(problems)
+        with problems.check():
+            self._check_duration()
+        problems.raise_any()
 
-    def _check_interlocks(self):
+    def _check_interlocks(self, problems: Problems):
         """Safety limits within what they guard: none can be set so wide it never trips."""
         s, reg, capacity = self.safety, self.regulator, self.loadcell.capacity_N
-        within("safety.pressure_tolerance_bar", s.pressure_tolerance_bar, 0.0,
-               MAX_TOLERANCE_FRACTION * reg.full_scale_bar, "bar",
-               f"a tenth of regulator.full_scale_bar={reg.full_scale_bar:g}")
-        within("safety.tare_max_std_N", s.tare_max_std_N, 0.0,
-               MAX_TARE_STD_FRACTION * capacity, "N",
-               f"1 % of loadcell.capacity_N={capacity:g}")
-        within("safety.tare_max_shift_N", s.tare_max_shift_N, 0.0,
-               MAX_TARE_SHIFT_FRACTION * capacity, "N",
-               f"10 % of loadcell.capacity_N={capacity:g}")
-        within("settle.pressure_tolerance_bar", self.settle.pressure_tolerance_bar, 0.0,
-               MAX_TOLERANCE_FRACTION * reg.full_scale_bar, "bar",
-               f"a tenth of regulator.full_scale_bar={reg.full_scale_bar:g}")
-        if reg.electronic:
-            # a vent is verified by the monitor, which may read its zero error at 0 bar: a
-            # limit within it fails the check of a vented muscle (VENT BY HAND, a false alarm)
-            zero, declared = reg.vented_reading_bar()
-            if s.vent_below_bar <= zero:
-                raise ValueError(f"safety.vent_below_bar={s.vent_below_bar:g} is invalid: a "
-                                 f"vented muscle's monitor may read up to {zero:g} bar ({declared})"
-                                 f", so the vent check could fail on a vented bench: expected "
-                                 f"more than {zero:g} bar (at most {MAX_VENT_BELOW_BAR:g})")
+        with problems.check():
+            within("safety.pressure_tolerance_bar", s.pressure_tolerance_bar, 0.0,
+                   MAX_TOLERANCE_FRACTION * reg.full_scale_bar, "bar",
+                   f"a tenth of regulator.full_scale_bar={reg.full_scale_bar:g}")
+        with problems.check():
+            within("safety.tare_max_std_N", s.tare_max_std_N, 0.0,
+                   MAX_TARE_STD_FRACTION * capacity, "N",
+                   f"1 % of loadcell.capacity_N={capacity:g}")
+        with problems.check():
+            within("safety.tare_max_shift_N", s.tare_max_shift_N, 0.0,
+                   MAX_TARE_SHIFT_FRACTION * capacity, "N",
+                   f"10 % of loadcell.capacity_N={capacity:g}")
+        with problems.check():
+            within("settle.pressure_tolerance_bar", self.settle.pressure_tolerance_bar, 0.0,
+                   MAX_TOLERANCE_FRACTION * reg.full_scale_bar, "bar",
+                   f"a tenth of regulator.full_scale_bar={reg.full_scale_bar:g}")
+        with problems.check():
+            if reg.electronic:
+                # a vent is verified by the monitor, which may read its zero error at 0 bar: a
+                # limit within it fails the check of a vented muscle (VENT BY HAND, a false alarm)
+                zero, declared = reg.vented_reading_bar()
+                if s.vent_below_bar <= zero:
+                    raise ValueError(f"safety.vent_below_bar={s.vent_below_bar:g} is invalid: "
+                                     f"a vented muscle's monitor may read up to {zero:g} bar "
+                                     f"({declared}), so the vent check could fail on a vented "
+                                     f"bench: expected more than {zero:g} bar (at most "
+                                     f"{MAX_VENT_BELOW_BAR:g})")
 
-    def _check_device(self):
+    def _check_device(self, problems: Problems):
         """Against the capabilities of the configured backend's device."""
         caps = backends.entry(self.daq.backend).capabilities
         ai, daq, cell, reg = self.ai_channels, self.daq, self.loadcell, self.regulator
-        if daq.terminal_config not in caps.terminal_configs:
-            raise ValueError(f"daq.terminal_config={daq.terminal_config[:40]!r} is invalid: the "
-                             f"{caps.product} has only {' and '.join(caps.terminal_configs)} "
-                             "inputs (no NRSE or pseudo-differential mode)")
-        if daq.sample_rate_hz > caps.max_aggregate_rate_hz:
-            raise ValueError(f"daq.sample_rate_hz={daq.sample_rate_hz:g} is invalid: the "
-                             f"{caps.product} samples at most "
-                             f"{caps.max_aggregate_rate_hz:g} S/s over all its inputs")
-        for name, channel in (("loadcell.channel", cell.channel),
-                              ("regulator.monitor_channel", reg.monitor_channel)):
-            if channel not in caps.ai_rse:
-                raise ValueError(f"{name}={channel[:40]!r} is invalid: the {caps.product} has "
-                                 f"inputs {caps.ai_rse[0]} to {caps.ai_rse[-1]}")
-        if reg.command_channel not in caps.ao:
-            raise ValueError(f"regulator.command_channel={reg.command_channel[:40]!r} is "
-                             f"invalid: the {caps.product} has outputs {', '.join(caps.ao)}")
-        if reg.electronic and not backends.entry(self.daq.backend).simulated \
-                and reg.monitor_fault(0.0) is None:
-            # a monitor without a live zero: its lost wire (0 V) reads a plausible pressure
-            least = (MONITOR_MARGIN_FRACTION / (1 + MONITOR_MARGIN_FRACTION)
-                     * reg.monitor_V_at_full_scale)
-            raise ValueError(
-                f"regulator.monitor_V_at_zero={reg.monitor_V_at_zero:g} is invalid on a real "
-                f"bench: a lost monitor (unpowered, wire off) reads 0 V, which this output "
-                f"gives at {float(reg.monitor_bar(0.0)):.3g} bar and would pass for a vent; "
-                f"expected a live-zero output (1-5 V: monitor_V_at_zero above "
-                f"{least:.3g} V, so that 0 V is a monitor fault)")
-        for name in ("monitor_V_at_zero", "monitor_V_at_full_scale"):
-            if abs(getattr(reg, name)) > caps.ai_range_V:
-                raise ValueError(f"regulator.{name}={getattr(reg, name):g} is invalid: the "
-                                 f"{caps.product}'s inputs read +-{caps.ai_range_V:g} V")
-        if abs(cell.offset_V) >= caps.ai_range_V:
-            raise ValueError(f"loadcell.offset_V={cell.offset_V:g} is invalid: expected within "
-                             f"the +-{caps.ai_range_V:g} V input range")
-        full_scale_N = cell.sensitivity_N_per_V * caps.ai_range_V
-        if full_scale_N < cell.capacity_N * 0.999:
-            raise ValueError(
-                f"loadcell.sensitivity_N_per_V={cell.sensitivity_N_per_V:g} puts the "
-                f"+-{caps.ai_range_V:g} V rail at {full_scale_N:g} N, below capacity_N="
-                f"{cell.capacity_N:g}: the cell would clip before its capacity; expected "
-                f"sensitivity_N_per_V >= capacity_N / {caps.ai_range_V:g} V")
-        if len(set(ai)) < len(ai):
-            raise ValueError(f"loadcell.channel and regulator.monitor_channel are both {ai[0]}: "
-                             "expected two different inputs")
-        if daq.terminal_config == "differential":
-            pairs = caps.ai_differential
-            for name, channel in zip(("loadcell.channel", "regulator.monitor_channel"), ai,
-                                     strict=False):
-                if channel not in pairs:
-                    raise ValueError(
-                        f"{name}={channel!r} cannot be differential on the {caps.product}: "
-                        f"only {', '.join(pairs)} are (paired with "
-                        f"{', '.join(pairs.values())}); use one of those or "
-                        "daq.terminal_config = 'rse'")
+        with problems.check():
+            if daq.terminal_config not in caps.terminal_configs:
+                raise ValueError(f"daq.terminal_config={daq.terminal_config[:40]!r} is invalid: "
+                                 f"the {caps.product} has only "
+                                 f"{' and '.join(caps.terminal_configs)} inputs (no NRSE or "
+                                 "pseudo-differential mode)")
         aggregate = daq.sample_rate_hz * len(ai)
-        if aggregate > caps.max_aggregate_rate_hz:
-            raise ValueError(f"daq.sample_rate_hz={daq.sample_rate_hz:g} on {len(ai)} inputs is "
-                             f"{aggregate:g} S/s: the {caps.product} samples at most "
-                             f"{caps.max_aggregate_rate_hz:g} S/s in aggregate")
-        if daq.buffer_samples * len(ai) > MAX_BUFFER_VALUES:
-            raise ValueError(f"daq.buffer_s={daq.buffer_s:g} at {daq.sample_rate_hz:g} Hz is "
-                             f"{daq.buffer_samples * len(ai)} buffered values: expected at most "
-                             f"{MAX_BUFFER_VALUES} (shorten the buffer or the rate)")
+        with problems.check():  # the rate, over every input, then the buffer it fills
+            if daq.sample_rate_hz > caps.max_aggregate_rate_hz:
+                raise ValueError(f"daq.sample_rate_hz={daq.sample_rate_hz:g} is invalid: the "
+                                 f"{caps.product} samples at most "
+                                 f"{caps.max_aggregate_rate_hz:g} S/s over all its inputs")
+            if aggregate > caps.max_aggregate_rate_hz:
+                raise ValueError(f"daq.sample_rate_hz={daq.sample_rate_hz:g} on {len(ai)} "
+                                 f"inputs is {aggregate:g} S/s: the {caps.product} samples at "
+                                 f"most {caps.max_aggregate_rate_hz:g} S/s in aggregate")
+            if daq.buffer_samples * len(ai) > MAX_BUFFER_VALUES:
+                raise ValueError(f"daq.buffer_s={daq.buffer_s:g} at {daq.sample_rate_hz:g} Hz "
+                                 f"is {daq.buffer_samples * len(ai)} buffered values: expected "
+                                 f"at most {MAX_BUFFER_VALUES} (shorten the buffer or the rate)")
+        with problems.check():  # each input, then the two as a pair
+            for name, channel in (("loadcell.channel", cell.channel),
+                                  ("regulator.monitor_channel", reg.monitor_channel)):
+                if channel not in caps.ai_rse:
+                    raise ValueError(f"{name}={channel[:40]!r} is invalid: the {caps.product} has "
+                                     f"inputs {caps.ai_rse[0]} to {caps.ai_rse[-1]}")
+            if len(set(ai)) < len(ai):
+                raise ValueError("loadcell.channel and regulator.monitor_channel are both "
+                                 f"{ai[0]}: expected two different inputs")
+            if daq.terminal_config == "differential":
+                pairs = caps.ai_differential
+                for name, channel in zip(("loadcell.channel", "regulator.monitor_channel"), ai,
+                                         strict=False):
+                    if channel not in pairs:
+                        raise ValueError(
+                            f"{name}={channel!r} cannot be differential on the {caps.product}: "
+                            f"only {', '.join(pairs)} are (paired with "
+                            f"{', '.join(pairs.values())}); use one of those or "
+                            "daq.terminal_config = 'rse'")
+        with problems.check():
+            if reg.command_channel not in caps.ao:
+                raise ValueError(f"regulator.command_channel={reg.command_channel[:40]!r} is "
+                                 f"invalid: the {caps.product} has outputs {', '.join(caps.ao)}")
+        with problems.check():
+            if reg.electronic and not backends.entry(self.daq.backend).simulated \
+                    and reg.monitor_fault(0.0) is None:
+                # a monitor without a live zero: its lost wire (0 V) reads a plausible pressure
+                least = (MONITOR_MARGIN_FRACTION / (1 + MONITOR_MARGIN_FRACTION)
+                         * reg.monitor_V_at_full_scale)
+                raise ValueError(
+                    f"regulator.monitor_V_at_zero={reg.monitor_V_at_zero:g} is invalid on a real "
+                    f"bench: a lost monitor (unpowered, wire off) reads 0 V, which this output "
+                    f"gives at {float(reg.monitor_bar(0.0)):.3g} bar and would pass for a vent; "
+                    f"expected a live-zero output (1-5 V: monitor_V_at_zero above "
+                    f"{least:.3g} V, so that 0 V is a monitor fault)")
+        with problems.check():
+            for name in ("monitor_V_at_zero", "monitor_V_at_full_scale"):
+                if abs(getattr(reg, name)) > caps.ai_range_V:
+                    raise ValueError(f"regulator.{name}={getattr(reg, name):g} is invalid: the "
+                                     f"{caps.product}'s inputs read +-{caps.ai_range_V:g} V")
+        with problems.check():
+            if abs(cell.offset_V) >= caps.ai_range_V:
+                raise ValueError(f"loadcell.offset_V={cell.offset_V:g} is invalid: expected within "
+                                 f"the +-{caps.ai_range_V:g} V input range")
+        full_scale_N = cell.sensitivity_N_per_V * caps.ai_range_V
+        with problems.check():
+            if full_scale_N < cell.capacity_N * 0.999:
+                raise ValueError(
+                    f"loadcell.sensitivity_N_per_V={cell.sensitivity_N_per_V:g} puts the "
+                    f"+-{caps.ai_range_V:g} V rail at {full_scale_N:g} N, below capacity_N="
+                    f"{cell.capacity_N:g}: the cell would clip before its capacity; expected "
+                    f"sensitivity_N_per_V >= capacity_N / {caps.ai_range_V:g} V")
         tare_n = int(round(self.sequence.tare_s * daq.sample_rate_hz))
-        if tare_n < self.safety.tare_min_samples:
-            raise ValueError(f"sequence.tare_s={self.sequence.tare_s:g} at "
-                             f"{daq.sample_rate_hz:g} Hz gives {tare_n} tare samples: expected at "
-                             f"least safety.tare_min_samples={self.safety.tare_min_samples}")
+        with problems.check():
+            if tare_n < self.safety.tare_min_samples:
+                raise ValueError(f"sequence.tare_s={self.sequence.tare_s:g} at "
+                                 f"{daq.sample_rate_hz:g} Hz gives {tare_n} tare samples: "
+                                 "expected at least safety.tare_min_samples="
+                                 f"{self.safety.tare_min_samples}")
 
     def _check_duration(self):
         seq, st = self.sequence, self.settle
@@ -634,14 +716,17 @@ def config_from_tables(data: dict[str, Any], text: str, source: str) -> BenchCon
                              + (_BACKEND_CHOICE if required == "daq" else ""))
     if isinstance(data["daq"], dict) and "backend" not in data["daq"]:
         raise ValueError(f"config {source}: daq.backend is missing" + _BACKEND_CHOICE)
-    try:
-        sections = {name: (read(data[name], name) if read is read_muscle
-                           else typed_section(read, data[name], name))
-                    for name, read in SECTIONS.items() if name in data}
+    problems, sections = Problems(), {}
+    for name, read in SECTIONS.items():
+        if name in data:
+            with problems.check():
+                sections[name] = (read(data[name], name) if read is read_muscle
+                                  else typed_section(read, data[name], name))
+    problems.raise_any(f"config {source}: ")  # the settings between sections need them all
+    with problems.check():
         config = BenchConfig(**sections, source=source, recorded_source=source, text=text)
         config.check()
-    except ValueError as exc:
-        raise ValueError(f"config {source}: {exc}") from None
+    problems.raise_any(f"config {source}: ")
     return config
 
 

@@ -13,6 +13,8 @@ import dataclasses
 import math
 import tomllib
 import typing
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -54,6 +56,29 @@ def read_toml_file(path: str | Path, what: str = "") -> tuple[str, dict[str, Any
     return text, read_toml(text, f"{what}{path}")
 
 
+class Problems:
+    """The bad values of a configuration, gathered so that one check names every one (a line
+    each) rather than the first: a user fixing them one run at a time met the next only after
+    the last was mended."""
+
+    def __init__(self):
+        self.lines: list[str] = []
+
+    @contextmanager
+    def check(self) -> Iterator[None]:
+        """Run one check (of one setting, or of settings that depend on each other): its
+        ``ValueError`` is kept and the checks after it still run."""
+        try:
+            yield
+        except ValueError as exc:
+            self.lines += [line for line in str(exc).splitlines() if line not in self.lines]
+
+    def raise_any(self, prefix: str = "") -> None:
+        """One ``ValueError`` of every line kept, each after ``prefix``; nothing when none."""
+        if self.lines:
+            raise ValueError("\n".join(prefix + line for line in self.lines))
+
+
 def positive(name: str, value) -> None:
     if not value > 0:
         raise ValueError(f"{name}={value!r} is invalid: expected a number > 0")
@@ -76,20 +101,22 @@ def typed_section(cls, table: Any, where: str):
     if not isinstance(table, dict):
         raise ValueError(f"[{where}] must be a table of settings, got {_short(table)}")
     fields = {f.name: f for f in dataclasses.fields(cls)}
-    unknown = sorted(set(table) - set(fields))
-    if unknown:
-        name = unknown[0] if len(unknown[0]) <= 40 else unknown[0][:40] + "..."
-        raise ValueError(f"{where}.{name} is not a setting: expected some of "
-                         f"{', '.join(fields)}")
+    problems = Problems()
+    for name in sorted(set(table) - set(fields)):
+        shown = name if len(name) <= 40 else name[:40] + "..."
+        problems.lines.append(f"{where}.{shown} is not a setting: expected some of "
+                              f"{', '.join(fields)}")
     hints = typing.get_type_hints(cls)
     values = {}
     for name, f in fields.items():
         key = f"{where}.{name}"
-        if name not in table:
-            if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING:
-                raise ValueError(f"{key} is missing: it has no default")
-            continue
-        values[name] = _convert(table[name], hints[name], key)
+        with problems.check():
+            if name not in table:
+                if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING:
+                    raise ValueError(f"{key} is missing: it has no default")
+                continue
+            values[name] = _convert(table[name], hints[name], key)
+    problems.raise_any()
     try:
         obj = cls(**values)  # a type that checks itself when made (the tolerances)
     except ValueError as exc:

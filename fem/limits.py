@@ -75,6 +75,19 @@ def check_wall(D0_mm: float, t0_mm: float, prefix: str = "") -> None:
                          f"t0_mm < D0_mm/2 = {D0_mm / 2:g}")
 
 
+def check_gap(D0_mm: float, t0_mm: float, gap_mm: float, prefix: str = "") -> None:
+    """A gap between tube and braid narrower than the tube's outer radius (``gap_mm < D0_mm / 2
+    + t0_mm``): wider, the braid would be more than twice the tube's width and the tube would
+    have to double its diameter before the braid pulls, which asks of the rubber a stretch no
+    muscle's sleeve does (a tube in a sleeve it cannot fill is no muscle)."""
+    outer_radius_mm = D0_mm / 2 + t0_mm
+    if not gap_mm < outer_radius_mm:
+        raise ValueError(f"{prefix}gap_mm={gap_mm:g} is too wide for D0_mm={D0_mm:g}, t0_mm="
+                         f"{t0_mm:g}: expected gap_mm < D0_mm/2 + t0_mm = {outer_radius_mm:g} mm "
+                         "(the tube's outer radius: a braid more than twice the tube's width "
+                         "is no muscle's sleeve)")
+
+
 def check_muscle_id(value: Any, where: str = "muscle.id") -> str:
     """``value`` if it is a valid muscle id (:data:`MUSCLE_ID_PATTERN`), else ``ValueError``."""
     if not isinstance(value, str) or not re.fullmatch(MUSCLE_ID_PATTERN, value):

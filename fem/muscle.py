@@ -19,7 +19,14 @@ import dataclasses
 from dataclasses import dataclass, field
 from typing import Any
 
-from mkm.fem.limits import LIMITS, check_muscle_id, check_theta0, check_value, check_wall
+from mkm.fem.limits import (
+    LIMITS,
+    check_gap,
+    check_muscle_id,
+    check_theta0,
+    check_value,
+    check_wall,
+)
 from mkm.fem.tolerances import Tolerances
 
 #: the numbers of a muscle, in the order run.json and tables list them
@@ -82,6 +89,8 @@ class Muscle:
             if value is not None or name in REQUIRED:
                 object.__setattr__(self, name, check_value(name, value))
         check_wall(self.D0_mm, self.t0_mm)
+        if self.gap_mm is not None:
+            check_gap(self.D0_mm, self.t0_mm, self.gap_mm)
         if self.theta0_deg is not None:
             check_theta0(self.theta0_deg)
         if self.id:

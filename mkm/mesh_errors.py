@@ -141,7 +141,8 @@ def measure(n_muscles: int, seed: int, out=MESH_ERRORS_FILE, workers: int | None
                         L0_mm=m.L0_mm, theta0_deg=m.theta0_deg, pressure_bar=PRESSURES_BAR,
                         C10_MPa=m.C10_MPa, C01_MPa=m.C01_MPa) for m in muscles]
             frame, done = runner.run(jobs, cache_dir=cache_dir, progress=progress,
-                                     desc=f"FE {mesh} mesh, {n_muscles} muscles")
+                                     desc=f"FE {mesh} mesh, {n_muscles} "
+                                     f"muscle{'' if n_muscles == 1 else 's'}")
             frame.insert(0, "muscle", np.repeat(np.arange(len(jobs)), len(PRESSURES_BAR)))
             frames[mesh] = frame
     rows = []

@@ -80,6 +80,11 @@ STABILITY_PRESSURES = tuple(np.round(np.arange(0.0, PRACTICAL_RANGE.pressure_bar
 STABILITY_EPS = tuple(np.round(np.arange(0.0, 0.3501, 0.05), 3))
 # whether run_study shows progress, seen by the predictor factories it calls
 _SHOW_PROGRESS: ContextVar[bool] = ContextVar("mkm_study_progress", default=False)
+#: Surrogate kinds trained at a time when no number of workers is given: one per core of the
+#: two a CI machine has (training is minutes, cold)
+TRAINING_JOBS = 2
+# the processes run_study's workers allow the predictor factories it calls (None: TRAINING_JOBS)
+_WORKERS: ContextVar[int | None] = ContextVar("mkm_study_workers", default=None)
 
 
 @dataclass
@@ -142,17 +147,18 @@ def surrogate_kinds(text: str) -> tuple[str, ...]:
     return kinds
 
 
-def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR, n_jobs: int = 2,
+def surrogate_predictors(dataset=None, cache_dir=DEFAULT_CACHE_DIR, n_jobs: int | None = None,
                          kinds=STUDY_SURROGATES) -> list[Predictor]:
     """The surrogate ``kinds`` trained on ``dataset`` (default: the shipped one); the default
     kind is the one ``auto`` may use. Kinds not yet in ``cache_dir`` are trained first,
-    ``n_jobs`` at a time."""
+    ``n_jobs`` at a time (None: the workers :func:`run_study` was given, else
+    :data:`TRAINING_JOBS`)."""
     BEST = kind_registry.BEST
     from mkm.surrogate.training_data import DEFAULT_DATASET
 
     dataset = dataset or DEFAULT_DATASET
     if cache_dir is not None:
-        train_surrogates(kinds, dataset, cache_dir, n_jobs)
+        train_surrogates(kinds, dataset, cache_dir, n_jobs or _WORKERS.get() or TRAINING_JOBS)
     # the default kind fitted on the whole design is the default surrogate itself (its
     # muscle-held-out refits only add metrics, which the study does not read): auto's spec
     out = [Predictor(f"surrogate-{BEST}", "surrogate",
@@ -184,15 +190,16 @@ def trained_surrogate(kind: str, dataset, cache_dir=DEFAULT_CACHE_DIR) -> ForceM
         return cached_model(kind, dataset, splits=0)
 
 
-def train_surrogates(kinds, dataset, cache_dir, n_jobs: int = 2) -> None:
-    """Train the ``kinds`` not yet cached, ``n_jobs`` processes at a time (a progress bar per
-    kind while :func:`run_study` shows progress: cold, this is minutes)."""
+def train_surrogates(kinds, dataset, cache_dir, n_jobs: int = TRAINING_JOBS) -> None:
+    """Train the ``kinds`` not yet cached, ``n_jobs`` processes at a time (1: in this one; a
+    progress bar per kind while :func:`run_study` shows progress: cold, this is minutes)."""
     from joblib import Parallel, delayed
 
     jobs = Parallel(n_jobs=n_jobs, return_as="generator_unordered")(
         delayed(trained_surrogate)(kind, dataset, cache_dir) for kind in kinds)
-    with progress_bar(len(kinds), "train surrogates", _SHOW_PROGRESS.get(),
-                      unit="kind") as bar:
+    # the command's name leads a status line (mkm study: 1/3 trained surrogates, ...)
+    with progress_bar(len(kinds), "study", _SHOW_PROGRESS.get(),
+                      unit="trained surrogate") as bar:
         for _ in jobs:
             bar.update(1)
 
@@ -403,7 +410,8 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
     ``mkm-out/study``) and nowhere else, unless ``update_shipped`` also replaces the shipped
     table :data:`mkm.auto.MODEL_ERRORS_FILE`. Returns the HTML path. The FE sweeps run on
     ``workers`` local processes or the Dask cluster at ``scheduler`` (:func:`solve_fe_sweeps`;
-    with a cache only: without one, each is solved where it is used). ``notify`` receives the
+    with a cache only: without one, each is solved where it is used); ``workers`` also bounds
+    the processes that train the surrogates (:func:`surrogate_predictors`). ``notify`` receives the
     study's verdict, the page's first lines (:func:`verdict_lines`)."""
     start = time.perf_counter()
     config = config or StudyConfig()
@@ -415,11 +423,12 @@ def run_study(out_dir=None, config: StudyConfig | None = None,
             "calibration": Calibration.shipped().record(),
             "muscles": [list(m) for m in config.muscles],
             "pressures_bar": list(config.pressures)}
-    token = _SHOW_PROGRESS.set(progress)
+    token, bound = _SHOW_PROGRESS.set(progress), _WORKERS.set(workers)
     try:
         predictors = config.predictors(cache_dir)
     finally:
         _SHOW_PROGRESS.reset(token)
+        _WORKERS.reset(bound)
     models = {p.label: p.build() for p in predictors}
     labels = {p.label for p in predictors}
     methods = [m for m in stability_methods(config, predictors) if m in labels]

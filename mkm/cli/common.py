@@ -40,7 +40,8 @@ def remember_command(namespace, prog: str) -> None:
 
 
 def error_line(prog: str, message) -> str:
-    """``mkm <command>: error: <message>``, the one form of every error; argparse's
+    """``mkm <command>: error: <message>``, the one form of every error, on each line of a
+    message of several (a configuration's bad values, one a line); argparse's
     ``argument --eps: --eps 12.2: ...`` is said once: ``--eps 12.2: ...``."""
     message = str(message)
     found = re.match(r"argument (\S+?)(?:/\S+)?: (.*)", message, re.DOTALL)
@@ -52,7 +53,7 @@ def error_line(prog: str, message) -> str:
     if typed:
         expected = "a whole number" if typed.group(2) == "int" else "a number"
         message = f"{typed.group(1)} {typed.group(3)}: expected {expected}"
-    return f"{prog}: error: {message}"
+    return "\n".join(f"{prog}: error: {line}" for line in message.splitlines() or [""])
 
 
 #: The flag that sets a checked quantity: a library's ``D0_mm=-1 is invalid: ...`` about a
@@ -168,13 +169,16 @@ def parse_workers(text: str) -> int:
     return value
 
 
-def add_batch_arguments(parser) -> None:
+def add_batch_arguments(parser, also: str = "", also_default: str = "") -> None:
     """``--workers N`` / ``--scheduler ADDRESS``: where the command's FE batch runs
-    (:class:`mkm.fem.batch.Runner`)."""
+    (:class:`mkm.fem.batch.Runner`); ``also``: what else the command's workers bound
+    (``the surrogates' training``), ``also_default``: its own default (``2 for the
+    training``)."""
+    what = "local worker processes for the FE solves" + (f" and {also}" if also else "")
+    default = "the CPU count" + (f", {also_default}" if also_default else "")
     where = parser.add_mutually_exclusive_group()  # a cluster has its own workers
     where.add_argument("--workers", type=argtype(parse_workers), metavar="N",
-                       help="local worker processes for the FE solves; 1 runs in-process "
-                       "(default: the CPU count)")
+                       help=f"{what}; 1 runs in-process (default: {default})")
     where.add_argument("--scheduler", metavar="ADDRESS",
                        help="run the FE solves on the Dask cluster at this scheduler, e.g. "
                        "tcp://HOST:8786 (workers need the same mkm-bench installed)")

@@ -107,7 +107,9 @@ def register(subparsers) -> None:
                                                           "training box")),
                             ("--t0", "t0_mm", shared_help("--t0", "default: the surrogate's "
                                                           "training box")),
-                            ("--L0", "L0_mm", shared_help("--L0", "default 282")),
+                            ("--L0", "L0_mm", shared_help(
+                                "--L0", "default: the length of the muscle --calibration was "
+                                "identified on, else 282")),
                             ("--theta0", "theta0_deg", shared_help("--theta0", "default: the "
                                                                    "calibration"))):
         unit = key.rsplit("_", 1)[1]  # 3.5cm or 30deg converted, as in a spec file

@@ -72,7 +72,8 @@ def register(subparsers) -> None:
                        help="only the --mesh-muscles measurement, not the study")
     _cache_arguments(study)
     add_progress_argument(study)
-    add_batch_arguments(study)
+    # mkm.study.TRAINING_JOBS, which loads what --help does without
+    add_batch_arguments(study, also="the surrogates' training", also_default="2 for the training")
     study.set_defaults(func=_study)
 
 
@@ -194,7 +195,8 @@ def _mesh_errors(args) -> None:
     _, info = mesh_errors.measure(args.mesh_muscles, seed, out, workers=args.workers,
                                   scheduler=args.scheduler, cache_dir=_cache(args),
                                   progress=not args.no_progress)
-    summary_line("study", f"mesh errors of {args.mesh_muscles} muscles (seed {seed}, "
+    summary_line("study", f"mesh errors of {args.mesh_muscles} "
+                 f"muscle{'' if args.mesh_muscles == 1 else 's'} (seed {seed}, "
                  f"{info['fe_failed_muscles']} with a failed FE sweep) in "
                  f"{time.perf_counter() - start:.0f} s: {mesh_errors.summary_line(out)}; "
                  f"wrote {out}")

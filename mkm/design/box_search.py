@@ -25,7 +25,7 @@ from mkm.design.spec import (
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG, chou_hannaford_eps_max
 from mkm.fem.interface import ForceModel
-from mkm.fem.limits import PRACTICAL_RANGE, limit_text, outside
+from mkm.fem.limits import PRACTICAL_RANGE, check_gap, limit_text, outside
 from mkm.fem.paper import L0_MM
 from mkm.fem.thickwall import outer_diameter_mm
 from mkm.registry import parse_spec
@@ -137,6 +137,9 @@ class Search:
     box_origin: dict = field(default_factory=dict)
     #: the radial gap between tube and braid of the muscles as built [mm] (0: none)
     gap_mm: float = 0.0
+    #: where the length searched came from when no L0 was given and ``calibration`` holds an
+    #: identified muscle (:func:`identified_lengths`), else ""
+    length_note: str = ""
 
     @property
     def feasible(self) -> pd.DataFrame:
@@ -262,6 +265,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if not isinstance(constraints, Constraints):
         constraints = Constraints(**(constraints or {}))
     constraints, rubber_note = _distinct_rubbers(constraints, calibration)
+    constraints, length_note = _identified_length(constraints, calibration)
     spec = parse_spec(surrogate)
     if spec.name != "surrogate":
         raise ValueError(f"--surrogate {surrogate!r}: expected a surrogate spec "
@@ -338,7 +342,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
                     fe_search, spec.text, "; ".join(n for n in (searcher_note, rubber_note) if n),
-                    calibration, surrogate_box, box_origin, gap)
+                    calibration, surrogate_box, box_origin, gap, length_note)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
@@ -359,6 +363,41 @@ def _distinct_rubbers(constraints: Constraints, calibration: Calibration | None
             for name in constraints.rubber if name not in kept]
     return (replace(constraints, rubber=kept),
             f"rubber {', '.join(same)} here (the same C10 and C01): searched once")
+
+
+def identified_lengths(calibration: Calibration | None) -> list[float]:
+    """The rest lengths [mm] of the muscle ``calibration`` was identified on (``mkm identify``
+    records its runs): the fitted one (``--params L0``), else the runs' declared ones, each
+    once; empty for the shipped calibration or one that records none."""
+    from mkm.identify.band import identified_entry
+
+    found = identified_entry(calibration) if calibration is not None else None
+    if found is None:
+        return []
+    record = found[1]["identified"]
+    fitted = [float(p["value"]) for p in record.get("parameters", [])
+              if p.get("parameter") == "L0_mm" and p.get("status") == "fitted"
+              and p.get("value") is not None]
+    declared = [(r.get("muscle") or {}).get("L0_mm") for r in record.get("runs", [])]
+    return fitted[:1] or list(dict.fromkeys(float(v) for v in declared if v is not None))
+
+
+def _identified_length(constraints: Constraints, calibration: Calibration | None
+                       ) -> tuple[Constraints, str]:
+    """``constraints`` with L0 the identified muscle's where none was given and the
+    calibration was identified on one length (its braid angle and rubber, the search's
+    defaults, are that muscle's), and the note that says so; with several lengths, the
+    constraints as they are and the note naming them; "" where the calibration records
+    none."""
+    lengths = [] if constraints.L0_mm is not None else identified_lengths(calibration)
+    if len(lengths) == 1:
+        return (replace(constraints, L0_mm=(lengths[0],) * 2),
+                f"L0 {lengths[0]:g} mm, the identified muscle's; --L0 to design another length")
+    if lengths:
+        *others, last = (f"{v:g}" for v in lengths)
+        return constraints, (f"the identified muscles are {', '.join(others)} and {last} mm "
+                             "long: L0 is the surrogate's; --L0 to design one of those lengths")
+    return constraints, ""
 
 
 def _walls(D0: np.ndarray, t0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -487,6 +526,11 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool,
         problems.append(f"max_pressure_bar={constraints.max_pressure_bar:g} is invalid: "
                         f"expected at most {FE_SEARCH_MAX_PRESSURE_BAR:g} bar, the top of the "
                         "practical range a design is searched in")
+    if constraints.gap_mm:
+        try:  # the narrowest tube of the box, which the search may choose
+            check_gap(box["D0_mm"][0], box["t0_mm"][0], constraints.gap_mm)
+        except ValueError as exc:
+            problems.append(f"{exc} (the narrowest tube of the box)")
     if box["t0_mm"][0] >= box["D0_mm"][1] / 2:
         problems.append(f"t0_mm from {box['t0_mm'][0]:g} mm conflicts with D0_mm up to "
                         f"{box['D0_mm'][1]:g} mm: expected t0 < D0/2")
@@ -538,17 +582,44 @@ def box_edges(row, box: dict, calibration: Calibration | None = None) -> list[st
     An end at the practical range's limit is none: the search refuses a box beyond it."""
     edges = [f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})"
              for name, at, unit, end, (low, high), at_limit in _ends(row, box) if not at_limit]
-    rubbers = list(box.get("rubber", []))
-    C10 = {r: rubber_of(r, calibration).C10_MPa for r in rubbers}
-    if len(set(C10.values())) > 1 and "rubber" in row:
-        at = C10[str(row["rubber"])]
-        end = ("softest" if at == min(C10.values()) else
-               "stiffest" if at == max(C10.values()) else "")
-        if end:
-            searched = ", ".join(f"{r} {C10[r]:.4g}" for r in rubbers)
-            edges.append(f"rubber = {row['rubber']} (C10 {at:.4g} MPa, the {end} of those "
-                         f"searched: {searched} MPa)")
+    end, C10 = _rubber_end(row, box, calibration)
+    if end:
+        searched = ", ".join(f"{r} {c:.4g}" for r, c in C10.items())
+        edges.append(f"rubber = {row['rubber']} (C10 {C10[str(row['rubber'])]:.4g} MPa, the "
+                     f"{end}est of those searched: {searched} MPa)")
     return edges
+
+
+def _rubber_end(row, box: dict, calibration: Calibration | None) -> tuple[str, dict]:
+    """``("soft" or "stiff" or "", {rubber: C10_MPa})``: whether a design ``row``'s rubber is
+    the softest or the stiffest of several searched in ``box``."""
+    C10 = {r: rubber_of(r, calibration).C10_MPa for r in box.get("rubber", [])}
+    if len(set(C10.values())) < 2 or "rubber" not in row:
+        return "", C10
+    at = C10[str(row["rubber"])]
+    return ("soft" if at == min(C10.values()) else "stiff" if at == max(C10.values())
+            else ""), C10
+
+
+def larger_box(row, box: dict, calibration: Calibration | None = None,
+               what: str = "a better design") -> str:
+    """``a larger box might hold WHAT: widen it, e.g. --D0 20:50 --t0 1:4``: the options that
+    widen each searched range whose end a design ``row`` sits on (:func:`box_edges`), that end
+    moved out by half the range's span, no further than the practical range's limit (a search
+    refuses a box beyond it), and ``--rubber`` where the rubber is an end of those searched."""
+    options = []
+    for name, _, _, end, (low, high), at_limit in _ends(row, box):
+        if not at_limit:
+            key = next(k for k, n in BOX_NAMES.items() if n == name)
+            limit_low, limit_high = getattr(PRACTICAL_RANGE, key)
+            half = (high - low) / 2
+            options.append(f"--{name} " + (span_text(max(low - half, limit_low), high)
+                                           if end == "lower" else
+                                           span_text(low, min(high + half, limit_high))))
+    widen = f": widen it, e.g. {' '.join(options)}" if options else ""
+    if end := _rubber_end(row, box, calibration)[0]:
+        widen += f"{'; or' if options else ':'} add a {end}er rubber to --rubber"
+    return f"a larger box might hold {what}{widen}"
 
 
 def range_limits(row, box: dict) -> list[str]:
@@ -662,7 +733,9 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
     if edges := result.edges(closest):  # the box, not the physics, may be short
         ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
         edge = (f"; it sits on the edge of the search box {box_text(ranges)}: "
-                f"{', '.join(edges)}; a larger box might hold a design that meets them")
+                f"{', '.join(edges)}; "
+                + larger_box(closest, result.constraints, result.calibration,
+                             "a design that meets them"))
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
             + "; ".join(parts) + edge

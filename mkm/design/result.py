@@ -17,6 +17,7 @@ from mkm.design.box_search import (
     Search,
     box_text,
     geometry_text,
+    larger_box,
     outside_practical_range,
     pick,
     range_limits,
@@ -106,8 +107,9 @@ class DesignResult:
                        f"{best['outer_diameter_mm']:.1f} mm at {s.working_pressure_bar:g} bar")
 
     def notes(self) -> list[str]:
-        """What a user must know of the box searched, one line each: the box when it is not
-        the surrogate's (:meth:`Search.box_note`), the chosen design on an end of a
+        """What a user must know of the box searched, one line each: the length searched
+        where a calibration's identified muscle gave it (:attr:`Search.length_note`), the box
+        when it is not the surrogate's (:meth:`Search.box_note`), the chosen design on an end of a
         searched range (:meth:`~mkm.design.box_search.Search.edges`), where a larger box might hold
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a
         required force (the design then is larger than the requirement needs), a chosen
@@ -118,7 +120,7 @@ class DesignResult:
         than the identified muscle's own uncertainty allows at the default probability
         (:func:`held_with`). Empty when none."""
         s = self.search
-        notes = [s.box_note()] if s.box_note() else []
+        notes = [n for n in (s.length_note, s.box_note()) if n]
         best = self.chosen
         if best is not None:
             share = max(float(best[f"r{k}_uncertainty_N"]) / r.force_N
@@ -137,8 +139,8 @@ class DesignResult:
             ranges = {k: v for k, v in s.constraints.items()
                       if k in BOX_NAMES and v[1] > v[0]}
             notes.append(f"the chosen design sits on the edge of the search box "
-                         f"{box_text(ranges)}: {', '.join(edges)}; a larger box might hold a "
-                         "better design")
+                         f"{box_text(ranges)}: {', '.join(edges)}; "
+                         + larger_box(best, s.constraints, s.calibration))
         if best is not None and (limits := range_limits(best, s.constraints)):
             notes.append(f"the chosen design sits on the practical range's limit: "
                          f"{'; '.join(limits)}; a design beyond it might do better, but no "

@@ -158,7 +158,8 @@ def parse_bounds(text, name: str, unit: str | None = None) -> tuple[float, float
 @dataclass(frozen=True)
 class Constraints:
     """The design box and the housing. ``None`` means: D0 and t0 over the surrogate's training
-    box, L0 the surrogate's (the paper's 282 mm), theta0 the FE model's calibration
+    box, L0 the identified muscle's of a calibration identified on one length (``mkm
+    identify``), else the surrogate's (the paper's 282 mm), theta0 the FE model's calibration
     (``fem/calibration.json`` or ``--calibration FILE``); rubber a name of
     :data:`mkm.fem.materials.MATERIALS` (or several).
 

@@ -80,6 +80,8 @@ THRESHOLD_HINT_BAR = 0.1
 UNTIMED_CREEP_FRACTION = 0.03
 #: where the fitted terms start (a term at its zero bound has no gradient to leave it by)
 TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01, "gap_mm": 0.2}
+#: below this share of the force a creep has no time constant the runs can tell
+CREEP_IDENTIFIABLE = 1e-3
 
 
 def identify(run_dirs, params: str | None = None, model: str = "axisym",
@@ -399,6 +401,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if best.at_edge:
         notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
                      "is cut there")
+    notes += terms_at_bounds(runs, best)
     offset = best.values.get("pressure_offset_bar")
     if "pressure_offset_bar" in best.names and fitting.at_edge(
             offset, best.bounds["pressure_offset_bar"]):
@@ -442,6 +445,43 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         confirmation=confirmation, checks=checks, notes=notes, model=fe.name,
         searched_with=searched_with, nominal=nominal, seconds=time.perf_counter() - started,
         goodness=fitness, rubber=rubber, model_form=terms)
+
+
+def terms_at_bounds(runs, best) -> list[str]:
+    """A line for each friction or creep term the fit left on a bound of its search
+    (:data:`~mkm.identify.fitting.TERM_BOUNDS`; ``best.at_edge`` holds the static parameters
+    alone), saying what the bound means: a creep time constant at the longest searched is one
+    the holds are too short to tell, at the shortest one over before they start; a friction or
+    creep share at the largest more than the model's term holds. A share at 0 is no term (the
+    creep's time constant then is said unidentifiable: :func:`_identifiability`)."""
+    lines = []
+    if "log_tau" in best.names and best.values["creep_fraction"] >= CREEP_IDENTIFIABLE:
+        low, high = best.bounds["log_tau"]
+        tau_s, (low_s, high_s) = float(np.exp(best.values["log_tau"])), np.exp([low, high])
+        searched = f"its search is {low_s:.4g} to {high_s:.4g} s"
+        if fitting.at_edge(best.values["log_tau"], (low, high)):
+            if tau_s > np.sqrt(low_s * high_s):
+                holds = [float((r.steps["end_s"] - r.steps["hold_start_s"]).max())
+                         for r in runs if r.timed and len(r.steps)]
+                longest = f" (the longest {max(holds):.3g} s)" if holds else ""
+                lines.append(f"creep_tau_s is {tau_s:.4g} s, the longest searched ({searched}): "
+                             f"the runs' holds{longest} are too short to tell the time "
+                             "constant, only that it is long beside them, and its interval "
+                             "is the search's; hold each step longer (settle.hold_s) to "
+                             "measure it")
+            else:
+                lines.append(f"creep_tau_s is {tau_s:.4g} s, the shortest searched ({searched}): "
+                             "the creep is over before the holds start, so they do not tell "
+                             "the time constant, only that it is short")
+    for name, what in (("hysteresis_fraction", "friction"), ("creep_fraction", "creep")):
+        if name in best.names:
+            low, high = best.bounds[name]
+            value = best.values[name]
+            if high - value <= fitting.EDGE_FRACTION * (high - low):
+                lines.append(f"{name} is {value:.3g}, the largest searched ({low:g} to "
+                             f"{high:g}): the runs ask for more {what} than the model's term "
+                             "holds; it does not fit these runs")
+    return lines
 
 
 def _rest_length_hint(runs, fe, best, fitness, groups) -> list[str]:
@@ -826,7 +866,7 @@ def _identifiability(runs, best, boot) -> list[str]:
         if not ok:
             notes.append(f"{name} is not identifiable from these runs: its interval is its "
                          "search bound")
-    if "log_tau" in names and best.values["creep_fraction"] < 1e-3:
+    if "log_tau" in names and best.values["creep_fraction"] < CREEP_IDENTIFIABLE:
         notes.append("creep_fraction is near 0: creep_tau_s is not identifiable")
     return notes
 

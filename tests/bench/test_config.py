@@ -307,3 +307,53 @@ def test_a_monitor_without_a_live_zero_is_refused_on_a_real_bench(tmp_path, mkm_
         assert line.startswith(f"mkm {command}: error: regulator.monitor_V_at_zero=0 is invalid")
     live = load_config().replace(daq={"backend": "ni"})  # 1-5 V: accepted
     assert live.regulator.monitor_V_at_zero == 1.0
+
+
+def test_every_bad_value_is_named_at_once(tmp_path, mkm_cli):
+    """A 490 N load cell failed on safety.tare_max_std_N (5 N, above 1 % of 490 N), and once
+    that was mended on tare_max_shift_N (100 N, above 10 %): every bad value is named in one
+    go now, a line each, whether checked against another section, within one or by type."""
+    config = tmp_path / "bench.toml"
+    config.write_text(BASE.replace("capacity_N = 1000", "capacity_N = 490").replace(
+        "sensitivity_N_per_V = 100", "sensitivity_N_per_V = 49"), encoding="utf-8")
+    code, out, err = mkm_cli(["check", "--config", str(config)])
+    assert code == 2 and out == ""
+    assert err.splitlines() == [
+        f"mkm check: error: config {config}: safety.tare_max_std_N=5 is invalid: expected 0 to "
+        "4.9 N (1 % of loadcell.capacity_N=490)",
+        f"mkm check: error: config {config}: safety.tare_max_shift_N=100 is invalid: expected "
+        "0 to 49 N (10 % of loadcell.capacity_N=490)"]
+    # two values of one section, and a value of another, each said once
+    text = with_settings("[settle]\nwindow_s = -1\nhold_s = 0\n[daq]\nbuffer_s = 60\n"
+                         "[sim]\nseed = 1.5")
+    with pytest.raises(ValueError) as info:
+        parse_config(text, "lab.toml")
+    assert str(info.value).splitlines() == [
+        "config lab.toml: daq.buffer_s=60 is invalid: expected 600 s (10 minutes of samples, "
+        "so a stalled reader loses nothing) to 86400 s",
+        "config lab.toml: settle.window_s=-1.0 is invalid: expected a number > 0",
+        "config lab.toml: settle.hold_s=0.0 is invalid: expected a number > 0",
+        "config lab.toml: sim.seed=1.5 is invalid: expected a whole number"]
+
+
+def test_a_gap_wider_than_the_tubes_radius_is_refused():
+    """[sim.truth] gap_mm = 30 around a 40 mm tube was simulated: a braid 106 mm wide around a
+    46 mm tube. The gap is bounded by the tube's outer radius, the true tube's for the
+    simulated truth, the declared one's for the muscle."""
+    from mkm.fem.muscle import Muscle
+
+    text = with_settings("[sim.truth]\ngap_mm = 30\nD0_mm = 40")
+    with pytest.raises(ValueError) as info:
+        parse_config(text, "lab.toml")
+    # outer radius 40/2 + 3 = 23 mm
+    assert str(info.value) == (
+        "config lab.toml: sim.truth.gap_mm=30 is too wide for D0_mm=40, t0_mm=3: expected "
+        "gap_mm < D0_mm/2 + t0_mm = 23 mm (the tube's outer radius: a braid more than twice "
+        "the tube's width is no muscle's sleeve)")
+    assert parse_config(with_settings("[sim.truth]\ngap_mm = 22.9\nD0_mm = 40")
+                        ).sim.truth.gap_mm == 22.9
+    with pytest.raises(ValueError, match=r"^config lab\.toml: muscle\.gap_mm=18 is too wide "
+                                         r"for D0_mm=30, t0_mm=3: expected gap_mm < D0_mm/2 "
+                                         r"\+ t0_mm = 18 mm"):
+        parse_config(with_settings("[muscle]\ngap_mm = 18"), "lab.toml")
+    assert Muscle(30.0, 3.0, gap_mm=0.5).gap_mm == 0.5

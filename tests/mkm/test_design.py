@@ -24,7 +24,7 @@ from mkm.design import (
     run_design,
     search,
 )
-from mkm.design.box_search import box_edges
+from mkm.design.box_search import box_edges, larger_box
 from mkm.design.spec import design_muscle
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
@@ -156,8 +156,10 @@ def test_an_infeasible_design_on_the_edge_of_the_box_says_a_larger_box_might_do(
                               "--mesh", MESH, "--no-progress", "--out", str(tmp_path)])
     assert code == 2 and err.count("\n") == 1, err
     assert "closest: D0 = 50.00 mm, t0 = 2.00 mm" in err
+    # naming the option that widens it, its lower end moved out by half the span (2:4 -> 1:4)
     assert err.endswith("; it sits on the edge of the search box t0 2:4 mm: t0 = 2 mm (the "
-                        "lower end of 2:4); a larger box might hold a design that meets them\n")
+                        "lower end of 2:4); a larger box might hold a design that meets them: "
+                        "widen it, e.g. --t0 1:4\n")
     # at the practical range's thinnest wall no larger box can be searched: no such advice
     code, out, err = mkm_run(["design", "--require", "500N@1bar,eps=0.10", "--D0", "50",
                               "--t0", "0.5:4", "--mesh", MESH, "--no-progress", "--out",
@@ -485,10 +487,12 @@ def test_a_design_on_the_edge_of_the_search_box_is_named():
     fe = make_model("axisym", mesh=MESH, muscle=muscle)
     assert float(fe.predict(2.0, muscle.D0_mm, muscle.t0_mm, 0.1).force_N) == pytest.approx(
         best["r1_fe_N"], rel=1e-8)
-    # one line of its own, naming the box searched and the ends the design sits on
+    # one line of its own, naming the box searched, the ends the design sits on and the
+    # options that widen the box: each end moved out by half its range's span
     assert result.notes() == [
         "the chosen design sits on the edge of the search box D0 30:50 mm x t0 2:4 mm: "
-        f"{', '.join(edges)}; a larger box might hold a better design"]
+        f"{', '.join(edges)}; a larger box might hold a better design: widen it, e.g. "
+        "--D0 20:50 --t0 1:4"]
     assert design_record(result)["notes"] == result.notes()
     # a design inside the box, or on a fixed value (no range), sits on no edge
     box = {"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0], "L0_mm": [282.0, 282.0]}
@@ -517,6 +521,8 @@ def test_a_rubber_at_an_end_of_what_was_searched_is_named_and_a_pressure_is_not(
         "0.2082, silastic_s 0.0694 MPa)"]
     assert box_edges({**row, "rubber": "calibrated"}, box, stiff)[0].startswith(
         "rubber = calibrated (C10 0.2082 MPa, the stiffest of those searched")
+    assert larger_box(row, box, stiff) == (
+        "a larger box might hold a better design: add a softer rubber to --rubber")
     # one rubber searched is no range
     assert box_edges(row, {**box, "rubber": ["silastic_s"]}, stiff) == []
 
@@ -563,7 +569,7 @@ def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):
     assert code == 0, err
     line = ("the chosen design sits on the edge of the search box D0 30:50 mm x t0 2:4 mm: "
             "D0 = 30 mm (the lower end of 30:50), t0 = 2 mm (the lower end of 2:4); a larger "
-            "box might hold a better design")
+            "box might hold a better design: widen it, e.g. --D0 20:50 --t0 1:4")
     assert f"mkm design: {line}\n" in err and "searched the box" not in err
     page = (tmp_path / "design.html").read_text(encoding="utf-8")
     assert f'<p class="note">{esc(line)}</p>' in page
@@ -876,6 +882,12 @@ def test_a_design_on_the_practical_ranges_limit_says_no_model_is_validated_beyon
     assert range_limits(row, box) == ["t0 = 0.5 mm, its lower limit",
                                       "theta0 = 15 deg, its lower limit"]
     assert box_edges(row, box) == []  # no larger box to search
+    assert larger_box(row, box) == "a larger box might hold a better design"
+    # an end half a span from the limit is widened to the limit, not beyond (5 of 5:60 mm);
+    # an upper end upwards
+    assert larger_box({**row, "D0_mm": 10.0, "theta0_deg": 20.0},
+                      {**box, "D0_mm": (10.0, 20.0), "theta0_deg": (15.0, 20.0)}) == (
+        "a larger box might hold a better design: widen it, e.g. --D0 5:20 --theta0 15:22.5")
     assert range_limits({**row, "t0_mm": 0.6, "theta0_deg": 20.0}, box) == []
 
 
@@ -1073,3 +1085,53 @@ def test_a_design_met_within_the_identified_muscles_uncertainty_says_so(tmp_path
     (note,) = [n for n in result.notes() if "the identified muscle's own uncertainty" in n]
     assert "--tolerance theta0=0.98,rubber=9.8% --probability 0.95" in note
     assert "holds with about" in note
+
+
+def test_the_default_length_is_the_identified_muscles(tmp_path, mkm_run):
+    """A calibration identified on a 300 mm muscle designed at the paper's 282 mm: the braid
+    angle and rubber searched were that muscle's, its length not. Without --L0 the length is
+    the identified muscle's now, said in one line; --L0 designs another."""
+    from mkm.design.box_search import identified_lengths
+    from mkm.fem.calibration import Calibration
+
+    lab = tmp_path / "calibration.json"
+    record = json.loads(_identified(tmp_path).path.read_text(encoding="utf-8"))
+    muscle = {"id": "lab-300", "D0_mm": 40.0, "t0_mm": 3.0, "L0_mm": 300.0}
+    record["axisym"]["identified"]["runs"] = [{"run": f"r{k}", "path": f"runs/r{k}",
+                                               "muscle": muscle} for k in (1, 2)]
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    code, out, err = mkm_run(["design", "--require", "100N@2bar,eps=0.1", "--top", "1",
+                              "--mesh", MESH, "--no-progress", "--calibration", str(lab),
+                              "--out", str(tmp_path / "d")])
+    assert code == 0, err
+    assert "mkm design: L0 300 mm, the identified muscle's; --L0 to design another length\n" \
+        in err
+    designs = json.loads((tmp_path / "d" / "designs.json").read_text(encoding="utf-8"))
+    assert designs["chosen_muscle"]["L0_mm"] == 300.0
+    # --L0 given: that length, no such line
+    found = search(["100N@2bar,eps=0.1"], {"L0_mm": 250.0}, calibration=Calibration.load(lab))
+    assert set(found.candidates["L0_mm"]) == {250.0} and found.length_note == ""
+    # a rest length identify fitted (--params L0) is the muscle's, not the declared one
+    record["axisym"]["identified"]["parameters"] = [
+        {"parameter": "L0_mm", "value": 296.5, "status": "fitted"}]
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    assert identified_lengths(Calibration.load(lab)) == [296.5]
+    # muscles of two lengths: no one of them is the muscle's; the surrogate's is searched
+    del record["axisym"]["identified"]["parameters"]
+    record["axisym"]["identified"]["runs"][1]["muscle"] = {**muscle, "L0_mm": 250.0}
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    found = search(["100N@2bar,eps=0.1"], calibration=Calibration.load(lab))
+    assert set(found.candidates["L0_mm"]) == {L0_MM}
+    assert found.length_note == ("the identified muscles are 300 and 250 mm long: L0 is the "
+                                 "surrogate's; --L0 to design one of those lengths")
+    # the shipped calibration records no identified muscle
+    assert identified_lengths(None) == [] and search(["100N@2bar,eps=0.1"]).length_note == ""
+
+
+def test_a_gap_wider_than_the_narrowest_tubes_radius_is_refused_before_the_search():
+    # the chosen muscle carries the gap, which a muscle narrower than it cannot: said before
+    # the FE searches, not after (outer radius of the narrowest tube: 5/2 + 0.5 = 3 mm)
+    with pytest.raises(ValueError, match=r"^gap_mm=4 is too wide for D0_mm=5, t0_mm=0\.5: "
+                                         r"expected gap_mm < D0_mm/2 \+ t0_mm = 3 mm .* \(the "
+                                         r"narrowest tube of the box\)$"):
+        search(["10N@2bar,eps=0.1"], {"D0_mm": "5:10", "t0_mm": "0.5:1", "gap_mm": 4.0})

@@ -223,3 +223,47 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     within = SimpleNamespace(judged=True, misfit=[], reduced=1.1, birge_ratio=1.0)
     assert "--braid" not in Identification._verdict_line(
         SimpleNamespace(goodness=within, rubber=held))
+
+
+def test_a_creep_time_constant_at_its_search_bound_is_said():
+    """identify fitted creep_tau_s to 1000 s, the longest it searches, and printed its interval
+    [1, 1000] s without a word: the edge note held the static parameters alone. A term on a
+    bound of its search is said now, with what that bound means."""
+    import math
+    from types import SimpleNamespace
+
+    from mkm.identify.procedure import terms_at_bounds
+
+    # two runs holding each step 20 s and 35 s at most, and a table without timed holds
+    def run(holds_s, timed=True):
+        return SimpleNamespace(timed=timed, steps=pd.DataFrame(
+            {"hold_start_s": [10.0 * k for k in range(len(holds_s))],
+             "end_s": [10.0 * k + h for k, h in enumerate(holds_s)]}))
+
+    runs = [run([20.0, 12.0]), run([35.0]), run([500.0], timed=False)]
+    names = ("theta0_deg", "hysteresis_fraction", "creep_fraction", "log_tau")
+    bounds = {"theta0_deg": (15.0, 50.0), **{n: fitting.TERM_BOUNDS[n] for n in names[1:]}}
+
+    def best(**values):
+        values = {"theta0_deg": 30.0, "hysteresis_fraction": 0.02, "creep_fraction": 0.02,
+                  "log_tau": math.log(1000.0)} | values
+        return Fit(names, values, np.zeros(1), np.zeros(1), np.zeros((1, 4)), np.zeros(1),
+                   np.zeros(1, dtype=int), bounds, "test", 1, "", [], np.zeros(1))
+
+    assert terms_at_bounds(runs, best()) == [
+        "creep_tau_s is 1000 s, the longest searched (its search is 1 to 1000 s): the runs' "
+        "holds (the longest 35 s) are too short to tell the time constant, only that it is "
+        "long beside them, and its interval is the search's; hold each step longer "
+        "(settle.hold_s) to measure it"]
+    assert terms_at_bounds(runs, best(log_tau=0.0)) == [
+        "creep_tau_s is 1 s, the shortest searched (its search is 1 to 1000 s): the creep is "
+        "over before the holds start, so they do not tell the time constant, only that it is "
+        "short"]
+    # inside its search: nothing; no creep to time: said elsewhere (not identifiable)
+    assert terms_at_bounds(runs, best(log_tau=math.log(60.0))) == []
+    assert terms_at_bounds(runs, best(creep_fraction=0.0)) == []
+    # a friction share at the top of its search (0.3); at 0 it is no friction, not a bound
+    assert terms_at_bounds(runs, best(hysteresis_fraction=0.3, log_tau=math.log(60.0))) == [
+        "hysteresis_fraction is 0.3, the largest searched (0 to 0.3): the runs ask for more "
+        "friction than the model's term holds; it does not fit these runs"]
+    assert terms_at_bounds(runs, best(hysteresis_fraction=0.0, log_tau=math.log(60.0))) == []

@@ -221,3 +221,49 @@ def test_study_cli_refuses_an_unknown_surrogate_kind(mkm_run):
     code, _, err = mkm_run(["study", "--surrogates", "gpp"])
     assert code == 2
     assert "unknown kind gpp" in err.strip().splitlines()[-1] and "Traceback" not in err
+
+
+def test_the_studys_workers_bound_its_training_and_its_lines_name_the_command(
+        tmp_path, monkeypatch, mkm_run):
+    """mkm study --workers 1 trained its surrogates two processes at a time, its status lines
+    read "mkm train surrogates: 1/3 kinds" (no command of that name), and --mesh-only said
+    "1 muscles"."""
+    import io
+
+    from mkm import mesh_errors, study
+    from mkm.progress import StatusLine
+
+    class Trained(Exception):
+        pass
+
+    trained, lines = [], io.StringIO()
+    monkeypatch.setattr(study, "trained_surrogate", lambda kind, *args: trained.append(kind))
+    monkeypatch.setattr(study, "progress_bar", lambda total, desc, enabled, unit: StatusLine(
+        total, desc, unit, interval_s=0.0, stream=lines))
+    asked = []
+
+    def recorded(kinds, dataset, cache_dir, n_jobs, train=study.train_surrogates):
+        asked.append(n_jobs)
+        if n_jobs == 1:  # in this process, where the stand-in trains
+            train(kinds, dataset, cache_dir, n_jobs)
+        raise Trained  # the training is all this test asks of the study
+
+    monkeypatch.setattr(study, "train_surrogates", recorded)
+    config = StudyConfig.with_surrogates(("physics", "mlp-paper"))
+    for workers, n_jobs in ((1, 1), (None, study.TRAINING_JOBS)):
+        with pytest.raises(Trained):
+            run_study(tmp_path / "out", config, cache_dir=tmp_path / "cache", progress=True,
+                      workers=workers)
+        assert asked.pop() == n_jobs
+    assert trained == ["physics", "mlp-paper"]
+    assert lines.getvalue().startswith("mkm study: 1/2 trained surrogates, ")
+    # the help's default of the training is the study's
+    code, out, _ = mkm_run(["study", "--help"])
+    assert f"{study.TRAINING_JOBS} for the training" in " ".join(out.split())
+    # one muscle is a muscle
+    monkeypatch.setattr(mesh_errors, "measure", lambda *a, **k: (None,
+                                                                 {"fe_failed_muscles": 0}))
+    monkeypatch.setattr(mesh_errors, "summary_line", lambda out: "bounds")
+    code, _, err = mkm_run(["study", "--mesh-muscles", "1", "--mesh-seed", "7", "--mesh-only",
+                            "--out", str(tmp_path / "mesh")])
+    assert code == 0 and "mkm study: mesh errors of 1 muscle (seed 7, 0 with" in err, err
