@@ -1217,6 +1217,23 @@ def test_the_guides_auto_tables_are_their_measured_files(measured):
         assert int(row[1]) == round(result["within"] * result["calls"])
         assert [c.strip() for c in row[2:5]] == [
             f"{kinds[k]['worst_err_pct']:.3f} %" for k in ("sweep", "point", "near threshold")]
+        answered = {}
+        for model, calls in result["used"].items():
+            label = _AUTO_LABELS.get(model) or (
+                "closed forms" if record["range"] == "box" else
+                "thick-wall" if model == "thickwall" else "eq2")
+            answered[label] = answered.get(label, 0) + calls
+        assert {label: int(calls) for label, calls in (
+            cell.strip().rsplit(" ", 1) for cell in row[5].split(","))} == answered
+        if len(row) > 6:  # the practical range's table gives auto's time per call too
+            assert row[6].strip() == f"{result['auto_s_median']:.2f} s"
+    scored = {result["calls"] for result in record["results"].values()}  # those with FE truth
+    assert f"| answered by (of {scored.pop()}) |" in table.splitlines()[0] and not scored
+
+
+#: bench_auto's models as the guide's auto tables name them (the closed forms grouped)
+_AUTO_LABELS = {"surrogate-muscle-gp": "surrogate", "surrogate-muscle-gp-range": "range surrogate",
+                "axisym-coarse": "coarse", "axisym-medium": "medium", "axisym-fine": "fine"}
 
 
 def test_the_guides_mesh_bounds_are_the_shipped_tables():
@@ -1974,3 +1991,45 @@ def test_the_guides_range_surrogate_bound_check_is_auto_practical_json():
             f"stated, the range's surrogate at most {ratio:.2f} of its bound over "
             f"{min(answered)}-{max(answered)} calls per tolerance") in text
     assert "2189796162" not in text and "--seed 20261206`" not in text
+
+
+def test_the_guides_words_on_the_fe_meshes_auto_answered_with_are_their_measured_files():
+    """force-models.md told, under auto's tables, how the FE meshes fared against their bound,
+    how many calls each answered and what a coarse sweep costs against a medium one, with
+    figures of runs no file records (and the largest ratio credited to the wrong mesh): the
+    words are ``auto.json``'s, ``auto_practical.json``'s and ``axisym_gap.csv``'s."""
+    import io
+    import json
+
+    import pandas as pd
+
+    records = [json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
+               for name in ("auto.json", "auto_practical.json")]
+    meshes = [(check["worst_ratio"], model, check["worst"], record["range"])
+              for record in records for result in record["results"].values()
+              for model, check in result["bound_by_model"].items()
+              if model.startswith("axisym-")]
+    assert all(check["exceeded"] == 0 for record in records
+               for result in record["results"].values()
+               for model, check in result["bound_by_model"].items()
+               if model.startswith("axisym-"))
+    ratio, model, worst, where = max(meshes, key=lambda m: m[0])
+    call = {"sweep": "sweep", "point": "single point", "near threshold": "point just above P*"}
+    scope = {"box": "the box", "practical": "the range"}[where]
+    at_half = [record["results"]["0.005"]["used"] for record in records]
+    rows = pd.read_csv(io.StringIO((DOCS / "measured" / "axisym_gap.csv").read_text(
+        encoding="utf-8").partition("\n")[2]))
+    cpu = rows[rows["gap_mm"] == 0].set_index(["mesh", "eps"])["cpu_seconds"]
+    share = [cpu["coarse", eps] / cpu["medium", eps] for eps in (0.05, 0.2)]
+    text = " ".join((DOCS / "guide" / "force-models.md").read_text(encoding="utf-8").split())
+    assert (f"on both draws none of their calls erred beyond the bound stated, the largest "
+            f"{ratio:.2f} of it (the {model.removeprefix('axisym-')} mesh on a "
+            f"{call[worst['kind']]} of {scope}, {worst['err_pct']:.2f} % against "
+            f"{worst['bound_pct']:.2f} %), and at 0.5 % the fine mesh answered "
+            f"{at_half[0]['axisym-fine']} and {at_half[1]['axisym-fine']} calls, the coarse "
+            f"mesh {at_half[0]['axisym-coarse']} and {at_half[1]['axisym-coarse']}") in text
+    assert (f"a coarse sweep costs {min(share):.2f}-{max(share):.2f} of a medium one's CPU "
+            "time (`docs/measured/axisym_gap.csv`, muscle I without a gap at eps 0.05 and "
+            "0.2)") in text
+    for unrecorded in ("load average of 4-7", "55 and 63", "14.1 s", "0.109 against"):
+        assert unrecorded not in text
