@@ -443,7 +443,7 @@ def test_make_bench_docs_measures_each_file_again_with_the_command_it_records():
 
     generate = _generate()
     checked = 0
-    for name, command in generate.BENCHMARKS.items():
+    for name, command in generate.measured_commands().items():
         record = (DOCS / "measured" / name).with_suffix(".json")
         if not record.exists():  # a CSV with its conditions in its first line
             continue
@@ -454,6 +454,32 @@ def test_make_bench_docs_measures_each_file_again_with_the_command_it_records():
         assert shlex.split(recorded) == shlex.split(expected), name
         checked += 1
     assert checked >= 20
+
+
+def test_make_bench_docs_runs_the_std_coverage_runs_the_guide_pools(tmp_path, monkeypatch):
+    """surrogates.md pools two runs of fresh draws (``STD_COVERAGE_RUNS``) that ``make
+    bench-docs`` did not run, so a refresh left them as they were while every table around them
+    moved: it runs each with the command its file records, and tabulates neither as a benchmark
+    table (they hold no rows)."""
+    import json
+    import shlex
+    import subprocess
+    from types import SimpleNamespace
+
+    generate = _generate()
+    measured = tmp_path / "docs" / "measured"
+    measured.mkdir(parents=True)
+    monkeypatch.setattr(generate, "ROOT", tmp_path)
+    monkeypatch.setattr(generate, "MEASURED", measured)
+    ran = []
+    monkeypatch.setattr(subprocess, "run", lambda args, **_: ran.append(args[1:]) or
+                        SimpleNamespace(stdout=""))
+    generate.run_benchmarks()  # what ``make bench-docs`` runs, here only listed
+    assert len(ran) == len(generate.BENCHMARKS) + len(generate.STD_COVERAGE_RUNS)
+    for name in generate.STD_COVERAGE_RUNS:
+        assert name not in generate.BENCHMARKS
+        recorded = json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))["command"]
+        assert shlex.split(recorded) in ran, name
 
 
 def test_the_shipped_mesh_study_is_what_the_fe_model_computes_now():
@@ -704,7 +730,7 @@ def test_the_guides_pooled_default_surrogate_std_row_is_computed_from_the_runs()
                    for w, r in zip(within, runs, strict=True))
         assert min(within) <= pooled[f"within_{k}std"] <= max(within)
     # one run pooled alone is that run
-    alone = generate.pooled_std_coverage(generate.STD_COVERAGE_RUNS[:1])
+    alone = generate.pooled_std_coverage(list(generate.STD_COVERAGE_RUNS)[:1])
     assert alone["within_1std"] == pytest.approx(runs[0]["within_1std"], abs=1e-12)
     table = generate.std_coverage_table()
     cover = " / ".join(f"{100 * pooled[f'within_{k}std']:.1f}" for k in (1, 2, 3))
