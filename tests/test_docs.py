@@ -2059,3 +2059,49 @@ def test_the_guides_words_on_the_fe_meshes_auto_answered_with_are_their_measured
             "0.2)") in text
     for unrecorded in ("load average of 4-7", "55 and 63", "14.1 s", "0.109 against"):
         assert unrecorded not in text
+
+
+def test_the_guides_words_on_the_mesh_error_runs_are_their_files():
+    """force-models.md typed by hand how the shipped mesh error table and its check on 240
+    fresh muscles were made (the muscles whose fine sweep failed, the wall time, the muscle of
+    the largest ratio, the bound over every muscle it replaced) and, in its table of ``a`` and
+    ``b``, how far each row's measured muscles reach: held to ``mkm/data/mesh_errors.csv`` (and
+    its sidecar), ``mesh_bound.json`` and :class:`mkm.mesh_errors.MeshBound`; a duration no file
+    records is not given."""
+    import json
+
+    import pandas as pd
+
+    from mkm.mesh_errors import MESH_ERRORS_FILE, mesh_model
+
+    text = " ".join((DOCS / "guide" / "force-models.md").read_text(encoding="utf-8").split())
+    table = pd.read_csv(MESH_ERRORS_FILE, comment="#")
+    sidecar = json.loads(MESH_ERRORS_FILE.with_suffix(".json").read_text(encoding="utf-8"))
+    failed = table[table["fe_failed"].astype(bool)].groupby("draw")["muscle"].nunique()
+    assert failed.sum() == sidecar["fe_failed_muscles"]
+    assert (f"{sidecar['fe_failed_muscles']} muscles whose fine sweep failed somewhere "
+            f"({failed['near lock']} of them near the lock) are not scored") in text
+    assert "11 min" not in text  # the sidecar records no duration
+    record = json.loads((DOCS / "measured" / "mesh_bound.json").read_text(encoding="utf-8"))
+    seconds = sum(record["seconds"].values())
+    assert (f"--out docs/measured/mesh_bound.json`, {seconds:.0f} s under load; half near the "
+            f"lock, {record['fe_failed_muscles']} whose fine sweep failed)") in text
+    coarse, medium = (next(r for r in record["rows"] if r["mesh"] == mesh)
+                      for mesh in ("coarse", "medium"))
+    at = dict(re.findall(r"(D0|t0|L0) ([\d.]+) mm", coarse["largest_at"]))
+    assert (f"(a {float(at['D0']):.0f} mm tube {float(at['L0']):.0f} mm long with a "
+            f"{at['t0']} mm wall, `L0/t0` {float(at['L0']) / float(at['t0']):.0f})"
+            ) in text
+    assert (f"against {medium['global_b_pct']:.3f} % and {coarse['global_b_pct']:.3f} % stated "
+            "for every muscle") in text
+    model = mesh_model()
+    rows = text[text.index("| `L0/t0` of the muscle"):].split(" | ")
+    limits = [c for c in rows if re.fullmatch(r"\d+|every muscle \(.*\)", c)]
+    for slenderness, cell in zip((35, 50, 113, 200, 400, 1000), limits, strict=True):
+        reach = {mesh: float(model[mesh].region_limit(slenderness, 1.0))
+                 for mesh in ("medium", "coarse")}
+        if all(reach[m] >= model[m].slenderness.max() for m in reach):
+            assert cell == (f"every muscle (medium {len(model['medium'].slenderness)}, coarse "
+                            f"{len(model['coarse'].slenderness)})")
+        else:
+            assert reach["medium"] == reach["coarse"] and cell == f"{reach['medium']:.0f}"
