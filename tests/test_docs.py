@@ -669,7 +669,8 @@ def test_the_guides_range_surrogate_rows_are_their_measured_files(measured, seed
 def test_the_guides_pooled_range_surrogate_rows_are_their_measured_file():
     """The pooled draws' rows of surrogates.md (seeds 20261701-20261705 and that seed's box)
     hold the coverage of ``surrogate_range_gp_pooled.json`` (98.2 % within 3 std where the
-    surrogate now holds 97.7 %)."""
+    surrogate now holds 97.7 %), and its muscles scored and errors (worst, median, 90th
+    percentile), which nothing held."""
     import json
 
     record = json.loads((DOCS / "measured" / "surrogate_range_gp_pooled.json").read_text(
@@ -683,9 +684,19 @@ def test_the_guides_pooled_range_surrogate_rows_are_their_measured_file():
                                                 "| box, seed 20261701 ("))):
         shares = (100 * part["std_coverage"][f"within_{k}std"] for k in (1, 2, 3))
         cover = " / ".join("100" if f"{v:.1f}" == "100.0" else f"{v:.1f}" for v in shares)
+        worst = f"{part['worst_pct']:#.3g}".rstrip(".")
+        errors = (worst, f"{part['median_pct']:.3f}", f"{part['p90_pct']:.2f}")
         for start in starts:
             row = next(r for r in text.splitlines() if r.startswith(start))
             assert f"| {cover} % |" in row, start
+            cells = [c.strip() for c in row.strip("|").split("|")]
+            if start.startswith("| practical range") or start.startswith("| paper's box"):
+                assert cells[1] == f"{part['muscles_scored']} of {part['muscles_drawn']}"
+                assert (cells[2].split(" %")[0], cells[3], cells[4]) == tuple(
+                    e + " %" if i else e for i, e in enumerate(errors)), start
+            else:  # the second table: scored in the label, the errors in one cell
+                assert start.endswith("(") and cells[0].endswith(f"({part['muscles_scored']})")
+                assert cells[1] == " / ".join(errors) + " %", start
 
 
 @pytest.mark.parametrize(("measured", "seed"), [("surrogate_std_coverage.json", 20261501),
