@@ -858,7 +858,8 @@ def test_the_guides_lock_variants_table_is_its_measured_file():
     """surrogates.md types out ``surrogate_range_lock.json``'s variants by hand, and quoted the
     shipped model on its sets as 277 muscles, worst 6.4 %, 22 above 1 % (the sets of 3 December,
     before the held-out set grew) beside the file's 525, 17.9 % and 38: the table and the
-    sentence on the shipped sets are held to the file (the scratch comparison is gone:
+    sentence on the shipped sets are held to the file, and so are its rows (three scratch fits'
+    figures sat among them) and the sets' muscles (the scratch comparison is gone:
     :func:`test_the_surrogate_pages_scratch_studies_state_no_figure`)."""
     import json
 
@@ -876,8 +877,15 @@ def test_the_guides_lock_variants_table_is_its_measured_file():
         label = "shipped: `log k`, one restart" if name == "shipped" else f"(`{name}`)"
         (row,) = [r for r in rows if r[0] == label or r[0].endswith(label)]
         assert row[1:] == cells(variant["pooled"]), name
+    assert len(rows) == len(record["variants"])  # no row of a fit the file does not hold
     shipped = record["variants"]["shipped"]["pooled"]
     said = " ".join(text.split())
+    sets = {name: record["variants"]["shipped"][name]["muscles"]
+            for name in ("calibration", "held-out", "check")}
+    assert sum(sets.values()) == shipped["muscles"]
+    assert (f"scored on the {shipped['muscles']} shipped muscles with force that nothing fitted "
+            f"on (calibration {sets['calibration']}, held-out {sets['held-out']}, check set "
+            f"{sets['check']}; no FE, minutes per variant)") in said
     assert (f"On the {shipped['muscles']} muscles with force the calibration, held-out and "
             f"check sets hold (`surrogate_range_lock.json`, below) the shipped model's worst is "
             f"{shipped['worst_pct']:.3g} %, its median {shipped['median_pct']:.3f} % and "
