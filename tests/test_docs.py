@@ -2164,3 +2164,28 @@ def test_the_guides_words_on_a_gap_quote_no_figure_of_a_run_no_file_records():
     words = words[:words.index("mkm fem solve")]
     assert "the thick-wall form was further off the fine mesh than the bound it states" in words
     assert not re.search(r"\d %", words), words
+
+
+def test_the_guides_words_on_the_default_kind_refitted_on_the_range_are_its_measured_file():
+    """surrogates.md quotes the default kind refitted on the practical draws (its worst over
+    the range and in the box, its muscles, the rows of its training set) and the range kind's
+    own first draw by hand, twice: held to ``surrogate_range.json`` and
+    ``surrogate_range_gp.json``."""
+    import json
+
+    def measured(name):
+        return json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
+
+    refit, own = measured("surrogate_range.json"), measured("surrogate_range_gp.json")
+    assert "--seed 20261221 " in refit["provenance"]["command"]
+    train = refit["train"]
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    assert (f"missed a fresh muscle by {refit['practical_range']['worst_pct']:.2f} %, below; "
+            f"this kind {own['practical_range']['worst_pct']:.2f} % on its own first draw"
+            ) in text
+    assert (f"(linear inputs, {train['n_muscles']} muscles, `--train practical.csv --seed "
+            f"20261221`) scored worst {refit['practical_range']['worst_pct']:.2f} %, median "
+            f"{refit['practical_range']['median_pct']:.3f} % over the range and "
+            f"{refit['paper_box']['worst_pct']:.3f} % in the box") in text
+    assert (f"({train['n_rows'] + train['n_dropped']} rows, the {train['n_dropped']} that did "
+            "not converge left out at training)") in text
