@@ -2189,3 +2189,25 @@ def test_the_guides_words_on_the_default_kind_refitted_on_the_range_are_its_meas
             f"{refit['paper_box']['worst_pct']:.3f} % in the box") in text
     assert (f"({train['n_rows'] + train['n_dropped']} rows, the {train['n_dropped']} that did "
             "not converge left out at training)") in text
+
+
+def test_the_guides_words_on_the_range_designs_adaptive_muscles_are_the_shipped_set():
+    """surrogates.md describes the adaptive muscles of ``mkm_range_design.csv`` by hand (how
+    many, how near the braid lock, how many failed somewhere): held to the shipped set's rows
+    of that draw."""
+    import pandas as pd
+
+    from mkm.fem.limits import lock_eps
+
+    design = pd.read_csv(ROOT / "surrogate" / "data" / "mkm_range_design.csv")
+    picked = design[design["origin"] == "adaptive practical seed 20261227"].groupby("muscle").agg(
+        eps=("eps", "first"), theta0_deg=("theta0_deg", "first"),
+        converged=("converged", "all"))
+    share = 100 * picked["eps"] / lock_eps(picked["theta0_deg"].to_numpy())
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    assert (f"The {len(picked)} picked among 4000 sit near the braid lock (eps at "
+            f"{share.min():.0f}-{share.max():.0f} % of it, median {share.median():.0f} %)"
+            ) in text
+    assert (f"; {(~picked['converged'].astype(bool)).sum()} of them failed at some pressure "
+            "(rows kept with `converged=False`, left out by the loader)") in text
+    assert "--muscles 4000 --adaptive 250 --seed 20261227" in text
