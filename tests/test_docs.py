@@ -975,6 +975,8 @@ def test_the_guides_learning_curves_are_their_measured_files(measured, heading):
     for row, results in zip(rows, expected, strict=True):
         if results[0] is not record["form"]:
             assert row[1] == str(results[0].get("training_muscles")), row
+        if results[0].get("fraction", 1) < 1:  # the share of the shipped muscles each fit took
+            assert row[0].startswith(f"{100 * results[0]['fraction']:.0f} %"), row
         for cell, key in zip(row[2:], keys, strict=True):
             figures = re.findall(r"[\d.]+", cell)
             assert len(figures) == len(results), (row[0], key)
@@ -2211,3 +2213,22 @@ def test_the_guides_words_on_the_range_designs_adaptive_muscles_are_the_shipped_
     assert (f"; {(~picked['converged'].astype(bool)).sum()} of them failed at some pressure "
             "(rows kept with `converged=False`, left out by the loader)") in text
     assert "--muscles 4000 --adaptive 250 --seed 20261227" in text
+
+
+def test_the_guides_words_on_the_form_and_the_doubled_design_are_their_measured_files():
+    """surrogates.md rounds the form's worst error (each sweep's own line) over the range and in
+    the box by hand, and gave the doubled box design's build a duration its record does not
+    hold (the recorded build took most of its sweeps from a cache): the worst errors are held to
+    ``surrogate_limits_range.json`` and ``surrogate_limits_box.json``, the duration is gone."""
+    import json
+
+    def form(name):
+        record = json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
+        return record["form"]["worst_pct"]
+
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    assert (f"With each muscle's own slope and threshold the worst error is "
+            f"{form('surrogate_limits_range.json'):.2f} % over the range and "
+            f"{form('surrogate_limits_box.json'):.2f} % in the box") in text
+    design = text[text.index("(`DESIGN2.csv`: `mkm surrogate design"):]
+    assert not re.match(r"[^)]*`, \d+ s,", design), design[:300]
