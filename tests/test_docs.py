@@ -2232,3 +2232,32 @@ def test_the_guides_words_on_the_form_and_the_doubled_design_are_their_measured_
             f"{form('surrogate_limits_box.json'):.2f} % in the box") in text
     design = text[text.index("(`DESIGN2.csv`: `mkm surrogate design"):]
     assert not re.match(r"[^)]*`, \d+ s,", design), design[:300]
+
+
+def test_the_guides_range_sets_table_counts_the_shipped_sets_muscles():
+    """surrogates.md's table of the range surrogate's shipped sets counts their muscles by hand
+    (the design's draws, the default's box muscles it took, the adaptive ones the loader keeps,
+    the calibration set's), and its parts of the design did not add up to its 990 (the practical
+    draws counted as drawn, the adaptive ones as kept): held to the sets' rows, each part as the
+    loader keeps it (a muscle that failed somewhere is left out)."""
+    import pandas as pd
+
+    def kept(name):
+        rows = pd.read_csv(ROOT / "surrogate" / "data" / name)
+        return rows[rows.groupby("muscle")["converged"].transform("all").astype(bool)]
+
+    design = kept("mkm_range_design.csv")
+    by_origin = design.groupby("origin")["muscle"].nunique()
+    drawn = pd.read_csv(ROOT / "surrogate" / "data" / "mkm_range_design.csv").groupby(
+        "origin")["muscle"].nunique()
+    practical = [drawn[f"practical seed {seed}"] for seed in (20261220, 20261222)]
+    practical_kept = sum(by_origin[f"practical seed {seed}"] for seed in (20261220, 20261222))
+    adaptive = by_origin["adaptive practical seed 20261227"]
+    box = sum(n for origin, n in by_origin.items() if "practical" not in origin)
+    assert practical_kept + box + adaptive == design["muscle"].nunique()  # the parts add up
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    assert (f"| `mkm_range_design.csv` | {design['muscle'].nunique()} ({practical_kept} of the "
+            f"{practical[0]} + {practical[1]} practical, the default's {box} box muscles, "
+            f"{adaptive} adaptive near the braid lock) | 20261220, 20261222, 20261227 |") in text
+    calibration = kept("mkm_range_std_calibration.csv")["muscle"].nunique()
+    assert f"| `mkm_range_std_calibration.csv` | {calibration} | 20261223 |" in text
