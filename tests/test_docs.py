@@ -2261,3 +2261,30 @@ def test_the_guides_range_sets_table_counts_the_shipped_sets_muscles():
             f"{adaptive} adaptive near the braid lock) | 20261220, 20261222, 20261227 |") in text
     calibration = kept("mkm_range_std_calibration.csv")["muscle"].nunique()
     assert f"| `mkm_range_std_calibration.csv` | {calibration} | 20261223 |" in text
+
+
+def test_the_guides_words_on_more_training_muscles_are_the_learning_curves():
+    """surrogates.md sums up the learning curves by hand (the 98th percentile and the muscles
+    above 1 % from the smallest share to the shipped design over the range; the worst in the box
+    with the shipped design and twice it): held to ``surrogate_limits_range.json`` and
+    ``surrogate_limits_box.json``."""
+    import json
+
+    def measured(name):
+        return json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
+
+    curve = measured("surrogate_limits_range.json")["learning_curve"]
+    least = [r for r in curve if r["fraction"] == min(c["fraction"] for c in curve)]
+    (shipped,) = [r for r in curve if r["fraction"] == 1]
+    p98 = sorted(r["p98_pct"] for r in least)
+    above = sorted(r["above_target"] for r in least)
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    assert (f"From {least[0]['training_muscles']} to {shipped['training_muscles']} training "
+            f"muscles the 98th percentile halved ({p98[0]:.1f}-{p98[-1]:.1f} to "
+            f"{shipped['p98_pct']:.1f} %) and the muscles above 1 % went from {above[0]}-"
+            f"{above[-1]} to {shipped['above_target']} of {shipped['muscles']}") in text
+    assert 1.8 <= min(p98) / shipped["p98_pct"] <= 2.2  # "halved"
+    box = measured("surrogate_limits_box.json")
+    (box_shipped,) = [r for r in box["learning_curve"] if r["fraction"] == 1]
+    assert (f"leaves the worst where it was ({box_shipped['worst_pct']:.2f} -> "
+            f"{box['other_design']['worst_pct']:.2f} %;") in text
