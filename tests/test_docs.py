@@ -863,6 +863,8 @@ def test_the_guides_lock_variants_table_is_its_measured_file():
     :func:`test_the_surrogate_pages_scratch_studies_state_no_figure`)."""
     import json
 
+    import pandas as pd
+
     record = json.loads((DOCS / "measured" / "surrogate_range_lock.json").read_text(
         encoding="utf-8"))
     text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
@@ -883,6 +885,12 @@ def test_the_guides_lock_variants_table_is_its_measured_file():
     sets = {name: record["variants"]["shipped"][name]["muscles"]
             for name in ("calibration", "held-out", "check")}
     assert sum(sets.values()) == shipped["muscles"]
+    held_out = record["variants"]["shipped"]["held-out"]
+    holdout = pd.read_csv(ROOT / "surrogate" / "data" / "mkm_range_std_holdout.csv")
+    kept = holdout.groupby("muscle")["converged"].all().astype(bool).sum()
+    assert (f"scored on the {held_out['muscles']} of its {kept} held-out muscles with force; "
+            f"as shipped worst {held_out['worst_pct']:.1f} %, {held_out['above_1pct']} muscles "
+            "above 1 %, `surrogate_range_lock.json`)") in said
     assert (f"scored on the {shipped['muscles']} shipped muscles with force that nothing fitted "
             f"on (calibration {sets['calibration']}, held-out {sets['held-out']}, check set "
             f"{sets['check']}; no FE, minutes per variant)") in said
@@ -2144,15 +2152,22 @@ def test_the_surrogate_pages_scratch_studies_state_no_figure():
     """surrogates.md quoted figures of scratch counts and comparisons that no file records (the
     muscles behind the points beyond 2 std, the spread of ``|error| / std`` over the pooled
     draws and its bins, the neighbours' correlation, a worst muscle "held on 3 December", a
-    quadratic form's fit and a committee of the two models): their findings are worded without
-    them; the figures a file records stay, held elsewhere."""
+    quadratic form's fit, a committee of the two models, a local process, the fits that tried
+    the reference, the targets' noise and the inputs, and the std's further fits): their
+    findings are worded without them; the figures a file records stay, held elsewhere."""
     text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
     for unrecorded in ("421 muscles", "37 muscles", "2-4.4 times", "3739 points", "2.48 times",
                        "71 % of the variance", "43-83 %", "-0.09 to -0.24", "277 muscles",
                        "29.2 % to 6.4 %", "held on 3 December",
                        # a third process for a quadratic form; a committee of the two models
                        "0.459 to 0.369 %", "0.149 ->", "0.112-0.404 %", "0.169-0.328 %",
-                       "71.6 / 94.4 / 99.3 %"):
+                       "71.6 / 94.4 / 99.3 %",
+                       # a local process; the reference, the targets' noise, the inputs; a
+                       # factor per process, a local scale and two more fits of the std
+                       "50 -> 38", "1.21 -> 1.04 %", "5.4 -> 7.5 %", "12 x 192", "7.6e-4",
+                       "(30 muscles above 1 %", "0.46 -> 1.0-1.7 %", "(34 muscles above 1 %)",
+                       "91.2-91.7 %", "90.1-91.6 %", "against 90.8 %", "held 90.5 %",
+                       "on 900 fresh muscles"):
         assert unrecorded not in text, unrecorded
     assert "On the 525 muscles with force the calibration, held-out and check sets hold" in text
 
