@@ -656,6 +656,8 @@ def test_the_guides_range_surrogate_rows_are_their_measured_files(measured, seed
         row = next(r for r in text.splitlines() if r.startswith(f"| {label}, seed {seed} |"))
         cells = [c.strip() for c in row.strip("|").split("|")]
         assert cells[1].startswith(f"{part['muscles_scored']} of {part['muscles_drawn']}")
+        missing = part["muscles_drawn"] - part["muscles_scored"]
+        assert not missing or cells[1].endswith(f"({missing} without force or FE)"), label
         assert (cells[2].removesuffix(" %"), cells[3], cells[4]) == errors(part), label
         assert cells[5] == cover(part), label
         short = "range" if label == "practical range" else "box"
@@ -2321,3 +2323,16 @@ def test_the_guides_physics_baseline_errors_are_what_training_reports():
             f"{first['median']:.1f} % with `--splits 1`") in text
     assert worst["min"] >= 100  # "off by its whole force or more"
     assert "its median muscle is off by" not in text
+
+
+def test_the_guides_muscle_predicted_without_force_is_its_measured_draw():
+    """surrogates.md names the draw whose muscle the range surrogate predicted no force for
+    (the pooled draws' 100 %): held to ``surrogate_range_gp_pooled.json``'s draws."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "surrogate_range_gp_pooled.json").read_text(
+        encoding="utf-8"))
+    (seed,) = [seed for seed, draw in zip(record["draw_seeds"], record["practical_range_draws"],
+                                          strict=True) if draw["worst_pct"] == 100]
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    assert f"(the 100 % muscle of seed {seed})" in text
