@@ -2356,3 +2356,31 @@ def test_the_guides_words_on_the_range_surrogates_pooled_coverage_are_its_measur
     assert f"3 std holds {cover[3]:.0f} % of the points" in text
     assert (f"2 std holds {cover[2]:.1f} %, {band[0] - cover[2]:.0f} points below the target's "
             f"band ({band[0]:.1f}-{band[1]:.1f} %)") in text
+
+
+def test_the_guides_examples_of_where_the_range_errors_are_hold_their_files():
+    """surrogates.md's list of where the range surrogate's errors are quotes the worst muscle of
+    seed 20261228 and the form's own worst error by hand: the worst is
+    ``surrogate_range_gp_fresh.json``'s, the bound on the form ``surrogate_limits_range.json``'s
+    (rounded up), and the threshold's figures give the worst's error as the line's arithmetic
+    does (the force at 8 bar is proportional to 8 bar less the threshold)."""
+    import json
+
+    def measured(name):
+        return json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
+
+    fresh = measured("surrogate_range_gp_fresh.json")
+    assert fresh["seed"] == 20261228
+    worst = fresh["practical_range"]["worst_pct"]
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    said = re.search(r"whose threshold is ([\d.]+) bar has ([\d.]+) bar of force; the "
+                     r"surrogate's threshold ([\d.]+) bar \(\d+ % off\) makes it ([\d.]+) % off "
+                     r"\(seed 20261228,", text)
+    assert said, "the worst muscle's words"
+    true, above, predicted, error = (float(g) for g in said.groups())
+    assert true + above == 8.0 and error == float(f"{worst:.1f}")
+    assert abs(100 * (predicted - true) / above - error) <= 100 * 0.01 / above  # their digits
+    form = measured("surrogate_limits_range.json")["form"]["worst_pct"]
+    (bound,) = re.findall(r"the threshold-linear form itself is within ([\d.]+) % of every FE "
+                          r"sweep", text)
+    _within(bound, form)
