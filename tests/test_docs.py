@@ -1742,7 +1742,8 @@ def test_the_guides_medium_mesh_bound_examples_are_the_shipped_table(page):
 def test_the_guides_range_surrogate_rescale_is_the_shipped_models():
     """surrogates.md types the range surrogate's std rescale by hand (its ``k``, ``p``, ``q``,
     what they make of the std at 15 and 40 deg, and the coverage it reaches on the held-out
-    set it is fitted on): held to the shipped model's metadata and to that set."""
+    set it is fitted on) and the power of its std's calibration: held to the shipped model's
+    metadata and to that set (a recalibration's figures no file records are not given)."""
     from mkm.surrogate import kinds
     from mkm.surrogate.train import cached_model
     from mkm.surrogate.training_data import load_training_data
@@ -1751,6 +1752,11 @@ def test_the_guides_range_surrogate_rescale_is_the_shipped_models():
     model = cached_model(kinds.RANGE)
     rescale = model.metadata["std_rescale"]
     text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    calibration = model.metadata["std_calibration"]
+    assert (f"the leave-one-muscle-out errors of its {model.metadata['dataset']['n_muscles']}"
+            f" training muscles (power {calibration['std_power']:.1f} of `log k_A`): "
+            f"recalibrated on the {calibration['n_muscles']} muscles of the calibration set (a "
+            "scratch fit no file records) the power came out larger") in text
     k, p, q = rescale["factor"], rescale["shortening_power"], rescale["angle_power"]
     assert (f"fitted on the {rescale['n_muscles']} held-out muscles: k {k:.2f}, p {p:.2f}, q "
             f"{q:.1f} (the std {(15 / 30) ** q:.1f} times wider at 15 deg than at 30, "
