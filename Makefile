@@ -79,7 +79,7 @@ docs: $(VENV)/.installed-docs
 	MPLBACKEND=Agg $(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 	@echo docs/_build/html/index.html
 
-# Rerun the benchmarks whose tables the documentation shows (docs/measured/; minutes).
+# Rerun the benchmarks whose results the documentation shows or quotes (docs/measured/; long).
 bench-docs: $(VENV)/.installed-test
 	$(PIP_INSTALL) -e ".[bench]"
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python docs/generate.py --run-benchmarks

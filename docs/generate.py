@@ -15,7 +15,8 @@ command wrote, and each include names that command, so rerunning it refreshes th
 - ``surrogate_std_fresh.md``: the default surrogate's std coverage on fresh draws, per run and
   pooled over their points (:data:`STD_COVERAGE_RUNS`);
 - ``bench_*.md``: the benchmark tables, from the results the benchmark scripts wrote into
-  ``docs/measured/`` (``make bench-docs`` runs them: :data:`BENCHMARKS`);
+  ``docs/measured/`` (``make bench-docs`` runs them, the std coverage runs and the results the
+  guides quote: :func:`measured_commands`);
 - ``examples/``: one page per script of ``examples/``.
 
 Usage: ``python docs/generate.py [--run-benchmarks [FILE ...]]`` (``sphinx-build`` runs it
@@ -360,15 +361,74 @@ BENCHMARKS = {
 }
 
 
+#: The default surrogate's std coverage on fresh draws, one file per run of
+#: ``benchmarks/bench_surrogate.py`` (output -> command, as in :data:`BENCHMARKS`; surrogates.md
+#: gives the commands): ``make bench-docs`` runs them too, but they are pooled
+#: (:func:`pooled_std_coverage`), not tabulated one by one, and they record no table of rows.
+STD_COVERAGE_RUNS = {
+    "surrogate_std_coverage.json": "benchmarks/bench_surrogate.py --draws 25 --muscles 12 "
+                                   "--seed 20261501 --kinds muscle-gp --repeats 20 --out {out}",
+    "surrogate_std_coverage_fresh.json": "benchmarks/bench_surrogate.py --draws 25 --muscles 12 "
+                                         "--seed 20261901 --kinds muscle-gp --repeats 20 "
+                                         "--out {out}",
+}
+
+#: Results the guides quote in their own words and hand-typed tables, each test-held to its
+#: file, rather than as a generated table (output -> command, as in :data:`BENCHMARKS`):
+#: ``make bench-docs`` runs them too.
+QUOTED_RUNS = {
+    "auto.json": "benchmarks/bench_auto.py --calls 200 --seed 20261203 --out {out}",
+    "auto_practical.json": "benchmarks/bench_auto.py --calls 100 --range practical --seed "
+                           "20261223 --out {out}",
+    "surrogate_limits_range.json": "benchmarks/bench_surrogate_limits.py --kind muscle-gp-range "
+                                   "--muscles 60 --draws 5 --seed 20261701 --fractions "
+                                   "0.35,0.5,0.7,1 --repeats 2 --out {out}",
+    "surrogate_limits_range_adaptive.json": "benchmarks/bench_surrogate_limits.py --kind "
+                                            "muscle-gp-range --muscles 60 --draws 10 --seed "
+                                            "20262101 --fractions 1 --adaptive 100 --pool-seed "
+                                            "20262401 --out {out}",
+    "surrogate_limits_box_adaptive.json": "benchmarks/bench_surrogate_limits.py --kind muscle-gp "
+                                          "--muscles 40 --draws 15 --seed 20262301 --fractions 1 "
+                                          "--adaptive 96 --pool-seed 20261303 --out {out}",
+    "surrogate_limits_box_adaptive_pool2.json": "benchmarks/bench_surrogate_limits.py --kind "
+                                                "muscle-gp --muscles 40 --draws 15 --seed "
+                                                "20262301 --fractions 1 --adaptive 96 "
+                                                "--pool-seed 20261304 --out {out}",
+    "surrogate_range_gp.json": "benchmarks/bench_surrogate_range.py --kind muscle-gp-range "
+                               "--muscles 60 --box-muscles 40 --seed 20261225 --out {out}",
+    "surrogate_range_gp_fresh.json": "benchmarks/bench_surrogate_range.py --kind muscle-gp-range "
+                                     "--muscles 60 --box-muscles 40 --seed 20261228 --out {out}",
+    "surrogate_range_gp_pooled.json": "benchmarks/bench_surrogate_range.py --kind "
+                                      "muscle-gp-range --muscles 60 --box-muscles 40 --seed "
+                                      "20261701 --draws 5 --out {out}",
+    "surrogate_range_gp_all.json": "benchmarks/bench_surrogate_range.py --kind muscle-gp-range "
+                                   "--muscles 60 --box-muscles 40 --seeds 20261225 20261228 "
+                                   "20261701 20261702 20261703 20261704 20261705 --pool-with "
+                                   "tests/surrogate/data/range_check.csv --out {out}",
+    "surrogate_range_lock.json": "benchmarks/bench_range_lock.py --out {out}",
+}
+
+#: Results measured on a training set the repository does not ship (output -> that file):
+#: surrogates.md gives the commands that build it first, so ``make bench-docs`` cannot run them
+#: from a checkout alone.
+BUILT_FIRST = {"surrogate_range.json": "practical.csv", "surrogate_limits_box.json": "DESIGN2.csv"}
+
+
+def measured_commands() -> dict[str, str]:
+    """Every output ``make bench-docs`` measures again, with its command: the benchmark tables',
+    the std coverage runs' and the results the guides quote (:data:`QUOTED_RUNS`)."""
+    return {**BENCHMARKS, **STD_COVERAGE_RUNS, **QUOTED_RUNS}
+
+
 def run_benchmarks(names=None) -> None:
-    """Run the benchmarks of :data:`BENCHMARKS` (all, or ``names``) and keep their results in
-    ``docs/measured/``."""
+    """Run the benchmarks of :func:`measured_commands` (all, or ``names``) and keep their results
+    in ``docs/measured/``."""
     import shlex
     import subprocess
     import sys
 
     MEASURED.mkdir(exist_ok=True)
-    for name, command in BENCHMARKS.items():
+    for name, command in measured_commands().items():
         if names and name not in names:
             continue
         target = MEASURED / name
@@ -456,13 +516,7 @@ def benchmark_tables() -> None:
         write(OUT / f"bench_{path.stem}.md", text)
 
 
-#: The default surrogate's std coverage on fresh draws, one file per run of
-#: ``benchmarks/bench_surrogate.py`` (surrogates.md gives their commands), pooled by
-#: :func:`pooled_std_coverage`.
-STD_COVERAGE_RUNS = ("surrogate_std_coverage.json", "surrogate_std_coverage_fresh.json")
-
-
-def pooled_std_coverage(names=STD_COVERAGE_RUNS) -> dict:
+def pooled_std_coverage(names=tuple(STD_COVERAGE_RUNS)) -> dict:
     """The std coverage of the runs in ``names`` pooled over their points: each run's fraction
     within 1, 2 and 3 std weighed by the points it counts (``offgrid_pooled.points``)."""
     runs = [json.loads((MEASURED / name).read_text(encoding="utf-8"))["offgrid_pooled"]
@@ -577,7 +631,7 @@ if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--run-benchmarks", nargs="*", metavar="FILE",
                         help="first run the benchmarks (all, or these outputs: "
-                             + ", ".join(BENCHMARKS) + ") into docs/measured/")
+                             + ", ".join(measured_commands()) + ") into docs/measured/")
     options = parser.parse_args()
     if options.run_benchmarks is not None:
         run_benchmarks(options.run_benchmarks)
