@@ -98,7 +98,8 @@ def test_check_without_the_device_exits_as_getting_started_says(capsys):
     assert rc == 1 and err.startswith("mkm check: error: NI-DAQmx driver not found")
     text = " ".join((Path(__file__).parents[2] / "docs" / "getting-started.md")
                     .read_text(encoding="utf-8").split())
-    assert ("a configuration it cannot take is one `mkm check: error:` line and exit 2, a "
+    assert ("a configuration it cannot take is one `mkm check: error:` line per bad value (every "
+            "one at once) and exit 2, a "
             "device it cannot reach or use (no NI-DAQmx, no such device, another product) one "
             "such line and exit 1") in text
 
