@@ -38,11 +38,12 @@ from mkm.bench.storage import (
     RunWriter,
     Sample,
     StepRecord,
+    kept_gaps_path,
     kept_samples_path,
     write_samples,
 )
 from mkm.bench.unvented import STATE_WAIT_S
-from mkm.core.records import provenance
+from mkm.core.records import provenance, write_json_atomic
 
 # On Windows a file another program holds open cannot be replaced (PermissionError): a virus
 # scanner, the search indexer or a cloud-sync client opens a file just written for a moment,
@@ -262,8 +263,16 @@ class Recorder:
         that hangs (a roaming profile on a share) must not hold the run's outcome."""
         rows = list(self._unwritten)
         span = f"{rows[0].sample}-{rows[-1].sample}" if len(rows) > 1 else f"{rows[0].sample}"
-        returned, exc = call_within(lambda: write_samples(self.kept_path, rows), STATE_WAIT_S,
-                                    "mkm-recorder-keep")
+        # the run's gaps beside them, first: run.json may be refused too, and a kept row after
+        # a gap it never held would not continue samples.csv (mkm recover)
+        gaps = [dataclasses.asdict(g) for g in self.meta.gaps]
+
+        def keep() -> None:
+            if gaps:
+                write_json_atomic(kept_gaps_path(self.writer.path), gaps)
+            write_samples(self.kept_path, rows)
+
+        returned, exc = call_within(keep, STATE_WAIT_S, "mkm-recorder-keep")
         lost = f"{len(rows)} samples could not be written to the run folder"
         if not returned:
             self.kept = (f"{lost}: samples {span} are being written to {self.kept_path}, which "

@@ -669,6 +669,30 @@ def kept_samples_path(run_dir: Path) -> Path:
     return user_state("unwritten", f"{Path(run_dir).name}-samples.csv")
 
 
+def kept_gaps_path(run_dir: Path) -> Path:
+    """Where the gaps of the run folder ``run_dir`` are kept beside its kept samples
+    (:func:`kept_samples_path`): a run.json refused at the end never held those found after its
+    last write, and without them kept rows after a gap do not continue samples.csv."""
+    return user_state("unwritten", f"{Path(run_dir).name}-gaps.json")
+
+
+def _kept_gaps(run_dir: Path) -> list[Gap]:
+    """The gaps kept beside the run's kept samples (:func:`kept_gaps_path`); none when no file.
+    ``ValueError`` when it cannot be read."""
+    kept = kept_gaps_path(run_dir)
+    if not kept.is_file():
+        return []
+    try:
+        data = json.loads(kept.read_text(encoding="utf-8"))
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"{kept} cannot be read ({str(exc)[:200]}): expected the gaps a run "
+                         "kept beside its samples; nothing joined") from None
+    if not isinstance(data, list):
+        raise ValueError(f"{kept} holds {_shown(data)}: expected the list of gaps a run kept "
+                         "beside its samples; nothing joined")
+    return [_record(Gap, g, f"{kept}: [{k}]") for k, g in enumerate(data)]
+
+
 def _kept_elsewhere(path: Path) -> list[str]:
     """The samples of the run folder ``path`` kept in the state folder
     (:func:`kept_samples_path`) that samples.csv does not hold (past its last row: they follow
@@ -700,9 +724,10 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
 
     ``ValueError`` (nothing changed) when nothing is kept, the run still records, the folder or
     samples.csv still refuses writes, or the kept rows do not continue samples.csv's last
-    sample (after a gap recorded there). The kept rows are written as they are, after
-    samples.csv's last whole row; those it holds already are left out; the kept file stays.
-    Asked again after run.json refused the count, it counts them then.
+    sample (after a gap recorded there). The gaps kept beside them (:func:`kept_gaps_path`)
+    that run.json does not hold are recorded in it, as any gap. The kept rows are written as
+    they are, after samples.csv's last whole row; those it holds already are left out; the kept
+    files stay. Asked again after run.json refused the count, it counts them then.
     """
     path = Path(run_dir)
     meta = read_meta(path)
@@ -715,6 +740,11 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     if not samples_csv.is_file():
         raise ValueError(f"{samples_csv} is missing: expected the run's samples.csv to join "
                          f"the kept samples of {kept} to")
+    recorded = {g.after_sample for g in meta.gaps}
+    added = [g for g in _kept_gaps(path) if g.after_sample not in recorded]
+    if added:  # found after run.json's last write: it never held them
+        meta.gaps = sorted([*meta.gaps, *added], key=lambda g: g.after_sample)
+        meta.lost_samples = sum(g.lost_samples for g in meta.gaps)
     header, *rows = kept.read_bytes().splitlines(keepends=True)
     if header.rstrip(b"\r\n") != ",".join(SAMPLE_COLUMNS).encode():
         raise ValueError(f"{kept} does not start with samples.csv's header: expected the rows "
@@ -758,9 +788,11 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
                          f"joined, the samples stay kept in {kept}; expected a run folder this "
                          "user can write to again") from None
     span = f"samples {new[0][0]}-{new[-1][0]} ({len(new)})"
+    gaps = (f", and the {len(added)} gap(s) kept beside them "
+            f"({sum(g.lost_samples for g in added)} samples lost) recorded" if added else "")
     return _count_joined(path, meta, Run(path, meta, pd.DataFrame(), meta.status).n_samples,
-                         f"{span} kept in {kept} were joined to {samples_csv}",
-                         f"{span} kept in {kept} were joined to samples.csv")
+                         f"{span} kept in {kept} were joined to {samples_csv}{gaps}",
+                         f"{span} kept in {kept} were joined to samples.csv{gaps}")
 
 
 def _count_joined(path: Path, meta: RunMeta, held: int, done: str, said: str

@@ -233,14 +233,18 @@ def force_per_bar(steps, noise_N: float) -> float | None:
     order): the median of the slopes between successive steps at different measured pressures
     whose forces are both above the load cell's noise ``noise_N`` (the muscle pulled at both);
     one step across the threshold, or the turn of a sweep, moves no median. None when no two
-    such steps were done."""
+    such steps were done, or when their median is not positive: a muscle's force rises with its
+    pressure, so that is no muscle's slope but the cell's zero drifting under a slack one (forces
+    above the noise rising as the pressure falls on a down-sweep below the threshold); the vent
+    check then judges the force as without a slope (:func:`still_pulling`)."""
     slopes = []
     for a, b in zip(steps, steps[1:], strict=False):
         dp = b.pressure_bar_mean - a.pressure_bar_mean
         if math.isfinite(dp) and abs(dp) > 0 and a.force_N_mean > noise_N \
                 and b.force_N_mean > noise_N:
             slopes.append((b.force_N_mean - a.force_N_mean) / dp)
-    return statistics.median(slopes) if slopes else None
+    per_bar_N = statistics.median(slopes) if slopes else None
+    return per_bar_N if per_bar_N is not None and per_bar_N > 0 else None
 
 
 def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: float,

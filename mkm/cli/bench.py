@@ -168,7 +168,8 @@ def register(subparsers) -> None:
         description="Append the samples a run folder refused to the end (gone read-only, a "
                     "share remounted), kept in the user state folder as "
                     "unwritten/<run folder>-samples.csv, to the run's samples.csv once the "
-                    "folder takes writes again, and count them in run.json. Refused in one "
+                    "folder takes writes again, and count them in run.json (with the gaps "
+                    "kept beside them, as unwritten/<run folder>-gaps.json). Refused in one "
                     "line, nothing changed, while the folder is still read-only or when the "
                     "kept rows do not continue samples.csv's last sample; the kept file stays.",
         epilog="example: mkm recover mkm-out/runs/20261202T093800Z_paper-prototype")

@@ -688,9 +688,9 @@ def test_a_close_that_fails_otherwise_than_the_disk_still_records_the_outcome(tm
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
 
 
-def _read_only_from_60(monkeypatch) -> list[int]:
-    """The run folder refuses every write from sample 60 on (gone read-only: samples.csv,
-    run.json); the samples the run queued, returned, in order."""
+def _read_only_from_60(monkeypatch, first: int = 60) -> list[int]:
+    """The run folder refuses every write from sample ``first`` on (gone read-only:
+    samples.csv, run.json); the samples the run queued, returned, in order."""
     from mkm.bench.recorder import Recorder
 
     queued, read_only = [], {"from": None}
@@ -704,8 +704,8 @@ def _read_only_from_60(monkeypatch) -> list[int]:
         raise PermissionError(errno.EACCES, "Permission denied")
 
     def read_only_from_60(self, rows):
-        if rows[-1].sample >= 60:
-            read_only["from"] = 60
+        if rows[-1].sample >= first:
+            read_only["from"] = first
         if read_only["from"] is not None:
             denied()
         append(self, rows)
@@ -910,6 +910,54 @@ def test_mkm_recover_joins_kept_rows_after_a_gap_recorded_at_samples_csvs_end(
     joined = pd.read_csv(samples_csv)["sample"].tolist()
     assert joined == list(range(60)) + [int(r.split(",", 1)[0]) for r in shifted]
     assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == len(joined)
+
+
+def test_mkm_recover_joins_kept_rows_after_a_gap_run_json_never_took(config, tmp_path,
+                                                                     monkeypatch, mkm_cli):
+    # a 30 s stall against a 10 s buffer lost samples 40-339 (the simulator's overflow), and the
+    # run folder went read-only with the first block after it: samples.csv ends at 39, the
+    # kept rows begin at 340, and run.json, refused at the end, never held the gap. `mkm
+    # recover` refused them ("expected ... from sample 40"). Now the gaps are kept beside the
+    # rows, and recover joins them with the gap recorded in run.json as any gap
+    import json
+
+    import pandas as pd
+
+    from mkm.bench.run import acquire
+
+    c = config.replace(sim={"buffer_s": 10.0, "faults": {"stall_at_s": 4.0, "stall_s": 30.0}})
+    queued = _read_only_from_60(monkeypatch, first=340)
+    result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    path, run_json = result.path, result.path / "run.json"
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    assert meta["status"] == "running" and meta["gaps"] == []  # refused at the end
+    meta["process"]["started_unix_s"] -= 100.0  # its process has ended since
+    run_json.write_text(json.dumps(meta), encoding="utf-8")
+    assert pd.read_csv(path / "samples.csv")["sample"].iloc[-1] == 39
+    gaps = tmp_path / "mkm-state" / "unwritten" / f"{path.name}-gaps.json"
+    text = gaps.read_text(encoding="utf-8")
+    gaps.write_text("[{", encoding="utf-8")  # a kept file no one can read: nothing joined
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (2, "") and err.startswith(f"mkm recover: error: {gaps} cannot be "
+                                                     "read (") and err.count("\n") == 1
+    assert pd.read_csv(path / "samples.csv")["sample"].iloc[-1] == 39
+    gaps.write_text(text, encoding="utf-8")
+    code, out, err = mkm_cli(["recover", str(path)])
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{path.name}-samples.csv"
+    n = len(queued)
+    assert (code, out) == (0, f"{path}\n") and err == (
+        f"mkm recover: note: samples 340-{queued[-1]} ({n - 40}) kept in {kept} were joined to "
+        f"{path / 'samples.csv'}, and the 1 gap(s) kept beside them (300 samples lost) "
+        f"recorded; run.json counts {n} samples\n")
+    run = load_run(path)
+    assert run.samples["sample"].tolist() == queued and queued[:40] == list(range(40))
+    assert queued[40] == 340  # 300 samples lost: 30 s at 10 Hz
+    (gap,) = run.meta.gaps
+    assert (gap.after_sample, gap.lost_samples, gap.start_s, gap.end_s) == (39, 300, 4.0, 34.0)
+    assert run.meta.lost_samples == 300 and run.meta.counters["samples"] == len(queued)
+    assert not [p for p in run.problems if "samples counted" in p]
 
 
 def test_mkm_recover_says_a_run_json_it_cannot_read_in_one_line(config, tmp_path,

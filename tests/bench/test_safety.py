@@ -841,6 +841,23 @@ def test_force_per_bar_is_the_muscles_slope_where_it_pulls():
     assert force_per_bar(steps[:2], 2.2) is None  # 9.5 N at 0.5 bar, nothing above it
 
 
+def test_force_per_bar_is_never_negative_on_a_zero_drifting_under_a_slack_muscle():
+    from mkm.bench.storage import StepRecord
+    from mkm.bench.vent import force_per_bar
+
+    # a slack down-sweep below the 0.45 bar threshold while the cell's zero drifts up 0.5 N a
+    # step, above the 2.2 N noise: the slopes are 0.5 N / -0.1 bar = -5 N/bar, and were
+    # returned as the muscle's force per bar. A muscle's force never falls as its pressure
+    # rises: none is found
+    def row(k, p, force):
+        return StepRecord(k, "down", 0, p, p, force, 0.35, 50, True, 4.0, 9.0 * k, 9.0 * k + 9.0)
+
+    steps = [row(k, p, 3.0 + 0.5 * k) for k, p in enumerate((0.4, 0.3, 0.2, 0.1))]
+    assert force_per_bar(steps, 2.2) is None
+    flat = [row(k, p, 3.0) for k, p in enumerate((0.4, 0.3, 0.2))]  # a zero slope: none either
+    assert force_per_bar(flat, 2.2) is None
+
+
 def test_a_force_kept_after_the_vent_is_judged_by_what_the_threshold_pressure_makes():
     from mkm.bench.vent import VentCheck, still_pulling
 
