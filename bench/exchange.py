@@ -65,6 +65,7 @@ from mkm.bench.tables import (
     key_values,
     marked_gauge,
     numbers_as_read,
+    parse_header,
     read_tables,
     recognise,
     several_forces,
@@ -416,8 +417,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                 else "")
                              + (f"; a 4-20 mA channel, {in_mA[0]!r}, with --current-range "
                                 f"{missing[0]}=LOW:HIGH" if in_mA else "") + ")"
-                             + "".join(f"; {h!r} names {why}, not taken by its unit: "
-                                       f"--columns {missing[0]}={h!r} reads it"
+                             + "".join((f"; {h!r} names {why}, not taken by its unit"
+                                        if parse_header(h)[1] else
+                                        f"; by its name, {h!r} is {why}, no reading")
+                                       + f": --columns {missing[0]}={h!r} reads it"
                                        for h, why in unread_columns(table, missing[0])[:1]))
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
