@@ -315,7 +315,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         The rate the table's rows were logged at [Hz], for a table without a clock (or with a
         row counter, :func:`mkm.bench.tables.counts_rows`): row ``k`` at ``k / sample_rate_hz``
         seconds (:func:`mkm.bench.tables.timed_rows`), a time series; refused for a table with
-        a time column, for ``mkm export``'s workbook and with ``join``.
+        a time column, for ``mkm export``'s workbook and with ``join``. A LabChart export
+        without its time column is timed so by its header's ``Interval=`` (a rate given must
+        agree with it).
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -369,13 +371,25 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         # a logger's row numbers under a clock's name: read as seconds, a 1 Hz clock the file
         # does not say
         counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
-        if sample_rate_hz is not None:
+        rate_hz, rate_from = sample_rate_hz, "--sample-rate"
+        if "time" not in found and table.interval is not None:
+            # a LabChart export saved without its time column: its header states the rate
+            written, interval_s = table.interval
+            rate_from = f"the header's Interval= {written}"
+            if rate_hz is not None and not math.isclose(rate_hz * interval_s, 1.0,
+                                                        rel_tol=1e-9):
+                raise ValueError(f"--sample-rate {rate_hz:g} Hz: {table.name}'s header states "
+                                 f"Interval= {written}, {1.0 / interval_s:g} Hz: expected the "
+                                 "rate its rows were logged at; without --sample-rate the "
+                                 "header's is taken")
+            rate_hz = 1.0 / interval_s
+        if rate_hz is not None:
             if "time" in found:  # two clocks that may disagree: the file's is not overridden
-                raise ValueError(f"--sample-rate {sample_rate_hz:g} Hz: {table.name} has a "
+                raise ValueError(f"--sample-rate {rate_hz:g} Hz: {table.name} has a "
                                  f"time column, {found['time'].header!r}: expected the option "
                                  "only for a table without one (its rows logged evenly at that "
                                  "rate)")
-            table, found["time"] = timed_rows(table, sample_rate_hz)
+            table, found["time"] = timed_rows(table, rate_hz)
         missing = [r for r in REQUIRED_ROLES if r not in found]
         if other is not None:
             if counter:
@@ -429,14 +443,14 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             check_channel_times(table, found)
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in taken_columns(found)], counter,
-                                  sample_rate_hz)
+                                  rate_hz, None if rate_hz is None else rate_from)
         # without a time column every row is a step, or a record's rows are taken as evenly
         # spaced (or timed by --sample-rate): a clock by a name the reader does not know is
         # left out, and named (an export's steps have times)
-        unread = [] if exported or ("time" in found and sample_rate_hz is None) else \
+        unread = [] if exported or ("time" in found and rate_hz is None) else \
             unread_time_columns(table, found)
-        if sample_rate_hz is not None:
-            read_as = timed_by = f"the rows timed at {sample_rate_hz:g} Hz (--sample-rate)"
+        if rate_hz is not None:
+            read_as = timed_by = f"the rows timed at {rate_hz:g} Hz ({rate_from})"
         else:
             read_as = ("its rows are taken as evenly spaced in time" if (unread or counter) and
                        not one_step_per_row and

@@ -232,6 +232,9 @@ class RawTable:
     footer_skipped: list[str] = field(default_factory=list)
     #: what :func:`join_by_time` joined to it: the other table, its columns, the times' origin
     joined: dict = field(default_factory=dict)
+    #: the sampling interval its header block states, as written (LabChart's ``Interval=``,
+    #: ``0.01 s``), and in seconds: its rows' times where it has no time column
+    interval: tuple[str, float] | None = None
 
     @property
     def name(self) -> str:
@@ -365,11 +368,13 @@ def _text_table(path: Path, text: str) -> RawTable:
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
     if path.suffix.lower() == ".lvm":
         parsed = _without_later_lvm_headers(path, parsed)
+    interval = _labchart_interval(parsed)
     parsed = _labchart_header(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
                                          for c in cells])
-    return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
-                        decimal)
+    table = _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
+                         decimal)
+    return replace(table, interval=interval) if interval else table
 
 
 def _comment(line: str) -> bool:
@@ -419,6 +424,40 @@ _OPEN_QUOTE = re.compile(r'(?:^|[,;\t])\s*"[^"]*$')
 LABCHART_BLOCK_MAX = 20
 
 
+def _labchart_block(parsed: list[tuple[int, list[str]]]) -> dict[str, int]:
+    """A LabChart text export's header block, each label (lower case, ``channeltitle=``) ->
+    its row's index in ``parsed``; empty for any other table."""
+    block = {}
+    for k, (_, cells) in enumerate(parsed[:LABCHART_BLOCK_MAX]):
+        label = cells[0].strip() if cells else ""
+        if not label.endswith("=") or len(label) < 2:
+            break
+        block[label.lower()] = k
+    return block if "channeltitle=" in block and len(block) < len(parsed) else {}
+
+
+#: a LabChart header block's ``Interval=`` cell: a number and its unit of time (``0.01 s``,
+#: ``0,01 s`` where the PC writes decimal commas, ``1 ms``)
+_INTERVAL = re.compile(r"(?P<number>\d+(?:[.,]\d*)?(?:[eE][+-]?\d+)?)\s*(?P<unit>\S*)")
+
+
+def _labchart_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float] | None:
+    """The sampling interval a LabChart text export's header block states (``Interval=`` and
+    ``0.01 s``), as written and in seconds; None where it has none or one that is no
+    positive time."""
+    block = _labchart_block(parsed)
+    if "interval=" not in block:
+        return None
+    cells = parsed[block["interval="]][1]
+    text = cells[1].strip() if len(cells) > 1 else ""
+    match = _INTERVAL.fullmatch(text)
+    unit = parse_unit(match["unit"] or "s") if match else None
+    if unit is None or unit.dimensionality != registry().Unit("s").dimensionality:
+        return None
+    seconds = float(match["number"].replace(",", ".")) * (1 * unit).to("s").magnitude
+    return (text, seconds) if math.isfinite(seconds) and seconds > 0 else None
+
+
 def _labchart_header(path: Path,
                      parsed: list[tuple[int, list[str]]]) -> list[tuple[int, list[str]]]:
     """A LabChart (ADInstruments) text export's rows with its header block, each row a label
@@ -428,13 +467,8 @@ def _labchart_header(path: Path,
     line of ``ChannelTitle=``. Its ``TopValue=`` and ``BottomValue=`` rows hold numbers, and
     were otherwise the first rows of data. Any other table as it is; ``ValueError`` naming
     the row where a second block's header begins (a record stopped and started again)."""
-    block = {}
-    for k, (_, cells) in enumerate(parsed[:LABCHART_BLOCK_MAX]):
-        label = cells[0].strip() if cells else ""
-        if not label.endswith("=") or len(label) < 2:
-            break
-        block[label.lower()] = k
-    if "channeltitle=" not in block or len(block) == len(parsed):
+    block = _labchart_block(parsed)
+    if not block:
         return parsed
     number, titles = parsed[block["channeltitle="]]
     names = _filled(titles[1:])
@@ -2373,6 +2407,9 @@ class Recognition:
     row_counter: str | None = None
     #: the rate its rows were logged at, as the lab states it (:func:`timed_rows`) [Hz]
     sample_rate_hz: float | None = None
+    #: who states that rate: ``--sample-rate``, or the file's header (LabChart's
+    #: ``Interval=``)
+    sample_rate_from: str | None = None
     _values: dict = field(default_factory=dict, repr=False)
 
     def values(self, role: str, optional: bool = False) -> np.ndarray:
@@ -2425,6 +2462,8 @@ class Recognition:
             extras.append(f"{len(shared)} row(s) with the time of the row above but other "
                           "readings (a clock coarser than the sampling) kept as samples: "
                           + ", ".join(shared[:5]) + (", ..." if len(shared) > 5 else ""))
+        if self.sample_rate_from and self.sample_rate_from != "--sample-rate":
+            extras.append(f"rows at {self.sample_rate_hz:g} Hz by {self.sample_rate_from}")
         if over := self.table.overloads_skipped:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")
@@ -2436,4 +2475,5 @@ class Recognition:
                 "columns": {role: c.describe() for role, c in self.columns.items()},
                 "ignored_columns": self.ignored,
                 **({"row_counter_column": self.row_counter} if self.row_counter else {}),
-                **({"sample_rate_hz": self.sample_rate_hz} if self.sample_rate_hz else {})}
+                **({"sample_rate_hz": self.sample_rate_hz,
+                    "sample_rate_from": self.sample_rate_from} if self.sample_rate_hz else {})}

@@ -1189,6 +1189,43 @@ def test_sample_rate_times_the_rows_of_a_table_without_a_clock(counter, tmp_path
             "with the --sample-rate they were") in err and "--units time=ms" not in err
 
 
+@pytest.mark.parametrize("interval, rate_hz", [("0.01 s", 100.0), ("0,005 s", 200.0),
+                                             ("10 ms", 100.0)])
+def test_a_labchart_export_without_its_time_is_timed_by_its_interval(interval, rate_hz,
+                                                                     tmp_path, mkm_cli):
+    # LabChart's text export saved without its time column states its sampling interval in
+    # its header block ('Interval=\t0.01 s'): its rows were taken as evenly spaced, untimed,
+    # the line naming --sample-rate for a rate the file says
+    t = np.arange(0.0, 60.0, 0.01)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    path = tmp_path / "labchart.txt"
+    path.write_text(f"Interval=\t{interval}\nExcelDateTime=\t4.6361586805555557e+04\t"
+                    "05.12.2026 14:05:00,000000\nTimeFormat=\tStartOfBlock\nDateFormat=\t\n"
+                    "ChannelTitle=\tDruck\tKraft\nRange=\t10.000 V\t2.000 V\n"
+                    "UnitName=\tbar\tN\nTopValue=\t10\t2000\nBottomValue=\t0\t-2000\n"
+                    + "".join(f"{a:.6f}\t{b:.6f}\n" for a, b in zip(p, thickwall_N(p, 0.0),
+                                                                    strict=True)),
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert (f"'rows at {rate_hz:g} Hz' -> time [s]; rows at {rate_hz:g} Hz by the header's "
+            f"Interval= {interval}") in err
+    recorded = run.meta.imported_from
+    assert recorded["sample_rate_hz"] == pytest.approx(rate_hz, rel=1e-12)
+    assert recorded["sample_rate_from"] == f"the header's Interval= {interval}"
+    assert recorded["shape"] == "staircase"
+    # row k at k times the interval, as --sample-rate would time it
+    np.testing.assert_allclose(run.samples["time_s"], np.arange(t.size) / rate_hz, atol=1e-9)
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    # a --sample-rate that disagrees with the header is refused, not chosen between unsaid
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--sample-rate", "7",
+                            "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert (f"--sample-rate 7 Hz: labchart.txt's header states Interval= {interval}, "
+            f"{rate_hz:g} Hz: expected the rate its rows were logged at") in err
+    assert not (tmp_path / "bad").exists()
+
+
 @pytest.mark.parametrize("rate, why", [
     ("0", "--sample-rate 0 Hz is invalid: expected the rate the table's rows were logged at, a "
           "finite number > 0 Hz"),
