@@ -75,6 +75,7 @@ from mkm.bench.tables import (
     unread_columns,
     unread_time_columns,
     volts_header,
+    with_milliseconds,
     without_blank_rows,
     without_repeated_rows,
     without_summary_rows,
@@ -367,7 +368,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     prepared, skipped = [], []
     for table in tables:
         bar.start(f"recognising {table.name}")
-        found = recognise(table, columns, units, scaling)
+        table, found = with_milliseconds(table, recognise(table, columns, units, scaling))
         # a logger's row numbers under a clock's name: read as seconds, a 1 Hz clock the file
         # does not say
         counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
@@ -557,7 +558,8 @@ def _join_table(path: str | Path, scaling=None):
         raise ValueError(f"--join-by-time {Path(path).name}: {len(timed)} of its sheets hold a "
                          f"time column: expected one (sheets "
                          f"{', '.join(repr(t.sheet) for t in tables)}); save it alone")
-    table, found = timed[0] if timed else (tables[0], recognise(tables[0], scaling=scaling))
+    table, found = with_milliseconds(*timed[0] if timed else
+                                     (tables[0], recognise(tables[0], scaling=scaling)))
     if counts_rows(table, found.get("time")):  # read as seconds, a 1 Hz clock it does not say
         header = found["time"].header
         raise ValueError(f"--join-by-time {Path(path).name}: its column {header!r} counts the "

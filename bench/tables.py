@@ -1096,11 +1096,16 @@ class Column:
     #: how its volts or milliamperes become the role's unit (a channel logged in volts:
     #: ``--sensitivity``; a 4-20 mA transmitter's: ``--current-range``)
     scale: Scaling | SummedScaling | CurrentLoop | None = None
+    #: a time column of whole seconds: the column of its milliseconds beside it (index,
+    #: header), joined to each time cell by :func:`with_milliseconds`
+    milliseconds: tuple[int, str] | None = None
 
     @property
     def indices(self) -> tuple[int, ...]:
-        """The table's columns this one reads: its own, or those it adds up."""
-        return tuple(p.index for p in self.parts) or (self.index,)
+        """The table's columns this one reads: its own (and its milliseconds'), or those it
+        adds up."""
+        return (tuple(p.index for p in self.parts) or (self.index,)) + (
+            (self.milliseconds[0],) if self.milliseconds else ())
 
     def describe(self) -> dict:
         role_unit = ROLES[self.role].unit
@@ -1109,6 +1114,8 @@ class Column:
                 "converted_to": role_unit if role_unit else ("fraction" if role_unit == ""
                                                              else None),
                 **({"sum_of": [p.describe() for p in self.parts]} if self.parts else {}),
+                **({"milliseconds_column": self.milliseconds[1]} if self.milliseconds
+                   else {}),
                 **({"scaling": self.scale.describe()} if self.scale else {})}
 
 
@@ -1572,6 +1579,58 @@ def counts_rows(table: RawTable, column: Column | None) -> bool:
         return False
     start = values[0] - rows[0]
     return bool(start >= 0 and start == round(start) and np.all(values - rows == start))
+
+
+#: the names of a column holding a clock's milliseconds beside a time column of whole
+#: seconds, as some data loggers write their time ('Date&Time' and 'ms')
+MILLISECOND_NAMES = ("ms", "msec", "millisecond", "milliseconds", "millisekunden")
+#: a clock reading's whole seconds, nothing after them that is part of the time (14:05:00 in
+#: '05.12.2026 14:05:00' or '2:05:00 PM', not 14:05:00.250 or 14:05:00:250)
+_WHOLE_SECONDS = re.compile(r"(?<![\d:])(\d{1,2}:\d{2}:\d{2})(?![\d.,:])")
+
+
+def with_milliseconds(table: RawTable,
+                      found: dict[str, Column]) -> tuple[RawTable, dict[str, Column]]:
+    """``table`` and ``found`` with a time column of whole seconds (clock readings or
+    date-times, ``05.12.2026 14:05:00``) and the column of milliseconds beside it (named
+    :data:`MILLISECOND_NAMES`, without a unit) joined: each time cell holds its row's
+    milliseconds (``05.12.2026 14:05:00.250``), and the time column names both. Read apart,
+    the rows of one second would share its time. Any other table as it is; ``ValueError``
+    naming a row's milliseconds that are no whole number from 0 to 999."""
+    time = found.get("time")
+    if time is None or time.parts or time.milliseconds or not table.rows:
+        return table, found
+    taken = taken_columns(found)
+    beside = [k for k in (time.index + 1, time.index - 1)
+              if 0 <= k < len(table.header) and k not in taken and table.header[k]
+              and parse_header(table.header[k]) in ((n, None) for n in MILLISECOND_NAMES)]
+    if not beside:
+        return table, found
+    cells = [row[time.index] for row in table.rows]
+    whole = [isinstance(c, datetime.datetime) and not c.microsecond
+             or isinstance(c, str) and len(_WHOLE_SECONDS.findall(c)) == 1 for c in cells]
+    # rows whose time is no clock reading (a blank cell, a summary row's 'Max') are left to
+    # the checks that skip or refuse them
+    if not whole[0] or not all(
+            w or not isinstance(c, (str, datetime.datetime)) or ":" not in str(c)
+            for c, w in zip(cells, whole, strict=True)):
+        return table, found
+    index = beside[0]
+    rows = []
+    for k, (row, cell, joined) in enumerate(zip(table.rows, cells, whole, strict=True)):
+        if joined:
+            ms = plain_number(row[index], table.decimal)
+            if ms is None or ms != int(ms) or not 0 <= ms <= 999:
+                raise ValueError(f"{table.name}, cell {table.cell(k, index)} (column "
+                                 f"{table.header[index]!r}): {_shown(row[index])} is not the "
+                                 f"milliseconds of its time {_shown(cell)}: expected a whole "
+                                 "number from 0 to 999")
+            cell = (cell + datetime.timedelta(milliseconds=int(ms))
+                    if isinstance(cell, datetime.datetime) else
+                    _WHOLE_SECONDS.sub(lambda m, ms=int(ms): f"{m[1]}.{ms:03d}", cell))
+        rows.append([*row[:time.index], cell, *row[time.index + 1:]])
+    return (replace(table, rows=rows),
+            {**found, "time": replace(time, milliseconds=(index, table.header[index]))})
 
 
 def timed_rows(table: RawTable, rate_hz: float) -> tuple[RawTable, Column]:
@@ -2435,7 +2494,9 @@ class Recognition:
                      else f" [{unit}]" if unit else "")
             if column.scale:
                 shown = f"{shown[:-1]}: {column.scale.shown(target)}]"
-            header = " + ".join(repr(p.header) for p in column.parts or (column,))
+            header = " + ".join([repr(p.header) for p in column.parts or (column,)]
+                                + ([repr(column.milliseconds[1])] if column.milliseconds
+                                   else []))
             parts.append(f"{header} -> {role}{shown}")
         extras = []
         if self.table.decimal == ",":

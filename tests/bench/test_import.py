@@ -874,6 +874,59 @@ def test_a_time_header_naming_its_clock_format_reads_the_clock(header, tmp_path,
             f"header's {unit!r} says: expected times such as 09:05:00.250") in err
 
 
+@pytest.mark.parametrize("layout", [
+    ("Date&Time", "ms", "%d.%m.%Y %H:%M:%S", ".csv"), ("Zeit", "msec", "%H:%M:%S", ".csv"),
+    ("Timestamp", "Milliseconds", "%Y-%m-%dT%H:%M:%S+01:00", ".csv"),
+    ("Date&Time", "Millisecond", None, ".xlsx")])
+@pytest.mark.parametrize("ms_first", [False, True])
+def test_a_date_time_of_whole_seconds_takes_its_milliseconds_column(layout, ms_first, tmp_path,
+                                                                    mkm_cli):
+    # a data logger writing its time as whole seconds and the milliseconds in a column beside
+    # ('Date&Time' and 'ms'): the milliseconds were ignored, ten 10 Hz samples sharing each
+    # second ("... with the time of the row above ... kept as samples"), the holds timed to
+    # the second
+    time_header, ms_header, form, suffix = layout
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    start = datetime.datetime(2026, 12, 5, 23, 59, 30)  # the record passes midnight
+    ms = np.round(t * 1000).astype(int)
+    whole = [start + datetime.timedelta(seconds=int(m // 1000)) for m in ms]
+    columns = {time_header: [w.strftime(form) for w in whole] if form else whole,
+               ms_header: ms % 1000}
+    frame = pd.DataFrame({**(dict(reversed(columns.items())) if ms_first else columns),
+                          "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)})
+    path = tmp_path / f"logger{suffix}"
+    frame.to_excel(path, index=False) if suffix == ".xlsx" else frame.to_csv(path, index=False,
+                                                                             sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert f"{time_header!r} + {ms_header!r} -> time [s]" in err
+    assert "kept as samples" not in err
+    recorded = run.meta.imported_from
+    assert recorded["columns"]["time"]["milliseconds_column"] == ms_header
+    assert recorded["rows_sharing_a_time_kept"] == [] and ms_header not in \
+        recorded["ignored_columns"]
+    # each row at its second plus its milliseconds, counted from the first
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-6)
+    steps = run.steps
+    np.testing.assert_allclose(steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    # each hold starts where the ramp onto it enters its 0.03 bar band (1, 1 and 0.5 bar/s),
+    # to one sample: timed to the second, it started up to 0.9 s early
+    np.testing.assert_allclose(steps["start_s"], np.array([6.0, 17.0, 28.0])
+                               - 0.03 / np.array([1.0, 1.0, 0.5]), atol=0.11)
+    # milliseconds that are none: the cell named, not read
+    if suffix == ".csv":
+        frame.loc[3, ms_header] = 1000
+        frame.to_csv(path, index=False, sep=";")
+        code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                                str(tmp_path / "bad")])
+        assert code == 2 and err.count("\n") == 1
+        cell = f"{'AB'[not ms_first]}5"
+        assert (f"logger.csv, cell {cell} (column {ms_header!r}): '1000' is not the "
+                "milliseconds of its time") in err
+        assert "expected a whole number from 0 to 999" in err
+
+
 def test_a_time_column_mixing_clock_readings_and_numbers_names_the_cell(tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
     path.write_text("Zeit,P,F\n10:00:00,0,1\n10:00:01,1,2\n2,2,3\n")
