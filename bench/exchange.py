@@ -65,6 +65,7 @@ from mkm.bench.tables import (
     key_values,
     marked_gauge,
     numbers_as_read,
+    parse_header,
     read_tables,
     recognise,
     several_forces,
@@ -74,6 +75,7 @@ from mkm.bench.tables import (
     unread_columns,
     unread_time_columns,
     volts_header,
+    with_milliseconds,
     without_blank_rows,
     without_repeated_rows,
     without_summary_rows,
@@ -314,7 +316,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         The rate the table's rows were logged at [Hz], for a table without a clock (or with a
         row counter, :func:`mkm.bench.tables.counts_rows`): row ``k`` at ``k / sample_rate_hz``
         seconds (:func:`mkm.bench.tables.timed_rows`), a time series; refused for a table with
-        a time column, for ``mkm export``'s workbook and with ``join``.
+        a time column, for ``mkm export``'s workbook and with ``join``. A LabChart export
+        without its time column is timed so by its header's ``Interval=`` (a rate given must
+        agree with it).
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -364,17 +368,29 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     prepared, skipped = [], []
     for table in tables:
         bar.start(f"recognising {table.name}")
-        found = recognise(table, columns, units, scaling)
+        table, found = with_milliseconds(table, recognise(table, columns, units, scaling))
         # a logger's row numbers under a clock's name: read as seconds, a 1 Hz clock the file
         # does not say
         counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
-        if sample_rate_hz is not None:
+        rate_hz, rate_from = sample_rate_hz, "--sample-rate"
+        if "time" not in found and table.interval is not None:
+            # a LabChart export saved without its time column: its header states the rate
+            written, interval_s = table.interval
+            rate_from = f"the header's Interval= {written}"
+            if rate_hz is not None and not math.isclose(rate_hz * interval_s, 1.0,
+                                                        rel_tol=1e-9):
+                raise ValueError(f"--sample-rate {rate_hz:g} Hz: {table.name}'s header states "
+                                 f"Interval= {written}, {1.0 / interval_s:g} Hz: expected the "
+                                 "rate its rows were logged at; without --sample-rate the "
+                                 "header's is taken")
+            rate_hz = 1.0 / interval_s
+        if rate_hz is not None:
             if "time" in found:  # two clocks that may disagree: the file's is not overridden
-                raise ValueError(f"--sample-rate {sample_rate_hz:g} Hz: {table.name} has a "
+                raise ValueError(f"--sample-rate {rate_hz:g} Hz: {table.name} has a "
                                  f"time column, {found['time'].header!r}: expected the option "
                                  "only for a table without one (its rows logged evenly at that "
                                  "rate)")
-            table, found["time"] = timed_rows(table, sample_rate_hz)
+            table, found["time"] = timed_rows(table, rate_hz)
         missing = [r for r in REQUIRED_ROLES if r not in found]
         if other is not None:
             if counter:
@@ -416,8 +432,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                 else "")
                              + (f"; a 4-20 mA channel, {in_mA[0]!r}, with --current-range "
                                 f"{missing[0]}=LOW:HIGH" if in_mA else "") + ")"
-                             + "".join(f"; {h!r} names {why}, not taken by its unit: "
-                                       f"--columns {missing[0]}={h!r} reads it"
+                             + "".join((f"; {h!r} names {why}, not taken by its unit"
+                                        if parse_header(h)[1] else
+                                        f"; by its name, {h!r} is {why}, no reading")
+                                       + f": --columns {missing[0]}={h!r} reads it"
                                        for h, why in unread_columns(table, missing[0])[:1]))
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
@@ -426,14 +444,14 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
             check_channel_times(table, found)
         recognition = Recognition(table, found, [h for k, h in enumerate(table.header) if h and
                                                  k not in taken_columns(found)], counter,
-                                  sample_rate_hz)
+                                  rate_hz, None if rate_hz is None else rate_from)
         # without a time column every row is a step, or a record's rows are taken as evenly
         # spaced (or timed by --sample-rate): a clock by a name the reader does not know is
         # left out, and named (an export's steps have times)
-        unread = [] if exported or ("time" in found and sample_rate_hz is None) else \
+        unread = [] if exported or ("time" in found and rate_hz is None) else \
             unread_time_columns(table, found)
-        if sample_rate_hz is not None:
-            read_as = timed_by = f"the rows timed at {sample_rate_hz:g} Hz (--sample-rate)"
+        if rate_hz is not None:
+            read_as = timed_by = f"the rows timed at {rate_hz:g} Hz ({rate_from})"
         else:
             read_as = ("its rows are taken as evenly spaced in time" if (unread or counter) and
                        not one_step_per_row and
@@ -540,7 +558,8 @@ def _join_table(path: str | Path, scaling=None):
         raise ValueError(f"--join-by-time {Path(path).name}: {len(timed)} of its sheets hold a "
                          f"time column: expected one (sheets "
                          f"{', '.join(repr(t.sheet) for t in tables)}); save it alone")
-    table, found = timed[0] if timed else (tables[0], recognise(tables[0], scaling=scaling))
+    table, found = with_milliseconds(*timed[0] if timed else
+                                     (tables[0], recognise(tables[0], scaling=scaling)))
     if counts_rows(table, found.get("time")):  # read as seconds, a 1 Hz clock it does not say
         header = found["time"].header
         raise ValueError(f"--join-by-time {Path(path).name}: its column {header!r} counts the "

@@ -232,6 +232,9 @@ class RawTable:
     footer_skipped: list[str] = field(default_factory=list)
     #: what :func:`join_by_time` joined to it: the other table, its columns, the times' origin
     joined: dict = field(default_factory=dict)
+    #: the sampling interval its header block states, as written (LabChart's ``Interval=``,
+    #: ``0.01 s``), and in seconds: its rows' times where it has no time column
+    interval: tuple[str, float] | None = None
 
     @property
     def name(self) -> str:
@@ -365,11 +368,13 @@ def _text_table(path: Path, text: str) -> RawTable:
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
     if path.suffix.lower() == ".lvm":
         parsed = _without_later_lvm_headers(path, parsed)
+    interval = _labchart_interval(parsed)
     parsed = _labchart_header(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
                                          for c in cells])
-    return _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
-                        decimal)
+    table = _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
+                         decimal)
+    return replace(table, interval=interval) if interval else table
 
 
 def _comment(line: str) -> bool:
@@ -419,6 +424,40 @@ _OPEN_QUOTE = re.compile(r'(?:^|[,;\t])\s*"[^"]*$')
 LABCHART_BLOCK_MAX = 20
 
 
+def _labchart_block(parsed: list[tuple[int, list[str]]]) -> dict[str, int]:
+    """A LabChart text export's header block, each label (lower case, ``channeltitle=``) ->
+    its row's index in ``parsed``; empty for any other table."""
+    block = {}
+    for k, (_, cells) in enumerate(parsed[:LABCHART_BLOCK_MAX]):
+        label = cells[0].strip() if cells else ""
+        if not label.endswith("=") or len(label) < 2:
+            break
+        block[label.lower()] = k
+    return block if "channeltitle=" in block and len(block) < len(parsed) else {}
+
+
+#: a LabChart header block's ``Interval=`` cell: a number and its unit of time (``0.01 s``,
+#: ``0,01 s`` where the PC writes decimal commas, ``1 ms``)
+_INTERVAL = re.compile(r"(?P<number>\d+(?:[.,]\d*)?(?:[eE][+-]?\d+)?)\s*(?P<unit>\S*)")
+
+
+def _labchart_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float] | None:
+    """The sampling interval a LabChart text export's header block states (``Interval=`` and
+    ``0.01 s``), as written and in seconds; None where it has none or one that is no
+    positive time."""
+    block = _labchart_block(parsed)
+    if "interval=" not in block:
+        return None
+    cells = parsed[block["interval="]][1]
+    text = cells[1].strip() if len(cells) > 1 else ""
+    match = _INTERVAL.fullmatch(text)
+    unit = parse_unit(match["unit"] or "s") if match else None
+    if unit is None or unit.dimensionality != registry().Unit("s").dimensionality:
+        return None
+    seconds = float(match["number"].replace(",", ".")) * (1 * unit).to("s").magnitude
+    return (text, seconds) if math.isfinite(seconds) and seconds > 0 else None
+
+
 def _labchart_header(path: Path,
                      parsed: list[tuple[int, list[str]]]) -> list[tuple[int, list[str]]]:
     """A LabChart (ADInstruments) text export's rows with its header block, each row a label
@@ -428,13 +467,8 @@ def _labchart_header(path: Path,
     line of ``ChannelTitle=``. Its ``TopValue=`` and ``BottomValue=`` rows hold numbers, and
     were otherwise the first rows of data. Any other table as it is; ``ValueError`` naming
     the row where a second block's header begins (a record stopped and started again)."""
-    block = {}
-    for k, (_, cells) in enumerate(parsed[:LABCHART_BLOCK_MAX]):
-        label = cells[0].strip() if cells else ""
-        if not label.endswith("=") or len(label) < 2:
-            break
-        block[label.lower()] = k
-    if "channeltitle=" not in block or len(block) == len(parsed):
+    block = _labchart_block(parsed)
+    if not block:
         return parsed
     number, titles = parsed[block["channeltitle="]]
     names = _filled(titles[1:])
@@ -1062,11 +1096,16 @@ class Column:
     #: how its volts or milliamperes become the role's unit (a channel logged in volts:
     #: ``--sensitivity``; a 4-20 mA transmitter's: ``--current-range``)
     scale: Scaling | SummedScaling | CurrentLoop | None = None
+    #: a time column of whole seconds: the column of its milliseconds beside it (index,
+    #: header), joined to each time cell by :func:`with_milliseconds`
+    milliseconds: tuple[int, str] | None = None
 
     @property
     def indices(self) -> tuple[int, ...]:
-        """The table's columns this one reads: its own, or those it adds up."""
-        return tuple(p.index for p in self.parts) or (self.index,)
+        """The table's columns this one reads: its own (and its milliseconds'), or those it
+        adds up."""
+        return (tuple(p.index for p in self.parts) or (self.index,)) + (
+            (self.milliseconds[0],) if self.milliseconds else ())
 
     def describe(self) -> dict:
         role_unit = ROLES[self.role].unit
@@ -1075,6 +1114,8 @@ class Column:
                 "converted_to": role_unit if role_unit else ("fraction" if role_unit == ""
                                                              else None),
                 **({"sum_of": [p.describe() for p in self.parts]} if self.parts else {}),
+                **({"milliseconds_column": self.milliseconds[1]} if self.milliseconds
+                   else {}),
                 **({"scaling": self.scale.describe()} if self.scale else {})}
 
 
@@ -1538,6 +1579,58 @@ def counts_rows(table: RawTable, column: Column | None) -> bool:
         return False
     start = values[0] - rows[0]
     return bool(start >= 0 and start == round(start) and np.all(values - rows == start))
+
+
+#: the names of a column holding a clock's milliseconds beside a time column of whole
+#: seconds, as some data loggers write their time ('Date&Time' and 'ms')
+MILLISECOND_NAMES = ("ms", "msec", "millisecond", "milliseconds", "millisekunden")
+#: a clock reading's whole seconds, nothing after them that is part of the time (14:05:00 in
+#: '05.12.2026 14:05:00' or '2:05:00 PM', not 14:05:00.250 or 14:05:00:250)
+_WHOLE_SECONDS = re.compile(r"(?<![\d:])(\d{1,2}:\d{2}:\d{2})(?![\d.,:])")
+
+
+def with_milliseconds(table: RawTable,
+                      found: dict[str, Column]) -> tuple[RawTable, dict[str, Column]]:
+    """``table`` and ``found`` with a time column of whole seconds (clock readings or
+    date-times, ``05.12.2026 14:05:00``) and the column of milliseconds beside it (named
+    :data:`MILLISECOND_NAMES`, without a unit) joined: each time cell holds its row's
+    milliseconds (``05.12.2026 14:05:00.250``), and the time column names both. Read apart,
+    the rows of one second would share its time. Any other table as it is; ``ValueError``
+    naming a row's milliseconds that are no whole number from 0 to 999."""
+    time = found.get("time")
+    if time is None or time.parts or time.milliseconds or not table.rows:
+        return table, found
+    taken = taken_columns(found)
+    beside = [k for k in (time.index + 1, time.index - 1)
+              if 0 <= k < len(table.header) and k not in taken and table.header[k]
+              and parse_header(table.header[k]) in ((n, None) for n in MILLISECOND_NAMES)]
+    if not beside:
+        return table, found
+    cells = [row[time.index] for row in table.rows]
+    whole = [isinstance(c, datetime.datetime) and not c.microsecond
+             or isinstance(c, str) and len(_WHOLE_SECONDS.findall(c)) == 1 for c in cells]
+    # rows whose time is no clock reading (a blank cell, a summary row's 'Max') are left to
+    # the checks that skip or refuse them
+    if not whole[0] or not all(
+            w or not isinstance(c, (str, datetime.datetime)) or ":" not in str(c)
+            for c, w in zip(cells, whole, strict=True)):
+        return table, found
+    index = beside[0]
+    rows = []
+    for k, (row, cell, joined) in enumerate(zip(table.rows, cells, whole, strict=True)):
+        if joined:
+            ms = plain_number(row[index], table.decimal)
+            if ms is None or ms != int(ms) or not 0 <= ms <= 999:
+                raise ValueError(f"{table.name}, cell {table.cell(k, index)} (column "
+                                 f"{table.header[index]!r}): {_shown(row[index])} is not the "
+                                 f"milliseconds of its time {_shown(cell)}: expected a whole "
+                                 "number from 0 to 999")
+            cell = (cell + datetime.timedelta(milliseconds=int(ms))
+                    if isinstance(cell, datetime.datetime) else
+                    _WHOLE_SECONDS.sub(lambda m, ms=int(ms): f"{m[1]}.{ms:03d}", cell))
+        rows.append([*row[:time.index], cell, *row[time.index + 1:]])
+    return (replace(table, rows=rows),
+            {**found, "time": replace(time, milliseconds=(index, table.header[index]))})
 
 
 def timed_rows(table: RawTable, rate_hz: float) -> tuple[RawTable, Column]:
@@ -2373,6 +2466,9 @@ class Recognition:
     row_counter: str | None = None
     #: the rate its rows were logged at, as the lab states it (:func:`timed_rows`) [Hz]
     sample_rate_hz: float | None = None
+    #: who states that rate: ``--sample-rate``, or the file's header (LabChart's
+    #: ``Interval=``)
+    sample_rate_from: str | None = None
     _values: dict = field(default_factory=dict, repr=False)
 
     def values(self, role: str, optional: bool = False) -> np.ndarray:
@@ -2398,7 +2494,9 @@ class Recognition:
                      else f" [{unit}]" if unit else "")
             if column.scale:
                 shown = f"{shown[:-1]}: {column.scale.shown(target)}]"
-            header = " + ".join(repr(p.header) for p in column.parts or (column,))
+            header = " + ".join([repr(p.header) for p in column.parts or (column,)]
+                                + ([repr(column.milliseconds[1])] if column.milliseconds
+                                   else []))
             parts.append(f"{header} -> {role}{shown}")
         extras = []
         if self.table.decimal == ",":
@@ -2425,6 +2523,8 @@ class Recognition:
             extras.append(f"{len(shared)} row(s) with the time of the row above but other "
                           "readings (a clock coarser than the sampling) kept as samples: "
                           + ", ".join(shared[:5]) + (", ..." if len(shared) > 5 else ""))
+        if self.sample_rate_from and self.sample_rate_from != "--sample-rate":
+            extras.append(f"rows at {self.sample_rate_hz:g} Hz by {self.sample_rate_from}")
         if over := self.table.overloads_skipped:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")
@@ -2436,4 +2536,5 @@ class Recognition:
                 "columns": {role: c.describe() for role, c in self.columns.items()},
                 "ignored_columns": self.ignored,
                 **({"row_counter_column": self.row_counter} if self.row_counter else {}),
-                **({"sample_rate_hz": self.sample_rate_hz} if self.sample_rate_hz else {})}
+                **({"sample_rate_hz": self.sample_rate_hz,
+                    "sample_rate_from": self.sample_rate_from} if self.sample_rate_hz else {})}

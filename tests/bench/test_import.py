@@ -493,8 +493,11 @@ def test_a_statistic_compound_beside_the_reading_is_no_reading(header, role, tmp
     code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
                             str(tmp_path / "bad")])
     assert code == 2 and err.count("\n") == 1
-    assert (f"{header!r} names a statistic, not taken by its unit: --columns "
-            f"{role}={header!r} reads it") in err
+    # a header without a unit is said to be a statistic by its name ('F_min' was "not taken
+    # by its unit", which it has none of)
+    why = (f"{header!r} names a statistic, not taken by its unit" if "[" in header or "(" in header
+           else f"by its name, {header!r} is a statistic, no reading")
+    assert f"{why}: --columns {role}={header!r} reads it" in err
 
 
 @pytest.mark.parametrize("header", ["Versorgungsdruck [bar]", "Supply pressure [bar]",
@@ -871,6 +874,59 @@ def test_a_time_header_naming_its_clock_format_reads_the_clock(header, tmp_path,
             f"header's {unit!r} says: expected times such as 09:05:00.250") in err
 
 
+@pytest.mark.parametrize("layout", [
+    ("Date&Time", "ms", "%d.%m.%Y %H:%M:%S", ".csv"), ("Zeit", "msec", "%H:%M:%S", ".csv"),
+    ("Timestamp", "Milliseconds", "%Y-%m-%dT%H:%M:%S+01:00", ".csv"),
+    ("Date&Time", "Millisecond", None, ".xlsx")])
+@pytest.mark.parametrize("ms_first", [False, True])
+def test_a_date_time_of_whole_seconds_takes_its_milliseconds_column(layout, ms_first, tmp_path,
+                                                                    mkm_cli):
+    # a data logger writing its time as whole seconds and the milliseconds in a column beside
+    # ('Date&Time' and 'ms'): the milliseconds were ignored, ten 10 Hz samples sharing each
+    # second ("... with the time of the row above ... kept as samples"), the holds timed to
+    # the second
+    time_header, ms_header, form, suffix = layout
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    start = datetime.datetime(2026, 12, 5, 23, 59, 30)  # the record passes midnight
+    ms = np.round(t * 1000).astype(int)
+    whole = [start + datetime.timedelta(seconds=int(m // 1000)) for m in ms]
+    columns = {time_header: [w.strftime(form) for w in whole] if form else whole,
+               ms_header: ms % 1000}
+    frame = pd.DataFrame({**(dict(reversed(columns.items())) if ms_first else columns),
+                          "Druck [bar]": p, "Kraft [N]": thickwall_N(p, 0.0)})
+    path = tmp_path / f"logger{suffix}"
+    frame.to_excel(path, index=False) if suffix == ".xlsx" else frame.to_csv(path, index=False,
+                                                                             sep=";")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert f"{time_header!r} + {ms_header!r} -> time [s]" in err
+    assert "kept as samples" not in err
+    recorded = run.meta.imported_from
+    assert recorded["columns"]["time"]["milliseconds_column"] == ms_header
+    assert recorded["rows_sharing_a_time_kept"] == [] and ms_header not in \
+        recorded["ignored_columns"]
+    # each row at its second plus its milliseconds, counted from the first
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-6)
+    steps = run.steps
+    np.testing.assert_allclose(steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    # each hold starts where the ramp onto it enters its 0.03 bar band (1, 1 and 0.5 bar/s),
+    # to one sample: timed to the second, it started up to 0.9 s early
+    np.testing.assert_allclose(steps["start_s"], np.array([6.0, 17.0, 28.0])
+                               - 0.03 / np.array([1.0, 1.0, 0.5]), atol=0.11)
+    # milliseconds that are none: the cell named, not read
+    if suffix == ".csv":
+        frame.loc[3, ms_header] = 1000
+        frame.to_csv(path, index=False, sep=";")
+        code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                                str(tmp_path / "bad")])
+        assert code == 2 and err.count("\n") == 1
+        cell = f"{'AB'[not ms_first]}5"
+        assert (f"logger.csv, cell {cell} (column {ms_header!r}): '1000' is not the "
+                "milliseconds of its time") in err
+        assert "expected a whole number from 0 to 999" in err
+
+
 def test_a_time_column_mixing_clock_readings_and_numbers_names_the_cell(tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
     path.write_text("Zeit,P,F\n10:00:00,0,1\n10:00:01,1,2\n2,2,3\n")
@@ -1184,6 +1240,43 @@ def test_sample_rate_times_the_rows_of_a_table_without_a_clock(counter, tmp_path
     (slow,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "0.5")
     assert ("as a record's samples do: if they were logged faster than 0.5 Hz, import again "
             "with the --sample-rate they were") in err and "--units time=ms" not in err
+
+
+@pytest.mark.parametrize("interval, rate_hz", [("0.01 s", 100.0), ("0,005 s", 200.0),
+                                             ("10 ms", 100.0)])
+def test_a_labchart_export_without_its_time_is_timed_by_its_interval(interval, rate_hz,
+                                                                     tmp_path, mkm_cli):
+    # LabChart's text export saved without its time column states its sampling interval in
+    # its header block ('Interval=\t0.01 s'): its rows were taken as evenly spaced, untimed,
+    # the line naming --sample-rate for a rate the file says
+    t = np.arange(0.0, 60.0, 0.01)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    path = tmp_path / "labchart.txt"
+    path.write_text(f"Interval=\t{interval}\nExcelDateTime=\t4.6361586805555557e+04\t"
+                    "05.12.2026 14:05:00,000000\nTimeFormat=\tStartOfBlock\nDateFormat=\t\n"
+                    "ChannelTitle=\tDruck\tKraft\nRange=\t10.000 V\t2.000 V\n"
+                    "UnitName=\tbar\tN\nTopValue=\t10\t2000\nBottomValue=\t0\t-2000\n"
+                    + "".join(f"{a:.6f}\t{b:.6f}\n" for a, b in zip(p, thickwall_N(p, 0.0),
+                                                                    strict=True)),
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert (f"'rows at {rate_hz:g} Hz' -> time [s]; rows at {rate_hz:g} Hz by the header's "
+            f"Interval= {interval}") in err
+    recorded = run.meta.imported_from
+    assert recorded["sample_rate_hz"] == pytest.approx(rate_hz, rel=1e-12)
+    assert recorded["sample_rate_from"] == f"the header's Interval= {interval}"
+    assert recorded["shape"] == "staircase"
+    # row k at k times the interval, as --sample-rate would time it
+    np.testing.assert_allclose(run.samples["time_s"], np.arange(t.size) / rate_hz, atol=1e-9)
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    # a --sample-rate that disagrees with the header is refused, not chosen between unsaid
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--sample-rate", "7",
+                            "--out", str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1
+    assert (f"--sample-rate 7 Hz: labchart.txt's header states Interval= {interval}, "
+            f"{rate_hz:g} Hz: expected the rate its rows were logged at") in err
+    assert not (tmp_path / "bad").exists()
 
 
 @pytest.mark.parametrize("rate, why", [
