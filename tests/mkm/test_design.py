@@ -227,6 +227,12 @@ def test_conflicting_constraints_are_named():
     (["--require", "100N@2bar,eps=0.1", "--max-outer-diameter", "0"],
      "mkm design: error: --max-outer-diameter 0: expected a value > 0"),
     (["--require", "100N@2bar,eps=0.1", "--gap", "-1"], "mkm design: error: --gap -1: expected "),
+    # every problem that opens with a quantity the command line set names its flag
+    (["--require", "100N@2bar,eps=0.1", "--gap", "4", "--D0", "5:20", "--t0", "0.5:2"],
+     "mkm design: error: --gap 4 is too wide for D0_mm=5, t0_mm=0.5: expected gap_mm < "),
+    (["--require", "100N@2bar,eps=0.1", "--max-pressure", "20", "--gap", "4", "--D0", "5:20",
+      "--t0", "0.5:2"], "mkm design: error: --max-pressure 20: expected at most 8 bar, the top "
+     "of the practical range a design is searched in; --gap 4 is too wide for D0_mm=5"),
     # a sign typo is the option's, not a conflict with the search box and the wall
     (["--require", "100N@2bar,eps=0.1", "--D0", "-5"],
      "mkm design: error: --D0 '-5' is invalid: expected values above 0"),
