@@ -633,6 +633,13 @@ if __name__ == "__main__":
                         help="first run the benchmarks (all, or these outputs: "
                              + ", ".join(measured_commands()) + ") into docs/measured/")
     options = parser.parse_args()
+    unknown = [n for n in options.run_benchmarks or () if n not in measured_commands()]
+    if unknown:  # before any runs: a typo would otherwise run nothing and say nothing
+        import sys
+
+        print(f"generate.py: error: --run-benchmarks {' '.join(unknown)}: expected some of "
+              + ", ".join(measured_commands()), file=sys.stderr)
+        sys.exit(2)
     if options.run_benchmarks is not None:
         run_benchmarks(options.run_benchmarks)
     main()

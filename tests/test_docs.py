@@ -2461,3 +2461,16 @@ def test_the_guides_thin_walled_muscle_near_the_lock_is_what_the_meshes_give():
             f"its medium sweep {error['medium']:.2f} % off against a stated "
             f"{bound['medium']:.2f} %; the coarse mesh, {error['coarse']:.2f} % off, does not "
             f"resolve its clamped end ({ends:.2f} lengths)") in text
+
+
+def test_run_benchmarks_refuses_an_unknown_output():
+    """``--run-benchmarks NAME`` with a NAME no benchmark writes is refused in one line naming
+    it and the outputs there are, exit 2, before anything runs (it ran none and said nothing)."""
+    import subprocess
+
+    done = subprocess.run([sys.executable, "-P", str(DOCS / "generate.py"), "--run-benchmarks",
+                           "nope.csv"], cwd=ROOT, capture_output=True, text=True)
+    outputs = ", ".join(_generate().measured_commands())
+    assert done.returncode == 2 and done.stdout == ""
+    assert done.stderr == (f"generate.py: error: --run-benchmarks nope.csv: expected some of "
+                           f"{outputs}\n")

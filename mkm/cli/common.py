@@ -69,17 +69,20 @@ FLAGS = {"D0_mm": ("--D0", "D0"), "t0_mm": ("--t0", "t0"), "L0_mm": ("--L0", "L0
 
 
 def name_the_flag(args, message) -> str:
-    """``message`` about a quantity the command line set, said about its flag:
-    ``D0_mm=-1 is invalid: expected ...`` -> ``--D0 -1: expected ...`` (unchanged when the
-    value came from elsewhere: a config file, a model spec)."""
-    message = str(message)
-    found = re.match(r"([\w.]+)=(\S+) is invalid: (.*)", message, re.DOTALL)
-    if not found or found.group(1) not in FLAGS:
-        return message
-    flag, dest = FLAGS[found.group(1)]
-    if getattr(args, dest, None) is None:
-        return message
-    return f"{flag} {found.group(2)}: {found.group(3)}"
+    """``message`` about a quantity the command line set, said about its flag: each of its
+    problems (a line, or a part after ``; ``) that opens with ``name=value``:
+    ``D0_mm=-1 is invalid: expected ...`` -> ``--D0 -1: expected ...``, ``gap_mm=4 is too
+    wide ...`` -> ``--gap 4 is too wide ...`` (unchanged when the value came from elsewhere:
+    a config file, a model spec)."""
+
+    def flagged(found) -> str:
+        flag, dest = FLAGS.get(found.group(2), (None, None))
+        if flag is None or getattr(args, dest, None) is None:
+            return found.group(0)
+        said = ": " if found.group(4) else " "
+        return f"{found.group(1)}{flag} {found.group(3)}{said}"
+
+    return re.sub(r"(^|; |\n)([\w.]+)=(\S+) (is invalid: )?", flagged, str(message))
 
 
 def say(args, kind: str, message) -> None:

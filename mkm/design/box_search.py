@@ -273,7 +273,10 @@ def search(requirements, constraints: Constraints | dict | None = None,
     base = _build(spec.text, calibration)
     domain = base.domain
     parameter_box = getattr(base, "box", {})
-    outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration)
+    # the FE model's, as verified: searched where no --theta0 is given, so held to the box too
+    theta0_default = float(calibrated("axisym", calibration)["theta0_deg"])
+    outside = _outside_surrogate(requirements, constraints, domain, parameter_box, calibration,
+                                 theta0_default)
     searcher_note = ""
     gap = constraints.gap_mm or 0.0
     # with a gap the FE model searches wherever the request lies: no surrogate models one
@@ -282,13 +285,11 @@ def search(requirements, constraints: Constraints | dict | None = None,
         wider = parse_spec(RANGE_SPEC)
         wide = _build(wider.text, calibration)
         if not _outside_surrogate(requirements, constraints, wide.domain,
-                                  getattr(wide, "box", {}), calibration):
+                                  getattr(wide, "box", {}), calibration, theta0_default):
             searcher_note = (f"outside the default surrogate's training box ("
                              f"{'; '.join(outside)}): the practical range's surrogate searched")
             spec, base, domain, outside = wider, wide, wide.domain, []
     at = _predicts_at(base, calibration)
-    # the FE model's, as verified
-    theta0_default = float(calibrated("axisym", calibration)["theta0_deg"])
     # the surrogate has no gap: the FE model, which takes it, searches (in the surrogate's box)
     unmodelled = [f"gap_mm={gap:g}, which the surrogate does not model"] if gap else []
     surrogate_box = {"D0_mm": list(domain.D0_mm), "t0_mm": list(domain.t0_mm)}
@@ -473,22 +474,26 @@ class _Evaluator:
 
 
 def _outside_surrogate(requirements, constraints, domain, parameter_box,
-                       calibration: Calibration | None = None) -> list[str]:
+                       calibration: Calibration | None = None,
+                       theta0_default: float | None = None) -> list[str]:
     """What of the request lies outside the surrogate's training box (empty: it can search).
 
     ``parameter_box``: the surrogate's training box of its muscle parameters (``L0_mm``, ...),
-    empty for a surrogate of the geometry alone.
+    empty for a surrogate of the geometry alone. ``theta0_default`` [deg]: the braid angle
+    searched where the constraints give none (the calibration's).
     """
     out = []
     spans = {"D0_mm": tuple(domain.D0_mm), "t0_mm": tuple(domain.t0_mm)}
     spans |= {k: tuple(parameter_box[k]) for k in ("L0_mm", "theta0_deg") if k in parameter_box}
     for key, (dlo, dhi) in spans.items():
-        given = getattr(constraints, key)
+        given, whose = getattr(constraints, key), ""
+        if given is None and key == "theta0_deg" and theta0_default is not None:
+            given, whose = (theta0_default,) * 2, "the calibration's "
         if given is None:
             continue
         low, high = given
         if low < dlo - 1e-9 * max(abs(dlo), 1) or high > dhi + 1e-9 * max(abs(dhi), 1):
-            out.append(f"{key}={span_text(low, high)} beyond {dlo:g}:{dhi:g}")
+            out.append(f"{whose}{key}={span_text(low, high)} beyond {dlo:g}:{dhi:g}")
     for rubber in constraints.rubber:
         for key in ("C10_MPa", "C01_MPa"):
             value = getattr(rubber_of(rubber, calibration), key)

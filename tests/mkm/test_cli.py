@@ -229,7 +229,7 @@ def test_solve_sidecar_names_the_code_and_the_calibration_behind_the_forces(tmp_
         "source": "theta0_deg given explicitly", "theta0_deg": 30.0}
 
 
-THICK = "t0_mm=20 is too thick for D0_mm=35: expected t0_mm < D0_mm/2 = 17.5"
+THICK = "--t0 20 is too thick for D0_mm=35: expected t0_mm < D0_mm/2 = 17.5"
 EPS = "expected a shortening ratio in [0, 1) (a fraction)"
 
 
@@ -242,7 +242,7 @@ EPS = "expected a shortening ratio in [0, 1) (a fraction)"
      "mkm fem solve: error: --t0 0: expected a wall thickness in [0.05, 100] mm"),
     (["--D0", "35", "--t0", "20", "--eps", "0.05"], f"mkm fem solve: error: {THICK}"),
     (["--D0", "35", "--t0", "17.5", "--eps", "0.05"],
-     "mkm fem solve: error: t0_mm=17.5 is too thick"),
+     "mkm fem solve: error: --t0 17.5 is too thick"),
     (["--D0", "35", "--t0", "2.5", "--eps", "1"],
      "mkm fem solve: error: --eps 1: a fraction is expected; did you mean 1%?"),
     (["--D0", "35", "--t0", "2.5", "--eps", "12.2"],

@@ -227,6 +227,12 @@ def test_conflicting_constraints_are_named():
     (["--require", "100N@2bar,eps=0.1", "--max-outer-diameter", "0"],
      "mkm design: error: --max-outer-diameter 0: expected a value > 0"),
     (["--require", "100N@2bar,eps=0.1", "--gap", "-1"], "mkm design: error: --gap -1: expected "),
+    # every problem that opens with a quantity the command line set names its flag
+    (["--require", "100N@2bar,eps=0.1", "--gap", "4", "--D0", "5:20", "--t0", "0.5:2"],
+     "mkm design: error: --gap 4 is too wide for D0_mm=5, t0_mm=0.5: expected gap_mm < "),
+    (["--require", "100N@2bar,eps=0.1", "--max-pressure", "20", "--gap", "4", "--D0", "5:20",
+      "--t0", "0.5:2"], "mkm design: error: --max-pressure 20: expected at most 8 bar, the top "
+     "of the practical range a design is searched in; --gap 4 is too wide for D0_mm=5"),
     # a sign typo is the option's, not a conflict with the search box and the wall
     (["--require", "100N@2bar,eps=0.1", "--D0", "-5"],
      "mkm design: error: --D0 '-5' is invalid: expected values above 0"),
@@ -1135,3 +1141,21 @@ def test_a_gap_wider_than_the_narrowest_tubes_radius_is_refused_before_the_searc
                                          r"expected gap_mm < D0_mm/2 \+ t0_mm = 3 mm .* \(the "
                                          r"narrowest tube of the box\)$"):
         search(["10N@2bar,eps=0.1"], {"D0_mm": "5:10", "t0_mm": "0.5:1", "gap_mm": 4.0})
+
+
+def test_the_calibrations_angle_outside_the_surrogates_box_is_searched_by_one_that_covers_it(
+        tmp_path):
+    """A muscle identified at 27 deg designed without --theta0: the default surrogate (trained
+    on 28:38 deg) searched at the calibration's angle, outside its box, without a word, and
+    found no valid force anywhere. The calibration's angle is held to the box as a --theta0
+    is: the practical range's surrogate searches, and the note says why."""
+    calibration = _identified(tmp_path, theta0_deg=27.0)
+    found = search(["300N@2bar,eps=0.1"], calibration=calibration)
+    assert found.searcher == "surrogate:kind=muscle-gp-range"
+    assert found.searcher_note == ("outside the default surrogate's training box (the "
+                                   "calibration's theta0_deg=27 beyond 28:38): the practical "
+                                   "range's surrogate searched")
+    assert set(found.candidates["theta0_deg"]) == {27.0} and found.feasible.shape[0] > 0
+    # inside the box (the shipped calibration's 32.992 deg): the default surrogate, no note
+    inside = search(["300N@2bar,eps=0.1"], calibration=_identified(tmp_path, theta0_deg=32.0))
+    assert inside.searcher == "surrogate" and inside.searcher_note == ""
