@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 import tomllib
 import typing
 from collections.abc import Iterator
@@ -107,15 +108,22 @@ def typed_section(cls, table: Any, where: str):
         problems.lines.append(f"{where}.{shown} is not a setting: expected some of "
                               f"{', '.join(fields)}")
     hints = typing.get_type_hints(cls)
-    values = {}
+    values, bad = {}, []
     for name, f in fields.items():
         key = f"{where}.{name}"
         with problems.check():
             if name not in table:
                 if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING:
+                    bad.append(name)
                     raise ValueError(f"{key} is missing: it has no default")
                 continue
-            values[name] = _convert(table[name], hints[name], key)
+            try:
+                values[name] = _convert(table[name], hints[name], key)
+            except ValueError:
+                bad.append(name)
+                raise
+    if bad and all(_has_default(fields[name]) for name in bad):
+        problems.lines += _checked_without(cls, values, bad, where)
     problems.raise_any()
     try:
         obj = cls(**values)  # a type that checks itself when made (the tolerances)
@@ -124,6 +132,30 @@ def typed_section(cls, table: Any, where: str):
     if hasattr(obj, "check"):
         obj.check()
     return obj
+
+
+def _has_default(f: dataclasses.Field) -> bool:
+    return f.default is not dataclasses.MISSING or f.default_factory is not dataclasses.MISSING
+
+
+def _checked_without(cls, values: dict[str, Any], bad: list[str], where: str) -> list[str]:
+    """The problems ``cls``'s own checks find in ``values``, its ``bad`` settings (of a wrong
+    type) left at their defaults, so that one check names every bad value of a section; a
+    problem naming a bad setting is left out: it would be about a default the file does not
+    hold."""
+    try:
+        obj = cls(**values)
+    except ValueError as exc:
+        found = [f"[{where}] {line}" for line in str(exc).splitlines()]
+    else:
+        try:
+            if hasattr(obj, "check"):
+                obj.check()
+            found = []
+        except ValueError as exc:
+            found = str(exc).splitlines()
+    named = re.compile(r"\b(?:" + "|".join(map(re.escape, bad)) + r")\b")
+    return [line for line in found if not named.search(line)]
 
 
 #: a TOML value's type as a lab engineer reads it (not Python's name: "a int")

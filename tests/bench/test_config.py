@@ -336,6 +336,29 @@ def test_every_bad_value_is_named_at_once(tmp_path, mkm_cli):
         "config lab.toml: sim.seed=1.5 is invalid: expected a whole number"]
 
 
+def test_a_sections_other_values_are_checked_beside_a_value_of_the_wrong_type():
+    """buffer_s = "ten" hid read_retries = 1000 of the same [daq] (and nonlinearity 0.5 of
+    [loadcell] hid nothing only because offset_V was a number): the section's own checks
+    stopped at the type error. They run now with the mistyped value at its default, and say
+    every other bad value; none is said about the default the file does not hold."""
+    text = with_settings('[daq]\nbuffer_s = "ten"\nread_retries = 1000\n[loadcell]\n'
+                         'offset_V = "x"\nnonlinearity_fraction_fs = 0.5\n'
+                         '[regulator]\nfull_scale_bar = "4"\nmax_pressure_bar = 5')
+    with pytest.raises(ValueError) as info:
+        parse_config(text, "lab.toml")
+    assert str(info.value).splitlines() == [
+        "config lab.toml: daq.buffer_s='ten' is invalid: expected a number",
+        "config lab.toml: daq.read_retries=1000 is invalid: expected 0 to 100",
+        # 2 s x (1000 + 1) retries
+        "config lab.toml: daq.read_timeout_s=2 with read_retries=1000 lets a run go 2002 s "
+        "without a reading: expected at most 60 s in all",
+        "config lab.toml: loadcell.offset_V='x' is invalid: expected a number",
+        "config lab.toml: loadcell.nonlinearity_fraction_fs=0.5 is invalid: expected 0 to 0.05 "
+        "(a fraction) (a data-sheet bound beyond 5 % is not a load cell)",
+        # max_pressure_bar is checked against full_scale_bar: not against its default 4 bar
+        "config lab.toml: regulator.full_scale_bar='4' is invalid: expected a number"]
+
+
 def test_a_gap_wider_than_the_tubes_radius_is_refused():
     """[sim.truth] gap_mm = 30 around a 40 mm tube was simulated: a braid 106 mm wide around a
     46 mm tube. The gap is bounded by the tube's outer radius, the true tube's for the
