@@ -417,6 +417,47 @@ def _check_fields(values: dict[str, Any], where: str) -> None:
                              "expected a count >= 0")
 
 
+#: The statuses a run's own end writes: those its bench marker keeps when run.json refused them.
+ENDED_STATUSES = (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS, RunStatus.ABORTED,
+                  RunStatus.FAILED)
+#: A run's outcome in run.json: all a bench marker of an older version keeps of its record.
+OUTCOME_FIELDS = ("status", "reason", "ended_utc", "manual_vent_required")
+
+
+def kept_outcome(data: Any, where: str) -> dict[str, Any]:
+    """A run's final record kept outside its run.json (its bench marker, when run.json refused
+    it), its outcome checked as run.json's fields are: a status a run ends with
+    (:data:`ENDED_STATUSES`), its reason, end and manual vent (``ValueError`` naming the first
+    that is not). The rest is checked where it is written (:func:`outcome_written`); a marker of
+    an older version keeps those fields alone (:data:`OUTCOME_FIELDS`)."""
+    if not isinstance(data, dict):
+        raise ValueError(f"{where}={_shown(data)} is invalid: expected an object")
+    if data.get("status") not in ENDED_STATUSES:
+        raise ValueError(f"{where}: status={_shown(data.get('status'))} is invalid: expected "
+                         f"one a run ends with: {', '.join(ENDED_STATUSES)}")
+    outcome = {"status": data["status"], "reason": data.get("reason"),
+               "ended_utc": data.get("ended_utc"),
+               "manual_vent_required": data.get("manual_vent_required", False)}
+    _check_fields(outcome, where)
+    return {**data, **outcome}
+
+
+def outcome_written(meta: RunMeta, kept: dict[str, Any], where: str) -> tuple[RunMeta, bool]:
+    """``meta`` (a run.json still ``running``) with the final record ``kept`` for it
+    (:func:`kept_outcome`) laid over it, read as run.json is (:meth:`RunMeta.from_dict`): the
+    whole record when it is this run's (its start and process id) and valid, else its
+    outcome's four fields alone; and whether it was whole."""
+    record = meta.as_dict()
+    process = kept.get("process")
+    if kept.get("started_utc") == record["started_utc"] and isinstance(process, dict) and \
+            meta.process is not None and process.get("pid") == meta.process.pid:
+        try:
+            return RunMeta.from_dict({**record, **kept}, where), True
+        except ValueError:  # edited by hand: its outcome alone
+            pass
+    return RunMeta.from_dict({**record, **{k: kept[k] for k in OUTCOME_FIELDS}}, where), False
+
+
 def _record(cls, data: Any, where: str):
     """``cls(**data)`` for a small record of run.json, its fields' types checked."""
     if not isinstance(data, dict):
