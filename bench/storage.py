@@ -768,7 +768,8 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     sample (after a gap recorded there). The gaps kept beside them (:func:`kept_gaps_path`)
     that run.json does not hold are recorded in it, as any gap. The kept rows are written as
     they are, after samples.csv's last whole row; those it holds already are left out; the kept
-    files stay. Asked again after run.json refused the count, it counts them then.
+    files stay. Asked again after run.json refused the count, it counts them then, and records
+    the gaps it did not hold.
     """
     path = Path(run_dir)
     meta = read_meta(path)
@@ -786,6 +787,8 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     if added:  # found after run.json's last write: it never held them
         meta.gaps = sorted([*meta.gaps, *added], key=lambda g: g.after_sample)
         meta.lost_samples = sum(g.lost_samples for g in meta.gaps)
+    gaps = (f", and the {len(added)} gap(s) kept beside them "
+            f"({sum(g.lost_samples for g in added)} samples lost) recorded" if added else "")
     header, *rows = kept.read_bytes().splitlines(keepends=True)
     if header.rstrip(b"\r\n") != ",".join(SAMPLE_COLUMNS).encode():
         raise ValueError(f"{kept} does not start with samples.csv's header: expected the rows "
@@ -799,13 +802,14 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     last = _last_row(samples_csv)
     last_sample = int(last[0]) if last else -1
     new = [(n, r) for n, r in zip(numbers, rows, strict=True) if n > last_sample]
-    if not new and numbers:  # joined before: a run.json that refused the count takes it now
+    if not new and numbers:  # joined before: a run.json that refused the count (and the
+        # gaps, written with it) takes them now
         held = Run(path, meta, pd.DataFrame(), meta.status).n_samples
-        if held != meta.counters.get("samples"):
+        if held != meta.counters.get("samples") or added:
             return _count_joined(path, meta, held, f"the samples kept in {kept} are all in "
-                                 f"{samples_csv} already, joined before",
+                                 f"{samples_csv} already, joined before{gaps}",
                                  f"samples {numbers[0]}-{numbers[-1]} ({len(numbers)}) kept in "
-                                 f"{kept} were joined to samples.csv")
+                                 f"{kept} were joined to samples.csv{gaps}")
     if not new:
         raise ValueError(f"the samples kept in {kept} are all in {samples_csv} already (its "
                          f"last sample is {last_sample}): nothing to join; the kept file may "
@@ -829,8 +833,6 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
                          f"joined, the samples stay kept in {kept}; expected a run folder this "
                          "user can write to again") from None
     span = f"samples {new[0][0]}-{new[-1][0]} ({len(new)})"
-    gaps = (f", and the {len(added)} gap(s) kept beside them "
-            f"({sum(g.lost_samples for g in added)} samples lost) recorded" if added else "")
     return _count_joined(path, meta, Run(path, meta, pd.DataFrame(), meta.status).n_samples,
                          f"{span} kept in {kept} were joined to {samples_csv}{gaps}",
                          f"{span} kept in {kept} were joined to samples.csv{gaps}")

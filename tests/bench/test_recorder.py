@@ -1100,6 +1100,59 @@ def test_mkm_recover_counts_rows_it_joined_once_run_json_takes_the_count(
     assert code == 2 and "are all in" in err and "nothing to join" in err
 
 
+@pytest.mark.parametrize("counted", [False, True])
+def test_mkm_recover_joined_before_says_the_gaps_it_records(config, tmp_path, monkeypatch,
+                                                            mkm_cli, counted):
+    # the kept rows after a gap run.json never held were joined, and run.json refused the count
+    # and the gap with it; asked again, `mkm recover` recorded the gap but said only that it
+    # counted the rows, and when run.json counted them already (a mend by an older version,
+    # from the rows on disk) it said there was nothing to join and left the gap out. Now it
+    # records the gap and says so, as a first join does
+    import json
+
+    import pandas as pd
+
+    import mkm.bench.storage as storage
+    from mkm.bench.run import acquire
+
+    c = config.replace(sim={"buffer_s": 10.0, "faults": {"stall_at_s": 4.0, "stall_s": 30.0}})
+    queued = _read_only_from_60(monkeypatch, first=340)
+    result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    path, run_json = result.path, result.path / "run.json"
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    meta["process"]["started_unix_s"] -= 100.0  # its process has ended since
+    run_json.write_text(json.dumps(meta), encoding="utf-8")
+
+    def denied(*args, **kwargs):
+        raise PermissionError(errno.EACCES, "Permission denied")
+
+    with monkeypatch.context() as read_only:
+        read_only.setattr(storage, "write_json_atomic", denied)
+        code, out, err = mkm_cli(["recover", str(path)])
+    assert code == 1 and "but run.json could not count them (Permission denied)" in err
+    assert pd.read_csv(path / "samples.csv")["sample"].tolist() == queued
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    assert meta["gaps"] == [] and meta["lost_samples"] == 0
+    n = len(queued)
+    if counted:
+        meta["counters"]["samples"] = n
+        run_json.write_text(json.dumps(meta), encoding="utf-8")
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{path.name}-samples.csv"
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (0, f"{path}\n") and err == (
+        f"mkm recover: note: the samples kept in {kept} are all in {path / 'samples.csv'} "
+        "already, joined before, and the 1 gap(s) kept beside them (300 samples lost) "
+        f"recorded; run.json counts {n} samples\n")
+    run = load_run(path)
+    (gap,) = run.meta.gaps
+    assert (gap.after_sample, gap.lost_samples) == (39, 300) and run.meta.lost_samples == 300
+    assert run.meta.counters["samples"] == n
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert code == 2 and "nothing to join" in err
+
+
 def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,
                                                                                 tmp_path,
                                                                                 monkeypatch):
