@@ -192,14 +192,16 @@ def choices(model: str, parameter: str) -> tuple[str, ...]:
     return entry(model).parameters[parameter].options()
 
 
-def add_model_arguments(parser, theta0: bool = True, models: tuple[str, ...] | None = None
+def add_model_arguments(parser, theta0: bool = True, models: tuple[str, ...] | None = None,
+                        default: str | None = "eq2", default_said: str = "%(default)s"
                         ) -> None:
     """``--model`` and the options that set its parameters; ``models``: the registered names
-    the command takes (default: every one)."""
+    the command takes (default: every one); ``default`` None leaves the command to choose it
+    (``default_said`` says how)."""
     names = models or tuple(entries())
-    parser.add_argument("--model", default="eq2", help=f"predictor spec: one of "
+    parser.add_argument("--model", default=default, help=f"predictor spec: one of "
                         f"{', '.join(names)}, with :key=value parameters (see `mkm models`); "
-                        "default %(default)s")
+                        f"default {default_said}")
     if theta0:
         parser.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                             help=shared_help("--theta0", "default: calibrated"))

@@ -42,7 +42,9 @@ def register(subparsers) -> None:
         "`mkm models`): CSV on stdout, or to --out FILE with the metadata in a .json beside.",
         epilog="example: mkm fem solve --model axisym:mesh=coarse --D0 35 --t0 2.5 --eps 5% "
         "--pressures 0:2.5:0.5")
-    add_model_arguments(solve)
+    add_model_arguments(solve, default=None, default_said=(
+        f"{DEFAULT_SOLVE_MODEL}, or with --calibration of a muscle `mkm identify` wrote, the "
+        "model it was identified with (its 95 %% band beside the force)"))
     add_geometry_arguments(solve)
     solve.add_argument("--out", help="write the CSV here instead of stdout")
     solve.add_argument("--tolerance", type=argtype(parse_tolerance, "--tolerance"),
@@ -163,8 +165,29 @@ def _targets_help() -> str:
     return "; ".join(f"{name}: {what}" for name, what in TARGETS.items())
 
 
+#: the model `mkm fem solve` predicts with when --model is not given, but for an identified muscle
+DEFAULT_SOLVE_MODEL = "eq2"
+
+
+def _solve_model(args) -> str:
+    """``--model``, or when it is not given the model the ``--calibration``'s muscle was
+    identified with (said in a note: Equation 2 has no threshold, and no band of that muscle),
+    else :data:`DEFAULT_SOLVE_MODEL`."""
+    if args.model is not None:
+        return args.model
+    from mkm.identify.band import identified_entry
+
+    found = identified_entry(args.calibration) if args.calibration is not None else None
+    if found is None:
+        return DEFAULT_SOLVE_MODEL
+    say(args, "note", f"--model not given: {found[0]}, the model the muscle of --calibration "
+        f"was identified with (--model {DEFAULT_SOLVE_MODEL} or another to predict with it)")
+    return found[0]
+
+
 def _solve(args) -> int:
     args.pressures, args.eps = sweep_grid(args.pressures, args.eps)
+    args.model = _solve_model(args)
     model = model_from_args(args)
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     if args.calibration is not None:  # an identified muscle's: its 95 % band beside the force
