@@ -18,19 +18,22 @@ capacity at eps 0); where the shortest run would not pull within it, its eps is 
 largest that pulls at half of it. The load cell is the smallest of a catalogue's
 (:data:`CELLS_N`) whose capacity holds the eps 0 force at the top step with a margin; the
 regulator's full scale is 4 bar up to 4 bar, else 9 bar (a 0.9 MPa ITV), its monitor accurate
-to 1 % of it (the vent check at 2 %). The runs are simulated on the FE bench (``sim.model = "axisym"``, coarse mesh,
-the simulator's noise), stripped of the truth and identified by ``identify(runs)``: the default
-parameters, the surrogate search, the FE confirmation. A run the simulator cannot make (its FE
+to 1 % of it (the vent check at 2 %). The runs are simulated on the FE bench
+(``sim.model = "axisym"``, the medium mesh: identify's own, so that no mesh error reads as a
+misfit, and a draw takes seconds either way; the simulator's noise), stripped of the truth
+and identified by ``identify(runs)``: the default parameters, the surrogate search, the FE
+confirmation. A run the simulator cannot make (its FE
 fails, the bench refuses the plan) skips the draw, with why.
 
 Every parameter reported with an interval is judged against the truth as
-``bench_identify_coverage.judge`` does (the rubber, where one scale, against the scale on
-Silastic S with the truth's C10 + C01, and the true C01/C10 against the ratio interval the note
-prints). A draw is ``covered`` when every interval holds the truth, ``warned`` when some miss
-and identify printed a misfit line, ``SILENT`` when some miss without one, ``refused`` when
-identify raised ``ValueError`` (its message recorded), ``crashed`` on any other exception (a
-defect). Prints one row per draw; ``--out`` writes the summary, one row per draw (truth,
-verdict, chi2/nu, seconds), every draw's parameters, notes and plan, and provenance.
+``bench_identify_coverage.judge`` does (the rubber, where one scale, against the truth's
+equivalent scale at Silastic S's ratio over these runs, :func:`equivalent_scale`, and the true
+C01/C10 against the ratio interval the note prints). A draw is ``covered`` when every interval
+holds the truth, ``warned`` when some miss and identify printed a misfit line, ``SILENT`` when
+some miss without one, ``refused`` when identify raised ``ValueError`` (its message recorded),
+``crashed`` on any other exception (a defect). Prints one row per draw; ``--out`` writes the
+summary, one row per draw (truth, verdict, chi2/nu, seconds), every draw's parameters, notes
+and plan, and provenance.
 """
 
 from __future__ import annotations
@@ -65,6 +68,8 @@ CELLS_N = (98.0665, 196.133, 490.3325, 980.665, 1961.33, 4903.325, 9806.65)
 #: trips at 90 %, and the truth's force is not the closed form's)
 CELL_MARGIN = 0.7
 STEPS = 8
+#: the simulated bench's FE mesh (``--mesh``)
+FE_MESH = "medium"
 #: the runs' eps as fractions of the braid lock (3 or 4 runs)
 EPS_PER_LOCK = {3: (0.0, 0.35, 0.7), 4: (0.0, 0.23, 0.47, 0.7)}
 
@@ -165,7 +170,7 @@ def config_for(muscle: dict, runs_plan: dict, eps: float, k: int):
                 "tare_max_std_N": min(5.0, 0.01 * cell), "vent_below_bar": 0.02 * fs},
         sequence={"pressures_bar": tuple(runs_plan["pressures_bar"]),
                   "preconditioning_cycles": 0},
-        sim={"model": "axisym", "fe_mesh": "coarse", "seed": muscle["seed"] + 1000 * k,
+        sim={"model": "axisym", "fe_mesh": FE_MESH, "seed": muscle["seed"] + 1000 * k,
              "hysteresis_fraction": muscle["hysteresis_fraction"],
              "creep_fraction": muscle["creep_fraction"], "truth": muscle["truth"]})
 

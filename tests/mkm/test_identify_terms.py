@@ -6,6 +6,7 @@ linear in its parameter."""
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -310,3 +311,45 @@ def test_a_ratio_the_other_braid_cannot_follow_either_is_reported_apart(tmp_path
     for name, truth in (("theta0_deg", 30.0), ("C10_MPa", 0.30), ("C01_MPa", 0.03)):
         assert table.loc[name, "status"] == "fitted"
         assert table.loc[name, "ci_low"] <= truth <= table.loc[name, "ci_high"], name
+
+
+@pytest.mark.slow
+def test_a_rubber_the_runs_separate_is_fitted_on_the_fe_correction_at_its_own_ratio(tmp_path):
+    """An 8.7 mm tube of a stiff rubber (C10 0.38, C01 0.089 MPa: C01/C10 0.23), four runs at
+    eps 0-70 % of its braid lock up to 5.55 bar on the FE bench, identified with the defaults
+    (the practical range's surrogate, corrected by the FE model): the runs separate C10 and C01.
+    The FE's correction was taken at Silastic S's ratio only, and the surrogate's error changes
+    with the ratio: the free fit misfit by it (chi2/nu 5.9, a misfit line naming the
+    instruments) where the FE itself fits within the noise. Corrected again at the free
+    optimum, it fits within the noise, the intervals holding the truth
+    (``benchmarks/bench_identify_rubbers.py``, seed 20261210)."""
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+    from mkm.bench.sim_settings import remove_simulator_settings
+    from mkm.identify import identify
+
+    truth = {"theta0_deg": 21.5, "C10_MPa": 0.382, "C01_MPa": 0.0893}
+    paths = []
+    for k, eps in enumerate((0.0, 0.0873, 0.1784, 0.2656)):
+        config = load_config(eps=eps).replace(
+            muscle={"D0_mm": 8.73, "t0_mm": 0.57, "L0_mm": 82.4},
+            loadcell={"capacity_N": 980.665, "sensitivity_N_per_V": 98.0665},
+            regulator={"max_pressure_bar": 5.55, "full_scale_bar": 9.0,
+                       "monitor_accuracy_bar": 0.09},
+            safety={"tare_max_shift_N": 98.0, "tare_max_std_N": 5.0, "vent_below_bar": 0.18},
+            sequence={"pressures_bar": tuple(round(5.55 * (j + 1) / 8, 3) for j in range(8)),
+                      "preconditioning_cycles": 0},
+            sim={"model": "axisym", "fe_mesh": "medium", "seed": 20261210 + 1000 * k,
+                 "hysteresis_fraction": 0.0247, "creep_fraction": 0.0, "truth": truth})
+        result = acquire(config, out_root=tmp_path, notify=lambda message: None)
+        assert result.status == "complete"
+        remove_simulator_settings(result.path)
+        paths.append(result.path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the surrogate's unanswered points, said in the notes
+        result = identify(paths)
+    assert result.rubber["separated"], result.notes
+    assert not result.goodness.misfit, result.goodness.line()
+    table = result.parameters().set_index("parameter")
+    for name, value in truth.items():
+        assert table.loc[name, "ci_low"] <= value <= table.loc[name, "ci_high"], name
