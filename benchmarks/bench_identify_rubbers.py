@@ -245,6 +245,10 @@ def summarise(rows: list[dict]) -> dict:
     missed = [r for r in rows if r["verdict"] in ("warned", "SILENT")]
     out = {v.lower(): sum(r["verdict"] == v for r in rows) for v in verdicts}
     out["draws"] = len(rows)
+    # a misfit line printed on a covered draw: intervals widened, and a user told to check the
+    # instruments of a bench that has nothing wrong
+    out["covered_with_misfit_line"] = sum(r["verdict"] == "covered" and r["misfit_line"]
+                                          is not None for r in rows)
     if missed:
         theta = [r["muscle"]["truth"]["theta0_deg"] for r in missed]
         ratio = [r["muscle"]["truth"]["C01_MPa"] / r["muscle"]["truth"]["C10_MPa"]
@@ -259,6 +263,7 @@ def table(rows: list[dict]) -> list[dict]:
              "eps": ", ".join(f"{e:g}" for e in r["plan"]["eps"]),
              "top_bar": r["plan"]["pressures_bar"][-1], "verdict": r["verdict"],
              "chi2_per_nu": None if r["chi2_per_nu"] is None else round(r["chi2_per_nu"], 3),
+             "misfit_line": "yes" if r["misfit_line"] else "no",
              "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
 
 
