@@ -1930,6 +1930,14 @@ def test_the_guides_rubbers_across_the_practical_range_are_their_measured_file()
         note = next(x for x in d["notes"] if x.startswith("C10 and C01 not separated"))
         low, high = (float(v) for v in re.search(r"interval ([\d.]+)-([\d.]+)", note).groups())
         assert low <= 0.905 <= high, d["seed"]
+    told = [d["seed"] for d in kept if any("but for the tolerances declared of" in x
+                                            for x in d["notes"])]
+    assert told == [20261214, 20261215]
+    assert f"2 of them (seeds {told[0]} and {told[1]}) the note on C10 and C01 adds" in said
+    improvement = [float(re.search(r"lowers chi2 by ([\d.e+]+) \(", x).group(1))
+                   for d in kept for x in d["notes"] if "but for the tolerances declared" in x]
+    assert all(100 <= v < 1000 for v in improvement), improvement
+    assert "lowers chi2 by hundreds" in said
     (other,) = [d for d in misfit if d["rubber_separated"]]
     assert other["seed"] == 20261208 and other["misfit_line"].count("chi2/nu=") == 1
     assert "lowered to 0.0587 (0.15 of the lock)" in other["plan"]["notes"][0]
