@@ -27,6 +27,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import time
 import warnings
@@ -271,7 +272,7 @@ def _covering_surrogate(runs, surrogate, notify) -> tuple[SurrogateStatic | None
 
 
 def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration,
-              braid=None):
+              braid=None, start=None):
     L0_mm = float(runs[0].muscle["L0_mm"])
     nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
                                      .params()["theta0_deg"])
@@ -286,9 +287,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         found, note = _covering_surrogate(runs, surrogate, notify)
         notes += [note] if note else []
         source = fe if found is None else found
+    searched = list(notes)  # what a search again with the FE model keeps of them
     declared = {n: float(runs[0].muscle[n]) for n in (*fitting.GEOMETRY, "L0_mm")}
     start = {**nominal, **{n: TERM_START.get(n, nominal.get(n, declared.get(n, 0.0)))
-                           for n in names}}
+                           for n in names}, **(start or {})}
 
     notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
            f"of {len(runs)} run(s) with {source.name}")
@@ -383,6 +385,16 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         notes += _outside_box(caught, "the refits at the ends of the assumed rubber ratio",
                               "the prediction band's rubber-ratio term is extrapolated there")
     fitness = goodness.assess(runs, best)
+    if fitness.misfit and isinstance(source, Corrected) and surrogate_misfit(source, fe, runs,
+                                                                             best):
+        notify(f"the fit on the surrogate misfits where {fe.name} would not: identifying again "
+               f"with {fe.name} (one sweep per run and evaluation)")
+        return _identify(runs, groups, fe, "model", surrogate, seed, notify, started, [
+            *searched, f"the fit on the surrogate corrected by the FE model misfit (chi2/nu "
+            f"{fitness.reduced:.3g}) where the FE model itself would not (the surrogate's "
+            "error beyond its correction at one point): searched again with the FE model"],
+            calibration, braid, start={n: v for n, v in best.values.items()
+                                       if n != "c01_fraction"})  # the ratio tested again
     boot = goodness.widen(boot, best, fitness)
     notify("model-form terms: the FE model at the optimum (and the other braid)")
     if terms is None:
@@ -669,6 +681,23 @@ def other_braid_excess(source, fe: ModelStatic, runs, one_scale, free) -> float:
         r = r - J[:, usable] @ np.linalg.lstsq(J[:, usable], r, rcond=None)[0]
     variance = free.rss / max(free.n - len(free.names), 1)
     return float((np.sum(r**2) - free.rss) / variance)
+
+
+def surrogate_misfit(source, fe: ModelStatic, runs, best) -> bool:
+    """Whether the fit ``best`` on the corrected surrogate ``source``, a misfit, would not be
+    one with the FE model ``fe`` (:func:`mkm.identify.goodness.assess`): refitted with
+    the FE model's force at the optimum in place of the surrogate's (linearised, as
+    :func:`other_braid_excess` refits; one FE sweep per run, which the model-form terms take
+    anyway), the runs are within their noise. The surrogate's own error beyond its correction
+    at one point then made the misfit, not the muscle or the bench."""
+    differences = _minus(fe.tables(runs, best.values), source.tables(runs, best.values))
+    r = best.residual_N + _hold_change(source, runs, best, differences)
+    J = best.weighted_jacobian
+    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
+    if usable.any():
+        r = r - best.jacobian[:, usable] @ np.linalg.lstsq(J[:, usable], best.w * r,
+                                                           rcond=None)[0]
+    return not goodness.assess(runs, dataclasses.replace(best, residual_N=r)).misfit
 
 
 def _minus(tables, others) -> list[tuple]:
