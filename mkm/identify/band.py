@@ -71,8 +71,9 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps)
         return None
     band = entry["identified"]["band"]
     names, covariance = band["parameters"], np.asarray(band["covariance"], dtype=float)
-    values = {**fitting.nominal_values(entry["theta0_deg"]),
-              "c01_fraction": fitting.SILASTIC_C01_FRACTION,
+    values = {"c01_fraction": fitting.SILASTIC_C01_FRACTION,
+              **fitting.nominal_values(entry["theta0_deg"], entry.get("C10_MPa"),
+                                       entry.get("C01_MPa")),
               **dict(zip(names, band["values"], strict=True))}
     inputs = {"D0_mm": D0_mm, "t0_mm": t0_mm}
 

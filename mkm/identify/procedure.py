@@ -20,8 +20,8 @@
    separate them (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`; a rejected Silastic ratio
    counts only with the braid known), else one scale and a note.
 6. Leave-one-run-out (and one length out, for runs of several lengths): each run predicted by
-   the FE model at the parameters fitted to the others, against the nominal model (the
-   calibrated angle, Silastic S, no friction or creep).
+   the FE model at the parameters fitted to the others, against the nominal model (the angle
+   and rubber the runs declare, else the calibration's; no friction or creep).
 """
 
 from __future__ import annotations
@@ -122,7 +122,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         The FE prediction cache (:mod:`mkm.prediction_cache`): an identification repeated or
         interrupted solves only what it has not solved yet; None: no cache.
     calibration : Calibration, optional
-        Where the nominal muscle's angle comes from (None: the shipped one).
+        Where the nominal muscle's angle and rubber come from where the runs declare none
+        (None: the shipped one); what is not fitted stays at the nominal muscle's.
     braid : {"bonded", "sliding"}, optional
         The muscle's braid when it is known: the confirmation model takes it and no braid
         model-form term is added (:func:`model_form_terms`). None: ``model``'s own braid, and
@@ -271,9 +272,7 @@ def _covering_surrogate(runs, surrogate, notify) -> tuple[SurrogateStatic | None
 
 def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration,
               braid=None):
-    L0_mm = float(runs[0].muscle["L0_mm"])
-    nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
-                                     .params()["theta0_deg"])
+    nominal = fitting.nominal_muscle(fe.spec, runs, calibration)
     # a monitor's hysteresis where it is declared (its bound is half of that)
     names = [n for g in groups for n in GROUPS[g] if n != "pressure_hysteresis_bar"
              or min(r.monitor_hysteresis_bar for r in runs) > 0]
@@ -288,6 +287,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     declared = {n: float(runs[0].muscle[n]) for n in (*fitting.GEOMETRY, "L0_mm")}
     start = {**nominal, **{n: TERM_START.get(n, nominal.get(n, declared.get(n, 0.0)))
                            for n in names}}
+    if "rubber_scale" in names:  # one scale on Silastic S's ratio, unless the runs separate it
+        start.pop("c01_fraction", None)
 
     notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
            f"of {len(runs)} run(s) with {source.name}")
