@@ -336,17 +336,13 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             one_scale = best
             best, boot, terms = free, free_boot, free_terms
             ratio, (_, top) = rubber["ratio_C01_over_C10"], PRACTICAL_RANGE.C01_per_C10
-            share, (low, _) = free.values["c01_fraction"], free.bounds["c01_fraction"]
+            share = free.values["c01_fraction"]
             if fitting.at_edge(share, free.bounds["c01_fraction"]):
                 # a Festo membrane pushes it to 9, a bench error the model absorbs so to 0:
                 # fits best there, but the edge set the number, and the bootstrap collapsed on
                 # it: the intervals hold the fit at Silastic S's ratio too
                 terms = {**terms, "ratio_edge": ratio_edge_term(one_scale, free)}
-                want = ("no C01 (a neo-Hookean rubber, or an error the model takes for one)"
-                        if share <= low else "more of C01 than the box allows")
-                notes.append(f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs "
-                             f"want {want}, so the ratio is the edge's, not measured: the "
-                             "intervals hold the fit at Silastic S's ratio too")
+                notes.append(ratio_edge_note(ratio, share, free.bounds["c01_fraction"]))
             if ratio > top:
                 notes.append(f"the identified rubber's C01/C10 {ratio:.3g} is above the "
                              f"practical range's {top:g} (`mkm models`): every model "
@@ -511,6 +507,17 @@ def _rest_length_hint(runs, fe, best, fitness, groups) -> list[str]:
 
 def _rms(r) -> float:
     return float(np.sqrt(np.mean(np.square(r))))
+
+
+def ratio_edge_note(ratio: float, share: float, bounds: tuple[float, float]) -> str:
+    """The note on C01's share ``share`` fitted at an edge of its search ``bounds`` (the ratio
+    C01/C10 ``ratio``): which edge, so what the runs want."""
+    low, high = bounds
+    want = ("no C01 (a neo-Hookean rubber, or an error the model takes for one)"
+            if share - low <= high - share else "more of C01 than the box allows")
+    return (f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs want {want}, so "
+            "the ratio is the edge's, not measured: the intervals hold the fit at Silastic S's "
+            "ratio too")
 
 
 def _select(source, runs, names, start, nominal):

@@ -28,7 +28,7 @@ from mkm.identify import identify
 from mkm.identify.band import Z95, check_heldout, prediction_band
 from mkm.identify.fitting import Fit
 from mkm.identify.intervals import bootstrap, robust_covariance
-from mkm.identify.procedure import _identifiability, _zero_unpinned
+from mkm.identify.procedure import _identifiability, _zero_unpinned, ratio_edge_note
 from mkm.registry import parse_spec
 
 SHIPPED = Calibration.shipped().path
@@ -568,3 +568,15 @@ def test_a_braid_angle_the_runs_declare_is_the_one_a_fit_without_theta0_keeps(tm
     for check in result.checks:
         for branch in ("rising", "falling"):
             assert check["identified_err"][branch] < 0.1, check
+
+
+@pytest.mark.parametrize(("share", "want"), [
+    (0.0, "no C01 (a neo-Hookean rubber"),
+    # a 25 mm muscle simulated with a C01 of a tenth of C10 and a load cell 3 % high, identified
+    # with --search model --braid bonded: the share stopped a hair above the box's 0
+    (3.05e-7, "no C01 (a neo-Hookean rubber"),
+    (0.9, "more of C01 than the box allows"),
+    (0.899, "more of C01 than the box allows")])
+def test_a_rubber_ratio_at_an_edge_names_the_edge_it_is_at(share, want):
+    note = ratio_edge_note(share / (1 - share), share, (0.0, 0.9))
+    assert f"is at the edge of its search box: the runs want {want}" in note
