@@ -6,6 +6,7 @@ import argparse
 import sys
 
 from mkm.cli.common import (
+    IDENTIFIED_L0,
     add_batch_arguments,
     add_calibration_argument,
     add_geometry_arguments,
@@ -15,6 +16,7 @@ from mkm.cli.common import (
     choices,
     derived_help,
     emit_prediction,
+    identified_length,
     model_from_args,
     parse_within,
     say,
@@ -42,7 +44,7 @@ def register(subparsers) -> None:
         "`mkm models`): CSV on stdout, or to --out FILE with the metadata in a .json beside.",
         epilog="example: mkm fem solve --model axisym:mesh=coarse --D0 35 --t0 2.5 --eps 5% "
         "--pressures 0:2.5:0.5")
-    add_model_arguments(solve)
+    add_model_arguments(solve, L0_default=IDENTIFIED_L0)
     add_geometry_arguments(solve)
     solve.add_argument("--out", help="write the CSV here instead of stdout")
     solve.add_argument("--tolerance", type=argtype(parse_tolerance, "--tolerance"),
@@ -165,6 +167,8 @@ def _targets_help() -> str:
 
 def _solve(args) -> int:
     args.pressures, args.eps = sweep_grid(args.pressures, args.eps)
+    spec = spec_from_args(args)
+    identified_length(args, "L0_mm" in spec.entry.parameters and "L0_mm" not in dict(spec.params))
     model = model_from_args(args)
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     if args.calibration is not None:  # an identified muscle's: its 95 % band beside the force
