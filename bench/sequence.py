@@ -123,9 +123,14 @@ def _zero_said(vented_bar: float, config: BenchConfig) -> str:
     """The volts the monitor gives vented against the configured zero's, and the setting that
     takes them, for a muscle known open to the air."""
     regulator = config.regulator
-    return (f"it gives {float(regulator.monitor_volts(vented_bar)):.4g} V vented, "
+    said = (f"it gives {float(regulator.monitor_volts(vented_bar)):.4g} V vented, "
             f"[regulator] monitor_V_at_zero = {regulator.monitor_V_at_zero:g} V; with the "
             "muscle open to the air, set monitor_V_at_zero to what it gives")
+    offset = config.sim.truth.monitor_offset_bar if config.simulated else None
+    # the simulated sensor reads its truth through the declared scaling: no zero declared
+    # takes its offset away
+    return said + (f" (simulated: [sim.truth] monitor_offset_bar = {offset:g} bar moves any "
+                   "zero declared)" if offset else "")
 
 
 def validate_tare(cell_V, config: BenchConfig) -> dict:
