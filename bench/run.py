@@ -770,7 +770,7 @@ class BenchRun:
             try:
                 self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
                                          estimate_duration_s(self.config),
-                                         [vars(m) for m in self.unvented])
+                                         [m.noted() for m in self.unvented])
             except OSError as exc:
                 self._folder_error = exc
                 raise
@@ -1127,13 +1127,14 @@ class BenchRun:
     def _keep_outcome(self, status: RunStatus, reason: str, unverified: bool,
                       hung: bool) -> str:
         """The final run.json was refused (a full disk, no permission): the bench marker keeps
-        the outcome, and the next command on the bench writes it into run.json
+        the whole record it was to hold (the gaps found since its last write, the vent check,
+        the signal...), and the next command on the bench writes it into run.json
         (:func:`mkm.bench.unvented.mend_run`); what became of it, in words."""
         lease, meta = self.lease, self.recorder.meta
         left = "run.json still says running"
         if lease is None:
             return f"{left}: no bench marker could keep the outcome"
-        outcome = {"status": str(status), "reason": reason, "ended_utc": meta.ended_utc,
+        outcome = {**meta.as_dict(), "status": str(status), "reason": reason,
                    "manual_vent_required": unverified}
         done = lease.wait(lease.post(lambda: lease.ended(outcome)),
                           0.0 if hung else STATE_WAIT_S)

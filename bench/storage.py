@@ -417,6 +417,47 @@ def _check_fields(values: dict[str, Any], where: str) -> None:
                              "expected a count >= 0")
 
 
+#: The statuses a run's own end writes: those its bench marker keeps when run.json refused them.
+ENDED_STATUSES = (RunStatus.COMPLETE, RunStatus.COMPLETE_WITH_GAPS, RunStatus.ABORTED,
+                  RunStatus.FAILED)
+#: A run's outcome in run.json: all a bench marker of an older version keeps of its record.
+OUTCOME_FIELDS = ("status", "reason", "ended_utc", "manual_vent_required")
+
+
+def kept_outcome(data: Any, where: str) -> dict[str, Any]:
+    """A run's final record kept outside its run.json (its bench marker, when run.json refused
+    it), its outcome checked as run.json's fields are: a status a run ends with
+    (:data:`ENDED_STATUSES`), its reason, end and manual vent (``ValueError`` naming the first
+    that is not). The rest is checked where it is written (:func:`outcome_written`); a marker of
+    an older version keeps those fields alone (:data:`OUTCOME_FIELDS`)."""
+    if not isinstance(data, dict):
+        raise ValueError(f"{where}={_shown(data)} is invalid: expected an object")
+    if data.get("status") not in ENDED_STATUSES:
+        raise ValueError(f"{where}: status={_shown(data.get('status'))} is invalid: expected "
+                         f"one a run ends with: {', '.join(ENDED_STATUSES)}")
+    outcome = {"status": data["status"], "reason": data.get("reason"),
+               "ended_utc": data.get("ended_utc"),
+               "manual_vent_required": data.get("manual_vent_required", False)}
+    _check_fields(outcome, where)
+    return {**data, **outcome}
+
+
+def outcome_written(meta: RunMeta, kept: dict[str, Any], where: str) -> tuple[RunMeta, bool]:
+    """``meta`` (a run.json still ``running``) with the final record ``kept`` for it
+    (:func:`kept_outcome`) laid over it, read as run.json is (:meth:`RunMeta.from_dict`): the
+    whole record when it is this run's (its start and process id) and valid, else its
+    outcome's four fields alone; and whether it was whole."""
+    record = meta.as_dict()
+    process = kept.get("process")
+    if kept.get("started_utc") == record["started_utc"] and isinstance(process, dict) and \
+            meta.process is not None and process.get("pid") == meta.process.pid:
+        try:
+            return RunMeta.from_dict({**record, **kept}, where), True
+        except ValueError:  # edited by hand: its outcome alone
+            pass
+    return RunMeta.from_dict({**record, **{k: kept[k] for k in OUTCOME_FIELDS}}, where), False
+
+
 def _record(cls, data: Any, where: str):
     """``cls(**data)`` for a small record of run.json, its fields' types checked."""
     if not isinstance(data, dict):
@@ -727,7 +768,8 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     sample (after a gap recorded there). The gaps kept beside them (:func:`kept_gaps_path`)
     that run.json does not hold are recorded in it, as any gap. The kept rows are written as
     they are, after samples.csv's last whole row; those it holds already are left out; the kept
-    files stay. Asked again after run.json refused the count, it counts them then.
+    files stay. Asked again after run.json refused the count, it counts them then, and records
+    the gaps it did not hold.
     """
     path = Path(run_dir)
     meta = read_meta(path)
@@ -745,6 +787,8 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     if added:  # found after run.json's last write: it never held them
         meta.gaps = sorted([*meta.gaps, *added], key=lambda g: g.after_sample)
         meta.lost_samples = sum(g.lost_samples for g in meta.gaps)
+    gaps = (f", and the {len(added)} gap(s) kept beside them "
+            f"({sum(g.lost_samples for g in added)} samples lost) recorded" if added else "")
     header, *rows = kept.read_bytes().splitlines(keepends=True)
     if header.rstrip(b"\r\n") != ",".join(SAMPLE_COLUMNS).encode():
         raise ValueError(f"{kept} does not start with samples.csv's header: expected the rows "
@@ -758,13 +802,14 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     last = _last_row(samples_csv)
     last_sample = int(last[0]) if last else -1
     new = [(n, r) for n, r in zip(numbers, rows, strict=True) if n > last_sample]
-    if not new and numbers:  # joined before: a run.json that refused the count takes it now
+    if not new and numbers:  # joined before: a run.json that refused the count (and the
+        # gaps, written with it) takes them now
         held = Run(path, meta, pd.DataFrame(), meta.status).n_samples
-        if held != meta.counters.get("samples"):
+        if held != meta.counters.get("samples") or added:
             return _count_joined(path, meta, held, f"the samples kept in {kept} are all in "
-                                 f"{samples_csv} already, joined before",
+                                 f"{samples_csv} already, joined before{gaps}",
                                  f"samples {numbers[0]}-{numbers[-1]} ({len(numbers)}) kept in "
-                                 f"{kept} were joined to samples.csv")
+                                 f"{kept} were joined to samples.csv{gaps}")
     if not new:
         raise ValueError(f"the samples kept in {kept} are all in {samples_csv} already (its "
                          f"last sample is {last_sample}): nothing to join; the kept file may "
@@ -788,8 +833,6 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
                          f"joined, the samples stay kept in {kept}; expected a run folder this "
                          "user can write to again") from None
     span = f"samples {new[0][0]}-{new[-1][0]} ({len(new)})"
-    gaps = (f", and the {len(added)} gap(s) kept beside them "
-            f"({sum(g.lost_samples for g in added)} samples lost) recorded" if added else "")
     return _count_joined(path, meta, Run(path, meta, pd.DataFrame(), meta.status).n_samples,
                          f"{span} kept in {kept} were joined to {samples_csv}{gaps}",
                          f"{span} kept in {kept} were joined to samples.csv{gaps}")

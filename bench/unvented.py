@@ -31,7 +31,13 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 
-from mkm.bench.storage import ProcessIdentity, RunStatus
+from mkm.bench.storage import (
+    OUTCOME_FIELDS,
+    ProcessIdentity,
+    RunStatus,
+    kept_outcome,
+    outcome_written,
+)
 from mkm.core.home import user_state
 from mkm.core.records import write_json_atomic
 
@@ -70,8 +76,9 @@ class Marker:
     # the pressure its monitor did not follow before the vent: that monitor's readings prove no
     # vent (None: it followed, or no such interlock)
     unfollowed_bar: float | None = None
-    # the run's outcome (status, reason, ended_utc, manual_vent_required) when its run.json
-    # refused it (a full disk, no permission): the finder writes it there
+    # the run's final record (run.json's content: its status, reason, ended_utc,
+    # manual_vent_required, gaps, vent check, signal...) when its run.json refused it (a full
+    # disk, no permission): the finder writes it there
     outcome: dict | None = None
     # the command that left it without a run folder (``vent``: its check not verified);
     # ``run_path`` is then ""
@@ -105,6 +112,15 @@ class Marker:
         """The marker as written in the state folder."""
         data = asdict(self)
         del data["mended"]
+        return data
+
+    def noted(self) -> dict:
+        """The marker as the run that found it records it (``unvented_before``): its outcome
+        by its status, reason, end and manual vent (the rest is the dead run's own run.json's),
+        and what was mended."""
+        data = asdict(self)
+        if self.outcome:
+            data["outcome"] = {k: self.outcome.get(k) for k in OUTCOME_FIELDS}
         return data
 
 
@@ -267,8 +283,9 @@ class BenchLease(StateFolderThread):
         self._write()
 
     def ended(self, outcome: dict) -> None:
-        """The run's run.json refused its outcome: the marker stays and keeps it, for the next
-        command on the bench to write (:func:`mend_run`)."""
+        """The run's run.json refused its final record ``outcome`` (what run.json would hold):
+        the marker stays and keeps it, for the next command on the bench to write
+        (:func:`mend_run`)."""
         self.marker.outcome = outcome
         self._write()
 
@@ -318,18 +335,13 @@ def find_unvented(bench_key: str, state: Path | None = None) -> list[tuple[Path,
 
 
 def _outcome(kept) -> dict | None:
-    """The outcome a marker kept (:meth:`BenchLease.ended`), or None when it holds none that a
-    run ends with (the run is then mended as killed)."""
+    """The final record a marker kept (:meth:`BenchLease.ended`), its outcome checked
+    (:func:`mkm.bench.storage.kept_outcome`), or None when it holds none that a run ends with
+    (the run is then mended as killed)."""
     try:
-        status = RunStatus(kept["status"])
-        reason, ended = kept["reason"], kept.get("ended_utc")
-    except (KeyError, TypeError, ValueError, AttributeError):
+        return kept_outcome(kept, "the bench marker's outcome")
+    except ValueError:
         return None
-    written = (RunStatus.RUNNING, RunStatus.INCOMPLETE, RunStatus.KILLED, RunStatus.IMPORTED)
-    if status in written or not isinstance(reason, str) or not isinstance(ended, str | None):
-        return None
-    return {"status": status.value, "reason": reason, "ended_utc": ended,
-            "manual_vent_required": kept.get("manual_vent_required") is True}
 
 
 def vent_unvented(backend, found: list[tuple[Path, Marker]], on_state_folder
@@ -374,10 +386,11 @@ def vent_unvented(backend, found: list[tuple[Path, Marker]], on_state_folder
 def mend_run(marker: Marker) -> tuple[str, bool]:
     """Make the run folder of a dead run tell the truth, once its bench is vented: a run.json
     still ``running`` becomes ``killed``, with the sample count of the rows on disk and the time
-    of death as far as known (samples.csv's last write), or takes the outcome the marker kept
-    when the run's own final write was refused. Returns what was done, in words, and whether
-    the marker is done with: one whose kept outcome run.json refuses again stays, for the next
-    command to write."""
+    of death as far as known (samples.csv's last write), or takes the final record the marker
+    kept when the run's own final write was refused (its outcome alone when the record is not
+    this run's or not valid: :func:`mkm.bench.storage.outcome_written`), counting the rows on
+    disk. Returns what was done, in words, and whether the marker is done with: one whose kept
+    record run.json refuses again stays, for the next command to write."""
     from mkm.bench.storage import load_run, read_meta, release_reserve
     from mkm.core.records import provenance
 
@@ -398,14 +411,17 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
     csv = path / "samples.csv"
     died = (datetime.datetime.fromtimestamp(csv.stat().st_mtime, datetime.UTC)
             .isoformat(timespec="seconds") if csv.is_file() else marker.last_command_utc)
-    meta.counters["samples"] = samples
-    outcome = marker.outcome
+    outcome, whole = marker.outcome, False
     if outcome:
-        meta.status = RunStatus(outcome["status"])
-        meta.ended_utc = outcome["ended_utc"] or died or None
-        meta.manual_vent_required = outcome["manual_vent_required"]
-        meta.reason = (f"{outcome['reason']}; this outcome was refused by run.json as the "
-                       f"run ended, kept in its bench marker and written by the next command "
+        try:
+            meta, whole = outcome_written(meta, outcome, "the run's record its bench marker kept")
+        except ValueError:  # not one run.json could hold: mended as killed
+            outcome = None
+    meta.counters["samples"] = samples
+    if outcome:
+        meta.ended_utc = meta.ended_utc or died or None
+        meta.reason = (f"{meta.reason}; this outcome was refused by run.json as the run "
+                       f"ended, kept in its bench marker and written by the next command "
                        f"at {provenance()['date_utc']}")
     else:
         meta.status = RunStatus.KILLED
@@ -422,4 +438,6 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
         kept = "; its bench marker keeps the outcome for the next command" if outcome else ""
         return (f"its run.json could not be rewritten ({exc.strerror or exc}): not mended{kept}",
                 not outcome)
-    return f"run.json mended: status {meta.status}, {samples} samples on disk", True
+    alone = "" if whole or not outcome else (" (its marker kept the outcome alone, not the "
+                                              "whole record)")
+    return f"run.json mended: status {meta.status}, {samples} samples on disk{alone}", True

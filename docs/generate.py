@@ -406,6 +406,10 @@ QUOTED_RUNS = {
                                    "20261701 20261702 20261703 20261704 20261705 --pool-with "
                                    "tests/surrogate/data/range_check.csv --out {out}",
     "surrogate_range_lock.json": "benchmarks/bench_range_lock.py --out {out}",
+    "surrogate_range_decline.json": "benchmarks/bench_surrogate_decline.py --seeds 20261225 "
+                                    "20261228 20261701 20261702 20261703 20261704 20261705 "
+                                    "--pool-with tests/surrogate/data/range_check.csv "
+                                    "--box-seeds 20261225 20261228 20261701 --out {out}",
 }
 
 #: Results measured on a training set the repository does not ship (output -> that file):

@@ -457,6 +457,21 @@ def line_above_threshold(pressure_bar, force_N, floor_N: float = 0.0):
     return float(slope), float(-intercept / slope)
 
 
+def reference_line(sweep: pd.DataFrame) -> tuple[float, float, float]:
+    """The floor [N], slope [N/bar] and threshold [bar] of one sweep of a checked reference
+    (:func:`check_reference`: its turning point dropped, its branches averaged): the line
+    through its forces above :data:`THRESHOLD_FLOOR_FRACTION` of its largest (slope NaN when
+    fewer than two lie above)."""
+    floor = THRESHOLD_FLOOR_FRACTION * sweep["force_N"].max()
+    return (floor, *line_above_threshold(sweep.pressure_bar, sweep.force_N, floor))
+
+
+def has_slope(reference: pd.DataFrame) -> bool:
+    """Whether every sweep of the checked ``reference`` has a rising line to fit a slope to
+    (:func:`reference_line`), as :func:`fit_theta0` asks of a slope target."""
+    return all(reference_line(sweep)[1] > 0 for sweep in _sweeps(reference))
+
+
 def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
                bounds=THETA0_BOUNDS_DEG, xatol: float = 1e-3) -> dict:
     """Fit theta0 [deg] of ``make_model(theta0_deg)`` to ``reference`` (see the module doc).
@@ -494,8 +509,7 @@ def fit_theta0(make_model, reference: pd.DataFrame, target: str = "slope",
     sweeps = _sweeps(reference)
     ref_lines = []
     for sweep in sweeps:
-        floor = THRESHOLD_FLOOR_FRACTION * sweep["force_N"].max()
-        slope, threshold = line_above_threshold(sweep.pressure_bar, sweep.force_N, floor)
+        floor, slope, threshold = reference_line(sweep)
         if target != "force" and not slope > 0:
             raise ValueError("reference sweep at D0_mm={:g}, t0_mm={:g}, eps={:g} has fewer than "
                              "two forces above its threshold: expected a rising force to fit a "

@@ -883,6 +883,61 @@ def test_the_guides_range_surrogate_table_has_no_column_its_files_do_not_hold():
     assert "before" not in line
 
 
+def test_the_guides_decline_rules_table_is_its_measured_file():
+    """surrogates.md types out ``surrogate_range_decline.json``'s rules by hand: each row and
+    the figures its words draw from the file (the rule that meets the worst, the one that
+    answers 95 %, the errors in std of the muscles above 1 % there) are held to it, and its
+    first row to the shipped model's pooled scores (``surrogate_range_gp_all.json``)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "surrogate_range_decline.json").read_text(
+        encoding="utf-8"))["rules"]
+    text = (DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8")
+    table = text[text.index("docs/measured/surrogate_range_decline.json"):].split("\n\n", 2)[1]
+    rows = {r[0]: r[1:] for r in ([c.strip() for c in line.strip("|").split("|")]
+                                  for line in table.splitlines()[2:])}
+
+    def label(name):
+        words = name.split()
+        if name == "none":
+            return "nowhere (as shipped)"
+        if words[0] == "P":
+            return f"P - P* < {words[4]} std of P*"
+        c = f"{100 * float(words[2]):g} %"
+        if words[0] == "std_top":
+            return f"its std at 8 bar > {c} of its force there (every pressure)"
+        return f"its std > {c} of its force " + ("at 8 bar" if words[3] == "F_top"
+                                                  else "at the point")
+
+    for name, scores in record.items():
+        p, box = scores["practical_range"], scores["paper_box"]
+        assert rows[label(name)] == [
+            f"{p['answered_pct']:.1f} %", str(p["muscles_declined"]), f"{p['worst_pct']:.3g} %",
+            f"{p['median_pct']:.3f} %", f"{p['p90_pct']:.2f} %", str(p["above_1pct"]),
+            " / ".join(f"{c:.1f}" for c in p["within_std_pct"]) + " %",
+            f"{box['answered_pct']:.1f} %"], name
+    assert len(rows) == len(record)
+    shipped = json.loads((DOCS / "measured" / "surrogate_range_gp_all.json").read_text(
+        encoding="utf-8"))["practical_range_pooled"]
+    none = record["none"]["practical_range"]
+    assert none["muscles_scored"] == shipped["muscles_scored"]
+    assert none["worst_pct"] == pytest.approx(shipped["worst_pct"])
+    assert none["median_pct"] == pytest.approx(shipped["median_pct"])
+    met, most = record["std > 0.002 F_top"]["practical_range"], record[
+        "std > 0.0075 F_top"]["practical_range"]
+    assert met["worst_pct"] <= 1 < record["std > 0.0025 F_top"]["practical_range"]["worst_pct"]
+    assert most["answered_pct"] >= 95 > record["std > 0.005 F_top"]["practical_range"][
+        "answered_pct"]
+    in_std = most["above_1pct_error_in_std"]
+    said = " ".join(text.split())
+    assert (f"which answers {met['answered_pct']:.1f} % of the points with force and none of "
+            f"{met['muscles_declined']} muscles'; answering {most['answered_pct']:.1f} % (the "
+            f"std within 0.75 %) leaves {most['above_1pct']} muscles above 1 %, each "
+            f"{in_std[0]:.2f}-{in_std[-1]:.2f} std off at its worst point") in said
+    assert (f"not those whose slope is off (worst "
+            f"{record['P - P* < 6 std(P*)']['practical_range']['worst_pct']:.3g} %)") in said
+
+
 def test_the_guides_lock_variants_table_is_its_measured_file():
     """surrogates.md types out ``surrogate_range_lock.json``'s variants by hand, and quoted the
     shipped model on its sets as 277 muscles, worst 6.4 %, 22 above 1 % (the sets of 3 December,

@@ -193,13 +193,15 @@ def choices(model: str, parameter: str) -> tuple[str, ...]:
 
 
 def add_model_arguments(parser, theta0: bool = True, models: tuple[str, ...] | None = None,
+                        default: str | None = "eq2", default_said: str = "%(default)s",
                         L0_default: str = "default 282") -> None:
     """``--model`` and the options that set its parameters; ``models``: the registered names
-    the command takes (default: every one); ``L0_default``: what --help says of --L0's."""
+    the command takes (default: every one); ``default`` None leaves the command to choose it
+    (``default_said`` says how); ``L0_default``: what --help says of --L0's."""
     names = models or tuple(entries())
-    parser.add_argument("--model", default="eq2", help=f"predictor spec: one of "
+    parser.add_argument("--model", default=default, help=f"predictor spec: one of "
                         f"{', '.join(names)}, with :key=value parameters (see `mkm models`); "
-                        "default %(default)s")
+                        f"default {default_said}")
     if theta0:
         parser.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                             help=shared_help("--theta0", "default: calibrated"))

@@ -44,7 +44,10 @@ def register(subparsers) -> None:
         "`mkm models`): CSV on stdout, or to --out FILE with the metadata in a .json beside.",
         epilog="example: mkm fem solve --model axisym:mesh=coarse --D0 35 --t0 2.5 --eps 5% "
         "--pressures 0:2.5:0.5")
-    add_model_arguments(solve, L0_default=IDENTIFIED_L0)
+    add_model_arguments(solve, default=None, default_said=(
+        f"{DEFAULT_SOLVE_MODEL}, or with --calibration of a muscle `mkm identify` wrote, the "
+        "model it was identified with (its 95 %% band beside the force)"),
+        L0_default=IDENTIFIED_L0)
     add_geometry_arguments(solve)
     solve.add_argument("--out", help="write the CSV here instead of stdout")
     solve.add_argument("--tolerance", type=argtype(parse_tolerance, "--tolerance"),
@@ -165,8 +168,29 @@ def _targets_help() -> str:
     return "; ".join(f"{name}: {what}" for name, what in TARGETS.items())
 
 
+#: the model `mkm fem solve` predicts with when --model is not given, but for an identified muscle
+DEFAULT_SOLVE_MODEL = "eq2"
+
+
+def _solve_model(args) -> str:
+    """``--model``, or when it is not given the model the ``--calibration``'s muscle was
+    identified with (said in a note: Equation 2 has no threshold, and no band of that muscle),
+    else :data:`DEFAULT_SOLVE_MODEL`."""
+    if args.model is not None:
+        return args.model
+    from mkm.identify.band import identified_entry
+
+    found = identified_entry(args.calibration) if args.calibration is not None else None
+    if found is None:
+        return DEFAULT_SOLVE_MODEL
+    say(args, "note", f"--model not given: {found[0]}, the model the muscle of --calibration "
+        f"was identified with (--model {DEFAULT_SOLVE_MODEL} or another to predict with it)")
+    return found[0]
+
+
 def _solve(args) -> int:
     args.pressures, args.eps = sweep_grid(args.pressures, args.eps)
+    args.model = _solve_model(args)
     spec = spec_from_args(args)
     identified_length(args, "L0_mm" in spec.entry.parameters and "L0_mm" not in dict(spec.params))
     model = model_from_args(args)

@@ -93,9 +93,15 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps)
     inputs = {"D0_mm": D0_mm, "t0_mm": t0_mm}
 
     def force_at(shift: dict) -> np.ndarray:
-        # a term's shift names every fitted parameter; the static force takes the static ones
+        # a term's shift names every fitted parameter; the static force takes the static ones,
+        # within what a rubber and a gap can be: a shift beyond (the other braid's pull on a
+        # natural rubber's small C01 share) is the refit stopped there, as the interval is
         moved = {**values, **{n: values[n] + d for n, d in shift.items()
                               if n in fitting.STATIC_NAMES}}
+        moved["c01_fraction"] = float(np.clip(moved["c01_fraction"],
+                                              *fitting.TERM_BOUNDS["c01_fraction"]))
+        if "gap_mm" in moved:
+            moved["gap_mm"] = max(moved["gap_mm"], 0.0)
         geometry = {g: (moved[g] if g in shift or g in names else inputs[g])
                     for g in fitting.GEOMETRY}
         return _force(spec, calibration, moved, pressure_bar, geometry["D0_mm"],

@@ -18,7 +18,8 @@
    the other braid) extend them.
 5. The rubber: C01's share fitted as well; C10 and C01 reported apart only where the runs
    separate them (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`; a rejected Silastic ratio
-   counts only with the braid known), else one scale and a note.
+   counts with the braid known, or when the other braid cannot follow the runs at it either:
+   :func:`other_braid_excess`), else one scale and a note.
 6. Leave-one-run-out (and one length out, for runs of several lengths): each run predicted by
    the FE model at the parameters fitted to the others, against the nominal model (the angle
    and rubber the runs declare, else the calibration's; no friction or creep).
@@ -635,10 +636,7 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
         terms["braid"] = {"skipped": "a gap is fitted, and a gap is modelled with the bonded "
                                      "braid only"}
     else:
-        current = dict(fe.spec.params).get("braid", BRAIDS[0])
-        other = next(b for b in BRAIDS if b != current)
-        alternative = ModelStatic(fe.spec.with_params(braid=other).text, fe.runner,
-                                  fe.cache_dir)
+        alternative = _other_braid(fe)
         fe_tables = fe_tables or fe.tables(runs, values)
         terms["braid"] = {
             "kind": "one-sided", "what": f"{alternative.name} minus {fe.name} at the optimum",
@@ -655,6 +653,32 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
     return terms
 
 
+def _other_braid(fe: ModelStatic) -> ModelStatic:
+    """``fe`` with the other braid of :data:`mkm.fem.options.BRAIDS`."""
+    current = dict(fe.spec.params).get("braid", BRAIDS[0])
+    other = next(b for b in BRAIDS if b != current)
+    return ModelStatic(fe.spec.with_params(braid=other).text, fe.runner, fe.cache_dir)
+
+
+def other_braid_excess(source, fe: ModelStatic, runs, one_scale, free) -> float:
+    """How far the fit at Silastic S's ratio (``one_scale``) refitted with the other braid
+    stays above the fit with the ratio free (``free``), in the units of the likelihood-ratio
+    test (the free fit's residual variance): the refit is linearised at ``one_scale``'s optimum
+    (one Gauss-Newton step, the other braid's change of the static force there; one FE sweep
+    per run and braid). At or below :data:`RATIO_LIKELIHOOD` the other braid explains the runs
+    as well as another ratio does."""
+    differences = _minus(_other_braid(fe).tables(runs, one_scale.values),
+                         fe.tables(runs, one_scale.values))
+    r = one_scale.weighted_residual + one_scale.w * _hold_change(source, runs, one_scale,
+                                                                 differences)
+    J = one_scale.weighted_jacobian
+    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
+    if usable.any():
+        r = r - J[:, usable] @ np.linalg.lstsq(J[:, usable], r, rcond=None)[0]
+    variance = free.rss / max(free.n - len(free.names), 1)
+    return float((np.sum(r**2) - free.rss) / variance)
+
+
 def _minus(tables, others) -> list[tuple]:
     """Per run: ``tables``' pressures and their force less ``others``' there."""
     return [(grid, F - fitting.static_force(grid, *other))
@@ -665,16 +689,23 @@ def _shift(source, runs, best, differences) -> dict[str, float]:
     """The refit's shift of ``best``'s parameters when the static force of each run changes by
     ``differences`` (per run: pressures and the change there): ``-(J'J)^-1 J' dr``, the change
     ``dr`` of the hold residuals through the friction and creep of each run's trace."""
-    base = fitting.traces(source, runs, best.values)
-    moved = fitting.traces(Corrected(source, differences), runs, best.values)
-    holds = [run.hold >= 0 for run in runs]
-    dr = np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds, strict=True)])
+    dr = _hold_change(source, runs, best, differences)
     J = best.weighted_jacobian
     usable = np.sqrt(np.sum(J**2, axis=0)) > 0
     step = np.zeros(len(best.names))
     if usable.any():
         step[usable] = -np.linalg.lstsq(J[:, usable], best.w * dr, rcond=None)[0]
     return {n: float(v) for n, v in zip(best.names, step, strict=True)}
+
+
+def _hold_change(source, runs, fit, differences) -> np.ndarray:
+    """The change of ``fit``'s hold residuals [N] when the static force of each run changes by
+    ``differences`` (per run: pressures and the change there), through the friction and creep
+    of each run's trace."""
+    base = fitting.traces(source, runs, fit.values)
+    moved = fitting.traces(Corrected(source, differences), runs, fit.values)
+    holds = [run.hold >= 0 for run in runs]
+    return np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds, strict=True)])
 
 
 def _outside_box(caught, what: str = "the fit with C01's share free",
@@ -773,6 +804,11 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     # sliding sleeve: C01 driven to 0): with the braid in doubt, a rejection alone is not a
     # measurement of the ratio
     braid_doubt = "shift" in terms.get("braid", {})
+    # ... unless the other braid at Silastic S's ratio cannot follow the runs as the ratio
+    # freed does: then the rejection stands whichever the braid (a natural rubber's ratio)
+    excess = (other_braid_excess(source, fe, runs, best, free) if rejected and braid_doubt
+              else None)
+    braid_doubt = braid_doubt and (excess is None or excess <= RATIO_LIKELIHOOD)
     separated = bool(boot["identifiable"]["c01_fraction"]
                      and (narrow or (rejected and not braid_doubt))
                      and condition < RATIO_CONDITION)
@@ -782,6 +818,7 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                         "searched_with": getattr(source, "base", source).name,
                         "rejects_silastic_ratio": rejected, "braid_in_doubt": braid_doubt,
                         "chi2_improvement": float(improvement),
+                        "other_braid_chi2_excess": excess,
                         "rule": f"C10 and C01 reported apart when the condition number of the "
                                 f"static parameters' normalised Fisher matrix is below "
                                 f"{RATIO_CONDITION:.0e} and the 95 % interval of C01/C10 lies "
@@ -790,7 +827,8 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                                 f"terms' shifts) and the fit with the ratio free lowers chi2 "
                                 f"by more than {RATIO_LIKELIHOOD:.2f} (the residuals' variance "
                                 f"its own); excluding it is not enough while the braid "
-                                f"is in doubt"}, terms
+                                f"is in doubt and the other braid at it lowers chi2 as "
+                                f"far, within {RATIO_LIKELIHOOD:.2f}"}, terms
 
 
 def _box_cut(rubber: dict) -> str:

@@ -39,12 +39,11 @@ from mkm.core.records import (
     write_json_atomic,
 )
 from mkm.fem.calibration import (
-    THRESHOLD_FLOOR_FRACTION,
     calibration_entry,
     check_reference,
     default_target,
     fit_theta0,
-    line_above_threshold,
+    has_slope,
     store_calibration,
 )
 from mkm.fem.ladder import MODELS
@@ -512,10 +511,16 @@ class Identification:
     def _rising(self) -> list:
         """The runs whose force rises above its threshold: a closed form's slope is fitted to
         these alone (a run slack at every pressure, as a published table's shortest length
-        is, has no slope to fit)."""
-        return [run for run in self.runs if line_above_threshold(
-            run.steps["pressure_bar_mean"], run.steps["force_N_mean"],
-            THRESHOLD_FLOOR_FRACTION * run.steps["force_N_mean"].max())[0] > 0]
+        is, has no slope to fit), judged on what the fit is given (:meth:`_reference`: the
+        turning point left out, so a run that pulls at its top step alone has none either)."""
+        rising = []
+        for run in self.runs:
+            try:
+                if has_slope(self._reference([run])):
+                    rising.append(run)
+            except ValueError:  # fewer than two pressures measured both ways
+                continue
+        return rising
 
     def _reference(self, runs=None) -> pd.DataFrame:
         """The settled steps of ``runs`` (default: every run) as a calibration reference (both

@@ -960,6 +960,90 @@ def test_mkm_recover_joins_kept_rows_after_a_gap_run_json_never_took(config, tmp
     assert not [p for p in run.problems if "samples counted" in p]
 
 
+def _stalled_refused_signalled(config, tmp_path, monkeypatch):
+    """A run that lost samples 40-339 to a 30 s stall against a 10 s buffer, whose folder went
+    read-only with the first block after it (samples.csv ends at 39, run.json refused to the
+    end), stopped by SIGTERM as that block is read; its process since ended, the folder taking
+    writes again: its result, the samples queued and its bench marker's kept outcome."""
+    import json
+    import signal
+
+    from mkm.bench import recorder
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.unvented import bench_folder
+
+    monkeypatch.setattr(recorder, "LOCKED_RETRY_S", 0.0)
+    c = config.replace(sim={"buffer_s": 10.0, "faults": {"stall_at_s": 4.0, "stall_s": 30.0}})
+    queued = _read_only_from_60(monkeypatch, first=340)
+    backend = SimBackend(c)
+    read = backend.read
+
+    def signalled_at_400(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 340:
+            signal.raise_signal(signal.SIGTERM)  # its handler runs before read returns
+        return block
+
+    backend.read = signalled_at_400
+    result = BenchRun(c, backend, tmp_path / "runs", handle_signals=True,
+                      notify=lambda m: None).execute()
+    monkeypatch.undo()
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    (marker,) = bench_folder("sim-Dev1").glob("*.json")
+    for written in (marker, result.path / "run.json"):  # as if its process had ended
+        data = json.loads(written.read_text(encoding="utf-8"))
+        data["process"]["started_unix_s"] -= 100.0
+        written.write_text(json.dumps(data), encoding="utf-8")
+    return result, queued, json.loads(marker.read_text(encoding="utf-8"))["outcome"]
+
+
+def test_a_refused_final_record_is_written_whole_next_and_recover_joins_after_its_gap(
+        config, tmp_path, monkeypatch, mkm_cli):
+    # run.json refused the final record of a run that lost 300 samples to a stall after its last
+    # write, was stopped by SIGTERM and verified its vent: the bench marker kept its status,
+    # reason, end and manual vent only, so the next command wrote run.json without the gap, the
+    # lost samples, the vent check or the signal (samples 340 on then looked contiguous with 39).
+    # Now the marker keeps the whole record and the next command writes it, counting the rows
+    # on disk; `mkm recover` then joins the kept rows after that gap, which run.json holds
+    import json
+    import signal
+
+    from mkm.bench import procedures
+
+    result, queued, kept = _stalled_refused_signalled(config, tmp_path, monkeypatch)
+    # exit 2: the storage's failure goes before the signal's
+    assert result.status == "aborted" and result.exit_code == 2
+    run_json = result.path / "run.json"
+    assert json.loads(run_json.read_text(encoding="utf-8"))["status"] == "running"
+    notes = []
+    assert procedures.vent(config, notify=notes.append)["vented"]
+    (said,) = notes
+    assert said.endswith("vented now; run.json mended: status aborted, 40 samples on disk")
+    run = load_run(result.path)
+    assert run.status == "aborted" and run.reason.startswith(kept["reason"])
+    assert "; this outcome was refused by run.json as the run ended, kept in its bench marker " \
+        "and written by the next command at " in run.reason
+    (gap,) = run.meta.gaps
+    assert (gap.after_sample, gap.lost_samples, gap.start_s, gap.end_s) == (39, 300, 4.0, 34.0)
+    assert run.meta.lost_samples == 300
+    assert run.meta.stop_signal == "SIGTERM" and run.meta.stop_signal_number == signal.SIGTERM
+    assert run.meta.vent_check == kept["vent_check"] and run.meta.vent_check["verified"]
+    assert run.meta.stop_to_vent_s == kept["stop_to_vent_s"] is not None
+    assert run.meta.counters["samples"] == len(run.samples) == 40  # samples 0-39 on disk
+    samples_csv = result.path / "samples.csv"
+    kept_csv = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    n = len(queued)
+    code, out, err = mkm_cli(["recover", str(result.path)])
+    assert (code, out) == (0, f"{result.path}\n") and err == (
+        f"mkm recover: note: samples 340-{queued[-1]} ({n - 40}) kept in {kept_csv} were joined "
+        f"to {samples_csv}; run.json counts {n} samples\n")  # the gap recorded already
+    run = load_run(result.path)
+    assert run.samples["sample"].tolist() == queued and queued[40] == 340
+    assert len(run.meta.gaps) == 1 and run.meta.lost_samples == 300
+    assert run.meta.counters["samples"] == n and run.meta.stop_signal == "SIGTERM"
+
+
 def test_mkm_recover_says_a_run_json_it_cannot_read_in_one_line(config, tmp_path,
                                                                 monkeypatch, mkm_cli):
     # run.json cannot be read (no permission): `mkm recover` said "run.json cannot be written
@@ -1014,6 +1098,59 @@ def test_mkm_recover_counts_rows_it_joined_once_run_json_takes_the_count(
     assert load_run(path).samples["sample"].tolist() == queued
     code, out, err = mkm_cli(["recover", str(path)])
     assert code == 2 and "are all in" in err and "nothing to join" in err
+
+
+@pytest.mark.parametrize("counted", [False, True])
+def test_mkm_recover_joined_before_says_the_gaps_it_records(config, tmp_path, monkeypatch,
+                                                            mkm_cli, counted):
+    # the kept rows after a gap run.json never held were joined, and run.json refused the count
+    # and the gap with it; asked again, `mkm recover` recorded the gap but said only that it
+    # counted the rows, and when run.json counted them already (a mend by an older version,
+    # from the rows on disk) it said there was nothing to join and left the gap out. Now it
+    # records the gap and says so, as a first join does
+    import json
+
+    import pandas as pd
+
+    import mkm.bench.storage as storage
+    from mkm.bench.run import acquire
+
+    c = config.replace(sim={"buffer_s": 10.0, "faults": {"stall_at_s": 4.0, "stall_s": 30.0}})
+    queued = _read_only_from_60(monkeypatch, first=340)
+    result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
+    monkeypatch.undo()
+    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
+    path, run_json = result.path, result.path / "run.json"
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    meta["process"]["started_unix_s"] -= 100.0  # its process has ended since
+    run_json.write_text(json.dumps(meta), encoding="utf-8")
+
+    def denied(*args, **kwargs):
+        raise PermissionError(errno.EACCES, "Permission denied")
+
+    with monkeypatch.context() as read_only:
+        read_only.setattr(storage, "write_json_atomic", denied)
+        code, out, err = mkm_cli(["recover", str(path)])
+    assert code == 1 and "but run.json could not count them (Permission denied)" in err
+    assert pd.read_csv(path / "samples.csv")["sample"].tolist() == queued
+    meta = json.loads(run_json.read_text(encoding="utf-8"))
+    assert meta["gaps"] == [] and meta["lost_samples"] == 0
+    n = len(queued)
+    if counted:
+        meta["counters"]["samples"] = n
+        run_json.write_text(json.dumps(meta), encoding="utf-8")
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{path.name}-samples.csv"
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert (code, out) == (0, f"{path}\n") and err == (
+        f"mkm recover: note: the samples kept in {kept} are all in {path / 'samples.csv'} "
+        "already, joined before, and the 1 gap(s) kept beside them (300 samples lost) "
+        f"recorded; run.json counts {n} samples\n")
+    run = load_run(path)
+    (gap,) = run.meta.gaps
+    assert (gap.after_sample, gap.lost_samples) == (39, 300) and run.meta.lost_samples == 300
+    assert run.meta.counters["samples"] == n
+    code, out, err = mkm_cli(["recover", str(path)])
+    assert code == 2 and "nothing to join" in err
 
 
 def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept(config,

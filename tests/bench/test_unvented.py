@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from mkm.bench.storage import ProcessIdentity
+from mkm.bench.storage import OUTCOME_FIELDS, ProcessIdentity
 from mkm.bench.unvented import BenchLease, bench_folder, find_unvented
 
 
@@ -396,3 +396,57 @@ def test_a_run_leaves_no_thread_behind(config, tmp_path):
     for thread in started:
         thread.join(max(waited - time.monotonic(), 0.0))
     assert not [t.name for t in started if t.is_alive()]
+
+
+@pytest.mark.parametrize("edit, whole", [
+    (lambda kept: kept, True),
+    (lambda kept: {k: kept[k] for k in OUTCOME_FIELDS}, False),  # an older version's marker
+    (lambda kept: {**kept, "gaps": [{"after_sample": "x"}]}, False),  # edited by hand
+    (lambda kept: {**kept, "started_utc": "2026-01-01T00:00:00+00:00"}, False),  # another run's
+], ids=["whole", "older", "invalid", "another-run"])
+def test_a_kept_record_not_whole_or_not_this_runs_is_written_as_its_outcome_alone(
+        config, tmp_path, monkeypatch, edit, whole):
+    # the bench marker keeps the whole final record a refused run.json was to hold, and the
+    # next command writes it; a marker of an older version (its outcome alone), one edited by
+    # hand or one whose record is another run's is written as its status, reason, end and
+    # manual vent over run.json, and said so. The next run records the dead run's outcome, not
+    # its whole record (that is in the dead run's own run.json)
+    import errno
+
+    from mkm.bench.run import acquire
+    from mkm.bench.storage import RunWriter, load_run
+
+    write = RunWriter.write_meta
+
+    def full_at_the_end(self, meta):
+        if meta.status != "running":
+            raise OSError(errno.ENOSPC, "No space left on device")
+        write(self, meta)
+
+    with monkeypatch.context() as full:
+        full.setattr(RunWriter, "write_meta", full_at_the_end)
+        dead = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    (path,) = bench_folder("sim-Dev1").glob("*.json")
+    data = json.loads(path.read_text())
+    kept = data["outcome"]
+    assert kept["vent_check"]["verified"] and kept["status"] == "complete"
+    data["outcome"] = edit(kept)
+    data["process"]["started_unix_s"] -= 100.0  # as if its process had died
+    path.write_text(json.dumps(data))
+    run_json = dead.path / "run.json"
+    record = json.loads(run_json.read_text())
+    assert record["status"] == "running" and record["vent_check"] is None
+    record["process"]["started_unix_s"] -= 100.0
+    run_json.write_text(json.dumps(record))
+    notes = []
+    after = acquire(config, out_root=tmp_path / "runs", notify=notes.append)
+    (said,) = [n for n in notes if "vented now" in n]
+    alone = "" if whole else " (its marker kept the outcome alone, not the whole record)"
+    assert said.endswith(f"vented now; run.json mended: status complete, "
+                         f"{len(load_run(dead.path).samples)} samples on disk{alone}")
+    mended = load_run(dead.path)
+    assert mended.status == "complete" and mended.reason.startswith(kept["reason"])
+    assert mended.meta.vent_check == (kept["vent_check"] if whole else None)
+    assert mended.meta.started_utc == record["started_utc"]
+    (noted,) = load_run(after.path).meta.unvented_before
+    assert noted["outcome"] == {k: kept[k] for k in OUTCOME_FIELDS}

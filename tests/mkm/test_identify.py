@@ -142,6 +142,14 @@ def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mk
     _, shipped, _ = mkm_run(argv)
     code, learnt, _ = mkm_run([*argv, "--calibration", str(out / "calibration.json")])
     assert code == 0 and learnt != shipped
+    # without --model it is still that muscle's model (Equation 2 was taken, silently: no
+    # threshold and no band), and a note says so
+    code, unnamed, said = mkm_run([*argv[:2], *argv[4:], "--calibration",
+                                   str(out / "calibration.json")])
+    assert code == 0 and unnamed == learnt
+    assert said.strip() == ("mkm fem solve: note: --model not given: thickwall, the model the "
+                            "muscle of --calibration was identified with (--model eq2 or another "
+                            "to predict with it)")
     expected = make_model("thickwall", theta0_deg=entry["theta0_deg"], C10_MPa=entry["C10_MPa"],
                           C01_MPa=entry["C01_MPa"]).predict(2.0, 30.0, 3.0, 0.1).force_N
     row = dict(zip(*(line.split(",") for line in learnt.strip().splitlines()), strict=True))
