@@ -238,21 +238,24 @@ IDENTIFIED_L0 = "default: the length of the muscle --calibration was identified 
 def identified_length(args, takes_L0: bool = True) -> None:
     """``args.L0`` the rest length of the muscle ``--calibration`` was identified on, where
     none was given and it was identified on one length (its angle and rubber, this command's
-    defaults, are that muscle's), said in a note; several lengths are named in a note and the
-    default length kept. Nothing for a predictor without a length (``takes_L0`` False)."""
+    defaults, are that muscle's), said in a note where it is not the default 282 mm; several
+    lengths are named in a note and the default length kept. Nothing for a predictor without a
+    length (``takes_L0`` False)."""
     if not takes_L0 or args.L0 is not None or args.calibration is None:
         return
+    from mkm.fem.paper import L0_MM
     from mkm.identify.band import identified_lengths
 
     lengths = identified_lengths(args.calibration)
     if len(lengths) == 1:
         args.L0 = lengths[0]
-        say(args, "note", f"L0 {lengths[0]:g} mm, the identified muscle's (--calibration); "
-            "--L0 for another length")
+        if lengths[0] != L0_MM:  # the default's own length needs no word
+            say(args, "note", f"L0 {lengths[0]:g} mm, the identified muscle's "
+                "(--calibration); --L0 for another length")
     elif lengths:
         *others, last = (f"{v:g}" for v in lengths)
         say(args, "note", f"the identified muscles are {', '.join(others)} and {last} mm long: "
-            "L0 is the default 282 mm; --L0 for one of those lengths")
+            f"L0 is the default {L0_MM:g} mm; --L0 for one of those lengths")
 
 
 def with_calibration(func):

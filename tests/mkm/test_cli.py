@@ -1307,6 +1307,12 @@ def test_solve_with_an_identified_calibration_takes_the_identified_muscles_lengt
         code, _, err = mkm_run([*solve, *given])
         assert code == 0 and "note: L0" not in err, err
         assert read_prediction_header(out)["params"]["L0_mm"] == 250.0
+    # a muscle identified at the default length: that length, without a word
+    record["thickwall"]["identified"]["runs"][0]["muscle"]["L0_mm"] = 282.0
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    code, _, err = mkm_run(solve)
+    assert code == 0 and "note: L0" not in err, err
+    assert read_prediction_header(out)["params"]["L0_mm"] == 282.0
     # Equation 2 records its length too; the shipped calibration identified no muscle
     code, _, err = mkm_run([*solve[:3], "eq2", *solve[4:-4], "--out", str(out)])
     assert code == 0 and "note: L0" not in err
