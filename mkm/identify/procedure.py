@@ -21,8 +21,8 @@
    counts with the braid known, or when the other braid cannot follow the runs at it either:
    :func:`other_braid_excess`), else one scale and a note.
 6. Leave-one-run-out (and one length out, for runs of several lengths): each run predicted by
-   the FE model at the parameters fitted to the others, against the nominal model (the
-   calibrated angle, Silastic S, no friction or creep).
+   the FE model at the parameters fitted to the others, against the nominal model (the angle
+   and rubber the runs declare, else the calibration's; no friction or creep).
 """
 
 from __future__ import annotations
@@ -124,7 +124,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         The FE prediction cache (:mod:`mkm.prediction_cache`): an identification repeated or
         interrupted solves only what it has not solved yet; None: no cache.
     calibration : Calibration, optional
-        Where the nominal muscle's angle comes from (None: the shipped one).
+        Where the nominal muscle's angle and rubber come from where the runs declare none
+        (None: the shipped one); what is not fitted stays at the nominal muscle's.
     braid : {"bonded", "sliding"}, optional
         The muscle's braid when it is known: the confirmation model takes it and no braid
         model-form term is added (:func:`model_form_terms`). None: ``model``'s own braid, and
@@ -273,9 +274,7 @@ def _covering_surrogate(runs, surrogate, notify) -> tuple[SurrogateStatic | None
 
 def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration,
               braid=None, start=None):
-    L0_mm = float(runs[0].muscle["L0_mm"])
-    nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
-                                     .params()["theta0_deg"])
+    nominal = fitting.nominal_muscle(fe.spec, runs, calibration)
     # a monitor's hysteresis where it is declared (its bound is half of that)
     names = [n for g in groups for n in GROUPS[g] if n != "pressure_hysteresis_bar"
              or min(r.monitor_hysteresis_bar for r in runs) > 0]
@@ -291,6 +290,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     declared = {n: float(runs[0].muscle[n]) for n in (*fitting.GEOMETRY, "L0_mm")}
     start = {**nominal, **{n: TERM_START.get(n, nominal.get(n, declared.get(n, 0.0)))
                            for n in names}, **(start or {})}
+    if "rubber_scale" in names:  # one scale on Silastic S's ratio, unless the runs separate it
+        start.pop("c01_fraction", None)
 
     notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
            f"of {len(runs)} run(s) with {source.name}")
@@ -338,17 +339,13 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             one_scale = best
             best, boot, terms = free, free_boot, free_terms
             ratio, (_, top) = rubber["ratio_C01_over_C10"], PRACTICAL_RANGE.C01_per_C10
-            share, (low, _) = free.values["c01_fraction"], free.bounds["c01_fraction"]
+            share = free.values["c01_fraction"]
             if fitting.at_edge(share, free.bounds["c01_fraction"]):
                 # a Festo membrane pushes it to 9, a bench error the model absorbs so to 0:
                 # fits best there, but the edge set the number, and the bootstrap collapsed on
                 # it: the intervals hold the fit at Silastic S's ratio too
                 terms = {**terms, "ratio_edge": ratio_edge_term(one_scale, free)}
-                want = ("no C01 (a neo-Hookean rubber, or an error the model takes for one)"
-                        if share <= low else "more of C01 than the box allows")
-                notes.append(f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs "
-                             f"want {want}, so the ratio is the edge's, not measured: the "
-                             "intervals hold the fit at Silastic S's ratio too")
+                notes.append(ratio_edge_note(ratio, share, free.bounds["c01_fraction"]))
             if ratio > top:
                 notes.append(f"the identified rubber's C01/C10 {ratio:.3g} is above the "
                              f"practical range's {top:g} (`mkm models`): every model "
@@ -523,6 +520,17 @@ def _rest_length_hint(runs, fe, best, fitness, groups) -> list[str]:
 
 def _rms(r) -> float:
     return float(np.sqrt(np.mean(np.square(r))))
+
+
+def ratio_edge_note(ratio: float, share: float, bounds: tuple[float, float]) -> str:
+    """The note on C01's share ``share`` fitted at an edge of its search ``bounds`` (the ratio
+    C01/C10 ``ratio``): which edge, so what the runs want."""
+    low, high = bounds
+    want = ("no C01 (a neo-Hookean rubber, or an error the model takes for one)"
+            if share - low <= high - share else "more of C01 than the box allows")
+    return (f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs want {want}, so "
+            "the ratio is the edge's, not measured: the intervals hold the fit at Silastic S's "
+            "ratio too")
 
 
 def _select(source, runs, names, start, nominal):
