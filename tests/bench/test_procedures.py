@@ -136,8 +136,8 @@ def test_a_tare_on_one_adc_code_is_said_so(config, tmp_path):
 
 
 def test_check_lists_device_steps_and_duration(config):
-    text, warnings = check(config)
-    assert warnings == []
+    text, warnings, refusal = check(config)
+    assert warnings == [] and refusal == ""
     assert "backend: sim (SIMULATED: no hardware is driven)" in text
     assert "USB-6001 (simulated)" in text and "interlock at 1765.2 N" in text
     assert ("planned steps: 3\n  repeat 1, up: 0.5, 1 bar\n  repeat 1, down: 0.5 bar") in text
