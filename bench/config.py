@@ -294,6 +294,11 @@ class Regulator:
         span = self.monitor_V_at_full_scale - self.monitor_V_at_zero
         return (np.asarray(volts) - self.monitor_V_at_zero) / span * self.full_scale_bar
 
+    def monitor_volts(self, pressure_bar):
+        """The monitor output [V] that reads ``pressure_bar`` (:meth:`monitor_bar`'s inverse)."""
+        span = self.monitor_V_at_full_scale - self.monitor_V_at_zero
+        return self.monitor_V_at_zero + np.asarray(pressure_bar) / self.full_scale_bar * span
+
     def monitor_fault(self, volts: float) -> str | None:
         """What is wrong with a monitor reading no working regulator gives, or None.
 

@@ -43,6 +43,7 @@ from mkm.bench.run import (
     with_backend,
 )
 from mkm.bench.sequence import (
+    TareInvalid,
     check_vented_monitor,
     monitor_zero_warning,
     one_code_warning,
@@ -129,15 +130,33 @@ def tare(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     with session(device, "tare") as info:
-        bounded = _Bounded(device, config.daq.sample_rate_hz)
-        bounded.start()
-        volts = mean_volts(bounded, config, seconds)
+        volts = _read_vented(device, config, seconds)
+    out = at_rest(volts, config)
+    return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict()}
+
+
+def _read_vented(device: Backend, config: BenchConfig, seconds: float) -> np.ndarray:
+    """``seconds`` of every input, read vented in a session's open device, each driver call
+    bounded (:class:`_Bounded`)."""
+    bounded = _Bounded(device, config.daq.sample_rate_hz)
+    bounded.start()
+    return mean_volts(bounded, config, seconds)
+
+
+#: the warnings of :func:`at_rest`, by their keys
+AT_REST_WARNINGS = ("settle_warning", "one_code_warning", "rest_warning", "monitor_warning")
+
+
+def at_rest(volts: np.ndarray, config: BenchConfig) -> dict:
+    """What a run's tare finds in ``volts`` read vented (the load cell's first, the monitor's
+    second): :func:`mkm.bench.sequence.validate_tare`, the monitor's vented zero, and the
+    warnings :data:`AT_REST_WARNINGS` ("" where none); ``TareInvalid`` where it would stop the
+    run."""
     out = validate_tare(volts[:, 0], config)
     if config.regulator.electronic:
         out.update(vented_monitor(config.regulator.monitor_bar(volts[:, 1])))
         check_vented_monitor(out, config)  # as a run's tare: it would stop the run
-    return {**out, "shift_from_config_N": out["shift_N"], "device": info.as_dict(),
-            "settle_warning": settle_warning(out["std_N"], config),
+    return {**out, "settle_warning": settle_warning(out["std_N"], config),
             "one_code_warning": one_code_warning(out, config),
             "rest_warning": rest_warning(out, config),
             "monitor_warning": monitor_zero_warning(out, config)}
@@ -557,14 +576,20 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
 
 
 def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
-          ) -> tuple[str, list[str]]:
-    """Dry run: device information, limits, the planned steps, the estimated duration and the
-    expected uncertainty budget (:func:`expected_budget_lines`); and the warnings of
-    :func:`mkm.bench.preflight.warnings` (braid lock, load cell)."""
+          ) -> tuple[str, list[str], str]:
+    """Dry run: device information, limits, the bench read at rest, vented, as a run's tare
+    reads it (``sequence.tare_s``: :func:`at_rest`), the planned steps, the estimated duration
+    and the expected uncertainty budget (:func:`expected_budget_lines`); the warnings of
+    :func:`mkm.bench.preflight.warnings` (braid lock, load cell) and of the reading at rest; and
+    why a run's tare would refuse the bench as it is ("" when it would not)."""
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     with session(device, "check") as info:
-        pass
+        volts = _read_vented(device, config, config.sequence.tare_s)
+    try:
+        rest, refusal = at_rest(volts, config), ""
+    except TareInvalid as exc:
+        rest, refusal = {}, str(exc)
     shortest, longest = estimate_duration_s(config)
     m, cell, reg = config.muscle, config.loadcell, config.regulator
     lines = [
@@ -579,6 +604,7 @@ def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual
         f"regulator: {reg.kind}, commands clamped to {reg.max_pressure_bar:g} bar",
         f"load cell: capacity {cell.capacity_N:g} N, {cell.sensitivity_N_per_V:g} N/V, "
         f"interlock at {config.force_limit_N:g} N",
+        *_rest_lines(rest, config),
         f"sequence: tare {config.sequence.tare_s:g} s, "
         f"{config.sequence.preconditioning_cycles} pre-conditioning cycle(s), "
         f"{config.sequence.repeats} repeat(s)",
@@ -587,7 +613,19 @@ def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual
         f"sequence.max_duration_h = {config.sequence.max_duration_h:g} h)",
         *expected_budget_lines(config),
     ]
-    return "\n".join(lines), warnings(config)
+    found = [rest[key] for key in AT_REST_WARNINGS if rest.get(key)]
+    return "\n".join(lines), [*warnings(config), *found], refusal
+
+
+def _rest_lines(rest: dict, config: BenchConfig) -> list[str]:
+    """The reading at rest (:func:`at_rest`) in words, or none when the tare refused it."""
+    if not rest:
+        return []
+    monitor = (f", the pressure monitor {rest['monitor_vented_bar']:+.4f} bar"
+               if "monitor_vented_bar" in rest else "")
+    return [f"at rest, vented ({config.sequence.tare_s:g} s, as a run's tare): the load cell "
+            f"{rest['shift_N']:+.2f} N from loadcell.offset_V, spread {rest['std_N']:.2f} N "
+            f"rms{monitor}"]
 
 
 def _plan_lines(steps) -> list[str]:

@@ -96,8 +96,8 @@ def monitor_zero_warning(tare: dict, config: BenchConfig) -> str:
         return ""
     return (f"the pressure monitor reads {mean:+.4f} bar vented, beyond the +-{bound:g} bar its "
             "configuration declares ([regulator] monitor_accuracy_bar or its components): its "
-            "zero is off, or the muscle is not open to the air; every pressure of this run is "
-            "read from that zero")
+            f"zero is off ({_zero_said(mean, config)}), or the muscle is not open to the air; "
+            "every pressure of this run is read from that zero")
 
 
 class TareInvalid(BenchError):
@@ -114,8 +114,23 @@ def check_vented_monitor(tare: dict, config: BenchConfig) -> None:
     if mean is not None and abs(mean) > below:
         raise TareInvalid(f"tare invalid: the pressure monitor reads {mean:+.3f} bar with the "
                           f"regulator vented, beyond safety.vent_below_bar={below:g}: it cannot "
-                          "verify a vent (its zero is off, its wiring or scaling is wrong, or the "
-                          "muscle is not open to the air); nothing was pressurised")
+                          f"verify a vent (its zero is off: {_zero_said(mean, config)}; its "
+                          "wiring or scaling is wrong, or the muscle is not open to the air); "
+                          "nothing was pressurised")
+
+
+def _zero_said(vented_bar: float, config: BenchConfig) -> str:
+    """The volts the monitor gives vented against the configured zero's, and the setting that
+    takes them, for a muscle known open to the air."""
+    regulator = config.regulator
+    said = (f"it gives {float(regulator.monitor_volts(vented_bar)):.4g} V vented, "
+            f"[regulator] monitor_V_at_zero = {regulator.monitor_V_at_zero:g} V; with the "
+            "muscle open to the air, set monitor_V_at_zero to what it gives")
+    offset = config.sim.truth.monitor_offset_bar if config.simulated else None
+    # the simulated sensor reads its truth through the declared scaling: no zero declared
+    # takes its offset away
+    return said + (f" (simulated: [sim.truth] monitor_offset_bar = {offset:g} bar moves any "
+                   "zero declared)" if offset else "")
 
 
 def validate_tare(cell_V, config: BenchConfig) -> dict:

@@ -133,9 +133,13 @@ class _Run:
     def predicted(self) -> Muscle:
         """The muscle the models predict: the run's, with the wall and diameter the
         calibration identified where it identified them on this muscle (its braid angle and
-        rubber were fitted together with them: with the declared wall they miss its own runs)."""
-        fitted = _identified_geometry(self.calibration, self.muscle)
-        return dataclasses.replace(self.muscle, **fitted) if fitted else self.muscle
+        rubber were fitted together with them: with the declared wall they miss its own runs),
+        and the angle and rubber it declares left to the calibration there (each model takes
+        its own entry, fitted on this muscle's runs)."""
+        if not _identified_muscle(self.calibration, self.muscle):
+            return self.muscle
+        return dataclasses.replace(self.muscle, **_identified_geometry(
+            self.calibration, self.muscle), **dict.fromkeys(DECLARED_MATERIAL))
 
     @property
     def eps_pct(self) -> float:
@@ -709,10 +713,15 @@ def _run_section(r: _Run, out: Path, names: dict, colours: dict, prov: dict) -> 
     source = "From run.json. " + provenance_links(r.keys[:1])
     identified = {f"{k} identified (the models')": v for k, v in
                   _identified_geometry(r.calibration, muscle).items()}
+    replaced = [k for k in DECLARED_MATERIAL if getattr(muscle, k) is not None
+                and _identified_muscle(r.calibration, muscle)]
     tables = [mapping_table(muscle.record() | {"eps [%]": r.eps_pct} | identified, "Muscle",
                             source + (" The models predict with the wall, diameter or rest "
                                       "length the calibration identified (eps at it: the held "
-                                      "length kept)." if identified else "")),
+                                      "length kept)." if identified else "")
+                            + (f" The models take {', '.join(replaced)} from the calibration, "
+                               "identified on this muscle, not the declared one(s)."
+                               if replaced else "")),
               mapping_table(hardware, "Hardware", source),
               mapping_table(meta.get("calibration") or {}, "Calibration", source),
               mapping_table(meta.get("tare") or {}, "Tare at 0 bar", source)]
@@ -1132,18 +1141,31 @@ def _identified_runs(calibration: Calibration | None) -> list[dict]:
     return [r for r in runs if isinstance(r, dict)] if isinstance(runs, list) else []
 
 
+#: what a run may declare of its muscle's material that a calibration identified on it replaces
+DECLARED_MATERIAL = ("theta0_deg", "C10_MPa", "C01_MPa")
+
+
+def _identified_muscle(calibration: Calibration | None, muscle: Muscle) -> bool:
+    """Whether ``calibration`` was identified (``mkm identify``) on ``muscle`` as run.json
+    declares it (its id, diameter, wall and rest length)."""
+    from mkm.identify.band import identified_entry
+
+    found = identified_entry(calibration) if calibration is not None else None
+    declared = [r.get("muscle") or {} for r in _identified_runs(calibration)]
+    return bool(found) and any(m.get("id") == muscle.id and all(
+        math.isclose(float(m.get(k, math.nan)), getattr(muscle, k), rel_tol=1e-9)
+        for k in ("D0_mm", "t0_mm", "L0_mm")) for m in declared)
+
+
 def _identified_geometry(calibration: Calibration | None, muscle: Muscle) -> dict[str, float]:
     """The wall, diameter and rest length [mm] ``mkm identify --params t0,D0,L0`` fitted, when
     ``muscle`` (as run.json declares it) is the one it fitted them on (with a fitted rest
     length, the run's ``eps`` at it: its held length kept); empty otherwise."""
     from mkm.identify.band import identified_entry
 
-    found = identified_entry(calibration) if calibration is not None else None
-    declared = [r.get("muscle") or {} for r in _identified_runs(calibration)]
-    if not found or not any(m.get("id") == muscle.id and all(
-            math.isclose(float(m.get(k, math.nan)), getattr(muscle, k), rel_tol=1e-9)
-            for k in ("D0_mm", "t0_mm", "L0_mm")) for m in declared):
+    if not _identified_muscle(calibration, muscle):
         return {}
+    found = identified_entry(calibration)
     fitted = {p["parameter"]: float(p["value"]) for p in found[1]["identified"].get(
         "parameters", []) if p.get("parameter") in ("D0_mm", "t0_mm", "L0_mm")
         and p.get("status") == "fitted"}

@@ -61,11 +61,13 @@ def nominal_parameters(model: ForceModel, D0_mm: float, t0_mm: float, eps: float
 
         theta = calibrated(model.calibration_key,
                            getattr(model, "calibration", None))["theta0_deg"]
+    def given(name: str, default: float) -> float:  # a C01 of 0 (neo-Hookean) is given
+        return float(default if params.get(name) is None else params[name])
+
     return {"D0_mm": np.asarray(D0_mm, dtype=float), "t0_mm": np.asarray(t0_mm, dtype=float),
-            "eps": float(eps),
-            "L0_mm": float(params.get("L0_mm") or L0_MM), "theta0_deg": float(theta),
-            "C10_MPa": float(params.get("C10_MPa") or SILASTIC_S.C10_MPa),
-            "C01_MPa": float(params.get("C01_MPa") or SILASTIC_S.C01_MPa)}
+            "eps": float(eps), "L0_mm": given("L0_mm", L0_MM), "theta0_deg": float(theta),
+            "C10_MPa": given("C10_MPa", SILASTIC_S.C10_MPa),
+            "C01_MPa": given("C01_MPa", SILASTIC_S.C01_MPa)}
 
 
 def force_band(model: ForceModel, pressure_bar, D0_mm: float, t0_mm: float, eps: float,

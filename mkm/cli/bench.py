@@ -325,12 +325,15 @@ def _check(args) -> int:
         return 0
     config = _config(args, eps=args.eps, pressures_bar=_staircase(args))
     try:
-        text, warnings = check(config)
+        text, warnings, refusal = check(config)
     except BenchError as exc:
         return _failed(args, exc)
     print(text)
     for warning in warnings:  # once, on stderr only
         say(args, "warning", warning)
+    if refusal:  # the last line: what stops the run, not "ready"
+        say(args, "error", f"{refusal}; `mkm acquire` would stop at its tare: fix this first")
+        return EXIT_FAILED
     # the last line a newcomer reads: what was checked and what to do next
     what = ("the simulated device answered (no hardware driven)" if config.simulated
             else "the device answered")

@@ -193,11 +193,11 @@ def choices(model: str, parameter: str) -> tuple[str, ...]:
 
 
 def add_model_arguments(parser, theta0: bool = True, models: tuple[str, ...] | None = None,
-                        default: str | None = "eq2", default_said: str = "%(default)s"
-                        ) -> None:
+                        default: str | None = "eq2", default_said: str = "%(default)s",
+                        L0_default: str = "default 282") -> None:
     """``--model`` and the options that set its parameters; ``models``: the registered names
     the command takes (default: every one); ``default`` None leaves the command to choose it
-    (``default_said`` says how)."""
+    (``default_said`` says how); ``L0_default``: what --help says of --L0's."""
     names = models or tuple(entries())
     parser.add_argument("--model", default=default, help=f"predictor spec: one of "
                         f"{', '.join(names)}, with :key=value parameters (see `mkm models`); "
@@ -208,7 +208,7 @@ def add_model_arguments(parser, theta0: bool = True, models: tuple[str, ...] | N
     parser.add_argument("--diameter", choices=choices("eq2", "diameter"),
                         help="eq2 only: diameter convention (default inner, as the paper)")
     parser.add_argument("--L0", type=argtype(parse_within, "--L0", "L0_mm"),
-                        help=shared_help("--L0", "default 282"))
+                        help=shared_help("--L0", L0_default))
     parser.add_argument("--mesh", choices=choices("axisym", "mesh"),
                         help="axisym only: FE mesh level (default medium)")
     parser.add_argument("--braid", choices=choices("axisym", "braid"),
@@ -229,6 +229,33 @@ def add_calibration_argument(parser) -> None:
                         "file of `mkm fem calibrate --out FILE`: the default theta0 (and rubber) "
                         "of every physics model in this command (default: the one shipped in "
                         "the package, mkm/fem/calibration.json)")
+
+
+#: the default of --L0 where a --calibration may give it (:func:`identified_length`)
+IDENTIFIED_L0 = "default: the length of the muscle --calibration was identified on, else 282"
+
+
+def identified_length(args, takes_L0: bool = True) -> None:
+    """``args.L0`` the rest length of the muscle ``--calibration`` was identified on, where
+    none was given and it was identified on one length (its angle and rubber, this command's
+    defaults, are that muscle's), said in a note where it is not the default 282 mm; several
+    lengths are named in a note and the default length kept. Nothing for a predictor without a
+    length (``takes_L0`` False)."""
+    if not takes_L0 or args.L0 is not None or args.calibration is None:
+        return
+    from mkm.fem.paper import L0_MM
+    from mkm.identify.band import identified_lengths
+
+    lengths = identified_lengths(args.calibration)
+    if len(lengths) == 1:
+        args.L0 = lengths[0]
+        if lengths[0] != L0_MM:  # the default's own length needs no word
+            say(args, "note", f"L0 {lengths[0]:g} mm, the identified muscle's "
+                "(--calibration); --L0 for another length")
+    elif lengths:
+        *others, last = (f"{v:g}" for v in lengths)
+        say(args, "note", f"the identified muscles are {', '.join(others)} and {last} mm long: "
+            f"L0 is the default {L0_MM:g} mm; --L0 for one of those lengths")
 
 
 def with_calibration(func):

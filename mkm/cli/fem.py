@@ -6,6 +6,7 @@ import argparse
 import sys
 
 from mkm.cli.common import (
+    IDENTIFIED_L0,
     add_batch_arguments,
     add_calibration_argument,
     add_geometry_arguments,
@@ -15,6 +16,7 @@ from mkm.cli.common import (
     choices,
     derived_help,
     emit_prediction,
+    identified_length,
     model_from_args,
     parse_within,
     say,
@@ -44,7 +46,8 @@ def register(subparsers) -> None:
         "--pressures 0:2.5:0.5")
     add_model_arguments(solve, default=None, default_said=(
         f"{DEFAULT_SOLVE_MODEL}, or with --calibration of a muscle `mkm identify` wrote, the "
-        "model it was identified with (its 95 %% band beside the force)"))
+        "model it was identified with (its 95 %% band beside the force)"),
+        L0_default=IDENTIFIED_L0)
     add_geometry_arguments(solve)
     solve.add_argument("--out", help="write the CSV here instead of stdout")
     solve.add_argument("--tolerance", type=argtype(parse_tolerance, "--tolerance"),
@@ -188,6 +191,8 @@ def _solve_model(args) -> str:
 def _solve(args) -> int:
     args.pressures, args.eps = sweep_grid(args.pressures, args.eps)
     args.model = _solve_model(args)
+    spec = spec_from_args(args)
+    identified_length(args, "L0_mm" in spec.entry.parameters and "L0_mm" not in dict(spec.params))
     model = model_from_args(args)
     prediction = model.predict(args.pressures, args.D0, args.t0, args.eps)
     if args.calibration is not None:  # an identified muscle's: its 95 % band beside the force

@@ -28,7 +28,8 @@ def _params_help() -> str:
             "pressure monitor's, within its declared accuracy; gap needs --model thickwall or "
             "axisym; L0, the rest length, for runs of one length whose table may start already "
             "shortened: each run's eps follows from its held length; zero, the load cell's zero "
-            "(a tare left out, a drift), one for every run)")
+            "(a tare left out, a drift), one for every run; theta0 or rubber left out: the "
+            "angle and rubber the runs declare, else the calibration's)")
 
 
 def register(subparsers) -> None:

@@ -7,6 +7,7 @@ import warnings
 from pathlib import Path
 
 from mkm.cli.common import (
+    IDENTIFIED_L0,
     add_batch_arguments,
     add_calibration_argument,
     add_geometry_arguments,
@@ -14,6 +15,7 @@ from mkm.cli.common import (
     argtype,
     choices,
     emit_prediction,
+    identified_length,
     parse_within,
     say,
     shared_help,
@@ -209,7 +211,7 @@ def _sub_box(text: str) -> dict:
 
 def _parameter_arguments(parser) -> None:
     parser.add_argument("--L0", type=argtype(parse_within, "--L0", "L0_mm"),
-                        help=shared_help("--L0", "default 282"))
+                        help=shared_help("--L0", IDENTIFIED_L0))
     parser.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                         help=shared_help("--theta0", "default: calibrated"))
     parser.add_argument("--C10", type=argtype(parse_within, "--C10", "C10_MPa"),
@@ -308,6 +310,7 @@ def _predict(args) -> int:
     from mkm.surrogate.model import UNINFORMED
 
     args.pressures, args.eps = sweep_grid(args.pressures, args.eps)
+    identified_length(args)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         model = _load(args.model, args.calibration, args.accept_mismatch, not args.no_progress,

@@ -138,7 +138,7 @@ class Search:
     #: the radial gap between tube and braid of the muscles as built [mm] (0: none)
     gap_mm: float = 0.0
     #: where the length searched came from when no L0 was given and ``calibration`` holds an
-    #: identified muscle (:func:`identified_lengths`), else ""
+    #: identified muscle (:func:`mkm.identify.band.identified_lengths`), else ""
     length_note: str = ""
 
     @property
@@ -366,23 +366,6 @@ def _distinct_rubbers(constraints: Constraints, calibration: Calibration | None
             f"rubber {', '.join(same)} here (the same C10 and C01): searched once")
 
 
-def identified_lengths(calibration: Calibration | None) -> list[float]:
-    """The rest lengths [mm] of the muscle ``calibration`` was identified on (``mkm identify``
-    records its runs): the fitted one (``--params L0``), else the runs' declared ones, each
-    once; empty for the shipped calibration or one that records none."""
-    from mkm.identify.band import identified_entry
-
-    found = identified_entry(calibration) if calibration is not None else None
-    if found is None:
-        return []
-    record = found[1]["identified"]
-    fitted = [float(p["value"]) for p in record.get("parameters", [])
-              if p.get("parameter") == "L0_mm" and p.get("status") == "fitted"
-              and p.get("value") is not None]
-    declared = [(r.get("muscle") or {}).get("L0_mm") for r in record.get("runs", [])]
-    return fitted[:1] or list(dict.fromkeys(float(v) for v in declared if v is not None))
-
-
 def _identified_length(constraints: Constraints, calibration: Calibration | None
                        ) -> tuple[Constraints, str]:
     """``constraints`` with L0 the identified muscle's where none was given and the
@@ -390,6 +373,8 @@ def _identified_length(constraints: Constraints, calibration: Calibration | None
     defaults, are that muscle's), and the note that says so; with several lengths, the
     constraints as they are and the note naming them; "" where the calibration records
     none."""
+    from mkm.identify.band import identified_lengths
+
     lengths = [] if constraints.L0_mm is not None else identified_lengths(calibration)
     if len(lengths) == 1:
         return (replace(constraints, L0_mm=(lengths[0],) * 2),

@@ -57,6 +57,21 @@ def identified_entry(calibration) -> tuple[str, dict] | None:
                  if "identified" in entry), None)
 
 
+def identified_lengths(calibration) -> list[float]:
+    """The rest lengths [mm] of the muscle ``calibration`` was identified on (``mkm identify``
+    records its runs): the fitted one (``--params L0``), else the runs' declared ones, each
+    once; empty for the shipped calibration or one that records none."""
+    found = identified_entry(calibration) if calibration is not None else None
+    if found is None:
+        return []
+    record = found[1]["identified"]
+    fitted = [float(p["value"]) for p in record.get("parameters", [])
+              if p.get("parameter") == "L0_mm" and p.get("status") == "fitted"
+              and p.get("value") is not None]
+    declared = [(r.get("muscle") or {}).get("L0_mm") for r in record.get("runs", [])]
+    return fitted[:1] or list(dict.fromkeys(float(v) for v in declared if v is not None))
+
+
 def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps):
     """The 95 % half-width [N] of each force ``force_N`` the model of ``spec`` (a
     :class:`mkm.registry.Spec`) predicted with ``calibration`` at the inputs; None where the
@@ -71,8 +86,9 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps)
         return None
     band = entry["identified"]["band"]
     names, covariance = band["parameters"], np.asarray(band["covariance"], dtype=float)
-    values = {**fitting.nominal_values(entry["theta0_deg"]),
-              "c01_fraction": fitting.SILASTIC_C01_FRACTION,
+    values = {"c01_fraction": fitting.SILASTIC_C01_FRACTION,
+              **fitting.nominal_values(entry["theta0_deg"], entry.get("C10_MPa"),
+                                       entry.get("C01_MPa")),
               **dict(zip(names, band["values"], strict=True))}
     inputs = {"D0_mm": D0_mm, "t0_mm": t0_mm}
 

@@ -121,12 +121,8 @@ def full_parameters(values: dict[str, float]) -> dict[str, float]:
 
 def internal_values(values: dict[str, float]) -> dict[str, float]:
     """The internal parameters from the toolkit's names (:func:`full_parameters`'s inverse)."""
-    total = values["C10_MPa"] + values["C01_MPa"]
-    share = values["C01_MPa"] / total
-    ratio = {} if math.isclose(share, SILASTIC_C01_FRACTION, rel_tol=1e-5) else {
-        "c01_fraction": share}
     return {"theta0_deg": values["theta0_deg"],
-            "rubber_scale": total / (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa), **ratio,
+            **internal_rubber(values["C10_MPa"], values["C01_MPa"]),
             "hysteresis_fraction": values["hysteresis_fraction"],
             "creep_fraction": values["creep_fraction"],
             "log_tau": math.log(values["creep_tau_s"]), **_optional(values)}
@@ -423,12 +419,47 @@ class Fit:
         return self.n * math.log(self.rss / self.n) + len(self.names) * math.log(self.n)
 
 
-def nominal_values(theta0_deg: float) -> dict[str, float]:
-    """The nominal muscle: the calibrated angle, Silastic S, no friction, no creep."""
-    return {"theta0_deg": float(theta0_deg), "rubber_scale": 1.0,
+def nominal_values(theta0_deg: float, C10_MPa: float | None = None,
+                   C01_MPa: float | None = None) -> dict[str, float]:
+    """The nominal muscle: the angle, the rubber (Silastic S where not given), no friction, no
+    creep."""
+    return {"theta0_deg": float(theta0_deg),
+            **(internal_rubber(C10_MPa, C01_MPa) if C10_MPa is not None and C01_MPa is not None
+               else {"rubber_scale": 1.0}),
             "hysteresis_fraction": TERM_DEFAULTS["hysteresis_fraction"],
             "creep_fraction": TERM_DEFAULTS["creep_fraction"],
             "log_tau": math.log(TERM_DEFAULTS["creep_tau_s"])}
+
+
+def internal_rubber(C10_MPa: float, C01_MPa: float) -> dict[str, float]:
+    """``rubber_scale`` and, where not Silastic S's, ``c01_fraction`` of a rubber."""
+    total = C10_MPa + C01_MPa
+    share = C01_MPa / total
+    return {"rubber_scale": total / (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa),
+            **({} if math.isclose(share, SILASTIC_C01_FRACTION, rel_tol=1e-5) else {
+                "c01_fraction": share})}
+
+
+#: what a run may declare of its muscle that the nominal model takes (run.json's ``muscle``)
+DECLARED = ("theta0_deg", "C10_MPa", "C01_MPa")
+
+
+def declared(runs, name: str) -> float | None:
+    """The value of ``name`` every run declares alike (run.json's ``muscle``); None where one
+    declares none or two differ."""
+    values = {run.muscle.get(name) for run in runs}
+    return float(values.pop()) if len(values) == 1 and None not in values else None
+
+
+def nominal_muscle(spec, runs, calibration=None) -> dict[str, float]:
+    """The nominal muscle of ``runs`` for the model ``spec`` (a :class:`mkm.registry.Spec`):
+    the braid angle and rubber the runs declare, as the report's models take them
+    (:meth:`mkm.fem.muscle.Muscle.model_parameters`), else ``calibration``'s (None: the shipped
+    one); no friction, no creep."""
+    known = {n: v for n in DECLARED if (v := declared(runs, n)) is not None}
+    params = spec.with_params(L0_mm=float(runs[0].muscle["L0_mm"]), **known).build(
+        calibration).params()
+    return nominal_values(params["theta0_deg"], params.get("C10_MPa"), params.get("C01_MPa"))
 
 
 def weights(runs) -> list[np.ndarray]:

@@ -3,9 +3,10 @@
 ``mkm report RUN... --calibration DIR/calibration.json`` (a file ``mkm identify`` wrote) shows
 the parameters with their intervals and what the runs could not tell; for each run of the report
 the measured rising and falling steps with both branches the identified muscle predicts, the
-hysteresis width per step, and the residuals before (the nominal model: the shipped calibration,
-Silastic S, no friction or creep) and after identification; the identified muscle's threshold
-pressure at each run's eps against the measured one
+hysteresis width per step, and the residuals before (the nominal model: the angle and rubber
+the runs declare, else the shipped calibration's, no friction or creep) and after
+identification; the identified muscle's threshold pressure at each run's eps against the
+measured one
 (:func:`mkm.identify.goodness.threshold_row`). The held-out check of the identification's own
 runs comes first: the honest predictive error. Without an identified muscle in the
 calibration, the section is empty.
@@ -77,10 +78,10 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
         **{k: entry.get(k, DEFAULTS[k]) for k in DEFAULTS},
         **({"gap_mm": entry["gap_mm"]} if "gap_mm" in entry else {}),
         **{k: fitted[k] for k in fitting.OPTIONAL if k in fitted and k != "gap_mm"}})
-    nominal = fitting.nominal_values(Calibration.shipped().entry(key)["theta0_deg"])
     rows, thresholds = [], []
     runs = [load_run_data(p) for p in run_dirs]
     static = fitting.ModelStatic(spec)
+    nominal = fitting.nominal_muscle(static.spec, runs, Calibration.shipped())
     for k, run in enumerate(runs, start=1):
         after = fitting.step_predictions(static, [run], identified)[0]
         before = fitting.step_predictions(static, [run], nominal)[0]

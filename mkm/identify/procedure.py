@@ -21,12 +21,13 @@
    counts with the braid known, or when the other braid cannot follow the runs at it either:
    :func:`other_braid_excess`), else one scale and a note.
 6. Leave-one-run-out (and one length out, for runs of several lengths): each run predicted by
-   the FE model at the parameters fitted to the others, against the nominal model (the
-   calibrated angle, Silastic S, no friction or creep).
+   the FE model at the parameters fitted to the others, against the nominal model (the angle
+   and rubber the runs declare, else the calibration's; no friction or creep).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import time
 import warnings
@@ -123,7 +124,8 @@ def identify(run_dirs, params: str | None = None, model: str = "axisym",
         The FE prediction cache (:mod:`mkm.prediction_cache`): an identification repeated or
         interrupted solves only what it has not solved yet; None: no cache.
     calibration : Calibration, optional
-        Where the nominal muscle's angle comes from (None: the shipped one).
+        Where the nominal muscle's angle and rubber come from where the runs declare none
+        (None: the shipped one); what is not fitted stays at the nominal muscle's.
     braid : {"bonded", "sliding"}, optional
         The muscle's braid when it is known: the confirmation model takes it and no braid
         model-form term is added (:func:`model_form_terms`). None: ``model``'s own braid, and
@@ -271,10 +273,8 @@ def _covering_surrogate(runs, surrogate, notify) -> tuple[SurrogateStatic | None
 
 
 def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes, calibration,
-              braid=None):
-    L0_mm = float(runs[0].muscle["L0_mm"])
-    nominal = fitting.nominal_values(fe.spec.with_params(L0_mm=L0_mm).build(calibration)
-                                     .params()["theta0_deg"])
+              braid=None, start=None):
+    nominal = fitting.nominal_muscle(fe.spec, runs, calibration)
     # a monitor's hysteresis where it is declared (its bound is half of that)
     names = [n for g in groups for n in GROUPS[g] if n != "pressure_hysteresis_bar"
              or min(r.monitor_hysteresis_bar for r in runs) > 0]
@@ -286,9 +286,12 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         found, note = _covering_surrogate(runs, surrogate, notify)
         notes += [note] if note else []
         source = fe if found is None else found
+    searched = list(notes)  # what a search again with the FE model keeps of them
     declared = {n: float(runs[0].muscle[n]) for n in (*fitting.GEOMETRY, "L0_mm")}
     start = {**nominal, **{n: TERM_START.get(n, nominal.get(n, declared.get(n, 0.0)))
-                           for n in names}}
+                           for n in names}, **(start or {})}
+    if "rubber_scale" in names:  # one scale on Silastic S's ratio, unless the runs separate it
+        start.pop("c01_fraction", None)
 
     notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
            f"of {len(runs)} run(s) with {source.name}")
@@ -336,17 +339,13 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             one_scale = best
             best, boot, terms, source = free, free_boot, free_terms, free_source
             ratio, (_, top) = rubber["ratio_C01_over_C10"], PRACTICAL_RANGE.C01_per_C10
-            share, (low, _) = free.values["c01_fraction"], free.bounds["c01_fraction"]
+            share = free.values["c01_fraction"]
             if fitting.at_edge(share, free.bounds["c01_fraction"]):
                 # a Festo membrane pushes it to 9, a bench error the model absorbs so to 0:
                 # fits best there, but the edge set the number, and the bootstrap collapsed on
                 # it: the intervals hold the fit at Silastic S's ratio too
                 terms = {**terms, "ratio_edge": ratio_edge_term(one_scale, free)}
-                want = ("no C01 (a neo-Hookean rubber, or an error the model takes for one)"
-                        if share <= low else "more of C01 than the box allows")
-                notes.append(f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs "
-                             f"want {want}, so the ratio is the edge's, not measured: the "
-                             "intervals hold the fit at Silastic S's ratio too")
+                notes.append(ratio_edge_note(ratio, share, free.bounds["c01_fraction"]))
             if ratio > top:
                 notes.append(f"the identified rubber's C01/C10 {ratio:.3g} is above the "
                              f"practical range's {top:g} (`mkm models`): every model "
@@ -383,6 +382,16 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         notes += _outside_box(caught, "the refits at the ends of the assumed rubber ratio",
                               "the prediction band's rubber-ratio term is extrapolated there")
     fitness = goodness.assess(runs, best)
+    if fitness.misfit and isinstance(source, Corrected) and surrogate_misfit(source, fe, runs,
+                                                                             best):
+        notify(f"the fit on the surrogate misfits where {fe.name} would not: identifying again "
+               f"with {fe.name} (one sweep per run and evaluation)")
+        return _identify(runs, groups, fe, "model", surrogate, seed, notify, started, [
+            *searched, f"the fit on the surrogate corrected by the FE model misfit (chi2/nu "
+            f"{fitness.reduced:.3g}) where the FE model itself would not (the surrogate's "
+            "error beyond its correction at one point): searched again with the FE model"],
+            calibration, braid, start={n: v for n, v in best.values.items()
+                                       if n != "c01_fraction"})  # the ratio tested again
     boot = goodness.widen(boot, best, fitness)
     notify("model-form terms: the FE model at the optimum (and the other braid)")
     if terms is None:
@@ -511,6 +520,17 @@ def _rest_length_hint(runs, fe, best, fitness, groups) -> list[str]:
 
 def _rms(r) -> float:
     return float(np.sqrt(np.mean(np.square(r))))
+
+
+def ratio_edge_note(ratio: float, share: float, bounds: tuple[float, float]) -> str:
+    """The note on C01's share ``share`` fitted at an edge of its search ``bounds`` (the ratio
+    C01/C10 ``ratio``): which edge, so what the runs want."""
+    low, high = bounds
+    want = ("no C01 (a neo-Hookean rubber, or an error the model takes for one)"
+            if share - low <= high - share else "more of C01 than the box allows")
+    return (f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs want {want}, so "
+            "the ratio is the edge's, not measured: the intervals hold the fit at Silastic S's "
+            "ratio too")
 
 
 def _select(source, runs, names, start, nominal):
@@ -669,6 +689,23 @@ def other_braid_excess(source, fe: ModelStatic, runs, one_scale, free) -> float:
         r = r - J[:, usable] @ np.linalg.lstsq(J[:, usable], r, rcond=None)[0]
     variance = free.rss / max(free.n - len(free.names), 1)
     return float((np.sum(r**2) - free.rss) / variance)
+
+
+def surrogate_misfit(source, fe: ModelStatic, runs, best) -> bool:
+    """Whether the fit ``best`` on the corrected surrogate ``source``, a misfit, would not be
+    one with the FE model ``fe`` (:func:`mkm.identify.goodness.assess`): refitted with
+    the FE model's force at the optimum in place of the surrogate's (linearised, as
+    :func:`other_braid_excess` refits; one FE sweep per run, which the model-form terms take
+    anyway), the runs are within their noise. The surrogate's own error beyond its correction
+    at one point then made the misfit, not the muscle or the bench."""
+    differences = _minus(fe.tables(runs, best.values), source.tables(runs, best.values))
+    r = best.residual_N + _hold_change(source, runs, best, differences)
+    J = best.weighted_jacobian
+    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
+    if usable.any():
+        r = r - best.jacobian[:, usable] @ np.linalg.lstsq(J[:, usable], best.w * r,
+                                                           rcond=None)[0]
+    return not goodness.assess(runs, dataclasses.replace(best, residual_N=r)).misfit
 
 
 def _minus(tables, others) -> list[tuple]:

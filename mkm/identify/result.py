@@ -49,7 +49,15 @@ from mkm.fem.calibration import (
 from mkm.fem.ladder import MODELS
 from mkm.fem.materials import SILASTIC_S
 from mkm.fem.options import BRAIDS
-from mkm.identify.fitting import GEOMETRY, STATIC_NAMES, Fit, full_parameters, geometry, rubber
+from mkm.identify.fitting import (
+    GEOMETRY,
+    STATIC_NAMES,
+    Fit,
+    declared,
+    full_parameters,
+    geometry,
+    rubber,
+)
 from mkm.identify.goodness import Goodness
 from mkm.identify.intervals import robust_covariance
 from mkm.identify.runs import offset_bound_said
@@ -200,6 +208,14 @@ class Identification:
                     "length at this rest length")
             else:
                 add(name, value, *interval[name])
+        for name, fitted_as in (("theta0_deg", "theta0_deg"), ("C10_MPa", "rubber_scale"),
+                                ("C01_MPa", "rubber_scale")):
+            if fitted_as not in names:
+                add(name, values[name], status="assumed", source=(
+                    "the runs' declared muscle (run.json), not fitted"
+                    if declared(self.runs, name) is not None else
+                    "the calibration's (--calibration, else the shipped one), not fitted: the "
+                    "runs declare none"))
         for name in GEOMETRY:
             if name not in names:
                 tolerance = max(r.geometry_tolerance_mm.get(name, 0.0) for r in self.runs)

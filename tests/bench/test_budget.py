@@ -244,7 +244,7 @@ def test_monitor_component_draws_fill_each_bound(config):
 
 
 def test_check_prints_the_expected_budget(config):
-    text, _ = check(config)
+    text, _, _ = check(config)
     lines = text.splitlines()
     start = next(k for k, line in enumerate(lines) if line.split()[:2] == ["P", "[bar]"])
     rows = [line.split() for line in lines[start + 1:start + 11]]
@@ -258,7 +258,7 @@ def test_check_prints_the_expected_budget(config):
     assert any(line.split()[0] == "combined" for line in table)
     assert table[0] in lines and "," not in table[0]  # a table to read, not CSV in the prose
     # the pressure's terms at the top pressure: the declared components, each on its line
-    text, _ = check(config.replace(regulator=COMPONENTS))
+    text, _, _ = check(config.replace(regulator=COMPONENTS))
     span = [line for line in text.splitlines() if "monitor span error" in line]
     assert len(span) == 1 and span[0].endswith("regulator.monitor_span_fraction=0.004 x 2.5 bar")
     assert "monitor non-linearity" in text and "pressure reading accuracy" not in text

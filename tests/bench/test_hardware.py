@@ -41,5 +41,5 @@ def test_tare_and_check(config):
     assert out["n"] == 20
     # an unloaded cell reads within 1 % of its span of zero once the amplifier is adjusted
     assert abs(out["offset_V"]) < 0.1
-    text, _warnings = check(config, backend="ni")
+    text, _warnings, _refusal = check(config, backend="ni")
     assert "USB-6001" in text

@@ -62,8 +62,26 @@ def test_tare_on_the_sim(config):
     off = tare(config.replace(sim={"truth": {"monitor_offset_bar": 0.046}}), seconds=10.0)
     assert off["monitor_vented_bar"] == pytest.approx(0.046, abs=0.002)
     assert "vented, beyond the +-0.04 bar" in off["monitor_warning"]
+    # the volts it gives, and the setting that takes them: 1 V + 0.046 bar x 4 V / 4 bar
+    # the simulated sensor's offset is its truth's, through whatever zero is declared
+    assert "zero is off (it gives 1.046 V vented, [regulator] monitor_V_at_zero = 1 V; with " \
+        "the muscle open to the air, set monitor_V_at_zero to what it gives (simulated: " \
+        "[sim.truth] monitor_offset_bar = 0.046 bar moves any zero declared))" \
+        in off["monitor_warning"]
+    from mkm.bench.sequence import _zero_said
+
+    real = config.replace(daq={"backend": "ni"}, sim={"truth": {"monitor_offset_bar": 0.046}})
+    assert _zero_said(0.046, real) == ("it gives 1.046 V vented, [regulator] monitor_V_at_zero "
+                                       "= 1 V; with the muscle open to the air, set "
+                                       "monitor_V_at_zero to what it gives")
     with pytest.raises(TareInvalid, match=r"monitor reads \+0\.2\d\d bar with the regulator "
-                                          r"vented, beyond safety.vent_below_bar=0.05"):
+                                          r"vented, beyond safety.vent_below_bar=0.05: it cannot "
+                                          r"verify a vent \(its zero is off: it gives 1\.2\d* V "
+                                          r"vented, \[regulator\] monitor_V_at_zero = 1 V; with "
+                                          r"the muscle open to the air, set monitor_V_at_zero to "
+                                          r"what it gives \(simulated: \[sim.truth\] "
+                                          r"monitor_offset_bar = 0.2 bar moves any zero "
+                                          r"declared\); its wiring"):
         tare(config.replace(sim={"truth": {"monitor_offset_bar": 0.2}}), seconds=10.0)
 
 
@@ -118,8 +136,8 @@ def test_a_tare_on_one_adc_code_is_said_so(config, tmp_path):
 
 
 def test_check_lists_device_steps_and_duration(config):
-    text, warnings = check(config)
-    assert warnings == []
+    text, warnings, refusal = check(config)
+    assert warnings == [] and refusal == ""
     assert "backend: sim (SIMULATED: no hardware is driven)" in text
     assert "USB-6001 (simulated)" in text and "interlock at 1765.2 N" in text
     assert ("planned steps: 3\n  repeat 1, up: 0.5, 1 bar\n  repeat 1, down: 0.5 bar") in text

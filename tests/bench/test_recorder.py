@@ -912,16 +912,12 @@ def test_mkm_recover_joins_kept_rows_after_a_gap_recorded_at_samples_csvs_end(
     assert json.loads(run_json.read_text(encoding="utf-8"))["counters"]["samples"] == len(joined)
 
 
-def test_mkm_recover_joins_kept_rows_after_a_gap_run_json_never_took(config, tmp_path,
-                                                                     monkeypatch, mkm_cli):
-    # a 30 s stall against a 10 s buffer lost samples 40-339 (the simulator's overflow), and the
-    # run folder went read-only with the first block after it: samples.csv ends at 39, the
-    # kept rows begin at 340, and run.json, refused at the end, never held the gap. `mkm
-    # recover` refused them ("expected ... from sample 40"). Now the gaps are kept beside the
-    # rows, and recover joins them with the gap recorded in run.json as any gap
+def _stalled_then_read_only(config, tmp_path, monkeypatch):
+    """A run whose 30 s stall against a 10 s buffer lost samples 40-339 and whose folder went
+    read-only with the first block after it (samples.csv ends at 39, the rows from 340 kept in
+    the state folder, run.json refused at the end: still running, without the gap), its
+    process since ended: its folder, run.json and the samples it queued."""
     import json
-
-    import pandas as pd
 
     from mkm.bench.run import acquire
 
@@ -935,6 +931,21 @@ def test_mkm_recover_joins_kept_rows_after_a_gap_run_json_never_took(config, tmp
     assert meta["status"] == "running" and meta["gaps"] == []  # refused at the end
     meta["process"]["started_unix_s"] -= 100.0  # its process has ended since
     run_json.write_text(json.dumps(meta), encoding="utf-8")
+    return path, run_json, queued
+
+
+def test_mkm_recover_joins_kept_rows_after_a_gap_run_json_never_took(config, tmp_path,
+                                                                     monkeypatch, mkm_cli):
+    # a 30 s stall against a 10 s buffer lost samples 40-339 (the simulator's overflow), and the
+    # run folder went read-only with the first block after it: samples.csv ends at 39, the
+    # kept rows begin at 340, and run.json, refused at the end, never held the gap. `mkm
+    # recover` refused them ("expected ... from sample 40"). Now the gaps are kept beside the
+    # rows, and recover joins them with the gap recorded in run.json as any gap
+
+    import pandas as pd
+
+
+    path, run_json, queued = _stalled_then_read_only(config, tmp_path, monkeypatch)
     assert pd.read_csv(path / "samples.csv")["sample"].iloc[-1] == 39
     gaps = tmp_path / "mkm-state" / "unwritten" / f"{path.name}-gaps.json"
     text = gaps.read_text(encoding="utf-8")
@@ -1113,17 +1124,8 @@ def test_mkm_recover_joined_before_says_the_gaps_it_records(config, tmp_path, mo
     import pandas as pd
 
     import mkm.bench.storage as storage
-    from mkm.bench.run import acquire
 
-    c = config.replace(sim={"buffer_s": 10.0, "faults": {"stall_at_s": 4.0, "stall_s": 30.0}})
-    queued = _read_only_from_60(monkeypatch, first=340)
-    result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
-    monkeypatch.undo()
-    monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
-    path, run_json = result.path, result.path / "run.json"
-    meta = json.loads(run_json.read_text(encoding="utf-8"))
-    meta["process"]["started_unix_s"] -= 100.0  # its process has ended since
-    run_json.write_text(json.dumps(meta), encoding="utf-8")
+    path, run_json, queued = _stalled_then_read_only(config, tmp_path, monkeypatch)
 
     def denied(*args, **kwargs):
         raise PermissionError(errno.EACCES, "Permission denied")

@@ -287,6 +287,30 @@ def test_check_ends_with_a_verdict(capsys):
                                          "acquire` with the same options runs the steps above"]
 
 
+def test_check_reads_the_bench_at_rest_as_a_runs_tare_does(tmp_path, capsys):
+    # a pressure monitor 0.08 bar off its zero: `mkm check` said "ready" (it read nothing),
+    # and `mkm acquire` then refused at its tare. check reads the bench vented for the tare's
+    # time: its reading is in the plan, what the tare would refuse is its last line, exit 1
+    config = tmp_path / "lab.toml"
+    config.write_text(load_config().text + "\n[sim.truth]\nmonitor_offset_bar = 0.08\n")
+    assert main(["check", "--config", str(config)]) == 1
+    captured = capsys.readouterr()
+    last = captured.err.splitlines()[-1]
+    assert last.startswith("mkm check: error: tare invalid: the pressure monitor reads +0.08")
+    assert "beyond safety.vent_below_bar=0.05: it cannot verify a vent (its zero is off: it " \
+        "gives 1.08 V vented, [regulator] monitor_V_at_zero = 1 V" in last
+    assert last.endswith("; `mkm acquire` would stop at its tare: fix this first")
+    assert "ready" not in captured.err
+    # 0.046 bar off: within what a vent check takes, beyond the monitor's declared 0.04 bar
+    config.write_text(load_config().text + "\n[sim.truth]\nmonitor_offset_bar = 0.046\n")
+    assert main(["check", "--config", str(config)]) == 0
+    captured = capsys.readouterr()
+    assert "at rest, vented (5 s, as a run's tare): the load cell " in captured.out
+    assert ", the pressure monitor +0.04" in captured.out
+    assert "mkm check: warning: the pressure monitor reads +0.04" in captured.err
+    assert captured.err.splitlines()[-1].startswith("mkm check: ready: ")
+
+
 @pytest.mark.parametrize("argv, message", [
     (["acquire", "--pressures", "0:1e12:1"], "--pressures"),
     (["acquire", "--pressures", "0.001:2.5:0.001"], "4999 steps, 0.5 to 3.8 days: expected at "

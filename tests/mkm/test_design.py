@@ -1097,8 +1097,8 @@ def test_the_default_length_is_the_identified_muscles(tmp_path, mkm_run):
     """A calibration identified on a 300 mm muscle designed at the paper's 282 mm: the braid
     angle and rubber searched were that muscle's, its length not. Without --L0 the length is
     the identified muscle's now, said in one line; --L0 designs another."""
-    from mkm.design.box_search import identified_lengths
     from mkm.fem.calibration import Calibration
+    from mkm.identify.band import identified_lengths
 
     lab = tmp_path / "calibration.json"
     record = json.loads(_identified(tmp_path).path.read_text(encoding="utf-8"))

@@ -489,10 +489,15 @@ def test_a_festo_class_muscle_is_searched_with_the_practical_range_surrogate(tmp
     runs = _festo_class_runs(truth, tmp_path, "thickwall")
     result = identify(runs, params="theta0,rubber", model="thickwall")
     why = f"seed {SEED + 2}, truth {truth}, notes {result.notes}"
-    assert result.searched_with == "surrogate:kind=muscle-gp-range", why
     assert any("default surrogate's box does not cover this muscle (D0_mm=10 not in [30, 50]"
                in n and "searched with surrogate:kind=muscle-gp-range" in n
                for n in result.notes), why
+    # where the surrogate's own error made a misfit the model would not have, the model
+    # searched again, and said so
+    again = any(n.startswith("the fit on the surrogate corrected by the FE model misfit")
+                for n in result.notes)
+    assert result.searched_with == ("thickwall" if again else
+                                    "surrogate:kind=muscle-gp-range"), why
     assert result.fit.values["theta0_deg"] == pytest.approx(truth["theta0_deg"], abs=0.3), why
     assert result.fit.values["rubber_scale"] == pytest.approx(truth["rubber_scale"],
                                                               rel=0.1), why

@@ -837,10 +837,11 @@ def test_the_identify_line_of_a_verdict_keeps_a_path_with_a_space_one_argument()
     assert shlex.split(identify_command(path)) == ["mkm", "identify", path]
 
 
-def test_a_calibration_that_identified_the_wall_predicts_its_muscle_with_it(tmp_path):
-    """identify --params t0 fits the wall with the angle and the rubber (correlated 0.99): the
-    report predicts the identified muscle's runs with that wall, not the declared one, so the
-    runs the calibration was fitted on score as identify scored them."""
+def _reported_identified_tables(tmp_path, theta0_deg: float, declared: dict, params: str):
+    """Two tables (eps 0 and 12.2 %) of a 30 x 3 mm thick-wall muscle at ``theta0_deg``,
+    imported declaring ``declared`` (lab-7), identified with ``params`` on the thick-wall form
+    and reported with that calibration: the identification, the runs and the report's html, after
+    checking that each run scores in the report as identify scored it (within 0.5 %)."""
     from mkm.bench.exchange import import_table, parse_accuracy
     from mkm.fem.calibration import Calibration
     from mkm.identify.procedure import identify
@@ -849,17 +850,14 @@ def test_a_calibration_that_identified_the_wall_predicts_its_muscle_with_it(tmp_
     paths = []
     for eps in (0.0, 0.122):
         table = tmp_path / f"eps{eps}.csv"
-        force = make_model("thickwall", theta0_deg=32.0).predict(pressure, 30.0, 3.0,
-                                                                   eps).force_N
+        force = make_model("thickwall", theta0_deg=theta0_deg).predict(pressure, 30.0, 3.0,
+                                                                         eps).force_N
         pd.DataFrame({"P [bar]": pressure, "F [N]": force}).to_csv(table, index=False)
-        # the lab declares a wall 0.5 mm too thin
         (run,) = import_table(table, tmp_path / "runs", {
-            "id": "lab-7", "D0_mm": 30.0, "t0_mm": 2.5, "L0_mm": 282.0, "eps": eps},
-            accuracy=parse_accuracy("force=0.5N+1%"))
+            "id": "lab-7", "D0_mm": 30.0, "t0_mm": 3.0, "L0_mm": 282.0, "eps": eps,
+            **declared}, accuracy=parse_accuracy("force=0.5N+1%"))
         paths.append(run.path)
-    result = identify(paths, params="theta0,rubber,t0", model="thickwall", search="model",
-                      cache_dir=None)
-    assert result.fit.values["t0_mm"] == pytest.approx(3.0, abs=0.05)
+    result = identify(paths, params=params, model="thickwall", search="model", cache_dir=None)
     result.write(tmp_path / "id")
     calibration = Calibration.load(tmp_path / "id" / "calibration.json")
     identified = {c["run"]: c["identified_rising_pct"] for c in
@@ -871,9 +869,37 @@ def test_a_calibration_that_identified_the_wall_predicts_its_muscle_with_it(tmp_
         assert summary.loc[path.name, "max_abs_err_pct"] == pytest.approx(
             identified[path.name], abs=0.01)
         assert identified[path.name] < 0.5
-    html = (tmp_path / "report" / "report.html").read_text(encoding="utf-8")
+    return result, paths, (tmp_path / "report" / "report.html").read_text(encoding="utf-8")
+
+
+def test_a_calibration_that_identified_the_wall_predicts_its_muscle_with_it(tmp_path):
+    """identify --params t0 fits the wall with the angle and the rubber (correlated 0.99): the
+    report predicts the identified muscle's runs with that wall, not the declared one, so the
+    runs the calibration was fitted on score as identify scored them."""
+    # the lab declares a wall 0.5 mm too thin
+    result, _, html = _reported_identified_tables(tmp_path, 32.0, {"t0_mm": 2.5},
+                                               "theta0,rubber,t0")
+    assert result.fit.values["t0_mm"] == pytest.approx(3.0, abs=0.05)
     shown = re.search(r"t0_mm identified \(the models(?:&#x27;|')\)</td>\s*<td>([\d.]+)<", html)
     assert float(shown[1]) == pytest.approx(result.fit.values["t0_mm"], rel=1e-5)
+
+
+def test_a_calibration_identified_on_a_muscle_replaces_the_angle_it_declared(tmp_path):
+    """A lab declares its muscle's braid angle as woven, 30 deg ([muscle] theta0_deg); its
+    tables are a 27 deg muscle's, and identify finds 27 deg. The report with that calibration
+    predicted the very runs it was fitted on with the declared 30 deg (the declared muscle
+    over the calibration: 17 % off for a simulated 25 mm latex muscle identified within
+    0.1 %); it takes the calibration's angle and rubber there, and says so."""
+    result, paths, html = _reported_identified_tables(tmp_path, 27.0, {"theta0_deg": 30.0},
+                                               "theta0,rubber")
+    assert result.fit.values["theta0_deg"] == pytest.approx(27.0, abs=0.05)
+    assert ("The models take theta0_deg from the calibration, identified on this muscle, not "
+            "the declared one(s).") in html
+    # without the calibration, the declared angle: a muscle 3 deg off is far off
+    build_report(paths[:1], parse_models("thickwall"), out_dir=tmp_path / "declared",
+                 cache_dir=None, tolerance=None, surrogate_section=False)
+    declared = pd.read_csv(tmp_path / "declared" / "summary.csv")
+    assert declared["max_abs_err_pct"].iloc[0] > 10
 
 
 def test_a_report_replaced_by_one_of_fewer_runs_leaves_none_of_its_files(runs, tmp_path):
