@@ -330,21 +330,44 @@ def test_a_ratio_the_other_braid_cannot_follow_either_is_reported_apart(tmp_path
 
 @pytest.mark.slow
 def test_a_misfit_the_surrogate_made_is_searched_again_with_the_fe_model(tmp_path):
-    """A 6 x 1.5 mm natural-rubber tube 60 mm long at up to 8 bar, three runs, identified with
-    the default search: the range surrogate, corrected by the FE model at its optimum, left
-    its own error in the fit (chi2/nu 2.6, 'act on the notes' about the muscle and the bench),
-    while the FE model follows the runs within their noise. A misfit the FE model would not
-    have (its force in place of the surrogate's, refitted linearly) is searched again with the
-    FE model, and said."""
+    """A 46 mm tube of a stiff rubber (C10 0.355, C01 0.060 MPa) whose runs pull within a
+    1000 kg load cell only up to 2.3 bar, four runs at eps 0-5.9 % (15 % of its braid lock),
+    identified with the default search (``benchmarks/bench_identify_rubbers.py``, seed
+    20261208): the range surrogate, corrected by the FE model at its optimum (and at the free
+    ratio's), left its own error in the fit (chi2/nu 20, one branch), while the FE model
+    follows the runs within their noise. A misfit the FE model would not have (its force in
+    place of the surrogate's, refitted linearly) is searched again with the FE model, and
+    said."""
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+    from mkm.bench.sim_settings import remove_simulator_settings
     from mkm.identify import identify
 
-    paths = natural_rubber_runs(tmp_path, {"D0_mm": 6.0, "t0_mm": 1.5, "L0_mm": 60.0}, 8.0,
-                                (1.0, 2.5, 4.0, 5.5, 7.0, 8.0), (0.0, 0.1, 0.2), 22.0)
-    result = identify(paths, params="theta0,rubber,friction", model="axisym:mesh=coarse")
+    truth = {"theta0_deg": 21.23, "C10_MPa": 0.3552, "C01_MPa": 0.0595}
+    paths = []
+    for k, eps in enumerate((0.0, 0.0193, 0.0394, 0.0587)):
+        config = load_config(eps=eps).replace(
+            muscle={"D0_mm": 46.49, "t0_mm": 4.44, "L0_mm": 270.7},
+            loadcell={"capacity_N": 9806.65, "sensitivity_N_per_V": 980.665},
+            regulator={"max_pressure_bar": 2.3},
+            sequence={"pressures_bar": tuple(round(2.3 * (j + 1) / 8, 3) for j in range(8)),
+                      "preconditioning_cycles": 0},
+            sim={"model": "axisym", "fe_mesh": "coarse", "seed": 20261208 + 1000 * k,
+                 "hysteresis_fraction": 0.0281, "creep_fraction": 0.0, "truth": truth})
+        done = acquire(config, out_root=tmp_path, notify=lambda message: None)
+        assert done.status == "complete"
+        remove_simulator_settings(done.path)
+        paths.append(done.path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the surrogate's unanswered points, said in the notes
+        result = identify(paths, model="axisym:mesh=coarse")
     assert result.searched_with == "axisym:mesh=coarse"
     assert any(note.startswith("the fit on the surrogate corrected by the FE model misfit ")
                and note.endswith("searched again with the FE model") for note in result.notes)
-    assert_holds_the_natural_rubber(result, 22.0)
+    assert not result.goodness.misfit
+    table = result.parameters().set_index("parameter")
+    for name, value in truth.items():
+        assert table.loc[name, "ci_low"] <= value <= table.loc[name, "ci_high"], name
 
 
 @pytest.mark.slow
