@@ -158,14 +158,15 @@ def truths(muscle: dict, config) -> dict[str, float]:
     return out
 
 
-def judge(result, muscle: dict, config) -> list[dict]:
-    """Each parameter identify reports with an interval against the truth, and the rubber's
+def judge(result, muscle: dict, config, truth: dict | None = None) -> list[dict]:
+    """Each parameter identify reports with an interval against the truth (``truth``, default
+    :func:`truths`), and the rubber's
     ratio against what identify claims of it: measured (C10 and C01 apart, judged above), or
     assumed at Silastic S's with the runs' 95 % interval of C01/C10 beside it (the
     ``C01_over_C10`` row's source), which must then hold the true ratio (a true ratio outside
     it, with the ratio assumed, is a miss: the written C10 and C01 are wrong and nothing says
     so). ``far``: the truth outside by more than the interval's half-width."""
-    truth = truths(muscle, config)
+    truth = truths(muscle, config) if truth is None else truth
     rows = []
     for row in result.parameters().to_dict(orient="records"):
         name = row["parameter"]

@@ -6,6 +6,7 @@ linear in its parameter."""
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -329,18 +330,137 @@ def test_a_ratio_the_other_braid_cannot_follow_either_is_reported_apart(tmp_path
 
 @pytest.mark.slow
 def test_a_misfit_the_surrogate_made_is_searched_again_with_the_fe_model(tmp_path):
-    """A 6 x 1.5 mm natural-rubber tube 60 mm long at up to 8 bar, three runs, identified with
-    the default search: the range surrogate, corrected by the FE model at its optimum, left
-    its own error in the fit (chi2/nu 2.6, 'act on the notes' about the muscle and the bench),
-    while the FE model follows the runs within their noise. A misfit the FE model would not
-    have (its force in place of the surrogate's, refitted linearly) is searched again with the
-    FE model, and said."""
+    """A 46 mm tube of a stiff rubber (C10 0.355, C01 0.060 MPa) whose runs pull within a
+    1000 kg load cell only up to 2.3 bar, four runs at eps 0-5.9 % (15 % of its braid lock),
+    identified with the default search (``benchmarks/bench_identify_rubbers.py``, seed
+    20261208): the range surrogate, corrected by the FE model at its optimum (and at the free
+    ratio's), left its own error in the fit (chi2/nu 20, one branch), while the FE model
+    follows the runs within their noise. A misfit the FE model would not have (its force in
+    place of the surrogate's, refitted linearly) is searched again with the FE model, and
+    said."""
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+    from mkm.bench.sim_settings import remove_simulator_settings
     from mkm.identify import identify
 
-    paths = natural_rubber_runs(tmp_path, {"D0_mm": 6.0, "t0_mm": 1.5, "L0_mm": 60.0}, 8.0,
-                                (1.0, 2.5, 4.0, 5.5, 7.0, 8.0), (0.0, 0.1, 0.2), 22.0)
-    result = identify(paths, params="theta0,rubber,friction", model="axisym:mesh=coarse")
+    truth = {"theta0_deg": 21.23, "C10_MPa": 0.3552, "C01_MPa": 0.0595}
+    paths = []
+    for k, eps in enumerate((0.0, 0.0193, 0.0394, 0.0587)):
+        config = load_config(eps=eps).replace(
+            muscle={"D0_mm": 46.49, "t0_mm": 4.44, "L0_mm": 270.7},
+            loadcell={"capacity_N": 9806.65, "sensitivity_N_per_V": 980.665},
+            regulator={"max_pressure_bar": 2.3},
+            sequence={"pressures_bar": tuple(round(2.3 * (j + 1) / 8, 3) for j in range(8)),
+                      "preconditioning_cycles": 0},
+            sim={"model": "axisym", "fe_mesh": "coarse", "seed": 20261208 + 1000 * k,
+                 "hysteresis_fraction": 0.0281, "creep_fraction": 0.0, "truth": truth})
+        done = acquire(config, out_root=tmp_path, notify=lambda message: None)
+        assert done.status == "complete"
+        remove_simulator_settings(done.path)
+        paths.append(done.path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the surrogate's unanswered points, said in the notes
+        result = identify(paths, model="axisym:mesh=coarse")
     assert result.searched_with == "axisym:mesh=coarse"
     assert any(note.startswith("the fit on the surrogate corrected by the FE model misfit ")
                and note.endswith("searched again with the FE model") for note in result.notes)
-    assert_holds_the_natural_rubber(result, 22.0)
+    assert not result.goodness.misfit
+    table = result.parameters().set_index("parameter")
+    for name, value in truth.items():
+        assert table.loc[name, "ci_low"] <= value <= table.loc[name, "ci_high"], name
+
+
+@pytest.mark.slow
+def test_a_rubber_the_runs_separate_is_fitted_on_the_fe_correction_at_its_own_ratio(tmp_path):
+    """An 8.7 mm tube of a stiff rubber (C10 0.38, C01 0.089 MPa: C01/C10 0.23), four runs at
+    eps 0-70 % of its braid lock up to 5.55 bar on the FE bench, identified with the defaults
+    (the practical range's surrogate, corrected by the FE model): the runs separate C10 and C01.
+    The FE's correction was taken at Silastic S's ratio only, and the surrogate's error changes
+    with the ratio: the free fit misfit by it (chi2/nu 5.9, a misfit line naming the
+    instruments) where the FE itself fits within the noise. Corrected again at the free
+    optimum, it fits within the noise, the intervals holding the truth
+    (``benchmarks/bench_identify_rubbers.py``, seed 20261210)."""
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+    from mkm.bench.sim_settings import remove_simulator_settings
+    from mkm.identify import identify
+
+    truth = {"theta0_deg": 21.5, "C10_MPa": 0.382, "C01_MPa": 0.0893}
+    paths = []
+    for k, eps in enumerate((0.0, 0.0873, 0.1784, 0.2656)):
+        config = load_config(eps=eps).replace(
+            muscle={"D0_mm": 8.73, "t0_mm": 0.57, "L0_mm": 82.4},
+            loadcell={"capacity_N": 980.665, "sensitivity_N_per_V": 98.0665},
+            regulator={"max_pressure_bar": 5.55, "full_scale_bar": 9.0,
+                       "monitor_accuracy_bar": 0.09},
+            safety={"tare_max_shift_N": 98.0, "tare_max_std_N": 5.0, "vent_below_bar": 0.18},
+            sequence={"pressures_bar": tuple(round(5.55 * (j + 1) / 8, 3) for j in range(8)),
+                      "preconditioning_cycles": 0},
+            sim={"model": "axisym", "fe_mesh": "medium", "seed": 20261210 + 1000 * k,
+                 "hysteresis_fraction": 0.0247, "creep_fraction": 0.0, "truth": truth})
+        result = acquire(config, out_root=tmp_path, notify=lambda message: None)
+        assert result.status == "complete"
+        remove_simulator_settings(result.path)
+        paths.append(result.path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the surrogate's unanswered points, said in the notes
+        result = identify(paths)
+    assert result.rubber["separated"], result.notes
+    assert not result.goodness.misfit, result.goodness.line()
+    table = result.parameters().set_index("parameter")
+    for name, value in truth.items():
+        assert table.loc[name, "ci_low"] <= value <= table.loc[name, "ci_high"], name
+
+
+@pytest.mark.slow
+def test_a_ratio_the_declared_tolerances_alone_keep_is_said_with_the_misfit(tmp_path):
+    """A 22 mm tube of C01/C10 0.46 (C10 0.085 MPa), three runs at eps 0-70 % of its braid lock
+    up to 1.3 bar on the FE bench, identified with the defaults: the fit at Silastic S's ratio
+    misfits (chi2/nu 7), and the ratio's interval holds Silastic S's only through the declared
+    tolerances drawn into it (the packaged wall's +-0.1 mm is 7 % of this 1.35 mm wall; the
+    monitor's 0.04 bar a 3 % gain at 1.3 bar). The misfit line names the instruments; the note
+    and the verdict say first that the runs want another ratio, the tolerances keeping it
+    unmeasured (``benchmarks/bench_identify_rubbers.py``, seed 20261215)."""
+    from mkm.bench.config import load_config
+    from mkm.bench.run import acquire
+    from mkm.bench.sim_settings import remove_simulator_settings
+    from mkm.identify import identify
+    from mkm.identify.procedure import RATIO_LIKELIHOOD
+
+    truth = {"theta0_deg": 27.42, "C10_MPa": 0.0854, "C01_MPa": 0.0395}
+    paths = []
+    for k, eps in enumerate((0.0, 0.1223, 0.2447)):
+        config = load_config(eps=eps).replace(
+            muscle={"D0_mm": 22.38, "t0_mm": 1.35, "L0_mm": 180.5},
+            loadcell={"capacity_N": 980.665, "sensitivity_N_per_V": 98.0665},
+            regulator={"max_pressure_bar": 1.3},
+            safety={"tare_max_shift_N": 98.0},
+            sequence={"pressures_bar": tuple(round(1.3 * (j + 1) / 8, 3) for j in range(8)),
+                      "preconditioning_cycles": 0},
+            sim={"model": "axisym", "fe_mesh": "medium", "seed": 20261215 + 1000 * k,
+                 "hysteresis_fraction": 0.0114, "creep_fraction": 0.0, "truth": truth})
+        result = acquire(config, out_root=tmp_path, notify=lambda message: None)
+        assert result.status == "complete"
+        remove_simulator_settings(result.path)
+        paths.append(result.path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = identify(paths)
+    rubber = result.rubber
+    assert not rubber["separated"] and result.goodness.misfit
+    low, high = rubber["ratio_ci"]
+    assert low <= 0.905 <= high
+    declared = rubber["rejects_silastic_ratio_but_for_declared"]
+    assert not declared["ratio_ci"][0] <= 0.905 <= declared["ratio_ci"][1]
+    assert declared["ratio_ci"][0] <= truth["C01_MPa"] / truth["C10_MPa"] \
+        <= declared["ratio_ci"][1]
+    assert rubber["chi2_improvement"] > 100 * RATIO_LIKELIHOOD
+    note = next(n for n in result.notes if n.startswith("C10 and C01 not separated"))
+    assert ("but for the tolerances declared of the tube's diameter, its wall, the monitor's "
+            "gain (drawn into the intervals: they trade with the ratio) the runs reject "
+            "Silastic S's") in note, note
+    assert ("first, the runs want a rubber ratio other than Silastic S's, kept only because of "
+            "the bench's declared tolerances") in result._verdict_line(), result._verdict_line()
+    table = result.parameters().set_index("parameter")
+    assert table.loc["theta0_deg", "ci_low"] <= truth["theta0_deg"] \
+        <= table.loc["theta0_deg", "ci_high"]
