@@ -271,28 +271,33 @@ def test_a_creep_time_constant_at_its_search_bound_is_said():
 
 
 
-def natural_rubber_runs(out, muscle: dict, max_pressure_bar: float, pressures_bar: tuple,
-                        eps: tuple, theta0_deg: float) -> list:
-    """Blind runs of a natural-rubber tube (C10 0.30, C01 0.03 MPa: C01/C10 0.1, Silastic S's
-    0.905) on the coarse FE bench, friction 3 %, one per shortening of ``eps``."""
+def bench_runs(out, truth: dict, eps: tuple, pressures_bar: tuple, seeds, *,
+               hysteresis_fraction: float, mesh: str = "coarse", **sections) -> list:
+    """Blind runs of the muscle ``truth`` ([sim.truth]) on the FE bench (``mesh``), one per
+    shortening of ``eps`` and seed of ``seeds``, no creep; ``sections``: the configuration's
+    tables laid over the packaged ones (the muscle, the load cell, the regulator...)."""
     from mkm.bench.config import load_config
     from mkm.bench.run import acquire
     from mkm.bench.sim_settings import remove_simulator_settings
 
     paths = []
-    for k, at in enumerate(eps):
+    for at, seed in zip(eps, seeds, strict=True):
         config = load_config(eps=at).replace(
-            muscle=muscle, regulator={"max_pressure_bar": max_pressure_bar,
-                                      "full_scale_bar": max(4.0, 1.25 * max_pressure_bar)},
+            **sections,
             sequence={"pressures_bar": pressures_bar, "preconditioning_cycles": 0},
-            sim={"model": "axisym", "fe_mesh": "coarse", "seed": 31 + k,
-                 "hysteresis_fraction": 0.03, "creep_fraction": 0.0,
-                 "truth": {"theta0_deg": theta0_deg, "C10_MPa": 0.30, "C01_MPa": 0.03}})
+            sim={"model": "axisym", "fe_mesh": mesh, "seed": seed,
+                 "hysteresis_fraction": hysteresis_fraction, "creep_fraction": 0.0,
+                 "truth": truth})
         result = acquire(config, out_root=out, notify=lambda message: None)
         assert result.status == "complete"
         remove_simulator_settings(result.path)
         paths.append(result.path)
     return paths
+
+
+def steps_to(top_bar: float) -> tuple:
+    """Eight pressure steps up to ``top_bar`` [bar]."""
+    return tuple(round(top_bar * (j + 1) / 8, 3) for j in range(8))
 
 
 def assert_holds_the_natural_rubber(result, theta0_deg: float):
@@ -315,9 +320,12 @@ def test_a_ratio_the_other_braid_cannot_follow_either_is_reported_apart(tmp_path
     from mkm.identify import identify
     from mkm.identify.procedure import RATIO_LIKELIHOOD
 
-    paths = natural_rubber_runs(tmp_path, {"D0_mm": 40.0, "t0_mm": 2.5, "L0_mm": 250.0}, 2.0,
-                                (0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0), (0.0, 0.07, 0.14, 0.2),
-                                30.0)
+    # a natural rubber: C10 0.30, C01 0.03 MPa (C01/C10 0.1, Silastic S's 0.905)
+    paths = bench_runs(tmp_path, {"theta0_deg": 30.0, "C10_MPa": 0.30, "C01_MPa": 0.03},
+                       (0.0, 0.07, 0.14, 0.2), (0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0),
+                       range(31, 35), hysteresis_fraction=0.03,
+                       muscle={"D0_mm": 40.0, "t0_mm": 2.5, "L0_mm": 250.0},
+                       regulator={"max_pressure_bar": 2.0})
     # the monitor's offset left out (the simulated monitor has none) and no creep simulated
     result = identify(paths, params="theta0,rubber,friction", model="axisym:mesh=coarse",
                       search="model")
@@ -338,26 +346,14 @@ def test_a_misfit_the_surrogate_made_is_searched_again_with_the_fe_model(tmp_pat
     follows the runs within their noise. A misfit the FE model would not have (its force in
     place of the surrogate's, refitted linearly) is searched again with the FE model, and
     said."""
-    from mkm.bench.config import load_config
-    from mkm.bench.run import acquire
-    from mkm.bench.sim_settings import remove_simulator_settings
     from mkm.identify import identify
 
     truth = {"theta0_deg": 21.23, "C10_MPa": 0.3552, "C01_MPa": 0.0595}
-    paths = []
-    for k, eps in enumerate((0.0, 0.0193, 0.0394, 0.0587)):
-        config = load_config(eps=eps).replace(
-            muscle={"D0_mm": 46.49, "t0_mm": 4.44, "L0_mm": 270.7},
-            loadcell={"capacity_N": 9806.65, "sensitivity_N_per_V": 980.665},
-            regulator={"max_pressure_bar": 2.3},
-            sequence={"pressures_bar": tuple(round(2.3 * (j + 1) / 8, 3) for j in range(8)),
-                      "preconditioning_cycles": 0},
-            sim={"model": "axisym", "fe_mesh": "coarse", "seed": 20261208 + 1000 * k,
-                 "hysteresis_fraction": 0.0281, "creep_fraction": 0.0, "truth": truth})
-        done = acquire(config, out_root=tmp_path, notify=lambda message: None)
-        assert done.status == "complete"
-        remove_simulator_settings(done.path)
-        paths.append(done.path)
+    paths = bench_runs(tmp_path, truth, (0.0, 0.0193, 0.0394, 0.0587), steps_to(2.3),
+                       range(20261208, 20265208, 1000), hysteresis_fraction=0.0281,
+                       muscle={"D0_mm": 46.49, "t0_mm": 4.44, "L0_mm": 270.7},
+                       loadcell={"capacity_N": 9806.65, "sensitivity_N_per_V": 980.665},
+                       regulator={"max_pressure_bar": 2.3})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the surrogate's unanswered points, said in the notes
         result = identify(paths, model="axisym:mesh=coarse")
@@ -380,28 +376,17 @@ def test_a_rubber_the_runs_separate_is_fitted_on_the_fe_correction_at_its_own_ra
     instruments) where the FE itself fits within the noise. Corrected again at the free
     optimum, it fits within the noise, the intervals holding the truth
     (``benchmarks/bench_identify_rubbers.py``, seed 20261210)."""
-    from mkm.bench.config import load_config
-    from mkm.bench.run import acquire
-    from mkm.bench.sim_settings import remove_simulator_settings
     from mkm.identify import identify
 
     truth = {"theta0_deg": 21.5, "C10_MPa": 0.382, "C01_MPa": 0.0893}
-    paths = []
-    for k, eps in enumerate((0.0, 0.0873, 0.1784, 0.2656)):
-        config = load_config(eps=eps).replace(
-            muscle={"D0_mm": 8.73, "t0_mm": 0.57, "L0_mm": 82.4},
-            loadcell={"capacity_N": 980.665, "sensitivity_N_per_V": 98.0665},
-            regulator={"max_pressure_bar": 5.55, "full_scale_bar": 9.0,
-                       "monitor_accuracy_bar": 0.09},
-            safety={"tare_max_shift_N": 98.0, "tare_max_std_N": 5.0, "vent_below_bar": 0.18},
-            sequence={"pressures_bar": tuple(round(5.55 * (j + 1) / 8, 3) for j in range(8)),
-                      "preconditioning_cycles": 0},
-            sim={"model": "axisym", "fe_mesh": "medium", "seed": 20261210 + 1000 * k,
-                 "hysteresis_fraction": 0.0247, "creep_fraction": 0.0, "truth": truth})
-        result = acquire(config, out_root=tmp_path, notify=lambda message: None)
-        assert result.status == "complete"
-        remove_simulator_settings(result.path)
-        paths.append(result.path)
+    paths = bench_runs(tmp_path, truth, (0.0, 0.0873, 0.1784, 0.2656), steps_to(5.55),
+                       range(20261210, 20265210, 1000), hysteresis_fraction=0.0247,
+                       mesh="medium", muscle={"D0_mm": 8.73, "t0_mm": 0.57, "L0_mm": 82.4},
+                       loadcell={"capacity_N": 980.665, "sensitivity_N_per_V": 98.0665},
+                       regulator={"max_pressure_bar": 5.55, "full_scale_bar": 9.0,
+                                  "monitor_accuracy_bar": 0.09},
+                       safety={"tare_max_shift_N": 98.0, "tare_max_std_N": 5.0,
+                               "vent_below_bar": 0.18})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the surrogate's unanswered points, said in the notes
         result = identify(paths)
@@ -421,28 +406,15 @@ def test_a_ratio_the_declared_tolerances_alone_keep_is_said_with_the_misfit(tmp_
     monitor's 0.04 bar a 3 % gain at 1.3 bar). The misfit line names the instruments; the note
     and the verdict say first that the runs want another ratio, the tolerances keeping it
     unmeasured (``benchmarks/bench_identify_rubbers.py``, seed 20261215)."""
-    from mkm.bench.config import load_config
-    from mkm.bench.run import acquire
-    from mkm.bench.sim_settings import remove_simulator_settings
     from mkm.identify import identify
     from mkm.identify.procedure import RATIO_LIKELIHOOD
 
     truth = {"theta0_deg": 27.42, "C10_MPa": 0.0854, "C01_MPa": 0.0395}
-    paths = []
-    for k, eps in enumerate((0.0, 0.1223, 0.2447)):
-        config = load_config(eps=eps).replace(
-            muscle={"D0_mm": 22.38, "t0_mm": 1.35, "L0_mm": 180.5},
-            loadcell={"capacity_N": 980.665, "sensitivity_N_per_V": 98.0665},
-            regulator={"max_pressure_bar": 1.3},
-            safety={"tare_max_shift_N": 98.0},
-            sequence={"pressures_bar": tuple(round(1.3 * (j + 1) / 8, 3) for j in range(8)),
-                      "preconditioning_cycles": 0},
-            sim={"model": "axisym", "fe_mesh": "medium", "seed": 20261215 + 1000 * k,
-                 "hysteresis_fraction": 0.0114, "creep_fraction": 0.0, "truth": truth})
-        result = acquire(config, out_root=tmp_path, notify=lambda message: None)
-        assert result.status == "complete"
-        remove_simulator_settings(result.path)
-        paths.append(result.path)
+    paths = bench_runs(tmp_path, truth, (0.0, 0.1223, 0.2447), steps_to(1.3),
+                       range(20261215, 20264215, 1000), hysteresis_fraction=0.0114,
+                       mesh="medium", muscle={"D0_mm": 22.38, "t0_mm": 1.35, "L0_mm": 180.5},
+                       loadcell={"capacity_N": 980.665, "sensitivity_N_per_V": 98.0665},
+                       regulator={"max_pressure_bar": 1.3}, safety={"tare_max_shift_N": 98.0})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         result = identify(paths)
