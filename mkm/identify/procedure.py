@@ -681,14 +681,10 @@ def other_braid_excess(source, fe: ModelStatic, runs, one_scale, free) -> float:
     as well as another ratio does."""
     differences = _minus(_other_braid(fe).tables(runs, one_scale.values),
                          fe.tables(runs, one_scale.values))
-    r = one_scale.weighted_residual + one_scale.w * _hold_change(source, runs, one_scale,
-                                                                 differences)
-    J = one_scale.weighted_jacobian
-    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
-    if usable.any():
-        r = r - J[:, usable] @ np.linalg.lstsq(J[:, usable], r, rcond=None)[0]
+    r = _refitted(one_scale, one_scale.residual_N + _hold_change(source, runs, one_scale,
+                                                                  differences))
     variance = free.rss / max(free.n - len(free.names), 1)
-    return float((np.sum(r**2) - free.rss) / variance)
+    return float((np.sum((one_scale.w * r) ** 2) - free.rss) / variance)
 
 
 def surrogate_misfit(source, fe: ModelStatic, runs, best) -> bool:
@@ -699,12 +695,7 @@ def surrogate_misfit(source, fe: ModelStatic, runs, best) -> bool:
     anyway), the runs are within their noise. The surrogate's own error beyond its correction
     at one point then made the misfit, not the muscle or the bench."""
     differences = _minus(fe.tables(runs, best.values), source.tables(runs, best.values))
-    r = best.residual_N + _hold_change(source, runs, best, differences)
-    J = best.weighted_jacobian
-    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
-    if usable.any():
-        r = r - best.jacobian[:, usable] @ np.linalg.lstsq(J[:, usable], best.w * r,
-                                                           rcond=None)[0]
+    r = _refitted(best, best.residual_N + _hold_change(source, runs, best, differences))
     return not goodness.assess(runs, dataclasses.replace(best, residual_N=r)).misfit
 
 
@@ -718,13 +709,26 @@ def _shift(source, runs, best, differences) -> dict[str, float]:
     """The refit's shift of ``best``'s parameters when the static force of each run changes by
     ``differences`` (per run: pressures and the change there): ``-(J'J)^-1 J' dr``, the change
     ``dr`` of the hold residuals through the friction and creep of each run's trace."""
-    dr = _hold_change(source, runs, best, differences)
-    J = best.weighted_jacobian
-    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
-    step = np.zeros(len(best.names))
-    if usable.any():
-        step[usable] = -np.linalg.lstsq(J[:, usable], best.w * dr, rcond=None)[0]
+    step = _step(best, _hold_change(source, runs, best, differences))
     return {n: float(v) for n, v in zip(best.names, step, strict=True)}
+
+
+def _step(fit, residual_N) -> np.ndarray:
+    """One Gauss-Newton step of ``fit``'s parameters taking the hold residuals ``residual_N``
+    [N] away as far as their (weighted) Jacobian can; 0 for a parameter the holds do not
+    see."""
+    J = fit.weighted_jacobian
+    usable = np.sqrt(np.sum(J**2, axis=0)) > 0
+    step = np.zeros(len(fit.names))
+    if usable.any():
+        step[usable] = -np.linalg.lstsq(J[:, usable], fit.w * residual_N, rcond=None)[0]
+    return step
+
+
+def _refitted(fit, residual_N) -> np.ndarray:
+    """The hold residuals ``residual_N`` [N] after one linearised refit of ``fit``'s
+    parameters (:func:`_step`): what their Jacobian cannot take away."""
+    return residual_N + fit.jacobian @ _step(fit, residual_N)
 
 
 def _hold_change(source, runs, fit, differences) -> np.ndarray:
