@@ -335,6 +335,15 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             free, free_boot, rubber, free_terms, free_source = _rubber_ratio(
                 source, fe, runs, best, seed, braid)
         notes += _outside_box(caught)
+        if rubber.get("box_stopped") and goodness.assess(runs, best).misfit:
+            # a misfit the ratio might lift, where the surrogate's training stopped it: the FE
+            # model's search has the ratio's whole range (a fit within the noise keeps the note)
+            notify(f"C01's share reached the surrogate's box before the runs fixed it: the "
+                   f"ratio tested with {fe.name} (one sweep per run and evaluation)")
+            notes.append(f"{rubber['why']}: the ratio tested with the FE model over its whole "
+                         "range")
+            free, free_boot, rubber, free_terms, free_source = _rubber_ratio(
+                fe, fe, runs, best, seed, braid)
         if rubber["separated"]:
             one_scale = best
             best, boot, terms, source = free, free_boot, free_terms, free_source

@@ -568,15 +568,10 @@ def _box_cut(rubber: dict) -> str:
 
 def ratio_first(rubber: dict) -> str:
     """What a misfit's verdict says first when the rubber's ratio was not tested as the runs
-    can test it: C01's share stopped by the surrogate's box (the FE model's search has the
-    whole range), or the runs reject Silastic S's ratio but one rubber scale at it was kept
+    can test it: the runs reject Silastic S's ratio but one rubber scale at it was kept
     because the braid is in doubt (a braid the model does not have bends the curve as another
     ratio would; the braid given, the ratio is fitted) or the bench's declared tolerances; else
     ''."""
-    if rubber.get("box_stopped"):
-        return ("first, C01's share reached the surrogate's box before the runs fixed it: "
-                "identify again with --search model (the FE model searches the ratio's whole "
-                "range; slower); then ")
     if rubber.get("rejects_silastic_ratio_but_for_declared") and not rubber.get("separated"):
         return ("first, the runs want a rubber ratio other than Silastic S's, kept only "
                 "because of the bench's declared tolerances (the note on C10 and C01): where "
