@@ -3,9 +3,13 @@
 - :func:`braid_lock`: whether ``muscle.eps`` shortens the braid past its locking angle, where
   Equation 2 leaves its range and the muscle pulls little or nothing (``mkm acquire`` refuses
   such a run unless told ``--allow-past-lock``; ``mkm check`` warns);
-- :func:`loadcell_warning`: whether the muscle's expected force at the highest planned pressure
-  (Equation 2, the paper's model) reaches the force interlock, which would stop the run there.
-  A warning, not a refusal: the interlock protects the cell.
+- :func:`loadcell_warning`: whether the muscle's force at the highest planned pressure may reach
+  the force interlock, which stops the run there: pre-conditioning goes to that pressure first,
+  so before any step is recorded. The force is bounded from above by Equation 2 on the braid's
+  diameter ``D0 + 2 (t0 + gap)`` (the FE model's force at eps 0; above it at any eps, where the
+  rubber takes its share) at the strongest muscle the declared tolerances allow: the paper's
+  form on the inner diameter ``D0`` is (1 + 2 t0 / D0)^2 lower, 1.7 times on a 5 mm tube with a
+  0.8 mm wall. A warning, not a refusal: the interlock protects the cell.
 
 Both read one braid angle: the muscle's ``theta0_deg`` when the configuration gives it, else
 the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says which).
@@ -15,6 +19,8 @@ from __future__ import annotations
 
 from mkm.fem.eq2 import BraidLock, chou_hannaford
 from mkm.fem.eq2 import braid_lock as fem_braid_lock
+from mkm.fem.limits import LIMITS
+from mkm.fem.tolerances import Tolerances
 
 
 def muscle_lock(config) -> BraidLock:
@@ -32,26 +38,38 @@ def braid_lock(config) -> str | None:
             "little or nothing there")
 
 
-def expected_force_N(config, pressure_bar: float | None = None) -> float:
-    """Equation 2's force [N] of the muscle at ``pressure_bar`` (default: the highest planned
-    pressure), 0 past the lock."""
-    m = config.muscle
+def expected_force_N(config, pressure_bar: float | None = None, strongest: bool = False) -> float:
+    """Equation 2's force [N] on the braid's diameter ``D0 + 2 (t0 + gap)`` at ``pressure_bar``
+    (default: the highest planned pressure), 0 past the lock: the FE model's force at eps 0, an
+    upper bound of it at any eps. ``strongest``: at the muscle's declared tolerances' strongest
+    (``D0`` and ``t0`` at their upper bounds, ``theta0`` and ``eps`` at their lower ones)."""
+    m, lock = config.muscle, muscle_lock(config)
     if pressure_bar is None:
         pressure_bar = max(config.sequence.pressures_bar)
-    force = chou_hannaford(pressure_bar, m.D0_mm, m.eps, muscle_lock(config).theta0_deg)
+    tol = m.tolerances if strongest else Tolerances(0.0, 0.0, 0.0, 0.0, 0.0)
+    braid_mm = m.D0_mm + tol.D0_mm + 2 * (m.t0_mm + tol.t0_mm + (m.gap_mm or 0.0))
+    theta0 = max(lock.theta0_deg - tol.theta0_deg, LIMITS["theta0_deg"][0])
+    force = chou_hannaford(pressure_bar, braid_mm, max(m.eps - tol.eps, 0.0), theta0)
     return max(float(force), 0.0)
 
 
 def loadcell_warning(config) -> str | None:
-    """The message when the expected force reaches the force interlock, else None."""
-    force, limit = expected_force_N(config), config.force_limit_N
+    """The message when the muscle's force may reach the force interlock, else None: how much,
+    from which planned step, that pre-conditioning stops the run before its first step, and the
+    capacity a cell needs."""
+    force, limit = expected_force_N(config, strongest=True), config.force_limit_N
     if force < limit:
         return None
-    top = max(config.sequence.pressures_bar)
-    return (f"the muscle develops about {force:.0f} N at {top:g} bar (Equation 2), beyond the "
-            f"force interlock at {limit:.0f} N ({config.safety.force_limit_fraction:g} x "
-            f"loadcell.capacity_N={config.loadcell.capacity_N:g}): the run will stop there; use "
-            "a larger load cell")
+    seq, top = config.sequence, max(config.sequence.pressures_bar)
+    first = min(p for p in seq.pressures_bar if expected_force_N(config, p, True) >= limit)
+    where = (f"pre-conditioning to {top:g} bar stops the run before its first step"
+             if seq.preconditioning_cycles else
+             f"the run stops at its first step at {first:g} bar")
+    return (f"the muscle may develop {force:.0f} N at {top:g} bar (Equation 2 on the braid's "
+            f"diameter, at its declared tolerances' strongest), beyond the force interlock at "
+            f"{limit:.0f} N ({config.safety.force_limit_fraction:g} x loadcell.capacity_N="
+            f"{config.loadcell.capacity_N:g}) from {first:g} bar: {where}; use a load cell of "
+            f"at least {force / config.safety.force_limit_fraction:.0f} N")
 
 
 def warnings(config) -> list[str]:

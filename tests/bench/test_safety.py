@@ -947,12 +947,49 @@ def test_a_cell_the_muscle_overloads_is_a_warning_from_check(tmp_path, mkm_cli):
         .replace("tare_max_shift_N = 100.0", "tare_max_shift_N = 20.0")
     (tmp_path / "small.toml").write_text(text)
     code, out, err = mkm_cli(["check", "--config", str(tmp_path / "small.toml")])
-    # Equation 2 at the braid lock's angle (the FE model's calibrated 33.0 deg): 662 N at
-    # 2.5 bar, against an interlock at 270 N
+    # Equation 2 on the braid's diameter at the strongest muscle of the default tolerances
+    # (D0 30.3, t0 3.1: 36.5 mm; the FE model's calibrated 33.0 deg less 1 deg; eps 0): 1079 N
+    # at 2.5 bar against an interlock at 270 N, reached from 0.75 bar on
     assert code == 0 and "warning" not in out
     assert err.count("mkm check: warning:") == 1
-    assert "develops about 662 N at 2.5 bar (Equation 2), beyond the force interlock at 270 N" \
-        in err
+    assert "may develop 1079 N at 2.5 bar (Equation 2 on the braid's diameter, at its declared " \
+        "tolerances' strongest), beyond the force interlock at 270 N (0.9 x " \
+        "loadcell.capacity_N=300) from 0.75 bar: pre-conditioning to 2.5 bar stops the run " \
+        "before its first step; use a load cell of at least 1199 N" in err
+
+
+def test_a_thick_walled_tube_that_overloads_its_cell_is_warned_of(tmp_path, mkm_cli):
+    """A 5 mm tube with a 0.8 mm wall at 38 deg up to 8 bar on a 50 N cell (interlock 45 N):
+    the FE model's force at eps 0 is Equation 2 on the braid's diameter, 62 N at 8 bar, which
+    pre-conditioning reaches before any step; Equation 2 on the inner diameter says 36 N, and
+    check called the bench ready while acquire stopped at the interlock."""
+    from mkm.bench.preflight import expected_force_N
+    from mkm.fem import Axisym
+    from mkm.fem.eq2 import chou_hannaford
+
+    tiny = load_config().replace(
+        muscle={"id": "tiny", "D0_mm": 5.0, "t0_mm": 0.8, "L0_mm": 50.0, "theta0_deg": 38.0},
+        loadcell={"capacity_N": 50.0, "sensitivity_N_per_V": 5.0},
+        regulator={"max_pressure_bar": 8.0, "full_scale_bar": 10.0,
+                   "monitor_accuracy_bar": 0.1},
+        safety={"tare_max_std_N": 0.2, "tare_max_shift_N": 2.0, "vent_below_bar": 0.15},
+        sequence={"pressures_bar": tuple(0.5 * k for k in range(1, 17))})
+    fe_N = float(Axisym(mesh="coarse", theta0_deg=38.0, L0_mm=50.0)
+                 .predict([8.0], 5.0, 0.8, 0.0).force_N[0])
+    assert expected_force_N(tiny, 8.0) == pytest.approx(fe_N, rel=1e-6) == pytest.approx(62.31,
+                                                                                     abs=0.01)
+    assert float(chou_hannaford(8.0, 5.0, 0.0, 38.0)) < tiny.force_limit_N < fe_N
+    (tmp_path / "tiny.toml").write_text(tiny.effective_text())
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "tiny.toml")])
+    # at the default tolerances' strongest: D0 5.3, t0 0.9 (a 7.1 mm braid), 37 deg, eps 0
+    assert float(chou_hannaford(8.0, 7.1, 0.0, 37.0)) == pytest.approx(79.9, abs=0.05)
+    assert code == 0 and "may develop 80 N at 8 bar (Equation 2 on the braid's diameter" in err
+    assert "beyond the force interlock at 45 N (0.9 x loadcell.capacity_N=50) from 5 bar: " \
+        "pre-conditioning to 8 bar stops the run before its first step; use a load cell of at " \
+        "least 89 N" in err
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "tiny.toml"), "--pressures",
+                            "0.5:4:0.5"])
+    assert code == 0 and "warning" not in err  # 37 N at most at 4 bar
 
 
 # 4. bounded runs ---------------------------------------------------------------------------
