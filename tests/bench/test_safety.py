@@ -492,6 +492,31 @@ def _drifting(drift_N_per_min: float):
         sim={"truth": {"loadcell_drift_N_per_min": drift_N_per_min}})
 
 
+def test_a_muscle_that_trips_the_force_interlock_as_it_rises_verifies_its_vent(tmp_path):
+    # A 60 mm tube with a 4 mm wall at 18 deg on the example's 1961 N cell: pre-conditioning's
+    # first 0.1 s towards 2 bar makes about 1100 N, the next reading clips at the cell's rail
+    # and the interlock vents. The vent check weighed the load cell after the vent (the
+    # muscle's last tens of newtons as the regulator exhausts it) against the median of the
+    # half second before it, the tare's readings, not yet taken from the tare's zero (the
+    # amplifier's offset, 9.8 N here): "the muscle still pulls ... VENT BY HAND", exit 4, on a
+    # vented bench. From the tare's zero those readings are the muscle at rest, within the
+    # cell's noise, which tells nothing: the monitor verifies the vent.
+    c = load_config().replace(
+        muscle={"D0_mm": 60.0, "t0_mm": 4.0, "L0_mm": 800.0, "theta0_deg": 18.0},
+        regulator={"max_pressure_bar": 2.0}, sequence={"pressures_bar": (1.0, 2.0)},
+        sim={"fe_mesh": "coarse", "loadcell_offset_V": 0.05, "truth": {"theta0_deg": 18.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "aborted" and result.exit_code == 1, result.reason
+    assert result.reason.startswith("force interlock: ") and result.reason.endswith("; vented")
+    assert not result.manual_vent_required
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"] and run.steps.empty  # no step was reached
+    tare = run.samples[run.samples["phase"] == "tare"]
+    assert tare["force_N"].median() == pytest.approx(0.05 * 196.133, abs=1.0)  # as recorded
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
 def test_a_slack_muscle_on_a_drifting_load_cell_zero_verifies_its_vent(tmp_path):
     # The load cell's amplifier warms up: its zero drifts 1.3 N/min from the start. The run
     # ends on 0.25 bar, below the muscle's threshold: slack, the cell reads its zero, moved by
