@@ -1014,7 +1014,38 @@ def test_a_thick_walled_tube_that_overloads_its_cell_is_warned_of(tmp_path, mkm_
         "least 89 N" in err
     code, _, err = mkm_cli(["check", "--config", str(tmp_path / "tiny.toml"), "--pressures",
                             "0.5:4:0.5"])
-    assert code == 0 and "warning" not in err  # 37 N at most at 4 bar
+    assert code == 0 and "warning" not in err  # 40 N at most at 4 bar, 40 % of the capacity
+
+
+def test_a_cell_far_larger_than_the_muscle_is_a_warning_from_check(tmp_path, mkm_cli):
+    """The same 5 mm tube on the packaged 1961 N cell: its largest force, 62.3 N at 8 bar, is
+    3.2 % of the capacity, below the tenth under which a cell is the wrong size (its noise, ADC
+    step, non-linearity and zero drift are fractions of its capacity); check called it ready
+    without a word while its expected uncertainty reached tens of % of the force at the lowest
+    steps. The cell that suits it: from what the interlock needs (88.8 N, the strongest muscle
+    over 0.9) to ten times the force."""
+    tiny = load_config().replace(
+        muscle={"id": "tiny", "D0_mm": 5.0, "t0_mm": 0.8, "L0_mm": 50.0, "theta0_deg": 38.0},
+        regulator={"max_pressure_bar": 8.0, "full_scale_bar": 10.0,
+                   "monitor_accuracy_bar": 0.1},
+        safety={"vent_below_bar": 0.15},
+        sequence={"pressures_bar": tuple(0.5 * k for k in range(1, 17))})
+    (tmp_path / "tiny.toml").write_text(tiny.effective_text())
+    code, out, err = mkm_cli(["check", "--config", str(tmp_path / "tiny.toml")])
+    assert code == 0 and err.count("mkm check: warning:") == 1
+    assert "the muscle develops at most about 62.3 N at 8 bar (Equation 2 on the braid's " \
+        "diameter at eps 0), 3.2 % of loadcell.capacity_N=1961.33: the cell's noise, ADC step " \
+        "and data-sheet errors, fractions of its capacity, weigh on every force (`mkm check`'s " \
+        "expected uncertainty); a cell of 88.8 to 623 N capacity suits this muscle" in err
+    lowest = next(line.split() for line in out.splitlines() if line.split()[:1] == ["0.5"])
+    assert float(lowest[3]) > 20.0  # U(F) [%] at 0.5 bar
+    # a run at eps 20 % of the same muscle on a cell that suits it at eps 0: no word
+    fitting = tiny.replace(muscle={"eps": 0.2}, loadcell={"capacity_N": 200.0,
+                                                         "sensitivity_N_per_V": 20.0},
+                           safety={"tare_max_std_N": 2.0, "tare_max_shift_N": 20.0})
+    (tmp_path / "fits.toml").write_text(fitting.effective_text())
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "fits.toml")])
+    assert code == 0 and "warning" not in err
 
 
 # 4. bounded runs ---------------------------------------------------------------------------
