@@ -10,10 +10,12 @@
   rubber takes its share) at the strongest muscle the declared tolerances allow: the paper's
   form on the inner diameter ``D0`` is (1 + 2 t0 / D0)^2 lower, 1.7 times on a 5 mm tube with a
   0.8 mm wall. A warning, not a refusal: the interlock protects the cell. So is a cell the
-  muscle's largest force uses less than a tenth of (:func:`oversized_warning`).
+  muscle's largest force uses less than a tenth of (:func:`oversized_warning`);
+- :func:`practical_range_warning`: whether the declared muscle or the planned pressures leave the
+  practical range, where every model's force is an extrapolation.
 
-Both read one braid angle: the muscle's ``theta0_deg`` when the configuration gives it, else
-the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says which).
+The first two read one braid angle: the muscle's ``theta0_deg`` when the configuration gives
+it, else the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says which).
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ from __future__ import annotations
 from mkm.bench.config import MIN_FORCE_LIMIT_FRACTION
 from mkm.fem.eq2 import BraidLock, chou_hannaford
 from mkm.fem.eq2 import braid_lock as fem_braid_lock
-from mkm.fem.limits import LIMITS
+from mkm.fem.limits import LIMITS, PRACTICAL_RANGE
 from mkm.fem.tolerances import Tolerances
 
 
@@ -98,6 +100,24 @@ def oversized_warning(config) -> str | None:
             "capacity suits this muscle")
 
 
+def practical_range_warning(config) -> str | None:
+    """The message when the declared muscle or the highest planned pressure lies outside the
+    practical range every model is validated over (:data:`mkm.fem.limits.PRACTICAL_RANGE`),
+    else None: the run records it all the same, every model's force for it extrapolates."""
+    m = config.muscle
+    numbers = {k: getattr(m, k) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg", "C10_MPa",
+                                          "C01_MPa") if getattr(m, k) is not None}
+    outside = PRACTICAL_RANGE.violations(pressure_bar=max(config.sequence.pressures_bar),
+                                         **numbers)
+    if not outside:
+        return None
+    return (f"the muscle lies outside the practical range every model is validated over "
+            f"({'; '.join(outside)}): its runs are recorded all the same, but every model's "
+            "force for them (the report's, identify's, the simulated bench's) is an "
+            "extrapolation (`mkm models` states the range)")
+
+
 def warnings(config) -> list[str]:
-    """Every preflight message for ``config`` (braid lock, load cell)."""
-    return [w for w in (braid_lock(config), loadcell_warning(config)) if w]
+    """Every preflight message for ``config`` (braid lock, load cell, practical range)."""
+    return [w for w in (braid_lock(config), loadcell_warning(config),
+                        practical_range_warning(config)) if w]

@@ -1048,6 +1048,27 @@ def test_a_cell_far_larger_than_the_muscle_is_a_warning_from_check(tmp_path, mkm
     assert code == 0 and "warning" not in err
 
 
+def test_a_muscle_outside_the_practical_range_is_a_warning_from_check_and_acquire(
+        tmp_path, mkm_cli):
+    # a braid woven at 45 deg, past the practical range's 40: check called it ready without a
+    # word, where fem solve and design say every model extrapolates there
+    steep = load_config().replace(muscle={"theta0_deg": 45.0},
+                                  sequence={"pressures_bar": (0.5,), "preconditioning_cycles": 0})
+    (tmp_path / "steep.toml").write_text(steep.effective_text())
+    said = ("the muscle lies outside the practical range every model is validated over "
+            "(theta0_deg=45 outside [15, 40]): its runs are recorded all the same, but every "
+            "model's force for them (the report's, identify's, the simulated bench's) is an "
+            "extrapolation (`mkm models` states the range)")
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "steep.toml")])
+    assert code == 0 and f"mkm check: warning: {said}\n" in err
+    notes = []
+    result = acquire(steep, out_root=tmp_path / "runs", notify=notes.append)
+    assert result.status == "complete" and f"warning: {said}" in notes
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "steep.toml"), "--pressures",
+                            "9"])
+    assert code == 2  # beyond the regulator: refused before any warning
+
+
 # 4. bounded runs ---------------------------------------------------------------------------
 
 @pytest.mark.parametrize("section, values, message", [
