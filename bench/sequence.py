@@ -305,8 +305,7 @@ class Staircase:
         if self.config.regulator.electronic:  # a manual regulator's readings are typed
             tare.update(vented_monitor(monitor))
             check_vented_monitor(tare, self.config)
-        self.acq.tare_offset_V = tare["offset_V"]
-        self.acq.tare_std_V = tare["std_V"]
+        self.acq.set_tare(tare["offset_V"], tare["std_V"])
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
         for warning in (one_code_warning(tare, self.config), rest_warning(tare, self.config),
                         settle_warning(tare["std_N"], self.config),
