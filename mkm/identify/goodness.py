@@ -38,7 +38,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy import stats
+from scipy import optimize, stats
 
 from mkm.fem.calibration import THRESHOLD_FLOOR_FRACTION, line_above_threshold
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure
@@ -73,6 +73,9 @@ class Branch:
     runs_p: float  # one-sided: P(this few runs | independent signs)
     rms_residual_N: float
     rms_noise_N: float
+    #: each step's mean residual and its noise [N] (the discrepancy's estimate takes them)
+    residual_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
+    noise_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
 
     @property
     def reduced(self) -> float:
@@ -135,14 +138,23 @@ class Goodness:
 
     @property
     def discrepancy_rms_N(self) -> float:
-        """The residual the noise does not explain, over every step (root of the mean square
-        residual less the mean square noise); 0 when the model fits within the noise."""
-        steps = sum(b.steps for b in self.branches)
-        if not self.misfit or steps == 0:
+        """The residual the noise does not explain: the standard deviation ``d`` [N] of a
+        discrepancy that, added to every step's own noise ``s``, brings the steps' residuals
+        ``r`` to their noise (``sum r^2 / (s^2 + d^2)`` = the number of steps: each step
+        weighed by its own noise, so a slack step's small residual far beyond its small noise
+        counts as the chi-square counts it, not under a loaded step's larger noise); 0 when
+        the model fits within the noise."""
+        r = np.concatenate([b.residual_N for b in self.branches] or [np.zeros(0)])
+        s = np.concatenate([b.noise_N for b in self.branches] or [np.zeros(0)])
+        if not self.misfit or r.size == 0:
             return 0.0
-        excess = sum(b.steps * (b.rms_residual_N ** 2 - b.rms_noise_N ** 2)
-                     for b in self.branches) / steps
-        return math.sqrt(max(excess, 0.0))
+
+        def excess(d2: float) -> float:
+            return float(np.sum(r**2 / (s**2 + d2))) - r.size
+
+        if excess(0.0) <= 0.0:
+            return 0.0
+        return math.sqrt(optimize.brentq(excess, 0.0, float(np.sum(r**2)), xtol=1e-12))
 
     def line(self) -> str | None:
         """One line when the model does not fit within the noise (None when it does)."""
@@ -293,7 +305,8 @@ def assess(runs, fit) -> Goodness:
             branches.append(Branch(
                 run.name, branch, int(pick.sum()), chi2, nu,
                 float(stats.chi2.sf(chi2, nu)) if nu > 0 else math.nan, n_runs, runs_p,
-                float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2)))))
+                float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2))), r,
+                np.hypot(s, tare)))
     if not branches:
         return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE, left_out=left_out)
     chi2 = sum(b.chi2 for b in branches)

@@ -267,10 +267,12 @@ class Identification:
         cell's tolerance inside), the shift of each model-form term and each end of an assumed
         rubber ratio (``terms``: ``kind`` and ``shift``, evaluated by the band at the moved
         parameters), the load cell's tolerance itself, and on a misfit the residual the steps'
-        noise does not explain (``misfit_rms_N``)."""
+        noise does not explain (``misfit_rms_N``), the covariance widened as the intervals are
+        (by the Birge ratio)."""
         names = [n for n in STATIC_NAMES if n in self.fit.names]
         index = [self.fit.names.index(n) for n in names]
-        covariance = self.bootstrap["covariance"][np.ix_(index, index)]
+        birge = self.goodness.birge_ratio if self.goodness else 1.0
+        covariance = birge**2 * self.bootstrap["covariance"][np.ix_(index, index)]
         terms = [{"what": term["what"], "kind": term["kind"], "shift": term["shift"]}
                  for term in (*self.model_form.values(),
                               *self.rubber.get("assumed_ratio_terms", {}).values())
