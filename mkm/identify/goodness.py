@@ -50,8 +50,9 @@ from mkm.identify.runs import shown_effects, step_slopes
 #: over the number of branches)
 MISFIT_P = 1e-3
 #: a slack step's mean force called a zero error beyond this many standard errors and this
-#: force [N] (the packaged cell's ADC step is 0.24 N)
-ZERO_SIGMAS, ZERO_FLOOR_N = 5.0, 0.5
+#: many of the run's load cell's ADC steps (a quantised zero), or this force [N] for a table
+#: (no cell recorded)
+ZERO_SIGMAS, ZERO_FLOOR_STEPS, ZERO_FLOOR_N = 5.0, 2.0, 0.5
 #: a step whose fitted force is below this [N] is slack
 SLACK_N = 1e-6
 #: runs-test probability below which the residuals are said to have structure
@@ -104,8 +105,8 @@ class Goodness:
     fitted: tuple[str, ...] = ()  # the fit's parameters: a misfit names what it did not fit
     shown: tuple[str, ...] = ()  # the --params groups of what the runs show (SHOWN)
     #: per run, the settled steps where the fitted muscle is slack: (run, steps, their mean
-    #: measured force [N], its standard error [N])
-    slack: list[tuple[str, int, float, float]] = field(default_factory=list)
+    #: measured force [N], its standard error [N], the smallest force called a zero error [N])
+    slack: list[tuple[str, int, float, float, float]] = field(default_factory=list)
 
     @property
     def reduced(self) -> float:
@@ -188,13 +189,14 @@ class Goodness:
 
     def zero_line(self) -> str | None:
         """One line when the fit misfits and a run's steps where the fitted muscle is slack
-        read a force beyond :data:`ZERO_SIGMAS` standard errors and :data:`ZERO_FLOOR_N`: a
+        read a force beyond :data:`ZERO_SIGMAS` standard errors and :data:`ZERO_FLOOR_STEPS`
+        of the cell's ADC steps (:data:`ZERO_FLOOR_N` for a table): a
         slack muscle pulls nothing, so what they read is the load cell's zero (a tare left
         out, a drift) or a preload the model does not have."""
         if not self.misfit:
             return None
-        off = [(run, n, F) for run, n, F, se in self.slack
-               if abs(F) > max(ZERO_SIGMAS * se, ZERO_FLOOR_N)]
+        off = [(run, n, F) for run, n, F, se, floor in self.slack
+               if abs(F) > max(ZERO_SIGMAS * se, floor)]
         if not off:
             return None
         shown = "; ".join(f"run {run} {F:+.3g} N over {n} step{'s' if n > 1 else ''}"
@@ -291,7 +293,9 @@ def assess(runs, fit) -> Goodness:
         if idle.any():
             se = math.sqrt(float(np.sum(noise[idle] ** 2)) / idle.sum() ** 2 + tare**2)
             slack.append((run.name, int(idle.sum()),
-                          float(np.mean(measured[here][idle])) - zero_N, se))
+                          float(np.mean(measured[here][idle])) - zero_N, se,
+                          ZERO_FLOOR_N if run.force_step_N is None else
+                          ZERO_FLOOR_STEPS * run.force_step_N))
         for direction, branch in BRANCHES.items():
             pick = (steps["direction"].to_numpy() == direction) & usable
             if not pick.any():

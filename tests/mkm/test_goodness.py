@@ -324,9 +324,29 @@ def test_a_slack_muscle_reading_a_force_offers_the_fit_of_the_zero_until_it_is_f
 
     def note(fitted):
         return goodness.Goodness([branch], 500.0, nu, fitted=fitted,
-                                 slack=[("r", 2, 2.9, 0.05)]).zero_line()
+                                 slack=[("r", 2, 2.9, 0.05, 0.5)]).zero_line()
 
     assert "read a force (run r +2.9 N over 2 steps)" in note(("theta0_deg",))
     assert "fit it (--params ...,zero" in note(("theta0_deg",))
     with_zero = note(("theta0_deg", "force_zero_N"))
     assert "beyond the fitted zero" in with_zero and "--params" not in with_zero
+
+
+def test_a_zero_error_is_judged_against_the_runs_own_load_cell(in_family):
+    # a 5 mm tube on a 100 N cell (10 N/V: an ADC step of 0.012 N) whose zero drifted: its
+    # slack steps read +0.128 N, 60 standard errors of 0.002 N, and the note said nothing
+    # because a fixed 0.5 N floor (two steps of the packaged cell) hid it
+    nu = 10.0
+    branch = goodness.Branch("tiny", "loading", 10, 500.0, nu, float(stats.chi2.sf(500.0, nu)),
+                             5, 0.5, 0.1, 0.1)
+    runs, _ = in_family
+    cell = runs[0].path.joinpath("run.json")
+    sensitivity = json.loads(cell.read_text(encoding="utf-8"))["calibration"]["loadcell"][
+        "sensitivity_N_per_V"]
+    # one step of the USB-6001's 14-bit +-10 V input, through the cell's sensitivity
+    assert runs[0].force_step_N == pytest.approx(20.0 / 2**14 * sensitivity)
+    floor = goodness.ZERO_FLOOR_STEPS * 20.0 / 2**14 * 10.0
+    assert "run tiny +0.128 N over 8 steps" in goodness.Goodness(
+        [branch], 500.0, nu, slack=[("tiny", 8, 0.128, 0.002, floor)]).zero_line()
+    assert goodness.Goodness([branch], 500.0, nu, slack=[
+        ("table", 8, 0.128, 0.002, goodness.ZERO_FLOOR_N)]).zero_line() is None
