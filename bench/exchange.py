@@ -764,7 +764,9 @@ def _groups(recognition: Recognition, select: str | None, several_sheets: bool) 
         groups.append(_Group(recognition, rows, ", ".join(parts) or table.source.name,
                              dict(zip(labels, key, strict=True))))
     if not groups:
-        raise ValueError(f"{table.name} has no row to import")
+        raise ValueError(f"{table.name} has no row to import" + "".join(
+            f" (the file is damaged or cut short: npTDMS: {warned})"
+            for warned in table.read_warnings[:1]))
     return groups
 
 

@@ -747,8 +747,9 @@ def _read_tdms(path: Path, group: str | None) -> list[RawTable]:
               for name, properties, channels in groups
               if group is not None or any(n for *_, n, _ in channels)]
     if not tables:
-        raise ValueError(f"{path.name} holds no samples: expected a group of channels "
-                         "(time, pressure, force) with their values")
+        raise ValueError(f"{path.name} holds no samples" + "".join(
+            f" (the file is damaged or cut short: npTDMS: {warned})" for warned in kept.lines[:1])
+            + ": expected a group of channels (time, pressure, force) with their values")
     for table in tables:
         table.read_warnings = list(dict.fromkeys(kept.lines))[:TDMS_WARNINGS_KEPT]
     return tables

@@ -659,23 +659,45 @@ def test_a_damaged_tdms_file_is_one_line(tmp_path, mkm_cli):
                    "SignalExpress or FlexLogger writes it\n")
 
 
-def test_a_tdms_file_cut_short_keeps_what_it_holds_and_says_so(tmp_path, mkm_cli):
-    # the logger stopped mid-write: npTDMS printed its warnings raw, beside mkm's lines
+def test_a_tdms_file_cut_short_keeps_what_it_holds_and_says_so(tmp_path):
+    # the logger stopped mid-write: npTDMS printed its warnings raw, beside mkm's lines (a
+    # process of its own: npTDMS's handler writes to the stderr it found on import)
+    import subprocess
+    import sys
+
     levels = [0.5, 1.0]
     t, p, force, _ = _staircase_10_hz(levels, tare_N=0.0)
     wave = {"wf_increment": 0.1, "wf_start_offset": 0.0}
     path = _tdms(tmp_path / "cut.tdms", {"Messung": {
         "Pressure": (p, {**wave, "unit_string": "bar"}),
         "Force": (force, {**wave, "unit_string": "N"})}})
-    path.write_bytes(path.read_bytes()[:-8 * 40])  # the last 40 forces lost
-    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
-    assert "[nptdms" not in err
+    whole = path.read_bytes()
+
+    def mkm_import(kept_bytes: int):
+        path.write_bytes(whole[:kept_bytes])
+        done = subprocess.run([sys.executable, "-m", "mkm", "import", str(path), *MUSCLE,
+                               "--eps", "0", "--out", str(tmp_path / "runs")],
+                              capture_output=True, text=True, timeout=120, check=False)
+        assert "[nptdms" not in done.stderr and "Traceback" not in done.stderr
+        return done
+
+    done = mkm_import(len(whole) - 8 * 40)  # the last 40 forces lost (a channel's block each)
+    assert done.returncode == 0, done.stderr
     assert ("the file is damaged or cut short, read as far as it goes (npTDMS: Last segment "
-            "of file has less data than expected") in err
+            "of file has less data than expected") in done.stderr
     # the pressures all read, the forces but the last 40: those rows skipped, named
+    assert "40 row(s) with a blank cell skipped: C" in done.stderr
+    run = load_run(done.stdout.strip())
     assert len(run.samples) == t.size - 40
-    assert "40 row(s) with a blank cell skipped: C" in err
+    np.testing.assert_allclose(run.samples["force_N"], force[:-40] - run.meta.imported_from[
+        "tare_N"], rtol=5e-6, atol=1e-6)  # 6 significant digits kept
     assert run.meta.imported_from["read_warnings"][0].startswith("Last segment of file")
+    # cut within the pressures: no force read at all, said with the file's damage
+    done = mkm_import(len(whole) - 8 * (t.size + 1))
+    assert done.returncode == 2 and done.stderr == (
+        "mkm import: error: cut.tdms, group 'Messung' has no row to import (the file is "
+        "damaged or cut short: npTDMS: Last segment of file has less data than expected, will "
+        "attempt to read to the end of the file)\n")
 
 
 def test_tdms_waveforms_at_two_rates_are_refused(tmp_path, mkm_cli):
