@@ -80,7 +80,7 @@ def register(subparsers) -> None:
                      "at k/HZ seconds, read as a time series, e.g. 100 or 1kHz; recorded in "
                      "run.json (default: none; the rows of a record without time are taken as "
                      "evenly spaced, untimed)")
-    imp.add_argument("--sheet", "--group", default=None,
+    imp.add_argument("--sheet", "--group", default=None, metavar="NAME",
                      help="the workbook's sheet, or the TDMS file's group (default: every "
                      "sheet or group with a pressure and a force column, one run each)")
     imp.add_argument("--muscle", default=None, metavar="NAME",
