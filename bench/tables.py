@@ -771,7 +771,8 @@ class _Kept(logging.Filter):
 def _tdms_table(path: Path, group: str, properties: dict, channels: list) -> RawTable:
     """A TDMS group as a table: a column per channel (``name, properties, length, values``),
     its unit from the first of :data:`TDMS_UNIT_PROPERTIES` that reads as one, after a
-    ``Time [s]`` column where the channels are waveforms (:data:`TDMS_WAVEFORM`); a channel
+    ``Time [s]`` column where the channels are waveforms (:data:`TDMS_WAVEFORM`) and none is
+    named a time; a channel
     shorter than the others ends in blank cells. Row 1 is the header, sample ``k`` row
     ``k + 2``, as the group reads once exported to a sheet."""
     where = f"{path.name}, group {group!r}"
@@ -805,10 +806,13 @@ def _tdms_table(path: Path, group: str, properties: dict, channels: list) -> Raw
             raise ValueError(f"{where}: channel {first!r}'s wf_increment {increment_s:g} s from "
                              f"wf_start_offset {start_s:g} s: expected a positive sampling "
                              "interval in seconds")
-        header.insert(0, "Time [s]")
-        columns.insert(0, (start_s + increment_s * np.arange(rows)).tolist())
-        table_properties["waveform"] = _tdms_properties(
-            {key: value for key, value in props.items() if key.startswith("wf_")})
+        # a channel of the times (LabVIEW's Write To TDMS of a waveform's t beside its Y) is
+        # the clock itself
+        if not any(ROLES["time"].matches(parse_header(h)[0]) for h in header):
+            header.insert(0, "Time [s]")
+            columns.insert(0, (start_s + increment_s * np.arange(rows)).tolist())
+            table_properties["waveform"] = _tdms_properties(
+                {key: value for key, value in props.items() if key.startswith("wf_")})
     cells = [list(row) for row in itertools.zip_longest(*columns, fillvalue="")]
     return RawTable(path, group, header, 1, cells, list(range(2, rows + 2)),
                     properties=table_properties)

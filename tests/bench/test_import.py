@@ -596,15 +596,18 @@ def test_a_tdms_files_waveforms_at_10_hz_with_a_tare_segment(tmp_path, mkm_cli):
         assert step.force_N_mean == pytest.approx(truth[hold].mean(), abs=0.15)
 
 
-def test_a_tdms_group_with_a_time_channel_reads_as_its_text_export(tmp_path, mkm_cli):
-    # LabVIEW's Write To TDMS of arrays: a time channel beside the readings, a force in lbf
-    frame, _, truth = _ramp()
+@pytest.mark.parametrize("wave", [{}, {"wf_increment": 0.01, "wf_start_offset": 0.0}])
+def test_a_tdms_group_with_a_time_channel_reads_as_its_text_export(wave, tmp_path, mkm_cli):
+    # LabVIEW's Write To TDMS of arrays, or of waveforms with their times as a channel: the
+    # time channel is the clock (beside it, the waveforms' time was a second 'Time [s]',
+    # refused), a force in lbf
+    frame, _, _ = _ramp()
     csv = tmp_path / "ramp.csv"
     frame.to_csv(csv, index=False)
     path = _tdms(tmp_path / "ramp.tdms", {"Untitled": {
-        "Time": (frame["t (s)"], {"unit_string": "s"}),
-        "Pressure": (frame["p_psi"], {"unit_string": "psi"}),
-        "Force": (frame["Force (N)"] / LBF_N, {"unit_string": "lbf"})}})
+        "Time": (frame["t (s)"], {**wave, "unit_string": "s"}),
+        "Pressure": (frame["p_psi"], {**wave, "unit_string": "psi"}),
+        "Force": (frame["Force (N)"] / LBF_N, {**wave, "unit_string": "lbf"})}})
     (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
     (text,), _ = _import(mkm_cli, csv, *MUSCLE, "--eps", "12.2%")
     assert ("'Time [s]' -> time [s], 'Pressure [psi]' -> pressure [psi -> bar], "
