@@ -703,6 +703,28 @@ def test_a_tdms_file_cut_short_keeps_what_it_holds_and_says_so(tmp_path):
         "attempt to read to the end of the file)\n")
 
 
+def test_an_export_of_a_tdms_record_without_time_carries_its_group(tmp_path, mkm_cli):
+    # a 10 Hz ramp logged as arrays without a time: its run folder keeps the file, the export's
+    # sheet is its group as mkm import read it, which imports again to the same steps
+    rng = np.random.default_rng(8)
+    n = 600
+    p = np.interp(np.arange(n), [0, 40, 320, n - 1], [0, 0, 2.0, 0])
+    path = _tdms(tmp_path / "ramp.tdms", {"Daten": {
+        "Druck": (np.abs(p + rng.normal(0, 0.003, n)), {"unit_string": "bar"}),
+        "Kraft": (thickwall_N(p, 0.0) + 2.0 + rng.normal(0, 0.3, n), {"unit_string": "N"})}})
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["shape"] == "ramp"
+    assert (run.path / "imported_table.tdms").read_bytes() == path.read_bytes()
+    book = tmp_path / "run.xlsx"
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    sheet = pd.read_excel(book, sheet_name="imported_table")
+    assert sheet.columns.tolist() == ["Druck [bar]", "Kraft [N]"] and len(sheet) == n
+    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
+    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
+        assert again.steps[column].tolist() == run.steps[column].tolist()
+
+
 def test_tdms_waveforms_at_two_rates_are_refused(tmp_path, mkm_cli):
     path = _tdms(tmp_path / "rates.tdms", {"Messung": {
         "Pressure": (np.zeros(10), {"wf_increment": 1.0, "unit_string": "bar"}),
