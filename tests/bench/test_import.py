@@ -568,9 +568,9 @@ def test_a_tdms_files_waveforms_at_10_hz_with_a_tare_segment(tmp_path, mkm_cli):
     tare = t < 5.0
     wave = {"wf_increment": 0.1, "wf_start_offset": 0.0,
             "wf_start_time": np.datetime64("2026-12-06T09:15:00")}
-    segments = [{"Messung": {"Load cell": (f[part], {**wave, "unit_string": "N"}),
-                             "Pressure": (100 * q[part], {**wave, "NI_UnitDescription": "kPa"})}}
-                for part in (tare, ~tare) for f, q in [(force, p)]]
+    segments = [{"Messung": {"Load cell": (force[part], {**wave, "unit_string": "N"}),
+                             "Pressure": (100 * p[part], {**wave, "NI_UnitDescription": "kPa"})}}
+                for part in (tare, ~tare)]
     path = _tdms(tmp_path / "muscle7.tdms", *segments, properties={
         "": {"name": "muscle 7", "author": "jdoe"}, "Messung": {"description": "eps 0"}})
     (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
@@ -585,7 +585,7 @@ def test_a_tdms_files_waveforms_at_10_hz_with_a_tare_segment(tmp_path, mkm_cli):
                      "wf_start_time": "2026-12-06T09:15:00.000000"}}
     # every sample kept, at its waveform's time; 50 tare samples of 0.2 N noise: the zero
     # within 0.1 N (3.5 sigma of the mean) of the load cell's offset
-    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-6)  # 6 digits kept
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-6)  # tenths: 6 digits hold
     assert recorded["tare_N"] == pytest.approx(4.2, abs=0.1)
     steps = run.steps
     assert steps["direction"].tolist() == ["up", "up", "up", "down", "down"]
