@@ -67,6 +67,8 @@ TDMS_WARNINGS_KEPT = 5
 #: mkm reads
 LOGGER_FILES = {
     ".tdm": "NI's TDM file: open it in Excel with NI's TDM importer and save it as .xlsx",
+    ".tdms_index": "the index NI's software writes beside a TDMS file (no samples): import the "
+                   ".tdms file itself",
     ".dxd": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
     ".d7d": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
     ".mf4": "an ASAM MDF file: export it as CSV from the logger's software (or asammdf)",

@@ -551,6 +551,8 @@ def test_a_channels_own_time_column_is_the_time(tmp_path):
 
 @pytest.mark.parametrize("suffix, how", [
     (".tdm", "NI's TDM file: open it in Excel with NI's TDM importer and save it as .xlsx"),
+    (".tdms_index", "the index NI's software writes beside a TDMS file (no samples): import "
+     "the .tdms file itself"),
     (".dxd", "DEWESoft's data file: export it from DEWESoft as CSV or Excel"),
     # a lab's LibreOffice sheet: was "unknown table format '.ods'"
     (".ods", "a LibreOffice (OpenDocument) spreadsheet: save it as .xlsx (File > Save As, "
