@@ -475,12 +475,14 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                          for header in unread[:1]))
         prepared.append(recognition)
         bar.done()
+    part = tables[0].part  # a workbook's sheets, a TDMS file's groups
     if not prepared:  # each sheet's lack named, and how to name a column the reader missed
-        raise ValueError(f"{path.name}: no sheet holds a pressure and a force column (sheets "
+        raise ValueError(f"{path.name}: no {part} holds a pressure and a force column ({part}s "
                          f"{', '.join(skipped or map(repr, names))}): name them with --columns "
-                         "pressure=COLUMN,force=COLUMN (and --units; --sheet NAME reads one sheet)")
+                         f"pressure=COLUMN,force=COLUMN (and --units; --{part} NAME reads one "
+                         f"{part})")
     if skipped:
-        notify(f"{path.name}: sheets without a pressure and a force column skipped: "
+        notify(f"{path.name}: {part}s without a pressure and a force column skipped: "
                f"{', '.join(skipped)}")
     for role, scale in (scaling or {}).items():  # given for no column: it would be ignored
         if not any(r.columns[role].scale or role in r.table.joined.get("columns", {})
@@ -515,8 +517,8 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         # a workbook of one sheet per state, its sheets told apart by their names alone
         for k in shared:
             built[k][3].append(f"eps {float(muscle['eps']):g} from --eps for each of the "
-                               f"{len(shared)} sheets without an eps or length column: if "
-                               "they hold different states, import each with --sheet NAME "
+                               f"{len(shared)} {part}s without an eps or length column: if "
+                               f"they hold different states, import each with --{part} NAME "
                                "and its --eps")
     if exported and len(built) == 1 and not accuracy:
         built = [_restored(path, known, *built[0])]
@@ -763,11 +765,13 @@ def _groups(recognition: Recognition, select: str | None, several_sheets: bool) 
         parts = [f"{label} {value}{' mm' if label in ('length', 'L0') else ''}"
                  for label, value in zip(labels, key, strict=True)]
         if several_sheets or (table.sheet and not parts):
-            parts.insert(0, f"sheet {table.sheet!r}")
+            parts.insert(0, f"{table.part} {table.sheet!r}")
         groups.append(_Group(recognition, rows, ", ".join(parts) or table.source.name,
                              dict(zip(labels, key, strict=True))))
     if not groups:
-        raise ValueError(f"{table.name} has no row to import")
+        raise ValueError(f"{table.name} has no row to import" + "".join(
+            f" (the file is damaged or cut short: npTDMS: {warned})"
+            for warned in table.read_warnings[:1]))
     return groups
 
 

@@ -1,9 +1,10 @@
 """Tables labs keep: read any common layout and recognise what each column holds, in what unit.
 
 - :func:`read_tables`: a ``.csv``/``.tsv``/``.txt`` file (separator ``,``, ``;`` or tab, decimal
-  commas detected, ``#`` comment lines and title rows above the header skipped) or an ``.xlsx``
-  workbook (every sheet, or one named) as :class:`RawTable` s of text and number cells, each cell
-  keeping its place in the file so that a bad one can be named (``lab.csv, cell B7``).
+  commas detected, ``#`` comment lines and title rows above the header skipped), an ``.xlsx``
+  workbook (every sheet, or one named) or an NI ``.tdms`` file (every group, or one named: its
+  channels the columns) as :class:`RawTable` s of text and number cells, each cell keeping its
+  place in the file so that a bad one can be named (``lab.csv, cell B7``).
 - :func:`parse_header`: a header such as ``Pressure (bar)``, ``pressure [kPa]``, ``p_psi``,
   ``F [kgf]``, ``load_lbf``, ``t (s)`` or ``contraction (%)`` as a name and a unit.
 - :func:`recognise`: which column holds each :data:`ROLES` entry (the name matched against the
@@ -15,7 +16,8 @@
   seconds from its first row.
 
 Nothing in a table can run code: cells are read as text and numbers only (openpyxl reads a
-workbook's cached values; a formula's text is read only to name it where no value was saved).
+workbook's cached values; a formula's text is read only to name it where no value was saved;
+npTDMS reads a TDMS file's numbers, texts and properties, no pickle).
 """
 
 from __future__ import annotations
@@ -23,6 +25,8 @@ from __future__ import annotations
 import csv
 import datetime
 import io
+import itertools
+import logging
 import math
 import re
 from dataclasses import dataclass, field, replace
@@ -46,14 +50,25 @@ _OLE2_MAGIC = b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1"
 _ZIP_MAGIC = b"PK\x03\x04"
 #: workbooks read, every sheet a table
 WORKBOOK_SUFFIXES = (".xlsx", ".xlsm")
+#: NI's TDMS files (LabVIEW, SignalExpress, FlexLogger, DAQmx logging), every group a table
+TDMS_SUFFIXES = (".tdms",)
+#: the channel properties that give a TDMS channel its unit, the first that reads as one taken:
+#: ``unit_string`` (LabVIEW, DAQmx, FlexLogger), NI's ``NI_UnitDescription`` (SignalExpress)
+TDMS_UNIT_PROPERTIES = ("unit_string", "NI_UnitDescription")
+#: a TDMS waveform's time axis: its sampling interval [s], and its first sample's time [s]
+TDMS_WAVEFORM = ("wf_increment", "wf_start_offset")
+#: the longest text of a TDMS file's or group's property, or of npTDMS's warning, kept
+TDMS_PROPERTY_CHARS = 200
+#: npTDMS's warnings on a damaged file kept (the first, each once)
+TDMS_WARNINGS_KEPT = 5
 
 
 #: loggers' own binary files and other programs' spreadsheets, and how each becomes a table
 #: mkm reads
 LOGGER_FILES = {
-    ".tdms": "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or open "
-             "it in Excel with NI's TDM importer and save it as .xlsx",
     ".tdm": "NI's TDM file: open it in Excel with NI's TDM importer and save it as .xlsx",
+    ".tdms_index": "the index NI's software writes beside a TDMS file (no samples): import the "
+                   ".tdms file itself",
     ".dxd": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
     ".d7d": "DEWESoft's data file: export it from DEWESoft as CSV or Excel",
     ".mf4": "an ASAM MDF file: export it as CSV from the logger's software (or asammdf)",
@@ -64,8 +79,8 @@ LOGGER_FILES = {
 
 
 def table_suffixes_text() -> str:
-    """The files :func:`read_tables` reads, in words: ``.csv, .tsv, ... or .xlsm``."""
-    *first, last = (*TEXT_SUFFIXES, *WORKBOOK_SUFFIXES)
+    """The files :func:`read_tables` reads, in words: ``.csv, .tsv, ... or .tdms``."""
+    *first, last = (*TEXT_SUFFIXES, *WORKBOOK_SUFFIXES, *TDMS_SUFFIXES)
     return f"{', '.join(first)} or {last}"
 #: words of a header that say which reading of a quantity it is (German Ist: the actual
 #: value, beside the Soll, the set one), dropped from its name
@@ -235,10 +250,22 @@ class RawTable:
     #: the sampling interval its header block states, as written (LabChart's ``Interval=``,
     #: ``0.01 s``), and in seconds: its rows' times where it has no time column
     interval: tuple[str, float] | None = None
+    #: what a TDMS file says of itself (``file``), of the group (``group``) and of its
+    #: waveforms' time axis (``waveform``): their properties, kept in the run folder
+    properties: dict = field(default_factory=dict)
+    #: what the reader warned of while reading a damaged file (npTDMS: a segment cut short)
+    read_warnings: list[str] = field(default_factory=list)
+
+    @property
+    def part(self) -> str:
+        """What the file calls the part of it this table is: a workbook's sheet, a TDMS
+        file's group."""
+        return "group" if self.source.suffix.lower() in TDMS_SUFFIXES else "sheet"
 
     @property
     def name(self) -> str:
-        return f"{self.source.name}, sheet {self.sheet!r}" if self.sheet else self.source.name
+        return (f"{self.source.name}, {self.part} {self.sheet!r}" if self.sheet
+                else self.source.name)
 
     def cell(self, k: int, column: int) -> str:
         """The spreadsheet reference of data row ``k``'s cell in ``column`` (``B7``)."""
@@ -255,7 +282,9 @@ class RawTable:
                 "rows_sharing_a_time_kept": self.times_shared,
                 "summary_rows_skipped": self.summaries_skipped,
                 "footer_rows_skipped": self.footer_skipped,
-                **({"joined_by_time": self.joined} if self.joined else {})}
+                **({"joined_by_time": self.joined} if self.joined else {}),
+                **({"tdms_properties": self.properties} if self.properties else {}),
+                **({"read_warnings": self.read_warnings} if self.read_warnings else {})}
 
 
 def _column_letters(index: int) -> str:
@@ -309,6 +338,8 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
     suffix = path.suffix.lower()
     if suffix in WORKBOOK_SUFFIXES:
         return _read_workbook(path, sheet)
+    if suffix in TDMS_SUFFIXES:
+        return _read_tdms(path, sheet)
     if suffix in LOGGER_FILES:
         raise ValueError(f"{path.name} is {LOGGER_FILES[suffix]}: mkm reads "
                          f"{table_suffixes_text()}")
@@ -683,6 +714,148 @@ def _read_workbook(path: Path, sheet: str | None) -> list[RawTable]:
         raise ValueError(problems[0] if len(problems) == 1 else
                          f"{path.name}: no sheet holds a table ({'; '.join(problems)[:300]})")
     return tables
+
+
+def _read_tdms(path: Path, group: str | None) -> list[RawTable]:
+    """Each group of the TDMS file ``path`` that holds samples (or the group named ``group``)
+    as a table of its channels (:func:`_tdms_table`)."""
+    from nptdms import TdmsFile
+
+    kept = _Kept()
+    loggers = [logging.getLogger(name) for name in list(logging.root.manager.loggerDict)
+               if name.split(".")[0] == "nptdms"]
+    for logger in loggers:
+        logger.addFilter(kept)
+    try:
+        # read through the file opened here: npTDMS then reads no index file lying beside it
+        with open(path, "rb") as f, TdmsFile.open(f) as tdms:
+            names = [g.name for g in tdms.groups()]
+            file_properties = _tdms_properties(tdms.properties)
+            groups = [(g.name, _tdms_properties(g.properties),
+                       [(c.name, dict(c.properties), len(c),
+                         c[:] if len(c) <= MAX_ROWS else None) for c in g.channels()])
+                      for g in tdms.groups() if group in (None, g.name)]
+    except Exception as exc:  # npTDMS raises many kinds for a file that is no TDMS file
+        raise ValueError(f"{path} cannot be read as a TDMS file ({type(exc).__name__}: "
+                         f"{str(exc)[:120]}): expected a .tdms file as LabVIEW, SignalExpress "
+                         "or FlexLogger writes it") from None
+    finally:
+        for logger in loggers:
+            logger.removeFilter(kept)
+    if group is not None and group not in names:
+        raise ValueError(f"--group {group!r}: {path.name} has no such group: it has "
+                         f"{', '.join(map(repr, names)) or 'none'}")
+    tables = [_tdms_table(path, name, {"file": file_properties, "group": properties}, channels)
+              for name, properties, channels in groups
+              if group is not None or any(n for *_, n, _ in channels)]
+    if not tables:
+        raise ValueError(f"{path.name} holds no samples" + "".join(
+            f" (the file is damaged or cut short: npTDMS: {warned})" for warned in kept.lines[:1])
+            + ": expected a group of channels (time, pressure, force) with their values")
+    for table in tables:
+        table.read_warnings = list(dict.fromkeys(kept.lines))[:TDMS_WARNINGS_KEPT]
+    return tables
+
+
+class _Kept(logging.Filter):
+    """npTDMS's warnings on a damaged file (its last segment cut short, a chunk read in
+    part), kept for the table's record instead of printed."""
+
+    def __init__(self):
+        super().__init__()
+        self.lines: list[str] = []
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        self.lines.append(record.getMessage()[:TDMS_PROPERTY_CHARS])
+        return False
+
+
+def _tdms_table(path: Path, group: str, properties: dict, channels: list) -> RawTable:
+    """A TDMS group as a table: a column per channel (``name, properties, length, values``),
+    its unit from the first of :data:`TDMS_UNIT_PROPERTIES` that reads as one, after a
+    ``Time [s]`` column where the channels are waveforms (:data:`TDMS_WAVEFORM`) and none is
+    named a time; a channel
+    shorter than the others ends in blank cells. Row 1 is the header, sample ``k`` row
+    ``k + 2``, as the group reads once exported to a sheet."""
+    where = f"{path.name}, group {group!r}"
+    rows = max((n for *_, n, _ in channels), default=0)
+    if rows > MAX_ROWS:
+        raise ValueError(f"{where} has a channel of {rows} samples: expected at most {MAX_ROWS}")
+    if not rows:
+        raise ValueError(f"{where} holds no samples: expected channels (time, pressure, force) "
+                         "with their values")
+    header, columns = [], []
+    for name, props, _, values in channels:
+        units = [str(props[key]).strip() for key in TDMS_UNIT_PROPERTIES
+                 if str(props.get(key, "")).strip()]
+        unit = next((u for u in units if parse_unit(u) is not None), units[0] if units else "")
+        header.append(f"{name} [{unit}]" if unit and parse_header(name)[1] is None else name)
+        columns.append(_tdms_cells(values))
+    timings = {name: (tuple(_plain_float(props.get(key, 0.0)) for key in TDMS_WAVEFORM), props)
+               for name, props, *_ in channels if TDMS_WAVEFORM[0] in props}
+    table_properties = dict(properties)
+    if timings:
+        first, ((increment_s, start_s), props) = next(iter(timings.items()))
+        if other := next((n for n, (t, _) in timings.items() if t != (increment_s, start_s)),
+                         None):
+            step_s, from_s = timings[other][0]
+            raise ValueError(f"{where}: channel {other!r} is sampled every {step_s:g} s from "
+                             f"{from_s:g} s, channel {first!r} every {increment_s:g} s from "
+                             f"{start_s:g} s (wf_increment, wf_start_offset): expected one time "
+                             "per row; log them at one rate, or export each to a table of its "
+                             "own and join them with --join-by-time")
+        if not (math.isfinite(increment_s) and increment_s > 0 and math.isfinite(start_s)):
+            raise ValueError(f"{where}: channel {first!r}'s wf_increment {increment_s:g} s from "
+                             f"wf_start_offset {start_s:g} s: expected a positive sampling "
+                             "interval in seconds")
+        # a channel of the times (LabVIEW's Write To TDMS of a waveform's t beside its Y) is
+        # the clock itself
+        if not any(ROLES["time"].matches(parse_header(h)[0]) for h in header):
+            header.insert(0, "Time [s]")
+            columns.insert(0, (start_s + increment_s * np.arange(rows)).tolist())
+            table_properties["waveform"] = _tdms_properties(
+                {key: value for key, value in props.items() if key.startswith("wf_")})
+    cells = [list(row) for row in itertools.zip_longest(*columns, fillvalue="")]
+    return RawTable(path, group, header, 1, cells, list(range(2, rows + 2)),
+                    properties=table_properties)
+
+
+def _plain_float(value) -> float:
+    """``value`` as a float, NaN where it is none (a property written as text)."""
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def _tdms_cells(values: np.ndarray) -> list:
+    """A TDMS channel's values as cells: numbers, a date-time as ISO text, a missing reading
+    (NaN, NaT) blank as an empty cell is, any other value as text."""
+    kind = values.dtype.kind
+    if kind == "f":
+        return ["" if math.isnan(v) else v for v in values.tolist()]
+    if kind in "iub":
+        return values.astype(np.int64 if kind == "b" else values.dtype).tolist()
+    if kind == "M":
+        return ["" if text == "NaT" else text
+                for text in np.datetime_as_string(values, unit="us").tolist()]
+    return ["" if v is None else str(v) for v in values.tolist()]
+
+
+def _tdms_properties(properties) -> dict:
+    """A TDMS object's properties as run.json keeps them: numbers and flags as they are, a
+    time as ISO text, anything else as text of at most :data:`TDMS_PROPERTY_CHARS`."""
+    out = {}
+    for key, value in properties.items():
+        if isinstance(value, np.datetime64):
+            value = np.datetime_as_string(value, unit="us")
+        elif isinstance(value, np.generic):
+            value = value.item()
+        if not isinstance(value, (bool, int, float)) or (
+                isinstance(value, float) and not math.isfinite(value)):
+            value = str(value)[:TDMS_PROPERTY_CHARS]
+        out[str(key)[:TDMS_PROPERTY_CHARS]] = value
+    return out
 
 
 def _in_percent_as_shown(table: RawTable, cells: set[tuple[int, int]]) -> RawTable:
@@ -2357,7 +2530,7 @@ def _formula(table: RawTable, k: int, column: int) -> str | None:
 def _formulas(table: RawTable, cells: list[tuple[int, int]]) -> dict[tuple[int, int], str]:
     """The formulas of those of ``cells`` (data row, column) that hold one, the workbook read
     once; none in a text table."""
-    if table.sheet is None or not cells:
+    if table.source.suffix.lower() not in WORKBOOK_SUFFIXES or not cells:
         return {}
     import openpyxl
 
@@ -2529,6 +2702,12 @@ class Recognition:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")
                           + ": the channel read beyond its range there")
+        if wave := self.table.properties.get("waveform"):
+            extras.append(f"'Time [s]' from the channels' wf_increment, {wave['wf_increment']:g} "
+                          "s")
+        if warned := self.table.read_warnings:
+            extras.append("the file is damaged or cut short, read as far as it goes (npTDMS: "
+                          + "; ".join(warned[:2]) + ("; ..." if len(warned) > 2 else "") + ")")
         return ", ".join(parts) + (f"; {', '.join(extras)}" if extras else "")
 
     def describe(self) -> dict:

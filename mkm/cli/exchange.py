@@ -32,9 +32,11 @@ DECLARED = ("as the lab declares it, recorded with each run: mkm identify's nomi
 
 def register(subparsers) -> None:
     imp = subparsers.add_parser(
-        "import", help="a table of forces measured elsewhere (CSV, TSV or Excel) as run folders",
+        "import", help="a table of forces measured elsewhere (CSV, TSV, Excel or NI TDMS) as "
+        "run folders",
         description="Read the table a lab has (CSV, TSV or semicolon CSV with decimal commas, "
-        "or every sheet of an .xlsx workbook; a title row above the header is skipped) and "
+        "every sheet of an .xlsx workbook or every group of an NI .tdms file; a title row above "
+        "the header is skipped) and "
         "write one run folder per muscle state (a sheet, or a value of an eps, length, L0 or "
         "run column), status 'imported', that report, calibrate, identify and export read. "
         "Columns are recognised by name and unit (P, Pressure (bar), pressure [kPa], p_psi, "
@@ -92,8 +94,9 @@ def register(subparsers) -> None:
                      "at k/HZ seconds, read as a time series, e.g. 100 or 1kHz; recorded in "
                      "run.json (default: none; the rows of a record without time are taken as "
                      "evenly spaced, untimed)")
-    imp.add_argument("--sheet", default=None, help="the workbook's sheet (default: every sheet "
-                     "with a pressure and a force column, one run each)")
+    imp.add_argument("--sheet", "--group", default=None, metavar="NAME",
+                     help="the workbook's sheet, or the TDMS file's group (default: every "
+                     "sheet or group with a pressure and a force column, one run each)")
     imp.add_argument("--muscle", default=None, metavar="NAME",
                      help="the muscle to import where the table's muscle column holds several")
     imp.add_argument("--tare", default="auto", metavar="auto|none|N",
@@ -198,7 +201,7 @@ def _table_help() -> str:
     from mkm.bench.tables import table_suffixes_text
 
     return (f"the table file: {table_suffixes_text()} (LabVIEW's .lvm and a logger's .xls "
-            "read as text)")
+            "read as text; .tdms: NI's TDMS file, its channels the columns)")
 
 
 def _import(args) -> int:

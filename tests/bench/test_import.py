@@ -525,6 +525,220 @@ def test_the_supply_pressure_beside_the_muscles_is_no_reading(header, tmp_path, 
             f"unit: --columns pressure={header!r} reads it") in err
 
 
+def _tdms(path: Path, *segments, properties=None):
+    """A TDMS file as NI's software writes one, each of ``segments`` a {group: {channel:
+    (values, properties)}} written as a segment of its own (npTDMS's writer); ``properties``
+    the file's and the groups' ({"": file's, group: group's})."""
+    from nptdms import ChannelObject, GroupObject, RootObject, TdmsWriter
+
+    properties = properties or {}
+    with TdmsWriter(path) as writer:
+        for k, segment in enumerate(segments):
+            objects = [RootObject(properties.get("", {}))] if k == 0 else []
+            for group, channels in segment.items():
+                objects.append(GroupObject(group, properties.get(group, {}) if k == 0 else {}))
+                objects += [ChannelObject(group, name, np.asarray(values),
+                                          channel_properties if k == 0 else {})
+                            for name, (values, channel_properties) in channels.items()]
+            writer.write_segment(objects)
+    return path
+
+
+def _staircase_10_hz(levels_bar, tare_N, seed=2):
+    """A 10 Hz record as the USB-6001 logs it: 5 s vented (the tare), then per level a 1 s
+    ramp and 12 s held; the load cell reads ``tare_N`` unloaded; noise 0.003 bar and 0.2 N."""
+    rng = np.random.default_rng(seed)
+    knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
+    for level in levels_bar:
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 13.0]
+        knots_p += [level, level]
+    t = np.arange(0.0, knots_t[-1], 0.1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.0, 30.0)
+    return (t, p + rng.normal(0, 0.003, t.size) * (p > 0),
+            truth + tare_N + rng.normal(0, 0.2, t.size), truth)
+
+
+def test_a_tdms_files_waveforms_at_10_hz_with_a_tare_segment(tmp_path, mkm_cli):
+    # an NI USB-6001's load cell and pressure logged as waveforms (wf_increment 0.1 s), the
+    # units in the channels' properties (LabVIEW's unit_string, SignalExpress's
+    # NI_UnitDescription), the vented rest logged as a segment of its own before the
+    # staircase: was refused ("NI's TDMS file: export it as text ...")
+    levels = [0.5, 1.0, 1.5, 1.0, 0.5]
+    t, p, force, truth = _staircase_10_hz(levels, tare_N=4.2)
+    tare = t < 5.0
+    wave = {"wf_increment": 0.1, "wf_start_offset": 0.0,
+            "wf_start_time": np.datetime64("2026-12-06T09:15:00")}
+    segments = [{"Messung": {"Load cell": (force[part], {**wave, "unit_string": "N"}),
+                             "Pressure": (100 * p[part], {**wave, "NI_UnitDescription": "kPa"})}}
+                for part in (tare, ~tare)]
+    path = _tdms(tmp_path / "muscle7.tdms", *segments, properties={
+        "": {"name": "muscle 7", "author": "jdoe"}, "Messung": {"description": "eps 0"}})
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert ("'Time [s]' -> time [s], 'Pressure [kPa]' -> pressure [kPa -> bar], "
+            "'Load cell [N]' -> force [N]") in err
+    assert "'Time [s]' from the channels' wf_increment, 0.1 s" in err
+    recorded = run.meta.imported_from
+    assert recorded["sheet"] == "Messung" and recorded["shape"] == "staircase"
+    assert recorded["tdms_properties"] == {
+        "file": {"name": "muscle 7", "author": "jdoe"}, "group": {"description": "eps 0"},
+        "waveform": {"wf_increment": 0.1, "wf_start_offset": 0.0,
+                     "wf_start_time": "2026-12-06T09:15:00.000000"}}
+    # every sample kept, at its waveform's time; 50 tare samples of 0.2 N noise: the zero
+    # within 0.1 N (3.5 sigma of the mean) of the load cell's offset
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-6)  # tenths: 6 digits hold
+    assert recorded["tare_N"] == pytest.approx(4.2, abs=0.1)
+    steps = run.steps
+    assert steps["direction"].tolist() == ["up", "up", "up", "down", "down"]
+    # 100 kPa is 1 bar
+    assert steps["set_pressure_bar"].tolist() == pytest.approx(levels, abs=0.01)
+    for step in steps.itertuples():  # the held force less the tare, within noise and tare
+        hold = (t >= step.start_s + step.settle_s - 1e-9) & (t <= step.end_s + 1e-9)
+        assert step.force_N_mean == pytest.approx(truth[hold].mean(), abs=0.15)
+
+
+@pytest.mark.parametrize("wave", [{}, {"wf_increment": 0.01, "wf_start_offset": 0.0}])
+def test_a_tdms_group_with_a_time_channel_reads_as_its_text_export(wave, tmp_path, mkm_cli):
+    # LabVIEW's Write To TDMS of arrays, or of waveforms with their times as a channel: the
+    # time channel is the clock (beside it, the waveforms' time was a second 'Time [s]',
+    # refused), a force in lbf
+    frame, _, _ = _ramp()
+    csv = tmp_path / "ramp.csv"
+    frame.to_csv(csv, index=False)
+    path = _tdms(tmp_path / "ramp.tdms", {"Untitled": {
+        "Time": (frame["t (s)"], {**wave, "unit_string": "s"}),
+        "Pressure": (frame["p_psi"], {**wave, "unit_string": "psi"}),
+        "Force": (frame["Force (N)"] / LBF_N, {**wave, "unit_string": "lbf"})}})
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    (text,), _ = _import(mkm_cli, csv, *MUSCLE, "--eps", "12.2%")
+    assert ("'Time [s]' -> time [s], 'Pressure [psi]' -> pressure [psi -> bar], "
+            "'Force [lbf]' -> force [lbf -> N]") in err
+    assert "wf_increment" not in err
+    recorded = run.meta.imported_from
+    assert recorded["vented_reading_bar"] == pytest.approx(0.4, abs=0.002)
+    assert recorded["tare_N"] == pytest.approx(7.5, abs=0.1)
+    # the steps the CSV of the same record gives, to the lbf's round trip
+    columns = ["pressure_bar_mean", "force_N_mean"]
+    np.testing.assert_allclose(run.steps[columns], text.steps[columns], rtol=1e-9, atol=1e-9)
+    assert run.samples["force_N"].to_numpy() == pytest.approx(
+        text.samples["force_N"].to_numpy(), abs=1e-9)
+
+
+def test_a_tdms_file_of_several_groups_is_a_run_per_group_of_readings(tmp_path, mkm_cli):
+    # one group per state, and a group of the room's temperature: as a workbook's sheets
+    force = {eps: thickwall_N(PRESSURES[:5], eps) for eps in (0.0, 0.122)}
+    path = _tdms(tmp_path / "muscle7.tdms", {
+        **{f"eps {100 * eps:g}": {"P": (PRESSURES[:5], {"unit_string": "bar"}),
+                                 "F": (f, {"unit_string": "N"}),
+                                 "contraction": (np.full(5, 100 * eps), {"unit_string": "%"})}
+           for eps, f in force.items()},
+        "Raum": {"Temperatur": (np.full(5, 21.5), {"unit_string": "°C"})}})
+    runs, err = _import(mkm_cli, path, *MUSCLE)
+    assert [r.meta.imported_from["sheet"] for r in runs] == ["eps 0", "eps 12.2"]
+    assert [r.meta.muscle.eps for r in runs] == pytest.approx([0.0, 0.122], abs=1e-12)
+    for run in runs:
+        np.testing.assert_allclose(run.steps["force_N_mean"], force[run.meta.muscle.eps],
+                                   rtol=1e-5)
+    assert ("muscle7.tdms: groups without a pressure and a force column skipped: 'Raum' "
+            "(neither)") in err
+    (one,), _ = _import(mkm_cli, path, *MUSCLE, "--group", "eps 12.2")
+    assert one.meta.muscle.eps == pytest.approx(0.122)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--group", "eps 10", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    assert err == ("mkm import: error: --group 'eps 10': muscle7.tdms has no such group: it "
+                   "has 'eps 0', 'eps 12.2', 'Raum'\n")
+
+
+def test_a_damaged_tdms_file_is_one_line(tmp_path, mkm_cli):
+    channels = {"Messung": {"Pressure": (PRESSURES[:5], {"unit_string": "bar"}),
+                            "Force": (thickwall_N(PRESSURES[:5], 0.0), {"unit_string": "N"})}}
+    path = _tdms(tmp_path / "log.tdms", channels)
+    path.write_bytes(path.read_bytes().replace(b"/'Messung'/'Force'", b"x'Messung'/'Force'"))
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and out == "" and not (tmp_path / "runs").exists()
+    assert err == (f"mkm import: error: {path} cannot be read as a TDMS file (ValueError: "
+                   "Invalid path, expected \"/\"): expected a .tdms file as LabVIEW, "
+                   "SignalExpress or FlexLogger writes it\n")
+
+
+def test_a_tdms_file_cut_short_keeps_what_it_holds_and_says_so(tmp_path):
+    # the logger stopped mid-write: npTDMS printed its warnings raw, beside mkm's lines (a
+    # process of its own: npTDMS's handler writes to the stderr it found on import)
+    import subprocess
+    import sys
+
+    levels = [0.5, 1.0]
+    t, p, force, _ = _staircase_10_hz(levels, tare_N=0.0)
+    wave = {"wf_increment": 0.1, "wf_start_offset": 0.0}
+    path = _tdms(tmp_path / "cut.tdms", {"Messung": {
+        "Pressure": (p, {**wave, "unit_string": "bar"}),
+        "Force": (force, {**wave, "unit_string": "N"})}})
+    whole = path.read_bytes()
+
+    def mkm_import(kept_bytes: int):
+        path.write_bytes(whole[:kept_bytes])
+        done = subprocess.run([sys.executable, "-m", "mkm", "import", str(path), *MUSCLE,
+                               "--eps", "0", "--out", str(tmp_path / "runs")],
+                              capture_output=True, text=True, timeout=120, check=False)
+        assert "[nptdms" not in done.stderr and "Traceback" not in done.stderr
+        return done
+
+    done = mkm_import(len(whole) - 8 * 40)  # the last 40 forces lost (a channel's block each)
+    assert done.returncode == 0, done.stderr
+    assert ("the file is damaged or cut short, read as far as it goes (npTDMS: Last segment "
+            "of file has less data than expected") in done.stderr
+    # the pressures all read, the forces but the last 40: those rows skipped, named
+    assert "40 row(s) with a blank cell skipped: C" in done.stderr
+    run = load_run(done.stdout.strip())
+    assert len(run.samples) == t.size - 40
+    np.testing.assert_allclose(run.samples["force_N"], force[:-40] - run.meta.imported_from[
+        "tare_N"], rtol=5e-6, atol=1e-6)  # 6 significant digits kept
+    assert run.meta.imported_from["read_warnings"][0].startswith("Last segment of file")
+    # cut within the pressures: no force read at all, said with the file's damage
+    done = mkm_import(len(whole) - 8 * (t.size + 1))
+    assert done.returncode == 2 and done.stderr == (
+        "mkm import: error: cut.tdms, group 'Messung' has no row to import (the file is "
+        "damaged or cut short: npTDMS: Last segment of file has less data than expected, will "
+        "attempt to read to the end of the file)\n")
+
+
+def test_an_export_of_a_tdms_record_without_time_carries_its_group(tmp_path, mkm_cli):
+    # a 10 Hz ramp logged as arrays without a time: its run folder keeps the file, the export's
+    # sheet is its group as mkm import read it, which imports again to the same steps
+    rng = np.random.default_rng(8)
+    n = 600
+    p = np.interp(np.arange(n), [0, 40, 320, n - 1], [0, 0, 2.0, 0])
+    path = _tdms(tmp_path / "ramp.tdms", {"Daten": {
+        "Druck": (np.abs(p + rng.normal(0, 0.003, n)), {"unit_string": "bar"}),
+        "Kraft": (thickwall_N(p, 0.0) + 2.0 + rng.normal(0, 0.3, n), {"unit_string": "N"})}})
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["shape"] == "ramp"
+    assert (run.path / "imported_table.tdms").read_bytes() == path.read_bytes()
+    book = tmp_path / "run.xlsx"
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    sheet = pd.read_excel(book, sheet_name="imported_table")
+    assert sheet.columns.tolist() == ["Druck [bar]", "Kraft [N]"] and len(sheet) == n
+    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
+    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
+        assert again.steps[column].tolist() == run.steps[column].tolist()
+
+
+def test_tdms_waveforms_at_two_rates_are_refused(tmp_path, mkm_cli):
+    path = _tdms(tmp_path / "rates.tdms", {"Messung": {
+        "Pressure": (np.zeros(10), {"wf_increment": 1.0, "unit_string": "bar"}),
+        "Force": (np.zeros(100), {"wf_increment": 0.1, "unit_string": "N"})}})
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err == (
+        "mkm import: error: rates.tdms, group 'Messung': channel 'Force' is sampled every "
+        "0.1 s from 0 s, channel 'Pressure' every 1 s from 0 s (wf_increment, "
+        "wf_start_offset): expected one time per row; log them at one rate, or export each to "
+        "a table of its own and join them with --join-by-time\n")
+
+
 def _ramp(rate_hz=100.0, seed=1, h=0.05, tare_N=7.5, vented_bar=0.4):
     """A lab's 100 Hz record: 2 s vented, 10 s up to 2.5 bar, 10 s down, 1 s vented; the gauge
     reads ``vented_bar`` at rest, the load cell ``tare_N``; noise 0.005 bar and 0.3 N."""

@@ -550,19 +550,21 @@ def test_a_channels_own_time_column_is_the_time(tmp_path):
 
 
 @pytest.mark.parametrize("suffix, how", [
-    (".tdms", "NI's TDMS file: export it as text (SignalExpress: Export to text; DIAdem) or "
-     "open it in Excel with NI's TDM importer and save it as .xlsx"),
+    (".tdm", "NI's TDM file: open it in Excel with NI's TDM importer and save it as .xlsx"),
+    (".tdms_index", "the index NI's software writes beside a TDMS file (no samples): import "
+     "the .tdms file itself"),
     (".dxd", "DEWESoft's data file: export it from DEWESoft as CSV or Excel"),
     # a lab's LibreOffice sheet: was "unknown table format '.ods'"
     (".ods", "a LibreOffice (OpenDocument) spreadsheet: save it as .xlsx (File > Save As, "
      "Excel 2007-365) or as CSV"),
 ])
 def test_a_loggers_binary_file_names_how_to_export_it(suffix, how, tmp_path):
-    # was "unknown table format '.tdms': expected .csv, ...", not saying how to get one
+    # was "unknown table format '.dxd': expected .csv, ...", not saying how to get one
     path = tmp_path / f"log{suffix}"
     path.write_bytes(b"TDSm\x00binary")
     with pytest.raises(ValueError, match=re.escape(
-            f"log{suffix} is {how}: mkm reads .csv, .tsv, .txt, .lvm, .xls, .xlsx or .xlsm")):
+            f"log{suffix} is {how}: mkm reads .csv, .tsv, .txt, .lvm, .xls, .xlsx, .xlsm or "
+            ".tdms")):
         read_tables(path)
 
 
