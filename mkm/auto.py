@@ -78,13 +78,20 @@ FALLBACK_SPEC = "axisym:mesh=fine"
 #: K of the default surrogate's own bound ``K s``, ``s`` its calibrated std: beyond 3 std lies
 #: 0.3 % of a normal error.
 STD_FACTOR = 3.0
+#: What every bound resting on a surrogate's std says of itself (:func:`explain`): a surrogate's
+#: error over its std has a heavy tail, so K of it bounds most calls, not every one
+#: (docs/guide/force-models.md).
+STD_BOUND = "calibrated std"
+STD_CAVEAT = ("; an estimate from a surrogate's std, which most calls' errors stay within, not "
+              "every one's")
 #: The factor of the practical range's surrogate's std in the bounds where it is the reference
 #: (its own, and a closed form's distance from it). Its std is calibrated per point; the largest
 #: error of a call against the largest std of the call needs more than 3 of it on some fresh
-#: calls of the range, and this factor holds every one: ``reference_std_factor`` in
-#: ``docs/measured/auto_practical.json`` (``benchmarks/bench_auto.py --range practical``;
-#: ``tests/test_docs.py`` holds this to it). Not a bound for a share of the calls: the tail is
-#: heavy (docs/guide/surrogates.md).
+#: calls of the range, and this factor holds every call of the recorded draw,
+#: ``reference_std_factor`` in ``docs/measured/auto_practical.json``
+#: (``benchmarks/bench_auto.py --range practical``; ``tests/test_docs.py`` holds this to it),
+#: not every call of every fresh draw: the tail is heavy (docs/guide/force-models.md,
+#: docs/guide/surrogates.md).
 RANGE_STD_FACTOR = 6.0
 # A mesh's recorded error is the largest over the study's muscles; another muscle may do a
 # little worse
@@ -509,6 +516,8 @@ def explain(prediction, tolerance: float | None = None,
         else:
             why = (f"the cheapest model whose error bound at these points is <= {tol:g}%: "
                    f"{np.nanmax(bound[here]):.2f}% ({source[here][0]})")
+            if STD_BOUND in source[here][0]:
+                why += STD_CAVEAT
         lines.append(f"auto: {label(name)} for {here.sum()} of {used.size} points: {why}")
     note = gap_note(gap_mm)
     return "\n".join([note, *lines] if note else lines)
