@@ -22,7 +22,7 @@ from mkm.bench.backend import BenchError
 from mkm.bench.budget import Instrument, step_budget
 from mkm.bench.config import BenchConfig, Step, plan_steps
 from mkm.bench.storage import StepRecord
-from mkm.bench.worker import Acquisition
+from mkm.bench.worker import STUCK_CELL_S, Acquisition
 
 
 def settle_reached(t_s: np.ndarray, force_N: np.ndarray, pressure_bar: np.ndarray,
@@ -160,10 +160,27 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
                           f"={cell.offset_V:g} V, beyond safety.tare_max_shift_N="
                           f"{safety.tare_max_shift_N:g} (a load on the cell, or the wrong "
                           "calibration)")
+    held_s = held_tail(v)[1] / config.daq.sample_rate_hz
+    step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
+    if std > step_V and held_s >= STUCK_CELL_S - 1e-9:
+        raise TareInvalid(f"tare invalid: the load cell read {v[-1]:.4f} V unchanged for the "
+                          f"last {held_s:.1f} s of the tare, where it strayed {std_N:.2f} N over "
+                          "the tare: a stuck or disconnected load cell, behind which the force "
+                          "limit is not watched; check its cable, amplifier and supply; nothing "
+                          "was pressurised")
     drift_N, at_rest = _tare_drift(v * cell.sensitivity_N_per_V, config)
     return {"offset_V": offset, "std_V": std, "n": int(v.size), "std_N": std_N,
             "shift_N": shift_N, "config_offset_V": cell.offset_V, "drift_N": drift_N,
             "at_rest": at_rest}
+
+
+def held_tail(cell_V) -> tuple[float, int]:
+    """The code the load-cell readings ``cell_V`` [V] end on and how many sample intervals it
+    has been held: 0 when the last two readings differ (the stuck-cell rule of
+    :data:`mkm.bench.worker.STUCK_CELL_S`, held from the tare into the run)."""
+    v = np.asarray(cell_V, dtype=float)
+    changed = np.flatnonzero(v != v[-1])
+    return float(v[-1]), int(v.size - 1 - (changed[-1] + 1 if changed.size else 0))
 
 
 def _tare_drift(force_N: np.ndarray, config: BenchConfig) -> tuple[float, bool]:
@@ -307,6 +324,7 @@ class Staircase:
             check_vented_monitor(tare, self.config)
         self.acq.tare_offset_V = tare["offset_V"]
         self.acq.tare_std_V = tare["std_V"]
+        self.acq.held_since_tare(*held_tail(volts))
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
         for warning in (one_code_warning(tare, self.config), rest_warning(tare, self.config),
                         settle_warning(tare["std_N"], self.config),

@@ -361,6 +361,13 @@ class Acquisition:
         return Sample(index, index / self.rate_hz, step, phase, set_bar, commanded, pressure,
                       cell_V, monitor_V, force, "|".join(flags))
 
+    def held_since_tare(self, cell_V: float, intervals: int) -> None:
+        """The tare ended on the code ``cell_V`` [V], held for ``intervals`` sample intervals:
+        the stuck-cell interlock counts from where the code was first read, not from the
+        tare's end (a cell that stuck during the tare trips :data:`STUCK_CELL_S` after it
+        stuck)."""
+        self._held_cell = (cell_V, (self.next_index - 1 - intervals) / self.rate_hz)
+
     def _stuck_cell(self, t_s: float, cell_V: float, force: float) -> str | None:
         """The load cell's input has held one code (``cell_V``) for :data:`STUCK_CELL_S`
         where its tare strayed more than an ADC step: stuck or disconnected (its message), or

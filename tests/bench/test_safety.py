@@ -591,6 +591,46 @@ def test_a_load_cell_stuck_mid_run_stops_the_run_within_two_seconds(config, tmp_
     assert run.meta.steps_done < len(c.sequence.pressures_bar) + 1  # not every step
 
 
+def test_a_load_cell_stuck_during_the_tare_is_no_tare(config, tmp_path):
+    # The load cell's input holds its reading from 2 s of a 5 s tare: its last 2.9 s (30
+    # readings) on one code, where the tare's first 2 s strayed 0.3 N. The tare passed, the
+    # pre-conditioning commanded 2.5 bar, and the stuck-cell interlock, counting from the
+    # tare's end, tripped 2 s later at 2.1 bar, the force limit blind meanwhile. No live cell
+    # holds one code that long (STUCK_CELL_S): the tare is invalid, nothing pressurised.
+    from mkm.bench.sim import SimBackend
+
+    c = config.replace(sequence={"tare_s": 5.0, "preconditioning_cycles": 1},
+                       sim={"faults": {"loadcell_stuck_at_s": 2.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert re.fullmatch(r"TareInvalid: tare invalid: the load cell read [0-9.]+ V unchanged for "
+                        r"the last 2\.9 s of the tare, where it strayed 0\.[0-9]+ N over the "
+                        r"tare: a stuck or disconnected load cell, behind which the force limit "
+                        r"is not watched; check its cable, amplifier and supply; nothing was "
+                        r"pressurised", result.reason), result.reason
+    assert max(volts for _, volts in backend.commands) == 0.0  # the regulator got vents only
+    run = load_run(result.path)
+    assert len(run.samples) >= 50 and not run.meta.manual_vent_required  # the tare's, kept
+
+
+def test_a_load_cell_stuck_late_in_the_tare_trips_two_seconds_after_it_stuck(config,
+                                                                             tmp_path):
+    # Stuck from 4 s of a 5 s tare (1 s of it on one code): the interlock counted its 2 s from
+    # the tare's end, so the pre-conditioning's 2.5 bar rose to 2.1 bar with the force limit
+    # blind until 7.0 s. It counts from where the code was first read: 6.0 s.
+    from mkm.bench.worker import STUCK_CELL_S
+
+    c = config.replace(sequence={"tare_s": 5.0, "preconditioning_cycles": 1},
+                       sim={"faults": {"loadcell_stuck_at_s": 4.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.reason.startswith(
+        "force interlock: the load cell read"), result.reason
+    run = load_run(result.path)
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    assert tripped["time_s"].iloc[0] == pytest.approx(4.0 + STUCK_CELL_S, abs=0.11)
+
+
 def test_a_monitor_frozen_above_the_threshold_is_named_by_the_load_cell(config, tmp_path):
     # The monitor's output freezes at its reading from 20 s (on the last step, 0.5 bar). The
     # vent empties the muscle, its force falls from 194 N to nothing, and the check, the
