@@ -77,7 +77,8 @@ def register(subparsers) -> None:
         "config.toml) under --out and prints its path last. Ctrl-C stops at a safe point; a "
         "second Ctrl-C, SIGTERM, SIGHUP, Ctrl-Break or closing the console stop at once; every "
         "stop vents first. Exit status: 0 complete, 3 complete with lost samples, 128+N after "
-        "signal N, 1 interlock or device failure, 2 bad input or disk failure. The default "
+        "signal N, 1 interlock or device failure, 2 bad input or disk failure, 4 the vent not "
+        "verified (VENT BY HAND; it wins over every other). The default "
         "staircase (19 steps) takes 3 to 21 min on the real bench, depending "
         "on settling (`mkm check` prints the estimate); --clock virtual: about a second.",
         epilog="example: mkm acquire --backend sim --eps 12.2% --out mkm-out/runs")

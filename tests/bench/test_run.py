@@ -959,3 +959,18 @@ def test_every_line_the_bench_writes_names_its_command(mkm_cli, tmp_path, monkey
         code, out, err = mkm_cli([command, "--backend", "sim"])
         assert code == 0, err
         assert err.startswith(f"mkm {command}: SIMULATED bench (sim): no hardware is driven\n")
+
+
+def test_acquire_help_names_every_exit_status(capsys):
+    # `mkm acquire --help` listed 0, 3, 128+N, 1 and 2, not 4: the status of a run whose vent
+    # was not verified, the one that asks for a vent by hand
+    from mkm.bench.run import EXIT_FAILED, EXIT_GAPS, EXIT_OK, EXIT_STORAGE, EXIT_VENT
+    from mkm.cli import main
+
+    with pytest.raises(SystemExit):
+        main(["acquire", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert (EXIT_OK, EXIT_GAPS, EXIT_FAILED, EXIT_STORAGE, EXIT_VENT) == (0, 3, 1, 2, 4)
+    assert ("Exit status: 0 complete, 3 complete with lost samples, 128+N after signal N, 1 "
+            "interlock or device failure, 2 bad input or disk failure, 4 the vent not verified "
+            "(VENT BY HAND; it wins over every other).") in text
