@@ -1097,6 +1097,8 @@ class BenchRun:
                           f"({lease.error.strerror or lease.error})")
         elif lease is not None and unverified:  # kept: the next command vents first, says why
             what, unfollowed = self.vent_check.describe(), self.vent_check.unfollowed_bar
+            if "monitor" not in self.vent_check.doubted:  # the check doubted the load cell
+                unfollowed = None  # alone: the monitor's readings still stand
             # a failure leaves the marker naming the run and its last command
             done = lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
                               0.0 if hung else STATE_WAIT_S)
