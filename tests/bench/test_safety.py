@@ -898,6 +898,29 @@ def test_force_per_bar_is_never_negative_on_a_zero_drifting_under_a_slack_muscle
     assert force_per_bar(flat, 2.2) is None
 
 
+def test_a_force_kept_with_no_force_per_bar_says_the_zero_may_have_moved_and_what_to_do():
+    # A slack muscle (below its threshold at every step: no force per bar) on a load-cell zero
+    # drifting 4 N/min reads 3.7 N before the vent and 4.0 N after: no check can tell it from
+    # a muscle a stuck exhaust holds, so VENT BY HAND stays. The message said only "the muscle
+    # still pulls ... check the regulator and the load cell", of a muscle never seen pulling:
+    # it names the zero moved as the other cause and what to look at.
+    from mkm.bench.vent import VentCheck, still_pulling
+
+    verified = VentCheck(True, 0.005, 0.05, 1.8, "monitor")
+    judged = still_pulling(verified, 3.7, 4.0, 2.2, 0.25)
+    assert not judged.verified and judged.unfollowed_bar == 0.25
+    assert judged.doubted == "the monitor or the load cell"
+    assert judged.problem == (
+        "the monitor read 0.005 bar, but the load cell still reads 4.0 N against 3.7 N before "
+        "the vent (more than 50% of it), and the run measured no force per bar (the muscle "
+        "pulled at no two successive steps): a muscle that still pulls (a monitor that reports "
+        "its command or is stuck, with an exhaust that did not open) reads so, and so does a "
+        "slack one on a load-cell zero moved 3.7 N since the tare (an amplifier warming up); "
+        "look at the muscle: hanging slack, it is vented and the zero moved (power the amplifier "
+        "up well before the run); pulling, check the regulator and the load "
+        "cell")
+
+
 def test_a_force_kept_after_the_vent_is_judged_by_what_the_threshold_pressure_makes():
     from mkm.bench.vent import VentCheck, still_pulling
 
