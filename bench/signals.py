@@ -6,10 +6,12 @@ goes, :class:`StopSignals` handles:
 
 - the first ``SIGINT`` (Ctrl-C): stop at the next block boundary (a safe point);
 - a second ``SIGINT``, ``SIGTERM`` (kill, service stop), ``SIGHUP`` (terminal or SSH session
-  closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows): raise :class:`StopSignal` at once, which
-  unwinds to the run's shutdown: vent, close the device, record. The exit status is 128 + N.
-  Once it is raised, a further signal is only noted (the run's reason names it): nothing cuts
-  the vent or the record;
+  closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows), and every other signal that would end
+  the process while it keeps its default action (:data:`ENDING_SIGNALS`: ``SIGQUIT`` from
+  Ctrl-\\, ``SIGUSR1``, ``SIGALRM``, ``SIGXCPU``, ...; POSIX): raise :class:`StopSignal` at
+  once, which unwinds to the run's shutdown: vent, close the device, record. The exit status
+  is 128 + N. Once it is raised, a further signal is only noted (the run's reason names it):
+  nothing cuts the vent or the record;
 - on Windows, closing the console window arrives as a console control event
   (``CTRL_CLOSE_EVENT``, ``SetConsoleCtrlHandler``), not as a signal, on a thread Windows makes
   for it: the handler turns it into ``SIGBREAK`` in the main thread and holds the process until
@@ -36,6 +38,13 @@ from contextlib import contextmanager
 
 STOP_SIGNAL_NAMES = ("SIGINT", "SIGTERM", "SIGHUP", "SIGBREAK")
 STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(signal, n))
+#: the other signals whose default action ends the process (POSIX; Ctrl-\ sends SIGQUIT):
+#: stop signals too while they keep that default (one a profiler or a test timer handles is
+#: left to it). The faults a process raises on itself (SIGSEGV, SIGBUS, SIGABRT, ...) are not
+#: signals a Python handler can run after.
+ENDING_SIGNAL_NAMES = ("SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM", "SIGXCPU", "SIGVTALRM",
+                       "SIGPROF", "SIGPWR", "SIGSTKFLT", "SIGIO")
+ENDING_SIGNALS = tuple(getattr(signal, n) for n in ENDING_SIGNAL_NAMES if hasattr(signal, n))
 
 # Windows console control events (wincon.h) and how long Windows waits for the handler.
 CTRL_C_EVENT, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT = 0, 1, 2
@@ -104,6 +113,9 @@ class StopSignals:
             return self  # signal handlers can only be installed in the main thread
         for signum in STOP_SIGNALS:
             self._previous[signum] = signal.signal(signum, self._handle)
+        for signum in ENDING_SIGNALS:
+            if signal.getsignal(signum) == signal.SIG_DFL:
+                self._previous[signum] = signal.signal(signum, self._handle)
         if WINDOWS:
             self._install_console_handler()
         self.active = True

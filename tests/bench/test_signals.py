@@ -392,3 +392,64 @@ def test_a_signal_during_the_devices_open_is_held_until_the_open_ends(config, tm
             "failed", "stopped by SIGTERM during the device's open, held until its bound "
             "passed: opening the device did not return within 0.2 s (the driver hangs): the "
             "vent is NOT known to be written (the open writes it); VENT BY HAND")
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGQUIT"), reason="POSIX signals")
+@pytest.mark.parametrize("name", ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGXCPU"])
+def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path, name):
+    # Ctrl-\ (SIGQUIT), or a SIGUSR1, SIGUSR2, SIGXCPU (ulimit -t) sent mid-step: their
+    # default action ended the process at once, the regulator holding the step's pressure
+    # (the AO keeps its last value), run.json "running", the block in hand lost. Each is a
+    # stop signal: vented at once, recorded with it, exit 128 + N.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    signum = getattr(signal, name)
+    backend = SimBackend(config)
+    original = backend.read
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:  # on the 0.5 bar step (the tare's 2 s are 20 samples)
+            signal.raise_signal(signum)  # its handler runs before read returns
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=lambda m: None).execute()
+    assert result.status == "aborted" and result.exit_code == 128 + signum
+    assert result.reason == f"stopped by {name} at once; vented"
+    run = load_run(result.path)
+    assert run.meta.stop_signal == name and run.meta.stop_signal_number == signum
+    acquired = run.samples[run.samples["phase"] != "vent"]
+    assert list(acquired["sample"]) == list(range(31))  # the block in hand kept
+    assert (run.commands["command_bar"] > 0).any()  # it was pressurised
+    assert backend.commands[-1][1] == 0.0 and run.commands["purpose"].iloc[-1] == "vent"
+    assert run.meta.vent_check["verified"]
+    assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGPROF"), reason="POSIX signals")
+def test_a_signal_handled_by_its_own_handler_is_left_to_it(config, tmp_path):
+    # a profiler's SIGPROF, a test timer's SIGALRM (pytest-timeout's): not the run's to take
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    def own(signum, frame):
+        pass
+
+    previous = signal.signal(signal.SIGPROF, own)
+    try:
+        backend = SimBackend(config)
+        original, seen = backend.read, []
+
+        def read(n, timeout):
+            seen.append(signal.getsignal(signal.SIGPROF))
+            return original(n, timeout)
+
+        backend.read = read
+        result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                          notify=lambda m: None).execute()
+        assert result.status == "complete" and set(seen) == {own}
+    finally:
+        signal.signal(signal.SIGPROF, previous)
