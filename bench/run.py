@@ -565,7 +565,10 @@ class BenchRun:
         self.handle_signals = handle_signals
         self.command = command
         self.signals = StopSignals(on_first_interrupt=lambda: self.notify(
-            "stopping at the next safe point (Ctrl-C again to vent now)"))
+            "stopping at the next safe point (Ctrl-C again to vent now)"), on_suspend=lambda:
+            self.notify("Ctrl-Z does not suspend a run: suspended, it would hold the regulator's "
+                        "pressure with no interlock watching; Ctrl-C stops it at a safe point, "
+                        "vented"))
         self.steps = plan_steps(config)
         self.recorder: Recorder | None = None
         self.acquisition: Acquisition | None = None

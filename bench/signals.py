@@ -12,6 +12,8 @@ goes, :class:`StopSignals` handles:
   once, which unwinds to the run's shutdown: vent, close the device, record. The exit status
   is 128 + N. Once it is raised, a further signal is only noted (the run's reason names it):
   nothing cuts the vent or the record;
+- ``SIGTSTP`` (Ctrl-Z; POSIX) is refused and said (:data:`SUSPEND_SIGNAL`): a suspended run
+  would hold its pressure with no interlock watching;
 - on Windows, closing the console window arrives as a console control event
   (``CTRL_CLOSE_EVENT``, ``SetConsoleCtrlHandler``), not as a signal, on a thread Windows makes
   for it: the handler turns it into ``SIGBREAK`` in the main thread and holds the process until
@@ -45,6 +47,9 @@ STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(si
 ENDING_SIGNAL_NAMES = ("SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM", "SIGXCPU", "SIGVTALRM",
                        "SIGPROF", "SIGPWR", "SIGSTKFLT", "SIGIO")
 ENDING_SIGNALS = tuple(getattr(signal, n) for n in ENDING_SIGNAL_NAMES if hasattr(signal, n))
+#: Ctrl-Z (POSIX): a run it suspended would hold its pressure with no interlock watching, for as
+#: long as it stays suspended; refused while a run goes, and said
+SUSPEND_SIGNAL = getattr(signal, "SIGTSTP", None)
 
 # Windows console control events (wincon.h) and how long Windows waits for the handler.
 CTRL_C_EVENT, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT = 0, 1, 2
@@ -89,9 +94,11 @@ class StopSignals:
 
     def __init__(self, on_first_interrupt: Callable[[], None] | None = None,
                  interrupt_main: Callable[[int], None] | None = None,
-                 linger: bool | None = None):
+                 linger: bool | None = None,
+                 on_suspend: Callable[[], None] | None = None):
         self.linger = LINGER if linger is None else linger
         self.on_first_interrupt = on_first_interrupt
+        self.on_suspend = on_suspend
         self.stop_requested_at: float | None = None
         self.signal_at: float | None = None
         self.console_event: str | None = None
@@ -116,6 +123,8 @@ class StopSignals:
         for signum in ENDING_SIGNALS:
             if signal.getsignal(signum) == signal.SIG_DFL:
                 self._previous[signum] = signal.signal(signum, self._handle)
+        if SUSPEND_SIGNAL is not None and signal.getsignal(SUSPEND_SIGNAL) == signal.SIG_DFL:
+            self._previous[SUSPEND_SIGNAL] = signal.signal(SUSPEND_SIGNAL, self._refuse_suspend)
         if WINDOWS:
             self._install_console_handler()
         self.active = True
@@ -132,6 +141,10 @@ class StopSignals:
             ctypes.windll.kernel32.SetConsoleCtrlHandler(self._console_callback, False)
             self._console_callback = None
         self.active = False
+
+    def _refuse_suspend(self, signum, frame) -> None:
+        if self.on_suspend is not None:
+            self.on_suspend()
 
     def _handle(self, signum, frame) -> None:
         if self.stopping:  # a stop is under way: this one cannot cut its vent or its record

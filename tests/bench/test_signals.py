@@ -453,3 +453,30 @@ def test_a_signal_handled_by_its_own_handler_is_left_to_it(config, tmp_path):
         assert result.status == "complete" and set(seen) == {own}
     finally:
         signal.signal(signal.SIGPROF, previous)
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGTSTP"), reason="POSIX job control")
+def test_ctrl_z_does_not_suspend_a_run(config, tmp_path):
+    # Ctrl-Z on the 0.5 bar step suspended the process: the regulator held the step's pressure
+    # with no interlock watching for as long as it stayed suspended (`mkm vent` could only ask
+    # it to stop). It is refused, said once, and the run goes on to its end.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    backend = SimBackend(config)
+    original, said = backend.read, []
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:
+            signal.raise_signal(signal.SIGTSTP)  # its handler runs before read returns
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=said.append).execute()
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert said.count("Ctrl-Z does not suspend a run: suspended, it would hold the regulator's "
+                      "pressure with no interlock watching; Ctrl-C stops it at a safe point, "
+                      "vented") == 1
+    assert signal.getsignal(signal.SIGTSTP) == signal.SIG_DFL  # given back after the run
