@@ -605,13 +605,36 @@ def test_a_load_cell_stuck_during_the_tare_is_no_tare(config, tmp_path):
     result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
     assert result.status == "failed" and result.exit_code == 1, result.reason
     assert re.fullmatch(r"TareInvalid: tare invalid: the load cell read [0-9.]+ V unchanged for "
-                        r"the last 2\.9 s of the tare, where it strayed 0\.[0-9]+ N over the "
-                        r"tare: a stuck or disconnected load cell, behind which the force limit "
-                        r"is not watched; check its cable, amplifier and supply; nothing was "
+                        r"the last 2\.9 s of the tare, where it strayed 0\.[0-9]+ N before: a "
+                        r"stuck or disconnected load cell, behind which the force limit is not "
+                        r"watched; check its cable, amplifier and supply; nothing was "
                         r"pressurised", result.reason), result.reason
     assert max(volts for _, volts in backend.commands) == 0.0  # the regulator got vents only
     run = load_run(result.path)
     assert len(run.samples) >= 50 and not run.meta.manual_vent_required  # the tare's, kept
+
+
+def test_a_load_cell_stuck_early_in_the_tare_is_no_tare_either(config, tmp_path):
+    # Stuck from 1 s of a 5 s tare, on a code near the tare's mean: its last 3.9 s on one code
+    # pulled the whole tare's spread below one ADC step (1.22 mV), which disarmed the stuck-cell
+    # interlock and said nothing (not all on one code): the run recorded one force through all
+    # its steps, complete, exit 0, the force limit blind. The spread that shows a live cell is
+    # that of the readings before the held code (0.41 N here, 2 mV of noise): the tare is invalid.
+    from mkm.bench.sim import SimBackend
+
+    c = config.replace(sequence={"tare_s": 5.0}, sim={"faults": {"loadcell_stuck_at_s": 1.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    said = re.fullmatch(r"TareInvalid: tare invalid: the load cell read [0-9.]+ V unchanged for "
+                        r"the last 3\.9 s of the tare, where it strayed ([0-9.]+) N before: a "
+                        r"stuck .*; nothing was pressurised", result.reason)
+    assert said, result.reason
+    # the readings before it: 2 mV rms of noise at 196.133 N/V (0.39 N), quantised, over 10
+    assert float(said.group(1)) == pytest.approx(0.002 * 196.133, rel=0.4)
+    tare = load_run(result.path).samples.query("phase == 'tare'")["loadcell_V"]
+    assert len(tare) == 50 and tare.std() < 1.22e-3  # the whole tare's spread: below a step
+    assert max(volts for _, volts in backend.commands) == 0.0
 
 
 def test_a_load_cell_stuck_late_in_the_tare_trips_two_seconds_after_it_stuck(config,
