@@ -12,6 +12,7 @@ backends of :mod:`mkm.bench.backends`.
 from __future__ import annotations
 
 import math
+import os
 import sys
 
 from mkm.cli.common import (
@@ -236,15 +237,24 @@ def _acquire(args) -> int:
                          allow_past_lock=args.allow_past_lock)
     except BenchError as exc:  # the bench is held by another process: nothing was touched
         return _failed(args, exc)
-    simulated = " SIMULATED" if config.simulated else ""
+    try:
+        _said(args, result, " SIMULATED" if config.simulated else "")
+    except BrokenPipeError:  # the reader of its output left (`| tee log`, ended by the same
+        # Ctrl-C): the run is recorded, and its exit status still says how it ended
+        for stream in (sys.stdout, sys.stderr):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), stream.fileno())
+    return result.exit_code
+
+
+def _said(args, result, simulated: str) -> None:
+    """A run's outcome on stderr and its folder on stdout, once it exists."""
     if result.path is None:
         say(args, "error", f"{simulated.strip()} {result.reason}".strip())
-        return result.exit_code
+        return
     print(f"{command_name(args)}: run{simulated} {result.status}: {result.reason}", file=sys.stderr)
     if result.manual_vent_required:
         say(args, "error", "VENT THE MUSCLE BY HAND NOW: the vent was not verified")
     print(result.path, flush=True)
-    return result.exit_code
 
 
 def _tare(args) -> int:
