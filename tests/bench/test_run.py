@@ -1001,3 +1001,23 @@ def test_acquire_keeps_its_exit_status_when_its_output_reader_left(tmp_path):
     (folder,) = (tmp_path / "runs").iterdir()
     run = load_run(folder)
     assert run.status == "failed" and run.reason.startswith("over-pressure interlock: ")
+
+
+def test_vent_keeps_its_exit_status_when_its_output_reader_left(tmp_path):
+    # `mkm vent 2>&1 | tee vent.log` with the tee gone: a vent it could not verify (a monitor
+    # frozen at 0.5 bar) said VENT BY HAND into the broken pipe and exited 0
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    text = (Path(__file__).parents[2] / "bench/configs/paper_prototype.toml").read_text()
+    config = tmp_path / "bench.toml"
+    config.write_text(text.replace('model = "axisym"', 'model = "thickwall"')
+                      + "\n[sim.truth]\nmonitor_stuck_bar = 0.5\n")
+    proc = subprocess.Popen([sys.executable, "-m", "mkm", "vent", "--config", str(config)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            env={**os.environ, "MKM_STATE_DIR": str(tmp_path / "state")})
+    proc.stdout.close()
+    proc.stderr.close()
+    assert proc.wait(timeout=120) == 1
