@@ -13,7 +13,9 @@ goes, :class:`StopSignals` handles:
   is 128 + N. Once it is raised, a further signal is only noted (the run's reason names it):
   nothing cuts the vent or the record;
 - ``SIGTSTP`` (Ctrl-Z; POSIX) is refused and said (:data:`SUSPEND_SIGNAL`): a suspended run
-  would hold its pressure with no interlock watching;
+  would hold its pressure with no interlock watching; ``SIGTTOU`` and ``SIGTTIN``, which stop a
+  run in the background that writes to or reads from its terminal, are ignored
+  (:data:`BACKGROUND_SIGNALS`);
 - on Windows, closing the console window arrives as a console control event
   (``CTRL_CLOSE_EVENT``, ``SetConsoleCtrlHandler``), not as a signal, on a thread Windows makes
   for it: the handler turns it into ``SIGBREAK`` in the main thread and holds the process until
@@ -50,6 +52,10 @@ ENDING_SIGNALS = tuple(getattr(signal, n) for n in ENDING_SIGNAL_NAMES if hasatt
 #: Ctrl-Z (POSIX): a run it suspended would hold its pressure with no interlock watching, for as
 #: long as it stays suspended; refused while a run goes, and said
 SUSPEND_SIGNAL = getattr(signal, "SIGTSTP", None)
+#: a run in the background that writes to (or reads from) its terminal is stopped by these
+#: (POSIX; ``stty tostop``): ignored while a run goes, its lines are written (its reads fail)
+BACKGROUND_SIGNALS = tuple(getattr(signal, n) for n in ("SIGTTOU", "SIGTTIN")
+                           if hasattr(signal, n))
 
 # Windows console control events (wincon.h) and how long Windows waits for the handler.
 CTRL_C_EVENT, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT = 0, 1, 2
@@ -125,6 +131,9 @@ class StopSignals:
                 self._previous[signum] = signal.signal(signum, self._handle)
         if SUSPEND_SIGNAL is not None and signal.getsignal(SUSPEND_SIGNAL) == signal.SIG_DFL:
             self._previous[SUSPEND_SIGNAL] = signal.signal(SUSPEND_SIGNAL, self._refuse_suspend)
+        for signum in BACKGROUND_SIGNALS:
+            if signal.getsignal(signum) == signal.SIG_DFL:
+                self._previous[signum] = signal.signal(signum, signal.SIG_IGN)
         if WINDOWS:
             self._install_console_handler()
         self.active = True

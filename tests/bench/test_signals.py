@@ -480,3 +480,29 @@ def test_ctrl_z_does_not_suspend_a_run(config, tmp_path):
                       "pressure with no interlock watching; Ctrl-C stops it at a safe point, "
                       "vented") == 1
     assert signal.getsignal(signal.SIGTSTP) == signal.SIG_DFL  # given back after the run
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGTTOU"), reason="POSIX job control")
+@pytest.mark.parametrize("name", ["SIGTTOU", "SIGTTIN"])
+def test_a_run_in_the_background_is_not_stopped_by_its_terminal(config, tmp_path, name):
+    # `mkm acquire ... &` on a terminal set `stty tostop`: its first line to the terminal
+    # (SIGTTOU; a manual regulator's prompt read, SIGTTIN) stopped the process, the regulator
+    # holding its pressure with no interlock watching. Ignored during the run: it goes on.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    signum = getattr(signal, name)
+    backend = SimBackend(config)
+    original = backend.read
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:
+            signal.raise_signal(signum)
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=lambda m: None).execute()
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
