@@ -733,6 +733,9 @@ class BenchRun:
 
     def _finished(self) -> tuple[RunStatus, str, int]:
         meta, n = self.recorder.meta, len(self.steps)
+        blind = self.acquisition.one_code_throughout()
+        if blind:  # every step done, none measured
+            return RunStatus.FAILED, f"{_all_steps(n)} done, but {blind}", EXIT_FAILED
         if not meta.gaps:
             return RunStatus.COMPLETE, f"{_all_steps(n)} done", EXIT_OK
         spans = ", ".join(f"{g.start_s:g}-{g.end_s:g} s" for g in meta.gaps)

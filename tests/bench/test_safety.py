@@ -637,6 +637,25 @@ def test_a_load_cell_stuck_early_in_the_tare_is_no_tare_either(config, tmp_path)
     assert max(volts for _, volts in backend.commands) == 0.0
 
 
+def test_a_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_run(config,
+                                                                               tmp_path):
+    # Stuck from the start: the tare on one code is said (a cell quieter than a step reads so
+    # too) and the run goes on, the stuck-cell interlock disarmed; it then recorded one force
+    # at every step up to 1.0 bar and ended complete, exit 0, for identify and the report to
+    # use. A cell that never left its code from before the first pressure to the end, with the
+    # muscle pressurised, measured nothing: all steps done, failed, exit 1, with why.
+    c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert re.fullmatch(r"all 3 steps done, but the load cell read one ADC code \(0\.0[0-9]+ V\) "
+                        r"from before the first pressure to the end, while the monitor read up "
+                        r"to 1\.0[0-9] bar: a stuck or disconnected cell, or a muscle that never "
+                        r"pulled one ADC step \(0\.24 N\); its forces measure nothing, and the "
+                        r"force limit was blind", result.reason), result.reason
+    run = load_run(result.path)
+    assert run.steps["force_N_mean"].nunique() == 1 and run.meta.vent_check["verified"]
+
+
 def test_a_load_cell_stuck_late_in_the_tare_trips_two_seconds_after_it_stuck(config,
                                                                              tmp_path):
     # Stuck from 4 s of a 5 s tare (1 s of it on one code): the interlock counted its 2 s from
