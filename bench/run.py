@@ -564,11 +564,7 @@ class BenchRun:
         self._console: _Console | None = None
         self.handle_signals = handle_signals
         self.command = command
-        self.signals = StopSignals(on_first_interrupt=lambda: self.notify(
-            "stopping at the next safe point (Ctrl-C again to vent now)"), on_suspend=lambda:
-            self.notify("Ctrl-Z does not suspend a run: suspended, it would hold the regulator's "
-                        "pressure with no interlock watching; Ctrl-C stops it at a safe point, "
-                        "vented"))
+        self.signals = StopSignals()
         self.steps = plan_steps(config)
         self.recorder: Recorder | None = None
         self.acquisition: Acquisition | None = None
@@ -601,7 +597,10 @@ class BenchRun:
         return min(times) if times else None
 
     def _pending_stop(self) -> Stop | None:
-        """The stop to make at this safe point: a first Ctrl-C, or `mkm vent` asking."""
+        """The stop to make at this safe point: a first Ctrl-C, or `mkm vent` asking; the
+        signal handlers' notices are said here, by the loop."""
+        for message in self.signals.said():
+            self.notify(message)
         if self.signals.stop_requested_at is None and self.owner is not None:
             by = self.owner.stop_request()
             if by is not None:
@@ -1051,6 +1050,8 @@ class BenchRun:
                 observer.close()
             except BaseException:  # a plot window gone: nothing to record
                 pass
+        for message in self.signals.said():  # after the vent: what the loop did not say
+            self.notify(message)
         if self.signals.noted:  # signals during the stop: said, never obeyed mid-vent
             problems.append(f"{', '.join(dict.fromkeys(self.signals.noted))} received while "
                             "stopping: noted, the vent and the record went first")

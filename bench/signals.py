@@ -57,6 +57,11 @@ SUSPEND_SIGNAL = getattr(signal, "SIGTSTP", None)
 BACKGROUND_SIGNALS = tuple(getattr(signal, n) for n in ("SIGTTOU", "SIGTTIN")
                            if hasattr(signal, n))
 
+#: what the first Ctrl-C and a refused Ctrl-Z say (:meth:`StopSignals.said`)
+FIRST_INTERRUPT = "stopping at the next safe point (Ctrl-C again to vent now)"
+SUSPEND_REFUSED = ("Ctrl-Z does not suspend a run: suspended, it would hold the regulator's "
+                   "pressure with no interlock watching; Ctrl-C stops it at a safe point, vented")
+
 # Windows console control events (wincon.h) and how long Windows waits for the handler.
 CTRL_C_EVENT, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT = 0, 1, 2
 CTRL_LOGOFF_EVENT, CTRL_SHUTDOWN_EVENT = 5, 6
@@ -98,13 +103,13 @@ class StopSignals:
     ``linger`` (default :data:`LINGER`): the stop signals stay ignored after the block.
     """
 
-    def __init__(self, on_first_interrupt: Callable[[], None] | None = None,
-                 interrupt_main: Callable[[int], None] | None = None,
-                 linger: bool | None = None,
-                 on_suspend: Callable[[], None] | None = None):
+    def __init__(self, interrupt_main: Callable[[int], None] | None = None,
+                 linger: bool | None = None):
         self.linger = LINGER if linger is None else linger
-        self.on_first_interrupt = on_first_interrupt
-        self.on_suspend = on_suspend
+        # what the handlers have to say to the operator, said by the run (:meth:`said`): a
+        # handler never writes, since the write it interrupted may hold the lock its own would
+        # wait for, in the one thread that runs the interlocks
+        self.notices: list[str] = []
         self.stop_requested_at: float | None = None
         self.signal_at: float | None = None
         self.console_event: str | None = None
@@ -152,8 +157,13 @@ class StopSignals:
         self.active = False
 
     def _refuse_suspend(self, signum, frame) -> None:
-        if self.on_suspend is not None:
-            self.on_suspend()
+        self.notices.append(SUSPEND_REFUSED)
+
+    def said(self) -> Iterator[str]:
+        """The handlers' notices not yet said, oldest first (taken from the list one at a
+        time: a handler may add one meanwhile)."""
+        while self.notices:
+            yield self.notices.pop(0)
 
     def _handle(self, signum, frame) -> None:
         if self.stopping:  # a stop is under way: this one cannot cut its vent or its record
@@ -162,8 +172,7 @@ class StopSignals:
         now = time.monotonic()
         if signum == signal.SIGINT and self.stop_requested_at is None:
             self.stop_requested_at = now
-            if self.on_first_interrupt is not None:
-                self.on_first_interrupt()
+            self.notices.append(FIRST_INTERRUPT)
             return
         self.signal_at = now
         detail = "second Ctrl-C" if signum == signal.SIGINT else (self.console_event or "")

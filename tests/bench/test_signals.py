@@ -506,3 +506,36 @@ def test_a_run_in_the_background_is_not_stopped_by_its_terminal(config, tmp_path
                       notify=lambda m: None).execute()
     assert result.status == "complete" and result.exit_code == 0, result.reason
     assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
+
+
+@pytest.mark.parametrize("name", ["SIGINT", "SIGTSTP"])
+def test_a_signal_handler_writes_nothing_the_loop_says_its_notice(config, tmp_path, name):
+    # The first Ctrl-C's notice (and a refused Ctrl-Z's) was written by the signal handler,
+    # which runs in the loop's own thread between two of its steps: landing inside the loop's
+    # write to the console (its queue's lock held), the handler's write would wait for that
+    # lock for good, and the loop, every interlock with it, with the pressure held. The handler
+    # only notes it; the loop says it at its next block.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.signals import FIRST_INTERRUPT, SUSPEND_REFUSED
+    from mkm.bench.sim import SimBackend
+
+    if not hasattr(signal, name):
+        pytest.skip(f"no {name} here")
+    backend = SimBackend(config)
+    original, said, during = backend.read, [], []
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:
+            before = len(said)
+            signal.raise_signal(getattr(signal, name))  # its handler runs before this returns
+            during.append(said[before:])
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=said.append).execute()
+    assert during == [[]]  # nothing written by the handler
+    notice = FIRST_INTERRUPT if name == "SIGINT" else SUSPEND_REFUSED
+    assert said.count(notice) == 1
+    assert result.status == ("aborted" if name == "SIGINT" else "complete"), result.reason
