@@ -111,6 +111,9 @@ TABLE_COPY = "imported_table"
 #: cell wired to read tension negative)
 FORCE_SIGNS = (1, -1)
 
+#: what a lab may declare of its muscle beyond its size: the braid angle and the rubber
+DECLARED = ("theta0_deg", "C10_MPa", "C01_MPa")
+
 
 #: What a given zero may be [its unit], and why. A vented pressure sensor reads its offset: at
 #: most the half bar the simulator allows a sensor's offset below zero (more is a broken
@@ -270,7 +273,9 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     ----------
     muscle : dict
         ``id``, ``D0_mm``, ``t0_mm`` and, unless the table has them, ``L0_mm`` and ``eps``
-        (``None``: take them from the table).
+        (``None``: take them from the table); optionally :data:`DECLARED`, the braid angle and
+        rubber the lab declares (recorded with each run: identify's nominal muscle, the
+        report's prediction).
     columns, units : dict, optional
         Role -> column header, role -> unit: the reader's guesses overridden.
     sheet : str, optional
@@ -354,7 +359,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                          "table without a clock")
     if exported:  # mkm export's own
         known = key_values(path, "metadata")
-        for key in ("id", "D0_mm", "t0_mm", "L0_mm", "eps"):
+        for key in ("id", "D0_mm", "t0_mm", "L0_mm", "eps", *DECLARED):
             if muscle.get(key) is None and f"muscle.{key}" in known:
                 muscle[key] = known[f"muscle.{key}"]
         sheet = "steps"
@@ -834,7 +839,8 @@ def _muscle(given: dict, group: _Group):
             raise ValueError(f"{where}no {key}: give {option} ({source}"
                              f"{_look_alike(group, key)})")
     try:
-        values = {k: (v if k == "id" else float(v)) for k, v in values.items()}
+        values = {k: (v if k == "id" else float(v)) for k, v in values.items()
+                  if v is not None}
     except (TypeError, ValueError):
         raise ValueError(f"{where}the muscle {values} has a value that is not a number") from None
     return muscle_from_dict(values, where.rstrip(": ")), override

@@ -3,18 +3,28 @@
 - :func:`braid_lock`: whether ``muscle.eps`` shortens the braid past its locking angle, where
   Equation 2 leaves its range and the muscle pulls little or nothing (``mkm acquire`` refuses
   such a run unless told ``--allow-past-lock``; ``mkm check`` warns);
-- :func:`loadcell_warning`: whether the muscle's expected force at the highest planned pressure
-  (Equation 2, the paper's model) reaches the force interlock, which would stop the run there.
-  A warning, not a refusal: the interlock protects the cell.
+- :func:`loadcell_warning`: whether the muscle's force at the highest planned pressure may reach
+  the force interlock, which stops the run there: pre-conditioning goes to that pressure first,
+  so before any step is recorded. The force is bounded from above by Equation 2 on the braid's
+  diameter ``D0 + 2 (t0 + gap)`` (the FE model's force at eps 0; above it at any eps, where the
+  rubber takes its share) at the strongest muscle the declared tolerances allow: the paper's
+  form on the inner diameter ``D0`` is (1 + 2 t0 / D0)^2 lower, 1.7 times on a 5 mm tube with a
+  0.8 mm wall. A warning, not a refusal: the interlock protects the cell. So is a cell the
+  muscle's largest force uses less than a tenth of (:func:`oversized_warning`);
+- :func:`practical_range_warning`: whether the declared muscle or the planned pressures leave the
+  practical range, where every model's force is an extrapolation.
 
-Both read one braid angle: the muscle's ``theta0_deg`` when the configuration gives it, else
-the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says which).
+The first two read one braid angle: the muscle's ``theta0_deg`` when the configuration gives
+it, else the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says which).
 """
 
 from __future__ import annotations
 
+from mkm.bench.config import MIN_FORCE_LIMIT_FRACTION
 from mkm.fem.eq2 import BraidLock, chou_hannaford
 from mkm.fem.eq2 import braid_lock as fem_braid_lock
+from mkm.fem.limits import LIMITS, PRACTICAL_RANGE
+from mkm.fem.tolerances import Tolerances
 
 
 def muscle_lock(config) -> BraidLock:
@@ -32,28 +42,82 @@ def braid_lock(config) -> str | None:
             "little or nothing there")
 
 
-def expected_force_N(config, pressure_bar: float | None = None) -> float:
-    """Equation 2's force [N] of the muscle at ``pressure_bar`` (default: the highest planned
-    pressure), 0 past the lock."""
-    m = config.muscle
+def expected_force_N(config, pressure_bar: float | None = None, strongest: bool = False,
+                     eps: float | None = None) -> float:
+    """Equation 2's force [N] on the braid's diameter ``D0 + 2 (t0 + gap)`` at ``pressure_bar``
+    (default: the highest planned pressure) and ``eps`` (default the muscle's), 0 past the
+    lock: the FE model's force at eps 0, an upper bound of it at any eps. ``strongest``: at the
+    muscle's declared tolerances' strongest (``D0`` and ``t0`` at their upper bounds,
+    ``theta0`` and ``eps`` at their lower ones)."""
+    m, lock = config.muscle, muscle_lock(config)
     if pressure_bar is None:
         pressure_bar = max(config.sequence.pressures_bar)
-    force = chou_hannaford(pressure_bar, m.D0_mm, m.eps, muscle_lock(config).theta0_deg)
+    eps = m.eps if eps is None else eps
+    tol = m.tolerances if strongest else Tolerances(0.0, 0.0, 0.0, 0.0, 0.0)
+    braid_mm = m.D0_mm + tol.D0_mm + 2 * (m.t0_mm + tol.t0_mm + (m.gap_mm or 0.0))
+    theta0 = max(lock.theta0_deg - tol.theta0_deg, LIMITS["theta0_deg"][0])
+    force = chou_hannaford(pressure_bar, braid_mm, max(eps - tol.eps, 0.0), theta0)
     return max(float(force), 0.0)
 
 
 def loadcell_warning(config) -> str | None:
-    """The message when the expected force reaches the force interlock, else None."""
-    force, limit = expected_force_N(config), config.force_limit_N
+    """The message when the muscle's force may reach the force interlock (how much, from which
+    planned step, that pre-conditioning stops the run before its first step, and the capacity
+    a cell needs), or when its largest force, at eps 0 and the bench's highest pressure, stays below
+    :data:`~mkm.bench.config.MIN_FORCE_LIMIT_FRACTION` of the cell's capacity (the noise, the
+    ADC step and the data sheet's errors of a cell are fractions of its capacity: the cell is
+    the wrong size); else None."""
+    force, limit = expected_force_N(config, strongest=True), config.force_limit_N
     if force < limit:
+        return oversized_warning(config)
+    seq, top = config.sequence, max(config.sequence.pressures_bar)
+    first = min(p for p in seq.pressures_bar if expected_force_N(config, p, True) >= limit)
+    where = (f"pre-conditioning to {top:g} bar stops the run before its first step"
+             if seq.preconditioning_cycles else
+             f"the run stops at its first step at {first:g} bar")
+    return (f"the muscle may develop {force:.0f} N at {top:g} bar (Equation 2 on the braid's "
+            f"diameter, at its declared tolerances' strongest), beyond the force interlock at "
+            f"{limit:.0f} N ({config.safety.force_limit_fraction:g} x loadcell.capacity_N="
+            f"{config.loadcell.capacity_N:g}) from {first:g} bar: {where}; use a load cell of "
+            f"at least {force / config.safety.force_limit_fraction:.0f} N")
+
+
+def oversized_warning(config) -> str | None:
+    """The message when the muscle's largest force, Equation 2 on the braid's diameter at eps 0
+    and the bench's highest pressure (``regulator.max_pressure_bar``: the cell serves every run
+    of the muscle, whatever its eps and staircase), is below a tenth of the load cell's
+    capacity, else None."""
+    capacity_N, top = config.loadcell.capacity_N, config.regulator.max_pressure_bar
+    largest_N = expected_force_N(config, top, eps=0.0)
+    if largest_N >= MIN_FORCE_LIMIT_FRACTION * capacity_N or largest_N <= 0:
         return None
-    top = max(config.sequence.pressures_bar)
-    return (f"the muscle develops about {force:.0f} N at {top:g} bar (Equation 2), beyond the "
-            f"force interlock at {limit:.0f} N ({config.safety.force_limit_fraction:g} x "
-            f"loadcell.capacity_N={config.loadcell.capacity_N:g}): the run will stop there; use "
-            "a larger load cell")
+    low_N = expected_force_N(config, top, True, 0.0) / config.safety.force_limit_fraction
+    return (f"the muscle develops at most about {largest_N:.3g} N at {top:g} bar (Equation 2 on "
+            f"the braid's diameter at eps 0), {100 * largest_N / capacity_N:.2g} % of "
+            f"loadcell.capacity_N={capacity_N:g}: the cell's noise, ADC step and data-sheet "
+            f"errors, fractions of its capacity, weigh on every force (`mkm check`'s expected "
+            f"uncertainty); a cell of {low_N:.3g} to {largest_N / MIN_FORCE_LIMIT_FRACTION:.3g} N "
+            "capacity suits this muscle")
+
+
+def practical_range_warning(config) -> str | None:
+    """The message when the declared muscle or the highest planned pressure lies outside the
+    practical range every model is validated over (:data:`mkm.fem.limits.PRACTICAL_RANGE`),
+    else None: the run records it all the same, every model's force for it extrapolates."""
+    m = config.muscle
+    numbers = {k: getattr(m, k) for k in ("D0_mm", "t0_mm", "L0_mm", "theta0_deg", "C10_MPa",
+                                          "C01_MPa") if getattr(m, k) is not None}
+    outside = PRACTICAL_RANGE.violations(pressure_bar=max(config.sequence.pressures_bar),
+                                         **numbers)
+    if not outside:
+        return None
+    return (f"the muscle lies outside the practical range every model is validated over "
+            f"({'; '.join(outside)}): its runs are recorded all the same, but every model's "
+            "force for them (the report's, identify's, the simulated bench's) is an "
+            "extrapolation (`mkm models` states the range)")
 
 
 def warnings(config) -> list[str]:
-    """Every preflight message for ``config`` (braid lock, load cell)."""
-    return [w for w in (braid_lock(config), loadcell_warning(config)) if w]
+    """Every preflight message for ``config`` (braid lock, load cell, practical range)."""
+    return [w for w in (braid_lock(config), loadcell_warning(config),
+                        practical_range_warning(config)) if w]

@@ -642,12 +642,14 @@ def _plan_lines(steps) -> list[str]:
 
 def expected_budget_lines(config: BenchConfig) -> list[str]:
     """The uncertainty budget a run of ``config`` can have at each planned pressure (forces
-    from Equation 2; data terms at the settle and tare limits), and its terms at the top."""
+    from Equation 2 on the braid's diameter, :func:`mkm.bench.preflight.expected_force_N`; data
+    terms at the settle and tare limits), and its terms at the top."""
     pressures = sorted(set(config.sequence.pressures_bar))
     budgets = [(p, force, expected_budget(config, force, p))
                for p, force in ((p, expected_force_N(config, p)) for p in pressures)]
-    lines = ["expected uncertainty (U at 95.45 %; forces by Equation 2; hold scatter, drift and "
-             "tare at their settle and safety limits, so at most this):",
+    lines = ["expected uncertainty (U at 95.45 %; forces by Equation 2 on the braid's diameter, "
+             "the FE model's at eps 0; hold scatter, drift and tare at their settle and safety "
+             "limits, so at most this):",
              f"{'P [bar]':>8} {'F [N]':>8} {'U(F) [N]':>9} {'U(F) [%]':>9} {'U(P) [bar]':>10}"
              "  largest term"]
     for p, force, b in budgets:

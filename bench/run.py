@@ -63,7 +63,7 @@ from mkm.bench.bounded import call_within
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
-from mkm.bench.preflight import braid_lock, loadcell_warning
+from mkm.bench.preflight import braid_lock, warnings
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals
@@ -1202,7 +1202,8 @@ def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtu
     """Record one run of ``config`` under ``out_root``.
 
     ``backend`` overrides ``config.daq.backend``. A muscle held past its braid lock is refused
-    (``ValueError``) unless ``allow_past_lock``; a load cell the muscle would overload is said.
+    (``ValueError``) unless ``allow_past_lock``; a load cell the wrong size for the muscle, or
+    a muscle outside the practical range, is said (:func:`mkm.bench.preflight.warnings`).
     ``notify`` receives the operator's lines (default: stderr, ``mkm <command>: ...``, with
     ``command`` the command the user ran).
     """
@@ -1210,7 +1211,7 @@ def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtu
     lock = braid_lock(config)
     if lock and not allow_past_lock:
         raise ValueError(f"{lock}: pass --allow-past-lock to record it anyway")
-    for warning in filter(None, [lock, loadcell_warning(config)]):
+    for warning in warnings(config):
         (notify or StderrNotice(command))(f"warning: {warning}")
     check_out_root(out_root)  # before the device is opened
     device = make_backend(config, clock)

@@ -335,8 +335,8 @@ class Staircase:
         if self.config.regulator.electronic:  # a manual regulator's readings are typed
             tare.update(vented_monitor(monitor))
             check_vented_monitor(tare, self.config)
-        self.acq.tare_offset_V = tare["offset_V"]
-        held_V, intervals, self.acq.tare_std_V = held_tail(volts)
+        held_V, intervals, stray_V = held_tail(volts)
+        self.acq.set_tare(tare["offset_V"], stray_V)
         self.acq.held_since_tare(held_V, intervals)
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
         for warning in (one_code_warning(tare, self.config), rest_warning(tare, self.config),

@@ -65,7 +65,7 @@ from mkm.bench.backend import (
     ReadTimeout,
 )
 from mkm.bench.devices import USB6001
-from mkm.bench.sim_settings import INSTRUMENT_BOUNDS
+from mkm.bench.sim_settings import INSTRUMENT_BOUNDS, MODEL_FIELDS
 from mkm.fem.friction import advance
 
 USB6001_RANGE_V = USB6001.ai_range_V
@@ -97,8 +97,21 @@ def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
     m, s, fs = config.muscle, config.sim, config.regulator.full_scale_bar
     mesh = s.fe_mesh if s.model == "axisym" else None
     top = max(fs, highest_pressure_bar(config))
-    return _table(s.model, mesh, m.L0_mm, tuple(sorted(s.truth.model_params().items())),
+    return _table(s.model, mesh, m.L0_mm, tuple(sorted(muscle_params(config).items())),
                   *s.truth.geometry(m), m.eps, top, math.ceil((n - 1) * top / fs) + 1)
+
+
+def muscle_params(config) -> dict[str, float | str]:
+    """What the simulated muscle's force model is built with besides its length: the braid
+    angle, rubber and gap ``[muscle]`` declares, those the model takes, with ``[sim.truth]``'s
+    where set (the muscle as it is, departing from its declaration); the model's calibrated
+    ones where neither says."""
+    from mkm.fem.ladder import entry
+
+    taken = entry(config.sim.model).parameters
+    declared = {k: v for k, v in config.muscle.model_parameters().items()
+                if k in MODEL_FIELDS and k in taken}
+    return {**declared, **config.sim.truth.model_params()}
 
 
 def highest_pressure_bar(config) -> float:
@@ -155,7 +168,7 @@ def describe_physics(config) -> dict:
     and the effects added to it."""
     s, m = config.sim, config.muscle
     mesh = s.fe_mesh if s.model == "axisym" else None
-    model = _model(s.model, mesh, m.L0_mm, s.truth.model_params())
+    model = _model(s.model, mesh, m.L0_mm, muscle_params(config))
     geometry = dict(zip(("D0_mm", "t0_mm"), s.truth.geometry(m), strict=True))
     departures = [f"true {k} {v:g} (declared {getattr(m, k):g})" for k, v in geometry.items()
                   if v != getattr(m, k)]

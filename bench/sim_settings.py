@@ -72,10 +72,11 @@ class Truth:
     (its output stage, wire or input stuck), while the regulator still holds its own sensor at
     the command.
 
-    Unset (None): the nominal value (the calibrated angle, Silastic S, no gap, a bonded braid,
-    the declared geometry, exact instruments). With ``[sim]``'s ``hysteresis_fraction``,
-    ``creep_fraction`` and ``creep_tau_s`` this is the truth that ``mkm identify`` must find
-    blind: it is recorded in the run's simulator settings only
+    Unset (None): the declared value (``[muscle]``'s angle, rubber and gap where it gives
+    them, else the calibrated angle, Silastic S, no gap; a bonded braid, the declared
+    geometry, exact instruments: :func:`mkm.bench.sim.muscle_params`). With ``[sim]``'s
+    ``hysteresis_fraction``, ``creep_fraction`` and ``creep_tau_s`` this is the truth that
+    ``mkm identify`` must find blind: it is recorded in the run's simulator settings only
     (:func:`remove_simulator_settings` deletes it).
     """
 

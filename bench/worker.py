@@ -570,6 +570,17 @@ class Acquisition:
         return (statistics.median(self._recent_bar), self._recent_command_bar,
                 self._recent_bar[-1])
 
+    def set_tare(self, offset_V: float, std_V: float) -> None:
+        """Take forces from the tare's zero ``offset_V`` [V] on; the forces read before it (the
+        tare's, against the configuration's offset) are taken from it too, so that the vent
+        check weighs the muscle's force, not the amplifier's offset, before a vent that comes
+        within :data:`mkm.bench.vent.SETTLED_S` of the tare. ``std_V``: the cell's spread at the
+        tare [V]."""
+        shift_N = (offset_V - self.tare_offset_V) * self.cell.sensitivity_N_per_V
+        self._recent_N = deque((force - shift_N for force in self._recent_N),
+                               maxlen=self._recent_N.maxlen)
+        self.tare_offset_V, self.tare_std_V = offset_V, std_V
+
     def hung_said(self) -> str:
         """Why the read hung and what the watchdog's vent did, or ""."""
         return "; ".join(filter(None, [self.hung, self.hung_vent]))

@@ -130,6 +130,8 @@ SHARED_HELP = {
     "--t0": "wall thickness [mm]",
     "--L0": "muscle length at rest [mm]",
     "--theta0": "braid angle at rest [deg]",
+    "--C10": "rubber Mooney-Rivlin C10 [MPa]",
+    "--C01": "rubber Mooney-Rivlin C01 [MPa]",
 }
 
 

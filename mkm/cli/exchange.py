@@ -7,7 +7,13 @@ from __future__ import annotations
 
 import argparse
 
-from mkm.cli.common import add_progress_argument, argtype, derived_help, shared_help
+from mkm.cli.common import (
+    add_progress_argument,
+    argtype,
+    derived_help,
+    parse_within,
+    shared_help,
+)
 from mkm.core.ranges import parse_fraction, parse_number
 from mkm.core.records import EXPORT_FORMATS
 
@@ -19,6 +25,9 @@ EXPORT_EXAMPLE = "example: mkm export mkm-out/demo/runs/<run> --format xlsx --ou
 
 #: when the muscle's id and size are needed: only mkm export's workbook records them
 EXPORTED = "required unless the table is a workbook written by mkm export, which holds it"
+#: the braid angle and rubber a lab declares: recorded with each run
+DECLARED = ("as the lab declares it, recorded with each run: mkm identify's nominal muscle "
+            "and the report's prediction; default: none declared, the models' calibrated one")
 
 
 def register(subparsers) -> None:
@@ -47,6 +56,11 @@ def register(subparsers) -> None:
     imp.add_argument("--eps", type=argtype(parse_fraction),
                      help=shared_help("--eps", "default: the table's eps or length column; "
                                       f"without either, {EXPORTED}"))
+    for option, name, unit in (("--theta0", "theta0_deg", "DEG"), ("--C10", "C10_MPa", "MPA"),
+                               ("--C01", "C01_MPa", "MPA")):
+        imp.add_argument(option, dest=name, metavar=unit,
+                         type=argtype(parse_within, option, name),
+                         help=shared_help(option, DECLARED))
     imp.add_argument("--columns", default=None, metavar="ROLE=COLUMN,...",
                      help="which column holds what, where the names do not say: pressure=..., "
                      "force=..., time=..., direction=..., eps=..., length=..., run=...; "
@@ -198,7 +212,8 @@ def _import(args) -> int:
         runs = import_table(
             args.table, args.out or default_out("runs"),
             {"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0, "L0_mm": args.L0,
-             "eps": args.eps},
+             "eps": args.eps, "theta0_deg": args.theta0_deg, "C10_MPa": args.C10_MPa,
+             "C01_MPa": args.C01_MPa},
             columns=parse_assignments(args.columns, "--columns"),
             units=parse_assignments(args.units, "--units"), sheet=args.sheet,
             tare=parse_zero(args.tare, "--tare", "N"),

@@ -215,9 +215,9 @@ def _parameter_arguments(parser) -> None:
     parser.add_argument("--theta0", type=argtype(parse_within, "--theta0", "theta0_deg"),
                         help=shared_help("--theta0", "default: calibrated"))
     parser.add_argument("--C10", type=argtype(parse_within, "--C10", "C10_MPa"),
-                        help="rubber Mooney-Rivlin C10 [MPa] (default Silastic S, 0.0694)")
+                        help=shared_help("--C10", "default Silastic S, 0.0694"))
     parser.add_argument("--C01", type=argtype(parse_within, "--C01", "C01_MPa"),
-                        help="rubber Mooney-Rivlin C01 [MPa] (default Silastic S, 0.0628)")
+                        help=shared_help("--C01", "default Silastic S, 0.0628"))
 
 
 def _accept_argument(parser) -> None:

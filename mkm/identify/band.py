@@ -15,7 +15,8 @@
   the declared +- tolerance: every force the runs measured, so every force the calibration
   predicts, carries the cell's unknown gain);
 - the misfit, where calibration.json records one (``band.misfit_rms_N``: the residual the
-  model could not explain).
+  model could not explain, :attr:`mkm.identify.goodness.Goodness.discrepancy_rms_N`; the
+  covariance is then the widened intervals', by the Birge ratio).
 
 A fitted wall or diameter enters only as the solve's own ``--t0``/``--D0``: the band assumes
 the identified muscle's geometry is what is solved (parameters.csv gives the fitted values).

@@ -38,7 +38,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy import stats
+from scipy import optimize, stats
 
 from mkm.fem.calibration import THRESHOLD_FLOOR_FRACTION, line_above_threshold
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure
@@ -50,8 +50,9 @@ from mkm.identify.runs import shown_effects, step_slopes
 #: over the number of branches)
 MISFIT_P = 1e-3
 #: a slack step's mean force called a zero error beyond this many standard errors and this
-#: force [N] (the packaged cell's ADC step is 0.24 N)
-ZERO_SIGMAS, ZERO_FLOOR_N = 5.0, 0.5
+#: many of the run's load cell's ADC steps (a quantised zero), or this force [N] for a table
+#: (no cell recorded)
+ZERO_SIGMAS, ZERO_FLOOR_STEPS, ZERO_FLOOR_N = 5.0, 2.0, 0.5
 #: a step whose fitted force is below this [N] is slack
 SLACK_N = 1e-6
 #: runs-test probability below which the residuals are said to have structure
@@ -73,6 +74,9 @@ class Branch:
     runs_p: float  # one-sided: P(this few runs | independent signs)
     rms_residual_N: float
     rms_noise_N: float
+    #: each step's mean residual and its noise [N] (the discrepancy's estimate takes them)
+    residual_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
+    noise_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
 
     @property
     def reduced(self) -> float:
@@ -101,8 +105,8 @@ class Goodness:
     fitted: tuple[str, ...] = ()  # the fit's parameters: a misfit names what it did not fit
     shown: tuple[str, ...] = ()  # the --params groups of what the runs show (SHOWN)
     #: per run, the settled steps where the fitted muscle is slack: (run, steps, their mean
-    #: measured force [N], its standard error [N])
-    slack: list[tuple[str, int, float, float]] = field(default_factory=list)
+    #: measured force [N], its standard error [N], the smallest force called a zero error [N])
+    slack: list[tuple[str, int, float, float, float]] = field(default_factory=list)
 
     @property
     def reduced(self) -> float:
@@ -135,14 +139,23 @@ class Goodness:
 
     @property
     def discrepancy_rms_N(self) -> float:
-        """The residual the noise does not explain, over every step (root of the mean square
-        residual less the mean square noise); 0 when the model fits within the noise."""
-        steps = sum(b.steps for b in self.branches)
-        if not self.misfit or steps == 0:
+        """The residual the noise does not explain: the standard deviation ``d`` [N] of a
+        discrepancy that, added to every step's own noise ``s``, brings the steps' residuals
+        ``r`` to their noise (``sum r^2 / (s^2 + d^2)`` = the number of steps: each step
+        weighed by its own noise, so a slack step's small residual far beyond its small noise
+        counts as the chi-square counts it, not under a loaded step's larger noise); 0 when
+        the model fits within the noise."""
+        r = np.concatenate([b.residual_N for b in self.branches] or [np.zeros(0)])
+        s = np.concatenate([b.noise_N for b in self.branches] or [np.zeros(0)])
+        if not self.misfit or r.size == 0:
             return 0.0
-        excess = sum(b.steps * (b.rms_residual_N ** 2 - b.rms_noise_N ** 2)
-                     for b in self.branches) / steps
-        return math.sqrt(max(excess, 0.0))
+
+        def excess(d2: float) -> float:
+            return float(np.sum(r**2 / (s**2 + d2))) - r.size
+
+        if excess(0.0) <= 0.0:
+            return 0.0
+        return math.sqrt(optimize.brentq(excess, 0.0, float(np.sum(r**2)), xtol=1e-12))
 
     def line(self) -> str | None:
         """One line when the model does not fit within the noise (None when it does)."""
@@ -176,13 +189,14 @@ class Goodness:
 
     def zero_line(self) -> str | None:
         """One line when the fit misfits and a run's steps where the fitted muscle is slack
-        read a force beyond :data:`ZERO_SIGMAS` standard errors and :data:`ZERO_FLOOR_N`: a
+        read a force beyond :data:`ZERO_SIGMAS` standard errors and :data:`ZERO_FLOOR_STEPS`
+        of the cell's ADC steps (:data:`ZERO_FLOOR_N` for a table): a
         slack muscle pulls nothing, so what they read is the load cell's zero (a tare left
         out, a drift) or a preload the model does not have."""
         if not self.misfit:
             return None
-        off = [(run, n, F) for run, n, F, se in self.slack
-               if abs(F) > max(ZERO_SIGMAS * se, ZERO_FLOOR_N)]
+        off = [(run, n, F) for run, n, F, se, floor in self.slack
+               if abs(F) > max(ZERO_SIGMAS * se, floor)]
         if not off:
             return None
         shown = "; ".join(f"run {run} {F:+.3g} N over {n} step{'s' if n > 1 else ''}"
@@ -279,7 +293,9 @@ def assess(runs, fit) -> Goodness:
         if idle.any():
             se = math.sqrt(float(np.sum(noise[idle] ** 2)) / idle.sum() ** 2 + tare**2)
             slack.append((run.name, int(idle.sum()),
-                          float(np.mean(measured[here][idle])) - zero_N, se))
+                          float(np.mean(measured[here][idle])) - zero_N, se,
+                          ZERO_FLOOR_N if run.force_step_N is None else
+                          ZERO_FLOOR_STEPS * run.force_step_N))
         for direction, branch in BRANCHES.items():
             pick = (steps["direction"].to_numpy() == direction) & usable
             if not pick.any():
@@ -293,7 +309,8 @@ def assess(runs, fit) -> Goodness:
             branches.append(Branch(
                 run.name, branch, int(pick.sum()), chi2, nu,
                 float(stats.chi2.sf(chi2, nu)) if nu > 0 else math.nan, n_runs, runs_p,
-                float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2)))))
+                float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2))), r,
+                np.hypot(s, tare)))
     if not branches:
         return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE, left_out=left_out)
     chi2 = sum(b.chi2 for b in branches)

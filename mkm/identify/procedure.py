@@ -335,6 +335,17 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             free, free_boot, rubber, free_terms, free_source = _rubber_ratio(
                 source, fe, runs, best, seed, braid)
         notes += _outside_box(caught)
+        if (rubber.get("box_stopped") and rubber["edge_chi2_improvement"] > RATIO_LIKELIHOOD
+                and goodness.assess(runs, best).misfit):
+            # a misfit that freeing the ratio up to the surrogate's training box already lowers
+            # as the test counts: the FE model's search has the ratio's whole range (a fit
+            # within the noise, or a ratio that moves nothing up to the box, keeps the note)
+            notify(f"C01's share reached the surrogate's box before the runs fixed it: the "
+                   f"ratio tested with {fe.name} (one sweep per run and evaluation)")
+            notes.append(f"{rubber['why']}: the ratio tested with the FE model over its whole "
+                         "range")
+            free, free_boot, rubber, free_terms, free_source = _rubber_ratio(
+                fe, fe, runs, best, seed, braid)
         if rubber["separated"]:
             one_scale = best
             best, boot, terms, source = free, free_boot, free_terms, free_source
@@ -777,6 +788,12 @@ def ratio_edge_term(one_scale, free) -> dict:
                     "of its search"}
 
 
+def _improvement(one_scale, free) -> float:
+    """The likelihood ratio of the fit with C01's share free (``free``) over the fit at one
+    ratio (``one_scale``), in units of the free fit's residual variance."""
+    return (one_scale.rss - free.rss) / (free.rss / max(free.n - len(free.names), 1))
+
+
 def _rubber_ratio(source, fe, runs, best, seed, braid):
     """The fit with C01's share of the rubber free, its bootstrap, whether the runs separate
     C10 and C01 (:data:`RATIO_WIDTH`, :data:`RATIO_CONDITION`), and its model-form terms
@@ -807,6 +824,7 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     if share_box != fitting.TERM_BOUNDS["c01_fraction"] and fitting.at_edge(
             free.values["c01_fraction"], share_box):
         return best, None, {"separated": False, "box_stopped": True,
+                            "edge_chi2_improvement": float(_improvement(best, free)),
                             "why": "C01's share reached the search box "
                             f"({source.name}'s) before the runs fixed it"}, None, source
     shared = shared_terms(source, runs, free)
@@ -846,7 +864,7 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     # parameter more)
     narrow = (ratio > 0 and not fitting.at_edge(share, share_box)
               and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio)
-    improvement = (best.rss - free.rss) / (free.rss / max(free.n - len(free.names), 1))
+    improvement = _improvement(best, free)
     rejected = not low <= assumed <= high and improvement > RATIO_LIKELIHOOD
     # what the bench declares but does not measure (the tube's wall and diameter, the monitor's
     # gain) trades with the ratio: where it alone keeps Silastic S's in the interval of a ratio

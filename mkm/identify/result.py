@@ -267,10 +267,12 @@ class Identification:
         cell's tolerance inside), the shift of each model-form term and each end of an assumed
         rubber ratio (``terms``: ``kind`` and ``shift``, evaluated by the band at the moved
         parameters), the load cell's tolerance itself, and on a misfit the residual the steps'
-        noise does not explain (``misfit_rms_N``)."""
+        noise does not explain (``misfit_rms_N``), the covariance widened as the intervals are
+        (by the Birge ratio)."""
         names = [n for n in STATIC_NAMES if n in self.fit.names]
         index = [self.fit.names.index(n) for n in names]
-        covariance = self.bootstrap["covariance"][np.ix_(index, index)]
+        birge = self.goodness.birge_ratio if self.goodness else 1.0
+        covariance = birge**2 * self.bootstrap["covariance"][np.ix_(index, index)]
         terms = [{"what": term["what"], "kind": term["kind"], "shift": term["shift"]}
                  for term in (*self.model_form.values(),
                               *self.rubber.get("assumed_ratio_terms", {}).values())
@@ -568,15 +570,10 @@ def _box_cut(rubber: dict) -> str:
 
 def ratio_first(rubber: dict) -> str:
     """What a misfit's verdict says first when the rubber's ratio was not tested as the runs
-    can test it: C01's share stopped by the surrogate's box (the FE model's search has the
-    whole range), or the runs reject Silastic S's ratio but one rubber scale at it was kept
+    can test it: the runs reject Silastic S's ratio but one rubber scale at it was kept
     because the braid is in doubt (a braid the model does not have bends the curve as another
     ratio would; the braid given, the ratio is fitted) or the bench's declared tolerances; else
     ''."""
-    if rubber.get("box_stopped"):
-        return ("first, C01's share reached the surrogate's box before the runs fixed it: "
-                "identify again with --search model (the FE model searches the ratio's whole "
-                "range; slower); then ")
     if rubber.get("rejects_silastic_ratio_but_for_declared") and not rubber.get("separated"):
         return ("first, the runs want a rubber ratio other than Silastic S's, kept only "
                 "because of the bench's declared tolerances (the note on C10 and C01): where "

@@ -81,6 +81,9 @@ class RunData:
     #: the monitor's declared hysteresis [bar] (``[regulator] monitor_hysteresis_bar``: the
     #: largest gap between its rising and falling readings; 0 where not declared)
     monitor_hysteresis_bar: float = 0.0
+    #: one ADC step of the run's load cell [N] (its recorded sensitivity and device); None for
+    #: an imported table, which records no cell
+    force_step_N: float | None = None
     #: the monitor's readings while the run was vented to tare the load cell: their mean and
     #: its standard error [bar] (None: no such readings, an imported run or a typed manometer)
     vented_bar: tuple[float, float] | None = None
@@ -338,6 +341,7 @@ def _muscle(run) -> dict:
 def _instrument(run) -> dict:
     """The declared bounds of the run's instrument (its recorded ``loadcell`` and
     ``regulator``), the configuration's defaults where it recorded none (an imported table)."""
+    from mkm.bench.budget import Instrument
     from mkm.bench.config import LoadCell, Regulator, from_record
 
     recorded = {s: run.meta.calibration.get(s) or {} for s in ("loadcell", "regulator")}
@@ -355,6 +359,8 @@ def _instrument(run) -> dict:
            "offset_bound_declared": any(key in recorded["regulator"] for key in (
                "monitor_accuracy_bar", "monitor_components")),
            "imported": bool(run.meta.imported_from),
+           "force_step_N": None if run.meta.imported_from else Instrument.from_run(
+               run.meta).lsb_N,
            "geometry_tolerance_mm": _tube_tolerances(getattr(run.meta.muscle, "tolerances",
                                                              None))}
     return {**out, **_declared_instrument(run)}

@@ -78,7 +78,8 @@ def test_a_known_braid_angle_and_rubber_are_the_muscles_own():
     assert braid_lock(c.replace(muscle={"eps": 0.3})) is None
     eps_max = float(chou_hannaford_eps_max(25.0))
     assert f"{eps_max:.3f}" in braid_lock(c.replace(muscle={"eps": 0.37}))
-    assert expected_force_N(c, 2.0) == pytest.approx(float(chou_hannaford(2.0, 30.0, 0.0, 25.0)))
+    # on the braid's diameter D0 + 2 t0, the FE model's force at eps 0
+    assert expected_force_N(c, 2.0) == pytest.approx(float(chou_hannaford(2.0, 36.0, 0.0, 25.0)))
     with pytest.raises(ValueError, match=r"muscle\.theta0_deg=95 is invalid"):
         parse_config(with_settings("[muscle]\ntheta0_deg = 95"))
     # past the locking angle, though within the typo bounds: named where it is, as the others

@@ -22,6 +22,7 @@ from mkm.bench.budget import COVERAGE_PROBABILITY
 from mkm.bench.storage import load_run
 from mkm.fem.friction import force_history
 from mkm.fem.ladder import make_model
+from mkm.fem.materials import SILASTIC_S
 from mkm.registry import parse_specs
 from mkm.report import build_report
 from mkm.scoring import predict_steps, score_run
@@ -1569,6 +1570,28 @@ def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
     assert again.meta.muscle == run.meta.muscle
     for column in ("pressure_bar_mean", "force_N_mean", "direction"):
         assert again.steps[column].tolist() == run.steps[column].tolist()
+
+
+def test_the_braid_angle_and_rubber_a_lab_declares_are_the_runs_muscle(tmp_path, mkm_cli):
+    # a lab that knows its braid's angle and its rubber declares them on import: the report's
+    # thick-wall model, given no angle, predicts at the declared one (the files' 32 deg, not
+    # the calibrated angle), and an export and import keeps them
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure_bar": PRESSURES, "force_N": thickwall_N(PRESSURES, 0.122),
+                  "direction": ["up"] * 5 + ["down"] * 2}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122", "--theta0", f"{THETA0:g}",
+                        "--C10", repr(SILASTIC_S.C10_MPa), "--C01", repr(SILASTIC_S.C01_MPa))
+    assert {k: run.meta.muscle.record()[k] for k in ("theta0_deg", "C10_MPa", "C01_MPa")} == {
+        "theta0_deg": THETA0, "C10_MPa": SILASTIC_S.C10_MPa, "C01_MPa": SILASTIC_S.C01_MPa}
+    build_report([run.path], parse_specs("thickwall"), out_dir=tmp_path / "report",
+                 cache_dir=None, tolerance=None, surrogate_section=False)
+    assert pd.read_csv(tmp_path / "report" / "summary.csv")["max_abs_err_pct"].iloc[0] < 0.01
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), _ = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert again.meta.muscle == run.meta.muscle
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0.122", "--theta0", "90"])
+    assert code == 2 and err.count("\n") == 1 and "--theta0 90" in err, err
 
 
 def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_path, mkm_cli):

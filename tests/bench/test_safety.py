@@ -492,6 +492,31 @@ def _drifting(drift_N_per_min: float):
         sim={"truth": {"loadcell_drift_N_per_min": drift_N_per_min}})
 
 
+def test_a_muscle_that_trips_the_force_interlock_as_it_rises_verifies_its_vent(tmp_path):
+    # A 60 mm tube with a 4 mm wall at 18 deg on the example's 1961 N cell: pre-conditioning's
+    # first 0.1 s towards 2 bar makes about 1100 N, the next reading clips at the cell's rail
+    # and the interlock vents. The vent check weighed the load cell after the vent (the
+    # muscle's last tens of newtons as the regulator exhausts it) against the median of the
+    # half second before it, the tare's readings, not yet taken from the tare's zero (the
+    # amplifier's offset, 9.8 N here): "the muscle still pulls ... VENT BY HAND", exit 4, on a
+    # vented bench. From the tare's zero those readings are the muscle at rest, within the
+    # cell's noise, which tells nothing: the monitor verifies the vent.
+    c = load_config().replace(
+        muscle={"D0_mm": 60.0, "t0_mm": 4.0, "L0_mm": 800.0, "theta0_deg": 18.0},
+        regulator={"max_pressure_bar": 2.0}, sequence={"pressures_bar": (1.0, 2.0)},
+        sim={"fe_mesh": "coarse", "loadcell_offset_V": 0.05, "truth": {"theta0_deg": 18.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "aborted" and result.exit_code == 1, result.reason
+    assert result.reason.startswith("force interlock: ") and result.reason.endswith("; vented")
+    assert not result.manual_vent_required
+    run = load_run(result.path)
+    assert run.meta.vent_check["verified"] and run.steps.empty  # no step was reached
+    tare = run.samples[run.samples["phase"] == "tare"]
+    assert tare["force_N"].median() == pytest.approx(0.05 * 196.133, abs=1.0)  # as recorded
+    assert backend.bench.pressure_bar < c.safety.vent_below_bar  # the truth: vented
+
+
 def test_a_slack_muscle_on_a_drifting_load_cell_zero_verifies_its_vent(tmp_path):
     # The load cell's amplifier warms up: its zero drifts 1.3 N/min from the start. The run
     # ends on 0.25 bar, below the muscle's threshold: slack, the cell reads its zero, moved by
@@ -1052,12 +1077,101 @@ def test_a_cell_the_muscle_overloads_is_a_warning_from_check(tmp_path, mkm_cli):
         .replace("tare_max_shift_N = 100.0", "tare_max_shift_N = 20.0")
     (tmp_path / "small.toml").write_text(text)
     code, out, err = mkm_cli(["check", "--config", str(tmp_path / "small.toml")])
-    # Equation 2 at the braid lock's angle (the FE model's calibrated 33.0 deg): 662 N at
-    # 2.5 bar, against an interlock at 270 N
+    # Equation 2 on the braid's diameter at the strongest muscle of the default tolerances
+    # (D0 30.3, t0 3.1: 36.5 mm; the FE model's calibrated 33.0 deg less 1 deg; eps 0): 1079 N
+    # at 2.5 bar against an interlock at 270 N, reached from 0.75 bar on
     assert code == 0 and "warning" not in out
     assert err.count("mkm check: warning:") == 1
-    assert "develops about 662 N at 2.5 bar (Equation 2), beyond the force interlock at 270 N" \
-        in err
+    assert "may develop 1079 N at 2.5 bar (Equation 2 on the braid's diameter, at its declared " \
+        "tolerances' strongest), beyond the force interlock at 270 N (0.9 x " \
+        "loadcell.capacity_N=300) from 0.75 bar: pre-conditioning to 2.5 bar stops the run " \
+        "before its first step; use a load cell of at least 1199 N" in err
+
+
+def test_a_thick_walled_tube_that_overloads_its_cell_is_warned_of(tmp_path, mkm_cli):
+    """A 5 mm tube with a 0.8 mm wall at 38 deg up to 8 bar on a 50 N cell (interlock 45 N):
+    the FE model's force at eps 0 is Equation 2 on the braid's diameter, 62 N at 8 bar, which
+    pre-conditioning reaches before any step; Equation 2 on the inner diameter says 36 N, and
+    check called the bench ready while acquire stopped at the interlock."""
+    from mkm.bench.preflight import expected_force_N
+    from mkm.fem import Axisym
+    from mkm.fem.eq2 import chou_hannaford
+
+    tiny = load_config().replace(
+        muscle={"id": "tiny", "D0_mm": 5.0, "t0_mm": 0.8, "L0_mm": 50.0, "theta0_deg": 38.0},
+        loadcell={"capacity_N": 50.0, "sensitivity_N_per_V": 5.0},
+        regulator={"max_pressure_bar": 8.0, "full_scale_bar": 10.0,
+                   "monitor_accuracy_bar": 0.1},
+        safety={"tare_max_std_N": 0.2, "tare_max_shift_N": 2.0, "vent_below_bar": 0.15},
+        sequence={"pressures_bar": tuple(0.5 * k for k in range(1, 17))})
+    fe_N = float(Axisym(mesh="coarse", theta0_deg=38.0, L0_mm=50.0)
+                 .predict([8.0], 5.0, 0.8, 0.0).force_N[0])
+    assert expected_force_N(tiny, 8.0) == pytest.approx(fe_N, rel=1e-6) == pytest.approx(62.31,
+                                                                                     abs=0.01)
+    assert float(chou_hannaford(8.0, 5.0, 0.0, 38.0)) < tiny.force_limit_N < fe_N
+    (tmp_path / "tiny.toml").write_text(tiny.effective_text())
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "tiny.toml")])
+    # at the default tolerances' strongest: D0 5.3, t0 0.9 (a 7.1 mm braid), 37 deg, eps 0
+    assert float(chou_hannaford(8.0, 7.1, 0.0, 37.0)) == pytest.approx(79.9, abs=0.05)
+    assert code == 0 and "may develop 80 N at 8 bar (Equation 2 on the braid's diameter" in err
+    assert "beyond the force interlock at 45 N (0.9 x loadcell.capacity_N=50) from 5 bar: " \
+        "pre-conditioning to 8 bar stops the run before its first step; use a load cell of at " \
+        "least 89 N" in err
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "tiny.toml"), "--pressures",
+                            "0.5:4:0.5"])
+    assert code == 0 and "warning" not in err  # 40 N at most at 4 bar, 40 % of the capacity
+
+
+def test_a_cell_far_larger_than_the_muscle_is_a_warning_from_check(tmp_path, mkm_cli):
+    """The same 5 mm tube on the packaged 1961 N cell: its largest force, 62.3 N at 8 bar, is
+    3.2 % of the capacity, below the tenth under which a cell is the wrong size (its noise, ADC
+    step, non-linearity and zero drift are fractions of its capacity); check called it ready
+    without a word while its expected uncertainty reached tens of % of the force at the lowest
+    steps. The cell that suits it: from what the interlock needs (88.8 N, the strongest muscle
+    over 0.9) to ten times the force."""
+    tiny = load_config().replace(
+        muscle={"id": "tiny", "D0_mm": 5.0, "t0_mm": 0.8, "L0_mm": 50.0, "theta0_deg": 38.0},
+        regulator={"max_pressure_bar": 8.0, "full_scale_bar": 10.0,
+                   "monitor_accuracy_bar": 0.1},
+        safety={"vent_below_bar": 0.15},
+        sequence={"pressures_bar": tuple(0.5 * k for k in range(1, 17))})
+    (tmp_path / "tiny.toml").write_text(tiny.effective_text())
+    code, out, err = mkm_cli(["check", "--config", str(tmp_path / "tiny.toml")])
+    assert code == 0 and err.count("mkm check: warning:") == 1
+    assert "the muscle develops at most about 62.3 N at 8 bar (Equation 2 on the braid's " \
+        "diameter at eps 0), 3.2 % of loadcell.capacity_N=1961.33: the cell's noise, ADC step " \
+        "and data-sheet errors, fractions of its capacity, weigh on every force (`mkm check`'s " \
+        "expected uncertainty); a cell of 88.8 to 623 N capacity suits this muscle" in err
+    lowest = next(line.split() for line in out.splitlines() if line.split()[:1] == ["0.5"])
+    assert float(lowest[3]) > 20.0  # U(F) [%] at 0.5 bar
+    # a run at eps 20 % of the same muscle on a cell that suits it at eps 0: no word
+    fitting = tiny.replace(muscle={"eps": 0.2}, loadcell={"capacity_N": 200.0,
+                                                         "sensitivity_N_per_V": 20.0},
+                           safety={"tare_max_std_N": 2.0, "tare_max_shift_N": 20.0})
+    (tmp_path / "fits.toml").write_text(fitting.effective_text())
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "fits.toml")])
+    assert code == 0 and "warning" not in err
+
+
+def test_a_muscle_outside_the_practical_range_is_a_warning_from_check_and_acquire(
+        tmp_path, mkm_cli):
+    # a braid woven at 45 deg, past the practical range's 40: check called it ready without a
+    # word, where fem solve and design say every model extrapolates there
+    steep = load_config().replace(muscle={"theta0_deg": 45.0},
+                                  sequence={"pressures_bar": (0.5,), "preconditioning_cycles": 0})
+    (tmp_path / "steep.toml").write_text(steep.effective_text())
+    said = ("the muscle lies outside the practical range every model is validated over "
+            "(theta0_deg=45 outside [15, 40]): its runs are recorded all the same, but every "
+            "model's force for them (the report's, identify's, the simulated bench's) is an "
+            "extrapolation (`mkm models` states the range)")
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "steep.toml")])
+    assert code == 0 and f"mkm check: warning: {said}\n" in err
+    notes = []
+    result = acquire(steep, out_root=tmp_path / "runs", notify=notes.append)
+    assert result.status == "complete" and f"warning: {said}" in notes
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "steep.toml"), "--pressures",
+                            "9"])
+    assert code == 2  # beyond the regulator: refused before any warning
 
 
 # 4. bounded runs ---------------------------------------------------------------------------

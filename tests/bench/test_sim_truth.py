@@ -9,7 +9,7 @@ import pytest
 
 from mkm.bench.config import parse_config
 from mkm.bench.run import acquire
-from mkm.bench.sim import LSB_V, SimMuscleBench, static_force_table
+from mkm.bench.sim import LSB_V, SimMuscleBench, describe_physics, static_force_table
 from mkm.bench.sim_settings import remove_simulator_settings
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
@@ -372,3 +372,30 @@ def test_the_departures_are_stripped_with_the_simulator_settings(config, tmp_pat
     for key in ("loadcell_gain", "monitor_offset_bar", '"truth"'):
         assert key not in text
     assert "[sim" not in (result.path / "config.toml").read_text(encoding="utf-8")
+
+
+def test_unset_truth_is_the_muscle_the_configuration_declares(config):
+    # [muscle] declares a 60 mm tube with a 4 mm wall woven at 18 deg, of a stiff rubber; with
+    # no [sim.truth] the simulated muscle is that one. It was the calibrated 33 deg muscle of
+    # Silastic S: 1.36 kN/bar at eps 0 where the declared muscle pulls 6.5 kN/bar (Equation 2
+    # on the braid's diameter, 68 mm, the FE model's force at eps 0).
+    from mkm.fem.eq2 import chou_hannaford
+
+    declared = {"D0_mm": 60.0, "t0_mm": 4.0, "L0_mm": 800.0, "theta0_deg": 18.0,
+                "C10_MPa": 0.4, "C01_MPa": 0.1}
+    c = quiet(config.replace(muscle=declared, regulator={"max_pressure_bar": 2.0},
+                             sequence={"pressures_bar": (1.0, 2.0)}), model="thickwall")
+    p, f = static_force_table(c)
+    assert np.interp(1.0, p, f) == pytest.approx(float(chou_hannaford(1.0, 68.0, 0.0, 18.0)),
+                                                 rel=1e-6) == pytest.approx(6516.8, abs=0.1)
+    eps = quiet(c.replace(muscle={"eps": 0.05}), model="thickwall")
+    p, f = static_force_table(eps)
+    fe = make_model("thickwall", L0_mm=800.0, theta0_deg=18.0, C10_MPa=0.4, C01_MPa=0.1)
+    assert np.interp(2.0, p, f) == pytest.approx(
+        float(fe.predict(2.0, 60.0, 4.0, 0.05).force_N), rel=1e-6)
+    assert describe_physics(eps)["force_model_params"] == fe.params()
+    # a truth still departs from the declaration
+    true = quiet(c.replace(sim={"truth": {"theta0_deg": 19.0}}), model="thickwall")
+    p, f = static_force_table(true)
+    assert np.interp(1.0, p, f) == pytest.approx(float(chou_hannaford(1.0, 68.0, 0.0, 19.0)),
+                                                 rel=1e-6)

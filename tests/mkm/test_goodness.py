@@ -176,6 +176,40 @@ def test_a_misfit_widens_every_interval_by_the_birge_ratio(offset):
     assert goodness.widen(boot, fit, goodness.Goodness([], 10.0, 10.0)) is boot
 
 
+def test_the_discrepancy_weighs_each_step_by_its_own_noise():
+    # a 5 mm tube whose load cell drifts: its slack steps read 0.2 N, twenty times their
+    # 0.01 N noise, while its loaded steps' 0.5 N residuals sit well within their 2 N noise.
+    # The root of the mean square residual less the mean square noise (0.17 - 2.5 N^2) called
+    # that no discrepancy at all, and the prediction band of the misfit kept the noise's width
+    slack = goodness.Branch("tiny", "loading", 6, 6 * 0.2**2 / 0.01**2, 6.0, 0.0, 2, 0.5, 0.2,
+                            0.01, np.full(6, 0.2), np.full(6, 0.01))
+    loaded = goodness.Branch("tiny", "unloading", 10, 10 * 0.5**2 / 2.0**2, 10.0, 0.9, 5, 0.5,
+                             0.5, 2.0, np.full(10, 0.5), np.full(10, 2.0))
+    good = goodness.Goodness([slack, loaded], slack.chi2 + loaded.chi2, 16.0)
+    assert good.misfit
+    d = good.discrepancy_rms_N
+    # the discrepancy brings every step to its noise: sum r^2 / (s^2 + d^2) = 16 steps
+    assert 6 * 0.04 / (1e-4 + d**2) + 10 * 0.25 / (4.0 + d**2) == pytest.approx(16.0)
+    assert d == pytest.approx(0.1245, abs=5e-4)  # about the slack steps' excess over noise
+    assert goodness.Goodness([loaded], loaded.chi2, 10.0).discrepancy_rms_N == 0.0  # fits
+
+
+def test_a_misfits_band_widens_the_parameters_covariance_as_its_intervals():
+    from types import SimpleNamespace
+
+    from mkm.identify.result import Identification
+
+    fit = SimpleNamespace(names=("theta0_deg", "rubber_scale"),
+                          values={"theta0_deg": 30.0, "rubber_scale": 1.0})
+    covariance = np.array([[0.04, 0.001], [0.001, 0.0025]])
+    misfit = SimpleNamespace(birge_ratio=3.0, discrepancy_rms_N=0.5)
+    record = Identification.band(SimpleNamespace(
+        fit=fit, bootstrap={"covariance": covariance}, model_form={}, rubber={},
+        goodness=misfit, sensitivity_tolerance=0.01))
+    np.testing.assert_allclose(record["covariance"], 9.0 * covariance)
+    assert record["misfit_rms_N"] == 0.5
+
+
 def test_the_runs_test_is_uniform_on_white_noise_and_finds_a_curve():
     rng = np.random.default_rng(5)
     p = np.array([goodness.runs_test(rng.standard_normal(20))[1] for _ in range(2000)])
@@ -290,9 +324,29 @@ def test_a_slack_muscle_reading_a_force_offers_the_fit_of_the_zero_until_it_is_f
 
     def note(fitted):
         return goodness.Goodness([branch], 500.0, nu, fitted=fitted,
-                                 slack=[("r", 2, 2.9, 0.05)]).zero_line()
+                                 slack=[("r", 2, 2.9, 0.05, 0.5)]).zero_line()
 
     assert "read a force (run r +2.9 N over 2 steps)" in note(("theta0_deg",))
     assert "fit it (--params ...,zero" in note(("theta0_deg",))
     with_zero = note(("theta0_deg", "force_zero_N"))
     assert "beyond the fitted zero" in with_zero and "--params" not in with_zero
+
+
+def test_a_zero_error_is_judged_against_the_runs_own_load_cell(in_family):
+    # a 5 mm tube on a 100 N cell (10 N/V: an ADC step of 0.012 N) whose zero drifted: its
+    # slack steps read +0.128 N, 60 standard errors of 0.002 N, and the note said nothing
+    # because a fixed 0.5 N floor (two steps of the packaged cell) hid it
+    nu = 10.0
+    branch = goodness.Branch("tiny", "loading", 10, 500.0, nu, float(stats.chi2.sf(500.0, nu)),
+                             5, 0.5, 0.1, 0.1)
+    runs, _ = in_family
+    cell = runs[0].path.joinpath("run.json")
+    sensitivity = json.loads(cell.read_text(encoding="utf-8"))["calibration"]["loadcell"][
+        "sensitivity_N_per_V"]
+    # one step of the USB-6001's 14-bit +-10 V input, through the cell's sensitivity
+    assert runs[0].force_step_N == pytest.approx(20.0 / 2**14 * sensitivity)
+    floor = goodness.ZERO_FLOOR_STEPS * 20.0 / 2**14 * 10.0
+    assert "run tiny +0.128 N over 8 steps" in goodness.Goodness(
+        [branch], 500.0, nu, slack=[("tiny", 8, 0.128, 0.002, floor)]).zero_line()
+    assert goodness.Goodness([branch], 500.0, nu, slack=[
+        ("table", 8, 0.128, 0.002, goodness.ZERO_FLOOR_N)]).zero_line() is None
