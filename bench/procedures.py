@@ -236,12 +236,13 @@ def vent(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
     if not check.verified:
         raise BenchError(f"{check.describe()}: VENT BY HAND and check the regulator"
                          + "".join(f"; {p}" for p in bookkeeping))
-    if unproven:  # the monitor that did not follow then: its low reading now proves nothing
+    if unproven:  # a monitor that run's check doubted: its low reading now proves nothing
+        found = unproven[0].vent_unverified or (f"the monitor did not follow the "
+                                                f"{unproven[0].unfollowed_bar:g} bar commanded")
         raise BenchError(
             f"the vent went out, but the monitor's {reading_bar(check.pressure_bar)} bar does not "
-            f"verify it: in run {unproven[0].run_path} the same monitor read below the "
-            f"{unproven[0].unfollowed_bar:g} bar commanded (stuck, or no supply); check the "
-            "muscle and the monitor" + "".join(f"; {p}" for p in bookkeeping))
+            f"verify it: in run {unproven[0].run_path} {found}; check the muscle and the monitor"
+            + "".join(f"; {p}" for p in bookkeeping))
     return {"pressure_bar": check.pressure_bar, "vented": True, "waited_s": check.waited_s,
             "manual": False, "stopped": stopped, "bookkeeping": bookkeeping}
 

@@ -564,8 +564,7 @@ class BenchRun:
         self._console: _Console | None = None
         self.handle_signals = handle_signals
         self.command = command
-        self.signals = StopSignals(on_first_interrupt=lambda: self.notify(
-            "stopping at the next safe point (Ctrl-C again to vent now)"))
+        self.signals = StopSignals()
         self.steps = plan_steps(config)
         self.recorder: Recorder | None = None
         self.acquisition: Acquisition | None = None
@@ -598,7 +597,10 @@ class BenchRun:
         return min(times) if times else None
 
     def _pending_stop(self) -> Stop | None:
-        """The stop to make at this safe point: a first Ctrl-C, or `mkm vent` asking."""
+        """The stop to make at this safe point: a first Ctrl-C, or `mkm vent` asking; the
+        signal handlers' notices are said here, by the loop."""
+        for message in self.signals.said():
+            self.notify(message)
         if self.signals.stop_requested_at is None and self.owner is not None:
             by = self.owner.stop_request()
             if by is not None:
@@ -730,6 +732,9 @@ class BenchRun:
 
     def _finished(self) -> tuple[RunStatus, str, int]:
         meta, n = self.recorder.meta, len(self.steps)
+        blind = self.acquisition.one_code_throughout()
+        if blind:  # every step done, none measured
+            return RunStatus.FAILED, f"{_all_steps(n)} done, but {blind}", EXIT_FAILED
         if not meta.gaps:
             return RunStatus.COMPLETE, f"{_all_steps(n)} done", EXIT_OK
         spans = ", ".join(f"{g.start_s:g}-{g.end_s:g} s" for g in meta.gaps)
@@ -1045,6 +1050,8 @@ class BenchRun:
                 observer.close()
             except BaseException:  # a plot window gone: nothing to record
                 pass
+        for message in self.signals.said():  # after the vent: what the loop did not say
+            self.notify(message)
         if self.signals.noted:  # signals during the stop: said, never obeyed mid-vent
             problems.append(f"{', '.join(dict.fromkeys(self.signals.noted))} received while "
                             "stopping: noted, the vent and the record went first")
@@ -1097,6 +1104,8 @@ class BenchRun:
                           f"({lease.error.strerror or lease.error})")
         elif lease is not None and unverified:  # kept: the next command vents first, says why
             what, unfollowed = self.vent_check.describe(), self.vent_check.unfollowed_bar
+            if "monitor" not in self.vent_check.doubted:  # the check doubted the load cell
+                unfollowed = None  # alone: the monitor's readings still stand
             # a failure leaves the marker naming the run and its last command
             done = lease.wait(lease.post(lambda: lease.unverified(what, unfollowed)),
                               0.0 if hung else STATE_WAIT_S)

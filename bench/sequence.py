@@ -22,7 +22,7 @@ from mkm.bench.backend import BenchError
 from mkm.bench.budget import Instrument, step_budget
 from mkm.bench.config import BenchConfig, Step, plan_steps
 from mkm.bench.storage import StepRecord
-from mkm.bench.worker import Acquisition
+from mkm.bench.worker import STUCK_CELL_S, Acquisition
 
 
 def settle_reached(t_s: np.ndarray, force_N: np.ndarray, pressure_bar: np.ndarray,
@@ -160,10 +160,34 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
                           f"={cell.offset_V:g} V, beyond safety.tare_max_shift_N="
                           f"{safety.tare_max_shift_N:g} (a load on the cell, or the wrong "
                           "calibration)")
+    _, intervals, stray_V = held_tail(v)
+    held_s = intervals / config.daq.sample_rate_hz
+    step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
+    if stray_V > step_V and held_s >= STUCK_CELL_S - 1e-9:
+        raise TareInvalid(f"tare invalid: the load cell read {v[-1]:.4f} V unchanged for the "
+                          f"last {held_s:.1f} s of the tare, where it strayed "
+                          f"{stray_V * cell.sensitivity_N_per_V:.2f} N before: a stuck or "
+                          "disconnected load cell, behind which the force limit is not watched; "
+                          "check its cable, amplifier and supply; nothing was pressurised")
     drift_N, at_rest = _tare_drift(v * cell.sensitivity_N_per_V, config)
     return {"offset_V": offset, "std_V": std, "n": int(v.size), "std_N": std_N,
             "shift_N": shift_N, "config_offset_V": cell.offset_V, "drift_N": drift_N,
-            "at_rest": at_rest}
+            "at_rest": at_rest, "held_s": held_s}
+
+
+def held_tail(cell_V) -> tuple[float, int, float]:
+    """The code the load-cell readings ``cell_V`` [V] end on, how many sample intervals it has
+    been held (0 when the last two readings differ), and the readings' spread [V] before it
+    (their standard deviation; all the readings' with fewer than two before it): a live cell's
+    noise, which a cell that stuck early in a tare no longer shows in the tare's whole spread.
+    The stuck-cell rule of :data:`mkm.bench.worker.STUCK_CELL_S`, held from the tare into the
+    run."""
+    v = np.asarray(cell_V, dtype=float)
+    changed = np.flatnonzero(v != v[-1])
+    first = int(changed[-1] + 1) if changed.size else 0
+    before = v[:first] if first >= 2 else v
+    return float(v[-1]), int(v.size - 1 - first), float(before.std(ddof=1)) \
+        if before.size > 1 else 0.0
 
 
 def _tare_drift(force_N: np.ndarray, config: BenchConfig) -> tuple[float, bool]:
@@ -200,18 +224,24 @@ def rest_warning(tare: dict, config: BenchConfig) -> str:
 
 
 def one_code_warning(tare: dict, config: BenchConfig) -> str:
-    """What a tare whose load-cell readings all lay on one ADC code means, or "": a stuck or
-    disconnected cell reads so, and the force limit is blind behind it (the stuck-cell
-    interlock, :data:`mkm.bench.worker.STUCK_CELL_S`, needs a tare that strays); a cell quieter
-    than one step reads so too."""
+    """What a tare whose load-cell readings all lay on one ADC code, or whose last
+    :data:`mkm.bench.worker.STUCK_CELL_S` did (``held_s``) after readings that strayed less than
+    a step (else :func:`validate_tare` refuses it), means, or "": a stuck or disconnected cell
+    reads so, and the force limit is blind behind it (the stuck-cell interlock needs a tare that
+    strays); a cell quieter than one step reads so too."""
     step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
-    if tare["std_V"] > 1e-6 * step_V:  # one code's spread is the mean's rounding, ~1e-16 V
+    one = not tare["std_V"] > 1e-6 * step_V  # one code's spread is the mean's rounding
+    held_s = tare.get("held_s", 0.0)
+    if not one and not held_s >= STUCK_CELL_S - 1e-9:
         return ""
     step_mV = step_V * 1e3
-    return (f"the tare read the load cell on one ADC code ({tare['offset_V']:.4f} V) all "
-            f"{tare['n']} times: a stuck or disconnected cell reads so, and hides every force "
-            f"from the force limit; a cell quieter than one step ({step_mV:.2f} mV) too: load "
-            "the cell by hand and see its reading move before any pressure")
+    read = (f"on one ADC code ({tare['offset_V']:.4f} V) all {tare['n']} times" if one else
+            f"on one ADC code for its last {held_s:.1f} s, where it strayed less than a step "
+            "before")
+    return (f"the tare read the load cell {read}: a stuck or disconnected cell reads so, and "
+            f"hides every force from the force limit; a cell quieter than one step "
+            f"({step_mV:.2f} mV) too: load the cell by hand and see its reading move before any "
+            "pressure")
 
 
 class HoldStats:
@@ -305,7 +335,9 @@ class Staircase:
         if self.config.regulator.electronic:  # a manual regulator's readings are typed
             tare.update(vented_monitor(monitor))
             check_vented_monitor(tare, self.config)
-        self.acq.set_tare(tare["offset_V"], tare["std_V"])
+        held_V, intervals, stray_V = held_tail(volts)
+        self.acq.set_tare(tare["offset_V"], stray_V)
+        self.acq.held_since_tare(held_V, intervals)
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
         for warning in (one_code_warning(tare, self.config), rest_warning(tare, self.config),
                         settle_warning(tare["std_N"], self.config),

@@ -6,10 +6,16 @@ goes, :class:`StopSignals` handles:
 
 - the first ``SIGINT`` (Ctrl-C): stop at the next block boundary (a safe point);
 - a second ``SIGINT``, ``SIGTERM`` (kill, service stop), ``SIGHUP`` (terminal or SSH session
-  closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows): raise :class:`StopSignal` at once, which
-  unwinds to the run's shutdown: vent, close the device, record. The exit status is 128 + N.
-  Once it is raised, a further signal is only noted (the run's reason names it): nothing cuts
-  the vent or the record;
+  closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows), and every other signal that would end
+  the process while it keeps its default action (:data:`ENDING_SIGNALS`: ``SIGQUIT`` from
+  Ctrl-\\, ``SIGUSR1``, ``SIGALRM``, ``SIGXCPU``, ...; POSIX): raise :class:`StopSignal` at
+  once, which unwinds to the run's shutdown: vent, close the device, record. The exit status
+  is 128 + N. Once it is raised, a further signal is only noted (the run's reason names it):
+  nothing cuts the vent or the record;
+- ``SIGTSTP`` (Ctrl-Z; POSIX) is refused and said (:data:`SUSPEND_SIGNAL`): a suspended run
+  would hold its pressure with no interlock watching; ``SIGTTOU`` and ``SIGTTIN``, which stop a
+  run in the background that writes to or reads from its terminal, are ignored
+  (:data:`BACKGROUND_SIGNALS`);
 - on Windows, closing the console window arrives as a console control event
   (``CTRL_CLOSE_EVENT``, ``SetConsoleCtrlHandler``), not as a signal, on a thread Windows makes
   for it: the handler turns it into ``SIGBREAK`` in the main thread and holds the process until
@@ -36,6 +42,25 @@ from contextlib import contextmanager
 
 STOP_SIGNAL_NAMES = ("SIGINT", "SIGTERM", "SIGHUP", "SIGBREAK")
 STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(signal, n))
+#: the other signals whose default action ends the process (POSIX; Ctrl-\ sends SIGQUIT):
+#: stop signals too while they keep that default (one a profiler or a test timer handles is
+#: left to it). The faults a process raises on itself (SIGSEGV, SIGBUS, SIGABRT, ...) are not
+#: signals a Python handler can run after.
+ENDING_SIGNAL_NAMES = ("SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM", "SIGXCPU", "SIGVTALRM",
+                       "SIGPROF", "SIGPWR", "SIGSTKFLT", "SIGIO")
+ENDING_SIGNALS = tuple(getattr(signal, n) for n in ENDING_SIGNAL_NAMES if hasattr(signal, n))
+#: Ctrl-Z (POSIX): a run it suspended would hold its pressure with no interlock watching, for as
+#: long as it stays suspended; refused while a run goes, and said
+SUSPEND_SIGNAL = getattr(signal, "SIGTSTP", None)
+#: a run in the background that writes to (or reads from) its terminal is stopped by these
+#: (POSIX; ``stty tostop``): ignored while a run goes, its lines are written (its reads fail)
+BACKGROUND_SIGNALS = tuple(getattr(signal, n) for n in ("SIGTTOU", "SIGTTIN")
+                           if hasattr(signal, n))
+
+#: what the first Ctrl-C and a refused Ctrl-Z say (:meth:`StopSignals.said`)
+FIRST_INTERRUPT = "stopping at the next safe point (Ctrl-C again to vent now)"
+SUSPEND_REFUSED = ("Ctrl-Z does not suspend a run: suspended, it would hold the regulator's "
+                   "pressure with no interlock watching; Ctrl-C stops it at a safe point, vented")
 
 # Windows console control events (wincon.h) and how long Windows waits for the handler.
 CTRL_C_EVENT, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT = 0, 1, 2
@@ -78,11 +103,13 @@ class StopSignals:
     ``linger`` (default :data:`LINGER`): the stop signals stay ignored after the block.
     """
 
-    def __init__(self, on_first_interrupt: Callable[[], None] | None = None,
-                 interrupt_main: Callable[[int], None] | None = None,
+    def __init__(self, interrupt_main: Callable[[int], None] | None = None,
                  linger: bool | None = None):
         self.linger = LINGER if linger is None else linger
-        self.on_first_interrupt = on_first_interrupt
+        # what the handlers have to say to the operator, said by the run (:meth:`said`): a
+        # handler never writes, since the write it interrupted may hold the lock its own would
+        # wait for, in the one thread that runs the interlocks
+        self.notices: list[str] = []
         self.stop_requested_at: float | None = None
         self.signal_at: float | None = None
         self.console_event: str | None = None
@@ -104,6 +131,14 @@ class StopSignals:
             return self  # signal handlers can only be installed in the main thread
         for signum in STOP_SIGNALS:
             self._previous[signum] = signal.signal(signum, self._handle)
+        for signum in ENDING_SIGNALS:
+            if signal.getsignal(signum) == signal.SIG_DFL:
+                self._previous[signum] = signal.signal(signum, self._handle)
+        if SUSPEND_SIGNAL is not None and signal.getsignal(SUSPEND_SIGNAL) == signal.SIG_DFL:
+            self._previous[SUSPEND_SIGNAL] = signal.signal(SUSPEND_SIGNAL, self._refuse_suspend)
+        for signum in BACKGROUND_SIGNALS:
+            if signal.getsignal(signum) == signal.SIG_DFL:
+                self._previous[signum] = signal.signal(signum, signal.SIG_IGN)
         if WINDOWS:
             self._install_console_handler()
         self.active = True
@@ -121,6 +156,15 @@ class StopSignals:
             self._console_callback = None
         self.active = False
 
+    def _refuse_suspend(self, signum, frame) -> None:
+        self.notices.append(SUSPEND_REFUSED)
+
+    def said(self) -> Iterator[str]:
+        """The handlers' notices not yet said, oldest first (taken from the list one at a
+        time: a handler may add one meanwhile)."""
+        while self.notices:
+            yield self.notices.pop(0)
+
     def _handle(self, signum, frame) -> None:
         if self.stopping:  # a stop is under way: this one cannot cut its vent or its record
             self.noted.append(signal.Signals(signum).name)
@@ -128,8 +172,7 @@ class StopSignals:
         now = time.monotonic()
         if signum == signal.SIGINT and self.stop_requested_at is None:
             self.stop_requested_at = now
-            if self.on_first_interrupt is not None:
-                self.on_first_interrupt()
+            self.notices.append(FIRST_INTERRUPT)
             return
         self.signal_at = now
         detail = "second Ctrl-C" if signum == signal.SIGINT else (self.console_event or "")

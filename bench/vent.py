@@ -288,6 +288,17 @@ def still_pulling(check: VentCheck, before_N: float, after_N: float, noise_N: fl
             "that the muscle hangs slack"), "the load cell")
     if per_bar_N is not None and not before_N > noise_N + per_bar_N * check.below_bar:
         return check
+    if per_bar_N is None:  # nothing shows the muscle pulling: a zero moved reads the same
+        return check.unproven(commanded_bar, (
+            f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell still "
+            f"reads {after_N:.1f} N against {before_N:.1f} N before the vent (more than "
+            f"{FORCE_KEPT_FRACTION:.0%} of it), and the run measured no force per bar (the "
+            "muscle pulled at no two successive steps): a muscle that still pulls (a monitor "
+            "that reports its command or is stuck, with an exhaust that did not open) reads so, "
+            f"and so does a slack one on a load-cell zero moved {before_N:.1f} N since the tare "
+            "(an amplifier warming up); look at the muscle: hanging slack, it is vented and the "
+            "zero moved (power the amplifier up well before the run); pulling, "
+            "check the regulator and the load cell"), "the monitor or the load cell")
     return check.unproven(commanded_bar, (
         f"the monitor read {reading_bar(check.pressure_bar)} bar, but the load cell "
         f"still reads {after_N:.1f} N against {before_N:.1f} N before the vent (more "

@@ -123,6 +123,13 @@ class Acquisition:
         # held on one code for STUCK_CELL_S is a stuck cell (_stuck_cell)
         self.tare_std_V = 0.0
         self._held_cell: tuple[float, float] | None = None  # (the code held [V], since [s])
+        # the load cell's last code [V] and since when it has read it [s], the first sample
+        # acquired under a pressure commanded [s], and the highest plausible pressure measured
+        # [bar]: a cell on one code from before any pressure to the end, while the muscle was
+        # pressurised, measured nothing (:meth:`one_code_throughout`)
+        self._same_cell: tuple[float, float] | None = None
+        self._pressure_from_s: float | None = None
+        self.highest_bar = 0.0
         self.command_bar = 0.0
         self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
         # the commands written, by the device's sample clock when each was issued (index, bar),
@@ -335,11 +342,16 @@ class Acquisition:
         commanded = self._commanded_at(index) if self.electronic else math.nan
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
             self.measured_bar = pressure
+            self.highest_bar = max(self.highest_bar, pressure)
             if phase != "vent":  # the vent check's come after the vent
                 self._recent_bar.append(pressure)
                 self._recent_command_bar = commanded
                 if commanded > 0:
                     self._pressurised = (pressure, commanded)
+        if math.isfinite(cell_V) and (self._same_cell is None or self._same_cell[0] != cell_V):
+            self._same_cell = (cell_V, index / self.rate_hz)
+        if self._pressure_from_s is None and commanded > 0:
+            self._pressure_from_s = index / self.rate_hz
         if math.isfinite(force):
             (self._vent_N if phase == "vent" else self._recent_N).append(force)
         flags, self._pending_flags = self._pending_flags, []
@@ -360,6 +372,13 @@ class Acquisition:
                 trips.append((trip, RunStatus.FAILED if fault else RunStatus.ABORTED))
         return Sample(index, index / self.rate_hz, step, phase, set_bar, commanded, pressure,
                       cell_V, monitor_V, force, "|".join(flags))
+
+    def held_since_tare(self, cell_V: float, intervals: int) -> None:
+        """The tare ended on the code ``cell_V`` [V], held for ``intervals`` sample intervals:
+        the stuck-cell interlock counts from where the code was first read, not from the
+        tare's end (a cell that stuck during the tare trips :data:`STUCK_CELL_S` after it
+        stuck)."""
+        self._held_cell = (cell_V, (self.next_index - 1 - intervals) / self.rate_hz)
 
     def _stuck_cell(self, t_s: float, cell_V: float, force: float) -> str | None:
         """The load cell's input has held one code (``cell_V``) for :data:`STUCK_CELL_S`
@@ -573,6 +592,23 @@ class Acquisition:
         if not self._recent_N or not self._vent_N:
             return None
         return statistics.median(self._recent_N), statistics.median(self._vent_N)
+
+    def one_code_throughout(self) -> str:
+        """What a load cell that read one ADC code from before the run's first pressure to
+        its end, while the monitor read a pressure above ``safety.vent_below_bar``, means (its
+        forces measure nothing), or "" (a cell that moved, an electronic regulator never
+        commanded, a manual one)."""
+        if self._same_cell is None or self._pressure_from_s is None or \
+                self._same_cell[1] > self._pressure_from_s or \
+                not self.highest_bar > self.config.safety.vent_below_bar:
+            return ""
+        same = self._same_cell[0]
+        step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
+            * self.cell.sensitivity_N_per_V
+        return (f"the load cell read one ADC code ({same:.4f} V) from before the first pressure "
+                f"to the end, while the monitor read up to {self.highest_bar:.2f} bar: a stuck or "
+                f"disconnected cell, or a muscle that never pulled one ADC step ({step_N:.2f} "
+                "N); its forces measure nothing, and the force limit was blind")
 
     def forces_unchanged(self) -> bool:
         """Every force of :meth:`forces_around_vent`'s two windows is the same reading (a load

@@ -12,6 +12,7 @@ backends of :mod:`mkm.bench.backends`.
 from __future__ import annotations
 
 import math
+import os
 import sys
 
 from mkm.cli.common import (
@@ -75,9 +76,11 @@ def register(subparsers) -> None:
         "one: tare at 0 bar, then each step held until the force settles and averaged over a "
         "window; writes a run folder (run.json, samples.csv, steps.csv, commands.csv, "
         "config.toml) under --out and prints its path last. Ctrl-C stops at a safe point; a "
-        "second Ctrl-C, SIGTERM, SIGHUP, Ctrl-Break or closing the console stop at once; every "
+        "second Ctrl-C, SIGTERM, SIGHUP, Ctrl-Break, closing the console or any other signal "
+        "that would end the process (SIGQUIT from Ctrl-\\, ...) stop at once; every "
         "stop vents first. Exit status: 0 complete, 3 complete with lost samples, 128+N after "
-        "signal N, 1 interlock or device failure, 2 bad input or disk failure. The default "
+        "signal N, 1 interlock or device failure, 2 bad input or disk failure, 4 the vent not "
+        "verified (VENT BY HAND; it wins over every other). The default "
         "staircase (19 steps) takes 3 to 21 min on the real bench, depending "
         "on settling (`mkm check` prints the estimate); --clock virtual: about a second.",
         epilog="example: mkm acquire --backend sim --eps 12.2% --out mkm-out/runs")
@@ -211,9 +214,9 @@ def _hardware_config(args, command: str):
         raise ValueError(f"mkm {command} drives the bench: pass --backend "
                          f"{'|'.join(BACKENDS)} (or a --config whose [daq] backend says which)")
     config = _config(args)
-    if config.simulated:
-        print(f"mkm {command}: SIMULATED bench ({config.daq.backend}): no hardware is driven",
-              file=sys.stderr, flush=True)
+    if config.simulated:  # a reader gone does not keep the command from the bench
+        _kept(0, lambda: print(f"mkm {command}: SIMULATED bench ({config.daq.backend}): no "
+                               "hardware is driven", file=sys.stderr, flush=True))
     return config
 
 
@@ -234,15 +237,31 @@ def _acquire(args) -> int:
                          allow_past_lock=args.allow_past_lock)
     except BenchError as exc:  # the bench is held by another process: nothing was touched
         return _failed(args, exc)
-    simulated = " SIMULATED" if config.simulated else ""
+    return _kept(result.exit_code,
+                 lambda: _said(args, result, " SIMULATED" if config.simulated else ""))
+
+
+def _kept(code: int, report) -> int:
+    """``report()`` (a bench command's last lines), then ``code``: a reader of the output that
+    left (`| tee log` ended by the same Ctrl-C, a closed terminal) does not turn how the bench
+    was left into the 0 a reader leaving a report's output (`| head`) gets."""
+    try:
+        report()
+    except BrokenPipeError:
+        for stream in (sys.stdout, sys.stderr):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), stream.fileno())
+    return code
+
+
+def _said(args, result, simulated: str) -> None:
+    """A run's outcome on stderr and its folder on stdout, once it exists."""
     if result.path is None:
         say(args, "error", f"{simulated.strip()} {result.reason}".strip())
-        return result.exit_code
+        return
     print(f"{command_name(args)}: run{simulated} {result.status}: {result.reason}", file=sys.stderr)
     if result.manual_vent_required:
         say(args, "error", "VENT THE MUSCLE BY HAND NOW: the vent was not verified")
     print(result.path, flush=True)
-    return result.exit_code
 
 
 def _tare(args) -> int:
@@ -353,25 +372,25 @@ def _vent(args) -> int:
     try:
         out = vent(config, clock=args.clock)
     except BenchError as exc:  # said once where the reason says it already
-        say(args, "error", str(exc) if "VENT BY HAND" in str(exc) else f"{exc}; VENT BY HAND")
-        return EXIT_FAILED
-    if out["manual"]:
-        print("vent commanded; the regulator is manual: no monitor to read, vent it by hand "
-              "and check the manometer", flush=True)
-        return _bookkeeping(args, out["bookkeeping"])
-    print(f"vented: {reading_bar(out['pressure_bar'])} bar after {out['waited_s']:.1f} s",
-          flush=True)
-    return _bookkeeping(args, out["bookkeeping"])
+        error = str(exc) if "VENT BY HAND" in str(exc) else f"{exc}; VENT BY HAND"
+        return _kept(EXIT_FAILED, lambda: say(args, "error", error))
+    said = ("vent commanded; the regulator is manual: no monitor to read, vent it by hand and "
+            "check the manometer" if out["manual"] else
+            f"vented: {reading_bar(out['pressure_bar'])} bar after {out['waited_s']:.1f} s")
+
+    def report() -> None:
+        print(said, flush=True)
+        _bookkeeping(args, out["bookkeeping"])
+
+    return _kept(EXIT_FAILED if out["bookkeeping"] else 0, report)
 
 
-def _bookkeeping(args, problems: list[str]) -> int:
+def _bookkeeping(args, problems: list[str]) -> None:
     """After a vent: the bench state folder's problems, one line (exit 1: the lock and the
     markers that keep two commands off one bench do not work until it is mended)."""
-    if not problems:
-        return 0
-    problems = "; ".join(dict.fromkeys(problems))  # request and lock often fail alike
-    say(args, "error", f"vented, but the bench bookkeeping failed: {problems}")
-    return EXIT_FAILED
+    if problems:
+        problems = "; ".join(dict.fromkeys(problems))  # request and lock often fail alike
+        say(args, "error", f"vented, but the bench bookkeeping failed: {problems}")
 
 
 def _reprocess(args) -> int:

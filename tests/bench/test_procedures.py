@@ -215,3 +215,19 @@ def test_tare_refuses_a_noisy_cell(config):
 
     with pytest.raises(TareInvalid, match="spreads"):
         tare(config.replace(sim={"noise_V": 0.05}), seconds=5.0)
+
+
+def test_a_tare_that_ends_on_one_code_after_a_small_stray_is_said_so(config):
+    # stuck from 0.3 s of a 5 s tare: three readings strayed less than a step (too few to show
+    # the cell's noise), then 4.6 s on one code. Not all on one code, so nothing was said, and
+    # the stuck-cell interlock stayed disarmed (its tare strayed less than a step): the force
+    # limit blind through the run without a word. It is said as a tare on one code is.
+    stuck = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.3}})
+    out = tare(stuck, seconds=5.0)
+    assert out["std_N"] > 0.0 and out["held_s"] == pytest.approx(4.6)
+    assert out["one_code_warning"] == (
+        "the tare read the load cell on one ADC code for its last 4.6 s, where it strayed less "
+        "than a step before: a stuck or disconnected cell reads so, and hides every force from "
+        "the force limit; a cell quieter than one step (1.22 mV) too: load the cell by hand and "
+        "see its reading move before any pressure")
+    assert tare(config, seconds=5.0)["one_code_warning"] == ""

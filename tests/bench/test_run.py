@@ -959,3 +959,65 @@ def test_every_line_the_bench_writes_names_its_command(mkm_cli, tmp_path, monkey
         code, out, err = mkm_cli([command, "--backend", "sim"])
         assert code == 0, err
         assert err.startswith(f"mkm {command}: SIMULATED bench (sim): no hardware is driven\n")
+
+
+def test_acquire_help_names_every_exit_status(capsys):
+    # `mkm acquire --help` listed 0, 3, 128+N, 1 and 2, not 4: the status of a run whose vent
+    # was not verified, the one that asks for a vent by hand
+    from mkm.bench.run import EXIT_FAILED, EXIT_GAPS, EXIT_OK, EXIT_STORAGE, EXIT_VENT
+    from mkm.cli import main
+
+    with pytest.raises(SystemExit):
+        main(["acquire", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert (EXIT_OK, EXIT_GAPS, EXIT_FAILED, EXIT_STORAGE, EXIT_VENT) == (0, 3, 1, 2, 4)
+    assert ("Exit status: 0 complete, 3 complete with lost samples, 128+N after signal N, 1 "
+            "interlock or device failure, 2 bad input or disk failure, 4 the vent not verified "
+            "(VENT BY HAND; it wins over every other).") in text
+
+
+def test_acquire_keeps_its_exit_status_when_its_output_reader_left(tmp_path):
+    # `mkm acquire ... | tee run.log`: the Ctrl-C that stops the run ends tee too, and the
+    # run's last lines met a broken pipe, which every command takes as `| head` leaving: exit
+    # 0, whatever ended the run (an interlock, a vent by hand). The run's status stands.
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    text = (Path(__file__).parents[2] / "bench/configs/paper_prototype.toml").read_text()
+    config = tmp_path / "bench.toml"
+    # the closed form for a fast start; the regulator overshoots 0.3 bar: the over-pressure
+    # interlock ends the run at the pre-conditioning's 2.5 bar, exit 1
+    config.write_text(text.replace('model = "axisym"', 'model = "thickwall"')
+                      + "\n[sim.faults]\novershoot_bar = 0.3\n")
+    proc = subprocess.Popen([sys.executable, "-m", "mkm", "acquire", "--config", str(config),
+                             "--out", str(tmp_path / "runs"), "--no-progress"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            env={**os.environ, "MKM_STATE_DIR": str(tmp_path / "state")})
+    proc.stdout.close()  # the reader leaves before the run ends
+    proc.stderr.close()
+    assert proc.wait(timeout=120) == 1
+    (folder,) = (tmp_path / "runs").iterdir()
+    run = load_run(folder)
+    assert run.status == "failed" and run.reason.startswith("over-pressure interlock: ")
+
+
+def test_vent_keeps_its_exit_status_when_its_output_reader_left(tmp_path):
+    # `mkm vent 2>&1 | tee vent.log` with the tee gone: a vent it could not verify (a monitor
+    # frozen at 0.5 bar) said VENT BY HAND into the broken pipe and exited 0
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    text = (Path(__file__).parents[2] / "bench/configs/paper_prototype.toml").read_text()
+    config = tmp_path / "bench.toml"
+    config.write_text(text.replace('model = "axisym"', 'model = "thickwall"')
+                      + "\n[sim.truth]\nmonitor_stuck_bar = 0.5\n")
+    proc = subprocess.Popen([sys.executable, "-m", "mkm", "vent", "--config", str(config)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            env={**os.environ, "MKM_STATE_DIR": str(tmp_path / "state")})
+    proc.stdout.close()
+    proc.stderr.close()
+    assert proc.wait(timeout=120) == 1

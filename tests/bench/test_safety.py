@@ -616,6 +616,88 @@ def test_a_load_cell_stuck_mid_run_stops_the_run_within_two_seconds(config, tmp_
     assert run.meta.steps_done < len(c.sequence.pressures_bar) + 1  # not every step
 
 
+def test_a_load_cell_stuck_during_the_tare_is_no_tare(config, tmp_path):
+    # The load cell's input holds its reading from 2 s of a 5 s tare: its last 2.9 s (30
+    # readings) on one code, where the tare's first 2 s strayed 0.3 N. The tare passed, the
+    # pre-conditioning commanded 2.5 bar, and the stuck-cell interlock, counting from the
+    # tare's end, tripped 2 s later at 2.1 bar, the force limit blind meanwhile. No live cell
+    # holds one code that long (STUCK_CELL_S): the tare is invalid, nothing pressurised.
+    from mkm.bench.sim import SimBackend
+
+    c = config.replace(sequence={"tare_s": 5.0, "preconditioning_cycles": 1},
+                       sim={"faults": {"loadcell_stuck_at_s": 2.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert re.fullmatch(r"TareInvalid: tare invalid: the load cell read [0-9.]+ V unchanged for "
+                        r"the last 2\.9 s of the tare, where it strayed 0\.[0-9]+ N before: a "
+                        r"stuck or disconnected load cell, behind which the force limit is not "
+                        r"watched; check its cable, amplifier and supply; nothing was "
+                        r"pressurised", result.reason), result.reason
+    assert max(volts for _, volts in backend.commands) == 0.0  # the regulator got vents only
+    run = load_run(result.path)
+    assert len(run.samples) >= 50 and not run.meta.manual_vent_required  # the tare's, kept
+
+
+def test_a_load_cell_stuck_early_in_the_tare_is_no_tare_either(config, tmp_path):
+    # Stuck from 1 s of a 5 s tare, on a code near the tare's mean: its last 3.9 s on one code
+    # pulled the whole tare's spread below one ADC step (1.22 mV), which disarmed the stuck-cell
+    # interlock and said nothing (not all on one code): the run recorded one force through all
+    # its steps, complete, exit 0, the force limit blind. The spread that shows a live cell is
+    # that of the readings before the held code (0.41 N here, 2 mV of noise): the tare is invalid.
+    from mkm.bench.sim import SimBackend
+
+    c = config.replace(sequence={"tare_s": 5.0}, sim={"faults": {"loadcell_stuck_at_s": 1.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    said = re.fullmatch(r"TareInvalid: tare invalid: the load cell read [0-9.]+ V unchanged for "
+                        r"the last 3\.9 s of the tare, where it strayed ([0-9.]+) N before: a "
+                        r"stuck .*; nothing was pressurised", result.reason)
+    assert said, result.reason
+    # the readings before it: 2 mV rms of noise at 196.133 N/V (0.39 N), quantised, over 10
+    assert float(said.group(1)) == pytest.approx(0.002 * 196.133, rel=0.4)
+    tare = load_run(result.path).samples.query("phase == 'tare'")["loadcell_V"]
+    assert len(tare) == 50 and tare.std() < 1.22e-3  # the whole tare's spread: below a step
+    assert max(volts for _, volts in backend.commands) == 0.0
+
+
+def test_a_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_run(config,
+                                                                               tmp_path):
+    # Stuck from the start: the tare on one code is said (a cell quieter than a step reads so
+    # too) and the run goes on, the stuck-cell interlock disarmed; it then recorded one force
+    # at every step up to 1.0 bar and ended complete, exit 0, for identify and the report to
+    # use. A cell that never left its code from before the first pressure to the end, with the
+    # muscle pressurised, measured nothing: all steps done, failed, exit 1, with why.
+    c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert re.fullmatch(r"all 3 steps done, but the load cell read one ADC code \(0\.0[0-9]+ V\) "
+                        r"from before the first pressure to the end, while the monitor read up "
+                        r"to 1\.0[0-9] bar: a stuck or disconnected cell, or a muscle that never "
+                        r"pulled one ADC step \(0\.24 N\); its forces measure nothing, and the "
+                        r"force limit was blind", result.reason), result.reason
+    run = load_run(result.path)
+    assert run.steps["force_N_mean"].nunique() == 1 and run.meta.vent_check["verified"]
+
+
+def test_a_load_cell_stuck_late_in_the_tare_trips_two_seconds_after_it_stuck(config,
+                                                                             tmp_path):
+    # Stuck from 4 s of a 5 s tare (1 s of it on one code): the interlock counted its 2 s from
+    # the tare's end, so the pre-conditioning's 2.5 bar rose to 2.1 bar with the force limit
+    # blind until 7.0 s. It counts from where the code was first read: 6.0 s.
+    from mkm.bench.worker import STUCK_CELL_S
+
+    c = config.replace(sequence={"tare_s": 5.0, "preconditioning_cycles": 1},
+                       sim={"faults": {"loadcell_stuck_at_s": 4.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.reason.startswith(
+        "force interlock: the load cell read"), result.reason
+    run = load_run(result.path)
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    assert tripped["time_s"].iloc[0] == pytest.approx(4.0 + STUCK_CELL_S, abs=0.11)
+
+
 def test_a_monitor_frozen_above_the_threshold_is_named_by_the_load_cell(config, tmp_path):
     # The monitor's output freezes at its reading from 20 s (on the last step, 0.5 bar). The
     # vent empties the muscle, its force falls from 194 N to nothing, and the check, the
@@ -881,6 +963,29 @@ def test_force_per_bar_is_never_negative_on_a_zero_drifting_under_a_slack_muscle
     assert force_per_bar(steps, 2.2) is None
     flat = [row(k, p, 3.0) for k, p in enumerate((0.4, 0.3, 0.2))]  # a zero slope: none either
     assert force_per_bar(flat, 2.2) is None
+
+
+def test_a_force_kept_with_no_force_per_bar_says_the_zero_may_have_moved_and_what_to_do():
+    # A slack muscle (below its threshold at every step: no force per bar) on a load-cell zero
+    # drifting 4 N/min reads 3.7 N before the vent and 4.0 N after: no check can tell it from
+    # a muscle a stuck exhaust holds, so VENT BY HAND stays. The message said only "the muscle
+    # still pulls ... check the regulator and the load cell", of a muscle never seen pulling:
+    # it names the zero moved as the other cause and what to look at.
+    from mkm.bench.vent import VentCheck, still_pulling
+
+    verified = VentCheck(True, 0.005, 0.05, 1.8, "monitor")
+    judged = still_pulling(verified, 3.7, 4.0, 2.2, 0.25)
+    assert not judged.verified and judged.unfollowed_bar == 0.25
+    assert judged.doubted == "the monitor or the load cell"
+    assert judged.problem == (
+        "the monitor read 0.005 bar, but the load cell still reads 4.0 N against 3.7 N before "
+        "the vent (more than 50% of it), and the run measured no force per bar (the muscle "
+        "pulled at no two successive steps): a muscle that still pulls (a monitor that reports "
+        "its command or is stuck, with an exhaust that did not open) reads so, and so does a "
+        "slack one on a load-cell zero moved 3.7 N since the tare (an amplifier warming up); "
+        "look at the muscle: hanging slack, it is vented and the zero moved (power the amplifier "
+        "up well before the run); pulling, check the regulator and the load "
+        "cell")
 
 
 def test_a_force_kept_after_the_vent_is_judged_by_what_the_threshold_pressure_makes():

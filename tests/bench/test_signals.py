@@ -392,3 +392,150 @@ def test_a_signal_during_the_devices_open_is_held_until_the_open_ends(config, tm
             "failed", "stopped by SIGTERM during the device's open, held until its bound "
             "passed: opening the device did not return within 0.2 s (the driver hangs): the "
             "vent is NOT known to be written (the open writes it); VENT BY HAND")
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGQUIT"), reason="POSIX signals")
+@pytest.mark.parametrize("name", ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGXCPU"])
+def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path, name):
+    # Ctrl-\ (SIGQUIT), or a SIGUSR1, SIGUSR2, SIGXCPU (ulimit -t) sent mid-step: their
+    # default action ended the process at once, the regulator holding the step's pressure
+    # (the AO keeps its last value), run.json "running", the block in hand lost. Each is a
+    # stop signal: vented at once, recorded with it, exit 128 + N.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    signum = getattr(signal, name)
+    backend = SimBackend(config)
+    original = backend.read
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:  # on the 0.5 bar step (the tare's 2 s are 20 samples)
+            signal.raise_signal(signum)  # its handler runs before read returns
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=lambda m: None).execute()
+    assert result.status == "aborted" and result.exit_code == 128 + signum
+    assert result.reason == f"stopped by {name} at once; vented"
+    run = load_run(result.path)
+    assert run.meta.stop_signal == name and run.meta.stop_signal_number == signum
+    acquired = run.samples[run.samples["phase"] != "vent"]
+    assert list(acquired["sample"]) == list(range(31))  # the block in hand kept
+    assert (run.commands["command_bar"] > 0).any()  # it was pressurised
+    assert backend.commands[-1][1] == 0.0 and run.commands["purpose"].iloc[-1] == "vent"
+    assert run.meta.vent_check["verified"]
+    assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGPROF"), reason="POSIX signals")
+def test_a_signal_handled_by_its_own_handler_is_left_to_it(config, tmp_path):
+    # a profiler's SIGPROF, a test timer's SIGALRM (pytest-timeout's): not the run's to take
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    def own(signum, frame):
+        pass
+
+    previous = signal.signal(signal.SIGPROF, own)
+    try:
+        backend = SimBackend(config)
+        original, seen = backend.read, []
+
+        def read(n, timeout):
+            seen.append(signal.getsignal(signal.SIGPROF))
+            return original(n, timeout)
+
+        backend.read = read
+        result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                          notify=lambda m: None).execute()
+        assert result.status == "complete" and set(seen) == {own}
+    finally:
+        signal.signal(signal.SIGPROF, previous)
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGTSTP"), reason="POSIX job control")
+def test_ctrl_z_does_not_suspend_a_run(config, tmp_path):
+    # Ctrl-Z on the 0.5 bar step suspended the process: the regulator held the step's pressure
+    # with no interlock watching for as long as it stayed suspended (`mkm vent` could only ask
+    # it to stop). It is refused, said once, and the run goes on to its end.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    backend = SimBackend(config)
+    original, said = backend.read, []
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:
+            signal.raise_signal(signal.SIGTSTP)  # its handler runs before read returns
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=said.append).execute()
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert said.count("Ctrl-Z does not suspend a run: suspended, it would hold the regulator's "
+                      "pressure with no interlock watching; Ctrl-C stops it at a safe point, "
+                      "vented") == 1
+    assert signal.getsignal(signal.SIGTSTP) == signal.SIG_DFL  # given back after the run
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGTTOU"), reason="POSIX job control")
+@pytest.mark.parametrize("name", ["SIGTTOU", "SIGTTIN"])
+def test_a_run_in_the_background_is_not_stopped_by_its_terminal(config, tmp_path, name):
+    # `mkm acquire ... &` on a terminal set `stty tostop`: its first line to the terminal
+    # (SIGTTOU; a manual regulator's prompt read, SIGTTIN) stopped the process, the regulator
+    # holding its pressure with no interlock watching. Ignored during the run: it goes on.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    signum = getattr(signal, name)
+    backend = SimBackend(config)
+    original = backend.read
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:
+            signal.raise_signal(signum)
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=lambda m: None).execute()
+    assert result.status == "complete" and result.exit_code == 0, result.reason
+    assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
+
+
+@pytest.mark.parametrize("name", ["SIGINT", "SIGTSTP"])
+def test_a_signal_handler_writes_nothing_the_loop_says_its_notice(config, tmp_path, name):
+    # The first Ctrl-C's notice (and a refused Ctrl-Z's) was written by the signal handler,
+    # which runs in the loop's own thread between two of its steps: landing inside the loop's
+    # write to the console (its queue's lock held), the handler's write would wait for that
+    # lock for good, and the loop, every interlock with it, with the pressure held. The handler
+    # only notes it; the loop says it at its next block.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.signals import FIRST_INTERRUPT, SUSPEND_REFUSED
+    from mkm.bench.sim import SimBackend
+
+    if not hasattr(signal, name):
+        pytest.skip(f"no {name} here")
+    backend = SimBackend(config)
+    original, said, during = backend.read, [], []
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:
+            before = len(said)
+            signal.raise_signal(getattr(signal, name))  # its handler runs before this returns
+            during.append(said[before:])
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=said.append).execute()
+    assert during == [[]]  # nothing written by the handler
+    notice = FIRST_INTERRUPT if name == "SIGINT" else SUSPEND_REFUSED
+    assert said.count(notice) == 1
+    assert result.status == ("aborted" if name == "SIGINT" else "complete"), result.reason

@@ -225,15 +225,76 @@ def test_mkm_vent_after_a_monitor_that_did_not_follow_does_not_call_the_vent_ver
     notes = []
     with pytest.raises(BenchError) as caught:
         vent(c, notify=notes.append)
-    assert str(caught.value).startswith(
-        "the vent went out, but the monitor's 0.000 bar does not verify it: in run "
-        f"{result.path.resolve()} the same monitor read below the 0.5 bar commanded (stuck, or "
-        "no supply); check the muscle and the monitor")
+    assert re.match(
+        re.escape("the vent went out, but the monitor's 0.000 bar does not verify it: in run "
+                  f"{result.path.resolve()} the vent could not be verified (the monitor read ")
+        + r"0\.00[0-9] bar against 0\.5 bar commanded before the vent, so its reading after it "
+        r"proves nothing: stuck near zero, a monitor reads so whatever the muscle holds; ",
+        str(caught.value)), str(caught.value)
+    assert "check the monitor and the supply); check the muscle and the monitor" in \
+        str(caught.value)
     assert any("proves nothing" in n and n.endswith("vented now") for n in notes)
     # a monitor that followed: the marker of a run killed mid-step is vented and verified
     data.update(vent_unverified="", unfollowed_bar=None, last_command_bar=1.0)
     path.write_text(json.dumps(data))
     assert vent(config, notify=notes.append)["vented"]
+
+
+def _died(bench_key: str = "sim-Dev1") -> None:
+    """The bench's one marker made that of a process that died."""
+    (path,) = bench_folder(bench_key).glob("*.json")
+    data = json.loads(path.read_text())
+    data["process"]["started_unix_s"] -= 100.0
+    path.write_text(json.dumps(data))
+
+
+def test_mkm_vent_after_a_load_cell_that_doubted_the_vent_says_what_the_run_found(tmp_path):
+    # A slack muscle (eps 0.18, 0.25-0.75 bar, below its threshold) on a load-cell zero
+    # drifting 4 N/min: the run's vent check cannot tell it from a muscle still pulling and
+    # asks for a vent by hand. The next `mkm vent` refused with "the same monitor read below
+    # the 0.25 bar commanded (stuck, or no supply)": that monitor read every command. It says
+    # what the run's check found instead.
+    from mkm.bench.backend import BenchError
+    from mkm.bench.config import load_config
+    from mkm.bench.procedures import vent
+    from mkm.bench.run import acquire
+
+    c = load_config(eps=0.18).replace(
+        sequence={"pressures_bar": (0.25, 0.5, 0.75), "preconditioning_cycles": 0},
+        sim={"model": "thickwall", "truth": {"loadcell_drift_N_per_min": 4.0}})
+    result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert result.manual_vent_required and result.exit_code == 4, result.reason
+    assert "the load cell still reads" in result.reason
+    _died()
+    with pytest.raises(BenchError) as caught:
+        vent(c, notify=lambda m: None)
+    said = str(caught.value)
+    assert said.startswith("the vent went out, but the monitor's 0.000 bar does not verify it: "
+                           f"in run {result.path.resolve()} the vent could not be verified (the "
+                           "monitor read "), said
+    assert ", but the load cell still reads " in said
+    assert "read below the" not in said and "no supply" not in said
+
+
+def test_mkm_vent_after_a_stuck_load_cell_verifies_on_the_monitor_that_fell(config, tmp_path):
+    # The load cell sticks at 12 s (on the 1.0 bar step): the run stops, vented, the monitor
+    # falling from 1.0 bar to 0.005, and asks for a vent by hand since the stuck cell weighs
+    # nothing. The next `mkm vent` refused the monitor's reading with "the same monitor read
+    # below the 1 bar commanded (stuck, or no supply)", of a monitor that followed every command
+    # and fell: only the load cell was doubted, so the monitor verifies the vent.
+    from mkm.bench.procedures import vent
+    from mkm.bench.run import acquire
+    from mkm.bench.storage import load_run
+
+    c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 12.0}})
+    result = acquire(c, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert result.manual_vent_required and result.exit_code == 4, result.reason
+    assert load_run(result.path).meta.vent_check["doubted"] == "the load cell"
+    _died()
+    notes = []
+    out = vent(config, notify=notes.append)
+    assert out["vented"] and out["pressure_bar"] < config.safety.vent_below_bar
+    assert any("stuck or disconnected" in n and n.endswith("vented now") for n in notes)
 
 
 @pytest.fixture
