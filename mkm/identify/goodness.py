@@ -107,6 +107,9 @@ class Goodness:
     #: though freeing it lowers chi2 beyond chance (:func:`mkm.identify.procedure.ratio_freed`:
     #: ``assumed``, ``ratio``, ``chi2_improvement``, ``chi2_per_nu``, ``within_noise``)
     ratio_freed: dict | None = None
+    #: a run declared at its rest length pulls later than the fitted model
+    #: (:func:`mkm.identify.procedure._rest_length_hint`): a length or a gap, not an instrument
+    pulls_late: bool = False
 
     @property
     def reduced(self) -> float:
@@ -233,6 +236,7 @@ class Goodness:
                 "birge_ratio": round(self.birge_ratio, 4),
                 "misfit_line": self.line(), "widened": self.widened,
                 **({"ratio_freed": self.ratio_freed} if self.ratio_freed else {}),
+                **({"pulls_late": True} if self.pulls_late else {}),
                 "branches": [b.record() for b in self.branches]}
 
 

@@ -403,7 +403,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      "of the force, which runs without timed holds cannot fit and which pulls "
                      "the braid angle up (the model-form term creep)")
     notes += [line for line in (fitness.line(), fitness.zero_line()) if line]
-    notes += _rest_length_hint(runs, fe, best, fitness, groups)
+    late = _rest_length_hint(runs, fe, best, fitness, groups)
+    fitness.pulls_late = bool(late)
+    notes += late
     notes += _identifiability(runs, best, boot)
     if boot.get("stretched"):
         notes.append(f"{', '.join(boot['stretched'])}: the bootstrap's 95 % range left the "

@@ -428,8 +428,8 @@ class Identification:
                     "report, design, fem solve)")
         return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"
                 f"{g.birge_ratio:.3g} and the estimates may be biased; "
-                f"{ratio_first(self.rubber, g.ratio_freed)}the notes above name what the runs "
-                "show that the fit lacks: act on them before using calibration.json")
+                f"{_first(self.rubber, g)}the notes above name what the runs show that the fit "
+                "lacks: act on them before using calibration.json")
 
     def _unjudged_line(self) -> str:
         """Without the steps' noise (a table: one value per step) no chi-square says whether
@@ -564,6 +564,19 @@ def _box_cut(rubber: dict) -> str:
     cut = rubber.get("ratio_box_cut")
     return (f"; open where the {rubber['searched_with']}'s box stopped the search, at C01/C10 "
             + " and ".join(f"{r:.3g}" for r in cut) if cut else "")
+
+
+def _first(rubber: dict, goodness) -> str:
+    """What a misfit's verdict says first: a run declared at its rest length that pulls later
+    than the fitted model (a rest length or a gap the runs do not declare: a misfit so large
+    that the braid or the rubber's ratio, which barely move the threshold, are read from it
+    too), else :func:`ratio_first`."""
+    if goodness.pulls_late:
+        return ("first, a run declared at its rest length pulls later than the fitted model "
+                "(the note above): fit its rest length (--params ...,L0) or a gap (--params "
+                "...,gap) and identify again, before reading the braid or the rubber's ratio "
+                "from this fit; then ")
+    return ratio_first(rubber, goodness.ratio_freed)
 
 
 def ratio_first(rubber: dict, freed: dict | None = None) -> str:

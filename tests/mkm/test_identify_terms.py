@@ -206,7 +206,7 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
 
     held = {"separated": False, "rejects_silastic_ratio": True, "braid_in_doubt": True}
     goodness = SimpleNamespace(judged=True, misfit=[object()], reduced=145.0, birge_ratio=12.0,
-                               ratio_freed=None)
+                               ratio_freed=None, pulls_late=False)
     verdict = Identification._verdict_line(SimpleNamespace(goodness=goodness, rubber=held))
     assert verdict.startswith("verdict: a misfit (chi2/nu 145)")
     assert ("first, the runs reject Silastic S's rubber ratio, kept only because the braid is "
@@ -222,8 +222,15 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     assert "first, C01's share reached the surrogate's box before the runs fixed it: identify " \
            "again with --search model" in Identification._verdict_line(
                SimpleNamespace(goodness=goodness, rubber=stopped))
+    # a run declared at its rest length pulling late (a rest length declared 2.5 % short,
+    # bench_identify_wrong_range's seed 20261602: chi2/nu 1.3e4) makes the fit reject the ratio
+    # too; the length comes first, not the braid
+    late = SimpleNamespace(**{**vars(goodness), "pulls_late": True})
+    said = Identification._verdict_line(SimpleNamespace(goodness=late, rubber=held))
+    assert "first, a run declared at its rest length pulls later" in said
+    assert "--braid" not in said
     within = SimpleNamespace(judged=True, misfit=[], reduced=1.1, birge_ratio=1.0,
-                             ratio_freed=None)
+                             ratio_freed=None, pulls_late=False)
     assert "--braid" not in Identification._verdict_line(
         SimpleNamespace(goodness=within, rubber=held))
 
