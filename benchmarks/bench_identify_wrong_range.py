@@ -32,8 +32,9 @@ against the truth's equivalent scale at Silastic S's ratio over the runs' true l
 eps). A draw is ``covered`` when every interval holds the truth, ``warned`` when some miss and
 identify printed a misfit line, ``SILENT`` when some miss without one, ``refused`` or
 ``crashed`` as there; ``misfit_line`` says whether one was printed at all. Prints one row per
-draw; ``--out`` writes the table per departure, every draw's parameters and notes, the seeds
-and provenance.
+draw and the counts per departure; ``--out`` writes them (``rows``: one per draw, with what a
+misfit's verdict names first; ``summary``: per departure), every draw's parameters, notes and
+verdict line, the seeds and provenance.
 """
 
 from __future__ import annotations
@@ -160,7 +161,7 @@ def one(muscle: dict, out: Path) -> dict:
     return row
 
 
-def grid(rows: list[dict]) -> list[dict]:
+def summarise(rows: list[dict]) -> list[dict]:
     """Per departure: the draws, and how many were covered, warned, silent, refused, crashed or
     skipped, and printed a misfit line."""
     table = []
@@ -172,6 +173,31 @@ def grid(rows: list[dict]) -> list[dict]:
                                    "skipped")},
                       "misfit_line": sum(r["misfit_line"] is not None for r in mine)})
     return table
+
+
+def table(rows: list[dict]) -> list[dict]:
+    """One row per draw: its departure and truth, the verdict, chi2/nu, whether a misfit line
+    was printed and what it names first, what missed, seconds."""
+    return [{"seed": r["seed"], "departure": r["departure"], "value": r["value"],
+             "truth": r["truth"], "verdict": r["verdict"],
+             "chi2_per_nu": None if r["chi2_per_nu"] is None else float(f"{r['chi2_per_nu']:.3g}"),
+             "misfit_line": "yes" if r["misfit_line"] else "no",
+             "verdict_first": first_said(r.get("verdict_line")),
+             "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
+
+
+def first_said(verdict: str | None) -> str:
+    """What a misfit's verdict sends the reader to first (the rest length, the braid, the
+    rubber's ratio, the declared tolerances, the surrogate's box), or '-'."""
+    if not verdict or "; first, " not in verdict:
+        return "-"
+    first = verdict.split("; first, ")[1]
+    for key, said in (("rest length", "rest length or gap"), ("braid", "braid"),
+                      ("declared tolerances", "declared tolerances"),
+                      ("C01/C10 held", "rubber ratio"), ("surrogate's box", "search model")):
+        if key in first.split(";")[0]:
+            return said
+    return first[:40]
 
 
 def main(argv=None) -> int:
@@ -207,11 +233,12 @@ def main(argv=None) -> int:
                       f"{'|'.join(row['missed']) or '-'},{'|'.join(row['far']) or '-'},"
                       f"{row['seconds']},{row['message'] or ''}", flush=True)
                 k += 1
-    table = grid(rows)
-    print(json.dumps(table, indent=1))
+    summary = summarise(rows)
+    print(json.dumps(summary, indent=1))
     if args.out:
         Path(args.out).write_text(json.dumps(
-            {**provenance(), "seed": args.seed, "rows": table, "draws": rows,
+            {**provenance(), "seed": args.seed, "summary": summary, "rows": table(rows),
+             "draws": rows,
              "target": "every draw covered or warned: no SILENT miss, no crash"},
             indent=1, default=jsonable), encoding="utf-8")
     return 0
