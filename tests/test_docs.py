@@ -1924,8 +1924,8 @@ def test_the_guides_rubbers_across_the_practical_range_are_their_measured_file()
     others = [d["seconds"] for d in draws if d is not again]
     assert (f"(seed 20261208: a 46 mm tube whose runs pull within its load cell only up to 15 % "
             f"of its braid lock) after the FE model searched again where the corrected "
-            f"surrogate misfit ({again['seconds']:.0f} s instead of {min(others):.0f}-"
-            f"{max(others):.0f} s)") in said
+            f"surrogate misfit ({again['seconds']:.0f} s; the other draws {min(others):.0f}-"
+            f"{max(others):.0f} s, on a machine other jobs shared)") in said
     misfit = [d for d in draws if d["misfit_line"]]
     chi2 = [d["chi2_per_nu"] for d in misfit]
     assert summary["covered_with_misfit_line"] == len(misfit)
@@ -1936,6 +1936,22 @@ def test_the_guides_rubbers_across_the_practical_range_are_their_measured_file()
     assert ("on each the runs did not separate C10 and C01 (the ratio's printed interval holds "
             "Silastic S's) and the fit at Silastic S's ratio misses a rubber of C01/C10 "
             f"{min(ratios):.2f}-{max(ratios):.2f}") in said
+    # each misfit line names the rubber's ratio freed: near the truth's, and within the noise
+    # or not as said
+    freed = [re.search(r"the rubber's C01/C10, held at Silastic S's 0\.905: freed \(to "
+                       r"([\d.]+)\) (the model follows these steps within their noise \(chi2/nu "
+                       r"([\d.]+)\)|chi2 is lowered by ([\d.]+) \(chi2/nu ([\d.]+)\))",
+                       d["misfit_line"]) for d in misfit]
+    assert all(freed), [d["seed"] for d, m in zip(misfit, freed, strict=True) if not m]
+    assert "Each misfit line names the rubber's ratio first among the causes" in said
+    near = max(abs(float(m.group(1)) - r) for m, r in zip(freed, ratios, strict=True))
+    assert f"the ratio comes within {near:.3f} of the truth's" in said
+    within = [float(m.group(3)) for m in freed if m.group(3)]
+    (short,) = [(d["seed"], m.group(4), m.group(5)) for d, m in zip(misfit, freed, strict=True)
+                if not m.group(3)]
+    assert (f"the model follows the runs within their noise on {len(within)} of the "
+            f"{len(misfit)} (chi2/nu {min(within):.2f}-{max(within):.2f}; on seed {short[0]} "
+            f"freeing it lowers chi2 by {short[1]}, to chi2/nu {short[2]})") in said
     for d in misfit:
         note = next(x for x in d["notes"] if x.startswith("C10 and C01 not separated"))
         low, high = (float(v) for v in re.search(r"interval ([\d.]+)-([\d.]+)", note).groups())
