@@ -2612,3 +2612,55 @@ def test_run_benchmarks_refuses_an_unknown_output():
     assert done.returncode == 2 and done.stdout == ""
     assert done.stderr == (f"generate.py: error: --run-benchmarks nope.csv: expected some of "
                            f"{outputs}\n")
+
+
+def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
+    """calibration.md's words on identify's defaults on a bench wrong several ways at once:
+    held to ``identify_wrong_range.json`` (the verdicts' counts, the rest lengths' misfits and
+    what their verdict says first, the silent miss and the crash)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_range.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    said = text[text.index("**A bench wrong several ways at once.**"):]
+    said = said[:said.index("### What the intervals carry")]
+    assert record["command"] == ("benchmarks/bench_identify_wrong_range.py --draws 8 --seed "
+                                 "20261601 --out docs/measured/identify_wrong_range.json")
+    draws, rows = record["draws"], record["rows"]
+    count = {v: sum(d["verdict"] == v for d in draws)
+             for v in ("covered", "warned", "SILENT", "crashed")}
+    assert (f"Of the {len(draws)} draws, {count['covered']} were covered, {count['warned']} "
+            f"warned, {count['SILENT']} `SILENT` and {count['crashed']} crashed") in said
+    rest = [d for d in draws if d["departure"] == "rest length"]
+    short = [100 * (1 - d["muscle"]["declared_L0_mm"] / d["muscle"]["L0_mm"]) for d in rest]
+    chi2 = [d["chi2_per_nu"] for d in rest]
+    assert all(d["verdict"] == "warned" for d in rest)
+    assert (f"(by {min(short):.2f}-{max(short):.2f} %) misfit by thousands of the steps' noise "
+            f"and more (chi2/nu {min(chi2):.3g}-{max(chi2):.2g})") in said
+    first = [r for r in rows if r["departure"] == "rest length"
+             and r["verdict_first"] == "rest length or gap"]
+    assert (f"on {len(first)} of the {len(rest)} the verdict says first to fit the rest length "
+            "or a gap") in said
+    sliding = [d for d in draws if d["departure"] == "sliding braid"]
+    lined = [d["chi2_per_nu"] for d in sliding if d["misfit_line"]]
+    assert all(d["verdict"] == "covered" for d in sliding)
+    assert (f"{len(lined)} with a misfit line (chi2/nu {min(lined):.3g}-{max(lined):.3g})"
+            ) in said
+    gains = [d for d in draws if d["departure"] == "gains"]
+    covered = [d for d in gains if d["verdict"] == "covered"]
+    assert (f"With both gains off, {len(covered)} were covered "
+            f"({sum(d['misfit_line'] is not None for d in covered)} with a misfit line)") in said
+    (silent,) = [d for d in draws if d["verdict"] == "SILENT"]
+    truth = silent["muscle"]["truth"]
+    theta = next(p for p in silent["parameters"] if p["parameter"] == "theta0_deg")
+    assert silent["missed"] == ["theta0_deg"] and silent["misfit_line"] is None
+    assert (f"seed {silent['seed']}, the load cell {100 * (1 - truth['loadcell_gain']):.2f} % "
+            f"low (17 times its declared tolerance) and the monitor "
+            f"{100 * (truth['monitor_gain'] - 1):.2f} % high, fits within the noise (chi2/nu "
+            f"{silent['chi2_per_nu']:.3g}), and theta0's interval ({theta['ci_low']:.2f}-"
+            f"{theta['ci_high']:.2f} deg) misses the true {theta['truth']:.2f} deg by "
+            f"{theta['ci_low'] - theta['truth']:.2f} deg") in said
+    (crashed,) = [d for d in draws if d["verdict"] == "crashed"]
+    assert crashed["seed"] == 20261622 and "did not converge" in crashed["message"]
+    assert "The crash: seed 20261622" in said
