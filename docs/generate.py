@@ -342,6 +342,8 @@ BENCHMARKS = {
                                               "creep,offset,zero --out {out}",
     "identify_rubbers.json": "benchmarks/bench_identify_rubbers.py --draws 24 --seed 20261206 "
                              "--out {out}",
+    "identify_wrong_range.json": "benchmarks/bench_identify_wrong_range.py --draws 8 --seed "
+                                 "20261601 --out {out}",
     "mesh_bound.json": "benchmarks/bench_mesh_bound.py --muscles 240 --seed 20264102 "
                        "--out {out}",
     # the guide's further checks of the bound, on the draws it names

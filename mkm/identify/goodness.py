@@ -107,6 +107,13 @@ class Goodness:
     #: per run, the settled steps where the fitted muscle is slack: (run, steps, their mean
     #: measured force [N], its standard error [N], the smallest force called a zero error [N])
     slack: list[tuple[str, int, float, float, float]] = field(default_factory=list)
+    #: the fit with the rubber's C01/C10 free where one scale at Silastic S's ratio is kept
+    #: though freeing it lowers chi2 beyond chance (:func:`mkm.identify.procedure.ratio_freed`:
+    #: ``assumed``, ``ratio``, ``chi2_improvement``, ``chi2_per_nu``, ``within_noise``)
+    ratio_freed: dict | None = None
+    #: a run declared at its rest length pulls later than the fitted model
+    #: (:func:`mkm.identify.procedure._rest_length_hint`): a length or a gap, not an instrument
+    pulls_late: bool = False
 
     @property
     def reduced(self) -> float:
@@ -172,9 +179,25 @@ class Goodness:
         unfitted = [what for name, what in UNDECLARED.items() if name not in self.fitted]
         fit_them = f"; or fit {' or '.join(unfitted)}" if unfitted else ""
         return (f"misfit: {shown}{more}: the model does not follow these steps within their "
-                f"noise, intervals widened by x{self.birge_ratio:.3g} ({self._left_out()}the "
-                "estimates may be biased too: check the monitor's zero, the load cell's "
-                f"calibration, the muscle's wall and braid{fit_them})")
+                f"noise, intervals widened by x{self.birge_ratio:.3g} ({self._left_out()}"
+                f"{self._ratio_said()}the estimates may be biased too: check the monitor's "
+                "zero, the load cell's calibration, the muscle's wall and braid"
+                f"{fit_them})")
+
+    def _ratio_said(self) -> str:
+        """The rubber's ratio as what the fit lacks, where freeing it lowers chi2 beyond
+        chance (:attr:`ratio_freed`): whether the model then follows the steps within their
+        noise; or ''."""
+        freed = self.ratio_freed
+        if not freed:
+            return ""
+        fits = (f"the model follows these steps within their noise (chi2/nu "
+                f"{freed['chi2_per_nu']:.3g})" if freed["within_noise"] else
+                f"chi2 is lowered by {freed['chi2_improvement']:.3g}"
+                + (f" (chi2/nu {freed['chi2_per_nu']:.3g}), not to within the noise"
+                   if freed["chi2_per_nu"] is not None else ""))
+        return (f"the rubber's C01/C10, held at Silastic S's {freed['assumed']:.3g}: freed "
+                f"(to {freed['ratio']:.3g}) {fits}, so the rubber may be what the fit lacks; ")
 
     def _left_out(self) -> str:
         """What the runs show and the fit left out, with the ``--params`` that fits it too
@@ -226,6 +249,8 @@ class Goodness:
                 "misfit_branches": [f"{b.run} {b.branch}" for b in self.misfit],
                 "birge_ratio": round(self.birge_ratio, 4),
                 "misfit_line": self.line(), "widened": self.widened,
+                **({"ratio_freed": self.ratio_freed} if self.ratio_freed else {}),
+                **({"pulls_late": True} if self.pulls_late else {}),
                 "branches": [b.record() for b in self.branches]}
 
 

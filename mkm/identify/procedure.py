@@ -393,6 +393,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         notes += _outside_box(caught, "the refits at the ends of the assumed rubber ratio",
                               "the prediction band's rubber-ratio term is extrapolated there")
     fitness = goodness.assess(runs, best)
+    fitness.ratio_freed = ratio_freed(rubber)
     if fitness.misfit and isinstance(source, Corrected) and surrogate_misfit(source, fe, runs,
                                                                              best):
         notify(f"the fit on the surrogate misfits where {fe.name} would not: identifying again "
@@ -413,7 +414,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      "of the force, which runs without timed holds cannot fit and which pulls "
                      "the braid angle up (the model-form term creep)")
     notes += [line for line in (fitness.line(), fitness.zero_line()) if line]
-    notes += _rest_length_hint(runs, fe, best, fitness, groups)
+    late = _rest_length_hint(runs, fe, best, fitness, groups)
+    fitness.pulls_late = bool(late)
+    notes += late
     notes += _identifiability(runs, best, boot)
     if boot.get("stretched"):
         notes.append(f"{', '.join(boot['stretched'])}: the bootstrap's 95 % range left the "
@@ -866,6 +869,9 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
               and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio)
     improvement = _improvement(best, free)
     rejected = not low <= assumed <= high and improvement > RATIO_LIKELIHOOD
+    # a misfit at Silastic S's ratio that the ratio freed takes away names the rubber, not the
+    # bench, as what the fit lacks, whether or not the runs pin the ratio
+    free_fitness = goodness.assess(runs, free)
     # what the bench declares but does not measure (the tube's wall and diameter, the monitor's
     # gain) trades with the ratio: where it alone keeps Silastic S's in the interval of a ratio
     # the fits prefer, the runs want another rubber and the tolerances keep it unmeasured
@@ -893,6 +899,10 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                         "searched_with": getattr(source, "base", source).name,
                         "rejects_silastic_ratio": rejected, "braid_in_doubt": braid_doubt,
                         "chi2_improvement": float(improvement),
+                        "free_chi2_per_nu": (float(free_fitness.reduced) if free_fitness.judged
+                                             else None),
+                        "free_within_noise": bool(free_fitness.judged
+                                                  and not free_fitness.misfit),
                         "other_braid_chi2_excess": excess,
                         "rejects_silastic_ratio_but_for_declared": declared,
                         "rule": f"C10 and C01 reported apart when the condition number of the "
@@ -905,6 +915,21 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                                 f"its own); excluding it is not enough while the braid "
                                 f"is in doubt and the other braid at it lowers chi2 as "
                                 f"far, within {RATIO_LIKELIHOOD:.2f}"}, terms, source
+
+
+def ratio_freed(rubber: dict) -> dict | None:
+    """What the fit with the rubber's ratio free gains where one scale at Silastic S's ratio is
+    kept (the runs do not separate C10 and C01) though freeing it lowers chi2 by more than
+    :data:`RATIO_LIKELIHOOD`: its ratio, chi2/nu and whether it follows the runs within their
+    noise (:attr:`mkm.identify.goodness.Goodness.ratio_freed`); else None."""
+    if (rubber.get("separated") or "free_chi2_per_nu" not in rubber
+            or not rubber["chi2_improvement"] > RATIO_LIKELIHOOD):
+        return None
+    return {"assumed": SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa,
+            "ratio": rubber["ratio_C01_over_C10"], "ratio_ci": rubber["ratio_ci"],
+            "chi2_improvement": rubber["chi2_improvement"],
+            "chi2_per_nu": rubber["free_chi2_per_nu"],
+            "within_noise": rubber["free_within_noise"]}
 
 
 #: how a note names what :func:`shared_terms` draws into the intervals

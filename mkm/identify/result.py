@@ -430,8 +430,8 @@ class Identification:
                     "report, design, fem solve)")
         return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"
                 f"{g.birge_ratio:.3g} and the estimates may be biased; "
-                f"{ratio_first(self.rubber)}the notes above name what the runs show that the "
-                "fit lacks: act on them before using calibration.json")
+                f"{_first(self.rubber, g)}the notes above name what the runs show that the fit "
+                "lacks: act on them before using calibration.json")
 
     def _unjudged_line(self) -> str:
         """Without the steps' noise (a table: one value per step) no chi-square says whether
@@ -568,19 +568,42 @@ def _box_cut(rubber: dict) -> str:
             + " and ".join(f"{r:.3g}" for r in cut) if cut else "")
 
 
-def ratio_first(rubber: dict) -> str:
+def _first(rubber: dict, goodness) -> str:
+    """What a misfit's verdict says first: a run declared at its rest length that pulls later
+    than the fitted model (a rest length or a gap the runs do not declare: a misfit so large
+    that the braid or the rubber's ratio, which barely move the threshold, are read from it
+    too), else :func:`ratio_first`."""
+    if goodness.pulls_late:
+        return ("first, a run declared at its rest length pulls later than the fitted model "
+                "(the note above): fit its rest length (--params ...,L0) or a gap (--params "
+                "...,gap) and identify again, before reading the braid or the rubber's ratio "
+                "from this fit; then ")
+    return ratio_first(rubber, goodness.ratio_freed)
+
+
+def ratio_first(rubber: dict, freed: dict | None = None) -> str:
     """What a misfit's verdict says first when the rubber's ratio was not tested as the runs
     can test it: the runs reject Silastic S's ratio but one rubber scale at it was kept
     because the braid is in doubt (a braid the model does not have bends the curve as another
-    ratio would; the braid given, the ratio is fitted) or the bench's declared tolerances; else
-    ''."""
+    ratio would; the braid given, the ratio is fitted) or the bench's declared tolerances; or
+    when the ratio freed (``freed``: :attr:`mkm.identify.goodness.Goodness.ratio_freed`) takes
+    the misfit away though the runs do not pin it; else ''."""
     if rubber.get("rejects_silastic_ratio_but_for_declared") and not rubber.get("separated"):
         return ("first, the runs want a rubber ratio other than Silastic S's, kept only "
                 "because of the bench's declared tolerances (the note on C10 and C01): where "
                 "they are known closer, declare them and identify again; then ")
-    if rubber.get("separated") or not (rubber.get("rejects_silastic_ratio")
-                                       and rubber.get("braid_in_doubt")):
+    if rubber.get("separated"):
         return ""
-    return ("first, the runs reject Silastic S's rubber ratio, kept only because the braid is "
-            f"not given: identify again with the muscle's braid ("
-            f"{' or '.join(f'--braid {b}' for b in BRAIDS)}) and the ratio is fitted; then ")
+    if rubber.get("rejects_silastic_ratio") and rubber.get("braid_in_doubt"):
+        return ("first, the runs reject Silastic S's rubber ratio, kept only because the braid "
+                f"is not given: identify again with the muscle's braid ("
+                f"{' or '.join(f'--braid {b}' for b in BRAIDS)}) and the ratio is fitted; then ")
+    if not (freed and freed["within_noise"]):
+        return ""
+    low, high = freed["ratio_ci"]
+    return (f"first, the rubber's C01/C10 held at Silastic S's {freed['assumed']:.3g} may be "
+            f"what the fit lacks: freed (to {freed['ratio']:.3g}) the model follows these runs "
+            f"within their noise (chi2/nu {freed['chi2_per_nu']:.3g}), though they do not pin "
+            f"the ratio (95 % interval {low:.3g}-{high:.3g}), so one rubber scale at Silastic "
+            "S's ratio is reported, its intervals widened by the misfit (a bench error that "
+            "bends the curve, the monitor's gain say, can look the same); then ")

@@ -350,3 +350,31 @@ def test_a_zero_error_is_judged_against_the_runs_own_load_cell(in_family):
         [branch], 500.0, nu, slack=[("tiny", 8, 0.128, 0.002, floor)]).zero_line()
     assert goodness.Goodness([branch], 500.0, nu, slack=[
         ("table", 8, 0.128, 0.002, goodness.ZERO_FLOOR_N)]).zero_line() is None
+
+
+def test_a_misfit_the_rubber_ratio_freed_takes_away_names_the_rubber():
+    # one scale at Silastic S's ratio kept (the runs do not pin the ratio) though freeing it
+    # lowers chi2 by 152 and fits within the noise: the line named the instruments alone
+    # (bench_identify_rubbers' seed 20261219, a rubber of C01/C10 0.54 on a bench with nothing
+    # wrong)
+    nu = 10.0
+    branch = goodness.Branch("r", "loading", 10, 72.0, nu, float(stats.chi2.sf(72.0, nu)), 5,
+                             0.5, 0.1, 0.1)
+    freed = {"assumed": 0.905, "ratio": 0.548, "ratio_ci": [0.0, 9.0],
+             "chi2_improvement": 152.3, "chi2_per_nu": 1.06, "within_noise": True}
+
+    def line(**changes):
+        return goodness.Goodness([branch], 72.0, nu, fitted=("theta0_deg", "rubber_scale"),
+                                 ratio_freed={**freed, **changes}).line()
+
+    assert ("(the rubber's C01/C10, held at Silastic S's 0.905: freed (to 0.548) the model "
+            "follows these steps within their noise (chi2/nu 1.06), so the rubber may be what "
+            "the fit lacks; the estimates may be biased too: check the monitor's zero"
+            ) in line()
+    assert ("freed (to 0.548) chi2 is lowered by 152 (chi2/nu 2.1), not to within the noise, "
+            "so the rubber may be what the fit lacks;") in line(within_noise=False,
+                                                                 chi2_per_nu=2.1)
+    plain = goodness.Goodness([branch], 72.0, nu, fitted=("theta0_deg",)).line()
+    assert "C01/C10" not in plain and "(the estimates may be biased too" in plain
+    assert goodness.Goodness([branch], 72.0, nu, ratio_freed=freed).record()[
+        "ratio_freed"] == freed

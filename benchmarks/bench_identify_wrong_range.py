@@ -1,0 +1,248 @@
+"""What a new user's `mkm identify RUNS` (its defaults) says of fresh muscles across the practical
+range on a bench wrong in ways no other benchmark draws: do its 95 % intervals hold the truth,
+or does it warn?
+
+Run outside the test suite:
+
+    .venv/bin/python benchmarks/bench_identify_wrong_range.py [--draws 8] [--seed 20261601]
+        [--departures gains,...] [--out docs/measured/identify_wrong_range.json]
+
+Each draw is a fresh muscle of ``bench_identify_rubbers.draw`` (inner diameter 8-50 mm, wall
+5-15 % of it, length 4-10 diameters, theta0 20-36 deg, C10 0.05-0.5 MPa with C01/C10 0-1.2,
+friction 0-4 %, no creep; its runs at 3 or 4 eps up to 70 % of its braid lock on 8 steps up to
+8 bar, a load cell sized to its force: ``bench_identify_rubbers.plan``) from its own numpy seed
+(``--seed`` plus the draw's index), with one departure (:data:`DEPARTURES`), several of a bench's
+errors at once:
+
+- ``gains``: the load cell's gain 1-3 % off (a cell not calibrated on this bench) and the
+  pressure monitor's gain 0.5-2 % off its span (twice its declared accuracy and more at the top
+  step), each either sign;
+- ``rest length``: the rest length the runs declare is 1-3 % shorter than the muscle's (a
+  length measured under load, or the first length already shortened): the muscle is
+  simulated at its true length and the eps its held length gives, and run.json declares the
+  shorter length and the eps the bench computed from it, as a lab records them; with the
+  draw's rubber (not Silastic S's ratio);
+- ``sliding braid``: a sleeve sliding on the tube (``[sim.truth] braid = "sliding"``) with
+  strong braid friction (6-10 %).
+
+The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
+the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
+judged against the truth as ``bench_identify_rubbers`` judges it (the rubber, where one scale,
+against the truth's equivalent scale at Silastic S's ratio over the runs' true lengths and
+eps). A draw is ``covered`` when every interval holds the truth, ``warned`` when some miss and
+identify printed a misfit line, ``SILENT`` when some miss without one, ``refused`` or
+``crashed`` as there; ``misfit_line`` says whether one was printed at all. Prints one row per
+draw and the counts per departure; ``--out`` writes them (``rows``: one per draw, with what a
+misfit's verdict names first; ``summary``: per departure), every draw's parameters, notes and
+verdict line, the seeds and provenance.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+import time
+import traceback
+from pathlib import Path
+
+import numpy as np
+from bench_identify_coverage import judge, truths
+from bench_identify_rubbers import config_for, draw, equivalent_scale, plan, truth_text
+
+from mkm.bench.run import acquire
+from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.core.records import jsonable, provenance
+from mkm.identify import identify
+
+FIRST_SEED = 20261601
+DEPARTURES = ("gains", "rest length", "sliding braid")
+
+
+def depart(muscle: dict, departure: str) -> dict:
+    """``muscle`` with its departure drawn from its own seed (``declared_L0_mm``: the rest
+    length the runs declare, where not the true one)."""
+    rng = np.random.default_rng([muscle["seed"], DEPARTURES.index(departure)])
+    truth = dict(muscle["truth"])
+    out = {**muscle, "departure": departure, "truth": truth}
+    if departure == "gains":
+        truth["loadcell_gain"] = 1.0 + float(rng.choice((-1, 1)) * rng.uniform(0.01, 0.03))
+        truth["monitor_gain"] = 1.0 + float(rng.choice((-1, 1)) * rng.uniform(0.005, 0.02))
+    elif departure == "rest length":
+        out["declared_L0_mm"] = round(muscle["L0_mm"] * (1 - float(rng.uniform(0.01, 0.03))),
+                                      2)
+    elif departure == "sliding braid":
+        truth["braid"] = "sliding"
+        out["hysteresis_fraction"] = float(rng.uniform(0.06, 0.10))
+    return out
+
+
+def true_eps(muscle: dict, declared_eps: float) -> float:
+    """The muscle's eps at the length the bench holds for ``declared_eps`` of the declared rest
+    length."""
+    declared = muscle.get("declared_L0_mm", muscle["L0_mm"])
+    return 1.0 - declared * (1.0 - declared_eps) / muscle["L0_mm"]
+
+
+def declare(run: Path, L0_mm: float, eps: float) -> None:
+    """The rest length and eps run.json declares (the simulated muscle keeps its own)."""
+    meta = json.loads((run / "run.json").read_text(encoding="utf-8"))
+    meta["muscle"].update(L0_mm=L0_mm, eps=eps)
+    (run / "run.json").write_text(json.dumps(meta, indent=2), encoding="utf-8")
+
+
+def acquire_blind(muscle: dict, declared: dict, out: Path) -> list[Path]:
+    """The runs at ``declared``'s eps, each simulated at the muscle's true length and eps and
+    declared as ``declared`` says."""
+    paths = []
+    simulated = {**declared, "eps": [true_eps(muscle, e) for e in declared["eps"]]}
+    for k, eps in enumerate(declared["eps"]):
+        config = config_for(muscle, simulated, simulated["eps"][k], k)
+        result = acquire(config, out_root=out, notify=lambda message: None)
+        if result.status != "complete":
+            raise RuntimeError(f"the simulated run at eps {eps:g} ended {result.status}")
+        remove_simulator_settings(result.path)
+        if "declared_L0_mm" in muscle:
+            declare(result.path, muscle["declared_L0_mm"], eps)
+        paths.append(result.path)
+    return paths
+
+
+def departure_value(muscle: dict) -> str:
+    t = muscle["truth"]
+    if muscle["departure"] == "gains":
+        return (f"loadcell_gain {t['loadcell_gain']:.4f}, monitor_gain "
+                f"{t['monitor_gain']:.4f}")
+    if muscle["departure"] == "rest length":
+        return (f"declared L0 {muscle['declared_L0_mm']:g} mm "
+                f"({100 * (muscle['declared_L0_mm'] / muscle['L0_mm'] - 1):+.2f} %)")
+    return f"sliding, friction {muscle['hysteresis_fraction']:.3f}"
+
+
+def one(muscle: dict, out: Path) -> dict:
+    # the plan a lab makes from what it declares; the truth's lengths and eps follow from it
+    declared = plan({**muscle, "L0_mm": muscle.get("declared_L0_mm", muscle["L0_mm"])})
+    row = {"seed": muscle["seed"], "departure": muscle["departure"],
+           "value": departure_value(muscle), "truth": truth_text(muscle), "muscle": muscle,
+           "plan": declared, "verdict": None, "chi2_per_nu": None, "missed": [], "far": [],
+           "misfit_line": None, "message": None, "notes": [], "parameters": [],
+           "seconds": None}
+    try:
+        runs = acquire_blind(muscle, declared, out)
+    except Exception as exc:  # the simulator's FE or the bench: no runs, no identification
+        row.update(verdict="skipped", message=f"{type(exc).__name__}: {exc}")
+        return row
+    start = time.perf_counter()
+    try:
+        result = identify(runs)
+    except ValueError as exc:  # refused in one line, as the command would
+        row.update(verdict="refused", message=str(exc),
+                   seconds=round(time.perf_counter() - start, 1))
+        return row
+    except Exception as exc:  # a defect
+        row.update(verdict="crashed", message=f"{type(exc).__name__}: {exc}",
+                   traceback=traceback.format_exc(),
+                   seconds=round(time.perf_counter() - start, 1))
+        return row
+    seconds = time.perf_counter() - start
+    simulated = {**declared, "eps": [true_eps(muscle, e) for e in declared["eps"]]}
+    truth = {**truths({**muscle, "departure": muscle["departure"]}, None),
+             "rubber_scale": equivalent_scale(muscle, simulated)}
+    parameters = judge(result, muscle, None, truth)
+    missed = [p["parameter"] for p in parameters if not p["covered"]]
+    misfit = result.goodness.line() if result.goodness else None
+    row.update(verdict="covered" if not missed else "warned" if misfit else "SILENT",
+               chi2_per_nu=result.goodness.reduced if result.goodness else None,
+               missed=missed, far=[p["parameter"] for p in parameters if p["far"]],
+               misfit_line=misfit, notes=result.notes, parameters=parameters,
+               verdict_line=result.summary().splitlines()[-1], seconds=round(seconds, 1))
+    return row
+
+
+def summarise(rows: list[dict]) -> list[dict]:
+    """Per departure: the draws, and how many were covered, warned, silent, refused, crashed or
+    skipped, and printed a misfit line."""
+    table = []
+    for d in dict.fromkeys(r["departure"] for r in rows):
+        mine = [r for r in rows if r["departure"] == d]
+        table.append({"departure": d, "draws": len(mine),
+                      **{v.lower(): sum(r["verdict"] == v for r in mine)
+                         for v in ("covered", "warned", "SILENT", "refused", "crashed",
+                                   "skipped")},
+                      "misfit_line": sum(r["misfit_line"] is not None for r in mine)})
+    return table
+
+
+def table(rows: list[dict]) -> list[dict]:
+    """One row per draw: its departure and truth, the verdict, chi2/nu, whether a misfit line
+    was printed and what it names first, what missed, seconds."""
+    return [{"seed": r["seed"], "departure": r["departure"], "value": r["value"],
+             "truth": r["truth"], "verdict": r["verdict"],
+             "chi2_per_nu": None if r["chi2_per_nu"] is None else float(f"{r['chi2_per_nu']:.3g}"),
+             "misfit_line": "yes" if r["misfit_line"] else "no",
+             "verdict_first": first_said(r.get("verdict_line")),
+             "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
+
+
+def first_said(verdict: str | None) -> str:
+    """What a misfit's verdict sends the reader to first (the rest length, the braid, the
+    rubber's ratio, the declared tolerances, the surrogate's box), or '-'."""
+    if not verdict or "; first, " not in verdict:
+        return "-"
+    first = verdict.split("; first, ")[1]
+    for key, said in (("rest length", "rest length or gap"), ("braid", "braid"),
+                      ("declared tolerances", "declared tolerances"),
+                      ("C01/C10 held", "rubber ratio"), ("surrogate's box", "search model")):
+        if key in first.split(";")[0]:
+            return said
+    return first[:40]
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--draws", type=int, default=8, help="draws per departure")
+    parser.add_argument("--seed", type=int, default=FIRST_SEED,
+                        help="the first draw's numpy seed; the k-th draw's is seed + k")
+    parser.add_argument("--departures", default=",".join(DEPARTURES),
+                        help="the departures, comma-separated (default all)")
+    parser.add_argument("--out", help="write the table, the draws and provenance as JSON here")
+    args = parser.parse_args(argv)
+    departures = [d.strip() for d in args.departures.split(",") if d.strip()]
+    unknown = [d for d in departures if d not in DEPARTURES]
+    if unknown or not departures:
+        parser.error(f"--departures {args.departures!r}: expected some of {','.join(DEPARTURES)}")
+    if args.draws < 1:
+        parser.error(f"--draws {args.draws}: expected at least 1")
+    rows = []
+    print("seed,departure,value,truth,verdict,chi2_per_nu,misfit_line,missed,far,seconds,message")
+    with tempfile.TemporaryDirectory() as tmp:
+        # the simulated bench's ownership markers stay here (another user's runs block nothing)
+        os.environ["MKM_STATE_DIR"] = str(Path(tmp) / "state")
+        k = 0
+        for _ in range(args.draws):
+            for departure in departures:
+                muscle = depart(draw(args.seed + k), departure)
+                row = one(muscle, Path(tmp) / f"draw{k}")
+                rows.append(row)
+                chi2 = row["chi2_per_nu"]
+                print(f"{row['seed']},{departure},{row['value']},{row['truth']},"
+                      f"{row['verdict']},{'' if chi2 is None else f'{chi2:.3g}'},"
+                      f"{'yes' if row['misfit_line'] else 'no'},"
+                      f"{'|'.join(row['missed']) or '-'},{'|'.join(row['far']) or '-'},"
+                      f"{row['seconds']},{row['message'] or ''}", flush=True)
+                k += 1
+    summary = summarise(rows)
+    print(json.dumps(summary, indent=1))
+    if args.out:
+        Path(args.out).write_text(json.dumps(
+            {**provenance(), "seed": args.seed, "summary": summary, "rows": table(rows),
+             "draws": rows,
+             "target": "every draw covered or warned: no SILENT miss, no crash"},
+            indent=1, default=jsonable), encoding="utf-8")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
