@@ -7,7 +7,7 @@ goes, :class:`StopSignals` handles:
 - the first ``SIGINT`` (Ctrl-C): stop at the next block boundary (a safe point);
 - a second ``SIGINT``, ``SIGTERM`` (kill, service stop), ``SIGHUP`` (terminal or SSH session
   closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows), and every other signal that would end
-  the process while it keeps its default action (:data:`ENDING_SIGNALS`: ``SIGQUIT`` from
+  the process while it keeps its default action (:data:`ENDING_SIGNAL_NAMES`: ``SIGQUIT`` from
   Ctrl-\\, ``SIGUSR1``, ``SIGALRM``, ``SIGXCPU``, ...; POSIX): raise :class:`StopSignal` at
   once, which unwinds to the run's shutdown: vent, close the device, record. The exit status
   is 128 + N. Once it is raised, a further signal is only noted (the run's reason names it):
