@@ -21,6 +21,35 @@ def _bench_state(tmp_path, monkeypatch):
     monkeypatch.setenv("MKM_STATE_DIR", str(tmp_path / "mkm-state"))
 
 
+@pytest.fixture(autouse=True)
+def _signals_as_a_fresh_process_has_them():
+    """The signals a run handles, as a command started from a terminal has them: delivered
+    (not blocked in this thread's mask) with their default actions, restored after the test.
+    A suite started in the background by a shell without job control (`make test &`, a CI
+    runner's script) inherits SIGINT and SIGQUIT ignored (POSIX): a Ctrl-C the tests send this
+    process then ended a command with 1, not 130, and a SIGQUIT never reached the run."""
+    import signal
+    import threading
+
+    from mkm.bench.signals import BACKGROUND_SIGNALS, ENDING_SIGNALS, STOP_SIGNALS
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    handled = (*STOP_SIGNALS, *ENDING_SIGNALS, *BACKGROUND_SIGNALS)
+    before = {s: signal.getsignal(s) for s in handled}
+    mask = (signal.pthread_sigmask(signal.SIG_UNBLOCK, handled)
+            if hasattr(signal, "pthread_sigmask") else None)
+    for s in handled:
+        signal.signal(s, signal.default_int_handler if s == signal.SIGINT else signal.SIG_DFL)
+    yield
+    for s, handler in before.items():
+        if handler is not None:
+            signal.signal(s, handler)
+    if mask is not None:
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+
+
 SHORT = {
     "sequence": {"pressures_bar": (0.5, 1.0), "tare_s": 2.0, "preconditioning_cycles": 0},
     "settle": {"min_dwell_s": 3.0, "hold_s": 2.0, "timeout_s": 20.0, "window_s": 2.0},
