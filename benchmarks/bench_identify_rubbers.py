@@ -208,6 +208,21 @@ def one(muscle: dict, out: Path) -> dict:
         row.update(verdict="skipped", message=f"{type(exc).__name__}: {exc}")
         return row
     row["acquire_seconds"] = round(time.perf_counter() - start, 1)
+    done = identified(runs, row)
+    if done is None:
+        return row
+    result, seconds, caught = done
+    truth = {**truths({**muscle, "departure": "practical range"}, None),
+             "rubber_scale": equivalent_scale(muscle, runs_plan)}
+    return judged(row, result, muscle, truth, seconds,
+                  rubber_separated=bool(result.rubber.get("separated")),
+                  warnings=sorted({str(w.message) for w in caught}))
+
+
+def identified(runs, row: dict):
+    """identify with its defaults on ``runs``: its result, seconds and the warnings it gave;
+    None where it refused (in one line, as the command would) or failed (a defect), ``row``
+    saying so."""
     start = time.perf_counter()
     try:
         with warnings.catch_warnings(record=True) as caught:
@@ -216,15 +231,18 @@ def one(muscle: dict, out: Path) -> dict:
     except ValueError as exc:  # refused in one line, as the command would
         row.update(verdict="refused", message=str(exc),
                    seconds=round(time.perf_counter() - start, 1))
-        return row
+        return None
     except Exception as exc:  # a defect
         row.update(verdict="crashed", message=f"{type(exc).__name__}: {exc}",
                    traceback=traceback.format_exc(),
                    seconds=round(time.perf_counter() - start, 1))
-        return row
-    seconds = time.perf_counter() - start
-    truth = {**truths({**muscle, "departure": "practical range"}, None),
-             "rubber_scale": equivalent_scale(muscle, runs_plan)}
+        return None
+    return result, time.perf_counter() - start, caught
+
+
+def judged(row: dict, result, muscle: dict, truth: dict, seconds: float, **extra) -> dict:
+    """``row`` with the identification ``result`` judged against ``truth``: covered (every
+    interval holds it), warned (one misses, the misfit line said) or SILENT; and ``extra``."""
     parameters = judge(result, muscle, None, truth)
     missed = [p["parameter"] for p in parameters if not p["covered"]]
     misfit = result.goodness.line() if result.goodness else None
@@ -232,9 +250,7 @@ def one(muscle: dict, out: Path) -> dict:
                chi2_per_nu=result.goodness.reduced if result.goodness else None,
                missed=missed, far=[p["parameter"] for p in parameters if p["far"]],
                misfit_line=misfit, notes=result.notes, parameters=parameters,
-               rubber_separated=bool(result.rubber.get("separated")),
-               warnings=sorted({str(w.message) for w in caught}),
-               seconds=round(seconds, 1))
+               seconds=round(seconds, 1), **extra)
     return row
 
 

@@ -44,18 +44,23 @@ import json
 import os
 import sys
 import tempfile
-import time
-import traceback
 from pathlib import Path
 
 import numpy as np
-from bench_identify_coverage import judge, truths
-from bench_identify_rubbers import config_for, draw, equivalent_scale, plan, truth_text
+from bench_identify_coverage import truths
+from bench_identify_rubbers import (
+    config_for,
+    draw,
+    equivalent_scale,
+    identified,
+    judged,
+    plan,
+    truth_text,
+)
 
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
 from mkm.core.records import jsonable, provenance
-from mkm.identify import identify
 
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid")
@@ -134,30 +139,15 @@ def one(muscle: dict, out: Path) -> dict:
     except Exception as exc:  # the simulator's FE or the bench: no runs, no identification
         row.update(verdict="skipped", message=f"{type(exc).__name__}: {exc}")
         return row
-    start = time.perf_counter()
-    try:
-        result = identify(runs)
-    except ValueError as exc:  # refused in one line, as the command would
-        row.update(verdict="refused", message=str(exc),
-                   seconds=round(time.perf_counter() - start, 1))
+    done = identified(runs, row)
+    if done is None:
         return row
-    except Exception as exc:  # a defect
-        row.update(verdict="crashed", message=f"{type(exc).__name__}: {exc}",
-                   traceback=traceback.format_exc(),
-                   seconds=round(time.perf_counter() - start, 1))
-        return row
-    seconds = time.perf_counter() - start
+    result, seconds, _ = done
     simulated = {**declared, "eps": [true_eps(muscle, e) for e in declared["eps"]]}
     truth = {**truths({**muscle, "departure": muscle["departure"]}, None),
              "rubber_scale": equivalent_scale(muscle, simulated)}
-    parameters = judge(result, muscle, None, truth)
-    missed = [p["parameter"] for p in parameters if not p["covered"]]
-    misfit = result.goodness.line() if result.goodness else None
-    row.update(verdict="covered" if not missed else "warned" if misfit else "SILENT",
-               chi2_per_nu=result.goodness.reduced if result.goodness else None,
-               missed=missed, far=[p["parameter"] for p in parameters if p["far"]],
-               misfit_line=misfit, notes=result.notes, parameters=parameters,
-               verdict_line=result.summary().splitlines()[-1], seconds=round(seconds, 1))
+    judged(row, result, muscle, truth, seconds,
+           verdict_line=result.summary().splitlines()[-1])
     return row
 
 
