@@ -103,11 +103,26 @@ def parse_groups(text: str | None) -> tuple[str, ...]:
 
 
 def rubber(values: dict[str, float]) -> tuple[float, float]:
-    """``(C10_MPa, C01_MPa)`` of the internal values: the scale on Silastic S and, where
-    fitted, C01's share of the sum."""
+    """``(C10_MPa, C01_MPa)`` of the internal values: the scale on Silastic S's C10 + C01 and
+    C01's share of the sum (:func:`assumed_share` where not given)."""
     total = values["rubber_scale"] * (SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa)
-    share = values.get("c01_fraction", SILASTIC_C01_FRACTION)
+    share = assumed_share(values)
     return total * (1.0 - share), total * share
+
+
+def assumed_ratio(values: dict[str, float]) -> tuple[float, str]:
+    """C01/C10 of one rubber scale's fit (``values``: its internal values) and whose ratio it
+    is, as a note says it: Silastic S's, or the rubber the runs declare."""
+    share = assumed_share(values)
+    said = ("Silastic S's" if math.isclose(share, SILASTIC_C01_FRACTION, rel_tol=1e-5)
+            else "the declared rubber's")
+    return share / (1.0 - share), said
+
+
+def assumed_share(values: dict[str, float]) -> float:
+    """C01's share of C10 + C01 in the internal values: the one given (fitted, or the rubber
+    the runs declare), else Silastic S's."""
+    return values.get("c01_fraction", SILASTIC_C01_FRACTION)
 
 
 def full_parameters(values: dict[str, float]) -> dict[str, float]:
@@ -164,6 +179,10 @@ class StaticSource:
     def share_bounds(self, rubber_scale: float) -> tuple[float, float]:
         """Where C01's share of the rubber is searched at this rubber scale."""
         return TERM_BOUNDS["c01_fraction"]
+
+    def scale_bounds(self, share: float) -> tuple[float, float]:
+        """Where the rubber scale is searched at C01's share ``share``."""
+        return self.box["rubber_scale"]
 
 
 class ModelStatic(StaticSource):
@@ -230,11 +249,19 @@ class SurrogateStatic(StaticSource):
         self.name = "surrogate" if kind == BEST else f"surrogate:kind={kind}"
         box = surrogate.box
         self.box = {"theta0_deg": box["theta0_deg"],
-                    "rubber_scale": (max(box["C10_MPa"][0] / SILASTIC_S.C10_MPa,
-                                         box["C01_MPa"][0] / SILASTIC_S.C01_MPa),
-                                     min(box["C10_MPa"][1] / SILASTIC_S.C10_MPa,
-                                         box["C01_MPa"][1] / SILASTIC_S.C01_MPa)),
+                    "rubber_scale": self.scale_bounds(SILASTIC_C01_FRACTION),
                     "t0_mm": box["t0_mm"], "D0_mm": box["D0_mm"], "L0_mm": box["L0_mm"]}
+
+    def scale_bounds(self, share):
+        """The rubber scale keeping both constants inside the box at C01's share ``share``."""
+        # each constant per unit scale, written so that Silastic S's share gives its own
+        box, silastic = self.surrogate.box, SILASTIC_C01_FRACTION
+        parts = {"C10_MPa": SILASTIC_S.C10_MPa * (1.0 - share) / (1.0 - silastic),
+                 "C01_MPa": SILASTIC_S.C01_MPa * share / silastic}
+        low = max(box[k][0] / v if v > 0 else (0.0 if box[k][0] <= 0 else math.inf)
+                  for k, v in parts.items())
+        high = min(box[k][1] / v for k, v in parts.items() if v > 0)
+        return (low, high)
 
     def share_bounds(self, rubber_scale):
         """C01's share keeping both constants inside the box at this scale give or take
@@ -245,8 +272,10 @@ class SurrogateStatic(StaticSource):
         high = min(box["C01_MPa"][1] / large, 1.0 - box["C10_MPa"][0] / small)
         return (low, high) if low < high else (SILASTIC_C01_FRACTION,) * 2
 
-    def outside(self, runs) -> list[str]:
-        """What of the runs' muscle the surrogate's box does not cover."""
+    def outside(self, runs, nominal: dict | None = None, fits_rubber: bool = True) -> list[str]:
+        """What of the runs' muscle the surrogate's box does not cover; with the ``nominal``
+        muscle's internal values, its rubber too: the assumed ratio where the rubber is fitted
+        (some scale inside the box at it), else the rubber's constants."""
         box, out = self.surrogate.box, []
         for run in runs:
             values = {"D0_mm": run.geometry[0], "t0_mm": run.geometry[1], "eps": run.eps,
@@ -254,6 +283,17 @@ class SurrogateStatic(StaticSource):
                       "pressure_bar": float(run.steps["set_pressure_bar"].max())}
             out += [f"{k}={v:g} not in [{box[k][0]:g}, {box[k][1]:g}]"
                     for k, v in values.items() if not box[k][0] <= v <= box[k][1] + 1e-9]
+        if nominal is not None and fits_rubber:
+            low, high = self.scale_bounds(assumed_share(nominal))
+            ratio, said = assumed_ratio(nominal)
+            if not low < high:
+                out.append(f"{said} C01/C10 {ratio:.3g} has no rubber scale with C10_MPa in "
+                           f"[{box['C10_MPa'][0]:g}, {box['C10_MPa'][1]:g}] and C01_MPa in "
+                           f"[{box['C01_MPa'][0]:g}, {box['C01_MPa'][1]:g}]")
+        elif nominal is not None:
+            out += [f"{k}={v:g} not in [{box[k][0]:g}, {box[k][1]:g}]"
+                    for k, v in zip(("C10_MPa", "C01_MPa"), rubber(nominal), strict=True)
+                    if not box[k][0] - 1e-12 <= v <= box[k][1] + 1e-12]
         return sorted(set(out))
 
     def tables(self, runs, values):
@@ -298,6 +338,9 @@ class Corrected(StaticSource):
     def share_bounds(self, rubber_scale):
         return self.base.share_bounds(rubber_scale)
 
+    def scale_bounds(self, share):
+        return self.base.scale_bounds(share)
+
     def without(self, k: int) -> Corrected:
         """The same correction for the runs but the ``k``-th (a run held out)."""
         return Corrected(self.base, [c for j, c in enumerate(self.corrections) if j != k])
@@ -340,8 +383,10 @@ def static_force(pressure_bar, grid, force_N) -> np.ndarray:
     return out
 
 
-def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float, float]:
-    """Where ``name`` is searched: the source's box, the terms' bounds, the declared wall and
+def bounds_of(name: str, source: StaticSource, runs, start: dict,
+              share_fitted: bool = False) -> tuple[float, float]:
+    """Where ``name`` is searched: the source's box (the rubber scale's at the share ``start``
+    holds; at Silastic S's where ``share_fitted``), the terms' bounds, the declared wall and
     diameter within :data:`GEOMETRY_FACTORS` and the rest length from the longest held length
     to :data:`REST_LENGTH_FACTOR` of the declared one (inside the source's box), the monitor's
     offset within its declared bound (the smallest of the runs') or about its vented reading
@@ -353,6 +398,11 @@ def bounds_of(name: str, source: StaticSource, runs, start: dict) -> tuple[float
         return (-ZERO_SEARCH_FRACTION * largest, ZERO_SEARCH_FRACTION * largest)
     if name == "c01_fraction":
         return source.share_bounds(start["rubber_scale"])
+    if name == "rubber_scale":
+        # at the share held; a fitted share moves within :meth:`StaticSource.share_bounds` of
+        # the scale, which moves within the box at Silastic S's
+        return source.scale_bounds(SILASTIC_C01_FRACTION if share_fitted
+                                   else assumed_share(start))
     if name == "pressure_offset_bar":
         return offset_search_bar(runs)
     if name == "pressure_hysteresis_bar":
@@ -485,7 +535,8 @@ def fit(source: StaticSource, runs, names, start: dict[str, float],
     """
     names = tuple(n for n in ORDER if n in names)
     given = given or {}
-    bounds = {n: given[n] if n in given else bounds_of(n, source, runs, start) for n in names}
+    bounds = {n: given[n] if n in given else
+              bounds_of(n, source, runs, start, "c01_fraction" in names) for n in names}
     empty = [f"{n} in [{b[0]:.6g}, {b[1]:.6g}]" for n, b in bounds.items() if not b[0] < b[1]]
     if empty:
         raise RuntimeError(f"the fit on {source.name} has nothing to search: {empty[0]}")

@@ -107,7 +107,7 @@ class Goodness:
     #: per run, the settled steps where the fitted muscle is slack: (run, steps, their mean
     #: measured force [N], its standard error [N], the smallest force called a zero error [N])
     slack: list[tuple[str, int, float, float, float]] = field(default_factory=list)
-    #: the fit with the rubber's C01/C10 free where one scale at Silastic S's ratio is kept
+    #: the fit with the rubber's C01/C10 free where one scale at the assumed ratio is kept
     #: though freeing it lowers chi2 beyond chance (:func:`mkm.identify.procedure.ratio_freed`:
     #: ``assumed``, ``ratio``, ``chi2_improvement``, ``chi2_per_nu``, ``within_noise``)
     ratio_freed: dict | None = None
@@ -196,7 +196,8 @@ class Goodness:
                 f"chi2 is lowered by {freed['chi2_improvement']:.3g}"
                 + (f" (chi2/nu {freed['chi2_per_nu']:.3g}), not to within the noise"
                    if freed["chi2_per_nu"] is not None else ""))
-        return (f"the rubber's C01/C10, held at Silastic S's {freed['assumed']:.3g}: freed "
+        return (f"the rubber's C01/C10, held at {freed['assumed_from']} {freed['assumed']:.3g}: "
+                "freed "
                 f"(to {freed['ratio']:.3g}) {fits}, so the rubber may be what the fit lacks; ")
 
     def _left_out(self) -> str:

@@ -39,7 +39,6 @@ from mkm.fem.batch import Runner
 from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import MODELS, STATIC_FAMILIES
 from mkm.fem.limits import PRACTICAL_RANGE
-from mkm.fem.materials import SILASTIC_S
 from mkm.fem.options import BRAIDS
 from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting, goodness
@@ -243,9 +242,11 @@ def _with_braid(model: str, braid: str) -> str:
     return spec.with_params(braid=braid).text
 
 
-def _covering_surrogate(runs, surrogate, notify) -> tuple[SurrogateStatic | None, str | None]:
+def _covering_surrogate(runs, surrogate, notify, nominal, fits_rubber
+                        ) -> tuple[SurrogateStatic | None, str | None]:
     """The surrogate to search with and a note: ``surrogate`` when given; else the default
-    surrogate where its box covers the runs' muscle, the practical range's
+    surrogate where its box covers the runs' muscle (its ``nominal`` rubber too:
+    :meth:`~mkm.identify.fitting.SurrogateStatic.outside`), the practical range's
     (:data:`mkm.surrogate.kinds.RANGE`) where only its box does; None (search with the FE
     model) where neither does."""
     from mkm.core.durations import estimate
@@ -261,7 +262,7 @@ def _covering_surrogate(runs, surrogate, notify) -> tuple[SurrogateStatic | None
     first_outside = None
     for candidate in ([surrogate] if surrogate is not None else [BEST, RANGE]):
         source = SurrogateStatic(load(candidate) if isinstance(candidate, str) else candidate)
-        outside = source.outside(runs)
+        outside = source.outside(runs, nominal, fits_rubber)
         if not outside:
             return source, (None if first_outside is None else
                             f"the default surrogate's box does not cover this muscle ("
@@ -283,15 +284,19 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if search == "surrogate" and "gap_mm" in names:
         notes.append(f"the surrogate has no gap between tube and braid: searched with {fe.name}")
     elif search == "surrogate":
-        found, note = _covering_surrogate(runs, surrogate, notify)
+        found, note = _covering_surrogate(runs, surrogate, notify, nominal,
+                                          "rubber_scale" in names)
         notes += [note] if note else []
         source = fe if found is None else found
     searched = list(notes)  # what a search again with the FE model keeps of them
     declared = {n: float(runs[0].muscle[n]) for n in (*fitting.GEOMETRY, "L0_mm")}
     start = {**nominal, **{n: TERM_START.get(n, nominal.get(n, declared.get(n, 0.0)))
                            for n in names}, **(start or {})}
-    if "rubber_scale" in names:  # one scale on Silastic S's ratio, unless the runs separate it
+    if "rubber_scale" in names:
+        # one scale at the ratio of the rubber the runs declare (else Silastic S's), unless the
+        # runs separate C10 and C01
         start.pop("c01_fraction", None)
+        start.update({n: nominal[n] for n in ("c01_fraction",) if n in nominal})
 
     notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
            f"of {len(runs)} run(s) with {source.name}")
@@ -327,6 +332,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     boot = bootstrap(best, seed=seed, **instrument_terms(runs),
                      uniform_terms=shared_terms(source, runs, best))
     rubber = {"separated": False, "why": "runs at one eps: the rubber's ratio not tested"}
+    assumed, said = fitting.assumed_ratio(best.values)
     terms = None
     if "rubber_scale" in best.names and len({round(r.eps, 4) for r in runs}) > 1:
         notify("does the data separate C10 and C01? (their ratio fitted too)")
@@ -354,35 +360,32 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             if fitting.at_edge(share, free.bounds["c01_fraction"]):
                 # a Festo membrane pushes it to 9, a bench error the model absorbs so to 0:
                 # fits best there, but the edge set the number, and the bootstrap collapsed on
-                # it: the intervals hold the fit at Silastic S's ratio too
+                # it: the intervals hold the fit at the assumed ratio too
                 terms = {**terms, "ratio_edge": ratio_edge_term(one_scale, free)}
-                notes.append(ratio_edge_note(ratio, share, free.bounds["c01_fraction"]))
+                notes.append(ratio_edge_note(ratio, share, free.bounds["c01_fraction"], said))
             if ratio > top:
                 notes.append(f"the identified rubber's C01/C10 {ratio:.3g} is above the "
                              f"practical range's {top:g} (`mkm models`): every model "
                              "extrapolates with it and the surrogate cannot answer for it")
         elif "why" in rubber:
             notes.append(f"C10 and C01 not separated: {rubber['why']}: one rubber scale at "
-                         f"Silastic S's ratio {SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa:.3g} "
-                         "assumed")
+                         f"{said} ratio {assumed:.3g} assumed")
         elif rubber.get("rejects_silastic_ratio") and rubber.get("braid_in_doubt"):
             low, high = rubber["ratio_ci"]
-            notes.append(f"the runs reject Silastic S's C01/C10 (95 % interval {low:.3g}-"
+            notes.append(f"the runs reject {said} C01/C10 (95 % interval {low:.3g}-"
                          f"{high:.3g}{_box_cut(rubber)}), but a braid other than {fe.name}'s "
-                         "bends the curve the same way: one rubber scale kept at Silastic S's "
+                         f"bends the curve the same way: one rubber scale kept at {said} "
                          "ratio, its interval holding the other braid's; give --braid if the "
                          "braid is known, and "
                          "C10 and C01 are reported apart")
         elif "ratio_ci" in rubber:
             low, high = rubber["ratio_ci"]
-            assumed = SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa
             flat = ("" if low <= assumed <= high else
                     f", yet freeing it lowers chi2 by only {rubber['chi2_improvement']:.2g}, "
-                    f"under {RATIO_LIKELIHOOD:.2f}: the fits do not reject Silastic S's")
+                    f"under {RATIO_LIKELIHOOD:.2f}: the fits do not reject {said}")
             notes.append(f"C10 and C01 not separated by these runs (C01/C10 95 % interval "
                          f"{low:.3g}-{high:.3g}{flat}{_box_cut(rubber)}): one rubber scale at "
-                         "Silastic S's ratio "
-                         f"{SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa:.3g} assumed; the C10 and "
+                         f"{said} ratio {assumed:.3g} assumed; the C10 and "
                          "C01 written are that assumption's (the stiffness the runs fix, "
                          f"not two measured constants){_declared_holds_ratio(rubber)}")
     if "rubber_scale" in best.names and not rubber["separated"]:
@@ -536,14 +539,15 @@ def _rms(r) -> float:
     return float(np.sqrt(np.mean(np.square(r))))
 
 
-def ratio_edge_note(ratio: float, share: float, bounds: tuple[float, float]) -> str:
+def ratio_edge_note(ratio: float, share: float, bounds: tuple[float, float],
+                    said: str) -> str:
     """The note on C01's share ``share`` fitted at an edge of its search ``bounds`` (the ratio
     C01/C10 ``ratio``): which edge, so what the runs want."""
     low, high = bounds
     want = ("no C01 (a neo-Hookean rubber, or an error the model takes for one)"
             if share - low <= high - share else "more of C01 than the box allows")
     return (f"C01/C10 {ratio:.3g} is at the edge of its search box: the runs want {want}, so "
-            "the ratio is the edge's, not measured: the intervals hold the fit at Silastic S's "
+            f"the ratio is the edge's, not measured: the intervals hold the fit at {said} "
             "ratio too")
 
 
@@ -687,7 +691,7 @@ def _other_braid(fe: ModelStatic) -> ModelStatic:
 
 
 def other_braid_excess(source, fe: ModelStatic, runs, one_scale, free) -> float:
-    """How far the fit at Silastic S's ratio (``one_scale``) refitted with the other braid
+    """How far the fit at the assumed ratio (``one_scale``) refitted with the other braid
     stays above the fit with the ratio free (``free``), in the units of the likelihood-ratio
     test (the free fit's residual variance): the refit is linearised at ``one_scale``'s optimum
     (one Gauss-Newton step, the other braid's change of the static force there; one FE sweep
@@ -781,14 +785,14 @@ def _outside_box(caught, what: str = "the fit with C01's share free",
 
 
 def ratio_edge_term(one_scale, free) -> dict:
-    """The model-form term of a rubber ratio at the edge of its search: the fit at Silastic S's
+    """The model-form term of a rubber ratio at the edge of its search: the fit at the assumed
     ratio (``one_scale``) minus the fit with C01's share free (``free``), one-sided."""
     shift = {name: one_scale.values[name] - free.values[name] for name in free.names
              if name in one_scale.values}
-    shift["c01_fraction"] = fitting.SILASTIC_C01_FRACTION - free.values["c01_fraction"]
+    shift["c01_fraction"] = fitting.assumed_share(one_scale.values) - free.values["c01_fraction"]
     return {"kind": "one-sided", "shift": shift,
-            "what": "the fit at Silastic S's C01/C10 minus the fit with the ratio at the edge "
-                    "of its search"}
+            "what": f"the fit at {fitting.assumed_ratio(one_scale.values)[1]} C01/C10 minus the "
+                    "fit with the ratio at the edge of its search"}
 
 
 def _improvement(one_scale, free) -> float:
@@ -811,9 +815,9 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                             f"box ({source.name}'s) at this rubber scale"}, None, source
     try:
         free = fitting.fit(source, runs, names,
-                           {**best.values, "c01_fraction": fitting.SILASTIC_C01_FRACTION})
+                           {**best.values, "c01_fraction": fitting.assumed_share(best.values)})
         if isinstance(source, Corrected):
-            # the FE's correction was taken at Silastic S's ratio; the surrogate's error changes
+            # the FE's correction was taken at the assumed ratio; the surrogate's error changes
             # with the ratio, and left so it misfits the free fit by it (chi2/nu 5-16 on
             # rubbers of C01/C10 0.2-0.5 fitted within the noise by the FE itself): taken
             # again at the free optimum, both fits are the FE's at their own optimum
@@ -859,7 +863,7 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     norms = np.sqrt(np.sum(J**2, axis=0))
     condition = (float(np.linalg.cond((J / norms).T @ (J / norms))) if np.all(norms > 0)
                  else float("inf"))
-    assumed = SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa
+    assumed, said = fitting.assumed_ratio(best.values)
     # the bootstrap is linearised at the optimum: at the search box's edge its replicates
     # collapse onto the edge (an interval of nothing, not a measurement), and where C01's share
     # trades against the other parameters along a flat valley it can exclude a ratio the fit
@@ -869,11 +873,11 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
               and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio)
     improvement = _improvement(best, free)
     rejected = not low <= assumed <= high and improvement > RATIO_LIKELIHOOD
-    # a misfit at Silastic S's ratio that the ratio freed takes away names the rubber, not the
+    # a misfit at the assumed ratio that the ratio freed takes away names the rubber, not the
     # bench, as what the fit lacks, whether or not the runs pin the ratio
     free_fitness = goodness.assess(runs, free)
     # what the bench declares but does not measure (the tube's wall and diameter, the monitor's
-    # gain) trades with the ratio: where it alone keeps Silastic S's in the interval of a ratio
+    # gain) trades with the ratio: where it alone keeps the assumed one in the interval of a ratio
     # the fits prefer, the runs want another rubber and the tolerances keep it unmeasured
     declared = None
     if not rejected and shared and improvement > RATIO_LIKELIHOOD:
@@ -885,7 +889,7 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     # sliding sleeve: C01 driven to 0): with the braid in doubt, a rejection alone is not a
     # measurement of the ratio
     braid_doubt = "shift" in terms.get("braid", {})
-    # ... unless the other braid at Silastic S's ratio cannot follow the runs as the ratio
+    # ... unless the other braid at the assumed ratio cannot follow the runs as the ratio
     # freed does: then the rejection stands whichever the braid (a natural rubber's ratio)
     excess = (other_braid_excess(source, fe, runs, best, free) if rejected and braid_doubt
               else None)
@@ -905,11 +909,12 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                                                   and not free_fitness.misfit),
                         "other_braid_chi2_excess": excess,
                         "rejects_silastic_ratio_but_for_declared": declared,
+                        "assumed_C01_over_C10": assumed, "assumed_from": said,
                         "rule": f"C10 and C01 reported apart when the condition number of the "
                                 f"static parameters' normalised Fisher matrix is below "
                                 f"{RATIO_CONDITION:.0e} and the 95 % interval of C01/C10 lies "
-                                f"within +-{100 * RATIO_WIDTH:.0f} % of it or excludes Silastic "
-                                f"S's {assumed:.3f} (the interval holding the model-form "
+                                f"within +-{100 * RATIO_WIDTH:.0f} % of it or excludes "
+                                f"{said} {assumed:.3f} (the interval holding the model-form "
                                 f"terms' shifts) and the fit with the ratio free lowers chi2 "
                                 f"by more than {RATIO_LIKELIHOOD:.2f} (the residuals' variance "
                                 f"its own); excluding it is not enough while the braid "
@@ -918,14 +923,14 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
 
 
 def ratio_freed(rubber: dict) -> dict | None:
-    """What the fit with the rubber's ratio free gains where one scale at Silastic S's ratio is
+    """What the fit with the rubber's ratio free gains where one scale at the assumed ratio is
     kept (the runs do not separate C10 and C01) though freeing it lowers chi2 by more than
     :data:`RATIO_LIKELIHOOD`: its ratio, chi2/nu and whether it follows the runs within their
     noise (:attr:`mkm.identify.goodness.Goodness.ratio_freed`); else None."""
     if (rubber.get("separated") or "free_chi2_per_nu" not in rubber
             or not rubber["chi2_improvement"] > RATIO_LIKELIHOOD):
         return None
-    return {"assumed": SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa,
+    return {"assumed": rubber["assumed_C01_over_C10"], "assumed_from": rubber["assumed_from"],
             "ratio": rubber["ratio_C01_over_C10"], "ratio_ci": rubber["ratio_ci"],
             "chi2_improvement": rubber["chi2_improvement"],
             "chi2_per_nu": rubber["free_chi2_per_nu"],
@@ -939,7 +944,7 @@ DECLARED_SAID = {"D0_mm": "the tube's diameter", "t0_mm": "its wall",
 
 
 def _declared_holds_ratio(rubber: dict) -> str:
-    """Where the bench's declared tolerances alone keep Silastic S's ratio among those the
+    """Where the bench's declared tolerances alone keep the assumed ratio among those the
     runs allow: what the fit with the ratio free gains, and what to do; else ''."""
     declared = rubber.get("rejects_silastic_ratio_but_for_declared")
     if not declared:
@@ -949,8 +954,8 @@ def _declared_holds_ratio(rubber: dict) -> str:
     return (f"; yet the fit with the ratio free lowers chi2 by {rubber['chi2_improvement']:.3g} "
             f"(C01/C10 {rubber['ratio_C01_over_C10']:.3g}), and but for the tolerances "
             f"declared of {said} (drawn into the intervals: they trade with the ratio) the runs "
-            f"reject Silastic S's (95 % interval {low:.3g}-{high:.3g}): where those are known "
-            "closer, declare them ([muscle.tolerances], [regulator]) and identify again")
+            f"reject {rubber['assumed_from']} (95 % interval {low:.3g}-{high:.3g}): where those "
+            "are known closer, declare them ([muscle.tolerances], [regulator]) and identify again")
 
 
 def _box_cut(rubber: dict) -> str:
@@ -965,7 +970,8 @@ def _box_cut(rubber: dict) -> str:
 
 
 def _assumed_ratio_terms(source, runs, best, rubber) -> dict:
-    """What a rubber ratio assumed (Silastic S's, not separated by the runs) may have wrong, for
+    """What a rubber ratio assumed (Silastic S's or the declared rubber's, not separated by the
+    runs) may have wrong, for
     the prediction band: the fit redone with C01/C10 held at each end of what the runs allow
     (the free fit's 95 % interval where there is one) within the practical range, as one-sided
     terms (each parameter's shift and C01's share's). At the runs' own eps the refits reproduce
@@ -980,7 +986,7 @@ def _assumed_ratio_terms(source, runs, best, rubber) -> dict:
     terms = {}
     for ratio in sorted({low, high}):
         share = min(max(ratio / (1.0 + ratio), box[0]), box[1])
-        if abs(share - fitting.SILASTIC_C01_FRACTION) < 1e-3:
+        if abs(share - fitting.assumed_share(best.values)) < 1e-3:
             continue
         name = f"C01/C10 {share / (1.0 - share):.3g}"
         try:
@@ -990,8 +996,10 @@ def _assumed_ratio_terms(source, runs, best, rubber) -> dict:
             continue
         shift = {n: refit.values[n] - best.values[n] for n in STATIC_NAMES if n in best.names}
         terms[name] = {"kind": "one-sided",
-                       "what": f"the fit at {name} minus the fit at Silastic S's ratio",
-                       "shift": {**shift, "c01_fraction": share - fitting.SILASTIC_C01_FRACTION}}
+                       "what": f"the fit at {name} minus the fit at "
+                               f"{fitting.assumed_ratio(best.values)[1]} ratio",
+                       "shift": {**shift,
+                                 "c01_fraction": share - fitting.assumed_share(best.values)}}
     return terms
 
 

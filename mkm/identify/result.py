@@ -47,12 +47,12 @@ from mkm.fem.calibration import (
     store_calibration,
 )
 from mkm.fem.ladder import MODELS
-from mkm.fem.materials import SILASTIC_S
 from mkm.fem.options import BRAIDS
 from mkm.identify.fitting import (
     GEOMETRY,
     STATIC_NAMES,
     Fit,
+    assumed_ratio,
     declared,
     full_parameters,
     geometry,
@@ -172,10 +172,11 @@ class Identification:
                         source=f"the runs (correlation C10-C01 "
                                f"{self.rubber_correlation():+.2f})")
             elif name == "rubber_scale":
+                ratio, said = assumed_ratio(self.fit.values)
                 add("rubber_scale", value, *interval[name], source="the runs: one scale on "
-                    "Silastic S's C10 and C01 (a force-pressure curve carries one stiffness)")
-                ratio = SILASTIC_S.C01_MPa / SILASTIC_S.C10_MPa
-                why = ("Silastic S's ratio: the runs do not separate C10 and C01"
+                    f"Silastic S's C10 + C01, at {said} ratio (a force-pressure curve carries "
+                    "one stiffness)")
+                why = (f"{said} ratio: the runs do not separate C10 and C01"
                        + (f" (C01/C10 95 % interval {self.rubber['ratio_ci'][0]:.3g}-"
                           f"{self.rubber['ratio_ci'][1]:.3g}, condition number "
                           f"{self.rubber['condition']:.2g}" + _box_cut(self.rubber) + ")"
@@ -183,7 +184,8 @@ class Identification:
                 add("C01_over_C10", ratio, status="assumed", source=why)
                 for key in ("C10_MPa", "C01_MPa"):
                     add(key, values[key], status="derived",
-                        source="rubber_scale times Silastic S's, at the assumed ratio")
+                        source=f"rubber_scale times Silastic S's C10 + C01, at {said} "
+                               "ratio")
             elif name == "c01_fraction":
                 continue  # reported as C10 and C01 above
             elif name == "log_tau":
@@ -583,27 +585,30 @@ def _first(rubber: dict, goodness) -> str:
 
 def ratio_first(rubber: dict, freed: dict | None = None) -> str:
     """What a misfit's verdict says first when the rubber's ratio was not tested as the runs
-    can test it: the runs reject Silastic S's ratio but one rubber scale at it was kept
+    can test it: the runs reject the assumed ratio but one rubber scale at it was kept
     because the braid is in doubt (a braid the model does not have bends the curve as another
     ratio would; the braid given, the ratio is fitted) or the bench's declared tolerances; or
     when the ratio freed (``freed``: :attr:`mkm.identify.goodness.Goodness.ratio_freed`) takes
     the misfit away though the runs do not pin it; else ''."""
     if rubber.get("rejects_silastic_ratio_but_for_declared") and not rubber.get("separated"):
-        return ("first, the runs want a rubber ratio other than Silastic S's, kept only "
+        return (f"first, the runs want a rubber ratio other than {rubber['assumed_from']}, "
+                "kept only "
                 "because of the bench's declared tolerances (the note on C10 and C01): where "
                 "they are known closer, declare them and identify again; then ")
     if rubber.get("separated"):
         return ""
     if rubber.get("rejects_silastic_ratio") and rubber.get("braid_in_doubt"):
-        return ("first, the runs reject Silastic S's rubber ratio, kept only because the braid "
-                f"is not given: identify again with the muscle's braid ("
+        return (f"first, the runs reject {rubber['assumed_from']} rubber ratio, kept only "
+                "because the braid is not given: identify again with the muscle's braid ("
                 f"{' or '.join(f'--braid {b}' for b in BRAIDS)}) and the ratio is fitted; then ")
     if not (freed and freed["within_noise"]):
         return ""
     low, high = freed["ratio_ci"]
-    return (f"first, the rubber's C01/C10 held at Silastic S's {freed['assumed']:.3g} may be "
+    return (f"first, the rubber's C01/C10 held at {freed['assumed_from']} "
+            f"{freed['assumed']:.3g} may be "
             f"what the fit lacks: freed (to {freed['ratio']:.3g}) the model follows these runs "
             f"within their noise (chi2/nu {freed['chi2_per_nu']:.3g}), though they do not pin "
-            f"the ratio (95 % interval {low:.3g}-{high:.3g}), so one rubber scale at Silastic "
-            "S's ratio is reported, its intervals widened by the misfit (a bench error that "
-            "bends the curve, the monitor's gain say, can look the same); then ")
+            f"the ratio (95 % interval {low:.3g}-{high:.3g}), so one rubber scale at "
+            f"{freed['assumed_from']} ratio is reported, its intervals widened by the misfit "
+            "(a bench error that bends the curve, the monitor's gain say, can look the same); "
+            "then ")

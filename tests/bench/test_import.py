@@ -1808,6 +1808,37 @@ def test_the_braid_angle_and_rubber_a_lab_declares_are_the_runs_muscle(tmp_path,
     assert code == 2 and err.count("\n") == 1 and "--theta0 90" in err, err
 
 
+def test_a_rubber_the_runs_declare_sets_the_ratio_identify_assumes(tmp_path, mkm_cli):
+    # a lab's natural rubber (C01/C10 0.1, far from Silastic S's 0.905), declared on import as
+    # 0.30/0.03 MPa and 20 % stiffer in truth: identify fits one rubber scale at the declared
+    # ratio and recovers the true constants; at Silastic S's ratio it reported C10 and C01 of
+    # another rubber, and its surrogate's box (the paper's rubbers) could hold no scale at 0.1
+    truth = make_model("thickwall", theta0_deg=THETA0, C10_MPa=0.36, C01_MPa=0.036)
+    runs = []
+    for eps in (0.0, 0.122):
+        path = tmp_path / f"eps{eps}.csv"
+        pd.DataFrame({"pressure_bar": PRESSURES,
+                      "force_N": truth.predict(PRESSURES, 30.0, 3.0, eps).force_N,
+                      "direction": ["up"] * 5 + ["down"] * 2}).to_csv(path, index=False)
+        (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", f"{eps:g}", "--theta0", "30",
+                            "--C10", "0.3", "--C01", "0.03")
+        runs.append(str(run.path))
+    code, out, err = mkm_cli(["identify", *runs, "--params", "theta0,rubber", "--model",
+                              "thickwall", "--out", str(tmp_path / "id")])
+    assert code == 0, err
+    table = pd.read_csv(tmp_path / "id" / "parameters.csv", encoding="utf-8-sig",
+                        index_col="parameter")
+    assert table.loc["C01_over_C10", "value"] == pytest.approx(0.1, rel=1e-6)
+    assert table.loc["C01_over_C10", "status"] == "assumed"
+    assert table.loc["C01_over_C10", "source"].startswith("the declared rubber's ratio")
+    # exact tables: the surrogate's fit corrected by the thick-wall form itself, to 1 %
+    assert table.loc["C10_MPa", "value"] == pytest.approx(0.36, rel=0.01)
+    assert table.loc["C01_MPa", "value"] == pytest.approx(0.036, rel=0.01)
+    assert table.loc["theta0_deg", "value"] == pytest.approx(THETA0, abs=0.05)
+    assert "one rubber scale at the declared rubber's ratio 0.1 assumed" in out
+    assert "searched with surrogate:kind=muscle-gp-range" in out
+
+
 def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_path, mkm_cli):
     # a 10 Hz ramp saved without its time by a German Excel (';', decimal commas): its run
     # folder keeps the table (imported_table.csv), its steps are bins; mkm export left the

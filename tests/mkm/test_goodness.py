@@ -360,8 +360,9 @@ def test_a_misfit_the_rubber_ratio_freed_takes_away_names_the_rubber():
     nu = 10.0
     branch = goodness.Branch("r", "loading", 10, 72.0, nu, float(stats.chi2.sf(72.0, nu)), 5,
                              0.5, 0.1, 0.1)
-    freed = {"assumed": 0.905, "ratio": 0.548, "ratio_ci": [0.0, 9.0],
-             "chi2_improvement": 152.3, "chi2_per_nu": 1.06, "within_noise": True}
+    freed = {"assumed": 0.905, "assumed_from": "Silastic S's", "ratio": 0.548,
+             "ratio_ci": [0.0, 9.0], "chi2_improvement": 152.3, "chi2_per_nu": 1.06,
+             "within_noise": True}
 
     def line(**changes):
         return goodness.Goodness([branch], 72.0, nu, fitted=("theta0_deg", "rubber_scale"),

@@ -641,5 +641,5 @@ def test_a_braid_angle_the_runs_declare_is_the_one_a_fit_without_theta0_keeps(tm
     (0.9, "more of C01 than the box allows"),
     (0.899, "more of C01 than the box allows")])
 def test_a_rubber_ratio_at_an_edge_names_the_edge_it_is_at(share, want):
-    note = ratio_edge_note(share / (1 - share), share, (0.0, 0.9))
+    note = ratio_edge_note(share / (1 - share), share, (0.0, 0.9), "Silastic S's")
     assert f"is at the edge of its search box: the runs want {want}" in note

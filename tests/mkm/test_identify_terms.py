@@ -204,7 +204,8 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
 
     from mkm.identify.result import Identification, ratio_first
 
-    held = {"separated": False, "rejects_silastic_ratio": True, "braid_in_doubt": True}
+    held = {"separated": False, "rejects_silastic_ratio": True, "braid_in_doubt": True,
+            "assumed_from": "Silastic S's"}
     goodness = SimpleNamespace(judged=True, misfit=[object()], reduced=145.0, birge_ratio=12.0,
                                ratio_freed=None, pulls_late=False)
     verdict = Identification._verdict_line(SimpleNamespace(goodness=goodness, rubber=held))
