@@ -53,11 +53,15 @@ def fits_arg(text: str) -> tuple:
     return tuple(tuple(fit.rsplit(":", 1)) for fit in text.split(";"))
 
 
-def imported(force_map, out: Path) -> list:
-    """The map's runs as ``mkm import`` writes them (as identify reads them), by eps."""
+def imported(force_map, out: Path, ratio: float | None = None) -> list:
+    """The map's runs as ``mkm import`` writes them (as identify reads them), by eps; with a
+    rubber of C01/C10 ``ratio`` declared (``--C10 0.3 --C01 0.3*ratio``: identify's assumed
+    ratio, its scale fitted)."""
     run_id, accuracy = MUSCLES[force_map.muscle]
+    rubber = {} if ratio is None else {"C10_MPa": 0.3, "C01_MPa": 0.3 * ratio}
     runs = import_table(TABLE, out, {"id": run_id, "D0_mm": force_map.D0_mm,
-                                     "t0_mm": force_map.t0_mm, "L0_mm": None, "eps": None},
+                                     "t0_mm": force_map.t0_mm, "L0_mm": None, "eps": None,
+                                     **rubber},
                         select=force_map.muscle, accuracy=parse_accuracy(accuracy))
     return sorted(load_runs([run.path for run in runs]), key=lambda run: run.eps)
 
@@ -74,10 +78,10 @@ def score(data, result, force_map, model: str) -> dict:
     return {"errors": errors, "threshold_bar": threshold["fitted threshold [bar]"]}
 
 
-def study(out: Path, fits=FITS) -> list[dict]:
+def study(out: Path, fits=FITS, ratio: float | None = None) -> list[dict]:
     rows = []
     for force_map in read_maps():
-        runs = imported(force_map, out / force_map.muscle.replace(" ", "_"))
+        runs = imported(force_map, out / force_map.muscle.replace(" ", "_"), ratio)
         measured = force_map.measured_threshold_bar()
         # the rest-length run and each other length with force (one slack throughout fixes
         # nothing)
@@ -123,9 +127,12 @@ def main() -> None:
     parser.add_argument("--fits", type=fits_arg, default=FITS, metavar="MODEL:PARAMS;...",
                         help="the fits, e.g. 'thickwall:theta0,rubber,L0,t0' (default: the "
                              "three above)")
+    parser.add_argument("--C01-over-C10", type=float, default=None, dest="ratio",
+                        help="declare a rubber of this C01/C10 on import, the ratio identify "
+                             "assumes (default: none declared, Silastic S's)")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
-        rows = study(Path(folder), args.fits)
+        rows = study(Path(folder), args.fits, args.ratio)
     write_json_atomic(Path(args.out), {**provenance(), "table": TABLE.name, "rows": rows})
     print(f"wrote {args.out}")
 
