@@ -643,3 +643,29 @@ def test_a_braid_angle_the_runs_declare_is_the_one_a_fit_without_theta0_keeps(tm
 def test_a_rubber_ratio_at_an_edge_names_the_edge_it_is_at(share, want):
     note = ratio_edge_note(share / (1 - share), share, (0.0, 0.9), "Silastic S's")
     assert f"is at the edge of its search box: the runs want {want}" in note
+
+
+def test_the_surrogates_box_is_asked_for_the_rubber_the_runs_declare():
+    # the default surrogate's box (the paper's: C10 0.0347-0.1041, C01 0.0314-0.0942 MPa) holds
+    # some scale of Silastic S, none of a natural rubber's C01/C10 0.1, and a held rubber only
+    # where both constants lie inside
+    from mkm.identify.fitting import SILASTIC_C01_FRACTION, SurrogateStatic, internal_rubber
+
+    box = {"theta0_deg": (28.0, 38.0), "C10_MPa": (0.0347, 0.1041),
+           "C01_MPa": (0.0314, 0.0942), "t0_mm": (2.0, 4.0), "D0_mm": (30.0, 50.0),
+           "L0_mm": (150.0, 400.0)}
+    source = SurrogateStatic(SimpleNamespace(box=box))
+    # Silastic S's share gives the scales of its own constants, to the bit
+    assert source.scale_bounds(SILASTIC_C01_FRACTION) == (
+        max(0.0347 / SILASTIC_S.C10_MPa, 0.0314 / SILASTIC_S.C01_MPa),
+        min(0.1041 / SILASTIC_S.C10_MPa, 0.0942 / SILASTIC_S.C01_MPa))
+    assert source.outside([], {"rubber_scale": 1.0}) == []
+    natural = internal_rubber(0.3, 0.03)
+    low, high = source.scale_bounds(natural["c01_fraction"])
+    assert low > high  # C01 = 0.1 C10 inside needs C10 above 0.314 MPa
+    assert source.outside([], natural) == [
+        "the declared rubber's C01/C10 0.1 has no rubber scale with C10_MPa in [0.0347, 0.1041] "
+        "and C01_MPa in [0.0314, 0.0942]"]
+    assert source.outside([], natural, fits_rubber=False) == [
+        "C01_MPa=0.03 not in [0.0314, 0.0942]", "C10_MPa=0.3 not in [0.0347, 0.1041]"]
+    assert source.outside([], internal_rubber(0.05, 0.05), fits_rubber=False) == []
