@@ -158,9 +158,15 @@ def equivalent_scale(muscle: dict, runs_plan: dict) -> float:
     total = SILASTIC_S.C10_MPa + SILASTIC_S.C01_MPa
     share = (declared["C01_MPa"] / (declared["C10_MPa"] + declared["C01_MPa"]) if declared
              else SILASTIC_S.C01_MPa / total)
-    best = minimize_scalar(lambda s: float(np.sum((force(s * total * (1 - share),
-                                                         s * total * share) - true) ** 2)),
-                           bounds=(0.05, 10.0), method="bounded", options={"xatol": 1e-6})
+    def misfit(s):
+        return float(np.sum((force(s * total * (1 - share), s * total * share) - true) ** 2))
+
+    # a grid first: a scale whose muscle pulls nothing at any step is a plateau a bracketing
+    # search can wander along to its bound
+    grid = np.geomspace(0.05, 10.0, 61)
+    k = int(np.argmin([misfit(s) for s in grid]))
+    best = minimize_scalar(misfit, bounds=(grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)]),
+                           method="bounded", options={"xatol": 1e-6})
     return float(best.x)
 
 
