@@ -763,3 +763,79 @@ def test_the_assumed_ratio_refits_leaving_the_surrogate_box_are_one_note(one_run
         "the refits at the ends of the assumed rubber ratio left the surrogate's training box "
         "in 3 evaluations (first: C01_MPa=0.0304583 not in [0.0314, 0.0942]): the prediction "
         "band's rubber-ratio term is extrapolated there"]
+
+
+def _gain_off_pair(out) -> list:
+    """Blind runs at eps 0 and 0.2138 of bench_identify_wrong_range's seed 20261622 (a 14 mm
+    tube of C10 0.055 MPa, 8 steps up to 1.9 bar, a 490 N cell) on the thick-wall bench, no
+    creep, the load cell reading 2.7 % low."""
+    paths = []
+    for k, eps in enumerate((0.0, 0.2138)):
+        config = load_config(eps=eps).replace(
+            muscle={"id": "gain-off", "D0_mm": 13.99, "t0_mm": 1.88, "L0_mm": 98.1},
+            loadcell={"capacity_N": 490.3325, "sensitivity_N_per_V": 49.03325},
+            regulator={"max_pressure_bar": 1.9, "full_scale_bar": 4.0,
+                       "monitor_accuracy_bar": 0.04},
+            safety={"tare_max_shift_N": 49.0, "tare_max_std_N": 4.9, "vent_below_bar": 0.08},
+            sequence={"pressures_bar": tuple(round(1.9 * (j + 1) / 8, 3) for j in range(8)),
+                      "preconditioning_cycles": 0},
+            sim={"model": "thickwall", "seed": 20261622 + 1000 * k, "hysteresis_fraction": 0.0,
+                 "creep_fraction": 0.0,
+                 "truth": {"theta0_deg": 33.8, "C10_MPa": 0.055, "C01_MPa": 0.028,
+                           "loadcell_gain": 0.973}})
+        result = acquire(config, out_root=out, notify=lambda message: None)
+        assert result.status == "complete"
+        remove_simulator_settings(result.path)
+        paths.append(result.path)
+    return paths
+
+
+def test_a_default_creep_whose_fit_does_not_converge_is_left_out_and_said(tmp_path, mkm_run,
+                                                                          monkeypatch):
+    """bench_identify_wrong_range's seed 20261622: the fit took the cell's 2.7 % for a creep
+    over before the holds start (its time constant on its 1 s bound), and on the surrogate
+    corrected by the FE model it did not converge in 400 evaluations (it stepped about its
+    optimum): `mkm identify` with its defaults failed, exit 1. The thick-wall form is smooth
+    and converges on this pair in 16; stopped at 14, the fit with creep does not converge as
+    that one did, where it took the cell's gain for a 2.8 % creep at 1 s. With the default
+    groups identify fits without creep, says why in one note and gives that fit's verdict (the
+    cell's gain, which no term takes now, misfits); with creep asked for by name the failure
+    stands."""
+    from mkm.identify import fitting
+
+    real = fitting.fit
+
+    def stopped(source, runs, names, start, max_nfev=400, given=None):
+        if "log_tau" in names and max_nfev == 400:  # the search's and the confirmation's
+            max_nfev = 14
+        return real(source, runs, names, start, max_nfev, given)
+
+    monkeypatch.setattr(fitting, "fit", stopped)
+    runs = _gain_off_pair(tmp_path / "runs")
+    argv = ["identify", *map(str, runs), "--model", "thickwall", "--search", "model",
+            "--no-progress"]
+    code, out, err = mkm_run([*argv, "--out", str(tmp_path / "id")])
+    assert code == 0 and err == "", err
+    said = [line.strip() for line in out.splitlines()]
+    assert ("note: creep not identifiable from these runs: the fit with it on thickwall stopped "
+            "after 14 evaluations without converging, at a creep of 2.8 % of the force with "
+            "creep_tau_s 1 s, the shortest searched: a creep over before the holds start "
+            "scales every held force as a load cell's gain or the rubber's stiffness does, so "
+            "nothing in the runs pins it; fitted without creep") in said
+    assert said[-2].startswith("verdict: a misfit (chi2/nu ")
+    misfit = next(line for line in said if line.startswith("note: misfit: "))
+    assert "check the monitor's zero, the load cell's calibration" in misfit
+    assert "creep" not in misfit  # the term that did not converge is not offered again
+    assert not any(line.startswith(("creep_fraction", "creep_tau_s", "creep:")) for line in said)
+    record = json.loads((tmp_path / "id" / "identification.json").read_text(encoding="utf-8"))
+    assert "creep" not in record["groups"] and "creep" not in record["dropped"]
+    assert "creep_fraction" not in {p["parameter"] for p in record["parameters"]
+                                    if p["status"] == "fitted"}
+    # asked for by name: the fit that cannot have it fails, as it did
+    code, out, err = mkm_run([*argv, "--params", "theta0,rubber,friction,creep,offset",
+                              "--out", str(tmp_path / "named")])
+    assert code == 1 and out == "" and err.count("\n") == 1, err
+    assert err.startswith("mkm identify: error: identification failed: the fit on thickwall "
+                          "did not converge: The maximum number of function evaluations is "
+                          "exceeded.; a creep the runs barely show")
+    assert err.rstrip().endswith("(--params theta0,rubber,friction,offset)")

@@ -273,6 +273,36 @@ def test_a_creep_time_constant_at_its_search_bound_is_said():
 
 
 
+def test_a_creep_left_out_for_not_converging_says_where_its_fit_stopped():
+    """The note on a default creep whose fit did not converge (identify fits again without it):
+    where it stopped, and what a time constant at either end of its search means."""
+    import math
+
+    from mkm.identify.procedure import creep_given_up
+
+    names = ("theta0_deg", "creep_fraction", "log_tau")
+    bounds = {"theta0_deg": (15.0, 50.0), "creep_fraction": fitting.TERM_BOUNDS["creep_fraction"],
+              "log_tau": fitting.TERM_BOUNDS["log_tau"]}
+
+    def stopped(tau_s):
+        return creep_given_up(fitting.NotConverged(
+            "axisym", "The maximum number of function evaluations is exceeded.", names,
+            {"theta0_deg": 30.0, "creep_fraction": 0.0243, "log_tau": math.log(tau_s)}, bounds,
+            400))
+
+    said = ("creep not identifiable from these runs: the fit with it on axisym stopped after "
+            "400 evaluations without converging, at a creep of 2.4 % of the force with "
+            "creep_tau_s {}")
+    assert stopped(1.0) == said.format(
+        "1 s, the shortest searched: a creep over before the holds start scales every held "
+        "force as a load cell's gain or the rubber's stiffness does, so nothing in the runs "
+        "pins it; fitted without creep")
+    assert stopped(1000.0) == said.format(
+        "1000 s, the longest searched: the holds are too short to tell a creep that slow "
+        "from the rubber's stiffness; fitted without creep")
+    assert stopped(42.0) == said.format("42 s; fitted without creep")
+
+
 def bench_runs(out, truth: dict, eps: tuple, pressures_bar: tuple, seeds, *,
                hysteresis_fraction: float, mesh: str = "coarse", **sections) -> list:
     """Blind runs of the muscle ``truth`` ([sim.truth]) on the FE bench (``mesh``), one per
