@@ -829,6 +829,9 @@ def test_a_default_creep_whose_fit_does_not_converge_is_left_out_and_said(tmp_pa
     assert not any(line.startswith(("creep_fraction", "creep_tau_s", "creep:")) for line in said)
     record = json.loads((tmp_path / "id" / "identification.json").read_text(encoding="utf-8"))
     assert "creep" not in record["groups"] and "creep" not in record["dropped"]
+    # the command a report advises to identify again fits as this one did
+    assert record["options"] == ["--params", "theta0,rubber,friction,offset", "--model",
+                                 "thickwall", "--search", "model"]
     assert "creep_fraction" not in {p["parameter"] for p in record["parameters"]
                                     if p["status"] == "fitted"}
     # asked for by name: the fit that cannot have it fails, as it did
