@@ -41,6 +41,7 @@ Prints one row per draw and the summary; ``--out`` writes them with the seeds an
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import math
 import os
@@ -303,6 +304,28 @@ def summarise(rows: list[dict], departures, seed: int) -> dict:
             "by_departure": by_departure,
             "draws_with_misfit_line": sum(r["misfit_line"] is not None for r in rows),
             "per_parameter": per_parameter, "seed": seed}
+
+
+#: how a draw's line prints a field of its row (any other: as it is)
+PRINTED = {"chi2_per_nu": lambda v: "" if v is None else f"{v:.3g}",
+           "misfit_line": lambda v: "yes" if v else "no", "missed": lambda v: "|".join(v) or "-",
+           "far": lambda v: "|".join(v) or "-", "message": lambda v: v or ""}
+
+
+def each_draw(draws: int, seed: int, departures, run, columns) -> list[dict]:
+    """The rows of ``draws`` rounds over ``departures``, the k-th draw's seed ``seed + k``, in a
+    temporary folder: ``run(seed, departure, out)`` identifies one draw into ``out`` and
+    returns its row, printed as it comes as a line of its ``columns`` (:data:`PRINTED`)."""
+    print(",".join(columns))
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        # the simulated bench's ownership markers stay here (another user's runs block nothing)
+        os.environ["MKM_STATE_DIR"] = str(Path(tmp) / "state")
+        for k, (_, departure) in enumerate(itertools.product(range(draws), departures)):
+            row = run(seed + k, departure, Path(tmp) / f"draw{k}")
+            rows.append(row)
+            print(",".join(PRINTED.get(c, str)(row[c]) for c in columns), flush=True)
+    return rows
 
 
 def main(argv=None) -> int:

@@ -40,15 +40,13 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
-import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
-from bench_identify_coverage import judge
+from bench_identify_coverage import each_draw, judge
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
@@ -67,6 +65,8 @@ DEPARTURES = ("loadcell gain", "loadcell offset", "loadcell drift", "monitor off
 DEFAULT_DEPARTURES = tuple(d for d in DEPARTURES
                            if d not in ("loadcell drift", "loadcell offset per run"))
 FIRST_SEED = 20261240
+#: the fields of a draw's printed line
+COLUMNS = ("seed", "departure", "value", "verdict", "chi2_per_nu", "missed", "far", "seconds")
 
 
 def draw(seed: int, departure: str, config) -> dict:
@@ -225,22 +225,10 @@ def main(argv=None) -> int:
     if unknown or not departures:
         parser.error(f"--departures {args.departures!r}: expected some of {','.join(DEPARTURES)}")
     config = load_config()
-    rows = []
-    print("seed,departure,value,verdict,chi2_per_nu,missed,far,seconds")
-    with tempfile.TemporaryDirectory() as tmp:
-        # the simulated bench's ownership markers stay here (another user's runs block nothing)
-        os.environ["MKM_STATE_DIR"] = str(Path(tmp) / "state")
-        k = 0
-        for _ in range(args.draws):
-            for departure in departures:
-                muscle = draw(args.seed + k, departure, config)
-                row = one(muscle, Path(tmp) / f"draw{k}", config, args.params)
-                rows.append(row)
-                chi2 = row["chi2_per_nu"]
-                print(f"{row['seed']},{departure},{row['value']},{row['verdict']},"
-                      f"{'' if chi2 is None else f'{chi2:.3g}'},{'|'.join(row['missed']) or '-'},"
-                      f"{'|'.join(row['far']) or '-'},{row['seconds']}", flush=True)
-                k += 1
+    rows = each_draw(args.draws, args.seed, departures,
+                     lambda seed, departure, out: one(draw(seed, departure, config), out, config,
+                                                      args.params),
+                     COLUMNS)
     table = grid(rows, departures)
     print(pd.DataFrame(table)[["departure", "covered", "warned", "silent", "refused",
                                "misfit_line", "zero_line"]].to_string(index=False))

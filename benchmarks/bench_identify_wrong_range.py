@@ -41,13 +41,11 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
-from bench_identify_coverage import truths
+from bench_identify_coverage import each_draw, truths
 from bench_identify_rubbers import (
     config_for,
     draw,
@@ -64,6 +62,9 @@ from mkm.core.records import jsonable, provenance
 
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid")
+#: the fields of a draw's printed line
+COLUMNS = ("seed", "departure", "value", "truth", "verdict", "chi2_per_nu", "misfit_line",
+           "missed", "far", "seconds", "message")
 
 
 def depart(muscle: dict, departure: str) -> dict:
@@ -205,24 +206,9 @@ def main(argv=None) -> int:
         parser.error(f"--departures {args.departures!r}: expected some of {','.join(DEPARTURES)}")
     if args.draws < 1:
         parser.error(f"--draws {args.draws}: expected at least 1")
-    rows = []
-    print("seed,departure,value,truth,verdict,chi2_per_nu,misfit_line,missed,far,seconds,message")
-    with tempfile.TemporaryDirectory() as tmp:
-        # the simulated bench's ownership markers stay here (another user's runs block nothing)
-        os.environ["MKM_STATE_DIR"] = str(Path(tmp) / "state")
-        k = 0
-        for _ in range(args.draws):
-            for departure in departures:
-                muscle = depart(draw(args.seed + k), departure)
-                row = one(muscle, Path(tmp) / f"draw{k}")
-                rows.append(row)
-                chi2 = row["chi2_per_nu"]
-                print(f"{row['seed']},{departure},{row['value']},{row['truth']},"
-                      f"{row['verdict']},{'' if chi2 is None else f'{chi2:.3g}'},"
-                      f"{'yes' if row['misfit_line'] else 'no'},"
-                      f"{'|'.join(row['missed']) or '-'},{'|'.join(row['far']) or '-'},"
-                      f"{row['seconds']},{row['message'] or ''}", flush=True)
-                k += 1
+    rows = each_draw(args.draws, args.seed, departures,
+                     lambda seed, departure, out: one(depart(draw(seed), departure), out),
+                     COLUMNS)
     summary = summarise(rows)
     print(json.dumps(summary, indent=1))
     if args.out:

@@ -99,13 +99,12 @@ def _identify(args) -> int:
 
 
 def _without_creep(params: str | None, exc: Exception) -> str:
-    """What to try where a fit with creep did not converge: a creep the runs barely show (one
-    over before the holds start scales the force as a load cell's gain does) can leave the fit
-    on a flat bound of its time constant (a 14 mm tube whose cell read 2.7 % low:
-    ``bench_identify_wrong_range.py`` seed 20261622, which fits without creep); else ''."""
-    from mkm.identify.groups import DEFAULT_GROUPS
-
-    groups = params.split(",") if params else list(DEFAULT_GROUPS)
+    """What to try where a fit with creep asked for by name did not converge: a creep the runs
+    barely show (one over before the holds start scales the force as a load cell's gain does)
+    can leave the fit on a flat bound of its time constant (a 14 mm tube whose cell read 2.7 %
+    low: ``bench_identify_wrong_range.py`` seed 20261622, which fits without creep); else ''
+    (with the default groups, identify leaves such a creep out itself)."""
+    groups = [g.strip() for g in params.split(",")] if params else []
     if "did not converge" not in str(exc) or "creep" not in groups:
         return ""
     without = ",".join(g for g in groups if g != "creep")

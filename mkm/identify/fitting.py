@@ -420,6 +420,19 @@ def bounds_of(name: str, source: StaticSource, runs, start: dict,
     return source.box.get(name) or TERM_BOUNDS[name]
 
 
+class NotConverged(RuntimeError):
+    """A fit that stopped at its evaluations' limit (or the optimiser's failure) without
+    converging: the ``source``'s name, ``values`` where it stopped (every value, fixed ones
+    included), ``bounds`` of the fitted ``names``, the ``evaluations`` it took."""
+
+    def __init__(self, source: str, reason: str, names: tuple[str, ...],
+                 values: dict[str, float], bounds: dict[str, tuple[float, float]],
+                 evaluations: int):
+        super().__init__(f"the fit on {source} did not converge: {reason}")
+        self.source, self.names, self.values, self.bounds = source, names, values, bounds
+        self.evaluations = evaluations
+
+
 @dataclass
 class Fit:
     """One least-squares fit: the fitted names, all values (fixed ones included), the residuals
@@ -530,8 +543,8 @@ def fit(source: StaticSource, runs, names, start: dict[str, float],
     """Fit ``names`` (of :data:`ORDER`) from ``start`` (every value), the rest held fixed,
     each within :func:`bounds_of` unless ``given`` names its bounds.
 
-    Raises ``RuntimeError`` when a parameter has no room to move, the optimiser fails or the
-    residuals are not finite.
+    Raises ``RuntimeError`` when a parameter has no room to move or the residuals are not
+    finite, :class:`NotConverged` when the optimiser stops without converging.
     """
     names = tuple(n for n in ORDER if n in names)
     given = given or {}
@@ -560,7 +573,8 @@ def fit(source: StaticSource, runs, names, start: dict[str, float],
             *bounds.values(), strict=True)), x_scale=scale, diff_step=1e-4, method="trf",
             xtol=1e-10, ftol=1e-10, max_nfev=max_nfev)
         if not res.success and res.status <= 0:
-            raise RuntimeError(f"the fit on {source.name} did not converge: {res.message}")
+            raise NotConverged(source.name, res.message, names, values_of(res.x), bounds,
+                               res.nfev)
         x, r, J, message = res.x, res.fun, res.jac, res.message
     else:
         x, r, J, message = x0, residuals(x0), np.zeros((0, 0)), "nothing to fit"

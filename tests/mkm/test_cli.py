@@ -1319,12 +1319,15 @@ def test_solve_with_an_identified_calibration_takes_the_identified_muscles_lengt
     assert read_prediction_header(out)["params"]["L0_mm"] == 282.0
 
 
-def test_a_fit_with_creep_that_did_not_converge_says_to_try_without_it(mkm_run, monkeypatch,
-                                                                        tmp_path):
-    # bench_identify_wrong_range's seed 20261622 (a 14 mm tube, the cell 2.7 % low): the
-    # default fit took the gain for a creep over before the holds start, its time constant on
-    # the search's bound, and did not converge (the FE model's search neither); without creep
-    # it converged in 12 s and misfit, warned. The line said only that it did not converge.
+def test_a_fit_with_creep_named_that_did_not_converge_says_to_try_without_it(mkm_run,
+                                                                              monkeypatch,
+                                                                              tmp_path):
+    # bench_identify_wrong_range's seed 20261622 (a 14 mm tube, the cell 2.7 % low): the fit
+    # took the gain for a creep over before the holds start, its time constant on the search's
+    # bound, and did not converge; without creep it converged and misfit, warned. With creep
+    # asked for by name, the failure stands and says what to try; with the default groups
+    # identify leaves such a creep out itself (tests/mkm/test_identify.py), so a failure left
+    # is one without creep, and the line offers no --params.
     import mkm.identify
 
     def fails(*args, **kwargs):
@@ -1332,16 +1335,17 @@ def test_a_fit_with_creep_that_did_not_converge_says_to_try_without_it(mkm_run, 
                            "function evaluations is exceeded.")
 
     monkeypatch.setattr(mkm.identify, "identify", fails)
-    code, out, err = mkm_run(["identify", str(RUN_DIR), "--no-progress", "--out",
-                              str(tmp_path / "id")])
+    argv = ["identify", str(RUN_DIR), "--no-progress", "--out", str(tmp_path / "id")]
+    code, out, err = mkm_run([*argv, "--params", "theta0,rubber,friction,creep,offset"])
     assert code == 1 and out == "" and err.count("\n") == 1, err
     assert err.startswith("mkm identify: error: identification failed: the fit on axisym did "
                           "not converge")
     assert err.rstrip().endswith("identify again without it (--params "
                                  "theta0,rubber,friction,offset)")
-    code, out, err = mkm_run(["identify", str(RUN_DIR), "--params", "theta0,rubber,creep",
-                              "--no-progress", "--out", str(tmp_path / "id")])
+    code, out, err = mkm_run([*argv, "--params", "theta0, rubber, creep"])
     assert "(--params theta0,rubber)" in err
-    code, out, err = mkm_run(["identify", str(RUN_DIR), "--params", "theta0,rubber",
-                              "--no-progress", "--out", str(tmp_path / "id")])
-    assert code == 1 and "creep" not in err
+    for params in ([], ["--params", "theta0,rubber"]):
+        code, out, err = mkm_run([*argv, *params])
+        assert code == 1 and err == ("mkm identify: error: identification failed: the fit on "
+                                     "axisym did not converge: The maximum number of function "
+                                     "evaluations is exceeded.\n"), err
